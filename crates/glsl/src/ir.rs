@@ -1,0 +1,287 @@
+//! The typed intermediate representation.
+//!
+//! Contract (what [`crate::validate`] checks and later stages rely on):
+//! - every [`Expr`] carries its resolved [`Type`]; no expression has the
+//!   error type in a module that compiled without errors;
+//! - every implicit conversion is explicit: GLSL 1.20's int→float
+//!   conversions (§4.1.10) appear as [`ExprKind::Convert`]; GLSL 1.10 has
+//!   none;
+//! - operands of binary operators already have the shapes the spec allows
+//!   (scalar⊗vector broadcasting is left to the executor, matrix products are
+//!   [`BinaryOp::MatMul`], everything else is component-wise);
+//! - constant expressions are folded: array sizes are numbers, `const`
+//!   variables have [`ConstValue`] initializers, `.length()` is a constant;
+//! - control flow is structured: `while`, `do`/`while` and `for` are all
+//!   [`Stmt::Loop`] with the condition as an explicit `if (!c) break;`;
+//! - expressions may have side effects (assignments, `++`, calls) and are
+//!   evaluated left to right; `&&`, `||` and `?:` evaluate lazily.
+
+use crate::builtins::BuiltinFn;
+use crate::source::Span;
+use crate::token::Version;
+use crate::types::{StructDef, Type};
+use serde::Serialize;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+pub enum Stage {
+    Vertex,
+    Fragment,
+}
+
+impl Stage {
+    pub fn name(self) -> &'static str {
+        match self {
+            Stage::Vertex => "vertex",
+            Stage::Fragment => "fragment",
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+pub struct GlobalId(pub u32);
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+pub struct FunctionId(pub u32);
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+pub struct LocalId(pub u32);
+
+/// One scalar of a constant.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub enum ConstScalar {
+    Float(f32),
+    Int(i32),
+    Bool(bool),
+}
+
+/// A constant of any type, flattened to scalars: vectors in order, matrices
+/// column by column, arrays element by element, structs member by member.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ConstValue {
+    pub ty: Type,
+    pub components: Vec<ConstScalar>,
+}
+
+/// Where a global variable lives.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum Storage {
+    /// A plain global (read/write, private to one invocation). Also the
+    /// stage outputs `gl_Position`, `gl_PointSize`, `gl_ClipVertex`,
+    /// `gl_FragColor`, `gl_FragData`, `gl_FragDepth`.
+    Private,
+    /// A `const` global; its value is in [`Global::init`].
+    Const,
+    Uniform,
+    /// Vertex-stage input.
+    Attribute,
+    /// Written by the vertex stage, read (only) by the fragment stage.
+    /// Also the read-only fragment inputs `gl_FragCoord`, `gl_FrontFacing`.
+    Varying,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Global {
+    pub name: String,
+    pub ty: Type,
+    pub storage: Storage,
+    /// Declared by the implementation (`gl_*`).
+    pub builtin: bool,
+    pub invariant: bool,
+    pub centroid: bool,
+    /// Constant initializer (`const` globals, uniforms with an initializer).
+    pub init: Option<ConstValue>,
+    /// Non-constant initializer of a private global, evaluated at the start
+    /// of `main`.
+    pub init_expr: Option<Expr>,
+    /// Statically read / written anywhere in the shader (for the linker's
+    /// interface checks and for `glGetActiveUniform`).
+    pub read: bool,
+    pub written: bool,
+    /// For arrays declared without a size: the largest constant index used,
+    /// plus one (GLSL 1.10 §4.1.9).
+    pub implicit_size: u32,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum ParamQualifier {
+    In,
+    Out,
+    InOut,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Param {
+    pub name: Option<String>,
+    pub ty: Type,
+    pub qualifier: ParamQualifier,
+    /// `const in`: the parameter cannot be written in the body.
+    pub is_const: bool,
+    /// The local that holds the parameter inside the body.
+    pub local: LocalId,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Local {
+    pub name: String,
+    pub ty: Type,
+    pub is_const: bool,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Function {
+    pub name: String,
+    pub params: Vec<Param>,
+    pub return_type: Type,
+    pub locals: Vec<Local>,
+    /// `None` for a prototype whose body is in another shader object of the
+    /// same stage (resolved by the linker).
+    pub body: Option<Block>,
+    pub span: Span,
+}
+
+pub type Block = Vec<Stmt>;
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub enum Stmt {
+    Expr(Expr),
+    /// A local variable comes into scope here; `init` (if any) is assigned
+    /// each time control passes.
+    Declare { local: LocalId, init: Option<Expr>, span: Span },
+    Block(Block),
+    If { cond: Expr, then: Block, else_: Block, span: Span },
+    /// A loop: run `body`, then `continuing`, forever; `Break` leaves,
+    /// `Continue` jumps to `continuing`. Conditions are `if` + `Break`
+    /// statements inside `body` (at its start for `while`/`for`) or in
+    /// `continuing` (at its end for `do`/`while`).
+    Loop { body: Block, continuing: Block, span: Span },
+    Break(Span),
+    Continue(Span),
+    Return(Option<Expr>, Span),
+    Discard(Span),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum UnaryOp {
+    /// Arithmetic negation.
+    Neg,
+    /// Logical not of a `bool`.
+    Not,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum BinaryOp {
+    /// Component-wise (with scalar broadcasting).
+    Add,
+    Sub,
+    Mul,
+    Div,
+    /// Linear-algebra product: matrix×matrix, matrix×vector, vector×matrix.
+    MatMul,
+    /// `<`, `>`, `<=`, `>=` on int/float scalars.
+    Less,
+    Greater,
+    LessEq,
+    GreaterEq,
+    /// Whole-value equality of any non-sampler type, giving one `bool`.
+    Equal,
+    NotEqual,
+    /// Short-circuit.
+    LogicalAnd,
+    LogicalOr,
+    LogicalXor,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum IncDec {
+    PreInc,
+    PreDec,
+    PostInc,
+    PostDec,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Expr {
+    pub kind: ExprKind,
+    pub ty: Type,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub enum ExprKind {
+    Const(ConstValue),
+    Global(GlobalId),
+    Local(LocalId),
+    /// Array element, vector component or matrix column. Out-of-range
+    /// dynamic indices have a defined, implementation-chosen result.
+    Index { base: Box<Expr>, index: Box<Expr> },
+    /// `v.xzy`: `count` components of `base`, selected by `components`.
+    Swizzle { base: Box<Expr>, components: [u8; 4], count: u8 },
+    Member { base: Box<Expr>, index: u32 },
+    Unary { op: UnaryOp, operand: Box<Expr> },
+    Binary { op: BinaryOp, left: Box<Expr>, right: Box<Expr> },
+    Ternary { cond: Box<Expr>, accept: Box<Expr>, reject: Box<Expr> },
+    /// `target = value` or `target op= value`; the result is the new value.
+    Assign { op: Option<BinaryOp>, target: Box<Expr>, value: Box<Expr> },
+    IncDec { op: IncDec, target: Box<Expr> },
+    Call { function: FunctionId, args: Vec<Expr> },
+    Builtin { function: BuiltinFn, args: Vec<Expr> },
+    /// A constructor of `ty` from `args` with the GLSL rules (§5.4):
+    /// components consumed in order with per-scalar conversion, a scalar
+    /// fills a vector or a matrix diagonal, a matrix from a matrix copies
+    /// the overlap and fills the identity.
+    Construct { args: Vec<Expr> },
+    /// Implicit int→float conversion (GLSL 1.20 §4.1.10) to `ty`.
+    Convert { operand: Box<Expr> },
+    Comma { left: Box<Expr>, right: Box<Expr> },
+}
+
+/// Behaviour requested by an `#extension` directive.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum ExtensionBehavior {
+    Require,
+    Enable,
+    Warn,
+    Disable,
+}
+
+/// One analyzed shader object.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Module {
+    pub version: Version,
+    pub stage: Stage,
+    pub structs: Vec<StructDef>,
+    pub globals: Vec<Global>,
+    pub functions: Vec<Function>,
+    pub extensions: Vec<(String, ExtensionBehavior)>,
+}
+
+impl Module {
+    pub fn global(&self, id: GlobalId) -> &Global {
+        &self.globals[id.0 as usize]
+    }
+
+    pub fn function(&self, id: FunctionId) -> &Function {
+        &self.functions[id.0 as usize]
+    }
+
+    /// The defined `main`, if any.
+    pub fn main(&self) -> Option<FunctionId> {
+        self.functions
+            .iter()
+            .position(|f| f.name == "main" && f.body.is_some())
+            .map(|i| FunctionId(i as u32))
+    }
+
+    /// Spells a type using this module's struct names.
+    pub fn type_name(&self, ty: Type) -> String {
+        let names = |id: crate::types::StructId| {
+            self.structs
+                .get(id.0 as usize)
+                .map(|s| s.name.clone())
+                .unwrap_or_else(|| "<struct>".into())
+        };
+        ty.display(&names).to_string()
+    }
+}

@@ -1,0 +1,271 @@
+//! The raw lexer: source text to preprocessing tokens.
+//!
+//! Comments become whitespace, words and numbers are kept as text (the
+//! preprocessor needs their spelling; keywords are classified only after
+//! `#version` is known, see [`crate::token::classify`]). Newlines are tokens
+//! because preprocessor directives end at them.
+
+use crate::diag::{Code, Diagnostic};
+use crate::source::Span;
+use crate::token::Punct;
+use smol_str::SmolStr;
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum PpKind {
+    /// A word: letters, digits and `_`, not starting with a digit.
+    Ident,
+    /// A preprocessing number: digits, letters, `.`, `_` and exponent signs.
+    Number,
+    Punct(Punct),
+    /// `#`
+    Hash,
+    /// `##`
+    HashHash,
+    Newline,
+    /// A character the language does not use (`@`, `$`, `"`, a non-ASCII
+    /// letter...). The preprocessor may skip it in a skipped block; anywhere
+    /// else it is an error.
+    Other(char),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct PpToken {
+    pub kind: PpKind,
+    pub text: SmolStr,
+    pub span: Span,
+    /// Whitespace (or a comment) precedes the token on its line. Needed to
+    /// tell `#define F(x)` (function-like) from `#define F (x)`.
+    pub space_before: bool,
+}
+
+/// Options that depend on the language version.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct LexOptions {
+    /// Join a line ending in `\` with the next one.
+    pub line_continuation: bool,
+}
+
+/// Splits `text` into preprocessing tokens. Never fails: problems are
+/// reported in the returned diagnostics and lexing continues.
+pub fn lex(text: &str, opts: LexOptions) -> (Vec<PpToken>, Vec<Diagnostic>) {
+    let bytes = text.as_bytes();
+    let mut toks = Vec::new();
+    let mut diags = Vec::new();
+    let mut i = 0usize;
+    let mut space = false;
+    while i < bytes.len() {
+        let c = bytes[i];
+        // Line continuation.
+        if opts.line_continuation && c == b'\\' {
+            let mut j = i + 1;
+            if j < bytes.len() && bytes[j] == b'\r' {
+                j += 1;
+            }
+            if j < bytes.len() && bytes[j] == b'\n' {
+                i = j + 1;
+                continue;
+            }
+        }
+        match c {
+            b' ' | b'\t' | b'\r' | 0x0b | 0x0c => {
+                space = true;
+                i += 1;
+            }
+            b'\n' => {
+                toks.push(PpToken {
+                    kind: PpKind::Newline,
+                    text: SmolStr::new_static("\n"),
+                    span: Span::new(i as u32, i as u32 + 1),
+                    space_before: space,
+                });
+                space = false;
+                i += 1;
+            }
+            b'/' if bytes.get(i + 1) == Some(&b'/') => {
+                // Line comment, up to (not including) the newline.
+                while i < bytes.len() && bytes[i] != b'\n' {
+                    if opts.line_continuation
+                        && bytes[i] == b'\\'
+                        && bytes.get(i + 1) == Some(&b'\n')
+                    {
+                        i += 2;
+                        continue;
+                    }
+                    i += 1;
+                }
+                space = true;
+            }
+            b'/' if bytes.get(i + 1) == Some(&b'*') => {
+                let start = i;
+                i += 2;
+                let mut closed = false;
+                while i < bytes.len() {
+                    if bytes[i] == b'*' && bytes.get(i + 1) == Some(&b'/') {
+                        i += 2;
+                        closed = true;
+                        break;
+                    }
+                    // Newlines inside a comment still end directive lines
+                    // for line counting; the span table handles numbering,
+                    // so nothing is emitted here.
+                    i += 1;
+                }
+                if !closed {
+                    diags.push(Diagnostic::error(
+                        Code::PpUnterminated,
+                        Span::new(start as u32, start as u32 + 2),
+                        "unterminated comment",
+                    ));
+                }
+                space = true;
+            }
+            b'a'..=b'z' | b'A'..=b'Z' | b'_' => {
+                let start = i;
+                while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
+                    i += 1;
+                }
+                toks.push(PpToken {
+                    kind: PpKind::Ident,
+                    text: SmolStr::new(&text[start..i]),
+                    span: Span::new(start as u32, i as u32),
+                    space_before: space,
+                });
+                space = false;
+            }
+            b'0'..=b'9' => {
+                let start = i;
+                i = scan_number(bytes, i);
+                toks.push(PpToken {
+                    kind: PpKind::Number,
+                    text: SmolStr::new(&text[start..i]),
+                    span: Span::new(start as u32, i as u32),
+                    space_before: space,
+                });
+                space = false;
+            }
+            b'.' if bytes.get(i + 1).is_some_and(|b| b.is_ascii_digit()) => {
+                let start = i;
+                i = scan_number(bytes, i);
+                toks.push(PpToken {
+                    kind: PpKind::Number,
+                    text: SmolStr::new(&text[start..i]),
+                    span: Span::new(start as u32, i as u32),
+                    space_before: space,
+                });
+                space = false;
+            }
+            b'#' => {
+                let start = i;
+                let (kind, len) = if bytes.get(i + 1) == Some(&b'#') {
+                    (PpKind::HashHash, 2)
+                } else {
+                    (PpKind::Hash, 1)
+                };
+                i += len;
+                toks.push(PpToken {
+                    kind,
+                    text: SmolStr::new(&text[start..i]),
+                    span: Span::new(start as u32, i as u32),
+                    space_before: space,
+                });
+                space = false;
+            }
+            _ => {
+                let start = i;
+                let rest = &text[i..];
+                if let Some(p) = Punct::ALL_LONGEST_FIRST
+                    .iter()
+                    .find(|p| rest.starts_with(p.as_str()))
+                {
+                    i += p.as_str().len();
+                    toks.push(PpToken {
+                        kind: PpKind::Punct(*p),
+                        text: SmolStr::new_static(p.as_str()),
+                        span: Span::new(start as u32, i as u32),
+                        space_before: space,
+                    });
+                } else {
+                    let ch = rest.chars().next().unwrap_or('\u{fffd}');
+                    i += ch.len_utf8();
+                    toks.push(PpToken {
+                        kind: PpKind::Other(ch),
+                        text: SmolStr::new(&text[start..i]),
+                        span: Span::new(start as u32, i as u32),
+                        space_before: space,
+                    });
+                }
+                space = false;
+            }
+        }
+    }
+    (toks, diags)
+}
+
+/// Scans a preprocessing number starting at `i`: digits, letters, `_`, `.`,
+/// and a sign right after an exponent letter `e`/`E` (not in hex numbers).
+fn scan_number(bytes: &[u8], mut i: usize) -> usize {
+    let hex = bytes[i] == b'0' && matches!(bytes.get(i + 1), Some(b'x') | Some(b'X'));
+    while i < bytes.len() {
+        let c = bytes[i];
+        if c.is_ascii_alphanumeric() || c == b'_' || c == b'.' {
+            i += 1;
+            if !hex
+                && (c == b'e' || c == b'E')
+                && matches!(bytes.get(i), Some(b'+') | Some(b'-'))
+            {
+                i += 1;
+            }
+        } else {
+            break;
+        }
+    }
+    i
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn kinds(s: &str) -> Vec<PpKind> {
+        lex(s, LexOptions::default()).0.into_iter().map(|t| t.kind).collect()
+    }
+
+    #[test]
+    fn basic() {
+        let (t, d) = lex("vec4 a = 1.5e-3*b; // x\n", LexOptions::default());
+        assert!(d.is_empty());
+        let texts: Vec<_> = t.iter().map(|t| t.text.as_str()).collect();
+        assert_eq!(texts, ["vec4", "a", "=", "1.5e-3", "*", "b", ";", "\n"]);
+    }
+
+    #[test]
+    fn comments_and_hash() {
+        assert_eq!(
+            kinds("# define /* c */ X##Y"),
+            [
+                PpKind::Hash,
+                PpKind::Ident,
+                PpKind::Ident,
+                PpKind::HashHash,
+                PpKind::Ident
+            ]
+        );
+    }
+
+    #[test]
+    fn continuation() {
+        let opts = LexOptions {
+            line_continuation: true,
+        };
+        let (t, _) = lex("a\\\nb", opts);
+        assert_eq!(t.len(), 2);
+        let (t, _) = lex("a\\\nb", LexOptions::default());
+        assert!(t.iter().any(|t| t.kind == PpKind::Other('\\')));
+    }
+
+    #[test]
+    fn unterminated_comment() {
+        let (_, d) = lex("/* abc", LexOptions::default());
+        assert_eq!(d.len(), 1);
+    }
+}

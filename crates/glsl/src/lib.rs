@@ -1,0 +1,127 @@
+//! # shaderbox-glsl: the GLSL 1.10/1.20 front end
+//!
+//! Source text in, a typed and validated IR ([`ir::Module`]) or a list of
+//! [`diag::Diagnostic`]s out; then the link-time checks of a GL program
+//! ([`link`]).
+//!
+//! ```text
+//! strings ─► pp (preprocess) ─► parse (AST) ─► sema (typed IR) ─► validate
+//!                                                   shader objects ─► link
+//! ```
+//!
+//! ## Contract
+//! - Follows the GLSL 1.10 and 1.20 specifications, chosen per shader by
+//!   `#version` (default 110). A shader that the spec allows compiles; one
+//!   it forbids gets at least one error with a location.
+//! - Never panics on any input and always terminates: macro expansion,
+//!   nesting depth and token counts are bounded ([`limits`]).
+//! - Reports every independent error of a compile, not only the first.
+//! - Deterministic: the same input gives the same IR and diagnostics on
+//!   every machine (constant folding uses the project's own math, not the
+//!   platform's).
+//!
+//! ## Limitations
+//! - GLSL ES and versions other than 1.10 and 1.20 are rejected.
+//! - No extension is supported beyond what `#extension` needs to accept
+//!   (`all : warn`, unknown extensions with `warn`/`disable`).
+
+pub mod ast;
+pub mod builtins;
+pub mod diag;
+pub mod ir;
+pub mod lex;
+pub mod limits;
+pub mod link;
+pub mod parse;
+pub mod pp;
+pub mod sema;
+pub mod source;
+pub mod token;
+pub mod types;
+pub mod validate;
+
+pub use diag::{Code, Diagnostic, Severity};
+pub use ir::Stage;
+pub use source::{Loc, SourceMap, Span};
+pub use token::Version;
+
+/// What to compile and how.
+#[derive(Clone, Debug)]
+pub struct CompileOptions {
+    pub stage: Stage,
+    /// Name shown by the terminal renderer (a file path).
+    pub name: String,
+}
+
+impl CompileOptions {
+    pub fn new(stage: Stage) -> CompileOptions {
+        CompileOptions {
+            stage,
+            name: String::from("<shader>"),
+        }
+    }
+}
+
+/// A compiled shader object (what `glCompileShader` produces).
+#[derive(Clone, Debug)]
+pub struct Shader {
+    pub stage: Stage,
+    pub source: SourceMap,
+    /// The version from `#version` (or 1.10 without one).
+    pub version: Version,
+    /// The analyzed module; present only when there are no errors.
+    pub module: Option<ir::Module>,
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl Shader {
+    /// True when the shader compiled (`GL_COMPILE_STATUS`).
+    pub fn ok(&self) -> bool {
+        self.module.is_some()
+    }
+
+    /// The GL info log.
+    pub fn info_log(&self) -> String {
+        diag::render_info_log(&self.diagnostics, &self.source)
+    }
+
+    /// The rich terminal rendering of the diagnostics.
+    pub fn render(&self, color: bool) -> String {
+        diag::render_terminal(&self.diagnostics, &self.source, color)
+    }
+}
+
+/// Compiles one shader object from its source strings.
+pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
+    let mut source = SourceMap::from_strings(opts.name.clone(), strings);
+    let pp_out = pp::preprocess(&mut source, &pp::PpOptions { stage: opts.stage });
+    let mut diagnostics = pp_out.diagnostics;
+    let version = pp_out.version;
+    let pp_failed = diagnostics.iter().any(Diagnostic::is_error);
+    let mut module = None;
+    if !pp_failed {
+        let (tu, parse_diags) = parse::parse(&pp_out.tokens, version);
+        diagnostics.extend(parse_diags);
+        let ctx = sema::Context {
+            version,
+            stage: opts.stage,
+            extensions: pp_out.extensions.clone(),
+        };
+        let (m, sema_diags) = sema::analyze(&tu, &ctx);
+        diagnostics.extend(sema_diags);
+        if !diagnostics.iter().any(Diagnostic::is_error) {
+            let v = validate::validate(&m);
+            diagnostics.extend(v);
+            if !diagnostics.iter().any(Diagnostic::is_error) {
+                module = Some(m);
+            }
+        }
+    }
+    Shader {
+        stage: opts.stage,
+        source,
+        version,
+        module,
+        diagnostics,
+    }
+}

@@ -1,0 +1,43 @@
+//! The implementation limits shaderbox advertises, in one place.
+//!
+//! The built-in constants of GLSL 1.20 §7.4 take these values, the linker
+//! checks programs against them, and the GL layer reports them through
+//! `glGetIntegerv`. Each is at least the minimum the spec requires (given in
+//! the comment) and matches what Mesa's llvmpipe advertises where that
+//! matters to existing programs.
+
+/// `gl_MaxLights` (minimum 8).
+pub const MAX_LIGHTS: u32 = 8;
+/// `gl_MaxClipPlanes` (minimum 6).
+pub const MAX_CLIP_PLANES: u32 = 8;
+/// `gl_MaxTextureUnits`: fixed-function texture units (minimum 2).
+pub const MAX_TEXTURE_UNITS: u32 = 8;
+/// `gl_MaxTextureCoords` (minimum 2).
+pub const MAX_TEXTURE_COORDS: u32 = 8;
+/// `gl_MaxVertexAttribs` (minimum 16).
+pub const MAX_VERTEX_ATTRIBS: u32 = 16;
+/// `gl_MaxVertexUniformComponents` (minimum 512).
+pub const MAX_VERTEX_UNIFORM_COMPONENTS: u32 = 4096;
+/// `gl_MaxVaryingFloats` (minimum 32).
+pub const MAX_VARYING_FLOATS: u32 = 64;
+/// `gl_MaxVertexTextureImageUnits` (minimum 0).
+pub const MAX_VERTEX_TEXTURE_IMAGE_UNITS: u32 = 16;
+/// `gl_MaxCombinedTextureImageUnits` (minimum 2).
+pub const MAX_COMBINED_TEXTURE_IMAGE_UNITS: u32 = 32;
+/// `gl_MaxTextureImageUnits` (minimum 2).
+pub const MAX_TEXTURE_IMAGE_UNITS: u32 = 16;
+/// `gl_MaxFragmentUniformComponents` (minimum 64).
+pub const MAX_FRAGMENT_UNIFORM_COMPONENTS: u32 = 4096;
+/// `gl_MaxDrawBuffers` (minimum 1).
+pub const MAX_DRAW_BUFFERS: u32 = 8;
+
+/// Macro expansion depth at which the preprocessor gives up (recursive
+/// macros are not expanded again, so this only bounds pathological input).
+pub const MAX_MACRO_EXPANSION_DEPTH: u32 = 256;
+/// Nesting depth of parentheses, blocks and conditionals at which the parser
+/// stops with an error instead of exhausting the stack.
+pub const MAX_NESTING_DEPTH: u32 = 256;
+/// Total tokens a preprocessed shader may have (guards against macro bombs).
+pub const MAX_TOKENS: usize = 4_000_000;
+/// Largest array size accepted in a declaration.
+pub const MAX_ARRAY_SIZE: u32 = 1 << 20;
