@@ -294,7 +294,10 @@ pub fn render_terminal(diags: &[Diagnostic], map: &SourceMap, color: bool) -> St
 }
 
 /// The closest candidates to `name` among `candidates`, for "did you mean".
-pub fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+pub fn did_you_mean<'a>(
+    name: &str,
+    candidates: impl IntoIterator<Item = &'a str>,
+) -> Option<&'a str> {
     let mut best: Option<(f64, &str)> = None;
     for c in candidates {
         if c == name {
@@ -321,7 +324,10 @@ mod tests {
         let d = Diagnostic::error(Code::Undeclared, Span::new(at, at + 1), "`x' undeclared")
             .with_note("did you mean `y'?");
         let log = render_info_log(&[d], &map);
-        assert_eq!(log, "0:3(3): error: `x' undeclared\n    note: did you mean `y'?\n");
+        assert_eq!(
+            log,
+            "0:3(3): error: `x' undeclared\n    note: did you mean `y'?\n"
+        );
     }
 
     #[test]

@@ -61,7 +61,10 @@ pub enum Base {
     /// A vector of 2, 3 or 4 components.
     Vector(Scalar, u8),
     /// A float matrix with `cols` columns of `rows` components (2..=4 each).
-    Matrix { cols: u8, rows: u8 },
+    Matrix {
+        cols: u8,
+        rows: u8,
+    },
     Sampler(SamplerKind),
     Struct(StructId),
     /// The type of an expression whose analysis failed. It converts to and
@@ -192,8 +195,14 @@ impl Type {
     /// The same shape with another scalar kind (for conversions).
     pub fn with_scalar(self, s: Scalar) -> Type {
         match self.base {
-            Base::Scalar(_) => Type { base: Base::Scalar(s), ..self },
-            Base::Vector(_, n) => Type { base: Base::Vector(s, n), ..self },
+            Base::Scalar(_) => Type {
+                base: Base::Scalar(s),
+                ..self
+            },
+            Base::Vector(_, n) => Type {
+                base: Base::Vector(s, n),
+                ..self
+            },
             _ => self,
         }
     }
