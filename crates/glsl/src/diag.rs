@@ -218,12 +218,9 @@ impl Diagnostic {
 pub fn render_info_log(diags: &[Diagnostic], map: &SourceMap) -> String {
     let mut out = String::new();
     for d in diags {
-        match d.span {
-            Some(span) => {
-                let loc = map.loc(span.start);
-                out.push_str(&format!("{}:{}({}): ", loc.source, loc.line, loc.column));
-            }
-            None => {}
+        if let Some(span) = d.span {
+            let loc = map.loc(span.start);
+            out.push_str(&format!("{}:{}({}): ", loc.source, loc.line, loc.column));
         }
         out.push_str(d.severity.as_str());
         out.push_str(": ");
