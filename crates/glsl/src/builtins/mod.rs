@@ -9,6 +9,8 @@
 //! - [`eval_builtin`]: constant folding of built-in calls.
 
 mod eval;
+#[cfg(test)]
+mod eval_piglit;
 mod prelude;
 
 pub use eval::eval_builtin;
