@@ -94,7 +94,7 @@ fn constants(out: &mut String) {
         ),
         ("gl_MaxDrawBuffers", limits::MAX_DRAW_BUFFERS),
     ];
-    out.push_str("// §7.4 built-in constants\n");
+    out.push_str("// section 7.4 built-in constants\n");
     for (name, value) in list {
         let _ = writeln!(out, "const int {name} = {value};");
     }
@@ -103,7 +103,7 @@ fn constants(out: &mut String) {
 /// §7.5, visible to both stages.
 fn uniform_state(out: &mut String, version: Version) {
     out.push_str(
-        "// §7.5 built-in uniform state
+        "// section 7.5 built-in uniform state
 uniform mat4 gl_ModelViewMatrix;
 uniform mat4 gl_ProjectionMatrix;
 uniform mat4 gl_ModelViewProjectionMatrix;
@@ -212,11 +212,11 @@ uniform gl_FogParameters gl_Fog;
 /// §7.1 special variables, §7.3 attributes, §7.6 vertex varyings.
 fn vertex_variables(out: &mut String) {
     out.push_str(
-        "// §7.1 vertex shader special variables
+        "// section 7.1 vertex shader special variables
 vec4 gl_Position;
 float gl_PointSize;
 vec4 gl_ClipVertex;
-// §7.3 built-in attributes
+// section 7.3 built-in attributes
 attribute vec4 gl_Color;
 attribute vec4 gl_SecondaryColor;
 attribute vec3 gl_Normal;
@@ -228,7 +228,7 @@ attribute vec4 gl_Vertex;
     }
     out.push_str(
         "attribute float gl_FogCoord;
-// §7.6 varying outputs
+// section 7.6 varying outputs
 varying vec4 gl_FrontColor;
 varying vec4 gl_BackColor;
 varying vec4 gl_FrontSecondaryColor;
@@ -242,13 +242,13 @@ varying float gl_FogFragCoord;
 /// §7.2 special variables, §7.6 fragment varyings.
 fn fragment_variables(out: &mut String, version: Version) {
     out.push_str(
-        "// §7.2 fragment shader special variables
+        "// section 7.2 fragment shader special variables
 varying vec4 gl_FragCoord;
 varying bool gl_FrontFacing;
 vec4 gl_FragColor;
 vec4 gl_FragData[gl_MaxDrawBuffers];
 float gl_FragDepth;
-// §7.6 varying inputs
+// section 7.6 varying inputs
 varying vec4 gl_Color;
 varying vec4 gl_SecondaryColor;
 varying vec4 gl_TexCoord[];
@@ -315,20 +315,20 @@ fn mat_name(cols: u8, rows: u8) -> String {
 }
 
 fn functions(out: &mut String, version: Version, stage: Stage) {
-    out.push_str("// §8.1 angle and trigonometry functions\n");
+    out.push_str("// section 8.1 angle and trigonometry functions\n");
     for f in ["radians", "degrees", "sin", "cos", "tan", "asin", "acos"] {
         gen(out, "G", f, &["G"]);
     }
     gen(out, "G", "atan", &["G", "G"]);
     gen(out, "G", "atan", &["G"]);
 
-    out.push_str("// §8.2 exponential functions\n");
+    out.push_str("// section 8.2 exponential functions\n");
     gen(out, "G", "pow", &["G", "G"]);
     for f in ["exp", "log", "exp2", "log2", "sqrt", "inversesqrt"] {
         gen(out, "G", f, &["G"]);
     }
 
-    out.push_str("// §8.3 common functions\n");
+    out.push_str("// section 8.3 common functions\n");
     for f in ["abs", "sign", "floor", "ceil", "fract"] {
         gen(out, "G", f, &["G"]);
     }
@@ -345,7 +345,7 @@ fn functions(out: &mut String, version: Version, stage: Stage) {
     gen(out, "G", "smoothstep", &["G", "G", "G"]);
     gen_vec(out, "smoothstep", &["float", "float", "G"]);
 
-    out.push_str("// §8.4 geometric functions\n");
+    out.push_str("// section 8.4 geometric functions\n");
     gen(out, "float", "length", &["G"]);
     gen(out, "float", "distance", &["G", "G"]);
     gen(out, "float", "dot", &["G", "G"]);
@@ -358,7 +358,7 @@ fn functions(out: &mut String, version: Version, stage: Stage) {
     gen(out, "G", "reflect", &["G", "G"]);
     gen(out, "G", "refract", &["G", "G", "float"]);
 
-    out.push_str("// §8.5 matrix functions\n");
+    out.push_str("// section 8.5 matrix functions\n");
     for (m, _, _) in matrices(version) {
         proto(out, &m, "matrixCompMult", &[&m, &m]);
     }
@@ -374,7 +374,7 @@ fn functions(out: &mut String, version: Version, stage: Stage) {
         }
     }
 
-    out.push_str("// §8.6 vector relational functions\n");
+    out.push_str("// section 8.6 vector relational functions\n");
     for f in [
         "lessThan",
         "lessThanEqual",
@@ -405,13 +405,13 @@ fn functions(out: &mut String, version: Version, stage: Stage) {
     texture_functions(out, stage);
 
     if stage == Stage::Fragment {
-        out.push_str("// §8.8 fragment processing functions\n");
+        out.push_str("// section 8.8 fragment processing functions\n");
         for f in ["dFdx", "dFdy", "fwidth"] {
             gen(out, "G", f, &["G"]);
         }
     }
 
-    out.push_str("// §8.9 noise functions\n");
+    out.push_str("// section 8.9 noise functions\n");
     gen(out, "float", "noise1", &["G"]);
     gen(out, "vec2", "noise2", &["G"]);
     gen(out, "vec3", "noise3", &["G"]);
@@ -438,7 +438,7 @@ fn texture_functions(out: &mut String, stage: Stage) {
         ("shadow1DProj", "sampler1DShadow", &["vec4"]),
         ("shadow2DProj", "sampler2DShadow", &["vec4"]),
     ];
-    out.push_str("// §8.7 texture lookup functions\n");
+    out.push_str("// section 8.7 texture lookup functions\n");
     for (name, sampler, coords) in lookups.iter().chain(shadow_proj.iter()) {
         for coord in coords.iter() {
             proto(out, "vec4", name, &[sampler, coord]);
@@ -568,6 +568,24 @@ mod tests {
                     "uniform mat4 gl_TextureMatrixInverseTranspose[gl_MaxTextureCoords];"
                 ));
                 assert!(text.contains("varying vec4 gl_TexCoord[];"));
+            }
+        }
+    }
+
+    #[test]
+    fn lexes_cleanly_with_no_reserved_words() {
+        use crate::lex::{lex, LexOptions, PpKind};
+        use crate::token::{classify, WordClass};
+        for (v, s) in ALL {
+            let text = prelude(v, s);
+            assert!(text.is_ascii());
+            let (tokens, diags) = lex(text, LexOptions::default());
+            assert!(diags.is_empty(), "{v:?} {s:?}: {diags:?}");
+            for t in &tokens {
+                assert!(!matches!(t.kind, PpKind::Other(_) | PpKind::Hash));
+                if t.kind == PpKind::Ident {
+                    assert_ne!(classify(&t.text, v), WordClass::Reserved, "{}", t.text);
+                }
             }
         }
     }
