@@ -198,6 +198,15 @@ mod tests {
                 p[0] = border + 1e-3;
                 let b = gradient_noise(&p, 2);
                 assert!((a - b).abs() < 1e-2, "d={d}: jump {a} -> {b}");
+                // One-sided slopes agree: the first derivative is continuous.
+                let h = 1e-2f32;
+                let mut at = |x: f32| {
+                    p[0] = x;
+                    gradient_noise(&p, 2)
+                };
+                let left = (at(border - h) - at(border - 2.0 * h)) / h;
+                let right = (at(border + 2.0 * h) - at(border + h)) / h;
+                assert!((left - right).abs() < 0.1, "d={d}: slope {left} -> {right}");
             }
         }
     }
