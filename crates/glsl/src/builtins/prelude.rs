@@ -18,7 +18,8 @@
 //!   vertex shader).
 //!
 //! Nothing else is declared: a name missing from this text is not a
-//! built-in of that version and stage.
+//! built-in of that version and stage. The text starts with the matching
+//! `#version` line and has no other preprocessor directive.
 
 use crate::ir::Stage;
 use crate::limits;
@@ -50,6 +51,9 @@ const GEN_TYPES: [&str; 4] = ["float", "vec2", "vec3", "vec4"];
 
 fn build(version: Version, stage: Stage) -> String {
     let mut out = String::with_capacity(32 * 1024);
+    // The preprocessor classifies keywords by the `#version` it sees, so the
+    // prelude states its own (`mat2x3` is a type only in 1.20).
+    let _ = writeln!(out, "#version {}", version.number());
     let _ = writeln!(
         out,
         "// Built-in declarations of GLSL {} ({} shader).",
@@ -579,10 +583,12 @@ mod tests {
         for (v, s) in ALL {
             let text = prelude(v, s);
             assert!(text.is_ascii());
+            assert!(text.starts_with(&format!("#version {}\n", v.number())));
+            assert_eq!(text.matches('#').count(), 1);
             let (tokens, diags) = lex(text, LexOptions::default());
             assert!(diags.is_empty(), "{v:?} {s:?}: {diags:?}");
             for t in &tokens {
-                assert!(!matches!(t.kind, PpKind::Other(_) | PpKind::Hash));
+                assert!(!matches!(t.kind, PpKind::Other(_)));
                 if t.kind == PpKind::Ident {
                     assert_ne!(classify(&t.text, v), WordClass::Reserved, "{}", t.text);
                 }
