@@ -27,11 +27,13 @@
 
 pub mod ast;
 pub mod builtins;
+pub mod consteval;
 pub mod diag;
 pub mod ir;
 pub mod lex;
 pub mod limits;
 pub mod link;
+pub mod math;
 pub mod parse;
 pub mod pp;
 pub mod sema;
