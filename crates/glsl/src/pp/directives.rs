@@ -744,7 +744,7 @@ impl Preprocessor<'_> {
         let toks: Vec<PTok> = d.rest.iter().cloned().map(PTok::from).collect();
         let expanded = self.expander(false).expand(toks);
         let is_defined = |_: &str| false;
-        let mut p = ExprParser::new(&expanded, d.end, &is_defined);
+        let mut p = ExprParser::new(&expanded, d.end, &is_defined).strict();
         let result = (|| {
             let line = p.expression()?;
             let source = if p.at_end() {

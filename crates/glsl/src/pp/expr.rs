@@ -28,6 +28,8 @@ pub(crate) struct ExprParser<'a> {
     is_defined: &'a dyn Fn(&str) -> bool,
     warnings: Vec<Diagnostic>,
     nesting: u32,
+    /// Identifiers evaluate to 0 (`#if`) instead of being errors (`#line`).
+    idents_are_zero: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -89,7 +91,15 @@ impl<'a> ExprParser<'a> {
             is_defined,
             warnings: Vec::new(),
             nesting: 0,
+            idents_are_zero: true,
         }
+    }
+
+    /// Makes identifiers errors rather than 0 (for `#line`, whose operands
+    /// must be integers after macro expansion).
+    pub fn strict(mut self) -> Self {
+        self.idents_are_zero = false;
+        self
     }
 
     /// Warnings collected so far (identifiers evaluated as 0).
@@ -172,6 +182,10 @@ impl<'a> ExprParser<'a> {
             }
             PpKind::Number => number_value(t),
             PpKind::Ident if t.text == "defined" => self.defined(t),
+            PpKind::Ident if !self.idents_are_zero => {
+                self.pos -= 1;
+                Err(unexpected(Some(t), self.end, "an integer"))
+            }
             PpKind::Ident => {
                 self.warnings.push(
                     Diagnostic::warning(

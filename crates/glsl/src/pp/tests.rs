@@ -241,7 +241,8 @@ fn line_directive_sets_locations() {
     assert_eq!((loc(1).source, loc(1).line), (4, 21));
     assert_eq!((loc(2).source, loc(2).line), (4, 6));
     err("#line", "needs a line number");
-    err("#line x y z", "expected the end of the #line directive");
+    err("#line x y z", "expected an integer, found `x'");
+    err("#line 3 c", "expected an integer, found `c'");
     err("#line \"\"", "expected an integer expression");
     err("#line -1", "out of range");
     err("#line 1 2 3", "end of the #line");
@@ -698,4 +699,21 @@ fn never_panics() {
 fn eof_span_is_end_of_text() {
     let (out, _) = run("a b ");
     assert_eq!(out.tokens.last().map(|t| t.span), Some(Span::new(4, 4)));
+}
+
+#[test]
+fn builtin_prelude_preprocesses_cleanly() {
+    for v in [Version::V110, Version::V120] {
+        for s in [Stage::Vertex, Stage::Fragment] {
+            let mut map = SourceMap::new("prelude", crate::builtins::prelude(v, s));
+            let out = preprocess(&mut map, &PpOptions { stage: s });
+            assert!(
+                out.diagnostics.is_empty(),
+                "{v:?} {s:?}: {:?}",
+                out.diagnostics
+            );
+            assert_eq!(out.version, v);
+            assert!(out.tokens.len() > 100);
+        }
+    }
 }
