@@ -124,3 +124,9 @@ mod tests {
         }
     }
 }
+
+/// The GLSL text declaring the built-ins of a version and stage.
+/// Placeholder until the built-in tables land.
+pub fn prelude(_version: crate::token::Version, _stage: crate::ir::Stage) -> &'static str {
+    ""
+}

@@ -27,6 +27,7 @@
 
 pub mod ast;
 pub mod builtins;
+pub mod consteval;
 pub mod diag;
 pub mod ir;
 pub mod lex;
