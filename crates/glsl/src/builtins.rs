@@ -113,6 +113,16 @@ builtin_fns! {
     Noise4 = "noise4";
 }
 
+/// Constant folding of a built-in call. Placeholder until the evaluation
+/// tables land: nothing folds yet.
+pub fn eval_builtin(
+    _f: BuiltinFn,
+    _args: &[crate::ir::ConstValue],
+    _result: crate::types::Type,
+) -> Option<crate::ir::ConstValue> {
+    None
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

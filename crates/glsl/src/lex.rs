@@ -209,10 +209,7 @@ fn scan_number(bytes: &[u8], mut i: usize) -> usize {
         let c = bytes[i];
         if c.is_ascii_alphanumeric() || c == b'_' || c == b'.' {
             i += 1;
-            if !hex
-                && (c == b'e' || c == b'E')
-                && matches!(bytes.get(i), Some(b'+') | Some(b'-'))
-            {
+            if !hex && (c == b'e' || c == b'E') && matches!(bytes.get(i), Some(b'+') | Some(b'-')) {
                 i += 1;
             }
         } else {
@@ -227,7 +224,11 @@ mod tests {
     use super::*;
 
     fn kinds(s: &str) -> Vec<PpKind> {
-        lex(s, LexOptions::default()).0.into_iter().map(|t| t.kind).collect()
+        lex(s, LexOptions::default())
+            .0
+            .into_iter()
+            .map(|t| t.kind)
+            .collect()
     }
 
     #[test]

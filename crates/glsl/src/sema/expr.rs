@@ -197,7 +197,7 @@ impl Analyzer {
         if !all_const || e.ty.is_error() {
             return e;
         }
-        match crate::consteval::fold(&e) {
+        match crate::consteval::fold(&e, &self.module.structs) {
             Some(mut c) => {
                 c.ty = e.ty;
                 const_expr(c, e.span)
