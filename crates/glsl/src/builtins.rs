@@ -123,6 +123,12 @@ pub fn eval_builtin(
     None
 }
 
+/// The GLSL text declaring the built-ins of a version and stage.
+/// Placeholder until the built-in tables land.
+pub fn prelude(_version: crate::token::Version, _stage: crate::ir::Stage) -> &'static str {
+    ""
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -133,10 +139,4 @@ mod tests {
             assert_eq!(BuiltinFn::from_name(f.name()), Some(*f));
         }
     }
-}
-
-/// The GLSL text declaring the built-ins of a version and stage.
-/// Placeholder until the built-in tables land.
-pub fn prelude(_version: crate::token::Version, _stage: crate::ir::Stage) -> &'static str {
-    ""
 }

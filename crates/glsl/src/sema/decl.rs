@@ -25,9 +25,13 @@ impl Analyzer {
         match d {
             Declaration::Prototype(p) => {
                 if !self.scopes.is_global() {
-                    self.error(Code::BadQualifier, p.span, "function prototypes must be at global scope")
-                        .notes
-                        .push("GLSL 1.20 §4.2.6: move the prototype out of the function".into());
+                    self.error(
+                        Code::BadQualifier,
+                        p.span,
+                        "function prototypes must be at global scope",
+                    )
+                    .notes
+                    .push("GLSL 1.20 §4.2.6: move the prototype out of the function".into());
                     return Vec::new();
                 }
                 self.function_proto(p, false);
@@ -49,12 +53,18 @@ impl Analyzer {
         for (i, sq) in quals.iter().enumerate() {
             let name = sq.qualifier.as_str();
             match sq.qualifier {
-                Qualifier::Const | Qualifier::Attribute | Qualifier::Uniform | Qualifier::Varying => {
+                Qualifier::Const
+                | Qualifier::Attribute
+                | Qualifier::Uniform
+                | Qualifier::Varying => {
                     if let Some(prev) = q.storage {
                         self.error(
                             Code::BadQualifier,
                             sq.span,
-                            format!("`{name}' after `{}': only one storage qualifier is allowed", prev.as_str()),
+                            format!(
+                                "`{name}' after `{}': only one storage qualifier is allowed",
+                                prev.as_str()
+                            ),
                         );
                         continue;
                     }
@@ -64,7 +74,10 @@ impl Analyzer {
                     self.error(
                         Code::BadQualifier,
                         sq.span,
-                        format!("`{name}' is only allowed on function parameters in GLSL {}", self.version.dotted()),
+                        format!(
+                            "`{name}' is only allowed on function parameters in GLSL {}",
+                            self.version.dotted()
+                        ),
                     )
                     .notes
                     .push("use `attribute'/`varying' for stage inputs and outputs".into());
@@ -72,13 +85,21 @@ impl Analyzer {
                 Qualifier::Centroid => {
                     let next = quals.get(i + 1).map(|n| n.qualifier);
                     if next != Some(Qualifier::Varying) {
-                        self.error(Code::BadQualifier, sq.span, "`centroid' must be followed by `varying'");
+                        self.error(
+                            Code::BadQualifier,
+                            sq.span,
+                            "`centroid' must be followed by `varying'",
+                        );
                     }
                     q.centroid = true;
                 }
                 Qualifier::Invariant => {
                     if i != 0 {
-                        self.error(Code::BadQualifier, sq.span, "`invariant' must come before the other qualifiers");
+                        self.error(
+                            Code::BadQualifier,
+                            sq.span,
+                            "`invariant' must come before the other qualifiers",
+                        );
                     }
                     if q.invariant {
                         self.error(Code::BadQualifier, sq.span, "`invariant' given twice");
@@ -89,29 +110,56 @@ impl Analyzer {
         }
         if !global {
             if let Some(s) = q.storage.filter(|s| *s != Qualifier::Const) {
-                let span = quals.iter().find(|x| x.qualifier == s).map_or(Span::default(), |x| x.span);
+                let span = quals
+                    .iter()
+                    .find(|x| x.qualifier == s)
+                    .map_or(Span::default(), |x| x.span);
                 self.error(
                     Code::BadQualifier,
                     span,
-                    format!("`{}' is not allowed on local variables; declare it at global scope", s.as_str()),
+                    format!(
+                        "`{}' is not allowed on local variables; declare it at global scope",
+                        s.as_str()
+                    ),
                 );
                 q.storage = None;
             }
             if q.invariant {
-                let span = quals.iter().find(|x| x.qualifier == Qualifier::Invariant).map_or(Span::default(), |x| x.span);
-                self.error(Code::BadQualifier, span, "`invariant' is only allowed on global varyings");
+                let span = quals
+                    .iter()
+                    .find(|x| x.qualifier == Qualifier::Invariant)
+                    .map_or(Span::default(), |x| x.span);
+                self.error(
+                    Code::BadQualifier,
+                    span,
+                    "`invariant' is only allowed on global varyings",
+                );
                 q.invariant = false;
             }
         } else if q.invariant && q.storage != Some(Qualifier::Varying) && !self.builtin_mode {
-            let span = quals.iter().find(|x| x.qualifier == Qualifier::Invariant).map_or(Span::default(), |x| x.span);
-            self.error(Code::BadQualifier, span, "`invariant' applies only to varyings (GLSL 1.20 §4.6.1)");
+            let span = quals
+                .iter()
+                .find(|x| x.qualifier == Qualifier::Invariant)
+                .map_or(Span::default(), |x| x.span);
+            self.error(
+                Code::BadQualifier,
+                span,
+                "`invariant' applies only to varyings (GLSL 1.20 §4.6.1)",
+            );
             q.invariant = false;
         }
         if q.storage == Some(Qualifier::Attribute) && self.stage != Stage::Vertex {
-            let span = quals.iter().find(|x| x.qualifier == Qualifier::Attribute).map_or(Span::default(), |x| x.span);
-            self.error(Code::StageMismatch, span, "`attribute' is only allowed in vertex shaders")
-                .notes
-                .push("fragment shaders read per-vertex data through `varying'".into());
+            let span = quals
+                .iter()
+                .find(|x| x.qualifier == Qualifier::Attribute)
+                .map_or(Span::default(), |x| x.span);
+            self.error(
+                Code::StageMismatch,
+                span,
+                "`attribute' is only allowed in vertex shaders",
+            )
+            .notes
+            .push("fragment shaders read per-vertex data through `varying'".into());
             q.storage = None;
         }
         q
@@ -123,7 +171,11 @@ impl Analyzer {
         let mut out = Vec::new();
         if list.declarators.is_empty() {
             if !matches!(list.ty.ty.name, crate::ast::TypeName::Struct(_)) && !base.is_error() {
-                self.push(Diagnostic::warning(Code::Syntax, list.span, "declaration declares nothing"));
+                self.push(Diagnostic::warning(
+                    Code::Syntax,
+                    list.span,
+                    "declaration declares nothing",
+                ));
             }
             return out;
         }
@@ -143,12 +195,19 @@ impl Analyzer {
         let name = &d.name.name;
         let tn = self.tn(ty);
         if ty.base == Base::Void {
-            self.error(Code::TypeMismatch, d.name.span, format!("variable `{name}' cannot be void"));
+            self.error(
+                Code::TypeMismatch,
+                d.name.span,
+                format!("variable `{name}' cannot be void"),
+            );
             return;
         }
-        let float_based = matches!(ty.base, Base::Scalar(crate::types::Scalar::Float)
-            | Base::Vector(crate::types::Scalar::Float, _)
-            | Base::Matrix { .. });
+        let float_based = matches!(
+            ty.base,
+            Base::Scalar(crate::types::Scalar::Float)
+                | Base::Vector(crate::types::Scalar::Float, _)
+                | Base::Matrix { .. }
+        );
         match q.storage {
             Some(Qualifier::Attribute) => {
                 if !float_based || ty.is_array() {
@@ -185,14 +244,26 @@ impl Analyzer {
     }
 
     /// One declarator of a declaration list.
-    fn declarator(&mut self, q: VarQuals, base: Type, d: &InitDeclarator, _tyspan: Span) -> Option<ir::Stmt> {
+    fn declarator(
+        &mut self,
+        q: VarQuals,
+        base: Type,
+        d: &InitDeclarator,
+        _tyspan: Span,
+    ) -> Option<ir::Stmt> {
         let mut ty = self.apply_array(base, d.array.as_ref());
         let name = d.name.name.clone();
         self.check_storage_type(q, ty, d);
         if self.version < Version::V120 && ty.is_array() && d.init.is_some() {
-            self.error(Code::VersionTooLow, d.span, "arrays cannot be initialized in GLSL 1.10")
-                .notes
-                .push("assign the elements one by one, or use `#version 120' array constructors".into());
+            self.error(
+                Code::VersionTooLow,
+                d.span,
+                "arrays cannot be initialized in GLSL 1.10",
+            )
+            .notes
+            .push(
+                "assign the elements one by one, or use `#version 120' array constructors".into(),
+            );
         }
         // The variable is not visible in its own initializer (§4.2.2).
         let init = d.init.as_ref().map(|e| {
@@ -214,7 +285,11 @@ impl Analyzer {
         if is_const {
             match &init {
                 None => {
-                    self.error(Code::NotConstant, d.name.span, format!("`const' variable `{name}' needs an initializer"));
+                    self.error(
+                        Code::NotConstant,
+                        d.name.span,
+                        format!("`const' variable `{name}' needs an initializer"),
+                    );
                 }
                 Some(e) if e.ty.is_error() => {}
                 Some(e) => match &e.kind {
@@ -230,9 +305,17 @@ impl Analyzer {
         if q.storage == Some(Qualifier::Uniform) {
             if let Some(e) = &init {
                 if self.version < Version::V120 {
-                    self.error(Code::VersionTooLow, e.span, "uniform initializers require GLSL 1.20");
+                    self.error(
+                        Code::VersionTooLow,
+                        e.span,
+                        "uniform initializers require GLSL 1.20",
+                    );
                 } else if !matches!(e.kind, ExprKind::Const(_)) && !e.ty.is_error() {
-                    self.error(Code::NotConstant, e.span, "a uniform initializer must be a constant expression");
+                    self.error(
+                        Code::NotConstant,
+                        e.span,
+                        "a uniform initializer must be a constant expression",
+                    );
                 } else if let ExprKind::Const(c) = &e.kind {
                     value = Some(c.clone());
                 }
@@ -240,12 +323,20 @@ impl Analyzer {
         }
         if matches!(q.storage, Some(Qualifier::Attribute | Qualifier::Varying)) {
             if let Some(e) = &init {
-                self.error(Code::BadQualifier, e.span, "stage inputs and outputs cannot have initializers");
+                self.error(
+                    Code::BadQualifier,
+                    e.span,
+                    "stage inputs and outputs cannot have initializers",
+                );
                 init = None;
             }
         }
         if ty.array == Some(ArraySize::Unsized) && is_const {
-            self.error(Code::BadArraySize, d.name.span, format!("`const' array `{name}' needs a size"));
+            self.error(
+                Code::BadArraySize,
+                d.name.span,
+                format!("`const' array `{name}' needs a size"),
+            );
         }
 
         // gl_ names: only the permitted built-in redeclarations.
@@ -262,7 +353,11 @@ impl Analyzer {
                     return None;
                 }
             }
-            self.error(Code::Redeclared, d.name.span, format!("`{name}' is already declared in this scope"));
+            self.error(
+                Code::Redeclared,
+                d.name.span,
+                format!("`{name}' is already declared in this scope"),
+            );
             return None;
         }
         if self.scopes.is_global() {
@@ -323,7 +418,11 @@ impl Analyzer {
             self.error(
                 Code::Redeclared,
                 d.name.span,
-                format!("`{name}' redeclared as {}, but it is an array of {}", self.tn(ty), self.tn(old.element())),
+                format!(
+                    "`{name}' redeclared as {}, but it is an array of {}",
+                    self.tn(ty),
+                    self.tn(old.element())
+                ),
             );
             return true;
         }
@@ -335,7 +434,10 @@ impl Analyzer {
             self.error(
                 Code::IndexOutOfRange,
                 d.name.span,
-                format!("`{name}' redeclared with size {n}, but index {} is already used", used - 1),
+                format!(
+                    "`{name}' redeclared with size {n}, but index {} is already used",
+                    used - 1
+                ),
             );
         }
         self.set_var_type(v, ty);
@@ -344,8 +446,17 @@ impl Analyzer {
 
     pub fn implicit_size(&self, v: Var) -> u32 {
         match v {
-            Var::Global(g) => self.module.globals.get(g.0 as usize).map_or(0, |g| g.implicit_size),
-            Var::Local(l) => self.cur.as_ref().and_then(|f| f.implicit.get(l.0 as usize)).copied().unwrap_or(0),
+            Var::Global(g) => self
+                .module
+                .globals
+                .get(g.0 as usize)
+                .map_or(0, |g| g.implicit_size),
+            Var::Local(l) => self
+                .cur
+                .as_ref()
+                .and_then(|f| f.implicit.get(l.0 as usize))
+                .copied()
+                .unwrap_or(0),
             Var::Builtin(i) => self
                 .builtin_globals
                 .get(i as usize)
@@ -364,7 +475,11 @@ impl Analyzer {
                 }
             }
             Var::Local(l) => {
-                if let Some(l) = self.cur.as_mut().and_then(|f| f.locals.get_mut(l.0 as usize)) {
+                if let Some(l) = self
+                    .cur
+                    .as_mut()
+                    .and_then(|f| f.locals.get_mut(l.0 as usize))
+                {
                     l.ty = ty;
                 }
             }
@@ -418,7 +533,10 @@ impl Analyzer {
                 self.error(
                     Code::IndexOutOfRange,
                     d.name.span,
-                    format!("`gl_TexCoord' redeclared with size {n}, but index {} is already used", used - 1),
+                    format!(
+                        "`gl_TexCoord' redeclared with size {n}, but index {} is already used",
+                        used - 1
+                    ),
                 );
             }
         }
@@ -435,7 +553,11 @@ impl Analyzer {
     /// and built-in outputs, before any use.
     fn invariant_redeclaration(&mut self, names: &[crate::ast::Ident], span: Span) {
         if !self.scopes.is_global() {
-            self.error(Code::BadQualifier, span, "`invariant' redeclarations must be at global scope");
+            self.error(
+                Code::BadQualifier,
+                span,
+                "`invariant' redeclarations must be at global scope",
+            );
             return;
         }
         for n in names {
@@ -447,21 +569,33 @@ impl Analyzer {
                 }
             };
             let Some(g) = self.global_of(v) else {
-                self.error(Code::BadQualifier, n.span, format!("`{}' is not a global varying", n.name));
+                self.error(
+                    Code::BadQualifier,
+                    n.span,
+                    format!("`{}' is not a global varying", n.name),
+                );
                 continue;
             };
             let gl = &self.module.globals[g.0 as usize];
-            let output_builtin = gl.builtin && gl.storage == Storage::Private && self.stage == Stage::Vertex;
+            let output_builtin =
+                gl.builtin && gl.storage == Storage::Private && self.stage == Stage::Vertex;
             if gl.storage != Storage::Varying && !output_builtin {
                 self.error(
                     Code::BadQualifier,
                     n.span,
-                    format!("`{}' is not a varying; only varyings can be invariant", n.name),
+                    format!(
+                        "`{}' is not a varying; only varyings can be invariant",
+                        n.name
+                    ),
                 );
                 continue;
             }
             if gl.read || gl.written {
-                self.error(Code::BadQualifier, n.span, format!("`{}' is declared invariant after it is used", n.name));
+                self.error(
+                    Code::BadQualifier,
+                    n.span,
+                    format!("`{}' is declared invariant after it is used", n.name),
+                );
                 continue;
             }
             self.module.globals[g.0 as usize].invariant = true;

@@ -42,15 +42,24 @@ fn parse_swizzle(name: &str, size: u8) -> Result<([u8; 4], u8), String> {
     let mut set = None;
     let mut comps = [0u8; 4];
     for (i, c) in name.chars().enumerate() {
-        let found = SETS.iter().enumerate().find_map(|(s, letters)| letters.find(c).map(|p| (s, p)));
+        let found = SETS
+            .iter()
+            .enumerate()
+            .find_map(|(s, letters)| letters.find(c).map(|p| (s, p)));
         let Some((s, p)) = found else {
-            return Err(format!("`{c}' is not a vector component (use xyzw, rgba or stpq)"));
+            return Err(format!(
+                "`{c}' is not a vector component (use xyzw, rgba or stpq)"
+            ));
         };
         if *set.get_or_insert(s) != s {
-            return Err(format!("swizzle `{name}' mixes component sets (xyzw, rgba, stpq)"));
+            return Err(format!(
+                "swizzle `{name}' mixes component sets (xyzw, rgba, stpq)"
+            ));
         }
         if p as u8 >= size {
-            return Err(format!("swizzle `{name}' selects component `{c}' of a {size}-component vector"));
+            return Err(format!(
+                "swizzle `{name}' selects component `{c}' of a {size}-component vector"
+            ));
         }
         if i < 4 {
             comps[i] = p as u8;
@@ -122,7 +131,7 @@ impl Analyzer {
             ),
             A::Ident(id) => self.ident(id),
             A::Unary(op, x) => self.unary(*op, x, span),
-            A::Binary(op, l, r) => self.binary(*op, l, r, span),
+            A::Binary(..) | A::Comma(..) => self.binary_chain(e),
             A::Assign(op, t, v) => self.assign(*op, t, v, span),
             A::Ternary(c, a, b) => self.ternary(c, a, b, span),
             A::Index(b, i) => {
@@ -139,12 +148,6 @@ impl Analyzer {
                 self.construct(ty, args, span)
             }
             A::Method(b, name, args) => self.method(b, name, args, span),
-            A::Comma(l, r) => {
-                let l = self.rvalue(l);
-                let r = self.rvalue(r);
-                let ty = if l.ty.is_error() { Type::ERROR } else { r.ty };
-                mk(K::Comma { left: Box::new(l), right: Box::new(r) }, ty, span)
-            }
         }
     }
 
@@ -169,11 +172,22 @@ impl Analyzer {
                 mk(kind, ty, id.span)
             }
             Some(Symbol::Funcs(_)) => {
-                self.error(Code::TypeMismatch, id.span, format!("`{}' is a function; call it with `{}(...)'", id.name, id.name));
+                self.error(
+                    Code::TypeMismatch,
+                    id.span,
+                    format!(
+                        "`{}' is a function; call it with `{}(...)'",
+                        id.name, id.name
+                    ),
+                );
                 error_expr(id.span)
             }
             Some(Symbol::Struct(_)) => {
-                self.error(Code::TypeMismatch, id.span, format!("`{}' is a type, not a variable", id.name));
+                self.error(
+                    Code::TypeMismatch,
+                    id.span,
+                    format!("`{}' is a type, not a variable", id.name),
+                );
                 error_expr(id.span)
             }
             None => {
@@ -190,7 +204,11 @@ impl Analyzer {
             K::Swizzle { base, .. } | K::Member { base, .. } => is_const(base),
             K::Unary { operand, .. } | K::Convert { operand } => is_const(operand),
             K::Binary { left, right, .. } => is_const(left) && is_const(right),
-            K::Ternary { cond, accept, reject } => is_const(cond) && is_const(accept) && is_const(reject),
+            K::Ternary {
+                cond,
+                accept,
+                reject,
+            } => is_const(cond) && is_const(accept) && is_const(reject),
             K::Builtin { args, .. } | K::Construct { args } => args.iter().all(is_const),
             _ => false,
         };
@@ -213,7 +231,13 @@ impl Analyzer {
             return e;
         }
         let span = e.span;
-        self.fold(mk(K::Convert { operand: Box::new(e) }, to, span))
+        self.fold(mk(
+            K::Convert {
+                operand: Box::new(e),
+            },
+            to,
+            span,
+        ))
     }
 
     /// Converts `e` to `to` with the version's implicit conversions, or
@@ -236,7 +260,11 @@ impl Analyzer {
             );
             return error_expr(span);
         }
-        self.error(Code::TypeMismatch, span, format!("{what} with {}", self.tn(e.ty)));
+        self.error(
+            Code::TypeMismatch,
+            span,
+            format!("{what} with {}", self.tn(e.ty)),
+        );
         error_expr(span)
     }
 
@@ -262,7 +290,10 @@ impl Analyzer {
         self.error(
             Code::ReservedWord,
             span,
-            format!("operator `{op}' is reserved in GLSL {}", self.version.dotted()),
+            format!(
+                "operator `{op}' is reserved in GLSL {}",
+                self.version.dotted()
+            ),
         )
         .notes
         .push("integer bit operations and `%' arrive in GLSL 1.30; use mod() for floats".into());
@@ -279,7 +310,10 @@ impl Analyzer {
                     self.error(
                         Code::TypeMismatch,
                         span,
-                        format!("`++'/`--' need an int or float operand, found {}", self.tn(t.ty)),
+                        format!(
+                            "`++'/`--' need an int or float operand, found {}",
+                            self.tn(t.ty)
+                        ),
                     );
                     return error_expr(span);
                 }
@@ -290,7 +324,14 @@ impl Analyzer {
                     _ => IncDec::PostDec,
                 };
                 let ty = t.ty;
-                mk(K::IncDec { op, target: Box::new(t) }, ty, span)
+                mk(
+                    K::IncDec {
+                        op,
+                        target: Box::new(t),
+                    },
+                    ty,
+                    span,
+                )
             }
             AU::BitNot => {
                 let _ = self.rvalue(x);
@@ -307,7 +348,10 @@ impl Analyzer {
                     self.error(
                         Code::TypeMismatch,
                         span,
-                        format!("unary `{o}' needs an int or float operand, found {}", self.tn(v.ty)),
+                        format!(
+                            "unary `{o}' needs an int or float operand, found {}",
+                            self.tn(v.ty)
+                        ),
                     );
                     return error_expr(span);
                 }
@@ -315,7 +359,14 @@ impl Analyzer {
                     return v;
                 }
                 let ty = v.ty;
-                self.fold(mk(K::Unary { op: ir::UnaryOp::Neg, operand: Box::new(v) }, ty, span))
+                self.fold(mk(
+                    K::Unary {
+                        op: ir::UnaryOp::Neg,
+                        operand: Box::new(v),
+                    },
+                    ty,
+                    span,
+                ))
             }
             AU::Not => {
                 let v = self.rvalue(x);
@@ -323,12 +374,23 @@ impl Analyzer {
                     return v;
                 }
                 if v.ty != Type::BOOL {
-                    self.error(Code::TypeMismatch, span, format!("`!' needs a bool operand, found {}", self.tn(v.ty)))
-                        .notes
-                        .push("use not() for bool vectors".into());
+                    self.error(
+                        Code::TypeMismatch,
+                        span,
+                        format!("`!' needs a bool operand, found {}", self.tn(v.ty)),
+                    )
+                    .notes
+                    .push("use not() for bool vectors".into());
                     return error_expr(span);
                 }
-                self.fold(mk(K::Unary { op: ir::UnaryOp::Not, operand: Box::new(v) }, Type::BOOL, span))
+                self.fold(mk(
+                    K::Unary {
+                        op: ir::UnaryOp::Not,
+                        operand: Box::new(v),
+                    },
+                    Type::BOOL,
+                    span,
+                ))
             }
         }
     }
@@ -369,11 +431,56 @@ impl Analyzer {
         }
     }
 
-    fn binary(&mut self, op: ast::BinaryOp, l: &ast::Expr, r: &ast::Expr, span: Span) -> ir::Expr {
+    /// A left-associative chain `a op b op c ...`, analyzed iteratively so
+    /// long chains (which the parser builds without nesting) cannot exhaust
+    /// the stack.
+    fn binary_chain(&mut self, e: &ast::Expr) -> ir::Expr {
+        let mut spine = Vec::new();
+        let mut cur = e;
+        loop {
+            match &cur.kind {
+                A::Binary(op, l, r) => {
+                    spine.push((Some(*op), r.as_ref(), cur.span));
+                    cur = l;
+                }
+                A::Comma(l, r) => {
+                    spine.push((None, r.as_ref(), cur.span));
+                    cur = l;
+                }
+                _ => break,
+            }
+        }
+        let mut acc = self.rvalue(cur);
+        for (op, r, span) in spine.into_iter().rev() {
+            let rv = self.rvalue(r);
+            acc = match op {
+                Some(op) => self.binary(op, acc, rv, span),
+                None => {
+                    let ty = if acc.ty.is_error() {
+                        Type::ERROR
+                    } else {
+                        rv.ty
+                    };
+                    mk(
+                        K::Comma {
+                            left: Box::new(acc),
+                            right: Box::new(rv),
+                        },
+                        ty,
+                        span,
+                    )
+                }
+            };
+        }
+        acc
+    }
+
+    fn binary(&mut self, op: ast::BinaryOp, lv: ir::Expr, rv: ir::Expr, span: Span) -> ir::Expr {
         use ast::BinaryOp as O;
-        let lv = self.rvalue(l);
-        let rv = self.rvalue(r);
-        if matches!(op, O::Mod | O::Shl | O::Shr | O::BitAnd | O::BitOr | O::BitXor) {
+        if matches!(
+            op,
+            O::Mod | O::Shl | O::Shr | O::BitAnd | O::BitOr | O::BitXor
+        ) {
             self.reserved_op(op.as_str(), span);
             return error_expr(span);
         }
@@ -388,22 +495,36 @@ impl Analyzer {
             let d = a.error(
                 Code::TypeMismatch,
                 span,
-                format!("operator `{}' cannot take {l} and {r}; {expected}", op.as_str()),
+                format!(
+                    "operator `{}' cannot take {l} and {r}; {expected}",
+                    op.as_str()
+                ),
             );
             if v110 && lt.scalar().is_some() && rt.scalar().is_some() && lt.scalar() != rt.scalar()
             {
-                d.notes.push("GLSL 1.10 has no implicit int→float conversions: write float literals (`1.0')".into());
+                d.notes.push(
+                    "GLSL 1.10 has no implicit int→float conversions: write float literals (`1.0')"
+                        .into(),
+                );
             }
             error_expr(span)
         };
         let (ty, irop) = match op {
             O::Add | O::Sub | O::Mul | O::Div => match self.arith_type(op, lt, rt) {
                 Some(x) => x,
-                None => return mismatch(self, "it needs int or float scalars, vectors or matrices of matching shapes"),
+                None => {
+                    return mismatch(
+                        self,
+                        "it needs int or float scalars, vectors or matrices of matching shapes",
+                    )
+                }
             },
             O::Less | O::Greater | O::LessEq | O::GreaterEq => {
                 if lt != rt || !(lt == Type::INT || lt == Type::FLOAT) {
-                    return mismatch(self, "it needs two int or two float scalars (use lessThan() etc. for vectors)");
+                    return mismatch(
+                        self,
+                        "it needs two int or two float scalars (use lessThan() etc. for vectors)",
+                    );
                 }
                 let irop = match op {
                     O::Less => B::Less,
@@ -418,7 +539,11 @@ impl Analyzer {
                     return mismatch(self, "it needs two operands of the same type");
                 }
                 if self.version < Version::V120 && (self.contains_array(lt)) {
-                    self.error(Code::VersionTooLow, span, "comparing arrays requires GLSL 1.20");
+                    self.error(
+                        Code::VersionTooLow,
+                        span,
+                        "comparing arrays requires GLSL 1.20",
+                    );
                     return error_expr(span);
                 }
                 (Type::BOOL, if op == O::Eq { B::Equal } else { B::NotEqual })
@@ -436,7 +561,15 @@ impl Analyzer {
             }
             _ => return error_expr(span),
         };
-        self.fold(mk(K::Binary { op: irop, left: Box::new(lv), right: Box::new(rv) }, ty, span))
+        self.fold(mk(
+            K::Binary {
+                op: irop,
+                left: Box::new(lv),
+                right: Box::new(rv),
+            },
+            ty,
+            span,
+        ))
     }
 
     fn assign(&mut self, op: AssignOp, t: &ast::Expr, v: &ast::Expr, span: Span) -> ir::Expr {
@@ -444,7 +577,10 @@ impl Analyzer {
         let target = self.lvalue(t, op.0.is_some(), "assign to");
         let value = self.rvalue(v);
         if let Some(o) = op.0 {
-            if matches!(o, O::Mod | O::Shl | O::Shr | O::BitAnd | O::BitOr | O::BitXor) {
+            if matches!(
+                o,
+                O::Mod | O::Shl | O::Shr | O::BitAnd | O::BitOr | O::BitXor
+            ) {
                 self.reserved_op(&format!("{}=", o.as_str()), span);
                 return error_expr(span);
             }
@@ -454,9 +590,13 @@ impl Analyzer {
         }
         let tt = target.ty;
         if tt.is_array() && self.version < Version::V120 {
-            self.error(Code::VersionTooLow, span, "assigning whole arrays requires GLSL 1.20")
-                .notes
-                .push("assign the elements one by one".into());
+            self.error(
+                Code::VersionTooLow,
+                span,
+                "assigning whole arrays requires GLSL 1.20",
+            )
+            .notes
+            .push("assign the elements one by one".into());
             return error_expr(span);
         }
         if tt.array == Some(ArraySize::Unsized) {
@@ -469,7 +609,15 @@ impl Analyzer {
                 if value.ty.is_error() {
                     return value;
                 }
-                mk(K::Assign { op: None, target: Box::new(target), value: Box::new(value) }, tt, span)
+                mk(
+                    K::Assign {
+                        op: None,
+                        target: Box::new(target),
+                        value: Box::new(value),
+                    },
+                    tt,
+                    span,
+                )
             }
             Some(o) => {
                 let value = if self.version >= Version::V120
@@ -484,7 +632,11 @@ impl Analyzer {
                 };
                 match self.arith_type(o, tt, value.ty) {
                     Some((ty, irop)) if ty == tt => mk(
-                        K::Assign { op: Some(irop), target: Box::new(target), value: Box::new(value) },
+                        K::Assign {
+                            op: Some(irop),
+                            target: Box::new(target),
+                            value: Box::new(value),
+                        },
                         tt,
                         span,
                     ),
@@ -507,7 +659,14 @@ impl Analyzer {
         let av = self.rvalue(a);
         let bv = self.rvalue(b);
         if !cv.ty.is_error() && cv.ty != Type::BOOL {
-            self.error(Code::TypeMismatch, c.span, format!("the condition of `?:' must be bool, found {}", self.tn(cv.ty)));
+            self.error(
+                Code::TypeMismatch,
+                c.span,
+                format!(
+                    "the condition of `?:' must be bool, found {}",
+                    self.tn(cv.ty)
+                ),
+            );
             return error_expr(span);
         }
         if cv.ty.is_error() || av.ty.is_error() || bv.ty.is_error() {
@@ -516,16 +675,28 @@ impl Analyzer {
         let (av, bv) = self.balance(av, bv);
         if av.ty != bv.ty {
             let (x, y) = (self.tn(av.ty), self.tn(bv.ty));
-            self.error(Code::TypeMismatch, span, format!("the two results of `?:' differ: {x} and {y}"));
+            self.error(
+                Code::TypeMismatch,
+                span,
+                format!("the two results of `?:' differ: {x} and {y}"),
+            );
             return error_expr(span);
         }
         if av.ty.is_array() && self.version < Version::V120 {
-            self.error(Code::VersionTooLow, span, "`?:' on arrays requires GLSL 1.20");
+            self.error(
+                Code::VersionTooLow,
+                span,
+                "`?:' on arrays requires GLSL 1.20",
+            );
             return error_expr(span);
         }
         let ty = av.ty;
         self.fold(mk(
-            K::Ternary { cond: Box::new(cv), accept: Box::new(av), reject: Box::new(bv) },
+            K::Ternary {
+                cond: Box::new(cv),
+                accept: Box::new(av),
+                reject: Box::new(bv),
+            },
             ty,
             span,
         ))
@@ -551,7 +722,11 @@ impl Analyzer {
                 }
             }
             K::Local(l) => {
-                if let Some(s) = self.cur.as_mut().and_then(|f| f.implicit.get_mut(l.0 as usize)) {
+                if let Some(s) = self
+                    .cur
+                    .as_mut()
+                    .and_then(|f| f.implicit.get_mut(l.0 as usize))
+                {
                     *s = (*s).max(i + 1);
                 }
             }
@@ -566,7 +741,11 @@ impl Analyzer {
             return error_expr(span);
         }
         if iv.ty != Type::INT {
-            self.error(Code::TypeMismatch, i.span, format!("an index must be an int scalar, found {}", self.tn(iv.ty)));
+            self.error(
+                Code::TypeMismatch,
+                i.span,
+                format!("an index must be an int scalar, found {}", self.tn(iv.ty)),
+            );
             return error_expr(span);
         }
         let cidx = match &iv.kind {
@@ -578,17 +757,27 @@ impl Analyzer {
             (Some(ArraySize::Sized(n)), _) => (Some(n), t.element(), "array"),
             (Some(ArraySize::Unsized), _) => (None, t.element(), "array"),
             (None, Base::Vector(s, n)) => (Some(n as u32), Type::new(Base::Scalar(s)), "vector"),
-            (None, Base::Matrix { cols, rows }) => (Some(cols as u32), Type::vec(Scalar::Float, rows), "matrix"),
+            (None, Base::Matrix { cols, rows }) => {
+                (Some(cols as u32), Type::vec(Scalar::Float, rows), "matrix")
+            }
             _ => {
-                self.error(Code::TypeMismatch, span, format!("cannot index a value of type {}", self.tn(t)))
-                    .notes
-                    .push("only arrays, vectors and matrices can be indexed".into());
+                self.error(
+                    Code::TypeMismatch,
+                    span,
+                    format!("cannot index a value of type {}", self.tn(t)),
+                )
+                .notes
+                .push("only arrays, vectors and matrices can be indexed".into());
                 return error_expr(span);
             }
         };
         if let Some(c) = cidx {
             if c < 0 {
-                self.error(Code::IndexOutOfRange, i.span, format!("{what} index {c} is negative"));
+                self.error(
+                    Code::IndexOutOfRange,
+                    i.span,
+                    format!("{what} index {c} is negative"),
+                );
                 return error_expr(span);
             }
             let bound = len.or_else(|| self.builtin_unsized_bound(&base));
@@ -617,7 +806,14 @@ impl Analyzer {
             .push("declare the array with an explicit size".into());
             return error_expr(span);
         }
-        self.fold(mk(K::Index { base: Box::new(base), index: Box::new(iv) }, ty, span))
+        self.fold(mk(
+            K::Index {
+                base: Box::new(base),
+                index: Box::new(iv),
+            },
+            ty,
+            span,
+        ))
     }
 
     /// `base.name`: a struct member or a swizzle.
@@ -627,18 +823,35 @@ impl Analyzer {
             return error_expr(span);
         }
         if let (None, Base::Struct(id)) = (t.array, t.base) {
-            let members = self.module.structs.get(id.0 as usize).map(|s| s.members.clone()).unwrap_or_default();
+            let members = self
+                .module
+                .structs
+                .get(id.0 as usize)
+                .map(|s| s.members.clone())
+                .unwrap_or_default();
             match members.iter().position(|m| m.name == name.name.as_str()) {
                 Some(i) => {
                     let ty = members[i].ty;
-                    return self.fold(mk(K::Member { base: Box::new(base), index: i as u32 }, ty, span));
+                    return self.fold(mk(
+                        K::Member {
+                            base: Box::new(base),
+                            index: i as u32,
+                        },
+                        ty,
+                        span,
+                    ));
                 }
                 None => {
-                    let sugg = did_you_mean(&name.name, members.iter().map(|m| m.name.as_str())).map(str::to_string);
+                    let sugg = did_you_mean(&name.name, members.iter().map(|m| m.name.as_str()))
+                        .map(str::to_string);
                     let d = self.error(
                         Code::Undeclared,
                         name.span,
-                        format!("struct {} has no member `{}'", self.module.type_name(t), name.name),
+                        format!(
+                            "struct {} has no member `{}'",
+                            self.module.type_name(t),
+                            name.name
+                        ),
                     );
                     if let Some(s) = sugg {
                         d.notes.push(format!("did you mean `{s}'?"));
@@ -649,9 +862,18 @@ impl Analyzer {
         }
         let Some(n) = t.vector_size().filter(|_| t.is_vector()) else {
             let msg = if t.is_scalar() {
-                format!("cannot select `.{}' of a scalar {} in GLSL {}", name.name, self.tn(t), self.version.dotted())
+                format!(
+                    "cannot select `.{}' of a scalar {} in GLSL {}",
+                    name.name,
+                    self.tn(t),
+                    self.version.dotted()
+                )
             } else {
-                format!("cannot select `.{}' of a value of type {}", name.name, self.tn(t))
+                format!(
+                    "cannot select `.{}' of a value of type {}",
+                    name.name,
+                    self.tn(t)
+                )
             };
             self.error(Code::BadSwizzle, name.span, msg);
             return error_expr(span);
@@ -664,14 +886,25 @@ impl Analyzer {
                         self.error(
                             Code::NotAnLvalue,
                             name.span,
-                            format!("swizzle `{}' repeats a component and cannot be assigned", name.name),
+                            format!(
+                                "swizzle `{}' repeats a component and cannot be assigned",
+                                name.name
+                            ),
                         );
                         return error_expr(span);
                     }
                 }
                 let s = t.scalar().unwrap_or(Scalar::Float);
                 let ty = Type::vec(s, count);
-                self.fold(mk(K::Swizzle { base: Box::new(base), components, count }, ty, span))
+                self.fold(mk(
+                    K::Swizzle {
+                        base: Box::new(base),
+                        components,
+                        count,
+                    },
+                    ty,
+                    span,
+                ))
             }
             Err(msg) => {
                 self.error(Code::BadSwizzle, name.span, msg);
@@ -681,7 +914,13 @@ impl Analyzer {
     }
 
     /// `a.length()` (GLSL 1.20 §5.7 for arrays).
-    fn method(&mut self, b: &ast::Expr, name: &ast::Ident, args: &[ast::Expr], span: Span) -> ir::Expr {
+    fn method(
+        &mut self,
+        b: &ast::Expr,
+        name: &ast::Ident,
+        args: &[ast::Expr],
+        span: Span,
+    ) -> ir::Expr {
         let base = self.rvalue(b);
         for a in args {
             let _ = self.rvalue(a);
@@ -690,17 +929,29 @@ impl Analyzer {
             return error_expr(span);
         }
         if name.name != "length" {
-            self.error(Code::Undeclared, name.span, format!("unknown method `{}'", name.name))
-                .notes
-                .push("the only method is `.length()' on arrays".into());
+            self.error(
+                Code::Undeclared,
+                name.span,
+                format!("unknown method `{}'", name.name),
+            )
+            .notes
+            .push("the only method is `.length()' on arrays".into());
             return error_expr(span);
         }
         if self.version < Version::V120 {
-            self.error(Code::VersionTooLow, name.span, "`.length()' requires GLSL 1.20");
+            self.error(
+                Code::VersionTooLow,
+                name.span,
+                "`.length()' requires GLSL 1.20",
+            );
             return error_expr(span);
         }
         let Some(ArraySize::Sized(n)) = base.ty.array else {
-            self.error(Code::TypeMismatch, name.span, format!("`.length()' needs an array, found {}", self.tn(base.ty)));
+            self.error(
+                Code::TypeMismatch,
+                name.span,
+                format!("`.length()' needs an array, found {}", self.tn(base.ty)),
+            );
             return error_expr(span);
         };
         if !args.is_empty() {
@@ -724,7 +975,11 @@ impl Analyzer {
         }
         let tn = self.tn(ty);
         if vals.is_empty() {
-            self.error(Code::BadConstructor, span, format!("constructor `{tn}' needs arguments"));
+            self.error(
+                Code::BadConstructor,
+                span,
+                format!("constructor `{tn}' needs arguments"),
+            );
             return error_expr(span);
         }
         let mut ty = ty;
@@ -735,7 +990,10 @@ impl Analyzer {
                     self.error(
                         Code::BadConstructor,
                         span,
-                        format!("array constructor `{tn}' has {} arguments, expected {n}", vals.len()),
+                        format!(
+                            "array constructor `{tn}' has {} arguments, expected {n}",
+                            vals.len()
+                        ),
                     );
                     return error_expr(span);
                 }
@@ -754,19 +1012,32 @@ impl Analyzer {
             }
             out
         } else if let Base::Struct(id) = ty.base {
-            let members = self.module.structs.get(id.0 as usize).map(|s| s.members.clone()).unwrap_or_default();
+            let members = self
+                .module
+                .structs
+                .get(id.0 as usize)
+                .map(|s| s.members.clone())
+                .unwrap_or_default();
             if members.len() != vals.len() {
                 self.error(
                     Code::BadConstructor,
                     span,
-                    format!("constructor `{tn}' has {} arguments, expected {} (one per member)", vals.len(), members.len()),
+                    format!(
+                        "constructor `{tn}' has {} arguments, expected {} (one per member)",
+                        vals.len(),
+                        members.len()
+                    ),
                 );
                 return error_expr(span);
             }
             let mut out = Vec::new();
             for (v, m) in vals.into_iter().zip(&members) {
                 let sp = v.span;
-                let what = format!("cannot initialize member `{}' of type {}", m.name, self.tn(m.ty));
+                let what = format!(
+                    "cannot initialize member `{}' of type {}",
+                    m.name,
+                    self.tn(m.ty)
+                );
                 let c = self.coerce(v, m.ty, sp, &what);
                 if c.ty.is_error() {
                     return error_expr(span);
@@ -787,7 +1058,11 @@ impl Analyzer {
     fn check_basic_ctor(&mut self, ty: Type, vals: &[ir::Expr], span: Span) -> bool {
         let tn = self.tn(ty);
         let Some(need) = ty.component_count() else {
-            self.error(Code::BadConstructor, span, format!("there is no constructor for type {tn}"));
+            self.error(
+                Code::BadConstructor,
+                span,
+                format!("there is no constructor for type {tn}"),
+            );
             return false;
         };
         for v in vals {
@@ -795,7 +1070,10 @@ impl Analyzer {
                 self.error(
                     Code::BadConstructor,
                     v.span,
-                    format!("constructor `{tn}' cannot take an argument of type {}", self.tn(v.ty)),
+                    format!(
+                        "constructor `{tn}' cannot take an argument of type {}",
+                        self.tn(v.ty)
+                    ),
                 );
                 return false;
             }
@@ -804,7 +1082,11 @@ impl Analyzer {
         if ty.is_matrix() {
             if let Some(m) = vals.iter().find(|v| v.ty.is_matrix()) {
                 if self.version < Version::V120 {
-                    self.error(Code::VersionTooLow, m.span, "constructing a matrix from a matrix requires GLSL 1.20");
+                    self.error(
+                        Code::VersionTooLow,
+                        m.span,
+                        "constructing a matrix from a matrix requires GLSL 1.20",
+                    );
                     return false;
                 }
                 if vals.len() > 1 {
@@ -837,7 +1119,10 @@ impl Analyzer {
             self.error(
                 Code::BadConstructor,
                 span,
-                format!("not enough components for constructor `{tn}': it needs {need}, {} given", need - left),
+                format!(
+                    "not enough components for constructor `{tn}': it needs {need}, {} given",
+                    need - left
+                ),
             );
             return false;
         }
@@ -859,25 +1144,41 @@ impl Analyzer {
                 let ty = self.var_type(v);
                 match v {
                     Var::Local(l) => {
-                        let is_const = self.cur.as_ref().and_then(|f| f.locals.get(l.0 as usize)).is_some_and(|l| l.is_const);
+                        let is_const = self
+                            .cur
+                            .as_ref()
+                            .and_then(|f| f.locals.get(l.0 as usize))
+                            .is_some_and(|l| l.is_const);
                         if is_const {
-                            self.error(Code::ReadOnly, span, format!("cannot {what} `{}': it is read-only (const)", id.name));
+                            self.error(
+                                Code::ReadOnly,
+                                span,
+                                format!("cannot {what} `{}': it is read-only (const)", id.name),
+                            );
                             return error_expr(span);
                         }
                         mk(K::Local(l), ty, span)
                     }
                     _ => {
-                        let Some(g) = self.global_of(v) else { return error_expr(span) };
+                        let Some(g) = self.global_of(v) else {
+                            return error_expr(span);
+                        };
                         let gl = &self.module.globals[g.0 as usize];
                         let ro = match gl.storage {
                             Storage::Const => Some("const"),
                             Storage::Uniform => Some("a uniform"),
                             Storage::Attribute => Some("an attribute"),
-                            Storage::Varying if self.stage == Stage::Fragment => Some("a fragment shader input"),
+                            Storage::Varying if self.stage == Stage::Fragment => {
+                                Some("a fragment shader input")
+                            }
                             _ => None,
                         };
                         if let Some(kind) = ro {
-                            self.error(Code::ReadOnly, span, format!("cannot {what} `{}': it is {kind} and read-only", id.name));
+                            self.error(
+                                Code::ReadOnly,
+                                span,
+                                format!("cannot {what} `{}': it is {kind} and read-only", id.name),
+                            );
                             return error_expr(span);
                         }
                         let builtin = gl.builtin;
@@ -936,10 +1237,16 @@ mod tests {
     #[test]
     fn conversions() {
         assert!(implicitly_converts(Type::INT, Type::FLOAT));
-        assert!(implicitly_converts(Type::vec(Scalar::Int, 3), Type::vec(Scalar::Float, 3)));
+        assert!(implicitly_converts(
+            Type::vec(Scalar::Int, 3),
+            Type::vec(Scalar::Float, 3)
+        ));
         assert!(!implicitly_converts(Type::FLOAT, Type::INT));
         assert!(!implicitly_converts(Type::BOOL, Type::FLOAT));
         let arr = Type::INT.array_of(ArraySize::Sized(2));
-        assert!(!implicitly_converts(arr, Type::FLOAT.array_of(ArraySize::Sized(2))));
+        assert!(!implicitly_converts(
+            arr,
+            Type::FLOAT.array_of(ArraySize::Sized(2))
+        ));
     }
 }

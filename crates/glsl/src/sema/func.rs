@@ -26,13 +26,21 @@ impl Analyzer {
             match sq.qualifier {
                 Qualifier::Const => {
                     if q.is_some() || is_const {
-                        self.error(Code::BadQualifier, sq.span, "`const' must come first and only once");
+                        self.error(
+                            Code::BadQualifier,
+                            sq.span,
+                            "`const' must come first and only once",
+                        );
                     }
                     is_const = true;
                 }
                 Qualifier::In | Qualifier::Out | Qualifier::Inout => {
                     if q.is_some() {
-                        self.error(Code::BadQualifier, sq.span, "only one of `in', `out', `inout' is allowed");
+                        self.error(
+                            Code::BadQualifier,
+                            sq.span,
+                            "only one of `in', `out', `inout' is allowed",
+                        );
                         continue;
                     }
                     q = Some(match sq.qualifier {
@@ -44,7 +52,10 @@ impl Analyzer {
                         self.error(
                             Code::BadQualifier,
                             sq.span,
-                            format!("`const {}': a const parameter cannot be written", sq.qualifier.as_str()),
+                            format!(
+                                "`const {}': a const parameter cannot be written",
+                                sq.qualifier.as_str()
+                            ),
                         )
                         .notes
                         .push("use `const in', or drop `const'".into());
@@ -69,16 +80,27 @@ impl Analyzer {
                 self.error(
                     Code::BadQualifier,
                     sq.span,
-                    format!("`{}' is not allowed on a return type", sq.qualifier.as_str()),
+                    format!(
+                        "`{}' is not allowed on a return type",
+                        sq.qualifier.as_str()
+                    ),
                 );
             }
         }
         let ret = self.resolve_type(&p.return_type.ty);
         if !ret.is_error() {
             if self.contains_sampler(ret) {
-                self.error(Code::TypeMismatch, p.return_type.span, "functions cannot return samplers");
+                self.error(
+                    Code::TypeMismatch,
+                    p.return_type.span,
+                    "functions cannot return samplers",
+                );
             } else if ret.array == Some(ArraySize::Unsized) {
-                self.error(Code::BadArraySize, p.return_type.span, "a returned array must have a size");
+                self.error(
+                    Code::BadArraySize,
+                    p.return_type.span,
+                    "a returned array must have a size",
+                );
             }
         }
         let mut params = Vec::new();
@@ -90,10 +112,21 @@ impl Analyzer {
                 if ty.base == crate::types::Base::Void {
                     self.error(Code::TypeMismatch, pd.span, "parameters cannot be void");
                 } else if ty.array == Some(ArraySize::Unsized) {
-                    self.error(Code::BadArraySize, pd.span, "array parameters must have a size");
+                    self.error(
+                        Code::BadArraySize,
+                        pd.span,
+                        "array parameters must have a size",
+                    );
                 } else if qualifier != ParamQualifier::In && self.contains_sampler(ty) {
-                    self.error(Code::BadQualifier, pd.span, "samplers can only be `in' parameters");
-                } else if qualifier != ParamQualifier::In && ty.is_array() && self.version < Version::V120 {
+                    self.error(
+                        Code::BadQualifier,
+                        pd.span,
+                        "samplers can only be `in' parameters",
+                    );
+                } else if qualifier != ParamQualifier::In
+                    && ty.is_array()
+                    && self.version < Version::V120
+                {
                     self.error(
                         Code::VersionTooLow,
                         pd.span,
@@ -126,7 +159,11 @@ impl Analyzer {
             self.check_reserved_name(name, p.name.span);
         }
         if name == "main" && (!params.is_empty() || !ret.is_void()) && !ret.is_error() {
-            self.error(Code::TypeMismatch, p.name.span, "`main' must be declared `void main()'");
+            self.error(
+                Code::TypeMismatch,
+                p.name.span,
+                "`main' must be declared `void main()'",
+            );
         }
         let existing: Vec<FunctionId> = match self.scopes.lookup_current(name) {
             None => Vec::new(),
@@ -138,13 +175,18 @@ impl Analyzer {
                 })
                 .collect(),
             Some(_) => {
-                self.error(Code::Redeclared, p.name.span, format!("`{name}' is already declared as a variable or type"));
+                self.error(
+                    Code::Redeclared,
+                    p.name.span,
+                    format!("`{name}' is already declared as a variable or type"),
+                );
                 return None;
             }
         };
         for id in existing {
             let f = &self.module.functions[id.0 as usize];
-            let same = f.params.len() == params.len() && f.params.iter().zip(&params).all(|(a, b)| a.ty == b.ty);
+            let same = f.params.len() == params.len()
+                && f.params.iter().zip(&params).all(|(a, b)| a.ty == b.ty);
             if !same {
                 continue;
             }
@@ -155,7 +197,10 @@ impl Analyzer {
                     Diagnostic::error(
                         Code::Redeclared,
                         p.name.span,
-                        format!("`{name}' redeclared with return type {}, earlier {prev}", self.tn(ret)),
+                        format!(
+                            "`{name}' redeclared with return type {}, earlier {prev}",
+                            self.tn(ret)
+                        ),
                     )
                     .with_label(span, "earlier declaration")
                     .with_note("functions cannot be overloaded by return type alone"),
@@ -163,7 +208,11 @@ impl Analyzer {
                 return None;
             }
             let f = &self.module.functions[id.0 as usize];
-            let quals_differ = f.params.iter().zip(&params).any(|(a, b)| a.qualifier != b.qualifier || a.is_const != b.is_const);
+            let quals_differ = f
+                .params
+                .iter()
+                .zip(&params)
+                .any(|(a, b)| a.qualifier != b.qualifier || a.is_const != b.is_const);
             if quals_differ {
                 let span = f.span;
                 self.push(
@@ -180,8 +229,12 @@ impl Analyzer {
                 if self.fns[id.0 as usize].defined {
                     let span = self.module.functions[id.0 as usize].span;
                     self.push(
-                        Diagnostic::error(Code::Redeclared, p.name.span, format!("`{name}' is already defined"))
-                            .with_label(span, "first definition"),
+                        Diagnostic::error(
+                            Code::Redeclared,
+                            p.name.span,
+                            format!("`{name}' is already defined"),
+                        )
+                        .with_label(span, "first definition"),
                     );
                     return None;
                 }
@@ -192,11 +245,23 @@ impl Analyzer {
             return Some(id);
         }
         let id = FunctionId(self.module.functions.len() as u32);
+        // A prototype's parameters are locals too (the IR contract wants
+        // every parameter to have one); a definition rebuilds them.
+        let p_span = p.name.span;
+        let locals = params
+            .iter()
+            .map(|p| ir::Local {
+                name: p.name.clone().unwrap_or_default(),
+                ty: p.ty,
+                is_const: p.is_const,
+                span: p_span,
+            })
+            .collect();
         self.module.functions.push(ir::Function {
             name: name.to_string(),
             params,
             return_type: ret,
-            locals: Vec::new(),
+            locals,
             body: None,
             span: p.name.span,
         });
@@ -230,9 +295,16 @@ impl Analyzer {
             p.local = self.new_local(&name, p.ty, p.is_const, span);
             if !name.is_empty() {
                 if self.scopes.lookup_current(&name).is_some() {
-                    self.error(Code::Redeclared, span, format!("parameter `{name}' declared twice"));
+                    self.error(
+                        Code::Redeclared,
+                        span,
+                        format!("parameter `{name}' declared twice"),
+                    );
                 } else {
-                    self.scopes.insert(name.as_str().into(), Symbol::Var(super::scope::Var::Local(p.local)));
+                    self.scopes.insert(
+                        name.as_str().into(),
+                        Symbol::Var(super::scope::Var::Local(p.local)),
+                    );
                 }
             }
             params_out.push(p);
@@ -255,7 +327,11 @@ impl Analyzer {
         let refs = match self.lookup(&name.name) {
             Some(Symbol::Funcs(v)) => v,
             Some(Symbol::Var(_)) => {
-                self.error(Code::TypeMismatch, name.span, format!("`{}' is a variable, not a function", name.name));
+                self.error(
+                    Code::TypeMismatch,
+                    name.span,
+                    format!("`{}' is a variable, not a function", name.name),
+                );
                 return None;
             }
             Some(Symbol::Struct(_)) => return Some(Vec::new()),
@@ -293,12 +369,18 @@ impl Analyzer {
     pub fn undeclared(&mut self, name: &ast::Ident, function: bool) {
         let what = if function { "function " } else { "" };
         if let Some((code, note)) = self.availability_note(&name.name) {
-            self.error(code, name.span, format!("{what}`{}' undeclared", name.name)).notes.push(note);
+            self.error(code, name.span, format!("{what}`{}' undeclared", name.name))
+                .notes
+                .push(note);
             return;
         }
         let names = self.visible_names();
         let sugg = did_you_mean(&name.name, names.iter().map(|s| s.as_str())).map(str::to_string);
-        let d = self.error(Code::Undeclared, name.span, format!("{what}`{}' undeclared", name.name));
+        let d = self.error(
+            Code::Undeclared,
+            name.span,
+            format!("{what}`{}' undeclared", name.name),
+        );
         if let Some(s) = sugg {
             d.notes.push(format!("did you mean `{s}'?"));
         }
@@ -312,7 +394,9 @@ impl Analyzer {
         }
         let sigs = self.candidates(name);
         let vals: Vec<ir::Expr> = args.iter().map(|a| self.rvalue(a)).collect();
-        let Some(sigs) = sigs else { return error_expr(span) };
+        let Some(sigs) = sigs else {
+            return error_expr(span);
+        };
         if vals.iter().any(|v| v.ty.is_error()) {
             return error_expr(span);
         }
@@ -337,7 +421,10 @@ impl Analyzer {
                 format!("call to `{}' is ambiguous", name.name),
             );
             for &i in &convertible {
-                d.notes.push(format!("candidate: {}", self.sig_string(&name.name, &sigs[i])));
+                d.notes.push(format!(
+                    "candidate: {}",
+                    self.sig_string(&name.name, &sigs[i])
+                ));
             }
             self.push(d.with_note("convert the arguments explicitly (e.g. `float(i)')"));
             return error_expr(span);
@@ -346,12 +433,18 @@ impl Analyzer {
             let mut d = Diagnostic::error(
                 Code::NoMatchingOverload,
                 name.span,
-                format!("no matching overload for `{}({})'", name.name, found.join(", ")),
+                format!(
+                    "no matching overload for `{}({})'",
+                    name.name,
+                    found.join(", ")
+                ),
             );
             for s in sigs.iter().take(16) {
-                d.notes.push(format!("candidate: {}", self.sig_string(&name.name, s)));
+                d.notes
+                    .push(format!("candidate: {}", self.sig_string(&name.name, s)));
             }
-            if self.version < Version::V120 && sigs.iter().any(|s| self.match_sig_120(s, &arg_tys)) {
+            if self.version < Version::V120 && sigs.iter().any(|s| self.match_sig_120(s, &arg_tys))
+            {
                 d.notes.push("GLSL 1.10 has no implicit int→float conversions: write float literals (`1.0'), or use `#version 120'".into());
             }
             self.push(d);
@@ -359,13 +452,30 @@ impl Analyzer {
         };
         let sig = &sigs[chosen];
         let mut out_args = Vec::with_capacity(vals.len());
+        // Out arguments converted on the way back (GLSL 1.20: an `out int'
+        // parameter may write a float variable) go through a temporary.
+        let mut copy_back = Vec::new();
         for (k, v) in vals.into_iter().enumerate() {
             let (pty, q) = sig.params[k];
             match q {
                 ParamQualifier::In => out_args.push(self.convert(v, pty)),
                 ParamQualifier::Out | ParamQualifier::InOut => {
-                    let lv = self.lvalue(&args[k], q == ParamQualifier::InOut, "pass as an `out' argument");
-                    out_args.push(lv);
+                    let lv = self.lvalue(
+                        &args[k],
+                        q == ParamQualifier::InOut,
+                        "pass as an `out' argument",
+                    );
+                    if lv.ty != pty && !lv.ty.is_error() && self.cur.is_some() {
+                        let t = self.new_local("<out temporary>", pty, false, lv.span);
+                        out_args.push(ir::Expr {
+                            kind: ExprKind::Local(t),
+                            ty: pty,
+                            span: lv.span,
+                        });
+                        copy_back.push((lv, t, pty));
+                    } else {
+                        out_args.push(lv);
+                    }
                 }
             }
         }
@@ -379,22 +489,94 @@ impl Analyzer {
                         info.call_spans.push(name.span);
                     }
                 }
-                ExprKind::Call { function: id, args: out_args }
+                ExprKind::Call {
+                    function: id,
+                    args: out_args,
+                }
             }
             FnRef::Builtin(i) => {
-                let function = self.env.and_then(|e| e.functions.get(i as usize)).map(|b| b.function);
+                let function = self
+                    .env
+                    .and_then(|e| e.functions.get(i as usize))
+                    .map(|b| b.function);
                 match function {
-                    Some(function) => ExprKind::Builtin { function, args: out_args },
+                    Some(function) => ExprKind::Builtin {
+                        function,
+                        args: out_args,
+                    },
                     None => return error_expr(span),
                 }
             }
         };
-        let e = ir::Expr { kind, ty: ret, span };
+        let e = ir::Expr {
+            kind,
+            ty: ret,
+            span,
+        };
         if matches!(e.kind, ExprKind::Builtin { .. }) {
-            self.fold(e)
-        } else {
-            e
+            return self.fold(e);
         }
+        if copy_back.is_empty() {
+            return e;
+        }
+        self.copy_back(e, copy_back)
+    }
+
+    /// `(r = f(t), x = float(t), r)`: the call, then the converted copies of
+    /// the out temporaries into their real targets, then the result.
+    fn copy_back(&mut self, call: ir::Expr, copies: Vec<(ir::Expr, LocalId, Type)>) -> ir::Expr {
+        let span = call.span;
+        let ret = call.ty;
+        let local = |l: LocalId, ty: Type| ir::Expr {
+            kind: ExprKind::Local(l),
+            ty,
+            span,
+        };
+        let result = (!ret.is_void()).then(|| self.new_local("<call result>", ret, false, span));
+        let mut seq = match result {
+            Some(r) => ir::Expr {
+                kind: ExprKind::Assign {
+                    op: None,
+                    target: Box::new(local(r, ret)),
+                    value: Box::new(call),
+                },
+                ty: ret,
+                span,
+            },
+            None => call,
+        };
+        for (target, t, pty) in copies {
+            let ty = target.ty;
+            let value = self.convert(local(t, pty), ty);
+            let assign = ir::Expr {
+                kind: ExprKind::Assign {
+                    op: None,
+                    target: Box::new(target),
+                    value: Box::new(value),
+                },
+                ty,
+                span,
+            };
+            seq = ir::Expr {
+                kind: ExprKind::Comma {
+                    left: Box::new(seq),
+                    right: Box::new(assign),
+                },
+                ty,
+                span,
+            };
+        }
+        if let Some(r) = result {
+            seq = ir::Expr {
+                kind: ExprKind::Comma {
+                    left: Box::new(seq),
+                    right: Box::new(local(r, ret)),
+                },
+                ty: ret,
+                span,
+            };
+        }
+        seq
     }
 
     /// `Some(true)` for an exact match, `Some(false)` for a match with
@@ -424,10 +606,9 @@ impl Analyzer {
 
     fn match_sig_120(&self, s: &Sig, args: &[Type]) -> bool {
         s.params.len() == args.len()
-            && s.params
-                .iter()
-                .zip(args)
-                .all(|(&(p, q), &a)| p == a || (q == ParamQualifier::In && super::expr::implicitly_converts(a, p)))
+            && s.params.iter().zip(args).all(|(&(p, q), &a)| {
+                p == a || (q == ParamQualifier::In && super::expr::implicitly_converts(a, p))
+            })
     }
 
     fn sig_string(&self, name: &str, s: &Sig) -> String {

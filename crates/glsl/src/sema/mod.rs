@@ -63,7 +63,6 @@ pub fn analyze(tu: &TranslationUnit, ctx: &Context) -> (Module, Vec<Diagnostic>)
 /// A built-in function signature.
 #[derive(Clone, Debug)]
 pub(crate) struct BuiltinSig {
-    pub name: SmolStr,
     pub function: BuiltinFn,
     pub params: Vec<(Type, ParamQualifier)>,
     pub ret: Type,
@@ -78,6 +77,7 @@ pub(crate) struct BuiltinEnv {
     pub names: HashMap<SmolStr, Symbol>,
     /// Problems found in the prelude itself (a bug in the tables); kept so a
     /// test can check there are none.
+    #[cfg_attr(not(test), allow(dead_code))]
     pub diagnostics: Vec<Diagnostic>,
 }
 
@@ -141,7 +141,6 @@ fn build_env(version: Version, stage: Stage) -> BuiltinEnv {
         };
         fn_map.insert(i as u32, functions.len() as u32);
         functions.push(BuiltinSig {
-            name: f.name.as_str().into(),
             function,
             params: f.params.iter().map(|p| (p.ty, p.qualifier)).collect(),
             ret: f.return_type,
@@ -315,16 +314,28 @@ impl Analyzer {
     /// Declared type of a variable.
     pub fn var_type(&self, v: Var) -> Type {
         match v {
-            Var::Global(g) => self.module.globals.get(g.0 as usize).map_or(Type::ERROR, |g| g.ty),
+            Var::Global(g) => self
+                .module
+                .globals
+                .get(g.0 as usize)
+                .map_or(Type::ERROR, |g| g.ty),
             Var::Local(l) => self
                 .cur
                 .as_ref()
                 .and_then(|f| f.locals.get(l.0 as usize))
                 .map_or(Type::ERROR, |l| l.ty),
-            Var::Builtin(i) => self
-                .env
-                .and_then(|e| e.globals.get(i as usize))
-                .map_or(Type::ERROR, |g| g.ty),
+            Var::Builtin(i) => match self.builtin_globals.get(i as usize).copied().flatten() {
+                // Materialized (possibly resized, `gl_TexCoord[n]`).
+                Some(g) => self
+                    .module
+                    .globals
+                    .get(g.0 as usize)
+                    .map_or(Type::ERROR, |g| g.ty),
+                None => self
+                    .env
+                    .and_then(|e| e.globals.get(i as usize))
+                    .map_or(Type::ERROR, |g| g.ty),
+            },
         }
     }
 
@@ -333,12 +344,16 @@ impl Analyzer {
         match v {
             Var::Global(g) => {
                 let g = self.module.globals.get(g.0 as usize)?;
-                (g.storage == ir::Storage::Const).then(|| g.init.clone()).flatten()
+                (g.storage == ir::Storage::Const)
+                    .then(|| g.init.clone())
+                    .flatten()
             }
             Var::Local(l) => self.cur.as_ref()?.consts.get(l.0 as usize)?.clone(),
             Var::Builtin(i) => {
                 let g = self.env?.globals.get(i as usize)?;
-                (g.storage == ir::Storage::Const).then(|| g.init.clone()).flatten()
+                (g.storage == ir::Storage::Const)
+                    .then(|| g.init.clone())
+                    .flatten()
             }
         }
     }
@@ -389,8 +404,15 @@ impl Analyzer {
             Stage::Vertex => Stage::Fragment,
             Stage::Fragment => Stage::Vertex,
         };
-        if self.version == Version::V110 && builtin_env(Version::V120, self.stage).lookup(name).is_some() {
-            return Some((Code::VersionTooLow, format!("`{name}' requires GLSL 1.20 (add `#version 120' as the first line)")));
+        if self.version == Version::V110
+            && builtin_env(Version::V120, self.stage)
+                .lookup(name)
+                .is_some()
+        {
+            return Some((
+                Code::VersionTooLow,
+                format!("`{name}' requires GLSL 1.20 (add `#version 120' as the first line)"),
+            ));
         }
         if builtin_env(self.version, other).lookup(name).is_some()
             || builtin_env(Version::V120, other).lookup(name).is_some()

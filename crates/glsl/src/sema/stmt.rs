@@ -68,7 +68,12 @@ impl Analyzer {
                     Some(e) => self.scoped_sub_block(e),
                     None => Vec::new(),
                 };
-                out.push(ir::Stmt::If { cond: c, then, else_, span });
+                out.push(ir::Stmt::If {
+                    cond: c,
+                    then,
+                    else_,
+                    span,
+                });
             }
             StmtKind::While { cond, body } => {
                 self.scopes.push();
@@ -76,15 +81,28 @@ impl Analyzer {
                 self.loop_condition(cond, &mut lbody);
                 lbody.extend(self.loop_body(body));
                 self.scopes.pop();
-                out.push(ir::Stmt::Loop { body: lbody, continuing: Vec::new(), span });
+                out.push(ir::Stmt::Loop {
+                    body: lbody,
+                    continuing: Vec::new(),
+                    span,
+                });
             }
             StmtKind::DoWhile { body, cond } => {
                 let lbody = self.loop_body(body);
                 let c = self.condition_expr(cond, "do-while");
                 let continuing = vec![break_unless(c)];
-                out.push(ir::Stmt::Loop { body: lbody, continuing, span });
+                out.push(ir::Stmt::Loop {
+                    body: lbody,
+                    continuing,
+                    span,
+                });
             }
-            StmtKind::For { init, cond, step, body } => {
+            StmtKind::For {
+                init,
+                cond,
+                step,
+                body,
+            } => {
                 self.scopes.push();
                 let mut block = Vec::new();
                 self.stmt(init, &mut block);
@@ -98,7 +116,11 @@ impl Analyzer {
                 };
                 lbody.extend(self.loop_body(body));
                 self.scopes.pop();
-                block.push(ir::Stmt::Loop { body: lbody, continuing, span });
+                block.push(ir::Stmt::Loop {
+                    body: lbody,
+                    continuing,
+                    span,
+                });
                 out.push(ir::Stmt::Block(block));
             }
             StmtKind::Break | StmtKind::Continue => {
@@ -116,7 +138,11 @@ impl Analyzer {
             StmtKind::Return(v) => out.push(self.return_stmt(v.as_ref(), span)),
             StmtKind::Discard => {
                 if self.stage != Stage::Fragment {
-                    self.error(Code::StageMismatch, span, "`discard' is only allowed in fragment shaders");
+                    self.error(
+                        Code::StageMismatch,
+                        span,
+                        "`discard' is only allowed in fragment shaders",
+                    );
                 }
                 out.push(ir::Stmt::Discard(span));
             }
@@ -136,7 +162,17 @@ impl Analyzer {
         if let Some(f) = self.cur.as_mut() {
             f.loop_depth += 1;
         }
+        // A compound body's scope is decided by the parser (shared with a
+        // `for`/`while` header, GLSL 1.20 §6.3); a single statement gets a
+        // scope of its own.
+        let single = !matches!(body.kind, StmtKind::Block { .. });
+        if single {
+            self.scopes.push();
+        }
         let b = self.sub_block(body);
+        if single {
+            self.scopes.pop();
+        }
         if let Some(f) = self.cur.as_mut() {
             f.loop_depth -= 1;
         }
@@ -151,7 +187,12 @@ impl Analyzer {
                 let v = self.condition_expr(e, "loop");
                 out.push(break_unless(v));
             }
-            Condition::Decl { ty, name, init, span } => {
+            Condition::Decl {
+                ty,
+                name,
+                init,
+                span,
+            } => {
                 let list = ast::InitDeclaratorList {
                     ty: ty.clone(),
                     declarators: vec![ast::InitDeclarator {
@@ -169,12 +210,24 @@ impl Analyzer {
                 });
                 out.extend(stmts);
                 if let Some(l) = local {
-                    let ty = self.cur.as_ref().and_then(|f| f.locals.get(l.0 as usize)).map_or(Type::ERROR, |l| l.ty);
+                    let ty = self
+                        .cur
+                        .as_ref()
+                        .and_then(|f| f.locals.get(l.0 as usize))
+                        .map_or(Type::ERROR, |l| l.ty);
                     if !ty.is_error() && ty != Type::BOOL {
-                        self.error(Code::TypeMismatch, name.span, format!("a loop condition must be bool, found {}", self.tn(ty)));
+                        self.error(
+                            Code::TypeMismatch,
+                            name.span,
+                            format!("a loop condition must be bool, found {}", self.tn(ty)),
+                        );
                         return;
                     }
-                    let v = ir::Expr { kind: ExprKind::Local(l), ty, span: name.span };
+                    let v = ir::Expr {
+                        kind: ExprKind::Local(l),
+                        ty,
+                        span: name.span,
+                    };
                     out.push(break_unless(v));
                 }
             }
@@ -188,7 +241,10 @@ impl Analyzer {
             self.error(
                 Code::TypeMismatch,
                 e.span,
-                format!("the condition of `{what}' must be a bool scalar, found {}", self.tn(v.ty)),
+                format!(
+                    "the condition of `{what}' must be a bool scalar, found {}",
+                    self.tn(v.ty)
+                ),
             )
             .notes
             .push("use any()/all() to reduce a bool vector".into());
@@ -203,22 +259,44 @@ impl Analyzer {
         match value {
             None => {
                 if !ret.is_void() && !ret.is_error() {
-                    self.error(Code::BadReturn, span, format!("`return' without a value in a function returning {}", self.tn(ret)));
+                    self.error(
+                        Code::BadReturn,
+                        span,
+                        format!(
+                            "`return' without a value in a function returning {}",
+                            self.tn(ret)
+                        ),
+                    );
                 }
                 ir::Stmt::Return(None, span)
             }
             Some(val) => {
                 if ret.is_void() {
                     if !val.ty.is_error() {
-                        self.error(Code::BadReturn, span, "`return' with a value in a function returning void");
+                        self.error(
+                            Code::BadReturn,
+                            span,
+                            "`return' with a value in a function returning void",
+                        );
                     }
                     return ir::Stmt::Return(None, span);
                 }
                 if val.ty.is_void() {
-                    self.error(Code::BadReturn, span, format!("`return' of a void expression in a function returning {}", self.tn(ret)));
+                    self.error(
+                        Code::BadReturn,
+                        span,
+                        format!(
+                            "`return' of a void expression in a function returning {}",
+                            self.tn(ret)
+                        ),
+                    );
                     return ir::Stmt::Return(None, span);
                 }
-                let what = format!("cannot return {} from a function returning {}", self.tn(val.ty), self.tn(ret));
+                let what = format!(
+                    "cannot return {} from a function returning {}",
+                    self.tn(val.ty),
+                    self.tn(ret)
+                );
                 let sp = val.span;
                 let before = self.diags.len();
                 let val = self.coerce(val, ret, sp, "");
@@ -226,7 +304,11 @@ impl Analyzer {
                     // Replace the generic coerce message with a return-specific one.
                     if let Some(d) = self.diags.last_mut() {
                         d.code = Code::BadReturn;
-                        let tail = d.message.split_once(';').map(|(_, t)| format!(";{t}")).unwrap_or_default();
+                        let tail = d
+                            .message
+                            .split_once(';')
+                            .map(|(_, t)| format!(";{t}"))
+                            .unwrap_or_default();
                         d.message = format!("{what}{tail}");
                     }
                 }
@@ -240,9 +322,17 @@ impl Analyzer {
 fn break_unless(c: ir::Expr) -> ir::Stmt {
     let span = c.span;
     let not = ir::Expr {
-        kind: ExprKind::Unary { op: ir::UnaryOp::Not, operand: Box::new(c) },
+        kind: ExprKind::Unary {
+            op: ir::UnaryOp::Not,
+            operand: Box::new(c),
+        },
         ty: Type::BOOL,
         span,
     };
-    ir::Stmt::If { cond: not, then: vec![ir::Stmt::Break(span)], else_: Vec::new(), span }
+    ir::Stmt::If {
+        cond: not,
+        then: vec![ir::Stmt::Break(span)],
+        else_: Vec::new(),
+        span,
+    }
 }

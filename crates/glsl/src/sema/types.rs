@@ -53,21 +53,33 @@ impl Analyzer {
             TypeName::Builtin(k) => match keyword_type(*k) {
                 Some(t) => t,
                 None => {
-                    self.error(Code::Syntax, ts.span, format!("`{}' is not a type", k.as_str()));
+                    self.error(
+                        Code::Syntax,
+                        ts.span,
+                        format!("`{}' is not a type", k.as_str()),
+                    );
                     return Type::ERROR;
                 }
             },
             TypeName::Named(id) => match self.lookup(&id.name) {
                 Some(Symbol::Struct(s)) => Type::new(Base::Struct(s)),
                 Some(_) => {
-                    self.error(Code::Undeclared, id.span, format!("`{}' is not a type", id.name))
-                        .notes
-                        .push("only struct names and the built-in type keywords name types".into());
+                    self.error(
+                        Code::Undeclared,
+                        id.span,
+                        format!("`{}' is not a type", id.name),
+                    )
+                    .notes
+                    .push("only struct names and the built-in type keywords name types".into());
                     return Type::ERROR;
                 }
                 None => {
                     let names = self.struct_names();
-                    let d = self.error(Code::Undeclared, id.span, format!("type `{}' undeclared", id.name));
+                    let d = self.error(
+                        Code::Undeclared,
+                        id.span,
+                        format!("type `{}' undeclared", id.name),
+                    );
                     if let Some(s) = did_you_mean(&id.name, names.iter().map(|s| s.as_str())) {
                         d.notes.push(format!("did you mean `{s}'?"));
                     }
@@ -86,7 +98,9 @@ impl Analyzer {
                         "array type syntax (`float[3] x') requires GLSL 1.20",
                     )
                     .notes
-                    .push("put the size after the name (`float x[3]'), or add `#version 120'".into());
+                    .push(
+                        "put the size after the name (`float x[3]'), or add `#version 120'".into(),
+                    );
                 }
                 if base.is_error() {
                     return base;
@@ -141,7 +155,10 @@ impl Analyzer {
             self.error(
                 Code::BadArraySize,
                 e.span,
-                format!("array size must be an int constant expression, found {}", self.tn(v.ty)),
+                format!(
+                    "array size must be an int constant expression, found {}",
+                    self.tn(v.ty)
+                ),
             );
             return ArraySize::Sized(1);
         }
@@ -149,13 +166,21 @@ impl Analyzer {
             crate::ir::ExprKind::Const(c) => const_int(c),
             _ => None,
         }) else {
-            self.error(Code::NotConstant, e.span, "array size is not a constant expression")
-                .notes
-                .push("use literals, `const' variables and built-in functions of constants".into());
+            self.error(
+                Code::NotConstant,
+                e.span,
+                "array size is not a constant expression",
+            )
+            .notes
+            .push("use literals, `const' variables and built-in functions of constants".into());
             return ArraySize::Sized(1);
         };
         if n <= 0 {
-            self.error(Code::BadArraySize, e.span, format!("array size must be greater than zero, found {n}"));
+            self.error(
+                Code::BadArraySize,
+                e.span,
+                format!("array size must be greater than zero, found {n}"),
+            );
             return ArraySize::Sized(1);
         }
         if n as u32 > MAX_ARRAY_SIZE {
@@ -177,14 +202,32 @@ impl Analyzer {
                 self.error(
                     Code::BadQualifier,
                     q.span,
-                    format!("struct members cannot have qualifiers, found `{}'", q.qualifier.as_str()),
+                    format!(
+                        "struct members cannot have qualifiers, found `{}'",
+                        q.qualifier.as_str()
+                    ),
                 );
+            }
+            if let TypeName::Struct(inner) = &m.ty.name {
+                if !self.builtin_mode {
+                    self.error(
+                        Code::BadQualifier,
+                        inner.span,
+                        "struct definitions cannot be nested inside a struct",
+                    )
+                    .notes
+                    .push("declare the inner struct first, then use its name".into());
+                }
             }
             let ty = self.resolve_type(&m.ty);
             for d in &m.declarators {
                 let mty = self.apply_array(ty, d.array.as_ref());
                 if mty.base == Base::Void {
-                    self.error(Code::TypeMismatch, d.name.span, format!("struct member `{}' cannot be void", d.name.name));
+                    self.error(
+                        Code::TypeMismatch,
+                        d.name.span,
+                        format!("struct member `{}' cannot be void", d.name.name),
+                    );
                 }
                 if mty.array == Some(ArraySize::Unsized) {
                     self.error(
@@ -209,7 +252,10 @@ impl Analyzer {
             }
         }
         let id = StructId(self.module.structs.len() as u32);
-        let name = s.name.as_ref().map_or_else(|| "<anonymous>".to_string(), |n| n.name.to_string());
+        let name = s
+            .name
+            .as_ref()
+            .map_or_else(|| "<anonymous>".to_string(), |n| n.name.to_string());
         self.module.structs.push(StructDef {
             name,
             members,
@@ -218,7 +264,11 @@ impl Analyzer {
         if let Some(n) = &s.name {
             self.check_reserved_name(&n.name, n.span);
             if self.scopes.lookup_current(&n.name).is_some() {
-                self.error(Code::Redeclared, n.span, format!("`{}' is already declared in this scope", n.name));
+                self.error(
+                    Code::Redeclared,
+                    n.span,
+                    format!("`{}' is already declared in this scope", n.name),
+                );
             } else {
                 self.scopes.insert(n.name.clone(), Symbol::Struct(id));
             }
@@ -244,11 +294,11 @@ impl Analyzer {
             return false;
         }
         match ty.base {
-            Base::Struct(id) => self
-                .module
-                .structs
-                .get(id.0 as usize)
-                .is_some_and(|s| s.members.iter().any(|m| self.contains(m.ty, pred, depth + 1))),
+            Base::Struct(id) => self.module.structs.get(id.0 as usize).is_some_and(|s| {
+                s.members
+                    .iter()
+                    .any(|m| self.contains(m.ty, pred, depth + 1))
+            }),
             _ => false,
         }
     }
