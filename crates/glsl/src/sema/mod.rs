@@ -108,7 +108,7 @@ pub(crate) fn builtin_env(version: Version, stage: Stage) -> &'static BuiltinEnv
 fn build_env(version: Version, stage: Stage) -> BuiltinEnv {
     let text = crate::builtins::prelude(version, stage);
     let mut map = SourceMap::new("<built-ins>", text);
-    let pp = crate::pp::preprocess(&mut map, &crate::pp::PpOptions { stage });
+    let pp = crate::pp::preprocess(&mut map, &crate::pp::PpOptions::new(stage));
     let (tu, parse_diags) = crate::parse::parse(&pp.tokens, version);
     let mut a = Analyzer::new(version, stage, None);
     a.builtin_mode = true;
