@@ -37,6 +37,18 @@ use macros::{Budget, Expander, MacroTable, PTok};
 
 pub struct PpOptions {
     pub stage: Stage,
+    /// The version of a shader without `#version` (GLSL says 1.10;
+    /// `shaderbox check --glsl-version` can choose another).
+    pub default_version: Version,
+}
+
+impl PpOptions {
+    pub fn new(stage: Stage) -> PpOptions {
+        PpOptions {
+            stage,
+            default_version: Version::V110,
+        }
+    }
 }
 
 /// An `#extension name : behavior` directive.
@@ -80,6 +92,7 @@ pub(crate) fn preprocess_with_limit(
     let (toks, lex_diags) = lex::lex(map.text(), lex_opts);
     let end = map.text().len() as u32;
     let mut pp = Preprocessor::new(map, opts.stage, max_tokens);
+    pp.version = opts.default_version;
     pp.diags.extend(lex_diags);
     for line in split_lines(toks, end) {
         pp.line(line);

@@ -3,12 +3,7 @@ use crate::diag::Severity;
 
 fn run(src: &str) -> (PpOutput, SourceMap) {
     let mut map = SourceMap::new("t", src);
-    let out = preprocess(
-        &mut map,
-        &PpOptions {
-            stage: Stage::Vertex,
-        },
-    );
+    let out = preprocess(&mut map, &PpOptions::new(Stage::Vertex));
     assert_eq!(
         out.tokens
             .iter()
@@ -222,12 +217,7 @@ fn builtin_macros() {
 #[test]
 fn several_source_strings() {
     let mut map = SourceMap::from_strings("t", &["a\n", "__LINE__ __FILE__"]);
-    let out = preprocess(
-        &mut map,
-        &PpOptions {
-            stage: Stage::Fragment,
-        },
-    );
+    let out = preprocess(&mut map, &PpOptions::new(Stage::Fragment));
     assert_eq!(render(&out), "a 1 1");
 }
 
@@ -580,9 +570,7 @@ fn bomb() -> String {
 #[test]
 fn macro_bomb_is_an_error() {
     let mut map = SourceMap::new("t", bomb());
-    let opts = PpOptions {
-        stage: Stage::Vertex,
-    };
+    let opts = PpOptions::new(Stage::Vertex);
     let out = preprocess_with_limit(&mut map, &opts, 10_000);
     assert_eq!(out.tokens.len(), 1);
     let errs = messages(&out, Severity::Error);
@@ -706,7 +694,7 @@ fn builtin_prelude_preprocesses_cleanly() {
     for v in [Version::V110, Version::V120] {
         for s in [Stage::Vertex, Stage::Fragment] {
             let mut map = SourceMap::new("prelude", crate::builtins::prelude(v, s));
-            let out = preprocess(&mut map, &PpOptions { stage: s });
+            let out = preprocess(&mut map, &PpOptions::new(s));
             assert!(
                 out.diagnostics.is_empty(),
                 "{v:?} {s:?}: {:?}",
