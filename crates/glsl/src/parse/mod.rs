@@ -361,11 +361,19 @@ impl<'t> Parser<'t> {
 
     // ---- Translation unit -------------------------------------------------
 
+    /// `translation_unit`. A run of tokens that cannot start a declaration
+    /// (statements outside any function, say) is reported once, at its
+    /// first token.
     fn translation_unit(&mut self) -> TranslationUnit {
         let mut items = Vec::new();
+        let mut in_junk = false;
         while !self.at_eof() && !self.aborted {
             let start = self.pos;
-            self.recovering = false;
+            let junk = !self.at_declaration_keyword_or_type();
+            if !(junk && in_junk) {
+                self.recovering = false;
+            }
+            in_junk = junk;
             match self.external_declaration() {
                 Ok(item) => items.push(item),
                 Err(Reported) => self.recover(start),
@@ -379,6 +387,10 @@ impl<'t> Parser<'t> {
     }
 
     fn external_declaration(&mut self) -> PResult<ExternalDecl> {
+        if self.at_punct(Punct::Semicolon) {
+            // §9 has no empty declaration at global scope.
+            return Err(self.unexpected_with_note("declaration", "remove the extra `;'"));
+        }
         if !self.at_declaration_keyword_or_type() {
             return Err(self.unexpected("declaration"));
         }

@@ -838,6 +838,14 @@ fn top_level_errors() {
         ["expected declaration, found `}'"]
     );
     assert_eq!(errs("void main() {};"), ["expected declaration, found `;'"]);
+    // Statements outside a function: one error for the run.
+    assert_eq!(
+        errs("  gl_Position = ftransform();\n  x = 1;\n}\nvoid main() {}\ny = 2;"),
+        [
+            "expected declaration, found `gl_Position'",
+            "expected declaration, found `y'"
+        ]
+    );
     assert_eq!(errs("void main() {"), ["expected `}', found end of input"]);
     assert_eq!(
         errs("void main() { { {"),
@@ -1139,4 +1147,41 @@ fn piglit_sweep() {
     eprintln!("expected-fail rejected by the parser alone: {fail_rejected}");
     assert!(panics.is_empty(), "{panics:?}");
     assert!(bad_pass.is_empty());
+}
+
+/// Parses every file in `$GLSL_SWEEP_DIR` (real-world shaders, which may
+/// contain transcription errors) and prints the diagnostics; only panics
+/// fail. `GLSL_SWEEP_DIR=dir cargo test -p shaderbox-glsl dir_sweep -- --ignored --nocapture`
+#[test]
+#[ignore]
+fn dir_sweep() {
+    let Some(dir) = std::env::var_os("GLSL_SWEEP_DIR") else {
+        eprintln!("GLSL_SWEEP_DIR not set; skipped");
+        return;
+    };
+    let mut paths: Vec<_> = std::fs::read_dir(dir)
+        .into_iter()
+        .flatten()
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    paths.sort();
+    let mut clean = 0;
+    for path in &paths {
+        let Ok(src) = std::fs::read_to_string(path) else {
+            continue;
+        };
+        let v = version_of(&src);
+        let toks = tokens(&src, v);
+        let (_, diags) = parse(&toks, v);
+        if diags.is_empty() {
+            clean += 1;
+        }
+        for d in diags {
+            let at = d.span.map_or(0, |s| s.start as usize);
+            let line = src[..at.min(src.len())].lines().count();
+            eprintln!("{}:{line}: {}", path.display(), d.message);
+        }
+    }
+    eprintln!("{} files, {clean} without diagnostics", paths.len());
 }
