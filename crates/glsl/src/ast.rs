@@ -216,7 +216,10 @@ pub enum StmtKind {
     /// `{ ... }`. `new_scope` is false where the grammar says
     /// `statement_no_new_scope` / `compound_statement_no_new_scope`
     /// (loop bodies per GLSL 1.20 §6.3 share the scope of the loop header).
-    Block { block: Block, new_scope: bool },
+    Block {
+        block: Block,
+        new_scope: bool,
+    },
     If {
         cond: Expr,
         then: Box<Stmt>,

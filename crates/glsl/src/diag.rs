@@ -218,12 +218,9 @@ impl Diagnostic {
 pub fn render_info_log(diags: &[Diagnostic], map: &SourceMap) -> String {
     let mut out = String::new();
     for d in diags {
-        match d.span {
-            Some(span) => {
-                let loc = map.loc(span.start);
-                out.push_str(&format!("{}:{}({}): ", loc.source, loc.line, loc.column));
-            }
-            None => {}
+        if let Some(span) = d.span {
+            let loc = map.loc(span.start);
+            out.push_str(&format!("{}:{}({}): ", loc.source, loc.line, loc.column));
         }
         out.push_str(d.severity.as_str());
         out.push_str(": ");
@@ -294,7 +291,10 @@ pub fn render_terminal(diags: &[Diagnostic], map: &SourceMap, color: bool) -> St
 }
 
 /// The closest candidates to `name` among `candidates`, for "did you mean".
-pub fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+pub fn did_you_mean<'a>(
+    name: &str,
+    candidates: impl IntoIterator<Item = &'a str>,
+) -> Option<&'a str> {
     let mut best: Option<(f64, &str)> = None;
     for c in candidates {
         if c == name {
@@ -321,7 +321,10 @@ mod tests {
         let d = Diagnostic::error(Code::Undeclared, Span::new(at, at + 1), "`x' undeclared")
             .with_note("did you mean `y'?");
         let log = render_info_log(&[d], &map);
-        assert_eq!(log, "0:3(3): error: `x' undeclared\n    note: did you mean `y'?\n");
+        assert_eq!(
+            log,
+            "0:3(3): error: `x' undeclared\n    note: did you mean `y'?\n"
+        );
     }
 
     #[test]

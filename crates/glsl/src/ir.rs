@@ -148,14 +148,27 @@ pub enum Stmt {
     Expr(Expr),
     /// A local variable comes into scope here; `init` (if any) is assigned
     /// each time control passes.
-    Declare { local: LocalId, init: Option<Expr>, span: Span },
+    Declare {
+        local: LocalId,
+        init: Option<Expr>,
+        span: Span,
+    },
     Block(Block),
-    If { cond: Expr, then: Block, else_: Block, span: Span },
+    If {
+        cond: Expr,
+        then: Block,
+        else_: Block,
+        span: Span,
+    },
     /// A loop: run `body`, then `continuing`, forever; `Break` leaves,
     /// `Continue` jumps to `continuing`. Conditions are `if` + `Break`
     /// statements inside `body` (at its start for `while`/`for`) or in
     /// `continuing` (at its end for `do`/`while`).
-    Loop { body: Block, continuing: Block, span: Span },
+    Loop {
+        body: Block,
+        continuing: Block,
+        span: Span,
+    },
     Break(Span),
     Continue(Span),
     Return(Option<Expr>, Span),
@@ -215,26 +228,67 @@ pub enum ExprKind {
     Local(LocalId),
     /// Array element, vector component or matrix column. Out-of-range
     /// dynamic indices have a defined, implementation-chosen result.
-    Index { base: Box<Expr>, index: Box<Expr> },
+    Index {
+        base: Box<Expr>,
+        index: Box<Expr>,
+    },
     /// `v.xzy`: `count` components of `base`, selected by `components`.
-    Swizzle { base: Box<Expr>, components: [u8; 4], count: u8 },
-    Member { base: Box<Expr>, index: u32 },
-    Unary { op: UnaryOp, operand: Box<Expr> },
-    Binary { op: BinaryOp, left: Box<Expr>, right: Box<Expr> },
-    Ternary { cond: Box<Expr>, accept: Box<Expr>, reject: Box<Expr> },
+    Swizzle {
+        base: Box<Expr>,
+        components: [u8; 4],
+        count: u8,
+    },
+    Member {
+        base: Box<Expr>,
+        index: u32,
+    },
+    Unary {
+        op: UnaryOp,
+        operand: Box<Expr>,
+    },
+    Binary {
+        op: BinaryOp,
+        left: Box<Expr>,
+        right: Box<Expr>,
+    },
+    Ternary {
+        cond: Box<Expr>,
+        accept: Box<Expr>,
+        reject: Box<Expr>,
+    },
     /// `target = value` or `target op= value`; the result is the new value.
-    Assign { op: Option<BinaryOp>, target: Box<Expr>, value: Box<Expr> },
-    IncDec { op: IncDec, target: Box<Expr> },
-    Call { function: FunctionId, args: Vec<Expr> },
-    Builtin { function: BuiltinFn, args: Vec<Expr> },
+    Assign {
+        op: Option<BinaryOp>,
+        target: Box<Expr>,
+        value: Box<Expr>,
+    },
+    IncDec {
+        op: IncDec,
+        target: Box<Expr>,
+    },
+    Call {
+        function: FunctionId,
+        args: Vec<Expr>,
+    },
+    Builtin {
+        function: BuiltinFn,
+        args: Vec<Expr>,
+    },
     /// A constructor of `ty` from `args` with the GLSL rules (§5.4):
     /// components consumed in order with per-scalar conversion, a scalar
     /// fills a vector or a matrix diagonal, a matrix from a matrix copies
     /// the overlap and fills the identity.
-    Construct { args: Vec<Expr> },
+    Construct {
+        args: Vec<Expr>,
+    },
     /// Implicit int→float conversion (GLSL 1.20 §4.1.10) to `ty`.
-    Convert { operand: Box<Expr> },
-    Comma { left: Box<Expr>, right: Box<Expr> },
+    Convert {
+        operand: Box<Expr>,
+    },
+    Comma {
+        left: Box<Expr>,
+        right: Box<Expr>,
+    },
 }
 
 /// Behaviour requested by an `#extension` directive.

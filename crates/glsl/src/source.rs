@@ -184,9 +184,30 @@ mod tests {
     #[test]
     fn lines_and_columns() {
         let m = SourceMap::new("t", "ab\ncd\n\nef");
-        assert_eq!(m.loc(0), Loc { source: 0, line: 1, column: 1 });
-        assert_eq!(m.loc(4), Loc { source: 0, line: 2, column: 2 });
-        assert_eq!(m.loc(7), Loc { source: 0, line: 4, column: 1 });
+        assert_eq!(
+            m.loc(0),
+            Loc {
+                source: 0,
+                line: 1,
+                column: 1
+            }
+        );
+        assert_eq!(
+            m.loc(4),
+            Loc {
+                source: 0,
+                line: 2,
+                column: 2
+            }
+        );
+        assert_eq!(
+            m.loc(7),
+            Loc {
+                source: 0,
+                line: 4,
+                column: 1
+            }
+        );
         assert_eq!(m.slice(m.line_range(1)), "cd");
     }
 
@@ -196,7 +217,14 @@ mod tests {
         m.add_line_directive(1, 10, Some(3));
         assert_eq!(m.loc(0).line, 1);
         let b = m.text().find('b').unwrap() as u32;
-        assert_eq!(m.loc(b), Loc { source: 3, line: 10, column: 1 });
+        assert_eq!(
+            m.loc(b),
+            Loc {
+                source: 3,
+                line: 10,
+                column: 1
+            }
+        );
         let c = m.text().find('c').unwrap() as u32;
         assert_eq!(m.loc(c).line, 11);
     }
@@ -204,7 +232,21 @@ mod tests {
     #[test]
     fn several_strings() {
         let m = SourceMap::from_strings("t", &["a\n", "b\nc"]);
-        assert_eq!(m.loc(2), Loc { source: 1, line: 1, column: 1 });
-        assert_eq!(m.loc(4), Loc { source: 1, line: 2, column: 1 });
+        assert_eq!(
+            m.loc(2),
+            Loc {
+                source: 1,
+                line: 1,
+                column: 1
+            }
+        );
+        assert_eq!(
+            m.loc(4),
+            Loc {
+                source: 1,
+                line: 2,
+                column: 1
+            }
+        );
     }
 }

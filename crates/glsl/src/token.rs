@@ -121,11 +121,48 @@ keywords! {
 /// Words reserved for future use in both versions (§3.6): using one is an
 /// error.
 const RESERVED_BOTH: &[&str] = &[
-    "asm", "class", "union", "enum", "typedef", "template", "this", "packed", "goto", "switch",
-    "default", "inline", "noinline", "volatile", "public", "static", "extern", "external",
-    "interface", "long", "short", "double", "half", "fixed", "unsigned", "input", "output",
-    "hvec2", "hvec3", "hvec4", "dvec2", "dvec3", "dvec4", "fvec2", "fvec3", "fvec4",
-    "sampler2DRect", "sampler3DRect", "sampler2DRectShadow", "sizeof", "cast", "namespace",
+    "asm",
+    "class",
+    "union",
+    "enum",
+    "typedef",
+    "template",
+    "this",
+    "packed",
+    "goto",
+    "switch",
+    "default",
+    "inline",
+    "noinline",
+    "volatile",
+    "public",
+    "static",
+    "extern",
+    "external",
+    "interface",
+    "long",
+    "short",
+    "double",
+    "half",
+    "fixed",
+    "unsigned",
+    "input",
+    "output",
+    "hvec2",
+    "hvec3",
+    "hvec4",
+    "dvec2",
+    "dvec3",
+    "dvec4",
+    "fvec2",
+    "fvec3",
+    "fvec4",
+    "sampler2DRect",
+    "sampler3DRect",
+    "sampler2DRectShadow",
+    "sizeof",
+    "cast",
+    "namespace",
     "using",
 ];
 
@@ -361,6 +398,9 @@ mod tests {
         assert_eq!(classify("precision", Version::V110), WordClass::Identifier);
         assert_eq!(classify("precision", Version::V120), WordClass::Reserved);
         assert_eq!(classify("switch", Version::V110), WordClass::Reserved);
-        assert_eq!(classify("vec3", Version::V110), WordClass::Keyword(Keyword::Vec3));
+        assert_eq!(
+            classify("vec3", Version::V110),
+            WordClass::Keyword(Keyword::Vec3)
+        );
     }
 }

@@ -9,7 +9,7 @@
 use serde::Serialize;
 use std::fmt;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub enum Scalar {
     Float,
     Int,
@@ -26,7 +26,7 @@ impl Scalar {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub enum SamplerKind {
     Sampler1D,
     Sampler2D,
@@ -54,14 +54,17 @@ impl SamplerKind {
 pub struct StructId(pub u32);
 
 /// A non-array type.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub enum Base {
     Void,
     Scalar(Scalar),
     /// A vector of 2, 3 or 4 components.
     Vector(Scalar, u8),
     /// A float matrix with `cols` columns of `rows` components (2..=4 each).
-    Matrix { cols: u8, rows: u8 },
+    Matrix {
+        cols: u8,
+        rows: u8,
+    },
     Sampler(SamplerKind),
     Struct(StructId),
     /// The type of an expression whose analysis failed. It converts to and
@@ -70,7 +73,7 @@ pub enum Base {
 }
 
 /// The size of an array type.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub enum ArraySize {
     Sized(u32),
     /// Declared without a size (`uniform float a[];`): GLSL 1.10 §4.1.9
@@ -79,7 +82,7 @@ pub enum ArraySize {
     Unsized,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub struct Type {
     pub base: Base,
     pub array: Option<ArraySize>,
@@ -192,8 +195,14 @@ impl Type {
     /// The same shape with another scalar kind (for conversions).
     pub fn with_scalar(self, s: Scalar) -> Type {
         match self.base {
-            Base::Scalar(_) => Type { base: Base::Scalar(s), ..self },
-            Base::Vector(_, n) => Type { base: Base::Vector(s, n), ..self },
+            Base::Scalar(_) => Type {
+                base: Base::Scalar(s),
+                ..self
+            },
+            Base::Vector(_, n) => Type {
+                base: Base::Vector(s, n),
+                ..self
+            },
             _ => self,
         }
     }
