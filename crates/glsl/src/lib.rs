@@ -33,6 +33,7 @@ pub mod ir;
 pub mod lex;
 pub mod limits;
 pub mod link;
+pub mod math;
 pub mod parse;
 pub mod pp;
 pub mod sema;

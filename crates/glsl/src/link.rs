@@ -1,1 +1,824 @@
-//! Link-time checks. Work in progress.
+//! Linking shader objects into a program (what `glLinkProgram` checks).
+//!
+//! For each stage the shader objects of that stage are merged into one
+//! [`Module`] (GLSL 1.20 §4.3: "shared globals" of one language share one
+//! name space; §6.1: a function declared in one object may be defined in
+//! another), then the two stages' interfaces are checked against each other
+//! (§4.3.5 uniforms, §4.3.6 varyings) and against the limits of
+//! [`crate::limits`].
+//!
+//! Link errors are [`Diagnostic`]s like compile errors; those that point into
+//! a shader object carry its index in [`LinkDiagnostic::shader`].
+
+use crate::diag::{render_info_log, Code, Diagnostic};
+use crate::ir::{
+    Block, ConstValue, Expr, ExprKind, Function, FunctionId, Global, GlobalId, Module, Stage, Stmt,
+    Storage,
+};
+use crate::limits;
+use crate::types::{ArraySize, Base, StructDef, StructId, StructMember, Type};
+use crate::Shader;
+use std::collections::{BTreeMap, BTreeSet};
+
+/// A link diagnostic and the shader object it points into, if any.
+#[derive(Clone, Debug)]
+pub struct LinkDiagnostic {
+    pub shader: Option<usize>,
+    pub diagnostic: Diagnostic,
+}
+
+/// The executable of one stage: every shader object of the stage merged.
+#[derive(Clone, Debug)]
+pub struct LinkedStage {
+    pub stage: Stage,
+    pub module: Module,
+    /// The entry point (`main`) in `module`.
+    pub main: FunctionId,
+}
+
+/// The result of linking (`GL_LINK_STATUS` is [`Program::ok`]).
+#[derive(Clone, Debug, Default)]
+pub struct Program {
+    /// Linked stages, vertex before fragment; a stage without shader
+    /// objects is absent (fixed function).
+    pub stages: Vec<LinkedStage>,
+    pub diagnostics: Vec<LinkDiagnostic>,
+    /// The GL info log, rendered at link time.
+    pub info_log: String,
+}
+
+impl Program {
+    pub fn ok(&self) -> bool {
+        !self.diagnostics.iter().any(|d| d.diagnostic.is_error())
+    }
+
+    pub fn stage(&self, stage: Stage) -> Option<&LinkedStage> {
+        self.stages.iter().find(|s| s.stage == stage)
+    }
+
+    pub fn info_log(&self) -> &str {
+        &self.info_log
+    }
+}
+
+/// Links shader objects into a program.
+pub fn link(shaders: &[&Shader]) -> Program {
+    let mut diags: Vec<LinkDiagnostic> = Vec::new();
+    let mut program = Program::default();
+    if shaders.is_empty() {
+        push(
+            &mut diags,
+            None,
+            Code::LinkNoMain,
+            "no shaders attached to the program",
+        );
+    }
+    for (i, s) in shaders.iter().enumerate() {
+        if !s.ok() {
+            push(
+                &mut diags,
+                None,
+                Code::LinkNoMain,
+                format!("{} shader {} did not compile", s.stage.name(), i),
+            );
+        }
+    }
+    if diags.is_empty() {
+        for stage in [Stage::Vertex, Stage::Fragment] {
+            let objects: Vec<(usize, &Module)> = shaders
+                .iter()
+                .enumerate()
+                .filter(|(_, s)| s.stage == stage)
+                .filter_map(|(i, s)| s.module.as_ref().map(|m| (i, m)))
+                .collect();
+            if objects.is_empty() {
+                continue;
+            }
+            if let Some(linked) = merge_stage(stage, &objects, &mut diags) {
+                check_limits(&linked, &mut diags);
+                program.stages.push(linked);
+            }
+        }
+        if let (Some(v), Some(f)) = (program.stage(Stage::Vertex), program.stage(Stage::Fragment)) {
+            check_interface(v, f, &mut diags);
+        }
+    }
+    program.info_log = render_link_log(&diags, shaders);
+    program.diagnostics = diags;
+    if !program.ok() {
+        program.stages.clear();
+    }
+    program
+}
+
+fn push(
+    diags: &mut Vec<LinkDiagnostic>,
+    shader: Option<usize>,
+    code: Code,
+    msg: impl Into<String>,
+) {
+    diags.push(LinkDiagnostic {
+        shader,
+        diagnostic: Diagnostic::error(code, None, msg),
+    });
+}
+
+fn render_link_log(diags: &[LinkDiagnostic], shaders: &[&Shader]) -> String {
+    let mut out = String::new();
+    for d in diags {
+        match d.shader.and_then(|i| shaders.get(i)) {
+            Some(s) => out.push_str(&render_info_log(
+                std::slice::from_ref(&d.diagnostic),
+                &s.source,
+            )),
+            None => {
+                let mut plain = d.diagnostic.clone();
+                plain.span = None;
+                out.push_str(&render_info_log(&[plain], &Default::default()));
+            }
+        }
+    }
+    out
+}
+
+/// How one object's ids map into the merged module.
+struct Remap {
+    structs: Vec<StructId>,
+    globals: Vec<GlobalId>,
+    functions: Vec<FunctionId>,
+}
+
+fn remap_type(ty: Type, map: &Remap) -> Type {
+    match ty.base {
+        Base::Struct(id) => Type {
+            base: Base::Struct(map.structs.get(id.0 as usize).copied().unwrap_or(id)),
+            ..ty
+        },
+        _ => ty,
+    }
+}
+
+fn remap_const(v: &mut ConstValue, map: &Remap) {
+    v.ty = remap_type(v.ty, map);
+}
+
+fn remap_expr(e: &mut Expr, map: &Remap) {
+    e.ty = remap_type(e.ty, map);
+    match &mut e.kind {
+        ExprKind::Const(v) => remap_const(v, map),
+        ExprKind::Global(g) => *g = map.globals.get(g.0 as usize).copied().unwrap_or(*g),
+        ExprKind::Local(_) => {}
+        ExprKind::Index { base, index } => {
+            remap_expr(base, map);
+            remap_expr(index, map);
+        }
+        ExprKind::Swizzle { base, .. } | ExprKind::Member { base, .. } => remap_expr(base, map),
+        ExprKind::Unary { operand, .. } | ExprKind::Convert { operand } => remap_expr(operand, map),
+        ExprKind::Binary { left, right, .. } | ExprKind::Comma { left, right } => {
+            remap_expr(left, map);
+            remap_expr(right, map);
+        }
+        ExprKind::Ternary {
+            cond,
+            accept,
+            reject,
+        } => {
+            remap_expr(cond, map);
+            remap_expr(accept, map);
+            remap_expr(reject, map);
+        }
+        ExprKind::Assign { target, value, .. } => {
+            remap_expr(target, map);
+            remap_expr(value, map);
+        }
+        ExprKind::IncDec { target, .. } => remap_expr(target, map),
+        ExprKind::Call { function, args } => {
+            *function = map
+                .functions
+                .get(function.0 as usize)
+                .copied()
+                .unwrap_or(*function);
+            args.iter_mut().for_each(|a| remap_expr(a, map));
+        }
+        ExprKind::Builtin { args, .. } | ExprKind::Construct { args } => {
+            args.iter_mut().for_each(|a| remap_expr(a, map))
+        }
+    }
+}
+
+fn remap_block(b: &mut Block, map: &Remap) {
+    for s in b {
+        match s {
+            Stmt::Expr(e) => remap_expr(e, map),
+            Stmt::Declare { init, .. } => {
+                if let Some(e) = init {
+                    remap_expr(e, map)
+                }
+            }
+            Stmt::Block(b) => remap_block(b, map),
+            Stmt::If {
+                cond, then, else_, ..
+            } => {
+                remap_expr(cond, map);
+                remap_block(then, map);
+                remap_block(else_, map);
+            }
+            Stmt::Loop {
+                body, continuing, ..
+            } => {
+                remap_block(body, map);
+                remap_block(continuing, map);
+            }
+            Stmt::Return(Some(e), _) => remap_expr(e, map),
+            Stmt::Return(None, _) | Stmt::Break(_) | Stmt::Continue(_) | Stmt::Discard(_) => {}
+        }
+    }
+}
+
+/// Calls made anywhere in a block.
+fn collect_calls(b: &Block, out: &mut BTreeSet<FunctionId>) {
+    fn expr(e: &Expr, out: &mut BTreeSet<FunctionId>) {
+        match &e.kind {
+            ExprKind::Const(_) | ExprKind::Global(_) | ExprKind::Local(_) => {}
+            ExprKind::Index { base, index } => {
+                expr(base, out);
+                expr(index, out);
+            }
+            ExprKind::Swizzle { base, .. } | ExprKind::Member { base, .. } => expr(base, out),
+            ExprKind::Unary { operand, .. } | ExprKind::Convert { operand } => expr(operand, out),
+            ExprKind::Binary { left, right, .. } | ExprKind::Comma { left, right } => {
+                expr(left, out);
+                expr(right, out);
+            }
+            ExprKind::Ternary {
+                cond,
+                accept,
+                reject,
+            } => {
+                expr(cond, out);
+                expr(accept, out);
+                expr(reject, out);
+            }
+            ExprKind::Assign { target, value, .. } => {
+                expr(target, out);
+                expr(value, out);
+            }
+            ExprKind::IncDec { target, .. } => expr(target, out),
+            ExprKind::Call { function, args } => {
+                out.insert(*function);
+                args.iter().for_each(|a| expr(a, out));
+            }
+            ExprKind::Builtin { args, .. } | ExprKind::Construct { args } => {
+                args.iter().for_each(|a| expr(a, out))
+            }
+        }
+    }
+    for s in b {
+        match s {
+            Stmt::Expr(e) | Stmt::Return(Some(e), _) => expr(e, out),
+            Stmt::Declare { init: Some(e), .. } => expr(e, out),
+            Stmt::Block(b) => collect_calls(b, out),
+            Stmt::If {
+                cond, then, else_, ..
+            } => {
+                expr(cond, out);
+                collect_calls(then, out);
+                collect_calls(else_, out);
+            }
+            Stmt::Loop {
+                body, continuing, ..
+            } => {
+                collect_calls(body, out);
+                collect_calls(continuing, out);
+            }
+            _ => {}
+        }
+    }
+}
+
+/// Two struct definitions are the same type if names, member names and
+/// member types match (§4.3, "shared globals").
+fn same_struct(a: &StructDef, b: &StructDef) -> bool {
+    a.name == b.name
+        && a.members.len() == b.members.len()
+        && a.members
+            .iter()
+            .zip(&b.members)
+            .all(|(x, y)| x.name == y.name && x.ty == y.ty)
+}
+
+/// Array types of shared globals agree when the base types are equal and
+/// explicit sizes, if both have one, are equal.
+fn compatible_types(a: Type, b: Type) -> bool {
+    if a.base != b.base {
+        return false;
+    }
+    match (a.array, b.array) {
+        (None, None) => true,
+        (Some(ArraySize::Sized(x)), Some(ArraySize::Sized(y))) => x == y,
+        (Some(_), Some(_)) => true,
+        _ => false,
+    }
+}
+
+fn merge_stage(
+    stage: Stage,
+    objects: &[(usize, &Module)],
+    diags: &mut Vec<LinkDiagnostic>,
+) -> Option<LinkedStage> {
+    let first = objects[0].1;
+    let mut merged = Module {
+        version: objects
+            .iter()
+            .map(|(_, m)| m.version)
+            .max()
+            .unwrap_or(first.version),
+        stage,
+        structs: Vec::new(),
+        globals: Vec::new(),
+        functions: Vec::new(),
+        extensions: Vec::new(),
+    };
+    let mut errors = false;
+    // Global name -> (merged id, object that declared it first).
+    let mut global_names: BTreeMap<String, (GlobalId, usize)> = BTreeMap::new();
+    // Function signature -> merged id.
+    let mut func_sigs: BTreeMap<(String, Vec<Type>), FunctionId> = BTreeMap::new();
+    let mut func_origin: Vec<usize> = Vec::new();
+    let mut remaps = Vec::new();
+
+    for &(obj, m) in objects {
+        let mut map = Remap {
+            structs: Vec::new(),
+            globals: Vec::new(),
+            functions: Vec::new(),
+        };
+        // Structs: reuse an identical definition, else append.
+        for s in &m.structs {
+            let members: Vec<StructMember> = s
+                .members
+                .iter()
+                .map(|mb| StructMember {
+                    name: mb.name.clone(),
+                    ty: remap_type(mb.ty, &map),
+                })
+                .collect();
+            let candidate = StructDef {
+                name: s.name.clone(),
+                members,
+                builtin: s.builtin,
+            };
+            let id = match merged
+                .structs
+                .iter()
+                .position(|x| same_struct(x, &candidate))
+            {
+                Some(i) => StructId(i as u32),
+                None => {
+                    merged.structs.push(candidate);
+                    StructId(merged.structs.len() as u32 - 1)
+                }
+            };
+            map.structs.push(id);
+        }
+        // Globals: shared by name.
+        for g in &m.globals {
+            let ty = remap_type(g.ty, &map);
+            if let Some(&(id, other)) = global_names.get(&g.name) {
+                let existing = &mut merged.globals[id.0 as usize];
+                if !compatible_types(existing.ty, ty) || existing.storage != g.storage {
+                    errors = true;
+                    diags.push(LinkDiagnostic {
+                        shader: Some(obj),
+                        diagnostic: Diagnostic::error(
+                            Code::LinkInterfaceMismatch,
+                            g.span,
+                            format!(
+                                "`{}' is declared as {} here but differently in {} shader {}",
+                                g.name,
+                                m.type_name(g.ty),
+                                stage.name(),
+                                other
+                            ),
+                        ),
+                    });
+                    map.globals.push(id);
+                    continue;
+                }
+                let existing = &mut merged.globals[id.0 as usize];
+                if let (Some(a), Some(b)) = (&existing.init, &g.init) {
+                    if a.components != b.components {
+                        errors = true;
+                        diags.push(LinkDiagnostic {
+                            shader: Some(obj),
+                            diagnostic: Diagnostic::error(
+                                Code::LinkInterfaceMismatch,
+                                g.span,
+                                format!(
+                                    "`{}' has different initializers in two {} shaders",
+                                    g.name,
+                                    stage.name()
+                                ),
+                            ),
+                        });
+                    }
+                }
+                if existing.init.is_none() {
+                    existing.init = g.init.clone();
+                }
+                if let Some(ArraySize::Sized(n)) = ty.array {
+                    existing.ty.array = Some(ArraySize::Sized(n));
+                }
+                existing.read |= g.read;
+                existing.written |= g.written;
+                existing.invariant |= g.invariant;
+                existing.implicit_size = existing.implicit_size.max(g.implicit_size);
+                map.globals.push(id);
+            } else {
+                let id = GlobalId(merged.globals.len() as u32);
+                let mut ng: Global = g.clone();
+                ng.ty = ty;
+                global_names.insert(g.name.clone(), (id, obj));
+                merged.globals.push(ng);
+                map.globals.push(id);
+            }
+        }
+        remaps.push((obj, m, map));
+    }
+
+    // Functions: definitions first, so prototypes resolve to them.
+    for pass_defs in [true, false] {
+        for (obj, m, map) in remaps.iter_mut() {
+            if pass_defs {
+                map.functions = vec![FunctionId(u32::MAX); m.functions.len()];
+            }
+            for (i, f) in m.functions.iter().enumerate() {
+                if f.body.is_some() != pass_defs {
+                    continue;
+                }
+                let sig = (
+                    f.name.clone(),
+                    f.params
+                        .iter()
+                        .map(|p| remap_type(p.ty, map))
+                        .collect::<Vec<_>>(),
+                );
+                match func_sigs.get(&sig) {
+                    Some(&id) if pass_defs => {
+                        errors = true;
+                        let code = if f.name == "main" {
+                            Code::LinkDuplicateMain
+                        } else {
+                            Code::LinkDuplicateDefinition
+                        };
+                        let prev = func_origin[id.0 as usize];
+                        diags.push(LinkDiagnostic {
+                            shader: Some(*obj),
+                            diagnostic: Diagnostic::error(
+                                code,
+                                f.span,
+                                format!(
+                                    "function `{}' is defined in two {} shaders ({} and {})",
+                                    f.name,
+                                    stage.name(),
+                                    prev,
+                                    obj
+                                ),
+                            )
+                            .with_note("a function may be declared in many shader objects but defined in only one"),
+                        });
+                        map.functions[i] = id;
+                    }
+                    Some(&id) => map.functions[i] = id,
+                    None => {
+                        let id = FunctionId(merged.functions.len() as u32);
+                        func_sigs.insert(sig, id);
+                        func_origin.push(*obj);
+                        let mut nf: Function = f.clone();
+                        nf.body = None;
+                        merged.functions.push(nf);
+                        map.functions[i] = id;
+                    }
+                }
+            }
+        }
+    }
+    // Bodies, with every id remapped.
+    for (obj, m, map) in &remaps {
+        for (i, f) in m.functions.iter().enumerate() {
+            let id = map.functions[i];
+            if f.body.is_none() || func_origin.get(id.0 as usize) != Some(obj) {
+                continue;
+            }
+            let target = &mut merged.functions[id.0 as usize];
+            if target.body.is_some() {
+                continue;
+            }
+            let mut nf = f.clone();
+            nf.return_type = remap_type(nf.return_type, map);
+            for p in &mut nf.params {
+                p.ty = remap_type(p.ty, map);
+            }
+            for l in &mut nf.locals {
+                l.ty = remap_type(l.ty, map);
+            }
+            if let Some(b) = &mut nf.body {
+                remap_block(b, map);
+            }
+            *target = nf;
+        }
+        for (gi, g) in m.globals.iter().enumerate() {
+            let id = map.globals[gi];
+            if let Some(e) = &g.init_expr {
+                let target = &mut merged.globals[id.0 as usize];
+                if target.init_expr.is_none() {
+                    let mut e = e.clone();
+                    remap_expr(&mut e, map);
+                    target.init_expr = Some(e);
+                }
+            }
+            if let Some(v) = &mut merged.globals[id.0 as usize].init {
+                remap_const(v, map);
+            }
+        }
+        for ext in &m.extensions {
+            if !merged.extensions.contains(ext) {
+                merged.extensions.push(ext.clone());
+            }
+        }
+    }
+
+    // Exactly one main.
+    let mains: Vec<FunctionId> = merged
+        .functions
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| f.name == "main" && f.body.is_some())
+        .map(|(i, _)| FunctionId(i as u32))
+        .collect();
+    let Some(&main) = mains.first() else {
+        if !errors {
+            push(
+                diags,
+                None,
+                Code::LinkNoMain,
+                format!(
+                    "the {} shaders have no `main' function; one {} shader object must define `void main()'",
+                    stage.name(),
+                    stage.name()
+                ),
+            );
+        }
+        return None;
+    };
+
+    // Every function reachable from main must be defined.
+    let mut seen = BTreeSet::new();
+    let mut work = vec![main];
+    while let Some(f) = work.pop() {
+        if !seen.insert(f) {
+            continue;
+        }
+        let func = &merged.functions[f.0 as usize];
+        match &func.body {
+            Some(b) => {
+                let mut calls = BTreeSet::new();
+                collect_calls(b, &mut calls);
+                work.extend(calls);
+            }
+            None => {
+                errors = true;
+                let origin = func_origin.get(f.0 as usize).copied();
+                diags.push(LinkDiagnostic {
+                    shader: origin,
+                    diagnostic: Diagnostic::error(
+                        Code::LinkUndefinedFunction,
+                        func.span,
+                        format!(
+                            "function `{}' is called but no {} shader defines it",
+                            signature(&merged, func),
+                            stage.name()
+                        ),
+                    )
+                    .with_note("attach the shader object that defines it, or define it"),
+                });
+            }
+        }
+    }
+
+    // gl_FragColor and gl_FragData are exclusive across the stage (§7.2).
+    if stage == Stage::Fragment {
+        let written = |n: &str| {
+            merged
+                .globals
+                .iter()
+                .any(|g| g.builtin && g.name == n && g.written)
+        };
+        if written("gl_FragColor") && written("gl_FragData") {
+            errors = true;
+            push(
+                diags,
+                None,
+                Code::LinkInterfaceMismatch,
+                "the fragment shaders write both `gl_FragColor' and `gl_FragData'; write only one of them",
+            );
+        }
+    }
+
+    // Unsized arrays take their largest implicit size.
+    for g in &mut merged.globals {
+        if g.ty.array == Some(ArraySize::Unsized) {
+            g.ty.array = Some(ArraySize::Sized(g.implicit_size.max(1)));
+        }
+    }
+
+    (!errors).then_some(LinkedStage {
+        stage,
+        module: merged,
+        main,
+    })
+}
+
+fn signature(m: &Module, f: &Function) -> String {
+    let params: Vec<String> = f.params.iter().map(|p| m.type_name(p.ty)).collect();
+    format!(
+        "{} {}({})",
+        m.type_name(f.return_type),
+        f.name,
+        params.join(", ")
+    )
+}
+
+/// Components a value of this type occupies, for the limits.
+fn components(m: &Module, ty: Type) -> u32 {
+    crate::consteval::flat_size(ty, &m.structs).min(u32::MAX as usize) as u32
+}
+
+fn check_limits(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
+    let m = &s.module;
+    let mut limit = |what: &str, used: u32, max: u32| {
+        if used > max {
+            push(
+                diags,
+                None,
+                Code::LinkTooMany,
+                format!(
+                    "the {} shader uses {used} {what}; the limit is {max}",
+                    s.stage.name()
+                ),
+            );
+        }
+    };
+    let uniforms: u32 = m
+        .globals
+        .iter()
+        .filter(|g| g.storage == Storage::Uniform && g.read && !g.ty.is_sampler())
+        .map(|g| components(m, g.ty))
+        .sum();
+    let samplers: u32 = m
+        .globals
+        .iter()
+        .filter(|g| g.storage == Storage::Uniform && g.read && g.ty.is_sampler())
+        .map(|g| match g.ty.array {
+            Some(ArraySize::Sized(n)) => n,
+            _ => 1,
+        })
+        .sum();
+    match s.stage {
+        Stage::Vertex => {
+            limit(
+                "uniform components",
+                uniforms,
+                limits::MAX_VERTEX_UNIFORM_COMPONENTS,
+            );
+            limit("samplers", samplers, limits::MAX_VERTEX_TEXTURE_IMAGE_UNITS);
+            // Generic attributes: one slot per vector, one per matrix column.
+            let slots: u32 = m
+                .globals
+                .iter()
+                .filter(|g| g.storage == Storage::Attribute && !g.builtin && g.read)
+                .map(|g| match g.ty.base {
+                    Base::Matrix { cols, .. } => cols as u32,
+                    _ => 1,
+                })
+                .sum();
+            limit("attribute slots", slots, limits::MAX_VERTEX_ATTRIBS);
+            let varyings: u32 = m
+                .globals
+                .iter()
+                .filter(|g| g.storage == Storage::Varying && g.written)
+                .map(|g| components(m, g.ty))
+                .sum();
+            limit("varying components", varyings, limits::MAX_VARYING_FLOATS);
+        }
+        Stage::Fragment => {
+            limit(
+                "uniform components",
+                uniforms,
+                limits::MAX_FRAGMENT_UNIFORM_COMPONENTS,
+            );
+            limit("samplers", samplers, limits::MAX_TEXTURE_IMAGE_UNITS);
+            let varyings: u32 = m
+                .globals
+                .iter()
+                .filter(|g| {
+                    g.storage == Storage::Varying
+                        && g.read
+                        && !matches!(
+                            g.name.as_str(),
+                            "gl_FragCoord" | "gl_FrontFacing" | "gl_PointCoord"
+                        )
+                })
+                .map(|g| components(m, g.ty))
+                .sum();
+            limit("varying components", varyings, limits::MAX_VARYING_FLOATS);
+        }
+    }
+}
+
+fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
+    let (vm, fm) = (&v.module, &f.module);
+    for fg in fm.globals.iter().filter(|g| !g.builtin) {
+        let vg = vm.globals.iter().find(|g| g.name == fg.name);
+        match fg.storage {
+            Storage::Varying => match vg {
+                Some(vg) if vg.storage == Storage::Varying => {
+                    if !compatible_types(vg.ty, fg.ty) || vm.type_name(vg.ty) != fm.type_name(fg.ty)
+                    {
+                        push(
+                            diags,
+                            None,
+                            Code::LinkInterfaceMismatch,
+                            format!(
+                                "varying `{}' is {} in the vertex shader but {} in the fragment shader",
+                                fg.name,
+                                vm.type_name(vg.ty),
+                                fm.type_name(fg.ty)
+                            ),
+                        );
+                    } else if vg.centroid != fg.centroid || vg.invariant != fg.invariant {
+                        push(
+                            diags,
+                            None,
+                            Code::LinkInterfaceMismatch,
+                            format!(
+                                "varying `{}' has different `centroid'/`invariant' qualifiers in the vertex and fragment shaders",
+                                fg.name
+                            ),
+                        );
+                    } else if fg.read && !vg.written {
+                        push(
+                            diags,
+                            None,
+                            Code::LinkVaryingNotWritten,
+                            format!(
+                                "the fragment shader reads varying `{}' but the vertex shader never writes it",
+                                fg.name
+                            ),
+                        );
+                    }
+                }
+                _ if fg.read => push(
+                    diags,
+                    None,
+                    Code::LinkVaryingNotWritten,
+                    format!(
+                        "the fragment shader reads varying `{}' but the vertex shader does not declare it",
+                        fg.name
+                    ),
+                ),
+                _ => {}
+            },
+            Storage::Uniform => {
+                if let Some(vg) = vg.filter(|g| g.storage == Storage::Uniform) {
+                    if !compatible_types(vg.ty, fg.ty) || vm.type_name(vg.ty) != fm.type_name(fg.ty) {
+                        push(
+                            diags,
+                            None,
+                            Code::LinkInterfaceMismatch,
+                            format!(
+                                "uniform `{}' is {} in the vertex shader but {} in the fragment shader",
+                                fg.name,
+                                vm.type_name(vg.ty),
+                                fm.type_name(fg.ty)
+                            ),
+                        );
+                    } else if let (Some(a), Some(b)) = (&vg.init, &fg.init) {
+                        if a.components != b.components {
+                            push(
+                                diags,
+                                None,
+                                Code::LinkInterfaceMismatch,
+                                format!(
+                                    "uniform `{}' has different initializers in the vertex and fragment shaders",
+                                    fg.name
+                                ),
+                            );
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+}

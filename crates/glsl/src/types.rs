@@ -9,7 +9,7 @@
 use serde::Serialize;
 use std::fmt;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub enum Scalar {
     Float,
     Int,
@@ -26,7 +26,7 @@ impl Scalar {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub enum SamplerKind {
     Sampler1D,
     Sampler2D,
@@ -54,7 +54,7 @@ impl SamplerKind {
 pub struct StructId(pub u32);
 
 /// A non-array type.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub enum Base {
     Void,
     Scalar(Scalar),
@@ -73,7 +73,7 @@ pub enum Base {
 }
 
 /// The size of an array type.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub enum ArraySize {
     Sized(u32),
     /// Declared without a size (`uniform float a[];`): GLSL 1.10 §4.1.9
@@ -82,7 +82,7 @@ pub enum ArraySize {
     Unsized,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub struct Type {
     pub base: Base,
     pub array: Option<ArraySize>,

@@ -3,6 +3,18 @@
 //! [`BuiltinFn`] names every built-in function of GLSL 1.20 §8. Overloads
 //! of one name share a variant; the argument types in the IR tell them apart
 //! (`atan(y)` / `atan(y, x)`, `texture2D(s, p)` / `texture2D(s, p, bias)`).
+//!
+//! - [`prelude`]: the whole built-in environment of a version and stage as
+//!   GLSL declarations, which the semantic analyzer reads before the shader.
+//! - [`eval_builtin`]: constant folding of built-in calls.
+
+mod eval;
+#[cfg(test)]
+mod eval_piglit;
+mod prelude;
+
+pub use eval::eval_builtin;
+pub use prelude::prelude;
 
 macro_rules! builtin_fns {
     ($($variant:ident = $name:literal;)*) => {
@@ -111,16 +123,6 @@ builtin_fns! {
     Noise2 = "noise2";
     Noise3 = "noise3";
     Noise4 = "noise4";
-}
-
-/// Constant folding of a built-in call. Placeholder until the evaluation
-/// tables land: nothing folds yet.
-pub fn eval_builtin(
-    _f: BuiltinFn,
-    _args: &[crate::ir::ConstValue],
-    _result: crate::types::Type,
-) -> Option<crate::ir::ConstValue> {
-    None
 }
 
 #[cfg(test)]

@@ -1,0 +1,482 @@
+//! Constant folding of built-in function calls.
+//!
+//! GLSL 1.20 §4.3.3: "a built-in function call whose arguments are all
+//! constant expressions, with the exception of the texture lookup
+//! functions, the noise functions, and ftransform" is a constant expression,
+//! and dFdx, dFdy and fwidth "must return 0 when evaluated inside an
+//! initializer with an argument that is a constant expression". GLSL 1.10
+//! §4.3.2 allows no function calls in constant initializers at all; that
+//! version rule is the analyzer's to enforce, this module folds whatever it
+//! is given.
+//!
+//! Every function follows the formula its §8 entry gives, one `f32`
+//! rounding per operation, with the deterministic scalar functions of
+//! [`crate::math`]. Results the spec leaves undefined (`log(-1)`,
+//! `clamp` with `minVal > maxVal`, `smoothstep` with equal edges) are
+//! whatever those formulas give (NaN, ±inf), repeatably.
+
+use crate::builtins::BuiltinFn;
+use crate::ir::{ConstScalar, ConstValue};
+use crate::math;
+use crate::types::{Base, Type};
+
+/// Folds `f(args)` to a constant of type `result` (the return type of the
+/// overload the analyzer chose). Components are flattened as in
+/// [`ConstValue`]: vectors in order, matrices column by column.
+///
+/// Returns `None` when the call is not constant-foldable (texture lookups,
+/// `ftransform`, noise) or when the argument kinds or shapes do not match
+/// an overload of `f` with result `result` (which a well-typed call never
+/// produces).
+pub fn eval_builtin(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<ConstValue> {
+    if args.iter().any(|a| a.ty.component_count().is_none()) {
+        return None;
+    }
+    let components = eval(f, args, result)?;
+    if components.len() != result.component_count()? as usize {
+        return None;
+    }
+    Some(ConstValue {
+        ty: result,
+        components,
+    })
+}
+
+fn eval(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<Vec<ConstScalar>> {
+    use BuiltinFn::*;
+    match f {
+        Radians => unary(args, math::radians),
+        Degrees => unary(args, math::degrees),
+        Sin => unary(args, math::sin),
+        Cos => unary(args, math::cos),
+        Tan => unary(args, math::tan),
+        Asin => unary(args, math::asin),
+        Acos => unary(args, math::acos),
+        Atan if args.len() == 1 => unary(args, math::atan),
+        Atan => binary(args, math::atan2),
+        Pow => binary(args, math::pow),
+        Exp => unary(args, math::exp),
+        Log => unary(args, math::log),
+        Exp2 => unary(args, math::exp2),
+        Log2 => unary(args, math::log2),
+        Sqrt => unary(args, math::sqrt),
+        InverseSqrt => unary(args, math::inversesqrt),
+        Abs => unary(args, math::abs),
+        Sign => unary(args, math::sign),
+        Floor => unary(args, math::floor),
+        Ceil => unary(args, math::ceil),
+        Fract => unary(args, math::fract),
+        Mod => binary(args, math::modulo),
+        Min => binary(args, math::min),
+        Max => binary(args, math::max),
+        Clamp => ternary(args, math::clamp),
+        Mix => ternary(args, math::mix),
+        Step => binary(args, math::step),
+        SmoothStep => ternary(args, math::smoothstep),
+        Length => geometric(args, 1, |v| vec![math::length(&v[0])]),
+        Distance => geometric(args, 2, |v| {
+            let d: Vec<f32> = v[0].iter().zip(&v[1]).map(|(a, b)| a - b).collect();
+            vec![math::length(&d)]
+        }),
+        Dot => geometric(args, 2, |v| vec![math::dot(&v[0], &v[1])]),
+        Cross => geometric(args, 2, |v| cross(&v[0], &v[1])),
+        Normalize => geometric(args, 1, |v| normalize(&v[0])),
+        FaceForward => geometric(args, 3, |v| faceforward(&v[0], &v[1], &v[2])),
+        Reflect => geometric(args, 2, |v| reflect(&v[0], &v[1])),
+        Refract => refract(args),
+        MatrixCompMult => {
+            if args.len() != 2 || args[0].ty != args[1].ty || !args[0].ty.is_matrix() {
+                return None;
+            }
+            binary(args, |a, b| a * b)
+        }
+        OuterProduct => outer_product(args),
+        Transpose => transpose(args),
+        LessThan => compare(args, |a, b| a < b, |a, b| a < b),
+        LessThanEqual => compare(args, |a, b| a <= b, |a, b| a <= b),
+        GreaterThan => compare(args, |a, b| a > b, |a, b| a > b),
+        GreaterThanEqual => compare(args, |a, b| a >= b, |a, b| a >= b),
+        Equal => equality(args, true),
+        NotEqual => equality(args, false),
+        Any => reduce_bools(args, |b| b.iter().any(|&x| x)),
+        All => reduce_bools(args, |b| b.iter().all(|&x| x)),
+        Not => {
+            let [x] = args else { return None };
+            Some(bools(x)?.iter().map(|&b| ConstScalar::Bool(!b)).collect())
+        }
+        // §4.3.3 (1.20): derivatives of constant arguments are 0.
+        DFdx | DFdy | Fwidth => {
+            let [x] = args else { return None };
+            floats(x)?;
+            Some(vec![
+                ConstScalar::Float(0.0);
+                result.component_count()? as usize
+            ])
+        }
+        Ftransform | Noise1 | Noise2 | Noise3 | Noise4 => None,
+        Texture1D | Texture1DProj | Texture1DLod | Texture1DProjLod | Texture2D | Texture2DProj
+        | Texture2DLod | Texture2DProjLod | Texture3D | Texture3DProj | Texture3DLod
+        | Texture3DProjLod | TextureCube | TextureCubeLod | Shadow1D | Shadow2D | Shadow1DProj
+        | Shadow2DProj | Shadow1DLod | Shadow2DLod | Shadow1DProjLod | Shadow2DProjLod => None,
+    }
+}
+
+/// The components of a float scalar, vector or matrix.
+fn floats(v: &ConstValue) -> Option<Vec<f32>> {
+    if v.ty.scalar()? != crate::types::Scalar::Float {
+        return None;
+    }
+    v.components
+        .iter()
+        .map(|c| match c {
+            ConstScalar::Float(f) => Some(*f),
+            _ => None,
+        })
+        .collect()
+}
+
+fn ints(v: &ConstValue) -> Option<Vec<i32>> {
+    v.components
+        .iter()
+        .map(|c| match c {
+            ConstScalar::Int(i) => Some(*i),
+            _ => None,
+        })
+        .collect()
+}
+
+fn bools(v: &ConstValue) -> Option<Vec<bool>> {
+    v.components
+        .iter()
+        .map(|c| match c {
+            ConstScalar::Bool(b) => Some(*b),
+            _ => None,
+        })
+        .collect()
+}
+
+fn float_result(v: Vec<f32>) -> Vec<ConstScalar> {
+    v.into_iter().map(ConstScalar::Float).collect()
+}
+
+/// Applies `f` component-wise to float arguments of equal length, a
+/// length-1 (scalar) argument standing for every component (the
+/// `genType f(genType, float)` overloads of §8.3).
+fn component_wise<const N: usize>(
+    args: &[ConstValue],
+    f: impl Fn([f32; N]) -> f32,
+) -> Option<Vec<ConstScalar>> {
+    if args.len() != N {
+        return None;
+    }
+    let vals = args.iter().map(floats).collect::<Option<Vec<_>>>()?;
+    let n = vals.iter().map(Vec::len).max()?;
+    if vals.iter().any(|v| v.len() != n && v.len() != 1) {
+        return None;
+    }
+    let at = |v: &Vec<f32>, i: usize| if v.len() == 1 { v[0] } else { v[i] };
+    Some(
+        (0..n)
+            .map(|i| ConstScalar::Float(f(std::array::from_fn(|k| at(&vals[k], i)))))
+            .collect(),
+    )
+}
+
+fn unary(args: &[ConstValue], f: fn(f32) -> f32) -> Option<Vec<ConstScalar>> {
+    component_wise(args, |[x]| f(x))
+}
+
+fn binary(args: &[ConstValue], f: impl Fn(f32, f32) -> f32) -> Option<Vec<ConstScalar>> {
+    component_wise(args, |[x, y]| f(x, y))
+}
+
+fn ternary(args: &[ConstValue], f: fn(f32, f32, f32) -> f32) -> Option<Vec<ConstScalar>> {
+    component_wise(args, |[x, y, z]| f(x, y, z))
+}
+
+/// §8.4 functions on `n` float vectors of one size.
+fn geometric(
+    args: &[ConstValue],
+    n: usize,
+    f: impl Fn(&[Vec<f32>]) -> Vec<f32>,
+) -> Option<Vec<ConstScalar>> {
+    if args.len() != n || args.iter().any(|a| a.ty.vector_size().is_none()) {
+        return None;
+    }
+    let vals = args.iter().map(floats).collect::<Option<Vec<_>>>()?;
+    if vals.iter().any(|v| v.len() != vals[0].len()) {
+        return None;
+    }
+    Some(float_result(f(&vals)))
+}
+
+fn cross(x: &[f32], y: &[f32]) -> Vec<f32> {
+    if x.len() != 3 {
+        return Vec::new();
+    }
+    vec![
+        x[1] * y[2] - y[1] * x[2],
+        x[2] * y[0] - y[2] * x[0],
+        x[0] * y[1] - y[0] * x[1],
+    ]
+}
+
+/// `x / length(x)`.
+fn normalize(x: &[f32]) -> Vec<f32> {
+    let len = math::length(x);
+    x.iter().map(|c| c / len).collect()
+}
+
+/// `dot(Nref, I) < 0 ? N : -N`.
+fn faceforward(n: &[f32], i: &[f32], nref: &[f32]) -> Vec<f32> {
+    if math::dot(nref, i) < 0.0 {
+        n.to_vec()
+    } else {
+        n.iter().map(|c| -c).collect()
+    }
+}
+
+/// `I - 2 * dot(N, I) * N`.
+fn reflect(i: &[f32], n: &[f32]) -> Vec<f32> {
+    let d = 2.0 * math::dot(n, i);
+    i.iter().zip(n).map(|(ic, nc)| ic - d * nc).collect()
+}
+
+/// `k = 1 - eta² (1 - dot(N, I)²)`; 0 if `k < 0`, else
+/// `eta I - (eta dot(N, I) + sqrt(k)) N`.
+fn refract(args: &[ConstValue]) -> Option<Vec<ConstScalar>> {
+    let [i, n, eta] = args else { return None };
+    if i.ty != n.ty || i.ty.vector_size().is_none() || !eta.ty.is_scalar() {
+        return None;
+    }
+    let (i, n, eta) = (floats(i)?, floats(n)?, floats(eta)?[0]);
+    let d = math::dot(&n, &i);
+    let k = 1.0 - eta * eta * (1.0 - d * d);
+    let r = if k < 0.0 {
+        vec![0.0; i.len()]
+    } else {
+        let s = eta * d + math::sqrt(k);
+        i.iter().zip(&n).map(|(ic, nc)| eta * ic - s * nc).collect()
+    };
+    Some(float_result(r))
+}
+
+/// `outerProduct(c, r)`: a matrix of `r.len()` columns, column `j` being
+/// `c * r[j]` (§8.5).
+fn outer_product(args: &[ConstValue]) -> Option<Vec<ConstScalar>> {
+    let [c, r] = args else { return None };
+    if !c.ty.is_vector() || !r.ty.is_vector() {
+        return None;
+    }
+    let (c, r) = (floats(c)?, floats(r)?);
+    Some(float_result(
+        r.iter()
+            .flat_map(|rj| c.iter().map(move |ci| ci * rj))
+            .collect(),
+    ))
+}
+
+fn transpose(args: &[ConstValue]) -> Option<Vec<ConstScalar>> {
+    let [m] = args else { return None };
+    let Base::Matrix { cols, rows } = m.ty.base else {
+        return None;
+    };
+    let (cols, rows) = (cols as usize, rows as usize);
+    let v = floats(m)?;
+    if m.ty.is_array() || v.len() != cols * rows {
+        return None;
+    }
+    // Result column j is input row j.
+    Some(float_result(
+        (0..rows)
+            .flat_map(|j| (0..cols).map(move |i| (i, j)))
+            .map(|(i, j)| v[i * rows + j])
+            .collect(),
+    ))
+}
+
+/// Component-wise ordering of two `vec`s or two `ivec`s (§8.6).
+fn compare(
+    args: &[ConstValue],
+    on_floats: fn(f32, f32) -> bool,
+    on_ints: fn(i32, i32) -> bool,
+) -> Option<Vec<ConstScalar>> {
+    let [x, y] = args else { return None };
+    if x.ty != y.ty || !x.ty.is_vector() {
+        return None;
+    }
+    let out: Vec<bool> = if let (Some(a), Some(b)) = (floats(x), floats(y)) {
+        a.iter().zip(&b).map(|(&p, &q)| on_floats(p, q)).collect()
+    } else {
+        let (a, b) = (ints(x)?, ints(y)?);
+        a.iter().zip(&b).map(|(&p, &q)| on_ints(p, q)).collect()
+    };
+    Some(out.into_iter().map(ConstScalar::Bool).collect())
+}
+
+/// `equal` (`want_equal`) or `notEqual` of two vectors of any kind.
+fn equality(args: &[ConstValue], want_equal: bool) -> Option<Vec<ConstScalar>> {
+    let [x, y] = args else { return None };
+    if x.ty != y.ty || !x.ty.is_vector() {
+        return None;
+    }
+    let eq = |a: &ConstScalar, b: &ConstScalar| match (a, b) {
+        (ConstScalar::Float(p), ConstScalar::Float(q)) => Some(p == q),
+        (ConstScalar::Int(p), ConstScalar::Int(q)) => Some(p == q),
+        (ConstScalar::Bool(p), ConstScalar::Bool(q)) => Some(p == q),
+        _ => None,
+    };
+    x.components
+        .iter()
+        .zip(&y.components)
+        .map(|(a, b)| Some(ConstScalar::Bool(eq(a, b)? == want_equal)))
+        .collect()
+}
+
+fn reduce_bools(args: &[ConstValue], f: fn(&[bool]) -> bool) -> Option<Vec<ConstScalar>> {
+    let [x] = args else { return None };
+    if !x.ty.is_vector() {
+        return None;
+    }
+    Some(vec![ConstScalar::Bool(f(&bools(x)?))])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::types::Scalar;
+
+    fn vec(v: &[f32]) -> ConstValue {
+        ConstValue {
+            ty: Type::vec(Scalar::Float, v.len() as u8),
+            components: v.iter().map(|&f| ConstScalar::Float(f)).collect(),
+        }
+    }
+
+    fn ivec(v: &[i32]) -> ConstValue {
+        ConstValue {
+            ty: Type::vec(Scalar::Int, v.len() as u8),
+            components: v.iter().map(|&i| ConstScalar::Int(i)).collect(),
+        }
+    }
+
+    fn floats_of(v: Option<ConstValue>) -> Vec<f32> {
+        floats(&v.expect("folds")).expect("floats")
+    }
+
+    #[test]
+    fn not_foldable() {
+        let p = vec(&[0.5, 0.5]);
+        assert_eq!(
+            eval_builtin(BuiltinFn::Noise1, std::slice::from_ref(&p), Type::FLOAT),
+            None
+        );
+        assert_eq!(
+            eval_builtin(BuiltinFn::Ftransform, &[], Type::vec(Scalar::Float, 4)),
+            None
+        );
+        assert_eq!(
+            eval_builtin(BuiltinFn::Texture2D, &[p], Type::vec(Scalar::Float, 4)),
+            None
+        );
+    }
+
+    #[test]
+    fn derivatives_of_constants_are_zero() {
+        let v = vec(&[1.0, 2.0, 3.0]);
+        let r = eval_builtin(BuiltinFn::Fwidth, &[v], Type::vec(Scalar::Float, 3));
+        assert_eq!(floats_of(r), vec![0.0; 3]);
+    }
+
+    #[test]
+    fn scalar_broadcast_and_shapes() {
+        let r = eval_builtin(
+            BuiltinFn::Clamp,
+            &[vec(&[-2.0, 0.5, 3.0]), vec(&[0.0]), vec(&[1.0])],
+            Type::vec(Scalar::Float, 3),
+        );
+        assert_eq!(floats_of(r), vec![0.0, 0.5, 1.0]);
+        let r = eval_builtin(
+            BuiltinFn::Step,
+            &[vec(&[1.0]), vec(&[0.0, 2.0])],
+            Type::vec(Scalar::Float, 2),
+        );
+        assert_eq!(floats_of(r), vec![0.0, 1.0]);
+        // Mismatched sizes do not fold.
+        let bad = eval_builtin(
+            BuiltinFn::Min,
+            &[vec(&[1.0, 2.0]), vec(&[1.0, 2.0, 3.0])],
+            Type::vec(Scalar::Float, 3),
+        );
+        assert_eq!(bad, None);
+        // Nor does a wrong result type.
+        assert_eq!(
+            eval_builtin(BuiltinFn::Sin, &[vec(&[1.0, 2.0])], Type::FLOAT),
+            None
+        );
+        // Nor int arguments to a float function.
+        assert_eq!(
+            eval_builtin(BuiltinFn::Abs, &[ivec(&[1, 2])], Type::vec(Scalar::Int, 2)),
+            None
+        );
+    }
+
+    #[test]
+    fn matrices() {
+        // mat2x3: 2 columns of 3.
+        let m = ConstValue {
+            ty: Type::mat(2, 3),
+            components: [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]
+                .iter()
+                .map(|&f| ConstScalar::Float(f))
+                .collect(),
+        };
+        let t = eval_builtin(BuiltinFn::Transpose, &[m], Type::mat(3, 2));
+        assert_eq!(floats_of(t), vec![1.0, 4.0, 2.0, 5.0, 3.0, 6.0]);
+        let o = eval_builtin(
+            BuiltinFn::OuterProduct,
+            &[vec(&[1.0, 2.0, 3.0]), vec(&[10.0, 20.0])],
+            Type::mat(2, 3),
+        );
+        assert_eq!(floats_of(o), vec![10.0, 20.0, 30.0, 20.0, 40.0, 60.0]);
+    }
+
+    #[test]
+    fn relational() {
+        let r = eval_builtin(
+            BuiltinFn::LessThan,
+            &[ivec(&[1, 5]), ivec(&[2, 2])],
+            Type::vec(Scalar::Bool, 2),
+        )
+        .unwrap();
+        assert_eq!(
+            r.components,
+            vec![ConstScalar::Bool(true), ConstScalar::Bool(false)]
+        );
+        let any = eval_builtin(BuiltinFn::Any, &[r], Type::BOOL).unwrap();
+        assert_eq!(any.components, vec![ConstScalar::Bool(true)]);
+    }
+
+    #[test]
+    fn geometric() {
+        let r = eval_builtin(
+            BuiltinFn::Cross,
+            &[vec(&[1.0, 0.0, 0.0]), vec(&[0.0, 1.0, 0.0])],
+            Type::vec(Scalar::Float, 3),
+        );
+        assert_eq!(floats_of(r), vec![0.0, 0.0, 1.0]);
+        let r = eval_builtin(
+            BuiltinFn::Normalize,
+            &[vec(&[3.0, 4.0])],
+            Type::vec(Scalar::Float, 2),
+        );
+        assert_eq!(floats_of(r), vec![0.6, 0.8]);
+        // Total internal reflection gives the zero vector.
+        let r = eval_builtin(
+            BuiltinFn::Refract,
+            &[vec(&[0.6, -0.8]), vec(&[0.0, 1.0]), vec(&[2.0])],
+            Type::vec(Scalar::Float, 2),
+        );
+        assert_eq!(floats_of(r), vec![0.0, 0.0]);
+    }
+}

@@ -1,0 +1,272 @@
+//! Deterministic scalar math for GLSL's built-in functions.
+//!
+//! Constant folding (and, later, the CPU executor) evaluates built-ins with
+//! these functions so that a shader folds to bit-identical values on every
+//! machine. Nothing here calls the platform's C math library (which is what
+//! `f32::sin` and friends do): the transcendental functions come from the
+//! pure-Rust [`libm`] crate, everything else is IEEE-754 `f32` arithmetic,
+//! which Rust performs without excess precision.
+//!
+//! ## Accuracy
+//! - `sqrt`, `floor`, `ceil`, `abs`, `sign`, `min`, `max`, `clamp`, `step`
+//!   are exact (correctly rounded where rounding applies).
+//! - `sin`, `cos`, `tan`, `asin`, `acos`, `atan`, `atan2`, `exp`, `exp2`,
+//!   `log`, `log2`, `pow` are libm's single-precision routines (ports of
+//!   musl and ARM optimized-routines): at most 1 ulp from the exact result
+//!   (checked against libm's `f64` routines by a test below), far inside
+//!   what GLSL asks (1.20 sets no bound; the GLSL 4.x bounds are 3 ulp for
+//!   `exp`/`log`, `2 + 2|x|` ulp for `pow`).
+//! - The composite functions (`radians`, `degrees`, `inversesqrt`, `fract`,
+//!   `modulo`, `mix`, `smoothstep`) are evaluated exactly as the formulas in
+//!   their doc comments, one rounding per operation.
+//! - Results outside a function's domain (`log(-1)`, `sqrt(-1)`,
+//!   `asin(2)`) are NaN; GLSL leaves them undefined, we make them
+//!   repeatable.
+
+pub mod noise;
+
+pub use noise::{noise1, noise2, noise3, noise4};
+
+/// π rounded to `f32`.
+pub const PI: f32 = core::f32::consts::PI;
+
+/// `radians(d) = d · (π / 180)` (GLSL 1.20 §8.1).
+pub fn radians(degrees: f32) -> f32 {
+    degrees * (PI / 180.0)
+}
+
+/// `degrees(r) = r · (180 / π)` (GLSL 1.20 §8.1).
+pub fn degrees(radians: f32) -> f32 {
+    radians * (180.0 / PI)
+}
+
+pub fn sin(x: f32) -> f32 {
+    libm::sinf(x)
+}
+
+pub fn cos(x: f32) -> f32 {
+    libm::cosf(x)
+}
+
+pub fn tan(x: f32) -> f32 {
+    libm::tanf(x)
+}
+
+/// Arc sine in [-π/2, π/2]; NaN when |x| > 1.
+pub fn asin(x: f32) -> f32 {
+    libm::asinf(x)
+}
+
+/// Arc cosine in [0, π]; NaN when |x| > 1.
+pub fn acos(x: f32) -> f32 {
+    libm::acosf(x)
+}
+
+/// Arc tangent of `y_over_x` in [-π/2, π/2].
+pub fn atan(y_over_x: f32) -> f32 {
+    libm::atanf(y_over_x)
+}
+
+/// `atan(y, x)`: the angle of (x, y) in [-π, π], quadrant from the signs.
+pub fn atan2(y: f32, x: f32) -> f32 {
+    libm::atan2f(y, x)
+}
+
+/// `x` raised to `y` (C `powf` semantics for the special cases).
+pub fn pow(x: f32, y: f32) -> f32 {
+    libm::powf(x, y)
+}
+
+pub fn exp(x: f32) -> f32 {
+    libm::expf(x)
+}
+
+/// Natural logarithm; NaN for x < 0, -inf for 0.
+pub fn log(x: f32) -> f32 {
+    libm::logf(x)
+}
+
+pub fn exp2(x: f32) -> f32 {
+    libm::exp2f(x)
+}
+
+pub fn log2(x: f32) -> f32 {
+    libm::log2f(x)
+}
+
+/// Correctly rounded square root.
+pub fn sqrt(x: f32) -> f32 {
+    libm::sqrtf(x)
+}
+
+/// `1 / sqrt(x)`, two roundings.
+pub fn inversesqrt(x: f32) -> f32 {
+    1.0 / sqrt(x)
+}
+
+pub fn abs(x: f32) -> f32 {
+    libm::fabsf(x)
+}
+
+/// 1.0 if x > 0, -1.0 if x < 0, else 0.0 (also for -0.0 and NaN).
+pub fn sign(x: f32) -> f32 {
+    if x > 0.0 {
+        1.0
+    } else if x < 0.0 {
+        -1.0
+    } else {
+        0.0
+    }
+}
+
+pub fn floor(x: f32) -> f32 {
+    libm::floorf(x)
+}
+
+pub fn ceil(x: f32) -> f32 {
+    libm::ceilf(x)
+}
+
+/// `x - floor(x)`.
+pub fn fract(x: f32) -> f32 {
+    x - floor(x)
+}
+
+/// GLSL `mod`: `x - y * floor(x / y)` (GLSL 1.20 §8.3), unlike C's `fmod`
+/// the result has the sign of `y`.
+pub fn modulo(x: f32, y: f32) -> f32 {
+    x - y * floor(x / y)
+}
+
+/// GLSL `min`: `y` if `y < x`, otherwise `x`.
+pub fn min(x: f32, y: f32) -> f32 {
+    if y < x {
+        y
+    } else {
+        x
+    }
+}
+
+/// GLSL `max`: `y` if `x < y`, otherwise `x`.
+pub fn max(x: f32, y: f32) -> f32 {
+    if x < y {
+        y
+    } else {
+        x
+    }
+}
+
+/// `min(max(x, lo), hi)`.
+pub fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
+    min(max(x, lo), hi)
+}
+
+/// `x · (1 - a) + y · a`.
+pub fn mix(x: f32, y: f32, a: f32) -> f32 {
+    x * (1.0 - a) + y * a
+}
+
+/// 0.0 if `x < edge`, otherwise 1.0.
+pub fn step(edge: f32, x: f32) -> f32 {
+    if x < edge {
+        0.0
+    } else {
+        1.0
+    }
+}
+
+/// `t = clamp((x - e0) / (e1 - e0), 0, 1); t · t · (3 - 2 · t)`.
+pub fn smoothstep(edge0: f32, edge1: f32, x: f32) -> f32 {
+    let t = clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// Dot product, summed left to right.
+pub fn dot(x: &[f32], y: &[f32]) -> f32 {
+    x.iter().zip(y).fold(0.0, |acc, (a, b)| acc + a * b)
+}
+
+/// `sqrt(dot(x, x))`.
+pub fn length(x: &[f32]) -> f32 {
+    sqrt(dot(x, x))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn known_values() {
+        assert_eq!(sin(0.0), 0.0);
+        assert_eq!(cos(0.0), 1.0);
+        assert_eq!(tan(0.0), 0.0);
+        assert_eq!(sqrt(4.0), 2.0);
+        assert_eq!(exp2(3.0), 8.0);
+        assert_eq!(log2(8.0), 3.0);
+        assert_eq!(pow(2.0, 10.0), 1024.0);
+        assert_eq!(atan2(0.0, -1.0), PI);
+        assert_eq!(atan2(1.0, 0.0), PI / 2.0);
+        assert!((sin(PI / 6.0) - 0.5).abs() < 1e-7);
+        assert!((exp(1.0) - core::f32::consts::E).abs() < 1e-6);
+        assert!(log(-1.0).is_nan());
+    }
+
+    /// Distance in ulps between an `f32` result and an exact-ish `f64`.
+    fn ulps(got: f32, want: f64) -> f64 {
+        let w = want as f32;
+        let ulp = (f32::from_bits(w.abs().to_bits() + 1) - w.abs()) as f64;
+        (got as f64 - want).abs() / ulp
+    }
+
+    #[test]
+    fn within_one_ulp_of_double_precision() {
+        type Pair = (fn(f32) -> f32, fn(f64) -> f64, f32, f32);
+        assert_eq!(ulps(1.0 + f32::EPSILON, 1.0), 1.0);
+        let cases: [(&str, Pair); 10] = [
+            ("sin", (sin, libm::sin, -100.0, 100.0)),
+            ("cos", (cos, libm::cos, -100.0, 100.0)),
+            ("tan", (tan, libm::tan, -1.5, 1.5)),
+            ("asin", (asin, libm::asin, -1.0, 1.0)),
+            ("acos", (acos, libm::acos, -1.0, 1.0)),
+            ("atan", (atan, libm::atan, -50.0, 50.0)),
+            ("exp", (exp, libm::exp, -80.0, 80.0)),
+            ("log", (log, libm::log, 1e-30, 1e30)),
+            ("exp2", (exp2, libm::exp2, -120.0, 120.0)),
+            ("log2", (log2, libm::log2, 1e-30, 1e30)),
+        ];
+        for (name, (f, reference, lo, hi)) in cases {
+            let mut worst = 0.0f64;
+            for i in 0..=20_000 {
+                let x = lo + (hi - lo) * (i as f32 / 20_000.0);
+                worst = worst.max(ulps(f(x), reference(x as f64)));
+            }
+            assert!(worst <= 1.0, "{name}: {worst} ulp");
+        }
+        let mut worst = 0.0f64;
+        for i in 0..200 {
+            for j in 0..100 {
+                let (x, y) = (i as f32 * 0.37 + 0.01, j as f32 * 0.11 - 5.0);
+                worst = worst.max(ulps(pow(x, y), libm::pow(x as f64, y as f64)));
+            }
+        }
+        assert!(worst <= 1.0, "pow: {worst} ulp");
+    }
+
+    #[test]
+    fn glsl_definitions() {
+        assert_eq!(modulo(-1.5, 1.0), 0.5);
+        assert_eq!(modulo(1.5, -1.0), -0.5);
+        assert_eq!(fract(-0.25), 0.75);
+        assert_eq!(sign(-0.0), 0.0);
+        assert_eq!(sign(-3.0), -1.0);
+        assert_eq!(step(1.0, 1.0), 1.0);
+        assert_eq!(step(1.0, 0.5), 0.0);
+        assert_eq!(clamp(5.0, 0.0, 1.0), 1.0);
+        assert_eq!(mix(2.0, 4.0, 0.5), 3.0);
+        assert_eq!(smoothstep(0.0, 1.0, 0.5), 0.5);
+        assert_eq!(smoothstep(0.0, 1.0, -1.0), 0.0);
+        assert_eq!(radians(180.0), PI);
+        assert_eq!(dot(&[1.0, 2.0, 3.0], &[4.0, 5.0, 6.0]), 32.0);
+        assert_eq!(length(&[3.0, 4.0]), 5.0);
+    }
+}
