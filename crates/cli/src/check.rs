@@ -11,9 +11,9 @@
 
 use crate::guard::guarded;
 use crate::input::{read_source, stage_from_path, StageGuess};
-use crate::link::{self, Linked};
 use crate::Exit;
-use glsl::{CompileOptions, Diagnostic, Severity, Shader, Stage};
+use glsl::link::{LinkDiagnostic, Program};
+use glsl::{CompileOptions, Diagnostic, Severity, Shader, SourceMap, Stage};
 use serde::Serialize;
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -97,12 +97,12 @@ struct Input {
 pub struct Report {
     pub shaders: Vec<Shader>,
     /// `None` without `--link` or when a shader failed to compile.
-    pub linked: Option<Linked>,
+    pub linked: Option<Program>,
 }
 
 impl Report {
     fn ok(&self) -> bool {
-        self.shaders.iter().all(Shader::ok) && self.linked.as_ref().is_none_or(|l| l.ok)
+        self.shaders.iter().all(Shader::ok) && self.linked.as_ref().is_none_or(Program::ok)
     }
 }
 
@@ -170,7 +170,7 @@ fn check(args: &Args) -> Result<Report, (Exit, String)> {
     let mut linked = None;
     if args.link && shaders.iter().all(Shader::ok) {
         let refs: Vec<&Shader> = shaders.iter().collect();
-        let result = guarded(|| link::link(&refs)).map_err(|p| {
+        let program = guarded(|| glsl::link::link(&refs)).map_err(|p| {
             (
                 Exit::Internal,
                 format!(
@@ -180,10 +180,7 @@ fn check(args: &Args) -> Result<Report, (Exit, String)> {
                 ),
             )
         })?;
-        match result {
-            Ok(l) => linked = Some(l),
-            Err(e) => return Err((Exit::Misuse, format!("--link: {e}"))),
-        }
+        linked = Some(program);
     }
     Ok(Report { shaders, linked })
 }
@@ -267,13 +264,14 @@ fn render_text(report: &Report, link_requested: bool, color: bool) -> String {
     for s in &report.shaders {
         out.push_str(&s.render(color));
     }
-    if let Some(l) = &report.linked {
-        if !l.info_log.is_empty() {
-            out.push_str("program info log:\n");
-            out.push_str(&l.info_log);
-            if !l.info_log.ends_with('\n') {
-                out.push('\n');
-            }
+    if let Some(program) = &report.linked {
+        for d in &program.diagnostics {
+            let source = link_source(report, d);
+            out.push_str(&glsl::diag::render_terminal(
+                std::slice::from_ref(&d.diagnostic),
+                source.map_or(&SourceMap::default(), |s| &s.source),
+                color,
+            ));
         }
     }
     for s in &report.shaders {
@@ -301,12 +299,17 @@ fn render_text(report: &Report, link_requested: bool, color: bool) -> String {
     }
     if link_requested {
         match &report.linked {
-            Some(l) if l.ok => out.push_str("ok: program linked\n"),
+            Some(p) if p.ok() => out.push_str("ok: program linked\n"),
             Some(_) => out.push_str("failed: program did not link\n"),
             None => out.push_str("not linked: a shader failed to compile\n"),
         }
     }
     out
+}
+
+/// The shader object a link diagnostic points into, if any.
+fn link_source<'a>(report: &'a Report, d: &LinkDiagnostic) -> Option<&'a Shader> {
+    d.shader.and_then(|i| report.shaders.get(i))
 }
 
 /// The GL info logs; with several files, each log that is not empty comes
@@ -330,7 +333,7 @@ fn render_infolog(report: &Report) -> String {
         section(&s.source.name, &s.info_log());
     }
     if let Some(l) = &report.linked {
-        section("program", &l.info_log);
+        section("program", l.info_log());
     }
     out
 }
@@ -338,9 +341,9 @@ fn render_infolog(report: &Report) -> String {
 /// One diagnostic in the JSON format.
 #[derive(Serialize)]
 struct JsonDiagnostic<'a> {
-    /// The file, or `null` for a whole-program (link) diagnostic.
+    /// The file, or `null` for a link diagnostic about the whole program.
     file: Option<&'a str>,
-    /// "vertex" or "fragment"; `null` for a link diagnostic.
+    /// "vertex" or "fragment"; `null` with `file`.
     stage: Option<&'static str>,
     severity: Severity,
     code: &'static str,
@@ -373,18 +376,20 @@ fn render_json(report: &Report) -> String {
             });
         }
     }
-    if let Some(l) = &report.linked {
-        for d in &l.diagnostics {
+    if let Some(program) = &report.linked {
+        for d in &program.diagnostics {
+            let shader = link_source(report, d);
+            let loc = shader.and_then(|s| d.diagnostic.resolve(&s.source).loc);
             all.push(JsonDiagnostic {
-                file: None,
-                stage: None,
-                severity: d.severity,
-                code: d.code.as_str(),
-                message: &d.message,
-                line: None,
-                column: None,
-                source_string: None,
-                notes: &d.notes,
+                file: shader.map(|s| s.source.name.as_str()),
+                stage: shader.map(|s| s.stage.name()),
+                severity: d.diagnostic.severity,
+                code: d.diagnostic.code.as_str(),
+                message: &d.diagnostic.message,
+                line: loc.map(|l| l.line),
+                column: loc.map(|l| l.column),
+                source_string: loc.map(|l| l.source),
+                notes: &d.diagnostic.notes,
             });
         }
     }
@@ -441,20 +446,38 @@ mod tests {
     }
 
     #[test]
-    fn json_link_diagnostics_have_no_file() {
+    fn json_link_diagnostics_name_their_shader_object() {
         let report = Report {
-            shaders: vec![],
-            linked: Some(Linked {
-                ok: false,
+            shaders: vec![broken()],
+            linked: Some(Program {
                 info_log: String::from("error: no `main'\n"),
-                diagnostics: vec![Diagnostic::error(Code::LinkNoMain, None, "no `main'")],
+                diagnostics: vec![
+                    LinkDiagnostic {
+                        shader: None,
+                        diagnostic: Diagnostic::error(Code::LinkNoMain, None, "no `main'"),
+                    },
+                    LinkDiagnostic {
+                        shader: Some(0),
+                        diagnostic: Diagnostic::error(
+                            Code::LinkUndefinedFunction,
+                            None,
+                            "`f' undefined",
+                        ),
+                    },
+                ],
+                ..Program::default()
             }),
         };
         let v: serde_json::Value =
             serde_json::from_str(&render(&report, Format::Json, true, false)).unwrap();
-        assert!(v[0]["file"].is_null());
-        assert!(v[0]["line"].is_null());
-        assert_eq!(v[0]["code"], "E0301");
+        assert_eq!(v[0]["code"], "E0201");
+        assert_eq!(v[1]["code"], "E0301");
+        assert!(v[1]["file"].is_null());
+        assert!(v[1]["line"].is_null());
+        assert_eq!(v[2]["code"], "E0303");
+        assert_eq!(v[2]["file"], "bad.frag");
+        assert_eq!(v[2]["stage"], "fragment");
+        assert_eq!(v.as_array().unwrap().len(), 3);
     }
 
     #[test]
@@ -506,10 +529,12 @@ mod tests {
         assert!(!failed_compile.ok());
         let failed_link = Report {
             shaders: vec![],
-            linked: Some(Linked {
-                ok: false,
-                info_log: String::new(),
-                diagnostics: vec![],
+            linked: Some(Program {
+                diagnostics: vec![LinkDiagnostic {
+                    shader: None,
+                    diagnostic: Diagnostic::error(Code::LinkNoMain, None, "no `main'"),
+                }],
+                ..Program::default()
             }),
         };
         assert!(!failed_link.ok());

@@ -28,7 +28,6 @@
 
 use crate::guard::guarded;
 use crate::input::{read_source, stage_from_path, StageGuess};
-use crate::link;
 use glsl::{CompileOptions, Shader, Stage, Version};
 use std::io::Write;
 use std::path::PathBuf;
@@ -217,8 +216,7 @@ fn evaluate(args: &Args) -> Outcome {
     let file = args.file.display().to_string();
     let result = guarded(|| compile_and_link(&text, stage, &file, args.check_link));
     let (ok, log) = match result {
-        Ok(Ok(r)) => r,
-        Ok(Err(unavailable)) => return Outcome::new(Verdict::Fail, unavailable.to_string()),
+        Ok(r) => r,
         Err(panic) => {
             // piglit records a crash only for death by a signal.
             let _ = std::io::stdout().flush();
@@ -234,12 +232,7 @@ fn evaluate(args: &Args) -> Outcome {
 
 /// Compiles the shader and, when asked, links it alone into a program:
 /// whether both succeeded, and the info logs.
-fn compile_and_link(
-    text: &str,
-    stage: Stage,
-    file: &str,
-    check_link: bool,
-) -> Result<(bool, String), link::Unavailable> {
+fn compile_and_link(text: &str, stage: Stage, file: &str, check_link: bool) -> (bool, String) {
     let opts = CompileOptions {
         stage,
         name: file.to_string(),
@@ -247,11 +240,11 @@ fn compile_and_link(
     let shader: Shader = glsl::compile(&[text], &opts);
     let mut log = shader.info_log();
     if !shader.ok() || !check_link {
-        return Ok((shader.ok(), log));
+        return (shader.ok(), log);
     }
-    let linked = link::link(&[&shader])?;
-    log.push_str(&linked.info_log);
-    Ok((linked.ok, log))
+    let program = glsl::link::link(&[&shader]);
+    log.push_str(program.info_log());
+    (program.ok(), log)
 }
 
 /// The verdict and piglit's messages for a compile (and link) result.

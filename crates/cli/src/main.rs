@@ -17,7 +17,6 @@ mod check;
 mod glslparsertest;
 mod guard;
 mod input;
-mod link;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;

@@ -171,6 +171,45 @@ fn check_link_after_compile_failure_does_not_link() {
     );
 }
 
+const UNDEFINED_FUNCTION_VERT: &str =
+    "void f();\nvoid main()\n{\n    f();\n    gl_Position = vec4(0.0);\n}\n";
+
+#[test]
+fn check_link_of_example_pair_exits_0() {
+    let o = shaderbox(&[
+        "check",
+        "--link",
+        &example("impostor.vert"),
+        &example("impostor.frag"),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    assert!(stdout(&o).contains("ok: program linked"), "{}", stdout(&o));
+}
+
+#[test]
+fn check_link_failure_exits_1() {
+    let p = temp_shader("link-fail", "undef.vert", UNDEFINED_FUNCTION_VERT);
+    // It compiles on its own...
+    assert_eq!(shaderbox(&["check", &p]).status.code(), Some(0));
+    // ...but does not link.
+    let o = shaderbox(&["check", "--link", "--color", "never", &p]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    assert!(
+        stdout(&o).contains("failed: program did not link"),
+        "{}",
+        stdout(&o)
+    );
+    let o = shaderbox(&["check", "--link", "--format", "json", &p]);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).expect("valid JSON");
+    let codes: Vec<&str> = v
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| d["code"].as_str().unwrap())
+        .collect();
+    assert!(codes.iter().any(|c| c.starts_with("E03")), "{codes:?}");
+}
+
 // ---- check: formats --------------------------------------------------------
 
 #[test]
@@ -291,6 +330,20 @@ fn parsertest_skips() {
         assert_eq!(piglit_result(&o), "skip", "{args:?}");
         assert_eq!(o.status.code(), Some(0), "{args:?}");
     }
+}
+
+#[test]
+fn parsertest_check_link_counts_link_errors() {
+    let p = temp_shader("pt-link", "undef.vert", UNDEFINED_FUNCTION_VERT);
+    let o = shaderbox(&["glslparsertest", &p, "fail", "1.10"]);
+    assert_eq!(
+        piglit_result(&o),
+        "fail",
+        "compiles, so `fail' is wrong without --check-link"
+    );
+    let o = shaderbox(&["glslparsertest", &p, "fail", "1.10", "--check-link"]);
+    assert_eq!(piglit_result(&o), "pass", "{}", stdout(&o));
+    assert_eq!(o.status.code(), Some(0));
 }
 
 #[test]
