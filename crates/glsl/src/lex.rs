@@ -56,13 +56,10 @@ pub fn lex(text: &str, opts: LexOptions) -> (Vec<PpToken>, Vec<Diagnostic>) {
     while i < bytes.len() {
         let c = bytes[i];
         // Line continuation.
-        if opts.line_continuation && c == b'\\' {
-            let mut j = i + 1;
-            if j < bytes.len() && bytes[j] == b'\r' {
-                j += 1;
-            }
-            if j < bytes.len() && bytes[j] == b'\n' {
-                i = j + 1;
+        if opts.line_continuation {
+            let n = continuation_len(bytes, i);
+            if n > 0 {
+                i += n;
                 continue;
             }
         }
@@ -83,15 +80,15 @@ pub fn lex(text: &str, opts: LexOptions) -> (Vec<PpToken>, Vec<Diagnostic>) {
             }
             b'/' if bytes.get(i + 1) == Some(&b'/') => {
                 // Line comment, up to (not including) the newline.
+                // Continuations are removed before comments are recognized,
+                // so a `\` at the end continues the comment.
                 while i < bytes.len() && bytes[i] != b'\n' {
-                    if opts.line_continuation
-                        && bytes[i] == b'\\'
-                        && bytes.get(i + 1) == Some(&b'\n')
-                    {
-                        i += 2;
-                        continue;
-                    }
-                    i += 1;
+                    let n = if opts.line_continuation {
+                        continuation_len(bytes, i)
+                    } else {
+                        0
+                    };
+                    i += n.max(1);
                 }
                 space = true;
             }
@@ -201,6 +198,18 @@ pub fn lex(text: &str, opts: LexOptions) -> (Vec<PpToken>, Vec<Diagnostic>) {
     (toks, diags)
 }
 
+/// The length of a line continuation (`\` then LF or CR LF) at `i`, or 0.
+fn continuation_len(bytes: &[u8], i: usize) -> usize {
+    if bytes.get(i) != Some(&b'\\') {
+        return 0;
+    }
+    match (bytes.get(i + 1), bytes.get(i + 2)) {
+        (Some(b'\n'), _) => 2,
+        (Some(b'\r'), Some(b'\n')) => 3,
+        _ => 0,
+    }
+}
+
 /// Scans a preprocessing number starting at `i`: digits, letters, `_`, `.`,
 /// and a sign right after an exponent letter `e`/`E` (not in hex numbers).
 fn scan_number(bytes: &[u8], mut i: usize) -> usize {
@@ -262,6 +271,14 @@ mod tests {
         assert_eq!(t.len(), 2);
         let (t, _) = lex("a\\\nb", LexOptions::default());
         assert!(t.iter().any(|t| t.kind == PpKind::Other('\\')));
+        let (t, _) = lex("a // c \\\r\n b\nc", opts);
+        let texts: Vec<_> = t.iter().map(|t| t.text.as_str()).collect();
+        assert_eq!(texts, ["a", "\n", "c"]);
+        let (t, _) = lex("a \\ b \\", opts);
+        assert_eq!(
+            t.iter().filter(|t| t.kind == PpKind::Other('\\')).count(),
+            2
+        );
     }
 
     #[test]

@@ -53,6 +53,9 @@ pub struct CompileOptions {
     pub stage: Stage,
     /// Name shown by the terminal renderer (a file path).
     pub name: String,
+    /// The version of a shader without `#version`; `None` means 1.10, as
+    /// the spec says.
+    pub default_version: Option<Version>,
 }
 
 impl CompileOptions {
@@ -60,6 +63,7 @@ impl CompileOptions {
         CompileOptions {
             stage,
             name: String::from("<shader>"),
+            default_version: None,
         }
     }
 }
@@ -96,7 +100,13 @@ impl Shader {
 /// Compiles one shader object from its source strings.
 pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
     let mut source = SourceMap::from_strings(opts.name.clone(), strings);
-    let pp_out = pp::preprocess(&mut source, &pp::PpOptions { stage: opts.stage });
+    let pp_out = pp::preprocess(
+        &mut source,
+        &pp::PpOptions {
+            stage: opts.stage,
+            default_version: opts.default_version.unwrap_or(Version::V110),
+        },
+    );
     let mut diagnostics = pp_out.diagnostics;
     let version = pp_out.version;
     let pp_failed = diagnostics.iter().any(Diagnostic::is_error);

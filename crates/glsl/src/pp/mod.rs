@@ -1,0 +1,412 @@
+//! The GLSL 1.10/1.20 preprocessor (GLSL 1.20 §3.3).
+//!
+//! [`preprocess`] lexes the shader's text ([`crate::lex`]), runs the
+//! directives line by line, expands macros in the remaining text and turns
+//! the result into parser [`Token`]s, ending with one `Eof`.
+//!
+//! Choices where the specs leave room (each follows piglit and Mesa):
+//! - Line continuation (`\` before a newline) is accepted in both versions,
+//!   although §3.1 says there is none: piglit's 1.10 tests use it in
+//!   `#define`s, and it is removed before comments are recognized.
+//! - `#line N` makes the *next* line number N+1 (§3.3 of both specs; GLSL
+//!   3.30 later changed this to N).
+//! - An identifier left in an `#if` expression after macro expansion is 0
+//!   with a warning (C behavior; §3.3 restricts operands to literals).
+//! - Macro names containing `__` draw a warning ("reserved", but allowed,
+//!   as piglit expects); names starting with `GL_`, `defined` and the
+//!   built-in macros cannot be defined or undefined.
+//! - The `#` and `##` operators do not exist ("There are no number sign
+//!   based operators", §3.3): a `#` in a macro body is an error.
+//! - Integer literals that do not fit 32 bits draw a warning and wrap.
+
+mod directives;
+mod expr;
+mod literal;
+mod macros;
+#[cfg(test)]
+mod tests;
+
+use crate::diag::{Code, Diagnostic};
+use crate::ir::{ExtensionBehavior, Stage};
+use crate::lex::{self, LexOptions, PpKind, PpToken};
+use crate::limits;
+use crate::source::{SourceMap, Span};
+use crate::token::{classify, Punct, Token, TokenKind, Version, WordClass};
+use literal::{parse_number, Literal};
+use macros::{Budget, Expander, MacroTable, PTok};
+
+pub struct PpOptions {
+    pub stage: Stage,
+    /// The version of a shader without `#version` (GLSL says 1.10;
+    /// `shaderbox check --glsl-version` can choose another).
+    pub default_version: Version,
+}
+
+impl PpOptions {
+    pub fn new(stage: Stage) -> PpOptions {
+        PpOptions {
+            stage,
+            default_version: Version::V110,
+        }
+    }
+}
+
+/// An `#extension name : behavior` directive.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExtensionDirective {
+    pub name: String,
+    pub behavior: ExtensionBehavior,
+    pub span: Span,
+}
+
+pub struct PpOutput {
+    /// Parser tokens, ending with one `Eof` token.
+    pub tokens: Vec<Token>,
+    pub version: Version,
+    /// Every well-formed `#extension` directive in source order, supported
+    /// or not (the name `all` included); unsupported ones were warned about.
+    pub extensions: Vec<ExtensionDirective>,
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// Extensions this implementation supports (each also gets a macro of the
+/// same name with value 1). None yet.
+pub const SUPPORTED_EXTENSIONS: &[&str] = &[];
+
+/// Preprocesses the text of `map`, recording `#line` directives in it.
+/// Never fails: problems are diagnostics, and the token list always ends
+/// with `Eof`.
+pub fn preprocess(map: &mut SourceMap, opts: &PpOptions) -> PpOutput {
+    preprocess_with_limit(map, opts, limits::MAX_TOKENS)
+}
+
+/// [`preprocess`] with a different token limit (tests use small ones).
+pub(crate) fn preprocess_with_limit(
+    map: &mut SourceMap,
+    opts: &PpOptions,
+    max_tokens: usize,
+) -> PpOutput {
+    let lex_opts = LexOptions {
+        line_continuation: true,
+    };
+    let (toks, lex_diags) = lex::lex(map.text(), lex_opts);
+    let end = map.text().len() as u32;
+    let mut pp = Preprocessor::new(map, opts.stage, max_tokens);
+    pp.version = opts.default_version;
+    pp.diags.extend(lex_diags);
+    for line in split_lines(toks, end) {
+        pp.line(line);
+    }
+    pp.finish(end)
+}
+
+/// One logical line: its tokens (without the newline) and the offset of the
+/// newline that ends it (or of the end of the text).
+pub(crate) struct Line {
+    pub toks: Vec<PpToken>,
+    pub end: u32,
+}
+
+fn split_lines(toks: Vec<PpToken>, text_end: u32) -> Vec<Line> {
+    let mut lines = Vec::new();
+    let mut cur = Vec::new();
+    for t in toks {
+        if t.kind == PpKind::Newline {
+            lines.push(Line {
+                toks: std::mem::take(&mut cur),
+                end: t.span.start,
+            });
+        } else {
+            cur.push(t);
+        }
+    }
+    lines.push(Line {
+        toks: cur,
+        end: text_end,
+    });
+    lines
+}
+
+/// One level of `#if` nesting.
+#[derive(Clone, Debug)]
+pub(crate) struct Cond {
+    /// The `#if`/`#ifdef`/`#ifndef` that opened it.
+    pub span: Span,
+    /// The enclosing region is being compiled.
+    pub parent_active: bool,
+    /// The current branch is being compiled.
+    pub active: bool,
+    /// Some branch has been taken (later `#elif`/`#else` are skipped).
+    pub taken: bool,
+    /// `#else` seen (span), after which only `#endif` may follow.
+    pub else_seen: Option<Span>,
+}
+
+/// Tracks braces in the output to know whether a function body is open
+/// (`#pragma optimize`/`debug` are allowed only outside them, §3.3).
+#[derive(Debug, Default)]
+struct Braces {
+    depth: u32,
+    in_function: bool,
+    prev_rparen: bool,
+}
+
+impl Braces {
+    fn update(&mut self, kind: &TokenKind) {
+        match kind {
+            TokenKind::Punct(Punct::LeftBrace) => {
+                if self.depth == 0 {
+                    self.in_function = self.prev_rparen;
+                }
+                self.depth = self.depth.saturating_add(1);
+            }
+            TokenKind::Punct(Punct::RightBrace) => {
+                self.depth = self.depth.saturating_sub(1);
+                if self.depth == 0 {
+                    self.in_function = false;
+                }
+            }
+            _ => {}
+        }
+        self.prev_rparen = *kind == TokenKind::Punct(Punct::RightParen);
+    }
+}
+
+pub(crate) struct Preprocessor<'m> {
+    map: &'m mut SourceMap,
+    #[allow(dead_code)]
+    stage: Stage,
+    version: Version,
+    /// The first `#version` directive.
+    version_span: Option<Span>,
+    /// Something other than comments and whitespace has been seen.
+    seen_content: bool,
+    macros: MacroTable,
+    conds: Vec<Cond>,
+    /// Text tokens waiting for macro expansion (flushed at each directive).
+    pending: Vec<PTok>,
+    out: Vec<Token>,
+    braces: Braces,
+    extensions: Vec<ExtensionDirective>,
+    diags: Vec<Diagnostic>,
+    budget: Budget,
+    max_tokens: usize,
+    /// The output token limit was hit (reported once).
+    overflowed: bool,
+}
+
+impl<'m> Preprocessor<'m> {
+    fn new(map: &'m mut SourceMap, stage: Stage, max_tokens: usize) -> Self {
+        let mut macros = MacroTable::new();
+        for ext in SUPPORTED_EXTENSIONS {
+            macros.insert(
+                (*ext).into(),
+                macros::Macro {
+                    params: None,
+                    body: vec![PpToken {
+                        kind: PpKind::Number,
+                        text: "1".into(),
+                        span: Span::default(),
+                        space_before: true,
+                    }],
+                    name_span: Span::default(),
+                },
+            );
+        }
+        Preprocessor {
+            map,
+            stage,
+            version: Version::V110,
+            version_span: None,
+            seen_content: false,
+            macros,
+            conds: Vec::new(),
+            pending: Vec::new(),
+            out: Vec::new(),
+            braces: Braces::default(),
+            extensions: Vec::new(),
+            diags: Vec::new(),
+            budget: Budget::new(max_tokens),
+            max_tokens,
+            overflowed: false,
+        }
+    }
+
+    /// Whether text here is compiled (not in a skipped conditional branch).
+    fn active(&self) -> bool {
+        self.conds.last().is_none_or(|c| c.active)
+    }
+
+    fn line(&mut self, line: Line) {
+        if line.toks.is_empty() {
+            return;
+        }
+        if line.toks[0].kind == PpKind::Hash {
+            self.flush();
+            self.directive(&line);
+        } else if self.active() {
+            self.pending.extend(line.toks.into_iter().map(PTok::from));
+        }
+        self.seen_content = true;
+    }
+
+    /// An expander over the current macro table.
+    fn expander(&mut self, in_condition: bool) -> Expander<'_> {
+        Expander {
+            in_condition,
+            macros: &self.macros,
+            map: &*self.map,
+            version: self.version.number(),
+            diags: &mut self.diags,
+            budget: &mut self.budget,
+        }
+    }
+
+    /// Expands the pending text and converts it to parser tokens.
+    fn flush(&mut self) {
+        if self.pending.is_empty() {
+            return;
+        }
+        let pending = std::mem::take(&mut self.pending);
+        let expanded = self.expander(false).expand(pending);
+        for t in expanded {
+            self.emit(t);
+        }
+    }
+
+    fn emit(&mut self, t: PTok) {
+        let Some(kind) = self.convert(&t) else {
+            return;
+        };
+        if self.out.len() >= self.max_tokens {
+            if !self.overflowed {
+                self.overflowed = true;
+                self.diags.push(Diagnostic::error(
+                    Code::PpMacro,
+                    t.span,
+                    format!(
+                        "the shader has too many tokens after preprocessing (the limit is {})",
+                        self.max_tokens
+                    ),
+                ));
+            }
+            return;
+        }
+        self.braces.update(&kind);
+        self.out.push(Token { kind, span: t.span });
+    }
+
+    /// A preprocessing token to a parser token kind (`None` after an error).
+    fn convert(&mut self, t: &PTok) -> Option<TokenKind> {
+        match &t.kind {
+            PpKind::Ident => Some(match classify(&t.text, self.version) {
+                WordClass::Keyword(k) => TokenKind::Keyword(k),
+                WordClass::Reserved => TokenKind::Reserved(t.text.clone()),
+                WordClass::Identifier => TokenKind::Identifier(t.text.clone()),
+            }),
+            PpKind::Number => self.convert_number(t),
+            PpKind::Punct(p) => Some(TokenKind::Punct(*p)),
+            PpKind::Hash | PpKind::HashHash => {
+                self.diags.push(
+                    Diagnostic::error(
+                        Code::PpSyntax,
+                        t.span,
+                        format!("unexpected `{}' outside a preprocessor directive", t.text),
+                    )
+                    .with_note(
+                        "a directive's `#' must be the first thing on its line, and GLSL has \
+                         no `#'/`##' operators (§3.3)",
+                    ),
+                );
+                None
+            }
+            PpKind::Other(c) => {
+                let mut d = Diagnostic::error(
+                    Code::LexInvalidChar,
+                    t.span,
+                    format!("invalid character `{c}'"),
+                );
+                if *c == '"' || *c == '\'' {
+                    d = d.with_note("GLSL has no string or character literals");
+                }
+                self.diags.push(d);
+                None
+            }
+            PpKind::Newline => None,
+        }
+    }
+
+    fn convert_number(&mut self, t: &PTok) -> Option<TokenKind> {
+        match parse_number(&t.text) {
+            Ok(Literal::Int { value, fits_u64 }) => {
+                if !fits_u64 || value > u64::from(u32::MAX) {
+                    self.diags.push(Diagnostic::warning(
+                        Code::LexBadNumber,
+                        t.span,
+                        format!(
+                            "integer literal `{}' does not fit in 32 bits; it is truncated to {}",
+                            t.text, value as u32 as i32
+                        ),
+                    ));
+                }
+                Some(TokenKind::IntLiteral(value as u32))
+            }
+            Ok(Literal::Float { value, suffix }) => {
+                if suffix && self.version < Version::V120 {
+                    self.diags.push(
+                        Diagnostic::error(
+                            Code::LexBadNumber,
+                            t.span,
+                            format!(
+                                "floating-point suffix in `{}' is not allowed in GLSL 1.10",
+                                t.text
+                            ),
+                        )
+                        .with_note("the `f'/`F' suffix needs `#version 120' (GLSL 1.20 §4.1.4)"),
+                    );
+                    return None;
+                }
+                if value.is_infinite() {
+                    self.diags.push(Diagnostic::warning(
+                        Code::LexBadNumber,
+                        t.span,
+                        format!(
+                            "floating-point literal `{}' is too large; it becomes infinity",
+                            t.text
+                        ),
+                    ));
+                }
+                Some(TokenKind::FloatLiteral(value))
+            }
+            Err(msg) => {
+                self.diags
+                    .push(Diagnostic::error(Code::LexBadNumber, t.span, msg));
+                None
+            }
+        }
+    }
+
+    fn finish(mut self, end: u32) -> PpOutput {
+        self.flush();
+        for c in std::mem::take(&mut self.conds).iter().rev() {
+            self.diags.push(
+                Diagnostic::error(
+                    Code::PpConditional,
+                    c.span,
+                    "unterminated conditional directive",
+                )
+                .with_note("add a matching `#endif'"),
+            );
+        }
+        self.out.push(Token {
+            kind: TokenKind::Eof,
+            span: Span::new(end, end),
+        });
+        PpOutput {
+            tokens: self.out,
+            version: self.version,
+            extensions: self.extensions,
+            diagnostics: self.diags,
+        }
+    }
+}

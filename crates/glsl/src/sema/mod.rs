@@ -1,0 +1,482 @@
+//! Semantic analysis: the syntax tree of one shader to the typed IR.
+//!
+//! One pass over the [`TranslationUnit`] in source order, as the GLSL
+//! specifications define visibility (a name is usable from the end of its
+//! declarator on). The result obeys the contract at the top of
+//! [`crate::ir`]. Errors recover: an expression that fails gets
+//! [`Type::ERROR`], and nothing that involves an error type is reported
+//! again, so one mistake gives one diagnostic.
+//!
+//! The built-ins (GLSL 1.20 §7, §8) are GLSL text from
+//! [`crate::builtins::prelude`], analyzed once per (version, stage) in a
+//! privileged mode and cached in a [`BuiltinEnv`]; a user shader sees them
+//! in a scope outside its global scope (§4.2.6).
+//!
+//! Submodules: [`scope`] (symbol tables), [`types`] (type specifiers,
+//! structs, array sizes), [`decl`] (variable declarations and qualifiers),
+//! [`func`] (functions, calls, overloads), [`expr`] (expressions),
+//! [`stmt`] (statements).
+
+mod decl;
+mod expr;
+mod func;
+mod scope;
+mod stmt;
+mod types;
+
+use crate::ast::TranslationUnit;
+use crate::builtins::BuiltinFn;
+use crate::diag::{Code, Diagnostic};
+use crate::ir::{
+    self, ConstScalar, ConstValue, FunctionId, GlobalId, LocalId, Module, ParamQualifier, Stage,
+};
+use crate::pp::ExtensionDirective;
+use crate::source::{SourceMap, Span};
+use crate::token::Version;
+use crate::types::{Base, StructDef, Type};
+use scope::{FnRef, Scopes, Symbol, Var};
+use smol_str::SmolStr;
+use std::collections::HashMap;
+use std::sync::OnceLock;
+
+/// What the analysis needs to know about the shader besides its text.
+pub struct Context {
+    pub version: Version,
+    pub stage: Stage,
+    pub extensions: Vec<ExtensionDirective>,
+}
+
+/// Analyzes one shader. The module is complete only when no error was
+/// reported; with errors it is a best effort (error types inside).
+pub fn analyze(tu: &TranslationUnit, ctx: &Context) -> (Module, Vec<Diagnostic>) {
+    let env = builtin_env(ctx.version, ctx.stage);
+    let mut a = Analyzer::new(ctx.version, ctx.stage, Some(env));
+    a.module.extensions = ctx
+        .extensions
+        .iter()
+        .map(|e| (e.name.clone(), e.behavior))
+        .collect();
+    a.translation_unit(tu);
+    a.finish()
+}
+
+/// A built-in function signature.
+#[derive(Clone, Debug)]
+pub(crate) struct BuiltinSig {
+    pub function: BuiltinFn,
+    pub params: Vec<(Type, ParamQualifier)>,
+    pub ret: Type,
+}
+
+/// The analyzed built-ins of one (version, stage).
+#[derive(Debug)]
+pub(crate) struct BuiltinEnv {
+    pub structs: Vec<StructDef>,
+    pub globals: Vec<ir::Global>,
+    pub functions: Vec<BuiltinSig>,
+    pub names: HashMap<SmolStr, Symbol>,
+    /// Problems found in the prelude itself (a bug in the tables); kept so a
+    /// test can check there are none.
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl BuiltinEnv {
+    pub fn lookup(&self, name: &str) -> Option<&Symbol> {
+        self.names.get(name)
+    }
+}
+
+/// The cached built-in environment of a version and stage.
+pub(crate) fn builtin_env(version: Version, stage: Stage) -> &'static BuiltinEnv {
+    static CACHE: [OnceLock<BuiltinEnv>; 4] = [
+        OnceLock::new(),
+        OnceLock::new(),
+        OnceLock::new(),
+        OnceLock::new(),
+    ];
+    let i = match (version, stage) {
+        (Version::V110, Stage::Vertex) => 0,
+        (Version::V110, Stage::Fragment) => 1,
+        (Version::V120, Stage::Vertex) => 2,
+        (Version::V120, Stage::Fragment) => 3,
+    };
+    CACHE[i].get_or_init(|| build_env(version, stage))
+}
+
+/// Parses and analyzes the prelude text in built-in mode.
+fn build_env(version: Version, stage: Stage) -> BuiltinEnv {
+    let text = crate::builtins::prelude(version, stage);
+    let mut map = SourceMap::new("<built-ins>", text);
+    let pp = crate::pp::preprocess(&mut map, &crate::pp::PpOptions { stage });
+    let (tu, parse_diags) = crate::parse::parse(&pp.tokens, version);
+    let mut a = Analyzer::new(version, stage, None);
+    a.builtin_mode = true;
+    a.translation_unit(&tu);
+    let mut diagnostics = pp.diagnostics;
+    diagnostics.extend(parse_diags);
+    diagnostics.append(&mut a.diags);
+    let module = std::mem::replace(
+        &mut a.module,
+        Module {
+            version,
+            stage,
+            structs: Vec::new(),
+            globals: Vec::new(),
+            functions: Vec::new(),
+            extensions: Vec::new(),
+        },
+    );
+    // Prototypes without bodies become built-in functions.
+    let mut fn_map: HashMap<u32, u32> = HashMap::new();
+    let mut functions = Vec::new();
+    for (i, f) in module.functions.iter().enumerate() {
+        let Some(function) = BuiltinFn::from_name(&f.name) else {
+            diagnostics.push(Diagnostic::error(
+                Code::Internal,
+                f.span,
+                format!("built-in `{}' has no BuiltinFn", f.name),
+            ));
+            continue;
+        };
+        fn_map.insert(i as u32, functions.len() as u32);
+        functions.push(BuiltinSig {
+            function,
+            params: f.params.iter().map(|p| (p.ty, p.qualifier)).collect(),
+            ret: f.return_type,
+        });
+    }
+    let mut names = HashMap::new();
+    for (name, sym) in a.scopes.into_global() {
+        let sym = match sym {
+            Symbol::Var(Var::Global(g)) => Symbol::Var(Var::Builtin(g.0)),
+            Symbol::Funcs(v) => Symbol::Funcs(
+                v.into_iter()
+                    .filter_map(|f| match f {
+                        FnRef::User(id) => fn_map.get(&id.0).map(|&b| FnRef::Builtin(b)),
+                        other => Some(other),
+                    })
+                    .collect(),
+            ),
+            other => other,
+        };
+        names.insert(name, sym);
+    }
+    let mut globals = module.globals;
+    for g in &mut globals {
+        g.builtin = true;
+        g.read = false;
+        g.written = false;
+    }
+    BuiltinEnv {
+        structs: module.structs,
+        globals,
+        functions,
+        names,
+        diagnostics,
+    }
+}
+
+/// Per-function analysis state.
+pub(crate) struct FnState {
+    pub id: FunctionId,
+    pub ret: Type,
+    pub locals: Vec<ir::Local>,
+    /// Values of `const` locals.
+    pub consts: Vec<Option<ConstValue>>,
+    /// Largest constant index + 1 used on each local unsized array.
+    pub implicit: Vec<u32>,
+    pub loop_depth: u32,
+}
+
+/// Bookkeeping per module function.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct FnInfo {
+    pub defined: bool,
+    pub callees: Vec<FunctionId>,
+    /// Where the call graph edges were made (parallel to `callees`).
+    pub call_spans: Vec<Span>,
+}
+
+pub(crate) struct Analyzer {
+    pub version: Version,
+    pub stage: Stage,
+    /// Analyzing the prelude: `gl_` names and built-in-only forms allowed.
+    pub builtin_mode: bool,
+    pub env: Option<&'static BuiltinEnv>,
+    pub module: Module,
+    pub diags: Vec<Diagnostic>,
+    pub scopes: Scopes,
+    /// Module global of each built-in global, once referenced.
+    pub builtin_globals: Vec<Option<GlobalId>>,
+    pub fns: Vec<FnInfo>,
+    pub cur: Option<FnState>,
+    pub frag_color_write: Option<Span>,
+    pub frag_data_write: Option<Span>,
+    /// Expression nesting depth (bounded by `limits::MAX_NESTING_DEPTH`).
+    pub depth: u32,
+}
+
+impl Analyzer {
+    pub fn new(version: Version, stage: Stage, env: Option<&'static BuiltinEnv>) -> Analyzer {
+        let structs = env.map(|e| e.structs.clone()).unwrap_or_default();
+        Analyzer {
+            version,
+            stage,
+            builtin_mode: false,
+            env,
+            module: Module {
+                version,
+                stage,
+                structs,
+                globals: Vec::new(),
+                functions: Vec::new(),
+                extensions: Vec::new(),
+            },
+            diags: Vec::new(),
+            scopes: Scopes::new(),
+            builtin_globals: vec![None; env.map_or(0, |e| e.globals.len())],
+            fns: Vec::new(),
+            cur: None,
+            frag_color_write: None,
+            frag_data_write: None,
+            depth: 0,
+        }
+    }
+
+    pub fn translation_unit(&mut self, tu: &TranslationUnit) {
+        for item in &tu.items {
+            match item {
+                crate::ast::ExternalDecl::Declaration(d) => {
+                    self.declaration(d);
+                }
+                crate::ast::ExternalDecl::FunctionDef(f) => self.function_def(f),
+            }
+        }
+    }
+
+    pub fn finish(mut self) -> (Module, Vec<Diagnostic>) {
+        self.check_recursion();
+        if let (Some(c), Some(d)) = (self.frag_color_write, self.frag_data_write) {
+            let at = c.max_by_start(d);
+            self.diags.push(
+                Diagnostic::error(
+                    Code::TypeMismatch,
+                    at,
+                    "a shader may write `gl_FragColor' or `gl_FragData', not both",
+                )
+                .with_label(c.min_by_start(d), "the other one is written here")
+                .with_note("GLSL 1.10 §7.2: write all outputs through `gl_FragData[i]' or only `gl_FragColor'"),
+            );
+        }
+        (self.module, self.diags)
+    }
+
+    // ----- diagnostics -----------------------------------------------------
+
+    pub fn error(&mut self, code: Code, span: Span, msg: impl Into<String>) -> &mut Diagnostic {
+        self.diags.push(Diagnostic::error(code, span, msg));
+        let last = self.diags.len() - 1;
+        &mut self.diags[last]
+    }
+
+    pub fn push(&mut self, d: Diagnostic) {
+        self.diags.push(d);
+    }
+
+    /// A type as GLSL spells it.
+    pub fn tn(&self, ty: Type) -> String {
+        self.module.type_name(ty)
+    }
+
+    // ----- variables ------------------------------------------------------
+
+    /// The module global for a variable reference, materializing built-ins.
+    pub fn global_of(&mut self, v: Var) -> Option<GlobalId> {
+        match v {
+            Var::Global(g) => Some(g),
+            Var::Local(_) => None,
+            Var::Builtin(i) => {
+                if let Some(Some(g)) = self.builtin_globals.get(i as usize) {
+                    return Some(*g);
+                }
+                let g = self.env?.globals.get(i as usize)?.clone();
+                let id = GlobalId(self.module.globals.len() as u32);
+                self.module.globals.push(g);
+                if let Some(slot) = self.builtin_globals.get_mut(i as usize) {
+                    *slot = Some(id);
+                }
+                Some(id)
+            }
+        }
+    }
+
+    /// Declared type of a variable.
+    pub fn var_type(&self, v: Var) -> Type {
+        match v {
+            Var::Global(g) => self
+                .module
+                .globals
+                .get(g.0 as usize)
+                .map_or(Type::ERROR, |g| g.ty),
+            Var::Local(l) => self
+                .cur
+                .as_ref()
+                .and_then(|f| f.locals.get(l.0 as usize))
+                .map_or(Type::ERROR, |l| l.ty),
+            Var::Builtin(i) => match self.builtin_globals.get(i as usize).copied().flatten() {
+                // Materialized (possibly resized, `gl_TexCoord[n]`).
+                Some(g) => self
+                    .module
+                    .globals
+                    .get(g.0 as usize)
+                    .map_or(Type::ERROR, |g| g.ty),
+                None => self
+                    .env
+                    .and_then(|e| e.globals.get(i as usize))
+                    .map_or(Type::ERROR, |g| g.ty),
+            },
+        }
+    }
+
+    /// The constant value of a `const` variable, if it has one.
+    pub fn var_const(&self, v: Var) -> Option<ConstValue> {
+        match v {
+            Var::Global(g) => {
+                let g = self.module.globals.get(g.0 as usize)?;
+                (g.storage == ir::Storage::Const)
+                    .then(|| g.init.clone())
+                    .flatten()
+            }
+            Var::Local(l) => self.cur.as_ref()?.consts.get(l.0 as usize)?.clone(),
+            Var::Builtin(i) => {
+                let g = self.env?.globals.get(i as usize)?;
+                (g.storage == ir::Storage::Const)
+                    .then(|| g.init.clone())
+                    .flatten()
+            }
+        }
+    }
+
+    /// Adds a local to the current function.
+    pub fn new_local(&mut self, name: &str, ty: Type, is_const: bool, span: Span) -> LocalId {
+        let Some(f) = self.cur.as_mut() else {
+            return LocalId(0);
+        };
+        let id = LocalId(f.locals.len() as u32);
+        f.locals.push(ir::Local {
+            name: name.to_string(),
+            ty,
+            is_const,
+            span,
+        });
+        f.consts.push(None);
+        f.implicit.push(0);
+        id
+    }
+
+    /// Every name visible from here, sorted (for "did you mean").
+    pub fn visible_names(&self) -> Vec<String> {
+        let mut v: Vec<String> = self.scopes.names().map(|s| s.to_string()).collect();
+        if let Some(env) = self.env {
+            v.extend(env.names.keys().map(|s| s.to_string()));
+        }
+        v.sort();
+        v.dedup();
+        v
+    }
+
+    /// Looks a name up in the user scopes, then among the built-ins.
+    pub fn lookup(&self, name: &str) -> Option<Symbol> {
+        if let Some(s) = self.scopes.lookup(name) {
+            return Some(s.clone());
+        }
+        self.env.and_then(|e| e.lookup(name)).cloned()
+    }
+
+    /// Where a built-in is declared in other versions or stages, for notes
+    /// on an undeclared name.
+    pub fn availability_note(&self, name: &str) -> Option<(Code, String)> {
+        if self.builtin_mode || !name.starts_with(|c: char| c.is_ascii_alphabetic()) {
+            return None;
+        }
+        let other = match self.stage {
+            Stage::Vertex => Stage::Fragment,
+            Stage::Fragment => Stage::Vertex,
+        };
+        if self.version == Version::V110
+            && builtin_env(Version::V120, self.stage)
+                .lookup(name)
+                .is_some()
+        {
+            return Some((
+                Code::VersionTooLow,
+                format!("`{name}' requires GLSL 1.20 (add `#version 120' as the first line)"),
+            ));
+        }
+        if builtin_env(self.version, other).lookup(name).is_some()
+            || builtin_env(Version::V120, other).lookup(name).is_some()
+        {
+            return Some((
+                Code::StageMismatch,
+                format!("`{name}' is only available in {} shaders", other.name()),
+            ));
+        }
+        None
+    }
+}
+
+/// Helpers on spans used for ordering two related locations.
+trait SpanOrder {
+    fn max_by_start(self, other: Span) -> Span;
+    fn min_by_start(self, other: Span) -> Span;
+}
+
+impl SpanOrder for Span {
+    fn max_by_start(self, other: Span) -> Span {
+        if other.start > self.start {
+            other
+        } else {
+            self
+        }
+    }
+    fn min_by_start(self, other: Span) -> Span {
+        if other.start > self.start {
+            self
+        } else {
+            other
+        }
+    }
+}
+
+/// A constant's single int value.
+pub(crate) fn const_int(c: &ConstValue) -> Option<i32> {
+    match (c.ty.base, c.ty.array, c.components.as_slice()) {
+        (Base::Scalar(_), None, [ConstScalar::Int(i)]) => Some(*i),
+        _ => None,
+    }
+}
+
+/// An expression of the error type, for recovery.
+pub(crate) fn error_expr(span: Span) -> ir::Expr {
+    ir::Expr {
+        kind: ir::ExprKind::Const(ConstValue {
+            ty: Type::ERROR,
+            components: Vec::new(),
+        }),
+        ty: Type::ERROR,
+        span,
+    }
+}
+
+/// A constant expression.
+pub(crate) fn const_expr(value: ConstValue, span: Span) -> ir::Expr {
+    ir::Expr {
+        ty: value.ty,
+        kind: ir::ExprKind::Const(value),
+        span,
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,378 @@
+//! Unit tests of the analyzer, through [`crate::compile`].
+
+use crate::diag::Code;
+use crate::ir::Stage;
+use crate::{compile, CompileOptions, Shader};
+
+fn frag(src: &str) -> Shader {
+    compile(&[src], &CompileOptions::new(Stage::Fragment))
+}
+
+fn vert(src: &str) -> Shader {
+    compile(&[src], &CompileOptions::new(Stage::Vertex))
+}
+
+fn codes(s: &Shader) -> Vec<Code> {
+    s.diagnostics
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| d.code)
+        .collect()
+}
+
+#[track_caller]
+fn ok(s: Shader) {
+    assert!(s.ok(), "expected success:\n{}", s.info_log());
+}
+
+#[track_caller]
+fn fails(s: Shader, code: Code) {
+    assert!(!s.ok(), "expected failure");
+    assert_eq!(codes(&s), vec![code], "{}", s.info_log());
+}
+
+#[test]
+fn builtin_envs_are_clean() {
+    use crate::token::Version;
+    for v in [Version::V110, Version::V120] {
+        for st in [Stage::Vertex, Stage::Fragment] {
+            let env = super::builtin_env(v, st);
+            assert!(
+                env.diagnostics.is_empty(),
+                "{v:?} {st:?}: {:?}",
+                env.diagnostics
+            );
+            assert!(env.functions.len() > 100);
+            assert!(env.lookup("gl_MaxLights").is_some());
+        }
+    }
+}
+
+#[test]
+fn minimal_shaders() {
+    ok(frag("void main() { gl_FragColor = vec4(1.0); }"));
+    ok(vert("void main() { gl_Position = ftransform(); }"));
+}
+
+#[test]
+fn no_implicit_conversion_in_110() {
+    let s = frag("void main() { float f = 1; gl_FragColor = vec4(f); }");
+    fails(s, Code::TypeMismatch);
+    let s = frag("void main() { float f = 1; gl_FragColor = vec4(f); }");
+    assert!(s.diagnostics[0]
+        .message
+        .contains("GLSL 1.10 has no implicit conversions"));
+    ok(frag(
+        "#version 120\nvoid main() { float f = 1; gl_FragColor = vec4(f); }",
+    ));
+}
+
+#[test]
+fn undeclared_with_suggestion() {
+    let s = frag("void main() { vec4 color = vec4(1.0); gl_FragColor = colour; }");
+    fails(s, Code::Undeclared);
+    let s = frag("void main() { vec4 color = vec4(1.0); gl_FragColor = colour; }");
+    assert_eq!(
+        s.diagnostics[0].notes,
+        vec!["did you mean `color'?".to_string()]
+    );
+}
+
+#[test]
+fn builtin_from_newer_version() {
+    let s =
+        vert("void main() { mat2 m = transpose(mat2(1.0)); gl_Position = vec4(m[0], 0.0, 1.0); }");
+    fails(s, Code::VersionTooLow);
+}
+
+#[test]
+fn one_error_per_mistake() {
+    let s = frag("void main() { gl_FragColor = vec4(nope + 1.0) * 2.0 + vec4(nope2); }");
+    assert_eq!(
+        codes(&s),
+        vec![Code::Undeclared, Code::Undeclared],
+        "{}",
+        s.info_log()
+    );
+}
+
+#[test]
+fn operators() {
+    ok(frag("void main() { mat3 m = mat3(1.0); vec3 v = m * vec3(1.0); v = v * m; gl_FragColor = vec4(v, 1.0); }"));
+    fails(
+        frag("void main() { vec3 v = vec3(1.0) * vec2(1.0); }"),
+        Code::TypeMismatch,
+    );
+    fails(frag("void main() { int i = 5 % 2; }"), Code::ReservedWord);
+    fails(
+        frag("void main() { bool b = vec2(1.0) < vec2(2.0); }"),
+        Code::TypeMismatch,
+    );
+    fails(frag("void main() { bool b = !1; }"), Code::TypeMismatch);
+    ok(frag(
+        "void main() { bool b = true ^^ false; if (b) discard; }",
+    ));
+}
+
+#[test]
+fn lvalues() {
+    fails(
+        frag("uniform float u; void main() { u = 1.0; }"),
+        Code::ReadOnly,
+    );
+    fails(
+        frag("varying vec4 v; void main() { v = vec4(1.0); }"),
+        Code::ReadOnly,
+    );
+    ok(vert(
+        "varying vec4 v; void main() { v = vec4(1.0); gl_Position = v; }",
+    ));
+    fails(
+        frag("void main() { vec4 v; v.xx = vec2(1.0); }"),
+        Code::NotAnLvalue,
+    );
+    fails(
+        frag("void main() { const float c = 1.0; c = 2.0; }"),
+        Code::ReadOnly,
+    );
+    fails(
+        frag("void f(out float x) { x = 1.0; } void main() { f(1.0); }"),
+        Code::NotAnLvalue,
+    );
+}
+
+#[test]
+fn constructors() {
+    ok(frag(
+        "void main() { vec4 v = vec4(vec2(1.0), 1.0, 1.0); mat2 m = mat2(v); gl_FragColor = v; }",
+    ));
+    fails(
+        frag("void main() { vec3 v = vec3(1.0, 2.0, 3.0, 4.0); }"),
+        Code::BadConstructor,
+    );
+    fails(
+        frag("void main() { vec3 v = vec3(vec2(1.0)); }"),
+        Code::BadConstructor,
+    );
+    fails(
+        frag("void main() { mat3 m = mat3(mat2(1.0)); }"),
+        Code::VersionTooLow,
+    );
+    ok(frag(
+        "#version 120\nvoid main() { mat3 m = mat3(mat2(1.0)); float a[2] = float[](1, 2); }",
+    ));
+    fails(
+        frag("struct S { float f; }; void main() { S s = S(1); }"),
+        Code::TypeMismatch,
+    );
+}
+
+#[test]
+fn indexing_and_arrays() {
+    fails(
+        frag("void main() { float a[2]; a[2] = 1.0; }"),
+        Code::IndexOutOfRange,
+    );
+    fails(
+        frag("void main() { vec4 v; v[-1] = 1.0; }"),
+        Code::IndexOutOfRange,
+    );
+    ok(frag("#version 120\nvoid main() { float a[3]; float b[a.length()]; gl_FragColor = vec4(b.length()); }"));
+    fails(frag("void main() { float a[0]; }"), Code::BadArraySize);
+    ok(frag(
+        "uniform float a[]; void main() { gl_FragColor = vec4(a[3]); }",
+    ));
+    fails(
+        frag("uniform float a[]; uniform int i; void main() { gl_FragColor = vec4(a[i]); }"),
+        Code::BadArraySize,
+    );
+}
+
+#[test]
+fn functions() {
+    ok(frag(
+        "float f(float x); void main() { gl_FragColor = vec4(f(1.0)); }",
+    ));
+    fails(
+        frag("float f(float x) { return x; } int f(float x) { return 1; } void main() {}"),
+        Code::Redeclared,
+    );
+    fails(
+        frag("float f(float x) { return f(x); } void main() { f(1.0); }"),
+        Code::BadControlFlow,
+    );
+    fails(
+        frag("void f() { return 1.0; } void main() {}"),
+        Code::BadReturn,
+    );
+    fails(
+        frag("float f() { return; } void main() {}"),
+        Code::BadReturn,
+    );
+    fails(frag("int main() { return 0; }"), Code::TypeMismatch);
+    fails(vert("void main() { discard; }"), Code::StageMismatch);
+    fails(frag("void main() { break; }"), Code::BadControlFlow);
+}
+
+#[test]
+fn overloads() {
+    let s = frag("#version 120\nvoid f(float a, int b) {} void f(int a, float b) {} void main() { f(1, 1); }");
+    fails(s, Code::AmbiguousOverload);
+    let s = frag("void f(float a) {} void main() { f(vec2(1.0)); }");
+    fails(s, Code::NoMatchingOverload);
+    let s = frag("void f(float a) {} void main() { f(vec2(1.0)); }");
+    assert!(
+        s.diagnostics[0]
+            .notes
+            .iter()
+            .any(|n| n.contains("void f(float)")),
+        "{:?}",
+        s.diagnostics
+    );
+}
+
+#[test]
+fn user_function_hides_builtin() {
+    let s = frag("float sin(int x) { return 1.0; } void main() { gl_FragColor = vec4(sin(1.0)); }");
+    fails(s, Code::NoMatchingOverload);
+}
+
+#[test]
+fn loops_and_scopes() {
+    ok(frag(
+        "void main() { for (int i = 0; i < 4; i++) { gl_FragColor = vec4(float(i)); } }",
+    ));
+    ok(frag(
+        "void main() { int i = 0; while (i < 3) i++; do { i--; } while (i > 0); }",
+    ));
+    fails(
+        frag("void main() { do { int k = 1; } while (k > 0); }"),
+        Code::Undeclared,
+    );
+    fails(frag("void main() { int x; int x; }"), Code::Redeclared);
+    fails(
+        frag("void f(float a) { float a; } void main() {}"),
+        Code::Redeclared,
+    );
+    fails(
+        frag("void main() { if (1.0) discard; }"),
+        Code::TypeMismatch,
+    );
+}
+
+#[test]
+fn loop_lowering() {
+    let s = frag("void main() { for (int i = 0; i < 4; i++) {} }");
+    let m = s.module.expect("compiles");
+    let main = &m.functions[m.main().expect("main").0 as usize];
+    let body = main.body.as_ref().expect("body");
+    match &body[0] {
+        crate::ir::Stmt::Block(b) => {
+            assert!(matches!(b[0], crate::ir::Stmt::Declare { .. }));
+            match &b[1] {
+                crate::ir::Stmt::Loop {
+                    body, continuing, ..
+                } => {
+                    assert!(matches!(body[0], crate::ir::Stmt::If { .. }));
+                    assert_eq!(continuing.len(), 1);
+                }
+                other => panic!("{other:?}"),
+            }
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn declarations() {
+    fails(
+        frag("attribute vec4 a; void main() {}"),
+        Code::StageMismatch,
+    );
+    fails(
+        vert("attribute vec4 a[2]; void main() {}"),
+        Code::TypeMismatch,
+    );
+    fails(vert("varying bool b; void main() {}"), Code::TypeMismatch);
+    fails(frag("sampler2D s; void main() {}"), Code::BadQualifier);
+    fails(frag("void main() { uniform float u; }"), Code::BadQualifier);
+    fails(frag("float gl_foo; void main() {}"), Code::Redeclared);
+    fails(frag("const float c; void main() {}"), Code::NotConstant);
+    fails(
+        frag("uniform float u = 1.0; void main() {}"),
+        Code::VersionTooLow,
+    );
+    ok(frag("#version 120\nuniform float u = 1.0; void main() {}"));
+    ok(frag(
+        "varying vec4 gl_TexCoord[2]; void main() { gl_FragColor = gl_TexCoord[1]; }",
+    ));
+    fails(
+        frag("void main() { gl_FragColor = gl_TexCoord[gl_MaxTextureCoords]; }"),
+        Code::IndexOutOfRange,
+    );
+    ok(frag(
+        "uniform vec4 u; vec4 g = u * 2.0; void main() { gl_FragColor = g; }",
+    ));
+}
+
+#[test]
+fn frag_color_and_data() {
+    let s = frag("void main() { gl_FragColor = vec4(1.0); gl_FragData[0] = vec4(1.0); }");
+    assert!(!s.ok());
+}
+
+#[test]
+fn const_folding_of_sizes() {
+    ok(frag(
+        "const int n = 2 * 3; float a[n]; void main() { gl_FragColor = vec4(a[5]); }",
+    ));
+    fails(
+        frag("uniform int n; float a[n]; void main() {}"),
+        Code::NotConstant,
+    );
+}
+
+/// Runs the piglit compiler tests listed in /tmp/glslparser_list.txt
+/// (`cargo test -p shaderbox-glsl piglit -- --ignored --nocapture`).
+#[test]
+#[ignore]
+fn piglit() {
+    let root = "/tmp/piglit/usr/lib/x86_64-linux-gnu/piglit/";
+    let Ok(list) = std::fs::read_to_string("/tmp/glslparser_list.txt") else {
+        return;
+    };
+    let (mut pass, mut total, mut link_only) = (0, 0, 0);
+    let mut bad = Vec::new();
+    for line in list.lines() {
+        let Some((_, cmd)) = line.split_once('\t') else {
+            continue;
+        };
+        let parts: Vec<&str> = cmd.split('\'').skip(1).step_by(2).collect();
+        let (Some(file), Some(expect)) = (parts.get(1), parts.get(2)) else {
+            continue;
+        };
+        if parts.contains(&"--check-link") {
+            link_only += 1;
+        }
+        let Ok(src) = std::fs::read_to_string(format!("{root}{file}")) else {
+            continue;
+        };
+        let stage = if file.ends_with(".vert") {
+            Stage::Vertex
+        } else {
+            Stage::Fragment
+        };
+        let sh = compile(&[&src], &CompileOptions::new(stage));
+        total += 1;
+        if sh.ok() == (*expect == "pass") {
+            pass += 1;
+        } else {
+            let first = sh.info_log().lines().next().unwrap_or("").to_string();
+            bad.push(format!("{expect} {file}: {first}"));
+        }
+    }
+    for b in &bad {
+        println!("{b}");
+    }
+    println!("piglit: {pass}/{total} ({link_only} use --check-link)");
+}

@@ -1,0 +1,320 @@
+//! Type specifiers, struct declarations and array sizes.
+
+use super::scope::Symbol;
+use super::{const_int, Analyzer};
+use crate::ast::{ArraySpec, StructSpecifier, TypeName, TypeSpecifier};
+use crate::diag::{did_you_mean, Code};
+use crate::limits::MAX_ARRAY_SIZE;
+use crate::token::{Keyword, Version};
+use crate::types::{ArraySize, Base, SamplerKind, Scalar, StructDef, StructId, StructMember, Type};
+
+/// The type a built-in type keyword names.
+pub(crate) fn keyword_type(k: Keyword) -> Option<Type> {
+    use Keyword as K;
+    use Scalar::*;
+    Some(match k {
+        K::Void => Type::VOID,
+        K::Float => Type::FLOAT,
+        K::Int => Type::INT,
+        K::Bool => Type::BOOL,
+        K::Vec2 => Type::vec(Float, 2),
+        K::Vec3 => Type::vec(Float, 3),
+        K::Vec4 => Type::vec(Float, 4),
+        K::Ivec2 => Type::vec(Int, 2),
+        K::Ivec3 => Type::vec(Int, 3),
+        K::Ivec4 => Type::vec(Int, 4),
+        K::Bvec2 => Type::vec(Bool, 2),
+        K::Bvec3 => Type::vec(Bool, 3),
+        K::Bvec4 => Type::vec(Bool, 4),
+        K::Mat2 | K::Mat2x2 => Type::mat(2, 2),
+        K::Mat3 | K::Mat3x3 => Type::mat(3, 3),
+        K::Mat4 | K::Mat4x4 => Type::mat(4, 4),
+        K::Mat2x3 => Type::mat(2, 3),
+        K::Mat2x4 => Type::mat(2, 4),
+        K::Mat3x2 => Type::mat(3, 2),
+        K::Mat3x4 => Type::mat(3, 4),
+        K::Mat4x2 => Type::mat(4, 2),
+        K::Mat4x3 => Type::mat(4, 3),
+        K::Sampler1D => Type::new(Base::Sampler(SamplerKind::Sampler1D)),
+        K::Sampler2D => Type::new(Base::Sampler(SamplerKind::Sampler2D)),
+        K::Sampler3D => Type::new(Base::Sampler(SamplerKind::Sampler3D)),
+        K::SamplerCube => Type::new(Base::Sampler(SamplerKind::SamplerCube)),
+        K::Sampler1DShadow => Type::new(Base::Sampler(SamplerKind::Sampler1DShadow)),
+        K::Sampler2DShadow => Type::new(Base::Sampler(SamplerKind::Sampler2DShadow)),
+        _ => return None,
+    })
+}
+
+impl Analyzer {
+    /// Resolves a type specifier, declaring an in-place struct. Reports and
+    /// returns the error type for unknown names.
+    pub fn resolve_type(&mut self, ts: &TypeSpecifier) -> Type {
+        let base = match &ts.name {
+            TypeName::Builtin(k) => match keyword_type(*k) {
+                Some(t) => t,
+                None => {
+                    self.error(
+                        Code::Syntax,
+                        ts.span,
+                        format!("`{}' is not a type", k.as_str()),
+                    );
+                    return Type::ERROR;
+                }
+            },
+            TypeName::Named(id) => match self.lookup(&id.name) {
+                Some(Symbol::Struct(s)) => Type::new(Base::Struct(s)),
+                Some(_) => {
+                    self.error(
+                        Code::Undeclared,
+                        id.span,
+                        format!("`{}' is not a type", id.name),
+                    )
+                    .notes
+                    .push("only struct names and the built-in type keywords name types".into());
+                    return Type::ERROR;
+                }
+                None => {
+                    let names = self.struct_names();
+                    let d = self.error(
+                        Code::Undeclared,
+                        id.span,
+                        format!("type `{}' undeclared", id.name),
+                    );
+                    if let Some(s) = did_you_mean(&id.name, names.iter().map(|s| s.as_str())) {
+                        d.notes.push(format!("did you mean `{s}'?"));
+                    }
+                    return Type::ERROR;
+                }
+            },
+            TypeName::Struct(s) => Type::new(Base::Struct(self.declare_struct(s))),
+        };
+        match &ts.array {
+            None => base,
+            Some(spec) => {
+                if self.version < Version::V120 {
+                    self.error(
+                        Code::VersionTooLow,
+                        spec.span,
+                        "array type syntax (`float[3] x') requires GLSL 1.20",
+                    )
+                    .notes
+                    .push(
+                        "put the size after the name (`float x[3]'), or add `#version 120'".into(),
+                    );
+                }
+                if base.is_error() {
+                    return base;
+                }
+                let size = self.array_size(spec);
+                base.array_of(size)
+            }
+        }
+    }
+
+    fn struct_names(&self) -> Vec<String> {
+        let mut v: Vec<String> = self
+            .visible_names()
+            .into_iter()
+            .filter(|n| matches!(self.lookup(n), Some(Symbol::Struct(_))))
+            .collect();
+        v.extend(["float", "int", "bool", "vec4", "mat4"].map(String::from));
+        v
+    }
+
+    /// Applies a declarator's `[size]` to a type; arrays of arrays are
+    /// errors in GLSL 1.10/1.20.
+    pub fn apply_array(&mut self, ty: Type, spec: Option<&ArraySpec>) -> Type {
+        let Some(spec) = spec else { return ty };
+        if ty.is_error() {
+            let _ = self.array_size(spec);
+            return ty;
+        }
+        if ty.is_array() {
+            self.error(
+                Code::BadArraySize,
+                spec.span,
+                "arrays of arrays are not allowed in GLSL 1.10/1.20",
+            );
+            return Type::ERROR;
+        }
+        let size = self.array_size(spec);
+        ty.array_of(size)
+    }
+
+    /// The size of `[expr]`: a constant integer expression greater than zero
+    /// (GLSL 1.20 §4.1.9). `[]` is unsized. Recovers with size 1.
+    pub fn array_size(&mut self, spec: &ArraySpec) -> ArraySize {
+        let Some(e) = &spec.size else {
+            return ArraySize::Unsized;
+        };
+        let v = self.rvalue(e);
+        if v.ty.is_error() {
+            return ArraySize::Sized(1);
+        }
+        if v.ty != Type::INT {
+            self.error(
+                Code::BadArraySize,
+                e.span,
+                format!(
+                    "array size must be an int constant expression, found {}",
+                    self.tn(v.ty)
+                ),
+            );
+            return ArraySize::Sized(1);
+        }
+        let Some(n) = (match &v.kind {
+            crate::ir::ExprKind::Const(c) => const_int(c),
+            _ => None,
+        }) else {
+            self.error(
+                Code::NotConstant,
+                e.span,
+                "array size is not a constant expression",
+            )
+            .notes
+            .push("use literals, `const' variables and built-in functions of constants".into());
+            return ArraySize::Sized(1);
+        };
+        if n <= 0 {
+            self.error(
+                Code::BadArraySize,
+                e.span,
+                format!("array size must be greater than zero, found {n}"),
+            );
+            return ArraySize::Sized(1);
+        }
+        if n as u32 > MAX_ARRAY_SIZE {
+            self.error(
+                Code::BadArraySize,
+                e.span,
+                format!("array size {n} is larger than the supported maximum {MAX_ARRAY_SIZE}"),
+            );
+            return ArraySize::Sized(1);
+        }
+        ArraySize::Sized(n as u32)
+    }
+
+    /// Declares a struct type (GLSL 1.20 §4.1.8) in the current scope.
+    pub fn declare_struct(&mut self, s: &StructSpecifier) -> StructId {
+        let mut members: Vec<StructMember> = Vec::new();
+        for m in &s.members {
+            if let Some(q) = m.qualifiers.first() {
+                self.error(
+                    Code::BadQualifier,
+                    q.span,
+                    format!(
+                        "struct members cannot have qualifiers, found `{}'",
+                        q.qualifier.as_str()
+                    ),
+                );
+            }
+            if let TypeName::Struct(inner) = &m.ty.name {
+                if !self.builtin_mode {
+                    self.error(
+                        Code::BadQualifier,
+                        inner.span,
+                        "struct definitions cannot be nested inside a struct",
+                    )
+                    .notes
+                    .push("declare the inner struct first, then use its name".into());
+                }
+            }
+            let ty = self.resolve_type(&m.ty);
+            for d in &m.declarators {
+                let mty = self.apply_array(ty, d.array.as_ref());
+                if mty.base == Base::Void {
+                    self.error(
+                        Code::TypeMismatch,
+                        d.name.span,
+                        format!("struct member `{}' cannot be void", d.name.name),
+                    );
+                }
+                if mty.array == Some(ArraySize::Unsized) {
+                    self.error(
+                        Code::BadArraySize,
+                        d.span,
+                        format!("struct member `{}' must have an array size", d.name.name),
+                    );
+                }
+                self.check_reserved_name(&d.name.name, d.name.span);
+                if members.iter().any(|x| x.name == d.name.name.as_str()) {
+                    self.error(
+                        Code::Redeclared,
+                        d.name.span,
+                        format!("struct member `{}' declared twice", d.name.name),
+                    );
+                    continue;
+                }
+                members.push(StructMember {
+                    name: d.name.name.to_string(),
+                    ty: mty,
+                });
+            }
+        }
+        let id = StructId(self.module.structs.len() as u32);
+        let name = s
+            .name
+            .as_ref()
+            .map_or_else(|| "<anonymous>".to_string(), |n| n.name.to_string());
+        self.module.structs.push(StructDef {
+            name,
+            members,
+            builtin: self.builtin_mode,
+        });
+        if let Some(n) = &s.name {
+            self.check_reserved_name(&n.name, n.span);
+            if self.scopes.lookup_current(&n.name).is_some() {
+                self.error(
+                    Code::Redeclared,
+                    n.span,
+                    format!("`{}' is already declared in this scope", n.name),
+                );
+            } else {
+                self.scopes.insert(n.name.clone(), Symbol::Struct(id));
+            }
+        }
+        id
+    }
+
+    /// True when the type is or contains a sampler (uniform-only types).
+    pub fn contains_sampler(&self, ty: Type) -> bool {
+        self.contains(ty, &|t| t.is_sampler(), 0)
+    }
+
+    /// True when the type is or contains an array (no `==`/`=` in 1.10).
+    pub fn contains_array(&self, ty: Type) -> bool {
+        self.contains(ty, &|t| t.is_array(), 0)
+    }
+
+    fn contains(&self, ty: Type, pred: &dyn Fn(Type) -> bool, depth: u32) -> bool {
+        if pred(ty) {
+            return true;
+        }
+        if depth > 64 {
+            return false;
+        }
+        match ty.base {
+            Base::Struct(id) => self.module.structs.get(id.0 as usize).is_some_and(|s| {
+                s.members
+                    .iter()
+                    .any(|m| self.contains(m.ty, pred, depth + 1))
+            }),
+            _ => false,
+        }
+    }
+
+    /// User names may not start with `gl_` (GLSL 1.20 §3.7).
+    pub fn check_reserved_name(&mut self, name: &str, span: crate::source::Span) -> bool {
+        if !self.builtin_mode && name.starts_with("gl_") {
+            self.error(
+                Code::Redeclared,
+                span,
+                format!("`{name}': names starting with `gl_' are reserved for the implementation"),
+            )
+            .notes
+            .push("rename it".into());
+            return false;
+        }
+        true
+    }
+}

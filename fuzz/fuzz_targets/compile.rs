@@ -1,0 +1,26 @@
+//! Fuzzes the whole front end: preprocessor, parser, analyzer, validator,
+//! and the linker on the result. The first byte picks the stage; the rest is
+//! the shader text (lossily decoded, as GL would receive arbitrary bytes).
+//! Any panic, hang or out-of-memory is a bug.
+#![no_main]
+
+use glsl::{compile, link::link, CompileOptions, Stage};
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|data: &[u8]| {
+    let Some((&first, rest)) = data.split_first() else {
+        return;
+    };
+    let stage = if first & 1 == 0 {
+        Stage::Vertex
+    } else {
+        Stage::Fragment
+    };
+    let text = String::from_utf8_lossy(rest);
+    let shader = compile(&[&text], &CompileOptions::new(stage));
+    let _ = shader.info_log();
+    let _ = shader.render(false);
+    if shader.ok() {
+        let _ = link(&[&shader]);
+    }
+});
