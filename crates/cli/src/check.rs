@@ -13,7 +13,7 @@ use crate::guard::guarded;
 use crate::input::{read_source, stage_from_path, StageGuess};
 use crate::Exit;
 use glsl::link::{LinkDiagnostic, Program};
-use glsl::{CompileOptions, Diagnostic, Severity, Shader, SourceMap, Stage};
+use glsl::{CompileOptions, Diagnostic, Severity, Shader, SourceMap, Stage, Version};
 use serde::Serialize;
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -55,6 +55,15 @@ pub enum GlslVersion {
     V110,
     #[value(name = "120")]
     V120,
+}
+
+impl From<GlslVersion> for Version {
+    fn from(v: GlslVersion) -> Version {
+        match v {
+            GlslVersion::V110 => Version::V110,
+            GlslVersion::V120 => Version::V120,
+        }
+    }
 }
 
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -133,27 +142,14 @@ pub fn run(args: &Args) -> Exit {
 /// Reads, compiles and links; an `Err` is the exit status and a message
 /// for stderr.
 fn check(args: &Args) -> Result<Report, (Exit, String)> {
-    if args.glsl_version == Some(GlslVersion::V120) {
-        // LEAD: `CompileOptions` has no field for the version of shaders
-        // without `#version` (GLSL says it is 1.10), so only 110 can be
-        // honoured. Add e.g. `CompileOptions::default_version` and pass it
-        // here.
-        return Err((
-            Exit::Misuse,
-            String::from(
-                "--glsl-version 120 is not supported yet: the compiler library has no option \
-                 for the version of shaders without `#version' (they compile as 1.10); \
-                 add `#version 120' to the shader instead",
-            ),
-        ));
-    }
     let inputs = read_inputs(args)?;
     let mut shaders = Vec::with_capacity(inputs.len());
     for input in &inputs {
         let name = input.path.display().to_string();
         let opts = CompileOptions {
-            stage: input.stage,
             name: name.clone(),
+            default_version: args.glsl_version.map(Version::from),
+            ..CompileOptions::new(input.stage)
         };
         let shader = guarded(|| glsl::compile(&[input.text.as_str()], &opts)).map_err(|p| {
             (
@@ -402,7 +398,7 @@ fn render_json(report: &Report) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glsl::{Code, SourceMap, Span, Version};
+    use glsl::{Code, SourceMap, Span};
 
     /// A shader as the compiler would return it, built by hand so the
     /// renderers can be tested on their own.

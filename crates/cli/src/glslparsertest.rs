@@ -234,8 +234,8 @@ fn evaluate(args: &Args) -> Outcome {
 /// whether both succeeded, and the info logs.
 fn compile_and_link(text: &str, stage: Stage, file: &str, check_link: bool) -> (bool, String) {
     let opts = CompileOptions {
-        stage,
         name: file.to_string(),
+        ..CompileOptions::new(stage)
     };
     let shader: Shader = glsl::compile(&[text], &opts);
     let mut log = shader.info_log();

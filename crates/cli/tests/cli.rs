@@ -153,6 +153,32 @@ fn check_glsl_version_110_is_the_default() {
 }
 
 #[test]
+fn check_glsl_version_120_applies_without_version_directive() {
+    // GLSL 1.20 converts int to float implicitly (§4.1.10); 1.10 does not.
+    let p = temp_shader(
+        "version120",
+        "conv.frag",
+        "void main()\n{\n    float x = 1;\n    gl_FragColor = vec4(x);\n}\n",
+    );
+    assert_eq!(shaderbox(&["check", &p]).status.code(), Some(1));
+    let o = shaderbox(&["check", "--glsl-version", "120", &p]);
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    assert!(stdout(&o).contains("GLSL 1.20"), "{}", stdout(&o));
+    // An explicit #version wins over the option.
+    let q = temp_shader(
+        "version120",
+        "explicit.frag",
+        "#version 110\nvoid main()\n{\n    float x = 1;\n    gl_FragColor = vec4(x);\n}\n",
+    );
+    assert_eq!(
+        shaderbox(&["check", "--glsl-version", "120", &q])
+            .status
+            .code(),
+        Some(1)
+    );
+}
+
+#[test]
 fn check_link_after_compile_failure_does_not_link() {
     let bad = temp_shader("link", "bad.frag", UNDECLARED_FRAG);
     let o = shaderbox(&[
