@@ -170,13 +170,10 @@ pub fn lex(text: &str, opts: LexOptions) -> (Vec<PpToken>, Vec<Diagnostic>) {
             _ => {
                 let start = i;
                 let rest = &text[i..];
-                if let Some(p) = Punct::ALL_LONGEST_FIRST
-                    .iter()
-                    .find(|p| rest.starts_with(p.as_str()))
-                {
+                if let Some(p) = punct_at(rest.as_bytes()) {
                     i += p.as_str().len();
                     toks.push(PpToken {
-                        kind: PpKind::Punct(*p),
+                        kind: PpKind::Punct(p),
                         text: SmolStr::new_static(p.as_str()),
                         span: Span::new(start as u32, i as u32),
                         space_before: space,
@@ -208,6 +205,63 @@ fn continuation_len(bytes: &[u8], i: usize) -> usize {
         (Some(b'\r'), Some(b'\n')) => 3,
         _ => 0,
     }
+}
+
+/// The longest punctuator at the start of `b` (maximal munch), decided on
+/// the first bytes rather than by trying every punctuator in turn.
+fn punct_at(b: &[u8]) -> Option<Punct> {
+    use Punct::*;
+    let c0 = *b.first()?;
+    let c1 = b.get(1).copied().unwrap_or(0);
+    let c2 = b.get(2).copied().unwrap_or(0);
+    Some(match (c0, c1) {
+        (b'<', b'<') if c2 == b'=' => ShlEq,
+        (b'>', b'>') if c2 == b'=' => ShrEq,
+        (b'<', b'<') => Shl,
+        (b'>', b'>') => Shr,
+        (b'<', b'=') => LessEq,
+        (b'>', b'=') => GreaterEq,
+        (b'=', b'=') => EqEq,
+        (b'!', b'=') => NotEq,
+        (b'&', b'&') => AmpAmp,
+        (b'^', b'^') => CaretCaret,
+        (b'|', b'|') => PipePipe,
+        (b'+', b'=') => PlusEq,
+        (b'-', b'=') => MinusEq,
+        (b'*', b'=') => StarEq,
+        (b'/', b'=') => SlashEq,
+        (b'%', b'=') => PercentEq,
+        (b'&', b'=') => AmpEq,
+        (b'^', b'=') => CaretEq,
+        (b'|', b'=') => PipeEq,
+        (b'+', b'+') => PlusPlus,
+        (b'-', b'-') => MinusMinus,
+        (b'(', _) => LeftParen,
+        (b')', _) => RightParen,
+        (b'[', _) => LeftBracket,
+        (b']', _) => RightBracket,
+        (b'{', _) => LeftBrace,
+        (b'}', _) => RightBrace,
+        (b'.', _) => Dot,
+        (b',', _) => Comma,
+        (b':', _) => Colon,
+        (b';', _) => Semicolon,
+        (b'?', _) => Question,
+        (b'+', _) => Plus,
+        (b'-', _) => Minus,
+        (b'*', _) => Star,
+        (b'/', _) => Slash,
+        (b'%', _) => Percent,
+        (b'!', _) => Bang,
+        (b'~', _) => Tilde,
+        (b'<', _) => Less,
+        (b'>', _) => Greater,
+        (b'&', _) => Amp,
+        (b'^', _) => Caret,
+        (b'|', _) => Pipe,
+        (b'=', _) => Equal,
+        _ => return None,
+    })
 }
 
 /// Scans a preprocessing number starting at `i`: digits, letters, `_`, `.`,
@@ -279,6 +333,23 @@ mod tests {
             t.iter().filter(|t| t.kind == PpKind::Other('\\')).count(),
             2
         );
+    }
+
+    #[test]
+    fn punctuators_agree_with_the_table() {
+        // Every punctuator, alone and followed by each other one, lexes as
+        // maximal munch over the table would.
+        for p in Punct::ALL_LONGEST_FIRST {
+            assert_eq!(punct_at(p.as_str().as_bytes()), Some(*p), "{}", p.as_str());
+            for q in Punct::ALL_LONGEST_FIRST {
+                let s = format!("{}{}", p.as_str(), q.as_str());
+                let want = Punct::ALL_LONGEST_FIRST
+                    .iter()
+                    .find(|x| s.starts_with(x.as_str()))
+                    .copied();
+                assert_eq!(punct_at(s.as_bytes()), want, "{s}");
+            }
+        }
     }
 
     #[test]

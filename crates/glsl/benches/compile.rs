@@ -1,0 +1,38 @@
+//! Compile+link time of the seed talk's sphere-impostor program (the pair
+//! in `tests/seeds/000-sphere.{vert,frag}`), the figure compared with Mesa's
+//! in `docs/PERFORMANCE.md` (`bench/mesa_compile.py` times Mesa on the same
+//! files).
+//!
+//!     cargo bench -p shaderbox-glsl --bench compile
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use glsl::{compile, link::link, CompileOptions, Stage, Version};
+use std::hint::black_box;
+
+fn seed(name: &str) -> String {
+    let path = format!("{}/tests/seeds/{name}", env!("CARGO_MANIFEST_DIR"));
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
+fn sphere_program(c: &mut Criterion) {
+    let vs = seed("000-sphere.vert");
+    let fs = seed("000-sphere.frag");
+    let opts = |stage| {
+        let mut o = CompileOptions::new(stage);
+        o.default_version = Some(Version::V120);
+        o
+    };
+    let (vo, fo) = (opts(Stage::Vertex), opts(Stage::Fragment));
+    // Warm the per-version built-in tables, as a running application has.
+    assert!(link(&[&compile(&[&vs], &vo), &compile(&[&fs], &fo)]).ok());
+    c.bench_function("compile+link sphere impostor", |b| {
+        b.iter(|| {
+            let v = compile(&[black_box(&vs)], &vo);
+            let f = compile(&[black_box(&fs)], &fo);
+            black_box(link(&[&v, &f]))
+        })
+    });
+}
+
+criterion_group!(benches, sphere_program);
+criterion_main!(benches);
