@@ -53,12 +53,11 @@ apt_update_once() {
 ensure_tools() {
     local missing=()
     command -v dpkg-deb >/dev/null 2>&1 || die "dpkg-deb not found: this script needs a Debian-based system"
-    [ -x /usr/bin/python3 ] || missing+=(python3)
-    if [ -x /usr/bin/python3 ] && ! /usr/bin/python3 -c 'import mako' 2>/dev/null; then
-        missing+=(python3-mako)
-    fi
-    if [ -x /usr/bin/python3 ] && ! /usr/bin/python3 -c 'import six' 2>/dev/null; then
-        missing+=(python3-six)
+    if [ ! -x /usr/bin/python3 ]; then
+        missing+=(python3 python3-mako python3-six)
+    else
+        /usr/bin/python3 -c 'import mako' 2>/dev/null || missing+=(python3-mako)
+        /usr/bin/python3 -c 'import six' 2>/dev/null || missing+=(python3-six)
     fi
     if [ "${#missing[@]}" -gt 0 ]; then
         # The framework imports mako (for HTML summaries) at start-up and six

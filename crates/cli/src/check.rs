@@ -120,7 +120,17 @@ pub fn run(args: &Args) -> Exit {
     match check(args) {
         Ok(report) => {
             let color = use_color(args.color);
-            let out = render(&report, args.format, args.link, color);
+            let out = match guarded(|| render(&report, args.format, args.link, color)) {
+                Ok(out) => out,
+                Err(p) => {
+                    eprintln!(
+                        "shaderbox: internal error while rendering diagnostics: {}\nThis is a \
+                         bug in shaderbox; please report it with the shaders.",
+                        p.message
+                    );
+                    return Exit::Internal;
+                }
+            };
             let mut stdout = std::io::stdout().lock();
             // A closed pipe (`shaderbox check ... | head`) is not an error
             // worth reporting; the exit status still says what happened.
