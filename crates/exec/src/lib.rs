@@ -1,0 +1,1 @@
+//! Lane-parallel execution of GLSL programs (being written; see docs/ARCHITECTURE.md).

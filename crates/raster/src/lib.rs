@@ -1,0 +1,1 @@
+//! The GL 2.1 primitive pipeline (being written; see docs/ARCHITECTURE.md).
