@@ -275,7 +275,7 @@ pub(crate) fn run<H: Hook>(
             Op::Jump { target } => pc = target as usize,
             Op::LoopIter => {
                 iterations += 1;
-                if iterations > LOOP_BUDGET {
+                if iterations > k.loop_budget {
                     return Err(ExecError::LoopBudget { iterations });
                 }
             }

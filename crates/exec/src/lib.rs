@@ -193,6 +193,7 @@ pub struct Kernel {
     interface: Interface,
     inputs: Vec<(usize, u32, glsl::types::Scalar)>,
     outputs: Vec<(u32, usize, glsl::types::Scalar)>,
+    loop_budget: u64,
 }
 
 impl Kernel {
@@ -206,7 +207,14 @@ impl Kernel {
             interface: l.interface,
             inputs: l.inputs,
             outputs: l.outputs,
+            loop_budget: LOOP_BUDGET,
         })
+    }
+
+    /// Sets the loop iteration budget of each `run` (default
+    /// [`LOOP_BUDGET`]).
+    pub fn set_loop_budget(&mut self, iterations: u64) {
+        self.loop_budget = iterations;
     }
 
     pub fn stage(&self) -> glsl::Stage {

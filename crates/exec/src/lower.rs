@@ -110,7 +110,14 @@ struct Lowerer<'m> {
 }
 
 pub(crate) fn lower(stage: &LinkedStage) -> R<Lowered> {
-    let m = &stage.module;
+    let owned;
+    let m = match with_ftransform_inputs(&stage.module) {
+        Some(patched) => {
+            owned = patched;
+            &owned
+        }
+        None => &stage.module,
+    };
     let mut l = Lowerer {
         m,
         stage: stage.stage,
@@ -192,6 +199,45 @@ pub(crate) fn lower(stage: &LinkedStage) -> R<Lowered> {
     l.frames.pop();
     l.ctx.pop();
     l.finish()
+}
+
+/// `ftransform()` reads `gl_ModelViewProjectionMatrix` and `gl_Vertex`,
+/// which the analyzer only declares in a module that names them: a copy of
+/// the module with the missing ones added (unread, so they enter the
+/// interface only if `ftransform` is lowered).
+fn with_ftransform_inputs(m: &Module) -> Option<Module> {
+    if m.stage != Stage::Vertex {
+        return None;
+    }
+    let wanted = [
+        ("gl_ModelViewProjectionMatrix", Type::mat(4, 4), Storage::Uniform),
+        ("gl_Vertex", Type::vec(Scalar::Float, 4), Storage::Attribute),
+    ];
+    let missing: Vec<_> = wanted
+        .iter()
+        .filter(|(n, ..)| !m.globals.iter().any(|g| g.name == *n))
+        .collect();
+    if missing.is_empty() {
+        return None;
+    }
+    let mut out = m.clone();
+    for &&(name, ty, storage) in &missing {
+        out.globals.push(glsl::ir::Global {
+            name: name.to_string(),
+            ty,
+            storage,
+            builtin: true,
+            invariant: false,
+            centroid: false,
+            init: None,
+            init_expr: None,
+            read: false,
+            written: false,
+            implicit_size: 0,
+            span: Span::default(),
+        });
+    }
+    Some(out)
 }
 
 fn const_bits(c: ConstScalar) -> u32 {

@@ -1,0 +1,1 @@
+//! Placeholder for the piglit harness (written next).
