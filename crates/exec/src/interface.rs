@@ -163,8 +163,11 @@ fn push_kinds(ty: Type, structs: &[StructDef], out: &mut Vec<Scalar>, depth: u32
             Base::Void | Base::Error => {}
             Base::Sampler(_) => out.push(Scalar::Int),
             Base::Scalar(s) => out.push(s),
-            Base::Vector(s, n) => out.extend(std::iter::repeat(s).take(n as usize)),
-            Base::Matrix { cols, rows } => out.extend(std::iter::repeat(Scalar::Float).take(cols as usize * rows as usize)),
+            Base::Vector(s, n) => out.extend(std::iter::repeat_n(s, n as usize)),
+            Base::Matrix { cols, rows } => out.extend(std::iter::repeat_n(
+                Scalar::Float,
+                cols as usize * rows as usize,
+            )),
             Base::Struct(id) => {
                 if let Some(def) = structs.get(id.0 as usize) {
                     for m in &def.members {

@@ -11,11 +11,7 @@ use glsl::types::Scalar;
 pub const LOOP_BUDGET: u64 = 1 << 24;
 
 /// All lanes.
-pub(crate) const FULL: LaneMask = if LANES >= 32 {
-    !0
-} else {
-    (1u32 << LANES) - 1
-};
+pub(crate) const FULL: LaneMask = if LANES >= 32 { !0 } else { (1u32 << LANES) - 1 };
 
 type Regs = Vec<[u32; LANES]>;
 
@@ -194,7 +190,8 @@ pub(crate) fn run<H: Hook>(
                 r[d as usize] = lanes(|l| if c[l] != 0 { a[l] } else { b[l] });
             }
             Op::ClampIdx { d, a, max, stride } => {
-                un!(d, a, |x| ((x as i32).clamp(0, max as i32) as u32).wrapping_mul(stride))
+                un!(d, a, |x| ((x as i32).clamp(0, max as i32) as u32)
+                    .wrapping_mul(stride))
             }
             Op::Gather { d, base, off, max } => {
                 let o = r[off as usize];
@@ -293,7 +290,9 @@ pub(crate) fn run<H: Hook>(
 
     let active = batch.active & FULL;
     if batch.outputs.len() < k.interface.output_components {
-        batch.outputs.resize(k.interface.output_components, [0.0; LANES]);
+        batch
+            .outputs
+            .resize(k.interface.output_components, [0.0; LANES]);
     }
     for &(reg, oc, kind) in &k.outputs {
         let src = r[reg as usize];

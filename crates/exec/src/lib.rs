@@ -139,6 +139,9 @@ pub struct SampleRequest {
     pub mask: LaneMask,
 }
 
+// The variants are plain per-lane arrays by design (PIPELINE.md); boxing
+// would cost an allocation per lookup.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq)]
 pub enum Lod {
     /// Fragment-shader implicit LOD: per-lane derivatives of the (divided)
@@ -165,12 +168,11 @@ pub struct NoTextures;
 
 impl Textures for NoTextures {
     fn sample(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]) {
-        for l in 0..LANES {
-            if req.mask & (1 << l) != 0 {
-                out[0][l] = 0.0;
-                out[1][l] = 0.0;
-                out[2][l] = 0.0;
-                out[3][l] = 1.0;
+        for (c, value) in out.iter_mut().zip([0.0, 0.0, 0.0, 1.0]) {
+            for (l, x) in c.iter_mut().enumerate() {
+                if req.mask & (1 << l) != 0 {
+                    *x = value;
+                }
             }
         }
     }

@@ -210,7 +210,11 @@ fn with_ftransform_inputs(m: &Module) -> Option<Module> {
         return None;
     }
     let wanted = [
-        ("gl_ModelViewProjectionMatrix", Type::mat(4, 4), Storage::Uniform),
+        (
+            "gl_ModelViewProjectionMatrix",
+            Type::mat(4, 4),
+            Storage::Uniform,
+        ),
         ("gl_Vertex", Type::vec(Scalar::Float, 4), Storage::Attribute),
     ];
     let missing: Vec<_> = wanted
@@ -532,7 +536,11 @@ impl<'m> Lowerer<'m> {
                 self.mark_statement(*span);
                 if let Some(e) = value {
                     let v = self.expr(e)?;
-                    let ret = self.frames.last().map(|f| f.ret.clone()).unwrap_or_default();
+                    let ret = self
+                        .frames
+                        .last()
+                        .map(|f| f.ret.clone())
+                        .unwrap_or_default();
                     if ret.len() != v.len() {
                         return unsupported("return value of the wrong size");
                     }
@@ -1016,7 +1024,15 @@ impl<'m> Lowerer<'m> {
 
     /// Component-wise arithmetic with scalar broadcasting, or a
     /// linear-algebra product.
-    fn arith(&mut self, op: BinaryOp, a: &[Reg], aty: Type, b: &[Reg], bty: Type, rty: Type) -> R<Val> {
+    fn arith(
+        &mut self,
+        op: BinaryOp,
+        a: &[Reg],
+        aty: Type,
+        b: &[Reg],
+        bty: Type,
+        rty: Type,
+    ) -> R<Val> {
         if op == BinaryOp::MatMul {
             return self.matmul(a, aty, b, bty);
         }
@@ -1095,7 +1111,11 @@ impl<'m> Lowerer<'m> {
                 None => d,
                 Some(prev) => {
                     let r = self.temp()?;
-                    self.emit(Op::And { d: r, a: prev, b: d })?;
+                    self.emit(Op::And {
+                        d: r,
+                        a: prev,
+                        b: d,
+                    })?;
                     r
                 }
             });
@@ -1632,19 +1652,43 @@ impl<'m> Lowerer<'m> {
                 };
                 let strict = matches!(f, B::LessThan | B::GreaterThan);
                 self.map(&[&x, &y], |d, v| match (float, strict) {
-                    (true, true) => Op::FLt { d, a: v[0], b: v[1] },
-                    (true, false) => Op::FLe { d, a: v[0], b: v[1] },
-                    (false, true) => Op::ILt { d, a: v[0], b: v[1] },
-                    (false, false) => Op::ILe { d, a: v[0], b: v[1] },
+                    (true, true) => Op::FLt {
+                        d,
+                        a: v[0],
+                        b: v[1],
+                    },
+                    (true, false) => Op::FLe {
+                        d,
+                        a: v[0],
+                        b: v[1],
+                    },
+                    (false, true) => Op::ILt {
+                        d,
+                        a: v[0],
+                        b: v[1],
+                    },
+                    (false, false) => Op::ILe {
+                        d,
+                        a: v[0],
+                        b: v[1],
+                    },
                 })
             }
             B::Equal | B::NotEqual => {
                 let float = kind_of(args[0].ty) == Scalar::Float;
                 let eq = self.map(&[arg(0)?, arg(1)?], |d, v| {
                     if float {
-                        Op::FEq { d, a: v[0], b: v[1] }
+                        Op::FEq {
+                            d,
+                            a: v[0],
+                            b: v[1],
+                        }
                     } else {
-                        Op::IEq { d, a: v[0], b: v[1] }
+                        Op::IEq {
+                            d,
+                            a: v[0],
+                            b: v[1],
+                        }
                     }
                 })?;
                 if f == B::Equal {
@@ -1893,19 +1937,35 @@ impl<'m> Lowerer<'m> {
 }
 
 fn fsub_op(d: Reg, x: &[Reg]) -> Op {
-    Op::FSub { d, a: x[0], b: x[1] }
+    Op::FSub {
+        d,
+        a: x[0],
+        b: x[1],
+    }
 }
 
 fn fmul_op(d: Reg, x: &[Reg]) -> Op {
-    Op::FMul { d, a: x[0], b: x[1] }
+    Op::FMul {
+        d,
+        a: x[0],
+        b: x[1],
+    }
 }
 
 fn fdiv_op(d: Reg, x: &[Reg]) -> Op {
-    Op::FDiv { d, a: x[0], b: x[1] }
+    Op::FDiv {
+        d,
+        a: x[0],
+        b: x[1],
+    }
 }
 
 fn fadd_op(d: Reg, x: &[Reg]) -> Op {
-    Op::FAdd { d, a: x[0], b: x[1] }
+    Op::FAdd {
+        d,
+        a: x[0],
+        b: x[1],
+    }
 }
 
 fn is_texture(f: BuiltinFn) -> bool {

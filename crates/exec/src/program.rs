@@ -27,91 +27,271 @@ pub(crate) type F3 = fn(f32, f32, f32) -> f32;
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum Op {
     /// `d = bits` on every lane.
-    Const { d: Reg, bits: u32 },
+    Const {
+        d: Reg,
+        bits: u32,
+    },
     /// `d = a` on every lane.
-    Mov { d: Reg, a: Reg },
+    Mov {
+        d: Reg,
+        a: Reg,
+    },
     /// `d = a` on the lanes of the current mask.
-    Store { d: Reg, a: Reg },
+    Store {
+        d: Reg,
+        a: Reg,
+    },
     /// `d = uniforms[word]` on every lane (0 past the end of the words).
-    Uniform { d: Reg, word: u32 },
+    Uniform {
+        d: Reg,
+        word: u32,
+    },
 
-    FAdd { d: Reg, a: Reg, b: Reg },
-    FSub { d: Reg, a: Reg, b: Reg },
-    FMul { d: Reg, a: Reg, b: Reg },
-    FDiv { d: Reg, a: Reg, b: Reg },
-    FNeg { d: Reg, a: Reg },
+    FAdd {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    FSub {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    FMul {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    FDiv {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    FNeg {
+        d: Reg,
+        a: Reg,
+    },
     /// `d = d + a * b`, two roundings (never fused).
-    FMac { d: Reg, a: Reg, b: Reg },
-    F1 { f: F1, d: Reg, a: Reg },
-    F2 { f: F2, d: Reg, a: Reg, b: Reg },
-    F3 { f: F3, d: Reg, a: Reg, b: Reg, c: Reg },
-    FLt { d: Reg, a: Reg, b: Reg },
-    FLe { d: Reg, a: Reg, b: Reg },
-    FEq { d: Reg, a: Reg, b: Reg },
+    FMac {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    F1 {
+        f: F1,
+        d: Reg,
+        a: Reg,
+    },
+    F2 {
+        f: F2,
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    F3 {
+        f: F3,
+        d: Reg,
+        a: Reg,
+        b: Reg,
+        c: Reg,
+    },
+    FLt {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    FLe {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    FEq {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
 
-    IAdd { d: Reg, a: Reg, b: Reg },
-    ISub { d: Reg, a: Reg, b: Reg },
-    IMul { d: Reg, a: Reg, b: Reg },
+    IAdd {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    ISub {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    IMul {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
     /// Wrapping division; division by zero gives 0.
-    IDiv { d: Reg, a: Reg, b: Reg },
-    INeg { d: Reg, a: Reg },
-    ILt { d: Reg, a: Reg, b: Reg },
-    ILe { d: Reg, a: Reg, b: Reg },
+    IDiv {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    INeg {
+        d: Reg,
+        a: Reg,
+    },
+    ILt {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    ILe {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
     /// Bit equality (ints, bools, samplers).
-    IEq { d: Reg, a: Reg, b: Reg },
+    IEq {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
 
-    And { d: Reg, a: Reg, b: Reg },
-    Or { d: Reg, a: Reg, b: Reg },
-    Xor { d: Reg, a: Reg, b: Reg },
-    Not { d: Reg, a: Reg },
+    And {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    Or {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    Xor {
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
+    Not {
+        d: Reg,
+        a: Reg,
+    },
 
-    FToI { d: Reg, a: Reg },
-    IToF { d: Reg, a: Reg },
-    FToB { d: Reg, a: Reg },
-    IToB { d: Reg, a: Reg },
-    BToF { d: Reg, a: Reg },
+    FToI {
+        d: Reg,
+        a: Reg,
+    },
+    IToF {
+        d: Reg,
+        a: Reg,
+    },
+    FToB {
+        d: Reg,
+        a: Reg,
+    },
+    IToB {
+        d: Reg,
+        a: Reg,
+    },
+    BToF {
+        d: Reg,
+        a: Reg,
+    },
 
     /// `d = c != 0 ? a : b` per lane.
-    Select { d: Reg, c: Reg, a: Reg, b: Reg },
+    Select {
+        d: Reg,
+        c: Reg,
+        a: Reg,
+        b: Reg,
+    },
 
     /// `d = clamp(a as i32, 0, max) * stride` (a dynamic index made safe:
     /// out-of-range indices select the nearest element).
-    ClampIdx { d: Reg, a: Reg, max: u32, stride: u32 },
+    ClampIdx {
+        d: Reg,
+        a: Reg,
+        max: u32,
+        stride: u32,
+    },
     /// `d = r[base + min(off, max)]` per lane.
-    Gather { d: Reg, base: Reg, off: Reg, max: u32 },
+    Gather {
+        d: Reg,
+        base: Reg,
+        off: Reg,
+        max: u32,
+    },
     /// `r[base + min(off, max)] = a` on the lanes of the current mask.
-    Scatter { base: Reg, off: Reg, max: u32, a: Reg },
+    Scatter {
+        base: Reg,
+        off: Reg,
+        max: u32,
+        a: Reg,
+    },
     /// `d = uniforms[word + min(off, max)]` per lane.
-    GatherUniform { d: Reg, word: u32, off: Reg, max: u32 },
+    GatherUniform {
+        d: Reg,
+        word: u32,
+        off: Reg,
+        max: u32,
+    },
 
     /// `d = a(lane | 1) - a(lane & !1)`.
-    DdX { d: Reg, a: Reg },
+    DdX {
+        d: Reg,
+        a: Reg,
+    },
     /// `d = a(lane | 2) - a(lane & !2)`.
-    DdY { d: Reg, a: Reg },
+    DdY {
+        d: Reg,
+        a: Reg,
+    },
     /// `noiseN` of the `dims` consecutive registers at `a` into `n`
     /// consecutive registers at `d`.
-    Noise { d: Reg, n: u8, a: Reg, dims: u8 },
+    Noise {
+        d: Reg,
+        n: u8,
+        a: Reg,
+        dims: u8,
+    },
     /// A texture lookup described by `Program::textures[index]`.
-    Texture { index: u32 },
+    Texture {
+        index: u32,
+    },
 
     /// `masks[slot] = cur`.
-    SaveMask { slot: u32 },
+    SaveMask {
+        slot: u32,
+    },
     /// `cur = masks[slot]`.
-    RestoreMask { slot: u32 },
+    RestoreMask {
+        slot: u32,
+    },
     /// `cur &= (c != 0)`.
-    AndMask { c: Reg },
+    AndMask {
+        c: Reg,
+    },
     /// `cur = masks[slot] & (c == 0)`.
-    AndNotMask { slot: u32, c: Reg },
+    AndNotMask {
+        slot: u32,
+        c: Reg,
+    },
     /// Jump when no lane is active.
-    JumpIfNone { target: u32 },
-    Jump { target: u32 },
+    JumpIfNone {
+        target: u32,
+    },
+    Jump {
+        target: u32,
+    },
     /// One loop iteration: counts against the loop budget.
     LoopIter,
     /// Removes the active lanes from the mask slots
     /// `kill_slots[start..end]`, then `cur = 0` (break, continue, return).
-    Kill { start: u32, end: u32 },
+    Kill {
+        start: u32,
+        end: u32,
+    },
     /// `discarded |= cur`, then like [`Op::Kill`].
-    Discard { start: u32, end: u32 },
+    Discard {
+        start: u32,
+        end: u32,
+    },
 }
 
 /// How a texture lookup chooses its level of detail.

@@ -1,6 +1,8 @@
 //! Unit tests: small GLSL programs compiled with `glsl::compile`, linked,
 //! lowered and run; built-ins checked against constant folding.
 
+#![allow(clippy::needless_range_loop)]
+
 use super::*;
 use glsl::ir::{ConstScalar, ConstValue, Stage};
 use glsl::types::{Scalar, Type};
@@ -606,7 +608,10 @@ fn interface_layout() {
     let i = k.interface();
     let l = i.uniform("lights").unwrap();
     assert_eq!(l.components, 10);
-    assert_eq!(i.locate_uniform("lights[1].w[1]"), Some((l.offset + 9, Type::FLOAT)));
+    assert_eq!(
+        i.locate_uniform("lights[1].w[1]"),
+        Some((l.offset + 9, Type::FLOAT))
+    );
     assert_eq!(i.locate_uniform("lights[2]"), None);
     assert_eq!(i.uniform("tex").unwrap().components, 1);
     assert!(i.input("p").is_some());
@@ -646,7 +651,5 @@ fn trace_reports_statements_of_one_lane() {
     k.run_traced(&mut b, &[], &NoTextures, 5, &mut t5).unwrap();
     assert_eq!(t0.0.len() + 1, t5.0.len());
     let a = k.variables().iter().find(|v| v.name == "a").unwrap();
-    assert!(t5
-        .1
-        .contains(&(a.first_register, 2.0f32.to_bits())));
+    assert!(t5.1.contains(&(a.first_register, 2.0f32.to_bits())));
 }
