@@ -71,7 +71,8 @@ enum GlobalLoc {
 
 struct Frame {
     func: FunctionId,
-    locals: Vec<Reg>,
+    /// Register and (sized) type of every local.
+    locals: Vec<(Reg, Type)>,
     ret: Val,
 }
 
@@ -275,6 +276,65 @@ fn has_effects(e: &Expr) -> bool {
     }
 }
 
+/// Calls `f` on every expression of `b`, outer before inner.
+fn visit_block(b: &Block, f: &mut dyn FnMut(&Expr)) {
+    for s in b {
+        match s {
+            Stmt::Expr(e) | Stmt::Return(Some(e), _) => visit_expr(e, f),
+            Stmt::Declare { init: Some(e), .. } => visit_expr(e, f),
+            Stmt::Block(b) => visit_block(b, f),
+            Stmt::If {
+                cond, then, else_, ..
+            } => {
+                visit_expr(cond, f);
+                visit_block(then, f);
+                visit_block(else_, f);
+            }
+            Stmt::Loop {
+                body, continuing, ..
+            } => {
+                visit_block(body, f);
+                visit_block(continuing, f);
+            }
+            _ => {}
+        }
+    }
+}
+
+fn visit_expr(e: &Expr, f: &mut dyn FnMut(&Expr)) {
+    f(e);
+    match &e.kind {
+        ExprKind::Const(_) | ExprKind::Global(_) | ExprKind::Local(_) => {}
+        ExprKind::Index { base, index } => {
+            visit_expr(base, f);
+            visit_expr(index, f);
+        }
+        ExprKind::Swizzle { base, .. } | ExprKind::Member { base, .. } => visit_expr(base, f),
+        ExprKind::Unary { operand, .. } | ExprKind::Convert { operand } => visit_expr(operand, f),
+        ExprKind::Binary { left, right, .. } | ExprKind::Comma { left, right } => {
+            visit_expr(left, f);
+            visit_expr(right, f);
+        }
+        ExprKind::Ternary {
+            cond,
+            accept,
+            reject,
+        } => {
+            visit_expr(cond, f);
+            visit_expr(accept, f);
+            visit_expr(reject, f);
+        }
+        ExprKind::Assign { target, value, .. } => {
+            visit_expr(target, f);
+            visit_expr(value, f);
+        }
+        ExprKind::IncDec { target, .. } => visit_expr(target, f),
+        ExprKind::Call { args, .. }
+        | ExprKind::Builtin { args, .. }
+        | ExprKind::Construct { args } => args.iter().for_each(|a| visit_expr(a, f)),
+    }
+}
+
 fn kind_of(ty: Type) -> Scalar {
     ty.scalar().unwrap_or(Scalar::Float)
 }
@@ -403,22 +463,45 @@ impl<'m> Lowerer<'m> {
         }
     }
 
-    fn alloc_locals(&mut self, f: FunctionId) -> R<Vec<Reg>> {
+    fn alloc_locals(&mut self, f: FunctionId) -> R<Vec<(Reg, Type)>> {
         let m = self.m;
         let func = &m.functions[f.0 as usize];
         let mut out = Vec::with_capacity(func.locals.len());
-        for l in &func.locals {
-            let n = self.size(l.ty)?;
+        let mut implicit: Vec<u32> = Vec::new();
+        if func.locals.iter().any(|l| l.ty.array == Some(ArraySize::Unsized)) {
+            // A local array declared without a size takes the largest
+            // constant index used plus one (GLSL 1.10 §4.1.9), as the
+            // linker does for globals.
+            implicit = vec![0; func.locals.len()];
+            if let Some(body) = &func.body {
+                visit_block(body, &mut |e| {
+                    if let ExprKind::Index { base, index } = &e.kind {
+                        if let (ExprKind::Local(l), Some(i)) = (&base.kind, const_index(index)) {
+                            if let Some(n) = implicit.get_mut(l.0 as usize) {
+                                *n = (*n).max(i.max(0) as u32 + 1);
+                            }
+                        }
+                    }
+                });
+            }
+        }
+        for (i, l) in func.locals.iter().enumerate() {
+            let mut ty = l.ty;
+            if ty.array == Some(ArraySize::Unsized) {
+                let n = implicit.get(i).copied().unwrap_or(0).max(1);
+                ty.array = Some(ArraySize::Sized(n));
+            }
+            let n = self.size(ty)?;
             let r = self.alloc(n)?;
             if self.p.vars.len() < 1 << 16 {
                 self.p.vars.push(VarInfo {
                     name: l.name.clone(),
-                    ty: l.ty,
+                    ty,
                     first_register: r,
                     registers: n as u32,
                 });
             }
-            out.push(r);
+            out.push((r, ty));
         }
         Ok(out)
     }
@@ -599,18 +682,14 @@ impl<'m> Lowerer<'m> {
         let Some(frame) = self.frames.last() else {
             return unsupported("local variable outside a function");
         };
-        let func = &self.m.functions[frame.func.0 as usize];
-        let (Some(&r), Some(local)) = (
-            frame.locals.get(l.0 as usize),
-            func.locals.get(l.0 as usize),
-        ) else {
+        let Some(&(r, ty)) = frame.locals.get(l.0 as usize) else {
             return unsupported("unknown local variable");
         };
-        let size = self.size(local.ty)? as u32;
+        let size = self.size(ty)? as u32;
         Ok(Place {
             root: Root::Reg(r),
             size,
-            ty: local.ty,
+            ty,
             off: 0,
             dynamic: None,
             comps: None,
@@ -1281,7 +1360,7 @@ impl<'m> Lowerer<'m> {
         // Arguments, left to right (§6.1.1).
         let mut outs: Vec<(Place, Reg, u32)> = Vec::new();
         for (param, arg) in f.params.iter().zip(args) {
-            let Some(&preg) = locals.get(param.local.0 as usize) else {
+            let Some(&(preg, _)) = locals.get(param.local.0 as usize) else {
                 return unsupported("parameter without a local");
             };
             let n = self.size(param.ty)? as u32;

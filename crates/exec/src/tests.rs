@@ -653,3 +653,13 @@ fn trace_reports_statements_of_one_lane() {
     let a = k.variables().iter().find(|v| v.name == "a").unwrap();
     assert!(t5.1.contains(&(a.first_register, 2.0f32.to_bits())));
 }
+
+#[test]
+fn unsized_local_arrays_take_their_implicit_size() {
+    let (c, _) = frag_colors(
+        "void f() { float a[]; a[5] = 2.0; a[1] = 1.0; gl_FragColor = vec4(a[5], a[1], 0.0, 1.0); }
+        void main() { f(); }",
+        &[],
+    );
+    assert_eq!(c[3], [2.0, 1.0, 0.0, 1.0]);
+}

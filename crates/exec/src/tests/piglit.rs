@@ -217,3 +217,101 @@ fn piglit_builtin_function_tests() {
     eprintln!("piglit built-in-functions: {passed}/{total} pass");
     assert_eq!(passed, total, "{} failures", failures.len());
 }
+
+/// Every shader of the 3138 execution tests (`/tmp/shader_tests.txt`):
+/// compiled, linked, lowered and run once on zero inputs. Reports lowering
+/// errors, loop-budget hits and panics (none expected).
+#[test]
+#[ignore = "needs the piglit files"]
+fn piglit_execution_shaders_lower_and_run() {
+    let base = "/work/main/.piglit/root/usr/lib/x86_64-linux-gnu/piglit";
+    let Ok(list) = std::fs::read_to_string("/tmp/shader_tests.txt") else {
+        eprintln!("skipping: no /tmp/shader_tests.txt");
+        return;
+    };
+    let (mut files, mut linked, mut lowered, mut ran) = (0, 0, 0, 0);
+    let mut problems = Vec::new();
+    for line in list.lines() {
+        let Some(start) = line.find("'tests/").or_else(|| line.find("'generated_tests/")) else {
+            continue;
+        };
+        let rest = &line[start + 1..];
+        let Some(end) = rest.find('\'') else { continue };
+        let path = format!("{base}/{}", &rest[..end]);
+        let Ok(text) = std::fs::read_to_string(&path) else {
+            continue;
+        };
+        files += 1;
+        let mut shaders: Vec<(Stage, String)> = Vec::new();
+        let mut cur: Option<usize> = None;
+        for l in text.lines() {
+            if l.starts_with('[') {
+                cur = None;
+                let stage = match l.trim() {
+                    "[vertex shader]" => Some(Stage::Vertex),
+                    "[fragment shader]" => Some(Stage::Fragment),
+                    "[vertex shader passthrough]" => {
+                        shaders.push((
+                            Stage::Vertex,
+                            "attribute vec4 piglit_vertex; void main() { gl_Position = piglit_vertex; }".into(),
+                        ));
+                        None
+                    }
+                    _ => None,
+                };
+                if let Some(s) = stage {
+                    shaders.push((s, String::new()));
+                    cur = Some(shaders.len() - 1);
+                }
+                continue;
+            }
+            if let Some(i) = cur {
+                shaders[i].1.push_str(l);
+                shaders[i].1.push('\n');
+            }
+        }
+        let v120 = text.contains("GLSL >= 1.20");
+        let compiled: Vec<glsl::Shader> = shaders
+            .iter()
+            .map(|(stage, src)| {
+                let mut o = CompileOptions::new(*stage);
+                if v120 {
+                    o.default_version = Some(glsl::Version::V120);
+                }
+                compile(&[src], &o)
+            })
+            .collect();
+        let refs: Vec<&glsl::Shader> = compiled.iter().collect();
+        let prog = glsl::link::link(&refs);
+        if !prog.ok() {
+            continue;
+        }
+        linked += 1;
+        for st in &prog.stages {
+            let r = std::panic::catch_unwind(|| {
+                let mut k = Kernel::new(st)?;
+                k.set_loop_budget(1 << 20);
+                let mut b = Batch::for_kernel(&k, 0xffff);
+                let u = vec![0u32; k.interface().uniform_words];
+                k.run(&mut b, &u, &NoTextures).map(|_| true)
+            });
+            match r {
+                Ok(Ok(_)) => {
+                    lowered += 1;
+                    ran += 1;
+                }
+                Ok(Err(e @ crate::ExecError::LoopBudget { .. })) => {
+                    lowered += 1;
+                    problems.push(format!("{path} ({}): {e}", st.stage.name()));
+                }
+                Ok(Err(e)) => problems.push(format!("{path} ({}): {e}", st.stage.name())),
+                Err(_) => problems.push(format!("{path} ({}): PANIC", st.stage.name())),
+            }
+        }
+    }
+    for p in &problems {
+        eprintln!("{p}");
+    }
+    eprintln!("{files} files, {linked} linked, {lowered} stages lowered, {ran} ran");
+    assert!(!problems.iter().any(|p| p.ends_with("PANIC")));
+}
