@@ -92,7 +92,7 @@ impl Planes {
                 (false, true) => t0 = t0.max(da / (da - db)),
             }
         }
-        if !(t0 <= t1) {
+        if t0.is_nan() || t1.is_nan() || t0 > t1 {
             return None;
         }
         let na = if t0 > 0.0 { lerp(a, b, t0) } else { a.clone() };

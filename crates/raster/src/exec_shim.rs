@@ -1,7 +1,7 @@
 //! TEMPORARY: a private copy of the `exec` API declared in PIPELINE.md, used
 //! until the real `exec` crate lands on main. Delete this module at merge
 //! time and point `crate::ex` at `::exec`.
-#![allow(dead_code)]
+#![allow(dead_code, clippy::large_enum_variant)]
 
 use glsl::types::{SamplerKind, Type};
 
@@ -23,6 +23,8 @@ pub struct Interface {
     pub outputs: Vec<Slot>,
     pub uniforms: Vec<Slot>,
     pub uniform_words: usize,
+    pub input_components: usize,
+    pub output_components: usize,
 }
 
 #[derive(Clone, Debug)]

@@ -42,6 +42,8 @@
 //! - Fragment outputs that the shader never writes are written as zeros.
 
 mod clip;
+#[cfg(test)]
+mod draw_tests;
 mod fragment_ops;
 mod framebuffer;
 mod linkage;

@@ -241,7 +241,7 @@ impl Setup<'_> {
     /// Perspective division and viewport transform (GL 2.1 §2.11).
     fn window(&self, v: &ClipVertex) -> Option<WinVertex> {
         let w = v.pos[3] as f64;
-        if !(w > 0.0) {
+        if w.is_nan() || w <= 0.0 {
             return None;
         }
         let [sx, ox, sy, oy, sz, oz] = self.vp;

@@ -230,8 +230,8 @@ impl Textures for TextureUnits {
                 continue;
             }
             let rgba = self.sample_lane(req, lane);
-            for c in 0..4 {
-                out[c][lane] = rgba[c];
+            for (o, v) in out.iter_mut().zip(rgba) {
+                o[lane] = v;
             }
         }
     }
@@ -408,7 +408,7 @@ pub(crate) fn sample(
             None => MISSING,
         }
     };
-    let value = if !(lambda > c) {
+    let value = if lambda.is_nan() || lambda <= c {
         one(base, tex.mag_filter == MagFilter::Linear)
     } else {
         let lb = base as f32 + lambda;
