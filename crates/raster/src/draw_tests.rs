@@ -675,3 +675,130 @@ fn scissor_and_multiple_draw_buffers() {
     assert_eq!(a[2 * 8 + 2], [255, 0, 0, 255]);
     assert_eq!(b[4 * 8 + 3], [0.0, 0.0, 1.0, 1.0]);
 }
+
+#[test]
+fn polygon_offset_units_resolve_coplanar_depth() {
+    let (w, h) = (8, 8);
+    let mut st = state(w as i32, h as i32);
+    st.depth_test = Some(CompareFunc::Always);
+    let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, false);
+    fb.clear_depth(1.0, true, None);
+    run(
+        &mut fb,
+        &st,
+        &color_fs(),
+        Mode::Triangles,
+        &verts(&full_screen(), &[RED; 6]),
+    )
+    .unwrap();
+    let base = fb.clone();
+    // Coplanar with LESS: rejected.
+    st.depth_test = Some(CompareFunc::Less);
+    run(
+        &mut fb,
+        &st,
+        &color_fs(),
+        Mode::Triangles,
+        &verts(&full_screen(), &[GREEN; 6]),
+    )
+    .unwrap();
+    assert!(fb
+        .read_pixels_u8(0, 0, 0, w, h)
+        .iter()
+        .all(|p| *p == [255, 0, 0, 255]));
+    // Offset by one unit towards the viewer: accepted.
+    let mut fb = base;
+    st.polygon_offset = PolygonOffset {
+        factor: 0.0,
+        units: -1.0,
+        fill: true,
+        line: false,
+        point: false,
+    };
+    run(
+        &mut fb,
+        &st,
+        &color_fs(),
+        Mode::Triangles,
+        &verts(&full_screen(), &[GREEN; 6]),
+    )
+    .unwrap();
+    assert!(fb
+        .read_pixels_u8(0, 0, 0, w, h)
+        .iter()
+        .all(|p| *p == [0, 255, 0, 255]));
+}
+
+#[test]
+fn depth_is_not_written_without_the_depth_test() {
+    // GL 2.1 §4.1.6: with the depth test disabled the depth buffer is not updated.
+    let mut fb = Framebuffer::new(4, 4, ColorFormat::Rgba8, true, false);
+    fb.clear_depth(1.0, true, None);
+    run(
+        &mut fb,
+        &state(4, 4),
+        &color_fs(),
+        Mode::Triangles,
+        &verts(&full_screen(), &[RED; 6]),
+    )
+    .unwrap();
+    assert!(fb.read_depth(0, 0, 4, 4).iter().all(|&d| d == 1.0));
+}
+
+#[test]
+fn point_sprite_coordinates() {
+    let fs = Stage {
+        iface: iface(
+            vec![slot("gl_PointCoord", 0, 2), slot("gl_TexCoord", 2, 4)],
+            vec![slot("gl_FragColor", 0, 4)],
+        ),
+        f: Box::new(|b| {
+            for l in 0..LANES {
+                b.outputs[0][l] = b.inputs[0][l];
+                b.outputs[1][l] = b.inputs[1][l];
+                b.outputs[2][l] = b.inputs[2][l];
+                b.outputs[3][l] = b.inputs[5][l];
+            }
+            Ok(())
+        }),
+    };
+    let mut st = state(8, 8);
+    st.point_sprite = true;
+    st.coord_replace = 1;
+    st.point_size = 4.0;
+    let mut fb = Framebuffer::new(8, 8, ColorFormat::Rgba32F, false, false);
+    // Point at window (4, 4): covers pixels 2..6.
+    run(
+        &mut fb,
+        &st,
+        &fs,
+        Mode::Points,
+        &verts(&[[0.0, 0.0]], &[RED]),
+    )
+    .unwrap();
+    let px = fb.read_pixels(0, 0, 0, 8, 8);
+    // Pixel (2, 5): s = 0.5 + (2.5 - 4)/4 = 0.125; t (upper left) = 0.5 - (5.5 - 4)/4 = 0.125.
+    assert_eq!(px[5 * 8 + 2], [0.125, 0.125, 0.125, 1.0]);
+    assert_eq!(px[2 * 8 + 5], [0.875, 0.875, 0.875, 1.0]);
+    assert_eq!(px[6 * 8 + 2], [0.0; 4]);
+}
+
+#[test]
+fn wide_lines() {
+    let mut st = state(8, 8);
+    st.line_width = 3.0;
+    let mut fb = Framebuffer::new(8, 8, ColorFormat::Rgba8, false, false);
+    let p = |x: f32, y: f32| [x / 4.0 - 1.0, y / 4.0 - 1.0];
+    run(
+        &mut fb,
+        &st,
+        &color_fs(),
+        Mode::LineStrip,
+        &verts(&[p(0.0, 4.2), p(8.0, 4.2)], &[RED; 2]),
+    )
+    .unwrap();
+    let px = fb.read_pixels_u8(0, 0, 0, 8, 8);
+    for y in 0..8 {
+        assert_eq!(px[y * 8 + 3] != [0; 4], (3..6).contains(&y), "row {y}");
+    }
+}
