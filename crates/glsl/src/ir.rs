@@ -363,7 +363,7 @@ impl Expr {
 
 /// Calls `f` on each expression directly held by the statements of
 /// `block`, recursing into nested blocks (not into expressions).
-pub fn for_each_block_expr<'a>(block: &'a Block, f: &mut impl FnMut(&'a Expr)) {
+pub fn for_each_block_expr<'a>(block: &'a [Stmt], f: &mut impl FnMut(&'a Expr)) {
     for s in block {
         match s {
             Stmt::Expr(e) | Stmt::Return(Some(e), _) => f(e),
@@ -392,7 +392,7 @@ pub fn for_each_block_expr<'a>(block: &'a Block, f: &mut impl FnMut(&'a Expr)) {
 }
 
 /// [`for_each_block_expr`] with mutable access.
-pub fn for_each_block_expr_mut(block: &mut Block, f: &mut impl FnMut(&mut Expr)) {
+pub fn for_each_block_expr_mut(block: &mut [Stmt], f: &mut impl FnMut(&mut Expr)) {
     for s in block {
         match s {
             Stmt::Expr(e) | Stmt::Return(Some(e), _) => f(e),

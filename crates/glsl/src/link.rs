@@ -12,8 +12,8 @@
 
 use crate::diag::{render_info_log, Code, Diagnostic};
 use crate::ir::{
-    self, Block, ConstValue, Expr, ExprKind, Function, FunctionId, Global, GlobalId, Module, Stage,
-    Storage,
+    self, Block, ConstScalar, ConstValue, Expr, ExprKind, Function, FunctionId, Global, GlobalId,
+    Module, Stage, Stmt, Storage,
 };
 use crate::limits;
 use crate::types::{ArraySize, Base, StructDef, StructId, StructMember, Type};
@@ -195,7 +195,10 @@ fn remap_block(b: &mut Block, map: &Remap) {
     ir::for_each_block_expr_mut(b, &mut |e| remap_expr(e, map));
 }
 
-/// Calls made anywhere in a block.
+/// Calls a block can make: every call except those in an `if` branch whose
+/// condition is a constant that rules the branch out (GLSL 1.20 constant
+/// expressions fold `if (degrees(0.0) != 0.0)`; a function called only there
+/// need not be defined, as Mesa's compile-time folding allows).
 fn collect_calls(b: &Block, out: &mut BTreeSet<FunctionId>) {
     fn expr(e: &Expr, out: &mut BTreeSet<FunctionId>) {
         if let ExprKind::Call { function, .. } = &e.kind {
@@ -203,7 +206,35 @@ fn collect_calls(b: &Block, out: &mut BTreeSet<FunctionId>) {
         }
         e.for_each_child(|c| expr(c, out));
     }
-    ir::for_each_block_expr(b, &mut |e| expr(e, out));
+    for s in b {
+        match s {
+            Stmt::If {
+                cond, then, else_, ..
+            } => match &cond.kind {
+                ExprKind::Const(c) => match c.components.first() {
+                    Some(ConstScalar::Bool(true)) => collect_calls(then, out),
+                    Some(ConstScalar::Bool(false)) => collect_calls(else_, out),
+                    _ => {
+                        collect_calls(then, out);
+                        collect_calls(else_, out);
+                    }
+                },
+                _ => {
+                    expr(cond, out);
+                    collect_calls(then, out);
+                    collect_calls(else_, out);
+                }
+            },
+            Stmt::Block(inner) => collect_calls(inner, out),
+            Stmt::Loop {
+                body, continuing, ..
+            } => {
+                collect_calls(body, out);
+                collect_calls(continuing, out);
+            }
+            other => ir::for_each_block_expr(std::slice::from_ref(other), &mut |e| expr(e, out)),
+        }
+    }
 }
 
 /// Two struct definitions are the same type if names, member names and
@@ -253,6 +284,10 @@ fn merge_stage(
     let mut errors = false;
     // Global name -> (merged id, object that declared it first).
     let mut global_names: BTreeMap<String, (GlobalId, usize)> = BTreeMap::new();
+    // The object whose non-constant initializer a global keeps.
+    let mut init_origin: BTreeMap<GlobalId, usize> = BTreeMap::new();
+    // The first initializer seen for a global: its value, if constant.
+    let mut init_seen: BTreeMap<GlobalId, Option<Vec<ConstScalar>>> = BTreeMap::new();
     // Function signature -> merged id.
     let mut func_sigs: BTreeMap<(String, Vec<Type>), FunctionId> = BTreeMap::new();
     let mut func_origin: Vec<usize> = Vec::new();
@@ -316,25 +351,49 @@ fn merge_stage(
                     continue;
                 }
                 let existing = &mut merged.globals[id.0 as usize];
-                if let (Some(a), Some(b)) = (&existing.init, &g.init) {
-                    if a.components != b.components {
-                        errors = true;
-                        diags.push(LinkDiagnostic {
-                            shader: Some(obj),
-                            diagnostic: Diagnostic::error(
-                                Code::LinkInterfaceMismatch,
-                                g.span,
-                                format!(
-                                    "`{}' has different initializers in two {} shaders",
-                                    g.name,
-                                    stage.name()
-                                ),
-                            ),
-                        });
+                let mut problems = Vec::new();
+                // §4.3: "All initializers for a shared global must have the
+                // same value": two constant initializers must agree, and a
+                // non-constant one cannot be compared with anything.
+                if let Some(mine) = initial_value(g, &m.structs) {
+                    match init_seen.get(&id) {
+                        None => {
+                            init_seen.insert(id, mine);
+                        }
+                        Some(Some(a)) if mine.as_ref() == Some(a) => {}
+                        Some(Some(_)) if mine.is_some() => problems.push(format!(
+                            "`{}' has different initializers here and in {}",
+                            g.name, names[other]
+                        )),
+                        Some(_) => problems.push(format!(
+                            "`{}' is initialized here and in {}; several initializers of a shared global must be the same constant",
+                            g.name, names[other]
+                        )),
                     }
+                }
+                // §4.3.6: centroid and invariant must match; within one
+                // stage the objects share the variable, so the same holds.
+                if existing.centroid != g.centroid || existing.invariant != g.invariant {
+                    problems.push(format!(
+                        "`{}' has different `centroid'/`invariant' qualifiers here and in {}",
+                        g.name, names[other]
+                    ));
+                }
+                for msg in problems {
+                    errors = true;
+                    diags.push(LinkDiagnostic {
+                        shader: Some(obj),
+                        diagnostic: Diagnostic::error(Code::LinkInterfaceMismatch, g.span, msg),
+                    });
                 }
                 if existing.init.is_none() {
                     existing.init = g.init.clone();
+                    if let Some(v) = &mut existing.init {
+                        remap_const(v, &map);
+                    }
+                }
+                if g.init_expr.is_some() {
+                    init_origin.entry(id).or_insert(obj);
                 }
                 if let Some(ArraySize::Sized(n)) = ty.array {
                     existing.ty.array = Some(ArraySize::Sized(n));
@@ -348,6 +407,17 @@ fn merge_stage(
                 let id = GlobalId(merged.globals.len() as u32);
                 let mut ng: Global = g.clone();
                 ng.ty = ty;
+                if let Some(v) = &mut ng.init {
+                    remap_const(v, &map);
+                }
+                // Filled in, with remapped ids, with the function bodies.
+                ng.init_expr = None;
+                if g.init_expr.is_some() {
+                    init_origin.insert(id, obj);
+                }
+                if let Some(v) = initial_value(g, &m.structs) {
+                    init_seen.insert(id, v);
+                }
                 global_names.insert(g.name.clone(), (id, obj));
                 merged.globals.push(ng);
                 map.globals.push(id);
@@ -439,16 +509,12 @@ fn merge_stage(
         }
         for (gi, g) in m.globals.iter().enumerate() {
             let id = map.globals[gi];
-            if let Some(e) = &g.init_expr {
-                let target = &mut merged.globals[id.0 as usize];
-                if target.init_expr.is_none() {
+            if let (Some(e), Some(origin)) = (&g.init_expr, init_origin.get(&id)) {
+                if origin == obj {
                     let mut e = e.clone();
                     remap_expr(&mut e, map);
-                    target.init_expr = Some(e);
+                    merged.globals[id.0 as usize].init_expr = Some(e);
                 }
-            }
-            if let Some(v) = &mut merged.globals[id.0 as usize].init {
-                remap_const(v, map);
             }
         }
         for ext in &m.extensions {
@@ -535,11 +601,49 @@ fn merge_stage(
         }
     }
 
-    // Unsized arrays take their largest implicit size.
+    // Unsized arrays take their largest implicit size; an explicit size
+    // elsewhere must cover every index used (§4.3, shared globals).
     for g in &mut merged.globals {
-        if g.ty.array == Some(ArraySize::Unsized) {
-            g.ty.array = Some(ArraySize::Sized(g.implicit_size.max(1)));
+        match g.ty.array {
+            Some(ArraySize::Unsized) => {
+                g.ty.array = Some(ArraySize::Sized(g.implicit_size.max(1)));
+            }
+            Some(ArraySize::Sized(n)) if g.implicit_size > n => {
+                errors = true;
+                diags.push(LinkDiagnostic {
+                    shader: None,
+                    diagnostic: Diagnostic::error(
+                        Code::LinkInterfaceMismatch,
+                        None,
+                        format!(
+                            "array `{}' is declared with size {n} in one {} shader object but indexed with {} in another",
+                            g.name,
+                            stage.name(),
+                            g.implicit_size - 1
+                        ),
+                    ),
+                });
+            }
+            _ => {}
         }
+    }
+
+    // GLSL 1.10 §7.1: "All executions of a well-formed vertex shader must
+    // write a value into [gl_Position]"; a vertex stage that never does is
+    // rejected.
+    if stage == Stage::Vertex
+        && !merged
+            .globals
+            .iter()
+            .any(|g| g.builtin && g.name == "gl_Position" && g.written)
+    {
+        errors = true;
+        push(
+            diags,
+            None,
+            Code::LinkVaryingNotWritten,
+            "the vertex shader never writes `gl_Position'; every vertex shader must set it (e.g. `gl_Position = ftransform();')",
+        );
     }
 
     (!errors).then_some(LinkedStage {
@@ -547,6 +651,16 @@ fn merge_stage(
         module: merged,
         main,
     })
+}
+
+/// A global's initializer: `None` without one, `Some(None)` when it is not
+/// constant, `Some(Some(value))` when it folds.
+fn initial_value(g: &Global, structs: &[StructDef]) -> Option<Option<Vec<ConstScalar>>> {
+    if let Some(v) = &g.init {
+        return Some(Some(v.components.clone()));
+    }
+    let e = g.init_expr.as_ref()?;
+    Some(crate::consteval::fold(e, structs).map(|v| v.components))
 }
 
 fn signature(m: &Module, f: &Function) -> String {

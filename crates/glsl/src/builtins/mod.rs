@@ -16,6 +16,19 @@ mod prelude;
 pub use eval::eval_builtin;
 pub use prelude::prelude;
 
+/// The built-in struct types (GLSL 1.10/1.20 §7.5), in both versions and
+/// stages. User shaders may name them as types.
+pub const BUILTIN_STRUCT_NAMES: &[&str] = &[
+    "gl_DepthRangeParameters",
+    "gl_PointParameters",
+    "gl_MaterialParameters",
+    "gl_LightSourceParameters",
+    "gl_LightModelParameters",
+    "gl_LightModelProducts",
+    "gl_LightProducts",
+    "gl_FogParameters",
+];
+
 macro_rules! builtin_fns {
     ($($variant:ident = $name:literal;)*) => {
         /// A built-in function (GLSL 1.20 §8).
@@ -123,6 +136,22 @@ builtin_fns! {
     Noise2 = "noise2";
     Noise3 = "noise3";
     Noise4 = "noise4";
+}
+
+#[cfg(test)]
+mod struct_name_tests {
+    #[test]
+    fn every_builtin_struct_is_declared_by_the_preludes() {
+        use crate::{ir::Stage, token::Version};
+        for name in super::BUILTIN_STRUCT_NAMES {
+            for v in [Version::V110, Version::V120] {
+                for s in [Stage::Vertex, Stage::Fragment] {
+                    let text = super::prelude(v, s);
+                    assert!(text.contains(&format!("struct {name} {{")), "{name}");
+                }
+            }
+        }
+    }
 }
 
 #[cfg(test)]

@@ -27,9 +27,16 @@ pub(super) struct Scopes {
 }
 
 impl Scopes {
+    /// The scopes at the start of a shader: the built-in struct types of
+    /// GLSL 1.10/1.20 §7.5 (`gl_LightSourceParameters`...) already name
+    /// types, in a scope outside the global one.
     pub(super) fn new() -> Scopes {
+        let mut names = HashMap::default();
+        for name in crate::builtins::BUILTIN_STRUCT_NAMES {
+            names.insert(SmolStr::new_static(name), vec![true]);
+        }
         Scopes {
-            names: HashMap::default(),
+            names,
             frames: vec![Vec::new()],
         }
     }

@@ -1,0 +1,2 @@
+float scale = 2.0;
+float scaled(float x) { return x * scale; }
