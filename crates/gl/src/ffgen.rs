@@ -1,0 +1,1 @@
+//! Fixed-function GLSL generation (being written).
