@@ -24,10 +24,10 @@
 //! - Deterministic: no platform math (matrices use [`glsl::math`]), no
 //!   hash-order dependence.
 //!
+//! - Draws run the program's `exec` kernels (or generated fixed-function
+//!   stages, [`ffgen`]) through `raster::draw` ([`draw`]).
+//!
 //! ## Limitations
-//! - Drawing (`glDrawArrays`...) needs the `exec`/`raster` crates; until
-//!   they provide their APIs draws record nothing but errors (see
-//!   [`draw`]).
 //! - No display lists, selection/feedback, accumulation buffer, color index
 //!   mode, evaluators, pixel transfer (glDrawPixels/CopyPixels), queries.
 
@@ -86,6 +86,9 @@ pub struct Context {
     pub(crate) st: state::State,
     // Vertex arrays and current values.
     pub(crate) va: vertex::VertexState,
+    /// The default framebuffer.
+    pub(crate) fb: raster::Framebuffer,
+    pub(crate) cache: draw::DrawCache,
 }
 
 impl Default for Context {
@@ -120,6 +123,14 @@ impl Context {
             clip_planes: [[0.0; 4]; MAX_CLIP_PLANES],
             st: state::State::new(w, h),
             va: vertex::VertexState::new(),
+            fb: raster::Framebuffer::new(
+                w as u32,
+                h as u32,
+                raster::ColorFormat::Rgba8,
+                true,
+                true,
+            ),
+            cache: draw::DrawCache::default(),
         }
     }
 
