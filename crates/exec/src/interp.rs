@@ -96,6 +96,7 @@ pub(crate) fn run<H: Hook>(
     let mut cur: LaneMask = start;
     batch.discarded = 0;
     let mut iterations: u64 = 0;
+    let mut return_address = vec![0u32; p.subroutines as usize];
     let ops = &p.ops[..];
     let mut pc = 0usize;
     let uni = |w: usize| uniforms.get(w).copied().unwrap_or(0);
@@ -275,6 +276,18 @@ pub(crate) fn run<H: Hook>(
                 if iterations > k.loop_budget {
                     return Err(ExecError::LoopBudget { iterations });
                 }
+            }
+            Op::Call { target, slot } => {
+                return_address[slot as usize] = pc as u32;
+                pc = target as usize;
+            }
+            Op::Ret { slot } => pc = return_address[slot as usize] as usize,
+            Op::SyncDiscard { start, end } => {
+                let gone = batch.discarded;
+                for &s in &p.kill_slots[start as usize..end as usize] {
+                    masks[s as usize] &= !gone;
+                }
+                cur &= !gone;
             }
             Op::Kill { start, end } | Op::Discard { start, end } => {
                 if matches!(op, Op::Discard { .. }) {

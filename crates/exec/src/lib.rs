@@ -81,7 +81,7 @@ pub type LaneMask = u32;
 
 /// Size limits of lowered programs.
 pub mod limits {
-    pub use crate::lower::{MAX_CALL_DEPTH, MAX_OPS, MAX_REGISTERS};
+    pub use crate::lower::{INLINE_LIMIT, MAX_CALL_DEPTH, MAX_OPS, MAX_REGISTERS};
 }
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -202,7 +202,16 @@ impl Kernel {
     /// Lowers a linked stage. Errors only for IR the executor cannot run
     /// (a front-end bug) or programs beyond [`limits`].
     pub fn new(stage: &glsl::link::LinkedStage) -> Result<Kernel, ExecError> {
-        let l = lower::lower(stage)?;
+        Kernel::with_inline_limit(stage, lower::INLINE_LIMIT)
+    }
+
+    /// Like [`Kernel::new`], inlining calls only while `main` stays under
+    /// `limit` expression nodes (else every function becomes a subroutine).
+    pub(crate) fn with_inline_limit(
+        stage: &glsl::link::LinkedStage,
+        limit: u64,
+    ) -> Result<Kernel, ExecError> {
+        let l = lower::lower(stage, limit)?;
         Ok(Kernel {
             stage: stage.stage,
             program: l.program,

@@ -37,6 +37,9 @@ pub const MAX_REGISTERS: u32 = 1 << 18;
 pub const MAX_OPS: usize = 1 << 21;
 /// Deepest chain of inlined calls.
 pub const MAX_CALL_DEPTH: usize = 128;
+/// Above this many expression nodes after inlining, functions become
+/// subroutines instead.
+pub const INLINE_LIMIT: u64 = 200_000;
 
 type Val = Vec<Reg>;
 type R<T> = Result<T, ExecError>;
@@ -108,9 +111,21 @@ struct Lowerer<'m> {
     uniform_order: Vec<GlobalId>,
     frames: Vec<Frame>,
     ctx: Vec<(CtxKind, u32)>,
+    /// Subroutine mode: the lowered body of each user function.
+    subs: Option<Vec<Option<Sub>>>,
 }
 
-pub(crate) fn lower(stage: &LinkedStage) -> R<Lowered> {
+/// A user function lowered once as a subroutine (static registers: GLSL
+/// has no recursion, so one activation at a time).
+#[derive(Clone)]
+struct Sub {
+    entry: u32,
+    slot: u32,
+    locals: Vec<(Reg, Type)>,
+    ret: Val,
+}
+
+pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
     let owned;
     let m = match with_ftransform_inputs(&stage.module) {
         Some(patched) => {
@@ -130,6 +145,7 @@ pub(crate) fn lower(stage: &LinkedStage) -> R<Lowered> {
         uniform_order: Vec::new(),
         frames: Vec::new(),
         ctx: Vec::new(),
+        subs: None,
     };
     // Globals: registers for everything but uniforms; uniform words for
     // the uniforms the shader reads (others get words if lowering finds a
@@ -167,6 +183,11 @@ pub(crate) fn lower(stage: &LinkedStage) -> R<Lowered> {
     let Some(body) = &f.body else {
         return unsupported("main has no body");
     };
+    // Inline every call unless that would explode (a call tree with many
+    // repeated calls): then each function is lowered once as a subroutine.
+    if inlined_cost(m, main, &mut vec![None; m.functions.len()], 0) > inline_limit {
+        l.lower_subroutines(main)?;
+    }
     let locals = l.alloc_locals(main)?;
     let fs = l.new_slot();
     l.emit(Op::SaveMask { slot: fs })?;
@@ -274,6 +295,35 @@ fn has_effects(e: &Expr) -> bool {
             args.iter().any(has_effects)
         }
     }
+}
+
+/// Expression nodes of `f` once every call is inlined (saturating).
+fn inlined_cost(m: &Module, f: FunctionId, memo: &mut Vec<Option<u64>>, depth: usize) -> u64 {
+    if let Some(Some(c)) = memo.get(f.0 as usize) {
+        return *c;
+    }
+    if depth > MAX_CALL_DEPTH {
+        return u64::MAX;
+    }
+    let Some(body) = m.functions.get(f.0 as usize).and_then(|f| f.body.as_ref()) else {
+        return 0;
+    };
+    let mut calls = Vec::new();
+    let mut nodes = 0u64;
+    visit_block(body, &mut |e| {
+        nodes += 1;
+        if let ExprKind::Call { function, .. } = &e.kind {
+            calls.push(*function);
+        }
+    });
+    let mut total = nodes;
+    for c in calls {
+        total = total.saturating_add(inlined_cost(m, c, memo, depth + 1));
+    }
+    if let Some(slot) = memo.get_mut(f.0 as usize) {
+        *slot = Some(total);
+    }
+    total
 }
 
 /// Calls `f` on every expression of `b`, outer before inner.
@@ -468,7 +518,11 @@ impl<'m> Lowerer<'m> {
         let func = &m.functions[f.0 as usize];
         let mut out = Vec::with_capacity(func.locals.len());
         let mut implicit: Vec<u32> = Vec::new();
-        if func.locals.iter().any(|l| l.ty.array == Some(ArraySize::Unsized)) {
+        if func
+            .locals
+            .iter()
+            .any(|l| l.ty.array == Some(ArraySize::Unsized))
+        {
             // A local array declared without a size takes the largest
             // constant index used plus one (GLSL 1.10 §4.1.9), as the
             // linker does for globals.
@@ -1356,7 +1410,17 @@ impl<'m> Lowerer<'m> {
         if f.params.len() != args.len() {
             return unsupported(format!("`{}' called with the wrong arguments", f.name));
         }
-        let locals = self.alloc_locals(fid)?;
+        let sub = match &self.subs {
+            Some(subs) => match subs.get(fid.0 as usize) {
+                Some(Some(sub)) => Some(sub.clone()),
+                _ => return unsupported(format!("`{}' was not lowered", f.name)),
+            },
+            None => None,
+        };
+        let locals = match &sub {
+            Some(s) => s.locals.clone(),
+            None => self.alloc_locals(fid)?,
+        };
         // Arguments, left to right (§6.1.1).
         let mut outs: Vec<(Place, Reg, u32)> = Vec::new();
         for (param, arg) in f.params.iter().zip(args) {
@@ -1395,6 +1459,27 @@ impl<'m> Lowerer<'m> {
                 }
             }
         }
+        if let Some(sub) = sub {
+            self.emit(Op::Call {
+                target: sub.entry,
+                slot: sub.slot,
+            })?;
+            if self.stage == Stage::Fragment {
+                // Lanes the callee discarded leave the caller's masks too.
+                let slots: Vec<u32> = self.ctx.iter().map(|c| c.1).collect();
+                let start = self.p.kill_slots.len() as u32;
+                self.p.kill_slots.extend(slots);
+                let end = self.p.kill_slots.len() as u32;
+                self.emit(Op::SyncDiscard { start, end })?;
+            }
+            // The result is copied: another call would overwrite it.
+            let ret = self.copy(&sub.ret)?;
+            for (p, preg, n) in outs {
+                let v: Val = (preg..preg + n).collect();
+                self.write(&p, &v)?;
+            }
+            return Ok(ret);
+        }
         let ret = if f.return_type.is_void() {
             Vec::new()
         } else {
@@ -1419,6 +1504,99 @@ impl<'m> Lowerer<'m> {
             self.write(&p, &v)?;
         }
         Ok(ret)
+    }
+
+    /// Lowers every function reachable from `main` once, callees first,
+    /// before `main`'s code (jumped over), and switches calls to them.
+    fn lower_subroutines(&mut self, main: FunctionId) -> R<()> {
+        let m = self.m;
+        // Post-order of the call graph (an acyclic graph: no recursion).
+        let n = m.functions.len();
+        let mut state = vec![0u8; n]; // 0 new, 1 open, 2 done
+        let mut order = Vec::new();
+        let mut stack: Vec<(FunctionId, Vec<FunctionId>)> = Vec::new();
+        let callees = |f: FunctionId| {
+            let mut out = Vec::new();
+            if let Some(b) = m.functions.get(f.0 as usize).and_then(|f| f.body.as_ref()) {
+                visit_block(b, &mut |e| {
+                    if let ExprKind::Call { function, .. } = &e.kind {
+                        out.push(*function);
+                    }
+                });
+            }
+            out.reverse();
+            out
+        };
+        stack.push((main, callees(main)));
+        state[main.0 as usize] = 1;
+        while let Some((f, pending)) = stack.last_mut() {
+            match pending.pop() {
+                Some(c) => match state.get(c.0 as usize) {
+                    Some(0) => {
+                        state[c.0 as usize] = 1;
+                        let cs = callees(c);
+                        stack.push((c, cs));
+                    }
+                    Some(1) => return unsupported("recursive function calls"),
+                    Some(_) => {}
+                    None => return unsupported("call of an unknown function"),
+                },
+                None => {
+                    let f = *f;
+                    state[f.0 as usize] = 2;
+                    if f != main {
+                        order.push(f);
+                    }
+                    stack.pop();
+                }
+            }
+        }
+        self.subs = Some(vec![None; n]);
+        let jump = self.pc();
+        self.emit(Op::Jump { target: 0 })?;
+        for (slot, &f) in order.iter().enumerate() {
+            let func = &m.functions[f.0 as usize];
+            let Some(body) = &func.body else {
+                return unsupported(format!("`{}' has no body", func.name));
+            };
+            let locals = self.alloc_locals(f)?;
+            let ret = if func.return_type.is_void() {
+                Vec::new()
+            } else {
+                let n = self.size(func.return_type)?;
+                self.temps(n)?
+            };
+            let entry = self.pc();
+            let fs = self.new_slot();
+            self.emit(Op::SaveMask { slot: fs })?;
+            self.ctx.push((CtxKind::Function, fs));
+            self.frames.push(Frame {
+                func: f,
+                locals: locals.clone(),
+                ret: ret.clone(),
+            });
+            let r = self.block(body);
+            self.frames.pop();
+            self.ctx.pop();
+            r?;
+            self.emit(Op::RestoreMask { slot: fs })?;
+            self.emit(Op::Ret { slot: slot as u32 })?;
+            // This body's temporaries stay reserved: callers' live values
+            // must not share them.
+            self.next_reg = self.p.registers;
+            if let Some(subs) = &mut self.subs {
+                subs[f.0 as usize] = Some(Sub {
+                    entry,
+                    slot: slot as u32,
+                    locals,
+                    ret,
+                });
+            }
+        }
+        self.p.subroutines = order.len() as u32;
+        let here = self.pc();
+        self.patch(jump, here);
+        Ok(())
     }
 
     fn construct(&mut self, ty: Type, args: &[Expr]) -> R<Val> {

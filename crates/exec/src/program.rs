@@ -292,6 +292,21 @@ pub(crate) enum Op {
         start: u32,
         end: u32,
     },
+    /// Subroutine call: `return_address[slot] = pc + 1`, jump to `target`.
+    Call {
+        target: u32,
+        slot: u32,
+    },
+    /// Jump to `return_address[slot]`.
+    Ret {
+        slot: u32,
+    },
+    /// After a subroutine call: removes the discarded lanes from `cur` and
+    /// from the mask slots `kill_slots[start..end]`.
+    SyncDiscard {
+        start: u32,
+        end: u32,
+    },
 }
 
 /// How a texture lookup chooses its level of detail.
@@ -343,6 +358,8 @@ pub(crate) struct Program {
     pub kill_slots: Vec<u32>,
     pub registers: u32,
     pub mask_slots: u32,
+    /// Number of subroutines (return-address slots).
+    pub subroutines: u32,
     /// Registers set before the first op (constant initializers).
     pub init: Vec<(Reg, u32)>,
     pub statements: Vec<StatementMark>,
@@ -431,7 +448,10 @@ impl Op {
             | Jump { .. }
             | LoopIter
             | Kill { .. }
-            | Discard { .. } => {}
+            | Discard { .. }
+            | Call { .. }
+            | Ret { .. }
+            | SyncDiscard { .. } => {}
         }
     }
 }
@@ -461,7 +481,13 @@ impl Program {
                 Op::JumpIfNone { target } | Op::Jump { target } => {
                     target as usize <= self.ops.len()
                 }
-                Op::Kill { start, end } | Op::Discard { start, end } => {
+                Op::Call { target, slot } => {
+                    target as usize <= self.ops.len() && slot < self.subroutines
+                }
+                Op::Ret { slot } => slot < self.subroutines,
+                Op::Kill { start, end }
+                | Op::Discard { start, end }
+                | Op::SyncDiscard { start, end } => {
                     start <= end
                         && (end as usize) <= self.kill_slots.len()
                         && self.kill_slots[start as usize..end as usize]

@@ -76,6 +76,17 @@ fn frag_colors(src: &str, unis: &[(&str, &[u32])]) -> (Vec<[f32; 4]>, LaneMask) 
     let mut b = frag_batch(&k);
     k.run(&mut b, &u, &NoTextures).expect("runs");
     let c = output(&k, &b, "gl_FragColor");
+    // The same program with every function as a subroutine agrees.
+    let stage = link_one(Stage::Fragment, src).unwrap();
+    let sk = Kernel::with_inline_limit(&stage, 0).expect("lowers");
+    let mut sb = frag_batch(&sk);
+    sk.run(&mut sb, &u, &NoTextures).expect("runs");
+    assert_eq!(sb.discarded, b.discarded, "subroutine mode: discarded");
+    assert_eq!(
+        output(&sk, &sb, "gl_FragColor"),
+        c,
+        "subroutine mode: gl_FragColor"
+    );
     (
         (0..LANES)
             .map(|l| [c[0][l], c[1][l], c[2][l], c[3][l]])

@@ -802,3 +802,97 @@ fn wide_lines() {
         assert_eq!(px[y * 8 + 3] != [0; 4], (3..6).contains(&y), "row {y}");
     }
 }
+
+#[test]
+fn garbage_geometry_does_not_panic() {
+    let specials = [
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        1e-30,
+        -1e-30,
+        1e30,
+        -1e30,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::NAN,
+        f32::MAX,
+        f32::MIN_POSITIVE,
+        0.5,
+        3.0,
+    ];
+    let mut seed = 0x1234_5678u32;
+    let mut next = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        seed
+    };
+    let modes = [
+        Mode::Points,
+        Mode::Lines,
+        Mode::LineStrip,
+        Mode::LineLoop,
+        Mode::Triangles,
+        Mode::TriangleStrip,
+        Mode::TriangleFan,
+        Mode::Quads,
+        Mode::QuadStrip,
+        Mode::Polygon,
+    ];
+    for round in 0..200 {
+        let n = (next() % 9) as usize;
+        let mut v = Verts::default();
+        for _ in 0..n {
+            let mut p = [0.0f32; 4];
+            for c in &mut p {
+                *c = if next() % 3 == 0 {
+                    specials[(next() as usize) % specials.len()]
+                } else {
+                    (next() % 2000) as f32 / 500.0 - 2.0
+                };
+            }
+            v.pos.push(p);
+            v.color.push([f32::NAN, 2.0, -1.0, 0.5]);
+            v.back.push([0.0; 4]);
+        }
+        let mut st = state(
+            [0, 7, -5, 1 << 30][round % 4],
+            [0, 7, 1 << 30, i32::MAX][(round / 4) % 4],
+        );
+        st.viewport.x = [0, -3, i32::MIN, i32::MAX][(round / 16) % 4];
+        st.point_size = specials[round % specials.len()];
+        st.line_width = specials[(round + 3) % specials.len()];
+        st.polygon_mode = [
+            [PolygonMode::Fill; 2],
+            [PolygonMode::Line; 2],
+            [PolygonMode::Point; 2],
+        ][round % 3];
+        st.point_sprite = round % 2 == 0;
+        st.depth_range = (0.0, 1.0);
+        st.clip_planes[1] = Some([specials[round % 15], 1.0, 0.0, 0.5]);
+        st.polygon_offset = PolygonOffset {
+            factor: specials[(round + 5) % 15],
+            units: 1.0,
+            fill: true,
+            line: true,
+            point: true,
+        };
+        st.depth_test = Some(CompareFunc::Less);
+        let mut fb = Framebuffer::new(9, 7, ColorFormat::Rgba8, true, true);
+        let idx: Vec<u32> = (0..n as u32).chain([u32::MAX, 0]).collect();
+        let _ = draw_stages(
+            &mut fb,
+            &st,
+            &pass_vs(),
+            &[],
+            &color_fs(),
+            &[],
+            modes[round % modes.len()],
+            &idx,
+            &v,
+            &TextureUnits::default(),
+        );
+    }
+}

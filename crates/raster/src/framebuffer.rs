@@ -56,7 +56,8 @@ impl ColorBuffer {
 /// clamp to [0, 1], then round to nearest (`floor(c * 255 + 0.5)`). NaN → 0.
 pub fn float_to_unorm8(c: f32) -> u8 {
     let c = if c > 0.0 { c.min(1.0) } else { 0.0 };
-    glsl::math::floor(c * 255.0 + 0.5) as u8
+    // The value is in [0.5, 255.5]: truncation is floor.
+    (c * 255.0 + 0.5) as u8
 }
 
 pub fn unorm8_to_float(b: u8) -> f32 {
@@ -68,7 +69,8 @@ pub fn unorm8_to_float(b: u8) -> f32 {
 /// NaN becomes 0.
 pub fn depth_to_fixed(z: f32) -> u32 {
     let z = if z > 0.0 { z.min(1.0) } else { 0.0 };
-    let k = (z as f64 * DEPTH_MAX as f64 + 0.5).floor();
+    // Non-negative: truncation is floor.
+    let k = z as f64 * DEPTH_MAX as f64 + 0.5;
     (k as u32).min(DEPTH_MAX)
 }
 

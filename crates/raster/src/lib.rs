@@ -53,10 +53,9 @@ mod shade;
 mod state;
 mod texture;
 
-// TEMPORARY until the exec crate lands: `ex` names the exec API.
-#[allow(unused)]
-mod exec_shim;
-pub(crate) use exec as ex;
+#[cfg(test)]
+mod e2e_tests;
+pub(crate) use ::exec as ex;
 
 pub use framebuffer::{
     depth_to_fixed, fixed_to_depth, float_to_unorm8, unorm8_to_float, ColorBuffer, ColorFormat,

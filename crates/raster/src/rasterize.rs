@@ -273,7 +273,7 @@ impl Shape {
             let c = i as f64 + 0.5;
             let m = a1 + (c - a0) * slope;
             let j0 = (m - (*width - 1) as f64 / 2.0).floor() as i64;
-            for j in j0..j0 + width {
+            for j in j0..j0.saturating_add(*width) {
                 let (x, y) = if x_major { (i, j) } else { (j, i) };
                 if inside(r, x, y) {
                     out.push((x, y));

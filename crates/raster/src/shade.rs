@@ -205,8 +205,10 @@ impl FragmentStage<'_> {
                 };
                 let mut colors = [[0.0f32; 4]; MAX_DRAW_BUFFERS];
                 for (i, c) in colors.iter_mut().enumerate() {
-                    if let Some(o) = layout.color_out[i] {
-                        *c = std::array::from_fn(|j| get(&batch, o + j, lane));
+                    if let (Some(o), Some(_)) = (layout.color_out[i], self.state.draw_buffers[i]) {
+                        for (j, v) in c.iter_mut().enumerate() {
+                            *v = get(&batch, o + j, lane);
+                        }
                     }
                 }
                 let frag = Fragment {

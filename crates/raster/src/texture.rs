@@ -512,7 +512,11 @@ fn filter(
             let i0 = math::floor(v);
             let alpha = v - i0;
             let i0 = i0 as i64;
-            (index(i0, wrap, n), index(i0 + 1, wrap, n), alpha)
+            (
+                index(i0, wrap, n),
+                index(i0.saturating_add(1), wrap, n),
+                alpha,
+            )
         } else {
             let i = math::floor(u) as i64;
             let i = match wrap {
@@ -762,5 +766,59 @@ mod tests {
         tex.compare = Some(CompareFunc::Greater);
         // R is clamped to [0, 1]: 7 > 0.5.
         assert_eq!(s(&tex, 7.0), [0.0, 0.0, 0.0, 1.0]);
+    }
+
+    #[test]
+    fn garbage_coordinates_do_not_panic() {
+        let vals = [
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            1e30,
+            -1e30,
+            0.0,
+            1.0,
+            f32::MAX,
+        ];
+        for target in [
+            TextureTarget::Tex1D,
+            TextureTarget::Tex2D,
+            TextureTarget::Tex3D,
+            TextureTarget::Cube,
+        ] {
+            let depth = if target == TextureTarget::Cube { 6 } else { 2 };
+            let h = if target == TextureTarget::Tex1D { 1 } else { 2 };
+            let d = if target == TextureTarget::Tex3D || target == TextureTarget::Cube {
+                depth
+            } else {
+                1
+            };
+            let img = Image::new(2, h, d, vec![[0.5; 4]; (2 * h * d) as usize]);
+            for wrap in [
+                Wrap::Repeat,
+                Wrap::Clamp,
+                Wrap::ClampToEdge,
+                Wrap::ClampToBorder,
+                Wrap::MirroredRepeat,
+            ] {
+                for filter in [MinFilter::Nearest, MinFilter::LinearMipmapLinear] {
+                    let mut tex = Texture::new(target, vec![img.clone()]);
+                    tex.wrap = [wrap; 3];
+                    tex.min_filter = filter;
+                    tex.mag_filter = MagFilter::Linear;
+                    tex.max_level = 0;
+                    tex.depth_format = true;
+                    tex.compare = Some(CompareFunc::Less);
+                    let q = tex.last_level().expect("complete");
+                    for &a in &vals {
+                        for &b in &vals {
+                            let lod = LodBase::Derivatives([a, b, a], [b, a, 1.0]);
+                            let _ = sample(&tex, q, [a, b, 0.25], lod, b, Some(a));
+                            let _ = sample(&tex, q, [b, 0.5, a], LodBase::Value(a), 0.0, None);
+                        }
+                    }
+                }
+            }
+        }
     }
 }

@@ -232,7 +232,10 @@ fn piglit_execution_shaders_lower_and_run() {
     let (mut files, mut linked, mut lowered, mut ran) = (0, 0, 0, 0);
     let mut problems = Vec::new();
     for line in list.lines() {
-        let Some(start) = line.find("'tests/").or_else(|| line.find("'generated_tests/")) else {
+        let Some(start) = line
+            .find("'tests/")
+            .or_else(|| line.find("'generated_tests/"))
+        else {
             continue;
         };
         let rest = &line[start + 1..];
