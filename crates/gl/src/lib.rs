@@ -1,1 +1,206 @@
-//! The OpenGL 2.1 state machine (being written; see docs/ARCHITECTURE.md).
+//! # shaderbox-gl: the OpenGL 2.1 state machine
+//!
+//! [`Context`] holds the state of one GL 2.1 (compatibility) context and its
+//! objects; its methods are the GL entry points in snake case: `glFooBar4fv`
+//! is `foo_bar_4fv` (`glCreateShader` → [`Context::create_shader`],
+//! `glUniformMatrix2x3fv` → [`Context::uniform_matrix_2x3fv`]). Enum values
+//! are GL's, in [`enums`].
+//!
+//! ## Contract
+//! - Every invalid call records the GL 2.1 error (`GL_INVALID_ENUM`,
+//!   `GL_INVALID_VALUE`, `GL_INVALID_OPERATION`) and has no other effect;
+//!   [`Context::get_error`] returns and clears the first one recorded. No
+//!   call panics, whatever its arguments.
+//! - Shaders compile with [`glsl::compile`] and link with
+//!   [`glsl::link::link`]; info logs are theirs.
+//! - Uniforms: every uniform a program's stages declare is active (even if
+//!   unused, which is generous but allowed: GL 2.1 §2.15.3 only requires
+//!   the used ones). Locations number every element of every basic-typed
+//!   leaf (`s[1].a[2]`), in declaration order; `glUniform*` checks size and
+//!   type as §2.15.3 says. Built-in `gl_*` uniforms are derived from the GL
+//!   state at draw time ([`builtins`]).
+//! - Client vertex arrays are byte copies ([`ArrayData::Client`]) since a
+//!   Rust context cannot keep raw pointers; a C ABI maps pointers onto them.
+//! - Deterministic: no platform math (matrices use [`glsl::math`]), no
+//!   hash-order dependence.
+//!
+//! - Draws run the program's `exec` kernels (or generated fixed-function
+//!   stages, [`ffgen`]) through `raster::draw` ([`draw`]).
+//!
+//! ## Limitations
+//! - No display lists, selection/feedback, accumulation buffer, color index
+//!   mode, evaluators, pixel transfer (glDrawPixels/CopyPixels), queries.
+
+pub mod builtins;
+pub mod draw;
+pub mod enums;
+pub mod ffgen;
+pub mod get;
+pub mod matrix;
+pub mod objects;
+pub mod program;
+pub mod state;
+pub mod uniform;
+pub mod vertex;
+
+use enums::*;
+use std::collections::BTreeMap;
+
+pub use program::{ActiveInfo, ProgramObj, ShaderObj};
+pub use state::{Light, Material};
+pub use vertex::{ArrayData, ArrayState};
+
+/// Maximum depth of every matrix stack.
+pub const MAX_MATRIX_STACK_DEPTH: usize = 32;
+/// Fixed-function texture units (texture coordinate sets and matrices).
+pub const MAX_TEXTURE_UNITS: usize = glsl::limits::MAX_TEXTURE_UNITS as usize;
+/// Texture image units (samplers).
+pub const MAX_TEXTURE_IMAGE_UNITS: usize = glsl::limits::MAX_COMBINED_TEXTURE_IMAGE_UNITS as usize;
+pub const MAX_LIGHTS: usize = glsl::limits::MAX_LIGHTS as usize;
+pub const MAX_CLIP_PLANES: usize = glsl::limits::MAX_CLIP_PLANES as usize;
+pub const MAX_VERTEX_ATTRIBS: usize = glsl::limits::MAX_VERTEX_ATTRIBS as usize;
+pub const MAX_DRAW_BUFFERS: usize = glsl::limits::MAX_DRAW_BUFFERS as usize;
+/// Largest texture / renderbuffer / viewport dimension.
+pub const MAX_TEXTURE_SIZE: i32 = 8192;
+
+/// A GL context.
+pub struct Context {
+    pub(crate) error: u32,
+    pub(crate) width: i32,
+    pub(crate) height: i32,
+    // Objects.
+    pub(crate) next_name: u32,
+    pub(crate) shaders: BTreeMap<u32, ShaderObj>,
+    pub(crate) programs: BTreeMap<u32, ProgramObj>,
+    pub(crate) current_program: u32,
+    pub(crate) objects: objects::Objects,
+    // Transformation state.
+    pub(crate) matrix_mode: u32,
+    pub(crate) modelview: Vec<matrix::Mat4>,
+    pub(crate) projection: Vec<matrix::Mat4>,
+    pub(crate) texture_matrix: Vec<Vec<matrix::Mat4>>,
+    pub(crate) viewport: [i32; 4],
+    pub(crate) depth_range: [f32; 2],
+    pub(crate) clip_planes: [[f32; 4]; MAX_CLIP_PLANES],
+    // Everything else fixed-function.
+    pub(crate) st: state::State,
+    // Vertex arrays and current values.
+    pub(crate) va: vertex::VertexState,
+    /// The default framebuffer.
+    pub(crate) fb: raster::Framebuffer,
+    pub(crate) cache: draw::DrawCache,
+}
+
+impl Default for Context {
+    fn default() -> Self {
+        Context::new(1, 1)
+    }
+}
+
+impl Context {
+    /// A context whose default framebuffer is `width` x `height` RGBA8 with
+    /// a 24-bit depth and an 8-bit stencil buffer.
+    pub fn new(width: i32, height: i32) -> Context {
+        let (w, h) = (
+            width.clamp(1, MAX_TEXTURE_SIZE),
+            height.clamp(1, MAX_TEXTURE_SIZE),
+        );
+        Context {
+            error: GL_NO_ERROR,
+            width: w,
+            height: h,
+            next_name: 1,
+            shaders: BTreeMap::new(),
+            programs: BTreeMap::new(),
+            current_program: 0,
+            objects: objects::Objects::new(w, h),
+            matrix_mode: GL_MODELVIEW,
+            modelview: vec![matrix::IDENTITY],
+            projection: vec![matrix::IDENTITY],
+            texture_matrix: vec![vec![matrix::IDENTITY]; MAX_TEXTURE_UNITS],
+            viewport: [0, 0, w, h],
+            depth_range: [0.0, 1.0],
+            clip_planes: [[0.0; 4]; MAX_CLIP_PLANES],
+            st: state::State::new(w, h),
+            va: vertex::VertexState::new(),
+            fb: raster::Framebuffer::new(
+                w as u32,
+                h as u32,
+                raster::ColorFormat::Rgba8,
+                true,
+                true,
+            ),
+            cache: draw::DrawCache::default(),
+        }
+    }
+
+    /// Width of the default framebuffer.
+    pub fn width(&self) -> i32 {
+        self.width
+    }
+
+    /// Height of the default framebuffer.
+    pub fn height(&self) -> i32 {
+        self.height
+    }
+
+    /// Records `err` unless an earlier error is still pending (GL 2.1 §2.5:
+    /// one error flag; later errors are dropped until glGetError).
+    pub(crate) fn set_error(&mut self, err: u32) {
+        if self.error == GL_NO_ERROR {
+            self.error = err;
+        }
+    }
+
+    /// glGetError.
+    pub fn get_error(&mut self) -> u32 {
+        std::mem::replace(&mut self.error, GL_NO_ERROR)
+    }
+
+    /// True between glBegin and glEnd; most commands are then
+    /// `GL_INVALID_OPERATION` (GL 2.1 §2.6.3).
+    pub(crate) fn in_begin_end(&self) -> bool {
+        self.va.begin_mode.is_some()
+    }
+
+    /// Records `GL_INVALID_OPERATION` and returns true inside glBegin/glEnd.
+    pub(crate) fn reject_in_begin(&mut self) -> bool {
+        if self.in_begin_end() {
+            self.set_error(GL_INVALID_OPERATION);
+            true
+        } else {
+            false
+        }
+    }
+
+    fn fresh_name(&mut self) -> u32 {
+        let n = self.next_name;
+        self.next_name = self.next_name.wrapping_add(1).max(1);
+        n
+    }
+
+    /// glFinish: drawing is synchronous, nothing to wait for.
+    pub fn finish(&mut self) {
+        self.reject_in_begin();
+    }
+
+    /// glFlush.
+    pub fn flush(&mut self) {
+        self.reject_in_begin();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn first_error_wins_and_clears() {
+        let mut ctx = Context::new(4, 4);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        ctx.enable(0xdead);
+        ctx.viewport(0, 0, -1, 1);
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    }
+}

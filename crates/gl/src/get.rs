@@ -1,0 +1,370 @@
+//! State queries: glGetIntegerv / glGetFloatv / glGetBooleanv /
+//! glGetDoublev and glGetString (GL 2.1 §6.1, conversions of §6.1.2).
+
+use crate::enums::*;
+use crate::Context;
+use glsl::limits;
+
+/// How a queried value converts between the glGet* flavours.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    /// Integers and enums: floats convert exactly.
+    Int,
+    /// Floats: integer queries round to nearest.
+    Float,
+    /// Colors / normals: integer queries map [-1, 1] linearly onto the
+    /// integer range (GL 2.1 §6.1.2).
+    Normalized,
+    Bool,
+}
+
+/// The extensions shaderbox implements (and reports).
+pub const EXTENSIONS: &[&str] = &[
+    "GL_ARB_multitexture",
+    "GL_ARB_texture_cube_map",
+    "GL_ARB_texture_env_add",
+    "GL_ARB_depth_texture",
+    "GL_ARB_shadow",
+    "GL_ARB_texture_non_power_of_two",
+    "GL_ARB_texture_float",
+    "GL_ARB_vertex_buffer_object",
+    "GL_ARB_shader_objects",
+    "GL_ARB_vertex_shader",
+    "GL_ARB_fragment_shader",
+    "GL_ARB_shading_language_100",
+    "GL_ARB_draw_buffers",
+    "GL_ARB_point_sprite",
+    "GL_ARB_framebuffer_object",
+    "GL_EXT_framebuffer_object",
+    "GL_EXT_blend_color",
+    "GL_EXT_blend_minmax",
+    "GL_EXT_blend_subtract",
+    "GL_EXT_blend_func_separate",
+    "GL_EXT_blend_equation_separate",
+    "GL_EXT_stencil_two_side",
+    "GL_EXT_stencil_wrap",
+    "GL_EXT_texture_lod_bias",
+    "GL_EXT_fog_coord",
+    "GL_EXT_secondary_color",
+    "GL_SGIS_generate_mipmap",
+];
+
+fn b(x: bool) -> f64 {
+    if x {
+        1.0
+    } else {
+        0.0
+    }
+}
+
+impl Context {
+    fn query(&mut self, pname: u32) -> Option<(Vec<f64>, Kind)> {
+        use Kind::*;
+        let unit = self.st.active_texture as usize;
+        let int = |v: &[i64]| Some((v.iter().map(|&x| x as f64).collect(), Int));
+        let flt = |v: &[f32]| Some((v.iter().map(|&x| x as f64).collect(), Float));
+        let nrm = |v: &[f32]| Some((v.iter().map(|&x| x as f64).collect(), Normalized));
+        let st = &self.st;
+        let fb = self.objects.draw_framebuffer;
+        match pname {
+            GL_MAX_LIGHTS => int(&[limits::MAX_LIGHTS as i64]),
+            GL_MAX_CLIP_PLANES => int(&[limits::MAX_CLIP_PLANES as i64]),
+            GL_MAX_TEXTURE_UNITS => int(&[limits::MAX_TEXTURE_UNITS as i64]),
+            GL_MAX_TEXTURE_COORDS => int(&[limits::MAX_TEXTURE_COORDS as i64]),
+            GL_MAX_TEXTURE_IMAGE_UNITS => int(&[limits::MAX_TEXTURE_IMAGE_UNITS as i64]),
+            GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS => {
+                int(&[limits::MAX_VERTEX_TEXTURE_IMAGE_UNITS as i64])
+            }
+            GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS => {
+                int(&[limits::MAX_COMBINED_TEXTURE_IMAGE_UNITS as i64])
+            }
+            GL_MAX_VERTEX_ATTRIBS => int(&[limits::MAX_VERTEX_ATTRIBS as i64]),
+            GL_MAX_VARYING_FLOATS => int(&[limits::MAX_VARYING_FLOATS as i64]),
+            GL_MAX_VERTEX_UNIFORM_COMPONENTS => {
+                int(&[limits::MAX_VERTEX_UNIFORM_COMPONENTS as i64])
+            }
+            GL_MAX_FRAGMENT_UNIFORM_COMPONENTS => {
+                int(&[limits::MAX_FRAGMENT_UNIFORM_COMPONENTS as i64])
+            }
+            GL_MAX_DRAW_BUFFERS | GL_MAX_COLOR_ATTACHMENTS => {
+                int(&[limits::MAX_DRAW_BUFFERS as i64])
+            }
+            GL_MAX_TEXTURE_SIZE | GL_MAX_CUBE_MAP_TEXTURE_SIZE | GL_MAX_RENDERBUFFER_SIZE => {
+                int(&[crate::MAX_TEXTURE_SIZE as i64])
+            }
+            GL_MAX_3D_TEXTURE_SIZE => int(&[2048]),
+            GL_MAX_VIEWPORT_DIMS => int(&[crate::MAX_TEXTURE_SIZE as i64; 2]),
+            GL_MAX_MODELVIEW_STACK_DEPTH
+            | GL_MAX_PROJECTION_STACK_DEPTH
+            | GL_MAX_TEXTURE_STACK_DEPTH => int(&[crate::MAX_MATRIX_STACK_DEPTH as i64]),
+            GL_MAX_ELEMENTS_VERTICES | GL_MAX_ELEMENTS_INDICES => int(&[1 << 20]),
+            GL_MAX_TEXTURE_LOD_BIAS => flt(&[16.0]),
+            GL_SUBPIXEL_BITS => int(&[8]),
+            GL_NUM_COMPRESSED_TEXTURE_FORMATS | GL_SAMPLE_BUFFERS | GL_SAMPLES => int(&[0]),
+            GL_RED_BITS | GL_GREEN_BITS | GL_BLUE_BITS | GL_ALPHA_BITS => int(&[8]),
+            GL_DEPTH_BITS => int(&[24]),
+            GL_STENCIL_BITS => int(&[8]),
+            GL_DOUBLEBUFFER => Some((vec![1.0], Bool)),
+            GL_RGBA_MODE => Some((vec![1.0], Bool)),
+            GL_VIEWPORT => int(&self.viewport.map(|x| x as i64)),
+            GL_DEPTH_RANGE => nrm(&self.depth_range),
+            GL_SCISSOR_BOX => int(&st.scissor.map(|x| x as i64)),
+            GL_COLOR_CLEAR_VALUE => nrm(&st.clear_color),
+            GL_DEPTH_CLEAR_VALUE => nrm(&[st.clear_depth]),
+            GL_STENCIL_CLEAR_VALUE => int(&[st.clear_stencil as i64]),
+            GL_CURRENT_PROGRAM => int(&[self.current_program as i64]),
+            GL_CURRENT_COLOR => nrm(&self.va.color),
+            GL_CURRENT_SECONDARY_COLOR => nrm(&self.va.secondary),
+            GL_CURRENT_NORMAL => nrm(&self.va.normal[..3]),
+            GL_CURRENT_TEXTURE_COORDS => {
+                flt(self.va.tex.get(unit).map_or(&[0.0; 4][..], |t| &t[..]))
+            }
+            GL_CURRENT_FOG_COORD => flt(&self.va.fog[..1]),
+            GL_MODELVIEW_MATRIX => flt(&self.modelview_matrix()),
+            GL_PROJECTION_MATRIX => flt(&self.projection_matrix()),
+            GL_TEXTURE_MATRIX => flt(&self.texture_matrix(unit)),
+            GL_TRANSPOSE_MODELVIEW_MATRIX => {
+                flt(&crate::matrix::transpose(&self.modelview_matrix()))
+            }
+            GL_TRANSPOSE_PROJECTION_MATRIX => {
+                flt(&crate::matrix::transpose(&self.projection_matrix()))
+            }
+            GL_MODELVIEW_STACK_DEPTH => int(&[self.modelview.len() as i64]),
+            GL_PROJECTION_STACK_DEPTH => int(&[self.projection.len() as i64]),
+            GL_TEXTURE_STACK_DEPTH => {
+                int(&[self.texture_matrix.get(unit).map_or(1, |s| s.len()) as i64])
+            }
+            GL_MATRIX_MODE => int(&[self.matrix_mode as i64]),
+            GL_ACTIVE_TEXTURE => int(&[(GL_TEXTURE0 + st.active_texture) as i64]),
+            GL_CLIENT_ACTIVE_TEXTURE => {
+                int(&[(GL_TEXTURE0 + self.va.client_active_texture) as i64])
+            }
+            GL_TEXTURE_BINDING_1D
+            | GL_TEXTURE_BINDING_2D
+            | GL_TEXTURE_BINDING_3D
+            | GL_TEXTURE_BINDING_CUBE_MAP => {
+                let ti = match pname {
+                    GL_TEXTURE_BINDING_1D => 0,
+                    GL_TEXTURE_BINDING_2D => 1,
+                    GL_TEXTURE_BINDING_3D => 2,
+                    _ => 3,
+                };
+                int(&[self.objects.bound.get(unit).map_or(0, |b| b[ti]) as i64])
+            }
+            GL_ARRAY_BUFFER_BINDING => int(&[self.va.array_buffer as i64]),
+            GL_ELEMENT_ARRAY_BUFFER_BINDING => int(&[self.va.element_buffer as i64]),
+            GL_FRAMEBUFFER_BINDING => int(&[fb as i64]),
+            GL_READ_FRAMEBUFFER_BINDING => int(&[self.objects.read_framebuffer as i64]),
+            GL_RENDERBUFFER_BINDING => int(&[self.objects.bound_renderbuffer as i64]),
+            GL_BLEND_SRC | GL_BLEND_SRC_RGB => int(&[st.blend_src[0] as i64]),
+            GL_BLEND_DST | GL_BLEND_DST_RGB => int(&[st.blend_dst[0] as i64]),
+            GL_BLEND_SRC_ALPHA => int(&[st.blend_src[1] as i64]),
+            GL_BLEND_DST_ALPHA => int(&[st.blend_dst[1] as i64]),
+            GL_BLEND_EQUATION_RGB => int(&[st.blend_eq[0] as i64]),
+            GL_BLEND_EQUATION_ALPHA => int(&[st.blend_eq[1] as i64]),
+            GL_BLEND_COLOR => nrm(&st.blend_color),
+            GL_LOGIC_OP_MODE => int(&[st.logic_op as i64]),
+            GL_DEPTH_FUNC => int(&[st.depth_func as i64]),
+            GL_DEPTH_WRITEMASK => Some((vec![b(st.depth_mask)], Bool)),
+            GL_COLOR_WRITEMASK => Some((st.color_mask.iter().map(|&m| b(m)).collect(), Bool)),
+            GL_STENCIL_FUNC => int(&[st.stencil[0].func as i64]),
+            GL_STENCIL_REF => int(&[st.stencil[0].reference as i64]),
+            GL_STENCIL_VALUE_MASK => int(&[st.stencil[0].value_mask as i32 as i64]),
+            GL_STENCIL_FAIL => int(&[st.stencil[0].fail as i64]),
+            GL_STENCIL_PASS_DEPTH_FAIL => int(&[st.stencil[0].zfail as i64]),
+            GL_STENCIL_PASS_DEPTH_PASS => int(&[st.stencil[0].zpass as i64]),
+            GL_STENCIL_WRITEMASK => int(&[st.stencil[0].write_mask as i32 as i64]),
+            GL_STENCIL_BACK_FUNC => int(&[st.stencil[1].func as i64]),
+            GL_STENCIL_BACK_REF => int(&[st.stencil[1].reference as i64]),
+            GL_STENCIL_BACK_VALUE_MASK => int(&[st.stencil[1].value_mask as i32 as i64]),
+            GL_STENCIL_BACK_FAIL => int(&[st.stencil[1].fail as i64]),
+            GL_STENCIL_BACK_PASS_DEPTH_FAIL => int(&[st.stencil[1].zfail as i64]),
+            GL_STENCIL_BACK_PASS_DEPTH_PASS => int(&[st.stencil[1].zpass as i64]),
+            GL_STENCIL_BACK_WRITEMASK => int(&[st.stencil[1].write_mask as i32 as i64]),
+            GL_ALPHA_TEST_FUNC => int(&[st.alpha_func as i64]),
+            GL_ALPHA_TEST_REF => nrm(&[st.alpha_ref]),
+            GL_CULL_FACE_MODE => int(&[st.cull_face as i64]),
+            GL_FRONT_FACE => int(&[st.front_face as i64]),
+            GL_POLYGON_MODE => int(&st.polygon_mode.map(|m| m as i64)),
+            GL_POLYGON_OFFSET_FACTOR => flt(&st.polygon_offset[..1]),
+            GL_POLYGON_OFFSET_UNITS => flt(&st.polygon_offset[1..]),
+            GL_SHADE_MODEL => int(&[st.shade_model as i64]),
+            GL_POINT_SIZE => flt(&[st.point.size]),
+            GL_POINT_SIZE_MIN => flt(&[st.point.size_min]),
+            GL_POINT_SIZE_MAX => flt(&[st.point.size_max]),
+            GL_POINT_FADE_THRESHOLD_SIZE => flt(&[st.point.fade_threshold]),
+            GL_POINT_DISTANCE_ATTENUATION => flt(&st.point.attenuation),
+            GL_POINT_SIZE_RANGE | GL_ALIASED_POINT_SIZE_RANGE => {
+                flt(&[1.0, crate::state::MAX_POINT_SIZE])
+            }
+            GL_POINT_SIZE_GRANULARITY | GL_LINE_WIDTH_GRANULARITY => flt(&[0.125]),
+            GL_LINE_WIDTH => flt(&[st.line_width]),
+            GL_LINE_WIDTH_RANGE | GL_ALIASED_LINE_WIDTH_RANGE => {
+                flt(&[1.0, crate::state::MAX_POINT_SIZE])
+            }
+            GL_UNPACK_ALIGNMENT => int(&[st.unpack_alignment as i64]),
+            GL_PACK_ALIGNMENT => int(&[st.pack_alignment as i64]),
+            GL_FOG_MODE => int(&[st.fog.mode as i64]),
+            GL_FOG_DENSITY => flt(&[st.fog.density]),
+            GL_FOG_START => flt(&[st.fog.start]),
+            GL_FOG_END => flt(&[st.fog.end]),
+            GL_FOG_COLOR => nrm(&st.fog.color),
+            GL_FOG_COORD_SRC => int(&[st.fog.coord_src as i64]),
+            GL_LIGHT_MODEL_AMBIENT => nrm(&st.light_model_ambient),
+            GL_LIGHT_MODEL_LOCAL_VIEWER => Some((vec![b(st.light_model_local_viewer)], Bool)),
+            GL_LIGHT_MODEL_TWO_SIDE => Some((vec![b(st.light_model_two_side)], Bool)),
+            GL_LIGHT_MODEL_COLOR_CONTROL => int(&[st.light_model_color_control as i64]),
+            GL_COLOR_MATERIAL_FACE => int(&[st.color_material_face as i64]),
+            GL_COLOR_MATERIAL_PARAMETER => int(&[st.color_material_mode as i64]),
+            GL_DRAW_BUFFER => {
+                let db = if fb == 0 {
+                    st.draw_buffers.first().copied()
+                } else {
+                    self.objects
+                        .framebuffers
+                        .get(&fb)
+                        .and_then(|f| f.draw_buffers.first().copied())
+                };
+                int(&[db.unwrap_or(GL_NONE) as i64])
+            }
+            p if (GL_DRAW_BUFFER0..GL_DRAW_BUFFER0 + crate::MAX_DRAW_BUFFERS as u32)
+                .contains(&p) =>
+            {
+                let i = (p - GL_DRAW_BUFFER0) as usize;
+                let list = if fb == 0 {
+                    st.draw_buffers.clone()
+                } else {
+                    self.objects
+                        .framebuffers
+                        .get(&fb)
+                        .map(|f| f.draw_buffers.clone())
+                        .unwrap_or_default()
+                };
+                int(&[list.get(i).copied().unwrap_or(GL_NONE) as i64])
+            }
+            GL_READ_BUFFER => {
+                let rb = self.objects.read_framebuffer;
+                let v = if rb == 0 {
+                    st.read_buffer
+                } else {
+                    self.objects
+                        .framebuffers
+                        .get(&rb)
+                        .map_or(GL_NONE, |f| f.read_buffer)
+                };
+                int(&[v as i64])
+            }
+            _ => {
+                // Capabilities are queryable too (GL 2.1 §6.1.1).
+                let saved = self.error;
+                let on = self.is_enabled(pname);
+                if self.error != saved && saved == GL_NO_ERROR {
+                    self.error = GL_NO_ERROR;
+                    return None;
+                }
+                Some((vec![b(on)], Bool))
+            }
+        }
+    }
+
+    /// glGetIntegerv.
+    pub fn get_integerv(&mut self, pname: u32) -> Vec<i32> {
+        match self.query(pname) {
+            Some((v, kind)) => v
+                .iter()
+                .map(|&x| match kind {
+                    Kind::Normalized => {
+                        let c = x.clamp(-1.0, 1.0);
+                        ((c * 4294967295.0 - 1.0) / 2.0).round() as i64 as i32
+                    }
+                    Kind::Float => x.round() as i32,
+                    _ => x as i64 as i32,
+                })
+                .collect(),
+            None => {
+                self.set_error(GL_INVALID_ENUM);
+                Vec::new()
+            }
+        }
+    }
+
+    /// glGetFloatv.
+    pub fn get_floatv(&mut self, pname: u32) -> Vec<f32> {
+        match self.query(pname) {
+            Some((v, _)) => v.iter().map(|&x| x as f32).collect(),
+            None => {
+                self.set_error(GL_INVALID_ENUM);
+                Vec::new()
+            }
+        }
+    }
+
+    /// glGetDoublev.
+    pub fn get_doublev(&mut self, pname: u32) -> Vec<f64> {
+        match self.query(pname) {
+            Some((v, _)) => v,
+            None => {
+                self.set_error(GL_INVALID_ENUM);
+                Vec::new()
+            }
+        }
+    }
+
+    /// glGetBooleanv (non-zero is true).
+    pub fn get_booleanv(&mut self, pname: u32) -> Vec<bool> {
+        match self.query(pname) {
+            Some((v, _)) => v.iter().map(|&x| x != 0.0).collect(),
+            None => {
+                self.set_error(GL_INVALID_ENUM);
+                Vec::new()
+            }
+        }
+    }
+
+    /// glGetString.
+    pub fn get_string(&mut self, name: u32) -> String {
+        match name {
+            GL_VENDOR => "shaderbox".into(),
+            GL_RENDERER => "shaderbox software renderer".into(),
+            GL_VERSION => "2.1 shaderbox".into(),
+            GL_SHADING_LANGUAGE_VERSION => "1.20".into(),
+            GL_EXTENSIONS => EXTENSIONS.join(" "),
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                String::new()
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn queries() {
+        let mut ctx = Context::new(32, 16);
+        assert_eq!(ctx.get_integerv(GL_VIEWPORT), vec![0, 0, 32, 16]);
+        assert_eq!(ctx.get_integerv(GL_MAX_TEXTURE_COORDS), vec![8]);
+        ctx.clear_color(1.0, 0.5, 0.0, 2.0);
+        assert_eq!(
+            ctx.get_floatv(GL_COLOR_CLEAR_VALUE),
+            vec![1.0, 0.5, 0.0, 1.0]
+        );
+        assert_eq!(ctx.get_integerv(GL_COLOR_CLEAR_VALUE)[0], i32::MAX);
+        assert_eq!(ctx.get_booleanv(GL_DEPTH_TEST), vec![false]);
+        ctx.enable(GL_DEPTH_TEST);
+        assert_eq!(ctx.get_integerv(GL_DEPTH_TEST), vec![1]);
+        assert!(ctx.get_integerv(0x1234).is_empty());
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+        assert!(ctx.get_string(GL_VERSION).starts_with("2.1"));
+        assert!(ctx
+            .get_string(GL_EXTENSIONS)
+            .contains("GL_EXT_framebuffer_object"));
+        ctx.translatef(1.0, 2.0, 3.0);
+        assert_eq!(
+            &ctx.get_floatv(GL_MODELVIEW_MATRIX)[12..15],
+            &[1.0, 2.0, 3.0]
+        );
+    }
+}

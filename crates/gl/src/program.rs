@@ -1,0 +1,976 @@
+//! Shader and program objects (GL 2.1 §2.15): creation, sources,
+//! compilation, attachment, linking, deletion semantics, attribute
+//! locations, glGetShaderiv/glGetProgramiv and the info logs.
+
+use crate::enums::*;
+use crate::uniform::{gl_type, SetterKind, UniformError, UniformTable, Word};
+use crate::Context;
+use glsl::ir::{Module, Storage};
+use glsl::types::{Base, Type};
+use glsl::{CompileOptions, Stage};
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+/// A shader object.
+#[derive(Clone, Debug)]
+pub struct ShaderObj {
+    pub kind: u32,
+    pub source: Vec<String>,
+    /// The result of the last glCompileShader.
+    pub compiled: Option<Arc<glsl::Shader>>,
+    pub delete_pending: bool,
+}
+
+impl ShaderObj {
+    pub fn stage(&self) -> Stage {
+        if self.kind == GL_VERTEX_SHADER {
+            Stage::Vertex
+        } else {
+            Stage::Fragment
+        }
+    }
+
+    pub fn compile_status(&self) -> bool {
+        self.compiled.as_ref().is_some_and(|s| s.ok())
+    }
+
+    pub fn info_log(&self) -> String {
+        self.compiled
+            .as_ref()
+            .map(|s| s.info_log())
+            .unwrap_or_default()
+    }
+}
+
+/// An active attribute or uniform as glGetActive* report it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ActiveInfo {
+    pub name: String,
+    pub size: i32,
+    pub ty: u32,
+}
+
+/// A user attribute of a linked program and its location.
+#[derive(Clone, Debug)]
+pub struct AttribInfo {
+    pub name: String,
+    pub ty: Type,
+    /// -1 for built-in attributes.
+    pub location: i32,
+}
+
+/// The result of a successful link.
+pub struct Executable {
+    pub program: glsl::link::Program,
+    pub uniforms: UniformTable,
+    pub attribs: Vec<AttribInfo>,
+    /// Lowered stages, built at link time; see [`crate::draw`].
+    pub kernels: crate::draw::Kernels,
+}
+
+impl Executable {
+    pub fn modules(&self) -> Vec<&Module> {
+        self.program.stages.iter().map(|s| &s.module).collect()
+    }
+
+    pub fn has_stage(&self, stage: Stage) -> bool {
+        self.program.stage(stage).is_some()
+    }
+}
+
+/// A program object.
+#[derive(Default)]
+pub struct ProgramObj {
+    pub attached: Vec<u32>,
+    pub bindings: BTreeMap<String, u32>,
+    pub link_status: bool,
+    pub validate_status: bool,
+    pub info_log: String,
+    pub exe: Option<Executable>,
+    pub delete_pending: bool,
+}
+
+impl Context {
+    /// glCreateShader.
+    pub fn create_shader(&mut self, kind: u32) -> u32 {
+        if self.reject_in_begin() {
+            return 0;
+        }
+        if kind != GL_VERTEX_SHADER && kind != GL_FRAGMENT_SHADER {
+            self.set_error(GL_INVALID_ENUM);
+            return 0;
+        }
+        let n = self.fresh_name();
+        self.shaders.insert(
+            n,
+            ShaderObj {
+                kind,
+                source: Vec::new(),
+                compiled: None,
+                delete_pending: false,
+            },
+        );
+        n
+    }
+
+    /// glCreateProgram.
+    pub fn create_program(&mut self) -> u32 {
+        if self.reject_in_begin() {
+            return 0;
+        }
+        let n = self.fresh_name();
+        self.programs.insert(n, ProgramObj::default());
+        n
+    }
+
+    /// Checks a shader name: `GL_INVALID_VALUE` if unknown,
+    /// `GL_INVALID_OPERATION` if it names a program.
+    fn check_shader(&mut self, shader: u32) -> bool {
+        if self.shaders.contains_key(&shader) {
+            return true;
+        }
+        let err = if self.programs.contains_key(&shader) {
+            GL_INVALID_OPERATION
+        } else {
+            GL_INVALID_VALUE
+        };
+        self.set_error(err);
+        false
+    }
+
+    fn check_program(&mut self, program: u32) -> bool {
+        if self.programs.contains_key(&program) {
+            return true;
+        }
+        let err = if self.shaders.contains_key(&program) {
+            GL_INVALID_OPERATION
+        } else {
+            GL_INVALID_VALUE
+        };
+        self.set_error(err);
+        false
+    }
+
+    /// glShaderSource (the strings are concatenated at compile time).
+    pub fn shader_source(&mut self, shader: u32, strings: &[&str]) {
+        if self.reject_in_begin() || !self.check_shader(shader) {
+            return;
+        }
+        if let Some(s) = self.shaders.get_mut(&shader) {
+            s.source = strings.iter().map(|s| s.to_string()).collect();
+        }
+    }
+
+    /// glCompileShader.
+    pub fn compile_shader(&mut self, shader: u32) {
+        if self.reject_in_begin() || !self.check_shader(shader) {
+            return;
+        }
+        if let Some(s) = self.shaders.get_mut(&shader) {
+            let strs: Vec<&str> = s.source.iter().map(String::as_str).collect();
+            let compiled = glsl::compile(&strs, &CompileOptions::new(s.stage()));
+            s.compiled = Some(Arc::new(compiled));
+        }
+    }
+
+    /// glDeleteShader: deleted now if attached nowhere, else when the last
+    /// program lets go of it (GL 2.1 §2.15.1). Name 0 is ignored.
+    pub fn delete_shader(&mut self, shader: u32) {
+        if shader == 0 || self.reject_in_begin() || !self.check_shader(shader) {
+            return;
+        }
+        let attached = self.programs.values().any(|p| p.attached.contains(&shader));
+        if attached {
+            if let Some(s) = self.shaders.get_mut(&shader) {
+                s.delete_pending = true;
+            }
+        } else {
+            self.shaders.remove(&shader);
+        }
+    }
+
+    /// glDeleteProgram: deleted now unless current (GL 2.1 §2.15.2).
+    pub fn delete_program(&mut self, program: u32) {
+        if program == 0 || self.reject_in_begin() || !self.check_program(program) {
+            return;
+        }
+        if self.current_program == program {
+            if let Some(p) = self.programs.get_mut(&program) {
+                p.delete_pending = true;
+            }
+        } else {
+            self.destroy_program(program);
+        }
+    }
+
+    fn destroy_program(&mut self, program: u32) {
+        if let Some(p) = self.programs.remove(&program) {
+            for s in p.attached {
+                self.release_shader(s);
+            }
+        }
+    }
+
+    /// Deletes a shader whose deletion was pending once no program holds it.
+    fn release_shader(&mut self, shader: u32) {
+        let pending = self.shaders.get(&shader).is_some_and(|s| s.delete_pending);
+        let attached = self.programs.values().any(|p| p.attached.contains(&shader));
+        if pending && !attached {
+            self.shaders.remove(&shader);
+        }
+    }
+
+    /// glIsShader.
+    pub fn is_shader(&self, name: u32) -> bool {
+        self.shaders.contains_key(&name)
+    }
+
+    /// glIsProgram.
+    pub fn is_program(&self, name: u32) -> bool {
+        self.programs.contains_key(&name)
+    }
+
+    /// glAttachShader.
+    pub fn attach_shader(&mut self, program: u32, shader: u32) {
+        if self.reject_in_begin() || !self.check_program(program) || !self.check_shader(shader) {
+            return;
+        }
+        if let Some(p) = self.programs.get_mut(&program) {
+            if p.attached.contains(&shader) {
+                self.set_error(GL_INVALID_OPERATION);
+            } else {
+                p.attached.push(shader);
+            }
+        }
+    }
+
+    /// glDetachShader.
+    pub fn detach_shader(&mut self, program: u32, shader: u32) {
+        if self.reject_in_begin() || !self.check_program(program) || !self.check_shader(shader) {
+            return;
+        }
+        let Some(p) = self.programs.get_mut(&program) else {
+            return;
+        };
+        match p.attached.iter().position(|&s| s == shader) {
+            Some(i) => {
+                p.attached.remove(i);
+                self.release_shader(shader);
+            }
+            None => self.set_error(GL_INVALID_OPERATION),
+        }
+    }
+
+    /// glGetAttachedShaders.
+    pub fn get_attached_shaders(&mut self, program: u32) -> Vec<u32> {
+        if !self.check_program(program) {
+            return Vec::new();
+        }
+        self.programs
+            .get(&program)
+            .map(|p| p.attached.clone())
+            .unwrap_or_default()
+    }
+
+    /// glBindAttribLocation (takes effect at the next link).
+    pub fn bind_attrib_location(&mut self, program: u32, index: u32, name: &str) {
+        if self.reject_in_begin() || !self.check_program(program) {
+            return;
+        }
+        if index as usize >= crate::MAX_VERTEX_ATTRIBS {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        if name.starts_with("gl_") {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
+        if let Some(p) = self.programs.get_mut(&program) {
+            p.bindings.insert(name.to_string(), index);
+        }
+    }
+
+    /// glLinkProgram.
+    pub fn link_program(&mut self, program: u32) {
+        if self.reject_in_begin() || !self.check_program(program) {
+            return;
+        }
+        let Some(p) = self.programs.get(&program) else {
+            return;
+        };
+        let mut not_compiled = Vec::new();
+        let mut shaders = Vec::new();
+        for s in &p.attached {
+            match self.shaders.get(s).and_then(|s| s.compiled.clone()) {
+                Some(c) => shaders.push(c),
+                None => not_compiled.push(*s),
+            }
+        }
+        let refs: Vec<&glsl::Shader> = shaders.iter().map(|s| s.as_ref()).collect();
+        let linked = glsl::link::link(&refs);
+        let mut log = String::new();
+        for s in &not_compiled {
+            log.push_str(&format!("error: shader {s} was never compiled\n"));
+        }
+        log.push_str(linked.info_log());
+        let mut ok = linked.ok() && not_compiled.is_empty();
+        let bindings = p.bindings.clone();
+        let mut exe = None;
+        if ok {
+            match build_executable(linked, &bindings) {
+                Ok(e) => exe = Some(e),
+                Err(msg) => {
+                    log.push_str(&format!("error: {msg}\n"));
+                    ok = false;
+                }
+            }
+        }
+        if let Some(p) = self.programs.get_mut(&program) {
+            p.link_status = ok;
+            p.validate_status = false;
+            p.info_log = log;
+            p.exe = exe;
+        }
+    }
+
+    /// glUseProgram.
+    pub fn use_program(&mut self, program: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if program != 0 {
+            if !self.check_program(program) {
+                return;
+            }
+            if !self.programs.get(&program).is_some_and(|p| p.link_status) {
+                self.set_error(GL_INVALID_OPERATION);
+                return;
+            }
+        }
+        let old = std::mem::replace(&mut self.current_program, program);
+        if old != program && self.programs.get(&old).is_some_and(|p| p.delete_pending) {
+            self.destroy_program(old);
+        }
+    }
+
+    /// glValidateProgram: valid when linked and no two samplers of different
+    /// types use the same texture unit (GL 2.1 §2.15.4).
+    pub fn validate_program(&mut self, program: u32) {
+        if self.reject_in_begin() || !self.check_program(program) {
+            return;
+        }
+        let Some(p) = self.programs.get_mut(&program) else {
+            return;
+        };
+        let mut ok = p.link_status;
+        if let Some(exe) = &p.exe {
+            let mut units: BTreeMap<u32, glsl::types::SamplerKind> = BTreeMap::new();
+            for leaf in &exe.uniforms.leaves {
+                if let Base::Sampler(k) = leaf.ty.base {
+                    for e in 0..leaf.array.unwrap_or(1) as usize {
+                        let unit = exe
+                            .uniforms
+                            .values
+                            .get(leaf.offset + e)
+                            .copied()
+                            .unwrap_or(0);
+                        if let Some(prev) = units.insert(unit, k) {
+                            if prev != k {
+                                ok = false;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        p.validate_status = ok;
+        if !ok {
+            p.info_log
+                .push_str("error: program is not linked or samplers of different types share a texture unit\n");
+        }
+    }
+
+    /// glGetShaderiv.
+    pub fn get_shaderiv(&mut self, shader: u32, pname: u32) -> i32 {
+        if !self.check_shader(shader) {
+            return 0;
+        }
+        let Some(s) = self.shaders.get(&shader) else {
+            return 0;
+        };
+        match pname {
+            GL_SHADER_TYPE => s.kind as i32,
+            GL_DELETE_STATUS => s.delete_pending as i32,
+            GL_COMPILE_STATUS => s.compile_status() as i32,
+            GL_INFO_LOG_LENGTH => with_nul(s.info_log().len()),
+            GL_SHADER_SOURCE_LENGTH => with_nul(s.source.iter().map(String::len).sum()),
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                0
+            }
+        }
+    }
+
+    /// glGetShaderInfoLog.
+    pub fn get_shader_info_log(&mut self, shader: u32) -> String {
+        if !self.check_shader(shader) {
+            return String::new();
+        }
+        self.shaders
+            .get(&shader)
+            .map(ShaderObj::info_log)
+            .unwrap_or_default()
+    }
+
+    /// glGetShaderSource.
+    pub fn get_shader_source(&mut self, shader: u32) -> String {
+        if !self.check_shader(shader) {
+            return String::new();
+        }
+        self.shaders
+            .get(&shader)
+            .map(|s| s.source.concat())
+            .unwrap_or_default()
+    }
+
+    /// glGetProgramiv.
+    pub fn get_programiv(&mut self, program: u32, pname: u32) -> i32 {
+        if !self.check_program(program) {
+            return 0;
+        }
+        let Some(p) = self.programs.get(&program) else {
+            return 0;
+        };
+        let uniforms = p
+            .exe
+            .as_ref()
+            .map(|e| e.uniforms.leaves.as_slice())
+            .unwrap_or(&[]);
+        let attribs = p.exe.as_ref().map(|e| e.attribs.as_slice()).unwrap_or(&[]);
+        match pname {
+            GL_DELETE_STATUS => p.delete_pending as i32,
+            GL_LINK_STATUS => p.link_status as i32,
+            GL_VALIDATE_STATUS => p.validate_status as i32,
+            GL_INFO_LOG_LENGTH => with_nul(p.info_log.len()),
+            GL_ATTACHED_SHADERS => p.attached.len() as i32,
+            GL_ACTIVE_UNIFORMS => uniforms.len() as i32,
+            GL_ACTIVE_UNIFORM_MAX_LENGTH => uniforms
+                .iter()
+                .map(|l| with_nul(l.name.len() + if l.array.is_some() { 3 } else { 0 }))
+                .max()
+                .unwrap_or(0),
+            GL_ACTIVE_ATTRIBUTES => attribs.len() as i32,
+            GL_ACTIVE_ATTRIBUTE_MAX_LENGTH => attribs
+                .iter()
+                .map(|a| with_nul(a.name.len()))
+                .max()
+                .unwrap_or(0),
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                0
+            }
+        }
+    }
+
+    /// glGetProgramInfoLog.
+    pub fn get_program_info_log(&mut self, program: u32) -> String {
+        if !self.check_program(program) {
+            return String::new();
+        }
+        self.programs
+            .get(&program)
+            .map(|p| p.info_log.clone())
+            .unwrap_or_default()
+    }
+
+    /// glGetActiveUniform: name ("a[0]" for arrays), size, GL type.
+    pub fn get_active_uniform(&mut self, program: u32, index: u32) -> Option<ActiveInfo> {
+        if !self.check_program(program) {
+            return None;
+        }
+        let leaf = self
+            .programs
+            .get(&program)
+            .and_then(|p| p.exe.as_ref())
+            .and_then(|e| e.uniforms.leaves.get(index as usize))
+            .cloned();
+        match leaf {
+            Some(l) => Some(ActiveInfo {
+                name: if l.array.is_some() {
+                    format!("{}[0]", l.name)
+                } else {
+                    l.name.clone()
+                },
+                size: l.array.unwrap_or(1) as i32,
+                ty: gl_type(l.ty),
+            }),
+            None => {
+                self.set_error(GL_INVALID_VALUE);
+                None
+            }
+        }
+    }
+
+    /// glGetActiveAttrib.
+    pub fn get_active_attrib(&mut self, program: u32, index: u32) -> Option<ActiveInfo> {
+        if !self.check_program(program) {
+            return None;
+        }
+        let a = self
+            .programs
+            .get(&program)
+            .and_then(|p| p.exe.as_ref())
+            .and_then(|e| e.attribs.get(index as usize))
+            .cloned();
+        match a {
+            Some(a) => Some(ActiveInfo {
+                name: a.name,
+                size: 1,
+                ty: gl_type(a.ty),
+            }),
+            None => {
+                self.set_error(GL_INVALID_VALUE);
+                None
+            }
+        }
+    }
+
+    /// glGetAttribLocation.
+    pub fn get_attrib_location(&mut self, program: u32, name: &str) -> i32 {
+        if self.reject_in_begin() || !self.check_program(program) {
+            return -1;
+        }
+        let Some(p) = self.programs.get(&program) else {
+            return -1;
+        };
+        let Some(exe) = p.exe.as_ref().filter(|_| p.link_status) else {
+            self.set_error(GL_INVALID_OPERATION);
+            return -1;
+        };
+        exe.attribs
+            .iter()
+            .find(|a| a.name == name)
+            .map(|a| a.location)
+            .unwrap_or(-1)
+    }
+
+    /// glGetUniformLocation.
+    pub fn get_uniform_location(&mut self, program: u32, name: &str) -> i32 {
+        if self.reject_in_begin() || !self.check_program(program) {
+            return -1;
+        }
+        let Some(p) = self.programs.get(&program) else {
+            return -1;
+        };
+        let Some(exe) = p.exe.as_ref().filter(|_| p.link_status) else {
+            self.set_error(GL_INVALID_OPERATION);
+            return -1;
+        };
+        exe.uniforms.location(name, &exe.modules())
+    }
+
+    /// The current program's executable, mutably (for glUniform*).
+    fn current_exe_mut(&mut self) -> Option<&mut Executable> {
+        let cur = self.current_program;
+        self.programs.get_mut(&cur).and_then(|p| p.exe.as_mut())
+    }
+
+    /// Shared body of every glUniform* entry point.
+    fn set_uniform(&mut self, loc: i32, count: i32, kind: SetterKind, comps: usize, data: &[Word]) {
+        if self.reject_in_begin() {
+            return;
+        }
+        let Some(exe) = self.current_exe_mut() else {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        };
+        if loc == -1 {
+            return;
+        }
+        match exe.uniforms.set(loc, count, kind, comps, data) {
+            Ok(()) => {}
+            Err(UniformError::InvalidOperation) => self.set_error(GL_INVALID_OPERATION),
+            Err(UniformError::InvalidValue) => self.set_error(GL_INVALID_VALUE),
+        }
+    }
+
+    fn uniform_f(&mut self, loc: i32, count: i32, comps: usize, v: &[f32]) {
+        let w: Vec<Word> = v.iter().map(|&f| Word::Float(f)).collect();
+        self.set_uniform(loc, count, SetterKind::Float, comps, &w);
+    }
+
+    fn uniform_i(&mut self, loc: i32, count: i32, comps: usize, v: &[i32]) {
+        let w: Vec<Word> = v.iter().map(|&i| Word::Int(i)).collect();
+        self.set_uniform(loc, count, SetterKind::Int, comps, &w);
+    }
+
+    /// Shared body of glUniformMatrix*fv; `transpose` input is row-major.
+    fn uniform_matrix(
+        &mut self,
+        loc: i32,
+        count: i32,
+        transpose: bool,
+        cols: u8,
+        rows: u8,
+        v: &[f32],
+    ) {
+        let (c, r) = (cols as usize, rows as usize);
+        let n = c * r;
+        let mut w = Vec::with_capacity(v.len());
+        for m in v.chunks_exact(n) {
+            for col in 0..c {
+                for row in 0..r {
+                    let src = if transpose {
+                        row * c + col
+                    } else {
+                        col * r + row
+                    };
+                    w.push(Word::Float(m[src]));
+                }
+            }
+        }
+        self.set_uniform(loc, count, SetterKind::Matrix { cols, rows }, n, &w);
+    }
+
+    /// glGetUniformfv.
+    pub fn get_uniformfv(&mut self, program: u32, loc: i32) -> Vec<f32> {
+        self.get_uniform(program, loc)
+            .map(|(w, ty)| {
+                w.iter()
+                    .map(|&b| match ty.scalar() {
+                        Some(glsl::types::Scalar::Float) => f32::from_bits(b),
+                        Some(glsl::types::Scalar::Bool) => b as f32,
+                        _ => b as i32 as f32,
+                    })
+                    .collect()
+            })
+            .unwrap_or_default()
+    }
+
+    /// glGetUniformiv.
+    pub fn get_uniformiv(&mut self, program: u32, loc: i32) -> Vec<i32> {
+        self.get_uniform(program, loc)
+            .map(|(w, ty)| {
+                w.iter()
+                    .map(|&b| match ty.scalar() {
+                        Some(glsl::types::Scalar::Float) => {
+                            glsl::consteval::float_to_int(f32::from_bits(b))
+                        }
+                        _ => b as i32,
+                    })
+                    .collect()
+            })
+            .unwrap_or_default()
+    }
+
+    fn get_uniform(&mut self, program: u32, loc: i32) -> Option<(Vec<u32>, Type)> {
+        if self.reject_in_begin() || !self.check_program(program) {
+            return None;
+        }
+        let r = self
+            .programs
+            .get(&program)
+            .filter(|p| p.link_status)
+            .and_then(|p| p.exe.as_ref())
+            .and_then(|e| e.uniforms.get(loc));
+        if r.is_none() {
+            self.set_error(GL_INVALID_OPERATION);
+        }
+        r
+    }
+}
+
+/// Generates glUniform{1,2,3,4}{f,i}[v] and glUniformMatrix*fv.
+macro_rules! uniform_entry_points {
+    ($($f:ident $fv:ident $i:ident $iv:ident $n:literal ($($a:ident),*);)*) => {
+        impl Context {
+            $(
+                #[doc = concat!("glUniform", stringify!($n), "f.")]
+                pub fn $f(&mut self, loc: i32, $($a: f32),*) {
+                    self.uniform_f(loc, 1, $n, &[$($a),*]);
+                }
+                #[doc = concat!("glUniform", stringify!($n), "fv.")]
+                pub fn $fv(&mut self, loc: i32, count: i32, v: &[f32]) {
+                    self.uniform_f(loc, count, $n, v);
+                }
+                #[doc = concat!("glUniform", stringify!($n), "i.")]
+                pub fn $i(&mut self, loc: i32, $($a: i32),*) {
+                    self.uniform_i(loc, 1, $n, &[$($a),*]);
+                }
+                #[doc = concat!("glUniform", stringify!($n), "iv.")]
+                pub fn $iv(&mut self, loc: i32, count: i32, v: &[i32]) {
+                    self.uniform_i(loc, count, $n, v);
+                }
+            )*
+        }
+    };
+}
+
+uniform_entry_points! {
+    uniform_1f uniform_1fv uniform_1i uniform_1iv 1 (x);
+    uniform_2f uniform_2fv uniform_2i uniform_2iv 2 (x, y);
+    uniform_3f uniform_3fv uniform_3i uniform_3iv 3 (x, y, z);
+    uniform_4f uniform_4fv uniform_4i uniform_4iv 4 (x, y, z, w);
+}
+
+macro_rules! uniform_matrix_entry_points {
+    ($($name:ident $c:literal $r:literal;)*) => {
+        impl Context {
+            $(
+                #[doc = concat!("glUniformMatrix", stringify!($c), "x", stringify!($r), "fv.")]
+                pub fn $name(&mut self, loc: i32, count: i32, transpose: bool, v: &[f32]) {
+                    self.uniform_matrix(loc, count, transpose, $c, $r, v);
+                }
+            )*
+        }
+    };
+}
+
+uniform_matrix_entry_points! {
+    uniform_matrix_2fv 2 2;
+    uniform_matrix_3fv 3 3;
+    uniform_matrix_4fv 4 4;
+    uniform_matrix_2x3fv 2 3;
+    uniform_matrix_2x4fv 2 4;
+    uniform_matrix_3x2fv 3 2;
+    uniform_matrix_3x4fv 3 4;
+    uniform_matrix_4x2fv 4 2;
+    uniform_matrix_4x3fv 4 3;
+}
+
+fn with_nul(len: usize) -> i32 {
+    if len == 0 {
+        0
+    } else {
+        (len + 1).min(i32::MAX as usize) as i32
+    }
+}
+
+/// Builds uniform storage, attribute locations and kernels for a linked
+/// program.
+fn build_executable(
+    program: glsl::link::Program,
+    bindings: &BTreeMap<String, u32>,
+) -> Result<Executable, String> {
+    let modules: Vec<&Module> = program.stages.iter().map(|s| &s.module).collect();
+    let uniforms = UniformTable::build(&modules);
+    let attribs = assign_attribs(&program, bindings)?;
+    let kernels = crate::draw::Kernels::new(&program)?;
+    Ok(Executable {
+        program,
+        uniforms,
+        attribs,
+        kernels,
+    })
+}
+
+/// Attribute locations: bound names keep their binding; the others take
+/// the lowest free slots (a matrix takes one slot per column). Generic
+/// slot 0 aliases gl_Vertex (GL 2.1 §2.7), so it is left to bound
+/// attributes when the shader reads gl_Vertex.
+fn assign_attribs(
+    program: &glsl::link::Program,
+    bindings: &BTreeMap<String, u32>,
+) -> Result<Vec<AttribInfo>, String> {
+    let Some(vs) = program.stage(Stage::Vertex) else {
+        return Ok(Vec::new());
+    };
+    let globals: Vec<_> = vs
+        .module
+        .globals
+        .iter()
+        .filter(|g| g.storage == Storage::Attribute && g.read)
+        .collect();
+    let uses_vertex = globals.iter().any(|g| g.name == "gl_Vertex");
+    let mut used = [false; crate::MAX_VERTEX_ATTRIBS];
+    let slots = |ty: Type| match ty.base {
+        Base::Matrix { cols, .. } => cols as usize,
+        _ => 1,
+    };
+    let mut out = Vec::new();
+    for g in &globals {
+        if g.builtin {
+            out.push(AttribInfo {
+                name: g.name.clone(),
+                ty: g.ty,
+                location: -1,
+            });
+            continue;
+        }
+        if let Some(&b) = bindings.get(&g.name) {
+            let n = slots(g.ty);
+            if b as usize + n > used.len() {
+                return Err(format!(
+                    "attribute `{}' bound to location {b} does not fit",
+                    g.name
+                ));
+            }
+            for u in &mut used[b as usize..b as usize + n] {
+                *u = true;
+            }
+            out.push(AttribInfo {
+                name: g.name.clone(),
+                ty: g.ty,
+                location: b as i32,
+            });
+        }
+    }
+    for g in &globals {
+        if g.builtin || bindings.contains_key(&g.name) {
+            continue;
+        }
+        let n = slots(g.ty);
+        let start = usize::from(uses_vertex);
+        let found =
+            (start..=used.len().saturating_sub(n)).find(|&s| used[s..s + n].iter().all(|u| !u));
+        let Some(s) = found else {
+            return Err(format!(
+                "too many vertex attributes (no room for `{}')",
+                g.name
+            ));
+        };
+        for u in &mut used[s..s + n] {
+            *u = true;
+        }
+        out.push(AttribInfo {
+            name: g.name.clone(),
+            ty: g.ty,
+            location: s as i32,
+        });
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const VS: &str =
+        "attribute vec4 pos; attribute vec3 n; void main() { gl_Position = pos + vec4(n, 0.0); }";
+    const FS: &str =
+        "uniform vec4 color; uniform float f[3]; void main() { gl_FragColor = color * f[1]; }";
+
+    fn program(ctx: &mut Context, vs: &str, fs: &str) -> u32 {
+        let p = ctx.create_program();
+        for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
+            let s = ctx.create_shader(kind);
+            ctx.shader_source(s, &[src]);
+            ctx.compile_shader(s);
+            ctx.attach_shader(p, s);
+        }
+        ctx.link_program(p);
+        p
+    }
+
+    #[test]
+    fn compile_link_and_set_uniforms() {
+        let mut ctx = Context::new(8, 8);
+        let p = program(&mut ctx, VS, FS);
+        assert_eq!(
+            ctx.get_programiv(p, GL_LINK_STATUS),
+            1,
+            "{}",
+            ctx.get_program_info_log(p)
+        );
+        let loc = ctx.get_uniform_location(p, "color");
+        assert!(loc >= 0);
+        // No current program yet.
+        ctx.uniform_4f(loc, 1.0, 2.0, 3.0, 4.0);
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.use_program(p);
+        ctx.uniform_4f(loc, 1.0, 2.0, 3.0, 4.0);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        assert_eq!(ctx.get_uniformfv(p, loc), vec![1.0, 2.0, 3.0, 4.0]);
+        ctx.uniform_3f(loc, 1.0, 2.0, 3.0);
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.uniform_4i(loc, 1, 2, 3, 4);
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.uniform_4f(-1, 0.0, 0.0, 0.0, 0.0);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        let f = ctx.get_uniform_location(p, "f[1]");
+        ctx.uniform_1fv(f, 2, &[5.0, 6.0]);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        assert_eq!(ctx.get_uniformfv(p, f + 1), vec![6.0]);
+        let info = ctx.get_active_uniform(p, 1).unwrap();
+        assert_eq!(
+            info,
+            ActiveInfo {
+                name: "f[0]".into(),
+                size: 3,
+                ty: GL_FLOAT
+            }
+        );
+        assert_eq!(ctx.get_programiv(p, GL_ACTIVE_UNIFORMS), 2);
+        // Attributes avoid slot 0 only when gl_Vertex is used.
+        let pos = ctx.get_attrib_location(p, "pos");
+        let n = ctx.get_attrib_location(p, "n");
+        assert_eq!((pos, n), (0, 1));
+    }
+
+    #[test]
+    fn bound_attribs_and_errors() {
+        let mut ctx = Context::new(8, 8);
+        let p = ctx.create_program();
+        ctx.bind_attrib_location(p, 3, "n");
+        ctx.bind_attrib_location(p, 99, "n");
+        assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+        ctx.bind_attrib_location(p, 1, "gl_Vertex");
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        for (kind, src) in [(GL_VERTEX_SHADER, VS), (GL_FRAGMENT_SHADER, FS)] {
+            let s = ctx.create_shader(kind);
+            ctx.shader_source(s, &[src]);
+            ctx.compile_shader(s);
+            ctx.attach_shader(p, s);
+            ctx.attach_shader(p, s);
+            assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        }
+        ctx.link_program(p);
+        assert_eq!(ctx.get_attrib_location(p, "n"), 3);
+        assert_eq!(ctx.get_attrib_location(p, "pos"), 0);
+        assert_eq!(ctx.create_shader(0x1234), 0);
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+        ctx.compile_shader(p);
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.compile_shader(777);
+        assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    }
+
+    #[test]
+    fn failed_compile_and_link() {
+        let mut ctx = Context::new(8, 8);
+        let s = ctx.create_shader(GL_FRAGMENT_SHADER);
+        ctx.shader_source(s, &["void main() { gl_FragColor = vec4(1) }"]);
+        ctx.compile_shader(s);
+        assert_eq!(ctx.get_shaderiv(s, GL_COMPILE_STATUS), 0);
+        assert!(ctx.get_shaderiv(s, GL_INFO_LOG_LENGTH) > 1);
+        assert!(ctx.get_shader_info_log(s).contains("error"));
+        let p = ctx.create_program();
+        ctx.attach_shader(p, s);
+        ctx.link_program(p);
+        assert_eq!(ctx.get_programiv(p, GL_LINK_STATUS), 0);
+        ctx.use_program(p);
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        assert_eq!(ctx.get_uniform_location(p, "x"), -1);
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+    }
+
+    #[test]
+    fn delete_semantics() {
+        let mut ctx = Context::new(8, 8);
+        let p = program(&mut ctx, VS, FS);
+        let shaders = ctx.get_attached_shaders(p);
+        assert_eq!(shaders.len(), 2);
+        ctx.delete_shader(shaders[0]);
+        assert!(ctx.is_shader(shaders[0]));
+        assert_eq!(ctx.get_shaderiv(shaders[0], GL_DELETE_STATUS), 1);
+        ctx.use_program(p);
+        ctx.delete_program(p);
+        assert!(ctx.is_program(p));
+        assert_eq!(ctx.get_programiv(p, GL_DELETE_STATUS), 1);
+        ctx.use_program(0);
+        assert!(!ctx.is_program(p));
+        assert!(!ctx.is_shader(shaders[0]));
+        assert!(ctx.is_shader(shaders[1]));
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    }
+}

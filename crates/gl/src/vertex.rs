@@ -1,0 +1,940 @@
+//! Vertex specification (GL 2.1 §2.7-2.9): current attribute values,
+//! glBegin/glEnd, client vertex arrays and their fetch.
+//!
+//! Array data is either an offset into the buffer object that was bound to
+//! GL_ARRAY_BUFFER when the pointer was specified, or a byte copy of client
+//! memory ([`ArrayData::Client`]): a Rust context cannot hold C pointers, so
+//! callers (and a C ABI) hand over the bytes the draw will read.
+
+use crate::enums::*;
+use crate::{Context, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
+use std::sync::Arc;
+
+/// Where an array's bytes are.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ArrayData {
+    /// Byte offset into the buffer bound when the pointer was specified
+    /// (with no buffer bound, a null client pointer: reads give defaults).
+    Offset(usize),
+    /// Client memory, copied.
+    Client(Arc<[u8]>),
+}
+
+impl Default for ArrayData {
+    fn default() -> Self {
+        ArrayData::Offset(0)
+    }
+}
+
+impl ArrayData {
+    pub fn from_bytes(b: &[u8]) -> ArrayData {
+        ArrayData::Client(Arc::from(b))
+    }
+
+    pub fn from_f32(v: &[f32]) -> ArrayData {
+        let b: Vec<u8> = v.iter().flat_map(|f| f.to_le_bytes()).collect();
+        ArrayData::Client(Arc::from(b))
+    }
+
+    pub fn from_u32(v: &[u32]) -> ArrayData {
+        let b: Vec<u8> = v.iter().flat_map(|f| f.to_le_bytes()).collect();
+        ArrayData::Client(Arc::from(b))
+    }
+
+    pub fn from_u16(v: &[u16]) -> ArrayData {
+        let b: Vec<u8> = v.iter().flat_map(|f| f.to_le_bytes()).collect();
+        ArrayData::Client(Arc::from(b))
+    }
+}
+
+/// One vertex array's state (GL 2.1 Table 6.6/6.7).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ArrayState {
+    pub enabled: bool,
+    pub size: i32,
+    pub ty: u32,
+    pub normalized: bool,
+    pub stride: i32,
+    /// The buffer bound to GL_ARRAY_BUFFER at pointer time (0: client).
+    pub buffer: u32,
+    pub data: ArrayData,
+}
+
+impl ArrayState {
+    fn new(size: i32) -> ArrayState {
+        ArrayState {
+            enabled: false,
+            size,
+            ty: GL_FLOAT,
+            normalized: false,
+            stride: 0,
+            buffer: 0,
+            data: ArrayData::default(),
+        }
+    }
+}
+
+/// Which vertex attribute a shader input reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum AttribSource {
+    Position,
+    Color,
+    SecondaryColor,
+    Normal,
+    FogCoord,
+    TexCoord(u8),
+    Generic(u8),
+}
+
+impl AttribSource {
+    /// The source of a built-in attribute name, if it is one.
+    pub fn builtin(name: &str) -> Option<AttribSource> {
+        Some(match name {
+            "gl_Vertex" => AttribSource::Position,
+            "gl_Color" => AttribSource::Color,
+            "gl_SecondaryColor" => AttribSource::SecondaryColor,
+            "gl_Normal" => AttribSource::Normal,
+            "gl_FogCoord" => AttribSource::FogCoord,
+            _ => {
+                let n: u8 = name.strip_prefix("gl_MultiTexCoord")?.parse().ok()?;
+                if n as usize >= MAX_TEXTURE_UNITS {
+                    return None;
+                }
+                AttribSource::TexCoord(n)
+            }
+        })
+    }
+}
+
+/// A vertex recorded between glBegin and glEnd: every attribute's current
+/// value when glVertex was called.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ImmVertex {
+    pub position: [f32; 4],
+    pub color: [f32; 4],
+    pub secondary: [f32; 4],
+    pub normal: [f32; 4],
+    pub fog: [f32; 4],
+    pub tex: [[f32; 4]; MAX_TEXTURE_UNITS],
+    pub generic: [[f32; 4]; MAX_VERTEX_ATTRIBS],
+}
+
+/// Vertex-specification state.
+pub struct VertexState {
+    pub color: [f32; 4],
+    pub secondary: [f32; 4],
+    pub normal: [f32; 4],
+    pub fog: [f32; 4],
+    pub tex: [[f32; 4]; MAX_TEXTURE_UNITS],
+    pub generic: [[f32; 4]; MAX_VERTEX_ATTRIBS],
+    pub vertex_array: ArrayState,
+    pub normal_array: ArrayState,
+    pub color_array: ArrayState,
+    pub secondary_array: ArrayState,
+    pub fog_array: ArrayState,
+    pub tex_arrays: Vec<ArrayState>,
+    pub generic_arrays: Vec<ArrayState>,
+    pub client_active_texture: u32,
+    pub begin_mode: Option<u32>,
+    pub immediate: Vec<ImmVertex>,
+    pub array_buffer: u32,
+    pub element_buffer: u32,
+}
+
+/// Vertices kept between glBegin and glEnd at most (more are dropped).
+pub const MAX_IMMEDIATE_VERTICES: usize = 1 << 20;
+
+impl VertexState {
+    pub fn new() -> VertexState {
+        let mut normal_array = ArrayState::new(3);
+        normal_array.normalized = true;
+        let mut color_array = ArrayState::new(4);
+        color_array.normalized = true;
+        let mut secondary_array = ArrayState::new(3);
+        secondary_array.normalized = true;
+        VertexState {
+            color: [1.0; 4],
+            secondary: [0.0, 0.0, 0.0, 1.0],
+            normal: [0.0, 0.0, 1.0, 1.0],
+            fog: [0.0, 0.0, 0.0, 1.0],
+            tex: [[0.0, 0.0, 0.0, 1.0]; MAX_TEXTURE_UNITS],
+            generic: [[0.0, 0.0, 0.0, 1.0]; MAX_VERTEX_ATTRIBS],
+            vertex_array: ArrayState::new(4),
+            normal_array,
+            color_array,
+            secondary_array,
+            fog_array: ArrayState::new(1),
+            tex_arrays: vec![ArrayState::new(4); MAX_TEXTURE_UNITS],
+            generic_arrays: vec![ArrayState::new(4); MAX_VERTEX_ATTRIBS],
+            client_active_texture: 0,
+            begin_mode: None,
+            immediate: Vec::new(),
+            array_buffer: 0,
+            element_buffer: 0,
+        }
+    }
+
+    pub fn current_color(&self) -> [f32; 4] {
+        self.color
+    }
+
+    /// The array that feeds `src`, if enabled. Generic attribute 0 and the
+    /// vertex position alias (GL 2.1 §2.7): the generic array wins.
+    pub fn array_for(&self, src: AttribSource) -> Option<&ArrayState> {
+        let a = match src {
+            AttribSource::Position | AttribSource::Generic(0) => {
+                let g = &self.generic_arrays[0];
+                if g.enabled {
+                    g
+                } else {
+                    &self.vertex_array
+                }
+            }
+            AttribSource::Color => &self.color_array,
+            AttribSource::SecondaryColor => &self.secondary_array,
+            AttribSource::Normal => &self.normal_array,
+            AttribSource::FogCoord => &self.fog_array,
+            AttribSource::TexCoord(i) => self.tex_arrays.get(i as usize)?,
+            AttribSource::Generic(i) => self.generic_arrays.get(i as usize)?,
+        };
+        a.enabled.then_some(a)
+    }
+
+    /// The current value of `src` (used when its array is disabled).
+    pub fn current_value(&self, src: AttribSource) -> [f32; 4] {
+        match src {
+            AttribSource::Position => [0.0, 0.0, 0.0, 1.0],
+            AttribSource::Color => self.color,
+            AttribSource::SecondaryColor => self.secondary,
+            AttribSource::Normal => self.normal,
+            AttribSource::FogCoord => self.fog,
+            AttribSource::TexCoord(i) => self
+                .tex
+                .get(i as usize)
+                .copied()
+                .unwrap_or([0.0, 0.0, 0.0, 1.0]),
+            AttribSource::Generic(i) => self
+                .generic
+                .get(i as usize)
+                .copied()
+                .unwrap_or([0.0, 0.0, 0.0, 1.0]),
+        }
+    }
+
+    fn snapshot(&self, position: [f32; 4]) -> ImmVertex {
+        ImmVertex {
+            position,
+            color: self.color,
+            secondary: self.secondary,
+            normal: self.normal,
+            fog: self.fog,
+            tex: self.tex,
+            generic: self.generic,
+        }
+    }
+}
+
+impl Default for VertexState {
+    fn default() -> Self {
+        VertexState::new()
+    }
+}
+
+impl ImmVertex {
+    pub fn value(&self, src: AttribSource) -> [f32; 4] {
+        match src {
+            AttribSource::Position | AttribSource::Generic(0) => self.position,
+            AttribSource::Color => self.color,
+            AttribSource::SecondaryColor => self.secondary,
+            AttribSource::Normal => self.normal,
+            AttribSource::FogCoord => self.fog,
+            AttribSource::TexCoord(i) => self
+                .tex
+                .get(i as usize)
+                .copied()
+                .unwrap_or([0.0, 0.0, 0.0, 1.0]),
+            AttribSource::Generic(i) => self
+                .generic
+                .get(i as usize)
+                .copied()
+                .unwrap_or([0.0, 0.0, 0.0, 1.0]),
+        }
+    }
+}
+
+/// Bytes per component of an array type.
+pub fn type_size(ty: u32) -> Option<usize> {
+    Some(match ty {
+        GL_BYTE | GL_UNSIGNED_BYTE => 1,
+        GL_SHORT | GL_UNSIGNED_SHORT => 2,
+        GL_INT | GL_UNSIGNED_INT | GL_FLOAT => 4,
+        GL_DOUBLE => 8,
+        _ => return None,
+    })
+}
+
+/// Reads one element of an array: `size` components of `ty` starting at
+/// `at`, normalized per GL 2.1 Table 2.9 when asked, missing components
+/// from (0, 0, 0, 1). Out-of-range reads give the defaults.
+pub fn read_element(bytes: &[u8], at: usize, size: usize, ty: u32, normalized: bool) -> [f32; 4] {
+    let mut out = [0.0, 0.0, 0.0, 1.0];
+    let Some(cs) = type_size(ty) else {
+        return out;
+    };
+    for (c, o) in out.iter_mut().enumerate().take(size.min(4)) {
+        let start = at.saturating_add(c * cs);
+        let Some(b) = bytes.get(start..start.saturating_add(cs)) else {
+            return [0.0, 0.0, 0.0, 1.0];
+        };
+        let mut raw = [0u8; 8];
+        raw[..cs].copy_from_slice(b);
+        *o = match ty {
+            GL_BYTE => {
+                let v = raw[0] as i8 as f64;
+                if normalized {
+                    ((2.0 * v + 1.0) / 255.0) as f32
+                } else {
+                    v as f32
+                }
+            }
+            GL_UNSIGNED_BYTE => {
+                let v = raw[0] as f64;
+                if normalized {
+                    (v / 255.0) as f32
+                } else {
+                    v as f32
+                }
+            }
+            GL_SHORT => {
+                let v = i16::from_le_bytes([raw[0], raw[1]]) as f64;
+                if normalized {
+                    ((2.0 * v + 1.0) / 65535.0) as f32
+                } else {
+                    v as f32
+                }
+            }
+            GL_UNSIGNED_SHORT => {
+                let v = u16::from_le_bytes([raw[0], raw[1]]) as f64;
+                if normalized {
+                    (v / 65535.0) as f32
+                } else {
+                    v as f32
+                }
+            }
+            GL_INT => {
+                let v = i32::from_le_bytes([raw[0], raw[1], raw[2], raw[3]]) as f64;
+                if normalized {
+                    ((2.0 * v + 1.0) / 4294967295.0) as f32
+                } else {
+                    v as f32
+                }
+            }
+            GL_UNSIGNED_INT => {
+                let v = u32::from_le_bytes([raw[0], raw[1], raw[2], raw[3]]) as f64;
+                if normalized {
+                    (v / 4294967295.0) as f32
+                } else {
+                    v as f32
+                }
+            }
+            GL_FLOAT => f32::from_le_bytes([raw[0], raw[1], raw[2], raw[3]]),
+            _ => f64::from_le_bytes(raw) as f32,
+        };
+    }
+    out
+}
+
+impl Context {
+    /// Resolves an array's bytes (client copy or buffer store).
+    pub(crate) fn array_bytes(&self, a: &ArrayState) -> Option<(Arc<[u8]>, usize)> {
+        match &a.data {
+            ArrayData::Client(b) => Some((b.clone(), 0)),
+            ArrayData::Offset(off) if a.buffer != 0 => {
+                let b = self.objects.buffers.get(&a.buffer)?;
+                Some((b.data.clone(), *off))
+            }
+            ArrayData::Offset(_) => None,
+        }
+    }
+
+    /// The value of attribute `src` for array element `index`.
+    pub fn fetch_attrib(&self, src: AttribSource, index: u32) -> [f32; 4] {
+        match self.va.array_for(src) {
+            Some(a) => {
+                let Some((bytes, base)) = self.array_bytes(a) else {
+                    return [0.0, 0.0, 0.0, 1.0];
+                };
+                let cs = type_size(a.ty).unwrap_or(4);
+                let stride = if a.stride > 0 {
+                    a.stride as usize
+                } else {
+                    cs * a.size.max(1) as usize
+                };
+                let at = base.saturating_add(stride.saturating_mul(index as usize));
+                read_element(&bytes, at, a.size.max(1) as usize, a.ty, a.normalized)
+            }
+            None => self.va.current_value(src),
+        }
+    }
+
+    fn client_array_mut(&mut self, cap: u32) -> Option<&mut ArrayState> {
+        let unit = self.va.client_active_texture as usize;
+        Some(match cap {
+            GL_VERTEX_ARRAY => &mut self.va.vertex_array,
+            GL_NORMAL_ARRAY => &mut self.va.normal_array,
+            GL_COLOR_ARRAY => &mut self.va.color_array,
+            GL_SECONDARY_COLOR_ARRAY => &mut self.va.secondary_array,
+            GL_FOG_COORD_ARRAY => &mut self.va.fog_array,
+            GL_TEXTURE_COORD_ARRAY => self.va.tex_arrays.get_mut(unit)?,
+            _ => return None,
+        })
+    }
+
+    /// glIsEnabled for the client arrays.
+    pub(crate) fn client_state_enabled(&mut self, cap: u32) -> Option<bool> {
+        if cap == GL_INDEX_ARRAY || cap == GL_EDGE_FLAG_ARRAY {
+            return Some(false);
+        }
+        self.client_array_mut(cap).map(|a| a.enabled)
+    }
+
+    fn set_client_state(&mut self, cap: u32, on: bool) {
+        if cap == GL_INDEX_ARRAY || cap == GL_EDGE_FLAG_ARRAY {
+            return;
+        }
+        match self.client_array_mut(cap) {
+            Some(a) => a.enabled = on,
+            None => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
+    /// glEnableClientState.
+    pub fn enable_client_state(&mut self, cap: u32) {
+        self.set_client_state(cap, true);
+    }
+
+    /// glDisableClientState.
+    pub fn disable_client_state(&mut self, cap: u32) {
+        self.set_client_state(cap, false);
+    }
+
+    /// glClientActiveTexture.
+    pub fn client_active_texture(&mut self, unit: u32) {
+        let i = unit.wrapping_sub(GL_TEXTURE0);
+        if i as usize >= MAX_TEXTURE_UNITS {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        self.va.client_active_texture = i;
+    }
+
+    /// glEnableVertexAttribArray.
+    pub fn enable_vertex_attrib_array(&mut self, index: u32) {
+        self.set_attrib_array(index, true);
+    }
+
+    /// glDisableVertexAttribArray.
+    pub fn disable_vertex_attrib_array(&mut self, index: u32) {
+        self.set_attrib_array(index, false);
+    }
+
+    fn set_attrib_array(&mut self, index: u32, on: bool) {
+        if self.reject_in_begin() {
+            return;
+        }
+        match self.va.generic_arrays.get_mut(index as usize) {
+            Some(a) => a.enabled = on,
+            None => self.set_error(GL_INVALID_VALUE),
+        }
+    }
+
+    /// Common checks and storage of the gl*Pointer calls.
+    #[allow(clippy::too_many_arguments)]
+    fn set_pointer(
+        &mut self,
+        which: PointerTarget,
+        size: i32,
+        sizes: &[i32],
+        ty: u32,
+        types: &[u32],
+        normalized: bool,
+        stride: i32,
+        data: ArrayData,
+    ) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if !sizes.contains(&size) || stride < 0 {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        if !types.contains(&ty) {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        let buffer = self.va.array_buffer;
+        let unit = self.va.client_active_texture as usize;
+        let a = match which {
+            PointerTarget::Vertex => &mut self.va.vertex_array,
+            PointerTarget::Normal => &mut self.va.normal_array,
+            PointerTarget::Color => &mut self.va.color_array,
+            PointerTarget::Secondary => &mut self.va.secondary_array,
+            PointerTarget::Fog => &mut self.va.fog_array,
+            PointerTarget::TexCoord => match self.va.tex_arrays.get_mut(unit) {
+                Some(a) => a,
+                None => return,
+            },
+            PointerTarget::Generic(i) => match self.va.generic_arrays.get_mut(i as usize) {
+                Some(a) => a,
+                None => {
+                    self.set_error(GL_INVALID_VALUE);
+                    return;
+                }
+            },
+        };
+        a.size = size;
+        a.ty = ty;
+        a.normalized = normalized;
+        a.stride = stride;
+        a.buffer = buffer;
+        a.data = data;
+    }
+
+    /// glVertexPointer.
+    pub fn vertex_pointer(&mut self, size: i32, ty: u32, stride: i32, data: ArrayData) {
+        let types = [GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
+        self.set_pointer(
+            PointerTarget::Vertex,
+            size,
+            &[2, 3, 4],
+            ty,
+            &types,
+            false,
+            stride,
+            data,
+        );
+    }
+
+    /// glNormalPointer.
+    pub fn normal_pointer(&mut self, ty: u32, stride: i32, data: ArrayData) {
+        let types = [GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
+        self.set_pointer(
+            PointerTarget::Normal,
+            3,
+            &[3],
+            ty,
+            &types,
+            true,
+            stride,
+            data,
+        );
+    }
+
+    /// glColorPointer.
+    pub fn color_pointer(&mut self, size: i32, ty: u32, stride: i32, data: ArrayData) {
+        self.set_pointer(
+            PointerTarget::Color,
+            size,
+            &[3, 4],
+            ty,
+            &ALL_TYPES,
+            true,
+            stride,
+            data,
+        );
+    }
+
+    /// glSecondaryColorPointer.
+    pub fn secondary_color_pointer(&mut self, size: i32, ty: u32, stride: i32, data: ArrayData) {
+        self.set_pointer(
+            PointerTarget::Secondary,
+            size,
+            &[3],
+            ty,
+            &ALL_TYPES,
+            true,
+            stride,
+            data,
+        );
+    }
+
+    /// glFogCoordPointer.
+    pub fn fog_coord_pointer(&mut self, ty: u32, stride: i32, data: ArrayData) {
+        let types = [GL_FLOAT, GL_DOUBLE];
+        self.set_pointer(PointerTarget::Fog, 1, &[1], ty, &types, false, stride, data);
+    }
+
+    /// glTexCoordPointer (for the client active texture unit).
+    pub fn tex_coord_pointer(&mut self, size: i32, ty: u32, stride: i32, data: ArrayData) {
+        let types = [GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
+        self.set_pointer(
+            PointerTarget::TexCoord,
+            size,
+            &[1, 2, 3, 4],
+            ty,
+            &types,
+            false,
+            stride,
+            data,
+        );
+    }
+
+    /// glVertexAttribPointer.
+    pub fn vertex_attrib_pointer(
+        &mut self,
+        index: u32,
+        size: i32,
+        ty: u32,
+        normalized: bool,
+        stride: i32,
+        data: ArrayData,
+    ) {
+        if index as usize >= MAX_VERTEX_ATTRIBS {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.set_pointer(
+            PointerTarget::Generic(index),
+            size,
+            &[1, 2, 3, 4],
+            ty,
+            &ALL_TYPES,
+            normalized,
+            stride,
+            data,
+        );
+    }
+
+    // ---- current values ----
+
+    /// glColor4f.
+    pub fn color_4f(&mut self, r: f32, g: f32, b: f32, a: f32) {
+        self.va.color = [r, g, b, a];
+        self.track_color_material();
+    }
+
+    /// glColor3f.
+    pub fn color_3f(&mut self, r: f32, g: f32, b: f32) {
+        self.color_4f(r, g, b, 1.0);
+    }
+
+    /// glColor4fv.
+    pub fn color_4fv(&mut self, v: &[f32; 4]) {
+        self.color_4f(v[0], v[1], v[2], v[3]);
+    }
+
+    /// glColor3fv.
+    pub fn color_3fv(&mut self, v: &[f32; 3]) {
+        self.color_4f(v[0], v[1], v[2], 1.0);
+    }
+
+    /// glColor4ub.
+    pub fn color_4ub(&mut self, r: u8, g: u8, b: u8, a: u8) {
+        let n = |x: u8| x as f32 / 255.0;
+        self.color_4f(n(r), n(g), n(b), n(a));
+    }
+
+    /// glColor3ub.
+    pub fn color_3ub(&mut self, r: u8, g: u8, b: u8) {
+        self.color_4ub(r, g, b, 255);
+    }
+
+    /// glSecondaryColor3f.
+    pub fn secondary_color_3f(&mut self, r: f32, g: f32, b: f32) {
+        self.va.secondary = [r, g, b, 1.0];
+    }
+
+    /// glNormal3f.
+    pub fn normal_3f(&mut self, x: f32, y: f32, z: f32) {
+        self.va.normal = [x, y, z, 1.0];
+    }
+
+    /// glNormal3fv.
+    pub fn normal_3fv(&mut self, v: &[f32; 3]) {
+        self.normal_3f(v[0], v[1], v[2]);
+    }
+
+    /// glFogCoordf.
+    pub fn fog_coordf(&mut self, f: f32) {
+        self.va.fog = [f, 0.0, 0.0, 1.0];
+    }
+
+    /// glMultiTexCoord4f.
+    pub fn multi_tex_coord_4f(&mut self, target: u32, s: f32, t: f32, r: f32, q: f32) {
+        let i = target.wrapping_sub(GL_TEXTURE0) as usize;
+        match self.va.tex.get_mut(i) {
+            Some(c) => *c = [s, t, r, q],
+            None => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
+    /// glMultiTexCoord1f.
+    pub fn multi_tex_coord_1f(&mut self, target: u32, s: f32) {
+        self.multi_tex_coord_4f(target, s, 0.0, 0.0, 1.0);
+    }
+
+    /// glMultiTexCoord2f.
+    pub fn multi_tex_coord_2f(&mut self, target: u32, s: f32, t: f32) {
+        self.multi_tex_coord_4f(target, s, t, 0.0, 1.0);
+    }
+
+    /// glMultiTexCoord3f.
+    pub fn multi_tex_coord_3f(&mut self, target: u32, s: f32, t: f32, r: f32) {
+        self.multi_tex_coord_4f(target, s, t, r, 1.0);
+    }
+
+    /// glMultiTexCoord4fv.
+    pub fn multi_tex_coord_4fv(&mut self, target: u32, v: &[f32; 4]) {
+        self.multi_tex_coord_4f(target, v[0], v[1], v[2], v[3]);
+    }
+
+    /// glTexCoord4f (unit 0).
+    pub fn tex_coord_4f(&mut self, s: f32, t: f32, r: f32, q: f32) {
+        self.va.tex[0] = [s, t, r, q];
+    }
+
+    /// glTexCoord1f.
+    pub fn tex_coord_1f(&mut self, s: f32) {
+        self.tex_coord_4f(s, 0.0, 0.0, 1.0);
+    }
+
+    /// glTexCoord2f.
+    pub fn tex_coord_2f(&mut self, s: f32, t: f32) {
+        self.tex_coord_4f(s, t, 0.0, 1.0);
+    }
+
+    /// glTexCoord3f.
+    pub fn tex_coord_3f(&mut self, s: f32, t: f32, r: f32) {
+        self.tex_coord_4f(s, t, r, 1.0);
+    }
+
+    /// glTexCoord4fv.
+    pub fn tex_coord_4fv(&mut self, v: &[f32; 4]) {
+        self.tex_coord_4f(v[0], v[1], v[2], v[3]);
+    }
+
+    /// glVertexAttrib4f. Index 0 is the vertex position: inside
+    /// glBegin/glEnd it emits a vertex (GL 2.1 §2.7).
+    pub fn vertex_attrib_4f(&mut self, index: u32, x: f32, y: f32, z: f32, w: f32) {
+        if index as usize >= MAX_VERTEX_ATTRIBS {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        if index == 0 {
+            self.vertex_4f(x, y, z, w);
+        }
+        self.va.generic[index as usize] = [x, y, z, w];
+    }
+
+    /// glVertexAttrib1f.
+    pub fn vertex_attrib_1f(&mut self, index: u32, x: f32) {
+        self.vertex_attrib_4f(index, x, 0.0, 0.0, 1.0);
+    }
+
+    /// glVertexAttrib2f.
+    pub fn vertex_attrib_2f(&mut self, index: u32, x: f32, y: f32) {
+        self.vertex_attrib_4f(index, x, y, 0.0, 1.0);
+    }
+
+    /// glVertexAttrib3f.
+    pub fn vertex_attrib_3f(&mut self, index: u32, x: f32, y: f32, z: f32) {
+        self.vertex_attrib_4f(index, x, y, z, 1.0);
+    }
+
+    /// glVertexAttrib4fv.
+    pub fn vertex_attrib_4fv(&mut self, index: u32, v: &[f32; 4]) {
+        self.vertex_attrib_4f(index, v[0], v[1], v[2], v[3]);
+    }
+
+    /// glVertexAttrib4Nub.
+    pub fn vertex_attrib_4nub(&mut self, index: u32, x: u8, y: u8, z: u8, w: u8) {
+        let n = |v: u8| v as f32 / 255.0;
+        self.vertex_attrib_4f(index, n(x), n(y), n(z), n(w));
+    }
+
+    /// glGetVertexAttribfv with GL_CURRENT_VERTEX_ATTRIB.
+    pub fn get_current_vertex_attrib(&mut self, index: u32) -> [f32; 4] {
+        if index == 0 || index as usize >= MAX_VERTEX_ATTRIBS {
+            self.set_error(if index == 0 {
+                GL_INVALID_OPERATION
+            } else {
+                GL_INVALID_VALUE
+            });
+            return [0.0; 4];
+        }
+        self.va.generic[index as usize]
+    }
+
+    // ---- glBegin / glEnd ----
+
+    /// glBegin.
+    pub fn begin(&mut self, mode: u32) {
+        if self.in_begin_end() {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
+        if mode > GL_POLYGON {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        self.va.begin_mode = Some(mode);
+        self.va.immediate.clear();
+    }
+
+    /// glVertex4f: outside glBegin/glEnd it has no effect.
+    pub fn vertex_4f(&mut self, x: f32, y: f32, z: f32, w: f32) {
+        if self.va.begin_mode.is_some() && self.va.immediate.len() < MAX_IMMEDIATE_VERTICES {
+            let v = self.va.snapshot([x, y, z, w]);
+            self.va.immediate.push(v);
+        }
+    }
+
+    /// glVertex2f.
+    pub fn vertex_2f(&mut self, x: f32, y: f32) {
+        self.vertex_4f(x, y, 0.0, 1.0);
+    }
+
+    /// glVertex3f.
+    pub fn vertex_3f(&mut self, x: f32, y: f32, z: f32) {
+        self.vertex_4f(x, y, z, 1.0);
+    }
+
+    /// glVertex3fv.
+    pub fn vertex_3fv(&mut self, v: &[f32; 3]) {
+        self.vertex_4f(v[0], v[1], v[2], 1.0);
+    }
+
+    /// glVertex4fv.
+    pub fn vertex_4fv(&mut self, v: &[f32; 4]) {
+        self.vertex_4f(v[0], v[1], v[2], v[3]);
+    }
+
+    /// glEnd: draws the recorded vertices.
+    pub fn end(&mut self) {
+        let Some(mode) = self.va.begin_mode.take() else {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        };
+        let verts = std::mem::take(&mut self.va.immediate);
+        self.draw_immediate(mode, &verts);
+    }
+
+    /// glRectf: a polygon (x1,y1) (x2,y1) (x2,y2) (x1,y2) (GL 2.1 §2.10).
+    pub fn rectf(&mut self, x1: f32, y1: f32, x2: f32, y2: f32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        self.begin(GL_POLYGON);
+        self.vertex_2f(x1, y1);
+        self.vertex_2f(x2, y1);
+        self.vertex_2f(x2, y2);
+        self.vertex_2f(x1, y2);
+        self.end();
+    }
+}
+
+const ALL_TYPES: [u32; 8] = [
+    GL_BYTE,
+    GL_UNSIGNED_BYTE,
+    GL_SHORT,
+    GL_UNSIGNED_SHORT,
+    GL_INT,
+    GL_UNSIGNED_INT,
+    GL_FLOAT,
+    GL_DOUBLE,
+];
+
+#[derive(Clone, Copy)]
+enum PointerTarget {
+    Vertex,
+    Normal,
+    Color,
+    Secondary,
+    Fog,
+    TexCoord,
+    Generic(u32),
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn normalization_table_2_9() {
+        assert_eq!(
+            read_element(&[255, 0], 0, 2, GL_UNSIGNED_BYTE, true),
+            [1.0, 0.0, 0.0, 1.0]
+        );
+        assert_eq!(read_element(&[0x7f], 0, 1, GL_BYTE, true)[0], 1.0);
+        assert_eq!(read_element(&[0x80], 0, 1, GL_BYTE, true)[0], -1.0);
+        assert_eq!(
+            read_element(&[200], 0, 1, GL_UNSIGNED_BYTE, false)[0],
+            200.0
+        );
+        // Out of range: defaults.
+        assert_eq!(
+            read_element(&[1, 2], 0, 3, GL_FLOAT, false),
+            [0.0, 0.0, 0.0, 1.0]
+        );
+    }
+
+    #[test]
+    fn fetch_client_arrays_and_current_values() {
+        let mut ctx = Context::new(4, 4);
+        ctx.vertex_pointer(
+            2,
+            GL_FLOAT,
+            16,
+            ArrayData::from_f32(&[1.0, 2.0, 9.0, 9.0, 3.0, 4.0]),
+        );
+        ctx.enable_client_state(GL_VERTEX_ARRAY);
+        assert_eq!(
+            ctx.fetch_attrib(AttribSource::Position, 1),
+            [3.0, 4.0, 0.0, 1.0]
+        );
+        ctx.color_4f(0.5, 0.5, 0.5, 0.5);
+        assert_eq!(ctx.fetch_attrib(AttribSource::Color, 7), [0.5; 4]);
+        ctx.client_active_texture(GL_TEXTURE1);
+        ctx.tex_coord_pointer(2, GL_FLOAT, 0, ArrayData::from_f32(&[0.0, 1.0, 2.0, 3.0]));
+        ctx.enable_client_state(GL_TEXTURE_COORD_ARRAY);
+        assert_eq!(
+            ctx.fetch_attrib(AttribSource::TexCoord(1), 1),
+            [2.0, 3.0, 0.0, 1.0]
+        );
+        assert_eq!(
+            ctx.fetch_attrib(AttribSource::TexCoord(0), 1),
+            [0.0, 0.0, 0.0, 1.0]
+        );
+        // Generic 0 overrides the vertex array.
+        ctx.vertex_attrib_pointer(0, 1, GL_FLOAT, false, 0, ArrayData::from_f32(&[7.0, 8.0]));
+        ctx.enable_vertex_attrib_array(0);
+        assert_eq!(
+            ctx.fetch_attrib(AttribSource::Position, 1),
+            [8.0, 0.0, 0.0, 1.0]
+        );
+        ctx.vertex_attrib_pointer(0, 5, GL_FLOAT, false, 0, ArrayData::Offset(0));
+        assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+        ctx.vertex_pointer(4, GL_UNSIGNED_BYTE, 0, ArrayData::Offset(0));
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+        ctx.enable_client_state(GL_LIGHTING);
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    }
+
+    #[test]
+    fn begin_end_records() {
+        let mut ctx = Context::new(4, 4);
+        ctx.end();
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.begin(GL_TRIANGLES);
+        ctx.begin(GL_TRIANGLES);
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.color_3f(1.0, 0.0, 0.0);
+        ctx.vertex_2f(0.0, 0.0);
+        ctx.enable(GL_BLEND);
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        assert_eq!(ctx.va.immediate.len(), 1);
+        assert_eq!(ctx.va.immediate[0].color, [1.0, 0.0, 0.0, 1.0]);
+        ctx.end();
+        assert!(!ctx.in_begin_end());
+    }
+}
