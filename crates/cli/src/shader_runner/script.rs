@@ -185,7 +185,7 @@ pub struct Script {
 
 /// A malformed script: the message names the line.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("line {line}: {message}")]
+#[error("{line}: {message}")]
 pub struct ScriptError {
     pub line: usize,
     pub message: String,
