@@ -104,8 +104,9 @@ void main() { gl_Position = piglit_vertex; }\n";
 const PIGLIT_ATTRIB_POS: u32 = 0;
 const PIGLIT_ATTRIB_TEX: u32 = 1;
 
-/// Upper bound on the pixels one probe reads (a 16384x4096 rectangle).
-const MAX_PROBE_PIXELS: i64 = 1 << 26;
+/// Upper bound on the pixels one probe reads (4096x4096, 256 MiB of
+/// floats): bounds the memory a script can make a probe allocate.
+const MAX_PROBE_PIXELS: i64 = 1 << 24;
 
 pub struct Runner<'a, G: GlApi> {
     gl: &'a mut G,

@@ -415,6 +415,9 @@ fn parse_version(rest: &str, line: usize, glsl: bool) -> Result<VersionReq, Scri
     })
 }
 
+/// Largest `SIZE` accepted (piglit's tests use at most a few hundred).
+pub const MAX_WINDOW: i32 = 4096;
+
 /// The limits `[require]` may name directly (piglit's table).
 const LIMITS: &[&str] = &[
     "GL_MAX_VERTEX_OUTPUT_COMPONENTS",
@@ -491,7 +494,7 @@ fn parse_requirement(raw: &str, line: usize) -> Result<Option<Requirement>, Scri
     if let Some(rest) = s.strip_prefix("SIZE") {
         let (v, _) = scan::scan_list(rest, 2, scan::scan_i32_base0);
         return match v.as_slice() {
-            [w, h] if *w > 0 && *h > 0 && *w <= 16384 && *h <= 16384 => {
+            [w, h] if (1..=MAX_WINDOW).contains(w) && (1..=MAX_WINDOW).contains(h) => {
                 Ok(Some(Requirement::Size(*w as u32, *h as u32)))
             }
             _ => Err(err(line, format!("invalid SIZE: {}", rest.trim()))),
@@ -706,6 +709,8 @@ draw rect -1 -1 2 2
             ]
         );
         assert_eq!(s.requirements[0].0, 3);
+        assert!(parse("[require]\nSIZE 0 10\n").is_err());
+        assert!(parse("[require]\nSIZE 5000 10\n").is_err());
     }
 
     #[test]
