@@ -1,1 +1,295 @@
-//! Lane-parallel execution of GLSL programs (being written; see docs/ARCHITECTURE.md).
+//! # shaderbox-exec: running GLSL programs on the CPU
+//!
+//! [`Kernel::new`] lowers one linked stage ([`glsl::link::LinkedStage`]) to
+//! a flat register program; [`Kernel::run`] executes it on up to [`LANES`]
+//! invocations at once (16 vertices, or 4 quads of 2×2 fragments) held in
+//! a structure-of-arrays [`Batch`].
+//!
+//! ## Contract
+//! - **Semantics** are those of the IR (`glsl::ir`) and of constant folding
+//!   (`glsl::consteval`, `glsl::builtins::eval_builtin`): IEEE-754 `f32`
+//!   arithmetic without contraction, integer arithmetic wrapping at 32 bits,
+//!   float→int conversion truncating toward zero and saturating (NaN → 0),
+//!   matrix products and dot products summed in index order from 0.0,
+//!   built-in functions through `glsl::math`, so a shader computes the very
+//!   bits constant folding would.
+//! - **Defined results where GLSL leaves them undefined** (documented
+//!   choices): integer division by zero gives 0; a dynamic index out of
+//!   range is clamped to the nearest element (negative → element 0, too
+//!   large → the last element), for reads and writes; uninitialized
+//!   variables hold unspecified but deterministic values (0 at the start of
+//!   a run).
+//! - **Control flow** runs under per-lane execution masks: `if`/`else`,
+//!   loops with `break`/`continue` per lane (a loop ends when no lane is
+//!   left in it), early `return` (per inlined function), `discard` (sets
+//!   [`Batch::discarded`] and stops the lane for the rest of `main`).
+//!   `&&`, `||` and `?:` evaluate their later operands only on the lanes
+//!   that need them when those operands have side effects.
+//! - **User functions are inlined** (GLSL forbids recursion); `in`
+//!   arguments are copied in, `out`/`inout` l-values are evaluated at the
+//!   call and written back when the callee returns, left to right
+//!   (GLSL 1.20 §6.1.1).
+//! - **Never hangs, never panics**: loops count iterations against
+//!   [`LOOP_BUDGET`] per `run` ([`ExecError::LoopBudget`]); programs larger
+//!   than the limits of [`limits`] are refused by [`Kernel::new`]
+//!   ([`ExecError::Unsupported`]); missing uniform words read as 0 and
+//!   missing input components as 0.0.
+//! - **Deterministic**: a lane's results depend only on its own inputs and
+//!   (for `dFdx`/`dFdy`/`fwidth` and implicit texture LOD) on the other
+//!   lanes of its 2×2 quad, never on [`LANES`] or on which other lanes are
+//!   active.
+//!
+//! ## Lanes
+//! Fragment lanes: lane `4q+0` = (x, y), `4q+1` = (x+1, y), `4q+2` =
+//! (x, y+1), `4q+3` = (x+1, y+1). `dFdx = v(lane|1) - v(lane&!1)` (the same
+//! for both pixels of a row of the quad), `dFdy = v(lane|2) - v(lane&!2)`.
+//! Derivatives inside non-uniform control flow use whatever the inactive
+//! lanes of the quad computed (GLSL 1.20 §8.8 leaves them undefined there).
+//! [`Batch::helper`] lanes run with the active ones (so derivatives see
+//! them) but their outputs are not written.
+//!
+//! ## Layout
+//! Values are flattened as `glsl::ir::ConstValue` is (vectors in order,
+//! matrices column-major, arrays element by element, structs member by
+//! member); a sampler takes one component (its texture unit). Uniform
+//! words are `u32` bit patterns: `f32::to_bits` for floats, `i32 as u32`
+//! for ints, 0/1 for bools, the unit number for samplers. Inputs and
+//! outputs are `f32` (bool `gl_FrontFacing` is 1.0/0.0).
+//!
+//! ## Limitations
+//! - Derivatives are coarse per row/column of a quad.
+//! - The interpreter decodes ops once but dispatches per op per lane group;
+//!   registers are not reused across inlined calls beyond statement scope.
+
+mod interface;
+mod interp;
+mod lower;
+mod program;
+
+pub use interface::{kinds, size_of, Interface, Slot};
+pub use interp::LOOP_BUDGET;
+pub use program::{StatementMark, VarInfo};
+
+use glsl::types::SamplerKind;
+use glsl::Span;
+
+/// Lanes per batch: 4 quads of 2×2 fragments, or 16 vertices.
+pub const LANES: usize = 16;
+
+/// Bit `i` = lane `i`.
+pub type LaneMask = u32;
+
+/// Size limits of lowered programs.
+pub mod limits {
+    pub use crate::lower::{INLINE_LIMIT, MAX_CALL_DEPTH, MAX_OPS, MAX_REGISTERS};
+}
+
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ExecError {
+    #[error("shader exceeded {iterations} loop iterations in one invocation")]
+    LoopBudget { iterations: u64 },
+    #[error("the executor cannot run this program: {0}")]
+    Unsupported(String),
+}
+
+/// Structure-of-arrays invocation data.
+#[derive(Clone, Debug, Default)]
+pub struct Batch {
+    /// One entry per input component (see [`Interface::inputs`]).
+    pub inputs: Vec<[f32; LANES]>,
+    /// One entry per output component (see [`Interface::outputs`]); grown
+    /// to the interface's size by `run` if shorter. Only active lanes are
+    /// written.
+    pub outputs: Vec<[f32; LANES]>,
+    /// Lanes to run.
+    pub active: LaneMask,
+    /// Out: lanes that executed `discard`.
+    pub discarded: LaneMask,
+    /// Fragment: lanes that only exist to complete a quad (run for
+    /// derivatives, outputs not written).
+    pub helper: LaneMask,
+}
+
+impl Batch {
+    /// A batch sized for `k`'s interface with the given lanes active.
+    pub fn for_kernel(k: &Kernel, active: LaneMask) -> Batch {
+        Batch {
+            inputs: vec![[0.0; LANES]; k.interface.input_components],
+            outputs: vec![[0.0; LANES]; k.interface.output_components],
+            active,
+            discarded: 0,
+            helper: 0,
+        }
+    }
+}
+
+/// A texture lookup for the lanes of `mask`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SampleRequest {
+    /// Texture unit per lane (the sampler's value).
+    pub unit: [u32; LANES],
+    pub target: SamplerKind,
+    /// s, t, r, q after the projective divide (unused coordinates are 0,
+    /// q is 1).
+    pub coord: [[f32; LANES]; 4],
+    /// Shadow samplers: the depth reference (r, divided by q in the Proj
+    /// forms).
+    pub compare: Option<[f32; LANES]>,
+    pub lod: Lod,
+    pub mask: LaneMask,
+}
+
+// The variants are plain per-lane arrays by design (PIPELINE.md); boxing
+// would cost an allocation per lookup.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Debug, PartialEq)]
+pub enum Lod {
+    /// Fragment-shader implicit LOD: per-lane derivatives of the (divided)
+    /// coordinates along x and y (from the quad; unused coordinates 0),
+    /// plus a bias (0 when the call has none).
+    Derivatives {
+        ddx: [[f32; LANES]; 3],
+        ddy: [[f32; LANES]; 3],
+        bias: [f32; LANES],
+    },
+    /// `*Lod` lookups, and vertex-shader lookups (level 0 plus the bias
+    /// argument if any).
+    Explicit([f32; LANES]),
+}
+
+pub trait Textures {
+    /// Samples for the lanes in `req.mask`, writing RGBA into `out`
+    /// (component-major: `out[c][lane]`).
+    fn sample(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]);
+}
+
+/// A [`Textures`] with no texture bound: every lookup gives (0, 0, 0, 1).
+pub struct NoTextures;
+
+impl Textures for NoTextures {
+    fn sample(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]) {
+        for (c, value) in out.iter_mut().zip([0.0, 0.0, 0.0, 1.0]) {
+            for (l, x) in c.iter_mut().enumerate() {
+                if req.mask & (1 << l) != 0 {
+                    *x = value;
+                }
+            }
+        }
+    }
+}
+
+/// Receives a single lane's execution from [`Kernel::run_traced`].
+pub trait Trace {
+    /// A statement (or a global initializer) starts on the traced lane.
+    fn statement(&mut self, span: Span);
+    /// The traced lane stores `bits` into `register` (see
+    /// [`Kernel::variables`] to name registers).
+    fn store(&mut self, register: u32, bits: u32);
+}
+
+/// A lowered stage, ready to run.
+#[derive(Clone, Debug)]
+pub struct Kernel {
+    stage: glsl::Stage,
+    program: program::Program,
+    interface: Interface,
+    inputs: Vec<(usize, u32, glsl::types::Scalar)>,
+    outputs: Vec<(u32, usize, glsl::types::Scalar)>,
+    loop_budget: u64,
+}
+
+impl Kernel {
+    /// Lowers a linked stage. Errors only for IR the executor cannot run
+    /// (a front-end bug) or programs beyond [`limits`].
+    pub fn new(stage: &glsl::link::LinkedStage) -> Result<Kernel, ExecError> {
+        Kernel::with_inline_limit(stage, lower::INLINE_LIMIT)
+    }
+
+    /// Like [`Kernel::new`], inlining calls only while `main` stays under
+    /// `limit` expression nodes (else every function becomes a subroutine).
+    pub(crate) fn with_inline_limit(
+        stage: &glsl::link::LinkedStage,
+        limit: u64,
+    ) -> Result<Kernel, ExecError> {
+        let l = lower::lower(stage, limit)?;
+        Ok(Kernel {
+            stage: stage.stage,
+            program: l.program,
+            interface: l.interface,
+            inputs: l.inputs,
+            outputs: l.outputs,
+            loop_budget: LOOP_BUDGET,
+        })
+    }
+
+    /// Sets the loop iteration budget of each `run` (default
+    /// [`LOOP_BUDGET`]).
+    pub fn set_loop_budget(&mut self, iterations: u64) {
+        self.loop_budget = iterations;
+    }
+
+    pub fn stage(&self) -> glsl::Stage {
+        self.stage
+    }
+
+    pub fn interface(&self) -> &Interface {
+        &self.interface
+    }
+
+    /// Runs `main` on the active (and helper) lanes of `batch`.
+    pub fn run(
+        &self,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+    ) -> Result<(), ExecError> {
+        interp::run(self, batch, uniforms, textures, &mut interp::NoHook)
+    }
+
+    /// Like [`Kernel::run`], reporting every statement and store that
+    /// `lane` executes to `trace`.
+    pub fn run_traced(
+        &self,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+        lane: usize,
+        trace: &mut dyn Trace,
+    ) -> Result<(), ExecError> {
+        let mut stmt_at = vec![u32::MAX; self.program.ops.len()];
+        for (i, s) in self.program.statements.iter().enumerate() {
+            if let Some(x) = stmt_at.get_mut(s.op as usize) {
+                *x = i as u32;
+            }
+        }
+        let mut hook = interp::TraceHook {
+            lane: lane.min(LANES - 1),
+            trace,
+            stmt_at,
+        };
+        interp::run(self, batch, uniforms, textures, &mut hook)
+    }
+
+    /// Where each source statement starts in the program.
+    pub fn statements(&self) -> &[StatementMark] {
+        &self.program.statements
+    }
+
+    /// The registers of the globals and of every (inlined) local.
+    pub fn variables(&self) -> &[VarInfo] {
+        &self.program.vars
+    }
+
+    /// Number of instructions (a size measure).
+    pub fn op_count(&self) -> usize {
+        self.program.ops.len()
+    }
+
+    /// Registers per run.
+    pub fn register_count(&self) -> usize {
+        self.program.registers as usize
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,180 @@
+//! The stage interface: where inputs, outputs and uniforms live, and the
+//! flattened layout of values shared by registers, inputs, outputs and
+//! uniform words.
+//!
+//! Layout: the one of [`glsl::ir::ConstValue`] (vectors in order, matrices
+//! column-major, arrays element by element, structs member by member), with
+//! one difference: a sampler occupies one component (its texture unit),
+//! where `glsl::consteval::flat_size` counts none (constants never hold
+//! samplers).
+
+use glsl::types::{ArraySize, Base, Scalar, StructDef, Type};
+
+/// One interface variable.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Slot {
+    pub name: String,
+    pub ty: Type,
+    /// Index of the first component in `Batch::inputs`, `Batch::outputs` or
+    /// the uniform words.
+    pub offset: usize,
+    pub components: usize,
+    /// Outputs: statically written by the shader. Inputs and uniforms:
+    /// `true` when the program reads them.
+    pub written: bool,
+}
+
+/// Where each interface variable lives (see the crate docs).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Interface {
+    pub inputs: Vec<Slot>,
+    pub outputs: Vec<Slot>,
+    pub uniforms: Vec<Slot>,
+    /// Length of the uniform word array `Kernel::run` expects.
+    pub uniform_words: usize,
+    /// Number of `Batch::inputs` / `Batch::outputs` entries.
+    pub input_components: usize,
+    pub output_components: usize,
+    /// The module's struct table (for [`Interface::locate_uniform`] and to
+    /// spell struct types).
+    pub structs: Vec<StructDef>,
+}
+
+impl Interface {
+    pub fn input(&self, name: &str) -> Option<&Slot> {
+        self.inputs.iter().find(|s| s.name == name)
+    }
+
+    pub fn output(&self, name: &str) -> Option<&Slot> {
+        self.outputs.iter().find(|s| s.name == name)
+    }
+
+    pub fn uniform(&self, name: &str) -> Option<&Slot> {
+        self.uniforms.iter().find(|s| s.name == name)
+    }
+
+    /// Resolves a GL uniform name such as `a`, `a[2]`, `s.m`, `l[1].pos`
+    /// to the word offset and type of what it names (GL 2.1 §2.15.3: array
+    /// elements and struct members; an array name alone names the whole
+    /// array, i.e. its element 0 onwards). Out-of-range indices give `None`.
+    pub fn locate_uniform(&self, path: &str) -> Option<(usize, Type)> {
+        let path = path.trim();
+        let end = path.find(['[', '.']).unwrap_or(path.len());
+        let slot = self.uniform(&path[..end])?;
+        let mut rest = &path[end..];
+        let mut offset = slot.offset;
+        let mut ty = slot.ty;
+        while !rest.is_empty() {
+            if let Some(r) = rest.strip_prefix('[') {
+                let close = r.find(']')?;
+                let index: usize = r[..close].trim().parse().ok()?;
+                let n = match ty.array {
+                    Some(ArraySize::Sized(n)) => n as usize,
+                    _ => return None,
+                };
+                if index >= n {
+                    return None;
+                }
+                let elem = ty.element();
+                offset += index * size_of(elem, &self.structs);
+                ty = elem;
+                rest = &r[close + 1..];
+            } else if let Some(r) = rest.strip_prefix('.') {
+                let end = r.find(['[', '.']).unwrap_or(r.len());
+                let name = &r[..end];
+                let Base::Struct(id) = ty.base else {
+                    return None;
+                };
+                if ty.is_array() {
+                    return None;
+                }
+                let def = self.structs.get(id.0 as usize)?;
+                let mut member_offset = 0;
+                let mut found = None;
+                for m in &def.members {
+                    if m.name == name {
+                        found = Some(m.ty);
+                        break;
+                    }
+                    member_offset += size_of(m.ty, &self.structs);
+                }
+                ty = found?;
+                offset += member_offset;
+                rest = &r[end..];
+            } else {
+                return None;
+            }
+        }
+        Some((offset, ty))
+    }
+}
+
+/// Components of `ty` in the flattened layout (samplers count 1; unsized
+/// arrays 0).
+pub fn size_of(ty: Type, structs: &[StructDef]) -> usize {
+    size_bounded(ty, structs, 0)
+}
+
+fn size_bounded(ty: Type, structs: &[StructDef], depth: u32) -> usize {
+    if depth > 64 {
+        return 0;
+    }
+    let elem = match ty.base {
+        Base::Void | Base::Error => 0,
+        Base::Sampler(_) | Base::Scalar(_) => 1,
+        Base::Vector(_, n) => n as usize,
+        Base::Matrix { cols, rows } => cols as usize * rows as usize,
+        Base::Struct(id) => structs
+            .get(id.0 as usize)
+            .map(|s| {
+                s.members
+                    .iter()
+                    .map(|m| size_bounded(m.ty, structs, depth + 1))
+                    .fold(0usize, usize::saturating_add)
+            })
+            .unwrap_or(0),
+    };
+    match ty.array {
+        None => elem,
+        Some(ArraySize::Sized(n)) => elem.saturating_mul(n as usize),
+        Some(ArraySize::Unsized) => 0,
+    }
+}
+
+/// The scalar kind of each flattened component of `ty` (samplers are
+/// `Int`: a unit number).
+pub fn kinds(ty: Type, structs: &[StructDef]) -> Vec<Scalar> {
+    let mut out = Vec::new();
+    push_kinds(ty, structs, &mut out, 0);
+    out
+}
+
+fn push_kinds(ty: Type, structs: &[StructDef], out: &mut Vec<Scalar>, depth: u32) {
+    if depth > 64 {
+        return;
+    }
+    let count = match ty.array {
+        None => 1,
+        Some(ArraySize::Sized(n)) => n as usize,
+        Some(ArraySize::Unsized) => 0,
+    };
+    for _ in 0..count {
+        match ty.base {
+            Base::Void | Base::Error => {}
+            Base::Sampler(_) => out.push(Scalar::Int),
+            Base::Scalar(s) => out.push(s),
+            Base::Vector(s, n) => out.extend(std::iter::repeat_n(s, n as usize)),
+            Base::Matrix { cols, rows } => out.extend(std::iter::repeat_n(
+                Scalar::Float,
+                cols as usize * rows as usize,
+            )),
+            Base::Struct(id) => {
+                if let Some(def) = structs.get(id.0 as usize) {
+                    for m in &def.members {
+                        push_kinds(m.ty, structs, out, depth + 1);
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,385 @@
+//! The lane-parallel interpreter of a lowered [`Program`].
+
+use crate::program::{Op, Program, TexLod};
+use crate::{Batch, ExecError, Kernel, LaneMask, Lod, SampleRequest, Textures, Trace, LANES};
+use glsl::math;
+use glsl::types::Scalar;
+
+/// Loop iterations (summed over every loop, counted once per iteration of
+/// the lane group) one `Kernel::run` may execute before it fails with
+/// [`ExecError::LoopBudget`].
+pub const LOOP_BUDGET: u64 = 1 << 24;
+
+/// All lanes.
+pub(crate) const FULL: LaneMask = if LANES >= 32 { !0 } else { (1u32 << LANES) - 1 };
+
+type Regs = Vec<[u32; LANES]>;
+
+/// Hook called while running; the no-op implementation compiles away.
+pub(crate) trait Hook {
+    fn before(&mut self, _p: &Program, _pc: usize, _cur: LaneMask, _regs: &Regs) {}
+}
+
+pub(crate) struct NoHook;
+impl Hook for NoHook {}
+
+/// Reports statements and stores of one lane to a [`Trace`].
+pub(crate) struct TraceHook<'t> {
+    pub lane: usize,
+    pub trace: &'t mut dyn Trace,
+    /// Statement index per op (u32::MAX: none starts there).
+    pub stmt_at: Vec<u32>,
+}
+
+impl Hook for TraceHook<'_> {
+    fn before(&mut self, p: &Program, pc: usize, cur: LaneMask, regs: &Regs) {
+        if cur & (1 << self.lane) == 0 {
+            return;
+        }
+        if let Some(&s) = self.stmt_at.get(pc) {
+            if let Some(mark) = p.statements.get(s as usize) {
+                self.trace.statement(mark.span);
+            }
+        }
+        // Stores report the value they are about to write.
+        match p.ops.get(pc) {
+            Some(Op::Store { d, a }) => {
+                let v = regs[*a as usize][self.lane];
+                self.trace.store(*d, v);
+            }
+            Some(Op::Scatter { base, off, max, a }) => {
+                let o = regs[*off as usize][self.lane].min(*max);
+                let v = regs[*a as usize][self.lane];
+                self.trace.store(base + o, v);
+            }
+            _ => {}
+        }
+    }
+}
+
+#[inline(always)]
+fn f(x: u32) -> f32 {
+    f32::from_bits(x)
+}
+
+#[inline(always)]
+fn lanes(mut g: impl FnMut(usize) -> u32) -> [u32; LANES] {
+    let mut o = [0u32; LANES];
+    for (l, v) in o.iter_mut().enumerate() {
+        *v = g(l);
+    }
+    o
+}
+
+pub(crate) fn run<H: Hook>(
+    k: &Kernel,
+    batch: &mut Batch,
+    uniforms: &[u32],
+    textures: &dyn Textures,
+    hook: &mut H,
+) -> Result<(), ExecError> {
+    let p = &k.program;
+    let mut r: Regs = vec![[0u32; LANES]; p.registers as usize];
+    for &(reg, bits) in &p.init {
+        r[reg as usize] = [bits; LANES];
+    }
+    for &(ic, reg, kind) in &k.inputs {
+        let src = batch.inputs.get(ic).copied().unwrap_or([0.0; LANES]);
+        r[reg as usize] = lanes(|l| match kind {
+            Scalar::Float => src[l].to_bits(),
+            Scalar::Int => src[l] as i32 as u32,
+            Scalar::Bool => (src[l] != 0.0) as u32,
+        });
+    }
+    let mut masks = vec![0 as LaneMask; p.mask_slots as usize];
+    let start = (batch.active | batch.helper) & FULL;
+    let mut cur: LaneMask = start;
+    batch.discarded = 0;
+    let mut iterations: u64 = 0;
+    let mut return_address = vec![0u32; p.subroutines as usize];
+    let ops = &p.ops[..];
+    let mut pc = 0usize;
+    let uni = |w: usize| uniforms.get(w).copied().unwrap_or(0);
+
+    macro_rules! un {
+        ($d:expr, $a:expr, |$x:ident| $body:expr) => {{
+            let a = r[$a as usize];
+            r[$d as usize] = lanes(|l| {
+                let $x = a[l];
+                $body
+            });
+        }};
+    }
+    macro_rules! bin {
+        ($d:expr, $a:expr, $b:expr, |$x:ident, $y:ident| $body:expr) => {{
+            let (a, b) = (r[$a as usize], r[$b as usize]);
+            r[$d as usize] = lanes(|l| {
+                let ($x, $y) = (a[l], b[l]);
+                $body
+            });
+        }};
+    }
+
+    while let Some(&op) = ops.get(pc) {
+        hook.before(p, pc, cur, &r);
+        pc += 1;
+        match op {
+            Op::Const { d, bits } => r[d as usize] = [bits; LANES],
+            Op::Mov { d, a } => r[d as usize] = r[a as usize],
+            Op::Store { d, a } => {
+                let a = r[a as usize];
+                let dst = &mut r[d as usize];
+                for (l, v) in dst.iter_mut().enumerate() {
+                    if cur & (1 << l) != 0 {
+                        *v = a[l];
+                    }
+                }
+            }
+            Op::Uniform { d, word } => r[d as usize] = [uni(word as usize); LANES],
+            Op::FAdd { d, a, b } => bin!(d, a, b, |x, y| (f(x) + f(y)).to_bits()),
+            Op::FSub { d, a, b } => bin!(d, a, b, |x, y| (f(x) - f(y)).to_bits()),
+            Op::FMul { d, a, b } => bin!(d, a, b, |x, y| (f(x) * f(y)).to_bits()),
+            Op::FDiv { d, a, b } => bin!(d, a, b, |x, y| (f(x) / f(y)).to_bits()),
+            Op::FNeg { d, a } => un!(d, a, |x| (-f(x)).to_bits()),
+            Op::FMac { d, a, b } => {
+                let (a, b, acc) = (r[a as usize], r[b as usize], r[d as usize]);
+                r[d as usize] = lanes(|l| {
+                    let prod = f(a[l]) * f(b[l]);
+                    (f(acc[l]) + prod).to_bits()
+                });
+            }
+            Op::F1 { f: func, d, a } => un!(d, a, |x| func(f(x)).to_bits()),
+            Op::F2 { f: func, d, a, b } => bin!(d, a, b, |x, y| func(f(x), f(y)).to_bits()),
+            Op::F3 {
+                f: func,
+                d,
+                a,
+                b,
+                c,
+            } => {
+                let (a, b, c) = (r[a as usize], r[b as usize], r[c as usize]);
+                r[d as usize] = lanes(|l| func(f(a[l]), f(b[l]), f(c[l])).to_bits());
+            }
+            Op::FLt { d, a, b } => bin!(d, a, b, |x, y| (f(x) < f(y)) as u32),
+            Op::FLe { d, a, b } => bin!(d, a, b, |x, y| (f(x) <= f(y)) as u32),
+            Op::FEq { d, a, b } => bin!(d, a, b, |x, y| (f(x) == f(y)) as u32),
+            Op::IAdd { d, a, b } => bin!(d, a, b, |x, y| x.wrapping_add(y)),
+            Op::ISub { d, a, b } => bin!(d, a, b, |x, y| x.wrapping_sub(y)),
+            Op::IMul { d, a, b } => bin!(d, a, b, |x, y| x.wrapping_mul(y)),
+            Op::IDiv { d, a, b } => bin!(d, a, b, |x, y| {
+                if y == 0 {
+                    0
+                } else {
+                    (x as i32).wrapping_div(y as i32) as u32
+                }
+            }),
+            Op::INeg { d, a } => un!(d, a, |x| (x as i32).wrapping_neg() as u32),
+            Op::ILt { d, a, b } => bin!(d, a, b, |x, y| ((x as i32) < (y as i32)) as u32),
+            Op::ILe { d, a, b } => bin!(d, a, b, |x, y| ((x as i32) <= (y as i32)) as u32),
+            Op::IEq { d, a, b } => bin!(d, a, b, |x, y| (x == y) as u32),
+            Op::And { d, a, b } => bin!(d, a, b, |x, y| ((x != 0) & (y != 0)) as u32),
+            Op::Or { d, a, b } => bin!(d, a, b, |x, y| ((x != 0) | (y != 0)) as u32),
+            Op::Xor { d, a, b } => bin!(d, a, b, |x, y| ((x != 0) ^ (y != 0)) as u32),
+            Op::Not { d, a } => un!(d, a, |x| (x == 0) as u32),
+            Op::FToI { d, a } => un!(d, a, |x| glsl::consteval::float_to_int(f(x)) as u32),
+            Op::IToF { d, a } => un!(d, a, |x| (x as i32 as f32).to_bits()),
+            Op::FToB { d, a } => un!(d, a, |x| (f(x) != 0.0) as u32),
+            Op::IToB { d, a } => un!(d, a, |x| (x != 0) as u32),
+            Op::BToF { d, a } => un!(d, a, |x| if x != 0 { 1.0f32 } else { 0.0 }.to_bits()),
+            Op::Select { d, c, a, b } => {
+                let (c, a, b) = (r[c as usize], r[a as usize], r[b as usize]);
+                r[d as usize] = lanes(|l| if c[l] != 0 { a[l] } else { b[l] });
+            }
+            Op::ClampIdx { d, a, max, stride } => {
+                un!(d, a, |x| ((x as i32).clamp(0, max as i32) as u32)
+                    .wrapping_mul(stride))
+            }
+            Op::Gather { d, base, off, max } => {
+                let o = r[off as usize];
+                let v = lanes(|l| r[(base + o[l].min(max)) as usize][l]);
+                r[d as usize] = v;
+            }
+            Op::Scatter { base, off, max, a } => {
+                let (o, a) = (r[off as usize], r[a as usize]);
+                for l in 0..LANES {
+                    if cur & (1 << l) != 0 {
+                        r[(base + o[l].min(max)) as usize][l] = a[l];
+                    }
+                }
+            }
+            Op::GatherUniform { d, word, off, max } => {
+                let o = r[off as usize];
+                r[d as usize] = lanes(|l| uni(word as usize + o[l].min(max) as usize));
+            }
+            Op::DdX { d, a } => un_quad(&mut r, d, a, 1),
+            Op::DdY { d, a } => un_quad(&mut r, d, a, 2),
+            Op::Noise { d, n, a, dims } => {
+                let mut out = [[0u32; LANES]; 4];
+                for (l, _) in (0..LANES).enumerate() {
+                    let mut x = [0f32; 4];
+                    for (k, xk) in x.iter_mut().enumerate().take(dims as usize) {
+                        *xk = f(r[a as usize + k][l]);
+                    }
+                    let x = &x[..dims as usize];
+                    let v: [f32; 4] = match n {
+                        1 => [math::noise1(x), 0.0, 0.0, 0.0],
+                        2 => {
+                            let v = math::noise2(x);
+                            [v[0], v[1], 0.0, 0.0]
+                        }
+                        3 => {
+                            let v = math::noise3(x);
+                            [v[0], v[1], v[2], 0.0]
+                        }
+                        _ => math::noise4(x),
+                    };
+                    for k in 0..4 {
+                        out[k][l] = v[k].to_bits();
+                    }
+                }
+                for (k, o) in out.iter().enumerate().take(n as usize) {
+                    r[d as usize + k] = *o;
+                }
+            }
+            Op::Texture { index } => {
+                if let Some(t) = p.textures.get(index as usize) {
+                    texture(&mut r, t, cur, textures);
+                }
+            }
+            Op::SaveMask { slot } => masks[slot as usize] = cur,
+            Op::RestoreMask { slot } => cur = masks[slot as usize],
+            Op::AndMask { c } => {
+                let c = r[c as usize];
+                for (l, &v) in c.iter().enumerate() {
+                    if v == 0 {
+                        cur &= !(1 << l);
+                    }
+                }
+            }
+            Op::AndNotMask { slot, c } => {
+                let c = r[c as usize];
+                cur = masks[slot as usize];
+                for (l, &v) in c.iter().enumerate() {
+                    if v != 0 {
+                        cur &= !(1 << l);
+                    }
+                }
+            }
+            Op::JumpIfNone { target } => {
+                if cur == 0 {
+                    pc = target as usize;
+                }
+            }
+            Op::Jump { target } => pc = target as usize,
+            Op::LoopIter => {
+                iterations += 1;
+                if iterations > k.loop_budget {
+                    return Err(ExecError::LoopBudget { iterations });
+                }
+            }
+            Op::Call { target, slot } => {
+                return_address[slot as usize] = pc as u32;
+                pc = target as usize;
+            }
+            Op::Ret { slot } => pc = return_address[slot as usize] as usize,
+            Op::SyncDiscard { start, end } => {
+                let gone = batch.discarded;
+                for &s in &p.kill_slots[start as usize..end as usize] {
+                    masks[s as usize] &= !gone;
+                }
+                cur &= !gone;
+            }
+            Op::Kill { start, end } | Op::Discard { start, end } => {
+                if matches!(op, Op::Discard { .. }) {
+                    batch.discarded |= cur;
+                }
+                for &s in &p.kill_slots[start as usize..end as usize] {
+                    masks[s as usize] &= !cur;
+                }
+                cur = 0;
+            }
+        }
+    }
+
+    let active = batch.active & FULL;
+    if batch.outputs.len() < k.interface.output_components {
+        batch
+            .outputs
+            .resize(k.interface.output_components, [0.0; LANES]);
+    }
+    for &(reg, oc, kind) in &k.outputs {
+        let src = r[reg as usize];
+        if let Some(dst) = batch.outputs.get_mut(oc) {
+            for (l, v) in dst.iter_mut().enumerate() {
+                if active & (1 << l) != 0 {
+                    *v = match kind {
+                        Scalar::Float => f(src[l]),
+                        Scalar::Int => src[l] as i32 as f32,
+                        Scalar::Bool => (src[l] != 0) as u32 as f32,
+                    };
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Quad difference along x (`bit` 1) or y (`bit` 2): `v(l | bit) - v(l & !bit)`.
+fn quad_diff(a: &[u32; LANES], bit: usize) -> [u32; LANES] {
+    lanes(|l| (f(a[l | bit]) - f(a[l & !bit])).to_bits())
+}
+
+fn un_quad(r: &mut Regs, d: u32, a: u32, bit: usize) {
+    let v = quad_diff(&r[a as usize], bit);
+    r[d as usize] = v;
+}
+
+fn floats(a: &[u32; LANES]) -> [f32; LANES] {
+    let mut o = [0f32; LANES];
+    for (x, &b) in o.iter_mut().zip(a) {
+        *x = f(b);
+    }
+    o
+}
+
+fn texture(r: &mut Regs, t: &crate::program::TexOp, cur: LaneMask, textures: &dyn Textures) {
+    let mut out = [[0f32; LANES]; 4];
+    if cur != 0 {
+        let coord = t.coord.map(|c| floats(&r[c as usize]));
+        let lod = match t.lod {
+            TexLod::Explicit(l) => Lod::Explicit(match l {
+                Some(l) => floats(&r[l as usize]),
+                None => [0.0; LANES],
+            }),
+            TexLod::Implicit { bias } => {
+                let mut ddx = [[0f32; LANES]; 3];
+                let mut ddy = [[0f32; LANES]; 3];
+                for k in 0..(t.dims as usize).min(3) {
+                    let c = &r[t.coord[k] as usize];
+                    ddx[k] = floats(&quad_diff(c, 1));
+                    ddy[k] = floats(&quad_diff(c, 2));
+                }
+                Lod::Derivatives {
+                    ddx,
+                    ddy,
+                    bias: match bias {
+                        Some(b) => floats(&r[b as usize]),
+                        None => [0.0; LANES],
+                    },
+                }
+            }
+        };
+        let req = SampleRequest {
+            unit: r[t.unit as usize],
+            target: t.target,
+            coord,
+            compare: t.compare.map(|c| floats(&r[c as usize])),
+            lod,
+            mask: cur,
+        };
+        textures.sample(&req, &mut out);
+    }
+    for (k, o) in out.iter().enumerate() {
+        r[t.d as usize + k] = o.map(f32::to_bits);
+    }
+}

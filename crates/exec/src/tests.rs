@@ -1,0 +1,676 @@
+//! Unit tests: small GLSL programs compiled with `glsl::compile`, linked,
+//! lowered and run; built-ins checked against constant folding.
+
+#![allow(clippy::needless_range_loop)]
+
+use super::*;
+use glsl::ir::{ConstScalar, ConstValue, Stage};
+use glsl::types::{Scalar, Type};
+use glsl::{compile, CompileOptions};
+
+mod builtins;
+mod piglit;
+
+pub(crate) fn link_one(stage: Stage, src: &str) -> Result<glsl::link::LinkedStage, String> {
+    let sh = compile(&[src], &CompileOptions::new(stage));
+    if !sh.ok() {
+        return Err(sh.info_log());
+    }
+    let prog = glsl::link::link(&[&sh]);
+    if !prog.ok() {
+        return Err(prog.info_log().to_string());
+    }
+    prog.stage(stage)
+        .cloned()
+        .ok_or_else(|| "no stage".to_string())
+}
+
+pub(crate) fn kernel(stage: Stage, src: &str) -> Kernel {
+    let s = link_one(stage, src).unwrap_or_else(|e| panic!("compile failed: {e}\n{src}"));
+    Kernel::new(&s).unwrap_or_else(|e| panic!("lowering failed: {e}\n{src}"))
+}
+
+/// Uniform words with the named uniforms set.
+pub(crate) fn uniforms(k: &Kernel, values: &[(&str, &[u32])]) -> Vec<u32> {
+    let mut words = vec![0u32; k.interface().uniform_words];
+    for (name, v) in values {
+        let (off, _) = k
+            .interface()
+            .locate_uniform(name)
+            .unwrap_or_else(|| panic!("no uniform {name}"));
+        words[off..off + v.len()].copy_from_slice(v);
+    }
+    words
+}
+
+fn fbits(v: &[f32]) -> Vec<u32> {
+    v.iter().map(|f| f.to_bits()).collect()
+}
+
+/// A fragment batch whose gl_FragCoord is (lane, 0) + 0.5.
+fn frag_batch(k: &Kernel) -> Batch {
+    let mut b = Batch::for_kernel(k, FULL_MASK);
+    if let Some(s) = k.interface().input("gl_FragCoord") {
+        for l in 0..LANES {
+            b.inputs[s.offset][l] = l as f32 + 0.5;
+            b.inputs[s.offset + 1][l] = 0.5;
+            b.inputs[s.offset + 3][l] = 1.0;
+        }
+    }
+    b
+}
+
+const FULL_MASK: LaneMask = crate::interp::FULL;
+
+/// Output `name` per component per lane.
+fn output(k: &Kernel, b: &Batch, name: &str) -> Vec<[f32; LANES]> {
+    let s = k.interface().output(name).expect("output");
+    b.outputs[s.offset..s.offset + s.components].to_vec()
+}
+
+/// Runs a fragment shader over lanes with gl_FragCoord.x = lane + 0.5 and
+/// returns gl_FragColor per lane.
+fn frag_colors(src: &str, unis: &[(&str, &[u32])]) -> (Vec<[f32; 4]>, LaneMask) {
+    let k = kernel(Stage::Fragment, src);
+    let u = uniforms(&k, unis);
+    let mut b = frag_batch(&k);
+    k.run(&mut b, &u, &NoTextures).expect("runs");
+    let c = output(&k, &b, "gl_FragColor");
+    // The same program with every function as a subroutine agrees.
+    let stage = link_one(Stage::Fragment, src).unwrap();
+    let sk = Kernel::with_inline_limit(&stage, 0).expect("lowers");
+    let mut sb = frag_batch(&sk);
+    sk.run(&mut sb, &u, &NoTextures).expect("runs");
+    assert_eq!(sb.discarded, b.discarded, "subroutine mode: discarded");
+    assert_eq!(
+        output(&sk, &sb, "gl_FragColor"),
+        c,
+        "subroutine mode: gl_FragColor"
+    );
+    (
+        (0..LANES)
+            .map(|l| [c[0][l], c[1][l], c[2][l], c[3][l]])
+            .collect(),
+        b.discarded,
+    )
+}
+
+#[test]
+fn divergent_if_else() {
+    let (c, _) = frag_colors(
+        "void main() {
+            float x = gl_FragCoord.x;
+            vec4 c = vec4(0.0);
+            if (x < 4.0) { c.r = 1.0; } else if (x < 8.0) { c.g = 1.0; } else { c.b = x; }
+            if (mod(x - 0.5, 2.0) == 0.0) c.a = 1.0; else c.a = 0.5;
+            gl_FragColor = c;
+        }",
+        &[],
+    );
+    for (l, c) in c.iter().enumerate() {
+        let x = l as f32 + 0.5;
+        let want = if x < 4.0 {
+            [1.0, 0.0, 0.0]
+        } else if x < 8.0 {
+            [0.0, 1.0, 0.0]
+        } else {
+            [0.0, 0.0, x]
+        };
+        assert_eq!(&c[..3], &want, "lane {l}");
+        assert_eq!(c[3], if l % 2 == 0 { 1.0 } else { 0.5 }, "lane {l}");
+    }
+}
+
+#[test]
+fn loops_with_break_and_continue() {
+    let (c, _) = frag_colors(
+        "void main() {
+            int n = int(gl_FragCoord.x);
+            float sum = 0.0; float odd = 0.0; int i;
+            for (i = 0; i < 100; i++) {
+                if (i >= n) break;
+                sum += 1.0;
+                if (i - (i / 2) * 2 == 0) continue;
+                odd += 1.0;
+            }
+            int j = 0;
+            do { j++; } while (j < n);
+            float w = 0.0;
+            while (true) { w += 2.0; if (w > float(n)) break; }
+            gl_FragColor = vec4(sum, odd, float(j), w);
+        }",
+        &[],
+    );
+    for (l, c) in c.iter().enumerate() {
+        let n = l as f32;
+        let j = (l as f32).max(1.0);
+        let w = ((l / 2) * 2 + 2) as f32;
+        assert_eq!(*c, [n, (l / 2) as f32, j, w], "lane {l}");
+    }
+}
+
+#[test]
+fn early_return_and_out_params() {
+    let (c, _) = frag_colors(
+        "float f(float x, out float y, inout float z) {
+            y = 2.0 * x;
+            if (x < 5.0) { z += 1.0; return -x; }
+            z *= 10.0;
+            return x;
+        }
+        void g(inout vec2 v, int i) { v[i] = 7.0; }
+        void main() {
+            float y, z = 1.0;
+            float r = f(gl_FragCoord.x, y, z);
+            vec2 v = vec2(0.0);
+            g(v, int(gl_FragCoord.x) - (int(gl_FragCoord.x) / 2) * 2);
+            gl_FragColor = vec4(r, y, z, v.x - v.y);
+        }",
+        &[],
+    );
+    for (l, c) in c.iter().enumerate() {
+        let x = l as f32 + 0.5;
+        let (r, z) = if x < 5.0 { (-x, 2.0) } else { (x, 10.0) };
+        let v = if l % 2 == 0 { 7.0 } else { -7.0 };
+        assert_eq!(*c, [r, 2.0 * x, z, v], "lane {l}");
+    }
+}
+
+#[test]
+fn discard_stops_the_lane() {
+    let (c, discarded) = frag_colors(
+        "void main() {
+            gl_FragColor = vec4(1.0);
+            if (gl_FragCoord.x > 10.0) discard;
+            gl_FragColor = vec4(0.5);
+        }",
+        &[],
+    );
+    assert_eq!(discarded, 0xffff & !0x3ff);
+    for (l, c) in c.iter().enumerate().take(10) {
+        assert_eq!(c[0], 0.5, "lane {l}");
+    }
+}
+
+#[test]
+fn discard_in_a_function_inside_a_loop() {
+    let (c, discarded) = frag_colors(
+        "float k;
+        void kill(float x) { if (x > 3.0) discard; k += 1.0; }
+        void main() {
+            k = 0.0;
+            for (int i = 0; i < 4; i++) kill(gl_FragCoord.x + float(i));
+            gl_FragColor = vec4(k);
+        }",
+        &[],
+    );
+    // Lane 0 (x=0.5): i=0..3 → 0.5..3.5: killed at i=3. Only lanes with
+    // x + 3 <= 3 survive: none.
+    assert_eq!(discarded, 0xffff);
+    let _ = c;
+    let (c, discarded) = frag_colors(
+        "float k;
+        void kill(float x) { if (x > 5.0) discard; k += 1.0; }
+        void main() {
+            k = 0.0;
+            for (int i = 0; i < 4; i++) kill(gl_FragCoord.x + float(i));
+            gl_FragColor = vec4(k);
+        }",
+        &[],
+    );
+    // x + 3 <= 5 → x <= 2: lanes 0, 1 survive.
+    assert_eq!(discarded, 0xffff & !0b11);
+    assert_eq!(c[0][0], 4.0);
+    assert_eq!(c[1][0], 4.0);
+}
+
+#[test]
+fn lazy_logic_and_ternary_side_effects() {
+    let (c, _) = frag_colors(
+        "float n;
+        bool bump() { n += 1.0; return true; }
+        void main() {
+            n = 0.0;
+            bool big = gl_FragCoord.x > 8.0;
+            bool a = big && bump();
+            bool b = big || bump();
+            float t = big ? (n += 10.0) : (n -= 100.0);
+            gl_FragColor = vec4(n, float(a), float(b), t);
+        }",
+        &[],
+    );
+    for (l, c) in c.iter().enumerate() {
+        let big = l as f32 + 0.5 > 8.0;
+        let n = if big { 1.0 + 10.0 } else { 1.0 - 100.0 };
+        assert_eq!(*c, [n, big as u8 as f32, 1.0, n], "lane {l}");
+    }
+}
+
+#[test]
+fn dynamic_indexing_clamps() {
+    let (c, _) = frag_colors(
+        "#version 120
+        uniform float a[4];
+        void main() {
+            int i = int(gl_FragCoord.x) - 2;
+            float b[4];
+            for (int k = 0; k < 4; k++) b[k] = a[k] * 2.0;
+            b[i] = -1.0;
+            vec4 v = vec4(10.0, 20.0, 30.0, 40.0);
+            mat3 m = mat3(1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0);
+            gl_FragColor = vec4(a[i], b[0] + b[3], v[i], m[i][i]);
+        }",
+        &[("a", &fbits(&[1.0, 2.0, 3.0, 4.0]))],
+    );
+    for (l, c) in c.iter().enumerate() {
+        let i = (l as i32 - 2).clamp(0, 3) as usize;
+        let a = [1.0, 2.0, 3.0, 4.0][i];
+        let mut b = [2.0, 4.0, 6.0, 8.0];
+        b[i] = -1.0;
+        let v = [10.0, 20.0, 30.0, 40.0][i];
+        let m = [1.0, 5.0, 9.0][i.min(2)];
+        assert_eq!(*c, [a, b[0] + b[3], v, m], "lane {l}");
+    }
+}
+
+#[test]
+fn structs_arrays_and_equality() {
+    let (c, _) = frag_colors(
+        "#version 120
+        struct S { vec2 p; float w[2]; };
+        void main() {
+            S s = S(vec2(1.0, 2.0), float[2](3.0, 4.0));
+            S t = s;
+            t.w[int(gl_FragCoord.x) - 7] = 9.0;
+            float a[2] = float[2](1.0, 2.0);
+            float b[2] = a;
+            gl_FragColor = vec4(float(s == t), float(a == b), t.w[0], t.w[1]);
+        }",
+        &[],
+    );
+    for (l, c) in c.iter().enumerate() {
+        let i = (l as i32 - 7).clamp(0, 1) as usize;
+        let mut w = [3.0, 4.0];
+        w[i] = 9.0;
+        assert_eq!(*c, [0.0, 1.0, w[0], w[1]], "lane {l}");
+    }
+}
+
+#[test]
+fn swizzle_assignment_and_incdec() {
+    let (c, _) = frag_colors(
+        "void main() {
+            vec4 v = vec4(1.0, 2.0, 3.0, 4.0);
+            v.wx = v.xw;
+            v.yz += vec2(0.5);
+            int i = 3;
+            int j = i++ + ++i;
+            float f = 1.0;
+            f--;
+            gl_FragColor = vec4(v.x + v.w * 10.0, v.y + v.z, float(j), f);
+        }",
+        &[],
+    );
+    assert_eq!(c[0], [4.0 + 10.0, 2.5 + 3.5, 8.0, 0.0]);
+}
+
+/// Builds `l op r` over constants and folds it (the oracle for matrix
+/// products).
+fn fold_matmul(l: &ConstValue, r: &ConstValue, ty: Type) -> Vec<f32> {
+    use glsl::ir::{BinaryOp, Expr, ExprKind};
+    let c = |v: &ConstValue| Expr {
+        kind: ExprKind::Const(v.clone()),
+        ty: v.ty,
+        span: Span::default(),
+    };
+    let e = Expr {
+        kind: ExprKind::Binary {
+            op: BinaryOp::MatMul,
+            left: Box::new(c(l)),
+            right: Box::new(c(r)),
+        },
+        ty,
+        span: Span::default(),
+    };
+    glsl::consteval::fold(&e, &[])
+        .expect("folds")
+        .components
+        .iter()
+        .map(|c| match c {
+            ConstScalar::Float(f) => *f,
+            _ => f32::NAN,
+        })
+        .collect()
+}
+
+fn type_name(ty: Type) -> String {
+    ty.display(&|_| String::new()).to_string()
+}
+
+#[test]
+fn matrices_of_every_shape() {
+    let mut seed = 1u32;
+    let mut next = || {
+        seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12345);
+        ((seed >> 8) % 2000) as f32 / 97.0 - 10.0
+    };
+    for c1 in 2..=4u8 {
+        for r1 in 2..=4u8 {
+            let a_ty = Type::mat(c1, r1);
+            // matrix × vector, vector × matrix, matrix × matrix.
+            let cases: Vec<(Type, Type)> = vec![
+                (a_ty, Type::vec(Scalar::Float, c1)),
+                (Type::vec(Scalar::Float, r1), a_ty),
+                (a_ty, Type::mat(2, c1)),
+                (a_ty, Type::mat(3, c1)),
+                (a_ty, Type::mat(4, c1)),
+            ];
+            for (lt, rt) in cases {
+                let lv = ConstValue {
+                    ty: lt,
+                    components: (0..lt.component_count().unwrap())
+                        .map(|_| ConstScalar::Float(next()))
+                        .collect(),
+                };
+                let rv = ConstValue {
+                    ty: rt,
+                    components: (0..rt.component_count().unwrap())
+                        .map(|_| ConstScalar::Float(next()))
+                        .collect(),
+                };
+                let (lc, lr) = match lt.base {
+                    glsl::types::Base::Matrix { cols, rows } => (cols, rows),
+                    _ => (lt.vector_size().unwrap(), 1),
+                };
+                let rc = match rt.base {
+                    glsl::types::Base::Matrix { cols, .. } => cols,
+                    _ => 1,
+                };
+                let _ = lc;
+                let res_ty = if rc == 1 {
+                    Type::vec(Scalar::Float, lr)
+                } else if lr == 1 {
+                    Type::vec(Scalar::Float, rc)
+                } else {
+                    Type::mat(rc, lr)
+                };
+                let want = fold_matmul(&lv, &rv, res_ty);
+                let src = format!(
+                    "#version 120
+                    uniform {} l; uniform {} r;
+                    varying {} o;
+                    void main() {{ o = l * r; gl_Position = vec4(0.0); }}",
+                    type_name(lt),
+                    type_name(rt),
+                    type_name(res_ty)
+                );
+                let k = kernel(Stage::Vertex, &src);
+                let bits = |v: &ConstValue| -> Vec<u32> {
+                    v.components
+                        .iter()
+                        .map(|c| match c {
+                            ConstScalar::Float(f) => f.to_bits(),
+                            _ => 0,
+                        })
+                        .collect()
+                };
+                let u = uniforms(&k, &[("l", &bits(&lv)), ("r", &bits(&rv))]);
+                let mut b = Batch::for_kernel(&k, 0b1010);
+                k.run(&mut b, &u, &NoTextures).unwrap();
+                let o = output(&k, &b, "o");
+                let got: Vec<f32> = o.iter().map(|c| c[3]).collect();
+                assert_eq!(
+                    fbits(&got),
+                    fbits(&want),
+                    "{} * {}",
+                    type_name(lt),
+                    type_name(rt)
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn constructors() {
+    let (c, _) = frag_colors(
+        "#version 120
+        void main() {
+            mat2 m = mat2(2.0);
+            mat3 n = mat3(mat2(1.0, 2.0, 3.0, 4.0));
+            mat2x3 p = mat2x3(vec3(1.0), 2.0, 3.0, 4.0);
+            ivec2 iv = ivec2(vec2(-1.7, 2.9));
+            bvec2 bv = bvec2(0.0, 3.0);
+            vec4 v = vec4(iv, bv);
+            gl_FragColor = vec4(m[1][1] + m[0][1], n[2][2] + n[0][1], p[1][2], v.x + v.y * 10.0 + v.w * 100.0);
+        }",
+        &[],
+    );
+    assert_eq!(c[0], [2.0, 1.0 + 2.0, 4.0, -1.0 + 20.0 + 100.0]);
+}
+
+#[test]
+fn ftransform_alone() {
+    let k = kernel(Stage::Vertex, "void main() { gl_Position = ftransform(); }");
+    let i = k.interface();
+    assert!(i.uniform("gl_ModelViewProjectionMatrix").is_some());
+    assert!(i.input("gl_Vertex").is_some());
+}
+
+#[test]
+fn ftransform_matches_the_product() {
+    let k = kernel(
+        Stage::Vertex,
+        "varying vec4 a; void main() { gl_Position = ftransform(); a = gl_ModelViewProjectionMatrix * gl_Vertex; }",
+    );
+    let m: Vec<f32> = (0..16).map(|i| i as f32 * 0.37 - 2.0).collect();
+    let u = uniforms(&k, &[("gl_ModelViewProjectionMatrix", &fbits(&m))]);
+    let mut b = Batch::for_kernel(&k, 0xffff);
+    let vin = k.interface().input("gl_Vertex").unwrap().offset;
+    for l in 0..LANES {
+        for c in 0..4 {
+            b.inputs[vin + c][l] = (l * 4 + c) as f32 * 0.13 - 1.0;
+        }
+    }
+    k.run(&mut b, &u, &NoTextures).unwrap();
+    assert_eq!(output(&k, &b, "gl_Position"), output(&k, &b, "a"));
+    assert_ne!(output(&k, &b, "a")[0][0], 0.0);
+}
+
+#[test]
+fn derivatives_from_quads() {
+    let k = kernel(
+        Stage::Fragment,
+        "void main() { float v = gl_FragCoord.x * gl_FragCoord.x + 3.0 * gl_FragCoord.y;
+          gl_FragColor = vec4(dFdx(v), dFdy(v), fwidth(v), 0.0); }",
+    );
+    let mut b = Batch::for_kernel(&k, 0xffff);
+    let fc = k.interface().input("gl_FragCoord").unwrap().offset;
+    for l in 0..LANES {
+        let (q, i) = (l / 4, l % 4);
+        b.inputs[fc][l] = (q * 2 + (i & 1)) as f32 + 0.5;
+        b.inputs[fc + 1][l] = (i >> 1) as f32 + 0.5;
+    }
+    k.run(&mut b, &[], &NoTextures).unwrap();
+    let c = output(&k, &b, "gl_FragColor");
+    for l in 0..LANES {
+        let x0 = ((l / 4) * 2) as f32 + 0.5;
+        let dx = (x0 + 1.0) * (x0 + 1.0) - x0 * x0;
+        assert_eq!(c[0][l], dx, "lane {l}");
+        assert_eq!(c[1][l], 3.0);
+        assert_eq!(c[2][l], dx.abs() + 3.0);
+    }
+}
+
+struct Recorder(std::cell::RefCell<Vec<SampleRequest>>);
+impl Textures for Recorder {
+    fn sample(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]) {
+        for l in 0..LANES {
+            out[0][l] = req.coord[0][l];
+            out[1][l] = req.coord[1][l];
+            out[2][l] = req.unit[l] as f32;
+            out[3][l] = req.compare.map_or(-1.0, |c| c[l]);
+        }
+        self.0.borrow_mut().push(req.clone());
+    }
+}
+
+#[test]
+fn texture_requests() {
+    let k = kernel(
+        Stage::Fragment,
+        "uniform sampler2D s; uniform sampler2DShadow sh;
+        void main() {
+            vec4 a = texture2DProj(s, vec3(gl_FragCoord.xy, 2.0), 1.5);
+            vec4 b = shadow2DProj(sh, vec4(1.0, 2.0, 3.0, 4.0));
+            gl_FragColor = a + b;
+        }",
+    );
+    let u = uniforms(&k, &[("s", &[3]), ("sh", &[5])]);
+    let mut b = frag_batch(&k);
+    b.active = 0x00ff;
+    let rec = Recorder(Default::default());
+    k.run(&mut b, &u, &rec).unwrap();
+    let reqs = rec.0.borrow();
+    assert_eq!(reqs.len(), 2);
+    assert_eq!(reqs[0].mask, 0x00ff);
+    assert_eq!(reqs[0].unit[0], 3);
+    assert_eq!(reqs[0].coord[0][3], 3.5 / 2.0);
+    assert_eq!(reqs[0].compare, None);
+    match &reqs[0].lod {
+        Lod::Derivatives { ddx, bias, .. } => {
+            assert_eq!(ddx[0][0], 0.5);
+            assert_eq!(bias[0], 1.5);
+        }
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(reqs[1].coord[0][0], 0.25);
+    assert_eq!(reqs[1].compare.unwrap()[0], 0.75);
+    let c = output(&k, &b, "gl_FragColor");
+    assert_eq!(c[2][0], 8.0);
+}
+
+#[test]
+fn loop_budget_ends_infinite_loops() {
+    let mut k = kernel(
+        Stage::Fragment,
+        "void main() { float x = 0.0; while (true) { x += 1.0; } gl_FragColor = vec4(x); }",
+    );
+    k.set_loop_budget(10_000);
+    let mut b = frag_batch(&k);
+    let e = k.run(&mut b, &[], &NoTextures).unwrap_err();
+    assert_eq!(e, ExecError::LoopBudget { iterations: 10_001 });
+    // Finite loops under the budget run.
+    let mut k = kernel(
+        Stage::Fragment,
+        "void main() { float x = 0.0; for (int i = 0; i < 100; i++) { x += 1.0; } gl_FragColor = vec4(x); }",
+    );
+    // 100 iterations plus the trip that finds the condition false.
+    k.set_loop_budget(101);
+    let mut b = frag_batch(&k);
+    k.run(&mut b, &[], &NoTextures).unwrap();
+    assert_eq!(b.outputs[0][3], 100.0);
+}
+
+#[test]
+fn integer_division_by_zero_gives_zero() {
+    let (c, _) = frag_colors(
+        "uniform int z;
+        void main() { int a = 7 / z; int b = (-2147483647 - 1) / -1; gl_FragColor = vec4(float(a), float(b), 0.0, 0.0); }",
+        &[("z", &[0])],
+    );
+    assert_eq!(c[0][0], 0.0);
+    assert_eq!(c[0][1], -2147483648.0);
+}
+
+#[test]
+fn results_do_not_depend_on_active_lanes() {
+    let src = "uniform float u;
+        float f(float x) { float s = 0.0; for (int i = 0; i < 8; i++) { if (x < float(i)) break; s += sin(x * float(i)); } return s; }
+        void main() { gl_FragColor = vec4(f(gl_FragCoord.x * u)); }";
+    let k = kernel(Stage::Fragment, src);
+    let u = uniforms(&k, &[("u", &[0.7f32.to_bits()])]);
+    let mut all = frag_batch(&k);
+    k.run(&mut all, &u, &NoTextures).unwrap();
+    for lane in 0..LANES {
+        let mut one = frag_batch(&k);
+        one.active = 1 << lane;
+        k.run(&mut one, &u, &NoTextures).unwrap();
+        assert_eq!(
+            one.outputs[0][lane].to_bits(),
+            all.outputs[0][lane].to_bits()
+        );
+    }
+}
+
+#[test]
+fn interface_layout() {
+    let k = kernel(
+        Stage::Vertex,
+        "#version 120
+        struct L { vec3 pos; float w[2]; };
+        uniform L lights[2];
+        uniform mat2 m;
+        uniform sampler2D tex;
+        attribute vec3 p;
+        varying vec2 t;
+        void main() { gl_Position = vec4(p + lights[1].pos, lights[0].w[1]) + texture2DLod(tex, m[0], 0.0); t = m[1]; }",
+    );
+    let i = k.interface();
+    let l = i.uniform("lights").unwrap();
+    assert_eq!(l.components, 10);
+    assert_eq!(
+        i.locate_uniform("lights[1].w[1]"),
+        Some((l.offset + 9, Type::FLOAT))
+    );
+    assert_eq!(i.locate_uniform("lights[2]"), None);
+    assert_eq!(i.uniform("tex").unwrap().components, 1);
+    assert!(i.input("p").is_some());
+    let t = i.output("t").unwrap();
+    assert!(t.written);
+    assert!(i.output("gl_Position").unwrap().written);
+    // Built-ins the shader never mentions are not in the module at all.
+    assert!(i.output("gl_PointSize").is_none_or(|s| !s.written));
+}
+
+#[derive(Default)]
+struct Lines(Vec<Span>, Vec<(u32, u32)>);
+impl Trace for Lines {
+    fn statement(&mut self, span: Span) {
+        self.0.push(span);
+    }
+    fn store(&mut self, register: u32, bits: u32) {
+        self.1.push((register, bits));
+    }
+}
+
+#[test]
+fn trace_reports_statements_of_one_lane() {
+    let k = kernel(
+        Stage::Fragment,
+        "void main() {
+            float a = 1.0;
+            if (gl_FragCoord.x > 3.0) a = 2.0;
+            gl_FragColor = vec4(a);
+        }",
+    );
+    let mut t0 = Lines::default();
+    let mut b = frag_batch(&k);
+    k.run_traced(&mut b, &[], &NoTextures, 0, &mut t0).unwrap();
+    let mut t5 = Lines::default();
+    let mut b = frag_batch(&k);
+    k.run_traced(&mut b, &[], &NoTextures, 5, &mut t5).unwrap();
+    assert_eq!(t0.0.len() + 1, t5.0.len());
+    let a = k.variables().iter().find(|v| v.name == "a").unwrap();
+    assert!(t5.1.contains(&(a.first_register, 2.0f32.to_bits())));
+}
+
+#[test]
+fn unsized_local_arrays_take_their_implicit_size() {
+    let (c, _) = frag_colors(
+        "void f() { float a[]; a[5] = 2.0; a[1] = 1.0; gl_FragColor = vec4(a[5], a[1], 0.0, 1.0); }
+        void main() { f(); }",
+        &[],
+    );
+    assert_eq!(c[3], [2.0, 1.0, 0.0, 1.0]);
+}

@@ -1,0 +1,209 @@
+//! Every overload of every built-in function that constant folding can
+//! evaluate, run by the kernel on uniform arguments and compared bit for
+//! bit with `glsl::builtins::eval_builtin` (the constant-folding oracle).
+
+use super::{kernel, uniforms};
+use crate::{Batch, NoTextures, LANES};
+use glsl::builtins::{eval_builtin, prelude, BuiltinFn};
+use glsl::ir::{ConstScalar, ConstValue, Stage};
+use glsl::types::{Base, Scalar, Type};
+use glsl::Version;
+
+/// Parses `float`, `ivec3`, `mat2x4`, ... (no samplers).
+fn parse_type(name: &str) -> Option<Type> {
+    let digit = |s: &str| s.parse::<u8>().ok();
+    Some(match name {
+        "float" => Type::FLOAT,
+        "int" => Type::INT,
+        "bool" => Type::BOOL,
+        _ if name.starts_with("vec") => Type::vec(Scalar::Float, digit(&name[3..])?),
+        _ if name.starts_with("ivec") => Type::vec(Scalar::Int, digit(&name[4..])?),
+        _ if name.starts_with("bvec") => Type::vec(Scalar::Bool, digit(&name[4..])?),
+        _ if name.starts_with("mat") => {
+            let rest = &name[3..];
+            match rest.split_once('x') {
+                Some((c, r)) => Type::mat(digit(c)?, digit(r)?),
+                None => {
+                    let n = digit(rest)?;
+                    Type::mat(n, n)
+                }
+            }
+        }
+        _ => return None,
+    })
+}
+
+/// (function, argument types, result type) of every prototype in the
+/// vertex-stage 1.20 prelude with non-sampler arguments.
+fn overloads() -> Vec<(BuiltinFn, String, Vec<Type>, Type)> {
+    let mut out = Vec::new();
+    for line in prelude(Version::V120, Stage::Vertex).lines() {
+        let Some(line) = line.strip_suffix(");") else {
+            continue;
+        };
+        let Some((head, params)) = line.split_once('(') else {
+            continue;
+        };
+        let Some((ret, name)) = head.split_once(' ') else {
+            continue;
+        };
+        let Some(f) = BuiltinFn::from_name(name) else {
+            continue;
+        };
+        let Some(ret) = parse_type(ret) else { continue };
+        let params: Option<Vec<Type>> = if params.trim().is_empty() {
+            Some(Vec::new())
+        } else {
+            params.split(',').map(|p| parse_type(p.trim())).collect()
+        };
+        if let Some(params) = params {
+            out.push((f, name.to_string(), params, ret));
+        }
+    }
+    out
+}
+
+const FLOATS: [f32; 14] = [
+    -2.5, -1.0, -0.75, -0.3, 0.0, 0.25, 0.5, 0.7, 1.0, 1.5, 3.25, 10.0, -0.0, 0.9,
+];
+const INTS: [i32; 6] = [-3, -1, 0, 1, 2, 5];
+
+fn value(ty: Type, round: u32, arg: u32) -> ConstValue {
+    let n = ty.component_count().unwrap_or(1);
+    let components = (0..n)
+        .map(|k| {
+            let h = round
+                .wrapping_mul(2_654_435_761)
+                .wrapping_add(arg.wrapping_mul(40_503))
+                .wrapping_add(k.wrapping_mul(97))
+                >> 3;
+            match ty.scalar() {
+                Some(Scalar::Int) => ConstScalar::Int(INTS[h as usize % INTS.len()]),
+                Some(Scalar::Bool) => ConstScalar::Bool(h % 2 == 1),
+                _ => ConstScalar::Float(FLOATS[h as usize % FLOATS.len()]),
+            }
+        })
+        .collect();
+    ConstValue { ty, components }
+}
+
+fn bits(c: &ConstScalar) -> u32 {
+    match c {
+        ConstScalar::Float(f) => f.to_bits(),
+        ConstScalar::Int(i) => *i as u32,
+        ConstScalar::Bool(b) => *b as u32,
+    }
+}
+
+fn as_float(c: &ConstScalar) -> f32 {
+    match c {
+        ConstScalar::Float(f) => *f,
+        ConstScalar::Int(i) => *i as f32,
+        ConstScalar::Bool(b) => *b as u8 as f32,
+    }
+}
+
+fn tname(ty: Type) -> String {
+    ty.display(&|_| String::new()).to_string()
+}
+
+#[test]
+fn every_overload_matches_constant_folding() {
+    let mut checked = 0;
+    let mut skipped = Vec::new();
+    for (f, name, params, ret) in overloads() {
+        if matches!(
+            f,
+            BuiltinFn::Ftransform
+                | BuiltinFn::Noise1
+                | BuiltinFn::Noise2
+                | BuiltinFn::Noise3
+                | BuiltinFn::Noise4
+        ) {
+            continue;
+        }
+        let out_ty = match ret.base {
+            Base::Scalar(_) => Type::FLOAT,
+            Base::Vector(_, n) => Type::vec(Scalar::Float, n),
+            _ => ret,
+        };
+        let decls: String = params
+            .iter()
+            .enumerate()
+            .map(|(i, t)| format!("uniform {} a{i};\n", tname(*t)))
+            .collect();
+        let call_args: Vec<String> = (0..params.len()).map(|i| format!("a{i}")).collect();
+        let src = format!(
+            "#version 120\n{decls}varying {} o;\nvoid main() {{ gl_Position = vec4(0.0); o = {}({}({})); }}",
+            tname(out_ty),
+            tname(out_ty),
+            name,
+            call_args.join(", ")
+        );
+        let k = kernel(Stage::Vertex, &src);
+        for round in 0..12 {
+            let args: Vec<ConstValue> = params
+                .iter()
+                .enumerate()
+                .map(|(i, t)| value(*t, round, i as u32))
+                .collect();
+            let Some(want) = eval_builtin(f, &args, ret) else {
+                skipped.push(format!("{name}{params:?}"));
+                break;
+            };
+            let words: Vec<Vec<u32>> = args
+                .iter()
+                .map(|a| a.components.iter().map(bits).collect())
+                .collect();
+            let names: Vec<String> = (0..params.len()).map(|i| format!("a{i}")).collect();
+            let unis: Vec<(&str, &[u32])> = names
+                .iter()
+                .map(|n| n.as_str())
+                .zip(words.iter().map(|w| w.as_slice()))
+                .collect();
+            let u = uniforms(&k, &unis);
+            let mut b = Batch::for_kernel(&k, 0xffff);
+            k.run(&mut b, &u, &NoTextures).expect("runs");
+            let slot = k.interface().output("o").expect("o");
+            for (i, c) in want.components.iter().enumerate() {
+                let w = as_float(c);
+                for lane in [0, LANES - 1] {
+                    let g = b.outputs[slot.offset + i][lane];
+                    assert!(
+                        g.to_bits() == w.to_bits() || (g.is_nan() && w.is_nan()),
+                        "{name}({}) component {i}: kernel {g} ({:#x}), folding {w} ({:#x})",
+                        args.iter()
+                            .map(|a| format!("{:?}", a.components))
+                            .collect::<Vec<_>>()
+                            .join(", "),
+                        g.to_bits(),
+                        w.to_bits()
+                    );
+                }
+            }
+            checked += 1;
+        }
+    }
+    assert!(skipped.is_empty(), "not folded: {skipped:?}");
+    assert!(checked > 1500, "only {checked} cases");
+}
+
+#[test]
+fn noise_matches_glsl_math() {
+    let k = kernel(
+        Stage::Vertex,
+        "uniform vec3 p; varying vec4 o; varying float n1;
+         void main() { gl_Position = vec4(0.0); o = noise4(p); n1 = noise1(p.xy); }",
+    );
+    let p = [1.25f32, -3.5, 0.3];
+    let u = uniforms(&k, &[("p", &p.map(f32::to_bits))]);
+    let mut b = Batch::for_kernel(&k, 1);
+    k.run(&mut b, &u, &NoTextures).unwrap();
+    let o = k.interface().output("o").unwrap().offset;
+    let want = glsl::math::noise4(&p);
+    for (c, w) in want.iter().enumerate() {
+        assert_eq!(b.outputs[o + c][0].to_bits(), w.to_bits());
+    }
+    let n1 = k.interface().output("n1").unwrap().offset;
+    assert_eq!(b.outputs[n1][0], glsl::math::noise1(&p[..2]));
+}
