@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
-# Run piglit's GLSL 1.10/1.20 compiler tests against shaderbox, through
-# piglit's own framework, and compare with the expected failures.
+# Run piglit's GLSL 1.10/1.20 tests against shaderbox, through piglit's own
+# framework, and compare with the expected failures.
 #
-# Usage: scripts/piglit-run.sh [--debug] [--bless] [-j JOBS] [--timeout SECONDS]
+# Usage: scripts/piglit-run.sh [--suite glslparser|shader] [--debug] [--bless]
+#                              [-j JOBS] [--timeout SECONDS]
 #
+#   --suite     glslparser (default): the compiler tests, 1678, run by
+#               `shaderbox glslparsertest`; shader: the execution tests
+#               (.shader_test files), 3138, run by `shaderbox shader-runner`
 #   --debug     build and test the debug binary (default: release)
-#   --bless     rewrite tests/piglit/expected-failures-glslparser.txt to the
+#   --bless     rewrite tests/piglit/expected-failures-SUITE.txt to the
 #               current failures (crashes and timeouts are never blessed)
 #   -j JOBS     concurrent tests (default: number of CPUs)
-#   --timeout   seconds per test before piglit calls it a timeout (default 30)
+#   --timeout   seconds per test before piglit calls it a timeout (default 30
+#               for glslparser, 60 for shader)
 #
 # Environment: PIGLIT_CACHE (default .piglit/, see piglit-fetch.sh),
 # CARGO_TARGET_DIR, SHADERBOX_BIN (test this binary instead of building).
@@ -17,10 +22,12 @@
 # new failed, 1 on a new failure, crash or timeout, 2 on setup problems.
 #
 # How piglit is driven: a PIGLIT_BUILD_DIR-style directory whose
-# bin/glslparsertest runs `shaderbox glslparsertest "$@"`, with piglit's
-# tests/ and generated_tests/ linked in; `piglit run glslparser` with the
-# test names filtered to spec@glsl-1.10@ and spec@glsl-1.20@ (1678 tests);
-# the results JSON is then read by scripts/piglit_compare.py.
+# bin/glslparsertest runs `shaderbox glslparsertest "$@"` and whose
+# bin/shader_runner runs `shaderbox shader-runner "$@"`, with piglit's
+# tests/ and generated_tests/ linked in; `piglit run glslparser` or
+# `piglit run shader` with the test names filtered to spec@glsl-1.10@ and
+# spec@glsl-1.20@; the results JSON is then read by
+# scripts/piglit_compare.py, which writes tests/piglit/SUITE-counts.txt.
 
 set -euo pipefail
 
@@ -28,15 +35,16 @@ root_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cache="${PIGLIT_CACHE:-$root_dir/.piglit}"
 data="$cache/root/usr/lib/x86_64-linux-gnu/piglit"
 runner="$cache/root/usr/bin/piglit"
-expected="$root_dir/tests/piglit/expected-failures-glslparser.txt"
-counts="$root_dir/tests/piglit/glslparser-counts.txt"
 
+suite=glslparser
 profile=release
 bless=()
 jobs="$(nproc 2>/dev/null || echo 2)"
-timeout=30
+timeout=
 while [ $# -gt 0 ]; do
     case "$1" in
+        --suite) suite="$2"; shift ;;
+        --suite=*) suite="${1#--suite=}" ;;
         --debug) profile=debug ;;
         --release) profile=release ;;
         --bless) bless=(--bless) ;;
@@ -50,6 +58,15 @@ while [ $# -gt 0 ]; do
 done
 
 log() { printf 'piglit-run: %s\n' "$*" >&2; }
+
+case "$suite" in
+    glslparser) ntests=1678; default_timeout=30 ;;
+    shader) ntests=3138; default_timeout=60 ;;
+    *) log "unknown suite \`$suite' (glslparser or shader)"; exit 2 ;;
+esac
+timeout="${timeout:-$default_timeout}"
+expected="$root_dir/tests/piglit/expected-failures-$suite.txt"
+counts="$root_dir/tests/piglit/$suite-counts.txt"
 
 [ -x "$runner" ] && [ -d "$data/framework" ] || {
     log "piglit is not fetched yet: run scripts/piglit-fetch.sh first"
@@ -80,26 +97,30 @@ cat >"$build/bin/glslparsertest" <<EOF
 #!/bin/sh
 exec "$bin" glslparsertest "\$@"
 EOF
-chmod +x "$build/bin/glslparsertest"
+cat >"$build/bin/shader_runner" <<EOF
+#!/bin/sh
+exec "$bin" shader-runner "\$@"
+EOF
+chmod +x "$build/bin/glslparsertest" "$build/bin/shader_runner"
 
 # 3. Run. Fast skipping needs waffle's wflinfo to ask a GL driver for its
 # versions; without it every test would be skipped, so it is disabled and
-# glslparsertest decides skips itself. No core dumps from crashing tests.
-results="$cache/results/glslparser"
+# the programs decide skips themselves. No core dumps from crashing tests.
+results="$cache/results/$suite"
 mkdir -p "$(dirname "$results")"
 level=dummy
 [ -t 1 ] && [ -z "${CI:-}" ] && level=quiet
-log "running 1678 glslparser tests ($profile build, $jobs jobs, ${timeout}s timeout)"
+log "running $ntests $suite tests ($profile build, $jobs jobs, ${timeout}s timeout)"
 ulimit -c 0
 start=$(date +%s.%N)
 (
     cd "$cache"
     PIGLIT_BUILD_DIR="$build" PIGLIT_NO_FAST_SKIP=1 PYTHONWARNINGS=ignore \
-        /usr/bin/python3 "$runner" run glslparser \
+        /usr/bin/python3 "$runner" run "$suite" \
         -t 'spec@glsl-1\.10@' -t 'spec@glsl-1\.20@' \
         -c -j "$jobs" --timeout "$timeout" -l "$level" -n shaderbox -o "$results"
-) >"$cache/results/glslparser.log" 2>&1 || {
-    cat "$cache/results/glslparser.log" >&2
+) >"$cache/results/$suite.log" 2>&1 || {
+    cat "$cache/results/$suite.log" >&2
     log "piglit itself failed (see above)"
     exit 2
 }
@@ -108,4 +129,4 @@ elapsed=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.1f", b - a }')
 
 # 4. Compare with the expected failures.
 /usr/bin/python3 "$root_dir/scripts/piglit_compare.py" "$results" "$expected" \
-    --counts "$counts" --elapsed "$elapsed" --title glslparser "${bless[@]}"
+    --counts "$counts" --elapsed "$elapsed" --title "$suite" "${bless[@]}"

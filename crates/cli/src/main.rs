@@ -5,10 +5,12 @@
 //!   print their diagnostics as a rich report, a GL info log or JSON;
 //! - `glslparsertest` ([`glslparsertest`]): piglit's `glslparsertest`
 //!   program contract, so piglit's own framework can run its compiler tests
-//!   against shaderbox.
+//!   against shaderbox;
+//! - `shader-runner` ([`shader_runner`]): piglit's `shader_runner` program
+//!   contract, running `.shader_test` files on shaderbox's OpenGL 2.1.
 //!
-//! Rendering, running `shader_test` files and debugging will join them as
-//! further variants of [`Command`], each in its own module.
+//! Rendering and debugging will join them as further variants of
+//! [`Command`], each in its own module.
 //!
 //! Exit codes are shared by the subcommands ([`Exit`]); `glslparsertest`
 //! follows piglit's conventions instead (see its module).
@@ -17,6 +19,7 @@ mod check;
 mod glslparsertest;
 mod guard;
 mod input;
+mod shader_runner;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -42,10 +45,14 @@ enum Command {
     /// `glslparsertest` program).
     #[command(name = "glslparsertest")]
     GlslParserTest(glslparsertest::Args),
+    /// Run one piglit `.shader_test` file (the contract of piglit's
+    /// `shader_runner` program).
+    #[command(name = "shader-runner")]
+    ShaderRunner(shader_runner::Args),
 }
 
-/// Exit statuses of `shaderbox` (except `glslparsertest`, which speaks
-/// piglit's protocol).
+/// Exit statuses of `shaderbox` (except `glslparsertest` and
+/// `shader-runner`, which speak piglit's protocol).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Exit {
     /// Everything compiled (and linked, when asked).
@@ -71,6 +78,7 @@ fn main() -> ExitCode {
     match cli.command {
         Command::Check(args) => check::run(&args).into(),
         Command::GlslParserTest(args) => glslparsertest::run(&args),
+        Command::ShaderRunner(args) => shader_runner::run(&args),
     }
 }
 

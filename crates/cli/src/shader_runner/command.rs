@@ -1,0 +1,1186 @@
+//! The `[test]` commands.
+//!
+//! Each line is one command, recognised by its leading words as piglit's
+//! `shader_runner` does (in the same order, so that `probe all rgba` wins
+//! over `probe all rgb`); values are read with the C library's rules
+//! ([`super::scan`]). Values after the ones a command needs are ignored, as
+//! piglit ignores them (some tests put comments there). Where piglit would
+//! read uninitialised memory because a value is missing, the line is
+//! rejected instead.
+//!
+//! Commands of later GL versions and extensions (compute, SSBOs, transform
+//! feedback, atomic counters, subroutines, framebuffer objects, ...) parse to
+//! [`Command::NeedsLaterGl`]: running one makes the test a skip.
+
+use super::glenum::*;
+use super::scan::{self, Scanned};
+
+/// A `[test]` command.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Command {
+    ClearColor([f32; 4]),
+    ClearDepth(f32),
+    Clear,
+    ClipPlane {
+        plane: u32,
+        equation: [f64; 4],
+    },
+    Color([f32; 4]),
+    /// `draw rect [ortho] X Y W H` and `draw rect tex X Y W H TX TY TW TH`.
+    DrawRect {
+        rect: [f32; 4],
+        ortho: bool,
+        tex: Option<[f32; 4]>,
+    },
+    DrawArrays {
+        mode: u32,
+        first: i32,
+        count: i32,
+    },
+    Enable(u32),
+    Disable(u32),
+    Frustum([f32; 6]),
+    Hint {
+        target: u32,
+        mode: u32,
+    },
+    /// `ortho` (window coordinates) or `ortho L R B T`.
+    Ortho(Option<[f32; 4]>),
+    /// `probe rgb`/`probe rgba`: one pixel.
+    ProbePixel {
+        x: i32,
+        y: i32,
+        expected: Vec<f32>,
+    },
+    /// `relative probe rgb`/`rgba`: one pixel at a fraction of the window.
+    RelativeProbePixel {
+        rx: f32,
+        ry: f32,
+        expected: Vec<f32>,
+    },
+    /// `probe rect rgb`/`rgba (x, y, w, h) (color)`.
+    ProbeRect {
+        rect: [i32; 4],
+        expected: Vec<f32>,
+    },
+    /// `relative probe rect rgb`/`rgba`.
+    RelativeProbeRect {
+        rect: [f32; 4],
+        expected: Vec<f32>,
+    },
+    /// `probe all rgb`/`rgba`; `warn`: `probe warn all rgba`.
+    ProbeAll {
+        expected: Vec<f32>,
+        warn: bool,
+    },
+    ProbeDepth {
+        x: i32,
+        y: i32,
+        expected: f32,
+    },
+    Tolerance([f32; 4]),
+    ShadeModel(u32),
+    Texture(TextureCommand),
+    TexParameter {
+        target: u32,
+        pname: u32,
+        value: TexParamValue,
+    },
+    /// `uniform TYPE NAME VALUES`. piglit leaves values missing from the
+    /// line uninitialised (a few tests write `vec4` with 3 values); here they
+    /// are 0, and `missing` counts them for a warning.
+    Uniform {
+        ty: UniformType,
+        name: String,
+        values: UniformValues,
+        missing: usize,
+    },
+    LinkError,
+    LinkSuccess,
+    Light {
+        light: u32,
+        pname: u32,
+        values: LightValues,
+    },
+    /// A command shaderbox does not provide because it needs a later GL.
+    NeedsLaterGl(String),
+}
+
+/// The `texture ...` commands.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TextureCommand {
+    /// `texture rgbw UNIT (W, H)`: quadrants red, green, blue, white.
+    Rgbw2d { unit: u32, width: u32, height: u32 },
+    /// `texture rgbw 1D UNIT`: texels red, green, blue, white.
+    Rgbw1d { unit: u32 },
+    /// `texture rgbw 3D UNIT`: 2x2x2 texels.
+    Rgbw3d { unit: u32 },
+    /// `texture miptree UNIT`: 8x8 with 4 solid levels.
+    Miptree { unit: u32 },
+    /// `texture checkerboard UNIT LEVEL (W, H) (black) (white)`.
+    Checkerboard {
+        unit: u32,
+        level: i32,
+        width: u32,
+        height: u32,
+        black: [f32; 4],
+        white: [f32; 4],
+    },
+    /// `texture quads UNIT LEVEL (W, H) (SX, SY) (bl) (br) (tl) (tr)`.
+    Quads {
+        unit: u32,
+        level: i32,
+        width: u32,
+        height: u32,
+        square: [u32; 2],
+        colors: [[f32; 4]; 4],
+    },
+    /// `texture shadow1D UNIT (W)` / `shadow2D UNIT (W, H)`: depth gradients
+    /// with compare mode on, compare func GREATER.
+    Shadow {
+        unit: u32,
+        target: u32,
+        width: u32,
+        height: u32,
+    },
+}
+
+/// A `texparameter` value.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TexParamValue {
+    Enum(u32),
+    Int(i32),
+    Float(f32),
+    Color([f32; 4]),
+}
+
+/// `light` values: `float ...` or `int ...`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum LightValues {
+    Float(Vec<f32>),
+    Int(Vec<i32>),
+}
+
+/// The GLSL type a `uniform` command names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UniformType {
+    /// float, vec2..vec4 (components).
+    Float(u8),
+    /// int, ivec2..4.
+    Int(u8),
+    /// bool, bvec2..4 (not in piglit; set with glUniform*iv).
+    Bool(u8),
+    /// matCxR: columns, rows.
+    Mat(u8, u8),
+}
+
+impl UniformType {
+    /// Values the command reads.
+    pub fn components(self) -> usize {
+        match self {
+            UniformType::Float(n) | UniformType::Int(n) | UniformType::Bool(n) => usize::from(n),
+            UniformType::Mat(c, r) => usize::from(c) * usize::from(r),
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum UniformValues {
+    Floats(Vec<f32>),
+    Ints(Vec<i32>),
+}
+
+/// A line piglit's `shader_runner` would reject.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{0}")]
+pub struct CommandError(pub String);
+
+fn bad(what: &str, line: &str) -> CommandError {
+    CommandError(format!("{what} at: {line}"))
+}
+
+/// `parse_str`: optional white space, then the literal.
+fn lit<'a>(s: &'a str, literal: &str) -> Option<&'a str> {
+    s.trim_start_matches(|c| c != '\n' && scan::is_c_space(c))
+        .strip_prefix(literal)
+}
+
+/// Exactly `n` floats (piglit's `parse_floats` with `strtof_hex`).
+fn floats<const N: usize>(s: &str, what: &str, line: &str) -> Result<[f32; N], CommandError> {
+    let (v, _) = scan::scan_list(s, N, scan::scan_f32_or_bits);
+    v.try_into().map_err(|v: Vec<f32>| {
+        bad(
+            &format!("{what}: expected {N} numbers, found {}", v.len()),
+            line,
+        )
+    })
+}
+
+fn scanned_f32(v: &[Scanned]) -> Vec<f32> {
+    v.iter()
+        .map(|s| match *s {
+            Scanned::F(f) => f,
+            Scanned::D(d) => d as f32,
+            Scanned::I(i) => i as f32,
+        })
+        .collect()
+}
+
+fn scanned_i32(v: &[Scanned]) -> Vec<i32> {
+    v.iter()
+        .map(|s| match *s {
+            Scanned::I(i) => i,
+            Scanned::F(f) => f as i32,
+            Scanned::D(d) => d as i32,
+        })
+        .collect()
+}
+
+/// `sscanf(line, pattern) == conversions`: every conversion of the pattern
+/// read a value (literals after the last conversion need not match, as in
+/// C: `relative probe rgb (0, 0) (1, 0, 0, 1)` reads its five values).
+fn sscanf_all(line: &str, pattern: &str) -> Option<Vec<Scanned>> {
+    let (v, _) = scan::sscanf(line, pattern);
+    (v.len() == pattern.matches('%').count()).then_some(v)
+}
+
+/// Parses one `[test]` line; `Ok(None)` for blank lines and comments.
+pub fn parse(line: &str) -> Result<Option<Command>, CommandError> {
+    let line = line.trim_start_matches(|c| c != '\n' && scan::is_c_space(c));
+    if line.is_empty() || line.starts_with('#') {
+        return Ok(None);
+    }
+    parse_command(line).map(Some)
+}
+
+fn parse_command(line: &str) -> Result<Command, CommandError> {
+    use Command as C;
+    // Commands of later GL versions, by their leading words.
+    for (prefix, what) in LATER_GL {
+        if lit(line, prefix).is_some() {
+            return Ok(C::NeedsLaterGl((*what).to_string()));
+        }
+    }
+    if let Some(rest) = lit(line, "clear color ") {
+        return Ok(C::ClearColor(floats::<4>(rest, "clear color", line)?));
+    }
+    if let Some(rest) = lit(line, "clear depth ") {
+        return Ok(C::ClearDepth(floats::<1>(rest, "clear depth", line)?[0]));
+    }
+    if lit(line, "clear").is_some() {
+        return Ok(C::Clear);
+    }
+    if let Some(v) = sscanf_all(line, "clip plane %d %lf %lf %lf %lf") {
+        let plane = scanned_i32(&v[..1])[0];
+        let eq: Vec<f64> = v[1..]
+            .iter()
+            .map(|s| match *s {
+                Scanned::D(d) => d,
+                _ => 0.0,
+            })
+            .collect();
+        if !(0..8).contains(&plane) {
+            return Err(CommandError(format!("clip plane id {plane} out of range")));
+        }
+        return Ok(C::ClipPlane {
+            plane: plane as u32,
+            equation: [eq[0], eq[1], eq[2], eq[3]],
+        });
+    }
+    if let Some(rest) = lit(line, "color ") {
+        return Ok(C::Color(floats::<4>(rest, "color", line)?));
+    }
+    if let Some(rest) = lit(line, "draw rect tex ") {
+        let v = floats::<8>(rest, "draw rect tex", line)?;
+        return Ok(C::DrawRect {
+            rect: [v[0], v[1], v[2], v[3]],
+            ortho: false,
+            tex: Some([v[4], v[5], v[6], v[7]]),
+        });
+    }
+    if lit(line, "draw rect ortho patch ").is_some() || lit(line, "draw rect patch ").is_some() {
+        return Ok(C::NeedsLaterGl("tessellation patches (OpenGL 4.0)".into()));
+    }
+    if let Some(rest) = lit(line, "draw rect ortho ") {
+        return Ok(C::DrawRect {
+            rect: floats::<4>(rest, "draw rect ortho", line)?,
+            ortho: true,
+            tex: None,
+        });
+    }
+    if let Some(rest) = lit(line, "draw rect ") {
+        return Ok(C::DrawRect {
+            rect: floats::<4>(rest, "draw rect", line)?,
+            ortho: false,
+            tex: None,
+        });
+    }
+    if lit(line, "draw instanced rect ").is_some() || lit(line, "draw arrays instanced ").is_some()
+    {
+        return Ok(C::NeedsLaterGl("instanced drawing (OpenGL 3.1)".into()));
+    }
+    if let Some(rest) = lit(line, "draw arrays ") {
+        let (mode_name, rest) =
+            scan::word(rest).ok_or_else(|| bad("draw arrays: no mode", line))?;
+        let (v, _) = scan::scan_list(rest, 2, scan::scan_i32_dec);
+        let [first, count] = v[..] else {
+            return Err(bad("draw arrays: expected MODE FIRST COUNT", line));
+        };
+        let mode = draw_mode(mode_name)?;
+        return Ok(C::DrawArrays { mode, first, count });
+    }
+    if lit(line, "draw elements ").is_some() || lit(line, "multidraw arrays ").is_some() {
+        return Ok(C::NeedsLaterGl("[elements] / multidraw".into()));
+    }
+    if let Some(rest) = lit(line, "disable ") {
+        return Ok(C::Disable(enable_cap(rest, line)?));
+    }
+    if let Some(rest) = lit(line, "enable ") {
+        return Ok(C::Enable(enable_cap(rest, line)?));
+    }
+    if let Some(rest) = lit(line, "frustum") {
+        return Ok(C::Frustum(floats::<6>(rest, "frustum", line)?));
+    }
+    if let Some(rest) = lit(line, "hint") {
+        let (t, rest) = scan::word(rest).ok_or_else(|| bad("Bad hint target", line))?;
+        let target = match t {
+            "GL_LINE_SMOOTH_HINT" => GL_LINE_SMOOTH_HINT,
+            "GL_POLYGON_SMOOTH_HINT" => GL_POLYGON_SMOOTH_HINT,
+            "GL_TEXTURE_COMPRESSION_HINT" => GL_TEXTURE_COMPRESSION_HINT,
+            "GL_FRAGMENT_SHADER_DERIVATIVE_HINT" => GL_FRAGMENT_SHADER_DERIVATIVE_HINT,
+            _ => return Err(bad("Bad hint target", line)),
+        };
+        let (m, _) = scan::word(rest).ok_or_else(|| bad("Bad hint param", line))?;
+        let mode = match m {
+            "GL_FASTEST" => GL_FASTEST,
+            "GL_NICEST" => GL_NICEST,
+            "GL_DONT_CARE" => GL_DONT_CARE,
+            _ => return Err(bad("Bad hint param", line)),
+        };
+        return Ok(C::Hint { target, mode });
+    }
+    if let Some(v) = sscanf_all(line, "ortho %f %f %f %f") {
+        let v = scanned_f32(&v);
+        return Ok(C::Ortho(Some([v[0], v[1], v[2], v[3]])));
+    }
+    if lit(line, "ortho").is_some() {
+        return Ok(C::Ortho(None));
+    }
+    if let Some(rest) = lit(line, "probe rgba ") {
+        let v = floats::<6>(rest, "probe rgba", line)?;
+        return Ok(C::ProbePixel {
+            x: v[0] as i32,
+            y: v[1] as i32,
+            expected: v[2..].to_vec(),
+        });
+    }
+    if let Some(rest) = lit(line, "probe depth ") {
+        let v = floats::<3>(rest, "probe depth", line)?;
+        return Ok(C::ProbeDepth {
+            x: v[0] as i32,
+            y: v[1] as i32,
+            expected: v[2],
+        });
+    }
+    if let Some(v) = sscanf_all(
+        line,
+        "relative probe rgba ( %f , %f ) ( %f , %f , %f , %f )",
+    ) {
+        let v = scanned_f32(&v);
+        return Ok(C::RelativeProbePixel {
+            rx: v[0],
+            ry: v[1],
+            expected: v[2..].to_vec(),
+        });
+    }
+    if let Some(rest) = lit(line, "probe rgb ") {
+        let v = floats::<5>(rest, "probe rgb", line)?;
+        return Ok(C::ProbePixel {
+            x: v[0] as i32,
+            y: v[1] as i32,
+            expected: v[2..].to_vec(),
+        });
+    }
+    if let Some(v) = sscanf_all(line, "relative probe rgb ( %f , %f ) ( %f , %f , %f )") {
+        let v = scanned_f32(&v);
+        return Ok(C::RelativeProbePixel {
+            rx: v[0],
+            ry: v[1],
+            expected: v[2..].to_vec(),
+        });
+    }
+    if let Some(v) = sscanf_all(
+        line,
+        "probe rect rgba ( %d , %d , %d , %d ) ( %f , %f , %f , %f )",
+    ) {
+        let r = scanned_i32(&v[..4]);
+        return Ok(C::ProbeRect {
+            rect: [r[0], r[1], r[2], r[3]],
+            expected: scanned_f32(&v[4..]),
+        });
+    }
+    if let Some(v) = sscanf_all(
+        line,
+        "probe rect rgb ( %d , %d , %d , %d ) ( %f , %f , %f )",
+    ) {
+        let r = scanned_i32(&v[..4]);
+        return Ok(C::ProbeRect {
+            rect: [r[0], r[1], r[2], r[3]],
+            expected: scanned_f32(&v[4..]),
+        });
+    }
+    if let Some(v) = sscanf_all(
+        line,
+        "relative probe rect rgb ( %f , %f , %f , %f ) ( %f , %f , %f )",
+    ) {
+        let v = scanned_f32(&v);
+        return Ok(C::RelativeProbeRect {
+            rect: [v[0], v[1], v[2], v[3]],
+            expected: v[4..].to_vec(),
+        });
+    }
+    if let Some(v) = sscanf_all(
+        line,
+        "relative probe rect rgba ( %f , %f , %f , %f ) ( %f , %f , %f , %f )",
+    ) {
+        let v = scanned_f32(&v);
+        return Ok(C::RelativeProbeRect {
+            rect: [v[0], v[1], v[2], v[3]],
+            expected: v[4..].to_vec(),
+        });
+    }
+    if lit(line, "relative probe rect rgba int ").is_some() {
+        return Ok(C::NeedsLaterGl("integer color buffers (OpenGL 3.0)".into()));
+    }
+    if lit(line, "polygon mode ").is_some() {
+        return Ok(C::NeedsLaterGl("the `polygon mode' command".into()));
+    }
+    if let Some(rest) = lit(line, "probe all rgba ") {
+        return Ok(C::ProbeAll {
+            expected: floats::<4>(rest, "probe all rgba", line)?.to_vec(),
+            warn: false,
+        });
+    }
+    if let Some(rest) = lit(line, "probe warn all rgba ") {
+        return Ok(C::ProbeAll {
+            expected: floats::<4>(rest, "probe warn all rgba", line)?.to_vec(),
+            warn: true,
+        });
+    }
+    if let Some(rest) = lit(line, "probe all rgb") {
+        return Ok(C::ProbeAll {
+            expected: floats::<3>(rest, "probe all rgb", line)?.to_vec(),
+            warn: false,
+        });
+    }
+    if let Some(rest) = lit(line, "tolerance") {
+        return Ok(C::Tolerance(floats::<4>(rest, "tolerance", line)?));
+    }
+    if lit(line, "shade model smooth").is_some() {
+        return Ok(C::ShadeModel(GL_SMOOTH));
+    }
+    if lit(line, "shade model flat").is_some() {
+        return Ok(C::ShadeModel(GL_FLAT));
+    }
+    if let Some(t) = parse_texture(line)? {
+        return Ok(C::Texture(t));
+    }
+    if let Some(rest) = lit(line, "texparameter ") {
+        return parse_texparameter(rest, line);
+    }
+    if let Some(rest) = lit(line, "uniform ") {
+        return parse_uniform(rest, line);
+    }
+    if lit(line, "link error").is_some() {
+        return Ok(C::LinkError);
+    }
+    if lit(line, "link success").is_some() {
+        return Ok(C::LinkSuccess);
+    }
+    if let Some(rest) = lit(line, "light ") {
+        return parse_light(rest, line);
+    }
+    Err(CommandError(format!("unknown command \"{line}\"")))
+}
+
+/// Leading words of commands that need a later GL or an extension.
+const LATER_GL: &[(&str, &str)] = &[
+    ("active shader program ", "separate shader objects"),
+    ("atomic counter", "atomic counters (OpenGL 4.2)"),
+    ("compute ", "compute shaders (OpenGL 4.3)"),
+    ("subuniform ", "shader subroutines (OpenGL 4.0)"),
+    ("ssbo ", "shader storage buffers (OpenGL 4.3)"),
+    ("probe ssbo ", "shader storage buffers (OpenGL 4.3)"),
+    ("probe atomic counter", "atomic counters (OpenGL 4.2)"),
+    ("xfb ", "transform feedback (OpenGL 3.0)"),
+    ("probe xfb ", "transform feedback (OpenGL 3.0)"),
+    ("fb ", "framebuffer objects (OpenGL 3.0)"),
+    ("blit ", "framebuffer objects (OpenGL 3.0)"),
+    ("image texture ", "image load/store (OpenGL 4.2)"),
+    ("memory barrier ", "image load/store (OpenGL 4.2)"),
+    ("blend barrier", "GL_KHR_blend_equation_advanced"),
+    ("fbfetch barrier", "GL_EXT_shader_framebuffer_fetch"),
+    ("viewport indexed ", "viewport arrays (OpenGL 4.1)"),
+    ("viewport swizzle ", "GL_NV_viewport_swizzle"),
+    ("resident ", "GL_ARB_bindless_texture"),
+    ("texture integer ", "integer textures (OpenGL 3.0)"),
+    ("texture junk 2DArray ", "array textures (OpenGL 3.0)"),
+    ("texture storage ", "texture storage (OpenGL 4.2)"),
+    ("texture rgbw 2DArray ", "array textures (OpenGL 3.0)"),
+    ("texture rgbw 1DArray ", "array textures (OpenGL 3.0)"),
+    ("texture shadowRect ", "rectangle textures (OpenGL 3.1)"),
+    ("texture shadow1DArray ", "array textures (OpenGL 3.0)"),
+    ("texture shadow2DArray ", "array textures (OpenGL 3.0)"),
+    ("texcoord ", "the `texcoord' command"),
+    ("parameter ", "ARB assembly programs"),
+    ("patch parameter ", "tessellation (OpenGL 4.0)"),
+    (
+        "program binary save restore",
+        "program binaries (OpenGL 4.1)",
+    ),
+    ("provoking vertex ", "provoking vertex control (OpenGL 3.2)"),
+    ("ubo array index ", "uniform blocks (OpenGL 3.1)"),
+    ("block ", "uniform blocks (OpenGL 3.1)"),
+    ("active uniform ", "glGetActiveUniformsiv (OpenGL 3.1)"),
+    ("verify program_query", "program queries"),
+    (
+        "verify program_interface_query ",
+        "program interface queries (OpenGL 4.3)",
+    ),
+    ("verify query_object", "query objects"),
+    ("vertex attrib ", "64-bit vertex attributes"),
+    ("newlist ", "display lists"),
+    ("endlist", "display lists"),
+    ("calllist", "display lists"),
+    ("deletelist", "display lists"),
+    ("depthfunc ", "the `depthfunc' command"),
+];
+
+fn draw_mode(name: &str) -> Result<u32, CommandError> {
+    Ok(match name {
+        "GL_POINTS" => GL_POINTS,
+        "GL_LINES" => GL_LINES,
+        "GL_LINE_LOOP" => GL_LINE_LOOP,
+        "GL_LINE_STRIP" => GL_LINE_STRIP,
+        "GL_TRIANGLES" => GL_TRIANGLES,
+        "GL_TRIANGLE_STRIP" => GL_TRIANGLE_STRIP,
+        "GL_TRIANGLE_FAN" => GL_TRIANGLE_FAN,
+        "GL_QUADS" => GL_QUADS,
+        "GL_QUAD_STRIP" => GL_QUAD_STRIP,
+        "GL_POLYGON" => GL_POLYGON,
+        _ => return Err(CommandError(format!("unknown drawing mode \"{name}\""))),
+    })
+}
+
+fn enable_cap(rest: &str, line: &str) -> Result<u32, CommandError> {
+    let (name, _) = scan::word(rest).ok_or_else(|| bad("Bad enable/disable enum", line))?;
+    if let Some(n) = name.strip_prefix("GL_CLIP_PLANE") {
+        if let Ok(i @ 0..=7) = n.parse::<u32>() {
+            return Ok(GL_CLIP_PLANE0 + i);
+        }
+    }
+    Ok(match name {
+        "GL_VERTEX_PROGRAM_TWO_SIDE" => GL_VERTEX_PROGRAM_TWO_SIDE,
+        "GL_PROGRAM_POINT_SIZE" => GL_VERTEX_PROGRAM_POINT_SIZE,
+        "GL_DEPTH_TEST" => GL_DEPTH_TEST,
+        _ => return Err(bad("Bad enable/disable enum", line)),
+    })
+}
+
+/// `texture ...` commands, or `None` when the line is not one.
+fn parse_texture(line: &str) -> Result<Option<TextureCommand>, CommandError> {
+    use TextureCommand as T;
+    let dim = |v: i32, line: &str| -> Result<u32, CommandError> {
+        if (1..=16384).contains(&v) {
+            Ok(v as u32)
+        } else {
+            Err(bad(&format!("texture size {v} out of range"), line))
+        }
+    };
+    let unit = |v: i32, line: &str| -> Result<u32, CommandError> {
+        if (0..32).contains(&v) {
+            Ok(v as u32)
+        } else {
+            Err(bad(&format!("invalid texture index {v}"), line))
+        }
+    };
+    if let Some(v) = sscanf_all(line, "texture rgbw 1D %d") {
+        return Ok(Some(T::Rgbw1d {
+            unit: unit(scanned_i32(&v)[0], line)?,
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture rgbw 3D %d") {
+        return Ok(Some(T::Rgbw3d {
+            unit: unit(scanned_i32(&v)[0], line)?,
+        }));
+    }
+    let (v, _) = scan::sscanf(line, "texture rgbw %d ( %d , %d )");
+    if v.len() >= 2 {
+        if v.len() < 3 {
+            return Err(bad("invalid texture rgbw command", line));
+        }
+        // An internal format after the size would need sized formats.
+        let rest_after = line.rfind(')').map_or("", |i| &line[i + 1..]);
+        if let Some((fmt, _)) = scan::word(rest_after) {
+            if fmt != "GL_RGBA" && fmt != "GL_RGBA8" {
+                return Err(bad(
+                    &format!("texture rgbw: unsupported internal format {fmt}"),
+                    line,
+                ));
+            }
+        }
+        let v = scanned_i32(&v);
+        return Ok(Some(T::Rgbw2d {
+            unit: unit(v[0], line)?,
+            width: dim(v[1], line)?,
+            height: dim(v[2], line)?,
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture miptree %d") {
+        return Ok(Some(T::Miptree {
+            unit: unit(scanned_i32(&v)[0], line)?,
+        }));
+    }
+    if let Some(v) = sscanf_all(
+        line,
+        "texture checkerboard %d %d ( %d , %d ) ( %f , %f , %f , %f ) ( %f , %f , %f , %f )",
+    ) {
+        let i = scanned_i32(&v[..4]);
+        let c = scanned_f32(&v[4..]);
+        return Ok(Some(T::Checkerboard {
+            unit: unit(i[0], line)?,
+            level: i[1].clamp(0, 15),
+            width: dim(i[2], line)?,
+            height: dim(i[3], line)?,
+            black: [c[0], c[1], c[2], c[3]],
+            white: [c[4], c[5], c[6], c[7]],
+        }));
+    }
+    if let Some(v) = sscanf_all(
+        line,
+        "texture quads %d %d ( %d , %d ) ( %d , %d ) ( %f , %f , %f , %f ) ( %f , %f , %f , %f ) ( %f , %f , %f , %f ) ( %f , %f , %f , %f )",
+    ) {
+        let i = scanned_i32(&v[..6]);
+        let c = scanned_f32(&v[6..]);
+        let color = |k: usize| [c[4 * k], c[4 * k + 1], c[4 * k + 2], c[4 * k + 3]];
+        return Ok(Some(T::Quads {
+            unit: unit(i[0], line)?,
+            level: i[1].clamp(0, 15),
+            width: dim(i[2], line)?,
+            height: dim(i[3], line)?,
+            square: [dim(i[4], line)?, dim(i[5], line)?],
+            colors: [color(0), color(1), color(2), color(3)],
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture shadow2D %d ( %d , %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::Shadow {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_2D,
+            width: dim(i[1], line)?,
+            height: dim(i[2], line)?,
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture shadow1D %d ( %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::Shadow {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_1D,
+            width: dim(i[1], line)?,
+            height: 1,
+        }));
+    }
+    if lit(line, "texture ").is_some() {
+        return Err(CommandError(format!("unknown command \"{line}\"")));
+    }
+    Ok(None)
+}
+
+fn parse_texparameter(rest: &str, line: &str) -> Result<Command, CommandError> {
+    let (t, rest) = scan::word(rest).ok_or_else(|| bad("Bad texture target", line))?;
+    let target = match t {
+        "1D" => GL_TEXTURE_1D,
+        "2D" => GL_TEXTURE_2D,
+        "3D" => GL_TEXTURE_3D,
+        "Cube" => GL_TEXTURE_CUBE_MAP,
+        "Rect" | "1DArray" | "2DArray" | "CubeArray" | "2DMS" | "2DMSArray" | "Buffer" => {
+            return Ok(Command::NeedsLaterGl(format!(
+                "{t} textures (OpenGL 3.0 or later)"
+            )))
+        }
+        _ => return Err(bad("Bad texture target", line)),
+    };
+    let (param, rest) = scan::word(rest).ok_or_else(|| bad("unknown texture parameter", line))?;
+    let table: &[(&str, u32)] = match param {
+        "compare_func" => &[
+            ("greater", GL_GREATER),
+            ("gequal", GL_GEQUAL),
+            ("less", GL_LESS),
+            ("lequal", GL_LEQUAL),
+            ("equal", GL_EQUAL),
+            ("notequal", GL_NOTEQUAL),
+            ("never", GL_NEVER),
+            ("always", GL_ALWAYS),
+        ],
+        "depth_mode" => &[
+            ("intensity", GL_INTENSITY),
+            ("luminance", GL_LUMINANCE),
+            ("alpha", GL_ALPHA),
+            ("red", GL_RED),
+        ],
+        "min" => &[
+            ("nearest_mipmap_nearest", GL_NEAREST_MIPMAP_NEAREST),
+            ("linear_mipmap_nearest", GL_LINEAR_MIPMAP_NEAREST),
+            ("nearest_mipmap_linear", GL_NEAREST_MIPMAP_LINEAR),
+            ("linear_mipmap_linear", GL_LINEAR_MIPMAP_LINEAR),
+            ("nearest", GL_NEAREST),
+            ("linear", GL_LINEAR),
+        ],
+        "mag" => &[("nearest", GL_NEAREST), ("linear", GL_LINEAR)],
+        "wrap_s" | "wrap_t" | "wrap_r" => &[
+            ("repeat", GL_REPEAT),
+            ("clamp_to_edge", GL_CLAMP_TO_EDGE),
+            ("clamp_to_border", GL_CLAMP_TO_BORDER),
+        ],
+        "lod_bias" => {
+            let (v, _) = scan::scan_f64(rest).ok_or_else(|| bad("Bad lod_bias", line))?;
+            return Ok(Command::TexParameter {
+                target,
+                pname: GL_TEXTURE_LOD_BIAS,
+                value: TexParamValue::Float(v as f32),
+            });
+        }
+        "max_level" | "base_level" => {
+            let (v, _) = scan::scan_i32_dec(rest).ok_or_else(|| bad("Bad level", line))?;
+            let pname = if param == "max_level" {
+                GL_TEXTURE_MAX_LEVEL
+            } else {
+                GL_TEXTURE_BASE_LEVEL
+            };
+            return Ok(Command::TexParameter {
+                target,
+                pname,
+                value: TexParamValue::Int(v),
+            });
+        }
+        "border_color" => {
+            let c = floats::<4>(rest, "Could not parse border_color texture parameter", line)?;
+            return Ok(Command::TexParameter {
+                target,
+                pname: GL_TEXTURE_BORDER_COLOR,
+                value: TexParamValue::Color(c),
+            });
+        }
+        "swizzle_r" => return Ok(Command::NeedsLaterGl("texture swizzle (OpenGL 3.3)".into())),
+        _ => {
+            return Err(CommandError(format!(
+                "unknown texture parameter in `{line}'"
+            )))
+        }
+    };
+    let pname = match param {
+        "compare_func" => GL_TEXTURE_COMPARE_FUNC,
+        "depth_mode" => GL_DEPTH_TEXTURE_MODE,
+        "min" => GL_TEXTURE_MIN_FILTER,
+        "mag" => GL_TEXTURE_MAG_FILTER,
+        "wrap_s" => GL_TEXTURE_WRAP_S,
+        "wrap_t" => GL_TEXTURE_WRAP_T,
+        _ => GL_TEXTURE_WRAP_R,
+    };
+    let (v, _) = scan::word(rest).ok_or_else(|| bad(&format!("Bad {param}"), line))?;
+    let value = table
+        .iter()
+        .find(|(n, _)| *n == v)
+        .map(|&(_, e)| e)
+        .ok_or_else(|| bad(&format!("Bad {param}"), line))?;
+    Ok(Command::TexParameter {
+        target,
+        pname,
+        value: TexParamValue::Enum(value),
+    })
+}
+
+/// Parses a uniform type name; `Err` with a reason when it needs a later GL.
+pub fn uniform_type(name: &str) -> Result<Option<UniformType>, String> {
+    let vec_n = |s: &str| match s {
+        "2" => Some(2u8),
+        "3" => Some(3),
+        "4" => Some(4),
+        _ => None,
+    };
+    Ok(Some(match name {
+        "float" => UniformType::Float(1),
+        "int" => UniformType::Int(1),
+        "bool" => UniformType::Bool(1),
+        _ => {
+            if let Some(n) = name.strip_prefix("vec").and_then(vec_n) {
+                UniformType::Float(n)
+            } else if let Some(n) = name.strip_prefix("ivec").and_then(vec_n) {
+                UniformType::Int(n)
+            } else if let Some(n) = name.strip_prefix("bvec").and_then(vec_n) {
+                UniformType::Bool(n)
+            } else if let Some(m) = name.strip_prefix("mat") {
+                let (c, r) = match m.split_once('x') {
+                    Some((c, r)) => (vec_n(c), vec_n(r)),
+                    None => (vec_n(m), vec_n(m)),
+                };
+                match (c, r) {
+                    (Some(c), Some(r)) => UniformType::Mat(c, r),
+                    _ => return Ok(None),
+                }
+            } else if name == "uint" || name.starts_with("uvec") {
+                return Err("unsigned integer uniforms (OpenGL 3.0)".into());
+            } else if name == "double" || name.starts_with("dvec") || name.starts_with("dmat") {
+                return Err("double uniforms (OpenGL 4.0)".into());
+            } else if name.contains("64") {
+                return Err("64-bit integer uniforms (GL_ARB_gpu_shader_int64)".into());
+            } else if name == "handle" {
+                return Err("bindless textures (GL_ARB_bindless_texture)".into());
+            } else {
+                return Ok(None);
+            }
+        }
+    }))
+}
+
+fn parse_uniform(rest: &str, line: &str) -> Result<Command, CommandError> {
+    let (ty_name, rest) =
+        scan::word(rest).ok_or_else(|| bad("Invalid set uniform command", line))?;
+    let (name, rest) = scan::word(rest).ok_or_else(|| bad("Invalid set uniform command", line))?;
+    let ty = match uniform_type(ty_name) {
+        Ok(Some(t)) => t,
+        Ok(None) => {
+            return Err(CommandError(format!(
+                "unknown uniform type \"{ty_name}\" for \"{name}\""
+            )))
+        }
+        Err(why) => return Ok(Command::NeedsLaterGl(why)),
+    };
+    let n = ty.components();
+    let missing;
+    let values = match ty {
+        UniformType::Float(_) | UniformType::Mat(..) => {
+            let (mut v, _) = scan::scan_list(rest, n, scan::scan_f32_or_bits);
+            missing = n - v.len();
+            v.resize(n, 0.0);
+            UniformValues::Floats(v)
+        }
+        UniformType::Int(_) | UniformType::Bool(_) => {
+            let (mut v, _) = scan::scan_list(rest, n, scan::scan_i32_base0);
+            missing = n - v.len();
+            v.resize(n, 0);
+            UniformValues::Ints(v)
+        }
+    };
+    if missing == n {
+        return Err(bad(&format!("uniform {ty_name} {name}: no values"), line));
+    }
+    Ok(Command::Uniform {
+        ty,
+        name: name.to_string(),
+        values,
+        missing,
+    })
+}
+
+fn parse_light(rest: &str, line: &str) -> Result<Command, CommandError> {
+    let (index, rest) = scan::scan_i32_base0(rest).ok_or_else(|| bad("Bad light index", line))?;
+    if !(0..8).contains(&index) {
+        return Err(bad("Bad light index", line));
+    }
+    let (name, rest) = scan::word(rest).ok_or_else(|| bad("Bad light enum", line))?;
+    let pname = match name {
+        "GL_AMBIENT" => GL_AMBIENT,
+        "GL_DIFFUSE" => GL_DIFFUSE,
+        "GL_SPECULAR" => GL_SPECULAR,
+        "GL_POSITION" => GL_POSITION,
+        "GL_SPOT_DIRECTION" => GL_SPOT_DIRECTION,
+        "GL_SPOT_EXPONENT" => GL_SPOT_EXPONENT,
+        "GL_SPOT_CUTOFF" => GL_SPOT_CUTOFF,
+        "GL_CONSTANT_ATTENUATION" => GL_CONSTANT_ATTENUATION,
+        "GL_LINEAR_ATTENUATION" => GL_LINEAR_ATTENUATION,
+        "GL_QUADRATIC_ATTENUATION" => GL_QUADRATIC_ATTENUATION,
+        _ => return Err(bad("Bad light enum", line)),
+    };
+    let values = if let Some(r) = lit(rest, "float") {
+        let (v, _) = scan::scan_list(r, 16, scan::scan_f32_or_bits);
+        if v.is_empty() {
+            return Err(bad("No float found for light", line));
+        }
+        LightValues::Float(v)
+    } else if let Some(r) = lit(rest, "int") {
+        let (v, _) = scan::scan_list(r, 16, scan::scan_i32_base0);
+        if v.is_empty() {
+            return Err(bad("No int found for light", line));
+        }
+        LightValues::Int(v)
+    } else {
+        return Err(CommandError(format!(
+            "Invalid light value type \"{}\"",
+            rest.trim()
+        )));
+    };
+    Ok(Command::Light {
+        light: GL_LIGHT0 + index as u32,
+        pname,
+        values,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(line: &str) -> Command {
+        parse(line).unwrap().unwrap()
+    }
+
+    #[test]
+    fn blank_and_comments() {
+        assert_eq!(parse("").unwrap(), None);
+        assert_eq!(parse("   \t").unwrap(), None);
+        assert_eq!(parse("# draw rect").unwrap(), None);
+        assert_eq!(parse("  # x").unwrap(), None);
+    }
+
+    #[test]
+    fn draws() {
+        assert_eq!(
+            p("draw rect -1 -1 2 2"),
+            Command::DrawRect {
+                rect: [-1., -1., 2., 2.],
+                ortho: false,
+                tex: None
+            }
+        );
+        assert_eq!(
+            p("draw rect ortho 0 0 10 10"),
+            Command::DrawRect {
+                rect: [0., 0., 10., 10.],
+                ortho: true,
+                tex: None
+            }
+        );
+        assert_eq!(
+            p("draw rect tex -1 -1 2 2 0 0 1 1"),
+            Command::DrawRect {
+                rect: [-1., -1., 2., 2.],
+                ortho: false,
+                tex: Some([0., 0., 1., 1.])
+            }
+        );
+        assert_eq!(
+            p("draw arrays GL_TRIANGLE_FAN 0 4"),
+            Command::DrawArrays {
+                mode: GL_TRIANGLE_FAN,
+                first: 0,
+                count: 4
+            }
+        );
+        assert!(parse("draw rect 1 2 3").is_err());
+        assert!(parse("draw arrays GL_BOGUS 0 4").is_err());
+    }
+
+    #[test]
+    fn probes() {
+        assert_eq!(
+            p("probe rgb 249 249 1.00 1.00 0"),
+            Command::ProbePixel {
+                x: 249,
+                y: 249,
+                expected: vec![1., 1., 0.]
+            }
+        );
+        assert_eq!(
+            p("probe rgba 1.9 2 0 0 0 1 # extra"),
+            Command::ProbePixel {
+                x: 1,
+                y: 2,
+                expected: vec![0., 0., 0., 1.]
+            }
+        );
+        assert_eq!(
+            p("relative probe rgb (.5, .5) (0.0, 1.0, 0.0)"),
+            Command::RelativeProbePixel {
+                rx: 0.5,
+                ry: 0.5,
+                expected: vec![0., 1., 0.]
+            }
+        );
+        assert_eq!(
+            p("probe rect rgba (0, 0, 10, 10) (0.0, 1.0, 0.0, 1.0)"),
+            Command::ProbeRect {
+                rect: [0, 0, 10, 10],
+                expected: vec![0., 1., 0., 1.]
+            }
+        );
+        assert_eq!(
+            p("probe all rgb 0 1 0 0"),
+            Command::ProbeAll {
+                expected: vec![0., 1., 0.],
+                warn: false
+            }
+        );
+        assert_eq!(
+            p("probe all rgba 0 1 0 0"),
+            Command::ProbeAll {
+                expected: vec![0., 1., 0., 0.],
+                warn: false
+            }
+        );
+        assert_eq!(
+            p("probe warn all rgba 0 1 0 0"),
+            Command::ProbeAll {
+                expected: vec![0., 1., 0., 0.],
+                warn: true
+            }
+        );
+        assert_eq!(
+            p("probe depth 1 2 0.5"),
+            Command::ProbeDepth {
+                x: 1,
+                y: 2,
+                expected: 0.5
+            }
+        );
+        assert!(parse("relative probe rgb (.5, .5) (0.0, 1.0)").is_err());
+        // Values after the last one read are ignored, as by sscanf.
+        assert_eq!(
+            p("relative probe rgb (0.0, 0.0) (1.0, 0.0, 0.0, 1.0)"),
+            Command::RelativeProbePixel {
+                rx: 0.0,
+                ry: 0.0,
+                expected: vec![1., 0., 0.]
+            }
+        );
+    }
+
+    #[test]
+    fn uniforms() {
+        assert_eq!(
+            p("uniform vec4 color 1 0 0.5 1"),
+            Command::Uniform {
+                ty: UniformType::Float(4),
+                name: "color".into(),
+                values: UniformValues::Floats(vec![1., 0., 0.5, 1.]),
+                missing: 0
+            }
+        );
+        assert_eq!(
+            p("uniform ivec2 a[1] -1 0x10"),
+            Command::Uniform {
+                ty: UniformType::Int(2),
+                name: "a[1]".into(),
+                values: UniformValues::Ints(vec![-1, 16]),
+                missing: 0
+            }
+        );
+        match p("uniform mat2x3 m 1 2 3 4 5 6") {
+            Command::Uniform { ty, values, .. } => {
+                assert_eq!(ty, UniformType::Mat(2, 3));
+                assert_eq!(values, UniformValues::Floats(vec![1., 2., 3., 4., 5., 6.]));
+            }
+            c => panic!("{c:?}"),
+        }
+        match p("uniform mat4 m 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1") {
+            Command::Uniform { ty, .. } => assert_eq!(ty, UniformType::Mat(4, 4)),
+            c => panic!("{c:?}"),
+        }
+        assert!(matches!(p("uniform uint u 1"), Command::NeedsLaterGl(_)));
+        assert_eq!(
+            p("uniform vec4 v 0.5 -1.5 1.5, 0.0"),
+            Command::Uniform {
+                ty: UniformType::Float(4),
+                name: "v".into(),
+                values: UniformValues::Floats(vec![0.5, -1.5, 1.5, 0.0]),
+                missing: 1
+            }
+        );
+        assert!(parse("uniform vec3 v x").is_err());
+        assert!(parse("uniform blob v 1").is_err());
+        assert!(parse("uniform float").is_err());
+    }
+
+    #[test]
+    fn state_commands() {
+        assert_eq!(
+            p("clear color 0.2 0.2 0.2 0.2"),
+            Command::ClearColor([0.2; 4])
+        );
+        assert_eq!(p("clear"), Command::Clear);
+        assert_eq!(p("ortho"), Command::Ortho(None));
+        assert_eq!(p("ortho 0 1 0 1"), Command::Ortho(Some([0., 1., 0., 1.])));
+        assert_eq!(
+            p("frustum -1.0 1.0 -1.0 1.0 1.0 10.0"),
+            Command::Frustum([-1., 1., -1., 1., 1., 10.])
+        );
+        assert_eq!(
+            p("enable GL_CLIP_PLANE3"),
+            Command::Enable(GL_CLIP_PLANE0 + 3)
+        );
+        assert_eq!(
+            p("clip plane 0 0.0 1.0 0.0 -0.5 # accept points"),
+            Command::ClipPlane {
+                plane: 0,
+                equation: [0., 1., 0., -0.5]
+            }
+        );
+        assert_eq!(p("shade model flat"), Command::ShadeModel(GL_FLAT));
+        assert_eq!(
+            p("light 0 GL_POSITION float 0 0 1 0"),
+            Command::Light {
+                light: GL_LIGHT0,
+                pname: GL_POSITION,
+                values: LightValues::Float(vec![0., 0., 1., 0.])
+            }
+        );
+        assert_eq!(
+            p("hint GL_FRAGMENT_SHADER_DERIVATIVE_HINT GL_NICEST"),
+            Command::Hint {
+                target: GL_FRAGMENT_SHADER_DERIVATIVE_HINT,
+                mode: GL_NICEST
+            }
+        );
+        assert!(parse("enable GL_BLEND_X").is_err());
+        assert!(parse("frobnicate").is_err());
+    }
+
+    #[test]
+    fn textures() {
+        assert_eq!(
+            p("texture rgbw 0 (8, 8)"),
+            Command::Texture(TextureCommand::Rgbw2d {
+                unit: 0,
+                width: 8,
+                height: 8
+            })
+        );
+        assert_eq!(
+            p("texture rgbw 1D 1"),
+            Command::Texture(TextureCommand::Rgbw1d { unit: 1 })
+        );
+        assert_eq!(
+            p("texture shadow1D 0 (32)"),
+            Command::Texture(TextureCommand::Shadow {
+                unit: 0,
+                target: GL_TEXTURE_1D,
+                width: 32,
+                height: 1
+            })
+        );
+        assert!(matches!(
+            p("texture checkerboard 0 0 (32, 32) (0.5, 0.0, 0.0, 0.0) (1.0, 1.0, 1.0, 1.0)"),
+            Command::Texture(TextureCommand::Checkerboard { width: 32, .. })
+        ));
+        assert_eq!(
+            p("texparameter 2D compare_func greater"),
+            Command::TexParameter {
+                target: GL_TEXTURE_2D,
+                pname: GL_TEXTURE_COMPARE_FUNC,
+                value: TexParamValue::Enum(GL_GREATER)
+            }
+        );
+        assert!(parse("texture rgbw 0 (8)").is_err());
+        assert!(parse("texparameter 2D depth_mode purple").is_err());
+    }
+}

@@ -1,0 +1,161 @@
+//! The GL entry points the runner calls, as a trait so that the runner
+//! compiles before `gl::Context` exists.
+//!
+//! TEMPORARY ADAPTER: every method mirrors one GL 2.1 entry point under the
+//! project's naming rule (`glFooBar4fv` -> `foo_bar_4fv`). When
+//! `gl::Context` lands, `impl GlApi for gl::Context` forwards each method
+//! (see `gl_context.rs`), and later the runner takes `gl::Context` directly
+//! and this trait goes away. It is not a GL implementation: there is none
+//! in this crate.
+//!
+//! Client-side arrays are passed as slices of floats (`stride` in bytes, 0
+//! for tightly packed), pixel data of type `GL_FLOAT` likewise.
+
+#[allow(clippy::too_many_arguments)]
+pub trait GlApi {
+    // Queries.
+    fn get_string(&mut self, name: u32) -> String;
+    fn get_integer_v(&mut self, pname: u32, params: &mut [i32]);
+    fn get_error(&mut self) -> u32;
+    /// Why the last draw call failed inside the pipeline (an executor error
+    /// such as the loop budget), if it did; cleared by the call.
+    fn take_draw_failure(&mut self) -> Option<String>;
+
+    // Shaders and programs.
+    fn create_shader(&mut self, kind: u32) -> u32;
+    fn shader_source(&mut self, shader: u32, sources: &[&str]);
+    fn compile_shader(&mut self, shader: u32);
+    fn get_shader_iv(&mut self, shader: u32, pname: u32, params: &mut [i32]);
+    fn get_shader_info_log(&mut self, shader: u32) -> String;
+    fn delete_shader(&mut self, shader: u32);
+    fn create_program(&mut self) -> u32;
+    fn attach_shader(&mut self, program: u32, shader: u32);
+    fn bind_attrib_location(&mut self, program: u32, index: u32, name: &str);
+    fn link_program(&mut self, program: u32);
+    fn get_program_iv(&mut self, program: u32, pname: u32, params: &mut [i32]);
+    fn get_program_info_log(&mut self, program: u32) -> String;
+    fn use_program(&mut self, program: u32);
+    fn get_uniform_location(&mut self, program: u32, name: &str) -> i32;
+    fn get_attrib_location(&mut self, program: u32, name: &str) -> i32;
+
+    // Uniforms.
+    fn uniform_1fv(&mut self, location: i32, count: i32, value: &[f32]);
+    fn uniform_2fv(&mut self, location: i32, count: i32, value: &[f32]);
+    fn uniform_3fv(&mut self, location: i32, count: i32, value: &[f32]);
+    fn uniform_4fv(&mut self, location: i32, count: i32, value: &[f32]);
+    fn uniform_1iv(&mut self, location: i32, count: i32, value: &[i32]);
+    fn uniform_2iv(&mut self, location: i32, count: i32, value: &[i32]);
+    fn uniform_3iv(&mut self, location: i32, count: i32, value: &[i32]);
+    fn uniform_4iv(&mut self, location: i32, count: i32, value: &[i32]);
+    fn uniform_matrix_2fv(&mut self, location: i32, count: i32, transpose: bool, value: &[f32]);
+    fn uniform_matrix_3fv(&mut self, location: i32, count: i32, transpose: bool, value: &[f32]);
+    fn uniform_matrix_4fv(&mut self, location: i32, count: i32, transpose: bool, value: &[f32]);
+    fn uniform_matrix_2x3fv(&mut self, location: i32, count: i32, transpose: bool, value: &[f32]);
+    fn uniform_matrix_2x4fv(&mut self, location: i32, count: i32, transpose: bool, value: &[f32]);
+    fn uniform_matrix_3x2fv(&mut self, location: i32, count: i32, transpose: bool, value: &[f32]);
+    fn uniform_matrix_3x4fv(&mut self, location: i32, count: i32, transpose: bool, value: &[f32]);
+    fn uniform_matrix_4x2fv(&mut self, location: i32, count: i32, transpose: bool, value: &[f32]);
+    fn uniform_matrix_4x3fv(&mut self, location: i32, count: i32, transpose: bool, value: &[f32]);
+
+    // Fixed-function state.
+    fn clear_color(&mut self, r: f32, g: f32, b: f32, a: f32);
+    fn clear_depth(&mut self, depth: f64);
+    fn clear(&mut self, mask: u32);
+    fn matrix_mode(&mut self, mode: u32);
+    fn load_identity(&mut self);
+    fn ortho(&mut self, left: f64, right: f64, bottom: f64, top: f64, near: f64, far: f64);
+    fn frustum(&mut self, left: f64, right: f64, bottom: f64, top: f64, near: f64, far: f64);
+    fn enable(&mut self, cap: u32);
+    fn disable(&mut self, cap: u32);
+    fn hint(&mut self, target: u32, mode: u32);
+    fn shade_model(&mut self, mode: u32);
+    fn clip_plane(&mut self, plane: u32, equation: &[f64; 4]);
+    fn light_f(&mut self, light: u32, pname: u32, param: f32);
+    fn light_fv(&mut self, light: u32, pname: u32, params: &[f32]);
+    fn light_i(&mut self, light: u32, pname: u32, param: i32);
+    fn light_iv(&mut self, light: u32, pname: u32, params: &[i32]);
+    fn color_4fv(&mut self, v: &[f32; 4]);
+
+    // Vertex arrays (client memory).
+    fn vertex_pointer(&mut self, size: i32, ty: u32, stride: i32, data: &[f32]);
+    fn tex_coord_pointer(&mut self, size: i32, ty: u32, stride: i32, data: &[f32]);
+    fn enable_client_state(&mut self, array: u32);
+    fn disable_client_state(&mut self, array: u32);
+    fn vertex_attrib_pointer(
+        &mut self,
+        index: u32,
+        size: i32,
+        ty: u32,
+        normalized: bool,
+        stride: i32,
+        data: &[f32],
+    );
+    fn enable_vertex_attrib_array(&mut self, index: u32);
+    fn disable_vertex_attrib_array(&mut self, index: u32);
+    fn draw_arrays(&mut self, mode: u32, first: i32, count: i32);
+
+    // Textures.
+    fn active_texture(&mut self, unit: u32);
+    fn gen_texture(&mut self) -> u32;
+    fn bind_texture(&mut self, target: u32, texture: u32);
+    fn tex_parameter_i(&mut self, target: u32, pname: u32, param: i32);
+    fn tex_parameter_f(&mut self, target: u32, pname: u32, param: f32);
+    fn tex_parameter_fv(&mut self, target: u32, pname: u32, params: &[f32]);
+    fn tex_image_1d(
+        &mut self,
+        target: u32,
+        level: i32,
+        internal_format: i32,
+        width: i32,
+        border: i32,
+        format: u32,
+        ty: u32,
+        pixels: &[f32],
+    );
+    fn tex_image_2d(
+        &mut self,
+        target: u32,
+        level: i32,
+        internal_format: i32,
+        width: i32,
+        height: i32,
+        border: i32,
+        format: u32,
+        ty: u32,
+        pixels: &[f32],
+    );
+    fn tex_image_3d(
+        &mut self,
+        target: u32,
+        level: i32,
+        internal_format: i32,
+        width: i32,
+        height: i32,
+        depth: i32,
+        border: i32,
+        format: u32,
+        ty: u32,
+        pixels: &[f32],
+    );
+
+    // Read-back.
+    fn read_pixels_f32(
+        &mut self,
+        x: i32,
+        y: i32,
+        width: i32,
+        height: i32,
+        format: u32,
+        pixels: &mut [f32],
+    );
+    fn read_pixels(
+        &mut self,
+        x: i32,
+        y: i32,
+        width: i32,
+        height: i32,
+        format: u32,
+        ty: u32,
+        pixels: &mut [u8],
+    );
+}

@@ -1,0 +1,146 @@
+//! End-to-end tests of `shaderbox shader-runner`: piglit's protocol (the
+//! `PIGLIT:` line and exit statuses), its command line, and the reports of
+//! malformed scripts. Tests that render need the GL pipeline (feature
+//! `gl-context`).
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn shaderbox(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_shaderbox"))
+        .args(args)
+        .output()
+        .expect("the shaderbox binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Writes `text` to a fresh file and returns its path.
+fn script(test: &str, text: &str) -> String {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("shader-runner-tests")
+        .join(test);
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(format!("{test}.shader_test"));
+    std::fs::write(&path, text).unwrap();
+    path.to_string_lossy().into_owned()
+}
+
+fn last_line(o: &Output) -> String {
+    stdout(o).lines().last().unwrap_or("").to_string()
+}
+
+const GREEN: &str = "\
+[require]
+GLSL >= 1.10
+
+[vertex shader passthrough]
+
+[fragment shader]
+void main() { gl_FragColor = vec4(0.0, 1.0, 0.0, 1.0); }
+
+[test]
+clear color 0.0 0.0 0.0 0.0
+clear
+draw rect -1 -1 2 2
+probe all rgba 0.0 1.0 0.0 1.0
+relative probe rgb (0.5, 0.5) (0.0, 1.0, 0.0)
+";
+
+#[test]
+fn missing_file_fails_like_piglit() {
+    let o = shaderbox(&[
+        "shader-runner",
+        "/nonexistent/t.shader_test",
+        "-auto",
+        "-fbo",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(last_line(&o), r#"PIGLIT: {"result": "fail" }"#);
+    assert!(stdout(&o).contains("could not read file"), "{}", stdout(&o));
+}
+
+#[test]
+fn malformed_lines_name_file_and_line() {
+    let path = script(
+        "malformed",
+        "[require]\nGLSL >= 1.10\n[fragment shader]\nvoid main(){}\n[test]\ndraw rect 0 0\n",
+    );
+    let o = shaderbox(&["shader-runner", &path, "--parse-only"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    assert_eq!(last_line(&o), r#"PIGLIT: {"result": "fail" }"#);
+    assert!(
+        stdout(&o).contains(&format!("{path}:6: draw rect: expected 4 numbers, found 2")),
+        "{}",
+        stdout(&o)
+    );
+
+    let path = script("bad-section", "[require]\nGLSL >= 1.10\n[fragment shadr]\n");
+    let o = shaderbox(&["shader-runner", &path, "-auto"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stdout(&o).contains(":3: unknown section"), "{}", stdout(&o));
+}
+
+#[test]
+fn parse_only_passes_well_formed_scripts() {
+    let path = script("green-parse", GREEN);
+    let o = shaderbox(&["shader-runner", &path, "-auto", "-fbo", "--parse-only"]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    assert_eq!(last_line(&o), r#"PIGLIT: {"result": "pass" }"#);
+    assert!(stdout(&o).starts_with("5 commands"), "{}", stdout(&o));
+}
+
+#[test]
+fn command_line_errors_fail() {
+    let o = shaderbox(&["shader-runner", "t.shader_test", "-bogus"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(last_line(&o), r#"PIGLIT: {"result": "fail" }"#);
+    assert!(
+        stderr(&o).contains("unknown option `-bogus'"),
+        "{}",
+        stderr(&o)
+    );
+    let o = shaderbox(&["shader-runner", "a.shader_test", "b.shader_test"]);
+    assert_eq!(o.status.code(), Some(1));
+}
+
+#[cfg(feature = "gl-context")]
+mod rendering {
+    use super::*;
+
+    #[test]
+    fn green_quad_passes() {
+        let path = script("green", GREEN);
+        let o = shaderbox(&["shader-runner", &path, "-auto", "-fbo"]);
+        assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+        assert_eq!(last_line(&o), r#"PIGLIT: {"result": "pass" }"#);
+    }
+
+    #[test]
+    fn wrong_color_fails_with_probe_report() {
+        let text = GREEN.replace(
+            "probe all rgba 0.0 1.0 0.0 1.0",
+            "probe all rgba 1.0 0.0 0.0 1.0",
+        );
+        let path = script("red-expected", &text);
+        let o = shaderbox(&["shader-runner", &path, "-auto", "-fbo"]);
+        assert_eq!(o.status.code(), Some(1));
+        let out = stdout(&o);
+        assert!(out.contains("Probe color at (0,0)"), "{out}");
+        assert!(out.contains("Test failure on line 12"), "{out}");
+    }
+
+    #[test]
+    fn later_gl_is_a_skip() {
+        let path = script("glsl130", "[require]\nGLSL >= 1.30\n[test]\n");
+        let o = shaderbox(&["shader-runner", &path, "-auto"]);
+        assert_eq!(o.status.code(), Some(0));
+        assert_eq!(last_line(&o), r#"PIGLIT: {"result": "skip" }"#);
+    }
+}
