@@ -132,6 +132,21 @@ pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
     // In source order, as a reader goes through the shader (parse errors
     // and analysis errors otherwise come in two runs).
     diagnostics.sort_by_key(|d| d.span.map_or(u32::MAX, |s| s.start));
+    if diagnostics.len() > limits::MAX_DIAGNOSTICS {
+        let rest = diagnostics.split_off(limits::MAX_DIAGNOSTICS);
+        let errors = rest.iter().filter(|d| d.is_error()).count();
+        diagnostics.push(Diagnostic {
+            severity: Severity::Note,
+            code: Code::Internal,
+            message: format!(
+                "{} more diagnostics ({errors} errors) not shown; fix the ones above first",
+                rest.len()
+            ),
+            span: None,
+            labels: Vec::new(),
+            notes: Vec::new(),
+        });
+    }
     Shader {
         stage: opts.stage,
         source,

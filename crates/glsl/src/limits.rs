@@ -41,3 +41,7 @@ pub const MAX_NESTING_DEPTH: u32 = 256;
 pub const MAX_TOKENS: usize = 4_000_000;
 /// Largest array size accepted in a declaration.
 pub const MAX_ARRAY_SIZE: u32 = 1 << 20;
+/// Diagnostics reported for one shader; past this the rest are summarized
+/// in one note (a binary file fed as a shader would otherwise produce
+/// thousands).
+pub const MAX_DIAGNOSTICS: usize = 100;

@@ -36,9 +36,7 @@ impl GlApi for gl::Context {
         gl::Context::get_error(self)
     }
     fn take_draw_failure(&mut self) -> Option<String> {
-        // TODO: the gl crate's report of pipeline failures (loop budget).
-        let _ = self;
-        None
+        gl::Context::take_draw_error(self)
     }
     fn create_shader(&mut self, kind: u32) -> u32 {
         gl::Context::create_shader(self, kind)

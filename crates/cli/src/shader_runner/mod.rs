@@ -28,10 +28,6 @@
 //! Limitations: one test file per run (piglit's multi-file mode with
 //! `-report-subtests` is not provided); `rlimit` is not applied.
 
-// Until the gl crate's Context lands, nothing instantiates the runner
-// outside the `gl-context` feature.
-#![cfg_attr(not(feature = "gl-context"), allow(dead_code))]
-
 pub mod command;
 mod gl_api;
 mod glenum;
@@ -42,7 +38,6 @@ pub mod run;
 mod scan;
 pub mod script;
 
-#[cfg(feature = "gl-context")]
 mod gl_context;
 
 use crate::guard::guarded;
@@ -172,20 +167,8 @@ fn evaluate(opts: &Options) -> (Verdict, String, String) {
     execute(opts, &name, &script)
 }
 
-#[cfg(feature = "gl-context")]
 fn execute(opts: &Options, name: &str, script: &script::Script) -> (Verdict, String, String) {
     gl_context::execute(opts, name, script)
-}
-
-#[cfg(not(feature = "gl-context"))]
-fn execute(_opts: &Options, name: &str, _script: &script::Script) -> (Verdict, String, String) {
-    (
-        Verdict::Fail,
-        format!(
-            "{name}: this shaderbox was built without the GL pipeline (feature `gl-context`)\n"
-        ),
-        String::new(),
-    )
 }
 
 /// Runs a parsed script on a fresh context `gl` of the script's window

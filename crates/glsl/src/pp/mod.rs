@@ -325,6 +325,25 @@ impl<'m> Preprocessor<'m> {
                 None
             }
             PpKind::Other(c) => {
+                // A run of invalid characters (binary garbage, a pasted
+                // string) is one error, not one per byte.
+                if let Some(last) = self.diags.last_mut() {
+                    if last.code == Code::LexInvalidChar
+                        && last.span.is_some_and(|s| s.end == t.span.start)
+                    {
+                        if let Some(s) = &mut last.span {
+                            s.end = t.span.end;
+                        }
+                        if !last.message.starts_with("invalid characters") {
+                            last.message = last.message.replacen(
+                                "invalid character",
+                                "invalid characters, from",
+                                1,
+                            );
+                        }
+                        return None;
+                    }
+                }
                 let mut d = Diagnostic::error(
                     Code::LexInvalidChar,
                     t.span,
