@@ -110,7 +110,6 @@ fn command_line_errors_fail() {
     assert_eq!(o.status.code(), Some(1));
 }
 
-#[cfg(feature = "gl-context")]
 mod rendering {
     use super::*;
 
