@@ -132,7 +132,7 @@ mod rendering {
         assert_eq!(o.status.code(), Some(1));
         let out = stdout(&o);
         assert!(out.contains("Probe color at (0,0)"), "{out}");
-        assert!(out.contains("Test failure on line 12"), "{out}");
+        assert!(out.contains("Test failure on line 13"), "{out}");
     }
 
     #[test]
