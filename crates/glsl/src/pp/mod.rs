@@ -67,6 +67,8 @@ pub struct PpOutput {
     /// or not (the name `all` included); unsupported ones were warned about.
     pub extensions: Vec<ExtensionDirective>,
     pub diagnostics: Vec<Diagnostic>,
+    /// `#pragma STDGL invariant(all)` was seen (GLSL 1.20 §4.6.1).
+    pub invariant_all: bool,
 }
 
 /// Extensions this implementation supports (each also gets a macro of the
@@ -193,6 +195,8 @@ pub(crate) struct Preprocessor<'m> {
     max_tokens: usize,
     /// The output token limit was hit (reported once).
     overflowed: bool,
+    /// `#pragma STDGL invariant(all)` seen.
+    invariant_all: bool,
 }
 
 impl<'m> Preprocessor<'m> {
@@ -229,6 +233,7 @@ impl<'m> Preprocessor<'m> {
             budget: Budget::new(max_tokens),
             max_tokens,
             overflowed: false,
+            invariant_all: false,
         }
     }
 
@@ -430,6 +435,7 @@ impl<'m> Preprocessor<'m> {
             version: self.version,
             extensions: self.extensions,
             diagnostics: self.diags,
+            invariant_all: self.invariant_all,
         }
     }
 }
