@@ -72,8 +72,10 @@ pub struct PpOutput {
 }
 
 /// Extensions this implementation supports (each also gets a macro of the
-/// same name with value 1). None yet.
-pub const SUPPORTED_EXTENSIONS: &[&str] = &[];
+/// same name with value 1). GL_ARB_draw_buffers: its GLSL side is
+/// `gl_FragData`, which GLSL 1.10 already has; `#extension` must accept it
+/// since the GL layer reports the extension.
+pub const SUPPORTED_EXTENSIONS: &[&str] = &["GL_ARB_draw_buffers"];
 
 /// Preprocesses the text of `map`, recording `#line` directives in it.
 /// Never fails: problems are diagnostics, and the token list always ends
