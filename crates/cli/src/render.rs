@@ -22,7 +22,12 @@ pub struct Args {
     pub file: Option<PathBuf>,
 
     /// Output PNG.
-    #[arg(short = 'o', long = "output", value_name = "OUT.png", default_value = "molecule.png")]
+    #[arg(
+        short = 'o',
+        long = "output",
+        value_name = "OUT.png",
+        default_value = "molecule.png"
+    )]
     pub output: PathBuf,
 
     /// Image size in pixels.
