@@ -62,6 +62,8 @@ pub struct UniformGlobal {
     pub offset: usize,
     pub words: usize,
     pub builtin: bool,
+    /// A stage gave it an initializer (GLSL 1.20 uniform initializers).
+    pub has_init: bool,
 }
 
 /// An active uniform as glGetActiveUniform reports it: a leaf of basic type
@@ -124,7 +126,19 @@ impl UniformTable {
         let mut t = UniformTable::default();
         for (si, m) in stages.iter().enumerate() {
             for g in &m.globals {
-                if g.storage != Storage::Uniform || t.globals.iter().any(|u| u.name == g.name) {
+                if g.storage != Storage::Uniform {
+                    continue;
+                }
+                if let Some(u) = t.globals.iter().find(|u| u.name == g.name) {
+                    // Declared in an earlier stage too (the linker checked
+                    // the types match): an initializer given only in this
+                    // stage still sets the shared uniform (GLSL 1.20 §4.3.5).
+                    if let (Some(init), false) = (&g.init, u.has_init) {
+                        let (offset, n) = (u.offset, u.words);
+                        for (i, c) in init.components.iter().take(n).enumerate() {
+                            t.values[offset + i] = scalar_word(*c);
+                        }
+                    }
                     continue;
                 }
                 let n = words(g.ty, &m.structs);
@@ -142,6 +156,7 @@ impl UniformTable {
                     offset,
                     words: n,
                     builtin: g.builtin,
+                    has_init: g.init.is_some(),
                 });
                 if !g.builtin {
                     let mut leaves = Vec::new();

@@ -118,6 +118,7 @@ pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
             version,
             stage: opts.stage,
             extensions: pp_out.extensions.clone(),
+            invariant_all: pp_out.invariant_all,
         };
         let (m, sema_diags) = sema::analyze(&tu, &ctx);
         diagnostics.extend(sema_diags);

@@ -17,7 +17,7 @@ pub const MAX_TEXTURE_COORDS: u32 = 8;
 /// `gl_MaxVertexAttribs` (minimum 16).
 pub const MAX_VERTEX_ATTRIBS: u32 = 16;
 /// `gl_MaxVertexUniformComponents` (minimum 512).
-pub const MAX_VERTEX_UNIFORM_COMPONENTS: u32 = 4096;
+pub const MAX_VERTEX_UNIFORM_COMPONENTS: u32 = 16384;
 /// `gl_MaxVaryingFloats` (minimum 32).
 pub const MAX_VARYING_FLOATS: u32 = 64;
 /// `gl_MaxVertexTextureImageUnits` (minimum 0).
@@ -27,7 +27,7 @@ pub const MAX_COMBINED_TEXTURE_IMAGE_UNITS: u32 = 32;
 /// `gl_MaxTextureImageUnits` (minimum 2).
 pub const MAX_TEXTURE_IMAGE_UNITS: u32 = 16;
 /// `gl_MaxFragmentUniformComponents` (minimum 64).
-pub const MAX_FRAGMENT_UNIFORM_COMPONENTS: u32 = 4096;
+pub const MAX_FRAGMENT_UNIFORM_COMPONENTS: u32 = 16384;
 /// `gl_MaxDrawBuffers` (minimum 1).
 pub const MAX_DRAW_BUFFERS: u32 = 8;
 

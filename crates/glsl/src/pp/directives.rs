@@ -534,6 +534,13 @@ impl Preprocessor<'_> {
             return;
         };
         let name = first.text.as_str();
+        // GLSL 1.20 §4.6.1: `#pragma STDGL invariant(all)` makes every
+        // output invariant.
+        let texts: Vec<&str> = d.rest.iter().map(|t| t.text.as_str()).collect();
+        if texts == ["STDGL", "invariant", "(", "all", ")"] {
+            self.invariant_all = true;
+            return;
+        }
         if name != "optimize" && name != "debug" {
             return;
         }

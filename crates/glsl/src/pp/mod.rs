@@ -67,11 +67,15 @@ pub struct PpOutput {
     /// or not (the name `all` included); unsupported ones were warned about.
     pub extensions: Vec<ExtensionDirective>,
     pub diagnostics: Vec<Diagnostic>,
+    /// `#pragma STDGL invariant(all)` was seen (GLSL 1.20 §4.6.1).
+    pub invariant_all: bool,
 }
 
 /// Extensions this implementation supports (each also gets a macro of the
-/// same name with value 1). None yet.
-pub const SUPPORTED_EXTENSIONS: &[&str] = &[];
+/// same name with value 1). GL_ARB_draw_buffers: its GLSL side is
+/// `gl_FragData`, which GLSL 1.10 already has; `#extension` must accept it
+/// since the GL layer reports the extension.
+pub const SUPPORTED_EXTENSIONS: &[&str] = &["GL_ARB_draw_buffers"];
 
 /// Preprocesses the text of `map`, recording `#line` directives in it.
 /// Never fails: problems are diagnostics, and the token list always ends
@@ -193,6 +197,8 @@ pub(crate) struct Preprocessor<'m> {
     max_tokens: usize,
     /// The output token limit was hit (reported once).
     overflowed: bool,
+    /// `#pragma STDGL invariant(all)` seen.
+    invariant_all: bool,
 }
 
 impl<'m> Preprocessor<'m> {
@@ -229,6 +235,7 @@ impl<'m> Preprocessor<'m> {
             budget: Budget::new(max_tokens),
             max_tokens,
             overflowed: false,
+            invariant_all: false,
         }
     }
 
@@ -430,6 +437,7 @@ impl<'m> Preprocessor<'m> {
             version: self.version,
             extensions: self.extensions,
             diagnostics: self.diags,
+            invariant_all: self.invariant_all,
         }
     }
 }

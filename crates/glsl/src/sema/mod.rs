@@ -46,6 +46,8 @@ pub struct Context {
     pub version: Version,
     pub stage: Stage,
     pub extensions: Vec<ExtensionDirective>,
+    /// `#pragma STDGL invariant(all)`: every output is invariant.
+    pub invariant_all: bool,
 }
 
 /// Analyzes one shader. The module is complete only when no error was
@@ -69,6 +71,22 @@ pub fn analyze(tu: &TranslationUnit, ctx: &Context) -> (Module, Vec<Diagnostic>)
         .map(|n| (n.name.clone(), n.span))
         .collect();
     a.translation_unit(tu);
+    if ctx.invariant_all && ctx.stage == Stage::Vertex {
+        // GLSL 1.20 §4.6.1: "#pragma STDGL invariant(all)" makes all
+        // outputs invariant; the vertex outputs are the varyings and
+        // gl_Position/gl_PointSize/gl_ClipVertex.
+        for g in &mut a.module.globals {
+            if g.storage == ir::Storage::Varying
+                || (g.builtin
+                    && matches!(
+                        g.name.as_str(),
+                        "gl_Position" | "gl_PointSize" | "gl_ClipVertex"
+                    ))
+            {
+                g.invariant = true;
+            }
+        }
+    }
     a.finish()
 }
 

@@ -1,4 +1,4 @@
-uniform vec4 weights[1100];
+uniform vec4 weights[4100];
 attribute float index;
 void main()
 {
