@@ -9,7 +9,10 @@
 //! - `shader-runner` ([`shader_runner`]): piglit's `shader_runner` program
 //!   contract, running `.shader_test` files on shaderbox's OpenGL 2.1.
 //!
-//! Rendering and debugging will join them as further variants of
+//! - `render` ([`render`]): draw a molecule with the shader library and
+//!   write a PNG.
+//!
+//! Debugging will join them as further variants of
 //! [`Command`], each in its own module.
 //!
 //! Exit codes are shared by the subcommands ([`Exit`]); `glslparsertest`
@@ -19,6 +22,7 @@ mod check;
 mod glslparsertest;
 mod guard;
 mod input;
+mod render;
 mod shader_runner;
 
 use clap::{Parser, Subcommand};
@@ -49,6 +53,9 @@ enum Command {
     /// `shader_runner` program).
     #[command(name = "shader-runner")]
     ShaderRunner(shader_runner::Args),
+    /// Draw a molecule (a PDB file, or the embedded crambin) with the
+    /// shader library's sphere impostors and write a PNG.
+    Render(render::Args),
 }
 
 /// Exit statuses of `shaderbox` (except `glslparsertest` and
@@ -79,6 +86,7 @@ fn main() -> ExitCode {
         Command::Check(args) => check::run(&args).into(),
         Command::GlslParserTest(args) => glslparsertest::run(&args),
         Command::ShaderRunner(args) => shader_runner::run(&args),
+        Command::Render(args) => render::run(&args).into(),
     }
 }
 

@@ -1,0 +1,270 @@
+//! `shaderbox render`: draw a molecule with the shader library's sphere
+//! impostors and write a PNG.
+//!
+//! With no FILE it draws crambin (PDB 1CRN), embedded in the binary.
+//! Default size 800x800 (rendering is on the CPU; `--size 1024x1024` or
+//! `--supersample 2` for print quality).
+//!
+//! Exit status ([`Exit`]): 0 when the PNG was written; 1 when the structure
+//! is malformed (the message names the file and line) or has no atoms, or
+//! rendering or writing the PNG failed; 2 on misuse (bad arguments,
+//! unreadable file); 3 on an internal error (a panic, reported).
+
+use crate::guard::guarded;
+use crate::Exit;
+use render::{Background, Fog, Projection, RenderOptions};
+use std::path::PathBuf;
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// PDB file to draw (default: crambin, PDB 1CRN, embedded).
+    #[arg(value_name = "FILE")]
+    pub file: Option<PathBuf>,
+
+    /// Output PNG.
+    #[arg(
+        short = 'o',
+        long = "output",
+        value_name = "OUT.png",
+        default_value = "molecule.png"
+    )]
+    pub output: PathBuf,
+
+    /// Image size in pixels.
+    #[arg(long, value_name = "WxH", default_value = "800x800", value_parser = parse_size)]
+    pub size: (u32, u32),
+
+    /// Camera projection.
+    #[arg(long, value_enum, default_value_t = ProjectionArg::Ortho)]
+    pub projection: ProjectionArg,
+
+    /// Fog mode (the fixed-function formulas, per atom).
+    #[arg(long, value_enum, default_value_t = FogArg::None)]
+    pub fog: FogArg,
+
+    /// GL lights that are on, 0-7, comma-separated; `none` for none.
+    #[arg(long, value_name = "LIST", default_value = "0,1", value_parser = parse_lights)]
+    pub lights: Lights,
+
+    /// Rotation of the molecule about X, then Y, then Z, in degrees.
+    #[arg(long, value_name = "X,Y,Z", default_value = "0,0,0", value_parser = parse_rotate,
+          allow_hyphen_values = true)]
+    pub rotate: Rotation,
+
+    /// Render N times larger and box-filter down (smooth edges), 1-8.
+    #[arg(long, value_name = "N", default_value_t = 1,
+          value_parser = clap::value_parser!(u32).range(1..=8))]
+    pub supersample: u32,
+
+    /// Background: black, white, gray, a #RRGGBB colour, or `transparent`.
+    #[arg(long, value_name = "COLOR", default_value = "black", value_parser = parse_background)]
+    pub background: BackgroundArg,
+}
+
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ProjectionArg {
+    Ortho,
+    Perspective,
+}
+
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FogArg {
+    None,
+    Linear,
+    Exp,
+    Exp2,
+}
+
+/// Parsed `--lights`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Lights(pub Vec<u8>);
+
+/// Parsed `--rotate`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Rotation(pub [f32; 3]);
+
+/// Parsed `--background`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BackgroundArg(pub Background);
+
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("`{s}` is not WIDTHxHEIGHT (e.g. 800x600)");
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    let w: u32 = w.trim().parse().map_err(|_| bad())?;
+    let h: u32 = h.trim().parse().map_err(|_| bad())?;
+    if w == 0 || h == 0 || w > render::MAX_SIDE || h > render::MAX_SIDE {
+        return Err(format!("each side must be 1-{}", render::MAX_SIDE));
+    }
+    Ok((w, h))
+}
+
+fn parse_lights(s: &str) -> Result<Lights, String> {
+    if s.trim().eq_ignore_ascii_case("none") {
+        return Ok(Lights(Vec::new()));
+    }
+    let mut out = Vec::new();
+    for part in s.split(',') {
+        let n: u8 = part
+            .trim()
+            .parse()
+            .ok()
+            .filter(|n| *n < 8)
+            .ok_or_else(|| format!("`{part}` is not a light number 0-7"))?;
+        if !out.contains(&n) {
+            out.push(n);
+        }
+    }
+    Ok(Lights(out))
+}
+
+fn parse_rotate(s: &str) -> Result<Rotation, String> {
+    let parts: Vec<&str> = s.split(',').collect();
+    if parts.len() != 3 {
+        return Err(format!("`{s}` is not X,Y,Z (three angles in degrees)"));
+    }
+    let mut v = [0.0f32; 3];
+    for (slot, p) in v.iter_mut().zip(&parts) {
+        *slot = p
+            .trim()
+            .parse::<f32>()
+            .ok()
+            .filter(|a| a.is_finite())
+            .ok_or_else(|| format!("`{p}` is not an angle in degrees"))?;
+    }
+    Ok(Rotation(v))
+}
+
+fn parse_background(s: &str) -> Result<BackgroundArg, String> {
+    let t = s.trim().to_ascii_lowercase();
+    let c = match t.as_str() {
+        "transparent" => return Ok(BackgroundArg(Background::Transparent)),
+        "black" => [0.0, 0.0, 0.0],
+        "white" => [1.0, 1.0, 1.0],
+        "gray" | "grey" => [0.5, 0.5, 0.5],
+        _ => {
+            let hex = t.strip_prefix('#').unwrap_or(&t);
+            if hex.len() != 6 || !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
+                return Err(format!(
+                    "`{s}` is not a colour: black, white, gray, #RRGGBB or transparent"
+                ));
+            }
+            let byte = |i: usize| {
+                u8::from_str_radix(hex.get(i..i + 2).unwrap_or("00"), 16).unwrap_or(0) as f32
+                    / 255.0
+            };
+            [byte(0), byte(2), byte(4)]
+        }
+    };
+    Ok(BackgroundArg(Background::Color(c)))
+}
+
+/// Runs `shaderbox render`.
+pub fn run(args: &Args) -> Exit {
+    match guarded(|| run_inner(args)) {
+        Ok(exit) => exit,
+        Err(p) => {
+            eprintln!("shaderbox render: internal error: {}", p.message);
+            Exit::Internal
+        }
+    }
+}
+
+fn run_inner(args: &Args) -> Exit {
+    let structure = match &args.file {
+        None => render::crambin(),
+        Some(path) => match render::load_file(path) {
+            Ok(s) => s,
+            Err(e @ render::LoadError::Io { .. }) => {
+                eprintln!("shaderbox render: cannot read {e}");
+                return Exit::Misuse;
+            }
+            Err(e) => {
+                eprintln!("shaderbox render: {e}");
+                return Exit::Failed;
+            }
+        },
+    };
+    let opts = RenderOptions {
+        width: args.size.0,
+        height: args.size.1,
+        projection: match args.projection {
+            ProjectionArg::Ortho => Projection::Orthographic,
+            ProjectionArg::Perspective => Projection::Perspective,
+        },
+        fog: match args.fog {
+            FogArg::None => Fog::None,
+            FogArg::Linear => Fog::Linear,
+            FogArg::Exp => Fog::Exp,
+            FogArg::Exp2 => Fog::Exp2,
+        },
+        lights: args.lights.0.clone(),
+        rotate: args.rotate.0,
+        supersample: args.supersample,
+        background: args.background.0,
+    };
+    let image = match render::render(&structure, &opts) {
+        Ok(i) => i,
+        Err(
+            e @ (render::RenderError::Size { .. }
+            | render::RenderError::Supersample { .. }
+            | render::RenderError::Light(_)),
+        ) => {
+            eprintln!("shaderbox render: {e}");
+            return Exit::Misuse;
+        }
+        Err(e) => {
+            eprintln!("shaderbox render: {}: {e}", structure.source);
+            return Exit::Failed;
+        }
+    };
+    let written = std::fs::File::create(&args.output)
+        .map_err(|e| e.to_string())
+        .and_then(|f| {
+            image
+                .write_png(std::io::BufWriter::new(f))
+                .map_err(|e| e.to_string())
+        });
+    match written {
+        Ok(()) => {
+            eprintln!(
+                "wrote {} ({}x{}, {} atoms from {})",
+                args.output.display(),
+                image.width,
+                image.height,
+                structure.atoms.len(),
+                structure.source
+            );
+            Exit::Ok
+        }
+        Err(e) => {
+            eprintln!("shaderbox render: {}: {e}", args.output.display());
+            Exit::Failed
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn argument_parsers() {
+        assert_eq!(parse_size("800x600"), Ok((800, 600)));
+        assert!(parse_size("0x5").is_err() && parse_size("big").is_err());
+        assert!(parse_size("9000x10").is_err());
+        assert_eq!(parse_lights("0, 1,1"), Ok(Lights(vec![0, 1])));
+        assert_eq!(parse_lights("none"), Ok(Lights(vec![])));
+        assert!(parse_lights("8").is_err() && parse_lights("").is_err());
+        assert_eq!(parse_rotate("90,-45,0.5"), Ok(Rotation([90.0, -45.0, 0.5])));
+        assert!(parse_rotate("1,2").is_err() && parse_rotate("1,2,inf").is_err());
+        assert_eq!(
+            parse_background("#ff0080"),
+            Ok(BackgroundArg(Background::Color([1.0, 0.0, 128.0 / 255.0])))
+        );
+        assert_eq!(
+            parse_background("Transparent"),
+            Ok(BackgroundArg(Background::Transparent))
+        );
+        assert!(parse_background("#12345").is_err() && parse_background("mauve").is_err());
+    }
+}

@@ -1,0 +1,177 @@
+//! End-to-end tests of `shaderbox render`: the PNG it writes, and its exit
+//! statuses and messages for bad structure files and misuse.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn shaderbox(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_shaderbox"))
+        .args(args)
+        .output()
+        .expect("the shaderbox binary runs")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn dir(test: &str) -> PathBuf {
+    let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("render-tests")
+        .join(test);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn write(test: &str, name: &str, bytes: &[u8]) -> String {
+    let p = dir(test).join(name);
+    std::fs::write(&p, bytes).unwrap();
+    p.to_string_lossy().into_owned()
+}
+
+/// Width and height from a PNG's IHDR chunk.
+fn png_size(bytes: &[u8]) -> (u32, u32) {
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n", "PNG signature");
+    assert_eq!(&bytes[12..16], b"IHDR");
+    let be = |i: usize| u32::from_be_bytes([bytes[i], bytes[i + 1], bytes[i + 2], bytes[i + 3]]);
+    (be(16), be(20))
+}
+
+const ATOM: &str =
+    "ATOM      1  N   THR A   1      17.047  14.099   3.625  1.00 13.79           N\n";
+
+#[test]
+fn renders_embedded_molecule_to_png() {
+    let out = dir("embedded").join("crambin.png");
+    let o = shaderbox(&[
+        "render",
+        "-o",
+        out.to_str().unwrap(),
+        "--size",
+        "48x32",
+        "--fog",
+        "exp2",
+        "--projection",
+        "perspective",
+        "--rotate",
+        "-30,45,10",
+        "--lights",
+        "0,1,4",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stderr(&o).contains("327 atoms"), "{}", stderr(&o));
+    let bytes = std::fs::read(&out).unwrap();
+    assert_eq!(png_size(&bytes), (48, 32));
+}
+
+#[test]
+fn renders_a_file_with_transparent_background() {
+    let pdb = write("file", "one.pdb", ATOM.as_bytes());
+    let out = dir("file").join("one.png");
+    let o = shaderbox(&[
+        "render",
+        &pdb,
+        "-o",
+        out.to_str().unwrap(),
+        "--size",
+        "16x16",
+        "--supersample",
+        "2",
+        "--background",
+        "transparent",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let bytes = std::fs::read(&out).unwrap();
+    assert_eq!(png_size(&bytes), (16, 16));
+    assert_eq!(bytes[25], 6, "colour type RGBA");
+}
+
+#[test]
+fn truncated_file_names_file_and_line() {
+    let text = format!("HEADER    T\n{ATOM}ATOM      2  CA  THR A   1      16.967  12.7");
+    let pdb = write("truncated", "cut.pdb", text.as_bytes());
+    let o = shaderbox(&["render", &pdb, "-o", "/nonexistent/x.png"]);
+    assert_eq!(o.status.code(), Some(1));
+    let e = stderr(&o);
+    assert!(e.contains("cut.pdb:3: ATOM record is 44 columns"), "{e}");
+}
+
+#[test]
+fn malformed_number_names_line() {
+    let bad = ATOM.replace("14.099", "14.0?9");
+    let pdb = write(
+        "malformed",
+        "bad.pdb",
+        format!("REMARK\n\n{bad}").as_bytes(),
+    );
+    let o = shaderbox(&["render", &pdb]);
+    assert_eq!(o.status.code(), Some(1));
+    let e = stderr(&o);
+    assert!(
+        e.contains("bad.pdb:3: y coordinate (columns 39-46) is not a number"),
+        "{e}"
+    );
+}
+
+#[test]
+fn empty_and_binary_files() {
+    let empty = write("empty", "empty.pdb", b"");
+    let o = shaderbox(&["render", &empty]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("empty.pdb: has no atoms"),
+        "{}",
+        stderr(&o)
+    );
+    let bin = write(
+        "empty",
+        "noise.pdb",
+        &[0x89, b'P', b'N', b'G', 0, 1, 2, 0xff],
+    );
+    let o = shaderbox(&["render", &bin]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("noise.pdb:1: control character"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+#[test]
+fn misuse_exits_2() {
+    for args in [
+        &["render", "/nonexistent/structure.pdb"][..],
+        &["render", "--size", "0x10"],
+        &["render", "--size", "wide"],
+        &["render", "--lights", "0,9"],
+        &["render", "--rotate", "1,2"],
+        &["render", "--supersample", "0"],
+        &["render", "--background", "mauve"],
+        &["render", "--fog", "thick"],
+        &["render", "--projection", "fisheye"],
+        &["render", "--size", "5000x5000", "--supersample", "2"],
+    ] {
+        let o = shaderbox(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(!stderr(&o).contains("panicked"), "{args:?}");
+    }
+}
+
+#[test]
+fn unwritable_output_exits_1() {
+    let pdb = write("unwritable", "one.pdb", ATOM.as_bytes());
+    let o = shaderbox(&[
+        "render",
+        &pdb,
+        "--size",
+        "8x8",
+        "-o",
+        "/nonexistent/dir/x.png",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("/nonexistent/dir/x.png"),
+        "{}",
+        stderr(&o)
+    );
+}

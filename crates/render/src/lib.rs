@@ -1,0 +1,378 @@
+//! # shaderbox-render: molecules drawn by the project's shader library
+//!
+//! Loads atoms ([`structure`]: a strict PDB reader, and crambin, PDB 1CRN,
+//! embedded), gives them CPK colours and van der Waals radii
+//! ([`elements`]), fits a camera ([`camera`]), sets up the OpenGL 2.1
+//! state the library's sphere impostor shaders read (`shaders/sphere.vert`
+//! and `shaders/sphere.frag`: lights, material, fog, the `perspective`,
+//! `fogging[4]`, `light_enabled[8]`, `right_vector`, `up_vector`
+//! uniforms) on a [`gl::Context`], draws every atom as one GL_QUADS quad
+//! from client vertex arrays, reads the pixels back, box-filters
+//! supersampled renders down and writes PNG ([`image`]).
+//!
+//! ## Contract
+//! - [`render`] never panics; bad sizes, shader or GL failures are
+//!   [`RenderError`]s. Output is deterministic (same bytes on every
+//!   machine): the pipeline is, and the camera uses `glsl::math`.
+//! - Spheres intersect correctly: the fragment shader writes the depth of
+//!   the sphere surface, and the depth test (GL_LESS) is on.
+//! - Lights are directional, defined in eye space (they do not turn with
+//!   the molecule): light 0 a key light from the upper left, light 1 a
+//!   weaker fill light from the lower right, lights 2-7 weaker lights from
+//!   other sides; [`RenderOptions::lights`] picks which are on.
+//! - Fog is computed per atom from the eye distance of its centre, as the
+//!   seed talk does: linear fog runs from the front of the molecule (no
+//!   fog) to a fog factor of [`FOG_AT_BACK`] at its back; exp and exp2
+//!   densities give that factor at the back too (so they fog the front a
+//!   little: fog grows from the eye). The fog colour is the background's.
+//!
+//! ## Limitations
+//! - Spacefill only: no bonds or ball-and-stick yet, none of the seed's
+//!   effects (outline, X marks, transparent atoms) yet; PDB only (no
+//!   mmCIF).
+//! - Supersampling box-filters N x N samples in linear 0-1 colour values
+//!   (not gamma-aware).
+
+pub mod camera;
+pub mod elements;
+pub mod image;
+pub mod structure;
+
+pub use camera::{Camera, Projection};
+pub use elements::Element;
+pub use image::Image;
+pub use structure::{crambin, load_file, parse_pdb, Atom, LoadError, Structure};
+
+use gl::enums::*;
+use gl::{ArrayData, Context};
+use thiserror::Error;
+
+/// The library's sphere impostor vertex shader.
+pub const SPHERE_VERT: &str = include_str!("../../../shaders/sphere.vert");
+/// The library's sphere impostor fragment shader.
+pub const SPHERE_FRAG: &str = include_str!("../../../shaders/sphere.frag");
+
+/// Largest side of the (supersampled) framebuffer.
+pub const MAX_SIDE: u32 = gl::MAX_TEXTURE_SIZE as u32;
+/// Largest supersampling factor.
+pub const MAX_SUPERSAMPLE: u32 = 8;
+/// Fog factor (1 = clear, 0 = fog colour) at the back of the molecule.
+pub const FOG_AT_BACK: f32 = 0.35;
+
+/// Fog mode (GL_FOG_MODE emulated by the shader's `fogging[4]`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Fog {
+    #[default]
+    None,
+    Linear,
+    Exp,
+    Exp2,
+}
+
+/// What is behind the molecule.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Background {
+    /// An opaque colour, RGB in [0, 1].
+    Color([f32; 3]),
+    /// Alpha 0 (the PNG gets an alpha channel); fog fades to black.
+    Transparent,
+}
+
+impl Default for Background {
+    fn default() -> Self {
+        Background::Color([0.0; 3])
+    }
+}
+
+/// Everything [`render`] needs besides the atoms.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RenderOptions {
+    pub width: u32,
+    pub height: u32,
+    pub projection: Projection,
+    pub fog: Fog,
+    /// GL lights that are on (0-7).
+    pub lights: Vec<u8>,
+    /// Rotation about X, then Y, then Z, in degrees.
+    pub rotate: [f32; 3],
+    /// Render N times larger and box-filter down (1 = off).
+    pub supersample: u32,
+    pub background: Background,
+}
+
+impl Default for RenderOptions {
+    fn default() -> Self {
+        RenderOptions {
+            width: 800,
+            height: 800,
+            projection: Projection::Orthographic,
+            fog: Fog::None,
+            lights: vec![0, 1],
+            rotate: [0.0; 3],
+            supersample: 1,
+            background: Background::default(),
+        }
+    }
+}
+
+/// Why a render failed.
+#[derive(Debug, Error, PartialEq)]
+pub enum RenderError {
+    #[error("image size {width}x{height} is invalid (each side 1-{MAX_SIDE})")]
+    Size { width: u32, height: u32 },
+    #[error("supersampling {factor} is invalid: 1-{MAX_SUPERSAMPLE}, and at most {MAX_SIDE} pixels per side after it")]
+    Supersample { factor: u32 },
+    #[error("light {0} does not exist (lights are 0-7)")]
+    Light(u8),
+    #[error("the sphere shaders failed to build: {0}")]
+    Shader(String),
+    #[error("OpenGL error 0x{code:04x} while {during}")]
+    Gl { code: u32, during: &'static str },
+    #[error("drawing failed: {0}")]
+    Draw(String),
+}
+
+/// Direction (eye space, w = 0), ambient, diffuse, specular of lights 0-7.
+const LIGHTS: [([f32; 4], f32, f32, f32); 8] = [
+    ([-0.4, 0.55, 1.0, 0.0], 0.15, 0.75, 0.6),
+    ([0.6, -0.3, 0.7, 0.0], 0.05, 0.3, 0.15),
+    ([1.0, 1.0, 0.3, 0.0], 0.0, 0.3, 0.2),
+    ([-1.0, -1.0, 0.3, 0.0], 0.0, 0.3, 0.2),
+    ([0.0, 0.0, 1.0, 0.0], 0.0, 0.3, 0.2),
+    ([-1.0, 0.0, 0.2, 0.0], 0.0, 0.3, 0.2),
+    ([1.0, 0.0, 0.2, 0.0], 0.0, 0.3, 0.2),
+    ([0.0, 1.0, 0.2, 0.0], 0.0, 0.3, 0.2),
+];
+
+/// Material shininess (specular exponent).
+pub const SHININESS: f32 = 50.0;
+
+fn check(ctx: &mut Context, during: &'static str) -> Result<(), RenderError> {
+    match ctx.get_error() {
+        GL_NO_ERROR => Ok(()),
+        code => Err(RenderError::Gl { code, during }),
+    }
+}
+
+/// Compiles and links the sphere impostor program.
+fn build_program(ctx: &mut Context) -> Result<u32, RenderError> {
+    let program = ctx.create_program();
+    for (kind, src, what) in [
+        (GL_VERTEX_SHADER, SPHERE_VERT, "sphere.vert"),
+        (GL_FRAGMENT_SHADER, SPHERE_FRAG, "sphere.frag"),
+    ] {
+        let sh = ctx.create_shader(kind);
+        ctx.shader_source(sh, &[src]);
+        ctx.compile_shader(sh);
+        if ctx.get_shaderiv(sh, GL_COMPILE_STATUS) == 0 {
+            let log = ctx.get_shader_info_log(sh);
+            return Err(RenderError::Shader(format!("{what}: {log}")));
+        }
+        ctx.attach_shader(program, sh);
+    }
+    ctx.link_program(program);
+    if ctx.get_programiv(program, GL_LINK_STATUS) == 0 {
+        return Err(RenderError::Shader(ctx.get_program_info_log(program)));
+    }
+    check(ctx, "building the shaders")?;
+    Ok(program)
+}
+
+/// Fog state: GL_FOG_* values and the one-hot `fogging[4]` uniform.
+fn set_fog(ctx: &mut Context, fog: Fog, camera: &Camera, color: [f32; 4]) -> [f32; 4] {
+    let (front, back) = camera.depth_span();
+    let back = back.max(1e-3);
+    // ln(1 / FOG_AT_BACK)
+    let k = -glsl::math::log(FOG_AT_BACK);
+    let (mode, onehot) = match fog {
+        Fog::None => (GL_LINEAR, [1.0, 0.0, 0.0, 0.0]),
+        Fog::Linear => (GL_LINEAR, [0.0, 1.0, 0.0, 0.0]),
+        Fog::Exp => (GL_EXP, [0.0, 0.0, 1.0, 0.0]),
+        Fog::Exp2 => (GL_EXP2, [0.0, 0.0, 0.0, 1.0]),
+    };
+    // Linear: factor 1 at the front, FOG_AT_BACK at the back:
+    // (end - back) = FOG_AT_BACK (end - front).
+    let end = (back - FOG_AT_BACK * front) / (1.0 - FOG_AT_BACK);
+    let density = match fog {
+        Fog::Exp2 => glsl::math::sqrt(k) / back,
+        _ => k / back,
+    };
+    ctx.fogi(GL_FOG_MODE, mode as i32);
+    ctx.fogf(GL_FOG_START, front);
+    ctx.fogf(GL_FOG_END, end);
+    ctx.fogf(GL_FOG_DENSITY, density);
+    ctx.fogfv(GL_FOG_COLOR, &color);
+    onehot
+}
+
+/// Renders `structure` into an image (top row first).
+pub fn render(structure: &Structure, opts: &RenderOptions) -> Result<Image, RenderError> {
+    let (w, h, ss) = (opts.width, opts.height, opts.supersample);
+    if w == 0 || h == 0 || w > MAX_SIDE || h > MAX_SIDE {
+        return Err(RenderError::Size {
+            width: w,
+            height: h,
+        });
+    }
+    if ss == 0 || ss > MAX_SUPERSAMPLE || w * ss > MAX_SIDE || h * ss > MAX_SIDE {
+        return Err(RenderError::Supersample { factor: ss });
+    }
+    if let Some(bad) = opts.lights.iter().find(|l| **l >= 8) {
+        return Err(RenderError::Light(*bad));
+    }
+    let (fw, fh) = (w * ss, h * ss);
+    let mut ctx = Context::new(fw as i32, fh as i32);
+    let program = build_program(&mut ctx)?;
+
+    let spheres: Vec<([f32; 3], f32)> = structure
+        .atoms
+        .iter()
+        .map(|a| (a.position, a.element.radius()))
+        .collect();
+    let camera = Camera::fit(&spheres, opts.projection, fw, fh, opts.rotate);
+
+    // Projection.
+    ctx.matrix_mode(GL_PROJECTION);
+    ctx.load_identity();
+    let (hw, hh) = (camera.half_width as f64, camera.half_height as f64);
+    let (n, f) = (camera.near as f64, camera.far as f64);
+    match camera.projection {
+        Projection::Orthographic => ctx.ortho(-hw, hw, -hh, hh, n, f),
+        Projection::Perspective => ctx.frustum(-hw, hw, -hh, hh, n, f),
+    }
+
+    // Lights, in eye space (identity model-view when specified).
+    ctx.matrix_mode(GL_MODELVIEW);
+    ctx.load_identity();
+    let mut enabled = [0.0f32; 8];
+    for (i, (pos, a, d, s)) in LIGHTS.iter().enumerate() {
+        let light = GL_LIGHT0 + i as u32;
+        ctx.lightfv(light, GL_POSITION, pos);
+        ctx.lightfv(light, GL_AMBIENT, &[*a, *a, *a, 1.0]);
+        ctx.lightfv(light, GL_DIFFUSE, &[*d, *d, *d, 1.0]);
+        ctx.lightfv(light, GL_SPECULAR, &[*s, *s, *s, 1.0]);
+        if opts.lights.contains(&(i as u8)) {
+            ctx.enable(light);
+            enabled[i] = 1.0;
+        } else {
+            ctx.disable(light);
+        }
+    }
+    ctx.enable(GL_LIGHTING);
+    ctx.materialfv(GL_FRONT_AND_BACK, GL_AMBIENT, &[1.0, 1.0, 1.0, 1.0]);
+    ctx.materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, &[1.0, 1.0, 1.0, 1.0]);
+    ctx.materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, &[1.0, 1.0, 1.0, 1.0]);
+    ctx.materialfv(GL_FRONT_AND_BACK, GL_EMISSION, &[0.0, 0.0, 0.0, 1.0]);
+    ctx.materialf(GL_FRONT_AND_BACK, GL_SHININESS, SHININESS);
+    check(&mut ctx, "setting lights and material")?;
+
+    // Model-view: eye at +distance on z, molecule turned about its centre.
+    let [rx, ry, rz] = camera.rotate;
+    ctx.translatef(0.0, 0.0, -camera.distance);
+    ctx.rotatef(rz, 0.0, 0.0, 1.0);
+    ctx.rotatef(ry, 0.0, 1.0, 0.0);
+    ctx.rotatef(rx, 1.0, 0.0, 0.0);
+    let c = camera.center;
+    ctx.translatef(-c[0], -c[1], -c[2]);
+    let mv = ctx.get_floatv(GL_MODELVIEW_MATRIX);
+    let row = |r: usize| -> [f32; 3] { [0, 4, 8].map(|o| mv.get(o + r).copied().unwrap_or(0.0)) };
+    let (right, up) = (row(0), row(1));
+
+    // Background and fog.
+    let (bg, alpha) = match opts.background {
+        Background::Color(c) => (c, 1.0),
+        Background::Transparent => ([0.0; 3], 0.0),
+    };
+    let fogging = set_fog(&mut ctx, opts.fog, &camera, [bg[0], bg[1], bg[2], 1.0]);
+    ctx.clear_color(bg[0], bg[1], bg[2], alpha);
+    ctx.clear_depth(1.0);
+    ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    ctx.enable(GL_DEPTH_TEST);
+    ctx.depth_func(GL_LESS);
+    check(&mut ctx, "setting fog, depth and clearing")?;
+
+    // Uniforms.
+    ctx.use_program(program);
+    let loc = |ctx: &mut Context, name: &str| ctx.get_uniform_location(program, name);
+    let l = loc(&mut ctx, "right_vector");
+    ctx.uniform_3f(l, right[0], right[1], right[2]);
+    let l = loc(&mut ctx, "up_vector");
+    ctx.uniform_3f(l, up[0], up[1], up[2]);
+    let l = loc(&mut ctx, "perspective");
+    let persp = match camera.projection {
+        Projection::Orthographic => 0.0,
+        Projection::Perspective => 1.0,
+    };
+    ctx.uniform_1f(l, persp);
+    let l = loc(&mut ctx, "fogging");
+    ctx.uniform_1fv(l, 4, &fogging);
+    let l = loc(&mut ctx, "light_enabled");
+    ctx.uniform_1fv(l, 8, &enabled);
+    check(&mut ctx, "setting the shader uniforms")?;
+
+    // One quad per atom: four vertices at the centre, corners in
+    // gl_MultiTexCoord0 = (right, up, radius), colour in gl_Color.
+    let n = structure.atoms.len();
+    let mut pos = Vec::with_capacity(n * 12);
+    let mut tex = Vec::with_capacity(n * 12);
+    let mut col = Vec::with_capacity(n * 16);
+    for a in &structure.atoms {
+        let r = a.element.radius();
+        let [cr, cg, cb] = a.element.color();
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            pos.extend_from_slice(&a.position);
+            tex.extend_from_slice(&[x, y, r]);
+            col.extend_from_slice(&[cr, cg, cb, 1.0]);
+        }
+    }
+    ctx.vertex_pointer(3, GL_FLOAT, 0, ArrayData::from_f32(&pos));
+    ctx.client_active_texture(GL_TEXTURE0);
+    ctx.tex_coord_pointer(3, GL_FLOAT, 0, ArrayData::from_f32(&tex));
+    ctx.color_pointer(4, GL_FLOAT, 0, ArrayData::from_f32(&col));
+    ctx.enable_client_state(GL_VERTEX_ARRAY);
+    ctx.enable_client_state(GL_TEXTURE_COORD_ARRAY);
+    ctx.enable_client_state(GL_COLOR_ARRAY);
+    check(&mut ctx, "specifying the vertex arrays")?;
+    let count = i32::try_from(n.saturating_mul(4)).unwrap_or(i32::MAX);
+    ctx.draw_arrays(GL_QUADS, 0, count);
+    if let Some(e) = ctx.take_draw_error() {
+        return Err(RenderError::Draw(e));
+    }
+    check(&mut ctx, "drawing")?;
+
+    let pixels = ctx.read_pixels_f32(0, 0, fw as i32, fh as i32);
+    check(&mut ctx, "reading the pixels")?;
+    Ok(image::downsample(&pixels, fw, fh, ss, alpha < 1.0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shaders_build() {
+        let mut ctx = Context::new(4, 4);
+        assert!(build_program(&mut ctx).is_ok());
+    }
+
+    #[test]
+    fn bad_options_are_errors() {
+        let s = crambin();
+        let mut o = RenderOptions {
+            width: 0,
+            ..RenderOptions::default()
+        };
+        assert!(matches!(render(&s, &o), Err(RenderError::Size { .. })));
+        o.width = 4000;
+        o.supersample = 3;
+        assert!(matches!(
+            render(&s, &o),
+            Err(RenderError::Supersample { factor: 3 })
+        ));
+        o.width = 8;
+        o.height = 8;
+        o.supersample = 1;
+        o.lights = vec![9];
+        assert_eq!(render(&s, &o), Err(RenderError::Light(9)));
+    }
+}
