@@ -124,7 +124,21 @@ impl UniformTable {
         let mut t = UniformTable::default();
         for (si, m) in stages.iter().enumerate() {
             for g in &m.globals {
-                if g.storage != Storage::Uniform || t.globals.iter().any(|u| u.name == g.name) {
+                if g.storage != Storage::Uniform {
+                    continue;
+                }
+                if let Some(u) = t.globals.iter().find(|u| u.name == g.name) {
+                    // Declared by an earlier stage: this stage's initializer
+                    // still sets the shared value (the linker checked that
+                    // initializers present in both stages agree).
+                    if let Some(init) = &g.init {
+                        let (offset, n) = (u.offset, u.words);
+                        for (i, c) in init.components.iter().take(n).enumerate() {
+                            if let Some(w) = t.values.get_mut(offset + i) {
+                                *w = scalar_word(*c);
+                            }
+                        }
+                    }
                     continue;
                 }
                 let n = words(g.ty, &m.structs);
@@ -508,6 +522,21 @@ uniform sampler2D tex;
 uniform float init = 2.5;
 void main() { gl_FragColor = vec4(s[1].b[2], v[3].x, m[0].x) + texture2D(tex, vec2(init)) * float(flag); }
 ";
+
+    #[test]
+    fn initializer_from_a_later_stage_sets_the_shared_uniform() {
+        // piglit uniform-initializer/vs-*-set-by-other-stage.
+        let vs = compile(
+            &["uniform float u; void main() { gl_Position = vec4(u); }"],
+            &CompileOptions::new(Stage::Vertex),
+        );
+        let (_, fm) =
+            table("#version 120\nuniform float u = 2.5;\nvoid main() { gl_FragColor = vec4(u); }");
+        let vm = vs.module.unwrap();
+        let t = UniformTable::build(&[&vm, &fm]);
+        let u = t.globals.iter().find(|g| g.name == "u").unwrap();
+        assert_eq!(t.values[u.offset], 2.5f32.to_bits());
+    }
 
     #[test]
     fn locations_follow_paths() {
