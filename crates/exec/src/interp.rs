@@ -2,7 +2,7 @@
 
 use crate::program::{Op, Program, TexLod};
 use crate::{Batch, ExecError, Kernel, LaneMask, Lod, SampleRequest, Textures, Trace, LANES};
-use glsl::math;
+use glsl::math::{self, flush_denormal};
 use glsl::types::Scalar;
 
 /// Loop iterations (summed over every loop, counted once per iteration of
@@ -60,6 +60,14 @@ impl Hook for TraceHook<'_> {
 #[inline(always)]
 fn f(x: u32) -> f32 {
     f32::from_bits(x)
+}
+
+/// The bits of `x` with a subnormal flushed to zero: the result of every
+/// float arithmetic op and built-in function (as constant folding does;
+/// see `glsl::math::flush_denormal`).
+#[inline(always)]
+fn ftz(x: f32) -> u32 {
+    flush_denormal(x).to_bits()
 }
 
 #[inline(always)]
@@ -136,20 +144,20 @@ pub(crate) fn run<H: Hook>(
                 }
             }
             Op::Uniform { d, word } => r[d as usize] = [uni(word as usize); LANES],
-            Op::FAdd { d, a, b } => bin!(d, a, b, |x, y| (f(x) + f(y)).to_bits()),
-            Op::FSub { d, a, b } => bin!(d, a, b, |x, y| (f(x) - f(y)).to_bits()),
-            Op::FMul { d, a, b } => bin!(d, a, b, |x, y| (f(x) * f(y)).to_bits()),
-            Op::FDiv { d, a, b } => bin!(d, a, b, |x, y| (f(x) / f(y)).to_bits()),
+            Op::FAdd { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) + f(y))),
+            Op::FSub { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) - f(y))),
+            Op::FMul { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) * f(y))),
+            Op::FDiv { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) / f(y))),
             Op::FNeg { d, a } => un!(d, a, |x| (-f(x)).to_bits()),
             Op::FMac { d, a, b } => {
                 let (a, b, acc) = (r[a as usize], r[b as usize], r[d as usize]);
                 r[d as usize] = lanes(|l| {
-                    let prod = f(a[l]) * f(b[l]);
-                    (f(acc[l]) + prod).to_bits()
+                    let prod = flush_denormal(f(a[l]) * f(b[l]));
+                    ftz(f(acc[l]) + prod)
                 });
             }
-            Op::F1 { f: func, d, a } => un!(d, a, |x| func(f(x)).to_bits()),
-            Op::F2 { f: func, d, a, b } => bin!(d, a, b, |x, y| func(f(x), f(y)).to_bits()),
+            Op::F1 { f: func, d, a } => un!(d, a, |x| ftz(func(f(x)))),
+            Op::F2 { f: func, d, a, b } => bin!(d, a, b, |x, y| ftz(func(f(x), f(y)))),
             Op::F3 {
                 f: func,
                 d,
@@ -158,7 +166,7 @@ pub(crate) fn run<H: Hook>(
                 c,
             } => {
                 let (a, b, c) = (r[a as usize], r[b as usize], r[c as usize]);
-                r[d as usize] = lanes(|l| func(f(a[l]), f(b[l]), f(c[l])).to_bits());
+                r[d as usize] = lanes(|l| ftz(func(f(a[l]), f(b[l]), f(c[l]))));
             }
             Op::FLt { d, a, b } => bin!(d, a, b, |x, y| (f(x) < f(y)) as u32),
             Op::FLe { d, a, b } => bin!(d, a, b, |x, y| (f(x) <= f(y)) as u32),

@@ -18,7 +18,18 @@
 //!   range is clamped to the nearest element (negative → element 0, too
 //!   large → the last element), for reads and writes; uninitialized
 //!   variables hold unspecified but deterministic values (0 at the start of
-//!   a run).
+//!   a run); a subnormal result of float arithmetic or of a built-in is
+//!   flushed to zero (`glsl::math::flush_denormal`, as folding does;
+//!   subnormal operands are used as they are); `min`/`max` with one NaN
+//!   operand give the other operand.
+//! - An `if` whose condition is a constant `bool` is lowered to the taken
+//!   branch only (the other may call a function that has no body, which
+//!   the linker accepts there); a call of a body-less function anywhere
+//!   else is [`ExecError::Unsupported`].
+//! - Limitation: built-ins the lowering expands into several ops (`dot`,
+//!   `length`, `normalize`, ...) flush each intermediate result, folding
+//!   flushes only the final one: they can differ when an intermediate is
+//!   subnormal.
 //! - **Control flow** runs under per-lane execution masks: `if`/`else`,
 //!   loops with `break`/`continue` per lane (a loop ends when no lane is
 //!   left in it), early `return` (per inlined function), `discard` (sets

@@ -310,7 +310,7 @@ fn inlined_cost(m: &Module, f: FunctionId, memo: &mut Vec<Option<u64>>, depth: u
     };
     let mut calls = Vec::new();
     let mut nodes = 0u64;
-    visit_block(body, &mut |e| {
+    visit_live_block(body, &mut |e| {
         nodes += 1;
         if let ExprKind::Call { function, .. } = &e.kind {
             calls.push(*function);
@@ -328,26 +328,53 @@ fn inlined_cost(m: &Module, f: FunctionId, memo: &mut Vec<Option<u64>>, depth: u
 
 /// Calls `f` on every expression of `b`, outer before inner.
 fn visit_block(b: &Block, f: &mut dyn FnMut(&Expr)) {
+    visit_block_with(b, false, f)
+}
+
+/// Calls `f` on every expression of `b` that lowering reaches: not the
+/// branch a constant `if` condition rules out (see [`const_bool`]).
+fn visit_live_block(b: &Block, f: &mut dyn FnMut(&Expr)) {
+    visit_block_with(b, true, f)
+}
+
+fn visit_block_with(b: &Block, live_only: bool, f: &mut dyn FnMut(&Expr)) {
     for s in b {
         match s {
             Stmt::Expr(e) | Stmt::Return(Some(e), _) => visit_expr(e, f),
             Stmt::Declare { init: Some(e), .. } => visit_expr(e, f),
-            Stmt::Block(b) => visit_block(b, f),
+            Stmt::Block(b) => visit_block_with(b, live_only, f),
             Stmt::If {
                 cond, then, else_, ..
-            } => {
-                visit_expr(cond, f);
-                visit_block(then, f);
-                visit_block(else_, f);
-            }
+            } => match const_bool(cond).filter(|_| live_only) {
+                Some(true) => visit_block_with(then, live_only, f),
+                Some(false) => visit_block_with(else_, live_only, f),
+                None => {
+                    visit_expr(cond, f);
+                    visit_block_with(then, live_only, f);
+                    visit_block_with(else_, live_only, f);
+                }
+            },
             Stmt::Loop {
                 body, continuing, ..
             } => {
-                visit_block(body, f);
-                visit_block(continuing, f);
+                visit_block_with(body, live_only, f);
+                visit_block_with(continuing, live_only, f);
             }
             _ => {}
         }
+    }
+}
+
+/// The value of a constant `bool` condition. An `if` on one is lowered to
+/// the taken branch only (the linker likewise ignores calls in the other,
+/// which may name a function without a body).
+fn const_bool(e: &Expr) -> Option<bool> {
+    match &e.kind {
+        ExprKind::Const(ConstValue { components, .. }) => match components.first() {
+            Some(ConstScalar::Bool(b)) => Some(*b),
+            _ => None,
+        },
+        _ => None,
     }
 }
 
@@ -602,6 +629,13 @@ impl<'m> Lowerer<'m> {
                 else_,
                 span,
             } => {
+                if let Some(taken) = const_bool(cond) {
+                    // Only the taken branch exists (it may call functions
+                    // that have no body in the other).
+                    self.block(if taken { then } else { else_ })?;
+                    self.next_reg = mark;
+                    return Ok(false);
+                }
                 self.mark_statement(*span);
                 let c = self.expr(cond)?;
                 let c = self.copy(&c[..1.min(c.len())])?;
@@ -897,25 +931,51 @@ impl<'m> Lowerer<'m> {
         Ok(p)
     }
 
-    fn index_dynamic(&mut self, p: Place, i: Reg) -> R<Place> {
-        let mut p = if p.comps.is_some() {
-            let v = self.read(&p)?;
-            self.temp_place(&v, p.ty)?
+    fn index_dynamic(&mut self, mut p: Place, i: Reg) -> R<Place> {
+        let (d, span, elem) = if let Some(comps) = p.comps.take() {
+            // `v.zyx[i]`: the component offset is looked up per lane from
+            // the swizzle, so the place stays writable.
+            let Some((&first, rest)) = comps.split_first() else {
+                return unsupported("indexing an empty swizzle");
+            };
+            let k = self.temp()?;
+            self.emit(Op::ClampIdx {
+                d: k,
+                a: i,
+                max: rest.len() as u32,
+                stride: 1,
+            })?;
+            let mut d = self.konst(first)?;
+            for (j, &c) in rest.iter().enumerate() {
+                let jr = self.konst(j as u32 + 1)?;
+                let eq = self.temp()?;
+                self.emit(Op::IEq { d: eq, a: k, b: jr })?;
+                let cr = self.konst(c)?;
+                let sel = self.temp()?;
+                self.emit(Op::Select {
+                    d: sel,
+                    c: eq,
+                    a: cr,
+                    b: d,
+                })?;
+                d = sel;
+            }
+            let span = comps.iter().copied().max().unwrap_or(0);
+            (d, span, Type::vec(kind_of(p.ty), 1))
         } else {
-            p
+            let (elem, n, stride) = self.index_shape(p.ty)?;
+            if n == 0 {
+                return unsupported("indexing an empty array");
+            }
+            let d = self.temp()?;
+            self.emit(Op::ClampIdx {
+                d,
+                a: i,
+                max: n - 1,
+                stride,
+            })?;
+            (d, (n - 1) * stride, elem)
         };
-        let (elem, n, stride) = self.index_shape(p.ty)?;
-        if n == 0 {
-            return unsupported("indexing an empty array");
-        }
-        let d = self.temp()?;
-        self.emit(Op::ClampIdx {
-            d,
-            a: i,
-            max: n - 1,
-            stride,
-        })?;
-        let span = (n - 1) * stride;
         p.dynamic = match p.dynamic {
             None => Some((d, span)),
             Some((prev, max)) => {
@@ -1518,7 +1578,7 @@ impl<'m> Lowerer<'m> {
         let callees = |f: FunctionId| {
             let mut out = Vec::new();
             if let Some(b) = m.functions.get(f.0 as usize).and_then(|f| f.body.as_ref()) {
-                visit_block(b, &mut |e| {
+                visit_live_block(b, &mut |e| {
                     if let ExprKind::Call { function, .. } = &e.kind {
                         out.push(*function);
                     }

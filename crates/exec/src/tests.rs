@@ -674,3 +674,108 @@ fn unsized_local_arrays_take_their_implicit_size() {
     );
     assert_eq!(c[3], [2.0, 1.0, 0.0, 1.0]);
 }
+
+#[test]
+fn dynamic_index_through_a_swizzle_writes_the_variable() {
+    // piglit swizzled-writemask-indexing-nonconst: `v.wzyx[i] = ...`.
+    let (c, _) = frag_colors(
+        "void main() {
+            int i = int(gl_FragCoord.x) - (int(gl_FragCoord.x) / 4) * 4;
+            vec4 v = vec4(0.0);
+            v.wzyx[i] = 1.0;
+            vec3 w = vec3(0.0);
+            w.zx[i] += 2.0;
+            gl_FragColor = v + vec4(w, 0.0) * 10.0 + vec4(v.wzyx[i] * 100.0);
+        }",
+        &[],
+    );
+    for (l, c) in c.iter().enumerate() {
+        let i = l % 4;
+        let mut want = [100.0f32; 4];
+        want[3 - i] += 1.0;
+        // `w.zx[i]` clamps i to 1 beyond the swizzle: z for 0, x otherwise.
+        want[if i == 0 { 2 } else { 0 }] += 20.0;
+        assert_eq!(*c, want, "lane {l}");
+    }
+}
+
+#[test]
+fn constant_if_lowers_only_the_taken_branch() {
+    // piglit glsl-const-folding-01: a function without a body called only
+    // in branches a constant condition rules out.
+    let (c, _) = frag_colors(
+        "#version 120
+        void missing();
+        void main() {
+            gl_FragColor = vec4(0.0, 1.0, 0.0, 1.0);
+            if (false) missing();
+            else if (sqrt(4.0) != 2.0) missing();
+            if (true) gl_FragColor.b = 0.5; else missing();
+        }",
+        &[],
+    );
+    assert!(c.iter().all(|c| *c == [0.0, 1.0, 0.5, 1.0]), "{c:?}");
+    // Anywhere else a body-less callee is still refused.
+    let s = link_one(
+        Stage::Fragment,
+        "void missing();
+        uniform bool u;
+        void main() { if (u) missing(); gl_FragColor = vec4(1.0); }",
+    );
+    if let Ok(s) = s {
+        assert!(Kernel::new(&s).is_err());
+    }
+}
+
+#[test]
+fn min_max_ignore_nan_and_underflow_flushes() {
+    let (c, _) = frag_colors(
+        "uniform float zero; uniform float tiny;
+        void main() {
+            float nan = zero / zero;
+            float m = min(nan, -3.0) + min(-3.0, nan) + max(nan, 3.0) + max(3.0, nan);
+            // 2^-75 * 2^-75 = 2^-150: below every subnormal is 0 anyway;
+            // 2^-70 * 2^-70 = 2^-140 is subnormal, flushed to 0.
+            float p = tiny * tiny;
+            gl_FragColor = vec4(m, float(p > 0.0), float(tiny > 0.0), pow(2.0, -140.0));
+        }",
+        &[
+            ("zero", &[0.0f32.to_bits()]),
+            ("tiny", &[(2.0f32).powi(-70).to_bits()]),
+        ],
+    );
+    assert!(c.iter().all(|c| *c == [0.0, 0.0, 1.0, 0.0]), "{c:?}");
+}
+
+#[test]
+fn out_argument_index_is_taken_at_the_call() {
+    // piglit vs-out-conversion-int-to-float-vec4-index: the converted value
+    // lands in `value[1]`, the index before the callee changed `i`.
+    let (c, _) = frag_colors(
+        "#version 120
+        void f(inout int i, out int x) { x = 4; i = 0; }
+        void main() {
+            vec4 value = vec4(0.0);
+            int i = 1;
+            f(i, value[i]);
+            gl_FragColor = value;
+        }",
+        &[],
+    );
+    assert!(c.iter().all(|c| *c == [0.0, 4.0, 0.0, 0.0]), "{c:?}");
+}
+
+#[test]
+fn redeclared_unsized_local_array_keeps_its_initializer() {
+    // piglit glsl-fs-array-redeclaration.
+    let (c, _) = frag_colors(
+        "#version 120
+        void main() {
+            float a[];
+            float a[] = float[](3.0, 1.0);
+            gl_FragColor = vec4(a[0], a[1], float(a.length()), 1.0);
+        }",
+        &[],
+    );
+    assert!(c.iter().all(|c| *c == [3.0, 1.0, 2.0, 1.0]), "{c:?}");
+}

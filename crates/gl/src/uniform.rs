@@ -62,8 +62,6 @@ pub struct UniformGlobal {
     pub offset: usize,
     pub words: usize,
     pub builtin: bool,
-    /// A stage gave it an initializer (GLSL 1.20 uniform initializers).
-    pub has_init: bool,
 }
 
 /// An active uniform as glGetActiveUniform reports it: a leaf of basic type
@@ -130,13 +128,15 @@ impl UniformTable {
                     continue;
                 }
                 if let Some(u) = t.globals.iter().find(|u| u.name == g.name) {
-                    // Declared in an earlier stage too (the linker checked
-                    // the types match): an initializer given only in this
-                    // stage still sets the shared uniform (GLSL 1.20 §4.3.5).
-                    if let (Some(init), false) = (&g.init, u.has_init) {
+                    // Declared by an earlier stage: this stage's initializer
+                    // still sets the shared value (the linker checked that
+                    // initializers present in both stages agree).
+                    if let Some(init) = &g.init {
                         let (offset, n) = (u.offset, u.words);
                         for (i, c) in init.components.iter().take(n).enumerate() {
-                            t.values[offset + i] = scalar_word(*c);
+                            if let Some(w) = t.values.get_mut(offset + i) {
+                                *w = scalar_word(*c);
+                            }
                         }
                     }
                     continue;
@@ -156,7 +156,6 @@ impl UniformTable {
                     offset,
                     words: n,
                     builtin: g.builtin,
-                    has_init: g.init.is_some(),
                 });
                 if !g.builtin {
                     let mut leaves = Vec::new();
@@ -523,6 +522,21 @@ uniform sampler2D tex;
 uniform float init = 2.5;
 void main() { gl_FragColor = vec4(s[1].b[2], v[3].x, m[0].x) + texture2D(tex, vec2(init)) * float(flag); }
 ";
+
+    #[test]
+    fn initializer_from_a_later_stage_sets_the_shared_uniform() {
+        // piglit uniform-initializer/vs-*-set-by-other-stage.
+        let vs = compile(
+            &["uniform float u; void main() { gl_Position = vec4(u); }"],
+            &CompileOptions::new(Stage::Vertex),
+        );
+        let (_, fm) =
+            table("#version 120\nuniform float u = 2.5;\nvoid main() { gl_FragColor = vec4(u); }");
+        let vm = vs.module.unwrap();
+        let t = UniformTable::build(&[&vm, &fm]);
+        let u = t.globals.iter().find(|g| g.name == "u").unwrap();
+        assert_eq!(t.values[u.offset], 2.5f32.to_bits());
+    }
 
     #[test]
     fn locations_follow_paths() {

@@ -173,13 +173,13 @@ fn unary(op: UnaryOp, c: ConstScalar) -> Option<ConstScalar> {
 fn scalar_op(op: BinaryOp, a: ConstScalar, b: ConstScalar) -> Option<ConstScalar> {
     use ConstScalar::*;
     Some(match (a, b) {
-        (Float(x), Float(y)) => Float(match op {
+        (Float(x), Float(y)) => Float(crate::math::flush_denormal(match op {
             BinaryOp::Add => x + y,
             BinaryOp::Sub => x - y,
             BinaryOp::Mul => x * y,
             BinaryOp::Div => x / y,
             _ => return None,
-        }),
+        })),
         (Int(x), Int(y)) => Int(match op {
             BinaryOp::Add => x.wrapping_add(y),
             BinaryOp::Sub => x.wrapping_sub(y),
@@ -305,7 +305,8 @@ fn matmul(l: &ConstValue, r: &ConstValue, ty: Type) -> Option<Vec<ConstScalar>> 
             // executor uses.
             let mut s = 0.0f32;
             for k in 0..lc {
-                s += lf[k * lr + row] * rf[c * rr + k];
+                let prod = crate::math::flush_denormal(lf[k * lr + row] * rf[c * rr + k]);
+                s = crate::math::flush_denormal(s + prod);
             }
             out.push(ConstScalar::Float(s));
         }

@@ -138,19 +138,36 @@ pub fn modulo(x: f32, y: f32) -> f32 {
     x - y * floor(x / y)
 }
 
-/// GLSL `min`: `y` if `y < x`, otherwise `x`.
+/// GLSL `min`: `y` if `y < x`, otherwise `x`; a NaN operand gives the
+/// other operand (IEEE 754 `minNum`; GLSL leaves NaN results undefined,
+/// piglit's `*-nan-builtin-min` expects the number).
 pub fn min(x: f32, y: f32) -> f32 {
-    if y < x {
+    if x.is_nan() || y < x {
         y
     } else {
         x
     }
 }
 
-/// GLSL `max`: `y` if `x < y`, otherwise `x`.
+/// GLSL `max`: `y` if `x < y`, otherwise `x`; a NaN operand gives the
+/// other operand (IEEE 754 `maxNum`).
 pub fn max(x: f32, y: f32) -> f32 {
-    if x < y {
+    if x.is_nan() || x < y {
         y
+    } else {
+        x
+    }
+}
+
+/// A subnormal `x` becomes zero of the same sign; other values are
+/// unchanged. Float arithmetic and built-in results are flushed this way,
+/// both when folded and when executed (GLSL 1.20 §4.1.4 allows it: "there
+/// is no requirement for [...] denormalized numbers"; piglit's
+/// `fs-underflow-*-compare-zero` expect a product or `pow` below the normal
+/// range to be 0, as GPUs and llvmpipe give).
+pub fn flush_denormal(x: f32) -> f32 {
+    if x != 0.0 && x.abs() < f32::MIN_POSITIVE {
+        f32::from_bits(x.to_bits() & 0x8000_0000)
     } else {
         x
     }

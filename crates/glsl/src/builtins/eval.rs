@@ -32,7 +32,13 @@ pub fn eval_builtin(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<C
     if args.iter().any(|a| a.ty.component_count().is_none()) {
         return None;
     }
-    let components = eval(f, args, result)?;
+    let mut components = eval(f, args, result)?;
+    // Subnormal results are flushed, as the executor does.
+    for c in &mut components {
+        if let ConstScalar::Float(x) = c {
+            *x = math::flush_denormal(*x);
+        }
+    }
     if components.len() != result.component_count()? as usize {
         return None;
     }

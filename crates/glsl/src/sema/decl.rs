@@ -350,7 +350,7 @@ impl Analyzer {
         if let Some(prev) = self.scopes.lookup_current(&name).cloned() {
             if let Symbol::Var(v) = prev {
                 if self.resize_array(v, ty, d) {
-                    return None;
+                    return self.resized_init(v, init, d.span);
                 }
             }
             self.error(
@@ -442,6 +442,38 @@ impl Analyzer {
         }
         self.set_var_type(v, ty);
         true
+    }
+
+    /// `float a[]; float a[] = float[](0.0, 1.0);`: the redeclaration's
+    /// initializer still initializes the (now sized) array: an assignment
+    /// at the redeclaration for a local, the initializer of a global.
+    fn resized_init(&mut self, v: Var, init: Option<ir::Expr>, span: Span) -> Option<ir::Stmt> {
+        let init = init.filter(|e| !e.ty.is_error())?;
+        let ty = self.var_type(v);
+        match v {
+            Var::Local(local) => Some(ir::Stmt::Expr(ir::Expr {
+                kind: ExprKind::Assign {
+                    op: None,
+                    target: Box::new(ir::Expr {
+                        kind: ExprKind::Local(local),
+                        ty,
+                        span,
+                    }),
+                    value: Box::new(init),
+                },
+                ty,
+                span,
+            })),
+            Var::Global(g) => {
+                if let Some(g) = self.module.globals.get_mut(g.0 as usize) {
+                    if g.storage == Storage::Private && g.init_expr.is_none() {
+                        g.init_expr = Some(init);
+                    }
+                }
+                None
+            }
+            Var::Builtin(_) => None,
+        }
     }
 
     pub fn implicit_size(&self, v: Var) -> u32 {

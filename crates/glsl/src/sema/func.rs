@@ -485,6 +485,8 @@ impl Analyzer {
         // Out arguments converted on the way back (GLSL 1.20: an `out int'
         // parameter may write a float variable) go through a temporary.
         let mut copy_back = Vec::new();
+        // Dynamic indices of those targets, evaluated before the call.
+        let mut hoisted = Vec::new();
         for (k, v) in vals.into_iter().enumerate() {
             let (pty, q) = sig.params[k];
             match q {
@@ -502,6 +504,8 @@ impl Analyzer {
                             ty: pty,
                             span: lv.span,
                         });
+                        let mut lv = lv;
+                        self.hoist_indices(&mut lv, &mut hoisted);
                         copy_back.push((lv, t, pty));
                     } else {
                         out_args.push(lv);
@@ -549,7 +553,53 @@ impl Analyzer {
         if copy_back.is_empty() {
             return e;
         }
-        self.copy_back(e, copy_back)
+        let seq = self.copy_back(e, copy_back);
+        hoisted.into_iter().rev().fold(seq, |seq, pre| {
+            let (ty, span) = (seq.ty, seq.span);
+            ir::Expr {
+                kind: ExprKind::Comma {
+                    left: Box::new(pre),
+                    right: Box::new(seq),
+                },
+                ty,
+                span,
+            }
+        })
+    }
+
+    /// Replaces every non-constant index inside the l-value `lv` by a new
+    /// local, pushing `local = index` to `pre`: an out argument's l-value is
+    /// evaluated at the call (§6.1.1), even when the converted value is
+    /// copied into it after the call returns.
+    fn hoist_indices(&mut self, lv: &mut ir::Expr, pre: &mut Vec<ir::Expr>) {
+        match &mut lv.kind {
+            ExprKind::Index { base, index } => {
+                self.hoist_indices(base, pre);
+                if !matches!(index.kind, ExprKind::Const(_)) && !index.ty.is_error() {
+                    let (ty, span) = (index.ty, index.span);
+                    let t = self.new_local("<out index>", ty, false, span);
+                    let local = ir::Expr {
+                        kind: ExprKind::Local(t),
+                        ty,
+                        span,
+                    };
+                    let value = std::mem::replace(&mut **index, local.clone());
+                    pre.push(ir::Expr {
+                        kind: ExprKind::Assign {
+                            op: None,
+                            target: Box::new(local),
+                            value: Box::new(value),
+                        },
+                        ty,
+                        span,
+                    });
+                }
+            }
+            ExprKind::Member { base, .. } | ExprKind::Swizzle { base, .. } => {
+                self.hoist_indices(base, pre)
+            }
+            _ => {}
+        }
     }
 
     /// `(r = f(t), x = float(t), r)`: the call, then the converted copies of
