@@ -641,7 +641,8 @@ impl Context {
             slots: self.input_sources(&vs),
             immediate,
         };
-        let r = raster::draw(
+        let r = raster::draw_on(
+            &self.workers,
             &mut target.fb,
             &state,
             &vs,

@@ -25,7 +25,10 @@
 //!   hash-order dependence.
 //!
 //! - Draws run the program's `exec` kernels (or generated fixed-function
-//!   stages, [`ffgen`]) through `raster::draw` ([`draw`]).
+//!   stages, [`ffgen`]) through `raster::draw_on` ([`draw`]) on the
+//!   context's threads: [`Context::set_threads`], by default the
+//!   environment variable `SHADERBOX_THREADS` ([`THREADS_ENV`]) or else the
+//!   machine's available parallelism. Images do not depend on the count.
 //!
 //! ## Limitations
 //! - No display lists, selection/feedback, accumulation buffer, color index
@@ -89,6 +92,20 @@ pub struct Context {
     /// The default framebuffer.
     pub(crate) fb: raster::Framebuffer,
     pub(crate) cache: draw::DrawCache,
+    /// The threads draws run on ([`Context::set_threads`]).
+    pub(crate) workers: raster::Workers,
+}
+
+/// The environment variable giving the default number of draw threads.
+pub const THREADS_ENV: &str = "SHADERBOX_THREADS";
+
+/// [`THREADS_ENV`] as a thread count; 0 (available parallelism) when unset
+/// or not a number.
+fn threads_from_env() -> usize {
+    std::env::var(THREADS_ENV)
+        .ok()
+        .and_then(|v| v.trim().parse().ok())
+        .unwrap_or(0)
 }
 
 impl Default for Context {
@@ -131,7 +148,23 @@ impl Context {
                 true,
             ),
             cache: draw::DrawCache::default(),
+            workers: raster::Workers::new(threads_from_env()),
         }
+    }
+
+    /// Runs draws on `threads` threads (1: on the calling thread; 0: the
+    /// machine's available parallelism, the default unless the environment
+    /// variable `SHADERBOX_THREADS` says otherwise). Images are
+    /// bit-identical whatever the number.
+    pub fn set_threads(&mut self, threads: usize) {
+        if threads != self.workers.threads() || threads == 0 {
+            self.workers = raster::Workers::new(threads);
+        }
+    }
+
+    /// The number of threads draws run on.
+    pub fn threads(&self) -> usize {
+        self.workers.threads()
     }
 
     /// Width of the default framebuffer.

@@ -235,3 +235,144 @@ fn draw_errors() {
     ctx.read_pixels(0, 0, 1, 1, GL_RGBA, 0x1234, &mut [0; 4]);
     assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
 }
+
+/// A scene drawn through the GL API with `threads` draw threads: color,
+/// depth and stencil bytes, plus any draw error.
+fn threaded_scene(threads: usize) -> (Vec<u8>, Vec<u8>, Vec<u8>, Option<String>) {
+    let (w, h) = (150, 130);
+    let mut ctx = Context::new(w, h);
+    ctx.set_threads(threads);
+    assert_eq!(ctx.threads(), threads);
+    ctx.clear_color(0.2, 0.1, 0.3, 1.0);
+    ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+
+    // Overlapping blended triangles in perspective, depth-tested, counted
+    // in the stencil buffer (fixed function, immediate mode).
+    ctx.enable(GL_DEPTH_TEST);
+    ctx.enable(GL_BLEND);
+    ctx.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    ctx.enable(GL_STENCIL_TEST);
+    ctx.stencil_func(GL_ALWAYS, 0, 0xff);
+    ctx.stencil_op(GL_KEEP, GL_DECR, GL_INCR);
+    let mut seed = 99u32;
+    let mut rnd = move || {
+        seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12_345);
+        (seed >> 8) as f32 / (1u32 << 24) as f32
+    };
+    ctx.begin(GL_TRIANGLES);
+    for _ in 0..40 * 3 {
+        ctx.color_4f(rnd(), rnd(), rnd(), 0.3 + 0.6 * rnd());
+        let wc = 0.5 + 1.5 * rnd();
+        let (x, y, z) = (rnd() * 2.4 - 1.2, rnd() * 2.4 - 1.2, rnd() * 2.0 - 1.0);
+        ctx.vertex_4f(x * wc, y * wc, z * wc, wc);
+    }
+    ctx.end();
+    ctx.disable(GL_STENCIL_TEST);
+
+    // A mipmapped checkerboard on a quad in perspective, trilinear.
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    let texels: Vec<u8> = (0..32 * 32)
+        .flat_map(|i| {
+            let on = ((i % 32) / 4 + (i / 32) / 4) % 2 == 0;
+            if on {
+                [250, 40, 10, 255]
+            } else {
+                [20, 200, 90, 160]
+            }
+        })
+        .collect();
+    ctx.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        32,
+        32,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    ctx.generate_mipmap_ext(GL_TEXTURE_2D);
+    ctx.tex_parameteri(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        GL_LINEAR_MIPMAP_LINEAR as i32,
+    );
+    program(
+        &mut ctx,
+        Some("void main() { gl_Position = gl_Vertex; gl_TexCoord[0] = gl_MultiTexCoord0; }"),
+        Some(
+            "uniform sampler2D s;\n\
+             void main() { gl_FragColor = texture2D(s, gl_TexCoord[0].xy); }",
+        ),
+    );
+    ctx.depth_func(GL_LEQUAL);
+    ctx.begin(GL_QUADS);
+    for (x, y, wc, s, tc) in [
+        (-0.9f32, -0.8f32, 0.4f32, 0.0f32, 0.0f32),
+        (0.95, -0.9, 1.0, 5.0, 0.0),
+        (0.8, 0.9, 3.0, 5.0, 5.0),
+        (-0.7, 0.85, 1.5, 0.0, 5.0),
+    ] {
+        ctx.multi_tex_coord_4f(GL_TEXTURE0, s, tc, 0.0, 1.0);
+        ctx.vertex_4f(x * wc, y * wc, 0.1 * wc, wc);
+    }
+    ctx.end();
+
+    // Derivatives and discard, additive.
+    program(
+        &mut ctx,
+        Some("void main() { gl_Position = gl_Vertex; gl_TexCoord[0] = gl_MultiTexCoord0; }"),
+        Some(
+            "void main() {\n\
+               vec2 t = gl_TexCoord[0].xy;\n\
+               vec2 d = vec2(dFdx(t.x * t.y), dFdy(t.x * t.x));\n\
+               if (fract(t.x * 5.0 + t.y * 2.0) < 0.4) discard;\n\
+               gl_FragColor = vec4(abs(d) * 30.0, fwidth(t.y) * 40.0, 0.6);\n\
+             }",
+        ),
+    );
+    ctx.disable(GL_DEPTH_TEST);
+    ctx.blend_func(GL_SRC_ALPHA, GL_ONE);
+    ctx.begin(GL_TRIANGLE_FAN);
+    for (x, y, s, tc) in [
+        (0.0f32, 0.0f32, 1.0f32, 1.0f32),
+        (-1.0, -0.5, 0.0, 0.0),
+        (0.6, -1.0, 2.0, 0.0),
+        (1.0, 0.7, 3.0, 2.0),
+        (-0.3, 1.0, 0.0, 3.0),
+    ] {
+        ctx.multi_tex_coord_4f(GL_TEXTURE0, s * s, tc, 0.0, 1.0);
+        ctx.vertex_2f(x, y);
+    }
+    ctx.end();
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    let error = ctx.take_draw_error();
+
+    let n = (w * h) as usize;
+    let mut color = vec![0u8; n * 4];
+    ctx.read_pixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, &mut color);
+    let mut depth = vec![0u8; n * 4];
+    ctx.read_pixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, &mut depth);
+    let mut stencil = vec![0u8; n];
+    ctx.read_pixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &mut stencil);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    (color, depth, stencil, error)
+}
+
+#[test]
+fn images_are_identical_whatever_the_thread_count() {
+    let one = threaded_scene(1);
+    assert_eq!(one.3, None);
+    let distinct: std::collections::BTreeSet<&[u8]> = one.0.chunks(4).collect();
+    assert!(distinct.len() > 300, "{} colors", distinct.len());
+    assert!(one.2.iter().any(|&s| s >= 2), "triangles overlap");
+    for threads in [2, 4] {
+        let many = threaded_scene(threads);
+        assert!(one.0 == many.0, "color differs with {threads} threads");
+        assert!(one.1 == many.1, "depth differs with {threads} threads");
+        assert!(one.2 == many.2, "stencil differs with {threads} threads");
+        assert_eq!(one.3, many.3);
+    }
+}

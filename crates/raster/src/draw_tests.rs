@@ -3,10 +3,12 @@
 use crate::ex::{Batch, ExecError, Interface, Slot, Textures, LANES};
 use crate::state::*;
 use crate::texture::TextureUnits;
-use crate::{draw_stages, ColorFormat, DrawError, Framebuffer, Mode, ShaderStage, VertexFetch};
+use crate::{
+    draw_stages, ColorFormat, DrawError, Framebuffer, Mode, ShaderStage, VertexFetch, Workers,
+};
 use glsl::types::{Base, Scalar, Type};
 
-type RunFn = dyn Fn(&mut Batch) -> Result<(), ExecError>;
+type RunFn = dyn Fn(&mut Batch) -> Result<(), ExecError> + Send + Sync;
 
 struct Stage {
     iface: Interface,
@@ -163,6 +165,7 @@ fn run(
 ) -> Result<(), DrawError> {
     let idx: Vec<u32> = (0..v.pos.len() as u32).collect();
     draw_stages(
+        &Workers::inline(),
         fb,
         st,
         &pass_vs(),
@@ -883,6 +886,7 @@ fn garbage_geometry_does_not_panic() {
         let mut fb = Framebuffer::new(9, 7, ColorFormat::Rgba8, true, true);
         let idx: Vec<u32> = (0..n as u32).chain([u32::MAX, 0]).collect();
         let _ = draw_stages(
+            &Workers::new(1 + round % 3),
             &mut fb,
             &st,
             &pass_vs(),

@@ -197,3 +197,261 @@ fn textured_quad_with_implicit_lod() {
         assert!(px.iter().all(|p| *p == want), "k = {k}: {:?}", &px[..8]);
     }
 }
+
+/// Attributes by name for [`scene`]: `pos` (clip-space xyzw), `col`, `tc`.
+struct SceneAttribs {
+    names: Vec<String>,
+    pos: Vec<[f32; 4]>,
+    col: Vec<[f32; 4]>,
+    tc: Vec<[f32; 4]>,
+}
+
+impl VertexFetch for SceneAttribs {
+    fn fetch(&self, slot: usize, v: u32, out: &mut [f32; 4]) {
+        let src = match self.names.get(slot).map(String::as_str) {
+            Some("pos") => &self.pos,
+            Some("col") => &self.col,
+            Some("tc") => &self.tc,
+            _ => return,
+        };
+        if let Some(value) = src.get(v as usize) {
+            *out = *value;
+        }
+    }
+}
+
+/// Everything a scene leaves behind: color bytes, depth, stencil and the
+/// draw errors as text.
+type SceneResult = (Vec<[u8; 4]>, Vec<f32>, Vec<u8>, Vec<String>);
+
+/// A scene over several tiles (200×150: partial tiles on two sides):
+/// overlapping blended, depth-tested, stencil-counting triangles in
+/// perspective; a mipmapped, trilinear-filtered textured quad; a shader
+/// with derivatives and discard; and a draw stopped by the loop budget in
+/// some tiles only.
+fn scene(workers: &crate::Workers) -> SceneResult {
+    let (w, h) = (200u32, 150u32);
+    let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, true);
+    fb.clear_color(&[0], [0.1, 0.2, 0.3, 1.0], [true; 4], None);
+    fb.clear_depth(1.0, true, None);
+    let mut errors = Vec::new();
+    let names = |k: &Kernel| -> Vec<String> {
+        k.interface()
+            .inputs
+            .iter()
+            .map(|s| s.name.clone())
+            .collect()
+    };
+    let base = PipelineState {
+        viewport: Rect::new(0, 0, w as i32, h as i32),
+        ..PipelineState::default()
+    };
+    let draw_all = |fb: &mut Framebuffer,
+                    st: &PipelineState,
+                    (vs, fs): &(Kernel, Kernel),
+                    fsu: &[u32],
+                    fetch: &SceneAttribs,
+                    units: &TextureUnits| {
+        let idx: Vec<u32> = (0..fetch.pos.len() as u32).collect();
+        crate::draw_on(
+            workers,
+            fb,
+            st,
+            vs,
+            &[],
+            fs,
+            fsu,
+            Mode::Triangles,
+            &idx,
+            fetch,
+            units,
+        )
+        .err()
+        .map(|e| e.to_string())
+    };
+    let no_textures = TextureUnits::default();
+
+    // 1. Blended, depth-tested triangles with a stencil count.
+    let flat = program(
+        "attribute vec4 pos; attribute vec4 col; varying vec4 c;\n\
+         void main() { gl_Position = pos; c = col; }",
+        "varying vec4 c; void main() { gl_FragColor = c; }",
+    );
+    let mut seed = 0x1234_5678u32;
+    let mut rnd = move || {
+        seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+        (seed >> 8) as f32 / (1u32 << 24) as f32
+    };
+    let mut tris = SceneAttribs {
+        names: names(&flat.0),
+        pos: Vec::new(),
+        col: Vec::new(),
+        tc: Vec::new(),
+    };
+    for _ in 0..60 * 3 {
+        let wc = 0.5 + 1.5 * rnd();
+        let (x, y, z) = (rnd() * 2.4 - 1.2, rnd() * 2.4 - 1.2, rnd() * 2.0 - 1.0);
+        tris.pos.push([x * wc, y * wc, z * wc, wc]);
+        tris.col.push([rnd(), rnd(), rnd(), 0.3 + 0.6 * rnd()]);
+    }
+    let mut st = base.clone();
+    st.depth_test = Some(CompareFunc::Less);
+    st.blend = Some(Blend {
+        src_rgb: BlendFactor::SrcAlpha,
+        dst_rgb: BlendFactor::OneMinusSrcAlpha,
+        src_alpha: BlendFactor::One,
+        dst_alpha: BlendFactor::OneMinusSrcAlpha,
+        ..Blend::default()
+    });
+    let count = StencilFace {
+        depth_pass: StencilOp::Incr,
+        depth_fail: StencilOp::Decr,
+        ..StencilFace::default()
+    };
+    st.stencil = Some(StencilState {
+        front: count,
+        back: count,
+    });
+    errors.extend(draw_all(&mut fb, &st, &flat, &[], &tris, &no_textures));
+
+    // 2. A textured quad in perspective, trilinear mipmapping.
+    let textured = program(
+        "attribute vec4 pos; attribute vec4 tc; varying vec2 t;\n\
+         void main() { gl_Position = pos; t = tc.xy; }",
+        "varying vec2 t; uniform sampler2D s;\n\
+         void main() { gl_FragColor = texture2D(s, t) * vec4(1.0, 1.0, 1.0, 0.8); }",
+    );
+    let mut levels = Vec::new();
+    let mut n = 16u32;
+    loop {
+        let texels = (0..n * n)
+            .map(|i| {
+                let (x, y) = (i % n, i / n);
+                let on = ((x + y) % 2) as f32;
+                [on, 1.0 - on, n as f32 / 16.0, 1.0]
+            })
+            .collect();
+        levels.push(Image::new(n, n, 1, texels));
+        if n == 1 {
+            break;
+        }
+        n /= 2;
+    }
+    let mut tex = Texture::new(TextureTarget::Tex2D, levels);
+    tex.min_filter = MinFilter::LinearMipmapLinear;
+    tex.mag_filter = MagFilter::Linear;
+    let units = TextureUnits {
+        units: vec![TextureUnit {
+            tex_2d: Some(Arc::new(tex)),
+            ..TextureUnit::default()
+        }],
+    };
+    let corners = [
+        ([-0.9f32, -0.8], 0.4f32, [0.0f32, 0.0]),
+        ([0.95, -0.9], 1.0, [6.0, 0.0]),
+        ([0.8, 0.9], 3.0, [6.0, 6.0]),
+        ([-0.7, 0.85], 1.5, [0.0, 6.0]),
+    ];
+    let mut quad = SceneAttribs {
+        names: names(&textured.0),
+        pos: Vec::new(),
+        col: Vec::new(),
+        tc: Vec::new(),
+    };
+    for i in [0, 1, 2, 0, 2, 3] {
+        let (p, wc, t) = corners[i];
+        quad.pos.push([p[0] * wc, p[1] * wc, 0.2 * wc, wc]);
+        quad.tc.push([t[0], t[1], 0.0, 1.0]);
+    }
+    let mut st = base.clone();
+    st.depth_test = Some(CompareFunc::LessEqual);
+    st.blend = Some(Blend {
+        src_rgb: BlendFactor::SrcAlpha,
+        dst_rgb: BlendFactor::OneMinusSrcAlpha,
+        ..Blend::default()
+    });
+    let fsu = words(&textured.1, &[("s", &[0])]);
+    errors.extend(draw_all(&mut fb, &st, &textured, &fsu, &quad, &units));
+
+    // 3. Derivatives and discard, additive blending, no depth test.
+    let deriv = program(
+        "attribute vec4 pos; attribute vec4 tc; varying vec2 t;\n\
+         void main() { gl_Position = pos; t = tc.xy; }",
+        "varying vec2 t;\n\
+         void main() {\n\
+           vec2 d = vec2(dFdx(t.x * t.y), dFdy(t.x * t.x));\n\
+           if (fract(t.x * 7.0 + t.y * 3.0) < 0.3) discard;\n\
+           gl_FragColor = vec4(abs(d) * 40.0, fwidth(t.x) * 50.0, 0.5);\n\
+         }",
+    );
+    quad.names = names(&deriv.0);
+    let mut st = base.clone();
+    st.blend = Some(Blend {
+        dst_rgb: BlendFactor::One,
+        ..Blend::default()
+    });
+    errors.extend(draw_all(&mut fb, &st, &deriv, &[], &quad, &no_textures));
+
+    // 4. A loop that exceeds the budget in the top-right tiles only.
+    let mut looping = program(
+        "attribute vec4 pos; void main() { gl_Position = pos; }",
+        "void main() {\n\
+           int n = gl_FragCoord.x > 150.0 && gl_FragCoord.y > 70.0 ? 100000 : 3;\n\
+           float acc = 0.0;\n\
+           for (int i = 0; i < n; i++) acc += 0.125;\n\
+           gl_FragColor = vec4(acc, 0.0, 1.0, 1.0);\n\
+         }",
+    );
+    looping.1.set_loop_budget(1000);
+    let mut full = SceneAttribs {
+        names: names(&looping.0),
+        pos: QUAD.iter().map(|p| [p[0], p[1], 0.0, 1.0]).collect(),
+        col: Vec::new(),
+        tc: Vec::new(),
+    };
+    full.names = names(&looping.0);
+    errors.extend(draw_all(&mut fb, &base, &looping, &[], &full, &no_textures));
+
+    (
+        fb.read_pixels_u8(0, 0, 0, w, h),
+        fb.read_depth(0, 0, w, h),
+        fb.read_stencil(0, 0, w, h),
+        errors,
+    )
+}
+
+#[test]
+fn images_are_identical_whatever_the_thread_count() {
+    let one = scene(&crate::Workers::new(1));
+    let (color, _, stencil, errors) = &one;
+    // The scene is not trivial: the loop draw failed in tile (2, 1) (the
+    // first in tile order), earlier tiles were completed, later ones kept
+    // what the earlier draws left.
+    assert_eq!(errors.len(), 1, "{errors:?}");
+    assert!(
+        errors[0].contains("1000") || errors[0].contains("loop"),
+        "{errors:?}"
+    );
+    let at = |x: usize, y: usize| color[y * 200 + x];
+    assert_eq!(at(10, 10), [96, 0, 255, 255], "tile 0 ran the loop draw");
+    assert_eq!(
+        at(140, 66),
+        [96, 0, 255, 255],
+        "the failing tile wrote before the error"
+    );
+    assert_ne!(
+        at(199, 149)[..3],
+        [96, 0, 255],
+        "tiles after the failure were not drawn"
+    );
+    assert!(stencil.iter().any(|&s| s >= 2), "triangles overlap");
+    let distinct: std::collections::BTreeSet<[u8; 4]> = color.iter().copied().collect();
+    assert!(distinct.len() > 500, "{} colors", distinct.len());
+    for threads in [2, 4] {
+        let many = scene(&crate::Workers::new(threads));
+        assert!(one.0 == many.0, "color differs with {threads} threads");
+        assert!(one.1 == many.1, "depth differs with {threads} threads");
+        assert!(one.2 == many.2, "stencil differs with {threads} threads");
+        assert_eq!(one.3, many.3, "errors differ with {threads} threads");
+    }
+}

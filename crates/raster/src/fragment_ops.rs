@@ -84,9 +84,19 @@ pub(crate) fn early_reject(
 }
 
 /// Runs the per-fragment operations for one fragment and writes the
-/// result. Fragments outside the framebuffer or the scissor box are dropped.
-pub(crate) fn process(fb: &mut Framebuffer, state: &PipelineState, frag: &Fragment) {
-    if frag.x >= fb.width || frag.y >= fb.height {
+/// result. `fb` holds the pixels from `origin` on (a tile of the whole
+/// framebuffer, or all of it with origin (0, 0)); the fragment's x, y are
+/// window coordinates. Fragments outside `fb` or the scissor box are dropped.
+pub(crate) fn process(
+    fb: &mut Framebuffer,
+    origin: (u32, u32),
+    state: &PipelineState,
+    frag: &Fragment,
+) {
+    let (Some(lx), Some(ly)) = (frag.x.checked_sub(origin.0), frag.y.checked_sub(origin.1)) else {
+        return;
+    };
+    if lx >= fb.width || ly >= fb.height {
         return;
     }
     if let Some(sc) = state.scissor {
@@ -99,7 +109,7 @@ pub(crate) fn process(fb: &mut Framebuffer, state: &PipelineState, frag: &Fragme
             return;
         }
     }
-    let index = frag.y as usize * fb.width as usize + frag.x as usize;
+    let index = ly as usize * fb.width as usize + lx as usize;
     let clamp = state.clamp_fragment_color;
 
     // §4.1.4 alpha test on fragment output 0's alpha.
@@ -386,7 +396,12 @@ mod tests {
             }),
             ..PipelineState::default()
         };
-        process(&mut fb, &state, &frag(0, 0, 0.0, [0.5, 0.25, 2.0, -1.0]));
+        process(
+            &mut fb,
+            (0, 0),
+            &state,
+            &frag(0, 0, 0.0, [0.5, 0.25, 2.0, -1.0]),
+        );
         assert_eq!(fb.read_pixels_u8(0, 0, 0, 1, 1), vec![[255, 192, 255, 255]]);
     }
 
@@ -399,7 +414,12 @@ mod tests {
             color_mask: [true, true, false, true],
             ..PipelineState::default()
         };
-        process(&mut fb, &state, &frag(0, 0, 0.0, [1.0, 0.0, 0.0, 0.0]));
+        process(
+            &mut fb,
+            (0, 0),
+            &state,
+            &frag(0, 0, 0.0, [1.0, 0.0, 0.0, 0.0]),
+        );
         assert_eq!(fb.read_pixels_u8(0, 0, 0, 1, 1), vec![[0, 255, 255, 255]]);
     }
 
@@ -425,7 +445,7 @@ mod tests {
                     depth_test: Some(func),
                     ..PipelineState::default()
                 };
-                process(&mut fb, &state, &frag(0, 0, z, [1.0; 4]));
+                process(&mut fb, (0, 0), &state, &frag(0, 0, z, [1.0; 4]));
                 let written = fb.read_pixels_u8(0, 0, 0, 1, 1)[0] == [255; 4];
                 assert_eq!(written, expect[i], "{func:?} {z}");
                 let depth = fb.read_depth(0, 0, 1, 1)[0];
@@ -444,7 +464,7 @@ mod tests {
             depth_mask: false,
             ..PipelineState::default()
         };
-        process(&mut fb, &state, &frag(0, 0, 0.25, [1.0; 4]));
+        process(&mut fb, (0, 0), &state, &frag(0, 0, 0.25, [1.0; 4]));
         assert_eq!(fb.read_depth(0, 0, 1, 1)[0], 1.0);
         assert_eq!(fb.read_pixels_u8(0, 0, 0, 1, 1)[0], [255; 4]);
     }
@@ -488,7 +508,7 @@ mod tests {
             let mut fb = Framebuffer::new(1, 1, ColorFormat::Rgba8, true, true);
             fb.clear_stencil(stored as i32, 0xff, None);
             fb.clear_depth(0.5, true, None);
-            process(&mut fb, &state, &frag(0, 0, z, [1.0; 4]));
+            process(&mut fb, (0, 0), &state, &frag(0, 0, z, [1.0; 4]));
             (
                 fb.read_stencil(0, 0, 1, 1)[0],
                 fb.read_pixels_u8(0, 0, 0, 1, 1)[0][0],
@@ -506,7 +526,7 @@ mod tests {
         fb.clear_depth(1.0, true, None);
         let mut f = frag(0, 0, 0.25, [1.0; 4]);
         f.back_facing = true;
-        process(&mut fb, &state, &f);
+        process(&mut fb, (0, 0), &state, &f);
         assert_eq!(fb.read_stencil(0, 0, 1, 1)[0], 0x20);
         assert_eq!(fb.read_pixels_u8(0, 0, 0, 1, 1)[0][0], 255);
     }
@@ -519,10 +539,20 @@ mod tests {
             scissor: Some(crate::state::Rect::new(1, 0, 1, 1)),
             ..PipelineState::default()
         };
-        process(&mut fb, &state, &frag(0, 0, 0.0, [1.0; 4]));
-        process(&mut fb, &state, &frag(1, 0, 0.0, [1.0, 1.0, 1.0, 0.5]));
+        process(&mut fb, (0, 0), &state, &frag(0, 0, 0.0, [1.0; 4]));
+        process(
+            &mut fb,
+            (0, 0),
+            &state,
+            &frag(1, 0, 0.0, [1.0, 1.0, 1.0, 0.5]),
+        );
         assert_eq!(fb.read_pixels_u8(0, 0, 0, 2, 1), vec![[0; 4], [0; 4]]);
-        process(&mut fb, &state, &frag(1, 0, 0.0, [1.0, 1.0, 1.0, 0.6]));
+        process(
+            &mut fb,
+            (0, 0),
+            &state,
+            &frag(1, 0, 0.0, [1.0, 1.0, 1.0, 0.6]),
+        );
         assert_eq!(fb.read_pixels_u8(0, 1, 0, 1, 1), vec![[255, 255, 255, 153]]);
     }
 

@@ -231,6 +231,87 @@ impl Framebuffer {
         }
     }
 
+    /// A copy of the pixels in `[x0, x1) × [y0, y1)` (clipped to the
+    /// buffer) as a framebuffer of its own, for one tile task.
+    pub(crate) fn copy_tile(&self, x0: u32, y0: u32, x1: u32, y1: u32) -> Framebuffer {
+        let (x1, y1) = (x1.min(self.width), y1.min(self.height));
+        let (x0, y0) = (x0.min(x1), y0.min(y1));
+        let (w, h) = ((x1 - x0) as usize, (y1 - y0) as usize);
+        let width = self.width as usize;
+        fn rows<T: Copy>(src: &[T], width: usize, x0: u32, y0: u32, w: usize, h: usize) -> Vec<T> {
+            let mut out = Vec::with_capacity(w * h);
+            for y in y0 as usize..y0 as usize + h {
+                let start = y * width + x0 as usize;
+                if let Some(row) = src.get(start..start + w) {
+                    out.extend_from_slice(row);
+                }
+            }
+            out
+        }
+        Framebuffer {
+            width: w as u32,
+            height: h as u32,
+            color: self
+                .color
+                .iter()
+                .map(|c| match c {
+                    ColorBuffer::Rgba8(v) => ColorBuffer::Rgba8(rows(v, width, x0, y0, w, h)),
+                    ColorBuffer::Rgba32F(v) => ColorBuffer::Rgba32F(rows(v, width, x0, y0, w, h)),
+                })
+                .collect(),
+            depth: self.depth.as_ref().map(|d| rows(d, width, x0, y0, w, h)),
+            stencil: self.stencil.as_ref().map(|s| rows(s, width, x0, y0, w, h)),
+        }
+    }
+
+    /// Writes `tile` (from [`Framebuffer::copy_tile`]) back at (x0, y0).
+    /// Parts that do not fit, or buffers that do not match, are skipped.
+    pub(crate) fn store_tile(&mut self, x0: u32, y0: u32, tile: &Framebuffer) {
+        let width = self.width as usize;
+        let height = self.height as usize;
+        fn rows<T: Copy>(
+            dst: &mut [T],
+            width: usize,
+            height: usize,
+            x0: u32,
+            y0: u32,
+            src: &[T],
+            w: usize,
+        ) {
+            if w == 0 || x0 as usize + w > width {
+                return;
+            }
+            for (r, row) in src.chunks(w).enumerate() {
+                let y = y0 as usize + r;
+                if y >= height {
+                    return;
+                }
+                let start = y * width + x0 as usize;
+                if let Some(d) = dst.get_mut(start..start + row.len()) {
+                    d.copy_from_slice(row);
+                }
+            }
+        }
+        let w = tile.width as usize;
+        for (dst, src) in self.color.iter_mut().zip(&tile.color) {
+            match (dst, src) {
+                (ColorBuffer::Rgba8(d), ColorBuffer::Rgba8(s)) => {
+                    rows(d, width, height, x0, y0, s, w)
+                }
+                (ColorBuffer::Rgba32F(d), ColorBuffer::Rgba32F(s)) => {
+                    rows(d, width, height, x0, y0, s, w)
+                }
+                _ => {}
+            }
+        }
+        if let (Some(d), Some(s)) = (self.depth.as_mut(), tile.depth.as_ref()) {
+            rows(d, width, height, x0, y0, s, w);
+        }
+        if let (Some(d), Some(s)) = (self.stencil.as_mut(), tile.stencil.as_ref()) {
+            rows(d, width, height, x0, y0, s, w);
+        }
+    }
+
     /// Reads a `w`×`h` block of color buffer `buffer` starting at (x, y),
     /// bottom row first, as floats. Pixels outside the buffer (or of a
     /// missing buffer) read as zeros.
@@ -313,6 +394,31 @@ mod tests {
         assert_eq!(depth_to_fixed(1.0), DEPTH_MAX);
         assert_eq!(depth_to_fixed(0.5), 1 << 23);
         assert_eq!(fixed_to_depth(DEPTH_MAX), 1.0);
+    }
+
+    #[test]
+    fn tiles_copy_out_and_back() {
+        let mut fb = Framebuffer::new(5, 4, ColorFormat::Rgba8, true, true);
+        fb.clear_color(&[0], [1.0; 4], [true; 4], Some(Rect::new(1, 1, 2, 2)));
+        let mut tile = fb.copy_tile(1, 1, 3, 9);
+        assert_eq!((tile.width, tile.height), (2, 3));
+        assert_eq!(tile.read_pixels_u8(0, 0, 0, 2, 2), vec![[255; 4]; 4]);
+        assert_eq!(tile.read_pixels_u8(0, 0, 2, 2, 1), vec![[0; 4]; 2]);
+        tile.clear_color(
+            &[0],
+            [0.0, 1.0, 0.0, 1.0],
+            [true; 4],
+            Some(Rect::new(1, 0, 1, 1)),
+        );
+        tile.clear_depth(1.0, true, None);
+        tile.clear_stencil(7, 0xff, None);
+        fb.store_tile(1, 1, &tile);
+        assert_eq!(fb.read_pixels_u8(0, 2, 1, 1, 1), vec![[0, 255, 0, 255]]);
+        assert_eq!(fb.read_pixels_u8(0, 1, 1, 1, 1), vec![[255; 4]]);
+        assert_eq!(fb.read_depth(0, 0, 5, 1), vec![0.0; 5]);
+        assert_eq!(fb.read_depth(1, 1, 3, 1), vec![1.0, 1.0, 0.0]);
+        assert_eq!(fb.read_stencil(2, 3, 1, 1), vec![7]);
+        assert_eq!(fb.read_stencil(3, 3, 1, 1), vec![0]);
     }
 
     #[test]

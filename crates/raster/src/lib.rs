@@ -16,6 +16,21 @@
 //! without fused operations, `glsl::math` for the few functions needed,
 //! fixed iteration orders.
 //!
+//! # Threads
+//! [`draw_on`] runs on a [`Workers`] (1 thread = inline on the caller; more
+//! = a rayon pool owned by the `Workers`, no global state). Vertex batches
+//! of `exec::LANES` vertices are tasks writing their own vertices' outputs;
+//! primitive setup is sequential; each 64×64 tile is a task that owns a
+//! copy of its pixels and runs its primitives in draw order, and the tiles
+//! are written back in tile order. No value is combined across tasks, and
+//! textures are read-only, so the framebuffer is bit-identical whatever the
+//! thread count. A shader error (`exec::ExecError`, e.g. the loop budget)
+//! ends the draw as running the tiles one after the other would: tiles
+//! before the first failing tile (in row-major tile order) are complete,
+//! that tile keeps the fragments written before the error, later tiles are
+//! untouched, and that tile's error is returned. (A vertex-stage error
+//! draws nothing and reports the first failing vertex batch's error.)
+//!
 //! Vertex → fragment linkage is by name (user varyings, gl_TexCoord,
 //! gl_FogFragCoord); gl_Color / gl_SecondaryColor come from
 //! gl_FrontColor / gl_FrontSecondaryColor, or from the back colors for
@@ -52,6 +67,7 @@ mod rasterize;
 mod shade;
 mod state;
 mod texture;
+mod workers;
 
 #[cfg(test)]
 mod e2e_tests;
@@ -71,8 +87,10 @@ pub use texture::{
     DepthTextureMode, Image, MagFilter, MinFilter, Texture, TextureTarget, TextureUnit,
     TextureUnits, Wrap,
 };
+pub use workers::{Workers, MAX_THREADS};
 
-/// Why a draw stopped. Fragments written before the error stay written.
+/// Why a draw stopped. Fragments written before the error stay written
+/// (see the crate documentation for which, with several threads).
 #[derive(Debug, thiserror::Error)]
 pub enum DrawError {
     #[error(transparent)]
@@ -80,8 +98,9 @@ pub enum DrawError {
 }
 
 /// A shader stage the pipeline can run: `exec::Kernel`, or anything else
-/// with the same interface (tests use hand-written stages).
-pub trait ShaderStage {
+/// with the same interface (tests use hand-written stages). Stages run on
+/// several threads at once when the draw does.
+pub trait ShaderStage: Sync {
     fn interface(&self) -> &ex::Interface;
     fn run(
         &self,
@@ -106,7 +125,8 @@ impl ShaderStage for ex::Kernel {
 }
 
 /// Draws `indices` (vertex numbers passed to `fetch`) as `mode` primitives
-/// into `fb`. See the crate documentation for the pipeline.
+/// into `fb` on the calling thread. See the crate documentation for the
+/// pipeline; [`draw_on`] runs it on several threads with the same result.
 #[allow(clippy::too_many_arguments)]
 pub fn draw(
     fb: &mut Framebuffer,
@@ -118,9 +138,41 @@ pub fn draw(
     mode: Mode,
     indices: &[u32],
     fetch: &dyn VertexFetch,
-    textures: &dyn ex::Textures,
+    textures: &(dyn ex::Textures + Sync),
+) -> Result<(), DrawError> {
+    draw_on(
+        &Workers::inline(),
+        fb,
+        state,
+        vs,
+        vs_uniforms,
+        fs,
+        fs_uniforms,
+        mode,
+        indices,
+        fetch,
+        textures,
+    )
+}
+
+/// [`draw`] on `workers`' threads. The framebuffer (and the error, if any)
+/// is bit-identical whatever the number of threads.
+#[allow(clippy::too_many_arguments)]
+pub fn draw_on(
+    workers: &Workers,
+    fb: &mut Framebuffer,
+    state: &PipelineState,
+    vs: &ex::Kernel,
+    vs_uniforms: &[u32],
+    fs: &ex::Kernel,
+    fs_uniforms: &[u32],
+    mode: Mode,
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    textures: &(dyn ex::Textures + Sync),
 ) -> Result<(), DrawError> {
     draw_stages(
+        workers,
         fb,
         state,
         vs,

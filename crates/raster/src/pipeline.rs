@@ -5,17 +5,21 @@
 use std::collections::HashMap;
 
 use crate::clip::{ClipVertex, Planes};
-use crate::ex::{Interface, Textures, LANES};
+use crate::ex::{ExecError, Interface, Textures, LANES};
 use crate::framebuffer::Framebuffer;
 use crate::linkage::{FsLayout, VsLayout};
 use crate::rasterize::{PixelRect, Shape, WinVertex};
 use crate::shade::{new_batch, FragmentStage, Prim};
 use crate::state::{CullFace, FrontFace, PipelineState, PolygonMode};
+use crate::workers::Workers;
 use crate::{DrawError, ShaderStage};
 
 /// Tile size: fragments are produced tile by tile, each tile seeing the
-/// primitives in draw order, so tiles can later run in parallel.
+/// primitives in draw order; tiles run in parallel.
 pub const TILE: i64 = 64;
+
+/// Vertex batches (of `LANES` vertices) one worker takes at a time.
+const VERTEX_CHUNKS_PER_TASK: usize = 4;
 
 /// Largest point size used (points are clamped to [1, MAX_POINT_SIZE]).
 pub const MAX_POINT_SIZE: f32 = 2048.0;
@@ -24,8 +28,9 @@ pub const MAX_POINT_SIZE: f32 = 2048.0;
 /// rasterizer's fixed-point range.
 const VIEWPORT_LIMIT: i64 = 1 << 19;
 
-/// Supplies vertex attributes.
-pub trait VertexFetch {
+/// Supplies vertex attributes (from several threads at once when the draw
+/// runs on more than one).
+pub trait VertexFetch: Sync {
     /// Writes the attribute of vertex-kernel input slot `input_slot`
     /// (an index into `Interface::inputs`) for `vertex_index`. `out` starts
     /// as (0, 0, 0, 1); components the array does not provide stay so.
@@ -133,11 +138,14 @@ pub(crate) fn assemble(mode: Mode, count: usize, mut emit: impl FnMut(Assembled)
 
 /// Runs the vertex kernel once per distinct index. Returns, per position
 /// in `indices`, the vertex number, and the outputs of every vertex
-/// (`layout.outputs` values each).
+/// (`layout.outputs` values each). Batches of `LANES` vertices run as
+/// separate tasks on `workers`; each writes only its own vertices.
+#[allow(clippy::too_many_arguments)]
 fn run_vertices(
+    workers: &Workers,
     vs: &dyn ShaderStage,
     uniforms: &[u32],
-    textures: &dyn Textures,
+    textures: &(dyn Textures + Sync),
     indices: &[u32],
     fetch: &dyn VertexFetch,
     layout: &VsLayout,
@@ -161,8 +169,8 @@ fn run_vertices(
         .max()
         .unwrap_or(0);
     let stride = layout.outputs;
-    let mut outputs = vec![0.0f32; unique.len() * stride];
-    for (chunk_no, chunk) in unique.chunks(LANES).enumerate() {
+    let chunks: Vec<&[u32]> = unique.chunks(LANES).collect();
+    let run_chunk = |chunk: &[u32]| -> Result<Vec<f32>, crate::ex::ExecError> {
         let mut batch = new_batch(n_in, stride);
         for (lane, &ix) in chunk.iter().enumerate() {
             for (slot_no, slot) in iface.inputs.iter().enumerate() {
@@ -189,23 +197,41 @@ fn run_vertices(
             (1u32 << chunk.len()) - 1
         };
         vs.run(&mut batch, uniforms, textures)?;
+        let mut out = vec![0.0f32; chunk.len() * stride];
         for lane in 0..chunk.len() {
-            let base = (chunk_no * LANES + lane) * stride;
+            let base = lane * stride;
             for (c, comp) in batch.outputs.iter().enumerate().take(stride) {
-                if let Some(dst) = outputs.get_mut(base + c) {
+                if let Some(dst) = out.get_mut(base + c) {
                     *dst = comp[lane];
                 }
             }
             if clamp_colors {
                 for &(o, n) in &layout.colors {
                     for c in 0..n {
-                        if let Some(v) = outputs.get_mut(base + o + c) {
+                        if let Some(v) = out.get_mut(base + o + c) {
                             *v = if *v > 0.0 { v.min(1.0) } else { 0.0 };
                         }
                     }
                 }
             }
         }
+        Ok(out)
+    };
+    let results = workers.map(chunks.len(), VERTEX_CHUNKS_PER_TASK, |i, cancel| {
+        if cancel.skip(i) {
+            return None;
+        }
+        let r = run_chunk(chunks.get(i).copied().unwrap_or(&[]));
+        if r.is_err() {
+            cancel.fail(i);
+        }
+        Some(r)
+    });
+    let mut outputs = Vec::with_capacity(unique.len() * stride);
+    // Chunks up to the first failure all ran: the first error in order is
+    // the same whatever the thread count.
+    for r in results.into_iter().flatten() {
+        outputs.extend(r?);
     }
     Ok((vertex_of, outputs))
 }
@@ -414,9 +440,10 @@ impl Setup<'_> {
     }
 }
 
-/// [`crate::draw`] over any [`ShaderStage`] pair.
+/// [`crate::draw_on`] over any [`ShaderStage`] pair.
 #[allow(clippy::too_many_arguments)]
 pub fn draw_stages(
+    workers: &Workers,
     fb: &mut Framebuffer,
     state: &PipelineState,
     vs: &dyn ShaderStage,
@@ -426,11 +453,12 @@ pub fn draw_stages(
     mode: Mode,
     indices: &[u32],
     fetch: &dyn VertexFetch,
-    textures: &dyn Textures,
+    textures: &(dyn Textures + Sync),
 ) -> Result<(), DrawError> {
     let vs_layout = VsLayout::new(vs.interface());
     let fs_layout = FsLayout::new(vs.interface(), fs.interface(), state.two_sided_color);
     let (vertex_of, outputs) = run_vertices(
+        workers,
         vs,
         vs_uniforms,
         textures,
@@ -505,21 +533,93 @@ pub fn draw_stages(
             .collect(),
         early: fs_layout.frag_depth.is_none(),
     };
+    shade_tiles(workers, fb, &stage, &prims)
+}
+
+/// What one tile task produced.
+enum TileResult {
+    /// The tile's pixels after its primitives, and the error that stopped
+    /// it, if one did (the pixels are then those written before it).
+    Ran(Framebuffer, Option<ExecError>),
+    /// Not run or abandoned: an earlier tile failed.
+    Skipped,
+}
+
+/// The fragment stage over 64×64 tiles. Each tile is a task that owns a
+/// copy of its pixels and runs the primitives overlapping it in draw
+/// order; the copies are written back in tile order. When tiles fail, the
+/// result is that of running the tiles in order and stopping at the first
+/// failure: earlier tiles complete, the failing tile keeps what it wrote
+/// before the error, later tiles are left untouched, and that error is
+/// returned.
+fn shade_tiles(
+    workers: &Workers,
+    fb: &mut Framebuffer,
+    stage: &FragmentStage,
+    prims: &[Prim],
+) -> Result<(), DrawError> {
     let (w, h) = (fb.width as i64, fb.height as i64);
-    let mut ty = 0;
-    while ty < h {
-        let mut tx = 0;
-        while tx < w {
-            let tile = (tx, ty, (tx + TILE).min(w), (ty + TILE).min(h));
-            for prim in &prims {
-                let b = prim.bounds;
-                if b.0 < tile.2 && b.2 > tile.0 && b.1 < tile.3 && b.3 > tile.1 {
-                    stage.shade(fb, prim, tile)?;
+    let tiles_x = (w + TILE - 1) / TILE;
+    let tiles_y = (h + TILE - 1) / TILE;
+    let n_tiles = (tiles_x * tiles_y).max(0) as usize;
+    // Bins: the primitives overlapping each tile, in draw order.
+    let mut bins: Vec<Vec<u32>> = vec![Vec::new(); n_tiles];
+    for (p, prim) in prims.iter().enumerate() {
+        let b = prim.bounds;
+        let (x0, y0) = (b.0.clamp(0, w), b.1.clamp(0, h));
+        let (x1, y1) = (b.2.clamp(x0, w), b.3.clamp(y0, h));
+        if x0 >= x1 || y0 >= y1 {
+            continue;
+        }
+        for ty in y0 / TILE..=(y1 - 1) / TILE {
+            for tx in x0 / TILE..=(x1 - 1) / TILE {
+                if let Some(bin) = bins.get_mut((ty * tiles_x + tx) as usize) {
+                    bin.push(p as u32);
                 }
             }
-            tx += TILE;
         }
-        ty += TILE;
+    }
+    let occupied: Vec<usize> = (0..n_tiles).filter(|&t| !bins[t].is_empty()).collect();
+    let rect = |t: usize| -> PixelRect {
+        let (tx, ty) = (t as i64 % tiles_x.max(1), t as i64 / tiles_x.max(1));
+        let (x, y) = (tx * TILE, ty * TILE);
+        (x, y, (x + TILE).min(w), (y + TILE).min(h))
+    };
+    let source: &Framebuffer = fb;
+    let results = workers.map(occupied.len(), 1, |i, cancel| {
+        if cancel.skip(i) {
+            return TileResult::Skipped;
+        }
+        let Some(&t) = occupied.get(i) else {
+            return TileResult::Skipped;
+        };
+        let r = rect(t);
+        let mut local = source.copy_tile(r.0 as u32, r.1 as u32, r.2 as u32, r.3 as u32);
+        for &p in bins.get(t).map_or(&[][..], |b| &b[..]) {
+            if cancel.skip(i) {
+                return TileResult::Skipped;
+            }
+            let Some(prim) = prims.get(p as usize) else {
+                continue;
+            };
+            if let Err(e) = stage.shade(&mut local, prim, r) {
+                cancel.fail(i);
+                return TileResult::Ran(local, Some(e));
+            }
+        }
+        TileResult::Ran(local, None)
+    });
+    for (i, result) in results.into_iter().enumerate() {
+        let TileResult::Ran(local, error) = result else {
+            // Only tiles after a failed one are skipped.
+            continue;
+        };
+        let Some(&t) = occupied.get(i) else { continue };
+        let r = rect(t);
+        fb.store_tile(r.0 as u32, r.1 as u32, &local);
+        if let Some(e) = error {
+            return Err(e.into());
+        }
     }
     Ok(())
 }

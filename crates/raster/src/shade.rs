@@ -62,7 +62,7 @@ struct Quad {
 pub(crate) struct FragmentStage<'a> {
     pub shader: &'a dyn ShaderStage,
     pub uniforms: &'a [u32],
-    pub textures: &'a dyn Textures,
+    pub textures: &'a (dyn Textures + Sync),
     pub layout: &'a FsLayout,
     pub state: &'a PipelineState,
     /// Per link: flat-shaded (the value of vertex 0 is used as is).
@@ -72,13 +72,15 @@ pub(crate) struct FragmentStage<'a> {
 }
 
 impl FragmentStage<'_> {
-    /// Shades and writes the part of `prim` inside `tile`.
+    /// Shades and writes the part of `prim` inside `tile`. `fb` holds the
+    /// pixels of `tile` only (its origin is `(tile.0, tile.1)`).
     pub fn shade(
         &self,
         fb: &mut Framebuffer,
         prim: &Prim,
         tile: PixelRect,
     ) -> Result<(), ExecError> {
+        let origin = (tile.0.max(0) as u32, tile.1.max(0) as u32);
         let clip = (
             prim.bounds.0.max(tile.0),
             prim.bounds.1.max(tile.1),
@@ -105,7 +107,11 @@ impl FragmentStage<'_> {
                         continue;
                     }
                     let (x, y) = (qx + (k as i64 & 1), qy + (k as i64 >> 1));
-                    let index = y as usize * fb.width as usize + x as usize;
+                    let (lx, ly) = (x - origin.0 as i64, y - origin.1 as i64);
+                    if lx < 0 || ly < 0 || lx >= fb.width as i64 || ly >= fb.height as i64 {
+                        continue;
+                    }
+                    let index = ly as usize * fb.width as usize + lx as usize;
                     let zf = depth_to_fixed(quad.z[k] as f32);
                     if fragment_ops::early_reject(fb, self.state, index, zf, prim.back) {
                         quad.live &= !(1 << k);
@@ -117,17 +123,23 @@ impl FragmentStage<'_> {
             }
             pending.push(quad);
             if pending.len() == LANES / 4 {
-                self.flush(fb, prim, &pending)?;
+                self.flush(fb, origin, prim, &pending)?;
                 pending.clear();
             }
         }
         if !pending.is_empty() {
-            self.flush(fb, prim, &pending)?;
+            self.flush(fb, origin, prim, &pending)?;
         }
         Ok(())
     }
 
-    fn flush(&self, fb: &mut Framebuffer, prim: &Prim, quads: &[Quad]) -> Result<(), ExecError> {
+    fn flush(
+        &self,
+        fb: &mut Framebuffer,
+        origin: (u32, u32),
+        prim: &Prim,
+        quads: &[Quad],
+    ) -> Result<(), ExecError> {
         let layout = self.layout;
         let mut batch = new_batch(layout.inputs, layout.outputs);
         let links = layout.links.len();
@@ -218,7 +230,7 @@ impl FragmentStage<'_> {
                     back_facing: prim.back,
                     colors,
                 };
-                fragment_ops::process(fb, self.state, &frag);
+                fragment_ops::process(fb, origin, self.state, &frag);
             }
         }
         Ok(())
