@@ -540,27 +540,47 @@ fn image_target(target: u32, dims: u32) -> Option<(u32, usize)> {
 /// Largest mipmap level index accepted.
 const MAX_LEVELS: i32 = 14;
 
+/// Reserves `n` names unused in `map`, searching upward from `*next` and
+/// skipping 0, and creates each object with `make` (glGen*, GL 2.1 §2.9).
+fn gen_names<T>(
+    map: &mut BTreeMap<u32, T>,
+    next: &mut u32,
+    n: usize,
+    make: impl Fn() -> T,
+) -> Vec<u32> {
+    (0..n)
+        .map(|_| {
+            while map.contains_key(next) || *next == 0 {
+                *next = next.wrapping_add(1);
+            }
+            let name = *next;
+            map.insert(name, make());
+            *next = next.wrapping_add(1);
+            name
+        })
+        .collect()
+}
+
 impl Context {
+    /// The count of a glGen* call: negative is GL_INVALID_VALUE; at most
+    /// 65536 names per call.
+    fn gen_count(&mut self, n: i32) -> Option<usize> {
+        if n < 0 {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        Some(n.min(1 << 16) as usize)
+    }
+
     // ---- buffers ----
 
     /// glGenBuffers.
     pub fn gen_buffers(&mut self, n: i32) -> Vec<u32> {
-        if n < 0 {
-            self.set_error(GL_INVALID_VALUE);
+        let Some(n) = self.gen_count(n) else {
             return Vec::new();
-        }
+        };
         let o = &mut self.objects;
-        (0..n.min(1 << 16))
-            .map(|_| {
-                while o.buffers.contains_key(&o.next_buffer) || o.next_buffer == 0 {
-                    o.next_buffer = o.next_buffer.wrapping_add(1);
-                }
-                let b = o.next_buffer;
-                o.buffers.insert(b, BufferObj::default());
-                o.next_buffer = o.next_buffer.wrapping_add(1);
-                b
-            })
-            .collect()
+        gen_names(&mut o.buffers, &mut o.next_buffer, n, BufferObj::default)
     }
 
     /// glDeleteBuffers (unbinds them).
@@ -708,22 +728,11 @@ impl Context {
 
     /// glGenTextures.
     pub fn gen_textures(&mut self, n: i32) -> Vec<u32> {
-        if n < 0 {
-            self.set_error(GL_INVALID_VALUE);
+        let Some(n) = self.gen_count(n) else {
             return Vec::new();
-        }
+        };
         let o = &mut self.objects;
-        (0..n.min(1 << 16))
-            .map(|_| {
-                while o.textures.contains_key(&o.next_texture) || o.next_texture == 0 {
-                    o.next_texture = o.next_texture.wrapping_add(1);
-                }
-                let t = o.next_texture;
-                o.textures.insert(t, TextureObj::default());
-                o.next_texture = o.next_texture.wrapping_add(1);
-                t
-            })
-            .collect()
+        gen_names(&mut o.textures, &mut o.next_texture, n, TextureObj::default)
     }
 
     /// glDeleteTextures (bindings revert to 0, attachments are removed).
@@ -1235,22 +1244,16 @@ impl Context {
 
     /// glGenRenderbuffers(EXT).
     pub fn gen_renderbuffers(&mut self, n: i32) -> Vec<u32> {
-        if n < 0 {
-            self.set_error(GL_INVALID_VALUE);
+        let Some(n) = self.gen_count(n) else {
             return Vec::new();
-        }
+        };
         let o = &mut self.objects;
-        (0..n.min(1 << 16))
-            .map(|_| {
-                while o.renderbuffers.contains_key(&o.next_renderbuffer) || o.next_renderbuffer == 0
-                {
-                    o.next_renderbuffer = o.next_renderbuffer.wrapping_add(1);
-                }
-                let r = o.next_renderbuffer;
-                o.renderbuffers.insert(r, RenderbufferObj::default());
-                r
-            })
-            .collect()
+        gen_names(
+            &mut o.renderbuffers,
+            &mut o.next_renderbuffer,
+            n,
+            RenderbufferObj::default,
+        )
     }
 
     /// glGenRenderbuffersEXT.
@@ -1335,21 +1338,16 @@ impl Context {
 
     /// glGenFramebuffers(EXT).
     pub fn gen_framebuffers(&mut self, n: i32) -> Vec<u32> {
-        if n < 0 {
-            self.set_error(GL_INVALID_VALUE);
+        let Some(n) = self.gen_count(n) else {
             return Vec::new();
-        }
+        };
         let o = &mut self.objects;
-        (0..n.min(1 << 16))
-            .map(|_| {
-                while o.framebuffers.contains_key(&o.next_framebuffer) || o.next_framebuffer == 0 {
-                    o.next_framebuffer = o.next_framebuffer.wrapping_add(1);
-                }
-                let f = o.next_framebuffer;
-                o.framebuffers.insert(f, FramebufferObj::new());
-                f
-            })
-            .collect()
+        gen_names(
+            &mut o.framebuffers,
+            &mut o.next_framebuffer,
+            n,
+            FramebufferObj::new,
+        )
     }
 
     /// glGenFramebuffersEXT.

@@ -16,31 +16,11 @@
 use glsl::ir::{ConstScalar, Module, Storage};
 use glsl::types::{ArraySize, Base, Scalar, StructDef, Type};
 
-/// Words a value of `ty` occupies (samplers take one word).
+/// Words a value of `ty` occupies: the executor's flattened layout
+/// (samplers take one word), so the program's uniform storage and each
+/// kernel's uniform words line up.
 pub fn words(ty: Type, structs: &[StructDef]) -> usize {
-    words_depth(ty, structs, 0)
-}
-
-fn words_depth(ty: Type, structs: &[StructDef], depth: u32) -> usize {
-    if depth > 64 {
-        return 0;
-    }
-    let elem = match ty.base {
-        Base::Void | Base::Error => 0,
-        Base::Sampler(_) | Base::Scalar(_) => 1,
-        Base::Vector(_, n) => n as usize,
-        Base::Matrix { cols, rows } => cols as usize * rows as usize,
-        Base::Struct(id) => structs
-            .get(id.0 as usize)
-            .map(|s| {
-                s.members
-                    .iter()
-                    .map(|m| words_depth(m.ty, structs, depth + 1))
-                    .sum()
-            })
-            .unwrap_or(0),
-    };
-    elem.saturating_mul(array_len(ty).unwrap_or(1) as usize)
+    exec::size_of(ty, structs)
 }
 
 /// The element count of an array type.
