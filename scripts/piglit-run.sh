@@ -99,6 +99,8 @@ exec "$bin" glslparsertest "\$@"
 EOF
 cat >"$build/bin/shader_runner" <<EOF
 #!/bin/sh
+# piglit already runs one test per core: one thread per test process.
+export SHADERBOX_THREADS="\${SHADERBOX_THREADS:-1}"
 exec "$bin" shader-runner "\$@"
 EOF
 chmod +x "$build/bin/glslparsertest" "$build/bin/shader_runner"
