@@ -177,6 +177,76 @@ impl Context {
         self.height
     }
 
+    /// The default framebuffer (window-system buffer), for wrappers such as
+    /// an OSMesa C ABI that copy it into client memory.
+    pub fn default_framebuffer(&self) -> &raster::Framebuffer {
+        &self.fb
+    }
+
+    /// Resizes the default framebuffer to `width` x `height` (clamped to
+    /// 1..=[`MAX_TEXTURE_SIZE`]); its contents become zero. The viewport and
+    /// scissor box are left as they are (a window-system resize).
+    pub fn resize_default_framebuffer(&mut self, width: i32, height: i32) {
+        let (w, h) = (
+            width.clamp(1, MAX_TEXTURE_SIZE),
+            height.clamp(1, MAX_TEXTURE_SIZE),
+        );
+        if (w, h) == (self.width, self.height) {
+            return;
+        }
+        self.width = w;
+        self.height = h;
+        self.fb = raster::Framebuffer::new(
+            w as u32,
+            h as u32,
+            raster::ColorFormat::Rgba8,
+            true,
+            true,
+        );
+    }
+
+    /// The vertex-array state (pointers, enables, client active texture),
+    /// read-only.
+    pub fn vertex_state(&self) -> &vertex::VertexState {
+        &self.va
+    }
+
+    /// Replaces the bytes of the client-memory array `src` (one whose
+    /// pointer was specified with no buffer bound) without touching its
+    /// other state. A C ABI calls this at draw time with a copy of the
+    /// memory the client's pointer designates. Returns false (and changes
+    /// nothing) for a buffer-object array or an out-of-range source.
+    pub fn replace_client_array_data(
+        &mut self,
+        src: vertex::AttribSource,
+        data: ArrayData,
+    ) -> bool {
+        let va = &mut self.va;
+        let arr = match src {
+            vertex::AttribSource::Position => Some(&mut va.vertex_array),
+            vertex::AttribSource::Color => Some(&mut va.color_array),
+            vertex::AttribSource::SecondaryColor => Some(&mut va.secondary_array),
+            vertex::AttribSource::Normal => Some(&mut va.normal_array),
+            vertex::AttribSource::FogCoord => Some(&mut va.fog_array),
+            vertex::AttribSource::TexCoord(u) => va.tex_arrays.get_mut(u as usize),
+            vertex::AttribSource::Generic(i) => va.generic_arrays.get_mut(i as usize),
+        };
+        match arr {
+            Some(a) if a.buffer == 0 => {
+                a.data = data;
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// Records a GL error found by a wrapper (e.g. a C ABI rejecting a
+    /// negative count before it can build the arguments), with the same
+    /// first-error-wins rule as every other error.
+    pub fn record_error(&mut self, err: u32) {
+        self.set_error(err);
+    }
+
     /// Records `err` unless an earlier error is still pending (GL 2.1 §2.5:
     /// one error flag; later errors are dropped until glGetError).
     pub(crate) fn set_error(&mut self, err: u32) {

@@ -1,0 +1,115 @@
+//! Client-memory vertex arrays: the C pointers given to gl*Pointer with no
+//! buffer object bound, and their copy into the [`gl::Context`] at draw time.
+//!
+//! Safety argument: GL 2.1 §2.8 says a client array's pointer is read when
+//! a draw command (glDrawArrays, glDrawElements, glArrayElement...)
+//! executes, and that the client must keep the memory valid and unchanged
+//! until then; OSMesa draws synchronously, so the memory is only read
+//! inside the draw call that needs it. At each draw we copy exactly the
+//! bytes of the vertices that draw reads (vertices `lo..=hi`, `size`
+//! components of `type` at `stride`) out of the pointers of *enabled*
+//! arrays, so memory the GL contract does not cover (disabled arrays,
+//! vertices outside the draw) is never touched.
+
+use gl::vertex::{type_size, ArrayState, AttribSource, VertexState};
+use gl::ArrayData;
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+/// Largest copy made for one array in one draw (larger draws raise
+/// GL_OUT_OF_MEMORY instead of allocating).
+pub const MAX_ARRAY_COPY: usize = 1 << 30;
+
+/// The client pointers of the arrays whose pointer was last specified
+/// with no buffer bound.
+#[derive(Default)]
+pub struct ClientArrays {
+    pointers: BTreeMap<AttribSource, usize>,
+}
+
+/// The array state `src` names (whether enabled or not).
+pub fn array_state(va: &VertexState, src: AttribSource) -> Option<&ArrayState> {
+    match src {
+        AttribSource::Position => Some(&va.vertex_array),
+        AttribSource::Color => Some(&va.color_array),
+        AttribSource::SecondaryColor => Some(&va.secondary_array),
+        AttribSource::Normal => Some(&va.normal_array),
+        AttribSource::FogCoord => Some(&va.fog_array),
+        AttribSource::TexCoord(u) => va.tex_arrays.get(u as usize),
+        AttribSource::Generic(i) => va.generic_arrays.get(i as usize),
+    }
+}
+
+impl ClientArrays {
+    /// A gl*Pointer call: with a buffer bound to GL_ARRAY_BUFFER the
+    /// pointer is an offset into it; otherwise remember the C pointer and
+    /// hand the context a placeholder that draws replace. `call` makes the
+    /// gl call (which validates the arguments); the pointer is recorded
+    /// only if the call changed the array.
+    pub fn set_pointer(
+        &mut self,
+        gl: &mut gl::Context,
+        src: AttribSource,
+        ptr: *const u8,
+        call: impl FnOnce(&mut gl::Context, ArrayData),
+    ) {
+        if gl.vertex_state().array_buffer != 0 {
+            call(gl, ArrayData::Offset(ptr as usize));
+            if let Some(a) = array_state(gl.vertex_state(), src) {
+                if a.buffer != 0 {
+                    self.pointers.remove(&src);
+                }
+            }
+            return;
+        }
+        let marker: Arc<[u8]> = Arc::from(Vec::new());
+        call(gl, ArrayData::Client(marker.clone()));
+        let taken = matches!(
+            array_state(gl.vertex_state(), src).map(|a| &a.data),
+            Some(ArrayData::Client(d)) if Arc::ptr_eq(d, &marker)
+        );
+        if taken {
+            if ptr.is_null() {
+                self.pointers.remove(&src);
+            } else {
+                self.pointers.insert(src, ptr as usize);
+            }
+        }
+    }
+
+    /// Before a draw reading vertices `lo..=hi`: copies those vertices of
+    /// every enabled client array into the context.
+    pub fn prepare(&self, gl: &mut gl::Context, lo: u32, hi: u32) {
+        for (&src, &ptr) in &self.pointers {
+            let Some(a) = array_state(gl.vertex_state(), src) else {
+                continue;
+            };
+            if !a.enabled || a.buffer != 0 {
+                continue;
+            }
+            let Some(bytes) = copy_range(ptr as *const u8, a, lo, hi) else {
+                gl.record_error(gl::enums::GL_OUT_OF_MEMORY);
+                continue;
+            };
+            gl.replace_client_array_data(src, ArrayData::Client(Arc::from(bytes)));
+        }
+    }
+}
+
+/// The bytes of vertices `lo..=hi` of array `a` at `ptr`, at their offsets
+/// from `ptr` (bytes before vertex `lo` are zero, never read).
+fn copy_range(ptr: *const u8, a: &ArrayState, lo: u32, hi: u32) -> Option<Vec<u8>> {
+    let elem = (a.size.max(0) as usize).checked_mul(type_size(a.ty)?)?;
+    let stride = if a.stride > 0 { a.stride as usize } else { elem };
+    let start = (lo as usize).checked_mul(stride)?;
+    let end = (hi as usize).checked_mul(stride)?.checked_add(elem)?;
+    if end > MAX_ARRAY_COPY || start > end {
+        return None;
+    }
+    let mut v = vec![0u8; end];
+    // SAFETY: see the module docs: the array is enabled and the draw reads
+    // vertices lo..=hi, so GL's contract makes ptr[start..end] valid.
+    let src = unsafe { std::slice::from_raw_parts(ptr.add(start), end - start) };
+    v[start..end].copy_from_slice(src);
+    Some(v)
+}

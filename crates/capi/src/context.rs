@@ -1,0 +1,236 @@
+//! The OSMesa context object, the thread-local current context, and the
+//! copy of the default framebuffer into the client's buffer.
+
+use crate::arrays::ClientArrays;
+use crate::osmesa_enums::*;
+use std::cell::Cell;
+use std::collections::BTreeSet;
+use std::ffi::c_void;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::Mutex;
+
+/// GL enums the context code needs.
+use gl::enums::{GL_FLOAT, GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_UNSIGNED_SHORT_5_6_5};
+
+/// One OSMesa context: a [`gl::Context`] plus the client buffer it renders
+/// into.
+pub struct OsContext {
+    pub gl: gl::Context,
+    /// OSMESA_RGBA, OSMESA_BGRA, OSMESA_ARGB, OSMESA_RGB, OSMESA_BGR or
+    /// OSMESA_RGB_565.
+    pub format: u32,
+    pub depth_bits: i32,
+    pub stencil_bits: i32,
+    pub accum_bits: i32,
+    /// The client buffer (null until the first OSMesaMakeCurrent).
+    pub buffer: *mut c_void,
+    pub ty: u32,
+    pub width: i32,
+    pub height: i32,
+    /// OSMESA_ROW_LENGTH in pixels (0: the width).
+    pub row_length: i32,
+    /// OSMESA_Y_UP: true = bottom row first in memory (the default).
+    pub y_up: bool,
+    /// Whether a MakeCurrent has sized the framebuffer yet (the first one
+    /// also sets the viewport and scissor box, GL 2.1 §2.11.1).
+    pub sized: bool,
+    /// Depth values handed out by OSMesaGetDepthBuffer.
+    pub depth_copy: DepthCopy,
+    /// Client-memory vertex array pointers.
+    pub arrays: ClientArrays,
+    /// glGetString results, kept alive for the context's lifetime.
+    pub strings: std::collections::BTreeMap<u32, std::ffi::CString>,
+}
+
+/// The depth buffer as OSMesaGetDepthBuffer exposes it.
+pub enum DepthCopy {
+    None,
+    U16(Vec<u16>),
+    U32(Vec<u32>),
+}
+
+impl OsContext {
+    pub fn new(format: u32, depth_bits: i32, stencil_bits: i32, accum_bits: i32) -> OsContext {
+        OsContext {
+            gl: gl::Context::new(1, 1),
+            format,
+            depth_bits,
+            stencil_bits,
+            accum_bits,
+            buffer: std::ptr::null_mut(),
+            ty: GL_UNSIGNED_BYTE,
+            width: 0,
+            height: 0,
+            row_length: 0,
+            y_up: true,
+            sized: false,
+            depth_copy: DepthCopy::None,
+            arrays: ClientArrays::default(),
+            strings: Default::default(),
+        }
+    }
+
+    /// Bytes per pixel of the client buffer for `format`/`ty`, if the pair
+    /// is one OSMesa accepts.
+    pub fn pixel_bytes(format: u32, ty: u32) -> Option<usize> {
+        let comps = match format {
+            OSMESA_RGBA | OSMESA_BGRA | OSMESA_ARGB => 4,
+            OSMESA_RGB | OSMESA_BGR => 3,
+            OSMESA_RGB_565 => return (ty == GL_UNSIGNED_SHORT_5_6_5).then_some(2),
+            _ => return None,
+        };
+        let size = match ty {
+            GL_UNSIGNED_BYTE => 1,
+            GL_UNSIGNED_SHORT => 2,
+            GL_FLOAT => 4,
+            _ => return None,
+        };
+        Some(comps * size)
+    }
+
+    /// Copies the default framebuffer into the client buffer in its format
+    /// and type, rows bottom first unless OSMESA_Y_UP is 0.
+    pub fn sync(&mut self) {
+        if self.buffer.is_null() || self.width <= 0 || self.height <= 0 {
+            return;
+        }
+        let Some(px) = Self::pixel_bytes(self.format, self.ty) else {
+            return;
+        };
+        let (w, h) = (self.width as usize, self.height as usize);
+        let row_px = if self.row_length > 0 {
+            (self.row_length as usize).max(w)
+        } else {
+            w
+        };
+        let fb = self.gl.default_framebuffer();
+        let pixels = fb.read_pixels_u8(0, 0, 0, w as u32, h as u32);
+        // SAFETY: OSMesaMakeCurrent's contract: `buffer` holds at least
+        // row_length * height pixels of the format and type given there
+        // (row_length >= width), and stays valid while the context uses it.
+        let out = unsafe {
+            std::slice::from_raw_parts_mut(self.buffer as *mut u8, row_px * h * px)
+        };
+        for y in 0..h {
+            let dst_row = if self.y_up { y } else { h - 1 - y };
+            for x in 0..w {
+                let Some(p) = pixels.get(y * w + x) else {
+                    continue;
+                };
+                let at = (dst_row * row_px + x) * px;
+                if let Some(dst) = out.get_mut(at..at + px) {
+                    encode_pixel(*p, self.format, self.ty, dst);
+                }
+            }
+        }
+    }
+
+    /// Refreshes and returns the depth copy.
+    pub fn depth_buffer(&mut self) -> Option<(*mut c_void, i32)> {
+        if self.depth_bits <= 0 || !self.sized {
+            return None;
+        }
+        let fb = self.gl.default_framebuffer();
+        let depth = fb.depth.as_ref()?;
+        if self.depth_bits <= 16 {
+            // 24-bit fixed point to 16-bit: keep the top bits.
+            let v: Vec<u16> = depth.iter().map(|&k| (k >> 8) as u16).collect();
+            self.depth_copy = DepthCopy::U16(v);
+        } else {
+            // 24-bit to 32-bit unsigned normalized: replicate the top bits.
+            let v: Vec<u32> = depth.iter().map(|&k| (k << 8) | (k >> 16)).collect();
+            self.depth_copy = DepthCopy::U32(v);
+        }
+        match &mut self.depth_copy {
+            DepthCopy::U16(v) => Some((v.as_mut_ptr() as *mut c_void, 2)),
+            DepthCopy::U32(v) => Some((v.as_mut_ptr() as *mut c_void, 4)),
+            DepthCopy::None => None,
+        }
+    }
+}
+
+/// Writes one RGBA8 pixel in the client's format and type.
+fn encode_pixel(p: [u8; 4], format: u32, ty: u32, dst: &mut [u8]) {
+    let [r, g, b, a] = p;
+    if format == OSMESA_RGB_565 {
+        let v: u16 = ((r as u16 >> 3) << 11) | ((g as u16 >> 2) << 5) | (b as u16 >> 3);
+        dst.copy_from_slice(&v.to_ne_bytes());
+        return;
+    }
+    let order: &[u8] = match format {
+        OSMESA_RGBA => &[r, g, b, a],
+        OSMESA_BGRA => &[b, g, r, a],
+        OSMESA_ARGB => &[a, r, g, b],
+        OSMESA_RGB => &[r, g, b],
+        OSMESA_BGR => &[b, g, r],
+        _ => return,
+    };
+    match ty {
+        GL_UNSIGNED_BYTE => {
+            for (d, s) in dst.iter_mut().zip(order) {
+                *d = *s;
+            }
+        }
+        GL_UNSIGNED_SHORT => {
+            for (d, s) in dst.chunks_exact_mut(2).zip(order) {
+                d.copy_from_slice(&(*s as u16 * 257).to_ne_bytes());
+            }
+        }
+        GL_FLOAT => {
+            for (d, s) in dst.chunks_exact_mut(4).zip(order) {
+                d.copy_from_slice(&(*s as f32 / 255.0).to_ne_bytes());
+            }
+        }
+        _ => {}
+    }
+}
+
+thread_local! {
+    static CURRENT: Cell<*mut OsContext> = const { Cell::new(std::ptr::null_mut()) };
+}
+
+/// Every live context (addresses), so a stale or foreign pointer passed to
+/// OSMesaMakeCurrent/DestroyContext is refused instead of dereferenced.
+static LIVE: Mutex<BTreeSet<usize>> = Mutex::new(BTreeSet::new());
+
+pub fn register(ctx: *mut OsContext) {
+    if let Ok(mut l) = LIVE.lock() {
+        l.insert(ctx as usize);
+    }
+}
+
+/// Removes `ctx` from the live set; false if it was not live.
+pub fn unregister(ctx: *mut OsContext) -> bool {
+    LIVE.lock().map(|mut l| l.remove(&(ctx as usize))).unwrap_or(false)
+}
+
+pub fn is_live(ctx: *mut OsContext) -> bool {
+    LIVE.lock().map(|l| l.contains(&(ctx as usize))).unwrap_or(false)
+}
+
+pub fn current() -> *mut OsContext {
+    CURRENT.with(|c| c.get())
+}
+
+pub fn set_current(ctx: *mut OsContext) {
+    CURRENT.with(|c| c.set(ctx));
+}
+
+/// Runs `f` on the current context, or returns `default` when there is
+/// none. Panics are caught: they never unwind into C.
+pub fn with_ctx<R>(default: R, f: impl FnOnce(&mut OsContext) -> R) -> R {
+    let p = current();
+    if p.is_null() {
+        return default;
+    }
+    // SAFETY: `p` came from Box::into_raw in OSMesaCreateContext* and is
+    // current on this thread only while live (DestroyContext clears it);
+    // GL entry points do not re-enter, so this is the only reference.
+    let ctx = unsafe { &mut *p };
+    catch_unwind(AssertUnwindSafe(|| f(ctx))).unwrap_or(default)
+}
+
+/// Runs `f` with panics caught (for entry points without a context).
+pub fn guard<R>(default: R, f: impl FnOnce() -> R) -> R {
+    catch_unwind(AssertUnwindSafe(f)).unwrap_or(default)
+}

@@ -1,0 +1,622 @@
+//! The gl* entry points, C ABI, on the current context.
+//!
+//! Each function runs on the thread's current context (none: it does
+//! nothing and returns 0/null), with panics caught. Pointer arguments GL
+//! allows to be null are checked; a null pointer where GL requires memory
+//! makes the call a no-op instead of a crash. Commands that can change
+//! pixels of the default framebuffer copy it into the client's buffer
+//! afterwards ([`OsContext::sync`]).
+
+use crate::context::{with_ctx, OsContext};
+use crate::types::*;
+use gl::enums::*;
+use gl::vertex::AttribSource;
+use gl::ArrayData;
+use std::ffi::{c_char, c_void, CStr, CString};
+use std::sync::Arc;
+
+/// Most array elements read from client memory by one glUniform*v call.
+const MAX_UNIFORM_ELEMENTS: i32 = 4096;
+
+/// Reads `N` values at `p` (None for null).
+unsafe fn rd<const N: usize, T: Copy>(p: *const T) -> Option<[T; N]> {
+    if p.is_null() {
+        None
+    } else {
+        // SAFETY: GL's contract for vector arguments: N values at p.
+        Some(unsafe { std::ptr::read_unaligned(p as *const [T; N]) })
+    }
+}
+
+/// Reads `n` values at `p` (empty for null or n <= 0).
+unsafe fn rd_vec<T: Copy>(p: *const T, n: i64) -> Vec<T> {
+    if p.is_null() || n <= 0 {
+        return Vec::new();
+    }
+    // SAFETY: GL's contract: n values at p.
+    (0..n as usize)
+        .map(|i| unsafe { std::ptr::read_unaligned(p.add(i)) })
+        .collect()
+}
+
+/// Writes `v` at `p` (nothing for null).
+unsafe fn wr<T: Copy>(p: *mut T, v: &[T]) {
+    if p.is_null() {
+        return;
+    }
+    for (i, x) in v.iter().enumerate() {
+        // SAFETY: GL's contract: the query's value count fits at p.
+        unsafe { std::ptr::write_unaligned(p.add(i), *x) };
+    }
+}
+
+/// A C string argument (lossy UTF-8).
+unsafe fn cstr(p: *const c_char) -> Option<String> {
+    if p.is_null() {
+        return None;
+    }
+    // SAFETY: NUL-terminated per GL's contract.
+    Some(unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned())
+}
+
+/// glGet*InfoLog / glGetShaderSource output: at most `buf_size - 1` bytes
+/// and a NUL; `length` gets the bytes written without the NUL.
+unsafe fn wr_string(
+    c: &mut OsContext,
+    s: &str,
+    buf_size: GLsizei,
+    length: *mut GLsizei,
+    out: *mut GLchar,
+) {
+    if buf_size < 0 {
+        c.gl.record_error(GL_INVALID_VALUE);
+        return;
+    }
+    let n = if out.is_null() || buf_size == 0 {
+        0
+    } else {
+        let n = s.len().min(buf_size as usize - 1);
+        // SAFETY: the caller's buffer holds buf_size bytes.
+        unsafe {
+            std::ptr::copy_nonoverlapping(s.as_ptr() as *const c_char, out, n);
+            *out.add(n) = 0;
+        }
+        n
+    };
+    // SAFETY: out pointer or null.
+    unsafe { wr(length, &[n as GLsizei]) };
+}
+
+fn b(x: GLboolean) -> bool {
+    x != 0
+}
+
+/// glDrawElements' index range: the indices (copied when client memory)
+/// and the data handed to the context.
+unsafe fn element_indices(
+    c: &mut OsContext,
+    count: GLsizei,
+    ty: GLenum,
+    indices: *const c_void,
+) -> (ArrayData, Vec<u32>) {
+    let size = match ty {
+        GL_UNSIGNED_BYTE => 1,
+        GL_UNSIGNED_SHORT => 2,
+        GL_UNSIGNED_INT => 4,
+        _ => return (ArrayData::Offset(0), Vec::new()),
+    };
+    if count <= 0 {
+        return (ArrayData::Offset(0), Vec::new());
+    }
+    let n = (count as usize).min(1 << 24) * size;
+    let (data, bytes): (ArrayData, Vec<u8>) = if c.gl.vertex_state().element_buffer != 0 {
+        // Read the bound buffer without disturbing the error flag (the
+        // draw reports range errors itself).
+        let saved = c.gl.get_error();
+        let bytes = c
+            .gl
+            .get_buffer_sub_data(GL_ELEMENT_ARRAY_BUFFER, indices as isize, n as isize);
+        let _ = c.gl.get_error();
+        c.gl.record_error(saved);
+        (ArrayData::Offset(indices as usize), bytes)
+    } else if indices.is_null() {
+        (ArrayData::Client(Arc::from(Vec::new())), Vec::new())
+    } else {
+        // SAFETY: GL's contract: `count` indices of `ty` at `indices`.
+        let bytes = unsafe { std::slice::from_raw_parts(indices as *const u8, n) }.to_vec();
+        (ArrayData::Client(Arc::from(bytes.clone())), bytes)
+    };
+    let idx: Vec<u32> = bytes
+        .chunks_exact(size)
+        .map(|ch| match ch {
+            [a] => *a as u32,
+            [a, b] => u16::from_ne_bytes([*a, *b]) as u32,
+            [a, b, c, d] => u32::from_ne_bytes([*a, *b, *c, *d]),
+            _ => 0,
+        })
+        .collect();
+    (data, idx)
+}
+
+/// Generates the extern "C" functions and [`lookup`] (the
+/// OSMesaGetProcAddress table).
+macro_rules! gl_entry_points {
+    ($(
+        $(#[$m:meta])*
+        fn $name:ident($($a:ident: $t:ty),*) $(-> $r:ty [$def:expr])? => |$c:ident| $body:block
+    )*) => {
+        $(
+            $(#[$m])*
+            #[no_mangle]
+            #[allow(unused_unsafe, clippy::too_many_arguments)]
+            pub unsafe extern "C" fn $name($($a: $t),*) $(-> $r)? {
+                with_ctx(gl_entry_points!(@def $($def)?), |$c: &mut OsContext| unsafe { $body })
+            }
+        )*
+
+        /// The address of the gl* entry point `name`.
+        pub fn lookup(name: &str) -> Option<*const ()> {
+            match name {
+                $(stringify!($name) => Some($name as *const ()),)*
+                _ => None,
+            }
+        }
+
+        /// Every gl* entry point exported.
+        pub const NAMES: &[&str] = &[$(stringify!($name)),*];
+    };
+    (@def) => { () };
+    (@def $d:expr) => { $d };
+}
+
+gl_entry_points! {
+    // ---- errors, strings, queries ----
+    fn glGetError() -> GLenum [GL_NO_ERROR] => |c| { c.gl.get_error() }
+    fn glGetString(name: GLenum) -> *const GLubyte [std::ptr::null()] => |c| {
+        if !c.strings.contains_key(&name) {
+            let s = c.gl.get_string(name);
+            let s = match name {
+                GL_VENDOR | GL_SHADING_LANGUAGE_VERSION | GL_EXTENSIONS => s,
+                GL_RENDERER => "shaderbox (CPU)".to_string(),
+                GL_VERSION => format!("2.1 shaderbox {}", env!("CARGO_PKG_VERSION")),
+                _ => return std::ptr::null(),
+            };
+            let Ok(cs) = CString::new(s) else { return std::ptr::null() };
+            c.strings.insert(name, cs);
+        }
+        c.strings.get(&name).map_or(std::ptr::null(), |s| s.as_ptr() as *const GLubyte)
+    }
+    fn glGetIntegerv(pname: GLenum, params: *mut GLint) => |c| {
+        let v = c.gl.get_integerv(pname);
+        wr(params, &v);
+    }
+    fn glGetFloatv(pname: GLenum, params: *mut GLfloat) => |c| {
+        let v = c.gl.get_floatv(pname);
+        wr(params, &v);
+    }
+    fn glGetDoublev(pname: GLenum, params: *mut GLdouble) => |c| {
+        let v = c.gl.get_doublev(pname);
+        wr(params, &v);
+    }
+    fn glGetBooleanv(pname: GLenum, params: *mut GLboolean) => |c| {
+        let v: Vec<GLboolean> = c.gl.get_booleanv(pname).iter().map(|&x| x as GLboolean).collect();
+        wr(params, &v);
+    }
+    fn glEnable(cap: GLenum) => |c| { c.gl.enable(cap) }
+    fn glDisable(cap: GLenum) => |c| { c.gl.disable(cap) }
+    fn glIsEnabled(cap: GLenum) -> GLboolean [0] => |c| { c.gl.is_enabled(cap) as GLboolean }
+    fn glFinish() => |c| { c.gl.finish(); c.sync(); }
+    fn glFlush() => |c| { c.gl.flush(); c.sync(); }
+    fn glHint(target: GLenum, mode: GLenum) => |c| { c.gl.hint(target, mode) }
+    fn glPixelStorei(pname: GLenum, param: GLint) => |c| { c.gl.pixel_storei(pname, param) }
+
+    // ---- framebuffer ----
+    fn glViewport(x: GLint, y: GLint, w: GLsizei, h: GLsizei) => |c| { c.gl.viewport(x, y, w, h) }
+    fn glScissor(x: GLint, y: GLint, w: GLsizei, h: GLsizei) => |c| { c.gl.scissor(x, y, w, h) }
+    fn glDepthRange(n: GLclampd, f: GLclampd) => |c| { c.gl.depth_range(n, f) }
+    fn glClearColor(r: GLclampf, g: GLclampf, b: GLclampf, a: GLclampf) => |c| {
+        c.gl.clear_color(r, g, b, a)
+    }
+    fn glClearDepth(d: GLclampd) => |c| { c.gl.clear_depth(d) }
+    fn glClearStencil(s: GLint) => |c| { c.gl.clear_stencil(s) }
+    fn glClear(mask: GLbitfield) => |c| { c.gl.clear(mask); c.sync(); }
+    fn glColorMask(r: GLboolean, g: GLboolean, bl: GLboolean, a: GLboolean) => |c| {
+        c.gl.color_mask(b(r), b(g), b(bl), b(a))
+    }
+    fn glDepthMask(flag: GLboolean) => |c| { c.gl.depth_mask(b(flag)) }
+    fn glDepthFunc(func: GLenum) => |c| { c.gl.depth_func(func) }
+    fn glBlendFunc(src: GLenum, dst: GLenum) => |c| { c.gl.blend_func(src, dst) }
+    fn glBlendEquation(mode: GLenum) => |c| { c.gl.blend_equation(mode) }
+    fn glAlphaFunc(func: GLenum, reference: GLclampf) => |c| { c.gl.alpha_func(func, reference) }
+    fn glCullFace(mode: GLenum) => |c| { c.gl.cull_face(mode) }
+    fn glFrontFace(mode: GLenum) => |c| { c.gl.front_face(mode) }
+    fn glShadeModel(mode: GLenum) => |c| { c.gl.shade_model(mode) }
+    fn glPolygonMode(face: GLenum, mode: GLenum) => |c| { c.gl.polygon_mode(face, mode) }
+    fn glPolygonOffset(factor: GLfloat, units: GLfloat) => |c| { c.gl.polygon_offset(factor, units) }
+    fn glPointSize(size: GLfloat) => |c| { c.gl.point_size(size) }
+    fn glLineWidth(width: GLfloat) => |c| { c.gl.line_width(width) }
+    fn glReadPixels(
+        x: GLint, y: GLint, w: GLsizei, h: GLsizei, format: GLenum, ty: GLenum,
+        pixels: *mut c_void
+    ) => |c| {
+        let align = c.gl.get_integerv(GL_PACK_ALIGNMENT).first().copied().unwrap_or(4).max(1);
+        let len = if w > 0 && h > 0 && gl::objects::pixel_size(format, ty).is_some() {
+            gl::objects::row_stride(w as usize, format, ty, align as usize)
+                .saturating_mul(h as usize)
+        } else {
+            0
+        };
+        if pixels.is_null() && len > 0 {
+            return;
+        }
+        let out: &mut [u8] = if len == 0 {
+            &mut []
+        } else {
+            // SAFETY: GL's contract: the client's buffer holds the packed
+            // w x h image of format/type at the pack alignment.
+            std::slice::from_raw_parts_mut(pixels as *mut u8, len)
+        };
+        c.gl.read_pixels(x, y, w, h, format, ty, out);
+    }
+
+    // ---- matrices ----
+    fn glMatrixMode(mode: GLenum) => |c| { c.gl.matrix_mode(mode) }
+    fn glLoadIdentity() => |c| { c.gl.load_identity() }
+    fn glPushMatrix() => |c| { c.gl.push_matrix() }
+    fn glPopMatrix() => |c| { c.gl.pop_matrix() }
+    fn glOrtho(l: GLdouble, r: GLdouble, bo: GLdouble, t: GLdouble, n: GLdouble, f: GLdouble) => |c| {
+        c.gl.ortho(l, r, bo, t, n, f)
+    }
+    fn glFrustum(l: GLdouble, r: GLdouble, bo: GLdouble, t: GLdouble, n: GLdouble, f: GLdouble) => |c| {
+        c.gl.frustum(l, r, bo, t, n, f)
+    }
+    fn glTranslatef(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.translatef(x, y, z) }
+    fn glTranslated(x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
+        c.gl.translatef(x as f32, y as f32, z as f32)
+    }
+    fn glScalef(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.scalef(x, y, z) }
+    fn glScaled(x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
+        c.gl.scalef(x as f32, y as f32, z as f32)
+    }
+    fn glRotatef(a: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.rotatef(a, x, y, z) }
+    fn glRotated(a: GLdouble, x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
+        c.gl.rotatef(a as f32, x as f32, y as f32, z as f32)
+    }
+    fn glLoadMatrixf(m: *const GLfloat) => |c| {
+        if let Some(m) = rd::<16, f32>(m) { c.gl.load_matrixf(&m) }
+    }
+    fn glLoadMatrixd(m: *const GLdouble) => |c| {
+        if let Some(m) = rd::<16, f64>(m) { c.gl.load_matrixf(&m.map(|x| x as f32)) }
+    }
+    fn glMultMatrixf(m: *const GLfloat) => |c| {
+        if let Some(m) = rd::<16, f32>(m) { c.gl.mult_matrixf(&m) }
+    }
+    fn glMultMatrixd(m: *const GLdouble) => |c| {
+        if let Some(m) = rd::<16, f64>(m) { c.gl.mult_matrixf(&m.map(|x| x as f32)) }
+    }
+
+    // ---- immediate mode ----
+    fn glBegin(mode: GLenum) => |c| { c.gl.begin(mode) }
+    fn glEnd() => |c| { c.gl.end(); c.sync(); }
+    fn glVertex2f(x: GLfloat, y: GLfloat) => |c| { c.gl.vertex_4f(x, y, 0.0, 1.0) }
+    fn glVertex3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.vertex_4f(x, y, z, 1.0) }
+    fn glVertex4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| { c.gl.vertex_4f(x, y, z, w) }
+    fn glVertex2d(x: GLdouble, y: GLdouble) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
+    fn glVertex3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
+        c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0)
+    }
+    fn glVertex4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| {
+        c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32)
+    }
+    fn glVertex2i(x: GLint, y: GLint) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
+    fn glVertex3i(x: GLint, y: GLint, z: GLint) => |c| {
+        c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0)
+    }
+    fn glVertex2fv(v: *const GLfloat) => |c| {
+        if let Some([x, y]) = rd::<2, f32>(v) { c.gl.vertex_4f(x, y, 0.0, 1.0) }
+    }
+    fn glVertex3fv(v: *const GLfloat) => |c| {
+        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.vertex_4f(x, y, z, 1.0) }
+    }
+    fn glVertex4fv(v: *const GLfloat) => |c| {
+        if let Some(v) = rd::<4, f32>(v) { c.gl.vertex_4fv(&v) }
+    }
+    fn glVertex2dv(v: *const GLdouble) => |c| {
+        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
+    }
+    fn glVertex3dv(v: *const GLdouble) => |c| {
+        if let Some([x, y, z]) = rd::<3, f64>(v) {
+            c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0)
+        }
+    }
+    fn glVertex4dv(v: *const GLdouble) => |c| {
+        if let Some(v) = rd::<4, f64>(v) { c.gl.vertex_4fv(&v.map(|x| x as f32)) }
+    }
+    fn glColor3f(r: GLfloat, g: GLfloat, bl: GLfloat) => |c| { c.gl.color_3f(r, g, bl) }
+    fn glColor4f(r: GLfloat, g: GLfloat, bl: GLfloat, a: GLfloat) => |c| { c.gl.color_4f(r, g, bl, a) }
+    fn glColor3d(r: GLdouble, g: GLdouble, bl: GLdouble) => |c| {
+        c.gl.color_3f(r as f32, g as f32, bl as f32)
+    }
+    fn glColor4d(r: GLdouble, g: GLdouble, bl: GLdouble, a: GLdouble) => |c| {
+        c.gl.color_4f(r as f32, g as f32, bl as f32, a as f32)
+    }
+    fn glColor3ub(r: GLubyte, g: GLubyte, bl: GLubyte) => |c| { c.gl.color_3ub(r, g, bl) }
+    fn glColor4ub(r: GLubyte, g: GLubyte, bl: GLubyte, a: GLubyte) => |c| { c.gl.color_4ub(r, g, bl, a) }
+    fn glColor3fv(v: *const GLfloat) => |c| { if let Some(v) = rd::<3, f32>(v) { c.gl.color_3fv(&v) } }
+    fn glColor4fv(v: *const GLfloat) => |c| { if let Some(v) = rd::<4, f32>(v) { c.gl.color_4fv(&v) } }
+    fn glColor3ubv(v: *const GLubyte) => |c| {
+        if let Some([r, g, bl]) = rd::<3, u8>(v) { c.gl.color_3ub(r, g, bl) }
+    }
+    fn glColor4ubv(v: *const GLubyte) => |c| {
+        if let Some([r, g, bl, a]) = rd::<4, u8>(v) { c.gl.color_4ub(r, g, bl, a) }
+    }
+    fn glNormal3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.normal_3f(x, y, z) }
+    fn glNormal3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
+        c.gl.normal_3f(x as f32, y as f32, z as f32)
+    }
+    fn glNormal3fv(v: *const GLfloat) => |c| { if let Some(v) = rd::<3, f32>(v) { c.gl.normal_3fv(&v) } }
+    fn glTexCoord1f(s: GLfloat) => |c| { c.gl.tex_coord_1f(s) }
+    fn glTexCoord2f(s: GLfloat, t: GLfloat) => |c| { c.gl.tex_coord_2f(s, t) }
+    fn glTexCoord3f(s: GLfloat, t: GLfloat, r: GLfloat) => |c| { c.gl.tex_coord_3f(s, t, r) }
+    fn glTexCoord4f(s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) => |c| { c.gl.tex_coord_4f(s, t, r, q) }
+    fn glTexCoord2fv(v: *const GLfloat) => |c| {
+        if let Some([s, t]) = rd::<2, f32>(v) { c.gl.tex_coord_2f(s, t) }
+    }
+    fn glMultiTexCoord2f(target: GLenum, s: GLfloat, t: GLfloat) => |c| {
+        c.gl.multi_tex_coord_2f(target, s, t)
+    }
+    fn glMultiTexCoord4f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) => |c| {
+        c.gl.multi_tex_coord_4f(target, s, t, r, q)
+    }
+    fn glMultiTexCoord2fv(target: GLenum, v: *const GLfloat) => |c| {
+        if let Some([s, t]) = rd::<2, f32>(v) { c.gl.multi_tex_coord_2f(target, s, t) }
+    }
+    fn glMultiTexCoord4fv(target: GLenum, v: *const GLfloat) => |c| {
+        if let Some(v) = rd::<4, f32>(v) { c.gl.multi_tex_coord_4fv(target, &v) }
+    }
+    fn glVertexAttrib1f(index: GLuint, x: GLfloat) => |c| { c.gl.vertex_attrib_1f(index, x) }
+    fn glVertexAttrib2f(index: GLuint, x: GLfloat, y: GLfloat) => |c| { c.gl.vertex_attrib_2f(index, x, y) }
+    fn glVertexAttrib3f(index: GLuint, x: GLfloat, y: GLfloat, z: GLfloat) => |c| {
+        c.gl.vertex_attrib_3f(index, x, y, z)
+    }
+    fn glVertexAttrib4f(index: GLuint, x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| {
+        c.gl.vertex_attrib_4f(index, x, y, z, w)
+    }
+    fn glVertexAttrib4fv(index: GLuint, v: *const GLfloat) => |c| {
+        if let Some(v) = rd::<4, f32>(v) { c.gl.vertex_attrib_4fv(index, &v) }
+    }
+    fn glRectf(x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) => |c| {
+        c.gl.rectf(x1, y1, x2, y2);
+        c.sync();
+    }
+
+    // ---- lighting, fog ----
+    fn glLightf(light: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.lightf(light, pname, v) }
+    fn glLighti(light: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.lighti(light, pname, v) }
+    fn glLightfv(light: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
+        let n = match pname {
+            GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => 4,
+            GL_SPOT_DIRECTION => 3,
+            _ => 1,
+        };
+        if !v.is_null() { c.gl.lightfv(light, pname, &rd_vec(v, n)) }
+    }
+    fn glMaterialf(face: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.materialf(face, pname, v) }
+    fn glMateriali(face: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.materiali(face, pname, v) }
+    fn glMaterialfv(face: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
+        let n = match pname {
+            GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => 4,
+            GL_COLOR_INDEXES => 3,
+            _ => 1,
+        };
+        if !v.is_null() { c.gl.materialfv(face, pname, &rd_vec(v, n)) }
+    }
+    fn glColorMaterial(face: GLenum, mode: GLenum) => |c| { c.gl.color_material(face, mode) }
+    fn glLightModelf(pname: GLenum, v: GLfloat) => |c| { c.gl.light_modelf(pname, v) }
+    fn glLightModeli(pname: GLenum, v: GLint) => |c| { c.gl.light_modeli(pname, v) }
+    fn glLightModelfv(pname: GLenum, v: *const GLfloat) => |c| {
+        let n = if pname == GL_LIGHT_MODEL_AMBIENT { 4 } else { 1 };
+        if !v.is_null() { c.gl.light_modelfv(pname, &rd_vec(v, n)) }
+    }
+    fn glFogf(pname: GLenum, v: GLfloat) => |c| { c.gl.fogf(pname, v) }
+    fn glFogi(pname: GLenum, v: GLint) => |c| { c.gl.fogi(pname, v) }
+    fn glFogfv(pname: GLenum, v: *const GLfloat) => |c| {
+        let n = if pname == GL_FOG_COLOR { 4 } else { 1 };
+        if !v.is_null() { c.gl.fogfv(pname, &rd_vec(v, n)) }
+    }
+    fn glFogiv(pname: GLenum, v: *const GLint) => |c| {
+        let n = if pname == GL_FOG_COLOR { 4 } else { 1 };
+        if !v.is_null() { c.gl.fogiv(pname, &rd_vec(v, n)) }
+    }
+
+    // ---- shaders and programs ----
+    fn glCreateShader(kind: GLenum) -> GLuint [0] => |c| { c.gl.create_shader(kind) }
+    fn glShaderSource(
+        shader: GLuint, count: GLsizei, strings: *const *const GLchar, lengths: *const GLint
+    ) => |c| {
+        if count < 0 || (count > 0 && strings.is_null()) {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let mut parts = Vec::with_capacity(count as usize);
+        for i in 0..count as usize {
+            let s = *strings.add(i);
+            let len = if lengths.is_null() { -1 } else { *lengths.add(i) };
+            let text = if s.is_null() {
+                String::new()
+            } else if len < 0 {
+                CStr::from_ptr(s).to_string_lossy().into_owned()
+            } else {
+                let bytes = std::slice::from_raw_parts(s as *const u8, len as usize);
+                String::from_utf8_lossy(bytes).into_owned()
+            };
+            parts.push(text);
+        }
+        let refs: Vec<&str> = parts.iter().map(|s| s.as_str()).collect();
+        c.gl.shader_source(shader, &refs);
+    }
+    fn glCompileShader(shader: GLuint) => |c| { c.gl.compile_shader(shader) }
+    fn glDeleteShader(shader: GLuint) => |c| { c.gl.delete_shader(shader) }
+    fn glIsShader(shader: GLuint) -> GLboolean [0] => |c| { c.gl.is_shader(shader) as GLboolean }
+    fn glGetShaderiv(shader: GLuint, pname: GLenum, params: *mut GLint) => |c| {
+        let v = c.gl.get_shaderiv(shader, pname);
+        wr(params, &[v]);
+    }
+    fn glGetShaderInfoLog(
+        shader: GLuint, buf_size: GLsizei, length: *mut GLsizei, log: *mut GLchar
+    ) => |c| {
+        let s = c.gl.get_shader_info_log(shader);
+        wr_string(c, &s, buf_size, length, log);
+    }
+    fn glGetShaderSource(
+        shader: GLuint, buf_size: GLsizei, length: *mut GLsizei, source: *mut GLchar
+    ) => |c| {
+        let s = c.gl.get_shader_source(shader);
+        wr_string(c, &s, buf_size, length, source);
+    }
+    fn glCreateProgram() -> GLuint [0] => |c| { c.gl.create_program() }
+    fn glDeleteProgram(program: GLuint) => |c| { c.gl.delete_program(program) }
+    fn glIsProgram(program: GLuint) -> GLboolean [0] => |c| {
+        c.gl.is_program(program) as GLboolean
+    }
+    fn glAttachShader(program: GLuint, shader: GLuint) => |c| { c.gl.attach_shader(program, shader) }
+    fn glDetachShader(program: GLuint, shader: GLuint) => |c| { c.gl.detach_shader(program, shader) }
+    fn glLinkProgram(program: GLuint) => |c| { c.gl.link_program(program) }
+    fn glValidateProgram(program: GLuint) => |c| { c.gl.validate_program(program) }
+    fn glUseProgram(program: GLuint) => |c| { c.gl.use_program(program) }
+    fn glGetProgramiv(program: GLuint, pname: GLenum, params: *mut GLint) => |c| {
+        let v = c.gl.get_programiv(program, pname);
+        wr(params, &[v]);
+    }
+    fn glGetProgramInfoLog(
+        program: GLuint, buf_size: GLsizei, length: *mut GLsizei, log: *mut GLchar
+    ) => |c| {
+        let s = c.gl.get_program_info_log(program);
+        wr_string(c, &s, buf_size, length, log);
+    }
+    fn glGetUniformLocation(program: GLuint, name: *const GLchar) -> GLint [-1] => |c| {
+        match cstr(name) {
+            Some(n) => c.gl.get_uniform_location(program, &n),
+            None => -1,
+        }
+    }
+    fn glGetAttribLocation(program: GLuint, name: *const GLchar) -> GLint [-1] => |c| {
+        match cstr(name) {
+            Some(n) => c.gl.get_attrib_location(program, &n),
+            None => -1,
+        }
+    }
+    fn glBindAttribLocation(program: GLuint, index: GLuint, name: *const GLchar) => |c| {
+        if let Some(n) = cstr(name) { c.gl.bind_attrib_location(program, index, &n) }
+    }
+    fn glUniform1f(loc: GLint, x: GLfloat) => |c| { c.gl.uniform_1f(loc, x) }
+    fn glUniform2f(loc: GLint, x: GLfloat, y: GLfloat) => |c| { c.gl.uniform_2f(loc, x, y) }
+    fn glUniform3f(loc: GLint, x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.uniform_3f(loc, x, y, z) }
+    fn glUniform4f(loc: GLint, x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| {
+        c.gl.uniform_4f(loc, x, y, z, w)
+    }
+    fn glUniform1i(loc: GLint, x: GLint) => |c| { c.gl.uniform_1i(loc, x) }
+    fn glUniform2i(loc: GLint, x: GLint, y: GLint) => |c| { c.gl.uniform_2i(loc, x, y) }
+    fn glUniform3i(loc: GLint, x: GLint, y: GLint, z: GLint) => |c| { c.gl.uniform_3i(loc, x, y, z) }
+    fn glUniform4i(loc: GLint, x: GLint, y: GLint, z: GLint, w: GLint) => |c| {
+        c.gl.uniform_4i(loc, x, y, z, w)
+    }
+    fn glUniform1fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_1fv(loc, n, &rd_vec(v, n as i64));
+    }
+    fn glUniform2fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_2fv(loc, n, &rd_vec(v, n as i64 * 2));
+    }
+    fn glUniform3fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_3fv(loc, n, &rd_vec(v, n as i64 * 3));
+    }
+    fn glUniform4fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_4fv(loc, n, &rd_vec(v, n as i64 * 4));
+    }
+    fn glUniform1iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_1iv(loc, n, &rd_vec(v, n as i64));
+    }
+    fn glUniform2iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_2iv(loc, n, &rd_vec(v, n as i64 * 2));
+    }
+    fn glUniform3iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_3iv(loc, n, &rd_vec(v, n as i64 * 3));
+    }
+    fn glUniform4iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_4iv(loc, n, &rd_vec(v, n as i64 * 4));
+    }
+    fn glUniformMatrix2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_2fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 4));
+    }
+    fn glUniformMatrix3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_3fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 9));
+    }
+    fn glUniformMatrix4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_4fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 16));
+    }
+
+    // ---- vertex arrays and draws ----
+    fn glEnableClientState(cap: GLenum) => |c| { c.gl.enable_client_state(cap) }
+    fn glDisableClientState(cap: GLenum) => |c| { c.gl.disable_client_state(cap) }
+    fn glClientActiveTexture(unit: GLenum) => |c| { c.gl.client_active_texture(unit) }
+    fn glActiveTexture(unit: GLenum) => |c| { c.gl.active_texture(unit) }
+    fn glEnableVertexAttribArray(index: GLuint) => |c| { c.gl.enable_vertex_attrib_array(index) }
+    fn glDisableVertexAttribArray(index: GLuint) => |c| { c.gl.disable_vertex_attrib_array(index) }
+    fn glVertexAttribPointer(
+        index: GLuint, size: GLint, ty: GLenum, normalized: GLboolean, stride: GLsizei,
+        pointer: *const c_void
+    ) => |c| {
+        let src = AttribSource::Generic(index.min(255) as u8);
+        c.arrays.set_pointer(&mut c.gl, src, pointer as *const u8, |g, d| {
+            g.vertex_attrib_pointer(index, size, ty, b(normalized), stride, d)
+        });
+    }
+    fn glVertexPointer(size: GLint, ty: GLenum, stride: GLsizei, pointer: *const c_void) => |c| {
+        c.arrays.set_pointer(&mut c.gl, AttribSource::Position, pointer as *const u8, |g, d| {
+            g.vertex_pointer(size, ty, stride, d)
+        });
+    }
+    fn glColorPointer(size: GLint, ty: GLenum, stride: GLsizei, pointer: *const c_void) => |c| {
+        c.arrays.set_pointer(&mut c.gl, AttribSource::Color, pointer as *const u8, |g, d| {
+            g.color_pointer(size, ty, stride, d)
+        });
+    }
+    fn glNormalPointer(ty: GLenum, stride: GLsizei, pointer: *const c_void) => |c| {
+        c.arrays.set_pointer(&mut c.gl, AttribSource::Normal, pointer as *const u8, |g, d| {
+            g.normal_pointer(ty, stride, d)
+        });
+    }
+    fn glTexCoordPointer(size: GLint, ty: GLenum, stride: GLsizei, pointer: *const c_void) => |c| {
+        let unit = c.gl.vertex_state().client_active_texture.min(255) as u8;
+        c.arrays.set_pointer(&mut c.gl, AttribSource::TexCoord(unit), pointer as *const u8, |g, d| {
+            g.tex_coord_pointer(size, ty, stride, d)
+        });
+    }
+    fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) => |c| {
+        if first >= 0 && count > 0 {
+            let last = (first as i64 + count.min(1 << 24) as i64 - 1).min(u32::MAX as i64);
+            c.arrays.prepare(&mut c.gl, first as u32, last as u32);
+        }
+        c.gl.draw_arrays(mode, first, count);
+        c.sync();
+    }
+    fn glDrawElements(mode: GLenum, count: GLsizei, ty: GLenum, indices: *const c_void) => |c| {
+        let (data, idx) = element_indices(c, count, ty, indices);
+        if let (Some(lo), Some(hi)) = (idx.iter().min(), idx.iter().max()) {
+            c.arrays.prepare(&mut c.gl, *lo, *hi);
+        }
+        c.gl.draw_elements(mode, count, ty, data);
+        c.sync();
+    }
+}

@@ -1,0 +1,61 @@
+//! # shaderbox-capi: a drop-in `libOSMesa.so`
+//!
+//! Built as `libOSMesa.so` (`cargo build --release -p shaderbox-capi`), this
+//! crate exports Mesa's off-screen context API (`OSMesaCreateContext*`,
+//! `OSMesaMakeCurrent`, ... — [`osmesa`]) and OpenGL 2.1 entry points
+//! ([`entry`]) with their C signatures, over [`gl::Context`]. Programs
+//! written against OSMesa (PyOpenGL with `PYOPENGL_PLATFORM=osmesa`, C
+//! tools' off-screen paths) run unchanged:
+//!
+//! ```sh
+//! PYOPENGL_PLATFORM=osmesa LD_LIBRARY_PATH=target/release python3 script.py
+//! ```
+//!
+//! ## Contract
+//! - One current context per thread (thread-local), as OSMesa.
+//! - Rendering goes to the context's own framebuffer (RGBA8, 24-bit depth,
+//!   8-bit stencil); after every command that can change its pixels
+//!   (glClear, glDrawArrays, glDrawElements, glEnd, glRect) and at
+//!   glFinish/glFlush/MakeCurrent/GetColorBuffer it is copied into the
+//!   client's buffer in the format (RGBA, BGRA, ARGB, RGB, BGR, RGB_565)
+//!   and type (GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_FLOAT,
+//!   GL_UNSIGNED_SHORT_5_6_5) given, bottom row first unless
+//!   `OSMesaPixelStore(OSMESA_Y_UP, 0)`, rows `OSMESA_ROW_LENGTH` apart.
+//! - Client vertex arrays: pointers are kept as given and the bytes a draw
+//!   reads are copied at draw time (safety argument in [`arrays`]).
+//! - No entry point unwinds into C: panics are caught (the call then does
+//!   nothing and returns 0/null). Invalid arguments raise the GL error;
+//!   null pointers where GL requires memory make the call a no-op.
+//!
+//! ## Safety
+//! The `unsafe extern "C"` functions trust what C's GL/OSMesa contract
+//! makes the caller promise: pointers designate as much memory as the
+//! call's arguments say (a buffer of `width*height` pixels for
+//! OSMesaMakeCurrent, 16 values for glLoadMatrixf, `count` strings for
+//! glShaderSource...). Context handles are checked against the set of live
+//! contexts before use.
+//!
+//! ## Limitations (first increment)
+//! - Only the entry points in [`entry::NAMES`]; others are missing (no
+//!   textures, buffer objects, FBOs, display lists, glGetActive*, ... yet).
+//! - The client buffer is written, never read: pixels the client puts in
+//!   it are not seen by GL (Mesa renders in place).
+//! - Depth/stencil sizes requested at creation only matter for
+//!   OSMesaGetDepthBuffer; the context always has 24-bit depth and 8-bit
+//!   stencil. `sharelist` is accepted but nothing is shared. Accumulation
+//!   buffers are absent.
+//! - Pixel-pack buffer objects are not supported by glReadPixels.
+#![allow(non_snake_case, clippy::missing_safety_doc)]
+
+pub mod arrays;
+pub mod context;
+pub mod entry;
+pub mod osmesa;
+pub mod osmesa_enums;
+pub mod procs;
+pub mod types;
+
+pub use entry::*;
+pub use osmesa::*;
+pub use osmesa_enums::*;
+pub use types::*;

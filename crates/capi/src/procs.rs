@@ -1,0 +1,25 @@
+//! The OSMesaGetProcAddress table: every exported entry point by name.
+
+use crate::osmesa::*;
+
+/// The address of the exported function `name` (gl* or OSMesa*).
+pub fn lookup(name: &str) -> Option<*const ()> {
+    if let Some(p) = crate::entry::lookup(name) {
+        return Some(p);
+    }
+    Some(match name {
+        "OSMesaCreateContext" => OSMesaCreateContext as *const (),
+        "OSMesaCreateContextExt" => OSMesaCreateContextExt as *const (),
+        "OSMesaCreateContextAttribs" => OSMesaCreateContextAttribs as *const (),
+        "OSMesaDestroyContext" => OSMesaDestroyContext as *const (),
+        "OSMesaMakeCurrent" => OSMesaMakeCurrent as *const (),
+        "OSMesaGetCurrentContext" => OSMesaGetCurrentContext as *const (),
+        "OSMesaPixelStore" => OSMesaPixelStore as *const (),
+        "OSMesaGetIntegerv" => OSMesaGetIntegerv as *const (),
+        "OSMesaGetDepthBuffer" => OSMesaGetDepthBuffer as *const (),
+        "OSMesaGetColorBuffer" => OSMesaGetColorBuffer as *const (),
+        "OSMesaGetProcAddress" => OSMesaGetProcAddress as *const (),
+        "OSMesaColorClamp" => OSMesaColorClamp as *const (),
+        _ => return None,
+    })
+}
