@@ -1,0 +1,209 @@
+//! Drives the C entry points the way a C program would.
+
+use gl::enums::*;
+use std::ffi::{c_void, CStr};
+use std::ptr::{null, null_mut};
+use OSMesa::*;
+use OSMesa::{GL_FALSE, GL_TRUE};
+
+const W: i32 = 32;
+const H: i32 = 16;
+
+const VS: &str = "attribute vec2 pos;\nattribute vec3 col;\nvarying vec3 v;\n\
+void main() { v = col; gl_Position = vec4(pos, 0.0, 1.0); }\n";
+const FS: &str = "varying vec3 v;\nuniform float k;\nvoid main() { gl_FragColor = vec4(v * k, 1.0); }\n";
+
+unsafe fn shader(kind: u32, src: &str) -> u32 {
+    let s = glCreateShader(kind);
+    let p = src.as_ptr() as *const GLchar;
+    let len = src.len() as GLint;
+    glShaderSource(s, 1, &p, &len);
+    glCompileShader(s);
+    s
+}
+
+unsafe fn info_log(s: u32) -> String {
+    let mut buf = vec![0 as GLchar; 4096];
+    let mut len = 0;
+    glGetShaderInfoLog(s, buf.len() as i32, &mut len, buf.as_mut_ptr());
+    CStr::from_ptr(buf.as_ptr()).to_string_lossy().into_owned()
+}
+
+fn px(buf: &[u8], x: i32, y: i32) -> [u8; 4] {
+    let i = ((y * W + x) * 4) as usize;
+    [buf[i], buf[i + 1], buf[i + 2], buf[i + 3]]
+}
+
+#[test]
+fn triangle_with_attrib_pointers_lands_in_the_client_buffer() {
+    unsafe {
+        let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, null_mut());
+        assert!(!ctx.is_null());
+        let mut buf = vec![7u8; (W * H * 4) as usize];
+        assert_eq!(
+            OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, W, H),
+            GL_TRUE
+        );
+        assert_eq!(OSMesaGetCurrentContext(), ctx);
+        let mut v = [0i32; 4];
+        glGetIntegerv(GL_VIEWPORT, v.as_mut_ptr());
+        assert_eq!(v, [0, 0, W, H]);
+        let version = CStr::from_ptr(glGetString(GL_VERSION) as *const _);
+        assert!(version.to_str().unwrap().starts_with("2.1 shaderbox"));
+
+        let vs = shader(GL_VERTEX_SHADER, VS);
+        let fs = shader(GL_FRAGMENT_SHADER, FS);
+        let mut ok = 0;
+        glGetShaderiv(vs, GL_COMPILE_STATUS, &mut ok);
+        assert_eq!(ok, 1, "{}", info_log(vs));
+        let prog = glCreateProgram();
+        glAttachShader(prog, vs);
+        glAttachShader(prog, fs);
+        glBindAttribLocation(prog, 1, c"col".as_ptr());
+        glLinkProgram(prog);
+        glGetProgramiv(prog, GL_LINK_STATUS, &mut ok);
+        assert_eq!(ok, 1);
+        glUseProgram(prog);
+        assert_eq!(glGetAttribLocation(prog, c"col".as_ptr()), 1);
+        let k = glGetUniformLocation(prog, c"k".as_ptr());
+        assert!(k >= 0);
+        glUniform1f(k, 1.0);
+
+        glClearColor(0.0, 0.0, 1.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        // Cleared: blue, already in the buffer (no glFinish yet).
+        assert_eq!(px(&buf, 0, 0), [0, 0, 255, 255]);
+
+        // Interleaved: pos.xy, col.rgb; a big triangle covering the lower
+        // left half, red at every vertex.
+        let verts: Vec<f32> = vec![
+            -1.0, -1.0, 1.0, 0.0, 0.0, //
+            3.0, -1.0, 1.0, 0.0, 0.0, //
+            -1.0, 3.0, 1.0, 0.0, 0.0,
+        ];
+        let pos = glGetAttribLocation(prog, c"pos".as_ptr()) as u32;
+        glVertexAttribPointer(pos, 2, GL_FLOAT, 0, 20, verts.as_ptr() as *const c_void);
+        glVertexAttribPointer(1, 3, GL_FLOAT, 0, 20, verts.as_ptr().add(2) as *const c_void);
+        glEnableVertexAttribArray(pos);
+        glEnableVertexAttribArray(1);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glFinish();
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        assert_eq!(px(&buf, 0, 0), [255, 0, 0, 255]);
+        assert_eq!(px(&buf, W - 1, H - 1), [255, 0, 0, 255]);
+
+        // Indexed, with half brightness, on the top-right region only.
+        glClear(GL_COLOR_BUFFER_BIT);
+        glUniform1f(k, 0.5);
+        let quad: Vec<f32> = vec![
+            0.0, 0.0, 0.0, 1.0, 0.0, //
+            1.0, 0.0, 0.0, 1.0, 0.0, //
+            1.0, 1.0, 0.0, 1.0, 0.0, //
+            0.0, 1.0, 0.0, 1.0, 0.0,
+        ];
+        glVertexAttribPointer(pos, 2, GL_FLOAT, 0, 20, quad.as_ptr() as *const c_void);
+        glVertexAttribPointer(1, 3, GL_FLOAT, 0, 20, quad.as_ptr().add(2) as *const c_void);
+        let idx: [u16; 6] = [0, 1, 2, 0, 2, 3];
+        glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_SHORT, idx.as_ptr() as *const c_void);
+        glFinish();
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        assert_eq!(px(&buf, 0, 0), [0, 0, 255, 255]);
+        assert_eq!(px(&buf, W - 1, H - 1), [0, 128, 0, 255]);
+
+        // glReadPixels agrees with the buffer (both bottom row first).
+        let mut rp = vec![0u8; (W * H * 4) as usize];
+        glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, rp.as_mut_ptr() as *mut c_void);
+        assert_eq!(rp, buf);
+
+        // Y_UP = 0: top row first.
+        OSMesaPixelStore(OSMESA_Y_UP, 0);
+        assert_eq!(px(&buf, W - 1, 0), [0, 128, 0, 255]);
+
+        // Errors, never crashes.
+        glShaderSource(vs, -1, null(), null());
+        assert_eq!(glGetError(), GL_INVALID_VALUE);
+        glEnable(0xdead);
+        assert_eq!(glGetError(), GL_INVALID_ENUM);
+        glLoadMatrixf(null());
+        glDrawArrays(GL_TRIANGLES, 0, -1);
+        assert_eq!(glGetError(), GL_INVALID_VALUE);
+
+        OSMesaDestroyContext(ctx);
+        assert!(OSMesaGetCurrentContext().is_null());
+        assert_eq!(glGetError(), GL_NO_ERROR); // no context: nothing
+        OSMesaDestroyContext(ctx); // stale handle: ignored
+    }
+}
+
+#[test]
+fn bad_shader_reports_compile_status_false_with_a_log() {
+    unsafe {
+        let ctx = OSMesaCreateContext(OSMESA_BGRA, null_mut());
+        let mut buf = vec![0u8; 4 * 4 * 4];
+        assert_eq!(
+            OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, 4, 4),
+            GL_TRUE
+        );
+        let s = shader(GL_FRAGMENT_SHADER, "void main() { gl_FragColor = undefined_thing; }");
+        let mut ok = 1;
+        glGetShaderiv(s, GL_COMPILE_STATUS, &mut ok);
+        assert_eq!(ok, 0);
+        let mut len = 0;
+        glGetShaderiv(s, GL_INFO_LOG_LENGTH, &mut len);
+        assert!(len > 1);
+        let log = info_log(s);
+        assert!(log.contains("undefined_thing"), "{log}");
+
+        // BGRA byte order.
+        glClearColor(1.0, 0.0, 0.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        assert_eq!(&buf[0..4], &[0, 0, 255, 255]);
+        OSMesaMakeCurrent(null_mut(), null_mut(), 0, 0, 0);
+        OSMesaDestroyContext(ctx);
+    }
+}
+
+#[test]
+fn context_attribs_and_queries() {
+    unsafe {
+        let attribs = [
+            OSMESA_FORMAT,
+            OSMESA_RGB as i32,
+            OSMESA_DEPTH_BITS,
+            16,
+            OSMESA_PROFILE,
+            OSMESA_COMPAT_PROFILE,
+            OSMESA_CONTEXT_MAJOR_VERSION,
+            2,
+            OSMESA_CONTEXT_MINOR_VERSION,
+            1,
+            0,
+        ];
+        let ctx = OSMesaCreateContextAttribs(attribs.as_ptr(), null_mut());
+        assert!(!ctx.is_null());
+        let core = [OSMESA_PROFILE, OSMESA_CORE_PROFILE, 0];
+        assert!(OSMesaCreateContextAttribs(core.as_ptr(), null_mut()).is_null());
+        let v33 = [OSMESA_CONTEXT_MAJOR_VERSION, 3, 0];
+        assert!(OSMesaCreateContextAttribs(v33.as_ptr(), null_mut()).is_null());
+
+        let mut buf = vec![0u8; 5 * 3 * 3];
+        let p = buf.as_mut_ptr() as *mut c_void;
+        assert_eq!(OSMesaMakeCurrent(ctx, p, GL_FLOAT, 0, 3), GL_FALSE);
+        assert_eq!(OSMesaMakeCurrent(ctx, p, GL_UNSIGNED_BYTE, 5, 3), GL_TRUE);
+        let mut w = 0;
+        OSMesaGetIntegerv(OSMESA_WIDTH, &mut w);
+        assert_eq!(w, 5);
+        glClearDepth(0.5);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        let (mut dw, mut dh, mut bpv, mut dp) = (0, 0, 0, null_mut());
+        assert_eq!(OSMesaGetDepthBuffer(ctx, &mut dw, &mut dh, &mut bpv, &mut dp), GL_TRUE);
+        assert_eq!((dw, dh, bpv), (5, 3, 2));
+        let d = *(dp as *const u16);
+        assert!((d as i32 - 32767).abs() <= 1, "{d}");
+
+        let f = OSMesaGetProcAddress(c"glClear".as_ptr());
+        assert!(f.is_some());
+        assert!(OSMesaGetProcAddress(c"glNoSuchThing".as_ptr()).is_none());
+        OSMesaDestroyContext(ctx);
+    }
+}
