@@ -100,7 +100,11 @@ impl ClientArrays {
 /// from `ptr` (bytes before vertex `lo` are zero, never read).
 fn copy_range(ptr: *const u8, a: &ArrayState, lo: u32, hi: u32) -> Option<Vec<u8>> {
     let elem = (a.size.max(0) as usize).checked_mul(type_size(a.ty)?)?;
-    let stride = if a.stride > 0 { a.stride as usize } else { elem };
+    let stride = if a.stride > 0 {
+        a.stride as usize
+    } else {
+        elem
+    };
     let start = (lo as usize).checked_mul(stride)?;
     let end = (hi as usize).checked_mul(stride)?.checked_add(elem)?;
     if end > MAX_ARRAY_COPY || start > end {

@@ -38,6 +38,8 @@ pub struct OsContext {
     pub depth_copy: DepthCopy,
     /// Client-memory vertex array pointers.
     pub arrays: ClientArrays,
+    /// Pixels changed since the last copy to the client buffer.
+    pub dirty: bool,
     /// glGetString results, kept alive for the context's lifetime.
     pub strings: std::collections::BTreeMap<u32, std::ffi::CString>,
 }
@@ -64,6 +66,7 @@ impl OsContext {
             row_length: 0,
             y_up: true,
             sized: false,
+            dirty: true,
             depth_copy: DepthCopy::None,
             arrays: ClientArrays::default(),
             strings: Default::default(),
@@ -88,9 +91,18 @@ impl OsContext {
         Some(comps * size)
     }
 
+    /// Copies the default framebuffer into the client buffer if drawing
+    /// changed it since the last copy ([`OsContext::copy_out`]).
+    pub fn sync(&mut self) {
+        if self.dirty {
+            self.copy_out();
+        }
+    }
+
     /// Copies the default framebuffer into the client buffer in its format
     /// and type, rows bottom first unless OSMESA_Y_UP is 0.
-    pub fn sync(&mut self) {
+    pub fn copy_out(&mut self) {
+        self.dirty = false;
         if self.buffer.is_null() || self.width <= 0 || self.height <= 0 {
             return;
         }
@@ -108,9 +120,8 @@ impl OsContext {
         // SAFETY: OSMesaMakeCurrent's contract: `buffer` holds at least
         // row_length * height pixels of the format and type given there
         // (row_length >= width), and stays valid while the context uses it.
-        let out = unsafe {
-            std::slice::from_raw_parts_mut(self.buffer as *mut u8, row_px * h * px)
-        };
+        let out =
+            unsafe { std::slice::from_raw_parts_mut(self.buffer as *mut u8, row_px * h * px) };
         for y in 0..h {
             let dst_row = if self.y_up { y } else { h - 1 - y };
             for x in 0..w {
@@ -201,11 +212,15 @@ pub fn register(ctx: *mut OsContext) {
 
 /// Removes `ctx` from the live set; false if it was not live.
 pub fn unregister(ctx: *mut OsContext) -> bool {
-    LIVE.lock().map(|mut l| l.remove(&(ctx as usize))).unwrap_or(false)
+    LIVE.lock()
+        .map(|mut l| l.remove(&(ctx as usize)))
+        .unwrap_or(false)
 }
 
 pub fn is_live(ctx: *mut OsContext) -> bool {
-    LIVE.lock().map(|l| l.contains(&(ctx as usize))).unwrap_or(false)
+    LIVE.lock()
+        .map(|l| l.contains(&(ctx as usize)))
+        .unwrap_or(false)
 }
 
 pub fn current() -> *mut OsContext {

@@ -4,8 +4,8 @@
 //! nothing and returns 0/null), with panics caught. Pointer arguments GL
 //! allows to be null are checked; a null pointer where GL requires memory
 //! makes the call a no-op instead of a crash. Commands that can change
-//! pixels of the default framebuffer copy it into the client's buffer
-//! afterwards ([`OsContext::sync`]).
+//! pixels mark the context dirty; glFinish, glFlush and glReadPixels copy
+//! the default framebuffer into the client's buffer ([`OsContext::sync`]).
 
 use crate::context::{with_ctx, OsContext};
 use crate::types::*;
@@ -113,9 +113,8 @@ unsafe fn element_indices(
         // Read the bound buffer without disturbing the error flag (the
         // draw reports range errors itself).
         let saved = c.gl.get_error();
-        let bytes = c
-            .gl
-            .get_buffer_sub_data(GL_ELEMENT_ARRAY_BUFFER, indices as isize, n as isize);
+        let bytes =
+            c.gl.get_buffer_sub_data(GL_ELEMENT_ARRAY_BUFFER, indices as isize, n as isize);
         let _ = c.gl.get_error();
         c.gl.record_error(saved);
         (ArrayData::Offset(indices as usize), bytes)
@@ -219,7 +218,7 @@ gl_entry_points! {
     }
     fn glClearDepth(d: GLclampd) => |c| { c.gl.clear_depth(d) }
     fn glClearStencil(s: GLint) => |c| { c.gl.clear_stencil(s) }
-    fn glClear(mask: GLbitfield) => |c| { c.gl.clear(mask); c.sync(); }
+    fn glClear(mask: GLbitfield) => |c| { c.gl.clear(mask); c.dirty = true; }
     fn glColorMask(r: GLboolean, g: GLboolean, bl: GLboolean, a: GLboolean) => |c| {
         c.gl.color_mask(b(r), b(g), b(bl), b(a))
     }
@@ -257,6 +256,7 @@ gl_entry_points! {
             std::slice::from_raw_parts_mut(pixels as *mut u8, len)
         };
         c.gl.read_pixels(x, y, w, h, format, ty, out);
+        c.sync();
     }
 
     // ---- matrices ----
@@ -297,7 +297,7 @@ gl_entry_points! {
 
     // ---- immediate mode ----
     fn glBegin(mode: GLenum) => |c| { c.gl.begin(mode) }
-    fn glEnd() => |c| { c.gl.end(); c.sync(); }
+    fn glEnd() => |c| { c.gl.end(); c.dirty = true; }
     fn glVertex2f(x: GLfloat, y: GLfloat) => |c| { c.gl.vertex_4f(x, y, 0.0, 1.0) }
     fn glVertex3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.vertex_4f(x, y, z, 1.0) }
     fn glVertex4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| { c.gl.vertex_4f(x, y, z, w) }
@@ -387,7 +387,7 @@ gl_entry_points! {
     }
     fn glRectf(x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) => |c| {
         c.gl.rectf(x1, y1, x2, y2);
-        c.sync();
+        c.dirty = true;
     }
 
     // ---- lighting, fog ----
@@ -609,7 +609,7 @@ gl_entry_points! {
             c.arrays.prepare(&mut c.gl, first as u32, last as u32);
         }
         c.gl.draw_arrays(mode, first, count);
-        c.sync();
+        c.dirty = true;
     }
     fn glDrawElements(mode: GLenum, count: GLsizei, ty: GLenum, indices: *const c_void) => |c| {
         let (data, idx) = element_indices(c, count, ty, indices);
@@ -617,6 +617,6 @@ gl_entry_points! {
             c.arrays.prepare(&mut c.gl, *lo, *hi);
         }
         c.gl.draw_elements(mode, count, ty, data);
-        c.sync();
+        c.dirty = true;
     }
 }

@@ -101,6 +101,8 @@ pub unsafe extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
         if context::current() == ctx {
             context::set_current(std::ptr::null_mut());
         }
+        // SAFETY: `ctx` is live; the client's buffer is still valid.
+        unsafe { &mut *ctx }.sync();
         // SAFETY: `ctx` was live (created by Box::into_raw, not yet freed).
         drop(unsafe { Box::from_raw(ctx) });
     })
@@ -152,7 +154,7 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
             c.gl.scissor(0, 0, width, height);
         }
         context::set_current(ctx);
-        c.sync();
+        c.copy_out();
         GL_TRUE
     })
 }
@@ -173,7 +175,7 @@ pub extern "C" fn OSMesaPixelStore(pname: GLint, value: GLint) {
             OSMESA_ROW_LENGTH => c.gl.record_error(gl::enums::GL_INVALID_VALUE),
             _ => c.gl.record_error(gl::enums::GL_INVALID_ENUM),
         }
-        c.sync();
+        c.copy_out();
     })
 }
 

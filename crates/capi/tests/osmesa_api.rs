@@ -11,7 +11,8 @@ const H: i32 = 16;
 
 const VS: &str = "attribute vec2 pos;\nattribute vec3 col;\nvarying vec3 v;\n\
 void main() { v = col; gl_Position = vec4(pos, 0.0, 1.0); }\n";
-const FS: &str = "varying vec3 v;\nuniform float k;\nvoid main() { gl_FragColor = vec4(v * k, 1.0); }\n";
+const FS: &str =
+    "varying vec3 v;\nuniform float k;\nvoid main() { gl_FragColor = vec4(v * k, 1.0); }\n";
 
 unsafe fn shader(kind: u32, src: &str) -> u32 {
     let s = glCreateShader(kind);
@@ -71,7 +72,9 @@ fn triangle_with_attrib_pointers_lands_in_the_client_buffer() {
 
         glClearColor(0.0, 0.0, 1.0, 1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        // Cleared: blue, already in the buffer (no glFinish yet).
+        // Not copied until a flush (Mesa's llvmpipe bins draws too).
+        assert_eq!(px(&buf, 0, 0), [0, 0, 0, 0]);
+        glFlush();
         assert_eq!(px(&buf, 0, 0), [0, 0, 255, 255]);
 
         // Interleaved: pos.xy, col.rgb; a big triangle covering the lower
@@ -83,7 +86,14 @@ fn triangle_with_attrib_pointers_lands_in_the_client_buffer() {
         ];
         let pos = glGetAttribLocation(prog, c"pos".as_ptr()) as u32;
         glVertexAttribPointer(pos, 2, GL_FLOAT, 0, 20, verts.as_ptr() as *const c_void);
-        glVertexAttribPointer(1, 3, GL_FLOAT, 0, 20, verts.as_ptr().add(2) as *const c_void);
+        glVertexAttribPointer(
+            1,
+            3,
+            GL_FLOAT,
+            0,
+            20,
+            verts.as_ptr().add(2) as *const c_void,
+        );
         glEnableVertexAttribArray(pos);
         glEnableVertexAttribArray(1);
         glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -104,7 +114,12 @@ fn triangle_with_attrib_pointers_lands_in_the_client_buffer() {
         glVertexAttribPointer(pos, 2, GL_FLOAT, 0, 20, quad.as_ptr() as *const c_void);
         glVertexAttribPointer(1, 3, GL_FLOAT, 0, 20, quad.as_ptr().add(2) as *const c_void);
         let idx: [u16; 6] = [0, 1, 2, 0, 2, 3];
-        glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_SHORT, idx.as_ptr() as *const c_void);
+        glDrawElements(
+            GL_TRIANGLES,
+            6,
+            GL_UNSIGNED_SHORT,
+            idx.as_ptr() as *const c_void,
+        );
         glFinish();
         assert_eq!(glGetError(), GL_NO_ERROR);
         assert_eq!(px(&buf, 0, 0), [0, 0, 255, 255]);
@@ -112,7 +127,15 @@ fn triangle_with_attrib_pointers_lands_in_the_client_buffer() {
 
         // glReadPixels agrees with the buffer (both bottom row first).
         let mut rp = vec![0u8; (W * H * 4) as usize];
-        glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, rp.as_mut_ptr() as *mut c_void);
+        glReadPixels(
+            0,
+            0,
+            W,
+            H,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            rp.as_mut_ptr() as *mut c_void,
+        );
         assert_eq!(rp, buf);
 
         // Y_UP = 0: top row first.
@@ -144,7 +167,10 @@ fn bad_shader_reports_compile_status_false_with_a_log() {
             OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, 4, 4),
             GL_TRUE
         );
-        let s = shader(GL_FRAGMENT_SHADER, "void main() { gl_FragColor = undefined_thing; }");
+        let s = shader(
+            GL_FRAGMENT_SHADER,
+            "void main() { gl_FragColor = undefined_thing; }",
+        );
         let mut ok = 1;
         glGetShaderiv(s, GL_COMPILE_STATUS, &mut ok);
         assert_eq!(ok, 0);
@@ -157,6 +183,7 @@ fn bad_shader_reports_compile_status_false_with_a_log() {
         // BGRA byte order.
         glClearColor(1.0, 0.0, 0.0, 1.0);
         glClear(GL_COLOR_BUFFER_BIT);
+        glFinish();
         assert_eq!(&buf[0..4], &[0, 0, 255, 255]);
         OSMesaMakeCurrent(null_mut(), null_mut(), 0, 0, 0);
         OSMesaDestroyContext(ctx);
@@ -196,7 +223,10 @@ fn context_attribs_and_queries() {
         glClearDepth(0.5);
         glClear(GL_DEPTH_BUFFER_BIT);
         let (mut dw, mut dh, mut bpv, mut dp) = (0, 0, 0, null_mut());
-        assert_eq!(OSMesaGetDepthBuffer(ctx, &mut dw, &mut dh, &mut bpv, &mut dp), GL_TRUE);
+        assert_eq!(
+            OSMesaGetDepthBuffer(ctx, &mut dw, &mut dh, &mut bpv, &mut dp),
+            GL_TRUE
+        );
         assert_eq!((dw, dh, bpv), (5, 3, 2));
         let d = *(dp as *const u16);
         assert!((d as i32 - 32767).abs() <= 1, "{d}");
