@@ -196,13 +196,8 @@ impl Context {
         }
         self.width = w;
         self.height = h;
-        self.fb = raster::Framebuffer::new(
-            w as u32,
-            h as u32,
-            raster::ColorFormat::Rgba8,
-            true,
-            true,
-        );
+        self.fb =
+            raster::Framebuffer::new(w as u32, h as u32, raster::ColorFormat::Rgba8, true, true);
     }
 
     /// The vertex-array state (pointers, enables, client active texture),
