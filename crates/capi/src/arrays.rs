@@ -117,3 +117,31 @@ fn copy_range(ptr: *const u8, a: &ArrayState, lo: u32, hi: u32) -> Option<Vec<u8
     v[start..end].copy_from_slice(src);
     Some(v)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn copies_only_the_vertices_drawn() {
+        let data: Vec<u8> = (0..64).collect();
+        let a = ArrayState {
+            enabled: true,
+            size: 2,
+            ty: gl::enums::GL_UNSIGNED_BYTE,
+            normalized: false,
+            stride: 8,
+            buffer: 0,
+            data: ArrayData::default(),
+        };
+        let v = copy_range(data.as_ptr(), &a, 2, 3).unwrap();
+        assert_eq!(v.len(), 3 * 8 + 2);
+        assert!(v[..16].iter().all(|&b| b == 0));
+        assert_eq!(&v[16..], &data[16..26]);
+        let huge = ArrayState {
+            stride: i32::MAX,
+            ..a
+        };
+        assert!(copy_range(data.as_ptr(), &huge, 0, u32::MAX).is_none());
+    }
+}

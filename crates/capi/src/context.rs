@@ -38,6 +38,12 @@ pub struct OsContext {
     pub depth_copy: DepthCopy,
     /// Client-memory vertex array pointers.
     pub arrays: ClientArrays,
+    /// Buffers bound to GL_PIXEL_PACK_BUFFER / GL_PIXEL_UNPACK_BUFFER (the
+    /// context does not implement pixel buffer objects; while one is bound,
+    /// pixel pointers are offsets, so calls that would read or write
+    /// through them raise GL_INVALID_OPERATION instead).
+    pub pack_buffer: u32,
+    pub unpack_buffer: u32,
     /// Pixels changed since the last copy to the client buffer.
     pub dirty: bool,
     /// glGetString results, kept alive for the context's lifetime.
@@ -67,6 +73,8 @@ impl OsContext {
             y_up: true,
             sized: false,
             dirty: true,
+            pack_buffer: 0,
+            unpack_buffer: 0,
             depth_copy: DepthCopy::None,
             arrays: ClientArrays::default(),
             strings: Default::default(),
@@ -248,4 +256,39 @@ pub fn with_ctx<R>(default: R, f: impl FnOnce(&mut OsContext) -> R) -> R {
 /// Runs `f` with panics caught (for entry points without a context).
 pub fn guard<R>(default: R, f: impl FnOnce() -> R) -> R {
     catch_unwind(AssertUnwindSafe(f)).unwrap_or(default)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pixel_encodings() {
+        let p = [10, 20, 30, 40];
+        let mut d = [0u8; 4];
+        encode_pixel(p, OSMESA_ARGB, GL_UNSIGNED_BYTE, &mut d);
+        assert_eq!(d, [40, 10, 20, 30]);
+        let mut d = [0u8; 3];
+        encode_pixel(p, OSMESA_BGR, GL_UNSIGNED_BYTE, &mut d);
+        assert_eq!(d, [30, 20, 10]);
+        let mut d = [0u8; 2];
+        encode_pixel(
+            [255, 0, 255, 255],
+            OSMESA_RGB_565,
+            GL_UNSIGNED_SHORT_5_6_5,
+            &mut d,
+        );
+        assert_eq!(u16::from_ne_bytes(d), 0xf81f);
+        let mut d = [0u8; 16];
+        encode_pixel([255, 0, 0, 51], OSMESA_RGBA, GL_FLOAT, &mut d);
+        assert_eq!(f32::from_ne_bytes([d[12], d[13], d[14], d[15]]), 0.2);
+        assert_eq!(
+            OsContext::pixel_bytes(OSMESA_RGB_565, GL_UNSIGNED_BYTE),
+            None
+        );
+        assert_eq!(
+            OsContext::pixel_bytes(OSMESA_RGB, GL_UNSIGNED_SHORT),
+            Some(6)
+        );
+    }
 }

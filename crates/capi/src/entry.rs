@@ -15,6 +15,10 @@ use gl::ArrayData;
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::sync::Arc;
 
+/// Largest glBufferData/glBufferSubData copy (larger: GL_OUT_OF_MEMORY
+/// from the context, or GL_INVALID_VALUE).
+const MAX_BUFFER_BYTES: usize = 1 << 31;
+
 /// Most array elements read from client memory by one glUniform*v call.
 const MAX_UNIFORM_ELEMENTS: i32 = 4096;
 
@@ -85,6 +89,37 @@ unsafe fn wr_string(
     };
     // SAFETY: out pointer or null.
     unsafe { wr(length, &[n as GLsizei]) };
+}
+
+/// The client image a glTexImage*/glTexSubImage* call reads: `w*h*d`
+/// pixels of `format`/`ty` at the unpack alignment (None for null data,
+/// an unknown format/type or an empty image: the context validates).
+unsafe fn image_bytes(
+    c: &mut OsContext,
+    w: GLsizei,
+    h: GLsizei,
+    d: GLsizei,
+    format: GLenum,
+    ty: GLenum,
+    data: *const c_void,
+) -> Option<Vec<u8>> {
+    if data.is_null() || w <= 0 || h <= 0 || d <= 0 || c.unpack_buffer != 0 {
+        return None;
+    }
+    gl::objects::pixel_size(format, ty)?;
+    let align =
+        c.gl.get_integerv(GL_UNPACK_ALIGNMENT)
+            .first()
+            .copied()
+            .unwrap_or(4);
+    let row = gl::objects::row_stride(w as usize, format, ty, align.max(1) as usize);
+    let len = row.checked_mul(h as usize)?.checked_mul(d as usize)?;
+    if len > MAX_BUFFER_BYTES {
+        return None;
+    }
+    // SAFETY: GL's contract: the client image holds w x h x d pixels of
+    // format/type laid out per the unpack state.
+    Some(unsafe { std::slice::from_raw_parts(data as *const u8, len) }.to_vec())
 }
 
 fn b(x: GLboolean) -> bool {
@@ -238,6 +273,10 @@ gl_entry_points! {
         x: GLint, y: GLint, w: GLsizei, h: GLsizei, format: GLenum, ty: GLenum,
         pixels: *mut c_void
     ) => |c| {
+        if c.pack_buffer != 0 {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
         let align = c.gl.get_integerv(GL_PACK_ALIGNMENT).first().copied().unwrap_or(4).max(1);
         let len = if w > 0 && h > 0 && gl::objects::pixel_size(format, ty).is_some() {
             gl::objects::row_stride(w as usize, format, ty, align as usize)
@@ -564,6 +603,432 @@ gl_entry_points! {
     fn glUniformMatrix4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
         let n = count.min(MAX_UNIFORM_ELEMENTS);
         c.gl.uniform_matrix_4fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 16));
+    }
+
+    // ---- more state ----
+    fn glBlendFuncSeparate(sr: GLenum, dr: GLenum, sa: GLenum, da: GLenum) => |c| {
+        c.gl.blend_func_separate(sr, dr, sa, da)
+    }
+    fn glBlendEquationSeparate(rgb: GLenum, alpha: GLenum) => |c| {
+        c.gl.blend_equation_separate(rgb, alpha)
+    }
+    fn glBlendColor(r: GLclampf, g: GLclampf, bl: GLclampf, a: GLclampf) => |c| {
+        c.gl.blend_color(r, g, bl, a)
+    }
+    fn glLogicOp(op: GLenum) => |c| { c.gl.logic_op(op) }
+    fn glStencilFunc(func: GLenum, reference: GLint, mask: GLuint) => |c| {
+        c.gl.stencil_func(func, reference, mask)
+    }
+    fn glStencilOp(fail: GLenum, zfail: GLenum, zpass: GLenum) => |c| { c.gl.stencil_op(fail, zfail, zpass) }
+    fn glStencilMask(mask: GLuint) => |c| { c.gl.stencil_mask(mask) }
+    fn glStencilFuncSeparate(face: GLenum, func: GLenum, reference: GLint, mask: GLuint) => |c| {
+        c.gl.stencil_func_separate(face, func, reference, mask)
+    }
+    fn glStencilOpSeparate(face: GLenum, fail: GLenum, zfail: GLenum, zpass: GLenum) => |c| {
+        c.gl.stencil_op_separate(face, fail, zfail, zpass)
+    }
+    fn glStencilMaskSeparate(face: GLenum, mask: GLuint) => |c| { c.gl.stencil_mask_separate(face, mask) }
+    fn glClipPlane(plane: GLenum, eq: *const GLdouble) => |c| {
+        if let Some(e) = rd::<4, f64>(eq) { c.gl.clip_plane(plane, &e) }
+    }
+    fn glGetClipPlane(plane: GLenum, eq: *mut GLdouble) => |c| {
+        let e = c.gl.get_clip_plane(plane);
+        wr(eq, &e);
+    }
+    fn glLoadTransposeMatrixf(m: *const GLfloat) => |c| {
+        if let Some(m) = rd::<16, f32>(m) { c.gl.load_transpose_matrixf(&m) }
+    }
+    fn glMultTransposeMatrixf(m: *const GLfloat) => |c| {
+        if let Some(m) = rd::<16, f32>(m) { c.gl.mult_transpose_matrixf(&m) }
+    }
+    fn glPointParameterf(pname: GLenum, v: GLfloat) => |c| { c.gl.point_parameterf(pname, v) }
+    fn glPointParameteri(pname: GLenum, v: GLint) => |c| { c.gl.point_parameteri(pname, v) }
+    fn glPointParameterfv(pname: GLenum, v: *const GLfloat) => |c| {
+        let n = if pname == GL_POINT_DISTANCE_ATTENUATION { 3 } else { 1 };
+        if !v.is_null() { c.gl.point_parameterfv(pname, &rd_vec(v, n)) }
+    }
+    fn glGetLightfv(light: GLenum, pname: GLenum, v: *mut GLfloat) => |c| {
+        let r = c.gl.get_lightfv(light, pname);
+        wr(v, &r);
+    }
+    fn glGetMaterialfv(face: GLenum, pname: GLenum, v: *mut GLfloat) => |c| {
+        let r = c.gl.get_materialfv(face, pname);
+        wr(v, &r);
+    }
+    fn glLightiv(light: GLenum, pname: GLenum, v: *const GLint) => |c| {
+        let n = match pname {
+            GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => 4,
+            GL_SPOT_DIRECTION => 3,
+            _ => 1,
+        };
+        if !v.is_null() { c.gl.lightiv(light, pname, &rd_vec(v, n)) }
+    }
+    fn glMaterialiv(face: GLenum, pname: GLenum, v: *const GLint) => |c| {
+        let n = match pname {
+            GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => 4,
+            GL_COLOR_INDEXES => 3,
+            _ => 1,
+        };
+        if !v.is_null() { c.gl.materialiv(face, pname, &rd_vec(v, n)) }
+    }
+    fn glLightModeliv(pname: GLenum, v: *const GLint) => |c| {
+        let n = if pname == GL_LIGHT_MODEL_AMBIENT { 4 } else { 1 };
+        if !v.is_null() { c.gl.light_modeliv(pname, &rd_vec(v, n)) }
+    }
+    fn glTexEnvi(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_envi(target, pname, v) }
+    fn glTexEnvf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_envf(target, pname, v) }
+    fn glTexEnvfv(target: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
+        let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
+        if !v.is_null() { c.gl.tex_envfv(target, pname, &rd_vec(v, n)) }
+    }
+    fn glTexEnviv(target: GLenum, pname: GLenum, v: *const GLint) => |c| {
+        let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
+        if !v.is_null() { c.gl.tex_enviv(target, pname, &rd_vec(v, n)) }
+    }
+    fn glTexGeni(coord: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_geni(coord, pname, v) }
+    fn glTexGenf(coord: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_genf(coord, pname, v) }
+    fn glTexGenfv(coord: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
+        let n = if pname == GL_TEXTURE_GEN_MODE { 1 } else { 4 };
+        if !v.is_null() { c.gl.tex_genfv(coord, pname, &rd_vec(v, n)) }
+    }
+
+    // ---- textures ----
+    fn glGenTextures(n: GLsizei, names: *mut GLuint) => |c| {
+        let v = c.gl.gen_textures(n);
+        wr(names, &v);
+    }
+    fn glDeleteTextures(n: GLsizei, names: *const GLuint) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        c.gl.delete_textures(&rd_vec(names, n as i64));
+    }
+    fn glIsTexture(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_texture(name) as GLboolean }
+    fn glBindTexture(target: GLenum, name: GLuint) => |c| { c.gl.bind_texture(target, name) }
+    fn glTexParameteri(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_parameteri(target, pname, v) }
+    fn glTexParameterf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_parameterf(target, pname, v) }
+    fn glTexParameterfv(target: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
+        let n = if pname == GL_TEXTURE_BORDER_COLOR { 4 } else { 1 };
+        if !v.is_null() { c.gl.tex_parameterfv(target, pname, &rd_vec(v, n)) }
+    }
+    fn glTexParameteriv(target: GLenum, pname: GLenum, v: *const GLint) => |c| {
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            let f: Vec<f32> = rd_vec(v, 4).iter().map(|&x| gl::state::int_to_unit(x)).collect();
+            if !v.is_null() { c.gl.tex_parameterfv(target, pname, &f) }
+        } else if let Some([x]) = rd::<1, i32>(v) {
+            c.gl.tex_parameteri(target, pname, x)
+        }
+    }
+    fn glGetTexParameteriv(target: GLenum, pname: GLenum, v: *mut GLint) => |c| {
+        let r = c.gl.get_tex_parameteriv(target, pname);
+        wr(v, &[r]);
+    }
+    fn glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, v: *mut GLint) => |c| {
+        let r = c.gl.get_tex_level_parameteriv(target, level, pname);
+        wr(v, &[r]);
+    }
+    fn glTexImage1D(
+        target: GLenum, level: GLint, internal: GLint, w: GLsizei, border: GLint,
+        format: GLenum, ty: GLenum, data: *const c_void
+    ) => |c| {
+        if c.unpack_buffer != 0 && !data.is_null() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        let bytes = image_bytes(c, w, 1, 1, format, ty, data);
+        c.gl.tex_image_1d(target, level, internal, w, border, format, ty, bytes.as_deref());
+    }
+    fn glTexImage2D(
+        target: GLenum, level: GLint, internal: GLint, w: GLsizei, h: GLsizei, border: GLint,
+        format: GLenum, ty: GLenum, data: *const c_void
+    ) => |c| {
+        if c.unpack_buffer != 0 && !data.is_null() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        let bytes = image_bytes(c, w, h, 1, format, ty, data);
+        c.gl.tex_image_2d(target, level, internal, w, h, border, format, ty, bytes.as_deref());
+    }
+    fn glTexImage3D(
+        target: GLenum, level: GLint, internal: GLint, w: GLsizei, h: GLsizei, d: GLsizei,
+        border: GLint, format: GLenum, ty: GLenum, data: *const c_void
+    ) => |c| {
+        if c.unpack_buffer != 0 && !data.is_null() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        let bytes = image_bytes(c, w, h, d, format, ty, data);
+        c.gl.tex_image_3d(target, level, internal, w, h, d, border, format, ty, bytes.as_deref());
+    }
+    fn glTexSubImage2D(
+        target: GLenum, level: GLint, xoff: GLint, yoff: GLint, w: GLsizei, h: GLsizei,
+        format: GLenum, ty: GLenum, data: *const c_void
+    ) => |c| {
+        if c.unpack_buffer != 0 && !data.is_null() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        let bytes = image_bytes(c, w, h, 1, format, ty, data).unwrap_or_default();
+        c.gl.tex_sub_image_2d(target, level, xoff, yoff, w, h, format, ty, &bytes);
+    }
+    fn glGenerateMipmap(target: GLenum) => |c| { c.gl.generate_mipmap(target) }
+    fn glGenerateMipmapEXT(target: GLenum) => |c| { c.gl.generate_mipmap_ext(target) }
+
+    // ---- buffer objects ----
+    fn glGenBuffers(n: GLsizei, names: *mut GLuint) => |c| {
+        let v = c.gl.gen_buffers(n);
+        wr(names, &v);
+    }
+    fn glDeleteBuffers(n: GLsizei, names: *const GLuint) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        c.gl.delete_buffers(&rd_vec(names, n as i64));
+    }
+    fn glIsBuffer(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_buffer(name) as GLboolean }
+    fn glBindBuffer(target: GLenum, name: GLuint) => |c| {
+        let before = c.gl.get_error();
+        c.gl.bind_buffer(target, name);
+        let e = c.gl.get_error();
+        c.gl.record_error(if before != GL_NO_ERROR { before } else { e });
+        if e == GL_NO_ERROR {
+            match target {
+                GL_PIXEL_PACK_BUFFER => c.pack_buffer = name,
+                GL_PIXEL_UNPACK_BUFFER => c.unpack_buffer = name,
+                _ => {}
+            }
+        }
+    }
+    fn glBufferData(target: GLenum, size: GLsizeiptr, data: *const c_void, usage: GLenum) => |c| {
+        let bytes = if data.is_null() || size <= 0 || size as usize > MAX_BUFFER_BYTES {
+            None
+        } else {
+            // SAFETY: GL's contract: `size` bytes at `data`.
+            Some(std::slice::from_raw_parts(data as *const u8, size as usize))
+        };
+        c.gl.buffer_data(target, size, bytes, usage);
+    }
+    fn glBufferSubData(target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *const c_void) => |c| {
+        if size < 0 || data.is_null() || size as usize > MAX_BUFFER_BYTES {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        // SAFETY: GL's contract: `size` bytes at `data`.
+        let bytes = std::slice::from_raw_parts(data as *const u8, size as usize);
+        c.gl.buffer_sub_data(target, offset, bytes);
+    }
+
+    // ---- framebuffer objects ----
+    fn glGenFramebuffers(n: GLsizei, names: *mut GLuint) => |c| {
+        let v = c.gl.gen_framebuffers(n);
+        wr(names, &v);
+    }
+    fn glGenFramebuffersEXT(n: GLsizei, names: *mut GLuint) => |c| {
+        let v = c.gl.gen_framebuffers_ext(n);
+        wr(names, &v);
+    }
+    fn glBindFramebuffer(target: GLenum, fb: GLuint) => |c| { c.gl.bind_framebuffer(target, fb) }
+    fn glBindFramebufferEXT(target: GLenum, fb: GLuint) => |c| { c.gl.bind_framebuffer_ext(target, fb) }
+    fn glDeleteFramebuffers(n: GLsizei, names: *const GLuint) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        c.gl.delete_framebuffers(&rd_vec(names, n as i64));
+    }
+    fn glDeleteFramebuffersEXT(n: GLsizei, names: *const GLuint) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        c.gl.delete_framebuffers(&rd_vec(names, n as i64));
+    }
+    fn glIsFramebuffer(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_framebuffer(name) as GLboolean }
+    fn glCheckFramebufferStatus(target: GLenum) -> GLenum [0] => |c| {
+        c.gl.check_framebuffer_status(target)
+    }
+    fn glCheckFramebufferStatusEXT(target: GLenum) -> GLenum [0] => |c| {
+        c.gl.check_framebuffer_status_ext(target)
+    }
+    fn glFramebufferTexture2D(
+        target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint
+    ) => |c| { c.gl.framebuffer_texture_2d(target, attachment, textarget, texture, level) }
+    fn glFramebufferTexture2DEXT(
+        target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint
+    ) => |c| { c.gl.framebuffer_texture_2d_ext(target, attachment, textarget, texture, level) }
+    fn glGenRenderbuffers(n: GLsizei, names: *mut GLuint) => |c| {
+        let v = c.gl.gen_renderbuffers(n);
+        wr(names, &v);
+    }
+    fn glGenRenderbuffersEXT(n: GLsizei, names: *mut GLuint) => |c| {
+        let v = c.gl.gen_renderbuffers_ext(n);
+        wr(names, &v);
+    }
+    fn glBindRenderbuffer(target: GLenum, rb: GLuint) => |c| { c.gl.bind_renderbuffer(target, rb) }
+    fn glBindRenderbufferEXT(target: GLenum, rb: GLuint) => |c| { c.gl.bind_renderbuffer_ext(target, rb) }
+    fn glDeleteRenderbuffers(n: GLsizei, names: *const GLuint) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        c.gl.delete_renderbuffers(&rd_vec(names, n as i64));
+    }
+    fn glDeleteRenderbuffersEXT(n: GLsizei, names: *const GLuint) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        c.gl.delete_renderbuffers(&rd_vec(names, n as i64));
+    }
+    fn glRenderbufferStorage(target: GLenum, internal: GLenum, w: GLsizei, h: GLsizei) => |c| {
+        c.gl.renderbuffer_storage(target, internal, w, h)
+    }
+    fn glRenderbufferStorageEXT(target: GLenum, internal: GLenum, w: GLsizei, h: GLsizei) => |c| {
+        c.gl.renderbuffer_storage_ext(target, internal, w, h)
+    }
+    fn glFramebufferRenderbuffer(
+        target: GLenum, attachment: GLenum, rbtarget: GLenum, rb: GLuint
+    ) => |c| { c.gl.framebuffer_renderbuffer(target, attachment, rbtarget, rb) }
+    fn glFramebufferRenderbufferEXT(
+        target: GLenum, attachment: GLenum, rbtarget: GLenum, rb: GLuint
+    ) => |c| { c.gl.framebuffer_renderbuffer_ext(target, attachment, rbtarget, rb) }
+    fn glDrawBuffer(buf: GLenum) => |c| { c.gl.draw_buffer(buf) }
+    fn glDrawBuffers(n: GLsizei, bufs: *const GLenum) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        c.gl.draw_buffers(&rd_vec(bufs, (n as i64).min(64)));
+    }
+    fn glReadBuffer(buf: GLenum) => |c| { c.gl.read_buffer(buf) }
+
+    // ---- program queries ----
+    fn glGetAttachedShaders(
+        program: GLuint, max: GLsizei, count: *mut GLsizei, shaders: *mut GLuint
+    ) => |c| {
+        if max < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        let v = c.gl.get_attached_shaders(program);
+        let n = v.len().min(max as usize);
+        wr(shaders, &v[..n]);
+        wr(count, &[n as GLsizei]);
+    }
+    fn glGetActiveUniform(
+        program: GLuint, index: GLuint, buf_size: GLsizei, length: *mut GLsizei,
+        size: *mut GLint, ty: *mut GLenum, name: *mut GLchar
+    ) => |c| {
+        if let Some(info) = c.gl.get_active_uniform(program, index) {
+            wr(size, &[info.size]);
+            wr(ty, &[info.ty]);
+            wr_string(c, &info.name, buf_size, length, name);
+        }
+    }
+    fn glGetActiveAttrib(
+        program: GLuint, index: GLuint, buf_size: GLsizei, length: *mut GLsizei,
+        size: *mut GLint, ty: *mut GLenum, name: *mut GLchar
+    ) => |c| {
+        if let Some(info) = c.gl.get_active_attrib(program, index) {
+            wr(size, &[info.size]);
+            wr(ty, &[info.ty]);
+            wr_string(c, &info.name, buf_size, length, name);
+        }
+    }
+    fn glGetUniformfv(program: GLuint, loc: GLint, v: *mut GLfloat) => |c| {
+        let r = c.gl.get_uniformfv(program, loc);
+        wr(v, &r);
+    }
+    fn glGetUniformiv(program: GLuint, loc: GLint, v: *mut GLint) => |c| {
+        let r = c.gl.get_uniformiv(program, loc);
+        wr(v, &r);
+    }
+    fn glGetVertexAttribfv(index: GLuint, pname: GLenum, v: *mut GLfloat) => |c| {
+        if pname == GL_CURRENT_VERTEX_ATTRIB {
+            let r = c.gl.get_current_vertex_attrib(index);
+            wr(v, &r);
+        } else {
+            c.gl.record_error(GL_INVALID_ENUM);
+        }
+    }
+    fn glUniformMatrix2x3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_2x3fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 6));
+    }
+    fn glUniformMatrix3x2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_3x2fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 6));
+    }
+    fn glUniformMatrix2x4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_2x4fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 8));
+    }
+    fn glUniformMatrix4x2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_4x2fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 8));
+    }
+    fn glUniformMatrix3x4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_3x4fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 12));
+    }
+    fn glUniformMatrix4x3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_4x3fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 12));
+    }
+    fn glVertexAttrib1fv(index: GLuint, v: *const GLfloat) => |c| {
+        if let Some([x]) = rd::<1, f32>(v) { c.gl.vertex_attrib_1f(index, x) }
+    }
+    fn glVertexAttrib2fv(index: GLuint, v: *const GLfloat) => |c| {
+        if let Some([x, y]) = rd::<2, f32>(v) { c.gl.vertex_attrib_2f(index, x, y) }
+    }
+    fn glVertexAttrib3fv(index: GLuint, v: *const GLfloat) => |c| {
+        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.vertex_attrib_3f(index, x, y, z) }
+    }
+    fn glSecondaryColor3f(r: GLfloat, g: GLfloat, bl: GLfloat) => |c| { c.gl.secondary_color_3f(r, g, bl) }
+    fn glFogCoordf(f: GLfloat) => |c| { c.gl.fog_coordf(f) }
+    fn glTexCoord3fv(v: *const GLfloat) => |c| {
+        if let Some([s, t, r]) = rd::<3, f32>(v) { c.gl.tex_coord_3f(s, t, r) }
+    }
+    fn glTexCoord4fv(v: *const GLfloat) => |c| { if let Some(v) = rd::<4, f32>(v) { c.gl.tex_coord_4fv(&v) } }
+    fn glTexCoord2d(s: GLdouble, t: GLdouble) => |c| { c.gl.tex_coord_2f(s as f32, t as f32) }
+    fn glMultiTexCoord1f(target: GLenum, s: GLfloat) => |c| { c.gl.multi_tex_coord_1f(target, s) }
+    fn glMultiTexCoord3f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat) => |c| {
+        c.gl.multi_tex_coord_3f(target, s, t, r)
+    }
+    fn glNormal3dv(v: *const GLdouble) => |c| {
+        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.normal_3f(x as f32, y as f32, z as f32) }
+    }
+    fn glColor3dv(v: *const GLdouble) => |c| {
+        if let Some([r, g, bl]) = rd::<3, f64>(v) { c.gl.color_3f(r as f32, g as f32, bl as f32) }
+    }
+    fn glColor4dv(v: *const GLdouble) => |c| {
+        if let Some([r, g, bl, a]) = rd::<4, f64>(v) {
+            c.gl.color_4f(r as f32, g as f32, bl as f32, a as f32)
+        }
+    }
+    fn glRectd(x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble) => |c| {
+        c.gl.rectf(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
+        c.dirty = true;
+    }
+    fn glRecti(x1: GLint, y1: GLint, x2: GLint, y2: GLint) => |c| {
+        c.gl.rectf(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
+        c.dirty = true;
+    }
+    fn glSecondaryColorPointer(size: GLint, ty: GLenum, stride: GLsizei, pointer: *const c_void) => |c| {
+        c.arrays.set_pointer(&mut c.gl, AttribSource::SecondaryColor, pointer as *const u8, |g, d| {
+            g.secondary_color_pointer(size, ty, stride, d)
+        });
+    }
+    fn glFogCoordPointer(ty: GLenum, stride: GLsizei, pointer: *const c_void) => |c| {
+        c.arrays.set_pointer(&mut c.gl, AttribSource::FogCoord, pointer as *const u8, |g, d| {
+            g.fog_coord_pointer(ty, stride, d)
+        });
+    }
+    fn glDrawRangeElements(
+        mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, ty: GLenum,
+        indices: *const c_void
+    ) => |c| {
+        if end < start {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let (data, idx) = element_indices(c, count, ty, indices);
+        if let (Some(lo), Some(hi)) = (idx.iter().min(), idx.iter().max()) {
+            c.arrays.prepare(&mut c.gl, *lo, *hi);
+        }
+        c.gl.draw_range_elements(mode, start, end, count, ty, data);
+        c.dirty = true;
+    }
+    fn glMultiDrawArrays(mode: GLenum, first: *const GLint, count: *const GLsizei, n: GLsizei) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        let f = rd_vec(first, n as i64);
+        let k = rd_vec(count, n as i64);
+        for (f, k) in f.iter().zip(&k) {
+            if *f >= 0 && *k > 0 {
+                let last = (*f as i64 + (*k).min(1 << 24) as i64 - 1).min(u32::MAX as i64);
+                c.arrays.prepare(&mut c.gl, *f as u32, last as u32);
+            }
+            c.gl.draw_arrays(mode, *f, *k);
+        }
+        c.dirty = true;
     }
 
     // ---- vertex arrays and draws ----

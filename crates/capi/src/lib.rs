@@ -40,15 +40,21 @@
 //! contexts before use.
 //!
 //! ## Limitations (first increment)
-//! - Only the entry points in [`entry::NAMES`]; others are missing (no
-//!   textures, buffer objects, FBOs, display lists, glGetActive*, ... yet).
+//! - Only the entry points in [`entry::NAMES`] (about 280 of GL 2.1's
+//!   ~590 plus EXT framebuffer-object names); display lists, evaluators,
+//!   selection/feedback, pixel transfer (glDrawPixels, glBitmap, glCopy*),
+//!   queries, glGetPointerv/glGetVertexAttrib*v (partial), glInterleavedArrays,
+//!   glArrayElement and many scalar-type variants (glColor3b, glVertex2s...)
+//!   are missing.
 //! - The client buffer is written, never read: pixels the client puts in
 //!   it are not seen by GL (Mesa renders in place).
 //! - Depth/stencil sizes requested at creation only matter for
 //!   OSMesaGetDepthBuffer; the context always has 24-bit depth and 8-bit
 //!   stencil. `sharelist` is accepted but nothing is shared. Accumulation
 //!   buffers are absent.
-//! - Pixel-pack buffer objects are not supported by glReadPixels.
+//! - Pixel buffer objects are not implemented: while one is bound,
+//!   glReadPixels/glTexImage*/glTexSubImage2D with a non-null pointer
+//!   raise GL_INVALID_OPERATION (never dereference the offset).
 #![allow(non_snake_case, clippy::missing_safety_doc)]
 
 pub mod arrays;

@@ -237,3 +237,79 @@ fn context_attribs_and_queries() {
         OSMesaDestroyContext(ctx);
     }
 }
+
+#[test]
+fn texture_vbo_and_pbo_guard() {
+    unsafe {
+        let ctx = OSMesaCreateContext(OSMESA_RGBA, null_mut());
+        let mut buf = vec![0u8; (W * H * 4) as usize];
+        OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, W, H);
+        // A 2x1 texture: left texel red, right texel green, nearest.
+        let mut tex = 0;
+        glGenTextures(1, &mut tex);
+        glBindTexture(GL_TEXTURE_2D, tex);
+        let texels: [u8; 8] = [255, 0, 0, 255, 0, 255, 0, 255];
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+        glTexImage2D(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA as i32,
+            2,
+            1,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            texels.as_ptr() as *const c_void,
+        );
+        glEnable(GL_TEXTURE_2D);
+        // A full-screen quad from a vertex buffer object (offsets, not pointers).
+        let quad: [f32; 16] = [
+            -1.0, -1.0, 0.0, 0.0, 1.0, -1.0, 1.0, 0.0, 1.0, 1.0, 1.0, 1.0, -1.0, 1.0, 0.0, 1.0,
+        ];
+        let mut vbo = 0;
+        glGenBuffers(1, &mut vbo);
+        glBindBuffer(GL_ARRAY_BUFFER, vbo);
+        glBufferData(
+            GL_ARRAY_BUFFER,
+            64,
+            quad.as_ptr() as *const c_void,
+            GL_STATIC_DRAW,
+        );
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        glVertexPointer(2, GL_FLOAT, 16, null());
+        glTexCoordPointer(2, GL_FLOAT, 16, 8 as *const c_void);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+        glDrawArrays(GL_QUADS, 0, 4);
+        glFinish();
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        assert_eq!(px(&buf, 1, H / 2), [255, 0, 0, 255]);
+        assert_eq!(px(&buf, W - 2, H / 2), [0, 255, 0, 255]);
+
+        // Active uniform/attrib queries are reachable.
+        let mut n = 0;
+        let mut shaders = [0u32; 4];
+        glGetAttachedShaders(0, 4, &mut n, shaders.as_mut_ptr());
+        assert_eq!(glGetError(), GL_INVALID_VALUE);
+
+        // With a pixel-unpack buffer bound the pointer is an offset: refused,
+        // never dereferenced.
+        let mut pbo = 0;
+        glGenBuffers(1, &mut pbo);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, pbo);
+        glTexImage2D(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA as i32,
+            2,
+            1,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            16 as *const c_void,
+        );
+        assert_eq!(glGetError(), GL_INVALID_OPERATION);
+        OSMesaDestroyContext(ctx);
+    }
+}
