@@ -7,6 +7,7 @@ use std::cell::Cell;
 use std::collections::BTreeSet;
 use std::ffi::c_void;
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
 
 /// GL enums the context code needs.
@@ -239,6 +240,22 @@ pub fn set_current(ctx: *mut OsContext) {
     CURRENT.with(|c| c.set(ctx));
 }
 
+/// Panics caught at the C boundary since the process started (a bug in
+/// shaderbox each; tests assert none).
+static CAUGHT_PANICS: AtomicU64 = AtomicU64::new(0);
+
+/// The number of panics caught at the C boundary so far.
+pub fn caught_panics() -> u64 {
+    CAUGHT_PANICS.load(Ordering::Relaxed)
+}
+
+fn caught<R>(r: std::thread::Result<R>, default: R) -> R {
+    r.unwrap_or_else(|_| {
+        CAUGHT_PANICS.fetch_add(1, Ordering::Relaxed);
+        default
+    })
+}
+
 /// Runs `f` on the current context, or returns `default` when there is
 /// none. Panics are caught: they never unwind into C.
 pub fn with_ctx<R>(default: R, f: impl FnOnce(&mut OsContext) -> R) -> R {
@@ -250,12 +267,12 @@ pub fn with_ctx<R>(default: R, f: impl FnOnce(&mut OsContext) -> R) -> R {
     // current on this thread only while live (DestroyContext clears it);
     // GL entry points do not re-enter, so this is the only reference.
     let ctx = unsafe { &mut *p };
-    catch_unwind(AssertUnwindSafe(|| f(ctx))).unwrap_or(default)
+    caught(catch_unwind(AssertUnwindSafe(|| f(ctx))), default)
 }
 
 /// Runs `f` with panics caught (for entry points without a context).
 pub fn guard<R>(default: R, f: impl FnOnce() -> R) -> R {
-    catch_unwind(AssertUnwindSafe(f)).unwrap_or(default)
+    caught(catch_unwind(AssertUnwindSafe(f)), default)
 }
 
 #[cfg(test)]

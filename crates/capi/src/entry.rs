@@ -122,6 +122,12 @@ unsafe fn image_bytes(
     Some(unsafe { std::slice::from_raw_parts(data as *const u8, len) }.to_vec())
 }
 
+/// A signed integer color/normal component to [-1, 1]: (2c + 1) / (2^b - 1)
+/// (GL 2.1 Table 2.9).
+fn snorm(x: f64, max: f64) -> f32 {
+    ((2.0 * x + 1.0) / max) as f32
+}
+
 fn b(x: GLboolean) -> bool {
     x != 0
 }
@@ -182,7 +188,7 @@ macro_rules! gl_entry_points {
         $(
             $(#[$m])*
             #[no_mangle]
-            #[allow(unused_unsafe, clippy::too_many_arguments)]
+            #[allow(unused_unsafe, clippy::too_many_arguments, clippy::unnecessary_cast)]
             pub unsafe extern "C" fn $name($($a: $t),*) $(-> $r)? {
                 with_ctx(gl_entry_points!(@def $($def)?), |$c: &mut OsContext| unsafe { $body })
             }
@@ -1029,6 +1035,291 @@ gl_entry_points! {
             c.gl.draw_arrays(mode, *f, *k);
         }
         c.dirty = true;
+    }
+
+    // ---- generated scalar-type variants (GL 2.1 §2.7; integer colors and
+    // normals normalized per Table 2.9) ----
+    fn glVertex2s(x: GLshort, y: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
+    fn glVertex2sv(v: *const GLshort) => |c| {
+        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
+    }
+    fn glVertex2iv(v: *const GLint) => |c| {
+        if let Some([x, y]) = rd::<2, i32>(v) { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
+    }
+    fn glVertex3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
+    fn glVertex3sv(v: *const GLshort) => |c| {
+        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
+    }
+    fn glVertex3iv(v: *const GLint) => |c| {
+        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
+    }
+    fn glVertex4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
+    fn glVertex4sv(v: *const GLshort) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glVertex4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
+    fn glVertex4iv(v: *const GLint) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glColor3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), 1.0) }
+    fn glColor3bv(v: *const GLbyte) => |c| {
+        if let Some([x, y, z]) = rd::<3, i8>(v) { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), 1.0) }
+    }
+    fn glColor3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), 1.0) }
+    fn glColor3sv(v: *const GLshort) => |c| {
+        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), 1.0) }
+    }
+    fn glColor3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), 1.0) }
+    fn glColor3iv(v: *const GLint) => |c| {
+        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), 1.0) }
+    }
+    fn glColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, 1.0) }
+    fn glColor3usv(v: *const GLushort) => |c| {
+        if let Some([x, y, z]) = rd::<3, u16>(v) { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, 1.0) }
+    }
+    fn glColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, 1.0) }
+    fn glColor3uiv(v: *const GLuint) => |c| {
+        if let Some([x, y, z]) = rd::<3, u32>(v) { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, 1.0) }
+    }
+    fn glColor4b(x: GLbyte, y: GLbyte, z: GLbyte, w: GLbyte) => |c| { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
+    fn glColor4bv(v: *const GLbyte) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i8>(v) { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
+    }
+    fn glColor4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0)) }
+    fn glColor4sv(v: *const GLshort) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0)) }
+    }
+    fn glColor4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
+    fn glColor4iv(v: *const GLint) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
+    }
+    fn glColor4us(x: GLushort, y: GLushort, z: GLushort, w: GLushort) => |c| { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, (w as f64 / 65535.0) as f32) }
+    fn glColor4usv(v: *const GLushort) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, (w as f64 / 65535.0) as f32) }
+    }
+    fn glColor4ui(x: GLuint, y: GLuint, z: GLuint, w: GLuint) => |c| { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, (w as f64 / 4294967295.0) as f32) }
+    fn glColor4uiv(v: *const GLuint) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, (w as f64 / 4294967295.0) as f32) }
+    }
+    fn glNormal3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.normal_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
+    fn glNormal3bv(v: *const GLbyte) => |c| {
+        if let Some([x, y, z]) = rd::<3, i8>(v) { c.gl.normal_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
+    }
+    fn glNormal3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.normal_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
+    fn glNormal3sv(v: *const GLshort) => |c| {
+        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.normal_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
+    }
+    fn glNormal3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.normal_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
+    fn glNormal3iv(v: *const GLint) => |c| {
+        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.normal_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
+    }
+    fn glTexCoord1s(x: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
+    fn glMultiTexCoord1s(target: GLenum, x: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
+    fn glTexCoord1sv(v: *const GLshort) => |c| {
+        if let Some([x]) = rd::<1, i16>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
+    }
+    fn glMultiTexCoord1sv(target: GLenum, v: *const GLshort) => |c| {
+        if let Some([x]) = rd::<1, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
+    }
+    fn glTexCoord1i(x: GLint) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
+    fn glMultiTexCoord1i(target: GLenum, x: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
+    fn glTexCoord1iv(v: *const GLint) => |c| {
+        if let Some([x]) = rd::<1, i32>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
+    }
+    fn glMultiTexCoord1iv(target: GLenum, v: *const GLint) => |c| {
+        if let Some([x]) = rd::<1, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
+    }
+    fn glTexCoord1fv(v: *const GLfloat) => |c| {
+        if let Some([x]) = rd::<1, f32>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
+    }
+    fn glMultiTexCoord1fv(target: GLenum, v: *const GLfloat) => |c| {
+        if let Some([x]) = rd::<1, f32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
+    }
+    fn glTexCoord1d(x: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
+    fn glMultiTexCoord1d(target: GLenum, x: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
+    fn glTexCoord1dv(v: *const GLdouble) => |c| {
+        if let Some([x]) = rd::<1, f64>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
+    }
+    fn glMultiTexCoord1dv(target: GLenum, v: *const GLdouble) => |c| {
+        if let Some([x]) = rd::<1, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
+    }
+    fn glTexCoord2s(x: GLshort, y: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
+    fn glMultiTexCoord2s(target: GLenum, x: GLshort, y: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
+    fn glTexCoord2sv(v: *const GLshort) => |c| {
+        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
+    }
+    fn glMultiTexCoord2sv(target: GLenum, v: *const GLshort) => |c| {
+        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
+    }
+    fn glTexCoord2i(x: GLint, y: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
+    fn glMultiTexCoord2i(target: GLenum, x: GLint, y: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
+    fn glTexCoord2iv(v: *const GLint) => |c| {
+        if let Some([x, y]) = rd::<2, i32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
+    }
+    fn glMultiTexCoord2iv(target: GLenum, v: *const GLint) => |c| {
+        if let Some([x, y]) = rd::<2, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
+    }
+    fn glMultiTexCoord2d(target: GLenum, x: GLdouble, y: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
+    fn glTexCoord2dv(v: *const GLdouble) => |c| {
+        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
+    }
+    fn glMultiTexCoord2dv(target: GLenum, v: *const GLdouble) => |c| {
+        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
+    }
+    fn glTexCoord3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
+    fn glMultiTexCoord3s(target: GLenum, x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
+    fn glTexCoord3sv(v: *const GLshort) => |c| {
+        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
+    }
+    fn glMultiTexCoord3sv(target: GLenum, v: *const GLshort) => |c| {
+        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
+    }
+    fn glTexCoord3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
+    fn glMultiTexCoord3i(target: GLenum, x: GLint, y: GLint, z: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
+    fn glTexCoord3iv(v: *const GLint) => |c| {
+        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
+    }
+    fn glMultiTexCoord3iv(target: GLenum, v: *const GLint) => |c| {
+        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
+    }
+    fn glMultiTexCoord3fv(target: GLenum, v: *const GLfloat) => |c| {
+        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
+    }
+    fn glTexCoord3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
+    fn glMultiTexCoord3d(target: GLenum, x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
+    fn glTexCoord3dv(v: *const GLdouble) => |c| {
+        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
+    }
+    fn glMultiTexCoord3dv(target: GLenum, v: *const GLdouble) => |c| {
+        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
+    }
+    fn glTexCoord4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
+    fn glMultiTexCoord4s(target: GLenum, x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
+    fn glTexCoord4sv(v: *const GLshort) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glMultiTexCoord4sv(target: GLenum, v: *const GLshort) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glTexCoord4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
+    fn glMultiTexCoord4i(target: GLenum, x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
+    fn glTexCoord4iv(v: *const GLint) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glMultiTexCoord4iv(target: GLenum, v: *const GLint) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glTexCoord4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
+    fn glMultiTexCoord4d(target: GLenum, x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
+    fn glTexCoord4dv(v: *const GLdouble) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glMultiTexCoord4dv(target: GLenum, v: *const GLdouble) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glVertexAttrib1s(index: GLuint, x: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
+    fn glVertexAttrib1sv(index: GLuint, v: *const GLshort) => |c| {
+        if let Some([x]) = rd::<1, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
+    }
+    fn glVertexAttrib1d(index: GLuint, x: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
+    fn glVertexAttrib1dv(index: GLuint, v: *const GLdouble) => |c| {
+        if let Some([x]) = rd::<1, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
+    }
+    fn glVertexAttrib2s(index: GLuint, x: GLshort, y: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
+    fn glVertexAttrib2sv(index: GLuint, v: *const GLshort) => |c| {
+        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
+    }
+    fn glVertexAttrib2d(index: GLuint, x: GLdouble, y: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
+    fn glVertexAttrib2dv(index: GLuint, v: *const GLdouble) => |c| {
+        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
+    }
+    fn glVertexAttrib3s(index: GLuint, x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
+    fn glVertexAttrib3sv(index: GLuint, v: *const GLshort) => |c| {
+        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
+    }
+    fn glVertexAttrib3d(index: GLuint, x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
+    fn glVertexAttrib3dv(index: GLuint, v: *const GLdouble) => |c| {
+        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
+    }
+    fn glVertexAttrib4s(index: GLuint, x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
+    fn glVertexAttrib4sv(index: GLuint, v: *const GLshort) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glVertexAttrib4d(index: GLuint, x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
+    fn glVertexAttrib4dv(index: GLuint, v: *const GLdouble) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glVertexAttrib4bv(index: GLuint, v: *const GLbyte) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i8>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glVertexAttrib4iv(index: GLuint, v: *const GLint) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glVertexAttrib4ubv(index: GLuint, v: *const GLubyte) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, u8>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glVertexAttrib4usv(index: GLuint, v: *const GLushort) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glVertexAttrib4uiv(index: GLuint, v: *const GLuint) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
+    }
+    fn glVertexAttrib4Nbv(index: GLuint, v: *const GLbyte) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i8>(v) { c.gl.vertex_attrib_4f(index, snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
+    }
+    fn glVertexAttrib4Nsv(index: GLuint, v: *const GLshort) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.vertex_attrib_4f(index, snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0)) }
+    }
+    fn glVertexAttrib4Niv(index: GLuint, v: *const GLint) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.vertex_attrib_4f(index, snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
+    }
+    fn glVertexAttrib4Nubv(index: GLuint, v: *const GLubyte) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, u8>(v) { c.gl.vertex_attrib_4f(index, (x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32, (w as f64 / 255.0) as f32) }
+    }
+    fn glVertexAttrib4Nusv(index: GLuint, v: *const GLushort) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.vertex_attrib_4f(index, (x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, (w as f64 / 65535.0) as f32) }
+    }
+    fn glVertexAttrib4Nuiv(index: GLuint, v: *const GLuint) => |c| {
+        if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.vertex_attrib_4f(index, (x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, (w as f64 / 4294967295.0) as f32) }
+    }
+    fn glVertexAttrib4Nub(index: GLuint, x: GLubyte, y: GLubyte, z: GLubyte, w: GLubyte) => |c| { c.gl.vertex_attrib_4f(index, (x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32, (w as f64 / 255.0) as f32) }
+    fn glSecondaryColor3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
+    fn glSecondaryColor3bv(v: *const GLbyte) => |c| {
+        if let Some([x, y, z]) = rd::<3, i8>(v) { c.gl.secondary_color_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
+    }
+    fn glSecondaryColor3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
+    fn glSecondaryColor3sv(v: *const GLshort) => |c| {
+        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.secondary_color_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
+    }
+    fn glSecondaryColor3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
+    fn glSecondaryColor3iv(v: *const GLint) => |c| {
+        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.secondary_color_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
+    }
+    fn glSecondaryColor3fv(v: *const GLfloat) => |c| {
+        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
+    }
+    fn glSecondaryColor3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
+    fn glSecondaryColor3dv(v: *const GLdouble) => |c| {
+        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
+    }
+    fn glSecondaryColor3ub(x: GLubyte, y: GLubyte, z: GLubyte) => |c| { c.gl.secondary_color_3f((x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32) }
+    fn glSecondaryColor3ubv(v: *const GLubyte) => |c| {
+        if let Some([x, y, z]) = rd::<3, u8>(v) { c.gl.secondary_color_3f((x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32) }
+    }
+    fn glSecondaryColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.secondary_color_3f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32) }
+    fn glSecondaryColor3usv(v: *const GLushort) => |c| {
+        if let Some([x, y, z]) = rd::<3, u16>(v) { c.gl.secondary_color_3f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32) }
+    }
+    fn glSecondaryColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.secondary_color_3f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32) }
+    fn glSecondaryColor3uiv(v: *const GLuint) => |c| {
+        if let Some([x, y, z]) = rd::<3, u32>(v) { c.gl.secondary_color_3f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32) }
+    }
+    fn glFogCoordfv(v: *const GLfloat) => |c| {
+        if let Some([x]) = rd::<1, f32>(v) { c.gl.fog_coordf(x as f32) }
+    }
+    fn glFogCoordd(x: GLdouble) => |c| { c.gl.fog_coordf(x as f32) }
+    fn glFogCoorddv(v: *const GLdouble) => |c| {
+        if let Some([x]) = rd::<1, f64>(v) { c.gl.fog_coordf(x as f32) }
     }
 
     // ---- vertex arrays and draws ----
