@@ -148,7 +148,7 @@ fn hostile_call_sequences_never_crash() {
                     a,
                     e,
                     0,
-                    if rng.next() % 2 == 0 {
+                    if rng.pick(&[true, false]) {
                         null()
                     } else {
                         fp as *const c_void
@@ -178,7 +178,11 @@ fn hostile_call_sequences_never_crash() {
                 22 => glMatrixMode(e),
                 23 => glPushMatrix(),
                 24 => glPopMatrix(),
-                25 => glLoadMatrixf(if rng.next() % 3 == 0 { null() } else { fp }),
+                25 => glLoadMatrixf(if rng.pick(&[true, false, false]) {
+                    null()
+                } else {
+                    fp
+                }),
                 26 => glReadPixels(a.clamp(-5, 30), 0, b, b, e, e2, op as *mut c_void),
                 27 => glTexImage2D(
                     e,
