@@ -145,6 +145,39 @@ impl OsContext {
         }
     }
 
+    /// Loads the client buffer into the default framebuffer (Mesa renders
+    /// in place, so what the buffer holds is the framebuffer's contents):
+    /// at OSMesaMakeCurrent and after OSMesaPixelStore changes the layout.
+    pub fn upload(&mut self) {
+        self.dirty = false;
+        if self.buffer.is_null() || self.width <= 0 || self.height <= 0 {
+            return;
+        }
+        let Some(px) = Self::pixel_bytes(self.format, self.ty) else {
+            return;
+        };
+        let (w, h) = (self.width as usize, self.height as usize);
+        let row_px = if self.row_length > 0 {
+            (self.row_length as usize).max(w)
+        } else {
+            w
+        };
+        // SAFETY: as in `copy_out`: the buffer holds row_length * height
+        // pixels per OSMesaMakeCurrent's contract.
+        let src = unsafe { std::slice::from_raw_parts(self.buffer as *const u8, row_px * h * px) };
+        let mut pixels = vec![[0u8, 0, 0, 255]; w * h];
+        for y in 0..h {
+            let src_row = if self.y_up { y } else { h - 1 - y };
+            for x in 0..w {
+                let at = (src_row * row_px + x) * px;
+                if let (Some(s), Some(d)) = (src.get(at..at + px), pixels.get_mut(y * w + x)) {
+                    *d = decode_pixel(s, self.format, self.ty);
+                }
+            }
+        }
+        self.gl.load_default_color(&pixels);
+    }
+
     /// Refreshes and returns the depth copy.
     pub fn depth_buffer(&mut self) -> Option<(*mut c_void, i32)> {
         if self.depth_bits <= 0 || !self.sized {
@@ -202,6 +235,48 @@ fn encode_pixel(p: [u8; 4], format: u32, ty: u32, dst: &mut [u8]) {
             }
         }
         _ => {}
+    }
+}
+
+/// Reads one client pixel back as RGBA8 (the inverse of `encode_pixel`;
+/// formats without alpha read alpha 255).
+fn decode_pixel(src: &[u8], format: u32, ty: u32) -> [u8; 4] {
+    if format == OSMESA_RGB_565 {
+        let v = match src {
+            [a, b, ..] => u16::from_ne_bytes([*a, *b]),
+            _ => 0,
+        };
+        let (r, g, b) = ((v >> 11) & 31, (v >> 5) & 63, v & 31);
+        return [
+            ((r * 255 + 15) / 31) as u8,
+            ((g * 255 + 31) / 63) as u8,
+            ((b * 255 + 15) / 31) as u8,
+            255,
+        ];
+    }
+    let size = match ty {
+        GL_UNSIGNED_SHORT => 2,
+        GL_FLOAT => 4,
+        _ => 1,
+    };
+    let comp = |i: usize| -> u8 {
+        let Some(c) = src.get(i * size..(i + 1) * size) else {
+            return 0;
+        };
+        match c {
+            [a] => *a,
+            [a, b] => ((u16::from_ne_bytes([*a, *b]) as u32 * 255 + 32767) / 65535) as u8,
+            [a, b, cc, d] => raster::float_to_unorm8(f32::from_ne_bytes([*a, *b, *cc, *d])),
+            _ => 0,
+        }
+    };
+    match format {
+        OSMESA_RGBA => [comp(0), comp(1), comp(2), comp(3)],
+        OSMESA_BGRA => [comp(2), comp(1), comp(0), comp(3)],
+        OSMESA_ARGB => [comp(1), comp(2), comp(3), comp(0)],
+        OSMESA_RGB => [comp(0), comp(1), comp(2), 255],
+        OSMESA_BGR => [comp(2), comp(1), comp(0), 255],
+        _ => [0, 0, 0, 255],
     }
 }
 

@@ -14,9 +14,9 @@
 //! ## Contract
 //! - One current context per thread (thread-local), as OSMesa.
 //! - Rendering goes to the context's own framebuffer (RGBA8, 24-bit depth,
-//!   8-bit stencil), copied into the client's buffer by glFinish, glFlush,
-//!   glReadPixels, OSMesaMakeCurrent (also when switching away or
-//!   releasing), OSMesaGetColorBuffer, OSMesaPixelStore and
+//!   8-bit stencil), copied into the client's buffer (when drawing changed
+//!   it) by glFinish, glFlush, glReadPixels, OSMesaMakeCurrent switching
+//!   away or releasing, OSMesaGetColorBuffer, OSMesaPixelStore and
 //!   OSMesaDestroyContext — as with Mesa's llvmpipe, which bins draws and
 //!   rasterizes at flush, the buffer is complete only after glFinish or
 //!   glFlush. (Copying after every draw cost 6 ms per draw at 512x512:
@@ -46,8 +46,10 @@
 //!   queries, glGetPointerv/glGetVertexAttrib*v (partial), glInterleavedArrays,
 //!   glArrayElement and many scalar-type variants (glColor3b, glVertex2s...)
 //!   are missing.
-//! - The client buffer is written, never read: pixels the client puts in
-//!   it are not seen by GL (Mesa renders in place).
+//! - The client buffer's contents are loaded as the framebuffer's at
+//!   OSMesaMakeCurrent and OSMesaPixelStore (Mesa renders in place); what
+//!   the client writes into it later, between GL calls, is not seen by GL
+//!   and is overwritten by the next flush if GL drew since.
 //! - Depth/stencil sizes requested at creation only matter for
 //!   OSMesaGetDepthBuffer; the context always has 24-bit depth and 8-bit
 //!   stencil. `sharelist` is accepted but nothing is shared. Accumulation

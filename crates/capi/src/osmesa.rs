@@ -154,7 +154,7 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
             c.gl.scissor(0, 0, width, height);
         }
         context::set_current(ctx);
-        c.copy_out();
+        c.upload();
         GL_TRUE
     })
 }
@@ -169,13 +169,14 @@ pub extern "C" fn OSMesaGetCurrentContext() -> OSMesaContext {
 #[no_mangle]
 pub extern "C" fn OSMesaPixelStore(pname: GLint, value: GLint) {
     with_ctx((), |c| {
+        c.sync();
         match pname {
             OSMESA_ROW_LENGTH if value >= 0 => c.row_length = value,
             OSMESA_Y_UP => c.y_up = value != 0,
             OSMESA_ROW_LENGTH => c.gl.record_error(gl::enums::GL_INVALID_VALUE),
             _ => c.gl.record_error(gl::enums::GL_INVALID_ENUM),
         }
-        c.copy_out();
+        c.upload();
     })
 }
 

@@ -73,7 +73,7 @@ fn triangle_with_attrib_pointers_lands_in_the_client_buffer() {
         glClearColor(0.0, 0.0, 1.0, 1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         // Not copied until a flush (Mesa's llvmpipe bins draws too).
-        assert_eq!(px(&buf, 0, 0), [0, 0, 0, 0]);
+        assert_eq!(px(&buf, 0, 0), [7, 7, 7, 7]);
         glFlush();
         assert_eq!(px(&buf, 0, 0), [0, 0, 255, 255]);
 
@@ -138,9 +138,31 @@ fn triangle_with_attrib_pointers_lands_in_the_client_buffer() {
         );
         assert_eq!(rp, buf);
 
-        // Y_UP = 0: top row first.
+        // Y_UP = 0: memory is now read top row first (the buffer is the
+        // framebuffer, as in Mesa): GL's bottom-right pixel is the last
+        // memory row's, green.
         OSMesaPixelStore(OSMESA_Y_UP, 0);
-        assert_eq!(px(&buf, W - 1, 0), [0, 128, 0, 255]);
+        assert_eq!(px(&buf, W - 1, H - 1), [0, 128, 0, 255]);
+        let mut one = [0u8; 4];
+        glReadPixels(
+            W - 1,
+            0,
+            1,
+            1,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            one.as_mut_ptr() as *mut c_void,
+        );
+        assert_eq!(one, [0, 128, 0, 255]);
+        // New drawing lands top row first: GL's row y=0 is memory row H-1.
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, 0, W, 1);
+        glClearColor(1.0, 1.0, 0.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+        glFinish();
+        assert_eq!(px(&buf, 0, H - 1), [255, 255, 0, 255]);
+        assert_eq!(px(&buf, 0, 0), [0, 0, 255, 255]);
 
         // Errors, never crashes.
         glShaderSource(vs, -1, null(), null());
@@ -312,4 +334,105 @@ fn texture_vbo_and_pbo_guard() {
         assert_eq!(glGetError(), GL_INVALID_OPERATION);
         OSMesaDestroyContext(ctx);
     }
+}
+
+#[test]
+fn row_length_resize_and_other_types() {
+    unsafe {
+        let ctx = OSMesaCreateContext(OSMESA_RGBA, null_mut());
+        // 4x2 image in rows of 6 pixels: padding pixels stay untouched.
+        let mut buf = vec![9u8; 6 * 2 * 4];
+        OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, 4, 2);
+        OSMesaPixelStore(OSMESA_ROW_LENGTH, 6);
+        glClearColor(1.0, 1.0, 1.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glFinish();
+        assert_eq!(&buf[12..16], &[255; 4]);
+        assert_eq!(&buf[16..24], &[9; 8]);
+        assert_eq!(&buf[24..28], &[255; 4]);
+        OSMesaPixelStore(OSMESA_ROW_LENGTH, 0);
+
+        // The buffer's contents are the framebuffer's: a scissored clear
+        // keeps what the client put outside the scissor box.
+        let mut pre = vec![[10u8, 20, 30, 40]; 4 * 2];
+        OSMesaMakeCurrent(ctx, pre.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, 4, 2);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, 0, 2, 2);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+        glFinish();
+        assert_eq!(pre[0], [255; 4]);
+        assert_eq!(pre[3], [10, 20, 30, 40]);
+
+        // Same context, a bigger float buffer: the framebuffer follows; the
+        // viewport set by the first MakeCurrent stays (window resize).
+        let mut fbuf = vec![0f32; 8 * 8 * 4];
+        assert_eq!(
+            OSMesaMakeCurrent(ctx, fbuf.as_mut_ptr() as *mut c_void, GL_FLOAT, 8, 8),
+            GL_TRUE
+        );
+        glClearColor(0.0, 0.2, 1.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glFinish();
+        assert_eq!(&fbuf[63 * 4..64 * 4], &[0.0, 0.2, 1.0, 1.0]);
+        let mut v = [0i32; 4];
+        glGetIntegerv(GL_VIEWPORT, v.as_mut_ptr());
+        assert_eq!(v, [0, 0, 4, 2]);
+        OSMesaDestroyContext(ctx);
+
+        let ctx = OSMesaCreateContext(OSMESA_RGB_565, null_mut());
+        let mut sbuf = vec![0u16; 4];
+        assert_eq!(
+            OSMesaMakeCurrent(
+                ctx,
+                sbuf.as_mut_ptr() as *mut c_void,
+                GL_UNSIGNED_BYTE,
+                2,
+                2
+            ),
+            GL_FALSE
+        );
+        assert_eq!(
+            OSMesaMakeCurrent(
+                ctx,
+                sbuf.as_mut_ptr() as *mut c_void,
+                GL_UNSIGNED_SHORT_5_6_5,
+                2,
+                2
+            ),
+            GL_TRUE
+        );
+        glClearColor(0.0, 1.0, 0.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glFlush();
+        assert_eq!(sbuf, vec![0x07e0; 4]);
+        OSMesaDestroyContext(ctx);
+    }
+}
+
+#[test]
+fn contexts_on_two_threads_are_independent() {
+    let run = |r: f32| {
+        std::thread::spawn(move || unsafe {
+            let ctx = OSMesaCreateContext(OSMESA_RGBA, null_mut());
+            let mut buf = vec![0u8; 16 * 16 * 4];
+            OSMesaMakeCurrent(
+                ctx,
+                buf.as_mut_ptr() as *mut c_void,
+                GL_UNSIGNED_BYTE,
+                16,
+                16,
+            );
+            for _ in 0..50 {
+                glClearColor(r, 0.0, 0.0, 1.0);
+                glClear(GL_COLOR_BUFFER_BIT);
+                glFinish();
+            }
+            OSMesaDestroyContext(ctx);
+            buf[0]
+        })
+    };
+    let (a, b) = (run(1.0), run(0.0));
+    assert_eq!(a.join().unwrap(), 255);
+    assert_eq!(b.join().unwrap(), 0);
 }

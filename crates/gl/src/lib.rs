@@ -200,6 +200,18 @@ impl Context {
             raster::Framebuffer::new(w as u32, h as u32, raster::ColorFormat::Rgba8, true, true);
     }
 
+    /// Loads `pixels` (RGBA8, bottom row first, `width * height` of them)
+    /// into the default framebuffer's color buffer: a wrapper whose client
+    /// memory *is* the window (OSMesa) makes it the starting contents.
+    /// Missing pixels are left as they were.
+    pub fn load_default_color(&mut self, pixels: &[[u8; 4]]) {
+        if let Some(raster::ColorBuffer::Rgba8(v)) = self.fb.color.get_mut(0) {
+            for (d, s) in v.iter_mut().zip(pixels) {
+                *d = *s;
+            }
+        }
+    }
+
     /// The vertex-array state (pointers, enables, client active texture),
     /// read-only.
     pub fn vertex_state(&self) -> &vertex::VertexState {
