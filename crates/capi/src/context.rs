@@ -39,6 +39,8 @@ pub struct OsContext {
     pub depth_copy: DepthCopy,
     /// Client-memory vertex array pointers.
     pub arrays: ClientArrays,
+    /// Display lists.
+    pub lists: crate::lists::Lists,
     /// Buffers bound to GL_PIXEL_PACK_BUFFER / GL_PIXEL_UNPACK_BUFFER (the
     /// context does not implement pixel buffer objects; while one is bound,
     /// pixel pointers are offsets, so calls that would read or write
@@ -78,6 +80,7 @@ impl OsContext {
             unpack_buffer: 0,
             depth_copy: DepthCopy::None,
             arrays: ClientArrays::default(),
+            lists: Default::default(),
             strings: Default::default(),
         }
     }

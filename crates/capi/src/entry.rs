@@ -183,13 +183,14 @@ unsafe fn element_indices(
 macro_rules! gl_entry_points {
     ($(
         $(#[$m:meta])*
-        fn $name:ident($($a:ident: $t:ty),*) $(-> $r:ty [$def:expr])? => |$c:ident| $body:block
+        $([$list:ident])? fn $name:ident($($a:ident: $t:ty),*) $(-> $r:ty [$def:expr])? => |$c:ident| $body:block
     )*) => {
         $(
             $(#[$m])*
             #[no_mangle]
             #[allow(unused_unsafe, clippy::too_many_arguments, clippy::unnecessary_cast)]
             pub unsafe extern "C" fn $name($($a: $t),*) $(-> $r)? {
+                gl_entry_points!(@maybe [$($list)?] $name($($a),*));
                 with_ctx(gl_entry_points!(@def $($def)?), |$c: &mut OsContext| unsafe { $body })
             }
         )*
@@ -204,6 +205,14 @@ macro_rules! gl_entry_points {
 
         /// Every gl* entry point exported.
         pub const NAMES: &[&str] = &[$(stringify!($name)),*];
+    };
+    // Compiled into display lists (GL 2.1 §5.4): record a re-issue of the
+    // call; in GL_COMPILE mode do not execute it now.
+    (@maybe [] $name:ident($($a:ident),*)) => {};
+    (@maybe [list] $name:ident($($a:ident),*)) => {
+        if crate::lists::record(move || unsafe { $name($($a),*) }) {
+            return;
+        }
     };
     (@def) => { () };
     (@def $d:expr) => { $d };
@@ -242,39 +251,39 @@ gl_entry_points! {
         let v: Vec<GLboolean> = c.gl.get_booleanv(pname).iter().map(|&x| x as GLboolean).collect();
         wr(params, &v);
     }
-    fn glEnable(cap: GLenum) => |c| { c.gl.enable(cap) }
-    fn glDisable(cap: GLenum) => |c| { c.gl.disable(cap) }
+    [list] fn glEnable(cap: GLenum) => |c| { c.gl.enable(cap) }
+    [list] fn glDisable(cap: GLenum) => |c| { c.gl.disable(cap) }
     fn glIsEnabled(cap: GLenum) -> GLboolean [0] => |c| { c.gl.is_enabled(cap) as GLboolean }
     fn glFinish() => |c| { c.gl.finish(); c.sync(); }
     fn glFlush() => |c| { c.gl.flush(); c.sync(); }
-    fn glHint(target: GLenum, mode: GLenum) => |c| { c.gl.hint(target, mode) }
+    [list] fn glHint(target: GLenum, mode: GLenum) => |c| { c.gl.hint(target, mode) }
     fn glPixelStorei(pname: GLenum, param: GLint) => |c| { c.gl.pixel_storei(pname, param) }
 
     // ---- framebuffer ----
-    fn glViewport(x: GLint, y: GLint, w: GLsizei, h: GLsizei) => |c| { c.gl.viewport(x, y, w, h) }
-    fn glScissor(x: GLint, y: GLint, w: GLsizei, h: GLsizei) => |c| { c.gl.scissor(x, y, w, h) }
-    fn glDepthRange(n: GLclampd, f: GLclampd) => |c| { c.gl.depth_range(n, f) }
-    fn glClearColor(r: GLclampf, g: GLclampf, b: GLclampf, a: GLclampf) => |c| {
+    [list] fn glViewport(x: GLint, y: GLint, w: GLsizei, h: GLsizei) => |c| { c.gl.viewport(x, y, w, h) }
+    [list] fn glScissor(x: GLint, y: GLint, w: GLsizei, h: GLsizei) => |c| { c.gl.scissor(x, y, w, h) }
+    [list] fn glDepthRange(n: GLclampd, f: GLclampd) => |c| { c.gl.depth_range(n, f) }
+    [list] fn glClearColor(r: GLclampf, g: GLclampf, b: GLclampf, a: GLclampf) => |c| {
         c.gl.clear_color(r, g, b, a)
     }
-    fn glClearDepth(d: GLclampd) => |c| { c.gl.clear_depth(d) }
-    fn glClearStencil(s: GLint) => |c| { c.gl.clear_stencil(s) }
-    fn glClear(mask: GLbitfield) => |c| { c.gl.clear(mask); c.dirty = true; }
-    fn glColorMask(r: GLboolean, g: GLboolean, bl: GLboolean, a: GLboolean) => |c| {
+    [list] fn glClearDepth(d: GLclampd) => |c| { c.gl.clear_depth(d) }
+    [list] fn glClearStencil(s: GLint) => |c| { c.gl.clear_stencil(s) }
+    [list] fn glClear(mask: GLbitfield) => |c| { c.gl.clear(mask); c.dirty = true; }
+    [list] fn glColorMask(r: GLboolean, g: GLboolean, bl: GLboolean, a: GLboolean) => |c| {
         c.gl.color_mask(b(r), b(g), b(bl), b(a))
     }
-    fn glDepthMask(flag: GLboolean) => |c| { c.gl.depth_mask(b(flag)) }
-    fn glDepthFunc(func: GLenum) => |c| { c.gl.depth_func(func) }
-    fn glBlendFunc(src: GLenum, dst: GLenum) => |c| { c.gl.blend_func(src, dst) }
-    fn glBlendEquation(mode: GLenum) => |c| { c.gl.blend_equation(mode) }
-    fn glAlphaFunc(func: GLenum, reference: GLclampf) => |c| { c.gl.alpha_func(func, reference) }
-    fn glCullFace(mode: GLenum) => |c| { c.gl.cull_face(mode) }
-    fn glFrontFace(mode: GLenum) => |c| { c.gl.front_face(mode) }
-    fn glShadeModel(mode: GLenum) => |c| { c.gl.shade_model(mode) }
-    fn glPolygonMode(face: GLenum, mode: GLenum) => |c| { c.gl.polygon_mode(face, mode) }
-    fn glPolygonOffset(factor: GLfloat, units: GLfloat) => |c| { c.gl.polygon_offset(factor, units) }
-    fn glPointSize(size: GLfloat) => |c| { c.gl.point_size(size) }
-    fn glLineWidth(width: GLfloat) => |c| { c.gl.line_width(width) }
+    [list] fn glDepthMask(flag: GLboolean) => |c| { c.gl.depth_mask(b(flag)) }
+    [list] fn glDepthFunc(func: GLenum) => |c| { c.gl.depth_func(func) }
+    [list] fn glBlendFunc(src: GLenum, dst: GLenum) => |c| { c.gl.blend_func(src, dst) }
+    [list] fn glBlendEquation(mode: GLenum) => |c| { c.gl.blend_equation(mode) }
+    [list] fn glAlphaFunc(func: GLenum, reference: GLclampf) => |c| { c.gl.alpha_func(func, reference) }
+    [list] fn glCullFace(mode: GLenum) => |c| { c.gl.cull_face(mode) }
+    [list] fn glFrontFace(mode: GLenum) => |c| { c.gl.front_face(mode) }
+    [list] fn glShadeModel(mode: GLenum) => |c| { c.gl.shade_model(mode) }
+    [list] fn glPolygonMode(face: GLenum, mode: GLenum) => |c| { c.gl.polygon_mode(face, mode) }
+    [list] fn glPolygonOffset(factor: GLfloat, units: GLfloat) => |c| { c.gl.polygon_offset(factor, units) }
+    [list] fn glPointSize(size: GLfloat) => |c| { c.gl.point_size(size) }
+    [list] fn glLineWidth(width: GLfloat) => |c| { c.gl.line_width(width) }
     fn glReadPixels(
         x: GLint, y: GLint, w: GLsizei, h: GLsizei, format: GLenum, ty: GLenum,
         pixels: *mut c_void
@@ -305,172 +314,338 @@ gl_entry_points! {
     }
 
     // ---- matrices ----
-    fn glMatrixMode(mode: GLenum) => |c| { c.gl.matrix_mode(mode) }
-    fn glLoadIdentity() => |c| { c.gl.load_identity() }
-    fn glPushMatrix() => |c| { c.gl.push_matrix() }
-    fn glPopMatrix() => |c| { c.gl.pop_matrix() }
-    fn glOrtho(l: GLdouble, r: GLdouble, bo: GLdouble, t: GLdouble, n: GLdouble, f: GLdouble) => |c| {
+    [list] fn glMatrixMode(mode: GLenum) => |c| { c.gl.matrix_mode(mode) }
+    [list] fn glLoadIdentity() => |c| { c.gl.load_identity() }
+    [list] fn glPushMatrix() => |c| { c.gl.push_matrix() }
+    [list] fn glPopMatrix() => |c| { c.gl.pop_matrix() }
+    [list] fn glOrtho(l: GLdouble, r: GLdouble, bo: GLdouble, t: GLdouble, n: GLdouble, f: GLdouble) => |c| {
         c.gl.ortho(l, r, bo, t, n, f)
     }
-    fn glFrustum(l: GLdouble, r: GLdouble, bo: GLdouble, t: GLdouble, n: GLdouble, f: GLdouble) => |c| {
+    [list] fn glFrustum(l: GLdouble, r: GLdouble, bo: GLdouble, t: GLdouble, n: GLdouble, f: GLdouble) => |c| {
         c.gl.frustum(l, r, bo, t, n, f)
     }
-    fn glTranslatef(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.translatef(x, y, z) }
-    fn glTranslated(x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
+    [list] fn glTranslatef(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.translatef(x, y, z) }
+    [list] fn glTranslated(x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
         c.gl.translatef(x as f32, y as f32, z as f32)
     }
-    fn glScalef(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.scalef(x, y, z) }
-    fn glScaled(x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
+    [list] fn glScalef(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.scalef(x, y, z) }
+    [list] fn glScaled(x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
         c.gl.scalef(x as f32, y as f32, z as f32)
     }
-    fn glRotatef(a: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.rotatef(a, x, y, z) }
-    fn glRotated(a: GLdouble, x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
+    [list] fn glRotatef(a: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.rotatef(a, x, y, z) }
+    [list] fn glRotated(a: GLdouble, x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
         c.gl.rotatef(a as f32, x as f32, y as f32, z as f32)
     }
     fn glLoadMatrixf(m: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<16, f32>(m) {
+                if c.record(move || unsafe { glLoadMatrixf(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some(m) = rd::<16, f32>(m) { c.gl.load_matrixf(&m) }
     }
     fn glLoadMatrixd(m: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<16, f64>(m) {
+                if c.record(move || unsafe { glLoadMatrixd(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some(m) = rd::<16, f64>(m) { c.gl.load_matrixf(&m.map(|x| x as f32)) }
     }
     fn glMultMatrixf(m: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<16, f32>(m) {
+                if c.record(move || unsafe { glMultMatrixf(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some(m) = rd::<16, f32>(m) { c.gl.mult_matrixf(&m) }
     }
     fn glMultMatrixd(m: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<16, f64>(m) {
+                if c.record(move || unsafe { glMultMatrixd(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some(m) = rd::<16, f64>(m) { c.gl.mult_matrixf(&m.map(|x| x as f32)) }
     }
 
     // ---- immediate mode ----
-    fn glBegin(mode: GLenum) => |c| { c.gl.begin(mode) }
-    fn glEnd() => |c| { c.gl.end(); c.dirty = true; }
-    fn glVertex2f(x: GLfloat, y: GLfloat) => |c| { c.gl.vertex_4f(x, y, 0.0, 1.0) }
-    fn glVertex3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.vertex_4f(x, y, z, 1.0) }
-    fn glVertex4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| { c.gl.vertex_4f(x, y, z, w) }
-    fn glVertex2d(x: GLdouble, y: GLdouble) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glVertex3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
+    [list] fn glBegin(mode: GLenum) => |c| { c.gl.begin(mode) }
+    [list] fn glEnd() => |c| { c.gl.end(); c.dirty = true; }
+    [list] fn glVertex2f(x: GLfloat, y: GLfloat) => |c| { c.gl.vertex_4f(x, y, 0.0, 1.0) }
+    [list] fn glVertex3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.vertex_4f(x, y, z, 1.0) }
+    [list] fn glVertex4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| { c.gl.vertex_4f(x, y, z, w) }
+    [list] fn glVertex2d(x: GLdouble, y: GLdouble) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
+    [list] fn glVertex3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
         c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0)
     }
-    fn glVertex4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| {
+    [list] fn glVertex4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| {
         c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32)
     }
-    fn glVertex2i(x: GLint, y: GLint) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glVertex3i(x: GLint, y: GLint, z: GLint) => |c| {
+    [list] fn glVertex2i(x: GLint, y: GLint) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
+    [list] fn glVertex3i(x: GLint, y: GLint, z: GLint) => |c| {
         c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0)
     }
     fn glVertex2fv(v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, f32>(v) {
+                if c.record(move || unsafe { glVertex2fv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y]) = rd::<2, f32>(v) { c.gl.vertex_4f(x, y, 0.0, 1.0) }
     }
     fn glVertex3fv(v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f32>(v) {
+                if c.record(move || unsafe { glVertex3fv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.vertex_4f(x, y, z, 1.0) }
     }
     fn glVertex4fv(v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, f32>(v) {
+                if c.record(move || unsafe { glVertex4fv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some(v) = rd::<4, f32>(v) { c.gl.vertex_4fv(&v) }
     }
     fn glVertex2dv(v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, f64>(v) {
+                if c.record(move || unsafe { glVertex2dv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y]) = rd::<2, f64>(v) { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
     }
     fn glVertex3dv(v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f64>(v) {
+                if c.record(move || unsafe { glVertex3dv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, f64>(v) {
             c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0)
         }
     }
     fn glVertex4dv(v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, f64>(v) {
+                if c.record(move || unsafe { glVertex4dv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some(v) = rd::<4, f64>(v) { c.gl.vertex_4fv(&v.map(|x| x as f32)) }
     }
-    fn glColor3f(r: GLfloat, g: GLfloat, bl: GLfloat) => |c| { c.gl.color_3f(r, g, bl) }
-    fn glColor4f(r: GLfloat, g: GLfloat, bl: GLfloat, a: GLfloat) => |c| { c.gl.color_4f(r, g, bl, a) }
-    fn glColor3d(r: GLdouble, g: GLdouble, bl: GLdouble) => |c| {
+    [list] fn glColor3f(r: GLfloat, g: GLfloat, bl: GLfloat) => |c| { c.gl.color_3f(r, g, bl) }
+    [list] fn glColor4f(r: GLfloat, g: GLfloat, bl: GLfloat, a: GLfloat) => |c| { c.gl.color_4f(r, g, bl, a) }
+    [list] fn glColor3d(r: GLdouble, g: GLdouble, bl: GLdouble) => |c| {
         c.gl.color_3f(r as f32, g as f32, bl as f32)
     }
-    fn glColor4d(r: GLdouble, g: GLdouble, bl: GLdouble, a: GLdouble) => |c| {
+    [list] fn glColor4d(r: GLdouble, g: GLdouble, bl: GLdouble, a: GLdouble) => |c| {
         c.gl.color_4f(r as f32, g as f32, bl as f32, a as f32)
     }
-    fn glColor3ub(r: GLubyte, g: GLubyte, bl: GLubyte) => |c| { c.gl.color_3ub(r, g, bl) }
-    fn glColor4ub(r: GLubyte, g: GLubyte, bl: GLubyte, a: GLubyte) => |c| { c.gl.color_4ub(r, g, bl, a) }
-    fn glColor3fv(v: *const GLfloat) => |c| { if let Some(v) = rd::<3, f32>(v) { c.gl.color_3fv(&v) } }
-    fn glColor4fv(v: *const GLfloat) => |c| { if let Some(v) = rd::<4, f32>(v) { c.gl.color_4fv(&v) } }
+    [list] fn glColor3ub(r: GLubyte, g: GLubyte, bl: GLubyte) => |c| { c.gl.color_3ub(r, g, bl) }
+    [list] fn glColor4ub(r: GLubyte, g: GLubyte, bl: GLubyte, a: GLubyte) => |c| { c.gl.color_4ub(r, g, bl, a) }
+    fn glColor3fv(v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f32>(v) {
+                if c.record(move || unsafe { glColor3fv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
+        if let Some(v) = rd::<3, f32>(v) { c.gl.color_3fv(&v) } }
+    fn glColor4fv(v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, f32>(v) {
+                if c.record(move || unsafe { glColor4fv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
+        if let Some(v) = rd::<4, f32>(v) { c.gl.color_4fv(&v) } }
     fn glColor3ubv(v: *const GLubyte) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, u8>(v) {
+                if c.record(move || unsafe { glColor3ubv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([r, g, bl]) = rd::<3, u8>(v) { c.gl.color_3ub(r, g, bl) }
     }
     fn glColor4ubv(v: *const GLubyte) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, u8>(v) {
+                if c.record(move || unsafe { glColor4ubv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([r, g, bl, a]) = rd::<4, u8>(v) { c.gl.color_4ub(r, g, bl, a) }
     }
-    fn glNormal3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.normal_3f(x, y, z) }
-    fn glNormal3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
+    [list] fn glNormal3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.normal_3f(x, y, z) }
+    [list] fn glNormal3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| {
         c.gl.normal_3f(x as f32, y as f32, z as f32)
     }
-    fn glNormal3fv(v: *const GLfloat) => |c| { if let Some(v) = rd::<3, f32>(v) { c.gl.normal_3fv(&v) } }
-    fn glTexCoord1f(s: GLfloat) => |c| { c.gl.tex_coord_1f(s) }
-    fn glTexCoord2f(s: GLfloat, t: GLfloat) => |c| { c.gl.tex_coord_2f(s, t) }
-    fn glTexCoord3f(s: GLfloat, t: GLfloat, r: GLfloat) => |c| { c.gl.tex_coord_3f(s, t, r) }
-    fn glTexCoord4f(s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) => |c| { c.gl.tex_coord_4f(s, t, r, q) }
+    fn glNormal3fv(v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f32>(v) {
+                if c.record(move || unsafe { glNormal3fv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
+        if let Some(v) = rd::<3, f32>(v) { c.gl.normal_3fv(&v) } }
+    [list] fn glTexCoord1f(s: GLfloat) => |c| { c.gl.tex_coord_1f(s) }
+    [list] fn glTexCoord2f(s: GLfloat, t: GLfloat) => |c| { c.gl.tex_coord_2f(s, t) }
+    [list] fn glTexCoord3f(s: GLfloat, t: GLfloat, r: GLfloat) => |c| { c.gl.tex_coord_3f(s, t, r) }
+    [list] fn glTexCoord4f(s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) => |c| { c.gl.tex_coord_4f(s, t, r, q) }
     fn glTexCoord2fv(v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, f32>(v) {
+                if c.record(move || unsafe { glTexCoord2fv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([s, t]) = rd::<2, f32>(v) { c.gl.tex_coord_2f(s, t) }
     }
-    fn glMultiTexCoord2f(target: GLenum, s: GLfloat, t: GLfloat) => |c| {
+    [list] fn glMultiTexCoord2f(target: GLenum, s: GLfloat, t: GLfloat) => |c| {
         c.gl.multi_tex_coord_2f(target, s, t)
     }
-    fn glMultiTexCoord4f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) => |c| {
+    [list] fn glMultiTexCoord4f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) => |c| {
         c.gl.multi_tex_coord_4f(target, s, t, r, q)
     }
     fn glMultiTexCoord2fv(target: GLenum, v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, f32>(v) {
+                if c.record(move || unsafe { glMultiTexCoord2fv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([s, t]) = rd::<2, f32>(v) { c.gl.multi_tex_coord_2f(target, s, t) }
     }
     fn glMultiTexCoord4fv(target: GLenum, v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, f32>(v) {
+                if c.record(move || unsafe { glMultiTexCoord4fv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some(v) = rd::<4, f32>(v) { c.gl.multi_tex_coord_4fv(target, &v) }
     }
-    fn glVertexAttrib1f(index: GLuint, x: GLfloat) => |c| { c.gl.vertex_attrib_1f(index, x) }
-    fn glVertexAttrib2f(index: GLuint, x: GLfloat, y: GLfloat) => |c| { c.gl.vertex_attrib_2f(index, x, y) }
-    fn glVertexAttrib3f(index: GLuint, x: GLfloat, y: GLfloat, z: GLfloat) => |c| {
+    [list] fn glVertexAttrib1f(index: GLuint, x: GLfloat) => |c| { c.gl.vertex_attrib_1f(index, x) }
+    [list] fn glVertexAttrib2f(index: GLuint, x: GLfloat, y: GLfloat) => |c| { c.gl.vertex_attrib_2f(index, x, y) }
+    [list] fn glVertexAttrib3f(index: GLuint, x: GLfloat, y: GLfloat, z: GLfloat) => |c| {
         c.gl.vertex_attrib_3f(index, x, y, z)
     }
-    fn glVertexAttrib4f(index: GLuint, x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| {
+    [list] fn glVertexAttrib4f(index: GLuint, x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| {
         c.gl.vertex_attrib_4f(index, x, y, z, w)
     }
     fn glVertexAttrib4fv(index: GLuint, v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, f32>(v) {
+                if c.record(move || unsafe { glVertexAttrib4fv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some(v) = rd::<4, f32>(v) { c.gl.vertex_attrib_4fv(index, &v) }
     }
-    fn glRectf(x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) => |c| {
+    [list] fn glRectf(x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) => |c| {
         c.gl.rectf(x1, y1, x2, y2);
         c.dirty = true;
     }
 
     // ---- lighting, fog ----
-    fn glLightf(light: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.lightf(light, pname, v) }
-    fn glLighti(light: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.lighti(light, pname, v) }
+    [list] fn glLightf(light: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.lightf(light, pname, v) }
+    [list] fn glLighti(light: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.lighti(light, pname, v) }
     fn glLightfv(light: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
         let n = match pname {
             GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => 4,
             GL_SPOT_DIRECTION => 3,
             _ => 1,
         };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glLightfv(light, pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
         if !v.is_null() { c.gl.lightfv(light, pname, &rd_vec(v, n)) }
     }
-    fn glMaterialf(face: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.materialf(face, pname, v) }
-    fn glMateriali(face: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.materiali(face, pname, v) }
+    [list] fn glMaterialf(face: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.materialf(face, pname, v) }
+    [list] fn glMateriali(face: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.materiali(face, pname, v) }
     fn glMaterialfv(face: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
         let n = match pname {
             GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => 4,
             GL_COLOR_INDEXES => 3,
             _ => 1,
         };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glMaterialfv(face, pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
         if !v.is_null() { c.gl.materialfv(face, pname, &rd_vec(v, n)) }
     }
-    fn glColorMaterial(face: GLenum, mode: GLenum) => |c| { c.gl.color_material(face, mode) }
-    fn glLightModelf(pname: GLenum, v: GLfloat) => |c| { c.gl.light_modelf(pname, v) }
-    fn glLightModeli(pname: GLenum, v: GLint) => |c| { c.gl.light_modeli(pname, v) }
+    [list] fn glColorMaterial(face: GLenum, mode: GLenum) => |c| { c.gl.color_material(face, mode) }
+    [list] fn glLightModelf(pname: GLenum, v: GLfloat) => |c| { c.gl.light_modelf(pname, v) }
+    [list] fn glLightModeli(pname: GLenum, v: GLint) => |c| { c.gl.light_modeli(pname, v) }
     fn glLightModelfv(pname: GLenum, v: *const GLfloat) => |c| {
         let n = if pname == GL_LIGHT_MODEL_AMBIENT { 4 } else { 1 };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glLightModelfv(pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
         if !v.is_null() { c.gl.light_modelfv(pname, &rd_vec(v, n)) }
     }
-    fn glFogf(pname: GLenum, v: GLfloat) => |c| { c.gl.fogf(pname, v) }
-    fn glFogi(pname: GLenum, v: GLint) => |c| { c.gl.fogi(pname, v) }
+    [list] fn glFogf(pname: GLenum, v: GLfloat) => |c| { c.gl.fogf(pname, v) }
+    [list] fn glFogi(pname: GLenum, v: GLint) => |c| { c.gl.fogi(pname, v) }
     fn glFogfv(pname: GLenum, v: *const GLfloat) => |c| {
         let n = if pname == GL_FOG_COLOR { 4 } else { 1 };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glFogfv(pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
         if !v.is_null() { c.gl.fogfv(pname, &rd_vec(v, n)) }
     }
     fn glFogiv(pname: GLenum, v: *const GLint) => |c| {
         let n = if pname == GL_FOG_COLOR { 4 } else { 1 };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glFogiv(pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
         if !v.is_null() { c.gl.fogiv(pname, &rd_vec(v, n)) }
     }
 
@@ -528,7 +703,7 @@ gl_entry_points! {
     fn glDetachShader(program: GLuint, shader: GLuint) => |c| { c.gl.detach_shader(program, shader) }
     fn glLinkProgram(program: GLuint) => |c| { c.gl.link_program(program) }
     fn glValidateProgram(program: GLuint) => |c| { c.gl.validate_program(program) }
-    fn glUseProgram(program: GLuint) => |c| { c.gl.use_program(program) }
+    [list] fn glUseProgram(program: GLuint) => |c| { c.gl.use_program(program) }
     fn glGetProgramiv(program: GLuint, pname: GLenum, params: *mut GLint) => |c| {
         let v = c.gl.get_programiv(program, pname);
         wr(params, &[v]);
@@ -554,16 +729,16 @@ gl_entry_points! {
     fn glBindAttribLocation(program: GLuint, index: GLuint, name: *const GLchar) => |c| {
         if let Some(n) = cstr(name) { c.gl.bind_attrib_location(program, index, &n) }
     }
-    fn glUniform1f(loc: GLint, x: GLfloat) => |c| { c.gl.uniform_1f(loc, x) }
-    fn glUniform2f(loc: GLint, x: GLfloat, y: GLfloat) => |c| { c.gl.uniform_2f(loc, x, y) }
-    fn glUniform3f(loc: GLint, x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.uniform_3f(loc, x, y, z) }
-    fn glUniform4f(loc: GLint, x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| {
+    [list] fn glUniform1f(loc: GLint, x: GLfloat) => |c| { c.gl.uniform_1f(loc, x) }
+    [list] fn glUniform2f(loc: GLint, x: GLfloat, y: GLfloat) => |c| { c.gl.uniform_2f(loc, x, y) }
+    [list] fn glUniform3f(loc: GLint, x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.uniform_3f(loc, x, y, z) }
+    [list] fn glUniform4f(loc: GLint, x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| {
         c.gl.uniform_4f(loc, x, y, z, w)
     }
-    fn glUniform1i(loc: GLint, x: GLint) => |c| { c.gl.uniform_1i(loc, x) }
-    fn glUniform2i(loc: GLint, x: GLint, y: GLint) => |c| { c.gl.uniform_2i(loc, x, y) }
-    fn glUniform3i(loc: GLint, x: GLint, y: GLint, z: GLint) => |c| { c.gl.uniform_3i(loc, x, y, z) }
-    fn glUniform4i(loc: GLint, x: GLint, y: GLint, z: GLint, w: GLint) => |c| {
+    [list] fn glUniform1i(loc: GLint, x: GLint) => |c| { c.gl.uniform_1i(loc, x) }
+    [list] fn glUniform2i(loc: GLint, x: GLint, y: GLint) => |c| { c.gl.uniform_2i(loc, x, y) }
+    [list] fn glUniform3i(loc: GLint, x: GLint, y: GLint, z: GLint) => |c| { c.gl.uniform_3i(loc, x, y, z) }
+    [list] fn glUniform4i(loc: GLint, x: GLint, y: GLint, z: GLint, w: GLint) => |c| {
         c.gl.uniform_4i(loc, x, y, z, w)
     }
     fn glUniform1fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
@@ -612,29 +787,36 @@ gl_entry_points! {
     }
 
     // ---- more state ----
-    fn glBlendFuncSeparate(sr: GLenum, dr: GLenum, sa: GLenum, da: GLenum) => |c| {
+    [list] fn glBlendFuncSeparate(sr: GLenum, dr: GLenum, sa: GLenum, da: GLenum) => |c| {
         c.gl.blend_func_separate(sr, dr, sa, da)
     }
-    fn glBlendEquationSeparate(rgb: GLenum, alpha: GLenum) => |c| {
+    [list] fn glBlendEquationSeparate(rgb: GLenum, alpha: GLenum) => |c| {
         c.gl.blend_equation_separate(rgb, alpha)
     }
-    fn glBlendColor(r: GLclampf, g: GLclampf, bl: GLclampf, a: GLclampf) => |c| {
+    [list] fn glBlendColor(r: GLclampf, g: GLclampf, bl: GLclampf, a: GLclampf) => |c| {
         c.gl.blend_color(r, g, bl, a)
     }
-    fn glLogicOp(op: GLenum) => |c| { c.gl.logic_op(op) }
-    fn glStencilFunc(func: GLenum, reference: GLint, mask: GLuint) => |c| {
+    [list] fn glLogicOp(op: GLenum) => |c| { c.gl.logic_op(op) }
+    [list] fn glStencilFunc(func: GLenum, reference: GLint, mask: GLuint) => |c| {
         c.gl.stencil_func(func, reference, mask)
     }
-    fn glStencilOp(fail: GLenum, zfail: GLenum, zpass: GLenum) => |c| { c.gl.stencil_op(fail, zfail, zpass) }
-    fn glStencilMask(mask: GLuint) => |c| { c.gl.stencil_mask(mask) }
-    fn glStencilFuncSeparate(face: GLenum, func: GLenum, reference: GLint, mask: GLuint) => |c| {
+    [list] fn glStencilOp(fail: GLenum, zfail: GLenum, zpass: GLenum) => |c| { c.gl.stencil_op(fail, zfail, zpass) }
+    [list] fn glStencilMask(mask: GLuint) => |c| { c.gl.stencil_mask(mask) }
+    [list] fn glStencilFuncSeparate(face: GLenum, func: GLenum, reference: GLint, mask: GLuint) => |c| {
         c.gl.stencil_func_separate(face, func, reference, mask)
     }
-    fn glStencilOpSeparate(face: GLenum, fail: GLenum, zfail: GLenum, zpass: GLenum) => |c| {
+    [list] fn glStencilOpSeparate(face: GLenum, fail: GLenum, zfail: GLenum, zpass: GLenum) => |c| {
         c.gl.stencil_op_separate(face, fail, zfail, zpass)
     }
-    fn glStencilMaskSeparate(face: GLenum, mask: GLuint) => |c| { c.gl.stencil_mask_separate(face, mask) }
+    [list] fn glStencilMaskSeparate(face: GLenum, mask: GLuint) => |c| { c.gl.stencil_mask_separate(face, mask) }
     fn glClipPlane(plane: GLenum, eq: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, f64>(eq) {
+                if c.record(move || unsafe { glClipPlane(plane, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some(e) = rd::<4, f64>(eq) { c.gl.clip_plane(plane, &e) }
     }
     fn glGetClipPlane(plane: GLenum, eq: *mut GLdouble) => |c| {
@@ -642,15 +824,35 @@ gl_entry_points! {
         wr(eq, &e);
     }
     fn glLoadTransposeMatrixf(m: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<16, f32>(m) {
+                if c.record(move || unsafe { glLoadTransposeMatrixf(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some(m) = rd::<16, f32>(m) { c.gl.load_transpose_matrixf(&m) }
     }
     fn glMultTransposeMatrixf(m: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<16, f32>(m) {
+                if c.record(move || unsafe { glMultTransposeMatrixf(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some(m) = rd::<16, f32>(m) { c.gl.mult_transpose_matrixf(&m) }
     }
-    fn glPointParameterf(pname: GLenum, v: GLfloat) => |c| { c.gl.point_parameterf(pname, v) }
-    fn glPointParameteri(pname: GLenum, v: GLint) => |c| { c.gl.point_parameteri(pname, v) }
+    [list] fn glPointParameterf(pname: GLenum, v: GLfloat) => |c| { c.gl.point_parameterf(pname, v) }
+    [list] fn glPointParameteri(pname: GLenum, v: GLint) => |c| { c.gl.point_parameteri(pname, v) }
     fn glPointParameterfv(pname: GLenum, v: *const GLfloat) => |c| {
         let n = if pname == GL_POINT_DISTANCE_ATTENUATION { 3 } else { 1 };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glPointParameterfv(pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
         if !v.is_null() { c.gl.point_parameterfv(pname, &rd_vec(v, n)) }
     }
     fn glGetLightfv(light: GLenum, pname: GLenum, v: *mut GLfloat) => |c| {
@@ -667,6 +869,12 @@ gl_entry_points! {
             GL_SPOT_DIRECTION => 3,
             _ => 1,
         };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glLightiv(light, pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
         if !v.is_null() { c.gl.lightiv(light, pname, &rd_vec(v, n)) }
     }
     fn glMaterialiv(face: GLenum, pname: GLenum, v: *const GLint) => |c| {
@@ -675,26 +883,56 @@ gl_entry_points! {
             GL_COLOR_INDEXES => 3,
             _ => 1,
         };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glMaterialiv(face, pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
         if !v.is_null() { c.gl.materialiv(face, pname, &rd_vec(v, n)) }
     }
     fn glLightModeliv(pname: GLenum, v: *const GLint) => |c| {
         let n = if pname == GL_LIGHT_MODEL_AMBIENT { 4 } else { 1 };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glLightModeliv(pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
         if !v.is_null() { c.gl.light_modeliv(pname, &rd_vec(v, n)) }
     }
-    fn glTexEnvi(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_envi(target, pname, v) }
-    fn glTexEnvf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_envf(target, pname, v) }
+    [list] fn glTexEnvi(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_envi(target, pname, v) }
+    [list] fn glTexEnvf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_envf(target, pname, v) }
     fn glTexEnvfv(target: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
         let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glTexEnvfv(target, pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
         if !v.is_null() { c.gl.tex_envfv(target, pname, &rd_vec(v, n)) }
     }
     fn glTexEnviv(target: GLenum, pname: GLenum, v: *const GLint) => |c| {
         let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glTexEnviv(target, pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
         if !v.is_null() { c.gl.tex_enviv(target, pname, &rd_vec(v, n)) }
     }
-    fn glTexGeni(coord: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_geni(coord, pname, v) }
-    fn glTexGenf(coord: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_genf(coord, pname, v) }
+    [list] fn glTexGeni(coord: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_geni(coord, pname, v) }
+    [list] fn glTexGenf(coord: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_genf(coord, pname, v) }
     fn glTexGenfv(coord: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
         let n = if pname == GL_TEXTURE_GEN_MODE { 1 } else { 4 };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glTexGenfv(coord, pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
         if !v.is_null() { c.gl.tex_genfv(coord, pname, &rd_vec(v, n)) }
     }
 
@@ -708,11 +946,17 @@ gl_entry_points! {
         c.gl.delete_textures(&rd_vec(names, n as i64));
     }
     fn glIsTexture(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_texture(name) as GLboolean }
-    fn glBindTexture(target: GLenum, name: GLuint) => |c| { c.gl.bind_texture(target, name) }
-    fn glTexParameteri(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_parameteri(target, pname, v) }
-    fn glTexParameterf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_parameterf(target, pname, v) }
+    [list] fn glBindTexture(target: GLenum, name: GLuint) => |c| { c.gl.bind_texture(target, name) }
+    [list] fn glTexParameteri(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_parameteri(target, pname, v) }
+    [list] fn glTexParameterf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_parameterf(target, pname, v) }
     fn glTexParameterfv(target: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
         let n = if pname == GL_TEXTURE_BORDER_COLOR { 4 } else { 1 };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glTexParameterfv(target, pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
         if !v.is_null() { c.gl.tex_parameterfv(target, pname, &rd_vec(v, n)) }
     }
     fn glTexParameteriv(target: GLenum, pname: GLenum, v: *const GLint) => |c| {
@@ -882,12 +1126,12 @@ gl_entry_points! {
     fn glFramebufferRenderbufferEXT(
         target: GLenum, attachment: GLenum, rbtarget: GLenum, rb: GLuint
     ) => |c| { c.gl.framebuffer_renderbuffer_ext(target, attachment, rbtarget, rb) }
-    fn glDrawBuffer(buf: GLenum) => |c| { c.gl.draw_buffer(buf) }
+    [list] fn glDrawBuffer(buf: GLenum) => |c| { c.gl.draw_buffer(buf) }
     fn glDrawBuffers(n: GLsizei, bufs: *const GLenum) => |c| {
         if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
         c.gl.draw_buffers(&rd_vec(bufs, (n as i64).min(64)));
     }
-    fn glReadBuffer(buf: GLenum) => |c| { c.gl.read_buffer(buf) }
+    [list] fn glReadBuffer(buf: GLenum) => |c| { c.gl.read_buffer(buf) }
 
     // ---- program queries ----
     fn glGetAttachedShaders(
@@ -960,41 +1204,98 @@ gl_entry_points! {
         c.gl.uniform_matrix_4x3fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 12));
     }
     fn glVertexAttrib1fv(index: GLuint, v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<1, f32>(v) {
+                if c.record(move || unsafe { glVertexAttrib1fv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x]) = rd::<1, f32>(v) { c.gl.vertex_attrib_1f(index, x) }
     }
     fn glVertexAttrib2fv(index: GLuint, v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, f32>(v) {
+                if c.record(move || unsafe { glVertexAttrib2fv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y]) = rd::<2, f32>(v) { c.gl.vertex_attrib_2f(index, x, y) }
     }
     fn glVertexAttrib3fv(index: GLuint, v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f32>(v) {
+                if c.record(move || unsafe { glVertexAttrib3fv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.vertex_attrib_3f(index, x, y, z) }
     }
-    fn glSecondaryColor3f(r: GLfloat, g: GLfloat, bl: GLfloat) => |c| { c.gl.secondary_color_3f(r, g, bl) }
-    fn glFogCoordf(f: GLfloat) => |c| { c.gl.fog_coordf(f) }
+    [list] fn glSecondaryColor3f(r: GLfloat, g: GLfloat, bl: GLfloat) => |c| { c.gl.secondary_color_3f(r, g, bl) }
+    [list] fn glFogCoordf(f: GLfloat) => |c| { c.gl.fog_coordf(f) }
     fn glTexCoord3fv(v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f32>(v) {
+                if c.record(move || unsafe { glTexCoord3fv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([s, t, r]) = rd::<3, f32>(v) { c.gl.tex_coord_3f(s, t, r) }
     }
-    fn glTexCoord4fv(v: *const GLfloat) => |c| { if let Some(v) = rd::<4, f32>(v) { c.gl.tex_coord_4fv(&v) } }
-    fn glTexCoord2d(s: GLdouble, t: GLdouble) => |c| { c.gl.tex_coord_2f(s as f32, t as f32) }
-    fn glMultiTexCoord1f(target: GLenum, s: GLfloat) => |c| { c.gl.multi_tex_coord_1f(target, s) }
-    fn glMultiTexCoord3f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat) => |c| {
+    fn glTexCoord4fv(v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, f32>(v) {
+                if c.record(move || unsafe { glTexCoord4fv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
+        if let Some(v) = rd::<4, f32>(v) { c.gl.tex_coord_4fv(&v) } }
+    [list] fn glTexCoord2d(s: GLdouble, t: GLdouble) => |c| { c.gl.tex_coord_2f(s as f32, t as f32) }
+    [list] fn glMultiTexCoord1f(target: GLenum, s: GLfloat) => |c| { c.gl.multi_tex_coord_1f(target, s) }
+    [list] fn glMultiTexCoord3f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat) => |c| {
         c.gl.multi_tex_coord_3f(target, s, t, r)
     }
     fn glNormal3dv(v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f64>(v) {
+                if c.record(move || unsafe { glNormal3dv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.normal_3f(x as f32, y as f32, z as f32) }
     }
     fn glColor3dv(v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f64>(v) {
+                if c.record(move || unsafe { glColor3dv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([r, g, bl]) = rd::<3, f64>(v) { c.gl.color_3f(r as f32, g as f32, bl as f32) }
     }
     fn glColor4dv(v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, f64>(v) {
+                if c.record(move || unsafe { glColor4dv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([r, g, bl, a]) = rd::<4, f64>(v) {
             c.gl.color_4f(r as f32, g as f32, bl as f32, a as f32)
         }
     }
-    fn glRectd(x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble) => |c| {
+    [list] fn glRectd(x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble) => |c| {
         c.gl.rectf(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
         c.dirty = true;
     }
-    fn glRecti(x1: GLint, y1: GLint, x2: GLint, y2: GLint) => |c| {
+    [list] fn glRecti(x1: GLint, y1: GLint, x2: GLint, y2: GLint) => |c| {
         c.gl.rectf(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
         c.dirty = true;
     }
@@ -1012,6 +1313,10 @@ gl_entry_points! {
         mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, ty: GLenum,
         indices: *const c_void
     ) => |c| {
+        if c.compiling() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
         if end < start {
             c.gl.record_error(GL_INVALID_VALUE);
             return;
@@ -1024,6 +1329,10 @@ gl_entry_points! {
         c.dirty = true;
     }
     fn glMultiDrawArrays(mode: GLenum, first: *const GLint, count: *const GLsizei, n: GLsizei) => |c| {
+        if c.compiling() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
         if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
         let f = rd_vec(first, n as i64);
         let k = rd_vec(count, n as i64);
@@ -1039,286 +1348,811 @@ gl_entry_points! {
 
     // ---- generated scalar-type variants (GL 2.1 §2.7; integer colors and
     // normals normalized per Table 2.9) ----
-    fn glVertex2s(x: GLshort, y: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
+    [list] fn glVertex2s(x: GLshort, y: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
     fn glVertex2sv(v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, i16>(v) {
+                if c.record(move || unsafe { glVertex2sv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y]) = rd::<2, i16>(v) { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
     }
     fn glVertex2iv(v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, i32>(v) {
+                if c.record(move || unsafe { glVertex2iv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y]) = rd::<2, i32>(v) { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
     }
-    fn glVertex3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
+    [list] fn glVertex3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
     fn glVertex3sv(v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i16>(v) {
+                if c.record(move || unsafe { glVertex3sv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
     }
     fn glVertex3iv(v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i32>(v) {
+                if c.record(move || unsafe { glVertex3iv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
     }
-    fn glVertex4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
+    [list] fn glVertex4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
     fn glVertex4sv(v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i16>(v) {
+                if c.record(move || unsafe { glVertex4sv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
     }
-    fn glVertex4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
+    [list] fn glVertex4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
     fn glVertex4iv(v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i32>(v) {
+                if c.record(move || unsafe { glVertex4iv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
     }
-    fn glColor3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), 1.0) }
+    [list] fn glColor3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), 1.0) }
     fn glColor3bv(v: *const GLbyte) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i8>(v) {
+                if c.record(move || unsafe { glColor3bv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i8>(v) { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), 1.0) }
     }
-    fn glColor3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), 1.0) }
+    [list] fn glColor3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), 1.0) }
     fn glColor3sv(v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i16>(v) {
+                if c.record(move || unsafe { glColor3sv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), 1.0) }
     }
-    fn glColor3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), 1.0) }
+    [list] fn glColor3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), 1.0) }
     fn glColor3iv(v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i32>(v) {
+                if c.record(move || unsafe { glColor3iv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), 1.0) }
     }
-    fn glColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, 1.0) }
+    [list] fn glColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, 1.0) }
     fn glColor3usv(v: *const GLushort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, u16>(v) {
+                if c.record(move || unsafe { glColor3usv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, u16>(v) { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, 1.0) }
     }
-    fn glColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, 1.0) }
+    [list] fn glColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, 1.0) }
     fn glColor3uiv(v: *const GLuint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, u32>(v) {
+                if c.record(move || unsafe { glColor3uiv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, u32>(v) { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, 1.0) }
     }
-    fn glColor4b(x: GLbyte, y: GLbyte, z: GLbyte, w: GLbyte) => |c| { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
+    [list] fn glColor4b(x: GLbyte, y: GLbyte, z: GLbyte, w: GLbyte) => |c| { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
     fn glColor4bv(v: *const GLbyte) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i8>(v) {
+                if c.record(move || unsafe { glColor4bv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i8>(v) { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
     }
-    fn glColor4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0)) }
+    [list] fn glColor4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0)) }
     fn glColor4sv(v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i16>(v) {
+                if c.record(move || unsafe { glColor4sv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0)) }
     }
-    fn glColor4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
+    [list] fn glColor4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
     fn glColor4iv(v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i32>(v) {
+                if c.record(move || unsafe { glColor4iv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
     }
-    fn glColor4us(x: GLushort, y: GLushort, z: GLushort, w: GLushort) => |c| { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, (w as f64 / 65535.0) as f32) }
+    [list] fn glColor4us(x: GLushort, y: GLushort, z: GLushort, w: GLushort) => |c| { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, (w as f64 / 65535.0) as f32) }
     fn glColor4usv(v: *const GLushort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, u16>(v) {
+                if c.record(move || unsafe { glColor4usv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, (w as f64 / 65535.0) as f32) }
     }
-    fn glColor4ui(x: GLuint, y: GLuint, z: GLuint, w: GLuint) => |c| { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, (w as f64 / 4294967295.0) as f32) }
+    [list] fn glColor4ui(x: GLuint, y: GLuint, z: GLuint, w: GLuint) => |c| { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, (w as f64 / 4294967295.0) as f32) }
     fn glColor4uiv(v: *const GLuint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, u32>(v) {
+                if c.record(move || unsafe { glColor4uiv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, (w as f64 / 4294967295.0) as f32) }
     }
-    fn glNormal3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.normal_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
+    [list] fn glNormal3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.normal_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
     fn glNormal3bv(v: *const GLbyte) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i8>(v) {
+                if c.record(move || unsafe { glNormal3bv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i8>(v) { c.gl.normal_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
     }
-    fn glNormal3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.normal_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
+    [list] fn glNormal3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.normal_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
     fn glNormal3sv(v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i16>(v) {
+                if c.record(move || unsafe { glNormal3sv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.normal_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
     }
-    fn glNormal3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.normal_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
+    [list] fn glNormal3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.normal_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
     fn glNormal3iv(v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i32>(v) {
+                if c.record(move || unsafe { glNormal3iv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.normal_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
     }
-    fn glTexCoord1s(x: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
-    fn glMultiTexCoord1s(target: GLenum, x: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
+    [list] fn glTexCoord1s(x: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
+    [list] fn glMultiTexCoord1s(target: GLenum, x: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     fn glTexCoord1sv(v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<1, i16>(v) {
+                if c.record(move || unsafe { glTexCoord1sv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x]) = rd::<1, i16>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
     }
     fn glMultiTexCoord1sv(target: GLenum, v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<1, i16>(v) {
+                if c.record(move || unsafe { glMultiTexCoord1sv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x]) = rd::<1, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     }
-    fn glTexCoord1i(x: GLint) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
-    fn glMultiTexCoord1i(target: GLenum, x: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
+    [list] fn glTexCoord1i(x: GLint) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
+    [list] fn glMultiTexCoord1i(target: GLenum, x: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     fn glTexCoord1iv(v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<1, i32>(v) {
+                if c.record(move || unsafe { glTexCoord1iv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x]) = rd::<1, i32>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
     }
     fn glMultiTexCoord1iv(target: GLenum, v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<1, i32>(v) {
+                if c.record(move || unsafe { glMultiTexCoord1iv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x]) = rd::<1, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     }
     fn glTexCoord1fv(v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<1, f32>(v) {
+                if c.record(move || unsafe { glTexCoord1fv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x]) = rd::<1, f32>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
     }
     fn glMultiTexCoord1fv(target: GLenum, v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<1, f32>(v) {
+                if c.record(move || unsafe { glMultiTexCoord1fv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x]) = rd::<1, f32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     }
-    fn glTexCoord1d(x: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
-    fn glMultiTexCoord1d(target: GLenum, x: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
+    [list] fn glTexCoord1d(x: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
+    [list] fn glMultiTexCoord1d(target: GLenum, x: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     fn glTexCoord1dv(v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<1, f64>(v) {
+                if c.record(move || unsafe { glTexCoord1dv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x]) = rd::<1, f64>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
     }
     fn glMultiTexCoord1dv(target: GLenum, v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<1, f64>(v) {
+                if c.record(move || unsafe { glMultiTexCoord1dv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x]) = rd::<1, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     }
-    fn glTexCoord2s(x: GLshort, y: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glMultiTexCoord2s(target: GLenum, x: GLshort, y: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
+    [list] fn glTexCoord2s(x: GLshort, y: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
+    [list] fn glMultiTexCoord2s(target: GLenum, x: GLshort, y: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
     fn glTexCoord2sv(v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, i16>(v) {
+                if c.record(move || unsafe { glTexCoord2sv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y]) = rd::<2, i16>(v) { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
     }
     fn glMultiTexCoord2sv(target: GLenum, v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, i16>(v) {
+                if c.record(move || unsafe { glMultiTexCoord2sv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y]) = rd::<2, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
     }
-    fn glTexCoord2i(x: GLint, y: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glMultiTexCoord2i(target: GLenum, x: GLint, y: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
+    [list] fn glTexCoord2i(x: GLint, y: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
+    [list] fn glMultiTexCoord2i(target: GLenum, x: GLint, y: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
     fn glTexCoord2iv(v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, i32>(v) {
+                if c.record(move || unsafe { glTexCoord2iv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y]) = rd::<2, i32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
     }
     fn glMultiTexCoord2iv(target: GLenum, v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, i32>(v) {
+                if c.record(move || unsafe { glMultiTexCoord2iv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y]) = rd::<2, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
     }
-    fn glMultiTexCoord2d(target: GLenum, x: GLdouble, y: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
+    [list] fn glMultiTexCoord2d(target: GLenum, x: GLdouble, y: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
     fn glTexCoord2dv(v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, f64>(v) {
+                if c.record(move || unsafe { glTexCoord2dv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y]) = rd::<2, f64>(v) { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
     }
     fn glMultiTexCoord2dv(target: GLenum, v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, f64>(v) {
+                if c.record(move || unsafe { glMultiTexCoord2dv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y]) = rd::<2, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
     }
-    fn glTexCoord3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glMultiTexCoord3s(target: GLenum, x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
+    [list] fn glTexCoord3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
+    [list] fn glMultiTexCoord3s(target: GLenum, x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     fn glTexCoord3sv(v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i16>(v) {
+                if c.record(move || unsafe { glTexCoord3sv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
     }
     fn glMultiTexCoord3sv(target: GLenum, v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i16>(v) {
+                if c.record(move || unsafe { glMultiTexCoord3sv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     }
-    fn glTexCoord3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glMultiTexCoord3i(target: GLenum, x: GLint, y: GLint, z: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
+    [list] fn glTexCoord3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
+    [list] fn glMultiTexCoord3i(target: GLenum, x: GLint, y: GLint, z: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     fn glTexCoord3iv(v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i32>(v) {
+                if c.record(move || unsafe { glTexCoord3iv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
     }
     fn glMultiTexCoord3iv(target: GLenum, v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i32>(v) {
+                if c.record(move || unsafe { glMultiTexCoord3iv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     }
     fn glMultiTexCoord3fv(target: GLenum, v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f32>(v) {
+                if c.record(move || unsafe { glMultiTexCoord3fv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     }
-    fn glTexCoord3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glMultiTexCoord3d(target: GLenum, x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
+    [list] fn glTexCoord3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
+    [list] fn glMultiTexCoord3d(target: GLenum, x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     fn glTexCoord3dv(v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f64>(v) {
+                if c.record(move || unsafe { glTexCoord3dv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
     }
     fn glMultiTexCoord3dv(target: GLenum, v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f64>(v) {
+                if c.record(move || unsafe { glMultiTexCoord3dv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     }
-    fn glTexCoord4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glMultiTexCoord4s(target: GLenum, x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
+    [list] fn glTexCoord4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
+    [list] fn glMultiTexCoord4s(target: GLenum, x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
     fn glTexCoord4sv(v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i16>(v) {
+                if c.record(move || unsafe { glTexCoord4sv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
     }
     fn glMultiTexCoord4sv(target: GLenum, v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i16>(v) {
+                if c.record(move || unsafe { glMultiTexCoord4sv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
     }
-    fn glTexCoord4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glMultiTexCoord4i(target: GLenum, x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
+    [list] fn glTexCoord4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
+    [list] fn glMultiTexCoord4i(target: GLenum, x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
     fn glTexCoord4iv(v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i32>(v) {
+                if c.record(move || unsafe { glTexCoord4iv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
     }
     fn glMultiTexCoord4iv(target: GLenum, v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i32>(v) {
+                if c.record(move || unsafe { glMultiTexCoord4iv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
     }
-    fn glTexCoord4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glMultiTexCoord4d(target: GLenum, x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
+    [list] fn glTexCoord4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
+    [list] fn glMultiTexCoord4d(target: GLenum, x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
     fn glTexCoord4dv(v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, f64>(v) {
+                if c.record(move || unsafe { glTexCoord4dv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
     }
     fn glMultiTexCoord4dv(target: GLenum, v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, f64>(v) {
+                if c.record(move || unsafe { glMultiTexCoord4dv(target, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
     }
-    fn glVertexAttrib1s(index: GLuint, x: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
+    [list] fn glVertexAttrib1s(index: GLuint, x: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
     fn glVertexAttrib1sv(index: GLuint, v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<1, i16>(v) {
+                if c.record(move || unsafe { glVertexAttrib1sv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x]) = rd::<1, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
     }
-    fn glVertexAttrib1d(index: GLuint, x: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
+    [list] fn glVertexAttrib1d(index: GLuint, x: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
     fn glVertexAttrib1dv(index: GLuint, v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<1, f64>(v) {
+                if c.record(move || unsafe { glVertexAttrib1dv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x]) = rd::<1, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
     }
-    fn glVertexAttrib2s(index: GLuint, x: GLshort, y: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
+    [list] fn glVertexAttrib2s(index: GLuint, x: GLshort, y: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
     fn glVertexAttrib2sv(index: GLuint, v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, i16>(v) {
+                if c.record(move || unsafe { glVertexAttrib2sv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y]) = rd::<2, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
     }
-    fn glVertexAttrib2d(index: GLuint, x: GLdouble, y: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
+    [list] fn glVertexAttrib2d(index: GLuint, x: GLdouble, y: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
     fn glVertexAttrib2dv(index: GLuint, v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<2, f64>(v) {
+                if c.record(move || unsafe { glVertexAttrib2dv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y]) = rd::<2, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
     }
-    fn glVertexAttrib3s(index: GLuint, x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
+    [list] fn glVertexAttrib3s(index: GLuint, x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
     fn glVertexAttrib3sv(index: GLuint, v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i16>(v) {
+                if c.record(move || unsafe { glVertexAttrib3sv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
     }
-    fn glVertexAttrib3d(index: GLuint, x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
+    [list] fn glVertexAttrib3d(index: GLuint, x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
     fn glVertexAttrib3dv(index: GLuint, v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f64>(v) {
+                if c.record(move || unsafe { glVertexAttrib3dv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
     }
-    fn glVertexAttrib4s(index: GLuint, x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
+    [list] fn glVertexAttrib4s(index: GLuint, x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     fn glVertexAttrib4sv(index: GLuint, v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i16>(v) {
+                if c.record(move || unsafe { glVertexAttrib4sv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
-    fn glVertexAttrib4d(index: GLuint, x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
+    [list] fn glVertexAttrib4d(index: GLuint, x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     fn glVertexAttrib4dv(index: GLuint, v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, f64>(v) {
+                if c.record(move || unsafe { glVertexAttrib4dv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
     fn glVertexAttrib4bv(index: GLuint, v: *const GLbyte) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i8>(v) {
+                if c.record(move || unsafe { glVertexAttrib4bv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i8>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
     fn glVertexAttrib4iv(index: GLuint, v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i32>(v) {
+                if c.record(move || unsafe { glVertexAttrib4iv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
     fn glVertexAttrib4ubv(index: GLuint, v: *const GLubyte) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, u8>(v) {
+                if c.record(move || unsafe { glVertexAttrib4ubv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, u8>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
     fn glVertexAttrib4usv(index: GLuint, v: *const GLushort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, u16>(v) {
+                if c.record(move || unsafe { glVertexAttrib4usv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
     fn glVertexAttrib4uiv(index: GLuint, v: *const GLuint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, u32>(v) {
+                if c.record(move || unsafe { glVertexAttrib4uiv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
     fn glVertexAttrib4Nbv(index: GLuint, v: *const GLbyte) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i8>(v) {
+                if c.record(move || unsafe { glVertexAttrib4Nbv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i8>(v) { c.gl.vertex_attrib_4f(index, snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
     }
     fn glVertexAttrib4Nsv(index: GLuint, v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i16>(v) {
+                if c.record(move || unsafe { glVertexAttrib4Nsv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.vertex_attrib_4f(index, snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0)) }
     }
     fn glVertexAttrib4Niv(index: GLuint, v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, i32>(v) {
+                if c.record(move || unsafe { glVertexAttrib4Niv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.vertex_attrib_4f(index, snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
     }
     fn glVertexAttrib4Nubv(index: GLuint, v: *const GLubyte) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, u8>(v) {
+                if c.record(move || unsafe { glVertexAttrib4Nubv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, u8>(v) { c.gl.vertex_attrib_4f(index, (x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32, (w as f64 / 255.0) as f32) }
     }
     fn glVertexAttrib4Nusv(index: GLuint, v: *const GLushort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, u16>(v) {
+                if c.record(move || unsafe { glVertexAttrib4Nusv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.vertex_attrib_4f(index, (x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, (w as f64 / 65535.0) as f32) }
     }
     fn glVertexAttrib4Nuiv(index: GLuint, v: *const GLuint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<4, u32>(v) {
+                if c.record(move || unsafe { glVertexAttrib4Nuiv(index, arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.vertex_attrib_4f(index, (x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, (w as f64 / 4294967295.0) as f32) }
     }
-    fn glVertexAttrib4Nub(index: GLuint, x: GLubyte, y: GLubyte, z: GLubyte, w: GLubyte) => |c| { c.gl.vertex_attrib_4f(index, (x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32, (w as f64 / 255.0) as f32) }
-    fn glSecondaryColor3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
+    [list] fn glVertexAttrib4Nub(index: GLuint, x: GLubyte, y: GLubyte, z: GLubyte, w: GLubyte) => |c| { c.gl.vertex_attrib_4f(index, (x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32, (w as f64 / 255.0) as f32) }
+    [list] fn glSecondaryColor3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
     fn glSecondaryColor3bv(v: *const GLbyte) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i8>(v) {
+                if c.record(move || unsafe { glSecondaryColor3bv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i8>(v) { c.gl.secondary_color_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
     }
-    fn glSecondaryColor3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
+    [list] fn glSecondaryColor3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
     fn glSecondaryColor3sv(v: *const GLshort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i16>(v) {
+                if c.record(move || unsafe { glSecondaryColor3sv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.secondary_color_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
     }
-    fn glSecondaryColor3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
+    [list] fn glSecondaryColor3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
     fn glSecondaryColor3iv(v: *const GLint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, i32>(v) {
+                if c.record(move || unsafe { glSecondaryColor3iv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.secondary_color_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
     }
     fn glSecondaryColor3fv(v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f32>(v) {
+                if c.record(move || unsafe { glSecondaryColor3fv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
     }
-    fn glSecondaryColor3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
+    [list] fn glSecondaryColor3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
     fn glSecondaryColor3dv(v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, f64>(v) {
+                if c.record(move || unsafe { glSecondaryColor3dv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
     }
-    fn glSecondaryColor3ub(x: GLubyte, y: GLubyte, z: GLubyte) => |c| { c.gl.secondary_color_3f((x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32) }
+    [list] fn glSecondaryColor3ub(x: GLubyte, y: GLubyte, z: GLubyte) => |c| { c.gl.secondary_color_3f((x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32) }
     fn glSecondaryColor3ubv(v: *const GLubyte) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, u8>(v) {
+                if c.record(move || unsafe { glSecondaryColor3ubv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, u8>(v) { c.gl.secondary_color_3f((x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32) }
     }
-    fn glSecondaryColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.secondary_color_3f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32) }
+    [list] fn glSecondaryColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.secondary_color_3f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32) }
     fn glSecondaryColor3usv(v: *const GLushort) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, u16>(v) {
+                if c.record(move || unsafe { glSecondaryColor3usv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, u16>(v) { c.gl.secondary_color_3f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32) }
     }
-    fn glSecondaryColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.secondary_color_3f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32) }
+    [list] fn glSecondaryColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.secondary_color_3f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32) }
     fn glSecondaryColor3uiv(v: *const GLuint) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<3, u32>(v) {
+                if c.record(move || unsafe { glSecondaryColor3uiv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x, y, z]) = rd::<3, u32>(v) { c.gl.secondary_color_3f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32) }
     }
     fn glFogCoordfv(v: *const GLfloat) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<1, f32>(v) {
+                if c.record(move || unsafe { glFogCoordfv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x]) = rd::<1, f32>(v) { c.gl.fog_coordf(x as f32) }
     }
-    fn glFogCoordd(x: GLdouble) => |c| { c.gl.fog_coordf(x as f32) }
+    [list] fn glFogCoordd(x: GLdouble) => |c| { c.gl.fog_coordf(x as f32) }
     fn glFogCoorddv(v: *const GLdouble) => |c| {
+        if c.compiling() {
+            if let Some(arr) = rd::<1, f64>(v) {
+                if c.record(move || unsafe { glFogCoorddv(arr.as_ptr()) }) {
+                    return;
+                }
+            }
+        }
         if let Some([x]) = rd::<1, f64>(v) { c.gl.fog_coordf(x as f32) }
     }
 
@@ -1326,7 +2160,7 @@ gl_entry_points! {
     fn glEnableClientState(cap: GLenum) => |c| { c.gl.enable_client_state(cap) }
     fn glDisableClientState(cap: GLenum) => |c| { c.gl.disable_client_state(cap) }
     fn glClientActiveTexture(unit: GLenum) => |c| { c.gl.client_active_texture(unit) }
-    fn glActiveTexture(unit: GLenum) => |c| { c.gl.active_texture(unit) }
+    [list] fn glActiveTexture(unit: GLenum) => |c| { c.gl.active_texture(unit) }
     fn glEnableVertexAttribArray(index: GLuint) => |c| { c.gl.enable_vertex_attrib_array(index) }
     fn glDisableVertexAttribArray(index: GLuint) => |c| { c.gl.disable_vertex_attrib_array(index) }
     fn glVertexAttribPointer(
@@ -1360,6 +2194,10 @@ gl_entry_points! {
         });
     }
     fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) => |c| {
+        if c.compiling() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
         if first >= 0 && count > 0 {
             let last = (first as i64 + count.min(1 << 24) as i64 - 1).min(u32::MAX as i64);
             c.arrays.prepare(&mut c.gl, first as u32, last as u32);
@@ -1368,6 +2206,10 @@ gl_entry_points! {
         c.dirty = true;
     }
     fn glDrawElements(mode: GLenum, count: GLsizei, ty: GLenum, indices: *const c_void) => |c| {
+        if c.compiling() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
         let (data, idx) = element_indices(c, count, ty, indices);
         if let (Some(lo), Some(hi)) = (idx.iter().min(), idx.iter().max()) {
             c.arrays.prepare(&mut c.gl, *lo, *hi);

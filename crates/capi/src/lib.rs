@@ -25,6 +25,8 @@
 //!   and type (GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_FLOAT,
 //!   GL_UNSIGNED_SHORT_5_6_5) given, bottom row first unless
 //!   `OSMesaPixelStore(OSMESA_Y_UP, 0)`, rows `OSMESA_ROW_LENGTH` apart.
+//! - Display lists are recorded at the C level ([`lists`]); vertex-array
+//!   draws cannot be compiled into them yet (GL_INVALID_OPERATION).
 //! - Client vertex arrays: pointers are kept as given and the bytes a draw
 //!   reads are copied at draw time (safety argument in [`arrays`]).
 //! - No entry point unwinds into C: panics are caught (the call then does
@@ -40,8 +42,7 @@
 //! contexts before use.
 //!
 //! ## Limitations (first increment)
-//! - Only the entry points in [`entry::NAMES`] (about 280 of GL 2.1's
-//!   ~590 plus EXT framebuffer-object names); display lists, evaluators,
+//! - Only the entry points in [`entry::NAMES`] and [`lists`]; evaluators,
 //!   selection/feedback, pixel transfer (glDrawPixels, glBitmap, glCopy*),
 //!   queries, glGetPointerv/glGetVertexAttrib*v (partial), glInterleavedArrays,
 //!   glArrayElement and many scalar-type variants (glColor3b, glVertex2s...)
@@ -62,12 +63,14 @@
 pub mod arrays;
 pub mod context;
 pub mod entry;
+pub mod lists;
 pub mod osmesa;
 pub mod osmesa_enums;
 pub mod procs;
 pub mod types;
 
 pub use entry::*;
+pub use lists::*;
 pub use osmesa::*;
 pub use osmesa_enums::*;
 pub use types::*;

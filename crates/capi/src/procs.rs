@@ -20,6 +20,14 @@ pub fn lookup(name: &str) -> Option<*const ()> {
         "OSMesaGetColorBuffer" => OSMesaGetColorBuffer as *const (),
         "OSMesaGetProcAddress" => OSMesaGetProcAddress as *const (),
         "OSMesaColorClamp" => OSMesaColorClamp as *const (),
+        "glNewList" => crate::lists::glNewList as *const (),
+        "glEndList" => crate::lists::glEndList as *const (),
+        "glCallList" => crate::lists::glCallList as *const (),
+        "glCallLists" => crate::lists::glCallLists as *const (),
+        "glGenLists" => crate::lists::glGenLists as *const (),
+        "glDeleteLists" => crate::lists::glDeleteLists as *const (),
+        "glIsList" => crate::lists::glIsList as *const (),
+        "glListBase" => crate::lists::glListBase as *const (),
         _ => return None,
     })
 }

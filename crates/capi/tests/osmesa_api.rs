@@ -436,3 +436,56 @@ fn contexts_on_two_threads_are_independent() {
     assert_eq!(a.join().unwrap(), 255);
     assert_eq!(b.join().unwrap(), 0);
 }
+
+#[test]
+fn display_lists_replay_what_they_recorded() {
+    unsafe {
+        let ctx = OSMesaCreateContext(OSMESA_RGBA, null_mut());
+        let mut buf = vec![0u8; (W * H * 4) as usize];
+        OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, W, H);
+        let l = glGenLists(2);
+        assert!(l > 0 && glIsList(l) == 1 && glIsList(l + 1) == 1);
+        glNewList(l, GL_COMPILE);
+        glColor3fv([0.0f32, 1.0, 0.0].as_ptr());
+        glBegin(GL_TRIANGLES);
+        glVertex2f(-1.0, -1.0);
+        glVertex2f(3.0, -1.0);
+        glVertex2f(-1.0, 3.0);
+        glEnd();
+        glEndList();
+        // GL_COMPILE: nothing drawn, current color untouched.
+        glFinish();
+        assert_eq!(px(&buf, 0, 0), [0, 0, 0, 0]);
+        let mut col = [0f32; 4];
+        glGetFloatv(GL_CURRENT_COLOR, col.as_mut_ptr());
+        assert_eq!(col, [1.0; 4]);
+        // A list calling a list, and glCallLists with a base.
+        glNewList(l + 1, GL_COMPILE_AND_EXECUTE);
+        glClearColor(0.0, 0.0, 1.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glEndList();
+        glFinish();
+        assert_eq!(px(&buf, 0, 0), [0, 0, 255, 255]);
+        glClearColor(0.0, 0.0, 0.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glListBase(l);
+        let offsets: [u8; 2] = [1, 0];
+        glCallLists(2, GL_UNSIGNED_BYTE, offsets.as_ptr() as *const c_void);
+        glFinish();
+        assert_eq!(px(&buf, 0, 0), [0, 255, 0, 255]);
+        // Errors: nested glNewList, glEndList outside, draws from arrays.
+        glNewList(l, GL_COMPILE);
+        glNewList(l + 1, GL_COMPILE);
+        assert_eq!(glGetError(), GL_INVALID_OPERATION);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        assert_eq!(glGetError(), GL_INVALID_OPERATION);
+        glEndList();
+        glEndList();
+        assert_eq!(glGetError(), GL_INVALID_OPERATION);
+        glDeleteLists(l, 2);
+        assert_eq!(glIsList(l), 0);
+        glCallList(l); // deleted: no-op
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        OSMesaDestroyContext(ctx);
+    }
+}

@@ -1,5 +1,5 @@
 """Fixed-function PyOpenGL scene on OSMesa: glFrustum, two lights, a material,
-a smooth-shaded immediate-mode sphere, fog, and a client-array quad drawn with
+a smooth-shaded immediate-mode sphere in a display list, fog, and a client-array quad drawn with
 glDrawElements. Writes RGBA pixels (bottom row first) to argv[1] if given."""
 import ctypes
 import math
@@ -51,10 +51,18 @@ def main():
     GL.glMaterialf(GL.GL_FRONT_AND_BACK, GL.GL_SHININESS, 30.0)
     GL.glLightModelfv(GL.GL_LIGHT_MODEL_AMBIENT, (0.1, 0.1, 0.1, 1.0))
     GL.glShadeModel(GL.GL_SMOOTH)
+    # The sphere goes through a display list (with its transform and a
+    # material change inside), called once.
+    lst = GL.glGenLists(1)
+    GL.glNewList(lst, GL.GL_COMPILE)
     GL.glPushMatrix()
     GL.glRotatef(30.0, 1.0, 0.0, 0.0)
+    GL.glMaterialfv(GL.GL_FRONT_AND_BACK, GL.GL_DIFFUSE, (0.9, 0.9, 0.9, 1.0))
     sphere(0.9, 24, 16)
     GL.glPopMatrix()
+    GL.glEndList()
+    GL.glMaterialfv(GL.GL_FRONT_AND_BACK, GL.GL_DIFFUSE, (0.0, 0.0, 0.0, 1.0))
+    GL.glCallList(lst)
     mv = GL.glGetFloatv(GL.GL_MODELVIEW_MATRIX)
     assert abs(mv[3][2] + 3.0) < 1e-6, mv
 
