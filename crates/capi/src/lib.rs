@@ -44,9 +44,9 @@
 //! ## Limitations (first increment)
 //! - Only the entry points in [`entry::NAMES`] and [`lists`]; evaluators,
 //!   selection/feedback, pixel transfer (glDrawPixels, glBitmap, glCopy*),
-//!   queries, glGetPointerv/glGetVertexAttrib*v (partial), glInterleavedArrays,
-//!   glArrayElement and many scalar-type variants (glColor3b, glVertex2s...)
-//!   are missing.
+//!   queries, glGetPointerv, glGetVertexAttrib{i,d}v, glGetTexEnv/Gen,
+//!   glInterleavedArrays, glArrayElement, glRasterPos/glWindowPos and
+//!   glMapBuffer are missing (README.md lists every missing GL 2.1 name).
 //! - The client buffer's contents are loaded as the framebuffer's at
 //!   OSMesaMakeCurrent and OSMesaPixelStore (Mesa renders in place); what
 //!   the client writes into it later, between GL calls, is not seen by GL
