@@ -10,6 +10,13 @@
 //! from client vertex arrays, reads the pixels back, box-filters
 //! supersampled renders down and writes PNG ([`image`]).
 //!
+//! The seed talk's effects ([`Effect`]) swap in the library's other pairs:
+//! `outline.frag` (black interiors, lit rims [`OUTLINE_PIXELS`] wide),
+//! `x.vert` + `x.frag` (dark X on every atom), `x.vert` + `x-red.frag`
+//! (yellow X on red atoms) and `transparent.frag` (screen-door
+//! checkerboard on red atoms). Which atoms are red travels in `gl_Color`,
+//! as in the seed.
+//!
 //! ## Contract
 //! - [`render`] never panics; bad sizes, shader or GL failures are
 //!   [`RenderError`]s. Output is deterministic (same bytes on every
@@ -27,9 +34,12 @@
 //!   little: fog grows from the eye). The fog colour is the background's.
 //!
 //! ## Limitations
-//! - Spacefill only: no bonds or ball-and-stick yet, none of the seed's
-//!   effects (outline, X marks, transparent atoms) yet; PDB only (no
+//! - Spacefill only: no bonds or ball-and-stick yet; PDB only (no
 //!   mmCIF).
+//! - The effects' "red atom" test (x-red, transparent) is the seed's
+//!   colour test on gl_Color (r > 0.7, g < 0.3, b < 0.3), so it marks
+//!   oxygen in the element colours and would mark any other red-coloured
+//!   atom; there is no per-atom selection yet.
 //! - Supersampling box-filters N x N samples in linear 0-1 colour values
 //!   (not gamma-aware).
 
