@@ -35,7 +35,7 @@
 // - Alpha: the seed's lit alpha saturates to 1; here it is the atom
 //   colour's alpha, as its materials shader does.
 // The seed's mismatched braces are in its outline/transparent variants,
-// not in this pair.
+// not in this pair (fixed in outline.frag and transparent.frag).
 
 uniform float fogging[4];
 uniform float perspective;

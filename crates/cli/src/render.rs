@@ -12,7 +12,7 @@
 
 use crate::guard::guarded;
 use crate::Exit;
-use render::{Background, Fog, Projection, RenderOptions};
+use render::{Background, Effect, Fog, Projection, RenderOptions};
 use std::path::PathBuf;
 
 #[derive(clap::Args, Debug)]
@@ -59,6 +59,11 @@ pub struct Args {
     /// Background: black, white, gray, a #RRGGBB colour, or `transparent`.
     #[arg(long, value_name = "COLOR", default_value = "black", value_parser = parse_background)]
     pub background: BackgroundArg,
+
+    /// Effect of the seed talk: plain spheres, outlines, a dark X on every
+    /// atom, a yellow X on red (oxygen) atoms, or red atoms 50% transparent.
+    #[arg(long, value_name = "EFFECT", default_value = "plain", value_parser = parse_effect)]
+    pub effect: Effect,
 }
 
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -134,6 +139,13 @@ fn parse_rotate(s: &str) -> Result<Rotation, String> {
     Ok(Rotation(v))
 }
 
+fn parse_effect(s: &str) -> Result<Effect, String> {
+    Effect::from_name(s.trim()).ok_or_else(|| {
+        let names: Vec<&str> = Effect::ALL.iter().map(|e| e.name()).collect();
+        format!("`{s}` is not an effect: {}", names.join(", "))
+    })
+}
+
 fn parse_background(s: &str) -> Result<BackgroundArg, String> {
     let t = s.trim().to_ascii_lowercase();
     let c = match t.as_str() {
@@ -201,6 +213,7 @@ fn run_inner(args: &Args) -> Exit {
         rotate: args.rotate.0,
         supersample: args.supersample,
         background: args.background.0,
+        effect: args.effect,
     };
     let image = match render::render(&structure, &opts) {
         Ok(i) => i,
@@ -266,5 +279,9 @@ mod tests {
             Ok(BackgroundArg(Background::Transparent))
         );
         assert!(parse_background("#12345").is_err() && parse_background("mauve").is_err());
+        assert_eq!(parse_effect("x-red"), Ok(Effect::XRed));
+        assert_eq!(parse_effect("outline"), Ok(Effect::Outline));
+        let e = parse_effect("sepia").unwrap_err();
+        assert!(e.contains("plain, outline, x, x-red, transparent"), "{e}");
     }
 }

@@ -149,12 +149,38 @@ fn misuse_exits_2() {
         &["render", "--background", "mauve"],
         &["render", "--fog", "thick"],
         &["render", "--projection", "fisheye"],
+        &["render", "--effect", "sepia"],
         &["render", "--size", "5000x5000", "--supersample", "2"],
     ] {
         let o = shaderbox(args);
         assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
         assert!(!stderr(&o).contains("panicked"), "{args:?}");
     }
+}
+
+#[test]
+fn every_effect_renders_and_unknown_effect_is_named() {
+    for effect in ["plain", "outline", "x", "x-red", "transparent"] {
+        let out = dir("effects").join(format!("{effect}.png"));
+        let o = shaderbox(&[
+            "render",
+            "-o",
+            out.to_str().unwrap(),
+            "--size",
+            "24x24",
+            "--effect",
+            effect,
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{effect}: {}", stderr(&o));
+        assert_eq!(png_size(&std::fs::read(&out).unwrap()), (24, 24));
+    }
+    let o = shaderbox(&["render", "--effect", "sepia"]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = stderr(&o);
+    assert!(
+        e.contains("`sepia` is not an effect: plain, outline, x, x-red, transparent"),
+        "{e}"
+    );
 }
 
 #[test]

@@ -10,6 +10,13 @@
 //! from client vertex arrays, reads the pixels back, box-filters
 //! supersampled renders down and writes PNG ([`image`]).
 //!
+//! The seed talk's effects ([`Effect`]) swap in the library's other pairs:
+//! `outline.frag` (black interiors, lit rims [`OUTLINE_PIXELS`] wide),
+//! `x.vert` + `x.frag` (dark X on every atom), `x.vert` + `x-red.frag`
+//! (yellow X on red atoms) and `transparent.frag` (screen-door
+//! checkerboard on red atoms). Which atoms are red travels in `gl_Color`,
+//! as in the seed.
+//!
 //! ## Contract
 //! - [`render`] never panics; bad sizes, shader or GL failures are
 //!   [`RenderError`]s. Output is deterministic (same bytes on every
@@ -27,9 +34,12 @@
 //!   little: fog grows from the eye). The fog colour is the background's.
 //!
 //! ## Limitations
-//! - Spacefill only: no bonds or ball-and-stick yet, none of the seed's
-//!   effects (outline, X marks, transparent atoms) yet; PDB only (no
+//! - Spacefill only: no bonds or ball-and-stick yet; PDB only (no
 //!   mmCIF).
+//! - The effects' "red atom" test (x-red, transparent) is the seed's
+//!   colour test on gl_Color (r > 0.7, g < 0.3, b < 0.3), so it marks
+//!   oxygen in the element colours and would mark any other red-coloured
+//!   atom; there is no per-atom selection yet.
 //! - Supersampling box-filters N x N samples in linear 0-1 colour values
 //!   (not gamma-aware).
 
@@ -51,6 +61,79 @@ use thiserror::Error;
 pub const SPHERE_VERT: &str = include_str!("../../../shaders/sphere.vert");
 /// The library's sphere impostor fragment shader.
 pub const SPHERE_FRAG: &str = include_str!("../../../shaders/sphere.frag");
+/// Outline effect fragment shader (with [`SPHERE_VERT`]).
+pub const OUTLINE_FRAG: &str = include_str!("../../../shaders/outline.frag");
+/// Sphere impostor vertex shader that passes the quad corner on (X effects).
+pub const X_VERT: &str = include_str!("../../../shaders/x.vert");
+/// Dark X on every atom (with [`X_VERT`]).
+pub const X_FRAG: &str = include_str!("../../../shaders/x.frag");
+/// Yellow X on red atoms (with [`X_VERT`]).
+pub const X_RED_FRAG: &str = include_str!("../../../shaders/x-red.frag");
+/// Screen-door transparency of red atoms (with [`SPHERE_VERT`]).
+pub const TRANSPARENT_FRAG: &str = include_str!("../../../shaders/transparent.frag");
+
+/// Width of the outline effect's lit rim, in pixels (of the supersampled
+/// framebuffer) at the depth of the molecule's centre.
+pub const OUTLINE_PIXELS: f32 = 1.5;
+
+/// The seed talk's effects: which library shader pair draws the atoms.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Effect {
+    /// Lit spheres (`sphere.vert` + `sphere.frag`).
+    #[default]
+    Plain,
+    /// Black sphere interiors, lit rims: outlines of the structure
+    /// (`sphere.vert` + `outline.frag`).
+    Outline,
+    /// A dark X on every atom (`x.vert` + `x.frag`).
+    X,
+    /// A yellow X on red atoms only (`x.vert` + `x-red.frag`).
+    XRed,
+    /// Red atoms 50% transparent by a screen-door checkerboard
+    /// (`sphere.vert` + `transparent.frag`).
+    Transparent,
+}
+
+impl Effect {
+    /// Every effect, in the order of the CLI's list.
+    pub const ALL: [Effect; 5] = [
+        Effect::Plain,
+        Effect::Outline,
+        Effect::X,
+        Effect::XRed,
+        Effect::Transparent,
+    ];
+
+    /// The effect's name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Effect::Plain => "plain",
+            Effect::Outline => "outline",
+            Effect::X => "x",
+            Effect::XRed => "x-red",
+            Effect::Transparent => "transparent",
+        }
+    }
+
+    /// The effect called `name` (as [`Effect::name`] spells it).
+    pub fn from_name(name: &str) -> Option<Effect> {
+        Effect::ALL.into_iter().find(|e| e.name() == name)
+    }
+
+    /// The library's (vertex, fragment) shader files, names and sources.
+    pub fn shaders(self) -> [(&'static str, &'static str); 2] {
+        match self {
+            Effect::Plain => [("sphere.vert", SPHERE_VERT), ("sphere.frag", SPHERE_FRAG)],
+            Effect::Outline => [("sphere.vert", SPHERE_VERT), ("outline.frag", OUTLINE_FRAG)],
+            Effect::X => [("x.vert", X_VERT), ("x.frag", X_FRAG)],
+            Effect::XRed => [("x.vert", X_VERT), ("x-red.frag", X_RED_FRAG)],
+            Effect::Transparent => [
+                ("sphere.vert", SPHERE_VERT),
+                ("transparent.frag", TRANSPARENT_FRAG),
+            ],
+        }
+    }
+}
 
 /// Largest side of the (supersampled) framebuffer.
 pub const MAX_SIDE: u32 = gl::MAX_TEXTURE_SIZE as u32;
@@ -98,6 +181,8 @@ pub struct RenderOptions {
     /// Render N times larger and box-filter down (1 = off).
     pub supersample: u32,
     pub background: Background,
+    /// Which of the seed's effects draws the atoms.
+    pub effect: Effect,
 }
 
 impl Default for RenderOptions {
@@ -111,6 +196,7 @@ impl Default for RenderOptions {
             rotate: [0.0; 3],
             supersample: 1,
             background: Background::default(),
+            effect: Effect::Plain,
         }
     }
 }
@@ -154,12 +240,13 @@ fn check(ctx: &mut Context, during: &'static str) -> Result<(), RenderError> {
     }
 }
 
-/// Compiles and links the sphere impostor program.
-fn build_program(ctx: &mut Context) -> Result<u32, RenderError> {
+/// Compiles and links the effect's sphere impostor program.
+fn build_program(ctx: &mut Context, effect: Effect) -> Result<u32, RenderError> {
     let program = ctx.create_program();
+    let [(vname, vsrc), (fname, fsrc)] = effect.shaders();
     for (kind, src, what) in [
-        (GL_VERTEX_SHADER, SPHERE_VERT, "sphere.vert"),
-        (GL_FRAGMENT_SHADER, SPHERE_FRAG, "sphere.frag"),
+        (GL_VERTEX_SHADER, vsrc, vname),
+        (GL_FRAGMENT_SHADER, fsrc, fname),
     ] {
         let sh = ctx.create_shader(kind);
         ctx.shader_source(sh, &[src]);
@@ -222,7 +309,7 @@ pub fn render(structure: &Structure, opts: &RenderOptions) -> Result<Image, Rend
     }
     let (fw, fh) = (w * ss, h * ss);
     let mut ctx = Context::new(fw as i32, fh as i32);
-    let program = build_program(&mut ctx)?;
+    let program = build_program(&mut ctx, opts.effect)?;
 
     let spheres: Vec<([f32; 3], f32)> = structure
         .atoms
@@ -308,6 +395,16 @@ pub fn render(structure: &Structure, opts: &RenderOptions) -> Result<Image, Rend
     ctx.uniform_1fv(l, 4, &fogging);
     let l = loc(&mut ctx, "light_enabled");
     ctx.uniform_1fv(l, 8, &enabled);
+    if opts.effect == Effect::Outline {
+        // Eye-space size of a pixel at the centre's depth (perspective:
+        // the near-plane size scaled out to the centre).
+        let mut pixel = 2.0 * camera.half_width / fw as f32;
+        if camera.projection == Projection::Perspective {
+            pixel *= camera.distance / camera.near.max(1e-6);
+        }
+        let l = loc(&mut ctx, "outline_width");
+        ctx.uniform_1f(l, OUTLINE_PIXELS * pixel);
+    }
     check(&mut ctx, "setting the shader uniforms")?;
 
     // One quad per atom: four vertices at the centre, corners in
@@ -351,8 +448,20 @@ mod tests {
 
     #[test]
     fn shaders_build() {
-        let mut ctx = Context::new(4, 4);
-        assert!(build_program(&mut ctx).is_ok());
+        for effect in Effect::ALL {
+            let mut ctx = Context::new(4, 4);
+            let built = build_program(&mut ctx, effect);
+            assert!(built.is_ok(), "{effect:?}: {built:?}");
+        }
+    }
+
+    #[test]
+    fn effect_names_round_trip() {
+        for effect in Effect::ALL {
+            assert_eq!(Effect::from_name(effect.name()), Some(effect));
+        }
+        assert_eq!(Effect::from_name("sepia"), None);
+        assert_eq!(Effect::from_name("X"), None);
     }
 
     #[test]

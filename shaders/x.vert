@@ -1,0 +1,72 @@
+// x.vert: sphere impostor billboard that also hands on the quad corner
+// (vertex stage, for x.frag and x-red.frag).
+//
+// What it does: exactly what sphere.vert does (see its header: one
+// screen-aligned quad per atom, corners in gl_MultiTexCoord0 =
+// (right, up, radius)), and besides copies the corner's up and right
+// (+1 or -1) to the varyings u1 and r1. Interpolated over the quad they
+// run from -1 to 1; |u1| = |r1| on the quad's two diagonals, where the
+// fragment shaders draw the X.
+//
+// State it reads: as sphere.vert (right_vector, up_vector, perspective,
+// gl_Vertex, gl_MultiTexCoord0, gl_Color, the model-view and projection
+// matrices). It writes sphere.vert's outputs plus u1, r1.
+//
+// Changes from the seed talk ("GLSL v1.20", Example 02, X vertex shader):
+// the seed's X vertex shader is its sphere vertex shader plus u1/r1, and
+// compiles as given; it gets sphere.vert's perspective growth of the
+// square (the seed clips the rims of off-centre spheres in perspective).
+
+uniform vec3 right_vector;
+uniform vec3 up_vector;
+uniform float perspective;
+
+varying vec4 color;
+varying vec3 view_direction;
+varying vec3 sphere_center;
+varying float radius2;
+varying vec3 point;
+
+varying float u1;
+varying float r1;
+
+void main(void)
+{
+    // Billboard attributes.
+    float right = gl_MultiTexCoord0.x;
+    float up = gl_MultiTexCoord0.y;
+    float radius = gl_MultiTexCoord0.z;
+    radius2 = radius * radius;
+
+    // Quad corner for the X (x.frag, x-red.frag).
+    u1 = up;
+    r1 = right;
+
+    // Sphere centre in eye space.
+    vec4 center4 = gl_ModelViewMatrix * vec4(gl_Vertex.xyz, 1.0);
+    sphere_center = center4.xyz / center4.w;
+
+    // Perspective growth of the square (see the header).
+    float dist = length(sphere_center);
+    float cos_theta = clamp(-sphere_center.z / max(dist, 1e-6), -1.0, 1.0);
+    float sin_theta = sqrt(max(0.0, 1.0 - cos_theta * cos_theta));
+    float sin_alpha = clamp(radius / max(dist, 1e-6), 0.0, 1.0);
+    float cos_alpha = sqrt(max(0.0, 1.0 - sin_alpha * sin_alpha));
+    float cos_edge = cos_theta * cos_alpha - sin_theta * sin_alpha;
+    float grow = mix(1.0, 1.0 / max(cos_edge, 0.05), perspective);
+
+    // Corner of the screen-aligned square (billboard), object space.
+    vec3 corner_direction = up * up_vector + right * right_vector;
+    vec4 vertex = vec4(gl_Vertex.xyz + (radius * grow) * corner_direction, 1.0);
+
+    vec4 eye_space_pos = gl_ModelViewMatrix * vertex;
+
+    // Ray origin (orthographic) / direction (perspective) data.
+    point = eye_space_pos.xyz / eye_space_pos.w;
+    view_direction = normalize(point);
+
+    gl_FogFragCoord = abs(sphere_center.z);
+    gl_ClipVertex = eye_space_pos;
+    color = gl_Color;
+    gl_Position = gl_ModelViewProjectionMatrix * vertex;
+}
