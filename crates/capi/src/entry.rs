@@ -32,6 +32,26 @@ unsafe fn rd<const N: usize, T: Copy>(p: *const T) -> Option<[T; N]> {
     }
 }
 
+/// While a display list is being compiled, records a replay of a vector
+/// call: the `N` values at `v` are read now (a list keeps values, not the
+/// caller's pointer) and `replay` gets a pointer to the copy. True when
+/// the call must not also run now (GL_COMPILE); false when it must
+/// (GL_COMPILE_AND_EXECUTE, or not compiling, or a null pointer).
+fn record_vector<const N: usize, T: Copy + 'static>(
+    c: &mut OsContext,
+    v: *const T,
+    replay: impl Fn(*const T) + 'static,
+) -> bool {
+    if !c.compiling() {
+        return false;
+    }
+    // SAFETY: GL's contract for vector arguments: N values at v (or null).
+    match unsafe { rd::<N, T>(v) } {
+        Some(arr) => c.record(move || replay(arr.as_ptr())),
+        None => false,
+    }
+}
+
 /// Reads `n` values at `p` (empty for null or n <= 0).
 unsafe fn rd_vec<T: Copy>(p: *const T, n: i64) -> Vec<T> {
     if p.is_null() || n <= 0 {
@@ -337,42 +357,26 @@ gl_entry_points! {
         c.gl.rotatef(a as f32, x as f32, y as f32, z as f32)
     }
     fn glLoadMatrixf(m: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<16, f32>(m) {
-                if c.record(move || unsafe { glLoadMatrixf(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<16, f32>(c, m, move |p| unsafe { glLoadMatrixf(p) }) {
+            return;
         }
         if let Some(m) = rd::<16, f32>(m) { c.gl.load_matrixf(&m) }
     }
     fn glLoadMatrixd(m: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<16, f64>(m) {
-                if c.record(move || unsafe { glLoadMatrixd(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<16, f64>(c, m, move |p| unsafe { glLoadMatrixd(p) }) {
+            return;
         }
         if let Some(m) = rd::<16, f64>(m) { c.gl.load_matrixf(&m.map(|x| x as f32)) }
     }
     fn glMultMatrixf(m: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<16, f32>(m) {
-                if c.record(move || unsafe { glMultMatrixf(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<16, f32>(c, m, move |p| unsafe { glMultMatrixf(p) }) {
+            return;
         }
         if let Some(m) = rd::<16, f32>(m) { c.gl.mult_matrixf(&m) }
     }
     fn glMultMatrixd(m: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<16, f64>(m) {
-                if c.record(move || unsafe { glMultMatrixd(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<16, f64>(c, m, move |p| unsafe { glMultMatrixd(p) }) {
+            return;
         }
         if let Some(m) = rd::<16, f64>(m) { c.gl.mult_matrixf(&m.map(|x| x as f32)) }
     }
@@ -395,64 +399,40 @@ gl_entry_points! {
         c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0)
     }
     fn glVertex2fv(v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, f32>(v) {
-                if c.record(move || unsafe { glVertex2fv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, f32>(c, v, move |p| unsafe { glVertex2fv(p) }) {
+            return;
         }
         if let Some([x, y]) = rd::<2, f32>(v) { c.gl.vertex_4f(x, y, 0.0, 1.0) }
     }
     fn glVertex3fv(v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f32>(v) {
-                if c.record(move || unsafe { glVertex3fv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f32>(c, v, move |p| unsafe { glVertex3fv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.vertex_4f(x, y, z, 1.0) }
     }
     fn glVertex4fv(v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, f32>(v) {
-                if c.record(move || unsafe { glVertex4fv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, f32>(c, v, move |p| unsafe { glVertex4fv(p) }) {
+            return;
         }
         if let Some(v) = rd::<4, f32>(v) { c.gl.vertex_4fv(&v) }
     }
     fn glVertex2dv(v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, f64>(v) {
-                if c.record(move || unsafe { glVertex2dv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, f64>(c, v, move |p| unsafe { glVertex2dv(p) }) {
+            return;
         }
         if let Some([x, y]) = rd::<2, f64>(v) { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
     }
     fn glVertex3dv(v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f64>(v) {
-                if c.record(move || unsafe { glVertex3dv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f64>(c, v, move |p| unsafe { glVertex3dv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, f64>(v) {
             c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0)
         }
     }
     fn glVertex4dv(v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, f64>(v) {
-                if c.record(move || unsafe { glVertex4dv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, f64>(c, v, move |p| unsafe { glVertex4dv(p) }) {
+            return;
         }
         if let Some(v) = rd::<4, f64>(v) { c.gl.vertex_4fv(&v.map(|x| x as f32)) }
     }
@@ -467,40 +447,24 @@ gl_entry_points! {
     [list] fn glColor3ub(r: GLubyte, g: GLubyte, bl: GLubyte) => |c| { c.gl.color_3ub(r, g, bl) }
     [list] fn glColor4ub(r: GLubyte, g: GLubyte, bl: GLubyte, a: GLubyte) => |c| { c.gl.color_4ub(r, g, bl, a) }
     fn glColor3fv(v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f32>(v) {
-                if c.record(move || unsafe { glColor3fv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f32>(c, v, move |p| unsafe { glColor3fv(p) }) {
+            return;
         }
         if let Some(v) = rd::<3, f32>(v) { c.gl.color_3fv(&v) } }
     fn glColor4fv(v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, f32>(v) {
-                if c.record(move || unsafe { glColor4fv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, f32>(c, v, move |p| unsafe { glColor4fv(p) }) {
+            return;
         }
         if let Some(v) = rd::<4, f32>(v) { c.gl.color_4fv(&v) } }
     fn glColor3ubv(v: *const GLubyte) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, u8>(v) {
-                if c.record(move || unsafe { glColor3ubv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, u8>(c, v, move |p| unsafe { glColor3ubv(p) }) {
+            return;
         }
         if let Some([r, g, bl]) = rd::<3, u8>(v) { c.gl.color_3ub(r, g, bl) }
     }
     fn glColor4ubv(v: *const GLubyte) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, u8>(v) {
-                if c.record(move || unsafe { glColor4ubv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, u8>(c, v, move |p| unsafe { glColor4ubv(p) }) {
+            return;
         }
         if let Some([r, g, bl, a]) = rd::<4, u8>(v) { c.gl.color_4ub(r, g, bl, a) }
     }
@@ -509,12 +473,8 @@ gl_entry_points! {
         c.gl.normal_3f(x as f32, y as f32, z as f32)
     }
     fn glNormal3fv(v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f32>(v) {
-                if c.record(move || unsafe { glNormal3fv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f32>(c, v, move |p| unsafe { glNormal3fv(p) }) {
+            return;
         }
         if let Some(v) = rd::<3, f32>(v) { c.gl.normal_3fv(&v) } }
     [list] fn glTexCoord1f(s: GLfloat) => |c| { c.gl.tex_coord_1f(s) }
@@ -522,12 +482,8 @@ gl_entry_points! {
     [list] fn glTexCoord3f(s: GLfloat, t: GLfloat, r: GLfloat) => |c| { c.gl.tex_coord_3f(s, t, r) }
     [list] fn glTexCoord4f(s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) => |c| { c.gl.tex_coord_4f(s, t, r, q) }
     fn glTexCoord2fv(v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, f32>(v) {
-                if c.record(move || unsafe { glTexCoord2fv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, f32>(c, v, move |p| unsafe { glTexCoord2fv(p) }) {
+            return;
         }
         if let Some([s, t]) = rd::<2, f32>(v) { c.gl.tex_coord_2f(s, t) }
     }
@@ -538,22 +494,14 @@ gl_entry_points! {
         c.gl.multi_tex_coord_4f(target, s, t, r, q)
     }
     fn glMultiTexCoord2fv(target: GLenum, v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, f32>(v) {
-                if c.record(move || unsafe { glMultiTexCoord2fv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, f32>(c, v, move |p| unsafe { glMultiTexCoord2fv(target, p) }) {
+            return;
         }
         if let Some([s, t]) = rd::<2, f32>(v) { c.gl.multi_tex_coord_2f(target, s, t) }
     }
     fn glMultiTexCoord4fv(target: GLenum, v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, f32>(v) {
-                if c.record(move || unsafe { glMultiTexCoord4fv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, f32>(c, v, move |p| unsafe { glMultiTexCoord4fv(target, p) }) {
+            return;
         }
         if let Some(v) = rd::<4, f32>(v) { c.gl.multi_tex_coord_4fv(target, &v) }
     }
@@ -566,12 +514,8 @@ gl_entry_points! {
         c.gl.vertex_attrib_4f(index, x, y, z, w)
     }
     fn glVertexAttrib4fv(index: GLuint, v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, f32>(v) {
-                if c.record(move || unsafe { glVertexAttrib4fv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, f32>(c, v, move |p| unsafe { glVertexAttrib4fv(index, p) }) {
+            return;
         }
         if let Some(v) = rd::<4, f32>(v) { c.gl.vertex_attrib_4fv(index, &v) }
     }
@@ -810,12 +754,8 @@ gl_entry_points! {
     }
     [list] fn glStencilMaskSeparate(face: GLenum, mask: GLuint) => |c| { c.gl.stencil_mask_separate(face, mask) }
     fn glClipPlane(plane: GLenum, eq: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, f64>(eq) {
-                if c.record(move || unsafe { glClipPlane(plane, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, f64>(c, eq, move |p| unsafe { glClipPlane(plane, p) }) {
+            return;
         }
         if let Some(e) = rd::<4, f64>(eq) { c.gl.clip_plane(plane, &e) }
     }
@@ -824,22 +764,14 @@ gl_entry_points! {
         wr(eq, &e);
     }
     fn glLoadTransposeMatrixf(m: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<16, f32>(m) {
-                if c.record(move || unsafe { glLoadTransposeMatrixf(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<16, f32>(c, m, move |p| unsafe { glLoadTransposeMatrixf(p) }) {
+            return;
         }
         if let Some(m) = rd::<16, f32>(m) { c.gl.load_transpose_matrixf(&m) }
     }
     fn glMultTransposeMatrixf(m: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<16, f32>(m) {
-                if c.record(move || unsafe { glMultTransposeMatrixf(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<16, f32>(c, m, move |p| unsafe { glMultTransposeMatrixf(p) }) {
+            return;
         }
         if let Some(m) = rd::<16, f32>(m) { c.gl.mult_transpose_matrixf(&m) }
     }
@@ -1204,54 +1136,34 @@ gl_entry_points! {
         c.gl.uniform_matrix_4x3fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 12));
     }
     fn glVertexAttrib1fv(index: GLuint, v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<1, f32>(v) {
-                if c.record(move || unsafe { glVertexAttrib1fv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<1, f32>(c, v, move |p| unsafe { glVertexAttrib1fv(index, p) }) {
+            return;
         }
         if let Some([x]) = rd::<1, f32>(v) { c.gl.vertex_attrib_1f(index, x) }
     }
     fn glVertexAttrib2fv(index: GLuint, v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, f32>(v) {
-                if c.record(move || unsafe { glVertexAttrib2fv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, f32>(c, v, move |p| unsafe { glVertexAttrib2fv(index, p) }) {
+            return;
         }
         if let Some([x, y]) = rd::<2, f32>(v) { c.gl.vertex_attrib_2f(index, x, y) }
     }
     fn glVertexAttrib3fv(index: GLuint, v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f32>(v) {
-                if c.record(move || unsafe { glVertexAttrib3fv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f32>(c, v, move |p| unsafe { glVertexAttrib3fv(index, p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.vertex_attrib_3f(index, x, y, z) }
     }
     [list] fn glSecondaryColor3f(r: GLfloat, g: GLfloat, bl: GLfloat) => |c| { c.gl.secondary_color_3f(r, g, bl) }
     [list] fn glFogCoordf(f: GLfloat) => |c| { c.gl.fog_coordf(f) }
     fn glTexCoord3fv(v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f32>(v) {
-                if c.record(move || unsafe { glTexCoord3fv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f32>(c, v, move |p| unsafe { glTexCoord3fv(p) }) {
+            return;
         }
         if let Some([s, t, r]) = rd::<3, f32>(v) { c.gl.tex_coord_3f(s, t, r) }
     }
     fn glTexCoord4fv(v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, f32>(v) {
-                if c.record(move || unsafe { glTexCoord4fv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, f32>(c, v, move |p| unsafe { glTexCoord4fv(p) }) {
+            return;
         }
         if let Some(v) = rd::<4, f32>(v) { c.gl.tex_coord_4fv(&v) } }
     [list] fn glTexCoord2d(s: GLdouble, t: GLdouble) => |c| { c.gl.tex_coord_2f(s as f32, t as f32) }
@@ -1260,32 +1172,20 @@ gl_entry_points! {
         c.gl.multi_tex_coord_3f(target, s, t, r)
     }
     fn glNormal3dv(v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f64>(v) {
-                if c.record(move || unsafe { glNormal3dv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f64>(c, v, move |p| unsafe { glNormal3dv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.normal_3f(x as f32, y as f32, z as f32) }
     }
     fn glColor3dv(v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f64>(v) {
-                if c.record(move || unsafe { glColor3dv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f64>(c, v, move |p| unsafe { glColor3dv(p) }) {
+            return;
         }
         if let Some([r, g, bl]) = rd::<3, f64>(v) { c.gl.color_3f(r as f32, g as f32, bl as f32) }
     }
     fn glColor4dv(v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, f64>(v) {
-                if c.record(move || unsafe { glColor4dv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, f64>(c, v, move |p| unsafe { glColor4dv(p) }) {
+            return;
         }
         if let Some([r, g, bl, a]) = rd::<4, f64>(v) {
             c.gl.color_4f(r as f32, g as f32, bl as f32, a as f32)
@@ -1350,808 +1250,508 @@ gl_entry_points! {
     // normals normalized per Table 2.9) ----
     [list] fn glVertex2s(x: GLshort, y: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
     fn glVertex2sv(v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, i16>(v) {
-                if c.record(move || unsafe { glVertex2sv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, i16>(c, v, move |p| unsafe { glVertex2sv(p) }) {
+            return;
         }
         if let Some([x, y]) = rd::<2, i16>(v) { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
     }
     fn glVertex2iv(v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, i32>(v) {
-                if c.record(move || unsafe { glVertex2iv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, i32>(c, v, move |p| unsafe { glVertex2iv(p) }) {
+            return;
         }
         if let Some([x, y]) = rd::<2, i32>(v) { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
     }
     [list] fn glVertex3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
     fn glVertex3sv(v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i16>(v) {
-                if c.record(move || unsafe { glVertex3sv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i16>(c, v, move |p| unsafe { glVertex3sv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
     }
     fn glVertex3iv(v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i32>(v) {
-                if c.record(move || unsafe { glVertex3iv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i32>(c, v, move |p| unsafe { glVertex3iv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
     }
     [list] fn glVertex4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
     fn glVertex4sv(v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i16>(v) {
-                if c.record(move || unsafe { glVertex4sv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i16>(c, v, move |p| unsafe { glVertex4sv(p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
     }
     [list] fn glVertex4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
     fn glVertex4iv(v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i32>(v) {
-                if c.record(move || unsafe { glVertex4iv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i32>(c, v, move |p| unsafe { glVertex4iv(p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
     }
     [list] fn glColor3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), 1.0) }
     fn glColor3bv(v: *const GLbyte) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i8>(v) {
-                if c.record(move || unsafe { glColor3bv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i8>(c, v, move |p| unsafe { glColor3bv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i8>(v) { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), 1.0) }
     }
     [list] fn glColor3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), 1.0) }
     fn glColor3sv(v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i16>(v) {
-                if c.record(move || unsafe { glColor3sv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i16>(c, v, move |p| unsafe { glColor3sv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), 1.0) }
     }
     [list] fn glColor3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), 1.0) }
     fn glColor3iv(v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i32>(v) {
-                if c.record(move || unsafe { glColor3iv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i32>(c, v, move |p| unsafe { glColor3iv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), 1.0) }
     }
     [list] fn glColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, 1.0) }
     fn glColor3usv(v: *const GLushort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, u16>(v) {
-                if c.record(move || unsafe { glColor3usv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, u16>(c, v, move |p| unsafe { glColor3usv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, u16>(v) { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, 1.0) }
     }
     [list] fn glColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, 1.0) }
     fn glColor3uiv(v: *const GLuint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, u32>(v) {
-                if c.record(move || unsafe { glColor3uiv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, u32>(c, v, move |p| unsafe { glColor3uiv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, u32>(v) { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, 1.0) }
     }
     [list] fn glColor4b(x: GLbyte, y: GLbyte, z: GLbyte, w: GLbyte) => |c| { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
     fn glColor4bv(v: *const GLbyte) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i8>(v) {
-                if c.record(move || unsafe { glColor4bv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i8>(c, v, move |p| unsafe { glColor4bv(p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i8>(v) { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
     }
     [list] fn glColor4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0)) }
     fn glColor4sv(v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i16>(v) {
-                if c.record(move || unsafe { glColor4sv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i16>(c, v, move |p| unsafe { glColor4sv(p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0)) }
     }
     [list] fn glColor4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
     fn glColor4iv(v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i32>(v) {
-                if c.record(move || unsafe { glColor4iv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i32>(c, v, move |p| unsafe { glColor4iv(p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
     }
     [list] fn glColor4us(x: GLushort, y: GLushort, z: GLushort, w: GLushort) => |c| { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, (w as f64 / 65535.0) as f32) }
     fn glColor4usv(v: *const GLushort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, u16>(v) {
-                if c.record(move || unsafe { glColor4usv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, u16>(c, v, move |p| unsafe { glColor4usv(p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, (w as f64 / 65535.0) as f32) }
     }
     [list] fn glColor4ui(x: GLuint, y: GLuint, z: GLuint, w: GLuint) => |c| { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, (w as f64 / 4294967295.0) as f32) }
     fn glColor4uiv(v: *const GLuint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, u32>(v) {
-                if c.record(move || unsafe { glColor4uiv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, u32>(c, v, move |p| unsafe { glColor4uiv(p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, (w as f64 / 4294967295.0) as f32) }
     }
     [list] fn glNormal3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.normal_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
     fn glNormal3bv(v: *const GLbyte) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i8>(v) {
-                if c.record(move || unsafe { glNormal3bv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i8>(c, v, move |p| unsafe { glNormal3bv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i8>(v) { c.gl.normal_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
     }
     [list] fn glNormal3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.normal_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
     fn glNormal3sv(v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i16>(v) {
-                if c.record(move || unsafe { glNormal3sv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i16>(c, v, move |p| unsafe { glNormal3sv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.normal_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
     }
     [list] fn glNormal3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.normal_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
     fn glNormal3iv(v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i32>(v) {
-                if c.record(move || unsafe { glNormal3iv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i32>(c, v, move |p| unsafe { glNormal3iv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.normal_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
     }
     [list] fn glTexCoord1s(x: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
     [list] fn glMultiTexCoord1s(target: GLenum, x: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     fn glTexCoord1sv(v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<1, i16>(v) {
-                if c.record(move || unsafe { glTexCoord1sv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<1, i16>(c, v, move |p| unsafe { glTexCoord1sv(p) }) {
+            return;
         }
         if let Some([x]) = rd::<1, i16>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
     }
     fn glMultiTexCoord1sv(target: GLenum, v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<1, i16>(v) {
-                if c.record(move || unsafe { glMultiTexCoord1sv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<1, i16>(c, v, move |p| unsafe { glMultiTexCoord1sv(target, p) }) {
+            return;
         }
         if let Some([x]) = rd::<1, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     }
     [list] fn glTexCoord1i(x: GLint) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
     [list] fn glMultiTexCoord1i(target: GLenum, x: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     fn glTexCoord1iv(v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<1, i32>(v) {
-                if c.record(move || unsafe { glTexCoord1iv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<1, i32>(c, v, move |p| unsafe { glTexCoord1iv(p) }) {
+            return;
         }
         if let Some([x]) = rd::<1, i32>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
     }
     fn glMultiTexCoord1iv(target: GLenum, v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<1, i32>(v) {
-                if c.record(move || unsafe { glMultiTexCoord1iv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<1, i32>(c, v, move |p| unsafe { glMultiTexCoord1iv(target, p) }) {
+            return;
         }
         if let Some([x]) = rd::<1, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     }
     fn glTexCoord1fv(v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<1, f32>(v) {
-                if c.record(move || unsafe { glTexCoord1fv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<1, f32>(c, v, move |p| unsafe { glTexCoord1fv(p) }) {
+            return;
         }
         if let Some([x]) = rd::<1, f32>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
     }
     fn glMultiTexCoord1fv(target: GLenum, v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<1, f32>(v) {
-                if c.record(move || unsafe { glMultiTexCoord1fv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<1, f32>(c, v, move |p| unsafe { glMultiTexCoord1fv(target, p) }) {
+            return;
         }
         if let Some([x]) = rd::<1, f32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     }
     [list] fn glTexCoord1d(x: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
     [list] fn glMultiTexCoord1d(target: GLenum, x: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     fn glTexCoord1dv(v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<1, f64>(v) {
-                if c.record(move || unsafe { glTexCoord1dv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<1, f64>(c, v, move |p| unsafe { glTexCoord1dv(p) }) {
+            return;
         }
         if let Some([x]) = rd::<1, f64>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
     }
     fn glMultiTexCoord1dv(target: GLenum, v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<1, f64>(v) {
-                if c.record(move || unsafe { glMultiTexCoord1dv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<1, f64>(c, v, move |p| unsafe { glMultiTexCoord1dv(target, p) }) {
+            return;
         }
         if let Some([x]) = rd::<1, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
     }
     [list] fn glTexCoord2s(x: GLshort, y: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
     [list] fn glMultiTexCoord2s(target: GLenum, x: GLshort, y: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
     fn glTexCoord2sv(v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, i16>(v) {
-                if c.record(move || unsafe { glTexCoord2sv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, i16>(c, v, move |p| unsafe { glTexCoord2sv(p) }) {
+            return;
         }
         if let Some([x, y]) = rd::<2, i16>(v) { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
     }
     fn glMultiTexCoord2sv(target: GLenum, v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, i16>(v) {
-                if c.record(move || unsafe { glMultiTexCoord2sv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, i16>(c, v, move |p| unsafe { glMultiTexCoord2sv(target, p) }) {
+            return;
         }
         if let Some([x, y]) = rd::<2, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
     }
     [list] fn glTexCoord2i(x: GLint, y: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
     [list] fn glMultiTexCoord2i(target: GLenum, x: GLint, y: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
     fn glTexCoord2iv(v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, i32>(v) {
-                if c.record(move || unsafe { glTexCoord2iv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, i32>(c, v, move |p| unsafe { glTexCoord2iv(p) }) {
+            return;
         }
         if let Some([x, y]) = rd::<2, i32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
     }
     fn glMultiTexCoord2iv(target: GLenum, v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, i32>(v) {
-                if c.record(move || unsafe { glMultiTexCoord2iv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, i32>(c, v, move |p| unsafe { glMultiTexCoord2iv(target, p) }) {
+            return;
         }
         if let Some([x, y]) = rd::<2, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
     }
     [list] fn glMultiTexCoord2d(target: GLenum, x: GLdouble, y: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
     fn glTexCoord2dv(v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, f64>(v) {
-                if c.record(move || unsafe { glTexCoord2dv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, f64>(c, v, move |p| unsafe { glTexCoord2dv(p) }) {
+            return;
         }
         if let Some([x, y]) = rd::<2, f64>(v) { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
     }
     fn glMultiTexCoord2dv(target: GLenum, v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, f64>(v) {
-                if c.record(move || unsafe { glMultiTexCoord2dv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, f64>(c, v, move |p| unsafe { glMultiTexCoord2dv(target, p) }) {
+            return;
         }
         if let Some([x, y]) = rd::<2, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
     }
     [list] fn glTexCoord3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
     [list] fn glMultiTexCoord3s(target: GLenum, x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     fn glTexCoord3sv(v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i16>(v) {
-                if c.record(move || unsafe { glTexCoord3sv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i16>(c, v, move |p| unsafe { glTexCoord3sv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
     }
     fn glMultiTexCoord3sv(target: GLenum, v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i16>(v) {
-                if c.record(move || unsafe { glMultiTexCoord3sv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i16>(c, v, move |p| unsafe { glMultiTexCoord3sv(target, p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     }
     [list] fn glTexCoord3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
     [list] fn glMultiTexCoord3i(target: GLenum, x: GLint, y: GLint, z: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     fn glTexCoord3iv(v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i32>(v) {
-                if c.record(move || unsafe { glTexCoord3iv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i32>(c, v, move |p| unsafe { glTexCoord3iv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
     }
     fn glMultiTexCoord3iv(target: GLenum, v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i32>(v) {
-                if c.record(move || unsafe { glMultiTexCoord3iv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i32>(c, v, move |p| unsafe { glMultiTexCoord3iv(target, p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     }
     fn glMultiTexCoord3fv(target: GLenum, v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f32>(v) {
-                if c.record(move || unsafe { glMultiTexCoord3fv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f32>(c, v, move |p| unsafe { glMultiTexCoord3fv(target, p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     }
     [list] fn glTexCoord3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
     [list] fn glMultiTexCoord3d(target: GLenum, x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     fn glTexCoord3dv(v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f64>(v) {
-                if c.record(move || unsafe { glTexCoord3dv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f64>(c, v, move |p| unsafe { glTexCoord3dv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
     }
     fn glMultiTexCoord3dv(target: GLenum, v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f64>(v) {
-                if c.record(move || unsafe { glMultiTexCoord3dv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f64>(c, v, move |p| unsafe { glMultiTexCoord3dv(target, p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
     }
     [list] fn glTexCoord4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
     [list] fn glMultiTexCoord4s(target: GLenum, x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
     fn glTexCoord4sv(v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i16>(v) {
-                if c.record(move || unsafe { glTexCoord4sv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i16>(c, v, move |p| unsafe { glTexCoord4sv(p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
     }
     fn glMultiTexCoord4sv(target: GLenum, v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i16>(v) {
-                if c.record(move || unsafe { glMultiTexCoord4sv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i16>(c, v, move |p| unsafe { glMultiTexCoord4sv(target, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
     }
     [list] fn glTexCoord4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
     [list] fn glMultiTexCoord4i(target: GLenum, x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
     fn glTexCoord4iv(v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i32>(v) {
-                if c.record(move || unsafe { glTexCoord4iv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i32>(c, v, move |p| unsafe { glTexCoord4iv(p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
     }
     fn glMultiTexCoord4iv(target: GLenum, v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i32>(v) {
-                if c.record(move || unsafe { glMultiTexCoord4iv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i32>(c, v, move |p| unsafe { glMultiTexCoord4iv(target, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
     }
     [list] fn glTexCoord4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
     [list] fn glMultiTexCoord4d(target: GLenum, x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
     fn glTexCoord4dv(v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, f64>(v) {
-                if c.record(move || unsafe { glTexCoord4dv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, f64>(c, v, move |p| unsafe { glTexCoord4dv(p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
     }
     fn glMultiTexCoord4dv(target: GLenum, v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, f64>(v) {
-                if c.record(move || unsafe { glMultiTexCoord4dv(target, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, f64>(c, v, move |p| unsafe { glMultiTexCoord4dv(target, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
     }
     [list] fn glVertexAttrib1s(index: GLuint, x: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
     fn glVertexAttrib1sv(index: GLuint, v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<1, i16>(v) {
-                if c.record(move || unsafe { glVertexAttrib1sv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<1, i16>(c, v, move |p| unsafe { glVertexAttrib1sv(index, p) }) {
+            return;
         }
         if let Some([x]) = rd::<1, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
     }
     [list] fn glVertexAttrib1d(index: GLuint, x: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
     fn glVertexAttrib1dv(index: GLuint, v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<1, f64>(v) {
-                if c.record(move || unsafe { glVertexAttrib1dv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<1, f64>(c, v, move |p| unsafe { glVertexAttrib1dv(index, p) }) {
+            return;
         }
         if let Some([x]) = rd::<1, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
     }
     [list] fn glVertexAttrib2s(index: GLuint, x: GLshort, y: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
     fn glVertexAttrib2sv(index: GLuint, v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, i16>(v) {
-                if c.record(move || unsafe { glVertexAttrib2sv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, i16>(c, v, move |p| unsafe { glVertexAttrib2sv(index, p) }) {
+            return;
         }
         if let Some([x, y]) = rd::<2, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
     }
     [list] fn glVertexAttrib2d(index: GLuint, x: GLdouble, y: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
     fn glVertexAttrib2dv(index: GLuint, v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<2, f64>(v) {
-                if c.record(move || unsafe { glVertexAttrib2dv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<2, f64>(c, v, move |p| unsafe { glVertexAttrib2dv(index, p) }) {
+            return;
         }
         if let Some([x, y]) = rd::<2, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
     }
     [list] fn glVertexAttrib3s(index: GLuint, x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
     fn glVertexAttrib3sv(index: GLuint, v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i16>(v) {
-                if c.record(move || unsafe { glVertexAttrib3sv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i16>(c, v, move |p| unsafe { glVertexAttrib3sv(index, p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
     }
     [list] fn glVertexAttrib3d(index: GLuint, x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
     fn glVertexAttrib3dv(index: GLuint, v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f64>(v) {
-                if c.record(move || unsafe { glVertexAttrib3dv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f64>(c, v, move |p| unsafe { glVertexAttrib3dv(index, p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
     }
     [list] fn glVertexAttrib4s(index: GLuint, x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     fn glVertexAttrib4sv(index: GLuint, v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i16>(v) {
-                if c.record(move || unsafe { glVertexAttrib4sv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i16>(c, v, move |p| unsafe { glVertexAttrib4sv(index, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
     [list] fn glVertexAttrib4d(index: GLuint, x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     fn glVertexAttrib4dv(index: GLuint, v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, f64>(v) {
-                if c.record(move || unsafe { glVertexAttrib4dv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, f64>(c, v, move |p| unsafe { glVertexAttrib4dv(index, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
     fn glVertexAttrib4bv(index: GLuint, v: *const GLbyte) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i8>(v) {
-                if c.record(move || unsafe { glVertexAttrib4bv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i8>(c, v, move |p| unsafe { glVertexAttrib4bv(index, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i8>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
     fn glVertexAttrib4iv(index: GLuint, v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i32>(v) {
-                if c.record(move || unsafe { glVertexAttrib4iv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i32>(c, v, move |p| unsafe { glVertexAttrib4iv(index, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
     fn glVertexAttrib4ubv(index: GLuint, v: *const GLubyte) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, u8>(v) {
-                if c.record(move || unsafe { glVertexAttrib4ubv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, u8>(c, v, move |p| unsafe { glVertexAttrib4ubv(index, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, u8>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
     fn glVertexAttrib4usv(index: GLuint, v: *const GLushort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, u16>(v) {
-                if c.record(move || unsafe { glVertexAttrib4usv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, u16>(c, v, move |p| unsafe { glVertexAttrib4usv(index, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
     fn glVertexAttrib4uiv(index: GLuint, v: *const GLuint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, u32>(v) {
-                if c.record(move || unsafe { glVertexAttrib4uiv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, u32>(c, v, move |p| unsafe { glVertexAttrib4uiv(index, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
     }
     fn glVertexAttrib4Nbv(index: GLuint, v: *const GLbyte) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i8>(v) {
-                if c.record(move || unsafe { glVertexAttrib4Nbv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i8>(c, v, move |p| unsafe { glVertexAttrib4Nbv(index, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i8>(v) { c.gl.vertex_attrib_4f(index, snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
     }
     fn glVertexAttrib4Nsv(index: GLuint, v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i16>(v) {
-                if c.record(move || unsafe { glVertexAttrib4Nsv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i16>(c, v, move |p| unsafe { glVertexAttrib4Nsv(index, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.vertex_attrib_4f(index, snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0)) }
     }
     fn glVertexAttrib4Niv(index: GLuint, v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, i32>(v) {
-                if c.record(move || unsafe { glVertexAttrib4Niv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, i32>(c, v, move |p| unsafe { glVertexAttrib4Niv(index, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.vertex_attrib_4f(index, snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
     }
     fn glVertexAttrib4Nubv(index: GLuint, v: *const GLubyte) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, u8>(v) {
-                if c.record(move || unsafe { glVertexAttrib4Nubv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, u8>(c, v, move |p| unsafe { glVertexAttrib4Nubv(index, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, u8>(v) { c.gl.vertex_attrib_4f(index, (x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32, (w as f64 / 255.0) as f32) }
     }
     fn glVertexAttrib4Nusv(index: GLuint, v: *const GLushort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, u16>(v) {
-                if c.record(move || unsafe { glVertexAttrib4Nusv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, u16>(c, v, move |p| unsafe { glVertexAttrib4Nusv(index, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.vertex_attrib_4f(index, (x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, (w as f64 / 65535.0) as f32) }
     }
     fn glVertexAttrib4Nuiv(index: GLuint, v: *const GLuint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<4, u32>(v) {
-                if c.record(move || unsafe { glVertexAttrib4Nuiv(index, arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<4, u32>(c, v, move |p| unsafe { glVertexAttrib4Nuiv(index, p) }) {
+            return;
         }
         if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.vertex_attrib_4f(index, (x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, (w as f64 / 4294967295.0) as f32) }
     }
     [list] fn glVertexAttrib4Nub(index: GLuint, x: GLubyte, y: GLubyte, z: GLubyte, w: GLubyte) => |c| { c.gl.vertex_attrib_4f(index, (x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32, (w as f64 / 255.0) as f32) }
     [list] fn glSecondaryColor3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
     fn glSecondaryColor3bv(v: *const GLbyte) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i8>(v) {
-                if c.record(move || unsafe { glSecondaryColor3bv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i8>(c, v, move |p| unsafe { glSecondaryColor3bv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i8>(v) { c.gl.secondary_color_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
     }
     [list] fn glSecondaryColor3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
     fn glSecondaryColor3sv(v: *const GLshort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i16>(v) {
-                if c.record(move || unsafe { glSecondaryColor3sv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i16>(c, v, move |p| unsafe { glSecondaryColor3sv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.secondary_color_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
     }
     [list] fn glSecondaryColor3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
     fn glSecondaryColor3iv(v: *const GLint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, i32>(v) {
-                if c.record(move || unsafe { glSecondaryColor3iv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, i32>(c, v, move |p| unsafe { glSecondaryColor3iv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.secondary_color_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
     }
     fn glSecondaryColor3fv(v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f32>(v) {
-                if c.record(move || unsafe { glSecondaryColor3fv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f32>(c, v, move |p| unsafe { glSecondaryColor3fv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
     }
     [list] fn glSecondaryColor3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
     fn glSecondaryColor3dv(v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, f64>(v) {
-                if c.record(move || unsafe { glSecondaryColor3dv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, f64>(c, v, move |p| unsafe { glSecondaryColor3dv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
     }
     [list] fn glSecondaryColor3ub(x: GLubyte, y: GLubyte, z: GLubyte) => |c| { c.gl.secondary_color_3f((x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32) }
     fn glSecondaryColor3ubv(v: *const GLubyte) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, u8>(v) {
-                if c.record(move || unsafe { glSecondaryColor3ubv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, u8>(c, v, move |p| unsafe { glSecondaryColor3ubv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, u8>(v) { c.gl.secondary_color_3f((x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32) }
     }
     [list] fn glSecondaryColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.secondary_color_3f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32) }
     fn glSecondaryColor3usv(v: *const GLushort) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, u16>(v) {
-                if c.record(move || unsafe { glSecondaryColor3usv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, u16>(c, v, move |p| unsafe { glSecondaryColor3usv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, u16>(v) { c.gl.secondary_color_3f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32) }
     }
     [list] fn glSecondaryColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.secondary_color_3f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32) }
     fn glSecondaryColor3uiv(v: *const GLuint) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<3, u32>(v) {
-                if c.record(move || unsafe { glSecondaryColor3uiv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<3, u32>(c, v, move |p| unsafe { glSecondaryColor3uiv(p) }) {
+            return;
         }
         if let Some([x, y, z]) = rd::<3, u32>(v) { c.gl.secondary_color_3f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32) }
     }
     fn glFogCoordfv(v: *const GLfloat) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<1, f32>(v) {
-                if c.record(move || unsafe { glFogCoordfv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<1, f32>(c, v, move |p| unsafe { glFogCoordfv(p) }) {
+            return;
         }
         if let Some([x]) = rd::<1, f32>(v) { c.gl.fog_coordf(x as f32) }
     }
     [list] fn glFogCoordd(x: GLdouble) => |c| { c.gl.fog_coordf(x as f32) }
     fn glFogCoorddv(v: *const GLdouble) => |c| {
-        if c.compiling() {
-            if let Some(arr) = rd::<1, f64>(v) {
-                if c.record(move || unsafe { glFogCoorddv(arr.as_ptr()) }) {
-                    return;
-                }
-            }
+        if record_vector::<1, f64>(c, v, move |p| unsafe { glFogCoorddv(p) }) {
+            return;
         }
         if let Some([x]) = rd::<1, f64>(v) { c.gl.fog_coordf(x as f32) }
     }
