@@ -228,9 +228,6 @@ impl Parser<'_> {
             return Ok(node(ExprKind::Field(e, name), span));
         }
         let args = self.call_args()?;
-        // The 1.10 grammar has no method calls.
-        let method_span = self.span_from(name.span);
-        self.require_120(method_span, "a method call such as `.length()'");
         let span = self.span_from(e.span);
         Ok(node(ExprKind::Method(e, name, args), span))
     }
@@ -308,9 +305,6 @@ impl Parser<'_> {
     fn constructor(&mut self) -> PExpr {
         let start = self.span();
         let ty = self.type_specifier()?;
-        if let Some(a) = &ty.array {
-            self.require_120(a.span, "an array constructor");
-        }
         if !self.at_punct(Punct::LeftParen) {
             return Err(self.unexpected_with_note(
                 "`('",

@@ -5,10 +5,13 @@
 //! leaves meaning to semantic analysis; it only reports what the grammar of
 //! the shader's version cannot parse:
 //! - syntax errors, as "expected X, found Y" at the offending token;
-//! - reserved words (§3.6), wherever they appear;
-//! - GLSL 1.20 syntax in a 1.10 shader (array types `float[3]`, array
-//!   constructors, array initializers, method calls such as `a.length()`),
-//!   as [`Code::VersionTooLow`]; analysis need not check these again.
+//! - reserved words (§3.6), wherever they appear.
+//!
+//! The grammar is the union of 1.10 and 1.20: GLSL 1.20 syntax in a 1.10
+//! shader (array types `float[3]`, array constructors and initializers,
+//! method calls such as `a.length()`) is parsed, and analysis reports it
+//! with the version. The one version-dependent rule here is the operand
+//! after `:` in `?:` (1.10: conditional, 1.20: assignment expression).
 //!
 //! ## Error recovery
 //! A syntax error unwinds (as [`Reported`]) to the enclosing statement, struct
@@ -250,21 +253,6 @@ impl<'t> Parser<'t> {
         .with_note(reserved_note(&word));
         self.report(d);
         Reported
-    }
-
-    /// Reports syntax the shader's version lacks (GLSL 1.20 additions in a
-    /// 1.10 shader). Does not disturb error recovery: the tree is complete.
-    fn require_120(&mut self, span: Span, what: &str) {
-        if self.version < Version::V120 && !self.aborted {
-            self.diags.push(
-                Diagnostic::error(
-                    Code::VersionTooLow,
-                    span,
-                    format!("{what} requires GLSL 1.20"),
-                )
-                .with_note("add `#version 120' at the start of the shader"),
-            );
-        }
     }
 
     // ---- Nesting limit --------------------------------------------------
