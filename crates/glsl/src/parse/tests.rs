@@ -1158,3 +1158,95 @@ fn dir_sweep() {
     }
     eprintln!("{} files, {clean} without diagnostics", paths.len());
 }
+
+// ---- Randomized robustness ------------------------------------------------
+
+/// A small deterministic pseudo-random generator (xorshift64*).
+struct Rng(u64);
+
+impl Rng {
+    fn below(&mut self, n: usize) -> usize {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 33) as usize % n.max(1)
+    }
+}
+
+/// Mutates the tokens of a valid shader (drop, duplicate, swap, insert
+/// tokens) many times: the parser must terminate without panicking, and
+/// every diagnostic must point inside the input.
+fn mutate_and_parse(src: &str, rounds: usize, seed: u64) {
+    let mut rng = Rng(seed | 1);
+    for v in [Version::V110, Version::V120] {
+        let base = tokens(src, v);
+        let body = &base[..base.len() - 1];
+        for _ in 0..rounds {
+            let mut t: Vec<Token> = body.to_vec();
+            for _ in 0..1 + rng.below(4) {
+                if t.is_empty() {
+                    break;
+                }
+                let i = rng.below(t.len());
+                let j = rng.below(t.len());
+                match rng.below(4) {
+                    0 => {
+                        t.remove(i);
+                    }
+                    1 => {
+                        let x = t[i].clone();
+                        t.insert(j, x);
+                    }
+                    2 => t.swap(i, j),
+                    _ => t.truncate(i),
+                }
+            }
+            let end = src.len() as u32;
+            t.push(Token {
+                kind: TokenKind::Eof,
+                span: Span::new(end, end),
+            });
+            let (_, diags) = parse(&t, v);
+            for d in diags {
+                assert!(d.span.is_some_and(|s| s.end <= end), "{d:?}");
+            }
+        }
+    }
+}
+
+const SAMPLE: &str = "#version 120
+struct Light { vec3 pos; float k[2]; };
+uniform Light lights[4];
+varying vec2 uv;
+invariant gl_Position;
+float[3] w = float[3](1.0, 2.0, 3.0);
+float f(in float x, out vec2 y[2], Light l);
+vec4 shade(const Light l, vec3 n) {
+    float d = max(dot(n, normalize(l.pos)), 0.0);
+    return vec4(d) * (l.k[0] + l.k.length() > 1 ? 1.0 : 0.5);
+}
+void main() {
+    Light L = Light(vec3(1.0), float[2](0.0, 1.0));
+    for (int i = 0; i < 4; ++i) { if (i == 2) continue; else L.pos += lights[i].pos; }
+    while (bool b = L.pos.x > 0.0) { L.pos.x -= 1.0; }
+    do { L.pos.y++; } while (L.pos.y < 3.0);
+    { float Light = 1.0; Light *= 2.0; }
+    gl_FragColor = shade(L, vec3(uv, 1.0)) + vec4(w[1], -w[2], !true ? 1.0 : 0.0, 1.0);
+    if (gl_FragColor.a < 0.5) discard;
+}
+";
+
+#[test]
+fn sample_parses_and_mutations_never_panic() {
+    ok(SAMPLE);
+    mutate_and_parse(SAMPLE, 300, 0x5eed);
+}
+
+/// The long version: `cargo test -p shaderbox-glsl mutation_soak -- --ignored`.
+#[test]
+#[ignore]
+fn mutation_soak() {
+    for seed in 1..200 {
+        mutate_and_parse(SAMPLE, 1000, seed);
+    }
+}
