@@ -214,7 +214,7 @@ impl Parser<'_> {
     fn index_suffix(&mut self, e: Box<Expr>) -> PExpr {
         self.bump();
         let index = self.expression()?;
-        self.expect_punct(Punct::RightBracket)?;
+        self.expect_close(Punct::RightBracket)?;
         let span = self.span_from(e.span);
         Ok(node(ExprKind::Index(e, index), span))
     }
@@ -255,7 +255,7 @@ impl Parser<'_> {
     fn parenthesized(&mut self) -> PExpr {
         let start = self.bump().span;
         let mut inner = self.expression()?;
-        self.expect_punct(Punct::RightParen)?;
+        self.expect_close(Punct::RightParen)?;
         inner.span = self.span_from(start);
         Ok(inner)
     }
@@ -334,7 +334,7 @@ impl Parser<'_> {
                 break;
             }
         }
-        self.expect_punct(Punct::RightParen)?;
+        self.expect_close(Punct::RightParen)?;
         Ok(args)
     }
 }

@@ -169,6 +169,21 @@ impl<'t> Parser<'t> {
         }
     }
 
+    /// Expects the `)` or `]` closing a group inside an expression. When the
+    /// statement ends first (`;`, `}` or end of input), the closing token is
+    /// taken as forgotten: the error is reported and the expression kept, so
+    /// a declaration such as `vec4 c = vec4(1.0;` still declares `c`.
+    fn expect_close(&mut self, p: Punct) -> PResult<()> {
+        if self.eat_punct(p) {
+            return Ok(());
+        }
+        let err = self.unexpected(&format!("`{}'", p.as_str()));
+        match self.kind() {
+            TokenKind::Eof | TokenKind::Punct(Punct::Semicolon | Punct::RightBrace) => Ok(()),
+            _ => Err(err),
+        }
+    }
+
     /// Expects the `;` ending a statement or declaration. When it is missing
     /// but the next token clearly starts something new (a keyword such as
     /// `float` or `return`, `else`, or `}`), the `;` is taken as forgotten

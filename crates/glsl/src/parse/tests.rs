@@ -759,12 +759,13 @@ fn independent_syntax_errors_are_all_reported_once() {
     // The error points at the offending token.
     let two = src.find("2;").unwrap() as u32;
     assert_eq!(d[0].span, Some(Span::new(two, two + 1)));
-    // The good statements and the declaration with a missing operand survive.
+    // The good statements, the one missing a `)` and the declaration with a
+    // missing operand survive.
     let ExternalDecl::FunctionDef(f) = &tu.items[0] else {
         panic!()
     };
-    assert_eq!(f.body.stmts.len(), 2);
-    let StmtKind::Declaration(Declaration::Variables(v)) = &f.body.stmts[0].kind else {
+    assert_eq!(f.body.stmts.len(), 3);
+    let StmtKind::Declaration(Declaration::Variables(v)) = &f.body.stmts[1].kind else {
         panic!()
     };
     assert_eq!(
@@ -795,6 +796,31 @@ fn missing_semicolon_before_keyword_keeps_next_statement() {
     assert!(
         matches!(&f.body.stmts[2].kind, StmtKind::Return(Some(e)) if e.kind == ExprKind::Error)
     );
+}
+
+#[test]
+fn missing_closing_paren_before_semicolon_keeps_the_declaration() {
+    let (tu, d) = run(
+        "void main() { vec4 c = vec4(1.0;\n float a = b[2;\n x = (1 + 2; }",
+        Version::V120,
+    );
+    let m: Vec<_> = d.iter().map(|d| d.message.as_str()).collect();
+    assert_eq!(
+        m,
+        [
+            "expected `)', found `;'",
+            "expected `]', found `;'",
+            "expected `)', found `;'"
+        ]
+    );
+    let ExternalDecl::FunctionDef(f) = &tu.items[0] else {
+        panic!()
+    };
+    assert_eq!(f.body.stmts.len(), 3);
+    let StmtKind::Declaration(Declaration::Variables(v)) = &f.body.stmts[0].kind else {
+        panic!()
+    };
+    assert_eq!(show(v.declarators[0].init.as_ref().unwrap()), "vec4(1.0)");
 }
 
 #[test]
