@@ -274,29 +274,26 @@ impl Parser<'_> {
     }
 
     fn struct_specifier_inner(&mut self) -> PResult<StructSpecifier> {
-        {
-            let p = self;
-            let start = p.bump().span;
-            let name = match p.kind() {
-                TokenKind::Identifier(_) => Some(p.ident("identifier")?),
-                _ => None,
-            };
-            p.expect_punct(Punct::LeftBrace)?;
-            let members = p.struct_members();
-            if members.is_empty() && p.at_punct(Punct::RightBrace) {
-                // §9: `struct_declaration_list` has at least one member.
-                let _ = p.unexpected("member declaration");
-            }
-            p.expect_punct(Punct::RightBrace)?;
-            if let Some(n) = &name {
-                p.scopes.declare(&n.name, true);
-            }
-            Ok(StructSpecifier {
-                name,
-                members,
-                span: p.span_from(start),
-            })
+        let start = self.bump().span;
+        let name = match self.kind() {
+            TokenKind::Identifier(_) => Some(self.ident("identifier")?),
+            _ => None,
+        };
+        self.expect_punct(Punct::LeftBrace)?;
+        let members = self.struct_members();
+        if members.is_empty() && self.at_punct(Punct::RightBrace) {
+            // §9: `struct_declaration_list` has at least one member.
+            let _ = self.unexpected("member declaration");
         }
+        self.expect_punct(Punct::RightBrace)?;
+        if let Some(n) = &name {
+            self.scopes.declare(&n.name, true);
+        }
+        Ok(StructSpecifier {
+            name,
+            members,
+            span: self.span_from(start),
+        })
     }
 
     /// Member lines up to (not including) the closing `}`; a bad line is
