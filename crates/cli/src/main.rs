@@ -1,1 +1,81 @@
-fn main() {}
+//! `shaderbox`: the command-line front of the project.
+//!
+//! Subcommands, one module each:
+//! - `check` ([`check`]): compile (and optionally link) shader files and
+//!   print their diagnostics as a rich report, a GL info log or JSON;
+//! - `glslparsertest` ([`glslparsertest`]): piglit's `glslparsertest`
+//!   program contract, so piglit's own framework can run its compiler tests
+//!   against shaderbox.
+//!
+//! Rendering, running `shader_test` files and debugging will join them as
+//! further variants of [`Command`], each in its own module.
+//!
+//! Exit codes are shared by the subcommands ([`Exit`]); `glslparsertest`
+//! follows piglit's conventions instead (see its module).
+
+mod check;
+mod glslparsertest;
+mod guard;
+mod input;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// OpenGL 2.1 and GLSL 1.10/1.20 on the CPU: compile, validate, link.
+#[derive(Parser, Debug)]
+#[command(name = "shaderbox", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Compile shader files and report their diagnostics.
+    Check(check::Args),
+    /// Run one piglit compiler test (the contract of piglit's
+    /// `glslparsertest` program).
+    #[command(name = "glslparsertest")]
+    GlslParserTest(glslparsertest::Args),
+}
+
+/// Exit statuses of `shaderbox` (except `glslparsertest`, which speaks
+/// piglit's protocol).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Exit {
+    /// Everything compiled (and linked, when asked).
+    Ok = 0,
+    /// A shader failed to compile or the program failed to link.
+    Failed = 1,
+    /// Bad command line or unreadable input.
+    Misuse = 2,
+    /// The compiler panicked: a bug in shaderbox, reported instead of a
+    /// crash.
+    Internal = 3,
+}
+
+impl From<Exit> for ExitCode {
+    fn from(e: Exit) -> ExitCode {
+        ExitCode::from(e as u8)
+    }
+}
+
+fn main() -> ExitCode {
+    // Usage errors exit with 2 (clap's convention, and ours for misuse).
+    let cli = Cli::parse();
+    match cli.command {
+        Command::Check(args) => check::run(&args).into(),
+        Command::GlslParserTest(args) => glslparsertest::run(&args),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn cli_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+}

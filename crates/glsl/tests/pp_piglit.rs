@@ -118,7 +118,7 @@ fn run_file(path: &str) -> Option<Outcome> {
     };
     let result = panic::catch_unwind(|| {
         let mut map = SourceMap::new(path, text.clone());
-        let out = preprocess(&mut map, &PpOptions { stage });
+        let out = preprocess(&mut map, &PpOptions::new(stage));
         let errors: Vec<String> = out
             .diagnostics
             .iter()

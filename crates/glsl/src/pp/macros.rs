@@ -18,7 +18,7 @@ use crate::limits;
 use crate::source::{SourceMap, Span};
 use crate::token::Punct;
 use smol_str::SmolStr;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashSet};
 
 /// A preprocessing token on its way through expansion.
 #[derive(Clone, Debug, PartialEq)]
@@ -120,6 +120,35 @@ impl Budget {
     }
 }
 
+/// The macros whose replacement is being rescanned, innermost last. A
+/// macro is never active twice, so a set answers membership exactly.
+#[derive(Default)]
+struct Disabled {
+    stack: Vec<SmolStr>,
+    set: HashSet<SmolStr>,
+}
+
+impl Disabled {
+    fn push(&mut self, name: SmolStr) {
+        self.set.insert(name.clone());
+        self.stack.push(name);
+    }
+
+    fn pop(&mut self) {
+        if let Some(name) = self.stack.pop() {
+            self.set.remove(&name);
+        }
+    }
+
+    fn contains(&self, name: &SmolStr) -> bool {
+        self.set.contains(name)
+    }
+
+    fn len(&self) -> usize {
+        self.stack.len()
+    }
+}
+
 enum Item {
     Tok(PTok),
     /// The end of the replacement of the innermost active macro.
@@ -151,7 +180,7 @@ impl Expander<'_> {
     fn expand_at(&mut self, input: Vec<PTok>, depth: u32) -> Vec<PTok> {
         let macros = self.macros;
         let mut stack: Vec<Item> = input.into_iter().rev().map(Item::Tok).collect();
-        let mut disabled: Vec<SmolStr> = Vec::new();
+        let mut disabled = Disabled::default();
         let mut out = Vec::new();
         while let Some(item) = stack.pop() {
             let tok = match item {
@@ -173,13 +202,6 @@ impl Expander<'_> {
                 pass_defined_operand(&mut stack, &mut disabled, &mut out);
                 continue;
             }
-            if disabled.contains(&tok.text) {
-                out.push(PTok {
-                    painted: true,
-                    ..tok
-                });
-                continue;
-            }
             if let Some(t) = self.builtin(&tok) {
                 out.push(t);
                 continue;
@@ -188,6 +210,13 @@ impl Expander<'_> {
                 out.push(tok);
                 continue;
             };
+            if disabled.contains(&tok.text) {
+                out.push(PTok {
+                    painted: true,
+                    ..tok
+                });
+                continue;
+            }
             if disabled.len() >= limits::MAX_MACRO_EXPANSION_DEPTH as usize {
                 self.too_deep(&tok);
                 break;
@@ -248,7 +277,7 @@ impl Expander<'_> {
     fn push_replacement(
         &mut self,
         stack: &mut Vec<Item>,
-        disabled: &mut Vec<SmolStr>,
+        disabled: &mut Disabled,
         name: &PTok,
         body: Vec<PTok>,
     ) {
@@ -288,7 +317,7 @@ impl Expander<'_> {
 }
 
 /// Moves the operand of `defined` (`X` or `( X )`) to the output unexpanded.
-fn pass_defined_operand(stack: &mut Vec<Item>, disabled: &mut Vec<SmolStr>, out: &mut Vec<PTok>) {
+fn pass_defined_operand(stack: &mut Vec<Item>, disabled: &mut Disabled, out: &mut Vec<PTok>) {
     let paren = next_is_lparen(stack, disabled);
     let count = if paren { 2 } else { 1 };
     for _ in 0..count {
@@ -309,7 +338,7 @@ fn pass_defined_operand(stack: &mut Vec<Item>, disabled: &mut Vec<SmolStr>, out:
 
 /// Whether the next token is `(`, ending the replacements that stand before
 /// it (GCC-like: an invocation may take its `(` from after a replacement).
-fn next_is_lparen(stack: &mut Vec<Item>, disabled: &mut Vec<SmolStr>) -> bool {
+fn next_is_lparen(stack: &mut Vec<Item>, disabled: &mut Disabled) -> bool {
     loop {
         match stack.last() {
             Some(Item::End) => {
@@ -324,10 +353,7 @@ fn next_is_lparen(stack: &mut Vec<Item>, disabled: &mut Vec<SmolStr>) -> bool {
 
 /// Pops `( args )` from the stack: the arguments split at top-level commas,
 /// and the span of the `)`. `None` when the input ends first.
-fn collect_args(
-    stack: &mut Vec<Item>,
-    disabled: &mut Vec<SmolStr>,
-) -> Option<(Vec<Vec<PTok>>, Span)> {
+fn collect_args(stack: &mut Vec<Item>, disabled: &mut Disabled) -> Option<(Vec<Vec<PTok>>, Span)> {
     stack.pop(); // the `(`
     let mut args = vec![Vec::new()];
     let mut depth = 1usize;

@@ -269,6 +269,10 @@ impl<'m> Preprocessor<'m> {
         }
         let pending = std::mem::take(&mut self.pending);
         let expanded = self.expander(false).expand(pending);
+        if self.budget.exhausted {
+            // Already reported; the output would only be truncated garbage.
+            return;
+        }
         for t in expanded {
             self.emit(t);
         }

@@ -796,14 +796,29 @@ impl Analyzer {
             if len.is_none() {
                 self.note_implicit_index(&base, c as u32);
             }
-        } else if len.is_none() && self.builtin_unsized_bound(&base).is_none() {
+        } else if len.is_none() {
+            // GLSL 1.20 §4.1.9 and, for gl_TexCoord, §7.6: "indices used to
+            // subscript gl_TexCoord must either be an integral constant
+            // expression, or this array must be re-declared with a size".
+            let hint = match base.kind {
+                K::Global(g)
+                    if self
+                        .module
+                        .globals
+                        .get(g.0 as usize)
+                        .is_some_and(|g| g.builtin) =>
+                {
+                    "redeclare it with a size first, e.g. `varying vec4 gl_TexCoord[4];'"
+                }
+                _ => "declare the array with an explicit size",
+            };
             self.error(
                 Code::BadArraySize,
                 i.span,
                 "an array without a size can only be indexed with constants",
             )
             .notes
-            .push("declare the array with an explicit size".into());
+            .push(hint.into());
             return error_expr(span);
         }
         self.fold(mk(

@@ -1,0 +1,414 @@
+//! `shaderbox glslparsertest`: piglit's `glslparsertest` program contract.
+//!
+//! piglit's framework (`framework/test/glsl_parser_test.py`) runs, for each
+//! compiler test,
+//!
+//! ```text
+//! glslparsertest FILE pass|fail VERSION [--check-link] [EXTENSION...]
+//! ```
+//!
+//! and reads back (`framework/test/piglit_test.py`, `base.py`):
+//! - the line `PIGLIT: {"result": "pass"|"fail"|"skip"}` on stdout, which
+//!   sets the verdict; everything else on stdout/stderr is kept as the
+//!   test's output;
+//! - the exit status: 0 keeps the verdict, any other status turns "pass"
+//!   into "warn" and anything else into "fail"; death by a signal (a
+//!   negative return code) is a "crash" whatever was printed.
+//!
+//! So this command prints what piglit's program prints and exits like
+//! `piglit_report_result`: 0 for pass and skip, 1 for fail. A compiler
+//! panic aborts the process (SIGABRT) so piglit records a crash, not a
+//! plain failure.
+//!
+//! The verdict: the test passes when "compiled (and, with `--check-link`,
+//! linked on its own into a program)" equals "expected pass". It is
+//! skipped when it needs what shaderbox does not have: a GLSL version
+//! other than 1.10 and 1.20 (GLSL ES included), a stage other than vertex
+//! and fragment, any GL extension, or shader includes.
+
+use crate::guard::guarded;
+use crate::input::{read_source, stage_from_path, StageGuess};
+use glsl::{CompileOptions, Shader, Stage, Version};
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// GL extensions shaderbox implements (none yet). A test requiring any
+/// other is skipped; `!NAME` (requires NAME to be absent) always holds.
+const SUPPORTED_EXTENSIONS: &[&str] = &[];
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// The shader: .vert or .frag (.geom, .tesc, .tese and .comp are
+    /// skipped).
+    #[arg(value_name = "FILE")]
+    pub file: PathBuf,
+
+    /// Whether the shader is expected to compile (and link).
+    #[arg(value_enum, value_name = "pass|fail")]
+    pub expect: Expect,
+
+    /// The GLSL version the test needs, as piglit writes it: 1.10, 1.20,
+    /// "1.50", "3.00 es"... Versions other than 1.10 and 1.20 are skipped.
+    #[arg(value_name = "VERSION")]
+    pub version: String,
+
+    /// Also link the shader on its own into a program.
+    #[arg(long)]
+    pub check_link: bool,
+
+    /// Needs GL_ARB_shading_language_include: the test is skipped.
+    #[arg(long)]
+    pub dummy_shader_include: bool,
+
+    /// Needs GL_ARB_shading_language_include: the test is skipped.
+    #[arg(long, value_name = "PATH")]
+    pub shader_include_path: Option<String>,
+
+    /// GL extensions the test needs (`!NAME`: needs NAME to be absent).
+    #[arg(value_name = "EXT")]
+    pub extensions: Vec<String>,
+}
+
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Expect {
+    Pass,
+    Fail,
+}
+
+/// A piglit verdict.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    Pass,
+    Fail,
+    Skip,
+}
+
+impl Verdict {
+    fn as_str(self) -> &'static str {
+        match self {
+            Verdict::Pass => "pass",
+            Verdict::Fail => "fail",
+            Verdict::Skip => "skip",
+        }
+    }
+
+    /// `piglit_report_result`'s exit status.
+    fn exit_code(self) -> u8 {
+        match self {
+            Verdict::Pass | Verdict::Skip => 0,
+            Verdict::Fail => 1,
+        }
+    }
+}
+
+/// The version a test asks for.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Requested {
+    /// 1.10 or 1.20 of desktop GLSL.
+    Supported(Version),
+    /// A well-formed version shaderbox does not implement.
+    Other,
+}
+
+/// Parses piglit's version argument: `MAJOR.MINOR` with two minor digits,
+/// optionally followed by `es`, `core` or `compatibility`.
+pub fn parse_version(text: &str) -> Result<Requested, String> {
+    let ill_formed = || format!("Ill-formed GLSL version number: {text}");
+    let mut words = text.split_whitespace();
+    let number = words.next().ok_or_else(ill_formed)?;
+    let profile = words.next();
+    if words.next().is_some() || !matches!(profile, None | Some("es" | "core" | "compatibility")) {
+        return Err(ill_formed());
+    }
+    let (major, minor) = number.split_once('.').ok_or_else(ill_formed)?;
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    if !digits(major) || minor.len() != 2 || !digits(minor) || major.len() > 2 {
+        return Err(ill_formed());
+    }
+    let n = major.parse::<u32>().map_err(|_| ill_formed())? * 100
+        + minor.parse::<u32>().map_err(|_| ill_formed())?;
+    match (Version::from_number(n), profile) {
+        (Some(v), None | Some("compatibility")) => Ok(Requested::Supported(v)),
+        _ => Ok(Requested::Other),
+    }
+}
+
+/// What the command prints before the `PIGLIT:` line, and the verdict.
+#[derive(Debug)]
+struct Outcome {
+    verdict: Verdict,
+    message: String,
+}
+
+impl Outcome {
+    fn new(verdict: Verdict, message: impl Into<String>) -> Outcome {
+        Outcome {
+            verdict,
+            message: message.into(),
+        }
+    }
+}
+
+/// Runs one test and reports it the way piglit's program does.
+pub fn run(args: &Args) -> ExitCode {
+    let outcome = evaluate(args);
+    let mut stdout = std::io::stdout().lock();
+    if !outcome.message.is_empty() {
+        let _ = writeln!(stdout, "{}", outcome.message.trim_end());
+    }
+    let _ = writeln!(
+        stdout,
+        "PIGLIT: {{\"result\": \"{}\" }}",
+        outcome.verdict.as_str()
+    );
+    let _ = stdout.flush();
+    ExitCode::from(outcome.verdict.exit_code())
+}
+
+fn evaluate(args: &Args) -> Outcome {
+    let stage = match stage_from_path(&args.file) {
+        StageGuess::Known(s) => s,
+        StageGuess::Unsupported(what) => {
+            return Outcome::new(
+                Verdict::Skip,
+                format!("{what} shaders need a later OpenGL than 2.1"),
+            )
+        }
+        StageGuess::Unknown => {
+            return Outcome::new(
+                Verdict::Fail,
+                format!("Couldn't determine type of program {}", args.file.display()),
+            )
+        }
+    };
+    match parse_version(&args.version) {
+        Err(e) => return Outcome::new(Verdict::Fail, e),
+        Ok(Requested::Other) => {
+            return Outcome::new(
+                Verdict::Skip,
+                format!(
+                    "Test requires GLSL {}; shaderbox implements GLSL 1.10 and 1.20",
+                    args.version
+                ),
+            )
+        }
+        Ok(Requested::Supported(_)) => {}
+    }
+    if args.dummy_shader_include || args.shader_include_path.is_some() {
+        return Outcome::new(
+            Verdict::Skip,
+            "Test requires GL_ARB_shading_language_include, which shaderbox does not support",
+        );
+    }
+    for ext in &args.extensions {
+        if !ext.starts_with('!') && !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) {
+            return Outcome::new(
+                Verdict::Skip,
+                format!("Test requires extension {ext}, which shaderbox does not support"),
+            );
+        }
+    }
+    let text = match read_source(&args.file) {
+        Ok(t) => t,
+        Err(e) => return Outcome::new(Verdict::Fail, e),
+    };
+    let file = args.file.display().to_string();
+    let result = guarded(|| compile_and_link(&text, stage, &file, args.check_link));
+    let (ok, log) = match result {
+        Ok(r) => r,
+        Err(panic) => {
+            // piglit records a crash only for death by a signal.
+            let _ = std::io::stdout().flush();
+            eprintln!(
+                "shaderbox: internal error while compiling {file}: {}",
+                panic.message
+            );
+            std::process::abort();
+        }
+    };
+    verdict(args.expect, args.check_link, stage, &file, ok, &log)
+}
+
+/// Compiles the shader and, when asked, links it alone into a program:
+/// whether both succeeded, and the info logs.
+fn compile_and_link(text: &str, stage: Stage, file: &str, check_link: bool) -> (bool, String) {
+    let opts = CompileOptions {
+        name: file.to_string(),
+        ..CompileOptions::new(stage)
+    };
+    let shader: Shader = glsl::compile(&[text], &opts);
+    let mut log = shader.info_log();
+    if !shader.ok() || !check_link {
+        return (shader.ok(), log);
+    }
+    let program = glsl::link::link(&[&shader]);
+    log.push_str(program.info_log());
+    (program.ok(), log)
+}
+
+/// The verdict and piglit's messages for a compile (and link) result.
+fn verdict(
+    expect: Expect,
+    check_link: bool,
+    stage: Stage,
+    file: &str,
+    ok: bool,
+    log: &str,
+) -> Outcome {
+    let log = if log.trim().is_empty() {
+        "(no compiler output)"
+    } else {
+        log.trim_end()
+    };
+    let expected_ok = expect == Expect::Pass;
+    let stage = stage.name();
+    if ok == expected_ok {
+        let message = if log == "(no compiler output)" {
+            String::new()
+        } else {
+            format!("Info log of {stage} shader {file}:\n{log}")
+        };
+        Outcome::new(Verdict::Pass, message)
+    } else if expected_ok {
+        let what = if check_link {
+            "compile/link"
+        } else {
+            "compile"
+        };
+        Outcome::new(
+            Verdict::Fail,
+            format!("Failed to {what} {stage} shader {file}: {log}"),
+        )
+    } else {
+        let what = if check_link {
+            "compiled and linked"
+        } else {
+            "compiled"
+        };
+        Outcome::new(
+            Verdict::Fail,
+            format!("Successfully {what} {stage} shader {file}: {log}"),
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn versions() {
+        assert_eq!(
+            parse_version("1.10"),
+            Ok(Requested::Supported(Version::V110))
+        );
+        assert_eq!(
+            parse_version("1.20"),
+            Ok(Requested::Supported(Version::V120))
+        );
+        assert_eq!(
+            parse_version("1.20 compatibility"),
+            Ok(Requested::Supported(Version::V120))
+        );
+        assert_eq!(parse_version("1.50"), Ok(Requested::Other));
+        assert_eq!(parse_version("1.00"), Ok(Requested::Other));
+        assert_eq!(parse_version("3.00 es"), Ok(Requested::Other));
+        assert_eq!(parse_version("1.10 es"), Ok(Requested::Other));
+        assert_eq!(parse_version("4.60 core"), Ok(Requested::Other));
+        for bad in [
+            "",
+            "1",
+            "1.1",
+            "a.bc",
+            "1.10 gl",
+            "1.10 es x",
+            "110",
+            "-1.10",
+            "999.10",
+        ] {
+            assert!(parse_version(bad).is_err(), "{bad:?}");
+        }
+        assert_eq!(
+            parse_version("x").unwrap_err(),
+            "Ill-formed GLSL version number: x"
+        );
+    }
+
+    #[test]
+    fn verdicts() {
+        let v = |expect, ok| verdict(expect, false, Stage::Vertex, "t.vert", ok, "");
+        assert_eq!(v(Expect::Pass, true).verdict, Verdict::Pass);
+        assert_eq!(v(Expect::Fail, false).verdict, Verdict::Pass);
+        assert_eq!(v(Expect::Pass, false).verdict, Verdict::Fail);
+        assert_eq!(v(Expect::Fail, true).verdict, Verdict::Fail);
+        assert_eq!(v(Expect::Pass, true).message, "");
+        assert_eq!(
+            v(Expect::Pass, false).message,
+            "Failed to compile vertex shader t.vert: (no compiler output)"
+        );
+        let linked = verdict(Expect::Fail, true, Stage::Fragment, "t.frag", true, "");
+        assert_eq!(
+            linked.message,
+            "Successfully compiled and linked fragment shader t.frag: (no compiler output)"
+        );
+        let logged = verdict(
+            Expect::Fail,
+            false,
+            Stage::Fragment,
+            "t.frag",
+            false,
+            "0:1(1): error: x\n",
+        );
+        assert_eq!(
+            logged.message,
+            "Info log of fragment shader t.frag:\n0:1(1): error: x"
+        );
+    }
+
+    #[test]
+    fn exit_codes_follow_piglit_report_result() {
+        assert_eq!(Verdict::Pass.exit_code(), 0);
+        assert_eq!(Verdict::Skip.exit_code(), 0);
+        assert_eq!(Verdict::Fail.exit_code(), 1);
+    }
+
+    fn args(file: &str, version: &str, extensions: &[&str]) -> Args {
+        Args {
+            file: PathBuf::from(file),
+            expect: Expect::Pass,
+            version: version.to_string(),
+            check_link: false,
+            dummy_shader_include: false,
+            shader_include_path: None,
+            extensions: extensions.iter().map(|s| s.to_string()).collect(),
+        }
+    }
+
+    #[test]
+    fn skips_and_usage_failures_before_reading_the_file() {
+        // None of these files exist: the verdict comes before reading.
+        let e = |a: Args| evaluate(&a).verdict;
+        assert_eq!(e(args("/none/t.geom", "1.50", &[])), Verdict::Skip);
+        assert_eq!(e(args("/none/t.comp", "1.20", &[])), Verdict::Skip);
+        assert_eq!(e(args("/none/t.vert", "3.00 es", &[])), Verdict::Skip);
+        assert_eq!(e(args("/none/t.vert", "1.30", &[])), Verdict::Skip);
+        assert_eq!(
+            e(args("/none/t.vert", "1.20", &["GL_ARB_foo"])),
+            Verdict::Skip
+        );
+        assert_eq!(e(args("/none/t.txt", "1.10", &[])), Verdict::Fail);
+        assert_eq!(e(args("/none/t.vert", "one", &[])), Verdict::Fail);
+        let mut inc = args("/none/t.vert", "1.20", &[]);
+        inc.dummy_shader_include = true;
+        assert_eq!(e(inc), Verdict::Skip);
+        // `!EXT` holds, so the test proceeds to reading the file.
+        let missing = evaluate(&args("/none/t.vert", "1.20", &["!GL_ARB_foo"]));
+        assert_eq!(missing.verdict, Verdict::Fail);
+        assert!(
+            missing.message.starts_with("cannot read `/none/t.vert'"),
+            "{}",
+            missing.message
+        );
+    }
+}

@@ -1,0 +1,83 @@
+//! Reading shader files and telling their stage from their name.
+
+use glsl::Stage;
+use std::path::Path;
+
+/// What a file name says about the shader inside.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StageGuess {
+    /// A stage shaderbox implements.
+    Known(Stage),
+    /// A stage of a later GL (`.geom`, `.tesc`, `.tese`, `.comp`).
+    Unsupported(&'static str),
+    /// No recognised extension.
+    Unknown,
+}
+
+/// The stage from the file extension: `.vert`/`.vs` are vertex shaders,
+/// `.frag`/`.fs` fragment shaders (case-sensitive, as piglit's are).
+pub fn stage_from_path(path: &Path) -> StageGuess {
+    match path.extension().and_then(|e| e.to_str()) {
+        Some("vert" | "vs") => StageGuess::Known(Stage::Vertex),
+        Some("frag" | "fs") => StageGuess::Known(Stage::Fragment),
+        Some("geom") => StageGuess::Unsupported("geometry"),
+        Some("tesc") => StageGuess::Unsupported("tessellation control"),
+        Some("tese") => StageGuess::Unsupported("tessellation evaluation"),
+        Some("comp") => StageGuess::Unsupported("compute"),
+        _ => StageGuess::Unknown,
+    }
+}
+
+/// Reads a shader file. Bytes that are not UTF-8 become U+FFFD, which the
+/// compiler then reports as invalid characters where they are (a shader
+/// with such bytes is a compile error, not a usage error).
+///
+/// The error is a complete sentence naming the file.
+pub fn read_source(path: &Path) -> Result<String, String> {
+    match std::fs::read(path) {
+        Ok(bytes) => Ok(match String::from_utf8(bytes) {
+            Ok(s) => s,
+            Err(e) => String::from_utf8_lossy(e.as_bytes()).into_owned(),
+        }),
+        Err(e) => Err(format!("cannot read `{}': {}", path.display(), e)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stages_from_extensions() {
+        let g = |p: &str| stage_from_path(Path::new(p));
+        assert_eq!(g("a/b.vert"), StageGuess::Known(Stage::Vertex));
+        assert_eq!(g("b.vs"), StageGuess::Known(Stage::Vertex));
+        assert_eq!(g("x.y.frag"), StageGuess::Known(Stage::Fragment));
+        assert_eq!(g("b.fs"), StageGuess::Known(Stage::Fragment));
+        assert_eq!(g("b.geom"), StageGuess::Unsupported("geometry"));
+        assert_eq!(g("b.comp"), StageGuess::Unsupported("compute"));
+        assert_eq!(g("b.glsl"), StageGuess::Unknown);
+        assert_eq!(g("frag"), StageGuess::Unknown);
+        assert_eq!(g("b.FRAG"), StageGuess::Unknown);
+    }
+
+    #[test]
+    fn missing_file_is_named() {
+        let e = read_source(Path::new("/nonexistent/dir/x.frag")).unwrap_err();
+        assert!(
+            e.starts_with("cannot read `/nonexistent/dir/x.frag': "),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn invalid_utf8_is_kept_as_replacement_characters() {
+        let dir = std::env::temp_dir().join(format!("shaderbox-input-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let p = dir.join("bad.frag");
+        std::fs::write(&p, b"void main() { \xff }").unwrap();
+        let s = read_source(&p).unwrap();
+        assert_eq!(s, "void main() { \u{fffd} }");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

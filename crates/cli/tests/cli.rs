@@ -1,0 +1,387 @@
+//! End-to-end tests of the `shaderbox` binary: exit statuses and output
+//! formats of `check`, and piglit's protocol for `glslparsertest`.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn shaderbox(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_shaderbox"))
+        .args(args)
+        .env_remove("NO_COLOR")
+        .output()
+        .expect("the shaderbox binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn example(name: &str) -> String {
+    let p = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/shaders")
+        .join(name);
+    p.to_string_lossy().into_owned()
+}
+
+/// Writes `text` to a fresh file named `name` and returns its path.
+fn temp_shader(test: &str, name: &str, text: &str) -> String {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("cli-tests")
+        .join(test);
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.to_string_lossy().into_owned()
+}
+
+const VALID_VERT: &str = "void main()\n{\n    gl_Position = ftransform();\n}\n";
+const UNDECLARED_FRAG: &str = "void main()\n{\n    gl_FragColor = vec4(x);\n}\n";
+
+// ---- check: exit statuses ------------------------------------------------
+
+#[test]
+fn check_valid_examples_exit_0() {
+    let o = shaderbox(&[
+        "check",
+        &example("impostor.vert"),
+        &example("impostor.frag"),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    let out = stdout(&o);
+    assert!(
+        out.contains("ok: ") && out.contains("impostor.vert (vertex shader, GLSL 1.20)"),
+        "{out}"
+    );
+    assert!(
+        out.contains("impostor.frag (fragment shader, GLSL 1.20)"),
+        "{out}"
+    );
+}
+
+#[test]
+fn check_errors_exit_1_and_reports_every_mistake() {
+    let o = shaderbox(&["check", "--color", "never", &example("mistakes.frag")]);
+    assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains("failed: "), "{out}");
+    // One error per deliberate mistake, on lines 9, 10 and 11.
+    for line in [9, 10, 11] {
+        assert!(
+            out.contains(&format!("mistakes.frag:{line}:")),
+            "line {line}:\n{out}"
+        );
+    }
+}
+
+#[test]
+fn check_one_bad_file_among_good_ones_exits_1() {
+    let bad = temp_shader("mixed", "bad.frag", UNDECLARED_FRAG);
+    let o = shaderbox(&["check", &example("impostor.vert"), &bad]);
+    assert_eq!(o.status.code(), Some(1));
+}
+
+#[test]
+fn check_missing_file_exits_2_naming_it() {
+    let o = shaderbox(&["check", "/no/such/dir/missing.frag"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("`/no/such/dir/missing.frag'"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(stdout(&o).is_empty());
+}
+
+#[test]
+fn check_unknown_extension_needs_stage() {
+    let p = temp_shader("stage", "shader.glsl", VALID_VERT);
+    let o = shaderbox(&["check", &p]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--stage"), "{}", stderr(&o));
+    let o = shaderbox(&["check", "--stage", "vertex", &p]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+}
+
+#[test]
+fn check_stage_flag_overrides_extension() {
+    // gl_FragColor is not a vertex shader output.
+    let p = temp_shader(
+        "override",
+        "s.vert",
+        "void main() { gl_FragColor = vec4(1.0); }\n",
+    );
+    let o = shaderbox(&["check", &p]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    let o = shaderbox(&["check", "--stage", "fragment", &p]);
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+}
+
+#[test]
+fn check_bad_arguments_exit_2() {
+    assert_eq!(shaderbox(&["check"]).status.code(), Some(2));
+    assert_eq!(
+        shaderbox(&["check", "--format", "xml", "a.frag"])
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(
+        shaderbox(&["check", "--glsl-version", "130", "a.frag"])
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(
+        shaderbox(&["check", "--stage", "geometry", "a.frag"])
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(shaderbox(&["frobnicate"]).status.code(), Some(2));
+}
+
+#[test]
+fn check_glsl_version_110_is_the_default() {
+    let p = temp_shader("version", "v.vert", VALID_VERT);
+    let o = shaderbox(&["check", "--glsl-version", "110", &p]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    assert!(stdout(&o).contains("GLSL 1.10"), "{}", stdout(&o));
+}
+
+#[test]
+fn check_glsl_version_120_applies_without_version_directive() {
+    // GLSL 1.20 converts int to float implicitly (§4.1.10); 1.10 does not.
+    let p = temp_shader(
+        "version120",
+        "conv.frag",
+        "void main()\n{\n    float x = 1;\n    gl_FragColor = vec4(x);\n}\n",
+    );
+    assert_eq!(shaderbox(&["check", &p]).status.code(), Some(1));
+    let o = shaderbox(&["check", "--glsl-version", "120", &p]);
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    assert!(stdout(&o).contains("GLSL 1.20"), "{}", stdout(&o));
+    // An explicit #version wins over the option.
+    let q = temp_shader(
+        "version120",
+        "explicit.frag",
+        "#version 110\nvoid main()\n{\n    float x = 1;\n    gl_FragColor = vec4(x);\n}\n",
+    );
+    assert_eq!(
+        shaderbox(&["check", "--glsl-version", "120", &q])
+            .status
+            .code(),
+        Some(1)
+    );
+}
+
+#[test]
+fn check_link_after_compile_failure_does_not_link() {
+    let bad = temp_shader("link", "bad.frag", UNDECLARED_FRAG);
+    let o = shaderbox(&[
+        "check",
+        "--link",
+        "--color",
+        "never",
+        &example("impostor.vert"),
+        &bad,
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stdout(&o).contains("not linked: a shader failed to compile"),
+        "{}",
+        stdout(&o)
+    );
+}
+
+const UNDEFINED_FUNCTION_VERT: &str =
+    "void f();\nvoid main()\n{\n    f();\n    gl_Position = vec4(0.0);\n}\n";
+
+#[test]
+fn check_link_of_example_pair_exits_0() {
+    let o = shaderbox(&[
+        "check",
+        "--link",
+        &example("impostor.vert"),
+        &example("impostor.frag"),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    assert!(stdout(&o).contains("ok: program linked"), "{}", stdout(&o));
+}
+
+#[test]
+fn check_link_failure_exits_1() {
+    let p = temp_shader("link-fail", "undef.vert", UNDEFINED_FUNCTION_VERT);
+    // It compiles on its own...
+    assert_eq!(shaderbox(&["check", &p]).status.code(), Some(0));
+    // ...but does not link.
+    let o = shaderbox(&["check", "--link", "--color", "never", &p]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    assert!(
+        stdout(&o).contains("failed: program did not link"),
+        "{}",
+        stdout(&o)
+    );
+    let o = shaderbox(&["check", "--link", "--format", "json", &p]);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).expect("valid JSON");
+    let codes: Vec<&str> = v
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| d["code"].as_str().unwrap())
+        .collect();
+    assert!(codes.iter().any(|c| c.starts_with("E03")), "{codes:?}");
+}
+
+// ---- check: formats --------------------------------------------------------
+
+#[test]
+fn check_json_is_an_array_of_resolved_diagnostics() {
+    let bad = temp_shader("json", "bad.frag", UNDECLARED_FRAG);
+    let o = shaderbox(&["check", "--format", "json", &bad]);
+    assert_eq!(o.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).expect("valid JSON");
+    let first = &v.as_array().expect("an array")[0];
+    assert_eq!(first["file"], bad.as_str());
+    assert_eq!(first["stage"], "fragment");
+    assert_eq!(first["severity"], "error");
+    assert_eq!(first["line"], 3);
+    assert_eq!(first["column"], 25);
+    assert!(first["code"].as_str().unwrap().starts_with('E'));
+    assert!(
+        first["message"].as_str().unwrap().contains("`x'"),
+        "{first}"
+    );
+    assert!(first["notes"].is_array());
+}
+
+#[test]
+fn check_json_of_valid_shader_is_empty_array() {
+    let o = shaderbox(&["check", "--format", "json", &example("impostor.frag")]);
+    assert_eq!(o.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).expect("valid JSON");
+    assert_eq!(v, serde_json::json!([]));
+}
+
+#[test]
+fn check_infolog_uses_gl_layout() {
+    let bad = temp_shader("infolog", "bad.frag", UNDECLARED_FRAG);
+    let o = shaderbox(&["check", "--format", "infolog", &bad]);
+    assert_eq!(o.status.code(), Some(1));
+    let out = stdout(&o);
+    assert!(out.starts_with("0:3(25): error: "), "{out}");
+}
+
+#[test]
+fn check_color_flag() {
+    let bad = temp_shader("color", "bad.frag", UNDECLARED_FRAG);
+    let always = stdout(&shaderbox(&["check", "--color", "always", &bad]));
+    assert!(always.contains('\x1b'), "{always}");
+    let never = stdout(&shaderbox(&["check", "--color", "never", &bad]));
+    assert!(!never.contains('\x1b'), "{never}");
+    // auto: stdout is a pipe here.
+    let auto = stdout(&shaderbox(&["check", &bad]));
+    assert!(!auto.contains('\x1b'), "{auto}");
+}
+
+// ---- glslparsertest: piglit's protocol -------------------------------------
+
+fn piglit_result(o: &Output) -> String {
+    let out = stdout(o);
+    let line = out
+        .lines()
+        .rfind(|l| l.starts_with("PIGLIT: "))
+        .unwrap_or_else(|| panic!("no PIGLIT line in {out}"));
+    let v: serde_json::Value = serde_json::from_str(&line[8..]).expect("JSON after PIGLIT:");
+    v["result"].as_str().unwrap().to_string()
+}
+
+#[test]
+fn parsertest_expected_pass_compiles() {
+    let p = temp_shader("pt-pass", "ok.vert", VALID_VERT);
+    let o = shaderbox(&["glslparsertest", &p, "pass", "1.10"]);
+    assert_eq!(piglit_result(&o), "pass");
+    assert_eq!(o.status.code(), Some(0));
+}
+
+#[test]
+fn parsertest_expected_fail_that_compiles_fails() {
+    let p = temp_shader("pt-unexpected", "ok.vert", VALID_VERT);
+    let o = shaderbox(&["glslparsertest", &p, "fail", "1.20"]);
+    assert_eq!(piglit_result(&o), "fail");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stdout(&o).contains("Successfully compiled vertex shader"),
+        "{}",
+        stdout(&o)
+    );
+}
+
+#[test]
+fn parsertest_expected_fail_that_fails_passes_and_shows_log() {
+    let p = temp_shader("pt-fail", "bad.frag", UNDECLARED_FRAG);
+    let o = shaderbox(&["glslparsertest", &p, "fail", "1.10"]);
+    assert_eq!(piglit_result(&o), "pass");
+    assert_eq!(o.status.code(), Some(0));
+    assert!(stdout(&o).contains("0:3(25): error"), "{}", stdout(&o));
+}
+
+#[test]
+fn parsertest_expected_pass_that_fails_fails() {
+    let p = temp_shader("pt-fail2", "bad.frag", UNDECLARED_FRAG);
+    let o = shaderbox(&["glslparsertest", &p, "pass", "1.10"]);
+    assert_eq!(piglit_result(&o), "fail");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stdout(&o).contains("Failed to compile fragment shader"),
+        "{}",
+        stdout(&o)
+    );
+}
+
+#[test]
+fn parsertest_skips() {
+    let p = temp_shader("pt-skip", "ok.vert", VALID_VERT);
+    let g = temp_shader("pt-skip", "ok.geom", "void main() {}\n");
+    for args in [
+        vec!["glslparsertest", &p, "pass", "1.50"],
+        vec!["glslparsertest", &p, "pass", "3.00 es"],
+        vec!["glslparsertest", &p, "pass", "1.20", "GL_ARB_gpu_shader5"],
+        vec!["glslparsertest", &g, "pass", "1.50"],
+    ] {
+        let o = shaderbox(&args);
+        assert_eq!(piglit_result(&o), "skip", "{args:?}");
+        assert_eq!(o.status.code(), Some(0), "{args:?}");
+    }
+}
+
+#[test]
+fn parsertest_check_link_counts_link_errors() {
+    let p = temp_shader("pt-link", "undef.vert", UNDEFINED_FUNCTION_VERT);
+    let o = shaderbox(&["glslparsertest", &p, "fail", "1.10"]);
+    assert_eq!(
+        piglit_result(&o),
+        "fail",
+        "compiles, so `fail' is wrong without --check-link"
+    );
+    let o = shaderbox(&["glslparsertest", &p, "fail", "1.10", "--check-link"]);
+    assert_eq!(piglit_result(&o), "pass", "{}", stdout(&o));
+    assert_eq!(o.status.code(), Some(0));
+}
+
+#[test]
+fn parsertest_missing_file_fails() {
+    let o = shaderbox(&["glslparsertest", "/no/such/file.vert", "pass", "1.10"]);
+    assert_eq!(piglit_result(&o), "fail");
+    assert_eq!(o.status.code(), Some(1));
+}
+
+#[test]
+fn parsertest_bad_usage_is_nonzero() {
+    // piglit turns any non-zero status without a PIGLIT line into "fail".
+    let o = shaderbox(&["glslparsertest", "x.vert", "maybe", "1.10"]);
+    assert_ne!(o.status.code(), Some(0));
+}

@@ -1,0 +1,2 @@
+attribute vec4 position;
+void main() { gl_FragColor = position; }

@@ -1,0 +1,5 @@
+void main()
+{
+    int a = 6 & 3;
+    gl_FragColor = vec4(float(a));
+}

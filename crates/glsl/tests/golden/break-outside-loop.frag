@@ -1,0 +1,5 @@
+void main()
+{
+    break;
+    gl_FragColor = vec4(1.0);
+}

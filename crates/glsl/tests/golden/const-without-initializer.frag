@@ -1,0 +1,5 @@
+void main()
+{
+    const float k;
+    gl_FragColor = vec4(k);
+}

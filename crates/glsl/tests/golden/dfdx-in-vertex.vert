@@ -1,0 +1,4 @@
+void main()
+{
+    gl_Position = vec4(dFdx(gl_Vertex.x));
+}

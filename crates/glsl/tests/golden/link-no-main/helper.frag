@@ -1,0 +1,1 @@
+vec4 shade() { return vec4(1.0); }

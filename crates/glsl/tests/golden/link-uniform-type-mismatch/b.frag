@@ -1,0 +1,2 @@
+uniform vec4 scale;
+void main() { gl_FragColor = scale; }

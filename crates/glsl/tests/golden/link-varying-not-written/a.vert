@@ -1,0 +1,2 @@
+varying vec3 normal;
+void main() { gl_Position = ftransform(); }

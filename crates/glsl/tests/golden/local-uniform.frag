@@ -1,0 +1,5 @@
+void main()
+{
+    uniform float u;
+    gl_FragColor = vec4(u);
+}

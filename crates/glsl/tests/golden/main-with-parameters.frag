@@ -1,0 +1,4 @@
+void main(int x)
+{
+    gl_FragColor = vec4(1.0);
+}

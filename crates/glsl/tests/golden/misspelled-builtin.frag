@@ -1,0 +1,4 @@
+void main()
+{
+    gl_FragColour = vec4(1.0);
+}

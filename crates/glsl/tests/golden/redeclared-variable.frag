@@ -1,0 +1,6 @@
+void main()
+{
+    float a = 1.0;
+    float a = 2.0;
+    gl_FragColor = vec4(a);
+}

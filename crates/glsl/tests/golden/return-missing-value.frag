@@ -1,0 +1,5 @@
+float f()
+{
+    return;
+}
+void main() { gl_FragColor = vec4(f()); }

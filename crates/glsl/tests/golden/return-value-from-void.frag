@@ -1,0 +1,5 @@
+void main()
+{
+    gl_FragColor = vec4(1.0);
+    return 1.0;
+}

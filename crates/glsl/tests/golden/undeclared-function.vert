@@ -1,0 +1,4 @@
+void main()
+{
+    gl_Position = transform(gl_Vertex);
+}
