@@ -140,7 +140,6 @@ impl Parser<'_> {
         let ty = self.fully_specified_type()?;
         if self.eat_punct(Punct::Semicolon) {
             // `struct S { ... };` or the grammar's bare `float;`.
-            self.check_array_type(&ty.ty);
             return Ok(ExternalDecl::Declaration(Declaration::Variables(
                 InitDeclaratorList {
                     ty,
@@ -153,7 +152,6 @@ impl Parser<'_> {
         if self.at_punct(Punct::LeftParen) {
             return self.function(ty, name, allow_definition);
         }
-        self.check_array_type(&ty.ty);
         let list = self.init_declarator_list(ty, name, start)?;
         Ok(ExternalDecl::Declaration(Declaration::Variables(list)))
     }
@@ -220,8 +218,8 @@ impl Parser<'_> {
 
     /// `type_specifier`: a type keyword, struct name or struct specifier,
     /// optionally followed by one array size (`float[3]`, `float[]`).
-    /// Callers judge whether an array type is allowed there
-    /// ([`Self::check_array_type`]).
+    /// Analysis judges whether the array type is allowed there (and in the
+    /// shader's version).
     pub(super) fn type_specifier(&mut self) -> PResult<TypeSpecifier> {
         let start = self.span();
         let name = match self.kind() {
@@ -251,13 +249,6 @@ impl Parser<'_> {
         })
     }
 
-    /// Array types (`float[3] a;`) are GLSL 1.20 syntax (§4.1.9).
-    pub(super) fn check_array_type(&mut self, ty: &TypeSpecifier) {
-        if let Some(a) = &ty.array {
-            self.require_120(a.span, "an array size after the type name");
-        }
-    }
-
     /// `[` constant_expression? `]`.
     pub(super) fn array_spec(&mut self) -> PResult<ArraySpec> {
         let start = self.expect_punct(Punct::LeftBracket)?;
@@ -283,29 +274,26 @@ impl Parser<'_> {
     }
 
     fn struct_specifier_inner(&mut self) -> PResult<StructSpecifier> {
-        {
-            let p = self;
-            let start = p.bump().span;
-            let name = match p.kind() {
-                TokenKind::Identifier(_) => Some(p.ident("identifier")?),
-                _ => None,
-            };
-            p.expect_punct(Punct::LeftBrace)?;
-            let members = p.struct_members();
-            if members.is_empty() && p.at_punct(Punct::RightBrace) {
-                // §9: `struct_declaration_list` has at least one member.
-                let _ = p.unexpected("member declaration");
-            }
-            p.expect_punct(Punct::RightBrace)?;
-            if let Some(n) = &name {
-                p.scopes.declare(&n.name, true);
-            }
-            Ok(StructSpecifier {
-                name,
-                members,
-                span: p.span_from(start),
-            })
+        let start = self.bump().span;
+        let name = match self.kind() {
+            TokenKind::Identifier(_) => Some(self.ident("identifier")?),
+            _ => None,
+        };
+        self.expect_punct(Punct::LeftBrace)?;
+        let members = self.struct_members();
+        if members.is_empty() && self.at_punct(Punct::RightBrace) {
+            // §9: `struct_declaration_list` has at least one member.
+            let _ = self.unexpected("member declaration");
         }
+        self.expect_punct(Punct::RightBrace)?;
+        if let Some(n) = &name {
+            self.scopes.declare(&n.name, true);
+        }
+        Ok(StructSpecifier {
+            name,
+            members,
+            span: self.span_from(start),
+        })
     }
 
     /// Member lines up to (not including) the closing `}`; a bad line is
@@ -329,7 +317,6 @@ impl Parser<'_> {
         let start = self.span();
         let qualifiers = self.qualifiers();
         let ty = self.type_specifier()?;
-        self.check_array_type(&ty);
         let mut declarators = Vec::new();
         loop {
             let name = self.ident("member name")?;
@@ -389,10 +376,6 @@ impl Parser<'_> {
         } else {
             None
         };
-        if let (Some(_), Some(init)) = (&array, &init) {
-            // The 1.10 grammar has no initializer after an array declarator.
-            self.require_120(init.span, "initializing an array");
-        }
         self.scopes.declare(&name.name, false);
         Ok(InitDeclarator {
             span: self.span_from(name.span),
@@ -470,7 +453,6 @@ impl Parser<'_> {
         let mut ty = self.type_specifier()?;
         let (name, array) = match self.kind() {
             TokenKind::Identifier(_) => {
-                self.check_array_type(&ty);
                 let name = self.ident("identifier")?;
                 let array = if self.at_punct(Punct::LeftBracket) {
                     Some(self.array_spec()?)

@@ -214,7 +214,7 @@ impl Parser<'_> {
     fn index_suffix(&mut self, e: Box<Expr>) -> PExpr {
         self.bump();
         let index = self.expression()?;
-        self.expect_punct(Punct::RightBracket)?;
+        self.expect_close(Punct::RightBracket)?;
         let span = self.span_from(e.span);
         Ok(node(ExprKind::Index(e, index), span))
     }
@@ -228,9 +228,6 @@ impl Parser<'_> {
             return Ok(node(ExprKind::Field(e, name), span));
         }
         let args = self.call_args()?;
-        // The 1.10 grammar has no method calls.
-        let method_span = self.span_from(name.span);
-        self.require_120(method_span, "a method call such as `.length()'");
         let span = self.span_from(e.span);
         Ok(node(ExprKind::Method(e, name, args), span))
     }
@@ -258,7 +255,7 @@ impl Parser<'_> {
     fn parenthesized(&mut self) -> PExpr {
         let start = self.bump().span;
         let mut inner = self.expression()?;
-        self.expect_punct(Punct::RightParen)?;
+        self.expect_close(Punct::RightParen)?;
         inner.span = self.span_from(start);
         Ok(inner)
     }
@@ -308,9 +305,6 @@ impl Parser<'_> {
     fn constructor(&mut self) -> PExpr {
         let start = self.span();
         let ty = self.type_specifier()?;
-        if let Some(a) = &ty.array {
-            self.require_120(a.span, "an array constructor");
-        }
         if !self.at_punct(Punct::LeftParen) {
             return Err(self.unexpected_with_note(
                 "`('",
@@ -340,7 +334,7 @@ impl Parser<'_> {
                 break;
             }
         }
-        self.expect_punct(Punct::RightParen)?;
+        self.expect_close(Punct::RightParen)?;
         Ok(args)
     }
 }

@@ -5,10 +5,13 @@
 //! leaves meaning to semantic analysis; it only reports what the grammar of
 //! the shader's version cannot parse:
 //! - syntax errors, as "expected X, found Y" at the offending token;
-//! - reserved words (§3.6), wherever they appear;
-//! - GLSL 1.20 syntax in a 1.10 shader (array types `float[3]`, array
-//!   constructors, array initializers, method calls such as `a.length()`),
-//!   as [`Code::VersionTooLow`]; analysis need not check these again.
+//! - reserved words (§3.6), wherever they appear.
+//!
+//! The grammar is the union of 1.10 and 1.20: GLSL 1.20 syntax in a 1.10
+//! shader (array types `float[3]`, array constructors and initializers,
+//! method calls such as `a.length()`) is parsed, and analysis reports it
+//! with the version. The one version-dependent rule here is the operand
+//! after `:` in `?:` (1.10: conditional, 1.20: assignment expression).
 //!
 //! ## Error recovery
 //! A syntax error unwinds (as [`Reported`]) to the enclosing statement, struct
@@ -170,6 +173,21 @@ impl<'t> Parser<'t> {
         }
     }
 
+    /// Expects the `)` or `]` closing a group inside an expression. When the
+    /// statement ends first (`;`, `}` or end of input), the closing token is
+    /// taken as forgotten: the error is reported and the expression kept, so
+    /// a declaration such as `vec4 c = vec4(1.0;` still declares `c`.
+    fn expect_close(&mut self, p: Punct) -> PResult<()> {
+        if self.eat_punct(p) {
+            return Ok(());
+        }
+        let err = self.unexpected(&format!("`{}'", p.as_str()));
+        match self.kind() {
+            TokenKind::Eof | TokenKind::Punct(Punct::Semicolon | Punct::RightBrace) => Ok(()),
+            _ => Err(err),
+        }
+    }
+
     /// Expects the `;` ending a statement or declaration. When it is missing
     /// but the next token clearly starts something new (a keyword such as
     /// `float` or `return`, `else`, or `}`), the `;` is taken as forgotten
@@ -254,21 +272,6 @@ impl<'t> Parser<'t> {
         .with_note(reserved_note(&word));
         self.report(d);
         Reported
-    }
-
-    /// Reports syntax the shader's version lacks (GLSL 1.20 additions in a
-    /// 1.10 shader). Does not disturb error recovery: the tree is complete.
-    fn require_120(&mut self, span: Span, what: &str) {
-        if self.version < Version::V120 && !self.aborted {
-            self.diags.push(
-                Diagnostic::error(
-                    Code::VersionTooLow,
-                    span,
-                    format!("{what} requires GLSL 1.20"),
-                )
-                .with_note("add `#version 120' at the start of the shader"),
-            );
-        }
     }
 
     // ---- Nesting limit --------------------------------------------------

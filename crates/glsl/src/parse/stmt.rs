@@ -252,7 +252,6 @@ impl Parser<'_> {
         }
         let start = self.span();
         let ty = self.fully_specified_type()?;
-        self.check_array_type(&ty.ty);
         let name = self.ident("identifier")?;
         self.expect_punct(Punct::Equal)?;
         let init = *self.assignment()?;

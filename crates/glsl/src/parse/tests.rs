@@ -353,21 +353,13 @@ fn array_types_and_constructors_in_120() {
 }
 
 #[test]
-fn array_syntax_of_120_is_reported_in_110() {
+fn syntax_of_120_parses_in_110_for_analysis_to_judge() {
     let v = Version::V110;
-    let e = errs_v("float[3] a;", v);
-    assert_eq!(e, ["an array size after the type name requires GLSL 1.20"]);
-    let e = errs_v("float a[2] = float[2](1.0, 2.0);", v);
-    assert_eq!(
-        e,
-        [
-            "an array constructor requires GLSL 1.20",
-            "initializing an array requires GLSL 1.20"
-        ]
-    );
-    let e = errs_v("void f() { float a[2]; int n = a.length(); }", v);
-    assert_eq!(e, ["a method call such as `.length()' requires GLSL 1.20"]);
-    // The 1.10 grammar allows an unnamed array parameter, `float[3]`.
+    ok_v("float[3] a;", v);
+    ok_v("float a[2] = float[2](1.0, 2.0);", v);
+    ok_v("void f() { float a[2]; int n = a.length(); }", v);
+    // The 1.10 grammar allows an unnamed array parameter, `float[3]`; its
+    // size is kept with the parameter, not the type.
     let tu = ok_v("void f(float[3]);", v);
     let ExternalDecl::Declaration(Declaration::Prototype(p)) = &tu.items[0] else {
         panic!()
@@ -375,7 +367,6 @@ fn array_syntax_of_120_is_reported_in_110() {
     assert!(p.params[0].name.is_none() && p.params[0].ty.array.is_none());
     assert!(p.params[0].array.is_some());
     assert_eq!(p.params[0].ty.span, Span::new(7, 12));
-    // And a named one with the size after the name.
     ok_v("void f(out float x[2]);", v);
 }
 
@@ -768,12 +759,13 @@ fn independent_syntax_errors_are_all_reported_once() {
     // The error points at the offending token.
     let two = src.find("2;").unwrap() as u32;
     assert_eq!(d[0].span, Some(Span::new(two, two + 1)));
-    // The good statements and the declaration with a missing operand survive.
+    // The good statements, the one missing a `)` and the declaration with a
+    // missing operand survive.
     let ExternalDecl::FunctionDef(f) = &tu.items[0] else {
         panic!()
     };
-    assert_eq!(f.body.stmts.len(), 2);
-    let StmtKind::Declaration(Declaration::Variables(v)) = &f.body.stmts[0].kind else {
+    assert_eq!(f.body.stmts.len(), 3);
+    let StmtKind::Declaration(Declaration::Variables(v)) = &f.body.stmts[1].kind else {
         panic!()
     };
     assert_eq!(
@@ -804,6 +796,31 @@ fn missing_semicolon_before_keyword_keeps_next_statement() {
     assert!(
         matches!(&f.body.stmts[2].kind, StmtKind::Return(Some(e)) if e.kind == ExprKind::Error)
     );
+}
+
+#[test]
+fn missing_closing_paren_before_semicolon_keeps_the_declaration() {
+    let (tu, d) = run(
+        "void main() { vec4 c = vec4(1.0;\n float a = b[2;\n x = (1 + 2; }",
+        Version::V120,
+    );
+    let m: Vec<_> = d.iter().map(|d| d.message.as_str()).collect();
+    assert_eq!(
+        m,
+        [
+            "expected `)', found `;'",
+            "expected `]', found `;'",
+            "expected `)', found `;'"
+        ]
+    );
+    let ExternalDecl::FunctionDef(f) = &tu.items[0] else {
+        panic!()
+    };
+    assert_eq!(f.body.stmts.len(), 3);
+    let StmtKind::Declaration(Declaration::Variables(v)) = &f.body.stmts[0].kind else {
+        panic!()
+    };
+    assert_eq!(show(v.declarators[0].init.as_ref().unwrap()), "vec4(1.0)");
 }
 
 #[test]
@@ -1055,43 +1072,26 @@ fn nesting_fits_a_small_stack() {
 
 // ---- Corpus sweep ----------------------------------------------------------
 
-/// True if the shader needs the preprocessor beyond dropping `#version`,
-/// `#extension` and the like (macros, conditionals, predefined macros).
-fn needs_preprocessor(src: &str) -> bool {
-    let directive = src.lines().any(|l| {
-        let l = l.trim_start();
-        l.strip_prefix('#').is_some_and(|rest| {
-            let word = rest.trim_start();
-            [
-                "define", "undef", "if", "ifdef", "ifndef", "elif", "else", "endif", "error",
-            ]
-            .iter()
-            .any(|d| word.starts_with(d))
-        })
-    });
-    directive
-        || ["__LINE__", "__FILE__", "__VERSION__", "GL_ES"]
-            .iter()
-            .any(|m| src.contains(m))
-}
-
-/// Runs the parser over the piglit GLSL 1.10/1.20 compiler tests listed in
-/// `/tmp/glslparser_list.txt`: nothing may panic, and every test expected
-/// to compile must parse without errors unless it needs the preprocessor.
+/// Runs the preprocessor and parser over the piglit GLSL 1.10/1.20 compiler
+/// tests listed in `/tmp/glslparser_list.txt`: nothing may panic, and every
+/// test expected to compile must parse without errors.
 /// `cargo test -p shaderbox-glsl piglit_sweep -- --ignored --nocapture`
 #[test]
 #[ignore]
 fn piglit_sweep() {
+    use crate::ir::Stage;
+    use crate::pp::{preprocess, PpOptions};
+    use crate::source::SourceMap;
     let root = "/tmp/piglit/usr/lib/x86_64-linux-gnu/piglit/";
     let Ok(list) = std::fs::read_to_string("/tmp/glslparser_list.txt") else {
         eprintln!("no /tmp/glslparser_list.txt; skipped");
         return;
     };
-    let (mut total, mut pass_total, mut fail_total, mut pp_files) = (0, 0, 0, 0);
+    let (mut total, mut pass_total, mut fail_total, mut pp_rejected) = (0, 0, 0, 0);
     let mut panics = Vec::new();
     let mut bad_pass = Vec::new();
-    let mut bad_pass_pp = Vec::new();
     let mut fail_rejected = 0;
+    let verbose = std::env::var_os("SWEEP_VERBOSE").is_some();
     for line in list.lines() {
         let Some(cmd) = line.split('\t').nth(1) else {
             continue;
@@ -1104,11 +1104,18 @@ fn piglit_sweep() {
             continue;
         };
         total += 1;
-        let v = version_of(&src);
-        let pp = needs_preprocessor(&src);
-        pp_files += pp as usize;
-        let toks = tokens(&src, v);
-        let result = std::panic::catch_unwind(|| parse(&toks, v));
+        let stage = if path.ends_with(".vert") {
+            Stage::Vertex
+        } else {
+            Stage::Fragment
+        };
+        let mut map = SourceMap::new(*path, src.as_str());
+        let pp = preprocess(&mut map, &PpOptions::new(stage));
+        if pp.diagnostics.iter().any(|d| d.is_error()) {
+            pp_rejected += 1;
+            continue;
+        }
+        let result = std::panic::catch_unwind(|| parse(&pp.tokens, pp.version));
         let Ok((_, diags)) = result else {
             panics.push(path.to_string());
             continue;
@@ -1116,35 +1123,27 @@ fn piglit_sweep() {
         let errors: Vec<_> = diags.iter().filter(|d| d.is_error()).collect();
         if *expect == "pass" {
             pass_total += 1;
-            if !errors.is_empty() {
-                let entry = format!("{path}: {}", errors[0].message);
-                if pp {
-                    bad_pass_pp.push(entry)
-                } else {
-                    bad_pass.push(entry)
-                }
+            if let Some(e) = errors.first() {
+                bad_pass.push(format!("{path}: {}", e.message));
             }
         } else {
             fail_total += 1;
             fail_rejected += !errors.is_empty() as usize;
-            if let Some(e) = errors.first() {
-                if std::env::var_os("SWEEP_VERBOSE").is_some() {
-                    eprintln!("  fail-rejected {path}: {}", e.message);
-                }
+            if let (Some(e), true) = (errors.first(), verbose) {
+                eprintln!("  fail-rejected {path}: {}", e.message);
             }
         }
     }
-    eprintln!("piglit: {total} files ({pass_total} pass, {fail_total} fail; {pp_files} need the preprocessor)");
-    eprintln!("panics: {}", panics.len());
     eprintln!(
-        "expected-pass with parse errors: {} (+{} needing the preprocessor)",
-        bad_pass.len(),
-        bad_pass_pp.len()
+        "piglit: {total} files; {pp_rejected} rejected by the preprocessor; \
+         parsed {pass_total} expected to pass, {fail_total} expected to fail"
     );
-    for b in bad_pass.iter().chain(&bad_pass_pp) {
+    eprintln!("panics: {}", panics.len());
+    eprintln!("expected-pass with parse errors: {}", bad_pass.len());
+    for b in &bad_pass {
         eprintln!("  {b}");
     }
-    eprintln!("expected-fail rejected by the parser alone: {fail_rejected}");
+    eprintln!("expected-fail rejected by the parser: {fail_rejected}");
     assert!(panics.is_empty(), "{panics:?}");
     assert!(bad_pass.is_empty());
 }
@@ -1184,4 +1183,96 @@ fn dir_sweep() {
         }
     }
     eprintln!("{} files, {clean} without diagnostics", paths.len());
+}
+
+// ---- Randomized robustness ------------------------------------------------
+
+/// A small deterministic pseudo-random generator (xorshift64*).
+struct Rng(u64);
+
+impl Rng {
+    fn below(&mut self, n: usize) -> usize {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 33) as usize % n.max(1)
+    }
+}
+
+/// Mutates the tokens of a valid shader (drop, duplicate, swap, insert
+/// tokens) many times: the parser must terminate without panicking, and
+/// every diagnostic must point inside the input.
+fn mutate_and_parse(src: &str, rounds: usize, seed: u64) {
+    let mut rng = Rng(seed | 1);
+    for v in [Version::V110, Version::V120] {
+        let base = tokens(src, v);
+        let body = &base[..base.len() - 1];
+        for _ in 0..rounds {
+            let mut t: Vec<Token> = body.to_vec();
+            for _ in 0..1 + rng.below(4) {
+                if t.is_empty() {
+                    break;
+                }
+                let i = rng.below(t.len());
+                let j = rng.below(t.len());
+                match rng.below(4) {
+                    0 => {
+                        t.remove(i);
+                    }
+                    1 => {
+                        let x = t[i].clone();
+                        t.insert(j, x);
+                    }
+                    2 => t.swap(i, j),
+                    _ => t.truncate(i),
+                }
+            }
+            let end = src.len() as u32;
+            t.push(Token {
+                kind: TokenKind::Eof,
+                span: Span::new(end, end),
+            });
+            let (_, diags) = parse(&t, v);
+            for d in diags {
+                assert!(d.span.is_some_and(|s| s.end <= end), "{d:?}");
+            }
+        }
+    }
+}
+
+const SAMPLE: &str = "#version 120
+struct Light { vec3 pos; float k[2]; };
+uniform Light lights[4];
+varying vec2 uv;
+invariant gl_Position;
+float[3] w = float[3](1.0, 2.0, 3.0);
+float f(in float x, out vec2 y[2], Light l);
+vec4 shade(const Light l, vec3 n) {
+    float d = max(dot(n, normalize(l.pos)), 0.0);
+    return vec4(d) * (l.k[0] + l.k.length() > 1 ? 1.0 : 0.5);
+}
+void main() {
+    Light L = Light(vec3(1.0), float[2](0.0, 1.0));
+    for (int i = 0; i < 4; ++i) { if (i == 2) continue; else L.pos += lights[i].pos; }
+    while (bool b = L.pos.x > 0.0) { L.pos.x -= 1.0; }
+    do { L.pos.y++; } while (L.pos.y < 3.0);
+    { float Light = 1.0; Light *= 2.0; }
+    gl_FragColor = shade(L, vec3(uv, 1.0)) + vec4(w[1], -w[2], !true ? 1.0 : 0.0, 1.0);
+    if (gl_FragColor.a < 0.5) discard;
+}
+";
+
+#[test]
+fn sample_parses_and_mutations_never_panic() {
+    ok(SAMPLE);
+    mutate_and_parse(SAMPLE, 300, 0x5eed);
+}
+
+/// The long version: `cargo test -p shaderbox-glsl mutation_soak -- --ignored`.
+#[test]
+#[ignore]
+fn mutation_soak() {
+    for seed in 1..200 {
+        mutate_and_parse(SAMPLE, 1000, seed);
+    }
 }
