@@ -291,6 +291,135 @@ pub enum ExprKind {
     },
 }
 
+impl Expr {
+    /// Calls `f` on each direct sub-expression, in evaluation order.
+    pub fn for_each_child<'a>(&'a self, mut f: impl FnMut(&'a Expr)) {
+        match &self.kind {
+            ExprKind::Const(_) | ExprKind::Global(_) | ExprKind::Local(_) => {}
+            ExprKind::Index { base, index } => {
+                f(base);
+                f(index);
+            }
+            ExprKind::Swizzle { base, .. } | ExprKind::Member { base, .. } => f(base),
+            ExprKind::Unary { operand, .. } | ExprKind::Convert { operand } => f(operand),
+            ExprKind::Binary { left, right, .. } | ExprKind::Comma { left, right } => {
+                f(left);
+                f(right);
+            }
+            ExprKind::Ternary {
+                cond,
+                accept,
+                reject,
+            } => {
+                f(cond);
+                f(accept);
+                f(reject);
+            }
+            ExprKind::Assign { target, value, .. } => {
+                f(target);
+                f(value);
+            }
+            ExprKind::IncDec { target, .. } => f(target),
+            ExprKind::Call { args, .. }
+            | ExprKind::Builtin { args, .. }
+            | ExprKind::Construct { args } => args.iter().for_each(f),
+        }
+    }
+
+    /// [`Expr::for_each_child`] with mutable access.
+    pub fn for_each_child_mut(&mut self, mut f: impl FnMut(&mut Expr)) {
+        match &mut self.kind {
+            ExprKind::Const(_) | ExprKind::Global(_) | ExprKind::Local(_) => {}
+            ExprKind::Index { base, index } => {
+                f(base);
+                f(index);
+            }
+            ExprKind::Swizzle { base, .. } | ExprKind::Member { base, .. } => f(base),
+            ExprKind::Unary { operand, .. } | ExprKind::Convert { operand } => f(operand),
+            ExprKind::Binary { left, right, .. } | ExprKind::Comma { left, right } => {
+                f(left);
+                f(right);
+            }
+            ExprKind::Ternary {
+                cond,
+                accept,
+                reject,
+            } => {
+                f(cond);
+                f(accept);
+                f(reject);
+            }
+            ExprKind::Assign { target, value, .. } => {
+                f(target);
+                f(value);
+            }
+            ExprKind::IncDec { target, .. } => f(target),
+            ExprKind::Call { args, .. }
+            | ExprKind::Builtin { args, .. }
+            | ExprKind::Construct { args } => args.iter_mut().for_each(f),
+        }
+    }
+}
+
+/// Calls `f` on each expression directly held by the statements of
+/// `block`, recursing into nested blocks (not into expressions).
+pub fn for_each_block_expr<'a>(block: &'a Block, f: &mut impl FnMut(&'a Expr)) {
+    for s in block {
+        match s {
+            Stmt::Expr(e) | Stmt::Return(Some(e), _) => f(e),
+            Stmt::Declare { init: Some(e), .. } => f(e),
+            Stmt::Block(b) => for_each_block_expr(b, f),
+            Stmt::If {
+                cond, then, else_, ..
+            } => {
+                f(cond);
+                for_each_block_expr(then, f);
+                for_each_block_expr(else_, f);
+            }
+            Stmt::Loop {
+                body, continuing, ..
+            } => {
+                for_each_block_expr(body, f);
+                for_each_block_expr(continuing, f);
+            }
+            Stmt::Declare { init: None, .. }
+            | Stmt::Return(None, _)
+            | Stmt::Break(_)
+            | Stmt::Continue(_)
+            | Stmt::Discard(_) => {}
+        }
+    }
+}
+
+/// [`for_each_block_expr`] with mutable access.
+pub fn for_each_block_expr_mut(block: &mut Block, f: &mut impl FnMut(&mut Expr)) {
+    for s in block {
+        match s {
+            Stmt::Expr(e) | Stmt::Return(Some(e), _) => f(e),
+            Stmt::Declare { init: Some(e), .. } => f(e),
+            Stmt::Block(b) => for_each_block_expr_mut(b, f),
+            Stmt::If {
+                cond, then, else_, ..
+            } => {
+                f(cond);
+                for_each_block_expr_mut(then, f);
+                for_each_block_expr_mut(else_, f);
+            }
+            Stmt::Loop {
+                body, continuing, ..
+            } => {
+                for_each_block_expr_mut(body, f);
+                for_each_block_expr_mut(continuing, f);
+            }
+            Stmt::Declare { init: None, .. }
+            | Stmt::Return(None, _)
+            | Stmt::Break(_)
+            | Stmt::Continue(_)
+            | Stmt::Discard(_) => {}
+        }
+    }
+}
+
 /// Behaviour requested by an `#extension` directive.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum ExtensionBehavior {

@@ -129,6 +129,9 @@ pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
             }
         }
     }
+    // In source order, as a reader goes through the shader (parse errors
+    // and analysis errors otherwise come in two runs).
+    diagnostics.sort_by_key(|d| d.span.map_or(u32::MAX, |s| s.start));
     Shader {
         stage: opts.stage,
         source,

@@ -12,7 +12,7 @@
 
 use crate::diag::{render_info_log, Code, Diagnostic};
 use crate::ir::{
-    Block, ConstValue, Expr, ExprKind, Function, FunctionId, Global, GlobalId, Module, Stage, Stmt,
+    self, Block, ConstValue, Expr, ExprKind, Function, FunctionId, Global, GlobalId, Module, Stage,
     Storage,
 };
 use crate::limits;
@@ -83,6 +83,18 @@ pub fn link(shaders: &[&Shader]) -> Program {
             );
         }
     }
+    // How messages name a shader object: its name, or its index.
+    let names: Vec<String> = shaders
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            if s.source.name.is_empty() || s.source.name == "<shader>" {
+                format!("shader {i}")
+            } else {
+                format!("`{}'", s.source.name)
+            }
+        })
+        .collect();
     if diags.is_empty() {
         for stage in [Stage::Vertex, Stage::Fragment] {
             let objects: Vec<(usize, &Module)> = shaders
@@ -94,7 +106,7 @@ pub fn link(shaders: &[&Shader]) -> Program {
             if objects.is_empty() {
                 continue;
             }
-            if let Some(linked) = merge_stage(stage, &objects, &mut diags) {
+            if let Some(linked) = merge_stage(stage, &objects, &names, &mut diags) {
                 check_limits(&linked, &mut diags);
                 program.stages.push(linked);
             }
@@ -167,133 +179,31 @@ fn remap_expr(e: &mut Expr, map: &Remap) {
     match &mut e.kind {
         ExprKind::Const(v) => remap_const(v, map),
         ExprKind::Global(g) => *g = map.globals.get(g.0 as usize).copied().unwrap_or(*g),
-        ExprKind::Local(_) => {}
-        ExprKind::Index { base, index } => {
-            remap_expr(base, map);
-            remap_expr(index, map);
-        }
-        ExprKind::Swizzle { base, .. } | ExprKind::Member { base, .. } => remap_expr(base, map),
-        ExprKind::Unary { operand, .. } | ExprKind::Convert { operand } => remap_expr(operand, map),
-        ExprKind::Binary { left, right, .. } | ExprKind::Comma { left, right } => {
-            remap_expr(left, map);
-            remap_expr(right, map);
-        }
-        ExprKind::Ternary {
-            cond,
-            accept,
-            reject,
-        } => {
-            remap_expr(cond, map);
-            remap_expr(accept, map);
-            remap_expr(reject, map);
-        }
-        ExprKind::Assign { target, value, .. } => {
-            remap_expr(target, map);
-            remap_expr(value, map);
-        }
-        ExprKind::IncDec { target, .. } => remap_expr(target, map),
-        ExprKind::Call { function, args } => {
+        ExprKind::Call { function, .. } => {
             *function = map
                 .functions
                 .get(function.0 as usize)
                 .copied()
-                .unwrap_or(*function);
-            args.iter_mut().for_each(|a| remap_expr(a, map));
+                .unwrap_or(*function)
         }
-        ExprKind::Builtin { args, .. } | ExprKind::Construct { args } => {
-            args.iter_mut().for_each(|a| remap_expr(a, map))
-        }
+        _ => {}
     }
+    e.for_each_child_mut(|c| remap_expr(c, map));
 }
 
 fn remap_block(b: &mut Block, map: &Remap) {
-    for s in b {
-        match s {
-            Stmt::Expr(e) => remap_expr(e, map),
-            Stmt::Declare { init, .. } => {
-                if let Some(e) = init {
-                    remap_expr(e, map)
-                }
-            }
-            Stmt::Block(b) => remap_block(b, map),
-            Stmt::If {
-                cond, then, else_, ..
-            } => {
-                remap_expr(cond, map);
-                remap_block(then, map);
-                remap_block(else_, map);
-            }
-            Stmt::Loop {
-                body, continuing, ..
-            } => {
-                remap_block(body, map);
-                remap_block(continuing, map);
-            }
-            Stmt::Return(Some(e), _) => remap_expr(e, map),
-            Stmt::Return(None, _) | Stmt::Break(_) | Stmt::Continue(_) | Stmt::Discard(_) => {}
-        }
-    }
+    ir::for_each_block_expr_mut(b, &mut |e| remap_expr(e, map));
 }
 
 /// Calls made anywhere in a block.
 fn collect_calls(b: &Block, out: &mut BTreeSet<FunctionId>) {
     fn expr(e: &Expr, out: &mut BTreeSet<FunctionId>) {
-        match &e.kind {
-            ExprKind::Const(_) | ExprKind::Global(_) | ExprKind::Local(_) => {}
-            ExprKind::Index { base, index } => {
-                expr(base, out);
-                expr(index, out);
-            }
-            ExprKind::Swizzle { base, .. } | ExprKind::Member { base, .. } => expr(base, out),
-            ExprKind::Unary { operand, .. } | ExprKind::Convert { operand } => expr(operand, out),
-            ExprKind::Binary { left, right, .. } | ExprKind::Comma { left, right } => {
-                expr(left, out);
-                expr(right, out);
-            }
-            ExprKind::Ternary {
-                cond,
-                accept,
-                reject,
-            } => {
-                expr(cond, out);
-                expr(accept, out);
-                expr(reject, out);
-            }
-            ExprKind::Assign { target, value, .. } => {
-                expr(target, out);
-                expr(value, out);
-            }
-            ExprKind::IncDec { target, .. } => expr(target, out),
-            ExprKind::Call { function, args } => {
-                out.insert(*function);
-                args.iter().for_each(|a| expr(a, out));
-            }
-            ExprKind::Builtin { args, .. } | ExprKind::Construct { args } => {
-                args.iter().for_each(|a| expr(a, out))
-            }
+        if let ExprKind::Call { function, .. } = &e.kind {
+            out.insert(*function);
         }
+        e.for_each_child(|c| expr(c, out));
     }
-    for s in b {
-        match s {
-            Stmt::Expr(e) | Stmt::Return(Some(e), _) => expr(e, out),
-            Stmt::Declare { init: Some(e), .. } => expr(e, out),
-            Stmt::Block(b) => collect_calls(b, out),
-            Stmt::If {
-                cond, then, else_, ..
-            } => {
-                expr(cond, out);
-                collect_calls(then, out);
-                collect_calls(else_, out);
-            }
-            Stmt::Loop {
-                body, continuing, ..
-            } => {
-                collect_calls(body, out);
-                collect_calls(continuing, out);
-            }
-            _ => {}
-        }
-    }
+    ir::for_each_block_expr(b, &mut |e| expr(e, out));
 }
 
 /// Two struct definitions are the same type if names, member names and
@@ -324,6 +234,7 @@ fn compatible_types(a: Type, b: Type) -> bool {
 fn merge_stage(
     stage: Stage,
     objects: &[(usize, &Module)],
+    names: &[String],
     diags: &mut Vec<LinkDiagnostic>,
 ) -> Option<LinkedStage> {
     let first = objects[0].1;
@@ -394,11 +305,10 @@ fn merge_stage(
                             Code::LinkInterfaceMismatch,
                             g.span,
                             format!(
-                                "`{}' is declared as {} here but differently in {} shader {}",
+                                "`{}' is declared as {} here but differently in {}",
                                 g.name,
                                 m.type_name(g.ty),
-                                stage.name(),
-                                other
+                                names[other]
                             ),
                         ),
                     });
@@ -478,11 +388,11 @@ fn merge_stage(
                                 code,
                                 f.span,
                                 format!(
-                                    "function `{}' is defined in two {} shaders ({} and {})",
+                                    "function `{}' is defined in two {} shader objects, {} and {}",
                                     f.name,
                                     stage.name(),
-                                    prev,
-                                    obj
+                                    names[prev],
+                                    names[*obj]
                                 ),
                             )
                             .with_note("a function may be declared in many shader objects but defined in only one"),

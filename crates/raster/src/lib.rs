@@ -1,1 +1,135 @@
-//! The GL 2.1 primitive pipeline (being written; see docs/ARCHITECTURE.md).
+//! The GL 2.1 primitive pipeline on the CPU: vertex fetch, primitive
+//! assembly, clipping, rasterization, interpolation, per-fragment
+//! operations, framebuffers and texture sampling.
+//!
+//! # Contract
+//! [`draw`] runs the vertex kernel once per distinct index (batches of
+//! `exec::LANES` vertices), assembles primitives for every [`Mode`], clips
+//! them in clip space against the view volume and the enabled user clip
+//! planes (GL 2.1 §2.12), maps them to window space (§2.11), determines
+//! facing from the window-space area (§3.5.1), culls, and rasterizes
+//! (fill, line or point polygon modes). Fragments are shaded in 2×2 quads,
+//! four quads per `exec::Batch`, and go through the GL 2.1 §4.1
+//! per-fragment operations in primitive order. The framebuffer is
+//! processed in 64×64 tiles, each seeing the primitives in draw order.
+//! Results are bit-identical on every machine: f64/f32 IEEE arithmetic
+//! without fused operations, `glsl::math` for the few functions needed,
+//! fixed iteration orders.
+//!
+//! Vertex → fragment linkage is by name (user varyings, gl_TexCoord,
+//! gl_FogFragCoord); gl_Color / gl_SecondaryColor come from
+//! gl_FrontColor / gl_FrontSecondaryColor, or from the back colors for
+//! back-facing polygons when `two_sided_color` is on. Vertex colors are
+//! clamped to [0, 1] (§2.14.6). Flat shading applies to those two colors
+//! only and uses the provoking vertex of GL 2.1 table 2.12 (last vertex of
+//! lines, triangles and quads; first of a GL_POLYGON).
+//!
+//! Textures ([`Texture`], [`TextureUnits`]) implement `exec::Textures`
+//! following GL 2.1 §3.8.
+//!
+//! # Limitations and choices where GL leaves things undefined
+//! - When the vertex shader does not write gl_ClipVertex, user clip planes
+//!   are evaluated against gl_Position (GL 2.1 §2.12 leaves it undefined).
+//! - Polygons in line or point mode draw the edges / vertices of the
+//!   unclipped polygon (clipped as lines / points); no edges appear along
+//!   clip boundaries.
+//! - Lines use a "center in half-open span" rule that agrees with the
+//!   diamond-exit rule except at some endpoints; no antialiasing,
+//!   stippling or multisampling. Points ignore distance attenuation.
+//! - No texture borders (border width 0; the border color is used).
+//! - Depth buffers are 24-bit fixed point, stencil 8 bits; color buffers
+//!   are RGBA8 unorm or RGBA32F. Dithering is off.
+//! - Fragment outputs that the shader never writes are written as zeros.
+
+mod clip;
+#[cfg(test)]
+mod draw_tests;
+mod fragment_ops;
+mod framebuffer;
+mod linkage;
+mod pipeline;
+mod rasterize;
+mod shade;
+mod state;
+mod texture;
+
+#[cfg(test)]
+mod e2e_tests;
+pub(crate) use ::exec as ex;
+
+pub use framebuffer::{
+    depth_to_fixed, fixed_to_depth, float_to_unorm8, unorm8_to_float, ColorBuffer, ColorFormat,
+    Framebuffer, DEPTH_MAX, MAX_DRAW_BUFFERS, MAX_FRAMEBUFFER_SIZE,
+};
+pub use pipeline::{draw_stages, Mode, VertexFetch, MAX_POINT_SIZE, TILE};
+pub use rasterize::SUBPIXEL_BITS;
+pub use state::{
+    Blend, BlendEquation, BlendFactor, CompareFunc, CullFace, FrontFace, LogicOp, PipelineState,
+    PolygonMode, PolygonOffset, Rect, StencilFace, StencilOp, StencilState,
+};
+pub use texture::{
+    DepthTextureMode, Image, MagFilter, MinFilter, Texture, TextureTarget, TextureUnit,
+    TextureUnits, Wrap,
+};
+
+/// Why a draw stopped. Fragments written before the error stay written.
+#[derive(Debug, thiserror::Error)]
+pub enum DrawError {
+    #[error(transparent)]
+    Exec(#[from] ex::ExecError),
+}
+
+/// A shader stage the pipeline can run: `exec::Kernel`, or anything else
+/// with the same interface (tests use hand-written stages).
+pub trait ShaderStage {
+    fn interface(&self) -> &ex::Interface;
+    fn run(
+        &self,
+        batch: &mut ex::Batch,
+        uniforms: &[u32],
+        textures: &dyn ex::Textures,
+    ) -> Result<(), ex::ExecError>;
+}
+
+impl ShaderStage for ex::Kernel {
+    fn interface(&self) -> &ex::Interface {
+        ex::Kernel::interface(self)
+    }
+    fn run(
+        &self,
+        batch: &mut ex::Batch,
+        uniforms: &[u32],
+        textures: &dyn ex::Textures,
+    ) -> Result<(), ex::ExecError> {
+        ex::Kernel::run(self, batch, uniforms, textures)
+    }
+}
+
+/// Draws `indices` (vertex numbers passed to `fetch`) as `mode` primitives
+/// into `fb`. See the crate documentation for the pipeline.
+#[allow(clippy::too_many_arguments)]
+pub fn draw(
+    fb: &mut Framebuffer,
+    state: &PipelineState,
+    vs: &ex::Kernel,
+    vs_uniforms: &[u32],
+    fs: &ex::Kernel,
+    fs_uniforms: &[u32],
+    mode: Mode,
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    textures: &dyn ex::Textures,
+) -> Result<(), DrawError> {
+    draw_stages(
+        fb,
+        state,
+        vs,
+        vs_uniforms,
+        fs,
+        fs_uniforms,
+        mode,
+        indices,
+        fetch,
+        textures,
+    )
+}

@@ -84,6 +84,9 @@ pub(super) struct Parser<'t> {
     aborted: bool,
     /// End offset of the last token consumed.
     prev_end: u32,
+    /// The closing brace of the function defined just before, if the last
+    /// external declaration was a function definition.
+    last_function_end: Option<crate::source::Span>,
 }
 
 impl<'t> Parser<'t> {
@@ -98,6 +101,7 @@ impl<'t> Parser<'t> {
             recovering: false,
             aborted: false,
             prev_end: toks.first().map_or(0, |t| t.span.start),
+            last_function_end: None,
         }
     }
 
@@ -392,9 +396,32 @@ impl<'t> Parser<'t> {
             return Err(self.unexpected_with_note("declaration", "remove the extra `;'"));
         }
         if !self.at_declaration_keyword_or_type() {
-            return Err(self.unexpected("declaration"));
+            let after_function = self.last_function_end;
+            let before = self.diags.len();
+            let r = self.unexpected("declaration");
+            if let (Some(end), Some(d)) = (after_function, self.diags.get_mut(before)) {
+                // Statements right after a function body: most often an
+                // extra `}' closed the function early.
+                d.labels.push(crate::diag::Label {
+                    span: end,
+                    message: "the function body ends here".into(),
+                });
+                d.notes.push(
+                    "statements must be inside a function body; check the braces before this \
+                     line: an extra `}' may have closed the function too early"
+                        .into(),
+                );
+            }
+            return Err(r);
         }
-        self.declaration(true)
+        let item = self.declaration(true)?;
+        if let ExternalDecl::FunctionDef(f) = &item {
+            self.last_function_end = Some(crate::source::Span::new(
+                f.span.end.saturating_sub(1),
+                f.span.end,
+            ));
+        }
+        Ok(item)
     }
 }
 

@@ -374,6 +374,31 @@ impl Analyzer {
                 .push(note);
             return;
         }
+        if function {
+            // GLSL 1.20 §6.1: a function must be declared before it is
+            // called; a definition further down does not count.
+            let later = self
+                .declared_functions
+                .iter()
+                .find(|(n, s)| *n == name.name && s.start > name.span.start)
+                .map(|(_, s)| *s);
+            if let Some(later) = later {
+                let d = self.error(
+                    Code::Undeclared,
+                    name.span,
+                    format!("function `{}' is called before it is declared", name.name),
+                );
+                d.labels.push(crate::diag::Label {
+                    span: later,
+                    message: "declared here, after the call".into(),
+                });
+                d.notes.push(format!(
+                    "GLSL requires a declaration before a call: move the function up, or add its prototype (`... {}(...);') above the first call",
+                    name.name
+                ));
+                return;
+            }
+        }
         let names = self.visible_names();
         let sugg = did_you_mean(&name.name, names.iter().map(|s| s.as_str())).map(str::to_string);
         let d = self.error(
@@ -383,6 +408,11 @@ impl Analyzer {
         );
         if let Some(s) = sugg {
             d.notes.push(format!("did you mean `{s}'?"));
+        } else if function {
+            d.notes.push(format!(
+                "declare it before the call; if another shader object defines it, a prototype is enough: `... {}(...);'",
+                name.name
+            ));
         }
     }
 

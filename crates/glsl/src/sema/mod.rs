@@ -24,7 +24,7 @@ mod scope;
 mod stmt;
 mod types;
 
-use crate::ast::TranslationUnit;
+use crate::ast::{self, TranslationUnit};
 use crate::builtins::BuiltinFn;
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{
@@ -57,6 +57,16 @@ pub fn analyze(tu: &TranslationUnit, ctx: &Context) -> (Module, Vec<Diagnostic>)
         .extensions
         .iter()
         .map(|e| (e.name.clone(), e.behavior))
+        .collect();
+    a.declared_functions = tu
+        .items
+        .iter()
+        .filter_map(|item| match item {
+            ast::ExternalDecl::FunctionDef(f) => Some(&f.proto.name),
+            ast::ExternalDecl::Declaration(ast::Declaration::Prototype(p)) => Some(&p.name),
+            _ => None,
+        })
+        .map(|n| (n.name.clone(), n.span))
         .collect();
     a.translation_unit(tu);
     a.finish()
@@ -217,6 +227,9 @@ pub(crate) struct Analyzer {
     pub frag_data_write: Option<Span>,
     /// Expression nesting depth (bounded by `limits::MAX_NESTING_DEPTH`).
     pub depth: u32,
+    /// Every function the translation unit declares or defines, with where:
+    /// lets "undeclared function" say when the function comes later.
+    pub declared_functions: Vec<(SmolStr, Span)>,
 }
 
 impl Analyzer {
@@ -243,6 +256,7 @@ impl Analyzer {
             frag_color_write: None,
             frag_data_write: None,
             depth: 0,
+            declared_functions: Vec::new(),
         }
     }
 

@@ -1,0 +1,277 @@
+//! Clipping in clip space (GL 2.1 §2.12): against the view volume
+//! `-w <= x, y, z <= w` and the enabled user clip planes, evaluated on the
+//! eye-space clip vertex. Every vertex carries its whole vertex-shader
+//! output vector, interpolated linearly in clip space.
+//!
+//! New vertices on an edge are always computed from the inside vertex
+//! towards the outside one, so an edge shared by two primitives is cut at
+//! bit-identical points whatever the primitives' winding.
+
+/// A vertex during clipping.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct ClipVertex {
+    /// gl_Position.
+    pub pos: [f32; 4],
+    /// Eye-space position for the user clip planes.
+    pub eye: [f32; 4],
+    /// All vertex-shader outputs.
+    pub data: Vec<f32>,
+}
+
+/// The clip planes of one draw.
+pub(crate) struct Planes {
+    user: Vec<[f32; 4]>,
+}
+
+const VIEW_PLANES: usize = 6;
+
+impl Planes {
+    pub fn new(user: &[Option<[f32; 4]>; 8]) -> Planes {
+        Planes {
+            user: user.iter().flatten().copied().collect(),
+        }
+    }
+
+    fn count(&self) -> usize {
+        VIEW_PLANES + self.user.len()
+    }
+
+    /// Signed distance of `v` to plane `p` (inside when >= 0; NaN is outside).
+    fn distance(&self, p: usize, v: &ClipVertex) -> f32 {
+        let [x, y, z, w] = v.pos;
+        match p {
+            0 => w + x,
+            1 => w - x,
+            2 => w + y,
+            3 => w - y,
+            4 => w + z,
+            5 => w - z,
+            _ => match self.user.get(p - VIEW_PLANES) {
+                Some(pl) => {
+                    pl[0] * v.eye[0] + pl[1] * v.eye[1] + pl[2] * v.eye[2] + pl[3] * v.eye[3]
+                }
+                None => 0.0,
+            },
+        }
+    }
+
+    /// Bit p set when `v` is outside plane p.
+    fn outcode(&self, v: &ClipVertex) -> u32 {
+        let mut code = 0;
+        for p in 0..self.count() {
+            if !inside(self.distance(p, v)) {
+                code |= 1 << p;
+            }
+        }
+        code
+    }
+
+    /// Is a point inside every plane (GL 2.1 §2.12: points are discarded
+    /// when their vertex is outside)?
+    pub fn point_inside(&self, v: &ClipVertex) -> bool {
+        self.outcode(v) == 0
+    }
+
+    /// Clips a line segment; `None` when nothing is left.
+    pub fn clip_line(&self, a: &ClipVertex, b: &ClipVertex) -> Option<(ClipVertex, ClipVertex)> {
+        let (ca, cb) = (self.outcode(a), self.outcode(b));
+        if ca & cb != 0 {
+            return None;
+        }
+        if ca | cb == 0 {
+            return Some((a.clone(), b.clone()));
+        }
+        // Parametric: keep t in [t0, t1] along a → b.
+        let (mut t0, mut t1) = (0.0f32, 1.0f32);
+        for p in 0..self.count() {
+            let (da, db) = (self.distance(p, a), self.distance(p, b));
+            match (inside(da), inside(db)) {
+                (true, true) => {}
+                (false, false) => return None,
+                (true, false) => t1 = t1.min(da / (da - db)),
+                (false, true) => t0 = t0.max(da / (da - db)),
+            }
+        }
+        if t0.is_nan() || t1.is_nan() || t0 > t1 {
+            return None;
+        }
+        let na = if t0 > 0.0 { lerp(a, b, t0) } else { a.clone() };
+        let nb = if t1 < 1.0 { lerp(a, b, t1) } else { b.clone() };
+        Some((na, nb))
+    }
+
+    /// Sutherland–Hodgman clipping of a convex polygon; returns fewer than
+    /// three vertices when nothing is left.
+    pub fn clip_polygon(&self, poly: Vec<ClipVertex>) -> Vec<ClipVertex> {
+        let mut all = 0;
+        let mut any = !0;
+        for v in &poly {
+            let c = self.outcode(v);
+            all |= c;
+            any &= c;
+        }
+        if any != 0 {
+            return Vec::new();
+        }
+        if all == 0 {
+            return poly;
+        }
+        let mut poly = poly;
+        for p in 0..self.count() {
+            if all & (1 << p) == 0 {
+                continue;
+            }
+            let n = poly.len();
+            if n < 3 {
+                return Vec::new();
+            }
+            let dist: Vec<f32> = poly.iter().map(|v| self.distance(p, v)).collect();
+            let mut out = Vec::with_capacity(n + 1);
+            for i in 0..n {
+                let j = (i + 1) % n;
+                let (cur, next) = (&poly[i], &poly[j]);
+                let (dc, dn) = (dist[i], dist[j]);
+                let (ci, ni) = (inside(dc), inside(dn));
+                if ci {
+                    out.push(cur.clone());
+                }
+                if ci != ni {
+                    // From the inside vertex towards the outside one.
+                    let v = if ci {
+                        lerp(cur, next, dc / (dc - dn))
+                    } else {
+                        lerp(next, cur, dn / (dn - dc))
+                    };
+                    out.push(v);
+                }
+            }
+            poly = out;
+        }
+        if poly.len() < 3 {
+            Vec::new()
+        } else {
+            poly
+        }
+    }
+}
+
+fn inside(d: f32) -> bool {
+    d >= 0.0
+}
+
+fn lerp4(a: &[f32; 4], b: &[f32; 4], t: f32) -> [f32; 4] {
+    std::array::from_fn(|i| a[i] + t * (b[i] - a[i]))
+}
+
+/// `a + t (b - a)` for every carried value.
+fn lerp(a: &ClipVertex, b: &ClipVertex, t: f32) -> ClipVertex {
+    ClipVertex {
+        pos: lerp4(&a.pos, &b.pos, t),
+        eye: lerp4(&a.eye, &b.eye, t),
+        data: a
+            .data
+            .iter()
+            .zip(&b.data)
+            .map(|(&x, &y)| x + t * (y - x))
+            .collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(pos: [f32; 4], value: f32) -> ClipVertex {
+        ClipVertex {
+            pos,
+            eye: pos,
+            data: vec![value],
+        }
+    }
+
+    #[test]
+    fn triangle_crossing_the_near_plane() {
+        let planes = Planes::new(&[None; 8]);
+        // One vertex behind the near plane (z < -w).
+        let tri = vec![
+            v([0.0, 0.0, -3.0, 1.0], 0.0),
+            v([0.5, 0.0, 0.0, 1.0], 1.0),
+            v([0.0, 0.5, 0.0, 1.0], 1.0),
+        ];
+        let out = planes.clip_polygon(tri);
+        assert_eq!(out.len(), 4);
+        for c in &out {
+            assert!(c.pos[2] >= -c.pos[3], "{:?}", c.pos);
+        }
+        // The new vertices sit on z = -w, a third of the way from the
+        // inside vertex; the carried value follows.
+        let cut: Vec<_> = out.iter().filter(|c| c.pos[2] == -1.0).collect();
+        assert_eq!(cut.len(), 2);
+        for c in cut {
+            assert!((c.data[0] - 2.0 / 3.0).abs() < 1e-6);
+        }
+    }
+
+    #[test]
+    fn fully_outside_and_inside() {
+        let planes = Planes::new(&[None; 8]);
+        let outside = vec![
+            v([2.0, 0.0, 0.0, 1.0], 0.0),
+            v([3.0, 0.0, 0.0, 1.0], 0.0),
+            v([2.0, 1.0, 0.0, 1.0], 0.0),
+        ];
+        assert!(planes.clip_polygon(outside).is_empty());
+        let inside = vec![
+            v([0.0, 0.0, 0.0, 1.0], 0.0),
+            v([0.5, 0.0, 0.0, 1.0], 0.0),
+            v([0.0, 0.5, 0.0, 1.0], 0.0),
+        ];
+        assert_eq!(planes.clip_polygon(inside.clone()), inside);
+    }
+
+    #[test]
+    fn user_plane_uses_eye_coordinates() {
+        let mut user = [None; 8];
+        user[3] = Some([1.0, 0.0, 0.0, 0.0]); // keep x_eye >= 0
+        let planes = Planes::new(&user);
+        let mut a = v([0.0, 0.0, 0.0, 1.0], 0.0);
+        a.eye = [-1.0, 0.0, 0.0, 1.0];
+        let mut b = v([0.0, 0.0, 0.0, 1.0], 1.0);
+        b.eye = [3.0, 0.0, 0.0, 1.0];
+        let (na, nb) = planes.clip_line(&a, &b).unwrap();
+        assert_eq!(na.eye[0], 0.0);
+        assert_eq!(na.data[0], 0.25);
+        assert_eq!(nb, b);
+        assert!(!planes.point_inside(&a));
+        assert!(planes.point_inside(&b));
+    }
+
+    #[test]
+    fn shared_edge_cut_identically() {
+        let planes = Planes::new(&[None; 8]);
+        let p = [
+            v([-2.0, -0.5, 0.0, 1.0], 0.0),
+            v([0.5, 0.7, 0.1, 1.0], 1.0),
+            v([0.3, -0.9, 0.2, 1.0], 2.0),
+            v([-3.0, 0.9, 0.3, 1.0], 3.0),
+        ];
+        // Triangles (0,1,2) and (1,0,3) share edge 0-1 in opposite directions.
+        let t1 = planes.clip_polygon(vec![p[0].clone(), p[1].clone(), p[2].clone()]);
+        let t2 = planes.clip_polygon(vec![p[1].clone(), p[0].clone(), p[3].clone()]);
+        let on_edge = |t: &[ClipVertex]| -> Vec<[f32; 4]> {
+            t.iter()
+                .filter(|c| c.pos[0] == -1.0 && c.data[0] <= 1.0)
+                .map(|c| c.pos)
+                .collect()
+        };
+        let (e1, e2) = (on_edge(&t1), on_edge(&t2));
+        assert_eq!(e1.len(), 1);
+        assert_eq!(e1, e2);
+    }
+
+    #[test]
+    fn nan_is_outside() {
+        let planes = Planes::new(&[None; 8]);
+        assert!(!planes.point_inside(&v([f32::NAN, 0.0, 0.0, 1.0], 0.0)));
+    }
+}

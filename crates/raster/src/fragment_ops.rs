@@ -1,0 +1,549 @@
+//! Per-fragment operations in GL 2.1 §4.1 order: pixel ownership, scissor,
+//! alpha test, stencil test, depth test, blending, (dithering: off),
+//! logic op, then the masked write to each draw buffer.
+
+use crate::framebuffer::{depth_to_fixed, float_to_unorm8, unorm8_to_float, ColorBuffer};
+use crate::framebuffer::{Framebuffer, MAX_DRAW_BUFFERS};
+use crate::state::{Blend, BlendEquation, BlendFactor, PipelineState, StencilFace, StencilOp};
+
+/// One shaded fragment ready for the per-fragment operations.
+pub(crate) struct Fragment {
+    pub x: u32,
+    pub y: u32,
+    /// Window z, already clamped to [0, 1].
+    pub z: f32,
+    /// Selects the back stencil state (polygons only).
+    pub back_facing: bool,
+    /// Color of fragment output `i` (gl_FragData[i], or gl_FragColor for
+    /// every `i`).
+    pub colors: [[f32; 4]; MAX_DRAW_BUFFERS],
+}
+
+fn stencil_face(state: &PipelineState, back: bool) -> Option<StencilFace> {
+    state.stencil.map(|s| if back { s.back } else { s.front })
+}
+
+fn stencil_ref(face: &StencilFace) -> u8 {
+    face.reference.clamp(0, 255) as u8
+}
+
+/// GL 2.1 §4.1.5: `(ref & mask) func (stored & mask)`.
+pub(crate) fn stencil_test(face: &StencilFace, stored: u8) -> bool {
+    let m = face.value_mask as u8;
+    face.func.test(stencil_ref(face) & m, stored & m)
+}
+
+/// The stencil value after `op` (before the write mask).
+pub(crate) fn stencil_op(op: StencilOp, stored: u8, reference: u8) -> u8 {
+    match op {
+        StencilOp::Keep => stored,
+        StencilOp::Zero => 0,
+        StencilOp::Replace => reference,
+        StencilOp::Incr => stored.saturating_add(1),
+        StencilOp::Decr => stored.saturating_sub(1),
+        StencilOp::Invert => !stored,
+        StencilOp::IncrWrap => stored.wrapping_add(1),
+        StencilOp::DecrWrap => stored.wrapping_sub(1),
+    }
+}
+
+fn op_has_effect(face: &StencilFace, op: StencilOp) -> bool {
+    op != StencilOp::Keep && face.write_mask as u8 != 0
+}
+
+/// For early depth testing: true when the fragment at `index` with fixed
+/// depth `zf` will certainly be dropped by the stencil or depth test
+/// *without any side effect*, whatever the fragment shader produces
+/// (the shader does not write gl_FragDepth). Such lanes need no shading;
+/// everything else goes through [`process`] after shading, so results are
+/// identical to late testing.
+pub(crate) fn early_reject(
+    fb: &Framebuffer,
+    state: &PipelineState,
+    index: usize,
+    zf: u32,
+    back: bool,
+) -> bool {
+    let face = match (stencil_face(state, back), fb.stencil.as_ref()) {
+        (Some(face), Some(s)) => {
+            let stored = s.get(index).copied().unwrap_or(0);
+            if !stencil_test(&face, stored) {
+                return !op_has_effect(&face, face.fail);
+            }
+            Some(face)
+        }
+        _ => None,
+    };
+    if let (Some(func), Some(d)) = (state.depth_test, fb.depth.as_ref()) {
+        let stored = d.get(index).copied().unwrap_or(0);
+        if !func.test(zf, stored) {
+            return !matches!(face, Some(f) if op_has_effect(&f, f.depth_fail));
+        }
+    }
+    false
+}
+
+/// Runs the per-fragment operations for one fragment and writes the
+/// result. Fragments outside the framebuffer or the scissor box are dropped.
+pub(crate) fn process(fb: &mut Framebuffer, state: &PipelineState, frag: &Fragment) {
+    if frag.x >= fb.width || frag.y >= fb.height {
+        return;
+    }
+    if let Some(sc) = state.scissor {
+        let (x, y) = (frag.x as i64, frag.y as i64);
+        if x < sc.x as i64
+            || y < sc.y as i64
+            || x >= sc.x as i64 + sc.w as i64
+            || y >= sc.y as i64 + sc.h as i64
+        {
+            return;
+        }
+    }
+    let index = frag.y as usize * fb.width as usize + frag.x as usize;
+    let clamp = state.clamp_fragment_color;
+
+    // §4.1.4 alpha test on fragment output 0's alpha.
+    if let Some((func, reference)) = state.alpha_test {
+        let a = frag.colors[0][3];
+        let a = if clamp { clamp01(a) } else { a };
+        if !func.test(a, clamp01(reference)) {
+            return;
+        }
+    }
+
+    // §4.1.5 stencil test and §4.1.6 depth test.
+    let zf = depth_to_fixed(frag.z);
+    let face = if fb.stencil.is_some() {
+        stencil_face(state, frag.back_facing)
+    } else {
+        None
+    };
+    let stored_stencil = fb
+        .stencil
+        .as_ref()
+        .and_then(|s| s.get(index))
+        .copied()
+        .unwrap_or(0);
+    if let Some(face) = face {
+        if !stencil_test(&face, stored_stencil) {
+            write_stencil(fb, index, &face, face.fail, stored_stencil);
+            return;
+        }
+    }
+    let depth_pass = match (state.depth_test, fb.depth.as_mut()) {
+        (Some(func), Some(d)) => match d.get_mut(index) {
+            Some(stored) => {
+                let pass = func.test(zf, *stored);
+                if pass && state.depth_mask {
+                    *stored = zf;
+                }
+                pass
+            }
+            None => true,
+        },
+        _ => true,
+    };
+    if let Some(face) = face {
+        let op = if depth_pass {
+            face.depth_pass
+        } else {
+            face.depth_fail
+        };
+        write_stencil(fb, index, &face, op, stored_stencil);
+    }
+    if !depth_pass {
+        return;
+    }
+
+    // §4.1.8 blending, §4.1.10 logic op, §4.2.2 masks.
+    for (output, target) in state.draw_buffers.iter().enumerate() {
+        let Some(target) = *target else { continue };
+        let Some(src) = frag.colors.get(output) else {
+            continue;
+        };
+        let Some(buf) = fb.color.get_mut(target) else {
+            continue;
+        };
+        write_color(buf, index, state, *src);
+    }
+}
+
+fn write_stencil(fb: &mut Framebuffer, index: usize, face: &StencilFace, op: StencilOp, old: u8) {
+    let new = stencil_op(op, old, stencil_ref(face));
+    let m = face.write_mask as u8;
+    if let Some(p) = fb.stencil.as_mut().and_then(|s| s.get_mut(index)) {
+        *p = (old & !m) | (new & m);
+    }
+}
+
+fn clamp01(x: f32) -> f32 {
+    if x > 0.0 {
+        x.min(1.0)
+    } else {
+        0.0
+    }
+}
+
+fn write_color(buf: &mut ColorBuffer, index: usize, state: &PipelineState, src: [f32; 4]) {
+    let mask = state.color_mask;
+    match buf {
+        ColorBuffer::Rgba8(v) => {
+            let Some(p) = v.get_mut(index) else { return };
+            // Fixed-point buffers always see clamped colors (§4.1.8).
+            let s = src.map(clamp01);
+            let out: [u8; 4] = if let Some(op) = state.logic_op {
+                let sb = s.map(float_to_unorm8);
+                std::array::from_fn(|c| op.apply(sb[c], p[c]))
+            } else if let Some(blend) = &state.blend {
+                let d = p.map(unorm8_to_float);
+                blend_color(blend, s, d).map(float_to_unorm8)
+            } else {
+                s.map(float_to_unorm8)
+            };
+            for c in 0..4 {
+                if mask[c] {
+                    p[c] = out[c];
+                }
+            }
+        }
+        ColorBuffer::Rgba32F(v) => {
+            let Some(p) = v.get_mut(index) else { return };
+            let s = if state.clamp_fragment_color {
+                src.map(clamp01)
+            } else {
+                src
+            };
+            // Logic ops do not apply to float buffers (§4.1.10).
+            let out = match &state.blend {
+                Some(blend) if state.logic_op.is_none() => blend_color(blend, s, *p),
+                _ => s,
+            };
+            for c in 0..4 {
+                if mask[c] {
+                    p[c] = out[c];
+                }
+            }
+        }
+    }
+}
+
+/// GL 2.1 §4.1.8 blend of source `s` over destination `d`
+/// (table 4.1 equations, table 4.2 factors).
+pub(crate) fn blend_color(b: &Blend, s: [f32; 4], d: [f32; 4]) -> [f32; 4] {
+    let factor = |f: BlendFactor, c: usize| -> f32 {
+        let k = b.color;
+        match f {
+            BlendFactor::Zero => 0.0,
+            BlendFactor::One => 1.0,
+            BlendFactor::SrcColor => s[c],
+            BlendFactor::OneMinusSrcColor => 1.0 - s[c],
+            BlendFactor::DstColor => d[c],
+            BlendFactor::OneMinusDstColor => 1.0 - d[c],
+            BlendFactor::SrcAlpha => s[3],
+            BlendFactor::OneMinusSrcAlpha => 1.0 - s[3],
+            BlendFactor::DstAlpha => d[3],
+            BlendFactor::OneMinusDstAlpha => 1.0 - d[3],
+            BlendFactor::ConstantColor => k[c],
+            BlendFactor::OneMinusConstantColor => 1.0 - k[c],
+            BlendFactor::ConstantAlpha => k[3],
+            BlendFactor::OneMinusConstantAlpha => 1.0 - k[3],
+            BlendFactor::SrcAlphaSaturate => {
+                if c == 3 {
+                    1.0
+                } else {
+                    glsl::math::min(s[3], 1.0 - d[3])
+                }
+            }
+        }
+    };
+    std::array::from_fn(|c| {
+        let (eq, sf, df) = if c < 3 {
+            (b.equation_rgb, b.src_rgb, b.dst_rgb)
+        } else {
+            (b.equation_alpha, b.src_alpha, b.dst_alpha)
+        };
+        match eq {
+            BlendEquation::Add => s[c] * factor(sf, c) + d[c] * factor(df, c),
+            BlendEquation::Subtract => s[c] * factor(sf, c) - d[c] * factor(df, c),
+            BlendEquation::ReverseSubtract => d[c] * factor(df, c) - s[c] * factor(sf, c),
+            BlendEquation::Min => glsl::math::min(s[c], d[c]),
+            BlendEquation::Max => glsl::math::max(s[c], d[c]),
+        }
+    })
+}
+
+/// Depth test helper used by tests: does `z` pass `func` against `stored`?
+#[cfg(test)]
+fn depth_passes(func: crate::state::CompareFunc, z: f32, stored: f32) -> bool {
+    func.test(depth_to_fixed(z), depth_to_fixed(stored))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::framebuffer::ColorFormat;
+    use crate::state::{CompareFunc, LogicOp, StencilState};
+
+    fn frag(x: u32, y: u32, z: f32, color: [f32; 4]) -> Fragment {
+        Fragment {
+            x,
+            y,
+            z,
+            back_facing: false,
+            colors: [color; MAX_DRAW_BUFFERS],
+        }
+    }
+
+    #[test]
+    fn every_blend_factor() {
+        let s = [0.5, 0.25, 1.0, 0.75];
+        let d = [0.2, 0.4, 0.6, 0.1];
+        let k = [0.3, 0.6, 0.9, 0.5];
+        use BlendFactor::*;
+        // (factor, expected factor value for component 0 and for alpha)
+        let cases = [
+            (Zero, 0.0, 0.0),
+            (One, 1.0, 1.0),
+            (SrcColor, 0.5, 0.75),
+            (OneMinusSrcColor, 0.5, 0.25),
+            (DstColor, 0.2, 0.1),
+            (OneMinusDstColor, 0.8, 0.9),
+            (SrcAlpha, 0.75, 0.75),
+            (OneMinusSrcAlpha, 0.25, 0.25),
+            (DstAlpha, 0.1, 0.1),
+            (OneMinusDstAlpha, 0.9, 0.9),
+            (ConstantColor, 0.3, 0.5),
+            (OneMinusConstantColor, 0.7, 0.5),
+            (ConstantAlpha, 0.5, 0.5),
+            (OneMinusConstantAlpha, 0.5, 0.5),
+            (SrcAlphaSaturate, 0.75, 1.0),
+        ];
+        for (f, fc, fa) in cases {
+            let b = Blend {
+                src_rgb: f,
+                dst_rgb: Zero,
+                src_alpha: f,
+                dst_alpha: Zero,
+                color: k,
+                ..Blend::default()
+            };
+            let out = blend_color(&b, s, d);
+            assert_eq!(out[0], 0.5 * fc as f32, "{f:?} rgb");
+            assert_eq!(out[3], 0.75 * fa as f32, "{f:?} alpha");
+            // Same factor on the destination side.
+            let b = Blend {
+                src_rgb: Zero,
+                dst_rgb: f,
+                src_alpha: Zero,
+                dst_alpha: f,
+                color: k,
+                ..Blend::default()
+            };
+            let out = blend_color(&b, s, d);
+            assert_eq!(out[0], 0.2 * fc as f32, "{f:?} dst rgb");
+            assert_eq!(out[3], 0.1 * fa as f32, "{f:?} dst alpha");
+        }
+    }
+
+    #[test]
+    fn every_blend_equation() {
+        let s = [0.5, 0.25, 1.0, 0.75];
+        let d = [0.2, 0.4, 0.6, 0.1];
+        let b = |eq_rgb, eq_a| Blend {
+            src_rgb: BlendFactor::One,
+            dst_rgb: BlendFactor::One,
+            src_alpha: BlendFactor::SrcAlpha,
+            dst_alpha: BlendFactor::One,
+            equation_rgb: eq_rgb,
+            equation_alpha: eq_a,
+            color: [0.0; 4],
+        };
+        use BlendEquation::*;
+        let add = blend_color(&b(Add, Add), s, d);
+        assert_eq!(add[1], 0.25 + 0.4);
+        assert_eq!(add[3], 0.75 * 0.75 + 0.1);
+        let sub = blend_color(&b(Subtract, ReverseSubtract), s, d);
+        assert_eq!(sub[0], 0.5 - 0.2);
+        assert_eq!(sub[3], 0.1 - 0.75 * 0.75);
+        let rsub = blend_color(&b(ReverseSubtract, Subtract), s, d);
+        assert_eq!(rsub[1], 0.4 - 0.25);
+        // MIN/MAX ignore the factors.
+        let min = blend_color(&b(Min, Max), s, d);
+        assert_eq!(min, [0.2, 0.25, 0.6, 0.75]);
+        let max = blend_color(&b(Max, Min), s, d);
+        assert_eq!(max, [0.5, 0.4, 1.0, 0.1]);
+    }
+
+    #[test]
+    fn blended_write_to_rgba8_clamps() {
+        let mut fb = Framebuffer::new(1, 1, ColorFormat::Rgba8, false, false);
+        fb.clear_color(&[0], [1.0, 0.5, 0.0, 1.0], [true; 4], None);
+        let state = PipelineState {
+            blend: Some(Blend {
+                dst_rgb: BlendFactor::One,
+                dst_alpha: BlendFactor::One,
+                ..Blend::default()
+            }),
+            ..PipelineState::default()
+        };
+        process(&mut fb, &state, &frag(0, 0, 0.0, [0.5, 0.25, 2.0, -1.0]));
+        assert_eq!(fb.read_pixels_u8(0, 0, 0, 1, 1), vec![[255, 192, 255, 255]]);
+    }
+
+    #[test]
+    fn logic_op_and_color_mask() {
+        let mut fb = Framebuffer::new(1, 1, ColorFormat::Rgba8, false, false);
+        fb.clear_color(&[0], [1.0, 1.0, 1.0, 1.0], [true; 4], None);
+        let state = PipelineState {
+            logic_op: Some(LogicOp::Xor),
+            color_mask: [true, true, false, true],
+            ..PipelineState::default()
+        };
+        process(&mut fb, &state, &frag(0, 0, 0.0, [1.0, 0.0, 0.0, 0.0]));
+        assert_eq!(fb.read_pixels_u8(0, 0, 0, 1, 1), vec![[0, 255, 255, 255]]);
+    }
+
+    #[test]
+    fn depth_funcs() {
+        use CompareFunc::*;
+        let table = [
+            (Never, [false, false, false]),
+            (Less, [true, false, false]),
+            (Equal, [false, true, false]),
+            (LessEqual, [true, true, false]),
+            (Greater, [false, false, true]),
+            (NotEqual, [true, false, true]),
+            (GreaterEqual, [false, true, true]),
+            (Always, [true, true, true]),
+        ];
+        for (func, expect) in table {
+            for (i, z) in [0.25f32, 0.5, 0.75].into_iter().enumerate() {
+                assert_eq!(depth_passes(func, z, 0.5), expect[i], "{func:?} {z}");
+                let mut fb = Framebuffer::new(1, 1, ColorFormat::Rgba8, true, false);
+                fb.clear_depth(0.5, true, None);
+                let state = PipelineState {
+                    depth_test: Some(func),
+                    ..PipelineState::default()
+                };
+                process(&mut fb, &state, &frag(0, 0, z, [1.0; 4]));
+                let written = fb.read_pixels_u8(0, 0, 0, 1, 1)[0] == [255; 4];
+                assert_eq!(written, expect[i], "{func:?} {z}");
+                let depth = fb.read_depth(0, 0, 1, 1)[0];
+                let same = depth_to_fixed(depth) == depth_to_fixed(z);
+                assert_eq!(same, expect[i] || z == 0.5, "{func:?} {z}");
+            }
+        }
+    }
+
+    #[test]
+    fn depth_mask_off_keeps_depth() {
+        let mut fb = Framebuffer::new(1, 1, ColorFormat::Rgba8, true, false);
+        fb.clear_depth(1.0, true, None);
+        let state = PipelineState {
+            depth_test: Some(CompareFunc::Less),
+            depth_mask: false,
+            ..PipelineState::default()
+        };
+        process(&mut fb, &state, &frag(0, 0, 0.25, [1.0; 4]));
+        assert_eq!(fb.read_depth(0, 0, 1, 1)[0], 1.0);
+        assert_eq!(fb.read_pixels_u8(0, 0, 0, 1, 1)[0], [255; 4]);
+    }
+
+    #[test]
+    fn stencil_ops() {
+        use StencilOp::*;
+        assert_eq!(stencil_op(Keep, 7, 3), 7);
+        assert_eq!(stencil_op(Zero, 7, 3), 0);
+        assert_eq!(stencil_op(Replace, 7, 3), 3);
+        assert_eq!(stencil_op(Incr, 255, 3), 255);
+        assert_eq!(stencil_op(Incr, 7, 3), 8);
+        assert_eq!(stencil_op(Decr, 0, 3), 0);
+        assert_eq!(stencil_op(Decr, 7, 3), 6);
+        assert_eq!(stencil_op(Invert, 0x0f, 3), 0xf0);
+        assert_eq!(stencil_op(IncrWrap, 255, 3), 0);
+        assert_eq!(stencil_op(DecrWrap, 0, 3), 255);
+    }
+
+    #[test]
+    fn stencil_test_paths_and_masks() {
+        // fail / depth-fail / depth-pass each pick their op; write mask applies.
+        let face = StencilFace {
+            func: CompareFunc::Equal,
+            reference: 1,
+            value_mask: 0xff,
+            fail: StencilOp::Invert,
+            depth_fail: StencilOp::Incr,
+            depth_pass: StencilOp::Replace,
+            write_mask: 0x0f,
+        };
+        let state = PipelineState {
+            stencil: Some(StencilState {
+                front: face,
+                back: StencilFace::default(),
+            }),
+            depth_test: Some(CompareFunc::Less),
+            ..PipelineState::default()
+        };
+        let run = |stored: u8, z: f32| {
+            let mut fb = Framebuffer::new(1, 1, ColorFormat::Rgba8, true, true);
+            fb.clear_stencil(stored as i32, 0xff, None);
+            fb.clear_depth(0.5, true, None);
+            process(&mut fb, &state, &frag(0, 0, z, [1.0; 4]));
+            (
+                fb.read_stencil(0, 0, 1, 1)[0],
+                fb.read_pixels_u8(0, 0, 0, 1, 1)[0][0],
+            )
+        };
+        // Stencil fails (stored 0x20 != 1): invert under mask 0x0f.
+        assert_eq!(run(0x20, 0.0), (0x2f, 0));
+        // Passes stencil, fails depth: incr.
+        assert_eq!(run(1, 0.75), (2, 0));
+        // Passes both: replace with 1, color written.
+        assert_eq!(run(1, 0.25), (1, 255));
+        // Back-facing fragments use the back state (always pass, keep).
+        let mut fb = Framebuffer::new(1, 1, ColorFormat::Rgba8, true, true);
+        fb.clear_stencil(0x20, 0xff, None);
+        fb.clear_depth(1.0, true, None);
+        let mut f = frag(0, 0, 0.25, [1.0; 4]);
+        f.back_facing = true;
+        process(&mut fb, &state, &f);
+        assert_eq!(fb.read_stencil(0, 0, 1, 1)[0], 0x20);
+        assert_eq!(fb.read_pixels_u8(0, 0, 0, 1, 1)[0][0], 255);
+    }
+
+    #[test]
+    fn alpha_test_and_scissor() {
+        let mut fb = Framebuffer::new(2, 1, ColorFormat::Rgba8, false, false);
+        let state = PipelineState {
+            alpha_test: Some((CompareFunc::Greater, 0.5)),
+            scissor: Some(crate::state::Rect::new(1, 0, 1, 1)),
+            ..PipelineState::default()
+        };
+        process(&mut fb, &state, &frag(0, 0, 0.0, [1.0; 4]));
+        process(&mut fb, &state, &frag(1, 0, 0.0, [1.0, 1.0, 1.0, 0.5]));
+        assert_eq!(fb.read_pixels_u8(0, 0, 0, 2, 1), vec![[0; 4], [0; 4]]);
+        process(&mut fb, &state, &frag(1, 0, 0.0, [1.0, 1.0, 1.0, 0.6]));
+        assert_eq!(fb.read_pixels_u8(0, 1, 0, 1, 1), vec![[255, 255, 255, 153]]);
+    }
+
+    #[test]
+    fn early_reject_only_without_side_effects() {
+        let mut fb = Framebuffer::new(1, 1, ColorFormat::Rgba8, true, true);
+        fb.clear_depth(0.5, true, None);
+        let mut state = PipelineState {
+            depth_test: Some(CompareFunc::Less),
+            ..PipelineState::default()
+        };
+        assert!(early_reject(&fb, &state, 0, depth_to_fixed(0.75), false));
+        assert!(!early_reject(&fb, &state, 0, depth_to_fixed(0.25), false));
+        state.stencil = Some(StencilState {
+            front: StencilFace {
+                depth_fail: StencilOp::Incr,
+                ..StencilFace::default()
+            },
+            back: StencilFace::default(),
+        });
+        assert!(!early_reject(&fb, &state, 0, depth_to_fixed(0.75), false));
+        assert!(early_reject(&fb, &state, 0, depth_to_fixed(0.75), true));
+    }
+}

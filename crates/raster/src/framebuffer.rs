@@ -1,0 +1,336 @@
+//! Framebuffers: color buffers (RGBA8 unorm or RGBA32F), a 24-bit depth
+//! buffer and an 8-bit stencil buffer; clears and pixel reads.
+//!
+//! Row 0 is the bottom row (GL window coordinates); pixel (x, y) lives at
+//! index `y * width + x`.
+
+use crate::state::Rect;
+
+/// Largest width or height [`Framebuffer::new`] accepts; larger requests
+/// are clamped (the gl layer reports GL errors before it gets here).
+pub const MAX_FRAMEBUFFER_SIZE: u32 = 16384;
+
+/// The largest 24-bit depth value (1.0).
+pub const DEPTH_MAX: u32 = (1 << 24) - 1;
+
+/// Most color buffers one framebuffer can hold (GL_MAX_DRAW_BUFFERS).
+pub const MAX_DRAW_BUFFERS: usize = 8;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColorFormat {
+    Rgba8,
+    Rgba32F,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ColorBuffer {
+    Rgba8(Vec<[u8; 4]>),
+    Rgba32F(Vec<[f32; 4]>),
+}
+
+impl ColorBuffer {
+    fn new(format: ColorFormat, len: usize) -> ColorBuffer {
+        match format {
+            ColorFormat::Rgba8 => ColorBuffer::Rgba8(vec![[0; 4]; len]),
+            ColorFormat::Rgba32F => ColorBuffer::Rgba32F(vec![[0.0; 4]; len]),
+        }
+    }
+
+    pub fn format(&self) -> ColorFormat {
+        match self {
+            ColorBuffer::Rgba8(_) => ColorFormat::Rgba8,
+            ColorBuffer::Rgba32F(_) => ColorFormat::Rgba32F,
+        }
+    }
+
+    /// The pixel at `index` as floats (unorm: `b / 255`); zeros when out of range.
+    pub fn get(&self, index: usize) -> [f32; 4] {
+        match self {
+            ColorBuffer::Rgba8(v) => v.get(index).map_or([0.0; 4], |p| p.map(unorm8_to_float)),
+            ColorBuffer::Rgba32F(v) => v.get(index).copied().unwrap_or([0.0; 4]),
+        }
+    }
+}
+
+/// GL 2.1 §2.14.9 / §4.3.1 conversion of a float to an 8-bit unorm:
+/// clamp to [0, 1], then round to nearest (`floor(c * 255 + 0.5)`). NaN → 0.
+pub fn float_to_unorm8(c: f32) -> u8 {
+    let c = if c > 0.0 { c.min(1.0) } else { 0.0 };
+    // The value is in [0.5, 255.5]: truncation is floor.
+    (c * 255.0 + 0.5) as u8
+}
+
+pub fn unorm8_to_float(b: u8) -> f32 {
+    b as f32 / 255.0
+}
+
+/// GL 2.1 §2.11.1: a window z in [0, 1] as a 24-bit fixed-point value
+/// `k / (2^24 - 1)`, rounded to nearest. Values outside [0, 1] are clamped,
+/// NaN becomes 0.
+pub fn depth_to_fixed(z: f32) -> u32 {
+    let z = if z > 0.0 { z.min(1.0) } else { 0.0 };
+    // Non-negative: truncation is floor.
+    let k = z as f64 * DEPTH_MAX as f64 + 0.5;
+    (k as u32).min(DEPTH_MAX)
+}
+
+pub fn fixed_to_depth(k: u32) -> f32 {
+    (k.min(DEPTH_MAX) as f64 / DEPTH_MAX as f64) as f32
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Framebuffer {
+    pub width: u32,
+    pub height: u32,
+    /// The color buffers; `PipelineState::draw_buffers` selects which
+    /// fragment output goes where.
+    pub color: Vec<ColorBuffer>,
+    /// 24-bit depth values in [0, 2^24 - 1].
+    pub depth: Option<Vec<u32>>,
+    pub stencil: Option<Vec<u8>>,
+}
+
+impl Framebuffer {
+    /// One color buffer of `format`, optional depth and stencil buffers,
+    /// everything zero.
+    pub fn new(width: u32, height: u32, format: ColorFormat, depth: bool, stencil: bool) -> Self {
+        Framebuffer::with_color_buffers(width, height, &[format], depth, stencil)
+    }
+
+    /// Up to [`MAX_DRAW_BUFFERS`] color buffers (more are ignored).
+    pub fn with_color_buffers(
+        width: u32,
+        height: u32,
+        formats: &[ColorFormat],
+        depth: bool,
+        stencil: bool,
+    ) -> Self {
+        let width = width.min(MAX_FRAMEBUFFER_SIZE);
+        let height = height.min(MAX_FRAMEBUFFER_SIZE);
+        let len = width as usize * height as usize;
+        Framebuffer {
+            width,
+            height,
+            color: formats
+                .iter()
+                .take(MAX_DRAW_BUFFERS)
+                .map(|&f| ColorBuffer::new(f, len))
+                .collect(),
+            depth: depth.then(|| vec![0; len]),
+            stencil: stencil.then(|| vec![0; len]),
+        }
+    }
+
+    /// The whole framebuffer as a rectangle.
+    pub fn bounds(&self) -> Rect {
+        Rect::new(0, 0, self.width as i32, self.height as i32)
+    }
+
+    /// `rect` (or the whole buffer) intersected with the buffer, as
+    /// half-open pixel ranges `(x0, y0, x1, y1)`.
+    pub(crate) fn clip_rect(&self, rect: Option<Rect>) -> (u32, u32, u32, u32) {
+        let (w, h) = (self.width as i64, self.height as i64);
+        match rect {
+            None => (0, 0, self.width, self.height),
+            Some(r) => {
+                let x0 = (r.x as i64).clamp(0, w);
+                let y0 = (r.y as i64).clamp(0, h);
+                let x1 = (r.x as i64 + (r.w as i64).max(0)).clamp(x0, w);
+                let y1 = (r.y as i64 + (r.h as i64).max(0)).clamp(y0, h);
+                (x0 as u32, y0 as u32, x1 as u32, y1 as u32)
+            }
+        }
+    }
+
+    fn for_each_index(&self, scissor: Option<Rect>, mut f: impl FnMut(usize)) {
+        let (x0, y0, x1, y1) = self.clip_rect(scissor);
+        for y in y0..y1 {
+            for x in x0..x1 {
+                f(y as usize * self.width as usize + x as usize);
+            }
+        }
+    }
+
+    /// glClear of the color buffers listed in `buffers` (indices into
+    /// [`Framebuffer::color`]; out-of-range ones are skipped) inside the
+    /// scissor box, honouring the color write mask. RGBA8 buffers convert
+    /// `color` with [`float_to_unorm8`]; float buffers store it as is.
+    pub fn clear_color(
+        &mut self,
+        buffers: &[usize],
+        color: [f32; 4],
+        mask: [bool; 4],
+        scissor: Option<Rect>,
+    ) {
+        let (x0, y0, x1, y1) = self.clip_rect(scissor);
+        let width = self.width as usize;
+        let bytes = color.map(float_to_unorm8);
+        for &b in buffers {
+            let Some(buf) = self.color.get_mut(b) else {
+                continue;
+            };
+            for y in y0..y1 {
+                for x in x0..x1 {
+                    let i = y as usize * width + x as usize;
+                    match buf {
+                        ColorBuffer::Rgba8(v) => {
+                            if let Some(p) = v.get_mut(i) {
+                                for c in 0..4 {
+                                    if mask[c] {
+                                        p[c] = bytes[c];
+                                    }
+                                }
+                            }
+                        }
+                        ColorBuffer::Rgba32F(v) => {
+                            if let Some(p) = v.get_mut(i) {
+                                for c in 0..4 {
+                                    if mask[c] {
+                                        p[c] = color[c];
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// glClear of the depth buffer (`depth` is ClearDepth, clamped to
+    /// [0, 1]); nothing happens when `write` (DepthMask) is false.
+    pub fn clear_depth(&mut self, depth: f32, write: bool, scissor: Option<Rect>) {
+        if !write {
+            return;
+        }
+        let k = depth_to_fixed(depth);
+        let mut idx = Vec::new();
+        self.for_each_index(scissor, |i| idx.push(i));
+        if let Some(d) = self.depth.as_mut() {
+            for i in idx {
+                if let Some(p) = d.get_mut(i) {
+                    *p = k;
+                }
+            }
+        }
+    }
+
+    /// glClear of the stencil buffer: ClearStencil's low 8 bits under the
+    /// stencil write mask.
+    pub fn clear_stencil(&mut self, value: i32, write_mask: u32, scissor: Option<Rect>) {
+        let v = value as u8;
+        let m = write_mask as u8;
+        let mut idx = Vec::new();
+        self.for_each_index(scissor, |i| idx.push(i));
+        if let Some(s) = self.stencil.as_mut() {
+            for i in idx {
+                if let Some(p) = s.get_mut(i) {
+                    *p = (*p & !m) | (v & m);
+                }
+            }
+        }
+    }
+
+    /// Reads a `w`×`h` block of color buffer `buffer` starting at (x, y),
+    /// bottom row first, as floats. Pixels outside the buffer (or of a
+    /// missing buffer) read as zeros.
+    pub fn read_pixels(&self, buffer: usize, x: i32, y: i32, w: u32, h: u32) -> Vec<[f32; 4]> {
+        self.read_block(x, y, w, h, |i| {
+            self.color.get(buffer).map_or([0.0; 4], |b| b.get(i))
+        })
+    }
+
+    /// Like [`Framebuffer::read_pixels`], converted to 8-bit unorm.
+    pub fn read_pixels_u8(&self, buffer: usize, x: i32, y: i32, w: u32, h: u32) -> Vec<[u8; 4]> {
+        self.read_block(x, y, w, h, |i| match self.color.get(buffer) {
+            Some(ColorBuffer::Rgba8(v)) => v.get(i).copied().unwrap_or([0; 4]),
+            Some(ColorBuffer::Rgba32F(v)) => v.get(i).map_or([0; 4], |p| p.map(float_to_unorm8)),
+            None => [0; 4],
+        })
+    }
+
+    /// Depth values in [0, 1]; zeros outside or without a depth buffer.
+    pub fn read_depth(&self, x: i32, y: i32, w: u32, h: u32) -> Vec<f32> {
+        self.read_block(x, y, w, h, |i| {
+            self.depth
+                .as_ref()
+                .and_then(|d| d.get(i))
+                .map_or(0.0, |&k| fixed_to_depth(k))
+        })
+    }
+
+    pub fn read_stencil(&self, x: i32, y: i32, w: u32, h: u32) -> Vec<u8> {
+        self.read_block(x, y, w, h, |i| {
+            self.stencil
+                .as_ref()
+                .and_then(|s| s.get(i))
+                .copied()
+                .unwrap_or(0)
+        })
+    }
+
+    fn read_block<T: Default>(
+        &self,
+        x: i32,
+        y: i32,
+        w: u32,
+        h: u32,
+        get: impl Fn(usize) -> T,
+    ) -> Vec<T> {
+        let w = w.min(MAX_FRAMEBUFFER_SIZE);
+        let h = h.min(MAX_FRAMEBUFFER_SIZE);
+        let mut out = Vec::with_capacity(w as usize * h as usize);
+        for row in 0..h as i64 {
+            for col in 0..w as i64 {
+                let (px, py) = (x as i64 + col, y as i64 + row);
+                if px >= 0 && py >= 0 && px < self.width as i64 && py < self.height as i64 {
+                    out.push(get(py as usize * self.width as usize + px as usize));
+                } else {
+                    out.push(T::default());
+                }
+            }
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unorm_conversion_rounds_to_nearest() {
+        assert_eq!(float_to_unorm8(0.5), 128);
+        assert_eq!(float_to_unorm8(127.4 / 255.0), 127);
+        assert_eq!(float_to_unorm8(-1.0), 0);
+        assert_eq!(float_to_unorm8(2.0), 255);
+        assert_eq!(float_to_unorm8(f32::NAN), 0);
+    }
+
+    #[test]
+    fn depth_conversion() {
+        assert_eq!(depth_to_fixed(0.0), 0);
+        assert_eq!(depth_to_fixed(1.0), DEPTH_MAX);
+        assert_eq!(depth_to_fixed(0.5), 1 << 23);
+        assert_eq!(fixed_to_depth(DEPTH_MAX), 1.0);
+    }
+
+    #[test]
+    fn clear_respects_scissor_and_masks() {
+        let mut fb = Framebuffer::new(4, 4, ColorFormat::Rgba8, true, true);
+        fb.clear_color(&[0], [1.0, 0.5, 0.25, 1.0], [true, true, false, true], None);
+        fb.clear_color(&[0], [0.0; 4], [true; 4], Some(Rect::new(1, 1, 2, 10)));
+        let px = fb.read_pixels_u8(0, 0, 0, 4, 4);
+        assert_eq!(px[0], [255, 128, 0, 255]);
+        assert_eq!(px[5], [0, 0, 0, 0]);
+        assert_eq!(px[4 * 3 + 2], [0, 0, 0, 0]);
+        assert_eq!(px[4 * 3 + 3], [255, 128, 0, 255]);
+        fb.clear_depth(1.0, true, None);
+        fb.clear_depth(0.0, false, None);
+        assert_eq!(fb.read_depth(0, 0, 1, 1), vec![1.0]);
+        fb.clear_stencil(0x1ff, 0x0f, None);
+        assert_eq!(fb.read_stencil(0, 0, 1, 1), vec![0x0f]);
+        // Outside reads are zero.
+        assert_eq!(fb.read_pixels(0, -1, 0, 1, 1), vec![[0.0; 4]]);
+    }
+}

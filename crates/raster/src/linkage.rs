@@ -1,0 +1,185 @@
+//! Where things live in the vertex and fragment kernels' interfaces, and
+//! how vertex outputs feed fragment inputs (matched by name; gl_Color from
+//! gl_FrontColor / gl_BackColor, gl_SecondaryColor likewise).
+
+use crate::ex::{Interface, Slot};
+use crate::framebuffer::MAX_DRAW_BUFFERS;
+
+fn find<'a>(slots: &'a [Slot], name: &str) -> Option<&'a Slot> {
+    slots.iter().find(|s| s.name == name)
+}
+
+/// The vertex kernel's outputs the pipeline itself reads.
+pub(crate) struct VsLayout {
+    pub outputs: usize,
+    pub position: Option<usize>,
+    pub point_size: Option<usize>,
+    /// gl_ClipVertex when the shader writes it. GL 2.1 §2.12 leaves user
+    /// clipping undefined otherwise; we then clip against gl_Position.
+    pub clip_vertex: Option<usize>,
+    /// gl_{Front,Back}{,Secondary}Color ranges (clamped per §2.14.6).
+    pub colors: Vec<(usize, usize)>,
+}
+
+impl VsLayout {
+    pub fn new(iface: &Interface) -> VsLayout {
+        let out = &iface.outputs;
+        let vec4 = |name: &str| {
+            find(out, name)
+                .filter(|s| s.components >= 4)
+                .map(|s| s.offset)
+        };
+        VsLayout {
+            outputs: out
+                .iter()
+                .map(|s| s.offset + s.components)
+                .max()
+                .unwrap_or(0),
+            position: vec4("gl_Position"),
+            point_size: find(out, "gl_PointSize")
+                .filter(|s| s.written && s.components >= 1)
+                .map(|s| s.offset),
+            clip_vertex: find(out, "gl_ClipVertex")
+                .filter(|s| s.written && s.components >= 4)
+                .map(|s| s.offset),
+            colors: [
+                "gl_FrontColor",
+                "gl_BackColor",
+                "gl_FrontSecondaryColor",
+                "gl_BackSecondaryColor",
+            ]
+            .iter()
+            .filter_map(|n| find(out, n).map(|s| (s.offset, s.components)))
+            .collect(),
+        }
+    }
+
+    pub fn position(&self, data: &[f32]) -> [f32; 4] {
+        read4(data, self.position)
+    }
+
+    pub fn eye(&self, data: &[f32]) -> [f32; 4] {
+        match self.clip_vertex {
+            Some(_) => read4(data, self.clip_vertex),
+            None => self.position(data),
+        }
+    }
+}
+
+fn read4(data: &[f32], at: Option<usize>) -> [f32; 4] {
+    let mut v = [0.0; 4];
+    if let Some(o) = at {
+        for (i, c) in v.iter_mut().enumerate() {
+            *c = data.get(o + i).copied().unwrap_or(0.0);
+        }
+    }
+    v
+}
+
+/// One fragment-input component fed from the vertex stage.
+#[derive(Clone, Debug)]
+pub(crate) struct VaryingLink {
+    pub fs_offset: usize,
+    /// Vertex output component for front faces (None: undefined, reads 0).
+    pub front: Option<usize>,
+    /// For back faces with two-sided color on (gl_BackColor ...).
+    pub back: Option<usize>,
+    /// gl_Color / gl_SecondaryColor: flat-shaded under ShadeModel(FLAT).
+    pub color: bool,
+    /// gl_TexCoord[set].component, for point-sprite coordinate replacement.
+    pub texcoord: Option<(u32, usize)>,
+}
+
+pub(crate) struct FsLayout {
+    pub inputs: usize,
+    pub outputs: usize,
+    pub links: Vec<VaryingLink>,
+    pub frag_coord: Option<usize>,
+    pub front_facing: Option<usize>,
+    pub point_coord: Option<usize>,
+    /// Output offset of the color for each fragment output index.
+    pub color_out: [Option<usize>; MAX_DRAW_BUFFERS],
+    pub frag_depth: Option<usize>,
+}
+
+impl FsLayout {
+    pub fn new(vs: &Interface, fs: &Interface, two_sided: bool) -> FsLayout {
+        let mut links = Vec::new();
+        let mut frag_coord = None;
+        let mut front_facing = None;
+        let mut point_coord = None;
+        for slot in &fs.inputs {
+            match slot.name.as_str() {
+                "gl_FragCoord" => frag_coord = Some(slot.offset),
+                "gl_FrontFacing" => front_facing = Some(slot.offset),
+                "gl_PointCoord" => point_coord = Some(slot.offset),
+                name => {
+                    let (front_name, back_name, color) = match name {
+                        "gl_Color" => ("gl_FrontColor", Some("gl_BackColor"), true),
+                        "gl_SecondaryColor" => (
+                            "gl_FrontSecondaryColor",
+                            Some("gl_BackSecondaryColor"),
+                            true,
+                        ),
+                        other => (other, None, false),
+                    };
+                    let front = find(&vs.outputs, front_name);
+                    let back = back_name
+                        .filter(|_| two_sided)
+                        .and_then(|n| find(&vs.outputs, n));
+                    for c in 0..slot.components {
+                        let pick =
+                            |s: Option<&Slot>| s.filter(|s| c < s.components).map(|s| s.offset + c);
+                        let front = pick(front);
+                        links.push(VaryingLink {
+                            fs_offset: slot.offset + c,
+                            front,
+                            back: pick(back).or(front),
+                            color,
+                            texcoord: (name == "gl_TexCoord").then_some(((c / 4) as u32, c % 4)),
+                        });
+                    }
+                }
+            }
+        }
+        let out = &fs.outputs;
+        let mut color_out = [None; MAX_DRAW_BUFFERS];
+        let data = find(out, "gl_FragData").filter(|s| s.written);
+        let color = find(out, "gl_FragColor").filter(|s| s.components >= 4);
+        for (i, o) in color_out.iter_mut().enumerate() {
+            *o = match data {
+                Some(d) => (d.components >= 4 * (i + 1)).then_some(d.offset + 4 * i),
+                None => color.map(|s| s.offset),
+            };
+        }
+        FsLayout {
+            inputs: fs
+                .inputs
+                .iter()
+                .map(|s| s.offset + s.components)
+                .max()
+                .unwrap_or(0),
+            outputs: out
+                .iter()
+                .map(|s| s.offset + s.components)
+                .max()
+                .unwrap_or(0),
+            links,
+            frag_coord,
+            front_facing,
+            point_coord,
+            color_out,
+            frag_depth: find(out, "gl_FragDepth")
+                .filter(|s| s.written)
+                .map(|s| s.offset),
+        }
+    }
+
+    /// The fragment varyings of one vertex (one value per link).
+    pub fn varyings(&self, data: &[f32], back: bool, out: &mut Vec<f32>) {
+        for l in &self.links {
+            let src = if back { l.back } else { l.front };
+            out.push(src.and_then(|o| data.get(o)).copied().unwrap_or(0.0));
+        }
+    }
+}

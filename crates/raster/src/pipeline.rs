@@ -1,0 +1,569 @@
+//! `draw()`: vertex stage, primitive assembly, clipping, viewport
+//! transform, face determination and culling, then tiled rasterization and
+//! fragment shading.
+
+use std::collections::HashMap;
+
+use crate::clip::{ClipVertex, Planes};
+use crate::ex::{Interface, Textures, LANES};
+use crate::framebuffer::Framebuffer;
+use crate::linkage::{FsLayout, VsLayout};
+use crate::rasterize::{PixelRect, Shape, WinVertex};
+use crate::shade::{new_batch, FragmentStage, Prim};
+use crate::state::{CullFace, FrontFace, PipelineState, PolygonMode};
+use crate::{DrawError, ShaderStage};
+
+/// Tile size: fragments are produced tile by tile, each tile seeing the
+/// primitives in draw order, so tiles can later run in parallel.
+pub const TILE: i64 = 64;
+
+/// Largest point size used (points are clamped to [1, MAX_POINT_SIZE]).
+pub const MAX_POINT_SIZE: f32 = 2048.0;
+
+/// Viewport coordinates are clamped to ±2^19 so window positions fit the
+/// rasterizer's fixed-point range.
+const VIEWPORT_LIMIT: i64 = 1 << 19;
+
+/// Supplies vertex attributes.
+pub trait VertexFetch {
+    /// Writes the attribute of vertex-kernel input slot `input_slot`
+    /// (an index into `Interface::inputs`) for `vertex_index`. `out` starts
+    /// as (0, 0, 0, 1); components the array does not provide stay so.
+    fn fetch(&self, input_slot: usize, vertex_index: u32, out: &mut [f32; 4]);
+
+    /// Column `column` of a matrix attribute (matrix attributes take one
+    /// attribute location per column). The default serves column 0 with
+    /// [`VertexFetch::fetch`] and leaves the others at (0, 0, 0, 1).
+    fn fetch_column(
+        &self,
+        input_slot: usize,
+        column: usize,
+        vertex_index: u32,
+        out: &mut [f32; 4],
+    ) {
+        if column == 0 {
+            self.fetch(input_slot, vertex_index, out);
+        }
+    }
+}
+
+/// Begin/End modes (GL 2.1 §2.6.1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    Points,
+    Lines,
+    LineStrip,
+    LineLoop,
+    Triangles,
+    TriangleStrip,
+    TriangleFan,
+    Quads,
+    QuadStrip,
+    Polygon,
+}
+
+/// One assembled primitive; vertex numbers are positions in `indices`.
+#[derive(Debug, PartialEq)]
+pub(crate) enum Assembled {
+    Point(usize),
+    /// (first, second); the second is the provoking vertex (§2.14.7).
+    Line(usize, usize),
+    /// Vertices in order and the provoking vertex (GL 2.1 table 2.12).
+    Polygon(Vec<usize>, usize),
+}
+
+/// Splits `count` vertices of `mode` into primitives, in order. Incomplete
+/// trailing primitives are dropped (GL 2.1 §2.6.1).
+pub(crate) fn assemble(mode: Mode, count: usize, mut emit: impl FnMut(Assembled)) {
+    let n = count;
+    match mode {
+        Mode::Points => (0..n).for_each(|i| emit(Assembled::Point(i))),
+        Mode::Lines => (0..n / 2).for_each(|k| emit(Assembled::Line(2 * k, 2 * k + 1))),
+        Mode::LineStrip | Mode::LineLoop => {
+            for i in 1..n {
+                emit(Assembled::Line(i - 1, i));
+            }
+            if mode == Mode::LineLoop && n >= 2 {
+                emit(Assembled::Line(n - 1, 0));
+            }
+        }
+        Mode::Triangles => {
+            for k in 0..n / 3 {
+                emit(Assembled::Polygon(
+                    vec![3 * k, 3 * k + 1, 3 * k + 2],
+                    3 * k + 2,
+                ));
+            }
+        }
+        Mode::TriangleStrip => {
+            for i in 2..n {
+                // Every other triangle is reversed to keep a common winding.
+                let v = if i % 2 == 0 {
+                    vec![i - 2, i - 1, i]
+                } else {
+                    vec![i - 1, i - 2, i]
+                };
+                emit(Assembled::Polygon(v, i));
+            }
+        }
+        Mode::TriangleFan => {
+            for i in 2..n {
+                emit(Assembled::Polygon(vec![0, i - 1, i], i));
+            }
+        }
+        Mode::Quads => {
+            for k in 0..n / 4 {
+                let b = 4 * k;
+                emit(Assembled::Polygon(vec![b, b + 1, b + 2, b + 3], b + 3));
+            }
+        }
+        Mode::QuadStrip => {
+            for k in 0..(n / 2).saturating_sub(1) {
+                let b = 2 * k;
+                emit(Assembled::Polygon(vec![b, b + 1, b + 3, b + 2], b + 3));
+            }
+        }
+        Mode::Polygon => {
+            if n >= 3 {
+                emit(Assembled::Polygon((0..n).collect(), 0));
+            }
+        }
+    }
+}
+
+/// Runs the vertex kernel once per distinct index. Returns, per position
+/// in `indices`, the vertex number, and the outputs of every vertex
+/// (`layout.outputs` values each).
+fn run_vertices(
+    vs: &dyn ShaderStage,
+    uniforms: &[u32],
+    textures: &dyn Textures,
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    layout: &VsLayout,
+    clamp_colors: bool,
+) -> Result<(Vec<usize>, Vec<f32>), DrawError> {
+    let iface: &Interface = vs.interface();
+    let mut seen: HashMap<u32, usize> = HashMap::new();
+    let mut unique: Vec<u32> = Vec::new();
+    let mut vertex_of = Vec::with_capacity(indices.len());
+    for &ix in indices {
+        let v = *seen.entry(ix).or_insert_with(|| {
+            unique.push(ix);
+            unique.len() - 1
+        });
+        vertex_of.push(v);
+    }
+    let n_in = iface
+        .inputs
+        .iter()
+        .map(|s| s.offset + s.components)
+        .max()
+        .unwrap_or(0);
+    let stride = layout.outputs;
+    let mut outputs = vec![0.0f32; unique.len() * stride];
+    for (chunk_no, chunk) in unique.chunks(LANES).enumerate() {
+        let mut batch = new_batch(n_in, stride);
+        for (lane, &ix) in chunk.iter().enumerate() {
+            for (slot_no, slot) in iface.inputs.iter().enumerate() {
+                let (cols, rows) = match slot.ty.base {
+                    glsl::types::Base::Matrix { cols, rows } if slot.ty.array.is_none() => {
+                        (cols as usize, rows as usize)
+                    }
+                    _ => (1, slot.components.min(4)),
+                };
+                for col in 0..cols {
+                    let mut v = [0.0, 0.0, 0.0, 1.0];
+                    fetch.fetch_column(slot_no, col, ix, &mut v);
+                    for (c, &value) in v.iter().enumerate().take(rows) {
+                        if let Some(dst) = batch.inputs.get_mut(slot.offset + col * rows + c) {
+                            dst[lane] = value;
+                        }
+                    }
+                }
+            }
+        }
+        batch.active = if chunk.len() >= 32 {
+            u32::MAX
+        } else {
+            (1u32 << chunk.len()) - 1
+        };
+        vs.run(&mut batch, uniforms, textures)?;
+        for lane in 0..chunk.len() {
+            let base = (chunk_no * LANES + lane) * stride;
+            for (c, comp) in batch.outputs.iter().enumerate().take(stride) {
+                if let Some(dst) = outputs.get_mut(base + c) {
+                    *dst = comp[lane];
+                }
+            }
+            if clamp_colors {
+                for &(o, n) in &layout.colors {
+                    for c in 0..n {
+                        if let Some(v) = outputs.get_mut(base + o + c) {
+                            *v = if *v > 0.0 { v.min(1.0) } else { 0.0 };
+                        }
+                    }
+                }
+            }
+        }
+    }
+    Ok((vertex_of, outputs))
+}
+
+/// Turns assembled primitives into set-up [`Prim`]s.
+struct Setup<'a> {
+    state: &'a PipelineState,
+    vs: &'a VsLayout,
+    fs: &'a FsLayout,
+    outputs: &'a [f32],
+    planes: Planes,
+    clip_rect: PixelRect,
+    /// Viewport transform (px/2, ox, py/2, oy, (f-n)/2, (n+f)/2).
+    vp: [f64; 6],
+    prims: Vec<Prim>,
+}
+
+impl Setup<'_> {
+    fn data(&self, v: usize) -> &[f32] {
+        let s = self.vs.outputs;
+        self.outputs.get(v * s..(v + 1) * s).unwrap_or(&[])
+    }
+
+    fn clip_vertex(&self, v: usize) -> ClipVertex {
+        let data = self.data(v);
+        ClipVertex {
+            pos: self.vs.position(data),
+            eye: self.vs.eye(data),
+            data: data.to_vec(),
+        }
+    }
+
+    /// Perspective division and viewport transform (GL 2.1 §2.11).
+    fn window(&self, v: &ClipVertex) -> Option<WinVertex> {
+        let w = v.pos[3] as f64;
+        if w.is_nan() || w <= 0.0 {
+            return None;
+        }
+        let [sx, ox, sy, oy, sz, oz] = self.vp;
+        let xd = v.pos[0] as f64 / w;
+        let yd = v.pos[1] as f64 / w;
+        let zd = v.pos[2] as f64 / w;
+        let win = WinVertex {
+            x: sx * xd + ox,
+            y: sy * yd + oy,
+            z: sz * zd + oz,
+            inv_w: 1.0 / w,
+        };
+        (win.x.is_finite() && win.y.is_finite() && win.z.is_finite() && win.inv_w.is_finite())
+            .then_some(win)
+    }
+
+    /// Fragment varyings of the given vertices, flat-shaded colors taken
+    /// from `provoking` and stored as vertex 0's.
+    fn attrs(&self, vertices: &[&[f32]], back: bool, provoking: &[f32]) -> Vec<f32> {
+        let links = self.fs.links.len();
+        let mut out = Vec::with_capacity(links * vertices.len());
+        for d in vertices {
+            self.fs.varyings(d, back, &mut out);
+        }
+        if self.state.flat_shading {
+            let mut flat = Vec::with_capacity(links);
+            self.fs.varyings(provoking, back, &mut flat);
+            for (li, link) in self.fs.links.iter().enumerate() {
+                if link.color {
+                    if let (Some(dst), Some(&v)) = (out.get_mut(li), flat.get(li)) {
+                        *dst = v;
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    fn push(&mut self, shape: Shape, back: bool, z_offset: f64, attrs: Vec<f32>) {
+        let b = shape.bounds();
+        let c = self.clip_rect;
+        let bounds = (b.0.max(c.0), b.1.max(c.1), b.2.min(c.2), b.3.min(c.3));
+        if bounds.0 >= bounds.2 || bounds.1 >= bounds.3 {
+            return;
+        }
+        self.prims.push(Prim {
+            shape,
+            bounds,
+            back,
+            z_offset,
+            attrs,
+        });
+    }
+
+    fn point_size(&self, data: &[f32]) -> f32 {
+        let size = match (self.state.vertex_program_point_size, self.vs.point_size) {
+            (true, Some(o)) => data.get(o).copied().unwrap_or(1.0),
+            _ => self.state.point_size,
+        };
+        if size.is_nan() {
+            1.0
+        } else {
+            size.clamp(1.0, MAX_POINT_SIZE)
+        }
+    }
+
+    fn point(&mut self, v: &ClipVertex, back: bool, z_offset: f64, provoking: &[f32]) {
+        if !self.planes.point_inside(v) {
+            return;
+        }
+        let Some(win) = self.window(v) else { return };
+        let size = self.point_size(&v.data) as f64;
+        let shape = Shape::point(win, size, self.state.point_sprite);
+        let attrs = self.attrs(&[&v.data], back, provoking);
+        self.push(shape, back, z_offset, attrs);
+    }
+
+    fn line(
+        &mut self,
+        a: &ClipVertex,
+        b: &ClipVertex,
+        back: bool,
+        z_offset: f64,
+        provoking: &[f32],
+    ) {
+        let Some((a, b)) = self.planes.clip_line(a, b) else {
+            return;
+        };
+        let (Some(wa), Some(wb)) = (self.window(&a), self.window(&b)) else {
+            return;
+        };
+        let shape = Shape::line([wa, wb], self.state.line_width);
+        let attrs = self.attrs(&[&a.data, &b.data], back, provoking);
+        self.push(shape, back, z_offset, attrs);
+    }
+
+    fn polygon(&mut self, vertices: &[usize], provoking: usize) {
+        let original: Vec<ClipVertex> = vertices.iter().map(|&v| self.clip_vertex(v)).collect();
+        let clipped = self.planes.clip_polygon(original.clone());
+        if clipped.len() < 3 {
+            return;
+        }
+        let Some(win) = clipped
+            .iter()
+            .map(|v| self.window(v))
+            .collect::<Option<Vec<_>>>()
+        else {
+            return;
+        };
+        // GL 2.1 §3.5.1 eq. 3.6: the sign of the window-space area.
+        let mut area = 0.0f64;
+        for i in 0..win.len() {
+            let j = (i + 1) % win.len();
+            area += win[i].x * win[j].y - win[j].x * win[i].y;
+        }
+        let ccw = area > 0.0;
+        let front = ccw == (self.state.front_face == FrontFace::Ccw);
+        let back = !front;
+        match self.state.cull {
+            Some(CullFace::FrontAndBack) => return,
+            Some(CullFace::Front) if front => return,
+            Some(CullFace::Back) if back => return,
+            _ => {}
+        }
+        let mode = self.state.polygon_mode[back as usize];
+        let po = self.state.polygon_offset;
+        let offset_on = match mode {
+            PolygonMode::Fill => po.fill,
+            PolygonMode::Line => po.line,
+            PolygonMode::Point => po.point,
+        };
+        let z_offset = if offset_on {
+            // §3.5.5: o = m · factor + r · units.
+            let m = (1..win.len() - 1)
+                .filter_map(|i| Shape::triangle([win[0], win[i], win[i + 1]]))
+                .map(|t| t.max_depth_slope())
+                .next()
+                .unwrap_or(0.0);
+            m * po.factor as f64 + po.units as f64 / crate::framebuffer::DEPTH_MAX as f64
+        } else {
+            0.0
+        };
+        let prov = self.data(provoking).to_vec();
+        match mode {
+            PolygonMode::Fill => {
+                for i in 1..win.len() - 1 {
+                    let Some(shape) = Shape::triangle([win[0], win[i], win[i + 1]]) else {
+                        continue;
+                    };
+                    let attrs = self.attrs(
+                        &[&clipped[0].data, &clipped[i].data, &clipped[i + 1].data],
+                        back,
+                        &prov,
+                    );
+                    self.push(shape, back, z_offset, attrs);
+                }
+            }
+            PolygonMode::Line => {
+                for i in 0..original.len() {
+                    let j = (i + 1) % original.len();
+                    self.line(&original[i], &original[j], back, z_offset, &prov);
+                }
+            }
+            PolygonMode::Point => {
+                for v in &original {
+                    self.point(v, back, z_offset, &prov);
+                }
+            }
+        }
+    }
+}
+
+/// [`crate::draw`] over any [`ShaderStage`] pair.
+#[allow(clippy::too_many_arguments)]
+pub fn draw_stages(
+    fb: &mut Framebuffer,
+    state: &PipelineState,
+    vs: &dyn ShaderStage,
+    vs_uniforms: &[u32],
+    fs: &dyn ShaderStage,
+    fs_uniforms: &[u32],
+    mode: Mode,
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    textures: &dyn Textures,
+) -> Result<(), DrawError> {
+    let vs_layout = VsLayout::new(vs.interface());
+    let fs_layout = FsLayout::new(vs.interface(), fs.interface(), state.two_sided_color);
+    let (vertex_of, outputs) = run_vertices(
+        vs,
+        vs_uniforms,
+        textures,
+        indices,
+        fetch,
+        &vs_layout,
+        state.clamp_vertex_color,
+    )?;
+
+    let vp = state.viewport;
+    let lim = |v: i32| (v as i64).clamp(-VIEWPORT_LIMIT, VIEWPORT_LIMIT) as f64;
+    let (vw, vh) = (lim(vp.w.max(0)), lim(vp.h.max(0)));
+    let (n, f) = (state.depth_range.0 as f64, state.depth_range.1 as f64);
+    let mut clip_rect = (0, 0, fb.width as i64, fb.height as i64);
+    if let Some(s) = state.scissor {
+        let (x0, y0) = (s.x as i64, s.y as i64);
+        clip_rect = (
+            clip_rect.0.max(x0),
+            clip_rect.1.max(y0),
+            clip_rect.2.min(x0 + s.w.max(0) as i64),
+            clip_rect.3.min(y0 + s.h.max(0) as i64),
+        );
+    }
+    let mut setup = Setup {
+        state,
+        vs: &vs_layout,
+        fs: &fs_layout,
+        outputs: &outputs,
+        planes: Planes::new(&state.clip_planes),
+        clip_rect,
+        vp: [
+            vw / 2.0,
+            lim(vp.x) + vw / 2.0,
+            vh / 2.0,
+            lim(vp.y) + vh / 2.0,
+            (f - n) / 2.0,
+            (n + f) / 2.0,
+        ],
+        prims: Vec::new(),
+    };
+    assemble(mode, vertex_of.len(), |p| {
+        let v = |i: usize| vertex_of.get(i).copied().unwrap_or(0);
+        match p {
+            Assembled::Point(i) => {
+                let cv = setup.clip_vertex(v(i));
+                let prov = cv.data.clone();
+                setup.point(&cv, false, 0.0, &prov);
+            }
+            Assembled::Line(a, b) => {
+                let (ca, cb) = (setup.clip_vertex(v(a)), setup.clip_vertex(v(b)));
+                let prov = cb.data.clone();
+                setup.line(&ca, &cb, false, 0.0, &prov);
+            }
+            Assembled::Polygon(vs, prov) => {
+                let vs: Vec<usize> = vs.into_iter().map(v).collect();
+                setup.polygon(&vs, v(prov));
+            }
+        }
+    });
+    let prims = setup.prims;
+
+    let stage = FragmentStage {
+        shader: fs,
+        uniforms: fs_uniforms,
+        textures,
+        layout: &fs_layout,
+        state,
+        constant: fs_layout
+            .links
+            .iter()
+            .map(|l| l.color && state.flat_shading)
+            .collect(),
+        early: fs_layout.frag_depth.is_none(),
+    };
+    let (w, h) = (fb.width as i64, fb.height as i64);
+    let mut ty = 0;
+    while ty < h {
+        let mut tx = 0;
+        while tx < w {
+            let tile = (tx, ty, (tx + TILE).min(w), (ty + TILE).min(h));
+            for prim in &prims {
+                let b = prim.bounds;
+                if b.0 < tile.2 && b.2 > tile.0 && b.1 < tile.3 && b.3 > tile.1 {
+                    stage.shade(fb, prim, tile)?;
+                }
+            }
+            tx += TILE;
+        }
+        ty += TILE;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn collect(mode: Mode, n: usize) -> Vec<Assembled> {
+        let mut v = Vec::new();
+        assemble(mode, n, |p| v.push(p));
+        v
+    }
+
+    #[test]
+    fn assembly_and_provoking_vertices() {
+        use Assembled::*;
+        assert_eq!(collect(Mode::Lines, 5), vec![Line(0, 1), Line(2, 3)]);
+        assert_eq!(
+            collect(Mode::LineLoop, 3),
+            vec![Line(0, 1), Line(1, 2), Line(2, 0)]
+        );
+        assert_eq!(
+            collect(Mode::TriangleStrip, 5),
+            vec![
+                Polygon(vec![0, 1, 2], 2),
+                Polygon(vec![2, 1, 3], 3),
+                Polygon(vec![2, 3, 4], 4)
+            ]
+        );
+        assert_eq!(
+            collect(Mode::TriangleFan, 4),
+            vec![Polygon(vec![0, 1, 2], 2), Polygon(vec![0, 2, 3], 3)]
+        );
+        assert_eq!(collect(Mode::Quads, 7), vec![Polygon(vec![0, 1, 2, 3], 3)]);
+        assert_eq!(
+            collect(Mode::QuadStrip, 6),
+            vec![Polygon(vec![0, 1, 3, 2], 3), Polygon(vec![2, 3, 5, 4], 5)]
+        );
+        assert_eq!(
+            collect(Mode::Polygon, 5),
+            vec![Polygon(vec![0, 1, 2, 3, 4], 0)]
+        );
+        assert_eq!(collect(Mode::Polygon, 2), vec![]);
+        assert_eq!(collect(Mode::Triangles, 2), vec![]);
+    }
+}

@@ -1,0 +1,525 @@
+//! Set-up primitives in window space: which pixels they cover (grouped in
+//! 2×2 quads) and the interpolation weights at any pixel center.
+//!
+//! - Triangles: fixed-point edge functions with [`SUBPIXEL_BITS`] bits of
+//!   subpixel precision, sampled at pixel centers (x + ½, y + ½), with a
+//!   top-left fill rule so that a pixel on an edge shared by two triangles
+//!   is drawn exactly once. In GL's y-up window space, with the triangle
+//!   oriented counter-clockwise, an edge is *left* when it runs downwards
+//!   and *top* when it is horizontal and runs towards −x.
+//! - Lines (GL 2.1 §3.4): for an x-major segment, each pixel column whose
+//!   center lies in the half-open span from the first to the last endpoint
+//!   produces the pixel row `floor(y)` at that center (a column of
+//!   `round(width)` pixels for wide lines); y-major lines likewise. This
+//!   matches the diamond-exit rule except at some endpoints.
+//! - Points (GL 2.1 §3.3): the non-antialiased square of the rounded
+//!   width, or for point sprites the square of the exact size whose pixel
+//!   centers lie inside it.
+//!
+//! Interpolation: triangles and lines are perspective-correct
+//! (GL 2.1 eq. 3.6 and 3.5: barycentrics weighted by 1/w), window z and 1/w
+//! are linear in window space. Pixels outside the primitive (quad helpers)
+//! get the extrapolated values.
+
+/// Bits of subpixel precision of triangle vertices.
+pub const SUBPIXEL_BITS: u32 = 8;
+const ONE: i64 = 1 << SUBPIXEL_BITS;
+const HALF: i64 = ONE / 2;
+/// Fixed-point coordinates are clamped to ±2^28 (±2^20 pixels) so edge
+/// function products stay within i64.
+const FIXED_LIMIT: i64 = 1 << 28;
+
+/// Half-open pixel rectangle `(x0, y0, x1, y1)`.
+pub(crate) type PixelRect = (i64, i64, i64, i64);
+
+/// A vertex after the viewport transform.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct WinVertex {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+    /// 1 / w_clip.
+    pub inv_w: f64,
+}
+
+#[derive(Clone, Debug)]
+pub(crate) enum Shape {
+    Triangle {
+        /// Fixed-point window positions.
+        p: [(i64, i64); 3],
+        /// +1 when counter-clockwise in window space, −1 otherwise.
+        sign: i64,
+        /// Twice the area in fixed-point units², positive.
+        area2: i64,
+        v: [WinVertex; 3],
+    },
+    Line {
+        v: [WinVertex; 2],
+        width: i64,
+    },
+    Point {
+        v: WinVertex,
+        /// The size used for gl_PointCoord.
+        size: f64,
+        /// Covered pixels `[x0, x1) × [y0, y1)`.
+        square: PixelRect,
+    },
+}
+
+/// Where a pixel center sits relative to a primitive.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct Interp {
+    /// Window z (before polygon offset).
+    pub z: f64,
+    /// Interpolated 1 / w_clip (gl_FragCoord.w).
+    pub inv_w: f64,
+    /// Perspective-correct weights of the primitive's vertices.
+    pub weights: [f64; 3],
+}
+
+/// Edge k of a triangle: from vertex k+1 to vertex k+2 (opposite vertex k).
+fn edge(p: &[(i64, i64); 3], k: usize, x: i64, y: i64) -> i64 {
+    let a = p[(k + 1) % 3];
+    let b = p[(k + 2) % 3];
+    (b.0 - a.0) * (y - a.1) - (b.1 - a.1) * (x - a.0)
+}
+
+/// Top-left rule for edge k of a triangle of orientation `sign`.
+fn owns_edge(p: &[(i64, i64); 3], k: usize, sign: i64) -> bool {
+    let a = p[(k + 1) % 3];
+    let b = p[(k + 2) % 3];
+    let (dx, dy) = (sign * (b.0 - a.0), sign * (b.1 - a.1));
+    dy < 0 || (dy == 0 && dx < 0)
+}
+
+pub(crate) fn to_fixed(c: f64) -> i64 {
+    let f = (c * ONE as f64).round();
+    if f.is_nan() {
+        0
+    } else {
+        (f as i64).clamp(-FIXED_LIMIT, FIXED_LIMIT)
+    }
+}
+
+fn intersect(a: PixelRect, b: PixelRect) -> PixelRect {
+    (a.0.max(b.0), a.1.max(b.1), a.2.min(b.2), a.3.min(b.3))
+}
+
+impl Shape {
+    /// A triangle; `None` when it has no area after snapping.
+    pub fn triangle(v: [WinVertex; 3]) -> Option<Shape> {
+        let p = v.map(|w| (to_fixed(w.x), to_fixed(w.y)));
+        let a = edge(&p, 0, p[0].0, p[0].1);
+        if a == 0 {
+            return None;
+        }
+        Some(Shape::Triangle {
+            p,
+            sign: a.signum(),
+            area2: a.abs(),
+            v,
+        })
+    }
+
+    pub fn line(v: [WinVertex; 2], width: f32) -> Shape {
+        let w = if width.is_nan() {
+            1.0
+        } else {
+            width.clamp(1.0, 64.0)
+        };
+        Shape::Line {
+            v,
+            width: (w as f64).round().max(1.0) as i64,
+        }
+    }
+
+    /// A point of `size` (already clamped to a sane range).
+    pub fn point(v: WinVertex, size: f64, sprite: bool) -> Shape {
+        let square = if sprite {
+            // Pixel centers inside [x - s/2, x + s/2).
+            let lo = |c: f64| (c - size / 2.0 - 0.5).ceil() as i64;
+            let hi = |c: f64| (c + size / 2.0 - 0.5).ceil() as i64;
+            (lo(v.x), lo(v.y), hi(v.x), hi(v.y))
+        } else {
+            let w = size.round().max(1.0) as i64;
+            let start = |c: f64| {
+                if w % 2 == 1 {
+                    c.floor() as i64 - (w - 1) / 2
+                } else {
+                    (c + 0.5).floor() as i64 - w / 2
+                }
+            };
+            let (x0, y0) = (start(v.x), start(v.y));
+            (x0, y0, x0 + w, y0 + w)
+        };
+        Shape::Point { v, size, square }
+    }
+
+    /// Pixel bounds of the primitive (before clipping to the framebuffer).
+    pub fn bounds(&self) -> PixelRect {
+        match self {
+            Shape::Triangle { p, .. } => {
+                let minx = p.iter().map(|q| q.0).min().unwrap_or(0);
+                let maxx = p.iter().map(|q| q.0).max().unwrap_or(0);
+                let miny = p.iter().map(|q| q.1).min().unwrap_or(0);
+                let maxy = p.iter().map(|q| q.1).max().unwrap_or(0);
+                // Pixels whose centers lie in [min, max].
+                let lo = |m: i64| (m - HALF + ONE - 1).div_euclid(ONE);
+                let hi = |m: i64| (m - HALF).div_euclid(ONE) + 1;
+                (lo(minx), lo(miny), hi(maxx), hi(maxy))
+            }
+            Shape::Line { v, width } => {
+                let pad = width / 2 + 2;
+                let minx = v[0].x.min(v[1].x).floor() as i64 - pad;
+                let maxx = v[0].x.max(v[1].x).ceil() as i64 + pad;
+                let miny = v[0].y.min(v[1].y).floor() as i64 - pad;
+                let maxy = v[0].y.max(v[1].y).ceil() as i64 + pad;
+                (minx, miny, maxx, maxy)
+            }
+            Shape::Point { square, .. } => *square,
+        }
+    }
+
+    /// Covered quads inside `clip` (half-open, even-aligned origin not
+    /// required): `(qx, qy, mask)` with mask bit `(y - qy) * 2 + (x - qx)`,
+    /// quads in row-major order.
+    pub fn quads(&self, clip: PixelRect) -> Vec<(i64, i64, u8)> {
+        let r = intersect(self.bounds(), clip);
+        let mut out = Vec::new();
+        if r.0 >= r.2 || r.1 >= r.3 {
+            return out;
+        }
+        match self {
+            Shape::Triangle { p, sign, .. } => {
+                let owns = [0, 1, 2].map(|k| owns_edge(p, k, *sign));
+                let covered = |x: i64, y: i64| -> bool {
+                    let (cx, cy) = (x * ONE + HALF, y * ONE + HALF);
+                    (0..3).all(|k| {
+                        let e = sign * edge(p, k, cx, cy);
+                        e > 0 || (e == 0 && owns[k])
+                    })
+                };
+                for_each_quad(r, |qx, qy| {
+                    let mut mask = 0u8;
+                    for bit in 0..4 {
+                        let (x, y) = (qx + (bit & 1), qy + (bit >> 1));
+                        if inside(r, x, y) && covered(x, y) {
+                            mask |= 1 << bit;
+                        }
+                    }
+                    if mask != 0 {
+                        out.push((qx, qy, mask));
+                    }
+                });
+            }
+            Shape::Point { .. } => {
+                for_each_quad(r, |qx, qy| {
+                    let mut mask = 0u8;
+                    for bit in 0..4 {
+                        if inside(r, qx + (bit & 1), qy + (bit >> 1)) {
+                            mask |= 1 << bit;
+                        }
+                    }
+                    if mask != 0 {
+                        out.push((qx, qy, mask));
+                    }
+                });
+            }
+            Shape::Line { .. } => {
+                let mut pixels = self.line_pixels(r);
+                pixels.sort_by_key(|&(x, y)| (y.div_euclid(2), x.div_euclid(2), y, x));
+                for (x, y) in pixels {
+                    let (qx, qy) = (x & !1, y & !1);
+                    let bit = ((y - qy) * 2 + (x - qx)) as u8;
+                    match out.last_mut() {
+                        Some(last) if last.0 == qx && last.1 == qy => last.2 |= 1 << bit,
+                        _ => out.push((qx, qy, 1 << bit)),
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// The pixels of a line inside `r`.
+    fn line_pixels(&self, r: PixelRect) -> Vec<(i64, i64)> {
+        let Shape::Line { v, width } = self else {
+            return Vec::new();
+        };
+        let (a, b) = (v[0], v[1]);
+        let (dx, dy) = (b.x - a.x, b.y - a.y);
+        let x_major = dx.abs() >= dy.abs();
+        // Major axis coordinate, minor axis coordinate.
+        let (a0, a1, b0, b1) = if x_major {
+            (a.x, a.y, b.x, b.y)
+        } else {
+            (a.y, a.x, b.y, b.x)
+        };
+        let (lo_r, hi_r) = if x_major { (r.0, r.2) } else { (r.1, r.3) };
+        let mut out = Vec::new();
+        if a0 == b0 || !(a0.is_finite() && b0.is_finite()) {
+            return out;
+        }
+        // Centers c = i + ½ in [a0, b0) (or (b0, a0] going backwards).
+        let (first, last) = if a0 < b0 {
+            ((a0 - 0.5).ceil() as i64, (b0 - 0.5).ceil() as i64 - 1)
+        } else {
+            ((b0 - 0.5).floor() as i64 + 1, (a0 - 0.5).floor() as i64)
+        };
+        let first = first.max(lo_r);
+        let last = last.min(hi_r - 1);
+        let slope = (b1 - a1) / (b0 - a0);
+        for i in first..=last {
+            let c = i as f64 + 0.5;
+            let m = a1 + (c - a0) * slope;
+            let j0 = (m - (*width - 1) as f64 / 2.0).floor() as i64;
+            for j in j0..j0.saturating_add(*width) {
+                let (x, y) = if x_major { (i, j) } else { (j, i) };
+                if inside(r, x, y) {
+                    out.push((x, y));
+                }
+            }
+        }
+        out
+    }
+
+    /// Interpolation at the center of pixel (x, y).
+    pub fn interp(&self, x: i64, y: i64) -> Interp {
+        match self {
+            Shape::Triangle { p, sign, area2, v } => {
+                let (cx, cy) = (x * ONE + HALF, y * ONE + HALF);
+                let a = *area2 as f64;
+                let b = [0, 1, 2].map(|k| (sign * edge(p, k, cx, cy)) as f64 / a);
+                let z = b[0] * v[0].z + b[1] * v[1].z + b[2] * v[2].z;
+                let pw = [0, 1, 2].map(|k| b[k] * v[k].inv_w);
+                let inv_w = pw[0] + pw[1] + pw[2];
+                Interp {
+                    z,
+                    inv_w,
+                    weights: pw.map(|q| q / inv_w),
+                }
+            }
+            Shape::Line { v, .. } => {
+                // GL 2.1 eq. 3.1: t = (p - pa)·(pb - pa) / |pb - pa|².
+                let (dx, dy) = (v[1].x - v[0].x, v[1].y - v[0].y);
+                let (px, py) = (x as f64 + 0.5 - v[0].x, y as f64 + 0.5 - v[0].y);
+                let len2 = dx * dx + dy * dy;
+                let t = if len2 > 0.0 {
+                    (px * dx + py * dy) / len2
+                } else {
+                    0.0
+                };
+                let z = (1.0 - t) * v[0].z + t * v[1].z;
+                let p0 = (1.0 - t) * v[0].inv_w;
+                let p1 = t * v[1].inv_w;
+                let inv_w = p0 + p1;
+                Interp {
+                    z,
+                    inv_w,
+                    weights: [p0 / inv_w, p1 / inv_w, 0.0],
+                }
+            }
+            Shape::Point { v, .. } => Interp {
+                z: v.z,
+                inv_w: v.inv_w,
+                weights: [1.0, 0.0, 0.0],
+            },
+        }
+    }
+
+    /// GL 2.1 eq. 3.3/3.4: gl_PointCoord at pixel (x, y) (zeros for
+    /// primitives other than points).
+    pub fn point_coord(&self, x: i64, y: i64, lower_left: bool) -> (f32, f32) {
+        match self {
+            Shape::Point { v, size, .. } => {
+                let s = 0.5 + (x as f64 + 0.5 - v.x) / size;
+                let dt = (y as f64 + 0.5 - v.y) / size;
+                let t = if lower_left { 0.5 + dt } else { 0.5 - dt };
+                (s as f32, t as f32)
+            }
+            _ => (0.0, 0.0),
+        }
+    }
+
+    /// max(|∂z/∂x|, |∂z/∂y|) of a triangle's plane (polygon offset).
+    pub fn max_depth_slope(&self) -> f64 {
+        match self {
+            Shape::Triangle { v, .. } => {
+                let (x1, y1, z1) = (v[1].x - v[0].x, v[1].y - v[0].y, v[1].z - v[0].z);
+                let (x2, y2, z2) = (v[2].x - v[0].x, v[2].y - v[0].y, v[2].z - v[0].z);
+                let det = x1 * y2 - x2 * y1;
+                if det == 0.0 {
+                    return 0.0;
+                }
+                let dzdx = (z1 * y2 - z2 * y1) / det;
+                let dzdy = (x1 * z2 - x2 * z1) / det;
+                let m = dzdx.abs().max(dzdy.abs());
+                if m.is_finite() {
+                    m
+                } else {
+                    0.0
+                }
+            }
+            _ => 0.0,
+        }
+    }
+}
+
+fn inside(r: PixelRect, x: i64, y: i64) -> bool {
+    x >= r.0 && x < r.2 && y >= r.1 && y < r.3
+}
+
+fn for_each_quad(r: PixelRect, mut f: impl FnMut(i64, i64)) {
+    let (x0, y0) = (r.0 & !1, r.1 & !1);
+    let mut qy = y0;
+    while qy < r.3 {
+        let mut qx = x0;
+        while qx < r.2 {
+            f(qx, qy);
+            qx += 2;
+        }
+        qy += 2;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn wv(x: f64, y: f64) -> WinVertex {
+        WinVertex {
+            x,
+            y,
+            z: 0.5,
+            inv_w: 1.0,
+        }
+    }
+
+    fn coverage(shapes: &[Shape], size: i64) -> Vec<u32> {
+        let mut hits = vec![0u32; (size * size) as usize];
+        for s in shapes {
+            for (qx, qy, mask) in s.quads((0, 0, size, size)) {
+                for bit in 0..4 {
+                    if mask & (1 << bit) != 0 {
+                        let (x, y) = (qx + (bit & 1), qy + (bit >> 1));
+                        hits[(y * size + x) as usize] += 1;
+                    }
+                }
+            }
+        }
+        hits
+    }
+
+    #[test]
+    fn shared_edges_cover_each_pixel_once() {
+        // A square split along its diagonal, with edges through pixel centers.
+        let a = wv(0.5, 0.5);
+        let b = wv(6.5, 0.5);
+        let c = wv(6.5, 6.5);
+        let d = wv(0.5, 6.5);
+        for (t1, t2) in [([a, b, c], [a, c, d]), ([c, b, a], [d, c, a])] {
+            let shapes = [Shape::triangle(t1).unwrap(), Shape::triangle(t2).unwrap()];
+            let hits = coverage(&shapes, 8);
+            for y in 0..8 {
+                for x in 0..8 {
+                    // Left and top edges are owned, right and bottom not.
+                    let want = u32::from((0..6).contains(&x) && (1..7).contains(&y));
+                    assert_eq!(hits[(y * 8 + x) as usize], want, "pixel {x},{y}");
+                }
+            }
+        }
+        // A fan of odd slopes around a shared center: still no double hits
+        // and no holes inside.
+        let center = wv(5.3, 4.7);
+        let ring = [
+            wv(0.1, 0.2),
+            wv(9.7, 0.9),
+            wv(9.9, 8.8),
+            wv(4.4, 9.6),
+            wv(0.3, 7.1),
+        ];
+        let shapes: Vec<Shape> = (0..5)
+            .filter_map(|i| Shape::triangle([center, ring[i], ring[(i + 1) % 5]]))
+            .collect();
+        let hits = coverage(&shapes, 10);
+        assert!(hits.iter().all(|&h| h <= 1));
+        assert_eq!(hits[4 * 10 + 5], 1);
+    }
+
+    #[test]
+    fn top_left_rule() {
+        // Right triangle with a bottom horizontal edge and a left vertical
+        // edge through pixel centers: the left edge is owned, the bottom
+        // (not top) edge is not.
+        let t = Shape::triangle([wv(0.5, 0.5), wv(4.5, 0.5), wv(0.5, 4.5)]).unwrap();
+        let hits = coverage(&[t], 6);
+        assert_eq!(hits[0], 0, "bottom edge excluded");
+        assert_eq!(hits[6], 1, "left edge included");
+    }
+
+    #[test]
+    fn perspective_correct_interpolation() {
+        // Vertex 0 with w = 1, vertex 1 and 2 with w = 4: halfway in screen
+        // space, the weight of vertex 0 is 4 times larger than linear.
+        let v0 = WinVertex {
+            x: 0.0,
+            y: 0.0,
+            z: 0.0,
+            inv_w: 1.0,
+        };
+        let v1 = WinVertex {
+            x: 16.0,
+            y: 0.0,
+            z: 1.0,
+            inv_w: 0.25,
+        };
+        let v2 = WinVertex {
+            x: 0.0,
+            y: 16.0,
+            z: 1.0,
+            inv_w: 0.25,
+        };
+        let t = Shape::triangle([v0, v1, v2]).unwrap();
+        // Pixel (7, 0) center is (7.5, 0.5): b = (1 - 8/16, 7.5/16, 0.5/16).
+        let i = t.interp(7, 0);
+        let b = [0.5, 7.5 / 16.0, 0.5 / 16.0];
+        let inv_w = b[0] + b[1] * 0.25 + b[2] * 0.25;
+        assert!((i.inv_w - inv_w).abs() < 1e-12);
+        assert!((i.z - 0.5).abs() < 1e-12, "z is linear in window space");
+        assert!((i.weights[0] - b[0] / inv_w).abs() < 1e-12);
+        assert!((i.weights.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn line_pixels_half_open() {
+        let l = Shape::line([wv(0.5, 0.3), wv(4.5, 1.3)], 1.0);
+        let q = l.quads((0, 0, 8, 8));
+        let mut px = Vec::new();
+        for (qx, qy, m) in q {
+            for bit in 0..4 {
+                if m & (1 << bit) != 0 {
+                    px.push((qx + (bit & 1), qy + (bit >> 1)));
+                }
+            }
+        }
+        px.sort();
+        assert_eq!(px, vec![(0, 0), (1, 0), (2, 0), (3, 1)]);
+        // Vertical line.
+        let l = Shape::line([wv(2.5, 0.0), wv(2.5, 3.0)], 1.0);
+        assert_eq!(l.quads((0, 0, 8, 8)), vec![(2, 0, 0b0101), (2, 2, 0b0001)]);
+    }
+
+    #[test]
+    fn point_squares() {
+        let p = Shape::point(wv(3.7, 3.2), 1.0, false);
+        assert_eq!(p.bounds(), (3, 3, 4, 4));
+        let p = Shape::point(wv(3.7, 3.2), 2.0, false);
+        assert_eq!(p.bounds(), (3, 2, 5, 4));
+        let p = Shape::point(wv(3.7, 3.2), 3.0, false);
+        assert_eq!(p.bounds(), (2, 2, 5, 5));
+        let p = Shape::point(wv(4.0, 4.0), 2.0, true);
+        assert_eq!(p.bounds(), (3, 3, 5, 5));
+        assert_eq!(p.point_coord(3, 4, false), (0.25, 0.25));
+        assert_eq!(p.point_coord(3, 4, true), (0.25, 0.75));
+    }
+}

@@ -1,0 +1,824 @@
+//! Textures and sampling (GL 2.1 §3.8): 1D/2D/3D/cube textures with mipmaps,
+//! level-of-detail selection from derivatives, NEAREST/LINEAR and the four
+//! mipmap filters, the five wrap modes, cube face selection and depth
+//! texture comparison.
+//!
+//! Texels are RGBA f32 (the gl layer converts formats: LUMINANCE becomes
+//! (L, L, L, 1) and so on; depth textures keep the depth in component 0).
+//! Texture borders are not supported (border width 0); CLAMP and
+//! CLAMP_TO_BORDER sample the border color.
+
+use std::sync::Arc;
+
+use crate::ex::{Lod, SampleRequest, Textures, LANES};
+use crate::state::CompareFunc;
+use glsl::math;
+use glsl::types::SamplerKind;
+
+/// MAX_TEXTURE_LOD_BIAS.
+pub const MAX_LOD_BIAS: f32 = 16.0;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TextureTarget {
+    Tex1D,
+    Tex2D,
+    Tex3D,
+    /// Six faces stored as the layers of each level, in the order
+    /// +X, −X, +Y, −Y, +Z, −Z.
+    Cube,
+}
+
+/// One mipmap level: `width × height × depth` texels, row-major from the
+/// bottom row of the first layer (`(k * height + j) * width + i`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Image {
+    pub width: u32,
+    pub height: u32,
+    pub depth: u32,
+    pub texels: Vec<[f32; 4]>,
+}
+
+impl Image {
+    pub fn new(width: u32, height: u32, depth: u32, texels: Vec<[f32; 4]>) -> Image {
+        Image {
+            width,
+            height,
+            depth,
+            texels,
+        }
+    }
+
+    fn texel(&self, i: usize, j: usize, k: usize) -> [f32; 4] {
+        let (w, h) = (self.width as usize, self.height as usize);
+        self.texels
+            .get((k * h + j) * w + i)
+            .copied()
+            .unwrap_or([0.0, 0.0, 0.0, 1.0])
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MinFilter {
+    Nearest,
+    Linear,
+    NearestMipmapNearest,
+    LinearMipmapNearest,
+    NearestMipmapLinear,
+    LinearMipmapLinear,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MagFilter {
+    Nearest,
+    Linear,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Wrap {
+    Repeat,
+    Clamp,
+    ClampToEdge,
+    ClampToBorder,
+    MirroredRepeat,
+}
+
+/// DEPTH_TEXTURE_MODE: how a depth (or comparison) value r becomes RGBA.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DepthTextureMode {
+    /// (r, r, r, 1)
+    Luminance,
+    /// (r, r, r, r)
+    Intensity,
+    /// (0, 0, 0, r)
+    Alpha,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Texture {
+    pub target: TextureTarget,
+    /// Mipmap levels by level number (level 0 first).
+    pub levels: Vec<Image>,
+    pub min_filter: MinFilter,
+    pub mag_filter: MagFilter,
+    /// TEXTURE_WRAP_S, _T, _R.
+    pub wrap: [Wrap; 3],
+    pub border_color: [f32; 4],
+    pub min_lod: f32,
+    pub max_lod: f32,
+    /// TEXTURE_LOD_BIAS of the texture object.
+    pub lod_bias: f32,
+    pub base_level: u32,
+    pub max_level: u32,
+    /// The internal format is DEPTH_COMPONENT (depth in component 0).
+    pub depth_format: bool,
+    /// TEXTURE_COMPARE_MODE = COMPARE_R_TO_TEXTURE with this function.
+    pub compare: Option<CompareFunc>,
+    pub depth_mode: DepthTextureMode,
+}
+
+impl Texture {
+    /// A texture with GL's initial parameters (NEAREST_MIPMAP_LINEAR,
+    /// LINEAR, REPEAT, ...).
+    pub fn new(target: TextureTarget, levels: Vec<Image>) -> Texture {
+        Texture {
+            target,
+            levels,
+            min_filter: MinFilter::NearestMipmapLinear,
+            mag_filter: MagFilter::Linear,
+            wrap: [Wrap::Repeat; 3],
+            border_color: [0.0; 4],
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            lod_bias: 0.0,
+            base_level: 0,
+            max_level: 1000,
+            depth_format: false,
+            compare: None,
+            depth_mode: DepthTextureMode::Luminance,
+        }
+    }
+
+    fn dims(&self) -> usize {
+        match self.target {
+            TextureTarget::Tex1D => 1,
+            TextureTarget::Tex2D | TextureTarget::Cube => 2,
+            TextureTarget::Tex3D => 3,
+        }
+    }
+
+    fn mipmapped(&self) -> bool {
+        !matches!(self.min_filter, MinFilter::Nearest | MinFilter::Linear)
+    }
+
+    /// Size of an image along `axis` as it matters for this target.
+    fn size(&self, img: &Image, axis: usize) -> u32 {
+        match (axis, self.target) {
+            (0, _) => img.width,
+            (1, TextureTarget::Tex1D) => 1,
+            (1, _) => img.height,
+            (2, TextureTarget::Tex3D) => img.depth,
+            (2, TextureTarget::Cube) => 6,
+            _ => 1,
+        }
+    }
+
+    /// The last level used, q = min(p, level_max) (GL 2.1 §3.8.8), or
+    /// `None` when the texture is incomplete (§3.8.10).
+    pub fn last_level(&self) -> Option<usize> {
+        let base = self.base_level as usize;
+        if self.base_level > self.max_level {
+            return None;
+        }
+        let b = self.levels.get(base)?;
+        let dims = [self.size(b, 0), self.size(b, 1), self.size(b, 2)];
+        let ok = |img: &Image, want: [u32; 3]| {
+            let have = [self.size(img, 0), self.size(img, 1), self.size(img, 2)];
+            have == want
+                && img.texels.len() == img.width as usize * img.height as usize * img.depth as usize
+        };
+        if dims.contains(&0) || !ok(b, dims) {
+            return None;
+        }
+        if self.target == TextureTarget::Cube && b.width != b.height {
+            return None;
+        }
+        if !self.mipmapped() {
+            return Some(base);
+        }
+        let largest = dims[..self.dims()].iter().copied().max().unwrap_or(1);
+        let p = base + (31 - largest.leading_zeros()) as usize;
+        let q = p.min(self.max_level as usize);
+        for (i, level) in (base + 1..=q).enumerate() {
+            let shift = (i + 1) as u32;
+            let mut want = dims.map(|d| (d >> shift).max(1));
+            for (a, w) in want.iter_mut().enumerate() {
+                if a >= self.dims() {
+                    *w = dims[a];
+                }
+            }
+            if !ok(self.levels.get(level)?, want) {
+                return None;
+            }
+        }
+        Some(q)
+    }
+}
+
+/// The textures bound to one texture unit, and the unit's LOD bias.
+#[derive(Clone, Debug, Default)]
+pub struct TextureUnit {
+    pub tex_1d: Option<Arc<Texture>>,
+    pub tex_2d: Option<Arc<Texture>>,
+    pub tex_3d: Option<Arc<Texture>>,
+    pub cube: Option<Arc<Texture>>,
+    /// TEXTURE_LOD_BIAS of the texture environment.
+    pub lod_bias: f32,
+}
+
+/// All texture units; samples for the exec crate.
+#[derive(Clone, Debug, Default)]
+pub struct TextureUnits {
+    pub units: Vec<TextureUnit>,
+}
+
+const MISSING: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
+
+impl Textures for TextureUnits {
+    fn sample(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]) {
+        for lane in 0..LANES {
+            if req.mask & (1 << lane) == 0 {
+                continue;
+            }
+            let rgba = self.sample_lane(req, lane);
+            for (o, v) in out.iter_mut().zip(rgba) {
+                o[lane] = v;
+            }
+        }
+    }
+}
+
+impl TextureUnits {
+    fn sample_lane(&self, req: &SampleRequest, lane: usize) -> [f32; 4] {
+        let Some(unit) = self.units.get(req.unit[lane] as usize) else {
+            return MISSING;
+        };
+        let tex = match req.target {
+            SamplerKind::Sampler1D | SamplerKind::Sampler1DShadow => &unit.tex_1d,
+            SamplerKind::Sampler2D | SamplerKind::Sampler2DShadow => &unit.tex_2d,
+            SamplerKind::Sampler3D => &unit.tex_3d,
+            SamplerKind::SamplerCube => &unit.cube,
+        };
+        let Some(tex) = tex.as_deref() else {
+            return MISSING;
+        };
+        let Some(q) = tex.last_level() else {
+            return MISSING;
+        };
+        let coord = [0, 1, 2].map(|c| req.coord[c][lane]);
+        let (lod_base, shader_bias) = match &req.lod {
+            Lod::Explicit(l) => (LodBase::Value(l[lane]), 0.0),
+            Lod::Derivatives { ddx, ddy, bias } => (
+                LodBase::Derivatives(
+                    [0, 1, 2].map(|c| ddx[c][lane]),
+                    [0, 1, 2].map(|c| ddy[c][lane]),
+                ),
+                bias[lane],
+            ),
+        };
+        let reference = req.compare.map(|r| r[lane]);
+        sample(
+            tex,
+            q,
+            coord,
+            lod_base,
+            unit.lod_bias + shader_bias,
+            reference,
+        )
+    }
+}
+
+/// λ_base source (GL 2.1 eq. 3.18): the scale factor from derivatives, or
+/// an explicit value (texture*Lod, or 0 outside fragment shaders).
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum LodBase {
+    Derivatives([f32; 3], [f32; 3]),
+    Value(f32),
+}
+
+/// Cube face selection (GL 2.1 §3.8.6, table 3.19): face index and
+/// (sc, tc, ma). Ties prefer x over y over z.
+pub(crate) fn cube_face(r: [f32; 3]) -> (usize, f32, f32, f32) {
+    let [x, y, z] = r;
+    let (ax, ay, az) = (math::abs(x), math::abs(y), math::abs(z));
+    if ax >= ay && ax >= az {
+        if x >= 0.0 {
+            (0, -z, -y, x)
+        } else {
+            (1, z, -y, x)
+        }
+    } else if ay >= az {
+        if y >= 0.0 {
+            (2, x, z, y)
+        } else {
+            (3, x, -z, y)
+        }
+    } else if z >= 0.0 {
+        (4, x, -y, z)
+    } else {
+        (5, -x, -y, z)
+    }
+}
+
+/// Derivative of `sc / |ma|` given the derivatives of the direction.
+fn cube_deriv(face: usize, r: [f32; 3], d: [f32; 3]) -> (f32, f32) {
+    // Same table applied to the derivative vector.
+    let pick = |v: [f32; 3]| -> (f32, f32, f32) {
+        let [x, y, z] = v;
+        match face {
+            0 => (-z, -y, x),
+            1 => (z, -y, x),
+            2 => (x, z, y),
+            3 => (x, -z, y),
+            4 => (x, -y, z),
+            _ => (-x, -y, z),
+        }
+    };
+    let (sc, tc, ma) = pick(r);
+    let (dsc, dtc, dma) = pick(d);
+    let ama = math::abs(ma);
+    let dama = if ma >= 0.0 { dma } else { -dma };
+    let m2 = ama * ama;
+    (
+        0.5 * (dsc * ama - sc * dama) / m2,
+        0.5 * (dtc * ama - tc * dama) / m2,
+    )
+}
+
+/// Samples `tex` (complete, last level `q`) at `coord` (s, t, r).
+pub(crate) fn sample(
+    tex: &Texture,
+    q: usize,
+    coord: [f32; 3],
+    lod: LodBase,
+    extra_bias: f32,
+    reference: Option<f32>,
+) -> [f32; 4] {
+    let base = tex.base_level as usize;
+    let Some(base_img) = tex.levels.get(base) else {
+        return MISSING;
+    };
+    // Face selection turns a cube lookup into a 2D one on layer `face`.
+    let (st, layer, derivs) = if tex.target == TextureTarget::Cube {
+        let (face, sc, tc, ma) = cube_face(coord);
+        let ama = math::abs(ma);
+        let s = 0.5 * (sc / ama + 1.0);
+        let t = 0.5 * (tc / ama + 1.0);
+        let derivs = match lod {
+            LodBase::Derivatives(dx, dy) => {
+                let (sx, tx) = cube_deriv(face, coord, dx);
+                let (sy, ty) = cube_deriv(face, coord, dy);
+                LodBase::Derivatives([sx, tx, 0.0], [sy, ty, 0.0])
+            }
+            other => other,
+        };
+        ([s, t, 0.0], Some(face), derivs)
+    } else {
+        (coord, None, lod)
+    };
+
+    // GL 2.1 §3.8.8: λ = clamp(λ_base + clamp(biases), lod_min, lod_max).
+    let lambda_base = match derivs {
+        LodBase::Value(v) => v,
+        LodBase::Derivatives(dx, dy) => {
+            let mut sx = 0.0f32;
+            let mut sy = 0.0f32;
+            for a in 0..tex.dims() {
+                let size = tex.size(base_img, a) as f32;
+                let (ux, uy) = (dx[a] * size, dy[a] * size);
+                sx += ux * ux;
+                sy += uy * uy;
+            }
+            let rho = math::max(math::sqrt(sx), math::sqrt(sy));
+            math::log2(rho)
+        }
+    };
+    let bias = (tex.lod_bias + extra_bias).clamp(-MAX_LOD_BIAS, MAX_LOD_BIAS);
+    let mut lambda = lambda_base + bias;
+    if lambda > tex.max_lod {
+        lambda = tex.max_lod;
+    }
+    if lambda < tex.min_lod {
+        lambda = tex.min_lod;
+    }
+
+    // §3.8.9: the magnification / minification switch-over point c.
+    let c = if tex.mag_filter == MagFilter::Linear
+        && matches!(
+            tex.min_filter,
+            MinFilter::NearestMipmapNearest | MinFilter::NearestMipmapLinear
+        ) {
+        0.5
+    } else {
+        0.0
+    };
+    let reference = reference.map(|r| r.clamp(0.0, 1.0));
+    let one = |level: usize, linear: bool| -> [f32; 4] {
+        match tex.levels.get(level) {
+            Some(img) => filter(tex, img, st, layer, linear, reference),
+            None => MISSING,
+        }
+    };
+    let value = if lambda.is_nan() || lambda <= c {
+        one(base, tex.mag_filter == MagFilter::Linear)
+    } else {
+        let lb = base as f32 + lambda;
+        match tex.min_filter {
+            MinFilter::Nearest => one(base, false),
+            MinFilter::Linear => one(base, true),
+            MinFilter::NearestMipmapNearest | MinFilter::LinearMipmapNearest => {
+                let linear = tex.min_filter == MinFilter::LinearMipmapNearest;
+                // Eq. 3.27.
+                let d = if lambda <= 0.5 {
+                    base
+                } else if lb <= q as f32 + 0.5 {
+                    ((math::ceil(lb + 0.5) - 1.0) as i64).clamp(base as i64, q as i64) as usize
+                } else {
+                    q
+                };
+                one(d, linear)
+            }
+            MinFilter::NearestMipmapLinear | MinFilter::LinearMipmapLinear => {
+                let linear = tex.min_filter == MinFilter::LinearMipmapLinear;
+                // Eq. 3.28/3.29.
+                if lb >= q as f32 {
+                    one(q, linear)
+                } else {
+                    let d1 = (math::floor(lb) as i64).clamp(base as i64, q as i64) as usize;
+                    let d2 = (d1 + 1).min(q);
+                    let f = math::fract(lambda);
+                    let (t1, t2) = (one(d1, linear), one(d2, linear));
+                    std::array::from_fn(|i| (1.0 - f) * t1[i] + f * t2[i])
+                }
+            }
+        }
+    };
+    if tex.depth_format {
+        let r = value[0];
+        match tex.depth_mode {
+            DepthTextureMode::Luminance => [r, r, r, 1.0],
+            DepthTextureMode::Intensity => [r, r, r, r],
+            DepthTextureMode::Alpha => [0.0, 0.0, 0.0, r],
+        }
+    } else {
+        value
+    }
+}
+
+/// A wrapped texel coordinate: `None` selects the border color.
+type Texel = Option<usize>;
+
+fn mirror(f: f32) -> f32 {
+    let fl = math::floor(f);
+    let fr = f - fl;
+    if math::modulo(fl, 2.0) == 0.0 {
+        fr
+    } else {
+        1.0 - fr
+    }
+}
+
+/// GL 2.1 §3.8.7: the coordinate after wrapping (before scaling by size).
+fn wrap_coord(s: f32, wrap: Wrap, n: u32) -> f32 {
+    let half = 0.5 / n as f32;
+    match wrap {
+        Wrap::Repeat => math::fract(s),
+        Wrap::Clamp => s.clamp(0.0, 1.0),
+        Wrap::ClampToEdge => s.clamp(half, 1.0 - half),
+        Wrap::ClampToBorder => s.clamp(-half, 1.0 + half),
+        Wrap::MirroredRepeat => mirror(s).clamp(half, 1.0 - half),
+    }
+}
+
+fn index(i: i64, wrap: Wrap, n: u32) -> Texel {
+    let n = n as i64;
+    match wrap {
+        Wrap::Repeat => Some(i.rem_euclid(n) as usize),
+        Wrap::ClampToEdge | Wrap::MirroredRepeat => Some(i.clamp(0, n - 1) as usize),
+        Wrap::Clamp | Wrap::ClampToBorder => (0..n).contains(&i).then_some(i as usize),
+    }
+}
+
+/// NEAREST (eq. 3.23–3.25) or LINEAR (eq. 3.26) on one level. For depth
+/// textures the result's component 0 is the depth, or the comparison
+/// result against `reference` (GL 2.1 §3.8.14), filtered.
+fn filter(
+    tex: &Texture,
+    img: &Image,
+    st: [f32; 3],
+    layer: Option<usize>,
+    linear: bool,
+    reference: Option<f32>,
+) -> [f32; 4] {
+    let dims = if layer.is_some() { 2 } else { tex.dims() };
+    let sizes = [img.width, img.height, img.depth].map(|s| s.max(1));
+    // Per axis: (texel 0, texel 1, weight of texel 1).
+    let mut axes: [(Texel, Texel, f32); 3] = [(Some(0), Some(0), 0.0); 3];
+    for a in 0..dims {
+        let n = sizes[a];
+        let wrap = tex.wrap[a];
+        let u = wrap_coord(st[a], wrap, n) * n as f32;
+        axes[a] = if linear {
+            let v = u - 0.5;
+            let i0 = math::floor(v);
+            let alpha = v - i0;
+            let i0 = i0 as i64;
+            (
+                index(i0, wrap, n),
+                index(i0.saturating_add(1), wrap, n),
+                alpha,
+            )
+        } else {
+            let i = math::floor(u) as i64;
+            let i = match wrap {
+                // s = 1 selects the last texel (eq. 3.23).
+                Wrap::Clamp => i.min(n as i64 - 1),
+                _ => i,
+            };
+            (index(i, wrap, n), None, 0.0)
+        };
+    }
+    if let Some(face) = layer {
+        axes[2] = (Some(face), None, 0.0);
+    }
+    let fetch = |i: Texel, j: Texel, k: Texel| -> [f32; 4] {
+        let t = match (i, j, k) {
+            (Some(i), Some(j), Some(k)) => img.texel(i, j, k),
+            _ => tex.border_color,
+        };
+        match (tex.depth_format, tex.compare, reference) {
+            (true, Some(func), Some(r)) => {
+                let d = t[0];
+                let pass = if func.test(r, d) { 1.0 } else { 0.0 };
+                [pass, pass, pass, pass]
+            }
+            _ => t,
+        }
+    };
+    if !linear {
+        return fetch(axes[0].0, axes[1].0, axes[2].0);
+    }
+    let mut acc = [0.0f32; 4];
+    let corners = 1usize << dims;
+    for corner in 0..corners {
+        let mut w = 1.0f32;
+        let mut idx = [None; 3];
+        for a in 0..3 {
+            let (t0, t1, alpha) = axes[a];
+            if a < dims {
+                let hi = corner & (1 << a) != 0;
+                idx[a] = if hi { t1 } else { t0 };
+                w *= if hi { alpha } else { 1.0 - alpha };
+            } else {
+                idx[a] = t0;
+            }
+        }
+        let t = fetch(idx[0], idx[1], idx[2]);
+        for c in 0..4 {
+            acc[c] += w * t[c];
+        }
+    }
+    acc
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn solid(w: u32, h: u32, color: [f32; 4]) -> Image {
+        Image::new(w, h, 1, vec![color; (w * h) as usize])
+    }
+
+    /// A 2D texture whose texel (i, j) is (i, j, level, 1).
+    fn ramp(w: u32, h: u32, levels: u32) -> Texture {
+        let imgs = (0..levels)
+            .map(|l| {
+                let (lw, lh) = ((w >> l).max(1), (h >> l).max(1));
+                let mut t = Vec::new();
+                for j in 0..lh {
+                    for i in 0..lw {
+                        t.push([i as f32, j as f32, l as f32, 1.0]);
+                    }
+                }
+                Image::new(lw, lh, 1, t)
+            })
+            .collect();
+        Texture::new(TextureTarget::Tex2D, imgs)
+    }
+
+    fn at(tex: &Texture, s: f32, t: f32, lod: f32) -> [f32; 4] {
+        let q = tex.last_level().expect("complete");
+        sample(tex, q, [s, t, 0.0], LodBase::Value(lod), 0.0, None)
+    }
+
+    #[test]
+    fn nearest_and_linear() {
+        let mut tex = ramp(4, 4, 1);
+        tex.min_filter = MinFilter::Nearest;
+        tex.mag_filter = MagFilter::Nearest;
+        assert_eq!(at(&tex, 0.3, 0.6, 0.0), [1.0, 2.0, 0.0, 1.0]);
+        tex.mag_filter = MagFilter::Linear;
+        // u = 1.5 → exactly texel 1; v = 2.0 → halfway between 1 and 2.
+        assert_eq!(at(&tex, 1.5 / 4.0, 0.5, 0.0), [1.0, 1.5, 0.0, 1.0]);
+    }
+
+    #[test]
+    fn wrap_modes() {
+        let mut tex = ramp(4, 1, 1);
+        tex.min_filter = MinFilter::Nearest;
+        tex.mag_filter = MagFilter::Nearest;
+        tex.border_color = [9.0; 4];
+        let s = |tex: &Texture, s: f32| at(tex, s, 0.5, 0.0)[0];
+        tex.wrap[0] = Wrap::Repeat;
+        assert_eq!(s(&tex, 1.3), 1.0);
+        assert_eq!(s(&tex, -0.1), 3.0);
+        tex.wrap[0] = Wrap::MirroredRepeat;
+        assert_eq!(s(&tex, 1.1), 3.0);
+        assert_eq!(s(&tex, -0.1), 0.0);
+        tex.wrap[0] = Wrap::ClampToEdge;
+        assert_eq!(s(&tex, 7.0), 3.0);
+        tex.wrap[0] = Wrap::Clamp;
+        assert_eq!(s(&tex, 1.0), 3.0);
+        assert_eq!(s(&tex, -2.0), 0.0);
+        tex.wrap[0] = Wrap::ClampToBorder;
+        assert_eq!(s(&tex, 1.5), 9.0);
+        assert_eq!(s(&tex, 0.9), 3.0);
+        // LINEAR: CLAMP blends with the border at the edge, CLAMP_TO_EDGE not.
+        tex.mag_filter = MagFilter::Linear;
+        tex.wrap[0] = Wrap::Clamp;
+        assert_eq!(s(&tex, 1.0), 0.5 * 3.0 + 0.5 * 9.0);
+        tex.wrap[0] = Wrap::ClampToEdge;
+        assert_eq!(s(&tex, 1.0), 3.0);
+        tex.wrap[0] = Wrap::Repeat;
+        assert_eq!(s(&tex, 0.0), 0.5 * 3.0 + 0.5 * 0.0);
+    }
+
+    #[test]
+    fn lod_selection() {
+        let mut tex = ramp(8, 8, 4);
+        tex.mag_filter = MagFilter::Nearest;
+        tex.min_filter = MinFilter::NearestMipmapNearest;
+        let level = |tex: &Texture, lod: f32| at(tex, 0.5, 0.5, lod)[2];
+        assert_eq!(level(&tex, 0.4), 0.0);
+        assert_eq!(level(&tex, 0.6), 1.0);
+        assert_eq!(level(&tex, 1.4), 1.0);
+        assert_eq!(level(&tex, 1.6), 2.0);
+        assert_eq!(level(&tex, 9.0), 3.0);
+        tex.min_filter = MinFilter::NearestMipmapLinear;
+        assert_eq!(level(&tex, 1.25), 1.25);
+        assert_eq!(level(&tex, 5.0), 3.0);
+        // c = 0.5 for LINEAR mag with a NEAREST_MIPMAP min filter: λ = 0.4 magnifies.
+        tex.mag_filter = MagFilter::Linear;
+        assert_eq!(level(&tex, 0.4), 0.0);
+        // Clamped by MAX_LOD and biased.
+        tex.max_lod = 1.0;
+        assert_eq!(level(&tex, 3.0), 1.0);
+        tex.max_lod = 1000.0;
+        tex.lod_bias = 1.0;
+        assert_eq!(level(&tex, 1.0), 2.0);
+    }
+
+    #[test]
+    fn lod_from_derivatives() {
+        let mut tex = ramp(8, 8, 4);
+        tex.mag_filter = MagFilter::Nearest;
+        tex.min_filter = MinFilter::NearestMipmapNearest;
+        // ds/dx = 4/8: four texels per pixel → λ = 2.
+        let q = tex.last_level().unwrap();
+        let lod = LodBase::Derivatives([0.5, 0.0, 0.0], [0.0, 0.125, 0.0]);
+        assert_eq!(sample(&tex, q, [0.5, 0.5, 0.0], lod, 0.0, None)[2], 2.0);
+        // A shader bias of -1 gives level 1.
+        assert_eq!(sample(&tex, q, [0.5, 0.5, 0.0], lod, -1.0, None)[2], 1.0);
+    }
+
+    #[test]
+    fn incomplete_textures_sample_black() {
+        let mut tex = ramp(8, 8, 2);
+        assert_eq!(tex.last_level(), None, "mipmaps missing");
+        tex.min_filter = MinFilter::Linear;
+        assert_eq!(tex.last_level(), Some(0));
+        let units = TextureUnits {
+            units: vec![TextureUnit {
+                tex_2d: Some(Arc::new(ramp(8, 8, 2))),
+                ..TextureUnit::default()
+            }],
+        };
+        let req = SampleRequest {
+            unit: [0; LANES],
+            target: SamplerKind::Sampler2D,
+            coord: [[0.5; LANES]; 4],
+            compare: None,
+            lod: Lod::Explicit([0.0; LANES]),
+            mask: 0b11,
+        };
+        let mut out = [[7.0; LANES]; 4];
+        units.sample(&req, &mut out);
+        assert_eq!([out[0][0], out[1][0], out[2][0], out[3][0]], MISSING);
+        assert_eq!(out[0][2], 7.0, "lanes outside the mask untouched");
+        // Unbound unit.
+        let req = SampleRequest {
+            unit: [3; LANES],
+            ..req
+        };
+        units.sample(&req, &mut out);
+        assert_eq!(out[3][1], 1.0);
+    }
+
+    #[test]
+    fn cube_face_selection() {
+        assert_eq!(cube_face([1.0, 0.5, -0.2]), (0, 0.2, -0.5, 1.0));
+        assert_eq!(cube_face([-1.0, 0.5, -0.2]), (1, -0.2, -0.5, -1.0));
+        assert_eq!(cube_face([0.1, 2.0, 0.3]), (2, 0.1, 0.3, 2.0));
+        assert_eq!(cube_face([0.1, -2.0, 0.3]), (3, 0.1, -0.3, -2.0));
+        assert_eq!(cube_face([0.1, 0.2, 3.0]), (4, 0.1, -0.2, 3.0));
+        assert_eq!(cube_face([0.1, 0.2, -3.0]), (5, -0.1, -0.2, -3.0));
+        // Sampling picks the face layer.
+        let faces: Vec<[f32; 4]> = (0..6).map(|f| [f as f32, 0.0, 0.0, 1.0]).collect();
+        let mut tex = Texture::new(TextureTarget::Cube, vec![Image::new(1, 1, 6, faces)]);
+        tex.min_filter = MinFilter::Linear;
+        let q = tex.last_level().unwrap();
+        for (dir, face) in [
+            ([0.0, 0.0, -1.0], 5.0),
+            ([0.0, 1.0, 0.0], 2.0),
+            ([-1.0, 0.0, 0.0], 1.0),
+        ] {
+            assert_eq!(
+                sample(&tex, q, dir, LodBase::Value(0.0), 0.0, None)[0],
+                face
+            );
+        }
+    }
+
+    #[test]
+    fn shadow_compare_and_depth_modes() {
+        let mut tex = Texture::new(
+            TextureTarget::Tex2D,
+            vec![solid(2, 2, [0.5, 0.0, 0.0, 1.0])],
+        );
+        tex.min_filter = MinFilter::Nearest;
+        tex.mag_filter = MagFilter::Nearest;
+        tex.depth_format = true;
+        let q = tex.last_level().unwrap();
+        let s = |tex: &Texture, r: f32| {
+            sample(tex, q, [0.5, 0.5, 0.0], LodBase::Value(0.0), 0.0, Some(r))
+        };
+        assert_eq!(
+            s(&tex, 0.9),
+            [0.5, 0.5, 0.5, 1.0],
+            "no compare: depth as luminance"
+        );
+        tex.compare = Some(CompareFunc::LessEqual);
+        assert_eq!(s(&tex, 0.4), [1.0, 1.0, 1.0, 1.0]);
+        assert_eq!(s(&tex, 0.6), [0.0, 0.0, 0.0, 1.0]);
+        tex.depth_mode = DepthTextureMode::Intensity;
+        assert_eq!(s(&tex, 0.6), [0.0; 4]);
+        tex.depth_mode = DepthTextureMode::Alpha;
+        assert_eq!(s(&tex, 0.4), [0.0, 0.0, 0.0, 1.0]);
+        tex.compare = Some(CompareFunc::Greater);
+        // R is clamped to [0, 1]: 7 > 0.5.
+        assert_eq!(s(&tex, 7.0), [0.0, 0.0, 0.0, 1.0]);
+    }
+
+    #[test]
+    fn garbage_coordinates_do_not_panic() {
+        let vals = [
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            1e30,
+            -1e30,
+            0.0,
+            1.0,
+            f32::MAX,
+        ];
+        for target in [
+            TextureTarget::Tex1D,
+            TextureTarget::Tex2D,
+            TextureTarget::Tex3D,
+            TextureTarget::Cube,
+        ] {
+            let depth = if target == TextureTarget::Cube { 6 } else { 2 };
+            let h = if target == TextureTarget::Tex1D { 1 } else { 2 };
+            let d = if target == TextureTarget::Tex3D || target == TextureTarget::Cube {
+                depth
+            } else {
+                1
+            };
+            let img = Image::new(2, h, d, vec![[0.5; 4]; (2 * h * d) as usize]);
+            for wrap in [
+                Wrap::Repeat,
+                Wrap::Clamp,
+                Wrap::ClampToEdge,
+                Wrap::ClampToBorder,
+                Wrap::MirroredRepeat,
+            ] {
+                for filter in [MinFilter::Nearest, MinFilter::LinearMipmapLinear] {
+                    let mut tex = Texture::new(target, vec![img.clone()]);
+                    tex.wrap = [wrap; 3];
+                    tex.min_filter = filter;
+                    tex.mag_filter = MagFilter::Linear;
+                    tex.max_level = 0;
+                    tex.depth_format = true;
+                    tex.compare = Some(CompareFunc::Less);
+                    let q = tex.last_level().expect("complete");
+                    for &a in &vals {
+                        for &b in &vals {
+                            let lod = LodBase::Derivatives([a, b, a], [b, a, 1.0]);
+                            let _ = sample(&tex, q, [a, b, 0.25], lod, b, Some(a));
+                            let _ = sample(&tex, q, [b, 0.5, a], LodBase::Value(a), 0.0, None);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
