@@ -779,3 +779,35 @@ fn redeclared_unsized_local_array_keeps_its_initializer() {
     );
     assert!(c.iter().all(|c| *c == [3.0, 1.0, 2.0, 1.0]), "{c:?}");
 }
+
+/// A rough throughput measure (run with `--release -- --ignored`).
+#[test]
+#[ignore = "benchmark"]
+fn bench_interpreter() {
+    let k = kernel(
+        Stage::Fragment,
+        "uniform vec4 c; varying vec4 v;
+        void main() {
+            vec4 acc = vec4(0.0);
+            for (int i = 0; i < 64; i++) {
+                acc += sin(v * float(i)) * c + vec4(dot(v.xyz, c.xyz));
+            }
+            gl_FragColor = acc;
+        }",
+    );
+    let u = uniforms(&k, &[("c", &fbits(&[0.5, 0.25, 0.125, 1.0]))]);
+    let mut b = frag_batch(&k);
+    let batches = 2000;
+    let t = std::time::Instant::now();
+    for _ in 0..batches {
+        k.run(&mut b, &u, &NoTextures).unwrap();
+    }
+    let s = t.elapsed().as_secs_f64();
+    eprintln!(
+        "{} ops, {} registers: {:.0} fragments/s ({:.1} ns per op per batch)",
+        k.op_count(),
+        k.register_count(),
+        (batches * LANES) as f64 / s,
+        s * 1e9 / (batches as f64 * (k.op_count() as f64 * 64.0 * 0.8))
+    );
+}
