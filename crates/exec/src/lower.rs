@@ -451,6 +451,19 @@ impl<'m> Lowerer<'m> {
         Ok(r)
     }
 
+    /// Evaluates one operand of `?:` under the current mask and stores it
+    /// into the result registers.
+    fn store_operand(&mut self, e: &Expr, result: &[Reg]) -> R<()> {
+        let v = self.expr(e)?;
+        if v.len() != result.len() {
+            return unsupported("?: operand of the wrong size");
+        }
+        for (&d, &a) in result.iter().zip(&v) {
+            self.emit(Op::Store { d, a })?;
+        }
+        Ok(())
+    }
+
     fn temps(&mut self, n: usize) -> R<Val> {
         let r = self.alloc(n)?;
         Ok((r..r + n as u32).collect())
@@ -1414,25 +1427,13 @@ impl<'m> Lowerer<'m> {
             self.emit(Op::AndMask { c })?;
             let j1 = self.pc();
             self.emit(Op::JumpIfNone { target: 0 })?;
-            let a = self.expr(accept)?;
-            if a.len() != n {
-                return unsupported("?: operand of the wrong size");
-            }
-            for (&d, &a) in result.iter().zip(&a) {
-                self.emit(Op::Store { d, a })?;
-            }
+            self.store_operand(accept, &result)?;
             let else_at = self.pc();
             self.patch(j1, else_at);
             self.emit(Op::AndNotMask { slot: s, c })?;
             let j2 = self.pc();
             self.emit(Op::JumpIfNone { target: 0 })?;
-            let b = self.expr(reject)?;
-            if b.len() != n {
-                return unsupported("?: operand of the wrong size");
-            }
-            for (&d, &a) in result.iter().zip(&b) {
-                self.emit(Op::Store { d, a })?;
-            }
+            self.store_operand(reject, &result)?;
             let end = self.pc();
             self.patch(j2, end);
             self.emit(Op::RestoreMask { slot: s })?;
