@@ -99,8 +99,10 @@
 //!   [`limits::MAX_OPS`] instructions are refused.
 
 mod depth_slice;
+mod engine;
 mod interface;
 mod interp;
+mod liveness;
 mod lower;
 mod program;
 
@@ -234,6 +236,17 @@ pub struct Kernel {
     inputs: Vec<(usize, u32, glsl::types::Scalar)>,
     outputs: Vec<(u32, usize, glsl::types::Scalar)>,
     loop_budget: u64,
+    /// The program rewritten for [`engine::run`].
+    code: std::sync::Arc<engine::Code>,
+}
+
+/// A kernel's uniform-only values, computed once for a set of uniform
+/// words ([`Kernel::prepare`]) and reused by [`Kernel::run_prepared`].
+#[derive(Clone, Debug)]
+pub struct Prepared {
+    code: std::sync::Arc<engine::Code>,
+    pool: Vec<[u32; LANES]>,
+    uniforms: Vec<u32>,
 }
 
 impl Kernel {
@@ -250,14 +263,35 @@ impl Kernel {
         limit: u64,
     ) -> Result<Kernel, ExecError> {
         let l = lower::lower(stage, limit)?;
-        Ok(Kernel {
-            stage: stage.stage,
-            program: l.program,
-            interface: l.interface,
-            inputs: l.inputs,
-            outputs: l.outputs,
-            loop_budget: LOOP_BUDGET,
-        })
+        Ok(Kernel::assemble(
+            stage.stage,
+            l.program,
+            l.interface,
+            l.inputs,
+            l.outputs,
+            LOOP_BUDGET,
+        ))
+    }
+
+    fn assemble(
+        stage: glsl::Stage,
+        program: program::Program,
+        interface: Interface,
+        inputs: Vec<(usize, u32, glsl::types::Scalar)>,
+        outputs: Vec<(u32, usize, glsl::types::Scalar)>,
+        loop_budget: u64,
+    ) -> Kernel {
+        let live_out: Vec<u32> = outputs.iter().map(|&(r, _, _)| r).collect();
+        let code = std::sync::Arc::new(engine::compile(&program, &live_out));
+        Kernel {
+            stage,
+            program,
+            interface,
+            inputs,
+            outputs,
+            loop_budget,
+            code,
+        }
     }
 
     /// Sets the loop iteration budget of each `run` (default
@@ -276,6 +310,47 @@ impl Kernel {
 
     /// Runs `main` on the active (and helper) lanes of `batch`.
     pub fn run(
+        &self,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+    ) -> Result<(), ExecError> {
+        engine::run(self, &self.code, batch, uniforms, textures, None)
+    }
+
+    /// The uniform-only values of this kernel for `uniforms` (constants,
+    /// uniform words and what is computed from them alone), for
+    /// [`Kernel::run_prepared`]: a renderer computes them once per draw.
+    pub fn prepare(&self, uniforms: &[u32]) -> Prepared {
+        Prepared {
+            code: self.code.clone(),
+            pool: engine::prepare(&self.code, uniforms),
+            uniforms: uniforms.to_vec(),
+        }
+    }
+
+    /// [`Kernel::run`] with the uniforms of `prepared` (made by
+    /// [`Kernel::prepare`] of this kernel or a clone of it; with another
+    /// kernel's, the values are recomputed, at the cost of a run).
+    pub fn run_prepared(
+        &self,
+        batch: &mut Batch,
+        prepared: &Prepared,
+        textures: &dyn Textures,
+    ) -> Result<(), ExecError> {
+        engine::run(
+            self,
+            &self.code,
+            batch,
+            &prepared.uniforms,
+            textures,
+            std::sync::Arc::ptr_eq(&self.code, &prepared.code).then_some(&prepared.pool[..]),
+        )
+    }
+
+    /// The reference interpreter (what `run_traced` uses), for tests.
+    #[cfg(test)]
+    pub(crate) fn run_reference(
         &self,
         batch: &mut Batch,
         uniforms: &[u32],
@@ -344,14 +419,14 @@ impl Kernel {
             .collect();
         let live_out: Vec<u32> = outputs.iter().map(|&(r, _, _)| r).collect();
         let program = depth_slice::slice(&self.program, &live_out)?;
-        Some(Kernel {
-            stage: self.stage,
+        Some(Kernel::assemble(
+            self.stage,
             program,
-            interface: self.interface.clone(),
-            inputs: self.inputs.clone(),
+            self.interface.clone(),
+            self.inputs.clone(),
             outputs,
-            loop_budget: self.loop_budget,
-        })
+            self.loop_budget,
+        ))
     }
 
     /// Where each source statement starts in the program.
