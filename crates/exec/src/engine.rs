@@ -520,6 +520,33 @@ pub(crate) fn run(
     textures: &dyn Textures,
     pool: Option<&[Lanes]>,
 ) -> Result<(), ExecError> {
+    run_on(
+        crate::variant::current(),
+        k,
+        code,
+        batch,
+        uniforms,
+        textures,
+        pool,
+    )
+}
+
+/// [`run`] with the given variant, which must be supported (else the
+/// portable one runs).
+pub(crate) fn run_on(
+    variant: crate::Variant,
+    k: &Kernel,
+    code: &Code,
+    batch: &mut Batch,
+    uniforms: &[u32],
+    textures: &dyn Textures,
+    pool: Option<&[Lanes]>,
+) -> Result<(), ExecError> {
+    let variant = if variant.supported() {
+        variant
+    } else {
+        crate::Variant::Portable
+    };
     FILE.with(|cell| {
         // A textures implementation that runs a kernel on this thread
         // finds the file borrowed: it then gets its own.
@@ -535,10 +562,62 @@ pub(crate) fn run(
                 &mut own
             }
         };
-        run_in(k, code, file, batch, uniforms, textures, pool)
+        match variant {
+            #[cfg(target_arch = "x86_64")]
+            crate::Variant::Avx512 => {
+                // SAFETY: checked supported above.
+                unsafe { run_avx512(k, code, file, batch, uniforms, textures, pool) }
+            }
+            #[cfg(target_arch = "x86_64")]
+            crate::Variant::Avx2 => {
+                // SAFETY: as above.
+                unsafe { run_avx2(k, code, file, batch, uniforms, textures, pool) }
+            }
+            _ => run_in(k, code, file, batch, uniforms, textures, pool),
+        }
     })
 }
 
+/// [`run_in`] compiled for AVX2.
+///
+/// # Safety
+/// The CPU must support AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn run_avx2(
+    k: &Kernel,
+    code: &Code,
+    file: &mut Vec<Lanes>,
+    batch: &mut Batch,
+    uniforms: &[u32],
+    textures: &dyn Textures,
+    pool: Option<&[Lanes]>,
+) -> Result<(), ExecError> {
+    run_in(k, code, file, batch, uniforms, textures, pool)
+}
+
+/// [`run_in`] compiled for AVX-512 (F, BW, DQ, VL).
+///
+/// # Safety
+/// The CPU must support those AVX-512 subsets.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2")]
+unsafe fn run_avx512(
+    k: &Kernel,
+    code: &Code,
+    file: &mut Vec<Lanes>,
+    batch: &mut Batch,
+    uniforms: &[u32],
+    textures: &dyn Textures,
+    pool: Option<&[Lanes]>,
+) -> Result<(), ExecError> {
+    run_in(k, code, file, batch, uniforms, textures, pool)
+}
+
+/// The interpreter proper; inlined into each CPU variant, which compile
+/// the same IEEE operations (Rust never contracts `a * b + c` into a fused
+/// multiply-add), so every variant computes the same bits.
+#[inline(always)]
 fn run_in(
     k: &Kernel,
     code: &Code,
@@ -1068,5 +1147,165 @@ unsafe fn texture(
     }
     for (k, o) in out.iter().enumerate() {
         *regs.add(t.d as usize + k) = o.map(f32::to_bits);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glsl::math::flush_denormal;
+
+    /// Special values and random bit patterns (xorshift), 16 at a time.
+    fn inputs(count: usize, seed: u64) -> Vec<Lanes> {
+        let specials = [
+            0.0f32,
+            -0.0,
+            1.0,
+            -1.0,
+            0.5,
+            -0.5,
+            1.5,
+            -1.5,
+            2.5,
+            -2.5,
+            8_388_607.5,
+            -8_388_607.5,
+            8_388_608.0,
+            16_777_217.0,
+            -16_777_216.0,
+            1e-45,
+            -1e-45,
+            1.1754942e-38,
+            f32::MIN_POSITIVE,
+            f32::MAX,
+            f32::MIN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            -f32::NAN,
+            0.99999994,
+            -0.99999994,
+            1e30,
+            -1e-30,
+            3.0,
+            100.25,
+            -7.75,
+        ];
+        let mut s = seed;
+        let mut out = vec![
+            lanes(|l| specials[l].to_bits()),
+            lanes(|l| specials[16 + l].to_bits()),
+        ];
+        while out.len() < count {
+            out.push(lanes(|_| {
+                s ^= s << 13;
+                s ^= s >> 7;
+                s ^= s << 17;
+                // Half the lanes in a moderate range, half any bits.
+                if s & 1 == 0 {
+                    (((s >> 8) as u32 as f32) / 4e8 - 5.0).to_bits()
+                } else {
+                    (s >> 16) as u32
+                }
+            }));
+        }
+        out
+    }
+
+    fn want(x: f32) -> u32 {
+        flush_denormal(x).to_bits()
+    }
+
+    #[test]
+    fn inline_math_matches_glsl_math_bit_for_bit() {
+        let a = inputs(70_000, 1);
+        let b = inputs(70_000, 2);
+        let c = inputs(70_000, 3);
+        let one = [
+            F1::Abs,
+            F1::Sqrt,
+            F1::InverseSqrt,
+            F1::Radians,
+            F1::Degrees,
+            F1::Sign,
+            F1::Floor,
+            F1::Ceil,
+            F1::Fract,
+        ];
+        let two = [F2::Min, F2::Max, F2::Step, F2::Mod];
+        let three = [F3::Clamp, F3::Mix, F3::SmoothStep];
+        // Every pairing of specials with specials, then random vectors
+        // (70,000 x 16 lanes = 1.1 million inputs per function).
+        for i in 0..a.len() {
+            let (x, y, z) = (&a[i], &b[(i * 7) % b.len()], &c[(i * 13) % c.len()]);
+            for func in one {
+                let got = f1(func, x);
+                for l in 0..LANES {
+                    assert_eq!(got[l], want(func.eval(f(x[l]))), "{func:?}({:e})", f(x[l]));
+                }
+            }
+            for func in two {
+                let got = f2(func, x, y);
+                for l in 0..LANES {
+                    assert_eq!(got[l], want(func.eval(f(x[l]), f(y[l]))), "{func:?}");
+                }
+            }
+            for func in three {
+                // The F3 arms are inlined in `step`: run them as an op.
+                let code = plain(&Program {
+                    ops: vec![Op::F3 {
+                        f: func,
+                        d: 3,
+                        a: 0,
+                        b: 1,
+                        c: 2,
+                    }],
+                    registers: 4,
+                    ..Program::default()
+                });
+                let mut regs = [*x, *y, *z, [0; LANES]];
+                let mut st_masks = [0; 0];
+                let mut st_ret = [0; 0];
+                let (mut disc, mut it) = (0, 0);
+                let mut st = State {
+                    cur: FULL,
+                    mk: [!0; LANES],
+                    masks: &mut st_masks,
+                    ret: &mut st_ret,
+                    discarded: &mut disc,
+                    iterations: &mut it,
+                };
+                // SAFETY: 4 registers, the op names registers 0..4.
+                unsafe {
+                    step(
+                        &code,
+                        regs.as_mut_ptr(),
+                        &code.ins[0],
+                        0,
+                        &mut st,
+                        &[],
+                        &crate::NoTextures,
+                        0,
+                    )
+                    .unwrap();
+                }
+                for l in 0..LANES {
+                    assert_eq!(
+                        regs[3][l],
+                        want(func.eval(f(x[l]), f(y[l]), f(z[l]))),
+                        "{func:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn branchless_flush_matches_flush_denormal() {
+        for v in inputs(20_000, 9) {
+            for x in v {
+                assert_eq!(ftz(f(x)), want(f(x)));
+            }
+        }
     }
 }

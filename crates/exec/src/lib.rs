@@ -89,12 +89,34 @@
 //! (source span) and every store (register, bits); [`Kernel::variables`]
 //! names the registers of globals and (inlined) locals.
 //!
+//! ## Execution
+//! [`Kernel::new`] also rewrites the program for the executor (`engine`):
+//! constants, uniform words and what is computed from them alone move to a
+//! prologue run once per `run` (or once per draw: [`Kernel::prepare`] and
+//! [`Kernel::run_prepared`]); dead ops go; `t = op(..); var = t` becomes one
+//! op writing `var` under the mask; the register file is reused per thread
+//! and only registers read before written are zeroed. `min`, `max`,
+//! `clamp`, `mix`, `step`, `smoothstep`, `abs`, `sign`, `floor`, `ceil`,
+//! `fract`, `mod`, `sqrt`, `inversesqrt` run inline over the 16 lanes (the
+//! same bits as `glsl::math`, tested on over a million inputs each); the
+//! transcendental functions call `glsl::math` per lane. The executor is
+//! compiled three times (baseline, AVX2, AVX-512), chosen at run time
+//! ([`Variant`], [`kernel_variant`], [`set_kernel_variant`]; environment
+//! variable `SHADERBOX_KERNEL=portable|avx2|avx512`, default AVX2 when the
+//! CPU has it); every variant computes the same bits (tested).
+//! [`Kernel::run_traced`] runs the unrewritten program with the reference
+//! interpreter (`interp`, which tests compare the executor against), so
+//! tracing costs nothing when off.
+//!
+//! [`Kernel::depth_only`] slices a fragment kernel down to `gl_FragDepth`
+//! and `discard`, for renderers that depth-test before shading colour.
+//!
 //! ## Limitations
 //! - Derivatives are coarse per row/column of a quad.
-//! - The interpreter decodes ops once (an enum over register indices) but
-//!   dispatches per op per lane group, and allocates the register file per
-//!   run; constants are materialized by ops where used. About 50 ns per op
-//!   per 16-lane batch (release, with `sin` in the mix).
+//! - One dispatch per op per 16-lane batch (an enum of 44 bytes); `pow`,
+//!   `exp`, `log`, `sin` and the other transcendental functions are scalar
+//!   `libm` calls per lane. Subroutine calls count against
+//!   [`LOOP_BUDGET`] like loop iterations.
 //! - Programs beyond [`limits::MAX_REGISTERS`] registers or
 //!   [`limits::MAX_OPS`] instructions are refused.
 
@@ -105,10 +127,14 @@ mod interp;
 mod liveness;
 mod lower;
 mod program;
+mod variant;
 
 pub use interface::{kinds, size_of, Interface, Slot};
 pub use interp::LOOP_BUDGET;
 pub use program::{StatementMark, VarInfo};
+pub use variant::{
+    current as kernel_variant, set_variant as set_kernel_variant, supported_variants, Variant,
+};
 
 use glsl::types::SamplerKind;
 use glsl::Span;
@@ -346,6 +372,18 @@ impl Kernel {
             textures,
             std::sync::Arc::ptr_eq(&self.code, &prepared.code).then_some(&prepared.pool[..]),
         )
+    }
+
+    /// [`Kernel::run`] with a given executor variant, for tests.
+    #[cfg(test)]
+    pub(crate) fn run_variant(
+        &self,
+        v: Variant,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+    ) -> Result<(), ExecError> {
+        engine::run_on(v, self, &self.code, batch, uniforms, textures, None)
     }
 
     /// The reference interpreter (what `run_traced` uses), for tests.

@@ -11,6 +11,7 @@ use glsl::{compile, CompileOptions};
 mod builtins;
 mod depth_slice;
 mod piglit;
+mod variants;
 
 pub(crate) fn link_one(stage: Stage, src: &str) -> Result<glsl::link::LinkedStage, String> {
     let sh = compile(&[src], &CompileOptions::new(stage));
