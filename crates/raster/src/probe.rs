@@ -301,6 +301,11 @@ impl Probe {
         f(&mut g)
     }
 
+    /// Whether prints of pixels other than the probed one are wanted.
+    pub fn prints_others(&self) -> bool {
+        self.print_rect.is_some()
+    }
+
     pub fn at(&self, x: i64, y: i64) -> bool {
         (x, y) == self.pixel
     }

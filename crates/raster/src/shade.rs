@@ -217,6 +217,16 @@ impl FragmentStage<'_> {
         let mut record = None;
         match probed {
             Some((p, lane)) => {
+                if p.prints_others() {
+                    // The other lanes' prints: the same batch run once
+                    // more (runs are deterministic).
+                    let mut copy = batch.clone();
+                    p.print_batch(self, &mut copy, prim.source, |l| {
+                        let quad = quads.get(l / 4)?;
+                        let k = (l % 4) as i64;
+                        Some((quad.x + (k & 1), quad.y + (k >> 1))).filter(|_| l != lane)
+                    })?;
+                }
                 let mut r = p.begin(prim, &batch, lane, quads[lane / 4].z[lane % 4]);
                 let result =
                     self.shader
