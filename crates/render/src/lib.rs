@@ -46,6 +46,7 @@
 pub mod camera;
 pub mod elements;
 pub mod image;
+pub mod library;
 pub mod structure;
 
 pub use camera::{Camera, Projection};
@@ -58,19 +59,19 @@ use gl::{ArrayData, Context};
 use thiserror::Error;
 
 /// The library's sphere impostor vertex shader.
-pub const SPHERE_VERT: &str = include_str!("../../../shaders/sphere.vert");
+pub const SPHERE_VERT: &str = library::SPHERE_VERT.source;
 /// The library's sphere impostor fragment shader.
-pub const SPHERE_FRAG: &str = include_str!("../../../shaders/sphere.frag");
+pub const SPHERE_FRAG: &str = library::SPHERE_FRAG.source;
 /// Outline effect fragment shader (with [`SPHERE_VERT`]).
-pub const OUTLINE_FRAG: &str = include_str!("../../../shaders/outline.frag");
+pub const OUTLINE_FRAG: &str = library::OUTLINE_FRAG.source;
 /// Sphere impostor vertex shader that passes the quad corner on (X effects).
-pub const X_VERT: &str = include_str!("../../../shaders/x.vert");
+pub const X_VERT: &str = library::X_VERT.source;
 /// Dark X on every atom (with [`X_VERT`]).
-pub const X_FRAG: &str = include_str!("../../../shaders/x.frag");
+pub const X_FRAG: &str = library::X_FRAG.source;
 /// Yellow X on red atoms (with [`X_VERT`]).
-pub const X_RED_FRAG: &str = include_str!("../../../shaders/x-red.frag");
+pub const X_RED_FRAG: &str = library::X_RED_FRAG.source;
 /// Screen-door transparency of red atoms (with [`SPHERE_VERT`]).
-pub const TRANSPARENT_FRAG: &str = include_str!("../../../shaders/transparent.frag");
+pub const TRANSPARENT_FRAG: &str = library::TRANSPARENT_FRAG.source;
 
 /// Width of the outline effect's lit rim, in pixels (of the supersampled
 /// framebuffer) at the depth of the molecule's centre.
