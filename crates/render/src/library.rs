@@ -89,6 +89,24 @@ pub struct Program {
     pub scene: SceneKind,
 }
 
+/// Sphere impostors (the plain effect, spacefill and ball-and-stick atoms).
+pub const SPHERE: Program = Program {
+    name: "sphere",
+    vertex: &[SPHERE_VERT],
+    fragment: &[SPHERE_FRAG],
+    summary: "sphere impostors: ray-cast, true depth, lights, fog (seed 000, example 03)",
+    scene: SceneKind::Molecule,
+};
+
+/// Cylinder impostors (ball-and-stick bonds).
+pub const CYLINDER: Program = Program {
+    name: "cylinder",
+    vertex: &[CYLINDER_VERT],
+    fragment: &[CYLINDER_FRAG],
+    summary: "cylinder impostors for bonds: ray-cast, true depth (ball-and-stick)",
+    scene: SceneKind::BallAndStick,
+};
+
 /// Every program of the library.
 pub const PROGRAMS: &[Program] = &[
     Program {
@@ -113,13 +131,7 @@ pub const PROGRAMS: &[Program] = &[
         summary: "materials with lights 0-7 switched by light_enabled[8] (seed 000)",
         scene: SceneKind::Mesh,
     },
-    Program {
-        name: "sphere",
-        vertex: &[SPHERE_VERT],
-        fragment: &[SPHERE_FRAG],
-        summary: "sphere impostors: ray-cast, true depth, lights, fog (seed 000, example 03)",
-        scene: SceneKind::Molecule,
-    },
+    SPHERE,
     Program {
         name: "outline",
         vertex: &[SPHERE_VERT],
@@ -148,13 +160,7 @@ pub const PROGRAMS: &[Program] = &[
         summary: "screen-door transparency of red atoms (seed 000)",
         scene: SceneKind::Molecule,
     },
-    Program {
-        name: "cylinder",
-        vertex: &[CYLINDER_VERT],
-        fragment: &[CYLINDER_FRAG],
-        summary: "cylinder impostors for bonds: ray-cast, true depth (ball-and-stick)",
-        scene: SceneKind::BallAndStick,
-    },
+    CYLINDER,
     Program {
         name: "single-texture",
         vertex: &[TEXTURING_VERT],
