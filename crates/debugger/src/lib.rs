@@ -121,6 +121,9 @@ impl Number {
 impl std::fmt::Display for Number {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
+            Number::Float(v) if *v != 0.0 && (v.abs() < 1e-4 || v.abs() >= 1e7) => {
+                write!(f, "{v:e}")
+            }
             Number::Float(v) => write!(f, "{v}"),
             Number::Int(v) => write!(f, "{v}"),
             Number::Bool(v) => write!(f, "{v}"),
