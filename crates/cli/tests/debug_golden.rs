@@ -84,3 +84,39 @@ fn bad_arguments_are_clear_errors() {
     assert!(out.status.success());
     assert!(String::from_utf8_lossy(&out.stdout).contains("outside the"));
 }
+
+#[test]
+fn views_and_outlines_write_images() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/debug");
+    let tmp = std::env::temp_dir().join(format!("shaderbox-debug-{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).expect("tmp dir");
+    let (view, outl) = (tmp.join("view.png"), tmp.join("outlines.png"));
+    let out = Command::new(env!("CARGO_BIN_EXE_shaderbox"))
+        .arg("debug")
+        .arg(dir.join("vertex-trace.shader_test"))
+        .args(["--pixel", "125,125", "--view", "tint", "--view-png"])
+        .arg(&view)
+        .arg("--outlines")
+        .arg(&outl)
+        .output()
+        .expect("run shaderbox");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let legend = String::from_utf8_lossy(&out.stderr);
+    // The quad spans the middle half: tint.x goes 0 → 1 across it.
+    assert!(legend.contains("view `tint': x in [0, 0.992]"), "{legend}");
+    for png in [&view, &outl] {
+        let bytes = std::fs::read(png).expect("png written");
+        assert!(bytes.starts_with(b"\x89PNG"), "{}", png.display());
+    }
+    // An unknown name lists what there is.
+    let out = Command::new(env!("CARGO_BIN_EXE_shaderbox"))
+        .arg("debug")
+        .arg(dir.join("vertex-trace.shader_test"))
+        .args(["--pixel", "1,1", "--view", "nope", "--view-png"])
+        .arg(tmp.join("x.png"))
+        .output()
+        .expect("run shaderbox");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("has no input or variable `nope' (it has: gl_FragColor, tint)"));
+    let _ = std::fs::remove_dir_all(&tmp);
+}

@@ -50,6 +50,22 @@ pub struct DrawReport {
     pub prints: Vec<PrintReport>,
     /// The pixel after the draw.
     pub after: Option<PixelReport>,
+    /// The traced vertex, when one was asked for.
+    pub vertex: Option<VertexTrace>,
+    /// Every primitive's window-space corners, when asked for.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub outlines: Vec<Vec<[f64; 2]>>,
+}
+
+/// One vertex shader invocation.
+#[derive(Clone, Debug, Serialize)]
+pub struct VertexTrace {
+    pub position: usize,
+    pub index: u32,
+    pub inputs: Vec<Named>,
+    pub steps: Vec<Step>,
+    pub outputs: Vec<Named>,
+    pub error: Option<String>,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -268,58 +284,112 @@ fn locate(stage: &StageInfo, span: glsl::Span) -> (Option<u32>, Option<u32>, Str
 fn steps(kernel: &Kernel, stage: &StageInfo, events: &[Event]) -> Vec<Step> {
     let vars = kernel.variables();
     let structs = &kernel.interface().structs;
-    let mut out: Vec<Step> = Vec::new();
+    // Per step: (variable, component, value) in store order.
+    let mut raw: Vec<(Step, Vec<StoreEvent>)> = Vec::new();
     for e in events {
         match e {
             Event::Statement(span) => {
                 let (line, column, source) = locate(stage, *span);
-                out.push(Step {
-                    line,
-                    column,
-                    source,
-                    stores: Vec::new(),
-                    prints: Vec::new(),
-                });
+                raw.push((
+                    Step {
+                        line,
+                        column,
+                        source,
+                        stores: Vec::new(),
+                        prints: Vec::new(),
+                    },
+                    Vec::new(),
+                ));
             }
             Event::Store { register, bits } => {
-                let Some(step) = out.last_mut() else { continue };
-                let var = vars
+                let Some((_, stores)) = raw.last_mut() else {
+                    continue;
+                };
+                // A temporary (an inlined function's result...) is not a
+                // variable of the source.
+                let Some((vi, v)) = vars
                     .iter()
-                    .filter(|v| {
+                    .enumerate()
+                    .filter(|(_, v)| {
                         *register >= v.first_register && *register < v.first_register + v.registers
                     })
-                    .max_by_key(|v| v.first_register);
-                let (name, kind) = match var {
-                    Some(v) => {
-                        let k = (register - v.first_register) as usize;
-                        let kinds = exec::kinds(v.ty, structs);
-                        (
-                            component_name(&v.name, v.ty, k, structs),
-                            kinds.get(k).copied().unwrap_or(Scalar::Float),
-                        )
-                    }
-                    // A temporary (an inlined function's result...):
-                    // not a variable of the source.
-                    None => continue,
+                    .max_by_key(|(_, v)| v.first_register)
+                else {
+                    continue;
                 };
-                let value = Number::from_bits(kind, *bits);
-                // Components of one variable stored by one statement are
-                // shown together.
-                let base = name.split(['.', '[']).next().unwrap_or(&name).to_string();
-                match step.stores.last_mut() {
-                    Some(last) if last.name == base && name.starts_with(&base) && name != base => {
-                        last.values.push(value)
-                    }
-                    _ => step.stores.push(Named {
-                        name: if name.contains('.') { base } else { name },
-                        values: vec![value],
-                    }),
-                }
+                let k = (register - v.first_register) as usize;
+                let kind = exec::kinds(v.ty, structs)
+                    .get(k)
+                    .copied()
+                    .unwrap_or(Scalar::Float);
+                stores.push((vi, k, Number::from_bits(kind, *bits)));
             }
             Event::Print { text, .. } => {
-                if let Some(step) = out.last_mut() {
+                if let Some((step, _)) = raw.last_mut() {
                     step.prints.push(text.clone());
                 }
+            }
+        }
+    }
+    raw.into_iter()
+        .map(|(mut step, stores)| {
+            step.stores = group_stores(vars, structs, &stores);
+            step
+        })
+        .collect()
+}
+
+/// A store: (variable index, component, value).
+type StoreEvent = (usize, usize, Number);
+
+/// Stores of one statement, grouped per variable in order of first store:
+/// the whole variable when every component was stored in order, `v.xz`
+/// for some components of a vector, else one entry per component.
+fn group_stores(
+    vars: &[exec::VarInfo],
+    structs: &[glsl::types::StructDef],
+    stores: &[StoreEvent],
+) -> Vec<Named> {
+    let mut order: Vec<usize> = Vec::new();
+    for (vi, _, _) in stores {
+        if !order.contains(vi) {
+            order.push(*vi);
+        }
+    }
+    let mut out = Vec::new();
+    for vi in order {
+        let Some(var) = vars.get(vi) else { continue };
+        // The last value of each component, in component order.
+        let mut comps: Vec<(usize, Number)> = Vec::new();
+        for (_, k, value) in stores.iter().filter(|s| s.0 == vi) {
+            match comps.iter_mut().find(|c| c.0 == *k) {
+                Some(c) => c.1 = *value,
+                None => comps.push((*k, *value)),
+            }
+        }
+        comps.sort_by_key(|c| c.0);
+        let size = exec::size_of(var.ty, structs);
+        let all = comps.len() == size && comps.iter().enumerate().all(|(i, c)| c.0 == i);
+        if all {
+            out.push(Named {
+                name: var.name.clone(),
+                values: comps.into_iter().map(|c| c.1).collect(),
+            });
+        } else if let (Base::Vector(..), None) = (var.ty.base, var.ty.array) {
+            let letters: String = comps
+                .iter()
+                .map(|c| ['x', 'y', 'z', 'w'].get(c.0).copied().unwrap_or('?'))
+                .collect();
+            out.push(Named {
+                name: format!("{}.{letters}", var.name),
+                values: comps.into_iter().map(|c| c.1).collect(),
+            });
+        } else {
+            for (k, value) in comps {
+                out.push(Named {
+                    name: component_name(&var.name, var.ty, k, structs),
+                    values: vec![value],
+                });
             }
         }
     }
@@ -377,6 +447,9 @@ impl Report {
                     p.text.trim_end()
                 );
             }
+            if let Some(v) = &d.vertex {
+                write_vertex(&mut s, v);
+            }
             if let Some(a) = &d.after {
                 let _ = writeln!(s, "  pixel after the draw: {}", pixel_text(a));
             }
@@ -396,6 +469,8 @@ fn draw_report(r: &DrawRecord) -> DrawReport {
         fragments: Vec::new(),
         prints: Vec::new(),
         after: None,
+        vertex: None,
+        outlines: Vec::new(),
     };
     let probe = match &r.probe {
         Ok(p) => p,
@@ -405,6 +480,19 @@ fn draw_report(r: &DrawRecord) -> DrawReport {
         }
     };
     d.note = probe.unreachable.clone();
+    d.outlines = probe.outlines.clone();
+    d.vertex = probe.vertex.as_ref().map(|v| {
+        let k = &r.vertex.kernel;
+        let iface = k.interface();
+        VertexTrace {
+            position: v.position,
+            index: v.index,
+            inputs: named_slots(&iface.inputs, &v.inputs, &iface.structs, false),
+            steps: steps(k, &r.vertex, &v.events),
+            outputs: named_slots(&iface.outputs, &v.outputs, &iface.structs, true),
+            error: v.error.clone(),
+        }
+    });
     d.after = Some(PixelReport::new(&probe.after));
     let fs_iface = r.fragment.kernel.interface();
     let vs_iface = r.vertex.kernel.interface();
@@ -518,6 +606,52 @@ fn pixel_text(p: &PixelReport) -> String {
     parts.join(", ")
 }
 
+/// Executed statements, source beside the values they stored.
+fn write_steps(s: &mut String, steps: &[Step]) {
+    for st in steps {
+        let at = st.line.map_or("     ".to_string(), |l| format!("{l:>4} |"));
+        let stores: Vec<String> = st
+            .stores
+            .iter()
+            .map(|o| format!("{} = {}", o.name, values_text(&o.values)))
+            .collect();
+        let mut line = format!("    {at} {}", st.source);
+        if !stores.is_empty() {
+            let pad = 48usize.saturating_sub(line.chars().count()).max(2);
+            line.push_str(&" ".repeat(pad));
+            line.push_str(&format!("→ {}", stores.join(", ")));
+        }
+        let _ = writeln!(s, "{line}");
+        for p in &st.prints {
+            let _ = writeln!(s, "         printf: {}", p.trim_end());
+        }
+    }
+}
+
+fn named_text(v: &[Named]) -> String {
+    v.iter()
+        .map(|o| format!("{} = {}", o.name, values_text(&o.values)))
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+fn write_vertex(s: &mut String, v: &VertexTrace) {
+    let _ = writeln!(
+        s,
+        "  vertex shader, vertex {} (index {}):",
+        v.position, v.index
+    );
+    if !v.inputs.is_empty() {
+        let _ = writeln!(s, "    inputs: {}", named_text(&v.inputs));
+    }
+    write_steps(s, &v.steps);
+    if let Some(e) = &v.error {
+        let _ = writeln!(s, "    {e}");
+    } else {
+        let _ = writeln!(s, "    outputs: {}", named_text(&v.outputs));
+    }
+}
+
 fn write_fragment(s: &mut String, n: usize, f: &FragmentReport) {
     let verts: Vec<String> = f.vertices.iter().map(|v| v.position.to_string()).collect();
     let _ = writeln!(
@@ -550,24 +684,7 @@ fn write_fragment(s: &mut String, n: usize, f: &FragmentReport) {
             "    rejected by the early depth/stencil test before shading"
         );
     }
-    for st in &f.steps {
-        let at = st.line.map_or("     ".to_string(), |l| format!("{l:>4} |"));
-        let stores: Vec<String> = st
-            .stores
-            .iter()
-            .map(|o| format!("{} = {}", o.name, values_text(&o.values)))
-            .collect();
-        let mut line = format!("    {at} {}", st.source);
-        if !stores.is_empty() {
-            let pad = 48usize.saturating_sub(line.chars().count()).max(2);
-            line.push_str(&" ".repeat(pad));
-            line.push_str(&format!("→ {}", stores.join(", ")));
-        }
-        let _ = writeln!(s, "{line}");
-        for p in &st.prints {
-            let _ = writeln!(s, "         printf: {}", p.trim_end());
-        }
-    }
+    write_steps(s, &f.steps);
     if let Some(d) = &f.discarded {
         let at = d.line.map_or(String::new(), |l| format!(" at line {l}"));
         let _ = writeln!(s, "    discarded{at}: {}", d.source);

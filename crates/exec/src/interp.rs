@@ -24,6 +24,53 @@ pub(crate) trait Hook {
     fn printf(&mut self, _p: &Program, _index: usize, _cur: LaneMask, _regs: &Regs) {}
 }
 
+/// Keeps, per lane, the last value stored into each register of a range
+/// (the debugger's false-colour views).
+pub(crate) struct WatchHook<'o> {
+    pub first: u32,
+    pub out: &'o mut [[u32; LANES]],
+}
+
+impl Hook for WatchHook<'_> {
+    fn before(&mut self, p: &Program, pc: usize, cur: LaneMask, regs: &Regs) {
+        let (d, a) = match p.ops.get(pc) {
+            Some(Op::Store { d, a }) => (*d, *a),
+            Some(Op::Scatter { base, off, max, a }) => {
+                // Per lane: the element each lane writes.
+                for lane in 0..LANES {
+                    if cur & (1 << lane) == 0 {
+                        continue;
+                    }
+                    let o = regs.get(*off as usize).map_or(0, |r| r[lane]).min(*max);
+                    let d = base.saturating_add(o);
+                    if let Some(slot) = d
+                        .checked_sub(self.first)
+                        .and_then(|i| self.out.get_mut(i as usize))
+                    {
+                        slot[lane] = regs.get(*a as usize).map_or(0, |r| r[lane]);
+                    }
+                }
+                return;
+            }
+            _ => return,
+        };
+        let Some(slot) = d
+            .checked_sub(self.first)
+            .and_then(|i| self.out.get_mut(i as usize))
+        else {
+            return;
+        };
+        let Some(v) = regs.get(a as usize) else {
+            return;
+        };
+        for lane in 0..LANES {
+            if cur & (1 << lane) != 0 {
+                slot[lane] = v[lane];
+            }
+        }
+    }
+}
+
 /// The text `debugPrintfEXT` site `index` prints for `lane`.
 pub(crate) fn printf_text(p: &Program, index: usize, lane: usize, regs: &Regs) -> Option<String> {
     let site = p.printfs.get(index)?;

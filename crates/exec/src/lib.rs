@@ -332,6 +332,21 @@ impl Kernel {
         interp::run(self, batch, uniforms, textures, &mut hook)
     }
 
+    /// Like [`Kernel::run`], keeping in `out[i][lane]` the last value each
+    /// lane stored into register `first + i` (initially `out`'s contents;
+    /// see [`Kernel::variables`] for where variables live).
+    pub fn run_watching(
+        &self,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+        first: u32,
+        out: &mut [[u32; LANES]],
+    ) -> Result<(), ExecError> {
+        let mut hook = interp::WatchHook { first, out };
+        interp::run(self, batch, uniforms, textures, &mut hook)
+    }
+
     /// Whether the shader calls `debugPrintfEXT`.
     pub fn prints(&self) -> bool {
         !self.program.printfs.is_empty()

@@ -12,7 +12,7 @@ use crate::Context;
 use std::sync::Arc;
 
 /// What to debug.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct DebugRequest {
     /// Window pixel of the draw framebuffer.
     pub pixel: (u32, u32),
@@ -22,6 +22,39 @@ pub struct DebugRequest {
     /// Collect `debugPrintfEXT` output of this rectangle
     /// `[x0, x1) × [y0, y1)` too.
     pub print_rect: Option<(u32, u32, u32, u32)>,
+    /// Trace the vertex shader for this position of each debugged draw's
+    /// vertex list.
+    pub vertex: Option<usize>,
+    /// Collect every primitive's window-space outline.
+    pub outlines: bool,
+    /// Show this fragment-shader input or variable for the whole frame
+    /// ([`DrawRecord::view`]).
+    pub view: Option<String>,
+}
+
+impl DebugRequest {
+    /// Every draw, at `pixel`, nothing else.
+    pub fn pixel(x: u32, y: u32) -> DebugRequest {
+        DebugRequest {
+            pixel: (x, y),
+            draw: None,
+            print_rect: None,
+            vertex: None,
+            outlines: false,
+            view: None,
+        }
+    }
+}
+
+/// A fragment-shader value over the whole frame: for each pixel the draw
+/// wrote, the value in the fragment that wrote it last.
+#[derive(Clone, Debug)]
+pub struct ViewRecord {
+    pub name: String,
+    /// The kind of each component (at most 4 are kept).
+    pub kinds: Vec<glsl::types::Scalar>,
+    /// Raw bits as [`raster::ViewImage`] keeps them; inputs are floats.
+    pub image: raster::ViewImage,
 }
 
 /// One stage of a debugged draw.
@@ -49,6 +82,46 @@ pub struct DrawRecord {
     pub fragment: StageInfo,
     /// What happened at the pixel, or why the replay failed.
     pub probe: Result<raster::DrawProbe, String>,
+    /// The requested view, or why it could not be made.
+    pub view: Option<Result<ViewRecord, String>>,
+}
+
+/// Where `name` lives in a fragment kernel: an input slot or a variable's
+/// registers, with its component kinds.
+pub(crate) fn resolve_view(
+    fs: &exec::Kernel,
+    name: &str,
+) -> Result<(raster::View, Vec<glsl::types::Scalar>), String> {
+    let iface = fs.interface();
+    if let Some(slot) = iface.input(name) {
+        let n = slot.components.clamp(1, 4);
+        return Ok((
+            raster::View::Input {
+                offset: slot.offset,
+                components: n,
+            },
+            vec![glsl::types::Scalar::Float; n],
+        ));
+    }
+    if let Some(v) = fs.variables().iter().find(|v| v.name == name) {
+        let kinds = exec::kinds(v.ty, &iface.structs);
+        let n = (v.registers as usize).clamp(1, 4);
+        return Ok((
+            raster::View::Variable {
+                first: v.first_register,
+                components: n,
+            },
+            kinds.into_iter().take(n).collect(),
+        ));
+    }
+    let mut known: Vec<&str> = iface.inputs.iter().map(|s| s.name.as_str()).collect();
+    known.extend(fs.variables().iter().map(|v| v.name.as_str()));
+    known.sort_unstable();
+    known.dedup();
+    Err(format!(
+        "the fragment shader has no input or variable `{name}' (it has: {})",
+        known.join(", ")
+    ))
 }
 
 #[derive(Default)]
@@ -60,14 +133,22 @@ pub(crate) struct DebugSession {
 
 impl DebugSession {
     /// The probe request for the next draw, if it is to be debugged.
+    /// The view asked for the next draw, if it is debugged.
+    pub fn view(&self) -> Option<&str> {
+        self.wants()?;
+        self.request.as_ref()?.view.as_deref()
+    }
+
     pub fn wants(&self) -> Option<raster::ProbeRequest> {
-        let r = self.request?;
+        let r = self.request.as_ref()?;
         if r.draw.is_some_and(|d| d != self.draws) {
             return None;
         }
         Some(raster::ProbeRequest {
             pixel: r.pixel,
             print_rect: r.print_rect,
+            vertex: r.vertex,
+            outlines: r.outlines,
         })
     }
 }

@@ -657,6 +657,28 @@ impl Context {
             )
             .map_err(|e| e.to_string())
         });
+        let view = self.debug.view().map(|name| {
+            let (v, kinds) = crate::debug::resolve_view(&fs, name)?;
+            let image = raster::view_draw(
+                &target.fb,
+                &state,
+                &vs,
+                &vs_words,
+                &fs,
+                &fs_words,
+                raster_mode(mode),
+                indices,
+                &fetch,
+                &units,
+                v,
+            )
+            .map_err(|e| e.to_string())?;
+            Ok(crate::debug::ViewRecord {
+                name: name.to_string(),
+                kinds,
+                image,
+            })
+        });
         let r = raster::draw_on(
             &self.workers,
             &mut target.fb,
@@ -697,6 +719,7 @@ impl Context {
                     kernel: fs,
                 },
                 probe,
+                view,
             };
             self.debug.records.push(record);
         }

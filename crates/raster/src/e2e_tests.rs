@@ -511,8 +511,9 @@ fn probe_reports_every_fragment_of_a_pixel() {
             &fetch,
             &units,
             ProbeRequest {
-                pixel: (x, y),
-                print_rect: None,
+                vertex: Some(7),
+                outlines: true,
+                ..ProbeRequest::pixel(x, y)
             },
         )
         .expect("probe")
@@ -551,6 +552,17 @@ fn probe_reports_every_fragment_of_a_pixel() {
     assert!(red.events.iter().any(|e| matches!(e, Event::Statement(_))));
     assert_eq!(p.primitives.len(), 4);
     assert_eq!(p.vertex_outputs.len(), 12);
+    // The traced vertex gives the outputs the draw used; every triangle
+    // has an outline.
+    let v = p.vertex.as_ref().expect("vertex trace");
+    assert_eq!(v.index, 7);
+    // (The trace has the shader's own outputs; the draw clamps colours.)
+    assert_eq!(v.outputs[..4], p.vertex_outputs[7][..4]);
+    assert_eq!(v.outputs[7], -0.5);
+    assert_eq!(p.vertex_outputs[7][7], 0.0);
+    assert!(v.events.iter().any(|e| matches!(e, Event::Store { .. })));
+    assert_eq!(p.outlines.len(), 4);
+    assert!(p.outlines.iter().all(|o| o.len() == 3));
 
     // At x < 2 the red fragment is discarded; the trace shows it.
     let p = probe(1, 5);

@@ -80,7 +80,8 @@ pub use framebuffer::{
 };
 pub use pipeline::{draw_stages, Mode, VertexFetch, MAX_POINT_SIZE, TILE};
 pub use probe::{
-    probe_draw, DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine, ProbeRequest,
+    probe_draw, view_draw, DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine,
+    ProbeRequest, VertexProbe, View, ViewImage,
 };
 pub use rasterize::SUBPIXEL_BITS;
 pub use state::{
@@ -127,6 +128,19 @@ pub trait ShaderStage: Sync {
         self.run(batch, uniforms, textures)
     }
 
+    /// [`ShaderStage::run`], keeping the last value each lane stored into
+    /// registers `first..` in `out` (stages without registers run plainly).
+    fn run_watching(
+        &self,
+        batch: &mut ex::Batch,
+        uniforms: &[u32],
+        textures: &dyn ex::Textures,
+        _first: u32,
+        _out: &mut [[u32; ex::LANES]],
+    ) -> Result<(), ex::ExecError> {
+        self.run(batch, uniforms, textures)
+    }
+
     /// [`ShaderStage::run`], reporting `debugPrintfEXT` output to `sink`.
     fn run_printing(
         &self,
@@ -169,6 +183,16 @@ impl ShaderStage for ex::Kernel {
         sink: &mut dyn ex::PrintSink,
     ) -> Result<(), ex::ExecError> {
         ex::Kernel::run_printing(self, batch, uniforms, textures, sink)
+    }
+    fn run_watching(
+        &self,
+        batch: &mut ex::Batch,
+        uniforms: &[u32],
+        textures: &dyn ex::Textures,
+        first: u32,
+        out: &mut [[u32; ex::LANES]],
+    ) -> Result<(), ex::ExecError> {
+        ex::Kernel::run_watching(self, batch, uniforms, textures, first, out)
     }
 }
 

@@ -173,23 +173,7 @@ fn run_vertices(
     let run_chunk = |chunk: &[u32]| -> Result<Vec<f32>, crate::ex::ExecError> {
         let mut batch = new_batch(n_in, stride);
         for (lane, &ix) in chunk.iter().enumerate() {
-            for (slot_no, slot) in iface.inputs.iter().enumerate() {
-                let (cols, rows) = match slot.ty.base {
-                    glsl::types::Base::Matrix { cols, rows } if slot.ty.array.is_none() => {
-                        (cols as usize, rows as usize)
-                    }
-                    _ => (1, slot.components.min(4)),
-                };
-                for col in 0..cols {
-                    let mut v = [0.0, 0.0, 0.0, 1.0];
-                    fetch.fetch_column(slot_no, col, ix, &mut v);
-                    for (c, &value) in v.iter().enumerate().take(rows) {
-                        if let Some(dst) = batch.inputs.get_mut(slot.offset + col * rows + c) {
-                            dst[lane] = value;
-                        }
-                    }
-                }
-            }
+            fetch_vertex(iface, fetch, ix, &mut batch, lane);
         }
         batch.active = if chunk.len() >= 32 {
             u32::MAX
@@ -236,6 +220,37 @@ fn run_vertices(
     Ok((vertex_of, outputs))
 }
 
+/// Fetches vertex `ix`'s attributes into `lane` of a vertex batch.
+pub(crate) fn fetch_vertex(
+    iface: &Interface,
+    fetch: &dyn VertexFetch,
+    ix: u32,
+    batch: &mut crate::ex::Batch,
+    lane: usize,
+) {
+    for (slot_no, slot) in iface.inputs.iter().enumerate() {
+        let (cols, rows) = match slot.ty.base {
+            glsl::types::Base::Matrix { cols, rows } if slot.ty.array.is_none() => {
+                (cols as usize, rows as usize)
+            }
+            _ => (1, slot.components.min(4)),
+        };
+        for col in 0..cols {
+            let mut v = [0.0, 0.0, 0.0, 1.0];
+            fetch.fetch_column(slot_no, col, ix, &mut v);
+            for (c, &value) in v.iter().enumerate().take(rows) {
+                if let Some(dst) = batch
+                    .inputs
+                    .get_mut(slot.offset + col * rows + c)
+                    .and_then(|d| d.get_mut(lane))
+                {
+                    *dst = value;
+                }
+            }
+        }
+    }
+}
+
 /// Turns assembled primitives into set-up [`Prim`]s.
 struct Setup<'a> {
     state: &'a PipelineState,
@@ -249,6 +264,7 @@ struct Setup<'a> {
     prims: Vec<Prim>,
     /// Index of the primitive being assembled.
     source: u32,
+    probe: Option<&'a crate::probe::Probe>,
 }
 
 impl Setup<'_> {
@@ -309,6 +325,9 @@ impl Setup<'_> {
     }
 
     fn push(&mut self, shape: Shape, back: bool, z_offset: f64, attrs: Vec<f32>) {
+        if let Some(p) = self.probe {
+            p.note_shape(&shape);
+        }
         let b = shape.bounds();
         let c = self.clip_rect;
         let bounds = (b.0.max(c.0), b.1.max(c.1), b.2.min(c.2), b.3.min(c.3));
@@ -530,6 +549,7 @@ pub(crate) fn draw_probed(
         ],
         prims: Vec::new(),
         source: 0,
+        probe,
     };
     assemble(mode, vertex_of.len(), |p| {
         if let Some(probe) = probe {

@@ -34,6 +34,103 @@ pub struct ProbeRequest {
     /// `[x0, x1) × [y0, y1)` (the pixel's own prints are always in its
     /// trace).
     pub print_rect: Option<(u32, u32, u32, u32)>,
+    /// Also trace the vertex shader for this position of the draw's index
+    /// list.
+    pub vertex: Option<usize>,
+    /// Also collect every primitive's window-space outline.
+    pub outlines: bool,
+}
+
+/// Replays a draw on a copy of `fb` and returns, for every pixel a
+/// fragment of this draw wrote, the value `view` had in that fragment.
+#[allow(clippy::too_many_arguments)]
+pub fn view_draw(
+    fb: &Framebuffer,
+    state: &PipelineState,
+    vs: &ex::Kernel,
+    vs_uniforms: &[u32],
+    fs: &ex::Kernel,
+    fs_uniforms: &[u32],
+    mode: Mode,
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    textures: &(dyn ex::Textures + Sync),
+    view: View,
+) -> Result<ViewImage, DrawError> {
+    let probe = Probe {
+        pixel: (-1, -1),
+        print_rect: None,
+        outlines: false,
+        view: Some(view),
+        inner: Mutex::new(DrawProbe::default()),
+        image: Mutex::new(ViewImage {
+            width: fb.width,
+            height: fb.height,
+            pixels: vec![None; fb.width as usize * fb.height as usize],
+        }),
+    };
+    let mut copy = fb.clone();
+    draw_probed(
+        &crate::Workers::inline(),
+        &mut copy,
+        state,
+        (vs, vs_uniforms),
+        (fs, fs_uniforms),
+        mode,
+        indices,
+        fetch,
+        textures,
+        Some(&probe),
+    )?;
+    Ok(probe.image.into_inner().unwrap_or_else(|e| e.into_inner()))
+}
+
+impl ProbeRequest {
+    /// A request for `pixel` only.
+    pub fn pixel(x: u32, y: u32) -> ProbeRequest {
+        ProbeRequest {
+            pixel: (x, y),
+            print_rect: None,
+            vertex: None,
+            outlines: false,
+        }
+    }
+}
+
+/// A value to show for the whole frame as a false-colour image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum View {
+    /// Components `offset..offset + components` of the fragment shader's
+    /// inputs (a varying, gl_FragCoord...).
+    Input { offset: usize, components: usize },
+    /// The last value stored into registers `first..first + components`
+    /// (a local or global variable: `exec::Kernel::variables`).
+    Variable { first: u32, components: usize },
+}
+
+/// The viewed value of the last fragment written at each pixel (bottom
+/// row first): up to 4 components as raw bits (`f32` bits for inputs;
+/// the variable's own kinds for variables).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ViewImage {
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Vec<Option<[u32; 4]>>,
+}
+
+/// One vertex shader invocation, traced.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct VertexProbe {
+    /// Position in the draw's index list, and the vertex index there.
+    pub position: usize,
+    pub index: u32,
+    /// The vertex shader's inputs and outputs (laid out as its interface;
+    /// outputs as the shader wrote them, before the colour clamp of GL 2.1
+    /// §2.14.6 that `DrawProbe::vertex_outputs` shows).
+    pub inputs: Vec<f32>,
+    pub events: Vec<Event>,
+    pub outputs: Vec<f32>,
+    pub error: Option<String>,
 }
 
 /// What one draw did at the probed pixel.
@@ -58,6 +155,11 @@ pub struct DrawProbe {
     pub prints: Vec<PrintLine>,
     /// The pixel after the draw.
     pub after: PixelState,
+    /// The traced vertex ([`ProbeRequest::vertex`]).
+    pub vertex: Option<VertexProbe>,
+    /// Window-space (x, y) corners of every primitive set up for
+    /// rasterization (after clipping), when [`ProbeRequest::outlines`].
+    pub outlines: Vec<Vec<[f64; 2]>>,
 }
 
 /// One `debugPrintfEXT` line.
@@ -227,6 +329,9 @@ pub fn probe_draw(
     let probe = Probe {
         pixel: (px as i64, py as i64),
         print_rect: req.print_rect,
+        outlines: req.outlines,
+        view: None,
+        image: Mutex::new(ViewImage::default()),
         inner: Mutex::new(report),
     };
     let mut copy = fb.clone();
@@ -244,7 +349,56 @@ pub fn probe_draw(
     );
     let mut report = probe.inner.into_inner().unwrap_or_else(|e| e.into_inner());
     report.after = PixelState::read(&copy, (py * copy.width + px) as usize);
+    if let Some(position) = req.vertex {
+        report.vertex = Some(trace_vertex(
+            vs,
+            vs_uniforms,
+            textures,
+            fetch,
+            indices,
+            position,
+        ));
+    }
     result.map(|()| report)
+}
+
+/// Runs the vertex shader alone for one position of the index list, traced
+/// (vertices do not depend on each other, so a batch of one lane gives the
+/// values of the real draw).
+fn trace_vertex(
+    vs: &ex::Kernel,
+    uniforms: &[u32],
+    textures: &(dyn ex::Textures + Sync),
+    fetch: &dyn VertexFetch,
+    indices: &[u32],
+    position: usize,
+) -> VertexProbe {
+    let Some(&index) = indices.get(position) else {
+        return VertexProbe {
+            position,
+            error: Some(format!(
+                "the draw has {} vertices; there is no vertex at position {position}",
+                indices.len()
+            )),
+            ..VertexProbe::default()
+        };
+    };
+    let iface = vs.interface();
+    let mut batch = crate::shade::new_batch(iface.input_components, iface.output_components);
+    crate::pipeline::fetch_vertex(iface, fetch, index, &mut batch, 0);
+    batch.active = 1;
+    let mut rec = Recording {
+        fragment: FragmentProbe::default(),
+    };
+    let result = vs.run_traced(&mut batch, uniforms, textures, 0, &mut rec);
+    VertexProbe {
+        position,
+        index,
+        inputs: batch.inputs.iter().map(|c| c[0]).collect(),
+        events: rec.fragment.events,
+        outputs: batch.outputs.iter().map(|c| c[0]).collect(),
+        error: result.err().map(|e| e.to_string()),
+    }
 }
 
 /// The probe a draw carries (interior mutability: the fragment stage holds
@@ -252,6 +406,9 @@ pub fn probe_draw(
 pub(crate) struct Probe {
     pixel: (i64, i64),
     print_rect: Option<(u32, u32, u32, u32)>,
+    outlines: bool,
+    view: Option<View>,
+    image: Mutex<ViewImage>,
     inner: Mutex<DrawProbe>,
 }
 
@@ -301,6 +458,66 @@ impl Probe {
         f(&mut g)
     }
 
+    pub fn view(&self) -> Option<View> {
+        self.view
+    }
+
+    /// Runs a batch for a view: the watched registers per lane (inputs
+    /// are read from the batch instead; then one empty-but-non-empty
+    /// marker is returned so the caller stores values).
+    pub fn run_view(
+        &self,
+        stage: &FragmentStage,
+        batch: &mut Batch,
+        view: View,
+    ) -> Result<Vec<[u32; ex::LANES]>, ExecError> {
+        match view {
+            View::Variable { first, components } => {
+                let mut out = vec![[0u32; ex::LANES]; components.clamp(1, 4)];
+                stage.shader.run_watching(
+                    batch,
+                    stage.uniforms,
+                    stage.textures,
+                    first,
+                    &mut out,
+                )?;
+                Ok(out)
+            }
+            View::Input { offset, components } => {
+                let out = (offset..offset + components.clamp(1, 4))
+                    .map(|c| {
+                        batch
+                            .inputs
+                            .get(c)
+                            .map_or([0; ex::LANES], |v| v.map(f32::to_bits))
+                    })
+                    .collect();
+                stage.shader.run(batch, stage.uniforms, stage.textures)?;
+                Ok(out)
+            }
+        }
+    }
+
+    /// Records the viewed value of `lane` for pixel (x, y).
+    pub fn view_store(
+        &self,
+        x: u32,
+        y: u32,
+        _batch: &Batch,
+        watched: &[[u32; ex::LANES]],
+        lane: usize,
+    ) {
+        let mut img = self.image.lock().unwrap_or_else(|e| e.into_inner());
+        let w = img.width as usize;
+        if let Some(p) = img.pixels.get_mut(y as usize * w + x as usize) {
+            let mut v = [0u32; 4];
+            for (c, comp) in watched.iter().take(4).enumerate() {
+                v[c] = comp[lane];
+            }
+            *p = Some(v);
+        }
+    }
+
     /// Whether prints of pixels other than the probed one are wanted.
     pub fn prints_others(&self) -> bool {
         self.print_rect.is_some()
@@ -308,6 +525,19 @@ impl Probe {
 
     pub fn at(&self, x: i64, y: i64) -> bool {
         (x, y) == self.pixel
+    }
+
+    /// Records a set-up primitive's outline (when asked for).
+    pub fn note_shape(&self, shape: &Shape) {
+        if !self.outlines {
+            return;
+        }
+        let corners: Vec<[f64; 2]> = match shape {
+            Shape::Triangle { v, .. } => v.iter().map(|w| [w.x, w.y]).collect(),
+            Shape::Line { v, .. } => v.iter().map(|w| [w.x, w.y]).collect(),
+            Shape::Point { v, .. } => vec![[v.x, v.y]],
+        };
+        self.with(|r| r.outlines.push(corners));
     }
 
     pub fn note_primitive(&self, source: u32, p: &Assembled) {
@@ -391,14 +621,14 @@ impl Probe {
         state: &PipelineState,
         frag: &Fragment,
         rec: &mut Recording,
-    ) {
+    ) -> bool {
         let (lx, ly) = (
             frag.x.saturating_sub(origin.0),
             frag.y.saturating_sub(origin.1),
         );
         let index = ly as usize * fb.width as usize + lx as usize;
         let before = PixelState::read(fb, index);
-        fragment_ops::process(fb, origin, state, frag);
+        let passed_all = fragment_ops::process(fb, origin, state, frag);
         let after = PixelState::read(fb, index);
         let zf = depth_to_fixed(frag.z);
         let alpha = state.alpha_test.map(|(func, reference)| {
@@ -432,6 +662,7 @@ impl Probe {
             blended: passed && (state.blend.is_some() || state.logic_op.is_some()),
             color_mask: state.color_mask,
         });
+        passed_all
     }
 
     pub fn push(&self, rec: Recording) {

@@ -215,6 +215,7 @@ impl FragmentStage<'_> {
             Some((p, lane))
         });
         let mut record = None;
+        let mut watched = Vec::new();
         match probed {
             Some((p, lane)) => {
                 if p.prints_others() {
@@ -236,7 +237,9 @@ impl FragmentStage<'_> {
                 record = Some((p, lane, r));
             }
             None => {
-                if let Some(p) = self.probe {
+                if let Some((p, view)) = self.probe.and_then(|p| Some((p, p.view()?))) {
+                    watched = p.run_view(self, &mut batch, view)?;
+                } else if let Some(p) = self.probe {
                     p.print_batch(self, &mut batch, prim.source, |lane| {
                         let quad = quads.get(lane / 4)?;
                         let k = (lane % 4) as i64;
@@ -279,9 +282,12 @@ impl FragmentStage<'_> {
                     back_facing: prim.back,
                     colors,
                 };
-                match record.as_mut().filter(|r| r.1 == lane) {
+                let passed = match record.as_mut().filter(|r| r.1 == lane) {
                     Some((p, _, r)) => p.process(fb, origin, self.state, &frag, r),
                     None => fragment_ops::process(fb, origin, self.state, &frag),
+                };
+                if let (true, Some(p)) = (passed && !watched.is_empty(), self.probe) {
+                    p.view_store(frag.x, frag.y, &batch, &watched, lane);
                 }
             }
         }

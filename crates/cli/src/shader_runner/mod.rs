@@ -32,7 +32,7 @@ pub mod command;
 mod gl_api;
 mod glenum;
 mod images;
-mod png;
+pub mod png;
 pub mod probe;
 pub mod run;
 mod scan;
