@@ -1,7 +1,8 @@
-//! `shaderbox debug`: why one pixel of a `.shader_test` came out as it did.
+//! `shaderbox debug`: why one pixel of a `.shader_test` (or of a scene
+//! recorded by `shaderbox render --export-scene`) came out as it did.
 //!
-//! Runs the test's `[test]` section on a fresh context with the pixel
-//! probe on (see the `debugger` crate) and prints, for every draw that
+//! Runs the test's `[test]` section (or replays the scene's GL calls) on a
+//! fresh context with the pixel probe on (see the `debugger` crate) and prints, for every draw that
 //! touched the pixel (or the one chosen with `--draw`), each fragment with
 //! its primitive, inputs, executed statements and stored values,
 //! `discard`, outputs and per-fragment operations — as text with source
@@ -13,7 +14,8 @@ use std::path::PathBuf;
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// The `.shader_test` file.
+    /// A `.shader_test` file, or a scene `.json` written by `shaderbox
+    /// render --export-scene` (the molecule renders, replayed).
     pub file: PathBuf,
     /// The window pixel to explain, `X,Y` (origin at the bottom left, as
     /// glReadPixels and piglit's probes count).
@@ -81,27 +83,47 @@ fn parse_rect(s: &str) -> Result<(u32, u32, u32, u32), String> {
 
 /// The report for `args`, or an error message.
 pub fn report(args: &Args) -> Result<debugger::Report, String> {
-    let (name, script) = shader_runner::load(&args.file)?;
-    let window = shader_runner::window_config(&script);
-    let mut ctx = gl::Context::new(window.width, window.height);
-    ctx.set_debug(Some(gl::debug::DebugRequest {
+    let request = gl::debug::DebugRequest {
         pixel: args.pixel,
         draw: args.draw,
         print_rect: args.print_rect,
         vertex: args.vertex,
         outlines: args.outlines.is_some(),
         view: args.view.clone(),
-    }));
-    let opts = shader_runner::Options {
-        file: args.file.clone(),
-        ..Default::default()
     };
-    // The verdict of the test's own probes does not matter here.
-    let _ = shader_runner::execute_on(&mut ctx, &opts, &name, &script);
+    let is_scene = args.file.extension().is_some_and(|e| e == "json");
+    let (mut ctx, (w, h)) = if is_scene {
+        // A scene recorded by `shaderbox render --export-scene`.
+        let text = std::fs::read_to_string(&args.file)
+            .map_err(|e| format!("could not read file \"{}\": {e}", args.file.display()))?;
+        let scene =
+            render::Scene::from_json(&text).map_err(|e| format!("{}: {e}", args.file.display()))?;
+        let (w, h) = (
+            scene.width.clamp(1, gl::MAX_TEXTURE_SIZE as u32) as i32,
+            scene.height.clamp(1, gl::MAX_TEXTURE_SIZE as u32) as i32,
+        );
+        let mut ctx = gl::Context::new(w, h);
+        ctx.set_debug(Some(request));
+        let ctx = scene
+            .replay_on(ctx)
+            .map_err(|e| format!("{}: {e}", args.file.display()))?;
+        (ctx, (w, h))
+    } else {
+        let (name, script) = shader_runner::load(&args.file)?;
+        let window = shader_runner::window_config(&script);
+        let mut ctx = gl::Context::new(window.width, window.height);
+        ctx.set_debug(Some(request));
+        let opts = shader_runner::Options {
+            file: args.file.clone(),
+            ..Default::default()
+        };
+        // The verdict of the test's own probes does not matter here.
+        let _ = shader_runner::execute_on(&mut ctx, &opts, &name, &script);
+        (ctx, (window.width, window.height))
+    };
     let records = ctx.take_debug_records();
     let report = debugger::Report::from_records(args.pixel, &records);
     if let Some(path) = &args.outlines {
-        let (w, h) = (window.width, window.height);
         let mut pixels = vec![0u8; w as usize * h as usize * 4];
         ctx.read_pixels(
             0,
@@ -121,7 +143,7 @@ pub fn report(args: &Args) -> Result<debugger::Report, String> {
         std::fs::write(path, png).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     }
     if let (Some(name), Some(path)) = (&args.view, &args.view_png) {
-        let (png, legend) = view_png(name, &records, window.width as u32, window.height as u32)?;
+        let (png, legend) = view_png(name, &records, w as u32, h as u32)?;
         std::fs::write(path, png).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
         eprintln!("{legend}");
     }

@@ -100,7 +100,11 @@ fn views_and_outlines_write_images() {
         .arg(&outl)
         .output()
         .expect("run shaderbox");
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let legend = String::from_utf8_lossy(&out.stderr);
     // The quad spans the middle half: tint.x goes 0 → 1 across it.
     assert!(legend.contains("view `tint': x in [0, 0.992]"), "{legend}");
@@ -117,6 +121,77 @@ fn views_and_outlines_write_images() {
         .output()
         .expect("run shaderbox");
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("has no input or variable `nope' (it has: gl_FragColor, tint)"));
+    assert!(String::from_utf8_lossy(&out.stderr)
+        .contains("has no input or variable `nope' (it has: gl_FragColor, tint)"));
     let _ = std::fs::remove_dir_all(&tmp);
+}
+
+/// The seed's sphere impostors (`shaderbox render` of two overlapping
+/// atoms, replayed from its exported scene): a pixel in a quad corner shows
+/// the ray missing the sphere and the `discard`; a pixel on the rim the
+/// ray-sphere values, the depth written and the depth test; a pixel where
+/// the atoms overlap both fragments and the nearer one winning the depth
+/// test.
+#[test]
+fn sphere_impostor_pixels_match_the_golden_files() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/debug");
+    let tmp = std::env::temp_dir().join(format!("shaderbox-spheres-{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).expect("tmp dir");
+    let scene = tmp.join("two-atoms.json");
+    let out = Command::new(env!("CARGO_BIN_EXE_shaderbox"))
+        .arg("render")
+        .arg(dir.join("two-atoms.pdb"))
+        .args(["--size", "32x32", "-o"])
+        .arg(tmp.join("two-atoms.png"))
+        .arg("--export-scene")
+        .arg(&scene)
+        .output()
+        .expect("run shaderbox render");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let bless = std::env::var_os("BLESS").is_some();
+    let mut failures = Vec::new();
+    for (name, pixel, needles) in [
+        ("sphere-corner", "5,5", &["discarded at line 76"][..]),
+        (
+            "sphere-rim",
+            "6,6",
+            &["position = 0.16", "gl_FragDepth = ", "depth test passed"][..],
+        ),
+        (
+            "sphere-overlap",
+            "16,16",
+            &["2 fragments", "depth test passed"][..],
+        ),
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_shaderbox"))
+            .arg("debug")
+            .arg(&scene)
+            .args(["--pixel", pixel])
+            .output()
+            .expect("run shaderbox debug");
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let got = String::from_utf8_lossy(&out.stdout).into_owned();
+        for n in needles {
+            assert!(got.contains(n), "{name}: no `{n}' in\n{got}");
+        }
+        let golden = dir.join(format!("{name}.out"));
+        if bless {
+            std::fs::write(&golden, &got).expect("write golden");
+        } else if std::fs::read_to_string(&golden).unwrap_or_default() != got {
+            failures.push(format!(
+                "{name}: report differs from {}:\n{got}",
+                golden.display()
+            ));
+        }
+    }
+    let _ = std::fs::remove_dir_all(&tmp);
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
