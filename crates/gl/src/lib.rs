@@ -269,12 +269,12 @@ impl Context {
 
     /// True between glBegin and glEnd; most commands are then
     /// `GL_INVALID_OPERATION` (GL 2.1 §2.6.3).
-    pub(crate) fn in_begin_end(&self) -> bool {
+    pub fn in_begin_end(&self) -> bool {
         self.va.begin_mode.is_some()
     }
 
     /// Records `GL_INVALID_OPERATION` and returns true inside glBegin/glEnd.
-    pub(crate) fn reject_in_begin(&mut self) -> bool {
+    pub fn reject_in_begin(&mut self) -> bool {
         if self.in_begin_end() {
             self.set_error(GL_INVALID_OPERATION);
             true
