@@ -60,16 +60,28 @@
 //!   raise GL_INVALID_OPERATION (never dereference the offset).
 #![allow(non_snake_case, clippy::missing_safety_doc)]
 
+pub mod array_draws;
 pub mod arrays;
+pub mod buffers;
 pub mod context;
 pub mod entry;
+pub mod legacy;
 pub mod lists;
 pub mod osmesa;
 pub mod osmesa_enums;
+pub mod pixels;
 pub mod procs;
+pub mod queries;
 pub mod types;
 
+pub use array_draws::*;
+pub use buffers::*;
 pub use entry::*;
+pub use legacy::*;
+pub use pixels::*;
+pub use queries::*;
+// Each entry-point module has its own table; the crate root names entry's.
+pub use entry::{lookup, NAMES};
 pub use lists::*;
 pub use osmesa::*;
 pub use osmesa_enums::*;

@@ -153,6 +153,8 @@ impl Context {
             }
             GL_ARRAY_BUFFER_BINDING => int(&[self.va.array_buffer as i64]),
             GL_ELEMENT_ARRAY_BUFFER_BINDING => int(&[self.va.element_buffer as i64]),
+            GL_PIXEL_PACK_BUFFER_BINDING => int(&[self.objects.pack_buffer as i64]),
+            GL_PIXEL_UNPACK_BUFFER_BINDING => int(&[self.objects.unpack_buffer as i64]),
             GL_FRAMEBUFFER_BINDING => int(&[fb as i64]),
             GL_READ_FRAMEBUFFER_BINDING => int(&[self.objects.read_framebuffer as i64]),
             GL_RENDERBUFFER_BINDING => int(&[self.objects.bound_renderbuffer as i64]),
