@@ -62,6 +62,7 @@
 
 pub mod array_draws;
 pub mod arrays;
+pub mod attribs;
 pub mod buffers;
 pub mod context;
 pub mod entry;
@@ -75,6 +76,7 @@ pub mod queries;
 pub mod types;
 
 pub use array_draws::*;
+pub use attribs::*;
 pub use buffers::*;
 pub use entry::*;
 pub use legacy::*;

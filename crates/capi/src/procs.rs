@@ -9,6 +9,7 @@ pub fn lookup(name: &str) -> Option<*const ()> {
         crate::buffers::lookup,
         crate::queries::lookup,
         crate::legacy::lookup,
+        crate::attribs::lookup,
         crate::pixels::lookup,
         crate::array_draws::lookup,
         crate::array_draws::lookup_extra,

@@ -374,3 +374,37 @@ fn legacy_calls_keep_state_or_raise_what_the_spec_says() {
         OSMesaDestroyContext(ctx);
     }
 }
+
+#[test]
+fn attribute_stacks_restore_state_and_client_pointers() {
+    unsafe {
+        let mut buf = Vec::new();
+        let ctx = context(&mut buf, 4, 4);
+        let a = [0f32; 8];
+        let b = [0f32; 8];
+        glVertexPointer(2, GL_FLOAT, 0, a.as_ptr() as *const c_void);
+        glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+        glVertexPointer(3, GL_FLOAT, 0, b.as_ptr() as *const c_void);
+        glPopClientAttrib();
+        let mut p: *mut c_void = null_mut();
+        glGetPointerv(GL_VERTEX_ARRAY_POINTER, &mut p);
+        assert_eq!(p as usize, a.as_ptr() as usize);
+        let mut size = 0;
+        glGetIntegerv(GL_VERTEX_ARRAY_SIZE, &mut size);
+        assert_eq!(size, 2);
+        // glPushAttrib inside a display list.
+        glNewList(1, GL_COMPILE);
+        glPushAttrib(GL_ENABLE_BIT);
+        glEnable(GL_CULL_FACE);
+        glEndList();
+        glCallList(1);
+        assert_eq!(glIsEnabled(GL_CULL_FACE), 1);
+        glPopAttrib();
+        assert_eq!(glIsEnabled(GL_CULL_FACE), 0);
+        glPopAttrib();
+        assert_eq!(glGetError(), GL_STACK_UNDERFLOW);
+        glPopClientAttrib();
+        assert_eq!(glGetError(), GL_STACK_UNDERFLOW);
+        OSMesaDestroyContext(ctx);
+    }
+}

@@ -34,6 +34,7 @@
 //! - No display lists, selection/feedback, accumulation buffer, color index
 //!   mode, evaluators, pixel transfer (glDrawPixels/CopyPixels), queries.
 
+pub mod attrib_stack;
 pub mod builtins;
 pub mod draw;
 pub mod enums;
@@ -94,6 +95,9 @@ pub struct Context {
     pub(crate) cache: draw::DrawCache,
     /// The threads draws run on ([`Context::set_threads`]).
     pub(crate) workers: raster::Workers,
+    /// glPushAttrib / glPushClientAttrib stacks.
+    pub(crate) attrib_stack: Vec<attrib_stack::ServerAttribs>,
+    pub(crate) client_attrib_stack: Vec<attrib_stack::ClientAttribs>,
 }
 
 /// The environment variable giving the default number of draw threads.
@@ -149,6 +153,8 @@ impl Context {
             ),
             cache: draw::DrawCache::default(),
             workers: raster::Workers::new(threads_from_env()),
+            attrib_stack: Vec::new(),
+            client_attrib_stack: Vec::new(),
         }
     }
 

@@ -152,6 +152,7 @@ pub struct PointParams {
 /// The largest point size and line width.
 pub const MAX_POINT_SIZE: f32 = 255.0;
 
+#[derive(Clone)]
 pub struct State {
     /// Enabled capabilities: (cap, texture unit for per-unit caps else 0).
     pub enabled: BTreeSet<(u32, u32)>,
