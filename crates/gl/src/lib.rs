@@ -36,6 +36,7 @@
 
 pub mod attrib_stack;
 pub mod builtins;
+pub mod debug;
 pub mod draw;
 pub mod enums;
 pub mod ffgen;
@@ -98,6 +99,8 @@ pub struct Context {
     /// glPushAttrib / glPushClientAttrib stacks.
     pub(crate) attrib_stack: Vec<attrib_stack::ServerAttribs>,
     pub(crate) client_attrib_stack: Vec<attrib_stack::ClientAttribs>,
+    /// Draw debugging ([`Context::set_debug`]).
+    pub(crate) debug: debug::DebugSession,
 }
 
 /// The environment variable giving the default number of draw threads.
@@ -155,6 +158,7 @@ impl Context {
             workers: raster::Workers::new(threads_from_env()),
             attrib_stack: Vec::new(),
             client_attrib_stack: Vec::new(),
+            debug: debug::DebugSession::default(),
         }
     }
 

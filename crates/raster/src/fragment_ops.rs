@@ -23,6 +23,17 @@ fn stencil_face(state: &PipelineState, back: bool) -> Option<StencilFace> {
     state.stencil.map(|s| if back { s.back } else { s.front })
 }
 
+/// Whether the stencil test passes for a fragment over `stored` (`None`
+/// when there is no stencil test).
+pub(crate) fn stencil_passes(
+    state: &PipelineState,
+    back: bool,
+    stored: Option<u8>,
+) -> Option<bool> {
+    let face = stencil_face(state, back)?;
+    Some(stencil_test(&face, stored?))
+}
+
 fn stencil_ref(face: &StencilFace) -> u8 {
     face.reference.clamp(0, 255) as u8
 }

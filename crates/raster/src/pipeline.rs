@@ -247,6 +247,8 @@ struct Setup<'a> {
     /// Viewport transform (px/2, ox, py/2, oy, (f-n)/2, (n+f)/2).
     vp: [f64; 6],
     prims: Vec<Prim>,
+    /// Index of the primitive being assembled.
+    source: u32,
 }
 
 impl Setup<'_> {
@@ -319,6 +321,7 @@ impl Setup<'_> {
             back,
             z_offset,
             attrs,
+            source: self.source,
         });
     }
 
@@ -455,6 +458,34 @@ pub fn draw_stages(
     fetch: &dyn VertexFetch,
     textures: &(dyn Textures + Sync),
 ) -> Result<(), DrawError> {
+    draw_probed(
+        workers,
+        fb,
+        state,
+        (vs, vs_uniforms),
+        (fs, fs_uniforms),
+        mode,
+        indices,
+        fetch,
+        textures,
+        None,
+    )
+}
+
+/// [`draw_stages`], reporting to `probe` what happens at its pixel.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn draw_probed(
+    workers: &Workers,
+    fb: &mut Framebuffer,
+    state: &PipelineState,
+    (vs, vs_uniforms): (&dyn ShaderStage, &[u32]),
+    (fs, fs_uniforms): (&dyn ShaderStage, &[u32]),
+    mode: Mode,
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    textures: &(dyn Textures + Sync),
+    probe: Option<&crate::probe::Probe>,
+) -> Result<(), DrawError> {
     let vs_layout = VsLayout::new(vs.interface());
     let fs_layout = FsLayout::new(vs.interface(), fs.interface(), state.two_sided_color);
     let (vertex_of, outputs) = run_vertices(
@@ -498,8 +529,12 @@ pub fn draw_stages(
             (n + f) / 2.0,
         ],
         prims: Vec::new(),
+        source: 0,
     };
     assemble(mode, vertex_of.len(), |p| {
+        if let Some(probe) = probe {
+            probe.note_primitive(setup.source, &p);
+        }
         let v = |i: usize| vertex_of.get(i).copied().unwrap_or(0);
         match p {
             Assembled::Point(i) => {
@@ -517,6 +552,7 @@ pub fn draw_stages(
                 setup.polygon(&vs, v(prov));
             }
         }
+        setup.source += 1;
     });
     let prims = setup.prims;
 
@@ -532,7 +568,11 @@ pub fn draw_stages(
             .map(|l| l.color && state.flat_shading)
             .collect(),
         early: fs_layout.frag_depth.is_none(),
+        probe,
     };
+    if let Some(p) = probe {
+        p.set_vertices(&vs_layout, &outputs, &vertex_of);
+    }
     shade_tiles(workers, fb, &stage, &prims)
 }
 
