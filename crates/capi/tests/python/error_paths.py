@@ -433,5 +433,92 @@ def framebuffers(log):
     return False
 
 
+@scene("err_queries_buffers_attribs", 8, 8)
+def queries_buffers_attribs(log):
+    v = (ctypes.c_int * 4)()
+    f = (ctypes.c_float * 4)()
+    mx = int(GL.glGetIntegerv(GL.GL_MAX_VERTEX_ATTRIBS))
+    check(log, "glGetVertexAttribiv(index max)", raw20.glGetVertexAttribiv, mx,
+          GL.GL_VERTEX_ATTRIB_ARRAY_SIZE, v)
+    check(log, "glGetVertexAttribiv(bad pname)", raw20.glGetVertexAttribiv, 1, GL.GL_LESS, v)
+    check(log, "glGetVertexAttribfv(0, CURRENT_VERTEX_ATTRIB)", raw20.glGetVertexAttribfv, 0,
+          GL.GL_CURRENT_VERTEX_ATTRIB, f)
+    p = ctypes.c_void_p()
+    check(log, "glGetPointerv(bad)", raw11.glGetPointerv, GL.GL_LESS, ctypes.byref(p))
+    check(log, "glGetTexLevelParameteriv(level -1)", raw10.glGetTexLevelParameteriv,
+          GL.GL_TEXTURE_2D, -1, GL.GL_TEXTURE_WIDTH, v)
+    check(log, "glGetTexLevelParameteriv(bad target)", raw10.glGetTexLevelParameteriv,
+          GL.GL_LESS, 0, GL.GL_TEXTURE_WIDTH, v)
+    check(log, "glGetTexParameterfv(bad pname)", raw10.glGetTexParameterfv, GL.GL_TEXTURE_2D,
+          GL.GL_LESS, f)
+    check(log, "glGetTexEnvfv(bad pname)", raw10.glGetTexEnvfv, GL.GL_TEXTURE_ENV, GL.GL_LESS, f)
+    check(log, "glGetTexGenfv(bad coord)", raw10.glGetTexGenfv, GL.GL_LESS,
+          GL.GL_TEXTURE_GEN_MODE, f)
+    px = (ctypes.c_ubyte * 64)()
+    check(log, "glGetTexImage(bad format)", raw10.glGetTexImage, GL.GL_TEXTURE_2D, 0,
+          GL.GL_LESS, GL.GL_UNSIGNED_BYTE, px)
+    check(log, "glGetTexImage(level -1)", raw10.glGetTexImage, GL.GL_TEXTURE_2D, -1,
+          GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, px)
+    # Not compared: glCopyTexImage2D with border 1 (GL 2.1 allows texture
+    # borders, shaderbox does not implement them: GL_INVALID_VALUE), and a
+    # draw sourcing a mapped buffer (GL 2.1 §2.9.1: GL_INVALID_OPERATION,
+    # which shaderbox raises; Mesa 22 draws). docs/CONFORMANCE.md.
+    check(log, "glCopyTexImage2D(w -1)", raw11.glCopyTexImage2D, GL.GL_TEXTURE_2D, 0,
+          GL.GL_RGBA, 0, 0, -1, 4, 0)
+    check(log, "glCopyTexImage2D", raw11.glCopyTexImage2D, GL.GL_TEXTURE_2D, 0, GL.GL_RGBA,
+          0, 0, 4, 4, 0)
+    check(log, "glCopyTexSubImage2D(out of range)", raw11.glCopyTexSubImage2D,
+          GL.GL_TEXTURE_2D, 0, 2, 2, 0, 0, 4, 4)
+    check(log, "glTexSubImage1D(undefined image)", raw11.glTexSubImage1D, GL.GL_TEXTURE_1D, 0,
+          0, 1, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, px)
+    b = (ctypes.c_uint * 1)()
+    raw15.glGenBuffers(1, b)
+    check(log, "glMapBuffer(none bound)", raw15.glMapBuffer, GL.GL_ARRAY_BUFFER, GL.GL_READ_ONLY)
+    GL.glBindBuffer(GL.GL_ARRAY_BUFFER, b[0])
+    GL.glBufferData(GL.GL_ARRAY_BUFFER, 16, None, GL.GL_STATIC_DRAW)
+    check(log, "glMapBuffer(bad access)", raw15.glMapBuffer, GL.GL_ARRAY_BUFFER, GL.GL_LESS)
+    check(log, "glMapBuffer", raw15.glMapBuffer, GL.GL_ARRAY_BUFFER, GL.GL_WRITE_ONLY)
+    check(log, "glMapBuffer twice", raw15.glMapBuffer, GL.GL_ARRAY_BUFFER, GL.GL_WRITE_ONLY)
+    check(log, "glBufferSubData(mapped)", raw15.glBufferSubData, GL.GL_ARRAY_BUFFER, 0, 4,
+          px)
+    check(log, "glGetBufferSubData(mapped)", raw15.glGetBufferSubData, GL.GL_ARRAY_BUFFER, 0,
+          4, px)
+    check(log, "glGetBufferParameteriv(MAPPED)", raw15.glGetBufferParameteriv,
+          GL.GL_ARRAY_BUFFER, GL.GL_BUFFER_MAPPED, v)
+    log.append(f"  mapped: {v[0]}")
+    check(log, "glGetBufferParameteriv(bad)", raw15.glGetBufferParameteriv,
+          GL.GL_ARRAY_BUFFER, GL.GL_LESS, v)
+    r = check(log, "glUnmapBuffer", raw15.glUnmapBuffer, GL.GL_ARRAY_BUFFER)
+    log.append(f"  returned {r}")
+    r = check(log, "glUnmapBuffer twice", raw15.glUnmapBuffer, GL.GL_ARRAY_BUFFER)
+    log.append(f"  returned {r}")
+    check(log, "glGetBufferSubData(out of range)", raw15.glGetBufferSubData,
+          GL.GL_ARRAY_BUFFER, 8, 16, px)
+    check(log, "glPopAttrib(empty)", GL.glPopAttrib)
+    check(log, "glPopClientAttrib(empty)", GL.glPopClientAttrib)
+    check(log, "glPushAttrib", GL.glPushAttrib, GL.GL_ALL_ATTRIB_BITS)
+    check(log, "glPopAttrib", GL.glPopAttrib)
+    in_begin_end(log, "glPushAttrib", GL.glPushAttrib, GL.GL_ENABLE_BIT)
+    check(log, "glRenderMode(bad)", GL.glRenderMode, GL.GL_LESS)
+    check(log, "glAccum(bad op)", GL.glAccum, GL.GL_LESS, 1.0)
+    check(log, "glPixelTransferf(bad)", GL.glPixelTransferf, GL.GL_LESS, 1.0)
+    check(log, "glInterleavedArrays(bad format)", raw11.glInterleavedArrays, GL.GL_LESS, 0,
+          None)
+    check(log, "glInterleavedArrays(stride -1)", raw11.glInterleavedArrays, GL.GL_V3F, -1,
+          None)
+    check(log, "glIndexPointer(bad type)", raw11.glIndexPointer, GL.GL_LESS, 0, None)
+    check(log, "glEdgeFlagPointer(stride -1)", raw11.glEdgeFlagPointer, -1, None)
+    check(log, "glSelectBuffer(size -1)", raw10.glSelectBuffer, -1, None)
+    fb = (ctypes.c_float * 4)()
+    check(log, "glFeedbackBuffer(bad type)", raw10.glFeedbackBuffer, 4, GL.GL_LESS, fb)
+    check(log, "glPixelMapfv(size 0)", raw10.glPixelMapfv, GL.GL_PIXEL_MAP_R_TO_R, 0, f)
+    check(log, "glPixelMapfv(I_TO_R size 3)", raw10.glPixelMapfv, GL.GL_PIXEL_MAP_I_TO_R, 3, f)
+    check(log, "glGetPixelMapfv(bad)", raw10.glGetPixelMapfv, GL.GL_LESS, f)
+    GL.glLineStipple(2, 0x0f0f)
+    log.append(f"  line stipple: {GL.glGetIntegerv(GL.GL_LINE_STIPPLE_PATTERN)}, "
+               f"{GL.glGetIntegerv(GL.GL_LINE_STIPPLE_REPEAT)}")
+    return False
+
+
 if __name__ == "__main__":
     sys.exit(main())
