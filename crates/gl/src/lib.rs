@@ -30,9 +30,20 @@
 //!   environment variable `SHADERBOX_THREADS` ([`THREADS_ENV`]) or else the
 //!   machine's available parallelism. Images do not depend on the count.
 //!
+//! - Attribute stacks ([`attrib_stack`]): glPushAttrib/glPopAttrib restore
+//!   per group; glPushClientAttrib/glPopClientAttrib the pixel-store and
+//!   vertex-array state.
+//! - Pixel buffer objects: the GL_PIXEL_PACK_BUFFER / GL_PIXEL_UNPACK_BUFFER
+//!   bindings are kept ([`Context::bound_buffer`]); a C layer moves the
+//!   bytes (reads and writes of the buffer store through
+//!   [`Context::get_buffer_sub_data`] / [`Context::buffer_sub_data`]).
+//!
 //! ## Limitations
 //! - No display lists, selection/feedback, accumulation buffer, color index
 //!   mode, evaluators, pixel transfer (glDrawPixels/CopyPixels), queries.
+//! - GL_COMBINE texture-environment parameters are kept for queries
+//!   ([`Context::get_tex_envfv`]) but GL_COMBINE draws as GL_MODULATE.
+//! - glPushAttrib does not save texture-object parameters or hints.
 
 pub mod attrib_stack;
 pub mod builtins;
