@@ -41,12 +41,12 @@ pub struct OsContext {
     pub arrays: ClientArrays,
     /// Display lists.
     pub lists: crate::lists::Lists,
-    /// Buffers bound to GL_PIXEL_PACK_BUFFER / GL_PIXEL_UNPACK_BUFFER (the
-    /// context does not implement pixel buffer objects; while one is bound,
-    /// pixel pointers are offsets, so calls that would read or write
-    /// through them raise GL_INVALID_OPERATION instead).
-    pub pack_buffer: u32,
-    pub unpack_buffer: u32,
+    /// Buffer objects mapped by glMapBuffer, by name.
+    pub mapped: std::collections::BTreeMap<u32, crate::buffers::Mapping>,
+    /// State of the GL 1.x calls kept at the C level ([`crate::legacy`]).
+    pub legacy: crate::legacy::Legacy,
+    /// glPushClientAttrib's stack (the client pointers of the arrays).
+    pub client_attrib_stack: Vec<(u32, crate::arrays::ClientArrays)>,
     /// Pixels changed since the last copy to the client buffer.
     pub dirty: bool,
     /// glGetString results, kept alive for the context's lifetime.
@@ -76,8 +76,9 @@ impl OsContext {
             y_up: true,
             sized: false,
             dirty: true,
-            pack_buffer: 0,
-            unpack_buffer: 0,
+            mapped: std::collections::BTreeMap::new(),
+            client_attrib_stack: Vec::new(),
+            legacy: crate::legacy::Legacy::default(),
             depth_copy: DepthCopy::None,
             arrays: ClientArrays::default(),
             lists: Default::default(),

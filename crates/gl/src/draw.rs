@@ -1126,6 +1126,42 @@ impl Context {
     }
 }
 
+/// Packs `w * h` RGBA values (bottom row first) as `format`/`ty` rows at
+/// `align` (GL 2.1 §4.3.2's conversions, as glReadPixels).
+pub(crate) fn pack_pixels(
+    block: &[[f32; 4]],
+    w: usize,
+    h: usize,
+    format: u32,
+    ty: u32,
+    align: usize,
+) -> Vec<u8> {
+    let (Some(n), Some((px, comp))) = (
+        objects::format_components(format),
+        objects::pixel_size(format, ty),
+    ) else {
+        return Vec::new();
+    };
+    let stride = objects::row_stride(w, format, ty, align);
+    let mut out = vec![0u8; stride.saturating_mul(h)];
+    for row in 0..h {
+        for col in 0..w {
+            let Some(p) = block.get(row * w + col) else {
+                continue;
+            };
+            let vals = pack_components(*p, format);
+            let at = row * stride + col * px;
+            for (c, v) in vals.iter().take(n).enumerate() {
+                let o = at + c * comp;
+                if let Some(dst) = out.get_mut(o..o + comp) {
+                    encode(*v, ty, format == GL_STENCIL_INDEX, dst);
+                }
+            }
+        }
+    }
+    out
+}
+
 /// The components a client format takes from an RGBA (or depth/stencil in
 /// component 0) value; luminance is R + G + B (GL 2.1 §4.3.2).
 fn pack_components(p: [f32; 4], format: u32) -> Vec<f32> {
