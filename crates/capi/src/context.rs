@@ -51,6 +51,8 @@ pub struct OsContext {
     pub dirty: bool,
     /// glGetString results, kept alive for the context's lifetime.
     pub strings: std::collections::BTreeMap<u32, std::ffi::CString>,
+    /// Pixel debugging asked for by the environment ([`crate::debug_env`]).
+    pub debug: Option<crate::debug_env::DebugEnv>,
 }
 
 /// The depth buffer as OSMesaGetDepthBuffer exposes it.
@@ -62,8 +64,14 @@ pub enum DepthCopy {
 
 impl OsContext {
     pub fn new(format: u32, depth_bits: i32, stencil_bits: i32, accum_bits: i32) -> OsContext {
+        let debug = crate::debug_env::from_process();
+        let mut gl = gl::Context::new(1, 1);
+        if let Some(d) = &debug {
+            gl.set_debug(Some(d.request.clone()));
+        }
         OsContext {
-            gl: gl::Context::new(1, 1),
+            gl,
+            debug,
             format,
             depth_bits,
             stencil_bits,
@@ -109,6 +117,9 @@ impl OsContext {
     pub fn sync(&mut self) {
         if self.dirty {
             self.copy_out();
+        }
+        if let Some(d) = &self.debug {
+            crate::debug_env::flush(&mut self.gl, d);
         }
     }
 

@@ -354,6 +354,9 @@ gl_entry_points! {
         x: GLint, y: GLint, w: GLsizei, h: GLsizei, format: GLenum, ty: GLenum,
         pixels: *mut c_void
     ) => |c| {
+        if let Some(d) = &c.debug {
+            crate::debug_env::flush(&mut c.gl, d);
+        }
         let align = c.gl.get_integerv(GL_PACK_ALIGNMENT).first().copied().unwrap_or(4).max(1);
         let len = if w > 0 && h > 0 && gl::objects::pixel_size(format, ty).is_some() {
             gl::objects::row_stride(w as usize, format, ty, align as usize)

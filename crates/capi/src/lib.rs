@@ -85,6 +85,7 @@ pub mod arrays;
 pub mod attribs;
 pub mod buffers;
 pub mod context;
+pub mod debug_env;
 pub mod entry;
 pub mod legacy;
 pub mod lists;
