@@ -91,7 +91,8 @@ class _ProgramError(Error):
         self.text = diagnostics.text
         self.info_log = diagnostics.info_log
         first = diagnostics.errors[0] if diagnostics.errors else None
-        summary = f"{what}: {first}" if first else what
+        where = f"{first.stage} shader, " if first and first.stage else ""
+        summary = f"{what}: {where}{first}" if first else what
         super().__init__(f"{summary}\n{diagnostics.text}".rstrip())
 
 
@@ -104,8 +105,9 @@ class CompileError(_ProgramError):
     """
 
     def __init__(self, diagnostics: Diagnostics):
-        stages = sorted({d.stage for d in diagnostics.errors if d.stage})
-        super().__init__(f"the {' and '.join(stages) or 'shader'} shader did not compile", diagnostics)
+        stages = [s for s in ("vertex", "fragment") if any(d.stage == s for d in diagnostics.errors)]
+        what = " and ".join(stages) + (" shaders" if len(stages) > 1 else " shader") if stages else "the shader"
+        super().__init__(f"the {what} did not compile".replace("the the", "the"), diagnostics)
 
 
 class LinkError(_ProgramError):
