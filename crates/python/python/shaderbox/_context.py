@@ -195,7 +195,7 @@ class Program:
         raw = self.ctx._raw
         n = left if left is not None else 1
         base = u.name
-        vals = []
+        vals: List[List[Any]] = []
         for i in range(n):
             el_loc = loc if (i == 0) else raw.uniform_location(self.glo, f"{base}[{i}]")
             if u.kind == "float":
@@ -204,7 +204,7 @@ class Program:
                 vals.append(raw.get_uniformi(self.glo, el_loc))
         _check_gl(raw, f"reading uniform {name!r}")
         dtype = np.float32 if u.kind == "float" else (np.bool_ if u.kind == "bool" else np.int32)
-        out = np.asarray(vals, dtype=dtype)
+        out: np.ndarray = np.asarray(vals, dtype=dtype)
         elem = u.element_shape
         if len(elem) == 2:
             # GL returns matrices column by column.
@@ -245,7 +245,7 @@ _FORMATS = {
     "u2": (_gl.UNSIGNED_SHORT, 2, "u"),
     "u1": (_gl.UNSIGNED_BYTE, 1, "u"),
 }
-_NUMPY_OF = {
+_NUMPY_OF: Dict[Tuple[int, int], np.dtype] = {
     (_gl.FLOAT, 4): np.dtype("<f4"),
     (_gl.DOUBLE, 8): np.dtype("<f8"),
     (_gl.INT, 4): np.dtype("<i4"),
@@ -369,7 +369,7 @@ class VertexArray:
                     f"vertex format {fmt!r} has {len(attrs)} attribute(s) but {len(names)} name(s) were given: {names}"
                 )
             for f in attrs:
-                want = _NUMPY_OF[(f.gl_type, f.size)]
+                want: np.dtype = _NUMPY_OF[(f.gl_type, f.size)]
                 if buf.dtype is not None and buf.dtype != want:
                     raise TypeError(
                         f"vertex format {fmt!r} reads {want} but the buffer for {names} holds {buf.dtype}; "
@@ -736,9 +736,9 @@ class Context:
             if s is not None and not isinstance(s, str):
                 raise TypeError(f"{n} must be GLSL source text (str), got {type(s).__name__}")
         reports = []
-        for stage, src, name in (("vertex", vertex_shader, "vertex_shader"), ("fragment", fragment_shader, "fragment_shader")):
+        for stage, src, label in (("vertex", vertex_shader, "vertex_shader"), ("fragment", fragment_shader, "fragment_shader")):
             if src is not None:
-                reports.append(_diagnostics(_shaderbox.compile_report(src, stage, None, name)))
+                reports.append(_diagnostics(_shaderbox.compile_report(src, stage, None, label)))
         if not all(r.ok for r in reports):
             merged = Diagnostics(
                 [d for r in reports for d in r],

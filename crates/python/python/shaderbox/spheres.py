@@ -125,8 +125,8 @@ def draw_spheres(
 
     mv = ctx.modelview
     right, up = mv[0, :3].astype(np.float64), mv[1, :3].astype(np.float64)
-    prog["right_vector"] = right / max(np.linalg.norm(right), 1e-12)
-    prog["up_vector"] = up / max(np.linalg.norm(up), 1e-12)
+    prog["right_vector"] = right / max(float(np.linalg.norm(right)), 1e-12)
+    prog["up_vector"] = up / max(float(np.linalg.norm(up)), 1e-12)
     perspective = 1.0 if ctx.projection[3, 3] == 0.0 else 0.0
     prog["perspective"] = perspective
     fogging = np.zeros(4, dtype=np.float32)
