@@ -161,10 +161,10 @@ fn encode_png<'py>(
 }
 
 /// render_molecule(path, width, height, projection, fog, lights, rotate,
-/// supersample, background, effect) -> (width, height, rgba, has_alpha)
+/// supersample, background, effect, style) -> (width, height, rgba, has_alpha)
 #[pyfunction]
 #[allow(clippy::too_many_arguments)]
-#[pyo3(signature = (path, width, height, projection, fog, lights, rotate, supersample, background, effect))]
+#[pyo3(signature = (path, width, height, projection, fog, lights, rotate, supersample, background, effect, style))]
 fn render_molecule<'py>(
     py: Python<'py>,
     path: Option<PathBuf>,
@@ -177,6 +177,7 @@ fn render_molecule<'py>(
     supersample: u32,
     background: Option<[f32; 3]>,
     effect: &str,
+    style: &str,
 ) -> PyResult<(u32, u32, Bound<'py, PyBytes>, bool)> {
     let args = MoleculeArgs {
         width,
@@ -188,6 +189,7 @@ fn render_molecule<'py>(
         supersample,
         background,
         effect,
+        style,
     };
     let result = py.detach(|| molecule::render_molecule(path.as_deref(), &args));
     match result {

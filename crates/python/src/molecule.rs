@@ -1,7 +1,7 @@
 //! `shaderbox.render_molecule`: the options of `shaderbox render` (the CLI)
 //! by name, checked, then [`render::render`].
 
-use render::{Background, Effect, Fog, Projection, RenderOptions};
+use render::{Background, Effect, Fog, Projection, RenderOptions, Style};
 use std::path::Path;
 
 /// The options as Python passes them (already typed; names checked here).
@@ -17,6 +17,8 @@ pub struct MoleculeArgs<'a> {
     /// `None`: transparent.
     pub background: Option<[f32; 3]>,
     pub effect: &'a str,
+    /// "spacefill" or "ballstick", as `shaderbox render --style`.
+    pub style: &'a str,
 }
 
 /// Why `render_molecule` failed; the kinds become Python exceptions.
@@ -49,6 +51,15 @@ pub fn options(a: &MoleculeArgs) -> Result<RenderOptions, MoleculeError> {
         other => {
             return Err(MoleculeError::Option(format!(
                 "fog {other:?} is not one of: none, linear, exp, exp2"
+            )))
+        }
+    };
+    let style = match a.style {
+        "spacefill" => Style::Spacefill,
+        "ballstick" => Style::BallAndStick,
+        other => {
+            return Err(MoleculeError::Option(format!(
+                "style {other:?} is not one of: spacefill, ballstick"
             )))
         }
     };
@@ -91,6 +102,7 @@ pub fn options(a: &MoleculeArgs) -> Result<RenderOptions, MoleculeError> {
             .background
             .map_or(Background::Transparent, Background::Color),
         effect,
+        style,
     })
 }
 
@@ -133,6 +145,7 @@ mod tests {
             supersample: 1,
             background: Some([0.0; 3]),
             effect: "plain",
+            style: "spacefill",
         }
     }
 
@@ -150,6 +163,10 @@ mod tests {
             },
             MoleculeArgs {
                 effect: "sepia",
+                ..args()
+            },
+            MoleculeArgs {
+                style: "wireframe",
                 ..args()
             },
             MoleculeArgs {

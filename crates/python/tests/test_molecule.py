@@ -28,6 +28,7 @@ def test_options_change_the_picture():
         dict(background="#336699"),
         dict(background=(1.0, 1.0, 1.0)),
         dict(effect="outline"),
+        dict(style="ballstick"),
     ]:
         assert shaderbox.render_molecule(size=(64, 64), **kw) != base, kw
     t = shaderbox.render_molecule(size=(32, 32), background="transparent")
@@ -42,6 +43,8 @@ def test_bad_options(tmp_path):
         shaderbox.render_molecule(size=(8, 8), fog="smog")
     with pytest.raises(ValueError, match="effect .sepia. is not one of: plain, outline, x, x-red, transparent"):
         shaderbox.render_molecule(size=(8, 8), effect="sepia")
+    with pytest.raises(ValueError, match="style .wireframe. is not one of: spacefill, ballstick"):
+        shaderbox.render_molecule(size=(8, 8), style="wireframe")
     with pytest.raises(ValueError, match="light 9"):
         shaderbox.render_molecule(size=(8, 8), lights=[9])
     with pytest.raises(ValueError, match="size"):

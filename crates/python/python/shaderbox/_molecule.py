@@ -71,6 +71,7 @@ def render_molecule(
     supersample: int = 1,
     background: Any = "black",
     effect: str = "plain",
+    style: str = "spacefill",
 ) -> Image:
     """Draws a molecule as ``shaderbox render`` does and returns the :class:`Image`.
 
@@ -81,8 +82,9 @@ def render_molecule(
     ``"none"``), ``rotate`` (degrees about X, then Y, then Z),
     ``supersample`` (1-8), ``background`` (``"black"``, ``"white"``,
     ``"gray"``, ``"#RRGGBB"``, an RGB tuple in 0-1, or ``"transparent"``)
-    and ``effect`` (``"plain"``, ``"outline"``, ``"x"``, ``"x-red"``,
-    ``"transparent"``). Bad options raise ``ValueError``, an unreadable
+    ``effect`` (``"plain"``, ``"outline"``, ``"x"``, ``"x-red"``,
+    ``"transparent"``) and ``style`` (``"spacefill"``, ``"ballstick"``).
+    (The command's ``--frames`` turntable is a loop over ``rotate``.) Bad options raise ``ValueError``, an unreadable
     file ``OSError``, a malformed one ``RuntimeError`` naming the line."""
     w, h = _size(size)
     rot = np.asarray(rotate, dtype=np.float64).reshape(-1)
@@ -92,6 +94,6 @@ def render_molecule(
         raise TypeError(f"supersample must be an int 1-8, got {supersample!r}")
     p = None if path is None else os.fspath(path)
     width, height, data, has_alpha = _shaderbox.render_molecule(
-        p, w, h, projection, fog, _lights(lights), [float(v) for v in rot], int(supersample), _background(background), effect
+        p, w, h, projection, fog, _lights(lights), [float(v) for v in rot], int(supersample), _background(background), effect, style
     )
     return Image(np.frombuffer(data, dtype=np.uint8).reshape(height, width, 4), has_alpha=has_alpha)

@@ -28,6 +28,7 @@ def render_molecule(
     supersample: int,
     background: Optional[Sequence[float]],
     effect: str,
+    style: str,
 ) -> Tuple[int, int, bytes, bool]: ...
 
 class RawContext:
