@@ -10,7 +10,9 @@
 //!   contract, running `.shader_test` files on shaderbox's OpenGL 2.1.
 //!
 //! - `render` ([`render`]): draw a molecule with the shader library and
-//!   write a PNG.
+//!   write a PNG;
+//! - `gallery` ([`gallery`]): every library program on a fitting scene,
+//!   PNGs and an index.html.
 //!
 //! Debugging will join them as further variants of
 //! [`Command`], each in its own module.
@@ -19,6 +21,7 @@
 //! follows piglit's conventions instead (see its module).
 
 mod check;
+mod gallery;
 mod glslparsertest;
 mod guard;
 mod input;
@@ -56,6 +59,9 @@ enum Command {
     /// Draw a molecule (a PDB file, or the embedded crambin) with the
     /// shader library's sphere impostors and write a PNG.
     Render(render::Args),
+    /// Draw every program of the shader library on a fitting scene: PNGs
+    /// and an index.html.
+    Gallery(gallery::Args),
 }
 
 /// Exit statuses of `shaderbox` (except `glslparsertest` and
@@ -87,6 +93,7 @@ fn main() -> ExitCode {
         Command::GlslParserTest(args) => glslparsertest::run(&args),
         Command::ShaderRunner(args) => shader_runner::run(&args),
         Command::Render(args) => render::run(&args).into(),
+        Command::Gallery(args) => gallery::run(&args).into(),
     }
 }
 
