@@ -23,6 +23,17 @@ fn stencil_face(state: &PipelineState, back: bool) -> Option<StencilFace> {
     state.stencil.map(|s| if back { s.back } else { s.front })
 }
 
+/// Whether the stencil test passes for a fragment over `stored` (`None`
+/// when there is no stencil test).
+pub(crate) fn stencil_passes(
+    state: &PipelineState,
+    back: bool,
+    stored: Option<u8>,
+) -> Option<bool> {
+    let face = stencil_face(state, back)?;
+    Some(stencil_test(&face, stored?))
+}
+
 fn stencil_ref(face: &StencilFace) -> u8 {
     face.reference.clamp(0, 255) as u8
 }
@@ -87,17 +98,19 @@ pub(crate) fn early_reject(
 /// result. `fb` holds the pixels from `origin` on (a tile of the whole
 /// framebuffer, or all of it with origin (0, 0)); the fragment's x, y are
 /// window coordinates. Fragments outside `fb` or the scissor box are dropped.
+/// Returns whether the fragment passed every test (its colour was written,
+/// through the masks).
 pub(crate) fn process(
     fb: &mut Framebuffer,
     origin: (u32, u32),
     state: &PipelineState,
     frag: &Fragment,
-) {
+) -> bool {
     let (Some(lx), Some(ly)) = (frag.x.checked_sub(origin.0), frag.y.checked_sub(origin.1)) else {
-        return;
+        return false;
     };
     if lx >= fb.width || ly >= fb.height {
-        return;
+        return false;
     }
     if let Some(sc) = state.scissor {
         let (x, y) = (frag.x as i64, frag.y as i64);
@@ -106,7 +119,7 @@ pub(crate) fn process(
             || x >= sc.x as i64 + sc.w as i64
             || y >= sc.y as i64 + sc.h as i64
         {
-            return;
+            return false;
         }
     }
     let index = ly as usize * fb.width as usize + lx as usize;
@@ -117,7 +130,7 @@ pub(crate) fn process(
         let a = frag.colors[0][3];
         let a = if clamp { clamp01(a) } else { a };
         if !func.test(a, clamp01(reference)) {
-            return;
+            return false;
         }
     }
 
@@ -137,7 +150,7 @@ pub(crate) fn process(
     if let Some(face) = face {
         if !stencil_test(&face, stored_stencil) {
             write_stencil(fb, index, &face, face.fail, stored_stencil);
-            return;
+            return false;
         }
     }
     let depth_pass = match (state.depth_test, fb.depth.as_mut()) {
@@ -162,7 +175,7 @@ pub(crate) fn process(
         write_stencil(fb, index, &face, op, stored_stencil);
     }
     if !depth_pass {
-        return;
+        return false;
     }
 
     // §4.1.8 blending, §4.1.10 logic op, §4.2.2 masks.
@@ -176,6 +189,7 @@ pub(crate) fn process(
         };
         write_color(buf, index, state, *src);
     }
+    true
 }
 
 fn write_stencil(fb: &mut Framebuffer, index: usize, face: &StencilFace, op: StencilOp, old: u8) {

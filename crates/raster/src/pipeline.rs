@@ -173,23 +173,7 @@ fn run_vertices(
     let run_chunk = |chunk: &[u32]| -> Result<Vec<f32>, crate::ex::ExecError> {
         let mut batch = new_batch(n_in, stride);
         for (lane, &ix) in chunk.iter().enumerate() {
-            for (slot_no, slot) in iface.inputs.iter().enumerate() {
-                let (cols, rows) = match slot.ty.base {
-                    glsl::types::Base::Matrix { cols, rows } if slot.ty.array.is_none() => {
-                        (cols as usize, rows as usize)
-                    }
-                    _ => (1, slot.components.min(4)),
-                };
-                for col in 0..cols {
-                    let mut v = [0.0, 0.0, 0.0, 1.0];
-                    fetch.fetch_column(slot_no, col, ix, &mut v);
-                    for (c, &value) in v.iter().enumerate().take(rows) {
-                        if let Some(dst) = batch.inputs.get_mut(slot.offset + col * rows + c) {
-                            dst[lane] = value;
-                        }
-                    }
-                }
-            }
+            fetch_vertex(iface, fetch, ix, &mut batch, lane);
         }
         batch.active = if chunk.len() >= 32 {
             u32::MAX
@@ -236,6 +220,37 @@ fn run_vertices(
     Ok((vertex_of, outputs))
 }
 
+/// Fetches vertex `ix`'s attributes into `lane` of a vertex batch.
+pub(crate) fn fetch_vertex(
+    iface: &Interface,
+    fetch: &dyn VertexFetch,
+    ix: u32,
+    batch: &mut crate::ex::Batch,
+    lane: usize,
+) {
+    for (slot_no, slot) in iface.inputs.iter().enumerate() {
+        let (cols, rows) = match slot.ty.base {
+            glsl::types::Base::Matrix { cols, rows } if slot.ty.array.is_none() => {
+                (cols as usize, rows as usize)
+            }
+            _ => (1, slot.components.min(4)),
+        };
+        for col in 0..cols {
+            let mut v = [0.0, 0.0, 0.0, 1.0];
+            fetch.fetch_column(slot_no, col, ix, &mut v);
+            for (c, &value) in v.iter().enumerate().take(rows) {
+                if let Some(dst) = batch
+                    .inputs
+                    .get_mut(slot.offset + col * rows + c)
+                    .and_then(|d| d.get_mut(lane))
+                {
+                    *dst = value;
+                }
+            }
+        }
+    }
+}
+
 /// Turns assembled primitives into set-up [`Prim`]s.
 struct Setup<'a> {
     state: &'a PipelineState,
@@ -247,6 +262,9 @@ struct Setup<'a> {
     /// Viewport transform (px/2, ox, py/2, oy, (f-n)/2, (n+f)/2).
     vp: [f64; 6],
     prims: Vec<Prim>,
+    /// Index of the primitive being assembled.
+    source: u32,
+    probe: Option<&'a crate::probe::Probe>,
 }
 
 impl Setup<'_> {
@@ -307,6 +325,9 @@ impl Setup<'_> {
     }
 
     fn push(&mut self, shape: Shape, back: bool, z_offset: f64, attrs: Vec<f32>) {
+        if let Some(p) = self.probe {
+            p.note_shape(&shape);
+        }
         let b = shape.bounds();
         let c = self.clip_rect;
         let bounds = (b.0.max(c.0), b.1.max(c.1), b.2.min(c.2), b.3.min(c.3));
@@ -319,6 +340,7 @@ impl Setup<'_> {
             back,
             z_offset,
             attrs,
+            source: self.source,
         });
     }
 
@@ -455,6 +477,34 @@ pub fn draw_stages(
     fetch: &dyn VertexFetch,
     textures: &(dyn Textures + Sync),
 ) -> Result<(), DrawError> {
+    draw_probed(
+        workers,
+        fb,
+        state,
+        (vs, vs_uniforms),
+        (fs, fs_uniforms),
+        mode,
+        indices,
+        fetch,
+        textures,
+        None,
+    )
+}
+
+/// [`draw_stages`], reporting to `probe` what happens at its pixel.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn draw_probed(
+    workers: &Workers,
+    fb: &mut Framebuffer,
+    state: &PipelineState,
+    (vs, vs_uniforms): (&dyn ShaderStage, &[u32]),
+    (fs, fs_uniforms): (&dyn ShaderStage, &[u32]),
+    mode: Mode,
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    textures: &(dyn Textures + Sync),
+    probe: Option<&crate::probe::Probe>,
+) -> Result<(), DrawError> {
     let vs_layout = VsLayout::new(vs.interface());
     let fs_layout = FsLayout::new(vs.interface(), fs.interface(), state.two_sided_color);
     let (vertex_of, outputs) = run_vertices(
@@ -498,8 +548,13 @@ pub fn draw_stages(
             (n + f) / 2.0,
         ],
         prims: Vec::new(),
+        source: 0,
+        probe,
     };
     assemble(mode, vertex_of.len(), |p| {
+        if let Some(probe) = probe {
+            probe.note_primitive(setup.source, &p);
+        }
         let v = |i: usize| vertex_of.get(i).copied().unwrap_or(0);
         match p {
             Assembled::Point(i) => {
@@ -517,6 +572,7 @@ pub fn draw_stages(
                 setup.polygon(&vs, v(prov));
             }
         }
+        setup.source += 1;
     });
     let prims = setup.prims;
 
@@ -532,7 +588,11 @@ pub fn draw_stages(
             .map(|l| l.color && state.flat_shading)
             .collect(),
         early: fs_layout.frag_depth.is_none(),
+        probe,
     };
+    if let Some(p) = probe {
+        p.set_vertices(&vs_layout, &outputs, &vertex_of);
+    }
     shade_tiles(workers, fb, &stage, &prims)
 }
 

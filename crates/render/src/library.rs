@@ -220,25 +220,38 @@ pub fn program(name: &str) -> Option<&'static Program> {
 /// Compiles every object of `p` and links them on `ctx`; the error names
 /// the file whose compile failed, or carries the link log.
 pub fn build(ctx: &mut Context, p: &Program) -> Result<u32, String> {
-    let program = ctx.create_program();
-    let stages = [
+    let mut objects = Vec::new();
+    for (kind, files) in [
         (GL_VERTEX_SHADER, p.vertex),
         (GL_FRAGMENT_SHADER, p.fragment),
-    ];
-    for (kind, files) in stages {
+    ] {
         for f in files {
-            let sh = ctx.create_shader(kind);
-            ctx.shader_source(sh, &[f.source]);
-            ctx.compile_shader(sh);
-            if ctx.get_shaderiv(sh, GL_COMPILE_STATUS) == 0 {
-                return Err(format!("{}: {}", f.name, ctx.get_shader_info_log(sh)));
-            }
-            ctx.attach_shader(program, sh);
+            objects.push((kind, f.name.to_string(), f.source));
         }
+    }
+    build_objects(ctx, p.name, &objects)
+}
+
+/// Compiles shader objects `(kind, name for errors, source)` and links
+/// them into a program called `name` in errors.
+pub fn build_objects(
+    ctx: &mut Context,
+    name: &str,
+    objects: &[(u32, String, &str)],
+) -> Result<u32, String> {
+    let program = ctx.create_program();
+    for (kind, file, source) in objects {
+        let sh = ctx.create_shader(*kind);
+        ctx.shader_source(sh, &[source]);
+        ctx.compile_shader(sh);
+        if ctx.get_shaderiv(sh, GL_COMPILE_STATUS) == 0 {
+            return Err(format!("{file}: {}", ctx.get_shader_info_log(sh)));
+        }
+        ctx.attach_shader(program, sh);
     }
     ctx.link_program(program);
     if ctx.get_programiv(program, GL_LINK_STATUS) == 0 {
-        return Err(format!("{}: {}", p.name, ctx.get_program_info_log(program)));
+        return Err(format!("{name}: {}", ctx.get_program_info_log(program)));
     }
     Ok(program)
 }
