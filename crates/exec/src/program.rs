@@ -369,7 +369,7 @@ pub(crate) struct Program {
 impl Op {
     /// Calls `f` on every register operand, with the number of registers
     /// the operand may address from there (more than 1 for gathers).
-    fn for_each_reg(&self, f: &mut dyn FnMut(Reg, u32)) {
+    pub(crate) fn for_each_reg(&self, f: &mut dyn FnMut(Reg, u32)) {
         use Op::*;
         match *self {
             Const { d, .. } | Uniform { d, .. } => f(d, 1),
