@@ -455,3 +455,164 @@ fn images_are_identical_whatever_the_thread_count() {
         assert_eq!(one.3, many.3, "errors differ with {threads} threads");
     }
 }
+
+/// A fragment stage that hides its depth-only slice, so the pipeline
+/// takes the straightforward path (every fragment fully shaded).
+struct Straightforward<'a>(&'a Kernel);
+
+impl crate::ShaderStage for Straightforward<'_> {
+    fn interface(&self) -> &crate::ex::Interface {
+        self.0.interface()
+    }
+    fn run(
+        &self,
+        batch: &mut crate::ex::Batch,
+        uniforms: &[u32],
+        textures: &dyn crate::ex::Textures,
+    ) -> Result<(), crate::ex::ExecError> {
+        self.0.run(batch, uniforms, textures)
+    }
+}
+
+/// Overlapping sphere impostors (quads whose fragment shader ray-casts a
+/// sphere, writes gl_FragDepth and uses derivatives) over several tiles,
+/// drawn with `fs` as given (colors only for visible fragments) or
+/// through [`Straightforward`]; returns color and depth bytes.
+fn impostors(
+    workers: &crate::Workers,
+    discard: bool,
+    deferred: bool,
+    state_change: impl Fn(&mut PipelineState),
+) -> (Vec<[u8; 4]>, Vec<f32>) {
+    let (vs, fs) = program(
+        "attribute vec4 pos; attribute vec4 sph; varying vec4 s;\n\
+         void main() { gl_Position = pos; s = sph; }",
+        &format!(
+            "varying vec4 s; uniform float budget;\n\
+             void main() {{\n\
+               float q = 1.0 - dot(s.xy, s.xy);\n\
+               if (q < 0.0) {{ {} }}\n\
+               float h = sqrt(q);\n\
+               gl_FragDepth = s.z - 0.25 * h;\n\
+               float acc = 0.0;\n\
+               for (int i = 0; i < 4; i++) acc += 0.1 * h;\n\
+               vec3 n = vec3(s.xy, h) * 0.5 + 0.5;\n\
+               gl_FragColor = vec4(n * s.w + vec3(dFdx(h), dFdy(h), acc) * 2.0, 1.0);\n\
+             }}",
+            if discard { "discard;" } else { "q = 0.0;" }
+        ),
+    );
+    assert!(fs.depth_only().is_some(), "the shader has a depth slice");
+    let (w, h) = (150u32, 130u32);
+    let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, false);
+    fb.clear_color(&[0], [0.1, 0.2, 0.3, 1.0], [true; 4], None);
+    fb.clear_depth(1.0, true, None);
+    let mut state = PipelineState {
+        viewport: Rect::new(0, 0, w as i32, h as i32),
+        depth_test: Some(CompareFunc::Less),
+        ..PipelineState::default()
+    };
+    state_change(&mut state);
+    let mut attribs = SceneAttribs {
+        names: vs
+            .interface()
+            .inputs
+            .iter()
+            .map(|s| s.name.clone())
+            .collect(),
+        pos: Vec::new(),
+        col: Vec::new(),
+        tc: Vec::new(),
+    };
+    // 60 spheres on a pseudo-random walk, radii 0.05..0.3 (clip units),
+    // depths interleaved so later ones are sometimes behind.
+    let mut seed = 12345u32;
+    let mut rnd = || {
+        seed = seed.wrapping_mul(1103515245).wrapping_add(12345);
+        (seed >> 8) as f32 / (1u32 << 24) as f32
+    };
+    for _ in 0..60 {
+        let (cx, cy, r, z, shade) = (
+            rnd() * 2.2 - 1.1,
+            rnd() * 2.2 - 1.1,
+            0.05 + 0.25 * rnd(),
+            0.3 + 0.5 * rnd(),
+            0.4 + 0.6 * rnd(),
+        );
+        for (dx, dy) in [
+            (-1.0, -1.0),
+            (1.0, -1.0),
+            (1.0, 1.0),
+            (-1.0, -1.0),
+            (1.0, 1.0),
+            (-1.0, 1.0),
+        ] {
+            attribs.pos.push([cx + dx * r, cy + dy * r, 0.0, 1.0]);
+            // SceneAttribs' `col` slot carries `sph`.
+            attribs.col.push([dx, dy, z, shade]);
+        }
+    }
+    attribs.names = attribs
+        .names
+        .iter()
+        .map(|n| {
+            if n == "sph" {
+                "col".to_string()
+            } else {
+                n.clone()
+            }
+        })
+        .collect();
+    let idx: Vec<u32> = (0..attribs.pos.len() as u32).collect();
+    let tex = TextureUnits::default();
+    let straight = Straightforward(&fs);
+    let fs_stage: &dyn crate::ShaderStage = if deferred { &fs } else { &straight };
+    crate::draw_stages(
+        workers,
+        &mut fb,
+        &state,
+        &vs,
+        &[],
+        fs_stage,
+        &[],
+        Mode::Triangles,
+        &idx,
+        &attribs,
+        &tex,
+    )
+    .unwrap();
+    (fb.read_pixels_u8(0, 0, 0, w, h), fb.read_depth(0, 0, w, h))
+}
+
+#[test]
+fn colors_for_visible_fragments_only_give_the_same_bytes() {
+    for discard in [true, false] {
+        let want = impostors(&crate::Workers::new(1), discard, false, |_| {});
+        let distinct: std::collections::BTreeSet<[u8; 4]> = want.0.iter().copied().collect();
+        assert!(distinct.len() > 300, "{} colors", distinct.len());
+        for threads in [1, 2] {
+            let got = impostors(&crate::Workers::new(threads), discard, true, |_| {});
+            assert!(
+                want.0 == got.0,
+                "color, discard {discard}, {threads} threads"
+            );
+            assert!(
+                want.1 == got.1,
+                "depth, discard {discard}, {threads} threads"
+            );
+        }
+    }
+    // Other depth functions, no depth writes, no depth test, color masks:
+    // the last fragment to pass still decides the pixel.
+    let changes: [fn(&mut PipelineState); 4] = [
+        |s| s.depth_test = Some(CompareFunc::GreaterEqual),
+        |s| s.depth_mask = false,
+        |s| s.depth_test = None,
+        |s| s.color_mask = [true, false, true, false],
+    ];
+    for change in changes {
+        let want = impostors(&crate::Workers::new(1), true, false, change);
+        let got = impostors(&crate::Workers::new(2), true, true, change);
+        assert!(want == got);
+    }
+}

@@ -108,6 +108,16 @@ pub trait ShaderStage: Sync {
         uniforms: &[u32],
         textures: &dyn ex::Textures,
     ) -> Result<(), ex::ExecError>;
+
+    /// A stage with the same interface that computes only what decides a
+    /// fragment's fate (`gl_FragDepth` and discard), bit for bit as this
+    /// stage does; see `exec::Kernel::depth_only`. When the fragment stage
+    /// has one and the per-fragment operations allow it, the pipeline runs
+    /// it on every fragment and this stage only on the fragments that end
+    /// up visible. `None` (the default): always run this stage.
+    fn depth_only(&self) -> Option<Box<dyn ShaderStage>> {
+        None
+    }
 }
 
 impl ShaderStage for ex::Kernel {
@@ -121,6 +131,9 @@ impl ShaderStage for ex::Kernel {
         textures: &dyn ex::Textures,
     ) -> Result<(), ex::ExecError> {
         ex::Kernel::run(self, batch, uniforms, textures)
+    }
+    fn depth_only(&self) -> Option<Box<dyn ShaderStage>> {
+        ex::Kernel::depth_only(self).map(|k| Box::new(k) as Box<dyn ShaderStage>)
     }
 }
 

@@ -532,6 +532,13 @@ pub fn draw_stages(
             .map(|l| l.color && state.flat_shading)
             .collect(),
         early: fs_layout.frag_depth.is_none(),
+        deferred: if fs_layout.frag_depth.is_some()
+            && crate::fragment_ops::last_writer_wins(fb, state)
+        {
+            fs.depth_only()
+        } else {
+            None
+        },
     };
     shade_tiles(workers, fb, &stage, &prims)
 }
@@ -594,15 +601,26 @@ fn shade_tiles(
             return TileResult::Skipped;
         };
         let r = rect(t);
-        let mut local = source.copy_tile(r.0 as u32, r.1 as u32, r.2 as u32, r.3 as u32);
-        for &p in bins.get(t).map_or(&[][..], |b| &b[..]) {
+        let copy = || source.copy_tile(r.0 as u32, r.1 as u32, r.2 as u32, r.3 as u32);
+        let mut local = copy();
+        let bin = bins.get(t).map_or(&[][..], |b| &b[..]);
+        let mut batch = stage.scratch();
+        if let Some(depth) = &stage.deferred {
+            match stage.shade_deferred(depth.as_ref(), &mut local, prims, bin, r, &mut batch) {
+                Ok(()) => return TileResult::Ran(local, None),
+                // Redraw the tile the straightforward way: it stops at the
+                // same fragment with the same error.
+                Err(_) => local = copy(),
+            }
+        }
+        for &p in bin {
             if cancel.skip(i) {
                 return TileResult::Skipped;
             }
             let Some(prim) = prims.get(p as usize) else {
                 continue;
             };
-            if let Err(e) = stage.shade(&mut local, prim, r) {
+            if let Err(e) = stage.shade(&mut local, prim, r, &mut batch) {
                 cancel.fail(i);
                 return TileResult::Ran(local, Some(e));
             }
