@@ -482,6 +482,7 @@ fn impostors(
     workers: &crate::Workers,
     discard: bool,
     deferred: bool,
+    spheres: usize,
     state_change: impl Fn(&mut PipelineState),
 ) -> (Vec<[u8; 4]>, Vec<f32>) {
     let (vs, fs) = program(
@@ -524,14 +525,14 @@ fn impostors(
         col: Vec::new(),
         tc: Vec::new(),
     };
-    // 60 spheres on a pseudo-random walk, radii 0.05..0.3 (clip units),
+    // Spheres on a pseudo-random walk, radii 0.05..0.3 (clip units),
     // depths interleaved so later ones are sometimes behind.
     let mut seed = 12345u32;
     let mut rnd = || {
         seed = seed.wrapping_mul(1103515245).wrapping_add(12345);
         (seed >> 8) as f32 / (1u32 << 24) as f32
     };
-    for _ in 0..60 {
+    for _ in 0..spheres {
         let (cx, cy, r, z, shade) = (
             rnd() * 2.2 - 1.1,
             rnd() * 2.2 - 1.1,
@@ -587,11 +588,11 @@ fn impostors(
 #[test]
 fn colors_for_visible_fragments_only_give_the_same_bytes() {
     for discard in [true, false] {
-        let want = impostors(&crate::Workers::new(1), discard, false, |_| {});
+        let want = impostors(&crate::Workers::new(1), discard, false, 60, |_| {});
         let distinct: std::collections::BTreeSet<[u8; 4]> = want.0.iter().copied().collect();
         assert!(distinct.len() > 300, "{} colors", distinct.len());
         for threads in [1, 2] {
-            let got = impostors(&crate::Workers::new(threads), discard, true, |_| {});
+            let got = impostors(&crate::Workers::new(threads), discard, true, 60, |_| {});
             assert!(
                 want.0 == got.0,
                 "color, discard {discard}, {threads} threads"
@@ -611,8 +612,20 @@ fn colors_for_visible_fragments_only_give_the_same_bytes() {
         |s| s.color_mask = [true, false, true, false],
     ];
     for change in changes {
-        let want = impostors(&crate::Workers::new(1), true, false, change);
-        let got = impostors(&crate::Workers::new(2), true, true, change);
+        let want = impostors(&crate::Workers::new(1), true, false, 60, change);
+        let got = impostors(&crate::Workers::new(2), true, true, 60, change);
         assert!(want == got);
+    }
+}
+
+#[test]
+fn many_primitives_give_the_same_bytes_for_any_thread_count() {
+    // 2,200 triangles: two primitive set-up chunks, many vertex tasks.
+    let one = impostors(&crate::Workers::new(1), true, true, 1100, |_| {});
+    let straight = impostors(&crate::Workers::new(1), true, false, 1100, |_| {});
+    assert!(one == straight);
+    for threads in [2, 3] {
+        let many = impostors(&crate::Workers::new(threads), true, true, 1100, |_| {});
+        assert!(one == many, "{threads} threads");
     }
 }

@@ -188,34 +188,53 @@ impl FragmentStage<'_> {
         let nv = prim.vertices();
         let is_point = matches!(prim.shape, Shape::Point { .. });
         let sprite = is_point && self.state.point_sprite;
-        for k in 0..4 {
-            let lane = 4 * q + k;
-            let (x, y) = (quad.x + (k as i64 & 1), quad.y + (k as i64 >> 1));
-            let it = &quad.interp[k];
-            let pc = if is_point {
+        let lanes = 4 * q..4 * q + 4;
+        let xy = |k: usize| (quad.x + (k as i64 & 1), quad.y + (k as i64 >> 1));
+        let pc: [(f32, f32); 4] = std::array::from_fn(|k| {
+            if is_point {
+                let (x, y) = xy(k);
                 prim.shape
                     .point_coord(x, y, self.state.point_sprite_origin_lower_left)
             } else {
                 (0.0, 0.0)
+            }
+        });
+        for (li, link) in layout.links.iter().enumerate() {
+            let Some(dst) = batch.inputs.get_mut(link.fs_offset) else {
+                continue;
             };
-            for (li, link) in layout.links.iter().enumerate() {
-                let mut value = if is_point || self.constant.get(li).copied().unwrap_or(false) {
-                    prim.attrs.get(li).copied().unwrap_or(0.0)
+            let Some(dst) = dst.get_mut(lanes.clone()) else {
+                continue;
+            };
+            let attr = |j: usize| prim.attrs.get(j * links + li).copied().unwrap_or(0.0);
+            let values: [f32; 3] = [attr(0), attr(1), attr(2)];
+            let flat = is_point || self.constant.get(li).copied().unwrap_or(false);
+            let replace = match (sprite, link.texcoord) {
+                (true, Some((set, c)))
+                    if set < 32 && self.state.coord_replace & (1 << set) != 0 =>
+                {
+                    Some(c.min(3))
+                }
+                _ => None,
+            };
+            for (k, out) in dst.iter_mut().enumerate() {
+                *out = if let Some(c) = replace {
+                    [pc[k].0, pc[k].1, 0.0, 1.0][c]
+                } else if flat {
+                    values[0]
                 } else {
+                    let w = &quad.interp[k].weights;
                     let mut acc = 0.0f64;
-                    for j in 0..nv {
-                        let a = prim.attrs.get(j * links + li).copied().unwrap_or(0.0);
-                        acc += it.weights[j] * a as f64;
+                    for j in 0..nv.min(3) {
+                        acc += w[j] * values[j] as f64;
                     }
                     acc as f32
                 };
-                if let (true, Some((set, c))) = (sprite, link.texcoord) {
-                    if set < 32 && self.state.coord_replace & (1 << set) != 0 {
-                        value = [pc.0, pc.1, 0.0, 1.0][c.min(3)];
-                    }
-                }
-                set(batch, link.fs_offset, lane, value);
             }
+        }
+        for (k, (it, pc)) in quad.interp.iter().zip(pc).enumerate() {
+            let lane = 4 * q + k;
+            let (x, y) = xy(k);
             if let Some(o) = layout.frag_coord {
                 set(batch, o, lane, x as f32 + 0.5);
                 set(batch, o + 1, lane, y as f32 + 0.5);
