@@ -523,6 +523,11 @@ fn wrap_coord(s: f32, wrap: Wrap, n: u32) -> f32 {
 fn index(i: i64, wrap: Wrap, n: u32) -> Texel {
     let n = n as i64;
     match wrap {
+        // Linear filtering asks for -1 and n at the edges, otherwise the
+        // index is in range: no division for those.
+        Wrap::Repeat if (0..n).contains(&i) => Some(i as usize),
+        Wrap::Repeat if i == -1 => Some((n - 1) as usize),
+        Wrap::Repeat if i == n => Some(0),
         Wrap::Repeat => Some(i.rem_euclid(n) as usize),
         Wrap::ClampToEdge | Wrap::MirroredRepeat => Some(i.clamp(0, n - 1) as usize),
         Wrap::Clamp | Wrap::ClampToBorder => (0..n).contains(&i).then_some(i as usize),
