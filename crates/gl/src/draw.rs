@@ -641,6 +641,44 @@ impl Context {
             slots: self.input_sources(&vs),
             immediate,
         };
+        let probe = self.debug.wants().map(|req| {
+            raster::probe_draw(
+                &target.fb,
+                &state,
+                &vs,
+                &vs_words,
+                &fs,
+                &fs_words,
+                raster_mode(mode),
+                indices,
+                &fetch,
+                &units,
+                req,
+            )
+            .map_err(|e| e.to_string())
+        });
+        let view = self.debug.view().map(|name| {
+            let (v, kinds) = crate::debug::resolve_view(&fs, name)?;
+            let image = raster::view_draw(
+                &target.fb,
+                &state,
+                &vs,
+                &vs_words,
+                &fs,
+                &fs_words,
+                raster_mode(mode),
+                indices,
+                &fetch,
+                &units,
+                v,
+            )
+            .map_err(|e| e.to_string())?;
+            Ok(crate::debug::ViewRecord {
+                name: name.to_string(),
+                kinds,
+                image,
+            })
+        });
         let r = raster::draw_on(
             &self.workers,
             &mut target.fb,
@@ -656,6 +694,37 @@ impl Context {
         );
         if let Err(e) = r {
             self.cache.error = Some(e.to_string());
+        }
+        if let Some(probe) = probe {
+            let record = crate::debug::DrawRecord {
+                draw: self.debug.draws,
+                mode,
+                count: indices.len(),
+                program: self.current_program,
+                framebuffer: target.name,
+                vertex: crate::debug::StageInfo {
+                    shaders: if vs_user {
+                        self.stage_shaders(glsl::Stage::Vertex)
+                    } else {
+                        Vec::new()
+                    },
+                    kernel: vs,
+                },
+                fragment: crate::debug::StageInfo {
+                    shaders: if fs_user {
+                        self.stage_shaders(glsl::Stage::Fragment)
+                    } else {
+                        Vec::new()
+                    },
+                    kernel: fs,
+                },
+                probe,
+                view,
+            };
+            self.debug.records.push(record);
+        }
+        if self.debug.request.is_some() {
+            self.debug.draws += 1;
         }
         self.store_target(target);
     }

@@ -35,6 +35,7 @@
 //!   mode, evaluators, pixel transfer (glDrawPixels/CopyPixels), queries.
 
 pub mod builtins;
+pub mod debug;
 pub mod draw;
 pub mod enums;
 pub mod ffgen;
@@ -94,6 +95,8 @@ pub struct Context {
     pub(crate) cache: draw::DrawCache,
     /// The threads draws run on ([`Context::set_threads`]).
     pub(crate) workers: raster::Workers,
+    /// Draw debugging ([`Context::set_debug`]).
+    pub(crate) debug: debug::DebugSession,
 }
 
 /// The environment variable giving the default number of draw threads.
@@ -149,6 +152,7 @@ impl Context {
             ),
             cache: draw::DrawCache::default(),
             workers: raster::Workers::new(threads_from_env()),
+            debug: debug::DebugSession::default(),
         }
     }
 

@@ -456,6 +456,126 @@ fn images_are_identical_whatever_the_thread_count() {
     }
 }
 
+/// The probe's view of a pixel where two triangles overlap agrees with the
+/// real draw: both fragments, the depth test of the second, the stored
+/// result; a discarded fragment names the discard.
+#[test]
+fn probe_reports_every_fragment_of_a_pixel() {
+    use crate::{probe_draw, Event, ProbeRequest};
+    let (vs, fs) = program(
+        "attribute vec4 pos; attribute vec4 col;\n\
+         void main() { gl_Position = vec4(pos.xy, col.a, 1.0); gl_FrontColor = col; }",
+        "void main() {\n\
+           if (gl_Color.r > 0.9 && gl_FragCoord.x < 2.0) discard;\n\
+           gl_FragColor = gl_Color;\n\
+         }",
+    );
+    let (w, h) = (8, 8);
+    let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, false);
+    if let Some(d) = fb.depth.as_mut() {
+        d.fill(crate::DEPTH_MAX);
+    }
+    let state = PipelineState {
+        viewport: Rect::new(0, 0, w as i32, h as i32),
+        depth_test: Some(CompareFunc::Less),
+        ..PipelineState::default()
+    };
+    // Two full-screen quads: red at z = 0.5 (window 0.75), then green
+    // nearer (z = -0.5, window 0.25).
+    let pos: Vec<[f32; 2]> = QUAD.iter().chain(QUAD.iter()).copied().collect();
+    let mut col = vec![[1.0, 0.0, 0.0, 0.5]; 6];
+    col.extend([[0.0, 1.0, 0.0, -0.5]; 6]);
+    let fetch = Attribs {
+        names: vs
+            .interface()
+            .inputs
+            .iter()
+            .map(|s| s.name.clone())
+            .collect(),
+        pos: &pos,
+        col: &col,
+    };
+    let indices: Vec<u32> = (0..12).collect();
+    let units = TextureUnits::default();
+    let before = fb.clone();
+    let probe = |x: u32, y: u32| {
+        probe_draw(
+            &before,
+            &state,
+            &vs,
+            &[],
+            &fs,
+            &[],
+            Mode::Triangles,
+            &indices,
+            &fetch,
+            &units,
+            ProbeRequest {
+                vertex: Some(7),
+                outlines: true,
+                ..ProbeRequest::pixel(x, y)
+            },
+        )
+        .expect("probe")
+    };
+    draw(
+        &mut fb,
+        &state,
+        &vs,
+        &[],
+        &fs,
+        &[],
+        Mode::Triangles,
+        &indices,
+        &fetch,
+        &units,
+    )
+    .expect("draw");
+    let at = |x: u32, y: u32| match &fb.color[0] {
+        crate::ColorBuffer::Rgba8(v) => v[(y * w + x) as usize],
+        _ => unreachable!(),
+    };
+
+    let p = probe(5, 5);
+    assert_eq!(p.after.color_bytes[0], Some(at(5, 5)));
+    assert_eq!(p.fragments.len(), 2, "{p:#?}");
+    let (red, green) = (&p.fragments[0], &p.fragments[1]);
+    assert_eq!(red.primitive / 2, 0);
+    assert_eq!(green.primitive / 2, 1);
+    let ops = green.ops.as_ref().expect("ops");
+    assert_eq!(ops.depth_test, Some(true));
+    assert_eq!(
+        ops.before.depth,
+        red.ops.as_ref().and_then(|o| o.after.depth)
+    );
+    assert!(ops.after.depth < ops.before.depth);
+    assert!(red.events.iter().any(|e| matches!(e, Event::Statement(_))));
+    assert_eq!(p.primitives.len(), 4);
+    assert_eq!(p.vertex_outputs.len(), 12);
+    // The traced vertex gives the outputs the draw used; every triangle
+    // has an outline.
+    let v = p.vertex.as_ref().expect("vertex trace");
+    assert_eq!(v.index, 7);
+    // (The trace has the shader's own outputs; the draw clamps colours.)
+    assert_eq!(v.outputs[..4], p.vertex_outputs[7][..4]);
+    assert_eq!(v.outputs[7], -0.5);
+    assert_eq!(p.vertex_outputs[7][7], 0.0);
+    assert!(v.events.iter().any(|e| matches!(e, Event::Store { .. })));
+    assert_eq!(p.outlines.len(), 4);
+    assert!(p.outlines.iter().all(|o| o.len() == 3));
+
+    // At x < 2 the red fragment is discarded; the trace shows it.
+    let p = probe(1, 5);
+    assert_eq!(p.after.color_bytes[0], Some(at(1, 5)));
+    assert!(p.fragments[0].discarded);
+    assert!(p.fragments[0].ops.is_none());
+    assert!(!p.fragments[1].discarded);
+
+    // Outside the framebuffer: a reason, no fragments.
+    let p = probe(8, 0);
+    assert!(p.unreachable.is_some() && p.fragments.is_empty());
+}
+
 /// A fragment stage that hides its depth-only slice, so the pipeline
 /// takes the straightforward path (every fragment fully shaded).
 struct Straightforward<'a>(&'a Kernel);

@@ -23,6 +23,17 @@ fn stencil_face(state: &PipelineState, back: bool) -> Option<StencilFace> {
     state.stencil.map(|s| if back { s.back } else { s.front })
 }
 
+/// Whether the stencil test passes for a fragment over `stored` (`None`
+/// when there is no stencil test).
+pub(crate) fn stencil_passes(
+    state: &PipelineState,
+    back: bool,
+    stored: Option<u8>,
+) -> Option<bool> {
+    let face = stencil_face(state, back)?;
+    Some(stencil_test(&face, stored?))
+}
+
 fn stencil_ref(face: &StencilFace) -> u8 {
     face.reference.clamp(0, 255) as u8
 }
@@ -87,14 +98,20 @@ pub(crate) fn early_reject(
 /// result. `fb` holds the pixels from `origin` on (a tile of the whole
 /// framebuffer, or all of it with origin (0, 0)); the fragment's x, y are
 /// window coordinates. Fragments outside `fb` or the scissor box are dropped.
+/// Returns whether the fragment passed every test (its colour was written,
+/// through the masks).
 pub(crate) fn process(
     fb: &mut Framebuffer,
     origin: (u32, u32),
     state: &PipelineState,
     frag: &Fragment,
-) {
-    if let Some(index) = tests(fb, origin, state, frag) {
-        write_colors(fb, index, state, &frag.colors);
+) -> bool {
+    match tests(fb, origin, state, frag) {
+        Some(index) => {
+            write_colors(fb, index, state, &frag.colors);
+            true
+        }
+        None => false,
     }
 }
 

@@ -63,6 +63,7 @@ mod fragment_ops;
 mod framebuffer;
 mod linkage;
 mod pipeline;
+mod probe;
 mod rasterize;
 mod shade;
 mod state;
@@ -78,6 +79,10 @@ pub use framebuffer::{
     Framebuffer, DEPTH_MAX, MAX_DRAW_BUFFERS, MAX_FRAMEBUFFER_SIZE,
 };
 pub use pipeline::{draw_stages, Mode, VertexFetch, MAX_POINT_SIZE, TILE};
+pub use probe::{
+    probe_draw, view_draw, DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine,
+    ProbeRequest, VertexProbe, View, ViewImage,
+};
 pub use rasterize::SUBPIXEL_BITS;
 pub use state::{
     Blend, BlendEquation, BlendFactor, CompareFunc, CullFace, FrontFace, LogicOp, PipelineState,
@@ -118,6 +123,44 @@ pub trait ShaderStage: Sync {
     fn depth_only(&self) -> Option<Box<dyn ShaderStage>> {
         None
     }
+
+    /// [`ShaderStage::run`], reporting `lane`'s statements, stores and
+    /// prints to `trace` (the debugger). Stages that cannot trace run
+    /// plainly.
+    fn run_probed(
+        &self,
+        batch: &mut ex::Batch,
+        uniforms: &[u32],
+        textures: &dyn ex::Textures,
+        _lane: usize,
+        _trace: &mut dyn ex::Trace,
+    ) -> Result<(), ex::ExecError> {
+        self.run(batch, uniforms, textures)
+    }
+
+    /// [`ShaderStage::run`], keeping the last value each lane stored into
+    /// registers `first..` in `out` (stages without registers run plainly).
+    fn run_watching(
+        &self,
+        batch: &mut ex::Batch,
+        uniforms: &[u32],
+        textures: &dyn ex::Textures,
+        _first: u32,
+        _out: &mut [[u32; ex::LANES]],
+    ) -> Result<(), ex::ExecError> {
+        self.run(batch, uniforms, textures)
+    }
+
+    /// [`ShaderStage::run`], reporting `debugPrintfEXT` output to `sink`.
+    fn run_printing(
+        &self,
+        batch: &mut ex::Batch,
+        uniforms: &[u32],
+        textures: &dyn ex::Textures,
+        _sink: &mut dyn ex::PrintSink,
+    ) -> Result<(), ex::ExecError> {
+        self.run(batch, uniforms, textures)
+    }
 }
 
 impl ShaderStage for ex::Kernel {
@@ -134,6 +177,36 @@ impl ShaderStage for ex::Kernel {
     }
     fn depth_only(&self) -> Option<Box<dyn ShaderStage>> {
         ex::Kernel::depth_only(self).map(|k| Box::new(k) as Box<dyn ShaderStage>)
+    }
+
+    fn run_probed(
+        &self,
+        batch: &mut ex::Batch,
+        uniforms: &[u32],
+        textures: &dyn ex::Textures,
+        lane: usize,
+        trace: &mut dyn ex::Trace,
+    ) -> Result<(), ex::ExecError> {
+        ex::Kernel::run_traced(self, batch, uniforms, textures, lane, trace)
+    }
+    fn run_printing(
+        &self,
+        batch: &mut ex::Batch,
+        uniforms: &[u32],
+        textures: &dyn ex::Textures,
+        sink: &mut dyn ex::PrintSink,
+    ) -> Result<(), ex::ExecError> {
+        ex::Kernel::run_printing(self, batch, uniforms, textures, sink)
+    }
+    fn run_watching(
+        &self,
+        batch: &mut ex::Batch,
+        uniforms: &[u32],
+        textures: &dyn ex::Textures,
+        first: u32,
+        out: &mut [[u32; ex::LANES]],
+    ) -> Result<(), ex::ExecError> {
+        ex::Kernel::run_watching(self, batch, uniforms, textures, first, out)
     }
 }
 

@@ -205,23 +205,7 @@ fn run_vertices(
     let run_chunk = |chunk: &[u32]| -> Result<Vec<f32>, crate::ex::ExecError> {
         let mut batch = new_batch(n_in, stride);
         for (lane, &ix) in chunk.iter().enumerate() {
-            for (slot_no, slot) in iface.inputs.iter().enumerate() {
-                let (cols, rows) = match slot.ty.base {
-                    glsl::types::Base::Matrix { cols, rows } if slot.ty.array.is_none() => {
-                        (cols as usize, rows as usize)
-                    }
-                    _ => (1, slot.components.min(4)),
-                };
-                for col in 0..cols {
-                    let mut v = [0.0, 0.0, 0.0, 1.0];
-                    fetch.fetch_column(slot_no, col, ix, &mut v);
-                    for (c, &value) in v.iter().enumerate().take(rows) {
-                        if let Some(dst) = batch.inputs.get_mut(slot.offset + col * rows + c) {
-                            dst[lane] = value;
-                        }
-                    }
-                }
-            }
+            fetch_vertex(iface, fetch, ix, &mut batch, lane);
         }
         batch.active = if chunk.len() >= 32 {
             u32::MAX
@@ -268,6 +252,37 @@ fn run_vertices(
     Ok((vertex_of, outputs))
 }
 
+/// Fetches vertex `ix`'s attributes into `lane` of a vertex batch.
+pub(crate) fn fetch_vertex(
+    iface: &Interface,
+    fetch: &dyn VertexFetch,
+    ix: u32,
+    batch: &mut crate::ex::Batch,
+    lane: usize,
+) {
+    for (slot_no, slot) in iface.inputs.iter().enumerate() {
+        let (cols, rows) = match slot.ty.base {
+            glsl::types::Base::Matrix { cols, rows } if slot.ty.array.is_none() => {
+                (cols as usize, rows as usize)
+            }
+            _ => (1, slot.components.min(4)),
+        };
+        for col in 0..cols {
+            let mut v = [0.0, 0.0, 0.0, 1.0];
+            fetch.fetch_column(slot_no, col, ix, &mut v);
+            for (c, &value) in v.iter().enumerate().take(rows) {
+                if let Some(dst) = batch
+                    .inputs
+                    .get_mut(slot.offset + col * rows + c)
+                    .and_then(|d| d.get_mut(lane))
+                {
+                    *dst = value;
+                }
+            }
+        }
+    }
+}
+
 /// Turns assembled primitives into set-up [`Prim`]s.
 struct Setup<'a> {
     state: &'a PipelineState,
@@ -278,6 +293,14 @@ struct Setup<'a> {
     clip_rect: PixelRect,
     /// Viewport transform (px/2, ox, py/2, oy, (f-n)/2, (n+f)/2).
     vp: [f64; 6],
+    probe: Option<&'a crate::probe::Probe>,
+}
+
+/// Where set-up primitives go: the primitives of one chunk, and the index
+/// of the assembled primitive being set up.
+struct Out {
+    prims: Vec<Prim>,
+    source: u32,
 }
 
 impl Setup<'_> {
@@ -337,19 +360,23 @@ impl Setup<'_> {
         out
     }
 
-    fn push(&self, out: &mut Vec<Prim>, shape: Shape, back: bool, z_offset: f64, attrs: Vec<f32>) {
+    fn push(&self, out: &mut Out, shape: Shape, back: bool, z_offset: f64, attrs: Vec<f32>) {
+        if let Some(p) = self.probe {
+            p.note_shape(&shape);
+        }
         let b = shape.bounds();
         let c = self.clip_rect;
         let bounds = (b.0.max(c.0), b.1.max(c.1), b.2.min(c.2), b.3.min(c.3));
         if bounds.0 >= bounds.2 || bounds.1 >= bounds.3 {
             return;
         }
-        out.push(Prim {
+        out.prims.push(Prim {
             shape,
             bounds,
             back,
             z_offset,
             attrs,
+            source: out.source,
         });
     }
 
@@ -365,14 +392,7 @@ impl Setup<'_> {
         }
     }
 
-    fn point(
-        &self,
-        out: &mut Vec<Prim>,
-        v: &ClipVertex,
-        back: bool,
-        z_offset: f64,
-        provoking: &[f32],
-    ) {
+    fn point(&self, out: &mut Out, v: &ClipVertex, back: bool, z_offset: f64, provoking: &[f32]) {
         if !self.planes.point_inside(v) {
             return;
         }
@@ -385,7 +405,7 @@ impl Setup<'_> {
 
     fn line(
         &self,
-        out: &mut Vec<Prim>,
+        out: &mut Out,
         a: &ClipVertex,
         b: &ClipVertex,
         back: bool,
@@ -403,7 +423,7 @@ impl Setup<'_> {
         self.push(out, shape, back, z_offset, attrs);
     }
 
-    fn polygon(&self, out: &mut Vec<Prim>, vertices: &[usize], provoking: usize) {
+    fn polygon(&self, out: &mut Out, vertices: &[usize], provoking: usize) {
         let original: Vec<ClipVertex> = vertices.iter().map(|&v| self.clip_vertex(v)).collect();
         // Line and point modes draw the unclipped polygon's edges/vertices.
         let filled_only = self.state.polygon_mode == [PolygonMode::Fill; 2];
@@ -501,6 +521,34 @@ pub fn draw_stages(
     fetch: &dyn VertexFetch,
     textures: &(dyn Textures + Sync),
 ) -> Result<(), DrawError> {
+    draw_probed(
+        workers,
+        fb,
+        state,
+        (vs, vs_uniforms),
+        (fs, fs_uniforms),
+        mode,
+        indices,
+        fetch,
+        textures,
+        None,
+    )
+}
+
+/// [`draw_stages`], reporting to `probe` what happens at its pixel.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn draw_probed(
+    workers: &Workers,
+    fb: &mut Framebuffer,
+    state: &PipelineState,
+    (vs, vs_uniforms): (&dyn ShaderStage, &[u32]),
+    (fs, fs_uniforms): (&dyn ShaderStage, &[u32]),
+    mode: Mode,
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    textures: &(dyn Textures + Sync),
+    probe: Option<&crate::probe::Probe>,
+) -> Result<(), DrawError> {
     let vs_layout = VsLayout::new(vs.interface());
     let fs_layout = FsLayout::new(vs.interface(), fs.interface(), state.two_sided_color);
     let (vertex_of, outputs) = run_vertices(
@@ -543,18 +591,33 @@ pub fn draw_stages(
             (f - n) / 2.0,
             (n + f) / 2.0,
         ],
+        probe,
     };
     // Primitive set-up in chunks of primitives on the workers, the
-    // chunks' primitives concatenated in order.
+    // chunks' primitives concatenated in order (one chunk, in order, for
+    // the debugger's probe, which notes primitives as they come).
     let setup = &setup;
     let count = vertex_of.len();
     let n_prims = primitive_count(mode, count);
-    let chunks = n_prims.div_ceil(SETUP_CHUNK);
+    let chunk = if probe.is_some() {
+        n_prims.max(1)
+    } else {
+        SETUP_CHUNK
+    };
+    let chunks = n_prims.div_ceil(chunk);
     let parts = workers.map(chunks, 1, |c, _| {
-        let mut out = Vec::new();
+        let mut out = Out {
+            prims: Vec::new(),
+            source: 0,
+        };
         let v = |i: usize| vertex_of.get(i).copied().unwrap_or(0);
-        for k in c * SETUP_CHUNK..((c + 1) * SETUP_CHUNK).min(n_prims) {
-            match primitive(mode, count, k) {
+        for k in c * chunk..((c + 1) * chunk).min(n_prims) {
+            let p = primitive(mode, count, k);
+            out.source = k as u32;
+            if let Some(probe) = probe {
+                probe.note_primitive(out.source, &p);
+            }
+            match p {
                 Assembled::Point(i) => {
                     let cv = setup.clip_vertex(v(i));
                     setup.point(&mut out, &cv, false, 0.0, &cv.data);
@@ -569,7 +632,7 @@ pub fn draw_stages(
                 }
             }
         }
-        out
+        out.prims
     });
     let prims: Vec<Prim> = parts.into_iter().flatten().collect();
 
@@ -585,14 +648,20 @@ pub fn draw_stages(
             .map(|l| l.color && state.flat_shading)
             .collect(),
         early: fs_layout.frag_depth.is_none(),
+        // The probe replays every fragment: never deferred.
         deferred: if fs_layout.frag_depth.is_some()
+            && probe.is_none()
             && crate::fragment_ops::last_writer_wins(fb, state)
         {
             fs.depth_only()
         } else {
             None
         },
+        probe,
     };
+    if let Some(p) = probe {
+        p.set_vertices(&vs_layout, &outputs, &vertex_of);
+    }
     shade_tiles(workers, fb, &stage, &prims)
 }
 

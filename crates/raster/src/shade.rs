@@ -20,6 +20,9 @@ pub(crate) struct Prim {
     pub z_offset: f64,
     /// Fragment varyings per vertex (`links` values each).
     pub attrs: Vec<f32>,
+    /// Index of the assembled primitive this one came from (clipping may
+    /// split one into several), for the debugger.
+    pub source: u32,
 }
 
 impl Prim {
@@ -103,6 +106,8 @@ pub(crate) struct FragmentStage<'a> {
     /// The depth-only slice of `shader`, when colors may be computed for
     /// the visible fragments only (see [`FragmentStage::shade_deferred`]).
     pub deferred: Option<Box<dyn ShaderStage>>,
+    /// The debugger's pixel probe (`None` in normal draws).
+    pub probe: Option<&'a crate::probe::Probe>,
 }
 
 impl FragmentStage<'_> {
@@ -144,6 +149,9 @@ impl FragmentStage<'_> {
                     let zf = depth_to_fixed(quad.z[k] as f32);
                     if fragment_ops::early_reject(fb, self.state, index, zf, prim.back) {
                         quad.live &= !(1 << k);
+                        if let Some(p) = self.probe.filter(|p| p.at(x, y)) {
+                            p.early_rejected(fb, self.state, index, prim, quad.z[k]);
+                        }
                     }
                 }
             }
@@ -284,7 +292,52 @@ impl FragmentStage<'_> {
     ) -> Result<(), ExecError> {
         let pairs: Vec<(&Prim, &Quad)> = quads.iter().map(|q| (prim, q)).collect();
         self.fill(batch, &pairs);
-        self.shader.run(batch, self.uniforms, self.textures)?;
+        let live_mask = batch.active & !batch.helper;
+        let probed = self.probe.and_then(|p| {
+            let lane = quads.iter().enumerate().find_map(|(q, quad)| {
+                (0..4).find_map(|k| {
+                    let (x, y) = (quad.x + (k as i64 & 1), quad.y + (k as i64 >> 1));
+                    (p.at(x, y) && live_mask & (1 << (4 * q + k)) != 0).then_some(4 * q + k)
+                })
+            })?;
+            Some((p, lane))
+        });
+        let mut record = None;
+        let mut watched = Vec::new();
+        match probed {
+            Some((p, lane)) => {
+                if p.prints_others() {
+                    // The other lanes' prints: the same batch run once
+                    // more (runs are deterministic).
+                    let mut copy = batch.clone();
+                    p.print_batch(self, &mut copy, prim.source, |l| {
+                        let quad = quads.get(l / 4)?;
+                        let k = (l % 4) as i64;
+                        Some((quad.x + (k & 1), quad.y + (k >> 1))).filter(|_| l != lane)
+                    })?;
+                }
+                let mut r = p.begin(prim, batch, lane, quads[lane / 4].z[lane % 4]);
+                let result =
+                    self.shader
+                        .run_probed(batch, self.uniforms, self.textures, lane, &mut r);
+                r.finish(batch, lane, result.as_ref().err());
+                result?;
+                record = Some((p, lane, r));
+            }
+            None => {
+                if let Some((p, view)) = self.probe.and_then(|p| Some((p, p.view()?))) {
+                    watched = p.run_view(self, batch, view)?;
+                } else if let Some(p) = self.probe {
+                    p.print_batch(self, batch, prim.source, |lane| {
+                        let quad = quads.get(lane / 4)?;
+                        let k = (lane % 4) as i64;
+                        Some((quad.x + (k & 1), quad.y + (k >> 1)))
+                    })?;
+                } else {
+                    self.shader.run(batch, self.uniforms, self.textures)?;
+                }
+            }
+        }
 
         for (q, quad) in quads.iter().enumerate() {
             for k in 0..4 {
@@ -303,8 +356,17 @@ impl FragmentStage<'_> {
                     back_facing: prim.back,
                     colors: self.colors(batch, lane),
                 };
-                fragment_ops::process(fb, origin, self.state, &frag);
+                let passed = match record.as_mut().filter(|r| r.1 == lane) {
+                    Some((p, _, r)) => p.process(fb, origin, self.state, &frag, r),
+                    None => fragment_ops::process(fb, origin, self.state, &frag),
+                };
+                if let (true, Some(p)) = (passed && !watched.is_empty(), self.probe) {
+                    p.view_store(frag.x, frag.y, batch, &watched, lane);
+                }
             }
+        }
+        if let Some((p, _, r)) = record {
+            p.push(r);
         }
         Ok(())
     }
