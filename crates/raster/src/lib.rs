@@ -20,7 +20,8 @@
 //! [`draw_on`] runs on a [`Workers`] (1 thread = inline on the caller; more
 //! = a rayon pool owned by the `Workers`, no global state). Vertex batches
 //! of `exec::LANES` vertices are tasks writing their own vertices' outputs;
-//! primitive setup is sequential; each 64×64 tile is a task that owns a
+//! primitive set-up runs in chunks of 2,048 primitives whose results are
+//! concatenated in primitive order; each 64×64 tile is a task that owns a
 //! copy of its pixels and runs its primitives in draw order, and the tiles
 //! are written back in tile order. No value is combined across tasks, and
 //! textures are read-only, so the framebuffer is bit-identical whatever the
@@ -30,6 +31,20 @@
 //! that tile keeps the fragments written before the error, later tiles are
 //! untouched, and that tile's error is returned. (A vertex-stage error
 //! draws nothing and reports the first failing vertex batch's error.)
+//!
+//! # Colors for visible fragments only
+//! When the fragment stage writes `gl_FragDepth` (so early depth testing
+//! is impossible), has a depth-only slice ([`ShaderStage::depth_only`])
+//! and the per-fragment operations let the last fragment to pass the
+//! depth test decide a pixel (no alpha test, blending, logic op or stencil
+//! test), each tile runs the slice on every fragment, depth-tests in draw
+//! order and remembers the winning primitive per pixel, then runs the full
+//! stage once per winning (primitive, 2×2 quad), with the same inputs,
+//! coverage and helper lanes as the straightforward path, and writes the
+//! colors. The bytes are those of the straightforward path (tests compare
+//! both); on a shader error the tile is redrawn the straightforward way so
+//! errors and partial results are unchanged. The debugger's probe always
+//! takes the straightforward path.
 //!
 //! Vertex → fragment linkage is by name (user varyings, gl_TexCoord,
 //! gl_FogFragCoord); gl_Color / gl_SecondaryColor come from
