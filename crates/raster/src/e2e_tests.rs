@@ -749,3 +749,98 @@ fn many_primitives_give_the_same_bytes_for_any_thread_count() {
         assert!(one == many, "{threads} threads");
     }
 }
+
+/// Small overlapping, blended, depth-tested triangles (most cover a few
+/// pixels of one quad) with derivatives in the shader. With a stencil
+/// test that changes nothing (ALWAYS, KEEP) every primitive is shaded on
+/// its own; without, quads of consecutive primitives share batches.
+fn small_triangles(workers: &crate::Workers, stencil_noop: bool, func: CompareFunc) -> SceneResult {
+    let (vs, fs) = program(
+        "attribute vec4 pos; attribute vec4 col; varying vec4 v;\n\
+         void main() { gl_Position = pos; v = col; }",
+        "varying vec4 v;\n\
+         void main() { gl_FragColor = v + vec4(dFdx(v.r), dFdy(v.g), 0.0, 0.0) * 8.0; }",
+    );
+    let (w, h) = (140u32, 100u32);
+    let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, true);
+    fb.clear_color(&[0], [0.1, 0.2, 0.3, 1.0], [true; 4], None);
+    let far = match func {
+        CompareFunc::Greater | CompareFunc::GreaterEqual => 0.0,
+        _ => 1.0,
+    };
+    fb.clear_depth(far, true, None);
+    let state = PipelineState {
+        viewport: Rect::new(0, 0, w as i32, h as i32),
+        depth_test: Some(func),
+        blend: Some(Blend {
+            src_rgb: BlendFactor::SrcAlpha,
+            dst_rgb: BlendFactor::OneMinusSrcAlpha,
+            ..Blend::default()
+        }),
+        stencil: stencil_noop.then(StencilState::default),
+        ..PipelineState::default()
+    };
+    let mut seed = 777u32;
+    let mut rnd = || {
+        seed = seed.wrapping_mul(1103515245).wrapping_add(12345);
+        (seed >> 8) as f32 / (1u32 << 24) as f32
+    };
+    let mut attribs = SceneAttribs {
+        names: vs
+            .interface()
+            .inputs
+            .iter()
+            .map(|s| s.name.clone())
+            .collect(),
+        pos: Vec::new(),
+        col: Vec::new(),
+        tc: Vec::new(),
+    };
+    for _ in 0..2500 {
+        let (x, y, z) = (rnd() * 2.0 - 1.0, rnd() * 2.0 - 1.0, rnd() * 2.0 - 1.0);
+        let s = 0.01 + 0.08 * rnd() * rnd();
+        let c = [rnd(), rnd(), rnd(), 0.3 + 0.7 * rnd()];
+        for (dx, dy) in [(0.0, 0.0), (s, 0.2 * s), (0.3 * s, s)] {
+            attribs.pos.push([x + dx, y + dy, z, 1.0]);
+            attribs.col.push(c);
+        }
+    }
+    let idx: Vec<u32> = (0..attribs.pos.len() as u32).collect();
+    let tex = TextureUnits::default();
+    let r = crate::draw_stages(
+        workers,
+        &mut fb,
+        &state,
+        &vs,
+        &[],
+        &fs,
+        &[],
+        Mode::Triangles,
+        &idx,
+        &attribs,
+        &tex,
+    );
+    (
+        fb.read_pixels_u8(0, 0, 0, w, h),
+        fb.read_depth(0, 0, w, h),
+        fb.read_stencil(0, 0, w, h),
+        r.err().map(|e| e.to_string()).into_iter().collect(),
+    )
+}
+
+#[test]
+fn primitives_sharing_batches_give_the_same_bytes() {
+    for func in [
+        CompareFunc::Less,
+        CompareFunc::GreaterEqual,
+        CompareFunc::Always,
+    ] {
+        let want = small_triangles(&crate::Workers::new(1), true, func);
+        let distinct: std::collections::BTreeSet<[u8; 4]> = want.0.iter().copied().collect();
+        assert!(distinct.len() > 300, "{} colors", distinct.len());
+        for threads in [1, 2] {
+            let got = small_triangles(&crate::Workers::new(threads), false, func);
+            assert!(want == got, "{func:?}, {threads} threads");
+        }
+    }
+}

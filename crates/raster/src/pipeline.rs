@@ -734,6 +734,13 @@ fn shade_tiles(
                 // same fragment with the same error.
                 Err(_) => local = copy(),
             }
+        } else if stage.batches_primitives(source) {
+            match stage.shade_batched(&mut local, prims, bin, r, &mut batch) {
+                Ok(()) => return TileResult::Ran(local, None),
+                // The same: one primitive at a time gives the error and
+                // the partial tile of the contract.
+                Err(_) => local = copy(),
+            }
         }
         for &p in bin {
             if cancel.skip(i) {

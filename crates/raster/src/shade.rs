@@ -136,24 +136,7 @@ impl FragmentStage<'_> {
         for (qx, qy, mask) in prim.shape.quads(clip) {
             let mut quad = Quad::new(prim, qx, qy, mask);
             if self.early {
-                for k in 0..4usize {
-                    if quad.live & (1 << k) == 0 {
-                        continue;
-                    }
-                    let (x, y) = (qx + (k as i64 & 1), qy + (k as i64 >> 1));
-                    let (lx, ly) = (x - origin.0 as i64, y - origin.1 as i64);
-                    if lx < 0 || ly < 0 || lx >= fb.width as i64 || ly >= fb.height as i64 {
-                        continue;
-                    }
-                    let index = ly as usize * fb.width as usize + lx as usize;
-                    let zf = depth_to_fixed(quad.z[k] as f32);
-                    if fragment_ops::early_reject(fb, self.state, index, zf, prim.back) {
-                        quad.live &= !(1 << k);
-                        if let Some(p) = self.probe.filter(|p| p.at(x, y)) {
-                            p.early_rejected(fb, self.state, index, prim, quad.z[k]);
-                        }
-                    }
-                }
+                self.early_rejects(fb, origin, prim, &mut quad);
             }
             if quad.live == 0 {
                 continue;
@@ -168,6 +151,134 @@ impl FragmentStage<'_> {
             self.flush(fb, origin, prim, &pending, batch)?;
         }
         Ok(())
+    }
+
+    /// The primitives `bin` (indices into `prims`, in draw order) inside
+    /// `tile`, quads of consecutive primitives sharing batches (a
+    /// primitive covering a pixel or two no longer costs a whole batch).
+    /// Fragments still go through the per-fragment operations in draw
+    /// order after their batch ran, so the bytes are those of
+    /// [`FragmentStage::shade`] per primitive, provided early rejection
+    /// against a depth buffer that misses the batch's pending fragments is
+    /// still right: [`FragmentStage::batches_primitives`] says when. On an
+    /// error the caller redraws the tile with [`FragmentStage::shade`].
+    pub fn shade_batched(
+        &self,
+        fb: &mut Framebuffer,
+        prims: &[Prim],
+        bin: &[u32],
+        tile: PixelRect,
+        batch: &mut Batch,
+    ) -> Result<(), ExecError> {
+        let origin = (tile.0.max(0) as u32, tile.1.max(0) as u32);
+        let mut pending: Vec<(&Prim, Quad)> = Vec::with_capacity(LANES / 4);
+        let flush = |fb: &mut Framebuffer,
+                     pending: &[(&Prim, Quad)],
+                     batch: &mut Batch|
+         -> Result<(), ExecError> {
+            let pairs: Vec<(&Prim, &Quad)> = pending.iter().map(|(p, q)| (*p, q)).collect();
+            self.fill(batch, &pairs);
+            self.shader.run(batch, self.uniforms, self.textures)?;
+            for (q, (prim, quad)) in pending.iter().enumerate() {
+                for k in 0..4 {
+                    let lane = 4 * q + k;
+                    if quad.live & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
+                        continue;
+                    }
+                    let (x, y) = (quad.x + (k as i64 & 1), quad.y + (k as i64 >> 1));
+                    if x < 0 || y < 0 {
+                        continue;
+                    }
+                    let frag = Fragment {
+                        x: x as u32,
+                        y: y as u32,
+                        z: self.frag_z(batch, lane, quad, k),
+                        back_facing: prim.back,
+                        colors: self.colors(batch, lane),
+                    };
+                    fragment_ops::process(fb, origin, self.state, &frag);
+                }
+            }
+            Ok(())
+        };
+        for &p in bin {
+            let Some(prim) = prims.get(p as usize) else {
+                continue;
+            };
+            let clip = (
+                prim.bounds.0.max(tile.0),
+                prim.bounds.1.max(tile.1),
+                prim.bounds.2.min(tile.2),
+                prim.bounds.3.min(tile.3),
+            );
+            for (qx, qy, mask) in prim.shape.quads(clip) {
+                let mut quad = Quad::new(prim, qx, qy, mask);
+                if self.early {
+                    self.early_rejects(fb, origin, prim, &mut quad);
+                }
+                if quad.live == 0 {
+                    continue;
+                }
+                pending.push((prim, quad));
+                if pending.len() == LANES / 4 {
+                    flush(fb, &pending, batch)?;
+                    pending.clear();
+                }
+            }
+        }
+        if !pending.is_empty() {
+            flush(fb, &pending, batch)?;
+        }
+        Ok(())
+    }
+
+    /// Whether [`FragmentStage::shade_batched`] gives the bytes of
+    /// [`FragmentStage::shade`]: no early rejection at all, or one that
+    /// stays right against an older depth buffer: no stencil test, and a
+    /// depth function for which stored depths only move one way
+    /// (LESS/LEQUAL: down, GREATER/GEQUAL: up; NEVER/ALWAYS do not look),
+    /// or no depth writes. Never with the debugger's probe.
+    pub fn batches_primitives(&self, fb: &Framebuffer) -> bool {
+        use crate::state::CompareFunc::*;
+        if self.probe.is_some() {
+            return false;
+        }
+        if !self.early {
+            return true;
+        }
+        let stencil = self.state.stencil.is_some() && fb.stencil.is_some();
+        let monotone = match self.state.depth_test {
+            None => true,
+            Some(_) if !self.state.depth_mask => true,
+            Some(f) => matches!(
+                f,
+                Less | LessEqual | Greater | GreaterEqual | Never | Always
+            ),
+        };
+        !stencil && monotone
+    }
+
+    /// Drops the lanes of `quad` that the stencil or depth test will
+    /// certainly reject without side effects (no gl_FragDepth write).
+    fn early_rejects(&self, fb: &Framebuffer, origin: (u32, u32), prim: &Prim, quad: &mut Quad) {
+        for k in 0..4usize {
+            if quad.live & (1 << k) == 0 {
+                continue;
+            }
+            let (x, y) = (quad.x + (k as i64 & 1), quad.y + (k as i64 >> 1));
+            let (lx, ly) = (x - origin.0 as i64, y - origin.1 as i64);
+            if lx < 0 || ly < 0 || lx >= fb.width as i64 || ly >= fb.height as i64 {
+                continue;
+            }
+            let index = ly as usize * fb.width as usize + lx as usize;
+            let zf = depth_to_fixed(quad.z[k] as f32);
+            if fragment_ops::early_reject(fb, self.state, index, zf, prim.back) {
+                quad.live &= !(1 << k);
+                if let Some(p) = self.probe.filter(|p| p.at(x, y)) {
+                    p.early_rejected(fb, self.state, index, prim, quad.z[k]);
+                }
+            }
+        }
     }
 
     /// Clears `batch` and writes the fragment inputs of `quads` (quad `q`
