@@ -9,8 +9,11 @@
 //! planes (GL 2.1 §2.12), maps them to window space (§2.11), determines
 //! facing from the window-space area (§3.5.1), culls, and rasterizes
 //! (fill, line or point polygon modes). Fragments are shaded in 2×2 quads,
-//! four quads per `exec::Batch`, and go through the GL 2.1 §4.1
-//! per-fragment operations in primitive order. The framebuffer is
+//! four quads per `exec::Batch` (quads of consecutive primitives share a
+//! batch when early depth rejection against a depth buffer without the
+//! batch's pending fragments stays exact: no stencil test, a depth
+//! function that moves stored depths one way), and go through the GL 2.1
+//! §4.1 per-fragment operations in primitive order. The framebuffer is
 //! processed in 64×64 tiles, each seeing the primitives in draw order.
 //! Results are bit-identical on every machine: f64/f32 IEEE arithmetic
 //! without fused operations, `glsl::math` for the few functions needed,
