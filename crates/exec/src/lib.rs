@@ -98,6 +98,7 @@
 //! - Programs beyond [`limits::MAX_REGISTERS`] registers or
 //!   [`limits::MAX_OPS`] instructions are refused.
 
+mod depth_slice;
 mod interface;
 mod interp;
 mod lower;
@@ -313,6 +314,52 @@ impl Kernel {
             stmt_at,
         };
         interp::run(self, batch, uniforms, textures, &mut hook)
+    }
+
+    /// A kernel computing only what decides a fragment's fate: the
+    /// `gl_FragDepth` output and [`Batch::discarded`], for a renderer that
+    /// runs it on every covered fragment, depth-tests, and runs the full
+    /// kernel only on the survivors (with their quads' other lanes as
+    /// helpers, for derivatives).
+    ///
+    /// Same interface as `self` (inputs, uniform words, output slots); on
+    /// the active lanes it writes the bits `self` writes to `gl_FragDepth`
+    /// and discards the same lanes (and fails with the same
+    /// [`ExecError::LoopBudget`]); it leaves every other output as it was
+    /// in the batch. All control flow is kept; ops whose results only feed
+    /// other outputs are dropped (a backward liveness analysis over the
+    /// program, loops iterated to a fixpoint). GLSL 1.10/1.20 fragment
+    /// shaders have no side effect besides their outputs, so running the
+    /// slice first never changes what the full kernel computes.
+    ///
+    /// `None` for a vertex kernel, a fragment kernel that does not write
+    /// `gl_FragDepth`, or when the slice would keep more than 80 % of the
+    /// ops (not worth a second pass).
+    pub fn depth_only(&self) -> Option<Kernel> {
+        if self.stage != glsl::Stage::Fragment {
+            return None;
+        }
+        let slot = self.interface.output("gl_FragDepth")?;
+        if !slot.written {
+            return None;
+        }
+        let range = slot.offset..slot.offset + slot.components;
+        let outputs: Vec<_> = self
+            .outputs
+            .iter()
+            .copied()
+            .filter(|&(_, oc, _)| range.contains(&oc))
+            .collect();
+        let live_out: Vec<u32> = outputs.iter().map(|&(r, _, _)| r).collect();
+        let program = depth_slice::slice(&self.program, &live_out)?;
+        Some(Kernel {
+            stage: self.stage,
+            program,
+            interface: self.interface.clone(),
+            inputs: self.inputs.clone(),
+            outputs,
+            loop_budget: self.loop_budget,
+        })
     }
 
     /// Like [`Kernel::run`], reporting what each active (non-helper) lane

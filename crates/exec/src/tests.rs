@@ -9,6 +9,7 @@ use glsl::types::{Scalar, Type};
 use glsl::{compile, CompileOptions};
 
 mod builtins;
+mod depth_slice;
 mod piglit;
 
 pub(crate) fn link_one(stage: Stage, src: &str) -> Result<glsl::link::LinkedStage, String> {
