@@ -22,7 +22,7 @@ pub const MAX_ARRAY_COPY: usize = 1 << 30;
 
 /// The client pointers of the arrays whose pointer was last specified
 /// with no buffer bound.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub struct ClientArrays {
     pointers: BTreeMap<AttribSource, usize>,
 }
@@ -41,6 +41,25 @@ pub fn array_state(va: &VertexState, src: AttribSource) -> Option<&ArrayState> {
 }
 
 impl ClientArrays {
+    /// The client pointer last given for `src` (None: none, or the array
+    /// is in a buffer object).
+    pub fn pointer(&self, src: AttribSource) -> Option<usize> {
+        self.pointers.get(&src).copied()
+    }
+
+    /// The pointer value glGetPointerv/glGetVertexAttribPointerv return
+    /// for `src`: the client pointer, or the offset into the array's
+    /// buffer object.
+    pub fn pointer_value(&self, va: &VertexState, src: AttribSource) -> usize {
+        match array_state(va, src) {
+            Some(a) if a.buffer != 0 => match a.data {
+                gl::ArrayData::Offset(o) => o,
+                _ => 0,
+            },
+            _ => self.pointer(src).unwrap_or(0),
+        }
+    }
+
     /// A gl*Pointer call: with a buffer bound to GL_ARRAY_BUFFER the
     /// pointer is an offset into it; otherwise remember the C pointer and
     /// hand the context a placeholder that draws replace. `call` makes the

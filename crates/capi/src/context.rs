@@ -41,16 +41,18 @@ pub struct OsContext {
     pub arrays: ClientArrays,
     /// Display lists.
     pub lists: crate::lists::Lists,
-    /// Buffers bound to GL_PIXEL_PACK_BUFFER / GL_PIXEL_UNPACK_BUFFER (the
-    /// context does not implement pixel buffer objects; while one is bound,
-    /// pixel pointers are offsets, so calls that would read or write
-    /// through them raise GL_INVALID_OPERATION instead).
-    pub pack_buffer: u32,
-    pub unpack_buffer: u32,
+    /// Buffer objects mapped by glMapBuffer, by name.
+    pub mapped: std::collections::BTreeMap<u32, crate::buffers::Mapping>,
+    /// State of the GL 1.x calls kept at the C level ([`crate::legacy`]).
+    pub legacy: crate::legacy::Legacy,
+    /// glPushClientAttrib's stack (the client pointers of the arrays).
+    pub client_attrib_stack: Vec<(u32, crate::arrays::ClientArrays)>,
     /// Pixels changed since the last copy to the client buffer.
     pub dirty: bool,
     /// glGetString results, kept alive for the context's lifetime.
     pub strings: std::collections::BTreeMap<u32, std::ffi::CString>,
+    /// Pixel debugging asked for by the environment ([`crate::debug_env`]).
+    pub debug: Option<crate::debug_env::DebugEnv>,
 }
 
 /// The depth buffer as OSMesaGetDepthBuffer exposes it.
@@ -62,8 +64,14 @@ pub enum DepthCopy {
 
 impl OsContext {
     pub fn new(format: u32, depth_bits: i32, stencil_bits: i32, accum_bits: i32) -> OsContext {
+        let debug = crate::debug_env::from_process();
+        let mut gl = gl::Context::new(1, 1);
+        if let Some(d) = &debug {
+            gl.set_debug(Some(d.request.clone()));
+        }
         OsContext {
-            gl: gl::Context::new(1, 1),
+            gl,
+            debug,
             format,
             depth_bits,
             stencil_bits,
@@ -76,8 +84,9 @@ impl OsContext {
             y_up: true,
             sized: false,
             dirty: true,
-            pack_buffer: 0,
-            unpack_buffer: 0,
+            mapped: std::collections::BTreeMap::new(),
+            client_attrib_stack: Vec::new(),
+            legacy: crate::legacy::Legacy::default(),
             depth_copy: DepthCopy::None,
             arrays: ClientArrays::default(),
             lists: Default::default(),
@@ -108,6 +117,9 @@ impl OsContext {
     pub fn sync(&mut self) {
         if self.dirty {
             self.copy_out();
+        }
+        if let Some(d) = &self.debug {
+            crate::debug_env::flush(&mut self.gl, d);
         }
     }
 

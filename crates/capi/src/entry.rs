@@ -7,7 +7,7 @@
 //! pixels mark the context dirty; glFinish, glFlush and glReadPixels copy
 //! the default framebuffer into the client's buffer ([`OsContext::sync`]).
 
-use crate::context::{with_ctx, OsContext};
+use crate::context::OsContext;
 use crate::types::*;
 use gl::enums::*;
 use gl::vertex::AttribSource;
@@ -23,7 +23,7 @@ const MAX_BUFFER_BYTES: usize = 1 << 31;
 const MAX_UNIFORM_ELEMENTS: i32 = 4096;
 
 /// Reads `N` values at `p` (None for null).
-unsafe fn rd<const N: usize, T: Copy>(p: *const T) -> Option<[T; N]> {
+pub(crate) unsafe fn rd<const N: usize, T: Copy>(p: *const T) -> Option<[T; N]> {
     if p.is_null() {
         None
     } else {
@@ -37,7 +37,7 @@ unsafe fn rd<const N: usize, T: Copy>(p: *const T) -> Option<[T; N]> {
 /// caller's pointer) and `replay` gets a pointer to the copy. True when
 /// the call must not also run now (GL_COMPILE); false when it must
 /// (GL_COMPILE_AND_EXECUTE, or not compiling, or a null pointer).
-fn record_vector<const N: usize, T: Copy + 'static>(
+pub(crate) fn record_vector<const N: usize, T: Copy + 'static>(
     c: &mut OsContext,
     v: *const T,
     replay: impl Fn(*const T) + 'static,
@@ -53,7 +53,7 @@ fn record_vector<const N: usize, T: Copy + 'static>(
 }
 
 /// Reads `n` values at `p` (empty for null or n <= 0).
-unsafe fn rd_vec<T: Copy>(p: *const T, n: i64) -> Vec<T> {
+pub(crate) unsafe fn rd_vec<T: Copy>(p: *const T, n: i64) -> Vec<T> {
     if p.is_null() || n <= 0 {
         return Vec::new();
     }
@@ -64,7 +64,7 @@ unsafe fn rd_vec<T: Copy>(p: *const T, n: i64) -> Vec<T> {
 }
 
 /// Writes `v` at `p` (nothing for null).
-unsafe fn wr<T: Copy>(p: *mut T, v: &[T]) {
+pub(crate) unsafe fn wr<T: Copy>(p: *mut T, v: &[T]) {
     if p.is_null() {
         return;
     }
@@ -75,7 +75,7 @@ unsafe fn wr<T: Copy>(p: *mut T, v: &[T]) {
 }
 
 /// A C string argument (lossy UTF-8).
-unsafe fn cstr(p: *const c_char) -> Option<String> {
+pub(crate) unsafe fn cstr(p: *const c_char) -> Option<String> {
     if p.is_null() {
         return None;
     }
@@ -112,9 +112,13 @@ unsafe fn wr_string(
 }
 
 /// The client image a glTexImage*/glTexSubImage* call reads: `w*h*d`
-/// pixels of `format`/`ty` at the unpack alignment (None for null data,
-/// an unknown format/type or an empty image: the context validates).
-unsafe fn image_bytes(
+/// pixels of `format`/`ty` at the unpack alignment, from client memory or,
+/// with a buffer bound to GL_PIXEL_UNPACK_BUFFER, from that buffer at the
+/// offset `data` (GL 2.1 §4.3.5). Ok(None): no data (null pointer, an
+/// unknown format/type or an empty image: the context validates those).
+/// Err: an error was recorded (the range read lies outside the buffer, or
+/// the buffer is mapped: GL_INVALID_OPERATION); the call must do nothing.
+pub(crate) unsafe fn image_bytes(
     c: &mut OsContext,
     w: GLsizei,
     h: GLsizei,
@@ -122,24 +126,38 @@ unsafe fn image_bytes(
     format: GLenum,
     ty: GLenum,
     data: *const c_void,
-) -> Option<Vec<u8>> {
-    if data.is_null() || w <= 0 || h <= 0 || d <= 0 || c.unpack_buffer != 0 {
-        return None;
+) -> Result<Option<Vec<u8>>, crate::buffers::Recorded> {
+    let pbo = c.gl.bound_buffer(GL_PIXEL_UNPACK_BUFFER);
+    if (data.is_null() && pbo == 0) || w <= 0 || h <= 0 || d <= 0 {
+        return Ok(None);
     }
-    gl::objects::pixel_size(format, ty)?;
+    if gl::objects::pixel_size(format, ty).is_none() {
+        return Ok(None);
+    }
     let align =
         c.gl.get_integerv(GL_UNPACK_ALIGNMENT)
             .first()
             .copied()
             .unwrap_or(4);
     let row = gl::objects::row_stride(w as usize, format, ty, align.max(1) as usize);
-    let len = row.checked_mul(h as usize)?.checked_mul(d as usize)?;
+    let Some(len) = row
+        .checked_mul(h as usize)
+        .and_then(|x| x.checked_mul(d as usize))
+    else {
+        return Ok(None);
+    };
     if len > MAX_BUFFER_BYTES {
-        return None;
+        return Ok(None);
+    }
+    if pbo != 0 {
+        return crate::buffers::read_pixel_buffer(c, GL_PIXEL_UNPACK_BUFFER, data as usize, len)
+            .map(Some);
     }
     // SAFETY: GL's contract: the client image holds w x h x d pixels of
     // format/type laid out per the unpack state.
-    Some(unsafe { std::slice::from_raw_parts(data as *const u8, len) }.to_vec())
+    Ok(Some(
+        unsafe { std::slice::from_raw_parts(data as *const u8, len) }.to_vec(),
+    ))
 }
 
 /// A signed integer color/normal component to [-1, 1]: (2c + 1) / (2^b - 1)
@@ -154,7 +172,7 @@ fn b(x: GLboolean) -> bool {
 
 /// glDrawElements' index range: the indices (copied when client memory)
 /// and the data handed to the context.
-unsafe fn element_indices(
+pub(crate) unsafe fn element_indices(
     c: &mut OsContext,
     count: GLsizei,
     ty: GLenum,
@@ -211,7 +229,7 @@ macro_rules! gl_entry_points {
             #[allow(unused_unsafe, clippy::too_many_arguments, clippy::unnecessary_cast)]
             pub unsafe extern "C" fn $name($($a: $t),*) $(-> $r)? {
                 gl_entry_points!(@maybe [$($list)?] $name($($a),*));
-                with_ctx(gl_entry_points!(@def $($def)?), |$c: &mut OsContext| unsafe { $body })
+                crate::context::with_ctx(gl_entry_points!(@def $($def)?), |$c: &mut crate::context::OsContext| unsafe { $body })
             }
         )*
 
@@ -237,6 +255,7 @@ macro_rules! gl_entry_points {
     (@def) => { () };
     (@def $d:expr) => { $d };
 }
+pub(crate) use gl_entry_points;
 
 gl_entry_points! {
     // ---- errors, strings, queries ----
@@ -256,18 +275,45 @@ gl_entry_points! {
         c.strings.get(&name).map_or(std::ptr::null(), |s| s.as_ptr() as *const GLubyte)
     }
     fn glGetIntegerv(pname: GLenum, params: *mut GLint) => |c| {
+        if let Some(v) = crate::legacy::get(c, pname) {
+            if !c.gl.reject_in_begin() {
+                let v: Vec<GLint> = v.iter().map(|&x| (x + 0.5).floor().clamp(i32::MIN as f64, i32::MAX as f64) as GLint).collect();
+                wr(params, &v);
+            }
+            return;
+        }
         let v = c.gl.get_integerv(pname);
         wr(params, &v);
     }
     fn glGetFloatv(pname: GLenum, params: *mut GLfloat) => |c| {
+        if let Some(v) = crate::legacy::get(c, pname) {
+            if !c.gl.reject_in_begin() {
+                let v: Vec<GLfloat> = v.iter().map(|&x| x as f32).collect();
+                wr(params, &v);
+            }
+            return;
+        }
         let v = c.gl.get_floatv(pname);
         wr(params, &v);
     }
     fn glGetDoublev(pname: GLenum, params: *mut GLdouble) => |c| {
+        if let Some(v) = crate::legacy::get(c, pname) {
+            if !c.gl.reject_in_begin() {
+                wr(params, &v);
+            }
+            return;
+        }
         let v = c.gl.get_doublev(pname);
         wr(params, &v);
     }
     fn glGetBooleanv(pname: GLenum, params: *mut GLboolean) => |c| {
+        if let Some(v) = crate::legacy::get(c, pname) {
+            if !c.gl.reject_in_begin() {
+                let v: Vec<GLboolean> = v.iter().map(|&x| (x != 0.0) as GLboolean).collect();
+                wr(params, &v);
+            }
+            return;
+        }
         let v: Vec<GLboolean> = c.gl.get_booleanv(pname).iter().map(|&x| x as GLboolean).collect();
         wr(params, &v);
     }
@@ -308,9 +354,8 @@ gl_entry_points! {
         x: GLint, y: GLint, w: GLsizei, h: GLsizei, format: GLenum, ty: GLenum,
         pixels: *mut c_void
     ) => |c| {
-        if c.pack_buffer != 0 {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return;
+        if let Some(d) = &c.debug {
+            crate::debug_env::flush(&mut c.gl, d);
         }
         let align = c.gl.get_integerv(GL_PACK_ALIGNMENT).first().copied().unwrap_or(4).max(1);
         let len = if w > 0 && h > 0 && gl::objects::pixel_size(format, ty).is_some() {
@@ -319,6 +364,22 @@ gl_entry_points! {
         } else {
             0
         };
+        if c.gl.bound_buffer(GL_PIXEL_PACK_BUFFER) != 0 {
+            // Into the pack buffer at offset `pixels` (GL 2.1 §4.3.5).
+            if len > MAX_BUFFER_BYTES {
+                c.gl.record_error(GL_OUT_OF_MEMORY);
+                return;
+            }
+            let mut out = vec![0u8; len];
+            let before = c.gl.get_error();
+            c.gl.read_pixels(x, y, w, h, format, ty, &mut out);
+            let e = c.gl.get_error();
+            c.gl.record_error(if before != GL_NO_ERROR { before } else { e });
+            if e == GL_NO_ERROR && len > 0 {
+                crate::buffers::write_pixel_buffer(c, pixels as usize, &out);
+            }
+            return;
+        }
         if pixels.is_null() && len > 0 {
             return;
         }
@@ -911,44 +972,29 @@ gl_entry_points! {
         target: GLenum, level: GLint, internal: GLint, w: GLsizei, border: GLint,
         format: GLenum, ty: GLenum, data: *const c_void
     ) => |c| {
-        if c.unpack_buffer != 0 && !data.is_null() {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return;
-        }
-        let bytes = image_bytes(c, w, 1, 1, format, ty, data);
+        let Ok(bytes) = image_bytes(c, w, 1, 1, format, ty, data) else { return };
         c.gl.tex_image_1d(target, level, internal, w, border, format, ty, bytes.as_deref());
     }
     fn glTexImage2D(
         target: GLenum, level: GLint, internal: GLint, w: GLsizei, h: GLsizei, border: GLint,
         format: GLenum, ty: GLenum, data: *const c_void
     ) => |c| {
-        if c.unpack_buffer != 0 && !data.is_null() {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return;
-        }
-        let bytes = image_bytes(c, w, h, 1, format, ty, data);
+        let Ok(bytes) = image_bytes(c, w, h, 1, format, ty, data) else { return };
         c.gl.tex_image_2d(target, level, internal, w, h, border, format, ty, bytes.as_deref());
     }
     fn glTexImage3D(
         target: GLenum, level: GLint, internal: GLint, w: GLsizei, h: GLsizei, d: GLsizei,
         border: GLint, format: GLenum, ty: GLenum, data: *const c_void
     ) => |c| {
-        if c.unpack_buffer != 0 && !data.is_null() {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return;
-        }
-        let bytes = image_bytes(c, w, h, d, format, ty, data);
+        let Ok(bytes) = image_bytes(c, w, h, d, format, ty, data) else { return };
         c.gl.tex_image_3d(target, level, internal, w, h, d, border, format, ty, bytes.as_deref());
     }
     fn glTexSubImage2D(
         target: GLenum, level: GLint, xoff: GLint, yoff: GLint, w: GLsizei, h: GLsizei,
         format: GLenum, ty: GLenum, data: *const c_void
     ) => |c| {
-        if c.unpack_buffer != 0 && !data.is_null() {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return;
-        }
-        let bytes = image_bytes(c, w, h, 1, format, ty, data).unwrap_or_default();
+        let Ok(bytes) = image_bytes(c, w, h, 1, format, ty, data) else { return };
+        let bytes = bytes.unwrap_or_default();
         c.gl.tex_sub_image_2d(target, level, xoff, yoff, w, h, format, ty, &bytes);
     }
     fn glGenerateMipmap(target: GLenum) => |c| { c.gl.generate_mipmap(target) }
@@ -961,23 +1007,15 @@ gl_entry_points! {
     }
     fn glDeleteBuffers(n: GLsizei, names: *const GLuint) => |c| {
         if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        if !c.gl.reject_in_begin() { crate::buffers::forget_mappings(c, &rd_vec(names, n as i64)) }
         c.gl.delete_buffers(&rd_vec(names, n as i64));
     }
     fn glIsBuffer(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_buffer(name) as GLboolean }
-    fn glBindBuffer(target: GLenum, name: GLuint) => |c| {
-        let before = c.gl.get_error();
-        c.gl.bind_buffer(target, name);
-        let e = c.gl.get_error();
-        c.gl.record_error(if before != GL_NO_ERROR { before } else { e });
-        if e == GL_NO_ERROR {
-            match target {
-                GL_PIXEL_PACK_BUFFER => c.pack_buffer = name,
-                GL_PIXEL_UNPACK_BUFFER => c.unpack_buffer = name,
-                _ => {}
-            }
-        }
-    }
+    fn glBindBuffer(target: GLenum, name: GLuint) => |c| { c.gl.bind_buffer(target, name) }
     fn glBufferData(target: GLenum, size: GLsizeiptr, data: *const c_void, usage: GLenum) => |c| {
+        // Re-specifying the store ends a mapping (not an error, GL 2.1 §2.9).
+        let b = c.gl.bound_buffer(target);
+        if !c.gl.in_begin_end() { c.mapped.remove(&b); }
         let bytes = if data.is_null() || size <= 0 || size as usize > MAX_BUFFER_BYTES {
             None
         } else {
@@ -987,6 +1025,10 @@ gl_entry_points! {
         c.gl.buffer_data(target, size, bytes, usage);
     }
     fn glBufferSubData(target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *const c_void) => |c| {
+        if !c.gl.in_begin_end() && c.mapped.contains_key(&c.gl.bound_buffer(target)) {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
         if size < 0 || data.is_null() || size as usize > MAX_BUFFER_BYTES {
             c.gl.record_error(GL_INVALID_VALUE);
             return;
@@ -1221,6 +1263,10 @@ gl_entry_points! {
             c.gl.record_error(GL_INVALID_VALUE);
             return;
         }
+        if crate::buffers::sources_mapped(c, true) && !c.gl.in_begin_end() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
         let (data, idx) = element_indices(c, count, ty, indices);
         if let (Some(lo), Some(hi)) = (idx.iter().min(), idx.iter().max()) {
             c.arrays.prepare(&mut c.gl, *lo, *hi);
@@ -1234,6 +1280,10 @@ gl_entry_points! {
             return;
         }
         if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        if crate::buffers::sources_mapped(c, false) && !c.gl.in_begin_end() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
         let f = rd_vec(first, n as i64);
         let k = rd_vec(count, n as i64);
         for (f, k) in f.iter().zip(&k) {
@@ -1794,6 +1844,10 @@ gl_entry_points! {
         });
     }
     fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) => |c| {
+        if crate::buffers::sources_mapped(c, false) && !c.gl.in_begin_end() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
         if c.compiling() {
             c.gl.record_error(GL_INVALID_OPERATION);
             return;
@@ -1806,6 +1860,10 @@ gl_entry_points! {
         c.dirty = true;
     }
     fn glDrawElements(mode: GLenum, count: GLsizei, ty: GLenum, indices: *const c_void) => |c| {
+        if crate::buffers::sources_mapped(c, true) && !c.gl.in_begin_end() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
         if c.compiling() {
             c.gl.record_error(GL_INVALID_OPERATION);
             return;

@@ -41,35 +41,70 @@
 //! glShaderSource...). Context handles are checked against the set of live
 //! contexts before use.
 //!
-//! ## Limitations (first increment)
-//! - Only the entry points in [`entry::NAMES`] and [`lists`]; evaluators,
-//!   selection/feedback, pixel transfer (glDrawPixels, glBitmap, glCopy*),
-//!   queries, glGetPointerv, glGetVertexAttrib{i,d}v, glGetTexEnv/Gen,
-//!   glInterleavedArrays, glArrayElement, glRasterPos/glWindowPos and
-//!   glMapBuffer are missing (README.md lists every missing GL 2.1 name).
+//! ## Modules
+//! [`entry`] holds the bulk of the gl* entry points and the macro that
+//! generates them; [`queries`] (state queries), [`buffers`] (map/unmap,
+//! buffer queries, pixel buffer objects), [`pixels`] (texture read-back,
+//! 1D/3D sub-images, framebuffer copies), [`array_draws`]
+//! (glArrayElement, glMultiDrawElements, glInterleavedArrays), [`attribs`]
+//! (attribute stacks) and [`legacy`] (GL 1.x calls kept as state) add the
+//! rest; [`procs`] chains their tables for OSMesaGetProcAddress.
+//!
+//! ## Limitations
+//! - Missing entry points (README.md lists all 106 of GL 1.0–2.1's 583):
+//!   the ARB_imaging subset, evaluators, occlusion queries, and the
+//!   raster-position pixel path (glRasterPos*, glWindowPos*,
+//!   glDrawPixels, glBitmap, glCopyPixels).
+//! - Kept as state, not applied when drawing ([`legacy`]): line and
+//!   polygon stipples, edge flags, pixel transfer scale/bias/maps and
+//!   zoom, GL_COMBINE texture-environment parameters (GL_COMBINE draws as
+//!   GL_MODULATE), texture priorities. glRenderMode(GL_SELECT /
+//!   GL_FEEDBACK) raises GL_INVALID_OPERATION (selection and feedback are
+//!   not implemented); the name stack and glPassThrough are ignored, as in
+//!   GL_RENDER mode. There is no accumulation buffer (glAccum:
+//!   GL_INVALID_OPERATION) and no compressed texture format
+//!   (glCompressedTex*: GL_INVALID_ENUM). Texture borders are not
+//!   implemented (border 1: GL_INVALID_VALUE).
+//! - glPushAttrib does not save texture-object parameters or hints.
+//! - glGetTexImage and glReadPixels do not write packed pixel types
+//!   (GL_UNSIGNED_SHORT_5_6_5...: GL_INVALID_OPERATION).
+//! - A mapping (glMapBuffer) is a copy of the store, written back by
+//!   glUnmapBuffer; drawing from, or glBufferSubData/glGetBufferSubData
+//!   on, a mapped buffer raise GL_INVALID_OPERATION (GL 2.1 §2.9).
 //! - The client buffer's contents are loaded as the framebuffer's at
 //!   OSMesaMakeCurrent and OSMesaPixelStore (Mesa renders in place); what
 //!   the client writes into it later, between GL calls, is not seen by GL
 //!   and is overwritten by the next flush if GL drew since.
 //! - Depth/stencil sizes requested at creation only matter for
 //!   OSMesaGetDepthBuffer; the context always has 24-bit depth and 8-bit
-//!   stencil. `sharelist` is accepted but nothing is shared. Accumulation
-//!   buffers are absent.
-//! - Pixel buffer objects are not implemented: while one is bound,
-//!   glReadPixels/glTexImage*/glTexSubImage2D with a non-null pointer
-//!   raise GL_INVALID_OPERATION (never dereference the offset).
+//!   stencil. `sharelist` is accepted but nothing is shared.
 #![allow(non_snake_case, clippy::missing_safety_doc)]
 
+pub mod array_draws;
 pub mod arrays;
+pub mod attribs;
+pub mod buffers;
 pub mod context;
+pub mod debug_env;
 pub mod entry;
+pub mod legacy;
 pub mod lists;
 pub mod osmesa;
 pub mod osmesa_enums;
+pub mod pixels;
 pub mod procs;
+pub mod queries;
 pub mod types;
 
+pub use array_draws::*;
+pub use attribs::*;
+pub use buffers::*;
 pub use entry::*;
+pub use legacy::*;
+pub use pixels::*;
+pub use queries::*;
+// Each entry-point module has its own table; the crate root names entry's.
+pub use entry::{lookup, NAMES};
 pub use lists::*;
 pub use osmesa::*;
 pub use osmesa_enums::*;

@@ -67,6 +67,9 @@ pub fn record(cmd: impl Fn() + 'static) -> bool {
 #[no_mangle]
 pub extern "C" fn glNewList(list: GLuint, mode: GLenum) {
     with_ctx((), |c| {
+        if c.gl.reject_in_begin() {
+            return;
+        }
         if list == 0 {
             c.gl.record_error(GL_INVALID_VALUE);
         } else if mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE {
@@ -81,11 +84,16 @@ pub extern "C" fn glNewList(list: GLuint, mode: GLenum) {
 
 #[no_mangle]
 pub extern "C" fn glEndList() {
-    with_ctx((), |c| match c.lists.compiling.take() {
-        Some((name, _, cmds)) => {
-            c.lists.lists.insert(name, Rc::new(cmds));
+    with_ctx((), |c| {
+        if c.gl.reject_in_begin() {
+            return;
         }
-        None => c.gl.record_error(GL_INVALID_OPERATION),
+        match c.lists.compiling.take() {
+            Some((name, _, cmds)) => {
+                c.lists.lists.insert(name, Rc::new(cmds));
+            }
+            None => c.gl.record_error(GL_INVALID_OPERATION),
+        }
     })
 }
 
@@ -174,6 +182,9 @@ pub unsafe extern "C" fn glCallLists(n: GLsizei, ty: GLenum, lists: *const std::
 #[no_mangle]
 pub extern "C" fn glGenLists(range: GLsizei) -> GLuint {
     with_ctx(0, |c| {
+        if c.gl.reject_in_begin() {
+            return 0;
+        }
         if range < 0 {
             c.gl.record_error(GL_INVALID_VALUE);
             return 0;
@@ -201,6 +212,9 @@ pub extern "C" fn glGenLists(range: GLsizei) -> GLuint {
 #[no_mangle]
 pub extern "C" fn glDeleteLists(list: GLuint, range: GLsizei) {
     with_ctx((), |c| {
+        if c.gl.reject_in_begin() {
+            return;
+        }
         if range < 0 {
             c.gl.record_error(GL_INVALID_VALUE);
             return;
@@ -215,7 +229,12 @@ pub extern "C" fn glDeleteLists(list: GLuint, range: GLsizei) {
 
 #[no_mangle]
 pub extern "C" fn glIsList(list: GLuint) -> GLboolean {
-    with_ctx(0, |c| c.lists.lists.contains_key(&list) as GLboolean)
+    with_ctx(0, |c| {
+        if c.gl.reject_in_begin() {
+            return 0;
+        }
+        c.lists.lists.contains_key(&list) as GLboolean
+    })
 }
 
 #[no_mangle]
@@ -224,6 +243,10 @@ pub extern "C" fn glListBase(base: GLuint) {
         if record(move || glListBase(base)) {
             return;
         }
-        with_ctx((), |c| c.lists.base = base)
+        with_ctx((), |c| {
+            if !c.gl.reject_in_begin() {
+                c.lists.base = base
+            }
+        })
     })
 }

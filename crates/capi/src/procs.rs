@@ -4,8 +4,19 @@ use crate::osmesa::*;
 
 /// The address of the exported function `name` (gl* or OSMesa*).
 pub fn lookup(name: &str) -> Option<*const ()> {
-    if let Some(p) = crate::entry::lookup(name) {
-        return Some(p);
+    for table in [
+        crate::entry::lookup,
+        crate::buffers::lookup,
+        crate::queries::lookup,
+        crate::legacy::lookup,
+        crate::attribs::lookup,
+        crate::pixels::lookup,
+        crate::array_draws::lookup,
+        crate::array_draws::lookup_extra,
+    ] {
+        if let Some(p) = table(name) {
+            return Some(p);
+        }
     }
     Some(match name {
         "OSMesaCreateContext" => OSMesaCreateContext as *const (),

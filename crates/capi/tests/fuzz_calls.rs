@@ -78,6 +78,12 @@ const ENUMS: &[u32] = &[
     GL_COLOR_ARRAY,
     GL_TEXTURE_COORD_ARRAY,
     GL_TEXTURE0,
+    GL_PIXEL_UNPACK_BUFFER,
+    GL_C4F_N3F_V3F,
+    GL_T2F_V3F,
+    GL_SELECT,
+    GL_TEXTURE_WIDTH,
+    GL_VERTEX_ATTRIB_ARRAY_SIZE,
     GL_TEXTURE7,
     GL_TEXTURE_MIN_FILTER,
     GL_NEAREST,
@@ -125,7 +131,7 @@ fn hostile_call_sequences_never_crash() {
             let e2 = rng.pick(ENUMS);
             let n = names[rng.next() as usize % names.len()];
             let (a, b) = (rng.int(), rng.int().clamp(-4, 64));
-            match rng.next() % 40 {
+            match rng.next() % 54 {
                 0 => glBegin(e),
                 1 => glEnd(),
                 2 => glVertex3f(rng.f(), rng.f(), rng.f()),
@@ -211,6 +217,33 @@ fn hostile_call_sequences_never_crash() {
                 36 => glViewport(a.clamp(-5, 5), 0, b, b),
                 37 => glBindFramebuffer(e, n),
                 38 => glTexCoordPointer(a, e, 0, fp as *const c_void),
+                39 => {
+                    let p = glMapBuffer(e, rng.pick(&[GL_READ_ONLY, GL_WRITE_ONLY, e2]));
+                    if !p.is_null() {
+                        let mut size = 0;
+                        glGetBufferParameteriv(e, GL_BUFFER_SIZE, &mut size);
+                        if size > 0 {
+                            *(p as *mut u8) = 7;
+                        }
+                    }
+                }
+                40 => {
+                    glUnmapBuffer(e);
+                }
+                41 => glGetTexImage(GL_TEXTURE_2D, a.clamp(-1, 3), e, e2, op as *mut c_void),
+                42 => glCopyTexImage2D(e, a.clamp(-1, 2), e2, 0, 0, b, b, rng.pick(&[0, 1])),
+                43 => glCopyTexSubImage2D(e, a.clamp(-1, 2), b, 1, 0, 0, b, 2),
+                44 => glPushAttrib(rng.next()),
+                45 => glPopAttrib(),
+                46 => glPushClientAttrib(rng.next()),
+                47 => glPopClientAttrib(),
+                48 => glArrayElement(a.clamp(-1, 250)),
+                49 => glGetVertexAttribiv(n % 20, e, op as *mut GLint),
+                50 => glGetTexLevelParameteriv(e, a.clamp(-1, 3), e2, op as *mut GLint),
+                51 => {
+                    glRenderMode(e);
+                }
+                52 => glInterleavedArrays(e, rng.pick(&[0, 8, -1]), fp as *const c_void),
                 _ => {
                     let _ = glGetError();
                 }

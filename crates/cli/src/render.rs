@@ -2,8 +2,21 @@
 //! impostors and write a PNG.
 //!
 //! With no FILE it draws crambin (PDB 1CRN), embedded in the binary.
+//! FILEs are PDB or mmCIF (told apart by content: mmCIF starts `data_`).
 //! Default size 800x800 (rendering is on the CPU; `--size 1024x1024` or
 //! `--supersample 2` for print quality).
+//!
+//! One file and no `--turntable`: one PNG, `-o OUT.png`. Several files or
+//! `--turntable N` (N frames turning about the screen's vertical axis,
+//! 360/N degrees apart, added to `--rotate`'s Y): numbered PNGs
+//! `OUT-0001.png`, `OUT-0002.png`, ... (files in the order given, each
+//! file's frames in turn), with a progress bar on standard error when it
+//! is a terminal. A file that fails to load is reported and skipped; the
+//! exit status is then 1.
+//!
+//! `--export-scene FILE.json` (one image only) also writes every GL call
+//! the render made ([`render::Scene`]), for replaying on another OpenGL:
+//! `scripts/regen-references.py` replays them on Mesa.
 //!
 //! Exit status ([`Exit`]): 0 when the PNG was written; 1 when the structure
 //! is malformed (the message names the file and line) or has no atoms, or
@@ -12,14 +25,29 @@
 
 use crate::guard::guarded;
 use crate::Exit;
-use render::{Background, Effect, Fog, Projection, RenderOptions};
-use std::path::PathBuf;
+use render::{Background, Effect, Fog, Projection, RenderOptions, Structure, Style};
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// PDB file to draw (default: crambin, PDB 1CRN, embedded).
+    /// PDB or mmCIF files to draw (default: crambin, PDB 1CRN, embedded).
     #[arg(value_name = "FILE")]
-    pub file: Option<PathBuf>,
+    pub files: Vec<PathBuf>,
+
+    /// Spacefill (atoms at van der Waals radii) or ball-and-stick (smaller
+    /// atoms, bonds as cylinders from CONECT records and distances).
+    #[arg(long, value_enum, default_value_t = StyleArg::Spacefill)]
+    pub style: StyleArg,
+
+    /// Render N frames turning once around the vertical axis (numbered
+    /// PNGs).
+    #[arg(long, value_name = "N",
+          value_parser = clap::value_parser!(u32).range(1..=3600))]
+    pub turntable: Option<u32>,
+
+    /// Also write the GL calls of the render as JSON (one image only).
+    #[arg(long, value_name = "FILE.json")]
+    pub export_scene: Option<PathBuf>,
 
     /// Output PNG.
     #[arg(
@@ -64,6 +92,12 @@ pub struct Args {
     /// atom, a yellow X on red (oxygen) atoms, or red atoms 50% transparent.
     #[arg(long, value_name = "EFFECT", default_value = "plain", value_parser = parse_effect)]
     pub effect: Effect,
+}
+
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StyleArg {
+    Spacefill,
+    Ballstick,
 }
 
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -181,22 +215,8 @@ pub fn run(args: &Args) -> Exit {
     }
 }
 
-fn run_inner(args: &Args) -> Exit {
-    let structure = match &args.file {
-        None => render::crambin(),
-        Some(path) => match render::load_file(path) {
-            Ok(s) => s,
-            Err(e @ render::LoadError::Io { .. }) => {
-                eprintln!("shaderbox render: cannot read {e}");
-                return Exit::Misuse;
-            }
-            Err(e) => {
-                eprintln!("shaderbox render: {e}");
-                return Exit::Failed;
-            }
-        },
-    };
-    let opts = RenderOptions {
+fn options(args: &Args) -> RenderOptions {
+    RenderOptions {
         width: args.size.0,
         height: args.size.1,
         projection: match args.projection {
@@ -214,46 +234,214 @@ fn run_inner(args: &Args) -> Exit {
         supersample: args.supersample,
         background: args.background.0,
         effect: args.effect,
+        style: match args.style {
+            StyleArg::Spacefill => Style::Spacefill,
+            StyleArg::Ballstick => Style::BallAndStick,
+        },
+    }
+}
+
+/// `OUT.png` -> `OUT-0007.png` (numbered outputs).
+fn numbered(out: &Path, n: usize, digits: usize) -> PathBuf {
+    let stem = out
+        .file_stem()
+        .map_or_else(|| "molecule".into(), |s| s.to_string_lossy().into_owned());
+    let ext = out
+        .extension()
+        .map_or_else(|| "png".into(), |s| s.to_string_lossy().into_owned());
+    out.with_file_name(format!("{stem}-{n:0digits$}.{ext}"))
+}
+
+/// Loads one structure; the error line is printed here.
+fn load(path: Option<&Path>) -> Result<Structure, Exit> {
+    let Some(path) = path else {
+        return Ok(render::crambin());
     };
-    let image = match render::render(&structure, &opts) {
-        Ok(i) => i,
+    match render::load_file(path) {
+        Ok(s) => Ok(s),
+        Err(e @ render::LoadError::Io { .. }) => {
+            eprintln!("shaderbox render: cannot read {e}");
+            Err(Exit::Misuse)
+        }
+        Err(e) => {
+            eprintln!("shaderbox render: {e}");
+            Err(Exit::Failed)
+        }
+    }
+}
+
+/// One job: which file, which rotation, where to write.
+struct Job {
+    file: Option<PathBuf>,
+    rotate: [f32; 3],
+    output: PathBuf,
+}
+
+fn jobs(args: &Args) -> Vec<Job> {
+    let files: Vec<Option<PathBuf>> = if args.files.is_empty() {
+        vec![None]
+    } else {
+        args.files.iter().cloned().map(Some).collect()
+    };
+    let frames = args.turntable.unwrap_or(1) as usize;
+    let total = files.len() * frames;
+    let digits = total.to_string().len().max(4);
+    let mut out = Vec::with_capacity(total);
+    for file in &files {
+        for frame in 0..frames {
+            let mut rotate = args.rotate.0;
+            if args.turntable.is_some() {
+                rotate[1] += 360.0 * frame as f32 / frames as f32;
+            }
+            let output = if total == 1 && args.turntable.is_none() {
+                args.output.clone()
+            } else {
+                numbered(&args.output, out.len() + 1, digits)
+            };
+            out.push(Job {
+                file: file.clone(),
+                rotate,
+                output,
+            });
+        }
+    }
+    out
+}
+
+fn run_inner(args: &Args) -> Exit {
+    let jobs = jobs(args);
+    if args.export_scene.is_some() && jobs.len() != 1 {
+        eprintln!(
+            "shaderbox render: --export-scene needs exactly one image (one FILE, no --turntable)"
+        );
+        return Exit::Misuse;
+    }
+    let base = options(args);
+    let progress = if jobs.len() > 1 {
+        let bar = indicatif::ProgressBar::new(jobs.len() as u64);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{bar:40} {pos}/{len} images, {elapsed} elapsed, about {eta} left {msg}",
+            )
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        Some(bar)
+    } else {
+        None
+    };
+    let report = |line: String| match &progress {
+        Some(bar) => bar.println(line),
+        None => eprintln!("{line}"),
+    };
+    let mut status = Exit::Ok;
+    let mut loaded: Option<(Option<PathBuf>, Structure)> = None;
+    for job in &jobs {
+        let structure = match &loaded {
+            Some((f, s)) if *f == job.file => s,
+            _ => match load(job.file.as_deref()) {
+                Ok(s) => &loaded.insert((job.file.clone(), s)).1,
+                Err(e) => {
+                    if status == Exit::Ok || e == Exit::Misuse {
+                        status = e;
+                    }
+                    loaded = None;
+                    if let Some(bar) = &progress {
+                        bar.inc(1);
+                    }
+                    continue;
+                }
+            },
+        };
+        let opts = RenderOptions {
+            rotate: job.rotate,
+            ..base.clone()
+        };
+        let result = write_one(structure, &opts, &job.output, args.export_scene.as_deref());
+        match result {
+            Ok(line) => {
+                if progress.is_none() {
+                    report(line);
+                }
+            }
+            Err((exit, line)) => {
+                report(line);
+                status = exit;
+                if exit == Exit::Misuse {
+                    break;
+                }
+            }
+        }
+        if let Some(bar) = &progress {
+            bar.inc(1);
+        }
+    }
+    if let Some(bar) = &progress {
+        bar.finish_and_clear();
+        if status == Exit::Ok {
+            eprintln!(
+                "wrote {} images ({} to {})",
+                jobs.len(),
+                jobs.first()
+                    .map_or(String::new(), |j| j.output.display().to_string()),
+                jobs.last()
+                    .map_or(String::new(), |j| j.output.display().to_string())
+            );
+        }
+    }
+    status
+}
+
+/// Renders one image and writes it (and the scene); the message to print.
+fn write_one(
+    structure: &Structure,
+    opts: &RenderOptions,
+    output: &Path,
+    export_scene: Option<&Path>,
+) -> Result<String, (Exit, String)> {
+    let (image, scene) = match render::render_scene(structure, opts) {
+        Ok(r) => r,
         Err(
             e @ (render::RenderError::Size { .. }
             | render::RenderError::Supersample { .. }
             | render::RenderError::Light(_)),
-        ) => {
-            eprintln!("shaderbox render: {e}");
-            return Exit::Misuse;
-        }
+        ) => return Err((Exit::Misuse, format!("shaderbox render: {e}"))),
         Err(e) => {
-            eprintln!("shaderbox render: {}: {e}", structure.source);
-            return Exit::Failed;
+            return Err((
+                Exit::Failed,
+                format!("shaderbox render: {}: {e}", structure.source),
+            ))
         }
     };
-    let written = std::fs::File::create(&args.output)
+    let written = std::fs::File::create(output)
         .map_err(|e| e.to_string())
         .and_then(|f| {
             image
                 .write_png(std::io::BufWriter::new(f))
                 .map_err(|e| e.to_string())
         });
-    match written {
-        Ok(()) => {
-            eprintln!(
-                "wrote {} ({}x{}, {} atoms from {})",
-                args.output.display(),
-                image.width,
-                image.height,
-                structure.atoms.len(),
-                structure.source
-            );
-            Exit::Ok
-        }
-        Err(e) => {
-            eprintln!("shaderbox render: {}: {e}", args.output.display());
-            Exit::Failed
+    if let Err(e) = written {
+        return Err((
+            Exit::Failed,
+            format!("shaderbox render: {}: {e}", output.display()),
+        ));
+    }
+    if let Some(path) = export_scene {
+        let json = scene.to_json();
+        if let Err(e) = std::fs::write(path, json) {
+            return Err((
+                Exit::Failed,
+                format!("shaderbox render: {}: {e}", path.display()),
+            ));
         }
     }
+    Ok(format!(
+        "wrote {} ({}x{}, {} atoms from {})",
+        output.display(),
+        image.width,
+        image.height,
+        structure.atoms.len(),
+        structure.source
+    ))
 }
 
 #[cfg(test)]
@@ -283,5 +471,14 @@ mod tests {
         assert_eq!(parse_effect("outline"), Ok(Effect::Outline));
         let e = parse_effect("sepia").unwrap_err();
         assert!(e.contains("plain, outline, x, x-red, transparent"), "{e}");
+    }
+
+    #[test]
+    fn numbered_outputs() {
+        assert_eq!(
+            numbered(Path::new("out/m.png"), 7, 4),
+            PathBuf::from("out/m-0007.png")
+        );
+        assert_eq!(numbered(Path::new("m"), 12, 2), PathBuf::from("m-12.png"));
     }
 }

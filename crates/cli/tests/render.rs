@@ -201,3 +201,150 @@ fn unwritable_output_exits_1() {
         stderr(&o)
     );
 }
+
+const CIF: &str = "data_T\nloop_\n_atom_site.id\n_atom_site.type_symbol\n_atom_site.Cartn_x\n_atom_site.Cartn_y\n_atom_site.Cartn_z\n1 C 0 0 0\n2 O 1.4 0 0\n";
+
+#[test]
+fn ballstick_mmcif_several_files_and_turntable() {
+    let d = dir("several");
+    let cif = write("several", "co.cif", CIF.as_bytes());
+    let pdb = write("several", "one.pdb", ATOM.as_bytes());
+    let out = d.join("m.png");
+    let o = shaderbox(&[
+        "render",
+        &cif,
+        &pdb,
+        "--style",
+        "ballstick",
+        "--turntable",
+        "3",
+        "--size",
+        "16x16",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stderr(&o).contains("wrote 6 images"), "{}", stderr(&o));
+    for n in 1..=6 {
+        let f = d.join(format!("m-{n:04}.png"));
+        assert_eq!(png_size(&std::fs::read(&f).unwrap()), (16, 16), "{f:?}");
+    }
+    assert!(!d.join("m-0007.png").exists());
+    assert!(!out.exists(), "numbered outputs only");
+}
+
+#[test]
+fn bad_mmcif_names_file_and_line_and_others_still_render() {
+    let d = dir("badcif");
+    let bad = write("badcif", "cut.cif", &CIF.as_bytes()[..CIF.len() - 4]);
+    let good = write("badcif", "one.pdb", ATOM.as_bytes());
+    let out = d.join("m.png");
+    let o = shaderbox(&[
+        "render",
+        &bad,
+        &good,
+        "--size",
+        "8x8",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("cut.cif:9: the loop_ of line 2 has 8 values"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(
+        d.join("m-0002.png").exists(),
+        "the good file is still drawn"
+    );
+    assert!(!stderr(&o).contains("panicked"));
+}
+
+#[test]
+fn export_scene_writes_the_gl_calls() {
+    let d = dir("export");
+    let json = d.join("scene.json");
+    let out = d.join("m.png");
+    let o = shaderbox(&[
+        "render",
+        "--size",
+        "8x8",
+        "--style",
+        "ballstick",
+        "-o",
+        out.to_str().unwrap(),
+        "--export-scene",
+        json.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&json).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(v["width"], 8);
+    let calls = v["calls"].as_array().unwrap();
+    let draws = calls.iter().filter(|c| c["call"] == "Draw").count();
+    assert_eq!(draws, 2, "atoms and bonds");
+    assert!(calls.iter().any(|c| c["call"] == "Program"));
+    // One image only.
+    let o = shaderbox(&[
+        "render",
+        "--turntable",
+        "2",
+        "--export-scene",
+        json.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+}
+
+/// RGB(A) pixels of a PNG.
+fn png_pixels(path: &std::path::Path) -> Vec<[u8; 3]> {
+    let file = std::fs::File::open(path).unwrap();
+    let mut r = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .unwrap();
+    let mut buf = vec![0; r.output_buffer_size()];
+    let info = r.next_frame(&mut buf).unwrap();
+    let n = info.color_type.samples();
+    buf[..info.buffer_size()]
+        .chunks(n)
+        .map(|c| [c[0], c[1], c[2]])
+        .collect()
+}
+
+#[test]
+fn gallery_writes_every_picture_and_the_page() {
+    let d = dir("gallery");
+    let o = shaderbox(&["gallery", "-o", d.to_str().unwrap(), "--size", "48"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let html = std::fs::read_to_string(d.join("index.html")).unwrap();
+    let pictures: Vec<&str> = html
+        .split("src=\"")
+        .skip(1)
+        .filter_map(|s| s.split('"').next())
+        .collect();
+    // One picture per library program, six for single-texture's modes.
+    assert_eq!(pictures.len(), 21, "{pictures:?}");
+    for name in [
+        "sphere",
+        "cylinder",
+        "volume",
+        "wireframe",
+        "toon",
+        "single-texture-blend",
+    ] {
+        assert!(pictures.contains(&format!("{name}.png").as_str()), "{name}");
+    }
+    for p in &pictures {
+        let px = png_pixels(&d.join(p));
+        assert_eq!(px.len(), 48 * 48, "{p}");
+        // Not blank: a tenth of the pixels differ from the corner
+        // (background) and there are several colours.
+        let bg = px[0];
+        let drawn = px.iter().filter(|c| **c != bg).count();
+        assert!(drawn > 48 * 48 / 10, "{p}: {drawn} drawn pixels");
+        let mut colours = px.clone();
+        colours.sort_unstable();
+        colours.dedup();
+        assert!(colours.len() > 8, "{p}: {} colours", colours.len());
+    }
+}

@@ -80,6 +80,7 @@ pub(crate) fn slice(p: &Program, live_out: &[Reg]) -> Option<Program> {
         init: p.init.clone(),
         statements,
         vars: p.vars.clone(),
+        printfs: p.printfs.clone(),
     };
     out.validate().ok()?;
     Some(out)

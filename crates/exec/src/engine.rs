@@ -103,6 +103,7 @@ fn pure(op: &Op) -> bool {
             | Op::Gather { .. }
             | Op::Noise { .. }
             | Op::Texture { .. }
+            | Op::Printf { .. }
             | Op::DdX { .. }
             | Op::DdY { .. }
             | Op::FMac { .. }
@@ -187,7 +188,8 @@ fn map_reads(op: &mut Op, f: &mut dyn FnMut(Reg) -> Reg, is_pool: &dyn Fn(Reg) -
         }
         AndMask { c } | AndNotMask { c, .. } => m(c),
         Noise { .. } | Texture { .. } => all = false,
-        SaveMask { .. }
+        Printf { .. }
+        | SaveMask { .. }
         | RestoreMask { .. }
         | JumpIfNone { .. }
         | Jump { .. }
@@ -397,6 +399,7 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
         init: p.init.clone(),
         statements: Vec::new(),
         vars: Vec::new(),
+        printfs: p.printfs.clone(),
     };
     prog.validate().ok()?;
     let pro = Program {
@@ -933,6 +936,8 @@ unsafe fn step(
                 texture(regs, t, st.cur, textures);
             }
         }
+        // Only hooked runs (the reference interpreter) print.
+        Op::Printf { .. } => {}
         Op::SaveMask { slot } => st.masks[slot as usize] = st.cur,
         Op::RestoreMask { slot } => {
             st.cur = st.masks[slot as usize];

@@ -1,7 +1,9 @@
 //! The lane-parallel interpreter of a lowered [`Program`].
 
 use crate::program::{Op, Program, TexLod};
-use crate::{Batch, ExecError, Kernel, LaneMask, Lod, SampleRequest, Textures, Trace, LANES};
+use crate::{
+    Batch, ExecError, Kernel, LaneMask, Lod, PrintSink, SampleRequest, Textures, Trace, LANES,
+};
 use glsl::math::{self, flush_denormal};
 use glsl::types::Scalar;
 
@@ -19,6 +21,86 @@ type Regs = Vec<[u32; LANES]>;
 /// Hook called while running; the no-op implementation compiles away.
 pub(crate) trait Hook {
     fn before(&mut self, _p: &Program, _pc: usize, _cur: LaneMask, _regs: &Regs) {}
+    /// `debugPrintfEXT` site `index` runs on the lanes of `cur`.
+    fn printf(&mut self, _p: &Program, _index: usize, _cur: LaneMask, _regs: &Regs) {}
+}
+
+/// Keeps, per lane, the last value stored into each register of a range
+/// (the debugger's false-colour views).
+pub(crate) struct WatchHook<'o> {
+    pub first: u32,
+    pub out: &'o mut [[u32; LANES]],
+}
+
+impl Hook for WatchHook<'_> {
+    fn before(&mut self, p: &Program, pc: usize, cur: LaneMask, regs: &Regs) {
+        let (d, a) = match p.ops.get(pc) {
+            Some(Op::Store { d, a }) => (*d, *a),
+            Some(Op::Scatter { base, off, max, a }) => {
+                // Per lane: the element each lane writes.
+                for lane in 0..LANES {
+                    if cur & (1 << lane) == 0 {
+                        continue;
+                    }
+                    let o = regs.get(*off as usize).map_or(0, |r| r[lane]).min(*max);
+                    let d = base.saturating_add(o);
+                    if let Some(slot) = d
+                        .checked_sub(self.first)
+                        .and_then(|i| self.out.get_mut(i as usize))
+                    {
+                        slot[lane] = regs.get(*a as usize).map_or(0, |r| r[lane]);
+                    }
+                }
+                return;
+            }
+            _ => return,
+        };
+        let Some(slot) = d
+            .checked_sub(self.first)
+            .and_then(|i| self.out.get_mut(i as usize))
+        else {
+            return;
+        };
+        let Some(v) = regs.get(a as usize) else {
+            return;
+        };
+        for lane in 0..LANES {
+            if cur & (1 << lane) != 0 {
+                slot[lane] = v[lane];
+            }
+        }
+    }
+}
+
+/// The text `debugPrintfEXT` site `index` prints for `lane`.
+pub(crate) fn printf_text(p: &Program, index: usize, lane: usize, regs: &Regs) -> Option<String> {
+    let site = p.printfs.get(index)?;
+    let values: Vec<u32> = site
+        .args
+        .iter()
+        .map(|&r| regs.get(r as usize).map_or(0, |v| v[lane]))
+        .collect();
+    Some(glsl::printf::format_values(&site.format, &values))
+}
+
+/// Reports every `debugPrintfEXT` of the lanes in `lanes` to a
+/// [`PrintSink`].
+pub(crate) struct PrintHook<'s> {
+    pub lanes: LaneMask,
+    pub sink: &'s mut dyn PrintSink,
+}
+
+impl Hook for PrintHook<'_> {
+    fn printf(&mut self, p: &Program, index: usize, cur: LaneMask, regs: &Regs) {
+        let span = p.printfs.get(index).map(|s| s.span).unwrap_or_default();
+        for lane in 0..LANES {
+            if cur & self.lanes & (1 << lane) != 0 {
+                if let Some(text) = printf_text(p, index, lane, regs) {
+                    self.sink.print(lane, span, &text);
+                }
+            }
+        }
+    }
 }
 
 #[cfg(test)]
@@ -56,6 +138,14 @@ impl Hook for TraceHook<'_> {
                 self.trace.store(base + o, v);
             }
             _ => {}
+        }
+    }
+
+    fn printf(&mut self, p: &Program, index: usize, cur: LaneMask, regs: &Regs) {
+        if cur & (1 << self.lane) != 0 {
+            if let Some(text) = printf_text(p, index, self.lane, regs) {
+                self.trace.printf(&text);
+            }
         }
     }
 }
@@ -263,6 +353,7 @@ pub(crate) fn run<H: Hook>(
                     r[d as usize + k] = *o;
                 }
             }
+            Op::Printf { index } => hook.printf(p, index as usize, cur, &r),
             Op::Texture { index } => {
                 if let Some(t) = p.textures.get(index as usize) {
                     texture(&mut r, t, cur, textures);

@@ -251,6 +251,14 @@ pub trait Trace {
     /// The traced lane stores `bits` into `register` (see
     /// [`Kernel::variables`] to name registers).
     fn store(&mut self, register: u32, bits: u32);
+    /// The traced lane runs `debugPrintfEXT`, printing `text`.
+    fn printf(&mut self, _text: &str) {}
+}
+
+/// Receives what `debugPrintfEXT` prints ([`Kernel::run_printing`]).
+pub trait PrintSink {
+    /// `lane` printed `text` at the call at `span`.
+    fn print(&mut self, lane: usize, span: Span, text: &str);
 }
 
 /// A lowered stage, ready to run.
@@ -264,6 +272,8 @@ pub struct Kernel {
     loop_budget: u64,
     /// The program rewritten for [`engine::run`].
     code: std::sync::Arc<engine::Code>,
+    /// [`Kernel::depth_only`], computed on first use (shared by clones).
+    depth: std::sync::Arc<std::sync::OnceLock<Option<Kernel>>>,
 }
 
 /// A kernel's uniform-only values, computed once for a set of uniform
@@ -317,6 +327,7 @@ impl Kernel {
             outputs,
             loop_budget,
             code,
+            depth: Default::default(),
         }
     }
 
@@ -440,7 +451,15 @@ impl Kernel {
     /// `None` for a vertex kernel, a fragment kernel that does not write
     /// `gl_FragDepth`, or when the slice would keep more than 80 % of the
     /// ops (not worth a second pass).
+    ///
+    /// The slice is computed once per kernel (and its clones) and cached.
     pub fn depth_only(&self) -> Option<Kernel> {
+        let mut k = self.depth.get_or_init(|| self.slice_depth()).clone()?;
+        k.loop_budget = self.loop_budget;
+        Some(k)
+    }
+
+    fn slice_depth(&self) -> Option<Kernel> {
         if self.stage != glsl::Stage::Fragment {
             return None;
         }
@@ -465,6 +484,43 @@ impl Kernel {
             outputs,
             self.loop_budget,
         ))
+    }
+
+    /// Like [`Kernel::run`], reporting what each active (non-helper) lane
+    /// prints with `debugPrintfEXT` to `sink`, in execution order (call by
+    /// call, lanes in increasing order). [`Kernel::run`] ignores the calls.
+    pub fn run_printing(
+        &self,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+        sink: &mut dyn PrintSink,
+    ) -> Result<(), ExecError> {
+        let mut hook = interp::PrintHook {
+            lanes: batch.active & !batch.helper,
+            sink,
+        };
+        interp::run(self, batch, uniforms, textures, &mut hook)
+    }
+
+    /// Like [`Kernel::run`], keeping in `out[i][lane]` the last value each
+    /// lane stored into register `first + i` (initially `out`'s contents;
+    /// see [`Kernel::variables`] for where variables live).
+    pub fn run_watching(
+        &self,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+        first: u32,
+        out: &mut [[u32; LANES]],
+    ) -> Result<(), ExecError> {
+        let mut hook = interp::WatchHook { first, out };
+        interp::run(self, batch, uniforms, textures, &mut hook)
+    }
+
+    /// Whether the shader calls `debugPrintfEXT`.
+    pub fn prints(&self) -> bool {
+        !self.program.printfs.is_empty()
     }
 
     /// Where each source statement starts in the program.

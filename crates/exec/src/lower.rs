@@ -19,7 +19,9 @@
 //!   and selected.
 
 use crate::interface::{kinds, size_of, Interface, Slot};
-use crate::program::{Op, Program, Reg, StatementMark, TexLod, TexOp, VarInfo, F1, F2, F3};
+use crate::program::{
+    Op, PrintfSite, Program, Reg, StatementMark, TexLod, TexOp, VarInfo, F1, F2, F3,
+};
 use crate::ExecError;
 use glsl::builtins::BuiltinFn;
 use glsl::ir::{
@@ -278,7 +280,10 @@ fn const_bits(c: ConstScalar) -> u32 {
 fn has_effects(e: &Expr) -> bool {
     match &e.kind {
         ExprKind::Const(_) | ExprKind::Global(_) | ExprKind::Local(_) => false,
-        ExprKind::Assign { .. } | ExprKind::IncDec { .. } | ExprKind::Call { .. } => true,
+        ExprKind::Assign { .. }
+        | ExprKind::IncDec { .. }
+        | ExprKind::Call { .. }
+        | ExprKind::DebugPrintf { .. } => true,
         ExprKind::Index { base, index } => has_effects(base) || has_effects(index),
         ExprKind::Swizzle { base, .. } | ExprKind::Member { base, .. } => has_effects(base),
         ExprKind::Unary { operand, .. } | ExprKind::Convert { operand } => has_effects(operand),
@@ -407,6 +412,7 @@ fn visit_expr(e: &Expr, f: &mut dyn FnMut(&Expr)) {
         ExprKind::IncDec { target, .. } => visit_expr(target, f),
         ExprKind::Call { args, .. }
         | ExprKind::Builtin { args, .. }
+        | ExprKind::DebugPrintf { args, .. }
         | ExprKind::Construct { args } => args.iter().for_each(|a| visit_expr(a, f)),
     }
 }
@@ -1184,6 +1190,20 @@ impl<'m> Lowerer<'m> {
             ExprKind::Call { function, args } => self.call(*function, args),
             ExprKind::Builtin { function, args } => self.builtin(*function, args, e.ty),
             ExprKind::Construct { args } => self.construct(e.ty, args),
+            ExprKind::DebugPrintf { format, args } => {
+                let mut regs = Vec::new();
+                for a in args {
+                    regs.extend(self.expr(a)?);
+                }
+                let index = self.p.printfs.len() as u32;
+                self.p.printfs.push(PrintfSite {
+                    format: format.clone(),
+                    args: regs,
+                    span: e.span,
+                });
+                self.emit(Op::Printf { index })?;
+                Ok(Vec::new())
+            }
             ExprKind::Convert { operand } => {
                 let v = self.expr(operand)?;
                 let from = kinds(operand.ty, &self.m.structs);

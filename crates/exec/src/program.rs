@@ -354,6 +354,12 @@ pub(crate) enum Op {
     Texture {
         index: u32,
     },
+    /// `debugPrintfEXT` described by `Program::printfs[index]`: reported
+    /// to the run's hook for the lanes of the current mask (no effect on
+    /// the registers).
+    Printf {
+        index: u32,
+    },
 
     /// `masks[slot] = cur`.
     SaveMask {
@@ -464,6 +470,17 @@ pub(crate) struct Program {
     pub init: Vec<(Reg, u32)>,
     pub statements: Vec<StatementMark>,
     pub vars: Vec<VarInfo>,
+    /// The `debugPrintfEXT` calls.
+    pub printfs: Vec<PrintfSite>,
+}
+
+/// One `debugPrintfEXT` call: its format and the registers of its
+/// arguments' components, in order.
+#[derive(Clone, Debug)]
+pub(crate) struct PrintfSite {
+    pub format: Vec<glsl::printf::Piece>,
+    pub args: Vec<Reg>,
+    pub span: Span,
 }
 
 impl Op {
@@ -549,6 +566,7 @@ impl Op {
             }
             AndMask { c } | AndNotMask { c, .. } => f(c, 1),
             Texture { .. }
+            | Printf { .. }
             | SaveMask { .. }
             | RestoreMask { .. }
             | JumpIfNone { .. }
@@ -601,6 +619,10 @@ impl Program {
                             .iter()
                             .all(|&s| s < self.mask_slots)
                 }
+                Op::Printf { index } => match self.printfs.get(index as usize) {
+                    Some(site) => site.args.iter().all(|&r| reg_ok(r, 1)),
+                    None => false,
+                },
                 Op::Texture { index } => match self.textures.get(index as usize) {
                     Some(t) => {
                         reg_ok(t.unit, 1)

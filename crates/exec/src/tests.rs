@@ -827,3 +827,53 @@ fn bench_interpreter() {
         s * 1e9 / (batches as f64 * (k.op_count() as f64 * 64.0 * 0.8))
     );
 }
+
+#[derive(Default)]
+struct Printed(Vec<(usize, String)>);
+impl PrintSink for Printed {
+    fn print(&mut self, lane: usize, _span: Span, text: &str) {
+        self.0.push((lane, text.to_string()));
+    }
+}
+
+#[test]
+fn debug_printf_prints_per_lane_in_execution_order() {
+    let k = kernel(
+        Stage::Fragment,
+        "#extension GL_SHADERBOX_debug_printf : enable
+        void main() {
+            for (int i = 0; i < 2; i++)
+                if (gl_FragCoord.x < 2.0)
+                    debugPrintfEXT(\"x=%.1f i=%d v=%v2f\\n\", gl_FragCoord.x, i, vec2(i));
+            gl_FragColor = vec4(1.0);
+        }",
+    );
+    assert!(k.prints());
+    let mut out = Printed::default();
+    let mut b = frag_batch(&k);
+    b.helper = 1 << 1; // helper lanes do not print
+    b.active &= !b.helper;
+    k.run_printing(&mut b, &[], &NoTextures, &mut out).unwrap();
+    let want = vec![
+        (0, "x=0.5 i=0 v=0.000000, 0.000000\n".to_string()),
+        (0, "x=0.5 i=1 v=1.000000, 1.000000\n".to_string()),
+    ];
+    assert_eq!(out.0, want);
+    // The plain run ignores the call; the trace of one lane sees it.
+    let mut b = frag_batch(&k);
+    k.run(&mut b, &[], &NoTextures).unwrap();
+    #[derive(Default)]
+    struct T(Vec<String>);
+    impl Trace for T {
+        fn statement(&mut self, _: Span) {}
+        fn store(&mut self, _: u32, _: u32) {}
+        fn printf(&mut self, text: &str) {
+            self.0.push(text.to_string());
+        }
+    }
+    let mut t = T::default();
+    let mut b = frag_batch(&k);
+    k.run_traced(&mut b, &[], &NoTextures, 1, &mut t).unwrap();
+    assert_eq!(t.0.len(), 2);
+    assert!(t.0[1].starts_with("x=1.5 i=1"));
+}

@@ -641,6 +641,44 @@ impl Context {
             slots: self.input_sources(&vs),
             immediate,
         };
+        let probe = self.debug.wants().map(|req| {
+            raster::probe_draw(
+                &target.fb,
+                &state,
+                &vs,
+                &vs_words,
+                &fs,
+                &fs_words,
+                raster_mode(mode),
+                indices,
+                &fetch,
+                &units,
+                req,
+            )
+            .map_err(|e| e.to_string())
+        });
+        let view = self.debug.view().map(|name| {
+            let (v, kinds) = crate::debug::resolve_view(&fs, name)?;
+            let image = raster::view_draw(
+                &target.fb,
+                &state,
+                &vs,
+                &vs_words,
+                &fs,
+                &fs_words,
+                raster_mode(mode),
+                indices,
+                &fetch,
+                &units,
+                v,
+            )
+            .map_err(|e| e.to_string())?;
+            Ok(crate::debug::ViewRecord {
+                name: name.to_string(),
+                kinds,
+                image,
+            })
+        });
         let r = raster::draw_on(
             &self.workers,
             &mut target.fb,
@@ -656,6 +694,37 @@ impl Context {
         );
         if let Err(e) = r {
             self.cache.error = Some(e.to_string());
+        }
+        if let Some(probe) = probe {
+            let record = crate::debug::DrawRecord {
+                draw: self.debug.draws,
+                mode,
+                count: indices.len(),
+                program: self.current_program,
+                framebuffer: target.name,
+                vertex: crate::debug::StageInfo {
+                    shaders: if vs_user {
+                        self.stage_shaders(glsl::Stage::Vertex)
+                    } else {
+                        Vec::new()
+                    },
+                    kernel: vs,
+                },
+                fragment: crate::debug::StageInfo {
+                    shaders: if fs_user {
+                        self.stage_shaders(glsl::Stage::Fragment)
+                    } else {
+                        Vec::new()
+                    },
+                    kernel: fs,
+                },
+                probe,
+                view,
+            };
+            self.debug.records.push(record);
+        }
+        if self.debug.request.is_some() {
+            self.debug.draws += 1;
         }
         self.store_target(target);
     }
@@ -1055,6 +1124,42 @@ impl Context {
             })
             .collect()
     }
+}
+
+/// Packs `w * h` RGBA values (bottom row first) as `format`/`ty` rows at
+/// `align` (GL 2.1 §4.3.2's conversions, as glReadPixels).
+pub(crate) fn pack_pixels(
+    block: &[[f32; 4]],
+    w: usize,
+    h: usize,
+    format: u32,
+    ty: u32,
+    align: usize,
+) -> Vec<u8> {
+    let (Some(n), Some((px, comp))) = (
+        objects::format_components(format),
+        objects::pixel_size(format, ty),
+    ) else {
+        return Vec::new();
+    };
+    let stride = objects::row_stride(w, format, ty, align);
+    let mut out = vec![0u8; stride.saturating_mul(h)];
+    for row in 0..h {
+        for col in 0..w {
+            let Some(p) = block.get(row * w + col) else {
+                continue;
+            };
+            let vals = pack_components(*p, format);
+            let at = row * stride + col * px;
+            for (c, v) in vals.iter().take(n).enumerate() {
+                let o = at + c * comp;
+                if let Some(dst) = out.get_mut(o..o + comp) {
+                    encode(*v, ty, format == GL_STENCIL_INDEX, dst);
+                }
+            }
+        }
+    }
+    out
 }
 
 /// The components a client format takes from an RGBA (or depth/stencil in

@@ -98,6 +98,11 @@ impl Context {
             | GL_MAX_PROJECTION_STACK_DEPTH
             | GL_MAX_TEXTURE_STACK_DEPTH => int(&[crate::MAX_MATRIX_STACK_DEPTH as i64]),
             GL_MAX_ELEMENTS_VERTICES | GL_MAX_ELEMENTS_INDICES => int(&[1 << 20]),
+            GL_MAX_ATTRIB_STACK_DEPTH | GL_MAX_CLIENT_ATTRIB_STACK_DEPTH => {
+                int(&[crate::attrib_stack::MAX_ATTRIB_STACK_DEPTH as i64])
+            }
+            GL_ATTRIB_STACK_DEPTH => int(&[self.attrib_stack_depths().0 as i64]),
+            GL_CLIENT_ATTRIB_STACK_DEPTH => int(&[self.attrib_stack_depths().1 as i64]),
             GL_MAX_TEXTURE_LOD_BIAS => flt(&[16.0]),
             GL_SUBPIXEL_BITS => int(&[8]),
             GL_NUM_COMPRESSED_TEXTURE_FORMATS | GL_SAMPLE_BUFFERS | GL_SAMPLES => int(&[0]),
@@ -151,8 +156,45 @@ impl Context {
                 };
                 int(&[self.objects.bound.get(unit).map_or(0, |b| b[ti]) as i64])
             }
+            GL_VERTEX_ARRAY_SIZE => int(&[self.va.vertex_array.size as i64]),
+            GL_VERTEX_ARRAY_TYPE => int(&[self.va.vertex_array.ty as i64]),
+            GL_VERTEX_ARRAY_STRIDE => int(&[self.va.vertex_array.stride as i64]),
+            GL_VERTEX_ARRAY_BUFFER_BINDING => int(&[self.va.vertex_array.buffer as i64]),
+            GL_NORMAL_ARRAY_TYPE => int(&[self.va.normal_array.ty as i64]),
+            GL_NORMAL_ARRAY_STRIDE => int(&[self.va.normal_array.stride as i64]),
+            GL_NORMAL_ARRAY_BUFFER_BINDING => int(&[self.va.normal_array.buffer as i64]),
+            GL_COLOR_ARRAY_SIZE => int(&[self.va.color_array.size as i64]),
+            GL_COLOR_ARRAY_TYPE => int(&[self.va.color_array.ty as i64]),
+            GL_COLOR_ARRAY_STRIDE => int(&[self.va.color_array.stride as i64]),
+            GL_COLOR_ARRAY_BUFFER_BINDING => int(&[self.va.color_array.buffer as i64]),
+            GL_SECONDARY_COLOR_ARRAY_SIZE => int(&[self.va.secondary_array.size as i64]),
+            GL_SECONDARY_COLOR_ARRAY_TYPE => int(&[self.va.secondary_array.ty as i64]),
+            GL_SECONDARY_COLOR_ARRAY_STRIDE => int(&[self.va.secondary_array.stride as i64]),
+            GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING => {
+                int(&[self.va.secondary_array.buffer as i64])
+            }
+            GL_FOG_COORD_ARRAY_TYPE => int(&[self.va.fog_array.ty as i64]),
+            GL_FOG_COORD_ARRAY_STRIDE => int(&[self.va.fog_array.stride as i64]),
+            GL_FOG_COORD_ARRAY_BUFFER_BINDING => int(&[self.va.fog_array.buffer as i64]),
+            GL_TEXTURE_COORD_ARRAY_SIZE
+            | GL_TEXTURE_COORD_ARRAY_TYPE
+            | GL_TEXTURE_COORD_ARRAY_STRIDE
+            | GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING => {
+                let a = self
+                    .va
+                    .tex_arrays
+                    .get(self.va.client_active_texture as usize)?;
+                int(&[match pname {
+                    GL_TEXTURE_COORD_ARRAY_SIZE => a.size as i64,
+                    GL_TEXTURE_COORD_ARRAY_TYPE => a.ty as i64,
+                    GL_TEXTURE_COORD_ARRAY_STRIDE => a.stride as i64,
+                    _ => a.buffer as i64,
+                }])
+            }
             GL_ARRAY_BUFFER_BINDING => int(&[self.va.array_buffer as i64]),
             GL_ELEMENT_ARRAY_BUFFER_BINDING => int(&[self.va.element_buffer as i64]),
+            GL_PIXEL_PACK_BUFFER_BINDING => int(&[self.objects.pack_buffer as i64]),
+            GL_PIXEL_UNPACK_BUFFER_BINDING => int(&[self.objects.unpack_buffer as i64]),
             GL_FRAMEBUFFER_BINDING => int(&[fb as i64]),
             GL_READ_FRAMEBUFFER_BINDING => int(&[self.objects.read_framebuffer as i64]),
             GL_RENDERBUFFER_BINDING => int(&[self.objects.bound_renderbuffer as i64]),

@@ -30,11 +30,24 @@
 //!   environment variable `SHADERBOX_THREADS` ([`THREADS_ENV`]) or else the
 //!   machine's available parallelism. Images do not depend on the count.
 //!
+//! - Attribute stacks ([`attrib_stack`]): glPushAttrib/glPopAttrib restore
+//!   per group; glPushClientAttrib/glPopClientAttrib the pixel-store and
+//!   vertex-array state.
+//! - Pixel buffer objects: the GL_PIXEL_PACK_BUFFER / GL_PIXEL_UNPACK_BUFFER
+//!   bindings are kept ([`Context::bound_buffer`]); a C layer moves the
+//!   bytes (reads and writes of the buffer store through
+//!   [`Context::get_buffer_sub_data`] / [`Context::buffer_sub_data`]).
+//!
 //! ## Limitations
 //! - No display lists, selection/feedback, accumulation buffer, color index
 //!   mode, evaluators, pixel transfer (glDrawPixels/CopyPixels), queries.
+//! - GL_COMBINE texture-environment parameters are kept for queries
+//!   ([`Context::get_tex_envfv`]) but GL_COMBINE draws as GL_MODULATE.
+//! - glPushAttrib does not save texture-object parameters or hints.
 
+pub mod attrib_stack;
 pub mod builtins;
+pub mod debug;
 pub mod draw;
 pub mod enums;
 pub mod ffgen;
@@ -94,6 +107,11 @@ pub struct Context {
     pub(crate) cache: draw::DrawCache,
     /// The threads draws run on ([`Context::set_threads`]).
     pub(crate) workers: raster::Workers,
+    /// glPushAttrib / glPushClientAttrib stacks.
+    pub(crate) attrib_stack: Vec<attrib_stack::ServerAttribs>,
+    pub(crate) client_attrib_stack: Vec<attrib_stack::ClientAttribs>,
+    /// Draw debugging ([`Context::set_debug`]).
+    pub(crate) debug: debug::DebugSession,
 }
 
 /// The environment variable giving the default number of draw threads.
@@ -149,6 +167,9 @@ impl Context {
             ),
             cache: draw::DrawCache::default(),
             workers: raster::Workers::new(threads_from_env()),
+            attrib_stack: Vec::new(),
+            client_attrib_stack: Vec::new(),
+            debug: debug::DebugSession::default(),
         }
     }
 
@@ -269,12 +290,12 @@ impl Context {
 
     /// True between glBegin and glEnd; most commands are then
     /// `GL_INVALID_OPERATION` (GL 2.1 §2.6.3).
-    pub(crate) fn in_begin_end(&self) -> bool {
+    pub fn in_begin_end(&self) -> bool {
         self.va.begin_mode.is_some()
     }
 
     /// Records `GL_INVALID_OPERATION` and returns true inside glBegin/glEnd.
-    pub(crate) fn reject_in_begin(&mut self) -> bool {
+    pub fn reject_in_begin(&mut self) -> bool {
         if self.in_begin_end() {
             self.set_error(GL_INVALID_OPERATION);
             true

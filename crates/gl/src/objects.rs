@@ -143,6 +143,10 @@ pub struct Objects {
     pub next_framebuffer: u32,
     pub draw_framebuffer: u32,
     pub read_framebuffer: u32,
+    /// GL_PIXEL_PACK_BUFFER / GL_PIXEL_UNPACK_BUFFER bindings (the C layer
+    /// moves pixels through them; the context only keeps the names).
+    pub pack_buffer: u32,
+    pub unpack_buffer: u32,
 }
 
 /// Texture targets in binding-table order.
@@ -177,6 +181,8 @@ impl Objects {
             next_framebuffer: 1,
             draw_framebuffer: 0,
             read_framebuffer: 0,
+            pack_buffer: 0,
+            unpack_buffer: 0,
         }
     }
 
@@ -596,7 +602,32 @@ impl Context {
             if self.va.element_buffer == b {
                 self.va.element_buffer = 0;
             }
+            if self.objects.pack_buffer == b {
+                self.objects.pack_buffer = 0;
+            }
+            if self.objects.unpack_buffer == b {
+                self.objects.unpack_buffer = 0;
+            }
         }
+    }
+
+    /// The buffer bound to `target` (0: none or not a buffer target).
+    pub fn bound_buffer(&self, target: u32) -> u32 {
+        match target {
+            GL_ARRAY_BUFFER => self.va.array_buffer,
+            GL_ELEMENT_ARRAY_BUFFER => self.va.element_buffer,
+            GL_PIXEL_PACK_BUFFER => self.objects.pack_buffer,
+            GL_PIXEL_UNPACK_BUFFER => self.objects.unpack_buffer,
+            _ => 0,
+        }
+    }
+
+    /// Size in bytes and usage of buffer `name`.
+    pub fn buffer_info(&self, name: u32) -> Option<(usize, u32)> {
+        self.objects
+            .buffers
+            .get(&name)
+            .map(|b| (b.data.len(), b.usage))
     }
 
     /// glIsBuffer.
@@ -612,7 +643,8 @@ impl Context {
         let slot = match target {
             GL_ARRAY_BUFFER => &mut self.va.array_buffer,
             GL_ELEMENT_ARRAY_BUFFER => &mut self.va.element_buffer,
-            GL_PIXEL_PACK_BUFFER | GL_PIXEL_UNPACK_BUFFER => return,
+            GL_PIXEL_PACK_BUFFER => &mut self.objects.pack_buffer,
+            GL_PIXEL_UNPACK_BUFFER => &mut self.objects.unpack_buffer,
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return;
@@ -628,6 +660,8 @@ impl Context {
         let b = match target {
             GL_ARRAY_BUFFER => self.va.array_buffer,
             GL_ELEMENT_ARRAY_BUFFER => self.va.element_buffer,
+            GL_PIXEL_PACK_BUFFER => self.objects.pack_buffer,
+            GL_PIXEL_UNPACK_BUFFER => self.objects.unpack_buffer,
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;
@@ -996,10 +1030,67 @@ impl Context {
         ty: u32,
         data: &[u8],
     ) {
+        self.tex_sub_image(
+            2,
+            target,
+            level,
+            [xoff, yoff, 0],
+            [w, h, 1],
+            format,
+            ty,
+            data,
+        );
+    }
+
+    /// glTexSubImage1D.
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_sub_image_1d(
+        &mut self,
+        target: u32,
+        level: i32,
+        xoff: i32,
+        w: i32,
+        format: u32,
+        ty: u32,
+        data: &[u8],
+    ) {
+        self.tex_sub_image(1, target, level, [xoff, 0, 0], [w, 1, 1], format, ty, data);
+    }
+
+    /// glTexSubImage3D.
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_sub_image_3d(
+        &mut self,
+        target: u32,
+        level: i32,
+        off: [i32; 3],
+        size: [i32; 3],
+        format: u32,
+        ty: u32,
+        data: &[u8],
+    ) {
+        self.tex_sub_image(3, target, level, off, size, format, ty, data);
+    }
+
+    /// glTexSubImage{1,2,3}D: replaces the `size` block at `off` of an
+    /// existing image (`data`: the client image, already validated in
+    /// size by the caller, or empty for a null pointer).
+    #[allow(clippy::too_many_arguments)]
+    fn tex_sub_image(
+        &mut self,
+        dims: u32,
+        target: u32,
+        level: i32,
+        off: [i32; 3],
+        size: [i32; 3],
+        format: u32,
+        ty: u32,
+        data: &[u8],
+    ) {
         if self.reject_in_begin() {
             return;
         }
-        let Some((bind_target, face)) = image_target(target, 2) else {
+        let Some((bind_target, face)) = image_target(target, dims) else {
             self.set_error(GL_INVALID_ENUM);
             return;
         };
@@ -1011,6 +1102,10 @@ impl Context {
             self.set_error(GL_INVALID_OPERATION);
             return;
         }
+        if !(0..MAX_LEVELS).contains(&level) {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
         let alignment = self.st.unpack_alignment as usize;
         let unit = self.st.active_texture as usize;
         let Some(tex) = self.objects.bound_texture_mut(unit, bind_target) else {
@@ -1020,35 +1115,38 @@ impl Context {
         let Some(img) = tex
             .faces
             .get_mut(face)
-            .and_then(|f| f.get_mut(level.max(0) as usize))
+            .and_then(|f| f.get_mut(level as usize))
             .and_then(|i| i.as_mut())
-            .filter(|_| level >= 0)
         else {
             self.set_error(GL_INVALID_OPERATION);
             return;
         };
-        if xoff < 0 || yoff < 0 || w < 0 || h < 0 || xoff + w > img.width || yoff + h > img.height {
+        let dim = [img.width, img.height, img.depth];
+        let fits = (0..3).all(|i| {
+            off[i] >= 0 && size[i] >= 0 && off[i].checked_add(size[i]).is_some_and(|e| e <= dim[i])
+        });
+        if !fits {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
+        let (w, h, d) = (size[0] as usize, size[1] as usize, size[2] as usize);
+        if w == 0 || h == 0 || d == 0 || data.is_empty() {
+            return;
+        }
         let internal = img.internal_format as i32;
-        let texels = unpack_image(
-            Some(data),
-            w as usize,
-            h as usize,
-            1,
-            format,
-            ty,
-            internal,
-            alignment,
-        );
-        for y in 0..h as usize {
-            for x in 0..w as usize {
-                let dst = (yoff as usize + y) * img.width as usize + xoff as usize + x;
-                if let (Some(d), Some(s)) =
-                    (img.texels.get_mut(dst), texels.get(y * w as usize + x))
-                {
-                    *d = *s;
+        let texels = unpack_image(Some(data), w, h, d, format, ty, internal, alignment);
+        let (iw, ih) = (img.width as usize, img.height as usize);
+        for z in 0..d {
+            for y in 0..h {
+                for x in 0..w {
+                    let dst = ((off[2] as usize + z) * ih + off[1] as usize + y) * iw
+                        + off[0] as usize
+                        + x;
+                    if let (Some(t), Some(src)) =
+                        (img.texels.get_mut(dst), texels.get((z * h + y) * w + x))
+                    {
+                        *t = *src;
+                    }
                 }
             }
         }
@@ -1188,30 +1286,146 @@ impl Context {
         }
     }
 
-    /// glGetTexLevelParameteriv (width, height, depth, internal format).
+    /// glGetTexLevelParameteriv: sizes, internal format, border, component
+    /// sizes (8 bits per stored component, 24 for depth), compression.
     pub fn get_tex_level_parameteriv(&mut self, target: u32, level: i32, pname: u32) -> i32 {
-        let Some((bind, face)) = image_target(target, 2)
-            .or_else(|| image_target(target, 1))
-            .or_else(|| image_target(target, 3))
-        else {
-            self.set_error(GL_INVALID_ENUM);
+        let Some(img) = self.level_image(target, level) else {
             return 0;
         };
-        let unit = self.st.active_texture as usize;
-        let img = self
-            .objects
-            .bound_texture(unit, bind)
-            .and_then(|t| t.image(face, level.max(0) as usize));
+        let info = img.map(|i| {
+            (
+                [i.width, i.height, i.depth],
+                i.internal_format,
+                base_format(i.internal_format as i32).unwrap_or(GL_RGBA),
+            )
+        });
+        let bits = |has: &[u32]| match info {
+            Some((_, _, base)) if has.contains(&base) => {
+                if base == GL_DEPTH_COMPONENT {
+                    24
+                } else {
+                    8
+                }
+            }
+            _ => 0,
+        };
         match pname {
-            GL_TEXTURE_WIDTH => img.map_or(0, |i| i.width),
-            GL_TEXTURE_HEIGHT => img.map_or(0, |i| i.height),
-            GL_TEXTURE_DEPTH => img.map_or(0, |i| i.depth),
-            GL_TEXTURE_INTERNAL_FORMAT => img.map_or(1, |i| i.internal_format as i32),
+            GL_TEXTURE_WIDTH => info.map_or(0, |i| i.0[0]),
+            GL_TEXTURE_HEIGHT => info.map_or(0, |i| i.0[1]),
+            GL_TEXTURE_DEPTH => info.map_or(0, |i| i.0[2]),
+            GL_TEXTURE_INTERNAL_FORMAT => info.map_or(1, |i| i.1 as i32),
+            GL_TEXTURE_BORDER | GL_TEXTURE_COMPRESSED => 0,
+            GL_TEXTURE_RED_SIZE => bits(&[GL_RGB, GL_RGBA, GL_RED, GL_RG]),
+            GL_TEXTURE_GREEN_SIZE => bits(&[GL_RGB, GL_RGBA, GL_RG]),
+            GL_TEXTURE_BLUE_SIZE => bits(&[GL_RGB, GL_RGBA]),
+            GL_TEXTURE_ALPHA_SIZE => bits(&[GL_RGBA, GL_ALPHA, GL_LUMINANCE_ALPHA]),
+            GL_TEXTURE_LUMINANCE_SIZE => bits(&[GL_LUMINANCE, GL_LUMINANCE_ALPHA]),
+            GL_TEXTURE_INTENSITY_SIZE => bits(&[GL_INTENSITY]),
+            GL_TEXTURE_DEPTH_SIZE => bits(&[GL_DEPTH_COMPONENT]),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 0
             }
         }
+    }
+
+    /// glGetTexParameterfv: the float parameters (border colour, LOD
+    /// range, priority, residency) and the others as floats.
+    pub fn get_tex_parameterfv(&mut self, target: u32, pname: u32) -> Vec<f32> {
+        let unit = self.st.active_texture as usize;
+        let Some(t) = self.objects.bound_texture(unit, target) else {
+            self.set_error(GL_INVALID_ENUM);
+            return Vec::new();
+        };
+        let p = t.params;
+        match pname {
+            GL_TEXTURE_BORDER_COLOR => p.border_color.to_vec(),
+            GL_TEXTURE_MIN_LOD => vec![p.min_lod],
+            GL_TEXTURE_MAX_LOD => vec![p.max_lod],
+            GL_TEXTURE_LOD_BIAS => vec![p.lod_bias],
+            GL_TEXTURE_PRIORITY | GL_TEXTURE_RESIDENT => vec![1.0],
+            _ => vec![self.get_tex_parameteriv(target, pname) as f32],
+        }
+    }
+
+    /// The image `level` of the texture `target` names (a 1D/2D/3D target
+    /// or a cube face) on the active unit; None with GL_INVALID_ENUM or
+    /// GL_INVALID_VALUE set for a bad target or level, Some(None) for an
+    /// undefined image.
+    fn level_image(&mut self, target: u32, level: i32) -> Option<Option<&Image>> {
+        let Some((bind, face)) = image_target(target, 2)
+            .or_else(|| image_target(target, 1))
+            .or_else(|| image_target(target, 3))
+        else {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        };
+        if !(0..MAX_LEVELS).contains(&level) {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        let unit = self.st.active_texture as usize;
+        Some(
+            self.objects
+                .bound_texture(unit, bind)
+                .and_then(|t| t.image(face, level as usize)),
+        )
+    }
+
+    /// glGetTexImage: the image as `format`/`ty` rows at the pack
+    /// alignment (empty for an undefined image). Components are taken per
+    /// GL 2.1 Table 6.1 (luminance and intensity to red).
+    pub fn get_tex_image(&mut self, target: u32, level: i32, format: u32, ty: u32) -> Vec<u8> {
+        if self.reject_in_begin() {
+            return Vec::new();
+        }
+        if format_components(format).is_none()
+            || matches!(format, GL_STENCIL_INDEX | GL_DEPTH_STENCIL | GL_COLOR_INDEX)
+        {
+            self.set_error(GL_INVALID_ENUM);
+            return Vec::new();
+        }
+        let Some((px, comp)) = pixel_size(format, ty) else {
+            self.set_error(GL_INVALID_ENUM);
+            return Vec::new();
+        };
+        let align = self.st.pack_alignment.max(1) as usize;
+        let Some(img) = self.level_image(target, level) else {
+            return Vec::new();
+        };
+        let Some(img) = img.cloned() else {
+            return Vec::new();
+        };
+        let base = base_format(img.internal_format as i32).unwrap_or(GL_RGBA);
+        let is_depth = matches!(base, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL);
+        if is_depth != (format == GL_DEPTH_COMPONENT) {
+            self.set_error(GL_INVALID_OPERATION);
+            return Vec::new();
+        }
+        let n = format_components(format).unwrap_or(4);
+        if comp != px / n.max(1) {
+            // Packed types are not implemented for reads.
+            self.set_error(GL_INVALID_OPERATION);
+            return Vec::new();
+        }
+        let (w, h, d) = (
+            img.width.max(0) as usize,
+            img.height.max(0) as usize,
+            img.depth.max(0) as usize,
+        );
+        let texels: Vec<[f32; 4]> = img
+            .texels
+            .iter()
+            .map(|&[r, g, b, a]| match base {
+                GL_ALPHA => [0.0, 0.0, 0.0, a],
+                GL_LUMINANCE | GL_INTENSITY | GL_RED => [r, 0.0, 0.0, 1.0],
+                GL_LUMINANCE_ALPHA => [r, 0.0, 0.0, a],
+                GL_RG => [r, g, 0.0, 1.0],
+                GL_RGB => [r, g, b, 1.0],
+                _ => [r, g, b, a],
+            })
+            .collect();
+        crate::draw::pack_pixels(&texels, w, h.saturating_mul(d), format, ty, align)
     }
 
     /// glGenerateMipmap / glGenerateMipmapEXT: box-filtered levels down to

@@ -66,6 +66,9 @@ pub struct Executable {
     pub attribs: Vec<AttribInfo>,
     /// Lowered stages, built at link time; see [`crate::draw`].
     pub kernels: crate::draw::Kernels,
+    /// The compiled shader objects linked, in attachment order (the
+    /// debugger maps source spans back to their text).
+    pub shaders: Vec<Arc<glsl::Shader>>,
 }
 
 impl Executable {
@@ -317,7 +320,7 @@ impl Context {
         let bindings = p.bindings.clone();
         let mut exe = None;
         if ok {
-            match build_executable(linked, &bindings) {
+            match build_executable(linked, &bindings, shaders.clone()) {
                 Ok(e) => exe = Some(e),
                 Err(msg) => {
                     log.push_str(&format!("error: {msg}\n"));
@@ -751,6 +754,7 @@ fn with_nul(len: usize) -> i32 {
 fn build_executable(
     program: glsl::link::Program,
     bindings: &BTreeMap<String, u32>,
+    shaders: Vec<Arc<glsl::Shader>>,
 ) -> Result<Executable, String> {
     let modules: Vec<&Module> = program.stages.iter().map(|s| &s.module).collect();
     let uniforms = UniformTable::build(&modules);
@@ -761,6 +765,7 @@ fn build_executable(
         uniforms,
         attribs,
         kernels,
+        shaders,
     })
 }
 

@@ -81,6 +81,42 @@ pub struct TexEnv {
     pub color: [f32; 4],
     pub lod_bias: f32,
     pub coord_replace: bool,
+    /// GL_COMBINE state, indexed by pname - GL_COMBINE_RGB (GL_COMBINE_RGB
+    /// ..= GL_OPERAND2_ALPHA); kept for queries, not applied by the
+    /// fixed-function fragment stage (GL_COMBINE draws as GL_MODULATE).
+    pub combine: [f32; COMBINE_PARAMS],
+    pub alpha_scale: f32,
+}
+
+/// Parameters GL_COMBINE_RGB ..= GL_OPERAND2_ALPHA.
+pub const COMBINE_PARAMS: usize = (GL_OPERAND2_ALPHA - GL_COMBINE_RGB + 1) as usize;
+
+/// GL 2.1 Table 6.19's initial GL_COMBINE state.
+fn combine_defaults() -> [f32; COMBINE_PARAMS] {
+    let mut c = [0.0; COMBINE_PARAMS];
+    let mut set = |p: u32, v: u32| {
+        if let Some(x) = c.get_mut((p - GL_COMBINE_RGB) as usize) {
+            *x = v as f32;
+        }
+    };
+    set(GL_COMBINE_RGB, GL_MODULATE);
+    set(GL_COMBINE_ALPHA, GL_MODULATE);
+    set(GL_SOURCE0_RGB, GL_TEXTURE);
+    set(GL_SOURCE1_RGB, GL_PREVIOUS);
+    set(GL_SOURCE2_RGB, GL_CONSTANT);
+    set(GL_SOURCE0_ALPHA, GL_TEXTURE);
+    set(GL_SOURCE1_ALPHA, GL_PREVIOUS);
+    set(GL_SOURCE2_ALPHA, GL_CONSTANT);
+    set(GL_OPERAND0_RGB, GL_SRC_COLOR);
+    set(GL_OPERAND1_RGB, GL_SRC_COLOR);
+    set(GL_OPERAND2_RGB, GL_SRC_ALPHA);
+    set(GL_OPERAND0_ALPHA, GL_SRC_ALPHA);
+    set(GL_OPERAND1_ALPHA, GL_SRC_ALPHA);
+    set(GL_OPERAND2_ALPHA, GL_SRC_ALPHA);
+    if let Some(x) = c.get_mut((GL_RGB_SCALE - GL_COMBINE_RGB) as usize) {
+        *x = 1.0;
+    }
+    c
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -116,6 +152,7 @@ pub struct PointParams {
 /// The largest point size and line width.
 pub const MAX_POINT_SIZE: f32 = 255.0;
 
+#[derive(Clone)]
 pub struct State {
     /// Enabled capabilities: (cap, texture unit for per-unit caps else 0).
     pub enabled: BTreeSet<(u32, u32)>,
@@ -234,6 +271,8 @@ impl State {
                 color: [0.0; 4],
                 lod_bias: 0.0,
                 coord_replace: false,
+                combine: combine_defaults(),
+                alpha_scale: 1.0,
             }; MAX_TEXTURE_UNITS],
             tex_gen: [[
                 gen([1.0, 0.0, 0.0, 0.0]),
@@ -1460,17 +1499,82 @@ impl Context {
             }
             (GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS) => env.lod_bias = v[0],
             (GL_POINT_SPRITE, GL_COORD_REPLACE) => env.coord_replace = v[0] != 0.0,
+            (GL_TEXTURE_ENV, GL_ALPHA_SCALE) => env.alpha_scale = v[0],
             (GL_TEXTURE_ENV, _) => {
-                // GL_COMBINE's sources and operands are accepted but not
-                // implemented.
-                if !(GL_COMBINE_RGB..=GL_OPERAND2_ALPHA).contains(&pname)
-                    && pname != GL_RGB_SCALE
-                    && pname != GL_ALPHA_SCALE
+                // GL_COMBINE's sources and operands are kept for queries
+                // but not applied.
+                match env
+                    .combine
+                    .get_mut(pname.wrapping_sub(GL_COMBINE_RGB) as usize)
                 {
-                    self.set_error(GL_INVALID_ENUM);
+                    Some(x) => *x = v[0],
+                    None => self.set_error(GL_INVALID_ENUM),
                 }
             }
             _ => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
+    /// glGetTexEnvfv (enum values as floats).
+    pub fn get_tex_envfv(&mut self, target: u32, pname: u32) -> Vec<f32> {
+        if self.reject_in_begin() {
+            return Vec::new();
+        }
+        let unit = self.st.active_texture as usize;
+        let Some(env) = self.st.tex_env.get(unit).copied() else {
+            self.set_error(GL_INVALID_OPERATION);
+            return Vec::new();
+        };
+        match (target, pname) {
+            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE) => vec![env.mode as f32],
+            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR) => env.color.to_vec(),
+            (GL_TEXTURE_ENV, GL_ALPHA_SCALE) => vec![env.alpha_scale],
+            (GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS) => vec![env.lod_bias],
+            (GL_POINT_SPRITE, GL_COORD_REPLACE) => vec![env.coord_replace as i32 as f32],
+            (GL_TEXTURE_ENV, _) => {
+                match env.combine.get(pname.wrapping_sub(GL_COMBINE_RGB) as usize) {
+                    Some(&x) => vec![x],
+                    None => {
+                        self.set_error(GL_INVALID_ENUM);
+                        Vec::new()
+                    }
+                }
+            }
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                Vec::new()
+            }
+        }
+    }
+
+    /// glGetTexGenfv (the eye plane as stored: in eye coordinates).
+    pub fn get_tex_genfv(&mut self, coord: u32, pname: u32) -> Vec<f32> {
+        if self.reject_in_begin() {
+            return Vec::new();
+        }
+        let c = match coord {
+            GL_S => 0,
+            GL_T => 1,
+            GL_R => 2,
+            GL_Q => 3,
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return Vec::new();
+            }
+        };
+        let unit = self.st.active_texture as usize;
+        let Some(g) = self.st.tex_gen.get(unit).map(|u| u[c]) else {
+            self.set_error(GL_INVALID_OPERATION);
+            return Vec::new();
+        };
+        match pname {
+            GL_TEXTURE_GEN_MODE => vec![g.mode as f32],
+            GL_OBJECT_PLANE => g.object_plane.to_vec(),
+            GL_EYE_PLANE => g.eye_plane.to_vec(),
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                Vec::new()
+            }
         }
     }
 

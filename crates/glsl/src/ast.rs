@@ -338,6 +338,9 @@ pub enum ExprKind {
     IntLit(u32),
     FloatLit(f32),
     BoolLit(bool),
+    /// `"text"` without its quotes: only the format of `debugPrintfEXT`
+    /// (GL_SHADERBOX_debug_printf).
+    StringLit(SmolStr),
     Unary(UnaryOp, Box<Expr>),
     Binary(BinaryOp, Box<Expr>, Box<Expr>),
     Assign(AssignOp, Box<Expr>, Box<Expr>),

@@ -130,6 +130,7 @@ pub fn fold(expr: &Expr, structs: &[StructDef]) -> Option<ConstValue> {
         | ExprKind::Assign { .. }
         | ExprKind::IncDec { .. }
         | ExprKind::Call { .. }
+        | ExprKind::DebugPrintf { .. }
         | ExprKind::Comma { .. } => return None,
     };
     if components.len() != flat_size(ty, structs) {

@@ -310,6 +310,15 @@ pub fn did_you_mean<'a>(
     best.map(|(_, c)| c)
 }
 
+/// `word` with its indefinite article: "an int", "a vec3".
+pub fn with_article(word: &str) -> String {
+    let vowel = word
+        .chars()
+        .next()
+        .is_some_and(|c| matches!(c.to_ascii_lowercase(), 'a' | 'e' | 'i' | 'o' | 'u'));
+    format!("{} {word}", if vowel { "an" } else { "a" })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -270,6 +270,14 @@ pub enum ExprKind {
         function: FunctionId,
         args: Vec<Expr>,
     },
+    /// `debugPrintfEXT(format, args...)` (GL_SHADERBOX_debug_printf): prints
+    /// the arguments of the invocation, formatted by
+    /// [`crate::printf::format_values`]; type `void`, no other effect.
+    /// `args` match `format`'s conversions in order and type.
+    DebugPrintf {
+        format: Vec<crate::printf::Piece>,
+        args: Vec<Expr>,
+    },
     Builtin {
         function: BuiltinFn,
         args: Vec<Expr>,
@@ -322,6 +330,7 @@ impl Expr {
             ExprKind::IncDec { target, .. } => f(target),
             ExprKind::Call { args, .. }
             | ExprKind::Builtin { args, .. }
+            | ExprKind::DebugPrintf { args, .. }
             | ExprKind::Construct { args } => args.iter().for_each(f),
         }
     }
@@ -356,6 +365,7 @@ impl Expr {
             ExprKind::IncDec { target, .. } => f(target),
             ExprKind::Call { args, .. }
             | ExprKind::Builtin { args, .. }
+            | ExprKind::DebugPrintf { args, .. }
             | ExprKind::Construct { args } => args.iter_mut().for_each(f),
         }
     }

@@ -21,6 +21,10 @@ pub enum PpKind {
     Hash,
     /// `##`
     HashHash,
+    /// `"text"` on one line (the text keeps its quotes). Only
+    /// `debugPrintfEXT` of the `GL_SHADERBOX_debug_printf` extension takes
+    /// one; anywhere else the preprocessor reports it.
+    Str,
     Newline,
     /// A character the language does not use (`@`, `$`, `"`, a non-ASCII
     /// letter...). The preprocessor may skip it in a skipped block; anywhere
@@ -151,6 +155,17 @@ pub fn lex(text: &str, opts: LexOptions) -> (Vec<PpToken>, Vec<Diagnostic>) {
                 });
                 space = false;
             }
+            b'"' if string_end(bytes, i).is_some() => {
+                let start = i;
+                i = string_end(bytes, i).unwrap_or(i + 1);
+                toks.push(PpToken {
+                    kind: PpKind::Str,
+                    text: SmolStr::new(&text[start..i]),
+                    span: Span::new(start as u32, i as u32),
+                    space_before: space,
+                });
+                space = false;
+            }
             b'#' => {
                 let start = i;
                 let (kind, len) = if bytes.get(i + 1) == Some(&b'#') {
@@ -193,6 +208,21 @@ pub fn lex(text: &str, opts: LexOptions) -> (Vec<PpToken>, Vec<Diagnostic>) {
         }
     }
     (toks, diags)
+}
+
+/// The end (after the closing quote) of a string literal starting at
+/// `i`, if it closes on the same line. `\"` and `\\` do not close it.
+fn string_end(bytes: &[u8], i: usize) -> Option<usize> {
+    let mut j = i + 1;
+    while let Some(&b) = bytes.get(j) {
+        match b {
+            b'"' => return Some(j + 1),
+            b'\n' => return None,
+            b'\\' => j += 2,
+            _ => j += 1,
+        }
+    }
+    None
 }
 
 /// The length of a line continuation (`\` then LF or CR LF) at `i`, or 0.

@@ -36,6 +36,7 @@ pub mod link;
 pub mod math;
 pub mod parse;
 pub mod pp;
+pub mod printf;
 pub mod sema;
 pub mod source;
 pub mod token;

@@ -358,6 +358,8 @@ pub enum TokenKind {
     /// truncated here.
     IntLiteral(u32),
     FloatLiteral(f32),
+    /// A string literal, without its quotes (GL_SHADERBOX_debug_printf only).
+    StringLiteral(SmolStr),
     Punct(Punct),
     Eof,
 }
@@ -378,6 +380,7 @@ impl TokenKind {
             TokenKind::Keyword(k) => format!("`{}'", k.as_str()),
             TokenKind::IntLiteral(v) => format!("integer `{v}'"),
             TokenKind::FloatLiteral(v) => format!("float `{v}'"),
+            TokenKind::StringLiteral(s) => format!("string \"{s}\""),
             TokenKind::Punct(p) => format!("`{}'", p.as_str()),
             TokenKind::Eof => "end of input".to_string(),
         }

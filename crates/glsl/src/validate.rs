@@ -241,6 +241,18 @@ impl Validator<'_> {
                     self.expr(a);
                 }
             }
+            ExprKind::DebugPrintf { format, args } => {
+                let convs: Vec<_> = crate::printf::conversions(format).collect();
+                if convs.len() != args.len() || !e.ty.is_void() {
+                    self.fail(e.span, "debugPrintfEXT with mismatched arguments");
+                }
+                for (c, a) in convs.iter().zip(args) {
+                    self.expr(a);
+                    if !c.accepts(a.ty) {
+                        self.fail(a.span, "debugPrintfEXT argument of the wrong type");
+                    }
+                }
+            }
             ExprKind::Convert { operand } => {
                 self.expr(operand);
                 let ok = operand.ty.scalar() == Some(Scalar::Int)

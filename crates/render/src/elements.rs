@@ -51,6 +51,22 @@ const TABLE: &[Info] = &[
     e("Tl", 0xA6544D, 196), e("Pb", 0x575961, 202), e("U", 0x008FFF, 186),
 ];
 
+/// Covalent radius of elements the table does not know, in Å.
+pub const DEFAULT_COVALENT_RADIUS: f32 = 1.5;
+
+/// Covalent radii in hundredths of an Å (Cordero et al. 2008).
+#[rustfmt::skip]
+const COVALENT: &[(&str, u16)] = &[
+    ("H", 31), ("He", 28), ("Li", 128), ("Be", 96), ("B", 84), ("C", 76),
+    ("N", 71), ("O", 66), ("F", 57), ("Ne", 58), ("Na", 166), ("Mg", 141),
+    ("Al", 121), ("Si", 111), ("P", 107), ("S", 105), ("Cl", 102), ("Ar", 106),
+    ("K", 203), ("Ca", 176), ("Mn", 139), ("Fe", 132), ("Co", 126), ("Ni", 124),
+    ("Cu", 132), ("Zn", 122), ("Ga", 122), ("As", 119), ("Se", 120), ("Br", 120),
+    ("Kr", 116), ("Pd", 139), ("Ag", 145), ("Cd", 144), ("In", 142), ("Sn", 139),
+    ("Te", 138), ("I", 139), ("Xe", 140), ("Pt", 136), ("Au", 136), ("Hg", 132),
+    ("Tl", 145), ("Pb", 146), ("U", 196),
+];
+
 impl Element {
     /// A symbol the table does not know.
     pub const UNKNOWN: Element = Element(u8::MAX);
@@ -85,6 +101,16 @@ impl Element {
         }
     }
 
+    /// Covalent radius in Å (Cordero et al., Dalton Trans. 2832, 2008;
+    /// sp3 carbon, low-spin metals), [`DEFAULT_COVALENT_RADIUS`] for an
+    /// unknown element.
+    pub fn covalent_radius(self) -> f32 {
+        COVALENT
+            .iter()
+            .find(|(sym, _)| *sym == self.symbol())
+            .map_or(DEFAULT_COVALENT_RADIUS, |(_, r)| *r as f32 / 100.0)
+    }
+
     /// Van der Waals radius in Å.
     pub fn radius(self) -> f32 {
         match self.info() {
@@ -115,5 +141,18 @@ mod tests {
         assert_eq!(Element::from_symbol("Xx"), None);
         assert_eq!(Element::UNKNOWN.symbol(), "?");
         assert_eq!(Element::UNKNOWN.color(), UNKNOWN_COLOR);
+        assert_eq!(c.covalent_radius(), 0.76);
+        assert_eq!(Element::UNKNOWN.covalent_radius(), DEFAULT_COVALENT_RADIUS);
+        // Every tabulated element has a covalent radius.
+        for i in 0..=u8::MAX {
+            let e = Element(i);
+            if e.info().is_some() {
+                assert!(
+                    COVALENT.iter().any(|(s, _)| *s == e.symbol()),
+                    "{}",
+                    e.symbol()
+                );
+            }
+        }
     }
 }

@@ -1,14 +1,23 @@
 //! # shaderbox-render: molecules drawn by the project's shader library
 //!
-//! Loads atoms ([`structure`]: a strict PDB reader, and crambin, PDB 1CRN,
-//! embedded), gives them CPK colours and van der Waals radii
-//! ([`elements`]), fits a camera ([`camera`]), sets up the OpenGL 2.1
+//! Loads atoms ([`structure`]: a strict PDB reader, [`mmcif`]: a strict
+//! mmCIF reader, and crambin, PDB 1CRN, embedded), gives them CPK colours,
+//! van der Waals and covalent radii ([`elements`]), finds bonds
+//! ([`bonds`]: CONECT records and covalent distances), fits a camera
+//! ([`camera`]), sets up the OpenGL 2.1
 //! state the library's sphere impostor shaders read (`shaders/sphere.vert`
 //! and `shaders/sphere.frag`: lights, material, fog, the `perspective`,
 //! `fogging[4]`, `light_enabled[8]`, `right_vector`, `up_vector`
 //! uniforms) on a [`gl::Context`], draws every atom as one GL_QUADS quad
 //! from client vertex arrays, reads the pixels back, box-filters
-//! supersampled renders down and writes PNG ([`image`]).
+//! supersampled renders down and writes PNG ([`image`]). Ball-and-stick
+//! ([`Style::BallAndStick`]) draws smaller atoms and every bond as two
+//! cylinder impostors (`shaders/cylinder.*`), which write their true depth
+//! too, so bonds and atoms cut each other correctly.
+//!
+//! Every GL call goes through a [`scene::Recorder`], so a render can hand
+//! back exactly what it drew ([`render_scene`]) for replaying on Mesa.
+//! [`library`] lists and embeds every program of the shader library.
 //!
 //! The seed talk's effects ([`Effect`]) swap in the library's other pairs:
 //! `outline.frag` (black interiors, lit rims [`OUTLINE_PIXELS`] wide),
@@ -34,8 +43,9 @@
 //!   little: fog grows from the eye). The fog colour is the background's.
 //!
 //! ## Limitations
-//! - Spacefill only: no bonds or ball-and-stick yet; PDB only (no
-//!   mmCIF).
+//! - The effects change only the atoms' program; ball-and-stick bonds are
+//!   always drawn plain (lit, fogged cylinders).
+//! - mmCIF files give no bonds of their own (bonds by distance only).
 //! - The effects' "red atom" test (x-red, transparent) is the seed's
 //!   colour test on gl_Color (r > 0.7, g < 0.3, b < 0.3), so it marks
 //!   oxygen in the element colours and would mark any other red-coloured
@@ -43,34 +53,40 @@
 //! - Supersampling box-filters N x N samples in linear 0-1 colour values
 //!   (not gamma-aware).
 
+pub mod bonds;
 pub mod camera;
 pub mod elements;
+pub mod gallery;
 pub mod image;
+pub mod library;
+pub mod mmcif;
+pub mod scene;
 pub mod structure;
 
 pub use camera::{Camera, Projection};
 pub use elements::Element;
 pub use image::Image;
-pub use structure::{crambin, load_file, parse_pdb, Atom, LoadError, Structure};
+pub use scene::{Recorder, Scene};
+pub use structure::{crambin, load_file, parse, parse_pdb, Atom, LoadError, Structure};
 
 use gl::enums::*;
-use gl::{ArrayData, Context};
+use gl::Context;
 use thiserror::Error;
 
 /// The library's sphere impostor vertex shader.
-pub const SPHERE_VERT: &str = include_str!("../../../shaders/sphere.vert");
+pub const SPHERE_VERT: &str = library::SPHERE_VERT.source;
 /// The library's sphere impostor fragment shader.
-pub const SPHERE_FRAG: &str = include_str!("../../../shaders/sphere.frag");
+pub const SPHERE_FRAG: &str = library::SPHERE_FRAG.source;
 /// Outline effect fragment shader (with [`SPHERE_VERT`]).
-pub const OUTLINE_FRAG: &str = include_str!("../../../shaders/outline.frag");
+pub const OUTLINE_FRAG: &str = library::OUTLINE_FRAG.source;
 /// Sphere impostor vertex shader that passes the quad corner on (X effects).
-pub const X_VERT: &str = include_str!("../../../shaders/x.vert");
+pub const X_VERT: &str = library::X_VERT.source;
 /// Dark X on every atom (with [`X_VERT`]).
-pub const X_FRAG: &str = include_str!("../../../shaders/x.frag");
+pub const X_FRAG: &str = library::X_FRAG.source;
 /// Yellow X on red atoms (with [`X_VERT`]).
-pub const X_RED_FRAG: &str = include_str!("../../../shaders/x-red.frag");
+pub const X_RED_FRAG: &str = library::X_RED_FRAG.source;
 /// Screen-door transparency of red atoms (with [`SPHERE_VERT`]).
-pub const TRANSPARENT_FRAG: &str = include_str!("../../../shaders/transparent.frag");
+pub const TRANSPARENT_FRAG: &str = library::TRANSPARENT_FRAG.source;
 
 /// Width of the outline effect's lit rim, in pixels (of the supersampled
 /// framebuffer) at the depth of the molecule's centre.
@@ -120,20 +136,44 @@ impl Effect {
         Effect::ALL.into_iter().find(|e| e.name() == name)
     }
 
-    /// The library's (vertex, fragment) shader files, names and sources.
-    pub fn shaders(self) -> [(&'static str, &'static str); 2] {
+    /// The library program that draws the atoms.
+    pub fn program(self) -> &'static library::Program {
+        let name = match self {
+            Effect::Plain => "sphere",
+            Effect::Outline => "outline",
+            Effect::X => "x",
+            Effect::XRed => "x-red",
+            Effect::Transparent => "transparent",
+        };
+        library::program(name).unwrap_or(&library::SPHERE)
+    }
+}
+
+/// How atoms (and bonds) are drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Style {
+    /// Atoms at their van der Waals radii, no bonds.
+    #[default]
+    Spacefill,
+    /// Atoms at [`BALL_SCALE`] of their radii, bonds as cylinders of
+    /// [`BOND_RADIUS`] (each half in its atom's colour).
+    BallAndStick,
+}
+
+impl Style {
+    /// The style's name on the command line.
+    pub fn name(self) -> &'static str {
         match self {
-            Effect::Plain => [("sphere.vert", SPHERE_VERT), ("sphere.frag", SPHERE_FRAG)],
-            Effect::Outline => [("sphere.vert", SPHERE_VERT), ("outline.frag", OUTLINE_FRAG)],
-            Effect::X => [("x.vert", X_VERT), ("x.frag", X_FRAG)],
-            Effect::XRed => [("x.vert", X_VERT), ("x-red.frag", X_RED_FRAG)],
-            Effect::Transparent => [
-                ("sphere.vert", SPHERE_VERT),
-                ("transparent.frag", TRANSPARENT_FRAG),
-            ],
+            Style::Spacefill => "spacefill",
+            Style::BallAndStick => "ballstick",
         }
     }
 }
+
+/// Ball radius / van der Waals radius in ball-and-stick.
+pub const BALL_SCALE: f32 = 0.3;
+/// Bond cylinder radius in ball-and-stick, Å.
+pub const BOND_RADIUS: f32 = 0.17;
 
 /// Largest side of the (supersampled) framebuffer.
 pub const MAX_SIDE: u32 = gl::MAX_TEXTURE_SIZE as u32;
@@ -183,6 +223,45 @@ pub struct RenderOptions {
     pub background: Background,
     /// Which of the seed's effects draws the atoms.
     pub effect: Effect,
+    pub style: Style,
+}
+
+impl RenderOptions {
+    /// The options as `shaderbox render` arguments.
+    pub fn describe(&self) -> String {
+        let fog = match self.fog {
+            Fog::None => "none",
+            Fog::Linear => "linear",
+            Fog::Exp => "exp",
+            Fog::Exp2 => "exp2",
+        };
+        let projection = match self.projection {
+            Projection::Orthographic => "ortho",
+            Projection::Perspective => "perspective",
+        };
+        let lights: Vec<String> = self.lights.iter().map(|l| l.to_string()).collect();
+        let lights = if lights.is_empty() {
+            "none".to_string()
+        } else {
+            lights.join(",")
+        };
+        let [x, y, z] = self.rotate;
+        let background = match self.background {
+            Background::Transparent => "transparent".to_string(),
+            Background::Color(c) => {
+                let [r, g, b] = c.map(|v| (v.clamp(0.0, 1.0) * 255.0 + 0.5) as u8);
+                format!("#{r:02x}{g:02x}{b:02x}")
+            }
+        };
+        format!(
+            "--size {}x{} --style {} --effect {} --fog {fog} --projection {projection} --lights {lights} --rotate {x},{y},{z} --supersample {} --background {background}",
+            self.width,
+            self.height,
+            self.style.name(),
+            self.effect.name(),
+            self.supersample
+        )
+    }
 }
 
 impl Default for RenderOptions {
@@ -197,6 +276,7 @@ impl Default for RenderOptions {
             supersample: 1,
             background: Background::default(),
             effect: Effect::Plain,
+            style: Style::Spacefill,
         }
     }
 }
@@ -240,33 +320,8 @@ fn check(ctx: &mut Context, during: &'static str) -> Result<(), RenderError> {
     }
 }
 
-/// Compiles and links the effect's sphere impostor program.
-fn build_program(ctx: &mut Context, effect: Effect) -> Result<u32, RenderError> {
-    let program = ctx.create_program();
-    let [(vname, vsrc), (fname, fsrc)] = effect.shaders();
-    for (kind, src, what) in [
-        (GL_VERTEX_SHADER, vsrc, vname),
-        (GL_FRAGMENT_SHADER, fsrc, fname),
-    ] {
-        let sh = ctx.create_shader(kind);
-        ctx.shader_source(sh, &[src]);
-        ctx.compile_shader(sh);
-        if ctx.get_shaderiv(sh, GL_COMPILE_STATUS) == 0 {
-            let log = ctx.get_shader_info_log(sh);
-            return Err(RenderError::Shader(format!("{what}: {log}")));
-        }
-        ctx.attach_shader(program, sh);
-    }
-    ctx.link_program(program);
-    if ctx.get_programiv(program, GL_LINK_STATUS) == 0 {
-        return Err(RenderError::Shader(ctx.get_program_info_log(program)));
-    }
-    check(ctx, "building the shaders")?;
-    Ok(program)
-}
-
 /// Fog state: GL_FOG_* values and the one-hot `fogging[4]` uniform.
-fn set_fog(ctx: &mut Context, fog: Fog, camera: &Camera, color: [f32; 4]) -> [f32; 4] {
+fn set_fog(rec: &mut Recorder, fog: Fog, camera: &Camera, color: [f32; 4]) -> [f32; 4] {
     let (front, back) = camera.depth_span();
     let back = back.max(1e-3);
     // ln(1 / FOG_AT_BACK)
@@ -284,16 +339,15 @@ fn set_fog(ctx: &mut Context, fog: Fog, camera: &Camera, color: [f32; 4]) -> [f3
         Fog::Exp2 => glsl::math::sqrt(k) / back,
         _ => k / back,
     };
-    ctx.fogi(GL_FOG_MODE, mode as i32);
-    ctx.fogf(GL_FOG_START, front);
-    ctx.fogf(GL_FOG_END, end);
-    ctx.fogf(GL_FOG_DENSITY, density);
-    ctx.fogfv(GL_FOG_COLOR, &color);
+    rec.fog(GL_FOG_MODE, &[mode as f32]);
+    rec.fog(GL_FOG_START, &[front]);
+    rec.fog(GL_FOG_END, &[end]);
+    rec.fog(GL_FOG_DENSITY, &[density]);
+    rec.fog(GL_FOG_COLOR, &color);
     onehot
 }
 
-/// Renders `structure` into an image (top row first).
-pub fn render(structure: &Structure, opts: &RenderOptions) -> Result<Image, RenderError> {
+fn check_options(opts: &RenderOptions) -> Result<(), RenderError> {
     let (w, h, ss) = (opts.width, opts.height, opts.supersample);
     if w == 0 || h == 0 || w > MAX_SIDE || h > MAX_SIDE {
         return Err(RenderError::Size {
@@ -307,61 +361,80 @@ pub fn render(structure: &Structure, opts: &RenderOptions) -> Result<Image, Rend
     if let Some(bad) = opts.lights.iter().find(|l| **l >= 8) {
         return Err(RenderError::Light(*bad));
     }
-    let (fw, fh) = (w * ss, h * ss);
-    let mut ctx = Context::new(fw as i32, fh as i32);
-    let program = build_program(&mut ctx, opts.effect)?;
+    Ok(())
+}
 
+/// Renders `structure` into an image (top row first).
+pub fn render(structure: &Structure, opts: &RenderOptions) -> Result<Image, RenderError> {
+    render_scene(structure, opts).map(|(image, _)| image)
+}
+
+/// Renders `structure` and returns the image with the GL calls that drew
+/// it ([`scene::Scene`], for `--export-scene`).
+pub fn render_scene(
+    structure: &Structure,
+    opts: &RenderOptions,
+) -> Result<(Image, Scene), RenderError> {
+    check_options(opts)?;
+    let ss = opts.supersample;
+    let (fw, fh) = (opts.width * ss, opts.height * ss);
+    let mut rec = Recorder::new(fw, fh);
+
+    let radius_of = |a: &Atom| match opts.style {
+        Style::Spacefill => a.element.radius(),
+        Style::BallAndStick => BALL_SCALE * a.element.radius(),
+    };
     let spheres: Vec<([f32; 3], f32)> = structure
         .atoms
         .iter()
-        .map(|a| (a.position, a.element.radius()))
+        .map(|a| (a.position, radius_of(a)))
         .collect();
     let camera = Camera::fit(&spheres, opts.projection, fw, fh, opts.rotate);
 
     // Projection.
-    ctx.matrix_mode(GL_PROJECTION);
-    ctx.load_identity();
+    rec.matrix_mode(GL_PROJECTION);
+    rec.load_identity();
     let (hw, hh) = (camera.half_width as f64, camera.half_height as f64);
     let (n, f) = (camera.near as f64, camera.far as f64);
     match camera.projection {
-        Projection::Orthographic => ctx.ortho(-hw, hw, -hh, hh, n, f),
-        Projection::Perspective => ctx.frustum(-hw, hw, -hh, hh, n, f),
+        Projection::Orthographic => rec.ortho([-hw, hw, -hh, hh, n, f]),
+        Projection::Perspective => rec.frustum([-hw, hw, -hh, hh, n, f]),
     }
 
     // Lights, in eye space (identity model-view when specified).
-    ctx.matrix_mode(GL_MODELVIEW);
-    ctx.load_identity();
+    rec.matrix_mode(GL_MODELVIEW);
+    rec.load_identity();
     let mut enabled = [0.0f32; 8];
     for (i, (pos, a, d, s)) in LIGHTS.iter().enumerate() {
         let light = GL_LIGHT0 + i as u32;
-        ctx.lightfv(light, GL_POSITION, pos);
-        ctx.lightfv(light, GL_AMBIENT, &[*a, *a, *a, 1.0]);
-        ctx.lightfv(light, GL_DIFFUSE, &[*d, *d, *d, 1.0]);
-        ctx.lightfv(light, GL_SPECULAR, &[*s, *s, *s, 1.0]);
+        rec.light(light, GL_POSITION, pos);
+        rec.light(light, GL_AMBIENT, &[*a, *a, *a, 1.0]);
+        rec.light(light, GL_DIFFUSE, &[*d, *d, *d, 1.0]);
+        rec.light(light, GL_SPECULAR, &[*s, *s, *s, 1.0]);
         if opts.lights.contains(&(i as u8)) {
-            ctx.enable(light);
+            rec.enable(light);
             enabled[i] = 1.0;
         } else {
-            ctx.disable(light);
+            rec.disable(light);
         }
     }
-    ctx.enable(GL_LIGHTING);
-    ctx.materialfv(GL_FRONT_AND_BACK, GL_AMBIENT, &[1.0, 1.0, 1.0, 1.0]);
-    ctx.materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, &[1.0, 1.0, 1.0, 1.0]);
-    ctx.materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, &[1.0, 1.0, 1.0, 1.0]);
-    ctx.materialfv(GL_FRONT_AND_BACK, GL_EMISSION, &[0.0, 0.0, 0.0, 1.0]);
-    ctx.materialf(GL_FRONT_AND_BACK, GL_SHININESS, SHININESS);
-    check(&mut ctx, "setting lights and material")?;
+    rec.enable(GL_LIGHTING);
+    rec.material(GL_FRONT_AND_BACK, GL_AMBIENT, &[1.0, 1.0, 1.0, 1.0]);
+    rec.material(GL_FRONT_AND_BACK, GL_DIFFUSE, &[1.0, 1.0, 1.0, 1.0]);
+    rec.material(GL_FRONT_AND_BACK, GL_SPECULAR, &[1.0, 1.0, 1.0, 1.0]);
+    rec.material(GL_FRONT_AND_BACK, GL_EMISSION, &[0.0, 0.0, 0.0, 1.0]);
+    rec.material(GL_FRONT_AND_BACK, GL_SHININESS, &[SHININESS]);
+    check(&mut rec.ctx, "setting lights and material")?;
 
     // Model-view: eye at +distance on z, molecule turned about its centre.
     let [rx, ry, rz] = camera.rotate;
-    ctx.translatef(0.0, 0.0, -camera.distance);
-    ctx.rotatef(rz, 0.0, 0.0, 1.0);
-    ctx.rotatef(ry, 0.0, 1.0, 0.0);
-    ctx.rotatef(rx, 1.0, 0.0, 0.0);
+    rec.translate([0.0, 0.0, -camera.distance]);
+    rec.rotate(rz, [0.0, 0.0, 1.0]);
+    rec.rotate(ry, [0.0, 1.0, 0.0]);
+    rec.rotate(rx, [1.0, 0.0, 0.0]);
     let c = camera.center;
-    ctx.translatef(-c[0], -c[1], -c[2]);
-    let mv = ctx.get_floatv(GL_MODELVIEW_MATRIX);
+    rec.translate([-c[0], -c[1], -c[2]]);
+    let mv = rec.ctx.get_floatv(GL_MODELVIEW_MATRIX);
     let row = |r: usize| -> [f32; 3] { [0, 4, 8].map(|o| mv.get(o + r).copied().unwrap_or(0.0)) };
     let (right, up) = (row(0), row(1));
 
@@ -370,31 +443,26 @@ pub fn render(structure: &Structure, opts: &RenderOptions) -> Result<Image, Rend
         Background::Color(c) => (c, 1.0),
         Background::Transparent => ([0.0; 3], 0.0),
     };
-    let fogging = set_fog(&mut ctx, opts.fog, &camera, [bg[0], bg[1], bg[2], 1.0]);
-    ctx.clear_color(bg[0], bg[1], bg[2], alpha);
-    ctx.clear_depth(1.0);
-    ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    ctx.enable(GL_DEPTH_TEST);
-    ctx.depth_func(GL_LESS);
-    check(&mut ctx, "setting fog, depth and clearing")?;
+    let fogging = set_fog(&mut rec, opts.fog, &camera, [bg[0], bg[1], bg[2], 1.0]);
+    rec.clear_color([bg[0], bg[1], bg[2], alpha]);
+    rec.clear_depth(1.0);
+    rec.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    rec.enable(GL_DEPTH_TEST);
+    rec.depth_func(GL_LESS);
+    check(&mut rec.ctx, "setting fog, depth and clearing")?;
 
-    // Uniforms.
-    ctx.use_program(program);
-    let loc = |ctx: &mut Context, name: &str| ctx.get_uniform_location(program, name);
-    let l = loc(&mut ctx, "right_vector");
-    ctx.uniform_3f(l, right[0], right[1], right[2]);
-    let l = loc(&mut ctx, "up_vector");
-    ctx.uniform_3f(l, up[0], up[1], up[2]);
-    let l = loc(&mut ctx, "perspective");
+    // Atoms: the effect's sphere program.
+    let program = opts.effect.program();
+    rec.program(program).map_err(RenderError::Shader)?;
+    rec.uniform("right_vector", &right);
+    rec.uniform("up_vector", &up);
     let persp = match camera.projection {
         Projection::Orthographic => 0.0,
         Projection::Perspective => 1.0,
     };
-    ctx.uniform_1f(l, persp);
-    let l = loc(&mut ctx, "fogging");
-    ctx.uniform_1fv(l, 4, &fogging);
-    let l = loc(&mut ctx, "light_enabled");
-    ctx.uniform_1fv(l, 8, &enabled);
+    rec.uniform("perspective", &[persp]);
+    rec.uniform_array("fogging", &fogging);
+    rec.uniform_array("light_enabled", &enabled);
     if opts.effect == Effect::Outline {
         // Eye-space size of a pixel at the centre's depth (perspective:
         // the near-plane size scaled out to the centre).
@@ -402,10 +470,9 @@ pub fn render(structure: &Structure, opts: &RenderOptions) -> Result<Image, Rend
         if camera.projection == Projection::Perspective {
             pixel *= camera.distance / camera.near.max(1e-6);
         }
-        let l = loc(&mut ctx, "outline_width");
-        ctx.uniform_1f(l, OUTLINE_PIXELS * pixel);
+        rec.uniform("outline_width", &[OUTLINE_PIXELS * pixel]);
     }
-    check(&mut ctx, "setting the shader uniforms")?;
+    check(&mut rec.ctx, "setting the shader uniforms")?;
 
     // One quad per atom: four vertices at the centre, corners in
     // gl_MultiTexCoord0 = (right, up, radius), colour in gl_Color.
@@ -414,7 +481,7 @@ pub fn render(structure: &Structure, opts: &RenderOptions) -> Result<Image, Rend
     let mut tex = Vec::with_capacity(n * 12);
     let mut col = Vec::with_capacity(n * 16);
     for a in &structure.atoms {
-        let r = a.element.radius();
+        let r = radius_of(a);
         let [cr, cg, cb] = a.element.color();
         for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
             pos.extend_from_slice(&a.position);
@@ -422,24 +489,82 @@ pub fn render(structure: &Structure, opts: &RenderOptions) -> Result<Image, Rend
             col.extend_from_slice(&[cr, cg, cb, 1.0]);
         }
     }
-    ctx.vertex_pointer(3, GL_FLOAT, 0, ArrayData::from_f32(&pos));
-    ctx.client_active_texture(GL_TEXTURE0);
-    ctx.tex_coord_pointer(3, GL_FLOAT, 0, ArrayData::from_f32(&tex));
-    ctx.color_pointer(4, GL_FLOAT, 0, ArrayData::from_f32(&col));
-    ctx.enable_client_state(GL_VERTEX_ARRAY);
-    ctx.enable_client_state(GL_TEXTURE_COORD_ARRAY);
-    ctx.enable_client_state(GL_COLOR_ARRAY);
-    check(&mut ctx, "specifying the vertex arrays")?;
-    let count = i32::try_from(n.saturating_mul(4)).unwrap_or(i32::MAX);
-    ctx.draw_arrays(GL_QUADS, 0, count);
-    if let Some(e) = ctx.take_draw_error() {
+    rec.draw(
+        GL_QUADS,
+        n.saturating_mul(4),
+        (3, pos),
+        Some((3, tex)),
+        None,
+        Some((4, col)),
+    );
+    if let Some(e) = rec.ctx.take_draw_error() {
         return Err(RenderError::Draw(e));
     }
-    check(&mut ctx, "drawing")?;
+    check(&mut rec.ctx, "drawing the atoms")?;
 
-    let pixels = ctx.read_pixels_f32(0, 0, fw as i32, fh as i32);
-    check(&mut ctx, "reading the pixels")?;
-    Ok(image::downsample(&pixels, fw, fh, ss, alpha < 1.0))
+    if opts.style == Style::BallAndStick {
+        draw_bonds(&mut rec, structure, persp, &fogging, &enabled)?;
+    }
+
+    let pixels = rec.ctx.read_pixels_f32(0, 0, fw as i32, fh as i32);
+    check(&mut rec.ctx, "reading the pixels")?;
+    let image = image::downsample(&pixels, fw, fh, ss, alpha < 1.0);
+    let scene = rec.scene(opts.describe());
+    Ok((image, scene))
+}
+
+/// Ball-and-stick bonds: two cylinder impostors per bond (each half in
+/// its atom's colour), from the first atom's centre to the midpoint and
+/// on to the second's.
+fn draw_bonds(
+    rec: &mut Recorder,
+    structure: &Structure,
+    persp: f32,
+    fogging: &[f32; 4],
+    enabled: &[f32; 8],
+) -> Result<(), RenderError> {
+    let bonds = bonds::find_bonds(structure);
+    if bonds.is_empty() {
+        return Ok(());
+    }
+    rec.program(&library::CYLINDER)
+        .map_err(RenderError::Shader)?;
+    rec.uniform("perspective", &[persp]);
+    rec.uniform_array("fogging", fogging);
+    rec.uniform_array("light_enabled", enabled);
+    let halves = bonds.len() * 2;
+    let mut pos = Vec::with_capacity(halves * 12);
+    let mut tex0 = Vec::with_capacity(halves * 16);
+    let mut tex1 = Vec::with_capacity(halves * 8);
+    let mut col = Vec::with_capacity(halves * 16);
+    for (i, j) in bonds {
+        let (Some(a), Some(b)) = (structure.atoms.get(i), structure.atoms.get(j)) else {
+            continue;
+        };
+        let mid = [0, 1, 2].map(|k| 0.5 * a.position[k] + 0.5 * b.position[k]);
+        for (atom, from, to) in [(a, a.position, mid), (b, mid, b.position)] {
+            let [cr, cg, cb] = atom.element.color();
+            for (along, side) in [(0.0, -1.0), (1.0, -1.0), (1.0, 1.0), (0.0, 1.0)] {
+                pos.extend_from_slice(&from);
+                tex0.extend_from_slice(&[to[0], to[1], to[2], BOND_RADIUS]);
+                tex1.extend_from_slice(&[along, side]);
+                col.extend_from_slice(&[cr, cg, cb, 1.0]);
+            }
+        }
+    }
+    let count = pos.len() / 3;
+    rec.draw(
+        GL_QUADS,
+        count,
+        (3, pos),
+        Some((4, tex0)),
+        Some((2, tex1)),
+        Some((4, col)),
+    );
+    if let Some(e) = rec.ctx.take_draw_error() {
+        return Err(RenderError::Draw(e));
+    }
+    check(&mut rec.ctx, "drawing the bonds")
 }
 
 #[cfg(test)]
@@ -450,7 +575,7 @@ mod tests {
     fn shaders_build() {
         for effect in Effect::ALL {
             let mut ctx = Context::new(4, 4);
-            let built = build_program(&mut ctx, effect);
+            let built = library::build(&mut ctx, effect.program());
             assert!(built.is_ok(), "{effect:?}: {built:?}");
         }
     }

@@ -12,7 +12,12 @@
 //!   blank and the first one seen are kept;
 //! - control characters other than tab/CR, or text that is not ASCII in an
 //!   atom record, are errors (binary data is not a PDB file);
-//! - an mmCIF file (starting `data_`) is reported as not supported yet.
+//! - CONECT records (columns 7-11 the atom's serial, 12-16, 17-21, 22-26,
+//!   27-31 its partners) become bonds between the atoms read; serials of
+//!   atoms that were not read (other models, other alternate locations)
+//!   are skipped; a field that is neither blank nor a number is an error;
+//! - a file whose first text is `data_` is mmCIF and goes to
+//!   [`crate::mmcif`].
 //!
 //! Every error names the source (file name) and the 1-based line.
 
@@ -34,6 +39,9 @@ pub struct Atom {
     pub residue: String,
     /// Line of the record in its file (1-based).
     pub line: usize,
+    /// Atom serial number (PDB columns 7-11, mmCIF `_atom_site.id`), when
+    /// it is a number.
+    pub serial: Option<i64>,
 }
 
 /// A set of atoms read from one source.
@@ -42,6 +50,9 @@ pub struct Structure {
     /// Where it came from (file name, or "1crn (embedded)").
     pub source: String,
     pub atoms: Vec<Atom>,
+    /// Bonds the file states (PDB CONECT), as pairs of indices into
+    /// `atoms`, lower index first, sorted, no duplicates.
+    pub conect: Vec<(usize, usize)>,
 }
 
 /// Why a structure could not be read.
@@ -55,8 +66,6 @@ pub enum LoadError {
     },
     #[error("{file}: has no atoms (no ATOM or HETATM records)")]
     Empty { file: String },
-    #[error("{file}: mmCIF files are not supported yet; convert it to PDB format")]
-    MmCif { file: String },
     #[error("{file}: more than {MAX_ATOMS} atoms")]
     TooManyAtoms { file: String },
     #[error("{file}: {message}")]
@@ -73,17 +82,37 @@ pub fn crambin() -> Structure {
     parse_pdb(CRAMBIN_PDB.as_bytes(), "1crn (embedded)").unwrap_or(Structure {
         source: "1crn (embedded)".into(),
         atoms: Vec::new(),
+        conect: Vec::new(),
     })
 }
 
-/// Reads a PDB file from disk.
+/// Reads a PDB or mmCIF file from disk (mmCIF when its first text is
+/// `data_`, else PDB).
 pub fn load_file(path: &std::path::Path) -> Result<Structure, LoadError> {
     let source = path.display().to_string();
     let bytes = std::fs::read(path).map_err(|e| LoadError::Io {
         file: source.clone(),
         message: e.to_string(),
     })?;
-    parse_pdb(&bytes, &source)
+    parse(&bytes, &source)
+}
+
+/// Parses PDB or mmCIF text (mmCIF when its first text is `data_`).
+pub fn parse(bytes: &[u8], source: &str) -> Result<Structure, LoadError> {
+    if is_mmcif(bytes) {
+        crate::mmcif::parse_mmcif(bytes, source)
+    } else {
+        parse_pdb(bytes, source)
+    }
+}
+
+/// Whether the first non-blank text is `data_` (an mmCIF data block).
+fn is_mmcif(bytes: &[u8]) -> bool {
+    let first_text = bytes
+        .iter()
+        .position(|b| !b.is_ascii_whitespace())
+        .map_or(&[][..], |p| &bytes[p..]);
+    first_text.starts_with(b"data_")
 }
 
 /// Parses PDB text; `source` names it in errors.
@@ -93,17 +122,18 @@ pub fn parse_pdb(bytes: &[u8], source: &str) -> Result<Structure, LoadError> {
         line,
         message,
     };
-    let first_text = bytes
-        .iter()
-        .position(|b| !b.is_ascii_whitespace())
-        .map_or(&[][..], |p| &bytes[p..]);
-    if first_text.starts_with(b"data_") {
-        return Err(LoadError::MmCif {
-            file: source.to_string(),
-        });
+    if is_mmcif(bytes) {
+        return Err(malformed(
+            1,
+            "this is an mmCIF file (it starts with data_), not PDB; read it with parse or load_file"
+                .into(),
+        ));
     }
     let mut atoms = Vec::new();
+    // CONECT records: (line, atom serial, partner serials).
+    let mut conect_records: Vec<(usize, i64, Vec<i64>)> = Vec::new();
     let mut alt_seen: Option<u8> = None;
+    let mut in_first_model = true;
     for (i, raw) in bytes.split(|b| *b == b'\n').enumerate() {
         let line_no = i + 1;
         let raw = raw.strip_suffix(b"\r").unwrap_or(raw);
@@ -122,7 +152,17 @@ pub fn parse_pdb(bytes: &[u8], source: &str) -> Result<Structure, LoadError> {
         }
         let is_atom = raw.starts_with(b"ATOM") || raw.starts_with(b"HETATM");
         if raw.starts_with(b"ENDMDL") {
-            break;
+            // Only the first model; CONECT records follow the last model,
+            // so keep reading those.
+            in_first_model = false;
+            continue;
+        }
+        if raw.starts_with(b"CONECT") {
+            conect_records.push(parse_conect(raw, line_no, source)?);
+            continue;
+        }
+        if !in_first_model {
+            continue;
         }
         if !is_atom {
             continue;
@@ -186,6 +226,7 @@ pub fn parse_pdb(bytes: &[u8], source: &str) -> Result<Structure, LoadError> {
             name: name.trim().to_string(),
             residue: col(18, 20).trim().to_string(),
             line: line_no,
+            serial: col(7, 11).trim().parse().ok(),
         });
     }
     if atoms.is_empty() {
@@ -193,10 +234,90 @@ pub fn parse_pdb(bytes: &[u8], source: &str) -> Result<Structure, LoadError> {
             file: source.to_string(),
         });
     }
+    let conect = resolve_conect(&atoms, &conect_records);
     Ok(Structure {
         source: source.to_string(),
         atoms,
+        conect,
     })
+}
+
+/// Reads one CONECT record: the atom's serial and its partners'.
+fn parse_conect(
+    raw: &[u8],
+    line: usize,
+    source: &str,
+) -> Result<(usize, i64, Vec<i64>), LoadError> {
+    let text = std::str::from_utf8(raw).ok().filter(|t| t.is_ascii());
+    let Some(text) = text else {
+        return Err(LoadError::Malformed {
+            file: source.to_string(),
+            line,
+            message: "non-ASCII text in a CONECT record".into(),
+        });
+    };
+    let mut serials = Vec::new();
+    for (a, b) in [(7, 11), (12, 16), (17, 21), (22, 26), (27, 31)] {
+        let field = text.get(a - 1..b.min(text.len())).unwrap_or("").trim();
+        if field.is_empty() {
+            continue;
+        }
+        match field.parse::<i64>() {
+            Ok(v) => serials.push(v),
+            Err(_) => {
+                return Err(LoadError::Malformed {
+                    file: source.to_string(),
+                    line,
+                    message: format!(
+                        "CONECT serial number (columns {a}-{b}) is not a number: {field:?}"
+                    ),
+                })
+            }
+        }
+    }
+    if serials.is_empty() {
+        return Err(LoadError::Malformed {
+            file: source.to_string(),
+            line,
+            message: "CONECT record without an atom serial number (columns 7-11)".into(),
+        });
+    }
+    let atom = serials.remove(0);
+    Ok((line, atom, serials))
+}
+
+/// CONECT serials to sorted, unique index pairs; unknown serials skipped.
+fn resolve_conect(atoms: &[Atom], records: &[(usize, i64, Vec<i64>)]) -> Vec<(usize, usize)> {
+    if records.is_empty() {
+        return Vec::new();
+    }
+    let mut by_serial: Vec<(i64, usize)> = atoms
+        .iter()
+        .enumerate()
+        .filter_map(|(i, a)| a.serial.map(|s| (s, i)))
+        .collect();
+    by_serial.sort_unstable();
+    let find = |s: i64| -> Option<usize> {
+        by_serial
+            .binary_search_by_key(&s, |(k, _)| *k)
+            .ok()
+            .and_then(|p| by_serial.get(p))
+            .map(|(_, i)| *i)
+    };
+    let mut out = Vec::new();
+    for (_, a, partners) in records {
+        let Some(i) = find(*a) else { continue };
+        for p in partners {
+            if let Some(j) = find(*p) {
+                if i != j {
+                    out.push((i.min(j), i.max(j)));
+                }
+            }
+        }
+    }
+    out.sort_unstable();
+    out.dedup();
+    out
 }
 
 /// The element of an atom record: columns 77-78, else from the name.
@@ -299,10 +420,10 @@ END
             .unwrap_err()
             .to_string();
         assert!(m.starts_with("p.png:2: control character 0x1a"), "{m}");
-        assert!(matches!(
-            parse_pdb(b"data_1CRN\nloop_\n", "c.cif").unwrap_err(),
-            LoadError::MmCif { .. }
-        ));
+        let m = parse_pdb(b"data_1CRN\nloop_\n", "c.cif")
+            .unwrap_err()
+            .to_string();
+        assert!(m.contains("mmCIF"), "{m}");
         let utf = "ATOM      1  N   THR A   1      17.047  14.099   3.625  1.00 13.79   é\n";
         assert!(parse_pdb(utf.as_bytes(), "u").is_err());
     }
@@ -322,5 +443,31 @@ ATOM      1  CA  ALA A   1       9.000   9.000   9.000  1.00  0.00           C
         assert_eq!(s.atoms.len(), 2);
         assert_eq!(s.atoms[0].position, [1.0, 1.0, 1.0]);
         assert_eq!(s.atoms[1].element.symbol(), "N");
+    }
+
+    #[test]
+    fn conect_records_become_bonds() {
+        let text = "\
+ATOM      1  SG  CYS A   3       1.000   1.000   1.000  1.00  0.00           S
+ATOM      2  SG  CYS A  40       3.000   1.000   1.000  1.00  0.00           S
+ATOM      3  N   ALA A   1       9.000   1.000   1.000  1.00  0.00           N
+CONECT    1    2
+CONECT    2    1   99
+";
+        let s = parse_pdb(text.as_bytes(), "c").unwrap();
+        assert_eq!(s.conect, vec![(0, 1)]);
+        assert_eq!(s.atoms[2].serial, Some(3));
+        let bad = format!("{text}CONECT    1   x2\n");
+        let m = parse_pdb(bad.as_bytes(), "c").unwrap_err().to_string();
+        assert!(
+            m.starts_with("c:6: CONECT serial number (columns 12-16)"),
+            "{m}"
+        );
+        let crambin_bonds = crambin().conect;
+        assert_eq!(
+            crambin_bonds.len(),
+            3,
+            "three disulfide bridges: {crambin_bonds:?}"
+        );
     }
 }

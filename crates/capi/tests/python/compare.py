@@ -1,10 +1,18 @@
 """Differential run: a PyOpenGL script on shaderbox's libOSMesa and on Mesa's.
 
-Usage: python3 compare.py LIBDIR SCRIPT.py
-LIBDIR holds shaderbox's libOSMesa.so (e.g. target/release). The script must
-write its RGBA pixels to the path given as its first argument. Prints the
-fraction of pixels within 2/255, the max difference and PSNR; exits 1 when the
-issue-4 bar (>= 99.5% within 2/255, none off by more than 8/255) is missed.
+Usage: python3 compare.py [--markdown FILE] LIBDIR SCRIPT.py...
+LIBDIR holds shaderbox's libOSMesa.so (e.g. target/release). Each script is
+run twice (PYOPENGL_PLATFORM=osmesa; LD_LIBRARY_PATH=LIBDIR, then the system's
+Mesa) with an output path as its first argument. Either it writes one file
+there (raw RGBA8 pixels: the older single-scene scripts), or it makes a
+directory of scenes (harness.py: NAME.rgba images with a size header,
+NAME.txt logs, NAME.fail on an exception).
+
+Per image: the fraction of pixels whose channels are all within 2/255, the
+max difference and the PSNR; the issue-4 bar is >= 99.5% within 2/255 and
+none off by more than 8/255. Per log: exact equality (error codes, statuses).
+Exits 1 when any scene misses the bar, differs, or fails on either side.
+With --markdown FILE, appends a table row per scene to FILE.
 """
 import math
 import os
@@ -24,26 +32,118 @@ def run(script, out, libdir):
     return r.returncode
 
 
-def main():
-    libdir, script = os.path.abspath(sys.argv[1]), sys.argv[2]
-    with tempfile.TemporaryDirectory() as d:
-        a, b = os.path.join(d, "shaderbox.bin"), os.path.join(d, "mesa.bin")
-        if run(script, a, libdir) or run(script, b, None):
-            print("FAIL: a run failed")
-            return 1
-        x, y = open(a, "rb").read(), open(b, "rb").read()
-    if len(x) != len(y) or not x:
-        print("FAIL: sizes differ", len(x), len(y))
-        return 1
+def image_stats(x, y):
+    """(fraction within 2/255, max diff, PSNR) of two equal-size RGBA8 images."""
     n = len(x) // 4
-    diffs = [abs(p - q) for p, q in zip(x, y)]
-    close = sum(1 for i in range(n) if max(diffs[4 * i:4 * i + 4]) <= 2)
-    mx = max(diffs)
-    mse = sum(v * v for v in diffs) / len(diffs)
+    close = 0
+    mx = 0
+    sq = 0
+    for i in range(n):
+        d = max(abs(x[4 * i + k] - y[4 * i + k]) for k in range(4))
+        if d <= 2:
+            close += 1
+        if d > mx:
+            mx = d
+        sq += sum((x[4 * i + k] - y[4 * i + k]) ** 2 for k in range(4))
+    mse = sq / max(len(x), 1)
     psnr = float("inf") if mse == 0 else 10 * math.log10(255 * 255 / mse)
-    ok = close / n >= 0.995 and mx <= 8
-    print(f"{os.path.basename(script)}: {close / n:.4%} within 2/255, max diff {mx}, PSNR {psnr:.1f} dB: {'PASS' if ok else 'FAIL'}")
+    return close / max(n, 1), mx, psnr
+
+
+def verdict(frac, mx):
+    return frac >= 0.995 and mx <= 8
+
+
+def read(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
+def compare_dirs(script, a, b, rows):
+    """Compares scene directories a (shaderbox) and b (Mesa); prints a line
+    per scene; returns the number of failing scenes."""
+    bad = 0
+    names = sorted({os.path.splitext(f)[0] for d in (a, b) for f in os.listdir(d)})
+    for name in names:
+        fa, fb = os.path.join(a, name), os.path.join(b, name)
+        line, ok = None, True
+        for side, d in (("shaderbox", fa), ("mesa", fb)):
+            if os.path.exists(d + ".fail"):
+                line = f"{name}: FAIL: raised on {side}:\n" + read(d + ".fail").decode()
+                ok = False
+        if ok and os.path.exists(fa + ".txt") != os.path.exists(fb + ".txt"):
+            line, ok = f"{name}: FAIL: a log is missing on one side", False
+        if ok and os.path.exists(fa + ".txt"):
+            la, lb = read(fa + ".txt").decode(), read(fb + ".txt").decode()
+            if la != lb:
+                diff = [f"  shaderbox: {p!r}\n  mesa:      {q!r}"
+                        for p, q in zip(la.splitlines(), lb.splitlines()) if p != q]
+                if len(la.splitlines()) != len(lb.splitlines()):
+                    diff.append("  (line counts differ)")
+                line, ok = f"{name}: FAIL: logs differ\n" + "\n".join(diff), False
+        stats = None
+        if ok and (os.path.exists(fa + ".rgba") or os.path.exists(fb + ".rgba")):
+            if not (os.path.exists(fa + ".rgba") and os.path.exists(fb + ".rgba")):
+                line, ok = f"{name}: FAIL: an image is missing on one side", False
+            else:
+                x, y = read(fa + ".rgba"), read(fb + ".rgba")
+                if len(x) != len(y) or x[:8] != y[:8]:
+                    line, ok = f"{name}: FAIL: image sizes differ", False
+                else:
+                    stats = image_stats(x[8:], y[8:])
+                    ok = verdict(stats[0], stats[1])
+                    line = (f"{name}: {stats[0]:.4%} within 2/255, max diff {stats[1]}, "
+                            f"PSNR {stats[2]:.1f} dB: {'PASS' if ok else 'FAIL'}")
+        if line is None:
+            line = f"{name}: log matches: PASS"
+        print(line)
+        if rows is not None:
+            base = os.path.basename(script)
+            if stats:
+                psnr = "inf" if stats[2] == float("inf") else f"{stats[2]:.1f}"
+                rows.append(f"| {base} | {name} | {stats[0]:.2%} | {stats[1]} | {psnr} | "
+                            f"{'pass' if ok else 'FAIL'} |")
+            else:
+                rows.append(f"| {base} | {name} | log | | | {'pass' if ok else 'FAIL'} |")
+        bad += 0 if ok else 1
+    return bad
+
+
+def compare_script(libdir, script, rows):
+    with tempfile.TemporaryDirectory() as d:
+        a, b = os.path.join(d, "shaderbox"), os.path.join(d, "mesa")
+        if run(script, a, libdir) or run(script, b, None):
+            print(f"{os.path.basename(script)}: FAIL: a run failed")
+            return 1
+        if os.path.isdir(a) and os.path.isdir(b):
+            return compare_dirs(script, a, b, rows)
+        x, y = read(a), read(b)
+    if len(x) != len(y) or not x:
+        print(f"{os.path.basename(script)}: FAIL: sizes differ", len(x), len(y))
+        return 1
+    frac, mx, psnr = image_stats(x, y)
+    ok = verdict(frac, mx)
+    name = os.path.basename(script)
+    print(f"{name}: {frac:.4%} within 2/255, max diff {mx}, PSNR {psnr:.1f} dB: "
+          f"{'PASS' if ok else 'FAIL'}")
+    if rows is not None:
+        rows.append(f"| {name} | (one scene) | {frac:.2%} | {mx} | {psnr:.1f} | "
+                    f"{'pass' if ok else 'FAIL'} |")
     return 0 if ok else 1
+
+
+def main():
+    args = sys.argv[1:]
+    md = None
+    if args[:1] == ["--markdown"]:
+        md, args = args[1], args[2:]
+    libdir, scripts = os.path.abspath(args[0]), args[1:]
+    rows = [] if md else None
+    bad = sum(compare_script(libdir, s, rows) for s in scripts)
+    if md:
+        with open(md, "a") as f:
+            f.write("\n".join(rows) + "\n")
+    return 1 if bad else 0
 
 
 if __name__ == "__main__":

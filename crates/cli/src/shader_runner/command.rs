@@ -39,6 +39,11 @@ pub enum Command {
     },
     Enable(u32),
     Disable(u32),
+    /// `blend func SRC DST`.
+    BlendFunc {
+        src: u32,
+        dst: u32,
+    },
     Frustum([f32; 6]),
     Hint {
         target: u32,
@@ -332,6 +337,29 @@ fn parse_command(line: &str) -> Result<Command, CommandError> {
     if lit(line, "draw elements ").is_some() || lit(line, "multidraw arrays ").is_some() {
         return Ok(C::NeedsLaterGl("[elements] / multidraw".into()));
     }
+    if let Some(rest) = lit(line, "blend func ") {
+        let factor = |rest: &mut &str| -> Result<u32, CommandError> {
+            let (w, r) = scan::word(rest).ok_or_else(|| bad("Bad blend factor", line))?;
+            *rest = r;
+            Ok(match w {
+                "GL_ZERO" => GL_ZERO,
+                "GL_ONE" => GL_ONE,
+                "GL_SRC_COLOR" => GL_SRC_COLOR,
+                "GL_ONE_MINUS_SRC_COLOR" => GL_ONE_MINUS_SRC_COLOR,
+                "GL_SRC_ALPHA" => GL_SRC_ALPHA,
+                "GL_ONE_MINUS_SRC_ALPHA" => GL_ONE_MINUS_SRC_ALPHA,
+                "GL_DST_ALPHA" => GL_DST_ALPHA,
+                "GL_ONE_MINUS_DST_ALPHA" => GL_ONE_MINUS_DST_ALPHA,
+                "GL_DST_COLOR" => GL_DST_COLOR,
+                "GL_ONE_MINUS_DST_COLOR" => GL_ONE_MINUS_DST_COLOR,
+                _ => return Err(bad("Bad blend factor", line)),
+            })
+        };
+        let mut r = rest;
+        let src = factor(&mut r)?;
+        let dst = factor(&mut r)?;
+        return Ok(C::BlendFunc { src, dst });
+    }
     if let Some(rest) = lit(line, "disable ") {
         return Ok(C::Disable(enable_cap(rest, line)?));
     }
@@ -583,6 +611,9 @@ fn enable_cap(rest: &str, line: &str) -> Result<u32, CommandError> {
         "GL_VERTEX_PROGRAM_TWO_SIDE" => GL_VERTEX_PROGRAM_TWO_SIDE,
         "GL_PROGRAM_POINT_SIZE" => GL_VERTEX_PROGRAM_POINT_SIZE,
         "GL_DEPTH_TEST" => GL_DEPTH_TEST,
+        "GL_BLEND" => GL_BLEND,
+        "GL_STENCIL_TEST" => GL_STENCIL_TEST,
+        "GL_CULL_FACE" => GL_CULL_FACE,
         _ => return Err(bad("Bad enable/disable enum", line)),
     })
 }

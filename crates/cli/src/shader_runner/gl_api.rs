@@ -68,6 +68,7 @@ pub trait GlApi {
     fn enable(&mut self, cap: u32);
     fn disable(&mut self, cap: u32);
     fn hint(&mut self, target: u32, mode: u32);
+    fn blend_func(&mut self, src: u32, dst: u32);
     fn shade_model(&mut self, mode: u32);
     fn clip_plane(&mut self, plane: u32, equation: &[f64; 4]);
     fn light_f(&mut self, light: u32, pname: u32, param: f32);

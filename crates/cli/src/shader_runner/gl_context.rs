@@ -165,6 +165,9 @@ impl GlApi for gl::Context {
     fn disable(&mut self, cap: u32) {
         gl::Context::disable(self, cap)
     }
+    fn blend_func(&mut self, src: u32, dst: u32) {
+        gl::Context::blend_func(self, src, dst)
+    }
     fn hint(&mut self, target: u32, mode: u32) {
         gl::Context::hint(self, target, mode)
     }

@@ -115,3 +115,18 @@ pub const GL_VERTEX_PROGRAM_POINT_SIZE: u32 = 0x8642;
 pub const GL_VERTEX_PROGRAM_TWO_SIDE: u32 = 0x8643;
 pub const GL_VERTEX_SHADER: u32 = 0x8B31;
 pub const GL_VERSION: u32 = 0x1F02;
+
+// Blending (GL 2.1 table 4.2) and the caps `enable` accepts beyond the above.
+pub const GL_BLEND: u32 = 0x0BE2;
+pub const GL_STENCIL_TEST: u32 = 0x0B90;
+pub const GL_CULL_FACE: u32 = 0x0B44;
+pub const GL_ZERO: u32 = 0;
+pub const GL_ONE: u32 = 1;
+pub const GL_SRC_COLOR: u32 = 0x0300;
+pub const GL_ONE_MINUS_SRC_COLOR: u32 = 0x0301;
+pub const GL_SRC_ALPHA: u32 = 0x0302;
+pub const GL_ONE_MINUS_SRC_ALPHA: u32 = 0x0303;
+pub const GL_DST_ALPHA: u32 = 0x0304;
+pub const GL_ONE_MINUS_DST_ALPHA: u32 = 0x0305;
+pub const GL_DST_COLOR: u32 = 0x0306;
+pub const GL_ONE_MINUS_DST_COLOR: u32 = 0x0307;

@@ -32,7 +32,7 @@ pub mod command;
 mod gl_api;
 mod glenum;
 mod images;
-mod png;
+pub mod png;
 pub mod probe;
 pub mod run;
 mod scan;
@@ -202,6 +202,16 @@ pub fn execute_on<G: gl_api::GlApi>(
     }
     (verdict, report.stdout, report.stderr)
 }
+
+/// Reads and parses a script: its display name and commands.
+pub fn load(path: &Path) -> Result<(String, script::Script), String> {
+    let name = path.display().to_string();
+    let text = read_script(path)?;
+    let script = script::parse(&text).map_err(|e| format!("{name}:{e}"))?;
+    Ok((name, script))
+}
+
+pub use run::window_config;
 
 /// Reads a script as text (bytes that are not UTF-8 become U+FFFD).
 fn read_script(path: &Path) -> Result<String, String> {

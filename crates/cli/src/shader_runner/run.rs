@@ -509,6 +509,7 @@ impl<'a, G: GlApi> Runner<'a, G> {
                 gl.load_identity();
             }
             Command::Hint { target, mode } => gl.hint(*target, *mode),
+            Command::BlendFunc { src, dst } => gl.blend_func(*src, *dst),
             Command::Ortho(bounds) => {
                 let [l, r, b, t] = match bounds {
                     Some(v) => v.map(f64::from),

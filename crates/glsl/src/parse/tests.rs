@@ -176,6 +176,7 @@ fn show(e: &Expr) -> String {
             format!("{}.{}({})", show(a), m.name, args.join(", "))
         }
         ExprKind::Comma(a, b) => format!("({}, {})", show(a), show(b)),
+        ExprKind::StringLit(s) => format!("{s:?}"),
         ExprKind::Error => "<error>".into(),
     }
 }

@@ -74,8 +74,12 @@ pub struct PpOutput {
 /// Extensions this implementation supports (each also gets a macro of the
 /// same name with value 1). GL_ARB_draw_buffers: its GLSL side is
 /// `gl_FragData`, which GLSL 1.10 already has; `#extension` must accept it
-/// since the GL layer reports the extension.
-pub const SUPPORTED_EXTENSIONS: &[&str] = &["GL_ARB_draw_buffers"];
+/// since the GL layer reports the extension. GL_SHADERBOX_debug_printf:
+/// shaderbox's `debugPrintfEXT` (see [`crate::printf`]).
+pub const SUPPORTED_EXTENSIONS: &[&str] = &["GL_ARB_draw_buffers", PRINTF_EXTENSION];
+
+/// The extension that enables string literals and `debugPrintfEXT`.
+pub const PRINTF_EXTENSION: &str = "GL_SHADERBOX_debug_printf";
 
 /// Preprocesses the text of `map`, recording `#line` directives in it.
 /// Never fails: problems are diagnostics, and the token list always ends
@@ -307,6 +311,16 @@ impl<'m> Preprocessor<'m> {
         self.out.push(Token { kind, span: t.span });
     }
 
+    /// Whether the last `#extension` directive so far for the printf
+    /// extension (or `all`) enables it.
+    fn printf_enabled(&self) -> bool {
+        self.extensions
+            .iter()
+            .rev()
+            .find(|e| e.name == PRINTF_EXTENSION || e.name == "all")
+            .is_some_and(|e| e.name == PRINTF_EXTENSION && e.behavior != ExtensionBehavior::Disable)
+    }
+
     /// A preprocessing token to a parser token kind (`None` after an error).
     fn convert(&mut self, t: &PTok) -> Option<TokenKind> {
         match &t.kind {
@@ -316,6 +330,20 @@ impl<'m> Preprocessor<'m> {
                 WordClass::Identifier => TokenKind::Identifier(t.text.clone()),
             }),
             PpKind::Number => self.convert_number(t),
+            PpKind::Str if self.printf_enabled() => {
+                let inner = t.text.get(1..t.text.len().saturating_sub(1)).unwrap_or("");
+                Some(TokenKind::StringLiteral(inner.into()))
+            }
+            PpKind::Str => {
+                self.diags.push(
+                    Diagnostic::error(Code::LexInvalidChar, t.span, "GLSL has no string literals")
+                        .with_note(format!(
+                            "for debugPrintfEXT, enable shaderbox's debug extension first: \
+                             `#extension {PRINTF_EXTENSION} : enable'"
+                        )),
+                );
+                None
+            }
             PpKind::Punct(p) => Some(TokenKind::Punct(*p)),
             PpKind::Hash | PpKind::HashHash => {
                 self.diags.push(

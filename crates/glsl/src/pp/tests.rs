@@ -26,6 +26,7 @@ fn render(out: &PpOutput) -> String {
             TokenKind::IntLiteral(v) => Some(v.to_string()),
             TokenKind::FloatLiteral(v) => Some(format!("{v:?}")),
             TokenKind::Punct(p) => Some(p.as_str().to_string()),
+            TokenKind::StringLiteral(s) => Some(format!("{s:?}")),
             TokenKind::Eof => None,
         })
         .collect();
@@ -447,7 +448,7 @@ fn literal_errors() {
 
 #[test]
 fn invalid_characters() {
-    err("int i = \"1\";", "invalid character `\"'");
+    err("int i = \"1\";", "GLSL has no string literals");
     err("a @ b", "invalid character `@'");
     err("a $", "invalid character `$'");
     err("a \\ b", "invalid character `\\'");
@@ -704,4 +705,19 @@ fn builtin_prelude_preprocesses_cleanly() {
             assert!(out.tokens.len() > 100);
         }
     }
+}
+
+#[test]
+fn strings_need_the_printf_extension() {
+    let with = ok("#extension GL_SHADERBOX_debug_printf : enable\nf(\"a %d\\n\", 1);\n");
+    assert!(with.contains("\"a %d\\\\n\""), "{with}");
+    err("f(\"text\");\n", "GLSL has no string literals");
+    // After `disable` strings are errors again; an unterminated quote is a
+    // stray character as before.
+    err(
+        "#extension GL_SHADERBOX_debug_printf : enable\n\
+         #extension GL_SHADERBOX_debug_printf : disable\nf(\"x\");\n",
+        "no string literals",
+    );
+    err("f(\"x);\n", "invalid character `\"'");
 }

@@ -108,6 +108,14 @@ impl Analyzer {
         let span = e.span;
         match &e.kind {
             A::Error => error_expr(span),
+            A::StringLit(_) => {
+                self.error(
+                    Code::TypeMismatch,
+                    span,
+                    "a string literal can only be the format of `debugPrintfEXT'",
+                );
+                error_expr(span)
+            }
             A::IntLit(v) => const_expr(
                 ir::ConstValue {
                     ty: Type::INT,

@@ -418,6 +418,9 @@ impl Analyzer {
 
     /// A function call `name(args)` (GLSL 1.20 §6.1 overload resolution).
     pub fn call(&mut self, name: &ast::Ident, args: &[ast::Expr], span: Span) -> ir::Expr {
+        if name.name == "debugPrintfEXT" && self.printf_enabled() {
+            return self.debug_printf(args, span);
+        }
         if let Some(Symbol::Struct(id)) = self.lookup(&name.name) {
             let ty = Type::new(crate::types::Base::Struct(id));
             return self.construct(ty, args, span);
@@ -752,6 +755,113 @@ impl Analyzer {
                     stack.pop();
                 }
             }
+        }
+    }
+
+    /// Whether the last `#extension` directive for the printf extension
+    /// enables it (see `pp::PRINTF_EXTENSION`).
+    fn printf_enabled(&self) -> bool {
+        use crate::ir::ExtensionBehavior;
+        self.module
+            .extensions
+            .iter()
+            .rev()
+            .find(|(n, _)| n == crate::pp::PRINTF_EXTENSION || n == "all")
+            .is_some_and(|(n, b)| {
+                n == crate::pp::PRINTF_EXTENSION && *b != ExtensionBehavior::Disable
+            })
+    }
+
+    /// `debugPrintfEXT("format", args...)`: the format is a string literal
+    /// whose conversions take the arguments in order (`crate::printf`).
+    fn debug_printf(&mut self, args: &[ast::Expr], span: Span) -> ir::Expr {
+        let void = ir::Expr {
+            kind: ir::ExprKind::Const(ir::ConstValue {
+                ty: Type::VOID,
+                components: Vec::new(),
+            }),
+            ty: Type::VOID,
+            span,
+        };
+        let Some((first, rest)) = args.split_first() else {
+            self.error(
+                Code::NoMatchingOverload,
+                span,
+                "`debugPrintfEXT' needs a format string as its first argument",
+            )
+            .notes
+            .push("for example `debugPrintfEXT(\"x = %f\\n\", x);'".into());
+            return error_expr(span);
+        };
+        let ast::ExprKind::StringLit(text) = &first.kind else {
+            self.error(
+                Code::TypeMismatch,
+                first.span,
+                "the first argument of `debugPrintfEXT' must be a string literal",
+            );
+            return error_expr(span);
+        };
+        let format = match crate::printf::parse(text) {
+            Ok(f) => f,
+            Err(why) => {
+                self.error(
+                    Code::TypeMismatch,
+                    first.span,
+                    format!("bad format string: {why}"),
+                );
+                return error_expr(span);
+            }
+        };
+        let vals: Vec<ir::Expr> = rest.iter().map(|a| self.rvalue(a)).collect();
+        let convs: Vec<crate::printf::Conversion> =
+            crate::printf::conversions(&format).copied().collect();
+        if convs.len() != vals.len() {
+            self.error(
+                Code::NoMatchingOverload,
+                span,
+                format!(
+                    "the format of `debugPrintfEXT' has {} conversion{} but {} value{} follow{}",
+                    convs.len(),
+                    if convs.len() == 1 { "" } else { "s" },
+                    vals.len(),
+                    if vals.len() == 1 { "" } else { "s" },
+                    if vals.len() == 1 { "s" } else { "" },
+                ),
+            );
+            return error_expr(span);
+        }
+        let mut ok = true;
+        for (c, v) in convs.iter().zip(&vals) {
+            if v.ty.is_error() {
+                ok = false;
+            } else if !c.accepts(v.ty) {
+                let found = self.tn(v.ty);
+                self.error(
+                    Code::TypeMismatch,
+                    v.span,
+                    format!(
+                        "`%{}{}' prints {}, but this argument is {}",
+                        if c.components > 1 {
+                            format!("v{}", c.components)
+                        } else {
+                            String::new()
+                        },
+                        c.kind,
+                        crate::diag::with_article(&c.expected()),
+                        crate::diag::with_article(&found)
+                    ),
+                )
+                .notes
+                .push("convert it (e.g. `float(i)') or change the conversion".into());
+                ok = false;
+            }
+        }
+        if !ok {
+            return error_expr(span);
+        }
+        ir::Expr {
+            kind: ir::ExprKind::DebugPrintf { format, args: vals },
+            ..void
         }
     }
 }

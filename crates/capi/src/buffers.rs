@@ -1,0 +1,194 @@
+//! Buffer-object entry points kept at the C level: glMapBuffer /
+//! glUnmapBuffer (a mapping is a copy of the store that the client edits
+//! and that glUnmapBuffer writes back), the buffer queries, and the pixel
+//! buffer (PBO) transfers glReadPixels / glTexImage* / glGetTexImage make
+//! through GL_PIXEL_PACK_BUFFER and GL_PIXEL_UNPACK_BUFFER (GL 2.1 §2.9,
+//! §4.3.5, §6.1.13).
+
+use crate::arrays::array_state;
+use crate::context::OsContext;
+use crate::entry::{gl_entry_points, wr};
+use crate::types::*;
+use gl::enums::*;
+use gl::vertex::AttribSource;
+use std::ffi::c_void;
+
+/// A failed transfer whose GL error has been recorded.
+#[derive(Debug)]
+pub struct Recorded;
+
+/// A mapped buffer: the copy handed to the client and the access asked.
+pub struct Mapping {
+    pub data: Box<[u8]>,
+    pub access: u32,
+}
+
+/// The bytes `offset..offset + len` of the buffer bound to `target` (a
+/// pixel buffer target) for an unpack. GL_INVALID_OPERATION when the range
+/// lies outside the buffer or the buffer is mapped (GL 2.1 §4.3.5.2).
+pub fn read_pixel_buffer(
+    c: &mut OsContext,
+    target: u32,
+    offset: usize,
+    len: usize,
+) -> Result<Vec<u8>, Recorded> {
+    let b = c.gl.bound_buffer(target);
+    let size = c.gl.buffer_info(b).map_or(0, |i| i.0);
+    if c.mapped.contains_key(&b) || offset.checked_add(len).is_none_or(|e| e > size) {
+        c.gl.record_error(GL_INVALID_OPERATION);
+        return Err(Recorded);
+    }
+    Ok(c.gl.get_buffer_sub_data(target, offset as isize, len as isize))
+}
+
+/// Writes `bytes` at `offset` into the GL_PIXEL_PACK_BUFFER (a pack);
+/// GL_INVALID_OPERATION when it does not fit or the buffer is mapped.
+pub fn write_pixel_buffer(c: &mut OsContext, offset: usize, bytes: &[u8]) {
+    let b = c.gl.bound_buffer(GL_PIXEL_PACK_BUFFER);
+    let size = c.gl.buffer_info(b).map_or(0, |i| i.0);
+    if c.mapped.contains_key(&b) || offset.checked_add(bytes.len()).is_none_or(|e| e > size) {
+        c.gl.record_error(GL_INVALID_OPERATION);
+        return;
+    }
+    c.gl.buffer_sub_data(GL_PIXEL_PACK_BUFFER, offset as isize, bytes);
+}
+
+/// Whether a draw would source data from a mapped buffer (enabled arrays
+/// and the element buffer): GL_INVALID_OPERATION (GL 2.1 §2.9.1).
+pub fn sources_mapped(c: &OsContext, elements: bool) -> bool {
+    if c.mapped.is_empty() {
+        return false;
+    }
+    let va = c.gl.vertex_state();
+    if elements && c.mapped.contains_key(&va.element_buffer) {
+        return true;
+    }
+    let mut srcs = vec![
+        AttribSource::Position,
+        AttribSource::Color,
+        AttribSource::SecondaryColor,
+        AttribSource::Normal,
+        AttribSource::FogCoord,
+    ];
+    srcs.extend((0..va.tex_arrays.len()).map(|u| AttribSource::TexCoord(u as u8)));
+    srcs.extend((0..va.generic_arrays.len()).map(|i| AttribSource::Generic(i as u8)));
+    srcs.into_iter().any(|s| {
+        array_state(va, s)
+            .is_some_and(|a| a.enabled && a.buffer != 0 && c.mapped.contains_key(&a.buffer))
+    })
+}
+
+/// The buffer bound to a buffer target, GL_INVALID_ENUM for another
+/// target and GL_INVALID_OPERATION for none bound.
+fn bound(c: &mut OsContext, target: u32) -> Option<u32> {
+    if !matches!(
+        target,
+        GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER | GL_PIXEL_PACK_BUFFER | GL_PIXEL_UNPACK_BUFFER
+    ) {
+        c.gl.record_error(GL_INVALID_ENUM);
+        return None;
+    }
+    let b = c.gl.bound_buffer(target);
+    if b == 0 {
+        c.gl.record_error(GL_INVALID_OPERATION);
+        return None;
+    }
+    Some(b)
+}
+
+gl_entry_points! {
+    fn glMapBuffer(target: GLenum, access: GLenum) -> *mut c_void [std::ptr::null_mut()] => |c| {
+        if c.gl.reject_in_begin() {
+            return std::ptr::null_mut();
+        }
+        let Some(b) = bound(c, target) else { return std::ptr::null_mut() };
+        if !matches!(access, GL_READ_ONLY | GL_WRITE_ONLY | GL_READ_WRITE) {
+            c.gl.record_error(GL_INVALID_ENUM);
+            return std::ptr::null_mut();
+        }
+        if c.mapped.contains_key(&b) {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return std::ptr::null_mut();
+        }
+        let size = c.gl.buffer_info(b).map_or(0, |i| i.0);
+        let data = c.gl.get_buffer_sub_data(target, 0, size as isize).into_boxed_slice();
+        let m = c.mapped.entry(b).or_insert(Mapping { data, access });
+        if m.data.is_empty() {
+            // A zero-size store: a valid, unique, never-dereferenced pointer.
+            return std::ptr::NonNull::<u8>::dangling().as_ptr() as *mut c_void;
+        }
+        m.data.as_mut_ptr() as *mut c_void
+    }
+    fn glUnmapBuffer(target: GLenum) -> GLboolean [0] => |c| {
+        if c.gl.reject_in_begin() {
+            return 0;
+        }
+        let Some(b) = bound(c, target) else { return 0 };
+        let Some(m) = c.mapped.remove(&b) else {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return 0;
+        };
+        if m.access != GL_READ_ONLY && !m.data.is_empty() {
+            c.gl.buffer_sub_data(target, 0, &m.data);
+        }
+        1
+    }
+    fn glGetBufferParameteriv(target: GLenum, pname: GLenum, v: *mut GLint) => |c| {
+        if c.gl.reject_in_begin() {
+            return;
+        }
+        let Some(b) = bound(c, target) else { return };
+        let (size, usage) = c.gl.buffer_info(b).unwrap_or((0, GL_STATIC_DRAW));
+        let m = c.mapped.get(&b);
+        let r = match pname {
+            GL_BUFFER_SIZE => size.min(i32::MAX as usize) as i32,
+            GL_BUFFER_USAGE => usage as i32,
+            GL_BUFFER_ACCESS => m.map_or(GL_READ_WRITE, |m| m.access) as i32,
+            GL_BUFFER_MAPPED => m.is_some() as i32,
+            _ => {
+                c.gl.record_error(GL_INVALID_ENUM);
+                return;
+            }
+        };
+        wr(v, &[r]);
+    }
+    fn glGetBufferPointerv(target: GLenum, pname: GLenum, v: *mut *mut c_void) => |c| {
+        if c.gl.reject_in_begin() {
+            return;
+        }
+        let Some(b) = bound(c, target) else { return };
+        if pname != GL_BUFFER_MAP_POINTER {
+            c.gl.record_error(GL_INVALID_ENUM);
+            return;
+        }
+        let p = match c.mapped.get_mut(&b) {
+            Some(m) if !m.data.is_empty() => m.data.as_mut_ptr() as *mut c_void,
+            Some(_) => std::ptr::NonNull::<u8>::dangling().as_ptr() as *mut c_void,
+            None => std::ptr::null_mut(),
+        };
+        wr(v, &[p]);
+    }
+    fn glGetBufferSubData(target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *mut c_void) => |c| {
+        if c.gl.reject_in_begin() {
+            return;
+        }
+        let Some(b) = bound(c, target) else { return };
+        if c.mapped.contains_key(&b) {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        let bytes = c.gl.get_buffer_sub_data(target, offset, size);
+        if !data.is_null() && !bytes.is_empty() {
+            // SAFETY: GL's contract: `size` bytes at `data` (bytes.len() ==
+            // size when the context accepted the range).
+            std::ptr::copy_nonoverlapping(bytes.as_ptr(), data as *mut u8, bytes.len());
+        }
+    }
+}
+
+/// glDeleteBuffers: mappings of deleted buffers end (not an error).
+pub fn forget_mappings(c: &mut OsContext, names: &[GLuint]) {
+    for b in names {
+        c.mapped.remove(b);
+    }
+}

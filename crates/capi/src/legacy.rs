@@ -1,0 +1,630 @@
+//! GL 1.x entry points whose effect an RGBA, single-sampled, render-mode
+//! OSMesa context either does not see or that shaderbox keeps as state
+//! only. Each keeps the state GL 2.1 defines (so glGet* returns it) and
+//! validates its arguments with the errors the spec gives; what is *not*
+//! applied when drawing is listed in the crate docs:
+//! - color-index calls (glIndex*, glIndexMask, glClearIndex,
+//!   glIndexPointer): legal in RGBA mode, no effect on RGBA rendering
+//!   (GL 2.1 §2.7, §4.2.2) — as the spec says;
+//! - glSampleCoverage: no multisample buffer, so no effect — as the spec
+//!   says;
+//! - selection and feedback: glRenderMode(GL_SELECT / GL_FEEDBACK) raises
+//!   GL_INVALID_OPERATION (not implemented); the name-stack commands are
+//!   ignored outside selection mode and glPassThrough outside feedback
+//!   mode, as the spec says for render mode;
+//! - glAccum: the context has no accumulation buffer: GL_INVALID_OPERATION
+//!   (GL 2.1 §4.2.4);
+//! - glLineStipple / glPolygonStipple, edge flags, glPixelZoom,
+//!   glPixelTransfer*, glPixelMap*: kept and queryable, **not applied**
+//!   (lines and polygons draw unstippled, edge flags do not hide edges,
+//!   pixel transfers are identity);
+//! - compressed textures: no compressed internal format exists
+//!   (GL_NUM_COMPRESSED_TEXTURE_FORMATS is 0), so glCompressedTex* raise
+//!   GL_INVALID_ENUM and glGetCompressedTexImage GL_INVALID_OPERATION;
+//! - glPrioritizeTextures / glAreTexturesResident: every texture is
+//!   resident; priorities are validated, not kept.
+
+use crate::context::OsContext;
+use crate::entry::{gl_entry_points, rd, rd_vec, wr};
+use crate::types::*;
+use gl::enums::*;
+use std::collections::BTreeMap;
+use std::ffi::c_void;
+
+/// GL_MAX_PIXEL_MAP_TABLE.
+pub const MAX_PIXEL_MAP_TABLE: i32 = 256;
+/// GL_MAX_NAME_STACK_DEPTH.
+pub const MAX_NAME_STACK_DEPTH: i32 = 64;
+
+/// The state of this module's entry points.
+pub struct Legacy {
+    pub current_index: f32,
+    pub clear_index: f32,
+    pub index_mask: u32,
+    pub index_pointer: usize,
+    pub index_type: u32,
+    pub index_stride: i32,
+    pub edge_flag: bool,
+    pub edge_flag_pointer: usize,
+    pub edge_flag_stride: i32,
+    pub select_buffer: usize,
+    pub select_size: i32,
+    pub feedback_buffer: usize,
+    pub feedback_size: i32,
+    pub feedback_type: u32,
+    pub line_stipple: (i32, u16),
+    pub polygon_stipple: [u8; 128],
+    pub sample_coverage: (f32, bool),
+    pub pixel_zoom: (f32, f32),
+    pub pixel_transfer: BTreeMap<u32, f32>,
+    pub pixel_maps: BTreeMap<u32, Vec<f32>>,
+    pub accum_clear: [f32; 4],
+}
+
+impl Default for Legacy {
+    fn default() -> Legacy {
+        let mut pixel_transfer = BTreeMap::new();
+        for (p, v) in [
+            (GL_MAP_COLOR, 0.0),
+            (GL_MAP_STENCIL, 0.0),
+            (GL_INDEX_SHIFT, 0.0),
+            (GL_INDEX_OFFSET, 0.0),
+            (GL_RED_SCALE, 1.0),
+            (GL_GREEN_SCALE, 1.0),
+            (GL_BLUE_SCALE, 1.0),
+            (GL_ALPHA_SCALE, 1.0),
+            (GL_DEPTH_SCALE, 1.0),
+            (GL_RED_BIAS, 0.0),
+            (GL_GREEN_BIAS, 0.0),
+            (GL_BLUE_BIAS, 0.0),
+            (GL_ALPHA_BIAS, 0.0),
+            (GL_DEPTH_BIAS, 0.0),
+        ] {
+            pixel_transfer.insert(p, v);
+        }
+        let pixel_maps = PIXEL_MAPS.iter().map(|&m| (m, vec![0.0])).collect();
+        Legacy {
+            current_index: 1.0,
+            clear_index: 0.0,
+            index_mask: u32::MAX,
+            index_pointer: 0,
+            index_type: GL_FLOAT,
+            index_stride: 0,
+            edge_flag: true,
+            edge_flag_pointer: 0,
+            edge_flag_stride: 0,
+            select_buffer: 0,
+            select_size: 0,
+            feedback_buffer: 0,
+            feedback_size: 0,
+            feedback_type: GL_2D,
+            line_stipple: (1, 0xffff),
+            polygon_stipple: [0xff; 128],
+            sample_coverage: (1.0, false),
+            pixel_zoom: (1.0, 1.0),
+            pixel_transfer,
+            pixel_maps,
+            accum_clear: [0.0; 4],
+        }
+    }
+}
+
+/// The ten pixel maps and, for each, its size query.
+const PIXEL_MAPS: [u32; 10] = [
+    GL_PIXEL_MAP_I_TO_I,
+    GL_PIXEL_MAP_S_TO_S,
+    GL_PIXEL_MAP_I_TO_R,
+    GL_PIXEL_MAP_I_TO_G,
+    GL_PIXEL_MAP_I_TO_B,
+    GL_PIXEL_MAP_I_TO_A,
+    GL_PIXEL_MAP_R_TO_R,
+    GL_PIXEL_MAP_G_TO_G,
+    GL_PIXEL_MAP_B_TO_B,
+    GL_PIXEL_MAP_A_TO_A,
+];
+
+/// glGet* values of this module's state (None: not one of them).
+pub fn get(c: &OsContext, pname: u32) -> Option<Vec<f64>> {
+    let l = &c.legacy;
+    let b = |x: bool| x as i32 as f64;
+    Some(match pname {
+        GL_CURRENT_INDEX => vec![l.current_index as f64],
+        GL_INDEX_CLEAR_VALUE => vec![l.clear_index as f64],
+        GL_INDEX_WRITEMASK => vec![l.index_mask as f64],
+        GL_INDEX_ARRAY_TYPE => vec![l.index_type as f64],
+        GL_INDEX_ARRAY_STRIDE => vec![l.index_stride as f64],
+        GL_EDGE_FLAG => vec![b(l.edge_flag)],
+        GL_EDGE_FLAG_ARRAY_STRIDE => vec![l.edge_flag_stride as f64],
+        GL_RENDER_MODE => vec![GL_RENDER as f64],
+        GL_SELECTION_BUFFER_SIZE => vec![l.select_size as f64],
+        GL_FEEDBACK_BUFFER_SIZE => vec![l.feedback_size as f64],
+        GL_FEEDBACK_BUFFER_TYPE => vec![l.feedback_type as f64],
+        GL_NAME_STACK_DEPTH => vec![0.0],
+        GL_MAX_NAME_STACK_DEPTH => vec![MAX_NAME_STACK_DEPTH as f64],
+        GL_LINE_STIPPLE_PATTERN => vec![l.line_stipple.1 as f64],
+        GL_LINE_STIPPLE_REPEAT => vec![l.line_stipple.0 as f64],
+        GL_SAMPLE_COVERAGE_VALUE => vec![l.sample_coverage.0 as f64],
+        GL_SAMPLE_COVERAGE_INVERT => vec![b(l.sample_coverage.1)],
+        GL_ZOOM_X => vec![l.pixel_zoom.0 as f64],
+        GL_ZOOM_Y => vec![l.pixel_zoom.1 as f64],
+        GL_ACCUM_CLEAR_VALUE => l.accum_clear.iter().map(|&x| x as f64).collect(),
+        GL_ACCUM_RED_BITS | GL_ACCUM_GREEN_BITS | GL_ACCUM_BLUE_BITS | GL_ACCUM_ALPHA_BITS => {
+            vec![0.0]
+        }
+        GL_INDEX_BITS => vec![0.0],
+        GL_INDEX_MODE => vec![0.0],
+        GL_RGBA_MODE => vec![1.0],
+        GL_MAX_PIXEL_MAP_TABLE => vec![MAX_PIXEL_MAP_TABLE as f64],
+        p if PIXEL_MAPS
+            .iter()
+            .any(|&m| m - GL_PIXEL_MAP_I_TO_I + GL_PIXEL_MAP_I_TO_I_SIZE == p) =>
+        {
+            let m = p - GL_PIXEL_MAP_I_TO_I_SIZE + GL_PIXEL_MAP_I_TO_I;
+            vec![l.pixel_maps.get(&m).map_or(1, |v| v.len()) as f64]
+        }
+        p => vec![*l.pixel_transfer.get(&p)? as f64],
+    })
+}
+
+/// Sets the current colour index (no effect on RGBA rendering).
+fn index(c: &mut OsContext, v: f32) {
+    c.legacy.current_index = v;
+}
+
+/// Whether the polygon-stipple pattern may be read/written at `p`: with a
+/// pixel buffer bound the pointer is an offset, not memory.
+fn stipple_through_buffer(c: &mut OsContext, pack: bool) -> bool {
+    let t = if pack {
+        GL_PIXEL_PACK_BUFFER
+    } else {
+        GL_PIXEL_UNPACK_BUFFER
+    };
+    c.gl.bound_buffer(t) != 0
+}
+
+/// glPixelMap*: validation and storage of `vals` for `map`.
+fn pixel_map(c: &mut OsContext, map: GLenum, size: GLsizei, vals: Vec<f32>) {
+    if c.gl.reject_in_begin() {
+        return;
+    }
+    if !PIXEL_MAPS.contains(&map) {
+        c.gl.record_error(GL_INVALID_ENUM);
+        return;
+    }
+    let indexed = matches!(
+        map,
+        GL_PIXEL_MAP_I_TO_I
+            | GL_PIXEL_MAP_S_TO_S
+            | GL_PIXEL_MAP_I_TO_R
+            | GL_PIXEL_MAP_I_TO_G
+            | GL_PIXEL_MAP_I_TO_B
+            | GL_PIXEL_MAP_I_TO_A
+    );
+    if !(1..=MAX_PIXEL_MAP_TABLE).contains(&size) || (indexed && (size & (size - 1)) != 0) {
+        c.gl.record_error(GL_INVALID_VALUE);
+        return;
+    }
+    if vals.len() == size as usize {
+        c.legacy.pixel_maps.insert(map, vals);
+    }
+}
+
+/// glGetPixelMap*: the stored map (GL_INVALID_ENUM for another name).
+fn get_pixel_map(c: &mut OsContext, map: GLenum) -> Option<Vec<f32>> {
+    if c.gl.reject_in_begin() {
+        return None;
+    }
+    match c.legacy.pixel_maps.get(&map) {
+        Some(v) => Some(v.clone()),
+        None => {
+            c.gl.record_error(GL_INVALID_ENUM);
+            None
+        }
+    }
+}
+
+/// Texture names for glAreTexturesResident / glPrioritizeTextures: n < 0
+/// or a name that is not a texture is GL_INVALID_VALUE.
+fn texture_names(c: &mut OsContext, n: GLsizei, names: *const GLuint) -> Option<Vec<u32>> {
+    if c.gl.reject_in_begin() {
+        return None;
+    }
+    if n < 0 {
+        c.gl.record_error(GL_INVALID_VALUE);
+        return None;
+    }
+    // SAFETY: GL's contract: n names at `names` (or null).
+    let v = unsafe { rd_vec(names, n as i64) };
+    if v.iter().any(|&t| !c.gl.is_texture(t)) {
+        c.gl.record_error(GL_INVALID_VALUE);
+        return None;
+    }
+    Some(v)
+}
+
+/// A compressed-texture entry point: every internal format given is not
+/// a compressed one this context supports.
+fn compressed(c: &mut OsContext) {
+    if !c.gl.reject_in_begin() {
+        c.gl.record_error(GL_INVALID_ENUM);
+    }
+}
+
+gl_entry_points! {
+    // ---- colour index (RGBA contexts keep the values only) ----
+    [list] fn glIndexf(v: GLfloat) => |c| { index(c, v) }
+    [list] fn glIndexd(v: GLdouble) => |c| { index(c, v as f32) }
+    [list] fn glIndexi(v: GLint) => |c| { index(c, v as f32) }
+    [list] fn glIndexs(v: GLshort) => |c| { index(c, v as f32) }
+    [list] fn glIndexub(v: GLubyte) => |c| { index(c, v as f32) }
+    fn glIndexfv(v: *const GLfloat) => |c| {
+        if let Some([x]) = rd::<1, f32>(v) {
+            if c.record(move || unsafe { glIndexf(x) }) {
+                return;
+            }
+            index(c, x as f32)
+        }
+    }
+    fn glIndexdv(v: *const GLdouble) => |c| {
+        if let Some([x]) = rd::<1, f64>(v) {
+            if c.record(move || unsafe { glIndexd(x) }) {
+                return;
+            }
+            index(c, x as f32)
+        }
+    }
+    fn glIndexiv(v: *const GLint) => |c| {
+        if let Some([x]) = rd::<1, i32>(v) {
+            if c.record(move || unsafe { glIndexi(x) }) {
+                return;
+            }
+            index(c, x as f32)
+        }
+    }
+    fn glIndexsv(v: *const GLshort) => |c| {
+        if let Some([x]) = rd::<1, i16>(v) {
+            if c.record(move || unsafe { glIndexs(x) }) {
+                return;
+            }
+            index(c, x as f32)
+        }
+    }
+    fn glIndexubv(v: *const GLubyte) => |c| {
+        if let Some([x]) = rd::<1, u8>(v) {
+            if c.record(move || unsafe { glIndexub(x) }) {
+                return;
+            }
+            index(c, x as f32)
+        }
+    }
+    [list] fn glIndexMask(mask: GLuint) => |c| {
+        if !c.gl.reject_in_begin() { c.legacy.index_mask = mask }
+    }
+    [list] fn glClearIndex(v: GLfloat) => |c| {
+        if !c.gl.reject_in_begin() { c.legacy.clear_index = v }
+    }
+    fn glIndexPointer(ty: GLenum, stride: GLsizei, p: *const c_void) => |c| {
+        if !matches!(ty, GL_UNSIGNED_BYTE | GL_SHORT | GL_INT | GL_FLOAT | GL_DOUBLE) {
+            c.gl.record_error(GL_INVALID_ENUM);
+        } else if stride < 0 {
+            c.gl.record_error(GL_INVALID_VALUE);
+        } else {
+            c.legacy.index_type = ty;
+            c.legacy.index_stride = stride;
+            c.legacy.index_pointer = p as usize;
+        }
+    }
+
+    // ---- edge flags (kept, not applied) ----
+    [list] fn glEdgeFlag(flag: GLboolean) => |c| { c.legacy.edge_flag = flag != 0 }
+    fn glEdgeFlagv(v: *const GLboolean) => |c| {
+        if let Some([x]) = rd::<1, u8>(v) {
+            if c.record(move || unsafe { glEdgeFlag(x) }) {
+                return;
+            }
+            c.legacy.edge_flag = x != 0
+        }
+    }
+    fn glEdgeFlagPointer(stride: GLsizei, p: *const c_void) => |c| {
+        if stride < 0 {
+            c.gl.record_error(GL_INVALID_VALUE);
+        } else {
+            c.legacy.edge_flag_stride = stride;
+            c.legacy.edge_flag_pointer = p as usize;
+        }
+    }
+
+    // ---- selection and feedback (GL_RENDER only) ----
+    fn glRenderMode(mode: GLenum) -> GLint [0] => |c| {
+        if c.gl.reject_in_begin() {
+            return 0;
+        }
+        match mode {
+            GL_RENDER => 0,
+            GL_SELECT | GL_FEEDBACK => {
+                // Not implemented: refused rather than drawing as if in
+                // GL_RENDER and returning no hits.
+                c.gl.record_error(GL_INVALID_OPERATION);
+                0
+            }
+            _ => {
+                c.gl.record_error(GL_INVALID_ENUM);
+                0
+            }
+        }
+    }
+    fn glSelectBuffer(size: GLsizei, buffer: *mut GLuint) => |c| {
+        if c.gl.reject_in_begin() {
+            return;
+        }
+        if size < 0 {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        c.legacy.select_size = size;
+        c.legacy.select_buffer = buffer as usize;
+    }
+    fn glFeedbackBuffer(size: GLsizei, ty: GLenum, buffer: *mut GLfloat) => |c| {
+        if c.gl.reject_in_begin() {
+            return;
+        }
+        if !matches!(ty, GL_2D | GL_3D | GL_3D_COLOR | GL_3D_COLOR_TEXTURE | GL_4D_COLOR_TEXTURE) {
+            c.gl.record_error(GL_INVALID_ENUM);
+            return;
+        }
+        if size < 0 {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        c.legacy.feedback_size = size;
+        c.legacy.feedback_type = ty;
+        c.legacy.feedback_buffer = buffer as usize;
+    }
+    // Ignored outside selection mode (GL 2.1 §5.2); the context is always
+    // in GL_RENDER mode.
+    [list] fn glInitNames() => |c| { c.gl.reject_in_begin(); }
+    [list] fn glLoadName(name: GLuint) => |c| { let _ = name; c.gl.reject_in_begin(); }
+    [list] fn glPushName(name: GLuint) => |c| { let _ = name; c.gl.reject_in_begin(); }
+    [list] fn glPopName() => |c| { c.gl.reject_in_begin(); }
+    // Ignored outside feedback mode (GL 2.1 §5.3).
+    [list] fn glPassThrough(token: GLfloat) => |c| { let _ = token; c.gl.reject_in_begin(); }
+
+    // ---- accumulation buffer (absent) ----
+    [list] fn glAccum(op: GLenum, value: GLfloat) => |c| {
+        let _ = value;
+        if c.gl.reject_in_begin() {
+            return;
+        }
+        if !matches!(op, GL_ACCUM | GL_LOAD | GL_RETURN | GL_MULT | GL_ADD) {
+            c.gl.record_error(GL_INVALID_ENUM);
+        } else {
+            c.gl.record_error(GL_INVALID_OPERATION);
+        }
+    }
+    [list] fn glClearAccum(r: GLfloat, g: GLfloat, bl: GLfloat, a: GLfloat) => |c| {
+        if !c.gl.reject_in_begin() {
+            c.legacy.accum_clear = [r, g, bl, a].map(|x| x.clamp(-1.0, 1.0));
+        }
+    }
+
+    // ---- stipples (kept, not applied) ----
+    [list] fn glLineStipple(factor: GLint, pattern: GLushort) => |c| {
+        if !c.gl.reject_in_begin() {
+            c.legacy.line_stipple = (factor.clamp(1, 256), pattern);
+        }
+    }
+    fn glPolygonStipple(mask: *const GLubyte) => |c| {
+        if c.gl.reject_in_begin() {
+            return;
+        }
+        if stipple_through_buffer(c, false) {
+            let Ok(bytes) = crate::buffers::read_pixel_buffer(c, GL_PIXEL_UNPACK_BUFFER, mask as usize, 128) else {
+                return;
+            };
+            let record = bytes.clone();
+            if c.record(move || with_stipple(&record)) {
+                return;
+            }
+            c.legacy.polygon_stipple.copy_from_slice(&bytes);
+            return;
+        }
+        if let Some(m) = rd::<128, u8>(mask) {
+            if c.record(move || with_stipple(&m)) {
+                return;
+            }
+            c.legacy.polygon_stipple = m;
+        }
+    }
+    fn glGetPolygonStipple(mask: *mut GLubyte) => |c| {
+        if c.gl.reject_in_begin() {
+            return;
+        }
+        let m = c.legacy.polygon_stipple;
+        if stipple_through_buffer(c, true) {
+            crate::buffers::write_pixel_buffer(c, mask as usize, &m);
+            return;
+        }
+        wr(mask, &m);
+    }
+
+    // ---- multisample (none: no effect) ----
+    [list] fn glSampleCoverage(value: GLclampf, invert: GLboolean) => |c| {
+        if !c.gl.reject_in_begin() {
+            c.legacy.sample_coverage = (value.clamp(0.0, 1.0), invert != 0);
+        }
+    }
+
+    // ---- pixel transfer state (kept, not applied) ----
+    fn glPixelStoref(pname: GLenum, param: GLfloat) => |c| {
+        // GL 2.1 §3.6.1: rounded to the nearest integer (booleans: != 0).
+        let v = if param.is_nan() { 0 } else { (param as f64 + 0.5).floor().clamp(i32::MIN as f64, i32::MAX as f64) as i32 };
+        let v = if matches!(pname, GL_PACK_SWAP_BYTES | GL_PACK_LSB_FIRST | GL_UNPACK_SWAP_BYTES | GL_UNPACK_LSB_FIRST) {
+            (param != 0.0) as i32
+        } else {
+            v
+        };
+        c.gl.pixel_storei(pname, v)
+    }
+    [list] fn glPixelZoom(x: GLfloat, y: GLfloat) => |c| {
+        if !c.gl.reject_in_begin() { c.legacy.pixel_zoom = (x, y) }
+    }
+    [list] fn glPixelTransferf(pname: GLenum, v: GLfloat) => |c| { pixel_transfer(c, pname, v) }
+    [list] fn glPixelTransferi(pname: GLenum, v: GLint) => |c| { pixel_transfer(c, pname, v as f32) }
+    fn glPixelMapfv(map: GLenum, size: GLsizei, v: *const GLfloat) => |c| {
+        let vals = rd_vec(v, size.clamp(0, MAX_PIXEL_MAP_TABLE) as i64);
+        record_map(c, map, size, vals);
+    }
+    fn glPixelMapuiv(map: GLenum, size: GLsizei, v: *const GLuint) => |c| {
+        let vals = rd_vec(v, size.clamp(0, MAX_PIXEL_MAP_TABLE) as i64);
+        let color = !matches!(map, GL_PIXEL_MAP_I_TO_I | GL_PIXEL_MAP_S_TO_S);
+        let f: Vec<f32> = vals.iter().map(|&x| if color { (x as f64 / u32::MAX as f64) as f32 } else { x as f32 }).collect();
+        record_map(c, map, size, f);
+    }
+    fn glPixelMapusv(map: GLenum, size: GLsizei, v: *const GLushort) => |c| {
+        let vals = rd_vec(v, size.clamp(0, MAX_PIXEL_MAP_TABLE) as i64);
+        let color = !matches!(map, GL_PIXEL_MAP_I_TO_I | GL_PIXEL_MAP_S_TO_S);
+        let f: Vec<f32> = vals.iter().map(|&x| if color { x as f32 / 65535.0 } else { x as f32 }).collect();
+        record_map(c, map, size, f);
+    }
+    fn glGetPixelMapfv(map: GLenum, v: *mut GLfloat) => |c| {
+        if let Some(m) = get_pixel_map(c, map) { wr(v, &m) }
+    }
+    fn glGetPixelMapuiv(map: GLenum, v: *mut GLuint) => |c| {
+        let color = !matches!(map, GL_PIXEL_MAP_I_TO_I | GL_PIXEL_MAP_S_TO_S);
+        if let Some(m) = get_pixel_map(c, map) {
+            let r: Vec<u32> = m.iter().map(|&x| if color { (x.clamp(0.0, 1.0) as f64 * u32::MAX as f64 + 0.5) as u32 } else { x.max(0.0) as u32 }).collect();
+            wr(v, &r)
+        }
+    }
+    fn glGetPixelMapusv(map: GLenum, v: *mut GLushort) => |c| {
+        let color = !matches!(map, GL_PIXEL_MAP_I_TO_I | GL_PIXEL_MAP_S_TO_S);
+        if let Some(m) = get_pixel_map(c, map) {
+            let r: Vec<u16> = m.iter().map(|&x| if color { (x.clamp(0.0, 1.0) * 65535.0 + 0.5) as u16 } else { x.clamp(0.0, 65535.0) as u16 }).collect();
+            wr(v, &r)
+        }
+    }
+
+    // ---- texture residency ----
+    fn glAreTexturesResident(n: GLsizei, names: *const GLuint, residences: *mut GLboolean) -> GLboolean [0] => |c| {
+        let _ = residences;
+        // All resident: GL_TRUE, `residences` untouched (GL 2.1 §3.8.12).
+        texture_names(c, n, names).is_some() as GLboolean
+    }
+    fn glPrioritizeTextures(n: GLsizei, names: *const GLuint, priorities: *const GLclampf) => |c| {
+        let _ = priorities;
+        if c.gl.reject_in_begin() {
+            return;
+        }
+        if n < 0 {
+            c.gl.record_error(GL_INVALID_VALUE);
+        }
+        // Names that are not textures are silently ignored (§3.8.12).
+        let _ = names;
+    }
+
+    // ---- compressed textures (no compressed format exists) ----
+    fn glCompressedTexImage1D(target: GLenum, level: GLint, internal: GLenum, w: GLsizei, border: GLint, size: GLsizei, data: *const c_void) => |c| {
+        let _ = (target, level, internal, w, border, size, data);
+        compressed(c)
+    }
+    fn glCompressedTexImage2D(target: GLenum, level: GLint, internal: GLenum, w: GLsizei, h: GLsizei, border: GLint, size: GLsizei, data: *const c_void) => |c| {
+        let _ = (target, level, internal, w, h, border, size, data);
+        compressed(c)
+    }
+    fn glCompressedTexImage3D(target: GLenum, level: GLint, internal: GLenum, w: GLsizei, h: GLsizei, d: GLsizei, border: GLint, size: GLsizei, data: *const c_void) => |c| {
+        let _ = (target, level, internal, w, h, d, border, size, data);
+        compressed(c)
+    }
+    fn glCompressedTexSubImage1D(target: GLenum, level: GLint, x: GLint, w: GLsizei, format: GLenum, size: GLsizei, data: *const c_void) => |c| {
+        let _ = (target, level, x, w, format, size, data);
+        compressed(c)
+    }
+    fn glCompressedTexSubImage2D(target: GLenum, level: GLint, x: GLint, y: GLint, w: GLsizei, h: GLsizei, format: GLenum, size: GLsizei, data: *const c_void) => |c| {
+        let _ = (target, level, x, y, w, h, format, size, data);
+        compressed(c)
+    }
+    fn glCompressedTexSubImage3D(target: GLenum, level: GLint, x: GLint, y: GLint, z: GLint, w: GLsizei, h: GLsizei, d: GLsizei, format: GLenum, size: GLsizei, data: *const c_void) => |c| {
+        let _ = (target, level, x, y, z, w, h, d, format, size, data);
+        compressed(c)
+    }
+    fn glGetCompressedTexImage(target: GLenum, level: GLint, data: *mut c_void) => |c| {
+        let _ = data;
+        // Validates target and level, then: the image is not compressed.
+        let before = c.gl.get_error();
+        let _ = c.gl.get_tex_level_parameteriv(target, level, GL_TEXTURE_WIDTH);
+        let e = c.gl.get_error();
+        c.gl.record_error(if before != GL_NO_ERROR { before } else { e });
+        if e == GL_NO_ERROR && target != GL_TEXTURE_CUBE_MAP {
+            c.gl.record_error(GL_INVALID_OPERATION);
+        }
+    }
+
+    // ---- rectangles from vectors ----
+    fn glRectfv(v1: *const GLfloat, v2: *const GLfloat) => |c| {
+        if let (Some([a, b2]), Some([x, y])) = (rd::<2, f32>(v1), rd::<2, f32>(v2)) {
+            rect(c, a, b2, x, y)
+        }
+    }
+    fn glRectdv(v1: *const GLdouble, v2: *const GLdouble) => |c| {
+        if let (Some([a, b2]), Some([x, y])) = (rd::<2, f64>(v1), rd::<2, f64>(v2)) {
+            rect(c, a as f32, b2 as f32, x as f32, y as f32)
+        }
+    }
+    fn glRectiv(v1: *const GLint, v2: *const GLint) => |c| {
+        if let (Some([a, b2]), Some([x, y])) = (rd::<2, i32>(v1), rd::<2, i32>(v2)) {
+            rect(c, a as f32, b2 as f32, x as f32, y as f32)
+        }
+    }
+    fn glRects(x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort) => |c| {
+        rect(c, x1 as f32, y1 as f32, x2 as f32, y2 as f32)
+    }
+    fn glRectsv(v1: *const GLshort, v2: *const GLshort) => |c| {
+        if let (Some([a, b2]), Some([x, y])) = (rd::<2, i16>(v1), rd::<2, i16>(v2)) {
+            rect(c, a as f32, b2 as f32, x as f32, y as f32)
+        }
+    }
+}
+
+/// Replays a recorded glPolygonStipple.
+fn with_stipple(m: &[u8]) {
+    crate::context::with_ctx((), |c| {
+        if !c.gl.reject_in_begin() && m.len() == 128 {
+            c.legacy.polygon_stipple.copy_from_slice(m);
+        }
+    })
+}
+
+/// glRect* (recorded as glRectf while compiling a list).
+fn rect(c: &mut OsContext, x1: f32, y1: f32, x2: f32, y2: f32) {
+    if c.record(move || unsafe { crate::entry::glRectf(x1, y1, x2, y2) }) {
+        return;
+    }
+    c.gl.rectf(x1, y1, x2, y2);
+    c.dirty = true;
+}
+
+/// glPixelTransfer{f,i}.
+fn pixel_transfer(c: &mut OsContext, pname: GLenum, v: f32) {
+    if c.gl.reject_in_begin() {
+        return;
+    }
+    match c.legacy.pixel_transfer.get_mut(&pname) {
+        Some(x) => {
+            *x = if matches!(pname, GL_MAP_COLOR | GL_MAP_STENCIL) {
+                (v != 0.0) as i32 as f32
+            } else {
+                v
+            }
+        }
+        None => c.gl.record_error(GL_INVALID_ENUM),
+    }
+}
+
+/// glPixelMap*: recorded (values copied) while compiling, else applied.
+fn record_map(c: &mut OsContext, map: GLenum, size: GLsizei, vals: Vec<f32>) {
+    let rec = vals.clone();
+    if c.record(move || crate::context::with_ctx((), |c| pixel_map(c, map, size, rec.clone()))) {
+        return;
+    }
+    pixel_map(c, map, size, vals);
+}

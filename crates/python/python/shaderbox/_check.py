@@ -1,0 +1,43 @@
+"""``shaderbox.check``: compile GLSL and get its diagnostics."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Optional, Union
+
+from . import _shaderbox
+from ._errors import Diagnostics, _diagnostics
+
+_EXTENSIONS = {".vert": "vertex", ".vs": "vertex", ".frag": "fragment", ".fs": "fragment"}
+
+
+def check(
+    source: Union[str, "os.PathLike[str]"],
+    stage: Optional[str] = None,
+    version: Optional[int] = None,
+) -> Diagnostics:
+    """Compiles ``source`` (GLSL text, or a ``pathlib.Path`` to a shader
+    file) as a ``"vertex"`` or ``"fragment"`` shader and returns its
+    :class:`Diagnostics` (empty and ``ok`` when it compiles cleanly).
+
+    ``stage`` is required for text; for a path it defaults from the
+    extension (``.vert``/``.vs``, ``.frag``/``.fs``). ``version`` (110 or
+    120) is the version of a shader without ``#version`` (1.10 by
+    default, as the spec says); a ``#version`` line always wins."""
+    name = "<shader>"
+    if isinstance(source, os.PathLike):
+        path = Path(source)
+        name = str(path)
+        if stage is None:
+            stage = _EXTENSIONS.get(path.suffix.lower())
+            if stage is None:
+                raise ValueError(f"{name}: cannot tell the stage from the extension; pass stage='vertex' or 'fragment'")
+        source = path.read_bytes().decode("utf-8", errors="replace")
+    elif not isinstance(source, str):
+        raise TypeError(f"source must be GLSL text (str) or a path, got {type(source).__name__}")
+    if stage is None:
+        raise ValueError("check() needs stage='vertex' or stage='fragment' for source text")
+    if version is not None and version not in (110, 120):
+        raise ValueError(f"version {version!r} is not 110 or 120")
+    return _diagnostics(_shaderbox.compile_report(source, stage, version, name))

@@ -1,0 +1,99 @@
+"""``shaderbox.render_molecule``: ``shaderbox render`` from Python."""
+
+from __future__ import annotations
+
+import os
+import re
+from typing import Any, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _shaderbox
+from ._image import Image
+
+_NAMED = {"black": (0.0, 0.0, 0.0), "white": (1.0, 1.0, 1.0), "gray": (0.5, 0.5, 0.5), "grey": (0.5, 0.5, 0.5)}
+
+
+def _background(bg: Any) -> Optional[Tuple[float, float, float]]:
+    if isinstance(bg, str):
+        t = bg.strip().lower()
+        if t == "transparent":
+            return None
+        if t in _NAMED:
+            return _NAMED[t]
+        m = re.fullmatch(r"#?([0-9a-f]{6})", t)
+        if not m:
+            raise ValueError(f"background {bg!r} is not black, white, gray, #RRGGBB, transparent or an RGB tuple")
+        h = m.group(1)
+        return tuple(int(h[i : i + 2], 16) / 255.0 for i in (0, 2, 4))  # type: ignore[return-value]
+    a = np.asarray(bg, dtype=np.float64).reshape(-1)
+    if a.size != 3:
+        raise ValueError(f"background {bg!r} is not an (r, g, b) tuple in 0-1")
+    return (float(a[0]), float(a[1]), float(a[2]))
+
+
+def _size(size: Any) -> Tuple[int, int]:
+    if isinstance(size, str):
+        m = re.fullmatch(r"\s*(\d+)\s*[xX]\s*(\d+)\s*", size)
+        if not m:
+            raise ValueError(f"size {size!r} is not WIDTHxHEIGHT (e.g. '800x600')")
+        return int(m.group(1)), int(m.group(2))
+    w, h = size
+    if not all(isinstance(v, (int, np.integer)) and not isinstance(v, bool) for v in (w, h)) or w < 1 or h < 1:
+        raise ValueError(f"size {size!r} is not (width, height) in pixels")
+    return int(w), int(h)
+
+
+def _lights(lights: Any) -> list:
+    if isinstance(lights, str):
+        if lights.strip().lower() == "none":
+            return []
+        parts = [p.strip() for p in lights.split(",")]
+        if not all(p.isdigit() for p in parts):
+            raise ValueError(f"lights {lights!r} is not a list of light numbers 0-7 (or 'none')")
+        lights = [int(p) for p in parts]
+    out = []
+    for light in lights:
+        if not isinstance(light, (int, np.integer)) or not 0 <= int(light) <= 7:
+            raise ValueError(f"light {light!r} is not a light number 0-7")
+        out.append(int(light))
+    return out
+
+
+def render_molecule(
+    path: Union[None, str, "os.PathLike[str]"] = None,
+    *,
+    size: Union[str, Tuple[int, int]] = (800, 800),
+    projection: str = "ortho",
+    fog: str = "none",
+    lights: Union[str, Sequence[int]] = (0, 1),
+    rotate: Sequence[float] = (0.0, 0.0, 0.0),
+    supersample: int = 1,
+    background: Any = "black",
+    effect: str = "plain",
+    style: str = "spacefill",
+) -> Image:
+    """Draws a molecule as ``shaderbox render`` does and returns the :class:`Image`.
+
+    ``path`` is a PDB file (default: crambin, PDB 1CRN, built in). The
+    options are the command's: ``size`` (``(w, h)`` or ``"800x600"``),
+    ``projection`` (``"ortho"``, ``"perspective"``), ``fog`` (``"none"``,
+    ``"linear"``, ``"exp"``, ``"exp2"``), ``lights`` (light numbers 0-7, or
+    ``"none"``), ``rotate`` (degrees about X, then Y, then Z),
+    ``supersample`` (1-8), ``background`` (``"black"``, ``"white"``,
+    ``"gray"``, ``"#RRGGBB"``, an RGB tuple in 0-1, or ``"transparent"``)
+    ``effect`` (``"plain"``, ``"outline"``, ``"x"``, ``"x-red"``,
+    ``"transparent"``) and ``style`` (``"spacefill"``, ``"ballstick"``).
+    (The command's ``--frames`` turntable is a loop over ``rotate``.) Bad options raise ``ValueError``, an unreadable
+    file ``OSError``, a malformed one ``RuntimeError`` naming the line."""
+    w, h = _size(size)
+    rot = np.asarray(rotate, dtype=np.float64).reshape(-1)
+    if rot.size != 3:
+        raise ValueError(f"rotate {rotate!r} is three angles (x, y, z) in degrees")
+    if not isinstance(supersample, (int, np.integer)) or isinstance(supersample, bool):
+        raise TypeError(f"supersample must be an int 1-8, got {supersample!r}")
+    p = None if path is None else os.fspath(path)
+    width, height, data, has_alpha = _shaderbox.render_molecule(
+        p, w, h, projection, fog, _lights(lights), [float(v) for v in rot], int(supersample), _background(background), effect, style
+    )
+    return Image(np.frombuffer(data, dtype=np.uint8).reshape(height, width, 4), has_alpha=has_alpha)

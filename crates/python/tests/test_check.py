@@ -1,0 +1,63 @@
+"""shaderbox.check: diagnostics without a context."""
+
+from pathlib import Path
+
+import pytest
+
+import shaderbox
+
+ROOT = Path(__file__).resolve().parents[3]
+
+
+def test_clean_shader():
+    d = shaderbox.check("void main() { gl_FragColor = vec4(1.0); }", stage="fragment")
+    assert d.ok and list(d) == [] and d.text == ""
+
+
+def test_error_is_located():
+    d = shaderbox.check("void main() {\n  gl_Position = vec4(1.0) + vec3(1.0);\n}\n", stage="vertex")
+    assert not d.ok
+    e = d.errors[0]
+    assert (e.stage, e.line, e.severity) == ("vertex", 2, "error")
+    assert e.column is not None and e.code.startswith("E")
+    assert "vec4" in e.message and "vec3" in e.message
+    assert "gl_Position = vec4(1.0) + vec3(1.0);" in d.text
+    assert d.info_log.startswith("0:2(")
+    assert str(e).startswith("0:2(")
+    assert str(d) == d.text
+
+
+def test_version_default():
+    src = "void main() { float a[2] = float[2](1.0, 2.0); gl_FragColor = vec4(a[1]); }"
+    assert not shaderbox.check(src, stage="fragment").ok
+    assert shaderbox.check(src, stage="fragment", version=120).ok
+    # A #version line wins over the default.
+    assert not shaderbox.check("#version 110\n" + src, stage="fragment", version=120).ok
+
+
+def test_paths_and_stage_from_extension():
+    d = shaderbox.check(ROOT / "shaders" / "sphere.frag")
+    assert d.ok, d.text
+    mistakes = shaderbox.check(ROOT / "examples" / "shaders" / "mistakes.frag")
+    assert not mistakes.ok and len(mistakes.errors) >= 2
+    assert "mistakes.frag" in mistakes.text
+
+
+def test_bad_arguments():
+    with pytest.raises(ValueError, match="needs stage"):
+        shaderbox.check("void main() {}")
+    with pytest.raises(ValueError, match="stage .geometry. is not 'vertex' or 'fragment'"):
+        shaderbox.check("void main() {}", stage="geometry")
+    with pytest.raises(ValueError, match="version 130"):
+        shaderbox.check("void main() {}", stage="vertex", version=130)
+    with pytest.raises(TypeError, match="GLSL text"):
+        shaderbox.check(42, stage="vertex")
+    with pytest.raises(ValueError, match="cannot tell the stage"):
+        shaderbox.check(ROOT / "README.md")
+
+
+def test_hostile_input_does_not_crash():
+    # Deep nesting, a runaway macro and garbage bytes: diagnostics, never a crash.
+    for src in ["(" * 10000, "#define A A A\nA", "\x00\xff\ufffd void main(", "#if\n#endif"]:
+        d = shaderbox.check(src, stage="fragment")
+        assert not d.ok

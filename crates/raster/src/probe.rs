@@ -1,0 +1,715 @@
+//! The debugger's pixel probe: what one draw did at one pixel.
+//!
+//! [`probe_draw`] replays a draw on a copy of the framebuffer with the
+//! scissor box narrowed to the probed pixel (and the `debugPrintfEXT`
+//! rectangle, if any), on one thread. Narrowing the scissor does not change
+//! any value the pixel sees: quads are still whole 2×2 quads (helper lanes
+//! included, so derivatives are those of the real draw), interpolation is
+//! per pixel, and per-fragment operations run in primitive order on the
+//! same stored values. The fragment stage reports, for each fragment that
+//! reaches the pixel: its primitive, its inputs, every statement and store
+//! of its shader invocation ([`exec::Kernel::run_traced`]), `discard`, its
+//! outputs and each per-fragment operation's decision with the values it
+//! compared. Normal draws carry no probe and pay one `Option` check per
+//! batch of 16 lanes.
+
+use crate::ex::{self, Batch, ExecError, PrintSink, Trace};
+use crate::fragment_ops::{self, Fragment};
+use crate::framebuffer::{depth_to_fixed, ColorBuffer, Framebuffer};
+use crate::linkage::VsLayout;
+use crate::pipeline::{draw_probed, Assembled};
+use crate::rasterize::Shape;
+use crate::shade::{FragmentStage, Prim};
+use crate::state::{PipelineState, Rect};
+use crate::{DrawError, Mode, VertexFetch};
+use glsl::Span;
+use std::sync::Mutex;
+
+/// What the debugger asks of one draw.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ProbeRequest {
+    /// The window pixel to trace.
+    pub pixel: (u32, u32),
+    /// Also collect `debugPrintfEXT` output of fragments in
+    /// `[x0, x1) × [y0, y1)` (the pixel's own prints are always in its
+    /// trace).
+    pub print_rect: Option<(u32, u32, u32, u32)>,
+    /// Also trace the vertex shader for this position of the draw's index
+    /// list.
+    pub vertex: Option<usize>,
+    /// Also collect every primitive's window-space outline.
+    pub outlines: bool,
+}
+
+/// Replays a draw on a copy of `fb` and returns, for every pixel a
+/// fragment of this draw wrote, the value `view` had in that fragment.
+#[allow(clippy::too_many_arguments)]
+pub fn view_draw(
+    fb: &Framebuffer,
+    state: &PipelineState,
+    vs: &ex::Kernel,
+    vs_uniforms: &[u32],
+    fs: &ex::Kernel,
+    fs_uniforms: &[u32],
+    mode: Mode,
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    textures: &(dyn ex::Textures + Sync),
+    view: View,
+) -> Result<ViewImage, DrawError> {
+    let probe = Probe {
+        pixel: (-1, -1),
+        print_rect: None,
+        outlines: false,
+        view: Some(view),
+        inner: Mutex::new(DrawProbe::default()),
+        image: Mutex::new(ViewImage {
+            width: fb.width,
+            height: fb.height,
+            pixels: vec![None; fb.width as usize * fb.height as usize],
+        }),
+    };
+    let mut copy = fb.clone();
+    draw_probed(
+        &crate::Workers::inline(),
+        &mut copy,
+        state,
+        (vs, vs_uniforms),
+        (fs, fs_uniforms),
+        mode,
+        indices,
+        fetch,
+        textures,
+        Some(&probe),
+    )?;
+    Ok(probe.image.into_inner().unwrap_or_else(|e| e.into_inner()))
+}
+
+impl ProbeRequest {
+    /// A request for `pixel` only.
+    pub fn pixel(x: u32, y: u32) -> ProbeRequest {
+        ProbeRequest {
+            pixel: (x, y),
+            print_rect: None,
+            vertex: None,
+            outlines: false,
+        }
+    }
+}
+
+/// A value to show for the whole frame as a false-colour image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum View {
+    /// Components `offset..offset + components` of the fragment shader's
+    /// inputs (a varying, gl_FragCoord...).
+    Input { offset: usize, components: usize },
+    /// The last value stored into registers `first..first + components`
+    /// (a local or global variable: `exec::Kernel::variables`).
+    Variable { first: u32, components: usize },
+}
+
+/// The viewed value of the last fragment written at each pixel (bottom
+/// row first): up to 4 components as raw bits (`f32` bits for inputs;
+/// the variable's own kinds for variables).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ViewImage {
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Vec<Option<[u32; 4]>>,
+}
+
+/// One vertex shader invocation, traced.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct VertexProbe {
+    /// Position in the draw's index list, and the vertex index there.
+    pub position: usize,
+    pub index: u32,
+    /// The vertex shader's inputs and outputs (laid out as its interface;
+    /// outputs as the shader wrote them, before the colour clamp of GL 2.1
+    /// §2.14.6 that `DrawProbe::vertex_outputs` shows).
+    pub inputs: Vec<f32>,
+    pub events: Vec<Event>,
+    pub outputs: Vec<f32>,
+    pub error: Option<String>,
+}
+
+/// What one draw did at the probed pixel.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct DrawProbe {
+    pub pixel: (u32, u32),
+    /// The pixel is outside the framebuffer or the scissor box: no fragment
+    /// can reach it.
+    pub unreachable: Option<String>,
+    /// Every assembled primitive's vertices, as positions in the draw's
+    /// index list (only primitives that produced a fragment here are
+    /// referenced by [`FragmentProbe::primitive`]).
+    pub primitives: Vec<Vec<usize>>,
+    /// The vertex stage's outputs per index position (`vertex_outputs`
+    /// floats each, laid out as the vertex shader's interface).
+    pub vertex_outputs: Vec<Vec<f32>>,
+    /// The fragments that reached the pixel, in the order they were
+    /// processed.
+    pub fragments: Vec<FragmentProbe>,
+    /// `debugPrintfEXT` output of fragments in the print rectangle other
+    /// than the probed pixel, in execution order.
+    pub prints: Vec<PrintLine>,
+    /// The pixel after the draw.
+    pub after: PixelState,
+    /// The traced vertex ([`ProbeRequest::vertex`]).
+    pub vertex: Option<VertexProbe>,
+    /// Window-space (x, y) corners of every primitive set up for
+    /// rasterization (after clipping), when [`ProbeRequest::outlines`].
+    pub outlines: Vec<Vec<[f64; 2]>>,
+}
+
+/// One `debugPrintfEXT` line.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PrintLine {
+    pub x: u32,
+    pub y: u32,
+    pub primitive: u32,
+    pub span: Span,
+    pub text: String,
+}
+
+/// One fragment at the probed pixel.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct FragmentProbe {
+    /// Index of the assembled primitive (in `DrawProbe::primitives`).
+    pub primitive: u32,
+    pub back_facing: bool,
+    /// The (clipped) primitive's window-space vertices: x, y, z, 1/w.
+    pub window_vertices: Vec<[f64; 4]>,
+    /// Window z of the fragment before the shader (after polygon offset).
+    pub window_z: f64,
+    /// The fragment shader's inputs (laid out as its interface).
+    pub inputs: Vec<f32>,
+    /// Statements, stores and prints of the invocation, in order.
+    pub events: Vec<Event>,
+    pub discarded: bool,
+    /// The shader failed (loop budget...).
+    pub error: Option<String>,
+    /// The fragment shader's outputs (laid out as its interface).
+    pub outputs: Vec<f32>,
+    /// Rejected by the early depth/stencil test: the shader did not run.
+    pub early_rejected: bool,
+    /// The per-fragment operations (absent when discarded or early
+    /// rejected... or when the shader failed).
+    pub ops: Option<OpsProbe>,
+}
+
+/// One step of a traced invocation.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Event {
+    /// A statement starts.
+    Statement(Span),
+    /// A store of `bits` into `register` (see `exec::Kernel::variables`).
+    Store { register: u32, bits: u32 },
+    /// `debugPrintfEXT` printed `text`.
+    Print { span: Span, text: String },
+}
+
+/// What the per-fragment operations did with a fragment (GL 2.1 §4.1).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct OpsProbe {
+    /// The fragment's depth as stored (24-bit fixed point) and as a float.
+    pub fragment_depth: f32,
+    pub fragment_depth_fixed: u32,
+    pub before: PixelState,
+    pub after: PixelState,
+    /// `Some(passed)` for each enabled test, in the order GL runs them.
+    pub alpha_test: Option<bool>,
+    pub stencil_test: Option<bool>,
+    pub depth_test: Option<bool>,
+    /// Blending (or a logic op) combined the colour with the destination.
+    pub blended: bool,
+    /// The colour mask (r, g, b, a).
+    pub color_mask: [bool; 4],
+}
+
+/// A pixel's stored values.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PixelState {
+    /// Each colour buffer's RGBA (unorm buffers converted to floats in
+    /// [0, 1]; `color_bytes` keeps their bytes).
+    pub colors: Vec<[f32; 4]>,
+    pub color_bytes: Vec<Option<[u8; 4]>>,
+    /// 24-bit fixed-point depth.
+    pub depth: Option<u32>,
+    pub stencil: Option<u8>,
+}
+
+impl PixelState {
+    fn read(fb: &Framebuffer, index: usize) -> PixelState {
+        let mut s = PixelState {
+            depth: fb.depth.as_ref().and_then(|d| d.get(index)).copied(),
+            stencil: fb.stencil.as_ref().and_then(|d| d.get(index)).copied(),
+            ..PixelState::default()
+        };
+        for c in &fb.color {
+            match c {
+                ColorBuffer::Rgba8(v) => {
+                    let b = v.get(index).copied().unwrap_or_default();
+                    s.colors.push(b.map(crate::unorm8_to_float));
+                    s.color_bytes.push(Some(b));
+                }
+                ColorBuffer::Rgba32F(v) => {
+                    s.colors.push(v.get(index).copied().unwrap_or_default());
+                    s.color_bytes.push(None);
+                }
+            }
+        }
+        s
+    }
+}
+
+/// Replays a draw on a copy of `fb` and reports what happened at
+/// `req.pixel` (see the module docs). The arguments are those of
+/// [`crate::draw_on`].
+#[allow(clippy::too_many_arguments)]
+pub fn probe_draw(
+    fb: &Framebuffer,
+    state: &PipelineState,
+    vs: &ex::Kernel,
+    vs_uniforms: &[u32],
+    fs: &ex::Kernel,
+    fs_uniforms: &[u32],
+    mode: Mode,
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    textures: &(dyn ex::Textures + Sync),
+    req: ProbeRequest,
+) -> Result<DrawProbe, DrawError> {
+    let (px, py) = req.pixel;
+    let mut report = DrawProbe {
+        pixel: req.pixel,
+        ..DrawProbe::default()
+    };
+    if px >= fb.width || py >= fb.height {
+        report.unreachable = Some(format!(
+            "pixel ({px}, {py}) is outside the {}×{} framebuffer",
+            fb.width, fb.height
+        ));
+        return Ok(report);
+    }
+    // The region replayed: the pixel and the print rectangle, inside the
+    // real scissor box.
+    let (mut x0, mut y0, mut x1, mut y1) = (px as i64, py as i64, px as i64 + 1, py as i64 + 1);
+    if let Some(r) = req.print_rect {
+        x0 = x0.min(r.0 as i64);
+        y0 = y0.min(r.1 as i64);
+        x1 = x1.max(r.2 as i64);
+        y1 = y1.max(r.3 as i64);
+    }
+    if let Some(s) = state.scissor {
+        let inside = |x: i64, y: i64| {
+            x >= s.x as i64
+                && y >= s.y as i64
+                && x < s.x as i64 + s.w as i64
+                && y < s.y as i64 + s.h as i64
+        };
+        if !inside(px as i64, py as i64) {
+            report.unreachable = Some(format!(
+                "pixel ({px}, {py}) is outside the scissor box ({}, {}, {}×{})",
+                s.x, s.y, s.w, s.h
+            ));
+        }
+        x0 = x0.max(s.x as i64);
+        y0 = y0.max(s.y as i64);
+        x1 = x1.min(s.x as i64 + s.w as i64);
+        y1 = y1.min(s.y as i64 + s.h as i64);
+    }
+    let mut narrowed = state.clone();
+    narrowed.scissor = Some(Rect {
+        x: x0 as i32,
+        y: y0 as i32,
+        w: (x1 - x0).max(0) as i32,
+        h: (y1 - y0).max(0) as i32,
+    });
+    let probe = Probe {
+        pixel: (px as i64, py as i64),
+        print_rect: req.print_rect,
+        outlines: req.outlines,
+        view: None,
+        image: Mutex::new(ViewImage::default()),
+        inner: Mutex::new(report),
+    };
+    let mut copy = fb.clone();
+    let result = draw_probed(
+        &crate::Workers::inline(),
+        &mut copy,
+        &narrowed,
+        (vs, vs_uniforms),
+        (fs, fs_uniforms),
+        mode,
+        indices,
+        fetch,
+        textures,
+        Some(&probe),
+    );
+    let mut report = probe.inner.into_inner().unwrap_or_else(|e| e.into_inner());
+    report.after = PixelState::read(&copy, (py * copy.width + px) as usize);
+    if let Some(position) = req.vertex {
+        report.vertex = Some(trace_vertex(
+            vs,
+            vs_uniforms,
+            textures,
+            fetch,
+            indices,
+            position,
+        ));
+    }
+    result.map(|()| report)
+}
+
+/// Runs the vertex shader alone for one position of the index list, traced
+/// (vertices do not depend on each other, so a batch of one lane gives the
+/// values of the real draw).
+fn trace_vertex(
+    vs: &ex::Kernel,
+    uniforms: &[u32],
+    textures: &(dyn ex::Textures + Sync),
+    fetch: &dyn VertexFetch,
+    indices: &[u32],
+    position: usize,
+) -> VertexProbe {
+    let Some(&index) = indices.get(position) else {
+        return VertexProbe {
+            position,
+            error: Some(format!(
+                "the draw has {} vertices; there is no vertex at position {position}",
+                indices.len()
+            )),
+            ..VertexProbe::default()
+        };
+    };
+    let iface = vs.interface();
+    let mut batch = crate::shade::new_batch(iface.input_components, iface.output_components);
+    crate::pipeline::fetch_vertex(iface, fetch, index, &mut batch, 0);
+    batch.active = 1;
+    let mut rec = Recording {
+        fragment: FragmentProbe::default(),
+    };
+    let result = vs.run_traced(&mut batch, uniforms, textures, 0, &mut rec);
+    VertexProbe {
+        position,
+        index,
+        inputs: batch.inputs.iter().map(|c| c[0]).collect(),
+        events: rec.fragment.events,
+        outputs: batch.outputs.iter().map(|c| c[0]).collect(),
+        error: result.err().map(|e| e.to_string()),
+    }
+}
+
+/// The probe a draw carries (interior mutability: the fragment stage holds
+/// it by shared reference; the replay runs on one thread).
+pub(crate) struct Probe {
+    pixel: (i64, i64),
+    print_rect: Option<(u32, u32, u32, u32)>,
+    outlines: bool,
+    view: Option<View>,
+    image: Mutex<ViewImage>,
+    inner: Mutex<DrawProbe>,
+}
+
+/// The trace of the probed lane while its batch runs.
+pub(crate) struct Recording {
+    fragment: FragmentProbe,
+}
+
+impl Trace for Recording {
+    fn statement(&mut self, span: Span) {
+        self.fragment.events.push(Event::Statement(span));
+    }
+    fn store(&mut self, register: u32, bits: u32) {
+        self.fragment.events.push(Event::Store { register, bits });
+    }
+    fn printf(&mut self, text: &str) {
+        // The span of the call is the statement just reported.
+        let span = self
+            .fragment
+            .events
+            .iter()
+            .rev()
+            .find_map(|e| match e {
+                Event::Statement(s) => Some(*s),
+                _ => None,
+            })
+            .unwrap_or_default();
+        self.fragment.events.push(Event::Print {
+            span,
+            text: text.to_string(),
+        });
+    }
+}
+
+impl Recording {
+    pub fn finish(&mut self, batch: &Batch, lane: usize, error: Option<&ExecError>) {
+        let f = &mut self.fragment;
+        f.discarded = batch.discarded & (1 << lane) != 0;
+        f.outputs = batch.outputs.iter().map(|c| c[lane]).collect();
+        f.error = error.map(|e| e.to_string());
+    }
+}
+
+impl Probe {
+    fn with<R>(&self, f: impl FnOnce(&mut DrawProbe) -> R) -> R {
+        let mut g = self.inner.lock().unwrap_or_else(|e| e.into_inner());
+        f(&mut g)
+    }
+
+    pub fn view(&self) -> Option<View> {
+        self.view
+    }
+
+    /// Runs a batch for a view: the watched registers per lane (inputs
+    /// are read from the batch instead; then one empty-but-non-empty
+    /// marker is returned so the caller stores values).
+    pub fn run_view(
+        &self,
+        stage: &FragmentStage,
+        batch: &mut Batch,
+        view: View,
+    ) -> Result<Vec<[u32; ex::LANES]>, ExecError> {
+        match view {
+            View::Variable { first, components } => {
+                let mut out = vec![[0u32; ex::LANES]; components.clamp(1, 4)];
+                stage.shader.run_watching(
+                    batch,
+                    stage.uniforms,
+                    stage.textures,
+                    first,
+                    &mut out,
+                )?;
+                Ok(out)
+            }
+            View::Input { offset, components } => {
+                let out = (offset..offset + components.clamp(1, 4))
+                    .map(|c| {
+                        batch
+                            .inputs
+                            .get(c)
+                            .map_or([0; ex::LANES], |v| v.map(f32::to_bits))
+                    })
+                    .collect();
+                stage.shader.run(batch, stage.uniforms, stage.textures)?;
+                Ok(out)
+            }
+        }
+    }
+
+    /// Records the viewed value of `lane` for pixel (x, y).
+    pub fn view_store(
+        &self,
+        x: u32,
+        y: u32,
+        _batch: &Batch,
+        watched: &[[u32; ex::LANES]],
+        lane: usize,
+    ) {
+        let mut img = self.image.lock().unwrap_or_else(|e| e.into_inner());
+        let w = img.width as usize;
+        if let Some(p) = img.pixels.get_mut(y as usize * w + x as usize) {
+            let mut v = [0u32; 4];
+            for (c, comp) in watched.iter().take(4).enumerate() {
+                v[c] = comp[lane];
+            }
+            *p = Some(v);
+        }
+    }
+
+    /// Whether prints of pixels other than the probed one are wanted.
+    pub fn prints_others(&self) -> bool {
+        self.print_rect.is_some()
+    }
+
+    pub fn at(&self, x: i64, y: i64) -> bool {
+        (x, y) == self.pixel
+    }
+
+    /// Records a set-up primitive's outline (when asked for).
+    pub fn note_shape(&self, shape: &Shape) {
+        if !self.outlines {
+            return;
+        }
+        let corners: Vec<[f64; 2]> = match shape {
+            Shape::Triangle { v, .. } => v.iter().map(|w| [w.x, w.y]).collect(),
+            Shape::Line { v, .. } => v.iter().map(|w| [w.x, w.y]).collect(),
+            Shape::Point { v, .. } => vec![[v.x, v.y]],
+        };
+        self.with(|r| r.outlines.push(corners));
+    }
+
+    pub fn note_primitive(&self, source: u32, p: &Assembled) {
+        let positions = match p {
+            Assembled::Point(i) => vec![*i],
+            Assembled::Line(a, b) => vec![*a, *b],
+            Assembled::Polygon(v, _) => v.clone(),
+        };
+        self.with(|r| {
+            if r.primitives.len() == source as usize {
+                r.primitives.push(positions);
+            }
+        });
+    }
+
+    pub fn set_vertices(&self, layout: &VsLayout, outputs: &[f32], vertex_of: &[usize]) {
+        let n = layout.outputs;
+        let per: Vec<Vec<f32>> = vertex_of
+            .iter()
+            .map(|&v| outputs.get(v * n..(v + 1) * n).unwrap_or(&[]).to_vec())
+            .collect();
+        self.with(|r| r.vertex_outputs = per);
+    }
+
+    fn fragment(prim: &Prim, window_z: f64) -> FragmentProbe {
+        let verts: Vec<[f64; 4]> = match &prim.shape {
+            Shape::Triangle { v, .. } => v.iter().map(|w| [w.x, w.y, w.z, w.inv_w]).collect(),
+            Shape::Line { v, .. } => v.iter().map(|w| [w.x, w.y, w.z, w.inv_w]).collect(),
+            Shape::Point { v, .. } => vec![[v.x, v.y, v.z, v.inv_w]],
+        };
+        FragmentProbe {
+            primitive: prim.source,
+            back_facing: prim.back,
+            window_vertices: verts,
+            window_z,
+            ..FragmentProbe::default()
+        }
+    }
+
+    /// The early depth/stencil test dropped the probed pixel's fragment.
+    pub fn early_rejected(
+        &self,
+        fb: &Framebuffer,
+        state: &PipelineState,
+        index: usize,
+        prim: &Prim,
+        z: f64,
+    ) {
+        let mut f = Probe::fragment(prim, z);
+        f.early_rejected = true;
+        let before = PixelState::read(fb, index);
+        let zf = depth_to_fixed(z as f32);
+        f.ops = Some(OpsProbe {
+            fragment_depth: z as f32,
+            fragment_depth_fixed: zf,
+            stencil_test: fragment_ops::stencil_passes(state, prim.back, before.stencil),
+            depth_test: match (state.depth_test, before.depth) {
+                (Some(func), Some(stored)) => Some(func.test(zf, stored)),
+                _ => None,
+            },
+            after: before.clone(),
+            before,
+            color_mask: state.color_mask,
+            ..OpsProbe::default()
+        });
+        self.with(|r| r.fragments.push(f));
+    }
+
+    /// Starts recording the probed lane of a batch about to run.
+    pub fn begin(&self, prim: &Prim, batch: &Batch, lane: usize, z: f64) -> Recording {
+        let mut fragment = Probe::fragment(prim, z);
+        fragment.inputs = batch.inputs.iter().map(|c| c[lane]).collect();
+        Recording { fragment }
+    }
+
+    /// The per-fragment operations of the probed fragment, recorded.
+    pub fn process(
+        &self,
+        fb: &mut Framebuffer,
+        origin: (u32, u32),
+        state: &PipelineState,
+        frag: &Fragment,
+        rec: &mut Recording,
+    ) -> bool {
+        let (lx, ly) = (
+            frag.x.saturating_sub(origin.0),
+            frag.y.saturating_sub(origin.1),
+        );
+        let index = ly as usize * fb.width as usize + lx as usize;
+        let before = PixelState::read(fb, index);
+        let passed_all = fragment_ops::process(fb, origin, state, frag);
+        let after = PixelState::read(fb, index);
+        let zf = depth_to_fixed(frag.z);
+        let alpha = state.alpha_test.map(|(func, reference)| {
+            let a = frag.colors[0][3];
+            let a = if state.clamp_fragment_color {
+                a.clamp(0.0, 1.0)
+            } else {
+                a
+            };
+            func.test(a, reference.clamp(0.0, 1.0))
+        });
+        let stencil = if alpha == Some(false) {
+            None
+        } else {
+            fragment_ops::stencil_passes(state, frag.back_facing, before.stencil)
+        };
+        let depth = match (alpha, stencil, state.depth_test, before.depth) {
+            (Some(false), ..) | (_, Some(false), ..) => None,
+            (_, _, Some(func), Some(stored)) => Some(func.test(zf, stored)),
+            _ => None,
+        };
+        let passed = alpha != Some(false) && stencil != Some(false) && depth != Some(false);
+        rec.fragment.ops = Some(OpsProbe {
+            fragment_depth: frag.z,
+            fragment_depth_fixed: zf,
+            before,
+            after,
+            alpha_test: alpha,
+            stencil_test: stencil,
+            depth_test: depth,
+            blended: passed && (state.blend.is_some() || state.logic_op.is_some()),
+            color_mask: state.color_mask,
+        });
+        passed_all
+    }
+
+    pub fn push(&self, rec: Recording) {
+        self.with(|r| r.fragments.push(rec.fragment));
+    }
+
+    /// Runs a batch without the probed pixel, collecting the prints of its
+    /// lanes inside the print rectangle.
+    pub fn print_batch(
+        &self,
+        stage: &FragmentStage,
+        batch: &mut Batch,
+        primitive: u32,
+        pixel_of: impl Fn(usize) -> Option<(i64, i64)>,
+    ) -> Result<(), ExecError> {
+        struct Sink<'p, F> {
+            probe: &'p Probe,
+            pixel_of: F,
+            primitive: u32,
+        }
+        impl<F: Fn(usize) -> Option<(i64, i64)>> PrintSink for Sink<'_, F> {
+            fn print(&mut self, lane: usize, span: Span, text: &str) {
+                let Some((x, y)) = (self.pixel_of)(lane) else {
+                    return;
+                };
+                let inside = self.probe.print_rect.is_some_and(|r| {
+                    x >= r.0 as i64 && y >= r.1 as i64 && x < r.2 as i64 && y < r.3 as i64
+                });
+                if inside {
+                    let line = PrintLine {
+                        x: x as u32,
+                        y: y as u32,
+                        primitive: self.primitive,
+                        span,
+                        text: text.to_string(),
+                    };
+                    self.probe.with(|r| r.prints.push(line));
+                }
+            }
+        }
+        let mut sink = Sink {
+            probe: self,
+            pixel_of,
+            primitive,
+        };
+        stage
+            .shader
+            .run_printing(batch, stage.uniforms, stage.textures, &mut sink)
+    }
+}
