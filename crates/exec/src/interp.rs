@@ -8,7 +8,8 @@ use glsl::math::{self, flush_denormal};
 use glsl::types::Scalar;
 
 /// Loop iterations (summed over every loop, counted once per iteration of
-/// the lane group) one `Kernel::run` may execute before it fails with
+/// the lane group), plus subroutine calls when functions are not inlined,
+/// that one `Kernel::run` may execute before it fails with
 /// [`ExecError::LoopBudget`].
 pub const LOOP_BUDGET: u64 = 1 << 24;
 
@@ -102,7 +103,9 @@ impl Hook for PrintHook<'_> {
     }
 }
 
+#[cfg(test)]
 pub(crate) struct NoHook;
+#[cfg(test)]
 impl Hook for NoHook {}
 
 /// Reports statements and stores of one lane to a [`Trace`].

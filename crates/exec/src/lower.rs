@@ -1643,6 +1643,9 @@ impl<'m> Lowerer<'m> {
             let entry = self.pc();
             let fs = self.new_slot();
             self.emit(Op::SaveMask { slot: fs })?;
+            // Calls count against the loop budget: a call tree that doubles
+            // at every level (2^64 calls) must not hang.
+            self.emit(Op::LoopIter)?;
             self.ctx.push((CtxKind::Function, fs));
             self.frames.push(Frame {
                 func: f,
@@ -1821,11 +1824,7 @@ impl<'m> Lowerer<'m> {
 
     fn sqrt(&mut self, a: Reg) -> R<Reg> {
         let d = self.temp()?;
-        self.emit(Op::F1 {
-            f: F1::Sqrt,
-            d,
-            a,
-        })?;
+        self.emit(Op::F1 { f: F1::Sqrt, d, a })?;
         Ok(d)
     }
 

@@ -74,7 +74,7 @@ fn fbits(v: &[f32]) -> Vec<u32> {
     v.iter().map(|f| f.to_bits()).collect()
 }
 
-fn sphere_uniforms(k: &Kernel, perspective: f32) -> Vec<u32> {
+pub(crate) fn sphere_uniforms(k: &Kernel, perspective: f32) -> Vec<u32> {
     // A projection like the renderer's (ortho or frustum), two lights.
     let proj: [f32; 16] = if perspective > 0.5 {
         [
