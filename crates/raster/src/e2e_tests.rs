@@ -499,17 +499,20 @@ fn probe_reports_every_fragment_of_a_pixel() {
     let units = TextureUnits::default();
     let before = fb.clone();
     let probe = |x: u32, y: u32| {
+        let replay = crate::Replay {
+            state: &state,
+            vs: &vs,
+            vs_uniforms: &[],
+            fs: &fs,
+            fs_uniforms: &[],
+            mode: Mode::Triangles,
+            indices: &indices,
+            fetch: &fetch,
+            textures: &units,
+        };
         probe_draw(
             &before,
-            &state,
-            &vs,
-            &[],
-            &fs,
-            &[],
-            Mode::Triangles,
-            &indices,
-            &fetch,
-            &units,
+            &replay,
             ProbeRequest {
                 vertex: Some(7),
                 outlines: true,

@@ -99,7 +99,7 @@ pub use framebuffer::{
 pub use pipeline::{draw_stages, Mode, VertexFetch, MAX_POINT_SIZE, TILE};
 pub use probe::{
     probe_draw, view_draw, DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine,
-    ProbeRequest, VertexProbe, View, ViewImage,
+    ProbeRequest, Replay, VertexProbe, View, ViewImage,
 };
 pub use rasterize::SUBPIXEL_BITS;
 pub use state::{

@@ -181,22 +181,9 @@ impl FragmentStage<'_> {
             self.shader.run(batch, self.uniforms, self.textures)?;
             for (q, (prim, quad)) in pending.iter().enumerate() {
                 for k in 0..4 {
-                    let lane = 4 * q + k;
-                    if quad.live & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
-                        continue;
+                    if let Some(frag) = self.fragment(batch, quad, q, k, prim.back) {
+                        fragment_ops::process(fb, origin, self.state, &frag);
                     }
-                    let (x, y) = (quad.x + (k as i64 & 1), quad.y + (k as i64 >> 1));
-                    if x < 0 || y < 0 {
-                        continue;
-                    }
-                    let frag = Fragment {
-                        x: x as u32,
-                        y: y as u32,
-                        z: self.frag_z(batch, lane, quad, k),
-                        back_facing: prim.back,
-                        colors: self.colors(batch, lane),
-                    };
-                    fragment_ops::process(fb, origin, self.state, &frag);
                 }
             }
             Ok(())
@@ -373,6 +360,33 @@ impl FragmentStage<'_> {
     /// The fragment's window z after the shader: gl_FragDepth when the
     /// shader writes it (GL 2.1 §3.11.2, clamped to [0, 1] on conversion),
     /// else the interpolated z.
+    /// The fragment of lane `4q + k` after shading, unless the lane is
+    /// not covered, was discarded or lies left of / below the window.
+    fn fragment(
+        &self,
+        batch: &Batch,
+        quad: &Quad,
+        q: usize,
+        k: usize,
+        back: bool,
+    ) -> Option<Fragment> {
+        let lane = 4 * q + k;
+        if quad.live & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
+            return None;
+        }
+        let (x, y) = (quad.x + (k as i64 & 1), quad.y + (k as i64 >> 1));
+        if x < 0 || y < 0 {
+            return None;
+        }
+        Some(Fragment {
+            x: x as u32,
+            y: y as u32,
+            z: self.frag_z(batch, lane, quad, k),
+            back_facing: back,
+            colors: self.colors(batch, lane),
+        })
+    }
+
     fn frag_z(&self, batch: &Batch, lane: usize, quad: &Quad, k: usize) -> f32 {
         let z = match self.layout.frag_depth {
             Some(o) => get(batch, o, lane),
@@ -453,19 +467,8 @@ impl FragmentStage<'_> {
         for (q, quad) in quads.iter().enumerate() {
             for k in 0..4 {
                 let lane = 4 * q + k;
-                if quad.live & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
+                let Some(frag) = self.fragment(batch, quad, q, k, prim.back) else {
                     continue;
-                }
-                let (x, y) = (quad.x + (k as i64 & 1), quad.y + (k as i64 >> 1));
-                if x < 0 || y < 0 {
-                    continue;
-                }
-                let frag = Fragment {
-                    x: x as u32,
-                    y: y as u32,
-                    z: self.frag_z(batch, lane, quad, k),
-                    back_facing: prim.back,
-                    colors: self.colors(batch, lane),
                 };
                 let passed = match record.as_mut().filter(|r| r.1 == lane) {
                     Some((p, _, r)) => p.process(fb, origin, self.state, &frag, r),
