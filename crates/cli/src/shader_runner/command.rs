@@ -8,6 +8,10 @@
 //! read uninitialised memory because a value is missing, the line is
 //! rejected instead.
 //!
+//! Beyond piglit (no piglit test uses them; `shaderbox debug`'s stencil
+//! examples do): `clear stencil N`, `stencil func FUNC REF MASK`,
+//! `stencil op FAIL ZFAIL ZPASS`.
+//!
 //! Commands of later GL versions and extensions (compute, SSBOs, transform
 //! feedback, atomic counters, subroutines, framebuffer objects, ...) parse to
 //! [`Command::NeedsLaterGl`]: running one makes the test a skip.
@@ -20,6 +24,15 @@ use super::scan::{self, Scanned};
 pub enum Command {
     ClearColor([f32; 4]),
     ClearDepth(f32),
+    ClearStencil(i32),
+    /// `stencil func FUNC REF MASK` (a shaderbox extension).
+    StencilFunc {
+        func: u32,
+        reference: i32,
+        mask: u32,
+    },
+    /// `stencil op FAIL ZFAIL ZPASS` (a shaderbox extension).
+    StencilOp([u32; 3]),
     Clear,
     ClipPlane {
         plane: u32,
@@ -272,8 +285,36 @@ fn parse_command(line: &str) -> Result<Command, CommandError> {
     if let Some(rest) = lit(line, "clear depth ") {
         return Ok(C::ClearDepth(floats::<1>(rest, "clear depth", line)?[0]));
     }
+    if let Some(rest) = lit(line, "clear stencil ") {
+        let (w, _) = scan::word(rest).ok_or_else(|| bad("Bad clear stencil value", line))?;
+        let v = w
+            .parse()
+            .map_err(|_| bad("Bad clear stencil value", line))?;
+        return Ok(C::ClearStencil(v));
+    }
     if lit(line, "clear").is_some() {
         return Ok(C::Clear);
+    }
+    if let Some(rest) = lit(line, "stencil func ") {
+        let words: Vec<&str> = rest.split_whitespace().collect();
+        let [f, r, m, ..] = words.as_slice() else {
+            return Err(bad("stencil func needs FUNC REF MASK", line));
+        };
+        let func = compare_func(f).ok_or_else(|| bad("Bad stencil function", line))?;
+        let reference = r.parse().map_err(|_| bad("Bad stencil reference", line))?;
+        let mask = parse_u32(m).ok_or_else(|| bad("Bad stencil mask", line))?;
+        return Ok(C::StencilFunc {
+            func,
+            reference,
+            mask,
+        });
+    }
+    if let Some(rest) = lit(line, "stencil op ") {
+        let ops: Option<Vec<u32>> = rest.split_whitespace().take(3).map(stencil_op).collect();
+        return match ops.as_deref() {
+            Some([a, b, c]) => Ok(C::StencilOp([*a, *b, *c])),
+            _ => Err(bad("stencil op needs three of GL_KEEP, GL_ZERO, GL_REPLACE, GL_INCR, GL_DECR, GL_INVERT, GL_INCR_WRAP, GL_DECR_WRAP", line)),
+        };
     }
     if let Some(v) = sscanf_all(line, "clip plane %d %lf %lf %lf %lf") {
         let plane = scanned_i32(&v[..1])[0];
@@ -598,6 +639,42 @@ fn draw_mode(name: &str) -> Result<u32, CommandError> {
         "GL_POLYGON" => GL_POLYGON,
         _ => return Err(CommandError(format!("unknown drawing mode \"{name}\""))),
     })
+}
+
+fn compare_func(name: &str) -> Option<u32> {
+    Some(match name {
+        "GL_NEVER" => GL_NEVER,
+        "GL_LESS" => GL_LESS,
+        "GL_EQUAL" => GL_EQUAL,
+        "GL_LEQUAL" => GL_LEQUAL,
+        "GL_GREATER" => GL_GREATER,
+        "GL_NOTEQUAL" => GL_NOTEQUAL,
+        "GL_GEQUAL" => GL_GEQUAL,
+        "GL_ALWAYS" => GL_ALWAYS,
+        _ => return None,
+    })
+}
+
+fn stencil_op(name: &str) -> Option<u32> {
+    Some(match name {
+        "GL_KEEP" => GL_KEEP,
+        "GL_ZERO" => GL_ZERO,
+        "GL_REPLACE" => GL_REPLACE,
+        "GL_INCR" => GL_INCR,
+        "GL_DECR" => GL_DECR,
+        "GL_INVERT" => GL_INVERT,
+        "GL_INCR_WRAP" => GL_INCR_WRAP,
+        "GL_DECR_WRAP" => GL_DECR_WRAP,
+        _ => return None,
+    })
+}
+
+/// A decimal or `0x` hexadecimal unsigned number.
+fn parse_u32(s: &str) -> Option<u32> {
+    match s.strip_prefix("0x").or_else(|| s.strip_prefix("0X")) {
+        Some(hex) => u32::from_str_radix(hex, 16).ok(),
+        None => s.parse().ok(),
+    }
 }
 
 fn enable_cap(rest: &str, line: &str) -> Result<u32, CommandError> {
@@ -1173,6 +1250,22 @@ mod tests {
             }
         );
         assert!(parse("enable GL_BLEND_X").is_err());
+        // shaderbox's stencil commands.
+        assert_eq!(p("clear stencil 3"), Command::ClearStencil(3));
+        assert_eq!(
+            p("stencil func GL_EQUAL 1 0xff"),
+            Command::StencilFunc {
+                func: GL_EQUAL,
+                reference: 1,
+                mask: 255
+            }
+        );
+        assert_eq!(
+            p("stencil op GL_KEEP GL_INCR GL_REPLACE"),
+            Command::StencilOp([GL_KEEP, GL_INCR, GL_REPLACE])
+        );
+        assert!(parse("stencil op GL_KEEP GL_KEEP").is_err());
+        assert!(parse("stencil func GL_SOMETIMES 1 1").is_err());
         assert!(parse("frobnicate").is_err());
     }
 

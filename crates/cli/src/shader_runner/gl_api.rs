@@ -69,6 +69,9 @@ pub trait GlApi {
     fn disable(&mut self, cap: u32);
     fn hint(&mut self, target: u32, mode: u32);
     fn blend_func(&mut self, src: u32, dst: u32);
+    fn clear_stencil(&mut self, s: i32);
+    fn stencil_func(&mut self, func: u32, reference: i32, mask: u32);
+    fn stencil_op(&mut self, fail: u32, zfail: u32, zpass: u32);
     fn shade_model(&mut self, mode: u32);
     fn clip_plane(&mut self, plane: u32, equation: &[f64; 4]);
     fn light_f(&mut self, light: u32, pname: u32, param: f32);

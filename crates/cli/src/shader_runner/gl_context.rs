@@ -165,6 +165,15 @@ impl GlApi for gl::Context {
     fn disable(&mut self, cap: u32) {
         gl::Context::disable(self, cap)
     }
+    fn clear_stencil(&mut self, s: i32) {
+        gl::Context::clear_stencil(self, s)
+    }
+    fn stencil_func(&mut self, func: u32, reference: i32, mask: u32) {
+        gl::Context::stencil_func(self, func, reference, mask)
+    }
+    fn stencil_op(&mut self, fail: u32, zfail: u32, zpass: u32) {
+        gl::Context::stencil_op(self, fail, zfail, zpass)
+    }
     fn blend_func(&mut self, src: u32, dst: u32) {
         gl::Context::blend_func(self, src, dst)
     }

@@ -130,3 +130,13 @@ pub const GL_DST_ALPHA: u32 = 0x0304;
 pub const GL_ONE_MINUS_DST_ALPHA: u32 = 0x0305;
 pub const GL_DST_COLOR: u32 = 0x0306;
 pub const GL_ONE_MINUS_DST_COLOR: u32 = 0x0307;
+
+// Stencil (the runner's `stencil ...` and `clear stencil` commands).
+pub const GL_STENCIL_BUFFER_BIT: u32 = 0x0400;
+pub const GL_KEEP: u32 = 0x1E00;
+pub const GL_REPLACE: u32 = 0x1E01;
+pub const GL_INCR: u32 = 0x1E02;
+pub const GL_DECR: u32 = 0x1E03;
+pub const GL_INVERT: u32 = 0x150A;
+pub const GL_INCR_WRAP: u32 = 0x8507;
+pub const GL_DECR_WRAP: u32 = 0x8508;

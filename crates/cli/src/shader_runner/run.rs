@@ -456,6 +456,16 @@ impl<'a, G: GlApi> Runner<'a, G> {
                 gl.clear_depth(f64::from(*d));
                 self.clear_bits |= GL_DEPTH_BUFFER_BIT;
             }
+            Command::ClearStencil(v) => {
+                gl.clear_stencil(*v);
+                self.clear_bits |= GL_STENCIL_BUFFER_BIT;
+            }
+            Command::StencilFunc {
+                func,
+                reference,
+                mask,
+            } => gl.stencil_func(*func, *reference, *mask),
+            Command::StencilOp([fail, zfail, zpass]) => gl.stencil_op(*fail, *zfail, *zpass),
             Command::Clear => gl.clear(self.clear_bits),
             Command::ClipPlane { plane, equation } => {
                 gl.clip_plane(GL_CLIP_PLANE0 + plane, equation)
