@@ -48,6 +48,9 @@ pub struct DrawReport {
     pub fragments: Vec<FragmentReport>,
     /// `debugPrintfEXT` output of the print rectangle (other pixels).
     pub prints: Vec<PrintReport>,
+    /// `debugPrintfEXT` output of the vertex shader, per vertex index.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub vertex_prints: Vec<VertexPrint>,
     /// The pixel after the draw.
     pub after: Option<PixelReport>,
     /// The traced vertex, when one was asked for.
@@ -66,6 +69,13 @@ pub struct VertexTrace {
     pub steps: Vec<Step>,
     pub outputs: Vec<Named>,
     pub error: Option<String>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct VertexPrint {
+    pub vertex: u32,
+    pub line: Option<u32>,
+    pub text: String,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -436,6 +446,15 @@ impl Report {
             for (i, f) in d.fragments.iter().enumerate() {
                 write_fragment(&mut s, i + 1, f);
             }
+            for p in &d.vertex_prints {
+                let line = p.line.map_or(String::new(), |l| format!(" line {l}"));
+                let _ = writeln!(
+                    s,
+                    "  printf vertex {}{line}: {}",
+                    p.vertex,
+                    p.text.trim_end()
+                );
+            }
             for p in &d.prints {
                 let line = p.line.map_or(String::new(), |l| format!(" line {l}"));
                 let _ = writeln!(
@@ -468,6 +487,7 @@ fn draw_report(r: &DrawRecord) -> DrawReport {
         note: None,
         fragments: Vec::new(),
         prints: Vec::new(),
+        vertex_prints: Vec::new(),
         after: None,
         vertex: None,
         outlines: Vec::new(),
@@ -499,6 +519,13 @@ fn draw_report(r: &DrawRecord) -> DrawReport {
     for f in &probe.fragments {
         d.fragments
             .push(fragment_report(r, probe, f, fs_iface, vs_iface));
+    }
+    for (vertex, span, text) in &probe.vertex_prints {
+        d.vertex_prints.push(VertexPrint {
+            vertex: *vertex,
+            line: locate(&r.vertex, *span).0,
+            text: text.clone(),
+        });
     }
     for p in &probe.prints {
         let (line, _, _) = locate(&r.fragment, p.span);

@@ -163,6 +163,7 @@ fn run_vertices(
     fetch: &dyn VertexFetch,
     layout: &VsLayout,
     clamp_colors: bool,
+    probe: Option<&crate::probe::Probe>,
 ) -> Result<(Vec<usize>, Vec<f32>), DrawError> {
     let iface: &Interface = vs.interface();
     // Distinct indices in order of first use; a table over the index
@@ -212,7 +213,10 @@ fn run_vertices(
         } else {
             (1u32 << chunk.len()) - 1
         };
-        vs.run(&mut batch, uniforms, textures)?;
+        match probe.filter(|p| p.prints_others()) {
+            Some(p) => p.print_vertices(vs, &mut batch, uniforms, textures, chunk)?,
+            None => vs.run(&mut batch, uniforms, textures)?,
+        }
         let mut out = vec![0.0f32; chunk.len() * stride];
         for lane in 0..chunk.len() {
             let base = lane * stride;
@@ -560,6 +564,7 @@ pub(crate) fn draw_probed(
         fetch,
         &vs_layout,
         state.clamp_vertex_color,
+        probe,
     )?;
 
     let vp = state.viewport;

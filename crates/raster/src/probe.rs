@@ -168,6 +168,9 @@ pub struct DrawProbe {
     /// `debugPrintfEXT` output of fragments in the print rectangle other
     /// than the probed pixel, in execution order.
     pub prints: Vec<PrintLine>,
+    /// `debugPrintfEXT` output of the vertex shader (every vertex, when a
+    /// print rectangle is asked for): vertex index, call, text.
+    pub vertex_prints: Vec<(u32, Span, String)>,
     /// The pixel after the draw.
     pub after: PixelState,
     /// The traced vertex ([`ProbeRequest::vertex`]).
@@ -649,6 +652,39 @@ impl Probe {
 
     pub fn push(&self, rec: Recording) {
         self.with(|r| r.fragments.push(rec.fragment));
+    }
+
+    /// Runs a vertex batch collecting its prints (lane `l` is vertex
+    /// `indices[l]`).
+    pub fn print_vertices(
+        &self,
+        vs: &dyn crate::ShaderStage,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn ex::Textures,
+        indices: &[u32],
+    ) -> Result<(), ExecError> {
+        struct Sink<'p, 'i> {
+            probe: &'p Probe,
+            indices: &'i [u32],
+        }
+        impl PrintSink for Sink<'_, '_> {
+            fn print(&mut self, lane: usize, span: Span, text: &str) {
+                if let Some(&ix) = self.indices.get(lane) {
+                    self.probe
+                        .with(|r| r.vertex_prints.push((ix, span, text.to_string())));
+                }
+            }
+        }
+        vs.run_printing(
+            batch,
+            uniforms,
+            textures,
+            &mut Sink {
+                probe: self,
+                indices,
+            },
+        )
     }
 
     /// Runs a batch without the probed pixel, collecting the prints of its
