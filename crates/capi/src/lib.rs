@@ -89,6 +89,7 @@ pub mod debug_env;
 pub mod entry;
 pub mod legacy;
 pub mod lists;
+pub mod occlusion;
 pub mod osmesa;
 pub mod osmesa_enums;
 pub mod pixels;
@@ -101,6 +102,7 @@ pub use attribs::*;
 pub use buffers::*;
 pub use entry::*;
 pub use legacy::*;
+pub use occlusion::*;
 pub use pixels::*;
 pub use queries::*;
 // Each entry-point module has its own table; the crate root names entry's.

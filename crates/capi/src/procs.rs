@@ -13,6 +13,7 @@ pub fn lookup(name: &str) -> Option<*const ()> {
         crate::pixels::lookup,
         crate::array_draws::lookup,
         crate::array_draws::lookup_extra,
+        crate::occlusion::lookup,
     ] {
         if let Some(p) = table(name) {
             return Some(p);

@@ -679,6 +679,7 @@ impl Context {
                 image,
             })
         });
+        let samples_before = target.fb.samples_passed;
         let r = raster::draw_on(
             &self.workers,
             &mut target.fb,
@@ -695,6 +696,8 @@ impl Context {
         if let Err(e) = r {
             self.cache.error = Some(e.to_string());
         }
+        let samples = target.fb.samples_passed.wrapping_sub(samples_before);
+        self.count_samples(samples);
         if let Some(probe) = probe {
             let record = crate::debug::DrawRecord {
                 draw: self.debug.draws,

@@ -54,6 +54,7 @@ pub mod ffgen;
 pub mod get;
 pub mod matrix;
 pub mod objects;
+pub mod occlusion;
 pub mod program;
 pub mod state;
 pub mod uniform;
@@ -112,6 +113,8 @@ pub struct Context {
     pub(crate) client_attrib_stack: Vec<attrib_stack::ClientAttribs>,
     /// Draw debugging ([`Context::set_debug`]).
     pub(crate) debug: debug::DebugSession,
+    /// Occlusion query objects ([`occlusion`]).
+    pub(crate) queries: occlusion::Queries,
 }
 
 /// The environment variable giving the default number of draw threads.
@@ -170,6 +173,7 @@ impl Context {
             attrib_stack: Vec::new(),
             client_attrib_stack: Vec::new(),
             debug: debug::DebugSession::default(),
+            queries: occlusion::Queries::default(),
         }
     }
 

@@ -177,6 +177,7 @@ pub(crate) fn process(
     if !depth_pass {
         return false;
     }
+    fb.samples_passed = fb.samples_passed.wrapping_add(1);
 
     // §4.1.8 blending, §4.1.10 logic op, §4.2.2 masks.
     for (output, target) in state.draw_buffers.iter().enumerate() {
