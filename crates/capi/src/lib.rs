@@ -92,6 +92,7 @@ pub mod lists;
 pub mod occlusion;
 pub mod osmesa;
 pub mod osmesa_enums;
+pub mod pixel_path;
 pub mod pixels;
 pub mod procs;
 pub mod queries;
@@ -103,6 +104,7 @@ pub use buffers::*;
 pub use entry::*;
 pub use legacy::*;
 pub use occlusion::*;
+pub use pixel_path::*;
 pub use pixels::*;
 pub use queries::*;
 // Each entry-point module has its own table; the crate root names entry's.

@@ -55,6 +55,7 @@ pub mod get;
 pub mod matrix;
 pub mod objects;
 pub mod occlusion;
+pub mod pixel_path;
 pub mod program;
 pub mod state;
 pub mod uniform;
@@ -115,6 +116,8 @@ pub struct Context {
     pub(crate) debug: debug::DebugSession,
     /// Occlusion query objects ([`occlusion`]).
     pub(crate) queries: occlusion::Queries,
+    /// The current raster position ([`pixel_path`]).
+    pub(crate) raster: pixel_path::RasterPos,
 }
 
 /// The environment variable giving the default number of draw threads.
@@ -174,6 +177,7 @@ impl Context {
             client_attrib_stack: Vec::new(),
             debug: debug::DebugSession::default(),
             queries: occlusion::Queries::default(),
+            raster: pixel_path::RasterPos::default(),
         }
     }
 

@@ -206,5 +206,375 @@ def err_occlusion_queries(log):
     return False
 
 
+def fmt(v):
+    return "(" + ", ".join(f"{x:.3f}" for x in v) + ")"
+
+
+def raster_state(log, what):
+    valid = bool(GL.glGetBooleanv(GL.GL_CURRENT_RASTER_POSITION_VALID))
+    pos = GL.glGetFloatv(GL.GL_CURRENT_RASTER_POSITION)
+    col = GL.glGetFloatv(GL.GL_CURRENT_RASTER_COLOR)
+    tex = GL.glGetFloatv(GL.GL_CURRENT_RASTER_TEXTURE_COORDS)
+    if valid:
+        log.append(f"{what}: valid, window {fmt(pos)}, color {fmt(col)}, texcoord {fmt(tex)}")
+    else:
+        log.append(f"{what}: invalid")
+
+
+@scene("raster_pos_state", 64, 48)
+def raster_pos_state(log):
+    raster_state(log, "initial")
+    pixel_ortho(64, 48)
+    GL.glColor4f(0.25, 0.5, 0.75, 1.0)
+    GL.glTexCoord4f(0.5, 0.25, 0.0, 1.0)
+    GL.glRasterPos2i(10, 20)
+    raster_state(log, "glRasterPos2i(10, 20)")
+    GL.glRasterPos3f(10.5, 20.25, 0.5)
+    raster_state(log, "glRasterPos3f(10.5, 20.25, 0.5)")
+    GL.glRasterPos4f(20, 10, 0.0, 2.0)
+    raster_state(log, "glRasterPos4f(20, 10, 0, 2)")
+    GL.glRasterPos2i(-1, 20)
+    raster_state(log, "glRasterPos2i(-1, 20) (outside)")
+    GL.glRasterPos3f(5, 5, 2.0)
+    raster_state(log, "glRasterPos3f(5, 5, 2) (beyond far)")
+    GL.glMatrixMode(GL.GL_TEXTURE)
+    GL.glTranslatef(1.0, 2.0, 0.0)
+    GL.glMatrixMode(GL.GL_MODELVIEW)
+    GL.glTranslatef(3.0, 4.0, 0.0)
+    GL.glScalef(2.0, 2.0, 1.0)
+    GL.glRasterPos2f(5, 6)
+    raster_state(log, "translated, scaled, texture matrix")
+    GL.glMatrixMode(GL.GL_TEXTURE)
+    GL.glLoadIdentity()
+    GL.glMatrixMode(GL.GL_MODELVIEW)
+    GL.glLoadIdentity()
+    GL.glEnable(GL.GL_CLIP_PLANE0)
+    GL.glClipPlane(GL.GL_CLIP_PLANE0, (1.0, 0.0, 0.0, -30.0))
+    GL.glRasterPos2i(20, 20)
+    raster_state(log, "clip plane x >= 30, at x 20")
+    GL.glRasterPos2i(40, 20)
+    raster_state(log, "clip plane x >= 30, at x 40")
+    GL.glDisable(GL.GL_CLIP_PLANE0)
+    GL.glColor3f(1.0, 0.0, 0.5)
+    GL.glWindowPos2i(-5, 7)
+    raster_state(log, "glWindowPos2i(-5, 7)")
+    GL.glDepthRange(0.25, 0.75)
+    GL.glWindowPos3f(1.5, 2.5, 0.5)
+    raster_state(log, "glWindowPos3f(1.5, 2.5, 0.5) with depth range 0.25..0.75")
+    GL.glDepthRange(0.0, 1.0)
+    # Lighting colours the raster position.
+    GL.glEnable(GL.GL_LIGHTING)
+    GL.glEnable(GL.GL_LIGHT0)
+    GL.glLightfv(GL.GL_LIGHT0, GL.GL_POSITION, (0.0, 0.0, 1.0, 0.0))
+    GL.glLightfv(GL.GL_LIGHT0, GL.GL_DIFFUSE, (0.5, 0.5, 0.5, 1.0))
+    GL.glMaterialfv(GL.GL_FRONT_AND_BACK, GL.GL_DIFFUSE, (1.0, 0.5, 0.0, 1.0))
+    GL.glNormal3f(0.0, 0.0, 1.0)
+    GL.glRasterPos2i(32, 24)
+    raster_state(log, "lit")
+    GL.glDisable(GL.GL_LIGHTING)
+    # glPushAttrib(GL_CURRENT_BIT) saves the raster position.
+    GL.glPushAttrib(GL.GL_CURRENT_BIT)
+    GL.glRasterPos2i(1, 1)
+    GL.glPopAttrib()
+    raster_state(log, "after push/pop of GL_CURRENT_BIT")
+    # In a display list.
+    lst = GL.glGenLists(1)
+    GL.glNewList(lst, GL.GL_COMPILE)
+    GL.glColor3f(0.0, 1.0, 0.0)
+    GL.glRasterPos2i(7, 9)
+    GL.glEndList()
+    GL.glCallList(lst)
+    raster_state(log, "from a display list")
+    return False
+
+
+def gradient(w, h, comps, scale=255):
+    data = []
+    for y in range(h):
+        for x in range(w):
+            px = [x * scale // max(w - 1, 1), y * scale // max(h - 1, 1),
+                  (x + y) * scale // max(w + h - 2, 1), scale]
+            data.extend(px[:comps])
+    return data
+
+
+@scene("draw_pixels_color")
+def draw_pixels_color(log):
+    pixel_ortho()
+    GL.glClearColor(0.1, 0.1, 0.1, 1)
+    GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT)
+    img = (ctypes.c_ubyte * (16 * 16 * 4))(*gradient(16, 16, 4))
+    GL.glRasterPos2i(2, 2)
+    GL.glDrawPixels(16, 16, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, img)
+    # RGB floats, unpack alignment 1 with an odd width.
+    rgb = (ctypes.c_float * (7 * 5 * 3))(*[v / 255.0 for v in gradient(7, 5, 3)])
+    GL.glWindowPos2i(22, 2)
+    GL.glDrawPixels(7, 5, GL.GL_RGB, GL.GL_FLOAT, rgb)
+    GL.glPixelStorei(GL.GL_UNPACK_ALIGNMENT, 1)
+    lum = (ctypes.c_ubyte * (5 * 3))(*[40 * i % 256 for i in range(15)])
+    GL.glWindowPos2i(32, 2)
+    GL.glDrawPixels(5, 3, GL.GL_LUMINANCE, GL.GL_UNSIGNED_BYTE, lum)
+    GL.glPixelStorei(GL.GL_UNPACK_ALIGNMENT, 4)
+    bgra = (ctypes.c_ubyte * (4 * 4 * 4))(*gradient(4, 4, 4))
+    GL.glWindowPos2i(40, 2)
+    GL.glDrawPixels(4, 4, GL.GL_BGRA, GL.GL_UNSIGNED_BYTE, bgra)
+    # Zoom, including a flip.
+    GL.glPixelZoom(2.0, 3.0)
+    GL.glWindowPos2i(2, 20)
+    GL.glDrawPixels(8, 4, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, img)
+    GL.glPixelZoom(-1.0, 1.0)
+    GL.glWindowPos2i(40, 20)
+    GL.glDrawPixels(16, 8, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, img)
+    GL.glPixelZoom(1.0, 1.0)
+    # Scale and bias.
+    GL.glPixelTransferf(GL.GL_RED_SCALE, 0.5)
+    GL.glPixelTransferf(GL.GL_BLUE_BIAS, 0.5)
+    GL.glWindowPos2i(44, 40)
+    GL.glDrawPixels(16, 16, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, img)
+    GL.glPixelTransferf(GL.GL_RED_SCALE, 1.0)
+    GL.glPixelTransferf(GL.GL_BLUE_BIAS, 0.0)
+    # Depth test against a quad, blending, scissor.
+    GL.glEnable(GL.GL_DEPTH_TEST)
+    GL.glColor3f(0.8, 0.8, 0.2)
+    rect(2, 36, 20, 62, 0.0)
+    GL.glRasterPos3f(10, 40, 0.5)  # behind the quad (window z 0.25 vs 0.5)
+    GL.glDrawPixels(16, 16, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, img)
+    GL.glDisable(GL.GL_DEPTH_TEST)
+    GL.glEnable(GL.GL_BLEND)
+    GL.glBlendFunc(GL.GL_SRC_ALPHA, GL.GL_ONE_MINUS_SRC_ALPHA)
+    half = (ctypes.c_ubyte * (8 * 8 * 4))(*([200, 40, 40, 128] * 64))
+    GL.glEnable(GL.GL_SCISSOR_TEST)
+    GL.glScissor(0, 0, 34, 64)
+    GL.glWindowPos2i(28, 44)
+    GL.glDrawPixels(8, 8, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, half)
+    GL.glDisable(GL.GL_SCISSOR_TEST)
+    GL.glDisable(GL.GL_BLEND)
+    # Outside the window on the left and an invalid raster position.
+    GL.glWindowPos2i(-8, 30)
+    GL.glDrawPixels(16, 4, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, img)
+    GL.glRasterPos2i(-10, 30)
+    GL.glDrawPixels(16, 16, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, img)
+    raster_state(log, "after drawing at an invalid position")
+    # Compiled into a display list: the image is copied at compile time.
+    lst = GL.glGenLists(1)
+    small = (ctypes.c_ubyte * (6 * 6 * 4))(*gradient(6, 6, 4))
+    GL.glNewList(lst, GL.GL_COMPILE)
+    GL.glWindowPos2i(56, 2)
+    GL.glDrawPixels(6, 6, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, small)
+    GL.glEndList()
+    ctypes.memset(small, 0, ctypes.sizeof(small))
+    GL.glCallList(lst)
+
+
+@scene("draw_pixels_depth_stencil")
+def draw_pixels_depth_stencil(log):
+    pixel_ortho()
+    GL.glClearColor(0, 0, 0, 1)
+    GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT | GL.GL_STENCIL_BUFFER_BIT)
+    GL.glEnable(GL.GL_DEPTH_TEST)
+    GL.glDepthFunc(GL.GL_ALWAYS)
+    # A depth ramp (colour writes off), then a flat quad at depth 0.5.
+    GL.glColorMask(False, False, False, False)
+    ramp = (ctypes.c_float * (32 * 32))(*[x / 31.0 for y in range(32) for x in range(32)])
+    GL.glWindowPos2i(0, 0)
+    GL.glDrawPixels(32, 32, GL.GL_DEPTH_COMPONENT, GL.GL_FLOAT, ramp)
+    GL.glColorMask(True, True, True, True)
+    GL.glDepthFunc(GL.GL_LESS)
+    GL.glColor3f(0.2, 0.9, 0.4)
+    rect(0, 0, 32, 32, 0.0)
+    # Depth pixels drawn with the raster colour.
+    GL.glDepthFunc(GL.GL_ALWAYS)
+    GL.glColor3f(0.9, 0.3, 0.1)
+    GL.glWindowPos2i(0, 34)
+    GL.glDrawPixels(16, 8, GL.GL_DEPTH_COMPONENT, GL.GL_FLOAT, ramp)
+    # A stencil pattern, then a quad through the stencil test.
+    pattern = (ctypes.c_ubyte * (24 * 24))(
+        *[1 if ((x // 4) + (y // 4)) % 2 else 0 for y in range(24) for x in range(24)])
+    GL.glPixelStorei(GL.GL_UNPACK_ALIGNMENT, 1)
+    GL.glWindowPos2i(36, 4)
+    GL.glDrawPixels(24, 24, GL.GL_STENCIL_INDEX, GL.GL_UNSIGNED_BYTE, pattern)
+    GL.glPixelStorei(GL.GL_UNPACK_ALIGNMENT, 4)
+    GL.glEnable(GL.GL_STENCIL_TEST)
+    GL.glStencilFunc(GL.GL_EQUAL, 1, 0xff)
+    GL.glColor3f(0.3, 0.5, 1.0)
+    rect(32, 0, 64, 32, 0.0)
+    GL.glDisable(GL.GL_STENCIL_TEST)
+    q = (ctypes.c_uint * 1)()
+    raw15.glGenQueries(1, q)
+    GL.glDepthFunc(GL.GL_LESS)
+    GL.glBeginQuery(GL.GL_SAMPLES_PASSED, q[0])
+    img = (ctypes.c_ubyte * (16 * 16 * 4))(*gradient(16, 16, 4))
+    GL.glRasterPos3f(8, 8, 0.2)  # window z 0.4: in front where the ramp is above 0.4
+    GL.glDrawPixels(16, 16, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, img)
+    GL.glEndQuery(GL.GL_SAMPLES_PASSED)
+    log.append(f"samples passed by glDrawPixels: {query_result(q[0])}")
+
+
+GLYPHS = {
+    "A": [0x18, 0x24, 0x42, 0x7e, 0x42, 0x42, 0x42, 0x00],
+    "B": [0x7c, 0x42, 0x42, 0x7c, 0x42, 0x42, 0x7c, 0x00],
+    "C": [0x3c, 0x42, 0x40, 0x40, 0x40, 0x42, 0x3c, 0x00],
+    "x": [0x00, 0x00, 0x42, 0x24, 0x18, 0x24, 0x42, 0x00],
+}
+
+
+@scene("bitmap_text")
+def bitmap_text(log):
+    pixel_ortho()
+    GL.glClearColor(0.05, 0.05, 0.15, 1)
+    GL.glClear(GL.GL_COLOR_BUFFER_BIT)
+    GL.glPixelStorei(GL.GL_UNPACK_ALIGNMENT, 1)
+    base = GL.glGenLists(128)
+    for ch, rows in GLYPHS.items():
+        bits = (ctypes.c_ubyte * 8)(*reversed(rows))  # bottom row first
+        GL.glNewList(base + ord(ch), GL.GL_COMPILE)
+        GL.glBitmap(8, 8, 0.0, 0.0, 9.0, 0.0, bits)
+        GL.glEndList()
+    GL.glListBase(base)
+    GL.glColor3f(1.0, 1.0, 0.2)
+    GL.glRasterPos2i(2, 50)
+    text = b"ABCxABC"
+    GL.glCallLists(len(text), GL.GL_UNSIGNED_BYTE, text)
+    raster_state(log, "after the first line")
+    GL.glColor3f(0.2, 1.0, 1.0)  # the colour is latched by glRasterPos
+    GL.glWindowPos2i(2, 38)
+    GL.glCallLists(3, GL.GL_UNSIGNED_BYTE, b"CBA")
+    # Origin offsets, a 12-bit wide bitmap (two bytes a row), alignment 4.
+    GL.glPixelStorei(GL.GL_UNPACK_ALIGNMENT, 4)
+    wide = (ctypes.c_ubyte * (4 * 6))(*([0xf0, 0xf0, 0, 0, 0x0f, 0x0f, 0, 0] * 3))
+    GL.glColor3f(1.0, 0.3, 0.3)
+    GL.glWindowPos2i(20, 20)
+    GL.glBitmap(12, 6, 2.0, 1.0, 0.0, -10.0, wide)
+    GL.glBitmap(12, 6, -3.0, 0.0, 0.0, 0.0, wide)
+    # glBitmap with no image moves the raster position only.
+    GL.glBitmap(0, 0, 0.0, 0.0, 5.5, 2.0, None)
+    raster_state(log, "after the moves")
+    # Stencil-tested bitmaps. They do not overlap: Mesa's state tracker
+    # merges consecutive glBitmap calls into one cached image (one
+    # fragment where they overlap), where GL 2.1 §3.7 makes each bitmap
+    # its own fragments (shaderbox).
+    GL.glEnable(GL.GL_STENCIL_TEST)
+    GL.glClear(GL.GL_STENCIL_BUFFER_BIT)
+    GL.glStencilFunc(GL.GL_ALWAYS, 1, 0xff)
+    GL.glStencilOp(GL.GL_KEEP, GL.GL_KEEP, GL.GL_INCR)
+    GL.glColor3f(0.5, 1.0, 0.5)
+    GL.glWindowPos2i(24, 2)
+    for i in range(3):
+        GL.glBitmap(12, 6, 0.0, 0.0, 13.0, 1.0, wide)
+    GL.glDisable(GL.GL_STENCIL_TEST)
+    st = (ctypes.c_ubyte * (40 * 10))()
+    GL.glReadPixels(24, 2, 40, 10, GL.GL_STENCIL_INDEX, GL.GL_UNSIGNED_BYTE, st)
+    log.append(f"stencil after three bitmaps: {sum(st)}")
+
+
+@scene("copy_pixels")
+def copy_pixels(log):
+    pixel_ortho()
+    GL.glClearColor(0.0, 0.0, 0.0, 1)
+    GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT | GL.GL_STENCIL_BUFFER_BIT)
+    GL.glBegin(GL.GL_QUADS)
+    GL.glColor3f(1, 0, 0); GL.glVertex2f(0, 0)
+    GL.glColor3f(0, 1, 0); GL.glVertex2f(16, 0)
+    GL.glColor3f(0, 0, 1); GL.glVertex2f(16, 16)
+    GL.glColor3f(1, 1, 1); GL.glVertex2f(0, 16)
+    GL.glEnd()
+    GL.glRasterPos2i(20, 0)
+    GL.glCopyPixels(0, 0, 16, 16, GL.GL_COLOR)
+    # A zoom with no pixel center on a column boundary in range: where
+    # one lies exactly on a boundary, Mesa (a textured quad) may round
+    # either way.
+    GL.glPixelZoom(1.37, 2.0)
+    GL.glWindowPos2i(40, 0)
+    GL.glCopyPixels(0, 0, 16, 16, GL.GL_COLOR)
+    GL.glPixelZoom(1.0, 1.0)
+    # Overlapping copy onto itself, shifted.
+    GL.glWindowPos2i(4, 4)
+    GL.glCopyPixels(0, 0, 12, 12, GL.GL_COLOR)
+    # Partly outside the window (reads outside are undefined: kept inside).
+    GL.glWindowPos2i(56, 40)
+    GL.glCopyPixels(0, 0, 16, 16, GL.GL_COLOR)
+    # Depth: draw a tilted quad's depth, copy it, then draw through it.
+    GL.glEnable(GL.GL_DEPTH_TEST)
+    GL.glColorMask(False, False, False, False)
+    GL.glBegin(GL.GL_QUADS)
+    GL.glVertex3f(0, 40, -0.9); GL.glVertex3f(16, 40, 0.9)
+    GL.glVertex3f(16, 56, 0.9); GL.glVertex3f(0, 56, -0.9)
+    GL.glEnd()
+    GL.glColorMask(True, True, True, True)
+    GL.glDepthFunc(GL.GL_ALWAYS)
+    GL.glWindowPos2i(20, 40)
+    GL.glCopyPixels(0, 40, 16, 16, GL.GL_DEPTH)
+    GL.glDepthFunc(GL.GL_LESS)
+    GL.glColor3f(1.0, 0.6, 0.0)
+    rect(18, 38, 38, 58, 0.0)
+    # Stencil copy.
+    GL.glEnable(GL.GL_STENCIL_TEST)
+    GL.glStencilFunc(GL.GL_ALWAYS, 3, 0xff)
+    GL.glStencilOp(GL.GL_KEEP, GL.GL_KEEP, GL.GL_REPLACE)
+    GL.glDisable(GL.GL_DEPTH_TEST)
+    GL.glColorMask(False, False, False, False)
+    rect(40, 40, 46, 50)
+    GL.glColorMask(True, True, True, True)
+    GL.glWindowPos2i(48, 40)
+    GL.glCopyPixels(40, 40, 8, 12, GL.GL_STENCIL)
+    GL.glStencilFunc(GL.GL_EQUAL, 3, 0xff)
+    GL.glStencilOp(GL.GL_KEEP, GL.GL_KEEP, GL.GL_KEEP)
+    GL.glColor3f(0.6, 0.2, 1.0)
+    rect(38, 38, 64, 56)
+    GL.glDisable(GL.GL_STENCIL_TEST)
+
+
+@scene("err_pixel_path", 8, 8)
+def err_pixel_path(log):
+    px = (ctypes.c_ubyte * 256)()
+    check(log, "glDrawPixels(w -1)", raw10.glDrawPixels, -1, 1, GL.GL_RGBA,
+          GL.GL_UNSIGNED_BYTE, px)
+    check(log, "glDrawPixels(bad format)", raw10.glDrawPixels, 1, 1, GL.GL_LESS,
+          GL.GL_UNSIGNED_BYTE, px)
+    check(log, "glDrawPixels(bad type)", raw10.glDrawPixels, 1, 1, GL.GL_RGBA, GL.GL_LESS, px)
+    check(log, "glDrawPixels(RGBA, 5_6_5)", raw10.glDrawPixels, 1, 1, GL.GL_RGBA,
+          GL.GL_UNSIGNED_SHORT_5_6_5, px)
+    check(log, "glDrawPixels(RGBA, BITMAP)", raw10.glDrawPixels, 1, 1, GL.GL_RGBA,
+          GL.GL_BITMAP, px)
+    check(log, "glDrawPixels(RGB, 5_6_5)", raw10.glDrawPixels, 1, 1, GL.GL_RGB,
+          GL.GL_UNSIGNED_SHORT_5_6_5, px)
+    check(log, "glDrawPixels(DEPTH_COMPONENT)", raw10.glDrawPixels, 1, 1,
+          GL.GL_DEPTH_COMPONENT, GL.GL_FLOAT, px)
+    check(log, "glBitmap(h -1)", raw10.glBitmap, 1, -1, 0.0, 0.0, 0.0, 0.0, px)
+    check(log, "glBitmap", raw10.glBitmap, 8, 1, 0.0, 0.0, 1.0, 0.0, px)
+    check(log, "glCopyPixels(bad type)", raw10.glCopyPixels, 0, 0, 1, 1, GL.GL_RGBA)
+    check(log, "glCopyPixels(w -1)", raw10.glCopyPixels, 0, 0, -1, 1, GL.GL_COLOR)
+    check(log, "glCopyPixels(DEPTH)", raw10.glCopyPixels, 0, 0, 2, 2, GL.GL_DEPTH)
+    check(log, "glRasterPos2f", GL.glRasterPos2f, 0.0, 0.0)
+    check(log, "glWindowPos2f", GL.glWindowPos2f, 1.0, 1.0)
+    # A framebuffer object without depth or stencil attachments.
+    fb = GL.glGenFramebuffers(1)
+    rb = GL.glGenRenderbuffers(1)
+    GL.glBindRenderbuffer(GL.GL_RENDERBUFFER, rb)
+    GL.glRenderbufferStorage(GL.GL_RENDERBUFFER, GL.GL_RGBA8, 8, 8)
+    GL.glBindFramebuffer(GL.GL_FRAMEBUFFER, fb)
+    GL.glFramebufferRenderbuffer(GL.GL_FRAMEBUFFER, GL.GL_COLOR_ATTACHMENT0,
+                                 GL.GL_RENDERBUFFER, rb)
+    check(log, "FBO glDrawPixels(DEPTH_COMPONENT)", raw10.glDrawPixels, 1, 1,
+          GL.GL_DEPTH_COMPONENT, GL.GL_FLOAT, px)
+    check(log, "FBO glDrawPixels(STENCIL_INDEX)", raw10.glDrawPixels, 1, 1,
+          GL.GL_STENCIL_INDEX, GL.GL_UNSIGNED_BYTE, px)
+    check(log, "FBO glCopyPixels(DEPTH)", raw10.glCopyPixels, 0, 0, 1, 1, GL.GL_DEPTH)
+    check(log, "FBO glCopyPixels(COLOR)", raw10.glCopyPixels, 0, 0, 1, 1, GL.GL_COLOR)
+    GL.glBindFramebuffer(GL.GL_FRAMEBUFFER, 0)
+    for what, f, args in (
+            ("glRasterPos2f", GL.glRasterPos2f, (0.0, 0.0)),
+            ("glWindowPos2f", GL.glWindowPos2f, (0.0, 0.0)),
+            ("glDrawPixels", raw10.glDrawPixels, (1, 1, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, px)),
+            ("glBitmap", raw10.glBitmap, (1, 1, 0.0, 0.0, 0.0, 0.0, px)),
+            ("glCopyPixels", raw10.glCopyPixels, (0, 0, 1, 1, GL.GL_COLOR))):
+        errors()
+        GL.glBegin(GL.GL_POINTS)
+        f(*args)
+        GL.glEnd()
+        log.append(f"inside begin/end {what}: {errors()}")
+    return False
+
+
 if __name__ == "__main__":
     main()
