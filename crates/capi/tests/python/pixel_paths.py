@@ -576,5 +576,99 @@ def err_pixel_path(log):
     return False
 
 
+@scene("array_draws_in_lists")
+def array_draws_in_lists(log):
+    import math
+    GL.glClearColor(0.1, 0.1, 0.1, 1)
+    GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT)
+    GL.glMatrixMode(GL.GL_PROJECTION)
+    GL.glLoadIdentity()
+    GL.glOrtho(-2, 2, -2, 2, -5, 5)
+    GL.glMatrixMode(GL.GL_MODELVIEW)
+    GL.glLoadIdentity()
+    GL.glEnable(GL.GL_DEPTH_TEST)
+    # A lit sphere from client arrays (positions = normals, colours),
+    # drawn by glDrawElements into a list.
+    slices, stacks = 16, 10
+    pos, col = [], []
+    for i in range(stacks + 1):
+        a = math.pi * i / stacks
+        for j in range(slices + 1):
+            b = 2 * math.pi * j / slices
+            n = (math.sin(a) * math.cos(b), math.sin(a) * math.sin(b), math.cos(a))
+            pos.extend(n)
+            col.extend((0.5 + 0.5 * n[0], 0.5 + 0.5 * n[1], 0.8, 1.0))
+    idx = []
+    for i in range(stacks):
+        for j in range(slices):
+            a, b = i * (slices + 1) + j, (i + 1) * (slices + 1) + j
+            idx.extend((a, b, b + 1, a, b + 1, a + 1))
+    P = (ctypes.c_float * len(pos))(*pos)
+    C = (ctypes.c_float * len(col))(*col)
+    I = (ctypes.c_ushort * len(idx))(*idx)
+    GL.glEnableClientState(GL.GL_VERTEX_ARRAY)
+    GL.glEnableClientState(GL.GL_NORMAL_ARRAY)
+    GL.glEnableClientState(GL.GL_COLOR_ARRAY)
+    GL.glVertexPointer(3, GL.GL_FLOAT, 0, P)
+    GL.glNormalPointer(GL.GL_FLOAT, 0, P)
+    GL.glColorPointer(4, GL.GL_FLOAT, 0, C)
+    base = GL.glGenLists(4)
+    GL.glNewList(base, GL.GL_COMPILE)
+    GL.glDrawElements(GL.GL_TRIANGLES, len(idx), GL.GL_UNSIGNED_SHORT, I)
+    GL.glEndList()
+    # glDrawArrays and glMultiDrawArrays of a strip, glDrawRangeElements.
+    strip = (ctypes.c_float * 16)(-0.5, -0.25, 0.5, -0.25, -0.5, 0.25, 0.5, 0.25,
+                                  -0.25, -0.5, 0.25, -0.5, -0.25, 0.5, 0.25, 0.5)
+    GL.glDisableClientState(GL.GL_NORMAL_ARRAY)
+    GL.glDisableClientState(GL.GL_COLOR_ARRAY)
+    GL.glVertexPointer(2, GL.GL_FLOAT, 0, strip)
+    GL.glNewList(base + 1, GL.GL_COMPILE)
+    GL.glColor3f(1.0, 0.5, 0.1)
+    GL.glDrawArrays(GL.GL_TRIANGLE_STRIP, 0, 4)
+    GL.glEndList()
+    GL.glNewList(base + 2, GL.GL_COMPILE)
+    firsts = (ctypes.c_int * 2)(0, 4)
+    counts = (ctypes.c_int * 2)(4, 4)
+    GL.glColor3f(0.2, 0.9, 0.3)
+    GL.glMultiDrawArrays(GL.GL_TRIANGLE_FAN, firsts, counts, 2)
+    ri = (ctypes.c_ubyte * 3)(4, 5, 6)
+    GL.glColor3f(0.9, 0.9, 0.9)
+    GL.glDrawRangeElements(GL.GL_TRIANGLES, 4, 6, 3, GL.GL_UNSIGNED_BYTE, ri)
+    GL.glEndList()
+    # From a vertex buffer object, compiled and executed.
+    vbo = GL.glGenBuffers(1)
+    GL.glBindBuffer(GL.GL_ARRAY_BUFFER, vbo)
+    GL.glBufferData(GL.GL_ARRAY_BUFFER, ctypes.sizeof(strip), strip, GL.GL_STATIC_DRAW)
+    GL.glVertexPointer(2, GL.GL_FLOAT, 0, None)
+    GL.glNewList(base + 3, GL.GL_COMPILE_AND_EXECUTE)
+    GL.glPushMatrix()
+    GL.glTranslatef(-1.4, 1.4, 1.0)
+    GL.glColor3f(0.3, 0.3, 1.0)
+    GL.glDrawArrays(GL.GL_TRIANGLE_STRIP, 4, 4)
+    GL.glPopMatrix()
+    GL.glEndList()
+    GL.glBindBuffer(GL.GL_ARRAY_BUFFER, 0)
+    # The client memory changes after compiling: the lists keep the values.
+    for arr in (P, C, strip):
+        ctypes.memset(arr, 0, ctypes.sizeof(arr))
+    GL.glDisableClientState(GL.GL_VERTEX_ARRAY)
+    GL.glEnable(GL.GL_LIGHTING)
+    GL.glEnable(GL.GL_LIGHT0)
+    GL.glEnable(GL.GL_COLOR_MATERIAL)
+    GL.glLightfv(GL.GL_LIGHT0, GL.GL_POSITION, (0.5, 0.5, 1.0, 0.0))
+    GL.glPushMatrix()
+    GL.glTranslatef(0.6, -0.6, 0.0)
+    GL.glCallList(base)
+    GL.glPopMatrix()
+    GL.glDisable(GL.GL_LIGHTING)
+    GL.glPushMatrix()
+    GL.glTranslatef(-1.2, -1.2, 2.0)
+    GL.glCallList(base + 1)
+    GL.glTranslatef(0.02, 2.23, 0.0)
+    GL.glCallList(base + 2)
+    GL.glPopMatrix()
+    log.append(f"errors after replay: {errors()}")
+
+
 if __name__ == "__main__":
     main()
