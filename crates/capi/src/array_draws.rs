@@ -49,6 +49,10 @@ fn apply(c: &mut OsContext, vals: &[(AttribSource, [f32; 4])]) {
     }
 }
 
+/// Most array elements one draw compiled into a display list may have
+/// (more: GL_OUT_OF_MEMORY when the list runs).
+pub const MAX_COMPILED_ELEMENTS: usize = 1 << 20;
+
 /// Compiles a vertex-array draw into the display list being compiled
 /// (GL 2.1 §5.4: array data is dereferenced at compile time): the
 /// elements `indices` are fetched now, and the list replays them as
@@ -59,6 +63,7 @@ pub(crate) fn compile_draw(c: &mut OsContext, mode: u32, indices: Result<Vec<u32
     let rec: Result<Vec<Vec<(AttribSource, [f32; 4])>>, u32> = match indices {
         Err(e) => Err(e),
         Ok(_) if mode > GL_POLYGON => Err(GL_INVALID_ENUM),
+        Ok(idx) if idx.len() > MAX_COMPILED_ELEMENTS => Err(GL_OUT_OF_MEMORY),
         Ok(idx) => Ok(idx.iter().map(|&i| element_values(c, i)).collect()),
     };
     c.record(move || {
@@ -88,7 +93,7 @@ pub(crate) fn array_indices(first: GLint, count: GLsizei) -> Result<Vec<u32>, u3
     if first < 0 || count < 0 {
         return Err(GL_INVALID_VALUE);
     }
-    let n = count.min(1 << 24) as u32;
+    let n = (count as usize).min(MAX_COMPILED_ELEMENTS + 1) as u32;
     Ok((0..n).map(|i| (first as u32).saturating_add(i)).collect())
 }
 

@@ -489,8 +489,11 @@ impl Context {
             let stride = bitmap_row_bytes(w as usize, alignment);
             let x0 = (self.raster.window[0] as f64 - xorig as f64).floor();
             let y0 = (self.raster.window[1] as f64 - yorig as f64).floor();
+            let finite = x0.is_finite() && y0.is_finite();
             let (z, color) = (self.raster.window[2], self.raster.color);
-            if let Some(mut t) = self.draw_target() {
+            // (draw_target moves the framebuffer out: only when drawing.)
+            let target = if finite { self.draw_target() } else { None };
+            if let Some(mut t) = target {
                 let (fw, fh) = (t.fb.width as f64, t.fb.height as f64);
                 let mut frags = Vec::new();
                 for j in 0..h as usize {
