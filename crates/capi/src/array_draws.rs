@@ -49,6 +49,9 @@ fn apply(c: &mut OsContext, vals: &[(AttribSource, [f32; 4])]) {
     }
 }
 
+/// The attribute values of one array element ([`element_values`]).
+type ElementValues = Vec<(AttribSource, [f32; 4])>;
+
 /// Most array elements one draw compiled into a display list may have
 /// (more: GL_OUT_OF_MEMORY when the list runs).
 pub const MAX_COMPILED_ELEMENTS: usize = 1 << 20;
@@ -60,7 +63,7 @@ pub const MAX_COMPILED_ELEMENTS: usize = 1 << 20;
 /// the call is invalid; the list raises the error when it runs (as Mesa
 /// does). True when the call must not also execute now (GL_COMPILE).
 pub(crate) fn compile_draw(c: &mut OsContext, mode: u32, indices: Result<Vec<u32>, u32>) -> bool {
-    let rec: Result<Vec<Vec<(AttribSource, [f32; 4])>>, u32> = match indices {
+    let rec: Result<Vec<ElementValues>, u32> = match indices {
         Err(e) => Err(e),
         Ok(_) if mode > GL_POLYGON => Err(GL_INVALID_ENUM),
         Ok(idx) if idx.len() > MAX_COMPILED_ELEMENTS => Err(GL_OUT_OF_MEMORY),

@@ -39,8 +39,11 @@
 //!   [`Context::get_buffer_sub_data`] / [`Context::buffer_sub_data`]).
 //!
 //! ## Limitations
-//! - No display lists, selection/feedback, accumulation buffer, color index
-//!   mode, evaluators, pixel transfer (glDrawPixels/CopyPixels), queries.
+//! - No display lists (a C layer records them), selection/feedback,
+//!   accumulation buffer, color index mode, evaluators.
+//! - Occlusion queries ([`occlusion`]) and the raster-position pixel path
+//!   ([`pixel_path`]) are implemented; pixel-rectangle fragments are not
+//!   shaded (no texturing, fog or fragment shader on them).
 //! - GL_COMBINE texture-environment parameters are kept for queries
 //!   ([`Context::get_tex_envfv`]) but GL_COMBINE draws as GL_MODULATE.
 //! - glPushAttrib does not save texture-object parameters or hints.

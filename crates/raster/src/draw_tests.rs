@@ -914,7 +914,7 @@ fn samples_passed_counts_depth_test_survivors_whatever_the_threads() {
         st.depth_test = Some(CompareFunc::Less);
         fb.clear_depth(1.0, true, None);
         let idx: Vec<u32> = (0..6).collect();
-        let mut draw = |fb: &mut Framebuffer, st: &PipelineState, z: f32, x1: f32| {
+        let draw = |fb: &mut Framebuffer, st: &PipelineState, z: f32, x1: f32| {
             let pos: Vec<[f32; 2]> = full_screen()
                 .iter()
                 .map(|p| [if p[0] > 0.0 { x1 } else { -1.0 }, p[1]])
