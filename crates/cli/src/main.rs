@@ -10,7 +10,9 @@
 //!   contract, running `.shader_test` files on shaderbox's OpenGL 2.1.
 //!
 //! - `render` ([`render`]): draw a molecule with the shader library and
-//!   write a PNG.
+//!   write a PNG;
+//! - `gallery` ([`gallery`]): every library program on a fitting scene,
+//!   PNGs and an index.html.
 //!
 //! - `debug` ([`debug`]): explain one pixel of a `.shader_test`: every
 //!   fragment, the statements its shader ran with their values, and the
@@ -21,6 +23,7 @@
 
 mod check;
 mod debug;
+mod gallery;
 mod glslparsertest;
 mod guard;
 mod input;
@@ -58,6 +61,9 @@ enum Command {
     /// Draw a molecule (a PDB file, or the embedded crambin) with the
     /// shader library's sphere impostors and write a PNG.
     Render(render::Args),
+    /// Draw every program of the shader library on a fitting scene: PNGs
+    /// and an index.html.
+    Gallery(gallery::Args),
     /// Explain one pixel of a `.shader_test`: the fragments that reached
     /// it, each statement their shader ran with its values, `discard`,
     /// and the depth/stencil/blend decisions.
@@ -93,6 +99,7 @@ fn main() -> ExitCode {
         Command::GlslParserTest(args) => glslparsertest::run(&args),
         Command::ShaderRunner(args) => shader_runner::run(&args),
         Command::Render(args) => render::run(&args).into(),
+        Command::Gallery(args) => gallery::run(&args).into(),
         Command::Debug(args) => debug::run(&args).into(),
     }
 }

@@ -295,3 +295,56 @@ fn export_scene_writes_the_gl_calls() {
     ]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// RGB(A) pixels of a PNG.
+fn png_pixels(path: &std::path::Path) -> Vec<[u8; 3]> {
+    let file = std::fs::File::open(path).unwrap();
+    let mut r = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .unwrap();
+    let mut buf = vec![0; r.output_buffer_size()];
+    let info = r.next_frame(&mut buf).unwrap();
+    let n = info.color_type.samples();
+    buf[..info.buffer_size()]
+        .chunks(n)
+        .map(|c| [c[0], c[1], c[2]])
+        .collect()
+}
+
+#[test]
+fn gallery_writes_every_picture_and_the_page() {
+    let d = dir("gallery");
+    let o = shaderbox(&["gallery", "-o", d.to_str().unwrap(), "--size", "48"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let html = std::fs::read_to_string(d.join("index.html")).unwrap();
+    let pictures: Vec<&str> = html
+        .split("src=\"")
+        .skip(1)
+        .filter_map(|s| s.split('"').next())
+        .collect();
+    // One picture per library program, six for single-texture's modes.
+    assert_eq!(pictures.len(), 21, "{pictures:?}");
+    for name in [
+        "sphere",
+        "cylinder",
+        "volume",
+        "wireframe",
+        "toon",
+        "single-texture-blend",
+    ] {
+        assert!(pictures.contains(&format!("{name}.png").as_str()), "{name}");
+    }
+    for p in &pictures {
+        let px = png_pixels(&d.join(p));
+        assert_eq!(px.len(), 48 * 48, "{p}");
+        // Not blank: a tenth of the pixels differ from the corner
+        // (background) and there are several colours.
+        let bg = px[0];
+        let drawn = px.iter().filter(|c| **c != bg).count();
+        assert!(drawn > 48 * 48 / 10, "{p}: {drawn} drawn pixels");
+        let mut colours = px.clone();
+        colours.sort_unstable();
+        colours.dedup();
+        assert!(colours.len() > 8, "{p}: {} colours", colours.len());
+    }
+}

@@ -8,7 +8,8 @@ use glsl::math::{self, flush_denormal};
 use glsl::types::Scalar;
 
 /// Loop iterations (summed over every loop, counted once per iteration of
-/// the lane group) one `Kernel::run` may execute before it fails with
+/// the lane group), plus subroutine calls when functions are not inlined,
+/// that one `Kernel::run` may execute before it fails with
 /// [`ExecError::LoopBudget`].
 pub const LOOP_BUDGET: u64 = 1 << 24;
 
@@ -102,7 +103,9 @@ impl Hook for PrintHook<'_> {
     }
 }
 
+#[cfg(test)]
 pub(crate) struct NoHook;
+#[cfg(test)]
 impl Hook for NoHook {}
 
 /// Reports statements and stores of one lane to a [`Trace`].
@@ -246,8 +249,19 @@ pub(crate) fn run<H: Hook>(
                     ftz(f(acc[l]) + prod)
                 });
             }
-            Op::F1 { f: func, d, a } => un!(d, a, |x| ftz(func(f(x)))),
-            Op::F2 { f: func, d, a, b } => bin!(d, a, b, |x, y| ftz(func(f(x), f(y)))),
+            Op::Dot { d, n, a, b } => {
+                let mut acc = [0u32; LANES];
+                for k in 0..(n as usize).min(4) {
+                    let (x, y) = (r[a[k] as usize], r[b[k] as usize]);
+                    acc = lanes(|l| {
+                        let prod = flush_denormal(f(x[l]) * f(y[l]));
+                        ftz(f(acc[l]) + prod)
+                    });
+                }
+                r[d as usize] = acc;
+            }
+            Op::F1 { f: func, d, a } => un!(d, a, |x| ftz(func.eval(f(x)))),
+            Op::F2 { f: func, d, a, b } => bin!(d, a, b, |x, y| ftz(func.eval(f(x), f(y)))),
             Op::F3 {
                 f: func,
                 d,
@@ -256,7 +270,7 @@ pub(crate) fn run<H: Hook>(
                 c,
             } => {
                 let (a, b, c) = (r[a as usize], r[b as usize], r[c as usize]);
-                r[d as usize] = lanes(|l| ftz(func(f(a[l]), f(b[l]), f(c[l]))));
+                r[d as usize] = lanes(|l| ftz(func.eval(f(a[l]), f(b[l]), f(c[l]))));
             }
             Op::FLt { d, a, b } => bin!(d, a, b, |x, y| (f(x) < f(y)) as u32),
             Op::FLe { d, a, b } => bin!(d, a, b, |x, y| (f(x) <= f(y)) as u32),

@@ -89,23 +89,52 @@
 //! (source span) and every store (register, bits); [`Kernel::variables`]
 //! names the registers of globals and (inlined) locals.
 //!
+//! ## Execution
+//! [`Kernel::new`] also rewrites the program for the executor (`engine`):
+//! constants, uniform words and what is computed from them alone move to a
+//! prologue run once per `run` (or once per draw: [`Kernel::prepare`] and
+//! [`Kernel::run_prepared`]); dead ops go; `t = op(..); var = t` becomes one
+//! op writing `var` under the mask; the register file is reused per thread
+//! and only registers read before written are zeroed. `min`, `max`,
+//! `clamp`, `mix`, `step`, `smoothstep`, `abs`, `sign`, `floor`, `ceil`,
+//! `fract`, `mod`, `sqrt`, `inversesqrt` run inline over the 16 lanes (the
+//! same bits as `glsl::math`, tested on over a million inputs each); the
+//! transcendental functions call `glsl::math` per lane. The executor is
+//! compiled three times (baseline, AVX2, AVX-512), chosen at run time
+//! ([`Variant`], [`kernel_variant`], [`set_kernel_variant`]; environment
+//! variable `SHADERBOX_KERNEL=portable|avx2|avx512`, default AVX2 when the
+//! CPU has it); every variant computes the same bits (tested).
+//! [`Kernel::run_traced`] runs the unrewritten program with the reference
+//! interpreter (`interp`, which tests compare the executor against), so
+//! tracing costs nothing when off.
+//!
+//! [`Kernel::depth_only`] slices a fragment kernel down to `gl_FragDepth`
+//! and `discard`, for renderers that depth-test before shading colour.
+//!
 //! ## Limitations
 //! - Derivatives are coarse per row/column of a quad.
-//! - The interpreter decodes ops once (an enum over register indices) but
-//!   dispatches per op per lane group, and allocates the register file per
-//!   run; constants are materialized by ops where used. About 50 ns per op
-//!   per 16-lane batch (release, with `sin` in the mix).
+//! - One dispatch per op per 16-lane batch (an enum of 44 bytes); `pow`,
+//!   `exp`, `log`, `sin` and the other transcendental functions are scalar
+//!   `libm` calls per lane. Subroutine calls count against
+//!   [`LOOP_BUDGET`] like loop iterations.
 //! - Programs beyond [`limits::MAX_REGISTERS`] registers or
 //!   [`limits::MAX_OPS`] instructions are refused.
 
+mod depth_slice;
+mod engine;
 mod interface;
 mod interp;
+mod liveness;
 mod lower;
 mod program;
+mod variant;
 
 pub use interface::{kinds, size_of, Interface, Slot};
 pub use interp::LOOP_BUDGET;
 pub use program::{StatementMark, VarInfo};
+pub use variant::{
+    current as kernel_variant, set_variant as set_kernel_variant, supported_variants, Variant,
+};
 
 use glsl::types::SamplerKind;
 use glsl::Span;
@@ -241,6 +270,19 @@ pub struct Kernel {
     inputs: Vec<(usize, u32, glsl::types::Scalar)>,
     outputs: Vec<(u32, usize, glsl::types::Scalar)>,
     loop_budget: u64,
+    /// The program rewritten for [`engine::run`].
+    code: std::sync::Arc<engine::Code>,
+    /// [`Kernel::depth_only`], computed on first use (shared by clones).
+    depth: std::sync::Arc<std::sync::OnceLock<Option<Kernel>>>,
+}
+
+/// A kernel's uniform-only values, computed once for a set of uniform
+/// words ([`Kernel::prepare`]) and reused by [`Kernel::run_prepared`].
+#[derive(Clone, Debug)]
+pub struct Prepared {
+    code: std::sync::Arc<engine::Code>,
+    pool: Vec<[u32; LANES]>,
+    uniforms: Vec<u32>,
 }
 
 impl Kernel {
@@ -257,14 +299,36 @@ impl Kernel {
         limit: u64,
     ) -> Result<Kernel, ExecError> {
         let l = lower::lower(stage, limit)?;
-        Ok(Kernel {
-            stage: stage.stage,
-            program: l.program,
-            interface: l.interface,
-            inputs: l.inputs,
-            outputs: l.outputs,
-            loop_budget: LOOP_BUDGET,
-        })
+        Ok(Kernel::assemble(
+            stage.stage,
+            l.program,
+            l.interface,
+            l.inputs,
+            l.outputs,
+            LOOP_BUDGET,
+        ))
+    }
+
+    fn assemble(
+        stage: glsl::Stage,
+        program: program::Program,
+        interface: Interface,
+        inputs: Vec<(usize, u32, glsl::types::Scalar)>,
+        outputs: Vec<(u32, usize, glsl::types::Scalar)>,
+        loop_budget: u64,
+    ) -> Kernel {
+        let live_out: Vec<u32> = outputs.iter().map(|&(r, _, _)| r).collect();
+        let code = std::sync::Arc::new(engine::compile(&program, &live_out));
+        Kernel {
+            stage,
+            program,
+            interface,
+            inputs,
+            outputs,
+            loop_budget,
+            code,
+            depth: Default::default(),
+        }
     }
 
     /// Sets the loop iteration budget of each `run` (default
@@ -283,6 +347,59 @@ impl Kernel {
 
     /// Runs `main` on the active (and helper) lanes of `batch`.
     pub fn run(
+        &self,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+    ) -> Result<(), ExecError> {
+        engine::run(self, &self.code, batch, uniforms, textures, None)
+    }
+
+    /// The uniform-only values of this kernel for `uniforms` (constants,
+    /// uniform words and what is computed from them alone), for
+    /// [`Kernel::run_prepared`]: a renderer computes them once per draw.
+    pub fn prepare(&self, uniforms: &[u32]) -> Prepared {
+        Prepared {
+            code: self.code.clone(),
+            pool: engine::prepare(&self.code, uniforms),
+            uniforms: uniforms.to_vec(),
+        }
+    }
+
+    /// [`Kernel::run`] with the uniforms of `prepared` (made by
+    /// [`Kernel::prepare`] of this kernel or a clone of it; with another
+    /// kernel's, the values are recomputed, at the cost of a run).
+    pub fn run_prepared(
+        &self,
+        batch: &mut Batch,
+        prepared: &Prepared,
+        textures: &dyn Textures,
+    ) -> Result<(), ExecError> {
+        engine::run(
+            self,
+            &self.code,
+            batch,
+            &prepared.uniforms,
+            textures,
+            std::sync::Arc::ptr_eq(&self.code, &prepared.code).then_some(&prepared.pool[..]),
+        )
+    }
+
+    /// [`Kernel::run`] with a given executor variant, for tests.
+    #[cfg(test)]
+    pub(crate) fn run_variant(
+        &self,
+        v: Variant,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+    ) -> Result<(), ExecError> {
+        engine::run_on(v, self, &self.code, batch, uniforms, textures, None)
+    }
+
+    /// The reference interpreter (what `run_traced` uses), for tests.
+    #[cfg(test)]
+    pub(crate) fn run_reference(
         &self,
         batch: &mut Batch,
         uniforms: &[u32],
@@ -313,6 +430,60 @@ impl Kernel {
             stmt_at,
         };
         interp::run(self, batch, uniforms, textures, &mut hook)
+    }
+
+    /// A kernel computing only what decides a fragment's fate: the
+    /// `gl_FragDepth` output and [`Batch::discarded`], for a renderer that
+    /// runs it on every covered fragment, depth-tests, and runs the full
+    /// kernel only on the survivors (with their quads' other lanes as
+    /// helpers, for derivatives).
+    ///
+    /// Same interface as `self` (inputs, uniform words, output slots); on
+    /// the active lanes it writes the bits `self` writes to `gl_FragDepth`
+    /// and discards the same lanes (and fails with the same
+    /// [`ExecError::LoopBudget`]); it leaves every other output as it was
+    /// in the batch. All control flow is kept; ops whose results only feed
+    /// other outputs are dropped (a backward liveness analysis over the
+    /// program, loops iterated to a fixpoint). GLSL 1.10/1.20 fragment
+    /// shaders have no side effect besides their outputs, so running the
+    /// slice first never changes what the full kernel computes.
+    ///
+    /// `None` for a vertex kernel, a fragment kernel that does not write
+    /// `gl_FragDepth`, or when the slice would keep more than 80 % of the
+    /// ops (not worth a second pass).
+    ///
+    /// The slice is computed once per kernel (and its clones) and cached.
+    pub fn depth_only(&self) -> Option<Kernel> {
+        let mut k = self.depth.get_or_init(|| self.slice_depth()).clone()?;
+        k.loop_budget = self.loop_budget;
+        Some(k)
+    }
+
+    fn slice_depth(&self) -> Option<Kernel> {
+        if self.stage != glsl::Stage::Fragment {
+            return None;
+        }
+        let slot = self.interface.output("gl_FragDepth")?;
+        if !slot.written {
+            return None;
+        }
+        let range = slot.offset..slot.offset + slot.components;
+        let outputs: Vec<_> = self
+            .outputs
+            .iter()
+            .copied()
+            .filter(|&(_, oc, _)| range.contains(&oc))
+            .collect();
+        let live_out: Vec<u32> = outputs.iter().map(|&(r, _, _)| r).collect();
+        let program = depth_slice::slice(&self.program, &live_out)?;
+        Some(Kernel::assemble(
+            self.stage,
+            program,
+            self.interface.clone(),
+            self.inputs.clone(),
+            outputs,
+            self.loop_budget,
+        ))
     }
 
     /// Like [`Kernel::run`], reporting what each active (non-helper) lane

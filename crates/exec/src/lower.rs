@@ -29,7 +29,6 @@ use glsl::ir::{
     LocalId, Module, ParamQualifier, Stage, Stmt, Storage, UnaryOp,
 };
 use glsl::link::LinkedStage;
-use glsl::math;
 use glsl::types::{ArraySize, Base, SamplerKind, Scalar, Type};
 use glsl::Span;
 
@@ -1303,18 +1302,12 @@ impl<'m> Lowerer<'m> {
             return unsupported("matrix product of mismatched shapes");
         }
         let out = self.temps(rc * lr)?;
-        let zero = 0.0f32.to_bits();
         for c in 0..rc {
             for row in 0..lr {
                 let d = out[c * lr + row];
-                self.emit(Op::Const { d, bits: zero })?;
-                for k in 0..lc {
-                    self.emit(Op::FMac {
-                        d,
-                        a: a[k * lr + row],
-                        b: b[c * rr + k],
-                    })?;
-                }
+                let pairs: Vec<(Reg, Reg)> =
+                    (0..lc).map(|k| (a[k * lr + row], b[c * rr + k])).collect();
+                self.emit_dot(d, &pairs)?;
             }
         }
         Ok(out)
@@ -1650,6 +1643,9 @@ impl<'m> Lowerer<'m> {
             let entry = self.pc();
             let fs = self.new_slot();
             self.emit(Op::SaveMask { slot: fs })?;
+            // Calls count against the loop budget: a call tree that doubles
+            // at every level (2^64 calls) must not hang.
+            self.emit(Op::LoopIter)?;
             self.ctx.push((CtxKind::Function, fs));
             self.frames.push(Frame {
                 func: f,
@@ -1793,20 +1789,42 @@ impl<'m> Lowerer<'m> {
 
     /// `dot`, summed left to right from 0.0 like `glsl::math::dot`.
     fn dot(&mut self, a: &[Reg], b: &[Reg]) -> R<Reg> {
-        let d = self.fconst(0.0)?;
-        for (&x, &y) in a.iter().zip(b) {
+        let d = self.temp()?;
+        let pairs: Vec<(Reg, Reg)> = a.iter().copied().zip(b.iter().copied()).collect();
+        self.emit_dot(d, &pairs)?;
+        Ok(d)
+    }
+
+    /// `d = 0.0`, then `d += a * b` for each pair in order: one
+    /// [`Op::Dot`] for up to 4 pairs, else a [`Op::FMac`] chain.
+    fn emit_dot(&mut self, d: Reg, pairs: &[(Reg, Reg)]) -> R<()> {
+        if (1..=4).contains(&pairs.len()) {
+            let mut a = [0; 4];
+            let mut b = [0; 4];
+            for (k, &(x, y)) in pairs.iter().enumerate() {
+                a[k] = x;
+                b[k] = y;
+            }
+            return self.emit(Op::Dot {
+                d,
+                n: pairs.len() as u8,
+                a,
+                b,
+            });
+        }
+        self.emit(Op::Const {
+            d,
+            bits: 0.0f32.to_bits(),
+        })?;
+        for &(x, y) in pairs {
             self.emit(Op::FMac { d, a: x, b: y })?;
         }
-        Ok(d)
+        Ok(())
     }
 
     fn sqrt(&mut self, a: Reg) -> R<Reg> {
         let d = self.temp()?;
-        self.emit(Op::F1 {
-            f: math::sqrt,
-            d,
-            a,
-        })?;
+        self.emit(Op::F1 { f: F1::Sqrt, d, a })?;
         Ok(d)
     }
 
@@ -1841,34 +1859,34 @@ impl<'m> Lowerer<'m> {
         let fadd = |d, a, b| Op::FAdd { d, a, b };
         let flt = |d, a, b| Op::FLt { d, a, b };
         match f {
-            B::Radians => self.map1(arg(0)?, math::radians),
-            B::Degrees => self.map1(arg(0)?, math::degrees),
-            B::Sin => self.map1(arg(0)?, math::sin),
-            B::Cos => self.map1(arg(0)?, math::cos),
-            B::Tan => self.map1(arg(0)?, math::tan),
-            B::Asin => self.map1(arg(0)?, math::asin),
-            B::Acos => self.map1(arg(0)?, math::acos),
-            B::Atan if args.len() == 1 => self.map1(arg(0)?, math::atan),
-            B::Atan => self.map2(arg(0)?, arg(1)?, math::atan2),
-            B::Pow => self.map2(arg(0)?, arg(1)?, math::pow),
-            B::Exp => self.map1(arg(0)?, math::exp),
-            B::Log => self.map1(arg(0)?, math::log),
-            B::Exp2 => self.map1(arg(0)?, math::exp2),
-            B::Log2 => self.map1(arg(0)?, math::log2),
-            B::Sqrt => self.map1(arg(0)?, math::sqrt),
-            B::InverseSqrt => self.map1(arg(0)?, math::inversesqrt),
-            B::Abs => self.map1(arg(0)?, math::abs),
-            B::Sign => self.map1(arg(0)?, math::sign),
-            B::Floor => self.map1(arg(0)?, math::floor),
-            B::Ceil => self.map1(arg(0)?, math::ceil),
-            B::Fract => self.map1(arg(0)?, math::fract),
-            B::Mod => self.map2(arg(0)?, arg(1)?, math::modulo),
-            B::Min => self.map2(arg(0)?, arg(1)?, math::min),
-            B::Max => self.map2(arg(0)?, arg(1)?, math::max),
-            B::Clamp => self.map3(arg(0)?, arg(1)?, arg(2)?, math::clamp),
-            B::Mix => self.map3(arg(0)?, arg(1)?, arg(2)?, math::mix),
-            B::Step => self.map2(arg(0)?, arg(1)?, math::step),
-            B::SmoothStep => self.map3(arg(0)?, arg(1)?, arg(2)?, math::smoothstep),
+            B::Radians => self.map1(arg(0)?, F1::Radians),
+            B::Degrees => self.map1(arg(0)?, F1::Degrees),
+            B::Sin => self.map1(arg(0)?, F1::Sin),
+            B::Cos => self.map1(arg(0)?, F1::Cos),
+            B::Tan => self.map1(arg(0)?, F1::Tan),
+            B::Asin => self.map1(arg(0)?, F1::Asin),
+            B::Acos => self.map1(arg(0)?, F1::Acos),
+            B::Atan if args.len() == 1 => self.map1(arg(0)?, F1::Atan),
+            B::Atan => self.map2(arg(0)?, arg(1)?, F2::Atan2),
+            B::Pow => self.map2(arg(0)?, arg(1)?, F2::Pow),
+            B::Exp => self.map1(arg(0)?, F1::Exp),
+            B::Log => self.map1(arg(0)?, F1::Log),
+            B::Exp2 => self.map1(arg(0)?, F1::Exp2),
+            B::Log2 => self.map1(arg(0)?, F1::Log2),
+            B::Sqrt => self.map1(arg(0)?, F1::Sqrt),
+            B::InverseSqrt => self.map1(arg(0)?, F1::InverseSqrt),
+            B::Abs => self.map1(arg(0)?, F1::Abs),
+            B::Sign => self.map1(arg(0)?, F1::Sign),
+            B::Floor => self.map1(arg(0)?, F1::Floor),
+            B::Ceil => self.map1(arg(0)?, F1::Ceil),
+            B::Fract => self.map1(arg(0)?, F1::Fract),
+            B::Mod => self.map2(arg(0)?, arg(1)?, F2::Mod),
+            B::Min => self.map2(arg(0)?, arg(1)?, F2::Min),
+            B::Max => self.map2(arg(0)?, arg(1)?, F2::Max),
+            B::Clamp => self.map3(arg(0)?, arg(1)?, arg(2)?, F3::Clamp),
+            B::Mix => self.map3(arg(0)?, arg(1)?, arg(2)?, F3::Mix),
+            B::Step => self.map2(arg(0)?, arg(1)?, F2::Step),
+            B::SmoothStep => self.map3(arg(0)?, arg(1)?, arg(2)?, F3::SmoothStep),
             B::Length => {
                 let x = arg(0)?.clone();
                 let d = self.dot(&x, &x)?;
@@ -2056,8 +2074,8 @@ impl<'m> Lowerer<'m> {
                 let x = arg(0)?.clone();
                 let dx = self.map(&[&x], |d, v| Op::DdX { d, a: v[0] })?;
                 let dy = self.map(&[&x], |d, v| Op::DdY { d, a: v[0] })?;
-                let ax = self.map1(&dx, math::abs)?;
-                let ay = self.map1(&dy, math::abs)?;
+                let ax = self.map1(&dx, F1::Abs)?;
+                let ay = self.map1(&dy, F1::Abs)?;
                 self.map(&[&ax, &ay], fadd_op)
             }
             B::Noise1 | B::Noise2 | B::Noise3 | B::Noise4 => {

@@ -19,10 +19,101 @@ use glsl::Span;
 /// A register index.
 pub(crate) type Reg = u32;
 
-/// A function of one float (`glsl::math`).
-pub(crate) type F1 = fn(f32) -> f32;
-pub(crate) type F2 = fn(f32, f32) -> f32;
-pub(crate) type F3 = fn(f32, f32, f32) -> f32;
+/// A `glsl::math` function of one float.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum F1 {
+    Radians,
+    Degrees,
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Exp,
+    Log,
+    Exp2,
+    Log2,
+    Sqrt,
+    InverseSqrt,
+    Abs,
+    Sign,
+    Floor,
+    Ceil,
+    Fract,
+}
+
+/// A `glsl::math` function of two floats.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum F2 {
+    Atan2,
+    Pow,
+    Mod,
+    Min,
+    Max,
+    Step,
+}
+
+/// A `glsl::math` function of three floats.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum F3 {
+    Clamp,
+    Mix,
+    SmoothStep,
+}
+
+impl F1 {
+    /// The scalar function (the reference the executor matches bit for bit).
+    pub fn eval(self, x: f32) -> f32 {
+        use glsl::math as m;
+        match self {
+            F1::Radians => m::radians(x),
+            F1::Degrees => m::degrees(x),
+            F1::Sin => m::sin(x),
+            F1::Cos => m::cos(x),
+            F1::Tan => m::tan(x),
+            F1::Asin => m::asin(x),
+            F1::Acos => m::acos(x),
+            F1::Atan => m::atan(x),
+            F1::Exp => m::exp(x),
+            F1::Log => m::log(x),
+            F1::Exp2 => m::exp2(x),
+            F1::Log2 => m::log2(x),
+            F1::Sqrt => m::sqrt(x),
+            F1::InverseSqrt => m::inversesqrt(x),
+            F1::Abs => m::abs(x),
+            F1::Sign => m::sign(x),
+            F1::Floor => m::floor(x),
+            F1::Ceil => m::ceil(x),
+            F1::Fract => m::fract(x),
+        }
+    }
+}
+
+impl F2 {
+    pub fn eval(self, x: f32, y: f32) -> f32 {
+        use glsl::math as m;
+        match self {
+            F2::Atan2 => m::atan2(x, y),
+            F2::Pow => m::pow(x, y),
+            F2::Mod => m::modulo(x, y),
+            F2::Min => m::min(x, y),
+            F2::Max => m::max(x, y),
+            F2::Step => m::step(x, y),
+        }
+    }
+}
+
+impl F3 {
+    pub fn eval(self, x: f32, y: f32, z: f32) -> f32 {
+        use glsl::math as m;
+        match self {
+            F3::Clamp => m::clamp(x, y, z),
+            F3::Mix => m::mix(x, y, z),
+            F3::SmoothStep => m::smoothstep(x, y, z),
+        }
+    }
+}
 
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum Op {
@@ -76,6 +167,15 @@ pub(crate) enum Op {
         d: Reg,
         a: Reg,
         b: Reg,
+    },
+    /// `d = 0.0`, then `d += a[k] * b[k]` for `k < n` (1..=4), each
+    /// product and sum rounded and flushed (an [`Op::FMac`] chain in one
+    /// op).
+    Dot {
+        d: Reg,
+        n: u8,
+        a: [Reg; 4],
+        b: [Reg; 4],
     },
     F1 {
         f: F1,
@@ -386,7 +486,7 @@ pub(crate) struct PrintfSite {
 impl Op {
     /// Calls `f` on every register operand, with the number of registers
     /// the operand may address from there (more than 1 for gathers).
-    fn for_each_reg(&self, f: &mut dyn FnMut(Reg, u32)) {
+    pub(crate) fn for_each_reg(&self, f: &mut dyn FnMut(Reg, u32)) {
         use Op::*;
         match *self {
             Const { d, .. } | Uniform { d, .. } => f(d, 1),
@@ -456,6 +556,13 @@ impl Op {
             Noise { d, n, a, dims } => {
                 f(d, n as u32);
                 f(a, dims as u32)
+            }
+            Dot { d, n, a, b } => {
+                f(d, 1);
+                for k in 0..(n as usize).min(4) {
+                    f(a[k], 1);
+                    f(b[k], 1);
+                }
             }
             AndMask { c } | AndNotMask { c, .. } => f(c, 1),
             Texture { .. }
@@ -529,6 +636,7 @@ impl Program {
                     None => false,
                 },
                 Op::Noise { n, dims, .. } => (1..=4).contains(&n) && (1..=4).contains(&dims),
+                Op::Dot { n, .. } => (1..=4).contains(&n),
                 _ => true,
             };
             if !ok && bad.is_none() {

@@ -9,7 +9,9 @@ use glsl::types::{Scalar, Type};
 use glsl::{compile, CompileOptions};
 
 mod builtins;
+mod depth_slice;
 mod piglit;
+mod variants;
 
 pub(crate) fn link_one(stage: Stage, src: &str) -> Result<glsl::link::LinkedStage, String> {
     let sh = compile(&[src], &CompileOptions::new(stage));
@@ -60,6 +62,10 @@ fn frag_batch(k: &Kernel) -> Batch {
     b
 }
 
+pub(crate) fn bits_of(v: &[[f32; LANES]]) -> Vec<[u32; LANES]> {
+    v.iter().map(|c| c.map(f32::to_bits)).collect()
+}
+
 const FULL_MASK: LaneMask = crate::interp::FULL;
 
 /// Output `name` per component per lane.
@@ -74,8 +80,18 @@ fn frag_colors(src: &str, unis: &[(&str, &[u32])]) -> (Vec<[f32; 4]>, LaneMask) 
     let k = kernel(Stage::Fragment, src);
     let u = uniforms(&k, unis);
     let mut b = frag_batch(&k);
+    let mut reference = b.clone();
     k.run(&mut b, &u, &NoTextures).expect("runs");
     let c = output(&k, &b, "gl_FragColor");
+    // The reference interpreter computes the same bits.
+    k.run_reference(&mut reference, &u, &NoTextures)
+        .expect("runs");
+    assert_eq!(reference.discarded, b.discarded, "reference: discarded");
+    assert_eq!(
+        bits_of(&reference.outputs),
+        bits_of(&b.outputs),
+        "reference: outputs"
+    );
     // The same program with every function as a subroutine agrees.
     let stage = link_one(Stage::Fragment, src).unwrap();
     let sk = Kernel::with_inline_limit(&stage, 0).expect("lowers");

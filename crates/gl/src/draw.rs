@@ -645,38 +645,24 @@ impl Context {
             slots: self.input_sources(&vs),
             immediate,
         };
-        let probe = self.debug.wants().map(|req| {
-            raster::probe_draw(
-                &target.fb,
-                &state,
-                &vs,
-                &vs_words,
-                &fs,
-                &fs_words,
-                raster_mode(mode),
-                indices,
-                &fetch,
-                &units,
-                req,
-            )
-            .map_err(|e| e.to_string())
-        });
+        let replay = raster::Replay {
+            state: &state,
+            vs: &vs,
+            vs_uniforms: &vs_words,
+            fs: &fs,
+            fs_uniforms: &fs_words,
+            mode: raster_mode(mode),
+            indices,
+            fetch: &fetch,
+            textures: &units,
+        };
+        let probe = self
+            .debug
+            .wants()
+            .map(|req| raster::probe_draw(&target.fb, &replay, req).map_err(|e| e.to_string()));
         let view = self.debug.view().map(|name| {
             let (v, kinds) = crate::debug::resolve_view(&fs, name)?;
-            let image = raster::view_draw(
-                &target.fb,
-                &state,
-                &vs,
-                &vs_words,
-                &fs,
-                &fs_words,
-                raster_mode(mode),
-                indices,
-                &fetch,
-                &units,
-                v,
-            )
-            .map_err(|e| e.to_string())?;
+            let image = raster::view_draw(&target.fb, &replay, v).map_err(|e| e.to_string())?;
             Ok(crate::debug::ViewRecord {
                 name: name.to_string(),
                 kinds,

@@ -248,6 +248,30 @@ impl RawContext {
         })
     }
 
+    /// Starts tracing `pixel` in the following draws (see
+    /// `gl::Context::set_debug`); `debug_end` returns the report.
+    #[pyo3(signature = (x, y, draw=None, vertex=None))]
+    fn debug_begin(&self, x: u32, y: u32, draw: Option<usize>, vertex: Option<usize>) {
+        let mut req = gl::debug::DebugRequest::pixel(x, y);
+        req.draw = draw;
+        req.vertex = vertex;
+        self.gl().set_debug(Some(req));
+    }
+
+    /// Stops tracing; the report of the draws since `debug_begin` as
+    /// (text, JSON).
+    fn debug_end(&self) -> (String, String) {
+        let mut ctx = self.gl();
+        let records = ctx.take_debug_records();
+        let pixel = records
+            .first()
+            .and_then(|r| r.probe.as_ref().ok())
+            .map_or((0, 0), |p| p.pixel);
+        ctx.set_debug(None);
+        let report = debugger::Report::from_records(pixel, &records);
+        (report.text(), report.json())
+    }
+
     fn set_threads(&self, threads: usize) {
         self.gl().set_threads(threads);
     }

@@ -499,17 +499,20 @@ fn probe_reports_every_fragment_of_a_pixel() {
     let units = TextureUnits::default();
     let before = fb.clone();
     let probe = |x: u32, y: u32| {
+        let replay = crate::Replay {
+            state: &state,
+            vs: &vs,
+            vs_uniforms: &[],
+            fs: &fs,
+            fs_uniforms: &[],
+            mode: Mode::Triangles,
+            indices: &indices,
+            fetch: &fetch,
+            textures: &units,
+        };
         probe_draw(
             &before,
-            &state,
-            &vs,
-            &[],
-            &fs,
-            &[],
-            Mode::Triangles,
-            &indices,
-            &fetch,
-            &units,
+            &replay,
             ProbeRequest {
                 vertex: Some(7),
                 outlines: true,
@@ -574,4 +577,273 @@ fn probe_reports_every_fragment_of_a_pixel() {
     // Outside the framebuffer: a reason, no fragments.
     let p = probe(8, 0);
     assert!(p.unreachable.is_some() && p.fragments.is_empty());
+}
+
+/// A fragment stage that hides its depth-only slice, so the pipeline
+/// takes the straightforward path (every fragment fully shaded).
+struct Straightforward<'a>(&'a Kernel);
+
+impl crate::ShaderStage for Straightforward<'_> {
+    fn interface(&self) -> &crate::ex::Interface {
+        self.0.interface()
+    }
+    fn run(
+        &self,
+        batch: &mut crate::ex::Batch,
+        uniforms: &[u32],
+        textures: &dyn crate::ex::Textures,
+    ) -> Result<(), crate::ex::ExecError> {
+        self.0.run(batch, uniforms, textures)
+    }
+}
+
+/// Overlapping sphere impostors (quads whose fragment shader ray-casts a
+/// sphere, writes gl_FragDepth and uses derivatives) over several tiles,
+/// drawn with `fs` as given (colors only for visible fragments) or
+/// through [`Straightforward`]; returns color and depth bytes.
+fn impostors(
+    workers: &crate::Workers,
+    discard: bool,
+    deferred: bool,
+    spheres: usize,
+    state_change: impl Fn(&mut PipelineState),
+) -> (Vec<[u8; 4]>, Vec<f32>) {
+    let (vs, fs) = program(
+        "attribute vec4 pos; attribute vec4 sph; varying vec4 s;\n\
+         void main() { gl_Position = pos; s = sph; }",
+        &format!(
+            "varying vec4 s; uniform float budget;\n\
+             void main() {{\n\
+               float q = 1.0 - dot(s.xy, s.xy);\n\
+               if (q < 0.0) {{ {} }}\n\
+               float h = sqrt(q);\n\
+               gl_FragDepth = s.z - 0.25 * h;\n\
+               float acc = 0.0;\n\
+               for (int i = 0; i < 4; i++) acc += 0.1 * h;\n\
+               vec3 n = vec3(s.xy, h) * 0.5 + 0.5;\n\
+               gl_FragColor = vec4(n * s.w + vec3(dFdx(h), dFdy(h), acc) * 2.0, 1.0);\n\
+             }}",
+            if discard { "discard;" } else { "q = 0.0;" }
+        ),
+    );
+    assert!(fs.depth_only().is_some(), "the shader has a depth slice");
+    let (w, h) = (150u32, 130u32);
+    let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, false);
+    fb.clear_color(&[0], [0.1, 0.2, 0.3, 1.0], [true; 4], None);
+    fb.clear_depth(1.0, true, None);
+    let mut state = PipelineState {
+        viewport: Rect::new(0, 0, w as i32, h as i32),
+        depth_test: Some(CompareFunc::Less),
+        ..PipelineState::default()
+    };
+    state_change(&mut state);
+    let mut attribs = SceneAttribs {
+        names: vs
+            .interface()
+            .inputs
+            .iter()
+            .map(|s| s.name.clone())
+            .collect(),
+        pos: Vec::new(),
+        col: Vec::new(),
+        tc: Vec::new(),
+    };
+    // Spheres on a pseudo-random walk, radii 0.05..0.3 (clip units),
+    // depths interleaved so later ones are sometimes behind.
+    let mut seed = 12345u32;
+    let mut rnd = || {
+        seed = seed.wrapping_mul(1103515245).wrapping_add(12345);
+        (seed >> 8) as f32 / (1u32 << 24) as f32
+    };
+    for _ in 0..spheres {
+        let (cx, cy, r, z, shade) = (
+            rnd() * 2.2 - 1.1,
+            rnd() * 2.2 - 1.1,
+            0.05 + 0.25 * rnd(),
+            0.3 + 0.5 * rnd(),
+            0.4 + 0.6 * rnd(),
+        );
+        for (dx, dy) in [
+            (-1.0, -1.0),
+            (1.0, -1.0),
+            (1.0, 1.0),
+            (-1.0, -1.0),
+            (1.0, 1.0),
+            (-1.0, 1.0),
+        ] {
+            attribs.pos.push([cx + dx * r, cy + dy * r, 0.0, 1.0]);
+            // SceneAttribs' `col` slot carries `sph`.
+            attribs.col.push([dx, dy, z, shade]);
+        }
+    }
+    attribs.names = attribs
+        .names
+        .iter()
+        .map(|n| {
+            if n == "sph" {
+                "col".to_string()
+            } else {
+                n.clone()
+            }
+        })
+        .collect();
+    let idx: Vec<u32> = (0..attribs.pos.len() as u32).collect();
+    let tex = TextureUnits::default();
+    let straight = Straightforward(&fs);
+    let fs_stage: &dyn crate::ShaderStage = if deferred { &fs } else { &straight };
+    crate::draw_stages(
+        workers,
+        &mut fb,
+        &state,
+        &vs,
+        &[],
+        fs_stage,
+        &[],
+        Mode::Triangles,
+        &idx,
+        &attribs,
+        &tex,
+    )
+    .unwrap();
+    (fb.read_pixels_u8(0, 0, 0, w, h), fb.read_depth(0, 0, w, h))
+}
+
+#[test]
+fn colors_for_visible_fragments_only_give_the_same_bytes() {
+    for discard in [true, false] {
+        let want = impostors(&crate::Workers::new(1), discard, false, 60, |_| {});
+        let distinct: std::collections::BTreeSet<[u8; 4]> = want.0.iter().copied().collect();
+        assert!(distinct.len() > 300, "{} colors", distinct.len());
+        for threads in [1, 2] {
+            let got = impostors(&crate::Workers::new(threads), discard, true, 60, |_| {});
+            assert!(
+                want.0 == got.0,
+                "color, discard {discard}, {threads} threads"
+            );
+            assert!(
+                want.1 == got.1,
+                "depth, discard {discard}, {threads} threads"
+            );
+        }
+    }
+    // Other depth functions, no depth writes, no depth test, color masks:
+    // the last fragment to pass still decides the pixel.
+    let changes: [fn(&mut PipelineState); 4] = [
+        |s| s.depth_test = Some(CompareFunc::GreaterEqual),
+        |s| s.depth_mask = false,
+        |s| s.depth_test = None,
+        |s| s.color_mask = [true, false, true, false],
+    ];
+    for change in changes {
+        let want = impostors(&crate::Workers::new(1), true, false, 60, change);
+        let got = impostors(&crate::Workers::new(2), true, true, 60, change);
+        assert!(want == got);
+    }
+}
+
+#[test]
+fn many_primitives_give_the_same_bytes_for_any_thread_count() {
+    // 2,200 triangles: two primitive set-up chunks, many vertex tasks.
+    let one = impostors(&crate::Workers::new(1), true, true, 1100, |_| {});
+    let straight = impostors(&crate::Workers::new(1), true, false, 1100, |_| {});
+    assert!(one == straight);
+    for threads in [2, 3] {
+        let many = impostors(&crate::Workers::new(threads), true, true, 1100, |_| {});
+        assert!(one == many, "{threads} threads");
+    }
+}
+
+/// Small overlapping, blended, depth-tested triangles (most cover a few
+/// pixels of one quad) with derivatives in the shader. With a stencil
+/// test that changes nothing (ALWAYS, KEEP) every primitive is shaded on
+/// its own; without, quads of consecutive primitives share batches.
+fn small_triangles(workers: &crate::Workers, stencil_noop: bool, func: CompareFunc) -> SceneResult {
+    let (vs, fs) = program(
+        "attribute vec4 pos; attribute vec4 col; varying vec4 v;\n\
+         void main() { gl_Position = pos; v = col; }",
+        "varying vec4 v;\n\
+         void main() { gl_FragColor = v + vec4(dFdx(v.r), dFdy(v.g), 0.0, 0.0) * 8.0; }",
+    );
+    let (w, h) = (140u32, 100u32);
+    let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, true);
+    fb.clear_color(&[0], [0.1, 0.2, 0.3, 1.0], [true; 4], None);
+    let far = match func {
+        CompareFunc::Greater | CompareFunc::GreaterEqual => 0.0,
+        _ => 1.0,
+    };
+    fb.clear_depth(far, true, None);
+    let state = PipelineState {
+        viewport: Rect::new(0, 0, w as i32, h as i32),
+        depth_test: Some(func),
+        blend: Some(Blend {
+            src_rgb: BlendFactor::SrcAlpha,
+            dst_rgb: BlendFactor::OneMinusSrcAlpha,
+            ..Blend::default()
+        }),
+        stencil: stencil_noop.then(StencilState::default),
+        ..PipelineState::default()
+    };
+    let mut seed = 777u32;
+    let mut rnd = || {
+        seed = seed.wrapping_mul(1103515245).wrapping_add(12345);
+        (seed >> 8) as f32 / (1u32 << 24) as f32
+    };
+    let mut attribs = SceneAttribs {
+        names: vs
+            .interface()
+            .inputs
+            .iter()
+            .map(|s| s.name.clone())
+            .collect(),
+        pos: Vec::new(),
+        col: Vec::new(),
+        tc: Vec::new(),
+    };
+    for _ in 0..2500 {
+        let (x, y, z) = (rnd() * 2.0 - 1.0, rnd() * 2.0 - 1.0, rnd() * 2.0 - 1.0);
+        let s = 0.01 + 0.08 * rnd() * rnd();
+        let c = [rnd(), rnd(), rnd(), 0.3 + 0.7 * rnd()];
+        for (dx, dy) in [(0.0, 0.0), (s, 0.2 * s), (0.3 * s, s)] {
+            attribs.pos.push([x + dx, y + dy, z, 1.0]);
+            attribs.col.push(c);
+        }
+    }
+    let idx: Vec<u32> = (0..attribs.pos.len() as u32).collect();
+    let tex = TextureUnits::default();
+    let r = crate::draw_stages(
+        workers,
+        &mut fb,
+        &state,
+        &vs,
+        &[],
+        &fs,
+        &[],
+        Mode::Triangles,
+        &idx,
+        &attribs,
+        &tex,
+    );
+    (
+        fb.read_pixels_u8(0, 0, 0, w, h),
+        fb.read_depth(0, 0, w, h),
+        fb.read_stencil(0, 0, w, h),
+        r.err().map(|e| e.to_string()).into_iter().collect(),
+    )
+}
+
+#[test]
+fn primitives_sharing_batches_give_the_same_bytes() {
+    for func in [
+        CompareFunc::Less,
+        CompareFunc::GreaterEqual,
+        CompareFunc::Always,
+    ] {
+        let want = small_triangles(&crate::Workers::new(1), true, func);
+        let distinct: std::collections::BTreeSet<[u8; 4]> = want.0.iter().copied().collect();
+        assert!(distinct.len() > 300, "{} colors", distinct.len());
+        for threads in [1, 2] {
+            let got = small_triangles(&crate::Workers::new(threads), false, func);
+            assert!(want == got, "{func:?}, {threads} threads");
+        }
+    }
 }

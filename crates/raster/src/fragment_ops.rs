@@ -106,11 +106,29 @@ pub(crate) fn process(
     state: &PipelineState,
     frag: &Fragment,
 ) -> bool {
-    let (Some(lx), Some(ly)) = (frag.x.checked_sub(origin.0), frag.y.checked_sub(origin.1)) else {
-        return false;
-    };
+    match tests(fb, origin, state, frag) {
+        Some(index) => {
+            write_colors(fb, index, state, &frag.colors);
+            true
+        }
+        None => false,
+    }
+}
+
+/// The per-fragment operations up to and including the depth test
+/// (ownership, scissor, alpha, stencil, depth), with their stencil and
+/// depth writes. Returns the pixel index in `fb` when the fragment passes
+/// and its colors are to be written.
+pub(crate) fn tests(
+    fb: &mut Framebuffer,
+    origin: (u32, u32),
+    state: &PipelineState,
+    frag: &Fragment,
+) -> Option<usize> {
+    let lx = frag.x.checked_sub(origin.0)?;
+    let ly = frag.y.checked_sub(origin.1)?;
     if lx >= fb.width || ly >= fb.height {
-        return false;
+        return None;
     }
     if let Some(sc) = state.scissor {
         let (x, y) = (frag.x as i64, frag.y as i64);
@@ -119,7 +137,7 @@ pub(crate) fn process(
             || x >= sc.x as i64 + sc.w as i64
             || y >= sc.y as i64 + sc.h as i64
         {
-            return false;
+            return None;
         }
     }
     let index = ly as usize * fb.width as usize + lx as usize;
@@ -130,7 +148,7 @@ pub(crate) fn process(
         let a = frag.colors[0][3];
         let a = if clamp { clamp01(a) } else { a };
         if !func.test(a, clamp01(reference)) {
-            return false;
+            return None;
         }
     }
 
@@ -150,7 +168,7 @@ pub(crate) fn process(
     if let Some(face) = face {
         if !stencil_test(&face, stored_stencil) {
             write_stencil(fb, index, &face, face.fail, stored_stencil);
-            return false;
+            return None;
         }
     }
     let depth_pass = match (state.depth_test, fb.depth.as_mut()) {
@@ -174,15 +192,23 @@ pub(crate) fn process(
         };
         write_stencil(fb, index, &face, op, stored_stencil);
     }
-    if !depth_pass {
-        return false;
+    if depth_pass {
+        fb.samples_passed = fb.samples_passed.wrapping_add(1);
     }
-    fb.samples_passed = fb.samples_passed.wrapping_add(1);
+    depth_pass.then_some(index)
+}
 
-    // §4.1.8 blending, §4.1.10 logic op, §4.2.2 masks.
+/// §4.1.8 blending, §4.1.10 logic op, §4.2.2 masks: writes a fragment's
+/// colors (that passed [`tests`]) to pixel `index` of every draw buffer.
+pub(crate) fn write_colors(
+    fb: &mut Framebuffer,
+    index: usize,
+    state: &PipelineState,
+    colors: &[[f32; 4]; MAX_DRAW_BUFFERS],
+) {
     for (output, target) in state.draw_buffers.iter().enumerate() {
         let Some(target) = *target else { continue };
-        let Some(src) = frag.colors.get(output) else {
+        let Some(src) = colors.get(output) else {
             continue;
         };
         let Some(buf) = fb.color.get_mut(target) else {
@@ -190,7 +216,18 @@ pub(crate) fn process(
         };
         write_color(buf, index, state, *src);
     }
-    true
+}
+
+/// True when the outcome of a fragment's per-fragment operations does
+/// not depend on its colors and what it writes replaces the pixel's
+/// color entirely: no alpha test, no blending, no logic op, and no
+/// stencil test. Then, per pixel, only the last fragment that passes the
+/// depth test decides the color, so colors need computing only for those.
+pub(crate) fn last_writer_wins(fb: &Framebuffer, state: &PipelineState) -> bool {
+    state.alpha_test.is_none()
+        && state.blend.is_none()
+        && state.logic_op.is_none()
+        && (state.stencil.is_none() || fb.stencil.is_none())
 }
 
 fn write_stencil(fb: &mut Framebuffer, index: usize, face: &StencilFace, op: StencilOp, old: u8) {

@@ -9,8 +9,11 @@
 //! planes (GL 2.1 §2.12), maps them to window space (§2.11), determines
 //! facing from the window-space area (§3.5.1), culls, and rasterizes
 //! (fill, line or point polygon modes). Fragments are shaded in 2×2 quads,
-//! four quads per `exec::Batch`, and go through the GL 2.1 §4.1
-//! per-fragment operations in primitive order. The framebuffer is
+//! four quads per `exec::Batch` (quads of consecutive primitives share a
+//! batch when early depth rejection against a depth buffer without the
+//! batch's pending fragments stays exact: no stencil test, a depth
+//! function that moves stored depths one way), and go through the GL 2.1
+//! §4.1 per-fragment operations in primitive order. The framebuffer is
 //! processed in 64×64 tiles, each seeing the primitives in draw order.
 //! Results are bit-identical on every machine: f64/f32 IEEE arithmetic
 //! without fused operations, `glsl::math` for the few functions needed,
@@ -20,7 +23,8 @@
 //! [`draw_on`] runs on a [`Workers`] (1 thread = inline on the caller; more
 //! = a rayon pool owned by the `Workers`, no global state). Vertex batches
 //! of `exec::LANES` vertices are tasks writing their own vertices' outputs;
-//! primitive setup is sequential; each 64×64 tile is a task that owns a
+//! primitive set-up runs in chunks of 2,048 primitives whose results are
+//! concatenated in primitive order; each 64×64 tile is a task that owns a
 //! copy of its pixels and runs its primitives in draw order, and the tiles
 //! are written back in tile order. No value is combined across tasks, and
 //! textures are read-only, so the framebuffer is bit-identical whatever the
@@ -30,6 +34,20 @@
 //! that tile keeps the fragments written before the error, later tiles are
 //! untouched, and that tile's error is returned. (A vertex-stage error
 //! draws nothing and reports the first failing vertex batch's error.)
+//!
+//! # Colors for visible fragments only
+//! When the fragment stage writes `gl_FragDepth` (so early depth testing
+//! is impossible), has a depth-only slice ([`ShaderStage::depth_only`])
+//! and the per-fragment operations let the last fragment to pass the
+//! depth test decide a pixel (no alpha test, blending, logic op or stencil
+//! test), each tile runs the slice on every fragment, depth-tests in draw
+//! order and remembers the winning primitive per pixel, then runs the full
+//! stage once per winning (primitive, 2×2 quad), with the same inputs,
+//! coverage and helper lanes as the straightforward path, and writes the
+//! colors. The bytes are those of the straightforward path (tests compare
+//! both); on a shader error the tile is redrawn the straightforward way so
+//! errors and partial results are unchanged. The debugger's probe always
+//! takes the straightforward path.
 //!
 //! Vertex → fragment linkage is by name (user varyings, gl_TexCoord,
 //! gl_FogFragCoord); gl_Color / gl_SecondaryColor come from
@@ -83,7 +101,7 @@ pub use pipeline::{draw_stages, Mode, VertexFetch, MAX_POINT_SIZE, TILE};
 pub use pixel_fragments::{write_pixel_fragments, PixelFragment};
 pub use probe::{
     probe_draw, view_draw, DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine,
-    ProbeRequest, VertexProbe, View, ViewImage,
+    ProbeRequest, Replay, VertexProbe, View, ViewImage,
 };
 pub use rasterize::SUBPIXEL_BITS;
 pub use state::{
@@ -115,6 +133,16 @@ pub trait ShaderStage: Sync {
         uniforms: &[u32],
         textures: &dyn ex::Textures,
     ) -> Result<(), ex::ExecError>;
+
+    /// A stage with the same interface that computes only what decides a
+    /// fragment's fate (`gl_FragDepth` and discard), bit for bit as this
+    /// stage does; see `exec::Kernel::depth_only`. When the fragment stage
+    /// has one and the per-fragment operations allow it, the pipeline runs
+    /// it on every fragment and this stage only on the fragments that end
+    /// up visible. `None` (the default): always run this stage.
+    fn depth_only(&self) -> Option<Box<dyn ShaderStage>> {
+        None
+    }
 
     /// [`ShaderStage::run`], reporting `lane`'s statements, stores and
     /// prints to `trace` (the debugger). Stages that cannot trace run
@@ -167,6 +195,10 @@ impl ShaderStage for ex::Kernel {
     ) -> Result<(), ex::ExecError> {
         ex::Kernel::run(self, batch, uniforms, textures)
     }
+    fn depth_only(&self) -> Option<Box<dyn ShaderStage>> {
+        ex::Kernel::depth_only(self).map(|k| Box::new(k) as Box<dyn ShaderStage>)
+    }
+
     fn run_probed(
         &self,
         batch: &mut ex::Batch,

@@ -21,6 +21,9 @@ pub const TILE: i64 = 64;
 /// Vertex batches (of `LANES` vertices) one worker takes at a time.
 const VERTEX_CHUNKS_PER_TASK: usize = 4;
 
+/// Primitives one set-up task takes.
+const SETUP_CHUNK: usize = 2048;
+
 /// Largest point size used (points are clamped to [1, MAX_POINT_SIZE]).
 pub const MAX_POINT_SIZE: f32 = 2048.0;
 
@@ -77,62 +80,72 @@ pub(crate) enum Assembled {
     Polygon(Vec<usize>, usize),
 }
 
-/// Splits `count` vertices of `mode` into primitives, in order. Incomplete
-/// trailing primitives are dropped (GL 2.1 §2.6.1).
-pub(crate) fn assemble(mode: Mode, count: usize, mut emit: impl FnMut(Assembled)) {
+/// How many primitives `count` vertices of `mode` make (incomplete
+/// trailing primitives are dropped, GL 2.1 §2.6.1).
+pub(crate) fn primitive_count(mode: Mode, count: usize) -> usize {
     let n = count;
     match mode {
-        Mode::Points => (0..n).for_each(|i| emit(Assembled::Point(i))),
-        Mode::Lines => (0..n / 2).for_each(|k| emit(Assembled::Line(2 * k, 2 * k + 1))),
-        Mode::LineStrip | Mode::LineLoop => {
-            for i in 1..n {
-                emit(Assembled::Line(i - 1, i));
-            }
-            if mode == Mode::LineLoop && n >= 2 {
-                emit(Assembled::Line(n - 1, 0));
-            }
-        }
-        Mode::Triangles => {
-            for k in 0..n / 3 {
-                emit(Assembled::Polygon(
-                    vec![3 * k, 3 * k + 1, 3 * k + 2],
-                    3 * k + 2,
-                ));
+        Mode::Points => n,
+        Mode::Lines => n / 2,
+        Mode::LineStrip => n.saturating_sub(1),
+        Mode::LineLoop => {
+            if n >= 2 {
+                n
+            } else {
+                0
             }
         }
+        Mode::Triangles => n / 3,
+        Mode::TriangleStrip | Mode::TriangleFan => n.saturating_sub(2),
+        Mode::Quads => n / 4,
+        Mode::QuadStrip => (n / 2).saturating_sub(1),
+        Mode::Polygon => usize::from(n >= 3),
+    }
+}
+
+/// Primitive `k` (below [`primitive_count`]) of `count` vertices of `mode`.
+pub(crate) fn primitive(mode: Mode, count: usize, k: usize) -> Assembled {
+    let n = count;
+    match mode {
+        Mode::Points => Assembled::Point(k),
+        Mode::Lines => Assembled::Line(2 * k, 2 * k + 1),
+        Mode::LineStrip => Assembled::Line(k, k + 1),
+        Mode::LineLoop => {
+            if k + 1 < n {
+                Assembled::Line(k, k + 1)
+            } else {
+                Assembled::Line(n - 1, 0)
+            }
+        }
+        Mode::Triangles => Assembled::Polygon(vec![3 * k, 3 * k + 1, 3 * k + 2], 3 * k + 2),
         Mode::TriangleStrip => {
-            for i in 2..n {
-                // Every other triangle is reversed to keep a common winding.
-                let v = if i % 2 == 0 {
-                    vec![i - 2, i - 1, i]
-                } else {
-                    vec![i - 1, i - 2, i]
-                };
-                emit(Assembled::Polygon(v, i));
-            }
+            let i = k + 2;
+            // Every other triangle is reversed to keep a common winding.
+            let v = if i.is_multiple_of(2) {
+                vec![i - 2, i - 1, i]
+            } else {
+                vec![i - 1, i - 2, i]
+            };
+            Assembled::Polygon(v, i)
         }
-        Mode::TriangleFan => {
-            for i in 2..n {
-                emit(Assembled::Polygon(vec![0, i - 1, i], i));
-            }
-        }
+        Mode::TriangleFan => Assembled::Polygon(vec![0, k + 1, k + 2], k + 2),
         Mode::Quads => {
-            for k in 0..n / 4 {
-                let b = 4 * k;
-                emit(Assembled::Polygon(vec![b, b + 1, b + 2, b + 3], b + 3));
-            }
+            let b = 4 * k;
+            Assembled::Polygon(vec![b, b + 1, b + 2, b + 3], b + 3)
         }
         Mode::QuadStrip => {
-            for k in 0..(n / 2).saturating_sub(1) {
-                let b = 2 * k;
-                emit(Assembled::Polygon(vec![b, b + 1, b + 3, b + 2], b + 3));
-            }
+            let b = 2 * k;
+            Assembled::Polygon(vec![b, b + 1, b + 3, b + 2], b + 3)
         }
-        Mode::Polygon => {
-            if n >= 3 {
-                emit(Assembled::Polygon((0..n).collect(), 0));
-            }
-        }
+        Mode::Polygon => Assembled::Polygon((0..n).collect(), 0),
+    }
+}
+
+/// Splits `count` vertices of `mode` into primitives, in order.
+#[cfg(test)]
+pub(crate) fn assemble(mode: Mode, count: usize, mut emit: impl FnMut(Assembled)) {
+    for k in 0..primitive_count(mode, count) {
+        emit(primitive(mode, count, k));
     }
 }
 
@@ -152,15 +165,34 @@ fn run_vertices(
     clamp_colors: bool,
 ) -> Result<(Vec<usize>, Vec<f32>), DrawError> {
     let iface: &Interface = vs.interface();
-    let mut seen: HashMap<u32, usize> = HashMap::new();
+    // Distinct indices in order of first use; a table over the index
+    // range when it is small (the usual case), else a hash map.
     let mut unique: Vec<u32> = Vec::new();
     let mut vertex_of = Vec::with_capacity(indices.len());
-    for &ix in indices {
-        let v = *seen.entry(ix).or_insert_with(|| {
-            unique.push(ix);
-            unique.len() - 1
-        });
-        vertex_of.push(v);
+    let lo = indices.iter().copied().min().unwrap_or(0);
+    let hi = indices.iter().copied().max().unwrap_or(0);
+    let span = (hi - lo) as usize + 1;
+    if span <= 4 * indices.len() + 1024 {
+        let mut slot = vec![usize::MAX; span];
+        for &ix in indices {
+            let Some(s) = slot.get_mut((ix - lo) as usize) else {
+                continue;
+            };
+            if *s == usize::MAX {
+                unique.push(ix);
+                *s = unique.len() - 1;
+            }
+            vertex_of.push(*s);
+        }
+    } else {
+        let mut seen: HashMap<u32, usize> = HashMap::new();
+        for &ix in indices {
+            let v = *seen.entry(ix).or_insert_with(|| {
+                unique.push(ix);
+                unique.len() - 1
+            });
+            vertex_of.push(v);
+        }
     }
     let n_in = iface
         .inputs
@@ -261,10 +293,14 @@ struct Setup<'a> {
     clip_rect: PixelRect,
     /// Viewport transform (px/2, ox, py/2, oy, (f-n)/2, (n+f)/2).
     vp: [f64; 6],
-    prims: Vec<Prim>,
-    /// Index of the primitive being assembled.
-    source: u32,
     probe: Option<&'a crate::probe::Probe>,
+}
+
+/// Where set-up primitives go: the primitives of one chunk, and the index
+/// of the assembled primitive being set up.
+struct Out {
+    prims: Vec<Prim>,
+    source: u32,
 }
 
 impl Setup<'_> {
@@ -324,7 +360,7 @@ impl Setup<'_> {
         out
     }
 
-    fn push(&mut self, shape: Shape, back: bool, z_offset: f64, attrs: Vec<f32>) {
+    fn push(&self, out: &mut Out, shape: Shape, back: bool, z_offset: f64, attrs: Vec<f32>) {
         if let Some(p) = self.probe {
             p.note_shape(&shape);
         }
@@ -334,13 +370,13 @@ impl Setup<'_> {
         if bounds.0 >= bounds.2 || bounds.1 >= bounds.3 {
             return;
         }
-        self.prims.push(Prim {
+        out.prims.push(Prim {
             shape,
             bounds,
             back,
             z_offset,
             attrs,
-            source: self.source,
+            source: out.source,
         });
     }
 
@@ -356,7 +392,7 @@ impl Setup<'_> {
         }
     }
 
-    fn point(&mut self, v: &ClipVertex, back: bool, z_offset: f64, provoking: &[f32]) {
+    fn point(&self, out: &mut Out, v: &ClipVertex, back: bool, z_offset: f64, provoking: &[f32]) {
         if !self.planes.point_inside(v) {
             return;
         }
@@ -364,11 +400,12 @@ impl Setup<'_> {
         let size = self.point_size(&v.data) as f64;
         let shape = Shape::point(win, size, self.state.point_sprite);
         let attrs = self.attrs(&[&v.data], back, provoking);
-        self.push(shape, back, z_offset, attrs);
+        self.push(out, shape, back, z_offset, attrs);
     }
 
     fn line(
-        &mut self,
+        &self,
+        out: &mut Out,
         a: &ClipVertex,
         b: &ClipVertex,
         back: bool,
@@ -383,12 +420,19 @@ impl Setup<'_> {
         };
         let shape = Shape::line([wa, wb], self.state.line_width);
         let attrs = self.attrs(&[&a.data, &b.data], back, provoking);
-        self.push(shape, back, z_offset, attrs);
+        self.push(out, shape, back, z_offset, attrs);
     }
 
-    fn polygon(&mut self, vertices: &[usize], provoking: usize) {
+    fn polygon(&self, out: &mut Out, vertices: &[usize], provoking: usize) {
         let original: Vec<ClipVertex> = vertices.iter().map(|&v| self.clip_vertex(v)).collect();
-        let clipped = self.planes.clip_polygon(original.clone());
+        // Line and point modes draw the unclipped polygon's edges/vertices.
+        let filled_only = self.state.polygon_mode == [PolygonMode::Fill; 2];
+        let (original, clipped) = if filled_only {
+            (Vec::new(), self.planes.clip_polygon(original))
+        } else {
+            let clipped = self.planes.clip_polygon(original.clone());
+            (original, clipped)
+        };
         if clipped.len() < 3 {
             return;
         }
@@ -444,18 +488,18 @@ impl Setup<'_> {
                         back,
                         &prov,
                     );
-                    self.push(shape, back, z_offset, attrs);
+                    self.push(out, shape, back, z_offset, attrs);
                 }
             }
             PolygonMode::Line => {
                 for i in 0..original.len() {
                     let j = (i + 1) % original.len();
-                    self.line(&original[i], &original[j], back, z_offset, &prov);
+                    self.line(out, &original[i], &original[j], back, z_offset, &prov);
                 }
             }
             PolygonMode::Point => {
                 for v in &original {
-                    self.point(v, back, z_offset, &prov);
+                    self.point(out, v, back, z_offset, &prov);
                 }
             }
         }
@@ -532,7 +576,7 @@ pub(crate) fn draw_probed(
             clip_rect.3.min(y0 + s.h.max(0) as i64),
         );
     }
-    let mut setup = Setup {
+    let setup = Setup {
         state,
         vs: &vs_layout,
         fs: &fs_layout,
@@ -547,34 +591,50 @@ pub(crate) fn draw_probed(
             (f - n) / 2.0,
             (n + f) / 2.0,
         ],
-        prims: Vec::new(),
-        source: 0,
         probe,
     };
-    assemble(mode, vertex_of.len(), |p| {
-        if let Some(probe) = probe {
-            probe.note_primitive(setup.source, &p);
-        }
+    // Primitive set-up in chunks of primitives on the workers, the
+    // chunks' primitives concatenated in order (one chunk, in order, for
+    // the debugger's probe, which notes primitives as they come).
+    let setup = &setup;
+    let count = vertex_of.len();
+    let n_prims = primitive_count(mode, count);
+    let chunk = if probe.is_some() {
+        n_prims.max(1)
+    } else {
+        SETUP_CHUNK
+    };
+    let chunks = n_prims.div_ceil(chunk);
+    let parts = workers.map(chunks, 1, |c, _| {
+        let mut out = Out {
+            prims: Vec::new(),
+            source: 0,
+        };
         let v = |i: usize| vertex_of.get(i).copied().unwrap_or(0);
-        match p {
-            Assembled::Point(i) => {
-                let cv = setup.clip_vertex(v(i));
-                let prov = cv.data.clone();
-                setup.point(&cv, false, 0.0, &prov);
+        for k in c * chunk..((c + 1) * chunk).min(n_prims) {
+            let p = primitive(mode, count, k);
+            out.source = k as u32;
+            if let Some(probe) = probe {
+                probe.note_primitive(out.source, &p);
             }
-            Assembled::Line(a, b) => {
-                let (ca, cb) = (setup.clip_vertex(v(a)), setup.clip_vertex(v(b)));
-                let prov = cb.data.clone();
-                setup.line(&ca, &cb, false, 0.0, &prov);
-            }
-            Assembled::Polygon(vs, prov) => {
-                let vs: Vec<usize> = vs.into_iter().map(v).collect();
-                setup.polygon(&vs, v(prov));
+            match p {
+                Assembled::Point(i) => {
+                    let cv = setup.clip_vertex(v(i));
+                    setup.point(&mut out, &cv, false, 0.0, &cv.data);
+                }
+                Assembled::Line(a, b) => {
+                    let (ca, cb) = (setup.clip_vertex(v(a)), setup.clip_vertex(v(b)));
+                    setup.line(&mut out, &ca, &cb, false, 0.0, &cb.data);
+                }
+                Assembled::Polygon(vs, prov) => {
+                    let vs: Vec<usize> = vs.into_iter().map(v).collect();
+                    setup.polygon(&mut out, &vs, v(prov));
+                }
             }
         }
-        setup.source += 1;
+        out.prims
     });
-    let prims = setup.prims;
+    let prims: Vec<Prim> = parts.into_iter().flatten().collect();
 
     let stage = FragmentStage {
         shader: fs,
@@ -588,6 +648,15 @@ pub(crate) fn draw_probed(
             .map(|l| l.color && state.flat_shading)
             .collect(),
         early: fs_layout.frag_depth.is_none(),
+        // The probe replays every fragment: never deferred.
+        deferred: if fs_layout.frag_depth.is_some()
+            && probe.is_none()
+            && crate::fragment_ops::last_writer_wins(fb, state)
+        {
+            fs.depth_only()
+        } else {
+            None
+        },
         probe,
     };
     if let Some(p) = probe {
@@ -654,15 +723,33 @@ fn shade_tiles(
             return TileResult::Skipped;
         };
         let r = rect(t);
-        let mut local = source.copy_tile(r.0 as u32, r.1 as u32, r.2 as u32, r.3 as u32);
-        for &p in bins.get(t).map_or(&[][..], |b| &b[..]) {
+        let copy = || source.copy_tile(r.0 as u32, r.1 as u32, r.2 as u32, r.3 as u32);
+        let mut local = copy();
+        let bin = bins.get(t).map_or(&[][..], |b| &b[..]);
+        let mut batch = stage.scratch();
+        if let Some(depth) = &stage.deferred {
+            match stage.shade_deferred(depth.as_ref(), &mut local, prims, bin, r, &mut batch) {
+                Ok(()) => return TileResult::Ran(local, None),
+                // Redraw the tile the straightforward way: it stops at the
+                // same fragment with the same error.
+                Err(_) => local = copy(),
+            }
+        } else if stage.batches_primitives(source) {
+            match stage.shade_batched(&mut local, prims, bin, r, &mut batch) {
+                Ok(()) => return TileResult::Ran(local, None),
+                // The same: one primitive at a time gives the error and
+                // the partial tile of the contract.
+                Err(_) => local = copy(),
+            }
+        }
+        for &p in bin {
             if cancel.skip(i) {
                 return TileResult::Skipped;
             }
             let Some(prim) = prims.get(p as usize) else {
                 continue;
             };
-            if let Err(e) = stage.shade(&mut local, prim, r) {
+            if let Err(e) = stage.shade(&mut local, prim, r, &mut batch) {
                 cancel.fail(i);
                 return TileResult::Ran(local, Some(e));
             }

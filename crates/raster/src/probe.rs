@@ -41,22 +41,48 @@ pub struct ProbeRequest {
     pub outlines: bool,
 }
 
+/// One draw's inputs, as [`crate::draw_on`] takes them, for the debugger's
+/// replays ([`probe_draw`], [`view_draw`]).
+#[derive(Clone, Copy)]
+pub struct Replay<'a> {
+    pub state: &'a PipelineState,
+    pub vs: &'a ex::Kernel,
+    pub vs_uniforms: &'a [u32],
+    pub fs: &'a ex::Kernel,
+    pub fs_uniforms: &'a [u32],
+    pub mode: Mode,
+    pub indices: &'a [u32],
+    pub fetch: &'a dyn VertexFetch,
+    pub textures: &'a (dyn ex::Textures + Sync),
+}
+
+impl Replay<'_> {
+    /// Runs the draw on one thread into `fb` with `probe` attached (and
+    /// `state` in place of the draw's own).
+    fn run(
+        &self,
+        fb: &mut Framebuffer,
+        state: &PipelineState,
+        probe: &Probe,
+    ) -> Result<(), DrawError> {
+        draw_probed(
+            &crate::Workers::inline(),
+            fb,
+            state,
+            (self.vs, self.vs_uniforms),
+            (self.fs, self.fs_uniforms),
+            self.mode,
+            self.indices,
+            self.fetch,
+            self.textures,
+            Some(probe),
+        )
+    }
+}
+
 /// Replays a draw on a copy of `fb` and returns, for every pixel a
 /// fragment of this draw wrote, the value `view` had in that fragment.
-#[allow(clippy::too_many_arguments)]
-pub fn view_draw(
-    fb: &Framebuffer,
-    state: &PipelineState,
-    vs: &ex::Kernel,
-    vs_uniforms: &[u32],
-    fs: &ex::Kernel,
-    fs_uniforms: &[u32],
-    mode: Mode,
-    indices: &[u32],
-    fetch: &dyn VertexFetch,
-    textures: &(dyn ex::Textures + Sync),
-    view: View,
-) -> Result<ViewImage, DrawError> {
+pub fn view_draw(fb: &Framebuffer, draw: &Replay, view: View) -> Result<ViewImage, DrawError> {
     let probe = Probe {
         pixel: (-1, -1),
         print_rect: None,
@@ -70,18 +96,7 @@ pub fn view_draw(
         }),
     };
     let mut copy = fb.clone();
-    draw_probed(
-        &crate::Workers::inline(),
-        &mut copy,
-        state,
-        (vs, vs_uniforms),
-        (fs, fs_uniforms),
-        mode,
-        indices,
-        fetch,
-        textures,
-        Some(&probe),
-    )?;
+    draw.run(&mut copy, draw.state, &probe)?;
     Ok(probe.image.into_inner().unwrap_or_else(|e| e.into_inner()))
 }
 
@@ -264,22 +279,13 @@ impl PixelState {
 }
 
 /// Replays a draw on a copy of `fb` and reports what happened at
-/// `req.pixel` (see the module docs). The arguments are those of
-/// [`crate::draw_on`].
-#[allow(clippy::too_many_arguments)]
+/// `req.pixel` (see the module docs).
 pub fn probe_draw(
     fb: &Framebuffer,
-    state: &PipelineState,
-    vs: &ex::Kernel,
-    vs_uniforms: &[u32],
-    fs: &ex::Kernel,
-    fs_uniforms: &[u32],
-    mode: Mode,
-    indices: &[u32],
-    fetch: &dyn VertexFetch,
-    textures: &(dyn ex::Textures + Sync),
+    draw: &Replay,
     req: ProbeRequest,
 ) -> Result<DrawProbe, DrawError> {
+    let state = draw.state;
     let (px, py) = req.pixel;
     let mut report = DrawProbe {
         pixel: req.pixel,
@@ -335,29 +341,11 @@ pub fn probe_draw(
         inner: Mutex::new(report),
     };
     let mut copy = fb.clone();
-    let result = draw_probed(
-        &crate::Workers::inline(),
-        &mut copy,
-        &narrowed,
-        (vs, vs_uniforms),
-        (fs, fs_uniforms),
-        mode,
-        indices,
-        fetch,
-        textures,
-        Some(&probe),
-    );
+    let result = draw.run(&mut copy, &narrowed, &probe);
     let mut report = probe.inner.into_inner().unwrap_or_else(|e| e.into_inner());
     report.after = PixelState::read(&copy, (py * copy.width + px) as usize);
     if let Some(position) = req.vertex {
-        report.vertex = Some(trace_vertex(
-            vs,
-            vs_uniforms,
-            textures,
-            fetch,
-            indices,
-            position,
-        ));
+        report.vertex = Some(trace_vertex(draw, position));
     }
     result.map(|()| report)
 }
@@ -365,14 +353,8 @@ pub fn probe_draw(
 /// Runs the vertex shader alone for one position of the index list, traced
 /// (vertices do not depend on each other, so a batch of one lane gives the
 /// values of the real draw).
-fn trace_vertex(
-    vs: &ex::Kernel,
-    uniforms: &[u32],
-    textures: &(dyn ex::Textures + Sync),
-    fetch: &dyn VertexFetch,
-    indices: &[u32],
-    position: usize,
-) -> VertexProbe {
+fn trace_vertex(draw: &Replay, position: usize) -> VertexProbe {
+    let (vs, indices) = (draw.vs, draw.indices);
     let Some(&index) = indices.get(position) else {
         return VertexProbe {
             position,
@@ -385,12 +367,12 @@ fn trace_vertex(
     };
     let iface = vs.interface();
     let mut batch = crate::shade::new_batch(iface.input_components, iface.output_components);
-    crate::pipeline::fetch_vertex(iface, fetch, index, &mut batch, 0);
+    crate::pipeline::fetch_vertex(iface, draw.fetch, index, &mut batch, 0);
     batch.active = 1;
     let mut rec = Recording {
         fragment: FragmentProbe::default(),
     };
-    let result = vs.run_traced(&mut batch, uniforms, textures, 0, &mut rec);
+    let result = vs.run_traced(&mut batch, draw.vs_uniforms, draw.textures, 0, &mut rec);
     VertexProbe {
         position,
         index,

@@ -274,7 +274,7 @@ pub struct PipelineState {
     pub color_mask: [bool; 4],
     pub logic_op: Option<LogicOp>,
     pub polygon_offset: PolygonOffset,
-    /// DrawBuffers: fragment output i (gl_FragData[i]; gl_FragColor goes to
+    /// DrawBuffers: fragment output i (`gl_FragData[i]`; gl_FragColor goes to
     /// every one) is written to `Framebuffer::color[draw_buffers[i]]`;
     /// `None` is GL_NONE.
     pub draw_buffers: [Option<usize>; 8],

@@ -15,6 +15,29 @@ use crate::state::CompareFunc;
 use glsl::math;
 use glsl::types::SamplerKind;
 
+/// `floor(x)`, exact like `glsl::math::floor` (same bits, −0.0 and NaN
+/// included) but without the software rounding for the common case
+/// |x| < 2^23, where truncation to an integer is exact.
+fn floor(x: f32) -> f32 {
+    let small = math::abs(x) < 8_388_608.0;
+    if !small {
+        return math::floor(x);
+    }
+    let t = x as i32 as f32;
+    let f = if t > x { t - 1.0 } else { t };
+    // Integral inputs (and ±0.0) are their own floor, sign of zero kept.
+    if f == x {
+        x
+    } else {
+        f
+    }
+}
+
+/// `x - floor(x)`, as `glsl::math::fract`.
+fn fract(x: f32) -> f32 {
+    x - floor(x)
+}
+
 /// MAX_TEXTURE_LOD_BIAS.
 pub const MAX_LOD_BIAS: f32 = 16.0;
 
@@ -225,11 +248,27 @@ const MISSING: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
 
 impl Textures for TextureUnits {
     fn sample(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]) {
+        // (unit, texture and its last level) of the previous lane: lanes
+        // almost always share them, and completeness costs a walk over
+        // every level.
+        let mut cache: Option<(u32, Option<(&Texture, usize)>)> = None;
         for lane in 0..LANES {
             if req.mask & (1 << lane) == 0 {
                 continue;
             }
-            let rgba = self.sample_lane(req, lane);
+            let unit = req.unit[lane];
+            let tex = match cache {
+                Some((u, t)) if u == unit => t,
+                _ => {
+                    let t = self.complete_texture(req, unit);
+                    cache = Some((unit, t));
+                    t
+                }
+            };
+            let rgba = match tex {
+                Some((tex, q)) => self.sample_lane(req, lane, tex, q),
+                None => MISSING,
+            };
             for (o, v) in out.iter_mut().zip(rgba) {
                 o[lane] = v;
             }
@@ -238,20 +277,22 @@ impl Textures for TextureUnits {
 }
 
 impl TextureUnits {
-    fn sample_lane(&self, req: &SampleRequest, lane: usize) -> [f32; 4] {
-        let Some(unit) = self.units.get(req.unit[lane] as usize) else {
-            return MISSING;
-        };
+    /// The texture of `req`'s target bound to `unit` and its last level,
+    /// or `None` (no such unit, nothing bound, incomplete).
+    fn complete_texture(&self, req: &SampleRequest, unit: u32) -> Option<(&Texture, usize)> {
+        let unit = self.units.get(unit as usize)?;
         let tex = match req.target {
             SamplerKind::Sampler1D | SamplerKind::Sampler1DShadow => &unit.tex_1d,
             SamplerKind::Sampler2D | SamplerKind::Sampler2DShadow => &unit.tex_2d,
             SamplerKind::Sampler3D => &unit.tex_3d,
             SamplerKind::SamplerCube => &unit.cube,
         };
-        let Some(tex) = tex.as_deref() else {
-            return MISSING;
-        };
-        let Some(q) = tex.last_level() else {
+        let tex = tex.as_deref()?;
+        Some((tex, tex.last_level()?))
+    }
+
+    fn sample_lane(&self, req: &SampleRequest, lane: usize, tex: &Texture, q: usize) -> [f32; 4] {
+        let Some(unit) = self.units.get(req.unit[lane] as usize) else {
             return MISSING;
         };
         let coord = [0, 1, 2].map(|c| req.coord[c][lane]);
@@ -433,9 +474,9 @@ pub(crate) fn sample(
                 if lb >= q as f32 {
                     one(q, linear)
                 } else {
-                    let d1 = (math::floor(lb) as i64).clamp(base as i64, q as i64) as usize;
+                    let d1 = (floor(lb) as i64).clamp(base as i64, q as i64) as usize;
                     let d2 = (d1 + 1).min(q);
-                    let f = math::fract(lambda);
+                    let f = fract(lambda);
                     let (t1, t2) = (one(d1, linear), one(d2, linear));
                     std::array::from_fn(|i| (1.0 - f) * t1[i] + f * t2[i])
                 }
@@ -458,7 +499,7 @@ pub(crate) fn sample(
 type Texel = Option<usize>;
 
 fn mirror(f: f32) -> f32 {
-    let fl = math::floor(f);
+    let fl = floor(f);
     let fr = f - fl;
     if math::modulo(fl, 2.0) == 0.0 {
         fr
@@ -471,7 +512,7 @@ fn mirror(f: f32) -> f32 {
 fn wrap_coord(s: f32, wrap: Wrap, n: u32) -> f32 {
     let half = 0.5 / n as f32;
     match wrap {
-        Wrap::Repeat => math::fract(s),
+        Wrap::Repeat => fract(s),
         Wrap::Clamp => s.clamp(0.0, 1.0),
         Wrap::ClampToEdge => s.clamp(half, 1.0 - half),
         Wrap::ClampToBorder => s.clamp(-half, 1.0 + half),
@@ -482,6 +523,11 @@ fn wrap_coord(s: f32, wrap: Wrap, n: u32) -> f32 {
 fn index(i: i64, wrap: Wrap, n: u32) -> Texel {
     let n = n as i64;
     match wrap {
+        // Linear filtering asks for -1 and n at the edges, otherwise the
+        // index is in range: no division for those.
+        Wrap::Repeat if (0..n).contains(&i) => Some(i as usize),
+        Wrap::Repeat if i == -1 => Some((n - 1) as usize),
+        Wrap::Repeat if i == n => Some(0),
         Wrap::Repeat => Some(i.rem_euclid(n) as usize),
         Wrap::ClampToEdge | Wrap::MirroredRepeat => Some(i.clamp(0, n - 1) as usize),
         Wrap::Clamp | Wrap::ClampToBorder => (0..n).contains(&i).then_some(i as usize),
@@ -509,7 +555,7 @@ fn filter(
         let u = wrap_coord(st[a], wrap, n) * n as f32;
         axes[a] = if linear {
             let v = u - 0.5;
-            let i0 = math::floor(v);
+            let i0 = floor(v);
             let alpha = v - i0;
             let i0 = i0 as i64;
             (
@@ -518,7 +564,7 @@ fn filter(
                 alpha,
             )
         } else {
-            let i = math::floor(u) as i64;
+            let i = floor(u) as i64;
             let i = match wrap {
                 // s = 1 selects the last texel (eq. 3.23).
                 Wrap::Clamp => i.min(n as i64 - 1),
@@ -598,6 +644,41 @@ mod tests {
     fn at(tex: &Texture, s: f32, t: f32, lod: f32) -> [f32; 4] {
         let q = tex.last_level().expect("complete");
         sample(tex, q, [s, t, 0.0], LodBase::Value(lod), 0.0, None)
+    }
+
+    #[test]
+    fn fast_floor_is_exact() {
+        let mut values = vec![
+            0.0f32,
+            -0.0,
+            0.5,
+            -0.5,
+            1.0,
+            -1.0,
+            8_388_607.5,
+            -8_388_607.5,
+            8_388_608.0,
+            -8_388_609.0,
+            1e30,
+            -1e30,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::MIN_POSITIVE,
+            -f32::MIN_POSITIVE,
+            1e-45,
+            -1e-45,
+        ];
+        let mut bits = 0x1234_5678u32;
+        for _ in 0..100_000 {
+            bits = bits.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            values.push(f32::from_bits(bits));
+            values.push((bits >> 8) as f32 / 4096.0 - 2048.0);
+        }
+        for x in values {
+            assert_eq!(floor(x).to_bits(), math::floor(x).to_bits(), "floor({x:e})");
+            assert_eq!(fract(x).to_bits(), math::fract(x).to_bits(), "fract({x:e})");
+        }
+        assert!(floor(f32::NAN).is_nan());
     }
 
     #[test]

@@ -56,6 +56,7 @@
 pub mod bonds;
 pub mod camera;
 pub mod elements;
+pub mod gallery;
 pub mod image;
 pub mod library;
 pub mod mmcif;

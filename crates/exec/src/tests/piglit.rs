@@ -24,6 +24,24 @@ struct Test {
     commands: Vec<String>,
 }
 
+/// Runs `k` with the executor and with the reference interpreter and
+/// checks they agree bit for bit.
+fn run_both(k: &Kernel, b: &mut Batch, u: &[u32]) -> Result<(), crate::ExecError> {
+    let mut r = b.clone();
+    let got = k.run(b, u, &NoTextures);
+    let want = k.run_reference(&mut r, u, &NoTextures);
+    assert_eq!(got, want, "executor vs reference: result");
+    if got.is_ok() {
+        assert_eq!(b.discarded, r.discarded, "executor vs reference: discarded");
+        assert_eq!(
+            super::bits_of(&b.outputs),
+            super::bits_of(&r.outputs),
+            "executor vs reference: outputs"
+        );
+    }
+    got
+}
+
 fn parse(text: &str) -> Test {
     let mut t = Test {
         v120: text.contains("GLSL >= 1.20"),
@@ -130,8 +148,7 @@ fn run_test(text: &str) -> Result<(), String> {
                         vb.inputs[s.offset + 3][l] = 1.0;
                     }
                 }
-                vs.run(&mut vb, &vu, &NoTextures)
-                    .map_err(|e| e.to_string())?;
+                run_both(&vs, &mut vb, &vu).map_err(|e| e.to_string())?;
                 let mut fb = Batch::for_kernel(&fs, 0xffff);
                 for input in &fs.interface().inputs {
                     let from = match input.name.as_str() {
@@ -145,8 +162,7 @@ fn run_test(text: &str) -> Result<(), String> {
                         }
                     }
                 }
-                fs.run(&mut fb, &fu, &NoTextures)
-                    .map_err(|e| e.to_string())?;
+                run_both(&fs, &mut fb, &fu).map_err(|e| e.to_string())?;
                 let s = fs
                     .interface()
                     .output("gl_FragColor")
@@ -293,10 +309,15 @@ fn piglit_execution_shaders_lower_and_run() {
         for st in &prog.stages {
             let r = std::panic::catch_unwind(|| {
                 let mut k = Kernel::new(st)?;
-                k.set_loop_budget(1 << 20);
+                k.set_loop_budget(1 << 14);
                 let mut b = Batch::for_kernel(&k, 0xffff);
+                for (i, c) in b.inputs.iter_mut().enumerate() {
+                    for (l, x) in c.iter_mut().enumerate() {
+                        *x = (l as f32 - 6.5) * 0.37 + i as f32 * 0.11;
+                    }
+                }
                 let u = vec![0u32; k.interface().uniform_words];
-                k.run(&mut b, &u, &NoTextures).map(|_| true)
+                run_both(&k, &mut b, &u).map(|_| true)
             });
             match r {
                 Ok(Ok(_)) => {

@@ -966,6 +966,29 @@ class Context:
                 "nothing has been drawn into this context yet: call ctx.clear() and/or render a vertex array before reading"
             )
 
+    def debug_pixel(self, x: int, y: int, *, draw: Optional[int] = None, vertex: Optional[int] = None) -> "PixelDebug":
+        """Traces window pixel (``x``, ``y``) (bottom-left origin) in the
+        draws made inside the ``with`` block::
+
+            with ctx.debug_pixel(10, 20) as dbg:
+                vao.render()
+            print(dbg.text)                      # source lines beside values
+            dbg.data["draws"][0]["fragments"]    # the same, structured
+
+        Every fragment that reached the pixel, in order: its primitive and
+        vertices, interpolated inputs, each statement its shader ran with
+        the values stored, ``discard``, outputs, and the depth/stencil/blend
+        decisions. ``draw`` keeps only the n-th draw of the block (0 is the
+        first); ``vertex`` also traces the vertex shader of that vertex.
+        """
+        for n, v in (("x", x), ("y", y)):
+            if not isinstance(v, (int, np.integer)) or isinstance(v, bool) or v < 0:
+                raise ValueError(f"{n} must be a non-negative int, got {v!r}")
+        for n, v in (("draw", draw), ("vertex", vertex)):
+            if v is not None and (not isinstance(v, (int, np.integer)) or isinstance(v, bool) or v < 0):
+                raise ValueError(f"{n} must be a non-negative int or None, got {v!r}")
+        return PixelDebug(self, int(x), int(y), draw, vertex)
+
     def read(self) -> np.ndarray:
         """The color buffer as an ``H x W x 4`` ``uint8`` array, top row first."""
         self._check_drawn()
@@ -1008,3 +1031,39 @@ def _cap(name: str) -> int:
 
 def _matrix_out(v: Iterable[float]) -> np.ndarray:
     return np.asarray(list(v), dtype=np.float32).reshape(4, 4).T.copy()
+
+
+class PixelDebug:
+    """The trace of one pixel over the draws of a ``with`` block
+    (:meth:`Context.debug_pixel`): :attr:`text` is the readable report,
+    :attr:`data` the same as a dict (the JSON of ``shaderbox debug``)."""
+
+    def __init__(self, ctx: Context, x: int, y: int, draw: Optional[int], vertex: Optional[int]):
+        self._ctx = ctx
+        self.pixel = (x, y)
+        self._args = (x, y, draw, vertex)
+        self.text = ""
+        self.data: Dict[str, Any] = {}
+
+    def __enter__(self) -> "PixelDebug":
+        self._ctx._raw.debug_begin(*self._args)
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        import json
+
+        text, js = self._ctx._raw.debug_end()
+        self.text = text
+        self.data = json.loads(js)
+        self.data["pixel"] = list(self.pixel)
+
+    @property
+    def fragments(self) -> List[Dict[str, Any]]:
+        """Every fragment of every traced draw, in order."""
+        return [f for d in self.data.get("draws", []) for f in d.get("fragments", [])]
+
+    def __str__(self) -> str:
+        return self.text
+
+    def __repr__(self) -> str:
+        return f"<PixelDebug {self.pixel}: {len(self.fragments)} fragment(s)>"

@@ -1,0 +1,294 @@
+//! Backward register liveness over a program's control-flow graph, and the
+//! dead code it reveals (used by [`crate::Kernel::depth_only`] and by the
+//! executor's compiler, `crate::engine`).
+//!
+//! Basic blocks end at jumps, conditional jumps, subroutine calls and
+//! returns; the analysis iterates to a fixpoint (loops). Control-flow ops
+//! (mask bookkeeping, jumps, loop counting, `discard`, calls) are always
+//! needed, with the registers they read; a data op is needed when it writes
+//! a register that is live after it. Ops that write every lane kill their
+//! destinations; masked writes (`Store`, `Scatter`) do not (the other lanes
+//! keep the old value). Dropping the unneeded ops leaves every needed op
+//! reading the very bits it read before, on every lane.
+
+use crate::program::{Op, Program, Reg, TexLod};
+
+/// What [`analyze`] finds.
+pub(crate) struct Liveness {
+    /// Per op: needed.
+    pub keep: Vec<bool>,
+    /// Registers live at the entry (read before any full write on some
+    /// path): the ones a run must initialize.
+    pub entry: Vec<u64>,
+    /// Per op: for a `Store { a, .. }`, `a` is dead after the store.
+    pub store_source_dead: Vec<bool>,
+}
+
+impl Liveness {
+    pub fn entry_live(&self, r: Reg) -> bool {
+        get(&self.entry, r)
+    }
+}
+
+/// The analysis keeps one bit per register per basic block; beyond this many
+/// bits it declines (returns `None`) rather than use a lot of memory.
+const MAX_BITS: u64 = 1 << 27;
+
+/// Liveness of `ops` (the ops of `p`, or a rewrite of them over `nregs`
+/// registers using `p`'s side tables) with `live_out` live at the end;
+/// `None` when the analysis would be too large.
+pub(crate) fn analyze(p: &Program, ops: &[Op], nregs: u32, live_out: &[Reg]) -> Option<Liveness> {
+    let n = ops.len();
+    let nregs = nregs as usize;
+    if n == 0 {
+        return None;
+    }
+    let words = nregs.div_ceil(64).max(1);
+
+    // Basic blocks: leaders are op 0, every jump/call target and every op
+    // after a jump, conditional jump, call or return.
+    let mut leader = vec![false; n + 1];
+    leader[0] = true;
+    leader[n] = true;
+    for (i, op) in ops.iter().enumerate() {
+        match *op {
+            Op::Jump { target } | Op::JumpIfNone { target } | Op::Call { target, .. } => {
+                leader[(target as usize).min(n)] = true;
+                leader[i + 1] = true;
+            }
+            Op::Ret { .. } => leader[i + 1] = true,
+            _ => {}
+        }
+    }
+    let starts: Vec<usize> = (0..n).filter(|&i| leader[i]).collect();
+    let nblocks = starts.len();
+    if (nblocks as u64).saturating_mul(words as u64 * 64) > MAX_BITS {
+        return None;
+    }
+    // Block of each leader op.
+    let mut block_of = vec![usize::MAX; n + 1];
+    for (b, &s) in starts.iter().enumerate() {
+        block_of[s] = b;
+    }
+    let end_of = |b: usize| starts.get(b + 1).copied().unwrap_or(n);
+    // Where each return slot's subroutine returns to: the op after each call.
+    let mut returns: Vec<Vec<usize>> = vec![Vec::new(); p.subroutines as usize];
+    for (i, op) in ops.iter().enumerate() {
+        if let Op::Call { slot, .. } = *op {
+            if let Some(r) = returns.get_mut(slot as usize) {
+                r.push(i + 1);
+            }
+        }
+    }
+    // Successor ops (n = the exit) of each block.
+    let succs: Vec<Vec<usize>> = (0..nblocks)
+        .map(|b| {
+            let last = end_of(b) - 1;
+            match ops[last] {
+                Op::Jump { target } | Op::Call { target, .. } => vec![(target as usize).min(n)],
+                Op::JumpIfNone { target } => vec![(target as usize).min(n), last + 1],
+                Op::Ret { slot } => returns.get(slot as usize).cloned().unwrap_or_default(),
+                _ => vec![last + 1],
+            }
+        })
+        .collect();
+
+    let eff: Vec<Effects> = ops.iter().map(|op| effects(p, op)).collect();
+    let mut exit = vec![0u64; words];
+    for &r in live_out {
+        set(&mut exit, r);
+    }
+    let mut live_in = vec![vec![0u64; words]; nblocks];
+    let mut live = vec![0u64; words];
+    // Round-robin in reverse order until nothing changes. Each pass can
+    // only add bits, so this ends after at most nblocks * nregs passes (in
+    // practice a few).
+    loop {
+        let mut changed = false;
+        for b in (0..nblocks).rev() {
+            live.iter_mut().for_each(|w| *w = 0);
+            for &s in &succs[b] {
+                let src = if s >= n {
+                    &exit
+                } else {
+                    match block_of.get(s) {
+                        Some(&sb) if sb < nblocks => &live_in[sb],
+                        _ => continue,
+                    }
+                };
+                for (w, x) in live.iter_mut().zip(src) {
+                    *w |= x;
+                }
+            }
+            for i in (starts[b]..end_of(b)).rev() {
+                transfer(&eff[i], &mut live);
+            }
+            if live != live_in[b] {
+                live_in[b].clone_from(&live);
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+
+    // Mark the kept ops with the final live-out sets.
+    let mut keep = vec![false; n];
+    let mut store_source_dead = vec![false; n];
+    for b in 0..nblocks {
+        live.iter_mut().for_each(|w| *w = 0);
+        for &s in &succs[b] {
+            let src = if s >= n {
+                &exit
+            } else {
+                match block_of.get(s) {
+                    Some(&sb) if sb < nblocks => &live_in[sb],
+                    _ => continue,
+                }
+            };
+            for (w, x) in live.iter_mut().zip(src) {
+                *w |= x;
+            }
+        }
+        for i in (starts[b]..end_of(b)).rev() {
+            keep[i] = needed(&eff[i], &live);
+            if let Op::Store { a, .. } = ops[i] {
+                store_source_dead[i] = !get(&live, a);
+            }
+            transfer(&eff[i], &mut live);
+        }
+    }
+    let entry = live_in.first().cloned().unwrap_or_else(|| exit.clone());
+    Some(Liveness {
+        keep,
+        entry,
+        store_source_dead,
+    })
+}
+
+fn set(bits: &mut [u64], r: Reg) {
+    if let Some(w) = bits.get_mut(r as usize / 64) {
+        *w |= 1 << (r % 64);
+    }
+}
+
+fn clear(bits: &mut [u64], r: Reg) {
+    if let Some(w) = bits.get_mut(r as usize / 64) {
+        *w &= !(1 << (r % 64));
+    }
+}
+
+fn get(bits: &[u64], r: Reg) -> bool {
+    bits.get(r as usize / 64)
+        .is_some_and(|w| w & (1 << (r % 64)) != 0)
+}
+
+/// How an op touches registers: `(first, count)` ranges it writes on every
+/// lane, writes on some lanes, and reads.
+pub(crate) struct Effects {
+    pub full_defs: Vec<(Reg, u32)>,
+    pub partial_defs: Vec<(Reg, u32)>,
+    pub uses: Vec<(Reg, u32)>,
+    pub control: bool,
+}
+
+pub(crate) fn effects(p: &Program, op: &Op) -> Effects {
+    let mut e = Effects {
+        full_defs: Vec::new(),
+        partial_defs: Vec::new(),
+        uses: Vec::new(),
+        control: false,
+    };
+    match *op {
+        Op::FMac { d, a, b } => {
+            // d = d + a * b reads its destination.
+            e.full_defs.push((d, 1));
+            e.uses.extend([(d, 1), (a, 1), (b, 1)]);
+        }
+        Op::Store { d, a } => {
+            e.partial_defs.push((d, 1));
+            e.uses.push((a, 1));
+        }
+        Op::Scatter { base, off, max, a } => {
+            e.partial_defs.push((base, max.saturating_add(1)));
+            e.uses.push((off, 1));
+            e.uses.push((a, 1));
+        }
+        Op::Gather { d, base, off, max } => {
+            e.full_defs.push((d, 1));
+            e.uses.push((off, 1));
+            e.uses.push((base, max.saturating_add(1)));
+        }
+        Op::Noise { d, n, a, dims } => {
+            e.full_defs.push((d, n as u32));
+            e.uses.push((a, dims as u32));
+        }
+        Op::Texture { index } => {
+            if let Some(t) = p.textures.get(index as usize) {
+                e.full_defs.push((t.d, 4));
+                e.uses.push((t.unit, 1));
+                e.uses.extend(t.coord.iter().map(|&c| (c, 1)));
+                if let Some(c) = t.compare {
+                    e.uses.push((c, 1));
+                }
+                if let TexLod::Implicit { bias: Some(b) } | TexLod::Explicit(Some(b)) = t.lod {
+                    e.uses.push((b, 1));
+                }
+            }
+        }
+        Op::AndMask { c } | Op::AndNotMask { c, .. } => {
+            e.control = true;
+            e.uses.push((c, 1));
+        }
+        Op::SaveMask { .. }
+        | Op::RestoreMask { .. }
+        | Op::JumpIfNone { .. }
+        | Op::Jump { .. }
+        | Op::LoopIter
+        | Op::Kill { .. }
+        | Op::Discard { .. }
+        | Op::Call { .. }
+        | Op::Ret { .. }
+        | Op::SyncDiscard { .. } => e.control = true,
+        _ => {
+            // Plain data ops: the first register operand is the
+            // destination, written on every lane.
+            let mut first = true;
+            op.for_each_reg(&mut |r, n| {
+                if first {
+                    e.full_defs.push((r, n));
+                    first = false;
+                } else {
+                    e.uses.push((r, n));
+                }
+            });
+        }
+    }
+    e
+}
+
+fn range(r: Reg, n: u32) -> impl Iterator<Item = Reg> {
+    (0..n.max(1)).map(move |k| r.saturating_add(k))
+}
+
+fn needed(e: &Effects, live: &[u64]) -> bool {
+    e.control
+        || e.full_defs
+            .iter()
+            .chain(&e.partial_defs)
+            .any(|&(r, n)| range(r, n).any(|r| get(live, r)))
+}
+
+/// `live` before `op`, given `live` after it.
+fn transfer(e: &Effects, live: &mut [u64]) {
+    if !needed(e, live) {
+        return;
+    }
+    for &(r, n) in &e.full_defs {
+        range(r, n).for_each(|r| clear(live, r));
+    }
+    for &(r, n) in &e.uses {
+        range(r, n).for_each(|r| set(live, r));
+    }
+}

@@ -1,0 +1,155 @@
+//! Every executor variant the CPU supports computes the same bytes as the
+//! portable one (and as the reference interpreter).
+
+use super::{bits_of, link_one};
+use crate::{supported_variants, Batch, Kernel, NoTextures, Variant};
+use glsl::ir::Stage;
+
+const SPHERE_FRAG: &str = include_str!("../../../../shaders/sphere.frag");
+const SPHERE_VERT: &str = include_str!("../../../../shaders/sphere.vert");
+
+/// Shaders touching every kind of op: float/int/bool arithmetic and
+/// comparisons, conversions, every built-in, dynamic indexing (gather,
+/// scatter, uniform gather), derivatives, noise, loops, discard, texture
+/// lookups (NoTextures), subroutine mode via the sphere shaders.
+const SHADERS: &[(Stage, &str)] = &[
+    (Stage::Fragment, SPHERE_FRAG),
+    (Stage::Vertex, SPHERE_VERT),
+    (
+        Stage::Fragment,
+        "#version 120
+        uniform float u[4]; varying vec4 v; uniform sampler2D s;
+        void main() {
+            vec4 a = v * 3.7 - 1.2;
+            vec4 r = vec4(0.0);
+            r += sin(a) + cos(a) + tan(a * 0.1) + asin(clamp(a, -1.0, 1.0)) + acos(clamp(a * 0.5, -1.0, 1.0));
+            r += atan(a) + atan(a, a.yzwx) + pow(abs(a), a.wzyx) + exp(a) + log(abs(a)) + exp2(a) + log2(abs(a));
+            r += sqrt(abs(a)) + inversesqrt(abs(a)) + abs(a) + sign(a) + floor(a) + ceil(a) + fract(a);
+            r += mod(a, a.yzwx) + min(a, a.zwxy) + max(a, 0.5) + clamp(a, -0.5, 0.75);
+            r += mix(a, a.wzyx, v.x) + step(0.1, a) + smoothstep(-1.0, 1.0, a);
+            r += radians(a) + degrees(a) + vec4(dot(a, v), length(a), distance(a, v), 0.0);
+            r.xyz += cross(a.xyz, v.zyx) + normalize(a.xyz) + reflect(a.xyz, normalize(v.xyz))
+                + refract(normalize(a.xyz), normalize(v.xyz), 0.7) + faceforward(a.xyz, v.xyz, a.zyx);
+            r += dFdx(a) + dFdy(a) + fwidth(a) + noise4(a) + vec4(noise1(a), noise2(a), noise1(v.x));
+            mat3 m = mat3(a.xyz, a.yzw, v.xyz);
+            r.xyz += m * a.xyz + a.xyz * m + (m * matrixCompMult(m, m))[1];
+            int i = int(a.x * 10.0);
+            ivec2 iv = ivec2(i / 3, i * i - 7) + ivec2(-i, i / (i - i + 1));
+            bool b = any(lessThan(a, v)) ^^ all(greaterThanEqual(a, v)) || !(i == 3) && iv.x < iv.y;
+            float arr[6];
+            for (int k = 0; k < 6; k++) arr[k] = float(k) * a.y;
+            arr[int(abs(v.y) * 6.0)] = u[int(abs(v.z) * 4.0)];
+            for (int k = 0; k < 8; k++) {
+                if (arr[k / 2] > 1.0) break;
+                if (k == 2) continue;
+                r.w += arr[k - k / 2] * float(b);
+                if (r.w > 100.0 && v.w > 0.9) discard;
+            }
+            r += texture2D(s, a.xy) + texture2DProj(s, a.xyz) + texture2D(s, v.xy, 0.5);
+            gl_FragColor = r + vec4(iv, float(b), 0.0);
+        }",
+    ),
+];
+
+fn fill(b: &mut Batch, seed: u32) {
+    let mut s = seed.wrapping_mul(2_654_435_761) | 1;
+    for c in b.inputs.iter_mut() {
+        for x in c.iter_mut() {
+            s ^= s << 13;
+            s ^= s >> 17;
+            s ^= s << 5;
+            *x = (s >> 8) as f32 / (1u32 << 23) as f32 - 1.0;
+        }
+    }
+}
+
+#[test]
+fn every_variant_computes_the_same_bytes() {
+    let variants = supported_variants();
+    assert_eq!(variants.first(), Some(&Variant::Portable));
+    for (n, (stage, src)) in SHADERS.iter().enumerate() {
+        let linked = link_one(*stage, src).unwrap_or_else(|e| panic!("shader {n}: {e}"));
+        for limit in [crate::limits::INLINE_LIMIT, 0] {
+            let k = Kernel::with_inline_limit(&linked, limit).expect("lowers");
+            let u: Vec<u32> = (0..k.interface().uniform_words)
+                .map(|w| (0.25 + w as f32 * 0.125).to_bits())
+                .collect();
+            for round in 0..40u32 {
+                let active = if round % 4 == 3 { 0x0ff0 } else { 0xffff };
+                let mut base = Batch::for_kernel(&k, active);
+                fill(&mut base, round + 1);
+                let mut want = base.clone();
+                let r0 = k.run_reference(&mut want, &u, &NoTextures);
+                for &v in &variants {
+                    let mut got = base.clone();
+                    let r = k.run_variant(v, &mut got, &u, &NoTextures);
+                    assert_eq!(r, r0, "shader {n} {}: result", v.name());
+                    assert_eq!(got.discarded, want.discarded, "shader {n} {}", v.name());
+                    assert_eq!(
+                        bits_of(&got.outputs),
+                        bits_of(&want.outputs),
+                        "shader {n} {} round {round}: outputs",
+                        v.name()
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Time per 16-lane batch of the sphere-impostor fragment shader with the
+/// reference interpreter and each executor variant, best of 7 rounds
+/// (run with `cargo test --release -p shaderbox-exec bench_sphere --
+/// --ignored --nocapture`).
+#[test]
+#[ignore = "benchmark"]
+fn bench_sphere() {
+    let linked = link_one(Stage::Fragment, SPHERE_FRAG).unwrap();
+    let k = Kernel::new(&linked).unwrap();
+    let u = super::depth_slice::sphere_uniforms(&k, 0.0);
+    let mut batches: Vec<Batch> = (0..64)
+        .map(|i| {
+            let mut b = Batch::for_kernel(&k, 0xffff);
+            fill(&mut b, i + 1);
+            b
+        })
+        .collect();
+    let prepared = k.prepare(&u);
+    let mut time = |f: &mut dyn FnMut(&mut Batch)| {
+        let mut best = f64::MAX;
+        for _ in 0..7 {
+            let t = std::time::Instant::now();
+            for _ in 0..20 {
+                for b in batches.iter_mut() {
+                    f(b);
+                }
+            }
+            best = best.min(t.elapsed().as_secs_f64() / (20.0 * 64.0));
+        }
+        best * 1e9
+    };
+    let reference = time(&mut |b| k.run_reference(b, &u, &NoTextures).unwrap());
+    eprintln!(
+        "sphere.frag: {} ops (executor: {}); reference interpreter {reference:.0} ns/batch",
+        k.op_count(),
+        k.code.ins.len()
+    );
+    for v in supported_variants() {
+        let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
+        eprintln!("  {:8} {t:.0} ns/batch ({:.2}x)", v.name(), reference / t);
+    }
+    let t = time(&mut |b| k.run_prepared(b, &prepared, &NoTextures).unwrap());
+    eprintln!(
+        "  {:8} {t:.0} ns/batch with run_prepared ({:.2}x)",
+        crate::kernel_variant().name(),
+        reference / t
+    );
+    if let Some(d) = k.depth_only() {
+        let t = time(&mut |b| d.run(b, &u, &NoTextures).unwrap());
+        eprintln!(
+            "  depth_only: {} ops, {t:.0} ns/batch ({:.2}x)",
+            d.op_count(),
+            reference / t
+        );
+    }
+}
