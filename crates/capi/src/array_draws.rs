@@ -49,6 +49,74 @@ fn apply(c: &mut OsContext, vals: &[(AttribSource, [f32; 4])]) {
     }
 }
 
+/// The attribute values of one array element ([`element_values`]).
+type ElementValues = Vec<(AttribSource, [f32; 4])>;
+
+/// Most array elements one draw compiled into a display list may have
+/// (more: GL_OUT_OF_MEMORY when the list runs).
+pub const MAX_COMPILED_ELEMENTS: usize = 1 << 20;
+
+/// Compiles a vertex-array draw into the display list being compiled
+/// (GL 2.1 §5.4: array data is dereferenced at compile time): the
+/// elements `indices` are fetched now, and the list replays them as
+/// glBegin(mode), each element's attribute calls, glEnd. `Err(error)`:
+/// the call is invalid; the list raises the error when it runs (as Mesa
+/// does). True when the call must not also execute now (GL_COMPILE).
+pub(crate) fn compile_draw(c: &mut OsContext, mode: u32, indices: Result<Vec<u32>, u32>) -> bool {
+    let rec: Result<Vec<ElementValues>, u32> = match indices {
+        Err(e) => Err(e),
+        Ok(_) if mode > GL_POLYGON => Err(GL_INVALID_ENUM),
+        Ok(idx) if idx.len() > MAX_COMPILED_ELEMENTS => Err(GL_OUT_OF_MEMORY),
+        Ok(idx) => Ok(idx.iter().map(|&i| element_values(c, i)).collect()),
+    };
+    c.record(move || {
+        with_ctx((), |c| match &rec {
+            Err(e) => {
+                if !c.gl.reject_in_begin() {
+                    c.gl.record_error(*e)
+                }
+            }
+            Ok(elements) => {
+                if c.gl.reject_in_begin() || elements.is_empty() {
+                    return;
+                }
+                c.gl.begin(mode);
+                for vals in elements {
+                    apply(c, vals);
+                }
+                c.gl.end();
+                c.dirty = true;
+            }
+        })
+    })
+}
+
+/// The indices glDrawArrays(first, count) draws, or its error.
+pub(crate) fn array_indices(first: GLint, count: GLsizei) -> Result<Vec<u32>, u32> {
+    if first < 0 || count < 0 {
+        return Err(GL_INVALID_VALUE);
+    }
+    let n = (count as usize).min(MAX_COMPILED_ELEMENTS + 1) as u32;
+    Ok((0..n).map(|i| (first as u32).saturating_add(i)).collect())
+}
+
+/// The indices glDrawElements(count, ty, indices) draws, or its error.
+pub(crate) unsafe fn compiled_element_indices(
+    c: &mut OsContext,
+    count: GLsizei,
+    ty: GLenum,
+    indices: *const c_void,
+) -> Result<Vec<u32>, u32> {
+    if !matches!(ty, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT) {
+        return Err(GL_INVALID_ENUM);
+    }
+    if count < 0 {
+        return Err(GL_INVALID_VALUE);
+    }
+    // SAFETY: GL's contract for the index pointer, as for the draw.
+    Ok(unsafe { element_indices(c, count, ty, indices) }.1)
+}
+
 gl_entry_points! {
     fn glArrayElement(i: GLint) => |c| {
         if i < 0 {
@@ -72,8 +140,20 @@ gl_entry_points! {
         primcount: GLsizei
     ) => |c| {
         if c.compiling() {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return;
+            if primcount < 0 {
+                c.gl.record_error(GL_INVALID_VALUE);
+                return;
+            }
+            let counts = rd_vec(count, primcount as i64);
+            let ptrs = rd_vec(indices, primcount as i64);
+            let mut skip = false;
+            for (&k, &p) in counts.iter().zip(&ptrs) {
+                let idx = compiled_element_indices(c, k, ty, p);
+                skip = compile_draw(c, mode, idx);
+            }
+            if skip || primcount == 0 {
+                return;
+            }
         }
         if primcount < 0 {
             c.gl.record_error(GL_INVALID_VALUE);

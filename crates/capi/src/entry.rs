@@ -1256,8 +1256,14 @@ gl_entry_points! {
         indices: *const c_void
     ) => |c| {
         if c.compiling() {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return;
+            let idx = if end < start {
+                Err(GL_INVALID_VALUE)
+            } else {
+                crate::array_draws::compiled_element_indices(c, count, ty, indices)
+            };
+            if crate::array_draws::compile_draw(c, mode, idx) {
+                return;
+            }
         }
         if end < start {
             c.gl.record_error(GL_INVALID_VALUE);
@@ -1275,9 +1281,16 @@ gl_entry_points! {
         c.dirty = true;
     }
     fn glMultiDrawArrays(mode: GLenum, first: *const GLint, count: *const GLsizei, n: GLsizei) => |c| {
-        if c.compiling() {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return;
+        if c.compiling() && n >= 0 {
+            let f = rd_vec(first, n as i64);
+            let k = rd_vec(count, n as i64);
+            let mut skip = false;
+            for (f, k) in f.iter().zip(&k) {
+                skip = crate::array_draws::compile_draw(c, mode, crate::array_draws::array_indices(*f, *k));
+            }
+            if skip || n == 0 {
+                return;
+            }
         }
         if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
         if crate::buffers::sources_mapped(c, false) && !c.gl.in_begin_end() {
@@ -1848,8 +1861,9 @@ gl_entry_points! {
             c.gl.record_error(GL_INVALID_OPERATION);
             return;
         }
-        if c.compiling() {
-            c.gl.record_error(GL_INVALID_OPERATION);
+        if c.compiling()
+            && crate::array_draws::compile_draw(c, mode, crate::array_draws::array_indices(first, count))
+        {
             return;
         }
         if first >= 0 && count > 0 {
@@ -1865,8 +1879,10 @@ gl_entry_points! {
             return;
         }
         if c.compiling() {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return;
+            let idx = crate::array_draws::compiled_element_indices(c, count, ty, indices);
+            if crate::array_draws::compile_draw(c, mode, idx) {
+                return;
+            }
         }
         let (data, idx) = element_indices(c, count, ty, indices);
         if let (Some(lo), Some(hi)) = (idx.iter().min(), idx.iter().max()) {

@@ -14,10 +14,12 @@
 //!   mode, as the spec says for render mode;
 //! - glAccum: the context has no accumulation buffer: GL_INVALID_OPERATION
 //!   (GL 2.1 §4.2.4);
-//! - glLineStipple / glPolygonStipple, edge flags, glPixelZoom,
-//!   glPixelTransfer*, glPixelMap*: kept and queryable, **not applied**
-//!   (lines and polygons draw unstippled, edge flags do not hide edges,
-//!   pixel transfers are identity);
+//! - glLineStipple / glPolygonStipple, edge flags, glPixelMap*: kept and
+//!   queryable, **not applied** (lines and polygons draw unstippled, edge
+//!   flags do not hide edges, pixel maps are identity); glPixelZoom and
+//!   the scale/bias/index values of glPixelTransfer* apply to pixel
+//!   rectangles ([`crate::pixel_path`]) and nowhere else (texture uploads
+//!   and glReadPixels ignore them);
 //! - compressed textures: no compressed internal format exists
 //!   (GL_NUM_COMPRESSED_TEXTURE_FORMATS is 0), so glCompressedTex* raise
 //!   GL_INVALID_ENUM and glGetCompressedTexImage GL_INVALID_OPERATION;

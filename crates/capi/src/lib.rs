@@ -26,7 +26,15 @@
 //!   GL_UNSIGNED_SHORT_5_6_5) given, bottom row first unless
 //!   `OSMesaPixelStore(OSMESA_Y_UP, 0)`, rows `OSMESA_ROW_LENGTH` apart.
 //! - Display lists are recorded at the C level ([`lists`]); vertex-array
-//!   draws cannot be compiled into them yet (GL_INVALID_OPERATION).
+//!   draws and pixel images (glDrawPixels, glBitmap) are dereferenced at
+//!   compile time (GL 2.1 §5.4).
+//! - Occlusion queries ([`occlusion`]) count exactly the fragments that
+//!   pass the depth test, whatever the thread count; results are
+//!   available when glEndQuery returns.
+//! - The raster-position pixel path ([`pixel_path`]): glRasterPos runs the
+//!   current vertex stage (lighting, texture matrices, a user vertex
+//!   shader) on one vertex; glDrawPixels / glBitmap / glCopyPixels
+//!   fragments go through the per-fragment operations.
 //! - Client vertex arrays: pointers are kept as given and the bytes a draw
 //!   reads are copied at draw time (safety argument in [`arrays`]).
 //! - No entry point unwinds into C: panics are caught (the call then does
@@ -46,18 +54,25 @@
 //! generates them; [`queries`] (state queries), [`buffers`] (map/unmap,
 //! buffer queries, pixel buffer objects), [`pixels`] (texture read-back,
 //! 1D/3D sub-images, framebuffer copies), [`array_draws`]
-//! (glArrayElement, glMultiDrawElements, glInterleavedArrays), [`attribs`]
+//! (glArrayElement, glMultiDrawElements, glInterleavedArrays, array draws
+//! compiled into lists), [`occlusion`] (queries), [`pixel_path`]
+//! (glRasterPos*, glWindowPos*, glDrawPixels, glBitmap, glCopyPixels), [`attribs`]
 //! (attribute stacks) and [`legacy`] (GL 1.x calls kept as state) add the
 //! rest; [`procs`] chains their tables for OSMesaGetProcAddress.
 //!
 //! ## Limitations
-//! - Missing entry points (README.md lists all 106 of GL 1.0–2.1's 583):
-//!   the ARB_imaging subset, evaluators, occlusion queries, and the
-//!   raster-position pixel path (glRasterPos*, glWindowPos*,
-//!   glDrawPixels, glBitmap, glCopyPixels).
+//! - Missing entry points (README.md lists all 55 of GL 1.0–2.1's 583):
+//!   the ARB_imaging subset and evaluators, left out on purpose.
+//! - Pixel rectangles (glDrawPixels, glBitmap, glCopyPixels) are not
+//!   shaded: texturing, fog, color sum and a bound fragment shader do not
+//!   apply to their fragments (GL 2.1 applies them). Of the pixel
+//!   transfer state only color/depth scale and bias, index shift/offset
+//!   (stencil) and the zoom apply; pixel maps do not. GL_COLOR_INDEX data
+//!   and GL_BITMAP-typed rectangles raise GL_INVALID_OPERATION;
+//!   GL_UNPACK_LSB_FIRST (bitmaps are read most significant bit first),
+//!   row length and skip values are not applied.
 //! - Kept as state, not applied when drawing ([`legacy`]): line and
-//!   polygon stipples, edge flags, pixel transfer scale/bias/maps and
-//!   zoom, GL_COMBINE texture-environment parameters (GL_COMBINE draws as
+//!   polygon stipples, edge flags, pixel maps, GL_COMBINE texture-environment parameters (GL_COMBINE draws as
 //!   GL_MODULATE), texture priorities. glRenderMode(GL_SELECT /
 //!   GL_FEEDBACK) raises GL_INVALID_OPERATION (selection and feedback are
 //!   not implemented); the name stack and glPassThrough are ignored, as in
@@ -89,8 +104,10 @@ pub mod debug_env;
 pub mod entry;
 pub mod legacy;
 pub mod lists;
+pub mod occlusion;
 pub mod osmesa;
 pub mod osmesa_enums;
+pub mod pixel_path;
 pub mod pixels;
 pub mod procs;
 pub mod queries;
@@ -101,6 +118,8 @@ pub use attribs::*;
 pub use buffers::*;
 pub use entry::*;
 pub use legacy::*;
+pub use occlusion::*;
+pub use pixel_path::*;
 pub use pixels::*;
 pub use queries::*;
 // Each entry-point module has its own table; the crate root names entry's.

@@ -5,8 +5,12 @@
 //! replays them. Commands §5.4 excludes (queries, object creation, client
 //! state, pixel store, glFinish...) execute immediately.
 //!
-//! Limitation: vertex-array draws (glDrawArrays, glDrawElements, ...) are
-//! not compiled yet: inside glNewList they raise GL_INVALID_OPERATION.
+//! Vertex-array draws (glDrawArrays, glDrawElements, glDrawRangeElements,
+//! glMultiDraw*, glArrayElement) dereference the enabled arrays at compile
+//! time and record the elements' values, replayed as glBegin / attribute
+//! calls / glEnd ([`crate::array_draws::compile_draw`]); an invalid call
+//! records its error, raised when the list runs. Pixel images
+//! (glDrawPixels, glBitmap) are copied at compile time too.
 
 use crate::context::{self, guard, with_ctx, OsContext};
 use crate::types::*;

@@ -13,6 +13,8 @@ pub fn lookup(name: &str) -> Option<*const ()> {
         crate::pixels::lookup,
         crate::array_draws::lookup,
         crate::array_draws::lookup_extra,
+        crate::occlusion::lookup,
+        crate::pixel_path::lookup,
     ] {
         if let Some(p) = table(name) {
             return Some(p);

@@ -131,7 +131,7 @@ fn hostile_call_sequences_never_crash() {
             let e2 = rng.pick(ENUMS);
             let n = names[rng.next() as usize % names.len()];
             let (a, b) = (rng.int(), rng.int().clamp(-4, 64));
-            match rng.next() % 54 {
+            match rng.next() % 63 {
                 0 => glBegin(e),
                 1 => glEnd(),
                 2 => glVertex3f(rng.f(), rng.f(), rng.f()),
@@ -244,6 +244,29 @@ fn hostile_call_sequences_never_crash() {
                     glRenderMode(e);
                 }
                 52 => glInterleavedArrays(e, rng.pick(&[0, 8, -1]), fp as *const c_void),
+                53 => glBeginQuery(rng.pick(&[e, GL_SAMPLES_PASSED]), n),
+                54 => glEndQuery(rng.pick(&[e, GL_SAMPLES_PASSED])),
+                55 => glGetQueryObjectuiv(n, rng.pick(&[e, GL_QUERY_RESULT]), op as *mut GLuint),
+                56 => glRasterPos4f(rng.f(), rng.f(), rng.f(), rng.f()),
+                57 => glWindowPos3f(rng.f() * 8.0, rng.f() * 8.0, rng.f()),
+                58 => glDrawPixels(
+                    a.clamp(-1, 16),
+                    b.clamp(-1, 16),
+                    rng.pick(&[e, GL_RGBA, GL_DEPTH_COMPONENT, GL_STENCIL_INDEX]),
+                    rng.pick(&[e2, GL_FLOAT, GL_UNSIGNED_BYTE]),
+                    fp as *const c_void,
+                ),
+                59 => glBitmap(
+                    a.clamp(-1, 16),
+                    b.clamp(-1, 16),
+                    rng.f(),
+                    rng.f(),
+                    rng.f(),
+                    rng.f(),
+                    fp as *const GLubyte,
+                ),
+                60 => glCopyPixels(a, b, a.clamp(-1, 30), b.clamp(-1, 30), e),
+                61 => glPixelZoom(rng.f(), rng.f()),
                 _ => {
                     let _ = glGetError();
                 }

@@ -473,11 +473,31 @@ fn display_lists_replay_what_they_recorded() {
         glCallLists(2, GL_UNSIGNED_BYTE, offsets.as_ptr() as *const c_void);
         glFinish();
         assert_eq!(px(&buf, 0, 0), [0, 255, 0, 255]);
-        // Errors: nested glNewList, glEndList outside, draws from arrays.
+        // Vertex arrays are dereferenced at compile time (GL 2.1 §5.4):
+        // changing the client memory afterwards does not change the list.
+        let mut verts: [f32; 6] = [-1.0, -1.0, 3.0, -1.0, -1.0, 3.0];
+        let mut colors: [f32; 9] = [1.0, 0.0, 1.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0];
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_COLOR_ARRAY);
+        glVertexPointer(2, GL_FLOAT, 0, verts.as_ptr() as *const c_void);
+        glColorPointer(3, GL_FLOAT, 0, colors.as_ptr() as *const c_void);
+        glNewList(l + 1, GL_COMPILE);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDrawArrays(GL_LESS, 0, 3); // raises GL_INVALID_ENUM when run
+        glEndList();
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        verts = [0.0; 6];
+        colors = [0.0; 9];
+        std::hint::black_box((&verts, &colors));
+        glDisableClientState(GL_VERTEX_ARRAY);
+        glDisableClientState(GL_COLOR_ARRAY);
+        glCallList(l + 1);
+        assert_eq!(glGetError(), GL_INVALID_ENUM);
+        glFinish();
+        assert_eq!(px(&buf, 0, 0), [255, 0, 255, 255]);
+        // Errors: nested glNewList, glEndList outside.
         glNewList(l, GL_COMPILE);
         glNewList(l + 1, GL_COMPILE);
-        assert_eq!(glGetError(), GL_INVALID_OPERATION);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
         assert_eq!(glGetError(), GL_INVALID_OPERATION);
         glEndList();
         glEndList();

@@ -27,6 +27,7 @@ pub(crate) struct ServerAttribs {
     current: [[f32; 4]; 4],
     current_tex: [[f32; 4]; MAX_TEXTURE_UNITS],
     current_generic: [[f32; 4]; MAX_VERTEX_ATTRIBS],
+    raster: crate::pixel_path::RasterPos,
     bound_textures: Vec<[u32; 4]>,
 }
 
@@ -100,6 +101,7 @@ impl Context {
             current: [va.color, va.secondary, va.normal, va.fog],
             current_tex: va.tex,
             current_generic: va.generic,
+            raster: self.raster.clone(),
             bound_textures: self.objects.bound.clone(),
         });
     }
@@ -211,6 +213,7 @@ impl Context {
             self.va.fog = fog;
             self.va.tex = s.current_tex;
             self.va.generic = s.current_generic;
+            self.raster = s.raster.clone();
         }
         if has(GL_TRANSFORM_BIT) {
             self.matrix_mode = s.matrix_mode;

@@ -168,10 +168,10 @@ fn rect(r: [i32; 4]) -> raster::Rect {
 }
 
 /// Vertex input slots mapped to attribute sources.
-struct Fetcher<'a> {
-    ctx: &'a Context,
-    slots: Vec<Option<AttribSource>>,
-    immediate: Option<&'a [ImmVertex]>,
+pub(crate) struct Fetcher<'a> {
+    pub(crate) ctx: &'a Context,
+    pub(crate) slots: Vec<Option<AttribSource>>,
+    pub(crate) immediate: Option<&'a [ImmVertex]>,
 }
 
 impl Fetcher<'_> {
@@ -214,14 +214,14 @@ impl raster::VertexFetch for Fetcher<'_> {
 }
 
 /// A render target assembled for one operation.
-struct Target {
-    fb: Framebuffer,
+pub(crate) struct Target {
+    pub(crate) fb: Framebuffer,
     /// Framebuffer object name (0: default framebuffer).
     name: u32,
     /// Color attachment index of each raster color buffer.
     color_attachments: Vec<usize>,
     /// PipelineState::draw_buffers.
-    draw_buffers: [Option<usize>; 8],
+    pub(crate) draw_buffers: [Option<usize>; 8],
 }
 
 impl Context {
@@ -246,7 +246,7 @@ impl Context {
         self.check_fbo_complete()
     }
 
-    fn check_fbo_complete(&mut self) -> bool {
+    pub(crate) fn check_fbo_complete(&mut self) -> bool {
         let fb = self.objects.draw_framebuffer;
         if self.framebuffer_status(fb) != GL_FRAMEBUFFER_COMPLETE {
             self.set_error(GL_INVALID_FRAMEBUFFER_OPERATION);
@@ -353,7 +353,11 @@ impl Context {
     }
 
     /// A fixed-function stage for `source`, compiled once.
-    fn ff_kernel(&mut self, source: String, stage: Stage) -> Result<Arc<exec::Kernel>, String> {
+    pub(crate) fn ff_kernel(
+        &mut self,
+        source: String,
+        stage: Stage,
+    ) -> Result<Arc<exec::Kernel>, String> {
         if let Some(k) = self.cache.ff.get(&source) {
             return k.clone();
         }
@@ -397,7 +401,7 @@ impl Context {
 
     /// Uniform words for a kernel: user uniforms from the program, built-in
     /// state, fixed-function samplers.
-    fn uniform_words(&self, k: &exec::Kernel, user: bool) -> Vec<u32> {
+    pub(crate) fn uniform_words(&self, k: &exec::Kernel, user: bool) -> Vec<u32> {
         let iface = k.interface();
         let mut words = vec![0u32; iface.uniform_words];
         let exe = self
@@ -429,7 +433,7 @@ impl Context {
     }
 
     /// The GL state as raster's plain data.
-    fn pipeline_state(&self, draw_buffers: [Option<usize>; 8]) -> raster::PipelineState {
+    pub(crate) fn pipeline_state(&self, draw_buffers: [Option<usize>; 8]) -> raster::PipelineState {
         let st = &self.st;
         let on = |c| st.is_on(c);
         let face = |f: usize| raster::StencilFace {
@@ -544,7 +548,7 @@ impl Context {
         Some(tex)
     }
 
-    fn texture_units(&mut self) -> raster::TextureUnits {
+    pub(crate) fn texture_units(&mut self) -> raster::TextureUnits {
         let mut units = Vec::with_capacity(crate::MAX_TEXTURE_IMAGE_UNITS);
         for u in 0..crate::MAX_TEXTURE_IMAGE_UNITS {
             let names = self.objects.bound.get(u).copied().unwrap_or([0; 4]);
@@ -601,7 +605,7 @@ impl Context {
     }
 
     /// Vertex input slots → attribute sources.
-    fn input_sources(&self, vs: &exec::Kernel) -> Vec<Option<AttribSource>> {
+    pub(crate) fn input_sources(&self, vs: &exec::Kernel) -> Vec<Option<AttribSource>> {
         let exe = self
             .programs
             .get(&self.current_program)
@@ -665,6 +669,7 @@ impl Context {
                 image,
             })
         });
+        let samples_before = target.fb.samples_passed;
         let r = raster::draw_on(
             &self.workers,
             &mut target.fb,
@@ -681,6 +686,8 @@ impl Context {
         if let Err(e) = r {
             self.cache.error = Some(e.to_string());
         }
+        let samples = target.fb.samples_passed.wrapping_sub(samples_before);
+        self.count_samples(samples);
         if let Some(probe) = probe {
             let record = crate::debug::DrawRecord {
                 draw: self.debug.draws,
@@ -718,7 +725,7 @@ impl Context {
     // ---- render targets ----
 
     /// The framebuffer the next draw or clear writes.
-    fn draw_target(&mut self) -> Option<Target> {
+    pub(crate) fn draw_target(&mut self) -> Option<Target> {
         let name = self.objects.draw_framebuffer;
         if name == 0 {
             let fb = std::mem::replace(
@@ -865,7 +872,7 @@ impl Context {
 
     /// Writes a render target back (default framebuffer, or the images of
     /// a framebuffer object).
-    fn store_target(&mut self, t: Target) {
+    pub(crate) fn store_target(&mut self, t: Target) {
         if t.name == 0 {
             self.fb = t.fb;
             return;
@@ -987,7 +994,14 @@ impl Context {
 
     /// The read framebuffer's selected color buffer, depth and stencil
     /// values over a rectangle (bottom row first).
-    fn read_block(&mut self, x: i32, y: i32, w: u32, h: u32, what: u32) -> Option<Vec<[f32; 4]>> {
+    pub(crate) fn read_block(
+        &mut self,
+        x: i32,
+        y: i32,
+        w: u32,
+        h: u32,
+        what: u32,
+    ) -> Option<Vec<[f32; 4]>> {
         let name = self.objects.read_framebuffer;
         let read_fb;
         let fb: &Framebuffer = if name == 0 {

@@ -119,6 +119,17 @@ impl Context {
             GL_STENCIL_CLEAR_VALUE => int(&[st.clear_stencil as i64]),
             GL_CURRENT_PROGRAM => int(&[self.current_program as i64]),
             GL_CURRENT_COLOR => nrm(&self.va.color),
+            GL_CURRENT_RASTER_POSITION => flt(&self.raster.window),
+            GL_CURRENT_RASTER_POSITION_VALID => Some((vec![b(self.raster.valid)], Bool)),
+            GL_CURRENT_RASTER_COLOR => nrm(&self.raster.color),
+            GL_CURRENT_RASTER_SECONDARY_COLOR => nrm(&self.raster.secondary),
+            GL_CURRENT_RASTER_TEXTURE_COORDS => flt(self
+                .raster
+                .tex
+                .get(unit)
+                .map_or(&[0.0, 0.0, 0.0, 1.0][..], |t| &t[..])),
+            GL_CURRENT_RASTER_DISTANCE => flt(&[self.raster.distance]),
+            GL_CURRENT_RASTER_INDEX => flt(&[1.0]),
             GL_CURRENT_SECONDARY_COLOR => nrm(&self.va.secondary),
             GL_CURRENT_NORMAL => nrm(&self.va.normal[..3]),
             GL_CURRENT_TEXTURE_COORDS => {

@@ -39,8 +39,11 @@
 //!   [`Context::get_buffer_sub_data`] / [`Context::buffer_sub_data`]).
 //!
 //! ## Limitations
-//! - No display lists, selection/feedback, accumulation buffer, color index
-//!   mode, evaluators, pixel transfer (glDrawPixels/CopyPixels), queries.
+//! - No display lists (a C layer records them), selection/feedback,
+//!   accumulation buffer, color index mode, evaluators.
+//! - Occlusion queries ([`occlusion`]) and the raster-position pixel path
+//!   ([`pixel_path`]) are implemented; pixel-rectangle fragments are not
+//!   shaded (no texturing, fog or fragment shader on them).
 //! - GL_COMBINE texture-environment parameters are kept for queries
 //!   ([`Context::get_tex_envfv`]) but GL_COMBINE draws as GL_MODULATE.
 //! - glPushAttrib does not save texture-object parameters or hints.
@@ -54,6 +57,8 @@ pub mod ffgen;
 pub mod get;
 pub mod matrix;
 pub mod objects;
+pub mod occlusion;
+pub mod pixel_path;
 pub mod program;
 pub mod state;
 pub mod uniform;
@@ -112,6 +117,10 @@ pub struct Context {
     pub(crate) client_attrib_stack: Vec<attrib_stack::ClientAttribs>,
     /// Draw debugging ([`Context::set_debug`]).
     pub(crate) debug: debug::DebugSession,
+    /// Occlusion query objects ([`occlusion`]).
+    pub(crate) queries: occlusion::Queries,
+    /// The current raster position ([`pixel_path`]).
+    pub(crate) raster: pixel_path::RasterPos,
 }
 
 /// The environment variable giving the default number of draw threads.
@@ -170,6 +179,8 @@ impl Context {
             attrib_stack: Vec::new(),
             client_attrib_stack: Vec::new(),
             debug: debug::DebugSession::default(),
+            queries: occlusion::Queries::default(),
+            raster: pixel_path::RasterPos::default(),
         }
     }
 

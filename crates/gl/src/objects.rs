@@ -479,6 +479,39 @@ pub fn texel_for(rgba: [f32; 4], internal: i32) -> [f32; 4] {
     }
 }
 
+/// Unpacks `w * h` client pixels of `format`/`ty` (rows at `alignment`,
+/// bottom row first) into RGBA values before any texture-format
+/// conversion (GL 2.1 §3.6.4 "Conversion to RGB": missing color
+/// components 0, missing alpha 1, luminance L to (L, L, L); depth and
+/// stencil values in red).
+pub fn unpack_rgba(
+    data: &[u8],
+    w: usize,
+    h: usize,
+    format: u32,
+    ty: u32,
+    alignment: usize,
+) -> Vec<[f32; 4]> {
+    let (px, _) = pixel_size(format, ty).unwrap_or((4, 1));
+    let n = format_components(format).unwrap_or(4);
+    let stride = row_stride(w, format, ty, alignment);
+    let mut out = Vec::with_capacity(w.saturating_mul(h).min(1 << 24));
+    for y in 0..h {
+        let row = y.saturating_mul(stride);
+        for x in 0..w {
+            let at = row.saturating_add(x * px);
+            let b = data.get(at..at.saturating_add(px)).unwrap_or(&[]);
+            let c = to_rgba(decode_pixel(b, n, ty), format);
+            out.push(match format {
+                // Conversion to RGB: L becomes (L, L, L).
+                GL_LUMINANCE | GL_LUMINANCE_ALPHA => [c[0], c[0], c[0], c[3]],
+                _ => c,
+            });
+        }
+    }
+    out
+}
+
 /// Unpacks a client image into texels for `internal`.
 #[allow(clippy::too_many_arguments)]
 pub fn unpack_image(

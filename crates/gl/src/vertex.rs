@@ -221,7 +221,7 @@ impl VertexState {
         }
     }
 
-    fn snapshot(&self, position: [f32; 4]) -> ImmVertex {
+    pub(crate) fn snapshot(&self, position: [f32; 4]) -> ImmVertex {
         ImmVertex {
             position,
             color: self.color,

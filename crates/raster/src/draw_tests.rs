@@ -900,3 +900,49 @@ fn garbage_geometry_does_not_panic() {
         );
     }
 }
+
+#[test]
+fn samples_passed_counts_depth_test_survivors_whatever_the_threads() {
+    // 130×70 over several tiles: a full-screen quad at depth 0, then a
+    // full-screen quad behind it: only its right half passes. The
+    // count is exact whatever the thread count.
+    let (w, h) = (130u32, 70u32);
+    let mut counts = Vec::new();
+    for threads in [1, 2, 3] {
+        let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, false);
+        let mut st = state(w as i32, h as i32);
+        st.depth_test = Some(CompareFunc::Less);
+        fb.clear_depth(1.0, true, None);
+        let idx: Vec<u32> = (0..6).collect();
+        let draw = |fb: &mut Framebuffer, st: &PipelineState, z: f32, x1: f32| {
+            let pos: Vec<[f32; 2]> = full_screen()
+                .iter()
+                .map(|p| [if p[0] > 0.0 { x1 } else { -1.0 }, p[1]])
+                .collect();
+            let mut v = verts(&pos, &[RED; 6]);
+            for p in &mut v.pos {
+                p[2] = z;
+            }
+            draw_stages(
+                &Workers::new(threads),
+                fb,
+                st,
+                &pass_vs(),
+                &[],
+                &color_fs(),
+                &[],
+                Mode::Triangles,
+                &idx,
+                &v,
+                &TextureUnits::default(),
+            )
+            .unwrap();
+        };
+        draw(&mut fb, &st, 0.0, 0.0); // left half, z = 0.5 in window space
+        let first = fb.samples_passed;
+        draw(&mut fb, &st, 0.5, 1.0); // whole screen behind: only the right half passes
+        counts.push((first, fb.samples_passed - first));
+    }
+    assert_eq!(counts[0], (65 * 70, 65 * 70));
+    assert!(counts.iter().all(|c| *c == counts[0]), "{counts:?}");
+}

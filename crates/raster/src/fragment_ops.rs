@@ -192,6 +192,9 @@ pub(crate) fn tests(
         };
         write_stencil(fb, index, &face, op, stored_stencil);
     }
+    if depth_pass {
+        fb.samples_passed = fb.samples_passed.wrapping_add(1);
+    }
     depth_pass.then_some(index)
 }
 

@@ -88,6 +88,13 @@ pub struct Framebuffer {
     /// 24-bit depth values in [0, 2^24 - 1].
     pub depth: Option<Vec<u32>>,
     pub stencil: Option<Vec<u8>>,
+    /// Fragments that have passed the per-fragment tests up to and
+    /// including the depth test (scissor, alpha, stencil, depth) in this
+    /// framebuffer, summed over draws: GL_SAMPLES_PASSED (GL 2.1 §4.1.7)
+    /// is the difference across the draws of a query. Exact whatever the
+    /// thread count (tiles count their own fragments; the counts are added
+    /// when the tiles are stored).
+    pub samples_passed: u64,
 }
 
 impl Framebuffer {
@@ -118,6 +125,7 @@ impl Framebuffer {
                 .collect(),
             depth: depth.then(|| vec![0; len]),
             stencil: stencil.then(|| vec![0; len]),
+            samples_passed: 0,
         }
     }
 
@@ -261,6 +269,7 @@ impl Framebuffer {
                 .collect(),
             depth: self.depth.as_ref().map(|d| rows(d, width, x0, y0, w, h)),
             stencil: self.stencil.as_ref().map(|s| rows(s, width, x0, y0, w, h)),
+            samples_passed: 0,
         }
     }
 
@@ -293,6 +302,7 @@ impl Framebuffer {
             }
         }
         let w = tile.width as usize;
+        self.samples_passed = self.samples_passed.wrapping_add(tile.samples_passed);
         for (dst, src) in self.color.iter_mut().zip(&tile.color) {
             match (dst, src) {
                 (ColorBuffer::Rgba8(d), ColorBuffer::Rgba8(s)) => {

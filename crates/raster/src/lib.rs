@@ -81,6 +81,7 @@ mod fragment_ops;
 mod framebuffer;
 mod linkage;
 mod pipeline;
+mod pixel_fragments;
 mod probe;
 mod rasterize;
 mod shade;
@@ -97,6 +98,7 @@ pub use framebuffer::{
     Framebuffer, DEPTH_MAX, MAX_DRAW_BUFFERS, MAX_FRAMEBUFFER_SIZE,
 };
 pub use pipeline::{draw_stages, Mode, VertexFetch, MAX_POINT_SIZE, TILE};
+pub use pixel_fragments::{write_pixel_fragments, PixelFragment};
 pub use probe::{
     probe_draw, view_draw, DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine,
     ProbeRequest, Replay, VertexProbe, View, ViewImage,

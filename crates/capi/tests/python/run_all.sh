@@ -15,5 +15,6 @@ md=
 # shellcheck disable=SC2086
 python3 "$here/compare.py" $md "$libdir" \
     "$here/shaded_triangle.py" "$here/fixed_function.py" "$here/textured_fbo.py" \
-    "$here/seed_shaders.py" "$here/library_shaders.py" "$here/error_paths.py"
+    "$here/seed_shaders.py" "$here/library_shaders.py" "$here/error_paths.py" \
+    "$here/pixel_paths.py"
 sh "$here/debug_env.sh" "$libdir"

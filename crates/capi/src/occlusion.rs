@@ -1,0 +1,41 @@
+//! Occlusion-query entry points (GL 2.1 §4.1.7, §6.1.12) over
+//! [`gl::occlusion`]. glBeginQuery/glEndQuery are compiled into display
+//! lists; the object calls and queries execute immediately (§5.4).
+
+use crate::entry::{gl_entry_points, rd_vec, wr};
+use crate::types::*;
+use gl::enums::*;
+
+gl_entry_points! {
+    fn glGenQueries(n: GLsizei, ids: *mut GLuint) => |c| {
+        let v = c.gl.gen_queries(n);
+        wr(ids, &v);
+    }
+    fn glDeleteQueries(n: GLsizei, ids: *const GLuint) => |c| {
+        if n < 0 {
+            if !c.gl.reject_in_begin() {
+                c.gl.record_error(GL_INVALID_VALUE);
+            }
+            return;
+        }
+        c.gl.delete_queries(&rd_vec(ids, n as i64));
+    }
+    fn glIsQuery(id: GLuint) -> GLboolean [0] => |c| { c.gl.is_query(id) as GLboolean }
+    [list] fn glBeginQuery(target: GLenum, id: GLuint) => |c| { c.gl.begin_query(target, id) }
+    [list] fn glEndQuery(target: GLenum) => |c| { c.gl.end_query(target) }
+    fn glGetQueryiv(target: GLenum, pname: GLenum, v: *mut GLint) => |c| {
+        if let Some(x) = c.gl.get_queryiv(target, pname) {
+            wr(v, &[x]);
+        }
+    }
+    fn glGetQueryObjectiv(id: GLuint, pname: GLenum, v: *mut GLint) => |c| {
+        if let Some(x) = c.gl.get_query_object(id, pname) {
+            wr(v, &[x.min(i32::MAX as u64) as i32]);
+        }
+    }
+    fn glGetQueryObjectuiv(id: GLuint, pname: GLenum, v: *mut GLuint) => |c| {
+        if let Some(x) = c.gl.get_query_object(id, pname) {
+            wr(v, &[x.min(u32::MAX as u64) as u32]);
+        }
+    }
+}

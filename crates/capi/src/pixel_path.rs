@@ -1,0 +1,275 @@
+//! The raster-position pixel path's entry points (GL 2.1 §2.13, §3.6.4,
+//! §3.7, §4.3.3) over [`gl::pixel_path`]: glRasterPos*, glWindowPos*,
+//! glDrawPixels, glBitmap and glCopyPixels. Images are read from client
+//! memory (or the bound GL_PIXEL_UNPACK_BUFFER) at the call — at compile
+//! time inside glNewList, as §5.4 requires — and the pixel transfer scale
+//! and bias, index shift/offset and zoom kept by [`crate::legacy`] apply
+//! when the rectangle is drawn.
+
+use crate::context::{with_ctx, OsContext};
+use crate::entry::{gl_entry_points, image_bytes, rd, record_vector};
+use crate::types::*;
+use gl::enums::*;
+use gl::pixel_path::PixelTransfer;
+use std::ffi::c_void;
+
+/// Most bytes a glBitmap image may have.
+const MAX_BITMAP_BYTES: usize = 1 << 28;
+
+/// The pixel transfer state glPixelTransfer / glPixelZoom set.
+fn transfer(c: &OsContext) -> PixelTransfer {
+    let t = &c.legacy.pixel_transfer;
+    let g = |p: u32, d: f32| t.get(&p).copied().unwrap_or(d);
+    PixelTransfer {
+        scale: [
+            g(GL_RED_SCALE, 1.0),
+            g(GL_GREEN_SCALE, 1.0),
+            g(GL_BLUE_SCALE, 1.0),
+            g(GL_ALPHA_SCALE, 1.0),
+        ],
+        bias: [
+            g(GL_RED_BIAS, 0.0),
+            g(GL_GREEN_BIAS, 0.0),
+            g(GL_BLUE_BIAS, 0.0),
+            g(GL_ALPHA_BIAS, 0.0),
+        ],
+        depth_scale: g(GL_DEPTH_SCALE, 1.0),
+        depth_bias: g(GL_DEPTH_BIAS, 0.0),
+        index_shift: g(GL_INDEX_SHIFT, 0.0) as i32,
+        index_offset: g(GL_INDEX_OFFSET, 0.0) as i32,
+        zoom: c.legacy.pixel_zoom,
+    }
+}
+
+fn unpack_alignment(c: &mut OsContext) -> usize {
+    c.gl.get_integerv(GL_UNPACK_ALIGNMENT)
+        .first()
+        .copied()
+        .unwrap_or(4)
+        .max(1) as usize
+}
+
+/// The bytes of a glBitmap image: from client memory or the unpack buffer.
+/// Err: an error was recorded and the call must do nothing.
+unsafe fn bitmap_bytes(
+    c: &mut OsContext,
+    w: GLsizei,
+    h: GLsizei,
+    align: usize,
+    data: *const GLubyte,
+) -> Result<Option<Vec<u8>>, crate::buffers::Recorded> {
+    let pbo = c.gl.bound_buffer(GL_PIXEL_UNPACK_BUFFER);
+    if (data.is_null() && pbo == 0) || w <= 0 || h <= 0 {
+        return Ok(None);
+    }
+    let row = gl::pixel_path::bitmap_row_bytes(w as usize, align);
+    let Some(len) = row
+        .checked_mul(h as usize)
+        .filter(|&n| n <= MAX_BITMAP_BYTES)
+    else {
+        return Ok(None);
+    };
+    if pbo != 0 {
+        return crate::buffers::read_pixel_buffer(c, GL_PIXEL_UNPACK_BUFFER, data as usize, len)
+            .map(Some);
+    }
+    // SAFETY: GL's contract: h rows of `row` bytes at `data`.
+    Ok(Some(
+        unsafe { std::slice::from_raw_parts(data, len) }.to_vec(),
+    ))
+}
+
+gl_entry_points! {
+    [list] fn glRasterPos2d(x: GLdouble, y: GLdouble) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
+    fn glRasterPos2dv(v: *const GLdouble) => |c| {
+        if record_vector::<2, f64>(c, v, move |p| unsafe { glRasterPos2dv(p) }) {
+            return;
+        }
+        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
+    }
+    [list] fn glRasterPos2f(x: GLfloat, y: GLfloat) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
+    fn glRasterPos2fv(v: *const GLfloat) => |c| {
+        if record_vector::<2, f32>(c, v, move |p| unsafe { glRasterPos2fv(p) }) {
+            return;
+        }
+        if let Some([x, y]) = rd::<2, f32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
+    }
+    [list] fn glRasterPos2i(x: GLint, y: GLint) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
+    fn glRasterPos2iv(v: *const GLint) => |c| {
+        if record_vector::<2, i32>(c, v, move |p| unsafe { glRasterPos2iv(p) }) {
+            return;
+        }
+        if let Some([x, y]) = rd::<2, i32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
+    }
+    [list] fn glRasterPos2s(x: GLshort, y: GLshort) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
+    fn glRasterPos2sv(v: *const GLshort) => |c| {
+        if record_vector::<2, i16>(c, v, move |p| unsafe { glRasterPos2sv(p) }) {
+            return;
+        }
+        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
+    }
+    [list] fn glRasterPos3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
+    fn glRasterPos3dv(v: *const GLdouble) => |c| {
+        if record_vector::<3, f64>(c, v, move |p| unsafe { glRasterPos3dv(p) }) {
+            return;
+        }
+        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
+    }
+    [list] fn glRasterPos3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
+    fn glRasterPos3fv(v: *const GLfloat) => |c| {
+        if record_vector::<3, f32>(c, v, move |p| unsafe { glRasterPos3fv(p) }) {
+            return;
+        }
+        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
+    }
+    [list] fn glRasterPos3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
+    fn glRasterPos3iv(v: *const GLint) => |c| {
+        if record_vector::<3, i32>(c, v, move |p| unsafe { glRasterPos3iv(p) }) {
+            return;
+        }
+        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
+    }
+    [list] fn glRasterPos3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
+    fn glRasterPos3sv(v: *const GLshort) => |c| {
+        if record_vector::<3, i16>(c, v, move |p| unsafe { glRasterPos3sv(p) }) {
+            return;
+        }
+        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
+    }
+    [list] fn glRasterPos4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
+    fn glRasterPos4dv(v: *const GLdouble) => |c| {
+        if record_vector::<4, f64>(c, v, move |p| unsafe { glRasterPos4dv(p) }) {
+            return;
+        }
+        if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
+    }
+    [list] fn glRasterPos4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
+    fn glRasterPos4fv(v: *const GLfloat) => |c| {
+        if record_vector::<4, f32>(c, v, move |p| unsafe { glRasterPos4fv(p) }) {
+            return;
+        }
+        if let Some([x, y, z, w]) = rd::<4, f32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
+    }
+    [list] fn glRasterPos4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
+    fn glRasterPos4iv(v: *const GLint) => |c| {
+        if record_vector::<4, i32>(c, v, move |p| unsafe { glRasterPos4iv(p) }) {
+            return;
+        }
+        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
+    }
+    [list] fn glRasterPos4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
+    fn glRasterPos4sv(v: *const GLshort) => |c| {
+        if record_vector::<4, i16>(c, v, move |p| unsafe { glRasterPos4sv(p) }) {
+            return;
+        }
+        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
+    }
+    [list] fn glWindowPos2d(x: GLdouble, y: GLdouble) => |c| { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
+    fn glWindowPos2dv(v: *const GLdouble) => |c| {
+        if record_vector::<2, f64>(c, v, move |p| unsafe { glWindowPos2dv(p) }) {
+            return;
+        }
+        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
+    }
+    [list] fn glWindowPos2f(x: GLfloat, y: GLfloat) => |c| { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
+    fn glWindowPos2fv(v: *const GLfloat) => |c| {
+        if record_vector::<2, f32>(c, v, move |p| unsafe { glWindowPos2fv(p) }) {
+            return;
+        }
+        if let Some([x, y]) = rd::<2, f32>(v) { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
+    }
+    [list] fn glWindowPos2i(x: GLint, y: GLint) => |c| { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
+    fn glWindowPos2iv(v: *const GLint) => |c| {
+        if record_vector::<2, i32>(c, v, move |p| unsafe { glWindowPos2iv(p) }) {
+            return;
+        }
+        if let Some([x, y]) = rd::<2, i32>(v) { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
+    }
+    [list] fn glWindowPos2s(x: GLshort, y: GLshort) => |c| { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
+    fn glWindowPos2sv(v: *const GLshort) => |c| {
+        if record_vector::<2, i16>(c, v, move |p| unsafe { glWindowPos2sv(p) }) {
+            return;
+        }
+        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
+    }
+    [list] fn glWindowPos3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
+    fn glWindowPos3dv(v: *const GLdouble) => |c| {
+        if record_vector::<3, f64>(c, v, move |p| unsafe { glWindowPos3dv(p) }) {
+            return;
+        }
+        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
+    }
+    [list] fn glWindowPos3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
+    fn glWindowPos3fv(v: *const GLfloat) => |c| {
+        if record_vector::<3, f32>(c, v, move |p| unsafe { glWindowPos3fv(p) }) {
+            return;
+        }
+        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
+    }
+    [list] fn glWindowPos3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
+    fn glWindowPos3iv(v: *const GLint) => |c| {
+        if record_vector::<3, i32>(c, v, move |p| unsafe { glWindowPos3iv(p) }) {
+            return;
+        }
+        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
+    }
+    [list] fn glWindowPos3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
+    fn glWindowPos3sv(v: *const GLshort) => |c| {
+        if record_vector::<3, i16>(c, v, move |p| unsafe { glWindowPos3sv(p) }) {
+            return;
+        }
+        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
+    }
+    fn glDrawPixels(w: GLsizei, h: GLsizei, format: GLenum, ty: GLenum, data: *const c_void) => |c| {
+        let align = unpack_alignment(c);
+        let Ok(bytes) = image_bytes(c, w, h, 1, format, ty, data) else {
+            return;
+        };
+        if c.compiling() {
+            // The image is unpacked now (§5.4); the transfer state applies
+            // when the list runs.
+            let rec = bytes.clone();
+            let run = move || {
+                with_ctx((), |c| {
+                    let t = transfer(c);
+                    c.gl.draw_pixels(w, h, format, ty, rec.as_deref(), align, &t);
+                    c.dirty = true;
+                })
+            };
+            if c.record(run) {
+                return;
+            }
+        }
+        let t = transfer(c);
+        c.gl.draw_pixels(w, h, format, ty, bytes.as_deref(), align, &t);
+        c.dirty = true;
+    }
+    fn glBitmap(
+        w: GLsizei, h: GLsizei, xorig: GLfloat, yorig: GLfloat, xmove: GLfloat, ymove: GLfloat,
+        bitmap: *const GLubyte
+    ) => |c| {
+        let align = unpack_alignment(c);
+        let Ok(bytes) = bitmap_bytes(c, w, h, align, bitmap) else {
+            return;
+        };
+        if c.compiling() {
+            let rec = bytes.clone();
+            let run = move || {
+                with_ctx((), |c| {
+                    c.gl.bitmap(w, h, xorig, yorig, xmove, ymove, rec.as_deref(), align);
+                    c.dirty = true;
+                })
+            };
+            if c.record(run) {
+                return;
+            }
+        }
+        c.gl.bitmap(w, h, xorig, yorig, xmove, ymove, bytes.as_deref(), align);
+        c.dirty = true;
+    }
+    [list] fn glCopyPixels(x: GLint, y: GLint, w: GLsizei, h: GLsizei, ty: GLenum) => |c| {
+        let t = transfer(c);
+        c.gl.copy_pixels(x, y, w, h, ty, &t);
+        c.dirty = true;
+    }
+}
