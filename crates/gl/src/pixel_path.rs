@@ -189,7 +189,7 @@ impl Context {
                 slots: self.input_sources(&vs),
                 immediate: Some(&vertex),
             };
-            fill_inputs(vs.interface(), &fetch, &mut batch);
+            raster::fetch_vertex(vs.interface(), &fetch, 0, &mut batch, 0);
         }
         vs.run(&mut batch, &words, &units).ok()?;
         let iface = vs.interface();
@@ -589,32 +589,6 @@ impl Context {
             self.write_fragments(&mut t, &frags);
         }
         self.store_target(t);
-    }
-}
-
-/// Fills lane 0 of a vertex batch from `fetch` (vertex 0).
-fn fill_inputs(iface: &exec::Interface, fetch: &Fetcher, batch: &mut exec::Batch) {
-    use raster::VertexFetch;
-    for (slot_no, slot) in iface.inputs.iter().enumerate() {
-        let (cols, rows) = match slot.ty.base {
-            glsl::types::Base::Matrix { cols, rows } if slot.ty.array.is_none() => {
-                (cols as usize, rows as usize)
-            }
-            _ => (1, slot.components.min(4)),
-        };
-        for col in 0..cols {
-            let mut v = [0.0, 0.0, 0.0, 1.0];
-            fetch.fetch_column(slot_no, col, 0, &mut v);
-            for (c, &value) in v.iter().enumerate().take(rows) {
-                if let Some(dst) = batch
-                    .inputs
-                    .get_mut(slot.offset + col * rows + c)
-                    .and_then(|d| d.get_mut(0))
-                {
-                    *dst = value;
-                }
-            }
-        }
     }
 }
 

@@ -256,8 +256,9 @@ fn run_vertices(
     Ok((vertex_of, outputs))
 }
 
-/// Fetches vertex `ix`'s attributes into `lane` of a vertex batch.
-pub(crate) fn fetch_vertex(
+/// Fetches vertex `ix`'s attributes into `lane` of a vertex batch (laid
+/// out as the vertex shader's inputs; matrices column by column).
+pub fn fetch_vertex(
     iface: &Interface,
     fetch: &dyn VertexFetch,
     ix: u32,
