@@ -3,13 +3,19 @@
 # Mesa's (Debian libosmesa6), compared by compare.py (images within the
 # issue-4 bar, logs of error codes/statuses equal). Needs python3 + PyOpenGL.
 #   crates/capi/tests/python/run_all.sh [LIBDIR [MARKDOWN]]
-# LIBDIR defaults to target/release (built if missing); with MARKDOWN, a
+# LIBDIR defaults to target/release (built first); with MARKDOWN, a
 # table row per scene is appended to that file.
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../../../.." && pwd)
-libdir=${1:-${CARGO_TARGET_DIR:-$root/target}/release}
-[ -f "$libdir/libOSMesa.so" ] || (cd "$root" && cargo build --release -p shaderbox-capi)
+if [ -n "$1" ]; then
+    libdir=$1
+else
+    # Always (re)build: cargo is incremental, and a library left over from
+    # an older checkout would test old code.
+    libdir=${CARGO_TARGET_DIR:-$root/target}/release
+    (cd "$root" && cargo build --release -p shaderbox-capi)
+fi
 md=
 [ -n "$2" ] && md="--markdown $2"
 # shellcheck disable=SC2086
