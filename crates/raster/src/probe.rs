@@ -447,9 +447,10 @@ impl Probe {
         self.view
     }
 
-    /// Runs a batch for a view: the watched registers per lane (inputs
-    /// are read from the batch instead; then one empty-but-non-empty
-    /// marker is returned so the caller stores values).
+    /// Runs a batch for a view and returns the viewed value's components
+    /// per lane: the last values stored into a variable's registers, or an
+    /// input's components as the batch held them before the run (as `f32`
+    /// bits).
     pub fn run_view(
         &self,
         stage: &FragmentStage,
@@ -484,14 +485,7 @@ impl Probe {
     }
 
     /// Records the viewed value of `lane` for pixel (x, y).
-    pub fn view_store(
-        &self,
-        x: u32,
-        y: u32,
-        _batch: &Batch,
-        watched: &[[u32; ex::LANES]],
-        lane: usize,
-    ) {
+    pub fn view_store(&self, x: u32, y: u32, watched: &[[u32; ex::LANES]], lane: usize) {
         let mut img = self.image.lock().unwrap_or_else(|e| e.into_inner());
         let w = img.width as usize;
         if let Some(p) = img.pixels.get_mut(y as usize * w + x as usize) {

@@ -63,6 +63,12 @@ pub(crate) struct Quad {
 }
 
 impl Quad {
+    /// Window coordinates of pixel `k` (0–3: lane `4q + k`'s pixel, see
+    /// `exec`'s lane order) of the quad.
+    fn pixel(&self, k: usize) -> (i64, i64) {
+        (self.x + (k as i64 & 1), self.y + (k as i64 >> 1))
+    }
+
     /// The quad at (qx, qy) of `prim` with coverage `mask`.
     fn new(prim: &Prim, qx: i64, qy: i64, mask: u8) -> Quad {
         let mut quad = Quad {
@@ -252,7 +258,7 @@ impl FragmentStage<'_> {
             if quad.live & (1 << k) == 0 {
                 continue;
             }
-            let (x, y) = (quad.x + (k as i64 & 1), quad.y + (k as i64 >> 1));
+            let (x, y) = quad.pixel(k);
             let (lx, ly) = (x - origin.0 as i64, y - origin.1 as i64);
             if lx < 0 || ly < 0 || lx >= fb.width as i64 || ly >= fb.height as i64 {
                 continue;
@@ -295,7 +301,7 @@ impl FragmentStage<'_> {
         let is_point = matches!(prim.shape, Shape::Point { .. });
         let sprite = is_point && self.state.point_sprite;
         let lanes = 4 * q..4 * q + 4;
-        let xy = |k: usize| (quad.x + (k as i64 & 1), quad.y + (k as i64 >> 1));
+        let xy = |k: usize| quad.pixel(k);
         let pc: [(f32, f32); 4] = std::array::from_fn(|k| {
             if is_point {
                 let (x, y) = xy(k);
@@ -374,7 +380,7 @@ impl FragmentStage<'_> {
         if quad.live & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
             return None;
         }
-        let (x, y) = (quad.x + (k as i64 & 1), quad.y + (k as i64 >> 1));
+        let (x, y) = quad.pixel(k);
         if x < 0 || y < 0 {
             return None;
         }
@@ -421,7 +427,7 @@ impl FragmentStage<'_> {
         let probed = self.probe.and_then(|p| {
             let lane = quads.iter().enumerate().find_map(|(q, quad)| {
                 (0..4).find_map(|k| {
-                    let (x, y) = (quad.x + (k as i64 & 1), quad.y + (k as i64 >> 1));
+                    let (x, y) = quad.pixel(k);
                     (p.at(x, y) && live_mask & (1 << (4 * q + k)) != 0).then_some(4 * q + k)
                 })
             })?;
@@ -436,9 +442,7 @@ impl FragmentStage<'_> {
                     // more (runs are deterministic).
                     let mut copy = batch.clone();
                     p.print_batch(self, &mut copy, prim.source, |l| {
-                        let quad = quads.get(l / 4)?;
-                        let k = (l % 4) as i64;
-                        Some((quad.x + (k & 1), quad.y + (k >> 1))).filter(|_| l != lane)
+                        Some(quads.get(l / 4)?.pixel(l % 4)).filter(|_| l != lane)
                     })?;
                 }
                 let mut r = p.begin(prim, batch, lane, quads[lane / 4].z[lane % 4]);
@@ -454,9 +458,7 @@ impl FragmentStage<'_> {
                     watched = p.run_view(self, batch, view)?;
                 } else if let Some(p) = self.probe {
                     p.print_batch(self, batch, prim.source, |lane| {
-                        let quad = quads.get(lane / 4)?;
-                        let k = (lane % 4) as i64;
-                        Some((quad.x + (k & 1), quad.y + (k >> 1)))
+                        Some(quads.get(lane / 4)?.pixel(lane % 4))
                     })?;
                 } else {
                     self.shader.run(batch, self.uniforms, self.textures)?;
@@ -475,7 +477,7 @@ impl FragmentStage<'_> {
                     None => fragment_ops::process(fb, origin, self.state, &frag),
                 };
                 if let (true, Some(p)) = (passed && !watched.is_empty(), self.probe) {
-                    p.view_store(frag.x, frag.y, batch, &watched, lane);
+                    p.view_store(frag.x, frag.y, &watched, lane);
                 }
             }
         }
@@ -534,7 +536,7 @@ impl FragmentStage<'_> {
                     if quad.live & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
                         continue;
                     }
-                    let (x, y) = (quad.x + (k as i64 & 1), quad.y + (k as i64 >> 1));
+                    let (x, y) = quad.pixel(k);
                     if x < 0 || y < 0 {
                         continue;
                     }
@@ -595,8 +597,9 @@ impl FragmentStage<'_> {
                     if write & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
                         continue;
                     }
-                    let lx = (quad.x + (k as i64 & 1)) as usize - origin.0 as usize;
-                    let ly = (quad.y + (k as i64 >> 1)) as usize - origin.1 as usize;
+                    let (x, y) = quad.pixel(k);
+                    let lx = x as usize - origin.0 as usize;
+                    let ly = y as usize - origin.1 as usize;
                     let index = ly * w + lx;
                     fragment_ops::write_colors(fb, index, self.state, &self.colors(batch, lane));
                 }

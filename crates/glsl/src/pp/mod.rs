@@ -81,6 +81,18 @@ pub const SUPPORTED_EXTENSIONS: &[&str] = &["GL_ARB_draw_buffers", PRINTF_EXTENS
 /// The extension that enables string literals and `debugPrintfEXT`.
 pub const PRINTF_EXTENSION: &str = "GL_SHADERBOX_debug_printf";
 
+/// Whether `#extension` directives (name, behavior, in source order) leave
+/// [`PRINTF_EXTENSION`] enabled: the last one naming it (or `all`) does not
+/// disable it.
+pub(crate) fn printf_enabled<'a>(
+    directives: impl DoubleEndedIterator<Item = (&'a str, ExtensionBehavior)>,
+) -> bool {
+    directives
+        .rev()
+        .find(|(n, _)| *n == PRINTF_EXTENSION || *n == "all")
+        .is_some_and(|(n, b)| n == PRINTF_EXTENSION && b != ExtensionBehavior::Disable)
+}
+
 /// Preprocesses the text of `map`, recording `#line` directives in it.
 /// Never fails: problems are diagnostics, and the token list always ends
 /// with `Eof`.
@@ -314,11 +326,11 @@ impl<'m> Preprocessor<'m> {
     /// Whether the last `#extension` directive so far for the printf
     /// extension (or `all`) enables it.
     fn printf_enabled(&self) -> bool {
-        self.extensions
-            .iter()
-            .rev()
-            .find(|e| e.name == PRINTF_EXTENSION || e.name == "all")
-            .is_some_and(|e| e.name == PRINTF_EXTENSION && e.behavior != ExtensionBehavior::Disable)
+        printf_enabled(
+            self.extensions
+                .iter()
+                .map(|e| (e.name.as_str(), e.behavior)),
+        )
     }
 
     /// A preprocessing token to a parser token kind (`None` after an error).

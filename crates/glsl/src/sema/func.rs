@@ -761,15 +761,7 @@ impl Analyzer {
     /// Whether the last `#extension` directive for the printf extension
     /// enables it (see `pp::PRINTF_EXTENSION`).
     fn printf_enabled(&self) -> bool {
-        use crate::ir::ExtensionBehavior;
-        self.module
-            .extensions
-            .iter()
-            .rev()
-            .find(|(n, _)| n == crate::pp::PRINTF_EXTENSION || n == "all")
-            .is_some_and(|(n, b)| {
-                n == crate::pp::PRINTF_EXTENSION && *b != ExtensionBehavior::Disable
-            })
+        crate::pp::printf_enabled(self.module.extensions.iter().map(|(n, b)| (n.as_str(), *b)))
     }
 
     /// `debugPrintfEXT("format", args...)`: the format is a string literal
