@@ -541,7 +541,7 @@ pub(crate) fn mix_levels(t1: [f32; 4], t2: [f32; 4], f: f32) -> [f32; 4] {
 /// λ_base from the derivatives of the (face) coordinates scaled by the
 /// base level's size, or given. `extra_bias` is the unit's bias plus the
 /// shader's.
-#[inline]
+#[inline(always)]
 pub(crate) fn lambda(tex: &Texture, base_img: &Image, derivs: LodBase, extra_bias: f32) -> f32 {
     let lambda_base = match derivs {
         LodBase::Value(v) => v,
@@ -579,7 +579,7 @@ pub(crate) enum Levels {
 
 /// GL 2.1 §3.8.8–3.8.9: the levels for λ (from [`lambda`]) on `tex`,
 /// complete with last level `q`.
-#[inline]
+#[inline(always)]
 pub(crate) fn select_levels(tex: &Texture, q: usize, lambda: f32) -> Levels {
     let base = tex.base_level as usize;
     // §3.8.9: the magnification / minification switch-over point c.

@@ -15,10 +15,14 @@
 
 use crate::ex::{Lod, SampleRequest, LANES};
 use crate::texture::{
-    floor, index, lambda, mix_levels, select_levels, wrap_coord, Image, Levels, LodBase, Texels,
-    Texture, TextureTarget, TextureUnits, Wrap, MISSING, UNORM8,
+    mix_levels, select_levels, wrap_coord, Levels, MagFilter, MinFilter, Texels, Texture,
+    TextureTarget, TextureUnits, Wrap, MAX_LOD_BIAS, MISSING,
 };
 use glsl::types::SamplerKind;
+
+/// Levels a request can address on this path (absolute level numbers):
+/// more is a 2^31-texel texture, which takes the general path.
+const MAX_LEVELS: usize = 32;
 
 /// Samples `req` through the fast path when it applies (see the module
 /// documentation) and returns true; false leaves `out` untouched.
@@ -57,40 +61,182 @@ pub(crate) fn sample(
     let Some(q) = tex.last_level() else {
         return false;
     };
-    let Some(base_img) = tex.levels.get(tex.base_level as usize) else {
+    let base = tex.base_level as usize;
+    let Some(base_img) = tex.levels.get(base) else {
         return false;
     };
-    let unit_bias = unit.lod_bias;
-    for lane in 0..LANES {
-        if req.mask & (1 << lane) == 0 {
-            continue;
+    if q >= MAX_LEVELS {
+        return false;
+    }
+    // The levels' sizes, `filter`'s `img.width.max(1)` and so on (sizes
+    // up to 2^24, so that they and texel indices are exact in f32 and i32).
+    let mut sizes = [(1i32, 1i32); MAX_LEVELS];
+    for (d, size) in sizes.iter_mut().enumerate().take(q + 1).skip(base) {
+        let Some(img) = tex.levels.get(d) else {
+            return false;
+        };
+        let (w, h) = (img.width.max(1), img.height.max(1));
+        if w > 1 << 24 || h > 1 << 24 {
+            return false;
         }
-        // As `TextureUnits::sample_lane` and `texture::sample` build them.
-        let (lod, shader_bias) = match &req.lod {
-            Lod::Explicit(l) => (LodBase::Value(l[lane]), 0.0),
-            Lod::Derivatives { ddx, ddy, bias } => (
-                LodBase::Derivatives(
-                    [ddx[0][lane], ddx[1][lane], ddx[2][lane]],
-                    [ddy[0][lane], ddy[1][lane], ddy[2][lane]],
-                ),
-                bias[lane],
-            ),
+        *size = (w as i32, h as i32);
+    }
+
+    // λ of every lane, as `texture::lambda` computes it.
+    let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod, req.mask);
+
+    // The level(s) of every lane, as `texture::select_levels` picks them.
+    let mask = req.mask;
+    let mut level = [[base as i32; LANES]; 2];
+    let mut f = [0.0f32; LANES];
+    let mut two: u32 = 0;
+    let mut nearest: u32 = 0;
+    if matches!(
+        tex.min_filter,
+        MinFilter::LinearMipmapLinear | MinFilter::NearestMipmapLinear
+    ) {
+        // Eq. 3.28/3.29 over the lanes, branch-free.
+        let c = if tex.mag_filter == MagFilter::Linear
+            && tex.min_filter == MinFilter::NearestMipmapLinear
+        {
+            0.5
+        } else {
+            0.0
         };
-        let l = lambda(tex, base_img, lod, unit_bias + shader_bias);
-        let st = (req.coord[0][lane], req.coord[1][lane]);
-        let one = |level: usize, linear: bool| match tex.levels.get(level) {
-            Some(img) => filter(tex, img, st, linear),
-            None => MISSING,
-        };
-        let rgba = match select_levels(tex, q, l) {
-            Levels::One(level, linear) => one(level, linear),
-            Levels::Two(d1, d2, f, linear) => mix_levels(one(d1, linear), one(d2, linear), f),
-        };
-        for (o, v) in out.iter_mut().zip(rgba) {
-            o[lane] = v;
+        let mag_nearest = tex.mag_filter == MagFilter::Nearest;
+        let min_nearest = tex.min_filter == MinFilter::NearestMipmapLinear;
+        let (base_i, q_i) = (base as i32, q as i32);
+        let (base_f, q_f) = (base as f32, q as f32);
+        let mut is_two = [false; LANES];
+        let mut is_nearest = [false; LANES];
+        for l in 0..LANES {
+            let lambda = lam[l];
+            let mag = lambda.is_nan() || lambda <= c;
+            let lb = base_f + lambda;
+            let top = lb >= q_f;
+            let d1 = floor_index(floor_lane(lb)).max(base_i).min(q_i);
+            level[0][l] = if mag {
+                base_i
+            } else if top {
+                q_i
+            } else {
+                d1
+            };
+            level[1][l] = (d1 + 1).min(q_i);
+            f[l] = lambda - floor_lane(lambda);
+            is_two[l] = !mag && !top;
+            is_nearest[l] = if mag { mag_nearest } else { min_nearest };
+        }
+        for l in 0..LANES {
+            two |= (is_two[l] as u32) << l;
+            nearest |= (is_nearest[l] as u32) << l;
+        }
+        two &= mask;
+    } else {
+        for lane in 0..LANES {
+            if mask & (1 << lane) == 0 {
+                continue;
+            }
+            let linear = match select_levels(tex, q, lam[lane]) {
+                Levels::One(d, linear) => {
+                    level[0][lane] = d as i32;
+                    linear
+                }
+                Levels::Two(d1, d2, fl, linear) => {
+                    level[0][lane] = d1 as i32;
+                    level[1][lane] = d2 as i32;
+                    f[lane] = fl;
+                    two |= 1 << lane;
+                    linear
+                }
+            };
+            if !linear {
+                nearest |= 1 << lane;
+            }
+        }
+    }
+
+    let st = [req.coord[0], req.coord[1]];
+    let mut first = [[0.0f32; 4]; LANES];
+    filter_lanes(tex, &sizes, &level[0], &st, nearest, mask, &mut first);
+    if two != 0 {
+        let mut second = [[0.0f32; 4]; LANES];
+        filter_lanes(tex, &sizes, &level[1], &st, nearest, two, &mut second);
+        for lane in 0..LANES {
+            if two & (1 << lane) != 0 {
+                first[lane] = mix_levels(first[lane], second[lane], f[lane]);
+            }
+        }
+    }
+    for (lane, rgba) in first.iter().enumerate() {
+        if mask & (1 << lane) != 0 {
+            for (o, &v) in out.iter_mut().zip(rgba) {
+                o[lane] = v;
+            }
         }
     }
     true
+}
+
+/// `texture::lambda` for every lane (the lanes outside `mask` get some
+/// value), with the derivative arithmetic over all lanes at once; only
+/// `log2` runs lane by lane.
+#[inline(always)]
+fn lambdas(
+    tex: &Texture,
+    base_img: &crate::texture::Image,
+    unit_bias: f32,
+    lod: &Lod,
+    mask: u32,
+) -> [f32; LANES] {
+    let mut base = [0.0f32; LANES];
+    let mut extra = [0.0f32; LANES];
+    match lod {
+        Lod::Explicit(v) => {
+            base = *v;
+            // The general path adds a shader bias of 0.
+            extra = [unit_bias + 0.0; LANES];
+        }
+        Lod::Derivatives { ddx, ddy, bias } => {
+            let (w, h) = (base_img.width as f32, base_img.height as f32);
+            let mut rho = [0.0f32; LANES];
+            for l in 0..LANES {
+                let (ux, uy) = (ddx[0][l] * w, ddy[0][l] * w);
+                let mut sx = 0.0f32 + ux * ux;
+                let mut sy = 0.0f32 + uy * uy;
+                let (ux, uy) = (ddx[1][l] * h, ddy[1][l] * h);
+                sx += ux * ux;
+                sy += uy * uy;
+                // `math::sqrt` is correctly rounded, as the instruction is;
+                // a NaN here makes λ NaN whatever its bits.
+                let (rx, ry) = (sx.sqrt(), sy.sqrt());
+                // `math::max`.
+                rho[l] = if rx.is_nan() || rx < ry { ry } else { rx };
+            }
+            for l in 0..LANES {
+                if mask & (1 << l) != 0 {
+                    base[l] = glsl::math::log2(rho[l]);
+                }
+                extra[l] = unit_bias + bias[l];
+            }
+        }
+    }
+    let (tex_bias, min_lod, max_lod) = (tex.lod_bias, tex.min_lod, tex.max_lod);
+    let mut lam = [0.0f32; LANES];
+    for l in 0..LANES {
+        let b = tex_bias + extra[l];
+        // (Constant bounds: the clamp's assertion folds away.)
+        let b = b.clamp(-MAX_LOD_BIAS, MAX_LOD_BIAS);
+        let mut x = base[l] + b;
+        if x > max_lod {
+            x = max_lod;
+        }
+        if x < min_lod {
+            x = min_lod;
+        }
+        lam[l] = x;
+    }
+    lam
 }
 
 /// Reads texel `index` of a level's storage.
@@ -109,62 +255,195 @@ impl Fetch for [[u8; 4]] {
     #[inline(always)]
     fn fetch(&self, index: usize) -> [f32; 4] {
         match self.get(index) {
-            Some(t) => t.map(|b| UNORM8[b as usize]),
+            // `UNORM8`'s values, computed four at a time.
+            Some(t) => t.map(|b| b as f32 / 255.0),
             None => MISSING,
         }
     }
 }
 
-/// One level, NEAREST or LINEAR, as `texture::filter` for a 2D texture
-/// without border texels.
-#[inline]
-fn filter(tex: &Texture, img: &Image, st: (f32, f32), linear: bool) -> [f32; 4] {
-    match &img.texels {
-        Texels::Unorm8(v) => filter_in(tex, img, v.as_slice(), st, linear),
-        Texels::F32(v) => filter_in(tex, img, v.as_slice(), st, linear),
+/// `texture::floor` without a branch (so loops over lanes vectorize):
+/// |x| ≥ 2^23, infinities and NaN are their own floor.
+#[inline(always)]
+fn floor_lane(x: f32) -> f32 {
+    let small = x.abs() < 8_388_608.0;
+    let t = to_i32(if small { x } else { 0.0 }) as f32;
+    let fl = if t > x { t - 1.0 } else { t };
+    if small && fl != x {
+        fl
+    } else {
+        x
     }
 }
 
+/// `x as i32` for |x| < 2^31, without the saturating conversion's NaN and
+/// range fix-ups (which keep loops from vectorizing).
 #[inline(always)]
-fn filter_in<S: Fetch + ?Sized>(
-    tex: &Texture,
-    img: &Image,
-    texels: &S,
-    st: (f32, f32),
-    linear: bool,
-) -> [f32; 4] {
-    let (w, h) = (img.width.max(1), img.height.max(1));
-    let (ws, wt) = (tex.wrap[0], tex.wrap[1]);
-    let row = w as usize;
-    // The wrap modes here always give an index (never the border).
-    let at = |i: i64, wrap: Wrap, n: u32| index(i, wrap, n).unwrap_or(0);
-    let us = wrap_coord(st.0, ws, w) * w as f32;
-    let ut = wrap_coord(st.1, wt, h) * h as f32;
-    if !linear {
-        let i = at(floor(us) as i64, ws, w);
-        let j = at(floor(ut) as i64, wt, h);
-        return texels.fetch(j * row + i);
-    }
-    let axis = |u: f32, wrap: Wrap, n: u32| {
-        let v = u - 0.5;
-        let i0 = floor(v);
-        let alpha = v - i0;
-        let i0 = i0 as i64;
-        (at(i0, wrap, n), at(i0.saturating_add(1), wrap, n), alpha)
+fn to_i32(x: f32) -> i32 {
+    debug_assert!(x.abs() < 2_147_483_648.0);
+    // SAFETY: every caller passes a value with |x| < 2^31 (an integral
+    // f32 below 2^23 in magnitude, or a floor clamped to ±2^30), which
+    // truncates to an i32 exactly.
+    unsafe { x.to_int_unchecked::<i32>() }
+}
+
+/// `floor_lane(x) as i64` as an i32 for a floor in [−2^30, 2^30] (every
+/// wrapped coordinate's); NaN gives 0 like `as`.
+#[inline(always)]
+fn floor_index(fl: f32) -> i32 {
+    let bounded = if fl.is_nan() {
+        0.0
+    } else {
+        fl.clamp(-1_073_741_824.0, 1_073_741_824.0)
     };
-    let (i0, i1, a) = axis(us, ws, w);
-    let (j0, j1, b) = axis(ut, wt, h);
-    // Corners in the general path's order (S varies fastest), each weight
-    // the product of the two axes' weights.
+    to_i32(bounded)
+}
+
+/// `wrap_coord(s, wrap, n) * n` for every lane.
+#[inline(always)]
+fn wrap_scale(wrap: Wrap, s: &[f32; LANES], n: &[i32; LANES]) -> [f32; LANES] {
+    let mut u = [0.0f32; LANES];
+    match wrap {
+        Wrap::Repeat => {
+            for l in 0..LANES {
+                u[l] = (s[l] - floor_lane(s[l])) * n[l] as f32;
+            }
+        }
+        Wrap::ClampToEdge => {
+            for l in 0..LANES {
+                let nf = n[l] as f32;
+                let half = 0.5 / nf;
+                // f32::clamp without its (here impossible) panic.
+                let mut x = s[l];
+                if x < half {
+                    x = half;
+                }
+                if x > 1.0 - half {
+                    x = 1.0 - half;
+                }
+                u[l] = x * nf;
+            }
+        }
+        _ => {
+            for l in 0..LANES {
+                u[l] = wrap_coord(s[l], wrap, n[l] as u32) * n[l] as f32;
+            }
+        }
+    }
+    u
+}
+
+/// `index(i, wrap, n)` for the borderless modes and i in [−1, n], the
+/// only values a wrapped coordinate gives (`fract` is in [0, 1]), clamped
+/// into the level for safety.
+#[inline(always)]
+fn wrap_index(i: i32, wrap: Wrap, n: i32) -> i32 {
+    let i = match wrap {
+        Wrap::Repeat => {
+            if i < 0 {
+                i + n
+            } else if i >= n {
+                i - n
+            } else {
+                i
+            }
+        }
+        _ => i,
+    };
+    // (Not `clamp`: its assertion keeps the lane loops from vectorizing.)
+    i.max(0).min(n - 1)
+}
+
+/// NEAREST or LINEAR on level `level[lane]` for the lanes in `mask`
+/// (NEAREST for those in `nearest`), as `texture::filter` for a 2D
+/// texture without border texels. Other lanes' values are unspecified.
+fn filter_lanes(
+    tex: &Texture,
+    sizes: &[(i32, i32); MAX_LEVELS],
+    level: &[i32; LANES],
+    st: &[[f32; LANES]; 2],
+    nearest: u32,
+    mask: u32,
+    out: &mut [[f32; 4]; LANES],
+) {
+    let (ws, wt) = (tex.wrap[0], tex.wrap[1]);
+    let mut w = [1i32; LANES];
+    let mut h = [1i32; LANES];
+    for l in 0..LANES {
+        let (lw, lh) = sizes.get(level[l] as usize).copied().unwrap_or((1, 1));
+        w[l] = lw;
+        h[l] = lh;
+    }
+    let us = wrap_scale(ws, &st[0], &w);
+    let ut = wrap_scale(wt, &st[1], &h);
+    let (i0, i1, a) = axis(&us, &w, ws, nearest);
+    let (j0, j1, b) = axis(&ut, &h, wt, nearest);
+    for l in 0..LANES {
+        if mask & (1 << l) == 0 {
+            continue;
+        }
+        let Some(img) = tex.levels.get(level[l] as usize) else {
+            out[l] = MISSING;
+            continue;
+        };
+        let row = w[l] as usize;
+        let at = |i: i32, j: i32| j as usize * row + i as usize;
+        let corners = [
+            at(i0[l], j0[l]),
+            at(i1[l], j0[l]),
+            at(i0[l], j1[l]),
+            at(i1[l], j1[l]),
+        ];
+        out[l] = if nearest & (1 << l) != 0 {
+            img.texels.get(corners[0])
+        } else {
+            match &img.texels {
+                Texels::Unorm8(v) => bilinear(v.as_slice(), corners, a[l], b[l]),
+                Texels::F32(v) => bilinear(v.as_slice(), corners, a[l], b[l]),
+            }
+        };
+    }
+}
+
+/// Per axis and lane: texel 0, texel 1 and the weight of texel 1 for
+/// LINEAR, or the texel (in texel 0) for the lanes in `nearest`. Computes
+/// both for every lane and selects (so the loop vectorizes).
+#[inline(always)]
+fn axis(
+    u: &[f32; LANES],
+    n: &[i32; LANES],
+    wrap: Wrap,
+    nearest: u32,
+) -> ([i32; LANES], [i32; LANES], [f32; LANES]) {
+    let mut i0 = [0i32; LANES];
+    let mut i1 = [0i32; LANES];
+    let mut alpha = [0.0f32; LANES];
+    for l in 0..LANES {
+        let n = n[l];
+        let v = u[l] - 0.5;
+        let fl = floor_lane(v);
+        let i = floor_index(fl);
+        let near = wrap_index(floor_index(floor_lane(u[l])), wrap, n);
+        let is_near = nearest & (1 << l) != 0;
+        alpha[l] = v - fl;
+        i0[l] = if is_near {
+            near
+        } else {
+            wrap_index(i, wrap, n)
+        };
+        i1[l] = wrap_index(i.saturating_add(1), wrap, n);
+    }
+    (i0, i1, alpha)
+}
+
+/// The general path's sum over the four texels (S varies fastest), each
+/// weight the product of the two axes' weights.
+#[inline(always)]
+fn bilinear<S: Fetch + ?Sized>(texels: &S, corners: [usize; 4], a: f32, b: f32) -> [f32; 4] {
     let (a0, b0) = (1.0 - a, 1.0 - b);
-    let corners = [
-        (j0 * row + i0, a0 * b0),
-        (j0 * row + i1, a * b0),
-        (j1 * row + i0, a0 * b),
-        (j1 * row + i1, a * b),
-    ];
+    let weights = [a0 * b0, a * b0, a0 * b, a * b];
     let mut acc = [0.0f32; 4];
-    for (idx, weight) in corners {
+    for (idx, weight) in corners.into_iter().zip(weights) {
         let t = texels.fetch(idx);
         for c in 0..4 {
             acc[c] += weight * t[c];
@@ -176,7 +455,7 @@ fn filter_in<S: Fetch + ?Sized>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::texture::{MagFilter, MinFilter, TextureUnit};
+    use crate::texture::{Image, TextureUnit};
     use std::sync::Arc;
 
     /// A 2D texture with random unorm8 (or, `float`, arbitrary) texels
@@ -250,6 +529,7 @@ mod tests {
                     tex.lod_bias = if k % 2 == 0 { 0.25 } else { 0.0 };
                     tex.base_level = (k % 2).min(tex.levels.len() - 1) as u32;
                     tex.min_lod = -2.0 + k as f32 * 0.1;
+                    tex.max_lod = if k % 3 == 2 { 1.5 } else { 1000.0 };
                     let units = TextureUnits {
                         units: vec![
                             TextureUnit::default(),
@@ -279,8 +559,17 @@ mod tests {
                         coord[0][5] = -1e-9;
                         ddx[0][6] = 0.0;
                         ddy[1][6] = 0.0;
+                        ddx[0][7] = f32::NAN;
+                        ddy[1][8] = f32::INFINITY;
+                        ddx[1][10] = 1e30;
                         let lod = if round % 3 == 0 {
-                            Lod::Explicit(std::array::from_fn(|l| l as f32 * 0.4 - 2.0))
+                            Lod::Explicit(std::array::from_fn(|l| {
+                                if l == 11 {
+                                    f32::NAN
+                                } else {
+                                    l as f32 * 0.4 - 2.0
+                                }
+                            }))
                         } else {
                             Lod::Derivatives {
                                 ddx,
@@ -323,6 +612,40 @@ mod tests {
     }
 
     #[test]
+    fn lane_floor_is_exact() {
+        let mut values = vec![
+            0.0f32,
+            -0.0,
+            0.5,
+            -0.5,
+            -1.0,
+            8_388_607.5,
+            -8_388_607.5,
+            8_388_608.0,
+            -8_388_609.0,
+            1e30,
+            -1e30,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            -1e-45,
+        ];
+        let mut bits = 0x9e37_79b9u32;
+        for _ in 0..100_000 {
+            bits = bits.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            values.push(f32::from_bits(bits));
+            values.push((bits >> 8) as f32 / 4096.0 - 2048.0);
+        }
+        for x in values {
+            let (a, b) = (floor_lane(x), glsl::math::floor(x));
+            assert!(
+                a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()),
+                "floor({x:e})"
+            );
+        }
+    }
+
+    #[test]
     fn other_requests_take_the_general_path() {
         let mut seed = 7;
         let tex = random_texture(4, 4, false, &mut seed);
@@ -362,5 +685,99 @@ mod tests {
         let mut incomplete = tex;
         incomplete.levels.truncate(1);
         assert!(!sample(&units(incomplete), &req([0; LANES]), &mut out));
+    }
+}
+
+#[cfg(test)]
+mod bench {
+    use super::*;
+    use crate::texture::{Image, MinFilter, TextureUnit};
+    use std::sync::Arc;
+
+    /// `cargo test --release -p shaderbox-raster bench_sample_2d -- --ignored --nocapture`:
+    /// trilinear lookups on a 512² RGBA8 mipmapped texture, quads of
+    /// lanes with derivatives like the benchmark's textured scene.
+    #[test]
+    #[ignore]
+    fn bench_sample_2d() {
+        let mut levels = Vec::new();
+        let mut n = 512u32;
+        loop {
+            let texels = (0..n * n)
+                .map(|i| {
+                    [
+                        (i % 251) as f32 / 255.0,
+                        (i % 7) as f32 / 255.0,
+                        0.5 * 0.0,
+                        1.0,
+                    ]
+                })
+                .collect();
+            levels.push(Image::new(n, n, 1, texels));
+            if n == 1 {
+                break;
+            }
+            n /= 2;
+        }
+        let mut tex = Texture::new(TextureTarget::Tex2D, levels);
+        tex.min_filter = MinFilter::LinearMipmapLinear;
+        let units = TextureUnits {
+            units: vec![TextureUnit {
+                tex_2d: Some(Arc::new(tex)),
+                ..TextureUnit::default()
+            }],
+        };
+        let mut reqs = Vec::new();
+        for k in 0..4096u32 {
+            let x0 = (k % 64) as f32 * 4.0;
+            let y0 = (k / 64) as f32 * 1.0;
+            let d = 0.004 + 0.002 * (k % 13) as f32;
+            let mut coord = [[0.0; LANES]; 4];
+            let mut ddx = [[0.0; LANES]; 3];
+            let mut ddy = [[0.0; LANES]; 3];
+            for l in 0..LANES {
+                let (x, y) = (x0 + (l % 2 + 2 * (l / 4)) as f32, y0 + ((l / 2) % 2) as f32);
+                coord[0][l] = x * d;
+                coord[1][l] = y * d * 1.7 + 0.1 * x * d;
+                ddx[0][l] = d;
+                ddx[1][l] = 0.1 * d;
+                ddy[1][l] = 1.7 * d;
+            }
+            reqs.push(SampleRequest {
+                unit: [0; LANES],
+                target: SamplerKind::Sampler2D,
+                coord,
+                compare: None,
+                lod: Lod::Derivatives {
+                    ddx,
+                    ddy,
+                    bias: [0.0; LANES],
+                },
+                mask: 0xffff,
+            });
+        }
+        let mut out = [[0.0; LANES]; 4];
+        let mut sink = 0.0f32;
+        // Alternating rounds, best of each (the machine is shared).
+        let mut best = [f64::MAX; 2];
+        for round in 0..30 {
+            let fast = round % 2 == 0;
+            let t = std::time::Instant::now();
+            for r in &reqs {
+                if fast {
+                    sample(&units, r, &mut out);
+                } else {
+                    units.sample_general(r, &mut out);
+                }
+                sink += out[0][3];
+            }
+            let b = &mut best[round % 2];
+            *b = b.min(t.elapsed().as_secs_f64());
+        }
+        for (name, b) in ["fast", "general"].iter().zip(best) {
+            let per = b / (reqs.len() * LANES) as f64 * 1e9;
+            println!("{name}: {per:.1} ns per lane");
+        }
+        assert!(sink.is_finite());
     }
 }
