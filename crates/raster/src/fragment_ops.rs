@@ -5,7 +5,6 @@
 use crate::framebuffer::{depth_to_fixed, float_to_unorm8, ColorBuffer};
 use crate::framebuffer::{Framebuffer, MAX_DRAW_BUFFERS};
 use crate::state::{Blend, BlendEquation, BlendFactor, PipelineState, StencilFace, StencilOp};
-use crate::texture::UNORM8;
 
 /// One shaded fragment ready for the per-fragment operations.
 pub(crate) struct Fragment {
@@ -154,12 +153,16 @@ pub(crate) fn tests(
     }
 
     // §4.1.5 stencil test and §4.1.6 depth test.
-    let zf = depth_to_fixed(frag.z);
-    let face = if fb.stencil.is_some() {
-        stencil_face(state, frag.back_facing)
-    } else {
-        None
+    let face = match fb.stencil {
+        Some(_) => stencil_face(state, frag.back_facing),
+        None => None,
     };
+    if face.is_none() && (state.depth_test.is_none() || fb.depth.is_none()) {
+        // Neither test applies: the fragment passes (the common case of
+        // 2D and blended drawing, without the tests' loads).
+        fb.samples_passed = fb.samples_passed.wrapping_add(1);
+        return Some(index);
+    }
     let stored_stencil = fb
         .stencil
         .as_ref()
@@ -175,6 +178,7 @@ pub(crate) fn tests(
     let depth_pass = match (state.depth_test, fb.depth.as_mut()) {
         (Some(func), Some(d)) => match d.get_mut(index) {
             Some(stored) => {
+                let zf = depth_to_fixed(frag.z);
                 let pass = func.test(zf, *stored);
                 if pass && state.depth_mask {
                     *stored = zf;
@@ -258,11 +262,11 @@ fn write_color(buf: &mut ColorBuffer, index: usize, state: &PipelineState, src: 
                 let sb = s.map(float_to_unorm8);
                 std::array::from_fn(|c| op.apply(sb[c], p[c]))
             } else if let Some(blend) = &state.blend {
-                // The table holds `unorm8_to_float`'s values.
-                let d = p.map(|b| UNORM8[b as usize]);
-                blend_unit(blend, s, d).map(float_to_unorm8)
+                // `unorm8_to_float`, four at a time.
+                let d = p.map(|b| b as f32 / 255.0);
+                to_unorm8(blend_unit(blend, s, d))
             } else {
-                s.map(float_to_unorm8)
+                to_unorm8(s)
             };
             if mask == [true; 4] {
                 *p = out;
@@ -293,6 +297,15 @@ fn write_color(buf: &mut ColorBuffer, index: usize, state: &PipelineState, src: 
             }
         }
     }
+}
+
+/// `float_to_unorm8` of four channels, branch-free so that it vectorizes:
+/// NaN and values ≤ 0 give 0, values ≥ 1 give 255.
+#[inline(always)]
+// Not `clamp`: NaN must become 0 (`max` drops it; `clamp` keeps it).
+#[allow(clippy::manual_clamp)]
+fn to_unorm8(c: [f32; 4]) -> [u8; 4] {
+    c.map(|x| (x.max(0.0).min(1.0) * 255.0 + 0.5) as i32 as u8)
 }
 
 /// [`blend_color`] for `s` and `d` in [0, 1] (a fixed-point buffer's
@@ -475,12 +488,28 @@ mod tests {
     }
 
     #[test]
+    fn four_channel_conversions_match() {
+        use crate::framebuffer::unorm8_to_float;
+        for k in 0..=255u8 {
+            assert_eq!((k as f32 / 255.0).to_bits(), unorm8_to_float(k).to_bits());
+        }
+        let mut values = vec![0.0f32, -0.0, 1.0, 2.0, -1.0, f32::NAN, f32::INFINITY];
+        values.extend([f32::NEG_INFINITY, 0.5 / 255.0, 1.5 / 255.0, 254.5 / 255.0]);
+        let mut bits = 17u32;
+        for _ in 0..200_000 {
+            bits = bits.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            values.push(f32::from_bits(bits));
+            values.push((bits >> 8) as f32 / 16_777_216.0 * 1.2 - 0.1);
+        }
+        for x in values {
+            assert_eq!(to_unorm8([x; 4]), [float_to_unorm8(x); 4], "{x:e}");
+        }
+    }
+
+    #[test]
     fn common_blends_match_the_general_equation() {
         use crate::framebuffer::unorm8_to_float;
         use BlendFactor::*;
-        for k in 0..=255u8 {
-            assert_eq!(UNORM8[k as usize].to_bits(), unorm8_to_float(k).to_bits());
-        }
         let mut seed = 99u32;
         let mut next = move || {
             seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
