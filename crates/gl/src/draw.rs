@@ -1193,22 +1193,23 @@ fn encode(v: f32, ty: u32, index: bool, dst: &mut [u8]) {
         let c = if v.is_nan() { 0.0 } else { c };
         (c * max).round() as i64
     };
-    let bytes: Vec<u8> = match ty {
-        GL_FLOAT => v.to_le_bytes().to_vec(),
-        _ if index => {
-            let i = v as i64;
-            i.to_le_bytes()[..dst.len()].to_vec()
+    // Little-endian bytes of the converted value, without allocating (this
+    // runs per component of every pixel glReadPixels returns).
+    let mut put = |bytes: &[u8]| {
+        for (d, s) in dst.iter_mut().zip(bytes.iter().chain(std::iter::repeat(&0))) {
+            *d = *s;
         }
-        GL_UNSIGNED_BYTE => vec![unorm(255.0) as u8],
-        GL_BYTE => vec![snorm(127.0) as i8 as u8],
-        GL_UNSIGNED_SHORT => (unorm(65535.0) as u16).to_le_bytes().to_vec(),
-        GL_SHORT => (snorm(32767.0) as i16).to_le_bytes().to_vec(),
-        GL_UNSIGNED_INT => (unorm(4294967295.0) as u32).to_le_bytes().to_vec(),
-        GL_INT => (snorm(2147483647.0) as i32).to_le_bytes().to_vec(),
-        _ => vec![0; dst.len()],
     };
-    for (d, s) in dst.iter_mut().zip(bytes) {
-        *d = s;
+    match ty {
+        GL_FLOAT => put(&v.to_le_bytes()),
+        _ if index => put(&(v as i64).to_le_bytes()),
+        GL_UNSIGNED_BYTE => put(&[unorm(255.0) as u8]),
+        GL_BYTE => put(&[snorm(127.0) as i8 as u8]),
+        GL_UNSIGNED_SHORT => put(&(unorm(65535.0) as u16).to_le_bytes()),
+        GL_SHORT => put(&(snorm(32767.0) as i16).to_le_bytes()),
+        GL_UNSIGNED_INT => put(&(unorm(4294967295.0) as u32).to_le_bytes()),
+        GL_INT => put(&(snorm(2147483647.0) as i32).to_le_bytes()),
+        _ => put(&[]),
     }
 }
 
