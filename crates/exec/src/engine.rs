@@ -1049,6 +1049,11 @@ fn f1(func: F1, a: &Lanes) -> Lanes {
         F1::Floor => each!(|x| ftz(floor(x))),
         F1::Ceil => each!(|x| ftz(ceil(x))),
         F1::Fract => each!(|x| ftz(x - floor(x))),
+        // Branch-free in glsl::math, so these loops vectorize.
+        F1::Exp => each!(|x| ftz(math::exp(x))),
+        F1::Exp2 => each!(|x| ftz(math::exp2(x))),
+        F1::Log => each!(|x| ftz(math::log(x))),
+        F1::Log2 => each!(|x| ftz(math::log2(x))),
         other => each!(|x| ftz(other.eval(x))),
     }
 }
@@ -1068,6 +1073,7 @@ fn f2(func: F2, a: &Lanes, b: &Lanes) -> Lanes {
         F2::Max => each!(|x, y| ftz(fmax(x, y))),
         F2::Step => each!(|e, x| if x < e { 0 } else { 1.0f32.to_bits() }),
         F2::Mod => each!(|x, y| ftz(x - y * floor(x / y))),
+        F2::Pow => each!(|x, y| ftz(math::pow(x, y))),
         other => each!(|x, y| ftz(other.eval(x, y))),
     }
 }
@@ -1236,8 +1242,12 @@ mod tests {
             F1::Floor,
             F1::Ceil,
             F1::Fract,
+            F1::Exp,
+            F1::Exp2,
+            F1::Log,
+            F1::Log2,
         ];
-        let two = [F2::Min, F2::Max, F2::Step, F2::Mod];
+        let two = [F2::Min, F2::Max, F2::Step, F2::Mod, F2::Pow];
         let three = [F3::Clamp, F3::Mix, F3::SmoothStep];
         // Every pairing of specials with specials, then random vectors
         // (70,000 x 16 lanes = 1.1 million inputs per function).
