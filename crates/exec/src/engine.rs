@@ -1023,6 +1023,22 @@ fn fmax(x: f32, y: f32) -> f32 {
     }
 }
 
+/// `body` for every lane `l`, written as a plain loop rather than through
+/// [`lanes`]' closure: LLVM leaves a closure this big un-inlined (a call per
+/// lane, compiled for the baseline instruction set), while the loop is
+/// inlined into each CPU variant and vectorized there. For the
+/// branch-free `glsl::math` functions (`exp`, `exp2`, `log`, `log2`,
+/// `pow`).
+macro_rules! lane_loop {
+    (|$l:ident| $body:expr) => {{
+        let mut o = [0u32; LANES];
+        for ($l, v) in o.iter_mut().enumerate() {
+            *v = $body;
+        }
+        o
+    }};
+}
+
 #[inline(always)]
 fn f1(func: F1, a: &Lanes) -> Lanes {
     macro_rules! each {
@@ -1049,11 +1065,10 @@ fn f1(func: F1, a: &Lanes) -> Lanes {
         F1::Floor => each!(|x| ftz(floor(x))),
         F1::Ceil => each!(|x| ftz(ceil(x))),
         F1::Fract => each!(|x| ftz(x - floor(x))),
-        // Branch-free in glsl::math, so these loops vectorize.
-        F1::Exp => each!(|x| ftz(math::exp(x))),
-        F1::Exp2 => each!(|x| ftz(math::exp2(x))),
-        F1::Log => each!(|x| ftz(math::log(x))),
-        F1::Log2 => each!(|x| ftz(math::log2(x))),
+        F1::Exp => lane_loop!(|l| ftz(math::exp(f(a[l])))),
+        F1::Exp2 => lane_loop!(|l| ftz(math::exp2(f(a[l])))),
+        F1::Log => lane_loop!(|l| ftz(math::log(f(a[l])))),
+        F1::Log2 => lane_loop!(|l| ftz(math::log2(f(a[l])))),
         other => each!(|x| ftz(other.eval(x))),
     }
 }
@@ -1073,7 +1088,7 @@ fn f2(func: F2, a: &Lanes, b: &Lanes) -> Lanes {
         F2::Max => each!(|x, y| ftz(fmax(x, y))),
         F2::Step => each!(|e, x| if x < e { 0 } else { 1.0f32.to_bits() }),
         F2::Mod => each!(|x, y| ftz(x - y * floor(x / y))),
-        F2::Pow => each!(|x, y| ftz(math::pow(x, y))),
+        F2::Pow => lane_loop!(|l| ftz(math::pow(f(a[l]), f(b[l])))),
         other => each!(|x, y| ftz(other.eval(x, y))),
     }
 }
