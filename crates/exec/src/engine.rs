@@ -1023,6 +1023,22 @@ fn fmax(x: f32, y: f32) -> f32 {
     }
 }
 
+/// `body` for every lane `l`, written as a plain loop rather than through
+/// [`lanes`]' closure: LLVM leaves a closure this big un-inlined (a call per
+/// lane, compiled for the baseline instruction set), while the loop is
+/// inlined into each CPU variant and vectorized there. For the
+/// branch-free `glsl::math` functions (`exp`, `exp2`, `log`, `log2`,
+/// `pow`).
+macro_rules! lane_loop {
+    (|$l:ident| $body:expr) => {{
+        let mut o = [0u32; LANES];
+        for ($l, v) in o.iter_mut().enumerate() {
+            *v = $body;
+        }
+        o
+    }};
+}
+
 #[inline(always)]
 fn f1(func: F1, a: &Lanes) -> Lanes {
     macro_rules! each {
@@ -1049,6 +1065,10 @@ fn f1(func: F1, a: &Lanes) -> Lanes {
         F1::Floor => each!(|x| ftz(floor(x))),
         F1::Ceil => each!(|x| ftz(ceil(x))),
         F1::Fract => each!(|x| ftz(x - floor(x))),
+        F1::Exp => lane_loop!(|l| ftz(math::exp(f(a[l])))),
+        F1::Exp2 => lane_loop!(|l| ftz(math::exp2(f(a[l])))),
+        F1::Log => lane_loop!(|l| ftz(math::log(f(a[l])))),
+        F1::Log2 => lane_loop!(|l| ftz(math::log2(f(a[l])))),
         other => each!(|x| ftz(other.eval(x))),
     }
 }
@@ -1068,6 +1088,7 @@ fn f2(func: F2, a: &Lanes, b: &Lanes) -> Lanes {
         F2::Max => each!(|x, y| ftz(fmax(x, y))),
         F2::Step => each!(|e, x| if x < e { 0 } else { 1.0f32.to_bits() }),
         F2::Mod => each!(|x, y| ftz(x - y * floor(x / y))),
+        F2::Pow => lane_loop!(|l| ftz(math::pow(f(a[l]), f(b[l])))),
         other => each!(|x, y| ftz(other.eval(x, y))),
     }
 }
@@ -1236,8 +1257,12 @@ mod tests {
             F1::Floor,
             F1::Ceil,
             F1::Fract,
+            F1::Exp,
+            F1::Exp2,
+            F1::Log,
+            F1::Log2,
         ];
-        let two = [F2::Min, F2::Max, F2::Step, F2::Mod];
+        let two = [F2::Min, F2::Max, F2::Step, F2::Mod, F2::Pow];
         let three = [F3::Clamp, F3::Mix, F3::SmoothStep];
         // Every pairing of specials with specials, then random vectors
         // (70,000 x 16 lanes = 1.1 million inputs per function).
