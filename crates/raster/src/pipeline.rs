@@ -642,29 +642,24 @@ pub(crate) fn draw_probed(
     });
     let prims: Vec<Prim> = parts.into_iter().flatten().collect();
 
-    let stage = FragmentStage {
-        shader: fs,
-        uniforms: fs_uniforms,
-        textures,
-        layout: &fs_layout,
-        state,
-        constant: fs_layout
-            .links
-            .iter()
-            .map(|l| l.color && state.flat_shading)
-            .collect(),
-        early: fs_layout.frag_depth.is_none(),
-        // The probe replays every fragment: never deferred.
-        deferred: if fs_layout.frag_depth.is_some()
-            && probe.is_none()
-            && crate::fragment_ops::last_writer_wins(fb, state)
-        {
-            fs.depth_only()
-        } else {
-            None
-        },
-        probe,
+    // The probe replays every fragment: never deferred.
+    let deferred = if fs_layout.frag_depth.is_some()
+        && probe.is_none()
+        && crate::fragment_ops::last_writer_wins(fb, state)
+    {
+        fs.depth_only()
+    } else {
+        None
     };
+    let stage = FragmentStage::new(
+        fs,
+        fs_uniforms,
+        textures,
+        &fs_layout,
+        state,
+        deferred,
+        probe,
+    );
     if let Some(p) = probe {
         p.set_vertices(&vs_layout, &outputs, &vertex_of);
     }
@@ -732,16 +727,16 @@ fn shade_tiles(
         let copy = || source.copy_tile(r.0 as u32, r.1 as u32, r.2 as u32, r.3 as u32);
         let mut local = copy();
         let bin = bins.get(t).map_or(&[][..], |b| &b[..]);
-        let mut batch = stage.scratch();
+        let mut scratch = stage.scratch();
         if let Some(depth) = &stage.deferred {
-            match stage.shade_deferred(depth.as_ref(), &mut local, prims, bin, r, &mut batch) {
+            match stage.shade_deferred(depth.as_ref(), &mut local, prims, bin, r, &mut scratch) {
                 Ok(()) => return TileResult::Ran(local, None),
                 // Redraw the tile the straightforward way: it stops at the
                 // same fragment with the same error.
                 Err(_) => local = copy(),
             }
         } else if stage.batches_primitives(source) {
-            match stage.shade_batched(&mut local, prims, bin, r, &mut batch) {
+            match stage.shade_batched(&mut local, prims, bin, r, &mut scratch) {
                 Ok(()) => return TileResult::Ran(local, None),
                 // The same: one primitive at a time gives the error and
                 // the partial tile of the contract.
@@ -755,7 +750,7 @@ fn shade_tiles(
             let Some(prim) = prims.get(p as usize) else {
                 continue;
             };
-            if let Err(e) = stage.shade(&mut local, prim, r, &mut batch) {
+            if let Err(e) = stage.shade(&mut local, prim, r, &mut scratch) {
                 cancel.fail(i);
                 return TileResult::Ran(local, Some(e));
             }
