@@ -18,8 +18,9 @@ pub(crate) struct Prim {
     pub back: bool,
     /// Polygon offset added to window z.
     pub z_offset: f64,
-    /// Fragment varyings per vertex (`links` values each).
-    pub attrs: Vec<f32>,
+    /// Where the fragment varyings start in the draw's varying array
+    /// ([`FragmentStage::attrs`]): `links` values per vertex.
+    pub attrs: usize,
     /// Index of the assembled primitive this one came from (clipping may
     /// split one into several), for the debugger.
     pub source: u32,
@@ -107,6 +108,8 @@ pub(crate) struct FragmentStage<'a> {
     pub textures: &'a (dyn Textures + Sync),
     pub layout: &'a FsLayout,
     pub state: &'a PipelineState,
+    /// The fragment varyings of every primitive ([`Prim::attrs`]).
+    pub attrs: &'a [f32],
     /// Per link: flat-shaded (the value of vertex 0 is used as is).
     pub constant: Vec<bool>,
     /// Per link: the shader reads the input (unread inputs stay zero;
@@ -125,6 +128,9 @@ pub(crate) struct FragmentStage<'a> {
     pub deferred: Option<Box<dyn ShaderStage>>,
     /// The debugger's pixel probe (`None` in normal draws).
     pub probe: Option<&'a crate::probe::Probe>,
+    /// `shader`'s and `deferred`'s uniform-only values, once per draw.
+    prepared: Option<crate::ex::Prepared>,
+    deferred_prepared: Option<crate::ex::Prepared>,
 }
 
 impl<'a> FragmentStage<'a> {
@@ -137,6 +143,7 @@ impl<'a> FragmentStage<'a> {
         textures: &'a (dyn Textures + Sync),
         layout: &'a FsLayout,
         state: &'a PipelineState,
+        attrs: &'a [f32],
         deferred: Option<Box<dyn ShaderStage>>,
         probe: Option<&'a crate::probe::Probe>,
     ) -> FragmentStage<'a> {
@@ -153,6 +160,7 @@ impl<'a> FragmentStage<'a> {
             textures,
             layout,
             state,
+            attrs,
             constant: layout
                 .links
                 .iter()
@@ -176,8 +184,29 @@ impl<'a> FragmentStage<'a> {
                 })
                 .collect(),
             early: layout.frag_depth.is_none(),
+            prepared: shader.prepare(uniforms),
+            deferred_prepared: deferred.as_ref().and_then(|d| d.prepare(uniforms)),
             deferred,
             probe,
+        }
+    }
+
+    /// Runs the shader on `batch` (with the per-draw prepared values).
+    fn run_shader(&self, batch: &mut Batch) -> Result<(), ExecError> {
+        match &self.prepared {
+            Some(p) => self
+                .shader
+                .run_prepared(batch, p, self.uniforms, self.textures),
+            None => self.shader.run(batch, self.uniforms, self.textures),
+        }
+    }
+
+    /// Runs the depth-only slice `depth` (this stage's
+    /// [`FragmentStage::deferred`]) on `batch`.
+    fn run_depth(&self, depth: &dyn ShaderStage, batch: &mut Batch) -> Result<(), ExecError> {
+        match &self.deferred_prepared {
+            Some(p) => depth.run_prepared(batch, p, self.uniforms, self.textures),
+            None => depth.run(batch, self.uniforms, self.textures),
         }
     }
 
@@ -285,7 +314,7 @@ impl<'a> FragmentStage<'a> {
         pending.clear();
         let mut flush = |fb: &mut Framebuffer, pending: &mut Vec<Entry>| -> Result<(), ExecError> {
             self.fill(batch, pending);
-            self.shader.run(batch, self.uniforms, self.textures)?;
+            self.run_shader(batch)?;
             self.write_batch(fb, origin, batch, pending);
             pending.clear();
             Ok(())
@@ -414,7 +443,12 @@ impl<'a> FragmentStage<'a> {
             let replace = self.replace.get(li).copied().flatten();
             for (e, lanes) in pending.iter().zip(dst.chunks_exact_mut(4)) {
                 let (prim, quad) = (e.prim, &e.quad);
-                let attr = |j: usize| prim.attrs.get(j * links + li).copied().unwrap_or(0.0);
+                let attr = |j: usize| {
+                    self.attrs
+                        .get(prim.attrs + j * links + li)
+                        .copied()
+                        .unwrap_or(0.0)
+                };
                 match prim.shape {
                     Shape::Point { .. } => match replace.filter(|_| sprite) {
                         Some(c) => {
@@ -573,7 +607,7 @@ impl<'a> FragmentStage<'a> {
                 } else if let Some(p) = self.probe {
                     p.print_batch(self, batch, prim.source, pixel_of)?;
                 } else {
-                    self.shader.run(batch, self.uniforms, self.textures)?;
+                    self.run_shader(batch)?;
                 }
             }
         }
@@ -647,7 +681,7 @@ impl<'a> FragmentStage<'a> {
                               pending: &mut Vec<Entry>|
          -> Result<(), ExecError> {
             self.fill(batch, pending);
-            depth.run(batch, self.uniforms, self.textures)?;
+            self.run_depth(depth, batch)?;
             let mut frag = Fragment {
                 x: 0,
                 y: 0,
@@ -705,7 +739,7 @@ impl<'a> FragmentStage<'a> {
         let mut color_pass =
             |fb: &mut Framebuffer, todo: &mut Vec<Entry>| -> Result<(), ExecError> {
                 self.fill(batch, todo);
-                self.shader.run(batch, self.uniforms, self.textures)?;
+                self.run_shader(batch)?;
                 let mut colors = [[0.0; 4]; MAX_DRAW_BUFFERS];
                 for (q, e) in todo.iter().enumerate() {
                     for k in 0..4 {
