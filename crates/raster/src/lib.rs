@@ -147,6 +147,25 @@ pub trait ShaderStage: Sync {
         textures: &dyn ex::Textures,
     ) -> Result<(), ex::ExecError>;
 
+    /// The uniform-only values of the stage for `uniforms`, computed once
+    /// per draw for [`ShaderStage::run_prepared`] (`exec::Kernel::prepare`).
+    /// `None` (the default): nothing to prepare.
+    fn prepare(&self, _uniforms: &[u32]) -> Option<ex::Prepared> {
+        None
+    }
+
+    /// [`ShaderStage::run`] with what [`ShaderStage::prepare`] returned for
+    /// the same `uniforms`; the same results, bit for bit.
+    fn run_prepared(
+        &self,
+        batch: &mut ex::Batch,
+        _prepared: &ex::Prepared,
+        uniforms: &[u32],
+        textures: &dyn ex::Textures,
+    ) -> Result<(), ex::ExecError> {
+        self.run(batch, uniforms, textures)
+    }
+
     /// A stage with the same interface that computes only what decides a
     /// fragment's fate (`gl_FragDepth` and discard), bit for bit as this
     /// stage does; see `exec::Kernel::depth_only`. When the fragment stage
@@ -210,6 +229,18 @@ impl ShaderStage for ex::Kernel {
     }
     fn depth_only(&self) -> Option<Box<dyn ShaderStage>> {
         ex::Kernel::depth_only(self).map(|k| Box::new(k) as Box<dyn ShaderStage>)
+    }
+    fn prepare(&self, uniforms: &[u32]) -> Option<ex::Prepared> {
+        Some(ex::Kernel::prepare(self, uniforms))
+    }
+    fn run_prepared(
+        &self,
+        batch: &mut ex::Batch,
+        prepared: &ex::Prepared,
+        _uniforms: &[u32],
+        textures: &dyn ex::Textures,
+    ) -> Result<(), ex::ExecError> {
+        ex::Kernel::run_prepared(self, batch, prepared, textures)
     }
 
     fn run_probed(
