@@ -83,7 +83,7 @@ pub(crate) fn sample(
     }
 
     // λ of every lane, as `texture::lambda` computes it.
-    let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod, req.mask);
+    let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod);
 
     // The level(s) of every lane, as `texture::select_levels` picks them.
     let mask = req.mask;
@@ -178,16 +178,14 @@ pub(crate) fn sample(
     true
 }
 
-/// `texture::lambda` for every lane (the lanes outside `mask` get some
-/// value), with the derivative arithmetic over all lanes at once; only
-/// `log2` runs lane by lane.
+/// `texture::lambda` for every lane (the lanes outside the request's
+/// mask get some value), over all lanes at once.
 #[inline(always)]
 fn lambdas(
     tex: &Texture,
     base_img: &crate::texture::Image,
     unit_bias: f32,
     lod: &Lod,
-    mask: u32,
 ) -> [f32; LANES] {
     let mut base = [0.0f32; LANES];
     let mut extra = [0.0f32; LANES];
@@ -213,10 +211,10 @@ fn lambdas(
                 // `math::max`.
                 rho[l] = if rx.is_nan() || rx < ry { ry } else { rx };
             }
+            // Every lane (`log2` is branch-free and total), so that the
+            // loop vectorizes.
             for l in 0..LANES {
-                if mask & (1 << l) != 0 {
-                    base[l] = glsl::math::log2(rho[l]);
-                }
+                base[l] = glsl::math::log2(rho[l]);
                 extra[l] = unit_bias + bias[l];
             }
         }
