@@ -313,7 +313,7 @@ impl<'a> FragmentStage<'a> {
     pub fn shade_batched<'p>(
         &self,
         fb: &mut Framebuffer,
-        prims: &'p [Prim],
+        prims: &[&'p Prim],
         bin: &[u32],
         tile: PixelRect,
         scratch: &mut Scratch<'p>,
@@ -333,7 +333,7 @@ impl<'a> FragmentStage<'a> {
             Ok(())
         };
         for &p in bin {
-            let Some(prim) = prims.get(p as usize) else {
+            let Some(&prim) = prims.get(p as usize) else {
                 continue;
             };
             prim.shape.quads_into(clip_to(prim, tile), quads);
@@ -676,7 +676,7 @@ impl<'a> FragmentStage<'a> {
         &self,
         depth: &dyn ShaderStage,
         fb: &mut Framebuffer,
-        prims: &'p [Prim],
+        prims: &[&'p Prim],
         bin: &[u32],
         tile: PixelRect,
         scratch: &mut Scratch<'p>,
@@ -730,7 +730,7 @@ impl<'a> FragmentStage<'a> {
             Ok(())
         };
         for &p in bin {
-            let Some(prim) = prims.get(p as usize) else {
+            let Some(&prim) = prims.get(p as usize) else {
                 continue;
             };
             prim.shape.quads_into(clip_to(prim, tile), quads);
@@ -793,7 +793,7 @@ impl<'a> FragmentStage<'a> {
                         }
                     }
                     done |= write;
-                    let Some(prim) = prims.get(p as usize) else {
+                    let Some(&prim) = prims.get(p as usize) else {
                         continue;
                     };
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
