@@ -2,9 +2,10 @@
 //! alpha test, stencil test, depth test, blending, (dithering: off),
 //! logic op, then the masked write to each draw buffer.
 
-use crate::framebuffer::{depth_to_fixed, float_to_unorm8, unorm8_to_float, ColorBuffer};
+use crate::framebuffer::{depth_to_fixed, float_to_unorm8, ColorBuffer};
 use crate::framebuffer::{Framebuffer, MAX_DRAW_BUFFERS};
 use crate::state::{Blend, BlendEquation, BlendFactor, PipelineState, StencilFace, StencilOp};
+use crate::texture::UNORM8;
 
 /// One shaded fragment ready for the per-fragment operations.
 pub(crate) struct Fragment {
@@ -257,14 +258,19 @@ fn write_color(buf: &mut ColorBuffer, index: usize, state: &PipelineState, src: 
                 let sb = s.map(float_to_unorm8);
                 std::array::from_fn(|c| op.apply(sb[c], p[c]))
             } else if let Some(blend) = &state.blend {
-                let d = p.map(unorm8_to_float);
-                blend_color(blend, s, d).map(float_to_unorm8)
+                // The table holds `unorm8_to_float`'s values.
+                let d = p.map(|b| UNORM8[b as usize]);
+                blend_unit(blend, s, d).map(float_to_unorm8)
             } else {
                 s.map(float_to_unorm8)
             };
-            for c in 0..4 {
-                if mask[c] {
-                    p[c] = out[c];
+            if mask == [true; 4] {
+                *p = out;
+            } else {
+                for c in 0..4 {
+                    if mask[c] {
+                        p[c] = out[c];
+                    }
                 }
             }
         }
@@ -287,6 +293,38 @@ fn write_color(buf: &mut ColorBuffer, index: usize, state: &PipelineState, src: 
             }
         }
     }
+}
+
+/// [`blend_color`] for `s` and `d` in [0, 1] (a fixed-point buffer's
+/// clamped source and stored destination): the common factor pairs with
+/// FUNC_ADD (SRC_ALPHA / ONE_MINUS_SRC_ALPHA, ONE / ZERO, ONE / ONE, the
+/// same for colour and alpha) as straight-line code giving the same bits,
+/// the rest through [`blend_color`]. (With values in [0, 1], `x · 1 = x`,
+/// `x · 0 = +0` and `x + 0 = x` exactly.)
+#[inline]
+fn blend_unit(b: &Blend, s: [f32; 4], d: [f32; 4]) -> [f32; 4] {
+    use BlendFactor::{One, OneMinusSrcAlpha, SrcAlpha, Zero};
+    if b.equation_rgb == BlendEquation::Add
+        && b.equation_alpha == BlendEquation::Add
+        && b.src_rgb == b.src_alpha
+        && b.dst_rgb == b.dst_alpha
+    {
+        match (b.src_rgb, b.dst_rgb) {
+            (SrcAlpha, OneMinusSrcAlpha) => {
+                let (fs, fd) = (s[3], 1.0 - s[3]);
+                return [
+                    s[0] * fs + d[0] * fd,
+                    s[1] * fs + d[1] * fd,
+                    s[2] * fs + d[2] * fd,
+                    s[3] * fs + d[3] * fd,
+                ];
+            }
+            (One, Zero) => return s,
+            (One, One) => return [s[0] + d[0], s[1] + d[1], s[2] + d[2], s[3] + d[3]],
+            _ => {}
+        }
+    }
+    blend_color(b, s, d)
 }
 
 /// GL 2.1 §4.1.8 blend of source `s` over destination `d`
@@ -434,6 +472,48 @@ mod tests {
         assert_eq!(min, [0.2, 0.25, 0.6, 0.75]);
         let max = blend_color(&b(Max, Min), s, d);
         assert_eq!(max, [0.5, 0.4, 1.0, 0.1]);
+    }
+
+    #[test]
+    fn common_blends_match_the_general_equation() {
+        use crate::framebuffer::unorm8_to_float;
+        use BlendFactor::*;
+        for k in 0..=255u8 {
+            assert_eq!(UNORM8[k as usize].to_bits(), unorm8_to_float(k).to_bits());
+        }
+        let mut seed = 99u32;
+        let mut next = move || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed >> 8
+        };
+        let pairs = [
+            (SrcAlpha, OneMinusSrcAlpha),
+            (One, Zero),
+            (One, One),
+            (DstColor, Zero),
+        ];
+        for (src, dst) in pairs {
+            let b = Blend {
+                src_rgb: src,
+                dst_rgb: dst,
+                src_alpha: src,
+                dst_alpha: dst,
+                ..Blend::default()
+            };
+            for i in 0..20_000 {
+                // Sources: arbitrary values in [0, 1] and the ends;
+                // destinations: stored bytes.
+                let s = [0; 4].map(|_| match i % 7 {
+                    0 => 0.0,
+                    1 => 1.0,
+                    _ => clamp01(next() as f32 / 16_777_216.0 * 1.2 - 0.1),
+                });
+                let d = [0; 4].map(|_| unorm8_to_float((next() & 255) as u8));
+                let fast = blend_unit(&b, s, d).map(f32::to_bits);
+                let general = blend_color(&b, s, d).map(f32::to_bits);
+                assert_eq!(fast, general, "{src:?}/{dst:?} {s:?} {d:?}");
+            }
+        }
     }
 
     #[test]

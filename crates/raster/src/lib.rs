@@ -87,6 +87,7 @@ mod rasterize;
 mod shade;
 mod state;
 mod texture;
+mod texture_2d;
 mod workers;
 
 #[cfg(test)]

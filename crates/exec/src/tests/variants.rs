@@ -93,6 +93,19 @@ fn every_variant_computes_the_same_bytes() {
                     );
                 }
             }
+            if variants.contains(&Variant::Jit) {
+                // Inlined programs run as native code; subroutines are
+                // interpreted.
+                let calls = k
+                    .code
+                    .ins
+                    .iter()
+                    .any(|i| matches!(i.op, crate::program::Op::Call { .. }));
+                match (calls, k.native_code()) {
+                    (true, Some(Err(_))) | (false, Some(Ok(_))) => {}
+                    (_, s) => panic!("shader {n} limit {limit}: native code {s:?}"),
+                }
+            }
         }
     }
 }
@@ -151,5 +164,51 @@ fn bench_sphere() {
             d.op_count(),
             reference / t
         );
+    }
+}
+
+/// Time per 16-lane batch of a shader made of `pow`, `exp`, `exp2`, `log`
+/// and `log2` (40 calls a lane) with the reference interpreter and each
+/// variant: whether those built-ins vectorize (`cargo test --release -p
+/// shaderbox-exec bench_math -- --ignored --nocapture`).
+#[test]
+#[ignore = "benchmark"]
+fn bench_math() {
+    let src = "#version 120
+        varying vec4 v;
+        void main() {
+            vec4 a = abs(v) * 4.0 + 0.01;
+            vec4 r = pow(a, v.wzyx * 8.0) + pow(a.yzwx, vec4(16.0)) + exp(-a) + exp2(v * 10.0);
+            r += log(a) + log2(a.zwxy) + pow(r.wxyz, v.yzwx);
+            r += exp(v.zwxy) + log2(a * 3.0) + exp2(-a.xwzy);
+            gl_FragColor = r;
+        }";
+    let linked = link_one(Stage::Fragment, src).unwrap();
+    let k = Kernel::new(&linked).unwrap();
+    let mut batches: Vec<Batch> = (0..64)
+        .map(|i| {
+            let mut b = Batch::for_kernel(&k, 0xffff);
+            fill(&mut b, i + 1);
+            b
+        })
+        .collect();
+    let mut time = |f: &mut dyn FnMut(&mut Batch)| {
+        let mut best = f64::MAX;
+        for _ in 0..7 {
+            let t = std::time::Instant::now();
+            for _ in 0..20 {
+                for b in batches.iter_mut() {
+                    f(b);
+                }
+            }
+            best = best.min(t.elapsed().as_secs_f64() / (20.0 * 64.0));
+        }
+        best * 1e9
+    };
+    let reference = time(&mut |b| k.run_reference(b, &[], &NoTextures).unwrap());
+    eprintln!("math: reference interpreter {reference:.0} ns/batch");
+    for v in supported_variants() {
+        let t = time(&mut |b| k.run_variant(v, b, &[], &NoTextures).unwrap());
+        eprintln!("  {:8} {t:.0} ns/batch ({:.2}x)", v.name(), reference / t);
     }
 }
