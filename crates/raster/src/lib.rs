@@ -21,10 +21,10 @@
 //!
 //! # Threads
 //! [`draw_on`] runs on a [`Workers`] (1 thread = inline on the caller; more
-//! = a rayon pool owned by the `Workers`, no global state). Vertex batches
-//! of `exec::LANES` vertices are tasks writing their own vertices' outputs;
-//! primitive set-up runs in chunks of 2,048 primitives whose results are
-//! concatenated in primitive order; each 64×64 tile is a task that owns a
+//! = a rayon pool owned by the `Workers`, no global state). Groups of 64
+//! vertices (four batches of `exec::LANES`) are tasks writing their own
+//! vertices' outputs in place; primitive set-up runs in chunks of 2,048
+//! primitives whose results are taken in primitive order; each 64×64 tile is a task that owns a
 //! copy of its pixels and runs its primitives in draw order, and the tiles
 //! are written back in tile order. No value is combined across tasks, and
 //! textures are read-only, so the framebuffer is bit-identical whatever the
@@ -34,6 +34,21 @@
 //! that tile keeps the fragments written before the error, later tiles are
 //! untouched, and that tile's error is returned. (A vertex-stage error
 //! draws nothing and reports the first failing vertex batch's error.)
+//!
+//! # Costs around the shader
+//! Per draw, not per batch or primitive: the uniform-only values of both
+//! stages (`ShaderStage::prepare`, `exec::Kernel::prepare`), the vertex
+//! input layout, which fragment inputs the shader reads (unread varyings
+//! are left zero) and which colour outputs go to draw buffers. Set-up
+//! allocates nothing per primitive: varyings go to one array per set-up
+//! chunk, triangles and quads inside every clip plane skip the clipper.
+//! Triangle coverage steps integer edge forms (exactly the edge function
+//! values, four pixels and three edges per 2×2 quad, a row ending at the
+//! first quad an edge rules out for the rest of the row) into a buffer
+//! reused per tile; interpolation is computed per quad with the same f64
+//! operations per pixel as before, laid out per vertex so that filling a
+//! batch's varyings is straight vector code; a batch's quads are built in
+//! place in four per-tile slots.
 //!
 //! # Colors for visible fragments only
 //! When the fragment stage writes `gl_FragDepth` (so early depth testing

@@ -18,8 +18,8 @@ use crate::{DrawError, ShaderStage};
 /// primitives in draw order; tiles run in parallel.
 pub const TILE: i64 = 64;
 
-/// Vertex batches (of `LANES` vertices) one worker takes at a time.
-const VERTEX_CHUNKS_PER_TASK: usize = 4;
+/// Vertices one vertex-stage task takes (batches of `LANES`).
+const VERTICES_PER_TASK: usize = 4 * LANES;
 
 /// Primitives one set-up task takes.
 const SETUP_CHUNK: usize = 2048;
@@ -186,17 +186,17 @@ fn run_vertices(
     let lo = indices.iter().copied().min().unwrap_or(0);
     let hi = indices.iter().copied().max().unwrap_or(0);
     let span = (hi - lo) as usize + 1;
-    if span <= 4 * indices.len() + 1024 {
-        let mut slot = vec![usize::MAX; span];
+    if span <= 4 * indices.len() + 1024 && indices.len() < u32::MAX as usize {
+        let mut slot = vec![u32::MAX; span];
         for &ix in indices {
             let Some(s) = slot.get_mut((ix - lo) as usize) else {
                 continue;
             };
-            if *s == usize::MAX {
+            if *s == u32::MAX {
+                *s = unique.len() as u32;
                 unique.push(ix);
-                *s = unique.len() - 1;
             }
-            vertex_of.push(*s);
+            vertex_of.push(*s as usize);
         }
     } else {
         let mut seen: HashMap<u32, usize> = HashMap::new();
@@ -215,66 +215,86 @@ fn run_vertices(
         .max()
         .unwrap_or(0);
     let stride = layout.outputs;
-    let chunks: Vec<&[u32]> = unique.chunks(LANES).collect();
     // Uniform-only values once per draw, not per batch (a draw of a few
     // vertices runs them once either way).
-    let prepared = if chunks.len() > 1 {
+    let prepared = if unique.len() > LANES {
         vs.prepare(uniforms)
     } else {
         None
     };
-    let run_chunk = |chunk: &[u32]| -> Result<Vec<f32>, crate::ex::ExecError> {
+    // Each task runs its vertices' batches with one batch and writes their
+    // outputs straight into its own part of the draw's output array.
+    let mut outputs = vec![0.0f32; unique.len() * stride];
+    let mut rest: &mut [f32] = &mut outputs;
+    let mut tasks: Vec<(&[u32], std::sync::Mutex<&mut [f32]>)> = Vec::new();
+    for group in unique.chunks(VERTICES_PER_TASK) {
+        let len = (group.len() * stride).min(rest.len());
+        let (part, tail) = std::mem::take(&mut rest).split_at_mut(len);
+        tasks.push((group, std::sync::Mutex::new(part)));
+        rest = tail;
+    }
+    let plan = input_plan(iface);
+    let run_group = |group: &[u32], out: &mut [f32]| -> Result<(), crate::ex::ExecError> {
         let mut batch = new_batch(n_in, stride);
-        for (lane, &ix) in chunk.iter().enumerate() {
-            fetch_vertex(iface, fetch, ix, &mut batch, lane);
-        }
-        batch.active = if chunk.len() >= 32 {
-            u32::MAX
-        } else {
-            (1u32 << chunk.len()) - 1
-        };
-        match probe.filter(|p| p.prints_others()) {
-            Some(p) => p.print_vertices(vs, &mut batch, uniforms, textures, chunk)?,
-            None => match &prepared {
-                Some(p) => vs.run_prepared(&mut batch, p, uniforms, textures)?,
-                None => vs.run(&mut batch, uniforms, textures)?,
-            },
-        }
-        let mut out = vec![0.0f32; chunk.len() * stride];
-        for lane in 0..chunk.len() {
-            let base = lane * stride;
-            for (c, comp) in batch.outputs.iter().enumerate().take(stride) {
-                if let Some(dst) = out.get_mut(base + c) {
+        for (c, chunk) in group.chunks(LANES).enumerate() {
+            // As a fresh batch: outputs the shader leaves unwritten are 0.
+            for c in batch.inputs.iter_mut().chain(batch.outputs.iter_mut()) {
+                *c = [0.0; LANES];
+            }
+            for (lane, &ix) in chunk.iter().enumerate() {
+                fetch_planned(&plan, fetch, ix, &mut batch, lane);
+            }
+            batch.active = if chunk.len() >= 32 {
+                u32::MAX
+            } else {
+                (1u32 << chunk.len()) - 1
+            };
+            batch.discarded = 0;
+            batch.helper = 0;
+            match probe.filter(|p| p.prints_others()) {
+                Some(p) => p.print_vertices(vs, &mut batch, uniforms, textures, chunk)?,
+                None => match &prepared {
+                    Some(p) => vs.run_prepared(&mut batch, p, uniforms, textures)?,
+                    None => vs.run(&mut batch, uniforms, textures)?,
+                },
+            }
+            let part = out.get_mut(c * LANES * stride..).unwrap_or_default();
+            for (lane, vertex) in part
+                .chunks_exact_mut(stride.max(1))
+                .take(chunk.len())
+                .enumerate()
+            {
+                for (dst, comp) in vertex.iter_mut().zip(&batch.outputs) {
                     *dst = comp[lane];
                 }
-            }
-            if clamp_colors {
-                for &(o, n) in &layout.colors {
-                    for c in 0..n {
-                        if let Some(v) = out.get_mut(base + o + c) {
+                if clamp_colors {
+                    for &(o, n) in &layout.colors {
+                        for v in vertex.iter_mut().skip(o).take(n) {
                             *v = if *v > 0.0 { v.min(1.0) } else { 0.0 };
                         }
                     }
                 }
             }
         }
-        Ok(out)
+        Ok(())
     };
-    let results = workers.map(chunks.len(), VERTEX_CHUNKS_PER_TASK, |i, cancel| {
+    let results = workers.map(tasks.len(), 1, |i, cancel| {
         if cancel.skip(i) {
             return None;
         }
-        let r = run_chunk(chunks.get(i).copied().unwrap_or(&[]));
+        let (group, part) = tasks.get(i)?;
+        let mut part = part.lock().unwrap_or_else(|e| e.into_inner());
+        let r = run_group(group, &mut part);
         if r.is_err() {
             cancel.fail(i);
         }
         Some(r)
     });
-    let mut outputs = Vec::with_capacity(unique.len() * stride);
-    // Chunks up to the first failure all ran: the first error in order is
+    drop(tasks);
+    // Groups up to the first failure all ran: the first error in order is
     // the same whatever the thread count.
     for r in results.into_iter().flatten() {
-        outputs.extend(r?);
+        r?;
     }
     Ok((vertex_of, outputs))
 }
@@ -288,23 +308,48 @@ pub fn fetch_vertex(
     batch: &mut crate::ex::Batch,
     lane: usize,
 ) {
-    for (slot_no, slot) in iface.inputs.iter().enumerate() {
-        let (cols, rows) = match slot.ty.base {
-            glsl::types::Base::Matrix { cols, rows } if slot.ty.array.is_none() => {
-                (cols as usize, rows as usize)
-            }
-            _ => (1, slot.components.min(4)),
-        };
+    fetch_planned(&input_plan(iface), fetch, ix, batch, lane);
+}
+
+/// Per vertex input slot: (slot number, first component, columns, rows).
+type InputPlan = Vec<(usize, usize, usize, usize)>;
+
+/// How [`fetch_vertex`] lays out `iface`'s inputs (matrices column by
+/// column), worked out once per draw.
+fn input_plan(iface: &Interface) -> InputPlan {
+    iface
+        .inputs
+        .iter()
+        .enumerate()
+        .map(|(slot_no, slot)| {
+            let (cols, rows) = match slot.ty.base {
+                glsl::types::Base::Matrix { cols, rows } if slot.ty.array.is_none() => {
+                    (cols as usize, rows as usize)
+                }
+                _ => (1, slot.components.min(4)),
+            };
+            (slot_no, slot.offset, cols, rows)
+        })
+        .collect()
+}
+
+/// [`fetch_vertex`] with the layout of [`input_plan`].
+fn fetch_planned(
+    plan: &InputPlan,
+    fetch: &dyn VertexFetch,
+    ix: u32,
+    batch: &mut crate::ex::Batch,
+    lane: usize,
+) {
+    for &(slot_no, offset, cols, rows) in plan {
         for col in 0..cols {
             let mut v = [0.0, 0.0, 0.0, 1.0];
             fetch.fetch_column(slot_no, col, ix, &mut v);
-            for (c, &value) in v.iter().enumerate().take(rows) {
-                if let Some(dst) = batch
-                    .inputs
-                    .get_mut(slot.offset + col * rows + c)
-                    .and_then(|d| d.get_mut(lane))
-                {
-                    *dst = value;
+            let at = offset + col * rows;
+            let dst = batch.inputs.get_mut(at..).unwrap_or_default();
+            for (d, &value) in dst.iter_mut().zip(&v[..rows.min(4)]) {
+                if let Some(d) = d.get_mut(lane) {
+                    *d = value;
                 }
             }
         }
@@ -701,9 +746,11 @@ pub(crate) fn draw_probed(
     };
     let chunks = n_prims.div_ceil(chunk);
     let parts = workers.map(chunks, 1, |c, _| {
+        let first = c * chunk;
+        let n = chunk.min(n_prims.saturating_sub(first));
         let mut out = Out {
-            prims: Vec::new(),
-            attrs: Vec::new(),
+            prims: Vec::with_capacity(n),
+            attrs: Vec::with_capacity(n * 3 * fs_layout.links.len()),
             source: 0,
         };
         let v = |i: usize| vertex_of.get(i).copied().unwrap_or(0);
@@ -737,18 +784,18 @@ pub(crate) fn draw_probed(
         }
         (out.prims, out.attrs)
     });
-    // Concatenated in order, each chunk's varyings moved behind the
-    // previous chunks'.
-    let mut prims: Vec<Prim> = Vec::with_capacity(parts.iter().map(|p| p.0.len()).sum());
+    // The chunks' primitives in order (referenced where they are, not
+    // moved), each chunk's varyings moved behind the previous chunks'.
+    let mut parts = parts;
     let mut attrs: Vec<f32> = Vec::with_capacity(parts.iter().map(|p| p.1.len()).sum());
-    for (chunk_prims, chunk_attrs) in parts {
+    for (chunk_prims, chunk_attrs) in parts.iter_mut() {
         let base = attrs.len();
-        prims.extend(chunk_prims.into_iter().map(|mut p| {
+        for p in chunk_prims.iter_mut() {
             p.attrs += base;
-            p
-        }));
-        attrs.extend_from_slice(&chunk_attrs);
+        }
+        attrs.extend_from_slice(chunk_attrs);
     }
+    let prims: Vec<&Prim> = parts.iter().flat_map(|p| p.0.iter()).collect();
 
     // The probe replays every fragment: never deferred.
     let deferred = if fs_layout.frag_depth.is_some()
@@ -795,7 +842,7 @@ fn shade_tiles(
     workers: &Workers,
     fb: &mut Framebuffer,
     stage: &FragmentStage,
-    prims: &[Prim],
+    prims: &[&Prim],
 ) -> Result<(), DrawError> {
     let (w, h) = (fb.width as i64, fb.height as i64);
     let tiles_x = (w + TILE - 1) / TILE;
@@ -856,7 +903,7 @@ fn shade_tiles(
             if cancel.skip(i) {
                 return TileResult::Skipped;
             }
-            let Some(prim) = prims.get(p as usize) else {
+            let Some(&prim) = prims.get(p as usize) else {
                 continue;
             };
             if let Err(e) = stage.shade(&mut local, prim, r, &mut scratch) {

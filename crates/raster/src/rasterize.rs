@@ -326,11 +326,19 @@ impl Shape {
     /// [`Shape::interp`] at the four pixel centers of the quad at
     /// (qx, qy) (pixel `k` at `(qx + (k & 1), qy + (k >> 1))`), bit for bit,
     /// laid out per vertex for the fragment batch's interpolation.
+    #[cfg(test)]
     pub fn interp_quad(&self, qx: i64, qy: i64) -> QuadInterp {
+        let mut q = QuadInterp::default();
+        self.interp_quad_into(qx, qy, &mut q);
+        q
+    }
+
+    /// [`Shape::interp_quad`] written into `q` (in place: a batch's quads
+    /// are built where they stay).
+    pub fn interp_quad_into(&self, qx: i64, qy: i64, q: &mut QuadInterp) {
         match self {
             Shape::Triangle { p, sign, area2, v } => {
                 let a = *area2 as f64;
-                let mut q = QuadInterp::default();
                 let mut b = [[0.0f64; 4]; 3];
                 for k in 0..4 {
                     let (cx, cy) = (
@@ -351,10 +359,8 @@ impl Shape {
                         wj[k] = pwj / inv_w;
                     }
                 }
-                q
             }
             _ => {
-                let mut q = QuadInterp::default();
                 for k in 0..4 {
                     let it = self.interp(qx + (k as i64 & 1), qy + (k as i64 >> 1));
                     q.z[k] = it.z;
@@ -363,7 +369,6 @@ impl Shape {
                         q.weights[j][k] = it.weights[j];
                     }
                 }
-                q
             }
         }
     }

@@ -44,6 +44,7 @@ fn clamp01(z: f64) -> f64 {
     }
 }
 
+#[derive(Default)]
 pub(crate) struct Quad {
     x: i64,
     y: i64,
@@ -61,32 +62,45 @@ impl Quad {
         (self.x + (k as i64 & 1), self.y + (k as i64 >> 1))
     }
 
-    /// The quad at (qx, qy) of `prim` with coverage `mask`.
-    fn new(prim: &Prim, qx: i64, qy: i64, mask: u8) -> Quad {
-        let it = prim.shape.interp_quad(qx, qy);
-        Quad {
-            x: qx,
-            y: qy,
-            live: mask,
-            it,
-            z: it.z.map(|z| clamp01(z + prim.z_offset)),
+    /// Makes this the quad at (qx, qy) of `prim` with coverage `mask`.
+    fn set(&mut self, prim: &Prim, qx: i64, qy: i64, mask: u8) {
+        self.x = qx;
+        self.y = qy;
+        self.live = mask;
+        prim.shape.interp_quad_into(qx, qy, &mut self.it);
+        for (z, &iz) in self.z.iter_mut().zip(&self.it.z) {
+            *z = clamp01(iz + prim.z_offset);
         }
     }
 }
 
 /// A quad waiting for its batch: its primitive (and that primitive's
 /// index), and for the colour pass of a deferred tile the pixels to write.
+#[derive(Default)]
 pub(crate) struct Entry<'p> {
-    prim: &'p Prim,
+    prim: Option<&'p Prim>,
     index: u32,
     quad: Quad,
     write: u8,
 }
 
-/// Per-tile buffers reused by every primitive and batch of the tile.
+impl<'p> Entry<'p> {
+    /// Makes this the quad at (qx, qy) of primitive `index`, `prim`.
+    fn set(&mut self, prim: &'p Prim, index: u32, (qx, qy, mask): (i64, i64, u8), write: u8) {
+        self.prim = Some(prim);
+        self.index = index;
+        self.write = write;
+        self.quad.set(prim, qx, qy, mask);
+    }
+}
+
+/// Per-tile buffers reused by every primitive and batch of the tile: the
+/// batch, its quads (built in place, `n` of them so far) and a
+/// primitive's covered quads.
 pub(crate) struct Scratch<'p> {
     pub batch: Batch,
-    pending: Vec<Entry<'p>>,
+    slots: [Entry<'p>; LANES / 4],
+    n: usize,
     quads: Vec<(i64, i64, u8)>,
 }
 
@@ -215,7 +229,8 @@ impl<'a> FragmentStage<'a> {
     pub fn scratch<'p>(&self) -> Scratch<'p> {
         Scratch {
             batch: new_batch(self.layout.inputs, self.layout.outputs),
-            pending: Vec::with_capacity(LANES / 4),
+            slots: Default::default(),
+            n: 0,
             quads: Vec::new(),
         }
     }
@@ -232,33 +247,30 @@ impl<'a> FragmentStage<'a> {
         let origin = (tile.0.max(0) as u32, tile.1.max(0) as u32);
         let Scratch {
             batch,
-            pending,
+            slots,
+            n,
             quads,
         } = scratch;
-        pending.clear();
+        *n = 0;
         prim.shape.quads_into(clip_to(prim, tile), quads);
-        for &(qx, qy, mask) in quads.iter() {
-            let mut quad = Quad::new(prim, qx, qy, mask);
+        for &quad in quads.iter() {
+            let Some(e) = slots.get_mut(*n) else { break };
+            e.set(prim, 0, quad, 0);
             if self.early {
-                self.early_rejects(fb, origin, prim, &mut quad);
+                self.early_rejects(fb, origin, prim, &mut e.quad);
             }
-            if quad.live == 0 {
+            if e.quad.live == 0 {
                 continue;
             }
-            pending.push(Entry {
-                prim,
-                index: 0,
-                quad,
-                write: 0,
-            });
-            if pending.len() == LANES / 4 {
-                self.flush(fb, origin, prim, pending, batch)?;
-                pending.clear();
+            *n += 1;
+            if *n == LANES / 4 {
+                self.flush(fb, origin, prim, slots, batch)?;
+                *n = 0;
             }
         }
-        if !pending.is_empty() {
-            self.flush(fb, origin, prim, pending, batch)?;
-            pending.clear();
+        if *n > 0 {
+            self.flush(fb, origin, prim, &slots[..*n], batch)?;
+            *n = 0;
         }
         Ok(())
     }
@@ -280,8 +292,9 @@ impl<'a> FragmentStage<'a> {
             colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
         };
         for (q, e) in pending.iter().enumerate() {
+            let back = e.prim.is_some_and(|p| p.back);
             for k in 0..4 {
-                if self.fragment_into(batch, &e.quad, q, k, e.prim.back, &mut frag) {
+                if self.fragment_into(batch, &e.quad, q, k, back, &mut frag) {
                     fragment_ops::process(fb, origin, self.state, &frag);
                 }
             }
@@ -300,7 +313,7 @@ impl<'a> FragmentStage<'a> {
     pub fn shade_batched<'p>(
         &self,
         fb: &mut Framebuffer,
-        prims: &'p [Prim],
+        prims: &[&'p Prim],
         bin: &[u32],
         tile: PixelRect,
         scratch: &mut Scratch<'p>,
@@ -308,43 +321,41 @@ impl<'a> FragmentStage<'a> {
         let origin = (tile.0.max(0) as u32, tile.1.max(0) as u32);
         let Scratch {
             batch,
-            pending,
+            slots,
+            n,
             quads,
         } = scratch;
-        pending.clear();
-        let mut flush = |fb: &mut Framebuffer, pending: &mut Vec<Entry>| -> Result<(), ExecError> {
+        *n = 0;
+        let mut flush = |fb: &mut Framebuffer, pending: &[Entry]| -> Result<(), ExecError> {
             self.fill(batch, pending);
             self.run_shader(batch)?;
             self.write_batch(fb, origin, batch, pending);
-            pending.clear();
             Ok(())
         };
         for &p in bin {
-            let Some(prim) = prims.get(p as usize) else {
+            let Some(&prim) = prims.get(p as usize) else {
                 continue;
             };
             prim.shape.quads_into(clip_to(prim, tile), quads);
-            for &(qx, qy, mask) in quads.iter() {
-                let mut quad = Quad::new(prim, qx, qy, mask);
+            for &quad in quads.iter() {
+                let Some(e) = slots.get_mut(*n) else { break };
+                e.set(prim, p, quad, 0);
                 if self.early {
-                    self.early_rejects(fb, origin, prim, &mut quad);
+                    self.early_rejects(fb, origin, prim, &mut e.quad);
                 }
-                if quad.live == 0 {
+                if e.quad.live == 0 {
                     continue;
                 }
-                pending.push(Entry {
-                    prim,
-                    index: p,
-                    quad,
-                    write: 0,
-                });
-                if pending.len() == LANES / 4 {
-                    flush(fb, pending)?;
+                *n += 1;
+                if *n == LANES / 4 {
+                    flush(fb, slots)?;
+                    *n = 0;
                 }
             }
         }
-        if !pending.is_empty() {
-            flush(fb, pending)?;
+        if *n > 0 {
+            flush(fb, &slots[..*n])?;
+            *n = 0;
         }
         Ok(())
     }
@@ -442,7 +453,9 @@ impl<'a> FragmentStage<'a> {
             let constant = self.constant.get(li).copied().unwrap_or(false);
             let replace = self.replace.get(li).copied().flatten();
             for (e, lanes) in pending.iter().zip(dst.chunks_exact_mut(4)) {
-                let (prim, quad) = (e.prim, &e.quad);
+                let (Some(prim), quad) = (e.prim, &e.quad) else {
+                    continue;
+                };
                 let attr = |j: usize| {
                     self.attrs
                         .get(prim.attrs + j * links + li)
@@ -484,7 +497,9 @@ impl<'a> FragmentStage<'a> {
             return;
         }
         for (q, e) in pending.iter().enumerate() {
-            let (prim, quad) = (e.prim, &e.quad);
+            let (Some(prim), quad) = (e.prim, &e.quad) else {
+                continue;
+            };
             let pc = match prim.shape {
                 Shape::Point { .. } => point_coords(quad, prim),
                 _ => [(0.0, 0.0); 4],
@@ -661,7 +676,7 @@ impl<'a> FragmentStage<'a> {
         &self,
         depth: &dyn ShaderStage,
         fb: &mut Framebuffer,
-        prims: &'p [Prim],
+        prims: &[&'p Prim],
         bin: &[u32],
         tile: PixelRect,
         scratch: &mut Scratch<'p>,
@@ -670,15 +685,16 @@ impl<'a> FragmentStage<'a> {
         let (w, h) = (fb.width as usize, fb.height as usize);
         let Scratch {
             batch,
-            pending,
+            slots,
+            n,
             quads,
         } = scratch;
-        pending.clear();
+        *n = 0;
         // Per pixel: (winning primitive, its quad's coverage).
         let mut winner: Vec<(u32, u8)> = vec![(NO_PRIM, 0); w * h];
         let mut depth_pass = |fb: &mut Framebuffer,
                               winner: &mut Vec<(u32, u8)>,
-                              pending: &mut Vec<Entry>|
+                              pending: &[Entry]|
          -> Result<(), ExecError> {
             self.fill(batch, pending);
             self.run_depth(depth, batch)?;
@@ -703,7 +719,7 @@ impl<'a> FragmentStage<'a> {
                     frag.x = x as u32;
                     frag.y = y as u32;
                     frag.z = self.frag_z(batch, lane, quad, k);
-                    frag.back_facing = e.prim.back;
+                    frag.back_facing = e.prim.is_some_and(|p| p.back);
                     if let Some(index) = fragment_ops::tests(fb, origin, self.state, &frag) {
                         if let Some(slot) = winner.get_mut(index) {
                             *slot = (e.index, quad.live);
@@ -711,53 +727,49 @@ impl<'a> FragmentStage<'a> {
                     }
                 }
             }
-            pending.clear();
             Ok(())
         };
         for &p in bin {
-            let Some(prim) = prims.get(p as usize) else {
+            let Some(&prim) = prims.get(p as usize) else {
                 continue;
             };
             prim.shape.quads_into(clip_to(prim, tile), quads);
-            for &(qx, qy, mask) in quads.iter() {
-                pending.push(Entry {
-                    prim,
-                    index: p,
-                    quad: Quad::new(prim, qx, qy, mask),
-                    write: 0,
-                });
-                if pending.len() == LANES / 4 {
-                    depth_pass(fb, &mut winner, pending)?;
+            for &quad in quads.iter() {
+                let Some(e) = slots.get_mut(*n) else { break };
+                e.set(prim, p, quad, 0);
+                *n += 1;
+                if *n == LANES / 4 {
+                    depth_pass(fb, &mut winner, slots)?;
+                    *n = 0;
                 }
             }
         }
-        if !pending.is_empty() {
-            depth_pass(fb, &mut winner, pending)?;
+        if *n > 0 {
+            depth_pass(fb, &mut winner, &slots[..*n])?;
+            *n = 0;
         }
 
         // Pass 2: (primitive, quad, coverage, lanes to write) per winner.
-        let mut color_pass =
-            |fb: &mut Framebuffer, todo: &mut Vec<Entry>| -> Result<(), ExecError> {
-                self.fill(batch, todo);
-                self.run_shader(batch)?;
-                let mut colors = [[0.0; 4]; MAX_DRAW_BUFFERS];
-                for (q, e) in todo.iter().enumerate() {
-                    for k in 0..4 {
-                        let lane = 4 * q + k;
-                        if e.write & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
-                            continue;
-                        }
-                        let (x, y) = e.quad.pixel(k);
-                        let lx = x as usize - origin.0 as usize;
-                        let ly = y as usize - origin.1 as usize;
-                        let index = ly * w + lx;
-                        self.colors_into(batch, lane, &mut colors);
-                        fragment_ops::write_colors(fb, index, self.state, &colors);
+        let mut color_pass = |fb: &mut Framebuffer, todo: &[Entry]| -> Result<(), ExecError> {
+            self.fill(batch, todo);
+            self.run_shader(batch)?;
+            let mut colors = [[0.0; 4]; MAX_DRAW_BUFFERS];
+            for (q, e) in todo.iter().enumerate() {
+                for k in 0..4 {
+                    let lane = 4 * q + k;
+                    if e.write & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
+                        continue;
                     }
+                    let (x, y) = e.quad.pixel(k);
+                    let lx = x as usize - origin.0 as usize;
+                    let ly = y as usize - origin.1 as usize;
+                    let index = ly * w + lx;
+                    self.colors_into(batch, lane, &mut colors);
+                    fragment_ops::write_colors(fb, index, self.state, &colors);
                 }
-                todo.clear();
-                Ok(())
-            };
+            }
+            Ok(())
+        };
         for ly in (0..h).step_by(2) {
             for lx in (0..w).step_by(2) {
                 // The quad's pixels (lane order) and their winners.
@@ -781,24 +793,23 @@ impl<'a> FragmentStage<'a> {
                         }
                     }
                     done |= write;
-                    let Some(prim) = prims.get(p as usize) else {
+                    let Some(&prim) = prims.get(p as usize) else {
                         continue;
                     };
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
-                    pending.push(Entry {
-                        prim,
-                        index: p,
-                        quad: Quad::new(prim, qx, qy, live),
-                        write,
-                    });
-                    if pending.len() == LANES / 4 {
-                        color_pass(fb, pending)?;
+                    let Some(e) = slots.get_mut(*n) else { break };
+                    e.set(prim, p, (qx, qy, live), write);
+                    *n += 1;
+                    if *n == LANES / 4 {
+                        color_pass(fb, slots)?;
+                        *n = 0;
                     }
                 }
             }
         }
-        if !pending.is_empty() {
-            color_pass(fb, pending)?;
+        if *n > 0 {
+            color_pass(fb, &slots[..*n])?;
+            *n = 0;
         }
         Ok(())
     }
