@@ -436,6 +436,59 @@ mod tests {
         assert_eq!(pow(10.0, 10.0), 1e10);
     }
 
+    /// ns per call, scalar (each input through `black_box`, as in the
+    /// texture unit's LOD) and over arrays of 16 (as the executor calls
+    /// them), against `libm`'s `f32` routines: `cargo test --release -p
+    /// shaderbox-glsl bench_exp_log -- --ignored --nocapture`.
+    #[test]
+    #[ignore = "benchmark"]
+    fn bench_exp_log() {
+        use std::hint::black_box;
+        let mut rng = Rng(7);
+        let xs: Vec<[f32; 16]> = (0..4096)
+            .map(|_| core::array::from_fn(|_| rng.unit() * 8.0 + 0.01))
+            .collect();
+        fn time(name: &str, xs: &[[f32; 16]], f: impl Fn(f32, f32) -> f32) {
+            let mut best = [f64::MAX; 2];
+            for _ in 0..5 {
+                let t = std::time::Instant::now();
+                let mut acc = 0.0f32;
+                for v in xs {
+                    for &x in v {
+                        acc += f(black_box(x), black_box(0.7));
+                    }
+                }
+                black_box(acc);
+                best[0] = best[0].min(t.elapsed().as_secs_f64());
+                let t = std::time::Instant::now();
+                let mut out = [0f32; 16];
+                for v in xs {
+                    for (o, &x) in out.iter_mut().zip(v) {
+                        *o = f(x, 0.7);
+                    }
+                    black_box(&out);
+                }
+                best[1] = best[1].min(t.elapsed().as_secs_f64());
+            }
+            let n = (xs.len() * 16) as f64;
+            println!(
+                "{name:12} scalar {:5.1} ns, 16-lane loop {:5.1} ns per call",
+                best[0] / n * 1e9,
+                best[1] / n * 1e9
+            );
+        }
+        time("pow", &xs, pow);
+        time("libm powf", &xs, libm::powf);
+        time("exp2", &xs, |x, _| exp2(x));
+        time("libm exp2f", &xs, |x, _| libm::exp2f(x));
+        time("exp", &xs, |x, _| exp(x));
+        time("libm expf", &xs, |x, _| libm::expf(x));
+        time("log2", &xs, |x, _| log2(x));
+        time("libm log2f", &xs, |x, _| libm::log2f(x));
+        time("log", &xs, |x, _| log(x));
+        time("libm logf", &xs, |x, _| libm::logf(x));
+    }
+
     /// Every `f32` for the unary functions and 200 million `pow` pairs, on
     /// two threads: `cargo test --release -p shaderbox-glsl exhaustive --
     /// --ignored --nocapture` (about 10 CPU-minutes).
