@@ -22,7 +22,8 @@
 //! - `2^t`: `t = k + r` with `k` the nearest integer (the `1.5 · 2^52`
 //!   shifter, ties to even) and `|r| ≤ 1/2`; `2^r` is its Taylor polynomial
 //!   of degree 11 (coefficients `ln(2)^n / n!`, truncation error below
-//!   2^-47 relative), `2^k` is built in the exponent field. `t` is first
+//!   2^-47 relative, evaluated by Estrin's scheme for a short dependency
+//!   chain), `2^k` is built in the exponent field. `t` is first
 //!   clamped to ±200, past which every `f32` result is 0 or infinity.
 //! - `log(a)`: `a = 2^e · m` with `m` in [√½, √2) (integer arithmetic on the
 //!   bits, no branch); `ln(m) = 2 atanh(s)`, `s = (m - 1) / (m + 1)`,
@@ -80,12 +81,18 @@ pub(crate) fn exp2_f64(t: f64) -> f64 {
     let shifted = t + SHIFT;
     let k = shifted - SHIFT;
     let r = t - k; // exact, |r| <= 1/2
-    let mut p = EXP2_POLY[11];
-    let mut i = 11;
-    while i > 0 {
-        i -= 1;
-        p = p * r + EXP2_POLY[i];
-    }
+                   // Estrin's scheme: four dependent steps instead of Horner's eleven.
+    let c = &EXP2_POLY;
+    let r2 = r * r;
+    let r4 = r2 * r2;
+    let r8 = r4 * r4;
+    let q0 = c[0] + c[1] * r;
+    let q1 = c[2] + c[3] * r;
+    let q2 = c[4] + c[5] * r;
+    let q3 = c[6] + c[7] * r;
+    let q4 = c[8] + c[9] * r;
+    let q5 = c[10] + c[11] * r;
+    let p = (q0 + q1 * r2) + (q2 + q3 * r2) * r4 + (q4 + q5 * r2) * r8;
     // The low bits of `shifted` are 2^51 + k; adding 1023 and keeping 12
     // bits gives the biased exponent of 2^k (k + 1023 in [823, 1223]).
     let scale = f64::from_bits(shifted.to_bits().wrapping_add(1023) << 52);
@@ -107,12 +114,17 @@ fn log_parts(a: f64) -> (f64, f64) {
     let e = f64::from_bits(0x4330_0000_0000_0000 | eb) - (4_503_599_627_370_496.0 + 1023.0);
     let s = (m - 1.0) / (m + 1.0);
     let z = s * s;
-    let mut p = ATANH_POLY[9];
-    let mut i = 9;
-    while i > 0 {
-        i -= 1;
-        p = p * z + ATANH_POLY[i];
-    }
+    // Estrin's scheme, as in exp2_f64.
+    let c = &ATANH_POLY;
+    let z2 = z * z;
+    let z4 = z2 * z2;
+    let z8 = z4 * z4;
+    let q0 = c[0] + c[1] * z;
+    let q1 = c[2] + c[3] * z;
+    let q2 = c[4] + c[5] * z;
+    let q3 = c[6] + c[7] * z;
+    let q4 = c[8] + c[9] * z;
+    let p = (q0 + q1 * z2) + (q2 + q3 * z2) * z4 + q4 * z8;
     (e, 2.0 * s * p)
 }
 
