@@ -419,11 +419,11 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
 
 // ---- running -----------------------------------------------------------
 
-type Lanes = [u32; LANES];
+pub(crate) type Lanes = [u32; LANES];
 
 thread_local! {
     /// The register file, reused across runs on this thread.
-    static FILE: RefCell<Vec<Lanes>> = const { RefCell::new(Vec::new()) };
+    pub(crate) static FILE: RefCell<Vec<Lanes>> = const { RefCell::new(Vec::new()) };
 }
 
 #[inline(always)]
@@ -455,7 +455,7 @@ fn lanes(mut g: impl FnMut(usize) -> u32) -> Lanes {
 
 /// Per-lane all-ones where `cur` has the lane.
 #[inline(always)]
-fn expand(cur: LaneMask) -> Lanes {
+pub(crate) fn expand(cur: LaneMask) -> Lanes {
     lanes(|l| 0u32.wrapping_sub((cur >> l) & 1))
 }
 
@@ -472,7 +472,7 @@ pub(crate) fn prepare(code: &Code, uniforms: &[u32]) -> Vec<Lanes> {
 /// # Safety
 /// `regs` must point to `code.prog.registers` registers.
 #[inline(always)]
-unsafe fn prologue(code: &Code, regs: *mut Lanes, uniforms: &[u32]) {
+pub(crate) unsafe fn prologue(code: &Code, regs: *mut Lanes, uniforms: &[u32]) {
     let mut masks = [0 as LaneMask; 0];
     let mut ret = [0u32; 0];
     let mut discarded = 0;
@@ -550,6 +550,17 @@ pub(crate) fn run_on(
     } else {
         crate::Variant::Portable
     };
+    // Native code when the kernel has it (compiled on demand), else the
+    // best interpreter.
+    #[cfg(feature = "jit")]
+    let native = match variant {
+        crate::Variant::Jit => k.jit.get(code, false),
+        _ => None,
+    };
+    let variant = match variant {
+        crate::Variant::Jit => crate::variant::best_interpreter(),
+        v => v,
+    };
     FILE.with(|cell| {
         // A textures implementation that runs a kernel on this thread
         // finds the file borrowed: it then gets its own.
@@ -565,6 +576,10 @@ pub(crate) fn run_on(
                 &mut own
             }
         };
+        #[cfg(feature = "jit")]
+        if let Some(n) = native {
+            return crate::jit::run(n, k, code, file, batch, uniforms, textures, pool);
+        }
         match variant {
             #[cfg(target_arch = "x86_64")]
             crate::Variant::Avx512 => {
@@ -630,37 +645,14 @@ fn run_in(
     textures: &dyn Textures,
     pool: Option<&[Lanes]>,
 ) -> Result<(), ExecError> {
-    let nregs = code.prog.registers as usize;
-    if file.len() < nregs {
-        file.resize(nregs, [0; LANES]);
-    }
-    let regs = file.as_mut_ptr();
-    for &r in &code.zero {
-        file[r as usize] = [0; LANES];
-    }
-    for &(reg, bits) in &code.prog.init {
-        if let Some(x) = file.get_mut(reg as usize) {
-            *x = [bits; LANES];
-        }
-    }
-    for &(ic, reg, kind) in &k.inputs {
-        let src = batch.inputs.get(ic).copied().unwrap_or([0.0; LANES]);
-        if let Some(x) = file.get_mut(reg as usize) {
-            *x = lanes(|l| match kind {
-                Scalar::Float => src[l].to_bits(),
-                Scalar::Int => src[l] as i32 as u32,
-                Scalar::Bool => (src[l] != 0.0) as u32,
-            });
-        }
-    }
-    let pool_len = nregs - code.pool_base as usize;
-    match pool {
-        Some(values) if values.len() == pool_len => {
-            file[code.pool_base as usize..nregs].copy_from_slice(values);
-        }
-        // SAFETY: the file has `nregs` registers.
-        _ => unsafe { prologue(code, regs, uniforms) },
-    }
+    let regs = if load(k, code, file, batch, pool) {
+        let regs = file.as_mut_ptr();
+        // SAFETY: `load` gave the file `code.prog.registers` registers.
+        unsafe { prologue(code, regs, uniforms) };
+        regs
+    } else {
+        file.as_mut_ptr()
+    };
 
     let mut masks = vec![0 as LaneMask; code.prog.mask_slots as usize];
     let mut ret = vec![0u32; code.prog.subroutines as usize];
@@ -694,7 +686,57 @@ fn run_in(
         };
     }
     batch.discarded = discarded;
+    store_outputs(k, file, batch);
+    Ok(())
+}
 
+/// Prepares `file` for a run of `code`: at least `code.prog.registers`
+/// registers, the live-at-entry ones zeroed, initializers, inputs, and the
+/// pool from `pool` when it fits. Returns whether the prologue still has to
+/// fill the pool.
+pub(crate) fn load(
+    k: &Kernel,
+    code: &Code,
+    file: &mut Vec<Lanes>,
+    batch: &Batch,
+    pool: Option<&[Lanes]>,
+) -> bool {
+    let nregs = code.prog.registers as usize;
+    if file.len() < nregs {
+        file.resize(nregs, [0; LANES]);
+    }
+    for &r in &code.zero {
+        if let Some(x) = file.get_mut(r as usize) {
+            *x = [0; LANES];
+        }
+    }
+    for &(reg, bits) in &code.prog.init {
+        if let Some(x) = file.get_mut(reg as usize) {
+            *x = [bits; LANES];
+        }
+    }
+    for &(ic, reg, kind) in &k.inputs {
+        let src = batch.inputs.get(ic).copied().unwrap_or([0.0; LANES]);
+        if let Some(x) = file.get_mut(reg as usize) {
+            *x = lanes(|l| match kind {
+                Scalar::Float => src[l].to_bits(),
+                Scalar::Int => src[l] as i32 as u32,
+                Scalar::Bool => (src[l] != 0.0) as u32,
+            });
+        }
+    }
+    let pool_len = nregs - code.pool_base as usize;
+    match pool {
+        Some(values) if values.len() == pool_len => {
+            file[code.pool_base as usize..nregs].copy_from_slice(values);
+            false
+        }
+        _ => true,
+    }
+}
+
+/// Copies the output registers of the active lanes into `batch.outputs`.
+pub(crate) fn store_outputs(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
     let active = batch.active & FULL;
     if batch.outputs.len() < k.interface.output_components {
         batch
@@ -717,7 +759,38 @@ fn run_in(
             }
         }
     }
-    Ok(())
+}
+
+/// Runs one data instruction (no jump, no mask change, no loop count) on
+/// the lanes of `cur`: what native code calls for the ops it does not
+/// compile itself, so they compute what the interpreter computes by
+/// construction.
+///
+/// # Safety
+/// As for [`step`]: `regs` must point to `code.prog.registers` registers
+/// and `i` must be an instruction of `code.ins` or `code.prologue`.
+pub(crate) unsafe fn step_data(
+    code: &Code,
+    regs: *mut Lanes,
+    i: &Ins,
+    cur: LaneMask,
+    uniforms: &[u32],
+    textures: &dyn Textures,
+) {
+    let mut masks = [0 as LaneMask; 0];
+    let mut ret = [0u32; 0];
+    let mut discarded = 0;
+    let mut iterations = 0;
+    let mut st = State {
+        cur,
+        mk: expand(cur),
+        masks: &mut masks,
+        ret: &mut ret,
+        discarded: &mut discarded,
+        iterations: &mut iterations,
+    };
+    // Data ops never jump or fail (the budget is not consulted).
+    let _ = step(code, regs, i, 0, &mut st, uniforms, textures, u64::MAX);
 }
 
 /// Executes one instruction; returns the next pc.
@@ -1040,7 +1113,7 @@ macro_rules! lane_loop {
 }
 
 #[inline(always)]
-fn f1(func: F1, a: &Lanes) -> Lanes {
+pub(crate) fn f1(func: F1, a: &Lanes) -> Lanes {
     macro_rules! each {
         (|$x:ident| $body:expr) => {
             lanes(|l| {
@@ -1074,7 +1147,7 @@ fn f1(func: F1, a: &Lanes) -> Lanes {
 }
 
 #[inline(always)]
-fn f2(func: F2, a: &Lanes, b: &Lanes) -> Lanes {
+pub(crate) fn f2(func: F2, a: &Lanes, b: &Lanes) -> Lanes {
     macro_rules! each {
         (|$x:ident, $y:ident| $body:expr) => {
             lanes(|l| {

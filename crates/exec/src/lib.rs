@@ -126,6 +126,8 @@ mod depth_slice;
 mod engine;
 mod interface;
 mod interp;
+#[cfg(feature = "jit")]
+mod jit;
 mod liveness;
 mod lower;
 mod program;
@@ -276,6 +278,9 @@ pub struct Kernel {
     code: std::sync::Arc<engine::Code>,
     /// [`Kernel::depth_only`], computed on first use (shared by clones).
     depth: std::sync::Arc<std::sync::OnceLock<Option<Kernel>>>,
+    /// Native code for `code`, made on demand (shared by clones).
+    #[cfg(feature = "jit")]
+    jit: std::sync::Arc<jit::Cache>,
 }
 
 /// A kernel's uniform-only values, computed once for a set of uniform
@@ -330,6 +335,8 @@ impl Kernel {
             loop_budget,
             code,
             depth: Default::default(),
+            #[cfg(feature = "jit")]
+            jit: Default::default(),
         }
     }
 
@@ -396,6 +403,11 @@ impl Kernel {
         uniforms: &[u32],
         textures: &dyn Textures,
     ) -> Result<(), ExecError> {
+        #[cfg(feature = "jit")]
+        if v == Variant::Jit {
+            // Compile now rather than after a few runs.
+            self.jit.get(&self.code, true);
+        }
         engine::run_on(v, self, &self.code, batch, uniforms, textures, None)
     }
 
@@ -518,6 +530,30 @@ impl Kernel {
     ) -> Result<(), ExecError> {
         let mut hook = interp::WatchHook { first, out };
         interp::run(self, batch, uniforms, textures, &mut hook)
+    }
+
+    /// The state of this kernel's native code (the `jit` variant):
+    /// `None` before it was compiled (a kernel is compiled on its 32nd
+    /// run, or never with another variant), `Some(Ok(bytes))` once it runs
+    /// as machine code of that size, `Some(Err(reason))` when it stays on
+    /// the interpreter (subroutine calls, size, a CPU or code generator
+    /// failure), or always `Some(Err(..))` in a build without the `jit`
+    /// feature.
+    pub fn native_code(&self) -> Option<Result<usize, String>> {
+        #[cfg(feature = "jit")]
+        return self.jit.status();
+        #[cfg(not(feature = "jit"))]
+        Some(Err("built without the `jit` feature".to_string()))
+    }
+
+    /// Compiles this kernel's native code now if the `jit` variant is
+    /// selected and it was not yet (normally done on demand); see
+    /// [`Kernel::native_code`].
+    pub fn compile_native(&self) {
+        #[cfg(feature = "jit")]
+        if kernel_variant() == Variant::Jit {
+            self.jit.get(&self.code, true);
+        }
     }
 
     /// Whether the shader calls `debugPrintfEXT`.

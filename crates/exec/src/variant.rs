@@ -1,7 +1,8 @@
-//! Which compiled variant of the executor runs: the same interpreter built
-//! for the baseline instruction set, for AVX2 or for AVX-512, chosen once
-//! per process from the CPU (`is_x86_feature_detected!`) and the
-//! environment variable `SHADERBOX_KERNEL=portable|avx2|avx512`. Every
+//! Which variant of the executor runs: the same interpreter built for the
+//! baseline instruction set, for AVX2 or for AVX-512, or native code
+//! generated per kernel (`jit`), chosen once per process from the CPU
+//! (`is_x86_feature_detected!`, whether Cranelift supports it) and the
+//! environment variable `SHADERBOX_KERNEL=jit|portable|avx2|avx512`. Every
 //! variant computes the same bits (tests compare them); only speed differs.
 
 use std::sync::atomic::{AtomicU8, Ordering};
@@ -15,6 +16,9 @@ pub enum Variant {
     Avx2,
     /// x86-64 with AVX-512 F/BW/DQ/VL.
     Avx512,
+    /// Native code per kernel (the `jit` module); kernels it does not
+    /// compile, and runs before compilation, use the best interpreter.
+    Jit,
 }
 
 impl Variant {
@@ -23,6 +27,7 @@ impl Variant {
             Variant::Portable => "portable",
             Variant::Avx2 => "avx2",
             Variant::Avx512 => "avx512",
+            Variant::Jit => "jit",
         }
     }
 
@@ -31,6 +36,7 @@ impl Variant {
             Variant::Portable => 1,
             Variant::Avx2 => 2,
             Variant::Avx512 => 3,
+            Variant::Jit => 4,
         }
     }
 
@@ -38,6 +44,8 @@ impl Variant {
     pub fn supported(self) -> bool {
         match self {
             Variant::Portable => true,
+            #[cfg(feature = "jit")]
+            Variant::Jit => crate::jit::supported(),
             #[cfg(target_arch = "x86_64")]
             Variant::Avx2 => std::is_x86_feature_detected!("avx2"),
             #[cfg(target_arch = "x86_64")]
@@ -56,25 +64,29 @@ impl Variant {
 
 /// Every variant this CPU supports, the portable one first.
 pub fn supported_variants() -> Vec<Variant> {
-    [Variant::Portable, Variant::Avx2, Variant::Avx512]
-        .into_iter()
-        .filter(|v| v.supported())
-        .collect()
+    [
+        Variant::Portable,
+        Variant::Avx2,
+        Variant::Avx512,
+        Variant::Jit,
+    ]
+    .into_iter()
+    .filter(|v| v.supported())
+    .collect()
 }
 
 static CURRENT: AtomicU8 = AtomicU8::new(0);
 
 /// The variant `run` uses: set by [`set_variant`], else chosen on first use
 /// from `SHADERBOX_KERNEL` (ignored, with a message on stderr, when it
-/// names an unknown or unsupported variant), else AVX2 when the CPU has it
-/// (measured no slower than AVX-512 on a Xeon with both: 16 lanes of `f32`
-/// are two AVX2 registers, and 512-bit code lowers the clock), else
-/// portable.
+/// names an unknown or unsupported variant), else `jit` when Cranelift
+/// supports the CPU, else [`best_interpreter`].
 pub fn current() -> Variant {
     match CURRENT.load(Ordering::Relaxed) {
         1 => Variant::Portable,
         2 => Variant::Avx2,
         3 => Variant::Avx512,
+        4 => Variant::Jit,
         _ => {
             let v = choose();
             CURRENT.store(v.code(), Ordering::Relaxed);
@@ -105,11 +117,23 @@ fn names() -> String {
         .join(", ")
 }
 
-fn choose() -> Variant {
-    let best = if Variant::Avx2.supported() {
+/// The interpreter `jit` falls back to: AVX2 when the CPU has it
+/// (measured no slower than AVX-512 on a Xeon with both: 16 lanes of `f32`
+/// are two AVX2 registers, and 512-bit code lowers the clock), else
+/// portable.
+pub(crate) fn best_interpreter() -> Variant {
+    if Variant::Avx2.supported() {
         Variant::Avx2
     } else {
         Variant::Portable
+    }
+}
+
+fn choose() -> Variant {
+    let best = if Variant::Jit.supported() {
+        Variant::Jit
+    } else {
+        best_interpreter()
     };
     match std::env::var("SHADERBOX_KERNEL") {
         Ok(s) if !s.is_empty() => {
@@ -117,6 +141,7 @@ fn choose() -> Variant {
                 "portable" => Some(Variant::Portable),
                 "avx2" => Some(Variant::Avx2),
                 "avx512" => Some(Variant::Avx512),
+                "jit" => Some(Variant::Jit),
                 _ => None,
             };
             match want {

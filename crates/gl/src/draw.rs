@@ -172,9 +172,114 @@ pub(crate) struct Fetcher<'a> {
     pub(crate) ctx: &'a Context,
     pub(crate) slots: Vec<Option<AttribSource>>,
     pub(crate) immediate: Option<&'a [ImmVertex]>,
+    /// Per slot, per column (one for non-matrix slots): the attribute's
+    /// array or current value, resolved once per draw (array draws only).
+    resolved: Vec<Vec<ResolvedAttrib>>,
 }
 
-impl Fetcher<'_> {
+/// Where one attribute's values come from during a draw.
+enum ResolvedAttrib {
+    /// Every vertex reads this value (the array is disabled: the current
+    /// value; or enabled without bytes: the defaults).
+    Value([f32; 4]),
+    /// An enabled array.
+    Array {
+        bytes: std::sync::Arc<[u8]>,
+        base: usize,
+        stride: usize,
+        size: usize,
+        ty: u32,
+        normalized: bool,
+    },
+}
+
+impl ResolvedAttrib {
+    fn new(ctx: &Context, src: AttribSource) -> ResolvedAttrib {
+        let Some(a) = ctx.va.array_for(src) else {
+            return ResolvedAttrib::Value(ctx.va.current_value(src));
+        };
+        let Some((bytes, base)) = ctx.array_bytes(a) else {
+            return ResolvedAttrib::Value([0.0, 0.0, 0.0, 1.0]);
+        };
+        let cs = crate::vertex::type_size(a.ty).unwrap_or(4);
+        let size = a.size.max(1) as usize;
+        ResolvedAttrib::Array {
+            bytes,
+            base,
+            stride: if a.stride > 0 {
+                a.stride as usize
+            } else {
+                cs * size
+            },
+            size,
+            ty: a.ty,
+            normalized: a.normalized,
+        }
+    }
+
+    /// What `Context::fetch_attrib` gives for element `index`: float
+    /// arrays read directly, other types through `read_element`.
+    fn read(&self, index: u32) -> [f32; 4] {
+        match self {
+            ResolvedAttrib::Value(v) => *v,
+            ResolvedAttrib::Array {
+                bytes,
+                base,
+                stride,
+                size,
+                ty,
+                normalized,
+            } => {
+                let at = base.saturating_add(stride.saturating_mul(index as usize));
+                if *ty != GL_FLOAT {
+                    return crate::vertex::read_element(bytes, at, *size, *ty, *normalized);
+                }
+                let n = (*size).min(4);
+                let Some(b) = bytes.get(at..at.saturating_add(4 * n)) else {
+                    return [0.0, 0.0, 0.0, 1.0];
+                };
+                let mut out = [0.0, 0.0, 0.0, 1.0];
+                for (o, c) in out.iter_mut().zip(b.chunks_exact(4)) {
+                    *o = f32::from_le_bytes([c[0], c[1], c[2], c[3]]);
+                }
+                out
+            }
+        }
+    }
+}
+
+impl<'a> Fetcher<'a> {
+    /// The fetcher of a draw from arrays (`immediate: None`) or from
+    /// glBegin/glEnd vertices.
+    pub(crate) fn new(
+        ctx: &'a Context,
+        slots: Vec<Option<AttribSource>>,
+        immediate: Option<&'a [ImmVertex]>,
+    ) -> Fetcher<'a> {
+        let resolved = if immediate.is_some() {
+            Vec::new()
+        } else {
+            slots
+                .iter()
+                .map(|s| match s {
+                    // Matrix attributes take a location per column.
+                    Some(AttribSource::Generic(l)) => (*l as usize..crate::MAX_VERTEX_ATTRIBS)
+                        .take(4)
+                        .map(|loc| ResolvedAttrib::new(ctx, AttribSource::Generic(loc as u8)))
+                        .collect(),
+                    Some(src) => vec![ResolvedAttrib::new(ctx, *src)],
+                    None => Vec::new(),
+                })
+                .collect()
+        };
+        Fetcher {
+            ctx,
+            slots,
+            immediate,
+            resolved,
+        }
+    }
+
     fn value(&self, src: AttribSource, index: u32) -> [f32; 4] {
         match self.immediate {
             Some(v) => v
@@ -188,9 +293,7 @@ impl Fetcher<'_> {
 
 impl raster::VertexFetch for Fetcher<'_> {
     fn fetch(&self, input_slot: usize, vertex_index: u32, out: &mut [f32; 4]) {
-        if let Some(Some(src)) = self.slots.get(input_slot) {
-            *out = self.value(*src, vertex_index);
-        }
+        self.fetch_column(input_slot, 0, vertex_index, out);
     }
 
     fn fetch_column(
@@ -200,6 +303,12 @@ impl raster::VertexFetch for Fetcher<'_> {
         vertex_index: u32,
         out: &mut [f32; 4],
     ) {
+        if self.immediate.is_none() {
+            if let Some(r) = self.resolved.get(input_slot).and_then(|c| c.get(column)) {
+                *out = r.read(vertex_index);
+            }
+            return;
+        }
         match self.slots.get(input_slot) {
             Some(Some(AttribSource::Generic(l))) => {
                 let loc = *l as usize + column;
@@ -640,11 +749,7 @@ impl Context {
             return;
         };
         let state = self.pipeline_state(target.draw_buffers);
-        let fetch = Fetcher {
-            ctx: self,
-            slots: self.input_sources(&vs),
-            immediate,
-        };
+        let fetch = Fetcher::new(self, self.input_sources(&vs), immediate);
         let replay = raster::Replay {
             state: &state,
             vs: &vs,
@@ -1193,22 +1298,30 @@ fn encode(v: f32, ty: u32, index: bool, dst: &mut [u8]) {
         let c = if v.is_nan() { 0.0 } else { c };
         (c * max).round() as i64
     };
-    let bytes: Vec<u8> = match ty {
-        GL_FLOAT => v.to_le_bytes().to_vec(),
-        _ if index => {
-            let i = v as i64;
-            i.to_le_bytes()[..dst.len()].to_vec()
-        }
-        GL_UNSIGNED_BYTE => vec![unorm(255.0) as u8],
-        GL_BYTE => vec![snorm(127.0) as i8 as u8],
-        GL_UNSIGNED_SHORT => (unorm(65535.0) as u16).to_le_bytes().to_vec(),
-        GL_SHORT => (snorm(32767.0) as i16).to_le_bytes().to_vec(),
-        GL_UNSIGNED_INT => (unorm(4294967295.0) as u32).to_le_bytes().to_vec(),
-        GL_INT => (snorm(2147483647.0) as i32).to_le_bytes().to_vec(),
-        _ => vec![0; dst.len()],
+    // Little-endian bytes of the converted value, `n` of them (no
+    // allocation: this runs per component of every pixel read).
+    let mut bytes = [0u8; 8];
+    let mut put = |b: &[u8]| {
+        let n = b.len().min(8);
+        bytes[..n].copy_from_slice(&b[..n]);
+        n
     };
-    for (d, s) in dst.iter_mut().zip(bytes) {
-        *d = s;
+    let n = match ty {
+        GL_FLOAT => put(&v.to_le_bytes()),
+        _ if index => put(&(v as i64).to_le_bytes()).min(dst.len()),
+        GL_UNSIGNED_BYTE => put(&[unorm(255.0) as u8]),
+        GL_BYTE => put(&[snorm(127.0) as i8 as u8]),
+        GL_UNSIGNED_SHORT => put(&(unorm(65535.0) as u16).to_le_bytes()),
+        GL_SHORT => put(&(snorm(32767.0) as i16).to_le_bytes()),
+        GL_UNSIGNED_INT => put(&(unorm(4294967295.0) as u32).to_le_bytes()),
+        GL_INT => put(&(snorm(2147483647.0) as i32).to_le_bytes()),
+        _ => {
+            dst.fill(0);
+            return;
+        }
+    };
+    for (d, s) in dst.iter_mut().zip(&bytes[..n]) {
+        *d = *s;
     }
 }
 

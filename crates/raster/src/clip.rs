@@ -38,7 +38,12 @@ impl Planes {
 
     /// Signed distance of `v` to plane `p` (inside when >= 0; NaN is outside).
     fn distance(&self, p: usize, v: &ClipVertex) -> f32 {
-        let [x, y, z, w] = v.pos;
+        self.distance_of(p, &v.pos, &v.eye)
+    }
+
+    /// [`Planes::distance`] of a vertex at `pos` (eye-space `eye`).
+    fn distance_of(&self, p: usize, pos: &[f32; 4], eye: &[f32; 4]) -> f32 {
+        let [x, y, z, w] = *pos;
         match p {
             0 => w + x,
             1 => w - x,
@@ -47,9 +52,7 @@ impl Planes {
             4 => w + z,
             5 => w - z,
             _ => match self.user.get(p - VIEW_PLANES) {
-                Some(pl) => {
-                    pl[0] * v.eye[0] + pl[1] * v.eye[1] + pl[2] * v.eye[2] + pl[3] * v.eye[3]
-                }
+                Some(pl) => pl[0] * eye[0] + pl[1] * eye[1] + pl[2] * eye[2] + pl[3] * eye[3],
                 None => 0.0,
             },
         }
@@ -57,9 +60,15 @@ impl Planes {
 
     /// Bit p set when `v` is outside plane p.
     fn outcode(&self, v: &ClipVertex) -> u32 {
+        self.outcode_of(&v.pos, &v.eye)
+    }
+
+    /// [`Planes::outcode`] of a vertex at `pos` (eye-space `eye`): 0 when
+    /// inside every plane.
+    pub fn outcode_of(&self, pos: &[f32; 4], eye: &[f32; 4]) -> u32 {
         let mut code = 0;
         for p in 0..self.count() {
-            if !inside(self.distance(p, v)) {
+            if !inside(self.distance_of(p, pos, eye)) {
                 code |= 1 << p;
             }
         }

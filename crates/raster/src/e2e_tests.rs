@@ -600,14 +600,15 @@ impl crate::ShaderStage for Straightforward<'_> {
 /// Overlapping sphere impostors (quads whose fragment shader ray-casts a
 /// sphere, writes gl_FragDepth and uses derivatives) over several tiles,
 /// drawn with `fs` as given (colors only for visible fragments) or
-/// through [`Straightforward`]; returns color and depth bytes.
+/// through [`Straightforward`]; returns color and depth bytes and the
+/// samples that passed the depth test (an occlusion query's count).
 fn impostors(
     workers: &crate::Workers,
     discard: bool,
     deferred: bool,
     spheres: usize,
     state_change: impl Fn(&mut PipelineState),
-) -> (Vec<[u8; 4]>, Vec<f32>) {
+) -> (Vec<[u8; 4]>, Vec<f32>, u64) {
     let (vs, fs) = program(
         "attribute vec4 pos; attribute vec4 sph; varying vec4 s;\n\
          void main() { gl_Position = pos; s = sph; }",
@@ -705,7 +706,11 @@ fn impostors(
         &tex,
     )
     .unwrap();
-    (fb.read_pixels_u8(0, 0, 0, w, h), fb.read_depth(0, 0, w, h))
+    (
+        fb.read_pixels_u8(0, 0, 0, w, h),
+        fb.read_depth(0, 0, w, h),
+        fb.samples_passed,
+    )
 }
 
 #[test]
@@ -724,7 +729,14 @@ fn colors_for_visible_fragments_only_give_the_same_bytes() {
                 want.1 == got.1,
                 "depth, discard {discard}, {threads} threads"
             );
+            // The depth-only pass and the colour pass count each passing
+            // fragment once, as the straightforward path does.
+            assert_eq!(
+                want.2, got.2,
+                "samples passed, discard {discard}, {threads} threads"
+            );
         }
+        assert!(want.2 > 0);
     }
     // Other depth functions, no depth writes, no depth test, color masks:
     // the last fragment to pass still decides the pixel.

@@ -2,7 +2,7 @@
 //! alpha test, stencil test, depth test, blending, (dithering: off),
 //! logic op, then the masked write to each draw buffer.
 
-use crate::framebuffer::{depth_to_fixed, float_to_unorm8, unorm8_to_float, ColorBuffer};
+use crate::framebuffer::{depth_to_fixed, float_to_unorm8, ColorBuffer};
 use crate::framebuffer::{Framebuffer, MAX_DRAW_BUFFERS};
 use crate::state::{Blend, BlendEquation, BlendFactor, PipelineState, StencilFace, StencilOp};
 
@@ -153,12 +153,16 @@ pub(crate) fn tests(
     }
 
     // §4.1.5 stencil test and §4.1.6 depth test.
-    let zf = depth_to_fixed(frag.z);
-    let face = if fb.stencil.is_some() {
-        stencil_face(state, frag.back_facing)
-    } else {
-        None
+    let face = match fb.stencil {
+        Some(_) => stencil_face(state, frag.back_facing),
+        None => None,
     };
+    if face.is_none() && (state.depth_test.is_none() || fb.depth.is_none()) {
+        // Neither test applies: the fragment passes (the common case of
+        // 2D and blended drawing, without the tests' loads).
+        fb.samples_passed = fb.samples_passed.wrapping_add(1);
+        return Some(index);
+    }
     let stored_stencil = fb
         .stencil
         .as_ref()
@@ -174,6 +178,7 @@ pub(crate) fn tests(
     let depth_pass = match (state.depth_test, fb.depth.as_mut()) {
         (Some(func), Some(d)) => match d.get_mut(index) {
             Some(stored) => {
+                let zf = depth_to_fixed(frag.z);
                 let pass = func.test(zf, *stored);
                 if pass && state.depth_mask {
                     *stored = zf;
@@ -257,14 +262,19 @@ fn write_color(buf: &mut ColorBuffer, index: usize, state: &PipelineState, src: 
                 let sb = s.map(float_to_unorm8);
                 std::array::from_fn(|c| op.apply(sb[c], p[c]))
             } else if let Some(blend) = &state.blend {
-                let d = p.map(unorm8_to_float);
-                blend_color(blend, s, d).map(float_to_unorm8)
+                // `unorm8_to_float`, four at a time.
+                let d = p.map(|b| b as f32 / 255.0);
+                to_unorm8(blend_unit(blend, s, d))
             } else {
-                s.map(float_to_unorm8)
+                to_unorm8(s)
             };
-            for c in 0..4 {
-                if mask[c] {
-                    p[c] = out[c];
+            if mask == [true; 4] {
+                *p = out;
+            } else {
+                for c in 0..4 {
+                    if mask[c] {
+                        p[c] = out[c];
+                    }
                 }
             }
         }
@@ -287,6 +297,47 @@ fn write_color(buf: &mut ColorBuffer, index: usize, state: &PipelineState, src: 
             }
         }
     }
+}
+
+/// `float_to_unorm8` of four channels, branch-free so that it vectorizes:
+/// NaN and values ≤ 0 give 0, values ≥ 1 give 255.
+#[inline(always)]
+// Not `clamp`: NaN must become 0 (`max` drops it; `clamp` keeps it).
+#[allow(clippy::manual_clamp)]
+fn to_unorm8(c: [f32; 4]) -> [u8; 4] {
+    c.map(|x| (x.max(0.0).min(1.0) * 255.0 + 0.5) as i32 as u8)
+}
+
+/// [`blend_color`] for `s` and `d` in [0, 1] (a fixed-point buffer's
+/// clamped source and stored destination): the common factor pairs with
+/// FUNC_ADD (SRC_ALPHA / ONE_MINUS_SRC_ALPHA, ONE / ZERO, ONE / ONE, the
+/// same for colour and alpha) as straight-line code giving the same bits,
+/// the rest through [`blend_color`]. (With values in [0, 1], `x · 1 = x`,
+/// `x · 0 = +0` and `x + 0 = x` exactly.)
+#[inline]
+fn blend_unit(b: &Blend, s: [f32; 4], d: [f32; 4]) -> [f32; 4] {
+    use BlendFactor::{One, OneMinusSrcAlpha, SrcAlpha, Zero};
+    if b.equation_rgb == BlendEquation::Add
+        && b.equation_alpha == BlendEquation::Add
+        && b.src_rgb == b.src_alpha
+        && b.dst_rgb == b.dst_alpha
+    {
+        match (b.src_rgb, b.dst_rgb) {
+            (SrcAlpha, OneMinusSrcAlpha) => {
+                let (fs, fd) = (s[3], 1.0 - s[3]);
+                return [
+                    s[0] * fs + d[0] * fd,
+                    s[1] * fs + d[1] * fd,
+                    s[2] * fs + d[2] * fd,
+                    s[3] * fs + d[3] * fd,
+                ];
+            }
+            (One, Zero) => return s,
+            (One, One) => return [s[0] + d[0], s[1] + d[1], s[2] + d[2], s[3] + d[3]],
+            _ => {}
+        }
+    }
+    blend_color(b, s, d)
 }
 
 /// GL 2.1 §4.1.8 blend of source `s` over destination `d`
@@ -434,6 +485,64 @@ mod tests {
         assert_eq!(min, [0.2, 0.25, 0.6, 0.75]);
         let max = blend_color(&b(Max, Min), s, d);
         assert_eq!(max, [0.5, 0.4, 1.0, 0.1]);
+    }
+
+    #[test]
+    fn four_channel_conversions_match() {
+        use crate::framebuffer::unorm8_to_float;
+        for k in 0..=255u8 {
+            assert_eq!((k as f32 / 255.0).to_bits(), unorm8_to_float(k).to_bits());
+        }
+        let mut values = vec![0.0f32, -0.0, 1.0, 2.0, -1.0, f32::NAN, f32::INFINITY];
+        values.extend([f32::NEG_INFINITY, 0.5 / 255.0, 1.5 / 255.0, 254.5 / 255.0]);
+        let mut bits = 17u32;
+        for _ in 0..200_000 {
+            bits = bits.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            values.push(f32::from_bits(bits));
+            values.push((bits >> 8) as f32 / 16_777_216.0 * 1.2 - 0.1);
+        }
+        for x in values {
+            assert_eq!(to_unorm8([x; 4]), [float_to_unorm8(x); 4], "{x:e}");
+        }
+    }
+
+    #[test]
+    fn common_blends_match_the_general_equation() {
+        use crate::framebuffer::unorm8_to_float;
+        use BlendFactor::*;
+        let mut seed = 99u32;
+        let mut next = move || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed >> 8
+        };
+        let pairs = [
+            (SrcAlpha, OneMinusSrcAlpha),
+            (One, Zero),
+            (One, One),
+            (DstColor, Zero),
+        ];
+        for (src, dst) in pairs {
+            let b = Blend {
+                src_rgb: src,
+                dst_rgb: dst,
+                src_alpha: src,
+                dst_alpha: dst,
+                ..Blend::default()
+            };
+            for i in 0..20_000 {
+                // Sources: arbitrary values in [0, 1] and the ends;
+                // destinations: stored bytes.
+                let s = [0; 4].map(|_| match i % 7 {
+                    0 => 0.0,
+                    1 => 1.0,
+                    _ => clamp01(next() as f32 / 16_777_216.0 * 1.2 - 0.1),
+                });
+                let d = [0; 4].map(|_| unorm8_to_float((next() & 255) as u8));
+                let fast = blend_unit(&b, s, d).map(f32::to_bits);
+                let general = blend_color(&b, s, d).map(f32::to_bits);
+                assert_eq!(fast, general, "{src:?}/{dst:?} {s:?} {d:?}");
+            }
+        }
     }
 
     #[test]

@@ -58,7 +58,19 @@
 //! lines, triangles and quads; first of a GL_POLYGON).
 //!
 //! Textures ([`Texture`], [`TextureUnits`]) implement `exec::Textures`
-//! following GL 2.1 §3.8.
+//! following GL 2.1 §3.8. A level whose every component is exactly
+//! `k / 255` is stored as RGBA8 ([`Image::is_unorm8`]) and read back as
+//! those exact values, so storage never changes a result. 2D lookups with
+//! one unit for the whole request, no depth comparison and REPEAT,
+//! CLAMP_TO_EDGE or MIRRORED_REPEAT wrapping take a fast path that works
+//! over the 16 lanes at once with the general path's operations in the
+//! same order (the same bits; `texture_2d.rs` tests compare the two): on the
+//! benchmark's textured scene it cut sampling's share of the profile from
+//! about 45 % to about 25 % (see docs/PERFORMANCE.md). Level of detail is
+//! per fragment, from that fragment's own derivatives (not per 2×2 quad).
+//! Blending with FUNC_ADD and SRC_ALPHA/ONE_MINUS_SRC_ALPHA, ONE/ZERO or
+//! ONE/ONE into an RGBA8 buffer runs as straight-line code with the
+//! general equations' bits.
 //!
 //! # Limitations and choices where GL leaves things undefined
 //! - When the vertex shader does not write gl_ClipVertex, user clip planes
@@ -87,6 +99,7 @@ mod rasterize;
 mod shade;
 mod state;
 mod texture;
+mod texture_2d;
 mod workers;
 
 #[cfg(test)]
@@ -133,6 +146,25 @@ pub trait ShaderStage: Sync {
         uniforms: &[u32],
         textures: &dyn ex::Textures,
     ) -> Result<(), ex::ExecError>;
+
+    /// The uniform-only values of the stage for `uniforms`, computed once
+    /// per draw for [`ShaderStage::run_prepared`] (`exec::Kernel::prepare`).
+    /// `None` (the default): nothing to prepare.
+    fn prepare(&self, _uniforms: &[u32]) -> Option<ex::Prepared> {
+        None
+    }
+
+    /// [`ShaderStage::run`] with what [`ShaderStage::prepare`] returned for
+    /// the same `uniforms`; the same results, bit for bit.
+    fn run_prepared(
+        &self,
+        batch: &mut ex::Batch,
+        _prepared: &ex::Prepared,
+        uniforms: &[u32],
+        textures: &dyn ex::Textures,
+    ) -> Result<(), ex::ExecError> {
+        self.run(batch, uniforms, textures)
+    }
 
     /// A stage with the same interface that computes only what decides a
     /// fragment's fate (`gl_FragDepth` and discard), bit for bit as this
@@ -197,6 +229,18 @@ impl ShaderStage for ex::Kernel {
     }
     fn depth_only(&self) -> Option<Box<dyn ShaderStage>> {
         ex::Kernel::depth_only(self).map(|k| Box::new(k) as Box<dyn ShaderStage>)
+    }
+    fn prepare(&self, uniforms: &[u32]) -> Option<ex::Prepared> {
+        Some(ex::Kernel::prepare(self, uniforms))
+    }
+    fn run_prepared(
+        &self,
+        batch: &mut ex::Batch,
+        prepared: &ex::Prepared,
+        _uniforms: &[u32],
+        textures: &dyn ex::Textures,
+    ) -> Result<(), ex::ExecError> {
+        ex::Kernel::run_prepared(self, batch, prepared, textures)
     }
 
     fn run_probed(

@@ -117,28 +117,41 @@ pub(crate) fn primitive(mode: Mode, count: usize, k: usize) -> Assembled {
                 Assembled::Line(n - 1, 0)
             }
         }
-        Mode::Triangles => Assembled::Polygon(vec![3 * k, 3 * k + 1, 3 * k + 2], 3 * k + 2),
+        Mode::Polygon => Assembled::Polygon((0..n).collect(), 0),
+        _ => match small_polygon(mode, k) {
+            Some((v, len, provoking)) => Assembled::Polygon(v[..len].to_vec(), provoking),
+            None => Assembled::Polygon(Vec::new(), 0),
+        },
+    }
+}
+
+/// Primitive `k` of the triangle and quad modes without allocating:
+/// vertices (the first `len` of them) and the provoking vertex (GL 2.1
+/// table 2.12). `None` for the other modes.
+fn small_polygon(mode: Mode, k: usize) -> Option<([usize; 4], usize, usize)> {
+    Some(match mode {
+        Mode::Triangles => ([3 * k, 3 * k + 1, 3 * k + 2, 0], 3, 3 * k + 2),
         Mode::TriangleStrip => {
             let i = k + 2;
             // Every other triangle is reversed to keep a common winding.
             let v = if i.is_multiple_of(2) {
-                vec![i - 2, i - 1, i]
+                [i - 2, i - 1, i, 0]
             } else {
-                vec![i - 1, i - 2, i]
+                [i - 1, i - 2, i, 0]
             };
-            Assembled::Polygon(v, i)
+            (v, 3, i)
         }
-        Mode::TriangleFan => Assembled::Polygon(vec![0, k + 1, k + 2], k + 2),
+        Mode::TriangleFan => ([0, k + 1, k + 2, 0], 3, k + 2),
         Mode::Quads => {
             let b = 4 * k;
-            Assembled::Polygon(vec![b, b + 1, b + 2, b + 3], b + 3)
+            ([b, b + 1, b + 2, b + 3], 4, b + 3)
         }
         Mode::QuadStrip => {
             let b = 2 * k;
-            Assembled::Polygon(vec![b, b + 1, b + 3, b + 2], b + 3)
+            ([b, b + 1, b + 3, b + 2], 4, b + 3)
         }
-        Mode::Polygon => Assembled::Polygon((0..n).collect(), 0),
-    }
+        _ => return None,
+    })
 }
 
 /// Splits `count` vertices of `mode` into primitives, in order.
@@ -203,6 +216,13 @@ fn run_vertices(
         .unwrap_or(0);
     let stride = layout.outputs;
     let chunks: Vec<&[u32]> = unique.chunks(LANES).collect();
+    // Uniform-only values once per draw, not per batch (a draw of a few
+    // vertices runs them once either way).
+    let prepared = if chunks.len() > 1 {
+        vs.prepare(uniforms)
+    } else {
+        None
+    };
     let run_chunk = |chunk: &[u32]| -> Result<Vec<f32>, crate::ex::ExecError> {
         let mut batch = new_batch(n_in, stride);
         for (lane, &ix) in chunk.iter().enumerate() {
@@ -215,7 +235,10 @@ fn run_vertices(
         };
         match probe.filter(|p| p.prints_others()) {
             Some(p) => p.print_vertices(vs, &mut batch, uniforms, textures, chunk)?,
-            None => vs.run(&mut batch, uniforms, textures)?,
+            None => match &prepared {
+                Some(p) => vs.run_prepared(&mut batch, p, uniforms, textures)?,
+                None => vs.run(&mut batch, uniforms, textures)?,
+            },
         }
         let mut out = vec![0.0f32; chunk.len() * stride];
         for lane in 0..chunk.len() {
@@ -301,12 +324,21 @@ struct Setup<'a> {
     probe: Option<&'a crate::probe::Probe>,
 }
 
-/// Where set-up primitives go: the primitives of one chunk, and the index
-/// of the assembled primitive being set up.
+/// Where set-up primitives go: the primitives of one chunk, their
+/// fragment varyings ([`Prim::attrs`] indexes `attrs`), and the index of
+/// the assembled primitive being set up.
 struct Out {
     prims: Vec<Prim>,
+    attrs: Vec<f32>,
     source: u32,
 }
+
+const NO_WIN: WinVertex = WinVertex {
+    x: 0.0,
+    y: 0.0,
+    z: 0.0,
+    inv_w: 0.0,
+};
 
 impl Setup<'_> {
     fn data(&self, v: usize) -> &[f32] {
@@ -323,16 +355,17 @@ impl Setup<'_> {
         }
     }
 
-    /// Perspective division and viewport transform (GL 2.1 §2.11).
-    fn window(&self, v: &ClipVertex) -> Option<WinVertex> {
-        let w = v.pos[3] as f64;
+    /// Perspective division and viewport transform (GL 2.1 §2.11) of a
+    /// clip-space position.
+    fn window(&self, pos: [f32; 4]) -> Option<WinVertex> {
+        let w = pos[3] as f64;
         if w.is_nan() || w <= 0.0 {
             return None;
         }
         let [sx, ox, sy, oy, sz, oz] = self.vp;
-        let xd = v.pos[0] as f64 / w;
-        let yd = v.pos[1] as f64 / w;
-        let zd = v.pos[2] as f64 / w;
+        let xd = pos[0] as f64 / w;
+        let yd = pos[1] as f64 / w;
+        let zd = pos[2] as f64 / w;
         let win = WinVertex {
             x: sx * xd + ox,
             y: sy * yd + oy,
@@ -343,29 +376,38 @@ impl Setup<'_> {
             .then_some(win)
     }
 
-    /// Fragment varyings of the given vertices, flat-shaded colors taken
-    /// from `provoking` and stored as vertex 0's.
-    fn attrs(&self, vertices: &[&[f32]], back: bool, provoking: &[f32]) -> Vec<f32> {
-        let links = self.fs.links.len();
-        let mut out = Vec::with_capacity(links * vertices.len());
+    /// Appends the fragment varyings of the given vertices to
+    /// `out.attrs`, flat-shaded colors taken from `provoking` and stored as
+    /// vertex 0's; returns where they start.
+    fn attrs(&self, out: &mut Out, vertices: &[&[f32]], back: bool, provoking: &[f32]) -> usize {
+        let start = out.attrs.len();
         for d in vertices {
-            self.fs.varyings(d, back, &mut out);
+            self.fs.varyings(d, back, &mut out.attrs);
         }
         if self.state.flat_shading {
-            let mut flat = Vec::with_capacity(links);
-            self.fs.varyings(provoking, back, &mut flat);
             for (li, link) in self.fs.links.iter().enumerate() {
                 if link.color {
-                    if let (Some(dst), Some(&v)) = (out.get_mut(li), flat.get(li)) {
+                    let src = if back { link.back } else { link.front };
+                    let v = src.and_then(|o| provoking.get(o)).copied().unwrap_or(0.0);
+                    if let Some(dst) = out.attrs.get_mut(start + li) {
                         *dst = v;
                     }
                 }
             }
         }
-        out
+        start
     }
 
-    fn push(&self, out: &mut Out, shape: Shape, back: bool, z_offset: f64, attrs: Vec<f32>) {
+    #[allow(clippy::too_many_arguments)]
+    fn push(
+        &self,
+        out: &mut Out,
+        shape: Shape,
+        back: bool,
+        z_offset: f64,
+        vertices: &[&[f32]],
+        provoking: &[f32],
+    ) {
         if let Some(p) = self.probe {
             p.note_shape(&shape);
         }
@@ -375,6 +417,7 @@ impl Setup<'_> {
         if bounds.0 >= bounds.2 || bounds.1 >= bounds.3 {
             return;
         }
+        let attrs = self.attrs(out, vertices, back, provoking);
         out.prims.push(Prim {
             shape,
             bounds,
@@ -401,11 +444,12 @@ impl Setup<'_> {
         if !self.planes.point_inside(v) {
             return;
         }
-        let Some(win) = self.window(v) else { return };
+        let Some(win) = self.window(v.pos) else {
+            return;
+        };
         let size = self.point_size(&v.data) as f64;
         let shape = Shape::point(win, size, self.state.point_sprite);
-        let attrs = self.attrs(&[&v.data], back, provoking);
-        self.push(out, shape, back, z_offset, attrs);
+        self.push(out, shape, back, z_offset, &[&v.data], provoking);
     }
 
     fn line(
@@ -420,18 +464,49 @@ impl Setup<'_> {
         let Some((a, b)) = self.planes.clip_line(a, b) else {
             return;
         };
-        let (Some(wa), Some(wb)) = (self.window(&a), self.window(&b)) else {
+        let (Some(wa), Some(wb)) = (self.window(a.pos), self.window(b.pos)) else {
             return;
         };
         let shape = Shape::line([wa, wb], self.state.line_width);
-        let attrs = self.attrs(&[&a.data, &b.data], back, provoking);
-        self.push(out, shape, back, z_offset, attrs);
+        self.push(out, shape, back, z_offset, &[&a.data, &b.data], provoking);
     }
 
     fn polygon(&self, out: &mut Out, vertices: &[usize], provoking: usize) {
-        let original: Vec<ClipVertex> = vertices.iter().map(|&v| self.clip_vertex(v)).collect();
         // Line and point modes draw the unclipped polygon's edges/vertices.
         let filled_only = self.state.polygon_mode == [PolygonMode::Fill; 2];
+        let prov = self.data(provoking);
+        if filled_only && (3..=4).contains(&vertices.len()) {
+            // Triangles and quads inside every plane (the usual case) skip
+            // the clipper and its copies: what it would return unchanged.
+            let (mut all, mut any) = (0u32, !0u32);
+            for &v in vertices {
+                let d = self.data(v);
+                let c = self
+                    .planes
+                    .outcode_of(&self.vs.position(d), &self.vs.eye(d));
+                all |= c;
+                any &= c;
+            }
+            if any != 0 {
+                return;
+            }
+            if all == 0 {
+                let mut win = [NO_WIN; 4];
+                let mut data: [&[f32]; 4] = [&[]; 4];
+                for (i, &v) in vertices.iter().enumerate() {
+                    let d = self.data(v);
+                    let Some(w) = self.window(self.vs.position(d)) else {
+                        return;
+                    };
+                    win[i] = w;
+                    data[i] = d;
+                }
+                let n = vertices.len();
+                self.set_up_polygon(out, &win[..n], &data[..n], &[], prov);
+                return;
+            }
+        }
+        let original: Vec<ClipVertex> = vertices.iter().map(|&v| self.clip_vertex(v)).collect();
         let (original, clipped) = if filled_only {
             (Vec::new(), self.planes.clip_polygon(original))
         } else {
@@ -443,11 +518,26 @@ impl Setup<'_> {
         }
         let Some(win) = clipped
             .iter()
-            .map(|v| self.window(v))
+            .map(|v| self.window(v.pos))
             .collect::<Option<Vec<_>>>()
         else {
             return;
         };
+        let data: Vec<&[f32]> = clipped.iter().map(|v| &v.data[..]).collect();
+        self.set_up_polygon(out, &win, &data, &original, prov);
+    }
+
+    /// Facing, culling, polygon offset and the polygon mode of a clipped
+    /// polygon (`win` and `data` per vertex, at least three; `original`:
+    /// the unclipped polygon, for line and point modes).
+    fn set_up_polygon(
+        &self,
+        out: &mut Out,
+        win: &[WinVertex],
+        data: &[&[f32]],
+        original: &[ClipVertex],
+        prov: &[f32],
+    ) {
         // GL 2.1 §3.5.1 eq. 3.6: the sign of the window-space area.
         let mut area = 0.0f64;
         for i in 0..win.len() {
@@ -481,30 +571,29 @@ impl Setup<'_> {
         } else {
             0.0
         };
-        let prov = self.data(provoking).to_vec();
         match mode {
             PolygonMode::Fill => {
                 for i in 1..win.len() - 1 {
                     let Some(shape) = Shape::triangle([win[0], win[i], win[i + 1]]) else {
                         continue;
                     };
-                    let attrs = self.attrs(
-                        &[&clipped[0].data, &clipped[i].data, &clipped[i + 1].data],
-                        back,
-                        &prov,
-                    );
-                    self.push(out, shape, back, z_offset, attrs);
+                    let (Some(&d0), Some(&di), Some(&dj)) =
+                        (data.first(), data.get(i), data.get(i + 1))
+                    else {
+                        continue;
+                    };
+                    self.push(out, shape, back, z_offset, &[d0, di, dj], prov);
                 }
             }
             PolygonMode::Line => {
                 for i in 0..original.len() {
                     let j = (i + 1) % original.len();
-                    self.line(out, &original[i], &original[j], back, z_offset, &prov);
+                    self.line(out, &original[i], &original[j], back, z_offset, prov);
                 }
             }
             PolygonMode::Point => {
-                for v in &original {
-                    self.point(out, v, back, z_offset, &prov);
+                for v in original {
+                    self.point(out, v, back, z_offset, prov);
                 }
             }
         }
@@ -614,23 +703,31 @@ pub(crate) fn draw_probed(
     let parts = workers.map(chunks, 1, |c, _| {
         let mut out = Out {
             prims: Vec::new(),
+            attrs: Vec::new(),
             source: 0,
         };
         let v = |i: usize| vertex_of.get(i).copied().unwrap_or(0);
         for k in c * chunk..((c + 1) * chunk).min(n_prims) {
-            let p = primitive(mode, count, k);
             out.source = k as u32;
+            if probe.is_none() {
+                if let Some((vs, n, prov)) = small_polygon(mode, k) {
+                    let vs = vs.map(v);
+                    setup.polygon(&mut out, &vs[..n], v(prov));
+                    continue;
+                }
+            }
+            let p = primitive(mode, count, k);
             if let Some(probe) = probe {
                 probe.note_primitive(out.source, &p);
             }
             match p {
                 Assembled::Point(i) => {
                     let cv = setup.clip_vertex(v(i));
-                    setup.point(&mut out, &cv, false, 0.0, &cv.data);
+                    setup.point(&mut out, &cv, false, 0.0, setup.data(v(i)));
                 }
                 Assembled::Line(a, b) => {
                     let (ca, cb) = (setup.clip_vertex(v(a)), setup.clip_vertex(v(b)));
-                    setup.line(&mut out, &ca, &cb, false, 0.0, &cb.data);
+                    setup.line(&mut out, &ca, &cb, false, 0.0, setup.data(v(b)));
                 }
                 Assembled::Polygon(vs, prov) => {
                     let vs: Vec<usize> = vs.into_iter().map(v).collect();
@@ -638,33 +735,40 @@ pub(crate) fn draw_probed(
                 }
             }
         }
-        out.prims
+        (out.prims, out.attrs)
     });
-    let prims: Vec<Prim> = parts.into_iter().flatten().collect();
+    // Concatenated in order, each chunk's varyings moved behind the
+    // previous chunks'.
+    let mut prims: Vec<Prim> = Vec::with_capacity(parts.iter().map(|p| p.0.len()).sum());
+    let mut attrs: Vec<f32> = Vec::with_capacity(parts.iter().map(|p| p.1.len()).sum());
+    for (chunk_prims, chunk_attrs) in parts {
+        let base = attrs.len();
+        prims.extend(chunk_prims.into_iter().map(|mut p| {
+            p.attrs += base;
+            p
+        }));
+        attrs.extend_from_slice(&chunk_attrs);
+    }
 
-    let stage = FragmentStage {
-        shader: fs,
-        uniforms: fs_uniforms,
-        textures,
-        layout: &fs_layout,
-        state,
-        constant: fs_layout
-            .links
-            .iter()
-            .map(|l| l.color && state.flat_shading)
-            .collect(),
-        early: fs_layout.frag_depth.is_none(),
-        // The probe replays every fragment: never deferred.
-        deferred: if fs_layout.frag_depth.is_some()
-            && probe.is_none()
-            && crate::fragment_ops::last_writer_wins(fb, state)
-        {
-            fs.depth_only()
-        } else {
-            None
-        },
-        probe,
+    // The probe replays every fragment: never deferred.
+    let deferred = if fs_layout.frag_depth.is_some()
+        && probe.is_none()
+        && crate::fragment_ops::last_writer_wins(fb, state)
+    {
+        fs.depth_only()
+    } else {
+        None
     };
+    let stage = FragmentStage::new(
+        fs,
+        fs_uniforms,
+        textures,
+        &fs_layout,
+        state,
+        &attrs,
+        deferred,
+        probe,
+    );
     if let Some(p) = probe {
         p.set_vertices(&vs_layout, &outputs, &vertex_of);
     }
@@ -732,16 +836,16 @@ fn shade_tiles(
         let copy = || source.copy_tile(r.0 as u32, r.1 as u32, r.2 as u32, r.3 as u32);
         let mut local = copy();
         let bin = bins.get(t).map_or(&[][..], |b| &b[..]);
-        let mut batch = stage.scratch();
+        let mut scratch = stage.scratch();
         if let Some(depth) = &stage.deferred {
-            match stage.shade_deferred(depth.as_ref(), &mut local, prims, bin, r, &mut batch) {
+            match stage.shade_deferred(depth.as_ref(), &mut local, prims, bin, r, &mut scratch) {
                 Ok(()) => return TileResult::Ran(local, None),
                 // Redraw the tile the straightforward way: it stops at the
                 // same fragment with the same error.
                 Err(_) => local = copy(),
             }
         } else if stage.batches_primitives(source) {
-            match stage.shade_batched(&mut local, prims, bin, r, &mut batch) {
+            match stage.shade_batched(&mut local, prims, bin, r, &mut scratch) {
                 Ok(()) => return TileResult::Ran(local, None),
                 // The same: one primitive at a time gives the error and
                 // the partial tile of the contract.
@@ -755,7 +859,7 @@ fn shade_tiles(
             let Some(prim) = prims.get(p as usize) else {
                 continue;
             };
-            if let Err(e) = stage.shade(&mut local, prim, r, &mut batch) {
+            if let Err(e) = stage.shade(&mut local, prim, r, &mut scratch) {
                 cancel.fail(i);
                 return TileResult::Ran(local, Some(e));
             }

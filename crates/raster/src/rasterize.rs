@@ -77,6 +77,15 @@ pub(crate) struct Interp {
     pub weights: [f64; 3],
 }
 
+/// [`Interp`] at the four pixels of a quad, component by component.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct QuadInterp {
+    pub z: [f64; 4],
+    pub inv_w: [f64; 4],
+    /// `weights[j][k]`: vertex `j`'s weight at pixel `k`.
+    pub weights: [[f64; 4]; 3],
+}
+
 /// Edge k of a triangle: from vertex k+1 to vertex k+2 (opposite vertex k).
 fn edge(p: &[(i64, i64); 3], k: usize, x: i64, y: i64) -> i64 {
     let a = p[(k + 1) % 3];
@@ -183,35 +192,23 @@ impl Shape {
     /// Covered quads inside `clip` (half-open, even-aligned origin not
     /// required): `(qx, qy, mask)` with mask bit `(y - qy) * 2 + (x - qx)`,
     /// quads in row-major order.
+    #[cfg(test)]
     pub fn quads(&self, clip: PixelRect) -> Vec<(i64, i64, u8)> {
-        let r = intersect(self.bounds(), clip);
         let mut out = Vec::new();
+        self.quads_into(clip, &mut out);
+        out
+    }
+
+    /// [`Shape::quads`] into `out` (cleared first), so that a caller can
+    /// reuse one buffer for every primitive.
+    pub fn quads_into(&self, clip: PixelRect, out: &mut Vec<(i64, i64, u8)>) {
+        out.clear();
+        let r = intersect(self.bounds(), clip);
         if r.0 >= r.2 || r.1 >= r.3 {
-            return out;
+            return;
         }
         match self {
-            Shape::Triangle { p, sign, .. } => {
-                let owns = [0, 1, 2].map(|k| owns_edge(p, k, *sign));
-                let covered = |x: i64, y: i64| -> bool {
-                    let (cx, cy) = (x * ONE + HALF, y * ONE + HALF);
-                    (0..3).all(|k| {
-                        let e = sign * edge(p, k, cx, cy);
-                        e > 0 || (e == 0 && owns[k])
-                    })
-                };
-                for_each_quad(r, |qx, qy| {
-                    let mut mask = 0u8;
-                    for bit in 0..4 {
-                        let (x, y) = (qx + (bit & 1), qy + (bit >> 1));
-                        if inside(r, x, y) && covered(x, y) {
-                            mask |= 1 << bit;
-                        }
-                    }
-                    if mask != 0 {
-                        out.push((qx, qy, mask));
-                    }
-                });
-            }
+            Shape::Triangle { p, sign, .. } => triangle_quads(p, *sign, r, out),
             Shape::Point { .. } => {
                 for_each_quad(r, |qx, qy| {
                     let mut mask = 0u8;
@@ -238,7 +235,6 @@ impl Shape {
                 }
             }
         }
-        out
     }
 
     /// The pixels of a line inside `r`.
@@ -327,6 +323,51 @@ impl Shape {
         }
     }
 
+    /// [`Shape::interp`] at the four pixel centers of the quad at
+    /// (qx, qy) (pixel `k` at `(qx + (k & 1), qy + (k >> 1))`), bit for bit,
+    /// laid out per vertex for the fragment batch's interpolation.
+    pub fn interp_quad(&self, qx: i64, qy: i64) -> QuadInterp {
+        match self {
+            Shape::Triangle { p, sign, area2, v } => {
+                let a = *area2 as f64;
+                let mut q = QuadInterp::default();
+                let mut b = [[0.0f64; 4]; 3];
+                for k in 0..4 {
+                    let (cx, cy) = (
+                        (qx + (k as i64 & 1)) * ONE + HALF,
+                        (qy + (k as i64 >> 1)) * ONE + HALF,
+                    );
+                    for (j, bj) in b.iter_mut().enumerate() {
+                        bj[k] = (sign * edge(p, j, cx, cy)) as f64 / a;
+                    }
+                }
+                let [b0, b1, b2] = b;
+                for k in 0..4 {
+                    q.z[k] = b0[k] * v[0].z + b1[k] * v[1].z + b2[k] * v[2].z;
+                    let pw = [b0[k] * v[0].inv_w, b1[k] * v[1].inv_w, b2[k] * v[2].inv_w];
+                    let inv_w = pw[0] + pw[1] + pw[2];
+                    q.inv_w[k] = inv_w;
+                    for (wj, pwj) in q.weights.iter_mut().zip(pw) {
+                        wj[k] = pwj / inv_w;
+                    }
+                }
+                q
+            }
+            _ => {
+                let mut q = QuadInterp::default();
+                for k in 0..4 {
+                    let it = self.interp(qx + (k as i64 & 1), qy + (k as i64 >> 1));
+                    q.z[k] = it.z;
+                    q.inv_w[k] = it.inv_w;
+                    for j in 0..3 {
+                        q.weights[j][k] = it.weights[j];
+                    }
+                }
+                q
+            }
+        }
+    }
+
     /// GL 2.1 eq. 3.3/3.4: gl_PointCoord at pixel (x, y) (zeros for
     /// primitives other than points).
     pub fn point_coord(&self, x: i64, y: i64, lower_left: bool) -> (f32, f32) {
@@ -362,6 +403,66 @@ impl Shape {
             }
             _ => 0.0,
         }
+    }
+}
+
+/// The covered quads of a triangle inside `r` (non-empty, within the
+/// primitive's bounds), row-major. Each edge is the integer linear form
+/// `g(x, y) = a·x + b·y + c` that is ≥ 0 exactly when the pixel center
+/// lies inside the edge or on an edge the triangle owns (the top-left
+/// rule folded into `c`): the same integers as [`edge`] at every pixel,
+/// stepped by additions, four pixels and three edges per quad, and a row
+/// of quads ends as soon as one edge that only decreases to the right is
+/// negative on the whole quad.
+fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i64, i64, u8)>) {
+    let mut a = [0i64; 3];
+    let mut b = [0i64; 3];
+    let mut c = [0i64; 3];
+    for k in 0..3 {
+        let (pa, pb) = (p[(k + 1) % 3], p[(k + 2) % 3]);
+        let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
+        // sign · edge(x·ONE + HALF, y·ONE + HALF), minus 1 unless owned
+        // (e > 0, or e = 0 on an owned edge  ⇔  e + owned − 1 ≥ 0).
+        a[k] = -sign * ey * ONE;
+        b[k] = sign * ex * ONE;
+        c[k] = sign * (ex * (HALF - pa.1) - ey * (HALF - pa.0)) + owns_edge(p, k, sign) as i64 - 1;
+    }
+    let (x0, y0) = (r.0 & !1, r.1 & !1);
+    let mut qy = y0;
+    while qy < r.3 {
+        // Pixel rows of the quad row inside r: bits 0–1 and 2–3.
+        let rows = (if qy >= r.1 { 0b0011u8 } else { 0 }) | (if qy + 1 < r.3 { 0b1100 } else { 0 });
+        let mut g = [0i64; 3];
+        for k in 0..3 {
+            g[k] = a[k] * x0 + b[k] * qy + c[k];
+        }
+        let mut qx = x0;
+        while qx < r.2 {
+            let cols =
+                (if qx >= r.0 { 0b0101u8 } else { 0 }) | (if qx + 1 < r.2 { 0b1010 } else { 0 });
+            let mut neg = [0i64; 4];
+            let mut ends = false;
+            for k in 0..3 {
+                let v = [g[k], g[k] + a[k], g[k] + b[k], g[k] + a[k] + b[k]];
+                for (n, &v) in neg.iter_mut().zip(&v) {
+                    *n |= v;
+                }
+                ends |= a[k] <= 0 && (v[0] & v[1] & v[2] & v[3]) < 0;
+                g[k] += 2 * a[k];
+            }
+            let mut mask = 0u8;
+            for (bit, &n) in neg.iter().enumerate() {
+                mask |= u8::from(n >= 0) << bit;
+            }
+            let mask = mask & rows & cols;
+            if mask != 0 {
+                out.push((qx, qy, mask));
+            } else if ends {
+                break;
+            }
+            qx += 2;
+        }
+        qy += 2;
     }
 }
 
@@ -446,6 +547,82 @@ mod tests {
         assert_eq!(hits[4 * 10 + 5], 1);
     }
 
+    /// The coverage rule pixel by pixel, as [`edge`] and [`owns_edge`]
+    /// state it.
+    fn reference_quads(s: &Shape, clip: PixelRect) -> Vec<(i64, i64, u8)> {
+        let Shape::Triangle { p, sign, .. } = s else {
+            unreachable!()
+        };
+        let r = intersect(s.bounds(), clip);
+        let mut out = Vec::new();
+        if r.0 >= r.2 || r.1 >= r.3 {
+            return out;
+        }
+        let covered = |x: i64, y: i64| {
+            let (cx, cy) = (x * ONE + HALF, y * ONE + HALF);
+            (0..3).all(|k| {
+                let e = sign * edge(p, k, cx, cy);
+                e > 0 || (e == 0 && owns_edge(p, k, *sign))
+            })
+        };
+        for_each_quad(r, |qx, qy| {
+            let mut mask = 0u8;
+            for bit in 0..4 {
+                let (x, y) = (qx + (bit & 1), qy + (bit >> 1));
+                if inside(r, x, y) && covered(x, y) {
+                    mask |= 1 << bit;
+                }
+            }
+            if mask != 0 {
+                out.push((qx, qy, mask));
+            }
+        });
+        out
+    }
+
+    #[test]
+    fn triangle_quads_match_the_per_pixel_rule() {
+        // A small xorshift generator: fixed seed, no dependency.
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut coord = |range: f64| (next() % 1_000_000) as f64 / 1_000_000.0 * range - 8.0;
+        let mut checked = 0;
+        for i in 0..4000 {
+            // Sizes from sub-pixel to larger than a tile; snapped to pixel
+            // centers now and then so edges pass through centers.
+            let range = [3.0, 12.0, 40.0, 150.0][i % 4];
+            let mut v = [0; 3].map(|_| wv(coord(range), coord(range)));
+            if i % 5 == 0 {
+                for w in &mut v {
+                    w.x = w.x.floor() + 0.5;
+                    w.y = w.y.floor() + 0.5;
+                }
+            }
+            let Some(t) = Shape::triangle(v) else {
+                continue;
+            };
+            for clip in [
+                (0, 0, 64, 64),
+                (-8, -8, 200, 200),
+                (3, 5, 17, 10),
+                (-3, 1, 64, 63),
+            ] {
+                assert_eq!(
+                    t.quads(clip),
+                    reference_quads(&t, clip),
+                    "{v:?} in {clip:?}"
+                );
+                checked += 1;
+            }
+        }
+        assert!(checked > 10_000);
+    }
+
     #[test]
     fn top_left_rule() {
         // Right triangle with a bottom horizontal edge and a left vertical
@@ -488,6 +665,34 @@ mod tests {
         assert!((i.z - 0.5).abs() < 1e-12, "z is linear in window space");
         assert!((i.weights[0] - b[0] / inv_w).abs() < 1e-12);
         assert!((i.weights.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn quad_interpolation_is_that_of_each_pixel() {
+        let v = |x, y, z, inv_w| WinVertex { x, y, z, inv_w };
+        let shapes = [
+            Shape::triangle([
+                v(0.3, 0.7, 0.1, 1.0),
+                v(17.2, 3.1, 0.9, 0.25),
+                v(4.4, 15.9, 0.5, 0.5),
+            ])
+            .unwrap(),
+            Shape::line([v(0.5, 0.3, 0.2, 1.0), v(9.5, 4.3, 0.7, 0.1)], 1.0),
+            Shape::point(v(3.7, 3.2, 0.3, 0.5), 3.0, false),
+        ];
+        for s in &shapes {
+            for (qx, qy) in [(0, 0), (2, 4), (6, 2), (-2, 8)] {
+                let q = s.interp_quad(qx, qy);
+                for k in 0..4 {
+                    let it = s.interp(qx + (k as i64 & 1), qy + (k as i64 >> 1));
+                    assert_eq!(q.z[k].to_bits(), it.z.to_bits());
+                    assert_eq!(q.inv_w[k].to_bits(), it.inv_w.to_bits());
+                    for j in 0..3 {
+                        assert_eq!(q.weights[j][k].to_bits(), it.weights[j].to_bits());
+                    }
+                }
+            }
+        }
     }
 
     #[test]

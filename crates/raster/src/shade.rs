@@ -6,7 +6,7 @@ use crate::ex::{Batch, ExecError, Textures, LANES};
 use crate::fragment_ops::{self, Fragment};
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
 use crate::linkage::FsLayout;
-use crate::rasterize::{Interp, PixelRect, Shape};
+use crate::rasterize::{PixelRect, QuadInterp, Shape};
 use crate::state::PipelineState;
 use crate::ShaderStage;
 
@@ -18,21 +18,12 @@ pub(crate) struct Prim {
     pub back: bool,
     /// Polygon offset added to window z.
     pub z_offset: f64,
-    /// Fragment varyings per vertex (`links` values each).
-    pub attrs: Vec<f32>,
+    /// Where the fragment varyings start in the draw's varying array
+    /// ([`FragmentStage::attrs`]): `links` values per vertex.
+    pub attrs: usize,
     /// Index of the assembled primitive this one came from (clipping may
     /// split one into several), for the debugger.
     pub source: u32,
-}
-
-impl Prim {
-    fn vertices(&self) -> usize {
-        match self.shape {
-            Shape::Triangle { .. } => 3,
-            Shape::Line { .. } => 2,
-            Shape::Point { .. } => 1,
-        }
-    }
 }
 
 pub(crate) fn new_batch(inputs: usize, outputs: usize) -> Batch {
@@ -57,7 +48,8 @@ pub(crate) struct Quad {
     x: i64,
     y: i64,
     live: u8,
-    interp: [Interp; 4],
+    /// Interpolation at the four pixels.
+    it: QuadInterp,
     /// Final window z per pixel (offset and clamped).
     z: [f64; 4],
 }
@@ -71,20 +63,31 @@ impl Quad {
 
     /// The quad at (qx, qy) of `prim` with coverage `mask`.
     fn new(prim: &Prim, qx: i64, qy: i64, mask: u8) -> Quad {
-        let mut quad = Quad {
+        let it = prim.shape.interp_quad(qx, qy);
+        Quad {
             x: qx,
             y: qy,
             live: mask,
-            interp: [Interp::default(); 4],
-            z: [0.0; 4],
-        };
-        for k in 0..4 {
-            let it = prim.shape.interp(qx + (k & 1), qy + (k >> 1));
-            quad.interp[k as usize] = it;
-            quad.z[k as usize] = clamp01(it.z + prim.z_offset);
+            it,
+            z: it.z.map(|z| clamp01(z + prim.z_offset)),
         }
-        quad
     }
+}
+
+/// A quad waiting for its batch: its primitive (and that primitive's
+/// index), and for the colour pass of a deferred tile the pixels to write.
+pub(crate) struct Entry<'p> {
+    prim: &'p Prim,
+    index: u32,
+    quad: Quad,
+    write: u8,
+}
+
+/// Per-tile buffers reused by every primitive and batch of the tile.
+pub(crate) struct Scratch<'p> {
+    pub batch: Batch,
+    pending: Vec<Entry<'p>>,
+    quads: Vec<(i64, i64, u8)>,
 }
 
 /// Bit set in a lane mask for the `LANES / 4` quads of a batch.
@@ -105,8 +108,19 @@ pub(crate) struct FragmentStage<'a> {
     pub textures: &'a (dyn Textures + Sync),
     pub layout: &'a FsLayout,
     pub state: &'a PipelineState,
+    /// The fragment varyings of every primitive ([`Prim::attrs`]).
+    pub attrs: &'a [f32],
     /// Per link: flat-shaded (the value of vertex 0 is used as is).
     pub constant: Vec<bool>,
+    /// Per link: the shader reads the input (unread inputs stay zero;
+    /// every link counts as read under the debugger's probe, which shows
+    /// inputs).
+    pub read: Vec<bool>,
+    /// Per link: the gl_PointCoord component replacing it on point
+    /// sprites (GL_COORD_REPLACE), if any.
+    pub replace: Vec<Option<usize>>,
+    /// (draw buffer, output offset) of each colour the fragment carries.
+    pub colors_out: Vec<(usize, usize)>,
     /// Depth/stencil-test before shading (no gl_FragDepth write).
     pub early: bool,
     /// The depth-only slice of `shader`, when colors may be computed for
@@ -114,32 +128,116 @@ pub(crate) struct FragmentStage<'a> {
     pub deferred: Option<Box<dyn ShaderStage>>,
     /// The debugger's pixel probe (`None` in normal draws).
     pub probe: Option<&'a crate::probe::Probe>,
+    /// `shader`'s and `deferred`'s uniform-only values, once per draw.
+    prepared: Option<crate::ex::Prepared>,
+    deferred_prepared: Option<crate::ex::Prepared>,
 }
 
-impl FragmentStage<'_> {
-    /// A batch sized for the stage, reused by one tile's flushes.
-    pub fn scratch(&self) -> Batch {
-        new_batch(self.layout.inputs, self.layout.outputs)
+impl<'a> FragmentStage<'a> {
+    /// The fragment stage of a draw: `shader` with `layout`'s linkage
+    /// under `state`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        shader: &'a dyn ShaderStage,
+        uniforms: &'a [u32],
+        textures: &'a (dyn Textures + Sync),
+        layout: &'a FsLayout,
+        state: &'a PipelineState,
+        attrs: &'a [f32],
+        deferred: Option<Box<dyn ShaderStage>>,
+        probe: Option<&'a crate::probe::Probe>,
+    ) -> FragmentStage<'a> {
+        let inputs = &shader.interface().inputs;
+        let read_at = |offset: usize| {
+            probe.is_some()
+                || inputs
+                    .iter()
+                    .any(|s| s.written && (s.offset..s.offset + s.components).contains(&offset))
+        };
+        FragmentStage {
+            shader,
+            uniforms,
+            textures,
+            layout,
+            state,
+            attrs,
+            constant: layout
+                .links
+                .iter()
+                .map(|l| l.color && state.flat_shading)
+                .collect(),
+            read: layout.links.iter().map(|l| read_at(l.fs_offset)).collect(),
+            replace: layout
+                .links
+                .iter()
+                .map(|l| match l.texcoord {
+                    Some((set, c)) if set < 32 && state.coord_replace & (1 << set) != 0 => {
+                        Some(c.min(3))
+                    }
+                    _ => None,
+                })
+                .collect(),
+            colors_out: (0..MAX_DRAW_BUFFERS)
+                .filter_map(|i| match (layout.color_out[i], state.draw_buffers[i]) {
+                    (Some(o), Some(_)) => Some((i, o)),
+                    _ => None,
+                })
+                .collect(),
+            early: layout.frag_depth.is_none(),
+            prepared: shader.prepare(uniforms),
+            deferred_prepared: deferred.as_ref().and_then(|d| d.prepare(uniforms)),
+            deferred,
+            probe,
+        }
+    }
+
+    /// Runs the shader on `batch` (with the per-draw prepared values).
+    fn run_shader(&self, batch: &mut Batch) -> Result<(), ExecError> {
+        match &self.prepared {
+            Some(p) => self
+                .shader
+                .run_prepared(batch, p, self.uniforms, self.textures),
+            None => self.shader.run(batch, self.uniforms, self.textures),
+        }
+    }
+
+    /// Runs the depth-only slice `depth` (this stage's
+    /// [`FragmentStage::deferred`]) on `batch`.
+    fn run_depth(&self, depth: &dyn ShaderStage, batch: &mut Batch) -> Result<(), ExecError> {
+        match &self.deferred_prepared {
+            Some(p) => depth.run_prepared(batch, p, self.uniforms, self.textures),
+            None => depth.run(batch, self.uniforms, self.textures),
+        }
+    }
+
+    /// Buffers sized for the stage, reused by one tile's primitives and
+    /// batches.
+    pub fn scratch<'p>(&self) -> Scratch<'p> {
+        Scratch {
+            batch: new_batch(self.layout.inputs, self.layout.outputs),
+            pending: Vec::with_capacity(LANES / 4),
+            quads: Vec::new(),
+        }
     }
 
     /// Shades and writes the part of `prim` inside `tile`. `fb` holds the
     /// pixels of `tile` only (its origin is `(tile.0, tile.1)`).
-    pub fn shade(
+    pub fn shade<'p>(
         &self,
         fb: &mut Framebuffer,
-        prim: &Prim,
+        prim: &'p Prim,
         tile: PixelRect,
-        batch: &mut Batch,
+        scratch: &mut Scratch<'p>,
     ) -> Result<(), ExecError> {
         let origin = (tile.0.max(0) as u32, tile.1.max(0) as u32);
-        let clip = (
-            prim.bounds.0.max(tile.0),
-            prim.bounds.1.max(tile.1),
-            prim.bounds.2.min(tile.2),
-            prim.bounds.3.min(tile.3),
-        );
-        let mut pending: Vec<Quad> = Vec::with_capacity(LANES / 4);
-        for (qx, qy, mask) in prim.shape.quads(clip) {
+        let Scratch {
+            batch,
+            pending,
+            quads,
+        } = scratch;
+        pending.clear();
+        prim.shape.quads_into(clip_to(prim, tile), quads);
+        for &(qx, qy, mask) in quads.iter() {
             let mut quad = Quad::new(prim, qx, qy, mask);
             if self.early {
                 self.early_rejects(fb, origin, prim, &mut quad);
@@ -147,16 +245,47 @@ impl FragmentStage<'_> {
             if quad.live == 0 {
                 continue;
             }
-            pending.push(quad);
+            pending.push(Entry {
+                prim,
+                index: 0,
+                quad,
+                write: 0,
+            });
             if pending.len() == LANES / 4 {
-                self.flush(fb, origin, prim, &pending, batch)?;
+                self.flush(fb, origin, prim, pending, batch)?;
                 pending.clear();
             }
         }
         if !pending.is_empty() {
-            self.flush(fb, origin, prim, &pending, batch)?;
+            self.flush(fb, origin, prim, pending, batch)?;
+            pending.clear();
         }
         Ok(())
+    }
+
+    /// Sends the shaded fragments of `pending` through the per-fragment
+    /// operations, in order.
+    fn write_batch(
+        &self,
+        fb: &mut Framebuffer,
+        origin: (u32, u32),
+        batch: &Batch,
+        pending: &[Entry],
+    ) {
+        let mut frag = Fragment {
+            x: 0,
+            y: 0,
+            z: 0.0,
+            back_facing: false,
+            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
+        };
+        for (q, e) in pending.iter().enumerate() {
+            for k in 0..4 {
+                if self.fragment_into(batch, &e.quad, q, k, e.prim.back, &mut frag) {
+                    fragment_ops::process(fb, origin, self.state, &frag);
+                }
+            }
+        }
     }
 
     /// The primitives `bin` (indices into `prims`, in draw order) inside
@@ -168,43 +297,34 @@ impl FragmentStage<'_> {
     /// against a depth buffer that misses the batch's pending fragments is
     /// still right: [`FragmentStage::batches_primitives`] says when. On an
     /// error the caller redraws the tile with [`FragmentStage::shade`].
-    pub fn shade_batched(
+    pub fn shade_batched<'p>(
         &self,
         fb: &mut Framebuffer,
-        prims: &[Prim],
+        prims: &'p [Prim],
         bin: &[u32],
         tile: PixelRect,
-        batch: &mut Batch,
+        scratch: &mut Scratch<'p>,
     ) -> Result<(), ExecError> {
         let origin = (tile.0.max(0) as u32, tile.1.max(0) as u32);
-        let mut pending: Vec<(&Prim, Quad)> = Vec::with_capacity(LANES / 4);
-        let flush = |fb: &mut Framebuffer,
-                     pending: &[(&Prim, Quad)],
-                     batch: &mut Batch|
-         -> Result<(), ExecError> {
-            let pairs: Vec<(&Prim, &Quad)> = pending.iter().map(|(p, q)| (*p, q)).collect();
-            self.fill(batch, &pairs);
-            self.shader.run(batch, self.uniforms, self.textures)?;
-            for (q, (prim, quad)) in pending.iter().enumerate() {
-                for k in 0..4 {
-                    if let Some(frag) = self.fragment(batch, quad, q, k, prim.back) {
-                        fragment_ops::process(fb, origin, self.state, &frag);
-                    }
-                }
-            }
+        let Scratch {
+            batch,
+            pending,
+            quads,
+        } = scratch;
+        pending.clear();
+        let mut flush = |fb: &mut Framebuffer, pending: &mut Vec<Entry>| -> Result<(), ExecError> {
+            self.fill(batch, pending);
+            self.run_shader(batch)?;
+            self.write_batch(fb, origin, batch, pending);
+            pending.clear();
             Ok(())
         };
         for &p in bin {
             let Some(prim) = prims.get(p as usize) else {
                 continue;
             };
-            let clip = (
-                prim.bounds.0.max(tile.0),
-                prim.bounds.1.max(tile.1),
-                prim.bounds.2.min(tile.2),
-                prim.bounds.3.min(tile.3),
-            );
-            for (qx, qy, mask) in prim.shape.quads(clip) {
+            prim.shape.quads_into(clip_to(prim, tile), quads);
+            for &(qx, qy, mask) in quads.iter() {
                 let mut quad = Quad::new(prim, qx, qy, mask);
                 if self.early {
                     self.early_rejects(fb, origin, prim, &mut quad);
@@ -212,15 +332,19 @@ impl FragmentStage<'_> {
                 if quad.live == 0 {
                     continue;
                 }
-                pending.push((prim, quad));
+                pending.push(Entry {
+                    prim,
+                    index: p,
+                    quad,
+                    write: 0,
+                });
                 if pending.len() == LANES / 4 {
-                    flush(fb, &pending, batch)?;
-                    pending.clear();
+                    flush(fb, pending)?;
                 }
             }
         }
         if !pending.is_empty() {
-            flush(fb, &pending, batch)?;
+            flush(fb, pending)?;
         }
         Ok(())
     }
@@ -274,125 +398,149 @@ impl FragmentStage<'_> {
         }
     }
 
-    /// Clears `batch` and writes the fragment inputs of `quads` (quad `q`
-    /// in lanes `4q..4q + 4`); sets the active and helper lanes.
-    fn fill(&self, batch: &mut Batch, quads: &[(&Prim, &Quad)]) {
+    /// Clears `batch` and writes the fragment inputs of `pending` (quad
+    /// `q` in lanes `4q..4q + 4`; at most `LANES / 4` quads); sets the
+    /// active and helper lanes. Varyings are interpolated link by link
+    /// over the batch's quads with each quad's per-pixel weights:
+    /// `0 + w0·v0 + w1·v1 + w2·v2` in f64 for triangles (lines have no
+    /// third term: `w2 = v2 = 0` adds an exact zero), vertex 0's value
+    /// for points and flat-shaded colours.
+    fn fill(&self, batch: &mut Batch, pending: &[Entry]) {
         for c in batch.inputs.iter_mut() {
             *c = [0.0; LANES];
         }
         for c in batch.outputs.iter_mut() {
             *c = [0.0; LANES];
         }
+        let pending = pending.get(..LANES / 4).unwrap_or(pending);
         let mut live_mask = 0u32;
-        for (q, (prim, quad)) in quads.iter().enumerate() {
-            live_mask |= (quad.live as u32) << (4 * q);
-            self.fill_quad(batch, q, prim, quad);
+        for (q, e) in pending.iter().enumerate() {
+            live_mask |= (e.quad.live as u32) << (4 * q);
         }
-        let active = quads_mask(quads.len());
+        let active = quads_mask(pending.len());
         batch.active = active;
         batch.helper = active & !live_mask;
         batch.discarded = 0;
-    }
 
-    fn fill_quad(&self, batch: &mut Batch, q: usize, prim: &Prim, quad: &Quad) {
         let layout = self.layout;
         let links = layout.links.len();
-        let nv = prim.vertices();
-        let is_point = matches!(prim.shape, Shape::Point { .. });
-        let sprite = is_point && self.state.point_sprite;
-        let lanes = 4 * q..4 * q + 4;
-        let xy = |k: usize| quad.pixel(k);
-        let pc: [(f32, f32); 4] = std::array::from_fn(|k| {
-            if is_point {
-                let (x, y) = xy(k);
-                prim.shape
-                    .point_coord(x, y, self.state.point_sprite_origin_lower_left)
-            } else {
-                (0.0, 0.0)
-            }
-        });
+        let sprite = self.state.point_sprite;
+        let lower_left = self.state.point_sprite_origin_lower_left;
+        let point_coords = |quad: &Quad, prim: &Prim| -> [(f32, f32); 4] {
+            std::array::from_fn(|k| {
+                let (x, y) = quad.pixel(k);
+                prim.shape.point_coord(x, y, lower_left)
+            })
+        };
         for (li, link) in layout.links.iter().enumerate() {
+            if !self.read.get(li).copied().unwrap_or(true) {
+                continue;
+            }
             let Some(dst) = batch.inputs.get_mut(link.fs_offset) else {
                 continue;
             };
-            let Some(dst) = dst.get_mut(lanes.clone()) else {
-                continue;
-            };
-            let attr = |j: usize| prim.attrs.get(j * links + li).copied().unwrap_or(0.0);
-            let values: [f32; 3] = [attr(0), attr(1), attr(2)];
-            let flat = is_point || self.constant.get(li).copied().unwrap_or(false);
-            let replace = match (sprite, link.texcoord) {
-                (true, Some((set, c)))
-                    if set < 32 && self.state.coord_replace & (1 << set) != 0 =>
-                {
-                    Some(c.min(3))
-                }
-                _ => None,
-            };
-            for (k, out) in dst.iter_mut().enumerate() {
-                *out = if let Some(c) = replace {
-                    [pc[k].0, pc[k].1, 0.0, 1.0][c]
-                } else if flat {
-                    values[0]
-                } else {
-                    let w = &quad.interp[k].weights;
-                    let mut acc = 0.0f64;
-                    for j in 0..nv.min(3) {
-                        acc += w[j] * values[j] as f64;
-                    }
-                    acc as f32
+            let constant = self.constant.get(li).copied().unwrap_or(false);
+            let replace = self.replace.get(li).copied().flatten();
+            for (e, lanes) in pending.iter().zip(dst.chunks_exact_mut(4)) {
+                let (prim, quad) = (e.prim, &e.quad);
+                let attr = |j: usize| {
+                    self.attrs
+                        .get(prim.attrs + j * links + li)
+                        .copied()
+                        .unwrap_or(0.0)
                 };
+                match prim.shape {
+                    Shape::Point { .. } => match replace.filter(|_| sprite) {
+                        Some(c) => {
+                            let pc = point_coords(quad, prim);
+                            for (out, pc) in lanes.iter_mut().zip(pc) {
+                                *out = [pc.0, pc.1, 0.0, 1.0][c];
+                            }
+                        }
+                        None => lanes.fill(attr(0)),
+                    },
+                    _ if constant => lanes.fill(attr(0)),
+                    Shape::Triangle { .. } => {
+                        let v = [attr(0) as f64, attr(1) as f64, attr(2) as f64];
+                        let w = &quad.it.weights;
+                        for (k, out) in lanes.iter_mut().enumerate() {
+                            *out = (0.0 + w[0][k] * v[0] + w[1][k] * v[1] + w[2][k] * v[2]) as f32;
+                        }
+                    }
+                    Shape::Line { .. } => {
+                        let v = [attr(0) as f64, attr(1) as f64];
+                        let w = &quad.it.weights;
+                        for (k, out) in lanes.iter_mut().enumerate() {
+                            *out = (0.0 + w[0][k] * v[0] + w[1][k] * v[1]) as f32;
+                        }
+                    }
+                }
             }
         }
-        for (k, (it, pc)) in quad.interp.iter().zip(pc).enumerate() {
-            let lane = 4 * q + k;
-            let (x, y) = xy(k);
-            if let Some(o) = layout.frag_coord {
-                set(batch, o, lane, x as f32 + 0.5);
-                set(batch, o + 1, lane, y as f32 + 0.5);
-                set(batch, o + 2, lane, quad.z[k] as f32);
-                set(batch, o + 3, lane, it.inv_w as f32);
-            }
-            if let Some(o) = layout.front_facing {
-                set(batch, o, lane, if prim.back { 0.0 } else { 1.0 });
-            }
-            if let Some(o) = layout.point_coord {
-                set(batch, o, lane, pc.0);
-                set(batch, o + 1, lane, pc.1);
+        if layout.frag_coord.is_none()
+            && layout.front_facing.is_none()
+            && layout.point_coord.is_none()
+        {
+            return;
+        }
+        for (q, e) in pending.iter().enumerate() {
+            let (prim, quad) = (e.prim, &e.quad);
+            let pc = match prim.shape {
+                Shape::Point { .. } => point_coords(quad, prim),
+                _ => [(0.0, 0.0); 4],
+            };
+            for (k, pc) in pc.into_iter().enumerate() {
+                let lane = 4 * q + k;
+                let (x, y) = quad.pixel(k);
+                if let Some(o) = layout.frag_coord {
+                    set(batch, o, lane, x as f32 + 0.5);
+                    set(batch, o + 1, lane, y as f32 + 0.5);
+                    set(batch, o + 2, lane, quad.z[k] as f32);
+                    set(batch, o + 3, lane, quad.it.inv_w[k] as f32);
+                }
+                if let Some(o) = layout.front_facing {
+                    set(batch, o, lane, if prim.back { 0.0 } else { 1.0 });
+                }
+                if let Some(o) = layout.point_coord {
+                    set(batch, o, lane, pc.0);
+                    set(batch, o + 1, lane, pc.1);
+                }
             }
         }
     }
 
-    /// The fragment's window z after the shader: gl_FragDepth when the
-    /// shader writes it (GL 2.1 §3.11.2, clamped to [0, 1] on conversion),
-    /// else the interpolated z.
-    /// The fragment of lane `4q + k` after shading, unless the lane is
-    /// not covered, was discarded or lies left of / below the window.
-    fn fragment(
+    /// Sets `frag` to the fragment of lane `4q + k` after shading; false
+    /// when the lane is not covered, was discarded or lies left of /
+    /// below the window. Only the colours of `colors_out` are written
+    /// (the others stay as they were: zero).
+    fn fragment_into(
         &self,
         batch: &Batch,
         quad: &Quad,
         q: usize,
         k: usize,
         back: bool,
-    ) -> Option<Fragment> {
+        frag: &mut Fragment,
+    ) -> bool {
         let lane = 4 * q + k;
         if quad.live & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
-            return None;
+            return false;
         }
         let (x, y) = quad.pixel(k);
         if x < 0 || y < 0 {
-            return None;
+            return false;
         }
-        Some(Fragment {
-            x: x as u32,
-            y: y as u32,
-            z: self.frag_z(batch, lane, quad, k),
-            back_facing: back,
-            colors: self.colors(batch, lane),
-        })
+        frag.x = x as u32;
+        frag.y = y as u32;
+        frag.z = self.frag_z(batch, lane, quad, k);
+        frag.back_facing = back;
+        self.colors_into(batch, lane, &mut frag.colors);
+        true
     }
 
+    /// The fragment's window z after the shader: gl_FragDepth when the
+    /// shader writes it (GL 2.1 §3.11.2, clamped to [0, 1] on conversion),
+    /// else the interpolated z.
     fn frag_z(&self, batch: &Batch, lane: usize, quad: &Quad, k: usize) -> f32 {
         let z = match self.layout.frag_depth {
             Some(o) => get(batch, o, lane),
@@ -401,16 +549,15 @@ impl FragmentStage<'_> {
         clamp01(z as f64) as f32
     }
 
-    fn colors(&self, batch: &Batch, lane: usize) -> [[f32; 4]; MAX_DRAW_BUFFERS] {
-        let mut colors = [[0.0f32; 4]; MAX_DRAW_BUFFERS];
-        for (i, c) in colors.iter_mut().enumerate() {
-            if let (Some(o), Some(_)) = (self.layout.color_out[i], self.state.draw_buffers[i]) {
+    /// Writes lane `lane`'s colours of `colors_out` into `colors`.
+    fn colors_into(&self, batch: &Batch, lane: usize, colors: &mut [[f32; 4]; MAX_DRAW_BUFFERS]) {
+        for &(i, o) in &self.colors_out {
+            if let Some(c) = colors.get_mut(i) {
                 for (j, v) in c.iter_mut().enumerate() {
                     *v = get(batch, o + j, lane);
                 }
             }
         }
-        colors
     }
 
     fn flush(
@@ -418,21 +565,21 @@ impl FragmentStage<'_> {
         fb: &mut Framebuffer,
         origin: (u32, u32),
         prim: &Prim,
-        quads: &[Quad],
+        pending: &[Entry],
         batch: &mut Batch,
     ) -> Result<(), ExecError> {
-        let pairs: Vec<(&Prim, &Quad)> = quads.iter().map(|q| (prim, q)).collect();
-        self.fill(batch, &pairs);
+        self.fill(batch, pending);
         let live_mask = batch.active & !batch.helper;
         let probed = self.probe.and_then(|p| {
-            let lane = quads.iter().enumerate().find_map(|(q, quad)| {
+            let lane = pending.iter().enumerate().find_map(|(q, e)| {
                 (0..4).find_map(|k| {
-                    let (x, y) = quad.pixel(k);
+                    let (x, y) = e.quad.pixel(k);
                     (p.at(x, y) && live_mask & (1 << (4 * q + k)) != 0).then_some(4 * q + k)
                 })
             })?;
             Some((p, lane))
         });
+        let pixel_of = |l: usize| Some(pending.get(l / 4)?.quad.pixel(l % 4));
         let mut record = None;
         let mut watched = Vec::new();
         match probed {
@@ -442,10 +589,11 @@ impl FragmentStage<'_> {
                     // more (runs are deterministic).
                     let mut copy = batch.clone();
                     p.print_batch(self, &mut copy, prim.source, |l| {
-                        Some(quads.get(l / 4)?.pixel(l % 4)).filter(|_| l != lane)
+                        pixel_of(l).filter(|_| l != lane)
                     })?;
                 }
-                let mut r = p.begin(prim, batch, lane, quads[lane / 4].z[lane % 4]);
+                let z = pending.get(lane / 4).map_or(0.0, |e| e.quad.z[lane % 4]);
+                let mut r = p.begin(prim, batch, lane, z);
                 let result =
                     self.shader
                         .run_probed(batch, self.uniforms, self.textures, lane, &mut r);
@@ -457,21 +605,26 @@ impl FragmentStage<'_> {
                 if let Some((p, view)) = self.probe.and_then(|p| Some((p, p.view()?))) {
                     watched = p.run_view(self, batch, view)?;
                 } else if let Some(p) = self.probe {
-                    p.print_batch(self, batch, prim.source, |lane| {
-                        Some(quads.get(lane / 4)?.pixel(lane % 4))
-                    })?;
+                    p.print_batch(self, batch, prim.source, pixel_of)?;
                 } else {
-                    self.shader.run(batch, self.uniforms, self.textures)?;
+                    self.run_shader(batch)?;
                 }
             }
         }
 
-        for (q, quad) in quads.iter().enumerate() {
+        let mut frag = Fragment {
+            x: 0,
+            y: 0,
+            z: 0.0,
+            back_facing: false,
+            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
+        };
+        for (q, e) in pending.iter().enumerate() {
             for k in 0..4 {
                 let lane = 4 * q + k;
-                let Some(frag) = self.fragment(batch, quad, q, k, prim.back) else {
+                if !self.fragment_into(batch, &e.quad, q, k, prim.back, &mut frag) {
                     continue;
-                };
+                }
                 let passed = match record.as_mut().filter(|r| r.1 == lane) {
                     Some((p, _, r)) => p.process(fb, origin, self.state, &frag, r),
                     None => fragment_ops::process(fb, origin, self.state, &frag),
@@ -504,33 +657,40 @@ impl FragmentStage<'_> {
     /// the tile ends with the same bytes as [`FragmentStage::shade`] over
     /// the bin. On an error `fb` is left partly drawn: the caller redraws
     /// the tile the straightforward way to get the same error and pixels.
-    pub fn shade_deferred(
+    pub fn shade_deferred<'p>(
         &self,
         depth: &dyn ShaderStage,
         fb: &mut Framebuffer,
-        prims: &[Prim],
+        prims: &'p [Prim],
         bin: &[u32],
         tile: PixelRect,
-        batch: &mut Batch,
+        scratch: &mut Scratch<'p>,
     ) -> Result<(), ExecError> {
         let origin = (tile.0.max(0) as u32, tile.1.max(0) as u32);
         let (w, h) = (fb.width as usize, fb.height as usize);
+        let Scratch {
+            batch,
+            pending,
+            quads,
+        } = scratch;
+        pending.clear();
         // Per pixel: (winning primitive, its quad's coverage).
         let mut winner: Vec<(u32, u8)> = vec![(NO_PRIM, 0); w * h];
-        let mut pending: Vec<(u32, Quad)> = Vec::with_capacity(LANES / 4);
-        let depth_pass = |fb: &mut Framebuffer,
-                          winner: &mut Vec<(u32, u8)>,
-                          pending: &[(u32, Quad)],
-                          batch: &mut Batch|
+        let mut depth_pass = |fb: &mut Framebuffer,
+                              winner: &mut Vec<(u32, u8)>,
+                              pending: &mut Vec<Entry>|
          -> Result<(), ExecError> {
-            let pairs: Vec<(&Prim, &Quad)> = pending
-                .iter()
-                .filter_map(|(p, q)| Some((prims.get(*p as usize)?, q)))
-                .collect();
-            self.fill(batch, &pairs);
-            depth.run(batch, self.uniforms, self.textures)?;
-            for (q, (prim, quad)) in pairs.iter().enumerate() {
-                let p = pending.get(q).map_or(NO_PRIM, |e| e.0);
+            self.fill(batch, pending);
+            self.run_depth(depth, batch)?;
+            let mut frag = Fragment {
+                x: 0,
+                y: 0,
+                z: 0.0,
+                back_facing: false,
+                colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
+            };
+            for (q, e) in pending.iter().enumerate() {
+                let quad = &e.quad;
                 for k in 0..4 {
                     let lane = 4 * q + k;
                     if quad.live & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
@@ -540,72 +700,64 @@ impl FragmentStage<'_> {
                     if x < 0 || y < 0 {
                         continue;
                     }
-                    let frag = Fragment {
-                        x: x as u32,
-                        y: y as u32,
-                        z: self.frag_z(batch, lane, quad, k),
-                        back_facing: prim.back,
-                        colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
-                    };
+                    frag.x = x as u32;
+                    frag.y = y as u32;
+                    frag.z = self.frag_z(batch, lane, quad, k);
+                    frag.back_facing = e.prim.back;
                     if let Some(index) = fragment_ops::tests(fb, origin, self.state, &frag) {
                         if let Some(slot) = winner.get_mut(index) {
-                            *slot = (p, quad.live);
+                            *slot = (e.index, quad.live);
                         }
                     }
                 }
             }
+            pending.clear();
             Ok(())
         };
         for &p in bin {
             let Some(prim) = prims.get(p as usize) else {
                 continue;
             };
-            let clip = (
-                prim.bounds.0.max(tile.0),
-                prim.bounds.1.max(tile.1),
-                prim.bounds.2.min(tile.2),
-                prim.bounds.3.min(tile.3),
-            );
-            for (qx, qy, mask) in prim.shape.quads(clip) {
-                pending.push((p, Quad::new(prim, qx, qy, mask)));
+            prim.shape.quads_into(clip_to(prim, tile), quads);
+            for &(qx, qy, mask) in quads.iter() {
+                pending.push(Entry {
+                    prim,
+                    index: p,
+                    quad: Quad::new(prim, qx, qy, mask),
+                    write: 0,
+                });
                 if pending.len() == LANES / 4 {
-                    depth_pass(fb, &mut winner, &pending, batch)?;
-                    pending.clear();
+                    depth_pass(fb, &mut winner, pending)?;
                 }
             }
         }
         if !pending.is_empty() {
-            depth_pass(fb, &mut winner, &pending, batch)?;
-            pending.clear();
+            depth_pass(fb, &mut winner, pending)?;
         }
 
         // Pass 2: (primitive, quad, coverage, lanes to write) per winner.
-        let mut todo: Vec<(u32, Quad, u8)> = Vec::with_capacity(LANES / 4);
-        let color_pass = |fb: &mut Framebuffer,
-                          todo: &[(u32, Quad, u8)],
-                          batch: &mut Batch|
-         -> Result<(), ExecError> {
-            let pairs: Vec<(&Prim, &Quad)> = todo
-                .iter()
-                .filter_map(|(p, q, _)| Some((prims.get(*p as usize)?, q)))
-                .collect();
-            self.fill(batch, &pairs);
-            self.shader.run(batch, self.uniforms, self.textures)?;
-            for (q, (_, quad, write)) in todo.iter().enumerate() {
-                for k in 0..4 {
-                    let lane = 4 * q + k;
-                    if write & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
-                        continue;
+        let mut color_pass =
+            |fb: &mut Framebuffer, todo: &mut Vec<Entry>| -> Result<(), ExecError> {
+                self.fill(batch, todo);
+                self.run_shader(batch)?;
+                let mut colors = [[0.0; 4]; MAX_DRAW_BUFFERS];
+                for (q, e) in todo.iter().enumerate() {
+                    for k in 0..4 {
+                        let lane = 4 * q + k;
+                        if e.write & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
+                            continue;
+                        }
+                        let (x, y) = e.quad.pixel(k);
+                        let lx = x as usize - origin.0 as usize;
+                        let ly = y as usize - origin.1 as usize;
+                        let index = ly * w + lx;
+                        self.colors_into(batch, lane, &mut colors);
+                        fragment_ops::write_colors(fb, index, self.state, &colors);
                     }
-                    let (x, y) = quad.pixel(k);
-                    let lx = x as usize - origin.0 as usize;
-                    let ly = y as usize - origin.1 as usize;
-                    let index = ly * w + lx;
-                    fragment_ops::write_colors(fb, index, self.state, &self.colors(batch, lane));
                 }
-            }
-            Ok(())
-        };
+                todo.clear();
+                Ok(())
+            };
         for ly in (0..h).step_by(2) {
             for lx in (0..w).step_by(2) {
                 // The quad's pixels (lane order) and their winners.
@@ -633,19 +785,33 @@ impl FragmentStage<'_> {
                         continue;
                     };
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
-                    todo.push((p, Quad::new(prim, qx, qy, live), write));
-                    if todo.len() == LANES / 4 {
-                        color_pass(fb, &todo, batch)?;
-                        todo.clear();
+                    pending.push(Entry {
+                        prim,
+                        index: p,
+                        quad: Quad::new(prim, qx, qy, live),
+                        write,
+                    });
+                    if pending.len() == LANES / 4 {
+                        color_pass(fb, pending)?;
                     }
                 }
             }
         }
-        if !todo.is_empty() {
-            color_pass(fb, &todo, batch)?;
+        if !pending.is_empty() {
+            color_pass(fb, pending)?;
         }
         Ok(())
     }
+}
+
+/// `prim`'s bounds inside `tile`.
+fn clip_to(prim: &Prim, tile: PixelRect) -> PixelRect {
+    (
+        prim.bounds.0.max(tile.0),
+        prim.bounds.1.max(tile.1),
+        prim.bounds.2.min(tile.2),
+        prim.bounds.3.min(tile.3),
+    )
 }
 
 fn set(batch: &mut Batch, component: usize, lane: usize, value: f32) {

@@ -3,10 +3,19 @@
 //! mipmap filters, the five wrap modes, cube face selection and depth
 //! texture comparison.
 //!
-//! Texels are RGBA f32 (the gl layer converts formats: LUMINANCE becomes
-//! (L, L, L, 1) and so on; depth textures keep the depth in component 0).
-//! Texture borders are not supported (border width 0); CLAMP and
-//! CLAMP_TO_BORDER sample the border color.
+//! Texels arrive as RGBA f32 (the gl layer converts formats: LUMINANCE
+//! becomes (L, L, L, 1) and so on; depth textures keep the depth in
+//! component 0). A level whose every component is exactly `k / 255` for
+//! an integer k (every unorm8 format: RGBA8, LUMINANCE8, ...) is stored as
+//! RGBA8 bytes instead (a quarter of the memory traffic) and read back
+//! through a table of those exact values, so the two storages sample to
+//! the same bits. Texture borders are not supported (border width 0);
+//! CLAMP and CLAMP_TO_BORDER sample the border color.
+//!
+//! 2D lookups without depth comparison on a texture with REPEAT,
+//! CLAMP_TO_EDGE or MIRRORED_REPEAT wrapping take a specialised path
+//! ([`crate::texture_2d`]) computing the same operations in the same order
+//! as the general one (tests compare the two bit for bit).
 
 use std::sync::Arc;
 
@@ -18,7 +27,8 @@ use glsl::types::SamplerKind;
 /// `floor(x)`, exact like `glsl::math::floor` (same bits, −0.0 and NaN
 /// included) but without the software rounding for the common case
 /// |x| < 2^23, where truncation to an integer is exact.
-fn floor(x: f32) -> f32 {
+#[inline(always)]
+pub(crate) fn floor(x: f32) -> f32 {
     let small = math::abs(x) < 8_388_608.0;
     if !small {
         return math::floor(x);
@@ -34,7 +44,8 @@ fn floor(x: f32) -> f32 {
 }
 
 /// `x - floor(x)`, as `glsl::math::fract`.
-fn fract(x: f32) -> f32 {
+#[inline(always)]
+pub(crate) fn fract(x: f32) -> f32 {
     x - floor(x)
 }
 
@@ -51,6 +62,65 @@ pub enum TextureTarget {
     Cube,
 }
 
+/// `k / 255` for every byte k, as `unorm8_to_float` computes it.
+pub(crate) const UNORM8: [f32; 256] = {
+    let mut t = [0.0f32; 256];
+    let mut k = 0;
+    while k < 256 {
+        t[k] = k as f32 / 255.0;
+        k += 1;
+    }
+    t
+};
+
+/// A level's texels: RGBA f32, or RGBA8 when that is exact.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Texels {
+    F32(Vec<[f32; 4]>),
+    Unorm8(Vec<[u8; 4]>),
+}
+
+impl Texels {
+    /// RGBA8 when every component is one of the 256 values of [`UNORM8`]
+    /// (bit for bit: −0.0 and NaN stay f32), else the f32 texels.
+    fn pack(texels: Vec<[f32; 4]>) -> Texels {
+        let byte = |x: f32| -> Option<u8> {
+            if !(0.0..=1.0).contains(&x) {
+                return None;
+            }
+            // x is in [0, 1]: the nearest k is in [0, 255].
+            let k = (x * 255.0 + 0.5) as u8;
+            (UNORM8[k as usize].to_bits() == x.to_bits()).then_some(k)
+        };
+        let mut packed = Vec::with_capacity(texels.len());
+        for t in &texels {
+            match (byte(t[0]), byte(t[1]), byte(t[2]), byte(t[3])) {
+                (Some(r), Some(g), Some(b), Some(a)) => packed.push([r, g, b, a]),
+                _ => return Texels::F32(texels),
+            }
+        }
+        Texels::Unorm8(packed)
+    }
+
+    fn len(&self) -> usize {
+        match self {
+            Texels::F32(v) => v.len(),
+            Texels::Unorm8(v) => v.len(),
+        }
+    }
+
+    #[inline]
+    pub(crate) fn get(&self, index: usize) -> [f32; 4] {
+        match self {
+            Texels::F32(v) => v.get(index).copied().unwrap_or(MISSING),
+            Texels::Unorm8(v) => v
+                .get(index)
+                .map(|t| t.map(|b| UNORM8[b as usize]))
+                .unwrap_or(MISSING),
+        }
+    }
+}
+
 /// One mipmap level: `width × height × depth` texels, row-major from the
 /// bottom row of the first layer (`(k * height + j) * width + i`).
 #[derive(Clone, Debug, PartialEq)]
@@ -58,25 +128,44 @@ pub struct Image {
     pub width: u32,
     pub height: u32,
     pub depth: u32,
-    pub texels: Vec<[f32; 4]>,
+    pub(crate) texels: Texels,
 }
 
 impl Image {
+    /// A level from its RGBA texels (stored as RGBA8 when that is exact,
+    /// see the module documentation).
     pub fn new(width: u32, height: u32, depth: u32, texels: Vec<[f32; 4]>) -> Image {
         Image {
             width,
             height,
             depth,
-            texels,
+            texels: Texels::pack(texels),
         }
+    }
+
+    /// Number of texels stored.
+    pub fn len(&self) -> usize {
+        self.texels.len()
+    }
+
+    /// Whether the level holds no texels.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Whether the level is stored as RGBA8 (see the module documentation).
+    pub fn is_unorm8(&self) -> bool {
+        matches!(self.texels, Texels::Unorm8(_))
+    }
+
+    /// Texel `index` (see the layout above), (0, 0, 0, 1) out of range.
+    pub fn texel_at(&self, index: usize) -> [f32; 4] {
+        self.texels.get(index)
     }
 
     fn texel(&self, i: usize, j: usize, k: usize) -> [f32; 4] {
         let (w, h) = (self.width as usize, self.height as usize);
-        self.texels
-            .get((k * h + j) * w + i)
-            .copied()
-            .unwrap_or([0.0, 0.0, 0.0, 1.0])
+        self.texels.get((k * h + j) * w + i)
     }
 }
 
@@ -197,7 +286,7 @@ impl Texture {
         let ok = |img: &Image, want: [u32; 3]| {
             let have = [self.size(img, 0), self.size(img, 1), self.size(img, 2)];
             have == want
-                && img.texels.len() == img.width as usize * img.height as usize * img.depth as usize
+                && img.len() == img.width as usize * img.height as usize * img.depth as usize
         };
         if dims.contains(&0) || !ok(b, dims) {
             return None;
@@ -244,10 +333,20 @@ pub struct TextureUnits {
     pub units: Vec<TextureUnit>,
 }
 
-const MISSING: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
+pub(crate) const MISSING: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
 
 impl Textures for TextureUnits {
     fn sample(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]) {
+        if !crate::texture_2d::sample(self, req, out) {
+            self.sample_general(req, out);
+        }
+    }
+}
+
+impl TextureUnits {
+    /// Every lookup, lane by lane (`texture_2d` is the fast path of the
+    /// common case, with the same results).
+    pub(crate) fn sample_general(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]) {
         // (unit, texture and its last level) of the previous lane: lanes
         // almost always share them, and completeness costs a walk over
         // every level.
@@ -274,9 +373,7 @@ impl Textures for TextureUnits {
             }
         }
     }
-}
 
-impl TextureUnits {
     /// The texture of `req`'s target bound to `unit` and its last level,
     /// or `None` (no such unit, nothing bound, incomplete).
     fn complete_texture(&self, req: &SampleRequest, unit: u32) -> Option<(&Texture, usize)> {
@@ -407,7 +504,45 @@ pub(crate) fn sample(
         (coord, None, lod)
     };
 
-    // GL 2.1 §3.8.8: λ = clamp(λ_base + clamp(biases), lod_min, lod_max).
+    let lambda = lambda(tex, base_img, derivs, extra_bias);
+    let reference = reference.map(|r| r.clamp(0.0, 1.0));
+    let one = |level: usize, linear: bool| -> [f32; 4] {
+        match tex.levels.get(level) {
+            Some(img) => filter(tex, img, st, layer, linear, reference),
+            None => MISSING,
+        }
+    };
+    let value = match select_levels(tex, q, lambda) {
+        Levels::One(level, linear) => one(level, linear),
+        Levels::Two(d1, d2, f, linear) => {
+            let (t1, t2) = (one(d1, linear), one(d2, linear));
+            mix_levels(t1, t2, f)
+        }
+    };
+    if tex.depth_format {
+        let r = value[0];
+        match tex.depth_mode {
+            DepthTextureMode::Luminance => [r, r, r, 1.0],
+            DepthTextureMode::Intensity => [r, r, r, r],
+            DepthTextureMode::Alpha => [0.0, 0.0, 0.0, r],
+        }
+    } else {
+        value
+    }
+}
+
+/// Eq. 3.29's blend of two levels' values, `(1 − f)·t1 + f·t2`.
+#[inline]
+pub(crate) fn mix_levels(t1: [f32; 4], t2: [f32; 4], f: f32) -> [f32; 4] {
+    std::array::from_fn(|i| (1.0 - f) * t1[i] + f * t2[i])
+}
+
+/// GL 2.1 §3.8.8: λ = clamp(λ_base + clamp(biases), lod_min, lod_max),
+/// λ_base from the derivatives of the (face) coordinates scaled by the
+/// base level's size, or given. `extra_bias` is the unit's bias plus the
+/// shader's.
+#[inline(always)]
+pub(crate) fn lambda(tex: &Texture, base_img: &Image, derivs: LodBase, extra_bias: f32) -> f32 {
     let lambda_base = match derivs {
         LodBase::Value(v) => v,
         LodBase::Derivatives(dx, dy) => {
@@ -431,7 +566,22 @@ pub(crate) fn sample(
     if lambda < tex.min_lod {
         lambda = tex.min_lod;
     }
+    lambda
+}
 
+/// The level(s) a lookup reads and whether each is filtered LINEAR.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Levels {
+    One(usize, bool),
+    /// Levels d1 and d2 blended with weight f on d2 ([`mix_levels`]).
+    Two(usize, usize, f32, bool),
+}
+
+/// GL 2.1 §3.8.8–3.8.9: the levels for λ (from [`lambda`]) on `tex`,
+/// complete with last level `q`.
+#[inline(always)]
+pub(crate) fn select_levels(tex: &Texture, q: usize, lambda: f32) -> Levels {
+    let base = tex.base_level as usize;
     // §3.8.9: the magnification / minification switch-over point c.
     let c = if tex.mag_filter == MagFilter::Linear
         && matches!(
@@ -442,56 +592,36 @@ pub(crate) fn sample(
     } else {
         0.0
     };
-    let reference = reference.map(|r| r.clamp(0.0, 1.0));
-    let one = |level: usize, linear: bool| -> [f32; 4] {
-        match tex.levels.get(level) {
-            Some(img) => filter(tex, img, st, layer, linear, reference),
-            None => MISSING,
+    if lambda.is_nan() || lambda <= c {
+        return Levels::One(base, tex.mag_filter == MagFilter::Linear);
+    }
+    let lb = base as f32 + lambda;
+    match tex.min_filter {
+        MinFilter::Nearest => Levels::One(base, false),
+        MinFilter::Linear => Levels::One(base, true),
+        MinFilter::NearestMipmapNearest | MinFilter::LinearMipmapNearest => {
+            let linear = tex.min_filter == MinFilter::LinearMipmapNearest;
+            // Eq. 3.27.
+            let d = if lambda <= 0.5 {
+                base
+            } else if lb <= q as f32 + 0.5 {
+                ((math::ceil(lb + 0.5) - 1.0) as i64).clamp(base as i64, q as i64) as usize
+            } else {
+                q
+            };
+            Levels::One(d, linear)
         }
-    };
-    let value = if lambda.is_nan() || lambda <= c {
-        one(base, tex.mag_filter == MagFilter::Linear)
-    } else {
-        let lb = base as f32 + lambda;
-        match tex.min_filter {
-            MinFilter::Nearest => one(base, false),
-            MinFilter::Linear => one(base, true),
-            MinFilter::NearestMipmapNearest | MinFilter::LinearMipmapNearest => {
-                let linear = tex.min_filter == MinFilter::LinearMipmapNearest;
-                // Eq. 3.27.
-                let d = if lambda <= 0.5 {
-                    base
-                } else if lb <= q as f32 + 0.5 {
-                    ((math::ceil(lb + 0.5) - 1.0) as i64).clamp(base as i64, q as i64) as usize
-                } else {
-                    q
-                };
-                one(d, linear)
-            }
-            MinFilter::NearestMipmapLinear | MinFilter::LinearMipmapLinear => {
-                let linear = tex.min_filter == MinFilter::LinearMipmapLinear;
-                // Eq. 3.28/3.29.
-                if lb >= q as f32 {
-                    one(q, linear)
-                } else {
-                    let d1 = (floor(lb) as i64).clamp(base as i64, q as i64) as usize;
-                    let d2 = (d1 + 1).min(q);
-                    let f = fract(lambda);
-                    let (t1, t2) = (one(d1, linear), one(d2, linear));
-                    std::array::from_fn(|i| (1.0 - f) * t1[i] + f * t2[i])
-                }
+        MinFilter::NearestMipmapLinear | MinFilter::LinearMipmapLinear => {
+            let linear = tex.min_filter == MinFilter::LinearMipmapLinear;
+            // Eq. 3.28/3.29.
+            if lb >= q as f32 {
+                Levels::One(q, linear)
+            } else {
+                let d1 = (floor(lb) as i64).clamp(base as i64, q as i64) as usize;
+                let d2 = (d1 + 1).min(q);
+                Levels::Two(d1, d2, fract(lambda), linear)
             }
         }
-    };
-    if tex.depth_format {
-        let r = value[0];
-        match tex.depth_mode {
-            DepthTextureMode::Luminance => [r, r, r, 1.0],
-            DepthTextureMode::Intensity => [r, r, r, r],
-            DepthTextureMode::Alpha => [0.0, 0.0, 0.0, r],
-        }
-    } else {
-        value
     }
 }
 
@@ -509,7 +639,8 @@ fn mirror(f: f32) -> f32 {
 }
 
 /// GL 2.1 §3.8.7: the coordinate after wrapping (before scaling by size).
-fn wrap_coord(s: f32, wrap: Wrap, n: u32) -> f32 {
+#[inline(always)]
+pub(crate) fn wrap_coord(s: f32, wrap: Wrap, n: u32) -> f32 {
     let half = 0.5 / n as f32;
     match wrap {
         Wrap::Repeat => fract(s),
@@ -520,7 +651,8 @@ fn wrap_coord(s: f32, wrap: Wrap, n: u32) -> f32 {
     }
 }
 
-fn index(i: i64, wrap: Wrap, n: u32) -> Texel {
+#[inline(always)]
+pub(crate) fn index(i: i64, wrap: Wrap, n: u32) -> Texel {
     let n = n as i64;
     match wrap {
         // Linear filtering asks for -1 and n at the edges, otherwise the

@@ -99,8 +99,8 @@ fn matches_mesa() {
     );
     let molecule = crambin();
     let mut failures = Vec::new();
-    println!("| scene | within 2/255 | beyond 8/255 | max diff |");
-    println!("| --- | --- | --- | --- |");
+    println!("| scene | within 2/255 | beyond 8/255 | max diff | first pixels beyond |");
+    println!("| --- | --- | --- | --- | --- |");
     let step = if cfg!(debug_assertions) { 6 } else { 1 };
     for name in names.iter().step_by(step) {
         let opts = options(name);
@@ -141,10 +141,18 @@ fn matches_mesa() {
         };
         let not_edge = beyond.iter().filter(|i| !at_edge(**i)).count();
         let share = within as f64 / mesa.len() as f64;
+        // The first few pixels beyond 8/255 (x, y from the top left), to
+        // feed `shaderbox debug --pixel`.
+        let at: Vec<String> = beyond
+            .iter()
+            .take(4)
+            .map(|i| format!("{},{}", *i as i64 % w, *i as i64 / w))
+            .collect();
         println!(
-            "| {name} | {:.3}% | {} | {max} |",
+            "| {name} | {:.3}% | {} | {max} | {} |",
             share * 100.0,
-            beyond.len()
+            beyond.len(),
+            at.join(" ")
         );
         if share < 0.995 || beyond.len() > MAX_BEYOND_8 || not_edge > 0 {
             failures.push(format!(

@@ -93,6 +93,19 @@ fn every_variant_computes_the_same_bytes() {
                     );
                 }
             }
+            if variants.contains(&Variant::Jit) {
+                // Inlined programs run as native code; subroutines are
+                // interpreted.
+                let calls = k
+                    .code
+                    .ins
+                    .iter()
+                    .any(|i| matches!(i.op, crate::program::Op::Call { .. }));
+                match (calls, k.native_code()) {
+                    (true, Some(Err(_))) | (false, Some(Ok(_))) => {}
+                    (_, s) => panic!("shader {n} limit {limit}: native code {s:?}"),
+                }
+            }
         }
     }
 }

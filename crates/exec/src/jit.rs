@@ -1,0 +1,299 @@
+//! The native-code backend: a kernel's rewritten program ([`Code`]: the
+//! prologue and the executor's ops) compiled by Cranelift into one machine
+//! function, run instead of the interpreter loop of `engine`.
+//!
+//! Why Cranelift: it is maintained (the Bytecode Alliance's code generator
+//! of Wasmtime), pure Rust (no LLVM to install, builds with cargo alone),
+//! generates x86-64 and aarch64 (and riscv64, s390x), compiles a function
+//! in milliseconds, and never contracts `a * b + c` into a fused
+//! multiply-add, so IEEE results are those of the interpreter.
+//!
+//! ## Shape of the generated code
+//! The register file stays in memory (the thread's `engine` file, the same
+//! layout: a register is 16 `u32` lanes, 64 bytes). Each op loads its
+//! operands as four 4-lane vectors, computes, and stores; a fused masked
+//! store blends with the current-mask vectors. The current mask (a lane
+//! bit set plus its four expanded vectors), the mask slots, the discarded
+//! lanes and the loop counter live in SSA variables; the program's
+//! structured jumps become branches between blocks. The function takes one
+//! pointer, to a [`Ctx`], and returns 0, or 1 when the loop budget ran
+//! out.
+//!
+//! ## Same bits as the interpreter
+//! Arithmetic, comparisons, conversions (float→int saturating as Rust `as`
+//! does), selects, `min`/`max` with their NaN rule, `abs`, `sign`,
+//! `floor`/`ceil`/`fract`/`mod`, `sqrt`, `inversesqrt`, `step`, `clamp`,
+//! `mix`, `smoothstep` and dot products are emitted inline as the same IEEE
+//! operations in the same order, each result flushed as `engine::ftz` does.
+//! Everything else (the transcendental functions, integer division,
+//! gathers and scatters, uniform reads outside the prologue, derivatives,
+//! noise, texture lookups) calls back into Rust: `jit_f1`/`jit_f2` run the
+//! engine's own lane functions, `jit_step` the engine's own `step` on the
+//! op, so those compute the interpreter's bits by construction.
+//!
+//! ## When it is used
+//! With the `jit` variant (the default where Cranelift supports the CPU), a
+//! kernel is compiled on its [`COMPILE_AFTER_RUNS`]-th run, by one thread
+//! (the others keep interpreting meanwhile), and cached for the kernel and
+//! its clones. Programs with subroutine calls, or over [`MAX_OPS`] ops,
+//! stay on the interpreter, as does any kernel Cranelift fails on (the
+//! reason is kept: [`crate::Kernel::native_code`]; `SHADERBOX_JIT_LOG=1`
+//! prints it).
+
+mod codegen;
+
+use crate::engine::{self, Code, Lanes};
+use crate::interp::FULL;
+use crate::program::{F1, F2};
+use crate::{Batch, ExecError, Kernel, Textures};
+use std::any::Any;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::atomic::{AtomicU32, Ordering};
+use std::sync::{Mutex, OnceLock, TryLockError};
+
+/// Programs with more executor ops than this stay on the interpreter
+/// (compile time grows with the size; such programs are rare).
+pub(crate) const MAX_OPS: usize = 6000;
+
+/// A kernel is compiled when it starts its run number this (a kernel that
+/// runs fewer batches would not win back the compile time).
+pub const COMPILE_AFTER_RUNS: u32 = 32;
+
+/// What the generated function receives. `#[repr(C)]`: the native code
+/// reads and writes the fields before `code` at their offsets.
+#[repr(C)]
+pub(crate) struct Ctx<'a> {
+    /// The register file (`code.prog.registers` registers).
+    regs: *mut Lanes,
+    /// Loop budget of the run.
+    budget: u64,
+    /// Out: the iteration count when the budget ran out.
+    iterations: u64,
+    /// Lanes running at the start.
+    start: u32,
+    /// Out: lanes that executed `discard`.
+    discarded: u32,
+    /// Whether to run the prologue (no prepared pool).
+    prologue: u32,
+    _pad: u32,
+    /// Where `jit_f1`/`jit_f2` put their result.
+    scratch: Lanes,
+    code: &'a Code,
+    uniforms: &'a [u32],
+    textures: &'a dyn Textures,
+    /// A panic caught in a helper, resumed after the native code returns.
+    panic: Option<Box<dyn Any + Send>>,
+}
+
+type Entry = unsafe extern "C" fn(*mut Ctx) -> u32;
+
+/// A compiled kernel: the code memory and its entry point.
+pub(crate) struct Native {
+    module: Option<cranelift_jit::JITModule>,
+    entry: Entry,
+    /// Size of the machine code in bytes.
+    pub bytes: usize,
+}
+
+// SAFETY: after `finalize_definitions` the module's code memory is never
+// written again; the entry point is a plain function whose only state is
+// its `Ctx` argument, so it may run on several threads at once. The module
+// itself is only touched again by `Drop`, which has exclusive access.
+unsafe impl Send for Native {}
+// SAFETY: as above; `&Native` only gives access to `entry` and `bytes`.
+unsafe impl Sync for Native {}
+
+impl Drop for Native {
+    fn drop(&mut self) {
+        if let Some(m) = self.module.take() {
+            // SAFETY: the function pointer dies with `self`; no run can be
+            // executing it (runs borrow the kernel that owns `self`).
+            unsafe { m.free_memory() };
+        }
+    }
+}
+
+/// The compiled code of one kernel (shared by its clones), made on demand.
+#[derive(Default)]
+pub(crate) struct Cache {
+    runs: AtomicU32,
+    /// Held while compiling.
+    compiling: Mutex<()>,
+    slot: OnceLock<Result<Native, String>>,
+}
+
+impl std::fmt::Debug for Cache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.slot.get() {
+            None => write!(f, "Cache(not compiled)"),
+            Some(Ok(n)) => write!(f, "Cache({} bytes)", n.bytes),
+            Some(Err(e)) => write!(f, "Cache(interpreted: {e})"),
+        }
+    }
+}
+
+impl Cache {
+    /// The native code for `code`, compiling it now if `force` or this is
+    /// the [`COMPILE_AFTER_RUNS`]-th call and no other thread is at it.
+    pub(crate) fn get(&self, code: &Code, force: bool) -> Option<&Native> {
+        if let Some(r) = self.slot.get() {
+            return r.as_ref().ok();
+        }
+        if !force && self.runs.fetch_add(1, Ordering::Relaxed) + 1 < COMPILE_AFTER_RUNS {
+            return None;
+        }
+        // Another thread compiling: a forced caller waits for it, the
+        // others keep interpreting.
+        let _guard = if force {
+            self.compiling.lock().unwrap_or_else(|e| e.into_inner())
+        } else {
+            match self.compiling.try_lock() {
+                Ok(g) => g,
+                Err(TryLockError::Poisoned(e)) => e.into_inner(),
+                Err(TryLockError::WouldBlock) => return None,
+            }
+        };
+        if let Some(r) = self.slot.get() {
+            return r.as_ref().ok();
+        }
+        let r = catch_unwind(AssertUnwindSafe(|| codegen::compile(code)))
+            .unwrap_or_else(|_| Err("the code generator panicked".to_string()));
+        if let Err(e) = &r {
+            if std::env::var_os("SHADERBOX_JIT_LOG").is_some_and(|v| v == "1") {
+                eprintln!("shaderbox: kernel stays on the interpreter: {e}");
+            }
+        }
+        let _ = self.slot.set(r);
+        self.slot.get().and_then(|r| r.as_ref().ok())
+    }
+
+    /// `None` before compilation, else `Ok(code size)` or why the kernel
+    /// stays on the interpreter.
+    pub(crate) fn status(&self) -> Option<Result<usize, String>> {
+        self.slot.get().map(|r| match r {
+            Ok(n) => Ok(n.bytes),
+            Err(e) => Err(e.clone()),
+        })
+    }
+}
+
+/// Whether Cranelift generates code for this CPU (checked once).
+pub(crate) fn supported() -> bool {
+    static OK: OnceLock<bool> = OnceLock::new();
+    *OK.get_or_init(|| codegen::isa().is_ok())
+}
+
+/// [`engine::run`]'s body with native code: same register file set-up and
+/// output copy, the interpreter loop replaced by `native`.
+pub(crate) fn run(
+    native: &Native,
+    k: &Kernel,
+    code: &Code,
+    file: &mut Vec<Lanes>,
+    batch: &mut Batch,
+    uniforms: &[u32],
+    textures: &dyn Textures,
+    pool: Option<&[Lanes]>,
+) -> Result<(), ExecError> {
+    let run_prologue = engine::load(k, code, file, batch, pool);
+    batch.discarded = 0;
+    let mut ctx = Ctx {
+        regs: file.as_mut_ptr(),
+        budget: k.loop_budget,
+        iterations: 0,
+        start: (batch.active | batch.helper) & FULL,
+        discarded: 0,
+        prologue: run_prologue as u32,
+        _pad: 0,
+        scratch: [0; crate::LANES],
+        code,
+        uniforms,
+        textures,
+        panic: None,
+    };
+    // SAFETY: `native` was compiled from `code` (the kernel's cache), whose
+    // registers and side tables were validated; `load` sized the file to
+    // `code.prog.registers`; `ctx` outlives the call.
+    let status = unsafe { (native.entry)(&mut ctx) };
+    if let Some(p) = ctx.panic.take() {
+        std::panic::resume_unwind(p);
+    }
+    if status != 0 {
+        return Err(ExecError::LoopBudget {
+            iterations: ctx.iterations,
+        });
+    }
+    batch.discarded = ctx.discarded;
+    engine::store_outputs(k, file, batch);
+    Ok(())
+}
+
+/// Flag of `jit_step`'s index: an op of the prologue, not of the body.
+const PROLOGUE_OP: u32 = 1 << 31;
+
+/// Runs op `index` of the body (or of the prologue, with [`PROLOGUE_OP`])
+/// with the engine's own `step`, on the lanes of `cur`.
+///
+/// # Safety
+/// `ctx` must be the live context of a run of native code compiled from
+/// `ctx.code`, and `index` an op of it.
+unsafe extern "C" fn jit_step(ctx: *mut Ctx, index: u32, cur: u32) {
+    let ctx = &mut *ctx;
+    if ctx.panic.is_some() {
+        return;
+    }
+    let code = ctx.code;
+    let ins = if index & PROLOGUE_OP != 0 {
+        code.prologue
+            .get((index & !PROLOGUE_OP) as usize)
+            .map(|&op| engine::Ins { op, masked: false })
+    } else {
+        code.ins.get(index as usize).copied()
+    };
+    let Some(ins) = ins else { return };
+    let (regs, uniforms, textures) = (ctx.regs, ctx.uniforms, ctx.textures);
+    // SAFETY: the op was validated against the file's register count.
+    let r = catch_unwind(AssertUnwindSafe(|| unsafe {
+        engine::step_data(code, regs, &ins, cur, uniforms, textures)
+    }));
+    if let Err(p) = r {
+        ctx.panic = Some(p);
+    }
+}
+
+/// The functions of one float the native code calls (index = argument).
+const F1_CALLED: [F1; 10] = [
+    F1::Sin,
+    F1::Cos,
+    F1::Tan,
+    F1::Asin,
+    F1::Acos,
+    F1::Atan,
+    F1::Exp,
+    F1::Log,
+    F1::Exp2,
+    F1::Log2,
+];
+
+/// The functions of two floats the native code calls.
+const F2_CALLED: [F2; 2] = [F2::Atan2, F2::Pow];
+
+/// `out = engine::f1(F1_CALLED[func], a)`.
+///
+/// # Safety
+/// `out` and `a` must point to registers (`a` may equal `out`).
+unsafe extern "C" fn jit_f1(func: u32, out: *mut Lanes, a: *const Lanes) {
+    if let Some(&f) = F1_CALLED.get(func as usize) {
+        *out = engine::f1(f, &*a);
+    }
+}
+
+/// `out = engine::f2(F2_CALLED[func], a, b)`.
+///
+/// # Safety
+/// As for [`jit_f1`].
+unsafe extern "C" fn jit_f2(func: u32, out: *mut Lanes, a: *const Lanes, b: *const Lanes) {
+    if let Some(&f) = F2_CALLED.get(func as usize) {
+        *out = engine::f2(f, &*a, &*b);
+    }
+}

@@ -1,0 +1,886 @@
+//! Cranelift IR for a [`Code`]: one function `fn(*mut Ctx) -> u32`.
+
+use super::PROLOGUE_OP;
+use super::{jit_f1, jit_f2, jit_step, Ctx, Entry, Native, F1_CALLED, F2_CALLED, MAX_OPS};
+use crate::engine::{Code, Ins};
+use crate::program::{Op, Reg, F1, F2, F3};
+use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
+use cranelift_codegen::ir::types::{F32X4, I32, I32X4, I64};
+use cranelift_codegen::ir::{
+    AbiParam, Block, BlockArg, ConstantData, InstBuilder, MemFlagsData, SigRef, Signature, Type,
+    UserFuncName, Value,
+};
+use cranelift_codegen::isa::OwnedTargetIsa;
+use cranelift_codegen::settings::{self, Configurable};
+use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext, Variable};
+use cranelift_jit::{JITBuilder, JITModule};
+use cranelift_module::{default_libcall_names, Linkage, Module};
+use std::mem::offset_of;
+
+/// The host's instruction set, as Cranelift targets it.
+pub(super) fn isa() -> Result<OwnedTargetIsa, String> {
+    let mut flags = settings::builder();
+    let set = |f: &mut settings::Builder, k: &str, v: &str| {
+        f.set(k, v)
+            .map_err(|e| format!("cranelift setting {k}={v}: {e}"))
+    };
+    set(&mut flags, "opt_level", "speed")?;
+    set(&mut flags, "use_colocated_libcalls", "false")?;
+    set(&mut flags, "is_pic", "false")?;
+    set(
+        &mut flags,
+        "enable_verifier",
+        if cfg!(debug_assertions) {
+            "true"
+        } else {
+            "false"
+        },
+    )?;
+    let builder = cranelift_native::builder()
+        .map_err(|e| format!("Cranelift does not support this CPU: {e}"))?;
+    builder
+        .finish(settings::Flags::new(flags))
+        .map_err(|e| format!("Cranelift does not support this CPU: {e}"))
+}
+
+/// Compiles `code`; `Err` says why it stays on the interpreter.
+pub(super) fn compile(code: &Code) -> Result<Native, String> {
+    if code.ins.len() > MAX_OPS {
+        return Err(format!(
+            "{} ops (native code is made for at most {MAX_OPS})",
+            code.ins.len()
+        ));
+    }
+    for i in &code.ins {
+        if let Op::Call { .. } | Op::Ret { .. } = i.op {
+            return Err("subroutine calls are interpreted".to_string());
+        }
+    }
+    let isa = isa()?;
+    let mut module = JITModule::new(JITBuilder::with_isa(isa, default_libcall_names()));
+    let r = define(&mut module, code);
+    match r {
+        Ok((id, bytes)) => {
+            if let Err(e) = module.finalize_definitions() {
+                // SAFETY: nothing of the module was handed out.
+                unsafe { module.free_memory() };
+                return Err(format!("cranelift: {e}"));
+            }
+            let ptr = module.get_finalized_function(id);
+            // SAFETY: the function was defined with the signature
+            // `fn(ptr) -> i32` in the host's C calling convention.
+            let entry = unsafe { std::mem::transmute::<*const u8, Entry>(ptr) };
+            Ok(Native {
+                module: Some(module),
+                entry,
+                bytes,
+            })
+        }
+        Err(e) => {
+            // SAFETY: as above.
+            unsafe { module.free_memory() };
+            Err(e)
+        }
+    }
+}
+
+fn define(
+    module: &mut JITModule,
+    code: &Code,
+) -> Result<(cranelift_module::FuncId, usize), String> {
+    let ptr = module.target_config().pointer_type();
+    let mut sig = module.make_signature();
+    sig.params.push(AbiParam::new(ptr));
+    sig.returns.push(AbiParam::new(I32));
+    let id = module
+        .declare_function("kernel", Linkage::Local, &sig)
+        .map_err(|e| format!("cranelift: {e}"))?;
+    let mut ctx = module.make_context();
+    ctx.func.signature = sig;
+    ctx.func.name = UserFuncName::user(0, id.as_u32());
+    let mut fctx = FunctionBuilderContext::new();
+    {
+        let b = FunctionBuilder::new(&mut ctx.func, &mut fctx);
+        let mut e = Emit::new(b, module, code, ptr);
+        e.body()?;
+        e.b.seal_all_blocks();
+        e.b.finalize(module.target_config());
+    }
+    module
+        .define_function(id, &mut ctx)
+        .map_err(|e| format!("cranelift: {e:?}"))?;
+    let bytes = ctx
+        .compiled_code()
+        .map(|c| c.code_buffer().len())
+        .unwrap_or(0);
+    Ok((id, bytes))
+}
+
+fn helper_sig(module: &JITModule, ptr: Type, params: &[Type]) -> Signature {
+    let mut s = module.make_signature();
+    for &p in params {
+        s.params.push(AbiParam::new(if p == I64 { ptr } else { p }));
+    }
+    s
+}
+
+/// Lane `l` of vector `q` is lane `4q + l` of a register.
+const QUARTERS: usize = 4;
+const SIGN: u32 = 0x8000_0000;
+const ONE: u32 = 0x3f80_0000;
+
+struct Emit<'a, 'b> {
+    b: FunctionBuilder<'b>,
+    code: &'a Code,
+    ptr: Type,
+    ctx: Value,
+    regs: Value,
+    budget: Value,
+    cur: Variable,
+    mk: [Variable; QUARTERS],
+    masks: Vec<Variable>,
+    discarded: Variable,
+    iterations: Variable,
+    sig_step: SigRef,
+    sig_f1: SigRef,
+    sig_f2: SigRef,
+    /// Where the loop budget ran out (block parameter: the count).
+    fail: Block,
+}
+
+fn mem() -> MemFlagsData {
+    MemFlagsData::new().with_notrap()
+}
+
+impl<'a, 'b> Emit<'a, 'b> {
+    fn new(mut b: FunctionBuilder<'b>, module: &JITModule, code: &'a Code, ptr: Type) -> Self {
+        let entry = b.create_block();
+        b.append_block_params_for_function_params(entry);
+        b.switch_to_block(entry);
+        let ctx = b.block_params(entry)[0];
+        let regs = b.ins().load(ptr, mem(), ctx, offset_of!(Ctx, regs) as i32);
+        let budget = b
+            .ins()
+            .load(I64, mem(), ctx, offset_of!(Ctx, budget) as i32);
+        let cur = b.declare_var(I32);
+        let mk = [(); QUARTERS].map(|_| b.declare_var(I32X4));
+        let masks = (0..code.prog.mask_slots)
+            .map(|_| b.declare_var(I32))
+            .collect::<Vec<_>>();
+        let discarded = b.declare_var(I32);
+        let iterations = b.declare_var(I64);
+        let sig_step = b.import_signature(helper_sig(module, ptr, &[I64, I32, I32]));
+        let sig_f1 = b.import_signature(helper_sig(module, ptr, &[I32, I64, I64]));
+        let sig_f2 = b.import_signature(helper_sig(module, ptr, &[I32, I64, I64, I64]));
+        let fail = b.create_block();
+        b.append_block_param(fail, I64);
+        let mut e = Emit {
+            b,
+            code,
+            ptr,
+            ctx,
+            regs,
+            budget,
+            cur,
+            mk,
+            masks,
+            discarded,
+            iterations,
+            sig_step,
+            sig_f1,
+            sig_f2,
+            fail,
+        };
+        let zero = e.b.ins().iconst(I32, 0);
+        for &m in &e.masks {
+            e.b.def_var(m, zero);
+        }
+        e.b.def_var(e.discarded, zero);
+        let zero64 = e.b.ins().iconst(I64, 0);
+        e.b.def_var(e.iterations, zero64);
+        let start =
+            e.b.ins()
+                .load(I32, mem(), ctx, offset_of!(Ctx, start) as i32);
+        e.set_cur(start);
+        e
+    }
+
+    // ---- values -------------------------------------------------------
+
+    fn splat(&mut self, bits: u32) -> Value {
+        let k = self.b.ins().iconst(I32, bits as i32 as i64);
+        self.b.ins().splat(I32X4, k)
+    }
+
+    fn vconst(&mut self, lanes: [u32; 4]) -> Value {
+        let bytes: Vec<u8> = lanes.iter().flat_map(|l| l.to_le_bytes()).collect();
+        let c = self.b.func.dfg.constants.insert(ConstantData::from(bytes));
+        self.b.ins().vconst(I32X4, c)
+    }
+
+    fn fv(&mut self, v: Value) -> Value {
+        self.b.ins().bitcast(F32X4, MemFlagsData::new(), v)
+    }
+
+    fn iv(&mut self, v: Value) -> Value {
+        self.b.ins().bitcast(I32X4, MemFlagsData::new(), v)
+    }
+
+    fn offset(r: Reg, q: usize) -> i32 {
+        (r as usize * 64 + q * 16) as i32
+    }
+
+    /// Quarter `q` of register `r` (as I32X4).
+    fn ld(&mut self, r: Reg, q: usize) -> Value {
+        self.b
+            .ins()
+            .load(I32X4, mem(), self.regs, Self::offset(r, q))
+    }
+
+    /// Quarter `q` of register `r` as F32X4.
+    fn ldf(&mut self, r: Reg, q: usize) -> Value {
+        self.b
+            .ins()
+            .load(F32X4, mem(), self.regs, Self::offset(r, q))
+    }
+
+    /// Stores `v` (I32X4) into quarter `q` of `d`, under the current mask
+    /// when `masked`.
+    fn put(&mut self, d: Reg, q: usize, v: Value, masked: bool) {
+        let v = if masked {
+            let old = self.ld(d, q);
+            let m = self.b.use_var(self.mk[q]);
+            self.b.ins().bitselect(m, v, old)
+        } else {
+            v
+        };
+        self.b.ins().store(mem(), v, self.regs, Self::offset(d, q));
+    }
+
+    /// `engine::ftz` of an F32X4, as I32X4: a subnormal keeps only its
+    /// sign.
+    fn ftz(&mut self, x: Value) -> Value {
+        let b = self.iv(x);
+        let exp = self.splat(0x7f80_0000);
+        let e = self.b.ins().band(b, exp);
+        let zero = self.splat(0);
+        let z = self.b.ins().icmp(IntCC::Equal, e, zero);
+        let mag = self.splat(!SIGN);
+        let drop = self.b.ins().band(z, mag);
+        self.b.ins().band_not(b, drop)
+    }
+
+    /// 0/1 from an all-ones/zero lane mask.
+    fn bool01(&mut self, m: Value) -> Value {
+        let one = self.splat(1);
+        self.b.ins().band(m, one)
+    }
+
+    fn nonzero(&mut self, v: Value) -> Value {
+        let zero = self.splat(0);
+        self.b.ins().icmp(IntCC::NotEqual, v, zero)
+    }
+
+    /// `engine::fmin`: `y` if `x` is NaN or `y < x`, else `x` (F32X4 in,
+    /// F32X4 out).
+    fn fmin(&mut self, x: Value, y: Value) -> Value {
+        let nan = self.b.ins().fcmp(FloatCC::Unordered, x, x);
+        let lt = self.b.ins().fcmp(FloatCC::LessThan, y, x);
+        let c = self.b.ins().bor(nan, lt);
+        let (xi, yi) = (self.iv(x), self.iv(y));
+        let r = self.b.ins().bitselect(c, yi, xi);
+        self.fv(r)
+    }
+
+    /// `engine::fmax`: `y` if `x` is NaN or `x < y`, else `x`.
+    fn fmax(&mut self, x: Value, y: Value) -> Value {
+        let nan = self.b.ins().fcmp(FloatCC::Unordered, x, x);
+        let lt = self.b.ins().fcmp(FloatCC::LessThan, x, y);
+        let c = self.b.ins().bor(nan, lt);
+        let (xi, yi) = (self.iv(x), self.iv(y));
+        let r = self.b.ins().bitselect(c, yi, xi);
+        self.fv(r)
+    }
+
+    /// `engine::floor`: IEEE floor, NaN returned as it is (bits kept).
+    fn floor(&mut self, x: Value) -> Value {
+        let r = self.b.ins().floor(x);
+        self.keep_nan(x, r)
+    }
+
+    fn ceil(&mut self, x: Value) -> Value {
+        let r = self.b.ins().ceil(x);
+        self.keep_nan(x, r)
+    }
+
+    fn keep_nan(&mut self, x: Value, r: Value) -> Value {
+        let nan = self.b.ins().fcmp(FloatCC::Unordered, x, x);
+        let (xi, ri) = (self.iv(x), self.iv(r));
+        let v = self.b.ins().bitselect(nan, xi, ri);
+        self.fv(v)
+    }
+
+    fn fconst(&mut self, x: f32) -> Value {
+        let v = self.splat(x.to_bits());
+        self.fv(v)
+    }
+
+    // ---- masks ---------------------------------------------------------
+
+    /// `cur = v` and its expanded vectors.
+    fn set_cur(&mut self, v: Value) {
+        self.b.def_var(self.cur, v);
+        let s = self.b.ins().splat(I32X4, v);
+        for q in 0..QUARTERS {
+            let s4 = (4 * q) as u32;
+            let bits = self.vconst([1 << s4, 2 << s4, 4 << s4, 8 << s4]);
+            let m = self.b.ins().band(s, bits);
+            let m = self.nonzero(m);
+            self.b.def_var(self.mk[q], m);
+        }
+    }
+
+    /// Lane bits where register `c` is nonzero, and the per-quarter masks.
+    fn lane_bits(&mut self, c: Reg) -> (Value, [Value; QUARTERS]) {
+        let mut bits = self.b.ins().iconst(I32, 0);
+        let mut ms = [bits; QUARTERS];
+        for (q, m_out) in ms.iter_mut().enumerate() {
+            let v = self.ld(c, q);
+            let m = self.nonzero(v);
+            *m_out = m;
+            let hb = self.b.ins().vhigh_bits(I32, m);
+            let hb = if q > 0 {
+                self.b.ins().ishl_imm_u(hb, (4 * q) as i64)
+            } else {
+                hb
+            };
+            bits = self.b.ins().bor(bits, hb);
+        }
+        (bits, ms)
+    }
+
+    fn mask_var(&self, slot: u32) -> Result<Variable, String> {
+        self.masks
+            .get(slot as usize)
+            .copied()
+            .ok_or_else(|| format!("mask slot {slot} out of range"))
+    }
+
+    fn kill_slots(&self, start: u32, end: u32) -> Result<Vec<Variable>, String> {
+        let slots = self
+            .code
+            .prog
+            .kill_slots
+            .get(start as usize..end as usize)
+            .ok_or("kill slots out of range")?;
+        slots.iter().map(|&s| self.mask_var(s)).collect()
+    }
+
+    // ---- calls ---------------------------------------------------------
+
+    fn call_step(&mut self, index: u32) {
+        let f = self.b.ins().iconst(self.ptr, jit_step as *const () as i64);
+        let i = self.b.ins().iconst(I32, index as i32 as i64);
+        let cur = self.b.use_var(self.cur);
+        let ctx = self.ctx;
+        self.b.ins().call_indirect(self.sig_step, f, &[ctx, i, cur]);
+    }
+
+    fn reg_ptr(&mut self, r: Reg) -> Value {
+        self.b.ins().iadd_imm_s(self.regs, r as i64 * 64)
+    }
+
+    /// Calls `jit_f1`/`jit_f2` into the scratch register, then copies it
+    /// to `d` (under the mask when `masked`).
+    fn call_math(&mut self, two: bool, func: usize, d: Reg, a: Reg, b: Reg, masked: bool) {
+        let out = self
+            .b
+            .ins()
+            .iadd_imm_s(self.ctx, offset_of!(Ctx, scratch) as i64);
+        let fi = self.b.ins().iconst(I32, func as i64);
+        let pa = self.reg_ptr(a);
+        if two {
+            let pb = self.reg_ptr(b);
+            let f = self.b.ins().iconst(self.ptr, jit_f2 as *const () as i64);
+            self.b
+                .ins()
+                .call_indirect(self.sig_f2, f, &[fi, out, pa, pb]);
+        } else {
+            let f = self.b.ins().iconst(self.ptr, jit_f1 as *const () as i64);
+            self.b.ins().call_indirect(self.sig_f1, f, &[fi, out, pa]);
+        }
+        for q in 0..QUARTERS {
+            let v = self.b.ins().load(I32X4, mem(), out, (q * 16) as i32);
+            self.put(d, q, v, masked);
+        }
+    }
+
+    // ---- ops -----------------------------------------------------------
+
+    fn body(&mut self) -> Result<(), String> {
+        let code = self.code;
+        let n = code.ins.len();
+        // Blocks start at jump targets and after jumps.
+        let mut leader = vec![false; n + 1];
+        leader[0] = true;
+        leader[n] = true;
+        for (i, ins) in code.ins.iter().enumerate() {
+            if let Op::Jump { target } | Op::JumpIfNone { target } = ins.op {
+                *leader
+                    .get_mut(target as usize)
+                    .ok_or("jump target out of range")? = true;
+                leader[i + 1] = true;
+            }
+        }
+        let blocks: Vec<Option<Block>> = leader
+            .iter()
+            .map(|&l| l.then(|| self.b.create_block()))
+            .collect();
+        let block = |i: usize| blocks[i].ok_or("no block at a jump target");
+
+        // The prologue, when the run has no prepared pool.
+        let flag = self
+            .b
+            .ins()
+            .load(I32, mem(), self.ctx, offset_of!(Ctx, prologue) as i32);
+        let pro = self.b.create_block();
+        self.b.ins().brif(flag, pro, &[], block(0)?, &[]);
+        self.b.switch_to_block(pro);
+        for (i, &op) in code.prologue.iter().enumerate() {
+            self.data(&Ins { op, masked: false }, PROLOGUE_OP | i as u32)?;
+        }
+        self.b.ins().jump(block(0)?, &[]);
+
+        let mut open = false;
+        for (i, ins) in code.ins.iter().enumerate() {
+            if leader[i] {
+                if open {
+                    self.b.ins().jump(block(i)?, &[]);
+                }
+                self.b.switch_to_block(block(i)?);
+                open = true;
+            }
+            match ins.op {
+                Op::Jump { target } => {
+                    self.b.ins().jump(block(target as usize)?, &[]);
+                    open = false;
+                }
+                Op::JumpIfNone { target } => {
+                    let cur = self.b.use_var(self.cur);
+                    let (t, next) = (block(target as usize)?, block(i + 1)?);
+                    self.b.ins().brif(cur, next, &[], t, &[]);
+                    open = false;
+                }
+                Op::LoopIter => {
+                    let it = self.b.use_var(self.iterations);
+                    let it = self.b.ins().iadd_imm_s(it, 1);
+                    self.b.def_var(self.iterations, it);
+                    let over = self
+                        .b
+                        .ins()
+                        .icmp(IntCC::UnsignedGreaterThan, it, self.budget);
+                    let cont = self.b.create_block();
+                    self.b
+                        .ins()
+                        .brif(over, self.fail, &[BlockArg::from(it)], cont, &[]);
+                    self.b.switch_to_block(cont);
+                }
+                Op::SaveMask { slot } => {
+                    let cur = self.b.use_var(self.cur);
+                    let m = self.mask_var(slot)?;
+                    self.b.def_var(m, cur);
+                }
+                Op::RestoreMask { slot } => {
+                    let m = self.mask_var(slot)?;
+                    let v = self.b.use_var(m);
+                    self.set_cur(v);
+                }
+                Op::AndMask { c } => {
+                    let (bits, ms) = self.lane_bits(c);
+                    let cur = self.b.use_var(self.cur);
+                    let cur = self.b.ins().band(cur, bits);
+                    self.b.def_var(self.cur, cur);
+                    for (q, m) in ms.into_iter().enumerate() {
+                        let old = self.b.use_var(self.mk[q]);
+                        let v = self.b.ins().band(old, m);
+                        self.b.def_var(self.mk[q], v);
+                    }
+                }
+                Op::AndNotMask { slot, c } => {
+                    let (bits, _) = self.lane_bits(c);
+                    let m = self.mask_var(slot)?;
+                    let saved = self.b.use_var(m);
+                    let cur = self.b.ins().band_not(saved, bits);
+                    self.set_cur(cur);
+                }
+                Op::Kill { start, end } | Op::Discard { start, end } => {
+                    let cur = self.b.use_var(self.cur);
+                    if matches!(ins.op, Op::Discard { .. }) {
+                        let d = self.b.use_var(self.discarded);
+                        let d = self.b.ins().bor(d, cur);
+                        self.b.def_var(self.discarded, d);
+                    }
+                    for m in self.kill_slots(start, end)? {
+                        let v = self.b.use_var(m);
+                        let v = self.b.ins().band_not(v, cur);
+                        self.b.def_var(m, v);
+                    }
+                    let zero = self.b.ins().iconst(I32, 0);
+                    self.set_cur(zero);
+                }
+                Op::SyncDiscard { start, end } => {
+                    let gone = self.b.use_var(self.discarded);
+                    for m in self.kill_slots(start, end)? {
+                        let v = self.b.use_var(m);
+                        let v = self.b.ins().band_not(v, gone);
+                        self.b.def_var(m, v);
+                    }
+                    let cur = self.b.use_var(self.cur);
+                    let cur = self.b.ins().band_not(cur, gone);
+                    self.set_cur(cur);
+                }
+                Op::Call { .. } | Op::Ret { .. } => {
+                    return Err("subroutine calls are interpreted".to_string())
+                }
+                _ => self.data(ins, i as u32)?,
+            }
+        }
+        let exit = block(n)?;
+        if open {
+            self.b.ins().jump(exit, &[]);
+        }
+        self.b.switch_to_block(exit);
+        let d = self.b.use_var(self.discarded);
+        self.b
+            .ins()
+            .store(mem(), d, self.ctx, offset_of!(Ctx, discarded) as i32);
+        let ok = self.b.ins().iconst(I32, 0);
+        self.b.ins().return_(&[ok]);
+
+        self.b.switch_to_block(self.fail);
+        let it = self.b.block_params(self.fail)[0];
+        self.b
+            .ins()
+            .store(mem(), it, self.ctx, offset_of!(Ctx, iterations) as i32);
+        let one = self.b.ins().iconst(I32, 1);
+        self.b.ins().return_(&[one]);
+        Ok(())
+    }
+
+    /// A data op (no control flow); `index`: its index for `jit_step`.
+    fn data(&mut self, ins: &Ins, index: u32) -> Result<(), String> {
+        let m = ins.masked;
+        macro_rules! each {
+            ($d:expr, |$q:ident| $body:expr) => {{
+                for $q in 0..QUARTERS {
+                    let v = $body;
+                    self.put($d, $q, v, m);
+                }
+            }};
+        }
+        macro_rules! fbin {
+            ($d:expr, $a:expr, $b:expr, $op:ident) => {
+                each!($d, |q| {
+                    let (x, y) = (self.ldf($a, q), self.ldf($b, q));
+                    let r = self.b.ins().$op(x, y);
+                    self.ftz(r)
+                })
+            };
+        }
+        macro_rules! ibin {
+            ($d:expr, $a:expr, $b:expr, $op:ident) => {
+                each!($d, |q| {
+                    let (x, y) = (self.ld($a, q), self.ld($b, q));
+                    self.b.ins().$op(x, y)
+                })
+            };
+        }
+        macro_rules! fcmp {
+            ($d:expr, $a:expr, $b:expr, $cc:expr) => {
+                each!($d, |q| {
+                    let (x, y) = (self.ldf($a, q), self.ldf($b, q));
+                    let c = self.b.ins().fcmp($cc, x, y);
+                    self.bool01(c)
+                })
+            };
+        }
+        macro_rules! icmp {
+            ($d:expr, $a:expr, $b:expr, $cc:expr) => {
+                each!($d, |q| {
+                    let (x, y) = (self.ld($a, q), self.ld($b, q));
+                    let c = self.b.ins().icmp($cc, x, y);
+                    self.bool01(c)
+                })
+            };
+        }
+        macro_rules! logic {
+            ($d:expr, $a:expr, $b:expr, $op:ident) => {
+                each!($d, |q| {
+                    let (x, y) = (self.ld($a, q), self.ld($b, q));
+                    let (x, y) = (self.nonzero(x), self.nonzero(y));
+                    let c = self.b.ins().$op(x, y);
+                    self.bool01(c)
+                })
+            };
+        }
+        match ins.op {
+            Op::Const { d, bits } => each!(d, |q| self.splat(bits)),
+            Op::Mov { d, a } => each!(d, |q| self.ld(a, q)),
+            Op::Store { d, a } => {
+                for q in 0..QUARTERS {
+                    let v = self.ld(a, q);
+                    self.put(d, q, v, true);
+                }
+            }
+            Op::FAdd { d, a, b } => fbin!(d, a, b, fadd),
+            Op::FSub { d, a, b } => fbin!(d, a, b, fsub),
+            Op::FMul { d, a, b } => fbin!(d, a, b, fmul),
+            Op::FDiv { d, a, b } => fbin!(d, a, b, fdiv),
+            Op::FNeg { d, a } => each!(d, |q| {
+                let x = self.ld(a, q);
+                let s = self.splat(SIGN);
+                self.b.ins().bxor(x, s)
+            }),
+            Op::FMac { d, a, b } => each!(d, |q| {
+                let (x, y, acc) = (self.ldf(a, q), self.ldf(b, q), self.ldf(d, q));
+                let p = self.b.ins().fmul(x, y);
+                let p = self.ftz(p);
+                let p = self.fv(p);
+                let s = self.b.ins().fadd(acc, p);
+                self.ftz(s)
+            }),
+            Op::Dot { d, n, a, b } => each!(d, |q| {
+                let mut acc = self.fconst(0.0);
+                for k in 0..(n as usize).min(4) {
+                    let (x, y) = (self.ldf(a[k], q), self.ldf(b[k], q));
+                    let p = self.b.ins().fmul(x, y);
+                    let p = self.ftz(p);
+                    let p = self.fv(p);
+                    let s = self.b.ins().fadd(acc, p);
+                    let s = self.ftz(s);
+                    acc = self.fv(s);
+                }
+                self.iv(acc)
+            }),
+            Op::F1 { f, d, a } => match F1_CALLED.iter().position(|&g| g == f) {
+                Some(func) => self.call_math(false, func, d, a, a, m),
+                None => each!(d, |q| {
+                    let x = self.ldf(a, q);
+                    self.f1(f, x)
+                }),
+            },
+            Op::F2 { f, d, a, b } => match F2_CALLED.iter().position(|&g| g == f) {
+                Some(func) => self.call_math(true, func, d, a, b, m),
+                None => each!(d, |q| {
+                    let (x, y) = (self.ldf(a, q), self.ldf(b, q));
+                    self.f2(f, x, y)
+                }),
+            },
+            Op::F3 { f, d, a, b, c } => each!(d, |q| {
+                let (x, y, z) = (self.ldf(a, q), self.ldf(b, q), self.ldf(c, q));
+                self.f3(f, x, y, z)
+            }),
+            Op::FLt { d, a, b } => fcmp!(d, a, b, FloatCC::LessThan),
+            Op::FLe { d, a, b } => fcmp!(d, a, b, FloatCC::LessThanOrEqual),
+            Op::FEq { d, a, b } => fcmp!(d, a, b, FloatCC::Equal),
+            Op::IAdd { d, a, b } => ibin!(d, a, b, iadd),
+            Op::ISub { d, a, b } => ibin!(d, a, b, isub),
+            Op::IMul { d, a, b } => ibin!(d, a, b, imul),
+            Op::INeg { d, a } => each!(d, |q| {
+                let x = self.ld(a, q);
+                self.b.ins().ineg(x)
+            }),
+            Op::ILt { d, a, b } => icmp!(d, a, b, IntCC::SignedLessThan),
+            Op::ILe { d, a, b } => icmp!(d, a, b, IntCC::SignedLessThanOrEqual),
+            Op::IEq { d, a, b } => icmp!(d, a, b, IntCC::Equal),
+            Op::And { d, a, b } => logic!(d, a, b, band),
+            Op::Or { d, a, b } => logic!(d, a, b, bor),
+            Op::Xor { d, a, b } => logic!(d, a, b, bxor),
+            Op::Not { d, a } => each!(d, |q| {
+                let x = self.ld(a, q);
+                let zero = self.splat(0);
+                let c = self.b.ins().icmp(IntCC::Equal, x, zero);
+                self.bool01(c)
+            }),
+            Op::FToI { d, a } => each!(d, |q| {
+                let x = self.ldf(a, q);
+                self.b.ins().fcvt_to_sint_sat(I32X4, x)
+            }),
+            Op::IToF { d, a } => each!(d, |q| {
+                let x = self.ld(a, q);
+                let f = self.b.ins().fcvt_from_sint(F32X4, x);
+                self.iv(f)
+            }),
+            Op::FToB { d, a } => each!(d, |q| {
+                let x = self.ldf(a, q);
+                let zero = self.fconst(0.0);
+                // `!=` is true for NaN, as in Rust.
+                let c = self.b.ins().fcmp(FloatCC::NotEqual, x, zero);
+                self.bool01(c)
+            }),
+            Op::IToB { d, a } => each!(d, |q| {
+                let x = self.ld(a, q);
+                let c = self.nonzero(x);
+                self.bool01(c)
+            }),
+            Op::BToF { d, a } => each!(d, |q| {
+                let x = self.ld(a, q);
+                let c = self.nonzero(x);
+                let one = self.splat(ONE);
+                self.b.ins().band(c, one)
+            }),
+            Op::Select { d, c, a, b } => each!(d, |q| {
+                let (cv, x, y) = (self.ld(c, q), self.ld(a, q), self.ld(b, q));
+                let c = self.nonzero(cv);
+                self.b.ins().bitselect(c, x, y)
+            }),
+            Op::ClampIdx { d, a, max, stride } if max <= i32::MAX as u32 => each!(d, |q| {
+                let x = self.ld(a, q);
+                let (lo, hi, s) = (self.splat(0), self.splat(max), self.splat(stride));
+                let x = self.b.ins().smax(x, lo);
+                let x = self.b.ins().smin(x, hi);
+                self.b.ins().imul(x, s)
+            }),
+            // Only hooked runs (the reference interpreter) print.
+            Op::Printf { .. } => {}
+            Op::Call { .. }
+            | Op::Ret { .. }
+            | Op::Jump { .. }
+            | Op::JumpIfNone { .. }
+            | Op::LoopIter
+            | Op::SaveMask { .. }
+            | Op::RestoreMask { .. }
+            | Op::AndMask { .. }
+            | Op::AndNotMask { .. }
+            | Op::Kill { .. }
+            | Op::Discard { .. }
+            | Op::SyncDiscard { .. } => {
+                return Err(format!("control op {:?} where data was expected", ins.op))
+            }
+            // Integer division, gathers, scatters, uniform reads outside
+            // the prologue, derivatives, noise, texture lookups.
+            _ => self.call_step(index),
+        }
+        Ok(())
+    }
+
+    /// The inline functions of one float (F32X4 in, I32X4 out).
+    fn f1(&mut self, f: F1, x: Value) -> Value {
+        match f {
+            F1::Abs => {
+                let xi = self.iv(x);
+                let mag = self.splat(!SIGN);
+                let a = self.b.ins().band(xi, mag);
+                let a = self.fv(a);
+                self.ftz(a)
+            }
+            F1::Sqrt => {
+                let r = self.b.ins().sqrt(x);
+                self.ftz(r)
+            }
+            F1::InverseSqrt => {
+                let s = self.b.ins().sqrt(x);
+                let one = self.fconst(1.0);
+                let r = self.b.ins().fdiv(one, s);
+                self.ftz(r)
+            }
+            F1::Radians | F1::Degrees => {
+                let k = if f == F1::Radians {
+                    glsl::math::PI / 180.0
+                } else {
+                    180.0 / glsl::math::PI
+                };
+                let k = self.fconst(k);
+                let r = self.b.ins().fmul(x, k);
+                self.ftz(r)
+            }
+            F1::Sign => {
+                let zero = self.fconst(0.0);
+                let gt = self.b.ins().fcmp(FloatCC::GreaterThan, x, zero);
+                let lt = self.b.ins().fcmp(FloatCC::LessThan, x, zero);
+                let (one, minus) = (self.splat(ONE), self.splat((-1.0f32).to_bits()));
+                let p = self.b.ins().band(gt, one);
+                let n = self.b.ins().band(lt, minus);
+                self.b.ins().bor(p, n)
+            }
+            F1::Floor => {
+                let r = self.floor(x);
+                self.ftz(r)
+            }
+            F1::Ceil => {
+                let r = self.ceil(x);
+                self.ftz(r)
+            }
+            F1::Fract => {
+                let fl = self.floor(x);
+                let r = self.b.ins().fsub(x, fl);
+                self.ftz(r)
+            }
+            // The rest are calls (`F1_CALLED`).
+            _ => self.splat(0),
+        }
+    }
+
+    /// The inline functions of two floats.
+    fn f2(&mut self, f: F2, x: Value, y: Value) -> Value {
+        match f {
+            F2::Min => {
+                let r = self.fmin(x, y);
+                self.ftz(r)
+            }
+            F2::Max => {
+                let r = self.fmax(x, y);
+                self.ftz(r)
+            }
+            F2::Step => {
+                // step(edge = x, v = y): 0 if v < edge, else 1.
+                let lt = self.b.ins().fcmp(FloatCC::LessThan, y, x);
+                let one = self.splat(ONE);
+                self.b.ins().band_not(one, lt)
+            }
+            F2::Mod => {
+                let q = self.b.ins().fdiv(x, y);
+                let fl = self.floor(q);
+                let p = self.b.ins().fmul(y, fl);
+                let r = self.b.ins().fsub(x, p);
+                self.ftz(r)
+            }
+            // The rest are calls (`F2_CALLED`).
+            _ => self.splat(0),
+        }
+    }
+
+    /// The functions of three floats, as `engine::step` computes them.
+    fn f3(&mut self, f: F3, x: Value, y: Value, z: Value) -> Value {
+        match f {
+            F3::Mix => {
+                let one = self.fconst(1.0);
+                let omt = self.b.ins().fsub(one, z);
+                let p = self.b.ins().fmul(x, omt);
+                let r = self.b.ins().fmul(y, z);
+                let s = self.b.ins().fadd(p, r);
+                self.ftz(s)
+            }
+            F3::Clamp => {
+                let t = self.fmax(x, y);
+                let t = self.fmin(t, z);
+                self.ftz(t)
+            }
+            F3::SmoothStep => {
+                // (e0, e1, v) = (x, y, z)
+                let num = self.b.ins().fsub(z, x);
+                let den = self.b.ins().fsub(y, x);
+                let t = self.b.ins().fdiv(num, den);
+                let (zero, one) = (self.fconst(0.0), self.fconst(1.0));
+                let t = self.fmax(t, zero);
+                let t = self.fmin(t, one);
+                let (two, three) = (self.fconst(2.0), self.fconst(3.0));
+                let tt = self.b.ins().fmul(t, t);
+                let t2 = self.b.ins().fmul(two, t);
+                let k = self.b.ins().fsub(three, t2);
+                let r = self.b.ins().fmul(tt, k);
+                self.ftz(r)
+            }
+        }
+    }
+}
