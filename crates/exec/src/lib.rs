@@ -113,9 +113,11 @@
 //!
 //! ## Limitations
 //! - Derivatives are coarse per row/column of a quad.
-//! - One dispatch per op per 16-lane batch (an enum of 44 bytes); `pow`,
-//!   `exp`, `log`, `sin` and the other transcendental functions are scalar
-//!   `libm` calls per lane. Subroutine calls count against
+//! - One dispatch per op per 16-lane batch (an enum of 44 bytes). `pow`,
+//!   `exp`, `exp2`, `log` and `log2` are vectorized over the lanes
+//!   (`glsl::math`'s branch-free versions); `sin`, `cos`, `tan`, `asin`,
+//!   `acos`, `atan` are still scalar `libm` calls per lane. Subroutine calls
+//!   count against
 //!   [`LOOP_BUDGET`] like loop iterations.
 //! - Programs beyond [`limits::MAX_REGISTERS`] registers or
 //!   [`limits::MAX_OPS`] instructions are refused.
