@@ -75,7 +75,11 @@ pub(crate) struct Ctx<'a> {
     discarded: u32,
     /// Whether to run the prologue (no prepared pool).
     prologue: u32,
-    _pad: u32,
+    /// Number of uniform words (at most `i32::MAX`).
+    uniforms_len: u32,
+    /// The uniform words; a static zero word when there are none, so the
+    /// native code may always read word 0.
+    uniforms_ptr: *const u32,
     /// Where `jit_f1`/`jit_f2` put their result.
     scratch: Lanes,
     code: &'a Code,
@@ -204,7 +208,12 @@ pub(crate) fn run(
         start: (batch.active | batch.helper) & FULL,
         discarded: 0,
         prologue: run_prologue as u32,
-        _pad: 0,
+        uniforms_len: uniforms.len().min(i32::MAX as usize) as u32,
+        uniforms_ptr: if uniforms.is_empty() {
+            &NO_WORD
+        } else {
+            uniforms.as_ptr()
+        },
         scratch: [0; crate::LANES],
         code,
         uniforms,
@@ -227,6 +236,8 @@ pub(crate) fn run(
     engine::store_outputs(k, file, batch);
     Ok(())
 }
+
+static NO_WORD: u32 = 0;
 
 /// Flag of `jit_step`'s index: an op of the prologue, not of the body.
 const PROLOGUE_OP: u32 = 1 << 31;

@@ -5,10 +5,10 @@ use super::{jit_f1, jit_f2, jit_step, Ctx, Entry, Native, F1_CALLED, F2_CALLED, 
 use crate::engine::{Code, Ins};
 use crate::program::{Op, Reg, F1, F2, F3};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
-use cranelift_codegen::ir::types::{F32X4, I32, I32X4, I64};
+use cranelift_codegen::ir::types::{F32X4, I32, I32X4, I64, I8X16};
 use cranelift_codegen::ir::{
-    AbiParam, Block, BlockArg, ConstantData, InstBuilder, MemFlagsData, SigRef, Signature, Type,
-    UserFuncName, Value,
+    AbiParam, Block, BlockArg, ConstantData, Endianness, InstBuilder, MemFlagsData, SigRef,
+    Signature, Type, UserFuncName, Value,
 };
 use cranelift_codegen::isa::OwnedTargetIsa;
 use cranelift_codegen::settings::{self, Configurable};
@@ -415,6 +415,137 @@ impl<'a, 'b> Emit<'a, 'b> {
         }
     }
 
+    // ---- gathers -------------------------------------------------------
+
+    fn uniforms(&mut self) -> (Value, Value) {
+        let p = self.b.ins().load(
+            self.ptr,
+            mem(),
+            self.ctx,
+            offset_of!(Ctx, uniforms_ptr) as i32,
+        );
+        let n = self
+            .b
+            .ins()
+            .load(I32, mem(), self.ctx, offset_of!(Ctx, uniforms_len) as i32);
+        (p, n)
+    }
+
+    /// `uniforms[word]`, 0 past the end (scalar I32).
+    fn uniform_word(&mut self, word: u32) -> Value {
+        let (p, n) = self.uniforms();
+        let w = self.b.ins().iconst(I32, word as i32 as i64);
+        let inside = self.b.ins().icmp(IntCC::UnsignedLessThan, w, n);
+        let zero = self.b.ins().iconst(I32, 0);
+        let safe = self.b.ins().select(inside, w, zero);
+        let v = self.load_word(p, safe);
+        self.b.ins().select(inside, v, zero)
+    }
+
+    /// `p[i]` for an I32 index.
+    fn load_word(&mut self, p: Value, i: Value) -> Value {
+        let i = self.b.ins().uextend(self.ptr, i);
+        let off = self.b.ins().ishl_imm_u(i, 2);
+        let addr = self.b.ins().iadd(p, off);
+        self.b.ins().load(I32, mem(), addr, 0)
+    }
+
+    /// Quarter `q` of `uniforms[word + min(off, max)]` (0 past the end);
+    /// `word + max` fits in an `i32`.
+    fn gather_uniform(&mut self, word: u32, off: Reg, max: u32, q: usize) -> Value {
+        let (p, n) = self.uniforms();
+        let o = self.ld(off, q);
+        let mx = self.splat(max);
+        let o = self.b.ins().umin(o, mx);
+        let w = self.splat(word);
+        let idx = self.b.ins().iadd(o, w);
+        let nv = self.b.ins().splat(I32X4, n);
+        let inside = self.b.ins().icmp(IntCC::UnsignedLessThan, idx, nv);
+        let safe = self.b.ins().band(idx, inside);
+        let mut v = self.splat(0);
+        for l in 0..4u8 {
+            let i = self.b.ins().extractlane(safe, l);
+            let x = self.load_word(p, i);
+            v = self.b.ins().insertlane(v, x, l);
+        }
+        self.b.ins().band(v, inside)
+    }
+
+    /// Byte offsets in the file of lanes `4q..4q+4` of registers
+    /// `base + min(off, max)` (I32X4); they fit: registers < 2^18.
+    fn lane_addresses(&mut self, base: Reg, off: Reg, max: u32, q: usize) -> Value {
+        let o = self.ld(off, q);
+        let mx = self.splat(max);
+        let o = self.b.ins().umin(o, mx);
+        let o = self.b.ins().ishl_imm_u(o, 6);
+        let l0 = (base as usize * 64 + q * 16) as u32;
+        let lanes = self.vconst([l0, l0 + 4, l0 + 8, l0 + 12]);
+        self.b.ins().iadd(o, lanes)
+    }
+
+    fn lane_pointer(&mut self, offsets: Value, l: u8) -> Value {
+        let i = self.b.ins().extractlane(offsets, l);
+        let i = self.b.ins().uextend(self.ptr, i);
+        self.b.ins().iadd(self.regs, i)
+    }
+
+    /// Quarter `q` of `r[base + min(off, max)]` per lane.
+    fn gather(&mut self, base: Reg, off: Reg, max: u32, q: usize) -> Value {
+        let at = self.lane_addresses(base, off, max, q);
+        let mut v = self.splat(0);
+        for l in 0..4u8 {
+            let p = self.lane_pointer(at, l);
+            let x = self.b.ins().load(I32, mem(), p, 0);
+            v = self.b.ins().insertlane(v, x, l);
+        }
+        v
+    }
+
+    /// `r[base + min(off, max)] = a` on the current lanes of quarter `q`
+    /// (each lane writes only its own lane of a register, so the lanes
+    /// may go one after the other).
+    fn scatter(&mut self, base: Reg, off: Reg, max: u32, a: Reg, q: usize) {
+        let at = self.lane_addresses(base, off, max, q);
+        let av = self.ld(a, q);
+        let mk = self.b.use_var(self.mk[q]);
+        for l in 0..4u8 {
+            let p = self.lane_pointer(at, l);
+            let old = self.b.ins().load(I32, mem(), p, 0);
+            let x = self.b.ins().extractlane(av, l);
+            let on = self.b.ins().extractlane(mk, l);
+            let v = self.b.ins().select(on, x, old);
+            self.b.ins().store(mem(), v, p, 0);
+        }
+    }
+
+    /// `a(hi lane) - a(lo lane)` within each quad (a quarter is a quad),
+    /// not flushed (as `engine::step`).
+    fn quad_diff(&mut self, a: Reg, q: usize, hi: [u8; 4], lo: [u8; 4]) -> Value {
+        let v = self.ld(a, q);
+        let bytes = self.b.ins().bitcast(
+            I8X16,
+            MemFlagsData::new().with_endianness(Endianness::Little),
+            v,
+        );
+        let pick = |b: &mut FunctionBuilder, src: [u8; 4]| {
+            let m: Vec<u8> = src
+                .iter()
+                .flat_map(|&s| (0..4).map(move |k| 4 * s + k))
+                .collect();
+            let imm = b.func.dfg.immediates.push(ConstantData::from(m));
+            let s = b.ins().shuffle(bytes, bytes, imm);
+            b.ins().bitcast(
+                F32X4,
+                MemFlagsData::new().with_endianness(Endianness::Little),
+                s,
+            )
+        };
+        let h = pick(&mut self.b, hi);
+        let l = pick(&mut self.b, lo);
+        let r = self.b.ins().fsub(h, l);
+        self.iv(r)
+    }
+
     // ---- ops -----------------------------------------------------------
 
     fn body(&mut self) -> Result<(), String> {
@@ -741,6 +872,23 @@ impl<'a, 'b> Emit<'a, 'b> {
                 let x = self.b.ins().smin(x, hi);
                 self.b.ins().imul(x, s)
             }),
+            Op::Uniform { d, word } => {
+                let v = self.uniform_word(word);
+                each!(d, |q| self.b.ins().splat(I32X4, v))
+            }
+            Op::GatherUniform { d, word, off, max }
+                if word as u64 + max as u64 <= i32::MAX as u64 =>
+            {
+                each!(d, |q| self.gather_uniform(word, off, max, q))
+            }
+            Op::Gather { d, base, off, max } => each!(d, |q| self.gather(base, off, max, q)),
+            Op::Scatter { base, off, max, a } => {
+                for q in 0..QUARTERS {
+                    self.scatter(base, off, max, a, q)
+                }
+            }
+            Op::DdX { d, a } => each!(d, |q| self.quad_diff(a, q, [1, 1, 3, 3], [0, 0, 2, 2])),
+            Op::DdY { d, a } => each!(d, |q| self.quad_diff(a, q, [2, 3, 2, 3], [0, 1, 0, 1])),
             // Only hooked runs (the reference interpreter) print.
             Op::Printf { .. } => {}
             Op::Call { .. }
