@@ -189,6 +189,7 @@ pub(crate) fn supported() -> bool {
 
 /// [`engine::run`]'s body with native code: same register file set-up and
 /// output copy, the interpreter loop replaced by `native`.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn run(
     native: &Native,
     k: &Kernel,

@@ -67,6 +67,13 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
                 return Err(format!("cranelift: {e}"));
             }
             let ptr = module.get_finalized_function(id);
+            if let Some(dir) = std::env::var_os("SHADERBOX_JIT_DUMP") {
+                // For profiling: the machine code, named by its address.
+                // SAFETY: the function's `bytes` bytes of code start there.
+                let text = unsafe { std::slice::from_raw_parts(ptr, bytes) };
+                let path = std::path::Path::new(&dir).join(format!("jit-{:x}.bin", ptr as usize));
+                let _ = std::fs::write(path, text);
+            }
             // SAFETY: the function was defined with the signature
             // `fn(ptr) -> i32` in the host's C calling convention.
             let entry = unsafe { std::mem::transmute::<*const u8, Entry>(ptr) };
