@@ -57,7 +57,19 @@ pub(crate) const MAX_OPS: usize = 6000;
 
 /// A kernel is compiled when it starts its run number this (a kernel that
 /// runs fewer batches would not win back the compile time).
-pub const COMPILE_AFTER_RUNS: u32 = 32;
+pub(crate) const COMPILE_AFTER_RUNS: u32 = 32;
+
+/// [`COMPILE_AFTER_RUNS`], or `SHADERBOX_JIT_AFTER` (a run count; 1 =
+/// compile on the first run, for testing native code on short runs).
+fn compile_after() -> u32 {
+    static N: OnceLock<u32> = OnceLock::new();
+    *N.get_or_init(|| {
+        std::env::var("SHADERBOX_JIT_AFTER")
+            .ok()
+            .and_then(|s| s.trim().parse().ok())
+            .unwrap_or(COMPILE_AFTER_RUNS)
+    })
+}
 
 /// What the generated function receives. `#[repr(C)]`: the native code
 /// reads and writes the fields before `code` at their offsets.
@@ -143,7 +155,7 @@ impl Cache {
         if let Some(r) = self.slot.get() {
             return r.as_ref().ok();
         }
-        if !force && self.runs.fetch_add(1, Ordering::Relaxed) + 1 < COMPILE_AFTER_RUNS {
+        if !force && self.runs.fetch_add(1, Ordering::Relaxed) + 1 < compile_after() {
             return None;
         }
         // Another thread compiling: a forced caller waits for it, the

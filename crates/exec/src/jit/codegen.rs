@@ -571,25 +571,71 @@ impl<'a, 'b> Emit<'a, 'b> {
         self.b.ins().load(I32, mem(), addr, 0)
     }
 
-    /// Quarter `q` of `uniforms[word + min(off, max)]` (0 past the end);
-    /// `word + max` fits in an `i32`.
-    fn gather_uniform(&mut self, word: u32, off: Reg, max: u32, q: usize) -> Value {
+    /// `d = uniforms[word + min(off, max)]` per lane (0 past the end);
+    /// `word + max` fits in an `i32`. When every lane reads the same word
+    /// (an array indexed by a loop counter), one load.
+    fn gather_uniform(&mut self, d: Reg, word: u32, off: Reg, max: u32, masked: bool) {
         let (p, n) = self.uniforms();
-        let o = self.ld(off, q);
-        let mx = self.splat(max);
-        let o = self.b.ins().umin(o, mx);
-        let w = self.splat(word);
-        let idx = self.b.ins().iadd(o, w);
-        let nv = self.b.ins().splat(I32X4, n);
-        let inside = self.b.ins().icmp(IntCC::UnsignedLessThan, idx, nv);
-        let safe = self.b.ins().band(idx, inside);
-        let mut v = self.splat(0);
-        for l in 0..4u8 {
-            let i = self.b.ins().extractlane(safe, l);
-            let x = self.load_word(p, i);
-            v = self.b.ins().insertlane(v, x, l);
+        let mut idx = [p; QUARTERS];
+        for (q, x) in idx.iter_mut().enumerate() {
+            let o = self.ld(off, q);
+            let mx = self.splat(max);
+            let o = self.b.ins().umin(o, mx);
+            let w = self.splat(word);
+            *x = self.b.ins().iadd(o, w);
         }
-        self.b.ins().band(v, inside)
+        let first = self.b.ins().extractlane(idx[0], 0);
+        let fs = self.b.ins().splat(I32X4, first);
+        let mut same = self.b.ins().icmp(IntCC::Equal, idx[0], fs);
+        for &x in &idx[1..] {
+            let e = self.b.ins().icmp(IntCC::Equal, x, fs);
+            same = self.b.ins().band(same, e);
+        }
+        let bits = self.b.ins().vhigh_bits(I32, same);
+        let all = self.b.ins().icmp_imm_u(IntCC::Equal, bits, 0xf);
+        let nv = self.b.ins().splat(I32X4, n);
+        let zero = self.splat(0);
+        let (one, many, merge) = (
+            self.b.create_block(),
+            self.b.create_block(),
+            self.b.create_block(),
+        );
+        let params: Vec<Value> = (0..QUARTERS)
+            .map(|_| self.b.append_block_param(merge, I32X4))
+            .collect();
+        self.b.ins().brif(all, one, &[], many, &[]);
+
+        // No `ld` below: what the cache holds must be defined before the
+        // branch.
+        self.b.switch_to_block(one);
+        let inside = self.b.ins().icmp(IntCC::UnsignedLessThan, first, n);
+        let z = self.b.ins().iconst(I32, 0);
+        let safe = self.b.ins().select(inside, first, z);
+        let x = self.load_word(p, safe);
+        let x = self.b.ins().select(inside, x, z);
+        let v = self.b.ins().splat(I32X4, x);
+        let args = [BlockArg::from(v); QUARTERS];
+        self.b.ins().jump(merge, &args);
+
+        self.b.switch_to_block(many);
+        let mut args = Vec::with_capacity(QUARTERS);
+        for &x in &idx {
+            let inside = self.b.ins().icmp(IntCC::UnsignedLessThan, x, nv);
+            let safe = self.b.ins().band(x, inside);
+            let mut v = zero;
+            for l in 0..4u8 {
+                let i = self.b.ins().extractlane(safe, l);
+                let w = self.load_word(p, i);
+                v = self.b.ins().insertlane(v, w, l);
+            }
+            args.push(BlockArg::from(self.b.ins().band(v, inside)));
+        }
+        self.b.ins().jump(merge, &args);
+
+        self.b.switch_to_block(merge);
+        for (q, &v) in params.iter().enumerate() {
+            self.put(d, q, v, masked);
+        }
     }
 
     /// Byte offsets in the file of lanes `4q..4q+4` of registers
@@ -1015,7 +1061,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             Op::GatherUniform { d, word, off, max }
                 if word as u64 + max as u64 <= i32::MAX as u64 =>
             {
-                each!(d, |q| self.gather_uniform(word, off, max, q))
+                self.gather_uniform(d, word, off, max, m)
             }
             Op::Gather { d, base, off, max } => each!(d, |q| self.gather(base, off, max, q)),
             Op::Scatter { base, off, max, a } => {

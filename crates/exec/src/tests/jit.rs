@@ -278,6 +278,10 @@ fn random_programs_run_natively_as_interpreted() {
             base.helper = if round == 3 { 0x0f0f } else { 0 };
             for c in base.inputs.iter_mut() {
                 *c = [0; LANES].map(|_| f32::from_bits(value(&mut r)));
+                if round == 2 {
+                    // The same value on every lane (uniform indices).
+                    *c = [c[0]; LANES];
+                }
             }
             let mut want = base.clone();
             let r0 = k.run_variant(Variant::Portable, &mut want, &uniforms, &NoTextures);
