@@ -57,7 +57,19 @@ pub(crate) const MAX_OPS: usize = 6000;
 
 /// A kernel is compiled when it starts its run number this (a kernel that
 /// runs fewer batches would not win back the compile time).
-pub const COMPILE_AFTER_RUNS: u32 = 32;
+pub(crate) const COMPILE_AFTER_RUNS: u32 = 32;
+
+/// [`COMPILE_AFTER_RUNS`], or `SHADERBOX_JIT_AFTER` (a run count; 1 =
+/// compile on the first run, for testing native code on short runs).
+fn compile_after() -> u32 {
+    static N: OnceLock<u32> = OnceLock::new();
+    *N.get_or_init(|| {
+        std::env::var("SHADERBOX_JIT_AFTER")
+            .ok()
+            .and_then(|s| s.trim().parse().ok())
+            .unwrap_or(COMPILE_AFTER_RUNS)
+    })
+}
 
 /// What the generated function receives. `#[repr(C)]`: the native code
 /// reads and writes the fields before `code` at their offsets.
@@ -75,7 +87,11 @@ pub(crate) struct Ctx<'a> {
     discarded: u32,
     /// Whether to run the prologue (no prepared pool).
     prologue: u32,
-    _pad: u32,
+    /// Number of uniform words (at most `i32::MAX`).
+    uniforms_len: u32,
+    /// The uniform words; a static zero word when there are none, so the
+    /// native code may always read word 0.
+    uniforms_ptr: *const u32,
     /// Where `jit_f1`/`jit_f2` put their result.
     scratch: Lanes,
     code: &'a Code,
@@ -139,7 +155,7 @@ impl Cache {
         if let Some(r) = self.slot.get() {
             return r.as_ref().ok();
         }
-        if !force && self.runs.fetch_add(1, Ordering::Relaxed) + 1 < COMPILE_AFTER_RUNS {
+        if !force && self.runs.fetch_add(1, Ordering::Relaxed) + 1 < compile_after() {
             return None;
         }
         // Another thread compiling: a forced caller waits for it, the
@@ -185,6 +201,7 @@ pub(crate) fn supported() -> bool {
 
 /// [`engine::run`]'s body with native code: same register file set-up and
 /// output copy, the interpreter loop replaced by `native`.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn run(
     native: &Native,
     k: &Kernel,
@@ -204,7 +221,12 @@ pub(crate) fn run(
         start: (batch.active | batch.helper) & FULL,
         discarded: 0,
         prologue: run_prologue as u32,
-        _pad: 0,
+        uniforms_len: uniforms.len().min(i32::MAX as usize) as u32,
+        uniforms_ptr: if uniforms.is_empty() {
+            &NO_WORD
+        } else {
+            uniforms.as_ptr()
+        },
         scratch: [0; crate::LANES],
         code,
         uniforms,
@@ -227,6 +249,8 @@ pub(crate) fn run(
     engine::store_outputs(k, file, batch);
     Ok(())
 }
+
+static NO_WORD: u32 = 0;
 
 /// Flag of `jit_step`'s index: an op of the prologue, not of the body.
 const PROLOGUE_OP: u32 = 1 << 31;

@@ -10,6 +10,8 @@ use glsl::{compile, CompileOptions};
 
 mod builtins;
 mod depth_slice;
+#[cfg(feature = "jit")]
+mod jit;
 mod piglit;
 mod variants;
 
@@ -92,6 +94,14 @@ fn frag_colors(src: &str, unis: &[(&str, &[u32])]) -> (Vec<[f32; 4]>, LaneMask) 
         bits_of(&b.outputs),
         "reference: outputs"
     );
+    // So does native code.
+    if Variant::Jit.supported() {
+        let mut nb = frag_batch(&k);
+        k.run_variant(Variant::Jit, &mut nb, &u, &NoTextures)
+            .expect("runs");
+        assert_eq!(nb.discarded, b.discarded, "native: discarded");
+        assert_eq!(bits_of(&nb.outputs), bits_of(&b.outputs), "native: outputs");
+    }
     // The same program with every function as a subroutine agrees.
     let stage = link_one(Stage::Fragment, src).unwrap();
     let sk = Kernel::with_inline_limit(&stage, 0).expect("lowers");

@@ -5,10 +5,10 @@ use super::{jit_f1, jit_f2, jit_step, Ctx, Entry, Native, F1_CALLED, F2_CALLED, 
 use crate::engine::{Code, Ins};
 use crate::program::{Op, Reg, F1, F2, F3};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
-use cranelift_codegen::ir::types::{F32X4, I32, I32X4, I64};
+use cranelift_codegen::ir::types::{F32X4, I32, I32X4, I64, I8X16};
 use cranelift_codegen::ir::{
-    AbiParam, Block, BlockArg, ConstantData, InstBuilder, MemFlagsData, SigRef, Signature, Type,
-    UserFuncName, Value,
+    AbiParam, Block, BlockArg, ConstantData, Endianness, InstBuilder, MemFlagsData, SigRef,
+    Signature, Type, UserFuncName, Value,
 };
 use cranelift_codegen::isa::OwnedTargetIsa;
 use cranelift_codegen::settings::{self, Configurable};
@@ -67,6 +67,13 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
                 return Err(format!("cranelift: {e}"));
             }
             let ptr = module.get_finalized_function(id);
+            if let Some(dir) = std::env::var_os("SHADERBOX_JIT_DUMP") {
+                // For profiling: the machine code, named by its address.
+                // SAFETY: the function's `bytes` bytes of code start there.
+                let text = unsafe { std::slice::from_raw_parts(ptr, bytes) };
+                let path = std::path::Path::new(&dir).join(format!("jit-{:x}.bin", ptr as usize));
+                let _ = std::fs::write(path, text);
+            }
             // SAFETY: the function was defined with the signature
             // `fn(ptr) -> i32` in the host's C calling convention.
             let entry = unsafe { std::mem::transmute::<*const u8, Entry>(ptr) };
@@ -146,7 +153,32 @@ struct Emit<'a, 'b> {
     sig_f2: SigRef,
     /// Where the loop budget ran out (block parameter: the count).
     fail: Block,
+    /// Register quarters held in SSA values in the current block.
+    cache: Cache,
 }
+
+/// A quarter of a register held in an SSA value: `dirty` when memory does
+/// not have it yet; `used`: when last touched (for eviction).
+#[derive(Clone, Copy)]
+struct Held {
+    v: Value,
+    dirty: bool,
+    used: u64,
+}
+
+/// The register quarters of the current block kept in SSA values, so an op
+/// reading what an earlier op of the block wrote needs no load, and a
+/// register written several times is stored once. Memory is brought up to
+/// date (`flush`) before branches, before calls, and for the registers a
+/// gather reads; a scatter's registers are dropped (`forget`).
+#[derive(Default)]
+struct Cache {
+    held: std::collections::BTreeMap<(Reg, usize), Held>,
+    clock: u64,
+}
+
+/// At most this many quarters are held (more only makes Cranelift spill).
+const HELD: usize = 48;
 
 fn mem() -> MemFlagsData {
     MemFlagsData::new().with_notrap()
@@ -190,6 +222,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             sig_f1,
             sig_f2,
             fail,
+            cache: Cache::default(),
         };
         let zero = e.b.ins().iconst(I32, 0);
         for &m in &e.masks {
@@ -208,11 +241,14 @@ impl<'a, 'b> Emit<'a, 'b> {
     // ---- values -------------------------------------------------------
 
     fn splat(&mut self, bits: u32) -> Value {
-        let k = self.b.ins().iconst(I32, bits as i32 as i64);
-        self.b.ins().splat(I32X4, k)
+        self.vconst([bits; 4])
     }
 
     fn vconst(&mut self, lanes: [u32; 4]) -> Value {
+        if lanes.iter().all(|&l| l == lanes[0]) {
+            let k = self.b.ins().iconst(I32, lanes[0] as i32 as i64);
+            return self.b.ins().splat(I32X4, k);
+        }
         let bytes: Vec<u8> = lanes.iter().flat_map(|l| l.to_le_bytes()).collect();
         let c = self.b.func.dfg.constants.insert(ConstantData::from(bytes));
         self.b.ins().vconst(I32X4, c)
@@ -232,19 +268,27 @@ impl<'a, 'b> Emit<'a, 'b> {
 
     /// Quarter `q` of register `r` (as I32X4).
     fn ld(&mut self, r: Reg, q: usize) -> Value {
-        self.b
+        self.cache.clock += 1;
+        let now = self.cache.clock;
+        if let Some(h) = self.cache.held.get_mut(&(r, q)) {
+            h.used = now;
+            return h.v;
+        }
+        let v = self
+            .b
             .ins()
-            .load(I32X4, mem(), self.regs, Self::offset(r, q))
+            .load(I32X4, mem(), self.regs, Self::offset(r, q));
+        self.hold(r, q, v, false);
+        v
     }
 
     /// Quarter `q` of register `r` as F32X4.
     fn ldf(&mut self, r: Reg, q: usize) -> Value {
-        self.b
-            .ins()
-            .load(F32X4, mem(), self.regs, Self::offset(r, q))
+        let v = self.ld(r, q);
+        self.fv(v)
     }
 
-    /// Stores `v` (I32X4) into quarter `q` of `d`, under the current mask
+    /// Writes `v` (I32X4) into quarter `q` of `d`, under the current mask
     /// when `masked`.
     fn put(&mut self, d: Reg, q: usize, v: Value, masked: bool) {
         let v = if masked {
@@ -254,7 +298,71 @@ impl<'a, 'b> Emit<'a, 'b> {
         } else {
             v
         };
-        self.b.ins().store(mem(), v, self.regs, Self::offset(d, q));
+        self.hold(d, q, v, true);
+    }
+
+    fn hold(&mut self, r: Reg, q: usize, v: Value, dirty: bool) {
+        self.cache.clock += 1;
+        let used = self.cache.clock;
+        self.cache.held.insert((r, q), Held { v, dirty, used });
+        if self.cache.held.len() > HELD {
+            let oldest = self
+                .cache
+                .held
+                .iter()
+                .min_by_key(|(_, h)| h.used)
+                .map(|(&k, _)| k);
+            if let Some(k) = oldest {
+                self.evict(k);
+            }
+        }
+    }
+
+    fn evict(&mut self, k: (Reg, usize)) {
+        if let Some(h) = self.cache.held.remove(&k) {
+            if h.dirty {
+                self.b
+                    .ins()
+                    .store(mem(), h.v, self.regs, Self::offset(k.0, k.1));
+            }
+        }
+    }
+
+    /// Stores the held quarters of registers `lo..=hi` that memory lacks.
+    fn flush_range(&mut self, lo: Reg, hi: Reg) {
+        let dirty: Vec<((Reg, usize), Value)> = self
+            .cache
+            .held
+            .range((lo, 0)..=(hi, QUARTERS))
+            .filter(|(_, h)| h.dirty)
+            .map(|(&k, h)| (k, h.v))
+            .collect();
+        for ((r, q), v) in dirty {
+            self.b.ins().store(mem(), v, self.regs, Self::offset(r, q));
+            if let Some(h) = self.cache.held.get_mut(&(r, q)) {
+                h.dirty = false;
+            }
+        }
+    }
+
+    /// Memory up to date, nothing held (block ends, calls).
+    fn flush_all(&mut self) {
+        self.flush_range(0, Reg::MAX);
+        self.cache.held.clear();
+    }
+
+    /// Drops what is held of registers `lo..=hi` (memory is written behind
+    /// the cache's back); flush them first.
+    fn forget(&mut self, lo: Reg, hi: Reg) {
+        let keys: Vec<_> = self
+            .cache
+            .held
+            .range((lo, 0)..=(hi, QUARTERS))
+            .map(|(&k, _)| k)
+            .collect();
+        for k in keys {
+            self.cache.held.remove(&k);
+        }
     }
 
     /// `engine::ftz` of an F32X4, as I32X4: a subnormal keeps only its
@@ -276,9 +384,17 @@ impl<'a, 'b> Emit<'a, 'b> {
         self.b.ins().band(m, one)
     }
 
-    fn nonzero(&mut self, v: Value) -> Value {
+    /// All-ones where `v` is 0 (one compare; `!= 0` would take three).
+    fn is_zero(&mut self, v: Value) -> Value {
         let zero = self.splat(0);
-        self.b.ins().icmp(IntCC::NotEqual, v, zero)
+        self.b.ins().icmp(IntCC::Equal, v, zero)
+    }
+
+    /// 1 where `v` is nonzero, else 0.
+    fn bool_of(&mut self, v: Value) -> Value {
+        let z = self.is_zero(v);
+        let one = self.splat(1);
+        self.b.ins().band_not(one, z)
     }
 
     /// `engine::fmin`: `y` if `x` is NaN or `y < x`, else `x` (F32X4 in,
@@ -335,18 +451,19 @@ impl<'a, 'b> Emit<'a, 'b> {
             let s4 = (4 * q) as u32;
             let bits = self.vconst([1 << s4, 2 << s4, 4 << s4, 8 << s4]);
             let m = self.b.ins().band(s, bits);
-            let m = self.nonzero(m);
+            let m = self.b.ins().icmp(IntCC::Equal, m, bits);
             self.b.def_var(self.mk[q], m);
         }
     }
 
-    /// Lane bits where register `c` is nonzero, and the per-quarter masks.
-    fn lane_bits(&mut self, c: Reg) -> (Value, [Value; QUARTERS]) {
+    /// Lane bits where register `c` is zero, and the per-quarter masks of
+    /// those lanes.
+    fn zero_bits(&mut self, c: Reg) -> (Value, [Value; QUARTERS]) {
         let mut bits = self.b.ins().iconst(I32, 0);
         let mut ms = [bits; QUARTERS];
         for (q, m_out) in ms.iter_mut().enumerate() {
             let v = self.ld(c, q);
-            let m = self.nonzero(v);
+            let m = self.is_zero(v);
             *m_out = m;
             let hb = self.b.ins().vhigh_bits(I32, m);
             let hb = if q > 0 {
@@ -379,6 +496,8 @@ impl<'a, 'b> Emit<'a, 'b> {
     // ---- calls ---------------------------------------------------------
 
     fn call_step(&mut self, index: u32) {
+        // The engine's step reads and writes registers in memory.
+        self.flush_all();
         let f = self.b.ins().iconst(self.ptr, jit_step as *const () as i64);
         let i = self.b.ins().iconst(I32, index as i32 as i64);
         let cur = self.b.use_var(self.cur);
@@ -397,6 +516,8 @@ impl<'a, 'b> Emit<'a, 'b> {
             .b
             .ins()
             .iadd_imm_s(self.ctx, offset_of!(Ctx, scratch) as i64);
+        self.flush_range(a, a);
+        self.flush_range(b, b);
         let fi = self.b.ins().iconst(I32, func as i64);
         let pa = self.reg_ptr(a);
         if two {
@@ -413,6 +534,187 @@ impl<'a, 'b> Emit<'a, 'b> {
             let v = self.b.ins().load(I32X4, mem(), out, (q * 16) as i32);
             self.put(d, q, v, masked);
         }
+    }
+
+    // ---- gathers -------------------------------------------------------
+
+    fn uniforms(&mut self) -> (Value, Value) {
+        let p = self.b.ins().load(
+            self.ptr,
+            mem(),
+            self.ctx,
+            offset_of!(Ctx, uniforms_ptr) as i32,
+        );
+        let n = self
+            .b
+            .ins()
+            .load(I32, mem(), self.ctx, offset_of!(Ctx, uniforms_len) as i32);
+        (p, n)
+    }
+
+    /// `uniforms[word]`, 0 past the end (scalar I32).
+    fn uniform_word(&mut self, word: u32) -> Value {
+        let (p, n) = self.uniforms();
+        let w = self.b.ins().iconst(I32, word as i32 as i64);
+        let inside = self.b.ins().icmp(IntCC::UnsignedLessThan, w, n);
+        let zero = self.b.ins().iconst(I32, 0);
+        let safe = self.b.ins().select(inside, w, zero);
+        let v = self.load_word(p, safe);
+        self.b.ins().select(inside, v, zero)
+    }
+
+    /// `p[i]` for an I32 index.
+    fn load_word(&mut self, p: Value, i: Value) -> Value {
+        let i = self.b.ins().uextend(self.ptr, i);
+        let off = self.b.ins().ishl_imm_u(i, 2);
+        let addr = self.b.ins().iadd(p, off);
+        self.b.ins().load(I32, mem(), addr, 0)
+    }
+
+    /// `d = uniforms[word + min(off, max)]` per lane (0 past the end);
+    /// `word + max` fits in an `i32`. When every lane reads the same word
+    /// (an array indexed by a loop counter), one load.
+    fn gather_uniform(&mut self, d: Reg, word: u32, off: Reg, max: u32, masked: bool) {
+        let (p, n) = self.uniforms();
+        let mut idx = [p; QUARTERS];
+        for (q, x) in idx.iter_mut().enumerate() {
+            let o = self.ld(off, q);
+            let mx = self.splat(max);
+            let o = self.b.ins().umin(o, mx);
+            let w = self.splat(word);
+            *x = self.b.ins().iadd(o, w);
+        }
+        let first = self.b.ins().extractlane(idx[0], 0);
+        let fs = self.b.ins().splat(I32X4, first);
+        let mut same = self.b.ins().icmp(IntCC::Equal, idx[0], fs);
+        for &x in &idx[1..] {
+            let e = self.b.ins().icmp(IntCC::Equal, x, fs);
+            same = self.b.ins().band(same, e);
+        }
+        let bits = self.b.ins().vhigh_bits(I32, same);
+        let all = self.b.ins().icmp_imm_u(IntCC::Equal, bits, 0xf);
+        let nv = self.b.ins().splat(I32X4, n);
+        let zero = self.splat(0);
+        let (one, many, merge) = (
+            self.b.create_block(),
+            self.b.create_block(),
+            self.b.create_block(),
+        );
+        let params: Vec<Value> = (0..QUARTERS)
+            .map(|_| self.b.append_block_param(merge, I32X4))
+            .collect();
+        self.b.ins().brif(all, one, &[], many, &[]);
+
+        // No `ld` below: what the cache holds must be defined before the
+        // branch.
+        self.b.switch_to_block(one);
+        let inside = self.b.ins().icmp(IntCC::UnsignedLessThan, first, n);
+        let z = self.b.ins().iconst(I32, 0);
+        let safe = self.b.ins().select(inside, first, z);
+        let x = self.load_word(p, safe);
+        let x = self.b.ins().select(inside, x, z);
+        let v = self.b.ins().splat(I32X4, x);
+        let args = [BlockArg::from(v); QUARTERS];
+        self.b.ins().jump(merge, &args);
+
+        self.b.switch_to_block(many);
+        let mut args = Vec::with_capacity(QUARTERS);
+        for &x in &idx {
+            let inside = self.b.ins().icmp(IntCC::UnsignedLessThan, x, nv);
+            let safe = self.b.ins().band(x, inside);
+            let mut v = zero;
+            for l in 0..4u8 {
+                let i = self.b.ins().extractlane(safe, l);
+                let w = self.load_word(p, i);
+                v = self.b.ins().insertlane(v, w, l);
+            }
+            args.push(BlockArg::from(self.b.ins().band(v, inside)));
+        }
+        self.b.ins().jump(merge, &args);
+
+        self.b.switch_to_block(merge);
+        for (q, &v) in params.iter().enumerate() {
+            self.put(d, q, v, masked);
+        }
+    }
+
+    /// Byte offsets in the file of lanes `4q..4q+4` of registers
+    /// `base + min(off, max)` (I32X4); they fit: registers < 2^18.
+    fn lane_addresses(&mut self, base: Reg, off: Reg, max: u32, q: usize) -> Value {
+        let o = self.ld(off, q);
+        let mx = self.splat(max);
+        let o = self.b.ins().umin(o, mx);
+        let o = self.b.ins().ishl_imm_u(o, 6);
+        let l0 = (base as usize * 64 + q * 16) as u32;
+        let lanes = self.vconst([l0, l0 + 4, l0 + 8, l0 + 12]);
+        self.b.ins().iadd(o, lanes)
+    }
+
+    fn lane_pointer(&mut self, offsets: Value, l: u8) -> Value {
+        let i = self.b.ins().extractlane(offsets, l);
+        let i = self.b.ins().uextend(self.ptr, i);
+        self.b.ins().iadd(self.regs, i)
+    }
+
+    /// Quarter `q` of `r[base + min(off, max)]` per lane.
+    fn gather(&mut self, base: Reg, off: Reg, max: u32, q: usize) -> Value {
+        self.flush_range(base, base.saturating_add(max));
+        let at = self.lane_addresses(base, off, max, q);
+        let mut v = self.splat(0);
+        for l in 0..4u8 {
+            let p = self.lane_pointer(at, l);
+            let x = self.b.ins().load(I32, mem(), p, 0);
+            v = self.b.ins().insertlane(v, x, l);
+        }
+        v
+    }
+
+    /// `r[base + min(off, max)] = a` on the current lanes of quarter `q`
+    /// (each lane writes only its own lane of a register, so the lanes
+    /// may go one after the other).
+    fn scatter(&mut self, base: Reg, off: Reg, max: u32, a: Reg, q: usize) {
+        let at = self.lane_addresses(base, off, max, q);
+        let av = self.ld(a, q);
+        let hi = base.saturating_add(max);
+        self.flush_range(base, hi);
+        self.forget(base, hi);
+        let mk = self.b.use_var(self.mk[q]);
+        for l in 0..4u8 {
+            let p = self.lane_pointer(at, l);
+            let old = self.b.ins().load(I32, mem(), p, 0);
+            let x = self.b.ins().extractlane(av, l);
+            let on = self.b.ins().extractlane(mk, l);
+            let v = self.b.ins().select(on, x, old);
+            self.b.ins().store(mem(), v, p, 0);
+        }
+    }
+
+    /// `a(hi lane) - a(lo lane)` within each quad (a quarter is a quad),
+    /// not flushed (as `engine::step`).
+    fn quad_diff(&mut self, a: Reg, q: usize, hi: [u8; 4], lo: [u8; 4]) -> Value {
+        let v = self.ld(a, q);
+        let bytes = self.b.ins().bitcast(
+            I8X16,
+            MemFlagsData::new().with_endianness(Endianness::Little),
+            v,
+        );
+        let pick = |b: &mut FunctionBuilder, src: [u8; 4]| {
+            let m: Vec<u8> = src
+                .iter()
+                .flat_map(|&s| (0..4).map(move |k| 4 * s + k))
+                .collect();
+            let imm = b.func.dfg.immediates.push(ConstantData::from(m));
+            let s = b.ins().shuffle(bytes, bytes, imm);
+            b.ins().bitcast(
+                F32X4,
+                MemFlagsData::new().with_endianness(Endianness::Little),
+                s,
+            )
+        };
+        let h = pick(&mut self.b, hi);
+        let l = pick(&mut self.b, lo);
+        let r = self.b.ins().fsub(h, l);
+        self.iv(r)
     }
 
     // ---- ops -----------------------------------------------------------
@@ -449,12 +751,14 @@ impl<'a, 'b> Emit<'a, 'b> {
         for (i, &op) in code.prologue.iter().enumerate() {
             self.data(&Ins { op, masked: false }, PROLOGUE_OP | i as u32)?;
         }
+        self.flush_all();
         self.b.ins().jump(block(0)?, &[]);
 
         let mut open = false;
         for (i, ins) in code.ins.iter().enumerate() {
             if leader[i] {
                 if open {
+                    self.flush_all();
                     self.b.ins().jump(block(i)?, &[]);
                 }
                 self.b.switch_to_block(block(i)?);
@@ -462,10 +766,12 @@ impl<'a, 'b> Emit<'a, 'b> {
             }
             match ins.op {
                 Op::Jump { target } => {
+                    self.flush_all();
                     self.b.ins().jump(block(target as usize)?, &[]);
                     open = false;
                 }
                 Op::JumpIfNone { target } => {
+                    self.flush_all();
                     let cur = self.b.use_var(self.cur);
                     let (t, next) = (block(target as usize)?, block(i + 1)?);
                     self.b.ins().brif(cur, next, &[], t, &[]);
@@ -496,21 +802,22 @@ impl<'a, 'b> Emit<'a, 'b> {
                     self.set_cur(v);
                 }
                 Op::AndMask { c } => {
-                    let (bits, ms) = self.lane_bits(c);
+                    let (zero, ms) = self.zero_bits(c);
                     let cur = self.b.use_var(self.cur);
-                    let cur = self.b.ins().band(cur, bits);
+                    let cur = self.b.ins().band_not(cur, zero);
                     self.b.def_var(self.cur, cur);
                     for (q, m) in ms.into_iter().enumerate() {
                         let old = self.b.use_var(self.mk[q]);
-                        let v = self.b.ins().band(old, m);
+                        let v = self.b.ins().band_not(old, m);
                         self.b.def_var(self.mk[q], v);
                     }
                 }
                 Op::AndNotMask { slot, c } => {
-                    let (bits, _) = self.lane_bits(c);
+                    // cur = saved & (c == 0)
+                    let (zero, _) = self.zero_bits(c);
                     let m = self.mask_var(slot)?;
                     let saved = self.b.use_var(m);
-                    let cur = self.b.ins().band_not(saved, bits);
+                    let cur = self.b.ins().band(saved, zero);
                     self.set_cur(cur);
                 }
                 Op::Kill { start, end } | Op::Discard { start, end } => {
@@ -547,6 +854,7 @@ impl<'a, 'b> Emit<'a, 'b> {
         }
         let exit = block(n)?;
         if open {
+            self.flush_all();
             self.b.ins().jump(exit, &[]);
         }
         self.b.switch_to_block(exit);
@@ -613,13 +921,20 @@ impl<'a, 'b> Emit<'a, 'b> {
                 })
             };
         }
+        // Boolean ops on the "is zero" masks zx, zy: and = !(zx | zy),
+        // or = !(zx & zy), xor = zx ^ zy.
         macro_rules! logic {
-            ($d:expr, $a:expr, $b:expr, $op:ident) => {
+            ($d:expr, $a:expr, $b:expr, $op:ident, $negate:expr) => {
                 each!($d, |q| {
                     let (x, y) = (self.ld($a, q), self.ld($b, q));
-                    let (x, y) = (self.nonzero(x), self.nonzero(y));
-                    let c = self.b.ins().$op(x, y);
-                    self.bool01(c)
+                    let (zx, zy) = (self.is_zero(x), self.is_zero(y));
+                    let c = self.b.ins().$op(zx, zy);
+                    let one = self.splat(1);
+                    if $negate {
+                        self.b.ins().band_not(one, c)
+                    } else {
+                        self.b.ins().band(c, one)
+                    }
                 })
             };
         }
@@ -693,14 +1008,13 @@ impl<'a, 'b> Emit<'a, 'b> {
             Op::ILt { d, a, b } => icmp!(d, a, b, IntCC::SignedLessThan),
             Op::ILe { d, a, b } => icmp!(d, a, b, IntCC::SignedLessThanOrEqual),
             Op::IEq { d, a, b } => icmp!(d, a, b, IntCC::Equal),
-            Op::And { d, a, b } => logic!(d, a, b, band),
-            Op::Or { d, a, b } => logic!(d, a, b, bor),
-            Op::Xor { d, a, b } => logic!(d, a, b, bxor),
+            Op::And { d, a, b } => logic!(d, a, b, bor, true),
+            Op::Or { d, a, b } => logic!(d, a, b, band, true),
+            Op::Xor { d, a, b } => logic!(d, a, b, bxor, false),
             Op::Not { d, a } => each!(d, |q| {
                 let x = self.ld(a, q);
-                let zero = self.splat(0);
-                let c = self.b.ins().icmp(IntCC::Equal, x, zero);
-                self.bool01(c)
+                let z = self.is_zero(x);
+                self.bool01(z)
             }),
             Op::FToI { d, a } => each!(d, |q| {
                 let x = self.ldf(a, q);
@@ -720,19 +1034,18 @@ impl<'a, 'b> Emit<'a, 'b> {
             }),
             Op::IToB { d, a } => each!(d, |q| {
                 let x = self.ld(a, q);
-                let c = self.nonzero(x);
-                self.bool01(c)
+                self.bool_of(x)
             }),
             Op::BToF { d, a } => each!(d, |q| {
                 let x = self.ld(a, q);
-                let c = self.nonzero(x);
+                let z = self.is_zero(x);
                 let one = self.splat(ONE);
-                self.b.ins().band(c, one)
+                self.b.ins().band_not(one, z)
             }),
             Op::Select { d, c, a, b } => each!(d, |q| {
                 let (cv, x, y) = (self.ld(c, q), self.ld(a, q), self.ld(b, q));
-                let c = self.nonzero(cv);
-                self.b.ins().bitselect(c, x, y)
+                let z = self.is_zero(cv);
+                self.b.ins().bitselect(z, y, x)
             }),
             Op::ClampIdx { d, a, max, stride } if max <= i32::MAX as u32 => each!(d, |q| {
                 let x = self.ld(a, q);
@@ -741,6 +1054,23 @@ impl<'a, 'b> Emit<'a, 'b> {
                 let x = self.b.ins().smin(x, hi);
                 self.b.ins().imul(x, s)
             }),
+            Op::Uniform { d, word } => {
+                let v = self.uniform_word(word);
+                each!(d, |q| self.b.ins().splat(I32X4, v))
+            }
+            Op::GatherUniform { d, word, off, max }
+                if word as u64 + max as u64 <= i32::MAX as u64 =>
+            {
+                self.gather_uniform(d, word, off, max, m)
+            }
+            Op::Gather { d, base, off, max } => each!(d, |q| self.gather(base, off, max, q)),
+            Op::Scatter { base, off, max, a } => {
+                for q in 0..QUARTERS {
+                    self.scatter(base, off, max, a, q)
+                }
+            }
+            Op::DdX { d, a } => each!(d, |q| self.quad_diff(a, q, [1, 1, 3, 3], [0, 0, 2, 2])),
+            Op::DdY { d, a } => each!(d, |q| self.quad_diff(a, q, [2, 3, 2, 3], [0, 1, 0, 1])),
             // Only hooked runs (the reference interpreter) print.
             Op::Printf { .. } => {}
             Op::Call { .. }

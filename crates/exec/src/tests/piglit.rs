@@ -28,6 +28,7 @@ struct Test {
 /// checks they agree bit for bit.
 fn run_both(k: &Kernel, b: &mut Batch, u: &[u32]) -> Result<(), crate::ExecError> {
     let mut r = b.clone();
+    let input = b.clone();
     let got = k.run(b, u, &NoTextures);
     let want = k.run_reference(&mut r, u, &NoTextures);
     assert_eq!(got, want, "executor vs reference: result");
@@ -38,6 +39,19 @@ fn run_both(k: &Kernel, b: &mut Batch, u: &[u32]) -> Result<(), crate::ExecError
             super::bits_of(&r.outputs),
             "executor vs reference: outputs"
         );
+    }
+    if crate::Variant::Jit.supported() {
+        let mut n = input;
+        let native = k.run_variant(crate::Variant::Jit, &mut n, u, &NoTextures);
+        assert_eq!(native, want, "native vs reference: result");
+        if native.is_ok() {
+            assert_eq!(n.discarded, r.discarded, "native vs reference: discarded");
+            assert_eq!(
+                super::bits_of(&n.outputs),
+                super::bits_of(&r.outputs),
+                "native vs reference: outputs"
+            );
+        }
     }
     got
 }

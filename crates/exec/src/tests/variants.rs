@@ -141,6 +141,18 @@ fn bench_sphere() {
         }
         best * 1e9
     };
+    if let Ok(only) = std::env::var("BENCH_ONLY") {
+        // For profiling one variant: run it for a few seconds.
+        let v = supported_variants()
+            .into_iter()
+            .find(|v| v.name() == only)
+            .expect("BENCH_ONLY names a supported variant");
+        for _ in 0..20 {
+            let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
+            eprintln!("  {:8} {t:.0} ns/batch", v.name());
+        }
+        return;
+    }
     let reference = time(&mut |b| k.run_reference(b, &u, &NoTextures).unwrap());
     eprintln!(
         "sphere.frag: {} ops (executor: {}); reference interpreter {reference:.0} ns/batch",

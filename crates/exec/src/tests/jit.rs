@@ -1,0 +1,311 @@
+//! Random programs of every data op, mask op and masked store, run by the
+//! interpreter and by native code: the same bits, the same discarded
+//! lanes, the same loop-budget errors.
+
+use super::bits_of;
+use crate::engine::{Code, Ins};
+use crate::program::{Op, Program, F1, F2, F3};
+use crate::{Batch, Interface, Kernel, NoTextures, Variant, LANES};
+use glsl::types::Scalar;
+
+const REGS: u32 = 24;
+
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+    fn below(&mut self, n: u32) -> u32 {
+        (self.next() >> 20) as u32 % n
+    }
+    fn reg(&mut self) -> u32 {
+        self.below(REGS)
+    }
+}
+
+const F1S: [F1; 19] = [
+    F1::Radians,
+    F1::Degrees,
+    F1::Sin,
+    F1::Cos,
+    F1::Tan,
+    F1::Asin,
+    F1::Acos,
+    F1::Atan,
+    F1::Exp,
+    F1::Log,
+    F1::Exp2,
+    F1::Log2,
+    F1::Sqrt,
+    F1::InverseSqrt,
+    F1::Abs,
+    F1::Sign,
+    F1::Floor,
+    F1::Ceil,
+    F1::Fract,
+];
+const F2S: [F2; 6] = [F2::Atan2, F2::Pow, F2::Mod, F2::Min, F2::Max, F2::Step];
+const F3S: [F3; 3] = [F3::Clamp, F3::Mix, F3::SmoothStep];
+
+/// A value worth testing: specials, subnormals, small ints, bools, any
+/// bits.
+fn value(r: &mut Rng) -> u32 {
+    const SPECIAL: [f32; 16] = [
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        0.5,
+        -2.5,
+        8_388_608.5,
+        -1e-45,
+        1.1754942e-38,
+        f32::MAX,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::NAN,
+        3e9,
+        -3e9,
+        1e-20,
+    ];
+    match r.below(5) {
+        0 => SPECIAL[r.below(16) as usize].to_bits(),
+        1 => (r.below(11) as i32 - 5) as u32,
+        2 => r.below(2),
+        3 => ((r.next() >> 30) as u32 as f32 / 1e8 - 20.0).to_bits(),
+        _ => (r.next() >> 11) as u32,
+    }
+}
+
+fn random_op(r: &mut Rng, i: u32, n: u32) -> Op {
+    let (d, a, b, c) = (r.reg(), r.reg(), r.reg(), r.reg());
+    match r.below(48) {
+        0 => Op::Const { d, bits: value(r) },
+        1 => Op::Mov { d, a },
+        2 | 3 => Op::Store { d, a },
+        4 => Op::FAdd { d, a, b },
+        5 => Op::FSub { d, a, b },
+        6 => Op::FMul { d, a, b },
+        7 => Op::FDiv { d, a, b },
+        8 => Op::FNeg { d, a },
+        9 => Op::FMac { d, a, b },
+        10 => Op::Dot {
+            d,
+            n: 1 + r.below(4) as u8,
+            a: [a, b, c, r.reg()],
+            b: [r.reg(), r.reg(), r.reg(), r.reg()],
+        },
+        11 | 12 => Op::F1 {
+            f: F1S[r.below(19) as usize],
+            d,
+            a,
+        },
+        13 | 14 => Op::F2 {
+            f: F2S[r.below(6) as usize],
+            d,
+            a,
+            b,
+        },
+        15 => Op::F3 {
+            f: F3S[r.below(3) as usize],
+            d,
+            a,
+            b,
+            c,
+        },
+        16 => Op::FLt { d, a, b },
+        17 => Op::FLe { d, a, b },
+        18 => Op::FEq { d, a, b },
+        19 => Op::IAdd { d, a, b },
+        20 => Op::ISub { d, a, b },
+        21 => Op::IMul { d, a, b },
+        22 => Op::IDiv { d, a, b },
+        23 => Op::INeg { d, a },
+        24 => Op::ILt { d, a, b },
+        25 => Op::ILe { d, a, b },
+        26 => Op::IEq { d, a, b },
+        27 => Op::And { d, a, b },
+        28 => Op::Or { d, a, b },
+        29 => Op::Xor { d, a, b },
+        30 => Op::Not { d, a },
+        31 => Op::FToI { d, a },
+        32 => Op::IToF { d, a },
+        33 => Op::FToB { d, a },
+        34 => Op::IToB { d, a },
+        35 => Op::BToF { d, a },
+        36 => Op::Select { d, c, a, b },
+        37 => Op::ClampIdx {
+            d,
+            a,
+            max: r.below(5),
+            stride: 1 + r.below(3),
+        },
+        38 => {
+            let max = r.below(4);
+            Op::Gather {
+                d,
+                base: r.below(REGS - max),
+                off: a,
+                max,
+            }
+        }
+        39 => {
+            let max = r.below(4);
+            Op::Scatter {
+                base: r.below(REGS - max),
+                off: b,
+                max,
+                a,
+            }
+        }
+        40 => Op::GatherUniform {
+            d,
+            word: r.below(4),
+            off: a,
+            max: r.below(6),
+        },
+        41 => Op::Uniform {
+            d,
+            word: r.below(6),
+        },
+        42 => Op::DdX { d, a },
+        43 => Op::DdY { d, a },
+        44 => match r.below(6) {
+            0 => Op::SaveMask { slot: r.below(2) },
+            1 => Op::RestoreMask { slot: r.below(2) },
+            2 | 3 => Op::AndMask { c },
+            _ => Op::AndNotMask {
+                slot: r.below(2),
+                c,
+            },
+        },
+        45 => match r.below(4) {
+            0 => Op::Kill { start: 0, end: 1 },
+            1 => Op::Discard { start: 0, end: 2 },
+            _ => Op::SyncDiscard { start: 0, end: 2 },
+        },
+        46 => Op::LoopIter,
+        _ => {
+            // Forward jumps only: every program ends.
+            let target = (i + 1 + r.below(8)).min(n);
+            if r.below(2) == 0 {
+                Op::JumpIfNone { target }
+            } else {
+                Op::Jump { target }
+            }
+        }
+    }
+}
+
+/// A kernel running `ins` (not rewritten) with every register an input
+/// and an output.
+fn kernel_of(ins: Vec<Ins>, budget: u64) -> Kernel {
+    let prog = Program {
+        ops: ins.iter().map(|i| i.op).collect(),
+        kill_slots: vec![0, 1],
+        registers: REGS,
+        mask_slots: 2,
+        ..Program::default()
+    };
+    prog.validate().expect("valid random program");
+    let code = Code {
+        prog: prog.clone(),
+        ins,
+        prologue: Vec::new(),
+        pool_base: REGS,
+        zero: Vec::new(),
+    };
+    let interface = Interface {
+        input_components: REGS as usize,
+        output_components: REGS as usize,
+        uniform_words: 4,
+        ..Interface::default()
+    };
+    Kernel {
+        stage: glsl::Stage::Fragment,
+        program: prog,
+        interface,
+        inputs: (0..REGS).map(|r| (r as usize, r, Scalar::Float)).collect(),
+        outputs: (0..REGS).map(|r| (r, r as usize, Scalar::Float)).collect(),
+        loop_budget: budget,
+        code: std::sync::Arc::new(code),
+        depth: Default::default(),
+        jit: Default::default(),
+    }
+}
+
+#[test]
+fn random_programs_run_natively_as_interpreted() {
+    if !Variant::Jit.supported() {
+        return;
+    }
+    let mut r = Rng(0x9e37_79b9_7f4a_7c15);
+    for p in 0..150 {
+        let n = 10 + r.below(50);
+        let ins: Vec<Ins> = (0..n)
+            .map(|i| Ins {
+                op: random_op(&mut r, i, n),
+                masked: r.below(3) == 0,
+            })
+            // Only plain data ops may be fused with a store.
+            .map(|mut i| {
+                i.masked &= !matches!(
+                    i.op,
+                    Op::Store { .. }
+                        | Op::Scatter { .. }
+                        | Op::SaveMask { .. }
+                        | Op::RestoreMask { .. }
+                        | Op::AndMask { .. }
+                        | Op::AndNotMask { .. }
+                        | Op::Kill { .. }
+                        | Op::Discard { .. }
+                        | Op::SyncDiscard { .. }
+                        | Op::LoopIter
+                        | Op::Jump { .. }
+                        | Op::JumpIfNone { .. }
+                );
+                i
+            })
+            .collect();
+        let k = kernel_of(ins, r.below(4) as u64);
+        let uniforms: Vec<u32> = (0..4).map(|_| value(&mut r)).collect();
+        for round in 0..4 {
+            let mut base = Batch::for_kernel(&k, (r.next() >> 7) as u32 & 0xffff);
+            base.helper = if round == 3 { 0x0f0f } else { 0 };
+            for c in base.inputs.iter_mut() {
+                *c = [0; LANES].map(|_| f32::from_bits(value(&mut r)));
+                if round == 2 {
+                    // The same value on every lane (uniform indices).
+                    *c = [c[0]; LANES];
+                }
+            }
+            let mut want = base.clone();
+            let r0 = k.run_variant(Variant::Portable, &mut want, &uniforms, &NoTextures);
+            let mut got = base.clone();
+            let r1 = k.run_variant(Variant::Jit, &mut got, &uniforms, &NoTextures);
+            assert!(
+                matches!(k.native_code(), Some(Ok(_))),
+                "program {p}: {:?}",
+                k.native_code()
+            );
+            let ops: Vec<_> = k.code.ins.iter().map(|i| (i.op, i.masked)).collect();
+            assert_eq!(r1, r0, "program {p}: result\n{ops:#?}");
+            assert_eq!(
+                got.discarded, want.discarded,
+                "program {p}: discarded\n{ops:#?}"
+            );
+            let (g, w) = (bits_of(&got.outputs), bits_of(&want.outputs));
+            for reg in 0..REGS as usize {
+                assert_eq!(
+                    g[reg].map(|x| format!("{x:08x}")),
+                    w[reg].map(|x| format!("{x:08x}")),
+                    "program {p} round {round}: register {reg}\n{ops:#?}"
+                );
+            }
+        }
+    }
+}
