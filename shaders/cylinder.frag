@@ -21,6 +21,12 @@
 //
 // Written by the project (no seed has cylinders; lighting, fog and depth
 // are sphere.frag's, so spheres and cylinders match).
+//
+// Precision: the quadratic is solved for the ray re-centred at its point
+// nearest the cylinder's base, not at the eye: from the eye, the squared
+// distances are about distance^2 and the radius^2 term (0.03 for the
+// renderer's bonds) drowns in their rounding in f32, which made
+// perspective bonds noisy.
 
 uniform float fogging[4];
 uniform float perspective;
@@ -51,9 +57,13 @@ void main(void)
     vec3 ray_origin = mix(vec3(point.xy, 0.0), vec3(0.0), perspective);
     vec3 ray_direction = mix(vec3(0.0, 0.0, -1.0), normalize(point), perspective);
 
-    // |w' + t D'|^2 = r^2 with the components across the axis.
+    // |w' + t D'|^2 = r^2 with the components across the axis, the ray
+    // re-centred at t0, its closest approach to cylinder_base: w is then
+    // a short vector and qc does not lose r^2 next to the squared
+    // distance from the eye (see the header).
     vec3 axis = normalize(cylinder_axis);
-    vec3 w = ray_origin - cylinder_base;
+    float t0 = dot(cylinder_base - ray_origin, ray_direction);
+    vec3 w = ray_origin + t0 * ray_direction - cylinder_base;
     vec3 dp = ray_direction - dot(ray_direction, axis) * axis;
     vec3 wp = w - dot(w, axis) * axis;
     float qa = dot(dp, dp);
@@ -62,7 +72,7 @@ void main(void)
     float disc = qb * qb - qa * qc;
     if (qa < 1e-12 || disc < 0.0)
         discard;
-    float t = (-qb - sqrt(disc)) / qa;
+    float t = t0 + (-qb - sqrt(disc)) / qa;
     vec3 ipoint = ray_origin + t * ray_direction;
     float h = dot(ipoint - cylinder_base, axis);
     if (h < 0.0 || h > cylinder_length)

@@ -36,6 +36,7 @@
 //   assigns gl_FragDepth anywhere; the black path now writes the quad's
 //   own depth, gl_FragCoord.z ("without adjusting the Z value").
 // - Same fixes as sphere.frag: exact perspective ray normalize(point),
+//   the well-conditioned ray-sphere test,
 //   gl_DepthRange-aware depth, light_enabled[8] instead of lights 0 and 1.
 
 uniform float outline_width;
@@ -70,7 +71,10 @@ void main(void)
                                 perspective);
 
     float b = dot(sphere_direction, ray_direction);
-    float position = b * b + radius2 - dot(sphere_direction, sphere_direction);
+    // r^2 - d^2, d the distance of the centre from the ray, with d^2 taken
+    // as |sphere_direction - b * ray_direction|^2 (see the header).
+    vec3 perpendicular = sphere_direction - b * ray_direction;
+    float position = radius2 - dot(perpendicular, perpendicular);
     if (position < 0.0)
         discard;
 

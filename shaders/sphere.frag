@@ -28,6 +28,13 @@
 // - Perspective ray direction: the seed re-normalises the interpolated
 //   view_direction; interpolated unit vectors are not the direction to
 //   the pixel, so the ray is now normalize(point), exact for every pixel.
+// - Ray-sphere test: the seed's r^2 - d^2 = b^2 + r^2 - |c|^2 subtracts two
+//   nearly equal large numbers in perspective (b^2 and |c|^2 are about
+//   distance^2, 360,000 at 600 units from the eye, where f32 keeps only
+//   steps of 0.03), so the hit test and the surface point came out noisy;
+//   d^2 is now |c - b * ray|^2, the squared length of a vector no longer
+//   than the radius, accurate to a few ulps. The same value in exact
+//   arithmetic.
 // - Depth: the seed writes 0.5 + 0.5 * z/w, right only for the default
 //   glDepthRange(0, 1); this uses gl_DepthRange.
 // - Lights: the seed's two hard-wired getLight(0..1) calls become its own
@@ -71,7 +78,10 @@ void main(void)
 
     // |origin + t * direction - center|^2 = radius^2
     float b = dot(sphere_direction, ray_direction);
-    float position = b * b + radius2 - dot(sphere_direction, sphere_direction);
+    // r^2 - d^2, d the distance of the centre from the ray, with d^2 taken
+    // as |sphere_direction - b * ray_direction|^2 (see the header).
+    vec3 perpendicular = sphere_direction - b * ray_direction;
+    float position = radius2 - dot(perpendicular, perpendicular);
     if (position < 0.0)
         discard;
 

@@ -28,6 +28,7 @@
 // - The unused `varying float depth_level` (written by no vertex shader)
 //   is dropped.
 // - Same fixes as sphere.frag: the exact perspective ray normalize(point),
+//   the well-conditioned ray-sphere test,
 //   gl_DepthRange-aware depth, light_enabled[8] instead of the hard-wired
 //   lights 0 and 1, alpha from the atom colour.
 
@@ -65,7 +66,10 @@ void main(void)
 
     // |origin + t * direction - center|^2 = radius^2
     float b = dot(sphere_direction, ray_direction);
-    float position = b * b + radius2 - dot(sphere_direction, sphere_direction);
+    // r^2 - d^2, d the distance of the centre from the ray, with d^2 taken
+    // as |sphere_direction - b * ray_direction|^2 (see the header).
+    vec3 perpendicular = sphere_direction - b * ray_direction;
+    float position = radius2 - dot(perpendicular, perpendicular);
     if (position < 0.0)
         discard;
 

@@ -19,7 +19,8 @@
 // normal-inverting X); this is the whole shader the talk describes, and
 // the colour it computes (color2) is the one that gets lit.
 // - Same fixes as sphere.frag: the exp2 fog term, the exact perspective
-//   ray normalize(point), gl_DepthRange-aware depth, light_enabled[8]
+//   ray normalize(point), the well-conditioned ray-sphere test,
+//   gl_DepthRange-aware depth, light_enabled[8]
 //   instead of the hard-wired lights 0 and 1, alpha from the atom colour.
 
 uniform float fogging[4];
@@ -59,7 +60,10 @@ void main(void)
 
     // |origin + t * direction - center|^2 = radius^2
     float b = dot(sphere_direction, ray_direction);
-    float position = b * b + radius2 - dot(sphere_direction, sphere_direction);
+    // r^2 - d^2, d the distance of the centre from the ray, with d^2 taken
+    // as |sphere_direction - b * ray_direction|^2 (see the header).
+    vec3 perpendicular = sphere_direction - b * ray_direction;
+    float position = radius2 - dot(perpendicular, perpendicular);
     if (position < 0.0)
         discard;
 

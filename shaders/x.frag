@@ -13,7 +13,8 @@
 // Fixes of the seed talk's text ("GLSL v1.20", Example 02, X fragment
 // shader; it compiles as given, its indentation lost at a page break):
 // - Same fixes as sphere.frag: the exp2 fog term, the exact perspective
-//   ray normalize(point), gl_DepthRange-aware depth, light_enabled[8]
+//   ray normalize(point), the well-conditioned ray-sphere test,
+//   gl_DepthRange-aware depth, light_enabled[8]
 //   instead of the hard-wired lights 0 and 1, alpha from the atom colour.
 
 uniform float fogging[4];
@@ -53,7 +54,10 @@ void main(void)
 
     // |origin + t * direction - center|^2 = radius^2
     float b = dot(sphere_direction, ray_direction);
-    float position = b * b + radius2 - dot(sphere_direction, sphere_direction);
+    // r^2 - d^2, d the distance of the centre from the ray, with d^2 taken
+    // as |sphere_direction - b * ray_direction|^2 (see the header).
+    vec3 perpendicular = sphere_direction - b * ray_direction;
+    float position = radius2 - dot(perpendicular, perpendicular);
     if (position < 0.0)
         discard;
 
