@@ -28,7 +28,10 @@
 //!   exponents spanning the whole result range, and 100 million negative
 //!   bases with integer exponents, against `libm::pow` in `f64`. The
 //!   special cases (zeros, infinities, NaN, negative bases, `pow(0, 0)`,
-//!   `pow(x, 0)`, `pow(1, y)`, subnormal inputs) give C's `powf` results.
+//!   `pow(x, 0)`, `pow(1, y)`, subnormal inputs) give C's `powf` results;
+//!   a NaN result is always the canonical quiet NaN (`0x7fc00000`), since
+//!   which of two NaN operands' payloads a product carries depends on how
+//!   the compiler ordered it.
 //! - `sin`, `cos`, `tan`, `asin`, `acos`, `atan`, `atan2` are libm's
 //!   single-precision routines (ports of musl): at most 1 ulp from the
 //!   exact result (checked against libm's `f64` routines by a test below).

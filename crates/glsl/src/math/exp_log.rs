@@ -212,8 +212,13 @@ pub fn pow(x: f32, y: f32) -> f32 {
         r
     };
     let one = (y == 0.0) | (x == 1.0) | ((x == -1.0) & (y.abs() == f32::INFINITY));
+    // A NaN result is the canonical quiet NaN: with two NaN operands an
+    // `f64` product carries the payload of whichever the compiled code
+    // put first, which differs between builds and instruction sets.
     if one {
         1.0
+    } else if r.is_nan() {
+        f32::NAN
     } else {
         r
     }
@@ -425,6 +430,12 @@ mod tests {
         assert_eq!(log2(1e-45), -149.0);
         assert_eq!(exp2(-149.0), 1e-45);
         assert_eq!(pow(2.0, -149.0), 1e-45);
+        // NaN results are the canonical NaN, whatever the operands' payloads
+        // (which one an f64 product would carry depends on the build).
+        let (a, b) = (f32::from_bits(0xffff_fffd), f32::from_bits(0x7fc0_1234));
+        for (x, y) in [(a, b), (b, a), (a, 2.5), (2.5, b), (-2.0, 0.5)] {
+            assert_eq!(pow(x, y).to_bits(), f32::NAN.to_bits(), "pow({x}, {y})");
+        }
     }
 
     #[test]
