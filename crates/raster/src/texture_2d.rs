@@ -271,21 +271,110 @@ fn sample_in<const SIMD: bool>(
         filter_lanes::<SIMD>(tex, &table, &level[1], &st, &near, &mut second);
         // `mix_levels` on the lanes in `two`, as a select over all lanes.
         let two = lanes(two);
-        for c in 0..4 {
-            for l in 0..LANES {
-                let (t1, t2, fl) = (first[c][l], second[c][l], f[l]);
-                let mixed = (1.0 - fl) * t1 + fl * t2;
-                first[c][l] = if two[l] { mixed } else { t1 };
+        #[cfg(target_arch = "x86_64")]
+        if SIMD {
+            // SAFETY: `SIMD` is only set in code compiled for AVX2, which
+            // runs only on CPUs that have it.
+            unsafe { mix_avx2(&mut first, &second, &f, &two) };
+        }
+        if !SIMD {
+            for c in 0..4 {
+                for l in 0..LANES {
+                    let (t1, t2, fl) = (first[c][l], second[c][l], f[l]);
+                    let mixed = (1.0 - fl) * t1 + fl * t2;
+                    first[c][l] = if two[l] { mixed } else { t1 };
+                }
             }
         }
     }
     let mask = lanes(mask);
+    #[cfg(target_arch = "x86_64")]
+    if SIMD {
+        // SAFETY: as above.
+        unsafe { select_avx2(out, &first, &mask) };
+        return true;
+    }
     for c in 0..4 {
         for l in 0..LANES {
             out[c][l] = if mask[l] { first[c][l] } else { out[c][l] };
         }
     }
     true
+}
+
+/// All ones in the 32-bit lanes `o..o + 8` whose flag is set.
+///
+/// # Safety
+/// The CPU must support AVX2; `o <= LANES - 8`.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn flags_avx2(flags: &[bool; LANES], o: usize) -> std::arch::x86_64::__m256 {
+    use std::arch::x86_64::*;
+    debug_assert!(o + 8 <= LANES);
+    // SAFETY: 8 bytes (a bool is one byte, 0 or 1) inside `flags`.
+    unsafe {
+        let bytes = _mm_loadl_epi64(flags.as_ptr().add(o).cast());
+        _mm256_castsi256_ps(_mm256_cmpgt_epi32(
+            _mm256_cvtepu8_epi32(bytes),
+            _mm256_setzero_si256(),
+        ))
+    }
+}
+
+/// The blend of two levels' values on the lanes in `two`, as the portable
+/// code computes it, eight lanes at a time.
+///
+/// # Safety
+/// The CPU must support AVX2.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn mix_avx2(
+    first: &mut [[f32; LANES]; 4],
+    second: &[[f32; LANES]; 4],
+    f: &[f32; LANES],
+    two: &[bool; LANES],
+) {
+    use std::arch::x86_64::*;
+    // SAFETY: every pointer is to 8 consecutive elements inside one of
+    // the arrays (offset 0 or 8 of 16).
+    unsafe {
+        for o in [0, 8] {
+            let fl = _mm256_loadu_ps(f.as_ptr().add(o));
+            let one_minus = _mm256_sub_ps(_mm256_set1_ps(1.0), fl);
+            let sel = flags_avx2(two, o);
+            for (t1, t2) in first.iter_mut().zip(second) {
+                let a = _mm256_loadu_ps(t1.as_ptr().add(o));
+                let b = _mm256_loadu_ps(t2.as_ptr().add(o));
+                let mixed = _mm256_add_ps(_mm256_mul_ps(one_minus, a), _mm256_mul_ps(fl, b));
+                _mm256_storeu_ps(t1.as_mut_ptr().add(o), _mm256_blendv_ps(a, mixed, sel));
+            }
+        }
+    }
+}
+
+/// `out` takes `value` on the lanes in `mask`, eight lanes at a time.
+///
+/// # Safety
+/// The CPU must support AVX2.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn select_avx2(
+    out: &mut [[f32; LANES]; 4],
+    value: &[[f32; LANES]; 4],
+    mask: &[bool; LANES],
+) {
+    use std::arch::x86_64::*;
+    // SAFETY: as in `mix_avx2`.
+    unsafe {
+        for o in [0, 8] {
+            let sel = flags_avx2(mask, o);
+            for (out, v) in out.iter_mut().zip(value) {
+                let old = _mm256_loadu_ps(out.as_ptr().add(o));
+                let new = _mm256_loadu_ps(v.as_ptr().add(o));
+                _mm256_storeu_ps(out.as_mut_ptr().add(o), _mm256_blendv_ps(old, new, sel));
+            }
+        }
+    }
 }
 
 /// The lanes of a mask, one flag each (for selects over all lanes).
@@ -470,10 +559,17 @@ fn filter_lanes<const SIMD: bool>(
     let (ws, wt) = (tex.wrap[0], tex.wrap[1]);
     let mut w = [1i32; LANES];
     let mut h = [1i32; LANES];
-    for l in 0..LANES {
-        let d = level[l] as usize % MAX_LEVELS;
-        w[l] = table.w[d];
-        h[l] = table.h[d];
+    #[cfg(target_arch = "x86_64")]
+    if SIMD {
+        // SAFETY: `SIMD` is only set in code compiled for AVX2.
+        unsafe { level_sizes_avx2(table, level, &mut w, &mut h) };
+    }
+    if !SIMD {
+        for l in 0..LANES {
+            let d = level[l] as usize % MAX_LEVELS;
+            w[l] = table.w[d];
+            h[l] = table.h[d];
+        }
     }
     let us = wrap_scale(ws, &st[0], &w);
     let ut = wrap_scale(wt, &st[1], &h);
@@ -579,12 +675,7 @@ unsafe fn combine_unorm8_avx2(
                 r[k] = _mm256_loadu_si256(raw[k].as_ptr().add(o).cast());
                 w[k] = _mm256_loadu_ps(wgt[k].as_ptr().add(o));
             }
-            // All ones in the lanes in `nearest` (a bool is one byte, 0 or 1).
-            let flags = _mm_loadl_epi64(nearest.as_ptr().add(o).cast());
-            let near = _mm256_castsi256_ps(_mm256_cmpgt_epi32(
-                _mm256_cvtepu8_epi32(flags),
-                _mm256_setzero_si256(),
-            ));
+            let near = flags_avx2(nearest, o);
             for (c, out) in out.iter_mut().enumerate() {
                 // Byte c of each 32-bit texel, zero-extended: per 32-bit
                 // word, the index of that byte in its 128-bit half, then
@@ -616,6 +707,36 @@ unsafe fn combine_unorm8_avx2(
                 let v = _mm256_blendv_ps(acc, first, near);
                 _mm256_storeu_ps(out.as_mut_ptr().add(o), v);
             }
+        }
+    }
+}
+
+/// `table.w[level % MAX_LEVELS]` and `table.h[...]` of every lane with
+/// AVX2 gathers (scalar loads would be stored lane by lane and read back
+/// as vectors, which stalls).
+///
+/// # Safety
+/// The CPU must support AVX2.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn level_sizes_avx2(
+    table: &LevelTable,
+    level: &[i32; LANES],
+    w: &mut [i32; LANES],
+    h: &mut [i32; LANES],
+) {
+    use std::arch::x86_64::*;
+    // SAFETY: the loads and stores are of 8 consecutive elements inside
+    // `level`, `w` and `h`; the gathers read `table.w` and `table.h` at
+    // indices masked to 0..MAX_LEVELS.
+    unsafe {
+        let wrap = _mm256_set1_epi32(MAX_LEVELS as i32 - 1);
+        for o in [0, 8] {
+            let d = _mm256_and_si256(_mm256_loadu_si256(level.as_ptr().add(o).cast()), wrap);
+            let lw = _mm256_i32gather_epi32::<4>(table.w.as_ptr(), d);
+            let lh = _mm256_i32gather_epi32::<4>(table.h.as_ptr(), d);
+            _mm256_storeu_si256(w.as_mut_ptr().add(o).cast(), lw);
+            _mm256_storeu_si256(h.as_mut_ptr().add(o).cast(), lh);
         }
     }
 }
