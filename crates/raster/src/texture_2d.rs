@@ -9,9 +9,23 @@
 //! wrapping, weights, the sum over the four texels, the blend of two
 //! levels), so the results are the same bits; what it saves is the general
 //! path's per-lane dispatch: completeness and state are looked at once per
-//! request, texel indices are plain integers (no border case), the
-//! storage (RGBA8 or f32) is matched once per level, and the bilinear sum
-//! is straight-line code. A test compares the two paths on random lookups.
+//! request (the levels' sizes and storage in a small table), texel
+//! indices are plain integers (no border case), and every step works on
+//! arrays of the 16 lanes: λ, levels, wrapping, the four corners' indices
+//! and weights, then the texels (scalar loads, the only per-lane step),
+//! the bilinear sum over all lanes (nearest lanes select corner 0) and
+//! the blend of two levels.
+//!
+//! The code is compiled for the baseline instruction set, for AVX2 + FMA
+//! and for AVX-512 + FMA, the one matching the executor's variant chosen
+//! at run time (`SHADERBOX_KERNEL`; the native-code executor gets the
+//! best the CPU has). The two x86 variants run some steps as explicit
+//! AVX2 code (RGBA8 conversion and sum, level blend, output select, the
+//! per-lane level sizes), eight lanes at a time, with the portable code's
+//! operations in its order: the bytes k become k/255 by a multiply and a
+//! correction by the exact residual (fused multiply-adds), correctly
+//! rounded like the division for every byte. A test compares every
+//! variant the CPU has with the general path on random lookups.
 
 use crate::ex::{Lod, SampleRequest, LANES};
 use crate::texture::{
@@ -545,8 +559,9 @@ fn wrap_index(i: i32, wrap: Wrap, n: i32) -> i32 {
 ///
 /// All four corners of every lane are fetched (the indices are always in
 /// the level), and the sum is computed over all lanes, the nearest lanes
-/// then selecting corner 0: straight-line code over arrays of 16 lanes,
-/// which the compiler vectorizes; only the texel loads are per lane.
+/// then selecting corner 0: straight-line code over arrays of 16 lanes
+/// (explicit AVX2 code for RGBA8 levels when `SIMD`); only the texel
+/// loads are per lane.
 #[inline(always)]
 fn filter_lanes<const SIMD: bool>(
     tex: &Texture,
