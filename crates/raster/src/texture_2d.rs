@@ -202,19 +202,39 @@ fn sample_in<const SIMD: bool>(
         return false;
     };
 
-    // λ of every lane, as `texture::lambda` computes it.
-    let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod);
-
     // The level(s) of every lane, as `texture::select_levels` picks them.
     let mask = req.mask;
     let mut level = [[base as i32; LANES]; 2];
     let mut f = [0.0f32; LANES];
     let mut two: u32 = 0;
     let mut nearest: u32 = 0;
-    if matches!(
+    let unmipmapped = matches!(tex.min_filter, MinFilter::Nearest | MinFilter::Linear);
+    let min_nearest = tex.min_filter == MinFilter::Nearest;
+    let mag_nearest = tex.mag_filter == MagFilter::Nearest;
+    if unmipmapped && min_nearest == mag_nearest {
+        // The base level with one filter whatever λ (which has no other
+        // effect): λ is not computed.
+        if mag_nearest {
+            nearest = !0;
+        }
+    } else if unmipmapped {
+        // Magnification (λ ≤ c = 0, or NaN) or minification of the base
+        // level, over the lanes.
+        let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod);
+        let mut is_nearest = [false; LANES];
+        for l in 0..LANES {
+            let mag = lam[l].is_nan() || lam[l] <= 0.0;
+            is_nearest[l] = if mag { mag_nearest } else { min_nearest };
+        }
+        for (l, &near) in is_nearest.iter().enumerate() {
+            nearest |= (near as u32) << l;
+        }
+    } else if matches!(
         tex.min_filter,
         MinFilter::LinearMipmapLinear | MinFilter::NearestMipmapLinear
     ) {
+        // λ of every lane, as `texture::lambda` computes it.
+        let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod);
         // Eq. 3.28/3.29 over the lanes, branch-free.
         let c = if tex.mag_filter == MagFilter::Linear
             && tex.min_filter == MinFilter::NearestMipmapLinear
@@ -223,7 +243,6 @@ fn sample_in<const SIMD: bool>(
         } else {
             0.0
         };
-        let mag_nearest = tex.mag_filter == MagFilter::Nearest;
         let min_nearest = tex.min_filter == MinFilter::NearestMipmapLinear;
         let (base_i, q_i) = (base as i32, q as i32);
         let (base_f, q_f) = (base as f32, q as f32);
@@ -253,6 +272,7 @@ fn sample_in<const SIMD: bool>(
         }
         two &= mask;
     } else {
+        let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod);
         for lane in 0..LANES {
             if mask & (1 << lane) == 0 {
                 continue;
@@ -612,6 +632,16 @@ fn filter_lanes<const SIMD: bool>(
         wgt[3][l] = a * b;
     }
     match &table.store {
+        Store::Unorm8(levels) if nearest.iter().all(|&n| n) => {
+            // NEAREST on every lane: corner 0 alone.
+            let mut raw = [[0u32; LANES]; 1];
+            gather_unorm8(levels, level, &[idx[0]], &mut raw);
+            for (c, out) in out.iter_mut().enumerate() {
+                for (v, &r) in out.iter_mut().zip(&raw[0]) {
+                    *v = unorm8((r >> (8 * c)) & 255);
+                }
+            }
+        }
         Store::Unorm8(levels) => {
             let mut raw = [[0u32; LANES]; 4];
             gather_unorm8(levels, level, &idx, &mut raw);
@@ -804,18 +834,18 @@ fn unorm8(k: u32) -> f32 {
 /// the compiler interleaves the loads with the code around them into
 /// badly vectorized code.
 #[inline(never)]
-fn gather_unorm8(
+fn gather_unorm8<const K: usize>(
     levels: &[&[[u8; 4]]; MAX_LEVELS],
     level: &[i32; LANES],
-    idx: &[[u32; LANES]; 4],
-    raw: &mut [[u32; LANES]; 4],
+    idx: &[[u32; LANES]; K],
+    raw: &mut [[u32; LANES]; K],
 ) {
     for l in 0..LANES {
         let texels = levels[level[l] as usize % MAX_LEVELS];
         // Every index is below the level's width × height, which it holds
         // (`Store::Unorm8`); the clamp only keeps that local.
         let last = texels.len().saturating_sub(1);
-        for k in 0..4 {
+        for k in 0..K {
             let i = (idx[k][l] as usize).min(last);
             // SAFETY: every slice of `Store::Unorm8` has at least one
             // texel, so `i <= len - 1` is in bounds.
@@ -1197,7 +1227,7 @@ mod tests {
 #[cfg(test)]
 mod bench {
     use super::*;
-    use crate::texture::{Image, MinFilter, TextureUnit};
+    use crate::texture::{Image, MagFilter, MinFilter, TextureUnit};
     use std::sync::Arc;
 
     /// `cargo test --release -p shaderbox-raster bench_sample_2d -- --ignored --nocapture`:
@@ -1205,7 +1235,8 @@ mod bench {
     /// lanes with derivatives like the benchmark's textured scene, through
     /// each instruction set's fast path and the general path.
     /// `BENCH_ISA=Avx2` (or `Portable`, `Avx512`) times that variant
-    /// alone (for profilers), `BENCH_ROUNDS=N` rounds of each (15).
+    /// alone (for profilers), `BENCH_ROUNDS=N` rounds of each (15),
+    /// `BENCH_FILTERS=all` also LINEAR and NEAREST without mipmaps.
     #[test]
     #[ignore]
     fn bench_sample_2d() {
@@ -1228,14 +1259,7 @@ mod bench {
             }
             n /= 2;
         }
-        let mut tex = Texture::new(TextureTarget::Tex2D, levels);
-        tex.min_filter = MinFilter::LinearMipmapLinear;
-        let units = TextureUnits {
-            units: vec![TextureUnit {
-                tex_2d: Some(Arc::new(tex)),
-                ..TextureUnit::default()
-            }],
-        };
+        let tex = Texture::new(TextureTarget::Tex2D, levels);
         let mut reqs = Vec::new();
         for k in 0..4096u32 {
             let x0 = (k % 64) as f32 * 4.0;
@@ -1265,6 +1289,31 @@ mod bench {
                 mask: 0xffff,
             });
         }
+        // The scene's filter; then LINEAR and NEAREST without mipmaps
+        // (`BENCH_FILTERS=all`).
+        let mut filters = vec![(MinFilter::LinearMipmapLinear, MagFilter::Linear)];
+        if std::env::var("BENCH_FILTERS").is_ok_and(|v| v == "all") {
+            filters.push((MinFilter::Linear, MagFilter::Linear));
+            filters.push((MinFilter::Nearest, MagFilter::Nearest));
+        }
+        for (min_filter, mag_filter) in filters {
+            let mut tex = tex.clone();
+            tex.min_filter = min_filter;
+            tex.mag_filter = mag_filter;
+            let units = TextureUnits {
+                units: vec![TextureUnit {
+                    tex_2d: Some(Arc::new(tex)),
+                    ..TextureUnit::default()
+                }],
+            };
+            println!("{min_filter:?}, {mag_filter:?}:");
+            time_lookups(&units, &reqs);
+        }
+    }
+
+    /// Times `reqs` through each instruction set's fast path and the
+    /// general path and prints the best time per lane of each.
+    fn time_lookups(units: &TextureUnits, reqs: &[SampleRequest]) {
         let mut out = [[0.0; LANES]; 4];
         let mut sink = 0.0f32;
         // Each supported instruction set's fast path, then the general
@@ -1284,10 +1333,10 @@ mod bench {
         for round in 0..rounds * ways {
             let way = round % ways;
             let t = std::time::Instant::now();
-            for r in &reqs {
+            for r in reqs {
                 match isas.get(way) {
                     Some(&isa) => {
-                        sample_with(isa, &units, r, &mut out);
+                        sample_with(isa, units, r, &mut out);
                     }
                     None => units.sample_general(r, &mut out),
                 }
