@@ -592,19 +592,14 @@ fn filter_lanes<const SIMD: bool>(
     out: &mut [[f32; LANES]; 4],
 ) {
     let (ws, wt) = (tex.wrap[0], tex.wrap[1]);
+    // Level base + s is `max(1, size >> s)` texels wide and high
+    // (`LevelTable::new` checks it), s in 0..=31.
     let mut w = [1i32; LANES];
     let mut h = [1i32; LANES];
-    #[cfg(target_arch = "x86_64")]
-    if SIMD {
-        // SAFETY: `SIMD` is only set in code compiled for AVX2.
-        unsafe { level_sizes_avx2(table, level, &mut w, &mut h) };
-    }
-    if !SIMD {
-        for l in 0..LANES {
-            let d = level[l] as usize % MAX_LEVELS;
-            w[l] = table.w[d];
-            h[l] = table.h[d];
-        }
+    for l in 0..LANES {
+        let s = (level[l].wrapping_sub(table.base) as u32).min(31);
+        w[l] = (table.width >> s).max(1) as i32;
+        h[l] = (table.height >> s).max(1) as i32;
     }
     let us = wrap_scale(ws, &st[0], &w);
     let ut = wrap_scale(wt, &st[1], &h);
@@ -756,36 +751,6 @@ unsafe fn combine_unorm8_avx2(
     }
 }
 
-/// `table.w[level % MAX_LEVELS]` and `table.h[...]` of every lane with
-/// AVX2 gathers (scalar loads would be stored lane by lane and read back
-/// as vectors, which stalls).
-///
-/// # Safety
-/// The CPU must support AVX2.
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-unsafe fn level_sizes_avx2(
-    table: &LevelTable,
-    level: &[i32; LANES],
-    w: &mut [i32; LANES],
-    h: &mut [i32; LANES],
-) {
-    use std::arch::x86_64::*;
-    // SAFETY: the loads and stores are of 8 consecutive elements inside
-    // `level`, `w` and `h`; the gathers read `table.w` and `table.h` at
-    // indices masked to 0..MAX_LEVELS.
-    unsafe {
-        let wrap = _mm256_set1_epi32(MAX_LEVELS as i32 - 1);
-        for o in [0, 8] {
-            let d = _mm256_and_si256(_mm256_loadu_si256(level.as_ptr().add(o).cast()), wrap);
-            let lw = _mm256_i32gather_epi32::<4>(table.w.as_ptr(), d);
-            let lh = _mm256_i32gather_epi32::<4>(table.h.as_ptr(), d);
-            _mm256_storeu_si256(w.as_mut_ptr().add(o).cast(), lw);
-            _mm256_storeu_si256(h.as_mut_ptr().add(o).cast(), lh);
-        }
-    }
-}
-
 /// Per axis and lane: texel 0, texel 1 and the weight of texel 1 for
 /// LINEAR, or the texel (in texel 0) for the lanes in `nearest`. Computes
 /// both for every lane and selects (so the loop vectorizes).
@@ -857,10 +822,11 @@ fn gather_unorm8<const K: usize>(
 /// The levels a request may read (base..=q): their sizes and storage,
 /// looked at once per request instead of once per lane.
 struct LevelTable<'a> {
-    /// `img.width.max(1)` and `img.height.max(1)` of each level (1 for
-    /// levels outside base..=q).
-    w: [i32; MAX_LEVELS],
-    h: [i32; MAX_LEVELS],
+    /// The base level and its width and height; level base + s is
+    /// `max(1, width >> s)` by `max(1, height >> s)` texels.
+    base: i32,
+    width: u32,
+    height: u32,
     store: Store<'a>,
 }
 
@@ -881,27 +847,29 @@ static ONE_TEXEL: [[u8; 4]; 1] = [[0, 0, 0, 255]];
 
 impl<'a> LevelTable<'a> {
     /// The table of levels `base..=q` of `tex`, or `None` when a level is
-    /// missing or too large for 32-bit texel indices (the general path
-    /// takes those).
+    /// missing, too large for 32-bit texel indices, or not the size of a
+    /// mipmap of the base level (the general path takes those; a complete
+    /// texture's levels are).
     #[inline(always)]
     fn new(tex: &'a Texture, base: usize, q: usize) -> Option<LevelTable<'a>> {
         if q >= MAX_LEVELS || base > q {
             return None;
         }
         let levels = tex.levels.get(base..=q)?;
-        let mut w = [1i32; MAX_LEVELS];
-        let mut h = [1i32; MAX_LEVELS];
+        let first = levels.first()?;
+        let (width, height) = (first.width.max(1), first.height.max(1));
+        // Sizes up to 2^24 (exact in f32) and indices below 2^31 (the
+        // other levels are smaller).
+        if width > 1 << 24 || height > 1 << 24 || width as u64 * height as u64 > i32::MAX as u64 {
+            return None;
+        }
         let (mut unorm8, mut float, mut short) = (0, 0, false);
-        for (d, img) in (base..=q).zip(levels) {
+        for (s, img) in (0u32..).zip(levels) {
             let (lw, lh) = (img.width.max(1), img.height.max(1));
-            // Sizes up to 2^24 (exact in f32) and indices below 2^31.
-            let texels = lw as u64 * lh as u64;
-            if lw > 1 << 24 || lh > 1 << 24 || texels > i32::MAX as u64 {
+            if lw != (width >> s).max(1) || lh != (height >> s).max(1) {
                 return None;
             }
-            w[d] = lw as i32;
-            h[d] = lh as i32;
-            short |= (img.len() as u64) < texels;
+            short |= (img.len() as u64) < lw as u64 * lh as u64;
             match img.texels {
                 Texels::Unorm8(_) => unorm8 += 1,
                 Texels::F32(_) => float += 1,
@@ -926,7 +894,12 @@ impl<'a> LevelTable<'a> {
             }
             Store::F32(v)
         };
-        Some(LevelTable { w, h, store })
+        Some(LevelTable {
+            base: base as i32,
+            width,
+            height,
+            store,
+        })
     }
 
     /// Texels `idx[k][lane]` (corner k) of level `level[lane]` as RGBA
