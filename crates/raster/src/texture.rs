@@ -160,7 +160,7 @@ impl Image {
 
     /// Whether the level stores `width × height × depth` texels.
     #[inline]
-    fn holds_texels(&self) -> bool {
+    pub(crate) fn holds_texels(&self) -> bool {
         // (u128: the product of three u32 does not overflow.)
         self.len() as u128 == self.width as u128 * self.height as u128 * self.depth as u128
     }
@@ -265,7 +265,7 @@ impl Texture {
         }
     }
 
-    fn mipmapped(&self) -> bool {
+    pub(crate) fn mipmapped(&self) -> bool {
         !matches!(self.min_filter, MinFilter::Nearest | MinFilter::Linear)
     }
 

@@ -188,17 +188,11 @@ fn sample_in<const SIMD: bool>(
         return false;
     }
     // Incomplete textures take the general path (which samples black).
-    let Some(q) = tex.last_level() else {
+    let Some((table, q)) = LevelTable::new(tex) else {
         return false;
     };
     let base = tex.base_level as usize;
     let Some(base_img) = tex.levels.get(base) else {
-        return false;
-    };
-    if q >= MAX_LEVELS {
-        return false;
-    }
-    let Some(table) = LevelTable::new(tex, base, q) else {
         return false;
     };
 
@@ -846,30 +840,51 @@ enum Store<'a> {
 static ONE_TEXEL: [[u8; 4]; 1] = [[0, 0, 0, 255]];
 
 impl<'a> LevelTable<'a> {
-    /// The table of levels `base..=q` of `tex`, or `None` when a level is
-    /// missing, too large for 32-bit texel indices, or not the size of a
-    /// mipmap of the base level (the general path takes those; a complete
-    /// texture's levels are).
+    /// The table of the levels `base..=q` of `tex` (a 2D texture) and q,
+    /// its last level as [`Texture::last_level`] finds it, which this
+    /// checks the same way; `None` when the texture is incomplete or a
+    /// level is too large for 32-bit texel indices (the general path
+    /// takes those).
     #[inline(always)]
-    fn new(tex: &'a Texture, base: usize, q: usize) -> Option<LevelTable<'a>> {
-        if q >= MAX_LEVELS || base > q {
+    fn new(tex: &'a Texture) -> Option<(LevelTable<'a>, usize)> {
+        debug_assert_eq!(tex.target, TextureTarget::Tex2D);
+        if tex.base_level > tex.max_level {
+            return None;
+        }
+        let base = tex.base_level as usize;
+        let first = tex.levels.get(base)?;
+        let (width, height) = (first.width, first.height);
+        if width == 0 || height == 0 || !first.holds_texels() {
+            return None;
+        }
+        let q = if tex.mipmapped() {
+            let p = base + (31 - width.max(height).leading_zeros()) as usize;
+            p.min(tex.max_level as usize)
+        } else {
+            base
+        };
+        // Sizes up to 2^24 (exact in f32) and indices below 2^31 (the
+        // other levels are smaller).
+        if q >= MAX_LEVELS
+            || width > 1 << 24
+            || height > 1 << 24
+            || width as u64 * height as u64 > i32::MAX as u64
+        {
             return None;
         }
         let levels = tex.levels.get(base..=q)?;
-        let first = levels.first()?;
-        let (width, height) = (first.width.max(1), first.height.max(1));
-        // Sizes up to 2^24 (exact in f32) and indices below 2^31 (the
-        // other levels are smaller).
-        if width > 1 << 24 || height > 1 << 24 || width as u64 * height as u64 > i32::MAX as u64 {
-            return None;
-        }
-        let (mut unorm8, mut float, mut short) = (0, 0, false);
-        for (s, img) in (0u32..).zip(levels) {
-            let (lw, lh) = (img.width.max(1), img.height.max(1));
-            if lw != (width >> s).max(1) || lh != (height >> s).max(1) {
+        // Level base + s: `max(1, size >> s)` texels wide and high, and
+        // holding its texels (s ≤ 31: the sizes have at most 25 bits).
+        for (s, img) in (1u32..).zip(&levels[1..]) {
+            let sizes_ok = img.width == (width >> s).max(1) && img.height == (height >> s).max(1);
+            if !sizes_ok || !img.holds_texels() {
                 return None;
             }
-            short |= (img.len() as u64) < lw as u64 * lh as u64;
+        }
+        let (mut unorm8, mut float, mut short) = (0, 0, false);
+        for img in levels {
+            // (A level of depth 0 holds no texels.)
+            short |= img.is_empty();
             match img.texels {
                 Texels::Unorm8(_) => unorm8 += 1,
                 Texels::F32(_) => float += 1,
@@ -894,12 +909,13 @@ impl<'a> LevelTable<'a> {
             }
             Store::F32(v)
         };
-        Some(LevelTable {
+        let table = LevelTable {
             base: base as i32,
             width,
             height,
             store,
-        })
+        };
+        Some((table, q))
     }
 
     /// Texels `idx[k][lane]` (corner k) of level `level[lane]` as RGBA
@@ -1105,6 +1121,65 @@ mod tests {
             }
         }
         assert!(checked > 10_000);
+    }
+
+    #[test]
+    fn level_table_finds_the_last_level_as_texture_does() {
+        let mut seed = 0x51ed_2701_u32;
+        let mut rnd = move |n: u32| {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (seed >> 8) % n
+        };
+        let mut complete = 0;
+        for _ in 0..4000 {
+            let (mut w, mut h): (u32, u32) = (1 << rnd(6), 1 << rnd(6));
+            let mut levels = Vec::new();
+            for _ in 0..rnd(9) + 1 {
+                let (mut lw, mut lh, mut ld) = (w, h, [1, 1, 1, 1, 1, 0, 2][rnd(7) as usize]);
+                // Now and then a wrong size or too few texels.
+                match rnd(14) {
+                    0 => lw += 1,
+                    1 => lh = lh.saturating_sub(1),
+                    2 => (lw, lh) = (0, 0),
+                    _ => {}
+                }
+                let mut n = (lw * lh * ld) as usize;
+                if rnd(16) == 0 {
+                    n = n.saturating_sub(1);
+                    ld = ld.max(1);
+                }
+                let float = rnd(4) == 0;
+                let texel = if float {
+                    [0.3; 4]
+                } else {
+                    [0.0, 1.0, 0.0, 1.0]
+                };
+                let mut img = Image::new(lw, lh, ld, vec![texel; n]);
+                img.depth = ld;
+                levels.push(img);
+                (w, h) = ((w / 2).max(1), (h / 2).max(1));
+            }
+            let mut tex = Texture::new(TextureTarget::Tex2D, levels);
+            tex.min_filter = [MinFilter::Nearest, MinFilter::LinearMipmapLinear][rnd(2) as usize];
+            tex.base_level = rnd(3);
+            tex.max_level = [1000, rnd(6)][rnd(2) as usize];
+            let want = tex.last_level();
+            let table = LevelTable::new(&tex);
+            assert_eq!(table.as_ref().map(|t| t.1), want, "{tex:?}");
+            if let Some((table, q)) = table {
+                complete += 1;
+                // Storage as the levels have it.
+                let levels = &tex.levels[tex.base_level as usize..=q];
+                let unorm8 = levels.iter().filter(|l| l.is_unorm8()).count();
+                let empty = levels.iter().any(|l| l.is_empty());
+                match table.store {
+                    Store::Unorm8(_) => assert!(unorm8 == levels.len() && !empty),
+                    Store::F32(_) => assert!(unorm8 == 0 && !empty),
+                    Store::Mixed => assert!(empty || (unorm8 != 0 && unorm8 != levels.len())),
+                }
+            }
+        }
+        assert!(complete > 400, "{complete} complete");
     }
 
     #[test]
