@@ -113,6 +113,8 @@ pub(crate) fn sample_with(
     req: &SampleRequest,
     out: &mut [[f32; LANES]; 4],
 ) -> bool {
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = isa;
     #[cfg(target_arch = "x86_64")]
     match isa {
         // SAFETY: the CPU supports the instruction set (checked first).
@@ -776,6 +778,7 @@ fn axis(
 }
 
 /// `fl(1/255)`.
+#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
 const UNORM8_INV: f32 = 1.0 / 255.0;
 
 /// `k / 255` for a byte k, correctly rounded, as
