@@ -158,6 +158,13 @@ impl Image {
         matches!(self.texels, Texels::Unorm8(_))
     }
 
+    /// Whether the level stores `width × height × depth` texels.
+    #[inline]
+    pub(crate) fn holds_texels(&self) -> bool {
+        // (u128: the product of three u32 does not overflow.)
+        self.len() as u128 == self.width as u128 * self.height as u128 * self.depth as u128
+    }
+
     /// Texel `index` (see the layout above), (0, 0, 0, 1) out of range.
     pub fn texel_at(&self, index: usize) -> [f32; 4] {
         self.texels.get(index)
@@ -258,7 +265,7 @@ impl Texture {
         }
     }
 
-    fn mipmapped(&self) -> bool {
+    pub(crate) fn mipmapped(&self) -> bool {
         !matches!(self.min_filter, MinFilter::Nearest | MinFilter::Linear)
     }
 
@@ -275,7 +282,12 @@ impl Texture {
     }
 
     /// The last level used, q = min(p, level_max) (GL 2.1 §3.8.8), or
-    /// `None` when the texture is incomplete (§3.8.10).
+    /// `None` when the texture is incomplete (§3.8.10): the base level
+    /// has no zero size and holds its texels, a cube map's is square, and
+    /// with mipmapping every level to q halves the sizes of the target's
+    /// axes (down to 1) and holds its texels. (A 1D texture's height,
+    /// and a 2D or cube texture's depth, are not compared: they are not
+    /// sizes of the target.)
     pub fn last_level(&self) -> Option<usize> {
         let base = self.base_level as usize;
         if self.base_level > self.max_level {
@@ -283,12 +295,7 @@ impl Texture {
         }
         let b = self.levels.get(base)?;
         let dims = [self.size(b, 0), self.size(b, 1), self.size(b, 2)];
-        let ok = |img: &Image, want: [u32; 3]| {
-            let have = [self.size(img, 0), self.size(img, 1), self.size(img, 2)];
-            have == want
-                && img.len() == img.width as usize * img.height as usize * img.depth as usize
-        };
-        if dims.contains(&0) || !ok(b, dims) {
+        if dims.contains(&0) || !b.holds_texels() {
             return None;
         }
         if self.target == TextureTarget::Cube && b.width != b.height {
@@ -297,18 +304,19 @@ impl Texture {
         if !self.mipmapped() {
             return Some(base);
         }
-        let largest = dims[..self.dims()].iter().copied().max().unwrap_or(1);
+        let nd = self.dims();
+        let largest = dims[..nd].iter().copied().max().unwrap_or(1);
         let p = base + (31 - largest.leading_zeros()) as usize;
         let q = p.min(self.max_level as usize);
-        for (i, level) in (base + 1..=q).enumerate() {
-            let shift = (i + 1) as u32;
-            let mut want = dims.map(|d| (d >> shift).max(1));
-            for (a, w) in want.iter_mut().enumerate() {
-                if a >= self.dims() {
-                    *w = dims[a];
-                }
-            }
-            if !ok(self.levels.get(level)?, want) {
+        // Level base + s has the sizes `max(1, dims >> s)` on the target's
+        // axes (s ≤ 31: `largest` has at most 32 bits).
+        let levels = self.levels.get(base + 1..=q)?;
+        for (s, img) in (1u32..).zip(levels) {
+            let want = |a: usize| (dims[a] >> s).max(1);
+            let sizes_ok = img.width == want(0)
+                && (nd < 2 || img.height == want(1))
+                && (nd < 3 || img.depth == want(2));
+            if !sizes_ok || !img.holds_texels() {
                 return None;
             }
         }
@@ -891,6 +899,105 @@ mod tests {
         assert_eq!(sample(&tex, q, [0.5, 0.5, 0.0], lod, 0.0, None)[2], 2.0);
         // A shader bias of -1 gives level 1.
         assert_eq!(sample(&tex, q, [0.5, 0.5, 0.0], lod, -1.0, None)[2], 1.0);
+    }
+
+    /// `Texture::last_level` as it was first written (every axis of every
+    /// level compared through `size`), the reference for the faster one.
+    fn last_level_reference(tex: &Texture) -> Option<usize> {
+        let base = tex.base_level as usize;
+        if tex.base_level > tex.max_level {
+            return None;
+        }
+        let b = tex.levels.get(base)?;
+        let dims = [tex.size(b, 0), tex.size(b, 1), tex.size(b, 2)];
+        let ok = |img: &Image, want: [u32; 3]| {
+            let have = [tex.size(img, 0), tex.size(img, 1), tex.size(img, 2)];
+            have == want
+                && img.len() == img.width as usize * img.height as usize * img.depth as usize
+        };
+        if dims.contains(&0) || !ok(b, dims) {
+            return None;
+        }
+        if tex.target == TextureTarget::Cube && b.width != b.height {
+            return None;
+        }
+        if !tex.mipmapped() {
+            return Some(base);
+        }
+        let largest = dims[..tex.dims()].iter().copied().max().unwrap_or(1);
+        let p = base + (31 - largest.leading_zeros()) as usize;
+        let q = p.min(tex.max_level as usize);
+        for (i, level) in (base + 1..=q).enumerate() {
+            let shift = (i + 1) as u32;
+            let mut want = dims.map(|d| (d >> shift).max(1));
+            for (a, w) in want.iter_mut().enumerate() {
+                if a >= tex.dims() {
+                    *w = dims[a];
+                }
+            }
+            if !ok(tex.levels.get(level)?, want) {
+                return None;
+            }
+        }
+        Some(q)
+    }
+
+    #[test]
+    fn last_level_matches_the_reference() {
+        let mut seed = 0x2545_f491_u32;
+        let mut rnd = move |n: u32| {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (seed >> 8) % n
+        };
+        let mut complete = 0;
+        for round in 0..4000 {
+            let target = [
+                TextureTarget::Tex1D,
+                TextureTarget::Tex2D,
+                TextureTarget::Tex3D,
+                TextureTarget::Cube,
+            ][round % 4];
+            let (mut w, mut h, mut d): (u32, u32, u32) = (1 << rnd(5), 1 << rnd(5), 1 << rnd(3));
+            match target {
+                TextureTarget::Tex1D => h = [1, 1, 2][rnd(3) as usize],
+                TextureTarget::Tex2D => d = [1, 1, 1, 0, 2][rnd(5) as usize],
+                TextureTarget::Cube => (h, d) = (if rnd(8) == 0 { h } else { w }, 6),
+                TextureTarget::Tex3D => {}
+            }
+            let mut levels = Vec::new();
+            for _ in 0..rnd(8) + 1 {
+                let (mut lw, mut lh, mut ld) = (w, h, d);
+                // Now and then a wrong size or too few texels.
+                match rnd(12) {
+                    0 => lw += 1,
+                    1 => lh = lh.saturating_sub(1),
+                    2 => ld += 1,
+                    _ => {}
+                }
+                let mut n = (lw * lh * ld) as usize;
+                if rnd(16) == 0 {
+                    n = n.saturating_sub(1);
+                }
+                let mut img = Image::new(lw, lh, ld, vec![[0.5; 4]; n]);
+                img.depth = ld;
+                levels.push(img);
+                w = (w / 2).max(1);
+                if target != TextureTarget::Tex1D {
+                    h = (h / 2).max(1);
+                }
+                if target == TextureTarget::Tex3D {
+                    d = (d / 2).max(1);
+                }
+            }
+            let mut tex = Texture::new(target, levels);
+            tex.min_filter = [MinFilter::Linear, MinFilter::LinearMipmapLinear][rnd(2) as usize];
+            tex.base_level = rnd(3);
+            tex.max_level = [1000, rnd(6)][rnd(2) as usize];
+            let want = last_level_reference(&tex);
+            assert_eq!(tex.last_level(), want, "{tex:?}");
+            complete += usize::from(want.is_some());
+        }
+        assert!(complete > 400, "{complete} complete");
     }
 
     #[test]

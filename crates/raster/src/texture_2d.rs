@@ -9,14 +9,28 @@
 //! wrapping, weights, the sum over the four texels, the blend of two
 //! levels), so the results are the same bits; what it saves is the general
 //! path's per-lane dispatch: completeness and state are looked at once per
-//! request, texel indices are plain integers (no border case), the
-//! storage (RGBA8 or f32) is matched once per level, and the bilinear sum
-//! is straight-line code. A test compares the two paths on random lookups.
+//! request (the levels' sizes and storage in a small table), texel
+//! indices are plain integers (no border case), and every step works on
+//! arrays of the 16 lanes: λ, levels, wrapping, the four corners' indices
+//! and weights, then the texels (scalar loads, the only per-lane step),
+//! the bilinear sum over all lanes (nearest lanes select corner 0) and
+//! the blend of two levels.
+//!
+//! The code is compiled for the baseline instruction set, for AVX2 + FMA
+//! and for AVX-512 + FMA, the one matching the executor's variant chosen
+//! at run time (`SHADERBOX_KERNEL`; the native-code executor gets the
+//! best the CPU has). The two x86 variants run some steps as explicit
+//! AVX2 code (RGBA8 conversion and sum, level blend, output select, the
+//! per-lane level sizes), eight lanes at a time, with the portable code's
+//! operations in its order: the bytes k become k/255 by a multiply and a
+//! correction by the exact residual (fused multiply-adds), correctly
+//! rounded like the division for every byte. A test compares every
+//! variant the CPU has with the general path on random lookups.
 
 use crate::ex::{Lod, SampleRequest, LANES};
 use crate::texture::{
-    mix_levels, select_levels, wrap_coord, Levels, MagFilter, MinFilter, Texels, Texture,
-    TextureTarget, TextureUnits, Wrap, MAX_LOD_BIAS, MISSING,
+    select_levels, wrap_coord, Levels, MagFilter, MinFilter, Texels, Texture, TextureTarget,
+    TextureUnits, Wrap, MAX_LOD_BIAS, MISSING,
 };
 use glsl::types::SamplerKind;
 
@@ -24,9 +38,127 @@ use glsl::types::SamplerKind;
 /// more is a 2^31-texel texture, which takes the general path.
 const MAX_LEVELS: usize = 32;
 
+/// An instruction set the fast path is compiled for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Isa {
+    /// The target's baseline (SSE2 on x86-64).
+    Portable,
+    /// x86-64 with AVX2 and FMA.
+    Avx2,
+    /// x86-64 with AVX-512 F/BW/DQ/VL and FMA.
+    Avx512,
+}
+
+impl Isa {
+    /// Whether this CPU runs `self`.
+    pub(crate) fn supported(self) -> bool {
+        match self {
+            Isa::Portable => true,
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2 => {
+                std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
+            }
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx512 => {
+                std::is_x86_feature_detected!("avx512f")
+                    && std::is_x86_feature_detected!("avx512bw")
+                    && std::is_x86_feature_detected!("avx512dq")
+                    && std::is_x86_feature_detected!("avx512vl")
+                    && std::is_x86_feature_detected!("avx2")
+                    && std::is_x86_feature_detected!("fma")
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            _ => false,
+        }
+    }
+
+    /// The instruction set of the executor's variant
+    /// (`exec::kernel_variant`, `SHADERBOX_KERNEL`); for the native-code
+    /// executor, the fastest one this CPU supports.
+    fn current() -> Isa {
+        match exec::kernel_variant() {
+            exec::Variant::Portable => Isa::Portable,
+            exec::Variant::Avx2 => Isa::Avx2,
+            exec::Variant::Avx512 => Isa::Avx512,
+            exec::Variant::Jit => {
+                if Isa::Avx512.supported() {
+                    Isa::Avx512
+                } else if Isa::Avx2.supported() {
+                    Isa::Avx2
+                } else {
+                    Isa::Portable
+                }
+            }
+        }
+    }
+}
+
 /// Samples `req` through the fast path when it applies (see the module
-/// documentation) and returns true; false leaves `out` untouched.
+/// documentation) and returns true; false leaves `out` untouched. The
+/// code is compiled for several instruction sets, the executor's chosen
+/// at run time ([`Isa::current`]); all compute the same IEEE operations
+/// (Rust never fuses a multiply and an add), so the same bits.
 pub(crate) fn sample(
+    units: &TextureUnits,
+    req: &SampleRequest,
+    out: &mut [[f32; LANES]; 4],
+) -> bool {
+    sample_with(Isa::current(), units, req, out)
+}
+
+/// [`sample`] compiled for `isa` (the baseline one when the CPU lacks it).
+pub(crate) fn sample_with(
+    isa: Isa,
+    units: &TextureUnits,
+    req: &SampleRequest,
+    out: &mut [[f32; LANES]; 4],
+) -> bool {
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = isa;
+    #[cfg(target_arch = "x86_64")]
+    match isa {
+        // SAFETY: the CPU supports the instruction set (checked first).
+        Isa::Avx512 if isa.supported() => return unsafe { sample_avx512(units, req, out) },
+        // SAFETY: as above.
+        Isa::Avx2 if isa.supported() => return unsafe { sample_avx2(units, req, out) },
+        _ => {}
+    }
+    sample_in::<false>(units, req, out)
+}
+
+/// [`sample_in`] compiled for AVX2 and FMA.
+///
+/// # Safety
+/// The CPU must support AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn sample_avx2(
+    units: &TextureUnits,
+    req: &SampleRequest,
+    out: &mut [[f32; LANES]; 4],
+) -> bool {
+    sample_in::<true>(units, req, out)
+}
+
+/// [`sample_in`] compiled for AVX-512 (F, BW, DQ, VL) and FMA.
+///
+/// # Safety
+/// The CPU must support those AVX-512 subsets and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2,fma")]
+unsafe fn sample_avx512(
+    units: &TextureUnits,
+    req: &SampleRequest,
+    out: &mut [[f32; LANES]; 4],
+) -> bool {
+    sample_in::<true>(units, req, out)
+}
+
+/// The fast path proper, inlined into each instruction set's variant;
+/// `SIMD`: compiled for x86-64 with AVX2 and FMA, which some steps use
+/// directly.
+#[inline(always)]
+fn sample_in<const SIMD: bool>(
     units: &TextureUnits,
     req: &SampleRequest,
     out: &mut [[f32; LANES]; 4],
@@ -58,32 +190,13 @@ pub(crate) fn sample(
         return false;
     }
     // Incomplete textures take the general path (which samples black).
-    let Some(q) = tex.last_level() else {
+    let Some((table, q)) = LevelTable::new(tex) else {
         return false;
     };
     let base = tex.base_level as usize;
     let Some(base_img) = tex.levels.get(base) else {
         return false;
     };
-    if q >= MAX_LEVELS {
-        return false;
-    }
-    // The levels' sizes, `filter`'s `img.width.max(1)` and so on (sizes
-    // up to 2^24, so that they and texel indices are exact in f32 and i32).
-    let mut sizes = [(1i32, 1i32); MAX_LEVELS];
-    for (d, size) in sizes.iter_mut().enumerate().take(q + 1).skip(base) {
-        let Some(img) = tex.levels.get(d) else {
-            return false;
-        };
-        let (w, h) = (img.width.max(1), img.height.max(1));
-        if w > 1 << 24 || h > 1 << 24 {
-            return false;
-        }
-        *size = (w as i32, h as i32);
-    }
-
-    // λ of every lane, as `texture::lambda` computes it.
-    let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod);
 
     // The level(s) of every lane, as `texture::select_levels` picks them.
     let mask = req.mask;
@@ -91,10 +204,33 @@ pub(crate) fn sample(
     let mut f = [0.0f32; LANES];
     let mut two: u32 = 0;
     let mut nearest: u32 = 0;
-    if matches!(
+    let unmipmapped = matches!(tex.min_filter, MinFilter::Nearest | MinFilter::Linear);
+    let min_nearest = tex.min_filter == MinFilter::Nearest;
+    let mag_nearest = tex.mag_filter == MagFilter::Nearest;
+    if unmipmapped && min_nearest == mag_nearest {
+        // The base level with one filter whatever λ (which has no other
+        // effect): λ is not computed.
+        if mag_nearest {
+            nearest = !0;
+        }
+    } else if unmipmapped {
+        // Magnification (λ ≤ c = 0, or NaN) or minification of the base
+        // level, over the lanes.
+        let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod);
+        let mut is_nearest = [false; LANES];
+        for l in 0..LANES {
+            let mag = lam[l].is_nan() || lam[l] <= 0.0;
+            is_nearest[l] = if mag { mag_nearest } else { min_nearest };
+        }
+        for (l, &near) in is_nearest.iter().enumerate() {
+            nearest |= (near as u32) << l;
+        }
+    } else if matches!(
         tex.min_filter,
         MinFilter::LinearMipmapLinear | MinFilter::NearestMipmapLinear
     ) {
+        // λ of every lane, as `texture::lambda` computes it.
+        let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod);
         // Eq. 3.28/3.29 over the lanes, branch-free.
         let c = if tex.mag_filter == MagFilter::Linear
             && tex.min_filter == MinFilter::NearestMipmapLinear
@@ -103,7 +239,6 @@ pub(crate) fn sample(
         } else {
             0.0
         };
-        let mag_nearest = tex.mag_filter == MagFilter::Nearest;
         let min_nearest = tex.min_filter == MinFilter::NearestMipmapLinear;
         let (base_i, q_i) = (base as i32, q as i32);
         let (base_f, q_f) = (base as f32, q as f32);
@@ -133,6 +268,7 @@ pub(crate) fn sample(
         }
         two &= mask;
     } else {
+        let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod);
         for lane in 0..LANES {
             if mask & (1 << lane) == 0 {
                 continue;
@@ -157,25 +293,128 @@ pub(crate) fn sample(
     }
 
     let st = [req.coord[0], req.coord[1]];
-    let mut first = [[0.0f32; 4]; LANES];
-    filter_lanes(tex, &sizes, &level[0], &st, nearest, mask, &mut first);
+    let near = lanes(nearest);
+    let mut first = [[0.0f32; LANES]; 4];
+    filter_lanes::<SIMD>(tex, &table, &level[0], &st, &near, &mut first);
     if two != 0 {
-        let mut second = [[0.0f32; 4]; LANES];
-        filter_lanes(tex, &sizes, &level[1], &st, nearest, two, &mut second);
-        for lane in 0..LANES {
-            if two & (1 << lane) != 0 {
-                first[lane] = mix_levels(first[lane], second[lane], f[lane]);
+        let mut second = [[0.0f32; LANES]; 4];
+        filter_lanes::<SIMD>(tex, &table, &level[1], &st, &near, &mut second);
+        // `mix_levels` on the lanes in `two`, as a select over all lanes.
+        let two = lanes(two);
+        #[cfg(target_arch = "x86_64")]
+        if SIMD {
+            // SAFETY: `SIMD` is only set in code compiled for AVX2, which
+            // runs only on CPUs that have it.
+            unsafe { mix_avx2(&mut first, &second, &f, &two) };
+        }
+        if !SIMD {
+            for c in 0..4 {
+                for l in 0..LANES {
+                    let (t1, t2, fl) = (first[c][l], second[c][l], f[l]);
+                    let mixed = (1.0 - fl) * t1 + fl * t2;
+                    first[c][l] = if two[l] { mixed } else { t1 };
+                }
             }
         }
     }
-    for (lane, rgba) in first.iter().enumerate() {
-        if mask & (1 << lane) != 0 {
-            for (o, &v) in out.iter_mut().zip(rgba) {
-                o[lane] = v;
-            }
+    let mask = lanes(mask);
+    #[cfg(target_arch = "x86_64")]
+    if SIMD {
+        // SAFETY: as above.
+        unsafe { select_avx2(out, &first, &mask) };
+        return true;
+    }
+    for c in 0..4 {
+        for l in 0..LANES {
+            out[c][l] = if mask[l] { first[c][l] } else { out[c][l] };
         }
     }
     true
+}
+
+/// All ones in the 32-bit lanes `o..o + 8` whose flag is set.
+///
+/// # Safety
+/// The CPU must support AVX2; `o <= LANES - 8`.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn flags_avx2(flags: &[bool; LANES], o: usize) -> std::arch::x86_64::__m256 {
+    use std::arch::x86_64::*;
+    debug_assert!(o + 8 <= LANES);
+    // SAFETY: 8 bytes (a bool is one byte, 0 or 1) inside `flags`.
+    unsafe {
+        let bytes = _mm_loadl_epi64(flags.as_ptr().add(o).cast());
+        _mm256_castsi256_ps(_mm256_cmpgt_epi32(
+            _mm256_cvtepu8_epi32(bytes),
+            _mm256_setzero_si256(),
+        ))
+    }
+}
+
+/// The blend of two levels' values on the lanes in `two`, as the portable
+/// code computes it, eight lanes at a time.
+///
+/// # Safety
+/// The CPU must support AVX2.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn mix_avx2(
+    first: &mut [[f32; LANES]; 4],
+    second: &[[f32; LANES]; 4],
+    f: &[f32; LANES],
+    two: &[bool; LANES],
+) {
+    use std::arch::x86_64::*;
+    // SAFETY: every pointer is to 8 consecutive elements inside one of
+    // the arrays (offset 0 or 8 of 16).
+    unsafe {
+        for o in [0, 8] {
+            let fl = _mm256_loadu_ps(f.as_ptr().add(o));
+            let one_minus = _mm256_sub_ps(_mm256_set1_ps(1.0), fl);
+            let sel = flags_avx2(two, o);
+            for (t1, t2) in first.iter_mut().zip(second) {
+                let a = _mm256_loadu_ps(t1.as_ptr().add(o));
+                let b = _mm256_loadu_ps(t2.as_ptr().add(o));
+                let mixed = _mm256_add_ps(_mm256_mul_ps(one_minus, a), _mm256_mul_ps(fl, b));
+                _mm256_storeu_ps(t1.as_mut_ptr().add(o), _mm256_blendv_ps(a, mixed, sel));
+            }
+        }
+    }
+}
+
+/// `out` takes `value` on the lanes in `mask`, eight lanes at a time.
+///
+/// # Safety
+/// The CPU must support AVX2.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn select_avx2(
+    out: &mut [[f32; LANES]; 4],
+    value: &[[f32; LANES]; 4],
+    mask: &[bool; LANES],
+) {
+    use std::arch::x86_64::*;
+    // SAFETY: as in `mix_avx2`.
+    unsafe {
+        for o in [0, 8] {
+            let sel = flags_avx2(mask, o);
+            for (out, v) in out.iter_mut().zip(value) {
+                let old = _mm256_loadu_ps(out.as_ptr().add(o));
+                let new = _mm256_loadu_ps(v.as_ptr().add(o));
+                _mm256_storeu_ps(out.as_mut_ptr().add(o), _mm256_blendv_ps(old, new, sel));
+            }
+        }
+    }
+}
+
+/// The lanes of a mask, one flag each (for selects over all lanes).
+#[inline(always)]
+fn lanes(mask: u32) -> [bool; LANES] {
+    let mut flags = [false; LANES];
+    for (l, flag) in flags.iter_mut().enumerate() {
+        *flag = mask & (1 << l) != 0;
+    }
+    flags
 }
 
 /// `texture::lambda` for every lane (the lanes outside the request's
@@ -235,29 +474,6 @@ fn lambdas(
         lam[l] = x;
     }
     lam
-}
-
-/// Reads texel `index` of a level's storage.
-trait Fetch {
-    fn fetch(&self, index: usize) -> [f32; 4];
-}
-
-impl Fetch for [[f32; 4]] {
-    #[inline(always)]
-    fn fetch(&self, index: usize) -> [f32; 4] {
-        self.get(index).copied().unwrap_or(MISSING)
-    }
-}
-
-impl Fetch for [[u8; 4]] {
-    #[inline(always)]
-    fn fetch(&self, index: usize) -> [f32; 4] {
-        match self.get(index) {
-            // `UNORM8`'s values, computed four at a time.
-            Some(t) => t.map(|b| b as f32 / 255.0),
-            None => MISSING,
-        }
-    }
 }
 
 /// `texture::floor` without a branch (so loops over lanes vectorize):
@@ -352,54 +568,182 @@ fn wrap_index(i: i32, wrap: Wrap, n: i32) -> i32 {
     i.max(0).min(n - 1)
 }
 
-/// NEAREST or LINEAR on level `level[lane]` for the lanes in `mask`
-/// (NEAREST for those in `nearest`), as `texture::filter` for a 2D
-/// texture without border texels. Other lanes' values are unspecified.
-fn filter_lanes(
+/// NEAREST or LINEAR on level `level[lane]` of every lane (NEAREST for
+/// those in `nearest`), as `texture::filter` for a 2D texture without
+/// border texels, into `out` (RGBA, lane-major). Every lane's level must
+/// be one of the table's (those outside the request give some value).
+///
+/// All four corners of every lane are fetched (the indices are always in
+/// the level), and the sum is computed over all lanes, the nearest lanes
+/// then selecting corner 0: straight-line code over arrays of 16 lanes
+/// (explicit AVX2 code for RGBA8 levels when `SIMD`); only the texel
+/// loads are per lane.
+#[inline(always)]
+fn filter_lanes<const SIMD: bool>(
     tex: &Texture,
-    sizes: &[(i32, i32); MAX_LEVELS],
+    table: &LevelTable,
     level: &[i32; LANES],
     st: &[[f32; LANES]; 2],
-    nearest: u32,
-    mask: u32,
-    out: &mut [[f32; 4]; LANES],
+    nearest: &[bool; LANES],
+    out: &mut [[f32; LANES]; 4],
 ) {
     let (ws, wt) = (tex.wrap[0], tex.wrap[1]);
+    // Level base + s is `max(1, size >> s)` texels wide and high
+    // (`LevelTable::new` checks it), s in 0..=31.
     let mut w = [1i32; LANES];
     let mut h = [1i32; LANES];
     for l in 0..LANES {
-        let (lw, lh) = sizes.get(level[l] as usize).copied().unwrap_or((1, 1));
-        w[l] = lw;
-        h[l] = lh;
+        let s = (level[l].wrapping_sub(table.base) as u32).min(31);
+        w[l] = (table.width >> s).max(1) as i32;
+        h[l] = (table.height >> s).max(1) as i32;
     }
     let us = wrap_scale(ws, &st[0], &w);
     let ut = wrap_scale(wt, &st[1], &h);
     let (i0, i1, a) = axis(&us, &w, ws, nearest);
     let (j0, j1, b) = axis(&ut, &h, wt, nearest);
+    // Texel indices of the corners (S varies fastest), `j * width + i`:
+    // below width × height ≤ 2^31 − 1 (`LevelTable::new`).
+    let mut idx = [[0u32; LANES]; 4];
     for l in 0..LANES {
-        if mask & (1 << l) == 0 {
-            continue;
-        }
-        let Some(img) = tex.levels.get(level[l] as usize) else {
-            out[l] = MISSING;
-            continue;
-        };
-        let row = w[l] as usize;
-        let at = |i: i32, j: i32| j as usize * row + i as usize;
-        let corners = [
-            at(i0[l], j0[l]),
-            at(i1[l], j0[l]),
-            at(i0[l], j1[l]),
-            at(i1[l], j1[l]),
-        ];
-        out[l] = if nearest & (1 << l) != 0 {
-            img.texels.get(corners[0])
-        } else {
-            match &img.texels {
-                Texels::Unorm8(v) => bilinear(v.as_slice(), corners, a[l], b[l]),
-                Texels::F32(v) => bilinear(v.as_slice(), corners, a[l], b[l]),
+        let (r0, r1) = (j0[l].wrapping_mul(w[l]), j1[l].wrapping_mul(w[l]));
+        idx[0][l] = r0.wrapping_add(i0[l]) as u32;
+        idx[1][l] = r0.wrapping_add(i1[l]) as u32;
+        idx[2][l] = r1.wrapping_add(i0[l]) as u32;
+        idx[3][l] = r1.wrapping_add(i1[l]) as u32;
+    }
+    // The general path's sum over the four texels, each weight the
+    // product of the two axes' weights.
+    let mut wgt = [[0.0f32; LANES]; 4];
+    for l in 0..LANES {
+        let (a, b) = (a[l], b[l]);
+        let (a0, b0) = (1.0 - a, 1.0 - b);
+        wgt[0][l] = a0 * b0;
+        wgt[1][l] = a * b0;
+        wgt[2][l] = a0 * b;
+        wgt[3][l] = a * b;
+    }
+    match &table.store {
+        Store::Unorm8(levels) if nearest.iter().all(|&n| n) => {
+            // NEAREST on every lane: corner 0 alone.
+            let mut raw = [[0u32; LANES]; 1];
+            gather_unorm8(levels, level, &[idx[0]], &mut raw);
+            for (c, out) in out.iter_mut().enumerate() {
+                for (v, &r) in out.iter_mut().zip(&raw[0]) {
+                    *v = unorm8((r >> (8 * c)) & 255);
+                }
             }
-        };
+        }
+        Store::Unorm8(levels) => {
+            let mut raw = [[0u32; LANES]; 4];
+            gather_unorm8(levels, level, &idx, &mut raw);
+            #[cfg(target_arch = "x86_64")]
+            if SIMD {
+                // SAFETY: `SIMD` is only set in code compiled for AVX2
+                // and FMA, which runs only on CPUs that have them.
+                unsafe { combine_unorm8_avx2(&raw, &wgt, nearest, out) };
+                return;
+            }
+            let mut t = [[[0.0f32; LANES]; 4]; 4];
+            for (tk, raw) in t.iter_mut().zip(&raw) {
+                for (c, tc) in tk.iter_mut().enumerate() {
+                    for (v, &r) in tc.iter_mut().zip(raw) {
+                        *v = unorm8((r >> (8 * c)) & 255);
+                    }
+                }
+            }
+            combine(&t, &wgt, nearest, out);
+        }
+        _ => {
+            let mut t = [[[0.0f32; LANES]; 4]; 4];
+            table.fetch_float(tex, level, &idx, &mut t);
+            combine(&t, &wgt, nearest, out);
+        }
+    }
+}
+
+/// The bilinear sum of the corners `t[k][component][lane]` with weights
+/// `wgt[k][lane]` (in corner order, from 0), or corner 0 for the lanes
+/// in `nearest`.
+#[inline(always)]
+fn combine(
+    t: &[[[f32; LANES]; 4]; 4],
+    wgt: &[[f32; LANES]; 4],
+    nearest: &[bool; LANES],
+    out: &mut [[f32; LANES]; 4],
+) {
+    for c in 0..4 {
+        for l in 0..LANES {
+            let mut acc = 0.0f32;
+            for k in 0..4 {
+                acc += wgt[k][l] * t[k][c][l];
+            }
+            out[c][l] = if nearest[l] { t[0][c][l] } else { acc };
+        }
+    }
+}
+
+/// [`combine`] of RGBA8 corners `raw[k][lane]` converted by [`unorm8`],
+/// with AVX2 and FMA: the same operations in the same order, eight lanes
+/// at a time (the compiler's own vectorization of the portable code
+/// interleaves the lanes and channels badly).
+///
+/// # Safety
+/// The CPU must support AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn combine_unorm8_avx2(
+    raw: &[[u32; LANES]; 4],
+    wgt: &[[f32; LANES]; 4],
+    nearest: &[bool; LANES],
+    out: &mut [[f32; LANES]; 4],
+) {
+    use std::arch::x86_64::*;
+    // SAFETY (of the loads and stores below): every pointer is to 8
+    // consecutive elements inside one of the arrays (offset 0 or 8 of 16).
+    unsafe {
+        let inv = _mm256_set1_ps(UNORM8_INV);
+        let c255 = _mm256_set1_ps(255.0);
+        for half in 0..2 {
+            let o = half * 8;
+            let mut r = [_mm256_setzero_si256(); 4];
+            let mut w = [_mm256_setzero_ps(); 4];
+            for k in 0..4 {
+                r[k] = _mm256_loadu_si256(raw[k].as_ptr().add(o).cast());
+                w[k] = _mm256_loadu_ps(wgt[k].as_ptr().add(o));
+            }
+            let near = flags_avx2(nearest, o);
+            for (c, out) in out.iter_mut().enumerate() {
+                // Byte c of each 32-bit texel, zero-extended: per 32-bit
+                // word, the index of that byte in its 128-bit half, then
+                // three bytes with the top bit set (zeros).
+                let sel = |j: i32| (4 * j + c as i32) | -256;
+                let sel = _mm256_setr_epi32(
+                    sel(0),
+                    sel(1),
+                    sel(2),
+                    sel(3),
+                    sel(0),
+                    sel(1),
+                    sel(2),
+                    sel(3),
+                );
+                let mut acc = _mm256_setzero_ps();
+                let mut first = acc;
+                for k in 0..4 {
+                    let x = _mm256_cvtepi32_ps(_mm256_shuffle_epi8(r[k], sel));
+                    // `unorm8`'s fused path.
+                    let q = _mm256_mul_ps(x, inv);
+                    let residual = _mm256_fnmadd_ps(q, c255, x);
+                    let t = _mm256_fmadd_ps(residual, inv, q);
+                    acc = _mm256_add_ps(acc, _mm256_mul_ps(w[k], t));
+                    if k == 0 {
+                        first = t;
+                    }
+                }
+                let v = _mm256_blendv_ps(acc, first, near);
+                _mm256_storeu_ps(out.as_mut_ptr().add(o), v);
+            }
+        }
     }
 }
 
@@ -411,7 +755,7 @@ fn axis(
     u: &[f32; LANES],
     n: &[i32; LANES],
     wrap: Wrap,
-    nearest: u32,
+    nearest: &[bool; LANES],
 ) -> ([i32; LANES], [i32; LANES], [f32; LANES]) {
     let mut i0 = [0i32; LANES];
     let mut i1 = [0i32; LANES];
@@ -422,9 +766,8 @@ fn axis(
         let fl = floor_lane(v);
         let i = floor_index(fl);
         let near = wrap_index(floor_index(floor_lane(u[l])), wrap, n);
-        let is_near = nearest & (1 << l) != 0;
         alpha[l] = v - fl;
-        i0[l] = if is_near {
+        i0[l] = if nearest[l] {
             near
         } else {
             wrap_index(i, wrap, n)
@@ -434,20 +777,186 @@ fn axis(
     (i0, i1, alpha)
 }
 
-/// The general path's sum over the four texels (S varies fastest), each
-/// weight the product of the two axes' weights.
+/// `fl(1/255)`.
+#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
+const UNORM8_INV: f32 = 1.0 / 255.0;
+
+/// `k / 255` for a byte k, correctly rounded, as
+/// [`crate::texture::UNORM8`] holds it. [`combine_unorm8_avx2`] computes
+/// it without the division: `k · fl(1/255)` is within an ulp, and one
+/// correction by the exact residual `k − 255·r` (fused multiply-adds)
+/// gives the correctly rounded quotient; a test checks all 256 bytes.
 #[inline(always)]
-fn bilinear<S: Fetch + ?Sized>(texels: &S, corners: [usize; 4], a: f32, b: f32) -> [f32; 4] {
-    let (a0, b0) = (1.0 - a, 1.0 - b);
-    let weights = [a0 * b0, a * b0, a0 * b, a * b];
-    let mut acc = [0.0f32; 4];
-    for (idx, weight) in corners.into_iter().zip(weights) {
-        let t = texels.fetch(idx);
-        for c in 0..4 {
-            acc[c] += weight * t[c];
+fn unorm8(k: u32) -> f32 {
+    k as f32 / 255.0
+}
+
+/// Texels `idx[k][lane]` of level `level[lane]` (of [`Store::Unorm8`]),
+/// as little-endian RGBA8 words: scalar loads. Kept out of line: inlined,
+/// the compiler interleaves the loads with the code around them into
+/// badly vectorized code.
+#[inline(never)]
+fn gather_unorm8<const K: usize>(
+    levels: &[&[[u8; 4]]; MAX_LEVELS],
+    level: &[i32; LANES],
+    idx: &[[u32; LANES]; K],
+    raw: &mut [[u32; LANES]; K],
+) {
+    for l in 0..LANES {
+        let texels = levels[level[l] as usize % MAX_LEVELS];
+        // Every index is below the level's width × height, which it holds
+        // (`Store::Unorm8`); the clamp only keeps that local.
+        let last = texels.len().saturating_sub(1);
+        for k in 0..K {
+            let i = (idx[k][l] as usize).min(last);
+            // SAFETY: every slice of `Store::Unorm8` has at least one
+            // texel, so `i <= len - 1` is in bounds.
+            raw[k][l] = u32::from_le_bytes(unsafe { *texels.get_unchecked(i) });
         }
     }
-    acc
+}
+
+/// The levels a request may read (base..=q): their sizes and storage,
+/// looked at once per request instead of once per lane.
+struct LevelTable<'a> {
+    /// The base level and its width and height; level base + s is
+    /// `max(1, width >> s)` by `max(1, height >> s)` texels.
+    base: i32,
+    width: u32,
+    height: u32,
+    store: Store<'a>,
+}
+
+/// The texel storage of the levels base..=q.
+enum Store<'a> {
+    /// Every level RGBA8 and holding at least its `w × h` texels (the
+    /// other entries: [`ONE_TEXEL`]).
+    Unorm8([&'a [[u8; 4]]; MAX_LEVELS]),
+    /// Every level f32 (the other entries empty).
+    F32([&'a [[f32; 4]]; MAX_LEVELS]),
+    /// Some of each, or a level with fewer texels than its sizes say (a
+    /// 2D level of depth 0): read per texel through [`Texels::get`].
+    Mixed,
+}
+
+/// The stand-in storage of the levels a request cannot address.
+static ONE_TEXEL: [[u8; 4]; 1] = [[0, 0, 0, 255]];
+
+impl<'a> LevelTable<'a> {
+    /// The table of the levels `base..=q` of `tex` (a 2D texture) and q,
+    /// its last level as [`Texture::last_level`] finds it, which this
+    /// checks the same way; `None` when the texture is incomplete or a
+    /// level is too large for 32-bit texel indices (the general path
+    /// takes those).
+    #[inline(always)]
+    fn new(tex: &'a Texture) -> Option<(LevelTable<'a>, usize)> {
+        debug_assert_eq!(tex.target, TextureTarget::Tex2D);
+        if tex.base_level > tex.max_level {
+            return None;
+        }
+        let base = tex.base_level as usize;
+        let first = tex.levels.get(base)?;
+        let (width, height) = (first.width, first.height);
+        if width == 0 || height == 0 || !first.holds_texels() {
+            return None;
+        }
+        let q = if tex.mipmapped() {
+            let p = base + (31 - width.max(height).leading_zeros()) as usize;
+            p.min(tex.max_level as usize)
+        } else {
+            base
+        };
+        // Sizes up to 2^24 (exact in f32) and indices below 2^31 (the
+        // other levels are smaller).
+        if q >= MAX_LEVELS
+            || width > 1 << 24
+            || height > 1 << 24
+            || width as u64 * height as u64 > i32::MAX as u64
+        {
+            return None;
+        }
+        let levels = tex.levels.get(base..=q)?;
+        // Level base + s: `max(1, size >> s)` texels wide and high, and
+        // holding its texels (s ≤ 31: the sizes have at most 25 bits).
+        for (s, img) in (1u32..).zip(&levels[1..]) {
+            let sizes_ok = img.width == (width >> s).max(1) && img.height == (height >> s).max(1);
+            if !sizes_ok || !img.holds_texels() {
+                return None;
+            }
+        }
+        let (mut unorm8, mut float, mut short) = (0, 0, false);
+        for img in levels {
+            // (A level of depth 0 holds no texels.)
+            short |= img.is_empty();
+            match img.texels {
+                Texels::Unorm8(_) => unorm8 += 1,
+                Texels::F32(_) => float += 1,
+            }
+        }
+        let store = if short || (unorm8 != 0 && float != 0) {
+            Store::Mixed
+        } else if float == 0 {
+            let mut v: [&[[u8; 4]]; MAX_LEVELS] = [&ONE_TEXEL; MAX_LEVELS];
+            for (d, img) in (base..=q).zip(levels) {
+                if let Texels::Unorm8(t) = &img.texels {
+                    v[d] = t;
+                }
+            }
+            Store::Unorm8(v)
+        } else {
+            let mut v: [&[[f32; 4]]; MAX_LEVELS] = [&[]; MAX_LEVELS];
+            for (d, img) in (base..=q).zip(levels) {
+                if let Texels::F32(t) = &img.texels {
+                    v[d] = t;
+                }
+            }
+            Store::F32(v)
+        };
+        let table = LevelTable {
+            base: base as i32,
+            width,
+            height,
+            store,
+        };
+        Some((table, q))
+    }
+
+    /// Texels `idx[k][lane]` (corner k) of level `level[lane]` as RGBA
+    /// f32, into `t[k][component][lane]`; [`MISSING`] out of range. For
+    /// f32 or mixed storage (RGBA8 levels take `gather_unorm8`).
+    #[inline(always)]
+    fn fetch_float(
+        &self,
+        tex: &Texture,
+        level: &[i32; LANES],
+        idx: &[[u32; LANES]; 4],
+        t: &mut [[[f32; LANES]; 4]; 4],
+    ) {
+        match &self.store {
+            Store::F32(levels) => {
+                for l in 0..LANES {
+                    let texels = levels[level[l] as usize % MAX_LEVELS];
+                    for k in 0..4 {
+                        let v = texels.get(idx[k][l] as usize).copied().unwrap_or(MISSING);
+                        for c in 0..4 {
+                            t[k][c][l] = v[c];
+                        }
+                    }
+                }
+            }
+            Store::Mixed | Store::Unorm8(_) => {
+                for l in 0..LANES {
+                    let img = tex.levels.get(level[l] as usize);
+                    for k in 0..4 {
+                        let v = img.map_or(MISSING, |img| img.texels.get(idx[k][l] as usize));
+                        for c in 0..4 {
+                            t[k][c][l] = v[c];
+                        }
+                    }
+                }
+            }
+        }
+    }
 }
 
 #[cfg(test)]
@@ -456,9 +965,9 @@ mod tests {
     use crate::texture::{Image, TextureUnit};
     use std::sync::Arc;
 
-    /// A 2D texture with random unorm8 (or, `float`, arbitrary) texels
-    /// and a full mipmap chain.
-    fn random_texture(w: u32, h: u32, float: bool, seed: &mut u32) -> Texture {
+    /// A 2D texture with a full mipmap chain of random texels: unorm8,
+    /// or arbitrary on the levels whose bit is set in `float`.
+    fn random_texture(w: u32, h: u32, float: u32, seed: &mut u32) -> Texture {
         let mut next = move || {
             *seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
             *seed >> 8
@@ -466,6 +975,7 @@ mod tests {
         let mut levels = Vec::new();
         let (mut lw, mut lh) = (w, h);
         loop {
+            let float = float & (1 << levels.len()) != 0;
             let texels = (0..lw * lh)
                 .map(|_| {
                     [0; 4].map(|_| {
@@ -516,7 +1026,12 @@ mod tests {
         ];
         let wraps = [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat];
         let mut checked = 0;
-        for (size, float) in [((16, 8), false), ((5, 12), true), ((1, 1), false)] {
+        let isas: Vec<Isa> = [Isa::Portable, Isa::Avx2, Isa::Avx512]
+            .into_iter()
+            .filter(|i| i.supported())
+            .collect();
+        // RGBA8 levels, f32 levels, some of each.
+        for (size, float) in [((16, 8), 0), ((5, 12), !0), ((1, 1), 0), ((8, 32), 0b1010)] {
             let base = random_texture(size.0, size.1, float, &mut seed);
             for (k, &min_filter) in filters.iter().enumerate() {
                 for mag_filter in [MagFilter::Nearest, MagFilter::Linear] {
@@ -583,23 +1098,25 @@ mod tests {
                             lod,
                             mask: 0xffff & !(1 << 9),
                         };
-                        let mut fast = [[7.0; LANES]; 4];
-                        assert!(sample(&units, &req, &mut fast));
                         let slow = general(&units, &req);
-                        for c in 0..4 {
-                            for lane in 0..LANES {
-                                if lane == 9 {
-                                    assert_eq!(fast[c][lane], 7.0, "masked lane untouched");
-                                    continue;
-                                }
-                                assert_eq!(
+                        for &isa in &isas {
+                            let mut fast = [[7.0; LANES]; 4];
+                            assert!(sample_with(isa, &units, &req, &mut fast));
+                            for c in 0..4 {
+                                for lane in 0..LANES {
+                                    if lane == 9 {
+                                        assert_eq!(fast[c][lane], 7.0, "masked lane untouched");
+                                        continue;
+                                    }
+                                    assert_eq!(
                                     fast[c][lane].to_bits(),
                                     slow[c][lane].to_bits(),
-                                    "{min_filter:?} {mag_filter:?} lane {lane} c {c}: {} vs {}",
+                                    "{isa:?} {min_filter:?} {mag_filter:?} lane {lane} c {c}: {} vs {}",
                                     fast[c][lane],
                                     slow[c][lane]
                                 );
-                                checked += 1;
+                                    checked += 1;
+                                }
                             }
                         }
                     }
@@ -607,6 +1124,78 @@ mod tests {
             }
         }
         assert!(checked > 10_000);
+    }
+
+    #[test]
+    fn level_table_finds_the_last_level_as_texture_does() {
+        let mut seed = 0x51ed_2701_u32;
+        let mut rnd = move |n: u32| {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (seed >> 8) % n
+        };
+        let mut complete = 0;
+        for _ in 0..4000 {
+            let (mut w, mut h): (u32, u32) = (1 << rnd(6), 1 << rnd(6));
+            let mut levels = Vec::new();
+            for _ in 0..rnd(9) + 1 {
+                let (mut lw, mut lh, mut ld) = (w, h, [1, 1, 1, 1, 1, 0, 2][rnd(7) as usize]);
+                // Now and then a wrong size or too few texels.
+                match rnd(14) {
+                    0 => lw += 1,
+                    1 => lh = lh.saturating_sub(1),
+                    2 => (lw, lh) = (0, 0),
+                    _ => {}
+                }
+                let mut n = (lw * lh * ld) as usize;
+                if rnd(16) == 0 {
+                    n = n.saturating_sub(1);
+                    ld = ld.max(1);
+                }
+                let float = rnd(4) == 0;
+                let texel = if float {
+                    [0.3; 4]
+                } else {
+                    [0.0, 1.0, 0.0, 1.0]
+                };
+                let mut img = Image::new(lw, lh, ld, vec![texel; n]);
+                img.depth = ld;
+                levels.push(img);
+                (w, h) = ((w / 2).max(1), (h / 2).max(1));
+            }
+            let mut tex = Texture::new(TextureTarget::Tex2D, levels);
+            tex.min_filter = [MinFilter::Nearest, MinFilter::LinearMipmapLinear][rnd(2) as usize];
+            tex.base_level = rnd(3);
+            tex.max_level = [1000, rnd(6)][rnd(2) as usize];
+            let want = tex.last_level();
+            let table = LevelTable::new(&tex);
+            assert_eq!(table.as_ref().map(|t| t.1), want, "{tex:?}");
+            if let Some((table, q)) = table {
+                complete += 1;
+                // Storage as the levels have it.
+                let levels = &tex.levels[tex.base_level as usize..=q];
+                let unorm8 = levels.iter().filter(|l| l.is_unorm8()).count();
+                let empty = levels.iter().any(|l| l.is_empty());
+                match table.store {
+                    Store::Unorm8(_) => assert!(unorm8 == levels.len() && !empty),
+                    Store::F32(_) => assert!(unorm8 == 0 && !empty),
+                    Store::Mixed => assert!(empty || (unorm8 != 0 && unorm8 != levels.len())),
+                }
+            }
+        }
+        assert!(complete > 400, "{complete} complete");
+    }
+
+    #[test]
+    fn unorm8_conversions_are_exact() {
+        for k in 0..=255u32 {
+            let want = crate::texture::UNORM8[k as usize].to_bits();
+            assert_eq!(unorm8(k).to_bits(), want, "{k}");
+            // `combine_unorm8_avx2`'s way.
+            let x = k as f32;
+            let q = x * UNORM8_INV;
+            let fused = (-q).mul_add(255.0, x).mul_add(UNORM8_INV, q);
+            assert_eq!(fused.to_bits(), want, "{k} (fused)");
+        }
     }
 
     #[test]
@@ -646,7 +1235,7 @@ mod tests {
     #[test]
     fn other_requests_take_the_general_path() {
         let mut seed = 7;
-        let tex = random_texture(4, 4, false, &mut seed);
+        let tex = random_texture(4, 4, 0, &mut seed);
         let req = |unit: [u32; LANES]| SampleRequest {
             unit,
             target: SamplerKind::Sampler2D,
@@ -689,12 +1278,16 @@ mod tests {
 #[cfg(test)]
 mod bench {
     use super::*;
-    use crate::texture::{Image, MinFilter, TextureUnit};
+    use crate::texture::{Image, MagFilter, MinFilter, TextureUnit};
     use std::sync::Arc;
 
     /// `cargo test --release -p shaderbox-raster bench_sample_2d -- --ignored --nocapture`:
     /// trilinear lookups on a 512² RGBA8 mipmapped texture, quads of
-    /// lanes with derivatives like the benchmark's textured scene.
+    /// lanes with derivatives like the benchmark's textured scene, through
+    /// each instruction set's fast path and the general path.
+    /// `BENCH_ISA=Avx2` (or `Portable`, `Avx512`) times that variant
+    /// alone (for profilers), `BENCH_ROUNDS=N` rounds of each (15),
+    /// `BENCH_FILTERS=all` also LINEAR and NEAREST without mipmaps.
     #[test]
     #[ignore]
     fn bench_sample_2d() {
@@ -717,14 +1310,7 @@ mod bench {
             }
             n /= 2;
         }
-        let mut tex = Texture::new(TextureTarget::Tex2D, levels);
-        tex.min_filter = MinFilter::LinearMipmapLinear;
-        let units = TextureUnits {
-            units: vec![TextureUnit {
-                tex_2d: Some(Arc::new(tex)),
-                ..TextureUnit::default()
-            }],
-        };
+        let tex = Texture::new(TextureTarget::Tex2D, levels);
         let mut reqs = Vec::new();
         for k in 0..4096u32 {
             let x0 = (k % 64) as f32 * 4.0;
@@ -754,25 +1340,66 @@ mod bench {
                 mask: 0xffff,
             });
         }
+        // The scene's filter; then LINEAR and NEAREST without mipmaps
+        // (`BENCH_FILTERS=all`).
+        let mut filters = vec![(MinFilter::LinearMipmapLinear, MagFilter::Linear)];
+        if std::env::var("BENCH_FILTERS").is_ok_and(|v| v == "all") {
+            filters.push((MinFilter::Linear, MagFilter::Linear));
+            filters.push((MinFilter::Nearest, MagFilter::Nearest));
+        }
+        for (min_filter, mag_filter) in filters {
+            let mut tex = tex.clone();
+            tex.min_filter = min_filter;
+            tex.mag_filter = mag_filter;
+            let units = TextureUnits {
+                units: vec![TextureUnit {
+                    tex_2d: Some(Arc::new(tex)),
+                    ..TextureUnit::default()
+                }],
+            };
+            println!("{min_filter:?}, {mag_filter:?}:");
+            time_lookups(&units, &reqs);
+        }
+    }
+
+    /// Times `reqs` through each instruction set's fast path and the
+    /// general path and prints the best time per lane of each.
+    fn time_lookups(units: &TextureUnits, reqs: &[SampleRequest]) {
         let mut out = [[0.0; LANES]; 4];
         let mut sink = 0.0f32;
-        // Alternating rounds, best of each (the machine is shared).
-        let mut best = [f64::MAX; 2];
-        for round in 0..30 {
-            let fast = round % 2 == 0;
+        // Each supported instruction set's fast path, then the general
+        // path; alternating rounds, best of each (the machine is shared).
+        let isas: Vec<Isa> = [Isa::Portable, Isa::Avx2, Isa::Avx512]
+            .into_iter()
+            .filter(|i| {
+                i.supported() && std::env::var("BENCH_ISA").map_or(true, |v| v == format!("{i:?}"))
+            })
+            .collect();
+        let ways = isas.len() + usize::from(std::env::var("BENCH_ISA").is_err());
+        let mut best = vec![f64::MAX; ways];
+        let rounds: usize = std::env::var("BENCH_ROUNDS")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(15);
+        for round in 0..rounds * ways {
+            let way = round % ways;
             let t = std::time::Instant::now();
-            for r in &reqs {
-                if fast {
-                    sample(&units, r, &mut out);
-                } else {
-                    units.sample_general(r, &mut out);
+            for r in reqs {
+                match isas.get(way) {
+                    Some(&isa) => {
+                        sample_with(isa, units, r, &mut out);
+                    }
+                    None => units.sample_general(r, &mut out),
                 }
                 sink += out[0][3];
             }
-            let b = &mut best[round % 2];
+            let b = &mut best[way];
             *b = b.min(t.elapsed().as_secs_f64());
         }
-        for (name, b) in ["fast", "general"].iter().zip(best) {
+        for (way, b) in best.iter().enumerate() {
+            let name = isas
+                .get(way)
+                .map_or("general".to_string(), |i| format!("fast {i:?}"));
             let per = b / (reqs.len() * LANES) as f64 * 1e9;
             println!("{name}: {per:.1} ns per lane");
         }
