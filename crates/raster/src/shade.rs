@@ -3,7 +3,7 @@
 //! per-fragment operations in order.
 
 use crate::ex::{Batch, ExecError, Textures, LANES};
-use crate::fragment_ops::{self, Fragment};
+use crate::fragment_ops::{self, Fragment, QuickOps};
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
 use crate::linkage::FsLayout;
 use crate::rasterize::{PixelRect, QuadInterp, Shape};
@@ -283,7 +283,33 @@ impl<'a> FragmentStage<'a> {
         origin: (u32, u32),
         batch: &Batch,
         pending: &[Entry],
+        quick: Option<&QuickOps>,
     ) {
+        if let Some((quick, o)) = quick.and_then(|q| Some((q, q.color_output()?))) {
+            // The common states: the same operations per fragment, in the
+            // same order, without the general checks.
+            let mut target = quick.target(fb, origin);
+            for (q, e) in pending.iter().enumerate() {
+                let quad = &e.quad;
+                let lanes = quad.live & !(batch.discarded >> (4 * q)) as u8 & 0xf;
+                for k in 0..4 {
+                    if lanes & (1 << k) == 0 {
+                        continue;
+                    }
+                    let (x, y) = quad.pixel(k);
+                    if x < 0 || y < 0 {
+                        continue;
+                    }
+                    let lane = 4 * q + k;
+                    let z = self.frag_z(batch, lane, quad, k);
+                    if let Some(index) = target.test(x as u32, y as u32, z) {
+                        let c = [0, 1, 2, 3].map(|j| get(batch, o + j, lane));
+                        target.write(index, c);
+                    }
+                }
+            }
+            return;
+        }
         let mut frag = Fragment {
             x: 0,
             y: 0,
@@ -326,10 +352,11 @@ impl<'a> FragmentStage<'a> {
             quads,
         } = scratch;
         *n = 0;
+        let quick = QuickOps::new(fb, self.state, &self.colors_out);
         let mut flush = |fb: &mut Framebuffer, pending: &[Entry]| -> Result<(), ExecError> {
             self.fill(batch, pending);
             self.run_shader(batch)?;
-            self.write_batch(fb, origin, batch, pending);
+            self.write_batch(fb, origin, batch, pending, quick.as_ref());
             Ok(())
         };
         for &p in bin {
@@ -692,19 +719,17 @@ impl<'a> FragmentStage<'a> {
         *n = 0;
         // Per pixel: (winning primitive, its quad's coverage).
         let mut winner: Vec<(u32, u8)> = vec![(NO_PRIM, 0); w * h];
+        let quick = QuickOps::new(fb, self.state, &self.colors_out);
         let mut depth_pass = |fb: &mut Framebuffer,
                               winner: &mut Vec<(u32, u8)>,
                               pending: &[Entry]|
          -> Result<(), ExecError> {
             self.fill(batch, pending);
             self.run_depth(depth, batch)?;
-            let mut frag = Fragment {
-                x: 0,
-                y: 0,
-                z: 0.0,
-                back_facing: false,
-                colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
-            };
+            // The fragments to test, in order: (x, y, z, back, primitive,
+            // its quad's coverage).
+            let mut frags = [(0u32, 0u32, 0f32, false, 0u32, 0u8); LANES];
+            let mut count = 0;
             for (q, e) in pending.iter().enumerate() {
                 let quad = &e.quad;
                 for k in 0..4 {
@@ -716,13 +741,36 @@ impl<'a> FragmentStage<'a> {
                     if x < 0 || y < 0 {
                         continue;
                     }
-                    frag.x = x as u32;
-                    frag.y = y as u32;
-                    frag.z = self.frag_z(batch, lane, quad, k);
-                    frag.back_facing = e.prim.is_some_and(|p| p.back);
-                    if let Some(index) = fragment_ops::tests(fb, origin, self.state, &frag) {
-                        if let Some(slot) = winner.get_mut(index) {
-                            *slot = (e.index, quad.live);
+                    let z = self.frag_z(batch, lane, quad, k);
+                    let back = e.prim.is_some_and(|p| p.back);
+                    if let Some(slot) = frags.get_mut(count) {
+                        *slot = (x as u32, y as u32, z, back, e.index, quad.live);
+                        count += 1;
+                    }
+                }
+            }
+            let frags = &frags[..count];
+            match &quick {
+                Some(q) => {
+                    let mut target = q.target(fb, origin);
+                    for &(x, y, z, _, p, live) in frags {
+                        if let Some(slot) = target.test(x, y, z).and_then(|i| winner.get_mut(i)) {
+                            *slot = (p, live);
+                        }
+                    }
+                }
+                None => {
+                    for &(x, y, z, back_facing, p, live) in frags {
+                        let frag = Fragment {
+                            x,
+                            y,
+                            z,
+                            back_facing,
+                            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
+                        };
+                        let passed = fragment_ops::tests(fb, origin, self.state, &frag);
+                        if let Some(slot) = passed.and_then(|i| winner.get_mut(i)) {
+                            *slot = (p, live);
                         }
                     }
                 }
@@ -753,7 +801,9 @@ impl<'a> FragmentStage<'a> {
         let mut color_pass = |fb: &mut Framebuffer, todo: &[Entry]| -> Result<(), ExecError> {
             self.fill(batch, todo);
             self.run_shader(batch)?;
-            let mut colors = [[0.0; 4]; MAX_DRAW_BUFFERS];
+            // (lane, pixel index) of the fragments to write, in order.
+            let mut writes = [(0usize, 0usize); LANES];
+            let mut count = 0;
             for (q, e) in todo.iter().enumerate() {
                 for k in 0..4 {
                     let lane = 4 * q + k;
@@ -763,9 +813,26 @@ impl<'a> FragmentStage<'a> {
                     let (x, y) = e.quad.pixel(k);
                     let lx = x as usize - origin.0 as usize;
                     let ly = y as usize - origin.1 as usize;
-                    let index = ly * w + lx;
-                    self.colors_into(batch, lane, &mut colors);
-                    fragment_ops::write_colors(fb, index, self.state, &colors);
+                    if let Some(slot) = writes.get_mut(count) {
+                        *slot = (lane, ly * w + lx);
+                        count += 1;
+                    }
+                }
+            }
+            let writes = &writes[..count];
+            match quick.and_then(|q| Some((q, q.color_output()?))) {
+                Some((q, o)) => {
+                    let mut target = q.target(fb, origin);
+                    for &(lane, index) in writes {
+                        target.write(index, [0, 1, 2, 3].map(|j| get(batch, o + j, lane)));
+                    }
+                }
+                None => {
+                    let mut colors = [[0.0; 4]; MAX_DRAW_BUFFERS];
+                    for &(lane, index) in writes {
+                        self.colors_into(batch, lane, &mut colors);
+                        fragment_ops::write_colors(fb, index, self.state, &colors);
+                    }
                 }
             }
             Ok(())
