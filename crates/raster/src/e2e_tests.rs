@@ -903,3 +903,28 @@ fn primitives_sharing_batches_give_the_same_bytes() {
         }
     }
 }
+
+#[test]
+fn instruction_set_variants_give_the_same_bytes() {
+    use crate::simd::{with_isa, Isa};
+    let one = || crate::Workers::new(1);
+    let base = with_isa(Isa::Base, || {
+        (
+            small_triangles(&one(), false, CompareFunc::Less, |_| {}),
+            impostors(&one(), true, true, 200, |_| {}),
+            scene(&one()),
+        )
+    });
+    for isa in Isa::all_supported() {
+        let got = with_isa(isa, || {
+            (
+                small_triangles(&one(), false, CompareFunc::Less, |_| {}),
+                impostors(&one(), true, true, 200, |_| {}),
+                scene(&one()),
+            )
+        });
+        assert!(base.0 == got.0, "small triangles, {isa:?}");
+        assert!(base.1 == got.1, "impostors, {isa:?}");
+        assert!(base.2 == got.2, "scene, {isa:?}");
+    }
+}

@@ -367,7 +367,7 @@ impl QuickTarget<'_> {
     /// [`tests`] for a fragment at window (x, y) with window z `z`
     /// (clamped to [0, 1]), under the qualifying state: the pixel index
     /// when it passes (the depth written, the fragment counted).
-    #[inline]
+    #[inline(always)]
     pub fn test(&mut self, x: u32, y: u32, z: f32) -> Option<usize> {
         let lx = x.checked_sub(self.origin.0)?;
         let ly = y.checked_sub(self.origin.1)?;
@@ -402,7 +402,7 @@ impl QuickTarget<'_> {
 
     /// [`write_colors`] of colour `src` (the qualifying output) to pixel
     /// `index`; nothing when the colour write does not qualify.
-    #[inline]
+    #[inline(always)]
     pub fn write(&mut self, index: usize, src: [f32; 4]) {
         let Some((v, blend)) = &mut self.color else {
             return;
@@ -511,7 +511,13 @@ fn write_color(buf: &mut ColorBuffer, index: usize, state: &PipelineState, src: 
 // Not `clamp`: NaN must become 0 (`max` drops it; `clamp` keeps it).
 #[allow(clippy::manual_clamp)]
 fn to_unorm8(c: [f32; 4]) -> [u8; 4] {
-    c.map(|x| (x.max(0.0).min(1.0) * 255.0 + 0.5) as i32 as u8)
+    c.map(|x| {
+        let y = x.max(0.0).min(1.0) * 255.0 + 0.5;
+        // SAFETY: `max` turns NaN into 0, so `y` is finite and in
+        // [0.5, 255.5]: representable in i32 (truncation, as `as i32`
+        // would give, without its saturation checks).
+        unsafe { y.to_int_unchecked::<i32>() as u8 }
+    })
 }
 
 /// [`blend_color`] for `s` and `d` in [0, 1] (a fixed-point buffer's

@@ -112,6 +112,7 @@ mod pixel_fragments;
 mod probe;
 mod rasterize;
 mod shade;
+mod simd;
 mod state;
 mod texture;
 mod texture_2d;

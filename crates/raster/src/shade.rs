@@ -7,6 +7,7 @@ use crate::fragment_ops::{self, Fragment, QuickOps};
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
 use crate::linkage::FsLayout;
 use crate::rasterize::{PixelRect, QuadInterp, Shape};
+use crate::simd::Isa;
 use crate::state::PipelineState;
 use crate::ShaderStage;
 
@@ -63,11 +64,11 @@ impl Quad {
     }
 
     /// Makes this the quad at (qx, qy) of `prim` with coverage `mask`.
-    fn set(&mut self, prim: &Prim, qx: i64, qy: i64, mask: u8) {
+    fn set(&mut self, isa: Isa, prim: &Prim, qx: i64, qy: i64, mask: u8) {
         self.x = qx;
         self.y = qy;
         self.live = mask;
-        prim.shape.interp_quad_into(qx, qy, &mut self.it);
+        prim.shape.interp_quad_isa(isa, qx, qy, &mut self.it);
         for (z, &iz) in self.z.iter_mut().zip(&self.it.z) {
             *z = clamp01(iz + prim.z_offset);
         }
@@ -86,11 +87,18 @@ pub(crate) struct Entry<'p> {
 
 impl<'p> Entry<'p> {
     /// Makes this the quad at (qx, qy) of primitive `index`, `prim`.
-    fn set(&mut self, prim: &'p Prim, index: u32, (qx, qy, mask): (i64, i64, u8), write: u8) {
+    fn set(
+        &mut self,
+        isa: Isa,
+        prim: &'p Prim,
+        index: u32,
+        (qx, qy, mask): (i64, i64, u8),
+        write: u8,
+    ) {
         self.prim = Some(prim);
         self.index = index;
         self.write = write;
-        self.quad.set(prim, qx, qy, mask);
+        self.quad.set(isa, prim, qx, qy, mask);
     }
 }
 
@@ -113,6 +121,27 @@ fn quads_mask(quads: usize) -> u32 {
     }
 }
 
+/// How [`FragmentStage::fill`] writes one varying component.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum FillKind {
+    /// Interpolated (vertex 0's value for points).
+    Interp,
+    /// Flat-shaded: vertex 0's value.
+    Constant,
+    /// Replaced by component `c` of (gl_PointCoord, 0, 1) on point
+    /// sprites (GL_COORD_REPLACE).
+    Replace(usize),
+}
+
+/// One varying component [`FragmentStage::fill`] writes: link `li` to
+/// input component `offset`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FillLink {
+    li: usize,
+    offset: usize,
+    kind: FillKind,
+}
+
 /// No primitive (in the per-pixel winner table of a deferred tile).
 const NO_PRIM: u32 = u32::MAX;
 
@@ -124,15 +153,14 @@ pub(crate) struct FragmentStage<'a> {
     pub state: &'a PipelineState,
     /// The fragment varyings of every primitive ([`Prim::attrs`]).
     pub attrs: &'a [f32],
-    /// Per link: flat-shaded (the value of vertex 0 is used as is).
-    pub constant: Vec<bool>,
-    /// Per link: the shader reads the input (unread inputs stay zero;
+    /// The varying components the shader reads (unread inputs stay zero;
     /// every link counts as read under the debugger's probe, which shows
-    /// inputs).
-    pub read: Vec<bool>,
-    /// Per link: the gl_PointCoord component replacing it on point
-    /// sprites (GL_COORD_REPLACE), if any.
-    pub replace: Vec<Option<usize>>,
+    /// inputs), in link order.
+    fills: Vec<FillLink>,
+    /// Those the depth-only slice reads (its interface's inputs).
+    depth_fills: Vec<FillLink>,
+    /// The instruction set of the hot loops.
+    isa: Isa,
     /// (draw buffer, output offset) of each colour the fragment carries.
     pub colors_out: Vec<(usize, usize)>,
     /// Depth/stencil-test before shading (no gl_FragDepth write).
@@ -161,12 +189,41 @@ impl<'a> FragmentStage<'a> {
         deferred: Option<Box<dyn ShaderStage>>,
         probe: Option<&'a crate::probe::Probe>,
     ) -> FragmentStage<'a> {
-        let inputs = &shader.interface().inputs;
-        let read_at = |offset: usize| {
+        let read_by = |stage: &dyn ShaderStage, offset: usize| {
             probe.is_some()
-                || inputs
+                || stage
+                    .interface()
+                    .inputs
                     .iter()
                     .any(|s| s.written && (s.offset..s.offset + s.components).contains(&offset))
+        };
+        let plan = |stage: &dyn ShaderStage| -> Vec<FillLink> {
+            layout
+                .links
+                .iter()
+                .enumerate()
+                .filter(|&(_, l)| l.fs_offset < layout.inputs && read_by(stage, l.fs_offset))
+                .map(|(li, l)| FillLink {
+                    li,
+                    offset: l.fs_offset,
+                    kind: match l.texcoord {
+                        Some((set, c)) if set < 32 && state.coord_replace & (1 << set) != 0 => {
+                            FillKind::Replace(c.min(3))
+                        }
+                        _ if l.color && state.flat_shading => FillKind::Constant,
+                        _ => FillKind::Interp,
+                    },
+                })
+                .collect()
+        };
+        let fills = plan(shader);
+        let depth_fills = match &deferred {
+            // Only what both read (the slice reads a subset of the inputs).
+            Some(d) => plan(d.as_ref())
+                .into_iter()
+                .filter(|f| fills.iter().any(|g| g.offset == f.offset))
+                .collect(),
+            None => Vec::new(),
         };
         FragmentStage {
             shader,
@@ -175,22 +232,9 @@ impl<'a> FragmentStage<'a> {
             layout,
             state,
             attrs,
-            constant: layout
-                .links
-                .iter()
-                .map(|l| l.color && state.flat_shading)
-                .collect(),
-            read: layout.links.iter().map(|l| read_at(l.fs_offset)).collect(),
-            replace: layout
-                .links
-                .iter()
-                .map(|l| match l.texcoord {
-                    Some((set, c)) if set < 32 && state.coord_replace & (1 << set) != 0 => {
-                        Some(c.min(3))
-                    }
-                    _ => None,
-                })
-                .collect(),
+            fills,
+            depth_fills,
+            isa: crate::simd::detect(),
             colors_out: (0..MAX_DRAW_BUFFERS)
                 .filter_map(|i| match (layout.color_out[i], state.draw_buffers[i]) {
                     (Some(o), Some(_)) => Some((i, o)),
@@ -255,7 +299,7 @@ impl<'a> FragmentStage<'a> {
         prim.shape.quads_into(clip_to(prim, tile), quads);
         for &quad in quads.iter() {
             let Some(e) = slots.get_mut(*n) else { break };
-            e.set(prim, 0, quad, 0);
+            e.set(self.isa, prim, 0, quad, 0);
             if self.early {
                 self.early_rejects(fb, origin, prim, &mut e.quad);
             }
@@ -354,7 +398,7 @@ impl<'a> FragmentStage<'a> {
         *n = 0;
         let quick = QuickOps::new(fb, self.state, &self.colors_out);
         let mut flush = |fb: &mut Framebuffer, pending: &[Entry]| -> Result<(), ExecError> {
-            self.fill(batch, pending);
+            self.fill(batch, pending, &self.fills);
             self.run_shader(batch)?;
             self.write_batch(fb, origin, batch, pending, quick.as_ref());
             Ok(())
@@ -366,7 +410,7 @@ impl<'a> FragmentStage<'a> {
             prim.shape.quads_into(clip_to(prim, tile), quads);
             for &quad in quads.iter() {
                 let Some(e) = slots.get_mut(*n) else { break };
-                e.set(prim, p, quad, 0);
+                e.set(self.isa, prim, p, quad, 0);
                 if self.early {
                     self.early_rejects(fb, origin, prim, &mut e.quad);
                 }
@@ -436,21 +480,49 @@ impl<'a> FragmentStage<'a> {
         }
     }
 
-    /// Clears `batch` and writes the fragment inputs of `pending` (quad
-    /// `q` in lanes `4q..4q + 4`; at most `LANES / 4` quads); sets the
-    /// active and helper lanes. Varyings are interpolated link by link
-    /// over the batch's quads with each quad's per-pixel weights:
-    /// `0 + w0·v0 + w1·v1 + w2·v2` in f64 for triangles (lines have no
-    /// third term: `w2 = v2 = 0` adds an exact zero), vertex 0's value
-    /// for points and flat-shaded colours.
-    fn fill(&self, batch: &mut Batch, pending: &[Entry]) {
-        for c in batch.inputs.iter_mut() {
-            *c = [0.0; LANES];
+    /// Writes the fragment inputs of `pending` (quad `q` in lanes
+    /// `4q..4q + 4`; at most `LANES / 4` quads) that `plan` lists, zeroes
+    /// the outputs, and sets the active and helper lanes. Varyings are
+    /// interpolated with each quad's per-pixel weights, in f64:
+    /// `0 + w0·v0 + w1·v1 + w2·v2` for triangles, `0 + w0·v0 + w1·v1` for
+    /// lines; vertex 0's value for points and flat-shaded colours.
+    ///
+    /// Inputs the plan leaves out are not touched: they are zero from
+    /// [`new_batch`] when no plan of the draw lists them, and only read by
+    /// a stage that does not read them otherwise (stages never write their
+    /// inputs). With fewer than `LANES / 4` quads every input is cleared
+    /// first, so the lanes of absent quads read zeros.
+    fn fill(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
+        match self.isa {
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2 | Isa::Avx512 => {
+                // SAFETY: `isa` is only Avx2 or Avx512 when the CPU has
+                // AVX2 (`simd::detect`).
+                unsafe { self.fill_avx2(batch, pending, plan) }
+            }
+            _ => self.fill_with(batch, pending, plan),
+        }
+    }
+
+    /// [`FragmentStage::fill`] compiled for AVX2 (the same operations:
+    /// four pixels' f64 arithmetic in one register instead of two).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn fill_avx2(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
+        self.fill_with(batch, pending, plan)
+    }
+
+    #[inline(always)]
+    fn fill_with(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
+        let pending = pending.get(..LANES / 4).unwrap_or(pending);
+        if pending.len() < LANES / 4 {
+            for c in batch.inputs.iter_mut() {
+                *c = [0.0; LANES];
+            }
         }
         for c in batch.outputs.iter_mut() {
             *c = [0.0; LANES];
         }
-        let pending = pending.get(..LANES / 4).unwrap_or(pending);
         let mut live_mask = 0u32;
         for (q, e) in pending.iter().enumerate() {
             live_mask |= (e.quad.live as u32) << (4 * q);
@@ -470,46 +542,40 @@ impl<'a> FragmentStage<'a> {
                 prim.shape.point_coord(x, y, lower_left)
             })
         };
-        for (li, link) in layout.links.iter().enumerate() {
-            if !self.read.get(li).copied().unwrap_or(true) {
-                continue;
-            }
-            let Some(dst) = batch.inputs.get_mut(link.fs_offset) else {
+        for (q, e) in pending.iter().enumerate() {
+            let (Some(prim), quad) = (e.prim, &e.quad) else {
                 continue;
             };
-            let constant = self.constant.get(li).copied().unwrap_or(false);
-            let replace = self.replace.get(li).copied().flatten();
-            for (e, lanes) in pending.iter().zip(dst.chunks_exact_mut(4)) {
-                let (Some(prim), quad) = (e.prim, &e.quad) else {
+            // The primitive's varyings: vertex j's link li at j·links + li.
+            let attrs = self.attrs.get(prim.attrs..).unwrap_or(&[]);
+            let attr = |j: usize, li: usize| attrs.get(j * links + li).copied().unwrap_or(0.0);
+            let w = &quad.it.weights;
+            for l in plan {
+                let Some(lanes) = batch
+                    .inputs
+                    .get_mut(l.offset)
+                    .and_then(|c| c.get_mut(4 * q..4 * q + 4))
+                else {
                     continue;
                 };
-                let attr = |j: usize| {
-                    self.attrs
-                        .get(prim.attrs + j * links + li)
-                        .copied()
-                        .unwrap_or(0.0)
-                };
-                match prim.shape {
-                    Shape::Point { .. } => match replace.filter(|_| sprite) {
-                        Some(c) => {
-                            let pc = point_coords(quad, prim);
-                            for (out, pc) in lanes.iter_mut().zip(pc) {
-                                *out = [pc.0, pc.1, 0.0, 1.0][c];
-                            }
+                match (&prim.shape, l.kind) {
+                    (Shape::Point { .. }, FillKind::Replace(c)) if sprite => {
+                        let pc = point_coords(quad, prim);
+                        for (out, pc) in lanes.iter_mut().zip(pc) {
+                            *out = [pc.0, pc.1, 0.0, 1.0][c];
                         }
-                        None => lanes.fill(attr(0)),
-                    },
-                    _ if constant => lanes.fill(attr(0)),
-                    Shape::Triangle { .. } => {
-                        let v = [attr(0) as f64, attr(1) as f64, attr(2) as f64];
-                        let w = &quad.it.weights;
+                    }
+                    (Shape::Point { .. }, _) | (_, FillKind::Constant) => {
+                        lanes.fill(attr(0, l.li));
+                    }
+                    (Shape::Triangle { .. }, _) => {
+                        let v = [0, 1, 2].map(|j| attr(j, l.li) as f64);
                         for (k, out) in lanes.iter_mut().enumerate() {
                             *out = (0.0 + w[0][k] * v[0] + w[1][k] * v[1] + w[2][k] * v[2]) as f32;
                         }
                     }
-                    Shape::Line { .. } => {
-                        let v = [attr(0) as f64, attr(1) as f64];
-                        let w = &quad.it.weights;
+                    (Shape::Line { .. }, _) => {
+                        let v = [0, 1].map(|j| attr(j, l.li) as f64);
                         for (k, out) in lanes.iter_mut().enumerate() {
                             *out = (0.0 + w[0][k] * v[0] + w[1][k] * v[1]) as f32;
                         }
@@ -610,7 +676,7 @@ impl<'a> FragmentStage<'a> {
         pending: &[Entry],
         batch: &mut Batch,
     ) -> Result<(), ExecError> {
-        self.fill(batch, pending);
+        self.fill(batch, pending, &self.fills);
         let live_mask = batch.active & !batch.helper;
         let probed = self.probe.and_then(|p| {
             let lane = pending.iter().enumerate().find_map(|(q, e)| {
@@ -724,7 +790,7 @@ impl<'a> FragmentStage<'a> {
                               winner: &mut Vec<(u32, u8)>,
                               pending: &[Entry]|
          -> Result<(), ExecError> {
-            self.fill(batch, pending);
+            self.fill(batch, pending, &self.depth_fills);
             self.run_depth(depth, batch)?;
             // The fragments to test, in order: (x, y, z, back, primitive,
             // its quad's coverage).
@@ -784,7 +850,7 @@ impl<'a> FragmentStage<'a> {
             prim.shape.quads_into(clip_to(prim, tile), quads);
             for &quad in quads.iter() {
                 let Some(e) = slots.get_mut(*n) else { break };
-                e.set(prim, p, quad, 0);
+                e.set(self.isa, prim, p, quad, 0);
                 *n += 1;
                 if *n == LANES / 4 {
                     depth_pass(fb, &mut winner, slots)?;
@@ -799,7 +865,7 @@ impl<'a> FragmentStage<'a> {
 
         // Pass 2: (primitive, quad, coverage, lanes to write) per winner.
         let mut color_pass = |fb: &mut Framebuffer, todo: &[Entry]| -> Result<(), ExecError> {
-            self.fill(batch, todo);
+            self.fill(batch, todo, &self.fills);
             self.run_shader(batch)?;
             // (lane, pixel index) of the fragments to write, in order.
             let mut writes = [(0usize, 0usize); LANES];
@@ -865,7 +931,7 @@ impl<'a> FragmentStage<'a> {
                     };
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
                     let Some(e) = slots.get_mut(*n) else { break };
-                    e.set(prim, p, (qx, qy, live), write);
+                    e.set(self.isa, prim, p, (qx, qy, live), write);
                     *n += 1;
                     if *n == LANES / 4 {
                         color_pass(fb, slots)?;
