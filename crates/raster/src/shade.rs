@@ -249,6 +249,29 @@ impl<'a> FragmentStage<'a> {
         }
     }
 
+    /// Asks the CPU to fetch what the primitives after `bin[i]` will
+    /// need: the varyings of the next one, the set-up of the one after.
+    /// Only a hint: no effect on results.
+    #[inline(always)]
+    fn prefetch_ahead(&self, prims: &[&Prim], bin: &[u32], i: usize) {
+        let at = |k: usize| bin.get(i + k).and_then(|&p| prims.get(p as usize));
+        if let Some(&next) = at(1) {
+            self.prefetch_attrs(next);
+        }
+        if let Some(&after) = at(2) {
+            prefetch(std::slice::from_ref(after));
+        }
+    }
+
+    /// [`prefetch`] of `prim`'s varyings.
+    #[inline(always)]
+    fn prefetch_attrs(&self, prim: &Prim) {
+        let n = self.layout.links.len() * 3;
+        if let Some(a) = self.attrs.get(prim.attrs..) {
+            prefetch(a.get(..n).unwrap_or(a));
+        }
+    }
+
     /// Runs the shader on `batch` (with the per-draw prepared values).
     fn run_shader(&self, batch: &mut Batch) -> Result<(), ExecError> {
         match &self.prepared {
@@ -403,10 +426,11 @@ impl<'a> FragmentStage<'a> {
             self.write_batch(fb, origin, batch, pending, quick.as_ref());
             Ok(())
         };
-        for &p in bin {
+        for (i, &p) in bin.iter().enumerate() {
             let Some(&prim) = prims.get(p as usize) else {
                 continue;
             };
+            self.prefetch_ahead(prims, bin, i);
             prim.shape.quads_into(clip_to(prim, tile), quads);
             for &quad in quads.iter() {
                 let Some(e) = slots.get_mut(*n) else { break };
@@ -843,10 +867,11 @@ impl<'a> FragmentStage<'a> {
             }
             Ok(())
         };
-        for &p in bin {
+        for (i, &p) in bin.iter().enumerate() {
             let Some(&prim) = prims.get(p as usize) else {
                 continue;
             };
+            self.prefetch_ahead(prims, bin, i);
             prim.shape.quads_into(clip_to(prim, tile), quads);
             for &quad in quads.iter() {
                 let Some(e) = slots.get_mut(*n) else { break };
@@ -931,6 +956,7 @@ impl<'a> FragmentStage<'a> {
                     };
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
                     let Some(e) = slots.get_mut(*n) else { break };
+                    self.prefetch_attrs(prim);
                     e.set(self.isa, prim, p, (qx, qy, live), write);
                     *n += 1;
                     if *n == LANES / 4 {
@@ -946,6 +972,26 @@ impl<'a> FragmentStage<'a> {
         }
         Ok(())
     }
+}
+
+/// Asks the CPU to bring the cache lines of `data` closer (a hint with
+/// no effect on results; nothing on targets without one).
+#[inline(always)]
+fn prefetch<T>(data: &[T]) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        let start = data.as_ptr() as *const i8;
+        let bytes = std::mem::size_of_val(data);
+        // Every line from the first byte's to the last byte's.
+        for offset in (0..bytes).step_by(64).chain(bytes.checked_sub(1)) {
+            // SAFETY: a prefetch is a hint: it never faults and reads
+            // nothing the program sees; the address is inside `data`.
+            unsafe { _mm_prefetch::<_MM_HINT_T0>(start.wrapping_add(offset)) }
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = data;
 }
 
 /// `prim`'s bounds inside `tile`.
