@@ -376,6 +376,8 @@ struct Out {
     prims: Vec<Prim>,
     attrs: Vec<f32>,
     source: u32,
+    /// The set-up chunk (its index in the draw's chunks).
+    chunk: u32,
 }
 
 const NO_WIN: WinVertex = WinVertex {
@@ -469,6 +471,7 @@ impl Setup<'_> {
             back,
             z_offset,
             attrs,
+            chunk: out.chunk,
             source: out.source,
         });
     }
@@ -752,6 +755,7 @@ pub(crate) fn draw_probed(
             prims: Vec::with_capacity(n),
             attrs: Vec::with_capacity(n * 3 * fs_layout.links.len()),
             source: 0,
+            chunk: c as u32,
         };
         let v = |i: usize| vertex_of.get(i).copied().unwrap_or(0);
         for k in c * chunk..((c + 1) * chunk).min(n_prims) {
@@ -784,17 +788,9 @@ pub(crate) fn draw_probed(
         }
         (out.prims, out.attrs)
     });
-    // The chunks' primitives in order (referenced where they are, not
-    // moved), each chunk's varyings moved behind the previous chunks'.
-    let mut parts = parts;
-    let mut attrs: Vec<f32> = Vec::with_capacity(parts.iter().map(|p| p.1.len()).sum());
-    for (chunk_prims, chunk_attrs) in parts.iter_mut() {
-        let base = attrs.len();
-        for p in chunk_prims.iter_mut() {
-            p.attrs += base;
-        }
-        attrs.extend_from_slice(chunk_attrs);
-    }
+    // The chunks' primitives in order and their varyings, referenced
+    // where they are (not moved).
+    let attrs: Vec<&[f32]> = parts.iter().map(|p| &p.1[..]).collect();
     let prims: Vec<&Prim> = parts.iter().flat_map(|p| p.0.iter()).collect();
 
     // The probe replays every fragment: never deferred.
@@ -812,7 +808,7 @@ pub(crate) fn draw_probed(
         textures,
         &fs_layout,
         state,
-        &attrs,
+        attrs,
         deferred,
         probe,
     );

@@ -19,9 +19,11 @@ pub(crate) struct Prim {
     pub back: bool,
     /// Polygon offset added to window z.
     pub z_offset: f64,
-    /// Where the fragment varyings start in the draw's varying array
-    /// ([`FragmentStage::attrs`]): `links` values per vertex.
+    /// Where the fragment varyings start in the varying array of the
+    /// primitive's set-up chunk (`chunk`, an index into
+    /// [`FragmentStage::attrs`]): `links` values per vertex.
     pub attrs: usize,
+    pub chunk: u32,
     /// Index of the assembled primitive this one came from (clipping may
     /// split one into several), for the debugger.
     pub source: u32,
@@ -151,8 +153,9 @@ pub(crate) struct FragmentStage<'a> {
     pub textures: &'a (dyn Textures + Sync),
     pub layout: &'a FsLayout,
     pub state: &'a PipelineState,
-    /// The fragment varyings of every primitive ([`Prim::attrs`]).
-    pub attrs: &'a [f32],
+    /// The fragment varyings of every primitive, per set-up chunk
+    /// ([`Prim::attrs`]).
+    pub attrs: Vec<&'a [f32]>,
     /// The varying components the shader reads (unread inputs stay zero;
     /// every link counts as read under the debugger's probe, which shows
     /// inputs), in link order.
@@ -185,7 +188,7 @@ impl<'a> FragmentStage<'a> {
         textures: &'a (dyn Textures + Sync),
         layout: &'a FsLayout,
         state: &'a PipelineState,
-        attrs: &'a [f32],
+        attrs: Vec<&'a [f32]>,
         deferred: Option<Box<dyn ShaderStage>>,
         probe: Option<&'a crate::probe::Probe>,
     ) -> FragmentStage<'a> {
@@ -266,10 +269,17 @@ impl<'a> FragmentStage<'a> {
     /// [`prefetch`] of `prim`'s varyings.
     #[inline(always)]
     fn prefetch_attrs(&self, prim: &Prim) {
-        let n = self.layout.links.len() * 3;
-        if let Some(a) = self.attrs.get(prim.attrs..) {
-            prefetch(a.get(..n).unwrap_or(a));
-        }
+        let a = self.prim_attrs(prim);
+        prefetch(a.get(..self.layout.links.len() * 3).unwrap_or(a));
+    }
+
+    /// `prim`'s varyings and those after it in its chunk.
+    #[inline(always)]
+    fn prim_attrs(&self, prim: &Prim) -> &'a [f32] {
+        self.attrs
+            .get(prim.chunk as usize)
+            .and_then(|a| a.get(prim.attrs..))
+            .unwrap_or(&[])
     }
 
     /// Runs the shader on `batch` (with the per-draw prepared values).
@@ -571,7 +581,7 @@ impl<'a> FragmentStage<'a> {
                 continue;
             };
             // The primitive's varyings: vertex j's link li at j·links + li.
-            let attrs = self.attrs.get(prim.attrs..).unwrap_or(&[]);
+            let attrs = self.prim_attrs(prim);
             let attr = |j: usize, li: usize| attrs.get(j * links + li).copied().unwrap_or(0.0);
             let w = &quad.it.weights;
             for l in plan {
