@@ -928,3 +928,23 @@ fn instruction_set_variants_give_the_same_bytes() {
         assert!(base.2 == got.2, "scene, {isa:?}");
     }
 }
+
+#[test]
+fn draws_reusing_an_earlier_draws_buffers_give_the_same_bytes() {
+    for threads in [1, 2] {
+        let workers = crate::Workers::new(threads);
+        let fresh = small_triangles(
+            &crate::Workers::new(threads),
+            false,
+            CompareFunc::Less,
+            |_| {},
+        );
+        // Bigger draws first, then smaller ones, on the same workers.
+        let _ = impostors(&workers, true, true, 1100, |_| {});
+        assert!(workers.spare().chunks.len() >= 2);
+        let again = small_triangles(&workers, false, CompareFunc::Less, |_| {});
+        assert!(fresh == again, "{threads} threads");
+        let small = impostors(&workers, true, true, 60, |_| {});
+        assert!(small == impostors(&crate::Workers::new(1), true, true, 60, |_| {}));
+    }
+}

@@ -224,7 +224,9 @@ fn run_vertices(
     };
     // Each task runs its vertices' batches with one batch and writes their
     // outputs straight into its own part of the draw's output array.
-    let mut outputs = vec![0.0f32; unique.len() * stride];
+    let mut outputs = std::mem::take(&mut workers.spare().outputs);
+    outputs.clear();
+    outputs.resize(unique.len() * stride, 0.0);
     let mut rest: &mut [f32] = &mut outputs;
     let mut tasks: Vec<(&[u32], std::sync::Mutex<&mut [f32]>)> = Vec::new();
     for group in unique.chunks(VERTICES_PER_TASK) {
@@ -751,9 +753,12 @@ pub(crate) fn draw_probed(
     let parts = workers.map(chunks, 1, |c, _| {
         let first = c * chunk;
         let n = chunk.min(n_prims.saturating_sub(first));
+        let (mut prims, mut attrs) = workers.spare().chunks.pop().unwrap_or_default();
+        prims.reserve(n);
+        attrs.reserve(n * 3 * fs_layout.links.len());
         let mut out = Out {
-            prims: Vec::with_capacity(n),
-            attrs: Vec::with_capacity(n * 3 * fs_layout.links.len()),
+            prims,
+            attrs,
             source: 0,
             chunk: c as u32,
         };
@@ -815,7 +820,12 @@ pub(crate) fn draw_probed(
     if let Some(p) = probe {
         p.set_vertices(&vs_layout, &outputs, &vertex_of);
     }
-    shade_tiles(workers, fb, &stage, &prims)
+    let result = shade_tiles(workers, fb, &stage, &prims);
+    // The draw's big buffers, for the next draws.
+    drop(stage);
+    drop(prims);
+    workers.spare().keep(parts, outputs);
+    result
 }
 
 /// What one tile task produced.
