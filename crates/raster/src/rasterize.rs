@@ -345,7 +345,18 @@ impl Shape {
     /// [`Shape::interp_quad_into`] with the triangle arithmetic compiled
     /// for `isa` (a variant this CPU runs: [`Isa::supported`]); the same
     /// bits whatever the variant.
+    #[cfg(test)]
     pub fn interp_quad_isa(&self, isa: Isa, qx: i64, qy: i64, q: &mut QuadInterp) {
+        self.interp_quad_z(isa, qx, qy, q);
+        self.interp_quad_finish(isa, q);
+    }
+
+    /// The first half of [`Shape::interp_quad_isa`]: `q.z` (what early
+    /// depth rejection needs). For triangles `q.weights` holds the
+    /// barycentrics until [`Shape::interp_quad_finish`] turns them into
+    /// the perspective-correct weights and sets `q.inv_w`; for the other
+    /// shapes everything is done here.
+    pub fn interp_quad_z(&self, isa: Isa, qx: i64, qy: i64, q: &mut QuadInterp) {
         match self {
             Shape::Triangle { p, sign, area2, v } => {
                 let t = (p, *sign, *area2, v);
@@ -369,6 +380,22 @@ impl Shape {
                         q.weights[j][k] = it.weights[j];
                     }
                 }
+            }
+        }
+    }
+
+    /// The second half of [`Shape::interp_quad_isa`] (after
+    /// [`Shape::interp_quad_z`] on the same `q`).
+    pub fn interp_quad_finish(&self, isa: Isa, q: &mut QuadInterp) {
+        if let Shape::Triangle { v, .. } = self {
+            match isa {
+                #[cfg(target_arch = "x86_64")]
+                // SAFETY: as in `interp_quad_z`.
+                Isa::Avx512 => unsafe { triangle_weights_avx512(v, q) },
+                #[cfg(target_arch = "x86_64")]
+                // SAFETY: as above.
+                Isa::Avx2 => unsafe { triangle_weights_avx2(v, q) },
+                _ => triangle_weights(v, q),
             }
         }
     }
@@ -415,9 +442,10 @@ impl Shape {
 type TriangleRef<'a> = (&'a [(i64, i64); 3], i64, i64, &'a [WinVertex; 3]);
 
 /// [`Shape::interp`] of a triangle at the four pixels of the quad at
-/// (qx, qy): the edge values of pixel 0 as [`edge`] computes them, those
-/// of the other pixels one step of an edge's (integer, exact) slope away,
-/// so the same integers; then the same f64 operations per pixel.
+/// (qx, qy), first half: window z, and the barycentrics in `q.weights`.
+/// The edge values of pixel 0 as [`edge`] computes them, those of the
+/// other pixels one step of an edge's (integer, exact) slope away, so the
+/// same integers; then the same f64 operations per pixel.
 #[inline(always)]
 fn triangle_quad((p, sign, area2, v): TriangleRef, qx: i64, qy: i64, q: &mut QuadInterp) {
     let a = area2 as f64;
@@ -436,6 +464,16 @@ fn triangle_quad((p, sign, area2, v): TriangleRef, qx: i64, qy: i64, q: &mut Qua
     let [b0, b1, b2] = b;
     for k in 0..4 {
         q.z[k] = b0[k] * v[0].z + b1[k] * v[1].z + b2[k] * v[2].z;
+    }
+    q.weights = b;
+}
+
+/// Second half: the perspective-correct weights and 1/w from the
+/// barycentrics [`triangle_quad`] left in `q.weights`.
+#[inline(always)]
+fn triangle_weights(v: &[WinVertex; 3], q: &mut QuadInterp) {
+    let [b0, b1, b2] = q.weights;
+    for k in 0..4 {
         let pw = [b0[k] * v[0].inv_w, b1[k] * v[1].inv_w, b2[k] * v[2].inv_w];
         let inv_w = pw[0] + pw[1] + pw[2];
         q.inv_w[k] = inv_w;
@@ -458,6 +496,20 @@ unsafe fn triangle_quad_avx2(t: TriangleRef, qx: i64, qy: i64, q: &mut QuadInter
 #[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
 unsafe fn triangle_quad_avx512(t: TriangleRef, qx: i64, qy: i64, q: &mut QuadInterp) {
     triangle_quad(t, qx, qy, q)
+}
+
+/// [`triangle_weights`] compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn triangle_weights_avx2(v: &[WinVertex; 3], q: &mut QuadInterp) {
+    triangle_weights(v, q)
+}
+
+/// [`triangle_weights`] compiled for AVX-512.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
+unsafe fn triangle_weights_avx512(v: &[WinVertex; 3], q: &mut QuadInterp) {
+    triangle_weights(v, q)
 }
 
 /// The covered quads of a triangle inside `r` (non-empty, within the

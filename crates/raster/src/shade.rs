@@ -65,15 +65,23 @@ impl Quad {
         (self.x + (k as i64 & 1), self.y + (k as i64 >> 1))
     }
 
-    /// Makes this the quad at (qx, qy) of `prim` with coverage `mask`.
+    /// Makes this the quad at (qx, qy) of `prim` with coverage `mask`,
+    /// its window z computed; [`Quad::finish`] completes the
+    /// interpolation.
     fn set(&mut self, isa: Isa, prim: &Prim, qx: i64, qy: i64, mask: u8) {
         self.x = qx;
         self.y = qy;
         self.live = mask;
-        prim.shape.interp_quad_isa(isa, qx, qy, &mut self.it);
+        prim.shape.interp_quad_z(isa, qx, qy, &mut self.it);
         for (z, &iz) in self.z.iter_mut().zip(&self.it.z) {
             *z = clamp01(iz + prim.z_offset);
         }
+    }
+
+    /// The interpolation weights and 1/w after [`Quad::set`] (left out
+    /// for quads that early depth rejection drops entirely).
+    fn finish(&mut self, isa: Isa, prim: &Prim) {
+        prim.shape.interp_quad_finish(isa, &mut self.it);
     }
 }
 
@@ -101,6 +109,13 @@ impl<'p> Entry<'p> {
         self.index = index;
         self.write = write;
         self.quad.set(isa, prim, qx, qy, mask);
+    }
+
+    /// [`Quad::finish`] of this entry's quad.
+    fn finish(&mut self, isa: Isa) {
+        if let Some(prim) = self.prim {
+            self.quad.finish(isa, prim);
+        }
     }
 }
 
@@ -339,6 +354,7 @@ impl<'a> FragmentStage<'a> {
             if e.quad.live == 0 {
                 continue;
             }
+            e.finish(self.isa);
             *n += 1;
             if *n == LANES / 4 {
                 self.flush(fb, origin, prim, slots, batch)?;
@@ -451,6 +467,7 @@ impl<'a> FragmentStage<'a> {
                 if e.quad.live == 0 {
                     continue;
                 }
+                e.finish(self.isa);
                 *n += 1;
                 if *n == LANES / 4 {
                     flush(fb, slots)?;
@@ -494,6 +511,32 @@ impl<'a> FragmentStage<'a> {
     /// Drops the lanes of `quad` that the stencil or depth test will
     /// certainly reject without side effects (no gl_FragDepth write).
     fn early_rejects(&self, fb: &Framebuffer, origin: (u32, u32), prim: &Prim, quad: &mut Quad) {
+        if self.probe.is_none() && (self.state.stencil.is_none() || fb.stencil.is_none()) {
+            // No stencil test: a lane is rejected exactly when it fails
+            // the depth test (`fragment_ops::early_reject` without a
+            // stencil face), and never without one.
+            let (Some(func), Some(depth)) = (self.state.depth_test, fb.depth.as_deref()) else {
+                return;
+            };
+            for k in 0..4usize {
+                let (x, y) = quad.pixel(k);
+                let (lx, ly) = (x - origin.0 as i64, y - origin.1 as i64);
+                if quad.live & (1 << k) == 0
+                    || lx < 0
+                    || ly < 0
+                    || lx >= fb.width as i64
+                    || ly >= fb.height as i64
+                {
+                    continue;
+                }
+                let index = ly as usize * fb.width as usize + lx as usize;
+                let stored = depth.get(index).copied().unwrap_or(0);
+                if !func.test(depth_to_fixed(quad.z[k] as f32), stored) {
+                    quad.live &= !(1 << k);
+                }
+            }
+            return;
+        }
         for k in 0..4usize {
             if quad.live & (1 << k) == 0 {
                 continue;
@@ -886,6 +929,7 @@ impl<'a> FragmentStage<'a> {
             for &quad in quads.iter() {
                 let Some(e) = slots.get_mut(*n) else { break };
                 e.set(self.isa, prim, p, quad, 0);
+                e.finish(self.isa);
                 *n += 1;
                 if *n == LANES / 4 {
                     depth_pass(fb, &mut winner, slots)?;
@@ -968,6 +1012,7 @@ impl<'a> FragmentStage<'a> {
                     let Some(e) = slots.get_mut(*n) else { break };
                     self.prefetch_attrs(prim);
                     e.set(self.isa, prim, p, (qx, qy, live), write);
+                    e.finish(self.isa);
                     *n += 1;
                     if *n == LANES / 4 {
                         color_pass(fb, slots)?;
