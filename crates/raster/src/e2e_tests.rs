@@ -769,7 +769,12 @@ fn many_primitives_give_the_same_bytes_for_any_thread_count() {
 /// pixels of one quad) with derivatives in the shader. With a stencil
 /// test that changes nothing (ALWAYS, KEEP) every primitive is shaded on
 /// its own; without, quads of consecutive primitives share batches.
-fn small_triangles(workers: &crate::Workers, stencil_noop: bool, func: CompareFunc) -> SceneResult {
+fn small_triangles(
+    workers: &crate::Workers,
+    stencil_noop: bool,
+    func: CompareFunc,
+    state_change: impl Fn(&mut PipelineState),
+) -> SceneResult {
     let (vs, fs) = program(
         "attribute vec4 pos; attribute vec4 col; varying vec4 v;\n\
          void main() { gl_Position = pos; v = col; }",
@@ -784,7 +789,7 @@ fn small_triangles(workers: &crate::Workers, stencil_noop: bool, func: CompareFu
         _ => 1.0,
     };
     fb.clear_depth(far, true, None);
-    let state = PipelineState {
+    let mut state = PipelineState {
         viewport: Rect::new(0, 0, w as i32, h as i32),
         depth_test: Some(func),
         blend: Some(Blend {
@@ -795,6 +800,7 @@ fn small_triangles(workers: &crate::Workers, stencil_noop: bool, func: CompareFu
         stencil: stencil_noop.then(StencilState::default),
         ..PipelineState::default()
     };
+    state_change(&mut state);
     let mut seed = 777u32;
     let mut rnd = || {
         seed = seed.wrapping_mul(1103515245).wrapping_add(12345);
@@ -850,12 +856,95 @@ fn primitives_sharing_batches_give_the_same_bytes() {
         CompareFunc::GreaterEqual,
         CompareFunc::Always,
     ] {
-        let want = small_triangles(&crate::Workers::new(1), true, func);
+        let want = small_triangles(&crate::Workers::new(1), true, func, |_| {});
         let distinct: std::collections::BTreeSet<[u8; 4]> = want.0.iter().copied().collect();
         assert!(distinct.len() > 300, "{} colors", distinct.len());
         for threads in [1, 2] {
-            let got = small_triangles(&crate::Workers::new(threads), false, func);
+            let got = small_triangles(&crate::Workers::new(threads), false, func, |_| {});
             assert!(want == got, "{func:?}, {threads} threads");
         }
+    }
+    // Other blends, no blending, no depth writes, the scissor test and a
+    // colour mask (the general colour write), each against one primitive
+    // at a time through the general per-fragment operations.
+    fn blend(src: BlendFactor, dst: BlendFactor) -> Option<Blend> {
+        Some(Blend {
+            src_rgb: src,
+            dst_rgb: dst,
+            src_alpha: src,
+            dst_alpha: dst,
+            ..Blend::default()
+        })
+    }
+    use BlendFactor::*;
+    let changes: [fn(&mut PipelineState); 8] = [
+        |s| s.blend = None,
+        |s| s.blend = blend(One, Zero),
+        |s| s.blend = blend(One, One),
+        |s| s.blend = blend(DstColor, OneMinusSrcColor),
+        |s| s.depth_mask = false,
+        |s| s.scissor = Some(Rect::new(17, 9, 90, 70)),
+        |s| s.color_mask = [true, false, true, true],
+        |s| {
+            s.blend = None;
+            s.depth_test = None;
+        },
+    ];
+    for (i, change) in changes.iter().enumerate() {
+        let want = small_triangles(&crate::Workers::new(1), true, CompareFunc::Less, change);
+        for threads in [1, 2, 4] {
+            let got = small_triangles(
+                &crate::Workers::new(threads),
+                false,
+                CompareFunc::Less,
+                change,
+            );
+            assert!(want == got, "change {i}, {threads} threads");
+        }
+    }
+}
+
+#[test]
+fn instruction_set_variants_give_the_same_bytes() {
+    use crate::simd::{with_isa, Isa};
+    let one = || crate::Workers::new(1);
+    let base = with_isa(Isa::Base, || {
+        (
+            small_triangles(&one(), false, CompareFunc::Less, |_| {}),
+            impostors(&one(), true, true, 200, |_| {}),
+            scene(&one()),
+        )
+    });
+    for isa in Isa::all_supported() {
+        let got = with_isa(isa, || {
+            (
+                small_triangles(&one(), false, CompareFunc::Less, |_| {}),
+                impostors(&one(), true, true, 200, |_| {}),
+                scene(&one()),
+            )
+        });
+        assert!(base.0 == got.0, "small triangles, {isa:?}");
+        assert!(base.1 == got.1, "impostors, {isa:?}");
+        assert!(base.2 == got.2, "scene, {isa:?}");
+    }
+}
+
+#[test]
+fn draws_reusing_an_earlier_draws_buffers_give_the_same_bytes() {
+    for threads in [1, 2] {
+        let workers = crate::Workers::new(threads);
+        let fresh = small_triangles(
+            &crate::Workers::new(threads),
+            false,
+            CompareFunc::Less,
+            |_| {},
+        );
+        // Bigger draws first, then smaller ones, on the same workers.
+        let _ = impostors(&workers, true, true, 1100, |_| {});
+        assert!(workers.spare().chunks.len() >= 2);
+        let again = small_triangles(&workers, false, CompareFunc::Less, |_| {});
+        assert!(fresh == again, "{threads} threads");
+        let small = impostors(&workers, true, true, 60, |_| {});
+        assert!(small == impostors(&crate::Workers::new(1), true, true, 60, |_| {}));
     }
 }

@@ -4,7 +4,9 @@
 
 use crate::framebuffer::{depth_to_fixed, float_to_unorm8, ColorBuffer};
 use crate::framebuffer::{Framebuffer, MAX_DRAW_BUFFERS};
-use crate::state::{Blend, BlendEquation, BlendFactor, PipelineState, StencilFace, StencilOp};
+use crate::state::{
+    Blend, BlendEquation, BlendFactor, CompareFunc, PipelineState, Rect, StencilFace, StencilOp,
+};
 
 /// One shaded fragment ready for the per-fragment operations.
 pub(crate) struct Fragment {
@@ -223,6 +225,210 @@ pub(crate) fn write_colors(
     }
 }
 
+/// The per-fragment operations of the common states, for a batch of
+/// fragments at a time: the tests of [`tests`] when there is no alpha
+/// test and no stencil test (only ownership, scissor and depth), and the
+/// colour write of [`write_colors`] when exactly one draw buffer is
+/// written, it is RGBA8, every channel is written and there is no logic
+/// op. Decided once per tile ([`QuickOps::new`]); each step gives the
+/// bytes of the general function it replaces (the same operations in the
+/// same order, with the state's choices made once instead of per
+/// fragment).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct QuickOps {
+    /// The depth function, when the depth test applies (enabled and a
+    /// depth buffer present).
+    depth: Option<CompareFunc>,
+    depth_write: bool,
+    scissor: Option<Rect>,
+    /// The one colour write, when it qualifies: (colour buffer, fragment
+    /// output, blend).
+    color: Option<(usize, usize, QuickBlend)>,
+}
+
+/// Blending of [`QuickOps`]' colour write.
+#[derive(Clone, Copy, Debug)]
+enum QuickBlend {
+    /// No blending, or ONE / ZERO with FUNC_ADD (which gives the source).
+    Off,
+    /// SRC_ALPHA / ONE_MINUS_SRC_ALPHA with FUNC_ADD for colour and alpha.
+    Over,
+    /// Any other blend state, through [`blend_unit`].
+    Other(Blend),
+}
+
+impl QuickOps {
+    /// The quick operations for `state` on `fb` (a tile or the whole
+    /// framebuffer), where `colors` lists the (draw buffer, fragment
+    /// output) pairs the fragments carry. `None` when the tests do not
+    /// qualify (alpha or stencil test).
+    pub fn new(
+        fb: &Framebuffer,
+        state: &PipelineState,
+        colors: &[(usize, usize)],
+    ) -> Option<QuickOps> {
+        if state.alpha_test.is_some() || (state.stencil.is_some() && fb.stencil.is_some()) {
+            return None;
+        }
+        let depth = state.depth_test.filter(|_| fb.depth.is_some());
+        let mut targets = state
+            .draw_buffers
+            .iter()
+            .enumerate()
+            .filter_map(|(i, t)| Some((i, (*t)?)));
+        let color = match (targets.next(), targets.next()) {
+            (Some((output, target)), None)
+                if state.logic_op.is_none()
+                    && state.color_mask == [true; 4]
+                    && matches!(fb.color.get(target), Some(ColorBuffer::Rgba8(_))) =>
+            {
+                // The fragment carries this output (else it writes zeros:
+                // the general path).
+                colors
+                    .iter()
+                    .find(|&&(i, _)| i == output)
+                    .map(|&(_, offset)| {
+                        let blend = match &state.blend {
+                            None => QuickBlend::Off,
+                            Some(b) => {
+                                use BlendFactor::{One, OneMinusSrcAlpha, SrcAlpha, Zero};
+                                let add = b.equation_rgb == BlendEquation::Add
+                                    && b.equation_alpha == BlendEquation::Add
+                                    && b.src_rgb == b.src_alpha
+                                    && b.dst_rgb == b.dst_alpha;
+                                match (b.src_rgb, b.dst_rgb) {
+                                    (One, Zero) if add => QuickBlend::Off,
+                                    (SrcAlpha, OneMinusSrcAlpha) if add => QuickBlend::Over,
+                                    _ => QuickBlend::Other(*b),
+                                }
+                            }
+                        };
+                        (target, offset, blend)
+                    })
+            }
+            _ => None,
+        };
+        Some(QuickOps {
+            depth,
+            depth_write: state.depth_mask,
+            scissor: state.scissor,
+            color,
+        })
+    }
+
+    /// The fragment output written by [`QuickTarget::write`], when the
+    /// colour write qualifies.
+    pub fn color_output(&self) -> Option<usize> {
+        self.color.map(|c| c.1)
+    }
+
+    /// The buffers of `fb` these operations touch, borrowed for a run of
+    /// fragments (whose window coordinates start at `origin` in `fb`).
+    pub fn target<'f>(&self, fb: &'f mut Framebuffer, origin: (u32, u32)) -> QuickTarget<'f> {
+        let (width, height) = (fb.width, fb.height);
+        let color = match self.color {
+            Some((target, _, blend)) => match fb.color.get_mut(target) {
+                Some(ColorBuffer::Rgba8(v)) => Some((&mut v[..], blend)),
+                _ => None,
+            },
+            None => None,
+        };
+        let depth = match (self.depth, fb.depth.as_deref_mut()) {
+            (Some(func), Some(d)) => Some((func, d)),
+            _ => None,
+        };
+        QuickTarget {
+            origin,
+            width,
+            height,
+            scissor: self.scissor,
+            depth,
+            depth_write: self.depth_write,
+            color,
+            passed: &mut fb.samples_passed,
+        }
+    }
+}
+
+/// [`QuickOps`] over the buffers of one framebuffer (see
+/// [`QuickOps::target`]).
+pub(crate) struct QuickTarget<'f> {
+    origin: (u32, u32),
+    width: u32,
+    height: u32,
+    scissor: Option<Rect>,
+    depth: Option<(CompareFunc, &'f mut [u32])>,
+    depth_write: bool,
+    color: Option<(&'f mut [[u8; 4]], QuickBlend)>,
+    passed: &'f mut u64,
+}
+
+impl QuickTarget<'_> {
+    /// [`tests`] for a fragment at window (x, y) with window z `z`
+    /// (clamped to [0, 1]), under the qualifying state: the pixel index
+    /// when it passes (the depth written, the fragment counted).
+    #[inline(always)]
+    pub fn test(&mut self, x: u32, y: u32, z: f32) -> Option<usize> {
+        let lx = x.checked_sub(self.origin.0)?;
+        let ly = y.checked_sub(self.origin.1)?;
+        if lx >= self.width || ly >= self.height {
+            return None;
+        }
+        if let Some(sc) = self.scissor {
+            let (x, y) = (x as i64, y as i64);
+            if x < sc.x as i64
+                || y < sc.y as i64
+                || x >= sc.x as i64 + sc.w as i64
+                || y >= sc.y as i64 + sc.h as i64
+            {
+                return None;
+            }
+        }
+        let index = ly as usize * self.width as usize + lx as usize;
+        if let Some((func, d)) = &mut self.depth {
+            if let Some(stored) = d.get_mut(index) {
+                let zf = depth_to_fixed(z);
+                if !func.test(zf, *stored) {
+                    return None;
+                }
+                if self.depth_write {
+                    *stored = zf;
+                }
+            }
+        }
+        *self.passed = self.passed.wrapping_add(1);
+        Some(index)
+    }
+
+    /// [`write_colors`] of colour `src` (the qualifying output) to pixel
+    /// `index`; nothing when the colour write does not qualify.
+    #[inline(always)]
+    pub fn write(&mut self, index: usize, src: [f32; 4]) {
+        let Some((v, blend)) = &mut self.color else {
+            return;
+        };
+        let Some(p) = v.get_mut(index) else { return };
+        let s = src.map(clamp01);
+        *p = match blend {
+            QuickBlend::Off => to_unorm8(s),
+            QuickBlend::Over => {
+                let d = p.map(|b| b as f32 / 255.0);
+                let (fs, fd) = (s[3], 1.0 - s[3]);
+                to_unorm8([
+                    s[0] * fs + d[0] * fd,
+                    s[1] * fs + d[1] * fd,
+                    s[2] * fs + d[2] * fd,
+                    s[3] * fs + d[3] * fd,
+                ])
+            }
+            QuickBlend::Other(b) => {
+                let d = p.map(|b| b as f32 / 255.0);
+                to_unorm8(blend_unit(b, s, d))
+            }
+        };
+    }
+}
+
 /// True when the outcome of a fragment's per-fragment operations does
 /// not depend on its colors and what it writes replaces the pixel's
 /// color entirely: no alpha test, no blending, no logic op, and no
@@ -305,7 +511,13 @@ fn write_color(buf: &mut ColorBuffer, index: usize, state: &PipelineState, src: 
 // Not `clamp`: NaN must become 0 (`max` drops it; `clamp` keeps it).
 #[allow(clippy::manual_clamp)]
 fn to_unorm8(c: [f32; 4]) -> [u8; 4] {
-    c.map(|x| (x.max(0.0).min(1.0) * 255.0 + 0.5) as i32 as u8)
+    c.map(|x| {
+        let y = x.max(0.0).min(1.0) * 255.0 + 0.5;
+        // SAFETY: `max` turns NaN into 0, so `y` is finite and in
+        // [0.5, 255.5]: representable in i32 (truncation, as `as i32`
+        // would give, without its saturation checks).
+        unsafe { y.to_int_unchecked::<i32>() as u8 }
+    })
 }
 
 /// [`blend_color`] for `s` and `d` in [0, 1] (a fixed-point buffer's
@@ -543,6 +755,111 @@ mod tests {
                 assert_eq!(fast, general, "{src:?}/{dst:?} {s:?} {d:?}");
             }
         }
+    }
+
+    #[test]
+    fn quick_ops_match_the_general_ones() {
+        use crate::state::Rect;
+        use BlendFactor::*;
+        let mut seed = 4321u32;
+        let mut next = move || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed >> 8
+        };
+        let blends = [
+            None,
+            Some((SrcAlpha, OneMinusSrcAlpha)),
+            Some((One, Zero)),
+            Some((One, One)),
+            Some((DstColor, SrcColor)),
+        ];
+        let funcs = [
+            None,
+            Some(CompareFunc::Less),
+            Some(CompareFunc::LessEqual),
+            Some(CompareFunc::GreaterEqual),
+            Some(CompareFunc::Equal),
+        ];
+        let mut checked = 0;
+        for (i, blend) in blends.into_iter().enumerate() {
+            for (j, depth_test) in funcs.into_iter().enumerate() {
+                let state = PipelineState {
+                    depth_test,
+                    depth_mask: (i + j) % 3 != 0,
+                    scissor: ((i + j) % 2 == 0).then(|| Rect::new(3, 2, 9, 7)),
+                    blend: blend.map(|(src, dst)| Blend {
+                        src_rgb: src,
+                        dst_rgb: dst,
+                        src_alpha: src,
+                        dst_alpha: dst,
+                        ..Blend::default()
+                    }),
+                    ..PipelineState::default()
+                };
+                let origin = (4, 2);
+                let mut general = Framebuffer::new(12, 10, ColorFormat::Rgba8, true, false);
+                general.clear_color(&[0], [0.2, 0.4, 0.6, 0.8], [true; 4], None);
+                general.clear_depth(0.5, true, None);
+                let mut quick = general.clone();
+                let ops = QuickOps::new(&quick, &state, &[(0, 0)]).expect("qualifies");
+                assert_eq!(ops.color_output(), Some(0));
+                for _ in 0..3000 {
+                    let f = Fragment {
+                        x: next() % 18,
+                        y: next() % 14,
+                        z: [0.25, 0.5, 0.75, next() as f32 / 16_777_216.0][next() as usize % 4],
+                        back_facing: false,
+                        colors: [[0; 4].map(|_| next() as f32 / 16_777_216.0 * 1.4 - 0.2);
+                            MAX_DRAW_BUFFERS],
+                    };
+                    let want = tests(&mut general, origin, &state, &f);
+                    if let Some(index) = want {
+                        write_colors(&mut general, index, &state, &f.colors);
+                    }
+                    let mut t = ops.target(&mut quick, origin);
+                    let got = t.test(f.x, f.y, f.z);
+                    if let Some(index) = got {
+                        t.write(index, f.colors[0]);
+                    }
+                    assert_eq!(want, got);
+                    checked += usize::from(got.is_some());
+                }
+                assert!(general == quick, "{blend:?} {depth_test:?}");
+            }
+        }
+        assert!(checked > 5000);
+        // States the quick operations leave to the general ones.
+        let fb = Framebuffer::new(4, 4, ColorFormat::Rgba8, true, true);
+        let alpha = PipelineState {
+            alpha_test: Some((CompareFunc::Greater, 0.5)),
+            ..PipelineState::default()
+        };
+        assert!(QuickOps::new(&fb, &alpha, &[(0, 0)]).is_none());
+        let stencil = PipelineState {
+            stencil: Some(StencilState::default()),
+            ..PipelineState::default()
+        };
+        assert!(QuickOps::new(&fb, &stencil, &[(0, 0)]).is_none());
+        let no_color = [
+            PipelineState {
+                color_mask: [true, true, false, true],
+                ..PipelineState::default()
+            },
+            PipelineState {
+                logic_op: Some(LogicOp::Xor),
+                ..PipelineState::default()
+            },
+        ];
+        for state in no_color {
+            let ops = QuickOps::new(&fb, &state, &[(0, 0)]).expect("tests qualify");
+            assert_eq!(ops.color_output(), None);
+        }
+        // The output is not carried (written as zeros): the general path.
+        let ops = QuickOps::new(&fb, &PipelineState::default(), &[]).expect("tests qualify");
+        assert_eq!(ops.color_output(), None);
+        let float = Framebuffer::new(4, 4, ColorFormat::Rgba32F, true, false);
+        let ops = QuickOps::new(&float, &PipelineState::default(), &[(0, 0)]).expect("tests");
+        assert_eq!(ops.color_output(), None);
     }
 
     #[test]

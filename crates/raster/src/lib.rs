@@ -39,16 +39,32 @@
 //! Per draw, not per batch or primitive: the uniform-only values of both
 //! stages (`ShaderStage::prepare`, `exec::Kernel::prepare`), the vertex
 //! input layout, which fragment inputs the shader reads (unread varyings
-//! are left zero) and which colour outputs go to draw buffers. Set-up
+//! are left zero; the depth-only pass fills those its slice's interface
+//! marks read) and which colour outputs go to draw buffers. Set-up
 //! allocates nothing per primitive: varyings go to one array per set-up
-//! chunk, triangles and quads inside every clip plane skip the clipper.
+//! chunk (used where they are), triangles and quads inside every clip
+//! plane skip the clipper. The set-up chunks' arrays and the vertex
+//! outputs are kept by the [`Workers`] for its next draws (up to 256 MiB),
+//! so a steady stream of draws does not pay page faults on fresh memory.
 //! Triangle coverage steps integer edge forms (exactly the edge function
 //! values, four pixels and three edges per 2×2 quad, a row ending at the
 //! first quad an edge rules out for the rest of the row) into a buffer
 //! reused per tile; interpolation is computed per quad with the same f64
-//! operations per pixel as before, laid out per vertex so that filling a
-//! batch's varyings is straight vector code; a batch's quads are built in
-//! place in four per-tile slots.
+//! operations per pixel as before (window z first, the perspective
+//! weights only for quads early depth rejection keeps), laid out per
+//! vertex so that filling a batch's varyings is straight vector code; a
+//! batch's quads are built in place in four per-tile slots, and the next
+//! primitive's varyings are prefetched while one is rasterized.
+//!
+//! Filling a batch's inputs and a quad's interpolation are compiled for
+//! the baseline target, AVX2 and AVX-512 and picked at run time (the best
+//! the CPU has; `SHADERBOX_RASTER_ISA=base|avx2|avx512` to choose); they
+//! use plain IEEE operations, so every variant gives the same bits (tests
+//! compare them). With no alpha or stencil test, the per-fragment tests
+//! run with the state's choices made once per tile, and with one RGBA8
+//! draw buffer written on every channel and no logic op so does the
+//! colour write (blending included); other states go through the general
+//! per-fragment functions. Both give the same bytes (tests compare them).
 //!
 //! # Colors for visible fragments only
 //! When the fragment stage writes `gl_FragDepth` (so early depth testing
@@ -112,6 +128,7 @@ mod pixel_fragments;
 mod probe;
 mod rasterize;
 mod shade;
+mod simd;
 mod state;
 mod texture;
 mod texture_2d;
@@ -152,7 +169,10 @@ pub enum DrawError {
 
 /// A shader stage the pipeline can run: `exec::Kernel`, or anything else
 /// with the same interface (tests use hand-written stages). Stages run on
-/// several threads at once when the draw does.
+/// several threads at once when the draw does. A stage reads the batch's
+/// inputs and writes its outputs and `discarded`, never its inputs (the
+/// fragment stage keeps inputs that no stage of the draw reads zero from
+/// one batch to the next instead of clearing them).
 pub trait ShaderStage: Sync {
     fn interface(&self) -> &ex::Interface;
     fn run(

@@ -224,7 +224,9 @@ fn run_vertices(
     };
     // Each task runs its vertices' batches with one batch and writes their
     // outputs straight into its own part of the draw's output array.
-    let mut outputs = vec![0.0f32; unique.len() * stride];
+    let mut outputs = std::mem::take(&mut workers.spare().outputs);
+    outputs.clear();
+    outputs.resize(unique.len() * stride, 0.0);
     let mut rest: &mut [f32] = &mut outputs;
     let mut tasks: Vec<(&[u32], std::sync::Mutex<&mut [f32]>)> = Vec::new();
     for group in unique.chunks(VERTICES_PER_TASK) {
@@ -376,6 +378,8 @@ struct Out {
     prims: Vec<Prim>,
     attrs: Vec<f32>,
     source: u32,
+    /// The set-up chunk (its index in the draw's chunks).
+    chunk: u32,
 }
 
 const NO_WIN: WinVertex = WinVertex {
@@ -469,6 +473,7 @@ impl Setup<'_> {
             back,
             z_offset,
             attrs,
+            chunk: out.chunk,
             source: out.source,
         });
     }
@@ -748,10 +753,14 @@ pub(crate) fn draw_probed(
     let parts = workers.map(chunks, 1, |c, _| {
         let first = c * chunk;
         let n = chunk.min(n_prims.saturating_sub(first));
+        let (mut prims, mut attrs) = workers.spare().chunks.pop().unwrap_or_default();
+        prims.reserve(n);
+        attrs.reserve(n * 3 * fs_layout.links.len());
         let mut out = Out {
-            prims: Vec::with_capacity(n),
-            attrs: Vec::with_capacity(n * 3 * fs_layout.links.len()),
+            prims,
+            attrs,
             source: 0,
+            chunk: c as u32,
         };
         let v = |i: usize| vertex_of.get(i).copied().unwrap_or(0);
         for k in c * chunk..((c + 1) * chunk).min(n_prims) {
@@ -784,17 +793,9 @@ pub(crate) fn draw_probed(
         }
         (out.prims, out.attrs)
     });
-    // The chunks' primitives in order (referenced where they are, not
-    // moved), each chunk's varyings moved behind the previous chunks'.
-    let mut parts = parts;
-    let mut attrs: Vec<f32> = Vec::with_capacity(parts.iter().map(|p| p.1.len()).sum());
-    for (chunk_prims, chunk_attrs) in parts.iter_mut() {
-        let base = attrs.len();
-        for p in chunk_prims.iter_mut() {
-            p.attrs += base;
-        }
-        attrs.extend_from_slice(chunk_attrs);
-    }
+    // The chunks' primitives in order and their varyings, referenced
+    // where they are (not moved).
+    let attrs: Vec<&[f32]> = parts.iter().map(|p| &p.1[..]).collect();
     let prims: Vec<&Prim> = parts.iter().flat_map(|p| p.0.iter()).collect();
 
     // The probe replays every fragment: never deferred.
@@ -812,14 +813,19 @@ pub(crate) fn draw_probed(
         textures,
         &fs_layout,
         state,
-        &attrs,
+        attrs,
         deferred,
         probe,
     );
     if let Some(p) = probe {
         p.set_vertices(&vs_layout, &outputs, &vertex_of);
     }
-    shade_tiles(workers, fb, &stage, &prims)
+    let result = shade_tiles(workers, fb, &stage, &prims);
+    // The draw's big buffers, for the next draws.
+    drop(stage);
+    drop(prims);
+    workers.spare().keep(parts, outputs);
+    result
 }
 
 /// What one tile task produced.

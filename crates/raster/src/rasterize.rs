@@ -21,6 +21,8 @@
 //! are linear in window space. Pixels outside the primitive (quad helpers)
 //! get the extrapolated values.
 
+use crate::simd::Isa;
+
 /// Bits of subpixel precision of triangle vertices.
 pub const SUBPIXEL_BITS: u32 = 8;
 const ONE: i64 = 1 << SUBPIXEL_BITS;
@@ -335,29 +337,38 @@ impl Shape {
 
     /// [`Shape::interp_quad`] written into `q` (in place: a batch's quads
     /// are built where they stay).
+    #[cfg(test)]
     pub fn interp_quad_into(&self, qx: i64, qy: i64, q: &mut QuadInterp) {
+        self.interp_quad_isa(Isa::Base, qx, qy, q)
+    }
+
+    /// [`Shape::interp_quad_into`] with the triangle arithmetic compiled
+    /// for `isa` (a variant this CPU runs: [`Isa::supported`]); the same
+    /// bits whatever the variant.
+    #[cfg(test)]
+    pub fn interp_quad_isa(&self, isa: Isa, qx: i64, qy: i64, q: &mut QuadInterp) {
+        self.interp_quad_z(isa, qx, qy, q);
+        self.interp_quad_finish(isa, q);
+    }
+
+    /// The first half of [`Shape::interp_quad_isa`]: `q.z` (what early
+    /// depth rejection needs). For triangles `q.weights` holds the
+    /// barycentrics until [`Shape::interp_quad_finish`] turns them into
+    /// the perspective-correct weights and sets `q.inv_w`; for the other
+    /// shapes everything is done here.
+    pub fn interp_quad_z(&self, isa: Isa, qx: i64, qy: i64, q: &mut QuadInterp) {
         match self {
             Shape::Triangle { p, sign, area2, v } => {
-                let a = *area2 as f64;
-                let mut b = [[0.0f64; 4]; 3];
-                for k in 0..4 {
-                    let (cx, cy) = (
-                        (qx + (k as i64 & 1)) * ONE + HALF,
-                        (qy + (k as i64 >> 1)) * ONE + HALF,
-                    );
-                    for (j, bj) in b.iter_mut().enumerate() {
-                        bj[k] = (sign * edge(p, j, cx, cy)) as f64 / a;
-                    }
-                }
-                let [b0, b1, b2] = b;
-                for k in 0..4 {
-                    q.z[k] = b0[k] * v[0].z + b1[k] * v[1].z + b2[k] * v[2].z;
-                    let pw = [b0[k] * v[0].inv_w, b1[k] * v[1].inv_w, b2[k] * v[2].inv_w];
-                    let inv_w = pw[0] + pw[1] + pw[2];
-                    q.inv_w[k] = inv_w;
-                    for (wj, pwj) in q.weights.iter_mut().zip(pw) {
-                        wj[k] = pwj / inv_w;
-                    }
+                let t = (p, *sign, *area2, v);
+                match isa {
+                    #[cfg(target_arch = "x86_64")]
+                    // SAFETY: the caller passes a variant the CPU runs
+                    // (`simd::detect` or `Isa::supported`).
+                    Isa::Avx512 => unsafe { triangle_quad_avx512(t, qx, qy, q) },
+                    #[cfg(target_arch = "x86_64")]
+                    // SAFETY: as above.
+                    Isa::Avx2 => unsafe { triangle_quad_avx2(t, qx, qy, q) },
+                    _ => triangle_quad(t, qx, qy, q),
                 }
             }
             _ => {
@@ -369,6 +380,22 @@ impl Shape {
                         q.weights[j][k] = it.weights[j];
                     }
                 }
+            }
+        }
+    }
+
+    /// The second half of [`Shape::interp_quad_isa`] (after
+    /// [`Shape::interp_quad_z`] on the same `q`).
+    pub fn interp_quad_finish(&self, isa: Isa, q: &mut QuadInterp) {
+        if let Shape::Triangle { v, .. } = self {
+            match isa {
+                #[cfg(target_arch = "x86_64")]
+                // SAFETY: as in `interp_quad_z`.
+                Isa::Avx512 => unsafe { triangle_weights_avx512(v, q) },
+                #[cfg(target_arch = "x86_64")]
+                // SAFETY: as above.
+                Isa::Avx2 => unsafe { triangle_weights_avx2(v, q) },
+                _ => triangle_weights(v, q),
             }
         }
     }
@@ -409,6 +436,80 @@ impl Shape {
             _ => 0.0,
         }
     }
+}
+
+/// A triangle's points, orientation, doubled area and vertices.
+type TriangleRef<'a> = (&'a [(i64, i64); 3], i64, i64, &'a [WinVertex; 3]);
+
+/// [`Shape::interp`] of a triangle at the four pixels of the quad at
+/// (qx, qy), first half: window z, and the barycentrics in `q.weights`.
+/// The edge values of pixel 0 as [`edge`] computes them, those of the
+/// other pixels one step of an edge's (integer, exact) slope away, so the
+/// same integers; then the same f64 operations per pixel.
+#[inline(always)]
+fn triangle_quad((p, sign, area2, v): TriangleRef, qx: i64, qy: i64, q: &mut QuadInterp) {
+    let a = area2 as f64;
+    let (cx, cy) = (qx * ONE + HALF, qy * ONE + HALF);
+    let mut b = [[0.0f64; 4]; 3];
+    for (j, bj) in b.iter_mut().enumerate() {
+        let (pa, pb) = (p[(j + 1) % 3], p[(j + 2) % 3]);
+        let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
+        let e0 = ex * (cy - pa.1) - ey * (cx - pa.0);
+        let (dx, dy) = (-ey * ONE, ex * ONE);
+        let e = [e0, e0 + dx, e0 + dy, e0 + dx + dy];
+        for k in 0..4 {
+            bj[k] = (sign * e[k]) as f64 / a;
+        }
+    }
+    let [b0, b1, b2] = b;
+    for k in 0..4 {
+        q.z[k] = b0[k] * v[0].z + b1[k] * v[1].z + b2[k] * v[2].z;
+    }
+    q.weights = b;
+}
+
+/// Second half: the perspective-correct weights and 1/w from the
+/// barycentrics [`triangle_quad`] left in `q.weights`.
+#[inline(always)]
+fn triangle_weights(v: &[WinVertex; 3], q: &mut QuadInterp) {
+    let [b0, b1, b2] = q.weights;
+    for k in 0..4 {
+        let pw = [b0[k] * v[0].inv_w, b1[k] * v[1].inv_w, b2[k] * v[2].inv_w];
+        let inv_w = pw[0] + pw[1] + pw[2];
+        q.inv_w[k] = inv_w;
+        for (wj, pwj) in q.weights.iter_mut().zip(pw) {
+            wj[k] = pwj / inv_w;
+        }
+    }
+}
+
+/// [`triangle_quad`] compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn triangle_quad_avx2(t: TriangleRef, qx: i64, qy: i64, q: &mut QuadInterp) {
+    triangle_quad(t, qx, qy, q)
+}
+
+/// [`triangle_quad`] compiled for AVX-512 (64-bit integer products and
+/// conversions to f64 in vector registers).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
+unsafe fn triangle_quad_avx512(t: TriangleRef, qx: i64, qy: i64, q: &mut QuadInterp) {
+    triangle_quad(t, qx, qy, q)
+}
+
+/// [`triangle_weights`] compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn triangle_weights_avx2(v: &[WinVertex; 3], q: &mut QuadInterp) {
+    triangle_weights(v, q)
+}
+
+/// [`triangle_weights`] compiled for AVX-512.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
+unsafe fn triangle_weights_avx512(v: &[WinVertex; 3], q: &mut QuadInterp) {
+    triangle_weights(v, q)
 }
 
 /// The covered quads of a triangle inside `r` (non-empty, within the
@@ -688,6 +789,11 @@ mod tests {
         for s in &shapes {
             for (qx, qy) in [(0, 0), (2, 4), (6, 2), (-2, 8)] {
                 let q = s.interp_quad(qx, qy);
+                for isa in Isa::all_supported() {
+                    let mut other = QuadInterp::default();
+                    s.interp_quad_isa(isa, qx, qy, &mut other);
+                    assert_eq!(format!("{q:?}"), format!("{other:?}"), "{isa:?}");
+                }
                 for k in 0..4 {
                     let it = s.interp(qx + (k as i64 & 1), qy + (k as i64 >> 1));
                     assert_eq!(q.z[k].to_bits(), it.z.to_bits());
@@ -698,6 +804,52 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn quad_interpolation_variants_give_the_same_bits() {
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % 1_000_000) as f64 / 1_000_000.0
+        };
+        let mut checked = 0;
+        for i in 0..3000 {
+            let range = [4.0, 60.0, 3000.0][i % 3];
+            let v = [0; 3].map(|_| WinVertex {
+                x: next() * range - 5.0,
+                y: next() * range - 5.0,
+                z: next(),
+                inv_w: 0.01 + next() * 2.0,
+            });
+            let Some(t) = Shape::triangle(v) else {
+                continue;
+            };
+            let (qx, qy) = ((next() * range) as i64 & !1, (next() * range) as i64 & !1);
+            let bits = |q: &QuadInterp| {
+                let mut out: Vec<u64> = q.z.iter().chain(&q.inv_w).map(|x| x.to_bits()).collect();
+                out.extend(q.weights.iter().flatten().map(|x| x.to_bits()));
+                out
+            };
+            let mut want = QuadInterp::default();
+            for k in 0..4 {
+                let it = t.interp(qx + (k as i64 & 1), qy + (k as i64 >> 1));
+                want.z[k] = it.z;
+                want.inv_w[k] = it.inv_w;
+                for j in 0..3 {
+                    want.weights[j][k] = it.weights[j];
+                }
+            }
+            for isa in Isa::all_supported() {
+                let mut got = QuadInterp::default();
+                t.interp_quad_isa(isa, qx, qy, &mut got);
+                assert_eq!(bits(&want), bits(&got), "{isa:?} {v:?} at {qx},{qy}");
+            }
+            checked += 1;
+        }
+        assert!(checked > 2500);
     }
 
     #[test]

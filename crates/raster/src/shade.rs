@@ -3,10 +3,11 @@
 //! per-fragment operations in order.
 
 use crate::ex::{Batch, ExecError, Textures, LANES};
-use crate::fragment_ops::{self, Fragment};
+use crate::fragment_ops::{self, Fragment, QuickOps};
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
 use crate::linkage::FsLayout;
 use crate::rasterize::{PixelRect, QuadInterp, Shape};
+use crate::simd::Isa;
 use crate::state::PipelineState;
 use crate::ShaderStage;
 
@@ -18,9 +19,11 @@ pub(crate) struct Prim {
     pub back: bool,
     /// Polygon offset added to window z.
     pub z_offset: f64,
-    /// Where the fragment varyings start in the draw's varying array
-    /// ([`FragmentStage::attrs`]): `links` values per vertex.
+    /// Where the fragment varyings start in the varying array of the
+    /// primitive's set-up chunk (`chunk`, an index into
+    /// [`FragmentStage::attrs`]): `links` values per vertex.
     pub attrs: usize,
+    pub chunk: u32,
     /// Index of the assembled primitive this one came from (clipping may
     /// split one into several), for the debugger.
     pub source: u32,
@@ -62,15 +65,23 @@ impl Quad {
         (self.x + (k as i64 & 1), self.y + (k as i64 >> 1))
     }
 
-    /// Makes this the quad at (qx, qy) of `prim` with coverage `mask`.
-    fn set(&mut self, prim: &Prim, qx: i64, qy: i64, mask: u8) {
+    /// Makes this the quad at (qx, qy) of `prim` with coverage `mask`,
+    /// its window z computed; [`Quad::finish`] completes the
+    /// interpolation.
+    fn set(&mut self, isa: Isa, prim: &Prim, qx: i64, qy: i64, mask: u8) {
         self.x = qx;
         self.y = qy;
         self.live = mask;
-        prim.shape.interp_quad_into(qx, qy, &mut self.it);
+        prim.shape.interp_quad_z(isa, qx, qy, &mut self.it);
         for (z, &iz) in self.z.iter_mut().zip(&self.it.z) {
             *z = clamp01(iz + prim.z_offset);
         }
+    }
+
+    /// The interpolation weights and 1/w after [`Quad::set`] (left out
+    /// for quads that early depth rejection drops entirely).
+    fn finish(&mut self, isa: Isa, prim: &Prim) {
+        prim.shape.interp_quad_finish(isa, &mut self.it);
     }
 }
 
@@ -86,11 +97,25 @@ pub(crate) struct Entry<'p> {
 
 impl<'p> Entry<'p> {
     /// Makes this the quad at (qx, qy) of primitive `index`, `prim`.
-    fn set(&mut self, prim: &'p Prim, index: u32, (qx, qy, mask): (i64, i64, u8), write: u8) {
+    fn set(
+        &mut self,
+        isa: Isa,
+        prim: &'p Prim,
+        index: u32,
+        (qx, qy, mask): (i64, i64, u8),
+        write: u8,
+    ) {
         self.prim = Some(prim);
         self.index = index;
         self.write = write;
-        self.quad.set(prim, qx, qy, mask);
+        self.quad.set(isa, prim, qx, qy, mask);
+    }
+
+    /// [`Quad::finish`] of this entry's quad.
+    fn finish(&mut self, isa: Isa) {
+        if let Some(prim) = self.prim {
+            self.quad.finish(isa, prim);
+        }
     }
 }
 
@@ -113,6 +138,27 @@ fn quads_mask(quads: usize) -> u32 {
     }
 }
 
+/// How [`FragmentStage::fill`] writes one varying component.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum FillKind {
+    /// Interpolated (vertex 0's value for points).
+    Interp,
+    /// Flat-shaded: vertex 0's value.
+    Constant,
+    /// Replaced by component `c` of (gl_PointCoord, 0, 1) on point
+    /// sprites (GL_COORD_REPLACE).
+    Replace(usize),
+}
+
+/// One varying component [`FragmentStage::fill`] writes: link `li` to
+/// input component `offset`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FillLink {
+    li: usize,
+    offset: usize,
+    kind: FillKind,
+}
+
 /// No primitive (in the per-pixel winner table of a deferred tile).
 const NO_PRIM: u32 = u32::MAX;
 
@@ -122,17 +168,17 @@ pub(crate) struct FragmentStage<'a> {
     pub textures: &'a (dyn Textures + Sync),
     pub layout: &'a FsLayout,
     pub state: &'a PipelineState,
-    /// The fragment varyings of every primitive ([`Prim::attrs`]).
-    pub attrs: &'a [f32],
-    /// Per link: flat-shaded (the value of vertex 0 is used as is).
-    pub constant: Vec<bool>,
-    /// Per link: the shader reads the input (unread inputs stay zero;
+    /// The fragment varyings of every primitive, per set-up chunk
+    /// ([`Prim::attrs`]).
+    pub attrs: Vec<&'a [f32]>,
+    /// The varying components the shader reads (unread inputs stay zero;
     /// every link counts as read under the debugger's probe, which shows
-    /// inputs).
-    pub read: Vec<bool>,
-    /// Per link: the gl_PointCoord component replacing it on point
-    /// sprites (GL_COORD_REPLACE), if any.
-    pub replace: Vec<Option<usize>>,
+    /// inputs), in link order.
+    fills: Vec<FillLink>,
+    /// Those the depth-only slice reads (its interface's inputs).
+    depth_fills: Vec<FillLink>,
+    /// The instruction set of the hot loops.
+    isa: Isa,
     /// (draw buffer, output offset) of each colour the fragment carries.
     pub colors_out: Vec<(usize, usize)>,
     /// Depth/stencil-test before shading (no gl_FragDepth write).
@@ -157,16 +203,45 @@ impl<'a> FragmentStage<'a> {
         textures: &'a (dyn Textures + Sync),
         layout: &'a FsLayout,
         state: &'a PipelineState,
-        attrs: &'a [f32],
+        attrs: Vec<&'a [f32]>,
         deferred: Option<Box<dyn ShaderStage>>,
         probe: Option<&'a crate::probe::Probe>,
     ) -> FragmentStage<'a> {
-        let inputs = &shader.interface().inputs;
-        let read_at = |offset: usize| {
+        let read_by = |stage: &dyn ShaderStage, offset: usize| {
             probe.is_some()
-                || inputs
+                || stage
+                    .interface()
+                    .inputs
                     .iter()
                     .any(|s| s.written && (s.offset..s.offset + s.components).contains(&offset))
+        };
+        let plan = |stage: &dyn ShaderStage| -> Vec<FillLink> {
+            layout
+                .links
+                .iter()
+                .enumerate()
+                .filter(|&(_, l)| l.fs_offset < layout.inputs && read_by(stage, l.fs_offset))
+                .map(|(li, l)| FillLink {
+                    li,
+                    offset: l.fs_offset,
+                    kind: match l.texcoord {
+                        Some((set, c)) if set < 32 && state.coord_replace & (1 << set) != 0 => {
+                            FillKind::Replace(c.min(3))
+                        }
+                        _ if l.color && state.flat_shading => FillKind::Constant,
+                        _ => FillKind::Interp,
+                    },
+                })
+                .collect()
+        };
+        let fills = plan(shader);
+        let depth_fills = match &deferred {
+            // Only what both read (the slice reads a subset of the inputs).
+            Some(d) => plan(d.as_ref())
+                .into_iter()
+                .filter(|f| fills.iter().any(|g| g.offset == f.offset))
+                .collect(),
+            None => Vec::new(),
         };
         FragmentStage {
             shader,
@@ -175,22 +250,9 @@ impl<'a> FragmentStage<'a> {
             layout,
             state,
             attrs,
-            constant: layout
-                .links
-                .iter()
-                .map(|l| l.color && state.flat_shading)
-                .collect(),
-            read: layout.links.iter().map(|l| read_at(l.fs_offset)).collect(),
-            replace: layout
-                .links
-                .iter()
-                .map(|l| match l.texcoord {
-                    Some((set, c)) if set < 32 && state.coord_replace & (1 << set) != 0 => {
-                        Some(c.min(3))
-                    }
-                    _ => None,
-                })
-                .collect(),
+            fills,
+            depth_fills,
+            isa: crate::simd::detect(),
             colors_out: (0..MAX_DRAW_BUFFERS)
                 .filter_map(|i| match (layout.color_out[i], state.draw_buffers[i]) {
                     (Some(o), Some(_)) => Some((i, o)),
@@ -203,6 +265,36 @@ impl<'a> FragmentStage<'a> {
             deferred,
             probe,
         }
+    }
+
+    /// Asks the CPU to fetch what the primitives after `bin[i]` will
+    /// need: the varyings of the next one, the set-up of the one after.
+    /// Only a hint: no effect on results.
+    #[inline(always)]
+    fn prefetch_ahead(&self, prims: &[&Prim], bin: &[u32], i: usize) {
+        let at = |k: usize| bin.get(i + k).and_then(|&p| prims.get(p as usize));
+        if let Some(&next) = at(1) {
+            self.prefetch_attrs(next);
+        }
+        if let Some(&after) = at(2) {
+            prefetch(std::slice::from_ref(after));
+        }
+    }
+
+    /// [`prefetch`] of `prim`'s varyings.
+    #[inline(always)]
+    fn prefetch_attrs(&self, prim: &Prim) {
+        let a = self.prim_attrs(prim);
+        prefetch(a.get(..self.layout.links.len() * 3).unwrap_or(a));
+    }
+
+    /// `prim`'s varyings and those after it in its chunk.
+    #[inline(always)]
+    fn prim_attrs(&self, prim: &Prim) -> &'a [f32] {
+        self.attrs
+            .get(prim.chunk as usize)
+            .and_then(|a| a.get(prim.attrs..))
+            .unwrap_or(&[])
     }
 
     /// Runs the shader on `batch` (with the per-draw prepared values).
@@ -255,13 +347,14 @@ impl<'a> FragmentStage<'a> {
         prim.shape.quads_into(clip_to(prim, tile), quads);
         for &quad in quads.iter() {
             let Some(e) = slots.get_mut(*n) else { break };
-            e.set(prim, 0, quad, 0);
+            e.set(self.isa, prim, 0, quad, 0);
             if self.early {
                 self.early_rejects(fb, origin, prim, &mut e.quad);
             }
             if e.quad.live == 0 {
                 continue;
             }
+            e.finish(self.isa);
             *n += 1;
             if *n == LANES / 4 {
                 self.flush(fb, origin, prim, slots, batch)?;
@@ -283,7 +376,33 @@ impl<'a> FragmentStage<'a> {
         origin: (u32, u32),
         batch: &Batch,
         pending: &[Entry],
+        quick: Option<&QuickOps>,
     ) {
+        if let Some((quick, o)) = quick.and_then(|q| Some((q, q.color_output()?))) {
+            // The common states: the same operations per fragment, in the
+            // same order, without the general checks.
+            let mut target = quick.target(fb, origin);
+            for (q, e) in pending.iter().enumerate() {
+                let quad = &e.quad;
+                let lanes = quad.live & !(batch.discarded >> (4 * q)) as u8 & 0xf;
+                for k in 0..4 {
+                    if lanes & (1 << k) == 0 {
+                        continue;
+                    }
+                    let (x, y) = quad.pixel(k);
+                    if x < 0 || y < 0 {
+                        continue;
+                    }
+                    let lane = 4 * q + k;
+                    let z = self.frag_z(batch, lane, quad, k);
+                    if let Some(index) = target.test(x as u32, y as u32, z) {
+                        let c = [0, 1, 2, 3].map(|j| get(batch, o + j, lane));
+                        target.write(index, c);
+                    }
+                }
+            }
+            return;
+        }
         let mut frag = Fragment {
             x: 0,
             y: 0,
@@ -326,26 +445,29 @@ impl<'a> FragmentStage<'a> {
             quads,
         } = scratch;
         *n = 0;
+        let quick = QuickOps::new(fb, self.state, &self.colors_out);
         let mut flush = |fb: &mut Framebuffer, pending: &[Entry]| -> Result<(), ExecError> {
-            self.fill(batch, pending);
+            self.fill(batch, pending, &self.fills);
             self.run_shader(batch)?;
-            self.write_batch(fb, origin, batch, pending);
+            self.write_batch(fb, origin, batch, pending, quick.as_ref());
             Ok(())
         };
-        for &p in bin {
+        for (i, &p) in bin.iter().enumerate() {
             let Some(&prim) = prims.get(p as usize) else {
                 continue;
             };
+            self.prefetch_ahead(prims, bin, i);
             prim.shape.quads_into(clip_to(prim, tile), quads);
             for &quad in quads.iter() {
                 let Some(e) = slots.get_mut(*n) else { break };
-                e.set(prim, p, quad, 0);
+                e.set(self.isa, prim, p, quad, 0);
                 if self.early {
                     self.early_rejects(fb, origin, prim, &mut e.quad);
                 }
                 if e.quad.live == 0 {
                     continue;
                 }
+                e.finish(self.isa);
                 *n += 1;
                 if *n == LANES / 4 {
                     flush(fb, slots)?;
@@ -389,6 +511,32 @@ impl<'a> FragmentStage<'a> {
     /// Drops the lanes of `quad` that the stencil or depth test will
     /// certainly reject without side effects (no gl_FragDepth write).
     fn early_rejects(&self, fb: &Framebuffer, origin: (u32, u32), prim: &Prim, quad: &mut Quad) {
+        if self.probe.is_none() && (self.state.stencil.is_none() || fb.stencil.is_none()) {
+            // No stencil test: a lane is rejected exactly when it fails
+            // the depth test (`fragment_ops::early_reject` without a
+            // stencil face), and never without one.
+            let (Some(func), Some(depth)) = (self.state.depth_test, fb.depth.as_deref()) else {
+                return;
+            };
+            for k in 0..4usize {
+                let (x, y) = quad.pixel(k);
+                let (lx, ly) = (x - origin.0 as i64, y - origin.1 as i64);
+                if quad.live & (1 << k) == 0
+                    || lx < 0
+                    || ly < 0
+                    || lx >= fb.width as i64
+                    || ly >= fb.height as i64
+                {
+                    continue;
+                }
+                let index = ly as usize * fb.width as usize + lx as usize;
+                let stored = depth.get(index).copied().unwrap_or(0);
+                if !func.test(depth_to_fixed(quad.z[k] as f32), stored) {
+                    quad.live &= !(1 << k);
+                }
+            }
+            return;
+        }
         for k in 0..4usize {
             if quad.live & (1 << k) == 0 {
                 continue;
@@ -409,21 +557,49 @@ impl<'a> FragmentStage<'a> {
         }
     }
 
-    /// Clears `batch` and writes the fragment inputs of `pending` (quad
-    /// `q` in lanes `4q..4q + 4`; at most `LANES / 4` quads); sets the
-    /// active and helper lanes. Varyings are interpolated link by link
-    /// over the batch's quads with each quad's per-pixel weights:
-    /// `0 + w0·v0 + w1·v1 + w2·v2` in f64 for triangles (lines have no
-    /// third term: `w2 = v2 = 0` adds an exact zero), vertex 0's value
-    /// for points and flat-shaded colours.
-    fn fill(&self, batch: &mut Batch, pending: &[Entry]) {
-        for c in batch.inputs.iter_mut() {
-            *c = [0.0; LANES];
+    /// Writes the fragment inputs of `pending` (quad `q` in lanes
+    /// `4q..4q + 4`; at most `LANES / 4` quads) that `plan` lists, zeroes
+    /// the outputs, and sets the active and helper lanes. Varyings are
+    /// interpolated with each quad's per-pixel weights, in f64:
+    /// `0 + w0·v0 + w1·v1 + w2·v2` for triangles, `0 + w0·v0 + w1·v1` for
+    /// lines; vertex 0's value for points and flat-shaded colours.
+    ///
+    /// Inputs the plan leaves out are not touched: they are zero from
+    /// [`new_batch`] when no plan of the draw lists them, and only read by
+    /// a stage that does not read them otherwise (stages never write their
+    /// inputs). With fewer than `LANES / 4` quads every input is cleared
+    /// first, so the lanes of absent quads read zeros.
+    fn fill(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
+        match self.isa {
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2 | Isa::Avx512 => {
+                // SAFETY: `isa` is only Avx2 or Avx512 when the CPU has
+                // AVX2 (`simd::detect`).
+                unsafe { self.fill_avx2(batch, pending, plan) }
+            }
+            _ => self.fill_with(batch, pending, plan),
+        }
+    }
+
+    /// [`FragmentStage::fill`] compiled for AVX2 (the same operations:
+    /// four pixels' f64 arithmetic in one register instead of two).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn fill_avx2(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
+        self.fill_with(batch, pending, plan)
+    }
+
+    #[inline(always)]
+    fn fill_with(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
+        let pending = pending.get(..LANES / 4).unwrap_or(pending);
+        if pending.len() < LANES / 4 {
+            for c in batch.inputs.iter_mut() {
+                *c = [0.0; LANES];
+            }
         }
         for c in batch.outputs.iter_mut() {
             *c = [0.0; LANES];
         }
-        let pending = pending.get(..LANES / 4).unwrap_or(pending);
         let mut live_mask = 0u32;
         for (q, e) in pending.iter().enumerate() {
             live_mask |= (e.quad.live as u32) << (4 * q);
@@ -443,46 +619,40 @@ impl<'a> FragmentStage<'a> {
                 prim.shape.point_coord(x, y, lower_left)
             })
         };
-        for (li, link) in layout.links.iter().enumerate() {
-            if !self.read.get(li).copied().unwrap_or(true) {
-                continue;
-            }
-            let Some(dst) = batch.inputs.get_mut(link.fs_offset) else {
+        for (q, e) in pending.iter().enumerate() {
+            let (Some(prim), quad) = (e.prim, &e.quad) else {
                 continue;
             };
-            let constant = self.constant.get(li).copied().unwrap_or(false);
-            let replace = self.replace.get(li).copied().flatten();
-            for (e, lanes) in pending.iter().zip(dst.chunks_exact_mut(4)) {
-                let (Some(prim), quad) = (e.prim, &e.quad) else {
+            // The primitive's varyings: vertex j's link li at j·links + li.
+            let attrs = self.prim_attrs(prim);
+            let attr = |j: usize, li: usize| attrs.get(j * links + li).copied().unwrap_or(0.0);
+            let w = &quad.it.weights;
+            for l in plan {
+                let Some(lanes) = batch
+                    .inputs
+                    .get_mut(l.offset)
+                    .and_then(|c| c.get_mut(4 * q..4 * q + 4))
+                else {
                     continue;
                 };
-                let attr = |j: usize| {
-                    self.attrs
-                        .get(prim.attrs + j * links + li)
-                        .copied()
-                        .unwrap_or(0.0)
-                };
-                match prim.shape {
-                    Shape::Point { .. } => match replace.filter(|_| sprite) {
-                        Some(c) => {
-                            let pc = point_coords(quad, prim);
-                            for (out, pc) in lanes.iter_mut().zip(pc) {
-                                *out = [pc.0, pc.1, 0.0, 1.0][c];
-                            }
+                match (&prim.shape, l.kind) {
+                    (Shape::Point { .. }, FillKind::Replace(c)) if sprite => {
+                        let pc = point_coords(quad, prim);
+                        for (out, pc) in lanes.iter_mut().zip(pc) {
+                            *out = [pc.0, pc.1, 0.0, 1.0][c];
                         }
-                        None => lanes.fill(attr(0)),
-                    },
-                    _ if constant => lanes.fill(attr(0)),
-                    Shape::Triangle { .. } => {
-                        let v = [attr(0) as f64, attr(1) as f64, attr(2) as f64];
-                        let w = &quad.it.weights;
+                    }
+                    (Shape::Point { .. }, _) | (_, FillKind::Constant) => {
+                        lanes.fill(attr(0, l.li));
+                    }
+                    (Shape::Triangle { .. }, _) => {
+                        let v = [0, 1, 2].map(|j| attr(j, l.li) as f64);
                         for (k, out) in lanes.iter_mut().enumerate() {
                             *out = (0.0 + w[0][k] * v[0] + w[1][k] * v[1] + w[2][k] * v[2]) as f32;
                         }
                     }
-                    Shape::Line { .. } => {
-                        let v = [attr(0) as f64, attr(1) as f64];
-                        let w = &quad.it.weights;
+                    (Shape::Line { .. }, _) => {
+                        let v = [0, 1].map(|j| attr(j, l.li) as f64);
                         for (k, out) in lanes.iter_mut().enumerate() {
                             *out = (0.0 + w[0][k] * v[0] + w[1][k] * v[1]) as f32;
                         }
@@ -583,7 +753,7 @@ impl<'a> FragmentStage<'a> {
         pending: &[Entry],
         batch: &mut Batch,
     ) -> Result<(), ExecError> {
-        self.fill(batch, pending);
+        self.fill(batch, pending, &self.fills);
         let live_mask = batch.active & !batch.helper;
         let probed = self.probe.and_then(|p| {
             let lane = pending.iter().enumerate().find_map(|(q, e)| {
@@ -692,19 +862,17 @@ impl<'a> FragmentStage<'a> {
         *n = 0;
         // Per pixel: (winning primitive, its quad's coverage).
         let mut winner: Vec<(u32, u8)> = vec![(NO_PRIM, 0); w * h];
+        let quick = QuickOps::new(fb, self.state, &self.colors_out);
         let mut depth_pass = |fb: &mut Framebuffer,
                               winner: &mut Vec<(u32, u8)>,
                               pending: &[Entry]|
          -> Result<(), ExecError> {
-            self.fill(batch, pending);
+            self.fill(batch, pending, &self.depth_fills);
             self.run_depth(depth, batch)?;
-            let mut frag = Fragment {
-                x: 0,
-                y: 0,
-                z: 0.0,
-                back_facing: false,
-                colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
-            };
+            // The fragments to test, in order: (x, y, z, back, primitive,
+            // its quad's coverage).
+            let mut frags = [(0u32, 0u32, 0f32, false, 0u32, 0u8); LANES];
+            let mut count = 0;
             for (q, e) in pending.iter().enumerate() {
                 let quad = &e.quad;
                 for k in 0..4 {
@@ -716,27 +884,52 @@ impl<'a> FragmentStage<'a> {
                     if x < 0 || y < 0 {
                         continue;
                     }
-                    frag.x = x as u32;
-                    frag.y = y as u32;
-                    frag.z = self.frag_z(batch, lane, quad, k);
-                    frag.back_facing = e.prim.is_some_and(|p| p.back);
-                    if let Some(index) = fragment_ops::tests(fb, origin, self.state, &frag) {
-                        if let Some(slot) = winner.get_mut(index) {
-                            *slot = (e.index, quad.live);
+                    let z = self.frag_z(batch, lane, quad, k);
+                    let back = e.prim.is_some_and(|p| p.back);
+                    if let Some(slot) = frags.get_mut(count) {
+                        *slot = (x as u32, y as u32, z, back, e.index, quad.live);
+                        count += 1;
+                    }
+                }
+            }
+            let frags = &frags[..count];
+            match &quick {
+                Some(q) => {
+                    let mut target = q.target(fb, origin);
+                    for &(x, y, z, _, p, live) in frags {
+                        if let Some(slot) = target.test(x, y, z).and_then(|i| winner.get_mut(i)) {
+                            *slot = (p, live);
+                        }
+                    }
+                }
+                None => {
+                    for &(x, y, z, back_facing, p, live) in frags {
+                        let frag = Fragment {
+                            x,
+                            y,
+                            z,
+                            back_facing,
+                            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
+                        };
+                        let passed = fragment_ops::tests(fb, origin, self.state, &frag);
+                        if let Some(slot) = passed.and_then(|i| winner.get_mut(i)) {
+                            *slot = (p, live);
                         }
                     }
                 }
             }
             Ok(())
         };
-        for &p in bin {
+        for (i, &p) in bin.iter().enumerate() {
             let Some(&prim) = prims.get(p as usize) else {
                 continue;
             };
+            self.prefetch_ahead(prims, bin, i);
             prim.shape.quads_into(clip_to(prim, tile), quads);
             for &quad in quads.iter() {
                 let Some(e) = slots.get_mut(*n) else { break };
-                e.set(prim, p, quad, 0);
+                e.set(self.isa, prim, p, quad, 0);
+                e.finish(self.isa);
                 *n += 1;
                 if *n == LANES / 4 {
                     depth_pass(fb, &mut winner, slots)?;
@@ -751,9 +944,11 @@ impl<'a> FragmentStage<'a> {
 
         // Pass 2: (primitive, quad, coverage, lanes to write) per winner.
         let mut color_pass = |fb: &mut Framebuffer, todo: &[Entry]| -> Result<(), ExecError> {
-            self.fill(batch, todo);
+            self.fill(batch, todo, &self.fills);
             self.run_shader(batch)?;
-            let mut colors = [[0.0; 4]; MAX_DRAW_BUFFERS];
+            // (lane, pixel index) of the fragments to write, in order.
+            let mut writes = [(0usize, 0usize); LANES];
+            let mut count = 0;
             for (q, e) in todo.iter().enumerate() {
                 for k in 0..4 {
                     let lane = 4 * q + k;
@@ -763,9 +958,26 @@ impl<'a> FragmentStage<'a> {
                     let (x, y) = e.quad.pixel(k);
                     let lx = x as usize - origin.0 as usize;
                     let ly = y as usize - origin.1 as usize;
-                    let index = ly * w + lx;
-                    self.colors_into(batch, lane, &mut colors);
-                    fragment_ops::write_colors(fb, index, self.state, &colors);
+                    if let Some(slot) = writes.get_mut(count) {
+                        *slot = (lane, ly * w + lx);
+                        count += 1;
+                    }
+                }
+            }
+            let writes = &writes[..count];
+            match quick.and_then(|q| Some((q, q.color_output()?))) {
+                Some((q, o)) => {
+                    let mut target = q.target(fb, origin);
+                    for &(lane, index) in writes {
+                        target.write(index, [0, 1, 2, 3].map(|j| get(batch, o + j, lane)));
+                    }
+                }
+                None => {
+                    let mut colors = [[0.0; 4]; MAX_DRAW_BUFFERS];
+                    for &(lane, index) in writes {
+                        self.colors_into(batch, lane, &mut colors);
+                        fragment_ops::write_colors(fb, index, self.state, &colors);
+                    }
                 }
             }
             Ok(())
@@ -798,7 +1010,9 @@ impl<'a> FragmentStage<'a> {
                     };
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
                     let Some(e) = slots.get_mut(*n) else { break };
-                    e.set(prim, p, (qx, qy, live), write);
+                    self.prefetch_attrs(prim);
+                    e.set(self.isa, prim, p, (qx, qy, live), write);
+                    e.finish(self.isa);
                     *n += 1;
                     if *n == LANES / 4 {
                         color_pass(fb, slots)?;
@@ -813,6 +1027,26 @@ impl<'a> FragmentStage<'a> {
         }
         Ok(())
     }
+}
+
+/// Asks the CPU to bring the cache lines of `data` closer (a hint with
+/// no effect on results; nothing on targets without one).
+#[inline(always)]
+fn prefetch<T>(data: &[T]) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        let start = data.as_ptr() as *const i8;
+        let bytes = std::mem::size_of_val(data);
+        // Every line from the first byte's to the last byte's.
+        for offset in (0..bytes).step_by(64).chain(bytes.checked_sub(1)) {
+            // SAFETY: a prefetch is a hint: it never faults and reads
+            // nothing the program sees; the address is inside `data`.
+            unsafe { _mm_prefetch::<_MM_HINT_T0>(start.wrapping_add(offset)) }
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = data;
 }
 
 /// `prim`'s bounds inside `tile`.

@@ -10,7 +10,9 @@
 //! the tasks one after the other and stopping at the first failure.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::OnceLock;
+use std::sync::{Mutex, MutexGuard, OnceLock};
+
+use crate::shade::Prim;
 
 use rayon::prelude::*;
 
@@ -23,6 +25,53 @@ pub const MAX_THREADS: usize = 256;
 pub struct Workers {
     threads: usize,
     pool: OnceLock<Option<rayon::ThreadPool>>,
+    spare: Mutex<Spare>,
+}
+
+/// Buffers of an earlier draw, kept (emptied) for the next draws on the
+/// same [`Workers`]: a draw that fits in them allocates no fresh memory,
+/// whose first touch costs a page fault per 4 KiB. At most
+/// [`Spare::LIMIT`] bytes of capacity are kept.
+#[derive(Default)]
+pub(crate) struct Spare {
+    /// Set-up chunks' primitives and varyings.
+    pub chunks: Vec<(Vec<Prim>, Vec<f32>)>,
+    /// Vertex outputs.
+    pub outputs: Vec<f32>,
+}
+
+impl Spare {
+    /// Most bytes of capacity kept.
+    const LIMIT: usize = 256 << 20;
+
+    fn bytes(&self) -> usize {
+        let chunk = |(p, a): &(Vec<Prim>, Vec<f32>)| {
+            p.capacity() * std::mem::size_of::<Prim>() + a.capacity() * 4
+        };
+        self.chunks.iter().map(chunk).sum::<usize>() + self.outputs.capacity() * 4
+    }
+
+    /// Keeps `chunks` (emptied) and `outputs` as far as the limit allows.
+    pub fn keep(&mut self, chunks: Vec<(Vec<Prim>, Vec<f32>)>, mut outputs: Vec<f32>) {
+        let mut bytes = self.bytes();
+        if outputs.capacity() > self.outputs.capacity()
+            && bytes - self.outputs.capacity() * 4 + outputs.capacity() * 4 <= Spare::LIMIT
+        {
+            bytes = bytes - self.outputs.capacity() * 4 + outputs.capacity() * 4;
+            outputs.clear();
+            self.outputs = outputs;
+        }
+        for (mut p, mut a) in chunks {
+            let more = p.capacity() * std::mem::size_of::<Prim>() + a.capacity() * 4;
+            if bytes + more > Spare::LIMIT {
+                break;
+            }
+            bytes += more;
+            p.clear();
+            a.clear();
+            self.chunks.push((p, a));
+        }
+    }
 }
 
 impl Workers {
@@ -37,7 +86,13 @@ impl Workers {
         Workers {
             threads: threads.clamp(1, MAX_THREADS),
             pool: OnceLock::new(),
+            spare: Mutex::new(Spare::default()),
         }
+    }
+
+    /// The buffers kept from earlier draws.
+    pub(crate) fn spare(&self) -> MutexGuard<'_, Spare> {
+        self.spare.lock().unwrap_or_else(|e| e.into_inner())
     }
 
     /// Everything on the calling thread.
