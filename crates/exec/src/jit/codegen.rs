@@ -1,7 +1,7 @@
 //! Cranelift IR for a [`Code`]: one function `fn(*mut Ctx) -> u32`.
 
 use super::PROLOGUE_OP;
-use super::{jit_f1, jit_f2, jit_step, Ctx, Entry, Native, F1_CALLED, F2_CALLED, MAX_OPS};
+use super::{jit_step, math_helpers, Ctx, Entry, Native, F1_CALLED, F2_CALLED, MAX_OPS};
 use crate::engine::{Code, Ins};
 use crate::program::{Op, Reg, F1, F2, F3};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
@@ -522,12 +522,12 @@ impl<'a, 'b> Emit<'a, 'b> {
         let pa = self.reg_ptr(a);
         if two {
             let pb = self.reg_ptr(b);
-            let f = self.b.ins().iconst(self.ptr, jit_f2 as *const () as i64);
+            let f = self.b.ins().iconst(self.ptr, math_helpers().1 as i64);
             self.b
                 .ins()
                 .call_indirect(self.sig_f2, f, &[fi, out, pa, pb]);
         } else {
-            let f = self.b.ins().iconst(self.ptr, jit_f1 as *const () as i64);
+            let f = self.b.ins().iconst(self.ptr, math_helpers().0 as i64);
             self.b.ins().call_indirect(self.sig_f1, f, &[fi, out, pa]);
         }
         for q in 0..QUARTERS {

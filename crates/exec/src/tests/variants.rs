@@ -179,6 +179,78 @@ fn bench_sphere() {
     }
 }
 
+const MATERIALS_FRAG: &str = include_str!("../../../glsl/tests/seeds/000-materials.frag");
+
+/// Time per 16-lane batch of the seed materials shader (normalize, two
+/// lights with `pow`: the lit-mesh scene's) with each variant, prepared
+/// once per draw as the renderer runs it (`cargo test --release -p
+/// shaderbox-exec bench_materials -- --ignored --nocapture`).
+#[test]
+#[ignore = "benchmark"]
+fn bench_materials() {
+    let linked = link_one(Stage::Fragment, MATERIALS_FRAG).unwrap();
+    let k = Kernel::new(&linked).unwrap();
+    // Every uniform word a float in [0.25, 1), shininess 30.
+    let mut u: Vec<u32> = (0..k.interface().uniform_words)
+        .map(|i| (0.25 + (i % 7) as f32 / 9.5).to_bits())
+        .collect();
+    if let Some((w, _)) = k.interface().locate_uniform("gl_FrontMaterial.shininess") {
+        if let Some(x) = u.get_mut(w) {
+            *x = 30.0f32.to_bits();
+        }
+    }
+    let mut batches: Vec<Batch> = (0..64)
+        .map(|i| {
+            let mut b = Batch::for_kernel(&k, 0xffff);
+            fill(&mut b, i + 1);
+            b
+        })
+        .collect();
+    let prepared = k.prepare(&u);
+    let mut time = |f: &mut dyn FnMut(&mut Batch)| {
+        let mut best = f64::MAX;
+        for _ in 0..7 {
+            let t = std::time::Instant::now();
+            for _ in 0..20 {
+                for b in batches.iter_mut() {
+                    f(b);
+                }
+            }
+            best = best.min(t.elapsed().as_secs_f64() / (20.0 * 64.0));
+        }
+        best * 1e9
+    };
+    if let Ok(only) = std::env::var("BENCH_ONLY") {
+        // For profiling one variant: run it for a few seconds.
+        let v = supported_variants()
+            .into_iter()
+            .find(|v| v.name() == only)
+            .expect("BENCH_ONLY names a supported variant");
+        for _ in 0..20 {
+            let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
+            eprintln!("  {:8} {t:.0} ns/batch", v.name());
+        }
+        return;
+    }
+    let reference = time(&mut |b| k.run_reference(b, &u, &NoTextures).unwrap());
+    eprintln!(
+        "materials.frag: {} ops (executor: {}, prologue {}); reference interpreter {reference:.0} ns/batch",
+        k.op_count(),
+        k.code.ins.len(),
+        k.code.prologue.len()
+    );
+    for v in supported_variants() {
+        let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
+        eprintln!("  {:8} {t:.0} ns/batch ({:.2}x)", v.name(), reference / t);
+    }
+    let t = time(&mut |b| k.run_prepared(b, &prepared, &NoTextures).unwrap());
+    eprintln!(
+        "  {:8} {t:.0} ns/batch with run_prepared ({:.2}x)",
+        crate::kernel_variant().name(),
+        reference / t
+    );
+}
+
 /// Time per 16-lane batch of a shader made of `pow`, `exp`, `exp2`, `log`
 /// and `log2` (40 calls a lane) with the reference interpreter and each
 /// variant: whether those built-ins vectorize (`cargo test --release -p
@@ -222,5 +294,18 @@ fn bench_math() {
     for v in supported_variants() {
         let t = time(&mut |b| k.run_variant(v, b, &[], &NoTextures).unwrap());
         eprintln!("  {:8} {t:.0} ns/batch ({:.2}x)", v.name(), reference / t);
+    }
+}
+
+#[test]
+#[ignore = "debug"]
+fn dump_materials() {
+    let linked = link_one(Stage::Fragment, MATERIALS_FRAG).unwrap();
+    let k = Kernel::new(&linked).unwrap();
+    for (i, op) in k.code.prologue.iter().enumerate() {
+        eprintln!("P{i}: {op:?}");
+    }
+    for (i, ins) in k.code.ins.iter().enumerate() {
+        eprintln!("{i}: {:?} {}", ins.op, if ins.masked { "M" } else { "" });
     }
 }
