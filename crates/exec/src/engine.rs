@@ -49,6 +49,8 @@ pub(crate) struct Code {
     pub pool_base: u32,
     /// Registers to zero at the start of a run.
     pub zero: Vec<Reg>,
+    /// The output registers (live at the end of a run).
+    pub live_out: Vec<Reg>,
 }
 
 /// Programs with more ops than this are run unrewritten (the analysis
@@ -62,17 +64,18 @@ pub(crate) fn compile(p: &Program, live_out: &[Reg]) -> Code {
             return c;
         }
     }
-    plain(p)
+    plain(p, live_out)
 }
 
 /// The program as it is, every register zeroed at the start.
-fn plain(p: &Program) -> Code {
+fn plain(p: &Program, live_out: &[Reg]) -> Code {
     Code {
         prog: p.clone(),
         ins: p.ops.iter().map(|&op| Ins { op, masked: false }).collect(),
         prologue: Vec::new(),
         pool_base: p.registers,
         zero: (0..p.registers).collect(),
+        live_out: live_out.to_vec(),
     }
 }
 
@@ -414,6 +417,7 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
         prologue,
         pool_base,
         zero,
+        live_out: live_out.to_vec(),
     })
 }
 
@@ -1355,17 +1359,20 @@ mod tests {
             }
             for func in three {
                 // The F3 arms are inlined in `step`: run them as an op.
-                let code = plain(&Program {
-                    ops: vec![Op::F3 {
-                        f: func,
-                        d: 3,
-                        a: 0,
-                        b: 1,
-                        c: 2,
-                    }],
-                    registers: 4,
-                    ..Program::default()
-                });
+                let code = plain(
+                    &Program {
+                        ops: vec![Op::F3 {
+                            f: func,
+                            d: 3,
+                            a: 0,
+                            b: 1,
+                            c: 2,
+                        }],
+                        registers: 4,
+                        ..Program::default()
+                    },
+                    &[3],
+                );
                 let mut regs = [*x, *y, *z, [0; LANES]];
                 let mut st_masks = [0; 0];
                 let mut st_ret = [0; 0];

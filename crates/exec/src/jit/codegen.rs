@@ -109,6 +109,7 @@ fn define(
     {
         let b = FunctionBuilder::new(&mut ctx.func, &mut fctx);
         let mut e = Emit::new(b, module, code, ptr);
+        e.after = live_after(code);
         e.body()?;
         e.b.seal_all_blocks();
         e.b.finalize(module.target_config());
@@ -121,6 +122,25 @@ fn define(
         .map(|c| c.code_buffer().len())
         .unwrap_or(0);
     Ok((id, bytes))
+}
+
+/// Registers live after each op of `code.ins` (empty when the analysis
+/// declines or would take more than 4 MiB).
+fn live_after(code: &Code) -> Vec<Vec<u64>> {
+    let words = (code.prog.registers as usize).div_ceil(64);
+    if code.ins.len().saturating_mul(words) > (1 << 19) {
+        return Vec::new();
+    }
+    let masked: Vec<bool> = code.ins.iter().map(|i| i.masked).collect();
+    crate::liveness::analyze_after(
+        &code.prog,
+        &code.prog.ops,
+        &masked,
+        code.prog.registers,
+        &code.live_out,
+    )
+    .map(|l| l.after)
+    .unwrap_or_default()
 }
 
 fn helper_sig(module: &JITModule, ptr: Type, params: &[Type]) -> Signature {
@@ -155,6 +175,12 @@ struct Emit<'a, 'b> {
     fail: Block,
     /// Register quarters held in SSA values in the current block.
     cache: Cache,
+    /// While emitting a run of lane-wise ops quarter by quarter: the
+    /// quarter; `None`: every op emits all four.
+    only: Option<usize>,
+    /// Per op of `code.ins`: the registers live after it (empty when the
+    /// analysis declined: then everything is stored).
+    after: Vec<Vec<u64>>,
 }
 
 /// A quarter of a register held in an SSA value: `dirty` when memory does
@@ -179,6 +205,54 @@ struct Cache {
 
 /// At most this many quarters are held (more only makes Cranelift spill).
 const HELD: usize = 48;
+
+/// Data ops emitted inline whose lanes `4q..4q + 4` of the result depend
+/// only on lanes `4q..4q + 4` of their operands and of the mask, with no
+/// call, branch or memory access besides their registers' (and uniform
+/// words).
+fn separable(ins: &Ins) -> bool {
+    match ins.op {
+        Op::F1 { f, .. } => !F1_CALLED.contains(&f),
+        Op::F2 { f, .. } => !F2_CALLED.contains(&f),
+        Op::ClampIdx { max, .. } => max <= i32::MAX as u32,
+        Op::Const { .. }
+        | Op::Mov { .. }
+        | Op::Store { .. }
+        | Op::FAdd { .. }
+        | Op::FSub { .. }
+        | Op::FMul { .. }
+        | Op::FDiv { .. }
+        | Op::FNeg { .. }
+        | Op::FMac { .. }
+        | Op::Dot { .. }
+        | Op::F3 { .. }
+        | Op::FLt { .. }
+        | Op::FLe { .. }
+        | Op::FEq { .. }
+        | Op::IAdd { .. }
+        | Op::ISub { .. }
+        | Op::IMul { .. }
+        | Op::INeg { .. }
+        | Op::ILt { .. }
+        | Op::ILe { .. }
+        | Op::IEq { .. }
+        | Op::And { .. }
+        | Op::Or { .. }
+        | Op::Xor { .. }
+        | Op::Not { .. }
+        | Op::FToI { .. }
+        | Op::IToF { .. }
+        | Op::FToB { .. }
+        | Op::IToB { .. }
+        | Op::BToF { .. }
+        | Op::Select { .. }
+        | Op::Uniform { .. }
+        | Op::DdX { .. }
+        | Op::DdY { .. }
+        | Op::Printf { .. } => true,
+        _ => false,
+    }
+}
 
 fn mem() -> MemFlagsData {
     MemFlagsData::new().with_notrap()
@@ -223,6 +297,8 @@ impl<'a, 'b> Emit<'a, 'b> {
             sig_f2,
             fail,
             cache: Cache::default(),
+            only: None,
+            after: Vec::new(),
         };
         let zero = e.b.ins().iconst(I32, 0);
         for &m in &e.masks {
@@ -362,6 +438,47 @@ impl<'a, 'b> Emit<'a, 'b> {
             .collect();
         for k in keys {
             self.cache.held.remove(&k);
+        }
+    }
+
+    /// The quarters the current op emits (see `only`).
+    fn quarters(&self) -> std::ops::Range<usize> {
+        match self.only {
+            Some(q) => q..q + 1,
+            None => 0..QUARTERS,
+        }
+    }
+
+    /// Whether register `r` may be read after op `i` (a pool register, or
+    /// live by the analysis; everything when there is none).
+    fn live_after(&self, i: usize, r: Reg) -> bool {
+        r >= self.code.pool_base
+            || self
+                .after
+                .get(i)
+                .is_none_or(|bits| crate::liveness::is_live(bits, r))
+    }
+
+    /// Ends the held values of quarter `q` (every quarter: `None`): stores
+    /// the dirty ones that are live after op `i` (all dirty ones: `i` =
+    /// `None`) and drops them all.
+    fn retire(&mut self, q: Option<usize>, i: Option<usize>) {
+        let keys: Vec<(Reg, usize)> = self
+            .cache
+            .held
+            .keys()
+            .filter(|k| q.is_none_or(|q| k.1 == q))
+            .copied()
+            .collect();
+        for k in keys {
+            let Some(h) = self.cache.held.remove(&k) else {
+                continue;
+            };
+            if h.dirty && i.is_none_or(|i| self.live_after(i, k.0)) {
+                self.b
+                    .ins()
+                    .store(mem(), h.v, self.regs, Self::offset(k.0, k.1));
+            }
         }
     }
 
@@ -755,23 +872,33 @@ impl<'a, 'b> Emit<'a, 'b> {
         self.b.ins().jump(block(0)?, &[]);
 
         let mut open = false;
-        for (i, ins) in code.ins.iter().enumerate() {
+        let mut i = 0;
+        while let Some(ins) = code.ins.get(i) {
             if leader[i] {
                 if open {
-                    self.flush_all();
+                    self.retire(None, i.checked_sub(1));
                     self.b.ins().jump(block(i)?, &[]);
                 }
                 self.b.switch_to_block(block(i)?);
                 open = true;
             }
+            if separable(ins) {
+                let mut e = i + 1;
+                while e < n && !leader[e] && code.ins.get(e).is_some_and(separable) {
+                    e += 1;
+                }
+                self.quarter_by_quarter(i, e)?;
+                i = e;
+                continue;
+            }
             match ins.op {
                 Op::Jump { target } => {
-                    self.flush_all();
+                    self.retire(None, Some(i));
                     self.b.ins().jump(block(target as usize)?, &[]);
                     open = false;
                 }
                 Op::JumpIfNone { target } => {
-                    self.flush_all();
+                    self.retire(None, Some(i));
                     let cur = self.b.use_var(self.cur);
                     let (t, next) = (block(target as usize)?, block(i + 1)?);
                     self.b.ins().brif(cur, next, &[], t, &[]);
@@ -851,10 +978,11 @@ impl<'a, 'b> Emit<'a, 'b> {
                 }
                 _ => self.data(ins, i as u32)?,
             }
+            i += 1;
         }
         let exit = block(n)?;
         if open {
-            self.flush_all();
+            self.retire(None, n.checked_sub(1));
             self.b.ins().jump(exit, &[]);
         }
         self.b.switch_to_block(exit);
@@ -875,12 +1003,33 @@ impl<'a, 'b> Emit<'a, 'b> {
         Ok(())
     }
 
+    /// Ops `s..e` (lane-wise, `separable`) one quarter at a time: all of
+    /// them on lanes 0-3, then on 4-7, ...; each op's lanes depend only on
+    /// the same lanes of its operands (derivatives: on its quad, which is a
+    /// quarter), so the order computes the same bits, with a quarter of the
+    /// values live at once. After each quarter its values are stored when
+    /// live after op `e - 1`, and dropped.
+    fn quarter_by_quarter(&mut self, s: usize, e: usize) -> Result<(), String> {
+        let code = self.code;
+        for q in 0..QUARTERS {
+            self.only = Some(q);
+            for j in s..e {
+                if let Some(ins) = code.ins.get(j) {
+                    self.data(ins, j as u32)?;
+                }
+            }
+            self.retire(Some(q), e.checked_sub(1));
+        }
+        self.only = None;
+        Ok(())
+    }
+
     /// A data op (no control flow); `index`: its index for `jit_step`.
     fn data(&mut self, ins: &Ins, index: u32) -> Result<(), String> {
         let m = ins.masked;
         macro_rules! each {
             ($d:expr, |$q:ident| $body:expr) => {{
-                for $q in 0..QUARTERS {
+                for $q in self.quarters() {
                     let v = $body;
                     self.put($d, $q, v, m);
                 }
@@ -942,7 +1091,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             Op::Const { d, bits } => each!(d, |q| self.splat(bits)),
             Op::Mov { d, a } => each!(d, |q| self.ld(a, q)),
             Op::Store { d, a } => {
-                for q in 0..QUARTERS {
+                for q in self.quarters() {
                     let v = self.ld(a, q);
                     self.put(d, q, v, true);
                 }
