@@ -92,6 +92,8 @@ pub(crate) struct Ctx<'a> {
     /// The uniform words; a static zero word when there are none, so the
     /// native code may always read word 0.
     uniforms_ptr: *const u32,
+    /// The vector constants of the native code (`Native::consts`).
+    consts: *const [u32; 4],
     /// Where `jit_f1`/`jit_f2` put their result.
     scratch: Lanes,
     code: &'a Code,
@@ -107,6 +109,10 @@ type Entry = unsafe extern "C" fn(*mut Ctx) -> u32;
 pub(crate) struct Native {
     module: Option<cranelift_jit::JITModule>,
     entry: Entry,
+    /// The vector constants the code loads (one entry per distinct
+    /// constant; loads fold into the instructions using them, where a
+    /// constant materialized once per function would be spilled).
+    consts: Box<[Const16]>,
     /// Size of the machine code in bytes.
     pub bytes: usize,
 }
@@ -128,6 +134,11 @@ impl Drop for Native {
         }
     }
 }
+
+/// A 16-byte aligned vector constant.
+#[repr(C, align(16))]
+#[derive(Clone, Copy)]
+pub(crate) struct Const16(pub [u32; 4]);
 
 /// The compiled code of one kernel (shared by its clones), made on demand.
 #[derive(Default)]
@@ -227,6 +238,7 @@ pub(crate) fn run(
         } else {
             uniforms.as_ptr()
         },
+        consts: native.consts.as_ptr().cast(),
         scratch: [0; crate::LANES],
         code,
         uniforms,

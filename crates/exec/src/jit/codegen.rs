@@ -1,7 +1,7 @@
 //! Cranelift IR for a [`Code`]: one function `fn(*mut Ctx) -> u32`.
 
 use super::PROLOGUE_OP;
-use super::{jit_step, math_helpers, Ctx, Entry, Native, F1_CALLED, F2_CALLED, MAX_OPS};
+use super::{jit_step, math_helpers, Const16, Ctx, Entry, Native, F1_CALLED, F2_CALLED, MAX_OPS};
 use crate::engine::{Code, Ins};
 use crate::program::{Op, Reg, F1, F2, F3};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
@@ -60,7 +60,7 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
     let mut module = JITModule::new(JITBuilder::with_isa(isa, default_libcall_names()));
     let r = define(&mut module, code);
     match r {
-        Ok((id, bytes)) => {
+        Ok((id, bytes, consts)) => {
             if let Err(e) = module.finalize_definitions() {
                 // SAFETY: nothing of the module was handed out.
                 unsafe { module.free_memory() };
@@ -80,6 +80,7 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
             Ok(Native {
                 module: Some(module),
                 entry,
+                consts,
                 bytes,
             })
         }
@@ -91,10 +92,11 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
     }
 }
 
+/// Defines the function; returns it, its code size and its constants.
 fn define(
     module: &mut JITModule,
     code: &Code,
-) -> Result<(cranelift_module::FuncId, usize), String> {
+) -> Result<(cranelift_module::FuncId, usize, Box<[Const16]>), String> {
     let ptr = module.target_config().pointer_type();
     let mut sig = module.make_signature();
     sig.params.push(AbiParam::new(ptr));
@@ -106,14 +108,21 @@ fn define(
     ctx.func.signature = sig;
     ctx.func.name = UserFuncName::user(0, id.as_u32());
     let mut fctx = FunctionBuilderContext::new();
-    {
+    let consts = {
         let b = FunctionBuilder::new(&mut ctx.func, &mut fctx);
         let mut e = Emit::new(b, module, code, ptr);
         e.after = live_after(code);
         e.body()?;
         e.b.seal_all_blocks();
         e.b.finalize(module.target_config());
-    }
+        e.consts.table
+    };
+    // At least one entry: the pointer the code receives is never dangling.
+    let consts: Box<[Const16]> = if consts.is_empty() {
+        vec![Const16([0; 4])].into()
+    } else {
+        consts.into_iter().map(Const16).collect()
+    };
     module
         .define_function(id, &mut ctx)
         .map_err(|e| format!("cranelift: {e:?}"))?;
@@ -121,7 +130,7 @@ fn define(
         .compiled_code()
         .map(|c| c.code_buffer().len())
         .unwrap_or(0);
-    Ok((id, bytes))
+    Ok((id, bytes, consts))
 }
 
 /// Registers live after each op of `code.ins` (empty when the analysis
@@ -181,6 +190,24 @@ struct Emit<'a, 'b> {
     /// Per op of `code.ins`: the registers live after it (empty when the
     /// analysis declined: then everything is stored).
     after: Vec<Vec<u64>>,
+    /// The vector constants, loaded from `Ctx::consts`.
+    consts: Consts,
+    /// In a quarter-by-quarter run: the op after which liveness decides
+    /// what is stored, when the op being emitted is the run's last writer
+    /// of its destination (which it then stores at once).
+    store_now: Option<usize>,
+}
+
+/// Vector constants in a table the code loads from: a load used once is
+/// folded into the instruction using it, and loads of one entry between
+/// two stores become one value (Cranelift would otherwise compute each
+/// constant once for the whole function and spill it).
+#[derive(Default)]
+struct Consts {
+    table: Vec<[u32; 4]>,
+    index: std::collections::HashMap<[u32; 4], u32>,
+    /// `Ctx::consts`, loaded at the entry.
+    base: Option<Value>,
 }
 
 /// A quarter of a register held in an SSA value: `dirty` when memory does
@@ -299,7 +326,13 @@ impl<'a, 'b> Emit<'a, 'b> {
             cache: Cache::default(),
             only: None,
             after: Vec::new(),
+            consts: Consts::default(),
+            store_now: None,
         };
+        let base =
+            e.b.ins()
+                .load(ptr, mem(), ctx, offset_of!(Ctx, consts) as i32);
+        e.consts.base = Some(base);
         let zero = e.b.ins().iconst(I32, 0);
         for &m in &e.masks {
             e.b.def_var(m, zero);
@@ -321,13 +354,20 @@ impl<'a, 'b> Emit<'a, 'b> {
     }
 
     fn vconst(&mut self, lanes: [u32; 4]) -> Value {
-        if lanes.iter().all(|&l| l == lanes[0]) {
-            let k = self.b.ins().iconst(I32, lanes[0] as i32 as i64);
-            return self.b.ins().splat(I32X4, k);
+        let c = &mut self.consts;
+        let next = c.table.len() as u32;
+        let i = *c.index.entry(lanes).or_insert(next);
+        if i == next {
+            c.table.push(lanes);
         }
-        let bytes: Vec<u8> = lanes.iter().flat_map(|l| l.to_le_bytes()).collect();
-        let c = self.b.func.dfg.constants.insert(ConstantData::from(bytes));
-        self.b.ins().vconst(I32X4, c)
+        match (c.base, i32::try_from(i as u64 * 16)) {
+            (Some(base), Ok(off)) => self.b.ins().load(I32X4, mem().with_aligned(), base, off),
+            _ => {
+                let bytes: Vec<u8> = lanes.iter().flat_map(|l| l.to_le_bytes()).collect();
+                let c = self.b.func.dfg.constants.insert(ConstantData::from(bytes));
+                self.b.ins().vconst(I32X4, c)
+            }
+        }
     }
 
     fn fv(&mut self, v: Value) -> Value {
@@ -374,6 +414,17 @@ impl<'a, 'b> Emit<'a, 'b> {
         } else {
             v
         };
+        // The last write of a run to a register read after it is stored
+        // here, not at the run's end: Cranelift computes a value where
+        // its first side-effecting use is, so a store at the end would
+        // move the run's arithmetic there, away from its loads.
+        if let Some(end) = self.store_now {
+            if self.live_after(end, d) {
+                self.b.ins().store(mem(), v, self.regs, Self::offset(d, q));
+                self.hold(d, q, v, false);
+                return;
+            }
+        }
         self.hold(d, q, v, true);
     }
 
@@ -1011,13 +1062,30 @@ impl<'a, 'b> Emit<'a, 'b> {
     /// live after op `e - 1`, and dropped.
     fn quarter_by_quarter(&mut self, s: usize, e: usize) -> Result<(), String> {
         let code = self.code;
+        // Whether each op is the run's last writer of its destination.
+        let mut last = vec![false; e.saturating_sub(s)];
+        let mut seen = std::collections::HashSet::new();
+        for j in (s..e).rev() {
+            if let Some(ins) = code.ins.get(j) {
+                let fx = crate::liveness::effects(&code.prog, &ins.op);
+                if let ([(d, 1)], []) | ([], [(d, 1)]) =
+                    (fx.full_defs.as_slice(), fx.partial_defs.as_slice())
+                {
+                    if seen.insert(*d) {
+                        last[j - s] = true;
+                    }
+                }
+            }
+        }
         for q in 0..QUARTERS {
             self.only = Some(q);
             for j in s..e {
                 if let Some(ins) = code.ins.get(j) {
+                    self.store_now = if last[j - s] { e.checked_sub(1) } else { None };
                     self.data(ins, j as u32)?;
                 }
             }
+            self.store_now = None;
             self.retire(Some(q), e.checked_sub(1));
         }
         self.only = None;
