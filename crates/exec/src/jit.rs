@@ -10,14 +10,26 @@
 //!
 //! ## Shape of the generated code
 //! The register file stays in memory (the thread's `engine` file, the same
-//! layout: a register is 16 `u32` lanes, 64 bytes). Each op loads its
-//! operands as four 4-lane vectors, computes, and stores; a fused masked
-//! store blends with the current-mask vectors. The current mask (a lane
-//! bit set plus its four expanded vectors), the mask slots, the discarded
-//! lanes and the loop counter live in SSA variables; the program's
-//! structured jumps become branches between blocks. The function takes one
-//! pointer, to a [`Ctx`], and returns 0, or 1 when the loop budget ran
-//! out.
+//! layout: a register is 16 `u32` lanes, 64 bytes), each register handled
+//! as four 4-lane vectors (quarters; Cranelift's x86-64 vectors are 128
+//! bits). A run of lane-wise data ops inside a basic block (arithmetic,
+//! comparisons, conversions, selects, the inline built-ins, uniform words,
+//! derivatives: every op whose quarter `q` depends only on quarter `q` of
+//! its operands) is emitted quarter by quarter: the whole run on lanes
+//! 0-3, then on lanes 4-7, ..., so only a quarter of its values is live at
+//! once. Inside a run the registers are SSA values: loaded at the first
+//! read, and stored only by the run's last write to a register that is
+//! read afterwards (per-op liveness, `crate::liveness`, with fused masked
+//! stores as partial writes); temporaries never reach memory. Other ops
+//! (calls, gathers, scatters) work on all four quarters, and everything is
+//! in memory at block ends. A fused masked store blends with the
+//! current-mask vectors. Vector constants are loads from a per-kernel table
+//! (`Native::consts`), which x86 folds into the instruction using them. The
+//! current mask (a lane bit set plus its four expanded vectors), the mask
+//! slots, the discarded lanes and the loop counter live in SSA variables;
+//! the program's structured jumps become branches between blocks. The
+//! function takes one pointer, to a [`Ctx`], and returns 0, or 1 when the
+//! loop budget ran out.
 //!
 //! ## Same bits as the interpreter
 //! Arithmetic, comparisons, conversions (float→int saturating as Rust `as`
@@ -28,8 +40,10 @@
 //! Everything else (the transcendental functions, integer division,
 //! gathers and scatters, uniform reads outside the prologue, derivatives,
 //! noise, texture lookups) calls back into Rust: `jit_f1`/`jit_f2` run the
-//! engine's own lane functions, `jit_step` the engine's own `step` on the
-//! op, so those compute the interpreter's bits by construction.
+//! engine's own lane functions (compiled for AVX-512 or AVX2 when the CPU
+//! has them, where their lane loops vectorize wider), `jit_step` the
+//! engine's own `step` on the op, so those compute the interpreter's bits
+//! by construction.
 //!
 //! ## When it is used
 //! With the `jit` variant (the default where Cranelift supports the CPU), a

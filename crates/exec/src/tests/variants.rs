@@ -155,9 +155,11 @@ fn bench_sphere() {
     }
     let reference = time(&mut |b| k.run_reference(b, &u, &NoTextures).unwrap());
     eprintln!(
-        "sphere.frag: {} ops (executor: {}); reference interpreter {reference:.0} ns/batch",
+        "sphere.frag: {} ops (executor: {}, prologue {}, {} registers); reference interpreter {reference:.0} ns/batch",
         k.op_count(),
-        k.code.ins.len()
+        k.code.ins.len(),
+        k.code.prologue.len(),
+        k.code.prog.registers
     );
     for v in supported_variants() {
         let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
@@ -234,10 +236,11 @@ fn bench_materials() {
     }
     let reference = time(&mut |b| k.run_reference(b, &u, &NoTextures).unwrap());
     eprintln!(
-        "materials.frag: {} ops (executor: {}, prologue {}); reference interpreter {reference:.0} ns/batch",
+        "materials.frag: {} ops (executor: {}, prologue {}, {} registers); reference interpreter {reference:.0} ns/batch",
         k.op_count(),
         k.code.ins.len(),
-        k.code.prologue.len()
+        k.code.prologue.len(),
+        k.code.prog.registers
     );
     for v in supported_variants() {
         let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
@@ -294,18 +297,5 @@ fn bench_math() {
     for v in supported_variants() {
         let t = time(&mut |b| k.run_variant(v, b, &[], &NoTextures).unwrap());
         eprintln!("  {:8} {t:.0} ns/batch ({:.2}x)", v.name(), reference / t);
-    }
-}
-
-#[test]
-#[ignore = "debug"]
-fn dump_materials() {
-    let linked = link_one(Stage::Fragment, MATERIALS_FRAG).unwrap();
-    let k = Kernel::new(&linked).unwrap();
-    for (i, op) in k.code.prologue.iter().enumerate() {
-        eprintln!("P{i}: {op:?}");
-    }
-    for (i, ins) in k.code.ins.iter().enumerate() {
-        eprintln!("{i}: {:?} {}", ins.op, if ins.masked { "M" } else { "" });
     }
 }
