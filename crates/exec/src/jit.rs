@@ -23,7 +23,8 @@
 //! stores as partial writes); temporaries never reach memory. Other ops
 //! (calls, gathers, scatters) work on all four quarters, and everything is
 //! in memory at block ends. A fused masked store blends with the
-//! current-mask vectors. Vector constants are loads from a per-kernel table
+//! current-mask vectors; a run with masked writes also has a copy without
+//! the blends, taken when all 16 lanes run. Vector constants are loads from a per-kernel table
 //! (`Native::consts`), which x86 folds into the instruction using them. The
 //! current mask (a lane bit set plus its four expanded vectors), the mask
 //! slots, the discarded lanes and the loop counter live in SSA variables;

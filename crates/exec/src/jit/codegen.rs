@@ -196,6 +196,9 @@ struct Emit<'a, 'b> {
     /// what is stored, when the op being emitted is the run's last writer
     /// of its destination (which it then stores at once).
     store_now: Option<usize>,
+    /// Emitting for a current mask known to hold all [`crate::LANES`] lanes:
+    /// masked writes write every lane.
+    full: bool,
 }
 
 /// Vector constants in a table the code loads from: a load used once is
@@ -224,7 +227,7 @@ struct Held {
 /// register written several times is stored once. Memory is brought up to
 /// date (`flush`) before branches, before calls, and for the registers a
 /// gather reads; a scatter's registers are dropped (`forget`).
-#[derive(Default)]
+#[derive(Default, Clone)]
 struct Cache {
     held: std::collections::BTreeMap<(Reg, usize), Held>,
     clock: u64,
@@ -328,6 +331,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             after: Vec::new(),
             consts: Consts::default(),
             store_now: None,
+            full: false,
         };
         let base =
             e.b.ins()
@@ -407,7 +411,7 @@ impl<'a, 'b> Emit<'a, 'b> {
     /// Writes `v` (I32X4) into quarter `q` of `d`, under the current mask
     /// when `masked`.
     fn put(&mut self, d: Reg, q: usize, v: Value, masked: bool) {
-        let v = if masked {
+        let v = if masked && !self.full {
             let old = self.ld(d, q);
             let m = self.b.use_var(self.mk[q]);
             self.b.ins().bitselect(m, v, old)
@@ -1059,7 +1063,10 @@ impl<'a, 'b> Emit<'a, 'b> {
     /// the same lanes of its operands (derivatives: on its quad, which is a
     /// quarter), so the order computes the same bits, with a quarter of the
     /// values live at once. After each quarter its values are stored when
-    /// live after op `e - 1`, and dropped.
+    /// live after op `e - 1`, and dropped. A run with masked writes is
+    /// emitted twice, behind a test of the current mask: once for all
+    /// [`crate::LANES`] lanes running (no blends: a masked write then writes
+    /// every lane, the same bits), once with the blends.
     fn quarter_by_quarter(&mut self, s: usize, e: usize) -> Result<(), String> {
         let code = self.code;
         // Whether each op is the run's last writer of its destination.
@@ -1077,11 +1084,55 @@ impl<'a, 'b> Emit<'a, 'b> {
                 }
             }
         }
+        let masked = (s..e).any(|j| {
+            code.ins
+                .get(j)
+                .is_some_and(|i| i.masked || matches!(i.op, Op::Store { .. }))
+        });
+        if !masked {
+            return self.each_quarter(s, e, &last);
+        }
+        // Twice: without the blends of masked writes when every lane runs
+        // (then a masked write writes every lane), and with them.
+        let cur = self.b.use_var(self.cur);
+        let all = self
+            .b
+            .ins()
+            .icmp_imm_u(IntCC::Equal, cur, crate::interp::FULL as i64);
+        let (fast, slow, join) = (
+            self.b.create_block(),
+            self.b.create_block(),
+            self.b.create_block(),
+        );
+        self.b.ins().brif(all, fast, &[], slow, &[]);
+        let held = self.cache.clone();
+        self.b.switch_to_block(fast);
+        self.full = true;
+        let r = self.each_quarter(s, e, &last);
+        self.full = false;
+        r?;
+        self.b.ins().jump(join, &[]);
+        self.cache = held;
+        self.b.switch_to_block(slow);
+        self.each_quarter(s, e, &last)?;
+        self.b.ins().jump(join, &[]);
+        self.b.switch_to_block(join);
+        Ok(())
+    }
+
+    /// [`Self::quarter_by_quarter`]'s passes; `last[j - s]`: op `j` is the
+    /// run's last writer of its destination. Nothing is held after.
+    fn each_quarter(&mut self, s: usize, e: usize, last: &[bool]) -> Result<(), String> {
+        let code = self.code;
         for q in 0..QUARTERS {
             self.only = Some(q);
             for j in s..e {
                 if let Some(ins) = code.ins.get(j) {
-                    self.store_now = if last[j - s] { e.checked_sub(1) } else { None };
+                    self.store_now = if last.get(j - s).copied().unwrap_or(false) {
+                        e.checked_sub(1)
+                    } else {
+                        None
+                    };
                     self.data(ins, j as u32)?;
                 }
             }
