@@ -705,6 +705,21 @@ pub(crate) fn load(
     batch: &Batch,
     pool: Option<&[Lanes]>,
 ) -> bool {
+    load_inputs(k, code, file, batch);
+    let nregs = code.prog.registers as usize;
+    let pool_len = nregs - code.pool_base as usize;
+    match pool {
+        Some(values) if values.len() == pool_len => {
+            file[code.pool_base as usize..nregs].copy_from_slice(values);
+            false
+        }
+        _ => true,
+    }
+}
+
+/// [`load`] without the pool: at least `code.prog.registers` registers,
+/// the live-at-entry ones zeroed, initializers and inputs.
+pub(crate) fn load_inputs(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batch) {
     let nregs = code.prog.registers as usize;
     if file.len() < nregs {
         file.resize(nregs, [0; LANES]);
@@ -728,14 +743,6 @@ pub(crate) fn load(
                 Scalar::Bool => (src[l] != 0.0) as u32,
             });
         }
-    }
-    let pool_len = nregs - code.pool_base as usize;
-    match pool {
-        Some(values) if values.len() == pool_len => {
-            file[code.pool_base as usize..nregs].copy_from_slice(values);
-            false
-        }
-        _ => true,
     }
 }
 

@@ -22,7 +22,9 @@
 //! read afterwards (per-op liveness, `crate::liveness`, with fused masked
 //! stores as partial writes); temporaries never reach memory. Other ops
 //! (calls, gathers, scatters) work on all four quarters, and everything is
-//! in memory at block ends. A fused masked store blends with the
+//! in memory at block ends. The pool registers (`engine`'s per-draw
+//! values) are read where a prepared pool is, not copied into the file,
+//! unless an op run by a callback reads them. A fused masked store blends with the
 //! current-mask vectors; a run with masked writes also has a copy without
 //! the blends, taken when all 16 lanes run. Vector constants are loads from a per-kernel table
 //! (`Native::consts`), which x86 folds into the instruction using them. The
@@ -109,6 +111,9 @@ pub(crate) struct Ctx<'a> {
     uniforms_ptr: *const u32,
     /// The vector constants of the native code (`Native::consts`).
     consts: *const [u32; 4],
+    /// The pool registers (`code.pool_base..`): the prepared pool, or the
+    /// file's own when the prologue runs or a callback reads them there.
+    pool: *const Lanes,
     /// Where `jit_f1`/`jit_f2` put their result.
     scratch: Lanes,
     code: &'a Code,
@@ -128,6 +133,9 @@ pub(crate) struct Native {
     /// constant; loads fold into the instructions using them, where a
     /// constant materialized once per function would be spilled).
     consts: Box<[Const16]>,
+    /// Whether an op run by a callback (`jit_step`) reads pool registers
+    /// from the file (then a prepared pool is copied there).
+    pub(crate) pool_in_file: bool,
     /// Size of the machine code in bytes.
     pub bytes: usize,
 }
@@ -238,7 +246,21 @@ pub(crate) fn run(
     textures: &dyn Textures,
     pool: Option<&[Lanes]>,
 ) -> Result<(), ExecError> {
-    let run_prologue = engine::load(k, code, file, batch, pool);
+    // A prepared pool is read where it is unless callbacks need it in the
+    // file.
+    let pool_base = code.pool_base as usize;
+    let prepared = pool.filter(|p| p.len() == code.prog.registers as usize - pool_base);
+    let (run_prologue, pool_ptr) = match prepared {
+        Some(p) if !native.pool_in_file => {
+            engine::load_inputs(k, code, file, batch);
+            (false, p.as_ptr())
+        }
+        _ => {
+            let run = engine::load(k, code, file, batch, pool);
+            // `load` gave the file at least `code.prog.registers` registers.
+            (run, file.get(pool_base..).unwrap_or_default().as_ptr())
+        }
+    };
     batch.discarded = 0;
     let mut ctx = Ctx {
         regs: file.as_mut_ptr(),
@@ -254,6 +276,7 @@ pub(crate) fn run(
             uniforms.as_ptr()
         },
         consts: native.consts.as_ptr().cast(),
+        pool: pool_ptr,
         scratch: [0; crate::LANES],
         code,
         uniforms,

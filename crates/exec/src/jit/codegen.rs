@@ -81,6 +81,7 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
                 module: Some(module),
                 entry,
                 consts,
+                pool_in_file: pool_in_file(code),
                 bytes,
             })
         }
@@ -133,6 +134,24 @@ fn define(
     Ok((id, bytes, consts))
 }
 
+/// Whether an op of `code.ins` that native code runs through `jit_step`
+/// (or a gather, which addresses the file) reads a pool register.
+fn pool_in_file(code: &Code) -> bool {
+    code.ins.iter().any(|ins| {
+        let inline = separable(ins)
+            || match ins.op {
+                Op::F1 { .. } | Op::F2 { .. } | Op::Scatter { .. } => true,
+                Op::GatherUniform { word, max, .. } => word as u64 + max as u64 <= i32::MAX as u64,
+                _ => false,
+            };
+        !inline
+            && crate::liveness::effects(&code.prog, &ins.op)
+                .uses
+                .iter()
+                .any(|&(r, n)| r as u64 + n.max(1) as u64 > code.pool_base as u64)
+    })
+}
+
 /// Registers live after each op of `code.ins` (empty when the analysis
 /// declines or would take more than 4 MiB).
 fn live_after(code: &Code) -> Vec<Vec<u64>> {
@@ -171,6 +190,8 @@ struct Emit<'a, 'b> {
     ptr: Type,
     ctx: Value,
     regs: Value,
+    /// `Ctx::pool`: where the pool registers are read.
+    pool: Value,
     budget: Value,
     cur: Variable,
     mk: [Variable; QUARTERS],
@@ -295,6 +316,7 @@ impl<'a, 'b> Emit<'a, 'b> {
         b.switch_to_block(entry);
         let ctx = b.block_params(entry)[0];
         let regs = b.ins().load(ptr, mem(), ctx, offset_of!(Ctx, regs) as i32);
+        let pool = b.ins().load(ptr, mem(), ctx, offset_of!(Ctx, pool) as i32);
         let budget = b
             .ins()
             .load(I64, mem(), ctx, offset_of!(Ctx, budget) as i32);
@@ -316,6 +338,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             ptr,
             ctx,
             regs,
+            pool,
             budget,
             cur,
             mk,
@@ -394,10 +417,14 @@ impl<'a, 'b> Emit<'a, 'b> {
             h.used = now;
             return h.v;
         }
-        let v = self
-            .b
-            .ins()
-            .load(I32X4, mem(), self.regs, Self::offset(r, q));
+        let v = if r >= self.code.pool_base {
+            let off = Self::offset(r - self.code.pool_base, q);
+            self.b.ins().load(I32X4, mem(), self.pool, off)
+        } else {
+            self.b
+                .ins()
+                .load(I32X4, mem(), self.regs, Self::offset(r, q))
+        };
         self.hold(r, q, v, false);
         v
     }
@@ -677,8 +704,14 @@ impl<'a, 'b> Emit<'a, 'b> {
         self.b.ins().call_indirect(self.sig_step, f, &[ctx, i, cur]);
     }
 
+    /// Where register `r` is read (pool registers: at `Ctx::pool`).
     fn reg_ptr(&mut self, r: Reg) -> Value {
-        self.b.ins().iadd_imm_s(self.regs, r as i64 * 64)
+        if r >= self.code.pool_base {
+            let off = (r - self.code.pool_base) as i64 * 64;
+            self.b.ins().iadd_imm_s(self.pool, off)
+        } else {
+            self.b.ins().iadd_imm_s(self.regs, r as i64 * 64)
+        }
     }
 
     /// Calls `jit_f1`/`jit_f2` into the scratch register, then copies it

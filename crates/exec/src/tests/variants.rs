@@ -110,6 +110,56 @@ fn every_variant_computes_the_same_bytes() {
     }
 }
 
+/// Runs with the uniforms prepared once ([`Kernel::prepare`]: the pool
+/// computed ahead) compute the same bytes as the reference, in every
+/// variant; native code reads the prepared pool where it is.
+#[test]
+fn prepared_runs_compute_the_same_bytes() {
+    for (n, (stage, src)) in SHADERS.iter().enumerate() {
+        let linked = link_one(*stage, src).unwrap_or_else(|e| panic!("shader {n}: {e}"));
+        let k = Kernel::new(&linked).expect("lowers");
+        k.compile_native();
+        let u: Vec<u32> = (0..k.interface().uniform_words)
+            .map(|w| (0.5 + w as f32 * 0.25).to_bits())
+            .collect();
+        let prepared = k.prepare(&u);
+        for round in 0..8u32 {
+            let active = if round % 2 == 1 { 0x0ff0 } else { 0xffff };
+            let mut base = Batch::for_kernel(&k, active);
+            fill(&mut base, round + 7);
+            let mut want = base.clone();
+            let r0 = k.run_reference(&mut want, &u, &NoTextures);
+            for v in supported_variants() {
+                // Garbage in the thread's register file: what a run reads
+                // must come from the batch and the prepared pool.
+                crate::engine::FILE.with(|f| {
+                    for r in f.borrow_mut().iter_mut() {
+                        *r = [0x7fc0_dead; crate::LANES];
+                    }
+                });
+                let mut got = base.clone();
+                let r = crate::engine::run_on(
+                    v,
+                    &k,
+                    &k.code,
+                    &mut got,
+                    &prepared.uniforms,
+                    &NoTextures,
+                    Some(&prepared.pool),
+                );
+                assert_eq!(r, r0, "shader {n} {}: result", v.name());
+                assert_eq!(got.discarded, want.discarded, "shader {n} {}", v.name());
+                assert_eq!(
+                    bits_of(&got.outputs),
+                    bits_of(&want.outputs),
+                    "shader {n} {} round {round}: outputs",
+                    v.name()
+                );
+            }
+        }
+    }
+}
+
 /// Time per 16-lane batch of the sphere-impostor fragment shader with the
 /// reference interpreter and each executor variant, best of 7 rounds
 /// (run with `cargo test --release -p shaderbox-exec bench_sphere --
