@@ -737,11 +737,11 @@ pub(crate) fn load_inputs(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch:
     for &(ic, reg, kind) in &k.inputs {
         let src = batch.inputs.get(ic).copied().unwrap_or([0.0; LANES]);
         if let Some(x) = file.get_mut(reg as usize) {
-            *x = lanes(|l| match kind {
-                Scalar::Float => src[l].to_bits(),
-                Scalar::Int => src[l] as i32 as u32,
-                Scalar::Bool => (src[l] != 0.0) as u32,
-            });
+            *x = match kind {
+                Scalar::Float => src.map(f32::to_bits),
+                Scalar::Int => src.map(|v| v as i32 as u32),
+                Scalar::Bool => src.map(|v| (v != 0.0) as u32),
+            };
         }
     }
 }
@@ -759,14 +759,16 @@ pub(crate) fn store_outputs(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
             continue;
         };
         if let Some(dst) = batch.outputs.get_mut(oc) {
+            // The kind chosen once per output, the lanes selected without
+            // branches (so the loops vectorize).
+            let value: Lanes = match kind {
+                Scalar::Float => src,
+                Scalar::Int => src.map(|x| (x as i32 as f32).to_bits()),
+                Scalar::Bool => src.map(|x| ((x != 0) as u32 as f32).to_bits()),
+            };
             for (l, v) in dst.iter_mut().enumerate() {
-                if active & (1 << l) != 0 {
-                    *v = match kind {
-                        Scalar::Float => f(src[l]),
-                        Scalar::Int => src[l] as i32 as f32,
-                        Scalar::Bool => (src[l] != 0) as u32 as f32,
-                    };
-                }
+                let on = 0u32.wrapping_sub((active >> l) & 1);
+                *v = f32::from_bits((value[l] & on) | (v.to_bits() & !on));
             }
         }
     }
