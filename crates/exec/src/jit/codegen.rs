@@ -448,11 +448,12 @@ impl<'a, 'b> Emit<'a, 'b> {
         // The last write of a run to a register read after it is stored
         // here, not at the run's end: Cranelift computes a value where
         // its first side-effecting use is, so a store at the end would
-        // move the run's arithmetic there, away from its loads.
+        // move the run's arithmetic there, away from its loads. Later
+        // reads load it again (holding it made Cranelift spill it).
         if let Some(end) = self.store_now {
             if self.live_after(end, d) {
                 self.b.ins().store(mem(), v, self.regs, Self::offset(d, q));
-                self.hold(d, q, v, false);
+                self.cache.held.remove(&(d, q));
                 return;
             }
         }
