@@ -205,11 +205,12 @@ fn bench_sphere() {
     }
     let reference = time(&mut |b| k.run_reference(b, &u, &NoTextures).unwrap());
     eprintln!(
-        "sphere.frag: {} ops (executor: {}, prologue {}, {} registers); reference interpreter {reference:.0} ns/batch",
+        "sphere.frag: {} ops (executor: {}, prologue {}, {} registers, {} zeroed per run); reference interpreter {reference:.0} ns/batch",
         k.op_count(),
         k.code.ins.len(),
         k.code.prologue.len(),
-        k.code.prog.registers
+        k.code.prog.registers,
+        k.code.zero.len()
     );
     for v in supported_variants() {
         let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
@@ -224,8 +225,9 @@ fn bench_sphere() {
     if let Some(d) = k.depth_only() {
         let t = time(&mut |b| d.run(b, &u, &NoTextures).unwrap());
         eprintln!(
-            "  depth_only: {} ops, {t:.0} ns/batch ({:.2}x)",
+            "  depth_only: {} ops, {} zeroed per run, {t:.0} ns/batch ({:.2}x)",
             d.op_count(),
+            d.code.zero.len(),
             reference / t
         );
     }
