@@ -126,9 +126,9 @@
 //! program costs no code generation and kernels that run a few batches
 //! never pay for it; [`Kernel::compile_native`] compiles at once.
 //! Measured per 16-lane batch on a 2-core Zen 4 (`bench_sphere`,
-//! `bench_materials`, prepared uniforms): the sphere-impostor shader
-//! about 0.78× the AVX2 interpreter's time, the lit-mesh materials shader
-//! about 0.68×.
+//! `bench_materials`, prepared uniforms, all 16 lanes active): the
+//! sphere-impostor shader about 0.76× the AVX2 interpreter's time, the
+//! lit-mesh materials shader about 0.55×.
 //! Limitations: kernels with subroutine calls (inlining limit exceeded)
 //! or over 6000 executor ops stay on the interpreter, as does everything
 //! when Cranelift does not support the CPU or fails (the reason:
