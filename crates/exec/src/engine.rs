@@ -49,6 +49,8 @@ pub(crate) struct Code {
     pub pool_base: u32,
     /// Registers to zero at the start of a run.
     pub zero: Vec<Reg>,
+    /// The output registers (live at the end of a run).
+    pub live_out: Vec<Reg>,
 }
 
 /// Programs with more ops than this are run unrewritten (the analysis
@@ -62,17 +64,18 @@ pub(crate) fn compile(p: &Program, live_out: &[Reg]) -> Code {
             return c;
         }
     }
-    plain(p)
+    plain(p, live_out)
 }
 
 /// The program as it is, every register zeroed at the start.
-fn plain(p: &Program) -> Code {
+fn plain(p: &Program, live_out: &[Reg]) -> Code {
     Code {
         prog: p.clone(),
         ins: p.ops.iter().map(|&op| Ins { op, masked: false }).collect(),
         prologue: Vec::new(),
         pool_base: p.registers,
         zero: (0..p.registers).collect(),
+        live_out: live_out.to_vec(),
     }
 }
 
@@ -414,6 +417,7 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
         prologue,
         pool_base,
         zero,
+        live_out: live_out.to_vec(),
     })
 }
 
@@ -701,6 +705,21 @@ pub(crate) fn load(
     batch: &Batch,
     pool: Option<&[Lanes]>,
 ) -> bool {
+    load_inputs(k, code, file, batch);
+    let nregs = code.prog.registers as usize;
+    let pool_len = nregs - code.pool_base as usize;
+    match pool {
+        Some(values) if values.len() == pool_len => {
+            file[code.pool_base as usize..nregs].copy_from_slice(values);
+            false
+        }
+        _ => true,
+    }
+}
+
+/// [`load`] without the pool: at least `code.prog.registers` registers,
+/// the live-at-entry ones zeroed, initializers and inputs.
+pub(crate) fn load_inputs(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batch) {
     let nregs = code.prog.registers as usize;
     if file.len() < nregs {
         file.resize(nregs, [0; LANES]);
@@ -718,20 +737,12 @@ pub(crate) fn load(
     for &(ic, reg, kind) in &k.inputs {
         let src = batch.inputs.get(ic).copied().unwrap_or([0.0; LANES]);
         if let Some(x) = file.get_mut(reg as usize) {
-            *x = lanes(|l| match kind {
-                Scalar::Float => src[l].to_bits(),
-                Scalar::Int => src[l] as i32 as u32,
-                Scalar::Bool => (src[l] != 0.0) as u32,
-            });
+            *x = match kind {
+                Scalar::Float => src.map(f32::to_bits),
+                Scalar::Int => src.map(|v| v as i32 as u32),
+                Scalar::Bool => src.map(|v| (v != 0.0) as u32),
+            };
         }
-    }
-    let pool_len = nregs - code.pool_base as usize;
-    match pool {
-        Some(values) if values.len() == pool_len => {
-            file[code.pool_base as usize..nregs].copy_from_slice(values);
-            false
-        }
-        _ => true,
     }
 }
 
@@ -748,14 +759,16 @@ pub(crate) fn store_outputs(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
             continue;
         };
         if let Some(dst) = batch.outputs.get_mut(oc) {
+            // The kind chosen once per output, the lanes selected without
+            // branches (so the loops vectorize).
+            let value: Lanes = match kind {
+                Scalar::Float => src,
+                Scalar::Int => src.map(|x| (x as i32 as f32).to_bits()),
+                Scalar::Bool => src.map(|x| ((x != 0) as u32 as f32).to_bits()),
+            };
             for (l, v) in dst.iter_mut().enumerate() {
-                if active & (1 << l) != 0 {
-                    *v = match kind {
-                        Scalar::Float => f(src[l]),
-                        Scalar::Int => src[l] as i32 as f32,
-                        Scalar::Bool => (src[l] != 0) as u32 as f32,
-                    };
-                }
+                let on = 0u32.wrapping_sub((active >> l) & 1);
+                *v = f32::from_bits((value[l] & on) | (v.to_bits() & !on));
             }
         }
     }
@@ -1355,17 +1368,20 @@ mod tests {
             }
             for func in three {
                 // The F3 arms are inlined in `step`: run them as an op.
-                let code = plain(&Program {
-                    ops: vec![Op::F3 {
-                        f: func,
-                        d: 3,
-                        a: 0,
-                        b: 1,
-                        c: 2,
-                    }],
-                    registers: 4,
-                    ..Program::default()
-                });
+                let code = plain(
+                    &Program {
+                        ops: vec![Op::F3 {
+                            f: func,
+                            d: 3,
+                            a: 0,
+                            b: 1,
+                            c: 2,
+                        }],
+                        registers: 4,
+                        ..Program::default()
+                    },
+                    &[3],
+                );
                 let mut regs = [*x, *y, *z, [0; LANES]];
                 let mut st_masks = [0; 0];
                 let mut st_ret = [0; 0];

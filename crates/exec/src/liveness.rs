@@ -22,12 +22,20 @@ pub(crate) struct Liveness {
     pub entry: Vec<u64>,
     /// Per op: for a `Store { a, .. }`, `a` is dead after the store.
     pub store_source_dead: Vec<bool>,
+    /// Per op, when asked for ([`analyze_after`]): the registers live
+    /// after it (one bit each), else empty.
+    pub after: Vec<Vec<u64>>,
 }
 
 impl Liveness {
     pub fn entry_live(&self, r: Reg) -> bool {
         get(&self.entry, r)
     }
+}
+
+/// Whether register `r` is in the bit set `bits` (as in [`Liveness::after`]).
+pub(crate) fn is_live(bits: &[u64], r: Reg) -> bool {
+    get(bits, r)
 }
 
 /// The analysis keeps one bit per register per basic block; beyond this many
@@ -38,6 +46,31 @@ const MAX_BITS: u64 = 1 << 27;
 /// registers using `p`'s side tables) with `live_out` live at the end;
 /// `None` when the analysis would be too large.
 pub(crate) fn analyze(p: &Program, ops: &[Op], nregs: u32, live_out: &[Reg]) -> Option<Liveness> {
+    analyze_with(p, ops, nregs, live_out, None)
+}
+
+/// [`analyze`], also filling [`Liveness::after`] (`ops.len()` bit sets of
+/// `nregs` bits: for programs of a bounded size). `masked[i]`: op `i`
+/// writes its destinations under the current mask only (a fused store of
+/// the executor), so it does not kill them.
+pub(crate) fn analyze_after(
+    p: &Program,
+    ops: &[Op],
+    masked: &[bool],
+    nregs: u32,
+    live_out: &[Reg],
+) -> Option<Liveness> {
+    analyze_with(p, ops, nregs, live_out, Some(masked))
+}
+
+fn analyze_with(
+    p: &Program,
+    ops: &[Op],
+    nregs: u32,
+    live_out: &[Reg],
+    masked: Option<&[bool]>,
+) -> Option<Liveness> {
+    let want_after = masked.is_some();
     let n = ops.len();
     let nregs = nregs as usize;
     if n == 0 {
@@ -93,7 +126,18 @@ pub(crate) fn analyze(p: &Program, ops: &[Op], nregs: u32, live_out: &[Reg]) -> 
         })
         .collect();
 
-    let eff: Vec<Effects> = ops.iter().map(|op| effects(p, op)).collect();
+    let eff: Vec<Effects> = ops
+        .iter()
+        .enumerate()
+        .map(|(i, op)| {
+            let mut e = effects(p, op);
+            if masked.and_then(|m| m.get(i)).copied().unwrap_or(false) {
+                let full = std::mem::take(&mut e.full_defs);
+                e.partial_defs.extend(full);
+            }
+            e
+        })
+        .collect();
     let mut exit = vec![0u64; words];
     for &r in live_out {
         set(&mut exit, r);
@@ -136,6 +180,11 @@ pub(crate) fn analyze(p: &Program, ops: &[Op], nregs: u32, live_out: &[Reg]) -> 
     // Mark the kept ops with the final live-out sets.
     let mut keep = vec![false; n];
     let mut store_source_dead = vec![false; n];
+    let mut after = if want_after {
+        vec![Vec::new(); n]
+    } else {
+        Vec::new()
+    };
     for b in 0..nblocks {
         live.iter_mut().for_each(|w| *w = 0);
         for &s in &succs[b] {
@@ -152,6 +201,9 @@ pub(crate) fn analyze(p: &Program, ops: &[Op], nregs: u32, live_out: &[Reg]) -> 
             }
         }
         for i in (starts[b]..end_of(b)).rev() {
+            if let Some(a) = after.get_mut(i) {
+                a.clone_from(&live);
+            }
             keep[i] = needed(&eff[i], &live);
             if let Op::Store { a, .. } = ops[i] {
                 store_source_dead[i] = !get(&live, a);
@@ -164,6 +216,7 @@ pub(crate) fn analyze(p: &Program, ops: &[Op], nregs: u32, live_out: &[Reg]) -> 
         keep,
         entry,
         store_source_dead,
+        after,
     })
 }
 

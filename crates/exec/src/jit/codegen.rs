@@ -1,7 +1,7 @@
 //! Cranelift IR for a [`Code`]: one function `fn(*mut Ctx) -> u32`.
 
 use super::PROLOGUE_OP;
-use super::{jit_f1, jit_f2, jit_step, Ctx, Entry, Native, F1_CALLED, F2_CALLED, MAX_OPS};
+use super::{jit_step, math_helpers, Const16, Ctx, Entry, Native, F1_CALLED, F2_CALLED, MAX_OPS};
 use crate::engine::{Code, Ins};
 use crate::program::{Op, Reg, F1, F2, F3};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
@@ -60,7 +60,7 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
     let mut module = JITModule::new(JITBuilder::with_isa(isa, default_libcall_names()));
     let r = define(&mut module, code);
     match r {
-        Ok((id, bytes)) => {
+        Ok((id, bytes, consts)) => {
             if let Err(e) = module.finalize_definitions() {
                 // SAFETY: nothing of the module was handed out.
                 unsafe { module.free_memory() };
@@ -80,6 +80,8 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
             Ok(Native {
                 module: Some(module),
                 entry,
+                consts,
+                pool_in_file: pool_in_file(code),
                 bytes,
             })
         }
@@ -91,10 +93,11 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
     }
 }
 
+/// Defines the function; returns it, its code size and its constants.
 fn define(
     module: &mut JITModule,
     code: &Code,
-) -> Result<(cranelift_module::FuncId, usize), String> {
+) -> Result<(cranelift_module::FuncId, usize, Box<[Const16]>), String> {
     let ptr = module.target_config().pointer_type();
     let mut sig = module.make_signature();
     sig.params.push(AbiParam::new(ptr));
@@ -106,13 +109,21 @@ fn define(
     ctx.func.signature = sig;
     ctx.func.name = UserFuncName::user(0, id.as_u32());
     let mut fctx = FunctionBuilderContext::new();
-    {
+    let consts = {
         let b = FunctionBuilder::new(&mut ctx.func, &mut fctx);
         let mut e = Emit::new(b, module, code, ptr);
+        e.after = live_after(code);
         e.body()?;
         e.b.seal_all_blocks();
         e.b.finalize(module.target_config());
-    }
+        e.consts.table
+    };
+    // At least one entry: the pointer the code receives is never dangling.
+    let consts: Box<[Const16]> = if consts.is_empty() {
+        vec![Const16([0; 4])].into()
+    } else {
+        consts.into_iter().map(Const16).collect()
+    };
     module
         .define_function(id, &mut ctx)
         .map_err(|e| format!("cranelift: {e:?}"))?;
@@ -120,7 +131,44 @@ fn define(
         .compiled_code()
         .map(|c| c.code_buffer().len())
         .unwrap_or(0);
-    Ok((id, bytes))
+    Ok((id, bytes, consts))
+}
+
+/// Whether an op of `code.ins` that native code runs through `jit_step`
+/// (or a gather, which addresses the file) reads a pool register.
+fn pool_in_file(code: &Code) -> bool {
+    code.ins.iter().any(|ins| {
+        let inline = separable(ins)
+            || match ins.op {
+                Op::F1 { .. } | Op::F2 { .. } | Op::Scatter { .. } => true,
+                Op::GatherUniform { word, max, .. } => word as u64 + max as u64 <= i32::MAX as u64,
+                _ => false,
+            };
+        !inline
+            && crate::liveness::effects(&code.prog, &ins.op)
+                .uses
+                .iter()
+                .any(|&(r, n)| r as u64 + n.max(1) as u64 > code.pool_base as u64)
+    })
+}
+
+/// Registers live after each op of `code.ins` (empty when the analysis
+/// declines or would take more than 4 MiB).
+fn live_after(code: &Code) -> Vec<Vec<u64>> {
+    let words = (code.prog.registers as usize).div_ceil(64);
+    if code.ins.len().saturating_mul(words) > (1 << 19) {
+        return Vec::new();
+    }
+    let masked: Vec<bool> = code.ins.iter().map(|i| i.masked).collect();
+    crate::liveness::analyze_after(
+        &code.prog,
+        &code.prog.ops,
+        &masked,
+        code.prog.registers,
+        &code.live_out,
+    )
+    .map(|l| l.after)
+    .unwrap_or_default()
 }
 
 fn helper_sig(module: &JITModule, ptr: Type, params: &[Type]) -> Signature {
@@ -142,6 +190,8 @@ struct Emit<'a, 'b> {
     ptr: Type,
     ctx: Value,
     regs: Value,
+    /// `Ctx::pool`: where the pool registers are read.
+    pool: Value,
     budget: Value,
     cur: Variable,
     mk: [Variable; QUARTERS],
@@ -155,6 +205,33 @@ struct Emit<'a, 'b> {
     fail: Block,
     /// Register quarters held in SSA values in the current block.
     cache: Cache,
+    /// While emitting a run of lane-wise ops quarter by quarter: the
+    /// quarter; `None`: every op emits all four.
+    only: Option<usize>,
+    /// Per op of `code.ins`: the registers live after it (empty when the
+    /// analysis declined: then everything is stored).
+    after: Vec<Vec<u64>>,
+    /// The vector constants, loaded from `Ctx::consts`.
+    consts: Consts,
+    /// In a quarter-by-quarter run: the op after which liveness decides
+    /// what is stored, when the op being emitted is the run's last writer
+    /// of its destination (which it then stores at once).
+    store_now: Option<usize>,
+    /// Emitting for a current mask known to hold all [`crate::LANES`] lanes:
+    /// masked writes write every lane.
+    full: bool,
+}
+
+/// Vector constants in a table the code loads from: a load used once is
+/// folded into the instruction using it, and loads of one entry between
+/// two stores become one value (Cranelift would otherwise compute each
+/// constant once for the whole function and spill it).
+#[derive(Default)]
+struct Consts {
+    table: Vec<[u32; 4]>,
+    index: std::collections::HashMap<[u32; 4], u32>,
+    /// `Ctx::consts`, loaded at the entry.
+    base: Option<Value>,
 }
 
 /// A quarter of a register held in an SSA value: `dirty` when memory does
@@ -171,7 +248,7 @@ struct Held {
 /// register written several times is stored once. Memory is brought up to
 /// date (`flush`) before branches, before calls, and for the registers a
 /// gather reads; a scatter's registers are dropped (`forget`).
-#[derive(Default)]
+#[derive(Default, Clone)]
 struct Cache {
     held: std::collections::BTreeMap<(Reg, usize), Held>,
     clock: u64,
@@ -179,6 +256,54 @@ struct Cache {
 
 /// At most this many quarters are held (more only makes Cranelift spill).
 const HELD: usize = 48;
+
+/// Data ops emitted inline whose lanes `4q..4q + 4` of the result depend
+/// only on lanes `4q..4q + 4` of their operands and of the mask, with no
+/// call, branch or memory access besides their registers' (and uniform
+/// words).
+fn separable(ins: &Ins) -> bool {
+    match ins.op {
+        Op::F1 { f, .. } => !F1_CALLED.contains(&f),
+        Op::F2 { f, .. } => !F2_CALLED.contains(&f),
+        Op::ClampIdx { max, .. } => max <= i32::MAX as u32,
+        Op::Const { .. }
+        | Op::Mov { .. }
+        | Op::Store { .. }
+        | Op::FAdd { .. }
+        | Op::FSub { .. }
+        | Op::FMul { .. }
+        | Op::FDiv { .. }
+        | Op::FNeg { .. }
+        | Op::FMac { .. }
+        | Op::Dot { .. }
+        | Op::F3 { .. }
+        | Op::FLt { .. }
+        | Op::FLe { .. }
+        | Op::FEq { .. }
+        | Op::IAdd { .. }
+        | Op::ISub { .. }
+        | Op::IMul { .. }
+        | Op::INeg { .. }
+        | Op::ILt { .. }
+        | Op::ILe { .. }
+        | Op::IEq { .. }
+        | Op::And { .. }
+        | Op::Or { .. }
+        | Op::Xor { .. }
+        | Op::Not { .. }
+        | Op::FToI { .. }
+        | Op::IToF { .. }
+        | Op::FToB { .. }
+        | Op::IToB { .. }
+        | Op::BToF { .. }
+        | Op::Select { .. }
+        | Op::Uniform { .. }
+        | Op::DdX { .. }
+        | Op::DdY { .. }
+        | Op::Printf { .. } => true,
+        _ => false,
+    }
+}
 
 fn mem() -> MemFlagsData {
     MemFlagsData::new().with_notrap()
@@ -191,6 +316,7 @@ impl<'a, 'b> Emit<'a, 'b> {
         b.switch_to_block(entry);
         let ctx = b.block_params(entry)[0];
         let regs = b.ins().load(ptr, mem(), ctx, offset_of!(Ctx, regs) as i32);
+        let pool = b.ins().load(ptr, mem(), ctx, offset_of!(Ctx, pool) as i32);
         let budget = b
             .ins()
             .load(I64, mem(), ctx, offset_of!(Ctx, budget) as i32);
@@ -212,6 +338,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             ptr,
             ctx,
             regs,
+            pool,
             budget,
             cur,
             mk,
@@ -223,7 +350,16 @@ impl<'a, 'b> Emit<'a, 'b> {
             sig_f2,
             fail,
             cache: Cache::default(),
+            only: None,
+            after: Vec::new(),
+            consts: Consts::default(),
+            store_now: None,
+            full: false,
         };
+        let base =
+            e.b.ins()
+                .load(ptr, mem(), ctx, offset_of!(Ctx, consts) as i32);
+        e.consts.base = Some(base);
         let zero = e.b.ins().iconst(I32, 0);
         for &m in &e.masks {
             e.b.def_var(m, zero);
@@ -245,13 +381,20 @@ impl<'a, 'b> Emit<'a, 'b> {
     }
 
     fn vconst(&mut self, lanes: [u32; 4]) -> Value {
-        if lanes.iter().all(|&l| l == lanes[0]) {
-            let k = self.b.ins().iconst(I32, lanes[0] as i32 as i64);
-            return self.b.ins().splat(I32X4, k);
+        let c = &mut self.consts;
+        let next = c.table.len() as u32;
+        let i = *c.index.entry(lanes).or_insert(next);
+        if i == next {
+            c.table.push(lanes);
         }
-        let bytes: Vec<u8> = lanes.iter().flat_map(|l| l.to_le_bytes()).collect();
-        let c = self.b.func.dfg.constants.insert(ConstantData::from(bytes));
-        self.b.ins().vconst(I32X4, c)
+        match (c.base, i32::try_from(i as u64 * 16)) {
+            (Some(base), Ok(off)) => self.b.ins().load(I32X4, mem().with_aligned(), base, off),
+            _ => {
+                let bytes: Vec<u8> = lanes.iter().flat_map(|l| l.to_le_bytes()).collect();
+                let c = self.b.func.dfg.constants.insert(ConstantData::from(bytes));
+                self.b.ins().vconst(I32X4, c)
+            }
+        }
     }
 
     fn fv(&mut self, v: Value) -> Value {
@@ -274,10 +417,14 @@ impl<'a, 'b> Emit<'a, 'b> {
             h.used = now;
             return h.v;
         }
-        let v = self
-            .b
-            .ins()
-            .load(I32X4, mem(), self.regs, Self::offset(r, q));
+        let v = if r >= self.code.pool_base {
+            let off = Self::offset(r - self.code.pool_base, q);
+            self.b.ins().load(I32X4, mem(), self.pool, off)
+        } else {
+            self.b
+                .ins()
+                .load(I32X4, mem(), self.regs, Self::offset(r, q))
+        };
         self.hold(r, q, v, false);
         v
     }
@@ -291,13 +438,25 @@ impl<'a, 'b> Emit<'a, 'b> {
     /// Writes `v` (I32X4) into quarter `q` of `d`, under the current mask
     /// when `masked`.
     fn put(&mut self, d: Reg, q: usize, v: Value, masked: bool) {
-        let v = if masked {
+        let v = if masked && !self.full {
             let old = self.ld(d, q);
             let m = self.b.use_var(self.mk[q]);
             self.b.ins().bitselect(m, v, old)
         } else {
             v
         };
+        // The last write of a run to a register read after it is stored
+        // here, not at the run's end: Cranelift computes a value where
+        // its first side-effecting use is, so a store at the end would
+        // move the run's arithmetic there, away from its loads. Later
+        // reads load it again (holding it made Cranelift spill it).
+        if let Some(end) = self.store_now {
+            if self.live_after(end, d) {
+                self.b.ins().store(mem(), v, self.regs, Self::offset(d, q));
+                self.cache.held.remove(&(d, q));
+                return;
+            }
+        }
         self.hold(d, q, v, true);
     }
 
@@ -362,6 +521,47 @@ impl<'a, 'b> Emit<'a, 'b> {
             .collect();
         for k in keys {
             self.cache.held.remove(&k);
+        }
+    }
+
+    /// The quarters the current op emits (see `only`).
+    fn quarters(&self) -> std::ops::Range<usize> {
+        match self.only {
+            Some(q) => q..q + 1,
+            None => 0..QUARTERS,
+        }
+    }
+
+    /// Whether register `r` may be read after op `i` (a pool register, or
+    /// live by the analysis; everything when there is none).
+    fn live_after(&self, i: usize, r: Reg) -> bool {
+        r >= self.code.pool_base
+            || self
+                .after
+                .get(i)
+                .is_none_or(|bits| crate::liveness::is_live(bits, r))
+    }
+
+    /// Ends the held values of quarter `q` (every quarter: `None`): stores
+    /// the dirty ones that are live after op `i` (all dirty ones: `i` =
+    /// `None`) and drops them all.
+    fn retire(&mut self, q: Option<usize>, i: Option<usize>) {
+        let keys: Vec<(Reg, usize)> = self
+            .cache
+            .held
+            .keys()
+            .filter(|k| q.is_none_or(|q| k.1 == q))
+            .copied()
+            .collect();
+        for k in keys {
+            let Some(h) = self.cache.held.remove(&k) else {
+                continue;
+            };
+            if h.dirty && i.is_none_or(|i| self.live_after(i, k.0)) {
+                self.b
+                    .ins()
+                    .store(mem(), h.v, self.regs, Self::offset(k.0, k.1));
+            }
         }
     }
 
@@ -505,8 +705,14 @@ impl<'a, 'b> Emit<'a, 'b> {
         self.b.ins().call_indirect(self.sig_step, f, &[ctx, i, cur]);
     }
 
+    /// Where register `r` is read (pool registers: at `Ctx::pool`).
     fn reg_ptr(&mut self, r: Reg) -> Value {
-        self.b.ins().iadd_imm_s(self.regs, r as i64 * 64)
+        if r >= self.code.pool_base {
+            let off = (r - self.code.pool_base) as i64 * 64;
+            self.b.ins().iadd_imm_s(self.pool, off)
+        } else {
+            self.b.ins().iadd_imm_s(self.regs, r as i64 * 64)
+        }
     }
 
     /// Calls `jit_f1`/`jit_f2` into the scratch register, then copies it
@@ -522,12 +728,12 @@ impl<'a, 'b> Emit<'a, 'b> {
         let pa = self.reg_ptr(a);
         if two {
             let pb = self.reg_ptr(b);
-            let f = self.b.ins().iconst(self.ptr, jit_f2 as *const () as i64);
+            let f = self.b.ins().iconst(self.ptr, math_helpers().1 as i64);
             self.b
                 .ins()
                 .call_indirect(self.sig_f2, f, &[fi, out, pa, pb]);
         } else {
-            let f = self.b.ins().iconst(self.ptr, jit_f1 as *const () as i64);
+            let f = self.b.ins().iconst(self.ptr, math_helpers().0 as i64);
             self.b.ins().call_indirect(self.sig_f1, f, &[fi, out, pa]);
         }
         for q in 0..QUARTERS {
@@ -755,23 +961,33 @@ impl<'a, 'b> Emit<'a, 'b> {
         self.b.ins().jump(block(0)?, &[]);
 
         let mut open = false;
-        for (i, ins) in code.ins.iter().enumerate() {
+        let mut i = 0;
+        while let Some(ins) = code.ins.get(i) {
             if leader[i] {
                 if open {
-                    self.flush_all();
+                    self.retire(None, i.checked_sub(1));
                     self.b.ins().jump(block(i)?, &[]);
                 }
                 self.b.switch_to_block(block(i)?);
                 open = true;
             }
+            if separable(ins) {
+                let mut e = i + 1;
+                while e < n && !leader[e] && code.ins.get(e).is_some_and(separable) {
+                    e += 1;
+                }
+                self.quarter_by_quarter(i, e)?;
+                i = e;
+                continue;
+            }
             match ins.op {
                 Op::Jump { target } => {
-                    self.flush_all();
+                    self.retire(None, Some(i));
                     self.b.ins().jump(block(target as usize)?, &[]);
                     open = false;
                 }
                 Op::JumpIfNone { target } => {
-                    self.flush_all();
+                    self.retire(None, Some(i));
                     let cur = self.b.use_var(self.cur);
                     let (t, next) = (block(target as usize)?, block(i + 1)?);
                     self.b.ins().brif(cur, next, &[], t, &[]);
@@ -851,10 +1067,11 @@ impl<'a, 'b> Emit<'a, 'b> {
                 }
                 _ => self.data(ins, i as u32)?,
             }
+            i += 1;
         }
         let exit = block(n)?;
         if open {
-            self.flush_all();
+            self.retire(None, n.checked_sub(1));
             self.b.ins().jump(exit, &[]);
         }
         self.b.switch_to_block(exit);
@@ -875,12 +1092,97 @@ impl<'a, 'b> Emit<'a, 'b> {
         Ok(())
     }
 
+    /// Ops `s..e` (lane-wise, `separable`) one quarter at a time: all of
+    /// them on lanes 0-3, then on 4-7, ...; each op's lanes depend only on
+    /// the same lanes of its operands (derivatives: on its quad, which is a
+    /// quarter), so the order computes the same bits, with a quarter of the
+    /// values live at once. After each quarter its values are stored when
+    /// live after op `e - 1`, and dropped. A run with masked writes is
+    /// emitted twice, behind a test of the current mask: once for all
+    /// [`crate::LANES`] lanes running (no blends: a masked write then writes
+    /// every lane, the same bits), once with the blends.
+    fn quarter_by_quarter(&mut self, s: usize, e: usize) -> Result<(), String> {
+        let code = self.code;
+        // Whether each op is the run's last writer of its destination.
+        let mut last = vec![false; e.saturating_sub(s)];
+        let mut seen = std::collections::HashSet::new();
+        for j in (s..e).rev() {
+            if let Some(ins) = code.ins.get(j) {
+                let fx = crate::liveness::effects(&code.prog, &ins.op);
+                if let ([(d, 1)], []) | ([], [(d, 1)]) =
+                    (fx.full_defs.as_slice(), fx.partial_defs.as_slice())
+                {
+                    if seen.insert(*d) {
+                        last[j - s] = true;
+                    }
+                }
+            }
+        }
+        let masked = (s..e).any(|j| {
+            code.ins
+                .get(j)
+                .is_some_and(|i| i.masked || matches!(i.op, Op::Store { .. }))
+        });
+        if !masked {
+            return self.each_quarter(s, e, &last);
+        }
+        // Twice: without the blends of masked writes when every lane runs
+        // (then a masked write writes every lane), and with them.
+        let cur = self.b.use_var(self.cur);
+        let all = self
+            .b
+            .ins()
+            .icmp_imm_u(IntCC::Equal, cur, crate::interp::FULL as i64);
+        let (fast, slow, join) = (
+            self.b.create_block(),
+            self.b.create_block(),
+            self.b.create_block(),
+        );
+        self.b.ins().brif(all, fast, &[], slow, &[]);
+        let held = self.cache.clone();
+        self.b.switch_to_block(fast);
+        self.full = true;
+        let r = self.each_quarter(s, e, &last);
+        self.full = false;
+        r?;
+        self.b.ins().jump(join, &[]);
+        self.cache = held;
+        self.b.switch_to_block(slow);
+        self.each_quarter(s, e, &last)?;
+        self.b.ins().jump(join, &[]);
+        self.b.switch_to_block(join);
+        Ok(())
+    }
+
+    /// [`Self::quarter_by_quarter`]'s passes; `last[j - s]`: op `j` is the
+    /// run's last writer of its destination. Nothing is held after.
+    fn each_quarter(&mut self, s: usize, e: usize, last: &[bool]) -> Result<(), String> {
+        let code = self.code;
+        for q in 0..QUARTERS {
+            self.only = Some(q);
+            for j in s..e {
+                if let Some(ins) = code.ins.get(j) {
+                    self.store_now = if last.get(j - s).copied().unwrap_or(false) {
+                        e.checked_sub(1)
+                    } else {
+                        None
+                    };
+                    self.data(ins, j as u32)?;
+                }
+            }
+            self.store_now = None;
+            self.retire(Some(q), e.checked_sub(1));
+        }
+        self.only = None;
+        Ok(())
+    }
+
     /// A data op (no control flow); `index`: its index for `jit_step`.
     fn data(&mut self, ins: &Ins, index: u32) -> Result<(), String> {
         let m = ins.masked;
         macro_rules! each {
             ($d:expr, |$q:ident| $body:expr) => {{
-                for $q in 0..QUARTERS {
+                for $q in self.quarters() {
                     let v = $body;
                     self.put($d, $q, v, m);
                 }
@@ -942,7 +1244,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             Op::Const { d, bits } => each!(d, |q| self.splat(bits)),
             Op::Mov { d, a } => each!(d, |q| self.ld(a, q)),
             Op::Store { d, a } => {
-                for q in 0..QUARTERS {
+                for q in self.quarters() {
                     let v = self.ld(a, q);
                     self.put(d, q, v, true);
                 }

@@ -110,6 +110,56 @@ fn every_variant_computes_the_same_bytes() {
     }
 }
 
+/// Runs with the uniforms prepared once ([`Kernel::prepare`]: the pool
+/// computed ahead) compute the same bytes as the reference, in every
+/// variant; native code reads the prepared pool where it is.
+#[test]
+fn prepared_runs_compute_the_same_bytes() {
+    for (n, (stage, src)) in SHADERS.iter().enumerate() {
+        let linked = link_one(*stage, src).unwrap_or_else(|e| panic!("shader {n}: {e}"));
+        let k = Kernel::new(&linked).expect("lowers");
+        k.compile_native();
+        let u: Vec<u32> = (0..k.interface().uniform_words)
+            .map(|w| (0.5 + w as f32 * 0.25).to_bits())
+            .collect();
+        let prepared = k.prepare(&u);
+        for round in 0..8u32 {
+            let active = if round % 2 == 1 { 0x0ff0 } else { 0xffff };
+            let mut base = Batch::for_kernel(&k, active);
+            fill(&mut base, round + 7);
+            let mut want = base.clone();
+            let r0 = k.run_reference(&mut want, &u, &NoTextures);
+            for v in supported_variants() {
+                // Garbage in the thread's register file: what a run reads
+                // must come from the batch and the prepared pool.
+                crate::engine::FILE.with(|f| {
+                    for r in f.borrow_mut().iter_mut() {
+                        *r = [0x7fc0_dead; crate::LANES];
+                    }
+                });
+                let mut got = base.clone();
+                let r = crate::engine::run_on(
+                    v,
+                    &k,
+                    &k.code,
+                    &mut got,
+                    &prepared.uniforms,
+                    &NoTextures,
+                    Some(&prepared.pool),
+                );
+                assert_eq!(r, r0, "shader {n} {}: result", v.name());
+                assert_eq!(got.discarded, want.discarded, "shader {n} {}", v.name());
+                assert_eq!(
+                    bits_of(&got.outputs),
+                    bits_of(&want.outputs),
+                    "shader {n} {} round {round}: outputs",
+                    v.name()
+                );
+            }
+        }
+    }
+}
+
 /// Time per 16-lane batch of the sphere-impostor fragment shader with the
 /// reference interpreter and each executor variant, best of 7 rounds
 /// (run with `cargo test --release -p shaderbox-exec bench_sphere --
@@ -155,9 +205,12 @@ fn bench_sphere() {
     }
     let reference = time(&mut |b| k.run_reference(b, &u, &NoTextures).unwrap());
     eprintln!(
-        "sphere.frag: {} ops (executor: {}); reference interpreter {reference:.0} ns/batch",
+        "sphere.frag: {} ops (executor: {}, prologue {}, {} registers, {} zeroed per run); reference interpreter {reference:.0} ns/batch",
         k.op_count(),
-        k.code.ins.len()
+        k.code.ins.len(),
+        k.code.prologue.len(),
+        k.code.prog.registers,
+        k.code.zero.len()
     );
     for v in supported_variants() {
         let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
@@ -172,11 +225,85 @@ fn bench_sphere() {
     if let Some(d) = k.depth_only() {
         let t = time(&mut |b| d.run(b, &u, &NoTextures).unwrap());
         eprintln!(
-            "  depth_only: {} ops, {t:.0} ns/batch ({:.2}x)",
+            "  depth_only: {} ops, {} zeroed per run, {t:.0} ns/batch ({:.2}x)",
             d.op_count(),
+            d.code.zero.len(),
             reference / t
         );
     }
+}
+
+const MATERIALS_FRAG: &str = include_str!("../../../glsl/tests/seeds/000-materials.frag");
+
+/// Time per 16-lane batch of the seed materials shader (normalize, two
+/// lights with `pow`: the lit-mesh scene's) with each variant, prepared
+/// once per draw as the renderer runs it (`cargo test --release -p
+/// shaderbox-exec bench_materials -- --ignored --nocapture`).
+#[test]
+#[ignore = "benchmark"]
+fn bench_materials() {
+    let linked = link_one(Stage::Fragment, MATERIALS_FRAG).unwrap();
+    let k = Kernel::new(&linked).unwrap();
+    // Every uniform word a float in [0.25, 1), shininess 30.
+    let mut u: Vec<u32> = (0..k.interface().uniform_words)
+        .map(|i| (0.25 + (i % 7) as f32 / 9.5).to_bits())
+        .collect();
+    if let Some((w, _)) = k.interface().locate_uniform("gl_FrontMaterial.shininess") {
+        if let Some(x) = u.get_mut(w) {
+            *x = 30.0f32.to_bits();
+        }
+    }
+    let mut batches: Vec<Batch> = (0..64)
+        .map(|i| {
+            let mut b = Batch::for_kernel(&k, 0xffff);
+            fill(&mut b, i + 1);
+            b
+        })
+        .collect();
+    let prepared = k.prepare(&u);
+    let mut time = |f: &mut dyn FnMut(&mut Batch)| {
+        let mut best = f64::MAX;
+        for _ in 0..7 {
+            let t = std::time::Instant::now();
+            for _ in 0..20 {
+                for b in batches.iter_mut() {
+                    f(b);
+                }
+            }
+            best = best.min(t.elapsed().as_secs_f64() / (20.0 * 64.0));
+        }
+        best * 1e9
+    };
+    if let Ok(only) = std::env::var("BENCH_ONLY") {
+        // For profiling one variant: run it for a few seconds.
+        let v = supported_variants()
+            .into_iter()
+            .find(|v| v.name() == only)
+            .expect("BENCH_ONLY names a supported variant");
+        for _ in 0..20 {
+            let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
+            eprintln!("  {:8} {t:.0} ns/batch", v.name());
+        }
+        return;
+    }
+    let reference = time(&mut |b| k.run_reference(b, &u, &NoTextures).unwrap());
+    eprintln!(
+        "materials.frag: {} ops (executor: {}, prologue {}, {} registers); reference interpreter {reference:.0} ns/batch",
+        k.op_count(),
+        k.code.ins.len(),
+        k.code.prologue.len(),
+        k.code.prog.registers
+    );
+    for v in supported_variants() {
+        let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
+        eprintln!("  {:8} {t:.0} ns/batch ({:.2}x)", v.name(), reference / t);
+    }
+    let t = time(&mut |b| k.run_prepared(b, &prepared, &NoTextures).unwrap());
+    eprintln!(
+        "  {:8} {t:.0} ns/batch with run_prepared ({:.2}x)",
+        crate::kernel_variant().name(),
+        reference / t
+    );
 }
 
 /// Time per 16-lane batch of a shader made of `pow`, `exp`, `exp2`, `log`
