@@ -747,6 +747,22 @@ pub(crate) fn load_inputs(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch:
 }
 
 /// Copies the output registers of the active lanes into `batch.outputs`.
+/// `bits` as a float output: any NaN becomes the canonical quiet NaN.
+///
+/// Inside a kernel a NaN's payload is not fixed: with two NaN operands an
+/// IEEE operation returns one of them, and which one depends on the order
+/// the compiled code (the interpreter's build, the native code) put them
+/// in. GLSL 1.20 can observe a payload only through a float output (no
+/// bit casts; NaN converts to int as 0 and compares unordered), so outputs
+/// carry `0x7fc00000` and every variant writes the same bits.
+pub(crate) fn canonical_nan(bits: u32) -> u32 {
+    if bits & 0x7fff_ffff > 0x7f80_0000 {
+        0x7fc0_0000
+    } else {
+        bits
+    }
+}
+
 pub(crate) fn store_outputs(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
     let active = batch.active & FULL;
     if batch.outputs.len() < k.interface.output_components {
@@ -762,7 +778,7 @@ pub(crate) fn store_outputs(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
             // The kind chosen once per output, the lanes selected without
             // branches (so the loops vectorize).
             let value: Lanes = match kind {
-                Scalar::Float => src,
+                Scalar::Float => src.map(canonical_nan),
                 Scalar::Int => src.map(|x| (x as i32 as f32).to_bits()),
                 Scalar::Bool => src.map(|x| ((x != 0) as u32 as f32).to_bits()),
             };

@@ -426,7 +426,7 @@ pub(crate) fn run<H: Hook>(
             for (l, v) in dst.iter_mut().enumerate() {
                 if active & (1 << l) != 0 {
                     *v = match kind {
-                        Scalar::Float => f(src[l]),
+                        Scalar::Float => f(crate::engine::canonical_nan(src[l])),
                         Scalar::Int => src[l] as i32 as f32,
                         Scalar::Bool => (src[l] != 0) as u32 as f32,
                     };

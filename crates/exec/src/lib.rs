@@ -21,7 +21,10 @@
 //!   a run); a subnormal result of float arithmetic or of a built-in is
 //!   flushed to zero (`glsl::math::flush_denormal`, as folding does;
 //!   subnormal operands are used as they are); `min`/`max` with one NaN
-//!   operand give the other operand.
+//!   operand give the other operand; a NaN written to a float output is
+//!   the canonical quiet NaN `0x7fc00000` (inside a run a NaN's payload
+//!   depends on operand order, which compiled code may swap; GLSL 1.20
+//!   observes payloads only through outputs).
 //! - An `if` whose condition is a constant `bool` is lowered to the taken
 //!   branch only (the other may call a function that has no body, which
 //!   the linker accepts there); a call of a body-less function anywhere
@@ -484,7 +487,9 @@ impl Kernel {
     /// kernel only on the survivors (with their quads' other lanes as
     /// helpers, for derivatives).
     ///
-    /// Same interface as `self` (inputs, uniform words, output slots); on
+    /// Same interface as `self` (inputs, uniform words, output slots),
+    /// except that inputs the slice never reads are marked unread
+    /// ([`Slot::written`] false; the renderer may leave them unset); on
     /// the active lanes it writes the bits `self` writes to `gl_FragDepth`
     /// and discards the same lanes (and fails with the same
     /// [`ExecError::LoopBudget`]); it leaves every other output as it was
@@ -522,11 +527,27 @@ impl Kernel {
             .collect();
         let live_out: Vec<u32> = outputs.iter().map(|&(r, _, _)| r).collect();
         let program = depth_slice::slice(&self.program, &live_out)?;
+        // The input components the slice reads: those loaded into a
+        // register live at its entry. The others are neither loaded nor,
+        // when a whole variable goes unread, marked read in the interface
+        // (so a renderer need not interpolate them for this pass).
+        let live = liveness::analyze(&program, &program.ops, program.registers, &live_out)?;
+        let inputs: Vec<_> = self
+            .inputs
+            .iter()
+            .copied()
+            .filter(|&(_, r, _)| live.entry_live(r))
+            .collect();
+        let mut interface = self.interface.clone();
+        for slot in &mut interface.inputs {
+            let range = slot.offset..slot.offset + slot.components;
+            slot.written &= inputs.iter().any(|&(ic, _, _)| range.contains(&ic));
+        }
         Some(Kernel::assemble(
             self.stage,
             program,
-            self.interface.clone(),
-            self.inputs.clone(),
+            interface,
+            inputs,
             outputs,
             self.loop_budget,
         ))

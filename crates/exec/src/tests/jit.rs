@@ -1,6 +1,13 @@
 //! Random programs of every data op, mask op and masked store, run by the
 //! interpreter and by native code: the same bits, the same discarded
 //! lanes, the same loop-budget errors.
+//!
+//! The programs are typed as GLSL's are: float ops work on the float
+//! registers (the lower half), integer, bool and index ops on the others,
+//! conversions and comparisons cross over. Integer ops never see a float's
+//! bits, so a NaN's payload (which depends on the order compiled code puts
+//! two NaN operands in) can only reach a float output, where it becomes
+//! the canonical NaN.
 
 use super::bits_of;
 use crate::engine::{Code, Ins};
@@ -25,7 +32,36 @@ impl Rng {
     fn reg(&mut self) -> u32 {
         self.below(REGS)
     }
+    /// A float register.
+    fn f(&mut self) -> u32 {
+        self.below(FLOAT_REGS)
+    }
+    /// An integer (or bool) register.
+    fn i(&mut self) -> u32 {
+        FLOAT_REGS + self.below(REGS - FLOAT_REGS)
+    }
+    /// A register of the same class as `d`.
+    fn like(&mut self, d: u32) -> u32 {
+        if d < FLOAT_REGS {
+            self.f()
+        } else {
+            self.i()
+        }
+    }
+    /// `(base, max)` of a run of `max + 1` registers of one class, `max < 4`.
+    fn run(&mut self) -> (u32, u32) {
+        let max = self.below(4);
+        let (lo, n) = if self.below(2) == 0 {
+            (0, FLOAT_REGS)
+        } else {
+            (FLOAT_REGS, REGS - FLOAT_REGS)
+        };
+        (lo + self.below(n - max), max)
+    }
 }
+
+/// Registers `0..FLOAT_REGS` hold floats, the rest ints and bools.
+const FLOAT_REGS: u32 = REGS / 2;
 
 const F1S: [F1; 19] = [
     F1::Radians,
@@ -82,11 +118,23 @@ fn value(r: &mut Rng) -> u32 {
 }
 
 fn random_op(r: &mut Rng, i: u32, n: u32) -> Op {
-    let (d, a, b, c) = (r.reg(), r.reg(), r.reg(), r.reg());
+    // Float operands and result; integer ones; any destination.
+    let (d, a, b, c) = (r.f(), r.f(), r.f(), r.f());
+    let (id, ia, ib, ic) = (r.i(), r.i(), r.i(), r.i());
+    let any = r.reg();
     match r.below(48) {
-        0 => Op::Const { d, bits: value(r) },
-        1 => Op::Mov { d, a },
-        2 | 3 => Op::Store { d, a },
+        0 => Op::Const {
+            d: any,
+            bits: value(r),
+        },
+        1 => Op::Mov {
+            d: any,
+            a: r.like(any),
+        },
+        2 | 3 => Op::Store {
+            d: any,
+            a: r.like(any),
+        },
         4 => Op::FAdd { d, a, b },
         5 => Op::FSub { d, a, b },
         6 => Op::FMul { d, a, b },
@@ -96,8 +144,8 @@ fn random_op(r: &mut Rng, i: u32, n: u32) -> Op {
         10 => Op::Dot {
             d,
             n: 1 + r.below(4) as u8,
-            a: [a, b, c, r.reg()],
-            b: [r.reg(), r.reg(), r.reg(), r.reg()],
+            a: [a, b, c, r.f()],
+            b: [r.f(), r.f(), r.f(), r.f()],
         },
         11 | 12 => Op::F1 {
             f: F1S[r.below(19) as usize],
@@ -117,59 +165,104 @@ fn random_op(r: &mut Rng, i: u32, n: u32) -> Op {
             b,
             c,
         },
-        16 => Op::FLt { d, a, b },
-        17 => Op::FLe { d, a, b },
-        18 => Op::FEq { d, a, b },
-        19 => Op::IAdd { d, a, b },
-        20 => Op::ISub { d, a, b },
-        21 => Op::IMul { d, a, b },
-        22 => Op::IDiv { d, a, b },
-        23 => Op::INeg { d, a },
-        24 => Op::ILt { d, a, b },
-        25 => Op::ILe { d, a, b },
-        26 => Op::IEq { d, a, b },
-        27 => Op::And { d, a, b },
-        28 => Op::Or { d, a, b },
-        29 => Op::Xor { d, a, b },
-        30 => Op::Not { d, a },
-        31 => Op::FToI { d, a },
-        32 => Op::IToF { d, a },
-        33 => Op::FToB { d, a },
-        34 => Op::IToB { d, a },
-        35 => Op::BToF { d, a },
-        36 => Op::Select { d, c, a, b },
+        16 => Op::FLt { d: id, a, b },
+        17 => Op::FLe { d: id, a, b },
+        18 => Op::FEq { d: id, a, b },
+        19 => Op::IAdd {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        20 => Op::ISub {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        21 => Op::IMul {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        22 => Op::IDiv {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        23 => Op::INeg { d: id, a: ia },
+        24 => Op::ILt {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        25 => Op::ILe {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        26 => Op::IEq {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        27 => Op::And {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        28 => Op::Or {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        29 => Op::Xor {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        30 => Op::Not { d: id, a: ia },
+        31 => Op::FToI { d: id, a },
+        32 => Op::IToF { d, a: ia },
+        33 => Op::FToB { d: id, a },
+        34 => Op::IToB { d: id, a: ia },
+        35 => Op::BToF { d, a: ia },
+        36 => Op::Select {
+            d: any,
+            c: ic,
+            a: r.like(any),
+            b: r.like(any),
+        },
         37 => Op::ClampIdx {
-            d,
-            a,
+            d: id,
+            a: ia,
             max: r.below(5),
             stride: 1 + r.below(3),
         },
         38 => {
-            let max = r.below(4);
+            let (base, max) = r.run();
             Op::Gather {
-                d,
-                base: r.below(REGS - max),
-                off: a,
+                d: r.like(base),
+                base,
+                off: ia,
                 max,
             }
         }
         39 => {
-            let max = r.below(4);
+            let (base, max) = r.run();
             Op::Scatter {
-                base: r.below(REGS - max),
-                off: b,
+                base,
+                off: ib,
                 max,
-                a,
+                a: r.like(base),
             }
         }
         40 => Op::GatherUniform {
-            d,
+            d: any,
             word: r.below(4),
-            off: a,
+            off: ia,
             max: r.below(6),
         },
         41 => Op::Uniform {
-            d,
+            d: any,
             word: r.below(6),
         },
         42 => Op::DdX { d, a },
@@ -177,10 +270,10 @@ fn random_op(r: &mut Rng, i: u32, n: u32) -> Op {
         44 => match r.below(6) {
             0 => Op::SaveMask { slot: r.below(2) },
             1 => Op::RestoreMask { slot: r.below(2) },
-            2 | 3 => Op::AndMask { c },
+            2 | 3 => Op::AndMask { c: ic },
             _ => Op::AndNotMask {
                 slot: r.below(2),
-                c,
+                c: ic,
             },
         },
         45 => match r.below(4) {
@@ -234,7 +327,14 @@ fn kernel_of(ins: Vec<Ins>, budget: u64, outputs: &[Reg]) -> Kernel {
         inputs: (0..REGS).map(|r| (r as usize, r, Scalar::Float)).collect(),
         outputs: outputs
             .iter()
-            .map(|&r| (r, r as usize, Scalar::Float))
+            .map(|&r| {
+                let kind = if r < FLOAT_REGS {
+                    Scalar::Float
+                } else {
+                    Scalar::Int
+                };
+                (r, r as usize, kind)
+            })
             .collect(),
         loop_budget: budget,
         code: std::sync::Arc::new(code),
