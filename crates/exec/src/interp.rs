@@ -10,7 +10,8 @@ use glsl::types::Scalar;
 /// Loop iterations (summed over every loop, counted once per iteration of
 /// the lane group), plus subroutine calls when functions are not inlined,
 /// that one `Kernel::run` may execute before it fails with
-/// [`ExecError::LoopBudget`].
+/// [`ExecError::LoopBudget`]. Counted loops that lowering unrolls (at most
+/// 32 iterations, see `lower`) have no iterations left to count.
 pub const LOOP_BUDGET: u64 = 1 << 24;
 
 /// All lanes.

@@ -5,6 +5,19 @@
 //!   left to right; `in` values copied in at the call; `out`/`inout`
 //!   l-values evaluated at the call and written back, in order, when the
 //!   callee returns.
+//! - Known int values: an `in` int parameter of an inlined call whose
+//!   argument is a constant (or another known value) and that the callee
+//!   never writes, and the counter of an unrolled loop, index arrays
+//!   statically: `gl_LightSource[light].position` with a known `light` is a
+//!   uniform read (hoisted by the executor out of every run) instead of a
+//!   per-lane gather.
+//! - Counted loops are unrolled: `for (int i = A; cond(i); step)` with `A`
+//!   constant, `cond` a comparison of `i` with constants, `step` adding a
+//!   constant, no `break`/`continue` of the loop and no other write of
+//!   `i`, at most 32 iterations and 4096 expression nodes in all. The
+//!   counter's register is still written as the loop would (traces show
+//!   the same statements and values) and each iteration still evaluates
+//!   the condition, whose unread value the executor drops.
 //! - Variables (globals that are not uniforms, every local of every inlined
 //!   call) get consecutive registers for their flattened components;
 //!   uniforms are read from the uniform words where they are used.
@@ -77,6 +90,9 @@ struct Frame {
     func: FunctionId,
     /// Register and (sized) type of every local.
     locals: Vec<(Reg, Type)>,
+    /// Locals known to hold one int value on every lane where they are
+    /// read (see [`Lowerer::const_int`]), by local index.
+    consts: Vec<Option<i32>>,
     ret: Val,
 }
 
@@ -195,6 +211,7 @@ pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
     l.ctx.push((CtxKind::Function, fs));
     l.frames.push(Frame {
         func: main,
+        consts: vec![None; locals.len()],
         locals,
         ret: Vec::new(),
     });
@@ -331,17 +348,17 @@ fn inlined_cost(m: &Module, f: FunctionId, memo: &mut Vec<Option<u64>>, depth: u
 }
 
 /// Calls `f` on every expression of `b`, outer before inner.
-fn visit_block(b: &Block, f: &mut dyn FnMut(&Expr)) {
+fn visit_block(b: &[Stmt], f: &mut dyn FnMut(&Expr)) {
     visit_block_with(b, false, f)
 }
 
 /// Calls `f` on every expression of `b` that lowering reaches: not the
 /// branch a constant `if` condition rules out (see [`const_bool`]).
-fn visit_live_block(b: &Block, f: &mut dyn FnMut(&Expr)) {
+fn visit_live_block(b: &[Stmt], f: &mut dyn FnMut(&Expr)) {
     visit_block_with(b, true, f)
 }
 
-fn visit_block_with(b: &Block, live_only: bool, f: &mut dyn FnMut(&Expr)) {
+fn visit_block_with(b: &[Stmt], live_only: bool, f: &mut dyn FnMut(&Expr)) {
     for s in b {
         match s {
             Stmt::Expr(e) | Stmt::Return(Some(e), _) => visit_expr(e, f),
@@ -414,6 +431,141 @@ fn visit_expr(e: &Expr, f: &mut dyn FnMut(&Expr)) {
         | ExprKind::Builtin { args, .. }
         | ExprKind::DebugPrintf { args, .. }
         | ExprKind::Construct { args } => args.iter().for_each(|a| visit_expr(a, f)),
+    }
+}
+
+/// Most iterations of a loop [`Lowerer::unroll_plan`] unrolls.
+const UNROLL_TRIPS: usize = 32;
+/// Most expression nodes (calls inlined) of an unrolled loop, all
+/// iterations together.
+const UNROLL_NODES: u64 = 4096;
+
+/// A counted loop to unroll ([`Lowerer::unroll_plan`]).
+struct Unroll<'b> {
+    local: LocalId,
+    /// The counter's value in each iteration.
+    values: Vec<i32>,
+    /// The loop condition's negation (`!(i < n)`) and its statement.
+    cond: &'b Expr,
+    cond_span: Span,
+    /// The body after the condition.
+    body: &'b [Stmt],
+    continuing: &'b Block,
+}
+
+/// The local an l-value expression writes into (through indexing,
+/// swizzles and members).
+fn root_local(e: &Expr) -> Option<LocalId> {
+    match &e.kind {
+        ExprKind::Local(l) => Some(*l),
+        ExprKind::Index { base, .. }
+        | ExprKind::Swizzle { base, .. }
+        | ExprKind::Member { base, .. } => root_local(base),
+        _ => None,
+    }
+}
+
+/// Whether `b` may write `local`: an assignment, `++`/`--`, or an `out` /
+/// `inout` argument rooted at it.
+fn writes_local(m: &Module, b: &[Stmt], local: LocalId) -> bool {
+    let mut writes = false;
+    visit_block(b, &mut |e| match &e.kind {
+        ExprKind::Assign { target, .. } | ExprKind::IncDec { target, .. } => {
+            writes |= root_local(target) == Some(local);
+        }
+        ExprKind::Call { function, args } => {
+            let params = m.functions.get(function.0 as usize).map(|f| &f.params[..]);
+            for (k, a) in args.iter().enumerate() {
+                let by_value = params
+                    .and_then(|p| p.get(k))
+                    .is_some_and(|p| p.qualifier == ParamQualifier::In);
+                writes |= !by_value && root_local(a) == Some(local);
+            }
+        }
+        _ => {}
+    });
+    writes
+}
+
+/// Whether `b` has a `break` or `continue` of the loop it is the body of
+/// (those of nested loops do not count).
+fn leaves_loop(b: &[Stmt]) -> bool {
+    b.iter().any(|s| match s {
+        Stmt::Break(_) | Stmt::Continue(_) => true,
+        Stmt::Block(b) => leaves_loop(b),
+        Stmt::If { then, else_, .. } => leaves_loop(then) || leaves_loop(else_),
+        _ => false,
+    })
+}
+
+/// `e`, an int expression of constants and `local` (= `v`), evaluated as
+/// the executor would (wrapping arithmetic).
+fn eval_int(e: &Expr, local: LocalId, v: i32) -> Option<i32> {
+    match &e.kind {
+        ExprKind::Local(l) if *l == local => Some(v),
+        ExprKind::Const(_) => const_index(e),
+        ExprKind::Binary { op, left, right } => {
+            let (a, b) = (eval_int(left, local, v)?, eval_int(right, local, v)?);
+            match op {
+                BinaryOp::Add => Some(a.wrapping_add(b)),
+                BinaryOp::Sub => Some(a.wrapping_sub(b)),
+                BinaryOp::Mul => Some(a.wrapping_mul(b)),
+                _ => None,
+            }
+        }
+        _ => None,
+    }
+}
+
+/// `e`, a bool expression comparing such int expressions (or negating
+/// one), evaluated with `local` = `v`.
+fn eval_bool(e: &Expr, local: LocalId, v: i32) -> Option<bool> {
+    match &e.kind {
+        ExprKind::Unary {
+            op: UnaryOp::Not,
+            operand,
+        } => Some(!eval_bool(operand, local, v)?),
+        ExprKind::Binary { op, left, right } => {
+            let (a, b) = (eval_int(left, local, v)?, eval_int(right, local, v)?);
+            match op {
+                BinaryOp::Less => Some(a < b),
+                BinaryOp::LessEq => Some(a <= b),
+                BinaryOp::Greater => Some(a > b),
+                BinaryOp::GreaterEq => Some(a >= b),
+                BinaryOp::Equal => Some(a == b),
+                BinaryOp::NotEqual => Some(a != b),
+                _ => None,
+            }
+        }
+        _ => None,
+    }
+}
+
+/// The counter's value after the loop step `e` (`i++`, `++i`, `i--`,
+/// `--i`, `i += c`, `i -= c`, `i = i + c`...) from `v`.
+fn step_value(e: &Expr, local: LocalId, v: i32) -> Option<i32> {
+    match &e.kind {
+        ExprKind::IncDec { op, target } if root_local(target) == Some(local) => {
+            let ExprKind::Local(_) = target.kind else {
+                return None;
+            };
+            Some(match op {
+                IncDec::PreInc | IncDec::PostInc => v.wrapping_add(1),
+                IncDec::PreDec | IncDec::PostDec => v.wrapping_sub(1),
+            })
+        }
+        ExprKind::Assign { op, target, value } if matches!(target.kind, ExprKind::Local(l) if l == local) =>
+        {
+            let x = eval_int(value, local, v)?;
+            match op {
+                None => Some(x),
+                Some(BinaryOp::Add) => Some(v.wrapping_add(x)),
+                Some(BinaryOp::Sub) => Some(v.wrapping_sub(x)),
+                Some(BinaryOp::Mul) => Some(v.wrapping_mul(x)),
+                _ => None,
+            }
+        }
+        _ => None,
     }
 }
 
@@ -609,13 +761,167 @@ impl<'m> Lowerer<'m> {
 
     fn block(&mut self, b: &Block) -> R<()> {
         let mark = self.next_reg;
-        for s in b {
+        let mut i = 0;
+        while let Some(s) = b.get(i) {
+            // `for (int i = A; i < B; i++)` with a few iterations and a
+            // body that leaves `i` alone: unrolled (see `unroll_plan`).
+            if let (Stmt::Declare { local, .. }, Some(next)) = (s, b.get(i + 1)) {
+                if let Some(plan) = self.unroll_plan(*local, s, next) {
+                    if self.stmt(s)? || self.unrolled(plan)? {
+                        break;
+                    }
+                    i += 2;
+                    continue;
+                }
+            }
             if self.stmt(s)? {
                 break;
             }
+            i += 1;
         }
         self.next_reg = mark;
         Ok(())
+    }
+
+    /// The int value of `e` when it is known at this point of the
+    /// program: an int constant, or a local bound to one (a constant
+    /// argument of an inlined call, an unrolled loop's counter).
+    fn const_int(&self, e: &Expr) -> Option<i32> {
+        match &e.kind {
+            ExprKind::Local(l) => self
+                .frames
+                .last()
+                .and_then(|f| f.consts.get(l.0 as usize).copied().flatten()),
+            _ => const_index(e),
+        }
+    }
+
+    /// Whether the statements `decl` (declaring `local`) and `next` are a
+    /// counted loop to unroll: `local` an int with a constant initial
+    /// value, `next` a loop whose body starts with `if (!(cond)) break;`
+    /// and whose continuing part steps `local` by a constant, `cond` a
+    /// comparison of `local` with a constant; no other `break` or
+    /// `continue` of that loop, no other write of `local`; at most
+    /// [`UNROLL_TRIPS`] iterations and [`UNROLL_NODES`] expression nodes
+    /// in all (calls counted inlined).
+    fn unroll_plan<'b>(&self, local: LocalId, decl: &Stmt, next: &'b Stmt) -> Option<Unroll<'b>> {
+        let Stmt::Declare {
+            init: Some(init), ..
+        } = decl
+        else {
+            return None;
+        };
+        let Stmt::Loop {
+            body, continuing, ..
+        } = next
+        else {
+            return None;
+        };
+        if init.ty != Type::INT {
+            return None;
+        }
+        let first = const_index(init)?;
+        let (
+            Some(Stmt::If {
+                cond,
+                then,
+                else_,
+                span,
+            }),
+            [step],
+        ) = (body.first(), continuing.as_slice())
+        else {
+            return None;
+        };
+        if !matches!(then.as_slice(), [Stmt::Break(_)]) || !else_.is_empty() {
+            return None;
+        }
+        let Stmt::Expr(step_expr) = step else {
+            return None;
+        };
+        let rest = &body[1..];
+        if leaves_loop(rest) || writes_local(self.m, rest, local) {
+            return None;
+        }
+        let mut values = Vec::new();
+        let mut v = first;
+        while !eval_bool(cond, local, v)? {
+            values.push(v);
+            if values.len() > UNROLL_TRIPS {
+                return None;
+            }
+            v = step_value(step_expr, local, v)?;
+        }
+        let mut nodes = 0u64;
+        let mut calls = Vec::new();
+        visit_live_block(rest, &mut |e| {
+            nodes += 1;
+            if let ExprKind::Call { function, .. } = &e.kind {
+                calls.push(*function);
+            }
+        });
+        let mut memo = vec![None; self.m.functions.len()];
+        for c in calls {
+            nodes = nodes.saturating_add(inlined_cost(self.m, c, &mut memo, self.frames.len()));
+        }
+        if nodes.saturating_mul(values.len() as u64) > UNROLL_NODES {
+            return None;
+        }
+        Some(Unroll {
+            local,
+            values,
+            cond,
+            cond_span: *span,
+            body: rest,
+            continuing,
+        })
+    }
+
+    /// Lowers an unrolled loop (after its counter's declaration): per
+    /// iteration the condition (its statement marked and its value
+    /// computed, for traces; nothing reads it), the body with the counter
+    /// bound to the iteration's value, the continuing part; then the
+    /// failing condition. `true` when the body always leaves the
+    /// function (the rest of the block is unreachable).
+    fn unrolled(&mut self, plan: Unroll) -> R<bool> {
+        let slot = plan.local.0 as usize;
+        let mut ends = false;
+        for &v in &plan.values {
+            self.check_condition(plan.cond, plan.cond_span)?;
+            self.bind(slot, Some(v));
+            let mark = self.next_reg;
+            for s in plan.body {
+                if self.stmt(s)? {
+                    ends = true;
+                    break;
+                }
+            }
+            self.next_reg = mark;
+            self.bind(slot, None);
+            if ends {
+                return Ok(true);
+            }
+            self.block(plan.continuing)?;
+        }
+        self.check_condition(plan.cond, plan.cond_span)?;
+        // Where the loop's `break` ran (a statement of its own in traces).
+        self.mark_statement(plan.cond_span);
+        self.konst(0)?;
+        Ok(false)
+    }
+
+    fn check_condition(&mut self, cond: &Expr, span: Span) -> R<()> {
+        let mark = self.next_reg;
+        self.mark_statement(span);
+        self.expr(cond)?;
+        self.next_reg = mark;
+        Ok(())
+    }
+
+    fn bind(&mut self, slot: usize, v: Option<i32>) {
+        if let Some(c) = self.frames.last_mut().and_then(|f| f.consts.get_mut(slot)) {
+            *c = v;
+        }
     }
 
     /// Lowers one statement; `true` when it always leaves the block
@@ -837,7 +1143,7 @@ impl<'m> Lowerer<'m> {
             ExprKind::Local(l) => self.local_place(*l),
             ExprKind::Index { base, index } => {
                 let p = self.place(base)?;
-                if let Some(i) = const_index(index) {
+                if let Some(i) = self.const_int(index) {
                     return self.index_const(p, i);
                 }
                 let i = self.expr(index)?;
@@ -1497,6 +1803,7 @@ impl<'m> Lowerer<'m> {
         };
         // Arguments, left to right (§6.1.1).
         let mut outs: Vec<(Place, Reg, u32)> = Vec::new();
+        let mut bound = vec![None; locals.len()];
         for (param, arg) in f.params.iter().zip(args) {
             let Some(&(preg, _)) = locals.get(param.local.0 as usize) else {
                 return unsupported("parameter without a local");
@@ -1504,6 +1811,15 @@ impl<'m> Lowerer<'m> {
             let n = self.size(param.ty)? as u32;
             match param.qualifier {
                 ParamQualifier::In => {
+                    // An int argument known here, in a parameter the body
+                    // never writes: the callee's indexing by it is static
+                    // (`gl_LightSource[light]` with a constant `light`).
+                    if sub.is_none() && param.ty == Type::INT && !writes_local(m, body, param.local)
+                    {
+                        if let Some(slot) = bound.get_mut(param.local.0 as usize) {
+                            *slot = self.const_int(arg);
+                        }
+                    }
                     let v = self.expr(arg)?;
                     if v.len() as u32 != n {
                         return unsupported("argument of the wrong size");
@@ -1565,6 +1881,7 @@ impl<'m> Lowerer<'m> {
         self.ctx.push((CtxKind::Function, fs));
         self.frames.push(Frame {
             func: fid,
+            consts: bound,
             locals,
             ret: ret.clone(),
         });
@@ -1649,6 +1966,7 @@ impl<'m> Lowerer<'m> {
             self.ctx.push((CtxKind::Function, fs));
             self.frames.push(Frame {
                 func: f,
+                consts: vec![None; locals.len()],
                 locals: locals.clone(),
                 ret: ret.clone(),
             });

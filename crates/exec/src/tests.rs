@@ -175,6 +175,57 @@ fn loops_with_break_and_continue() {
     }
 }
 
+/// Counted loops are unrolled and constant int arguments bound, so
+/// indexing by the counter or the parameter is static; loops that write
+/// their counter, leave early or run too long stay loops. Either way the
+/// values are the loop's.
+#[test]
+fn counted_loops_unroll_with_static_indexing() {
+    let src = "uniform float w[4];
+        uniform vec4 v[3];
+        float pick(in int k, float x) { return w[k] * x + v[k].y; }
+        void main() {
+            float x = gl_FragCoord.x;
+            float a = 0.0;
+            for (int i = 0; i < 4; i++) a += pick(i > 2 ? 2 : i, x) + float(i);
+            float b = 0.0;
+            for (int i = 3; i >= 0; i -= 2) { if (x > w[i] * 8.0) b += w[i]; }
+            float c = 0.0;
+            for (int i = 0; i < 4; i++) { c += 1.0; if (float(i) > x) break; }
+            float d = 0.0;
+            for (int i = 0; i < 6; i++) { d += float(i); i++; }
+            gl_FragColor = vec4(a, b, c, d);
+        }";
+    let w = [0.25f32, 0.5, 1.0, 1.5];
+    let v: Vec<f32> = (0..12).map(|i| i as f32 * 0.125).collect();
+    let (colors, _) = frag_colors(src, &[("w", &fbits(&w)), ("v", &fbits(&v))]);
+    for (l, c) in colors.iter().enumerate() {
+        let x = l as f32 + 0.5;
+        let mut a = 0.0f32;
+        for i in 0..4usize {
+            let k = if i > 2 { 2 } else { i };
+            a += (w[k] * x + v[4 * k + 1]) + i as f32;
+        }
+        let b = [3usize, 1]
+            .iter()
+            .filter(|&&i| x > w[i] * 8.0)
+            .fold(0.0f32, |b, &i| b + w[i]);
+        let c2 = (0..4)
+            .position(|i| i as f32 > x)
+            .map_or(4.0, |p| p as f32 + 1.0);
+        assert_eq!(*c, [a, b, c2, 0.0 + 2.0 + 4.0], "lane {l}");
+    }
+    // The first two loops left no loop behind; the other two did.
+    let k = kernel(Stage::Fragment, src);
+    let iters = k
+        .program
+        .ops
+        .iter()
+        .filter(|op| matches!(op, program::Op::LoopIter))
+        .count();
+    assert_eq!(iters, 2, "loops left: {iters}");
+}
+
 #[test]
 fn early_return_and_out_params() {
     let (c, _) = frag_colors(
