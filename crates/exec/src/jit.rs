@@ -206,11 +206,18 @@ impl Cache {
         if let Some(r) = self.slot.get() {
             return r.as_ref().ok();
         }
+        let started = std::time::Instant::now();
         let r = catch_unwind(AssertUnwindSafe(|| codegen::compile(code)))
             .unwrap_or_else(|_| Err("the code generator panicked".to_string()));
-        if let Err(e) = &r {
-            if std::env::var_os("SHADERBOX_JIT_LOG").is_some_and(|v| v == "1") {
-                eprintln!("shaderbox: kernel stays on the interpreter: {e}");
+        if std::env::var_os("SHADERBOX_JIT_LOG").is_some_and(|v| v == "1") {
+            match &r {
+                Ok(n) => eprintln!(
+                    "shaderbox: kernel of {} ops compiled to {} bytes in {:.1} ms",
+                    code.ins.len(),
+                    n.bytes,
+                    started.elapsed().as_secs_f64() * 1e3
+                ),
+                Err(e) => eprintln!("shaderbox: kernel stays on the interpreter: {e}"),
             }
         }
         let _ = self.slot.set(r);

@@ -135,7 +135,8 @@
 //! Limitations: kernels with subroutine calls (inlining limit exceeded)
 //! or over 6000 executor ops stay on the interpreter, as does everything
 //! when Cranelift does not support the CPU or fails (the reason:
-//! [`Kernel::native_code`]; `SHADERBOX_JIT_LOG=1` prints it); hooked runs
+//! [`Kernel::native_code`]; `SHADERBOX_JIT_LOG=1` prints it, and each
+//! compilation's size and time); hooked runs
 //! (`run_traced`, `run_printing`, `run_watching`) always use the
 //! reference interpreter. `SHADERBOX_JIT_DUMP=dir` writes each function's
 //! machine code to `dir/jit-ADDRESS.bin` for profiling.

@@ -14,7 +14,8 @@
 //! - Counted loops are unrolled: `for (int i = A; cond(i); step)` with `A`
 //!   constant, `cond` a comparison of `i` with constants, `step` adding a
 //!   constant, no `break`/`continue` of the loop and no other write of
-//!   `i`, at most 32 iterations and 4096 expression nodes in all. The
+//!   `i`, at most 32 iterations and 4096 expression nodes in all (nested
+//!   loops: 16384 added nodes per program, outer loops first). The
 //!   counter's register is still written as the loop would (traces show
 //!   the same statements and values) and each iteration still evaluates
 //!   the condition, whose unread value the executor drops.
@@ -130,6 +131,9 @@ struct Lowerer<'m> {
     ctx: Vec<(CtxKind, u32)>,
     /// Subroutine mode: the lowered body of each user function.
     subs: Option<Vec<Option<Sub>>>,
+    /// Expression nodes that unrolling may still add to the program
+    /// (nested loops unroll within one budget).
+    unroll_left: u64,
 }
 
 /// A user function lowered once as a subroutine (static registers: GLSL
@@ -163,6 +167,7 @@ pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
         frames: Vec::new(),
         ctx: Vec::new(),
         subs: None,
+        unroll_left: UNROLL_BUDGET,
     };
     // Globals: registers for everything but uniforms; uniform words for
     // the uniforms the shader reads (others get words if lowering finds a
@@ -440,8 +445,13 @@ const UNROLL_TRIPS: usize = 32;
 /// iterations together.
 const UNROLL_NODES: u64 = 4096;
 
+/// Most expression nodes unrolling adds to a whole program.
+const UNROLL_BUDGET: u64 = 16384;
+
 /// A counted loop to unroll ([`Lowerer::unroll_plan`]).
 struct Unroll<'b> {
+    /// Expression nodes the copies add.
+    extra: u64,
     local: LocalId,
     /// The counter's value in each iteration.
     values: Vec<i32>,
@@ -767,6 +777,7 @@ impl<'m> Lowerer<'m> {
             // body that leaves `i` alone: unrolled (see `unroll_plan`).
             if let (Stmt::Declare { local, .. }, Some(next)) = (s, b.get(i + 1)) {
                 if let Some(plan) = self.unroll_plan(*local, s, next) {
+                    self.unroll_left -= plan.extra;
                     if self.stmt(s)? || self.unrolled(plan)? {
                         break;
                     }
@@ -803,7 +814,8 @@ impl<'m> Lowerer<'m> {
     /// comparison of `local` with a constant; no other `break` or
     /// `continue` of that loop, no other write of `local`; at most
     /// [`UNROLL_TRIPS`] iterations and [`UNROLL_NODES`] expression nodes
-    /// in all (calls counted inlined).
+    /// in all (calls counted inlined), the copies within what is left of
+    /// the program's [`UNROLL_BUDGET`].
     fn unroll_plan<'b>(&self, local: LocalId, decl: &Stmt, next: &'b Stmt) -> Option<Unroll<'b>> {
         let Stmt::Declare {
             init: Some(init), ..
@@ -864,10 +876,12 @@ impl<'m> Lowerer<'m> {
         for c in calls {
             nodes = nodes.saturating_add(inlined_cost(self.m, c, &mut memo, self.frames.len()));
         }
-        if nodes.saturating_mul(values.len() as u64) > UNROLL_NODES {
+        let extra = nodes.saturating_mul(values.len().saturating_sub(1) as u64);
+        if nodes.saturating_mul(values.len() as u64) > UNROLL_NODES || extra > self.unroll_left {
             return None;
         }
         Some(Unroll {
+            extra,
             local,
             values,
             cond,
