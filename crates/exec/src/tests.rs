@@ -226,6 +226,45 @@ fn counted_loops_unroll_with_static_indexing() {
     assert_eq!(iters, 2, "loops left: {iters}");
 }
 
+/// Prepared runs (the pool read in place by native code) of a kernel
+/// whose unrolled loop branches on pool values and calls `pow` on them
+/// compute the reference interpreter's bits.
+#[test]
+fn prepared_runs_branching_on_uniforms() {
+    let src = "uniform float on[4];
+        uniform float e[4];
+        void main() {
+            float x = gl_FragCoord.x * 0.0625;
+            vec4 c = vec4(0.0);
+            for (int i = 0; i < 4; i++) {
+                if (on[i] > 0.5) c[i] = pow(x, e[i]) + on[i];
+            }
+            gl_FragColor = c;
+        }";
+    let k = kernel(Stage::Fragment, src);
+    let u = uniforms(
+        &k,
+        &[
+            ("on", &fbits(&[1.0, 0.0, 1.0, 0.0])),
+            ("e", &fbits(&[2.0, 3.0, 0.5, 7.0])),
+        ],
+    );
+    let mut want = frag_batch(&k);
+    k.run_reference(&mut want, &u, &NoTextures).expect("runs");
+    k.compile_native();
+    let prepared = k.prepare(&u);
+    for round in 0..3 {
+        let mut got = frag_batch(&k);
+        k.run_prepared(&mut got, &prepared, &NoTextures)
+            .expect("runs");
+        assert_eq!(
+            bits_of(&got.outputs),
+            bits_of(&want.outputs),
+            "round {round}"
+        );
+    }
+}
+
 #[test]
 fn early_return_and_out_params() {
     let (c, _) = frag_colors(

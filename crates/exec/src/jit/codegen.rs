@@ -140,7 +140,13 @@ fn pool_in_file(code: &Code) -> bool {
     code.ins.iter().any(|ins| {
         let inline = separable(ins)
             || match ins.op {
-                Op::F1 { .. } | Op::F2 { .. } | Op::Scatter { .. } => true,
+                // Mask ops read their condition with `ld`, which knows
+                // where pool registers are.
+                Op::F1 { .. }
+                | Op::F2 { .. }
+                | Op::Scatter { .. }
+                | Op::AndMask { .. }
+                | Op::AndNotMask { .. } => true,
                 Op::GatherUniform { word, max, .. } => word as u64 + max as u64 <= i32::MAX as u64,
                 _ => false,
             };
