@@ -72,13 +72,34 @@ use std::sync::{Mutex, OnceLock, TryLockError};
 /// (compile time grows with the size; such programs are rare).
 pub(crate) const MAX_OPS: usize = 6000;
 
-/// A kernel is compiled when it starts its run number this (a kernel that
-/// runs fewer batches would not win back the compile time).
-pub(crate) const COMPILE_AFTER_RUNS: u32 = 32;
+/// A kernel is compiled when it starts its run number this. Compiling
+/// costs about 0.1–0.4 ms per executor op (10–150 ms for the seed shaders
+/// on the 2-core Zen 4) and saves about 1–2 ns per op and batch, so a
+/// kernel wins its compile time back after roughly 10^5 batches: a
+/// one-off draw (the README's crambin render, about 40,000 colour
+/// batches) stays on the interpreter, a scene drawn frame after frame is
+/// compiled during its first frame or two.
+pub(crate) const COMPILE_AFTER_RUNS: u32 = 50_000;
+
+/// The run count of [`compile_after`] when set by [`set_compile_after`]
+/// (0: not set).
+static COMPILE_AFTER_SET: AtomicU32 = AtomicU32::new(0);
+
+/// Makes kernels compile on their `runs`-th run from now on (at least 1),
+/// overriding [`COMPILE_AFTER_RUNS`] and `SHADERBOX_JIT_AFTER`; for
+/// tests that want native code in short draws.
+pub(crate) fn set_compile_after(runs: u32) {
+    COMPILE_AFTER_SET.store(runs.max(1), Ordering::Relaxed);
+}
 
 /// [`COMPILE_AFTER_RUNS`], or `SHADERBOX_JIT_AFTER` (a run count; 1 =
-/// compile on the first run, for testing native code on short runs).
+/// compile on the first run, for testing native code on short runs), or
+/// what [`set_compile_after`] set.
 fn compile_after() -> u32 {
+    let set = COMPILE_AFTER_SET.load(Ordering::Relaxed);
+    if set != 0 {
+        return set;
+    }
     static N: OnceLock<u32> = OnceLock::new();
     *N.get_or_init(|| {
         std::env::var("SHADERBOX_JIT_AFTER")

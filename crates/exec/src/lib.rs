@@ -124,7 +124,8 @@
 //! texture lookups, so it computes the same bits (tests compare it with
 //! the interpreter on random programs of every op, on every unit-test
 //! shader, and on piglit's execution and built-in function shaders).
-//! A kernel is compiled on its 32nd run (`SHADERBOX_JIT_AFTER=n`: its
+//! A kernel is compiled on its 50,000th run (`SHADERBOX_JIT_AFTER=n` or
+//! [`set_native_after`]: its
 //! n-th) by one thread (the others interpret meanwhile), so compiling and linking a
 //! program costs no code generation and kernels that run a few batches
 //! never pay for it; [`Kernel::compile_native`] compiles at once.
@@ -170,6 +171,19 @@ mod program;
 mod variant;
 
 pub use interface::{kinds, size_of, Interface, Slot};
+
+/// Makes kernels of the `jit` variant compile to native code on their
+/// `runs`-th run (at least 1) instead of the default 50,000th (see the
+/// crate docs: compiling pays only for kernels that run many batches).
+/// Affects every kernel of the process; no effect on results (native code
+/// computes the interpreter's bits) or in a build without the `jit`
+/// feature. For tests that want native code in short draws.
+pub fn set_native_after(runs: u32) {
+    #[cfg(feature = "jit")]
+    jit::set_compile_after(runs);
+    #[cfg(not(feature = "jit"))]
+    let _ = runs;
+}
 pub use interp::LOOP_BUDGET;
 pub use program::{StatementMark, VarInfo};
 pub use variant::{
@@ -587,8 +601,8 @@ impl Kernel {
     }
 
     /// The state of this kernel's native code (the `jit` variant):
-    /// `None` before it was compiled (a kernel is compiled on its 32nd
-    /// run, or never with another variant), `Some(Ok(bytes))` once it runs
+    /// `None` before it was compiled (a kernel is compiled on its 50,000th
+    /// run, see [`set_native_after`], or never with another variant), `Some(Ok(bytes))` once it runs
     /// as machine code of that size, `Some(Err(reason))` when it stays on
     /// the interpreter (subroutine calls, size, a CPU or code generator
     /// failure), or always `Some(Err(..))` in a build without the `jit`

@@ -230,6 +230,9 @@ type SceneResult = (Vec<[u8; 4]>, Vec<f32>, Vec<u8>, Vec<String>);
 /// with derivatives and discard; and a draw stopped by the loop budget in
 /// some tiles only.
 fn scene(workers: &crate::Workers) -> SceneResult {
+    // Native code from a kernel's 32nd batch on, so these short draws
+    // run it (the default waits for 50,000 batches).
+    crate::ex::set_native_after(32);
     let (w, h) = (200u32, 150u32);
     let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, true);
     fb.clear_color(&[0], [0.1, 0.2, 0.3, 1.0], [true; 4], None);
@@ -609,6 +612,9 @@ fn impostors(
     spheres: usize,
     state_change: impl Fn(&mut PipelineState),
 ) -> (Vec<[u8; 4]>, Vec<f32>, u64) {
+    // Native code from a kernel's 32nd batch on, so these short draws
+    // run it (the default waits for 50,000 batches).
+    crate::ex::set_native_after(32);
     let (vs, fs) = program(
         "attribute vec4 pos; attribute vec4 sph; varying vec4 s;\n\
          void main() { gl_Position = pos; s = sph; }",
@@ -775,6 +781,9 @@ fn small_triangles(
     func: CompareFunc,
     state_change: impl Fn(&mut PipelineState),
 ) -> SceneResult {
+    // Native code from a kernel's 32nd batch on, so these short draws
+    // run it (the default waits for 50,000 batches).
+    crate::ex::set_native_after(32);
     let (vs, fs) = program(
         "attribute vec4 pos; attribute vec4 col; varying vec4 v;\n\
          void main() { gl_Position = pos; v = col; }",
