@@ -12,6 +12,7 @@
 //! reading the very bits it read before, on every lane.
 
 use crate::program::{Op, Program, Reg, TexLod};
+use smallvec::SmallVec;
 
 /// What [`analyze`] finds.
 pub(crate) struct Liveness {
@@ -240,17 +241,17 @@ fn get(bits: &[u64], r: Reg) -> bool {
 /// How an op touches registers: `(first, count)` ranges it writes on every
 /// lane, writes on some lanes, and reads.
 pub(crate) struct Effects {
-    pub full_defs: Vec<(Reg, u32)>,
-    pub partial_defs: Vec<(Reg, u32)>,
-    pub uses: Vec<(Reg, u32)>,
+    pub full_defs: SmallVec<[(Reg, u32); 2]>,
+    pub partial_defs: SmallVec<[(Reg, u32); 2]>,
+    pub uses: SmallVec<[(Reg, u32); 8]>,
     pub control: bool,
 }
 
 pub(crate) fn effects(p: &Program, op: &Op) -> Effects {
     let mut e = Effects {
-        full_defs: Vec::new(),
-        partial_defs: Vec::new(),
-        uses: Vec::new(),
+        full_defs: SmallVec::new(),
+        partial_defs: SmallVec::new(),
+        uses: SmallVec::new(),
         control: false,
     };
     match *op {
