@@ -1412,15 +1412,18 @@ impl<'a, 'b> Emit<'a, 'b> {
                 let a = self.fv(a);
                 self.ftz(a)
             }
+            // Neither result is ever subnormal (a square root is at least
+            // 2^-74.5 when nonzero, 1/sqrt at least 2^-64), so they need no
+            // flush.
             F1::Sqrt => {
                 let r = self.b.ins().sqrt(x);
-                self.ftz(r)
+                self.iv(r)
             }
             F1::InverseSqrt => {
                 let s = self.b.ins().sqrt(x);
                 let one = self.fconst(1.0);
                 let r = self.b.ins().fdiv(one, s);
-                self.ftz(r)
+                self.iv(r)
             }
             F1::Radians | F1::Degrees => {
                 let k = if f == F1::Radians {
