@@ -4,7 +4,10 @@
 //! ops compute, at every kept op, the very bits the full program computes
 //! in the registers they read, on every lane: the same execution masks, the
 //! same loop iteration counts (and loop-budget error), the same `discard`s
-//! and the same `gl_FragDepth`.
+//! and the same `gl_FragDepth`. In programs without loops, a branch left
+//! with nothing but its own mask changes (an `if` that only chose colours,
+//! such as each light of an unrolled lighting loop) is dropped with the
+//! condition it tested: it ends with the mask it started with.
 
 use crate::liveness::analyze;
 use crate::program::{Op, Program, Reg};
@@ -22,18 +25,85 @@ pub(crate) fn slice(p: &Program, live_out: &[Reg]) -> Option<Program> {
     if n == 0 {
         return None;
     }
-    let keep = analyze(p, &p.ops, p.registers, live_out)?.keep;
-    let kept = keep.iter().filter(|&&k| k).count();
-    if kept * 100 > n * (100 - MIN_SAVING_PERCENT) {
+    // Slice, then drop the branches left with nothing but mask changes
+    // (an `if` whose body only mattered for colour) and slice again: the
+    // conditions those branches tested are then unread.
+    let mut keep = analyze(p, &p.ops, p.registers, live_out)?.keep;
+    let mut dropped = drop_empty_regions(&p.ops, &mut keep);
+    let mut out = compact(p, &keep);
+    for _ in 0..4 {
+        if !dropped {
+            break;
+        }
+        keep = analyze(&out, &out.ops, out.registers, live_out)?.keep;
+        dropped = drop_empty_regions(&out.ops, &mut keep);
+        if keep.iter().all(|&k| k) {
+            break;
+        }
+        out = compact(&out, &keep);
+    }
+    if out.ops.len() * 100 > n * (100 - MIN_SAVING_PERCENT) {
         return None;
     }
+    out.validate().ok()?;
+    Some(out)
+}
 
+/// Unmarks in `keep` every kept `SaveMask s … RestoreMask s` region
+/// whose kept ops in between only narrow the mask (`AndMask`,
+/// `AndNotMask`, `JumpIfNone`, inner such regions): the region ends with
+/// the mask it started with and changed nothing else. Only in programs
+/// without loops or subroutines (whose mask slots are restored more than
+/// once). Returns whether any region was dropped.
+fn drop_empty_regions(ops: &[Op], keep: &mut [bool]) -> bool {
+    if ops.iter().zip(keep.iter()).any(|(op, &k)| {
+        k && matches!(
+            op,
+            Op::LoopIter | Op::Jump { .. } | Op::Call { .. } | Op::Ret { .. }
+        )
+    }) {
+        return false;
+    }
+    // Open regions: (slot, first op, nothing but mask changes so far).
+    let mut open: Vec<(u32, usize, bool)> = Vec::new();
+    let mut dropped = false;
+    for (i, op) in ops.iter().enumerate() {
+        if !keep.get(i).copied().unwrap_or(false) {
+            continue;
+        }
+        match *op {
+            Op::SaveMask { slot } => open.push((slot, i, true)),
+            Op::RestoreMask { slot } => match open.last().copied() {
+                Some((s, first, empty)) if s == slot => {
+                    open.pop();
+                    if empty {
+                        for k in keep.iter_mut().take(i + 1).skip(first) {
+                            *k = false;
+                        }
+                        dropped = true;
+                    } else if let Some(outer) = open.last_mut() {
+                        outer.2 = false;
+                    }
+                }
+                _ => open.iter_mut().for_each(|r| r.2 = false),
+            },
+            Op::AndMask { .. } | Op::AndNotMask { .. } | Op::JumpIfNone { .. } => {}
+            _ => open.iter_mut().for_each(|r| r.2 = false),
+        }
+    }
+    dropped
+}
+
+/// The ops of `p` that `keep` marks, jump targets renumbered.
+fn compact(p: &Program, keep: &[bool]) -> Program {
+    let n = p.ops.len();
+    let kept = keep.iter().filter(|&&k| k).count();
     // Renumber: an old op index maps to the first kept op at or after it.
     let mut new_index = vec![0u32; n + 1];
     let mut next = 0u32;
     for i in 0..n {
         new_index[i] = next;
-        if keep[i] {
+        if keep.get(i).copied().unwrap_or(false) {
             next += 1;
         }
     }
@@ -41,7 +111,7 @@ pub(crate) fn slice(p: &Program, live_out: &[Reg]) -> Option<Program> {
     let remap = |t: u32| new_index[(t as usize).min(n)];
     let mut ops = Vec::with_capacity(kept);
     for (i, op) in p.ops.iter().enumerate() {
-        if !keep[i] {
+        if !keep.get(i).copied().unwrap_or(false) {
             continue;
         }
         ops.push(match *op {
@@ -70,7 +140,7 @@ pub(crate) fn slice(p: &Program, live_out: &[Reg]) -> Option<Program> {
     statements.reverse();
     statements.dedup_by_key(|s| s.op);
     statements.reverse();
-    let out = Program {
+    Program {
         ops,
         textures: p.textures.clone(),
         kill_slots: p.kill_slots.clone(),
@@ -81,7 +151,5 @@ pub(crate) fn slice(p: &Program, live_out: &[Reg]) -> Option<Program> {
         statements,
         vars: p.vars.clone(),
         printfs: p.printfs.clone(),
-    };
-    out.validate().ok()?;
-    Some(out)
+    }
 }

@@ -196,6 +196,19 @@ fn loops_branches_and_discard_in_loops() {
             vec3 n = normalize(v.xyz);
             gl_FragColor = vec4(shade(n), shade(-n), shade(n.yzx), exp(v.w));
         }",
+        // Branches that only choose colours (dropped from the slice, with
+        // their conditions) beside one whose discard and depth stay.
+        "varying vec4 v;
+        void main() {
+            vec4 c = vec4(0.0);
+            if (v.x > 0.5) { c.r = 1.0; if (v.y > 0.2) c.g = v.z; else c.b = v.w; }
+            else { c = v; }
+            float z = v.z * 0.5 + 0.5;
+            if (v.w > 1.2) { if (v.y < 0.0) discard; z = 0.25; }
+            if (v.y > 1.0) c *= 2.0;
+            gl_FragColor = c;
+            gl_FragDepth = z;
+        }",
         // A dynamically indexed array (gather/scatter) feeding depth.
         "#version 120
         varying vec4 v;
@@ -210,8 +223,21 @@ fn loops_branches_and_discard_in_loops() {
             gl_FragDepth = z;
         }",
     ];
+    let saves = |k: &Kernel| {
+        k.program
+            .ops
+            .iter()
+            .filter(|op| matches!(op, crate::program::Op::SaveMask { .. }))
+            .count()
+    };
     for (n, src) in shaders.iter().enumerate() {
         let stage = link_one(Stage::Fragment, src).unwrap_or_else(|e| panic!("{n}: {e}"));
+        if src.contains("c *= 2.0") {
+            let k = Kernel::new(&stage).expect("lowers");
+            let slice = k.depth_only().expect("a slice");
+            // main's region and the discarding branch's two are left.
+            assert_eq!(saves(&slice), 3, "{} of {}", saves(&slice), saves(&k));
+        }
         for limit in [crate::limits::INLINE_LIMIT, 0] {
             let k = Kernel::with_inline_limit(&stage, limit).expect("lowers");
             let u = vec![0u32; k.interface().uniform_words];
