@@ -101,8 +101,8 @@ fn compact(p: &Program, keep: &[bool]) -> Program {
     // Renumber: an old op index maps to the first kept op at or after it.
     let mut new_index = vec![0u32; n + 1];
     let mut next = 0u32;
-    for i in 0..n {
-        new_index[i] = next;
+    for (i, slot) in new_index.iter_mut().take(n).enumerate() {
+        *slot = next;
         if keep.get(i).copied().unwrap_or(false) {
             next += 1;
         }
