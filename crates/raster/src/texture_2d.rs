@@ -270,7 +270,7 @@ fn sample_in<const SIMD: bool>(
             let mag = lambda.is_nan() || lambda <= c;
             let lb = base_f + lambda;
             let top = lb >= q_f;
-            let d1 = floor_index(floor_lane(lb)).max(base_i).min(q_i);
+            let d1 = floor_index(floor_of::<SIMD>(lb)).max(base_i).min(q_i);
             level[0][l] = if mag {
                 base_i
             } else if top {
@@ -279,7 +279,7 @@ fn sample_in<const SIMD: bool>(
                 d1
             };
             level[1][l] = (d1 + 1).min(q_i);
-            f[l] = lambda - floor_lane(lambda);
+            f[l] = lambda - floor_of::<SIMD>(lambda);
             is_two[l] = !mag && !top;
             is_nearest[l] = if mag { mag_nearest } else { min_nearest };
         }
@@ -575,6 +575,22 @@ fn clamp_lambdas<const N: usize>(tex: &Texture, base: &[f32; N], extra: &[f32; N
     lam
 }
 
+/// The floor of `x` for the fast path's uses: with `SIMD` (code compiled
+/// for AVX2, so SSE4.1), the rounding instruction, else [`floor_lane`].
+/// Both give `texture::floor`'s bits except on signaling NaNs, which the
+/// instruction quiets; no use tells them apart: a NaN floor becomes
+/// index 0 ([`floor_index`]), or is subtracted from the NaN it is the
+/// floor of, and a NaN minuend gives itself, quieted, whatever the
+/// subtrahend.
+#[inline(always)]
+fn floor_of<const SIMD: bool>(x: f32) -> f32 {
+    if SIMD {
+        x.floor()
+    } else {
+        floor_lane(x)
+    }
+}
+
 /// `texture::floor` without a branch (so loops over lanes vectorize):
 /// |x| ≥ 2^23, infinities and NaN are their own floor.
 #[inline(always)]
@@ -614,12 +630,12 @@ fn floor_index(fl: f32) -> i32 {
 
 /// `wrap_coord(s, wrap, n) * n` for every lane.
 #[inline(always)]
-fn wrap_scale(wrap: Wrap, s: &[f32; LANES], n: &[i32; LANES]) -> [f32; LANES] {
+fn wrap_scale<const SIMD: bool>(wrap: Wrap, s: &[f32; LANES], n: &[i32; LANES]) -> [f32; LANES] {
     let mut u = [0.0f32; LANES];
     match wrap {
         Wrap::Repeat => {
             for l in 0..LANES {
-                u[l] = (s[l] - floor_lane(s[l])) * n[l] as f32;
+                u[l] = (s[l] - floor_of::<SIMD>(s[l])) * n[l] as f32;
             }
         }
         Wrap::ClampToEdge => {
@@ -696,10 +712,10 @@ fn filter_lanes<const SIMD: bool>(
         w[l] = (table.width >> s).max(1) as i32;
         h[l] = (table.height >> s).max(1) as i32;
     }
-    let us = wrap_scale(ws, &st[0], &w);
-    let ut = wrap_scale(wt, &st[1], &h);
-    let (i0, i1, a) = axis(&us, &w, ws, nearest);
-    let (j0, j1, b) = axis(&ut, &h, wt, nearest);
+    let us = wrap_scale::<SIMD>(ws, &st[0], &w);
+    let ut = wrap_scale::<SIMD>(wt, &st[1], &h);
+    let (i0, i1, a) = axis::<SIMD>(&us, &w, ws, nearest);
+    let (j0, j1, b) = axis::<SIMD>(&ut, &h, wt, nearest);
     // Texel indices of the corners (S varies fastest), `j * width + i`:
     // below width × height ≤ 2^31 − 1 (`Checked::new`).
     let mut idx = [[0u32; LANES]; 4];
@@ -850,7 +866,7 @@ unsafe fn combine_unorm8_avx2(
 /// LINEAR, or the texel (in texel 0) for the lanes in `nearest`. Computes
 /// both for every lane and selects (so the loop vectorizes).
 #[inline(always)]
-fn axis(
+fn axis<const SIMD: bool>(
     u: &[f32; LANES],
     n: &[i32; LANES],
     wrap: Wrap,
@@ -862,9 +878,9 @@ fn axis(
     for l in 0..LANES {
         let n = n[l];
         let v = u[l] - 0.5;
-        let fl = floor_lane(v);
+        let fl = floor_of::<SIMD>(v);
         let i = floor_index(fl);
-        let near = wrap_index(floor_index(floor_lane(u[l])), wrap, n);
+        let near = wrap_index(floor_index(floor_of::<SIMD>(u[l])), wrap, n);
         alpha[l] = v - fl;
         i0[l] = if nearest[l] {
             near
@@ -1238,6 +1254,9 @@ mod tests {
                         coord[0][3] = f32::NAN;
                         coord[1][4] = f32::INFINITY;
                         coord[0][5] = -1e-9;
+                        // Signaling NaNs (`floor_of`).
+                        coord[1][2] = f32::from_bits(0x7f80_0001);
+                        coord[0][13] = f32::from_bits(0xff80_0101);
                         ddx[0][6] = 0.0;
                         ddy[1][6] = 0.0;
                         ddx[0][7] = f32::NAN;
@@ -1412,6 +1431,13 @@ mod tests {
             assert!(
                 a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()),
                 "floor({x:e})"
+            );
+            // The instruction's floor (`floor_of::<true>`): the same bits
+            // but for NaNs (which it may quiet).
+            let c = x.floor();
+            assert!(
+                a.to_bits() == c.to_bits() || (a.is_nan() && c.is_nan()),
+                "floor({x:e}) (instruction)"
             );
         }
     }
