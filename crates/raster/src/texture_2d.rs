@@ -8,23 +8,28 @@
 //! operation for operation and in the same order (λ, level selection,
 //! wrapping, weights, the sum over the four texels, the blend of two
 //! levels), so the results are the same bits; what it saves is the general
-//! path's per-lane dispatch: completeness and state are looked at once per
-//! request (the levels' sizes and storage in a small table), texel
-//! indices are plain integers (no border case), and every step works on
-//! arrays of the 16 lanes: λ, levels, wrapping, the four corners' indices
-//! and weights, then the texels (scalar loads, the only per-lane step),
-//! the bilinear sum over all lanes (nearest lanes select corner 0) and
-//! the blend of two levels.
+//! path's per-lane dispatch: completeness and storage are found once per
+//! set of units (`TextureUnits::checked_2d`, an entry per unit holding
+//! the texture it describes) and the state is looked at once per
+//! request, texel indices are plain integers (no border case), and every
+//! step works on arrays of the 16 lanes: λ (once per quad when the
+//! derivatives and bias are the same in each quad's lanes, as the
+//! executor's always are), levels, wrapping, the four corners' indices
+//! and weights, then the texels (scalar loads per lane, or the AVX2
+//! gather instruction when every lane reads one level), the bilinear sum
+//! over all lanes (nearest lanes select corner 0) and the blend of two
+//! levels.
 //!
 //! The code is compiled for the baseline instruction set, for AVX2 + FMA
 //! and for AVX-512 + FMA, the one matching the executor's variant chosen
 //! at run time (`SHADERBOX_KERNEL`; the native-code executor gets the
 //! best the CPU has). The two x86 variants run some steps as explicit
 //! AVX2 code (RGBA8 conversion and sum, level blend, output select, the
-//! per-lane level sizes), eight lanes at a time, with the portable code's
-//! operations in its order: the bytes k become k/255 by a multiply and a
-//! correction by the exact residual (fused multiply-adds), correctly
-//! rounded like the division for every byte. A test compares every
+//! per-lane level sizes, the gather, the quad comparison; floors by the
+//! rounding instruction, see [`floor_of`]), eight lanes at a time, with
+//! the portable code's operations in its order: the bytes k become k/255
+//! by a multiply and a correction by the exact residual (fused
+//! multiply-adds), correctly rounded like the division for every byte. A test compares every
 //! variant the CPU has with the general path on random lookups.
 
 use crate::ex::{Lod, SampleRequest, LANES};
@@ -1445,6 +1450,50 @@ mod tests {
             }
         }
         assert!(complete > 400, "{complete} complete");
+    }
+
+    /// An entry of `TextureUnits::checked_2d` serves only the texture it
+    /// was found for: after a unit's texture changes, lookups still match
+    /// the general path.
+    #[test]
+    fn checked_entries_follow_the_units_textures() {
+        let mut seed = 0x77_u32;
+        let mut units = TextureUnits::new(vec![TextureUnit::default()]);
+        let req = SampleRequest {
+            unit: [0; LANES],
+            target: SamplerKind::Sampler2D,
+            coord: [
+                std::array::from_fn(|l| l as f32 * 0.13 - 0.4),
+                std::array::from_fn(|l| l as f32 * -0.07 + 0.2),
+                [0.0; LANES],
+                [1.0; LANES],
+            ],
+            compare: None,
+            lod: Lod::Explicit(std::array::from_fn(|l| l as f32 * 0.3 - 1.0)),
+            mask: 0xffff,
+        };
+        // Complete, another size, f32 texels, incomplete (a missing level).
+        let mut textures = vec![
+            random_texture(8, 8, 0, &mut seed),
+            random_texture(16, 4, 0, &mut seed),
+            random_texture(4, 4, !0, &mut seed),
+        ];
+        let mut incomplete = random_texture(8, 8, 0, &mut seed);
+        incomplete.levels.truncate(2);
+        textures.push(incomplete);
+        for mut tex in textures {
+            tex.min_filter = MinFilter::LinearMipmapLinear;
+            units.units[0].tex_2d = Some(Arc::new(tex));
+            let slow = general(&units, &req);
+            let mut fast = [[0.0; LANES]; 4];
+            if sample(&units, &req, &mut fast) {
+                assert_eq!(
+                    fast.map(|c| c.map(f32::to_bits)),
+                    slow.map(|c| c.map(f32::to_bits))
+                );
+            }
+        }
+        assert!(units.checked_2d.get().is_some());
     }
 
     #[test]
