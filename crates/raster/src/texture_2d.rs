@@ -1003,8 +1003,8 @@ fn gather_unorm8<const K: usize>(
             lane(texels, l, idx, raw);
         }
     } else {
-        for l in 0..LANES {
-            lane(unorm8_level(levels, level[l]), l, idx, raw);
+        for (l, &d) in level.iter().enumerate() {
+            lane(unorm8_level(levels, d), l, idx, raw);
         }
     }
 }
