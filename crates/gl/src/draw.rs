@@ -671,7 +671,7 @@ impl Context {
             };
             units.push(unit);
         }
-        raster::TextureUnits { units }
+        raster::TextureUnits::new(units)
     }
 
     /// The kernels of the draw: the program's, or fixed-function ones.

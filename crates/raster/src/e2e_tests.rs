@@ -148,6 +148,7 @@ fn textured_quad_with_implicit_lod() {
     t.min_filter = MinFilter::NearestMipmapNearest;
     t.mag_filter = MagFilter::Nearest;
     let units = TextureUnits {
+        checked_2d: Default::default(),
         units: vec![
             TextureUnit::default(),
             TextureUnit {
@@ -344,6 +345,7 @@ fn scene(workers: &crate::Workers) -> SceneResult {
     tex.min_filter = MinFilter::LinearMipmapLinear;
     tex.mag_filter = MagFilter::Linear;
     let units = TextureUnits {
+        checked_2d: Default::default(),
         units: vec![TextureUnit {
             tex_2d: Some(Arc::new(tex)),
             ..TextureUnit::default()

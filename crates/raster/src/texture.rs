@@ -339,6 +339,22 @@ pub struct TextureUnit {
 #[derive(Clone, Debug, Default)]
 pub struct TextureUnits {
     pub units: Vec<TextureUnit>,
+    /// What the fast path of 2D lookups finds out about each unit's 2D
+    /// texture that depends on the texture alone (completeness, last
+    /// level, storage), at the first lookup through these units; each
+    /// entry holds the texture it describes and is used only for that
+    /// texture (`units` may change after it is filled).
+    pub(crate) checked_2d: std::sync::OnceLock<Vec<Option<crate::texture_2d::Checked>>>,
+}
+
+impl TextureUnits {
+    /// The units `units` (the texture units of a draw).
+    pub fn new(units: Vec<TextureUnit>) -> TextureUnits {
+        TextureUnits {
+            units,
+            checked_2d: std::sync::OnceLock::new(),
+        }
+    }
 }
 
 pub(crate) const MISSING: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
@@ -1007,6 +1023,7 @@ mod tests {
         tex.min_filter = MinFilter::Linear;
         assert_eq!(tex.last_level(), Some(0));
         let units = TextureUnits {
+            checked_2d: Default::default(),
             units: vec![TextureUnit {
                 tex_2d: Some(Arc::new(ramp(8, 8, 2))),
                 ..TextureUnit::default()

@@ -8,31 +8,37 @@
 //! operation for operation and in the same order (λ, level selection,
 //! wrapping, weights, the sum over the four texels, the blend of two
 //! levels), so the results are the same bits; what it saves is the general
-//! path's per-lane dispatch: completeness and state are looked at once per
-//! request (the levels' sizes and storage in a small table), texel
-//! indices are plain integers (no border case), and every step works on
-//! arrays of the 16 lanes: λ, levels, wrapping, the four corners' indices
-//! and weights, then the texels (scalar loads, the only per-lane step),
-//! the bilinear sum over all lanes (nearest lanes select corner 0) and
-//! the blend of two levels.
+//! path's per-lane dispatch: completeness and storage are found once per
+//! set of units (`TextureUnits::checked_2d`, an entry per unit holding
+//! the texture it describes) and the state is looked at once per
+//! request, texel indices are plain integers (no border case), and every
+//! step works on arrays of the 16 lanes: λ (once per quad when the
+//! derivatives and bias are the same in each quad's lanes, as the
+//! executor's always are), levels, wrapping, the four corners' indices
+//! and weights, then the texels (scalar loads per lane, or the AVX2
+//! gather instruction when every lane reads one level), the bilinear sum
+//! over all lanes (nearest lanes select corner 0) and the blend of two
+//! levels.
 //!
 //! The code is compiled for the baseline instruction set, for AVX2 + FMA
 //! and for AVX-512 + FMA, the one matching the executor's variant chosen
 //! at run time (`SHADERBOX_KERNEL`; the native-code executor gets the
 //! best the CPU has). The two x86 variants run some steps as explicit
 //! AVX2 code (RGBA8 conversion and sum, level blend, output select, the
-//! per-lane level sizes), eight lanes at a time, with the portable code's
-//! operations in its order: the bytes k become k/255 by a multiply and a
-//! correction by the exact residual (fused multiply-adds), correctly
-//! rounded like the division for every byte. A test compares every
+//! per-lane level sizes, the gather, the quad comparison; floors by the
+//! rounding instruction, see [`floor_of`]), eight lanes at a time, with
+//! the portable code's operations in its order: the bytes k become k/255
+//! by a multiply and a correction by the exact residual (fused
+//! multiply-adds), correctly rounded like the division for every byte. A test compares every
 //! variant the CPU has with the general path on random lookups.
 
 use crate::ex::{Lod, SampleRequest, LANES};
 use crate::texture::{
-    select_levels, wrap_coord, Levels, MagFilter, MinFilter, Texels, Texture, TextureTarget,
+    select_levels, wrap_coord, Image, Levels, MagFilter, MinFilter, Texels, Texture, TextureTarget,
     TextureUnits, Wrap, MAX_LOD_BIAS, MISSING,
 };
 use glsl::types::SamplerKind;
+use std::sync::Arc;
 
 /// Levels a request can address on this path (absolute level numbers):
 /// more is a 2^31-texel texture, which takes the general path.
@@ -178,9 +184,10 @@ fn sample_in<const SIMD: bool>(
     let Some(unit) = units.units.get(unit_index as usize) else {
         return false;
     };
-    let Some(tex) = unit.tex_2d.as_deref() else {
+    let Some(tex_arc) = unit.tex_2d.as_ref() else {
         return false;
     };
+    let tex: &Texture = tex_arc;
     let borderless = |w: Wrap| matches!(w, Wrap::Repeat | Wrap::ClampToEdge | Wrap::MirroredRepeat);
     if tex.target != TextureTarget::Tex2D
         || tex.depth_format
@@ -190,9 +197,28 @@ fn sample_in<const SIMD: bool>(
         return false;
     }
     // Incomplete textures take the general path (which samples black).
-    let Some((table, q)) = LevelTable::new(tex) else {
-        return false;
+    // What depends on the texture alone is found once per set of units
+    // (the entry of this very texture, else found here).
+    let checked = units.checked_2d.get_or_init(|| {
+        units
+            .units
+            .iter()
+            .map(|u| u.tex_2d.as_ref().and_then(Checked::new))
+            .collect()
+    });
+    let found;
+    let checked = match checked.get(unit_index as usize) {
+        Some(Some(c)) if Arc::ptr_eq(&c.tex, tex_arc) => c,
+        _ => {
+            found = Checked::new(tex_arc);
+            match &found {
+                Some(c) => c,
+                None => return false,
+            }
+        }
     };
+    let q = checked.q;
+    let table = LevelTable::new(tex, checked);
     let base = tex.base_level as usize;
     let Some(base_img) = tex.levels.get(base) else {
         return false;
@@ -216,7 +242,7 @@ fn sample_in<const SIMD: bool>(
     } else if unmipmapped {
         // Magnification (λ ≤ c = 0, or NaN) or minification of the base
         // level, over the lanes.
-        let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod);
+        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, &req.lod);
         let mut is_nearest = [false; LANES];
         for l in 0..LANES {
             let mag = lam[l].is_nan() || lam[l] <= 0.0;
@@ -230,7 +256,7 @@ fn sample_in<const SIMD: bool>(
         MinFilter::LinearMipmapLinear | MinFilter::NearestMipmapLinear
     ) {
         // λ of every lane, as `texture::lambda` computes it.
-        let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod);
+        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, &req.lod);
         // Eq. 3.28/3.29 over the lanes, branch-free.
         let c = if tex.mag_filter == MagFilter::Linear
             && tex.min_filter == MinFilter::NearestMipmapLinear
@@ -249,7 +275,7 @@ fn sample_in<const SIMD: bool>(
             let mag = lambda.is_nan() || lambda <= c;
             let lb = base_f + lambda;
             let top = lb >= q_f;
-            let d1 = floor_index(floor_lane(lb)).max(base_i).min(q_i);
+            let d1 = floor_index(floor_of::<SIMD>(lb)).max(base_i).min(q_i);
             level[0][l] = if mag {
                 base_i
             } else if top {
@@ -258,7 +284,7 @@ fn sample_in<const SIMD: bool>(
                 d1
             };
             level[1][l] = (d1 + 1).min(q_i);
-            f[l] = lambda - floor_lane(lambda);
+            f[l] = lambda - floor_of::<SIMD>(lambda);
             is_two[l] = !mag && !top;
             is_nearest[l] = if mag { mag_nearest } else { min_nearest };
         }
@@ -268,7 +294,7 @@ fn sample_in<const SIMD: bool>(
         }
         two &= mask;
     } else {
-        let lam = lambdas(tex, base_img, unit.lod_bias, &req.lod);
+        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, &req.lod);
         for lane in 0..LANES {
             if mask & (1 << lane) == 0 {
                 continue;
@@ -418,49 +444,127 @@ fn lanes(mask: u32) -> [bool; LANES] {
 }
 
 /// `texture::lambda` for every lane (the lanes outside the request's
-/// mask get some value), over all lanes at once.
+/// mask get some value), over all lanes at once; with derivatives (and
+/// bias) the same in the four lanes of each quad, as the executor's are
+/// (differences within the quad), once per quad: λ is a function of
+/// those values alone, so the same bits.
 #[inline(always)]
-fn lambdas(
+fn lambdas<const SIMD: bool>(
     tex: &Texture,
     base_img: &crate::texture::Image,
     unit_bias: f32,
     lod: &Lod,
 ) -> [f32; LANES] {
-    let mut base = [0.0f32; LANES];
-    let mut extra = [0.0f32; LANES];
     match lod {
         Lod::Explicit(v) => {
-            base = *v;
             // The general path adds a shader bias of 0.
-            extra = [unit_bias + 0.0; LANES];
+            clamp_lambdas(tex, v, &[unit_bias + 0.0; LANES])
         }
         Lod::Derivatives { ddx, ddy, bias } => {
-            let (w, h) = (base_img.width as f32, base_img.height as f32);
-            let mut rho = [0.0f32; LANES];
-            for l in 0..LANES {
-                let (ux, uy) = (ddx[0][l] * w, ddy[0][l] * w);
-                let mut sx = 0.0f32 + ux * ux;
-                let mut sy = 0.0f32 + uy * uy;
-                let (ux, uy) = (ddx[1][l] * h, ddy[1][l] * h);
-                sx += ux * ux;
-                sy += uy * uy;
-                // `math::sqrt` is correctly rounded, as the instruction is;
-                // a NaN here makes λ NaN whatever its bits.
-                let (rx, ry) = (sx.sqrt(), sy.sqrt());
-                // `math::max`.
-                rho[l] = if rx.is_nan() || rx < ry { ry } else { rx };
-            }
-            // Every lane (`log2` is branch-free and total), so that the
-            // loop vectorizes.
-            for l in 0..LANES {
-                base[l] = glsl::math::log2(rho[l]);
-                extra[l] = unit_bias + bias[l];
+            if quad_uniform::<SIMD>([&ddx[0], &ddx[1], &ddy[0], &ddy[1], bias]) {
+                // The quads' first lanes, twice (eight lanes: loops of
+                // four do not vectorize as well).
+                const HALF: usize = LANES / 2;
+                let pick = |a: &[f32; LANES]| -> [f32; HALF] {
+                    std::array::from_fn(|k| a[4 * (k % (LANES / 4))])
+                };
+                let lam = derivative_lambdas(
+                    tex,
+                    base_img,
+                    unit_bias,
+                    [&pick(&ddx[0]), &pick(&ddx[1])],
+                    [&pick(&ddy[0]), &pick(&ddy[1])],
+                    &pick(bias),
+                );
+                std::array::from_fn(|l| lam[l / 4])
+            } else {
+                derivative_lambdas(
+                    tex,
+                    base_img,
+                    unit_bias,
+                    [&ddx[0], &ddx[1]],
+                    [&ddy[0], &ddy[1]],
+                    bias,
+                )
             }
         }
     }
+}
+
+/// Whether every lane of `arrays` has the bits of its quad's first lane.
+#[inline(always)]
+fn quad_uniform<const SIMD: bool>(arrays: [&[f32; LANES]; 5]) -> bool {
+    #[cfg(target_arch = "x86_64")]
+    if SIMD {
+        use std::arch::x86_64::*;
+        // SAFETY: `SIMD` is only set in code compiled for AVX2, which runs
+        // only on CPUs that have it; the loads are of 8 consecutive
+        // elements inside an array (offset 0 or 8 of 16).
+        unsafe {
+            let first = _mm256_setr_epi32(0, 0, 0, 0, 4, 4, 4, 4);
+            let mut diff = _mm256_setzero_si256();
+            for a in arrays {
+                for o in [0, 8] {
+                    let v = _mm256_loadu_si256(a.as_ptr().add(o).cast());
+                    let f = _mm256_permutevar8x32_epi32(v, first);
+                    diff = _mm256_or_si256(diff, _mm256_xor_si256(v, f));
+                }
+            }
+            return _mm256_testz_si256(diff, diff) == 1;
+        }
+    }
+    let mut diff = 0u32;
+    for a in arrays {
+        for l in 0..LANES {
+            diff |= a[l].to_bits() ^ a[l & !3].to_bits();
+        }
+    }
+    diff == 0
+}
+
+/// `texture::lambda` from the derivatives of S and T and the shader's
+/// bias, for N lanes at once.
+#[inline(always)]
+fn derivative_lambdas<const N: usize>(
+    tex: &Texture,
+    base_img: &crate::texture::Image,
+    unit_bias: f32,
+    ddx: [&[f32; N]; 2],
+    ddy: [&[f32; N]; 2],
+    bias: &[f32; N],
+) -> [f32; N] {
+    let (w, h) = (base_img.width as f32, base_img.height as f32);
+    let mut rho = [0.0f32; N];
+    for l in 0..N {
+        let (ux, uy) = (ddx[0][l] * w, ddy[0][l] * w);
+        let mut sx = 0.0f32 + ux * ux;
+        let mut sy = 0.0f32 + uy * uy;
+        let (ux, uy) = (ddx[1][l] * h, ddy[1][l] * h);
+        sx += ux * ux;
+        sy += uy * uy;
+        // `math::sqrt` is correctly rounded, as the instruction is;
+        // a NaN here makes λ NaN whatever its bits.
+        let (rx, ry) = (sx.sqrt(), sy.sqrt());
+        // `math::max`.
+        rho[l] = if rx.is_nan() || rx < ry { ry } else { rx };
+    }
+    // Every lane (`log2` is branch-free and total), so that the loop
+    // vectorizes.
+    let mut base = [0.0f32; N];
+    let mut extra = [0.0f32; N];
+    for l in 0..N {
+        base[l] = glsl::math::log2(rho[l]);
+        extra[l] = unit_bias + bias[l];
+    }
+    clamp_lambdas(tex, &base, &extra)
+}
+
+/// λ = clamp(base + clamp(texture bias + `extra`), min, max), per lane.
+#[inline(always)]
+fn clamp_lambdas<const N: usize>(tex: &Texture, base: &[f32; N], extra: &[f32; N]) -> [f32; N] {
     let (tex_bias, min_lod, max_lod) = (tex.lod_bias, tex.min_lod, tex.max_lod);
-    let mut lam = [0.0f32; LANES];
-    for l in 0..LANES {
+    let mut lam = [0.0f32; N];
+    for l in 0..N {
         let b = tex_bias + extra[l];
         // (Constant bounds: the clamp's assertion folds away.)
         let b = b.clamp(-MAX_LOD_BIAS, MAX_LOD_BIAS);
@@ -474,6 +578,22 @@ fn lambdas(
         lam[l] = x;
     }
     lam
+}
+
+/// The floor of `x` for the fast path's uses: with `SIMD` (code compiled
+/// for AVX2, so SSE4.1), the rounding instruction, else [`floor_lane`].
+/// Both give `texture::floor`'s bits except on signaling NaNs, which the
+/// instruction quiets; no use tells them apart: a NaN floor becomes
+/// index 0 ([`floor_index`]), or is subtracted from the NaN it is the
+/// floor of, and a NaN minuend gives itself, quieted, whatever the
+/// subtrahend.
+#[inline(always)]
+fn floor_of<const SIMD: bool>(x: f32) -> f32 {
+    if SIMD {
+        x.floor()
+    } else {
+        floor_lane(x)
+    }
 }
 
 /// `texture::floor` without a branch (so loops over lanes vectorize):
@@ -515,12 +635,12 @@ fn floor_index(fl: f32) -> i32 {
 
 /// `wrap_coord(s, wrap, n) * n` for every lane.
 #[inline(always)]
-fn wrap_scale(wrap: Wrap, s: &[f32; LANES], n: &[i32; LANES]) -> [f32; LANES] {
+fn wrap_scale<const SIMD: bool>(wrap: Wrap, s: &[f32; LANES], n: &[i32; LANES]) -> [f32; LANES] {
     let mut u = [0.0f32; LANES];
     match wrap {
         Wrap::Repeat => {
             for l in 0..LANES {
-                u[l] = (s[l] - floor_lane(s[l])) * n[l] as f32;
+                u[l] = (s[l] - floor_of::<SIMD>(s[l])) * n[l] as f32;
             }
         }
         Wrap::ClampToEdge => {
@@ -589,7 +709,7 @@ fn filter_lanes<const SIMD: bool>(
 ) {
     let (ws, wt) = (tex.wrap[0], tex.wrap[1]);
     // Level base + s is `max(1, size >> s)` texels wide and high
-    // (`LevelTable::new` checks it), s in 0..=31.
+    // (`Checked::new` checks it), s in 0..=31.
     let mut w = [1i32; LANES];
     let mut h = [1i32; LANES];
     for l in 0..LANES {
@@ -597,12 +717,12 @@ fn filter_lanes<const SIMD: bool>(
         w[l] = (table.width >> s).max(1) as i32;
         h[l] = (table.height >> s).max(1) as i32;
     }
-    let us = wrap_scale(ws, &st[0], &w);
-    let ut = wrap_scale(wt, &st[1], &h);
-    let (i0, i1, a) = axis(&us, &w, ws, nearest);
-    let (j0, j1, b) = axis(&ut, &h, wt, nearest);
+    let us = wrap_scale::<SIMD>(ws, &st[0], &w);
+    let ut = wrap_scale::<SIMD>(wt, &st[1], &h);
+    let (i0, i1, a) = axis::<SIMD>(&us, &w, ws, nearest);
+    let (j0, j1, b) = axis::<SIMD>(&ut, &h, wt, nearest);
     // Texel indices of the corners (S varies fastest), `j * width + i`:
-    // below width × height ≤ 2^31 − 1 (`LevelTable::new`).
+    // below width × height ≤ 2^31 − 1 (`Checked::new`).
     let mut idx = [[0u32; LANES]; 4];
     for l in 0..LANES {
         let (r0, r1) = (j0[l].wrapping_mul(w[l]), j1[l].wrapping_mul(w[l]));
@@ -626,7 +746,7 @@ fn filter_lanes<const SIMD: bool>(
         Store::Unorm8(levels) if nearest.iter().all(|&n| n) => {
             // NEAREST on every lane: corner 0 alone.
             let mut raw = [[0u32; LANES]; 1];
-            gather_unorm8(levels, level, &[idx[0]], &mut raw);
+            gather::<SIMD, 1>(levels, level, &[idx[0]], &mut raw);
             for (c, out) in out.iter_mut().enumerate() {
                 for (v, &r) in out.iter_mut().zip(&raw[0]) {
                     *v = unorm8((r >> (8 * c)) & 255);
@@ -635,7 +755,7 @@ fn filter_lanes<const SIMD: bool>(
         }
         Store::Unorm8(levels) => {
             let mut raw = [[0u32; LANES]; 4];
-            gather_unorm8(levels, level, &idx, &mut raw);
+            gather::<SIMD, 4>(levels, level, &idx, &mut raw);
             #[cfg(target_arch = "x86_64")]
             if SIMD {
                 // SAFETY: `SIMD` is only set in code compiled for AVX2
@@ -751,7 +871,7 @@ unsafe fn combine_unorm8_avx2(
 /// LINEAR, or the texel (in texel 0) for the lanes in `nearest`. Computes
 /// both for every lane and selects (so the loop vectorizes).
 #[inline(always)]
-fn axis(
+fn axis<const SIMD: bool>(
     u: &[f32; LANES],
     n: &[i32; LANES],
     wrap: Wrap,
@@ -763,9 +883,9 @@ fn axis(
     for l in 0..LANES {
         let n = n[l];
         let v = u[l] - 0.5;
-        let fl = floor_lane(v);
+        let fl = floor_of::<SIMD>(v);
         let i = floor_index(fl);
-        let near = wrap_index(floor_index(floor_lane(u[l])), wrap, n);
+        let near = wrap_index(floor_index(floor_of::<SIMD>(u[l])), wrap, n);
         alpha[l] = v - fl;
         i0[l] = if nearest[l] {
             near
@@ -791,66 +911,131 @@ fn unorm8(k: u32) -> f32 {
     k as f32 / 255.0
 }
 
-/// Texels `idx[k][lane]` of level `level[lane]` (of [`Store::Unorm8`]),
-/// as little-endian RGBA8 words: scalar loads. Kept out of line: inlined,
-/// the compiler interleaves the loads with the code around them into
-/// badly vectorized code.
-#[inline(never)]
-fn gather_unorm8<const K: usize>(
-    levels: &[&[[u8; 4]]; MAX_LEVELS],
+/// [`gather_unorm8`]; with `SIMD` (code compiled for AVX2), by the
+/// gather instruction when every lane reads the same level (the usual
+/// case).
+#[inline(always)]
+fn gather<const SIMD: bool, const K: usize>(
+    levels: &[Image],
     level: &[i32; LANES],
     idx: &[[u32; LANES]; K],
     raw: &mut [[u32; LANES]; K],
 ) {
-    for l in 0..LANES {
-        let texels = levels[level[l] as usize % MAX_LEVELS];
+    #[cfg(target_arch = "x86_64")]
+    if SIMD {
+        let d0 = level[0];
+        if level.iter().all(|&d| d == d0) {
+            // SAFETY: `SIMD` is only set in code compiled for AVX2, which
+            // runs only on CPUs that have it.
+            unsafe { gather_unorm8_avx2(unorm8_level(levels, d0), idx, raw) };
+            return;
+        }
+    }
+    gather_unorm8(levels, level, idx, raw);
+}
+
+/// Texels `idx[k][lane]` of `texels` (never empty), as little-endian RGBA8
+/// words, by the AVX2 gather instruction, eight lanes at a time.
+///
+/// # Safety
+/// The CPU must support AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn gather_unorm8_avx2<const K: usize>(
+    texels: &[[u8; 4]],
+    idx: &[[u32; LANES]; K],
+    raw: &mut [[u32; LANES]; K],
+) {
+    use std::arch::x86_64::*;
+    // Every index is below the level's width × height ≤ 2^31 − 1, which
+    // it holds (`Store::Unorm8`); the clamp to the last texel keeps that
+    // local (and the index non-negative as an i32).
+    let last = texels.len().saturating_sub(1).min(i32::MAX as usize) as i32;
+    // SAFETY: the loads and stores are of 8 consecutive elements inside
+    // `idx[k]` and `raw[k]` (offset 0 or 8 of 16); each gathered index is
+    // in 0..=last, so every 4-byte read is of a texel of `texels`.
+    unsafe {
+        let last = _mm256_set1_epi32(last);
+        for k in 0..K {
+            for o in [0, 8] {
+                let i = _mm256_loadu_si256(idx[k].as_ptr().add(o).cast());
+                let i = _mm256_min_epu32(i, last);
+                let v = _mm256_i32gather_epi32::<4>(texels.as_ptr().cast(), i);
+                _mm256_storeu_si256(raw[k].as_mut_ptr().add(o).cast(), v);
+            }
+        }
+    }
+}
+
+/// Texels `idx[k][lane]` of level `level[lane]` (of [`Store::Unorm8`]),
+/// as little-endian RGBA8 words: scalar loads (from one level's texels
+/// when every lane reads the same level, the usual case). Kept out of
+/// line: inlined, the compiler interleaves the loads with the code
+/// around them into badly vectorized code.
+#[inline(never)]
+fn gather_unorm8<const K: usize>(
+    levels: &[Image],
+    level: &[i32; LANES],
+    idx: &[[u32; LANES]; K],
+    raw: &mut [[u32; LANES]; K],
+) {
+    #[inline(always)]
+    fn lane<const K: usize>(
+        texels: &[[u8; 4]],
+        l: usize,
+        idx: &[[u32; LANES]; K],
+        raw: &mut [[u32; LANES]; K],
+    ) {
         // Every index is below the level's width × height, which it holds
         // (`Store::Unorm8`); the clamp only keeps that local.
         let last = texels.len().saturating_sub(1);
         for k in 0..K {
             let i = (idx[k][l] as usize).min(last);
-            // SAFETY: every slice of `Store::Unorm8` has at least one
-            // texel, so `i <= len - 1` is in bounds.
+            // SAFETY: `unorm8_level` never gives an empty slice, so
+            // `i <= len - 1` is in bounds.
             raw[k][l] = u32::from_le_bytes(unsafe { *texels.get_unchecked(i) });
+        }
+    }
+    let d0 = level[0];
+    if level.iter().all(|&d| d == d0) {
+        let texels = unorm8_level(levels, d0);
+        for l in 0..LANES {
+            lane(texels, l, idx, raw);
+        }
+    } else {
+        for (l, &d) in level.iter().enumerate() {
+            lane(unorm8_level(levels, d), l, idx, raw);
         }
     }
 }
 
-/// The levels a request may read (base..=q): their sizes and storage,
-/// looked at once per request instead of once per lane.
-struct LevelTable<'a> {
-    /// The base level and its width and height; level base + s is
-    /// `max(1, width >> s)` by `max(1, height >> s)` texels.
-    base: i32,
-    width: u32,
-    height: u32,
-    store: Store<'a>,
+/// What [`LevelTable::new`] needs to know about a texture that depends on
+/// the texture alone, with the texture (found once per
+/// [`TextureUnits`], see `TextureUnits::checked_2d`).
+#[derive(Clone, Debug)]
+pub(crate) struct Checked {
+    /// The texture described (its entry is used for it alone).
+    tex: Arc<Texture>,
+    /// Its last level, as [`Texture::last_level`] finds it.
+    q: usize,
+    /// How the levels base..=q are stored.
+    kind: Kind,
 }
 
-/// The texel storage of the levels base..=q.
-enum Store<'a> {
-    /// Every level RGBA8 and holding at least its `w × h` texels (the
-    /// other entries: [`ONE_TEXEL`]).
-    Unorm8([&'a [[u8; 4]]; MAX_LEVELS]),
-    /// Every level f32 (the other entries empty).
-    F32([&'a [[f32; 4]]; MAX_LEVELS]),
-    /// Some of each, or a level with fewer texels than its sizes say (a
-    /// 2D level of depth 0): read per texel through [`Texels::get`].
+/// The storage of a texture's levels base..=q (see [`Store`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    Unorm8,
+    F32,
     Mixed,
 }
 
-/// The stand-in storage of the levels a request cannot address.
-static ONE_TEXEL: [[u8; 4]; 1] = [[0, 0, 0, 255]];
-
-impl<'a> LevelTable<'a> {
-    /// The table of the levels `base..=q` of `tex` (a 2D texture) and q,
-    /// its last level as [`Texture::last_level`] finds it, which this
-    /// checks the same way; `None` when the texture is incomplete or a
-    /// level is too large for 32-bit texel indices (the general path
-    /// takes those).
-    #[inline(always)]
-    fn new(tex: &'a Texture) -> Option<(LevelTable<'a>, usize)> {
-        debug_assert_eq!(tex.target, TextureTarget::Tex2D);
+impl Checked {
+    /// The description of `tex` (a 2D texture) and q, its last level as
+    /// [`Texture::last_level`] finds it, which this checks the same way;
+    /// `None` when the texture is incomplete or a level is too large for
+    /// 32-bit texel indices (the general path takes those).
+    fn new(tex: &Arc<Texture>) -> Option<Checked> {
         if tex.base_level > tex.max_level {
             return None;
         }
@@ -893,32 +1078,91 @@ impl<'a> LevelTable<'a> {
                 Texels::F32(_) => float += 1,
             }
         }
-        let store = if short || (unorm8 != 0 && float != 0) {
-            Store::Mixed
+        let kind = if short || (unorm8 != 0 && float != 0) {
+            Kind::Mixed
         } else if float == 0 {
-            let mut v: [&[[u8; 4]]; MAX_LEVELS] = [&ONE_TEXEL; MAX_LEVELS];
-            for (d, img) in (base..=q).zip(levels) {
-                if let Texels::Unorm8(t) = &img.texels {
-                    v[d] = t;
-                }
-            }
-            Store::Unorm8(v)
+            Kind::Unorm8
         } else {
-            let mut v: [&[[f32; 4]]; MAX_LEVELS] = [&[]; MAX_LEVELS];
-            for (d, img) in (base..=q).zip(levels) {
-                if let Texels::F32(t) = &img.texels {
-                    v[d] = t;
-                }
-            }
-            Store::F32(v)
+            Kind::F32
         };
-        let table = LevelTable {
+        Some(Checked {
+            tex: Arc::clone(tex),
+            q,
+            kind,
+        })
+    }
+}
+
+/// The levels a request may read (base..=q): their sizes and storage,
+/// looked at once per request instead of once per lane.
+struct LevelTable<'a> {
+    /// The base level and its width and height; level base + s is
+    /// `max(1, width >> s)` by `max(1, height >> s)` texels.
+    base: i32,
+    width: u32,
+    height: u32,
+    store: Store<'a>,
+}
+
+/// The texel storage of the levels base..=q (all the texture's levels,
+/// by level number).
+enum Store<'a> {
+    /// Every level base..=q RGBA8 and holding at least its `w × h` texels
+    /// (see [`unorm8_level`]).
+    Unorm8(&'a [Image]),
+    /// Every level base..=q f32.
+    F32(&'a [Image]),
+    /// Some of each, or a level with fewer texels than its sizes say (a
+    /// 2D level of depth 0): read per texel through [`Texels::get`].
+    Mixed,
+}
+
+/// The stand-in storage of the levels a request cannot address.
+static ONE_TEXEL: [[u8; 4]; 1] = [[0, 0, 0, 255]];
+
+/// The RGBA8 texels of level `d` of `levels`, or [`ONE_TEXEL`] (a level
+/// outside [`Store::Unorm8`]'s, stored otherwise or holding none): never
+/// empty.
+#[inline(always)]
+fn unorm8_level(levels: &[Image], d: i32) -> &[[u8; 4]] {
+    match levels.get(d as usize).map(|img| &img.texels) {
+        Some(Texels::Unorm8(t)) if !t.is_empty() => t,
+        _ => &ONE_TEXEL,
+    }
+}
+
+/// The f32 texels of level `d` of `levels`, or none.
+#[inline(always)]
+fn f32_level(levels: &[Image], d: i32) -> &[[f32; 4]] {
+    match levels.get(d as usize).map(|img| &img.texels) {
+        Some(Texels::F32(t)) => t,
+        _ => &[],
+    }
+}
+
+impl<'a> LevelTable<'a> {
+    /// The table of the levels `base..=q` of `tex` (a 2D texture), which
+    /// `checked` describes.
+    #[inline(always)]
+    fn new(tex: &'a Texture, checked: &Checked) -> LevelTable<'a> {
+        debug_assert_eq!(tex.target, TextureTarget::Tex2D);
+        debug_assert!(std::ptr::eq(tex, &*checked.tex));
+        let base = tex.base_level as usize;
+        let (width, height) = tex
+            .levels
+            .get(base)
+            .map_or((1, 1), |img| (img.width, img.height));
+        let store = match checked.kind {
+            Kind::Unorm8 => Store::Unorm8(&tex.levels),
+            Kind::F32 => Store::F32(&tex.levels),
+            Kind::Mixed => Store::Mixed,
+        };
+        LevelTable {
             base: base as i32,
             width,
             height,
             store,
-        };
-        Some((table, q))
+        }
     }
 
     /// Texels `idx[k][lane]` (corner k) of level `level[lane]` as RGBA
@@ -935,7 +1179,7 @@ impl<'a> LevelTable<'a> {
         match &self.store {
             Store::F32(levels) => {
                 for l in 0..LANES {
-                    let texels = levels[level[l] as usize % MAX_LEVELS];
+                    let texels = f32_level(levels, level[l]);
                     for k in 0..4 {
                         let v = texels.get(idx[k][l] as usize).copied().unwrap_or(MISSING);
                         for c in 0..4 {
@@ -1044,6 +1288,7 @@ mod tests {
                     tex.min_lod = -2.0 + k as f32 * 0.1;
                     tex.max_lod = if k % 3 == 2 { 1.5 } else { 1000.0 };
                     let units = TextureUnits {
+                        checked_2d: Default::default(),
                         units: vec![
                             TextureUnit::default(),
                             TextureUnit {
@@ -1070,11 +1315,31 @@ mod tests {
                         coord[0][3] = f32::NAN;
                         coord[1][4] = f32::INFINITY;
                         coord[0][5] = -1e-9;
+                        // Signaling NaNs (`floor_of`).
+                        coord[1][2] = f32::from_bits(0x7f80_0001);
+                        coord[0][13] = f32::from_bits(0xff80_0101);
                         ddx[0][6] = 0.0;
                         ddy[1][6] = 0.0;
                         ddx[0][7] = f32::NAN;
                         ddy[1][8] = f32::INFINITY;
                         ddx[1][10] = 1e30;
+                        // Half the rounds: derivatives the same in each
+                        // quad, as the executor's (λ once per quad).
+                        if round % 4 >= 2 {
+                            if round % 8 == 2 {
+                                ddx[1][4] = f32::NAN;
+                                ddy[0][12] = 1e30;
+                            }
+                            for c in 0..2 {
+                                for lane in 0..LANES {
+                                    // (Round 6 of 8: the same in every
+                                    // lane, so one level for all.)
+                                    let from = if round % 8 == 6 { 0 } else { lane & !3 };
+                                    ddx[c][lane] = ddx[c][from];
+                                    ddy[c][lane] = ddy[c][from];
+                                }
+                            }
+                        }
                         let lod = if round % 3 == 0 {
                             Lod::Explicit(std::array::from_fn(|l| {
                                 if l == 11 {
@@ -1167,9 +1432,11 @@ mod tests {
             tex.base_level = rnd(3);
             tex.max_level = [1000, rnd(6)][rnd(2) as usize];
             let want = tex.last_level();
-            let table = LevelTable::new(&tex);
-            assert_eq!(table.as_ref().map(|t| t.1), want, "{tex:?}");
-            if let Some((table, q)) = table {
+            let tex = Arc::new(tex);
+            let checked = Checked::new(&tex);
+            assert_eq!(checked.as_ref().map(|c| c.q), want, "{tex:?}");
+            if let Some(checked) = checked {
+                let (table, q) = (LevelTable::new(&tex, &checked), checked.q);
                 complete += 1;
                 // Storage as the levels have it.
                 let levels = &tex.levels[tex.base_level as usize..=q];
@@ -1183,6 +1450,50 @@ mod tests {
             }
         }
         assert!(complete > 400, "{complete} complete");
+    }
+
+    /// An entry of `TextureUnits::checked_2d` serves only the texture it
+    /// was found for: after a unit's texture changes, lookups still match
+    /// the general path.
+    #[test]
+    fn checked_entries_follow_the_units_textures() {
+        let mut seed = 0x77_u32;
+        let mut units = TextureUnits::new(vec![TextureUnit::default()]);
+        let req = SampleRequest {
+            unit: [0; LANES],
+            target: SamplerKind::Sampler2D,
+            coord: [
+                std::array::from_fn(|l| l as f32 * 0.13 - 0.4),
+                std::array::from_fn(|l| l as f32 * -0.07 + 0.2),
+                [0.0; LANES],
+                [1.0; LANES],
+            ],
+            compare: None,
+            lod: Lod::Explicit(std::array::from_fn(|l| l as f32 * 0.3 - 1.0)),
+            mask: 0xffff,
+        };
+        // Complete, another size, f32 texels, incomplete (a missing level).
+        let mut textures = vec![
+            random_texture(8, 8, 0, &mut seed),
+            random_texture(16, 4, 0, &mut seed),
+            random_texture(4, 4, !0, &mut seed),
+        ];
+        let mut incomplete = random_texture(8, 8, 0, &mut seed);
+        incomplete.levels.truncate(2);
+        textures.push(incomplete);
+        for mut tex in textures {
+            tex.min_filter = MinFilter::LinearMipmapLinear;
+            units.units[0].tex_2d = Some(Arc::new(tex));
+            let slow = general(&units, &req);
+            let mut fast = [[0.0; LANES]; 4];
+            if sample(&units, &req, &mut fast) {
+                assert_eq!(
+                    fast.map(|c| c.map(f32::to_bits)),
+                    slow.map(|c| c.map(f32::to_bits))
+                );
+            }
+        }
+        assert!(units.checked_2d.get().is_some());
     }
 
     #[test]
@@ -1229,6 +1540,13 @@ mod tests {
                 a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()),
                 "floor({x:e})"
             );
+            // The instruction's floor (`floor_of::<true>`): the same bits
+            // but for NaNs (which it may quiet).
+            let c = x.floor();
+            assert!(
+                a.to_bits() == c.to_bits() || (a.is_nan() && c.is_nan()),
+                "floor({x:e}) (instruction)"
+            );
         }
     }
 
@@ -1245,6 +1563,7 @@ mod tests {
             mask: 0b1111,
         };
         let units = |tex: Texture| TextureUnits {
+            checked_2d: Default::default(),
             units: vec![TextureUnit {
                 tex_2d: Some(Arc::new(tex)),
                 ..TextureUnit::default()
@@ -1352,6 +1671,7 @@ mod bench {
             tex.min_filter = min_filter;
             tex.mag_filter = mag_filter;
             let units = TextureUnits {
+                checked_2d: Default::default(),
                 units: vec![TextureUnit {
                     tex_2d: Some(Arc::new(tex)),
                     ..TextureUnit::default()
