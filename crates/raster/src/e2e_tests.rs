@@ -877,7 +877,7 @@ fn primitives_sharing_batches_give_the_same_bytes() {
         })
     }
     use BlendFactor::*;
-    let changes: [fn(&mut PipelineState); 8] = [
+    let changes: [fn(&mut PipelineState); 10] = [
         |s| s.blend = None,
         |s| s.blend = blend(One, Zero),
         |s| s.blend = blend(One, One),
@@ -888,6 +888,15 @@ fn primitives_sharing_batches_give_the_same_bytes() {
         |s| {
             s.blend = None;
             s.depth_test = None;
+        },
+        // The opaque whole-quad writes under other depth states.
+        |s| {
+            s.blend = None;
+            s.depth_test = Some(CompareFunc::LessEqual);
+        },
+        |s| {
+            s.blend = None;
+            s.depth_mask = false;
         },
     ];
     for (i, change) in changes.iter().enumerate() {
