@@ -930,8 +930,10 @@ impl<'a> FragmentStage<'a> {
     /// operations where the last fragment to pass the depth test decides
     /// a pixel's color ([`fragment_ops::last_writer_wins`]).
     ///
-    /// Pass 1 runs the depth-only slice on every fragment, four quads at a
-    /// time, and sends them through the depth test in draw order, keeping
+    /// Pass 1 runs the depth-only slice on every fragment (without
+    /// gl_FragDepth: every fragment early depth rejection keeps), four
+    /// quads at a time, and sends them through the depth test in draw
+    /// order, keeping
     /// per pixel the primitive of the last fragment that passed (and that
     /// quad's coverage). Pass 2 runs the full shader once per (primitive,
     /// quad) that won a pixel, with the same quad inputs, coverage and
@@ -961,6 +963,15 @@ impl<'a> FragmentStage<'a> {
         *n = 0;
         // Per pixel: (winning primitive, its quad's coverage).
         let mut winner: Vec<(u32, u8)> = vec![(NO_PRIM, 0); w * h];
+        // Without gl_FragDepth a fragment's depth is known before the
+        // slice runs: lanes the depth test will reject are dropped first
+        // when that stays right against a depth buffer missing the
+        // pending batch (as for `shade_batched`). A rejected lane cannot
+        // win; a winner's quad keeps the coverage the forward path gives
+        // it. The interpolation weights and 1/w are needed only when the
+        // slice reads varyings or the stage gl_FragCoord.
+        let early = self.early && self.batches_primitives(fb);
+        let weights = !self.depth_fills.is_empty() || self.layout.frag_coord.is_some();
         let quick = QuickOps::new(fb, self.state, &self.colors_out);
         let mut depth_pass = |fb: &mut Framebuffer,
                               winner: &mut Vec<(u32, u8)>,
@@ -1028,7 +1039,15 @@ impl<'a> FragmentStage<'a> {
             for &quad in quads.iter() {
                 let Some(e) = slots.get_mut(*n) else { break };
                 e.set(self.isa, prim, p, quad, 0);
-                e.finish(self.isa);
+                if early {
+                    self.early_rejects(fb, origin, prim, &mut e.quad);
+                    if e.quad.live == 0 {
+                        continue;
+                    }
+                }
+                if weights {
+                    e.finish(self.isa);
+                }
                 *n += 1;
                 if *n == LANES / 4 {
                     depth_pass(fb, &mut winner, slots)?;
