@@ -166,6 +166,11 @@ pub(crate) struct FillLink {
     kind: FillKind,
 }
 
+/// How many primitives of a bin ahead [`FragmentStage::prefetch_ahead`]
+/// fetches varyings and set-up.
+const ATTRS_AHEAD: usize = 6;
+const PRIM_AHEAD: usize = 16;
+
 /// No primitive (in the per-pixel winner table of a deferred tile).
 const NO_PRIM: u32 = u32::MAX;
 
@@ -275,15 +280,17 @@ impl<'a> FragmentStage<'a> {
     }
 
     /// Asks the CPU to fetch what the primitives after `bin[i]` will
-    /// need: the varyings of the next one, the set-up of the one after.
-    /// Only a hint: no effect on results.
+    /// need: the varyings of the one [`ATTRS_AHEAD`] later, the set-up of
+    /// the one [`PRIM_AHEAD`] later (far enough for a memory access when
+    /// primitives cover a pixel or two: a tile's primitives lie all over
+    /// the draw's). Only a hint: no effect on results.
     #[inline(always)]
     fn prefetch_ahead(&self, prims: &[&Prim], bin: &[u32], i: usize) {
         let at = |k: usize| bin.get(i + k).and_then(|&p| prims.get(p as usize));
-        if let Some(&next) = at(1) {
+        if let Some(&next) = at(ATTRS_AHEAD) {
             self.prefetch_attrs(next);
         }
-        if let Some(&after) = at(2) {
+        if let Some(&after) = at(PRIM_AHEAD) {
             prefetch(std::slice::from_ref(after));
         }
     }
