@@ -783,6 +783,57 @@ fn small_triangles(
     func: CompareFunc,
     state_change: impl Fn(&mut PipelineState),
 ) -> SceneResult {
+    small_triangles_with(workers, stencil_noop, func, state_change, false)
+}
+
+/// A fragment stage without gl_FragDepth, discard or loops, offering a
+/// depth-only slice that does nothing (what such a slice computes), so
+/// that the pipeline shades colours for the visible fragments only.
+struct EmptySlice<'a>(&'a Kernel, crate::ex::Interface);
+
+impl crate::ShaderStage for EmptySlice<'_> {
+    fn interface(&self) -> &crate::ex::Interface {
+        &self.1
+    }
+    fn run(
+        &self,
+        batch: &mut crate::ex::Batch,
+        uniforms: &[u32],
+        textures: &dyn crate::ex::Textures,
+    ) -> Result<(), crate::ex::ExecError> {
+        self.0.run(batch, uniforms, textures)
+    }
+    fn depth_only(&self) -> Option<Box<dyn crate::ShaderStage>> {
+        struct Nothing(crate::ex::Interface);
+        impl crate::ShaderStage for Nothing {
+            fn interface(&self) -> &crate::ex::Interface {
+                &self.0
+            }
+            fn run(
+                &self,
+                _: &mut crate::ex::Batch,
+                _: &[u32],
+                _: &dyn crate::ex::Textures,
+            ) -> Result<(), crate::ex::ExecError> {
+                Ok(())
+            }
+        }
+        let mut iface = self.1.clone();
+        for slot in &mut iface.inputs {
+            slot.written = false;
+        }
+        Some(Box::new(Nothing(iface)))
+    }
+}
+
+/// [`small_triangles`], through [`EmptySlice`] when `slice`.
+fn small_triangles_with(
+    workers: &crate::Workers,
+    stencil_noop: bool,
+    func: CompareFunc,
+    state_change: impl Fn(&mut PipelineState),
+    slice: bool,
+) -> SceneResult {
     // Native code from a kernel's 32nd batch on, so these short draws
     // run it (the default waits for 50,000 batches).
     crate::ex::set_native_after(32);
@@ -839,13 +890,15 @@ fn small_triangles(
     }
     let idx: Vec<u32> = (0..attribs.pos.len() as u32).collect();
     let tex = TextureUnits::default();
+    let wrapped = EmptySlice(&fs, fs.interface().clone());
+    let fs: &dyn crate::ShaderStage = if slice { &wrapped } else { &fs };
     let r = crate::draw_stages(
         workers,
         &mut fb,
         &state,
         &vs,
         &[],
-        &fs,
+        fs,
         &[],
         Mode::Triangles,
         &idx,
@@ -888,7 +941,7 @@ fn primitives_sharing_batches_give_the_same_bytes() {
         })
     }
     use BlendFactor::*;
-    let changes: [fn(&mut PipelineState); 8] = [
+    let changes: [fn(&mut PipelineState); 10] = [
         |s| s.blend = None,
         |s| s.blend = blend(One, Zero),
         |s| s.blend = blend(One, One),
@@ -899,6 +952,15 @@ fn primitives_sharing_batches_give_the_same_bytes() {
         |s| {
             s.blend = None;
             s.depth_test = None;
+        },
+        // The opaque whole-quad writes under other depth states.
+        |s| {
+            s.blend = None;
+            s.depth_test = Some(CompareFunc::LessEqual);
+        },
+        |s| {
+            s.blend = None;
+            s.depth_mask = false;
         },
     ];
     for (i, change) in changes.iter().enumerate() {
@@ -911,6 +973,40 @@ fn primitives_sharing_batches_give_the_same_bytes() {
                 change,
             );
             assert!(want == got, "change {i}, {threads} threads");
+        }
+    }
+}
+
+#[test]
+fn colours_of_visible_fragments_only_without_frag_depth_give_the_same_bytes() {
+    // No gl_FragDepth: the forward path rejects early (the rejected lanes
+    // of a quad become helpers); shading only the visible fragments must
+    // give the same bytes, derivatives included.
+    let opaque: [fn(&mut PipelineState); 3] = [
+        |s| s.blend = None,
+        |s| {
+            s.blend = None;
+            s.depth_mask = false;
+        },
+        |s| {
+            s.blend = None;
+            s.scissor = Some(Rect::new(17, 9, 90, 70));
+        },
+    ];
+    for func in [
+        CompareFunc::Less,
+        CompareFunc::GreaterEqual,
+        CompareFunc::Always,
+    ] {
+        for (i, change) in opaque.iter().enumerate() {
+            let want = small_triangles(&crate::Workers::new(1), false, func, change);
+            let distinct: std::collections::BTreeSet<[u8; 4]> = want.0.iter().copied().collect();
+            assert!(distinct.len() > 300, "{} colors", distinct.len());
+            for threads in [1, 2] {
+                let got =
+                    small_triangles_with(&crate::Workers::new(threads), false, func, change, true);
+                assert!(want == got, "{func:?}, change {i}, {threads} threads");
+            }
         }
     }
 }

@@ -2,7 +2,7 @@
 //! alpha test, stencil test, depth test, blending, (dithering: off),
 //! logic op, then the masked write to each draw buffer.
 
-use crate::framebuffer::{depth_to_fixed, float_to_unorm8, ColorBuffer};
+use crate::framebuffer::{depth_to_fixed, float_to_unorm8, ColorBuffer, DEPTH_MAX};
 use crate::framebuffer::{Framebuffer, MAX_DRAW_BUFFERS};
 use crate::state::{
     Blend, BlendEquation, BlendFactor, CompareFunc, PipelineState, Rect, StencilFace, StencilOp,
@@ -337,11 +337,19 @@ impl QuickOps {
             (Some(func), Some(d)) => Some((func, d)),
             _ => None,
         };
+        // A scissor box holding the whole target tests nothing.
+        let scissor = self.scissor.filter(|sc| {
+            let (x0, y0) = (origin.0 as i64, origin.1 as i64);
+            !(sc.x as i64 <= x0
+                && sc.y as i64 <= y0
+                && x0 + width as i64 <= sc.x as i64 + sc.w as i64
+                && y0 + height as i64 <= sc.y as i64 + sc.h as i64)
+        });
         QuickTarget {
             origin,
             width,
             height,
-            scissor: self.scissor,
+            scissor,
             depth,
             depth_write: self.depth_write,
             color,
@@ -400,6 +408,105 @@ impl QuickTarget<'_> {
         Some(index)
     }
 
+    /// [`QuickTarget::test`] of the lanes `lanes` of the quad at window
+    /// (x, y) (pixel `k` at `(x + (k & 1), y + (k >> 1))`, window z
+    /// `z[k]`, whose [`depth_to_fixed`] is `zf[k]`): the lanes that pass,
+    /// each pixel's index (meaningful for those), and whether the whole
+    /// quad lies in the target (then every index is). The four pixels are
+    /// distinct, so testing them together gives what testing them one
+    /// after the other does. Lanes left of or below the window are not
+    /// tested (as the fragment path skips them).
+    #[inline(always)]
+    pub fn test_quad(
+        &mut self,
+        (x, y): (i64, i64),
+        lanes: u8,
+        z: [f32; 4],
+        zf: [u32; 4],
+    ) -> (u8, [usize; 4], bool) {
+        let (lx, ly) = (x - self.origin.0 as i64, y - self.origin.1 as i64);
+        let (w, h) = (self.width as i64, self.height as i64);
+        let inside = self.scissor.is_none() && lx >= 0 && ly >= 0 && lx + 1 < w && ly + 1 < h;
+        let i0 = (ly * w + lx) as usize;
+        let index = [i0, i0 + 1, i0 + w as usize, i0 + w as usize + 1];
+        // Every buffer holds the whole tile (else the lanes go one by
+        // one, as `test` skips the depth test of pixels it lacks).
+        let fits = inside
+            && self.depth.as_ref().is_none_or(|(_, d)| index[3] < d.len())
+            && self.color.as_ref().is_none_or(|(v, _)| index[3] < v.len());
+        if fits {
+            let mut pass = lanes & 0xf;
+            if let Some((func, d)) = &mut self.depth {
+                // In bounds: index[3] is the largest.
+                let stored = index.map(|i| d[i]);
+                pass &= depth_pass_mask(*func, zf, stored);
+                if self.depth_write {
+                    for k in 0..4 {
+                        d[index[k]] = if pass & (1 << k) != 0 {
+                            zf[k]
+                        } else {
+                            stored[k]
+                        };
+                    }
+                }
+            }
+            *self.passed = self.passed.wrapping_add(u64::from(pass.count_ones()));
+            return (pass, index, true);
+        }
+        let mut pass = 0u8;
+        let mut index = [0usize; 4];
+        for k in 0..4 {
+            let (px, py) = (x + (k as i64 & 1), y + (k as i64 >> 1));
+            if lanes & (1 << k) == 0 || px < 0 || py < 0 {
+                continue;
+            }
+            if let Some(i) = self.test(px as u32, py as u32, z[k]) {
+                pass |= 1 << k;
+                index[k] = i;
+            }
+        }
+        (pass, index, false)
+    }
+
+    /// [`QuickTarget::write_rgba8`] of `c[k]` at `index[k]` for the lanes
+    /// `pass`, after [`QuickTarget::test_quad`] found the quad inside
+    /// (`inside`; else one lane at a time).
+    #[inline(always)]
+    pub fn write_rgba8_quad(&mut self, pass: u8, index: [usize; 4], inside: bool, c: [[u8; 4]; 4]) {
+        let Some((v, _)) = &mut self.color else {
+            return;
+        };
+        if inside && index[3] < v.len() {
+            // In bounds: index[3] is the largest.
+            for k in 0..4 {
+                let old = v[index[k]];
+                v[index[k]] = if pass & (1 << k) != 0 { c[k] } else { old };
+            }
+            return;
+        }
+        for k in 0..4 {
+            if pass & (1 << k) != 0 {
+                self.write_rgba8(index[k], c[k]);
+            }
+        }
+    }
+
+    /// Whether [`QuickTarget::write`] stores the clamped source converted
+    /// to unorm8 (no blending): then [`QuickTarget::write_rgba8`] of
+    /// [`unorm8_lanes`] writes the same bytes.
+    pub fn opaque(&self) -> bool {
+        matches!(self.color, Some((_, QuickBlend::Off)))
+    }
+
+    /// Stores `c` at pixel `index` of the colour buffer (see
+    /// [`QuickTarget::opaque`]).
+    #[inline(always)]
+    pub fn write_rgba8(&mut self, index: usize, c: [u8; 4]) {
+        if let Some(p) = self.color.as_mut().and_then(|(v, _)| v.get_mut(index)) {
+            *p = c;
+        }
+    }
+
     /// [`write_colors`] of colour `src` (the qualifying output) to pixel
     /// `index`; nothing when the colour write does not qualify.
     #[inline(always)]
@@ -427,6 +534,56 @@ impl QuickTarget<'_> {
             }
         };
     }
+}
+
+/// The lanes `k` where `func.test(zf[k], stored[k])`, the comparison
+/// chosen once for the four.
+#[inline(always)]
+pub(crate) fn depth_pass_mask(func: CompareFunc, zf: [u32; 4], stored: [u32; 4]) -> u8 {
+    let m =
+        |f: fn(u32, u32) -> bool| (0..4).fold(0u8, |m, k| m | (u8::from(f(zf[k], stored[k])) << k));
+    match func {
+        CompareFunc::Never => 0,
+        CompareFunc::Less => m(|a, b| a < b),
+        CompareFunc::Equal => m(|a, b| a == b),
+        CompareFunc::LessEqual => m(|a, b| a <= b),
+        CompareFunc::Greater => m(|a, b| a > b),
+        CompareFunc::NotEqual => m(|a, b| a != b),
+        CompareFunc::GreaterEqual => m(|a, b| a >= b),
+        CompareFunc::Always => 0xf,
+    }
+}
+
+/// [`depth_to_fixed`] of `z[k] as f32`, four at a time without branches
+/// (the same values for every input: `max` turns NaN into 0 as the
+/// comparison does, −0 gives 0 either way, and the product stays in
+/// [0.5, 2^24 − 0.5] where truncation to i32 is that to u32).
+#[inline(always)]
+// Not `clamp`: NaN must become 0 (`max` drops it; `clamp` keeps it).
+#[allow(clippy::manual_clamp)]
+pub(crate) fn depth_to_fixed4(z: [f64; 4]) -> [u32; 4] {
+    let mut out = [0u32; 4];
+    for (o, z) in out.iter_mut().zip(z) {
+        let z = (z as f32).max(0.0).min(1.0);
+        let k = z as f64 * DEPTH_MAX as f64 + 0.5;
+        // SAFETY: `max` turns NaN into 0, so `k` is finite and in
+        // [0.5, 2^24 - 0.5]: representable in i32.
+        *o = (unsafe { k.to_int_unchecked::<i32>() } as u32).min(DEPTH_MAX);
+    }
+    out
+}
+
+/// What [`QuickTarget::write`] stores without blending, for every lane of
+/// a batch's colour output (`rgba`: its four components): the clamped
+/// colour in unorm8.
+#[inline(always)]
+pub(crate) fn unorm8_lanes<const N: usize>(rgba: [&[f32; N]; 4]) -> [[u8; 4]; N] {
+    let [r, g, b, a] = rgba;
+    let mut out = [[0u8; 4]; N];
+    for (l, o) in out.iter_mut().enumerate() {
+        *o = to_unorm8([clamp01(r[l]), clamp01(g[l]), clamp01(b[l]), clamp01(a[l])]);
+    }
+    out
 }
 
 /// True when the outcome of a fragment's per-fragment operations does
@@ -754,6 +911,44 @@ mod tests {
                 let general = blend_color(&b, s, d).map(f32::to_bits);
                 assert_eq!(fast, general, "{src:?}/{dst:?} {s:?} {d:?}");
             }
+        }
+    }
+
+    #[test]
+    fn depth_to_fixed4_matches_depth_to_fixed() {
+        let mut zs = vec![
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            -0.0,
+            0.0,
+            1.0,
+            -1.0,
+            2.0,
+            1e-300,
+            f64::MIN_POSITIVE,
+            0.5,
+            1.0 - 1e-9,
+            1.0 + 1e-9,
+        ];
+        let mut x = 0x1234_5678_9abc_def0u64;
+        for i in 0..100_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            zs.push(match i % 3 {
+                0 => (x >> 11) as f64 / (1u64 << 53) as f64,
+                1 => f64::from_bits(x),
+                _ => f32::from_bits(x as u32) as f64,
+            });
+        }
+        for z in zs.chunks_exact(4) {
+            let z = [z[0], z[1], z[2], z[3]];
+            assert_eq!(
+                depth_to_fixed4(z),
+                z.map(|z| depth_to_fixed(z as f32)),
+                "{z:?}"
+            );
         }
     }
 

@@ -53,25 +53,31 @@
 //! operations per pixel as before (window z first, the perspective
 //! weights only for quads early depth rejection keeps), laid out per
 //! vertex so that filling a batch's varyings is straight vector code; a
-//! batch's quads are built in place in four per-tile slots, and the next
-//! primitive's varyings are prefetched while one is rasterized.
+//! batch's quads are built in place in four per-tile slots, and the
+//! varyings and set-up of primitives a few ahead in the tile's bin are
+//! prefetched while one is rasterized.
 //!
 //! Filling a batch's inputs and a quad's interpolation are compiled for
-//! the baseline target, AVX2 and AVX-512 and picked at run time (the best
+//! the baseline target, AVX2 and AVX-512 and picked at run time (so is
+//! the batched quad loop of coverage, quad set-up, early depth test and
+//! writes; the best
 //! the CPU has; `SHADERBOX_RASTER_ISA=base|avx2|avx512` to choose); they
 //! use plain IEEE operations, so every variant gives the same bits (tests
 //! compare them). With no alpha or stencil test, the per-fragment tests
-//! run with the state's choices made once per tile, and with one RGBA8
+//! run with the state's choices made once per tile (a quad's four pixels
+//! at once when it lies inside the tile), and with one RGBA8
 //! draw buffer written on every channel and no logic op so does the
 //! colour write (blending included); other states go through the general
 //! per-fragment functions. Both give the same bytes (tests compare them).
 //!
 //! # Colors for visible fragments only
-//! When the fragment stage writes `gl_FragDepth` (so early depth testing
-//! is impossible), has a depth-only slice ([`ShaderStage::depth_only`])
-//! and the per-fragment operations let the last fragment to pass the
-//! depth test decide a pixel (no alpha test, blending, logic op or stencil
-//! test), each tile runs the slice on every fragment, depth-tests in draw
+//! When the fragment stage has a depth-only slice
+//! ([`ShaderStage::depth_only`]: `exec` offers one to kernels writing
+//! `gl_FragDepth`, where early depth testing is impossible) and the
+//! per-fragment operations let the last fragment to pass the depth test
+//! decide a pixel (no alpha test, blending, logic op or stencil test),
+//! each tile runs the slice on every fragment (without `gl_FragDepth`: on
+//! those early depth rejection keeps), depth-tests in draw
 //! order and remembers the winning primitive per pixel, then runs the full
 //! stage once per winning (primitive, 2×2 quad), with the same inputs,
 //! coverage and helper lanes as the straightforward path, and writes the

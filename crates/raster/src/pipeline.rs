@@ -799,10 +799,7 @@ pub(crate) fn draw_probed(
     let prims: Vec<&Prim> = parts.iter().flat_map(|p| p.0.iter()).collect();
 
     // The probe replays every fragment: never deferred.
-    let deferred = if fs_layout.frag_depth.is_some()
-        && probe.is_none()
-        && crate::fragment_ops::last_writer_wins(fb, state)
-    {
+    let deferred = if probe.is_none() && crate::fragment_ops::last_writer_wins(fb, state) {
         fs.depth_only()
     } else {
         None

@@ -203,6 +203,7 @@ impl Shape {
 
     /// [`Shape::quads`] into `out` (cleared first), so that a caller can
     /// reuse one buffer for every primitive.
+    #[inline(always)]
     pub fn quads_into(&self, clip: PixelRect, out: &mut Vec<(i64, i64, u8)>) {
         out.clear();
         let r = intersect(self.bounds(), clip);
@@ -211,6 +212,15 @@ impl Shape {
         }
         match self {
             Shape::Triangle { p, sign, .. } => triangle_quads(p, *sign, r, out),
+            _ => self.other_quads_into(r, out),
+        }
+    }
+
+    /// [`Shape::quads_into`] of points and lines, `r` their bounds inside
+    /// the clip rectangle (not empty).
+    fn other_quads_into(&self, r: PixelRect, out: &mut Vec<(i64, i64, u8)>) {
+        match self {
+            Shape::Triangle { .. } => {}
             Shape::Point { .. } => {
                 for_each_quad(r, |qx, qy| {
                     let mut mask = 0u8;
@@ -356,6 +366,7 @@ impl Shape {
     /// barycentrics until [`Shape::interp_quad_finish`] turns them into
     /// the perspective-correct weights and sets `q.inv_w`; for the other
     /// shapes everything is done here.
+    #[inline(always)]
     pub fn interp_quad_z(&self, isa: Isa, qx: i64, qy: i64, q: &mut QuadInterp) {
         match self {
             Shape::Triangle { p, sign, area2, v } => {
@@ -386,6 +397,7 @@ impl Shape {
 
     /// The second half of [`Shape::interp_quad_isa`] (after
     /// [`Shape::interp_quad_z`] on the same `q`).
+    #[inline(always)]
     pub fn interp_quad_finish(&self, isa: Isa, q: &mut QuadInterp) {
         if let Shape::Triangle { v, .. } = self {
             match isa {
@@ -520,6 +532,7 @@ unsafe fn triangle_weights_avx512(v: &[WinVertex; 3], q: &mut QuadInterp) {
 /// stepped by additions, four pixels and three edges per quad, and a row
 /// of quads ends as soon as one edge that only decreases to the right is
 /// negative on the whole quad.
+#[inline(always)]
 fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i64, i64, u8)>) {
     let mut a = [0i64; 3];
     let mut b = [0i64; 3];

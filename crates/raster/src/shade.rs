@@ -56,6 +56,8 @@ pub(crate) struct Quad {
     it: QuadInterp,
     /// Final window z per pixel (offset and clamped).
     z: [f64; 4],
+    /// Those depths in fixed point (`depth_to_fixed(z as f32)`).
+    zf: [u32; 4],
 }
 
 impl Quad {
@@ -68,6 +70,7 @@ impl Quad {
     /// Makes this the quad at (qx, qy) of `prim` with coverage `mask`,
     /// its window z computed; [`Quad::finish`] completes the
     /// interpolation.
+    #[inline(always)]
     fn set(&mut self, isa: Isa, prim: &Prim, qx: i64, qy: i64, mask: u8) {
         self.x = qx;
         self.y = qy;
@@ -76,10 +79,12 @@ impl Quad {
         for (z, &iz) in self.z.iter_mut().zip(&self.it.z) {
             *z = clamp01(iz + prim.z_offset);
         }
+        self.zf = fragment_ops::depth_to_fixed4(self.z);
     }
 
     /// The interpolation weights and 1/w after [`Quad::set`] (left out
     /// for quads that early depth rejection drops entirely).
+    #[inline(always)]
     fn finish(&mut self, isa: Isa, prim: &Prim) {
         prim.shape.interp_quad_finish(isa, &mut self.it);
     }
@@ -97,6 +102,7 @@ pub(crate) struct Entry<'p> {
 
 impl<'p> Entry<'p> {
     /// Makes this the quad at (qx, qy) of primitive `index`, `prim`.
+    #[inline(always)]
     fn set(
         &mut self,
         isa: Isa,
@@ -112,6 +118,7 @@ impl<'p> Entry<'p> {
     }
 
     /// [`Quad::finish`] of this entry's quad.
+    #[inline(always)]
     fn finish(&mut self, isa: Isa) {
         if let Some(prim) = self.prim {
             self.quad.finish(isa, prim);
@@ -158,6 +165,11 @@ pub(crate) struct FillLink {
     offset: usize,
     kind: FillKind,
 }
+
+/// How many primitives of a bin ahead [`FragmentStage::prefetch_ahead`]
+/// fetches varyings and set-up.
+const ATTRS_AHEAD: usize = 6;
+const PRIM_AHEAD: usize = 16;
 
 /// No primitive (in the per-pixel winner table of a deferred tile).
 const NO_PRIM: u32 = u32::MAX;
@@ -268,15 +280,17 @@ impl<'a> FragmentStage<'a> {
     }
 
     /// Asks the CPU to fetch what the primitives after `bin[i]` will
-    /// need: the varyings of the next one, the set-up of the one after.
-    /// Only a hint: no effect on results.
+    /// need: the varyings of the one [`ATTRS_AHEAD`] later, the set-up of
+    /// the one [`PRIM_AHEAD`] later (far enough for a memory access when
+    /// primitives cover a pixel or two: a tile's primitives lie all over
+    /// the draw's). Only a hint: no effect on results.
     #[inline(always)]
     fn prefetch_ahead(&self, prims: &[&Prim], bin: &[u32], i: usize) {
         let at = |k: usize| bin.get(i + k).and_then(|&p| prims.get(p as usize));
-        if let Some(&next) = at(1) {
+        if let Some(&next) = at(ATTRS_AHEAD) {
             self.prefetch_attrs(next);
         }
-        if let Some(&after) = at(2) {
+        if let Some(&after) = at(PRIM_AHEAD) {
             prefetch(std::slice::from_ref(after));
         }
     }
@@ -370,6 +384,7 @@ impl<'a> FragmentStage<'a> {
 
     /// Sends the shaded fragments of `pending` through the per-fragment
     /// operations, in order.
+    #[inline(always)]
     fn write_batch(
         &self,
         fb: &mut Framebuffer,
@@ -380,24 +395,40 @@ impl<'a> FragmentStage<'a> {
     ) {
         if let Some((quick, o)) = quick.and_then(|q| Some((q, q.color_output()?))) {
             // The common states: the same operations per fragment, in the
-            // same order, without the general checks.
+            // same order, without the general checks; a quad's four
+            // pixels (distinct) tested together, and without blending the
+            // batch's colours converted together.
             let mut target = quick.target(fb, origin);
+            let rgba = match batch.outputs.get(o..o + 4) {
+                Some([r, g, b, a]) if target.opaque() => {
+                    Some(fragment_ops::unorm8_lanes([r, g, b, a]))
+                }
+                _ => None,
+            };
             for (q, e) in pending.iter().enumerate() {
                 let quad = &e.quad;
                 let lanes = quad.live & !(batch.discarded >> (4 * q)) as u8 & 0xf;
-                for k in 0..4 {
-                    if lanes & (1 << k) == 0 {
-                        continue;
+                if lanes == 0 {
+                    continue;
+                }
+                let z = std::array::from_fn(|k| self.frag_z(batch, 4 * q + k, quad, k));
+                // Without gl_FragDepth, z is the quad's (in [0, 1]).
+                let zf = match self.layout.frag_depth {
+                    Some(_) => z.map(depth_to_fixed),
+                    None => quad.zf,
+                };
+                let (pass, index, inside) = target.test_quad((quad.x, quad.y), lanes, z, zf);
+                match rgba.as_ref().and_then(|c| c.get(4 * q..4 * q + 4)) {
+                    Some(&[c0, c1, c2, c3]) => {
+                        target.write_rgba8_quad(pass, index, inside, [c0, c1, c2, c3])
                     }
-                    let (x, y) = quad.pixel(k);
-                    if x < 0 || y < 0 {
-                        continue;
-                    }
-                    let lane = 4 * q + k;
-                    let z = self.frag_z(batch, lane, quad, k);
-                    if let Some(index) = target.test(x as u32, y as u32, z) {
-                        let c = [0, 1, 2, 3].map(|j| get(batch, o + j, lane));
-                        target.write(index, c);
+                    _ => {
+                        for (k, &index) in index.iter().enumerate() {
+                            if pass & (1 << k) != 0 {
+                                let lane = 4 * q + k;
+                                target.write(index, [0, 1, 2, 3].map(|j| get(batch, o + j, lane)));
+                            }
+                        }
                     }
                 }
             }
@@ -437,6 +468,73 @@ impl<'a> FragmentStage<'a> {
         tile: PixelRect,
         scratch: &mut Scratch<'p>,
     ) -> Result<(), ExecError> {
+        match self.isa {
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: `isa` is only Avx512 when the CPU has the features
+            // (`simd::detect`).
+            Isa::Avx512 => unsafe { self.shade_batched_avx512(fb, prims, bin, tile, scratch) },
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: likewise for AVX2.
+            Isa::Avx2 => unsafe { self.shade_batched_avx2(fb, prims, bin, tile, scratch) },
+            _ => self.shade_batched_with(fb, prims, bin, tile, scratch),
+        }
+    }
+
+    /// [`FragmentStage::shade_batched`] compiled for AVX2 (the quad loop,
+    /// early depth test and writes inlined: the same operations).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn shade_batched_avx2<'p>(
+        &self,
+        fb: &mut Framebuffer,
+        prims: &[&'p Prim],
+        bin: &[u32],
+        tile: PixelRect,
+        scratch: &mut Scratch<'p>,
+    ) -> Result<(), ExecError> {
+        self.shade_batched_with(fb, prims, bin, tile, scratch)
+    }
+
+    /// [`FragmentStage::shade_batched`] compiled for AVX-512.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
+    unsafe fn shade_batched_avx512<'p>(
+        &self,
+        fb: &mut Framebuffer,
+        prims: &[&'p Prim],
+        bin: &[u32],
+        tile: PixelRect,
+        scratch: &mut Scratch<'p>,
+    ) -> Result<(), ExecError> {
+        self.shade_batched_with(fb, prims, bin, tile, scratch)
+    }
+
+    /// Fills and runs one batch of [`FragmentStage::shade_batched`] and
+    /// writes its fragments.
+    #[inline(always)]
+    fn flush_batched(
+        &self,
+        fb: &mut Framebuffer,
+        origin: (u32, u32),
+        batch: &mut Batch,
+        pending: &[Entry],
+        quick: Option<&QuickOps>,
+    ) -> Result<(), ExecError> {
+        self.fill(batch, pending, &self.fills);
+        self.run_shader(batch)?;
+        self.write_batch(fb, origin, batch, pending, quick);
+        Ok(())
+    }
+
+    #[inline(always)]
+    fn shade_batched_with<'p>(
+        &self,
+        fb: &mut Framebuffer,
+        prims: &[&'p Prim],
+        bin: &[u32],
+        tile: PixelRect,
+        scratch: &mut Scratch<'p>,
+    ) -> Result<(), ExecError> {
         let origin = (tile.0.max(0) as u32, tile.1.max(0) as u32);
         let Scratch {
             batch,
@@ -446,12 +544,7 @@ impl<'a> FragmentStage<'a> {
         } = scratch;
         *n = 0;
         let quick = QuickOps::new(fb, self.state, &self.colors_out);
-        let mut flush = |fb: &mut Framebuffer, pending: &[Entry]| -> Result<(), ExecError> {
-            self.fill(batch, pending, &self.fills);
-            self.run_shader(batch)?;
-            self.write_batch(fb, origin, batch, pending, quick.as_ref());
-            Ok(())
-        };
+        let quick = quick.as_ref();
         for (i, &p) in bin.iter().enumerate() {
             let Some(&prim) = prims.get(p as usize) else {
                 continue;
@@ -470,13 +563,13 @@ impl<'a> FragmentStage<'a> {
                 e.finish(self.isa);
                 *n += 1;
                 if *n == LANES / 4 {
-                    flush(fb, slots)?;
+                    self.flush_batched(fb, origin, batch, slots, quick)?;
                     *n = 0;
                 }
             }
         }
         if *n > 0 {
-            flush(fb, &slots[..*n])?;
+            self.flush_batched(fb, origin, batch, &slots[..*n], quick)?;
             *n = 0;
         }
         Ok(())
@@ -510,6 +603,7 @@ impl<'a> FragmentStage<'a> {
 
     /// Drops the lanes of `quad` that the stencil or depth test will
     /// certainly reject without side effects (no gl_FragDepth write).
+    #[inline(always)]
     fn early_rejects(&self, fb: &Framebuffer, origin: (u32, u32), prim: &Prim, quad: &mut Quad) {
         if self.probe.is_none() && (self.state.stencil.is_none() || fb.stencil.is_none()) {
             // No stencil test: a lane is rejected exactly when it fails
@@ -518,6 +612,18 @@ impl<'a> FragmentStage<'a> {
             let (Some(func), Some(depth)) = (self.state.depth_test, fb.depth.as_deref()) else {
                 return;
             };
+            let (lx, ly) = (quad.x - origin.0 as i64, quad.y - origin.1 as i64);
+            let (w, h) = (fb.width as i64, fb.height as i64);
+            if lx >= 0 && ly >= 0 && lx + 1 < w && ly + 1 < h {
+                // The whole quad in the tile: its four depths at once.
+                let i0 = (ly * w + lx) as usize;
+                let index = [i0, i0 + 1, i0 + w as usize, i0 + w as usize + 1];
+                if let Some(last) = depth.get(..=index[3]) {
+                    let stored = index.map(|i| last[i]);
+                    quad.live &= fragment_ops::depth_pass_mask(func, quad.zf, stored);
+                    return;
+                }
+            }
             for k in 0..4usize {
                 let (x, y) = quad.pixel(k);
                 let (lx, ly) = (x - origin.0 as i64, y - origin.1 as i64);
@@ -531,7 +637,7 @@ impl<'a> FragmentStage<'a> {
                 }
                 let index = ly as usize * fb.width as usize + lx as usize;
                 let stored = depth.get(index).copied().unwrap_or(0);
-                if !func.test(depth_to_fixed(quad.z[k] as f32), stored) {
+                if !func.test(quad.zf[k], stored) {
                     quad.live &= !(1 << k);
                 }
             }
@@ -547,7 +653,7 @@ impl<'a> FragmentStage<'a> {
                 continue;
             }
             let index = ly as usize * fb.width as usize + lx as usize;
-            let zf = depth_to_fixed(quad.z[k] as f32);
+            let zf = quad.zf[k];
             if fragment_ops::early_reject(fb, self.state, index, zf, prim.back) {
                 quad.live &= !(1 << k);
                 if let Some(p) = self.probe.filter(|p| p.at(x, y)) {
@@ -831,8 +937,10 @@ impl<'a> FragmentStage<'a> {
     /// operations where the last fragment to pass the depth test decides
     /// a pixel's color ([`fragment_ops::last_writer_wins`]).
     ///
-    /// Pass 1 runs the depth-only slice on every fragment, four quads at a
-    /// time, and sends them through the depth test in draw order, keeping
+    /// Pass 1 runs the depth-only slice on every fragment (without
+    /// gl_FragDepth: every fragment early depth rejection keeps), four
+    /// quads at a time, and sends them through the depth test in draw
+    /// order, keeping
     /// per pixel the primitive of the last fragment that passed (and that
     /// quad's coverage). Pass 2 runs the full shader once per (primitive,
     /// quad) that won a pixel, with the same quad inputs, coverage and
@@ -862,6 +970,15 @@ impl<'a> FragmentStage<'a> {
         *n = 0;
         // Per pixel: (winning primitive, its quad's coverage).
         let mut winner: Vec<(u32, u8)> = vec![(NO_PRIM, 0); w * h];
+        // Without gl_FragDepth a fragment's depth is known before the
+        // slice runs: lanes the depth test will reject are dropped first
+        // when that stays right against a depth buffer missing the
+        // pending batch (as for `shade_batched`). A rejected lane cannot
+        // win; a winner's quad keeps the coverage the forward path gives
+        // it. The interpolation weights and 1/w are needed only when the
+        // slice reads varyings or the stage gl_FragCoord.
+        let early = self.early && self.batches_primitives(fb);
+        let weights = !self.depth_fills.is_empty() || self.layout.frag_coord.is_some();
         let quick = QuickOps::new(fb, self.state, &self.colors_out);
         let mut depth_pass = |fb: &mut Framebuffer,
                               winner: &mut Vec<(u32, u8)>,
@@ -929,7 +1046,15 @@ impl<'a> FragmentStage<'a> {
             for &quad in quads.iter() {
                 let Some(e) = slots.get_mut(*n) else { break };
                 e.set(self.isa, prim, p, quad, 0);
-                e.finish(self.isa);
+                if early {
+                    self.early_rejects(fb, origin, prim, &mut e.quad);
+                    if e.quad.live == 0 {
+                        continue;
+                    }
+                }
+                if weights {
+                    e.finish(self.isa);
+                }
                 *n += 1;
                 if *n == LANES / 4 {
                     depth_pass(fb, &mut winner, slots)?;
