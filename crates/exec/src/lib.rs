@@ -172,6 +172,13 @@ mod variant;
 
 pub use interface::{kinds, size_of, Interface, Slot};
 
+/// Fragment kernels without `gl_FragDepth` get a [`Kernel::depth_only`]
+/// slice (their discards) from this many executor ops on: below, a
+/// renderer's extra depth pass costs more than the shading it saves
+/// (measured: the seed materials shader, 193 ops, 1.5× faster on three
+/// overlapping sheets; 10- and 20-op kernels 10–15 % slower).
+pub const DEFER_MIN_OPS: usize = 96;
+
 /// Makes kernels of the `jit` variant compile to native code on their
 /// `runs`-th run (at least 1) instead of the default 50,000th (see the
 /// crate docs: compiling pays only for kernels that run many batches).
@@ -508,15 +515,17 @@ impl Kernel {
     /// the active lanes it writes the bits `self` writes to `gl_FragDepth`
     /// and discards the same lanes (and fails with the same
     /// [`ExecError::LoopBudget`]); it leaves every other output as it was
-    /// in the batch. All control flow is kept; ops whose results only feed
-    /// other outputs are dropped (a backward liveness analysis over the
-    /// program, loops iterated to a fixpoint). GLSL 1.10/1.20 fragment
-    /// shaders have no side effect besides their outputs, so running the
-    /// slice first never changes what the full kernel computes.
+    /// in the batch. All control flow is kept but branches left with
+    /// nothing to do; ops whose results only feed other outputs are
+    /// dropped (a backward liveness analysis over the program, loops
+    /// iterated to a fixpoint). GLSL 1.10/1.20 fragment shaders have no
+    /// side effect besides their outputs, so running the slice first never
+    /// changes what the full kernel computes.
     ///
-    /// `None` for a vertex kernel, a fragment kernel that does not write
-    /// `gl_FragDepth`, or when the slice would keep more than 80 % of the
-    /// ops (not worth a second pass).
+    /// `None` for a vertex kernel, a fragment kernel that neither writes
+    /// `gl_FragDepth` nor has [`DEFER_MIN_OPS`] executor ops (its slice
+    /// decides only discards, often nothing), or when the slice would keep
+    /// more than 80 % of the ops (not worth a second pass).
     ///
     /// The slice is computed once per kernel (and its clones) and cached.
     pub fn depth_only(&self) -> Option<Kernel> {
@@ -529,17 +538,21 @@ impl Kernel {
         if self.stage != glsl::Stage::Fragment {
             return None;
         }
-        let slot = self.interface.output("gl_FragDepth")?;
-        if !slot.written {
-            return None;
-        }
-        let range = slot.offset..slot.offset + slot.components;
-        let outputs: Vec<_> = self
-            .outputs
-            .iter()
-            .copied()
-            .filter(|&(_, oc, _)| range.contains(&oc))
-            .collect();
+        let outputs: Vec<_> = match self.interface.output("gl_FragDepth") {
+            Some(slot) if slot.written => {
+                let range = slot.offset..slot.offset + slot.components;
+                self.outputs
+                    .iter()
+                    .copied()
+                    .filter(|&(_, oc, _)| range.contains(&oc))
+                    .collect()
+            }
+            // Without gl_FragDepth the slice only decides discards (often
+            // nothing at all): worth a depth pass before colours only when
+            // the colours cost enough to shade each pixel once.
+            _ if self.code.ins.len() >= DEFER_MIN_OPS => Vec::new(),
+            _ => return None,
+        };
         let live_out: Vec<u32> = outputs.iter().map(|&(r, _, _)| r).collect();
         let program = depth_slice::slice(&self.program, &live_out)?;
         // The input components the slice reads: those loaded into a

@@ -34,7 +34,7 @@ fn compare(k: &Kernel, u: &[u32], rounds: usize, lo: f32, hi: f32, seed: u64) ->
         slice.op_count(),
         k.op_count()
     );
-    let depth = k.interface().output("gl_FragDepth").expect("gl_FragDepth");
+    let depth = k.interface().output("gl_FragDepth").filter(|s| s.written);
     let mut rng = Rng(seed);
     let (mut discarded, mut kept) = (0, 0);
     for round in 0..rounds {
@@ -59,11 +59,13 @@ fn compare(k: &Kernel, u: &[u32], rounds: usize, lo: f32, hi: f32, seed: u64) ->
                 continue;
             }
             kept += 1;
-            assert_eq!(
-                full.outputs[depth.offset][l].to_bits(),
-                sliced.outputs[depth.offset][l].to_bits(),
-                "round {round} lane {l}: gl_FragDepth"
-            );
+            if let Some(depth) = depth {
+                assert_eq!(
+                    full.outputs[depth.offset][l].to_bits(),
+                    sliced.outputs[depth.offset][l].to_bits(),
+                    "round {round} lane {l}: gl_FragDepth"
+                );
+            }
         }
         discarded += (full.discarded & active).count_ones() as usize;
     }
@@ -290,4 +292,33 @@ fn no_slice_without_depth_or_when_nothing_is_saved() {
     assert!(all_depth.depth_only().is_none());
     let vertex = kernel(Stage::Vertex, "void main() { gl_Position = gl_Vertex; }");
     assert!(vertex.depth_only().is_none());
+}
+
+/// Without gl_FragDepth, a costly kernel's slice keeps its discards and
+/// nothing of its colours; a cheap kernel gets none.
+#[test]
+fn slices_without_frag_depth_only_for_costly_kernels() {
+    let costly = "varying vec4 v;
+        void main() {
+            if (v.w > 1.5) discard;
+            vec4 c = v;
+            for (int i = 0; i < 24; i++) c = c * 0.75 + sin(c.yzwx) * 0.5 + vec4(float(i));
+            gl_FragColor = c;
+        }";
+    let k = kernel(Stage::Fragment, costly);
+    assert!(
+        k.code.ins.len() >= crate::DEFER_MIN_OPS,
+        "{} ops",
+        k.code.ins.len()
+    );
+    let u = vec![0u32; k.interface().uniform_words];
+    let (discarded, kept) = compare(&k, &u, 100, -1.0, 2.0, 5);
+    assert!(discarded > 0 && kept > 0, "{discarded} / {kept}");
+    let slice = k.depth_only().expect("a slice");
+    assert!(slice.op_count() < 16, "{} ops", slice.op_count());
+    let cheap = kernel(
+        Stage::Fragment,
+        "varying vec4 v; void main() { if (v.w > 1.5) discard; gl_FragColor = v * 2.0; }",
+    );
+    assert!(cheap.depth_only().is_none());
 }
