@@ -559,13 +559,17 @@ impl Kernel {
         // register live at its entry. The others are neither loaded nor,
         // when a whole variable goes unread, marked read in the interface
         // (so a renderer need not interpolate them for this pass).
-        let live = liveness::analyze(&program, &program.ops, program.registers, &live_out)?;
-        let inputs: Vec<_> = self
-            .inputs
-            .iter()
-            .copied()
-            .filter(|&(_, r, _)| live.entry_live(r))
-            .collect();
+        // (None at all for an empty slice: nothing to discard, no depth.)
+        let inputs: Vec<_> = if program.ops.is_empty() {
+            Vec::new()
+        } else {
+            let live = liveness::analyze(&program, &program.ops, program.registers, &live_out)?;
+            self.inputs
+                .iter()
+                .copied()
+                .filter(|&(_, r, _)| live.entry_live(r))
+                .collect()
+        };
         let mut interface = self.interface.clone();
         for slot in &mut interface.inputs {
             let range = slot.offset..slot.offset + slot.components;

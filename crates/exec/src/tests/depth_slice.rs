@@ -316,6 +316,21 @@ fn slices_without_frag_depth_only_for_costly_kernels() {
     assert!(discarded > 0 && kept > 0, "{discarded} / {kept}");
     let slice = k.depth_only().expect("a slice");
     assert!(slice.op_count() < 16, "{} ops", slice.op_count());
+    // Without discards the slice is empty: it decides nothing.
+    let lit = kernel(
+        Stage::Fragment,
+        &costly.replace("if (v.w > 1.5) discard;", ""),
+    );
+    let empty = lit.depth_only().expect("a slice");
+    assert_eq!(empty.op_count(), 0);
+    for native in [false, true] {
+        if native {
+            empty.compile_native();
+        }
+        let mut b = Batch::for_kernel(&empty, 0xffff);
+        empty.run(&mut b, &u, &NoTextures).expect("runs");
+        assert_eq!(b.discarded, 0);
+    }
     let cheap = kernel(
         Stage::Fragment,
         "varying vec4 v; void main() { if (v.w > 1.5) discard; gl_FragColor = v * 2.0; }",
