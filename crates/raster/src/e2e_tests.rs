@@ -817,6 +817,9 @@ impl crate::ShaderStage for EmptySlice<'_> {
             ) -> Result<(), crate::ex::ExecError> {
                 Ok(())
             }
+            fn does_nothing(&self) -> bool {
+                true
+            }
         }
         let mut iface = self.1.clone();
         for slot in &mut iface.inputs {

@@ -217,6 +217,14 @@ pub trait ShaderStage: Sync {
         None
     }
 
+    /// Whether running the stage leaves a batch's outputs as they were
+    /// and discards nothing (a kernel without ops, such as the depth-only
+    /// slice of a shader that neither writes `gl_FragDepth` nor discards):
+    /// the pipeline then need not run it. `false` (the default): run it.
+    fn does_nothing(&self) -> bool {
+        false
+    }
+
     /// [`ShaderStage::run`], reporting `lane`'s statements, stores and
     /// prints to `trace` (the debugger). Stages that cannot trace run
     /// plainly.
@@ -270,6 +278,9 @@ impl ShaderStage for ex::Kernel {
     }
     fn depth_only(&self) -> Option<Box<dyn ShaderStage>> {
         ex::Kernel::depth_only(self).map(|k| Box::new(k) as Box<dyn ShaderStage>)
+    }
+    fn does_nothing(&self) -> bool {
+        self.op_count() == 0
     }
     fn prepare(&self, uniforms: &[u32]) -> Option<ex::Prepared> {
         Some(ex::Kernel::prepare(self, uniforms))

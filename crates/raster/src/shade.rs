@@ -980,12 +980,19 @@ impl<'a> FragmentStage<'a> {
         let early = self.early && self.batches_primitives(fb);
         let weights = !self.depth_fills.is_empty() || self.layout.frag_coord.is_some();
         let quick = QuickOps::new(fb, self.state, &self.colors_out);
+        // A slice without ops (no gl_FragDepth, no discard) decides
+        // nothing: the pass only depth-tests.
+        let run_slice = !depth.does_nothing() || self.layout.frag_depth.is_some();
         let mut depth_pass = |fb: &mut Framebuffer,
                               winner: &mut Vec<(u32, u8)>,
                               pending: &[Entry]|
          -> Result<(), ExecError> {
-            self.fill(batch, pending, &self.depth_fills);
-            self.run_depth(depth, batch)?;
+            if run_slice {
+                self.fill(batch, pending, &self.depth_fills);
+                self.run_depth(depth, batch)?;
+            } else {
+                batch.discarded = 0;
+            }
             // The fragments to test, in order: (x, y, z, back, primitive,
             // its quad's coverage).
             let mut frags = [(0u32, 0u32, 0f32, false, 0u32, 0u8); LANES];
