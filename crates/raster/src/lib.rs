@@ -73,11 +73,14 @@
 //! # Colors for visible fragments only
 //! When the fragment stage has a depth-only slice
 //! ([`ShaderStage::depth_only`]: `exec` offers one to kernels writing
-//! `gl_FragDepth`, where early depth testing is impossible) and the
+//! `gl_FragDepth`, where early depth testing is impossible, and to costly
+//! kernels, where shading each pixel once pays for a second pass) and the
 //! per-fragment operations let the last fragment to pass the depth test
 //! decide a pixel (no alpha test, blending, logic op or stencil test),
 //! each tile runs the slice on every fragment (without `gl_FragDepth`: on
-//! those early depth rejection keeps), depth-tests in draw
+//! those early depth rejection keeps; a slice that
+//! [`ShaderStage::does_nothing`] is not run, each covered quad is only
+//! depth-tested), depth-tests in draw
 //! order and remembers the winning primitive per pixel, then runs the full
 //! stage once per winning (primitive, 2×2 quad), with the same inputs,
 //! coverage and helper lanes as the straightforward path, and writes the
