@@ -558,6 +558,8 @@ pub(crate) fn run_on(
     // best interpreter.
     #[cfg(feature = "jit")]
     let native = match variant {
+        // (`code` is the kernel's own, `k.code`, for every caller.)
+        crate::Variant::Jit if std::ptr::eq(code, &*k.code) => k.jit.get_or_start(&k.code),
         crate::Variant::Jit => k.jit.get(code, false),
         _ => None,
     };

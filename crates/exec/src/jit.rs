@@ -50,9 +50,9 @@
 //!
 //! ## When it is used
 //! With the `jit` variant (the default where Cranelift supports the CPU), a
-//! kernel is compiled on its [`COMPILE_AFTER_RUNS`]-th run, by one thread
-//! (the others keep interpreting meanwhile), and cached for the kernel and
-//! its clones. Programs with subroutine calls, or over [`MAX_OPS`] ops,
+//! kernel's compilation starts on its [`COMPILE_AFTER_RUNS`]-th run, on a
+//! thread of its own (the runs keep interpreting meanwhile), and the code
+//! is cached for the kernel and its clones. Programs with subroutine calls, or over [`MAX_OPS`] ops,
 //! stay on the interpreter, as does any kernel Cranelift fails on (the
 //! reason is kept: [`crate::Kernel::native_code`]; `SHADERBOX_JIT_LOG=1`
 //! prints it).
@@ -66,28 +66,28 @@ use crate::{Batch, ExecError, Kernel, Textures};
 use std::any::Any;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicU32, Ordering};
-use std::sync::{Mutex, OnceLock, TryLockError};
+use std::sync::{Arc, Mutex, OnceLock, TryLockError};
 
 /// Programs with more executor ops than this stay on the interpreter
 /// (compile time grows with the size; such programs are rare).
 pub(crate) const MAX_OPS: usize = 6000;
 
-/// A kernel is compiled when it starts its run number this. Compiling
-/// costs about 0.1–0.4 ms per executor op (10–150 ms for the seed shaders
-/// on the 2-core Zen 4) and saves about 1–2 ns per op and batch, so a
-/// kernel wins its compile time back after roughly 10^5 batches: a
-/// one-off draw (the README's crambin render, about 40,000 colour
-/// batches) stays on the interpreter, a scene drawn frame after frame is
-/// compiled during its first frame or two.
-pub(crate) const COMPILE_AFTER_RUNS: u32 = 50_000;
+/// A kernel's native code is started on its run number this, on a thread
+/// of its own, while the runs go on in the interpreter; they switch to the
+/// native code once it is there (10–260 ms for the seed shaders on the
+/// 2-core Zen 4). Kernels of tiny draws (under 1,024 batches: 16,384
+/// lanes) never pay for it; a draw that stops before the code is ready
+/// has lost only the compiling thread's time.
+pub(crate) const COMPILE_AFTER_RUNS: u32 = 1024;
 
 /// The run count of [`compile_after`] when set by [`set_compile_after`]
 /// (0: not set).
 static COMPILE_AFTER_SET: AtomicU32 = AtomicU32::new(0);
 
 /// Makes kernels compile on their `runs`-th run from now on (at least 1),
-/// overriding [`COMPILE_AFTER_RUNS`] and `SHADERBOX_JIT_AFTER`; for
-/// tests that want native code in short draws.
+/// on the thread of that run (the later runs are native whatever the
+/// timing), overriding [`COMPILE_AFTER_RUNS`] and `SHADERBOX_JIT_AFTER`;
+/// for tests that want native code in short draws.
 pub(crate) fn set_compile_after(runs: u32) {
     COMPILE_AFTER_SET.store(runs.max(1), Ordering::Relaxed);
 }
@@ -188,6 +188,8 @@ pub(crate) struct Const16(pub [u32; 4]);
 #[derive(Default)]
 pub(crate) struct Cache {
     runs: AtomicU32,
+    /// Whether a background compilation was started.
+    started: std::sync::atomic::AtomicBool,
     /// Held while compiling.
     compiling: Mutex<()>,
     slot: OnceLock<Result<Native, String>>,
@@ -204,8 +206,38 @@ impl std::fmt::Debug for Cache {
 }
 
 impl Cache {
-    /// The native code for `code`, compiling it now if `force` or this is
-    /// the [`COMPILE_AFTER_RUNS`]-th call and no other thread is at it.
+    /// The native code of `code` (this cache's kernel's) if it is ready;
+    /// on the [`compile_after`]-th call, starts compiling it on a thread
+    /// of its own (or here, if no thread can be started).
+    pub(crate) fn get_or_start(self: &Arc<Self>, code: &Arc<Code>) -> Option<&Native> {
+        if let Some(r) = self.slot.get() {
+            return r.as_ref().ok();
+        }
+        if COMPILE_AFTER_SET.load(Ordering::Relaxed) != 0 {
+            // Tests: compiled by the run that reaches the count, so the
+            // runs after it are native whatever the timing.
+            return self.get(code, false);
+        }
+        if self.runs.fetch_add(1, Ordering::Relaxed) + 1 < compile_after()
+            || self.started.swap(true, Ordering::AcqRel)
+        {
+            return None;
+        }
+        let (cache, own) = (Arc::clone(self), Arc::clone(code));
+        let thread = std::thread::Builder::new()
+            .name("shaderbox-jit".to_string())
+            .spawn(move || {
+                cache.get(&own, true);
+            });
+        if thread.is_err() {
+            return self.get(code, true);
+        }
+        None
+    }
+
+    /// The native code for `code`, compiling it now if `force` (waiting
+    /// for a compilation in progress) or this is the
+    /// [`COMPILE_AFTER_RUNS`]-th call and no other thread is at it.
     pub(crate) fn get(&self, code: &Code, force: bool) -> Option<&Native> {
         if let Some(r) = self.slot.get() {
             return r.as_ref().ok();

@@ -124,11 +124,12 @@
 //! texture lookups, so it computes the same bits (tests compare it with
 //! the interpreter on random programs of every op, on every unit-test
 //! shader, and on piglit's execution and built-in function shaders).
-//! A kernel is compiled on its 50,000th run (`SHADERBOX_JIT_AFTER=n` or
-//! [`set_native_after`]: its
-//! n-th) by one thread (the others interpret meanwhile), so compiling and linking a
-//! program costs no code generation and kernels that run a few batches
-//! never pay for it; [`Kernel::compile_native`] compiles at once.
+//! A kernel's native code is started on its 1,024th run
+//! (`SHADERBOX_JIT_AFTER=n` or [`set_native_after`]: its n-th) on a
+//! thread of its own while the runs go on interpreted, and used once
+//! ready, so compiling and linking a program costs no code generation,
+//! kernels of tiny draws never pay for it and no draw waits for it;
+//! [`Kernel::compile_native`] compiles at once.
 //! Measured per 16-lane batch on a 2-core Zen 4 (`bench_sphere`,
 //! `bench_materials`, prepared uniforms, all 16 lanes active): the
 //! sphere-impostor shader about 0.76× the AVX2 interpreter's time, the
@@ -180,8 +181,9 @@ pub use interface::{kinds, size_of, Interface, Slot};
 pub const DEFER_MIN_OPS: usize = 96;
 
 /// Makes kernels of the `jit` variant compile to native code on their
-/// `runs`-th run (at least 1) instead of the default 50,000th (see the
-/// crate docs: compiling pays only for kernels that run many batches).
+/// `runs`-th run (at least 1), on the thread of that run, instead of from
+/// the default 1,024th on a thread of their own (see the crate docs): the
+/// runs after it are native whatever the timing.
 /// Affects every kernel of the process; no effect on results (native code
 /// computes the interpreter's bits) or in a build without the `jit`
 /// feature. For tests that want native code in short draws.
@@ -618,8 +620,9 @@ impl Kernel {
     }
 
     /// The state of this kernel's native code (the `jit` variant):
-    /// `None` before it was compiled (a kernel is compiled on its 50,000th
-    /// run, see [`set_native_after`], or never with another variant), `Some(Ok(bytes))` once it runs
+    /// `None` before it was compiled (a kernel's compilation starts on its
+    /// 1,024th run, see [`set_native_after`], or never with another
+    /// variant), `Some(Ok(bytes))` once it runs
     /// as machine code of that size, `Some(Err(reason))` when it stays on
     /// the interpreter (subroutine calls, size, a CPU or code generator
     /// failure), or always `Some(Err(..))` in a build without the `jit`
