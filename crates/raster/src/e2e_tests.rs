@@ -231,8 +231,8 @@ type SceneResult = (Vec<[u8; 4]>, Vec<f32>, Vec<u8>, Vec<String>);
 /// with derivatives and discard; and a draw stopped by the loop budget in
 /// some tiles only.
 fn scene(workers: &crate::Workers) -> SceneResult {
-    // Native code from a kernel's 32nd batch on, so these short draws
-    // run it (the default waits for 50,000 batches).
+    // Native code from a kernel's 32nd batch on, compiled by that batch's
+    // thread, so these short draws run it whatever the timing.
     crate::ex::set_native_after(32);
     let (w, h) = (200u32, 150u32);
     let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, true);
@@ -614,8 +614,8 @@ fn impostors(
     spheres: usize,
     state_change: impl Fn(&mut PipelineState),
 ) -> (Vec<[u8; 4]>, Vec<f32>, u64) {
-    // Native code from a kernel's 32nd batch on, so these short draws
-    // run it (the default waits for 50,000 batches).
+    // Native code from a kernel's 32nd batch on, compiled by that batch's
+    // thread, so these short draws run it whatever the timing.
     crate::ex::set_native_after(32);
     let (vs, fs) = program(
         "attribute vec4 pos; attribute vec4 sph; varying vec4 s;\n\
@@ -837,8 +837,8 @@ fn small_triangles_with(
     state_change: impl Fn(&mut PipelineState),
     slice: bool,
 ) -> SceneResult {
-    // Native code from a kernel's 32nd batch on, so these short draws
-    // run it (the default waits for 50,000 batches).
+    // Native code from a kernel's 32nd batch on, compiled by that batch's
+    // thread, so these short draws run it whatever the timing.
     crate::ex::set_native_after(32);
     let (vs, fs) = program(
         "attribute vec4 pos; attribute vec4 col; varying vec4 v;\n\
