@@ -9,7 +9,9 @@ implementation, each in its own process: shaderbox with
 LD_LIBRARY_PATH=<its target/release>, Mesa with the system's libOSMesa
 (Debian libosmesa6, llvmpipe). Both get the same thread count
 (SHADERBOX_THREADS / LP_NUM_THREADS; 2 unless the scene says 1). Per scene:
-one warm-up frame, then up to --frames timed frames (fewer when --budget
+warm-up frames (at least one, for half a second: scene.py's
+WARMUP_SECONDS, so that both have compiled their shaders), then up to
+--frames timed frames (fewer when --budget
 seconds are spent, at least 2); the table gives the median with the
 min–max spread, the ratio of the medians (shaderbox / Mesa; below 1 means
 shaderbox is faster) and the share of pixels within 2/255 of Mesa's image

@@ -14,7 +14,8 @@ own process with its own library. SPEC names the scene (see `build` below):
     tiny:TRIANGLES:WxH                               many sub-pixel triangles
     compile:sphere|materials                         compile + link time
 
-A frame is glClear + the scene's draws + glFinish. One warm-up frame, then
+A frame is glClear + the scene's draws + glFinish. Warm-up frames (at least
+one, until WARMUP_SECONDS have gone), then
 frames until N are timed or the time budget is spent (at least 2). Prints
 one JSON line: {"renderer", "warmup", "times": [seconds...]}; --out gets the
 last frame's RGBA pixels (bottom row first) for the image comparison.
@@ -51,6 +52,8 @@ ELEMENTS = [
     (1.80, (1.0, 1.0, 0.19), 0.05),
 ]
 FOG_AT_BACK = 0.35
+# Seconds of untimed frames before the timed ones (see main).
+WARMUP_SECONDS = 0.5
 # Volume per random atom (Å^3).
 ATOM_VOLUME = 1000.0
 
@@ -420,7 +423,15 @@ def main():
             GL.glFinish()
             return time.perf_counter() - t
 
+        # Warm-up: the first frame (its time is reported), then more until
+        # half a second has gone, so both implementations have compiled
+        # their shaders (llvmpipe at the first draw, shaderbox's native
+        # code on a background thread) before the timed frames.
         result["warmup"] = frame()
+        warm = [result["warmup"]]
+        while args.frames > 0 and sum(warm) < WARMUP_SECONDS and len(warm) < 20:
+            warm.append(frame())
+        result["warmup_frames"] = len(warm)
         times = []
         start = time.perf_counter()
         while len(times) < args.frames and (len(times) < 2 or time.perf_counter() - start < args.budget):
