@@ -32,7 +32,7 @@ pub(crate) fn slice(p: &Program, live_out: &[Reg]) -> Option<Program> {
     let mut dropped = drop_empty_regions(&p.ops, &mut keep);
     let mut out = compact(p, &keep);
     for _ in 0..4 {
-        if !dropped || out.ops.is_empty() {
+        if !dropped {
             break;
         }
         keep = analyze(&out, &out.ops, out.registers, live_out)?.keep;

@@ -74,10 +74,20 @@ fn analyze_with(
     let want_after = masked.is_some();
     let n = ops.len();
     let nregs = nregs as usize;
-    if n == 0 {
-        return None;
-    }
     let words = nregs.div_ceil(64).max(1);
+    if n == 0 {
+        // Nothing runs: the outputs are live at the entry as they are.
+        let mut entry = vec![0u64; words];
+        for &r in live_out {
+            set(&mut entry, r);
+        }
+        return Some(Liveness {
+            keep: Vec::new(),
+            entry,
+            store_source_dead: Vec::new(),
+            after: Vec::new(),
+        });
+    }
 
     // Basic blocks: leaders are op 0, every jump/call target and every op
     // after a jump, conditional jump, call or return.
