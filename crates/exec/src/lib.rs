@@ -174,6 +174,11 @@ mod program;
 mod variant;
 
 pub use interface::{kinds, size_of, Interface, Slot};
+pub use interp::LOOP_BUDGET;
+pub use program::{StatementMark, VarInfo};
+pub use variant::{
+    current as kernel_variant, set_variant as set_kernel_variant, supported_variants, Variant,
+};
 
 /// Fragment kernels without `gl_FragDepth` get a [`Kernel::depth_only`]
 /// slice (their discards) from this many executor ops on: below, a
@@ -195,11 +200,6 @@ pub fn set_native_after(runs: u32) {
     #[cfg(not(feature = "jit"))]
     let _ = runs;
 }
-pub use interp::LOOP_BUDGET;
-pub use program::{StatementMark, VarInfo};
-pub use variant::{
-    current as kernel_variant, set_variant as set_kernel_variant, supported_variants, Variant,
-};
 
 use glsl::types::SamplerKind;
 use glsl::Span;
@@ -563,17 +563,13 @@ impl Kernel {
         // register live at its entry. The others are neither loaded nor,
         // when a whole variable goes unread, marked read in the interface
         // (so a renderer need not interpolate them for this pass).
-        // (None at all for an empty slice: nothing to discard, no depth.)
-        let inputs: Vec<_> = if program.ops.is_empty() {
-            Vec::new()
-        } else {
-            let live = liveness::analyze(&program, &program.ops, program.registers, &live_out)?;
-            self.inputs
-                .iter()
-                .copied()
-                .filter(|&(_, r, _)| live.entry_live(r))
-                .collect()
-        };
+        let live = liveness::analyze(&program, &program.ops, program.registers, &live_out)?;
+        let inputs: Vec<_> = self
+            .inputs
+            .iter()
+            .copied()
+            .filter(|&(_, r, _)| live.entry_live(r))
+            .collect();
         let mut interface = self.interface.clone();
         for slot in &mut interface.inputs {
             let range = slot.offset..slot.offset + slot.components;
