@@ -771,6 +771,14 @@ impl<'m> Lowerer<'m> {
 
     fn block(&mut self, b: &Block) -> R<()> {
         let mark = self.next_reg;
+        self.statements(b)?;
+        self.next_reg = mark;
+        Ok(())
+    }
+
+    /// Lowers `b`'s statements up to the first that always leaves it;
+    /// `true` when there is one (the rest is unreachable).
+    fn statements(&mut self, b: &[Stmt]) -> R<bool> {
         let mut i = 0;
         while let Some(s) = b.get(i) {
             // `for (int i = A; i < B; i++)` with a few iterations and a
@@ -779,19 +787,18 @@ impl<'m> Lowerer<'m> {
                 if let Some(plan) = self.unroll_plan(*local, s, next) {
                     self.unroll_left -= plan.extra;
                     if self.stmt(s)? || self.unrolled(plan)? {
-                        break;
+                        return Ok(true);
                     }
                     i += 2;
                     continue;
                 }
             }
             if self.stmt(s)? {
-                break;
+                return Ok(true);
             }
             i += 1;
         }
-        self.next_reg = mark;
-        Ok(())
+        Ok(false)
     }
 
     /// The int value of `e` when it is known at this point of the
@@ -899,17 +906,11 @@ impl<'m> Lowerer<'m> {
     /// function (the rest of the block is unreachable).
     fn unrolled(&mut self, plan: Unroll) -> R<bool> {
         let slot = plan.local.0 as usize;
-        let mut ends = false;
         for &v in &plan.values {
             self.check_condition(plan.cond, plan.cond_span)?;
             self.bind(slot, Some(v));
             let mark = self.next_reg;
-            for s in plan.body {
-                if self.stmt(s)? {
-                    ends = true;
-                    break;
-                }
-            }
+            let ends = self.statements(plan.body)?;
             self.next_reg = mark;
             self.bind(slot, None);
             if ends {
