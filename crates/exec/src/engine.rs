@@ -558,9 +558,9 @@ pub(crate) fn run_on(
     // best interpreter.
     #[cfg(feature = "jit")]
     let native = match variant {
-        // (`code` is the kernel's own, `k.code`, for every caller.)
+        // The kernel's cache holds the native code of its own `code`
+        // (what every caller passes); any other code is interpreted.
         crate::Variant::Jit if std::ptr::eq(code, &*k.code) => k.jit.get_or_start(&k.code),
-        crate::Variant::Jit => k.jit.get(code, false),
         _ => None,
     };
     let variant = match variant {
