@@ -1047,61 +1047,62 @@ impl<'a> FragmentStage<'a> {
         // Nothing to run and the common per-fragment operations: each
         // quad is depth-tested as soon as it is covered (the order and the
         // tests of the batched pass, which would only run the empty slice).
-        if let (false, Some(q)) = (run_slice, quick.as_ref()) {
-            let mut target = q.target(fb, origin);
-            for (i, &p) in bin.iter().enumerate() {
-                let Some(&prim) = prims.get(p as usize) else {
-                    continue;
-                };
-                self.prefetch_ahead(prims, bin, i);
-                prim.shape.quads_into(clip_to(prim, tile), quads);
-                let Some(e) = slots.first_mut() else { break };
-                for &quad in quads.iter() {
-                    e.set(self.isa, prim, p, quad, 0);
-                    let qd = &e.quad;
-                    let z = qd.z.map(|z| z as f32);
-                    let (pass, index, _) = target.test_quad((qd.x, qd.y), qd.live, z, qd.zf);
-                    for (k, &at) in index.iter().enumerate() {
-                        if pass & (1 << k) != 0 {
-                            if let Some(slot) = winner.get_mut(at) {
-                                *slot = (p, qd.live);
+        match quick.as_ref().filter(|_| !run_slice) {
+            Some(q) => {
+                let mut target = q.target(fb, origin);
+                for (i, &p) in bin.iter().enumerate() {
+                    let Some(&prim) = prims.get(p as usize) else {
+                        continue;
+                    };
+                    self.prefetch_ahead(prims, bin, i);
+                    prim.shape.quads_into(clip_to(prim, tile), quads);
+                    let Some(e) = slots.first_mut() else { break };
+                    for &quad in quads.iter() {
+                        e.set(self.isa, prim, p, quad, 0);
+                        let qd = &e.quad;
+                        let z = qd.z.map(|z| z as f32);
+                        let (pass, index, _) = target.test_quad((qd.x, qd.y), qd.live, z, qd.zf);
+                        for (k, &at) in index.iter().enumerate() {
+                            if pass & (1 << k) != 0 {
+                                if let Some(slot) = winner.get_mut(at) {
+                                    *slot = (p, qd.live);
+                                }
                             }
                         }
                     }
                 }
             }
-        }
-        for (i, &p) in bin.iter().enumerate() {
-            if !run_slice && quick.is_some() {
-                break;
-            }
-            let Some(&prim) = prims.get(p as usize) else {
-                continue;
-            };
-            self.prefetch_ahead(prims, bin, i);
-            prim.shape.quads_into(clip_to(prim, tile), quads);
-            for &quad in quads.iter() {
-                let Some(e) = slots.get_mut(*n) else { break };
-                e.set(self.isa, prim, p, quad, 0);
-                if early {
-                    self.early_rejects(fb, origin, prim, &mut e.quad);
-                    if e.quad.live == 0 {
+            None => {
+                for (i, &p) in bin.iter().enumerate() {
+                    let Some(&prim) = prims.get(p as usize) else {
                         continue;
+                    };
+                    self.prefetch_ahead(prims, bin, i);
+                    prim.shape.quads_into(clip_to(prim, tile), quads);
+                    for &quad in quads.iter() {
+                        let Some(e) = slots.get_mut(*n) else { break };
+                        e.set(self.isa, prim, p, quad, 0);
+                        if early {
+                            self.early_rejects(fb, origin, prim, &mut e.quad);
+                            if e.quad.live == 0 {
+                                continue;
+                            }
+                        }
+                        if weights {
+                            e.finish(self.isa);
+                        }
+                        *n += 1;
+                        if *n == LANES / 4 {
+                            depth_pass(fb, &mut winner, slots)?;
+                            *n = 0;
+                        }
                     }
                 }
-                if weights {
-                    e.finish(self.isa);
-                }
-                *n += 1;
-                if *n == LANES / 4 {
-                    depth_pass(fb, &mut winner, slots)?;
+                if *n > 0 {
+                    depth_pass(fb, &mut winner, &slots[..*n])?;
                     *n = 0;
                 }
             }
-        }
-        if *n > 0 {
-            depth_pass(fb, &mut winner, &slots[..*n])?;
-            *n = 0;
         }
 
         // Pass 2: (primitive, quad, coverage, lanes to write) per winner.
