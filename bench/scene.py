@@ -433,10 +433,15 @@ def main():
             warm.append(frame())
         result["warmup_frames"] = len(warm)
         times = []
+        # Processor time (every thread of the process) beside the wall
+        # time: on a shared machine it moves less with the neighbours'
+        # load, which makes A/B comparisons of one renderer steadier.
+        cpu = time.process_time()
         start = time.perf_counter()
         while len(times) < args.frames and (len(times) < 2 or time.perf_counter() - start < args.budget):
             times.append(frame())
         result["times"] = times
+        result["cpu_per_frame"] = (time.process_time() - cpu) / len(times)
         err = GL.glGetError()
         if err:
             raise SystemExit(f"GL error {err:#x} while drawing")
