@@ -657,6 +657,26 @@ impl Kernel {
         &self.program.vars
     }
 
+    /// Whether every lane's results depend only on that lane's inputs: a
+    /// fragment kernel without derivatives (`dFdx`, `dFdy`, `fwidth`),
+    /// texture lookups (a fragment lookup's LOD comes from its quad) or
+    /// `debugPrintfEXT` calls (reported by lane), or any vertex kernel.
+    /// A renderer may then run fragments of different quads side by side
+    /// in one batch, without helper lanes: each lane's outputs and
+    /// discard are those it gets in its own quad, bit for bit (the
+    /// module's determinism rule).
+    pub fn lanes_independent(&self) -> bool {
+        use program::Op;
+        self.stage != glsl::Stage::Fragment
+            || (self.program.textures.is_empty()
+                && self.program.printfs.is_empty()
+                && !self
+                    .program
+                    .ops
+                    .iter()
+                    .any(|op| matches!(op, Op::DdX { .. } | Op::DdY { .. } | Op::Texture { .. })))
+    }
+
     /// Number of instructions (a size measure).
     pub fn op_count(&self) -> usize {
         self.program.ops.len()

@@ -614,6 +614,21 @@ fn impostors(
     spheres: usize,
     state_change: impl Fn(&mut PipelineState),
 ) -> (Vec<[u8; 4]>, Vec<f32>, u64) {
+    impostors_with(workers, discard, deferred, spheres, state_change, true)
+}
+
+/// [`impostors`], the colours computed with derivatives (`quad_ops`) or
+/// without (then every lane of the shader is independent of the others
+/// and the pipeline packs the covered pixels of several quads into a
+/// batch).
+fn impostors_with(
+    workers: &crate::Workers,
+    discard: bool,
+    deferred: bool,
+    spheres: usize,
+    state_change: impl Fn(&mut PipelineState),
+    quad_ops: bool,
+) -> (Vec<[u8; 4]>, Vec<f32>, u64) {
     // Native code from a kernel's 32nd batch on, compiled by that batch's
     // thread, so these short draws run it whatever the timing.
     crate::ex::set_native_after(32);
@@ -630,12 +645,19 @@ fn impostors(
                float acc = 0.0;\n\
                for (int i = 0; i < 4; i++) acc += 0.1 * h;\n\
                vec3 n = vec3(s.xy, h) * 0.5 + 0.5;\n\
-               gl_FragColor = vec4(n * s.w + vec3(dFdx(h), dFdy(h), acc) * 2.0, 1.0);\n\
+               gl_FragColor = vec4(n * s.w + vec3({}, acc) * 2.0, 1.0);\n\
              }}",
-            if discard { "discard;" } else { "q = 0.0;" }
+            if discard { "discard;" } else { "q = 0.0;" },
+            if quad_ops {
+                "dFdx(h), dFdy(h)"
+            } else {
+                "h * 0.5, h * h"
+            }
         ),
     );
     assert!(fs.depth_only().is_some(), "the shader has a depth slice");
+    assert_eq!(fs.lanes_independent(), !quad_ops);
+    assert!(fs.depth_only().is_some_and(|d| d.lanes_independent()));
     let (w, h) = (150u32, 130u32);
     let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, false);
     fb.clear_color(&[0], [0.1, 0.2, 0.3, 1.0], [true; 4], None);
@@ -758,6 +780,26 @@ fn colors_for_visible_fragments_only_give_the_same_bytes() {
         let want = impostors(&crate::Workers::new(1), true, false, 60, change);
         let got = impostors(&crate::Workers::new(2), true, true, 60, change);
         assert!(want == got);
+    }
+}
+
+#[test]
+fn packed_batches_give_the_same_bytes() {
+    // Neither the slice nor the colours use derivatives: both passes run
+    // the covered pixels of several quads per batch, no helper lanes.
+    for discard in [true, false] {
+        let want = impostors_with(&crate::Workers::new(1), discard, false, 200, |_| {}, false);
+        for threads in [1, 2] {
+            let got = impostors_with(
+                &crate::Workers::new(threads),
+                discard,
+                true,
+                200,
+                |_| {},
+                false,
+            );
+            assert!(want == got, "discard {discard}, {threads} threads");
+        }
     }
 }
 

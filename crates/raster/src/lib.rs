@@ -228,6 +228,15 @@ pub trait ShaderStage: Sync {
         false
     }
 
+    /// Whether each lane's outputs and discard depend only on its own
+    /// inputs (no derivatives or other quad-wide operations; see
+    /// `exec::Kernel::lanes_independent`): the fragment stage may then
+    /// pack the covered pixels of several quads into one batch and run
+    /// no helper lanes. `false` (the default): lanes run in whole quads.
+    fn lanes_independent(&self) -> bool {
+        false
+    }
+
     /// [`ShaderStage::run`], reporting `lane`'s statements, stores and
     /// prints to `trace` (the debugger). Stages that cannot trace run
     /// plainly.
@@ -284,6 +293,9 @@ impl ShaderStage for ex::Kernel {
     }
     fn does_nothing(&self) -> bool {
         self.op_count() == 0
+    }
+    fn lanes_independent(&self) -> bool {
+        ex::Kernel::lanes_independent(self)
     }
     fn prepare(&self, uniforms: &[u32]) -> Option<ex::Prepared> {
         Some(ex::Kernel::prepare(self, uniforms))

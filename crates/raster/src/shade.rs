@@ -134,6 +134,23 @@ pub(crate) struct Scratch<'p> {
     slots: [Entry<'p>; LANES / 4],
     n: usize,
     quads: Vec<(i64, i64, u8)>,
+    /// The quads of a packed batch ([`FragmentStage::fill_packed`]): up
+    /// to one per lane, and where their lanes go.
+    packed: Box<[Entry<'p>; LANES]>,
+    runs: Box<[Run; LANES]>,
+}
+
+/// Where [`FragmentStage::fill_packed`] puts the pixels a quad runs.
+#[derive(Clone, Copy, Default)]
+pub(crate) struct Run {
+    /// The pixels, in increasing order (`order[..count]`).
+    order: [u8; 4],
+    count: usize,
+    /// The lane of the first.
+    first: usize,
+    /// The quad's interpolation weights (`QuadInterp::weights`) of the
+    /// pixels of `order`, in that order.
+    weights: [[f64; 4]; 3],
 }
 
 /// Bit set in a lane mask for the `LANES / 4` quads of a batch.
@@ -143,6 +160,62 @@ fn quads_mask(quads: usize) -> u32 {
     } else {
         (1u32 << (4 * quads)) - 1
     }
+}
+
+/// For each 4-bit pixel set, its pixels in increasing order (then
+/// zeros): where [`FragmentStage::fill_packed`] takes a quad's lanes from.
+const COMPRESS: [[u8; 4]; 16] = {
+    let mut t = [[0u8; 4]; 16];
+    let mut m = 0;
+    while m < 16 {
+        let (mut k, mut j) = (0, 0);
+        while k < 4 {
+            if m & (1 << k) != 0 {
+                t[m][j] = k as u8;
+                j += 1;
+            }
+            k += 1;
+        }
+        m += 1;
+    }
+    t
+};
+
+/// Bit set in a lane mask for the first `lanes` lanes of a batch.
+fn lanes_mask(lanes: usize) -> u32 {
+    if lanes >= LANES {
+        u32::MAX >> (32 - LANES)
+    } else {
+        (1u32 << lanes) - 1
+    }
+}
+
+/// Takes the quad just set at `pending[*n]` (running the pixels
+/// `write`) into a batch being gathered, `*lanes` lanes of it used so
+/// far: a quad per 4 lanes, or with `packed` its pixels of `write` only
+/// ([`FragmentStage::fill_packed`]). Returns `Some((count, spill))` when
+/// `pending[..count]` is to run now: with `spill` the new quad did not
+/// fit and is to be moved to `pending[0]`, where the next batch starts.
+fn admit(packed: bool, n: &mut usize, lanes: &mut usize, write: u8) -> Option<(usize, bool)> {
+    let c = match packed {
+        true => (write & 0xf).count_ones() as usize,
+        false => 4,
+    };
+    if *lanes + c > LANES {
+        let count = *n;
+        *n = 1;
+        *lanes = c;
+        return Some((count, true));
+    }
+    *n += 1;
+    *lanes += c;
+    if *lanes == LANES || *n == LANES {
+        let count = *n;
+        *n = 0;
+        *lanes = 0;
+        return Some((count, false));
+    }
+    None
 }
 
 /// How [`FragmentStage::fill`] writes one varying component.
@@ -338,6 +411,8 @@ impl<'a> FragmentStage<'a> {
             slots: Default::default(),
             n: 0,
             quads: Vec::new(),
+            packed: Default::default(),
+            runs: Default::default(),
         }
     }
 
@@ -356,6 +431,7 @@ impl<'a> FragmentStage<'a> {
             slots,
             n,
             quads,
+            ..
         } = scratch;
         *n = 0;
         prim.shape.quads_into(clip_to(prim, tile), quads);
@@ -541,6 +617,7 @@ impl<'a> FragmentStage<'a> {
             slots,
             n,
             quads,
+            ..
         } = scratch;
         *n = 0;
         let quick = QuickOps::new(fb, self.state, &self.colors_out);
@@ -800,6 +877,177 @@ impl<'a> FragmentStage<'a> {
         }
     }
 
+    /// The lanes of `pending`'s quads in `e.write` (each quad's in pixel
+    /// order, the quads one after another: at most [`LANES`] in all) as
+    /// one batch without helper lanes, for a stage whose lanes are
+    /// independent ([`ShaderStage::lanes_independent`]). Every lane gets
+    /// the inputs [`FragmentStage::fill`] gives its pixel (the same f64
+    /// arithmetic), so its outputs are those of the quad-at-once path.
+    /// Lanes past the last are zero.
+    fn fill_packed(
+        &self,
+        batch: &mut Batch,
+        pending: &[Entry],
+        plan: &[FillLink],
+        runs: &mut [Run; LANES],
+    ) {
+        match self.isa {
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2 | Isa::Avx512 => {
+                // SAFETY: `isa` is only Avx2 or Avx512 when the CPU has
+                // AVX2 (`simd::detect`).
+                unsafe { self.fill_packed_avx2(batch, pending, plan, runs) }
+            }
+            _ => self.fill_packed_with(batch, pending, plan, runs),
+        }
+    }
+
+    /// [`FragmentStage::fill_packed`] compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn fill_packed_avx2(
+        &self,
+        batch: &mut Batch,
+        pending: &[Entry],
+        plan: &[FillLink],
+        runs: &mut [Run; LANES],
+    ) {
+        self.fill_packed_with(batch, pending, plan, runs)
+    }
+
+    #[inline(always)]
+    fn fill_packed_with(
+        &self,
+        batch: &mut Batch,
+        pending: &[Entry],
+        plan: &[FillLink],
+        runs: &mut [Run; LANES],
+    ) {
+        let mut total = 0;
+        for e in pending {
+            total += (e.write & 0xf).count_ones() as usize;
+        }
+        let total = total.min(LANES);
+        for c in batch.outputs.iter_mut() {
+            *c = [0.0; LANES];
+        }
+        batch.active = lanes_mask(total);
+        batch.helper = 0;
+        batch.discarded = 0;
+        let layout = self.layout;
+        let links = layout.links.len();
+        let sprite = self.state.point_sprite;
+        let lower_left = self.state.point_sprite_origin_lower_left;
+        let mut first = 0;
+        for (r, e) in runs.iter_mut().zip(pending) {
+            let run = e.write & 0xf;
+            r.order = COMPRESS[run as usize];
+            r.count = run.count_ones() as usize;
+            r.first = first;
+            for (wj, w) in r.weights.iter_mut().zip(&e.quad.it.weights) {
+                for (x, &k) in wj.iter_mut().zip(&r.order) {
+                    *x = w[k as usize & 3];
+                }
+            }
+            first += r.count;
+        }
+        let quads = pending.iter().zip(runs.iter());
+        let point_coords = |quad: &Quad, prim: &Prim| -> [(f32, f32); 4] {
+            std::array::from_fn(|k| {
+                let (x, y) = quad.pixel(k);
+                prim.shape.point_coord(x, y, lower_left)
+            })
+        };
+        // Each quad's values as `fill` computes them (the same f64
+        // arithmetic per pixel), in the order of its pixels to run, stored
+        // from its first lane on (the values of pixels not run land where
+        // the next quad's go, or past the last lane, where zeros are put
+        // back: lanes past the last read zeros, as absent quads' do in
+        // `fill`).
+        for (e, r) in quads.clone() {
+            let (Some(prim), quad, order, first, w) =
+                (e.prim, &e.quad, r.order, r.first, &r.weights)
+            else {
+                continue;
+            };
+            let attrs = self.prim_attrs(prim);
+            let attr = |j: usize, li: usize| attrs.get(j * links + li).copied().unwrap_or(0.0);
+            for l in plan {
+                let Some(lanes) = batch.inputs.get_mut(l.offset) else {
+                    continue;
+                };
+                let values: [f32; 4] = match (&prim.shape, l.kind) {
+                    (Shape::Point { .. }, FillKind::Replace(c)) if sprite => {
+                        let pc = point_coords(quad, prim);
+                        order.map(|k| [pc[k as usize & 3].0, pc[k as usize & 3].1, 0.0, 1.0][c])
+                    }
+                    (Shape::Point { .. }, _) | (_, FillKind::Constant) => [attr(0, l.li); 4],
+                    (Shape::Triangle { .. }, _) => {
+                        let v = [0, 1, 2].map(|j| attr(j, l.li) as f64);
+                        std::array::from_fn(|k| {
+                            (0.0 + w[0][k] * v[0] + w[1][k] * v[1] + w[2][k] * v[2]) as f32
+                        })
+                    }
+                    (Shape::Line { .. }, _) => {
+                        let v = [0, 1].map(|j| attr(j, l.li) as f64);
+                        std::array::from_fn(|k| (0.0 + w[0][k] * v[0] + w[1][k] * v[1]) as f32)
+                    }
+                };
+                match lanes.get_mut(first..first + 4) {
+                    Some(out) => out.copy_from_slice(&values),
+                    None => {
+                        for (x, v) in lanes.iter_mut().skip(first).zip(values) {
+                            *x = v;
+                        }
+                    }
+                }
+            }
+        }
+        if total < LANES {
+            for l in plan {
+                if let Some(lanes) = batch.inputs.get_mut(l.offset) {
+                    for x in lanes.iter_mut().skip(total) {
+                        *x = 0.0;
+                    }
+                }
+            }
+        }
+        if layout.frag_coord.is_none()
+            && layout.front_facing.is_none()
+            && layout.point_coord.is_none()
+        {
+            return;
+        }
+        for (e, r) in quads {
+            let (Some(prim), quad, order, count, first) =
+                (e.prim, &e.quad, r.order, r.count, r.first)
+            else {
+                continue;
+            };
+            let pc = match prim.shape {
+                Shape::Point { .. } => point_coords(quad, prim),
+                _ => [(0.0, 0.0); 4],
+            };
+            for (lane, k) in (first..total).zip(order).take(count) {
+                let k = k as usize & 3;
+                let (x, y) = quad.pixel(k);
+                if let Some(o) = layout.frag_coord {
+                    set(batch, o, lane, x as f32 + 0.5);
+                    set(batch, o + 1, lane, y as f32 + 0.5);
+                    set(batch, o + 2, lane, quad.z[k] as f32);
+                    set(batch, o + 3, lane, quad.it.inv_w[k] as f32);
+                }
+                if let Some(o) = layout.front_facing {
+                    set(batch, o, lane, if prim.back { 0.0 } else { 1.0 });
+                }
+                if let Some(o) = layout.point_coord {
+                    set(batch, o, lane, pc[k].0);
+                    set(batch, o + 1, lane, pc[k].1);
+                }
+            }
+        }
+    }
+
     /// Sets `frag` to the fragment of lane `4q + k` after shading; false
     /// when the lane is not covered, was discarded or lies left of /
     /// below the window. Only the colours of `colors_out` are written
@@ -959,6 +1207,62 @@ impl<'a> FragmentStage<'a> {
         tile: PixelRect,
         scratch: &mut Scratch<'p>,
     ) -> Result<(), ExecError> {
+        match self.isa {
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: `isa` is only Avx512 when the CPU has the features
+            // (`simd::detect`).
+            Isa::Avx512 => unsafe {
+                self.shade_deferred_avx512(depth, fb, prims, bin, tile, scratch)
+            },
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: likewise for AVX2.
+            Isa::Avx2 => unsafe { self.shade_deferred_avx2(depth, fb, prims, bin, tile, scratch) },
+            _ => self.shade_deferred_with(depth, fb, prims, bin, tile, scratch),
+        }
+    }
+
+    /// [`FragmentStage::shade_deferred`] compiled for AVX2 (its quad
+    /// loops, depth tests and f64 quad set-up inlined: the same
+    /// operations).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn shade_deferred_avx2<'p>(
+        &self,
+        depth: &dyn ShaderStage,
+        fb: &mut Framebuffer,
+        prims: &[&'p Prim],
+        bin: &[u32],
+        tile: PixelRect,
+        scratch: &mut Scratch<'p>,
+    ) -> Result<(), ExecError> {
+        self.shade_deferred_with(depth, fb, prims, bin, tile, scratch)
+    }
+
+    /// [`FragmentStage::shade_deferred`] compiled for AVX-512.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
+    unsafe fn shade_deferred_avx512<'p>(
+        &self,
+        depth: &dyn ShaderStage,
+        fb: &mut Framebuffer,
+        prims: &[&'p Prim],
+        bin: &[u32],
+        tile: PixelRect,
+        scratch: &mut Scratch<'p>,
+    ) -> Result<(), ExecError> {
+        self.shade_deferred_with(depth, fb, prims, bin, tile, scratch)
+    }
+
+    #[inline(always)]
+    fn shade_deferred_with<'p>(
+        &self,
+        depth: &dyn ShaderStage,
+        fb: &mut Framebuffer,
+        prims: &[&'p Prim],
+        bin: &[u32],
+        tile: PixelRect,
+        scratch: &mut Scratch<'p>,
+    ) -> Result<(), ExecError> {
         let origin = (tile.0.max(0) as u32, tile.1.max(0) as u32);
         let (w, h) = (fb.width as usize, fb.height as usize);
         let Scratch {
@@ -966,6 +1270,8 @@ impl<'a> FragmentStage<'a> {
             slots,
             n,
             quads,
+            packed,
+            runs,
         } = scratch;
         *n = 0;
         // Per pixel: (winning primitive, its quad's coverage).
@@ -983,12 +1289,20 @@ impl<'a> FragmentStage<'a> {
         // A slice without ops (no gl_FragDepth, no discard) decides
         // nothing: the pass only depth-tests.
         let run_slice = !depth.does_nothing() || self.layout.frag_depth.is_some();
+        // Stages whose lanes are independent run the covered pixels of up
+        // to `LANES` quads per batch, without helper lanes.
+        let pack_depth = run_slice && depth.lanes_independent();
+        let pack_colors = self.shader.lanes_independent();
         let mut depth_pass = |fb: &mut Framebuffer,
                               winner: &mut Vec<(u32, u8)>,
                               pending: &[Entry]|
          -> Result<(), ExecError> {
+            match (run_slice, pack_depth) {
+                (true, true) => self.fill_packed(batch, pending, &self.depth_fills, runs),
+                (true, false) => self.fill(batch, pending, &self.depth_fills),
+                _ => {}
+            }
             if run_slice {
-                self.fill(batch, pending, &self.depth_fills);
                 self.run_depth(depth, batch)?;
             } else {
                 batch.discarded = 0;
@@ -997,10 +1311,18 @@ impl<'a> FragmentStage<'a> {
             // its quad's coverage).
             let mut frags = [(0u32, 0u32, 0f32, false, 0u32, 0u8); LANES];
             let mut count = 0;
+            let mut next = 0;
             for (q, e) in pending.iter().enumerate() {
                 let quad = &e.quad;
                 for k in 0..4 {
-                    let lane = 4 * q + k;
+                    let lane = match pack_depth {
+                        true if e.write & (1 << k) != 0 => {
+                            next += 1;
+                            next - 1
+                        }
+                        true => continue,
+                        false => 4 * q + k,
+                    };
                     if quad.live & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
                         continue;
                     }
@@ -1073,6 +1395,11 @@ impl<'a> FragmentStage<'a> {
                 }
             }
             None => {
+                let pending: &mut [Entry<'p>] = match pack_depth {
+                    true => &mut packed[..],
+                    false => &mut slots[..],
+                };
+                let mut lanes = 0;
                 for (i, &p) in bin.iter().enumerate() {
                     let Some(&prim) = prims.get(p as usize) else {
                         continue;
@@ -1080,7 +1407,7 @@ impl<'a> FragmentStage<'a> {
                     self.prefetch_ahead(prims, bin, i);
                     prim.shape.quads_into(clip_to(prim, tile), quads);
                     for &quad in quads.iter() {
-                        let Some(e) = slots.get_mut(*n) else { break };
+                        let Some(e) = pending.get_mut(*n) else { break };
                         e.set(self.isa, prim, p, quad, 0);
                         if early {
                             self.early_rejects(fb, origin, prim, &mut e.quad);
@@ -1091,15 +1418,18 @@ impl<'a> FragmentStage<'a> {
                         if weights {
                             e.finish(self.isa);
                         }
-                        *n += 1;
-                        if *n == LANES / 4 {
-                            depth_pass(fb, &mut winner, slots)?;
-                            *n = 0;
+                        e.write = e.quad.live;
+                        let write = e.write;
+                        if let Some((count, spill)) = admit(pack_depth, n, &mut lanes, write) {
+                            depth_pass(fb, &mut winner, &pending[..count])?;
+                            if spill {
+                                pending.swap(0, count);
+                            }
                         }
                     }
                 }
                 if *n > 0 {
-                    depth_pass(fb, &mut winner, &slots[..*n])?;
+                    depth_pass(fb, &mut winner, &pending[..*n])?;
                     *n = 0;
                 }
             }
@@ -1107,15 +1437,28 @@ impl<'a> FragmentStage<'a> {
 
         // Pass 2: (primitive, quad, coverage, lanes to write) per winner.
         let mut color_pass = |fb: &mut Framebuffer, todo: &[Entry]| -> Result<(), ExecError> {
-            self.fill(batch, todo, &self.fills);
+            match pack_colors {
+                true => self.fill_packed(batch, todo, &self.fills, runs),
+                false => self.fill(batch, todo, &self.fills),
+            }
             self.run_shader(batch)?;
             // (lane, pixel index) of the fragments to write, in order.
             let mut writes = [(0usize, 0usize); LANES];
             let mut count = 0;
+            let mut next = 0;
             for (q, e) in todo.iter().enumerate() {
                 for k in 0..4 {
-                    let lane = 4 * q + k;
-                    if e.write & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
+                    if e.write & (1 << k) == 0 {
+                        continue;
+                    }
+                    let lane = match pack_colors {
+                        true => {
+                            next += 1;
+                            next - 1
+                        }
+                        false => 4 * q + k,
+                    };
+                    if batch.discarded & (1 << lane) != 0 {
                         continue;
                     }
                     let (x, y) = e.quad.pixel(k);
@@ -1145,6 +1488,11 @@ impl<'a> FragmentStage<'a> {
             }
             Ok(())
         };
+        let pending: &mut [Entry<'p>] = match pack_colors {
+            true => &mut packed[..],
+            false => &mut slots[..],
+        };
+        let mut used = 0;
         for ly in (0..h).step_by(2) {
             for lx in (0..w).step_by(2) {
                 // The quad's pixels (lane order) and their winners.
@@ -1172,20 +1520,21 @@ impl<'a> FragmentStage<'a> {
                         continue;
                     };
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
-                    let Some(e) = slots.get_mut(*n) else { break };
+                    let Some(e) = pending.get_mut(*n) else { break };
                     self.prefetch_attrs(prim);
                     e.set(self.isa, prim, p, (qx, qy, live), write);
                     e.finish(self.isa);
-                    *n += 1;
-                    if *n == LANES / 4 {
-                        color_pass(fb, slots)?;
-                        *n = 0;
+                    if let Some((count, spill)) = admit(pack_colors, n, &mut used, write) {
+                        color_pass(fb, &pending[..count])?;
+                        if spill {
+                            pending.swap(0, count);
+                        }
                     }
                 }
             }
         }
         if *n > 0 {
-            color_pass(fb, &slots[..*n])?;
+            color_pass(fb, &pending[..*n])?;
             *n = 0;
         }
         Ok(())
