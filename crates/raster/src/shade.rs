@@ -190,6 +190,21 @@ fn lanes_mask(lanes: usize) -> u32 {
     }
 }
 
+/// What the passes of [`FragmentStage::shade_deferred`] share in a tile.
+struct DeferredPass<'d> {
+    /// The depth-only slice.
+    depth: &'d dyn ShaderStage,
+    /// The tile's origin in the window.
+    origin: (u32, u32),
+    quick: Option<QuickOps>,
+    /// Whether the slice runs (else the pass only depth-tests).
+    run_slice: bool,
+    /// Whether the slice and the full shader run packed batches
+    /// ([`FragmentStage::fill_packed`]).
+    pack_depth: bool,
+    pack_colors: bool,
+}
+
 /// Takes the quad just set at `pending[*n]` (running the pixels
 /// `write`) into a batch being gathered, `*lanes` lanes of it used so
 /// far: a quad per 4 lanes, or with `packed` its pixels of `write` only
@@ -1253,6 +1268,169 @@ impl<'a> FragmentStage<'a> {
         self.shade_deferred_with(depth, fb, prims, bin, tile, scratch)
     }
 
+    /// The depth pass of [`FragmentStage::shade_deferred`] on the quads
+    /// `pending`: the slice (when it runs), then the depth test of every
+    /// fragment left, in order, keeping in `winner` each pixel's last.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn depth_pass(
+        &self,
+        pass: &DeferredPass,
+        fb: &mut Framebuffer,
+        batch: &mut Batch,
+        runs: &mut [Run; LANES],
+        winner: &mut [(u32, u8)],
+        pending: &[Entry],
+    ) -> Result<(), ExecError> {
+        match (pass.run_slice, pass.pack_depth) {
+            (true, true) => self.fill_packed(batch, pending, &self.depth_fills, runs),
+            (true, false) => self.fill(batch, pending, &self.depth_fills),
+            _ => {}
+        }
+        if pass.run_slice {
+            self.run_depth(pass.depth, batch)?;
+        } else {
+            batch.discarded = 0;
+        }
+        // Per quad: its lane of each pixel, the pixels still alive
+        // (covered, not discarded) and their window z.
+        let mut next = 0;
+        let mut alive_quads = [(0u8, [0f32; 4]); LANES];
+        for ((q, e), out) in pending.iter().enumerate().zip(alive_quads.iter_mut()) {
+            let quad = &e.quad;
+            let mut alive = 0u8;
+            let mut z = [0f32; 4];
+            for (k, z) in z.iter_mut().enumerate() {
+                let lane = match pass.pack_depth {
+                    true if e.write & (1 << k) != 0 => {
+                        next += 1;
+                        next - 1
+                    }
+                    true => continue,
+                    false => 4 * q + k,
+                };
+                if quad.live & (1 << k) != 0 && batch.discarded & (1 << lane) == 0 {
+                    alive |= 1 << k;
+                    *z = self.frag_z(batch, lane, quad, k);
+                }
+            }
+            *out = (alive, z);
+        }
+        let tested = pending.iter().zip(alive_quads.iter());
+        match &pass.quick {
+            Some(q) => {
+                // A quad's four pixels are distinct: tested together
+                // as one after the other.
+                let mut target = q.target(fb, pass.origin);
+                for (e, &(alive, z)) in tested {
+                    if alive == 0 {
+                        continue;
+                    }
+                    let quad = &e.quad;
+                    let zf = match self.layout.frag_depth {
+                        Some(_) => z.map(depth_to_fixed),
+                        None => quad.zf,
+                    };
+                    let (pass, index, _) = target.test_quad((quad.x, quad.y), alive, z, zf);
+                    for (k, &at) in index.iter().enumerate() {
+                        if pass & (1 << k) != 0 {
+                            if let Some(slot) = winner.get_mut(at) {
+                                *slot = (e.index, quad.live);
+                            }
+                        }
+                    }
+                }
+            }
+            None => {
+                for (e, &(alive, z)) in tested {
+                    let quad = &e.quad;
+                    for (k, &z) in z.iter().enumerate() {
+                        let (x, y) = quad.pixel(k);
+                        if alive & (1 << k) == 0 || x < 0 || y < 0 {
+                            continue;
+                        }
+                        let frag = Fragment {
+                            x: x as u32,
+                            y: y as u32,
+                            z,
+                            back_facing: e.prim.is_some_and(|p| p.back),
+                            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
+                        };
+                        let passed = fragment_ops::tests(fb, pass.origin, self.state, &frag);
+                        if let Some(slot) = passed.and_then(|i| winner.get_mut(i)) {
+                            *slot = (e.index, quad.live);
+                        }
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The colour pass of [`FragmentStage::shade_deferred`] on the quads
+    /// `todo`: the full shader, then the colours of the pixels each quad
+    /// won (`Entry::write`).
+    #[inline(always)]
+    fn color_pass(
+        &self,
+        pass: &DeferredPass,
+        fb: &mut Framebuffer,
+        batch: &mut Batch,
+        runs: &mut [Run; LANES],
+        todo: &[Entry],
+    ) -> Result<(), ExecError> {
+        match pass.pack_colors {
+            true => self.fill_packed(batch, todo, &self.fills, runs),
+            false => self.fill(batch, todo, &self.fills),
+        }
+        self.run_shader(batch)?;
+        // (lane, pixel index) of the fragments to write, in order.
+        let mut writes = [(0usize, 0usize); LANES];
+        let mut count = 0;
+        let mut next = 0;
+        for (q, e) in todo.iter().enumerate() {
+            for k in 0..4 {
+                if e.write & (1 << k) == 0 {
+                    continue;
+                }
+                let lane = match pass.pack_colors {
+                    true => {
+                        next += 1;
+                        next - 1
+                    }
+                    false => 4 * q + k,
+                };
+                if batch.discarded & (1 << lane) != 0 {
+                    continue;
+                }
+                let (x, y) = e.quad.pixel(k);
+                let lx = x as usize - pass.origin.0 as usize;
+                let ly = y as usize - pass.origin.1 as usize;
+                if let Some(slot) = writes.get_mut(count) {
+                    *slot = (lane, ly * fb.width as usize + lx);
+                    count += 1;
+                }
+            }
+        }
+        let writes = &writes[..count];
+        match pass.quick.and_then(|q| Some((q, q.color_output()?))) {
+            Some((q, o)) => {
+                let mut target = q.target(fb, pass.origin);
+                for &(lane, index) in writes {
+                    target.write(index, [0, 1, 2, 3].map(|j| get(batch, o + j, lane)));
+                }
+            }
+            None => {
+                let mut colors = [[0.0; 4]; MAX_DRAW_BUFFERS];
+                for &(lane, index) in writes {
+                    self.colors_into(batch, lane, &mut colors);
+                    fragment_ops::write_colors(fb, index, self.state, &colors);
+                }
+            }
+        }
+        Ok(())
+    }
+
     #[inline(always)]
     fn shade_deferred_with<'p>(
         &self,
@@ -1293,78 +1471,13 @@ impl<'a> FragmentStage<'a> {
         // to `LANES` quads per batch, without helper lanes.
         let pack_depth = run_slice && depth.lanes_independent();
         let pack_colors = self.shader.lanes_independent();
-        let mut depth_pass = |fb: &mut Framebuffer,
-                              winner: &mut Vec<(u32, u8)>,
-                              pending: &[Entry]|
-         -> Result<(), ExecError> {
-            match (run_slice, pack_depth) {
-                (true, true) => self.fill_packed(batch, pending, &self.depth_fills, runs),
-                (true, false) => self.fill(batch, pending, &self.depth_fills),
-                _ => {}
-            }
-            if run_slice {
-                self.run_depth(depth, batch)?;
-            } else {
-                batch.discarded = 0;
-            }
-            // The fragments to test, in order: (x, y, z, back, primitive,
-            // its quad's coverage).
-            let mut frags = [(0u32, 0u32, 0f32, false, 0u32, 0u8); LANES];
-            let mut count = 0;
-            let mut next = 0;
-            for (q, e) in pending.iter().enumerate() {
-                let quad = &e.quad;
-                for k in 0..4 {
-                    let lane = match pack_depth {
-                        true if e.write & (1 << k) != 0 => {
-                            next += 1;
-                            next - 1
-                        }
-                        true => continue,
-                        false => 4 * q + k,
-                    };
-                    if quad.live & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
-                        continue;
-                    }
-                    let (x, y) = quad.pixel(k);
-                    if x < 0 || y < 0 {
-                        continue;
-                    }
-                    let z = self.frag_z(batch, lane, quad, k);
-                    let back = e.prim.is_some_and(|p| p.back);
-                    if let Some(slot) = frags.get_mut(count) {
-                        *slot = (x as u32, y as u32, z, back, e.index, quad.live);
-                        count += 1;
-                    }
-                }
-            }
-            let frags = &frags[..count];
-            match &quick {
-                Some(q) => {
-                    let mut target = q.target(fb, origin);
-                    for &(x, y, z, _, p, live) in frags {
-                        if let Some(slot) = target.test(x, y, z).and_then(|i| winner.get_mut(i)) {
-                            *slot = (p, live);
-                        }
-                    }
-                }
-                None => {
-                    for &(x, y, z, back_facing, p, live) in frags {
-                        let frag = Fragment {
-                            x,
-                            y,
-                            z,
-                            back_facing,
-                            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
-                        };
-                        let passed = fragment_ops::tests(fb, origin, self.state, &frag);
-                        if let Some(slot) = passed.and_then(|i| winner.get_mut(i)) {
-                            *slot = (p, live);
-                        }
-                    }
-                }
-            }
-            Ok(())
+        let pass = DeferredPass {
+            depth,
+            origin,
+            quick,
+            run_slice,
+            pack_depth,
+            pack_colors,
         };
         // Nothing to run and the common per-fragment operations: each
         // quad is depth-tested as soon as it is covered (the order and the
@@ -1421,7 +1534,14 @@ impl<'a> FragmentStage<'a> {
                         e.write = e.quad.live;
                         let write = e.write;
                         if let Some((count, spill)) = admit(pack_depth, n, &mut lanes, write) {
-                            depth_pass(fb, &mut winner, &pending[..count])?;
+                            self.depth_pass(
+                                &pass,
+                                fb,
+                                batch,
+                                runs,
+                                &mut winner,
+                                &pending[..count],
+                            )?;
                             if spill {
                                 pending.swap(0, count);
                             }
@@ -1429,65 +1549,13 @@ impl<'a> FragmentStage<'a> {
                     }
                 }
                 if *n > 0 {
-                    depth_pass(fb, &mut winner, &pending[..*n])?;
+                    self.depth_pass(&pass, fb, batch, runs, &mut winner, &pending[..*n])?;
                     *n = 0;
                 }
             }
         }
 
         // Pass 2: (primitive, quad, coverage, lanes to write) per winner.
-        let mut color_pass = |fb: &mut Framebuffer, todo: &[Entry]| -> Result<(), ExecError> {
-            match pack_colors {
-                true => self.fill_packed(batch, todo, &self.fills, runs),
-                false => self.fill(batch, todo, &self.fills),
-            }
-            self.run_shader(batch)?;
-            // (lane, pixel index) of the fragments to write, in order.
-            let mut writes = [(0usize, 0usize); LANES];
-            let mut count = 0;
-            let mut next = 0;
-            for (q, e) in todo.iter().enumerate() {
-                for k in 0..4 {
-                    if e.write & (1 << k) == 0 {
-                        continue;
-                    }
-                    let lane = match pack_colors {
-                        true => {
-                            next += 1;
-                            next - 1
-                        }
-                        false => 4 * q + k,
-                    };
-                    if batch.discarded & (1 << lane) != 0 {
-                        continue;
-                    }
-                    let (x, y) = e.quad.pixel(k);
-                    let lx = x as usize - origin.0 as usize;
-                    let ly = y as usize - origin.1 as usize;
-                    if let Some(slot) = writes.get_mut(count) {
-                        *slot = (lane, ly * w + lx);
-                        count += 1;
-                    }
-                }
-            }
-            let writes = &writes[..count];
-            match quick.and_then(|q| Some((q, q.color_output()?))) {
-                Some((q, o)) => {
-                    let mut target = q.target(fb, origin);
-                    for &(lane, index) in writes {
-                        target.write(index, [0, 1, 2, 3].map(|j| get(batch, o + j, lane)));
-                    }
-                }
-                None => {
-                    let mut colors = [[0.0; 4]; MAX_DRAW_BUFFERS];
-                    for &(lane, index) in writes {
-                        self.colors_into(batch, lane, &mut colors);
-                        fragment_ops::write_colors(fb, index, self.state, &colors);
-                    }
-                }
-            }
-            Ok(())
-        };
         let pending: &mut [Entry<'p>] = match pack_colors {
             true => &mut packed[..],
             false => &mut slots[..],
@@ -1525,7 +1593,7 @@ impl<'a> FragmentStage<'a> {
                     e.set(self.isa, prim, p, (qx, qy, live), write);
                     e.finish(self.isa);
                     if let Some((count, spill)) = admit(pack_colors, n, &mut used, write) {
-                        color_pass(fb, &pending[..count])?;
+                        self.color_pass(&pass, fb, batch, runs, &pending[..count])?;
                         if spill {
                             pending.swap(0, count);
                         }
@@ -1534,7 +1602,7 @@ impl<'a> FragmentStage<'a> {
             }
         }
         if *n > 0 {
-            color_pass(fb, &pending[..*n])?;
+            self.color_pass(&pass, fb, batch, runs, &pending[..*n])?;
             *n = 0;
         }
         Ok(())
