@@ -1292,11 +1292,10 @@ impl<'a> FragmentStage<'a> {
         } else {
             batch.discarded = 0;
         }
-        // Per quad: its lane of each pixel, the pixels still alive
-        // (covered, not discarded) and their window z.
+        // Per quad: the pixels still alive (covered, not discarded) and
+        // their window z, then their depth tests.
         let mut next = 0;
-        let mut alive_quads = [(0u8, [0f32; 4]); LANES];
-        for ((q, e), out) in pending.iter().enumerate().zip(alive_quads.iter_mut()) {
+        let mut alive_z = |q: usize, e: &Entry| {
             let quad = &e.quad;
             let mut alive = 0u8;
             let mut z = [0f32; 4];
@@ -1314,15 +1313,15 @@ impl<'a> FragmentStage<'a> {
                     *z = self.frag_z(batch, lane, quad, k);
                 }
             }
-            *out = (alive, z);
-        }
-        let tested = pending.iter().zip(alive_quads.iter());
+            (alive, z)
+        };
         match &pass.quick {
             Some(q) => {
-                // A quad's four pixels are distinct: tested together
-                // as one after the other.
+                // A quad's four pixels are distinct: tested together as
+                // one after the other.
                 let mut target = q.target(fb, pass.origin);
-                for (e, &(alive, z)) in tested {
+                for (q, e) in pending.iter().enumerate() {
+                    let (alive, z) = alive_z(q, e);
                     if alive == 0 {
                         continue;
                     }
@@ -1342,7 +1341,8 @@ impl<'a> FragmentStage<'a> {
                 }
             }
             None => {
-                for (e, &(alive, z)) in tested {
+                for (q, e) in pending.iter().enumerate() {
+                    let (alive, z) = alive_z(q, e);
                     let quad = &e.quad;
                     for (k, &z) in z.iter().enumerate() {
                         let (x, y) = quad.pixel(k);
