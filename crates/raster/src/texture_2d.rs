@@ -274,7 +274,23 @@ fn sample_in<const SIMD: bool, const WIDE: bool>(
         let (base_f, q_f) = (base as f32, q as f32);
         let mut is_two = [false; LANES];
         let mut is_nearest = [false; LANES];
-        for l in 0..LANES {
+        #[cfg(target_arch = "x86_64")]
+        if WIDE {
+            // SAFETY: `WIDE` is only set in code compiled for AVX-512,
+            // which runs only on CPUs that have it.
+            let (t, n) = unsafe {
+                wide::mipmap_linear_levels(
+                    &lam,
+                    c,
+                    (base_i, q_i),
+                    (mag_nearest, min_nearest),
+                    &mut level,
+                    &mut f,
+                )
+            };
+            (two, nearest) = (t & mask, n);
+        }
+        for l in 0..if WIDE { 0 } else { LANES } {
             let lambda = lam[l];
             let mag = lambda.is_nan() || lambda <= c;
             let lb = base_f + lambda;
@@ -292,11 +308,13 @@ fn sample_in<const SIMD: bool, const WIDE: bool>(
             is_two[l] = !mag && !top;
             is_nearest[l] = if mag { mag_nearest } else { min_nearest };
         }
-        for l in 0..LANES {
-            two |= (is_two[l] as u32) << l;
-            nearest |= (is_nearest[l] as u32) << l;
+        if !WIDE {
+            for l in 0..LANES {
+                two |= (is_two[l] as u32) << l;
+                nearest |= (is_nearest[l] as u32) << l;
+            }
+            two &= mask;
         }
-        two &= mask;
     } else {
         let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, &req.lod);
         for lane in 0..LANES {

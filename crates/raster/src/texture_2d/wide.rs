@@ -82,9 +82,25 @@ pub(super) unsafe fn sample_unorm8(
         let s = _mm512_loadu_ps(st[0].as_ptr());
         let t = _mm512_loadu_ps(st[1].as_ptr());
         let near = nearest as __mmask16;
-        let mut first = filter_level(table, levels, d0, wraps, s, t, near, mask as __mmask16);
-        if let Some(d1) = d1 {
-            let second = filter_level(table, levels, d1, wraps, s, t, near, two as __mmask16);
+        // Both levels' reads first, then the sums (the sums wait on the
+        // gathers' latency: the second level's reads overlap it).
+        let c0 = corners(table, levels, d0, wraps, s, t, near, mask as __mmask16);
+        let c1 = match d1 {
+            Some(d1) => Some(corners(
+                table,
+                levels,
+                d1,
+                wraps,
+                s,
+                t,
+                near,
+                two as __mmask16,
+            )),
+            None => None,
+        };
+        let mut first = combine(&c0, near);
+        if let Some(c1) = &c1 {
+            let second = combine(c1, near);
             // `mix_levels` on the lanes in `two`.
             let fl = _mm512_loadu_ps(f.as_ptr());
             let one_minus = _mm512_sub_ps(_mm512_set1_ps(1.0), fl);
@@ -98,6 +114,47 @@ pub(super) unsafe fn sample_unorm8(
         }
     }
     true
+}
+
+/// Eq. 3.28/3.29 for every lane, as `sample_in` computes them for the
+/// *_MIPMAP_LINEAR filters: from λ (`lam`), the switch-over point `c`,
+/// the base and last levels and whether magnification and minification
+/// are NEAREST, each lane's two levels (`level`) and the weight of the
+/// second (`f`); returns the lanes that blend two levels and those
+/// filtered NEAREST.
+///
+/// # Safety
+/// The CPU must support AVX-512 F.
+#[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2,fma")]
+pub(super) unsafe fn mipmap_linear_levels(
+    lam: &[f32; LANES],
+    c: f32,
+    (base, q): (i32, i32),
+    (mag_nearest, min_nearest): (bool, bool),
+    level: &mut [[i32; LANES]; 2],
+    f: &mut [f32; LANES],
+) -> (u32, u32) {
+    // SAFETY: the CPU supports the features (the caller's contract); the
+    // loads and stores are of 16 consecutive elements of 16-element
+    // arrays.
+    unsafe {
+        let lambda = _mm512_loadu_ps(lam.as_ptr());
+        // λ NaN or ≤ c.
+        let mag = _mm512_cmp_ps_mask::<_CMP_NGT_UQ>(lambda, _mm512_set1_ps(c));
+        let lb = _mm512_add_ps(_mm512_set1_ps(base as f32), lambda);
+        let top = _mm512_cmp_ps_mask::<_CMP_GE_OQ>(lb, _mm512_set1_ps(q as f32));
+        let (bv, qv) = (_mm512_set1_epi32(base), _mm512_set1_epi32(q));
+        let d1 = _mm512_min_epi32(_mm512_max_epi32(floor_index(floor(lb)), bv), qv);
+        let l0 = _mm512_mask_mov_epi32(_mm512_mask_mov_epi32(d1, top, qv), mag, bv);
+        let l1 = _mm512_min_epi32(_mm512_add_epi32(d1, _mm512_set1_epi32(1)), qv);
+        _mm512_storeu_si512(level[0].as_mut_ptr().cast(), l0);
+        _mm512_storeu_si512(level[1].as_mut_ptr().cast(), l1);
+        _mm512_storeu_ps(f.as_mut_ptr(), _mm512_sub_ps(lambda, floor(lambda)));
+        let two = !mag & !top;
+        let pick = |on: bool| if on { 0xffff } else { 0 };
+        let nearest = (mag & pick(mag_nearest)) | (!mag & pick(min_nearest));
+        (u32::from(two), u32::from(nearest))
+    }
 }
 
 /// `floor(x)` per lane (the rounding instruction, see `floor_of`).
@@ -196,12 +253,19 @@ unsafe fn gather_pairs(texels: &[[u8; 4]], idx: __m512i) -> (__m512i, __m512i) {
     )
 }
 
-/// `filter_lanes` on level `d` for every lane (see the module
-/// documentation): RGBA, one register per component; only the lanes in
-/// `used` are meant (the others get some value).
+/// The four corners of every lane on one level (RGBA8 words) and their
+/// weights: the first half of `filter_lanes`.
+struct Corners {
+    raw: [__m512i; 4],
+    wgt: [__m512; 4],
+}
+
+/// The corners of `filter_lanes` on level `d` for every lane (see the
+/// module documentation); only the lanes in `used` are meant (the others
+/// get some value). With NEAREST on every lane, only corner 0 is read.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-unsafe fn filter_level(
+unsafe fn corners(
     table: &LevelTable,
     levels: &[crate::texture::Image],
     d: i32,
@@ -210,7 +274,7 @@ unsafe fn filter_level(
     t: __m512,
     nearest: __mmask16,
     used: __mmask16,
-) -> [__m512; 4] {
+) -> Corners {
     let texels = super::unorm8_level(levels, d);
     let sh = (d.wrapping_sub(table.base) as u32).min(31);
     let w = (table.width >> sh).max(1) as i32;
@@ -223,14 +287,20 @@ unsafe fn filter_level(
     let (r0, r1) = (_mm512_mullo_epi32(j0, wv), _mm512_mullo_epi32(j1, wv));
     let idx0 = _mm512_add_epi32(r0, i0);
     let idx2 = _mm512_add_epi32(r1, i0);
+    let one = _mm512_set1_ps(1.0);
+    let (a0, b0) = (_mm512_sub_ps(one, a), _mm512_sub_ps(one, b));
+    let wgt = [
+        _mm512_mul_ps(a0, b0),
+        _mm512_mul_ps(a, b0),
+        _mm512_mul_ps(a0, b),
+        _mm512_mul_ps(a, b),
+    ];
     if nearest == 0xffff {
-        // NEAREST on every lane: corner 0 alone.
-        let raw = gather(texels, idx0);
-        let mut out = [_mm512_setzero_ps(); 4];
-        for (c, o) in out.iter_mut().enumerate() {
-            *o = unorm8(byte(raw, c));
-        }
-        return out;
+        let raw0 = gather(texels, idx0);
+        return Corners {
+            raw: [raw0; 4],
+            wgt,
+        };
     }
     // Both texels of each row neighbours in memory on every lane used
     // (the others read some two texels of the level).
@@ -249,17 +319,24 @@ unsafe fn filter_level(
             gather(texels, _mm512_add_epi32(r1, i1)),
         ]
     };
-    let one = _mm512_set1_ps(1.0);
-    let (a0, b0) = (_mm512_sub_ps(one, a), _mm512_sub_ps(one, b));
-    let wgt = [
-        _mm512_mul_ps(a0, b0),
-        _mm512_mul_ps(a, b0),
-        _mm512_mul_ps(a0, b),
-        _mm512_mul_ps(a, b),
-    ];
+    Corners { raw, wgt }
+}
+
+/// The second half of `filter_lanes`: the bilinear sum of the corners,
+/// or corner 0 on the lanes in `nearest`; RGBA, one register per
+/// component.
+#[inline(always)]
+unsafe fn combine(corners: &Corners, nearest: __mmask16) -> [__m512; 4] {
+    let (raw, wgt) = (&corners.raw, &corners.wgt);
     // (Loops, not closures: a closure is compiled without the target
     // features, and the intrinsics in it would not be inlined.)
     let mut out = [_mm512_setzero_ps(); 4];
+    if nearest == 0xffff {
+        for (c, o) in out.iter_mut().enumerate() {
+            *o = unorm8(byte(raw[0], c));
+        }
+        return out;
+    }
     for (c, o) in out.iter_mut().enumerate() {
         let t0 = unorm8(byte(raw[0], c));
         // The sum starts at 0 in the portable code: 0 + x is x for every
