@@ -29,8 +29,14 @@
 //! rounding instruction, see [`floor_of`]), eight lanes at a time, with
 //! the portable code's operations in its order: the bytes k become k/255
 //! by a multiply and a correction by the exact residual (fused
-//! multiply-adds), correctly rounded like the division for every byte. A test compares every
-//! variant the CPU has with the general path on random lookups.
+//! multiply-adds), correctly rounded like the division for every byte.
+//! The AVX-512 variant also picks the *_MIPMAP_LINEAR levels in 512-bit
+//! registers and, for RGBA8 levels with REPEAT or CLAMP_TO_EDGE wrapping
+//! whose lanes read one level per level pass, filters, blends the two
+//! levels and selects the output there too (module `wide`), the two texels
+//! of each row read by one 64-bit gather when no lane is at a wrap edge.
+//! Tests compare every variant the CPU has with the general path on
+//! random lookups and on runs of nearby quads like the executor's.
 
 use crate::ex::{Lod, SampleRequest, LANES};
 use crate::texture::{
