@@ -85,6 +85,9 @@ pub(super) unsafe fn sample_unorm8(
         // Both levels' reads first, then the sums (the sums wait on the
         // gathers' latency: the second level's reads overlap it).
         let c0 = corners(table, levels, d0, wraps, s, t, near, mask as __mmask16);
+        // (Not `Option::map`: a closure is compiled without the target
+        // features, and the intrinsics in it would not be inlined.)
+        #[allow(clippy::manual_map)]
         let c1 = match d1 {
             Some(d1) => Some(corners(
                 table,
