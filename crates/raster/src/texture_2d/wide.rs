@@ -51,24 +51,17 @@ pub(super) unsafe fn sample_unorm8(
     {
         return false;
     }
-    // The one level of the lanes in `lanes` (not empty).
-    let uniform = |level: &[i32; LANES], lanes: u32| -> Option<i32> {
-        let d = level[lanes.trailing_zeros() as usize];
-        let differ = level
-            .iter()
-            .enumerate()
-            .any(|(l, &x)| lanes & (1 << l) != 0 && x != d);
-        (!differ).then_some(d)
-    };
     let (mask, two, nearest) = (mask & 0xffff, two & 0xffff, nearest & 0xffff);
     if mask == 0 {
         return false;
     }
-    let Some(d0) = uniform(&level[0], mask) else {
+    // SAFETY: the CPU supports the features (the caller's contract).
+    let Some(d0) = (unsafe { uniform(&level[0], mask) }) else {
         return false;
     };
     let d1 = if two != 0 {
-        match uniform(&level[1], two) {
+        // SAFETY: as above.
+        match unsafe { uniform(&level[1], two) } {
             Some(d) => Some(d),
             None => return false,
         }
@@ -158,6 +151,18 @@ pub(super) unsafe fn mipmap_linear_levels(
         let nearest = (mag & pick(mag_nearest)) | (!mag & pick(min_nearest));
         (u32::from(two), u32::from(nearest))
     }
+}
+
+/// The one level of the lanes in `lanes` (not empty), if they have one.
+/// (A function, not a closure: a closure is compiled without the target
+/// features and called out of line.)
+#[inline(always)]
+unsafe fn uniform(level: &[i32; LANES], lanes: u32) -> Option<i32> {
+    let d = level[(lanes.trailing_zeros() as usize).min(LANES - 1)];
+    // SAFETY: a load of the 16 elements of `level`.
+    let v = unsafe { _mm512_loadu_si512(level.as_ptr().cast()) };
+    let same = u32::from(_mm512_cmpeq_epi32_mask(v, _mm512_set1_epi32(d)));
+    (same & lanes == lanes).then_some(d)
 }
 
 /// `floor(x)` per lane (the rounding instruction, see `floor_of`).
