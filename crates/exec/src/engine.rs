@@ -1258,39 +1258,46 @@ unsafe fn texture(
     cur: LaneMask,
     textures: &dyn Textures,
 ) {
-    let r = |x: Reg| *regs.add(x as usize);
+    // SAFETY: the caller's contract: each register `t` names is in
+    // `regs` (a reference to one, read while no register is written).
+    let reg = |x: Reg| -> &Lanes { unsafe { &*regs.add(x as usize) } };
     let mut out = [[0f32; LANES]; 4];
     if cur != 0 {
-        let coord = t.coord.map(|c| floats(&r(c)));
-        let lod = match t.lod {
-            TexLod::Explicit(l) => Lod::Explicit(match l {
-                Some(l) => floats(&r(l)),
-                None => [0.0; LANES],
-            }),
-            TexLod::Implicit { bias } => {
-                let mut ddx = [[0f32; LANES]; 3];
-                let mut ddy = [[0f32; LANES]; 3];
-                for k in 0..(t.dims as usize).min(3) {
-                    (ddx[k], ddy[k]) = quad_diffs(&*regs.add(t.coord[k] as usize));
-                }
-                Lod::Derivatives {
-                    ddx,
-                    ddy,
-                    bias: match bias {
-                        Some(b) => floats(&r(b)),
-                        None => [0.0; LANES],
-                    },
-                }
-            }
-        };
-        let req = SampleRequest {
-            unit: r(t.unit),
+        // Built in place, then filled: the request is large, and building
+        // its parts apart and moving them in cost copies of each.
+        let mut req = SampleRequest {
+            unit: *reg(t.unit),
             target: t.target,
-            coord,
-            compare: t.compare.map(|c| floats(&r(c))),
-            lod,
+            coord: [[0.0; LANES]; 4],
+            compare: None,
+            lod: match t.lod {
+                TexLod::Explicit(_) => Lod::Explicit([0.0; LANES]),
+                TexLod::Implicit { .. } => Lod::Derivatives {
+                    ddx: [[0.0; LANES]; 3],
+                    ddy: [[0.0; LANES]; 3],
+                    bias: [0.0; LANES],
+                },
+            },
             mask: cur,
         };
+        for (c, &x) in req.coord.iter_mut().zip(&t.coord) {
+            *c = floats(reg(x));
+        }
+        if let Some(c) = t.compare {
+            req.compare = Some(floats(reg(c)));
+        }
+        match (&mut req.lod, t.lod) {
+            (Lod::Explicit(v), TexLod::Explicit(Some(l))) => *v = floats(reg(l)),
+            (Lod::Derivatives { ddx, ddy, bias }, TexLod::Implicit { bias: b }) => {
+                for k in 0..(t.dims as usize).min(3) {
+                    (ddx[k], ddy[k]) = quad_diffs(reg(t.coord[k]));
+                }
+                if let Some(b) = b {
+                    *bias = floats(reg(b));
+                }
+            }
+            _ => {}
+        }
         textures.sample(&req, &mut out);
     }
     for (k, o) in out.iter().enumerate() {

@@ -29,8 +29,14 @@
 //! rounding instruction, see [`floor_of`]), eight lanes at a time, with
 //! the portable code's operations in its order: the bytes k become k/255
 //! by a multiply and a correction by the exact residual (fused
-//! multiply-adds), correctly rounded like the division for every byte. A test compares every
-//! variant the CPU has with the general path on random lookups.
+//! multiply-adds), correctly rounded like the division for every byte.
+//! The AVX-512 variant also picks the *_MIPMAP_LINEAR levels in 512-bit
+//! registers and, for RGBA8 levels with REPEAT or CLAMP_TO_EDGE wrapping
+//! whose lanes read one level per level pass, filters, blends the two
+//! levels and selects the output there too (module `wide`), the two texels
+//! of each row read by one 64-bit gather when no lane is at a wrap edge.
+//! Tests compare every variant the CPU has with the general path on
+//! random lookups and on runs of nearby quads like the executor's.
 
 use crate::ex::{Lod, SampleRequest, LANES};
 use crate::texture::{
@@ -39,6 +45,9 @@ use crate::texture::{
 };
 use glsl::types::SamplerKind;
 use std::sync::Arc;
+
+#[cfg(target_arch = "x86_64")]
+mod wide;
 
 /// Levels a request can address on this path (absolute level numbers):
 /// more is a 2^31-texel texture, which takes the general path.
@@ -129,7 +138,7 @@ pub(crate) fn sample_with(
         Isa::Avx2 if isa.supported() => return unsafe { sample_avx2(units, req, out) },
         _ => {}
     }
-    sample_in::<false>(units, req, out)
+    sample_in::<false, false>(units, req, out)
 }
 
 /// [`sample_in`] compiled for AVX2 and FMA.
@@ -143,7 +152,7 @@ unsafe fn sample_avx2(
     req: &SampleRequest,
     out: &mut [[f32; LANES]; 4],
 ) -> bool {
-    sample_in::<true>(units, req, out)
+    sample_in::<true, false>(units, req, out)
 }
 
 /// [`sample_in`] compiled for AVX-512 (F, BW, DQ, VL) and FMA.
@@ -157,14 +166,15 @@ unsafe fn sample_avx512(
     req: &SampleRequest,
     out: &mut [[f32; LANES]; 4],
 ) -> bool {
-    sample_in::<true>(units, req, out)
+    sample_in::<true, true>(units, req, out)
 }
 
 /// The fast path proper, inlined into each instruction set's variant;
 /// `SIMD`: compiled for x86-64 with AVX2 and FMA, which some steps use
-/// directly.
+/// directly; `WIDE`: also with AVX-512, whose filtering of RGBA8 levels
+/// ([`wide`]) takes the requests it can.
 #[inline(always)]
-fn sample_in<const SIMD: bool>(
+fn sample_in<const SIMD: bool, const WIDE: bool>(
     units: &TextureUnits,
     req: &SampleRequest,
     out: &mut [[f32; LANES]; 4],
@@ -270,7 +280,23 @@ fn sample_in<const SIMD: bool>(
         let (base_f, q_f) = (base as f32, q as f32);
         let mut is_two = [false; LANES];
         let mut is_nearest = [false; LANES];
-        for l in 0..LANES {
+        #[cfg(target_arch = "x86_64")]
+        if WIDE {
+            // SAFETY: `WIDE` is only set in code compiled for AVX-512,
+            // which runs only on CPUs that have it.
+            let (t, n) = unsafe {
+                wide::mipmap_linear_levels(
+                    &lam,
+                    c,
+                    (base_i, q_i),
+                    (mag_nearest, min_nearest),
+                    &mut level,
+                    &mut f,
+                )
+            };
+            (two, nearest) = (t & mask, n);
+        }
+        for l in 0..if WIDE { 0 } else { LANES } {
             let lambda = lam[l];
             let mag = lambda.is_nan() || lambda <= c;
             let lb = base_f + lambda;
@@ -288,11 +314,13 @@ fn sample_in<const SIMD: bool>(
             is_two[l] = !mag && !top;
             is_nearest[l] = if mag { mag_nearest } else { min_nearest };
         }
-        for l in 0..LANES {
-            two |= (is_two[l] as u32) << l;
-            nearest |= (is_nearest[l] as u32) << l;
+        if !WIDE {
+            for l in 0..LANES {
+                two |= (is_two[l] as u32) << l;
+                nearest |= (is_nearest[l] as u32) << l;
+            }
+            two &= mask;
         }
-        two &= mask;
     } else {
         let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, &req.lod);
         for lane in 0..LANES {
@@ -318,6 +346,15 @@ fn sample_in<const SIMD: bool>(
         }
     }
 
+    #[cfg(target_arch = "x86_64")]
+    if WIDE {
+        let st = [&req.coord[0], &req.coord[1]];
+        // SAFETY: `WIDE` is only set in code compiled for AVX-512 and
+        // FMA, which runs only on CPUs that have them.
+        if unsafe { wide::sample_unorm8(tex, &table, &level, &f, st, nearest, two, mask, out) } {
+            return true;
+        }
+    }
     let st = [req.coord[0], req.coord[1]];
     let near = lanes(nearest);
     let mut first = [[0.0f32; LANES]; 4];
@@ -1389,6 +1426,104 @@ mod tests {
             }
         }
         assert!(checked > 10_000);
+    }
+
+    /// Requests like the executor's on a large RGBA8 texture (nearby
+    /// lanes, derivatives the same in each quad, often one level for the
+    /// whole request and no lane at a wrap edge: the AVX-512 variant's
+    /// `wide` filtering and its paired reads), against the general path.
+    #[test]
+    fn nearby_lanes_match_the_general_path() {
+        let mut seed = 0x0dd_u32;
+        let mut rnd = move || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (seed >> 8) as f32 / 16_777_216.0
+        };
+        let isas: Vec<Isa> = [Isa::Portable, Isa::Avx2, Isa::Avx512]
+            .into_iter()
+            .filter(|i| i.supported())
+            .collect();
+        let mut tex_seed = 0x77aa_u32;
+        let base = random_texture(64, 32, 0, &mut tex_seed);
+        let mut checked = 0;
+        for (min_filter, mag_filter) in [
+            (MinFilter::LinearMipmapLinear, MagFilter::Linear),
+            (MinFilter::NearestMipmapLinear, MagFilter::Nearest),
+            (MinFilter::Linear, MagFilter::Linear),
+            (MinFilter::LinearMipmapNearest, MagFilter::Nearest),
+            (MinFilter::Nearest, MagFilter::Nearest),
+        ] {
+            for wrap in [
+                [Wrap::Repeat, Wrap::Repeat],
+                [Wrap::ClampToEdge, Wrap::Repeat],
+                [Wrap::ClampToEdge, Wrap::ClampToEdge],
+            ] {
+                let mut tex = base.clone();
+                tex.min_filter = min_filter;
+                tex.mag_filter = mag_filter;
+                tex.wrap = [wrap[0], wrap[1], Wrap::Repeat];
+                let units = TextureUnits::new(vec![TextureUnit {
+                    tex_2d: Some(Arc::new(tex)),
+                    ..TextureUnit::default()
+                }]);
+                for round in 0..400 {
+                    // A 8×2-pixel run of four quads at a random place
+                    // (now and then across the texture's edge), scaled
+                    // from magnified to a few levels down.
+                    let d = 0.002 * (1.0 + 30.0 * rnd()) * if round % 5 == 0 { 8.0 } else { 1.0 };
+                    let (s0, t0) = if round % 7 == 0 {
+                        (-0.01, 0.99)
+                    } else {
+                        (rnd() * 3.0 - 1.0, rnd() * 3.0 - 1.0)
+                    };
+                    let (ds, dt) = (d, d * (0.5 + rnd()));
+                    let mut coord = [[0.0; LANES]; 4];
+                    let mut ddx = [[0.0; LANES]; 3];
+                    let mut ddy = [[0.0; LANES]; 3];
+                    for l in 0..LANES {
+                        let (x, y) = ((l % 2 + 2 * (l / 4)) as f32, ((l / 2) % 2) as f32);
+                        coord[0][l] = s0 + x * ds + 0.1 * y * dt;
+                        coord[1][l] = t0 + y * dt;
+                        ddx[0][l] = ds;
+                        ddy[0][l] = 0.1 * dt;
+                        ddy[1][l] = dt;
+                    }
+                    let req = SampleRequest {
+                        unit: [0; LANES],
+                        target: SamplerKind::Sampler2D,
+                        coord,
+                        compare: None,
+                        lod: Lod::Derivatives {
+                            ddx,
+                            ddy,
+                            bias: [0.0; LANES],
+                        },
+                        mask: [0xffff, 0xfff0, 0x0f0f][round % 3],
+                    };
+                    let slow = general(&units, &req);
+                    for &isa in &isas {
+                        let mut fast = [[9.0; LANES]; 4];
+                        assert!(sample_with(isa, &units, &req, &mut fast));
+                        for c in 0..4 {
+                            for l in 0..LANES {
+                                let want = if req.mask & (1 << l) != 0 {
+                                    slow[c][l]
+                                } else {
+                                    9.0
+                                };
+                                assert_eq!(
+                                    fast[c][l].to_bits(),
+                                    want.to_bits(),
+                                    "{isa:?} {min_filter:?} {wrap:?} round {round} lane {l} c {c}"
+                                );
+                                checked += 1;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert!(checked > 100_000);
     }
 
     #[test]
