@@ -651,7 +651,7 @@ fn impostors_with(
             if quad_ops {
                 "dFdx(h), dFdy(h)"
             } else {
-                "h * 0.5, h * h"
+                "h * 0.5, fract(gl_FragCoord.x * 0.01 + gl_FragCoord.y * 0.003)"
             }
         ),
     );

@@ -135,14 +135,12 @@ pub(crate) struct Scratch<'p> {
     n: usize,
     quads: Vec<(i64, i64, u8)>,
     /// The quads of a packed batch ([`FragmentStage::fill_packed`]): up
-    /// to one per lane, and where their lanes go.
+    /// to one per lane.
     packed: Box<[Entry<'p>; LANES]>,
-    runs: Box<[Run; LANES]>,
 }
 
-/// Where [`FragmentStage::fill_packed`] puts the pixels a quad runs.
-#[derive(Clone, Copy, Default)]
-pub(crate) struct Run {
+/// Where [`FragmentStage::write_inputs`] puts the pixels a quad runs.
+pub(crate) struct Place {
     /// The pixels, in increasing order (`order[..count]`).
     order: [u8; 4],
     count: usize,
@@ -427,7 +425,6 @@ impl<'a> FragmentStage<'a> {
             n: 0,
             quads: Vec::new(),
             packed: Default::default(),
-            runs: Default::default(),
         }
     }
 
@@ -807,89 +804,13 @@ impl<'a> FragmentStage<'a> {
         batch.helper = active & !live_mask;
         batch.discarded = 0;
 
-        let layout = self.layout;
-        let links = layout.links.len();
-        let sprite = self.state.point_sprite;
-        let lower_left = self.state.point_sprite_origin_lower_left;
-        let point_coords = |quad: &Quad, prim: &Prim| -> [(f32, f32); 4] {
-            std::array::from_fn(|k| {
-                let (x, y) = quad.pixel(k);
-                prim.shape.point_coord(x, y, lower_left)
-            })
-        };
-        for (q, e) in pending.iter().enumerate() {
-            let (Some(prim), quad) = (e.prim, &e.quad) else {
-                continue;
-            };
-            // The primitive's varyings: vertex j's link li at j·links + li.
-            let attrs = self.prim_attrs(prim);
-            let attr = |j: usize, li: usize| attrs.get(j * links + li).copied().unwrap_or(0.0);
-            let w = &quad.it.weights;
-            for l in plan {
-                let Some(lanes) = batch
-                    .inputs
-                    .get_mut(l.offset)
-                    .and_then(|c| c.get_mut(4 * q..4 * q + 4))
-                else {
-                    continue;
-                };
-                match (&prim.shape, l.kind) {
-                    (Shape::Point { .. }, FillKind::Replace(c)) if sprite => {
-                        let pc = point_coords(quad, prim);
-                        for (out, pc) in lanes.iter_mut().zip(pc) {
-                            *out = [pc.0, pc.1, 0.0, 1.0][c];
-                        }
-                    }
-                    (Shape::Point { .. }, _) | (_, FillKind::Constant) => {
-                        lanes.fill(attr(0, l.li));
-                    }
-                    (Shape::Triangle { .. }, _) => {
-                        let v = [0, 1, 2].map(|j| attr(j, l.li) as f64);
-                        for (k, out) in lanes.iter_mut().enumerate() {
-                            *out = (0.0 + w[0][k] * v[0] + w[1][k] * v[1] + w[2][k] * v[2]) as f32;
-                        }
-                    }
-                    (Shape::Line { .. }, _) => {
-                        let v = [0, 1].map(|j| attr(j, l.li) as f64);
-                        for (k, out) in lanes.iter_mut().enumerate() {
-                            *out = (0.0 + w[0][k] * v[0] + w[1][k] * v[1]) as f32;
-                        }
-                    }
-                }
-            }
-        }
-        if layout.frag_coord.is_none()
-            && layout.front_facing.is_none()
-            && layout.point_coord.is_none()
-        {
-            return;
-        }
-        for (q, e) in pending.iter().enumerate() {
-            let (Some(prim), quad) = (e.prim, &e.quad) else {
-                continue;
-            };
-            let pc = match prim.shape {
-                Shape::Point { .. } => point_coords(quad, prim),
-                _ => [(0.0, 0.0); 4],
-            };
-            for (k, pc) in pc.into_iter().enumerate() {
-                let lane = 4 * q + k;
-                let (x, y) = quad.pixel(k);
-                if let Some(o) = layout.frag_coord {
-                    set(batch, o, lane, x as f32 + 0.5);
-                    set(batch, o + 1, lane, y as f32 + 0.5);
-                    set(batch, o + 2, lane, quad.z[k] as f32);
-                    set(batch, o + 3, lane, quad.it.inv_w[k] as f32);
-                }
-                if let Some(o) = layout.front_facing {
-                    set(batch, o, lane, if prim.back { 0.0 } else { 1.0 });
-                }
-                if let Some(o) = layout.point_coord {
-                    set(batch, o, lane, pc.0);
-                    set(batch, o + 1, lane, pc.1);
-                }
-            }
-        }
+        // Quad q in lanes 4q..4q + 4, its pixels in order.
+        self.write_inputs(batch, pending, plan, |q, e| Place {
+            order: [0, 1, 2, 3],
+            count: 4,
+            first: 4 * q,
+            weights: e.quad.it.weights,
+        });
     }
 
     /// The lanes of `pending`'s quads in `e.write` (each quad's in pixel
@@ -899,45 +820,27 @@ impl<'a> FragmentStage<'a> {
     /// the inputs [`FragmentStage::fill`] gives its pixel (the same f64
     /// arithmetic), so its outputs are those of the quad-at-once path.
     /// Lanes past the last are zero.
-    fn fill_packed(
-        &self,
-        batch: &mut Batch,
-        pending: &[Entry],
-        plan: &[FillLink],
-        runs: &mut [Run; LANES],
-    ) {
+    fn fill_packed(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
         match self.isa {
             #[cfg(target_arch = "x86_64")]
             Isa::Avx2 | Isa::Avx512 => {
                 // SAFETY: `isa` is only Avx2 or Avx512 when the CPU has
                 // AVX2 (`simd::detect`).
-                unsafe { self.fill_packed_avx2(batch, pending, plan, runs) }
+                unsafe { self.fill_packed_avx2(batch, pending, plan) }
             }
-            _ => self.fill_packed_with(batch, pending, plan, runs),
+            _ => self.fill_packed_with(batch, pending, plan),
         }
     }
 
     /// [`FragmentStage::fill_packed`] compiled for AVX2.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    unsafe fn fill_packed_avx2(
-        &self,
-        batch: &mut Batch,
-        pending: &[Entry],
-        plan: &[FillLink],
-        runs: &mut [Run; LANES],
-    ) {
-        self.fill_packed_with(batch, pending, plan, runs)
+    unsafe fn fill_packed_avx2(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
+        self.fill_packed_with(batch, pending, plan)
     }
 
     #[inline(always)]
-    fn fill_packed_with(
-        &self,
-        batch: &mut Batch,
-        pending: &[Entry],
-        plan: &[FillLink],
-        runs: &mut [Run; LANES],
-    ) {
+    fn fill_packed_with(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
         let mut total = 0;
         for e in pending {
             total += (e.write & 0xf).count_ones() as usize;
@@ -949,42 +852,85 @@ impl<'a> FragmentStage<'a> {
         batch.active = lanes_mask(total);
         batch.helper = 0;
         batch.discarded = 0;
+        // Each quad's pixels to run from the lane after the previous
+        // quad's, the weights taken in their order.
+        let mut firsts = [0usize; LANES];
+        let mut first = 0;
+        for (f, e) in firsts.iter_mut().zip(pending) {
+            *f = first;
+            first += (e.write & 0xf).count_ones() as usize;
+        }
+        self.write_inputs(batch, pending, plan, |q, e| {
+            let run = e.write & 0xf;
+            let order = COMPRESS[run as usize];
+            let w = &e.quad.it.weights;
+            let mut weights = [[0.0; 4]; 3];
+            for (wj, w) in weights.iter_mut().zip(w) {
+                for (x, &k) in wj.iter_mut().zip(&order) {
+                    *x = w[k as usize & 3];
+                }
+            }
+            Place {
+                order,
+                count: run.count_ones() as usize,
+                first: firsts.get(q).copied().unwrap_or(LANES),
+                weights,
+            }
+        });
+        // Lanes past the last read zeros (as absent quads' do in `fill`),
+        // also where the last quad's unused values landed.
+        if total < LANES {
+            for l in plan {
+                if let Some(lanes) = batch.inputs.get_mut(l.offset) {
+                    for x in lanes.iter_mut().skip(total) {
+                        *x = 0.0;
+                    }
+                }
+            }
+        }
+    }
+
+    /// Writes the inputs `plan` lists, and gl_FragCoord, gl_FrontFacing
+    /// and gl_PointCoord where the stage reads them, for the pixels of
+    /// each quad of `pending` that `place` puts in lanes: values
+    /// interpolated with each pixel's weights in f64 (`0 + w0·v0 + w1·v1 +
+    /// w2·v2` for triangles, `0 + w0·v0 + w1·v1` for lines), vertex 0's
+    /// for points and flat-shaded colours. A quad's four values are stored
+    /// from its first lane on: those of pixels it does not run land where
+    /// the next quad's go (quads are placed in increasing lane order) or
+    /// past the last lane, for the caller to clear.
+    #[inline(always)]
+    fn write_inputs(
+        &self,
+        batch: &mut Batch,
+        pending: &[Entry],
+        plan: &[FillLink],
+        place: impl Fn(usize, &Entry) -> Place,
+    ) {
         let layout = self.layout;
         let links = layout.links.len();
         let sprite = self.state.point_sprite;
         let lower_left = self.state.point_sprite_origin_lower_left;
-        let mut first = 0;
-        for (r, e) in runs.iter_mut().zip(pending) {
-            let run = e.write & 0xf;
-            r.order = COMPRESS[run as usize];
-            r.count = run.count_ones() as usize;
-            r.first = first;
-            for (wj, w) in r.weights.iter_mut().zip(&e.quad.it.weights) {
-                for (x, &k) in wj.iter_mut().zip(&r.order) {
-                    *x = w[k as usize & 3];
-                }
-            }
-            first += r.count;
-        }
-        let quads = pending.iter().zip(runs.iter());
-        let point_coords = |quad: &Quad, prim: &Prim| -> [(f32, f32); 4] {
-            std::array::from_fn(|k| {
-                let (x, y) = quad.pixel(k);
+        let point_coords = |quad: &Quad, prim: &Prim, order: [u8; 4]| -> [(f32, f32); 4] {
+            order.map(|k| {
+                let (x, y) = quad.pixel(k as usize & 3);
                 prim.shape.point_coord(x, y, lower_left)
             })
         };
-        // Each quad's values as `fill` computes them (the same f64
-        // arithmetic per pixel), in the order of its pixels to run, stored
-        // from its first lane on (the values of pixels not run land where
-        // the next quad's go, or past the last lane, where zeros are put
-        // back: lanes past the last read zeros, as absent quads' do in
-        // `fill`).
-        for (e, r) in quads.clone() {
-            let (Some(prim), quad, order, first, w) =
-                (e.prim, &e.quad, r.order, r.first, &r.weights)
-            else {
+        let pixel_inputs = layout.frag_coord.is_some()
+            || layout.front_facing.is_some()
+            || layout.point_coord.is_some();
+        for (q, e) in pending.iter().enumerate() {
+            let (Some(prim), quad) = (e.prim, &e.quad) else {
                 continue;
             };
+            let Place {
+                order,
+                count,
+                first,
+                weights: w,
+            } = place(q, e);
+            // The primitive's varyings: vertex j's link li at j·links + li.
             let attrs = self.prim_attrs(prim);
             let attr = |j: usize, li: usize| attrs.get(j * links + li).copied().unwrap_or(0.0);
             for l in plan {
@@ -993,8 +939,7 @@ impl<'a> FragmentStage<'a> {
                 };
                 let values: [f32; 4] = match (&prim.shape, l.kind) {
                     (Shape::Point { .. }, FillKind::Replace(c)) if sprite => {
-                        let pc = point_coords(quad, prim);
-                        order.map(|k| [pc[k as usize & 3].0, pc[k as usize & 3].1, 0.0, 1.0][c])
+                        point_coords(quad, prim, order).map(|pc| [pc.0, pc.1, 0.0, 1.0][c])
                     }
                     (Shape::Point { .. }, _) | (_, FillKind::Constant) => [attr(0, l.li); 4],
                     (Shape::Triangle { .. }, _) => {
@@ -1017,33 +962,14 @@ impl<'a> FragmentStage<'a> {
                     }
                 }
             }
-        }
-        if total < LANES {
-            for l in plan {
-                if let Some(lanes) = batch.inputs.get_mut(l.offset) {
-                    for x in lanes.iter_mut().skip(total) {
-                        *x = 0.0;
-                    }
-                }
-            }
-        }
-        if layout.frag_coord.is_none()
-            && layout.front_facing.is_none()
-            && layout.point_coord.is_none()
-        {
-            return;
-        }
-        for (e, r) in quads {
-            let (Some(prim), quad, order, count, first) =
-                (e.prim, &e.quad, r.order, r.count, r.first)
-            else {
+            if !pixel_inputs {
                 continue;
-            };
+            }
             let pc = match prim.shape {
-                Shape::Point { .. } => point_coords(quad, prim),
+                Shape::Point { .. } => point_coords(quad, prim, order),
                 _ => [(0.0, 0.0); 4],
             };
-            for (lane, k) in (first..total).zip(order).take(count) {
+            for ((lane, k), pc) in (first..LANES).zip(order).zip(pc).take(count) {
                 let k = k as usize & 3;
                 let (x, y) = quad.pixel(k);
                 if let Some(o) = layout.frag_coord {
@@ -1056,8 +982,8 @@ impl<'a> FragmentStage<'a> {
                     set(batch, o, lane, if prim.back { 0.0 } else { 1.0 });
                 }
                 if let Some(o) = layout.point_coord {
-                    set(batch, o, lane, pc[k].0);
-                    set(batch, o + 1, lane, pc[k].1);
+                    set(batch, o, lane, pc.0);
+                    set(batch, o + 1, lane, pc.1);
                 }
             }
         }
@@ -1278,12 +1204,11 @@ impl<'a> FragmentStage<'a> {
         pass: &DeferredPass,
         fb: &mut Framebuffer,
         batch: &mut Batch,
-        runs: &mut [Run; LANES],
         winner: &mut [(u32, u8)],
         pending: &[Entry],
     ) -> Result<(), ExecError> {
         match (pass.run_slice, pass.pack_depth) {
-            (true, true) => self.fill_packed(batch, pending, &self.depth_fills, runs),
+            (true, true) => self.fill_packed(batch, pending, &self.depth_fills),
             (true, false) => self.fill(batch, pending, &self.depth_fills),
             _ => {}
         }
@@ -1376,11 +1301,10 @@ impl<'a> FragmentStage<'a> {
         pass: &DeferredPass,
         fb: &mut Framebuffer,
         batch: &mut Batch,
-        runs: &mut [Run; LANES],
         todo: &[Entry],
     ) -> Result<(), ExecError> {
         match pass.pack_colors {
-            true => self.fill_packed(batch, todo, &self.fills, runs),
+            true => self.fill_packed(batch, todo, &self.fills),
             false => self.fill(batch, todo, &self.fills),
         }
         self.run_shader(batch)?;
@@ -1449,7 +1373,6 @@ impl<'a> FragmentStage<'a> {
             n,
             quads,
             packed,
-            runs,
         } = scratch;
         *n = 0;
         // Per pixel: (winning primitive, its quad's coverage).
@@ -1534,14 +1457,7 @@ impl<'a> FragmentStage<'a> {
                         e.write = e.quad.live;
                         let write = e.write;
                         if let Some((count, spill)) = admit(pack_depth, n, &mut lanes, write) {
-                            self.depth_pass(
-                                &pass,
-                                fb,
-                                batch,
-                                runs,
-                                &mut winner,
-                                &pending[..count],
-                            )?;
+                            self.depth_pass(&pass, fb, batch, &mut winner, &pending[..count])?;
                             if spill {
                                 pending.swap(0, count);
                             }
@@ -1549,7 +1465,7 @@ impl<'a> FragmentStage<'a> {
                     }
                 }
                 if *n > 0 {
-                    self.depth_pass(&pass, fb, batch, runs, &mut winner, &pending[..*n])?;
+                    self.depth_pass(&pass, fb, batch, &mut winner, &pending[..*n])?;
                     *n = 0;
                 }
             }
@@ -1593,7 +1509,7 @@ impl<'a> FragmentStage<'a> {
                     e.set(self.isa, prim, p, (qx, qy, live), write);
                     e.finish(self.isa);
                     if let Some((count, spill)) = admit(pack_colors, n, &mut used, write) {
-                        self.color_pass(&pass, fb, batch, runs, &pending[..count])?;
+                        self.color_pass(&pass, fb, batch, &pending[..count])?;
                         if spill {
                             pending.swap(0, count);
                         }
@@ -1602,7 +1518,7 @@ impl<'a> FragmentStage<'a> {
             }
         }
         if *n > 0 {
-            self.color_pass(&pass, fb, batch, runs, &pending[..*n])?;
+            self.color_pass(&pass, fb, batch, &pending[..*n])?;
             *n = 0;
         }
         Ok(())
