@@ -419,9 +419,23 @@ impl QuickTarget<'_> {
     #[inline(always)]
     pub fn test_quad(
         &mut self,
-        (x, y): (i64, i64),
+        at: (i64, i64),
         lanes: u8,
         z: [f32; 4],
+        zf: [u32; 4],
+    ) -> (u8, [usize; 4], bool) {
+        self.test_quad_with(at, lanes, || z, zf)
+    }
+
+    /// [`QuickTarget::test_quad`] with the window z computed by `z` only
+    /// when the lanes go one by one (a quad inside the target needs only
+    /// `zf`).
+    #[inline(always)]
+    pub fn test_quad_with(
+        &mut self,
+        (x, y): (i64, i64),
+        lanes: u8,
+        z: impl FnOnce() -> [f32; 4],
         zf: [u32; 4],
     ) -> (u8, [usize; 4], bool) {
         let (lx, ly) = (x - self.origin.0 as i64, y - self.origin.1 as i64);
@@ -441,12 +455,12 @@ impl QuickTarget<'_> {
                 let stored = index.map(|i| d[i]);
                 pass &= depth_pass_mask(*func, zf, stored);
                 if self.depth_write {
+                    // Every pixel stored, the passing ones' new depth
+                    // selected without branches (coverage patterns do not
+                    // predict).
                     for k in 0..4 {
-                        d[index[k]] = if pass & (1 << k) != 0 {
-                            zf[k]
-                        } else {
-                            stored[k]
-                        };
+                        let m = lane_mask32(pass, k);
+                        d[index[k]] = (zf[k] & m) | (stored[k] & !m);
                     }
                 }
             }
@@ -455,6 +469,7 @@ impl QuickTarget<'_> {
         }
         let mut pass = 0u8;
         let mut index = [0usize; 4];
+        let z = z();
         for k in 0..4 {
             let (px, py) = (x + (k as i64 & 1), y + (k as i64 >> 1));
             if lanes & (1 << k) == 0 || px < 0 || py < 0 {
@@ -477,10 +492,13 @@ impl QuickTarget<'_> {
             return;
         };
         if inside && index[3] < v.len() {
-            // In bounds: index[3] is the largest.
+            // In bounds: index[3] is the largest. Every pixel stored, the
+            // passing ones' colour selected without branches (coverage
+            // patterns do not predict).
             for k in 0..4 {
-                let old = v[index[k]];
-                v[index[k]] = if pass & (1 << k) != 0 { c[k] } else { old };
+                let m = lane_mask32(pass, k);
+                let old = u32::from_ne_bytes(v[index[k]]);
+                v[index[k]] = ((u32::from_ne_bytes(c[k]) & m) | (old & !m)).to_ne_bytes();
             }
             return;
         }
@@ -534,6 +552,12 @@ impl QuickTarget<'_> {
             }
         };
     }
+}
+
+/// All ones when bit `k` of `pass` is set, else zero.
+#[inline(always)]
+fn lane_mask32(pass: u8, k: usize) -> u32 {
+    0u32.wrapping_sub(u32::from((pass >> k) & 1))
 }
 
 /// The lanes `k` where `func.test(zf[k], stored[k])`, the comparison

@@ -82,6 +82,20 @@ impl Quad {
         self.zf = fragment_ops::depth_to_fixed4(self.z);
     }
 
+    /// [`Quad::set`] with the interpolation inlined into the caller
+    /// ([`Shape::interp_quad_z_inline`]): the same values.
+    #[inline(always)]
+    fn set_inline(&mut self, prim: &Prim, qx: i64, qy: i64, mask: u8) {
+        self.x = qx;
+        self.y = qy;
+        self.live = mask;
+        prim.shape.interp_quad_z_inline(qx, qy, &mut self.it);
+        for (z, &iz) in self.z.iter_mut().zip(&self.it.z) {
+            *z = clamp01(iz + prim.z_offset);
+        }
+        self.zf = fragment_ops::depth_to_fixed4(self.z);
+    }
+
     /// The interpolation weights and 1/w after [`Quad::set`] (left out
     /// for quads that early depth rejection drops entirely).
     #[inline(always)]
@@ -122,6 +136,24 @@ impl<'p> Entry<'p> {
     fn finish(&mut self, isa: Isa) {
         if let Some(prim) = self.prim {
             self.quad.finish(isa, prim);
+        }
+    }
+
+    /// [`Entry::set`] with [`Quad::set_inline`].
+    #[inline(always)]
+    fn set_inline(&mut self, prim: &'p Prim, index: u32, (qx, qy, mask): (i64, i64, u8)) {
+        self.prim = Some(prim);
+        self.index = index;
+        self.write = 0;
+        self.quad.set_inline(prim, qx, qy, mask);
+    }
+
+    /// [`Entry::finish`] inlined into the caller
+    /// ([`Shape::interp_quad_finish_inline`]).
+    #[inline(always)]
+    fn finish_inline(&mut self) {
+        if let Some(prim) = self.prim {
+            prim.shape.interp_quad_finish_inline(&mut self.quad.it);
         }
     }
 }
@@ -411,13 +443,15 @@ impl<'a> FragmentStage<'a> {
                 if lanes == 0 {
                     continue;
                 }
-                let z = std::array::from_fn(|k| self.frag_z(batch, 4 * q + k, quad, k));
-                // Without gl_FragDepth, z is the quad's (in [0, 1]).
+                let z = || std::array::from_fn(|k| self.frag_z(batch, 4 * q + k, quad, k));
+                // Without gl_FragDepth, z is the quad's (in [0, 1]), its
+                // fixed-point depths known (and z needed only when the
+                // quad's lanes are tested one by one).
                 let zf = match self.layout.frag_depth {
-                    Some(_) => z.map(depth_to_fixed),
+                    Some(_) => z().map(depth_to_fixed),
                     None => quad.zf,
                 };
-                let (pass, index, inside) = target.test_quad((quad.x, quad.y), lanes, z, zf);
+                let (pass, index, inside) = target.test_quad_with((quad.x, quad.y), lanes, z, zf);
                 match rgba.as_ref().and_then(|c| c.get(4 * q..4 * q + 4)) {
                     Some(&[c0, c1, c2, c3]) => {
                         target.write_rgba8_quad(pass, index, inside, [c0, c1, c2, c3])
@@ -553,14 +587,15 @@ impl<'a> FragmentStage<'a> {
             prim.shape.quads_into(clip_to(prim, tile), quads);
             for &quad in quads.iter() {
                 let Some(e) = slots.get_mut(*n) else { break };
-                e.set(self.isa, prim, p, quad, 0);
+                // Inlined: this loop is compiled per instruction set.
+                e.set_inline(prim, p, quad);
                 if self.early {
                     self.early_rejects(fb, origin, prim, &mut e.quad);
                 }
                 if e.quad.live == 0 {
                     continue;
                 }
-                e.finish(self.isa);
+                e.finish_inline();
                 *n += 1;
                 if *n == LANES / 4 {
                     self.flush_batched(fb, origin, batch, slots, quick)?;
