@@ -140,12 +140,29 @@ impl OsContext {
             w
         };
         let fb = self.gl.default_framebuffer();
-        let pixels = fb.read_pixels_u8(0, 0, 0, w as u32, h as u32);
         // SAFETY: OSMesaMakeCurrent's contract: `buffer` holds at least
         // row_length * height pixels of the format and type given there
         // (row_length >= width), and stays valid while the context uses it.
         let out =
             unsafe { std::slice::from_raw_parts_mut(self.buffer as *mut u8, row_px * h * px) };
+        // RGBA bytes from an RGBA8 framebuffer of the buffer's size (the
+        // usual case): whole rows copied, the bytes `encode_pixel` writes
+        // pixel by pixel.
+        if let (OSMESA_RGBA, GL_UNSIGNED_BYTE, Some(raster::ColorBuffer::Rgba8(color))) =
+            (self.format, self.ty, fb.color.first())
+        {
+            if (fb.width as usize, fb.height as usize) == (w, h) && color.len() >= w * h {
+                for (y, src) in color.chunks_exact(w).take(h).enumerate() {
+                    let dst_row = if self.y_up { y } else { h - 1 - y };
+                    let at = dst_row * row_px * px;
+                    if let Some(dst) = out.get_mut(at..at + w * px) {
+                        dst.copy_from_slice(src.as_flattened());
+                    }
+                }
+                return;
+            }
+        }
+        let pixels = fb.read_pixels_u8(0, 0, 0, w as u32, h as u32);
         for y in 0..h {
             let dst_row = if self.y_up { y } else { h - 1 - y };
             for x in 0..w {
