@@ -202,6 +202,7 @@ pub(crate) struct FillLink {
 /// fetches varyings and set-up.
 const ATTRS_AHEAD: usize = 6;
 const PRIM_AHEAD: usize = 16;
+const SLOT_AHEAD: usize = 2 * PRIM_AHEAD;
 
 /// No primitive (in the per-pixel winner table of a deferred tile).
 const NO_PRIM: u32 = u32::MAX;
@@ -315,9 +316,18 @@ impl<'a> FragmentStage<'a> {
     /// need: the varyings of the one [`ATTRS_AHEAD`] later, the set-up of
     /// the one [`PRIM_AHEAD`] later (far enough for a memory access when
     /// primitives cover a pixel or two: a tile's primitives lie all over
-    /// the draw's). Only a hint: no effect on results.
+    /// the draw's), and the `prims` entry (the pointer to the set-up) of
+    /// the one [`SLOT_AHEAD`] later, which is read to find that set-up
+    /// (with many small primitives the pointer array does not stay in the
+    /// cache either). Only a hint: no effect on results.
     #[inline(always)]
     fn prefetch_ahead(&self, prims: &[&Prim], bin: &[u32], i: usize) {
+        if let Some(slot) = bin
+            .get(i + SLOT_AHEAD)
+            .and_then(|&p| prims.get(p as usize..p as usize + 1))
+        {
+            prefetch(slot);
+        }
         let at = |k: usize| bin.get(i + k).and_then(|&p| prims.get(p as usize));
         if let Some(&next) = at(ATTRS_AHEAD) {
             self.prefetch_attrs(next);
