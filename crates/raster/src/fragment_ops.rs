@@ -457,10 +457,18 @@ impl QuickTarget<'_> {
                 if self.depth_write {
                     // Every pixel stored, the passing ones' new depth
                     // selected without branches (coverage patterns do not
-                    // predict).
-                    for k in 0..4 {
-                        let m = lane_mask32(pass, k);
-                        d[index[k]] = (zf[k] & m) | (stored[k] & !m);
+                    // predict): a row's two pixels at once.
+                    let zf = zf.map(u32::to_ne_bytes);
+                    let stored = stored.map(u32::to_ne_bytes);
+                    for (r, &at) in [index[0], index[2]].iter().enumerate() {
+                        if let Some([d0, d1]) = d.get_mut(at..at + 2) {
+                            let [n0, n1] = blend_pair(
+                                [stored[2 * r], stored[2 * r + 1]],
+                                [zf[2 * r], zf[2 * r + 1]],
+                                pass >> (2 * r),
+                            );
+                            [*d0, *d1] = [u32::from_ne_bytes(n0), u32::from_ne_bytes(n1)];
+                        }
                     }
                 }
             }
@@ -485,20 +493,23 @@ impl QuickTarget<'_> {
 
     /// [`QuickTarget::write_rgba8`] of `c[k]` at `index[k]` for the lanes
     /// `pass`, after [`QuickTarget::test_quad`] found the quad inside
-    /// (`inside`; else one lane at a time).
+    /// (`inside`: then `index` holds two rows of two adjacent pixels, as
+    /// `test_quad` returns it; else one lane at a time).
     #[inline(always)]
     pub fn write_rgba8_quad(&mut self, pass: u8, index: [usize; 4], inside: bool, c: [[u8; 4]; 4]) {
         let Some((v, _)) = &mut self.color else {
             return;
         };
         if inside && index[3] < v.len() {
-            // In bounds: index[3] is the largest. Every pixel stored, the
-            // passing ones' colour selected without branches (coverage
-            // patterns do not predict).
-            for k in 0..4 {
-                let m = lane_mask32(pass, k);
-                let old = u32::from_ne_bytes(v[index[k]]);
-                v[index[k]] = ((u32::from_ne_bytes(c[k]) & m) | (old & !m)).to_ne_bytes();
+            // In bounds: index[3] is the largest, and the quad's rows are
+            // (index[0], index[0] + 1) and (index[2], index[2] + 1). Every
+            // pixel stored, the passing ones' colour selected without
+            // branches (coverage patterns do not predict): a row's two
+            // pixels at once.
+            for (r, &at) in [index[0], index[2]].iter().enumerate() {
+                if let Some([p0, p1]) = v.get_mut(at..at + 2) {
+                    [*p0, *p1] = blend_pair([*p0, *p1], [c[2 * r], c[2 * r + 1]], pass >> (2 * r));
+                }
             }
             return;
         }
@@ -554,10 +565,20 @@ impl QuickTarget<'_> {
     }
 }
 
-/// All ones when bit `k` of `pass` is set, else zero.
+/// Two adjacent 4-byte pixels: `new[k]` where bit `k` of `bits` is set,
+/// else `old[k]`, selected with one 64-bit mask (no branch, which the
+/// compiler makes of a per-pixel select when it can sink the load of
+/// `old` into it).
 #[inline(always)]
-fn lane_mask32(pass: u8, k: usize) -> u32 {
-    0u32.wrapping_sub(u32::from((pass >> k) & 1))
+fn blend_pair(old: [[u8; 4]; 2], new: [[u8; 4]; 2], bits: u8) -> [[u8; 4]; 2] {
+    let wide = |p: [[u8; 4]; 2]| {
+        let [[a, b, c, d], [e, f, g, h]] = p;
+        u64::from_ne_bytes([a, b, c, d, e, f, g, h])
+    };
+    let lane = |k: u8| 0u32.wrapping_sub(u32::from((bits >> k) & 1)).to_ne_bytes();
+    let m = wide([lane(0), lane(1)]);
+    let [a, b, c, d, e, f, g, h] = ((wide(new) & m) | (wide(old) & !m)).to_ne_bytes();
+    [[a, b, c, d], [e, f, g, h]]
 }
 
 /// The lanes `k` where `func.test(zf[k], stored[k])`, the comparison
