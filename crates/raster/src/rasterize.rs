@@ -587,6 +587,13 @@ fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i
             let g = a[k] * x0 + b[k] * qy + c[k];
             offset[k].map(|o| g + o)
         });
+        // The row's quads are written in place without a branch on their
+        // coverage (which does not predict at a triangle's edges): each
+        // is stored at `n`, which moves past it only when it covers a
+        // pixel; the slots are made first and the unused ones dropped.
+        let start = out.len();
+        out.resize(start + ((r.2 - x0 + 1) / 2) as usize, (0, 0, 0));
+        let mut n = start;
         let mut qx = x0;
         while qx < r.2 {
             let cols =
@@ -595,19 +602,24 @@ fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i
             let negative: [u8; 3] =
                 std::array::from_fn(|k| (0..4).fold(0u8, |m, i| m | (u8::from(v[k][i] < 0) << i)));
             let mask = !(negative[0] | negative[1] | negative[2]) & rows & cols;
+            // Negative on the whole quad: nothing covered here or further
+            // right.
             let ends = (0..3).any(|k| decreasing & (1 << k) != 0 && negative[k] == 0xf);
             for (vk, &s) in v.iter_mut().zip(&step) {
                 for x in vk.iter_mut() {
                     *x += s;
                 }
             }
-            if mask != 0 {
-                out.push((qx, qy, mask));
-            } else if ends {
+            if ends {
                 break;
             }
+            if let Some(slot) = out.get_mut(n) {
+                *slot = (qx, qy, mask);
+            }
+            n += usize::from(mask != 0);
             qx += 2;
         }
+        out.truncate(n);
         qy += 2;
     }
 }
