@@ -997,6 +997,71 @@ mod tests {
         }
     }
 
+    /// `test_quad_with` and `write_rgba8_quad` (whole quads blended row by
+    /// row) against the per-fragment `test` and `write_rgba8`, quads
+    /// inside and across the tile's edges, random coverage and depths.
+    #[test]
+    fn quad_tests_and_writes_match_the_fragment_ones() {
+        use crate::state::Rect;
+        let mut seed = 97u32;
+        let mut next = move || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed >> 8
+        };
+        let mut inside = 0;
+        for (i, depth_test) in [
+            None,
+            Some(CompareFunc::Less),
+            Some(CompareFunc::GreaterEqual),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            for depth_mask in [true, false] {
+                let state = PipelineState {
+                    depth_test,
+                    depth_mask,
+                    scissor: (i == 2).then(|| Rect::new(5, 3, 9, 7)),
+                    ..PipelineState::default()
+                };
+                let origin = (4, 2);
+                let mut want = Framebuffer::new(12, 10, ColorFormat::Rgba8, true, false);
+                want.clear_color(&[0], [0.2, 0.4, 0.6, 0.8], [true; 4], None);
+                want.clear_depth(0.5, true, None);
+                let mut got = want.clone();
+                let ops = QuickOps::new(&got, &state, &[(0, 0)]).expect("qualifies");
+                for _ in 0..3000 {
+                    let (x, y) = ((next() % 18) as i64 & !1, (next() % 14) as i64 & !1);
+                    let lanes = (next() % 16) as u8;
+                    let z: [f32; 4] = std::array::from_fn(|_| {
+                        [0.25, 0.5, 0.75, next() as f32 / 16_777_216.0][next() as usize % 4]
+                    });
+                    let zf = z.map(depth_to_fixed);
+                    let c: [[u8; 4]; 4] = std::array::from_fn(|_| [0; 4].map(|_| next() as u8));
+                    let mut w = ops.target(&mut want, origin);
+                    let mut pass_want = 0u8;
+                    for k in 0..4 {
+                        let (px, py) = (x + (k as i64 & 1), y + (k as i64 >> 1));
+                        if lanes & (1 << k) == 0 {
+                            continue;
+                        }
+                        if let Some(index) = w.test(px as u32, py as u32, z[k]) {
+                            w.write_rgba8(index, c[k]);
+                            pass_want |= 1 << k;
+                        }
+                    }
+                    let mut t = ops.target(&mut got, origin);
+                    let (pass, index, quad_inside) = t.test_quad_with((x, y), lanes, || z, zf);
+                    t.write_rgba8_quad(pass, index, quad_inside, c);
+                    assert_eq!(pass, pass_want, "{x},{y} {lanes:#b}");
+                    inside += usize::from(quad_inside);
+                }
+                assert!(want == got, "{depth_test:?} {depth_mask}");
+            }
+        }
+        assert!(inside > 1000);
+    }
+
     #[test]
     fn quick_ops_match_the_general_ones() {
         use crate::state::Rect;
