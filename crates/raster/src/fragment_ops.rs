@@ -408,6 +408,41 @@ impl QuickTarget<'_> {
         Some(index)
     }
 
+    /// The lanes of `live` of the quad at window (x, y) (pixel `k` at
+    /// `(x + (k & 1), y + (k >> 1))`, fixed-point depth `zf[k]`) that the
+    /// depth test does not reject against the stored depths: early
+    /// rejection without a stencil test (`FragmentStage::early_rejects`),
+    /// pixels outside the target kept.
+    #[inline(always)]
+    pub fn depth_live(&self, (x, y): (i64, i64), live: u8, zf: [u32; 4]) -> u8 {
+        let Some((func, depth)) = &self.depth else {
+            return live;
+        };
+        let (lx, ly) = (x - self.origin.0 as i64, y - self.origin.1 as i64);
+        let (w, h) = (self.width as i64, self.height as i64);
+        if lx >= 0 && ly >= 0 && lx + 1 < w && ly + 1 < h {
+            // The whole quad in the target: its four depths at once.
+            let i0 = (ly * w + lx) as usize;
+            let index = [i0, i0 + 1, i0 + w as usize, i0 + w as usize + 1];
+            if let Some(last) = depth.get(..=index[3]) {
+                let stored = index.map(|i| last[i]);
+                return live & depth_pass_mask(*func, zf, stored);
+            }
+        }
+        let mut live = live;
+        for k in 0..4usize {
+            let (lx, ly) = (lx + (k as i64 & 1), ly + (k as i64 >> 1));
+            if live & (1 << k) == 0 || lx < 0 || ly < 0 || lx >= w || ly >= h {
+                continue;
+            }
+            let stored = depth.get((ly * w + lx) as usize).copied().unwrap_or(0);
+            if !func.test(zf[k], stored) {
+                live &= !(1 << k);
+            }
+        }
+        live
+    }
+
     /// [`QuickTarget::test`] of the lanes `lanes` of the quad at window
     /// (x, y) (pixel `k` at `(x + (k & 1), y + (k >> 1))`, window z
     /// `z[k]`, whose [`depth_to_fixed`] is `zf[k]`): the lanes that pass,

@@ -3,7 +3,7 @@
 //! per-fragment operations in order.
 
 use crate::ex::{Batch, ExecError, Textures, LANES};
-use crate::fragment_ops::{self, Fragment, QuickOps};
+use crate::fragment_ops::{self, Fragment, QuickOps, QuickTarget};
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
 use crate::linkage::FsLayout;
 use crate::rasterize::{PixelRect, QuadInterp, Shape};
@@ -196,6 +196,14 @@ pub(crate) struct FillLink {
     li: usize,
     offset: usize,
     kind: FillKind,
+}
+
+/// Where [`FragmentStage::shade_batched`] sends a tile's fragments: quick
+/// operations with a qualifying colour write over the tile's buffers
+/// (and that colour's fragment output), or the tile itself.
+enum Sink<'f> {
+    Quick(QuickTarget<'f>, usize),
+    General(&'f mut Framebuffer, Option<QuickOps>),
 }
 
 /// How many primitives of a bin ahead [`FragmentStage::prefetch_ahead`]
@@ -436,11 +444,36 @@ impl<'a> FragmentStage<'a> {
         quick: Option<&QuickOps>,
     ) {
         if let Some((quick, o)) = quick.and_then(|q| Some((q, q.color_output()?))) {
+            let mut target = quick.target(fb, origin);
+            self.write_quick(&mut target, o, batch, pending);
+            return;
+        }
+        let mut frag = Fragment {
+            x: 0,
+            y: 0,
+            z: 0.0,
+            back_facing: false,
+            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
+        };
+        for (q, e) in pending.iter().enumerate() {
+            let back = e.prim.is_some_and(|p| p.back);
+            for k in 0..4 {
+                if self.fragment_into(batch, &e.quad, q, k, back, &mut frag) {
+                    fragment_ops::process(fb, origin, self.state, &frag);
+                }
+            }
+        }
+    }
+
+    /// [`FragmentStage::write_batch`] through quick operations whose
+    /// colour write qualifies (to fragment output `o`).
+    #[inline(always)]
+    fn write_quick(&self, target: &mut QuickTarget, o: usize, batch: &Batch, pending: &[Entry]) {
+        {
             // The common states: the same operations per fragment, in the
             // same order, without the general checks; a quad's four
             // pixels (distinct) tested together, and without blending the
             // batch's colours converted together.
-            let mut target = quick.target(fb, origin);
             let rgba = match batch.outputs.get(o..o + 4) {
                 Some([r, g, b, a]) if target.opaque() => {
                     Some(fragment_ops::unorm8_lanes([r, g, b, a]))
@@ -474,22 +507,6 @@ impl<'a> FragmentStage<'a> {
                             }
                         }
                     }
-                }
-            }
-            return;
-        }
-        let mut frag = Fragment {
-            x: 0,
-            y: 0,
-            z: 0.0,
-            back_facing: false,
-            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
-        };
-        for (q, e) in pending.iter().enumerate() {
-            let back = e.prim.is_some_and(|p| p.back);
-            for k in 0..4 {
-                if self.fragment_into(batch, &e.quad, q, k, back, &mut frag) {
-                    fragment_ops::process(fb, origin, self.state, &frag);
                 }
             }
         }
@@ -588,7 +605,13 @@ impl<'a> FragmentStage<'a> {
         } = scratch;
         *n = 0;
         let quick = QuickOps::new(fb, self.state, &self.colors_out);
-        let quick = quick.as_ref();
+        // With quick operations whose colour write qualifies, the tile's
+        // buffers are borrowed once for the whole bin (early depth
+        // rejection reads them there); else through `fb` per batch.
+        let mut sink = match quick.and_then(|q| Some((q, q.color_output()?))) {
+            Some((q, o)) => Sink::Quick(q.target(fb, origin), o),
+            None => Sink::General(fb, quick),
+        };
         for (i, &p) in bin.iter().enumerate() {
             let Some(&prim) = prims.get(p as usize) else {
                 continue;
@@ -600,7 +623,15 @@ impl<'a> FragmentStage<'a> {
                 // Inlined: this loop is compiled per instruction set.
                 e.set_inline(prim, p, quad);
                 if self.early {
-                    self.early_rejects(fb, origin, prim, &mut e.quad);
+                    match &sink {
+                        // No stencil test (else no quick operations): the
+                        // depth test alone (`early_rejects`).
+                        Sink::Quick(t, _) => {
+                            let q = &mut e.quad;
+                            q.live = t.depth_live((q.x, q.y), q.live, q.zf);
+                        }
+                        Sink::General(fb, _) => self.early_rejects(fb, origin, prim, &mut e.quad),
+                    }
                 }
                 if e.quad.live == 0 {
                     continue;
@@ -608,16 +639,38 @@ impl<'a> FragmentStage<'a> {
                 e.finish_inline();
                 *n += 1;
                 if *n == LANES / 4 {
-                    self.flush_batched(fb, origin, batch, slots, quick)?;
+                    self.flush_sink(&mut sink, origin, batch, slots)?;
                     *n = 0;
                 }
             }
         }
         if *n > 0 {
-            self.flush_batched(fb, origin, batch, &slots[..*n], quick)?;
+            self.flush_sink(&mut sink, origin, batch, &slots[..*n])?;
             *n = 0;
         }
         Ok(())
+    }
+
+    /// [`FragmentStage::flush_batched`] into `sink`.
+    #[inline(always)]
+    fn flush_sink(
+        &self,
+        sink: &mut Sink,
+        origin: (u32, u32),
+        batch: &mut Batch,
+        pending: &[Entry],
+    ) -> Result<(), ExecError> {
+        match sink {
+            Sink::Quick(target, o) => {
+                self.fill(batch, pending, &self.fills);
+                self.run_shader(batch)?;
+                self.write_quick(target, *o, batch, pending);
+                Ok(())
+            }
+            Sink::General(fb, quick) => {
+                self.flush_batched(fb, origin, batch, pending, quick.as_ref())
+            }
+        }
     }
 
     /// Whether [`FragmentStage::shade_batched`] gives the bytes of
