@@ -1033,8 +1033,9 @@ mod tests {
     }
 
     /// `test_quad_with` and `write_rgba8_quad` (whole quads blended row by
-    /// row) against the per-fragment `test` and `write_rgba8`, quads
-    /// inside and across the tile's edges, random coverage and depths.
+    /// row) against the per-fragment `test` and `write_rgba8`, and
+    /// `depth_live` against the per-pixel depth test, quads inside and
+    /// across the tile's edges, random coverage and depths.
     #[test]
     fn quad_tests_and_writes_match_the_fragment_ones() {
         use crate::state::Rect;
@@ -1085,7 +1086,20 @@ mod tests {
                             pass_want |= 1 << k;
                         }
                     }
+                    // Early rejection: a lane stays unless it is inside
+                    // the target and fails the depth test.
+                    let keep_want = (0..4).fold(0u8, |m, k| {
+                        let (lx, ly) = (x + (k & 1) - 4, y + (k >> 1) - 2);
+                        let fails = (0..12).contains(&lx)
+                            && (0..10).contains(&ly)
+                            && depth_test.is_some_and(|f| {
+                                let stored = got.depth.as_ref().unwrap()[(ly * 12 + lx) as usize];
+                                !f.test(zf[k as usize], stored)
+                            });
+                        m | (u8::from(lanes & (1 << k) != 0 && !fails) << k)
+                    });
                     let mut t = ops.target(&mut got, origin);
+                    assert_eq!(t.depth_live((x, y), lanes, zf), keep_want);
                     let (pass, index, quad_inside) = t.test_quad_with((x, y), lanes, || z, zf);
                     t.write_rgba8_quad(pass, index, quad_inside, c);
                     assert_eq!(pass, pass_want, "{x},{y} {lanes:#b}");
