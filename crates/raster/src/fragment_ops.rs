@@ -430,13 +430,13 @@ impl QuickTarget<'_> {
             }
         }
         let mut live = live;
-        for k in 0..4usize {
+        for (k, &zf) in zf.iter().enumerate() {
             let (lx, ly) = (lx + (k as i64 & 1), ly + (k as i64 >> 1));
             if live & (1 << k) == 0 || lx < 0 || ly < 0 || lx >= w || ly >= h {
                 continue;
             }
             let stored = depth.get((ly * w + lx) as usize).copied().unwrap_or(0);
-            if !func.test(zf[k], stored) {
+            if !func.test(zf, stored) {
                 live &= !(1 << k);
             }
         }
