@@ -140,12 +140,23 @@ impl OsContext {
             w
         };
         let fb = self.gl.default_framebuffer();
-        let pixels = fb.read_pixels_u8(0, 0, 0, w as u32, h as u32);
         // SAFETY: OSMesaMakeCurrent's contract: `buffer` holds at least
         // row_length * height pixels of the format and type given there
         // (row_length >= width), and stays valid while the context uses it.
         let out =
             unsafe { std::slice::from_raw_parts_mut(self.buffer as *mut u8, row_px * h * px) };
+        // RGBA bytes from an RGBA8 framebuffer of the buffer's size (the
+        // usual case): whole rows copied, the bytes `encode_pixel` writes
+        // pixel by pixel.
+        if let (OSMESA_RGBA, GL_UNSIGNED_BYTE, Some(raster::ColorBuffer::Rgba8(color))) =
+            (self.format, self.ty, fb.color.first())
+        {
+            if (fb.width as usize, fb.height as usize) == (w, h) && color.len() >= w * h {
+                copy_rgba8_rows(color, (w, h), row_px, self.y_up, out);
+                return;
+            }
+        }
+        let pixels = fb.read_pixels_u8(0, 0, 0, w as u32, h as u32);
         for y in 0..h {
             let dst_row = if self.y_up { y } else { h - 1 - y };
             for x in 0..w {
@@ -218,6 +229,29 @@ impl OsContext {
 }
 
 /// Writes one RGBA8 pixel in the client's format and type.
+/// `color` (`w` × `h` RGBA8 pixels, bottom row first) into `out` as RGBA
+/// bytes, rows `row_px` pixels apart, bottom row first when `y_up`: what
+/// [`encode_pixel`] writes pixel by pixel for OSMESA_RGBA and
+/// GL_UNSIGNED_BYTE, a row at a time.
+fn copy_rgba8_rows(
+    color: &[[u8; 4]],
+    (w, h): (usize, usize),
+    row_px: usize,
+    y_up: bool,
+    out: &mut [u8],
+) {
+    if w == 0 {
+        return;
+    }
+    for (y, src) in color.chunks_exact(w).take(h).enumerate() {
+        let dst_row = if y_up { y } else { h - 1 - y };
+        let at = dst_row * row_px * 4;
+        if let Some(dst) = out.get_mut(at..at + w * 4) {
+            dst.copy_from_slice(src.as_flattened());
+        }
+    }
+}
+
 fn encode_pixel(p: [u8; 4], format: u32, ty: u32, dst: &mut [u8]) {
     let [r, g, b, a] = p;
     if format == OSMESA_RGB_565 {
@@ -368,6 +402,33 @@ pub fn guard<R>(default: R, f: impl FnOnce() -> R) -> R {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The row copy of `copy_out` against `encode_pixel` pixel by pixel.
+    #[test]
+    fn rgba8_rows_match_encode_pixel() {
+        let (w, h) = (5, 3);
+        let color: Vec<[u8; 4]> = (0..w * h)
+            .map(|i| [i as u8, (i * 7) as u8, (i * 13) as u8, 255 - i as u8])
+            .collect();
+        for (row_px, y_up) in [(5, true), (5, false), (8, true), (8, false)] {
+            let mut want = vec![0xAAu8; row_px * h * 4];
+            for y in 0..h {
+                let dst_row = if y_up { y } else { h - 1 - y };
+                for x in 0..w {
+                    let at = (dst_row * row_px + x) * 4;
+                    encode_pixel(
+                        color[y * w + x],
+                        OSMESA_RGBA,
+                        GL_UNSIGNED_BYTE,
+                        &mut want[at..at + 4],
+                    );
+                }
+            }
+            let mut got = vec![0xAAu8; row_px * h * 4];
+            copy_rgba8_rows(&color, (w, h), row_px, y_up, &mut got);
+            assert_eq!(got, want, "{row_px} {y_up}");
+        }
+    }
 
     #[test]
     fn pixel_encodings() {

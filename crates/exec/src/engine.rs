@@ -720,8 +720,40 @@ pub(crate) fn load(
 }
 
 /// [`load`] without the pool: at least `code.prog.registers` registers,
-/// the live-at-entry ones zeroed, initializers and inputs.
+/// the live-at-entry ones zeroed, initializers and inputs. Copies only
+/// (and exact conversions): compiled for the widest vectors the CPU has,
+/// the same values.
 pub(crate) fn load_inputs(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batch) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::is_x86_feature_detected!("avx512f") {
+            // SAFETY: the CPU has AVX-512 F.
+            return unsafe { load_inputs_avx512(k, code, file, batch) };
+        }
+        if std::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2.
+            return unsafe { load_inputs_avx2(k, code, file, batch) };
+        }
+    }
+    load_inputs_with(k, code, file, batch)
+}
+
+/// [`load_inputs_with`] compiled for AVX2 (a register in two stores).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn load_inputs_avx2(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batch) {
+    load_inputs_with(k, code, file, batch)
+}
+
+/// [`load_inputs_with`] compiled for AVX-512 (a register in one store).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,avx512f")]
+unsafe fn load_inputs_avx512(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batch) {
+    load_inputs_with(k, code, file, batch)
+}
+
+#[inline(always)]
+fn load_inputs_with(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batch) {
     let nregs = code.prog.registers as usize;
     if file.len() < nregs {
         file.resize(nregs, [0; LANES]);
@@ -766,6 +798,37 @@ pub(crate) fn canonical_nan(bits: u32) -> u32 {
 }
 
 pub(crate) fn store_outputs(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::is_x86_feature_detected!("avx512f") {
+            // SAFETY: the CPU has AVX-512 F.
+            return unsafe { store_outputs_avx512(k, file, batch) };
+        }
+        if std::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2.
+            return unsafe { store_outputs_avx2(k, file, batch) };
+        }
+    }
+    store_outputs_with(k, file, batch)
+}
+
+/// [`store_outputs_with`] compiled for AVX2 (integer selects only: the
+/// same bits).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn store_outputs_avx2(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
+    store_outputs_with(k, file, batch)
+}
+
+/// [`store_outputs_with`] compiled for AVX-512.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,avx512f")]
+unsafe fn store_outputs_avx512(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
+    store_outputs_with(k, file, batch)
+}
+
+#[inline(always)]
+fn store_outputs_with(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
     let active = batch.active & FULL;
     if batch.outputs.len() < k.interface.output_components {
         batch

@@ -239,8 +239,12 @@ impl ResolvedAttrib {
                     return [0.0, 0.0, 0.0, 1.0];
                 };
                 let mut out = [0.0, 0.0, 0.0, 1.0];
-                for (o, c) in out.iter_mut().zip(b.chunks_exact(4)) {
-                    *o = f32::from_le_bytes([c[0], c[1], c[2], c[3]]);
+                // Component by component with a fixed bound (a copy of a
+                // run-time length would call memcpy for 12 or 16 bytes).
+                for (k, o) in out.iter_mut().enumerate() {
+                    if let Some(c) = b.get(4 * k..4 * k + 4) {
+                        *o = f32::from_le_bytes([c[0], c[1], c[2], c[3]]);
+                    }
                 }
                 out
             }

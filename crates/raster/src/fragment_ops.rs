@@ -408,6 +408,41 @@ impl QuickTarget<'_> {
         Some(index)
     }
 
+    /// The lanes of `live` of the quad at window (x, y) (pixel `k` at
+    /// `(x + (k & 1), y + (k >> 1))`, fixed-point depth `zf[k]`) that the
+    /// depth test does not reject against the stored depths: early
+    /// rejection without a stencil test (`FragmentStage::early_rejects`),
+    /// pixels outside the target kept.
+    #[inline(always)]
+    pub fn depth_live(&self, (x, y): (i64, i64), live: u8, zf: [u32; 4]) -> u8 {
+        let Some((func, depth)) = &self.depth else {
+            return live;
+        };
+        let (lx, ly) = (x - self.origin.0 as i64, y - self.origin.1 as i64);
+        let (w, h) = (self.width as i64, self.height as i64);
+        if lx >= 0 && ly >= 0 && lx + 1 < w && ly + 1 < h {
+            // The whole quad in the target: its four depths at once.
+            let i0 = (ly * w + lx) as usize;
+            let index = [i0, i0 + 1, i0 + w as usize, i0 + w as usize + 1];
+            if let Some(last) = depth.get(..=index[3]) {
+                let stored = index.map(|i| last[i]);
+                return live & depth_pass_mask(*func, zf, stored);
+            }
+        }
+        let mut live = live;
+        for (k, &zf) in zf.iter().enumerate() {
+            let (lx, ly) = (lx + (k as i64 & 1), ly + (k as i64 >> 1));
+            if live & (1 << k) == 0 || lx < 0 || ly < 0 || lx >= w || ly >= h {
+                continue;
+            }
+            let stored = depth.get((ly * w + lx) as usize).copied().unwrap_or(0);
+            if !func.test(zf, stored) {
+                live &= !(1 << k);
+            }
+        }
+        live
+    }
+
     /// [`QuickTarget::test`] of the lanes `lanes` of the quad at window
     /// (x, y) (pixel `k` at `(x + (k & 1), y + (k >> 1))`, window z
     /// `z[k]`, whose [`depth_to_fixed`] is `zf[k]`): the lanes that pass,
@@ -419,9 +454,23 @@ impl QuickTarget<'_> {
     #[inline(always)]
     pub fn test_quad(
         &mut self,
-        (x, y): (i64, i64),
+        at: (i64, i64),
         lanes: u8,
         z: [f32; 4],
+        zf: [u32; 4],
+    ) -> (u8, [usize; 4], bool) {
+        self.test_quad_with(at, lanes, || z, zf)
+    }
+
+    /// [`QuickTarget::test_quad`] with the window z computed by `z` only
+    /// when the lanes go one by one (a quad inside the target needs only
+    /// `zf`).
+    #[inline(always)]
+    pub fn test_quad_with(
+        &mut self,
+        (x, y): (i64, i64),
+        lanes: u8,
+        z: impl FnOnce() -> [f32; 4],
         zf: [u32; 4],
     ) -> (u8, [usize; 4], bool) {
         let (lx, ly) = (x - self.origin.0 as i64, y - self.origin.1 as i64);
@@ -441,12 +490,20 @@ impl QuickTarget<'_> {
                 let stored = index.map(|i| d[i]);
                 pass &= depth_pass_mask(*func, zf, stored);
                 if self.depth_write {
-                    for k in 0..4 {
-                        d[index[k]] = if pass & (1 << k) != 0 {
-                            zf[k]
-                        } else {
-                            stored[k]
-                        };
+                    // Every pixel stored, the passing ones' new depth
+                    // selected without branches (coverage patterns do not
+                    // predict): a row's two pixels at once.
+                    let zf = zf.map(u32::to_ne_bytes);
+                    let stored = stored.map(u32::to_ne_bytes);
+                    for (r, &at) in [index[0], index[2]].iter().enumerate() {
+                        if let Some([d0, d1]) = d.get_mut(at..at + 2) {
+                            let [n0, n1] = blend_pair(
+                                [stored[2 * r], stored[2 * r + 1]],
+                                [zf[2 * r], zf[2 * r + 1]],
+                                pass >> (2 * r),
+                            );
+                            [*d0, *d1] = [u32::from_ne_bytes(n0), u32::from_ne_bytes(n1)];
+                        }
                     }
                 }
             }
@@ -455,6 +512,7 @@ impl QuickTarget<'_> {
         }
         let mut pass = 0u8;
         let mut index = [0usize; 4];
+        let z = z();
         for k in 0..4 {
             let (px, py) = (x + (k as i64 & 1), y + (k as i64 >> 1));
             if lanes & (1 << k) == 0 || px < 0 || py < 0 {
@@ -470,17 +528,23 @@ impl QuickTarget<'_> {
 
     /// [`QuickTarget::write_rgba8`] of `c[k]` at `index[k]` for the lanes
     /// `pass`, after [`QuickTarget::test_quad`] found the quad inside
-    /// (`inside`; else one lane at a time).
+    /// (`inside`: then `index` holds two rows of two adjacent pixels, as
+    /// `test_quad` returns it; else one lane at a time).
     #[inline(always)]
     pub fn write_rgba8_quad(&mut self, pass: u8, index: [usize; 4], inside: bool, c: [[u8; 4]; 4]) {
         let Some((v, _)) = &mut self.color else {
             return;
         };
         if inside && index[3] < v.len() {
-            // In bounds: index[3] is the largest.
-            for k in 0..4 {
-                let old = v[index[k]];
-                v[index[k]] = if pass & (1 << k) != 0 { c[k] } else { old };
+            // In bounds: index[3] is the largest, and the quad's rows are
+            // (index[0], index[0] + 1) and (index[2], index[2] + 1). Every
+            // pixel stored, the passing ones' colour selected without
+            // branches (coverage patterns do not predict): a row's two
+            // pixels at once.
+            for (r, &at) in [index[0], index[2]].iter().enumerate() {
+                if let Some([p0, p1]) = v.get_mut(at..at + 2) {
+                    [*p0, *p1] = blend_pair([*p0, *p1], [c[2 * r], c[2 * r + 1]], pass >> (2 * r));
+                }
             }
             return;
         }
@@ -584,6 +648,22 @@ unsafe fn write_sse2(src: [f32; 4], dst: [u8; 4], over: bool) -> [u8; 4] {
         let k = _mm_packus_epi16(_mm_packs_epi32(k, k), k);
         _mm_cvtsi128_si32(k).to_le_bytes()
     }
+}
+
+/// Two adjacent 4-byte pixels: `new[k]` where bit `k` of `bits` is set,
+/// else `old[k]`, selected with one 64-bit mask (no branch, which the
+/// compiler makes of a per-pixel select when it can sink the load of
+/// `old` into it).
+#[inline(always)]
+fn blend_pair(old: [[u8; 4]; 2], new: [[u8; 4]; 2], bits: u8) -> [[u8; 4]; 2] {
+    let wide = |p: [[u8; 4]; 2]| {
+        let [[a, b, c, d], [e, f, g, h]] = p;
+        u64::from_ne_bytes([a, b, c, d, e, f, g, h])
+    };
+    let lane = |k: u8| 0u32.wrapping_sub(u32::from((bits >> k) & 1)).to_ne_bytes();
+    let m = wide([lane(0), lane(1)]);
+    let [a, b, c, d, e, f, g, h] = ((wide(new) & m) | (wide(old) & !m)).to_ne_bytes();
+    [[a, b, c, d], [e, f, g, h]]
 }
 
 /// The lanes `k` where `func.test(zf[k], stored[k])`, the comparison
@@ -1000,6 +1080,85 @@ mod tests {
                 "{z:?}"
             );
         }
+    }
+
+    /// `test_quad_with` and `write_rgba8_quad` (whole quads blended row by
+    /// row) against the per-fragment `test` and `write_rgba8`, and
+    /// `depth_live` against the per-pixel depth test, quads inside and
+    /// across the tile's edges, random coverage and depths.
+    #[test]
+    fn quad_tests_and_writes_match_the_fragment_ones() {
+        use crate::state::Rect;
+        let mut seed = 97u32;
+        let mut next = move || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed >> 8
+        };
+        let mut inside = 0;
+        for (i, depth_test) in [
+            None,
+            Some(CompareFunc::Less),
+            Some(CompareFunc::GreaterEqual),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            for depth_mask in [true, false] {
+                let state = PipelineState {
+                    depth_test,
+                    depth_mask,
+                    scissor: (i == 2).then(|| Rect::new(5, 3, 9, 7)),
+                    ..PipelineState::default()
+                };
+                let origin = (4, 2);
+                let mut want = Framebuffer::new(12, 10, ColorFormat::Rgba8, true, false);
+                want.clear_color(&[0], [0.2, 0.4, 0.6, 0.8], [true; 4], None);
+                want.clear_depth(0.5, true, None);
+                let mut got = want.clone();
+                let ops = QuickOps::new(&got, &state, &[(0, 0)]).expect("qualifies");
+                for _ in 0..3000 {
+                    let (x, y) = ((next() % 18) as i64 & !1, (next() % 14) as i64 & !1);
+                    let lanes = (next() % 16) as u8;
+                    let z: [f32; 4] = std::array::from_fn(|_| {
+                        [0.25, 0.5, 0.75, next() as f32 / 16_777_216.0][next() as usize % 4]
+                    });
+                    let zf = z.map(depth_to_fixed);
+                    let c: [[u8; 4]; 4] = std::array::from_fn(|_| [0; 4].map(|_| next() as u8));
+                    let mut w = ops.target(&mut want, origin);
+                    let mut pass_want = 0u8;
+                    for k in 0..4 {
+                        let (px, py) = (x + (k as i64 & 1), y + (k as i64 >> 1));
+                        if lanes & (1 << k) == 0 {
+                            continue;
+                        }
+                        if let Some(index) = w.test(px as u32, py as u32, z[k]) {
+                            w.write_rgba8(index, c[k]);
+                            pass_want |= 1 << k;
+                        }
+                    }
+                    // Early rejection: a lane stays unless it is inside
+                    // the target and fails the depth test.
+                    let keep_want = (0..4).fold(0u8, |m, k| {
+                        let (lx, ly) = (x + (k & 1) - 4, y + (k >> 1) - 2);
+                        let fails = (0..12).contains(&lx)
+                            && (0..10).contains(&ly)
+                            && depth_test.is_some_and(|f| {
+                                let stored = got.depth.as_ref().unwrap()[(ly * 12 + lx) as usize];
+                                !f.test(zf[k as usize], stored)
+                            });
+                        m | (u8::from(lanes & (1 << k) != 0 && !fails) << k)
+                    });
+                    let mut t = ops.target(&mut got, origin);
+                    assert_eq!(t.depth_live((x, y), lanes, zf), keep_want);
+                    let (pass, index, quad_inside) = t.test_quad_with((x, y), lanes, || z, zf);
+                    t.write_rgba8_quad(pass, index, quad_inside, c);
+                    assert_eq!(pass, pass_want, "{x},{y} {lanes:#b}");
+                    inside += usize::from(quad_inside);
+                }
+                assert!(want == got, "{depth_test:?} {depth_mask}");
+            }
+        }
+        assert!(inside > 1000);
     }
 
     #[test]

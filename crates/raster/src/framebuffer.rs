@@ -150,11 +150,25 @@ impl Framebuffer {
         }
     }
 
-    fn for_each_index(&self, scissor: Option<Rect>, mut f: impl FnMut(usize)) {
-        let (x0, y0, x1, y1) = self.clip_rect(scissor);
-        for y in y0..y1 {
-            for x in x0..x1 {
-                f(y as usize * self.width as usize + x as usize);
+    /// `f` on each row of `buf` (`width` pixels a row) inside the scissor
+    /// box `(x0, y0, x1, y1)` of [`Framebuffer::clip_rect`], the pixels
+    /// `buf` lacks left out: the pixels a clear touches, a row at a time.
+    fn for_each_row<T>(
+        buf: &mut [T],
+        width: u32,
+        (x0, y0, x1, y1): (u32, u32, u32, u32),
+        mut f: impl FnMut(&mut [T]),
+    ) {
+        let width = width as usize;
+        let len = buf.len();
+        for y in y0 as usize..y1 as usize {
+            let start = y * width;
+            let (a, b) = (
+                (start + x0 as usize).min(len),
+                (start + x1 as usize).min(len),
+            );
+            if let Some(row) = buf.get_mut(a..b) {
+                f(row);
             }
         }
     }
@@ -170,37 +184,36 @@ impl Framebuffer {
         mask: [bool; 4],
         scissor: Option<Rect>,
     ) {
-        let (x0, y0, x1, y1) = self.clip_rect(scissor);
-        let width = self.width as usize;
+        let rect = self.clip_rect(scissor);
+        let width = self.width;
         let bytes = color.map(float_to_unorm8);
         for &b in buffers {
             let Some(buf) = self.color.get_mut(b) else {
                 continue;
             };
-            for y in y0..y1 {
-                for x in x0..x1 {
-                    let i = y as usize * width + x as usize;
-                    match buf {
-                        ColorBuffer::Rgba8(v) => {
-                            if let Some(p) = v.get_mut(i) {
-                                for c in 0..4 {
-                                    if mask[c] {
-                                        p[c] = bytes[c];
-                                    }
-                                }
-                            }
-                        }
-                        ColorBuffer::Rgba32F(v) => {
-                            if let Some(p) = v.get_mut(i) {
-                                for c in 0..4 {
-                                    if mask[c] {
-                                        p[c] = color[c];
-                                    }
-                                }
+            match buf {
+                // Every channel written: whole rows filled.
+                ColorBuffer::Rgba8(v) if mask == [true; 4] => {
+                    Self::for_each_row(v, width, rect, |row| row.fill(bytes))
+                }
+                ColorBuffer::Rgba8(v) => Self::for_each_row(v, width, rect, |row| {
+                    for p in row {
+                        for c in 0..4 {
+                            if mask[c] {
+                                p[c] = bytes[c];
                             }
                         }
                     }
-                }
+                }),
+                ColorBuffer::Rgba32F(v) => Self::for_each_row(v, width, rect, |row| {
+                    for p in row {
+                        for c in 0..4 {
+                            if mask[c] {
+                                p[c] = color[c];
+                            }
+                        }
+                    }
+                }),
             }
         }
     }
@@ -212,14 +225,9 @@ impl Framebuffer {
             return;
         }
         let k = depth_to_fixed(depth);
-        let mut idx = Vec::new();
-        self.for_each_index(scissor, |i| idx.push(i));
+        let (rect, width) = (self.clip_rect(scissor), self.width);
         if let Some(d) = self.depth.as_mut() {
-            for i in idx {
-                if let Some(p) = d.get_mut(i) {
-                    *p = k;
-                }
-            }
+            Self::for_each_row(d, width, rect, |row| row.fill(k));
         }
     }
 
@@ -228,14 +236,13 @@ impl Framebuffer {
     pub fn clear_stencil(&mut self, value: i32, write_mask: u32, scissor: Option<Rect>) {
         let v = value as u8;
         let m = write_mask as u8;
-        let mut idx = Vec::new();
-        self.for_each_index(scissor, |i| idx.push(i));
+        let (rect, width) = (self.clip_rect(scissor), self.width);
         if let Some(s) = self.stencil.as_mut() {
-            for i in idx {
-                if let Some(p) = s.get_mut(i) {
+            Self::for_each_row(s, width, rect, |row| {
+                for p in row {
                     *p = (*p & !m) | (v & m);
                 }
-            }
+            });
         }
     }
 
@@ -388,6 +395,89 @@ impl Framebuffer {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The row-by-row clears against the per-pixel rule: inside the
+    /// (clipped) scissor box the masked channels, depth and stencil bits
+    /// take the clear values, everything else keeps its bytes.
+    #[test]
+    fn clears_touch_the_scissor_box_only() {
+        let (w, h) = (7u32, 5u32);
+        let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, true);
+        let mut float = Framebuffer::new(w, h, ColorFormat::Rgba32F, false, false);
+        let fill = |i: usize| [i as u8, (3 * i) as u8, (7 * i) as u8, (11 * i) as u8];
+        if let ColorBuffer::Rgba8(v) = &mut fb.color[0] {
+            v.iter_mut().enumerate().for_each(|(i, p)| *p = fill(i));
+        }
+        if let ColorBuffer::Rgba32F(v) = &mut float.color[0] {
+            v.iter_mut()
+                .enumerate()
+                .for_each(|(i, p)| *p = fill(i).map(f32::from));
+        }
+        for (i, d) in fb.depth.as_mut().unwrap().iter_mut().enumerate() {
+            *d = i as u32;
+        }
+        for (i, s) in fb.stencil.as_mut().unwrap().iter_mut().enumerate() {
+            *s = (5 * i) as u8;
+        }
+        for (scissor, mask) in [
+            (None, [true; 4]),
+            (Some(Rect::new(2, 1, 3, 9)), [true; 4]),
+            (Some(Rect::new(-2, 3, 5, 1)), [true, false, true, false]),
+            (Some(Rect::new(9, 0, 3, 3)), [false, true, false, true]),
+        ] {
+            let (mut a, mut f) = (fb.clone(), float.clone());
+            a.clear_color(&[0, 3], [0.5, 0.25, 1.0, 0.0], mask, scissor);
+            f.clear_color(&[0], [0.5, 0.25, 1.0, 0.0], mask, scissor);
+            a.clear_depth(0.75, true, scissor);
+            a.clear_stencil(0x1ab, 0x0f, scissor);
+            let r = scissor.unwrap_or(Rect::new(0, 0, w as i32, h as i32));
+            for y in 0..h as i32 {
+                for x in 0..w as i32 {
+                    let i = (y as u32 * w + x as u32) as usize;
+                    let inside = x >= r.x && x < r.x + r.w && y >= r.y && y < r.y + r.h;
+                    let old = fill(i);
+                    let want: [u8; 4] = std::array::from_fn(|c| {
+                        if inside && mask[c] {
+                            [128, 64, 255, 0][c]
+                        } else {
+                            old[c]
+                        }
+                    });
+                    let ColorBuffer::Rgba8(v) = &a.color[0] else {
+                        unreachable!()
+                    };
+                    assert_eq!(v[i], want, "{x},{y} {scissor:?}");
+                    let ColorBuffer::Rgba32F(v) = &f.color[0] else {
+                        unreachable!()
+                    };
+                    let want_f: [f32; 4] = std::array::from_fn(|c| {
+                        if inside && mask[c] {
+                            [0.5, 0.25, 1.0, 0.0][c]
+                        } else {
+                            f32::from(old[c])
+                        }
+                    });
+                    assert_eq!(v[i], want_f);
+                    let depth = a.depth.as_ref().unwrap()[i];
+                    assert_eq!(
+                        depth,
+                        if inside {
+                            depth_to_fixed(0.75)
+                        } else {
+                            i as u32
+                        }
+                    );
+                    let old_s = (5 * i) as u8;
+                    let want_s = if inside {
+                        (old_s & !0x0f) | 0x0b
+                    } else {
+                        old_s
+                    };
+                    assert_eq!(a.stencil.as_ref().unwrap()[i], want_s);
+                }
+            }
+        }
+    }
 
     #[test]
     fn unorm_conversion_rounds_to_nearest() {

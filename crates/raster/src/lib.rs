@@ -43,7 +43,9 @@
 //! marks read) and which colour outputs go to draw buffers. Set-up
 //! allocates nothing per primitive: varyings go to one array per set-up
 //! chunk (used where they are), triangles and quads inside every clip
-//! plane skip the clipper. The set-up chunks' arrays and the vertex
+//! plane skip the clipper, and when vertices are shared (indexed meshes)
+//! each vertex's clip outcode and window position are computed once, on
+//! the workers, instead of per primitive. The set-up chunks' arrays and the vertex
 //! outputs are kept by the [`Workers`] for its next draws (up to 256 MiB),
 //! so a steady stream of draws does not pay page faults on fresh memory.
 //! Triangle coverage steps integer edge forms (exactly the edge function
@@ -54,8 +56,9 @@
 //! weights only for quads early depth rejection keeps), laid out per
 //! vertex so that filling a batch's varyings is straight vector code; a
 //! batch's quads are built in place in four per-tile slots, and the
-//! varyings and set-up of primitives a few ahead in the tile's bin are
-//! prefetched while one is rasterized.
+//! varyings and set-up of primitives a few ahead in the tile's bin (and
+//! the pointers to those further ahead) are prefetched while one is
+//! rasterized.
 //!
 //! Filling a batch's inputs and a quad's interpolation are compiled for
 //! the baseline target, AVX2 and AVX-512 and picked at run time (so is

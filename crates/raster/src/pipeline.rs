@@ -369,7 +369,22 @@ struct Setup<'a> {
     /// Viewport transform (px/2, ox, py/2, oy, (f-n)/2, (n+f)/2).
     vp: [f64; 6],
     probe: Option<&'a crate::probe::Probe>,
+    /// Per vertex (when vertices are shared enough to be worth it, else
+    /// empty): its clip-plane outcode and window position, what
+    /// [`Setup::polygon`] computes for each primitive's vertices.
+    corners: Vec<Corner>,
 }
+
+/// A vertex's [`Planes::outcode_of`] and [`Setup::window`].
+#[derive(Clone, Copy)]
+struct Corner {
+    outcode: u32,
+    win: Option<WinVertex>,
+}
+
+/// Below this many primitive vertices per vertex the set-up computes each
+/// vertex's outcode and window position where it is used (no table).
+const CORNER_REUSE: usize = 2;
 
 /// Where set-up primitives go: the primitives of one chunk, their
 /// fragment varyings ([`Prim::attrs`] indexes `attrs`), and the index of
@@ -521,6 +536,27 @@ impl Setup<'_> {
         self.push(out, shape, back, z_offset, &[&a.data, &b.data], provoking);
     }
 
+    /// Vertex `v`'s outcode and window position: from the table when
+    /// there is one, else computed.
+    #[inline(always)]
+    fn corner(&self, v: usize) -> Corner {
+        match self.corners.get(v) {
+            Some(&c) => c,
+            None => self.compute_corner(v),
+        }
+    }
+
+    fn compute_corner(&self, v: usize) -> Corner {
+        let d = self.data(v);
+        let pos = self.vs.position(d);
+        let outcode = self.planes.outcode_of(&pos, &self.vs.eye(d));
+        Corner {
+            outcode,
+            // Only read for vertices inside every plane.
+            win: if outcode == 0 { self.window(pos) } else { None },
+        }
+    }
+
     fn polygon(&self, out: &mut Out, vertices: &[usize], provoking: usize) {
         // Line and point modes draw the unclipped polygon's edges/vertices.
         let filled_only = self.state.polygon_mode == [PolygonMode::Fill; 2];
@@ -528,14 +564,15 @@ impl Setup<'_> {
         if filled_only && (3..=4).contains(&vertices.len()) {
             // Triangles and quads inside every plane (the usual case) skip
             // the clipper and its copies: what it would return unchanged.
+            let mut corners = [Corner {
+                outcode: 0,
+                win: None,
+            }; 4];
             let (mut all, mut any) = (0u32, !0u32);
-            for &v in vertices {
-                let d = self.data(v);
-                let c = self
-                    .planes
-                    .outcode_of(&self.vs.position(d), &self.vs.eye(d));
-                all |= c;
-                any &= c;
+            for (c, &v) in corners.iter_mut().zip(vertices) {
+                *c = self.corner(v);
+                all |= c.outcode;
+                any &= c.outcode;
             }
             if any != 0 {
                 return;
@@ -543,13 +580,12 @@ impl Setup<'_> {
             if all == 0 {
                 let mut win = [NO_WIN; 4];
                 let mut data: [&[f32]; 4] = [&[]; 4];
-                for (i, &v) in vertices.iter().enumerate() {
-                    let d = self.data(v);
-                    let Some(w) = self.window(self.vs.position(d)) else {
+                for (i, (&v, c)) in vertices.iter().zip(&corners).enumerate() {
+                    let Some(w) = c.win else {
                         return;
                     };
                     win[i] = w;
-                    data[i] = d;
+                    data[i] = self.data(v);
                 }
                 let n = vertices.len();
                 self.set_up_polygon(out, &win[..n], &data[..n], &[], prov);
@@ -737,7 +773,22 @@ pub(crate) fn draw_probed(
             (n + f) / 2.0,
         ],
         probe,
+        corners: Vec::new(),
     };
+    // Shared vertices (indexed meshes): each vertex's outcode and window
+    // position once, on the workers, instead of once per primitive using
+    // it (the same values either way).
+    let vertices = outputs.len() / vs_layout.outputs.max(1);
+    let mut setup = setup;
+    if probe.is_none() && vertex_of.len() >= CORNER_REUSE * vertices {
+        let chunk = 4096;
+        let parts = workers.map(vertices.div_ceil(chunk), 1, |c, _| {
+            (c * chunk..((c + 1) * chunk).min(vertices))
+                .map(|v| setup.compute_corner(v))
+                .collect::<Vec<_>>()
+        });
+        setup.corners = parts.concat();
+    }
     // Primitive set-up in chunks of primitives on the workers, the
     // chunks' primitives concatenated in order (one chunk, in order, for
     // the debugger's probe, which notes primitives as they come).

@@ -395,6 +395,30 @@ impl Shape {
         }
     }
 
+    /// [`Shape::interp_quad_z`] with the triangle arithmetic inlined into
+    /// the caller, so compiled for the caller's instruction set (the same
+    /// operations: the same bits, as every variant gives). For hot loops
+    /// that are themselves compiled per variant: no call, and the values
+    /// stay in registers.
+    #[inline(always)]
+    pub fn interp_quad_z_inline(&self, qx: i64, qy: i64, q: &mut QuadInterp) {
+        match self {
+            Shape::Triangle { p, sign, area2, v } => {
+                triangle_quad((p, *sign, *area2, v), qx, qy, q)
+            }
+            _ => self.interp_quad_z(Isa::Base, qx, qy, q),
+        }
+    }
+
+    /// [`Shape::interp_quad_finish`] inlined into the caller (see
+    /// [`Shape::interp_quad_z_inline`]).
+    #[inline(always)]
+    pub fn interp_quad_finish_inline(&self, q: &mut QuadInterp) {
+        if let Shape::Triangle { v, .. } = self {
+            triangle_weights(v, q);
+        }
+    }
+
     /// The second half of [`Shape::interp_quad_isa`] (after
     /// [`Shape::interp_quad_z`] on the same `q`).
     #[inline(always)]
@@ -529,9 +553,12 @@ unsafe fn triangle_weights_avx512(v: &[WinVertex; 3], q: &mut QuadInterp) {
 /// `g(x, y) = a·x + b·y + c` that is ≥ 0 exactly when the pixel center
 /// lies inside the edge or on an edge the triangle owns (the top-left
 /// rule folded into `c`): the same integers as [`edge`] at every pixel,
-/// stepped by additions, four pixels and three edges per quad, and a row
-/// of quads ends as soon as one edge that only decreases to the right is
-/// negative on the whole quad.
+/// stepped by additions. The three edges' values at a quad's four pixels
+/// are kept side by side (`v[k][i]`: edge `k` at pixel `i`) and stepped
+/// together, so that a wide instruction set handles them at once: a pixel
+/// is covered when no edge is negative there (the sign bits of the three
+/// edges or-ed), and a row of quads ends as soon as one edge that only
+/// decreases to the right is negative on the whole quad.
 #[inline(always)]
 fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i64, i64, u8)>) {
     let mut a = [0i64; 3];
@@ -546,41 +573,53 @@ fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i
         b[k] = sign * ex * ONE;
         c[k] = sign * (ex * (HALF - pa.1) - ey * (HALF - pa.0)) + owns_edge(p, k, sign) as i64 - 1;
     }
+    // Pixel i of a quad from its first: (i & 1, i >> 1).
+    let offset: [[i64; 4]; 3] = std::array::from_fn(|k| [0, a[k], b[k], a[k] + b[k]]);
+    let step: [i64; 3] = std::array::from_fn(|k| 2 * a[k]);
+    // The edges that only decrease to the right (bit k).
+    let decreasing = (0..3).fold(0u8, |m, k| m | (u8::from(a[k] <= 0) << k));
     let (x0, y0) = (r.0 & !1, r.1 & !1);
     let mut qy = y0;
     while qy < r.3 {
         // Pixel rows of the quad row inside r: bits 0–1 and 2–3.
         let rows = (if qy >= r.1 { 0b0011u8 } else { 0 }) | (if qy + 1 < r.3 { 0b1100 } else { 0 });
-        let mut g = [0i64; 3];
-        for k in 0..3 {
-            g[k] = a[k] * x0 + b[k] * qy + c[k];
-        }
+        let mut v: [[i64; 4]; 3] = std::array::from_fn(|k| {
+            let g = a[k] * x0 + b[k] * qy + c[k];
+            offset[k].map(|o| g + o)
+        });
+        // The row's quads are written in place without a branch on their
+        // coverage (which does not predict at a triangle's edges): each
+        // is stored at `n`, which moves past it only when it covers a
+        // pixel; the slots are made first and the unused ones dropped.
+        let start = out.len();
+        out.resize(start + ((r.2 - x0 + 1) / 2) as usize, (0, 0, 0));
+        let mut n = start;
         let mut qx = x0;
         while qx < r.2 {
             let cols =
                 (if qx >= r.0 { 0b0101u8 } else { 0 }) | (if qx + 1 < r.2 { 0b1010 } else { 0 });
-            let mut neg = [0i64; 4];
-            let mut ends = false;
-            for k in 0..3 {
-                let v = [g[k], g[k] + a[k], g[k] + b[k], g[k] + a[k] + b[k]];
-                for (n, &v) in neg.iter_mut().zip(&v) {
-                    *n |= v;
+            // Per edge, the pixels where it is negative.
+            let negative: [u8; 3] =
+                std::array::from_fn(|k| (0..4).fold(0u8, |m, i| m | (u8::from(v[k][i] < 0) << i)));
+            let mask = !(negative[0] | negative[1] | negative[2]) & rows & cols;
+            // Negative on the whole quad: nothing covered here or further
+            // right.
+            let ends = (0..3).any(|k| decreasing & (1 << k) != 0 && negative[k] == 0xf);
+            for (vk, &s) in v.iter_mut().zip(&step) {
+                for x in vk.iter_mut() {
+                    *x += s;
                 }
-                ends |= a[k] <= 0 && (v[0] & v[1] & v[2] & v[3]) < 0;
-                g[k] += 2 * a[k];
             }
-            let mut mask = 0u8;
-            for (bit, &n) in neg.iter().enumerate() {
-                mask |= u8::from(n >= 0) << bit;
-            }
-            let mask = mask & rows & cols;
-            if mask != 0 {
-                out.push((qx, qy, mask));
-            } else if ends {
+            if ends {
                 break;
             }
+            if let Some(slot) = out.get_mut(n) {
+                *slot = (qx, qy, mask);
+            }
+            n += usize::from(mask != 0);
             qx += 2;
         }
+        out.truncate(n);
         qy += 2;
     }
 }

@@ -3,7 +3,7 @@
 //! per-fragment operations in order.
 
 use crate::ex::{Batch, ExecError, Textures, LANES};
-use crate::fragment_ops::{self, Fragment, QuickOps};
+use crate::fragment_ops::{self, Fragment, QuickOps, QuickTarget};
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
 use crate::linkage::FsLayout;
 use crate::rasterize::{PixelRect, QuadInterp, Shape};
@@ -82,6 +82,20 @@ impl Quad {
         self.zf = fragment_ops::depth_to_fixed4(self.z);
     }
 
+    /// [`Quad::set`] with the interpolation inlined into the caller
+    /// ([`Shape::interp_quad_z_inline`]): the same values.
+    #[inline(always)]
+    fn set_inline(&mut self, prim: &Prim, qx: i64, qy: i64, mask: u8) {
+        self.x = qx;
+        self.y = qy;
+        self.live = mask;
+        prim.shape.interp_quad_z_inline(qx, qy, &mut self.it);
+        for (z, &iz) in self.z.iter_mut().zip(&self.it.z) {
+            *z = clamp01(iz + prim.z_offset);
+        }
+        self.zf = fragment_ops::depth_to_fixed4(self.z);
+    }
+
     /// The interpolation weights and 1/w after [`Quad::set`] (left out
     /// for quads that early depth rejection drops entirely).
     #[inline(always)]
@@ -122,6 +136,24 @@ impl<'p> Entry<'p> {
     fn finish(&mut self, isa: Isa) {
         if let Some(prim) = self.prim {
             self.quad.finish(isa, prim);
+        }
+    }
+
+    /// [`Entry::set`] with [`Quad::set_inline`].
+    #[inline(always)]
+    fn set_inline(&mut self, prim: &'p Prim, index: u32, (qx, qy, mask): (i64, i64, u8)) {
+        self.prim = Some(prim);
+        self.index = index;
+        self.write = 0;
+        self.quad.set_inline(prim, qx, qy, mask);
+    }
+
+    /// [`Entry::finish`] inlined into the caller
+    /// ([`Shape::interp_quad_finish_inline`]).
+    #[inline(always)]
+    fn finish_inline(&mut self) {
+        if let Some(prim) = self.prim {
+            prim.shape.interp_quad_finish_inline(&mut self.quad.it);
         }
     }
 }
@@ -252,10 +284,19 @@ pub(crate) struct FillLink {
     kind: FillKind,
 }
 
+/// Where [`FragmentStage::shade_batched`] sends a tile's fragments: quick
+/// operations with a qualifying colour write over the tile's buffers
+/// (and that colour's fragment output), or the tile itself.
+enum Sink<'f> {
+    Quick(QuickTarget<'f>, usize),
+    General(&'f mut Framebuffer, Option<QuickOps>),
+}
+
 /// How many primitives of a bin ahead [`FragmentStage::prefetch_ahead`]
 /// fetches varyings and set-up.
 const ATTRS_AHEAD: usize = 6;
 const PRIM_AHEAD: usize = 16;
+const SLOT_AHEAD: usize = 2 * PRIM_AHEAD;
 
 /// No primitive (in the per-pixel winner table of a deferred tile).
 const NO_PRIM: u32 = u32::MAX;
@@ -369,9 +410,18 @@ impl<'a> FragmentStage<'a> {
     /// need: the varyings of the one [`ATTRS_AHEAD`] later, the set-up of
     /// the one [`PRIM_AHEAD`] later (far enough for a memory access when
     /// primitives cover a pixel or two: a tile's primitives lie all over
-    /// the draw's). Only a hint: no effect on results.
+    /// the draw's), and the `prims` entry (the pointer to the set-up) of
+    /// the one [`SLOT_AHEAD`] later, which is read to find that set-up
+    /// (with many small primitives the pointer array does not stay in the
+    /// cache either). Only a hint: no effect on results.
     #[inline(always)]
     fn prefetch_ahead(&self, prims: &[&Prim], bin: &[u32], i: usize) {
+        if let Some(slot) = bin
+            .get(i + SLOT_AHEAD)
+            .and_then(|&p| prims.get(p as usize..p as usize + 1))
+        {
+            prefetch(slot);
+        }
         let at = |k: usize| bin.get(i + k).and_then(|&p| prims.get(p as usize));
         if let Some(&next) = at(ATTRS_AHEAD) {
             self.prefetch_attrs(next);
@@ -482,44 +532,8 @@ impl<'a> FragmentStage<'a> {
         quick: Option<&QuickOps>,
     ) {
         if let Some((quick, o)) = quick.and_then(|q| Some((q, q.color_output()?))) {
-            // The common states: the same operations per fragment, in the
-            // same order, without the general checks; a quad's four
-            // pixels (distinct) tested together, and without blending the
-            // batch's colours converted together.
             let mut target = quick.target(fb, origin);
-            let rgba = match batch.outputs.get(o..o + 4) {
-                Some([r, g, b, a]) if target.opaque() => {
-                    Some(fragment_ops::unorm8_lanes([r, g, b, a]))
-                }
-                _ => None,
-            };
-            for (q, e) in pending.iter().enumerate() {
-                let quad = &e.quad;
-                let lanes = quad.live & !(batch.discarded >> (4 * q)) as u8 & 0xf;
-                if lanes == 0 {
-                    continue;
-                }
-                let z = std::array::from_fn(|k| self.frag_z(batch, 4 * q + k, quad, k));
-                // Without gl_FragDepth, z is the quad's (in [0, 1]).
-                let zf = match self.layout.frag_depth {
-                    Some(_) => z.map(depth_to_fixed),
-                    None => quad.zf,
-                };
-                let (pass, index, inside) = target.test_quad((quad.x, quad.y), lanes, z, zf);
-                match rgba.as_ref().and_then(|c| c.get(4 * q..4 * q + 4)) {
-                    Some(&[c0, c1, c2, c3]) => {
-                        target.write_rgba8_quad(pass, index, inside, [c0, c1, c2, c3])
-                    }
-                    _ => {
-                        for (k, &index) in index.iter().enumerate() {
-                            if pass & (1 << k) != 0 {
-                                let lane = 4 * q + k;
-                                target.write(index, [0, 1, 2, 3].map(|j| get(batch, o + j, lane)));
-                            }
-                        }
-                    }
-                }
-            }
+            self.write_quick(&mut target, o, batch, pending);
             return;
         }
         let mut frag = Fragment {
@@ -534,6 +548,53 @@ impl<'a> FragmentStage<'a> {
             for k in 0..4 {
                 if self.fragment_into(batch, &e.quad, q, k, back, &mut frag) {
                     fragment_ops::process(fb, origin, self.state, &frag);
+                }
+            }
+        }
+    }
+
+    /// [`FragmentStage::write_batch`] through quick operations whose
+    /// colour write qualifies (to fragment output `o`).
+    #[inline(always)]
+    fn write_quick(&self, target: &mut QuickTarget, o: usize, batch: &Batch, pending: &[Entry]) {
+        {
+            // The common states: the same operations per fragment, in the
+            // same order, without the general checks; a quad's four
+            // pixels (distinct) tested together, and without blending the
+            // batch's colours converted together.
+            let rgba = match batch.outputs.get(o..o + 4) {
+                Some([r, g, b, a]) if target.opaque() => {
+                    Some(fragment_ops::unorm8_lanes([r, g, b, a]))
+                }
+                _ => None,
+            };
+            for (q, e) in pending.iter().enumerate() {
+                let quad = &e.quad;
+                let lanes = quad.live & !(batch.discarded >> (4 * q)) as u8 & 0xf;
+                if lanes == 0 {
+                    continue;
+                }
+                let z = || std::array::from_fn(|k| self.frag_z(batch, 4 * q + k, quad, k));
+                // Without gl_FragDepth, z is the quad's (in [0, 1]), its
+                // fixed-point depths known (and z needed only when the
+                // quad's lanes are tested one by one).
+                let zf = match self.layout.frag_depth {
+                    Some(_) => z().map(depth_to_fixed),
+                    None => quad.zf,
+                };
+                let (pass, index, inside) = target.test_quad_with((quad.x, quad.y), lanes, z, zf);
+                match rgba.as_ref().and_then(|c| c.get(4 * q..4 * q + 4)) {
+                    Some(&[c0, c1, c2, c3]) => {
+                        target.write_rgba8_quad(pass, index, inside, [c0, c1, c2, c3])
+                    }
+                    _ => {
+                        for (k, &index) in index.iter().enumerate() {
+                            if pass & (1 << k) != 0 {
+                                let lane = 4 * q + k;
+                                target.write(index, [0, 1, 2, 3].map(|j| get(batch, o + j, lane)));
+                            }
+                        }
+                    }
                 }
             }
         }
@@ -633,7 +694,13 @@ impl<'a> FragmentStage<'a> {
         } = scratch;
         *n = 0;
         let quick = QuickOps::new(fb, self.state, &self.colors_out);
-        let quick = quick.as_ref();
+        // With quick operations whose colour write qualifies, the tile's
+        // buffers are borrowed once for the whole bin (early depth
+        // rejection reads them there); else through `fb` per batch.
+        let mut sink = match quick.and_then(|q| Some((q, q.color_output()?))) {
+            Some((q, o)) => Sink::Quick(q.target(fb, origin), o),
+            None => Sink::General(fb, quick),
+        };
         for (i, &p) in bin.iter().enumerate() {
             let Some(&prim) = prims.get(p as usize) else {
                 continue;
@@ -642,26 +709,57 @@ impl<'a> FragmentStage<'a> {
             prim.shape.quads_into(clip_to(prim, tile), quads);
             for &quad in quads.iter() {
                 let Some(e) = slots.get_mut(*n) else { break };
-                e.set(self.isa, prim, p, quad, 0);
+                // Inlined: this loop is compiled per instruction set.
+                e.set_inline(prim, p, quad);
                 if self.early {
-                    self.early_rejects(fb, origin, prim, &mut e.quad);
+                    match &sink {
+                        // No stencil test (else no quick operations): the
+                        // depth test alone (`early_rejects`).
+                        Sink::Quick(t, _) => {
+                            let q = &mut e.quad;
+                            q.live = t.depth_live((q.x, q.y), q.live, q.zf);
+                        }
+                        Sink::General(fb, _) => self.early_rejects(fb, origin, prim, &mut e.quad),
+                    }
                 }
                 if e.quad.live == 0 {
                     continue;
                 }
-                e.finish(self.isa);
+                e.finish_inline();
                 *n += 1;
                 if *n == LANES / 4 {
-                    self.flush_batched(fb, origin, batch, slots, quick)?;
+                    self.flush_sink(&mut sink, origin, batch, slots)?;
                     *n = 0;
                 }
             }
         }
         if *n > 0 {
-            self.flush_batched(fb, origin, batch, &slots[..*n], quick)?;
+            self.flush_sink(&mut sink, origin, batch, &slots[..*n])?;
             *n = 0;
         }
         Ok(())
+    }
+
+    /// [`FragmentStage::flush_batched`] into `sink`.
+    #[inline(always)]
+    fn flush_sink(
+        &self,
+        sink: &mut Sink,
+        origin: (u32, u32),
+        batch: &mut Batch,
+        pending: &[Entry],
+    ) -> Result<(), ExecError> {
+        match sink {
+            Sink::Quick(target, o) => {
+                self.fill(batch, pending, &self.fills);
+                self.run_shader(batch)?;
+                self.write_quick(target, *o, batch, pending);
+                Ok(())
+            }
+            Sink::General(fb, quick) => {
+                self.flush_batched(fb, origin, batch, pending, quick.as_ref())
+            }
+        }
     }
 
     /// Whether [`FragmentStage::shade_batched`] gives the bytes of
