@@ -1514,7 +1514,7 @@ impl<'a> FragmentStage<'a> {
                     prim.shape.quads_into(clip_to(prim, tile), quads);
                     let Some(e) = slots.first_mut() else { break };
                     for &quad in quads.iter() {
-                        e.set(self.isa, prim, p, quad, 0);
+                        e.set_inline(prim, p, quad);
                         let qd = &e.quad;
                         let z = qd.z.map(|z| z as f32);
                         let (pass, index, _) = target.test_quad((qd.x, qd.y), qd.live, z, qd.zf);
@@ -1542,7 +1542,7 @@ impl<'a> FragmentStage<'a> {
                     prim.shape.quads_into(clip_to(prim, tile), quads);
                     for &quad in quads.iter() {
                         let Some(e) = pending.get_mut(*n) else { break };
-                        e.set(self.isa, prim, p, quad, 0);
+                        e.set_inline(prim, p, quad);
                         if early {
                             self.early_rejects(fb, origin, prim, &mut e.quad);
                             if e.quad.live == 0 {
@@ -1550,7 +1550,7 @@ impl<'a> FragmentStage<'a> {
                             }
                         }
                         if weights {
-                            e.finish(self.isa);
+                            e.finish_inline();
                         }
                         e.write = e.quad.live;
                         let write = e.write;
@@ -1604,8 +1604,9 @@ impl<'a> FragmentStage<'a> {
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
                     let Some(e) = pending.get_mut(*n) else { break };
                     self.prefetch_attrs(prim);
-                    e.set(self.isa, prim, p, (qx, qy, live), write);
-                    e.finish(self.isa);
+                    e.set_inline(prim, p, (qx, qy, live));
+                    e.write = write;
+                    e.finish_inline();
                     if let Some((count, spill)) = admit(pack_colors, n, &mut used, write) {
                         self.color_pass(&pass, fb, batch, &pending[..count])?;
                         if spill {
