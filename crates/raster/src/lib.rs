@@ -87,7 +87,11 @@
 //! order and remembers the winning primitive per pixel, then runs the full
 //! stage once per winning (primitive, 2×2 quad), with the same inputs,
 //! coverage and helper lanes as the straightforward path, and writes the
-//! colors. The bytes are those of the straightforward path (tests compare
+//! colors. A pass whose stage has independent lanes
+//! ([`ShaderStage::lanes_independent`]) packs the pixels it runs of up to
+//! 16 quads into each batch, without helper lanes (a lane's results do
+//! not depend on its neighbours then). The bytes are those of the
+//! straightforward path (tests compare
 //! both); on a shader error the tile is redrawn the straightforward way so
 //! errors and partial results are unchanged. The debugger's probe always
 //! takes the straightforward path.
