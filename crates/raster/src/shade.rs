@@ -166,7 +166,7 @@ pub(crate) struct Scratch<'p> {
     slots: [Entry<'p>; LANES / 4],
     n: usize,
     quads: Vec<(i64, i64, u8)>,
-    /// The quads of a packed batch ([`FragmentStage::fill_packed`]): up
+    /// The quads of a packed batch ([`FragmentStage::fill_packed_with`]): up
     /// to one per lane.
     packed: Box<[Entry<'p>; LANES]>,
 }
@@ -193,7 +193,7 @@ fn quads_mask(quads: usize) -> u32 {
 }
 
 /// For each 4-bit pixel set, its pixels in increasing order (then
-/// zeros): where [`FragmentStage::fill_packed`] takes a quad's lanes from.
+/// zeros): where [`FragmentStage::fill_packed_with`] takes a quad's lanes from.
 const COMPRESS: [[u8; 4]; 16] = {
     let mut t = [[0u8; 4]; 16];
     let mut m = 0;
@@ -230,7 +230,7 @@ struct DeferredPass<'d> {
     /// Whether the slice runs (else the pass only depth-tests).
     run_slice: bool,
     /// Whether the slice and the full shader run packed batches
-    /// ([`FragmentStage::fill_packed`]).
+    /// ([`FragmentStage::fill_packed_with`]).
     pack_depth: bool,
     pack_colors: bool,
 }
@@ -238,7 +238,7 @@ struct DeferredPass<'d> {
 /// Takes the quad just set at `pending[*n]` (running the pixels
 /// `write`) into a batch being gathered, `*lanes` lanes of it used so
 /// far: a quad per 4 lanes, or with `packed` its pixels of `write` only
-/// ([`FragmentStage::fill_packed`]). Returns `Some((count, spill))` when
+/// ([`FragmentStage::fill_packed_with`]). Returns `Some((count, spill))` when
 /// `pending[..count]` is to run now: with `spill` the new quad did not
 /// fit and is to be moved to `pending[0]`, where the next batch starts.
 fn admit(packed: bool, n: &mut usize, lanes: &mut usize, write: u8) -> Option<(usize, bool)> {
@@ -669,7 +669,7 @@ impl<'a> FragmentStage<'a> {
         pending: &[Entry],
         quick: Option<&QuickOps>,
     ) -> Result<(), ExecError> {
-        self.fill(batch, pending, &self.fills);
+        self.fill(batch, pending, &self.fills, false);
         self.run_shader(batch)?;
         self.write_batch(fb, origin, batch, pending, quick);
         Ok(())
@@ -751,7 +751,7 @@ impl<'a> FragmentStage<'a> {
     ) -> Result<(), ExecError> {
         match sink {
             Sink::Quick(target, o) => {
-                self.fill(batch, pending, &self.fills);
+                self.fill(batch, pending, &self.fills, false);
                 self.run_shader(batch)?;
                 self.write_quick(target, *o, batch, pending);
                 Ok(())
@@ -862,15 +862,17 @@ impl<'a> FragmentStage<'a> {
     /// a stage that does not read them otherwise (stages never write their
     /// inputs). With fewer than `LANES / 4` quads every input is cleared
     /// first, so the lanes of absent quads read zeros.
-    fn fill(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
+    ///
+    /// With `packed`, [`FragmentStage::fill_packed_with`]'s batch instead.
+    fn fill(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink], packed: bool) {
         match self.isa {
             #[cfg(target_arch = "x86_64")]
             Isa::Avx2 | Isa::Avx512 => {
                 // SAFETY: `isa` is only Avx2 or Avx512 when the CPU has
                 // AVX2 (`simd::detect`).
-                unsafe { self.fill_avx2(batch, pending, plan) }
+                unsafe { self.fill_avx2(batch, pending, plan, packed) }
             }
-            _ => self.fill_with(batch, pending, plan),
+            _ => self.fill_with(batch, pending, plan, packed),
         }
     }
 
@@ -878,12 +880,21 @@ impl<'a> FragmentStage<'a> {
     /// four pixels' f64 arithmetic in one register instead of two).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    unsafe fn fill_avx2(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
-        self.fill_with(batch, pending, plan)
+    unsafe fn fill_avx2(
+        &self,
+        batch: &mut Batch,
+        pending: &[Entry],
+        plan: &[FillLink],
+        packed: bool,
+    ) {
+        self.fill_with(batch, pending, plan, packed)
     }
 
     #[inline(always)]
-    fn fill_with(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
+    fn fill_with(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink], packed: bool) {
+        if packed {
+            return self.fill_packed_with(batch, pending, plan);
+        }
         let pending = pending.get(..LANES / 4).unwrap_or(pending);
         if pending.len() < LANES / 4 {
             for c in batch.inputs.iter_mut() {
@@ -918,25 +929,6 @@ impl<'a> FragmentStage<'a> {
     /// the inputs [`FragmentStage::fill`] gives its pixel (the same f64
     /// arithmetic), so its outputs are those of the quad-at-once path.
     /// Lanes past the last are zero.
-    fn fill_packed(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
-        match self.isa {
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 | Isa::Avx512 => {
-                // SAFETY: `isa` is only Avx2 or Avx512 when the CPU has
-                // AVX2 (`simd::detect`).
-                unsafe { self.fill_packed_avx2(batch, pending, plan) }
-            }
-            _ => self.fill_packed_with(batch, pending, plan),
-        }
-    }
-
-    /// [`FragmentStage::fill_packed`] compiled for AVX2.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    unsafe fn fill_packed_avx2(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
-        self.fill_packed_with(batch, pending, plan)
-    }
-
     #[inline(always)]
     fn fill_packed_with(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink]) {
         let mut total = 0;
@@ -1146,7 +1138,7 @@ impl<'a> FragmentStage<'a> {
         pending: &[Entry],
         batch: &mut Batch,
     ) -> Result<(), ExecError> {
-        self.fill(batch, pending, &self.fills);
+        self.fill(batch, pending, &self.fills, false);
         let live_mask = batch.active & !batch.helper;
         let probed = self.probe.and_then(|p| {
             let lane = pending.iter().enumerate().find_map(|(q, e)| {
@@ -1305,12 +1297,8 @@ impl<'a> FragmentStage<'a> {
         winner: &mut [(u32, u8)],
         pending: &[Entry],
     ) -> Result<(), ExecError> {
-        match (pass.run_slice, pass.pack_depth) {
-            (true, true) => self.fill_packed(batch, pending, &self.depth_fills),
-            (true, false) => self.fill(batch, pending, &self.depth_fills),
-            _ => {}
-        }
         if pass.run_slice {
+            self.fill(batch, pending, &self.depth_fills, pass.pack_depth);
             self.run_depth(pass.depth, batch)?;
         } else {
             batch.discarded = 0;
@@ -1401,10 +1389,7 @@ impl<'a> FragmentStage<'a> {
         batch: &mut Batch,
         todo: &[Entry],
     ) -> Result<(), ExecError> {
-        match pass.pack_colors {
-            true => self.fill_packed(batch, todo, &self.fills),
-            false => self.fill(batch, todo, &self.fills),
-        }
+        self.fill(batch, todo, &self.fills, pass.pack_colors);
         self.run_shader(batch)?;
         // (lane, pixel index) of the fragments to write, in order.
         let mut writes = [(0usize, 0usize); LANES];
