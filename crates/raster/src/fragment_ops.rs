@@ -418,29 +418,8 @@ impl QuickTarget<'_> {
         let Some((func, depth)) = &self.depth else {
             return live;
         };
-        let (lx, ly) = (x - self.origin.0 as i64, y - self.origin.1 as i64);
-        let (w, h) = (self.width as i64, self.height as i64);
-        if lx >= 0 && ly >= 0 && lx + 1 < w && ly + 1 < h {
-            // The whole quad in the target: its four depths at once.
-            let i0 = (ly * w + lx) as usize;
-            let index = [i0, i0 + 1, i0 + w as usize, i0 + w as usize + 1];
-            if let Some(last) = depth.get(..=index[3]) {
-                let stored = index.map(|i| last[i]);
-                return live & depth_pass_mask(*func, zf, stored);
-            }
-        }
-        let mut live = live;
-        for (k, &zf) in zf.iter().enumerate() {
-            let (lx, ly) = (lx + (k as i64 & 1), ly + (k as i64 >> 1));
-            if live & (1 << k) == 0 || lx < 0 || ly < 0 || lx >= w || ly >= h {
-                continue;
-            }
-            let stored = depth.get((ly * w + lx) as usize).copied().unwrap_or(0);
-            if !func.test(zf, stored) {
-                live &= !(1 << k);
-            }
-        }
-        live
+        let at = (x - self.origin.0 as i64, y - self.origin.1 as i64);
+        depth_live_in(*func, depth, (self.width, self.height), at, live, zf)
     }
 
     /// [`QuickTarget::test`] of the lanes `lanes` of the quad at window
@@ -664,6 +643,43 @@ fn blend_pair(old: [[u8; 4]; 2], new: [[u8; 4]; 2], bits: u8) -> [[u8; 4]; 2] {
     let m = wide([lane(0), lane(1)]);
     let [a, b, c, d, e, f, g, h] = ((wide(new) & m) | (wide(old) & !m)).to_ne_bytes();
     [[a, b, c, d], [e, f, g, h]]
+}
+
+/// The lanes of `live` of the quad at (lx, ly) of a `w`×`h` depth buffer
+/// `depth` (pixel `k` at `(lx + (k & 1), ly + (k >> 1))`, fixed-point
+/// depth `zf[k]`) that `func` does not reject against the stored depths;
+/// pixels outside the buffer are kept. The whole quad inside: its four
+/// depths at once.
+#[inline(always)]
+pub(crate) fn depth_live_in(
+    func: CompareFunc,
+    depth: &[u32],
+    (w, h): (u32, u32),
+    (lx, ly): (i64, i64),
+    live: u8,
+    zf: [u32; 4],
+) -> u8 {
+    let (w, h) = (w as i64, h as i64);
+    if lx >= 0 && ly >= 0 && lx + 1 < w && ly + 1 < h {
+        let i0 = (ly * w + lx) as usize;
+        let index = [i0, i0 + 1, i0 + w as usize, i0 + w as usize + 1];
+        if let Some(last) = depth.get(..=index[3]) {
+            let stored = index.map(|i| last[i]);
+            return live & depth_pass_mask(func, zf, stored);
+        }
+    }
+    let mut live = live;
+    for (k, &zf) in zf.iter().enumerate() {
+        let (lx, ly) = (lx + (k as i64 & 1), ly + (k as i64 >> 1));
+        if live & (1 << k) == 0 || lx < 0 || ly < 0 || lx >= w || ly >= h {
+            continue;
+        }
+        let stored = depth.get((ly * w + lx) as usize).copied().unwrap_or(0);
+        if !func.test(zf, stored) {
+            live &= !(1 << k);
+        }
+    }
+    live
 }
 
 /// The lanes `k` where `func.test(zf[k], stored[k])`, the comparison

@@ -799,35 +799,9 @@ impl<'a> FragmentStage<'a> {
             let (Some(func), Some(depth)) = (self.state.depth_test, fb.depth.as_deref()) else {
                 return;
             };
-            let (lx, ly) = (quad.x - origin.0 as i64, quad.y - origin.1 as i64);
-            let (w, h) = (fb.width as i64, fb.height as i64);
-            if lx >= 0 && ly >= 0 && lx + 1 < w && ly + 1 < h {
-                // The whole quad in the tile: its four depths at once.
-                let i0 = (ly * w + lx) as usize;
-                let index = [i0, i0 + 1, i0 + w as usize, i0 + w as usize + 1];
-                if let Some(last) = depth.get(..=index[3]) {
-                    let stored = index.map(|i| last[i]);
-                    quad.live &= fragment_ops::depth_pass_mask(func, quad.zf, stored);
-                    return;
-                }
-            }
-            for k in 0..4usize {
-                let (x, y) = quad.pixel(k);
-                let (lx, ly) = (x - origin.0 as i64, y - origin.1 as i64);
-                if quad.live & (1 << k) == 0
-                    || lx < 0
-                    || ly < 0
-                    || lx >= fb.width as i64
-                    || ly >= fb.height as i64
-                {
-                    continue;
-                }
-                let index = ly as usize * fb.width as usize + lx as usize;
-                let stored = depth.get(index).copied().unwrap_or(0);
-                if !func.test(quad.zf[k], stored) {
-                    quad.live &= !(1 << k);
-                }
-            }
+            let at = (quad.x - origin.0 as i64, quad.y - origin.1 as i64);
+            let size = (fb.width, fb.height);
+            quad.live = fragment_ops::depth_live_in(func, depth, size, at, quad.live, quad.zf);
             return;
         }
         for k in 0..4usize {
