@@ -455,7 +455,8 @@ impl QuickTarget<'_> {
         let (lx, ly) = (x - self.origin.0 as i64, y - self.origin.1 as i64);
         let (w, h) = (self.width as i64, self.height as i64);
         let inside = self.scissor.is_none() && lx >= 0 && ly >= 0 && lx + 1 < w && ly + 1 < h;
-        let i0 = (ly * w + lx) as usize;
+        // (Meaningful only inside, where it cannot overflow.)
+        let i0 = if inside { (ly * w + lx) as usize } else { 0 };
         let index = [i0, i0 + 1, i0 + w as usize, i0 + w as usize + 1];
         // Every buffer holds the whole tile (else the lanes go one by
         // one, as `test` skips the depth test of pixels it lacks).
