@@ -185,11 +185,7 @@ pub(crate) struct Place {
 
 /// Bit set in a lane mask for the `LANES / 4` quads of a batch.
 fn quads_mask(quads: usize) -> u32 {
-    if quads >= LANES / 4 {
-        u32::MAX >> (32 - LANES)
-    } else {
-        (1u32 << (4 * quads)) - 1
-    }
+    lanes_mask(quads.saturating_mul(4))
 }
 
 /// For each 4-bit pixel set, its pixels in increasing order (then
