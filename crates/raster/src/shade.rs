@@ -72,24 +72,24 @@ impl Quad {
     /// interpolation.
     #[inline(always)]
     fn set(&mut self, isa: Isa, prim: &Prim, qx: i64, qy: i64, mask: u8) {
-        self.x = qx;
-        self.y = qy;
-        self.live = mask;
+        (self.x, self.y, self.live) = (qx, qy, mask);
         prim.shape.interp_quad_z(isa, qx, qy, &mut self.it);
-        for (z, &iz) in self.z.iter_mut().zip(&self.it.z) {
-            *z = clamp01(iz + prim.z_offset);
-        }
-        self.zf = fragment_ops::depth_to_fixed4(self.z);
+        self.window_z(prim);
     }
 
     /// [`Quad::set`] with the interpolation inlined into the caller
     /// ([`Shape::interp_quad_z_inline`]): the same values.
     #[inline(always)]
     fn set_inline(&mut self, prim: &Prim, qx: i64, qy: i64, mask: u8) {
-        self.x = qx;
-        self.y = qy;
-        self.live = mask;
+        (self.x, self.y, self.live) = (qx, qy, mask);
         prim.shape.interp_quad_z_inline(qx, qy, &mut self.it);
+        self.window_z(prim);
+    }
+
+    /// The final window z per pixel (offset, clamped) and its fixed point,
+    /// from the interpolated z.
+    #[inline(always)]
+    fn window_z(&mut self, prim: &Prim) {
         for (z, &iz) in self.z.iter_mut().zip(&self.it.z) {
             *z = clamp01(iz + prim.z_offset);
         }
@@ -141,10 +141,16 @@ impl<'p> Entry<'p> {
 
     /// [`Entry::set`] with [`Quad::set_inline`].
     #[inline(always)]
-    fn set_inline(&mut self, prim: &'p Prim, index: u32, (qx, qy, mask): (i64, i64, u8)) {
+    fn set_inline(
+        &mut self,
+        prim: &'p Prim,
+        index: u32,
+        (qx, qy, mask): (i64, i64, u8),
+        write: u8,
+    ) {
         self.prim = Some(prim);
         self.index = index;
-        self.write = 0;
+        self.write = write;
         self.quad.set_inline(prim, qx, qy, mask);
     }
 
@@ -206,6 +212,22 @@ const COMPRESS: [[u8; 4]; 16] = {
     }
     t
 };
+
+/// The lane of pixel `k` of `e`, the `q`-th quad of a batch: `4q + k`,
+/// or in a packed batch the next lane (`*next`, then counted) when the
+/// quad runs that pixel (`e.write`), else none. Called for the quads in
+/// order, each one's pixels in order.
+#[inline(always)]
+fn lane_of(packed: bool, q: usize, e: &Entry, k: usize, next: &mut usize) -> Option<usize> {
+    match packed {
+        true if e.write & (1 << k) != 0 => {
+            *next += 1;
+            Some(*next - 1)
+        }
+        true => None,
+        false => Some(4 * q + k),
+    }
+}
 
 /// Bit set in a lane mask for the first `lanes` lanes of a batch.
 fn lanes_mask(lanes: usize) -> u32 {
@@ -706,7 +728,7 @@ impl<'a> FragmentStage<'a> {
             for &quad in quads.iter() {
                 let Some(e) = slots.get_mut(*n) else { break };
                 // Inlined: this loop is compiled per instruction set.
-                e.set_inline(prim, p, quad);
+                e.set_inline(prim, p, quad, 0);
                 if self.early {
                     match &sink {
                         // No stencil test (else no quick operations): the
@@ -1281,13 +1303,8 @@ impl<'a> FragmentStage<'a> {
             let mut alive = 0u8;
             let mut z = [0f32; 4];
             for (k, z) in z.iter_mut().enumerate() {
-                let lane = match pass.pack_depth {
-                    true if e.write & (1 << k) != 0 => {
-                        next += 1;
-                        next - 1
-                    }
-                    true => continue,
-                    false => 4 * q + k,
+                let Some(lane) = lane_of(pass.pack_depth, q, e, k, &mut next) else {
+                    continue;
                 };
                 if quad.live & (1 << k) != 0 && batch.discarded & (1 << lane) == 0 {
                     alive |= 1 << k;
@@ -1367,17 +1384,10 @@ impl<'a> FragmentStage<'a> {
         let mut next = 0;
         for (q, e) in todo.iter().enumerate() {
             for k in 0..4 {
-                if e.write & (1 << k) == 0 {
+                let Some(lane) = lane_of(pass.pack_colors, q, e, k, &mut next) else {
                     continue;
-                }
-                let lane = match pass.pack_colors {
-                    true => {
-                        next += 1;
-                        next - 1
-                    }
-                    false => 4 * q + k,
                 };
-                if batch.discarded & (1 << lane) != 0 {
+                if e.write & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
                     continue;
                 }
                 let (x, y) = e.quad.pixel(k);
@@ -1469,7 +1479,7 @@ impl<'a> FragmentStage<'a> {
                     prim.shape.quads_into(clip_to(prim, tile), quads);
                     let Some(e) = slots.first_mut() else { break };
                     for &quad in quads.iter() {
-                        e.set_inline(prim, p, quad);
+                        e.set_inline(prim, p, quad, 0);
                         let qd = &e.quad;
                         let z = qd.z.map(|z| z as f32);
                         let (pass, index, _) = target.test_quad((qd.x, qd.y), qd.live, z, qd.zf);
@@ -1497,7 +1507,7 @@ impl<'a> FragmentStage<'a> {
                     prim.shape.quads_into(clip_to(prim, tile), quads);
                     for &quad in quads.iter() {
                         let Some(e) = pending.get_mut(*n) else { break };
-                        e.set_inline(prim, p, quad);
+                        e.set_inline(prim, p, quad, 0);
                         if early {
                             self.early_rejects(fb, origin, prim, &mut e.quad);
                             if e.quad.live == 0 {
@@ -1559,8 +1569,7 @@ impl<'a> FragmentStage<'a> {
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
                     let Some(e) = pending.get_mut(*n) else { break };
                     self.prefetch_attrs(prim);
-                    e.set_inline(prim, p, (qx, qy, live));
-                    e.write = write;
+                    e.set_inline(prim, p, (qx, qy, live), write);
                     e.finish_inline();
                     if let Some((count, spill)) = admit(pack_colors, n, &mut used, write) {
                         self.color_pass(&pass, fb, batch, &pending[..count])?;
