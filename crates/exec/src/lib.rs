@@ -667,6 +667,7 @@ impl Kernel {
     /// module's determinism rule).
     pub fn lanes_independent(&self) -> bool {
         use program::Op;
+        // (Texture and print ops refer to these tables.)
         self.stage != glsl::Stage::Fragment
             || (self.program.textures.is_empty()
                 && self.program.printfs.is_empty()
@@ -674,7 +675,7 @@ impl Kernel {
                     .program
                     .ops
                     .iter()
-                    .any(|op| matches!(op, Op::DdX { .. } | Op::DdY { .. } | Op::Texture { .. })))
+                    .any(|op| matches!(op, Op::DdX { .. } | Op::DdY { .. })))
     }
 
     /// Number of instructions (a size measure).

@@ -348,6 +348,10 @@ pub(crate) struct FragmentStage<'a> {
     /// `shader`'s and `deferred`'s uniform-only values, once per draw.
     prepared: Option<crate::ex::Prepared>,
     deferred_prepared: Option<crate::ex::Prepared>,
+    /// Whether `shader`'s and `deferred`'s lanes are independent
+    /// ([`ShaderStage::lanes_independent`]), asked once per draw.
+    lanes_independent: bool,
+    deferred_lanes_independent: bool,
 }
 
 impl<'a> FragmentStage<'a> {
@@ -419,6 +423,8 @@ impl<'a> FragmentStage<'a> {
             early: layout.frag_depth.is_none(),
             prepared: shader.prepare(uniforms),
             deferred_prepared: deferred.as_ref().and_then(|d| d.prepare(uniforms)),
+            lanes_independent: shader.lanes_independent(),
+            deferred_lanes_independent: deferred.as_ref().is_some_and(|d| d.lanes_independent()),
             deferred,
             probe,
         }
@@ -1455,8 +1461,8 @@ impl<'a> FragmentStage<'a> {
         let run_slice = !depth.does_nothing() || self.layout.frag_depth.is_some();
         // Stages whose lanes are independent run the covered pixels of up
         // to `LANES` quads per batch, without helper lanes.
-        let pack_depth = run_slice && depth.lanes_independent();
-        let pack_colors = self.shader.lanes_independent();
+        let pack_depth = run_slice && self.deferred_lanes_independent;
+        let pack_colors = self.lanes_independent;
         let pass = DeferredPass {
             depth,
             origin,
