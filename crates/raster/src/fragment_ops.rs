@@ -923,6 +923,13 @@ mod tests {
         }
     }
 
+    /// The 12×10 RGBA8 tile with depth of the quick-path tests, cleared.
+    fn tile_under_test() -> Framebuffer {
+        let mut fb = Framebuffer::new(12, 10, ColorFormat::Rgba8, true, false);
+        fb.clear_color(&[0], [0.2, 0.4, 0.6, 0.8], [true; 4], None);
+        fb.clear_depth(0.5, true, None);
+        fb
+    }
     #[test]
     fn every_blend_factor() {
         let s = [0.5, 0.25, 1.0, 0.75];
@@ -1128,9 +1135,7 @@ mod tests {
                     ..PipelineState::default()
                 };
                 let origin = (4, 2);
-                let mut want = Framebuffer::new(12, 10, ColorFormat::Rgba8, true, false);
-                want.clear_color(&[0], [0.2, 0.4, 0.6, 0.8], [true; 4], None);
-                want.clear_depth(0.5, true, None);
+                let mut want = tile_under_test();
                 let mut got = want.clone();
                 let ops = QuickOps::new(&got, &state, &[(0, 0)]).expect("qualifies");
                 for _ in 0..3000 {
@@ -1218,9 +1223,7 @@ mod tests {
                     ..PipelineState::default()
                 };
                 let origin = (4, 2);
-                let mut general = Framebuffer::new(12, 10, ColorFormat::Rgba8, true, false);
-                general.clear_color(&[0], [0.2, 0.4, 0.6, 0.8], [true; 4], None);
-                general.clear_depth(0.5, true, None);
+                let mut general = tile_under_test();
                 let mut quick = general.clone();
                 let ops = QuickOps::new(&quick, &state, &[(0, 0)]).expect("qualifies");
                 assert_eq!(ops.color_output(), Some(0));
