@@ -1246,6 +1246,28 @@ mod tests {
     use crate::texture::{Image, TextureUnit};
     use std::sync::Arc;
 
+    /// A lookup on unit 0's 2D texture for the lanes of `mask`, its LOD
+    /// from the derivatives `ddx`, `ddy` (no bias).
+    pub(super) fn request_2d(
+        coord: [[f32; LANES]; 4],
+        ddx: [[f32; LANES]; 3],
+        ddy: [[f32; LANES]; 3],
+        mask: u32,
+    ) -> SampleRequest {
+        SampleRequest {
+            unit: [0; LANES],
+            target: SamplerKind::Sampler2D,
+            coord,
+            compare: None,
+            lod: Lod::Derivatives {
+                ddx,
+                ddy,
+                bias: [0.0; LANES],
+            },
+            mask,
+        }
+    }
+
     /// A 2D texture with a full mipmap chain of random texels: unorm8,
     /// or arbitrary on the levels whose bit is set in `float`.
     fn random_texture(w: u32, h: u32, float: u32, seed: &mut u32) -> Texture {
@@ -1488,18 +1510,7 @@ mod tests {
                         ddy[0][l] = 0.1 * dt;
                         ddy[1][l] = dt;
                     }
-                    let req = SampleRequest {
-                        unit: [0; LANES],
-                        target: SamplerKind::Sampler2D,
-                        coord,
-                        compare: None,
-                        lod: Lod::Derivatives {
-                            ddx,
-                            ddy,
-                            bias: [0.0; LANES],
-                        },
-                        mask: [0xffff, 0xfff0, 0x0f0f][round % 3],
-                    };
+                    let req = request_2d(coord, ddx, ddy, [0xffff, 0xfff0, 0x0f0f][round % 3]);
                     let slow = general(&units, &req);
                     for &isa in &isas {
                         let mut fast = [[9.0; LANES]; 4];
@@ -1781,18 +1792,7 @@ mod bench {
                 ddx[1][l] = 0.1 * d;
                 ddy[1][l] = 1.7 * d;
             }
-            reqs.push(SampleRequest {
-                unit: [0; LANES],
-                target: SamplerKind::Sampler2D,
-                coord,
-                compare: None,
-                lod: Lod::Derivatives {
-                    ddx,
-                    ddy,
-                    bias: [0.0; LANES],
-                },
-                mask: 0xffff,
-            });
+            reqs.push(super::tests::request_2d(coord, ddx, ddy, 0xffff));
         }
         // The scene's filter; then LINEAR and NEAREST without mipmaps
         // (`BENCH_FILTERS=all`).
