@@ -303,10 +303,10 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
                 prologue.push(Op::Const { d: r, bits });
                 r
             })),
-            Op::Uniform { word, .. } => Some(*words.entry(word).or_insert_with(|| {
+            Op::Uniform { word, float, .. } => Some(*words.entry(word).or_insert_with(|| {
                 let r = next;
                 next += 1;
-                prologue.push(Op::Uniform { d: r, word });
+                prologue.push(Op::Uniform { d: r, word, float });
                 r
             })),
             _ if pure(op) && all_pool => {
@@ -446,6 +446,29 @@ fn ftz(x: f32) -> u32 {
         !0
     };
     b & keep
+}
+
+/// Word `w` of the uniforms (0 past the end), a float's subnormal read as
+/// zero.
+#[inline(always)]
+pub(crate) fn uniform_word(uniforms: &[u32], w: usize, float: bool) -> u32 {
+    let bits = uniforms.get(w).copied().unwrap_or(0);
+    if float {
+        ftz(f(bits))
+    } else {
+        bits
+    }
+}
+
+/// `a` with its subnormals flushed ([`ftz`]).
+pub(crate) fn flushed(a: &Lanes) -> Lanes {
+    a.map(|x| ftz(f(x)))
+}
+
+/// [`ftz`] as a float: the flushed intermediates of built-ins.
+#[inline(always)]
+fn fz(x: f32) -> f32 {
+    f(ftz(x))
 }
 
 #[inline(always)]
@@ -720,9 +743,9 @@ pub(crate) fn load(
 }
 
 /// [`load`] without the pool: at least `code.prog.registers` registers,
-/// the live-at-entry ones zeroed, initializers and inputs. Copies only
-/// (and exact conversions): compiled for the widest vectors the CPU has,
-/// the same values.
+/// the live-at-entry ones zeroed, initializers and inputs. Copies, exact
+/// conversions and the flush of subnormal float inputs (integer selects):
+/// compiled for the widest vectors the CPU has, the same values.
 pub(crate) fn load_inputs(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batch) {
     #[cfg(target_arch = "x86_64")]
     {
@@ -772,7 +795,8 @@ fn load_inputs_with(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batc
         let src = batch.inputs.get(ic).copied().unwrap_or([0.0; LANES]);
         if let Some(x) = file.get_mut(reg as usize) {
             *x = match kind {
-                Scalar::Float => src.map(f32::to_bits),
+                // Subnormal inputs enter as zero, as every float value.
+                Scalar::Float => lanes(|l| ftz(src[l])),
                 Scalar::Int => src.map(|v| v as i32 as u32),
                 Scalar::Bool => src.map(|v| (v != 0.0) as u32),
             };
@@ -780,23 +804,29 @@ fn load_inputs_with(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batc
     }
 }
 
-/// Copies the output registers of the active lanes into `batch.outputs`.
-/// `bits` as a float output: any NaN becomes the canonical quiet NaN.
+/// `bits` as a float output: any NaN becomes the canonical quiet NaN, a
+/// subnormal zero of its sign.
 ///
 /// Inside a kernel a NaN's payload is not fixed: with two NaN operands an
 /// IEEE operation returns one of them, and which one depends on the order
 /// the compiled code (the interpreter's build, the native code) put them
 /// in. GLSL 1.20 can observe a payload only through a float output (no
 /// bit casts; NaN converts to int as 0 and compares unordered), so outputs
-/// carry `0x7fc00000` and every variant writes the same bits.
-pub(crate) fn canonical_nan(bits: u32) -> u32 {
+/// carry `0x7fc00000` and every variant writes the same bits. Native code
+/// on x86-64 leaves subnormal results unflushed in its registers (it reads
+/// them as zero: `jit`), so outputs flush them.
+#[inline(always)]
+pub(crate) fn float_output(bits: u32) -> u32 {
+    // Selects only, so lane loops vectorize.
+    let flushed = ftz(f(bits));
     if bits & 0x7fff_ffff > 0x7f80_0000 {
         0x7fc0_0000
     } else {
-        bits
+        flushed
     }
 }
 
+/// Copies the output registers of the active lanes into `batch.outputs`.
 pub(crate) fn store_outputs(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
     #[cfg(target_arch = "x86_64")]
     {
@@ -843,7 +873,7 @@ fn store_outputs_with(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
             // The kind chosen once per output, the lanes selected without
             // branches (so the loops vectorize).
             let value: Lanes = match kind {
-                Scalar::Float => src.map(canonical_nan),
+                Scalar::Float => lanes(|l| float_output(src[l])),
                 Scalar::Int => src.map(|x| (x as i32 as f32).to_bits()),
                 Scalar::Bool => src.map(|x| ((x != 0) as u32 as f32).to_bits()),
             };
@@ -959,7 +989,7 @@ unsafe fn step(
             )
         }};
     }
-    let uni = |w: usize| uniforms.get(w).copied().unwrap_or(0);
+    let uni = |w: usize, float: bool| uniform_word(uniforms, w, float);
     let mut next = pc + 1;
     match i.op {
         Op::Const { d, bits } => put!(d, [bits; LANES]),
@@ -969,7 +999,7 @@ unsafe fn step(
             let dst = &mut *regs.add(d as usize);
             *dst = lanes(|l| (a[l] & mk[l]) | (dst[l] & !mk[l]));
         }
-        Op::Uniform { d, word } => put!(d, [uni(word as usize); LANES]),
+        Op::Uniform { d, word, float } => put!(d, [uni(word as usize, float); LANES]),
         Op::FAdd { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) + f(y))),
         Op::FSub { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) - f(y))),
         Op::FMul { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) * f(y))),
@@ -1002,12 +1032,12 @@ unsafe fn step(
             b,
             c,
         } => match func {
-            // The formulas of glsl::math, intermediates not flushed.
-            F3::Mix => tri!(d, a, b, c, |x, y, t| ftz(x * (1.0 - t) + y * t)),
+            // The formulas of glsl::math, with its flushed intermediates.
+            F3::Mix => tri!(d, a, b, c, |x, y, t| ftz(fz(x * (1.0 - t)) + fz(y * t))),
             F3::Clamp => tri!(d, a, b, c, |x, lo, hi| ftz(fmin(fmax(x, lo), hi))),
             F3::SmoothStep => tri!(d, a, b, c, |e0, e1, x| {
-                let t = fmin(fmax((x - e0) / (e1 - e0), 0.0), 1.0);
-                ftz(t * t * (3.0 - 2.0 * t))
+                let t = fmin(fmax(fz(fz(x - e0) / fz(e1 - e0)), 0.0), 1.0);
+                ftz(fz(t * t) * (3.0 - 2.0 * t))
             }),
         },
         Op::FLt { d, a, b } => bin!(d, a, b, |x, y| (f(x) < f(y)) as u32),
@@ -1057,17 +1087,27 @@ unsafe fn step(
                 }
             }
         }
-        Op::GatherUniform { d, word, off, max } => {
+        Op::GatherUniform {
+            d,
+            word,
+            off,
+            max,
+            float,
+        } => {
             let o = g!(off);
-            put!(d, lanes(|l| uni(word as usize + o[l].min(max) as usize)))
+            put!(
+                d,
+                lanes(|l| uni(word as usize + o[l].min(max) as usize, float))
+            )
         }
+        // Operands read flushed, as in texture lookups (see `floats`).
         Op::DdX { d, a } => {
             let a = g!(a);
-            put!(d, lanes(|l| (f(a[l | 1]) - f(a[l & !1])).to_bits()))
+            put!(d, lanes(|l| ftz(fz(f(a[l | 1])) - fz(f(a[l & !1])))))
         }
         Op::DdY { d, a } => {
             let a = g!(a);
-            put!(d, lanes(|l| (f(a[l | 2]) - f(a[l & !2])).to_bits()))
+            put!(d, lanes(|l| ftz(fz(f(a[l | 2])) - fz(f(a[l & !2])))))
         }
         Op::Noise { d, n, a, dims } => {
             let mut out = [[0u32; LANES]; 4];
@@ -1075,7 +1115,7 @@ unsafe fn step(
             for l in 0..LANES {
                 let mut x = [0f32; 4];
                 for (k, xk) in x.iter_mut().enumerate().take(dims as usize) {
-                    *xk = f(g!(a + k as u32)[l]);
+                    *xk = fz(f(g!(a + k as u32)[l]));
                 }
                 let x = &x[..(dims as usize).min(4)];
                 let v: [f32; 4] = match n {
@@ -1091,7 +1131,7 @@ unsafe fn step(
                     _ => math::noise4(x),
                 };
                 for k in 0..4 {
-                    out[k][l] = v[k].to_bits();
+                    out[k][l] = ftz(v[k]);
                 }
             }
             for (k, o) in out.iter().enumerate().take(n as usize) {
@@ -1254,7 +1294,7 @@ pub(crate) fn f2(func: F2, a: &Lanes, b: &Lanes) -> Lanes {
         F2::Min => each!(|x, y| ftz(fmin(x, y))),
         F2::Max => each!(|x, y| ftz(fmax(x, y))),
         F2::Step => each!(|e, x| if x < e { 0 } else { 1.0f32.to_bits() }),
-        F2::Mod => each!(|x, y| ftz(x - y * floor(x / y))),
+        F2::Mod => each!(|x, y| ftz(x - y * floor(fz(x / y)))),
         F2::Pow => lane_loop!(|l| ftz(math::pow(f(a[l]), f(b[l])))),
         other => each!(|x, y| ftz(other.eval(x, y))),
     }
@@ -1285,8 +1325,10 @@ pub(crate) fn ceil(x: f32) -> f32 {
     f32::from_bits(r.to_bits() | (x.to_bits() & 0x8000_0000 & (((r == 0.0) as u32) << 31)))
 }
 
+/// The lanes of `a` as floats, subnormals read as zero (operands of the
+/// lookups native code calls back for may be unflushed: see `jit`).
 fn floats(a: &Lanes) -> [f32; LANES] {
-    a.map(f)
+    a.map(|x| fz(f(x)))
 }
 
 /// The differences within each quad along x and y, as floats: lane l
@@ -1302,7 +1344,7 @@ fn quad_diffs(a: &Lanes) -> ([f32; LANES], [f32; LANES]) {
         .zip(dx.chunks_exact_mut(4))
         .zip(dy.chunks_exact_mut(4))
     {
-        let v = [f(q[0]), f(q[1]), f(q[2]), f(q[3])];
+        let v = [fz(f(q[0])), fz(f(q[1])), fz(f(q[2])), fz(f(q[3]))];
         let (x0, x1) = ([v[1], v[1], v[3], v[3]], [v[0], v[0], v[2], v[2]]);
         let (y0, y1) = ([v[2], v[3], v[2], v[3]], [v[0], v[1], v[0], v[1]]);
         for j in 0..4 {
@@ -1364,7 +1406,8 @@ unsafe fn texture(
         textures.sample(&req, &mut out);
     }
     for (k, o) in out.iter().enumerate() {
-        *regs.add(t.d as usize + k) = o.map(f32::to_bits);
+        // Subnormal results (a border colour, say) enter as zero.
+        *regs.add(t.d as usize + k) = o.map(ftz);
     }
 }
 
@@ -1378,7 +1421,7 @@ mod tests {
         for a in inputs(64, 0x51de) {
             let (dx, dy) = quad_diffs(&a);
             for l in 0..LANES {
-                let want = |bit: usize| (f(a[l | bit]) - f(a[l & !bit])).to_bits();
+                let want = |bit: usize| (fz(f(a[l | bit])) - fz(f(a[l & !bit]))).to_bits();
                 assert_eq!(dx[l].to_bits(), want(1), "{a:x?} lane {l}");
                 assert_eq!(dy[l].to_bits(), want(2), "{a:x?} lane {l}");
             }
@@ -1442,8 +1485,10 @@ mod tests {
         out
     }
 
+    /// The flushed bits of `x`, a NaN as the canonical one: inside a run a
+    /// NaN's payload depends on operand order (see [`float_output`]).
     fn want(x: f32) -> u32 {
-        flush_denormal(x).to_bits()
+        float_output(flush_denormal(x).to_bits())
     }
 
     #[test]
@@ -1475,13 +1520,15 @@ mod tests {
             for func in one {
                 let got = f1(func, x);
                 for l in 0..LANES {
-                    assert_eq!(got[l], want(func.eval(f(x[l]))), "{func:?}({:e})", f(x[l]));
+                    let got = float_output(got[l]);
+                    assert_eq!(got, want(func.eval(f(x[l]))), "{func:?}({:e})", f(x[l]));
                 }
             }
             for func in two {
                 let got = f2(func, x, y);
                 for l in 0..LANES {
-                    assert_eq!(got[l], want(func.eval(f(x[l]), f(y[l]))), "{func:?}");
+                    let got = float_output(got[l]);
+                    assert_eq!(got, want(func.eval(f(x[l]), f(y[l]))), "{func:?}");
                 }
             }
             for func in three {
@@ -1528,9 +1575,12 @@ mod tests {
                 }
                 for l in 0..LANES {
                     assert_eq!(
-                        regs[3][l],
+                        float_output(regs[3][l]),
                         want(func.eval(f(x[l]), f(y[l]), f(z[l]))),
-                        "{func:?}"
+                        "{func:?}({:x}, {:x}, {:x})",
+                        x[l],
+                        y[l],
+                        z[l]
                     );
                 }
             }
@@ -1541,7 +1591,7 @@ mod tests {
     fn branchless_flush_matches_flush_denormal() {
         for v in inputs(20_000, 9) {
             for x in v {
-                assert_eq!(ftz(f(x)), want(f(x)));
+                assert_eq!(ftz(f(x)), flush_denormal(f(x)).to_bits());
             }
         }
     }

@@ -188,7 +188,7 @@ pub(crate) fn run<H: Hook>(
     for &(ic, reg, kind) in &k.inputs {
         let src = batch.inputs.get(ic).copied().unwrap_or([0.0; LANES]);
         r[reg as usize] = lanes(|l| match kind {
-            Scalar::Float => src[l].to_bits(),
+            Scalar::Float => ftz(src[l]),
             Scalar::Int => src[l] as i32 as u32,
             Scalar::Bool => (src[l] != 0.0) as u32,
         });
@@ -201,7 +201,7 @@ pub(crate) fn run<H: Hook>(
     let mut return_address = vec![0u32; p.subroutines as usize];
     let ops = &p.ops[..];
     let mut pc = 0usize;
-    let uni = |w: usize| uniforms.get(w).copied().unwrap_or(0);
+    let uni = |w: usize, float: bool| crate::engine::uniform_word(uniforms, w, float);
 
     macro_rules! un {
         ($d:expr, $a:expr, |$x:ident| $body:expr) => {{
@@ -237,7 +237,7 @@ pub(crate) fn run<H: Hook>(
                     }
                 }
             }
-            Op::Uniform { d, word } => r[d as usize] = [uni(word as usize); LANES],
+            Op::Uniform { d, word, float } => r[d as usize] = [uni(word as usize, float); LANES],
             Op::FAdd { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) + f(y))),
             Op::FSub { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) - f(y))),
             Op::FMul { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) * f(y))),
@@ -320,9 +320,15 @@ pub(crate) fn run<H: Hook>(
                     }
                 }
             }
-            Op::GatherUniform { d, word, off, max } => {
+            Op::GatherUniform {
+                d,
+                word,
+                off,
+                max,
+                float,
+            } => {
                 let o = r[off as usize];
-                r[d as usize] = lanes(|l| uni(word as usize + o[l].min(max) as usize));
+                r[d as usize] = lanes(|l| uni(word as usize + o[l].min(max) as usize, float));
             }
             Op::DdX { d, a } => un_quad(&mut r, d, a, 1),
             Op::DdY { d, a } => un_quad(&mut r, d, a, 2),
@@ -347,7 +353,7 @@ pub(crate) fn run<H: Hook>(
                         _ => math::noise4(x),
                     };
                     for k in 0..4 {
-                        out[k][l] = v[k].to_bits();
+                        out[k][l] = ftz(v[k]);
                     }
                 }
                 for (k, o) in out.iter().enumerate().take(n as usize) {
@@ -427,7 +433,7 @@ pub(crate) fn run<H: Hook>(
             for (l, v) in dst.iter_mut().enumerate() {
                 if active & (1 << l) != 0 {
                     *v = match kind {
-                        Scalar::Float => f(crate::engine::canonical_nan(src[l])),
+                        Scalar::Float => f(crate::engine::float_output(src[l])),
                         Scalar::Int => src[l] as i32 as f32,
                         Scalar::Bool => (src[l] != 0) as u32 as f32,
                     };
@@ -443,9 +449,10 @@ fn quad_diff(a: &[u32; LANES], bit: usize) -> [u32; LANES] {
     lanes(|l| (f(a[l | bit]) - f(a[l & !bit])).to_bits())
 }
 
+/// `dFdx`/`dFdy`: [`quad_diff`], flushed.
 fn un_quad(r: &mut Regs, d: u32, a: u32, bit: usize) {
     let v = quad_diff(&r[a as usize], bit);
-    r[d as usize] = v;
+    r[d as usize] = v.map(|x| ftz(f(x)));
 }
 
 fn floats(a: &[u32; LANES]) -> [f32; LANES] {
@@ -494,6 +501,6 @@ fn texture(r: &mut Regs, t: &crate::program::TexOp, cur: LaneMask, textures: &dy
         textures.sample(&req, &mut out);
     }
     for (k, o) in out.iter().enumerate() {
-        r[t.d as usize + k] = o.map(f32::to_bits);
+        r[t.d as usize + k] = o.map(ftz);
     }
 }

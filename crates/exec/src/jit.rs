@@ -39,7 +39,12 @@
 //! does), selects, `min`/`max` with their NaN rule, `abs`, `sign`,
 //! `floor`/`ceil`/`fract`/`mod`, `sqrt`, `inversesqrt`, `step`, `clamp`,
 //! `mix`, `smoothstep` and dot products are emitted inline as the same IEEE
-//! operations in the same order, each result flushed as `engine::ftz` does.
+//! operations in the same order, each result flushed as `engine::ftz` does
+//! or, on x86-64 with SSE4.1 ([`daz`]), left as the hardware gives it and
+//! read as zero by the next op (MXCSR.DAZ, `crate::float_env`): the same
+//! values without four instructions per op. Unflushed bits never leave the
+//! code: float outputs are flushed by `engine::store_outputs`, the
+//! operands of callbacks by the callbacks, which run in Rust's environment.
 //! Everything else (the transcendental functions, integer division,
 //! gathers and scatters, uniform reads outside the prologue, derivatives,
 //! noise, texture lookups) calls back into Rust: `jit_f1`/`jit_f2` run the
@@ -60,6 +65,7 @@
 mod codegen;
 
 use crate::engine::{self, Code, Lanes};
+use crate::float_env;
 use crate::interp::FULL;
 use crate::program::{F1, F2};
 use crate::{Batch, ExecError, Kernel, Textures};
@@ -159,6 +165,8 @@ pub(crate) struct Native {
     pub(crate) pool_in_file: bool,
     /// Size of the machine code in bytes.
     pub bytes: usize,
+    /// Compiled to run under DAZ ([`daz`]).
+    daz: bool,
 }
 
 // SAFETY: after `finalize_definitions` the module's code memory is never
@@ -287,6 +295,21 @@ impl Cache {
     }
 }
 
+/// Whether native code runs with subnormal operands read as zero (MXCSR.DAZ,
+/// [`float_env`]) instead of flushing each result in software: on x86-64 with
+/// SSE4.1 (Cranelift's `floor`/`ceil` are then `roundps`, which honours
+/// DAZ; without it they are calls into Rust).
+pub(crate) fn daz() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::is_x86_feature_detected!("sse4.1")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
 /// Whether Cranelift generates code for this CPU (checked once).
 pub(crate) fn supported() -> bool {
     static OK: OnceLock<bool> = OnceLock::new();
@@ -346,7 +369,7 @@ pub(crate) fn run(
     // SAFETY: `native` was compiled from `code` (the kernel's cache), whose
     // registers and side tables were validated; `load` sized the file to
     // `code.prog.registers`; `ctx` outlives the call.
-    let status = unsafe { (native.entry)(&mut ctx) };
+    let status = float_env::native(native.daz, || unsafe { (native.entry)(&mut ctx) });
     if let Some(p) = ctx.panic.take() {
         std::panic::resume_unwind(p);
     }
@@ -387,9 +410,13 @@ unsafe extern "C" fn jit_step(ctx: *mut Ctx, index: u32, cur: u32) {
     let Some(ins) = ins else { return };
     let (regs, uniforms, textures) = (ctx.regs, ctx.uniforms, ctx.textures);
     // SAFETY: the op was validated against the file's register count.
-    let r = catch_unwind(AssertUnwindSafe(|| unsafe {
-        engine::step_data(code, regs, &ins, cur, uniforms, textures)
-    }));
+    // Float operands are read flushed by the ops called for (texture
+    // lookups, noise, derivatives; `engine::floats`).
+    let r = float_env::callback(daz(), || {
+        catch_unwind(AssertUnwindSafe(|| unsafe {
+            engine::step_data(code, regs, &ins, cur, uniforms, textures)
+        }))
+    });
     if let Err(p) = r {
         ctx.panic = Some(p);
     }
@@ -419,7 +446,7 @@ const F2_CALLED: [F2; 2] = [F2::Atan2, F2::Pow];
 /// `out` and `a` must point to registers (`a` may equal `out`).
 unsafe extern "C" fn jit_f1(func: u32, out: *mut Lanes, a: *const Lanes) {
     if let Some(&f) = F1_CALLED.get(func as usize) {
-        *out = engine::f1(f, &*a);
+        *out = float_env::callback(daz(), || engine::f1(f, &engine::flushed(&*a)));
     }
 }
 
@@ -430,7 +457,9 @@ unsafe extern "C" fn jit_f1(func: u32, out: *mut Lanes, a: *const Lanes) {
 /// As for [`jit_f1`].
 unsafe extern "C" fn jit_f2(func: u32, out: *mut Lanes, a: *const Lanes, b: *const Lanes) {
     if let Some(&f) = F2_CALLED.get(func as usize) {
-        *out = engine::f2(f, &*a, &*b);
+        *out = float_env::callback(daz(), || {
+            engine::f2(f, &engine::flushed(&*a), &engine::flushed(&*b))
+        });
     }
 }
 
@@ -446,7 +475,7 @@ macro_rules! math_helpers_for {
         #[target_feature(enable = $features)]
         unsafe extern "C" fn $f1(func: u32, out: *mut Lanes, a: *const Lanes) {
             if let Some(&f) = F1_CALLED.get(func as usize) {
-                *out = engine::f1(f, &*a);
+                *out = float_env::callback(daz(), || engine::f1(f, &engine::flushed(&*a)));
             }
         }
 
@@ -455,7 +484,9 @@ macro_rules! math_helpers_for {
         #[target_feature(enable = $features)]
         unsafe extern "C" fn $f2(func: u32, out: *mut Lanes, a: *const Lanes, b: *const Lanes) {
             if let Some(&f) = F2_CALLED.get(func as usize) {
-                *out = engine::f2(f, &*a, &*b);
+                *out = float_env::callback(daz(), || {
+                    engine::f2(f, &engine::flushed(&*a), &engine::flushed(&*b))
+                });
             }
         }
     };

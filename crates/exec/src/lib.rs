@@ -18,9 +18,14 @@
 //!   range is clamped to the nearest element (negative → element 0, too
 //!   large → the last element), for reads and writes; uninitialized
 //!   variables hold unspecified but deterministic values (0 at the start of
-//!   a run); a subnormal result of float arithmetic or of a built-in is
-//!   flushed to zero (`glsl::math::flush_denormal`, as folding does;
-//!   subnormal operands are used as they are); `min`/`max` with one NaN
+//!   a run); subnormal floats are zero of their sign
+//!   (`glsl::math::flush_denormal`): every result of float arithmetic, of a
+//!   built-in (and the intermediates of `mix`, `smoothstep` and `mod`) and
+//!   of a derivative is flushed, as folding does, and so is every float
+//!   entering a run: literals, inputs, uniforms and texture results. Values
+//!   are then those of IEEE arithmetic with subnormal operands read as zero,
+//!   which is how native code computes them on x86-64 (MXCSR.DAZ, no per-op
+//!   flush); `min`/`max` with one NaN
 //!   operand give the other operand; a NaN written to a float output is
 //!   the canonical quiet NaN `0x7fc00000` (inside a run a NaN's payload
 //!   depends on operand order, which compiled code may swap; GLSL 1.20
@@ -118,8 +123,9 @@
 //! 4-lane quarter at a time with their values in machine registers, and
 //! only the registers read later are stored; masks, mask slots and the
 //! loop count are SSA values. It emits the same IEEE
-//! operations in the same order as the interpreter, flushes subnormal
-//! results the same way, and calls back into the interpreter's own lane
+//! operations in the same order as the interpreter, with subnormals read
+//! as zero in hardware on x86-64 (MXCSR.DAZ, set around each run: see
+//! `float_env`) and flushed after each op elsewhere, and calls back into the interpreter's own lane
 //! code for the transcendental functions, integer division, noise and
 //! texture lookups, so it computes the same bits (tests compare it with
 //! the interpreter on random programs of every op, on every unit-test
@@ -164,6 +170,7 @@
 
 mod depth_slice;
 mod engine;
+mod float_env;
 mod interface;
 mod interp;
 #[cfg(feature = "jit")]
@@ -173,6 +180,7 @@ mod lower;
 mod program;
 mod variant;
 
+pub use float_env::FloatEnv;
 pub use interface::{kinds, size_of, Interface, Slot};
 pub use interp::LOOP_BUDGET;
 pub use program::{StatementMark, VarInfo};

@@ -126,6 +126,8 @@ struct Lowerer<'m> {
     globals: Vec<GlobalLoc>,
     used: Vec<bool>,
     next_word: u32,
+    /// Whether each allocated uniform word is a float's.
+    uniform_float: Vec<bool>,
     uniform_order: Vec<GlobalId>,
     frames: Vec<Frame>,
     ctx: Vec<(CtxKind, u32)>,
@@ -163,6 +165,7 @@ pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
         globals: Vec::with_capacity(m.globals.len()),
         used: vec![false; m.globals.len()],
         next_word: 0,
+        uniform_float: Vec::new(),
         uniform_order: Vec::new(),
         frames: Vec::new(),
         ctx: Vec::new(),
@@ -291,7 +294,7 @@ fn with_ftransform_inputs(m: &Module) -> Option<Module> {
 
 fn const_bits(c: ConstScalar) -> u32 {
     match c {
-        ConstScalar::Float(f) => f.to_bits(),
+        ConstScalar::Float(f) => glsl::math::flush_denormal(f).to_bits(),
         ConstScalar::Int(i) => i as u32,
         ConstScalar::Bool(b) => b as u32,
     }
@@ -681,7 +684,7 @@ impl<'m> Lowerer<'m> {
     }
 
     fn fconst(&mut self, f: f32) -> R<Reg> {
-        self.konst(f.to_bits())
+        self.konst(glsl::math::flush_denormal(f).to_bits())
     }
 
     fn copy(&mut self, v: &[Reg]) -> R<Val> {
@@ -712,12 +715,23 @@ impl<'m> Lowerer<'m> {
                     return unsupported("too many uniform components");
                 }
                 self.next_word = w + n as u32;
+                let ks = kinds(self.m.globals[i].ty, &self.m.structs);
+                self.uniform_float.resize(w as usize, false);
+                self.uniform_float
+                    .extend(ks.iter().map(|&k| k == Scalar::Float));
                 self.globals[i] = GlobalLoc::Uniform(Some(w));
                 self.uniform_order.push(g);
                 Ok(w)
             }
             _ => unsupported("not a uniform"),
         }
+    }
+
+    fn uniform_is_float(&self, word: u32) -> bool {
+        self.uniform_float
+            .get(word as usize)
+            .copied()
+            .unwrap_or(false)
     }
 
     fn alloc_locals(&mut self, f: FunctionId) -> R<Vec<(Reg, Type)>> {
@@ -1357,16 +1371,23 @@ impl<'m> Lowerer<'m> {
                 }
                 (Root::Uniform(w), None) => {
                     let d = self.temp()?;
-                    self.emit(Op::Uniform { d, word: w + pos })?;
+                    let float = self.uniform_is_float(w + pos);
+                    self.emit(Op::Uniform {
+                        d,
+                        word: w + pos,
+                        float,
+                    })?;
                     d
                 }
                 (Root::Uniform(w), Some((off, max))) => {
                     let d = self.temp()?;
+                    let float = self.uniform_is_float(w + pos);
                     self.emit(Op::GatherUniform {
                         d,
                         word: w + pos,
                         off,
                         max,
+                        float,
                     })?;
                     d
                 }

@@ -132,10 +132,12 @@ pub(crate) enum Op {
         d: Reg,
         a: Reg,
     },
-    /// `d = uniforms[word]` on every lane (0 past the end of the words).
+    /// `d = uniforms[word]` on every lane (0 past the end of the words);
+    /// a `float` word's subnormal is read as zero.
     Uniform {
         d: Reg,
         word: u32,
+        float: bool,
     },
 
     FAdd {
@@ -324,12 +326,15 @@ pub(crate) enum Op {
         max: u32,
         a: Reg,
     },
-    /// `d = uniforms[word + min(off, max)]` per lane.
+    /// `d = uniforms[word + min(off, max)]` per lane; `float` as for
+    /// [`Op::Uniform`] (the words `word + k * stride` are elements of one
+    /// array, all of one kind).
     GatherUniform {
         d: Reg,
         word: u32,
         off: Reg,
         max: u32,
+        float: bool,
     },
 
     /// `d = a(lane | 1) - a(lane & !1)`.

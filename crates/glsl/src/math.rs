@@ -37,11 +37,14 @@
 //!   exact result (checked against libm's `f64` routines by a test below).
 //! - All of these are far inside what GLSL asks (1.20 sets no bound; the
 //!   GLSL 4.x bounds are 3 ulp for `exp`/`log`, `2 + 2|x|` ulp for `pow`).
-//!   Subnormal inputs are used as they are; the executor and the constant
-//!   folder flush subnormal *results* ([`flush_denormal`]).
+//!   Subnormal inputs are used as they are here; the executor and the
+//!   constant folder never pass one (float literals, inputs, uniforms and
+//!   every result are flushed: [`flush_denormal`]).
 //! - The composite functions (`radians`, `degrees`, `inversesqrt`, `fract`,
 //!   `modulo`, `mix`, `smoothstep`) are evaluated exactly as the formulas in
-//!   their doc comments, one rounding per operation.
+//!   their doc comments, one rounding per operation, and the intermediates
+//!   that can be subnormal flushed, so each is the sequence of flushed
+//!   operations native code runs with subnormal operands read as zero.
 //! - Results outside a function's domain (`log(-1)`, `sqrt(-1)`,
 //!   `asin(2)`) are NaN; GLSL leaves them undefined, we make them
 //!   repeatable.
@@ -136,9 +139,10 @@ pub fn fract(x: f32) -> f32 {
 }
 
 /// GLSL `mod`: `x - y * floor(x / y)` (GLSL 1.20 §8.3), unlike C's `fmod`
-/// the result has the sign of `y`.
+/// the result has the sign of `y`. `x / y` is flushed ([`flush_denormal`]);
+/// the product never is subnormal (`y` times a whole number).
 pub fn modulo(x: f32, y: f32) -> f32 {
-    x - y * floor(x / y)
+    x - y * floor(flush_denormal(x / y))
 }
 
 /// GLSL `min`: `y` if `y < x`, otherwise `x`; a NaN operand gives the
@@ -181,9 +185,11 @@ pub fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
     min(max(x, lo), hi)
 }
 
-/// `x · (1 - a) + y · a`.
+/// `x · (1 - a) + y · a`, each product flushed ([`flush_denormal`]); `1 -
+/// a` is never subnormal.
 pub fn mix(x: f32, y: f32, a: f32) -> f32 {
-    x * (1.0 - a) + y * a
+    let f = flush_denormal;
+    f(x * (1.0 - a)) + f(y * a)
 }
 
 /// 0.0 if `x < edge`, otherwise 1.0.
@@ -195,10 +201,13 @@ pub fn step(edge: f32, x: f32) -> f32 {
     }
 }
 
-/// `t = clamp((x - e0) / (e1 - e0), 0, 1); t · t · (3 - 2 · t)`.
+/// `t = clamp((x - e0) / (e1 - e0), 0, 1); t · t · (3 - 2 · t)`, each
+/// intermediate flushed ([`flush_denormal`]; `2 · t` and `3 - 2 · t` never
+/// are subnormal).
 pub fn smoothstep(edge0: f32, edge1: f32, x: f32) -> f32 {
-    let t = clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
-    t * t * (3.0 - 2.0 * t)
+    let f = flush_denormal;
+    let t = clamp(f(f(x - edge0) / f(edge1 - edge0)), 0.0, 1.0);
+    f(t * t) * (3.0 - 2.0 * t)
 }
 
 /// Dot product, summed left to right.

@@ -132,13 +132,21 @@ impl Workers {
         task: impl Fn(usize, &Cancel) -> T + Sync + Send,
     ) -> Vec<T> {
         let cancel = Cancel::new();
+        // Tasks run kernels in a known floating-point environment, which
+        // each native run then only switches DAZ on and off in.
         match self.pool() {
-            None => (0..n).map(|i| task(i, &cancel)).collect(),
+            None => {
+                let _env = exec::FloatEnv::enter();
+                (0..n).map(|i| task(i, &cancel)).collect()
+            }
             Some(pool) => pool.install(|| {
                 (0..n)
                     .into_par_iter()
                     .with_min_len(min_len.max(1))
-                    .map(|i| task(i, &cancel))
+                    .map(|i| {
+                        let _env = exec::FloatEnv::enter();
+                        task(i, &cancel)
+                    })
                     .collect()
             }),
         }

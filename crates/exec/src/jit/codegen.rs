@@ -83,6 +83,7 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
                 consts,
                 pool_in_file: pool_in_file(code),
                 bytes,
+                daz: super::daz(),
             })
         }
         Err(e) => {
@@ -226,6 +227,9 @@ struct Emit<'a, 'b> {
     /// Emitting for a current mask known to hold all [`crate::LANES`] lanes:
     /// masked writes write every lane.
     full: bool,
+    /// The code runs with subnormal operands read as zero ([`super::daz`]):
+    /// results are left unflushed.
+    daz: bool,
 }
 
 /// Vector constants in a table the code loads from: a load used once is
@@ -361,6 +365,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             consts: Consts::default(),
             store_now: None,
             full: false,
+            daz: super::daz(),
         };
         let base =
             e.b.ins()
@@ -572,8 +577,13 @@ impl<'a, 'b> Emit<'a, 'b> {
     }
 
     /// `engine::ftz` of an F32X4, as I32X4: a subnormal keeps only its
-    /// sign.
+    /// sign. Under DAZ, `x` as it is: every float op reads it as the
+    /// flushed value, and it is flushed where it leaves the code (outputs,
+    /// callback operands).
     fn ftz(&mut self, x: Value) -> Value {
+        if self.daz {
+            return self.iv(x);
+        }
         let b = self.iv(x);
         let exp = self.splat(0x7f80_0000);
         let e = self.b.ins().band(b, exp);
@@ -582,6 +592,16 @@ impl<'a, 'b> Emit<'a, 'b> {
         let mag = self.splat(!SIGN);
         let drop = self.b.ins().band(z, mag);
         self.b.ins().band_not(b, drop)
+    }
+
+    /// Uniform words (I32X4) as read: [`Self::ftz`] for a float's.
+    fn ftz_word(&mut self, float: bool, v: Value) -> Value {
+        if float && !self.daz {
+            let x = self.fv(v);
+            self.ftz(x)
+        } else {
+            v
+        }
     }
 
     /// 0/1 from an all-ones/zero lane mask.
@@ -786,7 +806,7 @@ impl<'a, 'b> Emit<'a, 'b> {
     /// `d = uniforms[word + min(off, max)]` per lane (0 past the end);
     /// `word + max` fits in an `i32`. When every lane reads the same word
     /// (an array indexed by a loop counter), one load.
-    fn gather_uniform(&mut self, d: Reg, word: u32, off: Reg, max: u32, masked: bool) {
+    fn gather_uniform(&mut self, d: Reg, word: u32, off: Reg, max: u32, float: bool, masked: bool) {
         let (p, n) = self.uniforms();
         let mut idx = [p; QUARTERS];
         for (q, x) in idx.iter_mut().enumerate() {
@@ -846,6 +866,7 @@ impl<'a, 'b> Emit<'a, 'b> {
 
         self.b.switch_to_block(merge);
         for (q, &v) in params.iter().enumerate() {
+            let v = self.ftz_word(float, v);
             self.put(d, q, v, masked);
         }
     }
@@ -926,7 +947,7 @@ impl<'a, 'b> Emit<'a, 'b> {
         let h = pick(&mut self.b, hi);
         let l = pick(&mut self.b, lo);
         let r = self.b.ins().fsub(h, l);
-        self.iv(r)
+        self.ftz(r)
     }
 
     // ---- ops -----------------------------------------------------------
@@ -1362,14 +1383,21 @@ impl<'a, 'b> Emit<'a, 'b> {
                 let x = self.b.ins().smin(x, hi);
                 self.b.ins().imul(x, s)
             }),
-            Op::Uniform { d, word } => {
+            Op::Uniform { d, word, float } => {
                 let v = self.uniform_word(word);
-                each!(d, |q| self.b.ins().splat(I32X4, v))
+                each!(d, |q| {
+                    let v = self.b.ins().splat(I32X4, v);
+                    self.ftz_word(float, v)
+                })
             }
-            Op::GatherUniform { d, word, off, max }
-                if word as u64 + max as u64 <= i32::MAX as u64 =>
-            {
-                self.gather_uniform(d, word, off, max, m)
+            Op::GatherUniform {
+                d,
+                word,
+                off,
+                max,
+                float,
+            } if word as u64 + max as u64 <= i32::MAX as u64 => {
+                self.gather_uniform(d, word, off, max, float, m)
             }
             Op::Gather { d, base, off, max } => each!(d, |q| self.gather(base, off, max, q)),
             Op::Scatter { base, off, max, a } => {
@@ -1481,6 +1509,8 @@ impl<'a, 'b> Emit<'a, 'b> {
             }
             F2::Mod => {
                 let q = self.b.ins().fdiv(x, y);
+                let q = self.ftz(q);
+                let q = self.fv(q);
                 let fl = self.floor(q);
                 let p = self.b.ins().fmul(y, fl);
                 let r = self.b.ins().fsub(x, p);
@@ -1494,11 +1524,16 @@ impl<'a, 'b> Emit<'a, 'b> {
     /// The functions of three floats, as `engine::step` computes them.
     fn f3(&mut self, f: F3, x: Value, y: Value, z: Value) -> Value {
         match f {
+            // glsl::math's formulas, with its flushed intermediates.
             F3::Mix => {
                 let one = self.fconst(1.0);
                 let omt = self.b.ins().fsub(one, z);
                 let p = self.b.ins().fmul(x, omt);
+                let p = self.ftz(p);
+                let p = self.fv(p);
                 let r = self.b.ins().fmul(y, z);
+                let r = self.ftz(r);
+                let r = self.fv(r);
                 let s = self.b.ins().fadd(p, r);
                 self.ftz(s)
             }
@@ -1510,13 +1545,21 @@ impl<'a, 'b> Emit<'a, 'b> {
             F3::SmoothStep => {
                 // (e0, e1, v) = (x, y, z)
                 let num = self.b.ins().fsub(z, x);
+                let num = self.ftz(num);
+                let num = self.fv(num);
                 let den = self.b.ins().fsub(y, x);
+                let den = self.ftz(den);
+                let den = self.fv(den);
                 let t = self.b.ins().fdiv(num, den);
+                let t = self.ftz(t);
+                let t = self.fv(t);
                 let (zero, one) = (self.fconst(0.0), self.fconst(1.0));
                 let t = self.fmax(t, zero);
                 let t = self.fmin(t, one);
                 let (two, three) = (self.fconst(2.0), self.fconst(3.0));
                 let tt = self.b.ins().fmul(t, t);
+                let tt = self.ftz(tt);
+                let tt = self.fv(tt);
                 let t2 = self.b.ins().fmul(two, t);
                 let k = self.b.ins().fsub(three, t2);
                 let r = self.b.ins().fmul(tt, k);

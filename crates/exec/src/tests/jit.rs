@@ -123,9 +123,14 @@ fn random_op(r: &mut Rng, i: u32, n: u32) -> Op {
     let (id, ia, ib, ic) = (r.i(), r.i(), r.i(), r.i());
     let any = r.reg();
     match r.below(48) {
+        // Float constants are flushed, as lowering makes them.
         0 => Op::Const {
             d: any,
-            bits: value(r),
+            bits: if any < FLOAT_REGS {
+                glsl::math::flush_denormal(f32::from_bits(value(r))).to_bits()
+            } else {
+                value(r)
+            },
         },
         1 => Op::Mov {
             d: any,
@@ -260,10 +265,12 @@ fn random_op(r: &mut Rng, i: u32, n: u32) -> Op {
             word: r.below(4),
             off: ia,
             max: r.below(6),
+            float: any < FLOAT_REGS,
         },
         41 => Op::Uniform {
             d: any,
             word: r.below(6),
+            float: any < FLOAT_REGS,
         },
         42 => Op::DdX { d, a },
         43 => Op::DdY { d, a },
@@ -324,7 +331,16 @@ fn kernel_of(ins: Vec<Ins>, budget: u64, outputs: &[Reg]) -> Kernel {
         stage: glsl::Stage::Fragment,
         program: prog,
         interface,
-        inputs: (0..REGS).map(|r| (r as usize, r, Scalar::Float)).collect(),
+        inputs: (0..REGS)
+            .map(|r| {
+                let kind = if r < FLOAT_REGS {
+                    Scalar::Float
+                } else {
+                    Scalar::Int
+                };
+                (r as usize, r, kind)
+            })
+            .collect(),
         outputs: outputs
             .iter()
             .map(|&r| {
@@ -390,8 +406,17 @@ fn random_programs_run_natively_as_interpreted() {
             };
             let mut base = Batch::for_kernel(&k, active);
             base.helper = if round == 3 { 0x0f0f } else { 0 };
-            for c in base.inputs.iter_mut() {
-                *c = [0; LANES].map(|_| f32::from_bits(value(&mut r)));
+            for (reg, c) in base.inputs.iter_mut().enumerate() {
+                // Floats of any bits (subnormals enter as zero); ints as
+                // the floats integer inputs arrive as.
+                *c = [0; LANES].map(|_| {
+                    let v = value(&mut r);
+                    if (reg as u32) < FLOAT_REGS {
+                        f32::from_bits(v)
+                    } else {
+                        v as i32 as f32
+                    }
+                });
                 if round == 2 {
                     // The same value on every lane (uniform indices).
                     *c = [c[0]; LANES];

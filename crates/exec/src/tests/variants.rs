@@ -351,3 +351,89 @@ fn bench_math() {
         eprintln!("  {:8} {t:.0} ns/batch ({:.2}x)", v.name(), reference / t);
     }
 }
+
+/// Subnormal values are zero in every variant, wherever they arise: float
+/// literals, inputs, uniforms, the intermediates of built-ins, derivatives,
+/// results read by native code's callbacks and written to outputs. Native
+/// code reads them as zero in hardware (DAZ) without flushing each result;
+/// a product that rounds up to the smallest normal stays normal (which
+/// flush-to-zero hardware would not give).
+#[test]
+fn subnormals_are_zero_in_every_variant() {
+    let src = "#version 120
+        uniform float us; uniform int ui;
+        varying vec4 a, b, c;
+        void main() {
+            float t = a.y - b.y;
+            gl_FragData[0] = vec4(a.x * b.x, t + a.z, mod(b.z, a.w), pow(t, 0.5));
+            gl_FragData[1] = vec4(us + a.z, float(ui), 1e-40 * 1e10 + dFdx(b.w) * 1e30, t);
+            gl_FragData[2] = vec4(mix(c.x, c.y, 0.5), smoothstep(0.0, 1.0, c.z), c.w, c.w * 1e30);
+        }";
+    let linked = link_one(Stage::Fragment, src).unwrap();
+    let k = Kernel::new(&linked).expect("lowers");
+    k.compile_native();
+    let min = f32::MIN_POSITIVE;
+    let (x0, x1) = (f32::from_bits(0x2000_0800), f32::from_bits(0x1fff_f000));
+    // 2^-126 (1 - 2^-24), a tie rounded to even: 2^-126.
+    assert_eq!((x0 * x1).to_bits(), min.to_bits());
+    let iface = k.interface().clone();
+    let mut u = vec![0u32; iface.uniform_words];
+    u[iface.uniform("us").unwrap().offset] = 1; // 2^-149
+    u[iface.uniform("ui").unwrap().offset] = 1; // the int 1, not a subnormal
+    let mut batch = Batch::for_kernel(&k, 0xffff);
+    let tiny = f32::from_bits(1);
+    let next_up = f32::from_bits(min.to_bits() + 1);
+    let inputs = [
+        ("a", [x0, next_up, min, 1_073_741_824.0]),
+        ("b", [x1, min, -(2f32.powi(-100)), min]),
+        ("c", [min, 2.0 * min, 0.8 * 2f32.powi(-63), tiny]),
+    ];
+    for (name, v) in inputs {
+        let off = iface.input(name).unwrap().offset;
+        for (k, x) in v.iter().enumerate() {
+            batch.inputs[off + k] = [*x; crate::LANES];
+        }
+    }
+    // b.w differs by 2^-149 between the columns of each quad.
+    let bw = iface.input("b").unwrap().offset + 3;
+    for l in (1..crate::LANES).step_by(2) {
+        batch.inputs[bw][l] = next_up;
+    }
+    let out = iface.output("gl_FragData").unwrap().offset;
+    let want: [f32; 12] = [
+        min,
+        min,
+        -(2f32.powi(-100)),
+        0.0,
+        min,
+        1.0,
+        0.0,
+        0.0,
+        min,
+        0.0,
+        0.0,
+        0.0,
+    ];
+    let mut reference = batch.clone();
+    k.run_reference(&mut reference, &u, &NoTextures).unwrap();
+    for (i, w) in want.iter().enumerate() {
+        assert_eq!(
+            reference.outputs[out + i].map(f32::to_bits),
+            [w.to_bits(); crate::LANES],
+            "reference, output component {i}"
+        );
+    }
+    for v in supported_variants() {
+        let mut got = batch.clone();
+        k.run_variant(v, &mut got, &u, &NoTextures).unwrap();
+        assert_eq!(
+            bits_of(&got.outputs),
+            bits_of(&reference.outputs),
+            "{}",
+            v.name()
+        );
+    }
+    if Variant::Jit.supported() {
+        assert!(matches!(k.native_code(), Some(Ok(_))));
+    }
+}

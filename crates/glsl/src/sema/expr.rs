@@ -126,7 +126,9 @@ impl Analyzer {
             A::FloatLit(v) => const_expr(
                 ir::ConstValue {
                     ty: Type::FLOAT,
-                    components: vec![ir::ConstScalar::Float(*v)],
+                    // Subnormal literals are zero, as every float value is
+                    // (`math::flush_denormal`).
+                    components: vec![ir::ConstScalar::Float(crate::math::flush_denormal(*v))],
                 },
                 span,
             ),
