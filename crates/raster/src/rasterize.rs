@@ -56,8 +56,9 @@ pub(crate) enum Shape {
         p: [(i64, i64); 3],
         /// +1 when counter-clockwise in window space, −1 otherwise.
         sign: i64,
-        /// Twice the area in fixed-point units², positive.
-        area2: i64,
+        /// 1 / twice the area in fixed-point units² (the area is positive):
+        /// what the edge values are multiplied by.
+        inv_area2: f64,
         v: [WinVertex; 3],
     },
     Line {
@@ -132,7 +133,7 @@ impl Shape {
         Some(Shape::Triangle {
             p,
             sign: a.signum(),
-            area2: a.abs(),
+            inv_area2: 1.0 / a.abs() as f64,
             v,
         })
     }
@@ -299,10 +300,14 @@ impl Shape {
     /// Interpolation at the center of pixel (x, y).
     pub fn interp(&self, x: i64, y: i64) -> Interp {
         match self {
-            Shape::Triangle { p, sign, area2, v } => {
+            Shape::Triangle {
+                p,
+                sign,
+                inv_area2,
+                v,
+            } => {
                 let (cx, cy) = (x * ONE + HALF, y * ONE + HALF);
-                let r = 1.0 / *area2 as f64;
-                let b = [0, 1, 2].map(|k| (sign * edge(p, k, cx, cy)) as f64 * r);
+                let b = [0, 1, 2].map(|k| (sign * edge(p, k, cx, cy)) as f64 * inv_area2);
                 let z = b[0] * v[0].z + b[1] * v[1].z + b[2] * v[2].z;
                 let pw = [0, 1, 2].map(|k| b[k] * v[k].inv_w);
                 let inv_w = pw[0] + pw[1] + pw[2];
@@ -375,8 +380,13 @@ impl Shape {
     #[inline(always)]
     pub fn interp_quad_z(&self, isa: Isa, qx: i64, qy: i64, q: &mut QuadInterp) {
         match self {
-            Shape::Triangle { p, sign, area2, v } => {
-                let t = (p, *sign, *area2, v);
+            Shape::Triangle {
+                p,
+                sign,
+                inv_area2,
+                v,
+            } => {
+                let t = (p, *sign, *inv_area2, v);
                 match isa {
                     #[cfg(target_arch = "x86_64")]
                     // SAFETY: the caller passes a variant the CPU runs
@@ -409,9 +419,12 @@ impl Shape {
     #[inline(always)]
     pub fn interp_quad_z_inline(&self, qx: i64, qy: i64, q: &mut QuadInterp) {
         match self {
-            Shape::Triangle { p, sign, area2, v } => {
-                triangle_quad((p, *sign, *area2, v), qx, qy, q)
-            }
+            Shape::Triangle {
+                p,
+                sign,
+                inv_area2,
+                v,
+            } => triangle_quad((p, *sign, *inv_area2, v), qx, qy, q),
             _ => self.interp_quad_z(Isa::Base, qx, qy, q),
         }
     }
@@ -481,7 +494,7 @@ impl Shape {
 }
 
 /// A triangle's points, orientation, doubled area and vertices.
-type TriangleRef<'a> = (&'a [(i64, i64); 3], i64, i64, &'a [WinVertex; 3]);
+type TriangleRef<'a> = (&'a [(i64, i64); 3], i64, f64, &'a [WinVertex; 3]);
 
 /// [`Shape::interp`] of a triangle at the four pixels of the quad at
 /// (qx, qy), first half: window z, and the barycentrics in `q.weights`.
@@ -489,8 +502,7 @@ type TriangleRef<'a> = (&'a [(i64, i64); 3], i64, i64, &'a [WinVertex; 3]);
 /// other pixels one step of an edge's (integer, exact) slope away, so the
 /// same integers; then the same f64 operations per pixel.
 #[inline(always)]
-fn triangle_quad((p, sign, area2, v): TriangleRef, qx: i64, qy: i64, q: &mut QuadInterp) {
-    let r = 1.0 / area2 as f64;
+fn triangle_quad((p, sign, r, v): TriangleRef, qx: i64, qy: i64, q: &mut QuadInterp) {
     let (cx, cy) = (qx * ONE + HALF, qy * ONE + HALF);
     let mut b = [[0.0f64; 4]; 3];
     for (j, bj) in b.iter_mut().enumerate() {
