@@ -397,6 +397,131 @@ struct Out {
     chunk: u32,
 }
 
+/// The frame's 64×64 tiles.
+#[derive(Clone, Copy)]
+struct TileGrid {
+    w: i64,
+    h: i64,
+    tiles_x: i64,
+    tiles: usize,
+}
+
+impl TileGrid {
+    fn new(fb: &Framebuffer) -> TileGrid {
+        let (w, h) = (fb.width as i64, fb.height as i64);
+        let tiles_x = (w + TILE - 1) / TILE;
+        let tiles_y = (h + TILE - 1) / TILE;
+        TileGrid {
+            w,
+            h,
+            tiles_x,
+            tiles: (tiles_x * tiles_y).max(0) as usize,
+        }
+    }
+
+    /// The tiles a primitive's bounds overlap, row by row.
+    fn tiles_of(&self, prim: &Prim) -> impl Iterator<Item = usize> {
+        let (w, h, tiles_x) = (self.w, self.h, self.tiles_x);
+        let b = prim.bounds;
+        let (x0, y0) = (b.0.clamp(0, w), b.1.clamp(0, h));
+        let (x1, y1) = (b.2.clamp(x0, w), b.3.clamp(y0, h));
+        let (rows, cols) = if x0 >= x1 || y0 >= y1 {
+            (1..0, 1..0)
+        } else {
+            (
+                y0 / TILE..(y1 - 1) / TILE + 1,
+                x0 / TILE..(x1 - 1) / TILE + 1,
+            )
+        };
+        rows.flat_map(move |ty| cols.clone().map(move |tx| (ty * tiles_x + tx) as usize))
+    }
+}
+
+/// One set-up chunk's primitives by tile (a counting sort):
+/// `items[starts[t]..starts[t + 1]]` are the chunk indices of the
+/// primitives overlapping tile `t`, in order.
+struct ChunkBins {
+    starts: Vec<u32>,
+    items: Vec<u32>,
+}
+
+impl ChunkBins {
+    fn new(prims: &[Prim], grid: &TileGrid) -> ChunkBins {
+        let mut starts = vec![0u32; grid.tiles + 1];
+        for prim in prims {
+            for t in grid.tiles_of(prim) {
+                if let Some(c) = starts.get_mut(t + 1) {
+                    *c += 1;
+                }
+            }
+        }
+        for t in 0..grid.tiles {
+            starts[t + 1] += starts[t];
+        }
+        let mut next = starts.clone();
+        let mut items = vec![0u32; starts[grid.tiles] as usize];
+        for (i, prim) in prims.iter().enumerate() {
+            for t in grid.tiles_of(prim) {
+                if let Some(n) = next.get_mut(t) {
+                    if let Some(slot) = items.get_mut(*n as usize) {
+                        *slot = i as u32;
+                    }
+                    *n += 1;
+                }
+            }
+        }
+        ChunkBins { starts, items }
+    }
+
+    fn tile(&self, t: usize) -> &[u32] {
+        let (a, b) = (self.starts.get(t), self.starts.get(t + 1));
+        match (a, b) {
+            (Some(&a), Some(&b)) => self.items.get(a as usize..b as usize).unwrap_or(&[]),
+            _ => &[],
+        }
+    }
+}
+
+/// The draw's primitives by tile: each chunk's bins and the index of its
+/// first primitive in the draw.
+struct Bins {
+    grid: TileGrid,
+    chunks: Vec<(ChunkBins, u32)>,
+}
+
+impl Bins {
+    fn new(chunks: Vec<ChunkBins>, parts: &[(Vec<Prim>, Vec<f32>)], grid: TileGrid) -> Bins {
+        let mut base = 0u32;
+        let chunks = chunks
+            .into_iter()
+            .zip(parts)
+            .map(|(b, part)| {
+                let first = base;
+                base = base.saturating_add(part.0.len() as u32);
+                (b, first)
+            })
+            .collect();
+        Bins { grid, chunks }
+    }
+
+    /// The tiles some primitive overlaps, in order.
+    fn occupied(&self) -> Vec<usize> {
+        (0..self.grid.tiles)
+            .filter(|&t| self.chunks.iter().any(|(b, _)| !b.tile(t).is_empty()))
+            .collect()
+    }
+
+    /// The draw indices of tile `t`'s primitives, in draw order.
+    fn tile(&self, t: usize) -> Vec<u32> {
+        let n = self.chunks.iter().map(|(b, _)| b.tile(t).len()).sum();
+        let mut out = Vec::with_capacity(n);
+        for (b, first) in &self.chunks {
+            out.extend(b.tile(t).iter().map(|&i| first + i));
+        }
+        out
+    }
+}
+
 const NO_WIN: WinVertex = WinVertex {
     x: 0.0,
     y: 0.0,
@@ -793,6 +918,7 @@ pub(crate) fn draw_probed(
     // chunks' primitives concatenated in order (one chunk, in order, for
     // the debugger's probe, which notes primitives as they come).
     let setup = &setup;
+    let grid = TileGrid::new(fb);
     let count = vertex_of.len();
     let n_prims = primitive_count(mode, count);
     let chunk = if probe.is_some() {
@@ -842,12 +968,17 @@ pub(crate) fn draw_probed(
                 }
             }
         }
-        (out.prims, out.attrs)
+        // Binned here, on the workers: the chunks' bins read in chunk
+        // order list each tile's primitives in draw order.
+        let bins = ChunkBins::new(&out.prims, &grid);
+        ((out.prims, out.attrs), bins)
     });
+    let (parts, chunk_bins): (Vec<_>, Vec<_>) = parts.into_iter().unzip();
     // The chunks' primitives in order and their varyings, referenced
     // where they are (not moved).
     let attrs: Vec<&[f32]> = parts.iter().map(|p| &p.1[..]).collect();
     let prims: Vec<&Prim> = parts.iter().flat_map(|p| p.0.iter()).collect();
+    let bins = Bins::new(chunk_bins, &parts, grid);
 
     // The probe replays every fragment: never deferred.
     let deferred = if probe.is_none() && crate::fragment_ops::last_writer_wins(fb, state) {
@@ -868,7 +999,7 @@ pub(crate) fn draw_probed(
     if let Some(p) = probe {
         p.set_vertices(&vs_layout, &outputs, &vertex_of);
     }
-    let result = shade_tiles(workers, fb, &stage, &prims);
+    let result = shade_tiles(workers, fb, &stage, &prims, &bins);
     // The draw's big buffers, for the next draws.
     drop(stage);
     drop(prims);
@@ -897,29 +1028,11 @@ fn shade_tiles(
     fb: &mut Framebuffer,
     stage: &FragmentStage,
     prims: &[&Prim],
+    bins: &Bins,
 ) -> Result<(), DrawError> {
     let (w, h) = (fb.width as i64, fb.height as i64);
-    let tiles_x = (w + TILE - 1) / TILE;
-    let tiles_y = (h + TILE - 1) / TILE;
-    let n_tiles = (tiles_x * tiles_y).max(0) as usize;
-    // Bins: the primitives overlapping each tile, in draw order.
-    let mut bins: Vec<Vec<u32>> = vec![Vec::new(); n_tiles];
-    for (p, prim) in prims.iter().enumerate() {
-        let b = prim.bounds;
-        let (x0, y0) = (b.0.clamp(0, w), b.1.clamp(0, h));
-        let (x1, y1) = (b.2.clamp(x0, w), b.3.clamp(y0, h));
-        if x0 >= x1 || y0 >= y1 {
-            continue;
-        }
-        for ty in y0 / TILE..=(y1 - 1) / TILE {
-            for tx in x0 / TILE..=(x1 - 1) / TILE {
-                if let Some(bin) = bins.get_mut((ty * tiles_x + tx) as usize) {
-                    bin.push(p as u32);
-                }
-            }
-        }
-    }
-    let occupied: Vec<usize> = (0..n_tiles).filter(|&t| !bins[t].is_empty()).collect();
+    let tiles_x = bins.grid.tiles_x;
+    let occupied = bins.occupied();
     let rect = |t: usize| -> PixelRect {
         let (tx, ty) = (t as i64 % tiles_x.max(1), t as i64 / tiles_x.max(1));
         let (x, y) = (tx * TILE, ty * TILE);
@@ -936,7 +1049,7 @@ fn shade_tiles(
         let r = rect(t);
         let copy = || source.copy_tile(r.0 as u32, r.1 as u32, r.2 as u32, r.3 as u32);
         let mut local = copy();
-        let bin = bins.get(t).map_or(&[][..], |b| &b[..]);
+        let bin = &bins.tile(t)[..];
         let mut scratch = stage.scratch();
         if let Some(depth) = &stage.deferred {
             match stage.shade_deferred(depth.as_ref(), &mut local, prims, bin, r, &mut scratch) {
