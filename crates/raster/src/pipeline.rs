@@ -426,7 +426,7 @@ impl TileGrid {
         let (x0, y0) = (b.0.clamp(0, w), b.1.clamp(0, h));
         let (x1, y1) = (b.2.clamp(x0, w), b.3.clamp(y0, h));
         let (rows, cols) = if x0 >= x1 || y0 >= y1 {
-            (1..0, 1..0)
+            (0..0, 0..0)
         } else {
             (
                 y0 / TILE..(y1 - 1) / TILE + 1,
