@@ -16,6 +16,58 @@ pub const DEPTH_MAX: u32 = (1 << 24) - 1;
 /// Most color buffers one framebuffer can hold (GL_MAX_DRAW_BUFFERS).
 pub const MAX_DRAW_BUFFERS: usize = 8;
 
+/// Rows `y0..` of a framebuffer's buffers, borrowed ([`Framebuffer::bands`]).
+pub(crate) struct Band<'a> {
+    y0: u32,
+    width: usize,
+    color: Vec<BandColor<'a>>,
+    depth: Option<&'a mut [u32]>,
+    stencil: Option<&'a mut [u8]>,
+}
+
+enum BandColor<'a> {
+    Rgba8(&'a mut [[u8; 4]]),
+    Rgba32F(&'a mut [[f32; 4]]),
+}
+
+impl Band<'_> {
+    /// Copies `tile` (a [`Framebuffer::copy_tile`] of the framebuffer) back
+    /// to (x0, y0), the rows inside this band.
+    pub(crate) fn store_tile(&mut self, x0: u32, y0: u32, tile: &Framebuffer) {
+        fn rows<T: Copy>(dst: &mut [T], width: usize, x0: u32, y: i64, src: &[T], w: usize) {
+            if w == 0 || x0 as usize + w > width {
+                return;
+            }
+            for (r, row) in src.chunks(w).enumerate() {
+                let y = y + r as i64;
+                if y < 0 {
+                    continue;
+                }
+                let start = y as usize * width + x0 as usize;
+                if let Some(d) = dst.get_mut(start..start + row.len()) {
+                    d.copy_from_slice(row);
+                }
+            }
+        }
+        // Tile row r at band row y.
+        let y = y0 as i64 - self.y0 as i64;
+        let (width, w) = (self.width, tile.width as usize);
+        for (dst, src) in self.color.iter_mut().zip(&tile.color) {
+            match (dst, src) {
+                (BandColor::Rgba8(d), ColorBuffer::Rgba8(s)) => rows(d, width, x0, y, s, w),
+                (BandColor::Rgba32F(d), ColorBuffer::Rgba32F(s)) => rows(d, width, x0, y, s, w),
+                _ => {}
+            }
+        }
+        if let (Some(d), Some(s)) = (self.depth.as_deref_mut(), tile.depth.as_ref()) {
+            rows(d, width, x0, y, s, w);
+        }
+        if let (Some(d), Some(s)) = (self.stencil.as_deref_mut(), tile.stencil.as_ref()) {
+            rows(d, width, x0, y, s, w);
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ColorFormat {
     Rgba8,
@@ -280,53 +332,60 @@ impl Framebuffer {
         }
     }
 
-    /// Writes `tile` (from [`Framebuffer::copy_tile`]) back at (x0, y0).
-    /// Parts that do not fit, or buffers that do not match, are skipped.
+    /// Writes `tile` (from [`Framebuffer::copy_tile`]) back at (x0, y0),
+    /// with its samples passed. Parts that do not fit, or buffers that do
+    /// not match, are skipped. (Draws write tiles back by [`Band`]s.)
+    #[cfg(test)]
     pub(crate) fn store_tile(&mut self, x0: u32, y0: u32, tile: &Framebuffer) {
-        let width = self.width as usize;
-        let height = self.height as usize;
-        fn rows<T: Copy>(
-            dst: &mut [T],
-            width: usize,
-            height: usize,
-            x0: u32,
-            y0: u32,
-            src: &[T],
-            w: usize,
-        ) {
-            if w == 0 || x0 as usize + w > width {
-                return;
-            }
-            for (r, row) in src.chunks(w).enumerate() {
-                let y = y0 as usize + r;
-                if y >= height {
-                    return;
-                }
-                let start = y * width + x0 as usize;
-                if let Some(d) = dst.get_mut(start..start + row.len()) {
-                    d.copy_from_slice(row);
-                }
-            }
-        }
-        let w = tile.width as usize;
         self.samples_passed = self.samples_passed.wrapping_add(tile.samples_passed);
-        for (dst, src) in self.color.iter_mut().zip(&tile.color) {
-            match (dst, src) {
-                (ColorBuffer::Rgba8(d), ColorBuffer::Rgba8(s)) => {
-                    rows(d, width, height, x0, y0, s, w)
+        let height = self.height;
+        let mut all = self.bands(height.max(1));
+        if let Some(band) = all.first_mut() {
+            band.store_tile(x0, y0, tile);
+        }
+    }
+
+    /// The framebuffer cut into bands of `rows` rows (the last may have
+    /// fewer), each borrowing its rows of every buffer: tiles of different
+    /// bands are written back in parallel. `samples_passed` is not theirs.
+    pub(crate) fn bands(&mut self, rows: u32) -> Vec<Band<'_>> {
+        let width = self.width as usize;
+        let per = width * rows.max(1) as usize;
+        let n = (self.height as usize).div_ceil(rows.max(1) as usize);
+        let mut bands: Vec<Band> = (0..n)
+            .map(|i| Band {
+                y0: i as u32 * rows.max(1),
+                width,
+                color: Vec::new(),
+                depth: None,
+                stencil: None,
+            })
+            .collect();
+        for c in self.color.iter_mut() {
+            match c {
+                ColorBuffer::Rgba8(v) => {
+                    for (b, rows) in bands.iter_mut().zip(v.chunks_mut(per.max(1))) {
+                        b.color.push(BandColor::Rgba8(rows));
+                    }
                 }
-                (ColorBuffer::Rgba32F(d), ColorBuffer::Rgba32F(s)) => {
-                    rows(d, width, height, x0, y0, s, w)
+                ColorBuffer::Rgba32F(v) => {
+                    for (b, rows) in bands.iter_mut().zip(v.chunks_mut(per.max(1))) {
+                        b.color.push(BandColor::Rgba32F(rows));
+                    }
                 }
-                _ => {}
             }
         }
-        if let (Some(d), Some(s)) = (self.depth.as_mut(), tile.depth.as_ref()) {
-            rows(d, width, height, x0, y0, s, w);
+        if let Some(d) = self.depth.as_mut() {
+            for (b, rows) in bands.iter_mut().zip(d.chunks_mut(per.max(1))) {
+                b.depth = Some(rows);
+            }
         }
-        if let (Some(d), Some(s)) = (self.stencil.as_mut(), tile.stencil.as_ref()) {
-            rows(d, width, height, x0, y0, s, w);
+        if let Some(st) = self.stencil.as_mut() {
+            for (b, rows) in bands.iter_mut().zip(st.chunks_mut(per.max(1))) {
+                b.stencil = Some(rows);
+            }
         }
+        bands
     }
 
     /// Reads a `w`×`h` block of color buffer `buffer` starting at (x, y),

@@ -3,10 +3,11 @@
 //! fragment shading.
 
 use std::collections::HashMap;
+use std::sync::Mutex;
 
 use crate::clip::{ClipVertex, Planes};
 use crate::ex::{ExecError, Interface, Textures, LANES};
-use crate::framebuffer::Framebuffer;
+use crate::framebuffer::{Band, Framebuffer};
 use crate::linkage::{FsLayout, VsLayout};
 use crate::rasterize::{PixelRect, Shape, WinVertex};
 use crate::shade::{new_batch, FragmentStage, Prim};
@@ -1080,19 +1081,44 @@ fn shade_tiles(
         }
         TileResult::Ran(local, None)
     });
-    for (i, result) in results.into_iter().enumerate() {
-        let TileResult::Ran(local, error) = result else {
-            // Only tiles after a failed one are skipped.
-            continue;
-        };
-        let Some(&t) = occupied.get(i) else { continue };
-        let r = rect(t);
-        fb.store_tile(r.0 as u32, r.1 as u32, &local);
-        if let Some(e) = error {
-            return Err(e.into());
+    // Written back up to the first failed tile (later ones are dropped),
+    // each band of tile rows by a worker: the bands are disjoint.
+    let failed = results
+        .iter()
+        .position(|r| matches!(r, TileResult::Ran(_, Some(_))));
+    let kept = failed.map_or(results.len(), |i| i + 1);
+    let mut passed = 0u64;
+    for r in &results[..kept] {
+        if let TileResult::Ran(local, _) = r {
+            passed = passed.wrapping_add(local.samples_passed);
         }
     }
-    Ok(())
+    fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+    let bands: Vec<Mutex<Band>> = fb.bands(TILE as u32).into_iter().map(Mutex::new).collect();
+    let row_of = |i: usize| {
+        occupied
+            .get(i)
+            .map_or(i64::MAX, |&t| t as i64 / tiles_x.max(1))
+    };
+    workers.map(bands.len(), 1, |b, _| {
+        let Some(band) = bands.get(b) else { return };
+        let mut band = band.lock().unwrap_or_else(|e| e.into_inner());
+        // The band's tiles: a run of `occupied` (sorted by tile).
+        let first = occupied.partition_point(|&t| (t as i64 / tiles_x.max(1)) < b as i64);
+        for i in first..kept {
+            if row_of(i) != b as i64 {
+                break;
+            }
+            if let (Some(TileResult::Ran(local, _)), Some(&t)) = (results.get(i), occupied.get(i)) {
+                let r = rect(t);
+                band.store_tile(r.0 as u32, r.1 as u32, local);
+            }
+        }
+    });
+    match failed.and_then(|i| results.into_iter().nth(i)) {
+        Some(TileResult::Ran(_, Some(e))) => Err(e.into()),
+        _ => Ok(()),
+    }
 }
 
 #[cfg(test)]
