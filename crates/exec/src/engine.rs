@@ -10,8 +10,10 @@
 //!   op stays where it was unless nothing reads it any more.
 //! - **Dead code**: ops whose results nobody reads ([`crate::liveness`],
 //!   with every output live at the end) are dropped.
-//! - **Store fusion**: `t = op(...)` followed by `var = t` (a masked store)
-//!   with `t` dead afterwards becomes one op writing `var` under the mask.
+//! - **Store fusion**: `t = op(...)` followed by `var = t` (a masked store,
+//!   or a copy: stores in full flow become copies, [`crate::mask_flow`])
+//!   with `t` dead afterwards becomes one op writing `var` (under the mask
+//!   for a store).
 //! - **Initialization**: only the registers live at the entry (read before
 //!   written on some path) are zeroed at the start of a run.
 //!
@@ -278,6 +280,7 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
     let mut known = vec![u32::MAX; nregs];
     let mut touched: Vec<Reg> = Vec::new();
     let mut ops = p.ops.clone();
+    crate::mask_flow::unmask_stores(p, &mut ops);
     for i in 0..n {
         if leader[i] {
             for &r in &touched {
@@ -341,16 +344,21 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
     // Store fusion: op i writes t, op i+1 is `Store { d: v, a: t }` in the
     // same block with t dead after it.
     let mut keep = live.keep.clone();
-    let mut masked_dest: Vec<Option<Reg>> = vec![None; n];
+    // A copy (`Mov`, a store in full flow: `mask_flow`) fuses the same
+    // way, unmasked.
+    let mut new_dest: Vec<Option<(Reg, bool)>> = vec![None; n];
     for i in 0..n.saturating_sub(1) {
         if !keep[i] || !keep[i + 1] || leader[i + 1] {
             continue;
         }
-        if let Op::Store { d: v, a: t } = ops[i + 1] {
-            if live.store_source_dead[i + 1] && single_dest(p, &ops[i]) == Some(t) && v != t {
-                masked_dest[i] = Some(v);
-                keep[i + 1] = false;
-            }
+        let (v, t, masked) = match ops[i + 1] {
+            Op::Store { d, a } => (d, a, true),
+            Op::Mov { d, a } => (d, a, false),
+            _ => continue,
+        };
+        if live.store_source_dead[i + 1] && single_dest(p, &ops[i]) == Some(t) && v != t {
+            new_dest[i] = Some((v, masked));
+            keep[i + 1] = false;
         }
     }
 
@@ -383,10 +391,10 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
             },
             other => other,
         };
-        let masked = match masked_dest[i] {
-            Some(v) => {
+        let masked = match new_dest[i] {
+            Some((v, masked)) => {
                 set_dest(&mut op, v);
-                true
+                masked
             }
             None => false,
         };
@@ -859,7 +867,8 @@ unsafe fn store_outputs_avx512(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
 
 #[inline(always)]
 fn store_outputs_with(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
-    let active = batch.active & FULL;
+    // Discarded lanes' registers may hold anything (`mask_flow`).
+    let active = batch.active & FULL & !batch.discarded;
     if batch.outputs.len() < k.interface.output_components {
         batch
             .outputs

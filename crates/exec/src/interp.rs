@@ -421,7 +421,7 @@ pub(crate) fn run<H: Hook>(
         }
     }
 
-    let active = batch.active & FULL;
+    let active = batch.active & FULL & !batch.discarded;
     if batch.outputs.len() < k.interface.output_components {
         batch
             .outputs

@@ -177,6 +177,7 @@ mod interp;
 mod jit;
 mod liveness;
 mod lower;
+mod mask_flow;
 mod program;
 mod variant;
 
@@ -237,8 +238,8 @@ pub struct Batch {
     /// One entry per input component (see [`Interface::inputs`]).
     pub inputs: Vec<[f32; LANES]>,
     /// One entry per output component (see [`Interface::outputs`]); grown
-    /// to the interface's size by `run` if shorter. Only active lanes are
-    /// written.
+    /// to the interface's size by `run` if shorter. Only the active lanes
+    /// that did not discard are written.
     pub outputs: Vec<[f32; LANES]>,
     /// Lanes to run.
     pub active: LaneMask,

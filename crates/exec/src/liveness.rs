@@ -21,7 +21,8 @@ pub(crate) struct Liveness {
     /// Registers live at the entry (read before any full write on some
     /// path): the ones a run must initialize.
     pub entry: Vec<u64>,
-    /// Per op: for a `Store { a, .. }`, `a` is dead after the store.
+    /// Per op: for a `Store { a, .. }` or `Mov { a, .. }`, `a` is dead
+    /// after it.
     pub store_source_dead: Vec<bool>,
     /// Per op, when asked for ([`analyze_after`]): the registers live
     /// after it (one bit each), else empty.
@@ -216,7 +217,7 @@ fn analyze_with(
                 a.clone_from(&live);
             }
             keep[i] = needed(&eff[i], &live);
-            if let Op::Store { a, .. } = ops[i] {
+            if let Op::Store { a, .. } | Op::Mov { a, .. } = ops[i] {
                 store_source_dead[i] = !get(&live, a);
             }
             transfer(&eff[i], &mut live);
