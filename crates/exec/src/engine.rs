@@ -100,7 +100,7 @@ fn leaders(ops: &[Op]) -> Vec<bool> {
 
 /// Ops that compute every lane from their register operands alone (no
 /// mask, no other lanes, no ranges), so they may run in the prologue.
-fn pure(op: &Op) -> bool {
+pub(crate) fn pure(op: &Op) -> bool {
     !matches!(
         op,
         Op::Store { .. }

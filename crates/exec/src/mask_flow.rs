@@ -17,11 +17,80 @@
 //! lane, and the same for each mask slot. `discard` keeps the property of
 //! the slots (its lanes are dead), `break`, `continue` and `return`
 //! (`Kill`) lose it for the slots they remove lanes from (those lanes are
-//! live), `AndMask`/`AndNotMask` lose it for the current mask. Joins keep
-//! the property only where every predecessor has it; the analysis iterates
-//! to a fixed point over the loops' back edges.
+//! live), `AndMask`/`AndNotMask` lose it for the current mask unless the
+//! condition is uniform (computed from uniforms and constants only: then
+//! every live lane runs the branch or none does, and inside it, past the
+//! jump taken when none runs, all do). Joins keep a property only where
+//! every predecessor has it; the analysis iterates to a fixed point over
+//! the loops' back edges.
 
-use crate::program::{Op, Program};
+use crate::liveness::effects;
+use crate::program::{Op, Program, Reg};
+
+/// What is known of a mask (the current one or a slot's).
+const PARTIAL: u8 = 0;
+/// Every live lane, or none.
+const FULL_OR_EMPTY: u8 = 1;
+/// Every live lane.
+const FULL: u8 = 2;
+
+/// The analysis state before an op.
+#[derive(Clone)]
+struct State {
+    /// The current mask, then each slot: [`PARTIAL`], [`FULL_OR_EMPTY`] or
+    /// [`FULL`].
+    masks: Vec<u8>,
+    /// Registers holding one value on every live lane (bit per register):
+    /// computed from uniforms and constants. An `if` on such a condition
+    /// runs every live lane or none.
+    uniform: Vec<u64>,
+}
+
+impl State {
+    /// Meets `other` into `self`; whether anything changed.
+    fn meet(&mut self, other: &State) -> bool {
+        let mut changed = false;
+        for (a, &b) in self.masks.iter_mut().zip(&other.masks) {
+            if b < *a {
+                *a = b;
+                changed = true;
+            }
+        }
+        for (a, &b) in self.uniform.iter_mut().zip(&other.uniform) {
+            if *a & b != *a {
+                *a &= b;
+                changed = true;
+            }
+        }
+        changed
+    }
+
+    fn is_uniform(&self, r: Reg) -> bool {
+        self.uniform
+            .get(r as usize / 64)
+            .is_some_and(|w| w & (1 << (r % 64)) != 0)
+    }
+
+    fn set_uniform(&mut self, r: Reg, u: bool) {
+        if let Some(w) = self.uniform.get_mut(r as usize / 64) {
+            if u {
+                *w |= 1 << (r % 64);
+            } else {
+                *w &= !(1 << (r % 64));
+            }
+        }
+    }
+
+    /// Whether the current mask, after `AndMask`/`AndNotMask` from `from`
+    /// with condition `c`, still holds every live lane or none.
+    fn narrowed(&self, from: u8, c: Reg) -> u8 {
+        if from >= FULL_OR_EMPTY && self.is_uniform(c) {
+            FULL_OR_EMPTY
+        } else {
+            PARTIAL
+        }
+    }
+}
 
 /// Per op: whether it runs in full flow. All false for programs with
 /// subroutine calls (not analyzed).
@@ -34,73 +103,92 @@ fn full_flow(p: &Program) -> Vec<bool> {
     {
         return vec![false; n];
     }
-    // State: [current mask, slot 0, slot 1, ...]; `None`: not reached.
-    let mut at: Vec<Option<Vec<bool>>> = vec![None; n + 1];
-    let mut entry = vec![false; slots + 1];
-    entry[0] = true;
-    at[0] = Some(entry);
+    let mut at: Vec<Option<State>> = vec![None; n + 1];
+    let mut masks = vec![PARTIAL; slots + 1];
+    masks[0] = FULL;
+    at[0] = Some(State {
+        masks,
+        uniform: vec![0; (p.registers as usize).div_ceil(64)],
+    });
     let mut work = vec![0usize];
-    let join = |at: &mut Vec<Option<Vec<bool>>>, i: usize, s: &[bool]| -> bool {
-        match at.get_mut(i) {
-            Some(slot @ None) => {
-                *slot = Some(s.to_vec());
-                true
-            }
-            Some(Some(old)) => {
-                let mut changed = false;
-                for (o, &v) in old.iter_mut().zip(s) {
-                    if *o && !v {
-                        *o = false;
-                        changed = true;
-                    }
-                }
-                changed
-            }
-            None => false,
-        }
-    };
     while let Some(i) = work.pop() {
         let Some(mut s) = at.get(i).cloned().flatten() else {
             continue;
         };
         let Some(op) = p.ops.get(i) else { continue };
         let slot = |k: u32| k as usize + 1;
-        let mut next = vec![i + 1];
+        let get = |s: &State, k: u32| s.masks.get(slot(k)).copied().unwrap_or(PARTIAL);
+        let cur = s.masks[0];
+        // Targets, with the state on each.
+        let mut next = vec![(i + 1, None)];
         match *op {
             Op::SaveMask { slot: k } => {
-                let cur = s[0];
-                if let Some(v) = s.get_mut(slot(k)) {
+                if let Some(v) = s.masks.get_mut(slot(k)) {
                     *v = cur;
                 }
             }
-            Op::RestoreMask { slot: k } => s[0] = s.get(slot(k)).copied().unwrap_or(false),
-            Op::AndMask { .. } | Op::AndNotMask { .. } => s[0] = false,
+            Op::RestoreMask { slot: k } => s.masks[0] = get(&s, k),
+            Op::AndMask { c } => s.masks[0] = s.narrowed(cur, c),
+            Op::AndNotMask { slot: k, c } => s.masks[0] = s.narrowed(get(&s, k), c),
             // The discarded lanes are dead: the slots keep every live one.
-            Op::Discard { .. } => s[0] = false,
+            Op::Discard { .. } => s.masks[0] = PARTIAL,
             Op::Kill { start, end } => {
                 let ks = p
                     .kill_slots
                     .get(start as usize..end as usize)
                     .unwrap_or(&[]);
                 for &k in ks {
-                    if let Some(v) = s.get_mut(slot(k)) {
-                        *v = false;
+                    if let Some(v) = s.masks.get_mut(slot(k)) {
+                        *v = PARTIAL;
                     }
                 }
-                s[0] = false;
+                s.masks[0] = PARTIAL;
             }
-            Op::Jump { target } => next = vec![target as usize],
-            Op::JumpIfNone { target } => next.push(target as usize),
-            _ => {}
+            Op::Jump { target } => next = vec![(target as usize, None)],
+            Op::JumpIfNone { target } => {
+                // Falling through, some lane runs: "all or none" is all.
+                let mut run = s.clone();
+                if cur == FULL_OR_EMPTY {
+                    run.masks[0] = FULL;
+                }
+                next = vec![(i + 1, Some(run)), (target as usize, None)];
+            }
+            _ => {
+                let e = effects(p, op);
+                let uniform = match op {
+                    Op::Store { a, .. } => cur == FULL && s.is_uniform(*a),
+                    _ => {
+                        crate::engine::pure(op)
+                            && e.partial_defs.is_empty()
+                            && e.uses
+                                .iter()
+                                .all(|&(r, k)| (r..r.saturating_add(k)).all(|r| s.is_uniform(r)))
+                    }
+                };
+                for &(r, k) in e.full_defs.iter().chain(&e.partial_defs) {
+                    for r in r..r.saturating_add(k) {
+                        s.set_uniform(r, uniform);
+                    }
+                }
+            }
         }
-        for t in next {
-            if t <= n && join(&mut at, t, &s) {
+        for (t, state) in next {
+            let st = state.as_ref().unwrap_or(&s);
+            let changed = match at.get_mut(t) {
+                Some(slot @ None) if t <= n => {
+                    *slot = Some(st.clone());
+                    true
+                }
+                Some(Some(old)) => old.meet(st),
+                _ => false,
+            };
+            if changed {
                 work.push(t);
             }
         }
     }
     (0..n)
-        .map(|i| at[i].as_ref().is_some_and(|s| s[0]))
+        .map(|i| at[i].as_ref().is_some_and(|s| s.masks[0] == FULL))
         .collect()
 }
 
@@ -166,6 +254,45 @@ mod tests {
         assert!(f[6], "after the discarding if");
         assert!(!f[9], "inside an if");
         assert!(f[11], "after it");
+    }
+
+    #[test]
+    fn a_branch_on_a_uniform_runs_every_live_lane() {
+        // r1 = u[0] < 0.5; if (r1) { r2 = r3 } else { r4 = r3 } ; r5 = r0 < r1;
+        // if (r5) { r2 = r3 }
+        let p = prog(
+            vec![
+                Uniform {
+                    d: 1,
+                    word: 0,
+                    float: true,
+                },
+                FLt { d: 1, a: 1, b: 6 },
+                SaveMask { slot: 0 },
+                AndMask { c: 1 },
+                JumpIfNone { target: 6 },
+                Store { d: 2, a: 3 },
+                AndNotMask { slot: 0, c: 1 },
+                JumpIfNone { target: 9 },
+                Store { d: 4, a: 3 },
+                RestoreMask { slot: 0 },
+                FLt { d: 5, a: 0, b: 1 },
+                SaveMask { slot: 0 },
+                AndMask { c: 5 },
+                JumpIfNone { target: 15 },
+                Store { d: 2, a: 3 },
+                RestoreMask { slot: 0 },
+            ],
+            1,
+            Vec::new(),
+        );
+        let f = full_flow(&p);
+        assert!(!f[5], "r6 is not uniform: neither is r1");
+        let mut p = p;
+        p.ops[1] = FLt { d: 1, a: 1, b: 1 };
+        let f = full_flow(&p);
+        assert!(f[5] && f[8], "both sides of a uniform branch");
+        assert!(!f[14], "r0 is an input: r5 varies");
     }
 
     #[test]
