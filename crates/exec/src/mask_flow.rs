@@ -34,37 +34,26 @@ const FULL_OR_EMPTY: u8 = 1;
 /// Every live lane.
 const FULL: u8 = 2;
 
-/// The analysis state before an op.
-#[derive(Clone)]
-struct State {
-    /// The current mask, then each slot: [`PARTIAL`], [`FULL_OR_EMPTY`] or
-    /// [`FULL`].
+/// The analysis states before every op, flat: per op, the current mask's
+/// and each slot's [`PARTIAL`], [`FULL_OR_EMPTY`] or [`FULL`]
+/// (`slots + 1` bytes), and a bit per register holding one value on every
+/// live lane (computed from uniforms and constants only: an `if` on such a
+/// condition runs every live lane or none).
+struct States {
+    m: usize,
+    w: usize,
     masks: Vec<u8>,
-    /// Registers holding one value on every live lane (bit per register):
-    /// computed from uniforms and constants. An `if` on such a condition
-    /// runs every live lane or none.
+    uniform: Vec<u64>,
+    reached: Vec<bool>,
+}
+
+/// One state being carried through an op.
+struct Cur {
+    masks: Vec<u8>,
     uniform: Vec<u64>,
 }
 
-impl State {
-    /// Meets `other` into `self`; whether anything changed.
-    fn meet(&mut self, other: &State) -> bool {
-        let mut changed = false;
-        for (a, &b) in self.masks.iter_mut().zip(&other.masks) {
-            if b < *a {
-                *a = b;
-                changed = true;
-            }
-        }
-        for (a, &b) in self.uniform.iter_mut().zip(&other.uniform) {
-            if *a & b != *a {
-                *a &= b;
-                changed = true;
-            }
-        }
-        changed
-    }
-
+impl Cur {
     fn is_uniform(&self, r: Reg) -> bool {
         self.uniform
             .get(r as usize / 64)
@@ -81,8 +70,8 @@ impl State {
         }
     }
 
-    /// Whether the current mask, after `AndMask`/`AndNotMask` from `from`
-    /// with condition `c`, still holds every live lane or none.
+    /// The current mask after `AndMask`/`AndNotMask` from a mask known as
+    /// `from`, with condition `c`.
     fn narrowed(&self, from: u8, c: Reg) -> u8 {
         if from >= FULL_OR_EMPTY && self.is_uniform(c) {
             FULL_OR_EMPTY
@@ -92,103 +81,153 @@ impl State {
     }
 }
 
+impl States {
+    fn load(&self, i: usize, into: &mut Cur) {
+        into.masks
+            .copy_from_slice(&self.masks[i * self.m..(i + 1) * self.m]);
+        into.uniform
+            .copy_from_slice(&self.uniform[i * self.w..(i + 1) * self.w]);
+    }
+
+    /// Meets `s` into the state before op `t`; whether it changed.
+    fn meet(&mut self, t: usize, s: &Cur) -> bool {
+        let (m, w) = (self.m, self.w);
+        let (Some(masks), Some(uniform)) = (
+            self.masks.get_mut(t * m..(t + 1) * m),
+            self.uniform.get_mut(t * w..(t + 1) * w),
+        ) else {
+            return false;
+        };
+        if !self.reached[t] {
+            self.reached[t] = true;
+            masks.copy_from_slice(&s.masks);
+            uniform.copy_from_slice(&s.uniform);
+            return true;
+        }
+        let mut changed = false;
+        for (a, &b) in masks.iter_mut().zip(&s.masks) {
+            if b < *a {
+                *a = b;
+                changed = true;
+            }
+        }
+        for (a, &b) in uniform.iter_mut().zip(&s.uniform) {
+            if *a & b != *a {
+                *a &= b;
+                changed = true;
+            }
+        }
+        changed
+    }
+}
+
 /// Per op: whether it runs in full flow. All false for programs with
 /// subroutine calls (not analyzed).
 fn full_flow(p: &Program) -> Vec<bool> {
     let n = p.ops.len();
-    let slots = p.mask_slots as usize;
     if p.ops
         .iter()
         .any(|op| matches!(op, Op::Call { .. } | Op::Ret { .. }))
     {
         return vec![false; n];
     }
-    let mut at: Vec<Option<State>> = vec![None; n + 1];
-    let mut masks = vec![PARTIAL; slots + 1];
-    masks[0] = FULL;
-    at[0] = Some(State {
-        masks,
-        uniform: vec![0; (p.registers as usize).div_ceil(64)],
+    let (m, w) = (
+        p.mask_slots as usize + 1,
+        (p.registers as usize).div_ceil(64),
+    );
+    let mut st = States {
+        m,
+        w,
+        masks: vec![PARTIAL; (n + 1) * m],
+        uniform: vec![0; (n + 1) * w],
+        reached: vec![false; n + 1],
+    };
+    let mut s = Cur {
+        masks: vec![PARTIAL; m],
+        uniform: vec![0; w],
+    };
+    s.masks[0] = FULL;
+    st.meet(0, &s);
+    // Sweeps in program order until nothing changes: forward edges settle
+    // in one, a loop's back edge needs another (a program without loops,
+    // unrolled ones included, takes one).
+    let back_edges = p.ops.iter().enumerate().any(|(i, op)| {
+        matches!(*op, Op::Jump { target } | Op::JumpIfNone { target } if target as usize <= i)
     });
-    let mut work = vec![0usize];
-    while let Some(i) = work.pop() {
-        let Some(mut s) = at.get(i).cloned().flatten() else {
-            continue;
-        };
-        let Some(op) = p.ops.get(i) else { continue };
-        let slot = |k: u32| k as usize + 1;
-        let get = |s: &State, k: u32| s.masks.get(slot(k)).copied().unwrap_or(PARTIAL);
-        let cur = s.masks[0];
-        // Targets, with the state on each.
-        let mut next = vec![(i + 1, None)];
-        match *op {
-            Op::SaveMask { slot: k } => {
-                if let Some(v) = s.masks.get_mut(slot(k)) {
-                    *v = cur;
-                }
+    let mut changed = true;
+    while changed {
+        changed = false;
+        for (i, op) in p.ops.iter().enumerate() {
+            if !st.reached[i] {
+                continue;
             }
-            Op::RestoreMask { slot: k } => s.masks[0] = get(&s, k),
-            Op::AndMask { c } => s.masks[0] = s.narrowed(cur, c),
-            Op::AndNotMask { slot: k, c } => s.masks[0] = s.narrowed(get(&s, k), c),
-            // The discarded lanes are dead: the slots keep every live one.
-            Op::Discard { .. } => s.masks[0] = PARTIAL,
-            Op::Kill { start, end } => {
-                let ks = p
-                    .kill_slots
-                    .get(start as usize..end as usize)
-                    .unwrap_or(&[]);
-                for &k in ks {
+            st.load(i, &mut s);
+            let slot = |k: u32| k as usize + 1;
+            let get = |s: &Cur, k: u32| s.masks.get(slot(k)).copied().unwrap_or(PARTIAL);
+            let cur = s.masks[0];
+            let mut fall = true;
+            match *op {
+                Op::SaveMask { slot: k } => {
                     if let Some(v) = s.masks.get_mut(slot(k)) {
-                        *v = PARTIAL;
+                        *v = cur;
                     }
                 }
-                s.masks[0] = PARTIAL;
+                Op::RestoreMask { slot: k } => s.masks[0] = get(&s, k),
+                Op::AndMask { c } => s.masks[0] = s.narrowed(cur, c),
+                Op::AndNotMask { slot: k, c } => s.masks[0] = s.narrowed(get(&s, k), c),
+                // The discarded lanes are dead: the slots keep every live
+                // one.
+                Op::Discard { .. } => s.masks[0] = PARTIAL,
+                Op::Kill { start, end } => {
+                    let ks = p
+                        .kill_slots
+                        .get(start as usize..end as usize)
+                        .unwrap_or(&[]);
+                    for &k in ks {
+                        if let Some(v) = s.masks.get_mut(slot(k)) {
+                            *v = PARTIAL;
+                        }
+                    }
+                    s.masks[0] = PARTIAL;
+                }
+                Op::Jump { target } => {
+                    changed |= st.meet(target as usize, &s);
+                    fall = false;
+                }
+                Op::JumpIfNone { target } => {
+                    changed |= st.meet(target as usize, &s);
+                    // Falling through, some lane runs: "all or none" is all.
+                    if cur == FULL_OR_EMPTY {
+                        s.masks[0] = FULL;
+                    }
+                }
+                _ => {
+                    let e = effects(p, op);
+                    let uniform = match op {
+                        Op::Store { a, .. } => cur == FULL && s.is_uniform(*a),
+                        _ => {
+                            crate::engine::pure(op)
+                                && e.partial_defs.is_empty()
+                                && e.uses.iter().all(|&(r, k)| {
+                                    (r..r.saturating_add(k)).all(|r| s.is_uniform(r))
+                                })
+                        }
+                    };
+                    for &(r, k) in e.full_defs.iter().chain(&e.partial_defs) {
+                        for r in r..r.saturating_add(k) {
+                            s.set_uniform(r, uniform);
+                        }
+                    }
+                }
             }
-            Op::Jump { target } => next = vec![(target as usize, None)],
-            Op::JumpIfNone { target } => {
-                // Falling through, some lane runs: "all or none" is all.
-                let mut run = s.clone();
-                if cur == FULL_OR_EMPTY {
-                    run.masks[0] = FULL;
-                }
-                next = vec![(i + 1, Some(run)), (target as usize, None)];
-            }
-            _ => {
-                let e = effects(p, op);
-                let uniform = match op {
-                    Op::Store { a, .. } => cur == FULL && s.is_uniform(*a),
-                    _ => {
-                        crate::engine::pure(op)
-                            && e.partial_defs.is_empty()
-                            && e.uses
-                                .iter()
-                                .all(|&(r, k)| (r..r.saturating_add(k)).all(|r| s.is_uniform(r)))
-                    }
-                };
-                for &(r, k) in e.full_defs.iter().chain(&e.partial_defs) {
-                    for r in r..r.saturating_add(k) {
-                        s.set_uniform(r, uniform);
-                    }
-                }
+            if fall {
+                changed |= st.meet(i + 1, &s);
             }
         }
-        for (t, state) in next {
-            let st = state.as_ref().unwrap_or(&s);
-            let changed = match at.get_mut(t) {
-                Some(slot @ None) if t <= n => {
-                    *slot = Some(st.clone());
-                    true
-                }
-                Some(Some(old)) => old.meet(st),
-                _ => false,
-            };
-            if changed {
-                work.push(t);
-            }
-        }
+        changed &= back_edges;
     }
     (0..n)
-        .map(|i| at[i].as_ref().is_some_and(|s| s.masks[0] == FULL))
+        .map(|i| st.reached[i] && st.masks[i * m] == FULL)
         .collect()
 }
 
