@@ -213,6 +213,28 @@ const COMPRESS: [[u8; 4]; 16] = {
     t
 };
 
+/// A triangle's varying at a quad's four pixels from its vertices' values
+/// `v`: `0 + w0·v0 + w1·v1 + w2·v2` in f64, rounded to f32.
+#[inline(always)]
+fn triangle_values(w: &[[f64; 4]; 3], v: [f32; 3]) -> [f32; 4] {
+    let v = v.map(f64::from);
+    std::array::from_fn(|k| (0.0 + w[0][k] * v[0] + w[1][k] * v[1] + w[2][k] * v[2]) as f32)
+}
+
+/// Writes a quad's four values from lane `first` on (those past the last
+/// lane are dropped).
+#[inline(always)]
+fn put_quad(lanes: &mut [f32; LANES], first: usize, values: [f32; 4]) {
+    match lanes.get_mut(first..first + 4) {
+        Some(out) => out.copy_from_slice(&values),
+        None => {
+            for (x, v) in lanes.iter_mut().skip(first).zip(values) {
+                *x = v;
+            }
+        }
+    }
+}
+
 /// The lane of pixel `k` of `e`, the `q`-th quad of a batch: `4q + k`,
 /// or in a packed batch the next lane (`*next`, then counted) when the
 /// quad runs that pixel (`e.write`), else none. Called for the quads in
@@ -1021,8 +1043,32 @@ impl<'a> FragmentStage<'a> {
             // The primitive's varyings: vertex j's link li at j·links + li.
             let attrs = self.prim_attrs(prim);
             let attr = |j: usize, li: usize| attrs.get(j * links + li).copied().unwrap_or(0.0);
-            for l in plan {
-                let Some(lanes) = batch.inputs.get_mut(l.offset) else {
+            let inputs = &mut batch.inputs[..];
+            if let Shape::Triangle { .. } = prim.shape {
+                // The common case with the shape decided once per quad and
+                // the vertices' rows sliced once: the same values as the
+                // general loop below.
+                let row = |j: usize| attrs.get(j * links..).unwrap_or(&[]);
+                let (a0, a1, a2) = (row(0), row(1), row(2));
+                let at = |a: &[f32], li: usize| a.get(li).copied().unwrap_or(0.0);
+                for l in plan {
+                    let Some(lanes) = inputs.get_mut(l.offset) else {
+                        continue;
+                    };
+                    let v0 = at(a0, l.li);
+                    let values: [f32; 4] = match l.kind {
+                        FillKind::Constant => [v0; 4],
+                        _ => triangle_values(&w, [v0, at(a1, l.li), at(a2, l.li)]),
+                    };
+                    put_quad(lanes, first, values);
+                }
+            }
+            let others = match prim.shape {
+                Shape::Triangle { .. } => &[][..],
+                _ => plan,
+            };
+            for l in others {
+                let Some(lanes) = inputs.get_mut(l.offset) else {
                     continue;
                 };
                 let values: [f32; 4] = match (&prim.shape, l.kind) {
@@ -1031,24 +1077,14 @@ impl<'a> FragmentStage<'a> {
                     }
                     (Shape::Point { .. }, _) | (_, FillKind::Constant) => [attr(0, l.li); 4],
                     (Shape::Triangle { .. }, _) => {
-                        let v = [0, 1, 2].map(|j| attr(j, l.li) as f64);
-                        std::array::from_fn(|k| {
-                            (0.0 + w[0][k] * v[0] + w[1][k] * v[1] + w[2][k] * v[2]) as f32
-                        })
+                        triangle_values(&w, [0, 1, 2].map(|j| attr(j, l.li)))
                     }
                     (Shape::Line { .. }, _) => {
                         let v = [0, 1].map(|j| attr(j, l.li) as f64);
                         std::array::from_fn(|k| (0.0 + w[0][k] * v[0] + w[1][k] * v[1]) as f32)
                     }
                 };
-                match lanes.get_mut(first..first + 4) {
-                    Some(out) => out.copy_from_slice(&values),
-                    None => {
-                        for (x, v) in lanes.iter_mut().skip(first).zip(values) {
-                            *x = v;
-                        }
-                    }
-                }
+                put_quad(lanes, first, values);
             }
             if !pixel_inputs {
                 continue;
