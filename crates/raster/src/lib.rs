@@ -24,9 +24,12 @@
 //! = a rayon pool owned by the `Workers`, no global state). Groups of 64
 //! vertices (four batches of `exec::LANES`) are tasks writing their own
 //! vertices' outputs in place; primitive set-up runs in chunks of 2,048
-//! primitives whose results are taken in primitive order; each 64×64 tile is a task that owns a
-//! copy of its pixels and runs its primitives in draw order, and the tiles
-//! are written back in tile order. No value is combined across tasks, and
+//! primitives whose results are taken in primitive order, each chunk also
+//! listing its primitives per tile; each 64×64 tile is a task that owns a
+//! copy of its pixels and runs its primitives in draw order (the chunks'
+//! lists in chunk order), and the tiles are written back by bands of tile
+//! rows (disjoint rows of the framebuffer), each band a task, up to the
+//! first failed tile. No value is combined across tasks, and
 //! textures are read-only, so the framebuffer is bit-identical whatever the
 //! thread count. A shader error (`exec::ExecError`, e.g. the loop budget)
 //! ends the draw as running the tiles one after the other would: tiles
