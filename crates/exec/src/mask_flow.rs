@@ -34,11 +34,12 @@ const FULL_OR_EMPTY: u8 = 1;
 /// Every live lane.
 const FULL: u8 = 2;
 
-/// The analysis states before every op, flat: per op, the current mask's
-/// and each slot's [`PARTIAL`], [`FULL_OR_EMPTY`] or [`FULL`]
-/// (`slots + 1` bytes), and a bit per register holding one value on every
-/// live lane (computed from uniforms and constants only: an `if` on such a
-/// condition runs every live lane or none).
+/// The analysis states at the jump targets (where paths meet), flat:
+/// per target, the current mask's and each slot's [`PARTIAL`],
+/// [`FULL_OR_EMPTY`] or [`FULL`] (`slots + 1` bytes), and a bit per
+/// register holding one value on every live lane (computed from uniforms
+/// and constants only: an `if` on such a condition runs every live lane or
+/// none). Between targets the state is carried op by op.
 struct States {
     m: usize,
     w: usize,
@@ -47,7 +48,7 @@ struct States {
     reached: Vec<bool>,
 }
 
-/// One state being carried through an op.
+/// One state being carried through the ops.
 struct Cur {
     masks: Vec<u8>,
     uniform: Vec<u64>,
@@ -82,14 +83,19 @@ impl Cur {
 }
 
 impl States {
-    fn load(&self, i: usize, into: &mut Cur) {
+    /// The state at target `t`, if some path reached it.
+    fn load(&self, t: usize, into: &mut Cur) -> bool {
+        if !self.reached.get(t).copied().unwrap_or(false) {
+            return false;
+        }
         into.masks
-            .copy_from_slice(&self.masks[i * self.m..(i + 1) * self.m]);
+            .copy_from_slice(&self.masks[t * self.m..(t + 1) * self.m]);
         into.uniform
-            .copy_from_slice(&self.uniform[i * self.w..(i + 1) * self.w]);
+            .copy_from_slice(&self.uniform[t * self.w..(t + 1) * self.w]);
+        true
     }
 
-    /// Meets `s` into the state before op `t`; whether it changed.
+    /// Meets `s` into the state at target `t`; whether it changed.
     fn meet(&mut self, t: usize, s: &Cur) -> bool {
         let (m, w) = (self.m, self.w);
         let (Some(masks), Some(uniform)) = (
@@ -131,41 +137,67 @@ fn full_flow(p: &Program) -> Vec<bool> {
     {
         return vec![false; n];
     }
+    // The jump targets, numbered.
+    const NONE: u32 = u32::MAX;
+    let mut target_of = vec![NONE; n + 1];
+    let mut targets = 0u32;
+    let mut back_edges = false;
+    for (i, op) in p.ops.iter().enumerate() {
+        if let Op::Jump { target } | Op::JumpIfNone { target } = *op {
+            back_edges |= target as usize <= i;
+            if let Some(t @ &mut NONE) = target_of.get_mut(target as usize) {
+                *t = targets;
+                targets += 1;
+            }
+        }
+    }
     let (m, w) = (
         p.mask_slots as usize + 1,
         (p.registers as usize).div_ceil(64),
     );
+    let k = targets as usize;
     let mut st = States {
         m,
         w,
-        masks: vec![PARTIAL; (n + 1) * m],
-        uniform: vec![0; (n + 1) * w],
-        reached: vec![false; n + 1],
+        masks: vec![PARTIAL; k * m],
+        uniform: vec![0; k * w],
+        reached: vec![false; k],
     };
+    let mut full = vec![false; n];
     let mut s = Cur {
         masks: vec![PARTIAL; m],
         uniform: vec![0; w],
     };
-    s.masks[0] = FULL;
-    st.meet(0, &s);
-    // Sweeps in program order until nothing changes: forward edges settle
-    // in one, a loop's back edge needs another (a program without loops,
-    // unrolled ones included, takes one).
-    let back_edges = p.ops.iter().enumerate().any(|(i, op)| {
-        matches!(*op, Op::Jump { target } | Op::JumpIfNone { target } if target as usize <= i)
-    });
+    // Sweeps in program order until the targets' states settle: forward
+    // edges do in one, a loop's back edge needs another (a program without
+    // loops, unrolled ones included, takes one).
     let mut changed = true;
     while changed {
         changed = false;
+        s.masks.fill(PARTIAL);
+        s.masks[0] = FULL;
+        s.uniform.fill(0);
+        let mut live = true;
         for (i, op) in p.ops.iter().enumerate() {
-            if !st.reached[i] {
+            if let Some(&t) = target_of.get(i).filter(|&&t| t != NONE) {
+                if live {
+                    changed |= st.meet(t as usize, &s);
+                }
+                live = st.load(t as usize, &mut s);
+            }
+            if !live {
                 continue;
             }
-            st.load(i, &mut s);
             let slot = |k: u32| k as usize + 1;
             let get = |s: &Cur, k: u32| s.masks.get(slot(k)).copied().unwrap_or(PARTIAL);
             let cur = s.masks[0];
-            let mut fall = true;
+            full[i] = cur == FULL;
+            let jump_to = |st: &mut States, s: &Cur, target: u32| {
+                target_of
+                    .get(target as usize)
+                    .filter(|&&t| t != NONE)
+                    .is_some_and(|&t| st.meet(t as usize, s))
+            };
             match *op {
                 Op::SaveMask { slot: k } => {
                     if let Some(v) = s.masks.get_mut(slot(k)) {
@@ -191,11 +223,11 @@ fn full_flow(p: &Program) -> Vec<bool> {
                     s.masks[0] = PARTIAL;
                 }
                 Op::Jump { target } => {
-                    changed |= st.meet(target as usize, &s);
-                    fall = false;
+                    changed |= jump_to(&mut st, &s, target);
+                    live = false;
                 }
                 Op::JumpIfNone { target } => {
-                    changed |= st.meet(target as usize, &s);
+                    changed |= jump_to(&mut st, &s, target);
                     // Falling through, some lane runs: "all or none" is all.
                     if cur == FULL_OR_EMPTY {
                         s.masks[0] = FULL;
@@ -220,15 +252,10 @@ fn full_flow(p: &Program) -> Vec<bool> {
                     }
                 }
             }
-            if fall {
-                changed |= st.meet(i + 1, &s);
-            }
         }
         changed &= back_edges;
     }
-    (0..n)
-        .map(|i| st.reached[i] && st.masks[i * m] == FULL)
-        .collect()
+    full
 }
 
 /// Whether some lane of `p` reads another lane's registers (derivatives,
