@@ -441,19 +441,22 @@ impl Context {
             GL_UNSIGNED_SHORT => 2,
             _ => 4,
         };
-        let mut out = Vec::with_capacity(count.min(1 << 24));
-        for i in 0..count.min(1 << 24) {
-            let at = base.saturating_add(i.saturating_mul(size));
-            let Some(b) = bytes.get(at..at.saturating_add(size)) else {
-                break;
-            };
-            out.push(match size {
-                1 => b[0] as u32,
-                2 => u16::from_le_bytes([b[0], b[1]]) as u32,
-                _ => u32::from_le_bytes([b[0], b[1], b[2], b[3]]),
-            });
-        }
-        Some(out)
+        // The whole indices that fit in the buffer, at most 2^24 of them,
+        // converted in one pass per type (the loops vectorize).
+        let avail = bytes.get(base..).unwrap_or(&[]);
+        let n = count.min(1 << 24).min(avail.len() / size);
+        let src = avail.get(..n * size).unwrap_or(&[]);
+        Some(match size {
+            1 => src.iter().map(|&b| b as u32).collect(),
+            2 => src
+                .chunks_exact(2)
+                .map(|b| u16::from_le_bytes([b[0], b[1]]) as u32)
+                .collect(),
+            _ => src
+                .chunks_exact(4)
+                .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+                .collect(),
+        })
     }
 
     /// Draws the vertices recorded between glBegin and glEnd.
