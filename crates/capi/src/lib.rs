@@ -95,6 +95,14 @@
 //!   stencil. `sharelist` is accepted but nothing is shared.
 #![allow(non_snake_case, clippy::missing_safety_doc)]
 
+// mimalloc for the library's own allocations (the host program keeps its
+// allocator): the system allocator returned the worker threads' arenas to
+// the OS after every large draw and faulted them in again on the next one
+// (1M-triangle mesh: 10-13 % of the frame), and it costs a third of compile
+// time (docs/PERFORMANCE.md).
+#[global_allocator]
+static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 pub mod array_draws;
 pub mod arrays;
 pub mod attribs;
