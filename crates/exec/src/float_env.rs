@@ -54,6 +54,8 @@ pub struct FloatEnv {
 }
 
 impl FloatEnv {
+    /// Sets Rust's default environment (every exception masked, round to
+    /// nearest, no FTZ or DAZ) on this thread until the value is dropped.
     pub fn enter() -> FloatEnv {
         HELD.with(|h| h.set(h.get() + 1));
         #[cfg(target_arch = "x86_64")]
