@@ -594,6 +594,13 @@ impl<'a, 'b> Emit<'a, 'b> {
         self.b.ins().band_not(b, drop)
     }
 
+    /// [`Self::ftz`] as an F32X4: an intermediate result flushed before
+    /// the next op uses it.
+    fn fz(&mut self, x: Value) -> Value {
+        let v = self.ftz(x);
+        self.fv(v)
+    }
+
     /// Uniform words (I32X4) as read: [`Self::ftz`] for a float's.
     fn ftz_word(&mut self, float: bool, v: Value) -> Value {
         if float && !self.daz {
@@ -1288,8 +1295,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             Op::FMac { d, a, b } => each!(d, |q| {
                 let (x, y, acc) = (self.ldf(a, q), self.ldf(b, q), self.ldf(d, q));
                 let p = self.b.ins().fmul(x, y);
-                let p = self.ftz(p);
-                let p = self.fv(p);
+                let p = self.fz(p);
                 let s = self.b.ins().fadd(acc, p);
                 self.ftz(s)
             }),
@@ -1298,11 +1304,9 @@ impl<'a, 'b> Emit<'a, 'b> {
                 for k in 0..(n as usize).min(4) {
                     let (x, y) = (self.ldf(a[k], q), self.ldf(b[k], q));
                     let p = self.b.ins().fmul(x, y);
-                    let p = self.ftz(p);
-                    let p = self.fv(p);
+                    let p = self.fz(p);
                     let s = self.b.ins().fadd(acc, p);
-                    let s = self.ftz(s);
-                    acc = self.fv(s);
+                    acc = self.fz(s);
                 }
                 self.iv(acc)
             }),
@@ -1509,8 +1513,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             }
             F2::Mod => {
                 let q = self.b.ins().fdiv(x, y);
-                let q = self.ftz(q);
-                let q = self.fv(q);
+                let q = self.fz(q);
                 let fl = self.floor(q);
                 let p = self.b.ins().fmul(y, fl);
                 let r = self.b.ins().fsub(x, p);
@@ -1529,11 +1532,9 @@ impl<'a, 'b> Emit<'a, 'b> {
                 let one = self.fconst(1.0);
                 let omt = self.b.ins().fsub(one, z);
                 let p = self.b.ins().fmul(x, omt);
-                let p = self.ftz(p);
-                let p = self.fv(p);
+                let p = self.fz(p);
                 let r = self.b.ins().fmul(y, z);
-                let r = self.ftz(r);
-                let r = self.fv(r);
+                let r = self.fz(r);
                 let s = self.b.ins().fadd(p, r);
                 self.ftz(s)
             }
@@ -1545,21 +1546,17 @@ impl<'a, 'b> Emit<'a, 'b> {
             F3::SmoothStep => {
                 // (e0, e1, v) = (x, y, z)
                 let num = self.b.ins().fsub(z, x);
-                let num = self.ftz(num);
-                let num = self.fv(num);
+                let num = self.fz(num);
                 let den = self.b.ins().fsub(y, x);
-                let den = self.ftz(den);
-                let den = self.fv(den);
+                let den = self.fz(den);
                 let t = self.b.ins().fdiv(num, den);
-                let t = self.ftz(t);
-                let t = self.fv(t);
+                let t = self.fz(t);
                 let (zero, one) = (self.fconst(0.0), self.fconst(1.0));
                 let t = self.fmax(t, zero);
                 let t = self.fmin(t, one);
                 let (two, three) = (self.fconst(2.0), self.fconst(3.0));
                 let tt = self.b.ins().fmul(t, t);
-                let tt = self.ftz(tt);
-                let tt = self.fv(tt);
+                let tt = self.fz(tt);
                 let t2 = self.b.ins().fmul(two, t);
                 let k = self.b.ins().fsub(three, t2);
                 let r = self.b.ins().fmul(tt, k);
