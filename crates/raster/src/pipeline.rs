@@ -420,6 +420,19 @@ impl TileGrid {
         }
     }
 
+    /// The tile row of tile `t`.
+    fn row(&self, t: usize) -> usize {
+        t / self.tiles_x.max(1) as usize
+    }
+
+    /// Tile `t`'s pixels, clipped to the frame.
+    fn rect(&self, t: usize) -> PixelRect {
+        let tiles_x = self.tiles_x.max(1);
+        let (tx, ty) = (t as i64 % tiles_x, t as i64 / tiles_x);
+        let (x, y) = (tx * TILE, ty * TILE);
+        (x, y, (x + TILE).min(self.w), (y + TILE).min(self.h))
+    }
+
     /// The tiles a primitive's bounds overlap, row by row.
     fn tiles_of(&self, prim: &Prim) -> impl Iterator<Item = usize> {
         let (w, h, tiles_x) = (self.w, self.h, self.tiles_x);
@@ -1031,14 +1044,9 @@ fn shade_tiles(
     prims: &[&Prim],
     bins: &Bins,
 ) -> Result<(), DrawError> {
-    let (w, h) = (fb.width as i64, fb.height as i64);
-    let tiles_x = bins.grid.tiles_x;
+    let grid = bins.grid;
     let occupied = bins.occupied();
-    let rect = |t: usize| -> PixelRect {
-        let (tx, ty) = (t as i64 % tiles_x.max(1), t as i64 / tiles_x.max(1));
-        let (x, y) = (tx * TILE, ty * TILE);
-        (x, y, (x + TILE).min(w), (y + TILE).min(h))
-    };
+    let rect = |t: usize| grid.rect(t);
     let source: &Framebuffer = fb;
     let results = workers.map(occupied.len(), 1, |i, cancel| {
         if cancel.skip(i) {
@@ -1095,18 +1103,14 @@ fn shade_tiles(
     }
     fb.samples_passed = fb.samples_passed.wrapping_add(passed);
     let bands: Vec<Mutex<Band>> = fb.bands(TILE as u32).into_iter().map(Mutex::new).collect();
-    let row_of = |i: usize| {
-        occupied
-            .get(i)
-            .map_or(i64::MAX, |&t| t as i64 / tiles_x.max(1))
-    };
+    let row_of = |i: usize| occupied.get(i).map_or(usize::MAX, |&t| grid.row(t));
     workers.map(bands.len(), 1, |b, _| {
         let Some(band) = bands.get(b) else { return };
         let mut band = band.lock().unwrap_or_else(|e| e.into_inner());
         // The band's tiles: a run of `occupied` (sorted by tile).
-        let first = occupied.partition_point(|&t| (t as i64 / tiles_x.max(1)) < b as i64);
+        let first = occupied.partition_point(|&t| grid.row(t) < b);
         for i in first..kept {
-            if row_of(i) != b as i64 {
+            if row_of(i) != b {
                 break;
             }
             if let (Some(TileResult::Ran(local, _)), Some(&t)) = (results.get(i), occupied.get(i)) {

@@ -1045,9 +1045,8 @@ impl<'a> FragmentStage<'a> {
             let attr = |j: usize, li: usize| attrs.get(j * links + li).copied().unwrap_or(0.0);
             let inputs = &mut batch.inputs[..];
             if let Shape::Triangle { .. } = prim.shape {
-                // The common case with the shape decided once per quad and
-                // the vertices' rows sliced once: the same values as the
-                // general loop below.
+                // The common case, with the shape decided once per quad and
+                // the vertices' rows sliced once.
                 let row = |j: usize| attrs.get(j * links..).unwrap_or(&[]);
                 let (a0, a1, a2) = (row(0), row(1), row(2));
                 let at = |a: &[f32], li: usize| a.get(li).copied().unwrap_or(0.0);
@@ -1062,29 +1061,25 @@ impl<'a> FragmentStage<'a> {
                     };
                     put_quad(lanes, first, values);
                 }
-            }
-            let others = match prim.shape {
-                Shape::Triangle { .. } => &[][..],
-                _ => plan,
-            };
-            for l in others {
-                let Some(lanes) = inputs.get_mut(l.offset) else {
-                    continue;
-                };
-                let values: [f32; 4] = match (&prim.shape, l.kind) {
-                    (Shape::Point { .. }, FillKind::Replace(c)) if sprite => {
-                        point_coords(quad, prim, order).map(|pc| [pc.0, pc.1, 0.0, 1.0][c])
-                    }
-                    (Shape::Point { .. }, _) | (_, FillKind::Constant) => [attr(0, l.li); 4],
-                    (Shape::Triangle { .. }, _) => {
-                        triangle_values(&w, [0, 1, 2].map(|j| attr(j, l.li)))
-                    }
-                    (Shape::Line { .. }, _) => {
-                        let v = [0, 1].map(|j| attr(j, l.li) as f64);
-                        std::array::from_fn(|k| (0.0 + w[0][k] * v[0] + w[1][k] * v[1]) as f32)
-                    }
-                };
-                put_quad(lanes, first, values);
+            } else {
+                // Points and lines.
+                for l in plan {
+                    let Some(lanes) = inputs.get_mut(l.offset) else {
+                        continue;
+                    };
+                    let values: [f32; 4] = match (&prim.shape, l.kind) {
+                        (Shape::Point { .. }, FillKind::Replace(c)) if sprite => {
+                            point_coords(quad, prim, order).map(|pc| [pc.0, pc.1, 0.0, 1.0][c])
+                        }
+                        (Shape::Line { .. }, FillKind::Interp | FillKind::Replace(_)) => {
+                            let v = [0, 1].map(|j| attr(j, l.li) as f64);
+                            std::array::from_fn(|k| (0.0 + w[0][k] * v[0] + w[1][k] * v[1]) as f32)
+                        }
+                        // A point's, or a flat-shaded, value.
+                        _ => [attr(0, l.li); 4],
+                    };
+                    put_quad(lanes, first, values);
+                }
             }
             if !pixel_inputs {
                 continue;
