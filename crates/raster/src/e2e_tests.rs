@@ -283,7 +283,7 @@ fn scene(workers: &crate::Workers) -> SceneResult {
     );
     let mut seed = 0x1234_5678u32;
     let mut rnd = move || {
-        seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+        seed = crate::lcg_step(seed);
         (seed >> 8) as f32 / (1u32 << 24) as f32
     };
     let mut tris = SceneAttribs {

@@ -1020,7 +1020,7 @@ mod tests {
         values.extend([f32::NEG_INFINITY, 0.5 / 255.0, 1.5 / 255.0, 254.5 / 255.0]);
         let mut bits = 17u32;
         for _ in 0..200_000 {
-            bits = bits.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            bits = crate::lcg_step(bits);
             values.push(f32::from_bits(bits));
             values.push((bits >> 8) as f32 / 16_777_216.0 * 1.2 - 0.1);
         }
@@ -1035,7 +1035,7 @@ mod tests {
         use BlendFactor::*;
         let mut seed = 99u32;
         let mut next = move || {
-            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed = crate::lcg_step(seed);
             seed >> 8
         };
         let pairs = [
@@ -1115,7 +1115,7 @@ mod tests {
         use crate::state::Rect;
         let mut seed = 97u32;
         let mut next = move || {
-            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed = crate::lcg_step(seed);
             seed >> 8
         };
         let mut inside = 0;
@@ -1189,7 +1189,7 @@ mod tests {
         use BlendFactor::*;
         let mut seed = 4321u32;
         let mut next = move || {
-            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed = crate::lcg_step(seed);
             seed >> 8
         };
         let blends = [
@@ -1324,7 +1324,7 @@ mod tests {
         ];
         let mut seed = 0x2b1e_u32;
         let mut next = move || {
-            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed = crate::lcg_step(seed);
             seed
         };
         for k in 0..=255 {

@@ -157,6 +157,13 @@ mod workers;
 
 #[cfg(test)]
 mod e2e_tests;
+
+/// One step of the tests' pseudo-random sequence (a 32-bit linear
+/// congruential generator, Numerical Recipes' constants): the next state.
+#[cfg(test)]
+pub(crate) fn lcg_step(state: u32) -> u32 {
+    state.wrapping_mul(1_664_525).wrapping_add(1_013_904_223)
+}
 pub(crate) use ::exec as ex;
 
 pub use framebuffer::{

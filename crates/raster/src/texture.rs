@@ -826,7 +826,7 @@ mod tests {
         ];
         let mut bits = 0x1234_5678u32;
         for _ in 0..100_000 {
-            bits = bits.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            bits = crate::lcg_step(bits);
             values.push(f32::from_bits(bits));
             values.push((bits >> 8) as f32 / 4096.0 - 2048.0);
         }
@@ -962,7 +962,7 @@ mod tests {
     fn last_level_matches_the_reference() {
         let mut seed = 0x2545_f491_u32;
         let mut rnd = move |n: u32| {
-            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed = crate::lcg_step(seed);
             (seed >> 8) % n
         };
         let mut complete = 0;

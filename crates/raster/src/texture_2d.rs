@@ -1272,7 +1272,7 @@ mod tests {
     /// or arbitrary on the levels whose bit is set in `float`.
     fn random_texture(w: u32, h: u32, float: u32, seed: &mut u32) -> Texture {
         let mut next = move || {
-            *seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            *seed = crate::lcg_step(*seed);
             *seed >> 8
         };
         let mut levels = Vec::new();
@@ -1315,7 +1315,7 @@ mod tests {
         let mut rnd = {
             let mut s = 0x1234_u32;
             move || {
-                s = s.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+                s = crate::lcg_step(s);
                 s
             }
         };
@@ -1458,7 +1458,7 @@ mod tests {
     fn nearby_lanes_match_the_general_path() {
         let mut seed = 0x0dd_u32;
         let mut rnd = move || {
-            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed = crate::lcg_step(seed);
             (seed >> 8) as f32 / 16_777_216.0
         };
         let isas: Vec<Isa> = [Isa::Portable, Isa::Avx2, Isa::Avx512]
@@ -1541,7 +1541,7 @@ mod tests {
     fn level_table_finds_the_last_level_as_texture_does() {
         let mut seed = 0x51ed_2701_u32;
         let mut rnd = move |n: u32| {
-            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed = crate::lcg_step(seed);
             (seed >> 8) % n
         };
         let mut complete = 0;
@@ -1676,7 +1676,7 @@ mod tests {
         ];
         let mut bits = 0x9e37_79b9u32;
         for _ in 0..100_000 {
-            bits = bits.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            bits = crate::lcg_step(bits);
             values.push(f32::from_bits(bits));
             values.push((bits >> 8) as f32 / 4096.0 - 2048.0);
         }
