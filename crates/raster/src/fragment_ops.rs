@@ -1033,11 +1033,7 @@ mod tests {
     fn common_blends_match_the_general_equation() {
         use crate::framebuffer::unorm8_to_float;
         use BlendFactor::*;
-        let mut seed = 99u32;
-        let mut next = move || {
-            seed = crate::lcg_step(seed);
-            seed >> 8
-        };
+        let mut next = crate::lcg_bits(99);
         let pairs = [
             (SrcAlpha, OneMinusSrcAlpha),
             (One, Zero),
@@ -1113,11 +1109,7 @@ mod tests {
     #[test]
     fn quad_tests_and_writes_match_the_fragment_ones() {
         use crate::state::Rect;
-        let mut seed = 97u32;
-        let mut next = move || {
-            seed = crate::lcg_step(seed);
-            seed >> 8
-        };
+        let mut next = crate::lcg_bits(97);
         let mut inside = 0;
         for (i, depth_test) in [
             None,
@@ -1187,11 +1179,7 @@ mod tests {
     fn quick_ops_match_the_general_ones() {
         use crate::state::Rect;
         use BlendFactor::*;
-        let mut seed = 4321u32;
-        let mut next = move || {
-            seed = crate::lcg_step(seed);
-            seed >> 8
-        };
+        let mut next = crate::lcg_bits(4321);
         let blends = [
             None,
             Some((SrcAlpha, OneMinusSrcAlpha)),

@@ -164,6 +164,16 @@ mod e2e_tests;
 pub(crate) fn lcg_step(state: u32) -> u32 {
     state.wrapping_mul(1_664_525).wrapping_add(1_013_904_223)
 }
+
+/// The tests' pseudo-random 24-bit values from `seed` ([`lcg_step`], the
+/// state's top 24 bits).
+#[cfg(test)]
+pub(crate) fn lcg_bits(mut seed: u32) -> impl FnMut() -> u32 {
+    move || {
+        seed = lcg_step(seed);
+        seed >> 8
+    }
+}
 pub(crate) use ::exec as ex;
 
 pub use framebuffer::{
