@@ -566,32 +566,40 @@ impl QuickTarget<'_> {
             *p = unsafe { write_sse2(src, *p, over) };
             return;
         }
-        let s = src.map(clamp01);
         *p = match blend {
-            QuickBlend::Off => to_unorm8(s),
-            QuickBlend::Over => {
-                let d = p.map(|b| b as f32 / 255.0);
-                let (fs, fd) = (s[3], 1.0 - s[3]);
-                to_unorm8([
-                    s[0] * fs + d[0] * fd,
-                    s[1] * fs + d[1] * fd,
-                    s[2] * fs + d[2] * fd,
-                    s[3] * fs + d[3] * fd,
-                ])
-            }
+            QuickBlend::Off => write_scalar(src, *p, false),
+            QuickBlend::Over => write_scalar(src, *p, true),
             QuickBlend::Other(b) => {
                 let d = p.map(|b| b as f32 / 255.0);
-                to_unorm8(blend_unit(b, s, d))
+                to_unorm8(blend_unit(b, src.map(clamp01), d))
             }
         };
     }
 }
 
 /// [`QuickTarget::write`] of `src` over the pixel `dst` without blending
+/// (`over` false) or with [`QuickBlend::Over`], one channel at a time.
+#[inline(always)]
+fn write_scalar(src: [f32; 4], dst: [u8; 4], over: bool) -> [u8; 4] {
+    let s = src.map(clamp01);
+    if !over {
+        return to_unorm8(s);
+    }
+    let d = dst.map(|b| b as f32 / 255.0);
+    let (fs, fd) = (s[3], 1.0 - s[3]);
+    to_unorm8([
+        s[0] * fs + d[0] * fd,
+        s[1] * fs + d[1] * fd,
+        s[2] * fs + d[2] * fd,
+        s[3] * fs + d[3] * fd,
+    ])
+}
+
+/// [`QuickTarget::write`] of `src` over the pixel `dst` without blending
 /// (`over` false) or with [`QuickBlend::Over`], the four channels in one
-/// SSE2 register: the same operations in the same order (the scalar
-/// code's `clamp01`, `b / 255`, `s·fs + d·fd` and [`to_unorm8`]), so the
-/// same bytes; a test compares the two.
+/// SSE2 register: the same operations in the same order as
+/// [`write_scalar`] (`clamp01`, `b / 255`, `s·fs + d·fd` and
+/// [`to_unorm8`]), so the same bytes; a test compares the two.
 ///
 /// # Safety
 /// The CPU must support SSE2 (every x86-64 CPU does).
@@ -1279,20 +1287,6 @@ mod tests {
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn sse2_write_matches_the_scalar_code() {
-        let scalar = |src: [f32; 4], dst: [u8; 4], over: bool| -> [u8; 4] {
-            let s = src.map(clamp01);
-            if !over {
-                return to_unorm8(s);
-            }
-            let d = dst.map(|b| b as f32 / 255.0);
-            let (fs, fd) = (s[3], 1.0 - s[3]);
-            to_unorm8([
-                s[0] * fs + d[0] * fd,
-                s[1] * fs + d[1] * fd,
-                s[2] * fs + d[2] * fd,
-                s[3] * fs + d[3] * fd,
-            ])
-        };
         let mut values = vec![
             0.0f32,
             -0.0,
@@ -1329,7 +1323,7 @@ mod tests {
             let over = round % 4 != 0;
             // SAFETY: SSE2 is part of the x86-64 baseline.
             let got = unsafe { write_sse2(src, dst, over) };
-            assert_eq!(got, scalar(src, dst, over), "{src:?} {dst:?} {over}");
+            assert_eq!(got, write_scalar(src, dst, over), "{src:?} {dst:?} {over}");
         }
     }
 
