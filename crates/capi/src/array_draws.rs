@@ -166,10 +166,7 @@ gl_entry_points! {
         let counts = rd_vec(count, primcount as i64);
         let ptrs = rd_vec(indices, primcount as i64);
         for (&k, &p) in counts.iter().zip(&ptrs) {
-            let (data, idx) = element_indices(c, k, ty, p);
-            if let (Some(lo), Some(hi)) = (idx.iter().min(), idx.iter().max()) {
-                c.arrays.prepare(&mut c.gl, *lo, *hi);
-            }
+            let data = crate::entry::prepare_elements(c, k, ty, p);
             c.gl.draw_elements(mode, k, ty, data);
         }
         c.dirty = true;

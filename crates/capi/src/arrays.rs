@@ -96,6 +96,14 @@ impl ClientArrays {
         }
     }
 
+    /// Whether a draw reads an enabled array from client memory (then
+    /// [`Arrays::prepare`] has vertices to copy).
+    pub fn reads_client_memory(&self, gl: &gl::Context) -> bool {
+        self.pointers.keys().any(|&src| {
+            array_state(gl.vertex_state(), src).is_some_and(|a| a.enabled && a.buffer == 0)
+        })
+    }
+
     /// Before a draw reading vertices `lo..=hi`: copies those vertices of
     /// every enabled client array into the context.
     pub fn prepare(&self, gl: &mut gl::Context, lo: u32, hi: u32) {

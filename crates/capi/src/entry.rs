@@ -170,13 +170,16 @@ fn b(x: GLboolean) -> bool {
     x != 0
 }
 
-/// glDrawElements' index range: the indices (copied when client memory)
-/// and the data handed to the context.
-pub(crate) unsafe fn element_indices(
+/// glDrawElements' index array as the context takes it (an offset into the
+/// bound element buffer, or a copy of client memory) and, with `read`, the
+/// indices themselves (else none: a draw from buffers reads them once,
+/// in the context).
+unsafe fn element_source(
     c: &mut OsContext,
     count: GLsizei,
     ty: GLenum,
     indices: *const c_void,
+    read: bool,
 ) -> (ArrayData, Vec<u32>) {
     let size = match ty {
         GL_UNSIGNED_BYTE => 1,
@@ -188,7 +191,22 @@ pub(crate) unsafe fn element_indices(
         return (ArrayData::Offset(0), Vec::new());
     }
     let n = (count as usize).min(1 << 24) * size;
-    let (data, bytes): (ArrayData, Vec<u8>) = if c.gl.vertex_state().element_buffer != 0 {
+    let convert = |bytes: &[u8]| -> Vec<u32> {
+        bytes
+            .chunks_exact(size)
+            .map(|ch| match ch {
+                [a] => *a as u32,
+                [a, b] => u16::from_ne_bytes([*a, *b]) as u32,
+                [a, b, c, d] => u32::from_ne_bytes([*a, *b, *c, *d]),
+                _ => 0,
+            })
+            .collect()
+    };
+    if c.gl.vertex_state().element_buffer != 0 {
+        let data = ArrayData::Offset(indices as usize);
+        if !read {
+            return (data, Vec::new());
+        }
         // Read the bound buffer without disturbing the error flag (the
         // draw reports range errors itself).
         let saved = c.gl.get_error();
@@ -196,24 +214,48 @@ pub(crate) unsafe fn element_indices(
             c.gl.get_buffer_sub_data(GL_ELEMENT_ARRAY_BUFFER, indices as isize, n as isize);
         let _ = c.gl.get_error();
         c.gl.record_error(saved);
-        (ArrayData::Offset(indices as usize), bytes)
+        (data, convert(&bytes))
     } else if indices.is_null() {
         (ArrayData::Client(Arc::from(Vec::new())), Vec::new())
     } else {
         // SAFETY: GL's contract: `count` indices of `ty` at `indices`.
-        let bytes = unsafe { std::slice::from_raw_parts(indices as *const u8, n) }.to_vec();
-        (ArrayData::Client(Arc::from(bytes.clone())), bytes)
-    };
-    let idx: Vec<u32> = bytes
-        .chunks_exact(size)
-        .map(|ch| match ch {
-            [a] => *a as u32,
-            [a, b] => u16::from_ne_bytes([*a, *b]) as u32,
-            [a, b, c, d] => u32::from_ne_bytes([*a, *b, *c, *d]),
-            _ => 0,
-        })
-        .collect();
-    (data, idx)
+        let bytes = unsafe { std::slice::from_raw_parts(indices as *const u8, n) };
+        let idx = if read { convert(bytes) } else { Vec::new() };
+        (ArrayData::Client(Arc::from(bytes)), idx)
+    }
+}
+
+/// glDrawElements' index range: the indices (copied when client memory)
+/// and the data handed to the context.
+pub(crate) unsafe fn element_indices(
+    c: &mut OsContext,
+    count: GLsizei,
+    ty: GLenum,
+    indices: *const c_void,
+) -> (ArrayData, Vec<u32>) {
+    // SAFETY: the caller's.
+    unsafe { element_source(c, count, ty, indices, true) }
+}
+
+/// Before a glDrawElements-like draw: copies the vertices its indices use
+/// of every enabled client array into the context ([`Arrays::prepare`]),
+/// reading the indices only when there is such an array; returns the index
+/// data for the context.
+///
+/// [`Arrays::prepare`]: crate::arrays::Arrays::prepare
+pub(crate) unsafe fn prepare_elements(
+    c: &mut OsContext,
+    count: GLsizei,
+    ty: GLenum,
+    indices: *const c_void,
+) -> ArrayData {
+    let read = c.arrays.reads_client_memory(&c.gl);
+    // SAFETY: the caller's.
+    let (data, idx) = unsafe { element_source(c, count, ty, indices, read) };
+    if let (Some(lo), Some(hi)) = (idx.iter().min(), idx.iter().max()) {
+        c.arrays.prepare(&mut c.gl, *lo, *hi);
+    }
+    data
 }
 
 /// Generates the extern "C" functions and [`lookup`] (the
@@ -1273,10 +1315,7 @@ gl_entry_points! {
             c.gl.record_error(GL_INVALID_OPERATION);
             return;
         }
-        let (data, idx) = element_indices(c, count, ty, indices);
-        if let (Some(lo), Some(hi)) = (idx.iter().min(), idx.iter().max()) {
-            c.arrays.prepare(&mut c.gl, *lo, *hi);
-        }
+        let data = prepare_elements(c, count, ty, indices);
         c.gl.draw_range_elements(mode, start, end, count, ty, data);
         c.dirty = true;
     }
@@ -1884,10 +1923,7 @@ gl_entry_points! {
                 return;
             }
         }
-        let (data, idx) = element_indices(c, count, ty, indices);
-        if let (Some(lo), Some(hi)) = (idx.iter().min(), idx.iter().max()) {
-            c.arrays.prepare(&mut c.gl, *lo, *hi);
-        }
+        let data = prepare_elements(c, count, ty, indices);
         c.gl.draw_elements(mode, count, ty, data);
         c.dirty = true;
     }

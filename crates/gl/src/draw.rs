@@ -402,7 +402,7 @@ impl Context {
         let Some(idx) = self.read_indices(count as usize, ty, &indices) else {
             return;
         };
-        self.run_draw(mode, &idx, None);
+        self.run_draw(mode, idx.as_slice(), None);
     }
 
     /// glDrawRangeElements.
@@ -422,7 +422,7 @@ impl Context {
         self.draw_elements(mode, count, ty, indices);
     }
 
-    fn read_indices(&mut self, count: usize, ty: u32, data: &ArrayData) -> Option<Vec<u32>> {
+    fn read_indices(&mut self, count: usize, ty: u32, data: &ArrayData) -> Option<Indices> {
         let (bytes, base): (Arc<[u8]>, usize) = match data {
             ArrayData::Client(b) => (b.clone(), 0),
             ArrayData::Offset(off) => {
@@ -446,7 +446,12 @@ impl Context {
         let avail = bytes.get(base..).unwrap_or(&[]);
         let n = count.min(1 << 24).min(avail.len() / size);
         let src = avail.get(..n * size).unwrap_or(&[]);
-        Some(match size {
+        if size == 4 && words(src).is_some() {
+            // 32-bit indices read where they are (no copy of a large
+            // element buffer per draw).
+            return Some(Indices::Shared(bytes.clone(), base..base + n * 4));
+        }
+        Some(Indices::Converted(match size {
             1 => src.iter().map(|&b| b as u32).collect(),
             2 => src
                 .chunks_exact(2)
@@ -456,7 +461,7 @@ impl Context {
                 .chunks_exact(4)
                 .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
                 .collect(),
-        })
+        }))
     }
 
     /// Draws the vertices recorded between glBegin and glEnd.
@@ -1419,4 +1424,34 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
         _ => raster::DepthTextureMode::Luminance,
     };
     out
+}
+
+/// A draw's element indices: converted, or 32-bit ones in their buffer
+/// (bytes `range`), which [`words`] reads in place.
+enum Indices {
+    Converted(Vec<u32>),
+    Shared(Arc<[u8]>, std::ops::Range<usize>),
+}
+
+impl Indices {
+    fn as_slice(&self) -> &[u32] {
+        match self {
+            Indices::Converted(v) => v,
+            Indices::Shared(bytes, range) => {
+                bytes.get(range.clone()).and_then(words).unwrap_or(&[])
+            }
+        }
+    }
+}
+
+/// `bytes` as little-endian 32-bit words when they can be read in place:
+/// a little-endian target and 4-byte alignment.
+fn words(bytes: &[u8]) -> Option<&[u32]> {
+    if !cfg!(target_endian = "little") {
+        return None;
+    }
+    // SAFETY: every bit pattern of four bytes is a valid u32, and
+    // `align_to` only puts whole, aligned words in the middle slice.
+    let (head, mid, tail) = unsafe { bytes.align_to::<u32>() };
+    (head.is_empty() && tail.is_empty()).then_some(mid)
 }

@@ -376,3 +376,87 @@ fn images_are_identical_whatever_the_thread_count() {
         assert_eq!(one.3, many.3);
     }
 }
+
+/// The same triangles drawn from element indices of every type, from an
+/// element buffer (32-bit ones at an aligned offset, read in place, and at
+/// an unaligned one, converted) and from client memory, give the image of
+/// the draw_arrays of their vertices.
+#[test]
+fn element_indices_of_every_type_and_place_draw_the_same() {
+    let mut ctx = Context::new(16, 16);
+    program(
+        &mut ctx,
+        Some("void main() { gl_Position = gl_Vertex; gl_FrontColor = gl_Color; }"),
+        None,
+    );
+    // Four vertices, two triangles with a shared edge, distinct colours.
+    let verts = [
+        -0.9f32, -0.8, 0.0, 1.0, 0.7, -0.9, 0.0, 1.0, -0.6, 0.9, 0.0, 1.0, 0.8, 0.6, 0.0, 1.0,
+    ];
+    let colors = [
+        1.0f32, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 0.0, 1.0,
+    ];
+    let order = [0u32, 1, 2, 2, 1, 3];
+    let expanded: Vec<f32> = order
+        .iter()
+        .flat_map(|&i| verts[4 * i as usize..4 * i as usize + 4].to_vec())
+        .collect();
+    let expanded_colors: Vec<f32> = order
+        .iter()
+        .flat_map(|&i| colors[4 * i as usize..4 * i as usize + 4].to_vec())
+        .collect();
+    ctx.enable_client_state(GL_VERTEX_ARRAY);
+    ctx.enable_client_state(GL_COLOR_ARRAY);
+    let image = |ctx: &mut Context, draw: &dyn Fn(&mut Context)| {
+        ctx.clear(GL_COLOR_BUFFER_BIT);
+        draw(ctx);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        assert_eq!(ctx.take_draw_error(), None);
+        let mut px = vec![0u8; 16 * 16 * 4];
+        ctx.read_pixels(0, 0, 16, 16, GL_RGBA, GL_UNSIGNED_BYTE, &mut px);
+        px
+    };
+    ctx.vertex_pointer(4, GL_FLOAT, 0, ArrayData::from_f32(&expanded));
+    ctx.color_pointer(4, GL_FLOAT, 0, ArrayData::from_f32(&expanded_colors));
+    let want = image(&mut ctx, &|c| c.draw_arrays(GL_TRIANGLES, 0, 6));
+    assert!(want.chunks(4).any(|p| p != [0, 0, 0, 0]), "nothing drawn");
+
+    ctx.vertex_pointer(4, GL_FLOAT, 0, ArrayData::from_f32(&verts));
+    ctx.color_pointer(4, GL_FLOAT, 0, ArrayData::from_f32(&colors));
+    let bytes = |ty: u32| -> Vec<u8> {
+        order
+            .iter()
+            .flat_map(|&i| match ty {
+                GL_UNSIGNED_BYTE => vec![i as u8],
+                GL_UNSIGNED_SHORT => (i as u16).to_le_bytes().to_vec(),
+                _ => i.to_le_bytes().to_vec(),
+            })
+            .collect()
+    };
+    let buffer = ctx.gen_buffers(1)[0];
+    ctx.bind_buffer(GL_ELEMENT_ARRAY_BUFFER, buffer);
+    for ty in [GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT] {
+        for pad in [0usize, 4, 2] {
+            let mut data = vec![0xee; pad];
+            data.extend(bytes(ty));
+            ctx.buffer_data(
+                GL_ELEMENT_ARRAY_BUFFER,
+                data.len() as isize,
+                Some(&data),
+                GL_STATIC_DRAW,
+            );
+            let got = image(&mut ctx, &|c| {
+                c.draw_elements(GL_TRIANGLES, 6, ty, ArrayData::Offset(pad))
+            });
+            assert!(got == want, "type {ty:#x}, buffer offset {pad}");
+        }
+    }
+    ctx.bind_buffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    for ty in [GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT] {
+        let data: std::sync::Arc<[u8]> = bytes(ty).into();
+        let got = image(&mut ctx, &|c| {
+            c.draw_elements(GL_TRIANGLES, 6, ty, ArrayData::Client(data.clone()))
+        });
+        assert!(got == want, "type {ty:#x}, client memory");
+    }
+}

@@ -203,6 +203,10 @@ pub use workers::{Workers, MAX_THREADS};
 pub enum DrawError {
     #[error(transparent)]
     Exec(#[from] ex::ExecError),
+    /// A draw of 2^32 − 1 indices or more (GL's own calls send at most
+    /// 2^24).
+    #[error("a draw takes fewer than 2^32 - 1 indices ({0} given)")]
+    TooManyIndices(usize),
 }
 
 /// A shader stage the pipeline can run: `exec::Kernel`, or anything else

@@ -532,11 +532,14 @@ impl Probe {
         });
     }
 
-    pub fn set_vertices(&self, layout: &VsLayout, outputs: &[f32], vertex_of: &[usize]) {
+    pub fn set_vertices(&self, layout: &VsLayout, outputs: &[f32], vertex_of: &[u32]) {
         let n = layout.outputs;
         let per: Vec<Vec<f32>> = vertex_of
             .iter()
-            .map(|&v| outputs.get(v * n..(v + 1) * n).unwrap_or(&[]).to_vec())
+            .map(|&v| {
+                let v = v as usize;
+                outputs.get(v * n..(v + 1) * n).unwrap_or(&[]).to_vec()
+            })
             .collect();
         self.with(|r| r.vertex_outputs = per);
     }
