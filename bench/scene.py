@@ -25,6 +25,7 @@ same data. Needs only PyOpenGL (no numpy).
 import argparse
 import array
 import ctypes
+import gc
 import json
 import math
 import os
@@ -436,12 +437,18 @@ def main():
         # Processor time (every thread of the process) beside the wall
         # time: on a shared machine it moves less with the neighbours'
         # load, which makes A/B comparisons of one renderer steadier.
+        # Python's cyclic garbage collector is off while frames are timed
+        # (as `timeit` does): its pauses, up to a few milliseconds a frame,
+        # belong to neither renderer.
+        gc.collect()
+        gc.disable()
         cpu = time.process_time()
         start = time.perf_counter()
         while len(times) < args.frames and (len(times) < 2 or time.perf_counter() - start < args.budget):
             times.append(frame())
         result["times"] = times
         result["cpu_per_frame"] = (time.process_time() - cpu) / len(times)
+        gc.enable()
         err = GL.glGetError()
         if err:
             raise SystemExit(f"GL error {err:#x} while drawing")
