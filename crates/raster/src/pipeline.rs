@@ -187,13 +187,19 @@ fn run_vertices(
     // range when it is small (the usual case), else a hash map. Vertex
     // numbers are u32 (fewer than 2^32 indices): half the memory of usize
     // to fill, and write, per index.
-    let mut unique: Vec<u32> = Vec::new();
-    let mut vertex_of: Vec<u32> = Vec::with_capacity(indices.len());
+    // The tables come from earlier draws (fresh ones cost a page fault
+    // per 4 KiB on this thread).
+    let (mut unique, mut vertex_of, mut slot) = {
+        let mut spare = workers.spare();
+        (spare.table(), spare.table(), spare.table())
+    };
+    vertex_of.reserve(indices.len());
     let lo = indices.iter().copied().min().unwrap_or(0);
     let hi = indices.iter().copied().max().unwrap_or(0);
     let span = (hi - lo) as usize + 1;
     if span <= 4 * indices.len() + 1024 {
-        let mut slot = vec![u32::MAX; span];
+        unique.reserve(span.min(indices.len()));
+        slot.resize(span, u32::MAX);
         for &ix in indices {
             let Some(s) = slot.get_mut((ix - lo) as usize) else {
                 continue;
@@ -299,6 +305,7 @@ fn run_vertices(
         Some(r)
     });
     drop(tasks);
+    workers.spare().keep_tables(Vec::new(), [unique, slot]);
     // Groups up to the first failure all ran: the first error in order is
     // the same whatever the thread count.
     for r in results.into_iter().flatten() {
@@ -378,12 +385,12 @@ struct Setup<'a> {
     /// Per vertex (when vertices are shared enough to be worth it, else
     /// empty): its clip-plane outcode and window position, what
     /// [`Setup::polygon`] computes for each primitive's vertices.
-    corners: Vec<Corner>,
+    corners: &'a [Corner],
 }
 
 /// A vertex's [`Planes::outcode_of`] and [`Setup::window`].
 #[derive(Clone, Copy)]
-struct Corner {
+pub(crate) struct Corner {
     outcode: u32,
     win: Option<WinVertex>,
 }
@@ -917,22 +924,38 @@ pub(crate) fn draw_probed(
             (n + f) / 2.0,
         ],
         probe,
-        corners: Vec::new(),
+        corners: &[],
     };
     // Shared vertices (indexed meshes): each vertex's outcode and window
     // position once, on the workers, instead of once per primitive using
     // it (the same values either way).
     let vertices = outputs.len() / vs_layout.outputs.max(1);
-    let mut setup = setup;
+    let mut corners = std::mem::take(&mut workers.spare().corners);
     if probe.is_none() && vertex_of.len() >= CORNER_REUSE * vertices {
+        // Written in place, chunk by chunk, into the table kept from the
+        // last draw (a new table, or one collected from the chunks, cost a
+        // copy and page faults on the calling thread).
+        let blank = Corner {
+            outcode: 0,
+            win: None,
+        };
+        corners.resize(vertices, blank);
         let chunk = 4096;
-        let parts = workers.map(vertices.div_ceil(chunk), 1, |c, _| {
-            (c * chunk..((c + 1) * chunk).min(vertices))
-                .map(|v| setup.compute_corner(v))
-                .collect::<Vec<_>>()
+        let parts: Vec<Mutex<&mut [Corner]>> = corners.chunks_mut(chunk).map(Mutex::new).collect();
+        workers.map(parts.len(), 1, |c, _| {
+            let Some(part) = parts.get(c) else { return };
+            let mut part = part.lock().unwrap_or_else(|e| e.into_inner());
+            for (k, slot) in part.iter_mut().enumerate() {
+                *slot = setup.compute_corner(c * chunk + k);
+            }
         });
-        setup.corners = parts.concat();
+    } else {
+        corners.clear();
     }
+    let setup = Setup {
+        corners: &corners,
+        ..setup
+    };
     // Primitive set-up in chunks of primitives on the workers, the
     // chunks' primitives concatenated in order (one chunk, in order, for
     // the debugger's probe, which notes primitives as they come).
@@ -1025,7 +1048,9 @@ pub(crate) fn draw_probed(
     // The draw's big buffers, for the next draws.
     drop(stage);
     drop(prims);
-    workers.spare().keep(parts, outputs);
+    let mut spare = workers.spare();
+    spare.keep(parts, outputs);
+    spare.keep_tables(corners, [vertex_of]);
     result
 }
 

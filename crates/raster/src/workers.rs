@@ -12,6 +12,7 @@
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Mutex, MutexGuard, OnceLock};
 
+use crate::pipeline::Corner;
 use crate::shade::Prim;
 
 use rayon::prelude::*;
@@ -38,6 +39,12 @@ pub(crate) struct Spare {
     pub chunks: Vec<(Vec<Prim>, Vec<f32>)>,
     /// Vertex outputs.
     pub outputs: Vec<f32>,
+    /// The per-vertex set-up table (kept with its length: a draw of as
+    /// many vertices overwrites it without clearing it first).
+    pub corners: Vec<Corner>,
+    /// The vertex stage's index tables (distinct indices, each index's
+    /// vertex, the index-to-vertex table).
+    pub tables: Vec<Vec<u32>>,
 }
 
 impl Spare {
@@ -48,7 +55,41 @@ impl Spare {
         let chunk = |(p, a): &(Vec<Prim>, Vec<f32>)| {
             p.capacity() * std::mem::size_of::<Prim>() + a.capacity() * 4
         };
-        self.chunks.iter().map(chunk).sum::<usize>() + self.outputs.capacity() * 4
+        self.chunks.iter().map(chunk).sum::<usize>()
+            + self.outputs.capacity() * 4
+            + self.corners.capacity() * std::mem::size_of::<Corner>()
+            + self.tables.iter().map(|t| t.capacity() * 4).sum::<usize>()
+    }
+
+    /// A vertex-stage index table (empty) from an earlier draw, or a new
+    /// one.
+    pub fn table(&mut self) -> Vec<u32> {
+        self.tables.pop().unwrap_or_default()
+    }
+
+    /// Keeps the per-vertex set-up table and the index tables as far as
+    /// the limit allows.
+    pub fn keep_tables(
+        &mut self,
+        corners: Vec<Corner>,
+        tables: impl IntoIterator<Item = Vec<u32>>,
+    ) {
+        let mut bytes = self.bytes();
+        let size = std::mem::size_of::<Corner>();
+        if corners.capacity() > self.corners.capacity()
+            && bytes - self.corners.capacity() * size + corners.capacity() * size <= Spare::LIMIT
+        {
+            bytes = bytes - self.corners.capacity() * size + corners.capacity() * size;
+            self.corners = corners;
+        }
+        for mut t in tables {
+            if bytes + t.capacity() * 4 > Spare::LIMIT {
+                break;
+            }
+            bytes += t.capacity() * 4;
+            t.clear();
+            self.tables.push(t);
+        }
     }
 
     /// Keeps `chunks` (emptied) and `outputs` as far as the limit allows.
