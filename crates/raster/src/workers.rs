@@ -37,7 +37,7 @@ pub struct Workers {
 pub(crate) struct Spare {
     /// Set-up chunks' primitives and varyings.
     pub chunks: Vec<(Vec<Prim>, Vec<f32>)>,
-    /// Vertex outputs.
+    /// Vertex outputs (kept with their values: a draw overwrites them).
     pub outputs: Vec<f32>,
     /// The per-vertex set-up table (kept with its length: a draw of as
     /// many vertices overwrites it without clearing it first).
@@ -92,14 +92,14 @@ impl Spare {
         }
     }
 
-    /// Keeps `chunks` (emptied) and `outputs` as far as the limit allows.
-    pub fn keep(&mut self, chunks: Vec<(Vec<Prim>, Vec<f32>)>, mut outputs: Vec<f32>) {
+    /// Keeps `chunks` (emptied) and `outputs` (as they are) as far as the
+    /// limit allows.
+    pub fn keep(&mut self, chunks: Vec<(Vec<Prim>, Vec<f32>)>, outputs: Vec<f32>) {
         let mut bytes = self.bytes();
         if outputs.capacity() > self.outputs.capacity()
             && bytes - self.outputs.capacity() * 4 + outputs.capacity() * 4 <= Spare::LIMIT
         {
             bytes = bytes - self.outputs.capacity() * 4 + outputs.capacity() * 4;
-            outputs.clear();
             self.outputs = outputs;
         }
         for (mut p, mut a) in chunks {
