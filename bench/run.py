@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """shaderbox vs Mesa llvmpipe, same scenes, same PyOpenGL program, same run.
 
-    python3 bench/run.py [--quick] [--check-only] [--write-docs] [--only SUBSTR]
+    python3 bench/run.py [--quick] [--check-only] [--write-docs] [--only SUBSTR] [--rounds N]
 
 Builds shaderbox's libOSMesa.so (`cargo build --release -p shaderbox-capi`)
 unless --lib DIR is given, then runs every scene of bench/scene.py once per
@@ -12,10 +12,14 @@ LD_LIBRARY_PATH=<its target/release>, Mesa with the system's libOSMesa
 warm-up frames (at least one, for half a second: scene.py's
 WARMUP_SECONDS, so that both have compiled their shaders), then up to
 --frames timed frames (fewer when --budget
-seconds are spent, at least 2); the table gives the median with the
-min–max spread, the ratio of the medians (shaderbox / Mesa; below 1 means
-shaderbox is faster) and the share of pixels within 2/255 of Mesa's image
-(so a fast wrong picture cannot hide).
+seconds are spent, at least 2). Each scene runs --rounds times per
+implementation, alternating (shaderbox then Mesa, then Mesa then
+shaderbox, ...), so that a neighbour's load on the shared machine falls
+on both; the frames of all rounds are pooled. The table gives the
+median with the min–max spread, the ratio of the medians (shaderbox /
+Mesa; below 1 means shaderbox is faster) with the spread of the rounds'
+own ratios, and the share of pixels within 2/255 of Mesa's image (so a
+fast wrong picture cannot hide).
 
 --quick runs the scenes the issue's bars name; --check-only draws the
 warm-up frame only and exits 1 when an image agrees on fewer than
@@ -160,6 +164,17 @@ def fmt_time(t):
     return f"{t:.2f} s"
 
 
+def pooled(results):
+    """One result from several rounds of a scene: their frames together
+    (the first failure, if a round failed)."""
+    for r in results:
+        if "error" in r:
+            return r
+    out = dict(results[-1])
+    out["times"] = [t for r in results for t in r.get("times") or []]
+    return out
+
+
 def summary(res):
     if "error" in res:
         return None, res["error"]
@@ -200,6 +215,7 @@ def main():
     ap.add_argument("--only", help="run the scenes whose spec contains this")
     ap.add_argument("--lib", help="directory of shaderbox's libOSMesa.so (default: build it)")
     ap.add_argument("--frames", type=int, default=5)
+    ap.add_argument("--rounds", type=int, default=3, help="alternating runs per implementation and scene")
     ap.add_argument("--budget", type=float, default=12.0, help="seconds of timed frames per run")
     ap.add_argument("--min-agree", type=float, default=99.0, help="--check-only threshold (percent)")
     ap.add_argument("--json", help="also write the raw results here")
@@ -219,13 +235,24 @@ def main():
                 if os.path.exists(p):
                     os.remove(p)
             # --check-only: the warm-up frame only (its image is compared).
-            res = {i: run_scene(spec, i, libdir, threads, max(frames, 2) if not args.check_only else 0,
-                                args.budget if not args.check_only else 0.0, outs[i])
-                   for i in ("shaderbox", "mesa")}
+            rounds = 1 if args.check_only else max(1, args.rounds)
+            runs = {"shaderbox": [], "mesa": []}
+            for k in range(rounds):
+                order = ("shaderbox", "mesa") if k % 2 == 0 else ("mesa", "shaderbox")
+                for i in order:
+                    runs[i].append(run_scene(spec, i, libdir, threads,
+                                             max(frames, 2) if not args.check_only else 0,
+                                             (args.budget if not args.check_only else 0.0) / rounds,
+                                             outs[i]))
+            res = {i: pooled(r) for i, r in runs.items()}
             agree = None if spec.startswith("compile") else agreement(outs["shaderbox"], outs["mesa"])
             ms, ss = summary(res["shaderbox"])
             mm, sm = summary(res["mesa"])
             ratio = f"{ms / mm:.2f}×" if ms and mm else "—"
+            per_round = [a / b for a, b in zip(*(
+                [summary(r)[0] for r in runs[i]] for i in ("shaderbox", "mesa"))) if a and b]
+            if len(per_round) > 1:
+                ratio += f" ({min(per_round):.2f}–{max(per_round):.2f})"
             ag = "—" if agree is None else f"{agree:.2f} %"
             if spec.startswith("compile"):
                 ag = "n/a"
@@ -237,12 +264,13 @@ def main():
     load1 = os.getloadavg()
     header = [
         f"Run {datetime.date.today().isoformat()} on {machine()}; load average "
-        f"{load0[0]:.1f} before, {load1[0]:.1f} after; {time.time() - started:.0f} s in all"
+        f"{load0[0]:.1f} before, {load1[0]:.1f} after; {time.time() - started:.0f} s in all; "
+        f"{1 if args.check_only else max(1, args.rounds)} alternating round(s) per scene"
         f"{' (--quick)' if args.quick else ''}.",
         f"Renderers: {raw[0]['results']['shaderbox'].get('renderer', '?') if raw else '?'} vs "
         f"{raw[0]['results']['mesa'].get('renderer', '?') if raw else '?'}.",
         "",
-        "| scene | threads | what | shaderbox median (min–max, frames) | Mesa llvmpipe median (min–max, frames) | ratio | pixels within 2/255 |",
+        "| scene | threads | what | shaderbox median (min–max, frames) | Mesa llvmpipe median (min–max, frames) | ratio (rounds' spread) | pixels within 2/255 |",
         "|---|---|---|---|---|---|---|",
     ]
     text = "\n".join(header + rows)
