@@ -26,8 +26,8 @@ warm-up frame only and exits 1 when an image agrees on fewer than
 --min-agree percent of its pixels (scenes of AGREE_FLOORS excepted).
 --write-docs replaces the generated table in docs/PERFORMANCE.md (between
 the bench markers).
-Needs python3 and PyOpenGL (no numpy); the full run takes about 10 minutes
-on 2 cores.
+Needs python3 and PyOpenGL (no numpy); the full run takes about 3 minutes
+on 2 cores with the default 3 rounds.
 """
 import argparse
 import array
