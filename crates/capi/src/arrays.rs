@@ -97,7 +97,7 @@ impl ClientArrays {
     }
 
     /// Whether a draw reads an enabled array from client memory (then
-    /// [`Arrays::prepare`] has vertices to copy).
+    /// [`ClientArrays::prepare`] has vertices to copy).
     pub fn reads_client_memory(&self, gl: &gl::Context) -> bool {
         self.pointers.keys().any(|&src| {
             array_state(gl.vertex_state(), src).is_some_and(|a| a.enabled && a.buffer == 0)

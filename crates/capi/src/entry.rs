@@ -238,11 +238,11 @@ pub(crate) unsafe fn element_indices(
 }
 
 /// Before a glDrawElements-like draw: copies the vertices its indices use
-/// of every enabled client array into the context ([`Arrays::prepare`]),
-/// reading the indices only when there is such an array; returns the index
-/// data for the context.
+/// of every enabled client array into the context
+/// ([`ClientArrays::prepare`]), reading the indices only when there is such
+/// an array; returns the index data for the context.
 ///
-/// [`Arrays::prepare`]: crate::arrays::Arrays::prepare
+/// [`ClientArrays::prepare`]: crate::arrays::ClientArrays::prepare
 pub(crate) unsafe fn prepare_elements(
     c: &mut OsContext,
     count: GLsizei,

@@ -186,9 +186,8 @@ fn run_vertices(
     // Distinct indices in order of first use; a table over the index
     // range when it is small (the usual case), else a hash map. Vertex
     // numbers are u32 (fewer than 2^32 indices): half the memory of usize
-    // to fill, and write, per index.
-    // The tables come from earlier draws (fresh ones cost a page fault
-    // per 4 KiB on this thread).
+    // to write per index. The tables come from earlier draws (fresh ones
+    // cost a page fault per 4 KiB on this thread).
     let (mut unique, mut vertex_of, mut slot) = {
         let mut spare = workers.spare();
         (spare.table(), spare.table(), spare.table())
