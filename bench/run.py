@@ -249,8 +249,8 @@ def main():
             ms, ss = summary(res["shaderbox"])
             mm, sm = summary(res["mesa"])
             ratio = f"{ms / mm:.2f}×" if ms and mm else "—"
-            per_round = [a / b for a, b in zip(*(
-                [summary(r)[0] for r in runs[i]] for i in ("shaderbox", "mesa"))) if a and b]
+            medians = {i: [summary(r)[0] for r in rs] for i, rs in runs.items()}
+            per_round = [a / b for a, b in zip(medians["shaderbox"], medians["mesa"]) if a and b]
             if len(per_round) > 1:
                 ratio += f" ({min(per_round):.2f}–{max(per_round):.2f})"
             ag = "—" if agree is None else f"{agree:.2f} %"

@@ -449,7 +449,7 @@ impl Context {
         if size == 4 && words(src).is_some() {
             // 32-bit indices read where they are (no copy of a large
             // element buffer per draw).
-            return Some(Indices::Shared(bytes.clone(), base..base + n * 4));
+            return Some(Indices::Shared(bytes, base..base + n * 4));
         }
         Some(Indices::Converted(match size {
             1 => src.iter().map(|&b| b as u32).collect(),

@@ -307,7 +307,7 @@ fn run_vertices(
         Some(r)
     });
     drop(tasks);
-    workers.spare().keep_tables(Vec::new(), [unique, slot]);
+    workers.spare().keep_tables([unique, slot]);
     // Groups up to the first failure all ran: the first error in order is
     // the same whatever the thread count.
     for r in results.into_iter().flatten() {
@@ -1052,7 +1052,8 @@ pub(crate) fn draw_probed(
     drop(prims);
     let mut spare = workers.spare();
     spare.keep(parts, outputs);
-    spare.keep_tables(corners, [vertex_of]);
+    spare.keep_corners(corners);
+    spare.keep_tables([vertex_of]);
     result
 }
 

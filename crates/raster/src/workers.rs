@@ -67,21 +67,16 @@ impl Spare {
         self.tables.pop().unwrap_or_default()
     }
 
-    /// Keeps the per-vertex set-up table and the index tables as far as
-    /// the limit allows.
-    pub fn keep_tables(
-        &mut self,
-        corners: Vec<Corner>,
-        tables: impl IntoIterator<Item = Vec<u32>>,
-    ) {
+    /// Keeps the per-vertex set-up table (as it is) as far as the limit
+    /// allows.
+    pub fn keep_corners(&mut self, corners: Vec<Corner>) {
         let mut bytes = self.bytes();
-        let size = std::mem::size_of::<Corner>();
-        if corners.capacity() > self.corners.capacity()
-            && bytes - self.corners.capacity() * size + corners.capacity() * size <= Spare::LIMIT
-        {
-            bytes = bytes - self.corners.capacity() * size + corners.capacity() * size;
-            self.corners = corners;
-        }
+        keep_larger(&mut self.corners, corners, &mut bytes);
+    }
+
+    /// Keeps the index tables (emptied) as far as the limit allows.
+    pub fn keep_tables(&mut self, tables: impl IntoIterator<Item = Vec<u32>>) {
+        let mut bytes = self.bytes();
         for mut t in tables {
             if bytes + t.capacity() * 4 > Spare::LIMIT {
                 break;
@@ -96,12 +91,7 @@ impl Spare {
     /// limit allows.
     pub fn keep(&mut self, chunks: Vec<(Vec<Prim>, Vec<f32>)>, outputs: Vec<f32>) {
         let mut bytes = self.bytes();
-        if outputs.capacity() > self.outputs.capacity()
-            && bytes - self.outputs.capacity() * 4 + outputs.capacity() * 4 <= Spare::LIMIT
-        {
-            bytes = bytes - self.outputs.capacity() * 4 + outputs.capacity() * 4;
-            self.outputs = outputs;
-        }
+        keep_larger(&mut self.outputs, outputs, &mut bytes);
         for (mut p, mut a) in chunks {
             let more = p.capacity() * std::mem::size_of::<Prim>() + a.capacity() * 4;
             if bytes + more > Spare::LIMIT {
@@ -112,6 +102,18 @@ impl Spare {
             a.clear();
             self.chunks.push((p, a));
         }
+    }
+}
+
+/// Puts `v` in `slot` when it has more capacity than `slot` and the kept
+/// bytes (`*bytes`, which count `slot`'s, updated) stay within
+/// [`Spare::LIMIT`].
+fn keep_larger<T>(slot: &mut Vec<T>, v: Vec<T>, bytes: &mut usize) {
+    let size = std::mem::size_of::<T>();
+    let after = *bytes - slot.capacity() * size + v.capacity() * size;
+    if v.capacity() > slot.capacity() && after <= Spare::LIMIT {
+        *bytes = after;
+        *slot = v;
     }
 }
 
