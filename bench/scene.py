@@ -447,7 +447,8 @@ def main():
         while len(times) < args.frames and (len(times) < 2 or time.perf_counter() - start < args.budget):
             times.append(frame())
         result["times"] = times
-        result["cpu_per_frame"] = (time.process_time() - cpu) / len(times)
+        # (No timed frames with --frames 0: the warm-up frame's image only.)
+        result["cpu_per_frame"] = (time.process_time() - cpu) / max(1, len(times))
         gc.enable()
         err = GL.glGetError()
         if err:
