@@ -443,40 +443,12 @@ fn f(x: u32) -> f32 {
     f32::from_bits(x)
 }
 
-/// `flush_denormal(x).to_bits()` without a branch: a subnormal keeps only
-/// its sign.
-#[inline(always)]
-fn ftz(x: f32) -> u32 {
-    let b = x.to_bits();
-    let keep = if b & 0x7f80_0000 == 0 {
-        0x8000_0000
-    } else {
-        !0
-    };
-    b & keep
-}
-
-/// Word `w` of the uniforms (0 past the end), a float's subnormal read as
-/// zero.
-#[inline(always)]
-pub(crate) fn uniform_word(uniforms: &[u32], w: usize, float: bool) -> u32 {
-    let bits = uniforms.get(w).copied().unwrap_or(0);
-    if float {
-        ftz(f(bits))
-    } else {
-        bits
-    }
-}
+pub(crate) use crate::lane::{float_output, uniform_word};
+use crate::lane::{flush as fz, flush_bits as ftz, max as fmax, min as fmin};
 
 /// `a` with its subnormals flushed ([`ftz`]).
 pub(crate) fn flushed(a: &Lanes) -> Lanes {
     a.map(|x| ftz(f(x)))
-}
-
-/// [`ftz`] as a float: the flushed intermediates of built-ins.
-#[inline(always)]
-fn fz(x: f32) -> f32 {
-    f(ftz(x))
 }
 
 #[inline(always)]
@@ -812,28 +784,6 @@ fn load_inputs_with(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batc
     }
 }
 
-/// `bits` as a float output: any NaN becomes the canonical quiet NaN, a
-/// subnormal zero of its sign.
-///
-/// Inside a kernel a NaN's payload is not fixed: with two NaN operands an
-/// IEEE operation returns one of them, and which one depends on the order
-/// the compiled code (the interpreter's build, the native code) put them
-/// in. GLSL 1.20 can observe a payload only through a float output (no
-/// bit casts; NaN converts to int as 0 and compares unordered), so outputs
-/// carry `0x7fc00000` and every variant writes the same bits. Native code
-/// on x86-64 leaves subnormal results unflushed in its registers (it reads
-/// them as zero: `jit`), so outputs flush them.
-#[inline(always)]
-pub(crate) fn float_output(bits: u32) -> u32 {
-    // Selects only, so lane loops vectorize.
-    let flushed = ftz(f(bits));
-    if bits & 0x7fff_ffff > 0x7f80_0000 {
-        0x7fc0_0000
-    } else {
-        flushed
-    }
-}
-
 /// Copies the output registers of the active lanes into `batch.outputs`.
 pub(crate) fn store_outputs(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
     #[cfg(target_arch = "x86_64")]
@@ -1042,8 +992,9 @@ unsafe fn step(
             c,
         } => match func {
             // The formulas of glsl::math, with its flushed intermediates.
-            F3::Mix => tri!(d, a, b, c, |x, y, t| ftz(fz(x * (1.0 - t)) + fz(y * t))),
-            F3::Clamp => tri!(d, a, b, c, |x, lo, hi| ftz(fmin(fmax(x, lo), hi))),
+            F3::Mix => tri!(d, a, b, c, |x, y, t| crate::lane::mix(x, y, t).to_bits()),
+            F3::Clamp => tri!(d, a, b, c, |x, lo, hi| crate::lane::clamp(x, lo, hi)
+                .to_bits()),
             F3::SmoothStep => tri!(d, a, b, c, |e0, e1, x| {
                 let t = fmin(fmax(fz(fz(x - e0) / fz(e1 - e0)), 0.0), 1.0);
                 ftz(fz(t * t) * (3.0 - 2.0 * t))
@@ -1219,26 +1170,6 @@ unsafe fn step(
     Ok(next)
 }
 
-/// `glsl::math::min` lane-wise: `y` if `y < x` or `x` is NaN, else `x`.
-#[inline(always)]
-fn fmin(x: f32, y: f32) -> f32 {
-    if x.is_nan() || y < x {
-        y
-    } else {
-        x
-    }
-}
-
-/// `glsl::math::max` lane-wise.
-#[inline(always)]
-fn fmax(x: f32, y: f32) -> f32 {
-    if x.is_nan() || x < y {
-        y
-    } else {
-        x
-    }
-}
-
 /// `body` for every lane `l`, written as a plain loop rather than through
 /// [`lanes`]' closure: LLVM leaves a closure this big un-inlined (a call per
 /// lane, compiled for the baseline instruction set), while the loop is
@@ -1340,30 +1271,6 @@ fn floats(a: &Lanes) -> [f32; LANES] {
     a.map(|x| fz(f(x)))
 }
 
-/// The differences within each quad along x and y, as floats: lane l
-/// gets `a[l | bit] - a[l & !bit]` for bit 1 (x) and bit 2 (y). Written
-/// per quad (a shuffle and a subtraction each) rather than per lane,
-/// which the compiler turns into scalar code.
-#[inline(always)]
-fn quad_diffs(a: &Lanes) -> ([f32; LANES], [f32; LANES]) {
-    let mut dx = [0f32; LANES];
-    let mut dy = [0f32; LANES];
-    for ((q, dx), dy) in a
-        .chunks_exact(4)
-        .zip(dx.chunks_exact_mut(4))
-        .zip(dy.chunks_exact_mut(4))
-    {
-        let v = [fz(f(q[0])), fz(f(q[1])), fz(f(q[2])), fz(f(q[3]))];
-        let (x0, x1) = ([v[1], v[1], v[3], v[3]], [v[0], v[0], v[2], v[2]]);
-        let (y0, y1) = ([v[2], v[3], v[2], v[3]], [v[0], v[1], v[0], v[1]]);
-        for j in 0..4 {
-            dx[j] = x0[j] - x1[j];
-            dy[j] = y0[j] - y1[j];
-        }
-    }
-    (dx, dy)
-}
-
 /// # Safety
 /// `regs` must hold every register `t` names (validated).
 unsafe fn texture(
@@ -1404,7 +1311,7 @@ unsafe fn texture(
             (Lod::Explicit(v), TexLod::Explicit(Some(l))) => *v = floats(reg(l)),
             (Lod::Derivatives { ddx, ddy, bias }, TexLod::Implicit { bias: b }) => {
                 for k in 0..(t.dims as usize).min(3) {
-                    (ddx[k], ddy[k]) = quad_diffs(reg(t.coord[k]));
+                    (ddx[k], ddy[k]) = crate::lane::quad_diffs(&req.coord[k]);
                 }
                 if let Some(b) = b {
                     *bias = floats(reg(b));
@@ -1428,7 +1335,7 @@ mod tests {
     #[test]
     fn quad_diffs_are_the_lane_differences() {
         for a in inputs(64, 0x51de) {
-            let (dx, dy) = quad_diffs(&a);
+            let (dx, dy) = crate::lane::quad_diffs(&floats(&a));
             for l in 0..LANES {
                 let want = |bit: usize| (fz(f(a[l | bit])) - fz(f(a[l & !bit]))).to_bits();
                 assert_eq!(dx[l].to_bits(), want(1), "{a:x?} lane {l}");

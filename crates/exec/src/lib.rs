@@ -73,6 +73,11 @@
 //!   lanes of its 2×2 quad, never on [`LANES`] or on which other lanes are
 //!   active.
 //!
+//! - [`lane`]: the engine's float operations on one lane (flushes,
+//!   `clamp`, `mix`, float outputs, implicit-LOD derivatives), which the
+//!   engine itself runs, for stages computed outside it that must give
+//!   its bits.
+//!
 //! ## Lanes
 //! Fragment lanes: lane `4q+0` = (x, y), `4q+1` = (x+1, y), `4q+2` =
 //! (x, y+1), `4q+3` = (x+1, y+1). `dFdx = v(lane|1) - v(lane&!1)` (the same
@@ -175,6 +180,7 @@ mod interface;
 mod interp;
 #[cfg(feature = "jit")]
 mod jit;
+pub mod lane;
 mod liveness;
 mod lower;
 mod mask_flow;

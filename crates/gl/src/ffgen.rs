@@ -248,149 +248,248 @@ impl Context {
             .unwrap_or(GL_RGBA)
     }
 
-    /// The fixed-function fragment shader for the current state.
-    /// `vertex_fixed` tells whether the vertex stage is fixed function too
-    /// (color sum then also applies with separate specular lighting).
-    pub fn ff_fragment_source(&self, vertex_fixed: bool) -> String {
+    /// The shape of the fixed-function fragment stage for the current
+    /// state: what [`fragment_source`] writes and
+    /// [`crate::ff_fragment::FixedFragment`] runs. `vertex_fixed` tells
+    /// whether the vertex stage is fixed function too (color sum then
+    /// also applies with separate specular lighting).
+    pub fn ff_fragment_shape(&self, vertex_fixed: bool) -> FragmentShape {
         let st = &self.st;
-        let mut decls = String::from("// fixed-function fragment processing\n");
-        let mut body = String::from("void main()\n{\n    vec4 c = gl_Color;\n");
+        let mut units = Vec::new();
         for u in 0..crate::MAX_TEXTURE_UNITS {
             let Some(target) = enabled_target(self, u as u32) else {
                 continue;
             };
             let base = self.unit_base_format(u, target);
-            let (sampler, lookup) = match target {
-                GL_TEXTURE_1D => (
-                    "sampler1D",
-                    format!("texture1DProj({}, gl_TexCoord[{u}].sq)", sampler_name(u)),
-                ),
-                GL_TEXTURE_3D => (
-                    "sampler3D",
-                    format!("texture3DProj({}, gl_TexCoord[{u}])", sampler_name(u)),
-                ),
-                GL_TEXTURE_CUBE_MAP => (
-                    "samplerCube",
-                    format!("textureCube({}, gl_TexCoord[{u}].stp)", sampler_name(u)),
-                ),
-                _ => (
-                    "sampler2D",
-                    format!("texture2DProj({}, gl_TexCoord[{u}])", sampler_name(u)),
-                ),
-            };
-            let (sampler, lookup) = if base == GL_DEPTH_COMPONENT
+            let shadow = base == GL_DEPTH_COMPONENT
                 && self
                     .objects
                     .bound_texture(u, target)
                     .is_some_and(|t| t.params.compare_mode == GL_COMPARE_R_TO_TEXTURE)
-                && matches!(target, GL_TEXTURE_1D | GL_TEXTURE_2D)
-            {
-                if target == GL_TEXTURE_1D {
-                    (
-                        "sampler1DShadow",
-                        format!("shadow1DProj({}, gl_TexCoord[{u}])", sampler_name(u)),
-                    )
-                } else {
-                    (
-                        "sampler2DShadow",
-                        format!("shadow2DProj({}, gl_TexCoord[{u}])", sampler_name(u)),
-                    )
-                }
-            } else {
-                (sampler, lookup)
+                && matches!(target, GL_TEXTURE_1D | GL_TEXTURE_2D);
+            let lookup = match (target, shadow) {
+                (GL_TEXTURE_1D, true) => Lookup::Shadow1DProj,
+                (_, true) => Lookup::Shadow2DProj,
+                (GL_TEXTURE_1D, _) => Lookup::Texture1DProj,
+                (GL_TEXTURE_3D, _) => Lookup::Texture3DProj,
+                (GL_TEXTURE_CUBE_MAP, _) => Lookup::TextureCube,
+                _ => Lookup::Texture2DProj,
             };
-            let _ = writeln!(decls, "uniform {sampler} {};", sampler_name(u));
-            let _ = writeln!(body, "    {{\n        vec4 t = {lookup};");
             // Table 3.22: what each base format contributes.
             let has_color = base != GL_ALPHA;
             let has_alpha = matches!(base, GL_ALPHA | GL_LUMINANCE_ALPHA | GL_INTENSITY | GL_RGBA);
             let intensity = base == GL_INTENSITY;
-            let env = format!("gl_TextureEnvColor[{u}]");
-            let (rgb, a) = match st.tex_env[u].mode {
+            use {AlphaOp as A, RgbOp as C};
+            let (rgb, alpha) = match st.tex_env[u].mode {
                 GL_REPLACE => (
-                    if has_color {
-                        "t.rgb".into()
-                    } else {
-                        "c.rgb".into()
-                    },
-                    if has_alpha {
-                        "t.a".into()
-                    } else {
-                        "c.a".into()
-                    },
+                    if has_color { C::Texture } else { C::Color },
+                    if has_alpha { A::Texture } else { A::Color },
                 ),
                 GL_DECAL => match base {
-                    GL_RGB => ("t.rgb".into(), "c.a".into()),
-                    GL_RGBA => ("mix(c.rgb, t.rgb, t.a)".into(), "c.a".into()),
-                    _ => ("c.rgb".into(), "c.a".into()),
+                    GL_RGB => (C::Texture, A::Color),
+                    GL_RGBA => (C::MixByTextureAlpha, A::Color),
+                    _ => (C::Color, A::Color),
                 },
                 GL_BLEND => (
-                    if has_color {
-                        format!("mix(c.rgb, {env}.rgb, t.rgb)")
-                    } else {
-                        "c.rgb".into()
-                    },
+                    if has_color { C::BlendEnv } else { C::Color },
                     if intensity {
-                        format!("mix(c.a, {env}.a, t.a)")
+                        A::BlendEnv
                     } else if has_alpha {
-                        "c.a * t.a".into()
+                        A::Modulate
                     } else {
-                        "c.a".into()
+                        A::Color
                     },
                 ),
                 GL_ADD => (
-                    if has_color {
-                        "c.rgb + t.rgb".into()
-                    } else {
-                        "c.rgb".into()
-                    },
+                    if has_color { C::Add } else { C::Color },
                     if intensity {
-                        "c.a + t.a".into()
+                        A::Add
                     } else if has_alpha {
-                        "c.a * t.a".into()
+                        A::Modulate
                     } else {
-                        "c.a".into()
+                        A::Color
                     },
                 ),
                 // MODULATE (and COMBINE, not implemented).
                 _ => (
-                    if has_color {
-                        "c.rgb * t.rgb".into()
-                    } else {
-                        "c.rgb".into()
-                    },
-                    if has_alpha {
-                        "c.a * t.a".into()
-                    } else {
-                        "c.a".into()
-                    },
+                    if has_color { C::Modulate } else { C::Color },
+                    if has_alpha { A::Modulate } else { A::Color },
                 ),
             };
-            let _ = writeln!(
-                body,
-                "        c = clamp(vec4({rgb}, {a}), 0.0, 1.0);\n    }}"
-            );
+            units.push(UnitShape {
+                unit: u,
+                lookup,
+                rgb,
+                alpha,
+            });
         }
         let separate = st.is_on(GL_LIGHTING)
             && st.light_model_color_control == GL_SEPARATE_SPECULAR_COLOR
             && vertex_fixed;
-        if st.is_on(GL_COLOR_SUM) || separate {
-            body.push_str("    c.rgb = clamp(c.rgb + gl_SecondaryColor.rgb, 0.0, 1.0);\n");
+        let fog = st.is_on(GL_FOG).then_some(match st.fog.mode {
+            GL_LINEAR => FogMode::Linear,
+            GL_EXP2 => FogMode::Exp2,
+            _ => FogMode::Exp,
+        });
+        FragmentShape {
+            units,
+            color_sum: st.is_on(GL_COLOR_SUM) || separate,
+            fog,
         }
-        if st.is_on(GL_FOG) {
-            let f = match st.fog.mode {
-                GL_LINEAR => "(gl_Fog.end - z) * gl_Fog.scale",
-                GL_EXP2 => "exp(-(gl_Fog.density * z) * (gl_Fog.density * z))",
-                _ => "exp(-gl_Fog.density * z)",
-            };
-            let _ = writeln!(
-                body,
-                "    float z = gl_FogFragCoord;\n    float f = clamp({f}, 0.0, 1.0);\n    c.rgb = mix(gl_Fog.color.rgb, c.rgb, f);"
-            );
-        }
-        body.push_str("    gl_FragColor = c;\n}\n");
-        decls + &body
     }
+
+    /// The fixed-function fragment shader for the current state (see
+    /// [`Context::ff_fragment_shape`]).
+    pub fn ff_fragment_source(&self, vertex_fixed: bool) -> String {
+        fragment_source(&self.ff_fragment_shape(vertex_fixed))
+    }
+}
+
+/// The shape of a fixed-function fragment stage (GL 2.1 §3.8.13–§3.10):
+/// the enabled texture units in order, color sum, fog.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FragmentShape {
+    pub units: Vec<UnitShape>,
+    pub color_sum: bool,
+    pub fog: Option<FogMode>,
+}
+
+/// One enabled texture unit of a [`FragmentShape`]: its lookup and its
+/// texture environment's RGB and alpha functions (Table 3.22 for the
+/// mode and the texture's base format).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct UnitShape {
+    pub unit: usize,
+    pub lookup: Lookup,
+    pub rgb: RgbOp,
+    pub alpha: AlphaOp,
+}
+
+/// The lookup of a fixed-function texture unit (projective, from
+/// `gl_TexCoord[unit]`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Lookup {
+    Texture1DProj,
+    Texture2DProj,
+    Texture3DProj,
+    TextureCube,
+    Shadow1DProj,
+    Shadow2DProj,
+}
+
+/// The RGB of a texture environment: of the colour so far `c`, the
+/// texel `t` and the environment colour `e`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RgbOp {
+    /// c
+    Color,
+    /// t
+    Texture,
+    /// c · t
+    Modulate,
+    /// mix(c, t, t.a)
+    MixByTextureAlpha,
+    /// mix(c, e, t)
+    BlendEnv,
+    /// c + t
+    Add,
+}
+
+/// The alpha of a texture environment (see [`RgbOp`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AlphaOp {
+    /// c.a
+    Color,
+    /// t.a
+    Texture,
+    /// c.a · t.a
+    Modulate,
+    /// mix(c.a, e.a, t.a)
+    BlendEnv,
+    /// c.a + t.a
+    Add,
+}
+
+/// The fog equation of GL 2.1 §3.10.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FogMode {
+    Linear,
+    Exp,
+    Exp2,
+}
+
+/// The GLSL of a fixed-function fragment stage of shape `shape`.
+pub fn fragment_source(shape: &FragmentShape) -> String {
+    let mut decls = String::from("// fixed-function fragment processing\n");
+    let mut body = String::from("void main()\n{\n    vec4 c = gl_Color;\n");
+    for unit in &shape.units {
+        let u = unit.unit;
+        let name = sampler_name(u);
+        let (sampler, lookup) = match unit.lookup {
+            Lookup::Texture1DProj => (
+                "sampler1D",
+                format!("texture1DProj({name}, gl_TexCoord[{u}].sq)"),
+            ),
+            Lookup::Texture2DProj => (
+                "sampler2D",
+                format!("texture2DProj({name}, gl_TexCoord[{u}])"),
+            ),
+            Lookup::Texture3DProj => (
+                "sampler3D",
+                format!("texture3DProj({name}, gl_TexCoord[{u}])"),
+            ),
+            Lookup::TextureCube => (
+                "samplerCube",
+                format!("textureCube({name}, gl_TexCoord[{u}].stp)"),
+            ),
+            Lookup::Shadow1DProj => (
+                "sampler1DShadow",
+                format!("shadow1DProj({name}, gl_TexCoord[{u}])"),
+            ),
+            Lookup::Shadow2DProj => (
+                "sampler2DShadow",
+                format!("shadow2DProj({name}, gl_TexCoord[{u}])"),
+            ),
+        };
+        let _ = writeln!(decls, "uniform {sampler} {name};");
+        let _ = writeln!(body, "    {{\n        vec4 t = {lookup};");
+        let env = format!("gl_TextureEnvColor[{u}]");
+        let rgb = match unit.rgb {
+            RgbOp::Color => "c.rgb".to_string(),
+            RgbOp::Texture => "t.rgb".to_string(),
+            RgbOp::Modulate => "c.rgb * t.rgb".to_string(),
+            RgbOp::MixByTextureAlpha => "mix(c.rgb, t.rgb, t.a)".to_string(),
+            RgbOp::BlendEnv => format!("mix(c.rgb, {env}.rgb, t.rgb)"),
+            RgbOp::Add => "c.rgb + t.rgb".to_string(),
+        };
+        let a = match unit.alpha {
+            AlphaOp::Color => "c.a".to_string(),
+            AlphaOp::Texture => "t.a".to_string(),
+            AlphaOp::Modulate => "c.a * t.a".to_string(),
+            AlphaOp::BlendEnv => format!("mix(c.a, {env}.a, t.a)"),
+            AlphaOp::Add => "c.a + t.a".to_string(),
+        };
+        let _ = writeln!(
+            body,
+            "        c = clamp(vec4({rgb}, {a}), 0.0, 1.0);\n    }}"
+        );
+    }
+    if shape.color_sum {
+        body.push_str("    c.rgb = clamp(c.rgb + gl_SecondaryColor.rgb, 0.0, 1.0);\n");
+    }
+    if let Some(mode) = shape.fog {
+        let f = match mode {
+            FogMode::Linear => "(gl_Fog.end - z) * gl_Fog.scale",
+            FogMode::Exp2 => "exp(-(gl_Fog.density * z) * (gl_Fog.density * z))",
+            FogMode::Exp => "exp(-gl_Fog.density * z)",
+        };
+        let _ = writeln!(
+            body,
+            "    float z = gl_FogFragCoord;\n    float f = clamp({f}, 0.0, 1.0);\n    c.rgb = mix(gl_Fog.color.rgb, c.rgb, f);"
+        );
+    }
+    body.push_str("    gl_FragColor = c;\n}\n");
+    decls + &body
 }
 
 #[cfg(test)]

@@ -1,0 +1,156 @@
+//! The engine's float operations on one lane, public so that a stage
+//! computed outside the engine gets the engine's bits (`gl`'s
+//! fixed-function fragment stage runs its fixed programs with these):
+//! each function is what the interpreter runs for the op it names, and
+//! the interpreter itself calls them.
+//!
+//! Values entering an op are flushed (subnormals read as zero, see the
+//! crate documentation); every result is flushed again.
+
+use crate::LANES;
+
+/// `x` with a subnormal made zero of its sign, as bits (no branch).
+#[inline(always)]
+pub fn flush_bits(x: f32) -> u32 {
+    let b = x.to_bits();
+    let keep = if b & 0x7f80_0000 == 0 {
+        0x8000_0000
+    } else {
+        !0
+    };
+    b & keep
+}
+
+/// [`flush_bits`] as a float.
+#[inline(always)]
+pub fn flush(x: f32) -> f32 {
+    f32::from_bits(flush_bits(x))
+}
+
+/// `x + y` (`FAdd`).
+#[inline(always)]
+pub fn add(x: f32, y: f32) -> f32 {
+    flush(x + y)
+}
+
+/// `x - y` (`FSub`).
+#[inline(always)]
+pub fn sub(x: f32, y: f32) -> f32 {
+    flush(x - y)
+}
+
+/// `x * y` (`FMul`).
+#[inline(always)]
+pub fn mul(x: f32, y: f32) -> f32 {
+    flush(x * y)
+}
+
+/// `x / y` (`FDiv`).
+#[inline(always)]
+pub fn div(x: f32, y: f32) -> f32 {
+    flush(x / y)
+}
+
+/// `-x` (`FNeg`).
+#[inline(always)]
+pub fn neg(x: f32) -> f32 {
+    -x
+}
+
+/// `glsl::math::min`: `y` when `x` is NaN or `y < x`.
+#[inline(always)]
+pub fn min(x: f32, y: f32) -> f32 {
+    // (`|`, not `||`: both tests, then a select, which vectorizes.)
+    if x.is_nan() | (y < x) {
+        y
+    } else {
+        x
+    }
+}
+
+/// `glsl::math::max`: `y` when `x` is NaN or `x < y`.
+#[inline(always)]
+pub fn max(x: f32, y: f32) -> f32 {
+    if x.is_nan() | (x < y) {
+        y
+    } else {
+        x
+    }
+}
+
+/// `clamp(x, lo, hi)` (`F3::Clamp`).
+#[inline(always)]
+pub fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
+    flush(min(max(x, lo), hi))
+}
+
+/// `mix(x, y, t)` (`F3::Mix`): glsl::math's formula with its flushed
+/// intermediates.
+#[inline(always)]
+pub fn mix(x: f32, y: f32, t: f32) -> f32 {
+    flush(flush(x * (1.0 - t)) + flush(y * t))
+}
+
+/// `exp(x)` (`F1::Exp`).
+#[inline(always)]
+pub fn exp(x: f32) -> f32 {
+    flush(glsl::math::exp(x))
+}
+
+/// `bits` as a float output: any NaN becomes the canonical quiet NaN, a
+/// subnormal zero of its sign.
+///
+/// Inside a kernel a NaN's payload is not fixed: with two NaN operands an
+/// IEEE operation returns one of them, and which one depends on the order
+/// the compiled code (the interpreter's build, the native code) put them
+/// in. GLSL 1.20 can observe a payload only through a float output (no
+/// bit casts; NaN converts to int as 0 and compares unordered), so outputs
+/// carry `0x7fc00000` and every variant writes the same bits. Native code
+/// on x86-64 leaves subnormal results unflushed in its registers (it reads
+/// them as zero: `jit`), so outputs flush them.
+#[inline(always)]
+pub fn float_output(bits: u32) -> u32 {
+    // Selects only, so lane loops vectorize.
+    let flushed = flush_bits(f32::from_bits(bits));
+    if bits & 0x7fff_ffff > 0x7f80_0000 {
+        0x7fc0_0000
+    } else {
+        flushed
+    }
+}
+
+/// Word `w` of the uniforms (0 past the end), a float's subnormal read as
+/// zero.
+#[inline(always)]
+pub fn uniform_word(uniforms: &[u32], w: usize, float: bool) -> u32 {
+    let bits = uniforms.get(w).copied().unwrap_or(0);
+    if float {
+        flush_bits(f32::from_bits(bits))
+    } else {
+        bits
+    }
+}
+
+/// The differences within each quad along x and y of the (flushed)
+/// lanes `v`: lane l gets `v[l | bit] - v[l & !bit]` for bit 1 (x) and
+/// bit 2 (y), unflushed (the derivatives of an implicit texture LOD).
+/// Written per quad (a shuffle and a subtraction each) rather than per
+/// lane, which the compiler turns into scalar code.
+#[inline(always)]
+pub fn quad_diffs(v: &[f32; LANES]) -> ([f32; LANES], [f32; LANES]) {
+    let mut dx = [0f32; LANES];
+    let mut dy = [0f32; LANES];
+    for ((q, dx), dy) in v
+        .chunks_exact(4)
+        .zip(dx.chunks_exact_mut(4))
+        .zip(dy.chunks_exact_mut(4))
+    {
+        let (x0, x1) = ([q[1], q[1], q[3], q[3]], [q[0], q[0], q[2], q[2]]);
+        let (y0, y1) = ([q[2], q[3], q[2], q[3]], [q[0], q[1], q[0], q[1]]);
+        for j in 0..4 {
+            dx[j] = x0[j] - x1[j];
+            dy[j] = y0[j] - y1[j];
+        }
+    }
+    (dx, dy)
+}
