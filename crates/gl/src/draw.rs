@@ -686,11 +686,20 @@ impl Context {
         raster::TextureUnits::new(units)
     }
 
-    /// The kernels of the draw: the program's, or fixed-function ones.
+    /// The kernels of the draw: the program's, or fixed-function ones
+    /// (then with the fragment stage's shape).
     #[allow(clippy::type_complexity)]
     fn draw_kernels(
         &mut self,
-    ) -> Result<(Arc<exec::Kernel>, bool, Arc<exec::Kernel>, bool), String> {
+    ) -> Result<
+        (
+            Arc<exec::Kernel>,
+            bool,
+            Arc<exec::Kernel>,
+            Option<crate::ffgen::FragmentShape>,
+        ),
+        String,
+    > {
         let (user_vs, user_fs, fs_tc) = match self
             .programs
             .get(&self.current_program)
@@ -714,15 +723,15 @@ impl Context {
                 self.ff_kernel(src, Stage::Vertex)?
             }
         };
-        let fs_user = user_fs.is_some();
-        let fs = match user_fs {
-            Some(k) => k,
+        let (fs, shape) = match user_fs {
+            Some(k) => (k, None),
             None => {
-                let src = self.ff_fragment_source(vs_fixed);
-                self.ff_kernel(src, Stage::Fragment)?
+                let shape = self.ff_fragment_shape(vs_fixed);
+                let src = crate::ffgen::fragment_source(&shape);
+                (self.ff_kernel(src, Stage::Fragment)?, Some(shape))
             }
         };
-        Ok((vs, !vs_fixed, fs, fs_user))
+        Ok((vs, !vs_fixed, fs, shape))
     }
 
     /// Vertex input slots → attribute sources.
@@ -747,12 +756,22 @@ impl Context {
         if indices.is_empty() {
             return;
         }
-        let (vs, vs_user, fs, fs_user) = match self.draw_kernels() {
+        let (vs, vs_user, fs, ff_shape) = match self.draw_kernels() {
             Ok(k) => k,
             Err(e) => {
                 self.cache.error = Some(e);
                 return;
             }
+        };
+        let fs_user = ff_shape.is_none();
+        // The fixed-function fragment stage runs without the engine where
+        // it can (the same bits: `ff_fragment`).
+        let ff = ff_shape
+            .as_ref()
+            .map(|shape| crate::ff_fragment::FixedFragment::new(&fs, shape));
+        let fs_stage: &dyn raster::ShaderStage = match &ff {
+            Some(ff) => ff,
+            None => &*fs,
         };
         let vs_words = self.uniform_words(&vs, vs_user);
         let fs_words = self.uniform_words(&fs, fs_user);
@@ -793,7 +812,7 @@ impl Context {
             &state,
             &vs,
             &vs_words,
-            &fs,
+            fs_stage,
             &fs_words,
             raster_mode(mode),
             indices,

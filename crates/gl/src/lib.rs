@@ -25,7 +25,9 @@
 //!   hash-order dependence.
 //!
 //! - Draws run the program's `exec` kernels (or generated fixed-function
-//!   stages, [`ffgen`]) through `raster::draw_on` ([`draw`]) on the
+//!   stages, [`ffgen`]; the fixed-function fragment stage directly when
+//!   it can, [`ff_fragment`], with the kernel's bits) through
+//!   `raster::draw_on` ([`draw`]) on the
 //!   context's threads: [`Context::set_threads`], by default the
 //!   environment variable `SHADERBOX_THREADS` ([`THREADS_ENV`]) or else the
 //!   machine's available parallelism. Images do not depend on the count.
@@ -53,6 +55,7 @@ pub mod builtins;
 pub mod debug;
 pub mod draw;
 pub mod enums;
+pub mod ff_fragment;
 pub mod ffgen;
 pub mod get;
 pub mod matrix;

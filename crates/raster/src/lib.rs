@@ -414,7 +414,7 @@ pub fn draw_on(
     state: &PipelineState,
     vs: &ex::Kernel,
     vs_uniforms: &[u32],
-    fs: &ex::Kernel,
+    fs: &dyn ShaderStage,
     fs_uniforms: &[u32],
     mode: Mode,
     indices: &[u32],

@@ -1,0 +1,662 @@
+//! The fixed-function fragment stage run directly, without the engine.
+//!
+//! [`crate::ffgen::fragment_source`] writes the fixed-function fragment
+//! stage as GLSL; the draw compiles it into a kernel like any shader.
+//! Most of what running that kernel costs on a batch is the engine's set-
+//! up around a handful of operations (copying inputs into its register
+//! file, native-code entry, copying outputs back). [`FixedFragment`]
+//! computes the same program from its [`FragmentShape`] straight from the
+//! batch's inputs to its outputs, with the engine's own operations
+//! ([`exec::lane`]) in the kernel's order, so the bits are the kernel's
+//! (a test compares the two on random states, inputs and textures).
+//!
+//! It covers the shapes whose lookups are all `texture2DProj` (any
+//! texture environment, color sum, any fog mode); other shapes, and the
+//! debugger's traced runs, use the kernel itself.
+
+use crate::ffgen::{AlphaOp, FogMode, FragmentShape, Lookup, RgbOp};
+use exec::lane::{self, flush};
+use exec::{Batch, ExecError, Kernel, Lod, SampleRequest, Textures, LANES};
+use glsl::types::SamplerKind;
+
+/// Every lane of a batch.
+const FULL: u32 = if LANES >= 32 { !0 } else { (1u32 << LANES) - 1 };
+
+/// A fixed-function fragment kernel and, when its shape allows, the plan
+/// that computes its results directly (see the module documentation).
+pub struct FixedFragment<'k> {
+    kernel: &'k Kernel,
+    plan: Option<Plan>,
+}
+
+/// Where a [`FragmentShape`]'s values are: batch input and output
+/// components and uniform words of its kernel.
+#[derive(Debug)]
+struct Plan {
+    /// gl_Color (four components).
+    color: usize,
+    units: Vec<UnitPlan>,
+    /// gl_SecondaryColor, with color sum.
+    secondary: Option<usize>,
+    fog: Option<FogPlan>,
+    /// gl_FragColor, and the number of output components.
+    out: usize,
+    outputs: usize,
+}
+
+#[derive(Debug)]
+struct UnitPlan {
+    /// gl_TexCoord[unit] (s, t, r, q).
+    coord: usize,
+    /// The sampler uniform (its value is the unit number).
+    sampler: usize,
+    /// gl_TextureEnvColor[unit], when the environment reads it.
+    env: Option<usize>,
+    rgb: RgbOp,
+    alpha: AlphaOp,
+}
+
+#[derive(Debug)]
+struct FogPlan {
+    mode: FogMode,
+    /// gl_FogFragCoord.
+    z: usize,
+    /// Words of gl_Fog.color (rgb), .density, .end, .scale.
+    color: usize,
+    density: usize,
+    end: usize,
+    scale: usize,
+}
+
+impl<'k> FixedFragment<'k> {
+    /// The stage of `kernel`, compiled from `fragment_source(shape)`.
+    pub fn new(kernel: &'k Kernel, shape: &FragmentShape) -> FixedFragment<'k> {
+        FixedFragment {
+            kernel,
+            plan: Plan::new(kernel, shape),
+        }
+    }
+
+    /// Whether the batch runs without the engine.
+    pub fn direct(&self) -> bool {
+        self.plan.is_some()
+    }
+}
+
+impl Plan {
+    /// `None` when a lookup is not `texture2DProj`, or the kernel's
+    /// interface lacks a value the shape reads (the kernel then runs).
+    fn new(kernel: &Kernel, shape: &FragmentShape) -> Option<Plan> {
+        let iface = kernel.interface();
+        let input = |name: &str, need: usize| {
+            iface
+                .input(name)
+                .filter(|s| s.components >= need)
+                .map(|s| s.offset)
+        };
+        let word = |path: &str| iface.locate_uniform(path).map(|(w, _)| w);
+        let mut units = Vec::new();
+        for u in &shape.units {
+            if u.lookup != Lookup::Texture2DProj {
+                return None;
+            }
+            let reads_env = u.rgb == RgbOp::BlendEnv || u.alpha == AlphaOp::BlendEnv;
+            units.push(UnitPlan {
+                coord: input("gl_TexCoord", 4 * u.unit + 4)? + 4 * u.unit,
+                sampler: word(&crate::ffgen::sampler_name(u.unit))?,
+                env: if reads_env {
+                    Some(word(&format!("gl_TextureEnvColor[{}]", u.unit))?)
+                } else {
+                    None
+                },
+                rgb: u.rgb,
+                alpha: u.alpha,
+            });
+        }
+        let secondary = if shape.color_sum {
+            Some(input("gl_SecondaryColor", 4)?)
+        } else {
+            None
+        };
+        let fog = match shape.fog {
+            Some(mode) => Some(FogPlan {
+                mode,
+                z: input("gl_FogFragCoord", 1)?,
+                color: word("gl_Fog.color")?,
+                density: word("gl_Fog.density")?,
+                end: word("gl_Fog.end")?,
+                scale: word("gl_Fog.scale")?,
+            }),
+            None => None,
+        };
+        let out = iface.output("gl_FragColor").filter(|s| s.components == 4)?;
+        Some(Plan {
+            color: input("gl_Color", 4)?,
+            units,
+            secondary,
+            fog,
+            out: out.offset,
+            outputs: iface.output_components,
+        })
+    }
+
+    /// The kernel's run on `batch` (see [`Plan::run_with`]), compiled for
+    /// the widest vectors the CPU has: the same IEEE operations (Rust
+    /// never fuses a multiply and an add), so the same bits.
+    fn run(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if std::is_x86_feature_detected!("avx512f") {
+                // SAFETY: the CPU has AVX-512 F.
+                return unsafe { self.run_avx512(batch, uniforms, textures) };
+            }
+            if std::is_x86_feature_detected!("avx2") {
+                // SAFETY: the CPU has AVX2.
+                return unsafe { self.run_avx2(batch, uniforms, textures) };
+            }
+        }
+        self.run_with(batch, uniforms, textures)
+    }
+
+    /// [`Plan::run_with`] compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn run_avx2(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
+        self.run_with(batch, uniforms, textures)
+    }
+
+    /// [`Plan::run_with`] compiled for AVX-512.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,avx512f")]
+    unsafe fn run_avx512(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
+        self.run_with(batch, uniforms, textures)
+    }
+
+    /// The kernel's run on `batch`: every lane (helpers included, for the
+    /// lookups' derivatives), outputs stored for the active lanes. Each
+    /// operation runs over all the lanes at once (plain loops, which
+    /// vectorize).
+    #[inline(always)]
+    fn run_with(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
+        let input = |i: usize| -> Lanes {
+            match batch.inputs.get(i) {
+                Some(v) => each1(v, flush),
+                None => [0.0; LANES],
+            }
+        };
+        let float = |w: usize| f32::from_bits(lane::uniform_word(uniforms, w, true));
+        let mut c = [
+            input(self.color),
+            input(self.color + 1),
+            input(self.color + 2),
+            input(self.color + 3),
+        ];
+        let cur = (batch.active | batch.helper) & FULL;
+        for u in &self.units {
+            let (s, t, q) = (input(u.coord), input(u.coord + 1), input(u.coord + 3));
+            let unit = lane::uniform_word(uniforms, u.sampler, false);
+            let t = lookup_2d(textures, unit, &s, &t, &q, cur);
+            let e = |k: usize| u.env.map_or(0.0, |w| float(w + k));
+            for k in 0..3 {
+                let (ck, tk) = (&c[k], &t[k]);
+                c[k] = match u.rgb {
+                    RgbOp::Color => *ck,
+                    RgbOp::Texture => *tk,
+                    RgbOp::Modulate => each2(ck, tk, lane::mul),
+                    RgbOp::MixByTextureAlpha => each3(ck, tk, &t[3], lane::mix),
+                    RgbOp::BlendEnv => each3(ck, &[e(k); LANES], tk, lane::mix),
+                    RgbOp::Add => each2(ck, tk, lane::add),
+                };
+            }
+            let (ca, ta) = (&c[3], &t[3]);
+            c[3] = match u.alpha {
+                AlphaOp::Color => *ca,
+                AlphaOp::Texture => *ta,
+                AlphaOp::Modulate => each2(ca, ta, lane::mul),
+                AlphaOp::BlendEnv => each3(ca, &[e(3); LANES], ta, lane::mix),
+                AlphaOp::Add => each2(ca, ta, lane::add),
+            };
+            for ck in c.iter_mut() {
+                *ck = each1(ck, |x| lane::clamp(x, 0.0, 1.0));
+            }
+        }
+        if let Some(sec) = self.secondary {
+            for (k, ck) in c.iter_mut().take(3).enumerate() {
+                let sum = each2(ck, &input(sec + k), lane::add);
+                *ck = each1(&sum, |x| lane::clamp(x, 0.0, 1.0));
+            }
+        }
+        if let Some(fog) = &self.fog {
+            let z = input(fog.z);
+            let (density, end, scale) = (float(fog.density), float(fog.end), float(fog.scale));
+            let f = match fog.mode {
+                FogMode::Linear => each1(&z, |z| lane::mul(lane::sub(end, z), scale)),
+                FogMode::Exp => each1(&z, |z| lane::exp(lane::mul(lane::neg(density), z))),
+                FogMode::Exp2 => each1(&z, |z| {
+                    let dz = lane::mul(density, z);
+                    lane::exp(lane::mul(lane::neg(dz), dz))
+                }),
+            };
+            let f = each1(&f, |f| lane::clamp(f, 0.0, 1.0));
+            for (k, ck) in c.iter_mut().take(3).enumerate() {
+                *ck = each3(&[float(fog.color + k); LANES], ck, &f, lane::mix);
+            }
+        }
+        batch.discarded = 0;
+        if batch.outputs.len() < self.outputs {
+            batch.outputs.resize(self.outputs, [0.0; LANES]);
+        }
+        let active = batch.active & FULL;
+        for (k, ck) in c.iter().enumerate() {
+            let mut v = [0.0f32; LANES];
+            for l in 0..LANES {
+                v[l] = f32::from_bits(lane::float_output(ck[l].to_bits()));
+            }
+            let Some(dst) = batch.outputs.get_mut(self.out + k) else {
+                continue;
+            };
+            if active == FULL {
+                *dst = v;
+            } else {
+                for (l, (d, v)) in dst.iter_mut().zip(v).enumerate() {
+                    if active & (1 << l) != 0 {
+                        *d = v;
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// One value per lane.
+type Lanes = [f32; LANES];
+
+/// `op` on every lane.
+#[inline(always)]
+fn each1(a: &Lanes, op: impl Fn(f32) -> f32) -> Lanes {
+    let mut out = [0.0; LANES];
+    for l in 0..LANES {
+        out[l] = op(a[l]);
+    }
+    out
+}
+
+/// `op` on every lane of two operands.
+#[inline(always)]
+fn each2(a: &Lanes, b: &Lanes, op: impl Fn(f32, f32) -> f32) -> Lanes {
+    let mut out = [0.0; LANES];
+    for l in 0..LANES {
+        out[l] = op(a[l], b[l]);
+    }
+    out
+}
+
+/// `op` on every lane of three operands.
+#[inline(always)]
+fn each3(a: &Lanes, b: &Lanes, c: &Lanes, op: impl Fn(f32, f32, f32) -> f32) -> Lanes {
+    let mut out = [0.0; LANES];
+    for l in 0..LANES {
+        out[l] = op(a[l], b[l], c[l]);
+    }
+    out
+}
+
+/// `texture2DProj` of unit `unit` at `(s, t, _, q)` on the lanes `cur`,
+/// as the engine runs it: s/q and t/q (`FDiv`), the implicit LOD from
+/// their quad differences, the texels flushed (zero on the other lanes).
+fn lookup_2d(
+    textures: &dyn Textures,
+    unit: u32,
+    s: &[f32; LANES],
+    t: &[f32; LANES],
+    q: &[f32; LANES],
+    cur: u32,
+) -> [[f32; LANES]; 4] {
+    let mut out = [[0f32; LANES]; 4];
+    if cur != 0 {
+        let mut req = SampleRequest {
+            unit: [unit; LANES],
+            target: SamplerKind::Sampler2D,
+            coord: [[0.0; LANES], [0.0; LANES], [0.0; LANES], [1.0; LANES]],
+            compare: None,
+            lod: Lod::Derivatives {
+                ddx: [[0.0; LANES]; 3],
+                ddy: [[0.0; LANES]; 3],
+                bias: [0.0; LANES],
+            },
+            mask: cur,
+        };
+        for l in 0..LANES {
+            req.coord[0][l] = lane::div(s[l], q[l]);
+            req.coord[1][l] = lane::div(t[l], q[l]);
+        }
+        if let Lod::Derivatives { ddx, ddy, .. } = &mut req.lod {
+            for k in 0..2 {
+                (ddx[k], ddy[k]) = lane::quad_diffs(&req.coord[k]);
+            }
+        }
+        textures.sample(&req, &mut out);
+    }
+    for c in out.iter_mut() {
+        for x in c.iter_mut() {
+            *x = flush(*x);
+        }
+    }
+    out
+}
+
+impl raster::ShaderStage for FixedFragment<'_> {
+    fn interface(&self) -> &exec::Interface {
+        self.kernel.interface()
+    }
+
+    fn run(
+        &self,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+    ) -> Result<(), ExecError> {
+        match &self.plan {
+            Some(plan) => {
+                plan.run(batch, uniforms, textures);
+                Ok(())
+            }
+            None => self.kernel.run(batch, uniforms, textures),
+        }
+    }
+
+    fn prepare(&self, uniforms: &[u32]) -> Option<exec::Prepared> {
+        match self.plan {
+            Some(_) => None,
+            None => Some(self.kernel.prepare(uniforms)),
+        }
+    }
+
+    fn run_prepared(
+        &self,
+        batch: &mut Batch,
+        prepared: &exec::Prepared,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+    ) -> Result<(), ExecError> {
+        match &self.plan {
+            Some(plan) => {
+                plan.run(batch, uniforms, textures);
+                Ok(())
+            }
+            None => self.kernel.run_prepared(batch, prepared, textures),
+        }
+    }
+
+    fn depth_only(&self) -> Option<Box<dyn raster::ShaderStage>> {
+        raster::ShaderStage::depth_only(self.kernel)
+    }
+
+    fn does_nothing(&self) -> bool {
+        raster::ShaderStage::does_nothing(self.kernel)
+    }
+
+    fn lanes_independent(&self) -> bool {
+        self.kernel.lanes_independent()
+    }
+
+    fn run_probed(
+        &self,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+        lane: usize,
+        trace: &mut dyn exec::Trace,
+    ) -> Result<(), ExecError> {
+        raster::ShaderStage::run_probed(self.kernel, batch, uniforms, textures, lane, trace)
+    }
+
+    fn run_watching(
+        &self,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+        first: u32,
+        out: &mut [[u32; LANES]],
+    ) -> Result<(), ExecError> {
+        raster::ShaderStage::run_watching(self.kernel, batch, uniforms, textures, first, out)
+    }
+
+    fn run_printing(
+        &self,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+        sink: &mut dyn exec::PrintSink,
+    ) -> Result<(), ExecError> {
+        raster::ShaderStage::run_printing(self.kernel, batch, uniforms, textures, sink)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ffgen::{fragment_source, UnitShape};
+    use raster::ShaderStage;
+    use std::sync::Arc;
+
+    pub(super) fn kernel(src: &str) -> Kernel {
+        let opts = glsl::CompileOptions::new(glsl::Stage::Fragment);
+        let sh = glsl::compile(&[src], &opts);
+        assert!(sh.ok(), "{}\n{src}", sh.info_log());
+        let prog = glsl::link::link(&[&sh]);
+        assert!(prog.ok(), "{}", prog.info_log());
+        Kernel::new(&prog.stages[0]).expect("lowers")
+    }
+
+    struct Rng(u32);
+    impl Rng {
+        fn next(&mut self) -> u32 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 17;
+            self.0 ^= self.0 << 5;
+            self.0
+        }
+        fn pick<T: Copy>(&mut self, from: &[T]) -> T {
+            from[self.next() as usize % from.len()]
+        }
+        /// Mostly moderate values, some awkward ones.
+        fn value(&mut self) -> f32 {
+            match self.next() % 16 {
+                0 => self.pick(&[0.0, -0.0, 1.0, f32::NAN, f32::INFINITY, -f32::INFINITY]),
+                1 => f32::from_bits(self.next() & 0x807f_ffff), // subnormal
+                2 => f32::from_bits(self.next()),
+                _ => (self.next() >> 8) as f32 / 16_777_216.0 * 3.0 - 1.0,
+            }
+        }
+    }
+
+    fn texture(rng: &mut Rng, size: u32) -> Arc<raster::Texture> {
+        let mut levels = Vec::new();
+        let mut n = size;
+        loop {
+            let texels = (0..n * n)
+                .map(|_| [0; 4].map(|_| (rng.next() % 256) as f32 / 255.0))
+                .collect();
+            levels.push(raster::Image::new(n, n, 1, texels));
+            if n == 1 {
+                break;
+            }
+            n /= 2;
+        }
+        let mut tex = raster::Texture::new(raster::TextureTarget::Tex2D, levels);
+        tex.min_filter = raster::MinFilter::LinearMipmapLinear;
+        tex.mag_filter = raster::MagFilter::Linear;
+        Arc::new(tex)
+    }
+
+    /// The direct run gives the kernel's bits, on random shapes (every
+    /// texture environment function, color sum, each fog mode), uniforms,
+    /// textures, inputs and lane masks.
+    #[test]
+    fn direct_runs_match_the_kernel_bit_for_bit() {
+        let mut rng = Rng(0x9e37_79b9);
+        let rgb = [
+            RgbOp::Color,
+            RgbOp::Texture,
+            RgbOp::Modulate,
+            RgbOp::MixByTextureAlpha,
+            RgbOp::BlendEnv,
+            RgbOp::Add,
+        ];
+        let alpha = [
+            AlphaOp::Color,
+            AlphaOp::Texture,
+            AlphaOp::Modulate,
+            AlphaOp::BlendEnv,
+            AlphaOp::Add,
+        ];
+        let fogs = [
+            None,
+            Some(FogMode::Linear),
+            Some(FogMode::Exp),
+            Some(FogMode::Exp2),
+        ];
+        let textures = raster::TextureUnits::new(vec![
+            raster::TextureUnit {
+                tex_2d: Some(texture(&mut rng, 16)),
+                ..Default::default()
+            },
+            raster::TextureUnit::default(),
+            raster::TextureUnit {
+                tex_2d: Some(texture(&mut rng, 8)),
+                lod_bias: 0.5,
+                ..Default::default()
+            },
+        ]);
+        let mut checked = 0;
+        for round in 0..96 {
+            let units: Vec<usize> = match round % 4 {
+                0 => vec![],
+                1 => vec![0],
+                2 => vec![2],
+                _ => vec![0, 1, 2],
+            };
+            let shape = FragmentShape {
+                units: units
+                    .iter()
+                    .map(|&unit| UnitShape {
+                        unit,
+                        lookup: Lookup::Texture2DProj,
+                        rgb: rng.pick(&rgb),
+                        alpha: rng.pick(&alpha),
+                    })
+                    .collect(),
+                color_sum: rng.next() & 1 == 0,
+                fog: fogs[(round / 4) % 4],
+            };
+            let k = kernel(&fragment_source(&shape));
+            let stage = FixedFragment::new(&k, &shape);
+            assert!(stage.direct(), "{shape:?}");
+            let iface = k.interface();
+            let mut uniforms: Vec<u32> = (0..iface.uniform_words)
+                .map(|_| rng.value().to_bits())
+                .collect();
+            for u in &shape.units {
+                let (w, _) = iface
+                    .locate_uniform(&crate::ffgen::sampler_name(u.unit))
+                    .expect("sampler");
+                uniforms[w] = u.unit as u32;
+            }
+            for _ in 0..20 {
+                let mut batch = Batch {
+                    inputs: (0..iface.input_components)
+                        .map(|_| [0.0; LANES].map(|_| rng.value()))
+                        .collect(),
+                    outputs: vec![[0.5; LANES]; iface.output_components],
+                    active: rng.next() & 0xffff,
+                    discarded: 0,
+                    helper: 0,
+                };
+                batch.helper = rng.next() & 0xffff & !batch.active;
+                let mut want = batch.clone();
+                k.run(&mut want, &uniforms, &textures).expect("kernel runs");
+                let mut got = batch;
+                stage.run(&mut got, &uniforms, &textures).expect("runs");
+                assert_eq!(got.discarded, want.discarded);
+                for (g, w) in got.outputs.iter().zip(&want.outputs) {
+                    let (g, w) = (g.map(f32::to_bits), w.map(f32::to_bits));
+                    assert_eq!(g, w, "{shape:?}");
+                }
+                checked += 1;
+            }
+        }
+        assert_eq!(checked, 96 * 20);
+    }
+
+    /// Other lookups run the kernel.
+    #[test]
+    fn other_lookups_run_the_kernel() {
+        let shape = FragmentShape {
+            units: vec![UnitShape {
+                unit: 0,
+                lookup: Lookup::TextureCube,
+                rgb: RgbOp::Modulate,
+                alpha: AlphaOp::Modulate,
+            }],
+            color_sum: false,
+            fog: None,
+        };
+        let k = kernel(&fragment_source(&shape));
+        assert!(!FixedFragment::new(&k, &shape).direct());
+    }
+}
+
+/// `cargo test --release -p shaderbox-gl bench_direct_run -- --ignored
+/// --nocapture`: time per batch of the direct run and of the kernel, the
+/// fixed-function mesh's shape (linear fog), full batches.
+#[cfg(test)]
+mod bench {
+    use super::tests::kernel;
+    use super::*;
+    use crate::ffgen::fragment_source;
+    use raster::ShaderStage;
+
+    #[test]
+    #[ignore]
+    fn bench_direct_run() {
+        let shape = FragmentShape {
+            units: vec![],
+            color_sum: false,
+            fog: Some(FogMode::Linear),
+        };
+        let k = kernel(&fragment_source(&shape));
+        let stage = FixedFragment::new(&k, &shape);
+        let iface = k.interface();
+        let uniforms = vec![0.5f32.to_bits(); iface.uniform_words];
+        let tex = raster::TextureUnits::default();
+        let mut batch = Batch {
+            inputs: vec![[0.25; LANES]; iface.input_components],
+            outputs: vec![[0.0; LANES]; iface.output_components],
+            active: 0xffff,
+            discarded: 0,
+            helper: 0,
+        };
+        const RUNS: u32 = 1_000_000;
+        // Alternating, best of three (the machine is shared).
+        let (mut direct, mut engine) = (f64::MAX, f64::MAX);
+        for _ in 0..3 {
+            let t = std::time::Instant::now();
+            for _ in 0..RUNS {
+                stage.run(&mut batch, &uniforms, &tex).expect("runs");
+            }
+            direct = direct.min(t.elapsed().as_secs_f64());
+            let t = std::time::Instant::now();
+            for _ in 0..RUNS {
+                k.run(&mut batch, &uniforms, &tex).expect("runs");
+            }
+            engine = engine.min(t.elapsed().as_secs_f64());
+        }
+        let ns = |s: f64| s / RUNS as f64 * 1e9;
+        println!(
+            "direct {:.1} ns per batch, kernel {:.1} ns",
+            ns(direct),
+            ns(engine)
+        );
+    }
+}
