@@ -195,7 +195,9 @@ impl Plan {
         for u in &self.units {
             let (s, t, q) = (input(u.coord), input(u.coord + 1), input(u.coord + 3));
             let unit = lane::uniform_word(uniforms, u.sampler, false);
-            let t = lookup_2d(textures, unit, &s, &t, &q, cur);
+            let mut texel = [[0f32; LANES]; 4];
+            lookup_2d(textures, unit, &s, &t, &q, cur, &mut texel);
+            let t = &texel;
             let e = |k: usize| u.env.map_or(0.0, |w| float(w + k));
             for k in 0..3 {
                 let (ck, tk) = (&c[k], &t[k]);
@@ -303,7 +305,11 @@ fn each3(a: &Lanes, b: &Lanes, c: &Lanes, op: impl Fn(f32, f32, f32) -> f32) -> 
 
 /// `texture2DProj` of unit `unit` at `(s, t, _, q)` on the lanes `cur`,
 /// as the engine runs it: s/q and t/q (`FDiv`), the implicit LOD from
-/// their quad differences, the texels flushed (zero on the other lanes).
+/// their quad differences, the texels flushed into `out` (zero on the
+/// other lanes). Inlined into [`Plan::run`]'s variants (compiled for
+/// their instruction sets).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn lookup_2d(
     textures: &dyn Textures,
     unit: u32,
@@ -311,8 +317,9 @@ fn lookup_2d(
     t: &[f32; LANES],
     q: &[f32; LANES],
     cur: u32,
-) -> [[f32; LANES]; 4] {
-    let mut out = [[0f32; LANES]; 4];
+    out: &mut [[f32; LANES]; 4],
+) {
+    *out = [[0f32; LANES]; 4];
     if cur != 0 {
         let mut req = SampleRequest {
             unit: [unit; LANES],
@@ -335,14 +342,13 @@ fn lookup_2d(
                 (ddx[k], ddy[k]) = lane::quad_diffs(&req.coord[k]);
             }
         }
-        textures.sample(&req, &mut out);
+        textures.sample(&req, out);
     }
     for c in out.iter_mut() {
         for x in c.iter_mut() {
             *x = flush(*x);
         }
     }
-    out
 }
 
 impl raster::ShaderStage for FixedFragment<'_> {
