@@ -455,7 +455,7 @@ mod tests {
         Kernel::new(&prog.stages[0]).expect("lowers")
     }
 
-    struct Rng(u32);
+    pub(super) struct Rng(pub(super) u32);
     impl Rng {
         fn next(&mut self) -> u32 {
             self.0 ^= self.0 << 13;
@@ -477,7 +477,7 @@ mod tests {
         }
     }
 
-    fn texture(rng: &mut Rng, size: u32) -> Arc<raster::Texture> {
+    pub(super) fn texture(rng: &mut Rng, size: u32) -> Arc<raster::Texture> {
         let mut levels = Vec::new();
         let mut n = size;
         loop {
@@ -614,55 +614,83 @@ mod tests {
 }
 
 /// `cargo test --release -p shaderbox-gl bench_direct_run -- --ignored
-/// --nocapture`: time per batch of the direct run and of the kernel, the
-/// fixed-function mesh's shape (linear fog), full batches.
+/// --nocapture`: time per batch of the direct run and of the kernel on
+/// full batches, for the shapes of the fixed-function mesh (linear fog)
+/// and of the textured layers (MODULATE of a trilinear 512² texture).
 #[cfg(test)]
 mod bench {
-    use super::tests::kernel;
+    use super::tests::{kernel, texture, Rng};
     use super::*;
-    use crate::ffgen::fragment_source;
+    use crate::ffgen::{fragment_source, UnitShape};
     use raster::ShaderStage;
 
     #[test]
     #[ignore]
     fn bench_direct_run() {
-        let shape = FragmentShape {
+        let fog = FragmentShape {
             units: vec![],
             color_sum: false,
             fog: Some(FogMode::Linear),
         };
-        let k = kernel(&fragment_source(&shape));
-        let stage = FixedFragment::new(&k, &shape);
-        let iface = k.interface();
-        let uniforms = vec![0.5f32.to_bits(); iface.uniform_words];
-        let tex = raster::TextureUnits::default();
-        let mut batch = Batch {
-            inputs: vec![[0.25; LANES]; iface.input_components],
-            outputs: vec![[0.0; LANES]; iface.output_components],
-            active: 0xffff,
-            discarded: 0,
-            helper: 0,
+        let textured = FragmentShape {
+            units: vec![UnitShape {
+                unit: 0,
+                lookup: Lookup::Texture2DProj,
+                rgb: RgbOp::Modulate,
+                alpha: AlphaOp::Modulate,
+            }],
+            color_sum: false,
+            fog: None,
         };
-        const RUNS: u32 = 1_000_000;
-        // Alternating, best of three (the machine is shared).
-        let (mut direct, mut engine) = (f64::MAX, f64::MAX);
-        for _ in 0..3 {
-            let t = std::time::Instant::now();
-            for _ in 0..RUNS {
-                stage.run(&mut batch, &uniforms, &tex).expect("runs");
+        let textures = raster::TextureUnits::new(vec![raster::TextureUnit {
+            tex_2d: Some(texture(&mut Rng(7), 512)),
+            ..Default::default()
+        }]);
+        for (name, shape) in [("linear fog", fog), ("textured", textured)] {
+            let k = kernel(&fragment_source(&shape));
+            let stage = FixedFragment::new(&k, &shape);
+            let iface = k.interface();
+            let uniforms = vec![0u32; iface.uniform_words];
+            // Colour 0.5, texture coordinates over a few texels per quad
+            // (q = 1).
+            let mut inputs = vec![[0.5; LANES]; iface.input_components];
+            if let Some(tc) = iface.input("gl_TexCoord") {
+                let (x, y) = (
+                    std::array::from_fn(|l| 0.3 + ((l & 1) + 2 * (l / 4)) as f32 / 700.0),
+                    std::array::from_fn(|l| 0.6 + ((l >> 1) & 1) as f32 / 600.0),
+                );
+                inputs[tc.offset] = x;
+                inputs[tc.offset + 1] = y;
+                inputs[tc.offset + 3] = [1.0; LANES];
             }
-            direct = direct.min(t.elapsed().as_secs_f64());
-            let t = std::time::Instant::now();
-            for _ in 0..RUNS {
-                k.run(&mut batch, &uniforms, &tex).expect("runs");
+            let mut batch = Batch {
+                inputs,
+                outputs: vec![[0.0; LANES]; iface.output_components],
+                active: 0xffff,
+                discarded: 0,
+                helper: 0,
+            };
+            const RUNS: u32 = 300_000;
+            // Alternating, best of three (the machine is shared).
+            let (mut direct, mut engine) = (f64::MAX, f64::MAX);
+            for _ in 0..3 {
+                let t = std::time::Instant::now();
+                for _ in 0..RUNS {
+                    stage.run(&mut batch, &uniforms, &textures).expect("runs");
+                }
+                direct = direct.min(t.elapsed().as_secs_f64());
+                let t = std::time::Instant::now();
+                for _ in 0..RUNS {
+                    k.run(&mut batch, &uniforms, &textures).expect("runs");
+                }
+                engine = engine.min(t.elapsed().as_secs_f64());
             }
-            engine = engine.min(t.elapsed().as_secs_f64());
+            let ns = |s: f64| s / RUNS as f64 * 1e9;
+            println!(
+                "{name}: direct {:.1} ns per batch, kernel {:.1} ns",
+                ns(direct),
+                ns(engine)
+            );
         }
-        let ns = |s: f64| s / RUNS as f64 * 1e9;
-        println!(
-            "direct {:.1} ns per batch, kernel {:.1} ns",
-            ns(direct),
-            ns(engine)
-        );
     }
 }
