@@ -385,11 +385,9 @@ impl raster::ShaderStage for FixedFragment<'_> {
         uniforms: &[u32],
         textures: &dyn Textures,
     ) -> Result<(), ExecError> {
+        // (The direct run prepares nothing: `prepare` gave `None`.)
         match &self.plan {
-            Some(plan) => {
-                plan.run(batch, uniforms, textures);
-                Ok(())
-            }
+            Some(_) => raster::ShaderStage::run(self, batch, uniforms, textures),
             None => self.kernel.run_prepared(batch, prepared, textures),
         }
     }
