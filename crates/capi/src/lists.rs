@@ -8,7 +8,7 @@
 //! Vertex-array draws (glDrawArrays, glDrawElements, glDrawRangeElements,
 //! glMultiDraw*, glArrayElement) dereference the enabled arrays at compile
 //! time and record the elements' values, replayed as glBegin / attribute
-//! calls / glEnd ([`crate::array_draws::compile_draw`]); an invalid call
+//! calls / glEnd (`crate::array_draws::compile_draw`); an invalid call
 //! records its error, raised when the list runs. Pixel images
 //! (glDrawPixels, glBitmap) are copied at compile time too.
 

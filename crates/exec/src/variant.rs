@@ -80,7 +80,7 @@ static CURRENT: AtomicU8 = AtomicU8::new(0);
 /// The variant `run` uses: set by [`set_variant`], else chosen on first use
 /// from `SHADERBOX_KERNEL` (ignored, with a message on stderr, when it
 /// names an unknown or unsupported variant), else `jit` when Cranelift
-/// supports the CPU, else [`best_interpreter`].
+/// supports the CPU, else the best interpreter the CPU runs (`best_interpreter`).
 pub fn current() -> Variant {
     match CURRENT.load(Ordering::Relaxed) {
         1 => Variant::Portable,

@@ -139,7 +139,7 @@ impl Context {
         }
     }
 
-    /// glGetQueryObject[u]iv: GL_QUERY_RESULT (the full count; the C
+    /// `glGetQueryObject[u]iv`: GL_QUERY_RESULT (the full count; the C
     /// layer clamps it for the signed variant) or
     /// GL_QUERY_RESULT_AVAILABLE (always true). GL_INVALID_OPERATION for
     /// a name that is not a query object or is the active query.

@@ -486,7 +486,7 @@ impl Context {
             .unwrap_or_default()
     }
 
-    /// glGetActiveUniform: name ("a[0]" for arrays), size, GL type.
+    /// glGetActiveUniform: name (`"a[0]"` for arrays), size, GL type.
     pub fn get_active_uniform(&mut self, program: u32, index: u32) -> Option<ActiveInfo> {
         if !self.check_program(program) {
             return None;

@@ -48,7 +48,7 @@ pub struct UniformGlobal {
 /// (or an array of one).
 #[derive(Clone, Debug)]
 pub struct Leaf {
-    /// "s[1].a" (arrays without "[0]").
+    /// `"s[1].a"` (arrays without `"[0]"`).
     pub name: String,
     /// The element type (no array).
     pub ty: Type,
@@ -158,8 +158,8 @@ impl UniformTable {
     }
 
     /// glGetUniformLocation's lookup (GL 2.1 §2.15.3): `name` is a leaf of
-    /// basic type, optionally an element of it ("a[2]"); a leaf that is an
-    /// array also answers to its bare name and to "name[0]". Names that
+    /// basic type, optionally an element of it (`"a[2]"`); a leaf that is an
+    /// array also answers to its bare name and to `"name[0]"`. Names that
     /// start with "gl_" have no location.
     pub fn location(&self, name: &str, stages: &[&Module]) -> i32 {
         if name.starts_with("gl_") {

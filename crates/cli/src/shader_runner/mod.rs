@@ -15,7 +15,7 @@
 //! for fail; a panic in shaderbox aborts the process (SIGABRT) so piglit
 //! records a crash.
 //!
-//! What it runs (see [`script`], [`command`] and [`run`]): the OpenGL 2.1 /
+//! What it runs (see [`script`], [`command`] and [`run`](mod@run)): the OpenGL 2.1 /
 //! GLSL 1.10 and 1.20 subset of the format: `[require]` (GL, GLSL and limit
 //! comparisons, extensions, `SIZE`, `depthbuffer`), vertex and fragment
 //! shader sections (several per stage, and piglit's passthrough vertex

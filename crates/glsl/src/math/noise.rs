@@ -12,7 +12,7 @@
 //!   (normalized), plus the four diagonals for `d = 2`;
 //! - the result is the sum of `g_c · (f - c)` weighted by the product of
 //!   the quintic fades `6t⁵ - 15t⁴ + 10t³` of each coordinate, scaled by a
-//!   per-dimension factor ([`SCALE`]) and clamped to [-1, 1].
+//!   per-dimension factor (`SCALE`) and clamped to [-1, 1].
 //!
 //! Properties (the spec's, checked by the tests below): values in [-1, 1]
 //! covering at least [-0.6, 0.6]; average 0 (the gradient set is symmetric);

@@ -14,19 +14,19 @@
 //! after `:` in `?:` (1.10: conditional, 1.20: assignment expression).
 //!
 //! ## Error recovery
-//! A syntax error unwinds (as [`Reported`]) to the enclosing statement, struct
+//! A syntax error unwinds (as `Reported`) to the enclosing statement, struct
 //! member or external declaration, which skips to the end of the bad
-//! construct ([`Parser::recover`]) and parsing continues, so independent
+//! construct (`Parser::recover`) and parsing continues, so independent
 //! errors are all reported. After one error, further errors are suppressed
 //! until the next statement starts, so one mistake gives one message. A
-//! missing operand becomes [`ExprKind::Error`] so the surrounding statement
+//! missing operand becomes `ExprKind::Error` so the surrounding statement
 //! survives. Nesting deeper than [`limits::MAX_NESTING_DEPTH`] stops the
 //! parse with one error instead of exhausting the stack.
 //!
 //! ## Type names
 //! Whether an identifier names a struct type decides between declarations
 //! and expressions (`S x;` vs `S(1.0);` vs `S = 1;`), so the parser tracks
-//! struct declarations with their lexical scopes ([`scope::Scopes`]).
+//! struct declarations with their lexical scopes (`scope::Scopes`).
 
 mod decl;
 mod expr;

@@ -9,13 +9,13 @@
 //!
 //! The built-ins (GLSL 1.20 §7, §8) are GLSL text from
 //! [`crate::builtins::prelude`], analyzed once per (version, stage) in a
-//! privileged mode and cached in a [`BuiltinEnv`]; a user shader sees them
+//! privileged mode and cached in a `BuiltinEnv`; a user shader sees them
 //! in a scope outside its global scope (§4.2.6).
 //!
-//! Submodules: [`scope`] (symbol tables), [`types`] (type specifiers,
-//! structs, array sizes), [`decl`] (variable declarations and qualifiers),
-//! [`func`] (functions, calls, overloads), [`expr`] (expressions),
-//! [`stmt`] (statements).
+//! Submodules: `scope` (symbol tables), `types` (type specifiers,
+//! structs, array sizes), `decl` (variable declarations and qualifiers),
+//! `func` (functions, calls, overloads), `expr` (expressions),
+//! `stmt` (statements).
 
 mod decl;
 mod expr;
