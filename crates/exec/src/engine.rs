@@ -443,8 +443,8 @@ fn f(x: u32) -> f32 {
     f32::from_bits(x)
 }
 
+use crate::lane::{self, flush as fz, flush_bits as ftz, max as fmax, min as fmin};
 pub(crate) use crate::lane::{float_output, uniform_word};
-use crate::lane::{flush as fz, flush_bits as ftz, max as fmax, min as fmin};
 
 /// `a` with its subnormals flushed ([`ftz`]).
 pub(crate) fn flushed(a: &Lanes) -> Lanes {
@@ -959,11 +959,11 @@ unsafe fn step(
             *dst = lanes(|l| (a[l] & mk[l]) | (dst[l] & !mk[l]));
         }
         Op::Uniform { d, word, float } => put!(d, [uni(word as usize, float); LANES]),
-        Op::FAdd { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) + f(y))),
-        Op::FSub { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) - f(y))),
-        Op::FMul { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) * f(y))),
-        Op::FDiv { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) / f(y))),
-        Op::FNeg { d, a } => un!(d, a, |x| x ^ 0x8000_0000),
+        Op::FAdd { d, a, b } => bin!(d, a, b, |x, y| lane::add(f(x), f(y)).to_bits()),
+        Op::FSub { d, a, b } => bin!(d, a, b, |x, y| lane::sub(f(x), f(y)).to_bits()),
+        Op::FMul { d, a, b } => bin!(d, a, b, |x, y| lane::mul(f(x), f(y)).to_bits()),
+        Op::FDiv { d, a, b } => bin!(d, a, b, |x, y| lane::div(f(x), f(y)).to_bits()),
+        Op::FNeg { d, a } => un!(d, a, |x| lane::neg(f(x)).to_bits()),
         Op::FMac { d, a, b } => {
             let (a, b, acc) = (g!(a), g!(b), g!(d));
             put!(d, lanes(|l| ftz(f(acc[l]) + f(ftz(f(a[l]) * f(b[l]))))))
@@ -992,9 +992,8 @@ unsafe fn step(
             c,
         } => match func {
             // The formulas of glsl::math, with its flushed intermediates.
-            F3::Mix => tri!(d, a, b, c, |x, y, t| crate::lane::mix(x, y, t).to_bits()),
-            F3::Clamp => tri!(d, a, b, c, |x, lo, hi| crate::lane::clamp(x, lo, hi)
-                .to_bits()),
+            F3::Mix => tri!(d, a, b, c, |x, y, t| lane::mix(x, y, t).to_bits()),
+            F3::Clamp => tri!(d, a, b, c, |x, lo, hi| lane::clamp(x, lo, hi).to_bits()),
             F3::SmoothStep => tri!(d, a, b, c, |e0, e1, x| {
                 let t = fmin(fmax(fz(fz(x - e0) / fz(e1 - e0)), 0.0), 1.0);
                 ftz(fz(t * t) * (3.0 - 2.0 * t))
@@ -1212,7 +1211,7 @@ pub(crate) fn f1(func: F1, a: &Lanes) -> Lanes {
         F1::Floor => each!(|x| ftz(floor(x))),
         F1::Ceil => each!(|x| ftz(ceil(x))),
         F1::Fract => each!(|x| ftz(x - floor(x))),
-        F1::Exp => lane_loop!(|l| ftz(math::exp(f(a[l])))),
+        F1::Exp => lane_loop!(|l| lane::exp(f(a[l])).to_bits()),
         F1::Exp2 => lane_loop!(|l| ftz(math::exp2(f(a[l])))),
         F1::Log => lane_loop!(|l| ftz(math::log(f(a[l])))),
         F1::Log2 => lane_loop!(|l| ftz(math::log2(f(a[l])))),
@@ -1311,7 +1310,7 @@ unsafe fn texture(
             (Lod::Explicit(v), TexLod::Explicit(Some(l))) => *v = floats(reg(l)),
             (Lod::Derivatives { ddx, ddy, bias }, TexLod::Implicit { bias: b }) => {
                 for k in 0..(t.dims as usize).min(3) {
-                    (ddx[k], ddy[k]) = crate::lane::quad_diffs(&req.coord[k]);
+                    (ddx[k], ddy[k]) = lane::quad_diffs(&req.coord[k]);
                 }
                 if let Some(b) = b {
                     *bias = floats(reg(b));

@@ -15,7 +15,7 @@ use glsl::types::Scalar;
 pub const LOOP_BUDGET: u64 = 1 << 24;
 
 /// All lanes.
-pub(crate) const FULL: LaneMask = if LANES >= 32 { !0 } else { (1u32 << LANES) - 1 };
+pub(crate) use crate::lane::FULL;
 
 type Regs = Vec<[u32; LANES]>;
 

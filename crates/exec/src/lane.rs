@@ -7,7 +7,10 @@
 //! Values entering an op are flushed (subnormals read as zero, see the
 //! crate documentation); every result is flushed again.
 
-use crate::LANES;
+use crate::{LaneMask, LANES};
+
+/// Every lane of a batch.
+pub const FULL: LaneMask = if LANES >= 32 { !0 } else { (1u32 << LANES) - 1 };
 
 /// `x` with a subnormal made zero of its sign, as bits (no branch).
 #[inline(always)]
@@ -51,7 +54,8 @@ pub fn div(x: f32, y: f32) -> f32 {
     flush(x / y)
 }
 
-/// `-x` (`FNeg`).
+/// `-x` (`FNeg`): the sign bit flipped (NaNs included; never a new
+/// subnormal).
 #[inline(always)]
 pub fn neg(x: f32) -> f32 {
     -x

@@ -15,12 +15,9 @@
 //! debugger's traced runs, use the kernel itself.
 
 use crate::ffgen::{AlphaOp, FogMode, FragmentShape, Lookup, RgbOp};
-use exec::lane::{self, flush};
+use exec::lane::{self, flush, FULL};
 use exec::{Batch, ExecError, Kernel, Lod, SampleRequest, Textures, LANES};
 use glsl::types::SamplerKind;
-
-/// Every lane of a batch.
-const FULL: u32 = if LANES >= 32 { !0 } else { (1u32 << LANES) - 1 };
 
 /// A fixed-function fragment kernel and, when its shape allows, the plan
 /// that computes its results directly (see the module documentation).
@@ -309,7 +306,6 @@ fn each3(a: &Lanes, b: &Lanes, c: &Lanes, op: impl Fn(f32, f32, f32) -> f32) -> 
 /// other lanes). Inlined into [`Plan::run`]'s variants (compiled for
 /// their instruction sets).
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 fn lookup_2d(
     textures: &dyn Textures,
     unit: u32,
