@@ -3,7 +3,7 @@
 //! and glInterleavedArrays (GL 2.1 §2.8, Table 2.5).
 
 use crate::context::{guard, with_ctx, OsContext};
-use crate::entry::{element_indices, gl_entry_points, rd_vec};
+use crate::entry::{element_source, gl_entry_points, rd_vec};
 use crate::types::*;
 use gl::enums::*;
 use gl::vertex::AttribSource;
@@ -114,7 +114,7 @@ pub(crate) unsafe fn compiled_element_indices(
         return Err(GL_INVALID_VALUE);
     }
     // SAFETY: GL's contract for the index pointer, as for the draw.
-    Ok(unsafe { element_indices(c, count, ty, indices) }.1)
+    Ok(unsafe { element_source(c, count, ty, indices, true) }.1)
 }
 
 gl_entry_points! {

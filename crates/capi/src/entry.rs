@@ -174,7 +174,7 @@ fn b(x: GLboolean) -> bool {
 /// bound element buffer, or a copy of client memory) and, with `read`, the
 /// indices themselves (else none: a draw from buffers reads them once,
 /// in the context).
-unsafe fn element_source(
+pub(crate) unsafe fn element_source(
     c: &mut OsContext,
     count: GLsizei,
     ty: GLenum,
@@ -223,18 +223,6 @@ unsafe fn element_source(
         let idx = if read { convert(bytes) } else { Vec::new() };
         (ArrayData::Client(Arc::from(bytes)), idx)
     }
-}
-
-/// glDrawElements' index range: the indices (copied when client memory)
-/// and the data handed to the context.
-pub(crate) unsafe fn element_indices(
-    c: &mut OsContext,
-    count: GLsizei,
-    ty: GLenum,
-    indices: *const c_void,
-) -> (ArrayData, Vec<u32>) {
-    // SAFETY: the caller's.
-    unsafe { element_source(c, count, ty, indices, true) }
 }
 
 /// Before a glDrawElements-like draw: copies the vertices its indices use
