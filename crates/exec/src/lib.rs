@@ -197,10 +197,14 @@ pub use variant::{
 
 /// Fragment kernels without `gl_FragDepth` get a [`Kernel::depth_only`]
 /// slice (their discards) from this many executor ops on: below, a
-/// renderer's extra depth pass costs more than the shading it saves
-/// (measured: the seed materials shader, 193 ops, 1.5× faster on three
-/// overlapping sheets; 10- and 20-op kernels 10–15 % slower).
-pub const DEFER_MIN_OPS: usize = 96;
+/// renderer's extra depth pass costs more than the shading it saves.
+/// Measured on three overlapping sheets (`bench/scene.py`): the seed
+/// materials shader (193 ops) 1.5× faster deferred; the fixed-function
+/// stage with smooth colour and linear fog (20 ops) 3–5 % faster since
+/// the deferred pass got cheaper (it was 10–15 % slower when this was 96);
+/// flat colour alone (10 ops, sub-pixel triangles) 8–10 % slower. The
+/// crossover lies between; the threshold is the measured 20.
+pub const DEFER_MIN_OPS: usize = 20;
 
 /// Makes kernels of the `jit` variant compile to native code on their
 /// `runs`-th run (at least 1), on the thread of that run, instead of from
