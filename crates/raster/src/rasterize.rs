@@ -429,6 +429,54 @@ impl Shape {
         }
     }
 
+    /// The covered quads inside `clip` in [`Shape::quads_into`]'s order,
+    /// each with its window z and barycentrics as
+    /// [`Shape::interp_quad_z_inline`] leaves them: `f(qx, qy, mask, q)`.
+    /// Triangles take them from the coverage's own edge values (the same
+    /// integers, so the same bits) without a list of quads in between;
+    /// the other shapes go through `quads`.
+    #[inline(always)]
+    pub fn quads_z_each(
+        &self,
+        clip: PixelRect,
+        quads: &mut Vec<(i64, i64, u8)>,
+        mut f: impl FnMut(i64, i64, u8, &mut QuadInterp),
+    ) {
+        let mut q = QuadInterp::default();
+        match self {
+            Shape::Triangle {
+                p,
+                sign,
+                inv_area2,
+                v,
+            } => {
+                let r = intersect(self.bounds(), clip);
+                if r.0 >= r.2 || r.1 >= r.3 {
+                    return;
+                }
+                triangle_quads_each(
+                    p,
+                    *sign,
+                    r,
+                    #[inline(always)]
+                    |qx, qy, mask, s| {
+                        if mask != 0 {
+                            quad_from_edges(s, *inv_area2, v, &mut q);
+                            f(qx, qy, mask, &mut q);
+                        }
+                    },
+                );
+            }
+            _ => {
+                self.quads_into(clip, quads);
+                for &(qx, qy, mask) in quads.iter() {
+                    self.interp_quad_z_inline(qx, qy, &mut q);
+                    f(qx, qy, mask, &mut q);
+                }
+            }
+        }
+    }
+
     /// [`Shape::interp_quad_finish`] inlined into the caller (see
     /// [`Shape::interp_quad_z_inline`]).
     #[inline(always)]
@@ -500,19 +548,35 @@ type TriangleRef<'a> = (&'a [(i64, i64); 3], i64, f64, &'a [WinVertex; 3]);
 /// (qx, qy), first half: window z, and the barycentrics in `q.weights`.
 /// The edge values of pixel 0 as [`edge`] computes them, those of the
 /// other pixels one step of an edge's (integer, exact) slope away, so the
-/// same integers; then the same f64 operations per pixel.
+/// same integers; then [`quad_from_edges`].
 #[inline(always)]
 fn triangle_quad((p, sign, r, v): TriangleRef, qx: i64, qy: i64, q: &mut QuadInterp) {
     let (cx, cy) = (qx * ONE + HALF, qy * ONE + HALF);
-    let mut b = [[0.0f64; 4]; 3];
-    for (j, bj) in b.iter_mut().enumerate() {
+    let mut s = [[0i64; 4]; 3];
+    for (j, sj) in s.iter_mut().enumerate() {
         let (pa, pb) = (p[(j + 1) % 3], p[(j + 2) % 3]);
         let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
         let e0 = ex * (cy - pa.1) - ey * (cx - pa.0);
         let (dx, dy) = (-ey * ONE, ex * ONE);
         let e = [e0, e0 + dx, e0 + dy, e0 + dx + dy];
         for k in 0..4 {
-            bj[k] = (sign * e[k]) as f64 * r;
+            sj[k] = sign * e[k];
+        }
+    }
+    quad_from_edges(&s, r, v, q);
+}
+
+/// The barycentrics and window z of a quad's pixels from their signed
+/// edge values (`s[j][k]`: the triangle's orientation times [`edge`] `j`
+/// at pixel `k`, exact integers however they were reached): `b = s · r`
+/// in f64 (`r`: one over the doubled area), z from the vertices' in the
+/// same order; the barycentrics left in `q.weights`.
+#[inline(always)]
+fn quad_from_edges(s: &[[i64; 4]; 3], r: f64, v: &[WinVertex; 3], q: &mut QuadInterp) {
+    let mut b = [[0.0f64; 4]; 3];
+    for (bj, sj) in b.iter_mut().zip(s) {
+        for k in 0..4 {
+            bj[k] = sj[k] as f64 * r;
         }
     }
     let [b0, b1, b2] = b;
@@ -568,29 +632,61 @@ unsafe fn triangle_weights_avx512(v: &[WinVertex; 3], q: &mut QuadInterp) {
 }
 
 /// The covered quads of a triangle inside `r` (non-empty, within the
-/// primitive's bounds), row-major. Each edge is the integer linear form
-/// `g(x, y) = a·x + b·y + c` that is ≥ 0 exactly when the pixel center
-/// lies inside the edge or on an edge the triangle owns (the top-left
-/// rule folded into `c`): the same integers as [`edge`] at every pixel,
-/// stepped by additions. The three edges' values at a quad's four pixels
-/// are kept side by side (`v[k][i]`: edge `k` at pixel `i`) and stepped
-/// together, so that a wide instruction set handles them at once: a pixel
-/// is covered when no edge is negative there (the sign bits of the three
-/// edges or-ed), and a row of quads ends as soon as one edge that only
-/// decreases to the right is negative on the whole quad.
+/// primitive's bounds), row-major ([`triangle_quads_each`]).
 #[inline(always)]
 fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i64, i64, u8)>) {
+    // The row's quads are written in place without a branch on their
+    // coverage (which does not predict at a triangle's edges): each is
+    // stored at the end, which moves past it only when it covers a pixel;
+    // the slot is made first and an unused one dropped at the end.
+    let mut n = out.len();
+    triangle_quads_each(
+        p,
+        sign,
+        r,
+        #[inline(always)]
+        |qx, qy, mask, _| {
+            if n == out.len() {
+                out.push((qx, qy, mask));
+            } else if let Some(slot) = out.get_mut(n) {
+                *slot = (qx, qy, mask);
+            }
+            n += usize::from(mask != 0);
+        },
+    );
+    out.truncate(n);
+}
+
+/// Visits the quads of a triangle inside `r` (non-empty, within the
+/// primitive's bounds), row-major: `f(qx, qy, mask, s)` with the pixels
+/// covered (mask bit `(y - qy) * 2 + (x - qx)`, possibly none) and the
+/// signed edge values `s` of [`quad_from_edges`]. Each edge is the
+/// integer linear form `s(x, y) = a·x + b·y + c` (the orientation times
+/// [`edge`] at the pixel center), stepped by additions; a pixel is
+/// covered when every edge is at least its threshold there: 0 on an edge
+/// the triangle owns (top-left rule), else 1. The three edges' values at
+/// a quad's four pixels are kept side by side and stepped together, so
+/// that a wide instruction set handles them at once, and a row of quads
+/// ends as soon as one edge that only decreases to the right is below
+/// its threshold on the whole quad.
+#[inline(always)]
+fn triangle_quads_each(
+    p: &[(i64, i64); 3],
+    sign: i64,
+    r: PixelRect,
+    mut f: impl FnMut(i64, i64, u8, &[[i64; 4]; 3]),
+) {
     let mut a = [0i64; 3];
     let mut b = [0i64; 3];
     let mut c = [0i64; 3];
+    let mut threshold = [0i64; 3];
     for k in 0..3 {
         let (pa, pb) = (p[(k + 1) % 3], p[(k + 2) % 3]);
         let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
-        // sign · edge(x·ONE + HALF, y·ONE + HALF), minus 1 unless owned
-        // (e > 0, or e = 0 on an owned edge  ⇔  e + owned − 1 ≥ 0).
         a[k] = -sign * ey * ONE;
         b[k] = sign * ex * ONE;
-        c[k] = sign * (ex * (HALF - pa.1) - ey * (HALF - pa.0)) + owns_edge(p, k, sign) as i64 - 1;
+        c[k] = sign * (ex * (HALF - pa.1) - ey * (HALF - pa.0));
+        threshold[k] = 1 - owns_edge(p, k, sign) as i64;
     }
     // Pixel i of a quad from its first: (i & 1, i >> 1).
     let offset: [[i64; 4]; 3] = std::array::from_fn(|k| [0, a[k], b[k], a[k] + b[k]]);
@@ -606,39 +702,28 @@ fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i
             let g = a[k] * x0 + b[k] * qy + c[k];
             offset[k].map(|o| g + o)
         });
-        // The row's quads are written in place without a branch on their
-        // coverage (which does not predict at a triangle's edges): each
-        // is stored at `n`, which moves past it only when it covers a
-        // pixel; the slots are made first and the unused ones dropped.
-        let start = out.len();
-        out.resize(start + ((r.2 - x0 + 1) / 2) as usize, (0, 0, 0));
-        let mut n = start;
         let mut qx = x0;
         while qx < r.2 {
             let cols =
                 (if qx >= r.0 { 0b0101u8 } else { 0 }) | (if qx + 1 < r.2 { 0b1010 } else { 0 });
-            // Per edge, the pixels where it is negative.
-            let negative: [u8; 3] =
-                std::array::from_fn(|k| (0..4).fold(0u8, |m, i| m | (u8::from(v[k][i] < 0) << i)));
-            let mask = !(negative[0] | negative[1] | negative[2]) & rows & cols;
-            // Negative on the whole quad: nothing covered here or further
+            // Per edge, the pixels where it is below its threshold.
+            let outside: [u8; 3] = std::array::from_fn(|k| {
+                (0..4).fold(0u8, |m, i| m | (u8::from(v[k][i] < threshold[k]) << i))
+            });
+            let mask = !(outside[0] | outside[1] | outside[2]) & rows & cols;
+            // Outside on the whole quad: nothing covered here or further
             // right.
-            let ends = (0..3).any(|k| decreasing & (1 << k) != 0 && negative[k] == 0xf);
+            if (0..3).any(|k| decreasing & (1 << k) != 0 && outside[k] == 0xf) {
+                break;
+            }
+            f(qx, qy, mask, &v);
             for (vk, &s) in v.iter_mut().zip(&step) {
                 for x in vk.iter_mut() {
                     *x += s;
                 }
             }
-            if ends {
-                break;
-            }
-            if let Some(slot) = out.get_mut(n) {
-                *slot = (qx, qy, mask);
-            }
-            n += usize::from(mask != 0);
             qx += 2;
         }
-        out.truncate(n);
         qy += 2;
     }
 }

@@ -39,6 +39,14 @@ pub(crate) fn new_batch(inputs: usize, outputs: usize) -> Batch {
     }
 }
 
+/// The final window z of four pixels from their interpolated z and the
+/// primitive's polygon offset (offset, clamped), and its fixed point.
+#[inline(always)]
+fn window_depths(iz: &[f64; 4], offset: f64) -> ([f64; 4], [u32; 4]) {
+    let z = iz.map(|iz| clamp01(iz + offset));
+    (z, fragment_ops::depth_to_fixed4(z))
+}
+
 fn clamp01(z: f64) -> f64 {
     if z > 0.0 {
         z.min(1.0)
@@ -90,10 +98,7 @@ impl Quad {
     /// from the interpolated z.
     #[inline(always)]
     fn window_z(&mut self, prim: &Prim) {
-        for (z, &iz) in self.z.iter_mut().zip(&self.it.z) {
-            *z = clamp01(iz + prim.z_offset);
-        }
-        self.zf = fragment_ops::depth_to_fixed4(self.z);
+        (self.z, self.zf) = window_depths(&self.it.z, prim.z_offset);
     }
 
     /// The interpolation weights and 1/w after [`Quad::set`] (left out
@@ -1513,21 +1518,24 @@ impl<'a> FragmentStage<'a> {
                         continue;
                     };
                     self.prefetch_ahead(prims, bin, i);
-                    prim.shape.quads_into(clip_to(prim, tile), quads);
-                    let Some(e) = slots.first_mut() else { break };
-                    for &quad in quads.iter() {
-                        e.set_inline(prim, p, quad, 0);
-                        let qd = &e.quad;
-                        let z = qd.z.map(|z| z as f32);
-                        let (pass, index, _) = target.test_quad((qd.x, qd.y), qd.live, z, qd.zf);
-                        for (k, &at) in index.iter().enumerate() {
-                            if pass & (1 << k) != 0 {
-                                if let Some(slot) = winner.get_mut(at) {
-                                    *slot = (p, qd.live);
+                    let clip = clip_to(prim, tile);
+                    prim.shape.quads_z_each(
+                        clip,
+                        quads,
+                        #[inline(always)]
+                        |qx, qy, live, it| {
+                            let (z, zf) = window_depths(&it.z, prim.z_offset);
+                            let z = z.map(|z| z as f32);
+                            let (pass, index, _) = target.test_quad((qx, qy), live, z, zf);
+                            for (k, &at) in index.iter().enumerate() {
+                                if pass & (1 << k) != 0 {
+                                    if let Some(slot) = winner.get_mut(at) {
+                                        *slot = (p, live);
+                                    }
                                 }
                             }
-                        }
-                    }
+                        },
+                    );
                 }
             }
             None => {
