@@ -24,7 +24,9 @@
 //! perspective weights times the reciprocal of their sum: one division
 //! each where the quotients would take three or twelve (within an ulp of
 //! f64 of them, far below f32's). Every path (per pixel, per quad, per
-//! instruction set) computes them with the same operations.
+//! instruction set, from the coverage loop's stepped edges or from edges
+//! computed afresh) computes them with the same operations on the same
+//! integers.
 
 use crate::simd::Isa;
 
