@@ -1525,8 +1525,9 @@ impl<'a> FragmentStage<'a> {
                         #[inline(always)]
                         |qx, qy, live, it| {
                             let (z, zf) = window_depths(&it.z, prim.z_offset);
-                            let z = z.map(|z| z as f32);
-                            let (pass, index, _) = target.test_quad((qx, qy), live, z, zf);
+                            // The f32 z only for a quad tested pixel by pixel.
+                            let z = || z.map(|z| z as f32);
+                            let (pass, index, _) = target.test_quad_with((qx, qy), live, z, zf);
                             for (k, &at) in index.iter().enumerate() {
                                 if pass & (1 << k) != 0 {
                                     if let Some(slot) = winner.get_mut(at) {
