@@ -708,14 +708,15 @@ fn triangle_quads_each(
         while qx < r.2 {
             let cols =
                 (if qx >= r.0 { 0b0101u8 } else { 0 }) | (if qx + 1 < r.2 { 0b1010 } else { 0 });
-            // Per edge, the pixels where it is below its threshold.
-            let outside: [u8; 3] = std::array::from_fn(|k| {
-                (0..4).fold(0u8, |m, i| m | (u8::from(v[k][i] < threshold[k]) << i))
-            });
+            // Per edge, the pixels where it is below its threshold (where
+            // the value minus the threshold is negative).
+            let outside: [u8; 3] =
+                std::array::from_fn(|k| negative_lanes(v[k].map(|x| x - threshold[k])));
             let mask = !(outside[0] | outside[1] | outside[2]) & rows & cols;
             // Outside on the whole quad: nothing covered here or further
             // right.
-            if (0..3).any(|k| decreasing & (1 << k) != 0 && outside[k] == 0xf) {
+            let whole = (0..3).fold(0u8, |m, k| m | (u8::from(outside[k] == 0xf) << k));
+            if whole & decreasing != 0 {
                 break;
             }
             f(qx, qy, mask, &v);
@@ -727,6 +728,29 @@ fn triangle_quads_each(
             qx += 2;
         }
         qy += 2;
+    }
+}
+
+/// Bit `i` set where `x[i]` is negative: the sign bits, taken by the
+/// instruction that collects them where there is one.
+#[inline(always)]
+fn negative_lanes(x: [i64; 4]) -> u8 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::*;
+        // SAFETY: SSE2 is part of the x86-64 baseline; the loads read the
+        // four elements of `x`, two at a time.
+        unsafe {
+            let lo = _mm_loadu_si128(x.as_ptr().cast());
+            let hi = _mm_loadu_si128(x.as_ptr().add(2).cast());
+            let m = _mm_movemask_pd(_mm_castsi128_pd(lo))
+                | (_mm_movemask_pd(_mm_castsi128_pd(hi)) << 2);
+            m as u8
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        (0..4).fold(0u8, |m, i| m | (u8::from(x[i] < 0) << i))
     }
 }
 
@@ -773,6 +797,18 @@ mod tests {
             }
         }
         hits
+    }
+
+    #[test]
+    fn negative_lanes_are_the_sign_bits() {
+        let values = [i64::MIN, -(1 << 40), -2, -1, 0, 1, 2, 1 << 40, i64::MAX];
+        for a in values {
+            for b in values {
+                let x = [a, b, b, a];
+                let want = (0..4).fold(0u8, |m, i| m | (u8::from(x[i] < 0) << i));
+                assert_eq!(negative_lanes(x), want, "{x:?}");
+            }
+        }
     }
 
     #[test]
