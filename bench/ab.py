@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Two builds of shaderbox's libOSMesa.so, one scene, interleaved runs.
 
-    python3 bench/ab.py SPEC BASE_DIR NEW_DIR [--rounds N] [--threads T]
+    python3 bench/ab.py SPEC BASE_DIR NEW_DIR [--rounds N] [--threads T] [--frames F]
 
 Runs bench/scene.py on SPEC alternately with LD_LIBRARY_PATH=BASE_DIR and
 NEW_DIR (each a directory holding a libOSMesa.so), --rounds times each,
@@ -22,11 +22,11 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def run(spec, lib, threads, out):
+def run(spec, lib, threads, out, frames):
     env = dict(os.environ, PYOPENGL_PLATFORM="osmesa", LD_LIBRARY_PATH=lib,
                SHADERBOX_THREADS=str(threads), LP_NUM_THREADS=str(threads))
     p = subprocess.run(
-        [sys.executable, os.path.join(HERE, "scene.py"), spec, "--frames", "5", "--budget", "6", "--out", out],
+        [sys.executable, os.path.join(HERE, "scene.py"), spec, "--frames", str(frames), "--budget", "6", "--out", out],
         env=env, capture_output=True, text=True)
     lines = [l for l in p.stdout.splitlines() if l.startswith("{")]
     if p.returncode != 0 or not lines:
@@ -41,6 +41,8 @@ def main():
     ap.add_argument("new")
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--frames", type=int, default=5,
+                    help="timed frames per run (more make the fastest frame steadier)")
     a = ap.parse_args()
     for d in (a.base, a.new):
         if not os.path.isfile(os.path.join(d, "libOSMesa.so")):
@@ -51,7 +53,7 @@ def main():
         outs = {a.base: os.path.join(tmp, "base.bin"), a.new: os.path.join(tmp, "new.bin")}
         for _ in range(a.rounds):
             for d in (a.base, a.new):
-                r = run(a.spec, d, a.threads, outs[d])
+                r = run(a.spec, d, a.threads, outs[d], a.frames)
                 times[d] += r["times"]
                 cpu[d].append(r["cpu_per_frame"])
         with open(outs[a.base], "rb") as f, open(outs[a.new], "rb") as g:
