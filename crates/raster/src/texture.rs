@@ -561,6 +561,42 @@ pub(crate) fn mix_levels(t1: [f32; 4], t2: [f32; 4], f: f32) -> [f32; 4] {
     std::array::from_fn(|i| (1.0 - f) * t1[i] + f * t2[i])
 }
 
+/// log2(ρ) for the level of detail (λ_base of GL 2.1 eq. 3.18), in f32:
+/// ρ = 2^e·m with m in [√½, √2), log2(m) from the series of
+/// 2·atanh(s), s = (m − 1)/(m + 1), |s| ≤ 0.172, to s⁹ (truncation below
+/// 2·10⁻⁸). Exact at powers of two (m = 1 gives s = 0), so a texture
+/// minified by exactly 2^n reads level n; within a few 10⁻⁷ elsewhere,
+/// which λ's uses (the level and its fraction) cannot tell from a
+/// correctly rounded log2. Branch-free (selects), so that loops over
+/// lanes vectorize; only f32 additions, multiplications and one
+/// division, each rounded once, so every instruction set gives the same
+/// bits. log2(0) = −∞, log2(+∞) = +∞, NaN and negative ρ give NaN
+/// (ρ is a square root: never negative).
+#[inline(always)]
+pub(crate) fn lod_log2(x: f32) -> f32 {
+    // Subnormals scaled into the normal range first (exactly).
+    let small = x < f32::MIN_POSITIVE;
+    let xs = if small { x * 16_777_216.0 } else { x };
+    // Subtracting the bits of √½ moves the exponent boundary from 1 to
+    // √½ (as `glsl::math`'s log does).
+    const SQRT_HALF: u32 = 0x3f35_04f3;
+    let bits = xs.to_bits();
+    let k = (bits.wrapping_sub(SQRT_HALF) as i32) >> 23;
+    let m = f32::from_bits(bits.wrapping_sub((k as u32) << 23));
+    let e = k as f32 - if small { 24.0 } else { 0.0 };
+    let s = (m - 1.0) / (m + 1.0);
+    let z = s * s;
+    let p = 1.0 + z * (1.0 / 3.0 + z * (1.0 / 5.0 + z * (1.0 / 7.0 + z * (1.0 / 9.0))));
+    let r = e + (2.0 * s * p) * std::f32::consts::LOG2_E;
+    let r = if x == 0.0 { f32::NEG_INFINITY } else { r };
+    let r = if x == f32::INFINITY { x } else { r };
+    if x.is_nan() || x < 0.0 {
+        f32::NAN
+    } else {
+        r
+    }
+}
+
 /// GL 2.1 §3.8.8: λ = clamp(λ_base + clamp(biases), lod_min, lod_max),
 /// λ_base from the derivatives of the (face) coordinates scaled by the
 /// base level's size, or given. `extra_bias` is the unit's bias plus the
@@ -579,7 +615,7 @@ pub(crate) fn lambda(tex: &Texture, base_img: &Image, derivs: LodBase, extra_bia
                 sy += uy * uy;
             }
             let rho = math::max(math::sqrt(sx), math::sqrt(sy));
-            math::log2(rho)
+            lod_log2(rho)
         }
     };
     let bias = (tex.lod_bias + extra_bias).clamp(-MAX_LOD_BIAS, MAX_LOD_BIAS);
@@ -775,6 +811,40 @@ fn filter(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `lod_log2` is exact at powers of two (normal and subnormal), within
+    /// 2·10⁻⁷ plus one step of the result of log2 elsewhere, and gives
+    /// log2's special values.
+    #[test]
+    fn lod_log2_is_close_and_exact_at_powers_of_two() {
+        for n in -149..=127 {
+            let x = 2f64.powi(n) as f32;
+            assert_eq!(lod_log2(x), n as f32, "2^{n}");
+        }
+        let mut seed = 0x1d0f_u32;
+        for i in 0..200_000u32 {
+            seed = crate::lcg_step(seed);
+            let x = match i % 3 {
+                // Every positive float's bits, and the magnitudes of
+                // derivatives scaled by texture sizes.
+                0 => f32::from_bits(seed >> 1),
+                1 => (seed >> 8) as f32 / 16_777_216.0 * 4096.0,
+                _ => 1.0 + (seed >> 8) as f32 / 16_777_216.0 / 64.0,
+            };
+            if !x.is_finite() || x <= 0.0 {
+                continue;
+            }
+            let want = (x as f64).log2();
+            let got = lod_log2(x) as f64;
+            let step = f32::EPSILON as f64 * want.abs().max(1.0);
+            assert!((got - want).abs() <= 2e-7 + step, "{x:e}: {got} vs {want}");
+        }
+        assert_eq!(lod_log2(0.0), f32::NEG_INFINITY);
+        assert_eq!(lod_log2(-0.0), f32::NEG_INFINITY);
+        assert_eq!(lod_log2(f32::INFINITY), f32::INFINITY);
+        assert!(lod_log2(f32::NAN).is_nan());
+        assert!(lod_log2(-1.0).is_nan());
+    }
 
     fn solid(w: u32, h: u32, color: [f32; 4]) -> Image {
         Image::new(w, h, 1, vec![color; (w * h) as usize])

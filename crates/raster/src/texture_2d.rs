@@ -585,12 +585,12 @@ fn derivative_lambdas<const N: usize>(
         // `math::max`.
         rho[l] = if rx.is_nan() || rx < ry { ry } else { rx };
     }
-    // Every lane (`log2` is branch-free and total), so that the loop
+    // Every lane (`lod_log2` is branch-free and total), so that the loop
     // vectorizes.
     let mut base = [0.0f32; N];
     let mut extra = [0.0f32; N];
     for l in 0..N {
-        base[l] = glsl::math::log2(rho[l]);
+        base[l] = crate::texture::lod_log2(rho[l]);
         extra[l] = unit_bias + bias[l];
     }
     clamp_lambdas(tex, &base, &extra)
