@@ -300,6 +300,27 @@ impl raster::VertexFetch for Fetcher<'_> {
         self.fetch_column(input_slot, 0, vertex_index, out);
     }
 
+    fn fetch_column_lanes(
+        &self,
+        input_slot: usize,
+        column: usize,
+        indices: &[u32],
+        out: &mut [[f32; exec::LANES]; 4],
+    ) {
+        // Arrays of a draw from arrays: the source resolved once for the
+        // whole list.
+        let resolved = match self.immediate {
+            None => self.resolved.get(input_slot).and_then(|c| c.get(column)),
+            Some(_) => None,
+        };
+        match resolved {
+            Some(r) => raster::fetch_column_each(indices, out, |ix, v| *v = r.read(ix)),
+            None => raster::fetch_column_each(indices, out, |ix, v| {
+                self.fetch_column(input_slot, column, ix, v)
+            }),
+        }
+    }
+
     fn fetch_column(
         &self,
         input_slot: usize,

@@ -180,7 +180,9 @@ pub use framebuffer::{
     depth_to_fixed, fixed_to_depth, float_to_unorm8, unorm8_to_float, ColorBuffer, ColorFormat,
     Framebuffer, DEPTH_MAX, MAX_DRAW_BUFFERS, MAX_FRAMEBUFFER_SIZE,
 };
-pub use pipeline::{draw_stages, fetch_vertex, Mode, VertexFetch, MAX_POINT_SIZE, TILE};
+pub use pipeline::{
+    draw_stages, fetch_column_each, fetch_vertex, Mode, VertexFetch, MAX_POINT_SIZE, TILE,
+};
 pub use pixel_fragments::{write_pixel_fragments, PixelFragment};
 pub use probe::{
     probe_draw, view_draw, DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine,

@@ -54,6 +54,41 @@ pub trait VertexFetch: Sync {
             self.fetch(input_slot, vertex_index, out);
         }
     }
+
+    /// [`VertexFetch::fetch_column`] of the vertices `indices` (at most
+    /// [`LANES`]): component `c` of vertex `indices[l]` into `out[c][l]`,
+    /// each lane starting as (0, 0, 0, 1); lanes past the list are left
+    /// as they are. The default asks for one vertex at a time
+    /// ([`fetch_column_each`]); a fetcher can look its source up once for
+    /// the whole list.
+    fn fetch_column_lanes(
+        &self,
+        input_slot: usize,
+        column: usize,
+        indices: &[u32],
+        out: &mut [[f32; LANES]; 4],
+    ) {
+        fetch_column_each(indices, out, |ix, v| {
+            self.fetch_column(input_slot, column, ix, v)
+        });
+    }
+}
+
+/// [`VertexFetch::fetch_column_lanes`] one vertex at a time: `column(ix,
+/// v)` writes vertex `ix`'s values into `v` (which starts as (0, 0, 0,
+/// 1)), then lane `l` of `out` gets them.
+pub fn fetch_column_each(
+    indices: &[u32],
+    out: &mut [[f32; LANES]; 4],
+    mut column: impl FnMut(u32, &mut [f32; 4]),
+) {
+    for (l, &ix) in indices.iter().enumerate().take(LANES) {
+        let mut v = [0.0, 0.0, 0.0, 1.0];
+        column(ix, &mut v);
+        for (o, x) in out.iter_mut().zip(v) {
+            o[l] = x;
+        }
+    }
 }
 
 /// Begin/End modes (GL 2.1 §2.6.1).
@@ -257,9 +292,7 @@ fn run_vertices(
             for c in batch.inputs.iter_mut().chain(batch.outputs.iter_mut()) {
                 *c = [0.0; LANES];
             }
-            for (lane, &ix) in chunk.iter().enumerate() {
-                fetch_planned(&plan, fetch, ix, &mut batch, lane);
-            }
+            fetch_planned_lanes(&plan, fetch, chunk, &mut batch);
             batch.active = if chunk.len() >= 32 {
                 u32::MAX
             } else {
@@ -368,6 +401,29 @@ fn fetch_planned(
                 if let Some(d) = d.get_mut(lane) {
                     *d = value;
                 }
+            }
+        }
+    }
+}
+
+/// [`fetch_planned`] of the vertices `indices` (at most [`LANES`]) into
+/// lanes 0.. of `batch`, a column of an input for all of them at once
+/// ([`VertexFetch::fetch_column_lanes`]).
+fn fetch_planned_lanes(
+    plan: &InputPlan,
+    fetch: &dyn VertexFetch,
+    indices: &[u32],
+    batch: &mut crate::ex::Batch,
+) {
+    let n = indices.len().min(LANES);
+    for &(slot_no, offset, cols, rows) in plan {
+        for col in 0..cols {
+            let mut v = [[0.0; LANES], [0.0; LANES], [0.0; LANES], [1.0; LANES]];
+            fetch.fetch_column_lanes(slot_no, col, &indices[..n], &mut v);
+            let at = offset + col * rows;
+            let dst = batch.inputs.get_mut(at..).unwrap_or_default();
+            for (d, value) in dst.iter_mut().zip(&v[..rows.min(4)]) {
+                d[..n].copy_from_slice(&value[..n]);
             }
         }
     }
