@@ -253,6 +253,15 @@ impl ResolvedAttrib {
 }
 
 impl<'a> Fetcher<'a> {
+    /// The resolved array (or value) of column `column` of vertex input
+    /// `input_slot`, in a draw from arrays (none in immediate mode).
+    fn resolved_column(&self, input_slot: usize, column: usize) -> Option<&ResolvedAttrib> {
+        match self.immediate {
+            None => self.resolved.get(input_slot).and_then(|c| c.get(column)),
+            Some(_) => None,
+        }
+    }
+
     /// The fetcher of a draw from arrays (`immediate: None`) or from
     /// glBegin/glEnd vertices.
     pub(crate) fn new(
@@ -309,11 +318,7 @@ impl raster::VertexFetch for Fetcher<'_> {
     ) {
         // Arrays of a draw from arrays: the source resolved once for the
         // whole list.
-        let resolved = match self.immediate {
-            None => self.resolved.get(input_slot).and_then(|c| c.get(column)),
-            Some(_) => None,
-        };
-        match resolved {
+        match self.resolved_column(input_slot, column) {
             Some(r) => raster::fetch_column_each(indices, out, |ix, v| *v = r.read(ix)),
             None => raster::fetch_column_each(indices, out, |ix, v| {
                 self.fetch_column(input_slot, column, ix, v)
@@ -329,7 +334,7 @@ impl raster::VertexFetch for Fetcher<'_> {
         out: &mut [f32; 4],
     ) {
         if self.immediate.is_none() {
-            if let Some(r) = self.resolved.get(input_slot).and_then(|c| c.get(column)) {
+            if let Some(r) = self.resolved_column(input_slot, column) {
                 *out = r.read(vertex_index);
             }
             return;

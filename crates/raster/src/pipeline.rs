@@ -292,7 +292,7 @@ fn run_vertices(
             for c in batch.inputs.iter_mut().chain(batch.outputs.iter_mut()) {
                 *c = [0.0; LANES];
             }
-            fetch_planned_lanes(&plan, fetch, chunk, &mut batch);
+            fetch_planned(&plan, fetch, chunk, &mut batch, 0);
             batch.active = if chunk.len() >= 32 {
                 u32::MAX
             } else {
@@ -358,7 +358,7 @@ pub fn fetch_vertex(
     batch: &mut crate::ex::Batch,
     lane: usize,
 ) {
-    fetch_planned(&input_plan(iface), fetch, ix, batch, lane);
+    fetch_planned(&input_plan(iface), fetch, &[ix], batch, lane);
 }
 
 /// Per vertex input slot: (slot number, first component, columns, rows).
@@ -383,37 +383,16 @@ fn input_plan(iface: &Interface) -> InputPlan {
         .collect()
 }
 
-/// [`fetch_vertex`] with the layout of [`input_plan`].
+/// [`fetch_vertex`] with the layout of [`input_plan`], for the vertices
+/// `indices` (at most [`LANES`]) into lanes `first..` of `batch` (those
+/// past the last lane dropped): a column of an input for all of them at
+/// once ([`VertexFetch::fetch_column_lanes`]).
 fn fetch_planned(
-    plan: &InputPlan,
-    fetch: &dyn VertexFetch,
-    ix: u32,
-    batch: &mut crate::ex::Batch,
-    lane: usize,
-) {
-    for &(slot_no, offset, cols, rows) in plan {
-        for col in 0..cols {
-            let mut v = [0.0, 0.0, 0.0, 1.0];
-            fetch.fetch_column(slot_no, col, ix, &mut v);
-            let at = offset + col * rows;
-            let dst = batch.inputs.get_mut(at..).unwrap_or_default();
-            for (d, &value) in dst.iter_mut().zip(&v[..rows.min(4)]) {
-                if let Some(d) = d.get_mut(lane) {
-                    *d = value;
-                }
-            }
-        }
-    }
-}
-
-/// [`fetch_planned`] of the vertices `indices` (at most [`LANES`]) into
-/// lanes 0.. of `batch`, a column of an input for all of them at once
-/// ([`VertexFetch::fetch_column_lanes`]).
-fn fetch_planned_lanes(
     plan: &InputPlan,
     fetch: &dyn VertexFetch,
     indices: &[u32],
     batch: &mut crate::ex::Batch,
+    first: usize,
 ) {
     let n = indices.len().min(LANES);
     for &(slot_no, offset, cols, rows) in plan {
@@ -423,7 +402,9 @@ fn fetch_planned_lanes(
             let at = offset + col * rows;
             let dst = batch.inputs.get_mut(at..).unwrap_or_default();
             for (d, value) in dst.iter_mut().zip(&v[..rows.min(4)]) {
-                d[..n].copy_from_slice(&value[..n]);
+                for (d, &x) in d.iter_mut().skip(first).zip(&value[..n]) {
+                    *d = x;
+                }
             }
         }
     }
