@@ -463,7 +463,7 @@ impl Shape {
                     #[inline(always)]
                     |qx, qy, mask, s| {
                         if mask != 0 {
-                            quad_from_edges(s, *inv_area2, v, &mut q);
+                            quad_from_edges(&s.values(), *inv_area2, v, &mut q);
                             f(qx, qy, mask, &mut q);
                         }
                     },
@@ -662,21 +662,22 @@ fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i
 /// Visits the quads of a triangle inside `r` (non-empty, within the
 /// primitive's bounds), row-major: `f(qx, qy, mask, s)` with the pixels
 /// covered (mask bit `(y - qy) * 2 + (x - qx)`, possibly none) and the
-/// signed edge values `s` of [`quad_from_edges`]. Each edge is the
-/// integer linear form `s(x, y) = a·x + b·y + c` (the orientation times
-/// [`edge`] at the pixel center), stepped by additions; a pixel is
+/// signed edge values of [`quad_from_edges`] (`s.values()`). Each edge is
+/// the integer linear form `s(x, y) = a·x + b·y + c` (the orientation
+/// times [`edge`] at the pixel center), stepped by additions; a pixel is
 /// covered when every edge is at least its threshold there: 0 on an edge
-/// the triangle owns (top-left rule), else 1. The three edges' values at
-/// a quad's four pixels are kept side by side and stepped together, so
-/// that a wide instruction set handles them at once, and a row of quads
-/// ends as soon as one edge that only decreases to the right is below
-/// its threshold on the whole quad.
+/// the triangle owns (top-left rule), else 1. The walk keeps each edge's
+/// value minus its threshold at a quad's four pixels in a [`Quad4`]
+/// (vector registers on x86-64), so that a pixel is outside an edge
+/// exactly where that difference is negative (its sign bit), and a row
+/// of quads ends as soon as one edge that only decreases to the right is
+/// below its threshold on the whole quad.
 #[inline(always)]
 fn triangle_quads_each(
     p: &[(i64, i64); 3],
     sign: i64,
     r: PixelRect,
-    mut f: impl FnMut(i64, i64, u8, &[[i64; 4]; 3]),
+    mut f: impl FnMut(i64, i64, u8, &QuadEdges),
 ) {
     let mut a = [0i64; 3];
     let mut b = [0i64; 3];
@@ -692,7 +693,7 @@ fn triangle_quads_each(
     }
     // Pixel i of a quad from its first: (i & 1, i >> 1).
     let offset: [[i64; 4]; 3] = std::array::from_fn(|k| [0, a[k], b[k], a[k] + b[k]]);
-    let step: [i64; 3] = std::array::from_fn(|k| 2 * a[k]);
+    let step: [Quad4; 3] = std::array::from_fn(|k| Quad4::splat(2 * a[k]));
     // The edges that only decrease to the right (bit k).
     let decreasing = (0..3).fold(0u8, |m, k| m | (u8::from(a[k] <= 0) << k));
     let (x0, y0) = (r.0 & !1, r.1 & !1);
@@ -700,18 +701,19 @@ fn triangle_quads_each(
     while qy < r.3 {
         // Pixel rows of the quad row inside r: bits 0–1 and 2–3.
         let rows = (if qy >= r.1 { 0b0011u8 } else { 0 }) | (if qy + 1 < r.3 { 0b1100 } else { 0 });
-        let mut v: [[i64; 4]; 3] = std::array::from_fn(|k| {
-            let g = a[k] * x0 + b[k] * qy + c[k];
-            offset[k].map(|o| g + o)
-        });
+        let mut e = QuadEdges {
+            over: std::array::from_fn(|k| {
+                let g = a[k] * x0 + b[k] * qy + c[k] - threshold[k];
+                Quad4::new(offset[k].map(|o| g + o))
+            }),
+            threshold,
+        };
         let mut qx = x0;
         while qx < r.2 {
             let cols =
                 (if qx >= r.0 { 0b0101u8 } else { 0 }) | (if qx + 1 < r.2 { 0b1010 } else { 0 });
-            // Per edge, the pixels where it is below its threshold (where
-            // the value minus the threshold is negative).
-            let outside: [u8; 3] =
-                std::array::from_fn(|k| negative_lanes(v[k].map(|x| x - threshold[k])));
+            // Per edge, the pixels where it is below its threshold.
+            let outside = e.over.map(Quad4::negative);
             let mask = !(outside[0] | outside[1] | outside[2]) & rows & cols;
             // Outside on the whole quad: nothing covered here or further
             // right.
@@ -719,11 +721,9 @@ fn triangle_quads_each(
             if whole & decreasing != 0 {
                 break;
             }
-            f(qx, qy, mask, &v);
-            for (vk, &s) in v.iter_mut().zip(&step) {
-                for x in vk.iter_mut() {
-                    *x += s;
-                }
+            f(qx, qy, mask, &e);
+            for (o, s) in e.over.iter_mut().zip(&step) {
+                *o = o.add(*s);
             }
             qx += 2;
         }
@@ -731,26 +731,118 @@ fn triangle_quads_each(
     }
 }
 
-/// Bit `i` set where `x[i]` is negative: the sign bits, taken by the
-/// instruction that collects them where there is one.
-#[inline(always)]
-fn negative_lanes(x: [i64; 4]) -> u8 {
+/// A quad's three edge values in [`triangle_quads_each`]: each minus its
+/// threshold (`over`), and the thresholds.
+pub(crate) struct QuadEdges {
+    over: [Quad4; 3],
+    threshold: [i64; 3],
+}
+
+impl QuadEdges {
+    /// The signed edge values `s[j][k]` of edge `j` at pixel `k`.
+    #[inline(always)]
+    fn values(&self) -> [[i64; 4]; 3] {
+        std::array::from_fn(|j| self.over[j].to_array().map(|v| v + self.threshold[j]))
+    }
+}
+
+/// Four i64, one per pixel of a quad: two SSE2 registers on x86-64 (the
+/// baseline, so every variant keeps them in registers and the AVX ones
+/// may join them), an array elsewhere. Wrapping additions, as the
+/// walk's values never overflow (coordinates are below `FIXED_LIMIT`).
+#[derive(Clone, Copy)]
+struct Quad4 {
     #[cfg(target_arch = "x86_64")]
-    {
-        use std::arch::x86_64::*;
-        // SAFETY: SSE2 is part of the x86-64 baseline; the loads read the
-        // four elements of `x`, two at a time.
-        unsafe {
-            let lo = _mm_loadu_si128(x.as_ptr().cast());
-            let hi = _mm_loadu_si128(x.as_ptr().add(2).cast());
-            let m = _mm_movemask_pd(_mm_castsi128_pd(lo))
-                | (_mm_movemask_pd(_mm_castsi128_pd(hi)) << 2);
-            m as u8
+    v: [std::arch::x86_64::__m128i; 2],
+    #[cfg(not(target_arch = "x86_64"))]
+    v: [i64; 4],
+}
+
+impl Quad4 {
+    #[inline(always)]
+    fn new(x: [i64; 4]) -> Quad4 {
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::arch::x86_64::*;
+            // SAFETY: SSE2 is part of the x86-64 baseline.
+            unsafe {
+                Quad4 {
+                    v: [_mm_set_epi64x(x[1], x[0]), _mm_set_epi64x(x[3], x[2])],
+                }
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            Quad4 { v: x }
         }
     }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        (0..4).fold(0u8, |m, i| m | (u8::from(x[i] < 0) << i))
+
+    #[inline(always)]
+    fn splat(x: i64) -> Quad4 {
+        Quad4::new([x; 4])
+    }
+
+    #[inline(always)]
+    fn add(self, o: Quad4) -> Quad4 {
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::arch::x86_64::*;
+            // SAFETY: SSE2 is part of the x86-64 baseline.
+            unsafe {
+                Quad4 {
+                    v: [
+                        _mm_add_epi64(self.v[0], o.v[0]),
+                        _mm_add_epi64(self.v[1], o.v[1]),
+                    ],
+                }
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            Quad4 {
+                v: std::array::from_fn(|i| self.v[i].wrapping_add(o.v[i])),
+            }
+        }
+    }
+
+    /// Bit `i` set where element `i` is negative: the sign bits, taken
+    /// by the instruction that collects them where there is one.
+    #[inline(always)]
+    fn negative(self) -> u8 {
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::arch::x86_64::*;
+            // SAFETY: SSE2 is part of the x86-64 baseline.
+            unsafe {
+                let lo = _mm_movemask_pd(_mm_castsi128_pd(self.v[0]));
+                let hi = _mm_movemask_pd(_mm_castsi128_pd(self.v[1]));
+                (lo | (hi << 2)) as u8
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            (0..4).fold(0u8, |m, i| m | (u8::from(self.v[i] < 0) << i))
+        }
+    }
+
+    #[inline(always)]
+    fn to_array(self) -> [i64; 4] {
+        #[cfg(target_arch = "x86_64")]
+        {
+            let mut out = [0i64; 4];
+            // SAFETY: SSE2 is part of the x86-64 baseline; the stores
+            // write the four elements of `out`, two at a time.
+            unsafe {
+                use std::arch::x86_64::*;
+                _mm_storeu_si128(out.as_mut_ptr().cast(), self.v[0]);
+                _mm_storeu_si128(out.as_mut_ptr().add(2).cast(), self.v[1]);
+            }
+            out
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            self.v
+        }
     }
 }
 
@@ -800,13 +892,17 @@ mod tests {
     }
 
     #[test]
-    fn negative_lanes_are_the_sign_bits() {
+    fn quad4_keeps_values_and_sign_bits() {
         let values = [i64::MIN, -(1 << 40), -2, -1, 0, 1, 2, 1 << 40, i64::MAX];
         for a in values {
             for b in values {
-                let x = [a, b, b, a];
+                let x = [a, b, b / 3, a / 5];
+                let q = Quad4::new(x);
                 let want = (0..4).fold(0u8, |m, i| m | (u8::from(x[i] < 0) << i));
-                assert_eq!(negative_lanes(x), want, "{x:?}");
+                assert_eq!(q.negative(), want, "{x:?}");
+                assert_eq!(q.to_array(), x);
+                let sum = q.add(Quad4::splat(7)).to_array();
+                assert_eq!(sum, x.map(|v| v.wrapping_add(7)));
             }
         }
     }
