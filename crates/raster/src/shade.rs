@@ -86,12 +86,16 @@ impl Quad {
     }
 
     /// [`Quad::set`] with the interpolation inlined into the caller
-    /// ([`Shape::interp_quad_z_inline`]): the same values.
+    /// ([`Shape::interp_quad_z_inline`]): the same values; the window z
+    /// only with `window_z` (else `z` and `zf` keep what they held: see
+    /// [`FragmentStage::window_z`]).
     #[inline(always)]
-    fn set_inline(&mut self, prim: &Prim, qx: i64, qy: i64, mask: u8) {
+    fn set_inline(&mut self, prim: &Prim, qx: i64, qy: i64, mask: u8, window_z: bool) {
         (self.x, self.y, self.live) = (qx, qy, mask);
         prim.shape.interp_quad_z_inline(qx, qy, &mut self.it);
-        self.window_z(prim);
+        if window_z {
+            self.window_z(prim);
+        }
     }
 
     /// The final window z per pixel (offset, clamped) and its fixed point,
@@ -152,11 +156,12 @@ impl<'p> Entry<'p> {
         index: u32,
         (qx, qy, mask): (i64, i64, u8),
         write: u8,
+        window_z: bool,
     ) {
         self.prim = Some(prim);
         self.index = index;
         self.write = write;
-        self.quad.set_inline(prim, qx, qy, mask);
+        self.quad.set_inline(prim, qx, qy, mask, window_z);
     }
 
     /// [`Entry::finish`] inlined into the caller
@@ -379,6 +384,11 @@ pub(crate) struct FragmentStage<'a> {
     /// ([`ShaderStage::lanes_independent`]), asked once per draw.
     lanes_independent: bool,
     deferred_lanes_independent: bool,
+    /// Whether anything reads a quad's window z (`Quad::z`, `Quad::zf`):
+    /// the depth test of interpolated depths, gl_FragCoord.z or the
+    /// debugger's probe. Without them the batched and deferred loops
+    /// leave it out.
+    window_z: bool,
 }
 
 impl<'a> FragmentStage<'a> {
@@ -448,6 +458,9 @@ impl<'a> FragmentStage<'a> {
                 })
                 .collect(),
             early: layout.frag_depth.is_none(),
+            window_z: probe.is_some()
+                || layout.frag_coord.is_some()
+                || (layout.frag_depth.is_none() && state.depth_test.is_some()),
             prepared: shader.prepare(uniforms),
             deferred_prepared: deferred.as_ref().and_then(|d| d.prepare(uniforms)),
             lanes_independent: shader.lanes_independent(),
@@ -761,7 +774,7 @@ impl<'a> FragmentStage<'a> {
             for &quad in quads.iter() {
                 let Some(e) = slots.get_mut(*n) else { break };
                 // Inlined: this loop is compiled per instruction set.
-                e.set_inline(prim, p, quad, 0);
+                e.set_inline(prim, p, quad, 0, self.window_z);
                 if self.early {
                     match &sink {
                         // No stencil test (else no quick operations): the
@@ -1553,7 +1566,7 @@ impl<'a> FragmentStage<'a> {
                     prim.shape.quads_into(clip_to(prim, tile), quads);
                     for &quad in quads.iter() {
                         let Some(e) = pending.get_mut(*n) else { break };
-                        e.set_inline(prim, p, quad, 0);
+                        e.set_inline(prim, p, quad, 0, self.window_z);
                         if early {
                             self.early_rejects(fb, origin, prim, &mut e.quad);
                             if e.quad.live == 0 {
@@ -1615,7 +1628,7 @@ impl<'a> FragmentStage<'a> {
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
                     let Some(e) = pending.get_mut(*n) else { break };
                     self.prefetch_attrs(prim);
-                    e.set_inline(prim, p, (qx, qy, live), write);
+                    e.set_inline(prim, p, (qx, qy, live), write, self.window_z);
                     e.finish_inline();
                     if let Some((count, spill)) = admit(pack_colors, n, &mut used, write) {
                         self.color_pass(&pass, fb, batch, &pending[..count])?;
