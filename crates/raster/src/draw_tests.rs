@@ -271,6 +271,62 @@ fn perspective_correct_varyings() {
 }
 
 #[test]
+fn strips_give_the_bytes_of_quads() {
+    // Tilted, perspective, blended triangles across tiles: rows of whole
+    // quads go through strips; the bytes must be those of the quads one
+    // by one, for every instruction set.
+    let (w, h) = (150, 90);
+    let mut v = verts(
+        &[
+            [-0.9, -0.95],
+            [0.97, -0.6],
+            [0.8, 0.93],
+            [-0.9, -0.95],
+            [0.8, 0.93],
+            [-0.7, 0.6],
+        ],
+        &[RED, GREEN, BLUE, RED, BLUE, [0.3, 0.6, 0.9, 0.5]],
+    );
+    for (i, p) in v.pos.iter_mut().enumerate() {
+        let w = 1.0 + 0.7 * i as f32;
+        *p = [p[0] * w, p[1] * w, 0.25 * w, w];
+    }
+    // gl_FragColor = gl_Color, reading nothing else (gl_FragCoord would
+    // rule strips out).
+    let fs = Stage {
+        iface: iface(
+            vec![slot("gl_Color", 0, 4)],
+            vec![slot("gl_FragColor", 0, 4)],
+        ),
+        f: Box::new(|b| {
+            copy(b, 0, 0, 4);
+            Ok(())
+        }),
+    };
+    let blended = Blend {
+        src_rgb: BlendFactor::SrcAlpha,
+        dst_rgb: BlendFactor::OneMinusSrcAlpha,
+        ..Blend::default()
+    };
+    for blend in [None, Some(blended)] {
+        let mut st = state(w as i32, h as i32);
+        st.blend = blend;
+        let draw = || {
+            let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, false, false);
+            fb.clear_color(&[0], [0.2, 0.4, 0.6, 0.8], [true; 4], None);
+            run(&mut fb, &st, &fs, Mode::Triangles, &v).unwrap();
+            fb.read_pixels_u8(0, 0, 0, w, h)
+        };
+        for isa in crate::simd::Isa::all_supported() {
+            let (with, without) =
+                crate::simd::with_isa(isa, || (draw(), crate::shade::without_strips(draw)));
+            assert_eq!(with, without, "{isa:?}, {blend:?}");
+            assert!(with.iter().filter(|p| **p != [51, 102, 153, 204]).count() > w as usize * 30);
+        }
+    }
+}
+
+#[test]
 fn flat_shading_uses_the_provoking_vertex() {
     let (w, h) = (8, 8);
     let mut st = state(w as i32, h as i32);

@@ -479,6 +479,61 @@ impl Shape {
         }
     }
 
+    /// The perspective-correct weights of a row of four quads of a
+    /// triangle, (qx + 2i, qy) for i in 0..4, as 16 lanes (lane 4i + k:
+    /// pixel k of quad i): `w[j][lane]` is vertex j's weight, the bits
+    /// [`Shape::interp_quad_z`] and [`Shape::interp_quad_finish`] give
+    /// each quad (the same integer edge values, the same f64 operations
+    /// per lane), computed a lane per vector element (inlined: compiled
+    /// for the caller's instruction set). `None` for other shapes.
+    #[inline(always)]
+    pub fn strip_weights(&self, qx: i64, qy: i64) -> Option<[[f64; 16]; 3]> {
+        let Shape::Triangle {
+            p,
+            sign,
+            inv_area2,
+            v,
+        } = self
+        else {
+            return None;
+        };
+        let (cx, cy) = (qx * ONE + HALF, qy * ONE + HALF);
+        // Lane l's pixel offset from the first quad's first pixel.
+        let mut ox = [0i64; 16];
+        let mut oy = [0i64; 16];
+        for l in 0..16 {
+            ox[l] = 2 * (l as i64 / 4) + (l as i64 & 1);
+            oy[l] = (l as i64 >> 1) & 1;
+        }
+        let mut b = [[0.0f64; 16]; 3];
+        for (j, bj) in b.iter_mut().enumerate() {
+            let (pa, pb) = (p[(j + 1) % 3], p[(j + 2) % 3]);
+            let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
+            // `triangle_quad`'s e0 and steps: exact integers.
+            let e0 = ex * (cy - pa.1) - ey * (cx - pa.0);
+            let (dx, dy) = (-ey * ONE, ex * ONE);
+            for l in 0..16 {
+                let e = e0 + ox[l] * dx + oy[l] * dy;
+                bj[l] = (sign * e) as f64 * inv_area2;
+            }
+        }
+        let mut w = [[0.0f64; 16]; 3];
+        for l in 0..16 {
+            // `triangle_weights`.
+            let pw = [
+                b[0][l] * v[0].inv_w,
+                b[1][l] * v[1].inv_w,
+                b[2][l] * v[2].inv_w,
+            ];
+            let inv_w = pw[0] + pw[1] + pw[2];
+            let rw = 1.0 / inv_w;
+            for j in 0..3 {
+                w[j][l] = pw[j] * rw;
+            }
+        }
+        Some(w)
+    }
+
     /// [`Shape::interp_quad_finish`] inlined into the caller (see
     /// [`Shape::interp_quad_z_inline`]).
     #[inline(always)]
@@ -1140,6 +1195,50 @@ mod tests {
             checked += 1;
         }
         assert!(checked > 2500);
+    }
+
+    #[test]
+    fn strip_weights_are_each_quads_weights() {
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % 1_000_000) as f64 / 1_000_000.0
+        };
+        let mut checked = 0;
+        for i in 0..3000 {
+            let range = [4.0, 60.0, 3000.0][i % 3];
+            let v = [0; 3].map(|_| WinVertex {
+                x: next() * range - 5.0,
+                y: next() * range - 5.0,
+                z: next(),
+                inv_w: 0.01 + next() * 2.0,
+            });
+            let Some(t) = Shape::triangle(v) else {
+                continue;
+            };
+            let (qx, qy) = ((next() * range) as i64 & !1, (next() * range) as i64 & !1);
+            let Some(w) = t.strip_weights(qx, qy) else {
+                panic!("a triangle has strips");
+            };
+            for q in 0..4 {
+                let want = t.interp_quad(qx + 2 * q as i64, qy);
+                for k in 0..4 {
+                    for (j, (wj, want)) in w.iter().zip(&want.weights).enumerate() {
+                        assert_eq!(
+                            wj[4 * q + k].to_bits(),
+                            want[k].to_bits(),
+                            "{v:?} at {qx},{qy}: quad {q}, pixel {k}, vertex {j}"
+                        );
+                    }
+                }
+            }
+            checked += 1;
+        }
+        assert!(checked > 2500);
+        let p = Shape::point(wv(3.0, 3.0), 2.0, false);
+        assert!(p.strip_weights(0, 0).is_none());
     }
 
     #[test]

@@ -389,6 +389,12 @@ pub(crate) struct FragmentStage<'a> {
     /// debugger's probe. Without them the batched and deferred loops
     /// leave it out.
     window_z: bool,
+    /// Whether [`FragmentStage::shade_batched`] may run rows of four
+    /// whole quads of a triangle as strips ([`FragmentStage::shade_strip`]):
+    /// nothing reads a quad's window z, 1/w or pixel position (no
+    /// gl_FragCoord, gl_FrontFacing or gl_PointCoord), and every input
+    /// is interpolated or flat.
+    strips: bool,
 }
 
 impl<'a> FragmentStage<'a> {
@@ -433,6 +439,16 @@ impl<'a> FragmentStage<'a> {
                 .collect()
         };
         let fills = plan(shader);
+        let window_z = probe.is_some()
+            || layout.frag_coord.is_some()
+            || (layout.frag_depth.is_none() && state.depth_test.is_some());
+        let strips = strips_allowed()
+            && !window_z
+            && layout.front_facing.is_none()
+            && layout.point_coord.is_none()
+            && fills
+                .iter()
+                .all(|f| matches!(f.kind, FillKind::Interp | FillKind::Constant));
         let depth_fills = match &deferred {
             // Only what both read (the slice reads a subset of the inputs).
             Some(d) => plan(d.as_ref())
@@ -458,9 +474,8 @@ impl<'a> FragmentStage<'a> {
                 })
                 .collect(),
             early: layout.frag_depth.is_none(),
-            window_z: probe.is_some()
-                || layout.frag_coord.is_some()
-                || (layout.frag_depth.is_none() && state.depth_test.is_some()),
+            window_z,
+            strips,
             prepared: shader.prepare(uniforms),
             deferred_prepared: deferred.as_ref().and_then(|d| d.prepare(uniforms)),
             lanes_independent: shader.lanes_independent(),
@@ -771,7 +786,24 @@ impl<'a> FragmentStage<'a> {
             };
             self.prefetch_ahead(prims, bin, i);
             prim.shape.quads_into(clip_to(prim, tile), quads);
-            for &quad in quads.iter() {
+            let mut at = 0;
+            while let Some(&quad) = quads.get(at) {
+                at += 1;
+                // Four whole quads side by side starting a batch: a strip.
+                if let (true, 0, Some(row), Sink::Quick(target, o)) =
+                    (self.strips, *n, quads.get(at - 1..at + 3), &mut sink)
+                {
+                    let (qx, qy, _) = quad;
+                    let whole = row
+                        .iter()
+                        .enumerate()
+                        .all(|(k, &(x, y, m))| m == 0xf && y == qy && x == qx + 2 * k as i64);
+                    if let (true, Some(w)) = (whole, prim.shape.strip_weights(qx, qy)) {
+                        self.shade_strip(target, *o, batch, slots, prim, p, (qx, qy), &w)?;
+                        at += 3;
+                        continue;
+                    }
+                }
                 let Some(e) = slots.get_mut(*n) else { break };
                 // Inlined: this loop is compiled per instruction set.
                 e.set_inline(prim, p, quad, 0, self.window_z);
@@ -801,6 +833,63 @@ impl<'a> FragmentStage<'a> {
             self.flush_sink(&mut sink, origin, batch, &slots[..*n])?;
             *n = 0;
         }
+        Ok(())
+    }
+
+    /// A strip of [`FragmentStage::shade_batched`]: the four whole quads
+    /// (qx + 2i, qy) of triangle `prim` (index `index`) as one batch, the
+    /// inputs interpolated with `w` ([`Shape::strip_weights`], the weights
+    /// [`FragmentStage::fill`] would read from the quads' entries) in the
+    /// same f64 arithmetic, then the stage and the quick write: the bytes
+    /// of the quad-at-a-time path, without its entries (only position and
+    /// coverage are set, for the write; see [`FragmentStage::strips`]).
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn shade_strip<'p>(
+        &self,
+        target: &mut QuickTarget,
+        o: usize,
+        batch: &mut Batch,
+        slots: &mut [Entry<'p>; LANES / 4],
+        prim: &'p Prim,
+        index: u32,
+        (qx, qy): (i64, i64),
+        w: &[[f64; LANES]; 3],
+    ) -> Result<(), ExecError> {
+        for c in batch.outputs.iter_mut() {
+            *c = [0.0; LANES];
+        }
+        batch.active = quads_mask(LANES / 4);
+        batch.helper = 0;
+        batch.discarded = 0;
+        let links = self.layout.links.len();
+        let attrs = self.prim_attrs(prim);
+        let row = |j: usize| attrs.get(j * links..).unwrap_or(&[]);
+        let (a0, a1, a2) = (row(0), row(1), row(2));
+        let at = |a: &[f32], li: usize| a.get(li).copied().unwrap_or(0.0);
+        for l in &self.fills {
+            let Some(lanes) = batch.inputs.get_mut(l.offset) else {
+                continue;
+            };
+            let v0 = at(a0, l.li);
+            if let FillKind::Constant = l.kind {
+                *lanes = [v0; LANES];
+                continue;
+            }
+            // `triangle_values`, a lane per element.
+            let v = [v0, at(a1, l.li), at(a2, l.li)].map(f64::from);
+            for (k, x) in lanes.iter_mut().enumerate() {
+                *x = (0.0 + w[0][k] * v[0] + w[1][k] * v[1] + w[2][k] * v[2]) as f32;
+            }
+        }
+        self.run_shader(batch)?;
+        for (k, e) in slots.iter_mut().enumerate() {
+            e.prim = Some(prim);
+            e.index = index;
+            e.write = 0;
+            (e.quad.x, e.quad.y, e.quad.live) = (qx + 2 * k as i64, qy, 0xf);
+        }
+        self.write_quick(target, o, batch, &slots[..]);
         Ok(())
     }
 
@@ -1645,6 +1734,32 @@ impl<'a> FragmentStage<'a> {
         }
         Ok(())
     }
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Tests: whether draws on this thread may use strips.
+    static NO_STRIPS: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Whether [`FragmentStage::strips`] may be set (tests turn them off to
+/// compare).
+fn strips_allowed() -> bool {
+    #[cfg(test)]
+    if NO_STRIPS.with(|c| c.get()) {
+        return false;
+    }
+    true
+}
+
+/// Tests: runs `f` without strips on this thread (draws on one thread run
+/// there).
+#[cfg(test)]
+pub(crate) fn without_strips<T>(f: impl FnOnce() -> T) -> T {
+    let old = NO_STRIPS.with(|c| c.replace(true));
+    let out = f();
+    NO_STRIPS.with(|c| c.set(old));
+    out
 }
 
 /// Asks the CPU to bring the cache lines of `data` closer (a hint with
