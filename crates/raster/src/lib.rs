@@ -52,16 +52,22 @@
 //! outputs are kept by the [`Workers`] for its next draws (up to 256 MiB),
 //! so a steady stream of draws does not pay page faults on fresh memory.
 //! Triangle coverage steps integer edge forms (exactly the edge function
-//! values, four pixels and three edges per 2×2 quad, a row ending at the
-//! first quad an edge rules out for the rest of the row) into a buffer
-//! reused per tile; interpolation is computed per quad with the same f64
-//! operations per pixel as before (window z first, the perspective
-//! weights only for quads early depth rejection keeps), laid out per
-//! vertex so that filling a batch's varyings is straight vector code; a
-//! batch's quads are built in place in four per-tile slots, and the
-//! varyings and set-up of primitives a few ahead in the tile's bin (and
-//! the pointers to those further ahead) are prefetched while one is
-//! rasterized.
+//! values, four pixels and three edges per 2×2 quad, kept in vector
+//! registers, a row ending at the first quad an edge rules out for the
+//! rest of the row) into a buffer reused per tile; interpolation is
+//! computed per quad with the same f64 operations per pixel as before
+//! (window z first, and only when something reads it: a depth test of
+//! interpolated depths, gl_FragCoord or the debugger's probe; the
+//! perspective weights only for quads early depth rejection keeps), laid
+//! out per vertex so that filling a batch's varyings is straight vector
+//! code; a batch's quads are built in place in four per-tile slots, and
+//! the varyings and set-up of primitives a few ahead in the tile's bin
+//! (and the pointers to those further ahead) are prefetched while one is
+//! rasterized. When nothing reads a quad's window z, 1/w or pixel
+//! position, four whole quads side by side of one triangle (a *strip*)
+//! make a batch without per-quad entries: their weights are computed a
+//! lane per vector element (`Shape::strip_weights`, each quad's bits) and
+//! the inputs interpolated straight into the batch.
 //!
 //! Filling a batch's inputs and a quad's interpolation are compiled for
 //! the baseline target, AVX2 and AVX-512 and picked at run time (so is
