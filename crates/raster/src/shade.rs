@@ -1717,7 +1717,10 @@ impl<'a> FragmentStage<'a> {
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
                     let Some(e) = pending.get_mut(*n) else { break };
                     self.prefetch_attrs(prim);
-                    e.set_inline(prim, p, (qx, qy, live), write, self.window_z);
+                    // The depth tests are behind: the window z only for
+                    // gl_FragCoord or the probe.
+                    let z = self.layout.frag_coord.is_some() || self.probe.is_some();
+                    e.set_inline(prim, p, (qx, qy, live), write, z);
                     e.finish_inline();
                     if let Some((count, spill)) = admit(pack_colors, n, &mut used, write) {
                         self.color_pass(&pass, fb, batch, &pending[..count])?;
