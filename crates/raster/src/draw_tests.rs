@@ -121,7 +121,7 @@ fn depth_writing_fs() -> Stage {
     }
 }
 
-#[derive(Default)]
+#[derive(Clone, Default)]
 struct Verts {
     pos: Vec<[f32; 4]>,
     color: Vec<[f32; 4]>,
@@ -308,19 +308,37 @@ fn strips_give_the_bytes_of_quads() {
         dst_rgb: BlendFactor::OneMinusSrcAlpha,
         ..Blend::default()
     };
-    for blend in [None, Some(blended)] {
+    // A second pair of triangles crossing the first in depth, for the
+    // depth-tested runs.
+    let mut crossing = v.clone();
+    for p in &mut crossing.pos {
+        *p = [-p[1], p[0], 0.5 * p[3] - p[2], p[3]];
+    }
+    for (blend, depth) in [
+        (None, false),
+        (Some(blended), false),
+        (None, true),
+        (Some(blended), true),
+    ] {
         let mut st = state(w as i32, h as i32);
         st.blend = blend;
+        if depth {
+            st.depth_test = Some(CompareFunc::Less);
+        }
         let draw = || {
-            let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, false, false);
+            let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, depth, false);
             fb.clear_color(&[0], [0.2, 0.4, 0.6, 0.8], [true; 4], None);
+            fb.clear_depth(1.0, true, None);
             run(&mut fb, &st, &fs, Mode::Triangles, &v).unwrap();
+            if depth {
+                run(&mut fb, &st, &fs, Mode::Triangles, &crossing).unwrap();
+            }
             fb.read_pixels_u8(0, 0, 0, w, h)
         };
         for isa in crate::simd::Isa::all_supported() {
             let (with, without) =
                 crate::simd::with_isa(isa, || (draw(), crate::shade::without_strips(draw)));
-            assert_eq!(with, without, "{isa:?}, {blend:?}");
+            assert_eq!(with, without, "{isa:?}, {blend:?}, depth {depth}");
             assert!(with.iter().filter(|p| **p != [51, 102, 153, 204]).count() > w as usize * 30);
         }
     }

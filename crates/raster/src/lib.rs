@@ -63,11 +63,12 @@
 //! code; a batch's quads are built in place in four per-tile slots, and
 //! the varyings and set-up of primitives a few ahead in the tile's bin
 //! (and the pointers to those further ahead) are prefetched while one is
-//! rasterized. When nothing reads a quad's window z, 1/w or pixel
-//! position, four whole quads side by side of one triangle (a *strip*)
-//! make a batch without per-quad entries: their weights are computed a
-//! lane per vector element (`Shape::strip_weights`, each quad's bits) and
-//! the inputs interpolated straight into the batch.
+//! rasterized. When nothing reads a quad's 1/w or pixel position, four
+//! whole quads side by side of one triangle (a *strip*) make a batch
+//! without per-quad entries: their weights and window z are computed a
+//! lane per vector element (`Shape::strip_weights`, each quad's bits),
+//! the early depth test drops pixels as for single quads, and the inputs
+//! are interpolated straight into the batch.
 //!
 //! Filling a batch's inputs and a quad's interpolation are compiled for
 //! the baseline target, AVX2 and AVX-512 and picked at run time (so is

@@ -479,15 +479,16 @@ impl Shape {
         }
     }
 
-    /// The perspective-correct weights of a row of four quads of a
-    /// triangle, (qx + 2i, qy) for i in 0..4, as 16 lanes (lane 4i + k:
-    /// pixel k of quad i): `w[j][lane]` is vertex j's weight, the bits
-    /// [`Shape::interp_quad_z`] and [`Shape::interp_quad_finish`] give
-    /// each quad (the same integer edge values, the same f64 operations
-    /// per lane), computed a lane per vector element (inlined: compiled
-    /// for the caller's instruction set). `None` for other shapes.
+    /// The perspective-correct weights and the interpolated z of a row
+    /// of four quads of a triangle, (qx + 2i, qy) for i in 0..4, as 16
+    /// lanes (lane 4i + k: pixel k of quad i): `w[j][lane]` is vertex j's
+    /// weight, the bits [`Shape::interp_quad_z`] and
+    /// [`Shape::interp_quad_finish`] give each quad (the same integer edge
+    /// values, the same f64 operations per lane), computed a lane per
+    /// vector element (inlined: compiled for the caller's instruction
+    /// set). `None` for other shapes.
     #[inline(always)]
-    pub fn strip_weights(&self, qx: i64, qy: i64) -> Option<[[f64; 16]; 3]> {
+    pub fn strip_weights(&self, qx: i64, qy: i64) -> Option<([[f64; 16]; 3], [f64; 16])> {
         let Shape::Triangle {
             p,
             sign,
@@ -517,6 +518,11 @@ impl Shape {
                 bj[l] = (sign * e) as f64 * inv_area2;
             }
         }
+        let mut z = [0.0f64; 16];
+        for l in 0..16 {
+            // `quad_from_edges`.
+            z[l] = b[0][l] * v[0].z + b[1][l] * v[1].z + b[2][l] * v[2].z;
+        }
         let mut w = [[0.0f64; 16]; 3];
         for l in 0..16 {
             // `triangle_weights`.
@@ -531,7 +537,7 @@ impl Shape {
                 w[j][l] = pw[j] * rw;
             }
         }
-        Some(w)
+        Some((w, z))
     }
 
     /// [`Shape::interp_quad_finish`] inlined into the caller (see
@@ -1219,12 +1225,13 @@ mod tests {
                 continue;
             };
             let (qx, qy) = ((next() * range) as i64 & !1, (next() * range) as i64 & !1);
-            let Some(w) = t.strip_weights(qx, qy) else {
+            let Some((w, z)) = t.strip_weights(qx, qy) else {
                 panic!("a triangle has strips");
             };
             for q in 0..4 {
                 let want = t.interp_quad(qx + 2 * q as i64, qy);
                 for k in 0..4 {
+                    assert_eq!(z[4 * q + k].to_bits(), want.z[k].to_bits());
                     for (j, (wj, want)) in w.iter().zip(&want.weights).enumerate() {
                         assert_eq!(
                             wj[4 * q + k].to_bits(),

@@ -391,9 +391,9 @@ pub(crate) struct FragmentStage<'a> {
     window_z: bool,
     /// Whether [`FragmentStage::shade_batched`] may run rows of four
     /// whole quads of a triangle as strips ([`FragmentStage::shade_strip`]):
-    /// nothing reads a quad's window z, 1/w or pixel position (no
-    /// gl_FragCoord, gl_FrontFacing or gl_PointCoord), and every input
-    /// is interpolated or flat.
+    /// nothing reads a quad's 1/w or pixel position (no gl_FragCoord,
+    /// gl_FrontFacing or gl_PointCoord, no probe), and every input is
+    /// interpolated or flat.
     strips: bool,
 }
 
@@ -443,7 +443,8 @@ impl<'a> FragmentStage<'a> {
             || layout.frag_coord.is_some()
             || (layout.frag_depth.is_none() && state.depth_test.is_some());
         let strips = strips_allowed()
-            && !window_z
+            && probe.is_none()
+            && layout.frag_coord.is_none()
             && layout.front_facing.is_none()
             && layout.point_coord.is_none()
             && fills
@@ -798,8 +799,8 @@ impl<'a> FragmentStage<'a> {
                         .iter()
                         .enumerate()
                         .all(|(k, &(x, y, m))| m == 0xf && y == qy && x == qx + 2 * k as i64);
-                    if let (true, Some(w)) = (whole, prim.shape.strip_weights(qx, qy)) {
-                        self.shade_strip(target, *o, batch, slots, prim, p, (qx, qy), &w)?;
+                    if let (true, Some((w, z))) = (whole, prim.shape.strip_weights(qx, qy)) {
+                        self.shade_strip(target, *o, batch, slots, prim, p, (qx, qy), &w, &z)?;
                         at += 3;
                         continue;
                     }
@@ -841,8 +842,12 @@ impl<'a> FragmentStage<'a> {
     /// inputs interpolated with `w` ([`Shape::strip_weights`], the weights
     /// [`FragmentStage::fill`] would read from the quads' entries) in the
     /// same f64 arithmetic, then the stage and the quick write: the bytes
-    /// of the quad-at-a-time path, without its entries (only position and
-    /// coverage are set, for the write; see [`FragmentStage::strips`]).
+    /// of the quad-at-a-time path, without its entries (only position,
+    /// coverage and window z are set, for the early depth test and the
+    /// write; see [`FragmentStage::strips`]). The early depth test drops
+    /// the pixels of each quad as that path does; a dropped pixel's lane
+    /// runs as a helper (its neighbours' results do not depend on it) and
+    /// a quad without pixels is not written.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn shade_strip<'p>(
@@ -855,12 +860,32 @@ impl<'a> FragmentStage<'a> {
         index: u32,
         (qx, qy): (i64, i64),
         w: &[[f64; LANES]; 3],
+        z: &[f64; LANES],
     ) -> Result<(), ExecError> {
+        let mut live_mask = 0u32;
+        for (k, e) in slots.iter_mut().enumerate() {
+            e.prim = Some(prim);
+            e.index = index;
+            e.write = 0;
+            let q = &mut e.quad;
+            (q.x, q.y, q.live) = (qx + 2 * k as i64, qy, 0xf);
+            if self.window_z {
+                let iz = [z[4 * k], z[4 * k + 1], z[4 * k + 2], z[4 * k + 3]];
+                (q.z, q.zf) = window_depths(&iz, prim.z_offset);
+                if self.early {
+                    q.live = target.depth_live((q.x, q.y), q.live, q.zf);
+                }
+            }
+            live_mask |= (q.live as u32) << (4 * k);
+        }
+        if live_mask == 0 {
+            return Ok(());
+        }
         for c in batch.outputs.iter_mut() {
             *c = [0.0; LANES];
         }
         batch.active = quads_mask(LANES / 4);
-        batch.helper = 0;
+        batch.helper = batch.active & !live_mask;
         batch.discarded = 0;
         let links = self.layout.links.len();
         let attrs = self.prim_attrs(prim);
@@ -883,12 +908,6 @@ impl<'a> FragmentStage<'a> {
             }
         }
         self.run_shader(batch)?;
-        for (k, e) in slots.iter_mut().enumerate() {
-            e.prim = Some(prim);
-            e.index = index;
-            e.write = 0;
-            (e.quad.x, e.quad.y, e.quad.live) = (qx + 2 * k as i64, qy, 0xf);
-        }
         self.write_quick(target, o, batch, &slots[..]);
         Ok(())
     }
