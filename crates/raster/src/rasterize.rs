@@ -1157,17 +1157,19 @@ mod tests {
         }
     }
 
-    #[test]
-    fn quad_interpolation_variants_give_the_same_bits() {
-        let mut state = 0x2545_F491_4F6C_DD1Du64;
+    /// `count` random triangles (a few pixels to thousands across, varied
+    /// z and 1/w; those without area left out), each with a quad position
+    /// within its range: (vertices, triangle, qx, qy).
+    fn random_triangles(seed: u64, count: usize) -> Vec<([WinVertex; 3], Shape, i64, i64)> {
+        let mut state = seed;
         let mut next = move || {
             state ^= state << 13;
             state ^= state >> 7;
             state ^= state << 17;
             (state % 1_000_000) as f64 / 1_000_000.0
         };
-        let mut checked = 0;
-        for i in 0..3000 {
+        let mut out = Vec::new();
+        for i in 0..count {
             let range = [4.0, 60.0, 3000.0][i % 3];
             let v = [0; 3].map(|_| WinVertex {
                 x: next() * range - 5.0,
@@ -1179,6 +1181,16 @@ mod tests {
                 continue;
             };
             let (qx, qy) = ((next() * range) as i64 & !1, (next() * range) as i64 & !1);
+            out.push((v, t, qx, qy));
+        }
+        out
+    }
+
+    #[test]
+    fn quad_interpolation_variants_give_the_same_bits() {
+        let triangles = random_triangles(0x2545_F491_4F6C_DD1D, 3000);
+        assert!(triangles.len() > 2500);
+        for (v, t, qx, qy) in triangles {
             let bits = |q: &QuadInterp| {
                 let mut out: Vec<u64> = q.z.iter().chain(&q.inv_w).map(|x| x.to_bits()).collect();
                 out.extend(q.weights.iter().flatten().map(|x| x.to_bits()));
@@ -1198,33 +1210,14 @@ mod tests {
                 t.interp_quad_isa(isa, qx, qy, &mut got);
                 assert_eq!(bits(&want), bits(&got), "{isa:?} {v:?} at {qx},{qy}");
             }
-            checked += 1;
         }
-        assert!(checked > 2500);
     }
 
     #[test]
     fn strip_weights_are_each_quads_weights() {
-        let mut state = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state % 1_000_000) as f64 / 1_000_000.0
-        };
-        let mut checked = 0;
-        for i in 0..3000 {
-            let range = [4.0, 60.0, 3000.0][i % 3];
-            let v = [0; 3].map(|_| WinVertex {
-                x: next() * range - 5.0,
-                y: next() * range - 5.0,
-                z: next(),
-                inv_w: 0.01 + next() * 2.0,
-            });
-            let Some(t) = Shape::triangle(v) else {
-                continue;
-            };
-            let (qx, qy) = ((next() * range) as i64 & !1, (next() * range) as i64 & !1);
+        let triangles = random_triangles(0x9E37_79B9_7F4A_7C15, 3000);
+        assert!(triangles.len() > 2500);
+        for (v, t, qx, qy) in triangles {
             let Some((w, z)) = t.strip_weights(qx, qy) else {
                 panic!("a triangle has strips");
             };
@@ -1241,9 +1234,7 @@ mod tests {
                     }
                 }
             }
-            checked += 1;
         }
-        assert!(checked > 2500);
         let p = Shape::point(wv(3.0, 3.0), 2.0, false);
         assert!(p.strip_weights(0, 0).is_none());
     }
