@@ -506,6 +506,57 @@ impl QuickTarget<'_> {
         (pass, index, false)
     }
 
+    /// The colour write of a strip's 16 fragments, all passing (lane
+    /// `4q + k`: pixel `(x + 2q + (k & 1), y + (k >> 1))`, colour
+    /// `rgba[c][lane]`), on its two rows of eight pixels at once in
+    /// AVX-512 registers: the bytes [`QuickTarget::write`] gives each
+    /// fragment (the same operations per pixel, a pixel per element).
+    /// False, with nothing done, unless `isa` is AVX-512, the strip lies
+    /// inside the target and nothing but the colour write applies (no
+    /// depth test, no scissor; no blending or SRC_ALPHA /
+    /// ONE_MINUS_SRC_ALPHA).
+    #[inline(always)]
+    pub fn write_strip(
+        &mut self,
+        isa: crate::simd::Isa,
+        (x, y): (i64, i64),
+        rgba: [&[f32; 16]; 4],
+    ) -> bool {
+        if isa != crate::simd::Isa::Avx512 || self.depth.is_some() || self.scissor.is_some() {
+            return false;
+        }
+        let Some((v, blend)) = &mut self.color else {
+            return false;
+        };
+        let over = match blend {
+            QuickBlend::Off => false,
+            QuickBlend::Over => true,
+            QuickBlend::Other(_) => return false,
+        };
+        let (lx, ly) = (x - self.origin.0 as i64, y - self.origin.1 as i64);
+        let w = self.width as i64;
+        if lx < 0 || ly < 0 || lx + 8 > w || ly + 2 > self.height as i64 {
+            return false;
+        }
+        let i0 = (ly * w + lx) as usize;
+        let Some(rows) = v.get_mut(i0..i0 + w as usize + 8) else {
+            return false;
+        };
+        #[cfg(target_arch = "x86_64")]
+        {
+            // SAFETY: `isa` is only Avx512 when the CPU has AVX-512 F
+            // (`simd::detect`); `rows` holds both rows of eight pixels.
+            unsafe { write_strip_avx512(rows, w as usize, rgba, over) };
+            *self.passed = self.passed.wrapping_add(16);
+            true
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            let _ = (rows, rgba, over);
+            false
+        }
+    }
+
     /// [`QuickTarget::write_rgba8`] of `c[k]` at `index[k]` for the lanes
     /// `pass`, after [`QuickTarget::test_quad`] found the quad inside
     /// (`inside`: then `index` holds two rows of two adjacent pixels, as
@@ -635,6 +686,69 @@ unsafe fn write_sse2(src: [f32; 4], dst: [u8; 4], over: bool) -> [u8; 4] {
         let k = _mm_cvttps_epi32(y);
         let k = _mm_packus_epi16(_mm_packs_epi32(k, k), k);
         _mm_cvtsi128_si32(k).to_le_bytes()
+    }
+}
+
+/// [`QuickTarget::write_strip`]'s pixels: rows `rows[..8]` and
+/// `rows[w..w + 8]`, pixel i (row i / 8, column i % 8) from the fragment
+/// of lane 4(col / 2) + 2 row + col % 2, with [`write_sse2`]'s operations
+/// (the clamps as `max(x, 0)` then `min(_, 1)`, the stored value over
+/// 255 by division, separate products and sums).
+///
+/// # Safety
+/// The CPU must have AVX-512 F; `rows` must hold `w + 8` pixels, `w ≥ 8`.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx2")]
+unsafe fn write_strip_avx512(rows: &mut [[u8; 4]], w: usize, rgba: [&[f32; 16]; 4], over: bool) {
+    use std::arch::x86_64::*;
+    debug_assert!(w >= 8 && rows.len() >= w + 8);
+    // SAFETY (of the loads and stores): eight pixels (32 bytes) at
+    // `rows[0]` and at `rows[w]`, inside `rows` (the caller's contract);
+    // 16 floats of each `rgba[c]`.
+    unsafe {
+        let base = rows.as_mut_ptr();
+        let lo = _mm256_loadu_si256(base.cast());
+        let hi = _mm256_loadu_si256(base.add(w).cast());
+        let dst = _mm512_inserti64x4::<1>(_mm512_castsi256_si512(lo), hi);
+        let lane = _mm512_setr_epi32(0, 1, 4, 5, 8, 9, 12, 13, 2, 3, 6, 7, 10, 11, 14, 15);
+        let (zero, one) = (_mm512_setzero_ps(), _mm512_set1_ps(1.0));
+        let clamp = |x: __m512| _mm512_min_ps(_mm512_max_ps(x, zero), one);
+        let mut s = [zero; 4];
+        for (sc, src) in s.iter_mut().zip(rgba) {
+            *sc = clamp(_mm512_permutexvar_ps(lane, _mm512_loadu_ps(src.as_ptr())));
+        }
+        let mut out = s;
+        if over {
+            let fs = s[3];
+            let fd = _mm512_sub_ps(one, fs);
+            let k255 = _mm512_set1_ps(255.0);
+            let byte = _mm512_set1_epi32(255);
+            for (c, oc) in out.iter_mut().enumerate() {
+                let k = match c {
+                    0 => _mm512_and_si512(dst, byte),
+                    1 => _mm512_and_si512(_mm512_srli_epi32::<8>(dst), byte),
+                    2 => _mm512_and_si512(_mm512_srli_epi32::<16>(dst), byte),
+                    _ => _mm512_srli_epi32::<24>(dst),
+                };
+                let d = _mm512_div_ps(_mm512_cvtepi32_ps(k), k255);
+                *oc = _mm512_add_ps(_mm512_mul_ps(*oc, fs), _mm512_mul_ps(d, fd));
+            }
+        }
+        let (k255, half) = (_mm512_set1_ps(255.0), _mm512_set1_ps(0.5));
+        let mut word = _mm512_setzero_si512();
+        for (c, oc) in out.iter().enumerate() {
+            // In [0.5, 255.5]: the truncation fits.
+            let k = _mm512_cvttps_epi32(_mm512_add_ps(_mm512_mul_ps(clamp(*oc), k255), half));
+            let k = match c {
+                0 => k,
+                1 => _mm512_slli_epi32::<8>(k),
+                2 => _mm512_slli_epi32::<16>(k),
+                _ => _mm512_slli_epi32::<24>(k),
+            };
+            word = _mm512_or_si512(word, k);
+        }
+        _mm256_storeu_si256(base.cast(), _mm512_castsi512_si256(word));
+        _mm256_storeu_si256(base.add(w).cast(), _mm512_extracti64x4_epi64::<1>(word));
     }
 }
 
@@ -1068,6 +1182,62 @@ mod tests {
                 let fast = blend_unit(&b, s, d).map(f32::to_bits);
                 let general = blend_color(&b, s, d).map(f32::to_bits);
                 assert_eq!(fast, general, "{src:?}/{dst:?} {s:?} {d:?}");
+            }
+        }
+    }
+
+    #[test]
+    #[cfg(target_arch = "x86_64")]
+    fn strip_writes_match_the_pixel_writes() {
+        if !crate::simd::Isa::Avx512.supported() {
+            return;
+        }
+        let special = [
+            f32::NAN,
+            -0.0,
+            0.0,
+            -1.0,
+            2.0,
+            0.5,
+            f32::INFINITY,
+            1e-40,
+            0.999,
+            1.0,
+        ];
+        let mut seed = 0x1234_5678u32;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed
+        };
+        let w = 11;
+        for round in 0..200 {
+            let mut rgba = [[0.0f32; 16]; 4];
+            for (c, lanes) in rgba.iter_mut().enumerate() {
+                for (l, x) in lanes.iter_mut().enumerate() {
+                    let r = next();
+                    *x = if (round + l + c) % 3 == 0 {
+                        special[r as usize % special.len()]
+                    } else {
+                        (r % 1000) as f32 / 997.0
+                    };
+                }
+            }
+            let rows: Vec<[u8; 4]> = (0..w + 8).map(|_| next().to_le_bytes()).collect();
+            for over in [false, true] {
+                let mut got = rows.clone();
+                let [r, g, b, a] = &rgba;
+                // SAFETY: AVX-512 F checked above; `got` holds w + 8 pixels.
+                unsafe { write_strip_avx512(&mut got, w, [r, g, b, a], over) };
+                let mut want = rows.clone();
+                for (l, src) in (0..16).map(|l| (l, rgba.map(|c| c[l]))) {
+                    let (row, col) = ((l >> 1) & 1, 2 * (l / 4) + (l & 1));
+                    let i = row * w + col;
+                    // SAFETY: SSE2 is part of the x86-64 baseline.
+                    want[i] = unsafe { write_sse2(src, want[i], over) };
+                }
+                assert_eq!(got, want, "round {round}, over {over}");
             }
         }
     }

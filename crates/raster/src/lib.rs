@@ -68,7 +68,10 @@
 //! without per-quad entries: their weights and window z are computed a
 //! lane per vector element (`Shape::strip_weights`, each quad's bits),
 //! the early depth test drops pixels as for single quads, and the inputs
-//! are interpolated straight into the batch.
+//! are interpolated straight into the batch; with AVX-512 and no depth
+//! test, the strip's colour write (opaque or SRC_ALPHA /
+//! ONE_MINUS_SRC_ALPHA) covers its two rows of eight pixels at once with
+//! the per-pixel write's operations.
 //!
 //! Filling a batch's inputs and a quad's interpolation are compiled for
 //! the baseline target, AVX2 and AVX-512 and picked at run time (so is

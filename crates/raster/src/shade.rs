@@ -908,6 +908,15 @@ impl<'a> FragmentStage<'a> {
             }
         }
         self.run_shader(batch)?;
+        // Every pixel passing (no depth test: the write does not test
+        // one), none discarded: the strip's two rows at once.
+        if live_mask == 0xffff && batch.discarded == 0 && self.layout.frag_depth.is_none() {
+            if let Some([r, g, b, a]) = batch.outputs.get(o..o + 4) {
+                if target.write_strip(self.isa, (qx, qy), [r, g, b, a]) {
+                    return Ok(());
+                }
+            }
+        }
         self.write_quick(target, o, batch, &slots[..]);
         Ok(())
     }
