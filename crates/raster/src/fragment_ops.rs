@@ -722,14 +722,8 @@ unsafe fn write_strip_avx512(rows: &mut [[u8; 4]], w: usize, rgba: [&[f32; 16]; 
             let fs = s[3];
             let fd = _mm512_sub_ps(one, fs);
             let k255 = _mm512_set1_ps(255.0);
-            let byte = _mm512_set1_epi32(255);
             for (c, oc) in out.iter_mut().enumerate() {
-                let k = match c {
-                    0 => _mm512_and_si512(dst, byte),
-                    1 => _mm512_and_si512(_mm512_srli_epi32::<8>(dst), byte),
-                    2 => _mm512_and_si512(_mm512_srli_epi32::<16>(dst), byte),
-                    _ => _mm512_srli_epi32::<24>(dst),
-                };
+                let k = crate::simd::byte(dst, c);
                 let d = _mm512_div_ps(_mm512_cvtepi32_ps(k), k255);
                 *oc = _mm512_add_ps(_mm512_mul_ps(*oc, fs), _mm512_mul_ps(d, fd));
             }

@@ -483,10 +483,11 @@ impl Shape {
     /// of four quads of a triangle, (qx + 2i, qy) for i in 0..4, as 16
     /// lanes (lane 4i + k: pixel k of quad i): `w[j][lane]` is vertex j's
     /// weight, the bits [`Shape::interp_quad_z`] and
-    /// [`Shape::interp_quad_finish`] give each quad (the same integer edge
-    /// values, the same f64 operations per lane), computed a lane per
-    /// vector element (inlined: compiled for the caller's instruction
-    /// set). `None` for other shapes.
+    /// [`Shape::interp_quad_finish`] give each quad (the same functions —
+    /// `signed_edges`, `barycentrics`, `perspective_weights` — over 16
+    /// lanes instead of 4), computed a lane per vector element (inlined:
+    /// compiled for the caller's instruction set). `None` for other
+    /// shapes.
     #[inline(always)]
     pub fn strip_weights(&self, qx: i64, qy: i64) -> Option<([[f64; 16]; 3], [f64; 16])> {
         let Shape::Triangle {
@@ -498,7 +499,6 @@ impl Shape {
         else {
             return None;
         };
-        let (cx, cy) = (qx * ONE + HALF, qy * ONE + HALF);
         // Lane l's pixel offset from the first quad's first pixel.
         let mut ox = [0i64; 16];
         let mut oy = [0i64; 16];
@@ -506,37 +506,9 @@ impl Shape {
             ox[l] = 2 * (l as i64 / 4) + (l as i64 & 1);
             oy[l] = (l as i64 >> 1) & 1;
         }
-        let mut b = [[0.0f64; 16]; 3];
-        for (j, bj) in b.iter_mut().enumerate() {
-            let (pa, pb) = (p[(j + 1) % 3], p[(j + 2) % 3]);
-            let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
-            // `triangle_quad`'s e0 and steps: exact integers.
-            let e0 = ex * (cy - pa.1) - ey * (cx - pa.0);
-            let (dx, dy) = (-ey * ONE, ex * ONE);
-            for l in 0..16 {
-                let e = e0 + ox[l] * dx + oy[l] * dy;
-                bj[l] = (sign * e) as f64 * inv_area2;
-            }
-        }
-        let mut z = [0.0f64; 16];
-        for l in 0..16 {
-            // `quad_from_edges`.
-            z[l] = b[0][l] * v[0].z + b[1][l] * v[1].z + b[2][l] * v[2].z;
-        }
-        let mut w = [[0.0f64; 16]; 3];
-        for l in 0..16 {
-            // `triangle_weights`.
-            let pw = [
-                b[0][l] * v[0].inv_w,
-                b[1][l] * v[1].inv_w,
-                b[2][l] * v[2].inv_w,
-            ];
-            let inv_w = pw[0] + pw[1] + pw[2];
-            let rw = 1.0 / inv_w;
-            for j in 0..3 {
-                w[j][l] = pw[j] * rw;
-            }
-        }
+        let s = signed_edges(p, *sign, (qx, qy), &ox, &oy);
+        let (b, z) = barycentrics(&s, *inv_area2, v);
+        let (w, _) = perspective_weights(&b, v);
         Some((w, z))
     }
 
@@ -614,19 +586,81 @@ type TriangleRef<'a> = (&'a [(i64, i64); 3], i64, f64, &'a [WinVertex; 3]);
 /// same integers; then [`quad_from_edges`].
 #[inline(always)]
 fn triangle_quad((p, sign, r, v): TriangleRef, qx: i64, qy: i64, q: &mut QuadInterp) {
+    let s = signed_edges(p, sign, (qx, qy), &[0, 1, 0, 1], &[0, 0, 1, 1]);
+    quad_from_edges(&s, r, v, q);
+}
+
+/// The orientation times [`edge`] `j` at the centers of `N` pixels
+/// `(qx + ox[l], qy + oy[l])`: pixel (qx, qy)'s value as [`edge`]
+/// computes it, the others whole steps of the edge's (integer) slopes
+/// away, so the same integers.
+#[inline(always)]
+fn signed_edges<const N: usize>(
+    p: &[(i64, i64); 3],
+    sign: i64,
+    (qx, qy): (i64, i64),
+    ox: &[i64; N],
+    oy: &[i64; N],
+) -> [[i64; N]; 3] {
     let (cx, cy) = (qx * ONE + HALF, qy * ONE + HALF);
-    let mut s = [[0i64; 4]; 3];
+    let mut s = [[0i64; N]; 3];
     for (j, sj) in s.iter_mut().enumerate() {
         let (pa, pb) = (p[(j + 1) % 3], p[(j + 2) % 3]);
         let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
         let e0 = ex * (cy - pa.1) - ey * (cx - pa.0);
         let (dx, dy) = (-ey * ONE, ex * ONE);
-        let e = [e0, e0 + dx, e0 + dy, e0 + dx + dy];
-        for k in 0..4 {
-            sj[k] = sign * e[k];
+        for l in 0..N {
+            sj[l] = sign * (e0 + ox[l] * dx + oy[l] * dy);
         }
     }
-    quad_from_edges(&s, r, v, q);
+    s
+}
+
+/// The barycentrics `b = s · r` (f64; `r`: one over the doubled area)
+/// and the interpolated window z of `N` pixels from their signed edge
+/// values `s[j][l]`, z from the vertices' in vertex order.
+#[inline(always)]
+fn barycentrics<const N: usize>(
+    s: &[[i64; N]; 3],
+    r: f64,
+    v: &[WinVertex; 3],
+) -> ([[f64; N]; 3], [f64; N]) {
+    let mut b = [[0.0f64; N]; 3];
+    for (bj, sj) in b.iter_mut().zip(s) {
+        for l in 0..N {
+            bj[l] = sj[l] as f64 * r;
+        }
+    }
+    let mut z = [0.0f64; N];
+    for l in 0..N {
+        z[l] = b[0][l] * v[0].z + b[1][l] * v[1].z + b[2][l] * v[2].z;
+    }
+    (b, z)
+}
+
+/// The perspective-correct weights and 1/w of `N` pixels from their
+/// barycentrics: `pw = b · 1/w_j`, 1/w their sum, weights `pw / (1/w)`
+/// as `pw · (1 / (1/w))`.
+#[inline(always)]
+fn perspective_weights<const N: usize>(
+    b: &[[f64; N]; 3],
+    v: &[WinVertex; 3],
+) -> ([[f64; N]; 3], [f64; N]) {
+    let mut w = [[0.0f64; N]; 3];
+    let mut inv_w = [0.0f64; N];
+    for l in 0..N {
+        let pw = [
+            b[0][l] * v[0].inv_w,
+            b[1][l] * v[1].inv_w,
+            b[2][l] * v[2].inv_w,
+        ];
+        inv_w[l] = pw[0] + pw[1] + pw[2];
+        let rw = 1.0 / inv_w[l];
+        for (wj, pwj) in w.iter_mut().zip(pw) {
+            wj[l] = pwj * rw;
+        }
+    }
+    (w, inv_w)
 }
 
 /// The barycentrics and window z of a quad's pixels from their signed
@@ -636,33 +670,14 @@ fn triangle_quad((p, sign, r, v): TriangleRef, qx: i64, qy: i64, q: &mut QuadInt
 /// same order; the barycentrics left in `q.weights`.
 #[inline(always)]
 fn quad_from_edges(s: &[[i64; 4]; 3], r: f64, v: &[WinVertex; 3], q: &mut QuadInterp) {
-    let mut b = [[0.0f64; 4]; 3];
-    for (bj, sj) in b.iter_mut().zip(s) {
-        for k in 0..4 {
-            bj[k] = sj[k] as f64 * r;
-        }
-    }
-    let [b0, b1, b2] = b;
-    for k in 0..4 {
-        q.z[k] = b0[k] * v[0].z + b1[k] * v[1].z + b2[k] * v[2].z;
-    }
-    q.weights = b;
+    (q.weights, q.z) = barycentrics(s, r, v);
 }
 
 /// Second half: the perspective-correct weights and 1/w from the
 /// barycentrics [`triangle_quad`] left in `q.weights`.
 #[inline(always)]
 fn triangle_weights(v: &[WinVertex; 3], q: &mut QuadInterp) {
-    let [b0, b1, b2] = q.weights;
-    for k in 0..4 {
-        let pw = [b0[k] * v[0].inv_w, b1[k] * v[1].inv_w, b2[k] * v[2].inv_w];
-        let inv_w = pw[0] + pw[1] + pw[2];
-        q.inv_w[k] = inv_w;
-        let rw = 1.0 / inv_w;
-        for (wj, pwj) in q.weights.iter_mut().zip(pw) {
-            wj[k] = pwj * rw;
-        }
-    }
+    (q.weights, q.inv_w) = perspective_weights(&q.weights, v);
 }
 
 /// [`triangle_quad`] compiled for AVX2.

@@ -223,12 +223,17 @@ const COMPRESS: [[u8; 4]; 16] = {
     t
 };
 
-/// A triangle's varying at a quad's four pixels from its vertices' values
-/// `v`: `0 + w0·v0 + w1·v1 + w2·v2` in f64, rounded to f32.
+/// A triangle's varying at `N` pixels (a quad's four, a strip's 16) from
+/// its vertices' values `v`: `0 + w0·v0 + w1·v1 + w2·v2` in f64, rounded
+/// to f32.
 #[inline(always)]
-fn triangle_values(w: &[[f64; 4]; 3], v: [f32; 3]) -> [f32; 4] {
+fn triangle_values<const N: usize>(w: &[[f64; N]; 3], v: [f32; 3]) -> [f32; N] {
     let v = v.map(f64::from);
-    std::array::from_fn(|k| (0.0 + w[0][k] * v[0] + w[1][k] * v[1] + w[2][k] * v[2]) as f32)
+    let mut out = [0.0f32; N];
+    for (k, x) in out.iter_mut().enumerate() {
+        *x = (0.0 + w[0][k] * v[0] + w[1][k] * v[1] + w[2][k] * v[2]) as f32;
+    }
+    out
 }
 
 /// Writes a quad's four values from lane `first` on (those past the last
@@ -897,15 +902,10 @@ impl<'a> FragmentStage<'a> {
                 continue;
             };
             let v0 = at(a0, l.li);
-            if let FillKind::Constant = l.kind {
-                *lanes = [v0; LANES];
-                continue;
-            }
-            // `triangle_values`, a lane per element.
-            let v = [v0, at(a1, l.li), at(a2, l.li)].map(f64::from);
-            for (k, x) in lanes.iter_mut().enumerate() {
-                *x = (0.0 + w[0][k] * v[0] + w[1][k] * v[1] + w[2][k] * v[2]) as f32;
-            }
+            *lanes = match l.kind {
+                FillKind::Constant => [v0; LANES],
+                _ => triangle_values(w, [v0, at(a1, l.li), at(a2, l.li)]),
+            };
         }
         self.run_shader(batch)?;
         // Every pixel passing (no depth test: the write does not test
@@ -1716,6 +1716,9 @@ impl<'a> FragmentStage<'a> {
             false => &mut slots[..],
         };
         let mut used = 0;
+        // The depth tests are behind: the window z only for gl_FragCoord
+        // or the probe.
+        let window_z = self.layout.frag_coord.is_some() || self.probe.is_some();
         for ly in (0..h).step_by(2) {
             for lx in (0..w).step_by(2) {
                 // The quad's pixels (lane order) and their winners.
@@ -1745,10 +1748,7 @@ impl<'a> FragmentStage<'a> {
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
                     let Some(e) = pending.get_mut(*n) else { break };
                     self.prefetch_attrs(prim);
-                    // The depth tests are behind: the window z only for
-                    // gl_FragCoord or the probe.
-                    let z = self.layout.frag_coord.is_some() || self.probe.is_some();
-                    e.set_inline(prim, p, (qx, qy, live), write, z);
+                    e.set_inline(prim, p, (qx, qy, live), write, window_z);
                     e.finish_inline();
                     if let Some((count, spill)) = admit(pack_colors, n, &mut used, write) {
                         self.color_pass(&pass, fb, batch, &pending[..count])?;

@@ -17,6 +17,7 @@
 //! 32-bit gathers per sixteen.
 
 use super::{LevelTable, Store, LANES, UNORM8_INV};
+use crate::simd::byte;
 use crate::texture::{Texture, Wrap};
 use std::arch::x86_64::*;
 
@@ -357,17 +358,6 @@ unsafe fn combine(corners: &Corners, nearest: __mmask16) -> [__m512; 4] {
         *o = _mm512_mask_mov_ps(acc, nearest, t0);
     }
     out
-}
-
-/// Byte `c` of each 32-bit word, zero-extended.
-#[inline(always)]
-unsafe fn byte(raw: __m512i, c: usize) -> __m512i {
-    match c {
-        0 => _mm512_and_si512(raw, _mm512_set1_epi32(255)),
-        3 => _mm512_srli_epi32::<24>(raw),
-        1 => _mm512_and_si512(_mm512_srli_epi32::<8>(raw), _mm512_set1_epi32(255)),
-        _ => _mm512_and_si512(_mm512_srli_epi32::<16>(raw), _mm512_set1_epi32(255)),
-    }
 }
 
 /// `unorm8` of every lane (bytes k in 0..=255): k/255 correctly rounded,
