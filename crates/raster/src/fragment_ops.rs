@@ -4,6 +4,8 @@
 
 use crate::framebuffer::{depth_to_fixed, float_to_unorm8, ColorBuffer, DEPTH_MAX};
 use crate::framebuffer::{Framebuffer, MAX_DRAW_BUFFERS};
+#[cfg(target_arch = "x86_64")]
+use crate::simd::lanes::{Lanes16, X256, X512};
 use crate::state::{
     Blend, BlendEquation, BlendFactor, CompareFunc, PipelineState, Rect, StencilFace, StencilOp,
 };
@@ -509,9 +511,9 @@ impl QuickTarget<'_> {
     /// The colour write of a strip's 16 fragments, all passing (lane
     /// `4q + k`: pixel `(x + 2q + (k & 1), y + (k >> 1))`, colour
     /// `rgba[c][lane]`), on its two rows of eight pixels at once in
-    /// AVX-512 registers: the bytes [`QuickTarget::write`] gives each
-    /// fragment (the same operations per pixel, a pixel per element).
-    /// False, with nothing done, unless `isa` is AVX-512, the strip lies
+    /// AVX-512 or AVX2 registers: the bytes [`QuickTarget::write`] gives
+    /// each fragment (the same operations per pixel, a pixel per element).
+    /// False, with nothing done, unless `isa` is one of those, the strip lies
     /// inside the target and nothing but the colour write applies (no
     /// depth test, no scissor; no blending or SRC_ALPHA /
     /// ONE_MINUS_SRC_ALPHA).
@@ -522,7 +524,7 @@ impl QuickTarget<'_> {
         (x, y): (i64, i64),
         rgba: [&[f32; 16]; 4],
     ) -> bool {
-        if isa != crate::simd::Isa::Avx512 || self.depth.is_some() || self.scissor.is_some() {
+        if isa == crate::simd::Isa::Base || self.depth.is_some() || self.scissor.is_some() {
             return false;
         }
         let Some((v, blend)) = &mut self.color else {
@@ -544,9 +546,16 @@ impl QuickTarget<'_> {
         };
         #[cfg(target_arch = "x86_64")]
         {
-            // SAFETY: `isa` is only Avx512 when the CPU has AVX-512 F
-            // (`simd::detect`); `rows` holds both rows of eight pixels.
-            unsafe { write_strip_avx512(rows, w as usize, rgba, over) };
+            // SAFETY: `isa` is only Avx512 (Avx2) when the CPU has those
+            // features (`simd::detect`); `rows` holds both rows of eight
+            // pixels.
+            unsafe {
+                if isa == crate::simd::Isa::Avx512 {
+                    write_strip_avx512(rows, w as usize, rgba, over)
+                } else {
+                    write_strip_avx2(rows, w as usize, rgba, over)
+                }
+            }
             *self.passed = self.passed.wrapping_add(16);
             true
         }
@@ -693,57 +702,74 @@ unsafe fn write_sse2(src: [f32; 4], dst: [u8; 4], over: bool) -> [u8; 4] {
 /// `rows[w..w + 8]`, pixel i (row i / 8, column i % 8) from the fragment
 /// of lane 4(col / 2) + 2 row + col % 2, with [`write_sse2`]'s operations
 /// (the clamps as `max(x, 0)` then `min(_, 1)`, the stored value over
-/// 255 by division, separate products and sums).
+/// 255 by division, separate products and sums), in `V`'s registers.
 ///
 /// # Safety
-/// The CPU must have AVX-512 F; `rows` must hold `w + 8` pixels, `w ≥ 8`.
+/// The CPU must have `V`'s instruction set and this must be inlined into
+/// code compiled for it; `rows` must hold `w + 8` pixels, `w ≥ 8`.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx2")]
-unsafe fn write_strip_avx512(rows: &mut [[u8; 4]], w: usize, rgba: [&[f32; 16]; 4], over: bool) {
-    use std::arch::x86_64::*;
+#[inline(always)]
+unsafe fn write_strip_in<V: Lanes16>(
+    rows: &mut [[u8; 4]],
+    w: usize,
+    rgba: [&[f32; 16]; 4],
+    over: bool,
+) {
     debug_assert!(w >= 8 && rows.len() >= w + 8);
     // SAFETY (of the loads and stores): eight pixels (32 bytes) at
     // `rows[0]` and at `rows[w]`, inside `rows` (the caller's contract);
     // 16 floats of each `rgba[c]`.
     unsafe {
-        let base = rows.as_mut_ptr();
-        let lo = _mm256_loadu_si256(base.cast());
-        let hi = _mm256_loadu_si256(base.add(w).cast());
-        let dst = _mm512_inserti64x4::<1>(_mm512_castsi256_si512(lo), hi);
-        let lane = _mm512_setr_epi32(0, 1, 4, 5, 8, 9, 12, 13, 2, 3, 6, 7, 10, 11, 14, 15);
-        let (zero, one) = (_mm512_setzero_ps(), _mm512_set1_ps(1.0));
-        let clamp = |x: __m512| _mm512_min_ps(_mm512_max_ps(x, zero), one);
+        let base = rows.as_mut_ptr().cast::<u32>();
+        let dst = V::load_rows(base, base.add(w));
+        let (zero, one) = (V::zero(), V::splat(1.0));
         let mut s = [zero; 4];
         for (sc, src) in s.iter_mut().zip(rgba) {
-            *sc = clamp(_mm512_permutexvar_ps(lane, _mm512_loadu_ps(src.as_ptr())));
+            *sc = V::min(V::max(V::quads_to_rows(V::load(src)), zero), one);
         }
         let mut out = s;
         if over {
             let fs = s[3];
-            let fd = _mm512_sub_ps(one, fs);
-            let k255 = _mm512_set1_ps(255.0);
+            let fd = V::sub(one, fs);
+            let k255 = V::splat(255.0);
             for (c, oc) in out.iter_mut().enumerate() {
-                let k = crate::simd::byte(dst, c);
-                let d = _mm512_div_ps(_mm512_cvtepi32_ps(k), k255);
-                *oc = _mm512_add_ps(_mm512_mul_ps(*oc, fs), _mm512_mul_ps(d, fd));
+                let d = V::div(V::to_f(V::byte(dst, c)), k255);
+                *oc = V::add(V::mul(*oc, fs), V::mul(d, fd));
             }
         }
-        let (k255, half) = (_mm512_set1_ps(255.0), _mm512_set1_ps(0.5));
-        let mut word = _mm512_setzero_si512();
+        let (k255, half) = (V::splat(255.0), V::splat(0.5));
+        let mut word = V::splat_i(0);
         for (c, oc) in out.iter().enumerate() {
+            let clamped = V::min(V::max(*oc, zero), one);
             // In [0.5, 255.5]: the truncation fits.
-            let k = _mm512_cvttps_epi32(_mm512_add_ps(_mm512_mul_ps(clamp(*oc), k255), half));
-            let k = match c {
-                0 => k,
-                1 => _mm512_slli_epi32::<8>(k),
-                2 => _mm512_slli_epi32::<16>(k),
-                _ => _mm512_slli_epi32::<24>(k),
-            };
-            word = _mm512_or_si512(word, k);
+            let k = V::trunc_i(V::add(V::mul(clamped, k255), half));
+            word = V::or_i(word, V::shl_bytes(k, c));
         }
-        _mm256_storeu_si256(base.cast(), _mm512_castsi512_si256(word));
-        _mm256_storeu_si256(base.add(w).cast(), _mm512_extracti64x4_epi64::<1>(word));
+        V::store_rows(base, base.add(w), word);
     }
+}
+
+/// [`write_strip_in`] compiled for AVX-512.
+///
+/// # Safety
+/// The CPU must have AVX-512 F, BW, DQ and VL; `rows` as for
+/// [`write_strip_in`].
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2")]
+unsafe fn write_strip_avx512(rows: &mut [[u8; 4]], w: usize, rgba: [&[f32; 16]; 4], over: bool) {
+    // SAFETY: the caller's contract.
+    unsafe { write_strip_in::<X512>(rows, w, rgba, over) }
+}
+
+/// [`write_strip_in`] compiled for AVX2.
+///
+/// # Safety
+/// The CPU must have AVX2; `rows` as for [`write_strip_in`].
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn write_strip_avx2(rows: &mut [[u8; 4]], w: usize, rgba: [&[f32; 16]; 4], over: bool) {
+    // SAFETY: the caller's contract.
+    unsafe { write_strip_in::<X256>(rows, w, rgba, over) }
 }
 
 /// Two adjacent 4-byte pixels: `new[k]` where bit `k` of `bits` is set,
@@ -1183,9 +1209,11 @@ mod tests {
     #[test]
     #[cfg(target_arch = "x86_64")]
     fn strip_writes_match_the_pixel_writes() {
-        if !crate::simd::Isa::Avx512.supported() {
-            return;
-        }
+        use crate::simd::Isa;
+        let isas: Vec<Isa> = [Isa::Avx2, Isa::Avx512]
+            .into_iter()
+            .filter(|i| i.supported())
+            .collect();
         let special = [
             f32::NAN,
             -0.0,
@@ -1219,11 +1247,20 @@ mod tests {
                 }
             }
             let rows: Vec<[u8; 4]> = (0..w + 8).map(|_| next().to_le_bytes()).collect();
-            for over in [false, true] {
+            for (over, &isa) in [false, true]
+                .into_iter()
+                .flat_map(|o| isas.iter().map(move |i| (o, i)))
+            {
                 let mut got = rows.clone();
                 let [r, g, b, a] = &rgba;
-                // SAFETY: AVX-512 F checked above; `got` holds w + 8 pixels.
-                unsafe { write_strip_avx512(&mut got, w, [r, g, b, a], over) };
+                // SAFETY: the CPU has the instruction set (checked above);
+                // `got` holds w + 8 pixels.
+                unsafe {
+                    match isa {
+                        Isa::Avx512 => write_strip_avx512(&mut got, w, [r, g, b, a], over),
+                        _ => write_strip_avx2(&mut got, w, [r, g, b, a], over),
+                    }
+                };
                 let mut want = rows.clone();
                 for (l, src) in (0..16).map(|l| (l, rgba.map(|c| c[l]))) {
                     let (row, col) = ((l >> 1) & 1, 2 * (l / 4) + (l & 1));
@@ -1231,7 +1268,7 @@ mod tests {
                     // SAFETY: SSE2 is part of the x86-64 baseline.
                     want[i] = unsafe { write_sse2(src, want[i], over) };
                 }
-                assert_eq!(got, want, "round {round}, over {over}");
+                assert_eq!(got, want, "round {round}, over {over}, {isa:?}");
             }
         }
     }

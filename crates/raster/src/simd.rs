@@ -50,25 +50,8 @@ impl Isa {
     }
 }
 
-/// Byte `c` (0–3) of each 32-bit word of `raw` (RGBA8 texels or
-/// pixels), zero-extended: the AVX-512 lookups' and writes' channel `c`.
-///
-/// # Safety
-/// The CPU must have AVX-512 F (inlined into code compiled for it).
 #[cfg(target_arch = "x86_64")]
-#[inline(always)]
-pub(crate) unsafe fn byte(raw: std::arch::x86_64::__m512i, c: usize) -> std::arch::x86_64::__m512i {
-    use std::arch::x86_64::*;
-    // SAFETY: AVX-512 F (the caller's contract).
-    unsafe {
-        match c {
-            0 => _mm512_and_si512(raw, _mm512_set1_epi32(255)),
-            3 => _mm512_srli_epi32::<24>(raw),
-            1 => _mm512_and_si512(_mm512_srli_epi32::<8>(raw), _mm512_set1_epi32(255)),
-            _ => _mm512_and_si512(_mm512_srli_epi32::<16>(raw), _mm512_set1_epi32(255)),
-        }
-    }
-}
+pub(crate) mod lanes;
 
 static CHOSEN: AtomicU8 = AtomicU8::new(0);
 

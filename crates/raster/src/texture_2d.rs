@@ -30,11 +30,13 @@
 //! the portable code's operations in its order: the bytes k become k/255
 //! by a multiply and a correction by the exact residual (fused
 //! multiply-adds), correctly rounded like the division for every byte.
-//! The AVX-512 variant also picks the *_MIPMAP_LINEAR levels in 512-bit
-//! registers and, for RGBA8 levels with REPEAT or CLAMP_TO_EDGE wrapping
-//! whose lanes read one level per level pass, filters, blends the two
-//! levels and selects the output there too (module `wide`), the two texels
-//! of each row read by one 64-bit gather when no lane is at a wrap edge.
+//! Both also pick the *_MIPMAP_LINEAR levels in vector registers and, for
+//! RGBA8 levels with REPEAT or CLAMP_TO_EDGE wrapping whose lanes read
+//! one level per level pass, filter, blend the two levels and select the
+//! output there too (module `wide`, written once over
+//! `simd::lanes::Lanes16`: one AVX-512 register or two AVX2 ones per
+//! value), the two texels of each row read by one 64-bit gather when no
+//! lane is at a wrap edge.
 //! Tests compare every variant the CPU has with the general path on
 //! random lookups and on runs of nearby quads like the executor's.
 
@@ -48,6 +50,8 @@ use std::sync::Arc;
 
 #[cfg(target_arch = "x86_64")]
 mod wide;
+#[cfg(target_arch = "x86_64")]
+use crate::simd::lanes::{X256, X512};
 
 /// Levels a request can address on this path (absolute level numbers):
 /// more is a 2^31-texel texture, which takes the general path.
@@ -138,7 +142,7 @@ pub(crate) fn sample_with(
         Isa::Avx2 if isa.supported() => return unsafe { sample_avx2(units, req, out) },
         _ => {}
     }
-    sample_in::<false, false>(units, req, out)
+    sample_in::<false, NO_WIDE>(units, req, out)
 }
 
 /// [`sample_in`] compiled for AVX2 and FMA.
@@ -152,7 +156,7 @@ unsafe fn sample_avx2(
     req: &SampleRequest,
     out: &mut [[f32; LANES]; 4],
 ) -> bool {
-    sample_in::<true, false>(units, req, out)
+    sample_in::<true, WIDE_AVX2>(units, req, out)
 }
 
 /// [`sample_in`] compiled for AVX-512 (F, BW, DQ, VL) and FMA.
@@ -166,15 +170,23 @@ unsafe fn sample_avx512(
     req: &SampleRequest,
     out: &mut [[f32; LANES]; 4],
 ) -> bool {
-    sample_in::<true, true>(units, req, out)
+    sample_in::<true, WIDE_AVX512>(units, req, out)
 }
+
+/// `sample_in`'s `WIDE`: no register filter ([`wide`]).
+const NO_WIDE: u8 = 0;
+/// `sample_in`'s `WIDE`: [`wide`] in AVX2 registers.
+const WIDE_AVX2: u8 = 1;
+/// `sample_in`'s `WIDE`: [`wide`] in AVX-512 registers.
+const WIDE_AVX512: u8 = 2;
 
 /// The fast path proper, inlined into each instruction set's variant;
 /// `SIMD`: compiled for x86-64 with AVX2 and FMA, which some steps use
-/// directly; `WIDE`: also with AVX-512, whose filtering of RGBA8 levels
-/// ([`wide`]) takes the requests it can.
+/// directly; `WIDE`: [`WIDE_AVX2`] or [`WIDE_AVX512`] in code compiled
+/// for that set, whose registers pick the *_MIPMAP_LINEAR levels and
+/// filter the RGBA8 levels of the requests [`wide`] takes.
 #[inline(always)]
-fn sample_in<const SIMD: bool, const WIDE: bool>(
+fn sample_in<const SIMD: bool, const WIDE: u8>(
     units: &TextureUnits,
     req: &SampleRequest,
     out: &mut [[f32; LANES]; 4],
@@ -281,22 +293,21 @@ fn sample_in<const SIMD: bool, const WIDE: bool>(
         let mut is_two = [false; LANES];
         let mut is_nearest = [false; LANES];
         #[cfg(target_arch = "x86_64")]
-        if WIDE {
-            // SAFETY: `WIDE` is only set in code compiled for AVX-512,
-            // which runs only on CPUs that have it.
+        if WIDE != NO_WIDE {
+            let bounds = (base_i, q_i);
+            let filters = (mag_nearest, min_nearest);
+            // SAFETY: `WIDE` names the instruction set of the code this
+            // is compiled in, which runs only on CPUs that have it.
             let (t, n) = unsafe {
-                wide::mipmap_linear_levels(
-                    &lam,
-                    c,
-                    (base_i, q_i),
-                    (mag_nearest, min_nearest),
-                    &mut level,
-                    &mut f,
-                )
+                if WIDE == WIDE_AVX512 {
+                    wide::mipmap_linear_levels::<X512>(&lam, c, bounds, filters, &mut level, &mut f)
+                } else {
+                    wide::mipmap_linear_levels::<X256>(&lam, c, bounds, filters, &mut level, &mut f)
+                }
             };
             (two, nearest) = (t & mask, n);
         }
-        for l in 0..if WIDE { 0 } else { LANES } {
+        for l in 0..if WIDE != NO_WIDE { 0 } else { LANES } {
             let lambda = lam[l];
             let mag = lambda.is_nan() || lambda <= c;
             let lb = base_f + lambda;
@@ -314,7 +325,7 @@ fn sample_in<const SIMD: bool, const WIDE: bool>(
             is_two[l] = !mag && !top;
             is_nearest[l] = if mag { mag_nearest } else { min_nearest };
         }
-        if !WIDE {
+        if WIDE == NO_WIDE {
             for l in 0..LANES {
                 two |= (is_two[l] as u32) << l;
                 nearest |= (is_nearest[l] as u32) << l;
@@ -347,11 +358,18 @@ fn sample_in<const SIMD: bool, const WIDE: bool>(
     }
 
     #[cfg(target_arch = "x86_64")]
-    if WIDE {
+    if WIDE != NO_WIDE {
         let st = [&req.coord[0], &req.coord[1]];
-        // SAFETY: `WIDE` is only set in code compiled for AVX-512 and
-        // FMA, which runs only on CPUs that have them.
-        if unsafe { wide::sample_unorm8(tex, &table, &level, &f, st, nearest, two, mask, out) } {
+        let table = &table;
+        // SAFETY: as above.
+        let done = unsafe {
+            if WIDE == WIDE_AVX512 {
+                wide::sample_unorm8::<X512>(tex, table, &level, &f, st, nearest, two, mask, out)
+            } else {
+                wide::sample_unorm8::<X256>(tex, table, &level, &f, st, nearest, two, mask, out)
+            }
+        };
+        if done {
             return true;
         }
     }
