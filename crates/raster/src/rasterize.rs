@@ -506,7 +506,16 @@ impl Shape {
             ox[l] = 2 * (l as i64 / 4) + (l as i64 & 1);
             oy[l] = (l as i64 >> 1) & 1;
         }
-        let s = signed_edges(p, *sign, (qx, qy), &ox, &oy);
+        let s = match signed_edges_f64(
+            p,
+            *sign,
+            (qx, qy),
+            &ox.map(|o| o as f64),
+            &oy.map(|o| o as f64),
+        ) {
+            Some(s) => s,
+            None => to_f64(&signed_edges(p, *sign, (qx, qy), &ox, &oy)),
+        };
         let (b, z) = barycentrics(&s, *inv_area2, v);
         let (w, _) = perspective_weights(&b, v);
         Some((w, z))
@@ -616,19 +625,66 @@ fn signed_edges<const N: usize>(
     s
 }
 
+/// [`signed_edges`] in f64 arithmetic, for a triangle whose fixed-point
+/// coordinates and the pixels' are below 2^24 in magnitude (else
+/// `None`): then every value on the way is an integer below 2^53, so
+/// each operation is exact and the results are [`signed_edges`]'s
+/// integers as f64 (+0 for zero, as the conversion gives), without
+/// 64-bit integer products and conversions (which AVX2 lacks).
+#[inline(always)]
+fn signed_edges_f64<const N: usize>(
+    p: &[(i64, i64); 3],
+    sign: i64,
+    (qx, qy): (i64, i64),
+    ox: &[f64; N],
+    oy: &[f64; N],
+) -> Option<[[f64; N]; 3]> {
+    const LIMIT: i64 = 1 << 24;
+    let small = |c: i64| c.abs() < LIMIT;
+    let pixels = small(qx.saturating_mul(ONE)) && small(qy.saturating_mul(ONE));
+    if !pixels || !p.iter().all(|&(x, y)| small(x) && small(y)) {
+        return None;
+    }
+    let (cx, cy) = (qx * ONE + HALF, qy * ONE + HALF);
+    let mut s = [[0.0f64; N]; 3];
+    for (j, sj) in s.iter_mut().enumerate() {
+        let (pa, pb) = (p[(j + 1) % 3], p[(j + 2) % 3]);
+        let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
+        // The orientation applied to the integers (a zero stays +0).
+        let e0 = (sign * (ex * (cy - pa.1) - ey * (cx - pa.0))) as f64;
+        let (dx, dy) = ((sign * -ey * ONE) as f64, (sign * ex * ONE) as f64);
+        for l in 0..N {
+            sj[l] = e0 + ox[l] * dx + oy[l] * dy;
+        }
+    }
+    Some(s)
+}
+
+/// Signed edge values as f64 (exact: they are below 2^53 in magnitude).
+#[inline(always)]
+fn to_f64<const N: usize>(s: &[[i64; N]; 3]) -> [[f64; N]; 3] {
+    let mut out = [[0.0f64; N]; 3];
+    for (o, s) in out.iter_mut().zip(s) {
+        for l in 0..N {
+            o[l] = s[l] as f64;
+        }
+    }
+    out
+}
+
 /// The barycentrics `b = s · r` (f64; `r`: one over the doubled area)
 /// and the interpolated window z of `N` pixels from their signed edge
-/// values `s[j][l]`, z from the vertices' in vertex order.
+/// values `s[j][l]` (integers), z from the vertices' in vertex order.
 #[inline(always)]
 fn barycentrics<const N: usize>(
-    s: &[[i64; N]; 3],
+    s: &[[f64; N]; 3],
     r: f64,
     v: &[WinVertex; 3],
 ) -> ([[f64; N]; 3], [f64; N]) {
     let mut b = [[0.0f64; N]; 3];
     for (bj, sj) in b.iter_mut().zip(s) {
         for l in 0..N {
-            bj[l] = sj[l] as f64 * r;
+            bj[l] = sj[l] * r;
         }
     }
     let mut z = [0.0f64; N];
@@ -670,7 +726,7 @@ fn perspective_weights<const N: usize>(
 /// same order; the barycentrics left in `q.weights`.
 #[inline(always)]
 fn quad_from_edges(s: &[[i64; 4]; 3], r: f64, v: &[WinVertex; 3], q: &mut QuadInterp) {
-    (q.weights, q.z) = barycentrics(s, r, v);
+    (q.weights, q.z) = barycentrics(&to_f64(s), r, v);
 }
 
 /// Second half: the perspective-correct weights and 1/w from the
@@ -1185,7 +1241,9 @@ mod tests {
         };
         let mut out = Vec::new();
         for i in 0..count {
-            let range = [4.0, 60.0, 3000.0][i % 3];
+            // Tiny to huge (past 2^16 pixels the strip weights take the
+            // integer path, past 2^20 the coordinates are clamped).
+            let range = [4.0, 60.0, 3000.0, 70_000.0, 3.0e6][i % 5];
             let v = [0; 3].map(|_| WinVertex {
                 x: next() * range - 5.0,
                 y: next() * range - 5.0,
