@@ -181,6 +181,8 @@ mod interp;
 #[cfg(feature = "jit")]
 mod jit;
 pub mod lane;
+#[cfg(target_arch = "x86_64")]
+pub mod lanes16;
 mod liveness;
 mod lower;
 mod mask_flow;

@@ -16,6 +16,8 @@
 
 use crate::ffgen::{AlphaOp, FogMode, FragmentShape, Lookup, RgbOp};
 use exec::lane::{self, flush, FULL};
+#[cfg(target_arch = "x86_64")]
+use exec::lanes16::{Lanes16, X256, X512};
 use exec::{Batch, ExecError, Kernel, Lod, SampleRequest, Textures, LANES};
 use glsl::types::SamplerKind;
 
@@ -143,30 +145,151 @@ impl Plan {
     fn run(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
         #[cfg(target_arch = "x86_64")]
         {
-            if std::is_x86_feature_detected!("avx512f") {
-                // SAFETY: the CPU has AVX-512 F.
+            if has_avx512() {
+                // SAFETY: the CPU has the features.
                 return unsafe { self.run_avx512(batch, uniforms, textures) };
             }
-            if std::is_x86_feature_detected!("avx2") {
-                // SAFETY: the CPU has AVX2.
+            if has_avx2() {
+                // SAFETY: the CPU has the features.
                 return unsafe { self.run_avx2(batch, uniforms, textures) };
             }
         }
         self.run_with(batch, uniforms, textures)
     }
 
-    /// [`Plan::run_with`] compiled for AVX2.
+    /// [`Plan::run_in`] in AVX2 registers.
     #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
+    #[target_feature(enable = "avx2,fma")]
     unsafe fn run_avx2(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
-        self.run_with(batch, uniforms, textures)
+        // SAFETY: compiled for AVX2, which the caller's CPU has.
+        unsafe { self.run_in::<X256>(batch, uniforms, textures) }
     }
 
-    /// [`Plan::run_with`] compiled for AVX-512.
+    /// [`Plan::run_in`] in AVX-512 registers.
     #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,avx512f")]
+    #[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2,fma")]
     unsafe fn run_avx512(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
-        self.run_with(batch, uniforms, textures)
+        // SAFETY: compiled for AVX-512, which the caller's CPU has.
+        unsafe { self.run_in::<X512>(batch, uniforms, textures) }
+    }
+
+    /// [`Plan::run_with`]'s operations on all 16 lanes at once in `V`'s
+    /// registers (the same IEEE operations and flushes in the same order,
+    /// so the same bits; `lane::max`/`min` against the constant bounds of
+    /// the clamps as the unordered comparisons that pick the bound for a
+    /// NaN); the lookups' coordinates and texels, and exp's lanes, go
+    /// through arrays.
+    ///
+    /// # Safety
+    /// The CPU must have `V`'s instruction set, and this must be inlined
+    /// into code compiled for it.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn run_in<V: Lanes16>(
+        &self,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+    ) {
+        // SAFETY (of every `V` operation): the caller's contract; loads
+        // and stores are of 16-lane arrays.
+        unsafe {
+            let float = |w: usize| f32::from_bits(lane::uniform_word(uniforms, w, true));
+            let mut c = [
+                input::<V>(batch, self.color),
+                input::<V>(batch, self.color + 1),
+                input::<V>(batch, self.color + 2),
+                input::<V>(batch, self.color + 3),
+            ];
+            let cur = (batch.active | batch.helper) & FULL;
+            let (zero, one) = (V::zero(), V::splat(1.0));
+            for u in &self.units {
+                let s = input::<V>(batch, u.coord);
+                let t = input::<V>(batch, u.coord + 1);
+                let q = input::<V>(batch, u.coord + 3);
+                let unit = lane::uniform_word(uniforms, u.sampler, false);
+                let t = lookup_2d_in::<V>(textures, unit, [s, t, q], cur);
+                let mut e = [zero; 4];
+                if let Some(w) = u.env {
+                    for (k, e) in e.iter_mut().enumerate() {
+                        *e = V::splat(float(w + k));
+                    }
+                }
+                for k in 0..3 {
+                    let (ck, tk) = (c[k], t[k]);
+                    c[k] = match u.rgb {
+                        RgbOp::Color => ck,
+                        RgbOp::Texture => tk,
+                        RgbOp::Modulate => V::flush(V::mul(ck, tk)),
+                        RgbOp::MixByTextureAlpha => mix::<V>(ck, tk, t[3]),
+                        RgbOp::BlendEnv => mix::<V>(ck, e[k], tk),
+                        RgbOp::Add => V::flush(V::add(ck, tk)),
+                    };
+                }
+                let (ca, ta) = (c[3], t[3]);
+                c[3] = match u.alpha {
+                    AlphaOp::Color => ca,
+                    AlphaOp::Texture => ta,
+                    AlphaOp::Modulate => V::flush(V::mul(ca, ta)),
+                    AlphaOp::BlendEnv => mix::<V>(ca, e[3], ta),
+                    AlphaOp::Add => V::flush(V::add(ca, ta)),
+                };
+                for ck in c.iter_mut() {
+                    *ck = clamp01::<V>(*ck, zero, one);
+                }
+            }
+            if let Some(sec) = self.secondary {
+                for (k, ck) in c.iter_mut().take(3).enumerate() {
+                    let sum = V::flush(V::add(*ck, input::<V>(batch, sec + k)));
+                    *ck = clamp01::<V>(sum, zero, one);
+                }
+            }
+            if let Some(fog) = &self.fog {
+                let z = input::<V>(batch, fog.z);
+                let (density, end, scale) = (float(fog.density), float(fog.end), float(fog.scale));
+                let f = match fog.mode {
+                    FogMode::Linear => {
+                        V::flush(V::mul(V::flush(V::sub(V::splat(end), z)), V::splat(scale)))
+                    }
+                    FogMode::Exp | FogMode::Exp2 => {
+                        let mut arg = [0f32; LANES];
+                        V::store(&mut arg, z);
+                        let exp2 = fog.mode == FogMode::Exp2;
+                        for x in arg.iter_mut() {
+                            *x = if exp2 {
+                                let dz = lane::mul(density, *x);
+                                lane::exp(lane::mul(lane::neg(dz), dz))
+                            } else {
+                                lane::exp(lane::mul(lane::neg(density), *x))
+                            };
+                        }
+                        V::load(&arg)
+                    }
+                };
+                let f = clamp01::<V>(f, zero, one);
+                for (k, ck) in c.iter_mut().take(3).enumerate() {
+                    *ck = mix::<V>(V::splat(float(fog.color + k)), *ck, f);
+                }
+            }
+            batch.discarded = 0;
+            if batch.outputs.len() < self.outputs {
+                batch.outputs.resize(self.outputs, [0.0; LANES]);
+            }
+            let active = batch.active & FULL;
+            let canonical = V::splat(f32::from_bits(0x7fc0_0000));
+            for (k, ck) in c.iter().enumerate() {
+                // `lane::float_output`: NaN canonical, subnormals flushed.
+                let v = V::select(V::ordered(*ck, *ck), V::flush(*ck), canonical);
+                let Some(dst) = batch.outputs.get_mut(self.out + k) else {
+                    continue;
+                };
+                if active == FULL {
+                    V::store(dst, v);
+                } else {
+                    V::store_masked(dst, V::mask(active), v);
+                }
+            }
+        }
     }
 
     /// The kernel's run on `batch`: every lane (helpers included, for the
@@ -298,6 +421,114 @@ fn each3(a: &Lanes, b: &Lanes, c: &Lanes, op: impl Fn(f32, f32, f32) -> f32) -> 
         out[l] = op(a[l], b[l], c[l]);
     }
     out
+}
+
+/// Whether the CPU runs [`Plan::run_avx2`].
+#[cfg(target_arch = "x86_64")]
+fn has_avx2() -> bool {
+    std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
+}
+
+/// Whether the CPU runs [`Plan::run_avx512`].
+#[cfg(target_arch = "x86_64")]
+fn has_avx512() -> bool {
+    has_avx2()
+        && std::is_x86_feature_detected!("avx512f")
+        && std::is_x86_feature_detected!("avx512bw")
+        && std::is_x86_feature_detected!("avx512dq")
+        && std::is_x86_feature_detected!("avx512vl")
+}
+
+/// Input component `i` of `batch`, flushed (zeros past the inputs).
+///
+/// # Safety
+/// As for [`Plan::run_in`].
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn input<V: Lanes16>(batch: &Batch, i: usize) -> V::F {
+    // SAFETY: the caller's contract.
+    unsafe {
+        match batch.inputs.get(i) {
+            Some(v) => V::flush(V::load(v)),
+            None => V::zero(),
+        }
+    }
+}
+
+/// `lane::mix` on every lane.
+///
+/// # Safety
+/// As for [`Plan::run_in`].
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn mix<V: Lanes16>(x: V::F, y: V::F, t: V::F) -> V::F {
+    // SAFETY: the caller's contract.
+    unsafe {
+        let a = V::flush(V::mul(x, V::sub(V::splat(1.0), t)));
+        V::flush(V::add(a, V::flush(V::mul(y, t))))
+    }
+}
+
+/// `lane::clamp(x, 0, 1)` on every lane (`zero`, `one`: those splatted):
+/// `lane::max(x, 0)` is 0 where `!(x >= 0)`, `lane::min(m, 1)` is 1 where
+/// `!(m <= 1)` (the bounds are not NaN), then the flush.
+///
+/// # Safety
+/// As for [`Plan::run_in`].
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn clamp01<V: Lanes16>(x: V::F, zero: V::F, one: V::F) -> V::F {
+    // SAFETY: the caller's contract.
+    unsafe {
+        let m = V::select(V::lt_or_nan(x, zero), zero, x);
+        V::flush(V::select(V::gt_or_nan(m, one), one, m))
+    }
+}
+
+/// [`lookup_2d`] of flushed `(s, t, q)` in `V`'s registers, the texels
+/// (flushed) returned in them.
+///
+/// # Safety
+/// As for [`Plan::run_in`].
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn lookup_2d_in<V: Lanes16>(
+    textures: &dyn Textures,
+    unit: u32,
+    [s, t, q]: [V::F; 3],
+    cur: u32,
+) -> [V::F; 4] {
+    let mut out = [[0f32; LANES]; 4];
+    // SAFETY: the caller's contract.
+    unsafe {
+        if cur != 0 {
+            let mut req = SampleRequest {
+                unit: [unit; LANES],
+                target: SamplerKind::Sampler2D,
+                coord: [[0.0; LANES], [0.0; LANES], [0.0; LANES], [1.0; LANES]],
+                compare: None,
+                lod: Lod::Derivatives {
+                    ddx: [[0.0; LANES]; 3],
+                    ddy: [[0.0; LANES]; 3],
+                    bias: [0.0; LANES],
+                },
+                mask: cur,
+            };
+            V::store(&mut req.coord[0], V::flush(V::div(s, q)));
+            V::store(&mut req.coord[1], V::flush(V::div(t, q)));
+            if let Lod::Derivatives { ddx, ddy, .. } = &mut req.lod {
+                for k in 0..2 {
+                    (ddx[k], ddy[k]) = lane::quad_diffs(&req.coord[k]);
+                }
+            }
+            textures.sample(&req, &mut out);
+        }
+        let mut texel = [V::zero(); 4];
+        for (v, o) in texel.iter_mut().zip(&out) {
+            *v = V::flush(V::load(o));
+        }
+        texel
+    }
 }
 
 /// `texture2DProj` of unit `unit` at `(s, t, _, q)` on the lanes `cur`,
@@ -585,15 +816,15 @@ mod tests {
                 plan.run_with(&mut variants[0], &uniforms, &textures);
                 #[cfg(target_arch = "x86_64")]
                 {
-                    if std::is_x86_feature_detected!("avx2") {
+                    if has_avx2() {
                         let mut b = batch.clone();
-                        // SAFETY: the CPU has AVX2.
+                        // SAFETY: the CPU has the features.
                         unsafe { plan.run_avx2(&mut b, &uniforms, &textures) };
                         variants.push(b);
                     }
-                    if std::is_x86_feature_detected!("avx512f") {
+                    if has_avx512() {
                         let mut b = batch.clone();
-                        // SAFETY: the CPU has AVX-512 F.
+                        // SAFETY: the CPU has the features.
                         unsafe { plan.run_avx512(&mut b, &uniforms, &textures) };
                         variants.push(b);
                     }

@@ -4,11 +4,11 @@
 
 use crate::framebuffer::{depth_to_fixed, float_to_unorm8, ColorBuffer, DEPTH_MAX};
 use crate::framebuffer::{Framebuffer, MAX_DRAW_BUFFERS};
-#[cfg(target_arch = "x86_64")]
-use crate::simd::lanes::{Lanes16, X256, X512};
 use crate::state::{
     Blend, BlendEquation, BlendFactor, CompareFunc, PipelineState, Rect, StencilFace, StencilOp,
 };
+#[cfg(target_arch = "x86_64")]
+use exec::lanes16::{Lanes16, X256, X512};
 
 /// One shaded fragment ready for the per-fragment operations.
 pub(crate) struct Fragment {

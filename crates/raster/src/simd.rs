@@ -50,9 +50,6 @@ impl Isa {
     }
 }
 
-#[cfg(target_arch = "x86_64")]
-pub(crate) mod lanes;
-
 static CHOSEN: AtomicU8 = AtomicU8::new(0);
 
 /// The variant to use: the best the CPU runs, or the one

@@ -34,7 +34,7 @@
 //! RGBA8 levels with REPEAT or CLAMP_TO_EDGE wrapping whose lanes read
 //! one level per level pass, filter, blend the two levels and select the
 //! output there too (module `wide`, written once over
-//! `simd::lanes::Lanes16`: one AVX-512 register or two AVX2 ones per
+//! `exec::lanes16::Lanes16`: one AVX-512 register or two AVX2 ones per
 //! value), the two texels of each row read by one 64-bit gather when no
 //! lane is at a wrap edge.
 //! Tests compare every variant the CPU has with the general path on
@@ -51,7 +51,7 @@ use std::sync::Arc;
 #[cfg(target_arch = "x86_64")]
 mod wide;
 #[cfg(target_arch = "x86_64")]
-use crate::simd::lanes::{X256, X512};
+use exec::lanes16::{X256, X512};
 
 /// Levels a request can address on this path (absolute level numbers):
 /// more is a 2^31-texel texture, which takes the general path.

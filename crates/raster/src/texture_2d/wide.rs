@@ -17,8 +17,8 @@
 //! row is read by one 64-bit gather per lane instead of two 32-bit ones.
 
 use super::{LevelTable, Store, LANES, UNORM8_INV};
-use crate::simd::lanes::Lanes16;
 use crate::texture::{Texture, Wrap};
+use exec::lanes16::Lanes16;
 
 /// Samples level `level[0]` (and `level[1]`, blended by `f` on the lanes
 /// in `two`) at `st` into the lanes `mask` of `out` (LINEAR, or NEAREST

@@ -3,9 +3,9 @@
 //! mask registers) and [`X256`] (two AVX2 registers per value, masks as
 //! all-ones lanes). Code written once against [`Lanes16`] and inlined
 //! into a `#[target_feature]` function of the matching set keeps its
-//! values in registers between steps; the texture filter of
-//! `texture_2d::wide` and the strip write of `fragment_ops` are written
-//! this way.
+//! values in registers between steps; `raster`'s texture filter and
+//! strip write and `gl`'s fixed-function fragment stage are written this
+//! way.
 //!
 //! Every operation is the same IEEE operation in both sets (a lane's
 //! result never depends on which set computed it), so the bits agree;
@@ -25,7 +25,7 @@ use std::arch::x86_64::*;
 
 /// Sixteen lanes of f32 ([`Lanes16::F`]), i32 ([`Lanes16::I`]) and
 /// lane masks ([`Lanes16::M`]); see the module documentation.
-pub(crate) trait Lanes16 {
+pub trait Lanes16 {
     type F: Copy;
     type I: Copy;
     type M: Copy;
@@ -64,6 +64,12 @@ pub(crate) trait Lanes16 {
     unsafe fn gt(a: Self::F, b: Self::F) -> Self::M;
     /// Neither NaN.
     unsafe fn ordered(a: Self::F, b: Self::F) -> Self::M;
+    /// `!(a >= b)`: a < b, or either NaN.
+    unsafe fn lt_or_nan(a: Self::F, b: Self::F) -> Self::M;
+    /// `!(a <= b)`: a > b, or either NaN.
+    unsafe fn gt_or_nan(a: Self::F, b: Self::F) -> Self::M;
+    /// A subnormal made zero of its sign ([`crate::lane::flush`]).
+    unsafe fn flush(a: Self::F) -> Self::F;
     /// `yes` on the lanes of `m`, else `no`.
     unsafe fn select(m: Self::M, yes: Self::F, no: Self::F) -> Self::F;
     /// `a` on the lanes of `m`, else +0.
@@ -121,7 +127,7 @@ pub(crate) trait Lanes16 {
 }
 
 /// [`Lanes16`] in one AVX-512 register per value.
-pub(crate) struct X512;
+pub struct X512;
 
 impl Lanes16 for X512 {
     type F = __m512;
@@ -223,6 +229,25 @@ impl Lanes16 for X512 {
     #[inline(always)]
     unsafe fn ordered(a: __m512, b: __m512) -> __mmask16 {
         unsafe { _mm512_cmp_ps_mask::<_CMP_ORD_Q>(a, b) }
+    }
+    #[inline(always)]
+    unsafe fn lt_or_nan(a: __m512, b: __m512) -> __mmask16 {
+        unsafe { _mm512_cmp_ps_mask::<_CMP_NGE_UQ>(a, b) }
+    }
+    #[inline(always)]
+    unsafe fn gt_or_nan(a: __m512, b: __m512) -> __mmask16 {
+        unsafe { _mm512_cmp_ps_mask::<_CMP_NLE_UQ>(a, b) }
+    }
+    #[inline(always)]
+    unsafe fn flush(a: __m512) -> __m512 {
+        unsafe {
+            let b = _mm512_castps_si512(a);
+            // Lanes with a nonzero exponent keep their bits, the others
+            // their sign.
+            let normal = _mm512_test_epi32_mask(b, _mm512_set1_epi32(0x7f80_0000));
+            let sign = _mm512_and_si512(b, _mm512_set1_epi32(i32::MIN));
+            _mm512_castsi512_ps(_mm512_mask_mov_epi32(sign, normal, b))
+        }
     }
     #[inline(always)]
     unsafe fn select(m: __mmask16, yes: __m512, no: __m512) -> __m512 {
@@ -349,7 +374,7 @@ impl Lanes16 for X512 {
 }
 
 /// [`Lanes16`] in two AVX2 registers per value (lanes 0–7, 8–15).
-pub(crate) struct X256;
+pub struct X256;
 
 /// Two halves: `f(a.0, b.0), f(a.1, b.1)`.
 macro_rules! halves {
@@ -530,6 +555,39 @@ impl Lanes16 for X256 {
                 _mm256_cmp_ps::<_CMP_ORD_Q>(a[0], b[0]),
                 _mm256_cmp_ps::<_CMP_ORD_Q>(a[1], b[1]),
             ]
+        }
+    }
+    #[inline(always)]
+    unsafe fn lt_or_nan(a: [__m256; 2], b: [__m256; 2]) -> [__m256; 2] {
+        unsafe {
+            [
+                _mm256_cmp_ps::<_CMP_NGE_UQ>(a[0], b[0]),
+                _mm256_cmp_ps::<_CMP_NGE_UQ>(a[1], b[1]),
+            ]
+        }
+    }
+    #[inline(always)]
+    unsafe fn gt_or_nan(a: [__m256; 2], b: [__m256; 2]) -> [__m256; 2] {
+        unsafe {
+            [
+                _mm256_cmp_ps::<_CMP_NLE_UQ>(a[0], b[0]),
+                _mm256_cmp_ps::<_CMP_NLE_UQ>(a[1], b[1]),
+            ]
+        }
+    }
+    #[inline(always)]
+    unsafe fn flush(a: [__m256; 2]) -> [__m256; 2] {
+        unsafe {
+            let mut out = a;
+            for (o, a) in out.iter_mut().zip(a) {
+                let b = _mm256_castps_si256(a);
+                // A zero exponent clears every bit but the sign.
+                let e = _mm256_and_si256(b, _mm256_set1_epi32(0x7f80_0000));
+                let zero = _mm256_cmpeq_epi32(e, _mm256_setzero_si256());
+                let clear = _mm256_and_si256(zero, _mm256_set1_epi32(i32::MAX));
+                *o = _mm256_castsi256_ps(_mm256_andnot_si256(clear, b));
+            }
+            out
         }
     }
     #[inline(always)]
