@@ -456,6 +456,7 @@ impl Shape {
                 if r.0 >= r.2 || r.1 >= r.3 {
                     return;
                 }
+                let small = small_edges(p, r);
                 triangle_quads_each(
                     p,
                     *sign,
@@ -463,7 +464,11 @@ impl Shape {
                     #[inline(always)]
                     |qx, qy, mask, s| {
                         if mask != 0 {
-                            quad_from_edges(&s.values(), *inv_area2, v, &mut q);
+                            if small {
+                                (q.weights, q.z) = barycentrics(&s.values_f64(), *inv_area2, v);
+                            } else {
+                                quad_from_edges(&s.values(), *inv_area2, v, &mut q);
+                            }
                             f(qx, qy, mask, &mut q);
                         }
                     },
@@ -876,6 +881,34 @@ impl QuadEdges {
     fn values(&self) -> [[i64; 4]; 3] {
         std::array::from_fn(|j| self.over[j].to_array().map(|v| v + self.threshold[j]))
     }
+
+    /// [`QuadEdges::values`] as f64, for a triangle for which
+    /// [`small_edges`] holds (then they are exact).
+    #[inline(always)]
+    fn values_f64(&self) -> [[f64; 4]; 3] {
+        let [a, b, c] = &self.over;
+        let t = &self.threshold;
+        [
+            a.to_f64_plus(t[0]),
+            b.to_f64_plus(t[1]),
+            c.to_f64_plus(t[2]),
+        ]
+    }
+}
+
+/// Whether the edge values of triangle `p` at the pixels of `r` are
+/// below 2^51 in magnitude, as [`QuadEdges::values_f64`] needs: fixed-
+/// point coordinates and pixel positions below 2^23 bound every
+/// difference by 2^24 and each product of the edge function by 2^48.
+#[inline(always)]
+fn small_edges(p: &[(i64, i64); 3], r: PixelRect) -> bool {
+    const LIMIT: i64 = 1 << 23;
+    let pixel = |c: i64| c.abs() < LIMIT / ONE - 2;
+    p.iter().all(|&(x, y)| x.abs() < LIMIT && y.abs() < LIMIT)
+        && pixel(r.0)
+        && pixel(r.1)
+        && pixel(r.2)
+        && pixel(r.3)
 }
 
 /// Four i64, one per pixel of a quad: two SSE2 registers on x86-64 (the
@@ -957,6 +990,35 @@ impl Quad4 {
         }
     }
 
+    /// `self + k` as f64, exact for sums in [−2^51, 2^51) (the caller's
+    /// bound): on x86-64 the sum added to the bits of 1.5·2^52 and that
+    /// value subtracted as a double (before AVX-512 there is no 64-bit
+    /// integer conversion instruction); zero gives +0, as `as` does.
+    #[inline(always)]
+    fn to_f64_plus(self, k: i64) -> [f64; 4] {
+        #[cfg(target_arch = "x86_64")]
+        {
+            const MAGIC: f64 = 6_755_399_441_055_744.0; // 1.5 · 2^52
+            let mut out = [0f64; 4];
+            // SAFETY: SSE2 is part of the x86-64 baseline; the stores
+            // write the four elements of `out`, two at a time.
+            unsafe {
+                use std::arch::x86_64::*;
+                let bias = _mm_set1_epi64x((MAGIC.to_bits() as i64).wrapping_add(k));
+                let m = _mm_set1_pd(MAGIC);
+                for (h, v) in self.v.iter().enumerate() {
+                    let x = _mm_castsi128_pd(_mm_add_epi64(*v, bias));
+                    _mm_storeu_pd(out.as_mut_ptr().add(2 * h), _mm_sub_pd(x, m));
+                }
+            }
+            out
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            self.v.map(|x| x.wrapping_add(k) as f64)
+        }
+    }
+
     #[inline(always)]
     fn to_array(self) -> [i64; 4] {
         #[cfg(target_arch = "x86_64")]
@@ -1021,6 +1083,59 @@ mod tests {
             }
         }
         hits
+    }
+
+    #[test]
+    fn quad4_to_f64_is_exact_within_its_bound() {
+        let big = (1i64 << 51) - 1;
+        let mut xs = vec![0, 1, -1, big, -big - 1, big - 7, -big + 3, 255, -256];
+        let mut state = 0x1234_5678_9abc_def1u64;
+        for _ in 0..2000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            xs.push((state as i64) >> (13 + state % 40));
+        }
+        for (i, &x) in xs.iter().enumerate() {
+            for k in [0i64, 1, -1] {
+                let Some(sum) = x.checked_add(k).filter(|s| (-big - 1..=big).contains(s)) else {
+                    continue;
+                };
+                let q = Quad4::new([x, xs[(i + 1) % xs.len()] / 2, 0, -x / 3]);
+                let got = q.to_f64_plus(k);
+                let want = q.to_array().map(|v| (v + k) as f64);
+                assert_eq!(
+                    got.map(f64::to_bits),
+                    want.map(f64::to_bits),
+                    "{x} + {k} ({sum})"
+                );
+            }
+        }
+    }
+
+    /// The walk's quads carry the z and barycentrics `interp_quad_z`
+    /// gives each quad (small triangles through the f64 conversion, large
+    /// ones through the integers).
+    #[test]
+    fn quads_z_each_gives_each_quads_interpolation() {
+        let triangles = random_triangles(0x5DEE_CE66_D1CE_4E5B, 3000);
+        let mut seen = 0;
+        for (v, t, qx, qy) in triangles {
+            let clip = (qx - 6, qy - 6, qx + 10, qy + 8);
+            let mut quads = Vec::new();
+            t.quads_z_each(clip, &mut quads, |x, y, _, q| {
+                let mut want = QuadInterp::default();
+                t.interp_quad_z(Isa::Base, x, y, &mut want);
+                let bits = |q: &QuadInterp| {
+                    let mut out: Vec<u64> = q.z.iter().map(|x| x.to_bits()).collect();
+                    out.extend(q.weights.iter().flatten().map(|x| x.to_bits()));
+                    out
+                };
+                assert_eq!(bits(q), bits(&want), "{v:?} at {x},{y}");
+                seen += 1;
+            });
+        }
+        assert!(seen > 1000, "{seen} quads");
     }
 
     #[test]
