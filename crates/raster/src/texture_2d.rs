@@ -1770,7 +1770,8 @@ mod bench {
     /// each instruction set's fast path and the general path.
     /// `BENCH_ISA=Avx2` (or `Portable`, `Avx512`) times that variant
     /// alone (for profilers), `BENCH_ROUNDS=N` rounds of each (15),
-    /// `BENCH_FILTERS=all` also LINEAR and NEAREST without mipmaps.
+    /// `BENCH_FILTERS=all` also LINEAR and NEAREST without mipmaps
+    /// (`linear`, `nearest`: that one alone).
     #[test]
     #[ignore]
     fn bench_sample_2d() {
@@ -1814,11 +1815,15 @@ mod bench {
         }
         // The scene's filter; then LINEAR and NEAREST without mipmaps
         // (`BENCH_FILTERS=all`).
-        let mut filters = vec![(MinFilter::LinearMipmapLinear, MagFilter::Linear)];
-        if std::env::var("BENCH_FILTERS").is_ok_and(|v| v == "all") {
-            filters.push((MinFilter::Linear, MagFilter::Linear));
-            filters.push((MinFilter::Nearest, MagFilter::Nearest));
-        }
+        let trilinear = (MinFilter::LinearMipmapLinear, MagFilter::Linear);
+        let linear = (MinFilter::Linear, MagFilter::Linear);
+        let nearest = (MinFilter::Nearest, MagFilter::Nearest);
+        let filters = match std::env::var("BENCH_FILTERS").as_deref() {
+            Ok("all") => vec![trilinear, linear, nearest],
+            Ok("linear") => vec![linear],
+            Ok("nearest") => vec![nearest],
+            _ => vec![trilinear],
+        };
         for (min_filter, mag_filter) in filters {
             let mut tex = tex.clone();
             tex.min_filter = min_filter;
