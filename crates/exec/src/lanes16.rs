@@ -124,7 +124,25 @@ pub trait Lanes16 {
     /// column) in the pixel order of [`Lanes16::load_rows`]: lanes 0, 1,
     /// 4, 5, 8, 9, 12, 13, then 2, 3, 6, 7, 10, 11, 14, 15.
     unsafe fn quads_to_rows(a: Self::F) -> Self::F;
+
+    /// `k / 255` for bytes k (0–255), correctly rounded (the division's
+    /// bits) without a division: `q = k · fl(1/255)` is within an ulp,
+    /// and one correction by the exact residual `k − 255·q` (fused
+    /// multiply-adds) rounds it correctly; a test checks every byte.
+    #[inline(always)]
+    unsafe fn unorm8(k: Self::I) -> Self::F {
+        unsafe {
+            let x = Self::to_f(k);
+            let inv = Self::splat(UNORM8_INV);
+            let q = Self::mul(x, inv);
+            let residual = Self::fnmadd(q, Self::splat(255.0), x);
+            Self::fmadd(residual, inv, q)
+        }
+    }
 }
+
+/// `fl(1/255)`.
+pub const UNORM8_INV: f32 = 1.0 / 255.0;
 
 /// [`Lanes16`] in one AVX-512 register per value.
 pub struct X512;
@@ -820,5 +838,54 @@ impl Lanes16 for X256 {
                 _mm256_permute2f128_ps::<0x31>(a0, a1),
             ]
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// [`Lanes16::unorm8`] of every byte is the division's, in both sets
+    /// the CPU has.
+    #[test]
+    fn unorm8_is_the_division() {
+        let want: Vec<u32> = (0..256).map(|k| (k as f32 / 255.0).to_bits()).collect();
+        let mut got = Vec::new();
+        for chunk in 0..16 {
+            let k: [i32; 16] = std::array::from_fn(|l| (16 * chunk + l) as i32);
+            let mut out = [0f32; 16];
+            if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+                // SAFETY: the CPU has the features; `unorm8_avx2` is
+                // compiled for them.
+                unsafe { unorm8_avx2(&k, &mut out) };
+                got.extend(out.map(f32::to_bits));
+            }
+        }
+        if !got.is_empty() {
+            assert_eq!(got, want);
+        }
+        let mut got = Vec::new();
+        for chunk in 0..16 {
+            let k: [i32; 16] = std::array::from_fn(|l| (16 * chunk + l) as i32);
+            let mut out = [0f32; 16];
+            if std::is_x86_feature_detected!("avx512f") {
+                // SAFETY: as above.
+                unsafe { unorm8_avx512(&k, &mut out) };
+                got.extend(out.map(f32::to_bits));
+            }
+        }
+        if !got.is_empty() {
+            assert_eq!(got, want);
+        }
+    }
+
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn unorm8_avx2(k: &[i32; 16], out: &mut [f32; 16]) {
+        unsafe { X256::store(out, X256::unorm8(X256::load_i(k))) }
+    }
+
+    #[target_feature(enable = "avx512f")]
+    unsafe fn unorm8_avx512(k: &[i32; 16], out: &mut [f32; 16]) {
+        unsafe { X512::store(out, X512::unorm8(X512::load_i(k))) }
     }
 }

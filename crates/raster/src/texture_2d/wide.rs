@@ -9,14 +9,14 @@
 //!
 //! The operations are the portable code's, in its order (floors by the
 //! rounding instruction as [`super::floor_of`] allows, the RGBA8
-//! conversion by [`super::combine_unorm8_avx2`]'s fused correction), so
+//! conversion by [`Lanes16::unorm8`]'s fused correction), so
 //! the same bits; what differs is that the level's size is a scalar, all
 //! sixteen lanes stay in registers, no array goes through memory between
 //! the steps, and when the two texels of each row are neighbours in
 //! memory (every lane's i1 = i0 + 1, i.e. no lane at the wrap edge), each
 //! row is read by one 64-bit gather per lane instead of two 32-bit ones.
 
-use super::{LevelTable, Store, LANES, UNORM8_INV};
+use super::{LevelTable, Store, LANES};
 use crate::texture::{Texture, Wrap};
 use exec::lanes16::Lanes16;
 
@@ -329,18 +329,18 @@ unsafe fn combine<V: Lanes16>(corners: &Corners<V>, nearest: u32, near: V::M) ->
         let mut out = [V::zero(); 4];
         if nearest == 0xffff {
             for (c, o) in out.iter_mut().enumerate() {
-                *o = unorm8::<V>(V::byte(raw[0], c));
+                *o = V::unorm8(V::byte(raw[0], c));
             }
             return out;
         }
         for (c, o) in out.iter_mut().enumerate() {
-            let t0 = unorm8::<V>(V::byte(raw[0], c));
+            let t0 = V::unorm8(V::byte(raw[0], c));
             // The sum starts at 0 in the portable code: 0 + x is x for
             // every product here (a weight and a texel are +0 or more, or
             // NaN).
             let mut acc = V::mul(wgt[0], t0);
             for k in 1..4 {
-                let tk = unorm8::<V>(V::byte(raw[k], c));
+                let tk = V::unorm8(V::byte(raw[k], c));
                 acc = V::add(acc, V::mul(wgt[k], tk));
             }
             *o = if nearest == 0 {
@@ -350,18 +350,5 @@ unsafe fn combine<V: Lanes16>(corners: &Corners<V>, nearest: u32, near: V::M) ->
             };
         }
         out
-    }
-}
-
-/// `unorm8` of every lane (bytes k in 0..=255): k/255 correctly rounded,
-/// by `combine_unorm8_avx2`'s fused correction.
-#[inline(always)]
-unsafe fn unorm8<V: Lanes16>(k: V::I) -> V::F {
-    unsafe {
-        let x = V::to_f(k);
-        let inv = V::splat(UNORM8_INV);
-        let q = V::mul(x, inv);
-        let residual = V::fnmadd(q, V::splat(255.0), x);
-        V::fmadd(residual, inv, q)
     }
 }
