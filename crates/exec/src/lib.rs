@@ -118,6 +118,10 @@
 //! variable `SHADERBOX_KERNEL=jit|portable|avx2|avx512`); every variant
 //! computes the same bits (tested).
 //!
+//! [`lanes16`] (x86-64) is the 16 lanes in AVX2 or AVX-512 registers
+//! behind one trait, for code outside the engine written once for both
+//! (raster's texture filter and strip write, gl's fixed-function stage).
+//!
 //! ## Native code
 //! The default variant, `jit` (cargo feature `jit`, on by default), turns a
 //! kernel's rewritten program into one machine function with Cranelift

@@ -12,7 +12,8 @@
 //!
 //! It covers the shapes whose lookups are all `texture2DProj` (any
 //! texture environment, color sum, any fog mode); other shapes, and the
-//! debugger's traced runs, use the kernel itself.
+//! debugger's traced runs, use the kernel itself. On x86-64 with AVX2 or
+//! AVX-512 the run keeps the 16 lanes in registers ([`exec::lanes16`]).
 
 use crate::ffgen::{AlphaOp, FogMode, FragmentShape, Lookup, RgbOp};
 use exec::lane::{self, flush, FULL};

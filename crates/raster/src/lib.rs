@@ -126,9 +126,10 @@
 //! over the 16 lanes at once with the general path's operations in the
 //! same order (the same bits; `texture_2d.rs` tests compare the two): on the
 //! benchmark's textured scene it cut sampling's share of the profile from
-//! about 45 % to about 25 %, and its AVX-512 variant's filtering of RGBA8
-//! levels in 512-bit registers (`texture_2d/wide.rs`) to about 17 % (see
-//! docs/PERFORMANCE.md). Level of detail is
+//! about 45 % to about 25 %, and its x86 variants' filtering of RGBA8
+//! levels in vector registers (`texture_2d/wide.rs`, over
+//! `exec::lanes16::Lanes16`: AVX-512, or two AVX2 registers per value) to
+//! about 17 % (see docs/PERFORMANCE.md). Level of detail is
 //! per fragment, from that fragment's own derivatives (not per 2×2 quad).
 //! Blending with FUNC_ADD and SRC_ALPHA/ONE_MINUS_SRC_ALPHA, ONE/ZERO or
 //! ONE/ONE into an RGBA8 buffer runs as straight-line code with the
