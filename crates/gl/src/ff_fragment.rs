@@ -503,25 +503,10 @@ unsafe fn lookup_2d_in<V: Lanes16>(
     // SAFETY: the caller's contract.
     unsafe {
         if cur != 0 {
-            let mut req = SampleRequest {
-                unit: [unit; LANES],
-                target: SamplerKind::Sampler2D,
-                coord: [[0.0; LANES], [0.0; LANES], [0.0; LANES], [1.0; LANES]],
-                compare: None,
-                lod: Lod::Derivatives {
-                    ddx: [[0.0; LANES]; 3],
-                    ddy: [[0.0; LANES]; 3],
-                    bias: [0.0; LANES],
-                },
-                mask: cur,
-            };
+            let mut req = request_2d(unit, cur);
             V::store(&mut req.coord[0], V::flush(V::div(s, q)));
             V::store(&mut req.coord[1], V::flush(V::div(t, q)));
-            if let Lod::Derivatives { ddx, ddy, .. } = &mut req.lod {
-                for k in 0..2 {
-                    (ddx[k], ddy[k]) = lane::quad_diffs(&req.coord[k]);
-                }
-            }
+            implicit_lod(&mut req);
             textures.sample(&req, &mut out);
         }
         let mut texel = [V::zero(); 4];
@@ -529,6 +514,35 @@ unsafe fn lookup_2d_in<V: Lanes16>(
             *v = V::flush(V::load(o));
         }
         texel
+    }
+}
+
+/// A 2D lookup of unit `unit` on the lanes `cur` with an implicit LOD,
+/// its coordinates (and derivatives: [`implicit_lod`]) for the caller to
+/// set.
+#[inline(always)]
+fn request_2d(unit: u32, cur: u32) -> SampleRequest {
+    SampleRequest {
+        unit: [unit; LANES],
+        target: SamplerKind::Sampler2D,
+        coord: [[0.0; LANES], [0.0; LANES], [0.0; LANES], [1.0; LANES]],
+        compare: None,
+        lod: Lod::Derivatives {
+            ddx: [[0.0; LANES]; 3],
+            ddy: [[0.0; LANES]; 3],
+            bias: [0.0; LANES],
+        },
+        mask: cur,
+    }
+}
+
+/// The derivatives of `req`'s s and t: their quad differences.
+#[inline(always)]
+fn implicit_lod(req: &mut SampleRequest) {
+    if let Lod::Derivatives { ddx, ddy, .. } = &mut req.lod {
+        for k in 0..2 {
+            (ddx[k], ddy[k]) = lane::quad_diffs(&req.coord[k]);
+        }
     }
 }
 
@@ -549,27 +563,12 @@ fn lookup_2d(
 ) {
     *out = [[0f32; LANES]; 4];
     if cur != 0 {
-        let mut req = SampleRequest {
-            unit: [unit; LANES],
-            target: SamplerKind::Sampler2D,
-            coord: [[0.0; LANES], [0.0; LANES], [0.0; LANES], [1.0; LANES]],
-            compare: None,
-            lod: Lod::Derivatives {
-                ddx: [[0.0; LANES]; 3],
-                ddy: [[0.0; LANES]; 3],
-                bias: [0.0; LANES],
-            },
-            mask: cur,
-        };
+        let mut req = request_2d(unit, cur);
         for l in 0..LANES {
             req.coord[0][l] = lane::div(s[l], q[l]);
             req.coord[1][l] = lane::div(t[l], q[l]);
         }
-        if let Lod::Derivatives { ddx, ddy, .. } = &mut req.lod {
-            for k in 0..2 {
-                (ddx[k], ddy[k]) = lane::quad_diffs(&req.coord[k]);
-            }
-        }
+        implicit_lod(&mut req);
         textures.sample(&req, out);
     }
     for c in out.iter_mut() {

@@ -616,18 +616,26 @@ fn signed_edges<const N: usize>(
     ox: &[i64; N],
     oy: &[i64; N],
 ) -> [[i64; N]; 3] {
-    let (cx, cy) = (qx * ONE + HALF, qy * ONE + HALF);
     let mut s = [[0i64; N]; 3];
-    for (j, sj) in s.iter_mut().enumerate() {
-        let (pa, pb) = (p[(j + 1) % 3], p[(j + 2) % 3]);
-        let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
-        let e0 = ex * (cy - pa.1) - ey * (cx - pa.0);
-        let (dx, dy) = (-ey * ONE, ex * ONE);
+    for (sj, (e0, dx, dy)) in s.iter_mut().zip(edge_forms(p, sign, (qx, qy))) {
         for l in 0..N {
-            sj[l] = sign * (e0 + ox[l] * dx + oy[l] * dy);
+            sj[l] = e0 + ox[l] * dx + oy[l] * dy;
         }
     }
     s
+}
+
+/// Per edge `j`, the orientation times [`edge`] `j` at the center of
+/// pixel (qx, qy) and its steps per pixel in x and y (integers).
+#[inline(always)]
+fn edge_forms(p: &[(i64, i64); 3], sign: i64, (qx, qy): (i64, i64)) -> [(i64, i64, i64); 3] {
+    let (cx, cy) = (qx * ONE + HALF, qy * ONE + HALF);
+    std::array::from_fn(|j| {
+        let (pa, pb) = (p[(j + 1) % 3], p[(j + 2) % 3]);
+        let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
+        let e0 = ex * (cy - pa.1) - ey * (cx - pa.0);
+        (sign * e0, sign * -ey * ONE, sign * ex * ONE)
+    })
 }
 
 /// [`signed_edges`] in f64 arithmetic, for a triangle whose fixed-point
@@ -650,14 +658,10 @@ fn signed_edges_f64<const N: usize>(
     if !pixels || !p.iter().all(|&(x, y)| small(x) && small(y)) {
         return None;
     }
-    let (cx, cy) = (qx * ONE + HALF, qy * ONE + HALF);
     let mut s = [[0.0f64; N]; 3];
-    for (j, sj) in s.iter_mut().enumerate() {
-        let (pa, pb) = (p[(j + 1) % 3], p[(j + 2) % 3]);
-        let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
-        // The orientation applied to the integers (a zero stays +0).
-        let e0 = (sign * (ex * (cy - pa.1) - ey * (cx - pa.0))) as f64;
-        let (dx, dy) = ((sign * -ey * ONE) as f64, (sign * ex * ONE) as f64);
+    for (sj, (e0, dx, dy)) in s.iter_mut().zip(edge_forms(p, sign, (qx, qy))) {
+        // (The orientation is in the integers: a zero stays +0.)
+        let (e0, dx, dy) = (e0 as f64, dx as f64, dy as f64);
         for l in 0..N {
             sj[l] = e0 + ox[l] * dx + oy[l] * dy;
         }
