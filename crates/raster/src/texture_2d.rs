@@ -198,10 +198,14 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
     let Some(&unit_index) = req.unit.get(first) else {
         return false;
     };
-    for lane in 0..LANES {
-        if req.mask & (1 << lane) != 0 && req.unit[lane] != unit_index {
-            return false;
-        }
+    // Every lane of the mask on that unit (bits of the lanes on another,
+    // branch-free so that the loop vectorizes).
+    let mut other = 0u32;
+    for (lane, &u) in req.unit.iter().enumerate() {
+        other |= u32::from(u != unit_index) << lane;
+    }
+    if other & req.mask != 0 {
+        return false;
     }
     let Some(unit) = units.units.get(unit_index as usize) else {
         return false;
