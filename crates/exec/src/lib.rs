@@ -317,6 +317,43 @@ pub trait Textures {
     /// Samples for the lanes in `req.mask`, writing RGBA into `out`
     /// (component-major: `out[c][lane]`).
     fn sample(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]);
+
+    /// [`Textures::sample`] of a `sampler2D` lookup of unit `unit` on the
+    /// lanes `mask` at `(s, t)` (after any projective divide) with the
+    /// implicit LOD: derivatives the quad differences of s and t
+    /// ([`lane::quad_diffs`]), no bias. The same results as the request;
+    /// an implementation may sample without building it.
+    fn sample_2d_implicit(
+        &self,
+        unit: u32,
+        st: [&[f32; LANES]; 2],
+        mask: LaneMask,
+        out: &mut [[f32; LANES]; 4],
+    ) {
+        self.sample(&implicit_2d_request(unit, st, mask), out);
+    }
+}
+
+/// The request [`Textures::sample_2d_implicit`] describes.
+pub fn implicit_2d_request(unit: u32, st: [&[f32; LANES]; 2], mask: LaneMask) -> SampleRequest {
+    let mut req = SampleRequest {
+        unit: [unit; LANES],
+        target: SamplerKind::Sampler2D,
+        coord: [*st[0], *st[1], [0.0; LANES], [1.0; LANES]],
+        compare: None,
+        lod: Lod::Derivatives {
+            ddx: [[0.0; LANES]; 3],
+            ddy: [[0.0; LANES]; 3],
+            bias: [0.0; LANES],
+        },
+        mask,
+    };
+    if let Lod::Derivatives { ddx, ddy, .. } = &mut req.lod {
+        for k in 0..2 {
+            (ddx[k], ddy[k]) = lane::quad_diffs(&req.coord[k]);
+        }
+    }
+    req
 }
 
 /// A [`Textures`] with no texture bound: every lookup gives (0, 0, 0, 1).

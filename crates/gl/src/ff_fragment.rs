@@ -19,8 +19,7 @@ use crate::ffgen::{AlphaOp, FogMode, FragmentShape, Lookup, RgbOp};
 use exec::lane::{self, flush, FULL};
 #[cfg(target_arch = "x86_64")]
 use exec::lanes16::{Lanes16, X256, X512};
-use exec::{Batch, ExecError, Kernel, Lod, SampleRequest, Textures, LANES};
-use glsl::types::SamplerKind;
+use exec::{Batch, ExecError, Kernel, Textures, LANES};
 
 /// A fixed-function fragment kernel and, when its shape allows, the plan
 /// that computes its results directly (see the module documentation).
@@ -503,46 +502,16 @@ unsafe fn lookup_2d_in<V: Lanes16>(
     // SAFETY: the caller's contract.
     unsafe {
         if cur != 0 {
-            let mut req = request_2d(unit, cur);
-            V::store(&mut req.coord[0], V::flush(V::div(s, q)));
-            V::store(&mut req.coord[1], V::flush(V::div(t, q)));
-            implicit_lod(&mut req);
-            textures.sample(&req, &mut out);
+            let (mut s_q, mut t_q) = ([0f32; LANES], [0f32; LANES]);
+            V::store(&mut s_q, V::flush(V::div(s, q)));
+            V::store(&mut t_q, V::flush(V::div(t, q)));
+            textures.sample_2d_implicit(unit, [&s_q, &t_q], cur, &mut out);
         }
         let mut texel = [V::zero(); 4];
         for (v, o) in texel.iter_mut().zip(&out) {
             *v = V::flush(V::load(o));
         }
         texel
-    }
-}
-
-/// A 2D lookup of unit `unit` on the lanes `cur` with an implicit LOD,
-/// its coordinates (and derivatives: [`implicit_lod`]) for the caller to
-/// set.
-#[inline(always)]
-fn request_2d(unit: u32, cur: u32) -> SampleRequest {
-    SampleRequest {
-        unit: [unit; LANES],
-        target: SamplerKind::Sampler2D,
-        coord: [[0.0; LANES], [0.0; LANES], [0.0; LANES], [1.0; LANES]],
-        compare: None,
-        lod: Lod::Derivatives {
-            ddx: [[0.0; LANES]; 3],
-            ddy: [[0.0; LANES]; 3],
-            bias: [0.0; LANES],
-        },
-        mask: cur,
-    }
-}
-
-/// The derivatives of `req`'s s and t: their quad differences.
-#[inline(always)]
-fn implicit_lod(req: &mut SampleRequest) {
-    if let Lod::Derivatives { ddx, ddy, .. } = &mut req.lod {
-        for k in 0..2 {
-            (ddx[k], ddy[k]) = lane::quad_diffs(&req.coord[k]);
-        }
     }
 }
 
@@ -563,13 +532,13 @@ fn lookup_2d(
 ) {
     *out = [[0f32; LANES]; 4];
     if cur != 0 {
-        let mut req = request_2d(unit, cur);
+        let (mut s_q, mut t_q) = ([0f32; LANES], [0f32; LANES]);
         for l in 0..LANES {
-            req.coord[0][l] = lane::div(s[l], q[l]);
-            req.coord[1][l] = lane::div(t[l], q[l]);
+            s_q[l] = lane::div(s[l], q[l]);
+            t_q[l] = lane::div(t[l], q[l]);
         }
-        implicit_lod(&mut req);
-        textures.sample(&req, out);
+        // The request itself (the x86 variants take the shortcut).
+        textures.sample(&exec::implicit_2d_request(unit, [&s_q, &t_q], cur), out);
     }
     for c in out.iter_mut() {
         for x in c.iter_mut() {

@@ -365,6 +365,18 @@ impl Textures for TextureUnits {
             self.sample_general(req, out);
         }
     }
+
+    fn sample_2d_implicit(
+        &self,
+        unit: u32,
+        st: [&[f32; LANES]; 2],
+        mask: u32,
+        out: &mut [[f32; LANES]; 4],
+    ) {
+        if !crate::texture_2d::sample_implicit(self, unit, st, mask, out) {
+            self.sample(&exec::implicit_2d_request(unit, st, mask), out);
+        }
+    }
 }
 
 impl TextureUnits {

@@ -39,6 +39,11 @@
 //! lane is at a wrap edge.
 //! Tests compare every variant the CPU has with the general path on
 //! random lookups and on runs of nearby quads like the executor's.
+//!
+//! `exec::Textures::sample_2d_implicit` (the fixed-function stage's
+//! lookups: s and t, derivatives their quad differences, no bias) enters
+//! here without a `SampleRequest` ([`sample_implicit`]); the results are
+//! the request's (tested).
 
 use crate::ex::{Lod, SampleRequest, LANES};
 use crate::texture::{
@@ -132,17 +137,133 @@ pub(crate) fn sample_with(
     req: &SampleRequest,
     out: &mut [[f32; LANES]; 4],
 ) -> bool {
+    match Lookup2D::of(req) {
+        Some(lookup) => sample_lookup(isa, units, &lookup, out),
+        None => false,
+    }
+}
+
+/// The 2D lookup of unit `unit` on the lanes `mask` at (s, t), the
+/// implicit LOD from the quad differences of s and t
+/// ([`exec::lane::quad_diffs`]) with no bias: what [`sample`] gives the
+/// request `exec::Textures::sample_2d_implicit` describes, without the
+/// request (false, with nothing written, when the fast path does not
+/// apply).
+pub(crate) fn sample_implicit(
+    units: &TextureUnits,
+    unit: u32,
+    st: [&[f32; LANES]; 2],
+    mask: u32,
+    out: &mut [[f32; LANES]; 4],
+) -> bool {
+    sample_implicit_with(Isa::current(), units, unit, st, mask, out)
+}
+
+/// [`sample_implicit`] compiled for `isa` (the baseline one when the CPU
+/// lacks it).
+fn sample_implicit_with(
+    isa: Isa,
+    units: &TextureUnits,
+    unit: u32,
+    st: [&[f32; LANES]; 2],
+    mask: u32,
+    out: &mut [[f32; LANES]; 4],
+) -> bool {
+    if mask == 0 {
+        return false;
+    }
+    let (dsx, dsy) = exec::lane::quad_diffs(st[0]);
+    let (dtx, dty) = exec::lane::quad_diffs(st[1]);
+    let lookup = Lookup2D {
+        unit,
+        mask,
+        st,
+        lod: LodRef::Derivatives {
+            ddx: [&dsx, &dtx],
+            ddy: [&dsy, &dty],
+            bias: &[0.0; LANES],
+        },
+    };
+    sample_lookup(isa, units, &lookup, out)
+}
+
+/// A 2D lookup without depth comparison of one unit for every lane of
+/// its mask, as the fast path reads it (from a request, or given).
+pub(crate) struct Lookup2D<'a> {
+    unit: u32,
+    /// The lanes to sample (not empty).
+    mask: u32,
+    /// s and t (after the projective divide).
+    st: [&'a [f32; LANES]; 2],
+    lod: LodRef<'a>,
+}
+
+/// [`Lod`] by reference (s and t's derivatives only).
+#[derive(Clone, Copy)]
+enum LodRef<'a> {
+    Explicit(&'a [f32; LANES]),
+    Derivatives {
+        ddx: [&'a [f32; LANES]; 2],
+        ddy: [&'a [f32; LANES]; 2],
+        bias: &'a [f32; LANES],
+    },
+}
+
+impl<'a> Lookup2D<'a> {
+    /// `req` as a [`Lookup2D`], or `None` when it is not one (another
+    /// target, a depth comparison, no lanes, lanes on different units).
+    #[inline(always)]
+    fn of(req: &'a SampleRequest) -> Option<Lookup2D<'a>> {
+        if req.target != SamplerKind::Sampler2D || req.compare.is_some() || req.mask == 0 {
+            return None;
+        }
+        let first = req.mask.trailing_zeros() as usize;
+        let &unit = req.unit.get(first)?;
+        // Every lane of the mask on that unit (bits of the lanes on
+        // another, branch-free so that the loop vectorizes).
+        let mut other = 0u32;
+        for (lane, &u) in req.unit.iter().enumerate() {
+            other |= u32::from(u != unit) << lane;
+        }
+        if other & req.mask != 0 {
+            return None;
+        }
+        let lod = match &req.lod {
+            Lod::Explicit(v) => LodRef::Explicit(v),
+            Lod::Derivatives { ddx, ddy, bias } => LodRef::Derivatives {
+                ddx: [&ddx[0], &ddx[1]],
+                ddy: [&ddy[0], &ddy[1]],
+                bias,
+            },
+        };
+        Some(Lookup2D {
+            unit,
+            mask: req.mask,
+            st: [&req.coord[0], &req.coord[1]],
+            lod,
+        })
+    }
+}
+
+/// [`sample_in`] of `lookup` compiled for `isa` (the baseline one when
+/// the CPU lacks it).
+fn sample_lookup(
+    isa: Isa,
+    units: &TextureUnits,
+    lookup: &Lookup2D,
+    out: &mut [[f32; LANES]; 4],
+) -> bool {
     #[cfg(not(target_arch = "x86_64"))]
     let _ = isa;
     #[cfg(target_arch = "x86_64")]
     match isa {
         // SAFETY: the CPU supports the instruction set (checked first).
-        Isa::Avx512 if isa.supported() => return unsafe { sample_avx512(units, req, out) },
+        Isa::Avx512 if isa.supported() => return unsafe { sample_avx512(units, lookup, out) },
         // SAFETY: as above.
-        Isa::Avx2 if isa.supported() => return unsafe { sample_avx2(units, req, out) },
+        Isa::Avx2 if isa.supported() => return unsafe { sample_avx2(units, lookup, out) },
         _ => {}
     }
-    sample_in::<false, NO_WIDE>(units, req, out)
+    sample_in::<false, NO_WIDE>(units, lookup, out)
 }
 
 /// [`sample_in`] compiled for AVX2 and FMA.
@@ -153,10 +274,10 @@ pub(crate) fn sample_with(
 #[target_feature(enable = "avx2,fma")]
 unsafe fn sample_avx2(
     units: &TextureUnits,
-    req: &SampleRequest,
+    lookup: &Lookup2D,
     out: &mut [[f32; LANES]; 4],
 ) -> bool {
-    sample_in::<true, WIDE_AVX2>(units, req, out)
+    sample_in::<true, WIDE_AVX2>(units, lookup, out)
 }
 
 /// [`sample_in`] compiled for AVX-512 (F, BW, DQ, VL) and FMA.
@@ -167,10 +288,10 @@ unsafe fn sample_avx2(
 #[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2,fma")]
 unsafe fn sample_avx512(
     units: &TextureUnits,
-    req: &SampleRequest,
+    lookup: &Lookup2D,
     out: &mut [[f32; LANES]; 4],
 ) -> bool {
-    sample_in::<true, WIDE_AVX512>(units, req, out)
+    sample_in::<true, WIDE_AVX512>(units, lookup, out)
 }
 
 /// `sample_in`'s `WIDE`: no register filter ([`wide`]).
@@ -188,25 +309,10 @@ const WIDE_AVX512: u8 = 2;
 #[inline(always)]
 fn sample_in<const SIMD: bool, const WIDE: u8>(
     units: &TextureUnits,
-    req: &SampleRequest,
+    lookup: &Lookup2D,
     out: &mut [[f32; LANES]; 4],
 ) -> bool {
-    if req.target != SamplerKind::Sampler2D || req.compare.is_some() || req.mask == 0 {
-        return false;
-    }
-    let first = req.mask.trailing_zeros() as usize;
-    let Some(&unit_index) = req.unit.get(first) else {
-        return false;
-    };
-    // Every lane of the mask on that unit (bits of the lanes on another,
-    // branch-free so that the loop vectorizes).
-    let mut other = 0u32;
-    for (lane, &u) in req.unit.iter().enumerate() {
-        other |= u32::from(u != unit_index) << lane;
-    }
-    if other & req.mask != 0 {
-        return false;
-    }
+    let unit_index = lookup.unit;
     let Some(unit) = units.units.get(unit_index as usize) else {
         return false;
     };
@@ -251,7 +357,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
     };
 
     // The level(s) of every lane, as `texture::select_levels` picks them.
-    let mask = req.mask;
+    let mask = lookup.mask;
     let mut level = [[base as i32; LANES]; 2];
     let mut f = [0.0f32; LANES];
     let mut two: u32 = 0;
@@ -268,7 +374,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
     } else if unmipmapped {
         // Magnification (λ ≤ c = 0, or NaN) or minification of the base
         // level, over the lanes.
-        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, &req.lod);
+        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, lookup.lod);
         let mut is_nearest = [false; LANES];
         for l in 0..LANES {
             let mag = lam[l].is_nan() || lam[l] <= 0.0;
@@ -282,7 +388,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
         MinFilter::LinearMipmapLinear | MinFilter::NearestMipmapLinear
     ) {
         // λ of every lane, as `texture::lambda` computes it.
-        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, &req.lod);
+        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, lookup.lod);
         // Eq. 3.28/3.29 over the lanes, branch-free.
         let c = if tex.mag_filter == MagFilter::Linear
             && tex.min_filter == MinFilter::NearestMipmapLinear
@@ -337,7 +443,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
             two &= mask;
         }
     } else {
-        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, &req.lod);
+        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, lookup.lod);
         for lane in 0..LANES {
             if mask & (1 << lane) == 0 {
                 continue;
@@ -363,7 +469,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
 
     #[cfg(target_arch = "x86_64")]
     if WIDE != NO_WIDE {
-        let st = [&req.coord[0], &req.coord[1]];
+        let st = lookup.st;
         let table = &table;
         // SAFETY: as above.
         let done = unsafe {
@@ -377,7 +483,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
             return true;
         }
     }
-    let st = [req.coord[0], req.coord[1]];
+    let st = [*lookup.st[0], *lookup.st[1]];
     let near = lanes(nearest);
     let mut first = [[0.0f32; LANES]; 4];
     filter_lanes::<SIMD>(tex, &table, &level[0], &st, &near, &mut first);
@@ -512,15 +618,15 @@ fn lambdas<const SIMD: bool>(
     tex: &Texture,
     base_img: &crate::texture::Image,
     unit_bias: f32,
-    lod: &Lod,
+    lod: LodRef,
 ) -> [f32; LANES] {
     match lod {
-        Lod::Explicit(v) => {
+        LodRef::Explicit(v) => {
             // The general path adds a shader bias of 0.
             clamp_lambdas(tex, v, &[unit_bias + 0.0; LANES])
         }
-        Lod::Derivatives { ddx, ddy, bias } => {
-            if quad_uniform::<SIMD>([&ddx[0], &ddx[1], &ddy[0], &ddy[1], bias]) {
+        LodRef::Derivatives { ddx, ddy, bias } => {
+            if quad_uniform::<SIMD>([ddx[0], ddx[1], ddy[0], ddy[1], bias]) {
                 // The quads' first lanes, twice (eight lanes: loops of
                 // four do not vectorize as well).
                 const HALF: usize = LANES / 2;
@@ -531,20 +637,13 @@ fn lambdas<const SIMD: bool>(
                     tex,
                     base_img,
                     unit_bias,
-                    [&pick(&ddx[0]), &pick(&ddx[1])],
-                    [&pick(&ddy[0]), &pick(&ddy[1])],
+                    [&pick(ddx[0]), &pick(ddx[1])],
+                    [&pick(ddy[0]), &pick(ddy[1])],
                     &pick(bias),
                 );
                 std::array::from_fn(|l| lam[l / 4])
             } else {
-                derivative_lambdas(
-                    tex,
-                    base_img,
-                    unit_bias,
-                    [&ddx[0], &ddx[1]],
-                    [&ddy[0], &ddy[1]],
-                    bias,
-                )
+                derivative_lambdas(tex, base_img, unit_bias, ddx, ddy, bias)
             }
         }
     }
@@ -1445,6 +1544,24 @@ mod tests {
                             mask: 0xffff & !(1 << 9),
                         };
                         let slow = general(&units, &req);
+                        // The request-free entry on the same coordinates
+                        // (derivatives their quad differences, no bias).
+                        let st = [&req.coord[0], &req.coord[1]];
+                        let implicit = general(&units, &exec::implicit_2d_request(1, st, req.mask));
+                        for &isa in &isas {
+                            let mut got = [[7.0; LANES]; 4];
+                            assert!(sample_implicit_with(isa, &units, 1, st, req.mask, &mut got));
+                            for c in 0..4 {
+                                for lane in 0..LANES {
+                                    let want = if lane == 9 { 7.0 } else { implicit[c][lane] };
+                                    assert_eq!(
+                                        got[c][lane].to_bits(),
+                                        want.to_bits(),
+                                        "implicit {isa:?} {min_filter:?} lane {lane} c {c}"
+                                    );
+                                }
+                            }
+                        }
                         for &isa in &isas {
                             let mut fast = [[7.0; LANES]; 4];
                             assert!(sample_with(isa, &units, &req, &mut fast));
