@@ -1575,8 +1575,22 @@ impl<'a> FragmentStage<'a> {
         match pass.quick.and_then(|q| Some((q, q.color_output()?))) {
             Some((q, o)) => {
                 let mut target = q.target(fb, pass.origin);
-                for &(lane, index) in writes {
-                    target.write(index, [0, 1, 2, 3].map(|j| get(batch, o + j, lane)));
+                match batch.outputs.get(o..o + 4) {
+                    // Without blending, the batch's colours converted
+                    // together (as `write_quick` does).
+                    Some([r, g, b, a]) if target.opaque() => {
+                        let rgba = fragment_ops::unorm8_lanes([r, g, b, a]);
+                        for &(lane, index) in writes {
+                            if let Some(&c) = rgba.get(lane) {
+                                target.write_rgba8(index, c);
+                            }
+                        }
+                    }
+                    _ => {
+                        for &(lane, index) in writes {
+                            target.write(index, [0, 1, 2, 3].map(|j| get(batch, o + j, lane)));
+                        }
+                    }
                 }
             }
             None => {
