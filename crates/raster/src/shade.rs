@@ -1763,8 +1763,8 @@ impl<'a> FragmentStage<'a> {
                     let Some(e) = pending.get_mut(*n) else { break };
                     self.prefetch_attrs(prim);
                     e.set_inline(prim, p, (qx, qy, live), write, window_z);
-                    e.finish_inline();
                     if let Some((count, spill)) = admit(pack_colors, n, &mut used, write) {
+                        finish_all(&mut pending[..count]);
                         self.color_pass(&pass, fb, batch, &pending[..count])?;
                         if spill {
                             pending.swap(0, count);
@@ -1774,10 +1774,21 @@ impl<'a> FragmentStage<'a> {
             }
         }
         if *n > 0 {
+            finish_all(&mut pending[..*n]);
             self.color_pass(&pass, fb, batch, &pending[..*n])?;
             *n = 0;
         }
         Ok(())
+    }
+}
+
+/// [`Entry::finish_inline`] of each entry, one after the other in a
+/// short loop (so that the divisions of the perspective weights of
+/// several quads are in flight at once).
+#[inline(always)]
+fn finish_all(entries: &mut [Entry]) {
+    for e in entries {
+        e.finish_inline();
     }
 }
 
