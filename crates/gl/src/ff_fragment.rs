@@ -145,11 +145,11 @@ impl Plan {
     fn run(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
         #[cfg(target_arch = "x86_64")]
         {
-            if has_avx512() {
+            if X512::supported() {
                 // SAFETY: the CPU has the features.
                 return unsafe { self.run_avx512(batch, uniforms, textures) };
             }
-            if has_avx2() {
+            if X256::supported() {
                 // SAFETY: the CPU has the features.
                 return unsafe { self.run_avx2(batch, uniforms, textures) };
             }
@@ -421,22 +421,6 @@ fn each3(a: &Lanes, b: &Lanes, c: &Lanes, op: impl Fn(f32, f32, f32) -> f32) -> 
         out[l] = op(a[l], b[l], c[l]);
     }
     out
-}
-
-/// Whether the CPU runs [`Plan::run_avx2`].
-#[cfg(target_arch = "x86_64")]
-fn has_avx2() -> bool {
-    std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
-}
-
-/// Whether the CPU runs [`Plan::run_avx512`].
-#[cfg(target_arch = "x86_64")]
-fn has_avx512() -> bool {
-    has_avx2()
-        && std::is_x86_feature_detected!("avx512f")
-        && std::is_x86_feature_detected!("avx512bw")
-        && std::is_x86_feature_detected!("avx512dq")
-        && std::is_x86_feature_detected!("avx512vl")
 }
 
 /// Input component `i` of `batch`, flushed (zeros past the inputs).
@@ -785,13 +769,13 @@ mod tests {
                 plan.run_with(&mut variants[0], &uniforms, &textures);
                 #[cfg(target_arch = "x86_64")]
                 {
-                    if has_avx2() {
+                    if X256::supported() {
                         let mut b = batch.clone();
                         // SAFETY: the CPU has the features.
                         unsafe { plan.run_avx2(&mut b, &uniforms, &textures) };
                         variants.push(b);
                     }
-                    if has_avx512() {
+                    if X512::supported() {
                         let mut b = batch.clone();
                         // SAFETY: the CPU has the features.
                         unsafe { plan.run_avx512(&mut b, &uniforms, &textures) };

@@ -749,13 +749,14 @@ unsafe fn write_strip_in<V: Lanes16>(
     }
 }
 
-/// [`write_strip_in`] compiled for AVX-512.
+/// [`write_strip_in`] compiled for AVX-512 (the features
+/// `simd::Isa::Avx512` checks; the operations it uses are AVX-512 F's).
 ///
 /// # Safety
-/// The CPU must have AVX-512 F, BW, DQ and VL; `rows` as for
+/// The CPU must have AVX2 and AVX-512 F, DQ and VL; `rows` as for
 /// [`write_strip_in`].
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2")]
+#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2")]
 unsafe fn write_strip_avx512(rows: &mut [[u8; 4]], w: usize, rgba: [&[f32; 16]; 4], over: bool) {
     // SAFETY: the caller's contract.
     unsafe { write_strip_in::<X512>(rows, w, rgba, over) }

@@ -56,7 +56,7 @@ use std::sync::Arc;
 #[cfg(target_arch = "x86_64")]
 mod wide;
 #[cfg(target_arch = "x86_64")]
-use exec::lanes16::{X256, X512};
+use exec::lanes16::{Lanes16, X256, X512};
 
 /// Levels a request can address on this path (absolute level numbers):
 /// more is a 2^31-texel texture, which takes the general path.
@@ -79,18 +79,9 @@ impl Isa {
         match self {
             Isa::Portable => true,
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 => {
-                std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
-            }
+            Isa::Avx2 => X256::supported(),
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx512 => {
-                std::is_x86_feature_detected!("avx512f")
-                    && std::is_x86_feature_detected!("avx512bw")
-                    && std::is_x86_feature_detected!("avx512dq")
-                    && std::is_x86_feature_detected!("avx512vl")
-                    && std::is_x86_feature_detected!("avx2")
-                    && std::is_x86_feature_detected!("fma")
-            }
+            Isa::Avx512 => X512::supported(),
             #[cfg(not(target_arch = "x86_64"))]
             _ => false,
         }
