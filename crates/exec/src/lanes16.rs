@@ -99,6 +99,17 @@ pub trait Lanes16 {
     /// `a << 8c` (c in 0–3).
     unsafe fn shl_bytes(a: Self::I, c: usize) -> Self::I;
     unsafe fn or_i(a: Self::I, b: Self::I) -> Self::I;
+    unsafe fn and_i(a: Self::I, b: Self::I) -> Self::I;
+    /// `a << n` (n in 0–31; a constant, folded into the instruction).
+    unsafe fn shl_i(a: Self::I, n: u32) -> Self::I;
+    /// `a >> n`, arithmetic (n in 0–31, a constant).
+    unsafe fn sra_i(a: Self::I, n: u32) -> Self::I;
+
+    /// Lanes 0–7 and 8–15 as two AVX2 registers (for code that works on
+    /// 256-bit registers in either set; the CPU has AVX2 in both).
+    unsafe fn halves_i(a: Self::I) -> [__m256i; 2];
+    /// The inverse of [`Lanes16::halves_i`] for f32 lanes.
+    unsafe fn from_halves(h: [__m256; 2]) -> Self::F;
 
     /// The mask of the set bits of `bits` (lane l: bit l).
     unsafe fn mask(bits: u32) -> Self::M;
@@ -358,6 +369,32 @@ impl Lanes16 for X512 {
         unsafe { _mm512_or_si512(a, b) }
     }
     #[inline(always)]
+    unsafe fn and_i(a: __m512i, b: __m512i) -> __m512i {
+        unsafe { _mm512_and_si512(a, b) }
+    }
+    #[inline(always)]
+    unsafe fn shl_i(a: __m512i, n: u32) -> __m512i {
+        unsafe { _mm512_sll_epi32(a, _mm_cvtsi32_si128(n as i32)) }
+    }
+    #[inline(always)]
+    unsafe fn sra_i(a: __m512i, n: u32) -> __m512i {
+        unsafe { _mm512_sra_epi32(a, _mm_cvtsi32_si128(n as i32)) }
+    }
+    #[inline(always)]
+    unsafe fn halves_i(a: __m512i) -> [__m256i; 2] {
+        unsafe { [_mm512_castsi512_si256(a), _mm512_extracti64x4_epi64::<1>(a)] }
+    }
+    #[inline(always)]
+    unsafe fn from_halves(h: [__m256; 2]) -> __m512 {
+        unsafe {
+            let lo = _mm512_castps256_ps512(h[0]);
+            _mm512_castpd_ps(_mm512_insertf64x4::<1>(
+                _mm512_castps_pd(lo),
+                _mm256_castps_pd(h[1]),
+            ))
+        }
+    }
+    #[inline(always)]
     unsafe fn mask(bits: u32) -> __mmask16 {
         bits as __mmask16
     }
@@ -445,6 +482,30 @@ unsafe fn pair_at(base: *const u32, idx: __m128i, k: i32) -> __m128i {
         let a = _mm_loadl_epi64(base.add(i as u32 as usize).cast());
         let b = _mm_loadl_epi64(base.add(j as u32 as usize).cast());
         _mm_unpacklo_epi64(a, b)
+    }
+}
+
+/// Texel pairs for four-pixel registers: words `idx[l]` and `idx[l] + 1`
+/// of `base` for the sixteen lanes of `idx` (lanes 0–7, 8–15), one 64-bit
+/// read each, the pair of lane l in a 64-bit element, lanes
+/// {0, 1 | 4, 5}, {2, 3 | 6, 7}, {8, 9 | 12, 13}, {10, 11 | 14, 15} (the
+/// order `_mm256_unpacklo_epi32` / `_mm256_unpackhi_epi32` give lanes
+/// 0–7 of two registers, and their 128-bit halves).
+///
+/// # Safety
+/// The CPU must have AVX2 (inlined into code compiled for it); both words
+/// of every lane must be readable.
+#[inline(always)]
+pub unsafe fn pairs4(base: *const u32, idx: [__m256i; 2]) -> [__m256i; 4] {
+    unsafe {
+        let mut out = [_mm256_setzero_si256(); 4];
+        for h in 0..2 {
+            let lo4 = _mm256_castsi256_si128(idx[h]);
+            let hi4 = _mm256_extracti128_si256::<1>(idx[h]);
+            out[2 * h] = _mm256_set_m128i(pair_at(base, hi4, 0), pair_at(base, lo4, 0));
+            out[2 * h + 1] = _mm256_set_m128i(pair_at(base, hi4, 2), pair_at(base, lo4, 2));
+        }
+        out
     }
 }
 
@@ -777,6 +838,32 @@ impl Lanes16 for X256 {
     #[inline(always)]
     unsafe fn or_i(a: [__m256i; 2], b: [__m256i; 2]) -> [__m256i; 2] {
         unsafe { halves!(_mm256_or_si256, a, b) }
+    }
+    #[inline(always)]
+    unsafe fn and_i(a: [__m256i; 2], b: [__m256i; 2]) -> [__m256i; 2] {
+        unsafe { halves!(_mm256_and_si256, a, b) }
+    }
+    #[inline(always)]
+    unsafe fn shl_i(a: [__m256i; 2], n: u32) -> [__m256i; 2] {
+        unsafe {
+            let n = _mm_cvtsi32_si128(n as i32);
+            [_mm256_sll_epi32(a[0], n), _mm256_sll_epi32(a[1], n)]
+        }
+    }
+    #[inline(always)]
+    unsafe fn sra_i(a: [__m256i; 2], n: u32) -> [__m256i; 2] {
+        unsafe {
+            let n = _mm_cvtsi32_si128(n as i32);
+            [_mm256_sra_epi32(a[0], n), _mm256_sra_epi32(a[1], n)]
+        }
+    }
+    #[inline(always)]
+    unsafe fn halves_i(a: [__m256i; 2]) -> [__m256i; 2] {
+        a
+    }
+    #[inline(always)]
+    unsafe fn from_halves(h: [__m256; 2]) -> [__m256; 2] {
+        h
     }
     #[inline(always)]
     unsafe fn mask(bits: u32) -> [__m256; 2] {

@@ -164,6 +164,7 @@ mod simd;
 mod state;
 mod texture;
 mod texture_2d;
+mod unorm8_filter;
 mod workers;
 
 #[cfg(test)]

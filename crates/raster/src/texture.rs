@@ -21,6 +21,7 @@ use std::sync::Arc;
 
 use crate::ex::{Lod, SampleRequest, Textures, LANES};
 use crate::state::CompareFunc;
+use crate::unorm8_filter;
 use glsl::math;
 use glsl::types::SamplerKind;
 
@@ -548,12 +549,27 @@ pub(crate) fn sample(
             None => MISSING,
         }
     };
+    // RGBA8 levels in fixed point when they qualify (`unorm8_filter`).
+    let fixed = |level: usize, linear: bool| -> Option<[i32; 4]> {
+        filter_unorm8(tex, tex.levels.get(level)?, st, layer, linear)
+    };
     let value = match select_levels(tex, q, lambda) {
-        Levels::One(level, linear) => one(level, linear),
-        Levels::Two(d1, d2, f, linear) => {
-            let (t1, t2) = (one(d1, linear), one(d2, linear));
-            mix_levels(t1, t2, f)
-        }
+        Levels::One(level, linear) => match fixed(level, linear) {
+            Some(v) => v.map(unorm8_filter::value),
+            None => one(level, linear),
+        },
+        Levels::Two(d1, d2, f, linear) => match (fixed(d1, linear), fixed(d2, linear)) {
+            (Some(v1), Some(v2)) => {
+                let w = unorm8_filter::level_weight(f);
+                std::array::from_fn(|c| {
+                    unorm8_filter::value(unorm8_filter::levels(v1[c], v2[c], w))
+                })
+            }
+            _ => {
+                let (t1, t2) = (one(d1, linear), one(d2, linear));
+                mix_levels(t1, t2, f)
+            }
+        },
     };
     if tex.depth_format {
         let r = value[0];
@@ -736,6 +752,55 @@ pub(crate) fn index(i: i64, wrap: Wrap, n: u32) -> Texel {
         Wrap::ClampToEdge | Wrap::MirroredRepeat => Some(i.clamp(0, n - 1) as usize),
         Wrap::Clamp | Wrap::ClampToBorder => (0..n).contains(&i).then_some(i as usize),
     }
+}
+
+/// [`filter`] of a level stored as RGBA8 in fixed point
+/// ([`unorm8_filter`]), as values ×128: for 2D lookups (2D textures and
+/// cube faces) of colour textures whose texels are all inside the level;
+/// `None` for the others (1D, 3D, depth, f32 storage, a border texel),
+/// which [`filter`] takes.
+fn filter_unorm8(
+    tex: &Texture,
+    img: &Image,
+    st: [f32; 3],
+    layer: Option<usize>,
+    linear: bool,
+) -> Option<[i32; 4]> {
+    let Texels::Unorm8(texels) = &img.texels else {
+        return None;
+    };
+    if tex.depth_format || (layer.is_none() && tex.target != TextureTarget::Tex2D) {
+        return None;
+    }
+    let (w, h) = (img.width.max(1), img.height.max(1));
+    // Per axis: texel 0, texel 1, weight of texel 1 (in 128ths).
+    let mut axes = [(0usize, 0usize, 0i32); 2];
+    for (a, n) in [(0, w), (1, h)] {
+        let wrap = tex.wrap[a];
+        let u = wrap_coord(st[a], wrap, n) * n as f32;
+        axes[a] = if linear {
+            let (i0, weight) = unorm8_filter::split(unorm8_filter::coord(floor(u * 128.0)));
+            let i0 = i64::from(i0);
+            (index(i0, wrap, n)?, index(i0 + 1, wrap, n)?, weight)
+        } else {
+            let i = floor(u) as i64;
+            let i = match wrap {
+                Wrap::Clamp => i.min(n as i64 - 1),
+                _ => i,
+            };
+            (index(i, wrap, n)?, 0, 0)
+        };
+    }
+    let base = layer.unwrap_or(0) * h as usize;
+    let at = |i: usize, j: usize| -> Option<[u8; 4]> {
+        texels.get((base + j) * w as usize + i).copied()
+    };
+    let ((i0, i1, a), (j0, j1, b)) = (axes[0], axes[1]);
+    if !linear {
+        return Some(unorm8_filter::nearest(at(i0, j0)?));
+    }
+    let t = [at(i0, j0)?, at(i1, j0)?, at(i0, j1)?, at(i1, j1)?];
+    Some(unorm8_filter::bilinear(t, a, b))
 }
 
 /// NEAREST (eq. 3.23–3.25) or LINEAR (eq. 3.26) on one level. For depth

@@ -1,30 +1,36 @@
-//! The x86 variants' filtering of RGBA8 levels: [`super::filter_lanes`]
-//! and the level blend and output select of [`super::sample_in`] in
-//! vector registers (one AVX-512 register or two AVX2 ones per value,
-//! [`Lanes16`]), for requests whose lanes read one level per level pass
-//! (the lanes that matter: the request's for the first level, those
-//! blending two levels for the second) and whose S and T wrap modes are
-//! REPEAT or CLAMP_TO_EDGE. Those are nearly all lookups of a trilinear
-//! texture: level selection is per quad and varies slowly.
+//! The x86 variants' filtering of RGBA8 levels: the fixed-point filter
+//! of [`crate::unorm8_filter`] for requests whose lanes read one level per
+//! level pass (the lanes that matter: the request's for the first level,
+//! those blending two levels for the second) and whose S and T wrap modes
+//! are REPEAT or CLAMP_TO_EDGE. Those are nearly all lookups of a
+//! trilinear texture: level selection is per quad and varies slowly.
 //!
-//! The operations are the portable code's, in its order (floors by the
-//! rounding instruction as [`super::floor_of`] allows, the RGBA8
-//! conversion by [`Lanes16::unorm8`]'s fused correction), so
-//! the same bits; what differs is that the level's size is a scalar, all
-//! sixteen lanes stay in registers, no array goes through memory between
-//! the steps, and when the two texels of each row are neighbours in
-//! memory (every lane's i1 = i0 + 1, i.e. no lane at the wrap edge), each
-//! row is read by one 64-bit gather per lane instead of two 32-bit ones.
+//! The coordinates, texel indices and weights are computed over
+//! [`Lanes16`] (one AVX-512 register or two AVX2 ones per value) with the
+//! portable code's operations (floors by the rounding instruction as
+//! [`super::floor_of`] allows), so the same values; the level's size is
+//! a scalar (REPEAT of a power-of-two size wraps by a mask). The filter
+//! itself works on AVX2 registers of four pixels × four channels × 16
+//! bits (both instruction sets have AVX2): the two texels of a row are
+//! one 64-bit load per lane when they are neighbours in memory, a row is
+//! one `vpmaddubsw` of the texel bytes (offset to signed) by the weight
+//! bytes, the blends of rows and of levels one `vpmulhrsw` each, and the
+//! result is transposed to one value per channel and converted to f32
+//! (m / 32640 by a multiply and one fused correction: the division's
+//! bits, tested for every m). Every step is exact integer arithmetic, so
+//! the same bits as the portable code.
 
 use super::{LevelTable, Store, LANES};
 use crate::texture::{Texture, Wrap};
+use crate::unorm8_filter;
 use exec::lanes16::Lanes16;
+use std::arch::x86_64::*;
 
 /// Samples level `level[0]` (and `level[1]`, blended by `f` on the lanes
 /// in `two`) at `st` into the lanes `mask` of `out` (LINEAR, or NEAREST
-/// on the lanes in `nearest`), as the portable code does; false (nothing
-/// written) when the request does not qualify (see the module
-/// documentation).
+/// on the lanes in `nearest`) in fixed point, as the portable code does
+/// ([`unorm8_filter`]); false (nothing written) when the request does not
+/// qualify (see the module documentation).
 ///
 /// # Safety
 /// The CPU must support `V`'s instruction set, and this must be inlined
@@ -74,35 +80,29 @@ pub(super) unsafe fn sample_unorm8<V: Lanes16>(
     unsafe {
         let s = V::load(st[0]);
         let t = V::load(st[1]);
-        // Both levels' reads first, then the sums (the sums wait on the
-        // gathers' latency: the second level's reads overlap it).
-        let c0 = corners::<V>(table, levels, d0, wraps, (s, t), nearest, mask);
-        // (Not `Option::map`: a closure is compiled without the target
-        // features, and the intrinsics in it would not be inlined.)
-        #[allow(clippy::manual_map)]
-        let c1 = match d1 {
-            Some(d1) => Some(corners::<V>(table, levels, d1, wraps, (s, t), nearest, two)),
-            None => None,
-        };
         let near = V::mask(nearest);
-        let mut first = combine::<V>(&c0, nearest, near);
-        if let Some(c1) = &c1 {
-            let second = combine::<V>(c1, nearest, near);
-            // `mix_levels` on the lanes in `two`.
-            let fl = V::load(f);
-            let one_minus = V::sub(V::splat(1.0), fl);
-            let two = V::mask(two);
-            for (a, b) in first.iter_mut().zip(second) {
-                let mixed = V::add(V::mul(one_minus, *a), V::mul(fl, b));
-                *a = V::select(two, mixed, *a);
+        let mut m = level_fixed::<V>(table, levels, d0, wraps, (s, t), near, nearest, mask);
+        if let Some(d1) = d1 {
+            let second = level_fixed::<V>(table, levels, d1, wraps, (s, t), near, nearest, two);
+            // φ = ⌊256·f⌋ (`unorm8_filter::level_weight`) on the lanes in
+            // `two`, 0 elsewhere (which keeps the first level's value),
+            // as φ·128 for the rounding high multiply.
+            let w = V::mul(V::load(f), V::splat(256.0));
+            let phi = V::trunc_i(V::min(w, V::splat(255.0)));
+            let on = V::bits(V::ge(w, V::splat(1.0))) & two;
+            let phi = V::select_i(V::mask(on), phi, V::splat_i(0));
+            let wf = spread(V::halves_i(twice16::<V>(V::shl_i(phi, 7))));
+            for k in 0..4 {
+                m[k] = blend(m[k], second[k], wf[k]);
             }
         }
-        let m = V::mask(mask);
-        for (o, v) in out.iter_mut().zip(first) {
+        let rgba = to_lanes(m);
+        for (o, v) in out.iter_mut().zip(rgba) {
+            let v = V::from_halves(v);
             if mask == 0xffff {
                 V::store(o, v);
             } else {
-                V::store_masked(o, m, v);
+                V::store_masked(o, V::mask(mask), v);
             }
         }
     }
@@ -174,20 +174,27 @@ unsafe fn floor_index<V: Lanes16>(fl: V::F) -> V::I {
     }
 }
 
-/// `wrap_index(i, wrap, n)` per lane.
+/// `wrap_index(i, wrap, n)` per lane, for i in [−1, n] (the only values
+/// the callers pass: a wrapped coordinate is in [0, n]): REPEAT of a
+/// power-of-two size is then the low bits.
 #[inline(always)]
-unsafe fn wrap_index<V: Lanes16>(i: V::I, wrap: Wrap, n: V::I) -> V::I {
+unsafe fn wrap_index<V: Lanes16>(i: V::I, wrap: Wrap, n: i32) -> V::I {
     unsafe {
+        let last = V::splat_i(n - 1);
+        if wrap == Wrap::Repeat && n & (n - 1) == 0 {
+            return V::and_i(i, last);
+        }
         let i = if wrap == Wrap::Repeat {
+            let nv = V::splat_i(n);
             let below = V::lt_i(i, V::splat_i(0));
-            let above = V::ge_i(i, n);
-            let i2 = V::select_i(below, V::add_i(i, n), i);
-            V::select_i(above, V::sub_i(i, n), i2)
+            let above = V::ge_i(i, nv);
+            let i2 = V::select_i(below, V::add_i(i, nv), i);
+            V::select_i(above, V::sub_i(i, nv), i2)
         } else {
             i
         };
         let i = V::max_i(i, V::splat_i(0));
-        V::min_i(i, V::sub_i(n, V::splat_i(1)))
+        V::min_i(i, last)
     }
 }
 
@@ -209,21 +216,33 @@ unsafe fn wrap_scale<V: Lanes16>(wrap: Wrap, s: V::F, n: i32) -> V::F {
     }
 }
 
-/// `axis` with the level's size `n`: texel 0 (the NEAREST texel on the
-/// lanes in `nearest`), texel 1 and the weight of texel 1.
+/// `axis_unorm8` with the level's size `n`: texel 0 (the NEAREST texel
+/// on the lanes in `nearest`), texel 1 and the weight of texel 1 in
+/// 128ths (0 on the NEAREST lanes).
 #[inline(always)]
-unsafe fn axis<V: Lanes16>(u: V::F, n: i32, wrap: Wrap, nearest: V::M) -> (V::I, V::I, V::F) {
+unsafe fn axis<V: Lanes16>(
+    u: V::F,
+    n: i32,
+    wrap: Wrap,
+    (nearest, nearest_lanes): (V::M, u32),
+) -> (V::I, V::I, V::I) {
     unsafe {
-        let nv = V::splat_i(n);
-        let v = V::sub(u, V::splat(0.5));
-        let fl = V::floor(v);
-        let i = floor_index::<V>(fl);
-        let near = wrap_index::<V>(floor_index::<V>(V::floor(u)), wrap, nv);
-        let alpha = V::sub(v, fl);
-        let i0 = V::select_i(nearest, near, wrap_index::<V>(i, wrap, nv));
-        // (i ≤ 2^30: the add does not overflow.)
-        let i1 = wrap_index::<V>(V::add_i(i, V::splat_i(1)), wrap, nv);
-        (i0, i1, alpha)
+        // `unorm8_filter::coord` and `split`.
+        let x = V::sub_i(
+            floor_index::<V>(V::floor(V::mul(u, V::splat(128.0)))),
+            V::splat_i(64),
+        );
+        let i = V::sra_i(x, 7);
+        let a = V::and_i(x, V::splat_i(127));
+        let mut i0 = wrap_index::<V>(i, wrap, n);
+        // (i < 2^23: the add does not overflow.)
+        let i1 = wrap_index::<V>(V::add_i(i, V::splat_i(1)), wrap, n);
+        if nearest_lanes == 0 {
+            return (i0, i1, a);
+        }
+        let near = wrap_index::<V>(floor_index::<V>(V::floor(u)), wrap, n);
+        i0 = V::select_i(nearest, near, i0);
+        (i0, i1, V::select_i(nearest, V::splat_i(0), a))
     }
 }
 
@@ -239,116 +258,256 @@ unsafe fn gather<V: Lanes16>(texels: &[[u8; 4]], idx: V::I) -> V::I {
     }
 }
 
-/// Texels `idx` and `idx + 1` of `texels` (at least two), as two
-/// vectors of RGBA8 words, by one 64-bit read per lane; `idx` clamped to
-/// the last but one texel.
+/// Each lane's 16 low bits in both halves of the lane (for the 16-bit
+/// steps, which see a lane's two halves as two channels).
 #[inline(always)]
-unsafe fn gather_pairs<V: Lanes16>(texels: &[[u8; 4]], idx: V::I) -> (V::I, V::I) {
-    debug_assert!(texels.len() >= 2);
-    let last = texels.len().saturating_sub(2).min(i32::MAX as usize) as i32;
-    // SAFETY: every index is in 0..=len − 2: 8-byte reads of two texels.
+unsafe fn twice16<V: Lanes16>(x: V::I) -> V::I {
+    unsafe { V::or_i(x, V::shl_i(x, 16)) }
+}
+
+/// The sixteen lanes' 32-bit values (two registers, lanes 0–7 and 8–15)
+/// in the four-pixel registers' order (see [`exec::lanes16::pairs4`]),
+/// each lane's value twice: one 64-bit element a pixel.
+#[inline(always)]
+unsafe fn spread(x: [__m256i; 2]) -> [__m256i; 4] {
     unsafe {
-        let idx = V::min_u(idx, V::splat_i(last));
-        V::gather_pairs(texels.as_ptr().cast(), idx)
+        [
+            _mm256_unpacklo_epi32(x[0], x[0]),
+            _mm256_unpackhi_epi32(x[0], x[0]),
+            _mm256_unpacklo_epi32(x[1], x[1]),
+            _mm256_unpackhi_epi32(x[1], x[1]),
+        ]
     }
 }
 
-/// The four corners of every lane on one level (RGBA8 words) and their
-/// weights: the first half of `filter_lanes`.
-struct Corners<V: Lanes16> {
-    raw: [V::I; 4],
-    wgt: [V::F; 4],
+/// The texel pairs (t(i₀), t(i₁)) of the lanes as four-pixel registers
+/// from the two corners' words (lanes 0–7, 8–15 each).
+#[inline(always)]
+unsafe fn pair_up(t0: [__m256i; 2], t1: [__m256i; 2]) -> [__m256i; 4] {
+    unsafe {
+        [
+            _mm256_unpacklo_epi32(t0[0], t1[0]),
+            _mm256_unpackhi_epi32(t0[0], t1[0]),
+            _mm256_unpacklo_epi32(t0[1], t1[1]),
+            _mm256_unpackhi_epi32(t0[1], t1[1]),
+        ]
+    }
 }
 
-/// The corners of `filter_lanes` on level `d` for every lane (see the
-/// module documentation); only the lanes in `used` are meant (the others
-/// get some value). With NEAREST on every lane, only corner 0 is read.
+/// `unorm8_filter::row` of the four channels of four pixels, less
+/// 128·128: the pairs' bytes interleaved by channel (t₀, t₁), offset to
+/// signed bytes, multiplied by the weight bytes (128 − a, a) and summed
+/// in pairs: −16384 ..= 16256, no saturation.
 #[inline(always)]
-unsafe fn corners<V: Lanes16>(
+unsafe fn row(pairs: __m256i, weights: __m256i) -> __m256i {
+    unsafe {
+        let by_channel = _mm256_setr_epi8(
+            0, 4, 1, 5, 2, 6, 3, 7, 8, 12, 9, 13, 10, 14, 11, 15, 0, 4, 1, 5, 2, 6, 3, 7, 8, 12, 9,
+            13, 10, 14, 11, 15,
+        );
+        let b = _mm256_shuffle_epi8(pairs, by_channel);
+        let b = _mm256_xor_si256(b, _mm256_set1_epi8(-128));
+        _mm256_maddubs_epi16(weights, b)
+    }
+}
+
+/// `x + ⌊((y − x)·w + 2^14) / 2^15⌋` on 16-bit values (`w` the weight
+/// scaled to 2^15): `unorm8_filter::rows` with w = b·256, `levels` with
+/// w = φ·128. The offset of [`row`]'s values cancels in the difference.
+#[inline(always)]
+unsafe fn blend(x: __m256i, y: __m256i, w: __m256i) -> __m256i {
+    unsafe { _mm256_add_epi16(x, _mm256_mulhrs_epi16(_mm256_sub_epi16(y, x), w)) }
+}
+
+/// LINEAR (NEAREST on the lanes in `nearest`) on level `d` for every lane
+/// (only the lanes in `used` are meant; the others get some value), in
+/// fixed point less 16384 (the rows' offset), as four-pixel registers.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+unsafe fn level_fixed<V: Lanes16>(
     table: &LevelTable,
     levels: &[crate::texture::Image],
     d: i32,
     wraps: [Wrap; 2],
     (s, t): (V::F, V::F),
+    near: V::M,
     nearest: u32,
     used: u32,
-) -> Corners<V> {
+) -> [__m256i; 4] {
     let texels = super::unorm8_level(levels, d);
     let sh = (d.wrapping_sub(table.base) as u32).min(31);
     let w = (table.width >> sh).max(1) as i32;
     let h = (table.height >> sh).max(1) as i32;
     unsafe {
-        let near = V::mask(nearest);
         let us = wrap_scale::<V>(wraps[0], s, w);
         let ut = wrap_scale::<V>(wraps[1], t, h);
-        let (i0, i1, a) = axis::<V>(us, w, wraps[0], near);
-        let (j0, j1, b) = axis::<V>(ut, h, wraps[1], near);
+        let (i0, i1, a) = axis::<V>(us, w, wraps[0], (near, nearest));
+        let (j0, j1, b) = axis::<V>(ut, h, wraps[1], (near, nearest));
         let wv = V::splat_i(w);
         let (r0, r1) = (V::mullo_i(j0, wv), V::mullo_i(j1, wv));
         let idx0 = V::add_i(r0, i0);
         let idx2 = V::add_i(r1, i0);
-        let one = V::splat(1.0);
-        let (a0, b0) = (V::sub(one, a), V::sub(one, b));
-        let wgt = [V::mul(a0, b0), V::mul(a, b0), V::mul(a0, b), V::mul(a, b)];
+        // Row weights: bytes (128 − a, a) twice per lane; column weights
+        // b·256 twice per lane.
+        let wx = V::or_i(V::sub_i(V::splat_i(128), a), V::shl_i(a, 8));
+        let wx = spread(V::halves_i(twice16::<V>(wx)));
         if nearest == 0xffff {
-            let raw0 = gather::<V>(texels, idx0);
-            return Corners {
-                raw: [raw0; 4],
-                wgt,
-            };
+            // NEAREST everywhere (a = b = 0): corner 0 alone.
+            let t0 = V::halves_i(gather::<V>(texels, idx0));
+            let p = pair_up(t0, t0);
+            let mut v = [_mm256_setzero_si256(); 4];
+            for k in 0..4 {
+                v[k] = row(p[k], wx[k]);
+            }
+            return v;
         }
+        let wy = spread(V::halves_i(twice16::<V>(V::shl_i(b, 8))));
         // Both texels of each row neighbours in memory on every lane used
-        // (the others read some two texels of the level).
-        let next = V::bits(V::eq_i(i1, V::add_i(i0, V::splat_i(1))));
-        let pairs = texels.len() >= 2 && (next | !used) & 0xffff == 0xffff;
-        let raw = if pairs {
-            let (t0, t1) = gather_pairs::<V>(texels, idx0);
-            let (t2, t3) = gather_pairs::<V>(texels, idx2);
-            [t0, t1, t2, t3]
+        // (or the second one's weight 0 and inside the level: not the last
+        // column); the others read some two texels of the level.
+        let one = V::splat_i(1);
+        let next = V::bits(V::eq_i(i1, V::add_i(i0, one)));
+        let zero_a = V::bits(V::eq_i(a, V::splat_i(0)));
+        let inside = !V::bits(V::eq_i(i0, V::sub_i(wv, one)));
+        let pairs = texels.len() >= 2 && (next | (zero_a & inside) | !used) & 0xffff == 0xffff;
+        let (p0, p1) = if pairs {
+            let last = V::splat_i(texels.len().saturating_sub(2).min(i32::MAX as usize) as i32);
+            let base = texels.as_ptr().cast::<u32>();
+            (
+                exec::lanes16::pairs4(base, V::halves_i(V::min_u(idx0, last))),
+                exec::lanes16::pairs4(base, V::halves_i(V::min_u(idx2, last))),
+            )
         } else {
-            [
-                gather::<V>(texels, idx0),
-                gather::<V>(texels, V::add_i(r0, i1)),
-                gather::<V>(texels, idx2),
-                gather::<V>(texels, V::add_i(r1, i1)),
-            ]
+            let t0 = V::halves_i(gather::<V>(texels, idx0));
+            let t1 = V::halves_i(gather::<V>(texels, V::add_i(r0, i1)));
+            let t2 = V::halves_i(gather::<V>(texels, idx2));
+            let t3 = V::halves_i(gather::<V>(texels, V::add_i(r1, i1)));
+            (pair_up(t0, t1), pair_up(t2, t3))
         };
-        Corners { raw, wgt }
+        let mut v = [_mm256_setzero_si256(); 4];
+        for k in 0..4 {
+            v[k] = blend(row(p0[k], wx[k]), row(p1[k], wx[k]), wy[k]);
+        }
+        v
     }
 }
 
-/// The second half of `filter_lanes`: the bilinear sum of the corners,
-/// or corner 0 on the lanes in `nearest` (`near` as a mask); RGBA, one
-/// value per component.
+/// Four-pixel registers of fixed-point values less 16384 as the colour
+/// values of the sixteen lanes (`unorm8_filter::value`), RGBA, each as
+/// lanes 0–7 and 8–15: m / 32640 correctly rounded without a division
+/// (`x · fl(1/32640)` corrected once by the exact residual, fused; a test
+/// checks every value).
 #[inline(always)]
-unsafe fn combine<V: Lanes16>(corners: &Corners<V>, nearest: u32, near: V::M) -> [V::F; 4] {
-    let (raw, wgt) = (&corners.raw, &corners.wgt);
-    // (Loops, not closures: a closure is compiled without the target
-    // features, and the intrinsics in it would not be inlined.)
+unsafe fn to_lanes(m: [__m256i; 4]) -> [[__m256; 2]; 4] {
     unsafe {
-        let mut out = [V::zero(); 4];
-        if nearest == 0xffff {
-            for (c, o) in out.iter_mut().enumerate() {
-                *o = V::unorm8(V::byte(raw[0], c));
-            }
-            return out;
+        let off = _mm256_set1_epi16(16384);
+        // Per 128 bits, two pixels' channels (p.r p.g p.b p.a q.r ...) as
+        // (p.r q.r p.g q.g ...): one 32-bit word per channel.
+        let pair = _mm256_setr_epi8(
+            0, 1, 8, 9, 2, 3, 10, 11, 4, 5, 12, 13, 6, 7, 14, 15, 0, 1, 8, 9, 2, 3, 10, 11, 4, 5,
+            12, 13, 6, 7, 14, 15,
+        );
+        let mut r = [_mm256_setzero_si256(); 4];
+        for k in 0..4 {
+            r[k] = _mm256_shuffle_epi8(_mm256_add_epi16(m[k], off), pair);
         }
-        for (c, o) in out.iter_mut().enumerate() {
-            let t0 = V::unorm8(V::byte(raw[0], c));
-            // The sum starts at 0 in the portable code: 0 + x is x for
-            // every product here (a weight and a texel are +0 or more, or
-            // NaN).
-            let mut acc = V::mul(wgt[0], t0);
-            for k in 1..4 {
-                let tk = V::unorm8(V::byte(raw[k], c));
-                acc = V::add(acc, V::mul(wgt[k], tk));
+        // Words of lanes (0, 1), (2, 3) | (4, 5), (6, 7) by channel, and
+        // of lanes 8–15 likewise.
+        let (rg_lo, ba_lo) = (
+            _mm256_unpacklo_epi32(r[0], r[1]),
+            _mm256_unpackhi_epi32(r[0], r[1]),
+        );
+        let (rg_hi, ba_hi) = (
+            _mm256_unpacklo_epi32(r[2], r[3]),
+            _mm256_unpackhi_epi32(r[2], r[3]),
+        );
+        // One channel of lanes 0–3, 8–11 | 4–7, 12–15 as 16-bit values.
+        let channels = [
+            _mm256_unpacklo_epi64(rg_lo, rg_hi),
+            _mm256_unpackhi_epi64(rg_lo, rg_hi),
+            _mm256_unpacklo_epi64(ba_lo, ba_hi),
+            _mm256_unpackhi_epi64(ba_lo, ba_hi),
+        ];
+        let inv = _mm256_set1_ps(1.0 / unorm8_filter::ONE as f32);
+        let one = _mm256_set1_ps(unorm8_filter::ONE as f32);
+        let zero = _mm256_setzero_si256();
+        let mut out = [[_mm256_setzero_ps(); 2]; 4];
+        for (o, c) in out.iter_mut().zip(channels) {
+            let halves = [
+                _mm256_unpacklo_epi16(c, zero),
+                _mm256_unpackhi_epi16(c, zero),
+            ];
+            for (o, x) in o.iter_mut().zip(halves) {
+                let x = _mm256_cvtepi32_ps(x);
+                let q = _mm256_mul_ps(x, inv);
+                let residual = _mm256_fnmadd_ps(q, one, x);
+                *o = _mm256_fmadd_ps(residual, inv, q);
             }
-            *o = if nearest == 0 {
-                acc
-            } else {
-                V::select(near, t0, acc)
-            };
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The lanes of the four-pixel registers, in order: register k, slot
+    /// p (64-bit element) holds lane `LANE_OF[k][p]`.
+    const LANE_OF: [[usize; 4]; 4] = [[0, 1, 4, 5], [2, 3, 6, 7], [8, 9, 12, 13], [10, 11, 14, 15]];
+
+    /// `to_lanes` of registers holding `m[c][lane] − 16384`.
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn to_lanes_of(m: &[[i32; LANES]; 4]) -> [[f32; LANES]; 4] {
+        let mut regs = [_mm256_setzero_si256(); 4];
+        for (k, r) in regs.iter_mut().enumerate() {
+            let mut words = [0i16; 16];
+            for (p, &lane) in LANE_OF[k].iter().enumerate() {
+                for c in 0..4 {
+                    words[4 * p + c] = (m[c][lane] - 16384) as i16;
+                }
+            }
+            // SAFETY: 32 bytes read from a 16-element i16 array.
+            *r = unsafe { _mm256_loadu_si256(words.as_ptr().cast()) };
+        }
+        // SAFETY: the CPU has AVX2 and FMA (this function's features).
+        let out = unsafe { to_lanes(regs) };
+        let mut lanes = [[0.0f32; LANES]; 4];
+        for c in 0..4 {
+            for (h, &v) in out[c].iter().enumerate() {
+                // SAFETY: 8 floats written inside a 16-element array.
+                unsafe { _mm256_storeu_ps(lanes[c].as_mut_ptr().add(8 * h), v) };
+            }
+        }
+        lanes
+    }
+
+    /// Every fixed-point value becomes `unorm8_filter::value`'s float in
+    /// its own lane and channel.
+    #[test]
+    fn registers_to_lanes_is_the_division_for_every_value() {
+        if !exec::lanes16::X256::supported() {
+            return;
+        }
+        let mut m = 0;
+        while m <= unorm8_filter::ONE {
+            let vals: [[i32; LANES]; 4] = std::array::from_fn(|c| {
+                std::array::from_fn(|l| (m + (4 * l + c) as i32).min(unorm8_filter::ONE))
+            });
+            // SAFETY: the CPU has AVX2 and FMA (checked above).
+            let got = unsafe { to_lanes_of(&vals) };
+            for c in 0..4 {
+                for l in 0..LANES {
+                    let want = unorm8_filter::value(vals[c][l]);
+                    assert_eq!(
+                        got[c][l].to_bits(),
+                        want.to_bits(),
+                        "m {} lane {l} c {c}",
+                        vals[c][l]
+                    );
+                }
+            }
+            m += 4 * LANES as i32;
+        }
     }
 }
