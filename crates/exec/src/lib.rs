@@ -302,7 +302,9 @@ pub struct SampleRequest {
 pub enum Lod {
     /// Fragment-shader implicit LOD: per-lane derivatives of the (divided)
     /// coordinates along x and y (from the quad; unused coordinates 0),
-    /// plus a bias (0 when the call has none).
+    /// plus a bias (0 when the call has none). A sampler may take one
+    /// λ_base per 2×2 quad (raster's: from each quad's first lane, the
+    /// bias still per lane).
     Derivatives {
         ddx: [[f32; LANES]; 3],
         ddy: [[f32; LANES]; 3],

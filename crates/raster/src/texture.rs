@@ -432,13 +432,16 @@ impl TextureUnits {
         let coord = [0, 1, 2].map(|c| req.coord[c][lane]);
         let (lod_base, shader_bias) = match &req.lod {
             Lod::Explicit(l) => (LodBase::Value(l[lane]), 0.0),
-            Lod::Derivatives { ddx, ddy, bias } => (
-                LodBase::Derivatives(
-                    [0, 1, 2].map(|c| ddx[c][lane]),
-                    [0, 1, 2].map(|c| ddy[c][lane]),
-                ),
-                bias[lane],
-            ),
+            Lod::Derivatives { ddx, ddy, bias } => {
+                let first = quad_first(lane);
+                (
+                    LodBase::Derivatives(
+                        [0, 1, 2].map(|c| ddx[c][first]),
+                        [0, 1, 2].map(|c| ddy[c][first]),
+                    ),
+                    bias[lane],
+                )
+            }
         };
         let reference = req.compare.map(|r| r[lane]);
         sample(
@@ -450,6 +453,16 @@ impl TextureUnits {
             reference,
         )
     }
+}
+
+/// The first lane of `lane`'s 2×2 quad, whose derivatives give the whole
+/// quad's level of detail: GL 2.1 §3.8.8 lets ρ be approximated, and one
+/// λ_base per quad (as llvmpipe and GPUs compute it) keeps a quad on one
+/// level pair and costs a quarter of the logarithms. The bias is still
+/// each lane's.
+#[inline(always)]
+pub(crate) fn quad_first(lane: usize) -> usize {
+    lane & !3
 }
 
 /// λ_base source (GL 2.1 eq. 3.18): the scale factor from derivatives, or

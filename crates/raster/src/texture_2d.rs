@@ -13,9 +13,9 @@
 //! and storage are found once per set of units (`TextureUnits::checked_2d`,
 //! an entry per unit holding the texture it describes) and the state is
 //! looked at once per request, texel indices are plain integers (no
-//! border case), and every step works on arrays of the 16 lanes: λ (once
-//! per quad when the derivatives and bias are the same in each quad's
-//! lanes, as the executor's always are), levels, wrapping, the four
+//! border case), and every step works on arrays of the 16 lanes: λ (its
+//! base once per quad, from the quad's first lane, as the general path
+//! defines it: `texture::quad_first`), levels, wrapping, the four
 //! corners' indices and weights, then the texels (scalar loads per lane,
 //! or the AVX2 gather instruction when every lane reads one level), the
 //! filter over all lanes (nearest lanes take corner 0) and the blend of
@@ -649,10 +649,11 @@ fn lanes(mask: u32) -> [bool; LANES] {
 }
 
 /// `texture::lambda` for every lane (the lanes outside the request's
-/// mask get some value), over all lanes at once; with derivatives (and
-/// bias) the same in the four lanes of each quad, as the executor's are
-/// (differences within the quad), once per quad: λ is a function of
-/// those values alone, so the same bits.
+/// mask get some value): with derivatives, λ_base once per quad from the
+/// derivatives of its first lane (`texture::quad_first`), computed for the
+/// quads' first lanes (eight lanes, the four twice: four-lane loops
+/// compile to scalar code) and spread, then each lane's biases and
+/// clamps.
 #[inline(always)]
 fn lambdas<const SIMD: bool>(
     tex: &Texture,
@@ -666,70 +667,34 @@ fn lambdas<const SIMD: bool>(
             clamp_lambdas(tex, v, &[unit_bias + 0.0; LANES])
         }
         LodRef::Derivatives { ddx, ddy, bias } => {
-            if quad_uniform::<SIMD>([ddx[0], ddx[1], ddy[0], ddy[1], bias]) {
-                // The quads' first lanes, twice (eight lanes: loops of
-                // four do not vectorize as well).
-                const HALF: usize = LANES / 2;
-                let pick = |a: &[f32; LANES]| -> [f32; HALF] {
-                    std::array::from_fn(|k| a[4 * (k % (LANES / 4))])
-                };
-                let lam = derivative_lambdas(
-                    tex,
-                    base_img,
-                    unit_bias,
-                    [&pick(ddx[0]), &pick(ddx[1])],
-                    [&pick(ddy[0]), &pick(ddy[1])],
-                    &pick(bias),
-                );
-                std::array::from_fn(|l| lam[l / 4])
-            } else {
-                derivative_lambdas(tex, base_img, unit_bias, ddx, ddy, bias)
-            }
-        }
-    }
-}
-
-/// Whether every lane of `arrays` has the bits of its quad's first lane.
-#[inline(always)]
-fn quad_uniform<const SIMD: bool>(arrays: [&[f32; LANES]; 5]) -> bool {
-    #[cfg(target_arch = "x86_64")]
-    if SIMD {
-        use std::arch::x86_64::*;
-        // SAFETY: `SIMD` is only set in code compiled for AVX2, which runs
-        // only on CPUs that have it; the loads are of 8 consecutive
-        // elements inside an array (offset 0 or 8 of 16).
-        unsafe {
-            let first = _mm256_setr_epi32(0, 0, 0, 0, 4, 4, 4, 4);
-            let mut diff = _mm256_setzero_si256();
-            for a in arrays {
-                for o in [0, 8] {
-                    let v = _mm256_loadu_si256(a.as_ptr().add(o).cast());
-                    let f = _mm256_permutevar8x32_epi32(v, first);
-                    diff = _mm256_or_si256(diff, _mm256_xor_si256(v, f));
+            // (Loops, not closures: a closure is compiled without the
+            // caller's target features.)
+            const HALF: usize = LANES / 2;
+            let mut first = [[0.0f32; HALF]; 4];
+            for (f, a) in first.iter_mut().zip([ddx[0], ddx[1], ddy[0], ddy[1]]) {
+                for k in 0..HALF {
+                    f[k] = a[4 * (k % (LANES / 4))];
                 }
             }
-            return _mm256_testz_si256(diff, diff) == 1;
+            let quads = lambda_bases(base_img, [&first[0], &first[1]], [&first[2], &first[3]]);
+            let mut base = [0.0f32; LANES];
+            let mut extra = [0.0f32; LANES];
+            for l in 0..LANES {
+                base[l] = quads[l / 4];
+                extra[l] = unit_bias + bias[l];
+            }
+            clamp_lambdas(tex, &base, &extra)
         }
     }
-    let mut diff = 0u32;
-    for a in arrays {
-        for l in 0..LANES {
-            diff |= a[l].to_bits() ^ a[l & !3].to_bits();
-        }
-    }
-    diff == 0
 }
 
-/// `texture::lambda` from the derivatives of S and T and the shader's
-/// bias, for N lanes at once.
+/// λ_base (`texture::lambda`'s log2 ρ) from the derivatives of S and T,
+/// for N lanes at once.
 #[inline(always)]
-fn derivative_lambdas<const N: usize>(
-    tex: &Texture,
+fn lambda_bases<const N: usize>(
     base_img: &crate::texture::Image,
-    unit_bias: f32,
     ddx: [&[f32; N]; 2],
     ddy: [&[f32; N]; 2],
-    bias: &[f32; N],
 ) -> [f32; N] {
     let (w, h) = (base_img.width as f32, base_img.height as f32);
     let mut rho = [0.0f32; N];
@@ -749,12 +714,10 @@ fn derivative_lambdas<const N: usize>(
     // Every lane (`lod_log2` is branch-free and total), so that the loop
     // vectorizes.
     let mut base = [0.0f32; N];
-    let mut extra = [0.0f32; N];
     for l in 0..N {
         base[l] = crate::texture::lod_log2(rho[l]);
-        extra[l] = unit_bias + bias[l];
     }
-    clamp_lambdas(tex, &base, &extra)
+    base
 }
 
 /// λ = clamp(base + clamp(texture bias + `extra`), min, max), per lane.
