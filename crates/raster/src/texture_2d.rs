@@ -163,17 +163,11 @@ fn sample_implicit_with(
     if mask == 0 {
         return false;
     }
-    let (dsx, dsy) = exec::lane::quad_diffs(st[0]);
-    let (dtx, dty) = exec::lane::quad_diffs(st[1]);
     let lookup = Lookup2D {
         unit,
         mask,
         st,
-        lod: LodRef::Derivatives {
-            ddx: [&dsx, &dtx],
-            ddy: [&dsy, &dty],
-            bias: &[0.0; LANES],
-        },
+        lod: LodRef::Implicit,
     };
     sample_lookup(isa, units, &lookup, out)
 }
@@ -198,6 +192,11 @@ enum LodRef<'a> {
         ddy: [&'a [f32; LANES]; 2],
         bias: &'a [f32; LANES],
     },
+    /// Derivatives the quad differences of the lookup's s and t
+    /// (`exec::lane::quad_diffs`), no bias: only the quads' first lanes'
+    /// are read (`texture::quad_first`), `s[4q + 1] − s[4q]` along x and
+    /// `s[4q + 2] − s[4q]` along y.
+    Implicit,
 }
 
 impl<'a> Lookup2D<'a> {
@@ -365,7 +364,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
     } else if unmipmapped {
         // Magnification (λ ≤ c = 0, or NaN) or minification of the base
         // level, over the lanes.
-        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, lookup.lod);
+        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, lookup.lod, lookup.st);
         let mut is_nearest = [false; LANES];
         for l in 0..LANES {
             let mag = lam[l].is_nan() || lam[l] <= 0.0;
@@ -379,7 +378,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
         MinFilter::LinearMipmapLinear | MinFilter::NearestMipmapLinear
     ) {
         // λ of every lane, as `texture::lambda` computes it.
-        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, lookup.lod);
+        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, lookup.lod, lookup.st);
         // Eq. 3.28/3.29 over the lanes, branch-free.
         let c = if tex.mag_filter == MagFilter::Linear
             && tex.min_filter == MinFilter::NearestMipmapLinear
@@ -434,7 +433,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
             two &= mask;
         }
     } else {
-        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, lookup.lod);
+        let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, lookup.lod, lookup.st);
         for lane in 0..LANES {
             if mask & (1 << lane) == 0 {
                 continue;
@@ -660,32 +659,46 @@ fn lambdas<const SIMD: bool>(
     base_img: &crate::texture::Image,
     unit_bias: f32,
     lod: LodRef,
+    st: [&[f32; LANES]; 2],
 ) -> [f32; LANES] {
-    match lod {
+    // (Loops, not closures: a closure is compiled without the caller's
+    // target features.)
+    const HALF: usize = LANES / 2;
+    // The quads' first lanes' derivatives (S along x, T along x, S along
+    // y, T along y), the four quads twice.
+    let mut first = [[0.0f32; HALF]; 4];
+    let bias = match lod {
         LodRef::Explicit(v) => {
             // The general path adds a shader bias of 0.
-            clamp_lambdas(tex, v, &[unit_bias + 0.0; LANES])
+            return clamp_lambdas(tex, v, &[unit_bias + 0.0; LANES]);
         }
         LodRef::Derivatives { ddx, ddy, bias } => {
-            // (Loops, not closures: a closure is compiled without the
-            // caller's target features.)
-            const HALF: usize = LANES / 2;
-            let mut first = [[0.0f32; HALF]; 4];
             for (f, a) in first.iter_mut().zip([ddx[0], ddx[1], ddy[0], ddy[1]]) {
                 for k in 0..HALF {
                     f[k] = a[4 * (k % (LANES / 4))];
                 }
             }
-            let quads = lambda_bases(base_img, [&first[0], &first[1]], [&first[2], &first[3]]);
-            let mut base = [0.0f32; LANES];
-            let mut extra = [0.0f32; LANES];
-            for l in 0..LANES {
-                base[l] = quads[l / 4];
-                extra[l] = unit_bias + bias[l];
-            }
-            clamp_lambdas(tex, &base, &extra)
+            bias
         }
+        LodRef::Implicit => {
+            for k in 0..HALF {
+                let q = 4 * (k % (LANES / 4));
+                for (c, a) in st.iter().enumerate() {
+                    first[c][k] = a[q + 1] - a[q];
+                    first[2 + c][k] = a[q + 2] - a[q];
+                }
+            }
+            &[0.0; LANES]
+        }
+    };
+    let quads = lambda_bases(base_img, [&first[0], &first[1]], [&first[2], &first[3]]);
+    let mut base = [0.0f32; LANES];
+    let mut extra = [0.0f32; LANES];
+    for l in 0..LANES {
+        base[l] = quads[l / 4];
+        extra[l] = unit_bias + bias[l];
     }
+    clamp_lambdas(tex, &base, &extra)
 }
 
 /// λ_base (`texture::lambda`'s log2 ρ) from the derivatives of S and T,
