@@ -737,16 +737,94 @@ unsafe fn write_strip_in<V: Lanes16>(
                 *oc = V::add(V::mul(*oc, fs), V::mul(d, fd));
             }
         }
+        V::store_rows(base, base.add(w), rgba8_words::<V>(out));
+    }
+}
+
+/// `to_unorm8` of each lane's RGBA (clamped to [0, 1], NaN as 0), as one
+/// little-endian RGBA8 word per lane.
+///
+/// # Safety
+/// As for the [`Lanes16`] methods.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn rgba8_words<V: Lanes16>(rgba: [V::F; 4]) -> V::I {
+    unsafe {
+        let (zero, one) = (V::zero(), V::splat(1.0));
         let (k255, half) = (V::splat(255.0), V::splat(0.5));
         let mut word = V::splat_i(0);
-        for (c, oc) in out.iter().enumerate() {
-            let clamped = V::min(V::max(*oc, zero), one);
+        for (c, x) in rgba.iter().enumerate() {
+            let clamped = V::min(V::max(*x, zero), one);
             // In [0.5, 255.5]: the truncation fits.
             let k = V::trunc_i(V::add(V::mul(clamped, k255), half));
             word = V::or_i(word, V::shl_bytes(k, c));
         }
-        V::store_rows(base, base.add(w), word);
+        word
     }
+}
+
+/// [`unorm8_lanes`] of 16 lanes in `V`'s registers (the same bytes).
+///
+/// # Safety
+/// As for the [`Lanes16`] methods.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn unorm8_lanes_in<V: Lanes16>(rgba: [&[f32; 16]; 4]) -> [[u8; 4]; 16] {
+    unsafe {
+        let mut words = [0i32; 16];
+        let x = [
+            V::load(rgba[0]),
+            V::load(rgba[1]),
+            V::load(rgba[2]),
+            V::load(rgba[3]),
+        ];
+        V::store_i(&mut words, rgba8_words::<V>(x));
+        let mut out = [[0u8; 4]; 16];
+        for (o, w) in out.iter_mut().zip(words) {
+            *o = w.to_le_bytes();
+        }
+        out
+    }
+}
+
+/// [`unorm8_lanes_in`] compiled for AVX-512 (as `write_strip_avx512`).
+///
+/// # Safety
+/// The CPU must have AVX2 and AVX-512 F, DQ and VL.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2")]
+unsafe fn unorm8_lanes_avx512(rgba: [&[f32; 16]; 4]) -> [[u8; 4]; 16] {
+    // SAFETY: the caller's contract.
+    unsafe { unorm8_lanes_in::<X512>(rgba) }
+}
+
+/// [`unorm8_lanes_in`] compiled for AVX2.
+///
+/// # Safety
+/// The CPU must have AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn unorm8_lanes_avx2(rgba: [&[f32; 16]; 4]) -> [[u8; 4]; 16] {
+    // SAFETY: the caller's contract.
+    unsafe { unorm8_lanes_in::<X256>(rgba) }
+}
+
+/// [`unorm8_lanes`] of a batch's 16 lanes in `isa`'s registers: the same
+/// bytes (the clamp and conversion are the same operations).
+pub(crate) fn unorm8_batch(isa: crate::simd::Isa, rgba: [&[f32; 16]; 4]) -> [[u8; 4]; 16] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        // SAFETY: `isa` is only Avx512 (Avx2) when the CPU has those
+        // features (`simd::detect`).
+        match isa {
+            crate::simd::Isa::Avx512 => return unsafe { unorm8_lanes_avx512(rgba) },
+            crate::simd::Isa::Avx2 => return unsafe { unorm8_lanes_avx2(rgba) },
+            _ => {}
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = isa;
+    unorm8_lanes(rgba)
 }
 
 /// [`write_strip_in`] compiled for AVX-512 (the features
@@ -1055,6 +1133,53 @@ mod tests {
     use super::*;
     use crate::framebuffer::ColorFormat;
     use crate::state::{CompareFunc, LogicOp, StencilState};
+
+    /// Every instruction set's batch conversion gives `unorm8_lanes`'s
+    /// bytes, on values in and out of [0, 1], near the rounding points,
+    /// signed zeros, infinities and NaNs.
+    #[test]
+    fn batch_conversion_matches_the_scalar_one() {
+        let mut seed = 3u32;
+        let special = [
+            f32::NAN,
+            -f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            -0.0,
+            0.0,
+            1.0,
+            1.0 + f32::EPSILON,
+            0.5 / 255.0,
+            1.5 / 255.0,
+            -1e-30,
+            1e-45,
+        ];
+        for round in 0..400 {
+            let mut rgba = [[0f32; 16]; 4];
+            for (c, lanes) in rgba.iter_mut().enumerate() {
+                for (l, x) in lanes.iter_mut().enumerate() {
+                    seed = crate::lcg_step(seed);
+                    *x = match (round + l + c) % 5 {
+                        0 => special[(seed >> 8) as usize % special.len()],
+                        // Near k + 0.5 steps of 1/255.
+                        1 => ((seed >> 8) % 256) as f32 / 255.0 + 0.5 / 255.0,
+                        _ => (seed >> 8) as f32 / 16_777_216.0 * 1.4 - 0.2,
+                    };
+                }
+            }
+            let [r, g, b, a] = &rgba;
+            let want = unorm8_lanes([r, g, b, a]);
+            for isa in [
+                crate::simd::Isa::Base,
+                crate::simd::Isa::Avx2,
+                crate::simd::Isa::Avx512,
+            ] {
+                if isa.supported() {
+                    assert_eq!(unorm8_batch(isa, [r, g, b, a]), want, "{isa:?} {rgba:?}");
+                }
+            }
+        }
+    }
 
     fn frag(x: u32, y: u32, z: f32, color: [f32; 4]) -> Fragment {
         Fragment {

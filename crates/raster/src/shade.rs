@@ -649,7 +649,7 @@ impl<'a> FragmentStage<'a> {
             // batch's colours converted together.
             let rgba = match batch.outputs.get(o..o + 4) {
                 Some([r, g, b, a]) if target.opaque() => {
-                    Some(fragment_ops::unorm8_lanes([r, g, b, a]))
+                    Some(fragment_ops::unorm8_batch(self.isa, [r, g, b, a]))
                 }
                 _ => None,
             };
@@ -1579,7 +1579,7 @@ impl<'a> FragmentStage<'a> {
                     // Without blending, the batch's colours converted
                     // together (as `write_quick` does).
                     Some([r, g, b, a]) if target.opaque() => {
-                        let rgba = fragment_ops::unorm8_lanes([r, g, b, a]);
+                        let rgba = fragment_ops::unorm8_batch(self.isa, [r, g, b, a]);
                         for &(lane, index) in writes {
                             if let Some(&c) = rgba.get(lane) {
                                 target.write_rgba8(index, c);

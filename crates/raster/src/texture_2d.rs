@@ -681,12 +681,16 @@ fn lambdas<const SIMD: bool>(
             bias
         }
         LodRef::Implicit => {
-            for k in 0..HALF {
+            let [s, t] = st;
+            let [sx, tx, sy, ty] = &mut first;
+            let rows = sx
+                .iter_mut()
+                .zip(tx.iter_mut())
+                .zip(sy.iter_mut().zip(ty.iter_mut()));
+            for (k, ((sx, tx), (sy, ty))) in rows.enumerate() {
                 let q = 4 * (k % (LANES / 4));
-                for (c, a) in st.iter().enumerate() {
-                    first[c][k] = a[q + 1] - a[q];
-                    first[2 + c][k] = a[q + 2] - a[q];
-                }
+                (*sx, *tx) = (s[q + 1] - s[q], t[q + 1] - t[q]);
+                (*sy, *ty) = (s[q + 2] - s[q], t[q + 2] - t[q]);
             }
             &[0.0; LANES]
         }
