@@ -10,7 +10,10 @@ own process with its own library. SPEC names the scene (see `build` below):
     spheres:N:WxH:ortho|persp:none|linear|exp|exp2   seed sphere impostors
     mesh:TRIANGLES:WxH                               seed materials shader
     ffmesh:TRIANGLES:WxH                             fixed-function lighting + fog
-    textured:LAYERS:WxH                              mipmapped texture layers
+    textured:LAYERS:WxH[:notex][:noblend][:texN]     mipmapped texture layers
+                                                     (options for ablations:
+                                                     no texturing, no blending,
+                                                     an N×N texture)
     tiny:TRIANGLES:WxH                               many sub-pixel triangles
     compile:sphere|materials                         compile + link time
 
@@ -265,11 +268,17 @@ def mesh(triangles, w, h, shaded):
     return lambda: GL.glDrawElements(GL.GL_TRIANGLES, count, GL.GL_UNSIGNED_INT, None)
 
 
-def textured(layers, w, h):
+def textured(layers, w, h, options=()):
     """`layers` blended, tilted, textured planes: a 512² procedural texture
     with mipmaps (GL_GENERATE_MIPMAP), trilinear filtering, modulated by the
-    vertex colour."""
+    vertex colour. `options` (for ablations): "notex" draws the planes
+    untextured, "noblend" without blending, "texN" uses an N×N texture."""
     size = 512
+    for o in options:
+        if o.startswith("tex") and o[3:].isdigit():
+            size = int(o[3:])
+        elif o not in ("notex", "noblend"):
+            raise SystemExit(f"unknown textured option {o!r}")
     rng = random.Random(5)
     cells = [[rng.random() for _ in range(16)] for _ in range(16)]
     texels = bytearray(size * size * 4)
@@ -291,9 +300,11 @@ def textured(layers, w, h):
     GL.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_WRAP_T, GL.GL_REPEAT)
     data = (ctypes.c_ubyte * len(texels)).from_buffer(texels)
     GL.glTexImage2D(GL.GL_TEXTURE_2D, 0, GL.GL_RGBA, size, size, 0, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, data)
-    GL.glEnable(GL.GL_TEXTURE_2D)
+    if "notex" not in options:
+        GL.glEnable(GL.GL_TEXTURE_2D)
     GL.glTexEnvi(GL.GL_TEXTURE_ENV, GL.GL_TEXTURE_ENV_MODE, GL.GL_MODULATE)
-    GL.glEnable(GL.GL_BLEND)
+    if "noblend" not in options:
+        GL.glEnable(GL.GL_BLEND)
     GL.glBlendFunc(GL.GL_SRC_ALPHA, GL.GL_ONE_MINUS_SRC_ALPHA)
     GL.glMatrixMode(GL.GL_PROJECTION)
     GL.glLoadIdentity()
@@ -381,7 +392,7 @@ def build(spec):
         return w, h, lambda: mesh(int(args[0]), w, h, kind == "mesh")
     if kind == "textured":
         w, h = parse_size(args[1])
-        return w, h, lambda: textured(int(args[0]), w, h)
+        return w, h, lambda: textured(int(args[0]), w, h, tuple(args[2:]))
     if kind == "tiny":
         w, h = parse_size(args[1])
         return w, h, lambda: tiny(int(args[0]), w, h)

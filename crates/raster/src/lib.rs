@@ -129,8 +129,15 @@
 //! about 45 % to about 25 %, and its x86 variants' filtering of RGBA8
 //! levels in vector registers (`texture_2d/wide.rs`, over
 //! `exec::lanes16::Lanes16`: AVX-512, or two AVX2 registers per value) to
-//! about 17 % (see docs/PERFORMANCE.md). Level of detail is
-//! per fragment, from that fragment's own derivatives (not per 2×2 quad).
+//! about 17 % (see docs/PERFORMANCE.md). Level of detail: λ_base once
+//! per 2×2 quad, from the derivatives of the quad's first pixel (GL 2.1
+//! §3.8.8 lets ρ be approximated; llvmpipe does the same), biases and
+//! clamps per fragment. LINEAR on RGBA8 levels of 2D textures and cube
+//! faces is computed in fixed point (`unorm8_filter.rs`: 7-bit texel
+//! weights, 16-bit sums with rounding, the result m/32640 correctly
+//! rounded, so a texel read alone is exactly k/255), the same definition
+//! in every path and instruction set; f32 levels, 1D and 3D textures,
+//! depth textures and lookups touching the border colour filter in f32.
 //! Blending with FUNC_ADD and SRC_ALPHA/ONE_MINUS_SRC_ALPHA, ONE/ZERO or
 //! ONE/ONE into an RGBA8 buffer runs as straight-line code with the
 //! general equations' bits.
