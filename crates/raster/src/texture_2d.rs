@@ -1013,20 +1013,26 @@ fn axis<const SIMD: bool>(
     let mut i1 = [0i32; LANES];
     let mut alpha = [0.0f32; LANES];
     for l in 0..LANES {
-        let n = n[l];
         let v = u[l] - 0.5;
         let fl = floor_of::<SIMD>(v);
-        let i = floor_index(fl);
-        let near = wrap_index(floor_index(floor_of::<SIMD>(u[l])), wrap, n);
         alpha[l] = v - fl;
-        i0[l] = if nearest[l] {
-            near
-        } else {
-            wrap_index(i, wrap, n)
-        };
-        i1[l] = wrap_index(i.saturating_add(1), wrap, n);
+        (i0[l], i1[l]) = texels::<SIMD>(floor_index(fl), u[l], n[l], wrap, nearest[l]);
     }
     (i0, i1, alpha)
+}
+
+/// The two texels of a LINEAR axis whose first is `i` (unwrapped), or the
+/// NEAREST texel of coordinate `u` first when `nearest`, wrapped into a
+/// level `n` texels long.
+#[inline(always)]
+fn texels<const SIMD: bool>(i: i32, u: f32, n: i32, wrap: Wrap, nearest: bool) -> (i32, i32) {
+    let near = wrap_index(floor_index(floor_of::<SIMD>(u)), wrap, n);
+    let i0 = if nearest {
+        near
+    } else {
+        wrap_index(i, wrap, n)
+    };
+    (i0, wrap_index(i.saturating_add(1), wrap, n))
 }
 
 /// [`axis`] for the fixed-point filter ([`unorm8_filter`]): texel 0
@@ -1043,15 +1049,8 @@ fn axis_unorm8<const SIMD: bool>(
     let mut i1 = [0i32; LANES];
     let mut weight = [0i32; LANES];
     for l in 0..LANES {
-        let n = n[l];
         let (i, a) = unorm8_filter::split(unorm8_filter::coord(floor_of::<SIMD>(u[l] * 128.0)));
-        let near = wrap_index(floor_index(floor_of::<SIMD>(u[l])), wrap, n);
-        i0[l] = if nearest[l] {
-            near
-        } else {
-            wrap_index(i, wrap, n)
-        };
-        i1[l] = wrap_index(i + 1, wrap, n);
+        (i0[l], i1[l]) = texels::<SIMD>(i, u[l], n[l], wrap, nearest[l]);
         weight[l] = if nearest[l] { 0 } else { a };
     }
     (i0, i1, weight)

@@ -270,14 +270,8 @@ unsafe fn twice16<V: Lanes16>(x: V::I) -> V::I {
 /// each lane's value twice: one 64-bit element a pixel.
 #[inline(always)]
 unsafe fn spread(x: [__m256i; 2]) -> [__m256i; 4] {
-    unsafe {
-        [
-            _mm256_unpacklo_epi32(x[0], x[0]),
-            _mm256_unpackhi_epi32(x[0], x[0]),
-            _mm256_unpacklo_epi32(x[1], x[1]),
-            _mm256_unpackhi_epi32(x[1], x[1]),
-        ]
-    }
+    // (Each lane paired with itself.)
+    unsafe { pair_up(x, x) }
 }
 
 /// The texel pairs (t(i₀), t(i₁)) of the lanes as four-pixel registers
