@@ -1008,6 +1008,78 @@ mod tests {
         assert_eq!(at(&tex, 1.5 / 4.0, 0.5, 0.0), [1.0, 1.5, 0.0, 1.0]);
     }
 
+    /// RGBA8 levels filter by `unorm8_filter`'s definition: 7-bit
+    /// weights, rows exact, the result m/32640; f32 levels in f32.
+    #[test]
+    fn rgba8_levels_filter_in_fixed_point() {
+        let texels = vec![
+            [0.0, 1.0, 10.0 / 255.0, 1.0],
+            [1.0, 0.0, 200.0 / 255.0, 1.0],
+        ];
+        let mut tex = Texture::new(TextureTarget::Tex2D, vec![Image::new(2, 1, 1, texels)]);
+        assert!(tex.levels[0].is_unorm8());
+        tex.min_filter = MinFilter::Linear;
+        tex.mag_filter = MagFilter::Linear;
+        tex.wrap = [Wrap::ClampToEdge; 3];
+        // u = 2·0.4 = 0.8: x = ⌊102.4⌋ − 64 = 38, texel 0 and 1, a = 38.
+        let got = at(&tex, 0.4, 0.5, 0.0);
+        let want = |t0: u8, t1: u8| {
+            let h = unorm8_filter::row(t0, t1, 38);
+            unorm8_filter::value(unorm8_filter::rows(h, h, 0))
+        };
+        assert_eq!(got, [want(0, 255), want(255, 0), want(10, 200), 1.0]);
+        assert_eq!(got[0], 38.0 * 255.0 / 32640.0);
+        // The same texels as f32 (not all k/255): the float weights.
+        let texels = vec![[0.0, 1.0, 0.1, 1.0], [1.0, 0.0, 0.7, 1.0]];
+        tex.levels = vec![Image::new(2, 1, 1, texels)];
+        assert!(!tex.levels[0].is_unorm8());
+        let got = at(&tex, 0.4, 0.5, 0.0);
+        let alpha = 0.8f32 - 0.5;
+        assert_eq!(got[0], (1.0 - 0.0) * alpha * 1.0);
+    }
+
+    /// λ_base is the quad's: its first lane's derivatives decide the level
+    /// of every lane of the quad, the biases stay per lane.
+    #[test]
+    fn level_of_detail_is_per_quad() {
+        let mut tex = ramp(8, 8, 4);
+        tex.mag_filter = MagFilter::Nearest;
+        tex.min_filter = MinFilter::NearestMipmapNearest;
+        let units = TextureUnits::new(vec![TextureUnit {
+            tex_2d: Some(std::sync::Arc::new(tex)),
+            ..TextureUnit::default()
+        }]);
+        let mut ddx = [[0.0; LANES]; 3];
+        let mut ddy = [[0.0; LANES]; 3];
+        let mut bias = [0.0; LANES];
+        for l in 0..LANES {
+            // Quad q's first lane: λ = q (ds/dx = 2^q/8); the others would
+            // say λ = 0.
+            ddx[0][l] = if l % 4 == 0 {
+                (1 << (l / 4)) as f32 / 8.0
+            } else {
+                0.125
+            };
+            ddy[1][l] = 0.125;
+        }
+        // Lane 6's own bias: one level coarser than its quad's.
+        bias[6] = 1.0;
+        let req = SampleRequest {
+            unit: [0; LANES],
+            target: SamplerKind::Sampler2D,
+            coord: [[0.5; LANES], [0.5; LANES], [0.0; LANES], [1.0; LANES]],
+            compare: None,
+            lod: Lod::Derivatives { ddx, ddy, bias },
+            mask: 0xffff,
+        };
+        let mut out = [[0.0; LANES]; 4];
+        units.sample_general(&req, &mut out);
+        for l in 0..LANES {
+            let level = (l / 4 + usize::from(l == 6)).min(3) as f32;
+            assert_eq!(out[2][l], level, "lane {l}");
+        }
+    }
+
     #[test]
     fn wrap_modes() {
         let mut tex = ramp(4, 1, 1);
