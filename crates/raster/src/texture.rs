@@ -1052,16 +1052,16 @@ mod tests {
         let mut ddx = [[0.0; LANES]; 3];
         let mut ddy = [[0.0; LANES]; 3];
         let mut bias = [0.0; LANES];
-        for l in 0..LANES {
-            // Quad q's first lane: λ = q (ds/dx = 2^q/8); the others would
-            // say λ = 0.
-            ddx[0][l] = if l % 4 == 0 {
+        // Quad q's first lane: λ = q (ds/dx = 2^q/8); the others would say
+        // λ = 0.
+        ddx[0] = std::array::from_fn(|l| {
+            if l % 4 == 0 {
                 (1 << (l / 4)) as f32 / 8.0
             } else {
                 0.125
-            };
-            ddy[1][l] = 0.125;
-        }
+            }
+        });
+        ddy[1] = [0.125; LANES];
         // Lane 6's own bias: one level coarser than its quad's.
         bias[6] = 1.0;
         let req = SampleRequest {
@@ -1074,9 +1074,9 @@ mod tests {
         };
         let mut out = [[0.0; LANES]; 4];
         units.sample_general(&req, &mut out);
-        for l in 0..LANES {
+        for (l, &got) in out[2].iter().enumerate() {
             let level = (l / 4 + usize::from(l == 6)).min(3) as f32;
-            assert_eq!(out[2][l], level, "lane {l}");
+            assert_eq!(got, level, "lane {l}");
         }
     }
 
