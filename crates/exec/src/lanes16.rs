@@ -56,10 +56,6 @@ pub trait Lanes16 {
     /// `a` if `a < b`, else `b`.
     unsafe fn min(a: Self::F, b: Self::F) -> Self::F;
     unsafe fn floor(a: Self::F) -> Self::F;
-    /// `a · b + c`, rounded once.
-    unsafe fn fmadd(a: Self::F, b: Self::F, c: Self::F) -> Self::F;
-    /// `−(a · b) + c`, rounded once.
-    unsafe fn fnmadd(a: Self::F, b: Self::F, c: Self::F) -> Self::F;
     unsafe fn to_f(a: Self::I) -> Self::F;
     /// Truncation (the caller keeps values in range).
     unsafe fn trunc_i(a: Self::F) -> Self::I;
@@ -121,11 +117,6 @@ pub trait Lanes16 {
     /// # Safety
     /// Every index must address a readable word.
     unsafe fn gather(base: *const u32, idx: Self::I) -> Self::I;
-    /// Words `idx[l]` and `idx[l] + 1` of `base` (one 64-bit read each).
-    ///
-    /// # Safety
-    /// Both words of every lane must be readable.
-    unsafe fn gather_pairs(base: *const u32, idx: Self::I) -> (Self::I, Self::I);
 
     /// A 2×8-pixel block of RGBA8 words: lanes 0–7 from `row0`, 8–15
     /// from `row1` (eight words each).
@@ -142,25 +133,7 @@ pub trait Lanes16 {
     /// column) in the pixel order of [`Lanes16::load_rows`]: lanes 0, 1,
     /// 4, 5, 8, 9, 12, 13, then 2, 3, 6, 7, 10, 11, 14, 15.
     unsafe fn quads_to_rows(a: Self::F) -> Self::F;
-
-    /// `k / 255` for bytes k (0–255), correctly rounded (the division's
-    /// bits) without a division: `q = k · fl(1/255)` is within an ulp,
-    /// and one correction by the exact residual `k − 255·q` (fused
-    /// multiply-adds) rounds it correctly; a test checks every byte.
-    #[inline(always)]
-    unsafe fn unorm8(k: Self::I) -> Self::F {
-        unsafe {
-            let x = Self::to_f(k);
-            let inv = Self::splat(UNORM8_INV);
-            let q = Self::mul(x, inv);
-            let residual = Self::fnmadd(q, Self::splat(255.0), x);
-            Self::fmadd(residual, inv, q)
-        }
-    }
 }
-
-/// `fl(1/255)`.
-pub const UNORM8_INV: f32 = 1.0 / 255.0;
 
 /// [`Lanes16`] in one AVX-512 register per value.
 pub struct X512;
@@ -238,14 +211,6 @@ impl Lanes16 for X512 {
     #[inline(always)]
     unsafe fn floor(a: __m512) -> __m512 {
         unsafe { _mm512_roundscale_ps::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(a) }
-    }
-    #[inline(always)]
-    unsafe fn fmadd(a: __m512, b: __m512, c: __m512) -> __m512 {
-        unsafe { _mm512_fmadd_ps(a, b, c) }
-    }
-    #[inline(always)]
-    unsafe fn fnmadd(a: __m512, b: __m512, c: __m512) -> __m512 {
-        unsafe { _mm512_fnmadd_ps(a, b, c) }
     }
     #[inline(always)]
     unsafe fn to_f(a: __m512i) -> __m512 {
@@ -405,20 +370,6 @@ impl Lanes16 for X512 {
     #[inline(always)]
     unsafe fn gather(base: *const u32, idx: __m512i) -> __m512i {
         unsafe { _mm512_i32gather_epi32::<4>(idx, base.cast()) }
-    }
-    #[inline(always)]
-    unsafe fn gather_pairs(base: *const u32, idx: __m512i) -> (__m512i, __m512i) {
-        unsafe {
-            let lo = _mm512_i32gather_epi64::<4>(_mm512_castsi512_si256(idx), base.cast());
-            let hi = _mm512_i32gather_epi64::<4>(_mm512_extracti64x4_epi64::<1>(idx), base.cast());
-            // Lane l's pair is 64-bit element l % 8 of `lo` (l < 8) or `hi`.
-            let even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
-            let odd = _mm512_add_epi32(even, _mm512_set1_epi32(1));
-            (
-                _mm512_permutex2var_epi32(lo, even, hi),
-                _mm512_permutex2var_epi32(lo, odd, hi),
-            )
-        }
     }
     #[inline(always)]
     unsafe fn load_rows(row0: *const u32, row1: *const u32) -> __m512i {
@@ -632,14 +583,6 @@ impl Lanes16 for X256 {
             unsafe { _mm256_round_ps::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(x) }
         }
         unsafe { halves!(f, a) }
-    }
-    #[inline(always)]
-    unsafe fn fmadd(a: [__m256; 2], b: [__m256; 2], c: [__m256; 2]) -> [__m256; 2] {
-        unsafe { halves!(_mm256_fmadd_ps, a, b, c) }
-    }
-    #[inline(always)]
-    unsafe fn fnmadd(a: [__m256; 2], b: [__m256; 2], c: [__m256; 2]) -> [__m256; 2] {
-        unsafe { halves!(_mm256_fnmadd_ps, a, b, c) }
     }
     #[inline(always)]
     unsafe fn to_f(a: [__m256i; 2]) -> [__m256; 2] {
@@ -883,7 +826,8 @@ impl Lanes16 for X256 {
     }
     #[inline(always)]
     unsafe fn gather(base: *const u32, idx: [__m256i; 2]) -> [__m256i; 2] {
-        // Scalar loads (see `gather_pairs`), four lanes per 128 bits.
+        // Scalar loads (see the type's documentation), four lanes per
+        // 128 bits.
         unsafe {
             let mut out = [_mm256_setzero_si256(); 2];
             for (o, v) in out.iter_mut().zip(idx) {
@@ -892,29 +836,6 @@ impl Lanes16 for X256 {
                 *o = _mm256_set_m128i(hi, lo);
             }
             out
-        }
-    }
-    #[inline(always)]
-    unsafe fn gather_pairs(base: *const u32, idx: [__m256i; 2]) -> ([__m256i; 2], [__m256i; 2]) {
-        unsafe {
-            // One 64-bit load per lane, the indices taken from the
-            // registers (not stored and reloaded: that stalls), two lanes
-            // per 128 bits; then each half split into its even words
-            // (texel i) and odd ones (texel i + 1).
-            let split = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
-            let mut first = [_mm256_setzero_si256(); 2];
-            let mut second = first;
-            for h in 0..2 {
-                let lo4 = _mm256_castsi256_si128(idx[h]);
-                let hi4 = _mm256_extracti128_si256::<1>(idx[h]);
-                let lo = _mm256_set_m128i(pair_at(base, lo4, 2), pair_at(base, lo4, 0));
-                let hi = _mm256_set_m128i(pair_at(base, hi4, 2), pair_at(base, hi4, 0));
-                let lo = _mm256_permutevar8x32_epi32(lo, split);
-                let hi = _mm256_permutevar8x32_epi32(hi, split);
-                first[h] = _mm256_permute2x128_si256::<0x20>(lo, hi);
-                second[h] = _mm256_permute2x128_si256::<0x31>(lo, hi);
-            }
-            (first, second)
         }
     }
     #[inline(always)]
@@ -946,44 +867,5 @@ impl Lanes16 for X256 {
                 _mm256_permute2f128_ps::<0x31>(a0, a1),
             ]
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// [`Lanes16::unorm8`] of every byte is the division's, in both sets
-    /// the CPU has.
-    #[test]
-    fn unorm8_is_the_division() {
-        let want: Vec<u32> = (0..256).map(|k| (k as f32 / 255.0).to_bits()).collect();
-        type Run = unsafe fn(&[i32; 16], &mut [f32; 16]);
-        let variants: [(bool, Run); 2] = [
-            (X256::supported(), unorm8_avx2),
-            (X512::supported(), unorm8_avx512),
-        ];
-        for (_, run) in variants.into_iter().filter(|(on, _)| *on) {
-            let mut got = Vec::new();
-            for chunk in 0..16 {
-                let k: [i32; 16] = std::array::from_fn(|l| (16 * chunk + l) as i32);
-                let mut out = [0f32; 16];
-                // SAFETY: the CPU has the features the function is
-                // compiled for (`supported`).
-                unsafe { run(&k, &mut out) };
-                got.extend(out.map(f32::to_bits));
-            }
-            assert_eq!(got, want);
-        }
-    }
-
-    #[target_feature(enable = "avx2,fma")]
-    unsafe fn unorm8_avx2(k: &[i32; 16], out: &mut [f32; 16]) {
-        unsafe { X256::store(out, X256::unorm8(X256::load_i(k))) }
-    }
-
-    #[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2,fma")]
-    unsafe fn unorm8_avx512(k: &[i32; 16], out: &mut [f32; 16]) {
-        unsafe { X512::store(out, X512::unorm8(X512::load_i(k))) }
     }
 }

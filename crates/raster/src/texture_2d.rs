@@ -459,9 +459,10 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
 
     let levels = match table.store {
         Store::Unorm8(levels) => levels,
-        Store::F32(_) => {
+        Store::F32(levels) => {
             let st = [*lookup.st[0], *lookup.st[1]];
-            sample_f32::<SIMD>(tex, &table, &level, &f, &st, nearest, two, mask, out);
+            let f32_levels = (&table, levels);
+            sample_f32::<SIMD>(tex, f32_levels, &level, &f, &st, nearest, two, mask, out);
             return true;
         }
         // The general path filters each level as it is stored.
@@ -515,7 +516,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
 #[allow(clippy::too_many_arguments)]
 fn sample_f32<const SIMD: bool>(
     tex: &Texture,
-    table: &LevelTable,
+    table: (&LevelTable, &[Image]),
     level: &[[i32; LANES]; 2],
     f: &[f32; LANES],
     st: &[[f32; LANES]; 2],
@@ -911,7 +912,7 @@ fn corner_indices(
 #[inline(always)]
 fn filter_lanes<const SIMD: bool>(
     tex: &Texture,
-    table: &LevelTable,
+    (table, levels): (&LevelTable, &[Image]),
     level: &[i32; LANES],
     st: &[[f32; LANES]; 2],
     nearest: &[bool; LANES],
@@ -935,8 +936,18 @@ fn filter_lanes<const SIMD: bool>(
         wgt[2][l] = a0 * b;
         wgt[3][l] = a * b;
     }
+    // Texels `idx[k][lane]` (corner k) of level `level[lane]`, MISSING
+    // out of range, as `t[k][component][lane]`.
     let mut t = [[[0.0f32; LANES]; 4]; 4];
-    table.fetch_float(tex, level, &idx, &mut t);
+    for l in 0..LANES {
+        let texels = f32_level(levels, level[l]);
+        for k in 0..4 {
+            let v = texels.get(idx[k][l] as usize).copied().unwrap_or(MISSING);
+            for c in 0..4 {
+                t[k][c][l] = v[c];
+            }
+        }
+    }
     combine(&t, &wgt, nearest, out);
 }
 
@@ -1258,7 +1269,8 @@ enum Store<'a> {
     /// Every level base..=q f32.
     F32(&'a [Image]),
     /// Some of each, or a level with fewer texels than its sizes say (a
-    /// 2D level of depth 0): read per texel through [`Texels::get`].
+    /// 2D level of depth 0): the general path's, which filters each level
+    /// as it is stored.
     Mixed,
 }
 
@@ -1307,43 +1319,6 @@ impl<'a> LevelTable<'a> {
             width,
             height,
             store,
-        }
-    }
-
-    /// Texels `idx[k][lane]` (corner k) of level `level[lane]` as RGBA
-    /// f32, into `t[k][component][lane]`; [`MISSING`] out of range. For
-    /// f32 or mixed storage (RGBA8 levels take `gather_unorm8`).
-    #[inline(always)]
-    fn fetch_float(
-        &self,
-        tex: &Texture,
-        level: &[i32; LANES],
-        idx: &[[u32; LANES]; 4],
-        t: &mut [[[f32; LANES]; 4]; 4],
-    ) {
-        match &self.store {
-            Store::F32(levels) => {
-                for l in 0..LANES {
-                    let texels = f32_level(levels, level[l]);
-                    for k in 0..4 {
-                        let v = texels.get(idx[k][l] as usize).copied().unwrap_or(MISSING);
-                        for c in 0..4 {
-                            t[k][c][l] = v[c];
-                        }
-                    }
-                }
-            }
-            Store::Mixed | Store::Unorm8(_) => {
-                for l in 0..LANES {
-                    let img = tex.levels.get(level[l] as usize);
-                    for k in 0..4 {
-                        let v = img.map_or(MISSING, |img| img.texels.get(idx[k][l] as usize));
-                        for c in 0..4 {
-                            t[k][c][l] = v[c];
-                        }
-                    }
-                }
-            }
         }
     }
 }
