@@ -767,6 +767,19 @@ pub(crate) fn index(i: i64, wrap: Wrap, n: u32) -> Texel {
     }
 }
 
+/// The NEAREST texel (eq. 3.23–3.25) of the scaled coordinate `u` on an
+/// axis `n` texels long.
+#[inline(always)]
+fn nearest_texel(u: f32, wrap: Wrap, n: u32) -> Texel {
+    let i = floor(u) as i64;
+    let i = match wrap {
+        // s = 1 selects the last texel (eq. 3.23).
+        Wrap::Clamp => i.min(n as i64 - 1),
+        _ => i,
+    };
+    index(i, wrap, n)
+}
+
 /// [`filter`] of a level stored as RGBA8 in fixed point
 /// ([`unorm8_filter`]), as values ×128: for 2D lookups (2D textures and
 /// cube faces) of colour textures whose texels are all inside the level;
@@ -796,12 +809,7 @@ fn filter_unorm8(
             let i0 = i64::from(i0);
             (index(i0, wrap, n)?, index(i0 + 1, wrap, n)?, weight)
         } else {
-            let i = floor(u) as i64;
-            let i = match wrap {
-                Wrap::Clamp => i.min(n as i64 - 1),
-                _ => i,
-            };
-            (index(i, wrap, n)?, 0, 0)
+            (nearest_texel(u, wrap, n)?, 0, 0)
         };
     }
     let base = layer.unwrap_or(0) * h as usize;
@@ -846,13 +854,7 @@ fn filter(
                 alpha,
             )
         } else {
-            let i = floor(u) as i64;
-            let i = match wrap {
-                // s = 1 selects the last texel (eq. 3.23).
-                Wrap::Clamp => i.min(n as i64 - 1),
-                _ => i,
-            };
-            (index(i, wrap, n), None, 0.0)
+            (nearest_texel(u, wrap, n), None, 0.0)
         };
     }
     if let Some(face) = layer {
