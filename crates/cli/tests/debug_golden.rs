@@ -107,7 +107,7 @@ fn views_and_outlines_write_images() {
     );
     let legend = String::from_utf8_lossy(&out.stderr);
     // The quad spans the middle half: tint.x goes 0 → 1 across it.
-    assert!(legend.contains("view `tint': x in [0, 0.992]"), "{legend}");
+    assert!(legend.contains("view `tint': x in [0, 0.992"), "{legend}");
     for png in [&view, &outl] {
         let bytes = std::fs::read(png).expect("png written");
         assert!(bytes.starts_with(b"\x89PNG"), "{}", png.display());

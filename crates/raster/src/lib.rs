@@ -44,8 +44,10 @@
 //! input layout, which fragment inputs the shader reads (unread varyings
 //! are left zero; the depth-only pass fills those its slice's interface
 //! marks read) and which colour outputs go to draw buffers. Set-up
-//! allocates nothing per primitive: varyings go to one array per set-up
-//! chunk (used where they are), triangles and quads inside every clip
+//! allocates nothing per primitive: the planes of its varyings
+//! (`interpolate`: set up once per primitive, evaluated per pixel as
+//! `(c + Y·dy) + X·dx` in f32, times 1/(1/w) when the vertices' 1/w
+//! differ) go to one array per set-up chunk (used where they are), triangles and quads inside every clip
 //! plane skip the clipper, and when vertices are shared (indexed meshes)
 //! each vertex's clip outcode and window position are computed once, on
 //! the workers, instead of per primitive. The set-up chunks' arrays and the vertex
@@ -54,21 +56,17 @@
 //! Triangle coverage steps integer edge forms (exactly the edge function
 //! values, four pixels and three edges per 2×2 quad, kept in vector
 //! registers, a row ending at the first quad an edge rules out for the
-//! rest of the row) into a buffer reused per tile; interpolation is
-//! computed per quad with the same f64 operations per pixel as before
-//! (window z first, and only when something reads it: a depth test of
-//! interpolated depths, gl_FragCoord or the debugger's probe; the
-//! perspective weights only for quads early depth rejection keeps), laid
-//! out per vertex so that filling a batch's varyings is straight vector
-//! code; a batch's quads are built in place in four per-tile slots, and
+//! rest of the row) into a buffer reused per tile; a quad's window z
+//! (from its f64 plane) is computed only when something reads it (a depth
+//! test of interpolated depths, gl_FragCoord or the debugger's probe),
+//! its varyings only when its batch is filled; a batch's quads are built in place in four per-tile slots, and
 //! the varyings and set-up of primitives a few ahead in the tile's bin
 //! (and the pointers to those further ahead) are prefetched while one is
 //! rasterized. When nothing reads a quad's 1/w or pixel position, four
 //! whole quads side by side of one triangle (a *strip*) make a batch
-//! without per-quad entries: their weights and window z are computed a
-//! lane per vector element (`Shape::strip_weights`, each quad's bits),
-//! the early depth test drops pixels as for single quads, and the inputs
-//! are interpolated straight into the batch; with AVX-512 and no depth
+//! without per-quad entries: their window z and inputs are evaluated
+//! from the planes over the 16 lanes at once (each quad's bits), the
+//! early depth test drops pixels as for single quads; with AVX-512 and no depth
 //! test, the strip's colour write (opaque or SRC_ALPHA /
 //! ONE_MINUS_SRC_ALPHA) covers its two rows of eight pixels at once with
 //! the per-pixel write's operations.
@@ -161,6 +159,7 @@ mod clip;
 mod draw_tests;
 mod fragment_ops;
 mod framebuffer;
+mod interpolate;
 mod linkage;
 mod pipeline;
 mod pixel_fragments;

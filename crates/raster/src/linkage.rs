@@ -174,12 +174,4 @@ impl FsLayout {
                 .map(|s| s.offset),
         }
     }
-
-    /// The fragment varyings of one vertex (one value per link).
-    pub fn varyings(&self, data: &[f32], back: bool, out: &mut Vec<f32>) {
-        for l in &self.links {
-            let src = if back { l.back } else { l.front };
-            out.push(src.and_then(|o| data.get(o)).copied().unwrap_or(0.0));
-        }
-    }
 }

@@ -8,6 +8,7 @@ use std::sync::Mutex;
 use crate::clip::{ClipVertex, Planes};
 use crate::ex::{ExecError, Interface, Textures, LANES};
 use crate::framebuffer::{Band, Framebuffer};
+use crate::interpolate::{Plane, PrimPlanes};
 use crate::linkage::{FsLayout, VsLayout};
 use crate::rasterize::{PixelRect, Shape, WinVertex};
 use crate::shade::{new_batch, FragmentStage, Prim};
@@ -439,11 +440,11 @@ pub(crate) struct Corner {
 const CORNER_REUSE: usize = 2;
 
 /// Where set-up primitives go: the primitives of one chunk, their
-/// fragment varyings ([`Prim::attrs`] indexes `attrs`), and the index of
+/// fragment varyings' planes ([`Prim::attrs`] indexes `planes`), and the index of
 /// the assembled primitive being set up.
 struct Out {
     prims: Vec<Prim>,
-    attrs: Vec<f32>,
+    planes: Vec<Plane>,
     source: u32,
     /// The set-up chunk (its index in the draw's chunks).
     chunk: u32,
@@ -555,7 +556,7 @@ struct Bins {
 }
 
 impl Bins {
-    fn new(chunks: Vec<ChunkBins>, parts: &[(Vec<Prim>, Vec<f32>)], grid: TileGrid) -> Bins {
+    fn new(chunks: Vec<ChunkBins>, parts: &[(Vec<Prim>, Vec<Plane>)], grid: TileGrid) -> Bins {
         let mut base = 0u32;
         let chunks = chunks
             .into_iter()
@@ -630,26 +631,35 @@ impl Setup<'_> {
             .then_some(win)
     }
 
-    /// Appends the fragment varyings of the given vertices to
-    /// `out.attrs`, flat-shaded colors taken from `provoking` and stored as
-    /// vertex 0's; returns where they start.
-    fn attrs(&self, out: &mut Out, vertices: &[&[f32]], back: bool, provoking: &[f32]) -> usize {
-        let start = out.attrs.len();
-        for d in vertices {
-            self.fs.varyings(d, back, &mut out.attrs);
+    /// Appends the planes of the fragment varyings of `shape` (`vertices`:
+    /// the data of its vertices) to `out.planes`, flat-shaded colours
+    /// constant at `provoking`'s, origin pixel `origin`; returns where
+    /// they start and the primitive's own planes (window z, 1/w).
+    fn planes(
+        &self,
+        out: &mut Out,
+        shape: &Shape,
+        origin: (i64, i64),
+        vertices: &[&[f32]],
+        (back, provoking): (bool, &[f32]),
+    ) -> (usize, PrimPlanes) {
+        let basis = shape.basis(origin);
+        let (z, inv_w) = shape.vertex_depths();
+        let prim = PrimPlanes::new(&basis, origin, z, inv_w);
+        let start = out.planes.len();
+        // A line's or a point's missing vertices repeat its last.
+        let data = |j: usize| vertices.get(j).or(vertices.last()).copied().unwrap_or(&[]);
+        let (d0, d1, d2) = (data(0), data(1), data(2));
+        let flat = self.state.flat_shading;
+        for link in &self.fs.links {
+            let src = if back { link.back } else { link.front };
+            let get = |d: &[f32]| src.and_then(|o| d.get(o)).copied().unwrap_or(0.0);
+            out.planes.push(match flat && link.color {
+                true => Plane::constant(get(provoking)),
+                false => prim.varying(&basis, [get(d0), get(d1), get(d2)], inv_w),
+            });
         }
-        if self.state.flat_shading {
-            for (li, link) in self.fs.links.iter().enumerate() {
-                if link.color {
-                    let src = if back { link.back } else { link.front };
-                    let v = src.and_then(|o| provoking.get(o)).copied().unwrap_or(0.0);
-                    if let Some(dst) = out.attrs.get_mut(start + li) {
-                        *dst = v;
-                    }
-                }
-            }
-        }
-        start
+        (start, prim)
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -671,12 +681,14 @@ impl Setup<'_> {
         if bounds.0 >= bounds.2 || bounds.1 >= bounds.3 {
             return;
         }
-        let attrs = self.attrs(out, vertices, back, provoking);
+        let origin = (bounds.0, bounds.1);
+        let (attrs, planes) = self.planes(out, &shape, origin, vertices, (back, provoking));
         out.prims.push(Prim {
             shape,
             bounds,
             back,
             z_offset,
+            planes,
             attrs,
             chunk: out.chunk,
             source: out.source,
@@ -1011,12 +1023,12 @@ pub(crate) fn draw_probed(
     let parts = workers.map(chunks, 1, |c, _| {
         let first = c * chunk;
         let n = chunk.min(n_prims.saturating_sub(first));
-        let (mut prims, mut attrs) = workers.spare().chunks.pop().unwrap_or_default();
+        let (mut prims, mut planes) = workers.spare().chunks.pop().unwrap_or_default();
         prims.reserve(n);
-        attrs.reserve(n * 3 * fs_layout.links.len());
+        planes.reserve(n * fs_layout.links.len());
         let mut out = Out {
             prims,
-            attrs,
+            planes,
             source: 0,
             chunk: c as u32,
         };
@@ -1052,12 +1064,12 @@ pub(crate) fn draw_probed(
         // Binned here, on the workers: the chunks' bins read in chunk
         // order list each tile's primitives in draw order.
         let bins = ChunkBins::new(&out.prims, &grid);
-        ((out.prims, out.attrs), bins)
+        ((out.prims, out.planes), bins)
     });
     let (parts, chunk_bins): (Vec<_>, Vec<_>) = parts.into_iter().unzip();
     // The chunks' primitives in order and their varyings, referenced
     // where they are (not moved).
-    let attrs: Vec<&[f32]> = parts.iter().map(|p| &p.1[..]).collect();
+    let attrs: Vec<&[Plane]> = parts.iter().map(|p| &p.1[..]).collect();
     // Sized first: collected from `flat_map` the vector grew by doubling
     // (copies and fresh pages, ~10 ms of a million-triangle draw).
     let mut prims: Vec<&Prim> = Vec::with_capacity(parts.iter().map(|p| p.0.len()).sum());

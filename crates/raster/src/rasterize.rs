@@ -1,5 +1,5 @@
 //! Set-up primitives in window space: which pixels they cover (grouped in
-//! 2×2 quads) and the interpolation weights at any pixel center.
+//! 2×2 quads) and the planes of their barycentrics.
 //!
 //! - Triangles: fixed-point edge functions with [`SUBPIXEL_BITS`] bits of
 //!   subpixel precision, sampled at pixel centers (x + ½, y + ½), with a
@@ -16,19 +16,14 @@
 //!   width, or for point sprites the square of the exact size whose pixel
 //!   centers lie inside it.
 //!
-//! Interpolation: triangles and lines are perspective-correct
-//! (GL 2.1 eq. 3.6 and 3.5: barycentrics weighted by 1/w), window z and 1/w
-//! are linear in window space. Pixels outside the primitive (quad helpers)
-//! get the extrapolated values. A triangle's barycentrics are its exact
-//! integer edge values times the f64 reciprocal of twice its area, the
-//! perspective weights times the reciprocal of their sum: one division
-//! each where the quotients would take three or twelve (within an ulp of
-//! f64 of them, far below f32's). Every path (per pixel, per quad, per
-//! instruction set, from the coverage loop's stepped edges or from edges
-//! computed afresh) computes them with the same operations on the same
-//! integers.
+//! Interpolation: each primitive gives the planes of its barycentrics
+//! ([`Shape::basis`]) from which set-up builds the planes of everything
+//! a fragment interpolates (`crate::interpolate`): a triangle's are its
+//! exact integer edge forms (those of the coverage) times the f64
+//! reciprocal of twice its area; pixels outside the primitive (quad
+//! helpers) get the extrapolated values.
 
-use crate::simd::Isa;
+use crate::interpolate::Basis;
 
 /// Bits of subpixel precision of triangle vertices.
 pub const SUBPIXEL_BITS: u32 = 8;
@@ -74,26 +69,6 @@ pub(crate) enum Shape {
         /// Covered pixels `[x0, x1) × [y0, y1)`.
         square: PixelRect,
     },
-}
-
-/// Where a pixel center sits relative to a primitive.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(crate) struct Interp {
-    /// Window z (before polygon offset).
-    pub z: f64,
-    /// Interpolated 1 / w_clip (gl_FragCoord.w).
-    pub inv_w: f64,
-    /// Perspective-correct weights of the primitive's vertices.
-    pub weights: [f64; 3],
-}
-
-/// [`Interp`] at the four pixels of a quad, component by component.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(crate) struct QuadInterp {
-    pub z: [f64; 4],
-    pub inv_w: [f64; 4],
-    /// `weights[j][k]`: vertex `j`'s weight at pixel `k`.
-    pub weights: [[f64; 4]; 3],
 }
 
 /// Edge k of a triangle: from vertex k+1 to vertex k+2 (opposite vertex k).
@@ -299,177 +274,75 @@ impl Shape {
         out
     }
 
-    /// Interpolation at the center of pixel (x, y).
-    pub fn interp(&self, x: i64, y: i64) -> Interp {
+    /// The planes of the primitive's barycentrics of vertices 1 and 2
+    /// relative to the center of pixel `(x0, y0)` (see [`Basis`]): for a
+    /// triangle its exact integer edge forms times one over twice its
+    /// area (so the barycentrics of the coverage's snapped vertices); for
+    /// a line the parameter `t` of GL 2.1 eq. 3.1 of each pixel center
+    /// (the projection onto the segment); zeros for a point.
+    pub fn basis(&self, (x0, y0): (i64, i64)) -> Basis {
         match self {
             Shape::Triangle {
-                p,
-                sign,
-                inv_area2,
-                v,
+                p, sign, inv_area2, ..
             } => {
-                let (cx, cy) = (x * ONE + HALF, y * ONE + HALF);
-                let b = [0, 1, 2].map(|k| (sign * edge(p, k, cx, cy)) as f64 * inv_area2);
-                let z = b[0] * v[0].z + b[1] * v[1].z + b[2] * v[2].z;
-                let pw = [0, 1, 2].map(|k| b[k] * v[k].inv_w);
-                let inv_w = pw[0] + pw[1] + pw[2];
-                let rw = 1.0 / inv_w;
-                Interp {
-                    z,
-                    inv_w,
-                    weights: pw.map(|q| q * rw),
-                }
+                let e = edge_forms(p, *sign, (x0, y0));
+                let b = |j: usize| {
+                    let (c, dx, dy) = e[j];
+                    [c as f64, dx as f64, dy as f64].map(|v| v * inv_area2)
+                };
+                Basis { b: [b(1), b(2)] }
             }
             Shape::Line { v, .. } => {
                 // GL 2.1 eq. 3.1: t = (p - pa)·(pb - pa) / |pb - pa|².
                 let (dx, dy) = (v[1].x - v[0].x, v[1].y - v[0].y);
-                let (px, py) = (x as f64 + 0.5 - v[0].x, y as f64 + 0.5 - v[0].y);
                 let len2 = dx * dx + dy * dy;
-                let t = if len2 > 0.0 {
-                    (px * dx + py * dy) / len2
+                let t = if len2 > 0.0 && len2.is_finite() {
+                    let (px, py) = (x0 as f64 + 0.5 - v[0].x, y0 as f64 + 0.5 - v[0].y);
+                    [(px * dx + py * dy) / len2, dx / len2, dy / len2]
                 } else {
-                    0.0
+                    [0.0; 3]
                 };
-                let z = (1.0 - t) * v[0].z + t * v[1].z;
-                let p0 = (1.0 - t) * v[0].inv_w;
-                let p1 = t * v[1].inv_w;
-                let inv_w = p0 + p1;
-                Interp {
-                    z,
-                    inv_w,
-                    weights: [p0 / inv_w, p1 / inv_w, 0.0],
-                }
+                Basis { b: [t, [0.0; 3]] }
             }
-            Shape::Point { v, .. } => Interp {
-                z: v.z,
-                inv_w: v.inv_w,
-                weights: [1.0, 0.0, 0.0],
-            },
+            Shape::Point { .. } => Basis::default(),
         }
     }
 
-    /// [`Shape::interp`] at the four pixel centers of the quad at
-    /// (qx, qy) (pixel `k` at `(qx + (k & 1), qy + (k >> 1))`), bit for bit,
-    /// laid out per vertex for the fragment batch's interpolation.
-    #[cfg(test)]
-    pub fn interp_quad(&self, qx: i64, qy: i64) -> QuadInterp {
-        let mut q = QuadInterp::default();
-        self.interp_quad_into(qx, qy, &mut q);
-        q
+    /// The vertices' window z and 1/w (a point's or a line's last vertex
+    /// repeated).
+    pub fn vertex_depths(&self) -> ([f64; 3], [f64; 3]) {
+        let v: [&WinVertex; 3] = match self {
+            Shape::Triangle { v, .. } => [&v[0], &v[1], &v[2]],
+            Shape::Line { v, .. } => [&v[0], &v[1], &v[1]],
+            Shape::Point { v, .. } => [v, v, v],
+        };
+        (v.map(|w| w.z), v.map(|w| w.inv_w))
     }
 
-    /// [`Shape::interp_quad`] written into `q` (in place: a batch's quads
-    /// are built where they stay).
-    #[cfg(test)]
-    pub fn interp_quad_into(&self, qx: i64, qy: i64, q: &mut QuadInterp) {
-        self.interp_quad_isa(Isa::Base, qx, qy, q)
-    }
-
-    /// [`Shape::interp_quad_into`] with the triangle arithmetic compiled
-    /// for `isa` (a variant this CPU runs: [`Isa::supported`]); the same
-    /// bits whatever the variant.
-    #[cfg(test)]
-    pub fn interp_quad_isa(&self, isa: Isa, qx: i64, qy: i64, q: &mut QuadInterp) {
-        self.interp_quad_z(isa, qx, qy, q);
-        self.interp_quad_finish(isa, q);
-    }
-
-    /// The first half of [`Shape::interp_quad_isa`]: `q.z` (what early
-    /// depth rejection needs). For triangles `q.weights` holds the
-    /// barycentrics until [`Shape::interp_quad_finish`] turns them into
-    /// the perspective-correct weights and sets `q.inv_w`; for the other
-    /// shapes everything is done here.
+    /// The covered quads inside `clip` in [`Shape::quads_into`]'s order:
+    /// `f(qx, qy, mask)`. Triangles without a list in between (from the
+    /// coverage walk itself); the other shapes go through `quads`.
     #[inline(always)]
-    pub fn interp_quad_z(&self, isa: Isa, qx: i64, qy: i64, q: &mut QuadInterp) {
-        match self {
-            Shape::Triangle {
-                p,
-                sign,
-                inv_area2,
-                v,
-            } => {
-                let t = (p, *sign, *inv_area2, v);
-                match isa {
-                    #[cfg(target_arch = "x86_64")]
-                    // SAFETY: the caller passes a variant the CPU runs
-                    // (`simd::detect` or `Isa::supported`).
-                    Isa::Avx512 => unsafe { triangle_quad_avx512(t, qx, qy, q) },
-                    #[cfg(target_arch = "x86_64")]
-                    // SAFETY: as above.
-                    Isa::Avx2 => unsafe { triangle_quad_avx2(t, qx, qy, q) },
-                    _ => triangle_quad(t, qx, qy, q),
-                }
-            }
-            _ => {
-                for k in 0..4 {
-                    let it = self.interp(qx + (k as i64 & 1), qy + (k as i64 >> 1));
-                    q.z[k] = it.z;
-                    q.inv_w[k] = it.inv_w;
-                    for j in 0..3 {
-                        q.weights[j][k] = it.weights[j];
-                    }
-                }
-            }
-        }
-    }
-
-    /// [`Shape::interp_quad_z`] with the triangle arithmetic inlined into
-    /// the caller, so compiled for the caller's instruction set (the same
-    /// operations: the same bits, as every variant gives). For hot loops
-    /// that are themselves compiled per variant: no call, and the values
-    /// stay in registers.
-    #[inline(always)]
-    pub fn interp_quad_z_inline(&self, qx: i64, qy: i64, q: &mut QuadInterp) {
-        match self {
-            Shape::Triangle {
-                p,
-                sign,
-                inv_area2,
-                v,
-            } => triangle_quad((p, *sign, *inv_area2, v), qx, qy, q),
-            _ => self.interp_quad_z(Isa::Base, qx, qy, q),
-        }
-    }
-
-    /// The covered quads inside `clip` in [`Shape::quads_into`]'s order,
-    /// each with its window z and barycentrics as
-    /// [`Shape::interp_quad_z_inline`] leaves them: `f(qx, qy, mask, q)`.
-    /// Triangles take them from the coverage's own edge values (the same
-    /// integers, so the same bits) without a list of quads in between;
-    /// the other shapes go through `quads`.
-    #[inline(always)]
-    pub fn quads_z_each(
+    pub fn quads_each(
         &self,
         clip: PixelRect,
         quads: &mut Vec<(i64, i64, u8)>,
-        mut f: impl FnMut(i64, i64, u8, &mut QuadInterp),
+        mut f: impl FnMut(i64, i64, u8),
     ) {
-        let mut q = QuadInterp::default();
         match self {
-            Shape::Triangle {
-                p,
-                sign,
-                inv_area2,
-                v,
-            } => {
+            Shape::Triangle { p, sign, .. } => {
                 let r = intersect(self.bounds(), clip);
                 if r.0 >= r.2 || r.1 >= r.3 {
                     return;
                 }
-                let small = small_edges(p, r);
                 triangle_quads_each(
                     p,
                     *sign,
                     r,
                     #[inline(always)]
-                    |qx, qy, mask, s| {
+                    |qx, qy, mask| {
                         if mask != 0 {
-                            if small {
-                                (q.weights, q.z) = barycentrics(&s.values_f64(), *inv_area2, v);
-                            } else {
-                                quad_from_edges(&s.values(), *inv_area2, v, &mut q);
-                            }
-                            f(qx, qy, mask, &mut q);
+                            f(qx, qy, mask);
                         }
                     },
                 );
@@ -477,77 +350,8 @@ impl Shape {
             _ => {
                 self.quads_into(clip, quads);
                 for &(qx, qy, mask) in quads.iter() {
-                    self.interp_quad_z_inline(qx, qy, &mut q);
-                    f(qx, qy, mask, &mut q);
+                    f(qx, qy, mask);
                 }
-            }
-        }
-    }
-
-    /// The perspective-correct weights and the interpolated z of a row
-    /// of four quads of a triangle, (qx + 2i, qy) for i in 0..4, as 16
-    /// lanes (lane 4i + k: pixel k of quad i): `w[j][lane]` is vertex j's
-    /// weight, the bits [`Shape::interp_quad_z`] and
-    /// [`Shape::interp_quad_finish`] give each quad (the same functions —
-    /// `signed_edges`, `barycentrics`, `perspective_weights` — over 16
-    /// lanes instead of 4), computed a lane per vector element (inlined:
-    /// compiled for the caller's instruction set). `None` for other
-    /// shapes.
-    #[inline(always)]
-    pub fn strip_weights(&self, qx: i64, qy: i64) -> Option<([[f64; 16]; 3], [f64; 16])> {
-        let Shape::Triangle {
-            p,
-            sign,
-            inv_area2,
-            v,
-        } = self
-        else {
-            return None;
-        };
-        // Lane l's pixel offset from the first quad's first pixel.
-        let mut ox = [0i64; 16];
-        let mut oy = [0i64; 16];
-        for l in 0..16 {
-            ox[l] = 2 * (l as i64 / 4) + (l as i64 & 1);
-            oy[l] = (l as i64 >> 1) & 1;
-        }
-        let s = match signed_edges_f64(
-            p,
-            *sign,
-            (qx, qy),
-            &ox.map(|o| o as f64),
-            &oy.map(|o| o as f64),
-        ) {
-            Some(s) => s,
-            None => to_f64(&signed_edges(p, *sign, (qx, qy), &ox, &oy)),
-        };
-        let (b, z) = barycentrics(&s, *inv_area2, v);
-        let (w, _) = perspective_weights(&b, v);
-        Some((w, z))
-    }
-
-    /// [`Shape::interp_quad_finish`] inlined into the caller (see
-    /// [`Shape::interp_quad_z_inline`]).
-    #[inline(always)]
-    pub fn interp_quad_finish_inline(&self, q: &mut QuadInterp) {
-        if let Shape::Triangle { v, .. } = self {
-            triangle_weights(v, q);
-        }
-    }
-
-    /// The second half of [`Shape::interp_quad_isa`] (after
-    /// [`Shape::interp_quad_z`] on the same `q`).
-    #[inline(always)]
-    pub fn interp_quad_finish(&self, isa: Isa, q: &mut QuadInterp) {
-        if let Shape::Triangle { v, .. } = self {
-            match isa {
-                #[cfg(target_arch = "x86_64")]
-                // SAFETY: as in `interp_quad_z`.
-                Isa::Avx512 => unsafe { triangle_weights_avx512(v, q) },
-                #[cfg(target_arch = "x86_64")]
-                // SAFETY: as above.
-                Isa::Avx2 => unsafe { triangle_weights_avx2(v, q) },
-                _ => triangle_weights(v, q),
             }
         }
     }
@@ -590,41 +394,6 @@ impl Shape {
     }
 }
 
-/// A triangle's points, orientation, doubled area and vertices.
-type TriangleRef<'a> = (&'a [(i64, i64); 3], i64, f64, &'a [WinVertex; 3]);
-
-/// [`Shape::interp`] of a triangle at the four pixels of the quad at
-/// (qx, qy), first half: window z, and the barycentrics in `q.weights`.
-/// The edge values of pixel 0 as [`edge`] computes them, those of the
-/// other pixels one step of an edge's (integer, exact) slope away, so the
-/// same integers; then [`quad_from_edges`].
-#[inline(always)]
-fn triangle_quad((p, sign, r, v): TriangleRef, qx: i64, qy: i64, q: &mut QuadInterp) {
-    let s = signed_edges(p, sign, (qx, qy), &[0, 1, 0, 1], &[0, 0, 1, 1]);
-    quad_from_edges(&s, r, v, q);
-}
-
-/// The orientation times [`edge`] `j` at the centers of `N` pixels
-/// `(qx + ox[l], qy + oy[l])`: pixel (qx, qy)'s value as [`edge`]
-/// computes it, the others whole steps of the edge's (integer) slopes
-/// away, so the same integers.
-#[inline(always)]
-fn signed_edges<const N: usize>(
-    p: &[(i64, i64); 3],
-    sign: i64,
-    (qx, qy): (i64, i64),
-    ox: &[i64; N],
-    oy: &[i64; N],
-) -> [[i64; N]; 3] {
-    let mut s = [[0i64; N]; 3];
-    for (sj, (e0, dx, dy)) in s.iter_mut().zip(edge_forms(p, sign, (qx, qy))) {
-        for l in 0..N {
-            sj[l] = e0 + ox[l] * dx + oy[l] * dy;
-        }
-    }
-    s
-}
-
 /// Per edge `j`, the orientation times [`edge`] `j` at the center of
 /// pixel (qx, qy) and its steps per pixel in x and y (integers).
 #[inline(always)]
@@ -636,142 +405,6 @@ fn edge_forms(p: &[(i64, i64); 3], sign: i64, (qx, qy): (i64, i64)) -> [(i64, i6
         let e0 = ex * (cy - pa.1) - ey * (cx - pa.0);
         (sign * e0, sign * -ey * ONE, sign * ex * ONE)
     })
-}
-
-/// [`signed_edges`] in f64 arithmetic, for a triangle whose fixed-point
-/// coordinates and the pixels' are below 2^24 in magnitude (else
-/// `None`): then every value on the way is an integer below 2^53, so
-/// each operation is exact and the results are [`signed_edges`]'s
-/// integers as f64 (+0 for zero, as the conversion gives), without
-/// 64-bit integer products and conversions (which AVX2 lacks).
-#[inline(always)]
-fn signed_edges_f64<const N: usize>(
-    p: &[(i64, i64); 3],
-    sign: i64,
-    (qx, qy): (i64, i64),
-    ox: &[f64; N],
-    oy: &[f64; N],
-) -> Option<[[f64; N]; 3]> {
-    const LIMIT: i64 = 1 << 24;
-    let small = |c: i64| c.abs() < LIMIT;
-    let pixels = small(qx.saturating_mul(ONE)) && small(qy.saturating_mul(ONE));
-    if !pixels || !p.iter().all(|&(x, y)| small(x) && small(y)) {
-        return None;
-    }
-    let mut s = [[0.0f64; N]; 3];
-    for (sj, (e0, dx, dy)) in s.iter_mut().zip(edge_forms(p, sign, (qx, qy))) {
-        // (The orientation is in the integers: a zero stays +0.)
-        let (e0, dx, dy) = (e0 as f64, dx as f64, dy as f64);
-        for l in 0..N {
-            sj[l] = e0 + ox[l] * dx + oy[l] * dy;
-        }
-    }
-    Some(s)
-}
-
-/// Signed edge values as f64 (exact: they are below 2^53 in magnitude).
-#[inline(always)]
-fn to_f64<const N: usize>(s: &[[i64; N]; 3]) -> [[f64; N]; 3] {
-    let mut out = [[0.0f64; N]; 3];
-    for (o, s) in out.iter_mut().zip(s) {
-        for l in 0..N {
-            o[l] = s[l] as f64;
-        }
-    }
-    out
-}
-
-/// The barycentrics `b = s · r` (f64; `r`: one over the doubled area)
-/// and the interpolated window z of `N` pixels from their signed edge
-/// values `s[j][l]` (integers), z from the vertices' in vertex order.
-#[inline(always)]
-fn barycentrics<const N: usize>(
-    s: &[[f64; N]; 3],
-    r: f64,
-    v: &[WinVertex; 3],
-) -> ([[f64; N]; 3], [f64; N]) {
-    let mut b = [[0.0f64; N]; 3];
-    for (bj, sj) in b.iter_mut().zip(s) {
-        for l in 0..N {
-            bj[l] = sj[l] * r;
-        }
-    }
-    let mut z = [0.0f64; N];
-    for l in 0..N {
-        z[l] = b[0][l] * v[0].z + b[1][l] * v[1].z + b[2][l] * v[2].z;
-    }
-    (b, z)
-}
-
-/// The perspective-correct weights and 1/w of `N` pixels from their
-/// barycentrics: `pw = b · 1/w_j`, 1/w their sum, weights `pw / (1/w)`
-/// as `pw · (1 / (1/w))`.
-#[inline(always)]
-fn perspective_weights<const N: usize>(
-    b: &[[f64; N]; 3],
-    v: &[WinVertex; 3],
-) -> ([[f64; N]; 3], [f64; N]) {
-    let mut w = [[0.0f64; N]; 3];
-    let mut inv_w = [0.0f64; N];
-    for l in 0..N {
-        let pw = [
-            b[0][l] * v[0].inv_w,
-            b[1][l] * v[1].inv_w,
-            b[2][l] * v[2].inv_w,
-        ];
-        inv_w[l] = pw[0] + pw[1] + pw[2];
-        let rw = 1.0 / inv_w[l];
-        for (wj, pwj) in w.iter_mut().zip(pw) {
-            wj[l] = pwj * rw;
-        }
-    }
-    (w, inv_w)
-}
-
-/// The barycentrics and window z of a quad's pixels from their signed
-/// edge values (`s[j][k]`: the triangle's orientation times [`edge`] `j`
-/// at pixel `k`, exact integers however they were reached): `b = s · r`
-/// in f64 (`r`: one over the doubled area), z from the vertices' in the
-/// same order; the barycentrics left in `q.weights`.
-#[inline(always)]
-fn quad_from_edges(s: &[[i64; 4]; 3], r: f64, v: &[WinVertex; 3], q: &mut QuadInterp) {
-    (q.weights, q.z) = barycentrics(&to_f64(s), r, v);
-}
-
-/// Second half: the perspective-correct weights and 1/w from the
-/// barycentrics [`triangle_quad`] left in `q.weights`.
-#[inline(always)]
-fn triangle_weights(v: &[WinVertex; 3], q: &mut QuadInterp) {
-    (q.weights, q.inv_w) = perspective_weights(&q.weights, v);
-}
-
-/// [`triangle_quad`] compiled for AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn triangle_quad_avx2(t: TriangleRef, qx: i64, qy: i64, q: &mut QuadInterp) {
-    triangle_quad(t, qx, qy, q)
-}
-
-/// [`triangle_quad`] compiled for AVX-512 (64-bit integer products and
-/// conversions to f64 in vector registers).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
-unsafe fn triangle_quad_avx512(t: TriangleRef, qx: i64, qy: i64, q: &mut QuadInterp) {
-    triangle_quad(t, qx, qy, q)
-}
-
-/// [`triangle_weights`] compiled for AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn triangle_weights_avx2(v: &[WinVertex; 3], q: &mut QuadInterp) {
-    triangle_weights(v, q)
-}
-
-/// [`triangle_weights`] compiled for AVX-512.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
-unsafe fn triangle_weights_avx512(v: &[WinVertex; 3], q: &mut QuadInterp) {
-    triangle_weights(v, q)
 }
 
 /// The covered quads of a triangle inside `r` (non-empty, within the
@@ -788,7 +421,7 @@ fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i
         sign,
         r,
         #[inline(always)]
-        |qx, qy, mask, _| {
+        |qx, qy, mask| {
             if n == out.len() {
                 out.push((qx, qy, mask));
             } else if let Some(slot) = out.get_mut(n) {
@@ -801,9 +434,8 @@ fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i
 }
 
 /// Visits the quads of a triangle inside `r` (non-empty, within the
-/// primitive's bounds), row-major: `f(qx, qy, mask, s)` with the pixels
-/// covered (mask bit `(y - qy) * 2 + (x - qx)`, possibly none) and the
-/// signed edge values of [`quad_from_edges`] (`s.values()`). Each edge is
+/// primitive's bounds), row-major: `f(qx, qy, mask)` with the pixels
+/// covered (mask bit `(y - qy) * 2 + (x - qx)`, possibly none). Each edge is
 /// the integer linear form `s(x, y) = a·x + b·y + c` (the orientation
 /// times [`edge`] at the pixel center), stepped by additions; a pixel is
 /// covered when every edge is at least its threshold there: 0 on an edge
@@ -818,7 +450,7 @@ fn triangle_quads_each(
     p: &[(i64, i64); 3],
     sign: i64,
     r: PixelRect,
-    mut f: impl FnMut(i64, i64, u8, &QuadEdges),
+    mut f: impl FnMut(i64, i64, u8),
 ) {
     let mut a = [0i64; 3];
     let mut b = [0i64; 3];
@@ -842,19 +474,16 @@ fn triangle_quads_each(
     while qy < r.3 {
         // Pixel rows of the quad row inside r: bits 0–1 and 2–3.
         let rows = (if qy >= r.1 { 0b0011u8 } else { 0 }) | (if qy + 1 < r.3 { 0b1100 } else { 0 });
-        let mut e = QuadEdges {
-            over: std::array::from_fn(|k| {
-                let g = a[k] * x0 + b[k] * qy + c[k] - threshold[k];
-                Quad4::new(offset[k].map(|o| g + o))
-            }),
-            threshold,
-        };
+        let mut over: [Quad4; 3] = std::array::from_fn(|k| {
+            let g = a[k] * x0 + b[k] * qy + c[k] - threshold[k];
+            Quad4::new(offset[k].map(|o| g + o))
+        });
         let mut qx = x0;
         while qx < r.2 {
             let cols =
                 (if qx >= r.0 { 0b0101u8 } else { 0 }) | (if qx + 1 < r.2 { 0b1010 } else { 0 });
             // Per edge, the pixels where it is below its threshold.
-            let outside = e.over.map(Quad4::negative);
+            let outside = over.map(Quad4::negative);
             let mask = !(outside[0] | outside[1] | outside[2]) & rows & cols;
             // Outside on the whole quad: nothing covered here or further
             // right.
@@ -862,57 +491,14 @@ fn triangle_quads_each(
             if whole & decreasing != 0 {
                 break;
             }
-            f(qx, qy, mask, &e);
-            for (o, s) in e.over.iter_mut().zip(&step) {
+            f(qx, qy, mask);
+            for (o, s) in over.iter_mut().zip(&step) {
                 *o = o.add(*s);
             }
             qx += 2;
         }
         qy += 2;
     }
-}
-
-/// A quad's three edge values in [`triangle_quads_each`]: each minus its
-/// threshold (`over`), and the thresholds.
-pub(crate) struct QuadEdges {
-    over: [Quad4; 3],
-    threshold: [i64; 3],
-}
-
-impl QuadEdges {
-    /// The signed edge values `s[j][k]` of edge `j` at pixel `k`.
-    #[inline(always)]
-    fn values(&self) -> [[i64; 4]; 3] {
-        std::array::from_fn(|j| self.over[j].to_array().map(|v| v + self.threshold[j]))
-    }
-
-    /// [`QuadEdges::values`] as f64, for a triangle for which
-    /// [`small_edges`] holds (then they are exact).
-    #[inline(always)]
-    fn values_f64(&self) -> [[f64; 4]; 3] {
-        let [a, b, c] = &self.over;
-        let t = &self.threshold;
-        [
-            a.to_f64_plus(t[0]),
-            b.to_f64_plus(t[1]),
-            c.to_f64_plus(t[2]),
-        ]
-    }
-}
-
-/// Whether the edge values of triangle `p` at the pixels of `r` are
-/// below 2^51 in magnitude, as [`QuadEdges::values_f64`] needs: fixed-
-/// point coordinates and pixel positions below 2^23 bound every
-/// difference by 2^24 and each product of the edge function by 2^48.
-#[inline(always)]
-fn small_edges(p: &[(i64, i64); 3], r: PixelRect) -> bool {
-    const LIMIT: i64 = 1 << 23;
-    let pixel = |c: i64| c.abs() < LIMIT / ONE - 2;
-    p.iter().all(|&(x, y)| x.abs() < LIMIT && y.abs() < LIMIT)
-        && pixel(r.0)
-        && pixel(r.1)
-        && pixel(r.2)
-        && pixel(r.3)
 }
 
 /// Four i64, one per pixel of a quad: two SSE2 registers on x86-64 (the
@@ -994,36 +580,7 @@ impl Quad4 {
         }
     }
 
-    /// `self + k` as f64, exact for sums in [−2^51, 2^51) (the caller's
-    /// bound): on x86-64 the sum added to the bits of 1.5·2^52 and that
-    /// value subtracted as a double (before AVX-512 there is no 64-bit
-    /// integer conversion instruction); zero gives +0, as `as` does.
-    #[inline(always)]
-    fn to_f64_plus(self, k: i64) -> [f64; 4] {
-        #[cfg(target_arch = "x86_64")]
-        {
-            const MAGIC: f64 = 6_755_399_441_055_744.0; // 1.5 · 2^52
-            let mut out = [0f64; 4];
-            // SAFETY: SSE2 is part of the x86-64 baseline; the stores
-            // write the four elements of `out`, two at a time.
-            unsafe {
-                use std::arch::x86_64::*;
-                let bias = _mm_set1_epi64x((MAGIC.to_bits() as i64).wrapping_add(k));
-                let m = _mm_set1_pd(MAGIC);
-                for (h, v) in self.v.iter().enumerate() {
-                    let x = _mm_castsi128_pd(_mm_add_epi64(*v, bias));
-                    _mm_storeu_pd(out.as_mut_ptr().add(2 * h), _mm_sub_pd(x, m));
-                }
-            }
-            out
-        }
-        #[cfg(not(target_arch = "x86_64"))]
-        {
-            self.v.map(|x| x.wrapping_add(k) as f64)
-        }
-    }
-
-    #[inline(always)]
+    #[cfg(test)]
     fn to_array(self) -> [i64; 4] {
         #[cfg(target_arch = "x86_64")]
         {
@@ -1064,6 +621,7 @@ fn for_each_quad(r: PixelRect, mut f: impl FnMut(i64, i64)) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::interpolate::PrimPlanes;
 
     fn wv(x: f64, y: f64) -> WinVertex {
         WinVertex {
@@ -1089,55 +647,18 @@ mod tests {
         hits
     }
 
+    /// The walk visits the quads `quads_into` lists, with their masks.
     #[test]
-    fn quad4_to_f64_is_exact_within_its_bound() {
-        let big = (1i64 << 51) - 1;
-        let mut xs = vec![0, 1, -1, big, -big - 1, big - 7, -big + 3, 255, -256];
-        let mut state = 0x1234_5678_9abc_def1u64;
-        for _ in 0..2000 {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            xs.push((state as i64) >> (13 + state % 40));
-        }
-        for (i, &x) in xs.iter().enumerate() {
-            for k in [0i64, 1, -1] {
-                let Some(sum) = x.checked_add(k).filter(|s| (-big - 1..=big).contains(s)) else {
-                    continue;
-                };
-                let q = Quad4::new([x, xs[(i + 1) % xs.len()] / 2, 0, -x / 3]);
-                let got = q.to_f64_plus(k);
-                let want = q.to_array().map(|v| (v + k) as f64);
-                assert_eq!(
-                    got.map(f64::to_bits),
-                    want.map(f64::to_bits),
-                    "{x} + {k} ({sum})"
-                );
-            }
-        }
-    }
-
-    /// The walk's quads carry the z and barycentrics `interp_quad_z`
-    /// gives each quad (small triangles through the f64 conversion, large
-    /// ones through the integers).
-    #[test]
-    fn quads_z_each_gives_each_quads_interpolation() {
+    fn quads_each_visits_the_listed_quads() {
         let triangles = random_triangles(0x5DEE_CE66_D1CE_4E5B, 3000);
         let mut seen = 0;
         for (v, t, qx, qy) in triangles {
             let clip = (qx - 6, qy - 6, qx + 10, qy + 8);
             let mut quads = Vec::new();
-            t.quads_z_each(clip, &mut quads, |x, y, _, q| {
-                let mut want = QuadInterp::default();
-                t.interp_quad_z(Isa::Base, x, y, &mut want);
-                let bits = |q: &QuadInterp| {
-                    let mut out: Vec<u64> = q.z.iter().map(|x| x.to_bits()).collect();
-                    out.extend(q.weights.iter().flatten().map(|x| x.to_bits()));
-                    out
-                };
-                assert_eq!(bits(q), bits(&want), "{v:?} at {x},{y}");
-                seen += 1;
-            });
+            let mut got = Vec::new();
+            t.quads_each(clip, &mut quads, |x, y, m| got.push((x, y, m)));
+            assert_eq!(got, t.quads(clip), "{v:?}");
+            seen += got.len();
         }
         assert!(seen > 1000, "{seen} quads");
     }
@@ -1281,70 +802,119 @@ mod tests {
         assert_eq!(hits[6], 1, "left edge included");
     }
 
+    /// The planes of a primitive at pixel (x, y): (window z, 1/w, the
+    /// varying with vertex values `a`).
+    fn planes_at(s: &Shape, a: [f32; 3], (x, y): (i64, i64)) -> (f64, f32, f32) {
+        let origin = (s.bounds().0, s.bounds().1);
+        let basis = s.basis(origin);
+        let (z, inv_w) = s.vertex_depths();
+        let p = PrimPlanes::new(&basis, origin, z, inv_w);
+        let v = p.varying(&basis, a, inv_w);
+        let (fx, fy) = p.offsets((x, y), &[0.0], &[0.0]);
+        let rw = p.reciprocal_w(&fx, &fy);
+        (
+            p.z_at(&fx, &fy)[0],
+            p.inv_w_at(&fx, &fy)[0],
+            v.values(&fx, &fy, &rw)[0],
+        )
+    }
+
+    /// GL 2.1 eq. 3.9 in f64 from a pixel's barycentrics `b`.
+    fn exact(b: [f64; 3], v: &[WinVertex; 3], a: [f32; 3]) -> (f64, f64, f64) {
+        let z = (0..3).map(|j| b[j] * v[j].z).sum::<f64>();
+        let inv_w = (0..3).map(|j| b[j] * v[j].inv_w).sum::<f64>();
+        let num = (0..3).map(|j| b[j] * v[j].inv_w * a[j] as f64).sum::<f64>();
+        (z, inv_w, num / inv_w)
+    }
+
     #[test]
     fn perspective_correct_interpolation() {
         // Vertex 0 with w = 1, vertex 1 and 2 with w = 4: halfway in screen
         // space, the weight of vertex 0 is 4 times larger than linear.
-        let v0 = WinVertex {
-            x: 0.0,
-            y: 0.0,
-            z: 0.0,
-            inv_w: 1.0,
-        };
-        let v1 = WinVertex {
-            x: 16.0,
-            y: 0.0,
-            z: 1.0,
-            inv_w: 0.25,
-        };
-        let v2 = WinVertex {
-            x: 0.0,
-            y: 16.0,
-            z: 1.0,
-            inv_w: 0.25,
-        };
-        let t = Shape::triangle([v0, v1, v2]).unwrap();
+        let v = |x, y, z, inv_w| WinVertex { x, y, z, inv_w };
+        let vs = [
+            v(0.0, 0.0, 0.0, 1.0),
+            v(16.0, 0.0, 1.0, 0.25),
+            v(0.0, 16.0, 1.0, 0.25),
+        ];
+        let t = Shape::triangle(vs).unwrap();
         // Pixel (7, 0) center is (7.5, 0.5): b = (1 - 8/16, 7.5/16, 0.5/16).
-        let i = t.interp(7, 0);
         let b = [0.5, 7.5 / 16.0, 0.5 / 16.0];
-        let inv_w = b[0] + b[1] * 0.25 + b[2] * 0.25;
-        assert!((i.inv_w - inv_w).abs() < 1e-12);
-        assert!((i.z - 0.5).abs() < 1e-12, "z is linear in window space");
-        assert!((i.weights[0] - b[0] / inv_w).abs() < 1e-12);
-        assert!((i.weights.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+        let a = [1.0, 0.0, 0.0];
+        let (z, inv_w, f) = planes_at(&t, a, (7, 0));
+        let (ez, ew, ef) = exact(b, &vs, a);
+        assert!((z - 0.5).abs() < 1e-12, "z is linear in window space: {z}");
+        assert!((z - ez).abs() < 1e-12);
+        assert!((inv_w as f64 - ew).abs() < 1e-6, "{inv_w} {ew}");
+        assert!((f as f64 - ef).abs() < 1e-6, "{f} {ef}");
+        assert!((ef - 0.5 / ew).abs() < 1e-12);
+        // A line's and a point's.
+        let l = Shape::line([vs[0], vs[1]], 1.0);
+        let (z, inv_w, f) = planes_at(&l, [2.0, 4.0, 0.0], (7, 0));
+        let tt = 7.5 / 16.0;
+        let ew = (1.0 - tt) + tt * 0.25;
+        assert!((z - tt).abs() < 1e-12);
+        assert!((inv_w as f64 - ew).abs() < 1e-6);
+        let ef = ((1.0 - tt) * 2.0 + tt * 0.25 * 4.0) / ew;
+        assert!((f as f64 - ef).abs() < 1e-5, "{f} {ef}");
+        let p = Shape::point(vs[1], 3.0, false);
+        assert_eq!(planes_at(&p, [0.3, 9.0, 9.0], (16, 1)), (1.0, 0.25, 0.3));
     }
 
+    /// Random triangles, perspective and not: the planes agree with
+    /// eq. 3.9 in f64 to f32's precision of the plane's terms.
     #[test]
-    fn quad_interpolation_is_that_of_each_pixel() {
-        let v = |x, y, z, inv_w| WinVertex { x, y, z, inv_w };
-        let shapes = [
-            Shape::triangle([
-                v(0.3, 0.7, 0.1, 1.0),
-                v(17.2, 3.1, 0.9, 0.25),
-                v(4.4, 15.9, 0.5, 0.5),
-            ])
-            .unwrap(),
-            Shape::line([v(0.5, 0.3, 0.2, 1.0), v(9.5, 4.3, 0.7, 0.1)], 1.0),
-            Shape::point(v(3.7, 3.2, 0.3, 0.5), 3.0, false),
-        ];
-        for s in &shapes {
-            for (qx, qy) in [(0, 0), (2, 4), (6, 2), (-2, 8)] {
-                let q = s.interp_quad(qx, qy);
-                for isa in Isa::all_supported() {
-                    let mut other = QuadInterp::default();
-                    s.interp_quad_isa(isa, qx, qy, &mut other);
-                    assert_eq!(format!("{q:?}"), format!("{other:?}"), "{isa:?}");
-                }
-                for k in 0..4 {
-                    let it = s.interp(qx + (k as i64 & 1), qy + (k as i64 >> 1));
-                    assert_eq!(q.z[k].to_bits(), it.z.to_bits());
-                    assert_eq!(q.inv_w[k].to_bits(), it.inv_w.to_bits());
-                    for j in 0..3 {
-                        assert_eq!(q.weights[j][k].to_bits(), it.weights[j].to_bits());
-                    }
+    fn planes_agree_with_exact_barycentrics() {
+        let triangles = random_triangles(0x2545_F491_4F6C_DD1D, 3000);
+        assert!(triangles.len() > 2500);
+        let mut worst = 0.0f64;
+        for (i, (mut v, _, qx, qy)) in triangles.into_iter().enumerate() {
+            if i % 2 == 0 {
+                for w in &mut v {
+                    w.inv_w = 0.5;
                 }
             }
+            let Some(t) = Shape::triangle(v) else {
+                continue;
+            };
+            let Shape::Triangle { p, .. } = &t else {
+                unreachable!()
+            };
+            let p = *p;
+            // Barycentrics of the snapped vertices at the pixel center.
+            let (cx, cy) = (qx as f64 + 0.5, qy as f64 + 0.5);
+            let f = |k: usize| (p[k].0 as f64 / 256.0, p[k].1 as f64 / 256.0);
+            let (x0, y0) = f(0);
+            let (x1, y1) = f(1);
+            let (x2, y2) = f(2);
+            let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+            let b1 = ((cx - x0) * (y2 - y0) - (x2 - x0) * (cy - y0)) / det;
+            let b2 = ((x1 - x0) * (cy - y0) - (cx - x0) * (y1 - y0)) / det;
+            let b = [1.0 - b1 - b2, b1, b2];
+            let a = [0.25f32, -3.0, 7.5];
+            let (z, inv_w, val) = planes_at(&t, a, (qx, qy));
+            let (ez, ew, ef) = exact(b, &v, a);
+            // The scale of the plane's terms: its value and its steps
+            // times the distance from the origin.
+            let (bx, by) = (t.bounds().0, t.bounds().1);
+            let dist = ((qx - bx).abs() + (qy - by).abs() + 1) as f64;
+            let scale = |vals: [f64; 3]| {
+                let m = vals.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+                m * (1.0 + dist * b.iter().map(|x| x.abs()).fold(0.0, f64::max))
+            };
+            let zs = scale([v[0].z, v[1].z, v[2].z]);
+            assert!((z - ez).abs() <= 1e-12 * zs.max(1.0), "{v:?} z {z} {ez}");
+            let ws = scale(v.map(|w| w.inv_w));
+            let rel_w = (inv_w as f64 - ew).abs() / ws;
+            assert!(rel_w < 1e-5, "{v:?} 1/w {inv_w} {ew}");
+            if ew.abs() > 1e-3 * ws {
+                let fs = scale(std::array::from_fn(|j| a[j] as f64 * v[j].inv_w)) / ew.abs();
+                let rel = (val as f64 - ef).abs() / fs.max(1.0);
+                worst = worst.max(rel);
+                assert!(rel < 1e-4, "{v:?} at {qx},{qy}: {val} vs {ef}");
+            }
         }
+        assert!(worst > 0.0);
     }
 
     /// `count` random triangles (a few pixels to thousands across, varied
@@ -1376,59 +946,6 @@ mod tests {
             out.push((v, t, qx, qy));
         }
         out
-    }
-
-    #[test]
-    fn quad_interpolation_variants_give_the_same_bits() {
-        let triangles = random_triangles(0x2545_F491_4F6C_DD1D, 3000);
-        assert!(triangles.len() > 2500);
-        for (v, t, qx, qy) in triangles {
-            let bits = |q: &QuadInterp| {
-                let mut out: Vec<u64> = q.z.iter().chain(&q.inv_w).map(|x| x.to_bits()).collect();
-                out.extend(q.weights.iter().flatten().map(|x| x.to_bits()));
-                out
-            };
-            let mut want = QuadInterp::default();
-            for k in 0..4 {
-                let it = t.interp(qx + (k as i64 & 1), qy + (k as i64 >> 1));
-                want.z[k] = it.z;
-                want.inv_w[k] = it.inv_w;
-                for j in 0..3 {
-                    want.weights[j][k] = it.weights[j];
-                }
-            }
-            for isa in Isa::all_supported() {
-                let mut got = QuadInterp::default();
-                t.interp_quad_isa(isa, qx, qy, &mut got);
-                assert_eq!(bits(&want), bits(&got), "{isa:?} {v:?} at {qx},{qy}");
-            }
-        }
-    }
-
-    #[test]
-    fn strip_weights_are_each_quads_weights() {
-        let triangles = random_triangles(0x9E37_79B9_7F4A_7C15, 3000);
-        assert!(triangles.len() > 2500);
-        for (v, t, qx, qy) in triangles {
-            let Some((w, z)) = t.strip_weights(qx, qy) else {
-                panic!("a triangle has strips");
-            };
-            for q in 0..4 {
-                let want = t.interp_quad(qx + 2 * q as i64, qy);
-                for k in 0..4 {
-                    assert_eq!(z[4 * q + k].to_bits(), want.z[k].to_bits());
-                    for (j, (wj, want)) in w.iter().zip(&want.weights).enumerate() {
-                        assert_eq!(
-                            wj[4 * q + k].to_bits(),
-                            want[k].to_bits(),
-                            "{v:?} at {qx},{qy}: quad {q}, pixel {k}, vertex {j}"
-                        );
-                    }
-                }
-            }
-        }
-        let p = Shape::point(wv(3.0, 3.0), 2.0, false);
-        assert!(p.strip_weights(0, 0).is_none());
     }
 
     #[test]

@@ -5,8 +5,9 @@
 use crate::ex::{Batch, ExecError, Textures, LANES};
 use crate::fragment_ops::{self, Fragment, QuickOps, QuickTarget};
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
+use crate::interpolate::{Plane, PrimPlanes, QUAD_X, QUAD_Y, STRIP_X, STRIP_Y};
 use crate::linkage::FsLayout;
-use crate::rasterize::{PixelRect, QuadInterp, Shape};
+use crate::rasterize::{PixelRect, Shape};
 use crate::simd::Isa;
 use crate::state::PipelineState;
 use crate::ShaderStage;
@@ -19,9 +20,11 @@ pub(crate) struct Prim {
     pub back: bool,
     /// Polygon offset added to window z.
     pub z_offset: f64,
-    /// Where the fragment varyings start in the varying array of the
-    /// primitive's set-up chunk (`chunk`, an index into
-    /// [`FragmentStage::attrs`]): `links` values per vertex.
+    /// Its window z and 1/w planes (`crate::interpolate`).
+    pub planes: PrimPlanes,
+    /// Where the planes of its fragment varyings start in the array of
+    /// the primitive's set-up chunk (`chunk`, an index into
+    /// [`FragmentStage::attrs`]): one per link.
     pub attrs: usize,
     pub chunk: u32,
     /// Index of the assembled primitive this one came from (clipping may
@@ -60,8 +63,6 @@ pub(crate) struct Quad {
     x: i64,
     y: i64,
     live: u8,
-    /// Interpolation at the four pixels.
-    it: QuadInterp,
     /// Final window z per pixel (offset and clamped).
     z: [f64; 4],
     /// Those depths in fixed point (`depth_to_fixed(z as f32)`).
@@ -76,41 +77,23 @@ impl Quad {
     }
 
     /// Makes this the quad at (qx, qy) of `prim` with coverage `mask`,
-    /// its window z computed; [`Quad::finish`] completes the
-    /// interpolation.
+    /// its window z computed with `window_z` (else `z` and `zf` keep
+    /// what they held: see [`FragmentStage::window_z`]).
     #[inline(always)]
-    fn set(&mut self, isa: Isa, prim: &Prim, qx: i64, qy: i64, mask: u8) {
+    fn set(&mut self, prim: &Prim, qx: i64, qy: i64, mask: u8, window_z: bool) {
         (self.x, self.y, self.live) = (qx, qy, mask);
-        prim.shape.interp_quad_z(isa, qx, qy, &mut self.it);
-        self.window_z(prim);
-    }
-
-    /// [`Quad::set`] with the interpolation inlined into the caller
-    /// ([`Shape::interp_quad_z_inline`]): the same values; the window z
-    /// only with `window_z` (else `z` and `zf` keep what they held: see
-    /// [`FragmentStage::window_z`]).
-    #[inline(always)]
-    fn set_inline(&mut self, prim: &Prim, qx: i64, qy: i64, mask: u8, window_z: bool) {
-        (self.x, self.y, self.live) = (qx, qy, mask);
-        prim.shape.interp_quad_z_inline(qx, qy, &mut self.it);
         if window_z {
-            self.window_z(prim);
+            (self.z, self.zf) = quad_depths(prim, (qx, qy));
         }
     }
+}
 
-    /// The final window z per pixel (offset, clamped) and its fixed point,
-    /// from the interpolated z.
-    #[inline(always)]
-    fn window_z(&mut self, prim: &Prim) {
-        (self.z, self.zf) = window_depths(&self.it.z, prim.z_offset);
-    }
-
-    /// The interpolation weights and 1/w after [`Quad::set`] (left out
-    /// for quads that early depth rejection drops entirely).
-    #[inline(always)]
-    fn finish(&mut self, isa: Isa, prim: &Prim) {
-        prim.shape.interp_quad_finish(isa, &mut self.it);
-    }
+/// The final window z of the quad at `(qx, qy)` of `prim` (its z plane,
+/// the polygon offset, clamped) and its fixed point.
+#[inline(always)]
+fn quad_depths(prim: &Prim, (qx, qy): (i64, i64)) -> ([f64; 4], [u32; 4]) {
+    let (x, y) = prim.planes.offsets((qx, qy), &QUAD_X, &QUAD_Y);
+    window_depths(&prim.planes.z_at(&x, &y), prim.z_offset)
 }
 
 /// A quad waiting for its batch: its primitive (and that primitive's
@@ -124,33 +107,10 @@ pub(crate) struct Entry<'p> {
 }
 
 impl<'p> Entry<'p> {
-    /// Makes this the quad at (qx, qy) of primitive `index`, `prim`.
+    /// Makes this the quad at (qx, qy) of primitive `index`, `prim`
+    /// ([`Quad::set`]).
     #[inline(always)]
     fn set(
-        &mut self,
-        isa: Isa,
-        prim: &'p Prim,
-        index: u32,
-        (qx, qy, mask): (i64, i64, u8),
-        write: u8,
-    ) {
-        self.prim = Some(prim);
-        self.index = index;
-        self.write = write;
-        self.quad.set(isa, prim, qx, qy, mask);
-    }
-
-    /// [`Quad::finish`] of this entry's quad.
-    #[inline(always)]
-    fn finish(&mut self, isa: Isa) {
-        if let Some(prim) = self.prim {
-            self.quad.finish(isa, prim);
-        }
-    }
-
-    /// [`Entry::set`] with [`Quad::set_inline`].
-    #[inline(always)]
-    fn set_inline(
         &mut self,
         prim: &'p Prim,
         index: u32,
@@ -161,16 +121,7 @@ impl<'p> Entry<'p> {
         self.prim = Some(prim);
         self.index = index;
         self.write = write;
-        self.quad.set_inline(prim, qx, qy, mask, window_z);
-    }
-
-    /// [`Entry::finish`] inlined into the caller
-    /// ([`Shape::interp_quad_finish_inline`]).
-    #[inline(always)]
-    fn finish_inline(&mut self) {
-        if let Some(prim) = self.prim {
-            prim.shape.interp_quad_finish_inline(&mut self.quad.it);
-        }
+        self.quad.set(prim, qx, qy, mask, window_z);
     }
 }
 
@@ -194,9 +145,6 @@ pub(crate) struct Place {
     count: usize,
     /// The lane of the first.
     first: usize,
-    /// The quad's interpolation weights (`QuadInterp::weights`) of the
-    /// pixels of `order`, in that order.
-    weights: [[f64; 4]; 3],
 }
 
 /// Bit set in a lane mask for the `LANES / 4` quads of a batch.
@@ -222,19 +170,6 @@ const COMPRESS: [[u8; 4]; 16] = {
     }
     t
 };
-
-/// A triangle's varying at `N` pixels (a quad's four, a strip's 16) from
-/// its vertices' values `v`: `0 + w0·v0 + w1·v1 + w2·v2` in f64, rounded
-/// to f32.
-#[inline(always)]
-fn triangle_values<const N: usize>(w: &[[f64; N]; 3], v: [f32; 3]) -> [f32; N] {
-    let v = v.map(f64::from);
-    let mut out = [0.0f32; N];
-    for (k, x) in out.iter_mut().enumerate() {
-        *x = (0.0 + w[0][k] * v[0] + w[1][k] * v[1] + w[2][k] * v[2]) as f32;
-    }
-    out
-}
 
 /// Writes a quad's four values from lane `first` on (those past the last
 /// lane are dropped).
@@ -321,10 +256,9 @@ fn admit(packed: bool, n: &mut usize, lanes: &mut usize, write: u8) -> Option<(u
 /// How [`FragmentStage::fill`] writes one varying component.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum FillKind {
-    /// Interpolated (vertex 0's value for points).
+    /// Interpolated (its plane: constant for points and flat-shaded
+    /// colours).
     Interp,
-    /// Flat-shaded: vertex 0's value.
-    Constant,
     /// Replaced by component `c` of (gl_PointCoord, 0, 1) on point
     /// sprites (GL_COORD_REPLACE).
     Replace(usize),
@@ -362,9 +296,9 @@ pub(crate) struct FragmentStage<'a> {
     pub textures: &'a (dyn Textures + Sync),
     pub layout: &'a FsLayout,
     pub state: &'a PipelineState,
-    /// The fragment varyings of every primitive, per set-up chunk
-    /// ([`Prim::attrs`]).
-    pub attrs: Vec<&'a [f32]>,
+    /// The planes of the fragment varyings of every primitive, per
+    /// set-up chunk ([`Prim::attrs`]).
+    pub attrs: Vec<&'a [Plane]>,
     /// The varying components the shader reads (unread inputs stay zero;
     /// every link counts as read under the debugger's probe, which shows
     /// inputs), in link order.
@@ -412,7 +346,7 @@ impl<'a> FragmentStage<'a> {
         textures: &'a (dyn Textures + Sync),
         layout: &'a FsLayout,
         state: &'a PipelineState,
-        attrs: Vec<&'a [f32]>,
+        attrs: Vec<&'a [Plane]>,
         deferred: Option<Box<dyn ShaderStage>>,
         probe: Option<&'a crate::probe::Probe>,
     ) -> FragmentStage<'a> {
@@ -437,7 +371,6 @@ impl<'a> FragmentStage<'a> {
                         Some((set, c)) if set < 32 && state.coord_replace & (1 << set) != 0 => {
                             FillKind::Replace(c.min(3))
                         }
-                        _ if l.color && state.flat_shading => FillKind::Constant,
                         _ => FillKind::Interp,
                     },
                 })
@@ -452,9 +385,7 @@ impl<'a> FragmentStage<'a> {
             && layout.frag_coord.is_none()
             && layout.front_facing.is_none()
             && layout.point_coord.is_none()
-            && fills
-                .iter()
-                .all(|f| matches!(f.kind, FillKind::Interp | FillKind::Constant));
+            && fills.iter().all(|f| matches!(f.kind, FillKind::Interp));
         let depth_fills = match &deferred {
             // Only what both read (the slice reads a subset of the inputs).
             Some(d) => plan(d.as_ref())
@@ -520,12 +451,12 @@ impl<'a> FragmentStage<'a> {
     #[inline(always)]
     fn prefetch_attrs(&self, prim: &Prim) {
         let a = self.prim_attrs(prim);
-        prefetch(a.get(..self.layout.links.len() * 3).unwrap_or(a));
+        prefetch(a.get(..self.layout.links.len()).unwrap_or(a));
     }
 
-    /// `prim`'s varyings and those after it in its chunk.
+    /// The planes of `prim`'s varyings (and those after it in its chunk).
     #[inline(always)]
-    fn prim_attrs(&self, prim: &Prim) -> &'a [f32] {
+    fn prim_attrs(&self, prim: &Prim) -> &'a [Plane] {
         self.attrs
             .get(prim.chunk as usize)
             .and_then(|a| a.get(prim.attrs..))
@@ -584,14 +515,13 @@ impl<'a> FragmentStage<'a> {
         prim.shape.quads_into(clip_to(prim, tile), quads);
         for &quad in quads.iter() {
             let Some(e) = slots.get_mut(*n) else { break };
-            e.set(self.isa, prim, 0, quad, 0);
+            e.set(prim, 0, quad, 0, true);
             if self.early {
                 self.early_rejects(fb, origin, prim, &mut e.quad);
             }
             if e.quad.live == 0 {
                 continue;
             }
-            e.finish(self.isa);
             *n += 1;
             if *n == LANES / 4 {
                 self.flush(fb, origin, prim, slots, batch)?;
@@ -804,15 +734,15 @@ impl<'a> FragmentStage<'a> {
                         .iter()
                         .enumerate()
                         .all(|(k, &(x, y, m))| m == 0xf && y == qy && x == qx + 2 * k as i64);
-                    if let (true, Some((w, z))) = (whole, prim.shape.strip_weights(qx, qy)) {
-                        self.shade_strip(target, *o, batch, slots, prim, p, (qx, qy), &w, &z)?;
+                    if whole {
+                        self.shade_strip(target, *o, batch, slots, prim, p, (qx, qy))?;
                         at += 3;
                         continue;
                     }
                 }
                 let Some(e) = slots.get_mut(*n) else { break };
                 // Inlined: this loop is compiled per instruction set.
-                e.set_inline(prim, p, quad, 0, self.window_z);
+                e.set(prim, p, quad, 0, self.window_z);
                 if self.early {
                     match &sink {
                         // No stencil test (else no quick operations): the
@@ -827,7 +757,6 @@ impl<'a> FragmentStage<'a> {
                 if e.quad.live == 0 {
                     continue;
                 }
-                e.finish_inline();
                 *n += 1;
                 if *n == LANES / 4 {
                     self.flush_sink(&mut sink, origin, batch, slots)?;
@@ -843,16 +772,16 @@ impl<'a> FragmentStage<'a> {
     }
 
     /// A strip of [`FragmentStage::shade_batched`]: the four whole quads
-    /// (qx + 2i, qy) of triangle `prim` (index `index`) as one batch, the
-    /// inputs interpolated with `w` ([`Shape::strip_weights`], the weights
-    /// [`FragmentStage::fill`] would read from the quads' entries) in the
-    /// same f64 arithmetic, then the stage and the quick write: the bytes
-    /// of the quad-at-a-time path, without its entries (only position,
-    /// coverage and window z are set, for the early depth test and the
-    /// write; see [`FragmentStage::strips`]). The early depth test drops
-    /// the pixels of each quad as that path does; a dropped pixel's lane
-    /// runs as a helper (its neighbours' results do not depend on it) and
-    /// a quad without pixels is not written.
+    /// (qx + 2i, qy) of primitive `prim` (index `index`) as one batch, the
+    /// inputs evaluated from their planes over the 16 lanes at once (the
+    /// operations [`FragmentStage::fill`] performs per quad, so the same
+    /// bits), then the stage and the quick write: the bytes of the
+    /// quad-at-a-time path, without its entries (only position, coverage
+    /// and window z are set, for the early depth test and the write; see
+    /// [`FragmentStage::strips`]). The early depth test drops the pixels
+    /// of each quad as that path does; a dropped pixel's lane runs as a
+    /// helper (its neighbours' results do not depend on it) and a quad
+    /// without pixels is not written.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn shade_strip<'p>(
@@ -864,9 +793,13 @@ impl<'a> FragmentStage<'a> {
         prim: &'p Prim,
         index: u32,
         (qx, qy): (i64, i64),
-        w: &[[f64; LANES]; 3],
-        z: &[f64; LANES],
     ) -> Result<(), ExecError> {
+        let planes = &prim.planes;
+        let (x, y) = planes.offsets((qx, qy), &STRIP_X, &STRIP_Y);
+        let z = match self.window_z {
+            true => planes.z_at(&x, &y),
+            false => [0.0; LANES],
+        };
         let mut live_mask = 0u32;
         for (k, e) in slots.iter_mut().enumerate() {
             e.prim = Some(prim);
@@ -892,20 +825,12 @@ impl<'a> FragmentStage<'a> {
         batch.active = quads_mask(LANES / 4);
         batch.helper = batch.active & !live_mask;
         batch.discarded = 0;
-        let links = self.layout.links.len();
-        let attrs = self.prim_attrs(prim);
-        let row = |j: usize| attrs.get(j * links..).unwrap_or(&[]);
-        let (a0, a1, a2) = (row(0), row(1), row(2));
-        let at = |a: &[f32], li: usize| a.get(li).copied().unwrap_or(0.0);
+        let rw = planes.reciprocal_w(&x, &y);
+        let varyings = self.prim_attrs(prim);
         for l in &self.fills {
-            let Some(lanes) = batch.inputs.get_mut(l.offset) else {
-                continue;
-            };
-            let v0 = at(a0, l.li);
-            *lanes = match l.kind {
-                FillKind::Constant => [v0; LANES],
-                _ => triangle_values(w, [v0, at(a1, l.li), at(a2, l.li)]),
-            };
+            if let (Some(lanes), Some(p)) = (batch.inputs.get_mut(l.offset), varyings.get(l.li)) {
+                *lanes = p.values(&x, &y, &rw);
+            }
         }
         self.run_shader(batch)?;
         // Every pixel passing (no depth test: the write does not test
@@ -1069,11 +994,10 @@ impl<'a> FragmentStage<'a> {
         batch.discarded = 0;
 
         // Quad q in lanes 4q..4q + 4, its pixels in order.
-        self.write_inputs(batch, pending, plan, |q, e| Place {
+        self.write_inputs(batch, pending, plan, |q, _| Place {
             order: [0, 1, 2, 3],
             count: 4,
             first: 4 * q,
-            weights: e.quad.it.weights,
         });
     }
 
@@ -1098,7 +1022,7 @@ impl<'a> FragmentStage<'a> {
         batch.helper = 0;
         batch.discarded = 0;
         // Each quad's pixels to run from the lane after the previous
-        // quad's, the weights taken in their order.
+        // quad's.
         let mut firsts = [0usize; LANES];
         let mut first = 0;
         for (f, e) in firsts.iter_mut().zip(pending) {
@@ -1107,19 +1031,10 @@ impl<'a> FragmentStage<'a> {
         }
         self.write_inputs(batch, pending, plan, |q, e| {
             let run = e.write & 0xf;
-            let order = COMPRESS[run as usize];
-            let w = &e.quad.it.weights;
-            let mut weights = [[0.0; 4]; 3];
-            for (wj, w) in weights.iter_mut().zip(w) {
-                for (x, &k) in wj.iter_mut().zip(&order) {
-                    *x = w[k as usize & 3];
-                }
-            }
             Place {
-                order,
+                order: COMPRESS[run as usize],
                 count: run.count_ones() as usize,
                 first: firsts.get(q).copied().unwrap_or(LANES),
-                weights,
             }
         });
         // Lanes past the last read zeros (as absent quads' do in `fill`),
@@ -1137,13 +1052,13 @@ impl<'a> FragmentStage<'a> {
 
     /// Writes the inputs `plan` lists, and gl_FragCoord, gl_FrontFacing
     /// and gl_PointCoord where the stage reads them, for the pixels of
-    /// each quad of `pending` that `place` puts in lanes: values
-    /// interpolated with each pixel's weights in f64 (`0 + w0·v0 + w1·v1 +
-    /// w2·v2` for triangles, `0 + w0·v0 + w1·v1` for lines), vertex 0's
-    /// for points and flat-shaded colours. A quad's four values are stored
-    /// from its first lane on: those of pixels it does not run land where
-    /// the next quad's go (quads are placed in increasing lane order) or
-    /// past the last lane, for the caller to clear.
+    /// each quad of `pending` that `place` puts in lanes: each varying
+    /// evaluated from its plane at those pixels (`crate::interpolate`),
+    /// gl_PointCoord on point sprites for the coordinates it replaces. A
+    /// quad's four values are stored from its first lane on: those of
+    /// pixels it does not run land where the next quad's go (quads are
+    /// placed in increasing lane order) or past the last lane, for the
+    /// caller to clear.
     #[inline(always)]
     fn write_inputs(
         &self,
@@ -1153,7 +1068,6 @@ impl<'a> FragmentStage<'a> {
         place: impl Fn(usize, &Entry) -> Place,
     ) {
         let layout = self.layout;
-        let links = layout.links.len();
         let sprite = self.state.point_sprite;
         let lower_left = self.state.point_sprite_origin_lower_left;
         let point_coords = |quad: &Quad, prim: &Prim, order: [u8; 4]| -> [(f32, f32); 4] {
@@ -1173,48 +1087,30 @@ impl<'a> FragmentStage<'a> {
                 order,
                 count,
                 first,
-                weights: w,
             } = place(q, e);
-            // The primitive's varyings: vertex j's link li at j·links + li.
-            let attrs = self.prim_attrs(prim);
-            let attr = |j: usize, li: usize| attrs.get(j * links + li).copied().unwrap_or(0.0);
+            // The pixels of `order`, in that order.
+            let planes = &prim.planes;
+            let ox = order.map(|k| QUAD_X[k as usize & 3]);
+            let oy = order.map(|k| QUAD_Y[k as usize & 3]);
+            let (x, y) = planes.offsets((quad.x, quad.y), &ox, &oy);
+            let rw = planes.reciprocal_w(&x, &y);
+            let varyings = self.prim_attrs(prim);
+            let sprite = sprite && matches!(prim.shape, Shape::Point { .. });
             let inputs = &mut batch.inputs[..];
-            if let Shape::Triangle { .. } = prim.shape {
-                // The common case, with the shape decided once per quad and
-                // the vertices' rows sliced once.
-                let row = |j: usize| attrs.get(j * links..).unwrap_or(&[]);
-                let (a0, a1, a2) = (row(0), row(1), row(2));
-                let at = |a: &[f32], li: usize| a.get(li).copied().unwrap_or(0.0);
-                for l in plan {
-                    let Some(lanes) = inputs.get_mut(l.offset) else {
-                        continue;
-                    };
-                    let v0 = at(a0, l.li);
-                    let values: [f32; 4] = match l.kind {
-                        FillKind::Constant => [v0; 4],
-                        _ => triangle_values(&w, [v0, at(a1, l.li), at(a2, l.li)]),
-                    };
-                    put_quad(lanes, first, values);
-                }
-            } else {
-                // Points and lines.
-                for l in plan {
-                    let Some(lanes) = inputs.get_mut(l.offset) else {
-                        continue;
-                    };
-                    let values: [f32; 4] = match (&prim.shape, l.kind) {
-                        (Shape::Point { .. }, FillKind::Replace(c)) if sprite => {
-                            point_coords(quad, prim, order).map(|pc| [pc.0, pc.1, 0.0, 1.0][c])
-                        }
-                        (Shape::Line { .. }, FillKind::Interp | FillKind::Replace(_)) => {
-                            let v = [0, 1].map(|j| attr(j, l.li) as f64);
-                            std::array::from_fn(|k| (0.0 + w[0][k] * v[0] + w[1][k] * v[1]) as f32)
-                        }
-                        // A point's, or a flat-shaded, value.
-                        _ => [attr(0, l.li); 4],
-                    };
-                    put_quad(lanes, first, values);
-                }
+            for l in plan {
+                let Some(lanes) = inputs.get_mut(l.offset) else {
+                    continue;
+                };
+                let values: [f32; 4] = match l.kind {
+                    FillKind::Replace(c) if sprite => {
+                        point_coords(quad, prim, order).map(|pc| [pc.0, pc.1, 0.0, 1.0][c])
+                    }
+                    _ => match varyings.get(l.li) {
+                        Some(p) => p.values(&x, &y, &rw),
+                        None => [0.0; 4],
+                    },
+                };
+                put_quad(lanes, first, values);
             }
             if !pixel_inputs {
                 continue;
@@ -1223,21 +1119,22 @@ impl<'a> FragmentStage<'a> {
                 Shape::Point { .. } => point_coords(quad, prim, order),
                 _ => [(0.0, 0.0); 4],
             };
-            for ((lane, k), pc) in (first..LANES).zip(order).zip(pc).take(count) {
+            let inv_w = planes.inv_w_at(&x, &y);
+            for (i, (lane, k)) in (first..LANES).zip(order).enumerate().take(count) {
                 let k = k as usize & 3;
-                let (x, y) = quad.pixel(k);
+                let (px, py) = quad.pixel(k);
                 if let Some(o) = layout.frag_coord {
-                    set(batch, o, lane, x as f32 + 0.5);
-                    set(batch, o + 1, lane, y as f32 + 0.5);
+                    set(batch, o, lane, px as f32 + 0.5);
+                    set(batch, o + 1, lane, py as f32 + 0.5);
                     set(batch, o + 2, lane, quad.z[k] as f32);
-                    set(batch, o + 3, lane, quad.it.inv_w[k] as f32);
+                    set(batch, o + 3, lane, inv_w[i]);
                 }
                 if let Some(o) = layout.front_facing {
                     set(batch, o, lane, if prim.back { 0.0 } else { 1.0 });
                 }
                 if let Some(o) = layout.point_coord {
-                    set(batch, o, lane, pc.0);
-                    set(batch, o + 1, lane, pc.1);
+                    set(batch, o, lane, pc[i].0);
+                    set(batch, o + 1, lane, pc[i].1);
                 }
             }
         }
@@ -1631,10 +1528,8 @@ impl<'a> FragmentStage<'a> {
         // when that stays right against a depth buffer missing the
         // pending batch (as for `shade_batched`). A rejected lane cannot
         // win; a winner's quad keeps the coverage the forward path gives
-        // it. The interpolation weights and 1/w are needed only when the
-        // slice reads varyings or the stage gl_FragCoord.
+        // it.
         let early = self.early && self.batches_primitives(fb);
-        let weights = !self.depth_fills.is_empty() || self.layout.frag_coord.is_some();
         let quick = QuickOps::new(fb, self.state, &self.colors_out);
         // A slice without ops (no gl_FragDepth, no discard) decides
         // nothing: the pass only depth-tests.
@@ -1663,12 +1558,12 @@ impl<'a> FragmentStage<'a> {
                     };
                     self.prefetch_ahead(prims, bin, i);
                     let clip = clip_to(prim, tile);
-                    prim.shape.quads_z_each(
+                    prim.shape.quads_each(
                         clip,
                         quads,
                         #[inline(always)]
-                        |qx, qy, live, it| {
-                            let (z, zf) = window_depths(&it.z, prim.z_offset);
+                        |qx, qy, live| {
+                            let (z, zf) = quad_depths(prim, (qx, qy));
                             // The f32 z only for a quad tested pixel by pixel.
                             let z = || z.map(|z| z as f32);
                             let (pass, index, _) = target.test_quad_with((qx, qy), live, z, zf);
@@ -1697,15 +1592,12 @@ impl<'a> FragmentStage<'a> {
                     prim.shape.quads_into(clip_to(prim, tile), quads);
                     for &quad in quads.iter() {
                         let Some(e) = pending.get_mut(*n) else { break };
-                        e.set_inline(prim, p, quad, 0, self.window_z);
+                        e.set(prim, p, quad, 0, self.window_z);
                         if early {
                             self.early_rejects(fb, origin, prim, &mut e.quad);
                             if e.quad.live == 0 {
                                 continue;
                             }
-                        }
-                        if weights {
-                            e.finish_inline();
                         }
                         e.write = e.quad.live;
                         let write = e.write;
@@ -1762,9 +1654,8 @@ impl<'a> FragmentStage<'a> {
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
                     let Some(e) = pending.get_mut(*n) else { break };
                     self.prefetch_attrs(prim);
-                    e.set_inline(prim, p, (qx, qy, live), write, window_z);
+                    e.set(prim, p, (qx, qy, live), write, window_z);
                     if let Some((count, spill)) = admit(pack_colors, n, &mut used, write) {
-                        finish_all(&mut pending[..count]);
                         self.color_pass(&pass, fb, batch, &pending[..count])?;
                         if spill {
                             pending.swap(0, count);
@@ -1774,21 +1665,10 @@ impl<'a> FragmentStage<'a> {
             }
         }
         if *n > 0 {
-            finish_all(&mut pending[..*n]);
             self.color_pass(&pass, fb, batch, &pending[..*n])?;
             *n = 0;
         }
         Ok(())
-    }
-}
-
-/// [`Entry::finish_inline`] of each entry, one after the other in a
-/// short loop (so that the divisions of the perspective weights of
-/// several quads are in flight at once).
-#[inline(always)]
-fn finish_all(entries: &mut [Entry]) {
-    for e in entries {
-        e.finish_inline();
     }
 }
 

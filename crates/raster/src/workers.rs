@@ -12,6 +12,7 @@
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Mutex, MutexGuard, OnceLock};
 
+use crate::interpolate::Plane;
 use crate::pipeline::Corner;
 use crate::shade::Prim;
 
@@ -36,7 +37,7 @@ pub struct Workers {
 #[derive(Default)]
 pub(crate) struct Spare {
     /// Set-up chunks' primitives and varyings.
-    pub chunks: Vec<(Vec<Prim>, Vec<f32>)>,
+    pub chunks: Vec<(Vec<Prim>, Vec<Plane>)>,
     /// Vertex outputs (kept with their values: a draw overwrites them).
     pub outputs: Vec<f32>,
     /// The per-vertex set-up table (kept with its length: a draw of as
@@ -52,8 +53,8 @@ impl Spare {
     const LIMIT: usize = 256 << 20;
 
     fn bytes(&self) -> usize {
-        let chunk = |(p, a): &(Vec<Prim>, Vec<f32>)| {
-            p.capacity() * std::mem::size_of::<Prim>() + a.capacity() * 4
+        let chunk = |(p, a): &(Vec<Prim>, Vec<Plane>)| {
+            p.capacity() * std::mem::size_of::<Prim>() + a.capacity() * std::mem::size_of::<Plane>()
         };
         self.chunks.iter().map(chunk).sum::<usize>()
             + self.outputs.capacity() * 4
@@ -89,11 +90,12 @@ impl Spare {
 
     /// Keeps `chunks` (emptied) and `outputs` (as they are) as far as the
     /// limit allows.
-    pub fn keep(&mut self, chunks: Vec<(Vec<Prim>, Vec<f32>)>, outputs: Vec<f32>) {
+    pub fn keep(&mut self, chunks: Vec<(Vec<Prim>, Vec<Plane>)>, outputs: Vec<f32>) {
         let mut bytes = self.bytes();
         keep_larger(&mut self.outputs, outputs, &mut bytes);
         for (mut p, mut a) in chunks {
-            let more = p.capacity() * std::mem::size_of::<Prim>() + a.capacity() * 4;
+            let more = p.capacity() * std::mem::size_of::<Prim>()
+                + a.capacity() * std::mem::size_of::<Plane>();
             if bytes + more > Spare::LIMIT {
                 break;
             }
