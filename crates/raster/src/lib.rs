@@ -64,7 +64,9 @@
 //! (and the pointers to those further ahead) are prefetched while one is
 //! rasterized. When nothing reads a quad's 1/w or pixel position, four
 //! whole quads side by side of one triangle (a *strip*) make a batch
-//! without per-quad entries: their window z and inputs are evaluated
+//! without per-quad entries (the coverage walk lists a strip as one
+//! entry and steps over its quads at once, `Shape::quads_into_strips`;
+//! quads waiting for a batch are shaded before it): their window z and inputs are evaluated
 //! from the planes over the 16 lanes at once (each quad's bits), the
 //! early depth test drops pixels as for single quads; with AVX-512 and no depth
 //! test, the strip's colour write (opaque or SRC_ALPHA /

@@ -33,6 +33,10 @@ const HALF: i64 = ONE / 2;
 /// function products stay within i64.
 const FIXED_LIMIT: i64 = 1 << 28;
 
+/// The mask bit of [`Shape::quads_into_strips`]'s entries of four whole
+/// quads side by side.
+pub(crate) const STRIP: u8 = 0x10;
+
 /// Half-open pixel rectangle `(x0, y0, x1, y1)`.
 pub(crate) type PixelRect = (i64, i64, i64, i64);
 
@@ -340,10 +344,11 @@ impl Shape {
                     *sign,
                     r,
                     #[inline(always)]
-                    |qx, qy, mask| {
+                    |qx, qy, mask, _| {
                         if mask != 0 {
                             f(qx, qy, mask);
                         }
+                        0
                     },
                 );
             }
@@ -354,6 +359,39 @@ impl Shape {
                 }
             }
         }
+    }
+
+    /// [`Shape::quads_into`], and with `strips` a triangle's four whole
+    /// quads side by side (each quad's pixels covered and inside the
+    /// clip) from where the walk meets them as one entry: the first
+    /// quad's position with mask `STRIP | 0xf` (a strip's entry is
+    /// followed by the quad after its fourth).
+    #[inline(always)]
+    pub fn quads_into_strips(&self, clip: PixelRect, out: &mut Vec<(i64, i64, u8)>, strips: bool) {
+        let (true, Shape::Triangle { p, sign, .. }) = (strips, self) else {
+            return self.quads_into(clip, out);
+        };
+        out.clear();
+        let r = intersect(self.bounds(), clip);
+        if r.0 >= r.2 || r.1 >= r.3 {
+            return;
+        }
+        triangle_quads_each(
+            p,
+            *sign,
+            r,
+            #[inline(always)]
+            |qx, qy, mask, walk| {
+                if mask == 0xf && walk.whole_ahead(4) {
+                    out.push((qx, qy, STRIP | 0xf));
+                    return 3;
+                }
+                if mask != 0 {
+                    out.push((qx, qy, mask));
+                }
+                0
+            },
+        );
     }
 
     /// GL 2.1 eq. 3.3/3.4: gl_PointCoord at pixel (x, y) (zeros for
@@ -421,21 +459,23 @@ fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i
         sign,
         r,
         #[inline(always)]
-        |qx, qy, mask| {
+        |qx, qy, mask, _| {
             if n == out.len() {
                 out.push((qx, qy, mask));
             } else if let Some(slot) = out.get_mut(n) {
                 *slot = (qx, qy, mask);
             }
             n += usize::from(mask != 0);
+            0
         },
     );
     out.truncate(n);
 }
 
 /// Visits the quads of a triangle inside `r` (non-empty, within the
-/// primitive's bounds), row-major: `f(qx, qy, mask)` with the pixels
-/// covered (mask bit `(y - qy) * 2 + (x - qx)`, possibly none). Each edge is
+/// primitive's bounds), row-major: `f(qx, qy, mask, walk)` with the pixels
+/// covered (mask bit `(y - qy) * 2 + (x - qx)`, possibly none), returning
+/// how many of the following quads to pass over (see [`WalkQuad`]). Each edge is
 /// the integer linear form `s(x, y) = a·x + b·y + c` (the orientation
 /// times [`edge`] at the pixel center), stepped by additions; a pixel is
 /// covered when every edge is at least its threshold there: 0 on an edge
@@ -450,7 +490,7 @@ fn triangle_quads_each(
     p: &[(i64, i64); 3],
     sign: i64,
     r: PixelRect,
-    mut f: impl FnMut(i64, i64, u8),
+    mut f: impl FnMut(i64, i64, u8, &WalkQuad) -> i64,
 ) {
     let mut a = [0i64; 3];
     let mut b = [0i64; 3];
@@ -491,13 +531,60 @@ fn triangle_quads_each(
             if whole & decreasing != 0 {
                 break;
             }
-            f(qx, qy, mask);
+            let walk = WalkQuad {
+                over: &over,
+                a: &a,
+                qx,
+                x_end: r.2,
+            };
+            // The caller's quads to pass over (whole ones it took at once),
+            // at most the rest of the row.
+            let skip = f(qx, qy, mask, &walk).clamp(0, (r.2 - qx) / 2);
+            if skip > 0 {
+                for (o, &a) in over.iter_mut().zip(&a) {
+                    *o = o.add(Quad4::splat(2 * a * skip));
+                }
+                qx += 2 * skip;
+            }
             for (o, s) in over.iter_mut().zip(&step) {
                 *o = o.add(*s);
             }
             qx += 2;
         }
         qy += 2;
+    }
+}
+
+/// A quad of [`triangle_quads_each`]'s walk, for a caller that takes
+/// runs of whole quads at once ([`Shape::quads_into_strips`]).
+pub(crate) struct WalkQuad<'a> {
+    over: &'a [Quad4; 3],
+    a: &'a [i64; 3],
+    qx: i64,
+    /// The clip rectangle's right end.
+    x_end: i64,
+}
+
+impl WalkQuad<'_> {
+    /// For a whole quad (every pixel covered and inside the clip),
+    /// whether the `n − 1` quads to its right are whole too: an edge
+    /// decreasing to the right by `2|a|` per quad keeps all four pixels at
+    /// or above its threshold `n − 1` quads further when the least of its
+    /// four values over the threshold is at least `(n − 1)·2|a|`; the
+    /// other edges only grow; and the quads must end inside the clip.
+    #[inline(always)]
+    pub fn whole_ahead(&self, n: i64) -> bool {
+        if self.x_end - self.qx < 2 * n {
+            return false;
+        }
+        let mut ok = true;
+        for (o, &a) in self.over.iter().zip(self.a) {
+            if a < 0 {
+                let m = o.to_array().into_iter().min().unwrap_or(0);
+                ok &= m >= (n - 1) * -2 * a;
+            }
+        }
+        ok
     }
 }
 
@@ -580,7 +667,7 @@ impl Quad4 {
         }
     }
 
-    #[cfg(test)]
+    #[inline(always)]
     fn to_array(self) -> [i64; 4] {
         #[cfg(target_arch = "x86_64")]
         {
@@ -661,6 +748,30 @@ mod tests {
             seen += got.len();
         }
         assert!(seen > 1000, "{seen} quads");
+    }
+
+    /// Strip entries stand for four whole quads side by side: expanded,
+    /// the list is `quads_into`'s; big triangles have them.
+    #[test]
+    fn strip_entries_expand_to_the_quads() {
+        let mut strips = 0;
+        for (v, t, qx, qy) in random_triangles(0x0DDB_1A5E_5BAD_5EED, 2000) {
+            let clip = (qx - 40, qy - 30, qx + 64, qy + 64);
+            let mut list = Vec::new();
+            t.quads_into_strips(clip, &mut list, true);
+            let mut expanded = Vec::new();
+            for &(x, y, m) in &list {
+                if m & STRIP != 0 {
+                    assert_eq!(m, STRIP | 0xf);
+                    strips += 1;
+                    expanded.extend((0..4).map(|k| (x + 2 * k, y, 0xf)));
+                } else {
+                    expanded.push((x, y, m));
+                }
+            }
+            assert_eq!(expanded, t.quads(clip), "{v:?}");
+        }
+        assert!(strips > 5000, "{strips} strips");
     }
 
     #[test]

@@ -7,7 +7,7 @@ use crate::fragment_ops::{self, Fragment, QuickOps, QuickTarget};
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
 use crate::interpolate::{Plane, PrimPlanes, QUAD_X, QUAD_Y, STRIP_X, STRIP_Y};
 use crate::linkage::FsLayout;
-use crate::rasterize::{PixelRect, Shape};
+use crate::rasterize::{PixelRect, Shape, STRIP};
 use crate::simd::Isa;
 use crate::state::PipelineState;
 use crate::ShaderStage;
@@ -721,51 +721,80 @@ impl<'a> FragmentStage<'a> {
                 continue;
             };
             self.prefetch_ahead(prims, bin, i);
-            prim.shape.quads_into(clip_to(prim, tile), quads);
-            let mut at = 0;
-            while let Some(&quad) = quads.get(at) {
-                at += 1;
-                // Four whole quads side by side starting a batch: a strip.
-                if let (true, 0, Some(row), Sink::Quick(target, o)) =
-                    (self.strips, *n, quads.get(at - 1..at + 3), &mut sink)
-                {
-                    let (qx, qy, _) = quad;
-                    let whole = row
-                        .iter()
-                        .enumerate()
-                        .all(|(k, &(x, y, m))| m == 0xf && y == qy && x == qx + 2 * k as i64);
-                    if whole {
-                        self.shade_strip(target, *o, batch, slots, prim, p, (qx, qy))?;
-                        at += 3;
-                        continue;
-                    }
-                }
-                let Some(e) = slots.get_mut(*n) else { break };
-                // Inlined: this loop is compiled per instruction set.
-                e.set(prim, p, quad, 0, self.window_z);
-                if self.early {
-                    match &sink {
-                        // No stencil test (else no quick operations): the
-                        // depth test alone (`early_rejects`).
-                        Sink::Quick(t, _) => {
-                            let q = &mut e.quad;
-                            q.live = t.depth_live((q.x, q.y), q.live, q.zf);
-                        }
-                        Sink::General(fb, _) => self.early_rejects(fb, origin, prim, &mut e.quad),
-                    }
-                }
-                if e.quad.live == 0 {
+            let clip = clip_to(prim, tile);
+            // Four whole quads side by side make one entry (`STRIP`) when
+            // they may run as a strip.
+            let strips = self.strips && matches!(sink, Sink::Quick(..));
+            prim.shape.quads_into_strips(clip, quads, strips);
+            for &(qx, qy, mask) in quads.iter() {
+                if mask & STRIP == 0 {
+                    self.batch_quad(
+                        &mut sink,
+                        origin,
+                        batch,
+                        slots,
+                        n,
+                        (prim, p),
+                        (qx, qy, mask),
+                    )?;
                     continue;
                 }
-                *n += 1;
-                if *n == LANES / 4 {
-                    self.flush_sink(&mut sink, origin, batch, slots)?;
+                // A batch of its own: the quads waiting go first (a strip
+                // comes after a row's first quads, so they would wait for
+                // the whole row otherwise).
+                if *n > 0 {
+                    self.flush_sink(&mut sink, origin, batch, &slots[..*n])?;
                     *n = 0;
+                }
+                if let Sink::Quick(target, o) = &mut sink {
+                    self.shade_strip(target, *o, batch, slots, prim, p, (qx, qy))?;
                 }
             }
         }
         if *n > 0 {
             self.flush_sink(&mut sink, origin, batch, &slots[..*n])?;
+            *n = 0;
+        }
+        Ok(())
+    }
+
+    /// One covered quad of [`FragmentStage::shade_batched`]: set up in
+    /// the next slot, early depth-tested, and kept unless no pixel is
+    /// left; a full batch is shaded and written.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn batch_quad<'p>(
+        &self,
+        sink: &mut Sink,
+        origin: (u32, u32),
+        batch: &mut Batch,
+        slots: &mut [Entry<'p>; LANES / 4],
+        n: &mut usize,
+        (prim, p): (&'p Prim, u32),
+        quad: (i64, i64, u8),
+    ) -> Result<(), ExecError> {
+        let Some(e) = slots.get_mut(*n) else {
+            return Ok(());
+        };
+        // Inlined: this loop is compiled per instruction set.
+        e.set(prim, p, quad, 0, self.window_z);
+        if self.early {
+            match &*sink {
+                // No stencil test (else no quick operations): the
+                // depth test alone (`early_rejects`).
+                Sink::Quick(t, _) => {
+                    let q = &mut e.quad;
+                    q.live = t.depth_live((q.x, q.y), q.live, q.zf);
+                }
+                Sink::General(fb, _) => self.early_rejects(fb, origin, prim, &mut e.quad),
+            }
+        }
+        if e.quad.live == 0 {
+            return Ok(());
+        }
+        *n += 1;
+        if *n == LANES / 4 {
+            self.flush_sink(sink, origin, batch, slots)?;
             *n = 0;
         }
         Ok(())
