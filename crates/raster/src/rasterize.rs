@@ -334,24 +334,17 @@ impl Shape {
         mut f: impl FnMut(i64, i64, u8),
     ) {
         match self {
-            Shape::Triangle { p, sign, .. } => {
-                let r = intersect(self.bounds(), clip);
-                if r.0 >= r.2 || r.1 >= r.3 {
-                    return;
-                }
-                triangle_quads_each(
-                    p,
-                    *sign,
-                    r,
-                    #[inline(always)]
-                    |qx, qy, mask, _| {
-                        if mask != 0 {
-                            f(qx, qy, mask);
-                        }
-                        0
-                    },
-                );
-            }
+            Shape::Triangle { p, sign, .. } => self.walk_in(
+                (p, *sign),
+                clip,
+                #[inline(always)]
+                |qx, qy, mask, _| {
+                    if mask != 0 {
+                        f(qx, qy, mask);
+                    }
+                    0
+                },
+            ),
             _ => {
                 self.quads_into(clip, quads);
                 for &(qx, qy, mask) in quads.iter() {
@@ -372,14 +365,9 @@ impl Shape {
             return self.quads_into(clip, out);
         };
         out.clear();
-        let r = intersect(self.bounds(), clip);
-        if r.0 >= r.2 || r.1 >= r.3 {
-            return;
-        }
-        triangle_quads_each(
-            p,
-            *sign,
-            r,
+        self.walk_in(
+            (p, *sign),
+            clip,
             #[inline(always)]
             |qx, qy, mask, walk| {
                 if mask == 0xf && walk.whole_ahead(4) {
@@ -392,6 +380,21 @@ impl Shape {
                 0
             },
         );
+    }
+
+    /// [`triangle_quads_each`] of this shape's triangle `(p, sign)` over
+    /// its bounds inside `clip` (nothing when they do not meet).
+    #[inline(always)]
+    fn walk_in(
+        &self,
+        (p, sign): (&[(i64, i64); 3], i64),
+        clip: PixelRect,
+        f: impl FnMut(i64, i64, u8, &WalkQuad) -> i64,
+    ) {
+        let r = intersect(self.bounds(), clip);
+        if r.0 < r.2 && r.1 < r.3 {
+            triangle_quads_each(p, sign, r, f);
+        }
     }
 
     /// GL 2.1 eq. 3.3/3.4: gl_PointCoord at pixel (x, y) (zeros for
