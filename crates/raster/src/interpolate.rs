@@ -82,11 +82,10 @@ impl Basis {
     }
 }
 
-/// A primitive's window z and 1/w planes and their origin pixel.
+/// A primitive's window z and 1/w planes (relative to its origin
+/// pixel, which the primitive keeps: the first of its clipped bounds).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct PrimPlanes {
-    pub x0: i64,
-    pub y0: i64,
     /// Window z (before polygon offset): `[c, dx, dy]` in f64.
     pub z: [f64; 3],
     /// 1 / w_clip (gl_FragCoord.w), rounded to f32.
@@ -102,12 +101,11 @@ fn to_f32(p: [f64; 3]) -> [f32; 3] {
 
 impl PrimPlanes {
     /// The planes of a primitive whose vertices have window z `z` and
-    /// 1/w `inv_w` (a missing vertex repeats vertex 0), origin `(x0, y0)`.
-    pub fn new(basis: &Basis, (x0, y0): (i64, i64), z: [f64; 3], inv_w: [f64; 3]) -> PrimPlanes {
+    /// 1/w `inv_w` (a missing vertex repeats vertex 0), `basis` relative
+    /// to its origin.
+    pub fn new(basis: &Basis, z: [f64; 3], inv_w: [f64; 3]) -> PrimPlanes {
         let w = inv_w.map(f64::to_bits);
         PrimPlanes {
-            x0,
-            y0,
             z: basis.plane(z),
             inv_w: to_f32(basis.plane(inv_w)),
             perspective: w[1] != w[0] || w[2] != w[0],
@@ -131,27 +129,6 @@ impl PrimPlanes {
             false => Kind::Linear,
         };
         Plane { c, dx, dy, kind }
-    }
-
-    /// The offsets `(X, Y)` from the origin of the pixels `(x + ox[l], y +
-    /// oy[l])` (`ox`, `oy`: small whole numbers), as f32: the offset of
-    /// `(x, y)` converted, plus `ox[l]`, `oy[l]` (exact: coordinates stay
-    /// below 2^21).
-    #[inline(always)]
-    pub fn offsets<const N: usize>(
-        &self,
-        (x, y): (i64, i64),
-        ox: &[f32; N],
-        oy: &[f32; N],
-    ) -> ([f32; N], [f32; N]) {
-        let (bx, by) = ((x - self.x0) as i32 as f32, (y - self.y0) as i32 as f32);
-        let mut fx = [0.0f32; N];
-        let mut fy = [0.0f32; N];
-        for l in 0..N {
-            fx[l] = bx + ox[l];
-            fy[l] = by + oy[l];
-        }
-        (fx, fy)
     }
 
     /// Window z (before offset) at the pixels of `offsets` (exact as f64).
@@ -188,6 +165,27 @@ impl PrimPlanes {
     }
 }
 
+/// The offsets `(X, Y)` from the origin `(x0, y0)` of the pixels `(x + ox[l], y +
+/// oy[l])` (`ox`, `oy`: small whole numbers), as f32: the offset of
+/// `(x, y)` converted, plus `ox[l]`, `oy[l]` (exact: coordinates stay
+/// below 2^21).
+#[inline(always)]
+pub(crate) fn offsets<const N: usize>(
+    (x0, y0): (i64, i64),
+    (x, y): (i64, i64),
+    ox: &[f32; N],
+    oy: &[f32; N],
+) -> ([f32; N], [f32; N]) {
+    let (bx, by) = ((x - x0) as i32 as f32, (y - y0) as i32 as f32);
+    let mut fx = [0.0f32; N];
+    let mut fy = [0.0f32; N];
+    for l in 0..N {
+        fx[l] = bx + ox[l];
+        fy[l] = by + oy[l];
+    }
+    (fx, fy)
+}
+
 /// `(c + y·dy) + x·dx` per lane.
 #[inline(always)]
 fn at<const N: usize>(c: f32, dx: f32, dy: f32, x: &[f32; N], y: &[f32; N]) -> [f32; N] {
@@ -209,7 +207,7 @@ impl Plane {
         }
     }
 
-    /// The varying at the pixels of [`PrimPlanes::offsets`] `(x, y)`,
+    /// The varying at the pixels of [`offsets`] `(x, y)`,
     /// `rw` their [`PrimPlanes::reciprocal_w`].
     #[inline(always)]
     pub fn values<const N: usize>(&self, x: &[f32; N], y: &[f32; N], rw: &[f32; N]) -> [f32; N] {
@@ -264,12 +262,12 @@ mod tests {
     #[test]
     fn constant_values_stay_exact() {
         let basis = basis_of([0.3, 0.01, -0.02], [0.1, -0.03, 0.05]);
-        let p = PrimPlanes::new(&basis, (0, 0), [0.25; 3], [0.5, 0.25, 0.125]);
+        let p = PrimPlanes::new(&basis, [0.25; 3], [0.5, 0.25, 0.125]);
         assert_eq!(p.z, [0.25, 0.0, 0.0]);
         assert!(p.perspective);
         let v = p.varying(&basis, [0.7; 3], [0.5, 0.25, 0.125]);
         assert_eq!(v, Plane::constant(0.7));
-        let (x, y) = p.offsets((37, -5), &STRIP_X, &STRIP_Y);
+        let (x, y) = offsets((0, 0), (37, -5), &STRIP_X, &STRIP_Y);
         let rw = p.reciprocal_w(&x, &y);
         assert_eq!(v.values(&x, &y, &rw), [0.7; 16]);
         // Infinities too.
@@ -280,12 +278,12 @@ mod tests {
     #[test]
     fn equal_w_gives_linear_planes() {
         let basis = basis_of([0.0, 0.5, 0.0], [0.0, 0.0, 0.5]);
-        let p = PrimPlanes::new(&basis, (10, 20), [0.0, 1.0, 0.5], [2.0; 3]);
+        let p = PrimPlanes::new(&basis, [0.0, 1.0, 0.5], [2.0; 3]);
         assert!(!p.perspective);
         let v = p.varying(&basis, [1.0, 3.0, 5.0], [2.0; 3]);
         assert_eq!(v.kind, Kind::Linear);
         assert_eq!((v.c, v.dx, v.dy), (1.0, 1.0, 2.0));
-        let (x, y) = p.offsets((12, 21), &QUAD_X, &QUAD_Y);
+        let (x, y) = offsets((10, 20), (12, 21), &QUAD_X, &QUAD_Y);
         assert_eq!(x, [2.0, 3.0, 2.0, 3.0]);
         assert_eq!(y, [1.0, 1.0, 2.0, 2.0]);
         let rw = p.reciprocal_w(&x, &y);
@@ -297,15 +295,20 @@ mod tests {
     fn strips_and_quads_give_the_same_bits() {
         let basis = basis_of([0.013, 0.0071, -0.0033], [0.41, -0.0029, 0.0117]);
         let inv_w = [0.31, 0.07, 0.9];
-        let p = PrimPlanes::new(&basis, (3, 7), [0.1, 0.7, 0.3], inv_w);
+        let p = PrimPlanes::new(&basis, [0.1, 0.7, 0.3], inv_w);
         let v = p.varying(&basis, [0.3, -2.5, 7.25], inv_w);
         assert_eq!(v.kind, Kind::Perspective);
         let origin = (40, 18);
-        let (x, y) = p.offsets(origin, &STRIP_X, &STRIP_Y);
+        let (x, y) = offsets((3, 7), origin, &STRIP_X, &STRIP_Y);
         let strip = v.values(&x, &y, &p.reciprocal_w(&x, &y));
         let z16 = p.z_at(&x, &y);
         for q in 0..4 {
-            let (qx, qy) = p.offsets((origin.0 + 2 * q as i64, origin.1), &QUAD_X, &QUAD_Y);
+            let (qx, qy) = offsets(
+                (3, 7),
+                (origin.0 + 2 * q as i64, origin.1),
+                &QUAD_X,
+                &QUAD_Y,
+            );
             let quad = v.values(&qx, &qy, &p.reciprocal_w(&qx, &qy));
             assert_eq!(
                 quad.map(f32::to_bits),

@@ -11,7 +11,7 @@ use crate::framebuffer::{Band, Framebuffer};
 use crate::interpolate::{Plane, PrimPlanes};
 use crate::linkage::{FsLayout, VsLayout};
 use crate::rasterize::{PixelRect, Shape, WinVertex};
-use crate::shade::{new_batch, FragmentStage, Prim};
+use crate::shade::{new_batch, plane_origin, FragmentStage, Prim};
 use crate::state::{CullFace, FrontFace, PipelineState, PolygonMode};
 use crate::workers::Workers;
 use crate::{DrawError, ShaderStage};
@@ -645,7 +645,7 @@ impl Setup<'_> {
     ) -> (usize, PrimPlanes) {
         let basis = shape.basis(origin);
         let (z, inv_w) = shape.vertex_depths();
-        let prim = PrimPlanes::new(&basis, origin, z, inv_w);
+        let prim = PrimPlanes::new(&basis, z, inv_w);
         let start = out.planes.len();
         // A line's or a point's missing vertices repeat its last.
         let data = |j: usize| vertices.get(j).or(vertices.last()).copied().unwrap_or(&[]);
@@ -681,7 +681,7 @@ impl Setup<'_> {
         if bounds.0 >= bounds.2 || bounds.1 >= bounds.3 {
             return;
         }
-        let origin = (bounds.0, bounds.1);
+        let origin = plane_origin(bounds);
         let (attrs, planes) = self.planes(out, &shape, origin, vertices, (back, provoking));
         out.prims.push(Prim {
             shape,

@@ -711,7 +711,7 @@ fn for_each_quad(r: PixelRect, mut f: impl FnMut(i64, i64)) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::interpolate::PrimPlanes;
+    use crate::interpolate::{offsets, PrimPlanes};
 
     fn wv(x: f64, y: f64) -> WinVertex {
         WinVertex {
@@ -922,9 +922,9 @@ mod tests {
         let origin = (s.bounds().0, s.bounds().1);
         let basis = s.basis(origin);
         let (z, inv_w) = s.vertex_depths();
-        let p = PrimPlanes::new(&basis, origin, z, inv_w);
+        let p = PrimPlanes::new(&basis, z, inv_w);
         let v = p.varying(&basis, a, inv_w);
-        let (fx, fy) = p.offsets((x, y), &[0.0], &[0.0]);
+        let (fx, fy) = offsets(origin, (x, y), &[0.0], &[0.0]);
         let rw = p.reciprocal_w(&fx, &fy);
         (
             p.z_at(&fx, &fy)[0],

@@ -5,7 +5,7 @@
 use crate::ex::{Batch, ExecError, Textures, LANES};
 use crate::fragment_ops::{self, Fragment, QuickOps, QuickTarget};
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
-use crate::interpolate::{Plane, PrimPlanes, QUAD_X, QUAD_Y, STRIP_X, STRIP_Y};
+use crate::interpolate::{offsets, Plane, PrimPlanes, QUAD_X, QUAD_Y, STRIP_X, STRIP_Y};
 use crate::linkage::FsLayout;
 use crate::rasterize::{PixelRect, Shape, STRIP};
 use crate::simd::Isa;
@@ -30,6 +30,25 @@ pub(crate) struct Prim {
     /// Index of the assembled primitive this one came from (clipping may
     /// split one into several), for the debugger.
     pub source: u32,
+}
+
+/// The origin pixel of a primitive's planes (`crate::interpolate`): the
+/// first pixel of its clipped bounds.
+pub(crate) fn plane_origin(bounds: PixelRect) -> (i64, i64) {
+    (bounds.0, bounds.1)
+}
+
+impl Prim {
+    /// [`offsets`] from this primitive's plane origin.
+    #[inline(always)]
+    fn offsets<const N: usize>(
+        &self,
+        at: (i64, i64),
+        ox: &[f32; N],
+        oy: &[f32; N],
+    ) -> ([f32; N], [f32; N]) {
+        offsets(plane_origin(self.bounds), at, ox, oy)
+    }
 }
 
 pub(crate) fn new_batch(inputs: usize, outputs: usize) -> Batch {
@@ -92,7 +111,7 @@ impl Quad {
 /// the polygon offset, clamped) and its fixed point.
 #[inline(always)]
 fn quad_depths(prim: &Prim, (qx, qy): (i64, i64)) -> ([f64; 4], [u32; 4]) {
-    let (x, y) = prim.planes.offsets((qx, qy), &QUAD_X, &QUAD_Y);
+    let (x, y) = prim.offsets((qx, qy), &QUAD_X, &QUAD_Y);
     window_depths(&prim.planes.z_at(&x, &y), prim.z_offset)
 }
 
@@ -716,16 +735,16 @@ impl<'a> FragmentStage<'a> {
             Some((q, o)) => Sink::Quick(q.target(fb, origin), o),
             None => Sink::General(fb, quick),
         };
+        // Four whole quads side by side make one entry (`STRIP`) when
+        // they may run as a strip.
+        let strips = self.strips && matches!(sink, Sink::Quick(..));
         for (i, &p) in bin.iter().enumerate() {
             let Some(&prim) = prims.get(p as usize) else {
                 continue;
             };
             self.prefetch_ahead(prims, bin, i);
-            let clip = clip_to(prim, tile);
-            // Four whole quads side by side make one entry (`STRIP`) when
-            // they may run as a strip.
-            let strips = self.strips && matches!(sink, Sink::Quick(..));
-            prim.shape.quads_into_strips(clip, quads, strips);
+            prim.shape
+                .quads_into_strips(clip_to(prim, tile), quads, strips);
             for &(qx, qy, mask) in quads.iter() {
                 if mask & STRIP == 0 {
                     self.batch_quad(
@@ -824,7 +843,7 @@ impl<'a> FragmentStage<'a> {
         (qx, qy): (i64, i64),
     ) -> Result<(), ExecError> {
         let planes = &prim.planes;
-        let (x, y) = planes.offsets((qx, qy), &STRIP_X, &STRIP_Y);
+        let (x, y) = prim.offsets((qx, qy), &STRIP_X, &STRIP_Y);
         let z = match self.window_z {
             true => planes.z_at(&x, &y),
             false => [0.0; LANES],
@@ -1121,7 +1140,7 @@ impl<'a> FragmentStage<'a> {
             let planes = &prim.planes;
             let ox = order.map(|k| QUAD_X[k as usize & 3]);
             let oy = order.map(|k| QUAD_Y[k as usize & 3]);
-            let (x, y) = planes.offsets((quad.x, quad.y), &ox, &oy);
+            let (x, y) = prim.offsets((quad.x, quad.y), &ox, &oy);
             let rw = planes.reciprocal_w(&x, &y);
             let varyings = self.prim_attrs(prim);
             let sprite = sprite && matches!(prim.shape, Shape::Point { .. });

@@ -52,11 +52,13 @@ impl Spare {
     /// Most bytes of capacity kept.
     const LIMIT: usize = 256 << 20;
 
+    /// Bytes of capacity of a set-up chunk's buffers.
+    fn chunk_bytes((p, a): &(Vec<Prim>, Vec<Plane>)) -> usize {
+        p.capacity() * std::mem::size_of::<Prim>() + a.capacity() * std::mem::size_of::<Plane>()
+    }
+
     fn bytes(&self) -> usize {
-        let chunk = |(p, a): &(Vec<Prim>, Vec<Plane>)| {
-            p.capacity() * std::mem::size_of::<Prim>() + a.capacity() * std::mem::size_of::<Plane>()
-        };
-        self.chunks.iter().map(chunk).sum::<usize>()
+        self.chunks.iter().map(Spare::chunk_bytes).sum::<usize>()
             + self.outputs.capacity() * 4
             + self.corners.capacity() * std::mem::size_of::<Corner>()
             + self.tables.iter().map(|t| t.capacity() * 4).sum::<usize>()
@@ -93,16 +95,15 @@ impl Spare {
     pub fn keep(&mut self, chunks: Vec<(Vec<Prim>, Vec<Plane>)>, outputs: Vec<f32>) {
         let mut bytes = self.bytes();
         keep_larger(&mut self.outputs, outputs, &mut bytes);
-        for (mut p, mut a) in chunks {
-            let more = p.capacity() * std::mem::size_of::<Prim>()
-                + a.capacity() * std::mem::size_of::<Plane>();
+        for mut c in chunks {
+            let more = Spare::chunk_bytes(&c);
             if bytes + more > Spare::LIMIT {
                 break;
             }
             bytes += more;
-            p.clear();
-            a.clear();
-            self.chunks.push((p, a));
+            c.0.clear();
+            c.1.clear();
+            self.chunks.push(c);
         }
     }
 }
