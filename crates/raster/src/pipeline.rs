@@ -10,7 +10,7 @@ use crate::ex::{ExecError, Interface, Textures, LANES};
 use crate::framebuffer::{Band, Framebuffer};
 use crate::interpolate::{Plane, PrimPlanes};
 use crate::linkage::{FsLayout, VsLayout};
-use crate::rasterize::{PixelRect, Shape, WinVertex};
+use crate::rasterize::{max_depth_slope, snap, vertex_depths, PixelRect, Shape, WinVertex};
 use crate::shade::{new_batch, plane_origin, FragmentStage, Prim};
 use crate::state::{CullFace, FrontFace, PipelineState, PolygonMode};
 use crate::workers::Workers;
@@ -428,11 +428,12 @@ struct Setup<'a> {
     corners: &'a [Corner],
 }
 
-/// A vertex's [`Planes::outcode_of`] and [`Setup::window`].
+/// A vertex's [`Planes::outcode_of`], [`Setup::window`] and that
+/// position in fixed point ([`snap`]).
 #[derive(Clone, Copy)]
 pub(crate) struct Corner {
     outcode: u32,
-    win: Option<WinVertex>,
+    win: Option<(WinVertex, (i64, i64))>,
 }
 
 /// Below this many primitive vertices per vertex the set-up computes each
@@ -631,22 +632,22 @@ impl Setup<'_> {
             .then_some(win)
     }
 
-    /// Appends the planes of the fragment varyings of `shape` (`vertices`:
-    /// the data of its vertices) to `out.planes`, flat-shaded colours
-    /// constant at `provoking`'s, origin pixel `origin`; returns where
-    /// they start and the primitive's own planes (window z, 1/w).
+    /// Appends the planes of the fragment varyings of `shape` (`win` and
+    /// `vertices`: the window positions and the data of its vertices) to
+    /// `out.planes`, flat-shaded colours constant at `provoking`'s,
+    /// origin pixel `origin`; returns the primitive's own planes (window
+    /// z, 1/w).
     fn planes(
         &self,
         out: &mut Out,
-        shape: &Shape,
+        (shape, win): (&Shape, &[WinVertex]),
         origin: (i64, i64),
         vertices: &[&[f32]],
         (back, provoking): (bool, &[f32]),
-    ) -> (usize, PrimPlanes) {
+    ) -> PrimPlanes {
         let basis = shape.basis(origin);
-        let (z, inv_w) = shape.vertex_depths();
+        let (z, inv_w) = vertex_depths(win);
         let prim = PrimPlanes::new(&basis, z, inv_w);
-        let start = out.planes.len();
         // A line's or a point's missing vertices repeat its last.
         let data = |j: usize| vertices.get(j).or(vertices.last()).copied().unwrap_or(&[]);
         let (d0, d1, d2) = (data(0), data(1), data(2));
@@ -659,21 +660,23 @@ impl Setup<'_> {
                 false => prim.varying(&basis, [get(d0), get(d1), get(d2)], inv_w),
             });
         }
-        (start, prim)
+        prim
     }
 
+    /// Sets up `shape`, whose vertices are `win` (window positions) and
+    /// `vertices` (their data).
     #[allow(clippy::too_many_arguments)]
     fn push(
         &self,
         out: &mut Out,
-        shape: Shape,
+        (shape, win): (Shape, &[WinVertex]),
         back: bool,
         z_offset: f64,
         vertices: &[&[f32]],
         provoking: &[f32],
     ) {
         if let Some(p) = self.probe {
-            p.note_shape(&shape);
+            p.note_shape(win);
         }
         let b = shape.bounds();
         let c = self.clip_rect;
@@ -682,14 +685,17 @@ impl Setup<'_> {
             return;
         }
         let origin = plane_origin(bounds);
-        let (attrs, planes) = self.planes(out, &shape, origin, vertices, (back, provoking));
+        let planes = self.planes(out, (&shape, win), origin, vertices, (back, provoking));
+        if let Some(p) = self.probe {
+            p.note_window(win);
+        }
         out.prims.push(Prim {
             shape,
             bounds,
             back,
             z_offset,
             planes,
-            attrs,
+            index: out.prims.len() as u32,
             chunk: out.chunk,
             source: out.source,
         });
@@ -716,7 +722,7 @@ impl Setup<'_> {
         };
         let size = self.point_size(&v.data) as f64;
         let shape = Shape::point(win, size, self.state.point_sprite);
-        self.push(out, shape, back, z_offset, &[&v.data], provoking);
+        self.push(out, (shape, &[win]), back, z_offset, &[&v.data], provoking);
     }
 
     fn line(
@@ -735,7 +741,14 @@ impl Setup<'_> {
             return;
         };
         let shape = Shape::line([wa, wb], self.state.line_width);
-        self.push(out, shape, back, z_offset, &[&a.data, &b.data], provoking);
+        self.push(
+            out,
+            (shape, &[wa, wb]),
+            back,
+            z_offset,
+            &[&a.data, &b.data],
+            provoking,
+        );
     }
 
     /// Vertex `v`'s outcode and window position: from the table when
@@ -755,7 +768,10 @@ impl Setup<'_> {
         Corner {
             outcode,
             // Only read for vertices inside every plane.
-            win: if outcode == 0 { self.window(pos) } else { None },
+            win: match outcode {
+                0 => self.window(pos).map(|w| (w, snap(&w))),
+                _ => None,
+            },
         }
     }
 
@@ -781,16 +797,18 @@ impl Setup<'_> {
             }
             if all == 0 {
                 let mut win = [NO_WIN; 4];
+                let mut fixed = [(0, 0); 4];
                 let mut data: [&[f32]; 4] = [&[]; 4];
                 for (i, (&v, c)) in vertices.iter().zip(&corners).enumerate() {
-                    let Some(w) = c.win else {
+                    let Some((w, f)) = c.win else {
                         return;
                     };
-                    win[i] = w;
+                    (win[i], fixed[i]) = (w, f);
                     data[i] = self.data(v);
                 }
                 let n = vertices.len();
-                self.set_up_polygon(out, &win[..n], &data[..n], &[], prov);
+                let polygon = (&win[..n], &fixed[..n]);
+                self.set_up_polygon(out, polygon, &data[..n], &[], prov);
                 return;
             }
         }
@@ -812,16 +830,18 @@ impl Setup<'_> {
             return;
         };
         let data: Vec<&[f32]> = clipped.iter().map(|v| &v.data[..]).collect();
-        self.set_up_polygon(out, &win, &data, &original, prov);
+        let fixed: Vec<(i64, i64)> = win.iter().map(snap).collect();
+        self.set_up_polygon(out, (&win, &fixed), &data, &original, prov);
     }
 
     /// Facing, culling, polygon offset and the polygon mode of a clipped
-    /// polygon (`win` and `data` per vertex, at least three; `original`:
-    /// the unclipped polygon, for line and point modes).
+    /// polygon (`win`, its [`snap`] `fixed` and `data` per vertex, at
+    /// least three; `original`: the unclipped polygon, for line and point
+    /// modes).
     fn set_up_polygon(
         &self,
         out: &mut Out,
-        win: &[WinVertex],
+        (win, fixed): (&[WinVertex], &[(i64, i64)]),
         data: &[&[f32]],
         original: &[ClipVertex],
         prov: &[f32],
@@ -851,10 +871,8 @@ impl Setup<'_> {
         let z_offset = if offset_on {
             // §3.5.5: o = m · factor + r · units.
             let m = (1..win.len() - 1)
-                .filter_map(|i| Shape::triangle([win[0], win[i], win[i + 1]]))
-                .map(|t| t.max_depth_slope())
-                .next()
-                .unwrap_or(0.0);
+                .find(|&i| Shape::triangle([win[0], win[i], win[i + 1]]).is_some())
+                .map_or(0.0, |i| max_depth_slope(&[win[0], win[i], win[i + 1]]));
             m * po.factor as f64 + po.units as f64 / crate::framebuffer::DEPTH_MAX as f64
         } else {
             0.0
@@ -862,15 +880,18 @@ impl Setup<'_> {
         match mode {
             PolygonMode::Fill => {
                 for i in 1..win.len() - 1 {
-                    let Some(shape) = Shape::triangle([win[0], win[i], win[i + 1]]) else {
+                    let corner = |j: usize| fixed.get(j).copied().unwrap_or_default();
+                    let p = [corner(0), corner(i), corner(i + 1)];
+                    let Some(shape) = Shape::triangle_snapped(p) else {
                         continue;
                     };
+                    let tri = [win[0], win[i], win[i + 1]];
                     let (Some(&d0), Some(&di), Some(&dj)) =
                         (data.first(), data.get(i), data.get(i + 1))
                     else {
                         continue;
                     };
-                    self.push(out, shape, back, z_offset, &[d0, di, dj], prov);
+                    self.push(out, (shape, &tri), back, z_offset, &[d0, di, dj], prov);
                 }
             }
             PolygonMode::Line => {

@@ -18,7 +18,7 @@ use crate::fragment_ops::{self, Fragment};
 use crate::framebuffer::{depth_to_fixed, ColorBuffer, Framebuffer};
 use crate::linkage::VsLayout;
 use crate::pipeline::{draw_probed, Assembled};
-use crate::rasterize::Shape;
+use crate::rasterize::WinVertex;
 use crate::shade::{FragmentStage, Prim};
 use crate::state::{PipelineState, Rect};
 use crate::{DrawError, Mode, VertexFetch};
@@ -94,6 +94,7 @@ pub fn view_draw(fb: &Framebuffer, draw: &Replay, view: View) -> Result<ViewImag
             height: fb.height,
             pixels: vec![None; fb.width as usize * fb.height as usize],
         }),
+        windows: Mutex::default(),
     };
     let mut copy = fb.clone();
     draw.run(&mut copy, draw.state, &probe)?;
@@ -342,6 +343,7 @@ pub fn probe_draw(
         view: None,
         image: Mutex::new(ViewImage::default()),
         inner: Mutex::new(report),
+        windows: Mutex::default(),
     };
     let mut copy = fb.clone();
     let result = draw.run(&mut copy, &narrowed, &probe);
@@ -395,6 +397,10 @@ pub(crate) struct Probe {
     view: Option<View>,
     image: Mutex<ViewImage>,
     inner: Mutex<DrawProbe>,
+    /// The window vertices (x, y, z, 1/w) of every primitive set up, by
+    /// [`Prim::index`] (a probed draw sets up in one chunk): primitives
+    /// keep only what rasterization reads.
+    windows: Mutex<Vec<Vec<[f64; 4]>>>,
 }
 
 /// The trace of the probed lane while its batch runs.
@@ -506,17 +512,21 @@ impl Probe {
         (x, y) == self.pixel
     }
 
-    /// Records a set-up primitive's outline (when asked for).
-    pub fn note_shape(&self, shape: &Shape) {
+    /// Records the outline of a primitive going to set-up, its window
+    /// vertices `win` (when asked for).
+    pub fn note_shape(&self, win: &[WinVertex]) {
         if !self.outlines {
             return;
         }
-        let corners: Vec<[f64; 2]> = match shape {
-            Shape::Triangle { v, .. } => v.iter().map(|w| [w.x, w.y]).collect(),
-            Shape::Line { v, .. } => v.iter().map(|w| [w.x, w.y]).collect(),
-            Shape::Point { v, .. } => vec![[v.x, v.y]],
-        };
+        let corners: Vec<[f64; 2]> = win.iter().map(|w| [w.x, w.y]).collect();
         self.with(|r| r.outlines.push(corners));
+    }
+
+    /// Records the window vertices of the primitive just set up (the
+    /// next [`Prim::index`]).
+    pub fn note_window(&self, win: &[WinVertex]) {
+        let mut windows = self.windows.lock().unwrap_or_else(|e| e.into_inner());
+        windows.push(win.iter().map(|w| [w.x, w.y, w.z, w.inv_w]).collect());
     }
 
     pub fn note_primitive(&self, source: u32, p: &Assembled) {
@@ -544,12 +554,12 @@ impl Probe {
         self.with(|r| r.vertex_outputs = per);
     }
 
-    fn fragment(prim: &Prim, window_z: f64) -> FragmentProbe {
-        let verts: Vec<[f64; 4]> = match &prim.shape {
-            Shape::Triangle { v, .. } => v.iter().map(|w| [w.x, w.y, w.z, w.inv_w]).collect(),
-            Shape::Line { v, .. } => v.iter().map(|w| [w.x, w.y, w.z, w.inv_w]).collect(),
-            Shape::Point { v, .. } => vec![[v.x, v.y, v.z, v.inv_w]],
-        };
+    fn fragment(&self, prim: &Prim, window_z: f64) -> FragmentProbe {
+        let windows = self.windows.lock().unwrap_or_else(|e| e.into_inner());
+        let verts = windows
+            .get(prim.index as usize)
+            .cloned()
+            .unwrap_or_default();
         FragmentProbe {
             primitive: prim.source,
             back_facing: prim.back,
@@ -568,7 +578,7 @@ impl Probe {
         prim: &Prim,
         z: f64,
     ) {
-        let mut f = Probe::fragment(prim, z);
+        let mut f = self.fragment(prim, z);
         f.early_rejected = true;
         let before = PixelState::read(fb, index);
         let zf = depth_to_fixed(z as f32);
@@ -590,7 +600,7 @@ impl Probe {
 
     /// Starts recording the probed lane of a batch about to run.
     pub fn begin(&self, prim: &Prim, batch: &Batch, lane: usize, z: f64) -> Recording {
-        let mut fragment = Probe::fragment(prim, z);
+        let mut fragment = self.fragment(prim, z);
         fragment.inputs = batch.inputs.iter().map(|c| c[lane]).collect();
         Recording { fragment }
     }

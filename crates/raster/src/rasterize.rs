@@ -50,6 +50,39 @@ pub(crate) struct WinVertex {
     pub inv_w: f64,
 }
 
+impl WinVertex {
+    /// The window position alone.
+    pub fn xy(&self) -> WinXy {
+        WinXy {
+            x: self.x,
+            y: self.y,
+        }
+    }
+}
+
+/// A window position: what rasterizing a line or a point reads of its
+/// vertices (their z and 1/w are in the primitive's planes).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct WinXy {
+    pub x: f64,
+    pub y: f64,
+}
+
+/// The vertices' window z and 1/w, three of each (a point's or a line's
+/// last vertex repeated; zeros for none).
+pub(crate) fn vertex_depths(win: &[WinVertex]) -> ([f64; 3], [f64; 3]) {
+    let v = |j: usize| win.get(j).or(win.last()).copied();
+    let v = [v(0), v(1), v(2)];
+    (
+        v.map(|w| w.map_or(0.0, |w| w.z)),
+        v.map(|w| w.map_or(0.0, |w| w.inv_w)),
+    )
+}
+
+/// What rasterization needs of a primitive: its coverage (the
+/// interpolated values are in its planes, `crate::interpolate`). Kept
+/// small: a draw's primitives are written at set-up and read again by
+/// every tile they overlap, so their bytes are memory traffic.
 #[derive(Clone, Debug)]
 pub(crate) enum Shape {
     Triangle {
@@ -57,17 +90,13 @@ pub(crate) enum Shape {
         p: [(i64, i64); 3],
         /// +1 when counter-clockwise in window space, −1 otherwise.
         sign: i64,
-        /// 1 / twice the area in fixed-point units² (the area is positive):
-        /// what the edge values are multiplied by.
-        inv_area2: f64,
-        v: [WinVertex; 3],
     },
     Line {
-        v: [WinVertex; 2],
+        v: [WinXy; 2],
         width: i64,
     },
     Point {
-        v: WinVertex,
+        v: WinXy,
         /// The size used for gl_PointCoord.
         size: f64,
         /// Covered pixels `[x0, x1) × [y0, y1)`.
@@ -90,13 +119,31 @@ fn owns_edge(p: &[(i64, i64); 3], k: usize, sign: i64) -> bool {
     dy < 0 || (dy == 0 && dx < 0)
 }
 
+/// A window coordinate in fixed point: `c · ONE` rounded half away from
+/// zero (as `f64::round`, without its library call), NaN as 0, clamped
+/// to ±`FIXED_LIMIT`.
+#[inline]
 pub(crate) fn to_fixed(c: f64) -> i64 {
-    let f = (c * ONE as f64).round();
-    if f.is_nan() {
-        0
+    let f = c * ONE as f64;
+    // The truncation (saturating, NaN 0) and the fraction left, exact
+    // below 2^53 (above, f is whole and the fraction 0; infinities and
+    // NaN give an infinite or NaN fraction).
+    let t = f as i64;
+    let frac = f - t as f64;
+    let r = if frac >= 0.5 {
+        t.saturating_add(1)
+    } else if frac <= -0.5 {
+        t.saturating_sub(1)
     } else {
-        (f as i64).clamp(-FIXED_LIMIT, FIXED_LIMIT)
-    }
+        t
+    };
+    r.clamp(-FIXED_LIMIT, FIXED_LIMIT)
+}
+
+/// A window position in fixed point ([`to_fixed`] of x and y).
+#[inline]
+pub(crate) fn snap(w: &WinVertex) -> (i64, i64) {
+    (to_fixed(w.x), to_fixed(w.y))
 }
 
 fn intersect(a: PixelRect, b: PixelRect) -> PixelRect {
@@ -106,7 +153,12 @@ fn intersect(a: PixelRect, b: PixelRect) -> PixelRect {
 impl Shape {
     /// A triangle; `None` when it has no area after snapping.
     pub fn triangle(v: [WinVertex; 3]) -> Option<Shape> {
-        let p = v.map(|w| (to_fixed(w.x), to_fixed(w.y)));
+        Shape::triangle_snapped(v.map(|w| snap(&w)))
+    }
+
+    /// A triangle of vertices already in fixed point ([`snap`]).
+    #[inline]
+    pub fn triangle_snapped(p: [(i64, i64); 3]) -> Option<Shape> {
         let a = edge(&p, 0, p[0].0, p[0].1);
         if a == 0 {
             return None;
@@ -114,8 +166,6 @@ impl Shape {
         Some(Shape::Triangle {
             p,
             sign: a.signum(),
-            inv_area2: 1.0 / a.abs() as f64,
-            v,
         })
     }
 
@@ -126,7 +176,7 @@ impl Shape {
             width.clamp(1.0, 64.0)
         };
         Shape::Line {
-            v,
+            v: v.map(|w| w.xy()),
             width: (w as f64).round().max(1.0) as i64,
         }
     }
@@ -150,7 +200,11 @@ impl Shape {
             let (x0, y0) = (start(v.x), start(v.y));
             (x0, y0, x0 + w, y0 + w)
         };
-        Shape::Point { v, size, square }
+        Shape::Point {
+            v: v.xy(),
+            size,
+            square,
+        }
     }
 
     /// Pixel bounds of the primitive (before clipping to the framebuffer).
@@ -286,9 +340,9 @@ impl Shape {
     /// (the projection onto the segment); zeros for a point.
     pub fn basis(&self, (x0, y0): (i64, i64)) -> Basis {
         match self {
-            Shape::Triangle {
-                p, sign, inv_area2, ..
-            } => {
+            Shape::Triangle { p, sign } => {
+                // 1 / twice the area in fixed-point units² (positive).
+                let inv_area2 = 1.0 / edge(p, 0, p[0].0, p[0].1).unsigned_abs() as f64;
                 let e = edge_forms(p, *sign, (x0, y0));
                 let b = |j: usize| {
                     let (c, dx, dy) = e[j];
@@ -310,17 +364,6 @@ impl Shape {
             }
             Shape::Point { .. } => Basis::default(),
         }
-    }
-
-    /// The vertices' window z and 1/w (a point's or a line's last vertex
-    /// repeated).
-    pub fn vertex_depths(&self) -> ([f64; 3], [f64; 3]) {
-        let v: [&WinVertex; 3] = match self {
-            Shape::Triangle { v, .. } => [&v[0], &v[1], &v[2]],
-            Shape::Line { v, .. } => [&v[0], &v[1], &v[1]],
-            Shape::Point { v, .. } => [v, v, v],
-        };
-        (v.map(|w| w.z), v.map(|w| w.inv_w))
     }
 
     /// The covered quads inside `clip` in [`Shape::quads_into`]'s order:
@@ -410,28 +453,24 @@ impl Shape {
             _ => (0.0, 0.0),
         }
     }
+}
 
-    /// max(|∂z/∂x|, |∂z/∂y|) of a triangle's plane (polygon offset).
-    pub fn max_depth_slope(&self) -> f64 {
-        match self {
-            Shape::Triangle { v, .. } => {
-                let (x1, y1, z1) = (v[1].x - v[0].x, v[1].y - v[0].y, v[1].z - v[0].z);
-                let (x2, y2, z2) = (v[2].x - v[0].x, v[2].y - v[0].y, v[2].z - v[0].z);
-                let det = x1 * y2 - x2 * y1;
-                if det == 0.0 {
-                    return 0.0;
-                }
-                let dzdx = (z1 * y2 - z2 * y1) / det;
-                let dzdy = (x1 * z2 - x2 * z1) / det;
-                let m = dzdx.abs().max(dzdy.abs());
-                if m.is_finite() {
-                    m
-                } else {
-                    0.0
-                }
-            }
-            _ => 0.0,
-        }
+/// max(|∂z/∂x|, |∂z/∂y|) of the plane through three window vertices
+/// (polygon offset).
+pub(crate) fn max_depth_slope(v: &[WinVertex; 3]) -> f64 {
+    let (x1, y1, z1) = (v[1].x - v[0].x, v[1].y - v[0].y, v[1].z - v[0].z);
+    let (x2, y2, z2) = (v[2].x - v[0].x, v[2].y - v[0].y, v[2].z - v[0].z);
+    let det = x1 * y2 - x2 * y1;
+    if det == 0.0 {
+        return 0.0;
+    }
+    let dzdx = (z1 * y2 - z2 * y1) / det;
+    let dzdy = (x1 * z2 - x2 * z1) / det;
+    let m = dzdx.abs().max(dzdy.abs());
+    if m.is_finite() {
+        m
+    } else {
+        0.0
     }
 }
 
@@ -905,6 +944,52 @@ mod tests {
         assert!(checked > 10_000);
     }
 
+    /// `to_fixed` rounds as `f64::round` does, at halves, at the limits
+    /// and for values that are not numbers.
+    #[test]
+    fn fixed_point_rounds_half_away_from_zero() {
+        let reference = |c: f64| {
+            let f = (c * ONE as f64).round();
+            if f.is_nan() {
+                0
+            } else {
+                (f as i64).clamp(-FIXED_LIMIT, FIXED_LIMIT)
+            }
+        };
+        let mut values = vec![
+            0.0,
+            -0.0,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MAX,
+            f64::MIN,
+            f64::MIN_POSITIVE,
+            1e300,
+            -1e300,
+            9.2e18,
+            -9.2e18,
+            (1u64 << 53) as f64,
+            ((1u64 << 53) + 2) as f64 / ONE as f64,
+        ];
+        for k in -2000..2000 {
+            // Halves, and the doubles either side of them.
+            let h = (k as f64 + 0.5) / ONE as f64;
+            values.extend([h, h.next_up(), h.next_down(), k as f64 / ONE as f64]);
+        }
+        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        for _ in 0..200_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            values.push(f64::from_bits(x));
+            values.push((x >> 11) as f64 / (1u64 << 40) as f64 - 4096.0);
+        }
+        for c in values {
+            assert_eq!(to_fixed(c), reference(c), "{c:e}");
+        }
+    }
+
     #[test]
     fn top_left_rule() {
         // Right triangle with a bottom horizontal edge and a left vertical
@@ -916,12 +1001,16 @@ mod tests {
         assert_eq!(hits[6], 1, "left edge included");
     }
 
-    /// The planes of a primitive at pixel (x, y): (window z, 1/w, the
-    /// varying with vertex values `a`).
-    fn planes_at(s: &Shape, a: [f32; 3], (x, y): (i64, i64)) -> (f64, f32, f32) {
+    /// The planes of a primitive (vertices `win`) at pixel (x, y):
+    /// (window z, 1/w, the varying with vertex values `a`).
+    fn planes_at(
+        (s, win): (&Shape, &[WinVertex]),
+        a: [f32; 3],
+        (x, y): (i64, i64),
+    ) -> (f64, f32, f32) {
         let origin = (s.bounds().0, s.bounds().1);
         let basis = s.basis(origin);
-        let (z, inv_w) = s.vertex_depths();
+        let (z, inv_w) = vertex_depths(win);
         let p = PrimPlanes::new(&basis, z, inv_w);
         let v = p.varying(&basis, a, inv_w);
         let (fx, fy) = offsets(origin, (x, y), &[0.0], &[0.0]);
@@ -955,7 +1044,7 @@ mod tests {
         // Pixel (7, 0) center is (7.5, 0.5): b = (1 - 8/16, 7.5/16, 0.5/16).
         let b = [0.5, 7.5 / 16.0, 0.5 / 16.0];
         let a = [1.0, 0.0, 0.0];
-        let (z, inv_w, f) = planes_at(&t, a, (7, 0));
+        let (z, inv_w, f) = planes_at((&t, &vs), a, (7, 0));
         let (ez, ew, ef) = exact(b, &vs, a);
         assert!((z - 0.5).abs() < 1e-12, "z is linear in window space: {z}");
         assert!((z - ez).abs() < 1e-12);
@@ -964,7 +1053,7 @@ mod tests {
         assert!((ef - 0.5 / ew).abs() < 1e-12);
         // A line's and a point's.
         let l = Shape::line([vs[0], vs[1]], 1.0);
-        let (z, inv_w, f) = planes_at(&l, [2.0, 4.0, 0.0], (7, 0));
+        let (z, inv_w, f) = planes_at((&l, &vs[..2]), [2.0, 4.0, 0.0], (7, 0));
         let tt = 7.5 / 16.0;
         let ew = (1.0 - tt) + tt * 0.25;
         assert!((z - tt).abs() < 1e-12);
@@ -972,7 +1061,10 @@ mod tests {
         let ef = ((1.0 - tt) * 2.0 + tt * 0.25 * 4.0) / ew;
         assert!((f as f64 - ef).abs() < 1e-5, "{f} {ef}");
         let p = Shape::point(vs[1], 3.0, false);
-        assert_eq!(planes_at(&p, [0.3, 9.0, 9.0], (16, 1)), (1.0, 0.25, 0.3));
+        assert_eq!(
+            planes_at((&p, &vs[1..2]), [0.3, 9.0, 9.0], (16, 1)),
+            (1.0, 0.25, 0.3)
+        );
     }
 
     /// Random triangles, perspective and not: the planes agree with
@@ -1006,7 +1098,7 @@ mod tests {
             let b2 = ((x1 - x0) * (cy - y0) - (cx - x0) * (y1 - y0)) / det;
             let b = [1.0 - b1 - b2, b1, b2];
             let a = [0.25f32, -3.0, 7.5];
-            let (z, inv_w, val) = planes_at(&t, a, (qx, qy));
+            let (z, inv_w, val) = planes_at((&t, &v), a, (qx, qy));
             let (ez, ew, ef) = exact(b, &v, a);
             // The scale of the plane's terms: its value and its steps
             // times the distance from the origin.

@@ -12,7 +12,7 @@ use crate::simd::Isa;
 use crate::state::PipelineState;
 use crate::ShaderStage;
 
-/// A primitive ready for rasterization.
+/// A primitive ready for rasterization (small: see [`Shape`]).
 pub(crate) struct Prim {
     pub shape: Shape,
     /// Pixel bounds clipped to the framebuffer and scissor box.
@@ -22,10 +22,10 @@ pub(crate) struct Prim {
     pub z_offset: f64,
     /// Its window z and 1/w planes (`crate::interpolate`).
     pub planes: PrimPlanes,
-    /// Where the planes of its fragment varyings start in the array of
-    /// the primitive's set-up chunk (`chunk`, an index into
-    /// [`FragmentStage::attrs`]): one per link.
-    pub attrs: usize,
+    /// Its index in its set-up chunk (`chunk`, an index into
+    /// [`FragmentStage::attrs`]), whose planes array holds one plane per
+    /// link and primitive: its varyings' start at `index` × links.
+    pub index: u32,
     pub chunk: u32,
     /// Index of the assembled primitive this one came from (clipping may
     /// split one into several), for the debugger.
@@ -478,7 +478,7 @@ impl<'a> FragmentStage<'a> {
     fn prim_attrs(&self, prim: &Prim) -> &'a [Plane] {
         self.attrs
             .get(prim.chunk as usize)
-            .and_then(|a| a.get(prim.attrs..))
+            .and_then(|a| a.get(prim.index as usize * self.layout.links.len()..))
             .unwrap_or(&[])
     }
 
