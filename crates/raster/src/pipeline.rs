@@ -486,21 +486,27 @@ impl TileGrid {
         (x, y, (x + TILE).min(self.w), (y + TILE).min(self.h))
     }
 
-    /// The tiles a primitive's bounds overlap, row by row.
-    fn tiles_of(&self, prim: &Prim) -> impl Iterator<Item = usize> {
+    /// Calls `f` with each tile a primitive's bounds overlap, row by row
+    /// (most primitives of a big mesh overlap one: no loop for those).
+    #[inline(always)]
+    fn tiles_each(&self, prim: &Prim, mut f: impl FnMut(usize)) {
         let (w, h, tiles_x) = (self.w, self.h, self.tiles_x);
         let b = prim.bounds;
         let (x0, y0) = (b.0.clamp(0, w), b.1.clamp(0, h));
         let (x1, y1) = (b.2.clamp(x0, w), b.3.clamp(y0, h));
-        let (rows, cols) = if x0 >= x1 || y0 >= y1 {
-            (0..0, 0..0)
-        } else {
-            (
-                y0 / TILE..(y1 - 1) / TILE + 1,
-                x0 / TILE..(x1 - 1) / TILE + 1,
-            )
-        };
-        rows.flat_map(move |ty| cols.clone().map(move |tx| (ty * tiles_x + tx) as usize))
+        if x0 >= x1 || y0 >= y1 {
+            return;
+        }
+        let (tx0, tx1) = (x0 / TILE, (x1 - 1) / TILE);
+        let (ty0, ty1) = (y0 / TILE, (y1 - 1) / TILE);
+        if tx0 == tx1 && ty0 == ty1 {
+            return f((ty0 * tiles_x + tx0) as usize);
+        }
+        for ty in ty0..=ty1 {
+            for tx in tx0..=tx1 {
+                f((ty * tiles_x + tx) as usize);
+            }
+        }
     }
 }
 
@@ -516,11 +522,11 @@ impl ChunkBins {
     fn new(prims: &[Prim], grid: &TileGrid) -> ChunkBins {
         let mut starts = vec![0u32; grid.tiles + 1];
         for prim in prims {
-            for t in grid.tiles_of(prim) {
+            grid.tiles_each(prim, |t| {
                 if let Some(c) = starts.get_mut(t + 1) {
                     *c += 1;
                 }
-            }
+            });
         }
         for t in 0..grid.tiles {
             starts[t + 1] += starts[t];
@@ -528,14 +534,14 @@ impl ChunkBins {
         let mut next = starts.clone();
         let mut items = vec![0u32; starts[grid.tiles] as usize];
         for (i, prim) in prims.iter().enumerate() {
-            for t in grid.tiles_of(prim) {
+            grid.tiles_each(prim, |t| {
                 if let Some(n) = next.get_mut(t) {
                     if let Some(slot) = items.get_mut(*n as usize) {
                         *slot = i as u32;
                     }
                     *n += 1;
                 }
-            }
+            });
         }
         ChunkBins { starts, items }
     }

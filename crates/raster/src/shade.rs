@@ -442,7 +442,9 @@ impl<'a> FragmentStage<'a> {
     }
 
     /// Asks the CPU to fetch what the primitives after `bin[i]` will
-    /// need: the varyings of the one [`ATTRS_AHEAD`] later, the set-up of
+    /// need: the varyings of the one [`ATTRS_AHEAD`] later (when `attrs`:
+    /// finding them reads that primitive, so not for a pass that does
+    /// not interpolate), the set-up of
     /// the one [`PRIM_AHEAD`] later (far enough for a memory access when
     /// primitives cover a pixel or two: a tile's primitives lie all over
     /// the draw's), and the `prims` entry (the pointer to the set-up) of
@@ -450,7 +452,7 @@ impl<'a> FragmentStage<'a> {
     /// (with many small primitives the pointer array does not stay in the
     /// cache either). Only a hint: no effect on results.
     #[inline(always)]
-    fn prefetch_ahead(&self, prims: &[&Prim], bin: &[u32], i: usize) {
+    fn prefetch_ahead(&self, prims: &[&Prim], bin: &[u32], i: usize, attrs: bool) {
         if let Some(slot) = bin
             .get(i + SLOT_AHEAD)
             .and_then(|&p| prims.get(p as usize..p as usize + 1))
@@ -458,7 +460,7 @@ impl<'a> FragmentStage<'a> {
             prefetch(slot);
         }
         let at = |k: usize| bin.get(i + k).and_then(|&p| prims.get(p as usize));
-        if let Some(&next) = at(ATTRS_AHEAD) {
+        if let Some(&next) = at(ATTRS_AHEAD).filter(|_| attrs) {
             self.prefetch_attrs(next);
         }
         if let Some(&after) = at(PRIM_AHEAD) {
@@ -742,7 +744,7 @@ impl<'a> FragmentStage<'a> {
             let Some(&prim) = prims.get(p as usize) else {
                 continue;
             };
-            self.prefetch_ahead(prims, bin, i);
+            self.prefetch_ahead(prims, bin, i, true);
             prim.shape
                 .quads_into_strips(clip_to(prim, tile), quads, strips);
             for &(qx, qy, mask) in quads.iter() {
@@ -1604,7 +1606,8 @@ impl<'a> FragmentStage<'a> {
                     let Some(&prim) = prims.get(p as usize) else {
                         continue;
                     };
-                    self.prefetch_ahead(prims, bin, i);
+                    // (The pass interpolates nothing.)
+                    self.prefetch_ahead(prims, bin, i, false);
                     let clip = clip_to(prim, tile);
                     prim.shape.quads_each(
                         clip,
@@ -1636,7 +1639,7 @@ impl<'a> FragmentStage<'a> {
                     let Some(&prim) = prims.get(p as usize) else {
                         continue;
                     };
-                    self.prefetch_ahead(prims, bin, i);
+                    self.prefetch_ahead(prims, bin, i, pass.run_slice);
                     prim.shape.quads_into(clip_to(prim, tile), quads);
                     for &quad in quads.iter() {
                         let Some(e) = pending.get_mut(*n) else { break };
