@@ -468,26 +468,8 @@ impl QuickTarget<'_> {
         if fits {
             let mut pass = lanes & 0xf;
             if let Some((func, d)) = &mut self.depth {
-                // In bounds: index[3] is the largest.
-                let stored = index.map(|i| d[i]);
-                pass &= depth_pass_mask(*func, zf, stored);
-                if self.depth_write {
-                    // Every pixel stored, the passing ones' new depth
-                    // selected without branches (coverage patterns do not
-                    // predict): a row's two pixels at once.
-                    let zf = zf.map(u32::to_ne_bytes);
-                    let stored = stored.map(u32::to_ne_bytes);
-                    for (r, &at) in [index[0], index[2]].iter().enumerate() {
-                        if let Some([d0, d1]) = d.get_mut(at..at + 2) {
-                            let [n0, n1] = blend_pair(
-                                [stored[2 * r], stored[2 * r + 1]],
-                                [zf[2 * r], zf[2 * r + 1]],
-                                pass >> (2 * r),
-                            );
-                            [*d0, *d1] = [u32::from_ne_bytes(n0), u32::from_ne_bytes(n1)];
-                        }
-                    }
-                }
+                let write = self.depth_write;
+                pass = depth_quad(*func, d, (index[0], index[2]), zf, pass, write);
             }
             *self.passed = self.passed.wrapping_add(u64::from(pass.count_ones()));
             return (pass, index, true);
@@ -867,6 +849,121 @@ fn blend_pair(old: [[u8; 4]; 2], new: [[u8; 4]; 2], bits: u8) -> [[u8; 4]; 2] {
     [[a, b, c, d], [e, f, g, h]]
 }
 
+/// The depth test of the lanes `lanes` of a quad whose stored depths are
+/// the pixel pairs `d[r0..r0 + 2]` and `d[r1..r1 + 2]` (its rows), against
+/// its fixed-point depths `zf`: the lanes that pass, whose new depths are
+/// stored when `write`. (Other pixels are stored unchanged: no branch on
+/// coverage patterns, which do not predict.) On x86-64 in SSE2 registers
+/// (integer operations: the same results).
+#[inline(always)]
+fn depth_quad(
+    func: CompareFunc,
+    d: &mut [u32],
+    (r0, r1): (usize, usize),
+    zf: [u32; 4],
+    lanes: u8,
+    write: bool,
+) -> u8 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::*;
+        let Some((stored, pass)) = depth_quad_mask(func, d, (r0, r1), zf) else {
+            return 0;
+        };
+        let pass = pass & lanes & 0xf;
+        if write {
+            // SAFETY: SSE2 is part of the x86-64 baseline; the stores are
+            // of the two pairs `depth_quad_mask` found in bounds.
+            unsafe {
+                let new = _mm_loadu_si128(zf.as_ptr().cast());
+                // Lane k all ones when bit k of `pass` is set.
+                let lane_bits = _mm_setr_epi32(1, 2, 4, 8);
+                let bits = _mm_and_si128(_mm_set1_epi32(i32::from(pass)), lane_bits);
+                let on = _mm_cmpeq_epi32(bits, lane_bits);
+                let v = _mm_or_si128(_mm_and_si128(on, new), _mm_andnot_si128(on, stored));
+                _mm_storel_epi64(d.as_mut_ptr().add(r0).cast(), v);
+                _mm_storel_epi64(d.as_mut_ptr().add(r1).cast(), _mm_unpackhi_epi64(v, v));
+            }
+        }
+        pass
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    depth_quad_portable(func, d, (r0, r1), zf, lanes, write)
+}
+
+/// The stored depths of a quad (rows `d[r0..r0 + 2]`, `d[r1..r1 + 2]`)
+/// in one register and the pixels `func` passes against `zf` (bits 0–3);
+/// `None` when a row is out of `d`.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn depth_quad_mask(
+    func: CompareFunc,
+    d: &[u32],
+    (r0, r1): (usize, usize),
+    zf: [u32; 4],
+) -> Option<(std::arch::x86_64::__m128i, u8)> {
+    use std::arch::x86_64::*;
+    d.get(r0..r0 + 2)?;
+    d.get(r1..r1 + 2)?;
+    // SAFETY: SSE2 is part of the x86-64 baseline; the loads are of the
+    // two pairs just found in bounds.
+    unsafe {
+        let row = |r: usize| _mm_loadl_epi64(d.as_ptr().add(r).cast());
+        let stored = _mm_unpacklo_epi64(row(r0), row(r1));
+        let new = _mm_loadu_si128(zf.as_ptr().cast());
+        // Unsigned order as signed order of the values less 2^31.
+        let bias = _mm_set1_epi32(i32::MIN);
+        let (a, b) = (_mm_xor_si128(new, bias), _mm_xor_si128(stored, bias));
+        let ones = _mm_set1_epi32(-1);
+        let m = match func {
+            CompareFunc::Never => _mm_setzero_si128(),
+            CompareFunc::Less => _mm_cmplt_epi32(a, b),
+            CompareFunc::Equal => _mm_cmpeq_epi32(a, b),
+            CompareFunc::LessEqual => _mm_xor_si128(_mm_cmpgt_epi32(a, b), ones),
+            CompareFunc::Greater => _mm_cmpgt_epi32(a, b),
+            CompareFunc::NotEqual => _mm_xor_si128(_mm_cmpeq_epi32(a, b), ones),
+            CompareFunc::GreaterEqual => _mm_xor_si128(_mm_cmplt_epi32(a, b), ones),
+            CompareFunc::Always => ones,
+        };
+        Some((stored, _mm_movemask_ps(_mm_castsi128_ps(m)) as u8))
+    }
+}
+
+/// [`depth_quad`] without vector registers (other targets; the tests
+/// compare the two).
+#[cfg_attr(target_arch = "x86_64", allow(dead_code))]
+fn depth_quad_portable(
+    func: CompareFunc,
+    d: &mut [u32],
+    (r0, r1): (usize, usize),
+    zf: [u32; 4],
+    lanes: u8,
+    write: bool,
+) -> u8 {
+    let (Some(&[s0, s1]), Some(&[s2, s3])) = (d.get(r0..r0 + 2), d.get(r1..r1 + 2)) else {
+        return 0;
+    };
+    {
+        let stored = [s0, s1, s2, s3];
+        let pass = lanes & 0xf & depth_pass_mask(func, zf, stored);
+        if write {
+            let zf = zf.map(u32::to_ne_bytes);
+            let stored = stored.map(u32::to_ne_bytes);
+            for (r, at) in [r0, r1].into_iter().enumerate() {
+                if let Some([d0, d1]) = d.get_mut(at..at + 2) {
+                    let [n0, n1] = blend_pair(
+                        [stored[2 * r], stored[2 * r + 1]],
+                        [zf[2 * r], zf[2 * r + 1]],
+                        pass >> (2 * r),
+                    );
+                    [*d0, *d1] = [u32::from_ne_bytes(n0), u32::from_ne_bytes(n1)];
+                }
+            }
+        }
+        pass
+    }
+}
+
 /// The lanes of `live` of the quad at (lx, ly) of a `w`×`h` depth buffer
 /// `depth` (pixel `k` at `(lx + (k & 1), ly + (k >> 1))`, fixed-point
 /// depth `zf[k]`) that `func` does not reject against the stored depths;
@@ -884,10 +981,16 @@ pub(crate) fn depth_live_in(
     let (w, h) = (w as i64, h as i64);
     if lx >= 0 && ly >= 0 && lx + 1 < w && ly + 1 < h {
         let i0 = (ly * w + lx) as usize;
-        let index = [i0, i0 + 1, i0 + w as usize, i0 + w as usize + 1];
-        if let Some(last) = depth.get(..=index[3]) {
-            let stored = index.map(|i| last[i]);
-            return live & depth_pass_mask(func, zf, stored);
+        let rows = (i0, i0 + w as usize);
+        #[cfg(target_arch = "x86_64")]
+        if let Some((_, pass)) = depth_quad_mask(func, depth, rows, zf) {
+            return live & pass;
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        if let (Some(&[s0, s1]), Some(&[s2, s3])) =
+            (depth.get(rows.0..rows.0 + 2), depth.get(rows.1..rows.1 + 2))
+        {
+            return live & depth_pass_mask(func, zf, [s0, s1, s2, s3]);
         }
     }
     let mut live = live;
@@ -1397,6 +1500,55 @@ mod tests {
                 assert_eq!(got, want, "round {round}, over {over}, {isa:?}");
             }
         }
+    }
+
+    #[test]
+    fn whole_quad_depth_test_matches_the_portable_one() {
+        let funcs = [
+            CompareFunc::Never,
+            CompareFunc::Less,
+            CompareFunc::Equal,
+            CompareFunc::LessEqual,
+            CompareFunc::Greater,
+            CompareFunc::NotEqual,
+            CompareFunc::GreaterEqual,
+            CompareFunc::Always,
+        ];
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        // Values near each other (equal ones included), and extremes.
+        let mut value = |r: u64| match r % 4 {
+            0 => (next() % 8) as u32,
+            1 => u32::MAX - (next() % 4) as u32,
+            2 => 0x8000_0000 + (next() % 4) as u32 - 2,
+            _ => next() as u32 & 0x00ff_ffff,
+        };
+        for i in 0..50_000u64 {
+            let func = funcs[i as usize % funcs.len()];
+            let kind = i / 8;
+            let d: Vec<u32> = (0..12).map(|_| value(kind)).collect();
+            let zf: [u32; 4] = std::array::from_fn(|_| value(kind));
+            let lanes = (i % 16) as u8 | if i % 7 == 0 { 0xf0 } else { 0 };
+            let (r0, r1) = ((i % 3) as usize, 6 + (i % 4) as usize);
+            for write in [false, true] {
+                let (mut a, mut b) = (d.clone(), d.clone());
+                let pa = depth_quad(func, &mut a, (r0, r1), zf, lanes, write);
+                let pb = depth_quad_portable(func, &mut b, (r0, r1), zf, lanes, write);
+                assert_eq!((pa, &a), (pb, &b), "{func:?} {d:?} {zf:?} {lanes:#x}");
+            }
+        }
+        // Rows out of the buffer: nothing passes, nothing is written.
+        let mut d = vec![5u32; 4];
+        assert_eq!(
+            depth_quad(CompareFunc::Always, &mut d, (0, 3), [1; 4], 0xf, true),
+            0
+        );
+        assert_eq!(d, [5; 4]);
     }
 
     #[test]
