@@ -668,7 +668,7 @@ impl<'a> FragmentStage<'a> {
     /// [`FragmentStage::shade_batched`] compiled for AVX2 (the quad loop,
     /// early depth test and writes inlined: the same operations).
     #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
+    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt")]
     unsafe fn shade_batched_avx2<'p>(
         &self,
         fb: &mut Framebuffer,
@@ -682,7 +682,7 @@ impl<'a> FragmentStage<'a> {
 
     /// [`FragmentStage::shade_batched`] compiled for AVX-512.
     #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
+    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt,avx512f,avx512dq,avx512vl")]
     unsafe fn shade_batched_avx512<'p>(
         &self,
         fb: &mut Framebuffer,
@@ -999,7 +999,7 @@ impl<'a> FragmentStage<'a> {
             #[cfg(target_arch = "x86_64")]
             Isa::Avx2 | Isa::Avx512 => {
                 // SAFETY: `isa` is only Avx2 or Avx512 when the CPU has
-                // AVX2 (`simd::detect`).
+                // AVX2 and the bit-count instructions (`simd::detect`).
                 unsafe { self.fill_avx2(batch, pending, plan, packed) }
             }
             _ => self.fill_with(batch, pending, plan, packed),
@@ -1009,7 +1009,7 @@ impl<'a> FragmentStage<'a> {
     /// [`FragmentStage::fill`] compiled for AVX2 (the same operations:
     /// four pixels' f64 arithmetic in one register instead of two).
     #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
+    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt")]
     unsafe fn fill_avx2(
         &self,
         batch: &mut Batch,
@@ -1367,7 +1367,7 @@ impl<'a> FragmentStage<'a> {
     /// loops, depth tests and f64 quad set-up inlined: the same
     /// operations).
     #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
+    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt")]
     unsafe fn shade_deferred_avx2<'p>(
         &self,
         depth: &dyn ShaderStage,
@@ -1382,7 +1382,7 @@ impl<'a> FragmentStage<'a> {
 
     /// [`FragmentStage::shade_deferred`] compiled for AVX-512.
     #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
+    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt,avx512f,avx512dq,avx512vl")]
     unsafe fn shade_deferred_avx512<'p>(
         &self,
         depth: &dyn ShaderStage,

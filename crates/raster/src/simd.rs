@@ -1,6 +1,7 @@
 //! Which instruction set the fragment back end's hot loops are compiled
 //! for, chosen once per process from the CPU: the same Rust code built for
-//! the baseline target, for AVX2 or for AVX-512 (F/DQ/VL) through
+//! the baseline target, for AVX2 (with the bit-count instructions every
+//! AVX2 CPU has: POPCNT, BMI1, LZCNT) or for AVX-512 (F/DQ/VL) through
 //! `#[target_feature]` wrappers. Only plain IEEE operations are used (no
 //! fused multiply-add: Rust never contracts `a * b + c`), so every variant
 //! computes the same bits; tests compare them.
@@ -27,10 +28,15 @@ impl Isa {
         match self {
             Isa::Base => true,
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 => std::is_x86_feature_detected!("avx2"),
+            Isa::Avx2 => {
+                std::is_x86_feature_detected!("avx2")
+                    && std::is_x86_feature_detected!("popcnt")
+                    && std::is_x86_feature_detected!("bmi1")
+                    && std::is_x86_feature_detected!("lzcnt")
+            }
             #[cfg(target_arch = "x86_64")]
             Isa::Avx512 => {
-                std::is_x86_feature_detected!("avx2")
+                Isa::Avx2.supported()
                     && std::is_x86_feature_detected!("avx512f")
                     && std::is_x86_feature_detected!("avx512dq")
                     && std::is_x86_feature_detected!("avx512vl")
