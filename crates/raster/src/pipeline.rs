@@ -12,6 +12,7 @@ use crate::interpolate::{Plane, PrimPlanes};
 use crate::linkage::{FsLayout, VsLayout};
 use crate::rasterize::{max_depth_slope, snap, vertex_depths, PixelRect, Shape, WinVertex};
 use crate::shade::{new_batch, plane_origin, FragmentStage, Prim};
+use crate::simd::Isa;
 use crate::state::{CullFace, FrontFace, PipelineState, PolygonMode};
 use crate::workers::Workers;
 use crate::{DrawError, ShaderStage};
@@ -643,6 +644,7 @@ impl Setup<'_> {
     /// `out.planes`, flat-shaded colours constant at `provoking`'s,
     /// origin pixel `origin`; returns the primitive's own planes (window
     /// z, 1/w).
+    #[inline(always)]
     fn planes(
         &self,
         out: &mut Out,
@@ -672,6 +674,7 @@ impl Setup<'_> {
     /// Sets up `shape`, whose vertices are `win` (window positions) and
     /// `vertices` (their data).
     #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
     fn push(
         &self,
         out: &mut Out,
@@ -781,7 +784,26 @@ impl Setup<'_> {
         }
     }
 
+    /// Sets up a polygon (`vertices`, `provoking`: vertex numbers):
+    /// clipped, culled, offset, filled as triangles or outlined.
     fn polygon(&self, out: &mut Out, vertices: &[usize], provoking: usize) {
+        self.polygon_with(out, vertices, provoking)
+    }
+
+    /// [`Setup::polygon`] compiled for AVX2 with the bit-count
+    /// instructions (the set-up inlined into it: the same f64 operations,
+    /// none fused, so the same values).
+    ///
+    /// # Safety
+    /// The CPU must have those features ([`crate::simd::Isa::Avx2`]).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt")]
+    unsafe fn polygon_avx2(&self, out: &mut Out, vertices: &[usize], provoking: usize) {
+        self.polygon_with(out, vertices, provoking)
+    }
+
+    #[inline(always)]
+    fn polygon_with(&self, out: &mut Out, vertices: &[usize], provoking: usize) {
         // Line and point modes draw the unclipped polygon's edges/vertices.
         let filled_only = self.state.polygon_mode == [PolygonMode::Fill; 2];
         let prov = self.data(provoking);
@@ -844,6 +866,7 @@ impl Setup<'_> {
     /// polygon (`win`, its [`snap`] `fixed` and `data` per vertex, at
     /// least three; `original`: the unclipped polygon, for line and point
     /// modes).
+    #[inline(always)]
     fn set_up_polygon(
         &self,
         out: &mut Out,
@@ -1047,6 +1070,7 @@ pub(crate) fn draw_probed(
         SETUP_CHUNK
     };
     let chunks = n_prims.div_ceil(chunk);
+    let isa = crate::simd::detect();
     let parts = workers.map(chunks, 1, |c, _| {
         let first = c * chunk;
         let n = chunk.min(n_prims.saturating_sub(first));
@@ -1065,7 +1089,15 @@ pub(crate) fn draw_probed(
             if probe.is_none() {
                 if let Some((vs, n, prov)) = small_polygon(mode, k) {
                     let vs = vs.map(v);
-                    setup.polygon(&mut out, &vs[..n], v(prov));
+                    match isa {
+                        #[cfg(target_arch = "x86_64")]
+                        // SAFETY: `isa` is one of these only when the CPU
+                        // has their features (`simd::detect`).
+                        Isa::Avx2 | Isa::Avx512 => unsafe {
+                            setup.polygon_avx2(&mut out, &vs[..n], v(prov))
+                        },
+                        _ => setup.polygon(&mut out, &vs[..n], v(prov)),
+                    }
                     continue;
                 }
             }
