@@ -103,6 +103,7 @@ impl PrimPlanes {
     /// The planes of a primitive whose vertices have window z `z` and
     /// 1/w `inv_w` (a missing vertex repeats vertex 0), `basis` relative
     /// to its origin.
+    #[inline]
     pub fn new(basis: &Basis, z: [f64; 3], inv_w: [f64; 3]) -> PrimPlanes {
         let w = inv_w.map(f64::to_bits);
         PrimPlanes {

@@ -208,6 +208,7 @@ impl Shape {
     }
 
     /// Pixel bounds of the primitive (before clipping to the framebuffer).
+    #[inline]
     pub fn bounds(&self) -> PixelRect {
         match self {
             Shape::Triangle { p, .. } => {
@@ -338,6 +339,7 @@ impl Shape {
     /// area (so the barycentrics of the coverage's snapped vertices); for
     /// a line the parameter `t` of GL 2.1 eq. 3.1 of each pixel center
     /// (the projection onto the segment); zeros for a point.
+    #[inline]
     pub fn basis(&self, (x0, y0): (i64, i64)) -> Basis {
         match self {
             Shape::Triangle { p, sign } => {
