@@ -263,7 +263,7 @@ impl Plan {
                                 lane::exp(lane::mul(lane::neg(density), *x))
                             };
                         }
-                        V::load(&arg)
+                        V::flush(V::load(&arg))
                     }
                 };
                 let f = clamp01::<V>(f, zero, one);
@@ -278,8 +278,10 @@ impl Plan {
             let active = batch.active & FULL;
             let canonical = V::splat(f32::from_bits(0x7fc0_0000));
             for (k, ck) in c.iter().enumerate() {
-                // `lane::float_output`: NaN canonical, subnormals flushed.
-                let v = V::select(V::ordered(*ck, *ck), V::flush(*ck), canonical);
+                // `lane::float_output`: NaN canonical, subnormals flushed
+                // (every colour value here is a flushed input or result
+                // already: a flushed load, `clamp01`'s or `mix`'s).
+                let v = V::select(V::ordered(*ck, *ck), *ck, canonical);
                 let Some(dst) = batch.outputs.get_mut(self.out + k) else {
                     continue;
                 };
@@ -453,9 +455,12 @@ unsafe fn mix<V: Lanes16>(x: V::F, y: V::F, t: V::F) -> V::F {
     }
 }
 
-/// `lane::clamp(x, 0, 1)` on every lane (`zero`, `one`: those splatted):
-/// `lane::max(x, 0)` is 0 where `!(x >= 0)`, `lane::min(m, 1)` is 1 where
-/// `!(m <= 1)` (the bounds are not NaN), then the flush.
+/// `lane::clamp(x, 0, 1)` on every lane (`zero`, `one`: those splatted)
+/// of a flushed `x`: `lane::max(x, 0)` is 0 where `!(x >= 0)`,
+/// `lane::min(m, 1)` is 1 where `!(m <= 1)` (the bounds are not NaN).
+/// The result is one of x, 0 and 1, so flushed already: the clamp's
+/// flush has nothing to do (every caller's `x` is a flushed load or
+/// result).
 ///
 /// # Safety
 /// As for [`Plan::run_in`].
@@ -465,7 +470,7 @@ unsafe fn clamp01<V: Lanes16>(x: V::F, zero: V::F, one: V::F) -> V::F {
     // SAFETY: the caller's contract.
     unsafe {
         let m = V::select(V::lt_or_nan(x, zero), zero, x);
-        V::flush(V::select(V::gt_or_nan(m, one), one, m))
+        V::select(V::gt_or_nan(m, one), one, m)
     }
 }
 
