@@ -309,6 +309,17 @@ fn run_vertices(
                     None => vs.run(&mut batch, uniforms, textures)?,
                 },
             }
+            // Colours clamped over the lanes at once, then each vertex's
+            // outputs copied out.
+            if clamp_colors {
+                for &(o, n) in &layout.colors {
+                    for comp in batch.outputs.iter_mut().skip(o).take(n) {
+                        for v in comp.iter_mut() {
+                            *v = if *v > 0.0 { v.min(1.0) } else { 0.0 };
+                        }
+                    }
+                }
+            }
             let part = out.get_mut(c * LANES * stride..).unwrap_or_default();
             for (lane, vertex) in part
                 .chunks_exact_mut(stride.max(1))
@@ -317,13 +328,6 @@ fn run_vertices(
             {
                 for (dst, comp) in vertex.iter_mut().zip(&batch.outputs) {
                     *dst = comp[lane];
-                }
-                if clamp_colors {
-                    for &(o, n) in &layout.colors {
-                        for v in vertex.iter_mut().skip(o).take(n) {
-                            *v = if *v > 0.0 { v.min(1.0) } else { 0.0 };
-                        }
-                    }
                 }
             }
         }
