@@ -146,6 +146,7 @@ pub(crate) fn snap(w: &WinVertex) -> (i64, i64) {
     (to_fixed(w.x), to_fixed(w.y))
 }
 
+#[cfg(test)]
 fn intersect(a: PixelRect, b: PixelRect) -> PixelRect {
     (a.0.max(b.0), a.1.max(b.1), a.2.min(b.2), a.3.min(b.3))
 }
@@ -239,16 +240,28 @@ impl Shape {
     #[cfg(test)]
     pub fn quads(&self, clip: PixelRect) -> Vec<(i64, i64, u8)> {
         let mut out = Vec::new();
-        self.quads_into(clip, &mut out);
+        self.quads_into(self.area(clip), &mut out);
         out
     }
 
-    /// [`Shape::quads`] into `out` (cleared first), so that a caller can
-    /// reuse one buffer for every primitive.
+    /// The part of `clip` inside the primitive's bounds: an `area` the
+    /// rasterizing methods take (the tiles' callers pass a primitive's
+    /// clipped bounds inside the tile, one already: no intersection per
+    /// tile).
+    #[cfg(test)]
+    pub fn area(&self, clip: PixelRect) -> PixelRect {
+        intersect(self.bounds(), clip)
+    }
+
+    /// The covered quads inside `area` (half-open, inside the primitive's
+    /// bounds, e.g. its clipped bounds inside a tile), `(qx, qy, mask)`
+    /// with mask bit `(y - qy) * 2 + (x - qx)`, quads in row-major order,
+    /// into `out` (cleared first), so that a caller can reuse one buffer
+    /// for every primitive.
     #[inline(always)]
-    pub fn quads_into(&self, clip: PixelRect, out: &mut Vec<(i64, i64, u8)>) {
+    pub fn quads_into(&self, area: PixelRect, out: &mut Vec<(i64, i64, u8)>) {
         out.clear();
-        let r = intersect(self.bounds(), clip);
+        let r = area;
         if r.0 >= r.2 || r.1 >= r.3 {
             return;
         }
@@ -368,20 +381,21 @@ impl Shape {
         }
     }
 
-    /// The covered quads inside `clip` in [`Shape::quads_into`]'s order:
-    /// `f(qx, qy, mask)`. Triangles without a list in between (from the
-    /// coverage walk itself); the other shapes go through `quads`.
+    /// The covered quads inside `area` (see [`Shape::quads_into`]) in
+    /// its order: `f(qx, qy, mask)`. Triangles without a list in between
+    /// (from the coverage walk itself); the other shapes go through
+    /// `quads`.
     #[inline(always)]
     pub fn quads_each(
         &self,
-        clip: PixelRect,
+        area: PixelRect,
         quads: &mut Vec<(i64, i64, u8)>,
         mut f: impl FnMut(i64, i64, u8),
     ) {
         match self {
-            Shape::Triangle { p, sign, .. } => self.walk_in(
+            Shape::Triangle { p, sign, .. } => walk_in(
                 (p, *sign),
-                clip,
+                area,
                 #[inline(always)]
                 |qx, qy, mask, _| {
                     if mask != 0 {
@@ -391,7 +405,7 @@ impl Shape {
                 },
             ),
             _ => {
-                self.quads_into(clip, quads);
+                self.quads_into(area, quads);
                 for &(qx, qy, mask) in quads.iter() {
                     f(qx, qy, mask);
                 }
@@ -401,18 +415,18 @@ impl Shape {
 
     /// [`Shape::quads_into`], and with `strips` a triangle's four whole
     /// quads side by side (each quad's pixels covered and inside the
-    /// clip) from where the walk meets them as one entry: the first
+    /// area) from where the walk meets them as one entry: the first
     /// quad's position with mask `STRIP | 0xf` (a strip's entry is
     /// followed by the quad after its fourth).
     #[inline(always)]
-    pub fn quads_into_strips(&self, clip: PixelRect, out: &mut Vec<(i64, i64, u8)>, strips: bool) {
+    pub fn quads_into_strips(&self, area: PixelRect, out: &mut Vec<(i64, i64, u8)>, strips: bool) {
         let (true, Shape::Triangle { p, sign, .. }) = (strips, self) else {
-            return self.quads_into(clip, out);
+            return self.quads_into(area, out);
         };
         out.clear();
-        self.walk_in(
+        walk_in(
             (p, *sign),
-            clip,
+            area,
             #[inline(always)]
             |qx, qy, mask, walk| {
                 if mask == 0xf && walk.whole_ahead(4) {
@@ -425,21 +439,6 @@ impl Shape {
                 0
             },
         );
-    }
-
-    /// [`triangle_quads_each`] of this shape's triangle `(p, sign)` over
-    /// its bounds inside `clip` (nothing when they do not meet).
-    #[inline(always)]
-    fn walk_in(
-        &self,
-        (p, sign): (&[(i64, i64); 3], i64),
-        clip: PixelRect,
-        f: impl FnMut(i64, i64, u8, &WalkQuad) -> i64,
-    ) {
-        let r = intersect(self.bounds(), clip);
-        if r.0 < r.2 && r.1 < r.3 {
-            triangle_quads_each(p, sign, r, f);
-        }
     }
 
     /// GL 2.1 eq. 3.3/3.4: gl_PointCoord at pixel (x, y) (zeros for
@@ -514,6 +513,20 @@ fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i
         },
     );
     out.truncate(n);
+}
+
+/// [`triangle_quads_each`] of a triangle `(p, sign)` over `area` (inside
+/// its bounds; nothing when empty).
+#[inline(always)]
+fn walk_in(
+    (p, sign): (&[(i64, i64); 3], i64),
+    area: PixelRect,
+    f: impl FnMut(i64, i64, u8, &WalkQuad) -> i64,
+) {
+    let r = area;
+    if r.0 < r.2 && r.1 < r.3 {
+        triangle_quads_each(p, sign, r, f);
+    }
 }
 
 /// Visits the quads of a triangle inside `r` (non-empty, within the
@@ -787,7 +800,7 @@ mod tests {
             let clip = (qx - 6, qy - 6, qx + 10, qy + 8);
             let mut quads = Vec::new();
             let mut got = Vec::new();
-            t.quads_each(clip, &mut quads, |x, y, m| got.push((x, y, m)));
+            t.quads_each(t.area(clip), &mut quads, |x, y, m| got.push((x, y, m)));
             assert_eq!(got, t.quads(clip), "{v:?}");
             seen += got.len();
         }
@@ -802,7 +815,7 @@ mod tests {
         for (v, t, qx, qy) in random_triangles(0x0DDB_1A5E_5BAD_5EED, 2000) {
             let clip = (qx - 40, qy - 30, qx + 64, qy + 64);
             let mut list = Vec::new();
-            t.quads_into_strips(clip, &mut list, true);
+            t.quads_into_strips(t.area(clip), &mut list, true);
             let mut expanded = Vec::new();
             for &(x, y, m) in &list {
                 if m & STRIP != 0 {

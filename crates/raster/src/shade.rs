@@ -1769,7 +1769,8 @@ fn prefetch<T>(data: &[T]) {
     let _ = data;
 }
 
-/// `prim`'s bounds inside `tile`.
+/// `prim`'s bounds inside `tile` (an area of its shape:
+/// `Shape::area`).
 fn clip_to(prim: &Prim, tile: PixelRect) -> PixelRect {
     (
         prim.bounds.0.max(tile.0),
