@@ -596,8 +596,11 @@ fn triangle_quads_each(
             };
             // The caller's quads to pass over (whole ones it took at once),
             // at most the rest of the row.
-            let skip = f(qx, qy, mask, &walk).clamp(0, (r.2 - qx) / 2);
+            let skip = f(qx, qy, mask, &walk);
             if skip > 0 {
+                // (Checked first: callers that never skip compile none of
+                // this.)
+                let skip = skip.min((r.2 - qx) / 2);
                 for (o, &a) in over.iter_mut().zip(&a) {
                     *o = o.add(Quad4::splat(2 * a * skip));
                 }
