@@ -446,7 +446,7 @@ pub(crate) struct Corner {
 const CORNER_REUSE: usize = 2;
 
 /// Where set-up primitives go: the primitives of one chunk, their
-/// fragment varyings' planes ([`Prim::attrs`] indexes `planes`), and the index of
+/// fragment varyings' planes (`Prim::index` × links locates a primitive's in `planes`), and the index of
 /// the assembled primitive being set up.
 struct Out {
     prims: Vec<Prim>,

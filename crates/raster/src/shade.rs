@@ -316,7 +316,7 @@ pub(crate) struct FragmentStage<'a> {
     pub layout: &'a FsLayout,
     pub state: &'a PipelineState,
     /// The planes of the fragment varyings of every primitive, per
-    /// set-up chunk ([`Prim::attrs`]).
+    /// set-up chunk (see [`Prim::index`]).
     pub attrs: Vec<&'a [Plane]>,
     /// The varying components the shader reads (unread inputs stay zero;
     /// every link counts as read under the debugger's probe, which shows
