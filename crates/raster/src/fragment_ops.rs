@@ -929,6 +929,18 @@ fn depth_quad_mask(
     }
 }
 
+/// The stored depths of a quad whose rows are the pixel pairs
+/// `d[r0..r0 + 2]` and `d[r1..r1 + 2]` (pixel order); `None` when a row
+/// is out of `d`.
+#[cfg_attr(target_arch = "x86_64", allow(dead_code))]
+#[inline(always)]
+fn quad_stored(d: &[u32], (r0, r1): (usize, usize)) -> Option<[u32; 4]> {
+    match (d.get(r0..r0 + 2), d.get(r1..r1 + 2)) {
+        (Some(&[s0, s1]), Some(&[s2, s3])) => Some([s0, s1, s2, s3]),
+        _ => None,
+    }
+}
+
 /// [`depth_quad`] without vector registers (other targets; the tests
 /// compare the two).
 #[cfg_attr(target_arch = "x86_64", allow(dead_code))]
@@ -940,28 +952,25 @@ fn depth_quad_portable(
     lanes: u8,
     write: bool,
 ) -> u8 {
-    let (Some(&[s0, s1]), Some(&[s2, s3])) = (d.get(r0..r0 + 2), d.get(r1..r1 + 2)) else {
+    let Some(stored) = quad_stored(d, (r0, r1)) else {
         return 0;
     };
-    {
-        let stored = [s0, s1, s2, s3];
-        let pass = lanes & 0xf & depth_pass_mask(func, zf, stored);
-        if write {
-            let zf = zf.map(u32::to_ne_bytes);
-            let stored = stored.map(u32::to_ne_bytes);
-            for (r, at) in [r0, r1].into_iter().enumerate() {
-                if let Some([d0, d1]) = d.get_mut(at..at + 2) {
-                    let [n0, n1] = blend_pair(
-                        [stored[2 * r], stored[2 * r + 1]],
-                        [zf[2 * r], zf[2 * r + 1]],
-                        pass >> (2 * r),
-                    );
-                    [*d0, *d1] = [u32::from_ne_bytes(n0), u32::from_ne_bytes(n1)];
-                }
+    let pass = lanes & 0xf & depth_pass_mask(func, zf, stored);
+    if write {
+        let zf = zf.map(u32::to_ne_bytes);
+        let stored = stored.map(u32::to_ne_bytes);
+        for (r, at) in [r0, r1].into_iter().enumerate() {
+            if let Some([d0, d1]) = d.get_mut(at..at + 2) {
+                let [n0, n1] = blend_pair(
+                    [stored[2 * r], stored[2 * r + 1]],
+                    [zf[2 * r], zf[2 * r + 1]],
+                    pass >> (2 * r),
+                );
+                [*d0, *d1] = [u32::from_ne_bytes(n0), u32::from_ne_bytes(n1)];
             }
         }
-        pass
     }
+    pass
 }
 
 /// The lanes of `live` of the quad at (lx, ly) of a `w`×`h` depth buffer
@@ -987,10 +996,8 @@ pub(crate) fn depth_live_in(
             return live & pass;
         }
         #[cfg(not(target_arch = "x86_64"))]
-        if let (Some(&[s0, s1]), Some(&[s2, s3])) =
-            (depth.get(rows.0..rows.0 + 2), depth.get(rows.1..rows.1 + 2))
-        {
-            return live & depth_pass_mask(func, zf, [s0, s1, s2, s3]);
+        if let Some(stored) = quad_stored(depth, rows) {
+            return live & depth_pass_mask(func, zf, stored);
         }
     }
     let mut live = live;

@@ -901,10 +901,16 @@ impl Setup<'_> {
             PolygonMode::Line => po.line,
             PolygonMode::Point => po.point,
         };
+        // Fan triangle i (vertices 0, i, i + 1), from the snapped
+        // positions; `None` when it has no area.
+        let fan = |i: usize| {
+            let corner = |j: usize| fixed.get(j).copied().unwrap_or_default();
+            Shape::triangle_snapped([corner(0), corner(i), corner(i + 1)])
+        };
         let z_offset = if offset_on {
             // §3.5.5: o = m · factor + r · units.
             let m = (1..win.len() - 1)
-                .find(|&i| Shape::triangle([win[0], win[i], win[i + 1]]).is_some())
+                .find(|&i| fan(i).is_some())
                 .map_or(0.0, |i| max_depth_slope(&[win[0], win[i], win[i + 1]]));
             m * po.factor as f64 + po.units as f64 / crate::framebuffer::DEPTH_MAX as f64
         } else {
@@ -913,9 +919,7 @@ impl Setup<'_> {
         match mode {
             PolygonMode::Fill => {
                 for i in 1..win.len() - 1 {
-                    let corner = |j: usize| fixed.get(j).copied().unwrap_or_default();
-                    let p = [corner(0), corner(i), corner(i + 1)];
-                    let Some(shape) = Shape::triangle_snapped(p) else {
+                    let Some(shape) = fan(i) else {
                         continue;
                     };
                     let tri = [win[0], win[i], win[i + 1]];

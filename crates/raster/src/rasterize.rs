@@ -152,7 +152,9 @@ fn intersect(a: PixelRect, b: PixelRect) -> PixelRect {
 }
 
 impl Shape {
-    /// A triangle; `None` when it has no area after snapping.
+    /// A triangle; `None` when it has no area after snapping (set-up
+    /// snaps its vertices once: [`Shape::triangle_snapped`]).
+    #[cfg(test)]
     pub fn triangle(v: [WinVertex; 3]) -> Option<Shape> {
         Shape::triangle_snapped(v.map(|w| snap(&w)))
     }
@@ -261,13 +263,12 @@ impl Shape {
     #[inline(always)]
     pub fn quads_into(&self, area: PixelRect, out: &mut Vec<(i64, i64, u8)>) {
         out.clear();
-        let r = area;
-        if r.0 >= r.2 || r.1 >= r.3 {
+        if area.0 >= area.2 || area.1 >= area.3 {
             return;
         }
         match self {
-            Shape::Triangle { p, sign, .. } => triangle_quads(p, *sign, r, out),
-            _ => self.other_quads_into(r, out),
+            Shape::Triangle { p, sign, .. } => triangle_quads(p, *sign, area, out),
+            _ => self.other_quads_into(area, out),
         }
     }
 
@@ -523,9 +524,8 @@ fn walk_in(
     area: PixelRect,
     f: impl FnMut(i64, i64, u8, &WalkQuad) -> i64,
 ) {
-    let r = area;
-    if r.0 < r.2 && r.1 < r.3 {
-        triangle_quads_each(p, sign, r, f);
+    if area.0 < area.2 && area.1 < area.3 {
+        triangle_quads_each(p, sign, area, f);
     }
 }
 
