@@ -531,7 +531,9 @@ fn walk_in(
 
 /// Visits the quads of a triangle inside `r` (non-empty, within the
 /// primitive's bounds), row-major: `f(qx, qy, mask, walk)` with the pixels
-/// covered (mask bit `(y - qy) * 2 + (x - qx)`, possibly none), returning
+/// covered (mask bit `(y - qy) * 2 + (x - qx)`, possibly none; the quads
+/// a row starts with that lie wholly outside an edge are not visited),
+/// returning
 /// how many of the following quads to pass over (see [`WalkQuad`]). Each edge is
 /// the integer linear form `s(x, y) = a·x + b·y + c` (the orientation
 /// times [`edge`] at the pixel center), stepped by additions; a pixel is
@@ -564,7 +566,8 @@ fn triangle_quads_each(
     // Pixel i of a quad from its first: (i & 1, i >> 1).
     let offset: [[i64; 4]; 3] = std::array::from_fn(|k| [0, a[k], b[k], a[k] + b[k]]);
     let step: [Quad4; 3] = std::array::from_fn(|k| Quad4::splat(2 * a[k]));
-    // The edges that only decrease to the right (bit k).
+    // The edges that only decrease to the right (bit k); the others
+    // grow.
     let decreasing = (0..3).fold(0u8, |m, k| m | (u8::from(a[k] <= 0) << k));
     let (x0, y0) = (r.0 & !1, r.1 & !1);
     let mut qy = y0;
@@ -576,6 +579,20 @@ fn triangle_quads_each(
             Quad4::new(offset[k].map(|o| g + o))
         });
         let mut qx = x0;
+        // In wide areas, the quads the row starts with that lie wholly
+        // outside a growing edge are passed over at once (quads that
+        // cover nothing; narrow areas have few, not worth the look).
+        let ahead = match r.2 - x0 >= WIDE_ROW {
+            true => row_start(&over, &a, !decreasing & 0b111),
+            false => 0,
+        };
+        if ahead > 0 {
+            let ahead = ahead.min((r.2 - qx + 1) / 2);
+            for (o, &a) in over.iter_mut().zip(&a) {
+                *o = o.add(Quad4::splat(2 * a * ahead));
+            }
+            qx += 2 * ahead;
+        }
         while qx < r.2 {
             let cols =
                 (if qx >= r.0 { 0b0101u8 } else { 0 }) | (if qx + 1 < r.2 { 0b1010 } else { 0 });
@@ -613,6 +630,33 @@ fn triangle_quads_each(
         }
         qy += 2;
     }
+}
+
+/// The width in pixels from which [`triangle_quads_each`] looks for the
+/// quads a row starts with that cover nothing ([`row_start`]).
+const WIDE_ROW: i64 = 16;
+
+/// How many quads from the one whose edge values (less thresholds) are
+/// `over` lie wholly outside one of the `growing` edges (bit k: `a[k] >
+/// 0`): quad j further right is outside edge k while its largest value
+/// plus `2·a[k]·j` is negative, that is for j < ⌈−top / (2·a[k])⌉.
+#[inline(always)]
+fn row_start(over: &[Quad4; 3], a: &[i64; 3], growing: u8) -> i64 {
+    let mut ahead = 0i64;
+    for k in 0..3 {
+        if growing & (1 << k) == 0 {
+            continue;
+        }
+        let (Some(o), Some(&a)) = (over.get(k), a.get(k)) else {
+            continue;
+        };
+        let top = o.to_array().into_iter().max().unwrap_or(0);
+        if top < 0 && a > 0 {
+            let step = 2 * a;
+            ahead = ahead.max((step - 1 - top) / step);
+        }
+    }
+    ahead
 }
 
 /// A quad of [`triangle_quads_each`]'s walk, for a caller that takes
