@@ -337,7 +337,7 @@ pub struct TextureUnit {
 }
 
 /// All texture units; samples for the exec crate.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct TextureUnits {
     pub units: Vec<TextureUnit>,
     /// What the fast path of 2D lookups finds out about each unit's 2D
@@ -346,6 +346,10 @@ pub struct TextureUnits {
     /// entry holds the texture it describes and is used only for that
     /// texture (`units` may change after it is filled).
     pub(crate) checked_2d: std::sync::OnceLock<Vec<Option<crate::texture_2d::Checked>>>,
+    /// The instruction set the fast path of 2D lookups runs in (the
+    /// executor's, `texture_2d::Isa::current`), found once per set of
+    /// units rather than per lookup.
+    pub(crate) isa: crate::texture_2d::Isa,
 }
 
 impl TextureUnits {
@@ -354,7 +358,15 @@ impl TextureUnits {
         TextureUnits {
             units,
             checked_2d: std::sync::OnceLock::new(),
+            isa: crate::texture_2d::Isa::current(),
         }
+    }
+}
+
+impl Default for TextureUnits {
+    /// No units.
+    fn default() -> TextureUnits {
+        TextureUnits::new(Vec::new())
     }
 }
 
@@ -362,7 +374,7 @@ pub(crate) const MISSING: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
 
 impl Textures for TextureUnits {
     fn sample(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]) {
-        if !crate::texture_2d::sample(self, req, out) {
+        if !crate::texture_2d::sample_with(self.isa, self, req, out) {
             self.sample_general(req, out);
         }
     }
@@ -374,7 +386,7 @@ impl Textures for TextureUnits {
         mask: u32,
         out: &mut [[f32; LANES]; 4],
     ) {
-        if !crate::texture_2d::sample_implicit(self, unit, st, mask, out) {
+        if !crate::texture_2d::sample_implicit_with(self.isa, self, unit, st, mask, out) {
             self.sample(&exec::implicit_2d_request(unit, st, mask), out);
         }
     }
@@ -1256,13 +1268,10 @@ mod tests {
         assert_eq!(tex.last_level(), None, "mipmaps missing");
         tex.min_filter = MinFilter::Linear;
         assert_eq!(tex.last_level(), Some(0));
-        let units = TextureUnits {
-            checked_2d: Default::default(),
-            units: vec![TextureUnit {
+        let units = TextureUnits::new(vec![TextureUnit {
                 tex_2d: Some(Arc::new(ramp(8, 8, 2))),
                 ..TextureUnit::default()
-            }],
-        };
+            }]);
         let req = SampleRequest {
             unit: [0; LANES],
             target: SamplerKind::Sampler2D,

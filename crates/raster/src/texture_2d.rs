@@ -41,7 +41,7 @@
 //!
 //! `exec::Textures::sample_2d_implicit` (the fixed-function stage's
 //! lookups: s and t, derivatives their quad differences, no bias) enters
-//! here without a `SampleRequest` ([`sample_implicit`]); the results are
+//! here without a `SampleRequest` ([`sample_implicit_with`]); the results are
 //! the request's (tested).
 
 use crate::ex::{Lod, SampleRequest, LANES};
@@ -90,7 +90,7 @@ impl Isa {
     /// The instruction set of the executor's variant
     /// (`exec::kernel_variant`, `SHADERBOX_KERNEL`); for the native-code
     /// executor, the fastest one this CPU supports.
-    fn current() -> Isa {
+    pub(crate) fn current() -> Isa {
         match exec::kernel_variant() {
             exec::Variant::Portable => Isa::Portable,
             exec::Variant::Avx2 => Isa::Avx2,
@@ -110,18 +110,12 @@ impl Isa {
 
 /// Samples `req` through the fast path when it applies (see the module
 /// documentation) and returns true; false leaves `out` untouched. The
-/// code is compiled for several instruction sets, the executor's chosen
-/// at run time ([`Isa::current`]); all compute the same IEEE operations
-/// (Rust never fuses a multiply and an add), so the same bits.
-pub(crate) fn sample(
-    units: &TextureUnits,
-    req: &SampleRequest,
-    out: &mut [[f32; LANES]; 4],
-) -> bool {
-    sample_with(Isa::current(), units, req, out)
-}
-
-/// [`sample`] compiled for `isa` (the baseline one when the CPU lacks it).
+/// code is compiled for several instruction sets, `isa` chosen at run
+/// time (the executor's, [`Isa::current`], which `TextureUnits` finds
+/// once; the baseline one when the CPU lacks it); all compute the same
+/// IEEE operations (Rust never fuses a multiply and an add), so the same
+/// bits.
+#[inline]
 pub(crate) fn sample_with(
     isa: Isa,
     units: &TextureUnits,
@@ -136,23 +130,13 @@ pub(crate) fn sample_with(
 
 /// The 2D lookup of unit `unit` on the lanes `mask` at (s, t), the
 /// implicit LOD from the quad differences of s and t
-/// ([`exec::lane::quad_diffs`]) with no bias: what [`sample`] gives the
+/// ([`exec::lane::quad_diffs`]) with no bias, compiled for `isa` (the
+/// baseline one when the CPU lacks it): what [`sample_with`] gives the
 /// request `exec::Textures::sample_2d_implicit` describes, without the
 /// request (false, with nothing written, when the fast path does not
 /// apply).
-pub(crate) fn sample_implicit(
-    units: &TextureUnits,
-    unit: u32,
-    st: [&[f32; LANES]; 2],
-    mask: u32,
-    out: &mut [[f32; LANES]; 4],
-) -> bool {
-    sample_implicit_with(Isa::current(), units, unit, st, mask, out)
-}
-
-/// [`sample_implicit`] compiled for `isa` (the baseline one when the CPU
-/// lacks it).
-fn sample_implicit_with(
+#[inline]
+pub(crate) fn sample_implicit_with(
     isa: Isa,
     units: &TextureUnits,
     unit: u32,
@@ -1431,17 +1415,14 @@ mod tests {
                     tex.base_level = (k % 2).min(tex.levels.len() - 1) as u32;
                     tex.min_lod = -2.0 + k as f32 * 0.1;
                     tex.max_lod = if k % 3 == 2 { 1.5 } else { 1000.0 };
-                    let units = TextureUnits {
-                        checked_2d: Default::default(),
-                        units: vec![
+                    let units = TextureUnits::new(vec![
                             TextureUnit::default(),
                             TextureUnit {
                                 tex_2d: Some(Arc::new(tex)),
                                 lod_bias: -0.5,
                                 ..TextureUnit::default()
                             },
-                        ],
-                    };
+                        ]);
                     for round in 0..40 {
                         let mut coord = [[0.0; LANES]; 4];
                         let mut ddx = [[0.0; LANES]; 3];
@@ -1748,7 +1729,7 @@ mod tests {
             units.units[0].tex_2d = Some(Arc::new(tex));
             let slow = general(&units, &req);
             let mut fast = [[0.0; LANES]; 4];
-            if sample(&units, &req, &mut fast) {
+            if sample_with(Isa::current(), &units, &req, &mut fast) {
                 assert_eq!(
                     fast.map(|c| c.map(f32::to_bits)),
                     slow.map(|c| c.map(f32::to_bits))
@@ -1811,35 +1792,32 @@ mod tests {
             lod: Lod::Explicit([0.0; LANES]),
             mask: 0b1111,
         };
-        let units = |tex: Texture| TextureUnits {
-            checked_2d: Default::default(),
-            units: vec![TextureUnit {
+        let units = |tex: Texture| TextureUnits::new(vec![TextureUnit {
                 tex_2d: Some(Arc::new(tex)),
                 ..TextureUnit::default()
-            }],
-        };
+            }]);
         let mut out = [[0.0; LANES]; 4];
-        assert!(sample(&units(tex.clone()), &req([0; LANES]), &mut out));
+        assert!(sample_with(Isa::current(), &units(tex.clone()), &req([0; LANES]), &mut out));
         // Two units in one request.
         let mut two = [0; LANES];
         two[2] = 1;
-        assert!(!sample(&units(tex.clone()), &req(two), &mut out));
+        assert!(!sample_with(Isa::current(), &units(tex.clone()), &req(two), &mut out));
         // ... unless the other unit's lane is masked off.
         let masked = SampleRequest {
             mask: 0b1011,
             ..req(two)
         };
-        assert!(sample(&units(tex.clone()), &masked, &mut out));
+        assert!(sample_with(Isa::current(), &units(tex.clone()), &masked, &mut out));
         // Border wrapping, depth textures, incomplete textures.
         let mut border = tex.clone();
         border.wrap[1] = Wrap::ClampToBorder;
-        assert!(!sample(&units(border), &req([0; LANES]), &mut out));
+        assert!(!sample_with(Isa::current(), &units(border), &req([0; LANES]), &mut out));
         let mut depth = tex.clone();
         depth.depth_format = true;
-        assert!(!sample(&units(depth), &req([0; LANES]), &mut out));
+        assert!(!sample_with(Isa::current(), &units(depth), &req([0; LANES]), &mut out));
         let mut incomplete = tex;
         incomplete.levels.truncate(1);
-        assert!(!sample(&units(incomplete), &req([0; LANES]), &mut out));
+        assert!(!sample_with(Isa::current(), &units(incomplete), &req([0; LANES]), &mut out));
     }
 }
 
@@ -1913,13 +1891,10 @@ mod bench {
             let mut tex = tex.clone();
             tex.min_filter = min_filter;
             tex.mag_filter = mag_filter;
-            let units = TextureUnits {
-                checked_2d: Default::default(),
-                units: vec![TextureUnit {
+            let units = TextureUnits::new(vec![TextureUnit {
                     tex_2d: Some(Arc::new(tex)),
                     ..TextureUnit::default()
-                }],
-            };
+                }]);
             println!("{min_filter:?}, {mag_filter:?}:");
             time_lookups(&units, &reqs);
         }
