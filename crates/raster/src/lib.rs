@@ -283,6 +283,14 @@ pub trait ShaderStage: Sync {
         false
     }
 
+    /// Whether every run writes every output component on every active
+    /// lane and discards none: the fragment stage then need not clear a
+    /// batch's outputs before it (outputs a shader leaves unwritten read
+    /// 0). `false` (the default): they are cleared.
+    fn writes_every_output(&self) -> bool {
+        false
+    }
+
     /// Whether each lane's outputs and discard depend only on its own
     /// inputs (no derivatives or other quad-wide operations; see
     /// `exec::Kernel::lanes_independent`): the fragment stage may then

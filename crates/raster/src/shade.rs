@@ -353,6 +353,10 @@ pub(crate) struct FragmentStage<'a> {
     /// gl_FrontFacing or gl_PointCoord, no probe), and every input is
     /// interpolated or flat.
     strips: bool,
+    /// Whether a batch's outputs are cleared before the shader runs (see
+    /// [`ShaderStage::writes_every_output`]; always under the probe,
+    /// whose traced runs take another path).
+    clear_outputs: bool,
 }
 
 impl<'a> FragmentStage<'a> {
@@ -432,6 +436,7 @@ impl<'a> FragmentStage<'a> {
             early: layout.frag_depth.is_none(),
             window_z,
             strips,
+            clear_outputs: probe.is_some() || !shader.writes_every_output(),
             prepared: shader.prepare(uniforms),
             deferred_prepared: deferred.as_ref().and_then(|d| d.prepare(uniforms)),
             lanes_independent: shader.lanes_independent(),
@@ -869,8 +874,10 @@ impl<'a> FragmentStage<'a> {
         if live_mask == 0 {
             return Ok(());
         }
-        for c in batch.outputs.iter_mut() {
-            *c = [0.0; LANES];
+        if self.clear_outputs {
+            for c in batch.outputs.iter_mut() {
+                *c = [0.0; LANES];
+            }
         }
         batch.active = quads_mask(LANES / 4);
         batch.helper = batch.active & !live_mask;
@@ -1031,8 +1038,10 @@ impl<'a> FragmentStage<'a> {
                 *c = [0.0; LANES];
             }
         }
-        for c in batch.outputs.iter_mut() {
-            *c = [0.0; LANES];
+        if self.clear_outputs {
+            for c in batch.outputs.iter_mut() {
+                *c = [0.0; LANES];
+            }
         }
         let mut live_mask = 0u32;
         for (q, e) in pending.iter().enumerate() {
@@ -1065,8 +1074,10 @@ impl<'a> FragmentStage<'a> {
             total += (e.write & 0xf).count_ones() as usize;
         }
         let total = total.min(LANES);
-        for c in batch.outputs.iter_mut() {
-            *c = [0.0; LANES];
+        if self.clear_outputs {
+            for c in batch.outputs.iter_mut() {
+                *c = [0.0; LANES];
+            }
         }
         batch.active = lanes_mask(total);
         batch.helper = 0;
