@@ -152,7 +152,7 @@ impl OsContext {
             (self.format, self.ty, fb.color.first())
         {
             if (fb.width as usize, fb.height as usize) == (w, h) && color.len() >= w * h {
-                copy_rgba8_rows(color, (w, h), row_px, self.y_up, out);
+                copy_rgba8_rows(color, (w, h), row_px, self.y_up, out, self.gl.workers());
                 return;
             }
         }
@@ -239,18 +239,28 @@ fn copy_rgba8_rows(
     row_px: usize,
     y_up: bool,
     out: &mut [u8],
+    workers: &raster::Workers,
 ) {
-    if w == 0 {
+    let row_bytes = row_px * 4;
+    if w == 0 || h == 0 || row_px < w {
         return;
     }
-    for (y, src) in color.chunks_exact(w).take(h).enumerate() {
-        let dst_row = if y_up { y } else { h - 1 - y };
-        let at = dst_row * row_px * 4;
-        if let Some(dst) = out.get_mut(at..at + w * 4) {
-            dst.copy_from_slice(src.as_flattened());
+    // Bands of destination rows copied in parallel (a frame's copy runs
+    // between draws, where nothing else does).
+    let out = out.get_mut(..row_bytes * h).unwrap_or(&mut []);
+    workers.for_each_chunk(out, row_bytes * COPY_ROWS, |band, rows| {
+        for (r, dst) in rows.chunks_mut(row_bytes).enumerate() {
+            let dst_row = band * COPY_ROWS + r;
+            let y = if y_up { dst_row } else { h - 1 - dst_row };
+            if let (Some(src), Some(dst)) = (color.get(y * w..(y + 1) * w), dst.get_mut(..w * 4)) {
+                dst.copy_from_slice(src.as_flattened());
+            }
         }
-    }
+    });
 }
+
+/// Rows of the client buffer one task of [`copy_rgba8_rows`] copies.
+const COPY_ROWS: usize = 64;
 
 fn encode_pixel(p: [u8; 4], format: u32, ty: u32, dst: &mut [u8]) {
     let [r, g, b, a] = p;
@@ -406,11 +416,17 @@ mod tests {
     /// The row copy of `copy_out` against `encode_pixel` pixel by pixel.
     #[test]
     fn rgba8_rows_match_encode_pixel() {
-        let (w, h) = (5, 3);
+        // Fewer rows than a copy task takes, and several tasks' worth.
+        for (w, h) in [(5, 3), (7, 2 * COPY_ROWS + 9)] {
+            rows_match(w, h);
+        }
+    }
+
+    fn rows_match(w: usize, h: usize) {
         let color: Vec<[u8; 4]> = (0..w * h)
             .map(|i| [i as u8, (i * 7) as u8, (i * 13) as u8, 255 - i as u8])
             .collect();
-        for (row_px, y_up) in [(5, true), (5, false), (8, true), (8, false)] {
+        for (row_px, y_up) in [(w, true), (w, false), (w + 3, true), (w + 3, false)] {
             let mut want = vec![0xAAu8; row_px * h * 4];
             for y in 0..h {
                 let dst_row = if y_up { y } else { h - 1 - y };
@@ -425,7 +441,12 @@ mod tests {
                 }
             }
             let mut got = vec![0xAAu8; row_px * h * 4];
-            copy_rgba8_rows(&color, (w, h), row_px, y_up, &mut got);
+            for threads in [1, 2] {
+                let workers = raster::Workers::new(threads);
+                got.fill(0xAA);
+                copy_rgba8_rows(&color, (w, h), row_px, y_up, &mut got, &workers);
+                assert_eq!(got, want, "{row_px} {y_up} {threads}");
+            }
             assert_eq!(got, want, "{row_px} {y_up}");
         }
     }

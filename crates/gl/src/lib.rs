@@ -202,6 +202,12 @@ impl Context {
         self.workers.threads()
     }
 
+    /// The threads draws run on, for other parallel work on the
+    /// context's pixels (the OSMesa layer's copy to the client buffer).
+    pub fn workers(&self) -> &raster::Workers {
+        &self.workers
+    }
+
     /// Width of the default framebuffer.
     pub fn width(&self) -> i32 {
         self.width

@@ -205,6 +205,32 @@ impl Workers {
     }
 }
 
+impl Workers {
+    /// Runs `task(i, chunk)` on each `chunk_len`-element chunk of `data`
+    /// (chunk `i` starts at element `i · chunk_len`; the last may be
+    /// shorter), in parallel: for work such as copies, whose chunks are
+    /// disjoint and whose result does not depend on their order.
+    pub fn for_each_chunk<T: Send>(
+        &self,
+        data: &mut [T],
+        chunk_len: usize,
+        task: impl Fn(usize, &mut [T]) + Sync + Send,
+    ) {
+        let chunk_len = chunk_len.max(1);
+        match self.pool() {
+            None => data
+                .chunks_mut(chunk_len)
+                .enumerate()
+                .for_each(|(i, c)| task(i, c)),
+            Some(pool) => pool.install(|| {
+                data.par_chunks_mut(chunk_len)
+                    .enumerate()
+                    .for_each(|(i, c)| task(i, c))
+            }),
+        }
+    }
+}
+
 impl Default for Workers {
     /// The machine's available parallelism.
     fn default() -> Workers {
