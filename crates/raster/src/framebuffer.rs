@@ -299,8 +299,17 @@ impl Framebuffer {
     }
 
     /// A copy of the pixels in `[x0, x1) × [y0, y1)` (clipped to the
-    /// buffer) as a framebuffer of its own, for one tile task.
-    pub(crate) fn copy_tile(&self, x0: u32, y0: u32, x1: u32, y1: u32) -> Framebuffer {
+    /// buffer) as a framebuffer of its own, for one tile task: its colour
+    /// buffers, and its depth and stencil buffers where `depth` and
+    /// `stencil` ask for them (a draw without the depth or stencil test
+    /// neither reads nor writes that buffer: the tile goes without it, and
+    /// storing the tile back leaves the framebuffer's as it is).
+    pub(crate) fn copy_tile(
+        &self,
+        (x0, y0, x1, y1): (u32, u32, u32, u32),
+        depth: bool,
+        stencil: bool,
+    ) -> Framebuffer {
         let (x1, y1) = (x1.min(self.width), y1.min(self.height));
         let (x0, y0) = (x0.min(x1), y0.min(y1));
         let (w, h) = ((x1 - x0) as usize, (y1 - y0) as usize);
@@ -326,8 +335,12 @@ impl Framebuffer {
                     ColorBuffer::Rgba32F(v) => ColorBuffer::Rgba32F(rows(v, width, x0, y0, w, h)),
                 })
                 .collect(),
-            depth: self.depth.as_ref().map(|d| rows(d, width, x0, y0, w, h)),
-            stencil: self.stencil.as_ref().map(|s| rows(s, width, x0, y0, w, h)),
+            depth: (self.depth.as_ref())
+                .filter(|_| depth)
+                .map(|d| rows(d, width, x0, y0, w, h)),
+            stencil: (self.stencil.as_ref())
+                .filter(|_| stencil)
+                .map(|s| rows(s, width, x0, y0, w, h)),
             samples_passed: 0,
         }
     }
@@ -559,7 +572,7 @@ mod tests {
     fn tiles_copy_out_and_back() {
         let mut fb = Framebuffer::new(5, 4, ColorFormat::Rgba8, true, true);
         fb.clear_color(&[0], [1.0; 4], [true; 4], Some(Rect::new(1, 1, 2, 2)));
-        let mut tile = fb.copy_tile(1, 1, 3, 9);
+        let mut tile = fb.copy_tile((1, 1, 3, 9), true, true);
         assert_eq!((tile.width, tile.height), (2, 3));
         assert_eq!(tile.read_pixels_u8(0, 0, 0, 2, 2), vec![[255; 4]; 4]);
         assert_eq!(tile.read_pixels_u8(0, 0, 2, 2, 1), vec![[0; 4]; 2]);
@@ -578,6 +591,14 @@ mod tests {
         assert_eq!(fb.read_depth(1, 1, 3, 1), vec![1.0, 1.0, 0.0]);
         assert_eq!(fb.read_stencil(2, 3, 1, 1), vec![7]);
         assert_eq!(fb.read_stencil(3, 3, 1, 1), vec![0]);
+        // A tile without depth and stencil leaves the framebuffer's.
+        let mut tile = fb.copy_tile((0, 0, 5, 4), false, false);
+        assert!(tile.depth.is_none() && tile.stencil.is_none());
+        tile.clear_color(&[0], [0.0; 4], [true; 4], None);
+        fb.store_tile(0, 0, &tile);
+        assert_eq!(fb.read_pixels_u8(0, 1, 1, 1, 1), vec![[0; 4]]);
+        assert_eq!(fb.read_depth(1, 1, 3, 1), vec![1.0, 1.0, 0.0]);
+        assert_eq!(fb.read_stencil(2, 3, 1, 1), vec![7]);
     }
 
     #[test]

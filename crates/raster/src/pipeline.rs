@@ -1200,6 +1200,8 @@ fn shade_tiles(
     let occupied = bins.occupied();
     let rect = |t: usize| grid.rect(t);
     let source: &Framebuffer = fb;
+    // The depth and stencil buffers only when the draw tests them.
+    let tests = (stage.state.depth_test.is_some(), stage.state.stencil.is_some());
     let results = workers.map(occupied.len(), 1, |i, cancel| {
         if cancel.skip(i) {
             return TileResult::Skipped;
@@ -1208,7 +1210,8 @@ fn shade_tiles(
             return TileResult::Skipped;
         };
         let r = rect(t);
-        let copy = || source.copy_tile(r.0 as u32, r.1 as u32, r.2 as u32, r.3 as u32);
+        let area = (r.0 as u32, r.1 as u32, r.2 as u32, r.3 as u32);
+        let copy = || source.copy_tile(area, tests.0, tests.1);
         let mut local = copy();
         let bin = &bins.tile(t)[..];
         let mut scratch = stage.scratch();
