@@ -1139,13 +1139,16 @@ impl Context {
         if mask & GL_COLOR_BUFFER_BIT != 0 {
             let mut bufs: Vec<usize> = t.draw_buffers.iter().flatten().copied().collect();
             bufs.dedup();
-            t.fb.clear_color(&bufs, self.st.clear_color, self.st.color_mask, scissor);
+            let (color, write) = (self.st.clear_color, self.st.color_mask);
+            t.fb.clear_color_on(&self.workers, &bufs, color, write, scissor);
         }
         if mask & GL_DEPTH_BUFFER_BIT != 0 {
-            t.fb.clear_depth(self.st.clear_depth, self.st.depth_mask, scissor);
+            let (depth, write) = (self.st.clear_depth, self.st.depth_mask);
+            t.fb.clear_depth_on(&self.workers, depth, write, scissor);
         }
         if mask & GL_STENCIL_BUFFER_BIT != 0 {
-            t.fb.clear_stencil(
+            t.fb.clear_stencil_on(
+                &self.workers,
                 self.st.clear_stencil,
                 self.st.stencil[0].write_mask,
                 scissor,
