@@ -588,7 +588,9 @@ impl raster::ShaderStage for FixedFragment<'_> {
     fn writes_every_output(&self) -> bool {
         // The plan stores gl_FragColor on every active lane and discards
         // nothing: every output when it is the only one.
-        self.plan.as_ref().is_some_and(|p| p.out == 0 && p.outputs == 4)
+        self.plan
+            .as_ref()
+            .is_some_and(|p| p.out == 0 && p.outputs == 4)
     }
 
     fn lanes_independent(&self) -> bool {

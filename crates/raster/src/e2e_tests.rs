@@ -148,12 +148,12 @@ fn textured_quad_with_implicit_lod() {
     t.min_filter = MinFilter::NearestMipmapNearest;
     t.mag_filter = MagFilter::Nearest;
     let units = TextureUnits::new(vec![
-            TextureUnit::default(),
-            TextureUnit {
-                tex_2d: Some(Arc::new(t)),
-                ..TextureUnit::default()
-            },
-        ]);
+        TextureUnit::default(),
+        TextureUnit {
+            tex_2d: Some(Arc::new(t)),
+            ..TextureUnit::default()
+        },
+    ]);
     let (w, h) = (8, 8);
     let state = PipelineState {
         viewport: Rect::new(0, 0, w as i32, h as i32),
@@ -342,9 +342,9 @@ fn scene(workers: &crate::Workers) -> SceneResult {
     tex.min_filter = MinFilter::LinearMipmapLinear;
     tex.mag_filter = MagFilter::Linear;
     let units = TextureUnits::new(vec![TextureUnit {
-            tex_2d: Some(Arc::new(tex)),
-            ..TextureUnit::default()
-        }]);
+        tex_2d: Some(Arc::new(tex)),
+        ..TextureUnit::default()
+    }]);
     let corners = [
         ([-0.9f32, -0.8], 0.4f32, [0.0f32, 0.0]),
         ([0.95, -0.9], 1.0, [6.0, 0.0]),

@@ -220,7 +220,10 @@ impl Framebuffer {
     ) {
         let width = width as usize;
         let len = buf.len();
-        let (first, end) = ((y0 as usize * width).min(len), (y1 as usize * width).min(len));
+        let (first, end) = (
+            (y0 as usize * width).min(len),
+            (y1 as usize * width).min(len),
+        );
         let (Some(rows), false) = (buf.get_mut(first..end), width == 0) else {
             return;
         };

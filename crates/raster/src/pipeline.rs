@@ -1201,7 +1201,10 @@ fn shade_tiles(
     let rect = |t: usize| grid.rect(t);
     let source: &Framebuffer = fb;
     // The depth and stencil buffers only when the draw tests them.
-    let tests = (stage.state.depth_test.is_some(), stage.state.stencil.is_some());
+    let tests = (
+        stage.state.depth_test.is_some(),
+        stage.state.stencil.is_some(),
+    );
     let results = workers.map(occupied.len(), 1, |i, cancel| {
         if cancel.skip(i) {
             return TileResult::Skipped;

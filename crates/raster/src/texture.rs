@@ -1269,9 +1269,9 @@ mod tests {
         tex.min_filter = MinFilter::Linear;
         assert_eq!(tex.last_level(), Some(0));
         let units = TextureUnits::new(vec![TextureUnit {
-                tex_2d: Some(Arc::new(ramp(8, 8, 2))),
-                ..TextureUnit::default()
-            }]);
+            tex_2d: Some(Arc::new(ramp(8, 8, 2))),
+            ..TextureUnit::default()
+        }]);
         let req = SampleRequest {
             unit: [0; LANES],
             target: SamplerKind::Sampler2D,

@@ -1416,13 +1416,13 @@ mod tests {
                     tex.min_lod = -2.0 + k as f32 * 0.1;
                     tex.max_lod = if k % 3 == 2 { 1.5 } else { 1000.0 };
                     let units = TextureUnits::new(vec![
-                            TextureUnit::default(),
-                            TextureUnit {
-                                tex_2d: Some(Arc::new(tex)),
-                                lod_bias: -0.5,
-                                ..TextureUnit::default()
-                            },
-                        ]);
+                        TextureUnit::default(),
+                        TextureUnit {
+                            tex_2d: Some(Arc::new(tex)),
+                            lod_bias: -0.5,
+                            ..TextureUnit::default()
+                        },
+                    ]);
                     for round in 0..40 {
                         let mut coord = [[0.0; LANES]; 4];
                         let mut ddx = [[0.0; LANES]; 3];
@@ -1792,32 +1792,64 @@ mod tests {
             lod: Lod::Explicit([0.0; LANES]),
             mask: 0b1111,
         };
-        let units = |tex: Texture| TextureUnits::new(vec![TextureUnit {
+        let units = |tex: Texture| {
+            TextureUnits::new(vec![TextureUnit {
                 tex_2d: Some(Arc::new(tex)),
                 ..TextureUnit::default()
-            }]);
+            }])
+        };
         let mut out = [[0.0; LANES]; 4];
-        assert!(sample_with(Isa::current(), &units(tex.clone()), &req([0; LANES]), &mut out));
+        assert!(sample_with(
+            Isa::current(),
+            &units(tex.clone()),
+            &req([0; LANES]),
+            &mut out
+        ));
         // Two units in one request.
         let mut two = [0; LANES];
         two[2] = 1;
-        assert!(!sample_with(Isa::current(), &units(tex.clone()), &req(two), &mut out));
+        assert!(!sample_with(
+            Isa::current(),
+            &units(tex.clone()),
+            &req(two),
+            &mut out
+        ));
         // ... unless the other unit's lane is masked off.
         let masked = SampleRequest {
             mask: 0b1011,
             ..req(two)
         };
-        assert!(sample_with(Isa::current(), &units(tex.clone()), &masked, &mut out));
+        assert!(sample_with(
+            Isa::current(),
+            &units(tex.clone()),
+            &masked,
+            &mut out
+        ));
         // Border wrapping, depth textures, incomplete textures.
         let mut border = tex.clone();
         border.wrap[1] = Wrap::ClampToBorder;
-        assert!(!sample_with(Isa::current(), &units(border), &req([0; LANES]), &mut out));
+        assert!(!sample_with(
+            Isa::current(),
+            &units(border),
+            &req([0; LANES]),
+            &mut out
+        ));
         let mut depth = tex.clone();
         depth.depth_format = true;
-        assert!(!sample_with(Isa::current(), &units(depth), &req([0; LANES]), &mut out));
+        assert!(!sample_with(
+            Isa::current(),
+            &units(depth),
+            &req([0; LANES]),
+            &mut out
+        ));
         let mut incomplete = tex;
         incomplete.levels.truncate(1);
-        assert!(!sample_with(Isa::current(), &units(incomplete), &req([0; LANES]), &mut out));
+        assert!(!sample_with(
+            Isa::current(),
+            &units(incomplete),
+            &req([0; LANES]),
+            &mut out
+        ));
     }
 }
 
@@ -1892,9 +1924,9 @@ mod bench {
             tex.min_filter = min_filter;
             tex.mag_filter = mag_filter;
             let units = TextureUnits::new(vec![TextureUnit {
-                    tex_2d: Some(Arc::new(tex)),
-                    ..TextureUnit::default()
-                }]);
+                tex_2d: Some(Arc::new(tex)),
+                ..TextureUnit::default()
+            }]);
             println!("{min_filter:?}, {mag_filter:?}:");
             time_lookups(&units, &reqs);
         }
