@@ -1200,10 +1200,12 @@ fn shade_tiles(
     let occupied = bins.occupied();
     let rect = |t: usize| grid.rect(t);
     let source: &Framebuffer = fb;
-    // The depth and stencil buffers only when the draw tests them.
+    // The depth and stencil buffers only when the draw tests them (or
+    // the debugger's probe reports what a fragment leaves in them).
+    let all = stage.probe.is_some();
     let tests = (
-        stage.state.depth_test.is_some(),
-        stage.state.stencil.is_some(),
+        all || stage.state.depth_test.is_some(),
+        all || stage.state.stencil.is_some(),
     );
     let results = workers.map(occupied.len(), 1, |i, cancel| {
         if cancel.skip(i) {
