@@ -218,13 +218,15 @@ impl Framebuffer {
         workers: &Workers,
         f: impl Fn(&mut [T]) + Sync + Send,
     ) {
-        let width = width as usize;
-        let len = buf.len();
+        let (width, len) = (width as usize, buf.len());
+        if width == 0 {
+            return;
+        }
         let (first, end) = (
             (y0 as usize * width).min(len),
             (y1 as usize * width).min(len),
         );
-        let (Some(rows), false) = (buf.get_mut(first..end), width == 0) else {
+        let Some(rows) = buf.get_mut(first..end) else {
             return;
         };
         let (x0, x1) = (x0 as usize, x1 as usize);

@@ -508,6 +508,17 @@ impl<'a> FragmentStage<'a> {
         }
     }
 
+    /// Zeroes `batch`'s outputs before a run, unless the stage writes
+    /// them all ([`FragmentStage::clear_outputs`]).
+    #[inline(always)]
+    fn zero_outputs(&self, batch: &mut Batch) {
+        if self.clear_outputs {
+            for c in batch.outputs.iter_mut() {
+                *c = [0.0; LANES];
+            }
+        }
+    }
+
     /// Buffers sized for the stage, reused by one tile's primitives and
     /// batches.
     pub fn scratch<'p>(&self) -> Scratch<'p> {
@@ -874,11 +885,7 @@ impl<'a> FragmentStage<'a> {
         if live_mask == 0 {
             return Ok(());
         }
-        if self.clear_outputs {
-            for c in batch.outputs.iter_mut() {
-                *c = [0.0; LANES];
-            }
-        }
+        self.zero_outputs(batch);
         batch.active = quads_mask(LANES / 4);
         batch.helper = batch.active & !live_mask;
         batch.discarded = 0;
@@ -1038,11 +1045,7 @@ impl<'a> FragmentStage<'a> {
                 *c = [0.0; LANES];
             }
         }
-        if self.clear_outputs {
-            for c in batch.outputs.iter_mut() {
-                *c = [0.0; LANES];
-            }
-        }
+        self.zero_outputs(batch);
         let mut live_mask = 0u32;
         for (q, e) in pending.iter().enumerate() {
             live_mask |= (e.quad.live as u32) << (4 * q);
@@ -1074,11 +1077,7 @@ impl<'a> FragmentStage<'a> {
             total += (e.write & 0xf).count_ones() as usize;
         }
         let total = total.min(LANES);
-        if self.clear_outputs {
-            for c in batch.outputs.iter_mut() {
-                *c = [0.0; LANES];
-            }
-        }
+        self.zero_outputs(batch);
         batch.active = lanes_mask(total);
         batch.helper = 0;
         batch.discarded = 0;
