@@ -130,6 +130,49 @@ pub struct Image {
     pub height: u32,
     pub depth: u32,
     pub(crate) texels: Texels,
+    /// The level with its wrap neighbours appended, built by the first
+    /// lookup that wants it (see [`Padded`]).
+    pub(crate) padded: PaddedCell,
+}
+
+/// An RGBA8 2D level laid out `(width + 1) × (height + 1)`: texel (i, j)
+/// of the level at `j·(width + 1) + i`, plus a last column and a last row
+/// holding the texels a bilinear footprint reads past the level's edge
+/// under the wrap modes `wrap` (REPEAT: column / row 0; CLAMP_TO_EDGE:
+/// the last column / row again). Every 2×2 footprint is then two pairs of
+/// neighbours in memory, with no wrap to apply to the second texel of a
+/// row or to the second row ([`crate::texture_2d`]'s x86 filter).
+pub(crate) struct Padded {
+    pub(crate) wrap: [Wrap; 2],
+    pub(crate) width: u32,
+    pub(crate) height: u32,
+    pub(crate) texels: Box<[[u8; 4]]>,
+}
+
+/// [`Padded`] once built (or `None` when the level cannot have one). A
+/// clone starts empty, and the layout is checked against the level's size
+/// and the lookup's wrap modes on every use, so a stale copy is never
+/// read.
+#[derive(Default)]
+pub(crate) struct PaddedCell(std::sync::OnceLock<Option<Padded>>);
+
+impl Clone for PaddedCell {
+    fn clone(&self) -> PaddedCell {
+        PaddedCell::default()
+    }
+}
+
+impl PartialEq for PaddedCell {
+    /// A cache: never part of an image's value.
+    fn eq(&self, _: &PaddedCell) -> bool {
+        true
+    }
+}
+
+impl std::fmt::Debug for PaddedCell {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("PaddedCell")
+    }
 }
 
 impl Image {
@@ -141,6 +184,7 @@ impl Image {
             height,
             depth,
             texels: Texels::pack(texels),
+            padded: PaddedCell::default(),
         }
     }
 
@@ -174,6 +218,50 @@ impl Image {
     fn texel(&self, i: usize, j: usize, k: usize) -> [f32; 4] {
         let (w, h) = (self.width as usize, self.height as usize);
         self.texels.get((k * h + j) * w + i)
+    }
+
+    /// This RGBA8 2D level as [`Padded`] for the wrap modes `wrap` (each
+    /// REPEAT or CLAMP_TO_EDGE), built on first use; `None` for other
+    /// levels (f32, 3D, empty or too large for 32-bit indices) or when
+    /// the copy was built for other wrap modes.
+    pub(crate) fn padded(&self, wrap: [Wrap; 2]) -> Option<&[[u8; 4]]> {
+        let p = self.padded.0.get_or_init(|| self.pad(wrap)).as_ref()?;
+        let fits = p.wrap == wrap && p.width == self.width && p.height == self.height;
+        fits.then_some(&p.texels[..])
+    }
+
+    fn pad(&self, wrap: [Wrap; 2]) -> Option<Padded> {
+        let Texels::Unorm8(texels) = &self.texels else {
+            return None;
+        };
+        let (w, h) = (self.width as usize, self.height as usize);
+        let plain = |m: Wrap| matches!(m, Wrap::Repeat | Wrap::ClampToEdge);
+        if self.depth != 1
+            || w == 0
+            || h == 0
+            || texels.len() < w * h
+            || !wrap.iter().all(|&m| plain(m))
+        {
+            return None;
+        }
+        if (w as u64 + 1) * (h as u64 + 1) > i32::MAX as u64 {
+            return None;
+        }
+        // The texel past the last one (index n) of an axis of size n.
+        let past = |m: Wrap, n: usize| if m == Wrap::Repeat { 0 } else { n - 1 };
+        let mut out = Vec::with_capacity((w + 1) * (h + 1));
+        for j in 0..=h {
+            let row = if j < h { j } else { past(wrap[1], h) };
+            let src = texels.get(row * w..row * w + w)?;
+            out.extend_from_slice(src);
+            out.push(*src.get(past(wrap[0], w))?);
+        }
+        Some(Padded {
+            wrap,
+            width: self.width,
+            height: self.height,
+            texels: out.into_boxed_slice(),
+        })
     }
 }
 
@@ -948,6 +1036,44 @@ mod tests {
         assert_eq!(lod_log2(f32::INFINITY), f32::INFINITY);
         assert!(lod_log2(f32::NAN).is_nan());
         assert!(lod_log2(-1.0).is_nan());
+    }
+
+    /// The padded copy appends column 0 / row 0 (REPEAT) or the last
+    /// column / row again (CLAMP_TO_EDGE); it is built for one pair of
+    /// wrap modes (others get none), not for f32 levels, and a clone
+    /// builds its own.
+    #[test]
+    fn padded_copy_holds_the_wrap_neighbours() {
+        // Texel (i, j) of a 3 × 2 level is (10j + i) / 255 in red.
+        let texels = (0..6)
+            .map(|n| [(10 * (n / 3) + n % 3) as f32 / 255.0, 0.0, 0.0, 1.0])
+            .collect();
+        let img = Image::new(3, 2, 1, texels);
+        let red = |p: &[[u8; 4]]| p.iter().map(|t| t[0]).collect::<Vec<_>>();
+        let rep = [Wrap::Repeat, Wrap::Repeat];
+        assert_eq!(
+            red(img.padded(rep).unwrap()),
+            [0, 1, 2, 0, 10, 11, 12, 10, 0, 1, 2, 0]
+        );
+        assert!(img.padded([Wrap::ClampToEdge; 2]).is_none());
+        let other = img.clone();
+        let mixed = [Wrap::ClampToEdge, Wrap::Repeat];
+        assert_eq!(
+            red(other.padded(mixed).unwrap()),
+            [0, 1, 2, 2, 10, 11, 12, 12, 0, 1, 2, 2]
+        );
+        let clamp = [Wrap::Repeat, Wrap::ClampToEdge];
+        let third = img.clone();
+        assert_eq!(
+            red(third.padded(clamp).unwrap()),
+            [0, 1, 2, 0, 10, 11, 12, 10, 10, 11, 12, 10]
+        );
+        let float = Image::new(1, 1, 1, vec![[0.3, 0.0, 0.0, 1.0]]);
+        assert!(float.padded(rep).is_none());
+        assert!(img
+            .clone()
+            .padded([Wrap::MirroredRepeat, Wrap::Repeat])
+            .is_none());
     }
 
     fn solid(w: u32, h: u32, color: [f32; 4]) -> Image {

@@ -1401,7 +1401,13 @@ mod tests {
             .filter(|i| i.supported())
             .collect();
         // RGBA8 levels, f32 levels, some of each.
-        for (size, float) in [((16, 8), 0), ((5, 12), !0), ((1, 1), 0), ((8, 32), 0b1010)] {
+        for (size, float) in [
+            ((16, 8), 0),
+            ((5, 12), !0),
+            ((1, 1), 0),
+            ((8, 32), 0b1010),
+            ((6, 3), 0),
+        ] {
             let base = random_texture(size.0, size.1, float, &mut seed);
             let mixed = float != 0 && float != !0;
             let mut skipped = 0;

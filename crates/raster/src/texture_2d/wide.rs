@@ -11,8 +11,13 @@
 //! [`super::floor_of`] allows), so the same values; the level's size is
 //! a scalar (REPEAT of a power-of-two size wraps by a mask). The filter
 //! itself works on AVX2 registers of four pixels × four channels × 16
-//! bits (both instruction sets have AVX2): the two texels of a row are
-//! one 64-bit load per lane when they are neighbours in memory, a row is
+//! bits (both instruction sets have AVX2). The texels are read from the
+//! level's padded copy ([`crate::texture::Image::padded`], built on the
+//! first lookup: rows one texel longer and one more row, holding the wrap
+//! neighbours), so the two texels of a footprint's row are always one
+//! 64-bit load and its second row one row on: no wrap to apply past the
+//! first texel, no lane to treat apart (levels without a copy go to the
+//! lane by lane code). A row is
 //! one `vpmaddubsw` of the texel bytes (offset to signed) by the weight
 //! bytes, the blends of rows and of levels one `vpmulhrsw` each, and the
 //! result is transposed to one value per channel and converted to f32
@@ -81,9 +86,15 @@ pub(super) unsafe fn sample_unorm8<V: Lanes16>(
         let s = V::load(st[0]);
         let t = V::load(st[1]);
         let near = V::mask(nearest);
-        let mut m = level_fixed::<V>(table, levels, d0, wraps, (s, t), near, nearest, mask);
+        let Some(mut m) = level_fixed::<V>(table, levels, d0, wraps, (s, t), (near, nearest))
+        else {
+            return false;
+        };
         if let Some(d1) = d1 {
-            let second = level_fixed::<V>(table, levels, d1, wraps, (s, t), near, nearest, two);
+            let Some(second) = level_fixed::<V>(table, levels, d1, wraps, (s, t), (near, nearest))
+            else {
+                return false;
+            };
             // φ = ⌊256·f⌋ (`unorm8_filter::level_weight`) on the lanes in
             // `two`, 0 elsewhere (which keeps the first level's value),
             // as φ·128 for the rounding high multiply.
@@ -217,15 +228,16 @@ unsafe fn wrap_scale<V: Lanes16>(wrap: Wrap, s: V::F, n: i32) -> V::F {
 }
 
 /// `axis_unorm8` with the level's size `n`: texel 0 (the NEAREST texel
-/// on the lanes in `nearest`), texel 1 and the weight of texel 1 in
-/// 128ths (0 on the NEAREST lanes).
+/// on the lanes in `nearest`) and the weight of texel 1 in 128ths (0 on
+/// the NEAREST lanes); texel 1 is the next one of the padded level (for
+/// CLAMP_TO_EDGE's texel −1, which reads texel 0 twice, weight 0).
 #[inline(always)]
 unsafe fn axis<V: Lanes16>(
     u: V::F,
     n: i32,
     wrap: Wrap,
     (nearest, nearest_lanes): (V::M, u32),
-) -> (V::I, V::I, V::I) {
+) -> (V::I, V::I) {
     unsafe {
         // `unorm8_filter::coord` and `split`.
         let x = V::sub_i(
@@ -233,28 +245,22 @@ unsafe fn axis<V: Lanes16>(
             V::splat_i(64),
         );
         let i = V::sra_i(x, 7);
-        let a = V::and_i(x, V::splat_i(127));
-        let mut i0 = wrap_index::<V>(i, wrap, n);
-        // (i < 2^23: the add does not overflow.)
-        let i1 = wrap_index::<V>(V::add_i(i, V::splat_i(1)), wrap, n);
+        let mut a = V::and_i(x, V::splat_i(127));
+        let i0 = wrap_index::<V>(i, wrap, n);
+        if wrap == Wrap::ClampToEdge {
+            // i = −1 (only from a NaN coordinate: CLAMP_TO_EDGE keeps u at
+            // least ½) reads texel 0 twice, where the padded row's next
+            // texel is texel 1: weight 0 on it gives the same sum.
+            a = V::select_i(V::lt_i(i, V::splat_i(0)), V::splat_i(0), a);
+        }
         if nearest_lanes == 0 {
-            return (i0, i1, a);
+            return (i0, a);
         }
         let near = wrap_index::<V>(floor_index::<V>(V::floor(u)), wrap, n);
-        i0 = V::select_i(nearest, near, i0);
-        (i0, i1, V::select_i(nearest, V::splat_i(0), a))
-    }
-}
-
-/// Texels `idx` of `texels` (not empty) as RGBA8 words, the indices
-/// clamped to the last texel.
-#[inline(always)]
-unsafe fn gather<V: Lanes16>(texels: &[[u8; 4]], idx: V::I) -> V::I {
-    let last = texels.len().saturating_sub(1).min(i32::MAX as usize) as i32;
-    // SAFETY: every index is in 0..=last: 4-byte reads of texels.
-    unsafe {
-        let idx = V::min_u(idx, V::splat_i(last));
-        V::gather(texels.as_ptr().cast(), idx)
+        (
+            V::select_i(nearest, near, i0),
+            V::select_i(nearest, V::splat_i(0), a),
+        )
     }
 }
 
@@ -314,75 +320,66 @@ unsafe fn blend(x: __m256i, y: __m256i, w: __m256i) -> __m256i {
 }
 
 /// LINEAR (NEAREST on the lanes in `nearest`) on level `d` for every lane
-/// (only the lanes in `used` are meant; the others get some value), in
-/// fixed point less 16384 (the rows' offset), as four-pixel registers.
+/// (the lanes not meant get some value), in fixed point less 16384 (the
+/// rows' offset), as four-pixel registers; `None` (nothing read) when the
+/// level has no padded copy ([`crate::texture::Image::padded`]: the lane
+/// by lane code takes the request).
+///
+/// The copy's rows are `w + 1` texels with the wrap neighbours appended,
+/// so each lane's footprint is the 64-bit pair at `j₀·(w + 1) + i₀` and
+/// the pair one row on, whatever the wrap; a NEAREST lane reads its texel
+/// and its neighbour with weight 0.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 unsafe fn level_fixed<V: Lanes16>(
     table: &LevelTable,
     levels: &[crate::texture::Image],
     d: i32,
     wraps: [Wrap; 2],
     (s, t): (V::F, V::F),
-    near: V::M,
-    nearest: u32,
-    used: u32,
-) -> [__m256i; 4] {
-    let texels = super::unorm8_level(levels, d);
+    (near, nearest): (V::M, u32),
+) -> Option<[__m256i; 4]> {
     let sh = (d.wrapping_sub(table.base) as u32).min(31);
     let w = (table.width >> sh).max(1) as i32;
     let h = (table.height >> sh).max(1) as i32;
+    let texels = levels
+        .get(d as usize)
+        .filter(|img| img.width as i32 == w && img.height as i32 == h)
+        .and_then(|img| img.padded(wraps))
+        .filter(|p| p.len() >= 2)?;
+    // SAFETY: the CPU supports the features (the caller's contract); the
+    // reads are bounded below.
     unsafe {
         let us = wrap_scale::<V>(wraps[0], s, w);
         let ut = wrap_scale::<V>(wraps[1], t, h);
-        let (i0, i1, a) = axis::<V>(us, w, wraps[0], (near, nearest));
-        let (j0, j1, b) = axis::<V>(ut, h, wraps[1], (near, nearest));
-        let wv = V::splat_i(w);
-        let (r0, r1) = (V::mullo_i(j0, wv), V::mullo_i(j1, wv));
-        let idx0 = V::add_i(r0, i0);
-        let idx2 = V::add_i(r1, i0);
+        let (i0, a) = axis::<V>(us, w, wraps[0], (near, nearest));
+        let (j0, b) = axis::<V>(ut, h, wraps[1], (near, nearest));
         // Row weights: bytes (128 − a, a) twice per lane; column weights
         // b·256 twice per lane.
         let wx = V::or_i(V::sub_i(V::splat_i(128), a), V::shl_i(a, 8));
         let wx = spread(V::halves_i(twice16::<V>(wx)));
+        let wy = spread(V::halves_i(twice16::<V>(V::shl_i(b, 8))));
+        // Indices are at most (w + 1)(h + 1) − 2 (i₀ < w, j₀ < h); the
+        // bound keeps every 64-bit read inside the copy regardless.
+        let stride = V::splat_i(w + 1);
+        let at0 = V::add_i(V::mullo_i(j0, stride), i0);
+        let at1 = V::add_i(at0, stride);
+        let last = V::splat_i(texels.len().saturating_sub(2).min(i32::MAX as usize) as i32);
+        let base = texels.as_ptr().cast::<u32>();
+        let p0 = exec::lanes16::pairs4(base, V::halves_i(V::min_u(at0, last)));
         if nearest == 0xffff {
-            // NEAREST everywhere (a = b = 0): corner 0 alone.
-            let t0 = V::halves_i(gather::<V>(texels, idx0));
-            let p = pair_up(t0, t0);
+            // NEAREST everywhere (a = b = 0): the first row alone.
             let mut v = [_mm256_setzero_si256(); 4];
             for k in 0..4 {
-                v[k] = row(p[k], wx[k]);
+                v[k] = row(p0[k], wx[k]);
             }
-            return v;
+            return Some(v);
         }
-        let wy = spread(V::halves_i(twice16::<V>(V::shl_i(b, 8))));
-        // Both texels of each row neighbours in memory on every lane used
-        // (or the second one's weight 0 and inside the level: not the last
-        // column); the others read some two texels of the level.
-        let one = V::splat_i(1);
-        let next = V::bits(V::eq_i(i1, V::add_i(i0, one)));
-        let zero_a = V::bits(V::eq_i(a, V::splat_i(0)));
-        let inside = !V::bits(V::eq_i(i0, V::sub_i(wv, one)));
-        let pairs = texels.len() >= 2 && (next | (zero_a & inside) | !used) & 0xffff == 0xffff;
-        let (p0, p1) = if pairs {
-            let last = V::splat_i(texels.len().saturating_sub(2).min(i32::MAX as usize) as i32);
-            let base = texels.as_ptr().cast::<u32>();
-            (
-                exec::lanes16::pairs4(base, V::halves_i(V::min_u(idx0, last))),
-                exec::lanes16::pairs4(base, V::halves_i(V::min_u(idx2, last))),
-            )
-        } else {
-            let t0 = V::halves_i(gather::<V>(texels, idx0));
-            let t1 = V::halves_i(gather::<V>(texels, V::add_i(r0, i1)));
-            let t2 = V::halves_i(gather::<V>(texels, idx2));
-            let t3 = V::halves_i(gather::<V>(texels, V::add_i(r1, i1)));
-            (pair_up(t0, t1), pair_up(t2, t3))
-        };
+        let p1 = exec::lanes16::pairs4(base, V::halves_i(V::min_u(at1, last)));
         let mut v = [_mm256_setzero_si256(); 4];
         for k in 0..4 {
             v[k] = blend(row(p0[k], wx[k]), row(p1[k], wx[k]), wy[k]);
         }
-        v
+        Some(v)
     }
 }
 
