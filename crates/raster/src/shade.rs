@@ -862,26 +862,12 @@ impl<'a> FragmentStage<'a> {
     ) -> Result<(), ExecError> {
         let planes = &prim.planes;
         let (x, y) = prim.offsets((qx, qy), &STRIP_X, &STRIP_Y);
-        let z = match self.window_z {
-            true => planes.z_at(&x, &y),
-            false => [0.0; LANES],
+        // Without window z every pixel is live and the entries are only
+        // needed by the quad-at-a-time write (set just before it).
+        let live_mask = match self.window_z {
+            true => self.strip_slots(target, slots, prim, index, (qx, qy), &x, &y),
+            false => 0xffff,
         };
-        let mut live_mask = 0u32;
-        for (k, e) in slots.iter_mut().enumerate() {
-            e.prim = Some(prim);
-            e.index = index;
-            e.write = 0;
-            let q = &mut e.quad;
-            (q.x, q.y, q.live) = (qx + 2 * k as i64, qy, 0xf);
-            if self.window_z {
-                let iz = [z[4 * k], z[4 * k + 1], z[4 * k + 2], z[4 * k + 3]];
-                (q.z, q.zf) = window_depths(&iz, prim.z_offset);
-                if self.early {
-                    q.live = target.depth_live((q.x, q.y), q.live, q.zf);
-                }
-            }
-            live_mask |= (q.live as u32) << (4 * k);
-        }
         if live_mask == 0 {
             return Ok(());
         }
@@ -906,8 +892,50 @@ impl<'a> FragmentStage<'a> {
                 }
             }
         }
+        if !self.window_z {
+            self.strip_slots(target, slots, prim, index, (qx, qy), &x, &y);
+        }
         self.write_quick(target, o, batch, &slots[..]);
         Ok(())
+    }
+
+    /// The entries of a strip's four quads (see
+    /// [`FragmentStage::shade_strip`]): position, coverage and, with
+    /// window z, the quads' depths and the early depth test; returns the
+    /// live pixels (bit 4k + j: pixel j of quad k).
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn strip_slots<'p>(
+        &self,
+        target: &QuickTarget,
+        slots: &mut [Entry<'p>; LANES / 4],
+        prim: &'p Prim,
+        index: u32,
+        (qx, qy): (i64, i64),
+        x: &[f32; LANES],
+        y: &[f32; LANES],
+    ) -> u32 {
+        let z = match self.window_z {
+            true => prim.planes.z_at(x, y),
+            false => [0.0; LANES],
+        };
+        let mut live_mask = 0u32;
+        for (k, e) in slots.iter_mut().enumerate() {
+            e.prim = Some(prim);
+            e.index = index;
+            e.write = 0;
+            let q = &mut e.quad;
+            (q.x, q.y, q.live) = (qx + 2 * k as i64, qy, 0xf);
+            if self.window_z {
+                let iz = [z[4 * k], z[4 * k + 1], z[4 * k + 2], z[4 * k + 3]];
+                (q.z, q.zf) = window_depths(&iz, prim.z_offset);
+                if self.early {
+                    q.live = target.depth_live((q.x, q.y), q.live, q.zf);
+                }
+            }
+            live_mask |= (q.live as u32) << (4 * k);
+        }
+        live_mask
     }
 
     /// [`FragmentStage::flush_batched`] into `sink`.
