@@ -707,11 +707,13 @@ fn lambda_bases<const N: usize>(
         let (ux, uy) = (ddx[1][l] * h, ddy[1][l] * h);
         sx += ux * ux;
         sy += uy * uy;
-        // `math::sqrt` is correctly rounded, as the instruction is;
-        // a NaN here makes λ NaN whatever its bits.
-        let (rx, ry) = (sx.sqrt(), sy.sqrt());
-        // `math::max`.
-        rho[l] = if rx.is_nan() || rx < ry { ry } else { rx };
+        // `math::max(math::sqrt(sx), math::sqrt(sy))` as one square root
+        // of the larger sum: a correctly rounded square root (the
+        // instruction, as `math::sqrt`) never decreases, so the same
+        // value; a NaN sum picks the other as `math::max` picks the other
+        // root, and a NaN here makes λ NaN whatever its bits.
+        let m = if sx.is_nan() || sx < sy { sy } else { sx };
+        rho[l] = m.sqrt();
     }
     // Every lane (`lod_log2` is branch-free and total), so that the loop
     // vectorizes.
