@@ -15,7 +15,10 @@
 //! 2D lookups without depth comparison on a texture with REPEAT,
 //! CLAMP_TO_EDGE or MIRRORED_REPEAT wrapping take a specialised path
 //! ([`crate::texture_2d`]) computing the same operations in the same order
-//! as the general one (tests compare the two bit for bit).
+//! as the general one (tests compare the two bit for bit). Its x86
+//! variants read an RGBA8 level through a padded copy with the wrap
+//! neighbours appended ([`Image::padded`]), built by the first lookup and
+//! kept with the level: such a level takes twice its memory.
 
 use std::sync::Arc;
 
