@@ -153,9 +153,10 @@ pub(crate) struct Padded {
 }
 
 /// [`Padded`] once built (or `None` when the level cannot have one). A
-/// clone starts empty, and the layout is checked against the level's size
-/// and the lookup's wrap modes on every use, so a stale copy is never
-/// read.
+/// level's texels never change after [`Image::new`] (the field is private
+/// to the crate and nothing writes it), a clone starts empty, and the
+/// layout is checked against the level's size and the lookup's wrap
+/// modes on every use, so a stale copy is never read.
 #[derive(Default)]
 pub(crate) struct PaddedCell(std::sync::OnceLock<Option<Padded>>);
 
