@@ -112,12 +112,6 @@ pub trait Lanes16 {
     /// The lanes of `m` as bits.
     unsafe fn bits(m: Self::M) -> u32;
 
-    /// Words `idx[l]` of `base`.
-    ///
-    /// # Safety
-    /// Every index must address a readable word.
-    unsafe fn gather(base: *const u32, idx: Self::I) -> Self::I;
-
     /// A 2×8-pixel block of RGBA8 words: lanes 0–7 from `row0`, 8–15
     /// from `row1` (eight words each).
     ///
@@ -368,10 +362,6 @@ impl Lanes16 for X512 {
         u32::from(m)
     }
     #[inline(always)]
-    unsafe fn gather(base: *const u32, idx: __m512i) -> __m512i {
-        unsafe { _mm512_i32gather_epi32::<4>(idx, base.cast()) }
-    }
-    #[inline(always)]
     unsafe fn load_rows(row0: *const u32, row1: *const u32) -> __m512i {
         unsafe {
             let lo = _mm256_loadu_si256(row0.cast());
@@ -395,10 +385,10 @@ impl Lanes16 for X512 {
     }
 }
 
-/// [`Lanes16`] in two AVX2 registers per value (lanes 0–7, 8–15). The
-/// gathers are scalar loads: AVX2's gather instructions are microcoded
-/// and slower on some CPUs (measured on AMD Zen 2: the textured scene's
-/// frame 2 % shorter with loads).
+/// [`Lanes16`] in two AVX2 registers per value (lanes 0–7, 8–15). Texel
+/// reads ([`pairs4`]) are scalar loads: AVX2's gather instructions are
+/// microcoded and slower on some CPUs (measured on AMD Zen 2: 64-bit
+/// gathers made the textured scene's frame 8 % longer).
 pub struct X256;
 
 /// Two halves: `f(a.0, b.0), f(a.1, b.1)`.
@@ -457,21 +447,6 @@ pub unsafe fn pairs4(base: *const u32, idx: [__m256i; 2]) -> [__m256i; 4] {
             out[2 * h + 1] = _mm256_set_m128i(pair_at(base, hi4, 2), pair_at(base, lo4, 2));
         }
         out
-    }
-}
-
-/// The words `idx[0..4]` of `base`.
-///
-/// # Safety
-/// Every read must be of a readable word.
-#[inline(always)]
-unsafe fn words_at(base: *const u32, idx: __m128i) -> __m128i {
-    unsafe {
-        let at = |i: i32| *base.add(i as u32 as usize) as i32;
-        let v = _mm_cvtsi32_si128(at(_mm_cvtsi128_si32(idx)));
-        let v = _mm_insert_epi32::<1>(v, at(_mm_extract_epi32::<1>(idx)));
-        let v = _mm_insert_epi32::<2>(v, at(_mm_extract_epi32::<2>(idx)));
-        _mm_insert_epi32::<3>(v, at(_mm_extract_epi32::<3>(idx)))
     }
 }
 
@@ -823,20 +798,6 @@ impl Lanes16 for X256 {
     #[inline(always)]
     unsafe fn bits(m: [__m256; 2]) -> u32 {
         unsafe { (_mm256_movemask_ps(m[0]) as u32) | ((_mm256_movemask_ps(m[1]) as u32) << 8) }
-    }
-    #[inline(always)]
-    unsafe fn gather(base: *const u32, idx: [__m256i; 2]) -> [__m256i; 2] {
-        // Scalar loads (see the type's documentation), four lanes per
-        // 128 bits.
-        unsafe {
-            let mut out = [_mm256_setzero_si256(); 2];
-            for (o, v) in out.iter_mut().zip(idx) {
-                let lo = words_at(base, _mm256_castsi256_si128(v));
-                let hi = words_at(base, _mm256_extracti128_si256::<1>(v));
-                *o = _mm256_set_m128i(hi, lo);
-            }
-            out
-        }
     }
     #[inline(always)]
     unsafe fn load_rows(row0: *const u32, row1: *const u32) -> [__m256i; 2] {

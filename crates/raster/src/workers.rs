@@ -203,9 +203,7 @@ impl Workers {
             }),
         }
     }
-}
 
-impl Workers {
     /// Runs `task(i, chunk)` on each `chunk_len`-element chunk of `data`
     /// (chunk `i` starts at element `i · chunk_len`; the last may be
     /// shorter), in parallel: for work such as copies, whose chunks are
