@@ -431,8 +431,11 @@ impl Shape {
             #[inline(always)]
             |qx, qy, mask, walk| {
                 if mask == 0xf && walk.whole_ahead(4) {
-                    out.push((qx, qy, STRIP | 0xf));
-                    return 3;
+                    // The run of whole strips from here, pushed at once
+                    // (one visit of the walk instead of one a strip).
+                    let n = walk.whole_strips();
+                    out.extend((0..n).map(|k| (qx + 8 * k, qy, STRIP | 0xf)));
+                    return 4 * n - 1;
                 }
                 if mask != 0 {
                     out.push((qx, qy, mask));
@@ -689,6 +692,30 @@ impl WalkQuad<'_> {
             }
         }
         ok
+    }
+
+    /// For a quad that starts a strip ([`WalkQuad::whole_ahead`] of 4),
+    /// how many strips of four whole quads follow one another from it (at
+    /// least 1): the largest k with `whole_ahead(4k)`, found with the
+    /// edges' least values taken once.
+    #[inline(always)]
+    pub fn whole_strips(&self) -> i64 {
+        let mut least = [(i64::MAX, 0i64); 3];
+        for ((l, o), &a) in least.iter_mut().zip(self.over).zip(self.a) {
+            if a < 0 {
+                *l = (o.to_array().into_iter().min().unwrap_or(0), -2 * a);
+            }
+        }
+        let inside = (self.x_end - self.qx) / 8;
+        let mut k = 1;
+        while k < inside
+            && least
+                .iter()
+                .all(|&(m, step)| m >= (4 * (k + 1) - 1).saturating_mul(step))
+        {
+            k += 1;
+        }
+        k
     }
 }
 
