@@ -24,6 +24,34 @@
 #![allow(clippy::missing_safety_doc)]
 
 use std::arch::x86_64::*;
+use std::sync::atomic::{AtomicU8, Ordering};
+
+/// What this CPU supports, found on first use: [`X256`] (bit 0),
+/// [`X512`] (bit 1), and bit 7 once known (the callers ask per batch:
+/// one load instead of a detection per feature).
+static SUPPORT: AtomicU8 = AtomicU8::new(0);
+
+/// [`SUPPORT`], detected on first use.
+#[inline(always)]
+fn support() -> u8 {
+    match SUPPORT.load(Ordering::Relaxed) {
+        0 => detect_support(),
+        known => known,
+    }
+}
+
+#[cold]
+fn detect_support() -> u8 {
+    let avx2 = std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma");
+    let avx512 = avx2
+        && std::is_x86_feature_detected!("avx512f")
+        && std::is_x86_feature_detected!("avx512bw")
+        && std::is_x86_feature_detected!("avx512dq")
+        && std::is_x86_feature_detected!("avx512vl");
+    let known = 0x80 | u8::from(avx2) | (u8::from(avx512) << 1);
+    SUPPORT.store(known, Ordering::Relaxed);
+    known
+}
 
 /// Sixteen lanes of f32 ([`Lanes16::F`]), i32 ([`Lanes16::I`]) and
 /// lane masks ([`Lanes16::M`]); see the module documentation.
@@ -139,11 +167,7 @@ impl Lanes16 for X512 {
 
     #[inline]
     fn supported() -> bool {
-        X256::supported()
-            && std::is_x86_feature_detected!("avx512f")
-            && std::is_x86_feature_detected!("avx512bw")
-            && std::is_x86_feature_detected!("avx512dq")
-            && std::is_x86_feature_detected!("avx512vl")
+        support() & 2 != 0
     }
 
     #[inline(always)]
@@ -414,16 +438,7 @@ macro_rules! halves {
 /// Both reads must be of readable words.
 #[inline(always)]
 unsafe fn pair_at(base: *const u32, idx: __m128i, k: i32) -> __m128i {
-    unsafe {
-        let (i, j) = if k == 0 {
-            (_mm_cvtsi128_si32(idx), _mm_extract_epi32::<1>(idx))
-        } else {
-            (_mm_extract_epi32::<2>(idx), _mm_extract_epi32::<3>(idx))
-        };
-        let a = _mm_loadl_epi64(base.add(i as u32 as usize).cast());
-        let b = _mm_loadl_epi64(base.add(j as u32 as usize).cast());
-        _mm_unpacklo_epi64(a, b)
-    }
+    unsafe { load_pair(base, lane_pair(idx, k)) }
 }
 
 /// Texel pairs for four-pixel registers: words `idx[l]` and `idx[l] + 1`
@@ -450,6 +465,60 @@ pub unsafe fn pairs4(base: *const u32, idx: [__m256i; 2]) -> [__m256i; 4] {
     }
 }
 
+/// [`pairs4`] at `idx` and at `idx + stride` (a texel footprint's two
+/// rows), each lane's index taken out of its register once for both
+/// reads.
+///
+/// # Safety
+/// As for [`pairs4`], for both sets of words.
+#[inline(always)]
+pub unsafe fn pairs4_rows(
+    base: *const u32,
+    idx: [__m256i; 2],
+    stride: usize,
+) -> ([__m256i; 4], [__m256i; 4]) {
+    unsafe {
+        let mut rows = ([_mm256_setzero_si256(); 4], [_mm256_setzero_si256(); 4]);
+        let next = base.add(stride);
+        for (h, &half) in idx.iter().enumerate() {
+            let lo4 = _mm256_castsi256_si128(half);
+            let hi4 = _mm256_extracti128_si256::<1>(half);
+            for (r, k) in [(0, 0), (1, 2)] {
+                let (lo, hi) = (lane_pair(lo4, k), lane_pair(hi4, k));
+                rows.0[2 * h + r] = _mm256_set_m128i(load_pair(base, hi), load_pair(base, lo));
+                rows.1[2 * h + r] = _mm256_set_m128i(load_pair(next, hi), load_pair(next, lo));
+            }
+        }
+        rows
+    }
+}
+
+/// Elements `k` and `k + 1` (k 0 or 2) of `idx` as offsets.
+#[inline(always)]
+unsafe fn lane_pair(idx: __m128i, k: i32) -> (usize, usize) {
+    unsafe {
+        let (i, j) = if k == 0 {
+            (_mm_cvtsi128_si32(idx), _mm_extract_epi32::<1>(idx))
+        } else {
+            (_mm_extract_epi32::<2>(idx), _mm_extract_epi32::<3>(idx))
+        };
+        (i as u32 as usize, j as u32 as usize)
+    }
+}
+
+/// The 64 bits at words `i` and `j` of `base`, side by side.
+///
+/// # Safety
+/// Both reads must be of readable words.
+#[inline(always)]
+unsafe fn load_pair(base: *const u32, (i, j): (usize, usize)) -> __m128i {
+    unsafe {
+        let a = _mm_loadl_epi64(base.add(i).cast());
+        let b = _mm_loadl_epi64(base.add(j).cast());
+        _mm_unpacklo_epi64(a, b)
+    }
+}
+
 /// The all-ones lanes of an AVX2 comparison result as a float mask.
 #[inline(always)]
 unsafe fn fmask(m: __m256i) -> __m256 {
@@ -464,7 +533,7 @@ impl Lanes16 for X256 {
 
     #[inline]
     fn supported() -> bool {
-        std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
+        support() & 1 != 0
     }
 
     #[inline(always)]

@@ -345,7 +345,7 @@ unsafe fn level_fixed<V: Lanes16>(
         .get(d as usize)
         .filter(|img| img.width as i32 == w && img.height as i32 == h)
         .and_then(|img| img.padded(wraps))
-        .filter(|p| p.len() >= 2)?;
+        .filter(|p| p.len() >= 2 * (w as usize + 1))?;
     // SAFETY: the CPU supports the features (the caller's contract); the
     // reads are bounded below.
     unsafe {
@@ -358,23 +358,27 @@ unsafe fn level_fixed<V: Lanes16>(
         let wx = V::or_i(V::sub_i(V::splat_i(128), a), V::shl_i(a, 8));
         let wx = spread(V::halves_i(twice16::<V>(wx)));
         let wy = spread(V::halves_i(twice16::<V>(V::shl_i(b, 8))));
-        // Indices are at most (w + 1)(h + 1) − 2 (i₀ < w, j₀ < h); the
-        // bound keeps every 64-bit read inside the copy regardless.
-        let stride = V::splat_i(w + 1);
-        let at0 = V::add_i(V::mullo_i(j0, stride), i0);
-        let at1 = V::add_i(at0, stride);
-        let last = V::splat_i(texels.len().saturating_sub(2).min(i32::MAX as usize) as i32);
+        // A footprint's first pair is at most at (w + 1)(h + 1) − 2 −
+        // (w + 1) (i₀ < w, j₀ < h), its second one row on; the bound keeps
+        // every 64-bit read inside the copy regardless.
+        let stride = (w + 1) as usize;
+        let at0 = V::add_i(V::mullo_i(j0, V::splat_i(w + 1)), i0);
+        let last = texels
+            .len()
+            .saturating_sub(2 + stride)
+            .min(i32::MAX as usize);
+        let at0 = V::halves_i(V::min_u(at0, V::splat_i(last as i32)));
         let base = texels.as_ptr().cast::<u32>();
-        let p0 = exec::lanes16::pairs4(base, V::halves_i(V::min_u(at0, last)));
         if nearest == 0xffff {
             // NEAREST everywhere (a = b = 0): the first row alone.
+            let p0 = exec::lanes16::pairs4(base, at0);
             let mut v = [_mm256_setzero_si256(); 4];
             for k in 0..4 {
                 v[k] = row(p0[k], wx[k]);
             }
             return Some(v);
         }
-        let p1 = exec::lanes16::pairs4(base, V::halves_i(V::min_u(at1, last)));
+        let (p0, p1) = exec::lanes16::pairs4_rows(base, at0, stride);
         let mut v = [_mm256_setzero_si256(); 4];
         for k in 0..4 {
             v[k] = blend(row(p0[k], wx[k]), row(p1[k], wx[k]), wy[k]);
