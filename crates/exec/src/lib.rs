@@ -324,15 +324,18 @@ pub trait Textures {
     /// lanes `mask` at `(s, t)` (after any projective divide) with the
     /// implicit LOD: derivatives the quad differences of s and t
     /// ([`lane::quad_diffs`]), no bias. The same results as the request;
-    /// an implementation may sample without building it.
+    /// an implementation may sample without building it. Returns true
+    /// when no value written is subnormal (the caller need not flush
+    /// them); false promises nothing.
     fn sample_2d_implicit(
         &self,
         unit: u32,
         st: [&[f32; LANES]; 2],
         mask: LaneMask,
         out: &mut [[f32; LANES]; 4],
-    ) {
+    ) -> bool {
         self.sample(&implicit_2d_request(unit, st, mask), out);
+        false
     }
 }
 

@@ -195,18 +195,11 @@ impl Plan {
         // and stores are of 16-lane arrays.
         unsafe {
             let float = |w: usize| f32::from_bits(lane::uniform_word(uniforms, w, true));
-            let mut c = [
-                input::<V>(batch, self.color),
-                input::<V>(batch, self.color + 1),
-                input::<V>(batch, self.color + 2),
-                input::<V>(batch, self.color + 3),
-            ];
+            let mut c = input4::<V>(batch, self.color);
             let cur = (batch.active | batch.helper) & FULL;
             let (zero, one) = (V::zero(), V::splat(1.0));
             for u in &self.units {
-                let s = input::<V>(batch, u.coord);
-                let t = input::<V>(batch, u.coord + 1);
-                let q = input::<V>(batch, u.coord + 3);
+                let [s, t, _, q] = input4::<V>(batch, u.coord);
                 let unit = lane::uniform_word(uniforms, u.sampler, false);
                 let t = lookup_2d_in::<V>(textures, unit, [s, t, q], cur);
                 let mut e = [zero; 4];
@@ -276,19 +269,32 @@ impl Plan {
                 batch.outputs.resize(self.outputs, [0.0; LANES]);
             }
             let active = batch.active & FULL;
-            let canonical = V::splat(f32::from_bits(0x7fc0_0000));
-            for (k, ck) in c.iter().enumerate() {
-                // `lane::float_output`: NaN canonical, subnormals flushed
-                // (every colour value here is a flushed input or result
-                // already: a flushed load, `clamp01`'s or `mix`'s).
-                let v = V::select(V::ordered(*ck, *ck), *ck, canonical);
-                let Some(dst) = batch.outputs.get_mut(self.out + k) else {
-                    continue;
-                };
-                if active == FULL {
-                    V::store(dst, v);
-                } else {
-                    V::store_masked(dst, V::mask(active), v);
+            // `lane::float_output`: NaN canonical, subnormals flushed
+            // (every colour value here is a flushed input or result
+            // already: a flushed load, `clamp01`'s or `mix`'s). A colour
+            // last clamped (by a unit or the colour sum, no fog after) is
+            // never NaN: `clamp01` gives 0 for a NaN.
+            let clamped =
+                (!self.units.is_empty() || self.secondary.is_some()) && self.fog.is_none();
+            if !clamped {
+                let canonical = V::splat(f32::from_bits(0x7fc0_0000));
+                for ck in c.iter_mut() {
+                    *ck = V::select(V::ordered(*ck, *ck), *ck, canonical);
+                }
+            }
+            // (gl_FragColor's four components are inside the outputs:
+            // `Plan::new` found them in the interface, sized above.)
+            let Some(dst) = batch.outputs.get_mut(self.out..self.out + 4) else {
+                return;
+            };
+            if active == FULL {
+                for (d, v) in dst.iter_mut().zip(c) {
+                    V::store(d, v);
+                }
+            } else {
+                let m = V::mask(active);
+                for (d, v) in dst.iter_mut().zip(c) {
+                    V::store_masked(d, m, v);
                 }
             }
         }
@@ -441,6 +447,34 @@ unsafe fn input<V: Lanes16>(batch: &Batch, i: usize) -> V::F {
     }
 }
 
+/// Input components `i..i + 4` of `batch`, flushed (zeros past the
+/// inputs; one bounds check when all four are there).
+///
+/// # Safety
+/// As for [`Plan::run_in`].
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn input4<V: Lanes16>(batch: &Batch, i: usize) -> [V::F; 4] {
+    // SAFETY: the caller's contract.
+    unsafe {
+        // (No closures: see `exec::lanes16`.)
+        match batch.inputs.get(i..i + 4) {
+            Some([a, b, c, d]) => [
+                V::flush(V::load(a)),
+                V::flush(V::load(b)),
+                V::flush(V::load(c)),
+                V::flush(V::load(d)),
+            ],
+            _ => [
+                input::<V>(batch, i),
+                input::<V>(batch, i + 1),
+                input::<V>(batch, i + 2),
+                input::<V>(batch, i + 3),
+            ],
+        }
+    }
+}
+
 /// `lane::mix` on every lane.
 ///
 /// # Safety
@@ -475,7 +509,7 @@ unsafe fn clamp01<V: Lanes16>(x: V::F, zero: V::F, one: V::F) -> V::F {
 }
 
 /// [`lookup_2d`] of flushed `(s, t, q)` in `V`'s registers, the texels
-/// (flushed) returned in them.
+/// (flushed, unless the lookup says none needs it) returned in them.
 ///
 /// # Safety
 /// As for [`Plan::run_in`].
@@ -488,6 +522,7 @@ unsafe fn lookup_2d_in<V: Lanes16>(
     cur: u32,
 ) -> [V::F; 4] {
     let mut out = [[0f32; LANES]; 4];
+    let mut normal = true;
     // SAFETY: the caller's contract.
     unsafe {
         if cur != 0 {
@@ -505,11 +540,15 @@ unsafe fn lookup_2d_in<V: Lanes16>(
                 V::store(&mut s_q, V::flush(V::div(s, q)));
                 V::store(&mut t_q, V::flush(V::div(t, q)));
             }
-            textures.sample_2d_implicit(unit, [&s_q, &t_q], cur, &mut out);
+            normal = textures.sample_2d_implicit(unit, [&s_q, &t_q], cur, &mut out);
         }
         let mut texel = [V::zero(); 4];
         for (v, o) in texel.iter_mut().zip(&out) {
-            *v = V::flush(V::load(o));
+            // (Texels said to have no subnormals, and zeros, are flushed.)
+            *v = match normal {
+                true => V::load(o),
+                false => V::flush(V::load(o)),
+            };
         }
         texel
     }

@@ -477,9 +477,15 @@ impl Textures for TextureUnits {
         st: [&[f32; LANES]; 2],
         mask: u32,
         out: &mut [[f32; LANES]; 4],
-    ) {
-        if !crate::texture_2d::sample_implicit_with(self.isa, self, unit, st, mask, out) {
-            self.sample(&exec::implicit_2d_request(unit, st, mask), out);
+    ) -> bool {
+        use crate::texture_2d::{sample_implicit_with, Sampled};
+        match sample_implicit_with(self.isa, self, unit, st, mask, out) {
+            Sampled::Unorm8 => true,
+            Sampled::Yes => false,
+            Sampled::No => {
+                self.sample(&exec::implicit_2d_request(unit, st, mask), out);
+                false
+            }
         }
     }
 }

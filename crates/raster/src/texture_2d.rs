@@ -123,9 +123,22 @@ pub(crate) fn sample_with(
     out: &mut [[f32; LANES]; 4],
 ) -> bool {
     match Lookup2D::of(req) {
-        Some(lookup) => sample_lookup(isa, units, &lookup, out),
+        Some(lookup) => sample_lookup(isa, units, &lookup, out) != Sampled::No,
         None => false,
     }
+}
+
+/// What the fast path did with a lookup.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Sampled {
+    /// Not taken: `out` untouched (the general path samples).
+    No,
+    /// Sampled.
+    Yes,
+    /// Sampled from RGBA8 levels in fixed point: every value written is
+    /// m / 32640 for a whole m (`unorm8_filter::value`), 0 or normal, so
+    /// none needs flushing.
+    Unorm8,
 }
 
 /// The 2D lookup of unit `unit` on the lanes `mask` at (s, t), the
@@ -133,8 +146,8 @@ pub(crate) fn sample_with(
 /// ([`exec::lane::quad_diffs`]) with no bias, compiled for `isa` (the
 /// baseline one when the CPU lacks it): what [`sample_with`] gives the
 /// request `exec::Textures::sample_2d_implicit` describes, without the
-/// request (false, with nothing written, when the fast path does not
-/// apply).
+/// request ([`Sampled::No`], with nothing written, when the fast path
+/// does not apply).
 #[inline]
 pub(crate) fn sample_implicit_with(
     isa: Isa,
@@ -143,9 +156,9 @@ pub(crate) fn sample_implicit_with(
     st: [&[f32; LANES]; 2],
     mask: u32,
     out: &mut [[f32; LANES]; 4],
-) -> bool {
+) -> Sampled {
     if mask == 0 {
-        return false;
+        return Sampled::No;
     }
     let lookup = Lookup2D {
         unit,
@@ -226,7 +239,7 @@ fn sample_lookup(
     units: &TextureUnits,
     lookup: &Lookup2D,
     out: &mut [[f32; LANES]; 4],
-) -> bool {
+) -> Sampled {
     #[cfg(not(target_arch = "x86_64"))]
     let _ = isa;
     #[cfg(target_arch = "x86_64")]
@@ -250,7 +263,7 @@ unsafe fn sample_avx2(
     units: &TextureUnits,
     lookup: &Lookup2D,
     out: &mut [[f32; LANES]; 4],
-) -> bool {
+) -> Sampled {
     sample_in::<true, WIDE_AVX2>(units, lookup, out)
 }
 
@@ -264,7 +277,7 @@ unsafe fn sample_avx512(
     units: &TextureUnits,
     lookup: &Lookup2D,
     out: &mut [[f32; LANES]; 4],
-) -> bool {
+) -> Sampled {
     sample_in::<true, WIDE_AVX512>(units, lookup, out)
 }
 
@@ -285,13 +298,13 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
     units: &TextureUnits,
     lookup: &Lookup2D,
     out: &mut [[f32; LANES]; 4],
-) -> bool {
+) -> Sampled {
     let unit_index = lookup.unit;
     let Some(unit) = units.units.get(unit_index as usize) else {
-        return false;
+        return Sampled::No;
     };
     let Some(tex_arc) = unit.tex_2d.as_ref() else {
-        return false;
+        return Sampled::No;
     };
     let tex: &Texture = tex_arc;
     let borderless = |w: Wrap| matches!(w, Wrap::Repeat | Wrap::ClampToEdge | Wrap::MirroredRepeat);
@@ -300,7 +313,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
         || !borderless(tex.wrap[0])
         || !borderless(tex.wrap[1])
     {
-        return false;
+        return Sampled::No;
     }
     // Incomplete textures take the general path (which samples black).
     // What depends on the texture alone is found once per set of units
@@ -319,7 +332,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
             found = Checked::new(tex_arc);
             match &found {
                 Some(c) => c,
-                None => return false,
+                None => return Sampled::No,
             }
         }
     };
@@ -327,7 +340,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
     let table = LevelTable::new(tex, checked);
     let base = tex.base_level as usize;
     let Some(base_img) = tex.levels.get(base) else {
-        return false;
+        return Sampled::No;
     };
 
     // The level(s) of every lane, as `texture::select_levels` picks them.
@@ -447,10 +460,10 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
             let st = [*lookup.st[0], *lookup.st[1]];
             let f32_levels = (&table, levels);
             sample_f32::<SIMD>(tex, f32_levels, &level, &f, &st, nearest, two, mask, out);
-            return true;
+            return Sampled::Yes;
         }
         // The general path filters each level as it is stored.
-        Store::Mixed => return false,
+        Store::Mixed => return Sampled::No,
     };
     #[cfg(target_arch = "x86_64")]
     if WIDE != NO_WIDE {
@@ -465,7 +478,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
             }
         };
         if done {
-            return true;
+            return Sampled::Unorm8;
         }
     }
     // RGBA8 levels in fixed point (`unorm8_filter`), lane by lane.
@@ -490,7 +503,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
             }
         }
     }
-    true
+    Sampled::Unorm8
 }
 
 /// The f32 levels' part of [`sample_in`]: LINEAR or NEAREST (on the lanes
@@ -1505,8 +1518,9 @@ mod tests {
                             let mut got = [[7.0; LANES]; 4];
                             // (Levels of both storages take the general
                             // path, which filters each as it is stored.)
-                            let taken =
+                            let sampled =
                                 sample_implicit_with(isa, &units, 1, st, req.mask, &mut got);
+                            let taken = sampled != Sampled::No;
                             if mixed && !taken {
                                 skipped += 1;
                                 continue;
@@ -1520,6 +1534,11 @@ mod tests {
                                         want.to_bits(),
                                         "implicit {isa:?} {min_filter:?} lane {lane} c {c}"
                                     );
+                                    // RGBA8 results need no flush.
+                                    let v = got[c][lane];
+                                    if sampled == Sampled::Unorm8 && lane != 9 {
+                                        assert!(v == 0.0 || v.is_normal(), "{v:e}");
+                                    }
                                 }
                             }
                         }
