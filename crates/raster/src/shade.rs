@@ -1796,11 +1796,16 @@ fn prefetch<T>(data: &[T]) {
         use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
         let start = data.as_ptr() as *const i8;
         let bytes = std::mem::size_of_val(data);
-        // Every line from the first byte's to the last byte's.
-        for offset in (0..bytes).step_by(64).chain(bytes.checked_sub(1)) {
+        // Every line from the first byte's to the last byte's: from the
+        // start of the first line, 64 bytes at a time.
+        let skew = start as usize % 64;
+        let mut offset = 0;
+        while offset < bytes + skew {
             // SAFETY: a prefetch is a hint: it never faults and reads
-            // nothing the program sees; the address is inside `data`.
-            unsafe { _mm_prefetch::<_MM_HINT_T0>(start.wrapping_add(offset)) }
+            // nothing the program sees (the address may be before `data`
+            // in its first line).
+            unsafe { _mm_prefetch::<_MM_HINT_T0>(start.wrapping_sub(skew).wrapping_add(offset)) }
+            offset += 64;
         }
     }
     #[cfg(not(target_arch = "x86_64"))]
