@@ -113,6 +113,20 @@ def inlined_from(lib, addresses):
     return out
 
 
+def print_asm(lib, by_addr, per):
+    """The executed instructions of one function, in address order, each
+    with its count divided by `per` (needs objdump)."""
+    lo, hi = min(by_addr), max(by_addr)
+    text = subprocess.run(["objdump", "-d", "--no-show-raw-insn", "-C",
+                           f"--start-address={hex(lo)}", f"--stop-address={hex(hi + 1)}", lib],
+                          capture_output=True, text=True).stdout
+    print("executed instructions")
+    for row in text.splitlines():
+        m = re.match(r"\s*([0-9a-f]+):\s+(.*)", row)
+        if m and int(m.group(1), 16) in by_addr:
+            print(f"{by_addr[int(m.group(1), 16)] / per:10.2f}  {m.group(1)}  {m.group(2)}")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("spec")
@@ -122,6 +136,9 @@ def main():
                     help="divide the counts by this (batches, fragments, ...)")
     ap.add_argument("--function", action="append", default=[])
     ap.add_argument("--lines", type=int, default=25)
+    ap.add_argument("--asm", action="store_true",
+                    help="also print each --function's executed instructions "
+                         "in address order with their counts (objdump)")
     args = ap.parse_args()
     lib = os.path.join(args.lib_dir, "libOSMesa.so")
     with tempfile.TemporaryDirectory() as tmp:
@@ -152,6 +169,8 @@ def main():
         print("by source line")
         for l, n in by_line.most_common(args.lines):
             print(f"{n / args.per:14.1f}  {l}")
+        if args.asm:
+            print_asm(lib, by_addr, args.per)
 
 
 if __name__ == "__main__":
