@@ -233,7 +233,9 @@ impl<'a> Lookup2D<'a> {
 }
 
 /// [`sample_in`] of `lookup` compiled for `isa` (the baseline one when
-/// the CPU lacks it).
+/// the CPU lacks it). Inlined into its callers, a dispatch to the
+/// variants (each its own function).
+#[inline(always)]
 fn sample_lookup(
     isa: Isa,
     units: &TextureUnits,
@@ -250,6 +252,16 @@ fn sample_lookup(
         Isa::Avx2 if isa.supported() => return unsafe { sample_avx2(units, lookup, out) },
         _ => {}
     }
+    sample_portable(units, lookup, out)
+}
+
+/// [`sample_in`] compiled for the baseline instruction set.
+#[inline(never)]
+fn sample_portable(
+    units: &TextureUnits,
+    lookup: &Lookup2D,
+    out: &mut [[f32; LANES]; 4],
+) -> Sampled {
     sample_in::<false, NO_WIDE>(units, lookup, out)
 }
 
