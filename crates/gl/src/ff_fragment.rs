@@ -142,6 +142,7 @@ impl Plan {
     /// The kernel's run on `batch` (see [`Plan::run_with`]), compiled for
     /// the widest vectors the CPU has: the same IEEE operations (Rust
     /// never fuses a multiply and an add), so the same bits.
+    #[inline(always)]
     fn run(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
         #[cfg(target_arch = "x86_64")]
         {
@@ -154,6 +155,13 @@ impl Plan {
                 return unsafe { self.run_avx2(batch, uniforms, textures) };
             }
         }
+        self.run_portable(batch, uniforms, textures)
+    }
+
+    /// [`Plan::run_with`] on its own (so that [`Plan::run`], inlined into
+    /// its caller, stays a dispatch).
+    #[inline(never)]
+    fn run_portable(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
         self.run_with(batch, uniforms, textures)
     }
 
