@@ -89,6 +89,21 @@ fn pass_vs() -> Stage {
 }
 
 /// gl_FragColor = gl_Color.
+/// gl_FragColor = gl_Color, reading nothing else ([`color_fs`]'s
+/// gl_FragCoord would rule strips out).
+fn strip_fs() -> Stage {
+    Stage {
+        iface: iface(
+            vec![slot("gl_Color", 0, 4)],
+            vec![slot("gl_FragColor", 0, 4)],
+        ),
+        f: Box::new(|b| {
+            copy(b, 0, 0, 4);
+            Ok(())
+        }),
+    }
+}
+
 fn color_fs() -> Stage {
     Stage {
         iface: iface(
@@ -291,18 +306,7 @@ fn strips_give_the_bytes_of_quads() {
         let w = 1.0 + 0.7 * i as f32;
         *p = [p[0] * w, p[1] * w, 0.25 * w, w];
     }
-    // gl_FragColor = gl_Color, reading nothing else (gl_FragCoord would
-    // rule strips out).
-    let fs = Stage {
-        iface: iface(
-            vec![slot("gl_Color", 0, 4)],
-            vec![slot("gl_FragColor", 0, 4)],
-        ),
-        f: Box::new(|b| {
-            copy(b, 0, 0, 4);
-            Ok(())
-        }),
-    };
+    let fs = strip_fs();
     let blended = Blend {
         src_rgb: BlendFactor::SrcAlpha,
         dst_rgb: BlendFactor::OneMinusSrcAlpha,
@@ -314,14 +318,19 @@ fn strips_give_the_bytes_of_quads() {
     for p in &mut crossing.pos {
         *p = [-p[1], p[0], 0.5 * p[3] - p[2], p[3]];
     }
-    for (blend, depth) in [
-        (None, false),
-        (Some(blended), false),
-        (None, true),
-        (Some(blended), true),
+    // Flat shading makes the colour a constant varying (which strips of
+    // one primitive leave in place, and the other triangle's replace).
+    for (blend, depth, flat) in [
+        (None, false, false),
+        (Some(blended), false, false),
+        (None, true, false),
+        (Some(blended), true, false),
+        (Some(blended), false, true),
+        (None, true, true),
     ] {
         let mut st = state(w as i32, h as i32);
         st.blend = blend;
+        st.flat_shading = flat;
         if depth {
             st.depth_test = Some(CompareFunc::Less);
         }
@@ -338,9 +347,54 @@ fn strips_give_the_bytes_of_quads() {
         for isa in crate::simd::Isa::all_supported() {
             let (with, without) =
                 crate::simd::with_isa(isa, || (draw(), crate::shade::without_strips(draw)));
-            assert_eq!(with, without, "{isa:?}, {blend:?}, depth {depth}");
+            assert_eq!(
+                with, without,
+                "{isa:?}, {blend:?}, depth {depth}, flat {flat}"
+            );
             assert!(with.iter().filter(|p| **p != [51, 102, 153, 204]).count() > w as usize * 30);
         }
+    }
+}
+
+#[test]
+fn strips_of_consecutive_primitives_take_their_own_constants() {
+    // Two flat-shaded triangles covering the whole framebuffer (a corner
+    // of the viewport, four times its size: no clipping, no edge inside),
+    // one after the other: every quad is whole, so the tile runs the
+    // first one's strips, then the second one's, with no quad between to
+    // refill the batch; the second's constant colour must replace the
+    // first's.
+    let (w, h) = (64, 64);
+    let big = [[-1.0, -1.0], [1.0, -1.0], [-1.0, 1.0]];
+    let colors = [
+        RED,
+        RED,
+        [0.3, 0.6, 0.9, 0.5],
+        GREEN,
+        GREEN,
+        [0.8, 0.1, 0.4, 0.25],
+    ];
+    let v = verts(&[big, big].concat(), &colors);
+    let mut st = state(4 * w as i32, 4 * h as i32);
+    st.flat_shading = true;
+    st.blend = Some(Blend {
+        src_rgb: BlendFactor::SrcAlpha,
+        dst_rgb: BlendFactor::OneMinusSrcAlpha,
+        ..Blend::default()
+    });
+    let draw = || {
+        let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, false, false);
+        fb.clear_color(&[0], [0.2, 0.4, 0.6, 0.8], [true; 4], None);
+        run(&mut fb, &st, &strip_fs(), Mode::Triangles, &v).unwrap();
+        fb.read_pixels_u8(0, 0, 0, w, h)
+    };
+    for isa in crate::simd::Isa::all_supported() {
+        let (with, without) =
+            crate::simd::with_isa(isa, || (draw(), crate::shade::without_strips(draw)));
+        assert_eq!(with, without, "{isa:?}");
+        // Both layers are in every pixel: not the clear colour, nor the
+        // first triangle's colour blended alone.
+        assert!(with.iter().all(|p| *p == with[0]), "{:?}", with[0]);
     }
 }
 
