@@ -5,7 +5,7 @@
 use crate::ex::{Batch, ExecError, Textures, LANES};
 use crate::fragment_ops::{self, Fragment, QuickOps, QuickTarget};
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
-use crate::interpolate::{offsets, Plane, PrimPlanes, QUAD_X, QUAD_Y, STRIP_X, STRIP_Y};
+use crate::interpolate::{offsets, Kind, Plane, PrimPlanes, QUAD_X, QUAD_Y, STRIP_X, STRIP_Y};
 use crate::linkage::FsLayout;
 use crate::rasterize::{PixelRect, Shape, STRIP};
 use crate::simd::Isa;
@@ -164,6 +164,18 @@ pub(crate) struct Place {
     count: usize,
     /// The lane of the first.
     first: usize,
+}
+
+/// What a strip leaves in the batch's inputs for the next one
+/// ([`FragmentStage::shade_strip`]): after a strip of `prim`, its
+/// constant varyings, so that its next strip fills only the fills listed
+/// in `varying[..count]` (indices into `FragmentStage::fills`). `None`
+/// after anything else filled the batch.
+#[derive(Default)]
+struct InPlace {
+    prim: Option<*const Prim>,
+    varying: [u16; 32],
+    count: usize,
 }
 
 /// Bit set in a lane mask for the `LANES / 4` quads of a batch.
@@ -756,6 +768,7 @@ impl<'a> FragmentStage<'a> {
         // Four whole quads side by side make one entry (`STRIP`) when
         // they may run as a strip.
         let strips = self.strips && matches!(sink, Sink::Quick(..));
+        let mut in_place = InPlace::default();
         for (i, &p) in bin.iter().enumerate() {
             let Some(&prim) = prims.get(p as usize) else {
                 continue;
@@ -765,6 +778,7 @@ impl<'a> FragmentStage<'a> {
                 .quads_into_strips(clip_to(prim, tile), quads, strips);
             for &(qx, qy, mask) in quads.iter() {
                 if mask & STRIP == 0 {
+                    let waiting = *n;
                     self.batch_quad(
                         &mut sink,
                         origin,
@@ -774,6 +788,10 @@ impl<'a> FragmentStage<'a> {
                         (prim, p),
                         (qx, qy, mask),
                     )?;
+                    // Fewer waiting: the batch was filled and run.
+                    if *n < waiting {
+                        in_place.prim = None;
+                    }
                     continue;
                 }
                 // A batch of its own: the quads waiting go first (a strip
@@ -782,9 +800,11 @@ impl<'a> FragmentStage<'a> {
                 if *n > 0 {
                     self.flush_sink(&mut sink, origin, batch, &slots[..*n])?;
                     *n = 0;
+                    in_place.prim = None;
                 }
                 if let Sink::Quick(target, o) = &mut sink {
-                    self.shade_strip(target, *o, batch, slots, prim, p, (qx, qy))?;
+                    let strip = (prim, p, (qx, qy));
+                    self.shade_strip(target, *o, batch, slots, strip, &mut in_place)?;
                 }
             }
         }
@@ -856,9 +876,8 @@ impl<'a> FragmentStage<'a> {
         o: usize,
         batch: &mut Batch,
         slots: &mut [Entry<'p>; LANES / 4],
-        prim: &'p Prim,
-        index: u32,
-        (qx, qy): (i64, i64),
+        (prim, index, (qx, qy)): (&'p Prim, u32, (i64, i64)),
+        in_place: &mut InPlace,
     ) -> Result<(), ExecError> {
         let planes = &prim.planes;
         let (x, y) = prim.offsets((qx, qy), &STRIP_X, &STRIP_Y);
@@ -877,10 +896,35 @@ impl<'a> FragmentStage<'a> {
         batch.discarded = 0;
         let rw = planes.reciprocal_w(&x, &y);
         let varyings = self.prim_attrs(prim);
-        for l in &self.fills {
-            if let (Some(lanes), Some(p)) = (batch.inputs.get_mut(l.offset), varyings.get(l.li)) {
-                *lanes = p.values(&x, &y, &rw);
+        let me = prim as *const Prim;
+        if in_place.prim == Some(me) {
+            // After a strip of this primitive (stages only read their
+            // inputs): its constant varyings are in place.
+            let list = in_place.varying.get(..in_place.count).unwrap_or(&[]);
+            for l in list.iter().filter_map(|&i| self.fills.get(i as usize)) {
+                if let (Some(lanes), Some(p)) = (batch.inputs.get_mut(l.offset), varyings.get(l.li))
+                {
+                    *lanes = p.values(&x, &y, &rw);
+                }
             }
+        } else {
+            let mut count = 0;
+            for (i, l) in self.fills.iter().enumerate() {
+                if let (Some(lanes), Some(p)) = (batch.inputs.get_mut(l.offset), varyings.get(l.li))
+                {
+                    *lanes = p.values(&x, &y, &rw);
+                    if p.kind != Kind::Constant {
+                        if let Some(v) = in_place.varying.get_mut(count) {
+                            *v = i as u16;
+                        }
+                        count += 1;
+                    }
+                }
+            }
+            // (Too many varying inputs to list: filled in full each time.)
+            let fits = count <= in_place.varying.len() && self.fills.len() <= u16::MAX as usize;
+            in_place.count = count;
+            in_place.prim = fits.then_some(me);
         }
         self.run_shader(batch)?;
         // Every pixel passing (no depth test: the write does not test
