@@ -552,7 +552,8 @@ unsafe fn lookup_2d_in<V: Lanes16>(
         }
         let mut texel = [V::zero(); 4];
         for (v, o) in texel.iter_mut().zip(&out) {
-            // (Texels said to have no subnormals, and zeros, are flushed.)
+            // (No flush when the lookup says no texel is subnormal; the
+            // lanes outside `cur` are zeros.)
             *v = match normal {
                 true => V::load(o),
                 false => V::flush(V::load(o)),

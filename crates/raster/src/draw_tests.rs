@@ -88,7 +88,6 @@ fn pass_vs() -> Stage {
     }
 }
 
-/// gl_FragColor = gl_Color.
 /// gl_FragColor = gl_Color, reading nothing else ([`color_fs`]'s
 /// gl_FragCoord would rule strips out).
 fn strip_fs() -> Stage {
@@ -104,6 +103,7 @@ fn strip_fs() -> Stage {
     }
 }
 
+/// gl_FragColor = gl_Color.
 fn color_fs() -> Stage {
     Stage {
         iface: iface(

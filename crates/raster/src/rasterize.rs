@@ -430,10 +430,10 @@ impl Shape {
             area,
             #[inline(always)]
             |qx, qy, mask, walk| {
-                if mask == 0xf && walk.whole_ahead(4) {
-                    // The run of whole strips from here, pushed at once
-                    // (one visit of the walk instead of one a strip).
-                    let n = walk.whole_strips();
+                // The run of whole strips from here, pushed at once (one
+                // visit of the walk instead of one a strip).
+                let n = if mask == 0xf { walk.whole_strips() } else { 0 };
+                if n > 0 {
                     out.extend((0..n).map(|k| (qx + 8 * k, qy, STRIP | 0xf)));
                     return 4 * n - 1;
                 }
@@ -673,41 +673,27 @@ pub(crate) struct WalkQuad<'a> {
 }
 
 impl WalkQuad<'_> {
-    /// For a whole quad (every pixel covered and inside the clip),
-    /// whether the `n − 1` quads to its right are whole too: an edge
-    /// decreasing to the right by `2|a|` per quad keeps all four pixels at
-    /// or above its threshold `n − 1` quads further when the least of its
-    /// four values over the threshold is at least `(n − 1)·2|a|`; the
-    /// other edges only grow; and the quads must end inside the clip.
-    #[inline(always)]
-    pub fn whole_ahead(&self, n: i64) -> bool {
-        if self.x_end - self.qx < 2 * n {
-            return false;
-        }
-        let mut ok = true;
-        for (o, &a) in self.over.iter().zip(self.a) {
-            if a < 0 {
-                let m = o.to_array().into_iter().min().unwrap_or(0);
-                ok &= m >= (n - 1) * -2 * a;
-            }
-        }
-        ok
-    }
-
-    /// For a quad that starts a strip ([`WalkQuad::whole_ahead`] of 4),
-    /// how many strips of four whole quads follow one another from it (at
-    /// least 1): the largest k with `whole_ahead(4k)`, found with the
-    /// edges' least values taken once.
+    /// For a whole quad (every pixel covered and inside the clip), how
+    /// many strips of four whole quads follow one another from it: the
+    /// largest k (0 if none) such that the `4k − 1` quads to its right are
+    /// whole too. An edge decreasing to the right by `2|a|` per quad keeps
+    /// all four pixels at or above its threshold `j` quads further when the
+    /// least of its four values over the threshold is at least `j·2|a|`;
+    /// the other edges only grow; and the quads must end inside the clip.
     #[inline(always)]
     pub fn whole_strips(&self) -> i64 {
+        let inside = (self.x_end - self.qx) / 8;
+        if inside <= 0 {
+            return 0;
+        }
+        // Per decreasing edge, its least value and its step per quad.
         let mut least = [(i64::MAX, 0i64); 3];
         for ((l, o), &a) in least.iter_mut().zip(self.over).zip(self.a) {
             if a < 0 {
                 *l = (o.to_array().into_iter().min().unwrap_or(0), -2 * a);
             }
         }
-        let inside = (self.x_end - self.qx) / 8;
-        let mut k = 1;
+        let mut k = 0;
         while k < inside
             && least
                 .iter()
