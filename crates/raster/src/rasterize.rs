@@ -534,19 +534,16 @@ fn walk_in(
 
 /// Visits the quads of a triangle inside `r` (non-empty, within the
 /// primitive's bounds), row-major: `f(qx, qy, mask, walk)` with the pixels
-/// covered (mask bit `(y - qy) * 2 + (x - qx)`, possibly none; the quads
-/// a row starts with that lie wholly outside an edge are not visited),
-/// returning
-/// how many of the following quads to pass over (see [`WalkQuad`]). Each edge is
-/// the integer linear form `s(x, y) = a·x + b·y + c` (the orientation
-/// times [`edge`] at the pixel center), stepped by additions; a pixel is
-/// covered when every edge is at least its threshold there: 0 on an edge
-/// the triangle owns (top-left rule), else 1. The walk keeps each edge's
-/// value minus its threshold at a quad's four pixels in a [`Quad4`]
-/// (vector registers on x86-64), so that a pixel is outside an edge
-/// exactly where that difference is negative (its sign bit), and a row
-/// of quads ends as soon as one edge that only decreases to the right is
-/// below its threshold on the whole quad.
+/// covered (mask bit `(y - qy) * 2 + (x - qx)`; every quad with a pixel
+/// covered is visited, some without any: callers skip a zero mask),
+/// returning how many of the following quads to pass over (see
+/// [`WalkQuad`]). Each edge is the integer linear form `s(x, y) = a·x +
+/// b·y + c` (the orientation times [`edge`] at the pixel center); a pixel
+/// is covered when every edge is at least its threshold there: 0 on an
+/// edge the triangle owns (top-left rule), else 1. Areas a few quads wide
+/// (small triangles, tile borders) are evaluated a row at a time in i32
+/// lanes ([`narrow_quads_each`]); the others by [`wide_quads_each`]'s
+/// steps.
 #[inline(always)]
 fn triangle_quads_each(
     p: &[(i64, i64); 3],
@@ -554,18 +551,45 @@ fn triangle_quads_each(
     r: PixelRect,
     mut f: impl FnMut(i64, i64, u8, &WalkQuad) -> i64,
 ) {
-    let mut a = [0i64; 3];
-    let mut b = [0i64; 3];
-    let mut c = [0i64; 3];
-    let mut threshold = [0i64; 3];
+    let [a, b, c, threshold] = walk_edges(p, sign);
+    let edges = (&a, &b, &c, &threshold);
+    if !narrow_quads_each(edges, r, &mut f) {
+        wide_quads_each(edges, r, f);
+    }
+}
+
+/// Per edge k of a triangle `(p, sign)`, its integer linear form `a·x +
+/// b·y + c` at pixel centers (the orientation times [`edge`]) and its
+/// threshold (0 on an edge the triangle owns, else 1): `[a, b, c,
+/// threshold]`.
+#[inline(always)]
+fn walk_edges(p: &[(i64, i64); 3], sign: i64) -> [[i64; 3]; 4] {
+    let mut e = [[0i64; 3]; 4];
     for k in 0..3 {
         let (pa, pb) = (p[(k + 1) % 3], p[(k + 2) % 3]);
         let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
-        a[k] = -sign * ey * ONE;
-        b[k] = sign * ex * ONE;
-        c[k] = sign * (ex * (HALF - pa.1) - ey * (HALF - pa.0));
-        threshold[k] = 1 - owns_edge(p, k, sign) as i64;
+        e[0][k] = -sign * ey * ONE;
+        e[1][k] = sign * ex * ONE;
+        e[2][k] = sign * (ex * (HALF - pa.1) - ey * (HALF - pa.0));
+        e[3][k] = 1 - owns_edge(p, k, sign) as i64;
     }
+    e
+}
+
+/// [`triangle_quads_each`] by stepping from quad to quad (any area; the
+/// edges as [`narrow_quads_each`] takes them). The walk keeps each edge's
+/// value minus its threshold at a quad's four pixels in a [`Quad4`]
+/// (vector registers on x86-64), so that a pixel is outside an edge
+/// exactly where that difference is negative (its sign bit); the quads a
+/// row starts with that lie wholly outside an edge are passed over, and a
+/// row ends as soon as one edge that only decreases to the right is below
+/// its threshold on the whole quad.
+#[inline(always)]
+fn wide_quads_each(
+    (a, b, c, threshold): (&[i64; 3], &[i64; 3], &[i64; 3], &[i64; 3]),
+    r: PixelRect,
+    mut f: impl FnMut(i64, i64, u8, &WalkQuad) -> i64,
+) {
     // Pixel i of a quad from its first: (i & 1, i >> 1).
     let offset: [[i64; 4]; 3] = std::array::from_fn(|k| [0, a[k], b[k], a[k] + b[k]]);
     let step: [Quad4; 3] = std::array::from_fn(|k| Quad4::splat(2 * a[k]));
@@ -586,12 +610,12 @@ fn triangle_quads_each(
         // outside a growing edge are passed over at once (quads that
         // cover nothing; narrow areas have few, not worth the look).
         let ahead = match r.2 - x0 >= WIDE_ROW {
-            true => row_start(&over, &a, !decreasing & 0b111),
+            true => row_start(&over, a, !decreasing & 0b111),
             false => 0,
         };
         if ahead > 0 {
             let ahead = ahead.min((r.2 - qx + 1) / 2);
-            for (o, &a) in over.iter_mut().zip(&a) {
+            for (o, &a) in over.iter_mut().zip(a) {
                 *o = o.add(Quad4::splat(2 * a * ahead));
             }
             qx += 2 * ahead;
@@ -609,8 +633,8 @@ fn triangle_quads_each(
                 break;
             }
             let walk = WalkQuad {
-                over: &over,
-                a: &a,
+                over: Some(&over),
+                a,
                 qx,
                 x_end: r.2,
             };
@@ -621,7 +645,7 @@ fn triangle_quads_each(
                 // (Checked first: callers that never skip compile none of
                 // this.)
                 let skip = skip.min((r.2 - qx) / 2);
-                for (o, &a) in over.iter_mut().zip(&a) {
+                for (o, &a) in over.iter_mut().zip(a) {
                     *o = o.add(Quad4::splat(2 * a * skip));
                 }
                 qx += 2 * skip;
@@ -633,6 +657,117 @@ fn triangle_quads_each(
         }
         qy += 2;
     }
+}
+
+/// The widest area, in pixels from its first quad's column, that
+/// [`narrow_quads_each`] takes: two groups of four quads a row.
+const NARROW: i64 = 16;
+
+/// [`triangle_quads_each`] over an area at most [`NARROW`] pixels wide
+/// whose edge values (less thresholds) fit in i32 lanes: true when it ran,
+/// false (nothing done) otherwise. Every quad of a quad row is evaluated,
+/// four at a time and without branches: a pixel is outside an edge where
+/// its value is negative, so outside some edge where the OR of the three
+/// values is (one sign bit for all three); then `f` visits the covered
+/// quads only, in row-major order (the quads the walk would visit with
+/// pixels covered). There are no strips here ([`WalkQuad::whole_strips`]
+/// is 0).
+#[inline(always)]
+fn narrow_quads_each(
+    (a, b, c, threshold): (&[i64; 3], &[i64; 3], &[i64; 3], &[i64; 3]),
+    r: PixelRect,
+    f: &mut impl FnMut(i64, i64, u8, &WalkQuad) -> i64,
+) -> bool {
+    let (x0, y0) = (r.0 & !1, r.1 & !1);
+    let width = r.2 - x0;
+    if width > NARROW {
+        return false;
+    }
+    // Groups of four quads (eight pixel columns) a row; whole quad rows.
+    let groups = if width > NARROW / 2 { 2 } else { 1 };
+    let rows = (r.3 - y0 + 1) & !1;
+    let mut g = [0i64; 3];
+    for k in 0..3 {
+        g[k] = a[k] * x0 + b[k] * y0 + c[k] - threshold[k];
+    }
+    // Every value reached (one step past the last column and row
+    // included: offsets up to 17 pixels right and `rows` + 1 down) is
+    // below 2^31 in magnitude when those at the first pixel are below
+    // 2^29, the steps per pixel below 2^22 and `rows` at most 256:
+    // 2^29 + 2^22 · (17 + 257) < 2^31. A value x is below 2^n in
+    // magnitude when x + 2^n, as unsigned, is below 2^(n + 1), and an OR
+    // of such values is below 2^(n + 1) exactly when each is.
+    let near = |x: i64, n: u32| (x.wrapping_add(1 << n)) as u64;
+    let firsts = near(g[0], 29) | near(g[1], 29) | near(g[2], 29);
+    let steps = (0..3).fold(0u64, |m, k| m | near(a[k], 22) | near(b[k], 22));
+    if firsts >= 1 << 30 || steps >= 1 << 23 || rows > 256 {
+        return false;
+    }
+    let mut first = [Lanes4::splat(0); 3];
+    let mut right = [Lanes4::splat(0); 3];
+    let mut down = [Lanes4::splat(0); 3];
+    for k in 0..3 {
+        let (g, a, b) = (g[k] as i32, a[k] as i32, b[k] as i32);
+        // Pixel i of a quad from its first: (i & 1, i >> 1).
+        first[k] = Lanes4::new([g, g + a, g + b, g + a + b]);
+        right[k] = Lanes4::splat(2 * a);
+        down[k] = Lanes4::splat(2 * b);
+    }
+    // Nibble q: the pixels of quad q of the row inside the area's
+    // columns. Bit i of `columns`: pixel column x0 + i is in r.0..r.2
+    // (x0 is r.0 or r.0 − 1); its pairs spread to nibbles (bits 0–1),
+    // copied to the quads' lower rows (bits 2–3).
+    let columns = ((1u32 << width as u32) - 1) & !((1u32 << (r.0 - x0) as u32) - 1);
+    let mut spread = (columns | (columns << 8)) & 0x00ff_00ff;
+    spread = (spread | (spread << 4)) & 0x0f0f_0f0f;
+    spread = (spread | (spread << 2)) & 0x3333_3333;
+    let in_columns = spread | (spread << 2);
+    let none = WalkQuad {
+        over: None,
+        a,
+        qx: x0,
+        x_end: x0,
+    };
+    let mut row = first;
+    let mut qy = y0;
+    while qy < r.3 {
+        // Nibble q: the pixels of quad q outside some edge.
+        let mut outside = 0u32;
+        let mut v = row;
+        for q in 0..4 * groups {
+            let m = v[0].or(v[1]).or(v[2]).negative();
+            outside |= u32::from(m) << (4 * q);
+            for (v, s) in v.iter_mut().zip(&right) {
+                *v = v.add(*s);
+            }
+        }
+        let in_rows =
+            (if qy >= r.1 { 0b0011u32 } else { 0 }) | (if qy + 1 < r.3 { 0b1100 } else { 0 });
+        let mut covered = !outside & in_columns & (in_rows * 0x1111_1111);
+        while covered != 0 {
+            let q = covered.trailing_zeros() / 4;
+            let mask = ((covered >> (4 * q)) & 0xf) as u8;
+            let qx = x0 + 2 * i64::from(q);
+            let skip = f(
+                qx,
+                qy,
+                mask,
+                &WalkQuad {
+                    qx,
+                    x_end: qx,
+                    ..none
+                },
+            );
+            // The quads passed over (none without strips) and this one.
+            let done = 4 * (i64::from(q) + 1 + skip.clamp(0, 8)) as u32;
+            covered &= u32::MAX.checked_shl(done).unwrap_or(0);
+        }
+        for (v, s) in row.iter_mut().zip(&down) {
+            *v = v.add(*s);
+        }
+        qy += 2;
+    }
+    true
 }
 
 /// The width in pixels from which [`triangle_quads_each`] looks for the
@@ -665,7 +800,9 @@ fn row_start(over: &[Quad4; 3], a: &[i64; 3], growing: u8) -> i64 {
 /// A quad of [`triangle_quads_each`]'s walk, for a caller that takes
 /// runs of whole quads at once ([`Shape::quads_into_strips`]).
 pub(crate) struct WalkQuad<'a> {
-    over: &'a [Quad4; 3],
+    /// The edge values less thresholds at the quad's pixels (`None` where
+    /// the walk takes no strips).
+    over: Option<&'a [Quad4; 3]>,
     a: &'a [i64; 3],
     qx: i64,
     /// The clip rectangle's right end.
@@ -683,12 +820,12 @@ impl WalkQuad<'_> {
     #[inline(always)]
     pub fn whole_strips(&self) -> i64 {
         let inside = (self.x_end - self.qx) / 8;
-        if inside <= 0 {
+        let Some(over) = self.over.filter(|_| inside > 0) else {
             return 0;
-        }
+        };
         // Per decreasing edge, its least value and its step per quad.
         let mut least = [(i64::MAX, 0i64); 3];
-        for ((l, o), &a) in least.iter_mut().zip(self.over).zip(self.a) {
+        for ((l, o), &a) in least.iter_mut().zip(over).zip(self.a) {
             if a < 0 {
                 *l = (o.to_array().into_iter().min().unwrap_or(0), -2 * a);
             }
@@ -805,6 +942,97 @@ impl Quad4 {
     }
 }
 
+/// Four i32, one per pixel of a quad ([`narrow_quads_each`]): one SSE2
+/// register on x86-64, an array elsewhere. Wrapping additions (the
+/// values used never overflow: the walk checks their reach first).
+#[derive(Clone, Copy)]
+struct Lanes4 {
+    #[cfg(target_arch = "x86_64")]
+    v: std::arch::x86_64::__m128i,
+    #[cfg(not(target_arch = "x86_64"))]
+    v: [i32; 4],
+}
+
+impl Lanes4 {
+    #[inline(always)]
+    fn new(x: [i32; 4]) -> Lanes4 {
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::arch::x86_64::*;
+            // SAFETY: SSE2 is part of the x86-64 baseline.
+            unsafe {
+                Lanes4 {
+                    v: _mm_setr_epi32(x[0], x[1], x[2], x[3]),
+                }
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            Lanes4 { v: x }
+        }
+    }
+
+    #[inline(always)]
+    fn splat(x: i32) -> Lanes4 {
+        Lanes4::new([x; 4])
+    }
+
+    #[inline(always)]
+    fn add(self, o: Lanes4) -> Lanes4 {
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::arch::x86_64::*;
+            // SAFETY: SSE2 is part of the x86-64 baseline.
+            unsafe {
+                Lanes4 {
+                    v: _mm_add_epi32(self.v, o.v),
+                }
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            Lanes4 {
+                v: std::array::from_fn(|i| self.v[i].wrapping_add(o.v[i])),
+            }
+        }
+    }
+
+    #[inline(always)]
+    fn or(self, o: Lanes4) -> Lanes4 {
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::arch::x86_64::*;
+            // SAFETY: SSE2 is part of the x86-64 baseline.
+            unsafe {
+                Lanes4 {
+                    v: _mm_or_si128(self.v, o.v),
+                }
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            Lanes4 {
+                v: std::array::from_fn(|i| self.v[i] | o.v[i]),
+            }
+        }
+    }
+
+    /// Bit `i` set where element `i` is negative (its sign bit).
+    #[inline(always)]
+    fn negative(self) -> u8 {
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::arch::x86_64::*;
+            // SAFETY: SSE2 is part of the x86-64 baseline.
+            unsafe { _mm_movemask_ps(_mm_castsi128_ps(self.v)) as u8 }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            (0..4).fold(0u8, |m, i| m | (u8::from(self.v[i] < 0) << i))
+        }
+    }
+}
+
 fn inside(r: PixelRect, x: i64, y: i64) -> bool {
     x >= r.0 && x < r.2 && y >= r.1 && y < r.3
 }
@@ -889,6 +1117,59 @@ mod tests {
             assert_eq!(expanded, t.quads(clip), "{v:?}");
         }
         assert!(strips > 5000, "{strips} strips");
+    }
+
+    /// Narrow areas evaluated four quads at a time cover what the
+    /// quad-by-quad walk covers; areas whose values would not fit in i32
+    /// (huge triangles, far coordinates) are declined.
+    #[test]
+    fn narrow_areas_cover_as_the_walk_does() {
+        let (mut ran, mut declined) = (0, 0);
+        for (i, (v, t, _, _)) in random_triangles(0x7F4A_7C15_9E37_79B9, 8000)
+            .into_iter()
+            .enumerate()
+        {
+            let Shape::Triangle { p, sign, .. } = t else {
+                unreachable!()
+            };
+            let i = i as i64;
+            // Widths 1 to 18 pixels from odd and even columns, 1 to 23
+            // tall, near a vertex.
+            let corner = v[i as usize % 3];
+            let (x, y) = (corner.x as i64 - 6 + i % 3, corner.y as i64 - 5 + i % 2);
+            let clip = (x, y, x + 1 + i % 18, y + 1 + i % 23);
+            let area = t.area(clip);
+            if area.0 >= area.2 || area.1 >= area.3 {
+                continue;
+            }
+            let [a, b, c, threshold] = walk_edges(&p, sign);
+            let edges = (&a, &b, &c, &threshold);
+            let mut narrow = Vec::new();
+            let took = narrow_quads_each(edges, area, &mut |x, y, m, w: &WalkQuad| {
+                assert_eq!(w.whole_strips(), 0);
+                narrow.push((x, y, m));
+                0
+            });
+            let mut wide = Vec::new();
+            wide_quads_each(edges, area, |x, y, m, _| {
+                if m != 0 {
+                    wide.push((x, y, m));
+                }
+                0
+            });
+            if took {
+                assert_eq!(narrow, wide, "{v:?} in {area:?}");
+                assert!(narrow.iter().all(|q| q.2 != 0));
+                ran += 1;
+            } else {
+                assert!(narrow.is_empty());
+                declined += usize::from(area.2 - (area.0 & !1) <= NARROW);
+            }
+        }
+        assert!(
+            ran > 2000 && declined > 1000,
+            "{ran} ran, {declined} declined"
+        );
     }
 
     #[test]
