@@ -606,6 +606,56 @@ fn shader_errors_stop_the_draw() {
     ));
 }
 
+/// Vertices no index names may run (every vertex of a small index range
+/// does), but only a named vertex's failure stops the draw.
+#[test]
+fn only_named_vertices_fail_a_draw() {
+    // The pass-through vertex stage, failing on a vertex at x = 99.
+    let vs = Stage {
+        iface: pass_vs().iface,
+        f: Box::new(|b| {
+            let bad = b.inputs[0]
+                .iter()
+                .enumerate()
+                .any(|(l, &x)| b.active >> l & 1 == 1 && x == 99.0);
+            if bad {
+                return Err(ExecError::LoopBudget { iterations: 5 });
+            }
+            copy(b, 0, 0, 12);
+            Ok(())
+        }),
+    };
+    // Vertex 1 fails; 0, 2 and 3 cover the lower right half.
+    let v = verts(
+        &[[-1.0, -1.0], [99.0, 0.0], [1.0, -1.0], [1.0, 1.0]],
+        &[RED; 4],
+    );
+    let draw = |indices: &[u32]| {
+        let mut fb = Framebuffer::new(8, 8, ColorFormat::Rgba8, false, false);
+        let r = draw_stages(
+            &Workers::inline(),
+            &mut fb,
+            &state(8, 8),
+            &vs,
+            &[],
+            &color_fs(),
+            &[],
+            Mode::Triangles,
+            indices,
+            &v,
+            &TextureUnits::default(),
+        );
+        r.map(|()| fb.read_pixels_u8(0, 0, 0, 8, 8))
+    };
+    // Six indices over the range 0..=3: the whole range may run.
+    let px = draw(&[0, 2, 3, 0, 2, 3]).expect("vertex 1 is not named");
+    assert_eq!(px.iter().filter(|p| **p == [255, 0, 0, 255]).count(), 36);
+    assert!(matches!(
+        draw(&[0, 1, 2, 0, 2, 3]),
+        Err(DrawError::Exec(ExecError::LoopBudget { iterations: 5 }))
+    ));
+}
+
 #[test]
 fn helper_lanes_are_run_but_not_written() {
     // A one-pixel triangle: its quad runs 4 lanes, only one is written.

@@ -204,6 +204,16 @@ pub(crate) fn assemble(mode: Mode, count: usize, mut emit: impl FnMut(Assembled)
 /// in `indices`, the vertex number, and the outputs of every vertex
 /// (`layout.outputs` values each). Batches of `LANES` vertices run as
 /// separate tasks on `workers`; each writes only its own vertices.
+///
+/// When the index range holds at most as many vertices as there are
+/// indices (arrays, and meshes whose vertices are all used), every vertex
+/// of the range runs, in order, without the pass over the indices that
+/// finds the distinct ones (which runs on this thread alone while the
+/// workers wait): a vertex no index names costs a lane and changes
+/// nothing, vertex shaders having no side effects, unless it fails (a
+/// loop budget), when the draw runs again with the distinct vertices
+/// only, so that only theirs can fail it. (The debugger's probe lists
+/// the vertices that run: only the named ones.)
 #[allow(clippy::too_many_arguments)]
 fn run_vertices(
     workers: &Workers,
@@ -215,6 +225,34 @@ fn run_vertices(
     layout: &VsLayout,
     clamp_colors: bool,
     probe: Option<&crate::probe::Probe>,
+) -> Result<(Vec<u32>, Vec<f32>), DrawError> {
+    let run = |whole_range| {
+        run_vertices_with(
+            workers,
+            (vs, uniforms, textures),
+            indices,
+            fetch,
+            (layout, clamp_colors),
+            probe,
+            whole_range,
+        )
+    };
+    match run(probe.is_none()) {
+        Err(DrawError::Exec(_)) if probe.is_none() => run(false),
+        r => r,
+    }
+}
+
+/// [`run_vertices`], with every vertex of the index range when
+/// `whole_range` allows it.
+fn run_vertices_with(
+    workers: &Workers,
+    (vs, uniforms, textures): (&dyn ShaderStage, &[u32], &(dyn Textures + Sync)),
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    (layout, clamp_colors): (&VsLayout, bool),
+    probe: Option<&crate::probe::Probe>,
+    whole_range: bool,
 ) -> Result<(Vec<u32>, Vec<f32>), DrawError> {
     let iface: &Interface = vs.interface();
     if indices.len() >= u32::MAX as usize {
@@ -233,7 +271,10 @@ fn run_vertices(
     let lo = indices.iter().copied().min().unwrap_or(0);
     let hi = indices.iter().copied().max().unwrap_or(0);
     let span = (hi - lo) as usize + 1;
-    if span <= 4 * indices.len() + 1024 {
+    if whole_range && span <= indices.len() {
+        unique.extend(lo..=hi);
+        vertex_of.extend(indices.iter().map(|&ix| ix - lo));
+    } else if span <= 4 * indices.len() + 1024 {
         unique.reserve(span.min(indices.len()));
         slot.resize(span, u32::MAX);
         for &ix in indices {
