@@ -729,11 +729,12 @@ pub(crate) fn load(
 pub(crate) fn load_inputs(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batch) {
     #[cfg(target_arch = "x86_64")]
     {
-        if std::is_x86_feature_detected!("avx512f") {
+        use crate::cpu::{supports, Features};
+        if supports(Features::AVX512F) {
             // SAFETY: the CPU has AVX-512 F.
             return unsafe { load_inputs_avx512(k, code, file, batch) };
         }
-        if std::is_x86_feature_detected!("avx2") {
+        if supports(Features::AVX2) {
             // SAFETY: the CPU has AVX2.
             return unsafe { load_inputs_avx2(k, code, file, batch) };
         }
@@ -788,11 +789,12 @@ fn load_inputs_with(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batc
 pub(crate) fn store_outputs(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
     #[cfg(target_arch = "x86_64")]
     {
-        if std::is_x86_feature_detected!("avx512f") {
+        use crate::cpu::{supports, Features};
+        if supports(Features::AVX512F) {
             // SAFETY: the CPU has AVX-512 F.
             return unsafe { store_outputs_avx512(k, file, batch) };
         }
-        if std::is_x86_feature_detected!("avx2") {
+        if supports(Features::AVX2) {
             // SAFETY: the CPU has AVX2.
             return unsafe { store_outputs_avx2(k, file, batch) };
         }

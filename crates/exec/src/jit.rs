@@ -300,14 +300,7 @@ impl Cache {
 /// SSE4.1 (Cranelift's `floor`/`ceil` are then `roundps`, which honours
 /// DAZ; without it they are calls into Rust).
 pub(crate) fn daz() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        std::is_x86_feature_detected!("sse4.1")
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        false
-    }
+    crate::cpu::supports(crate::cpu::Features::SSE41)
 }
 
 /// Whether Cranelift generates code for this CPU (checked once).

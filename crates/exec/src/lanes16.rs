@@ -23,35 +23,17 @@
 
 #![allow(clippy::missing_safety_doc)]
 
+use crate::cpu::{supports, Features};
 use std::arch::x86_64::*;
-use std::sync::atomic::{AtomicU8, Ordering};
 
-/// What this CPU supports, found on first use: [`X256`] (bit 0),
-/// [`X512`] (bit 1), and bit 7 once known (the callers ask per batch:
-/// one load instead of a detection per feature).
-static SUPPORT: AtomicU8 = AtomicU8::new(0);
-
-/// [`SUPPORT`], detected on first use.
-#[inline(always)]
-fn support() -> u8 {
-    match SUPPORT.load(Ordering::Relaxed) {
-        0 => detect_support(),
-        known => known,
-    }
-}
-
-#[cold]
-fn detect_support() -> u8 {
-    let avx2 = std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma");
-    let avx512 = avx2
-        && std::is_x86_feature_detected!("avx512f")
-        && std::is_x86_feature_detected!("avx512bw")
-        && std::is_x86_feature_detected!("avx512dq")
-        && std::is_x86_feature_detected!("avx512vl");
-    let known = 0x80 | u8::from(avx2) | (u8::from(avx512) << 1);
-    SUPPORT.store(known, Ordering::Relaxed);
-    known
-}
+/// The features [`X256`] is compiled with.
+const X256_FEATURES: Features = Features::AVX2.and(Features::FMA);
+/// The features [`X512`] is compiled with.
+const X512_FEATURES: Features = X256_FEATURES
+    .and(Features::AVX512F)
+    .and(Features::AVX512BW)
+    .and(Features::AVX512DQ)
+    .and(Features::AVX512VL);
 
 /// Sixteen lanes of f32 ([`Lanes16::F`]), i32 ([`Lanes16::I`]) and
 /// lane masks ([`Lanes16::M`]); see the module documentation.
@@ -167,7 +149,7 @@ impl Lanes16 for X512 {
 
     #[inline]
     fn supported() -> bool {
-        support() & 2 != 0
+        supports(X512_FEATURES)
     }
 
     #[inline(always)]
@@ -533,7 +515,7 @@ impl Lanes16 for X256 {
 
     #[inline]
     fn supported() -> bool {
-        support() & 1 != 0
+        supports(X256_FEATURES)
     }
 
     #[inline(always)]

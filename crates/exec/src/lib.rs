@@ -177,6 +177,7 @@
 //! - Programs beyond [`limits::MAX_REGISTERS`] registers or
 //!   [`limits::MAX_OPS`] instructions are refused.
 
+pub mod cpu;
 mod depth_slice;
 mod engine;
 mod float_env;

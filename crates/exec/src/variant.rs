@@ -1,10 +1,11 @@
 //! Which variant of the executor runs: the same interpreter built for the
 //! baseline instruction set, for AVX2 or for AVX-512, or native code
 //! generated per kernel (`jit`), chosen once per process from the CPU
-//! (`is_x86_feature_detected!`, whether Cranelift supports it) and the
+//! ([`crate::cpu`], whether Cranelift supports it) and the
 //! environment variable `SHADERBOX_KERNEL=jit|portable|avx2|avx512`. Every
 //! variant computes the same bits (tests compare them); only speed differs.
 
+use crate::cpu::{supports, Features};
 use std::sync::atomic::{AtomicU8, Ordering};
 
 /// A compiled variant of the executor.
@@ -47,15 +48,15 @@ impl Variant {
             #[cfg(feature = "jit")]
             Variant::Jit => crate::jit::supported(),
             #[cfg(target_arch = "x86_64")]
-            Variant::Avx2 => std::is_x86_feature_detected!("avx2"),
+            Variant::Avx2 => supports(Features::AVX2),
             #[cfg(target_arch = "x86_64")]
-            Variant::Avx512 => {
-                std::is_x86_feature_detected!("avx512f")
-                    && std::is_x86_feature_detected!("avx512bw")
-                    && std::is_x86_feature_detected!("avx512dq")
-                    && std::is_x86_feature_detected!("avx512vl")
-                    && std::is_x86_feature_detected!("avx2")
-            }
+            Variant::Avx512 => supports(
+                Features::AVX512F
+                    .and(Features::AVX512BW)
+                    .and(Features::AVX512DQ)
+                    .and(Features::AVX512VL)
+                    .and(Features::AVX2),
+            ),
             #[cfg(not(target_arch = "x86_64"))]
             _ => false,
         }

@@ -23,26 +23,22 @@ pub(crate) enum Isa {
 }
 
 impl Isa {
-    /// Whether this CPU runs code compiled for `self`.
+    /// Whether this CPU runs code compiled for `self` (`exec::cpu`'s
+    /// detection).
     pub fn supported(self) -> bool {
+        use crate::ex::cpu::{supports, Features};
+        let avx2 = Features::AVX2
+            .and(Features::POPCNT)
+            .and(Features::BMI1)
+            .and(Features::LZCNT);
         match self {
             Isa::Base => true,
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 => {
-                std::is_x86_feature_detected!("avx2")
-                    && std::is_x86_feature_detected!("popcnt")
-                    && std::is_x86_feature_detected!("bmi1")
-                    && std::is_x86_feature_detected!("lzcnt")
-            }
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx512 => {
-                Isa::Avx2.supported()
-                    && std::is_x86_feature_detected!("avx512f")
-                    && std::is_x86_feature_detected!("avx512dq")
-                    && std::is_x86_feature_detected!("avx512vl")
-            }
-            #[cfg(not(target_arch = "x86_64"))]
-            _ => false,
+            Isa::Avx2 => supports(avx2),
+            Isa::Avx512 => supports(
+                avx2.and(Features::AVX512F)
+                    .and(Features::AVX512DQ)
+                    .and(Features::AVX512VL),
+            ),
         }
     }
 
