@@ -45,37 +45,45 @@ pub fn supports(set: Features) -> bool {
     known & set.0 == set.0
 }
 
+/// Each feature and whether the standard library finds it on this CPU.
+#[cfg(target_arch = "x86_64")]
+fn each_detected() -> [(Features, bool); 10] {
+    [
+        (Features::AVX2, std::is_x86_feature_detected!("avx2")),
+        (Features::FMA, std::is_x86_feature_detected!("fma")),
+        (Features::POPCNT, std::is_x86_feature_detected!("popcnt")),
+        (Features::BMI1, std::is_x86_feature_detected!("bmi1")),
+        (Features::LZCNT, std::is_x86_feature_detected!("lzcnt")),
+        (Features::SSE41, std::is_x86_feature_detected!("sse4.1")),
+        (Features::AVX512F, std::is_x86_feature_detected!("avx512f")),
+        (
+            Features::AVX512BW,
+            std::is_x86_feature_detected!("avx512bw"),
+        ),
+        (
+            Features::AVX512DQ,
+            std::is_x86_feature_detected!("avx512dq"),
+        ),
+        (
+            Features::AVX512VL,
+            std::is_x86_feature_detected!("avx512vl"),
+        ),
+    ]
+}
+
+/// Other targets: none of them.
+#[cfg(not(target_arch = "x86_64"))]
+fn each_detected() -> [(Features, bool); 2] {
+    [(Features::AVX2, false), (Features::SSE41, false)]
+}
+
 /// The features, detected (threads racing here store the same value).
 #[cold]
 fn detect() -> u32 {
     let mut bits = KNOWN;
-    #[cfg(target_arch = "x86_64")]
-    {
-        let found = [
-            (Features::AVX2, std::is_x86_feature_detected!("avx2")),
-            (Features::FMA, std::is_x86_feature_detected!("fma")),
-            (Features::POPCNT, std::is_x86_feature_detected!("popcnt")),
-            (Features::BMI1, std::is_x86_feature_detected!("bmi1")),
-            (Features::LZCNT, std::is_x86_feature_detected!("lzcnt")),
-            (Features::SSE41, std::is_x86_feature_detected!("sse4.1")),
-            (Features::AVX512F, std::is_x86_feature_detected!("avx512f")),
-            (
-                Features::AVX512BW,
-                std::is_x86_feature_detected!("avx512bw"),
-            ),
-            (
-                Features::AVX512DQ,
-                std::is_x86_feature_detected!("avx512dq"),
-            ),
-            (
-                Features::AVX512VL,
-                std::is_x86_feature_detected!("avx512vl"),
-            ),
-        ];
-        for (f, has) in found {
-            if has {
-                bits |= f.0;
-            }
+    for (f, has) in each_detected() {
+        if has {
+            bits |= f.0;
         }
     }
     DETECTED.store(bits, Ordering::Relaxed);
@@ -87,33 +95,10 @@ mod tests {
     use super::*;
 
     /// Each feature's bit says what the standard library's detection
-    /// says, alone and in sets.
+    /// says, alone and in sets, and no two share a bit.
     #[test]
     fn features_match_the_detection() {
-        #[cfg(target_arch = "x86_64")]
-        let each = [
-            (Features::AVX2, std::is_x86_feature_detected!("avx2")),
-            (Features::FMA, std::is_x86_feature_detected!("fma")),
-            (Features::POPCNT, std::is_x86_feature_detected!("popcnt")),
-            (Features::BMI1, std::is_x86_feature_detected!("bmi1")),
-            (Features::LZCNT, std::is_x86_feature_detected!("lzcnt")),
-            (Features::SSE41, std::is_x86_feature_detected!("sse4.1")),
-            (Features::AVX512F, std::is_x86_feature_detected!("avx512f")),
-            (
-                Features::AVX512BW,
-                std::is_x86_feature_detected!("avx512bw"),
-            ),
-            (
-                Features::AVX512DQ,
-                std::is_x86_feature_detected!("avx512dq"),
-            ),
-            (
-                Features::AVX512VL,
-                std::is_x86_feature_detected!("avx512vl"),
-            ),
-        ];
-        #[cfg(not(target_arch = "x86_64"))]
-        let each = [(Features::AVX2, false), (Features::SSE41, false)];
+        let each = each_detected();
         for (f, has) in each {
             assert_eq!(supports(f), has, "{f:?}");
         }
