@@ -237,8 +237,10 @@ fn run_vertices(
             whole_range,
         )
     };
-    match run(probe.is_none()) {
-        Err(DrawError::Exec(_)) if probe.is_none() => run(false),
+    // (The probe lists the vertices that run: only the named ones.)
+    let whole_range = probe.is_none();
+    match run(whole_range) {
+        Err(DrawError::Exec(_)) if whole_range => run(false),
         r => r,
     }
 }
