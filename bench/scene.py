@@ -179,6 +179,7 @@ def spheres(n, proj, fog, w, h):
     GL.glUniform3f(GL.glGetUniformLocation(prog, "right_vector"), *right)
     GL.glUniform3f(GL.glGetUniformLocation(prog, "up_vector"), *up)
     GL.glUniform1f(GL.glGetUniformLocation(prog, "perspective"), 1.0 if proj == "persp" else 0.0)
+    GL.glUniform4f(GL.glGetUniformLocation(prog, "viewport"), 0.0, 0.0, float(w), float(h))
     onehot = [1.0 if m == fog else 0.0 for m in ("none", "linear", "exp", "exp2")]
     GL.glUniform1fv(GL.glGetUniformLocation(prog, "fogging"), 4, onehot)
     GL.glUniform1fv(GL.glGetUniformLocation(prog, "light_enabled"), 8, [1.0, 1.0] + [0.0] * 6)

@@ -1,9 +1,10 @@
 // cylinder.frag: cylinder impostor ray-caster for bonds (fragment stage;
 // vertex: cylinder.vert).
 //
-// What it does: intersects the eye ray through the fragment (perspective:
-// from the eye through `point`; orthographic: along -z through `point`)
-// with the infinite cylinder (cylinder_base, unit cylinder_axis,
+// What it does: intersects the eye ray through the pixel centre (from
+// gl_FragCoord, the viewport uniform and the projection, as sphere.frag
+// does and for its reason: perspective from the eye, orthographic along
+// -z) with the infinite cylinder (cylinder_base, unit cylinder_axis,
 // cylinder_radius), keeps the nearest hit, and discards the fragment when
 // the ray misses or the hit lies beyond either end (0 to cylinder_length
 // along the axis: the cylinder is open, its ends are meant to be inside
@@ -13,11 +14,11 @@
 // lights 0-7 switched by light_enabled[8] (directional, Blinn-Phong with
 // the front light products), fixed-function fog chosen by fogging[4].
 //
-// State it reads: uniform float perspective, fogging[4],
+// State it reads: uniform float perspective, vec4 viewport, fogging[4],
 // light_enabled[8]; gl_LightSource[i].position/.halfVector,
 // gl_FrontLightProduct[i], gl_FrontMaterial.emission/.shininess, gl_Fog,
-// gl_FogFragCoord, gl_ProjectionMatrix, gl_DepthRange; varyings from
-// cylinder.vert.
+// gl_FogFragCoord, gl_ProjectionMatrix, gl_DepthRange, gl_FragCoord;
+// varyings from cylinder.vert (all but `point`, which the ray replaces).
 //
 // Written by the project (no seed has cylinders; lighting, fog and depth
 // are sphere.frag's, so spheres and cylinders match).
@@ -30,10 +31,10 @@
 
 uniform float fogging[4];
 uniform float perspective;
+uniform vec4 viewport;
 uniform float light_enabled[8];
 
 varying vec4 color;
-varying vec3 point;
 varying vec3 cylinder_base;
 varying vec3 cylinder_axis;
 varying float cylinder_length;
@@ -54,17 +55,27 @@ void getLight(in int light, in vec3 N, inout vec4 ambient, inout vec4 diffuse,
 
 void main(void)
 {
-    vec3 ray_origin = mix(vec3(point.xy, 0.0), vec3(0.0), perspective);
-    vec3 ray_direction = mix(vec3(0.0, 0.0, -1.0), normalize(point), perspective);
+    // The eye-space ray through this pixel's centre, o + t * v (v not
+    // normalised, v.z = -1), from gl_FragCoord and the projection, as in
+    // sphere.frag (see its header).
+    vec2 ndc = (gl_FragCoord.xy - viewport.xy) * 2.0 / viewport.zw - 1.0;
+    vec2 scale = vec2(gl_ProjectionMatrix[0][0], gl_ProjectionMatrix[1][1]);
+    vec3 o = mix(vec3((ndc - gl_ProjectionMatrix[3].xy) / scale, 0.0), vec3(0.0),
+                 perspective);
+    vec3 v = mix(vec3(0.0, 0.0, -1.0),
+                 vec3((ndc + gl_ProjectionMatrix[2].xy) / scale, -1.0), perspective);
 
-    // |w' + t D'|^2 = r^2 with the components across the axis, the ray
+    // |w' + s v'|^2 = r^2 with the components across the axis, the ray
     // re-centred at t0, its closest approach to cylinder_base: w is then
-    // a short vector and qc does not lose r^2 next to the squared
-    // distance from the eye (see the header).
+    // a short vector, ((b x v) x v) / |v|^2 with b = base - o, taken
+    // without subtracting two points far from the eye, and qc does not
+    // lose r^2 next to the squared distance from the eye (see the header).
     vec3 axis = normalize(cylinder_axis);
-    float t0 = dot(cylinder_base - ray_origin, ray_direction);
-    vec3 w = ray_origin + t0 * ray_direction - cylinder_base;
-    vec3 dp = ray_direction - dot(ray_direction, axis) * axis;
+    vec3 b = cylinder_base - o;
+    float vv = dot(v, v);
+    float t0 = dot(b, v) / vv;
+    vec3 w = cross(cross(b, v), v) / vv;
+    vec3 dp = v - dot(v, axis) * axis;
     vec3 wp = w - dot(w, axis) * axis;
     float qa = dot(dp, dp);
     float qb = dot(wp, dp);
@@ -72,12 +83,13 @@ void main(void)
     float disc = qb * qb - qa * qc;
     if (qa < 1e-12 || disc < 0.0)
         discard;
-    float t = t0 + (-qb - sqrt(disc)) / qa;
-    vec3 ipoint = ray_origin + t * ray_direction;
-    float h = dot(ipoint - cylinder_base, axis);
+    float s = (-qb - sqrt(disc)) / qa;
+    vec3 rel = w + s * v;  // the hit less cylinder_base
+    float h = dot(rel, axis);
     if (h < 0.0 || h > cylinder_length)
         discard;
-    vec3 N = normalize(ipoint - cylinder_base - h * axis);
+    vec3 ipoint = o + (t0 + s) * v;
+    vec3 N = normalize(rel - h * axis);
 
     // Window depth of the surface point.
     vec2 clipZW = ipoint.z * gl_ProjectionMatrix[2].zw + gl_ProjectionMatrix[3].zw;

@@ -17,7 +17,8 @@
 //   gl_LightSource[i], gl_FrontLightProduct[i], gl_FrontMaterial,
 //   gl_Fog, gl_FogFragCoord, gl_ProjectionMatrix, gl_DepthRange,
 //   gl_FragCoord
-//   varyings from sphere.vert: color, sphere_center, radius2, point
+//   uniform vec4 viewport (as sphere.frag: the pixel's eye ray)
+//   varyings from sphere.vert: color, sphere_center, radius2
 //
 // Fixes of the seed talk's text ("GLSL v1.20", Example 01, outline
 // fragment shader):
@@ -34,14 +35,18 @@
 // - Interior depth: the seed leaves gl_FragDepth unwritten on the black
 //   path, which GLSL 1.20 section 7.2 makes undefined once a shader
 //   assigns gl_FragDepth anywhere; the black path now writes the quad's
-//   own depth, gl_FragCoord.z ("without adjusting the Z value").
-// - Same fixes as sphere.frag: exact perspective ray normalize(point),
-//   the well-conditioned ray-sphere test,
-//   gl_DepthRange-aware depth, light_enabled[8] instead of lights 0 and 1.
+//   own depth ("without adjusting the Z value"), taken as the depth of
+//   its plane z = c.z rather than the interpolated gl_FragCoord.z (equal
+//   in exact arithmetic; interpolation rounds differently in every
+//   implementation, which moved where a neighbour's rim survives).
+// - Same fixes as sphere.frag: the eye ray from gl_FragCoord, the
+//   well-conditioned ray-sphere test, gl_DepthRange-aware depth,
+//   light_enabled[8] instead of lights 0 and 1.
 
 uniform float outline_width;
 uniform float fogging[4];
 uniform float perspective;
+uniform vec4 viewport;
 uniform float light_enabled[8];
 
 varying vec4 color;
@@ -65,16 +70,27 @@ void getLight(in int light, in vec3 N, inout vec4 ambient, inout vec4 diffuse,
 
 void main(void)
 {
-    vec3 ray_origin = mix(point, vec3(0.0), perspective);
-    vec3 ray_direction = mix(vec3(0.0, 0.0, 1.0), normalize(point), perspective);
-    vec3 sphere_direction = mix(ray_origin - sphere_center, sphere_center,
-                                perspective);
+    // The eye-space ray through this pixel's centre, o + t * v (v not
+    // normalised, v.z = -1), from gl_FragCoord (the same exact pixel centre
+    // in every implementation) and the projection: orthographic rays run
+    // along -z from z = 0, perspective ones from the eye. An interpolated
+    // eye-space point would carry each implementation's own rounding of the
+    // quad's vertices (up to half a sub-pixel), enough to move a grazing
+    // ray across the silhouette.
+    vec2 ndc = (gl_FragCoord.xy - viewport.xy) * 2.0 / viewport.zw - 1.0;
+    vec2 scale = vec2(gl_ProjectionMatrix[0][0], gl_ProjectionMatrix[1][1]);
+    vec3 o = mix(vec3((ndc - gl_ProjectionMatrix[3].xy) / scale, 0.0), vec3(0.0),
+                 perspective);
+    vec3 v = mix(vec3(0.0, 0.0, -1.0),
+                 vec3((ndc + gl_ProjectionMatrix[2].xy) / scale, -1.0), perspective);
 
-    float b = dot(sphere_direction, ray_direction);
-    // r^2 - d^2, d the distance of the centre from the ray, with d^2 taken
-    // as |sphere_direction - b * ray_direction|^2 (see the header).
-    vec3 perpendicular = sphere_direction - b * ray_direction;
-    float position = radius2 - dot(perpendicular, perpendicular);
+    // |o + t v - c|^2 = r^2. The centre's distance d from the ray is
+    // |(c - o) x v| / |v|: a cross product of the centre's offset, no
+    // difference of squared distances from the eye (see the header).
+    vec3 w = sphere_center - o;
+    vec3 across = cross(w, v);
+    float vv = dot(v, v);
+    float position = radius2 - dot(across, across) / vv;  // r^2 - d^2
     if (position < 0.0)
         discard;
 
@@ -82,9 +98,11 @@ void main(void)
     // i.e. position = r^2 - d^2 < r^2 - (r - outline_width)^2.
     float inner = max(sqrt(radius2) - outline_width, 0.0);
     if (position < radius2 - inner * inner) {
-        float nearest = mix(sqrt(position) - b, b - sqrt(position), perspective);
-        vec3 ipoint = nearest * ray_direction + ray_origin;
-        vec3 N = normalize(ipoint - sphere_center);
+        float root = sqrt(position * vv);
+        vec3 ipoint = o + ((dot(w, v) - root) / vv) * v;
+        // ipoint - c = -(v x across + root v) / |v|^2, without the
+        // cancellation of two points far from the eye.
+        vec3 N = normalize(cross(across, v) - root * v);
 
         vec2 clipZW = ipoint.z * gl_ProjectionMatrix[2].zw + gl_ProjectionMatrix[3].zw;
         float ndc_z = clipZW.x / clipZW.y;
@@ -111,7 +129,12 @@ void main(void)
         vec4 lit = color * (diffuse + ambient + gl_FrontMaterial.emission) + specular;
         gl_FragColor = vec4(mix(gl_Fog.color.rgb, lit.rgb, fog), color.a);
     } else {
-        gl_FragDepth = gl_FragCoord.z;
+        // The quad's own depth: its plane z = c.z, from the centre rather
+        // than the interpolated gl_FragCoord.z (the same in exact
+        // arithmetic; each implementation rounds the interpolation its own
+        // way, which moved where a neighbour's rim shows).
+        vec2 centerZW = sphere_center.z * gl_ProjectionMatrix[2].zw + gl_ProjectionMatrix[3].zw;
+        gl_FragDepth = gl_DepthRange.near + gl_DepthRange.diff * (0.5 + 0.5 * centerZW.x / centerZW.y);
         gl_FragColor = vec4(0.0, 0.0, 0.0, color.a);
     }
 }

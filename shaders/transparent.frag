@@ -9,7 +9,7 @@
 // Transparent atoms"). Supersampled renders average the checkerboard into
 // a smooth 50% blend.
 //
-// State it reads: as sphere.frag (perspective, fogging[4],
+// State it reads: as sphere.frag (perspective, viewport, fogging[4],
 // light_enabled[8], the lights, front material, fog, projection matrix,
 // depth range) plus gl_FragCoord; per-atom "is red" comes from the atom
 // colour (gl_Color through the varying `color`), as in the seed.
@@ -27,13 +27,14 @@
 //   exp(-(density * c)^2), as here.
 // - The unused `varying float depth_level` (written by no vertex shader)
 //   is dropped.
-// - Same fixes as sphere.frag: the exact perspective ray normalize(point),
-//   the well-conditioned ray-sphere test,
+// - Same fixes as sphere.frag: the eye ray from gl_FragCoord and the
+//   viewport uniform, the well-conditioned ray-sphere test,
 //   gl_DepthRange-aware depth, light_enabled[8] instead of the hard-wired
 //   lights 0 and 1, alpha from the atom colour.
 
 uniform float fogging[4];
 uniform float perspective;
+uniform vec4 viewport;
 uniform float light_enabled[8];
 
 varying vec4 color;
@@ -57,19 +58,27 @@ void getLight(in int light, in vec3 N, inout vec4 ambient, inout vec4 diffuse,
 
 void main(void)
 {
-    // Orthographic: rays along +z (towards the viewer) through the quad
-    // point. Perspective: rays from the eye through the quad point.
-    vec3 ray_origin = mix(point, vec3(0.0), perspective);
-    vec3 ray_direction = mix(vec3(0.0, 0.0, 1.0), normalize(point), perspective);
-    vec3 sphere_direction = mix(ray_origin - sphere_center, sphere_center,
-                                perspective);
+    // The eye-space ray through this pixel's centre, o + t * v (v not
+    // normalised, v.z = -1), from gl_FragCoord (the same exact pixel centre
+    // in every implementation) and the projection: orthographic rays run
+    // along -z from z = 0, perspective ones from the eye. An interpolated
+    // eye-space point would carry each implementation's own rounding of the
+    // quad's vertices (up to half a sub-pixel), enough to move a grazing
+    // ray across the silhouette.
+    vec2 ndc = (gl_FragCoord.xy - viewport.xy) * 2.0 / viewport.zw - 1.0;
+    vec2 scale = vec2(gl_ProjectionMatrix[0][0], gl_ProjectionMatrix[1][1]);
+    vec3 o = mix(vec3((ndc - gl_ProjectionMatrix[3].xy) / scale, 0.0), vec3(0.0),
+                 perspective);
+    vec3 v = mix(vec3(0.0, 0.0, -1.0),
+                 vec3((ndc + gl_ProjectionMatrix[2].xy) / scale, -1.0), perspective);
 
-    // |origin + t * direction - center|^2 = radius^2
-    float b = dot(sphere_direction, ray_direction);
-    // r^2 - d^2, d the distance of the centre from the ray, with d^2 taken
-    // as |sphere_direction - b * ray_direction|^2 (see the header).
-    vec3 perpendicular = sphere_direction - b * ray_direction;
-    float position = radius2 - dot(perpendicular, perpendicular);
+    // |o + t v - c|^2 = r^2. The centre's distance d from the ray is
+    // |(c - o) x v| / |v|: a cross product of the centre's offset, no
+    // difference of squared distances from the eye (see the header).
+    vec3 w = sphere_center - o;
+    vec3 across = cross(w, v);
+    float vv = dot(v, v);
+    float position = radius2 - dot(across, across) / vv;  // r^2 - d^2
     if (position < 0.0)
         discard;
 
@@ -82,9 +91,11 @@ void main(void)
         discard;
 
     // Nearest intersection (towards the viewer).
-    float nearest = mix(sqrt(position) - b, b - sqrt(position), perspective);
-    vec3 ipoint = nearest * ray_direction + ray_origin;
-    vec3 N = normalize(ipoint - sphere_center);
+    float root = sqrt(position * vv);
+    vec3 ipoint = o + ((dot(w, v) - root) / vv) * v;
+    // ipoint - c = -(v x across + root v) / |v|^2, without the
+    // cancellation of two points far from the eye.
+    vec3 N = normalize(cross(across, v) - root * v);
 
     // Window depth of the surface point.
     vec2 clipZW = ipoint.z * gl_ProjectionMatrix[2].zw + gl_ProjectionMatrix[3].zw;

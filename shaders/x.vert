@@ -3,19 +3,22 @@
 //
 // What it does: exactly what sphere.vert does (see its header: one
 // screen-aligned quad per atom, corners in gl_MultiTexCoord0 =
-// (right, up, radius)), and besides copies the corner's up and right
-// (+1 or -1) to the varyings u1 and r1. Interpolated over the quad they
-// run from -1 to 1; |u1| = |r1| on the quad's two diagonals, where the
-// fragment shaders draw the X.
+// (right, up, radius)), and besides hands on the square's half-size in
+// eye space (half_size), so the fragment shaders can place the pixel on
+// the quad with corners at +-1 (the seed's u1, r1) from the pixel's own
+// ray; |u1| = |r1| on the quad's two diagonals, where they draw the X.
 //
 // State it reads: as sphere.vert (right_vector, up_vector, perspective,
 // gl_Vertex, gl_MultiTexCoord0, gl_Color, the model-view and projection
-// matrices). It writes sphere.vert's outputs plus u1, r1.
+// matrices). It writes sphere.vert's outputs plus half_size.
 //
 // Changes from the seed talk ("GLSL v1.20", Example 02, X vertex shader):
 // the seed's X vertex shader is its sphere vertex shader plus u1/r1, and
 // compiles as given; it gets sphere.vert's perspective growth of the
-// square (the seed clips the rims of off-centre spheres in perspective).
+// square (the seed clips the rims of off-centre spheres in perspective),
+// and half_size replaces the interpolated u1, r1: an interpolated corner
+// coordinate carries each implementation's own rounding of the quad's
+// corners, which moved the X's edges by a pixel here and there.
 
 uniform vec3 right_vector;
 uniform vec3 up_vector;
@@ -27,8 +30,7 @@ varying vec3 sphere_center;
 varying float radius2;
 varying vec3 point;
 
-varying float u1;
-varying float r1;
+varying float half_size;
 
 void main(void)
 {
@@ -37,10 +39,6 @@ void main(void)
     float up = gl_MultiTexCoord0.y;
     float radius = gl_MultiTexCoord0.z;
     radius2 = radius * radius;
-
-    // Quad corner for the X (x.frag, x-red.frag).
-    u1 = up;
-    r1 = right;
 
     // Sphere centre in eye space.
     vec4 center4 = gl_ModelViewMatrix * vec4(gl_Vertex.xyz, 1.0);
@@ -58,6 +56,9 @@ void main(void)
     // Corner of the screen-aligned square (billboard), object space.
     vec3 corner_direction = up * up_vector + right * right_vector;
     vec4 vertex = vec4(gl_Vertex.xyz + (radius * grow) * corner_direction, 1.0);
+    // The square's half-size in eye space (x.frag, x-red.frag): corners
+    // at +-1 in units of it.
+    half_size = radius * grow;
 
     vec4 eye_space_pos = gl_ModelViewMatrix * vertex;
 

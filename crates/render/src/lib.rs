@@ -461,6 +461,8 @@ pub fn render_scene(
         Projection::Perspective => 1.0,
     };
     rec.uniform("perspective", &[persp]);
+    let viewport = [0.0, 0.0, fw as f32, fh as f32];
+    rec.uniform("viewport", &viewport);
     rec.uniform_array("fogging", &fogging);
     rec.uniform_array("light_enabled", &enabled);
     if opts.effect == Effect::Outline {
@@ -503,7 +505,7 @@ pub fn render_scene(
     check(&mut rec.ctx, "drawing the atoms")?;
 
     if opts.style == Style::BallAndStick {
-        draw_bonds(&mut rec, structure, persp, &fogging, &enabled)?;
+        draw_bonds(&mut rec, structure, persp, viewport, &fogging, &enabled)?;
     }
 
     let pixels = rec.ctx.read_pixels_f32(0, 0, fw as i32, fh as i32);
@@ -520,6 +522,7 @@ fn draw_bonds(
     rec: &mut Recorder,
     structure: &Structure,
     persp: f32,
+    viewport: [f32; 4],
     fogging: &[f32; 4],
     enabled: &[f32; 8],
 ) -> Result<(), RenderError> {
@@ -530,6 +533,7 @@ fn draw_bonds(
     rec.program(&library::CYLINDER)
         .map_err(RenderError::Shader)?;
     rec.uniform("perspective", &[persp]);
+    rec.uniform("viewport", &viewport);
     rec.uniform_array("fogging", fogging);
     rec.uniform_array("light_enabled", enabled);
     let halves = bonds.len() * 2;

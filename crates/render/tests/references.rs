@@ -8,27 +8,20 @@
 //! the other options at their defaults. Run with `--nocapture` to see the
 //! measured numbers (docs/CONFORMANCE.md records them).
 //!
-//! The issue asks for none beyond 8/255. That does not hold: a few pixels
-//! per image (at most [`MAX_BEYOND_8`]) differ a lot, all at silhouettes
-//! where the ray grazes a sphere (the discriminant is within rounding of 0,
-//! so one implementation discards and the other does not) or where two
-//! surfaces are at equal depth. The test bounds their number instead and
-//! requires every one of them to be such an edge pixel: a neighbour
-//! (8-connected) of a pixel where the two images' coverage or nearest
-//! surface differs, i.e. one of the two images has a different colour
-//! class next to it. docs/CONFORMANCE.md has the numbers.
+//! Both hold with room to spare (every scene 100.000% within 2/255, the
+//! largest difference 1/255) because the library's impostors take their
+//! rays from `gl_FragCoord` and the `viewport` uniform rather than from an
+//! interpolated eye-space point: each implementation rounds interpolation
+//! its own way (sub-pixel snapping of the quad's corners), and a grazing
+//! ray within that rounding of a silhouette was discarded by one and kept
+//! by the other (1-10 such pixels per image, up to 234/255, before).
+//! docs/CONFORMANCE.md has the numbers.
 //!
 //! Debug builds check every sixth scene (the renders are slow
 //! unoptimised); `cargo test --release` checks all 48 (CI does).
 
 use render::{crambin, render, Effect, Fog, Projection, RenderOptions, Style};
 use std::path::Path;
-
-/// Most pixels per image allowed beyond 8/255 (0.025% of 256 x 256; the
-/// measured worst is 10, spacefill with X marks in perspective, whose
-/// marks add silhouettes; 34 before the library's ray-sphere and
-/// ray-cylinder tests were made well-conditioned).
-const MAX_BEYOND_8: usize = 16;
 
 fn options(name: &str) -> RenderOptions {
     let parts: Vec<&str> = name.split('-').collect();
@@ -117,37 +110,13 @@ fn matches_mesa() {
         let within = diff.iter().filter(|d| **d <= 2).count();
         let max = diff.iter().copied().max().unwrap_or(0);
         let beyond: Vec<usize> = (0..diff.len()).filter(|i| diff[*i] > 8).collect();
-        // An edge pixel: some 8-neighbour in one image differs from the
-        // pixel itself by more than 8/255 (a silhouette or a seam).
-        let (w, h) = (w as i64, h as i64);
-        let at_edge = |i: usize| {
-            let (x, y) = (i as i64 % w, i as i64 / w);
-            let rgb = |img: &dyn Fn(usize) -> [u8; 3], j: usize| img(j);
-            let o = |j: usize| {
-                let p = ours.pixels[j];
-                [p[0], p[1], p[2]]
-            };
-            let m = |j: usize| mesa[j];
-            let far = |a: [u8; 3], b: [u8; 3]| (0..3).any(|k| a[k].abs_diff(b[k]) > 8);
-            (-1..=1).any(|dy| {
-                (-1..=1).any(|dx| {
-                    let (nx, ny) = (x + dx, y + dy);
-                    if nx < 0 || ny < 0 || nx >= w || ny >= h || (dx, dy) == (0, 0) {
-                        return false;
-                    }
-                    let j = (ny * w + nx) as usize;
-                    far(rgb(&o, i), rgb(&o, j)) || far(rgb(&m, i), rgb(&m, j))
-                })
-            })
-        };
-        let not_edge = beyond.iter().filter(|i| !at_edge(**i)).count();
         let share = within as f64 / mesa.len() as f64;
         // The first few pixels beyond 8/255 (x, y from the top left), to
         // feed `shaderbox debug --pixel`.
         let at: Vec<String> = beyond
             .iter()
             .take(4)
-            .map(|i| format!("{},{}", *i as i64 % w, *i as i64 / w))
+            .map(|i| format!("{},{}", i % w as usize, i / w as usize))
             .collect();
         println!(
             "| {name} | {:.3}% | {} | {max} | {} |",
@@ -155,11 +124,12 @@ fn matches_mesa() {
             beyond.len(),
             at.join(" ")
         );
-        if share < 0.995 || beyond.len() > MAX_BEYOND_8 || not_edge > 0 {
+        if share < 0.995 || !beyond.is_empty() {
             failures.push(format!(
-                "{name}: {:.3}% within 2/255, {} beyond 8/255 ({not_edge} not at an edge), max {max}/255",
+                "{name}: {:.3}% within 2/255, {} beyond 8/255 (first at {}), max {max}/255",
                 share * 100.0,
-                beyond.len()
+                beyond.len(),
+                at.join(" ")
             ));
         }
     }

@@ -120,6 +120,9 @@ def impostors(vs, fs, persp, fog="none", extra=None, seed_text=False):
     uniform(p, "right_vector", m[0][0], m[1][0], m[2][0], optional=seed_text)
     uniform(p, "up_vector", m[0][1], m[1][1], m[2][1], optional=seed_text)
     uniform(p, "perspective", 1.0 if persp else 0.0, optional=seed_text)
+    # The library's impostors cast each pixel's ray from gl_FragCoord.
+    uniform(p, "viewport", *[float(v) for v in GL.glGetIntegerv(GL.GL_VIEWPORT)],
+            optional=seed_text)
     uniform(p, "fogging", *[1.0 if i == onehot else 0.0 for i in range(4)], count=4, optional=seed_text)
     if not seed_text:
         uniform(p, "light_enabled", *on, count=8)

@@ -89,6 +89,8 @@ pub(crate) fn sphere_uniforms(k: &Kernel, perspective: f32) -> Vec<u32> {
     };
     let mut values: Vec<(String, Vec<u32>)> = vec![
         ("perspective".into(), fbits(&[perspective])),
+        // gl_FragCoord.xy in [-1, 1) maps to ndc in [-0.1, 0.1).
+        ("viewport".into(), fbits(&[-10.0, -10.0, 20.0, 20.0])),
         ("fogging".into(), fbits(&[0.0, 0.0, 1.0, 0.0])),
         (
             "light_enabled".into(),

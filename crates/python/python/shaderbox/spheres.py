@@ -129,6 +129,8 @@ def draw_spheres(
     prog["up_vector"] = up / max(float(np.linalg.norm(up)), 1e-12)
     perspective = 1.0 if ctx.projection[3, 3] == 0.0 else 0.0
     prog["perspective"] = perspective
+    # The impostors cast each pixel's ray from gl_FragCoord and the viewport.
+    prog["viewport"] = [float(v) for v in ctx.viewport]
     fogging = np.zeros(4, dtype=np.float32)
     fogging[{"linear": 1, "exp": 2, "exp2": 3}.get(ctx.fog.mode, 0) if ctx.fog.enabled else 0] = 1.0
     if "fogging" in prog:
