@@ -2,7 +2,7 @@
 //! alpha test, stencil test, depth test, blending, (dithering: off),
 //! logic op, then the masked write to each draw buffer.
 
-use crate::framebuffer::{depth_to_fixed, float_to_unorm8, ColorBuffer, DEPTH_MAX};
+use crate::framebuffer::{depth_to_fixed, float_to_unorm8, ColorBuffer};
 use crate::framebuffer::{Framebuffer, MAX_DRAW_BUFFERS};
 use crate::state::{
     Blend, BlendEquation, BlendFactor, CompareFunc, PipelineState, Rect, StencilFace, StencilOp,
@@ -1032,23 +1032,10 @@ pub(crate) fn depth_pass_mask(func: CompareFunc, zf: [u32; 4], stored: [u32; 4])
     }
 }
 
-/// [`depth_to_fixed`] of `z[k] as f32`, four at a time without branches
-/// (the same values for every input: `max` turns NaN into 0 as the
-/// comparison does, −0 gives 0 either way, and the product stays in
-/// [0.5, 2^24 − 0.5] where truncation to i32 is that to u32).
+/// [`depth_to_fixed`] of `z[k] as f32`, four at a time.
 #[inline(always)]
-// Not `clamp`: NaN must become 0 (`max` drops it; `clamp` keeps it).
-#[allow(clippy::manual_clamp)]
 pub(crate) fn depth_to_fixed4(z: [f64; 4]) -> [u32; 4] {
-    let mut out = [0u32; 4];
-    for (o, z) in out.iter_mut().zip(z) {
-        let z = (z as f32).max(0.0).min(1.0);
-        let k = z as f64 * DEPTH_MAX as f64 + 0.5;
-        // SAFETY: `max` turns NaN into 0, so `k` is finite and in
-        // [0.5, 2^24 - 0.5]: representable in i32.
-        *o = (unsafe { k.to_int_unchecked::<i32>() } as u32).min(DEPTH_MAX);
-    }
-    out
+    z.map(|z| depth_to_fixed(z as f32))
 }
 
 /// What [`QuickTarget::write`] stores without blending, for every lane of
@@ -1558,8 +1545,10 @@ mod tests {
         assert_eq!(d, [5; 4]);
     }
 
+    /// `depth_to_fixed` (its 2^23 addition) against rounding the clamped
+    /// f32 product to even in f64, over edge cases and random depths.
     #[test]
-    fn depth_to_fixed4_matches_depth_to_fixed() {
+    fn depth_to_fixed_rounds_the_f32_product_to_even() {
         let mut zs = vec![
             f64::NAN,
             f64::INFINITY,
@@ -1586,14 +1575,17 @@ mod tests {
                 _ => f32::from_bits(x as u32) as f64,
             });
         }
-        for z in zs.chunks_exact(4) {
-            let z = [z[0], z[1], z[2], z[3]];
-            assert_eq!(
-                depth_to_fixed4(z),
-                z.map(|z| depth_to_fixed(z as f32)),
-                "{z:?}"
-            );
+        let mut ties = 0;
+        for z in zs {
+            let z = z as f32;
+            let clamped = if z > 0.0 { z.min(1.0) } else { 0.0 };
+            let product = (clamped * crate::DEPTH_MAX as f32) as f64;
+            ties += (product.fract() == 0.5) as usize;
+            assert_eq!(depth_to_fixed(z), product.round_ties_even() as u32, "{z:?}");
         }
+        // Exact halves, where ties to even differs from rounding up,
+        // are among the random depths.
+        assert!(ties > 100, "{ties} ties");
     }
 
     /// `test_quad_with` and `write_rgba8_quad` (whole quads blended row by
