@@ -36,6 +36,12 @@ varying vec3 cylinder_axis;
 varying float cylinder_length;
 varying float cylinder_radius;
 
+// The quad is drawn 2 % wider than the bond's silhouette: at the exact
+// width the silhouette runs along the quad's long edges, and a pixel the
+// bond covers there is inside or outside the quad by each implementation's
+// own sub-pixel snapping of the corners.
+const float COVER_MARGIN = 1.02;
+
 // Grown half-size of the square that covers a sphere of radius r at
 // eye-space centre c (see sphere.vert).
 float coverRadius(in vec3 c, in float r)
@@ -69,7 +75,7 @@ void main(void)
     float sb = mix(1.0, 1.0 / max(-b.z, 1e-6), perspective);
     vec2 pa = a.xy * sa;
     vec2 pb = b.xy * sb;
-    float h = max(coverRadius(a, r) * sa, coverRadius(b, r) * sb);
+    float h = max(coverRadius(a, r) * sa, coverRadius(b, r) * sb) * COVER_MARGIN;
     vec2 axis2 = pb - pa;
     float axis2_len = length(axis2);
     vec2 dir = axis2_len > 1e-9 ? axis2 / axis2_len : vec2(1.0, 0.0);

@@ -71,12 +71,7 @@ void getLight(in int light, in vec3 N, inout vec4 ambient, inout vec4 diffuse,
 void main(void)
 {
     // The eye-space ray through this pixel's centre, o + t * v (v not
-    // normalised, v.z = -1), from gl_FragCoord (the same exact pixel centre
-    // in every implementation) and the projection: orthographic rays run
-    // along -z from z = 0, perspective ones from the eye. An interpolated
-    // eye-space point would carry each implementation's own rounding of the
-    // quad's vertices (up to half a sub-pixel), enough to move a grazing
-    // ray across the silhouette.
+    // normalised, v.z = -1), from gl_FragCoord, as in sphere.frag.
     vec2 ndc = (gl_FragCoord.xy - viewport.xy) * 2.0 / viewport.zw - 1.0;
     vec2 scale = vec2(gl_ProjectionMatrix[0][0], gl_ProjectionMatrix[1][1]);
     vec3 o = mix(vec3((ndc - gl_ProjectionMatrix[3].xy) / scale, 0.0), vec3(0.0),

@@ -32,6 +32,12 @@ varying vec3 point;
 
 varying float half_size;
 
+// The square is drawn 2 % larger than the silhouette it must cover: at
+// the exact size the silhouette touches the square's edges, and a pixel the
+// sphere covers there is inside or outside the square by each
+// implementation's own sub-pixel snapping of the corners.
+const float COVER_MARGIN = 1.02;
+
 void main(void)
 {
     // Billboard attributes.
@@ -55,7 +61,8 @@ void main(void)
 
     // Corner of the screen-aligned square (billboard), object space.
     vec3 corner_direction = up * up_vector + right * right_vector;
-    vec4 vertex = vec4(gl_Vertex.xyz + (radius * grow) * corner_direction, 1.0);
+    vec4 vertex = vec4(gl_Vertex.xyz + (radius * grow * COVER_MARGIN) * corner_direction,
+                       1.0);
     // The square's half-size in eye space (x.frag, x-red.frag): corners
     // at +-1 in units of it.
     half_size = radius * grow;
