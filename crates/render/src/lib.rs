@@ -8,7 +8,8 @@
 //! state the library's sphere impostor shaders read (`shaders/sphere.vert`
 //! and `shaders/sphere.frag`: lights, material, fog, the `perspective`,
 //! `fogging[4]`, `light_enabled[8]`, `right_vector`, `up_vector`
-//! uniforms) on a [`gl::Context`], draws every atom as one GL_QUADS quad
+//! uniforms, and `viewport`, from which the impostors cast each pixel's ray
+//! through `gl_FragCoord`) on a [`gl::Context`], draws every atom as one GL_QUADS quad
 //! from client vertex arrays, reads the pixels back, box-filters
 //! supersampled renders down and writes PNG ([`image`]). Ball-and-stick
 //! ([`Style::BallAndStick`]) draws smaller atoms and every bond as two
