@@ -141,8 +141,9 @@ pub fn depth_to_fixed(z: f32) -> u32 {
     // f32 is already an integer.
     const HALF: f32 = (1u32 << 23) as f32;
     let k = if x < HALF { (x + HALF) - HALF } else { x };
-    // An integer in [0, 2^24 - 1]: the conversion is exact.
-    k as u32
+    // SAFETY: `max` turns NaN into 0, so `k` is an integer in
+    // [0, 2^24 - 1]: representable in i32, and the conversion is exact.
+    unsafe { k.to_int_unchecked::<i32>() as u32 }
 }
 
 pub fn fixed_to_depth(k: u32) -> f32 {
