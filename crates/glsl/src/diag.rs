@@ -291,13 +291,20 @@ pub fn render_terminal(diags: &[Diagnostic], map: &SourceMap, color: bool) -> St
 }
 
 /// The closest candidates to `name` among `candidates`, for "did you mean".
+/// Names longer than [`crate::limits::MAX_SUGGESTED_NAME_LEN`] (on either
+/// side) are not compared, so one call costs at most that length squared
+/// per candidate.
 pub fn did_you_mean<'a>(
     name: &str,
     candidates: impl IntoIterator<Item = &'a str>,
 ) -> Option<&'a str> {
+    let max = crate::limits::MAX_SUGGESTED_NAME_LEN;
+    if name.len() > max {
+        return None;
+    }
     let mut best: Option<(f64, &str)> = None;
     for c in candidates {
-        if c == name {
+        if c == name || c.len() > max {
             continue;
         }
         let score = strsim::jaro_winkler(name, c);
@@ -350,5 +357,13 @@ mod tests {
         let c = ["gl_FragColor", "gl_FragCoord", "gl_FragData"];
         assert_eq!(did_you_mean("gl_FragColour", c), Some("gl_FragColor"));
         assert_eq!(did_you_mean("zzz", c), None);
+    }
+
+    #[test]
+    fn long_names_get_no_suggestion() {
+        let long = "a".repeat(crate::limits::MAX_SUGGESTED_NAME_LEN + 1);
+        let near = format!("{long}b");
+        assert_eq!(did_you_mean(&near, [long.as_str()]), None);
+        assert_eq!(did_you_mean("ab", [long.as_str(), "abc"]), Some("abc"));
     }
 }

@@ -45,3 +45,10 @@ pub const MAX_ARRAY_SIZE: u32 = 1 << 20;
 /// in one note (a binary file fed as a shader would otherwise produce
 /// thousands).
 pub const MAX_DIAGNOSTICS: usize = 100;
+/// Longest name (in bytes) that a "did you mean" note is looked for: the
+/// comparison costs the product of two names' lengths, and the typos such
+/// a note helps with are in names people type.
+pub const MAX_SUGGESTED_NAME_LEN: usize = 64;
+/// "Did you mean" searches one shader may make; later errors of the same
+/// kind get none (each search compares against every visible name).
+pub const MAX_SUGGESTIONS: u32 = 16;

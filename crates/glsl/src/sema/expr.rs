@@ -867,8 +867,12 @@ impl Analyzer {
                     ));
                 }
                 None => {
-                    let sugg = did_you_mean(&name.name, members.iter().map(|m| m.name.as_str()))
-                        .map(str::to_string);
+                    let sugg = if self.may_suggest(&name.name) {
+                        did_you_mean(&name.name, members.iter().map(|m| m.name.as_str()))
+                            .map(str::to_string)
+                    } else {
+                        None
+                    };
                     let d = self.error(
                         Code::Undeclared,
                         name.span,

@@ -399,8 +399,12 @@ impl Analyzer {
                 return;
             }
         }
-        let names = self.visible_names();
-        let sugg = did_you_mean(&name.name, names.iter().map(|s| s.as_str())).map(str::to_string);
+        let sugg = if self.may_suggest(&name.name) {
+            let names = self.visible_names();
+            did_you_mean(&name.name, names.iter().map(|s| s.as_str())).map(str::to_string)
+        } else {
+            None
+        };
         let d = self.error(
             Code::Undeclared,
             name.span,

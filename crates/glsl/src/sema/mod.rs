@@ -248,6 +248,8 @@ pub(crate) struct Analyzer {
     /// Every function the translation unit declares or defines, with where:
     /// lets "undeclared function" say when the function comes later.
     pub declared_functions: Vec<(SmolStr, Span)>,
+    /// "Did you mean" searches left (`limits::MAX_SUGGESTIONS`).
+    pub suggestions_left: u32,
 }
 
 impl Analyzer {
@@ -275,6 +277,7 @@ impl Analyzer {
             frag_data_write: None,
             depth: 0,
             declared_functions: Vec::new(),
+            suggestions_left: crate::limits::MAX_SUGGESTIONS,
         }
     }
 
@@ -407,6 +410,17 @@ impl Analyzer {
         f.consts.push(None);
         f.implicit.push(0);
         id
+    }
+
+    /// Whether a "did you mean" search for `name` is made: the name is
+    /// short enough to compare and this shader's budget of searches is not
+    /// spent (each search costs one comparison per visible name).
+    pub fn may_suggest(&mut self, name: &str) -> bool {
+        if name.len() > crate::limits::MAX_SUGGESTED_NAME_LEN || self.suggestions_left == 0 {
+            return false;
+        }
+        self.suggestions_left -= 1;
+        true
     }
 
     /// Every name visible from here, sorted (for "did you mean").

@@ -79,6 +79,47 @@ fn undeclared_with_suggestion() {
 }
 
 #[test]
+fn long_undeclared_names_get_no_suggestion() {
+    // Two long names one letter apart: comparing them would cost the
+    // product of their lengths, so no note is looked for.
+    let a = "v".repeat(60_000);
+    let src = format!("void main() {{ float {a}x = 1.0; gl_FragColor = vec4({a}y); }}");
+    let s = frag(&src);
+    assert_eq!(codes(&s), vec![Code::Undeclared], "{}", s.info_log());
+    assert!(
+        s.diagnostics[0].notes.is_empty(),
+        "{:?}",
+        s.diagnostics[0].notes
+    );
+}
+
+#[test]
+fn suggestions_are_bounded_per_shader() {
+    // Every undeclared name is reported; only the first
+    // MAX_SUGGESTIONS get a "did you mean" search.
+    let n = crate::limits::MAX_SUGGESTIONS as usize + 10;
+    let uses: String = (0..n)
+        .map(|_| "colr; ")
+        .map(|u| format!("f = {u}"))
+        .collect();
+    let src =
+        format!("void main() {{ float color = 1.0; float f; {uses} gl_FragColor = vec4(f); }}");
+    let s = frag(&src);
+    let undeclared: Vec<_> = s
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == Code::Undeclared)
+        .collect();
+    assert_eq!(undeclared.len(), n, "{}", s.info_log());
+    let noted = undeclared.iter().filter(|d| !d.notes.is_empty()).count();
+    assert_eq!(noted, crate::limits::MAX_SUGGESTIONS as usize);
+    assert_eq!(
+        undeclared[0].notes,
+        vec!["did you mean `color'?".to_string()]
+    );
+}
+
+#[test]
 fn builtin_from_newer_version() {
     let s =
         vert("void main() { mat2 m = transpose(mat2(1.0)); gl_Position = vec4(m[0], 0.0, 1.0); }");

@@ -74,13 +74,18 @@ impl Analyzer {
                     return Type::ERROR;
                 }
                 None => {
-                    let names = self.struct_names();
+                    let sugg = if self.may_suggest(&id.name) {
+                        let names = self.struct_names();
+                        did_you_mean(&id.name, names.iter().map(|s| s.as_str())).map(str::to_string)
+                    } else {
+                        None
+                    };
                     let d = self.error(
                         Code::Undeclared,
                         id.span,
                         format!("type `{}' undeclared", id.name),
                     );
-                    if let Some(s) = did_you_mean(&id.name, names.iter().map(|s| s.as_str())) {
+                    if let Some(s) = sugg {
                         d.notes.push(format!("did you mean `{s}'?"));
                     }
                     return Type::ERROR;
