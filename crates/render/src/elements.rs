@@ -70,6 +70,7 @@ const COVALENT: &[(&str, u16)] = &[
 impl Element {
     /// A symbol the table does not know.
     pub const UNKNOWN: Element = Element(u8::MAX);
+    pub const HYDROGEN: Element = Element(0);
     pub const CARBON: Element = Element(5);
     pub const OXYGEN: Element = Element(7);
 
