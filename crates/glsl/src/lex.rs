@@ -52,162 +52,177 @@ pub struct LexOptions {
 /// Splits `text` into preprocessing tokens. Never fails: problems are
 /// reported in the returned diagnostics and lexing continues.
 pub fn lex(text: &str, opts: LexOptions) -> (Vec<PpToken>, Vec<Diagnostic>) {
-    let bytes = text.as_bytes();
-    let mut toks = Vec::new();
-    let mut diags = Vec::new();
-    let mut i = 0usize;
-    let mut space = false;
-    while i < bytes.len() {
-        let c = bytes[i];
-        // Line continuation.
-        if opts.line_continuation {
-            let n = continuation_len(bytes, i);
-            if n > 0 {
-                i += n;
-                continue;
-            }
-        }
-        match c {
-            b' ' | b'\t' | b'\r' | 0x0b | 0x0c => {
-                space = true;
-                i += 1;
-            }
-            b'\n' => {
-                toks.push(PpToken {
-                    kind: PpKind::Newline,
-                    text: SmolStr::new_static("\n"),
-                    span: Span::new(i as u32, i as u32 + 1),
-                    space_before: space,
-                });
-                space = false;
-                i += 1;
-            }
-            b'/' if bytes.get(i + 1) == Some(&b'/') => {
-                // Line comment, up to (not including) the newline.
-                // Continuations are removed before comments are recognized,
-                // so a `\` at the end continues the comment.
-                while i < bytes.len() && bytes[i] != b'\n' {
-                    let n = if opts.line_continuation {
-                        continuation_len(bytes, i)
-                    } else {
-                        0
-                    };
-                    i += n.max(1);
-                }
-                space = true;
-            }
-            b'/' if bytes.get(i + 1) == Some(&b'*') => {
-                let start = i;
-                i += 2;
-                let mut closed = false;
-                while i < bytes.len() {
-                    if bytes[i] == b'*' && bytes.get(i + 1) == Some(&b'/') {
-                        i += 2;
-                        closed = true;
-                        break;
-                    }
-                    // Newlines inside a comment still end directive lines
-                    // for line counting; the span table handles numbering,
-                    // so nothing is emitted here.
-                    i += 1;
-                }
-                if !closed {
-                    diags.push(Diagnostic::error(
-                        Code::PpUnterminated,
-                        Span::new(start as u32, start as u32 + 2),
-                        "unterminated comment",
-                    ));
-                }
-                space = true;
-            }
-            b'a'..=b'z' | b'A'..=b'Z' | b'_' => {
-                let start = i;
-                while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
-                    i += 1;
-                }
-                toks.push(PpToken {
-                    kind: PpKind::Ident,
-                    text: SmolStr::new(&text[start..i]),
-                    span: Span::new(start as u32, i as u32),
-                    space_before: space,
-                });
-                space = false;
-            }
-            b'0'..=b'9' => {
-                let start = i;
-                i = scan_number(bytes, i);
-                toks.push(PpToken {
-                    kind: PpKind::Number,
-                    text: SmolStr::new(&text[start..i]),
-                    span: Span::new(start as u32, i as u32),
-                    space_before: space,
-                });
-                space = false;
-            }
-            b'.' if bytes.get(i + 1).is_some_and(|b| b.is_ascii_digit()) => {
-                let start = i;
-                i = scan_number(bytes, i);
-                toks.push(PpToken {
-                    kind: PpKind::Number,
-                    text: SmolStr::new(&text[start..i]),
-                    span: Span::new(start as u32, i as u32),
-                    space_before: space,
-                });
-                space = false;
-            }
-            b'"' if string_end(bytes, i).is_some() => {
-                let start = i;
-                i = string_end(bytes, i).unwrap_or(i + 1);
-                toks.push(PpToken {
-                    kind: PpKind::Str,
-                    text: SmolStr::new(&text[start..i]),
-                    span: Span::new(start as u32, i as u32),
-                    space_before: space,
-                });
-                space = false;
-            }
-            b'#' => {
-                let start = i;
-                let (kind, len) = if bytes.get(i + 1) == Some(&b'#') {
-                    (PpKind::HashHash, 2)
-                } else {
-                    (PpKind::Hash, 1)
-                };
-                i += len;
-                toks.push(PpToken {
-                    kind,
-                    text: SmolStr::new(&text[start..i]),
-                    span: Span::new(start as u32, i as u32),
-                    space_before: space,
-                });
-                space = false;
-            }
-            _ => {
-                let start = i;
-                let rest = &text[i..];
-                if let Some(p) = punct_at(rest.as_bytes()) {
-                    i += p.as_str().len();
-                    toks.push(PpToken {
-                        kind: PpKind::Punct(p),
-                        text: SmolStr::new_static(p.as_str()),
-                        span: Span::new(start as u32, i as u32),
-                        space_before: space,
-                    });
-                } else {
-                    let ch = rest.chars().next().unwrap_or('\u{fffd}');
-                    i += ch.len_utf8();
-                    toks.push(PpToken {
-                        kind: PpKind::Other(ch),
-                        text: SmolStr::new(&text[start..i]),
-                        span: Span::new(start as u32, i as u32),
-                        space_before: space,
-                    });
-                }
-                space = false;
-            }
+    let mut lexer = Lexer::new(text, opts);
+    let toks = lexer.by_ref().collect();
+    (toks, lexer.into_diagnostics())
+}
+
+/// The lexer as an iterator of tokens, so that a caller can consume a
+/// line at a time and hold no more than that: memory stays proportional
+/// to the longest line, not to the text. Its diagnostics are kept until
+/// [`Lexer::into_diagnostics`].
+pub struct Lexer<'a> {
+    text: &'a str,
+    i: usize,
+    /// Whitespace (or a comment) since the last token on this line.
+    space: bool,
+    opts: LexOptions,
+    diags: Vec<Diagnostic>,
+}
+
+impl<'a> Lexer<'a> {
+    pub fn new(text: &'a str, opts: LexOptions) -> Lexer<'a> {
+        Lexer {
+            text,
+            i: 0,
+            space: false,
+            opts,
+            diags: Vec::new(),
         }
     }
-    (toks, diags)
+
+    /// The problems found in the text consumed so far.
+    pub fn into_diagnostics(self) -> Vec<Diagnostic> {
+        self.diags
+    }
+
+    /// The token `start..self.i`, taking the pending whitespace flag.
+    fn token(&mut self, kind: PpKind, text: SmolStr, start: usize) -> PpToken {
+        let t = PpToken {
+            kind,
+            text,
+            span: Span::new(start as u32, self.i as u32),
+            space_before: self.space,
+        };
+        self.space = false;
+        t
+    }
+
+    /// The spelling of `start..self.i`.
+    fn spelling(&self, start: usize) -> SmolStr {
+        SmolStr::new(&self.text[start..self.i])
+    }
+}
+
+impl Iterator for Lexer<'_> {
+    type Item = PpToken;
+
+    fn next(&mut self) -> Option<PpToken> {
+        let text = self.text;
+        let bytes = text.as_bytes();
+        while self.i < bytes.len() {
+            let i = self.i;
+            let c = bytes[i];
+            // Line continuation.
+            if self.opts.line_continuation {
+                let n = continuation_len(bytes, i);
+                if n > 0 {
+                    self.i += n;
+                    continue;
+                }
+            }
+            match c {
+                b' ' | b'\t' | b'\r' | 0x0b | 0x0c => {
+                    self.space = true;
+                    self.i += 1;
+                }
+                b'\n' => {
+                    self.i += 1;
+                    return Some(self.token(PpKind::Newline, SmolStr::new_static("\n"), i));
+                }
+                b'/' if bytes.get(i + 1) == Some(&b'/') => {
+                    // Line comment, up to (not including) the newline.
+                    // Continuations are removed before comments are
+                    // recognized, so a `\` at the end continues the comment.
+                    let mut j = i;
+                    while j < bytes.len() && bytes[j] != b'\n' {
+                        let n = if self.opts.line_continuation {
+                            continuation_len(bytes, j)
+                        } else {
+                            0
+                        };
+                        j += n.max(1);
+                    }
+                    self.i = j;
+                    self.space = true;
+                }
+                b'/' if bytes.get(i + 1) == Some(&b'*') => {
+                    let mut j = i + 2;
+                    let mut closed = false;
+                    while j < bytes.len() {
+                        if bytes[j] == b'*' && bytes.get(j + 1) == Some(&b'/') {
+                            j += 2;
+                            closed = true;
+                            break;
+                        }
+                        // Newlines inside a comment emit nothing: the span
+                        // table numbers the lines.
+                        j += 1;
+                    }
+                    if !closed {
+                        self.diags.push(Diagnostic::error(
+                            Code::PpUnterminated,
+                            Span::new(i as u32, i as u32 + 2),
+                            "unterminated comment",
+                        ));
+                    }
+                    self.i = j;
+                    self.space = true;
+                }
+                b'a'..=b'z' | b'A'..=b'Z' | b'_' => {
+                    let mut j = i;
+                    while j < bytes.len() && (bytes[j].is_ascii_alphanumeric() || bytes[j] == b'_')
+                    {
+                        j += 1;
+                    }
+                    self.i = j;
+                    let spelling = self.spelling(i);
+                    return Some(self.token(PpKind::Ident, spelling, i));
+                }
+                b'0'..=b'9' => {
+                    self.i = scan_number(bytes, i);
+                    let spelling = self.spelling(i);
+                    return Some(self.token(PpKind::Number, spelling, i));
+                }
+                b'.' if bytes.get(i + 1).is_some_and(|b| b.is_ascii_digit()) => {
+                    self.i = scan_number(bytes, i);
+                    let spelling = self.spelling(i);
+                    return Some(self.token(PpKind::Number, spelling, i));
+                }
+                b'"' if string_end(bytes, i).is_some() => {
+                    self.i = string_end(bytes, i).unwrap_or(i + 1);
+                    let spelling = self.spelling(i);
+                    return Some(self.token(PpKind::Str, spelling, i));
+                }
+                b'#' => {
+                    let (kind, len) = if bytes.get(i + 1) == Some(&b'#') {
+                        (PpKind::HashHash, 2)
+                    } else {
+                        (PpKind::Hash, 1)
+                    };
+                    self.i = i + len;
+                    let spelling = self.spelling(i);
+                    return Some(self.token(kind, spelling, i));
+                }
+                _ => {
+                    let rest = &text[i..];
+                    if let Some(p) = punct_at(rest.as_bytes()) {
+                        self.i = i + p.as_str().len();
+                        return Some(self.token(
+                            PpKind::Punct(p),
+                            SmolStr::new_static(p.as_str()),
+                            i,
+                        ));
+                    }
+                    let ch = rest.chars().next().unwrap_or('\u{fffd}');
+                    self.i = i + ch.len_utf8();
+                    let spelling = self.spelling(i);
+                    return Some(self.token(PpKind::Other(ch), spelling, i));
+                }
+            }
+        }
+        None
+    }
 }
 
 /// The end (after the closing quote) of a string literal starting at

@@ -451,6 +451,7 @@ impl Preprocessor<'_> {
             }
             return;
         }
+        self.function_like += usize::from(mac.params.is_some());
         self.macros.insert(name.text.clone(), mac);
     }
 
@@ -509,7 +510,9 @@ impl Preprocessor<'_> {
         let Some(name) = self.macro_name(d, "undef") else {
             return;
         };
-        self.macros.remove(&name.text);
+        if let Some(m) = self.macros.remove(&name.text) {
+            self.function_like -= usize::from(m.params.is_some());
+        }
         let extra = Directive {
             rest: &d.rest[1..],
             ..*d

@@ -109,14 +109,44 @@ pub(crate) fn preprocess_with_limit(
     let lex_opts = LexOptions {
         line_continuation: true,
     };
-    let (toks, lex_diags) = lex::lex(map.text(), lex_opts);
-    let end = map.text().len() as u32;
+    // The lexer borrows the text while the preprocessor records `#line`
+    // directives in the map, so it reads its own copy. Tokens are consumed
+    // as they are lexed: only a directive line is held whole.
+    let text = map.text().to_string();
+    let end = text.len() as u32;
+    let mut lexer = lex::Lexer::new(&text, lex_opts);
     let mut pp = Preprocessor::new(map, opts.stage, max_tokens);
     pp.version = opts.default_version;
-    pp.diags.extend(lex_diags);
-    for line in split_lines(toks, end) {
-        pp.line(line);
+    // A directive line is gathered whole; text goes to the preprocessor
+    // token by token.
+    let mut directive: Option<Vec<PpToken>> = None;
+    let mut line_start = true;
+    for t in lexer.by_ref() {
+        if t.kind == PpKind::Newline {
+            if let Some(toks) = directive.take() {
+                pp.line(Line {
+                    toks,
+                    end: t.span.start,
+                });
+            }
+            line_start = true;
+            continue;
+        }
+        match &mut directive {
+            Some(toks) => toks.push(t),
+            None if line_start && t.kind == PpKind::Hash => directive = Some(vec![t]),
+            None => pp.text(t),
+        }
+        line_start = false;
     }
+    if let Some(toks) = directive {
+        pp.line(Line { toks, end });
+    }
+    // The lexer's problems come first, as they did when the text was
+    // lexed whole before preprocessing.
+    let mut diags = lexer.into_diagnostics();
+    diags.append(&mut pp.diags);
+    pp.diags = diags;
     pp.finish(end)
 }
 
@@ -127,25 +157,9 @@ pub(crate) struct Line {
     pub end: u32,
 }
 
-fn split_lines(toks: Vec<PpToken>, text_end: u32) -> Vec<Line> {
-    let mut lines = Vec::new();
-    let mut cur = Vec::new();
-    for t in toks {
-        if t.kind == PpKind::Newline {
-            lines.push(Line {
-                toks: std::mem::take(&mut cur),
-                end: t.span.start,
-            });
-        } else {
-            cur.push(t);
-        }
-    }
-    lines.push(Line {
-        toks: cur,
-        end: text_end,
-    });
-    lines
-}
+/// Pending text tokens at which they are expanded before the next
+/// directive (see `Preprocessor::text`).
+const FLUSH_TOKENS: usize = 4096;
 
 /// One level of `#if` nesting.
 #[derive(Clone, Debug)]
@@ -202,6 +216,8 @@ pub(crate) struct Preprocessor<'m> {
     /// Something other than comments and whitespace has been seen.
     seen_content: bool,
     macros: MacroTable,
+    /// How many of `macros` are function-like.
+    function_like: usize,
     conds: Vec<Cond>,
     /// Text tokens waiting for macro expansion (flushed at each directive).
     pending: Vec<PTok>,
@@ -242,6 +258,7 @@ impl<'m> Preprocessor<'m> {
             version_span: None,
             seen_content: false,
             macros,
+            function_like: 0,
             conds: Vec::new(),
             pending: Vec::new(),
             out: Vec::new(),
@@ -260,15 +277,27 @@ impl<'m> Preprocessor<'m> {
         self.conds.last().is_none_or(|c| c.active)
     }
 
+    /// A directive line (its first token is `#`).
     fn line(&mut self, line: Line) {
         if line.toks.is_empty() {
             return;
         }
-        if line.toks[0].kind == PpKind::Hash {
-            self.flush();
-            self.directive(&line);
-        } else if self.active() {
-            self.pending.extend(line.toks.into_iter().map(PTok::from));
+        self.flush();
+        self.directive(&line);
+        self.seen_content = true;
+    }
+
+    /// One token of a text line. A long text is expanded as it goes rather
+    /// than at the next directive, so memory does not grow with it; only
+    /// while no function-like macro is defined, since an invocation's
+    /// arguments may run on past any point (object-like expansion does not
+    /// depend on where the text is cut).
+    fn text(&mut self, t: PpToken) {
+        if self.active() {
+            self.pending.push(PTok::from(t));
+            if self.pending.len() >= FLUSH_TOKENS && self.function_like == 0 {
+                self.flush();
+            }
         }
         self.seen_content = true;
     }

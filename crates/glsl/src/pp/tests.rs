@@ -721,3 +721,24 @@ fn strings_need_the_printf_extension() {
     );
     err("f(\"x);\n", "invalid character `\"'");
 }
+
+#[test]
+fn long_text_expands_the_same_in_pieces() {
+    // Longer than the early-expansion threshold, on one line and on many,
+    // with object-like macros: the same tokens as expanding it whole.
+    let n = FLUSH_TOKENS * 2 + 7;
+    let one_line = format!("#define X a\n{}\n", "X ".repeat(n));
+    assert_eq!(ok(&one_line), vec!["a"; n].join(" "));
+    let lines = format!("#define X a\n{}", "X\n".repeat(n));
+    assert_eq!(ok(&lines), vec!["a"; n].join(" "));
+}
+
+#[test]
+fn function_like_invocation_spans_a_long_text() {
+    // With a function-like macro defined, text is not cut early: an
+    // invocation whose name is the threshold's last token still expands.
+    let pad = "b ".repeat(FLUSH_TOKENS - 1);
+    let src = format!("#define F(x) x + x\n{pad}F\n(\n1\n)\n");
+    let out = ok(&src);
+    assert!(out.ends_with("b 1 + 1"), "{}", &out[out.len() - 20..]);
+}
