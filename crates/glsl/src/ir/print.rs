@@ -519,9 +519,10 @@ fn binary(op: BinaryOp) -> &'static str {
     }
 }
 
-/// The format string of `debugPrintfEXT` spelled back (escapes for `"`,
-/// `\`, newlines and tabs; `%%` for a literal percent sign).
-fn format_string(pieces: &[Piece]) -> String {
+/// The format string of `debugPrintfEXT` spelled back, without the
+/// quotes (escapes for `"`, `\`, newlines and tabs; `%%` for a literal
+/// percent sign): [`crate::printf::parse`] of it gives `pieces` again.
+pub fn format_string(pieces: &[Piece]) -> String {
     let mut s = String::new();
     for p in pieces {
         match p {
