@@ -191,6 +191,7 @@ pub mod lanes16;
 mod liveness;
 mod lower;
 mod mask_flow;
+pub mod print;
 mod program;
 mod variant;
 

@@ -16,6 +16,8 @@
 //! - expressions may have side effects (assignments, `++`, calls) and are
 //!   evaluated left to right; `&&`, `||` and `?:` evaluate lazily.
 
+pub mod print;
+
 use crate::builtins::BuiltinFn;
 use crate::source::Span;
 use crate::token::Version;
