@@ -9,12 +9,16 @@ spells the same steps out.
 
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
 import numpy as np
 
-from ._context import Context, Program
 from .shaders import EFFECTS
+
+if TYPE_CHECKING:
+    # Annotations only: Context.draw_spheres calls into this module, so a
+    # run-time import back would make the two modules a cycle.
+    from ._context import Context, Program
 
 #: Direction (eye space), ambient, diffuse, specular of the default lights
 #: (those of ``shaderbox render``: a key light from the upper left and a
