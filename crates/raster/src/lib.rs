@@ -156,23 +156,31 @@
 //!   are RGBA8 unorm or RGBA32F. Dithering is off.
 //! - Fragment outputs that the shader never writes are written as zeros.
 
+mod assembly;
+mod binning;
+mod clear;
 mod clip;
+mod draw;
 #[cfg(test)]
 mod draw_tests;
 mod fragment_ops;
 mod framebuffer;
 mod interpolate;
 mod linkage;
-mod pipeline;
 mod pixel_fragments;
+mod prim;
 mod probe;
 mod rasterize;
+mod replay;
+mod setup;
 mod shade;
 mod simd;
+mod spare;
 mod state;
 mod texture;
 mod texture_2d;
 mod unorm8_filter;
+mod vertex;
 mod workers;
 
 #[cfg(test)]
@@ -196,19 +204,20 @@ pub(crate) fn lcg_bits(mut seed: u32) -> impl FnMut() -> u32 {
 }
 pub(crate) use ::exec as ex;
 
+pub use assembly::Mode;
+pub use binning::TILE;
+pub use draw::draw_stages;
 pub use framebuffer::{
     depth_to_fixed, fixed_to_depth, float_to_unorm8, unorm8_to_float, ColorBuffer, ColorFormat,
     Framebuffer, DEPTH_MAX, MAX_DRAW_BUFFERS, MAX_FRAMEBUFFER_SIZE,
 };
-pub use pipeline::{
-    draw_stages, fetch_column_each, fetch_vertex, Mode, VertexFetch, MAX_POINT_SIZE, TILE,
-};
 pub use pixel_fragments::{write_pixel_fragments, PixelFragment};
 pub use probe::{
-    probe_draw, view_draw, DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine,
-    ProbeRequest, Replay, VertexProbe, View, ViewImage,
+    DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine, VertexProbe, View, ViewImage,
 };
 pub use rasterize::SUBPIXEL_BITS;
+pub use replay::{probe_draw, view_draw, ProbeRequest, Replay};
+pub use setup::MAX_POINT_SIZE;
 pub use state::{
     Blend, BlendEquation, BlendFactor, CompareFunc, CullFace, FrontFace, LogicOp, PipelineState,
     PolygonMode, PolygonOffset, Rect, StencilFace, StencilOp, StencilState,
@@ -217,6 +226,7 @@ pub use texture::{
     DepthTextureMode, Image, MagFilter, MinFilter, Texture, TextureTarget, TextureUnit,
     TextureUnits, Wrap,
 };
+pub use vertex::{fetch_column_each, fetch_vertex, VertexFetch};
 pub use workers::{Workers, MAX_THREADS};
 
 /// Why a draw stopped. Fragments written before the error stay written

@@ -5,61 +5,14 @@
 use crate::ex::{Batch, ExecError, Textures, LANES};
 use crate::fragment_ops::{self, Fragment, QuickOps, QuickTarget};
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
-use crate::interpolate::{offsets, Kind, Plane, PrimPlanes, QUAD_X, QUAD_Y, STRIP_X, STRIP_Y};
-use crate::linkage::FsLayout;
+use crate::interpolate::{Kind, Plane, QUAD_X, QUAD_Y, STRIP_X, STRIP_Y};
+use crate::linkage::{new_batch, FsLayout};
+use crate::prim::Prim;
+use crate::probe::Probe;
 use crate::rasterize::{PixelRect, Shape, STRIP};
 use crate::simd::Isa;
 use crate::state::PipelineState;
 use crate::ShaderStage;
-
-/// A primitive ready for rasterization (small: see [`Shape`]).
-pub(crate) struct Prim {
-    pub shape: Shape,
-    /// Pixel bounds clipped to the framebuffer and scissor box.
-    pub bounds: PixelRect,
-    pub back: bool,
-    /// Polygon offset added to window z.
-    pub z_offset: f64,
-    /// Its window z and 1/w planes (`crate::interpolate`).
-    pub planes: PrimPlanes,
-    /// Its index in its set-up chunk (`chunk`, an index into
-    /// [`FragmentStage::attrs`]), whose planes array holds one plane per
-    /// link and primitive: its varyings' start at `index` × links.
-    pub index: u32,
-    pub chunk: u32,
-    /// Index of the assembled primitive this one came from (clipping may
-    /// split one into several), for the debugger.
-    pub source: u32,
-}
-
-/// The origin pixel of a primitive's planes (`crate::interpolate`): the
-/// first pixel of its clipped bounds.
-pub(crate) fn plane_origin(bounds: PixelRect) -> (i64, i64) {
-    (bounds.0, bounds.1)
-}
-
-impl Prim {
-    /// [`offsets`] from this primitive's plane origin.
-    #[inline(always)]
-    fn offsets<const N: usize>(
-        &self,
-        at: (i64, i64),
-        ox: &[f32; N],
-        oy: &[f32; N],
-    ) -> ([f32; N], [f32; N]) {
-        offsets(plane_origin(self.bounds), at, ox, oy)
-    }
-}
-
-pub(crate) fn new_batch(inputs: usize, outputs: usize) -> Batch {
-    Batch {
-        inputs: vec![[0.0; LANES]; inputs],
-        outputs: vec![[0.0; LANES]; outputs],
-        active: 0,
-        discarded: 0,
-        helper: 0,
-    }
-}
 
 /// The final window z of four pixels from their interpolated z and the
 /// primitive's polygon offset (offset, clamped), and its fixed point.
@@ -346,7 +299,7 @@ pub(crate) struct FragmentStage<'a> {
     /// the visible fragments only (see [`FragmentStage::shade_deferred`]).
     pub deferred: Option<Box<dyn ShaderStage>>,
     /// The debugger's pixel probe (`None` in normal draws).
-    pub probe: Option<&'a crate::probe::Probe>,
+    pub probe: Option<&'a Probe>,
     /// `shader`'s and `deferred`'s uniform-only values, once per draw.
     prepared: Option<crate::ex::Prepared>,
     deferred_prepared: Option<crate::ex::Prepared>,
@@ -383,7 +336,7 @@ impl<'a> FragmentStage<'a> {
         state: &'a PipelineState,
         attrs: Vec<&'a [Plane]>,
         deferred: Option<Box<dyn ShaderStage>>,
-        probe: Option<&'a crate::probe::Probe>,
+        probe: Option<&'a Probe>,
     ) -> FragmentStage<'a> {
         let read_by = |stage: &dyn ShaderStage, offset: usize| {
             probe.is_some()
@@ -1351,9 +1304,12 @@ impl<'a> FragmentStage<'a> {
                     // The other lanes' prints: the same batch run once
                     // more (runs are deterministic).
                     let mut copy = batch.clone();
-                    p.print_batch(self, &mut copy, prim.source, |l| {
-                        pixel_of(l).filter(|_| l != lane)
-                    })?;
+                    p.print_batch(
+                        (self.shader, self.uniforms, self.textures),
+                        &mut copy,
+                        prim.source,
+                        |l| pixel_of(l).filter(|_| l != lane),
+                    )?;
                 }
                 let z = pending.get(lane / 4).map_or(0.0, |e| e.quad.z[lane % 4]);
                 let mut r = p.begin(prim, batch, lane, z);
@@ -1366,9 +1322,15 @@ impl<'a> FragmentStage<'a> {
             }
             None => {
                 if let Some((p, view)) = self.probe.and_then(|p| Some((p, p.view()?))) {
-                    watched = p.run_view(self, batch, view)?;
+                    watched =
+                        p.run_view((self.shader, self.uniforms, self.textures), batch, view)?;
                 } else if let Some(p) = self.probe {
-                    p.print_batch(self, batch, prim.source, pixel_of)?;
+                    p.print_batch(
+                        (self.shader, self.uniforms, self.textures),
+                        batch,
+                        prim.source,
+                        pixel_of,
+                    )?;
                 } else {
                     self.run_shader(batch)?;
                 }
