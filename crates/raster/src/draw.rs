@@ -150,7 +150,7 @@ pub(crate) fn draw_probed(
     // where they are (not moved).
     let attrs: Vec<&[Plane]> = parts.iter().map(|p| &p.1[..]).collect();
     // Sized first: collected from `flat_map` the vector grew by doubling
-    // (copies and fresh pages, ~10 ms of a million-triangle draw).
+    // (copies and fresh pages on this thread).
     let mut prims: Vec<&Prim> = Vec::with_capacity(parts.iter().map(|p| p.0.len()).sum());
     prims.extend(parts.iter().flat_map(|p| p.0.iter()));
     let bins = Bins::new(chunk_bins, &parts, grid);

@@ -124,12 +124,11 @@
 //! one unit for the whole request, no depth comparison and REPEAT,
 //! CLAMP_TO_EDGE or MIRRORED_REPEAT wrapping take a fast path that works
 //! over the 16 lanes at once with the general path's operations in the
-//! same order (the same bits; `texture_2d.rs` tests compare the two): on the
-//! benchmark's textured scene it cut sampling's share of the profile from
-//! about 45 % to about 25 %, and its x86 variants' filtering of RGBA8
-//! levels in vector registers (`texture_2d/wide.rs`, over
-//! `exec::lanes16::Lanes16`: AVX-512, or two AVX2 registers per value) to
-//! about 17 % (see docs/PERFORMANCE.md). Level of detail: λ_base once
+//! same order (the same bits; `texture_2d` tests compare the two), its
+//! x86 variants filtering RGBA8 levels in vector registers
+//! (`texture_2d/wide.rs`, over `exec::lanes16::Lanes16`: AVX-512, or two
+//! AVX2 registers per value); docs/PERFORMANCE.md has its share of the
+//! profile. Level of detail: λ_base once
 //! per 2×2 quad, from the derivatives of the quad's first pixel (GL 2.1
 //! §3.8.8 lets ρ be approximated; llvmpipe does the same), biases and
 //! clamps per fragment. LINEAR on RGBA8 levels of 2D textures and cube
@@ -141,6 +140,26 @@
 //! Blending with FUNC_ADD and SRC_ALPHA/ONE_MINUS_SRC_ALPHA, ONE/ZERO or
 //! ONE/ONE into an RGBA8 buffer runs as straight-line code with the
 //! general equations' bits.
+//!
+//! # Modules, stage by stage
+//! - vertex fetch and the vertex stage: `vertex` (`run_vertices`);
+//! - primitive assembly: `assembly` (`primitive`, `small_polygon`);
+//! - clipping: `clip` (`Planes::clip_polygon`, `clip_line`);
+//! - set-up (window transform, facing, culling, polygon offset, planes):
+//!   `setup` (`Setup::chunk`), giving `prim::Prim`s;
+//! - binning into tiles: `binning` (`ChunkBins::new`, `Bins`);
+//! - rasterization (coverage): `rasterize` (`Shape`);
+//! - interpolation: `interpolate` (`PrimPlanes`, `Plane`);
+//! - fragment shading: `shade` (`FragmentStage::shade`; the faster loops
+//!   with the same bytes in `shade/batched.rs`, `shade/deferred.rs`);
+//! - per-fragment operations: `fragment_ops` (`process`);
+//! - textures: `texture` (storage and the general path, `TextureUnits`),
+//!   `texture_2d` (the 2D fast path), `unorm8_filter`;
+//! - framebuffers: `framebuffer`, clears in `clear`;
+//! - the draw driver and threads: `draw` (`draw_probed`, `shade_tiles`),
+//!   `workers`, `spare` (buffers kept between draws);
+//! - the debugger: `probe` (recorder, report types), `replay`
+//!   ([`probe_draw`], [`view_draw`]).
 //!
 //! # Limitations and choices where GL leaves things undefined
 //! - When the vertex shader does not write gl_ClipVertex, user clip planes

@@ -194,8 +194,8 @@ fn run_vertices_with(
     // outputs straight into its own part of the draw's output array.
     // Every value is written by the tasks (a batch's outputs the shader
     // leaves unwritten are zero): the array kept from the last draw is
-    // not cleared first (7 MB of memset on this thread for 150k
-    // vertices).
+    // not cleared first (a memset of the whole array, on this thread
+    // alone).
     let mut outputs = std::mem::take(&mut workers.spare().outputs);
     outputs.resize(unique.len() * stride, 0.0);
     let mut rest: &mut [f32] = &mut outputs;

@@ -102,8 +102,8 @@ impl Workers {
                     // Every `min_len` tasks their own job: rayon otherwise
                     // stops splitting a range once each thread has a part,
                     // and a thread that finishes early cannot take tasks
-                    // from the part another one is running (a whole
-                    // frame's last ~10 % ran on one thread).
+                    // from the part another one is running (the end of a
+                    // frame would run on one thread).
                     .with_max_len(min_len.max(1))
                     .map(|i| {
                         let _env = exec::FloatEnv::enter();
