@@ -124,12 +124,11 @@
 //! one unit for the whole request, no depth comparison and REPEAT,
 //! CLAMP_TO_EDGE or MIRRORED_REPEAT wrapping take a fast path that works
 //! over the 16 lanes at once with the general path's operations in the
-//! same order (the same bits; `texture_2d.rs` tests compare the two): on the
-//! benchmark's textured scene it cut sampling's share of the profile from
-//! about 45 % to about 25 %, and its x86 variants' filtering of RGBA8
-//! levels in vector registers (`texture_2d/wide.rs`, over
-//! `exec::lanes16::Lanes16`: AVX-512, or two AVX2 registers per value) to
-//! about 17 % (see docs/PERFORMANCE.md). Level of detail: λ_base once
+//! same order (the same bits; `texture_2d` tests compare the two), its
+//! x86 variants filtering RGBA8 levels in vector registers
+//! (`texture_2d/wide.rs`, over `exec::lanes16::Lanes16`: AVX-512, or two
+//! AVX2 registers per value); docs/PERFORMANCE.md has its share of the
+//! profile. Level of detail: λ_base once
 //! per 2×2 quad, from the derivatives of the quad's first pixel (GL 2.1
 //! §3.8.8 lets ρ be approximated; llvmpipe does the same), biases and
 //! clamps per fragment. LINEAR on RGBA8 levels of 2D textures and cube
@@ -141,6 +140,26 @@
 //! Blending with FUNC_ADD and SRC_ALPHA/ONE_MINUS_SRC_ALPHA, ONE/ZERO or
 //! ONE/ONE into an RGBA8 buffer runs as straight-line code with the
 //! general equations' bits.
+//!
+//! # Modules, stage by stage
+//! - vertex fetch and the vertex stage: `vertex` (`run_vertices`);
+//! - primitive assembly: `assembly` (`primitive`, `small_polygon`);
+//! - clipping: `clip` (`Planes::clip_polygon`, `clip_line`);
+//! - set-up (window transform, facing, culling, polygon offset, planes):
+//!   `setup` (`Setup::chunk`), giving `prim::Prim`s;
+//! - binning into tiles: `binning` (`ChunkBins::new`, `Bins`);
+//! - rasterization (coverage): `rasterize` (`Shape`);
+//! - interpolation: `interpolate` (`PrimPlanes`, `Plane`);
+//! - fragment shading: `shade` (`FragmentStage::shade`; the faster loops
+//!   with the same bytes in `shade/batched.rs`, `shade/deferred.rs`);
+//! - per-fragment operations: `fragment_ops` (`process`);
+//! - textures: `texture` (storage and the general path, `TextureUnits`),
+//!   `texture_2d` (the 2D fast path), `unorm8_filter`;
+//! - framebuffers: `framebuffer`, clears in `clear`;
+//! - the draw driver and threads: `draw` (`draw_probed`, `shade_tiles`),
+//!   `workers`, `spare` (buffers kept between draws);
+//! - the debugger: `probe` (recorder, report types), `replay`
+//!   ([`probe_draw`], [`view_draw`]).
 //!
 //! # Limitations and choices where GL leaves things undefined
 //! - When the vertex shader does not write gl_ClipVertex, user clip planes
@@ -156,23 +175,31 @@
 //!   are RGBA8 unorm or RGBA32F. Dithering is off.
 //! - Fragment outputs that the shader never writes are written as zeros.
 
+mod assembly;
+mod binning;
+mod clear;
 mod clip;
+mod draw;
 #[cfg(test)]
 mod draw_tests;
 mod fragment_ops;
 mod framebuffer;
 mod interpolate;
 mod linkage;
-mod pipeline;
 mod pixel_fragments;
+mod prim;
 mod probe;
 mod rasterize;
+mod replay;
+mod setup;
 mod shade;
 mod simd;
+mod spare;
 mod state;
 mod texture;
 mod texture_2d;
 mod unorm8_filter;
+mod vertex;
 mod workers;
 
 #[cfg(test)]
@@ -196,19 +223,20 @@ pub(crate) fn lcg_bits(mut seed: u32) -> impl FnMut() -> u32 {
 }
 pub(crate) use ::exec as ex;
 
+pub use assembly::Mode;
+pub use binning::TILE;
+pub use draw::draw_stages;
 pub use framebuffer::{
     depth_to_fixed, fixed_to_depth, float_to_unorm8, unorm8_to_float, ColorBuffer, ColorFormat,
     Framebuffer, DEPTH_MAX, MAX_DRAW_BUFFERS, MAX_FRAMEBUFFER_SIZE,
 };
-pub use pipeline::{
-    draw_stages, fetch_column_each, fetch_vertex, Mode, VertexFetch, MAX_POINT_SIZE, TILE,
-};
 pub use pixel_fragments::{write_pixel_fragments, PixelFragment};
 pub use probe::{
-    probe_draw, view_draw, DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine,
-    ProbeRequest, Replay, VertexProbe, View, ViewImage,
+    DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine, VertexProbe, View, ViewImage,
 };
 pub use rasterize::SUBPIXEL_BITS;
+pub use replay::{probe_draw, view_draw, ProbeRequest, Replay};
+pub use setup::MAX_POINT_SIZE;
 pub use state::{
     Blend, BlendEquation, BlendFactor, CompareFunc, CullFace, FrontFace, LogicOp, PipelineState,
     PolygonMode, PolygonOffset, Rect, StencilFace, StencilOp, StencilState,
@@ -217,6 +245,7 @@ pub use texture::{
     DepthTextureMode, Image, MagFilter, MinFilter, Texture, TextureTarget, TextureUnit,
     TextureUnits, Wrap,
 };
+pub use vertex::{fetch_column_each, fetch_vertex, VertexFetch};
 pub use workers::{Workers, MAX_THREADS};
 
 /// Why a draw stopped. Fragments written before the error stay written

@@ -2,7 +2,7 @@
 //! how vertex outputs feed fragment inputs (matched by name; gl_Color from
 //! gl_FrontColor / gl_BackColor, gl_SecondaryColor likewise).
 
-use crate::ex::{Interface, Slot};
+use crate::ex::{Batch, Interface, Slot, LANES};
 use crate::framebuffer::MAX_DRAW_BUFFERS;
 
 fn find<'a>(slots: &'a [Slot], name: &str) -> Option<&'a Slot> {
@@ -173,5 +173,17 @@ impl FsLayout {
                 .filter(|s| s.written)
                 .map(|s| s.offset),
         }
+    }
+}
+
+/// A fresh batch of `inputs` input and `outputs` output components
+/// (all zero, no lane active), laid out as a stage interface says.
+pub(crate) fn new_batch(inputs: usize, outputs: usize) -> Batch {
+    Batch {
+        inputs: vec![[0.0; LANES]; inputs],
+        outputs: vec![[0.0; LANES]; outputs],
+        active: 0,
+        discarded: 0,
+        helper: 0,
     }
 }

@@ -1,117 +1,27 @@
-//! The debugger's pixel probe: what one draw did at one pixel.
+//! The debugger's pixel probe: what one draw did at one pixel, recorded
+//! as the stages run ([`Probe`], carried by a replayed draw; the replays
+//! themselves are `crate::replay`), and the report types it fills
+//! ([`DrawProbe`], [`ViewImage`]).
 //!
-//! [`probe_draw`] replays a draw on a copy of the framebuffer with the
-//! scissor box narrowed to the probed pixel (and the `debugPrintfEXT`
-//! rectangle, if any), on one thread. Narrowing the scissor does not change
-//! any value the pixel sees: quads are still whole 2×2 quads (helper lanes
-//! included, so derivatives are those of the real draw), interpolation is
-//! per pixel, and per-fragment operations run in primitive order on the
-//! same stored values. The fragment stage reports, for each fragment that
+//! The vertex stage reports prints, set-up each primitive's vertices and
+//! window outline, and the fragment stage, for each fragment that
 //! reaches the pixel: its primitive, its inputs, every statement and store
 //! of its shader invocation ([`exec::Kernel::run_traced`]), `discard`, its
 //! outputs and each per-fragment operation's decision with the values it
 //! compared. Normal draws carry no probe and pay one `Option` check per
 //! batch of 16 lanes.
 
+use crate::assembly::Assembled;
 use crate::ex::{self, Batch, ExecError, PrintSink, Trace};
 use crate::fragment_ops::{self, Fragment};
 use crate::framebuffer::{depth_to_fixed, ColorBuffer, Framebuffer};
 use crate::linkage::VsLayout;
-use crate::pipeline::{draw_probed, Assembled};
+use crate::prim::Prim;
 use crate::rasterize::WinVertex;
-use crate::shade::{FragmentStage, Prim};
-use crate::state::{PipelineState, Rect};
-use crate::{DrawError, Mode, VertexFetch};
+use crate::state::PipelineState;
+use crate::ShaderStage;
 use glsl::Span;
 use std::sync::Mutex;
-
-/// What the debugger asks of one draw.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct ProbeRequest {
-    /// The window pixel to trace.
-    pub pixel: (u32, u32),
-    /// Also collect `debugPrintfEXT` output of fragments in
-    /// `[x0, x1) × [y0, y1)` (the pixel's own prints are always in its
-    /// trace).
-    pub print_rect: Option<(u32, u32, u32, u32)>,
-    /// Also trace the vertex shader for this position of the draw's index
-    /// list.
-    pub vertex: Option<usize>,
-    /// Also collect every primitive's window-space outline.
-    pub outlines: bool,
-}
-
-/// One draw's inputs, as [`crate::draw_on`] takes them, for the debugger's
-/// replays ([`probe_draw`], [`view_draw`]).
-#[derive(Clone, Copy)]
-pub struct Replay<'a> {
-    pub state: &'a PipelineState,
-    pub vs: &'a ex::Kernel,
-    pub vs_uniforms: &'a [u32],
-    pub fs: &'a ex::Kernel,
-    pub fs_uniforms: &'a [u32],
-    pub mode: Mode,
-    pub indices: &'a [u32],
-    pub fetch: &'a dyn VertexFetch,
-    pub textures: &'a (dyn ex::Textures + Sync),
-}
-
-impl Replay<'_> {
-    /// Runs the draw on one thread into `fb` with `probe` attached (and
-    /// `state` in place of the draw's own).
-    fn run(
-        &self,
-        fb: &mut Framebuffer,
-        state: &PipelineState,
-        probe: &Probe,
-    ) -> Result<(), DrawError> {
-        draw_probed(
-            &crate::Workers::inline(),
-            fb,
-            state,
-            (self.vs, self.vs_uniforms),
-            (self.fs, self.fs_uniforms),
-            self.mode,
-            self.indices,
-            self.fetch,
-            self.textures,
-            Some(probe),
-        )
-    }
-}
-
-/// Replays a draw on a copy of `fb` and returns, for every pixel a
-/// fragment of this draw wrote, the value `view` had in that fragment.
-pub fn view_draw(fb: &Framebuffer, draw: &Replay, view: View) -> Result<ViewImage, DrawError> {
-    let probe = Probe {
-        pixel: (-1, -1),
-        print_rect: None,
-        outlines: false,
-        view: Some(view),
-        inner: Mutex::new(DrawProbe::default()),
-        image: Mutex::new(ViewImage {
-            width: fb.width,
-            height: fb.height,
-            pixels: vec![None; fb.width as usize * fb.height as usize],
-        }),
-        windows: Mutex::default(),
-    };
-    let mut copy = fb.clone();
-    draw.run(&mut copy, draw.state, &probe)?;
-    Ok(probe.image.into_inner().unwrap_or_else(|e| e.into_inner()))
-}
-
-impl ProbeRequest {
-    /// A request for `pixel` only.
-    pub fn pixel(x: u32, y: u32) -> ProbeRequest {
-        ProbeRequest {
-            pixel: (x, y),
-            print_rect: None,
-            vertex: None,
-            outlines: false,
-        }
-    }
-}
 
 /// A value to show for the whole frame as a false-colour image.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -259,7 +169,7 @@ pub struct PixelState {
 }
 
 impl PixelState {
-    fn read(fb: &Framebuffer, index: usize) -> PixelState {
+    pub(crate) fn read(fb: &Framebuffer, index: usize) -> PixelState {
         let mut s = PixelState {
             depth: fb.depth.as_ref().and_then(|d| d.get(index)).copied(),
             stencil: fb.stencil.as_ref().and_then(|d| d.get(index)).copied(),
@@ -282,112 +192,6 @@ impl PixelState {
     }
 }
 
-/// Replays a draw on a copy of `fb` and reports what happened at
-/// `req.pixel` (see the module docs).
-pub fn probe_draw(
-    fb: &Framebuffer,
-    draw: &Replay,
-    req: ProbeRequest,
-) -> Result<DrawProbe, DrawError> {
-    let state = draw.state;
-    let (px, py) = req.pixel;
-    let mut report = DrawProbe {
-        pixel: req.pixel,
-        ..DrawProbe::default()
-    };
-    if px >= fb.width || py >= fb.height {
-        report.unreachable = Some(format!(
-            "pixel ({px}, {py}) is outside the {}×{} framebuffer",
-            fb.width, fb.height
-        ));
-        return Ok(report);
-    }
-    // The region replayed: the pixel and the print rectangle, inside the
-    // real scissor box.
-    let (mut x0, mut y0, mut x1, mut y1) = (px as i64, py as i64, px as i64 + 1, py as i64 + 1);
-    if let Some(r) = req.print_rect {
-        x0 = x0.min(r.0 as i64);
-        y0 = y0.min(r.1 as i64);
-        x1 = x1.max(r.2 as i64);
-        y1 = y1.max(r.3 as i64);
-    }
-    if let Some(s) = state.scissor {
-        let inside = |x: i64, y: i64| {
-            x >= s.x as i64
-                && y >= s.y as i64
-                && x < s.x as i64 + s.w as i64
-                && y < s.y as i64 + s.h as i64
-        };
-        if !inside(px as i64, py as i64) {
-            report.unreachable = Some(format!(
-                "pixel ({px}, {py}) is outside the scissor box ({}, {}, {}×{})",
-                s.x, s.y, s.w, s.h
-            ));
-        }
-        x0 = x0.max(s.x as i64);
-        y0 = y0.max(s.y as i64);
-        x1 = x1.min(s.x as i64 + s.w as i64);
-        y1 = y1.min(s.y as i64 + s.h as i64);
-    }
-    let mut narrowed = state.clone();
-    narrowed.scissor = Some(Rect {
-        x: x0 as i32,
-        y: y0 as i32,
-        w: (x1 - x0).max(0) as i32,
-        h: (y1 - y0).max(0) as i32,
-    });
-    let probe = Probe {
-        pixel: (px as i64, py as i64),
-        print_rect: req.print_rect,
-        outlines: req.outlines,
-        view: None,
-        image: Mutex::new(ViewImage::default()),
-        inner: Mutex::new(report),
-        windows: Mutex::default(),
-    };
-    let mut copy = fb.clone();
-    let result = draw.run(&mut copy, &narrowed, &probe);
-    let mut report = probe.inner.into_inner().unwrap_or_else(|e| e.into_inner());
-    report.after = PixelState::read(&copy, (py * copy.width + px) as usize);
-    if let Some(position) = req.vertex {
-        report.vertex = Some(trace_vertex(draw, position));
-    }
-    result.map(|()| report)
-}
-
-/// Runs the vertex shader alone for one position of the index list, traced
-/// (vertices do not depend on each other, so a batch of one lane gives the
-/// values of the real draw).
-fn trace_vertex(draw: &Replay, position: usize) -> VertexProbe {
-    let (vs, indices) = (draw.vs, draw.indices);
-    let Some(&index) = indices.get(position) else {
-        return VertexProbe {
-            position,
-            error: Some(format!(
-                "the draw has {} vertices; there is no vertex at position {position}",
-                indices.len()
-            )),
-            ..VertexProbe::default()
-        };
-    };
-    let iface = vs.interface();
-    let mut batch = crate::shade::new_batch(iface.input_components, iface.output_components);
-    crate::pipeline::fetch_vertex(iface, draw.fetch, index, &mut batch, 0);
-    batch.active = 1;
-    let mut rec = Recording {
-        fragment: FragmentProbe::default(),
-    };
-    let result = vs.run_traced(&mut batch, draw.vs_uniforms, draw.textures, 0, &mut rec);
-    VertexProbe {
-        position,
-        index,
-        inputs: batch.inputs.iter().map(|c| c[0]).collect(),
-        events: rec.fragment.events,
-        outputs: batch.outputs.iter().map(|c| c[0]).collect(),
-        error: result.err().map(|e| e.to_string()),
-    }
-}
-
 /// The probe a draw carries (interior mutability: the fragment stage holds
 /// it by shared reference; the replay runs on one thread).
 pub(crate) struct Probe {
@@ -405,7 +209,7 @@ pub(crate) struct Probe {
 
 /// The trace of the probed lane while its batch runs.
 pub(crate) struct Recording {
-    fragment: FragmentProbe,
+    pub fragment: FragmentProbe,
 }
 
 impl Trace for Recording {
@@ -444,6 +248,53 @@ impl Recording {
 }
 
 impl Probe {
+    /// A probe of pixel `pixel` (and the prints of `print_rect`, and every
+    /// primitive's outline when `outlines`), recording into `report`.
+    pub fn for_pixel(
+        pixel: (i64, i64),
+        print_rect: Option<(u32, u32, u32, u32)>,
+        outlines: bool,
+        report: DrawProbe,
+    ) -> Probe {
+        Probe {
+            pixel,
+            print_rect,
+            outlines,
+            view: None,
+            image: Mutex::new(ViewImage::default()),
+            inner: Mutex::new(report),
+            windows: Mutex::default(),
+        }
+    }
+
+    /// A probe recording `view` at every pixel of a `width`×`height`
+    /// framebuffer.
+    pub fn for_view(view: View, width: u32, height: u32) -> Probe {
+        Probe {
+            pixel: (-1, -1),
+            print_rect: None,
+            outlines: false,
+            view: Some(view),
+            inner: Mutex::new(DrawProbe::default()),
+            image: Mutex::new(ViewImage {
+                width,
+                height,
+                pixels: vec![None; width as usize * height as usize],
+            }),
+            windows: Mutex::default(),
+        }
+    }
+
+    /// What [`Probe::for_pixel`]'s probe recorded.
+    pub fn into_report(self) -> DrawProbe {
+        self.inner.into_inner().unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// What [`Probe::for_view`]'s probe recorded.
+    pub fn into_image(self) -> ViewImage {
+        self.image.into_inner().unwrap_or_else(|e| e.into_inner())
+    }
+
     fn with<R>(&self, f: impl FnOnce(&mut DrawProbe) -> R) -> R {
         let mut g = self.inner.lock().unwrap_or_else(|e| e.into_inner());
         f(&mut g)
@@ -459,20 +310,14 @@ impl Probe {
     /// bits).
     pub fn run_view(
         &self,
-        stage: &FragmentStage,
+        (shader, uniforms, textures): (&dyn ShaderStage, &[u32], &dyn ex::Textures),
         batch: &mut Batch,
         view: View,
     ) -> Result<Vec<[u32; ex::LANES]>, ExecError> {
         match view {
             View::Variable { first, components } => {
                 let mut out = vec![[0u32; ex::LANES]; components.clamp(1, 4)];
-                stage.shader.run_watching(
-                    batch,
-                    stage.uniforms,
-                    stage.textures,
-                    first,
-                    &mut out,
-                )?;
+                shader.run_watching(batch, uniforms, textures, first, &mut out)?;
                 Ok(out)
             }
             View::Input { offset, components } => {
@@ -484,7 +329,7 @@ impl Probe {
                             .map_or([0; ex::LANES], |v| v.map(f32::to_bits))
                     })
                     .collect();
-                stage.shader.run(batch, stage.uniforms, stage.textures)?;
+                shader.run(batch, uniforms, textures)?;
                 Ok(out)
             }
         }
@@ -665,7 +510,7 @@ impl Probe {
     /// `indices[l]`).
     pub fn print_vertices(
         &self,
-        vs: &dyn crate::ShaderStage,
+        vs: &dyn ShaderStage,
         batch: &mut Batch,
         uniforms: &[u32],
         textures: &dyn ex::Textures,
@@ -698,7 +543,7 @@ impl Probe {
     /// lanes inside the print rectangle.
     pub fn print_batch(
         &self,
-        stage: &FragmentStage,
+        (shader, uniforms, textures): (&dyn ShaderStage, &[u32], &dyn ex::Textures),
         batch: &mut Batch,
         primitive: u32,
         pixel_of: impl Fn(usize) -> Option<(i64, i64)>,
@@ -733,8 +578,6 @@ impl Probe {
             pixel_of,
             primitive,
         };
-        stage
-            .shader
-            .run_printing(batch, stage.uniforms, stage.textures, &mut sink)
+        shader.run_printing(batch, uniforms, textures, &mut sink)
     }
 }

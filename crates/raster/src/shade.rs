@@ -1,65 +1,33 @@
 //! The fragment stage: covered quads of a set-up primitive are shaded four
 //! at a time (one [`Batch`] of 16 lanes), then sent through the
 //! per-fragment operations in order.
+//!
+//! Takes a tile's copy of the framebuffer, the draw's set-up primitives
+//! and the tile's bin (their indices, in draw order); gives the tile after
+//! them, or the shader's error. [`FragmentStage`] holds what a draw's
+//! tiles share; this file has its set-up, the straightforward loop (one
+//! primitive at a time, [`FragmentStage::shade`]: coverage from
+//! `crate::rasterize`, inputs from `crate::interpolate`'s planes, the
+//! shader, then `crate::fragment_ops`) and what the other loops share
+//! (filling a batch's inputs, early depth rejection, the writes). The
+//! loops that give the same bytes faster are `batched` (quads of
+//! several primitives per batch, strips) and `deferred` (depth-only
+//! slice first, colours for visible fragments only).
 
 use crate::ex::{Batch, ExecError, Textures, LANES};
 use crate::fragment_ops::{self, Fragment, QuickOps, QuickTarget};
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
-use crate::interpolate::{offsets, Kind, Plane, PrimPlanes, QUAD_X, QUAD_Y, STRIP_X, STRIP_Y};
-use crate::linkage::FsLayout;
+use crate::interpolate::{Kind, Plane, QUAD_X, QUAD_Y, STRIP_X, STRIP_Y};
+use crate::linkage::{new_batch, FsLayout};
+use crate::prim::Prim;
+use crate::probe::Probe;
 use crate::rasterize::{PixelRect, Shape, STRIP};
 use crate::simd::Isa;
 use crate::state::PipelineState;
 use crate::ShaderStage;
 
-/// A primitive ready for rasterization (small: see [`Shape`]).
-pub(crate) struct Prim {
-    pub shape: Shape,
-    /// Pixel bounds clipped to the framebuffer and scissor box.
-    pub bounds: PixelRect,
-    pub back: bool,
-    /// Polygon offset added to window z.
-    pub z_offset: f64,
-    /// Its window z and 1/w planes (`crate::interpolate`).
-    pub planes: PrimPlanes,
-    /// Its index in its set-up chunk (`chunk`, an index into
-    /// [`FragmentStage::attrs`]), whose planes array holds one plane per
-    /// link and primitive: its varyings' start at `index` × links.
-    pub index: u32,
-    pub chunk: u32,
-    /// Index of the assembled primitive this one came from (clipping may
-    /// split one into several), for the debugger.
-    pub source: u32,
-}
-
-/// The origin pixel of a primitive's planes (`crate::interpolate`): the
-/// first pixel of its clipped bounds.
-pub(crate) fn plane_origin(bounds: PixelRect) -> (i64, i64) {
-    (bounds.0, bounds.1)
-}
-
-impl Prim {
-    /// [`offsets`] from this primitive's plane origin.
-    #[inline(always)]
-    fn offsets<const N: usize>(
-        &self,
-        at: (i64, i64),
-        ox: &[f32; N],
-        oy: &[f32; N],
-    ) -> ([f32; N], [f32; N]) {
-        offsets(plane_origin(self.bounds), at, ox, oy)
-    }
-}
-
-pub(crate) fn new_batch(inputs: usize, outputs: usize) -> Batch {
-    Batch {
-        inputs: vec![[0.0; LANES]; inputs],
-        outputs: vec![[0.0; LANES]; outputs],
-        active: 0,
-        discarded: 0,
-        helper: 0,
-    }
-}
+mod batched;
+mod deferred;
 
 /// The final window z of four pixels from their interpolated z and the
 /// primitive's polygon offset (offset, clamped), and its fixed point.
@@ -166,18 +134,6 @@ pub(crate) struct Place {
     first: usize,
 }
 
-/// What a strip leaves in the batch's inputs for the next one
-/// ([`FragmentStage::shade_strip`]): after a strip of `prim`, its
-/// constant varyings, so that its next strip fills only the fills listed
-/// in `varying[..count]` (indices into `FragmentStage::fills`). `None`
-/// after anything else filled the batch.
-#[derive(Default)]
-struct InPlace {
-    prim: Option<*const Prim>,
-    varying: [u16; 32],
-    count: usize,
-}
-
 /// Bit set in a lane mask for the `LANES / 4` quads of a batch.
 fn quads_mask(quads: usize) -> u32 {
     lanes_mask(quads.saturating_mul(4))
@@ -216,22 +172,6 @@ fn put_quad(lanes: &mut [f32; LANES], first: usize, values: [f32; 4]) {
     }
 }
 
-/// The lane of pixel `k` of `e`, the `q`-th quad of a batch: `4q + k`,
-/// or in a packed batch the next lane (`*next`, then counted) when the
-/// quad runs that pixel (`e.write`), else none. Called for the quads in
-/// order, each one's pixels in order.
-#[inline(always)]
-fn lane_of(packed: bool, q: usize, e: &Entry, k: usize, next: &mut usize) -> Option<usize> {
-    match packed {
-        true if e.write & (1 << k) != 0 => {
-            *next += 1;
-            Some(*next - 1)
-        }
-        true => None,
-        false => Some(4 * q + k),
-    }
-}
-
 /// Bit set in a lane mask for the first `lanes` lanes of a batch.
 fn lanes_mask(lanes: usize) -> u32 {
     if lanes >= LANES {
@@ -239,49 +179,6 @@ fn lanes_mask(lanes: usize) -> u32 {
     } else {
         (1u32 << lanes) - 1
     }
-}
-
-/// What the passes of [`FragmentStage::shade_deferred`] share in a tile.
-struct DeferredPass<'d> {
-    /// The depth-only slice.
-    depth: &'d dyn ShaderStage,
-    /// The tile's origin in the window.
-    origin: (u32, u32),
-    quick: Option<QuickOps>,
-    /// Whether the slice runs (else the pass only depth-tests).
-    run_slice: bool,
-    /// Whether the slice and the full shader run packed batches
-    /// ([`FragmentStage::fill_packed_with`]).
-    pack_depth: bool,
-    pack_colors: bool,
-}
-
-/// Takes the quad just set at `pending[*n]` (running the pixels
-/// `write`) into a batch being gathered, `*lanes` lanes of it used so
-/// far: a quad per 4 lanes, or with `packed` its pixels of `write` only
-/// ([`FragmentStage::fill_packed_with`]). Returns `Some((count, spill))` when
-/// `pending[..count]` is to run now: with `spill` the new quad did not
-/// fit and is to be moved to `pending[0]`, where the next batch starts.
-fn admit(packed: bool, n: &mut usize, lanes: &mut usize, write: u8) -> Option<(usize, bool)> {
-    let c = match packed {
-        true => (write & 0xf).count_ones() as usize,
-        false => 4,
-    };
-    if *lanes + c > LANES {
-        let count = *n;
-        *n = 1;
-        *lanes = c;
-        return Some((count, true));
-    }
-    *n += 1;
-    *lanes += c;
-    if *lanes == LANES || *n == LANES {
-        let count = *n;
-        *n = 0;
-        *lanes = 0;
-        return Some((count, false));
-    }
-    None
 }
 
 /// How [`FragmentStage::fill`] writes one varying component.
@@ -346,7 +243,7 @@ pub(crate) struct FragmentStage<'a> {
     /// the visible fragments only (see [`FragmentStage::shade_deferred`]).
     pub deferred: Option<Box<dyn ShaderStage>>,
     /// The debugger's pixel probe (`None` in normal draws).
-    pub probe: Option<&'a crate::probe::Probe>,
+    pub probe: Option<&'a Probe>,
     /// `shader`'s and `deferred`'s uniform-only values, once per draw.
     prepared: Option<crate::ex::Prepared>,
     deferred_prepared: Option<crate::ex::Prepared>,
@@ -383,7 +280,7 @@ impl<'a> FragmentStage<'a> {
         state: &'a PipelineState,
         attrs: Vec<&'a [Plane]>,
         deferred: Option<Box<dyn ShaderStage>>,
-        probe: Option<&'a crate::probe::Probe>,
+        probe: Option<&'a Probe>,
     ) -> FragmentStage<'a> {
         let read_by = |stage: &dyn ShaderStage, offset: usize| {
             probe.is_some()
@@ -584,39 +481,6 @@ impl<'a> FragmentStage<'a> {
         Ok(())
     }
 
-    /// Sends the shaded fragments of `pending` through the per-fragment
-    /// operations, in order.
-    #[inline(always)]
-    fn write_batch(
-        &self,
-        fb: &mut Framebuffer,
-        origin: (u32, u32),
-        batch: &Batch,
-        pending: &[Entry],
-        quick: Option<&QuickOps>,
-    ) {
-        if let Some((quick, o)) = quick.and_then(|q| Some((q, q.color_output()?))) {
-            let mut target = quick.target(fb, origin);
-            self.write_quick(&mut target, o, batch, pending);
-            return;
-        }
-        let mut frag = Fragment {
-            x: 0,
-            y: 0,
-            z: 0.0,
-            back_facing: false,
-            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
-        };
-        for (q, e) in pending.iter().enumerate() {
-            let back = e.prim.is_some_and(|p| p.back);
-            for k in 0..4 {
-                if self.fragment_into(batch, &e.quad, q, k, back, &mut frag) {
-                    fragment_ops::process(fb, origin, self.state, &frag);
-                }
-            }
-        }
-    }
-
     /// [`FragmentStage::write_batch`] through quick operations whose
     /// colour write qualifies (to fragment output `o`).
     #[inline(always)]
@@ -662,372 +526,6 @@ impl<'a> FragmentStage<'a> {
                 }
             }
         }
-    }
-
-    /// The primitives `bin` (indices into `prims`, in draw order) inside
-    /// `tile`, quads of consecutive primitives sharing batches (a
-    /// primitive covering a pixel or two no longer costs a whole batch).
-    /// Fragments still go through the per-fragment operations in draw
-    /// order after their batch ran, so the bytes are those of
-    /// [`FragmentStage::shade`] per primitive, provided early rejection
-    /// against a depth buffer that misses the batch's pending fragments is
-    /// still right: [`FragmentStage::batches_primitives`] says when. On an
-    /// error the caller redraws the tile with [`FragmentStage::shade`].
-    pub fn shade_batched<'p>(
-        &self,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        match self.isa {
-            #[cfg(target_arch = "x86_64")]
-            // SAFETY: `isa` is only Avx512 when the CPU has the features
-            // (`simd::detect`).
-            Isa::Avx512 => unsafe { self.shade_batched_avx512(fb, prims, bin, tile, scratch) },
-            #[cfg(target_arch = "x86_64")]
-            // SAFETY: likewise for AVX2.
-            Isa::Avx2 => unsafe { self.shade_batched_avx2(fb, prims, bin, tile, scratch) },
-            _ => self.shade_batched_with(fb, prims, bin, tile, scratch),
-        }
-    }
-
-    /// [`FragmentStage::shade_batched`] compiled for AVX2 (the quad loop,
-    /// early depth test and writes inlined: the same operations).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt")]
-    unsafe fn shade_batched_avx2<'p>(
-        &self,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        self.shade_batched_with(fb, prims, bin, tile, scratch)
-    }
-
-    /// [`FragmentStage::shade_batched`] compiled for AVX-512.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt,avx512f,avx512dq,avx512vl")]
-    unsafe fn shade_batched_avx512<'p>(
-        &self,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        self.shade_batched_with(fb, prims, bin, tile, scratch)
-    }
-
-    /// Fills and runs one batch of [`FragmentStage::shade_batched`] and
-    /// writes its fragments.
-    #[inline(always)]
-    fn flush_batched(
-        &self,
-        fb: &mut Framebuffer,
-        origin: (u32, u32),
-        batch: &mut Batch,
-        pending: &[Entry],
-        quick: Option<&QuickOps>,
-    ) -> Result<(), ExecError> {
-        self.fill(batch, pending, &self.fills, false);
-        self.run_shader(batch)?;
-        self.write_batch(fb, origin, batch, pending, quick);
-        Ok(())
-    }
-
-    #[inline(always)]
-    fn shade_batched_with<'p>(
-        &self,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        let origin = (tile.0.max(0) as u32, tile.1.max(0) as u32);
-        let Scratch {
-            batch,
-            slots,
-            n,
-            quads,
-            ..
-        } = scratch;
-        *n = 0;
-        let quick = QuickOps::new(fb, self.state, &self.colors_out);
-        // With quick operations whose colour write qualifies, the tile's
-        // buffers are borrowed once for the whole bin (early depth
-        // rejection reads them there); else through `fb` per batch.
-        let mut sink = match quick.and_then(|q| Some((q, q.color_output()?))) {
-            Some((q, o)) => Sink::Quick(q.target(fb, origin), o),
-            None => Sink::General(fb, quick),
-        };
-        // Four whole quads side by side make one entry (`STRIP`) when
-        // they may run as a strip.
-        let strips = self.strips && matches!(sink, Sink::Quick(..));
-        let mut in_place = InPlace::default();
-        for (i, &p) in bin.iter().enumerate() {
-            let Some(&prim) = prims.get(p as usize) else {
-                continue;
-            };
-            self.prefetch_ahead(prims, bin, i, true);
-            prim.shape
-                .quads_into_strips(clip_to(prim, tile), quads, strips);
-            for &(qx, qy, mask) in quads.iter() {
-                if mask & STRIP == 0 {
-                    let waiting = *n;
-                    self.batch_quad(
-                        &mut sink,
-                        origin,
-                        batch,
-                        slots,
-                        n,
-                        (prim, p),
-                        (qx, qy, mask),
-                    )?;
-                    // Fewer waiting: the batch was filled and run.
-                    if *n < waiting {
-                        in_place.prim = None;
-                    }
-                    continue;
-                }
-                // A batch of its own: the quads waiting go first (a strip
-                // comes after a row's first quads, so they would wait for
-                // the whole row otherwise).
-                if *n > 0 {
-                    self.flush_sink(&mut sink, origin, batch, &slots[..*n])?;
-                    *n = 0;
-                    in_place.prim = None;
-                }
-                if let Sink::Quick(target, o) = &mut sink {
-                    let strip = (prim, p, (qx, qy));
-                    self.shade_strip(target, *o, batch, slots, strip, &mut in_place)?;
-                }
-            }
-        }
-        if *n > 0 {
-            self.flush_sink(&mut sink, origin, batch, &slots[..*n])?;
-            *n = 0;
-        }
-        Ok(())
-    }
-
-    /// One covered quad of [`FragmentStage::shade_batched`]: set up in
-    /// the next slot, early depth-tested, and kept unless no pixel is
-    /// left; a full batch is shaded and written.
-    #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    fn batch_quad<'p>(
-        &self,
-        sink: &mut Sink,
-        origin: (u32, u32),
-        batch: &mut Batch,
-        slots: &mut [Entry<'p>; LANES / 4],
-        n: &mut usize,
-        (prim, p): (&'p Prim, u32),
-        quad: (i64, i64, u8),
-    ) -> Result<(), ExecError> {
-        let Some(e) = slots.get_mut(*n) else {
-            return Ok(());
-        };
-        // Inlined: this loop is compiled per instruction set.
-        e.set(prim, p, quad, 0, self.window_z);
-        if self.early {
-            match &*sink {
-                // No stencil test (else no quick operations): the
-                // depth test alone (`early_rejects`).
-                Sink::Quick(t, _) => {
-                    let q = &mut e.quad;
-                    q.live = t.depth_live((q.x, q.y), q.live, q.zf);
-                }
-                Sink::General(fb, _) => self.early_rejects(fb, origin, prim, &mut e.quad),
-            }
-        }
-        if e.quad.live == 0 {
-            return Ok(());
-        }
-        *n += 1;
-        if *n == LANES / 4 {
-            self.flush_sink(sink, origin, batch, slots)?;
-            *n = 0;
-        }
-        Ok(())
-    }
-
-    /// A strip of [`FragmentStage::shade_batched`]: the four whole quads
-    /// (qx + 2i, qy) of primitive `prim` (index `index`) as one batch, the
-    /// inputs evaluated from their planes over the 16 lanes at once (the
-    /// operations [`FragmentStage::fill`] performs per quad, so the same
-    /// bits), then the stage and the quick write: the bytes of the
-    /// quad-at-a-time path, without its entries (only position, coverage
-    /// and window z are set, for the early depth test and the write; see
-    /// [`FragmentStage::strips`]). The early depth test drops the pixels
-    /// of each quad as that path does; a dropped pixel's lane runs as a
-    /// helper (its neighbours' results do not depend on it) and a quad
-    /// without pixels is not written.
-    #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    fn shade_strip<'p>(
-        &self,
-        target: &mut QuickTarget,
-        o: usize,
-        batch: &mut Batch,
-        slots: &mut [Entry<'p>; LANES / 4],
-        (prim, index, (qx, qy)): (&'p Prim, u32, (i64, i64)),
-        in_place: &mut InPlace,
-    ) -> Result<(), ExecError> {
-        let planes = &prim.planes;
-        let (x, y) = prim.offsets((qx, qy), &STRIP_X, &STRIP_Y);
-        // Without window z every pixel is live and the entries are only
-        // needed by the quad-at-a-time write (set just before it).
-        let live_mask = match self.window_z {
-            true => self.strip_slots(target, slots, prim, index, (qx, qy), &x, &y),
-            false => 0xffff,
-        };
-        if live_mask == 0 {
-            return Ok(());
-        }
-        self.zero_outputs(batch);
-        batch.active = quads_mask(LANES / 4);
-        batch.helper = batch.active & !live_mask;
-        batch.discarded = 0;
-        let rw = planes.reciprocal_w(&x, &y);
-        let varyings = self.prim_attrs(prim);
-        let me = prim as *const Prim;
-        if in_place.prim == Some(me) {
-            // After a strip of this primitive (stages only read their
-            // inputs): its constant varyings are in place.
-            let list = in_place.varying.get(..in_place.count).unwrap_or(&[]);
-            for l in list.iter().filter_map(|&i| self.fills.get(i as usize)) {
-                if let (Some(lanes), Some(p)) = (batch.inputs.get_mut(l.offset), varyings.get(l.li))
-                {
-                    *lanes = p.values(&x, &y, &rw);
-                }
-            }
-        } else {
-            let mut count = 0;
-            for (i, l) in self.fills.iter().enumerate() {
-                if let (Some(lanes), Some(p)) = (batch.inputs.get_mut(l.offset), varyings.get(l.li))
-                {
-                    *lanes = p.values(&x, &y, &rw);
-                    if p.kind != Kind::Constant {
-                        if let Some(v) = in_place.varying.get_mut(count) {
-                            *v = i as u16;
-                        }
-                        count += 1;
-                    }
-                }
-            }
-            // (Too many varying inputs to list: filled in full each time.)
-            let fits = count <= in_place.varying.len() && self.fills.len() <= u16::MAX as usize;
-            in_place.count = count;
-            in_place.prim = fits.then_some(me);
-        }
-        self.run_shader(batch)?;
-        // Every pixel passing (no depth test: the write does not test
-        // one), none discarded: the strip's two rows at once.
-        if live_mask == 0xffff && batch.discarded == 0 && self.layout.frag_depth.is_none() {
-            if let Some([r, g, b, a]) = batch.outputs.get(o..o + 4) {
-                if target.write_strip(self.isa, (qx, qy), [r, g, b, a]) {
-                    return Ok(());
-                }
-            }
-        }
-        if !self.window_z {
-            self.strip_slots(target, slots, prim, index, (qx, qy), &x, &y);
-        }
-        self.write_quick(target, o, batch, &slots[..]);
-        Ok(())
-    }
-
-    /// The entries of a strip's four quads (see
-    /// [`FragmentStage::shade_strip`]): position, coverage and, with
-    /// window z, the quads' depths and the early depth test; returns the
-    /// live pixels (bit 4k + j: pixel j of quad k).
-    #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    fn strip_slots<'p>(
-        &self,
-        target: &QuickTarget,
-        slots: &mut [Entry<'p>; LANES / 4],
-        prim: &'p Prim,
-        index: u32,
-        (qx, qy): (i64, i64),
-        x: &[f32; LANES],
-        y: &[f32; LANES],
-    ) -> u32 {
-        let z = match self.window_z {
-            true => prim.planes.z_at(x, y),
-            false => [0.0; LANES],
-        };
-        let mut live_mask = 0u32;
-        for (k, e) in slots.iter_mut().enumerate() {
-            e.prim = Some(prim);
-            e.index = index;
-            e.write = 0;
-            let q = &mut e.quad;
-            (q.x, q.y, q.live) = (qx + 2 * k as i64, qy, 0xf);
-            if self.window_z {
-                let iz = [z[4 * k], z[4 * k + 1], z[4 * k + 2], z[4 * k + 3]];
-                (q.z, q.zf) = window_depths(&iz, prim.z_offset);
-                if self.early {
-                    q.live = target.depth_live((q.x, q.y), q.live, q.zf);
-                }
-            }
-            live_mask |= (q.live as u32) << (4 * k);
-        }
-        live_mask
-    }
-
-    /// [`FragmentStage::flush_batched`] into `sink`.
-    #[inline(always)]
-    fn flush_sink(
-        &self,
-        sink: &mut Sink,
-        origin: (u32, u32),
-        batch: &mut Batch,
-        pending: &[Entry],
-    ) -> Result<(), ExecError> {
-        match sink {
-            Sink::Quick(target, o) => {
-                self.fill(batch, pending, &self.fills, false);
-                self.run_shader(batch)?;
-                self.write_quick(target, *o, batch, pending);
-                Ok(())
-            }
-            Sink::General(fb, quick) => {
-                self.flush_batched(fb, origin, batch, pending, quick.as_ref())
-            }
-        }
-    }
-
-    /// Whether [`FragmentStage::shade_batched`] gives the bytes of
-    /// [`FragmentStage::shade`]: no early rejection at all, or one that
-    /// stays right against an older depth buffer: no stencil test, and a
-    /// depth function for which stored depths only move one way
-    /// (LESS/LEQUAL: down, GREATER/GEQUAL: up; NEVER/ALWAYS do not look),
-    /// or no depth writes. Never with the debugger's probe.
-    pub fn batches_primitives(&self, fb: &Framebuffer) -> bool {
-        use crate::state::CompareFunc::*;
-        if self.probe.is_some() {
-            return false;
-        }
-        if !self.early {
-            return true;
-        }
-        let stencil = self.state.stencil.is_some() && fb.stencil.is_some();
-        let monotone = match self.state.depth_test {
-            None => true,
-            Some(_) if !self.state.depth_mask => true,
-            Some(f) => matches!(
-                f,
-                Less | LessEqual | Greater | GreaterEqual | Never | Always
-            ),
-        };
-        !stencil && monotone
     }
 
     /// Drops the lanes of `quad` that the stencil or depth test will
@@ -1351,9 +849,12 @@ impl<'a> FragmentStage<'a> {
                     // The other lanes' prints: the same batch run once
                     // more (runs are deterministic).
                     let mut copy = batch.clone();
-                    p.print_batch(self, &mut copy, prim.source, |l| {
-                        pixel_of(l).filter(|_| l != lane)
-                    })?;
+                    p.print_batch(
+                        (self.shader, self.uniforms, self.textures),
+                        &mut copy,
+                        prim.source,
+                        |l| pixel_of(l).filter(|_| l != lane),
+                    )?;
                 }
                 let z = pending.get(lane / 4).map_or(0.0, |e| e.quad.z[lane % 4]);
                 let mut r = p.begin(prim, batch, lane, z);
@@ -1366,9 +867,15 @@ impl<'a> FragmentStage<'a> {
             }
             None => {
                 if let Some((p, view)) = self.probe.and_then(|p| Some((p, p.view()?))) {
-                    watched = p.run_view(self, batch, view)?;
+                    watched =
+                        p.run_view((self.shader, self.uniforms, self.textures), batch, view)?;
                 } else if let Some(p) = self.probe {
-                    p.print_batch(self, batch, prim.source, pixel_of)?;
+                    p.print_batch(
+                        (self.shader, self.uniforms, self.textures),
+                        batch,
+                        prim.source,
+                        pixel_of,
+                    )?;
                 } else {
                     self.run_shader(batch)?;
                 }
@@ -1399,407 +906,6 @@ impl<'a> FragmentStage<'a> {
         }
         if let Some((p, _, r)) = record {
             p.push(r);
-        }
-        Ok(())
-    }
-
-    /// The primitives `bin` (indices into `prims`, in draw order) inside
-    /// `tile`, shading colors only for the fragments that end up visible.
-    /// Only for a stage with [`FragmentStage::deferred`] and per-fragment
-    /// operations where the last fragment to pass the depth test decides
-    /// a pixel's color ([`fragment_ops::last_writer_wins`]).
-    ///
-    /// Pass 1 runs the depth-only slice on every fragment (without
-    /// gl_FragDepth: every fragment early depth rejection keeps), four
-    /// quads at a time, and sends them through the depth test in draw
-    /// order, keeping
-    /// per pixel the primitive of the last fragment that passed (and that
-    /// quad's coverage). Pass 2 runs the full shader once per (primitive,
-    /// quad) that won a pixel, with the same quad inputs, coverage and
-    /// helper lanes as the straightforward path, and writes the colors of
-    /// the winning pixels. The slice computes the same gl_FragDepth and
-    /// discards as the full shader, and a lane depends only on its quad, so
-    /// the tile ends with the same bytes as [`FragmentStage::shade`] over
-    /// the bin. On an error `fb` is left partly drawn: the caller redraws
-    /// the tile the straightforward way to get the same error and pixels.
-    pub fn shade_deferred<'p>(
-        &self,
-        depth: &dyn ShaderStage,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        match self.isa {
-            #[cfg(target_arch = "x86_64")]
-            // SAFETY: `isa` is only Avx512 when the CPU has the features
-            // (`simd::detect`).
-            Isa::Avx512 => unsafe {
-                self.shade_deferred_avx512(depth, fb, prims, bin, tile, scratch)
-            },
-            #[cfg(target_arch = "x86_64")]
-            // SAFETY: likewise for AVX2.
-            Isa::Avx2 => unsafe { self.shade_deferred_avx2(depth, fb, prims, bin, tile, scratch) },
-            _ => self.shade_deferred_with(depth, fb, prims, bin, tile, scratch),
-        }
-    }
-
-    /// [`FragmentStage::shade_deferred`] compiled for AVX2 (its quad
-    /// loops, depth tests and f64 quad set-up inlined: the same
-    /// operations).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt")]
-    unsafe fn shade_deferred_avx2<'p>(
-        &self,
-        depth: &dyn ShaderStage,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        self.shade_deferred_with(depth, fb, prims, bin, tile, scratch)
-    }
-
-    /// [`FragmentStage::shade_deferred`] compiled for AVX-512.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt,avx512f,avx512dq,avx512vl")]
-    unsafe fn shade_deferred_avx512<'p>(
-        &self,
-        depth: &dyn ShaderStage,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        self.shade_deferred_with(depth, fb, prims, bin, tile, scratch)
-    }
-
-    /// The depth pass of [`FragmentStage::shade_deferred`] on the quads
-    /// `pending`: the slice (when it runs), then the depth test of every
-    /// fragment left, in order, keeping in `winner` each pixel's last.
-    #[allow(clippy::too_many_arguments)]
-    #[inline(always)]
-    fn depth_pass(
-        &self,
-        pass: &DeferredPass,
-        fb: &mut Framebuffer,
-        batch: &mut Batch,
-        winner: &mut [(u32, u8)],
-        pending: &[Entry],
-    ) -> Result<(), ExecError> {
-        if pass.run_slice {
-            self.fill(batch, pending, &self.depth_fills, pass.pack_depth);
-            self.run_depth(pass.depth, batch)?;
-        } else {
-            batch.discarded = 0;
-        }
-        // Per quad: the pixels still alive (covered, not discarded) and
-        // their window z, then their depth tests.
-        let mut next = 0;
-        let mut alive_z = |q: usize, e: &Entry| {
-            let quad = &e.quad;
-            let mut alive = 0u8;
-            let mut z = [0f32; 4];
-            for (k, z) in z.iter_mut().enumerate() {
-                let Some(lane) = lane_of(pass.pack_depth, q, e, k, &mut next) else {
-                    continue;
-                };
-                if quad.live & (1 << k) != 0 && batch.discarded & (1 << lane) == 0 {
-                    alive |= 1 << k;
-                    *z = self.frag_z(batch, lane, quad, k);
-                }
-            }
-            (alive, z)
-        };
-        match &pass.quick {
-            Some(q) => {
-                // A quad's four pixels are distinct: tested together as
-                // one after the other.
-                let mut target = q.target(fb, pass.origin);
-                for (q, e) in pending.iter().enumerate() {
-                    let (alive, z) = alive_z(q, e);
-                    if alive == 0 {
-                        continue;
-                    }
-                    let quad = &e.quad;
-                    let zf = match self.layout.frag_depth {
-                        Some(_) => z.map(depth_to_fixed),
-                        None => quad.zf,
-                    };
-                    let (pass, index, _) = target.test_quad((quad.x, quad.y), alive, z, zf);
-                    for (k, &at) in index.iter().enumerate() {
-                        if pass & (1 << k) != 0 {
-                            if let Some(slot) = winner.get_mut(at) {
-                                *slot = (e.index, quad.live);
-                            }
-                        }
-                    }
-                }
-            }
-            None => {
-                for (q, e) in pending.iter().enumerate() {
-                    let (alive, z) = alive_z(q, e);
-                    let quad = &e.quad;
-                    for (k, &z) in z.iter().enumerate() {
-                        let (x, y) = quad.pixel(k);
-                        if alive & (1 << k) == 0 || x < 0 || y < 0 {
-                            continue;
-                        }
-                        let frag = Fragment {
-                            x: x as u32,
-                            y: y as u32,
-                            z,
-                            back_facing: e.prim.is_some_and(|p| p.back),
-                            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
-                        };
-                        let passed = fragment_ops::tests(fb, pass.origin, self.state, &frag);
-                        if let Some(slot) = passed.and_then(|i| winner.get_mut(i)) {
-                            *slot = (e.index, quad.live);
-                        }
-                    }
-                }
-            }
-        }
-        Ok(())
-    }
-
-    /// The colour pass of [`FragmentStage::shade_deferred`] on the quads
-    /// `todo`: the full shader, then the colours of the pixels each quad
-    /// won (`Entry::write`).
-    #[inline(always)]
-    fn color_pass(
-        &self,
-        pass: &DeferredPass,
-        fb: &mut Framebuffer,
-        batch: &mut Batch,
-        todo: &[Entry],
-    ) -> Result<(), ExecError> {
-        self.fill(batch, todo, &self.fills, pass.pack_colors);
-        self.run_shader(batch)?;
-        // (lane, pixel index) of the fragments to write, in order.
-        let mut writes = [(0usize, 0usize); LANES];
-        let mut count = 0;
-        let mut next = 0;
-        for (q, e) in todo.iter().enumerate() {
-            for k in 0..4 {
-                let Some(lane) = lane_of(pass.pack_colors, q, e, k, &mut next) else {
-                    continue;
-                };
-                if e.write & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
-                    continue;
-                }
-                let (x, y) = e.quad.pixel(k);
-                let lx = x as usize - pass.origin.0 as usize;
-                let ly = y as usize - pass.origin.1 as usize;
-                if let Some(slot) = writes.get_mut(count) {
-                    *slot = (lane, ly * fb.width as usize + lx);
-                    count += 1;
-                }
-            }
-        }
-        let writes = &writes[..count];
-        match pass.quick.and_then(|q| Some((q, q.color_output()?))) {
-            Some((q, o)) => {
-                let mut target = q.target(fb, pass.origin);
-                match batch.outputs.get(o..o + 4) {
-                    // Without blending, the batch's colours converted
-                    // together (as `write_quick` does).
-                    Some([r, g, b, a]) if target.opaque() => {
-                        let rgba = fragment_ops::unorm8_batch(self.isa, [r, g, b, a]);
-                        for &(lane, index) in writes {
-                            if let Some(&c) = rgba.get(lane) {
-                                target.write_rgba8(index, c);
-                            }
-                        }
-                    }
-                    _ => {
-                        for &(lane, index) in writes {
-                            target.write(index, [0, 1, 2, 3].map(|j| get(batch, o + j, lane)));
-                        }
-                    }
-                }
-            }
-            None => {
-                let mut colors = [[0.0; 4]; MAX_DRAW_BUFFERS];
-                for &(lane, index) in writes {
-                    self.colors_into(batch, lane, &mut colors);
-                    fragment_ops::write_colors(fb, index, self.state, &colors);
-                }
-            }
-        }
-        Ok(())
-    }
-
-    #[inline(always)]
-    fn shade_deferred_with<'p>(
-        &self,
-        depth: &dyn ShaderStage,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        let origin = (tile.0.max(0) as u32, tile.1.max(0) as u32);
-        let (w, h) = (fb.width as usize, fb.height as usize);
-        let Scratch {
-            batch,
-            slots,
-            n,
-            quads,
-            packed,
-        } = scratch;
-        *n = 0;
-        // Per pixel: (winning primitive, its quad's coverage).
-        let mut winner: Vec<(u32, u8)> = vec![(NO_PRIM, 0); w * h];
-        // Without gl_FragDepth a fragment's depth is known before the
-        // slice runs: lanes the depth test will reject are dropped first
-        // when that stays right against a depth buffer missing the
-        // pending batch (as for `shade_batched`). A rejected lane cannot
-        // win; a winner's quad keeps the coverage the forward path gives
-        // it.
-        let early = self.early && self.batches_primitives(fb);
-        let quick = QuickOps::new(fb, self.state, &self.colors_out);
-        // A slice without ops (no gl_FragDepth, no discard) decides
-        // nothing: the pass only depth-tests.
-        let run_slice = !depth.does_nothing() || self.layout.frag_depth.is_some();
-        // Stages whose lanes are independent run the covered pixels of up
-        // to `LANES` quads per batch, without helper lanes.
-        let pack_depth = run_slice && self.deferred_lanes_independent;
-        let pack_colors = self.lanes_independent;
-        let pass = DeferredPass {
-            depth,
-            origin,
-            quick,
-            run_slice,
-            pack_depth,
-            pack_colors,
-        };
-        // Nothing to run and the common per-fragment operations: each
-        // quad is depth-tested as soon as it is covered (the order and the
-        // tests of the batched pass, which would only run the empty slice).
-        match quick.as_ref().filter(|_| !run_slice) {
-            Some(q) => {
-                let mut target = q.target(fb, origin);
-                for (i, &p) in bin.iter().enumerate() {
-                    let Some(&prim) = prims.get(p as usize) else {
-                        continue;
-                    };
-                    // (The pass interpolates nothing.)
-                    self.prefetch_ahead(prims, bin, i, false);
-                    let clip = clip_to(prim, tile);
-                    prim.shape.quads_each(
-                        clip,
-                        quads,
-                        #[inline(always)]
-                        |qx, qy, live| {
-                            let (z, zf) = quad_depths(prim, (qx, qy));
-                            // The f32 z only for a quad tested pixel by pixel.
-                            let z = || z.map(|z| z as f32);
-                            let (pass, index, _) = target.test_quad_with((qx, qy), live, z, zf);
-                            for (k, &at) in index.iter().enumerate() {
-                                if pass & (1 << k) != 0 {
-                                    if let Some(slot) = winner.get_mut(at) {
-                                        *slot = (p, live);
-                                    }
-                                }
-                            }
-                        },
-                    );
-                }
-            }
-            None => {
-                let pending: &mut [Entry<'p>] = match pack_depth {
-                    true => &mut packed[..],
-                    false => &mut slots[..],
-                };
-                let mut lanes = 0;
-                for (i, &p) in bin.iter().enumerate() {
-                    let Some(&prim) = prims.get(p as usize) else {
-                        continue;
-                    };
-                    self.prefetch_ahead(prims, bin, i, pass.run_slice);
-                    prim.shape.quads_into(clip_to(prim, tile), quads);
-                    for &quad in quads.iter() {
-                        let Some(e) = pending.get_mut(*n) else { break };
-                        e.set(prim, p, quad, 0, self.window_z);
-                        if early {
-                            self.early_rejects(fb, origin, prim, &mut e.quad);
-                            if e.quad.live == 0 {
-                                continue;
-                            }
-                        }
-                        e.write = e.quad.live;
-                        let write = e.write;
-                        if let Some((count, spill)) = admit(pack_depth, n, &mut lanes, write) {
-                            self.depth_pass(&pass, fb, batch, &mut winner, &pending[..count])?;
-                            if spill {
-                                pending.swap(0, count);
-                            }
-                        }
-                    }
-                }
-                if *n > 0 {
-                    self.depth_pass(&pass, fb, batch, &mut winner, &pending[..*n])?;
-                    *n = 0;
-                }
-            }
-        }
-
-        // Pass 2: (primitive, quad, coverage, lanes to write) per winner.
-        let pending: &mut [Entry<'p>] = match pack_colors {
-            true => &mut packed[..],
-            false => &mut slots[..],
-        };
-        let mut used = 0;
-        // The depth tests are behind: the window z only for gl_FragCoord
-        // or the probe.
-        let window_z = self.layout.frag_coord.is_some() || self.probe.is_some();
-        for ly in (0..h).step_by(2) {
-            for lx in (0..w).step_by(2) {
-                // The quad's pixels (lane order) and their winners.
-                let mut lanes = [(NO_PRIM, 0u8); 4];
-                for (k, lane) in lanes.iter_mut().enumerate() {
-                    let (x, y) = (lx + (k & 1), ly + (k >> 1));
-                    if x < w && y < h {
-                        *lane = winner.get(y * w + x).copied().unwrap_or((NO_PRIM, 0));
-                    }
-                }
-                let mut done = 0u8;
-                for k in 0..4 {
-                    let (p, live) = lanes[k];
-                    if p == NO_PRIM || done & (1 << k) != 0 {
-                        continue;
-                    }
-                    let mut write = 0u8;
-                    for (j, lane) in lanes.iter().enumerate() {
-                        if lane.0 == p {
-                            write |= 1 << j;
-                        }
-                    }
-                    done |= write;
-                    let Some(&prim) = prims.get(p as usize) else {
-                        continue;
-                    };
-                    let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
-                    let Some(e) = pending.get_mut(*n) else { break };
-                    self.prefetch_attrs(prim);
-                    e.set(prim, p, (qx, qy, live), write, window_z);
-                    if let Some((count, spill)) = admit(pack_colors, n, &mut used, write) {
-                        self.color_pass(&pass, fb, batch, &pending[..count])?;
-                        if spill {
-                            pending.swap(0, count);
-                        }
-                    }
-                }
-            }
-        }
-        if *n > 0 {
-            self.color_pass(&pass, fb, batch, &pending[..*n])?;
-            *n = 0;
         }
         Ok(())
     }

@@ -1,0 +1,298 @@
+//! The draw driver: runs a draw's stages in order on the [`Workers`] and
+//! keeps their big buffers for the next draws.
+//!
+//! Takes a framebuffer, the pipeline state, both shader stages, the mode,
+//! the index list and the vertex source ([`draw_stages`], and
+//! [`draw_probed`] for the debugger's replays); runs the vertex stage
+//! (`crate::vertex`), then set-up (`crate::setup`, assembling with
+//! `crate::assembly`) in chunks of [`SETUP_CHUNK`] primitives, each chunk
+//! binned (`crate::binning`) where it was set up, then the fragment stage
+//! (`crate::shade`) tile by tile ([`shade_tiles`]), and gives the
+//! framebuffer written, or the first error in the order of the contract
+//! (crate docs, "Threads").
+
+use std::sync::Mutex;
+
+use crate::assembly::{primitive_count, Mode};
+use crate::binning::{Bins, ChunkBins, TileGrid, TILE};
+use crate::ex::{ExecError, Textures};
+use crate::framebuffer::{Band, Framebuffer};
+use crate::interpolate::Plane;
+use crate::linkage::{FsLayout, VsLayout};
+use crate::prim::Prim;
+use crate::probe::Probe;
+use crate::setup::{Corner, Out, Setup, CORNER_REUSE};
+use crate::shade::FragmentStage;
+use crate::state::PipelineState;
+use crate::vertex::{run_vertices, VertexFetch};
+use crate::workers::Workers;
+use crate::{DrawError, ShaderStage};
+
+/// Primitives one set-up task takes.
+pub(crate) const SETUP_CHUNK: usize = 2048;
+
+/// [`crate::draw_on`] over any [`ShaderStage`] pair.
+#[allow(clippy::too_many_arguments)]
+pub fn draw_stages(
+    workers: &Workers,
+    fb: &mut Framebuffer,
+    state: &PipelineState,
+    vs: &dyn ShaderStage,
+    vs_uniforms: &[u32],
+    fs: &dyn ShaderStage,
+    fs_uniforms: &[u32],
+    mode: Mode,
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    textures: &(dyn Textures + Sync),
+) -> Result<(), DrawError> {
+    draw_probed(
+        workers,
+        fb,
+        state,
+        (vs, vs_uniforms),
+        (fs, fs_uniforms),
+        mode,
+        indices,
+        fetch,
+        textures,
+        None,
+    )
+}
+
+/// [`draw_stages`], reporting to `probe` what happens at its pixel.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn draw_probed(
+    workers: &Workers,
+    fb: &mut Framebuffer,
+    state: &PipelineState,
+    (vs, vs_uniforms): (&dyn ShaderStage, &[u32]),
+    (fs, fs_uniforms): (&dyn ShaderStage, &[u32]),
+    mode: Mode,
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    textures: &(dyn Textures + Sync),
+    probe: Option<&Probe>,
+) -> Result<(), DrawError> {
+    let vs_layout = VsLayout::new(vs.interface());
+    let fs_layout = FsLayout::new(vs.interface(), fs.interface(), state.two_sided_color);
+    let (vertex_of, outputs) = run_vertices(
+        workers,
+        vs,
+        vs_uniforms,
+        textures,
+        indices,
+        fetch,
+        &vs_layout,
+        state.clamp_vertex_color,
+        probe,
+    )?;
+
+    let setup = Setup::new(state, (&vs_layout, &fs_layout), &outputs, fb, probe);
+    // Shared vertices (indexed meshes): each vertex's outcode and window
+    // position once, on the workers, instead of once per primitive using
+    // it (the same values either way).
+    let vertices = outputs.len() / vs_layout.outputs.max(1);
+    let mut corners = std::mem::take(&mut workers.spare().corners);
+    if probe.is_none() && vertex_of.len() >= CORNER_REUSE * vertices {
+        // Written in place, chunk by chunk, into the table kept from the
+        // last draw (a new table, or one collected from the chunks, cost a
+        // copy and page faults on the calling thread).
+        corners.resize(vertices, Corner::BLANK);
+        let chunk = 4096;
+        let parts: Vec<Mutex<&mut [Corner]>> = corners.chunks_mut(chunk).map(Mutex::new).collect();
+        workers.map(parts.len(), 1, |c, _| {
+            let Some(part) = parts.get(c) else { return };
+            let mut part = part.lock().unwrap_or_else(|e| e.into_inner());
+            for (k, slot) in part.iter_mut().enumerate() {
+                *slot = setup.compute_corner(c * chunk + k);
+            }
+        });
+    } else {
+        corners.clear();
+    }
+    let setup = setup.with_corners(&corners);
+    // Primitive set-up in chunks of primitives on the workers, the
+    // chunks' primitives concatenated in order (one chunk, in order, for
+    // the debugger's probe, which notes primitives as they come).
+    let setup = &setup;
+    let grid = TileGrid::new(fb);
+    let count = vertex_of.len();
+    let n_prims = primitive_count(mode, count);
+    let chunk = if probe.is_some() {
+        n_prims.max(1)
+    } else {
+        SETUP_CHUNK
+    };
+    let chunks = n_prims.div_ceil(chunk);
+    let isa = crate::simd::detect();
+    let parts = workers.map(chunks, 1, |c, _| {
+        let first = c * chunk;
+        let n = chunk.min(n_prims.saturating_sub(first));
+        let (mut prims, mut planes) = workers.spare().chunks.pop().unwrap_or_default();
+        prims.reserve(n);
+        planes.reserve(n * fs_layout.links.len());
+        let mut out = Out {
+            prims,
+            planes,
+            source: 0,
+            chunk: c as u32,
+        };
+        let range = c * chunk..((c + 1) * chunk).min(n_prims);
+        setup.chunk(&mut out, mode, &vertex_of, range, isa);
+        // Binned here, on the workers: the chunks' bins read in chunk
+        // order list each tile's primitives in draw order.
+        let bins = ChunkBins::new(&out.prims, &grid);
+        ((out.prims, out.planes), bins)
+    });
+    let (parts, chunk_bins): (Vec<_>, Vec<_>) = parts.into_iter().unzip();
+    // The chunks' primitives in order and their varyings, referenced
+    // where they are (not moved).
+    let attrs: Vec<&[Plane]> = parts.iter().map(|p| &p.1[..]).collect();
+    // Sized first: collected from `flat_map` the vector grew by doubling
+    // (copies and fresh pages on this thread).
+    let mut prims: Vec<&Prim> = Vec::with_capacity(parts.iter().map(|p| p.0.len()).sum());
+    prims.extend(parts.iter().flat_map(|p| p.0.iter()));
+    let bins = Bins::new(chunk_bins, &parts, grid);
+
+    // The probe replays every fragment: never deferred.
+    let deferred = if probe.is_none() && crate::fragment_ops::last_writer_wins(fb, state) {
+        fs.depth_only()
+    } else {
+        None
+    };
+    let stage = FragmentStage::new(
+        fs,
+        fs_uniforms,
+        textures,
+        &fs_layout,
+        state,
+        attrs,
+        deferred,
+        probe,
+    );
+    if let Some(p) = probe {
+        p.set_vertices(&vs_layout, &outputs, &vertex_of);
+    }
+    let result = shade_tiles(workers, fb, &stage, &prims, &bins);
+    // The draw's big buffers, for the next draws.
+    drop(stage);
+    drop(prims);
+    let mut spare = workers.spare();
+    spare.keep(parts, outputs);
+    spare.keep_corners(corners);
+    spare.keep_tables([vertex_of]);
+    result
+}
+
+/// What one tile task produced.
+enum TileResult {
+    /// The tile's pixels after its primitives, and the error that stopped
+    /// it, if one did (the pixels are then those written before it).
+    Ran(Framebuffer, Option<ExecError>),
+    /// Not run or abandoned: an earlier tile failed.
+    Skipped,
+}
+
+/// The fragment stage over 64×64 tiles. Each tile is a task that owns a
+/// copy of its pixels and runs the primitives overlapping it in draw
+/// order; the copies are written back in tile order. When tiles fail, the
+/// result is that of running the tiles in order and stopping at the first
+/// failure: earlier tiles complete, the failing tile keeps what it wrote
+/// before the error, later tiles are left untouched, and that error is
+/// returned.
+fn shade_tiles(
+    workers: &Workers,
+    fb: &mut Framebuffer,
+    stage: &FragmentStage,
+    prims: &[&Prim],
+    bins: &Bins,
+) -> Result<(), DrawError> {
+    let grid = bins.grid;
+    let occupied = bins.occupied();
+    let rect = |t: usize| grid.rect(t);
+    let source: &Framebuffer = fb;
+    // The depth and stencil buffers only when the draw tests them (or
+    // the debugger's probe reports what a fragment leaves in them).
+    let all = stage.probe.is_some();
+    let tests = (
+        all || stage.state.depth_test.is_some(),
+        all || stage.state.stencil.is_some(),
+    );
+    let results = workers.map(occupied.len(), 1, |i, cancel| {
+        if cancel.skip(i) {
+            return TileResult::Skipped;
+        }
+        let Some(&t) = occupied.get(i) else {
+            return TileResult::Skipped;
+        };
+        let r = rect(t);
+        let area = (r.0 as u32, r.1 as u32, r.2 as u32, r.3 as u32);
+        let copy = || source.copy_tile(area, tests.0, tests.1);
+        let mut local = copy();
+        let bin = &bins.tile(t)[..];
+        let mut scratch = stage.scratch();
+        if let Some(depth) = &stage.deferred {
+            match stage.shade_deferred(depth.as_ref(), &mut local, prims, bin, r, &mut scratch) {
+                Ok(()) => return TileResult::Ran(local, None),
+                // Redraw the tile the straightforward way: it stops at the
+                // same fragment with the same error.
+                Err(_) => local = copy(),
+            }
+        } else if stage.batches_primitives(source) {
+            match stage.shade_batched(&mut local, prims, bin, r, &mut scratch) {
+                Ok(()) => return TileResult::Ran(local, None),
+                // The same: one primitive at a time gives the error and
+                // the partial tile of the contract.
+                Err(_) => local = copy(),
+            }
+        }
+        for &p in bin {
+            if cancel.skip(i) {
+                return TileResult::Skipped;
+            }
+            let Some(&prim) = prims.get(p as usize) else {
+                continue;
+            };
+            if let Err(e) = stage.shade(&mut local, prim, r, &mut scratch) {
+                cancel.fail(i);
+                return TileResult::Ran(local, Some(e));
+            }
+        }
+        TileResult::Ran(local, None)
+    });
+    // Written back up to the first failed tile (later ones are dropped),
+    // each band of tile rows by a worker: the bands are disjoint.
+    let failed = results
+        .iter()
+        .position(|r| matches!(r, TileResult::Ran(_, Some(_))));
+    let kept = failed.map_or(results.len(), |i| i + 1);
+    let mut passed = 0u64;
+    for r in &results[..kept] {
+        if let TileResult::Ran(local, _) = r {
+            passed = passed.wrapping_add(local.samples_passed);
+        }
+    }
+    fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+    let bands: Vec<Mutex<Band>> = fb.bands(TILE as u32).into_iter().map(Mutex::new).collect();
+    let row_of = |i: usize| occupied.get(i).map_or(usize::MAX, |&t| grid.row(t));
+    workers.map(bands.len(), 1, |b, _| {
+        let Some(band) = bands.get(b) else { return };
+        let mut band = band.lock().unwrap_or_else(|e| e.into_inner());
+        // The band's tiles: a run of `occupied` (sorted by tile).
+        let first = occupied.partition_point(|&t| grid.row(t) < b);
+        for i in first..kept {
+            if row_of(i) != b {
+                break;
+            }
+            if let (Some(TileResult::Ran(local, _)), Some(&t)) = (results.get(i), occupied.get(i)) {
+                let r = rect(t);
+                band.store_tile(r.0 as u32, r.1 as u32, local);
+            }
+        }
+    });
+    match failed.and_then(|i| results.into_iter().nth(i)) {
+        Some(TileResult::Ran(_, Some(e))) => Err(e.into()),
+        _ => Ok(()),
+    }
+}

@@ -1,0 +1,196 @@
+//! The debugger's entry points: [`probe_draw`] and [`view_draw`] replay a
+//! draw ([`Replay`]: what [`crate::draw_on`] takes) on a copy of the
+//! framebuffer, on one thread, with a [`Probe`] attached, and return what
+//! it recorded ([`DrawProbe`], [`ViewImage`]).
+//!
+//! [`probe_draw`] narrows the scissor box to the probed pixel (and the
+//! `debugPrintfEXT` rectangle, if any). Narrowing the scissor does not
+//! change any value the pixel sees: quads are still whole 2×2 quads
+//! (helper lanes included, so derivatives are those of the real draw),
+//! interpolation is per pixel, and per-fragment operations run in
+//! primitive order on the same stored values.
+
+use crate::draw::draw_probed;
+use crate::ex;
+use crate::framebuffer::Framebuffer;
+use crate::linkage::new_batch;
+use crate::probe::{
+    DrawProbe, FragmentProbe, PixelState, Probe, Recording, VertexProbe, View, ViewImage,
+};
+use crate::state::{PipelineState, Rect};
+use crate::vertex::fetch_vertex;
+use crate::{DrawError, Mode, VertexFetch};
+
+/// What the debugger asks of one draw.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ProbeRequest {
+    /// The window pixel to trace.
+    pub pixel: (u32, u32),
+    /// Also collect `debugPrintfEXT` output of fragments in
+    /// `[x0, x1) × [y0, y1)` (the pixel's own prints are always in its
+    /// trace).
+    pub print_rect: Option<(u32, u32, u32, u32)>,
+    /// Also trace the vertex shader for this position of the draw's index
+    /// list.
+    pub vertex: Option<usize>,
+    /// Also collect every primitive's window-space outline.
+    pub outlines: bool,
+}
+
+/// One draw's inputs, as [`crate::draw_on`] takes them, for the debugger's
+/// replays ([`probe_draw`], [`view_draw`]).
+#[derive(Clone, Copy)]
+pub struct Replay<'a> {
+    pub state: &'a PipelineState,
+    pub vs: &'a ex::Kernel,
+    pub vs_uniforms: &'a [u32],
+    pub fs: &'a ex::Kernel,
+    pub fs_uniforms: &'a [u32],
+    pub mode: Mode,
+    pub indices: &'a [u32],
+    pub fetch: &'a dyn VertexFetch,
+    pub textures: &'a (dyn ex::Textures + Sync),
+}
+
+impl Replay<'_> {
+    /// Runs the draw on one thread into `fb` with `probe` attached (and
+    /// `state` in place of the draw's own).
+    fn run(
+        &self,
+        fb: &mut Framebuffer,
+        state: &PipelineState,
+        probe: &Probe,
+    ) -> Result<(), DrawError> {
+        draw_probed(
+            &crate::Workers::inline(),
+            fb,
+            state,
+            (self.vs, self.vs_uniforms),
+            (self.fs, self.fs_uniforms),
+            self.mode,
+            self.indices,
+            self.fetch,
+            self.textures,
+            Some(probe),
+        )
+    }
+}
+
+/// Replays a draw on a copy of `fb` and returns, for every pixel a
+/// fragment of this draw wrote, the value `view` had in that fragment.
+pub fn view_draw(fb: &Framebuffer, draw: &Replay, view: View) -> Result<ViewImage, DrawError> {
+    let probe = Probe::for_view(view, fb.width, fb.height);
+    let mut copy = fb.clone();
+    draw.run(&mut copy, draw.state, &probe)?;
+    Ok(probe.into_image())
+}
+
+impl ProbeRequest {
+    /// A request for `pixel` only.
+    pub fn pixel(x: u32, y: u32) -> ProbeRequest {
+        ProbeRequest {
+            pixel: (x, y),
+            print_rect: None,
+            vertex: None,
+            outlines: false,
+        }
+    }
+}
+
+/// Replays a draw on a copy of `fb` and reports what happened at
+/// `req.pixel` (see the module docs).
+pub fn probe_draw(
+    fb: &Framebuffer,
+    draw: &Replay,
+    req: ProbeRequest,
+) -> Result<DrawProbe, DrawError> {
+    let state = draw.state;
+    let (px, py) = req.pixel;
+    let mut report = DrawProbe {
+        pixel: req.pixel,
+        ..DrawProbe::default()
+    };
+    if px >= fb.width || py >= fb.height {
+        report.unreachable = Some(format!(
+            "pixel ({px}, {py}) is outside the {}×{} framebuffer",
+            fb.width, fb.height
+        ));
+        return Ok(report);
+    }
+    // The region replayed: the pixel and the print rectangle, inside the
+    // real scissor box.
+    let (mut x0, mut y0, mut x1, mut y1) = (px as i64, py as i64, px as i64 + 1, py as i64 + 1);
+    if let Some(r) = req.print_rect {
+        x0 = x0.min(r.0 as i64);
+        y0 = y0.min(r.1 as i64);
+        x1 = x1.max(r.2 as i64);
+        y1 = y1.max(r.3 as i64);
+    }
+    if let Some(s) = state.scissor {
+        let inside = |x: i64, y: i64| {
+            x >= s.x as i64
+                && y >= s.y as i64
+                && x < s.x as i64 + s.w as i64
+                && y < s.y as i64 + s.h as i64
+        };
+        if !inside(px as i64, py as i64) {
+            report.unreachable = Some(format!(
+                "pixel ({px}, {py}) is outside the scissor box ({}, {}, {}×{})",
+                s.x, s.y, s.w, s.h
+            ));
+        }
+        x0 = x0.max(s.x as i64);
+        y0 = y0.max(s.y as i64);
+        x1 = x1.min(s.x as i64 + s.w as i64);
+        y1 = y1.min(s.y as i64 + s.h as i64);
+    }
+    let mut narrowed = state.clone();
+    narrowed.scissor = Some(Rect {
+        x: x0 as i32,
+        y: y0 as i32,
+        w: (x1 - x0).max(0) as i32,
+        h: (y1 - y0).max(0) as i32,
+    });
+    let probe = Probe::for_pixel((px as i64, py as i64), req.print_rect, req.outlines, report);
+    let mut copy = fb.clone();
+    let result = draw.run(&mut copy, &narrowed, &probe);
+    let mut report = probe.into_report();
+    report.after = PixelState::read(&copy, (py * copy.width + px) as usize);
+    if let Some(position) = req.vertex {
+        report.vertex = Some(trace_vertex(draw, position));
+    }
+    result.map(|()| report)
+}
+
+/// Runs the vertex shader alone for one position of the index list, traced
+/// (vertices do not depend on each other, so a batch of one lane gives the
+/// values of the real draw).
+fn trace_vertex(draw: &Replay, position: usize) -> VertexProbe {
+    let (vs, indices) = (draw.vs, draw.indices);
+    let Some(&index) = indices.get(position) else {
+        return VertexProbe {
+            position,
+            error: Some(format!(
+                "the draw has {} vertices; there is no vertex at position {position}",
+                indices.len()
+            )),
+            ..VertexProbe::default()
+        };
+    };
+    let iface = vs.interface();
+    let mut batch = new_batch(iface.input_components, iface.output_components);
+    fetch_vertex(iface, draw.fetch, index, &mut batch, 0);
+    batch.active = 1;
+    let mut rec = Recording {
+        fragment: FragmentProbe::default(),
+    };
+    let result = vs.run_traced(&mut batch, draw.vs_uniforms, draw.textures, 0, &mut rec);
+    VertexProbe {
+        position,
+        index,
+        inputs: batch.inputs.iter().map(|c| c[0]).collect(),
+        events: rec.fragment.events,
+        outputs: batch.outputs.iter().map(|c| c[0]).collect(),
+        error: result.err().map(|e| e.to_string()),
+    }
+}

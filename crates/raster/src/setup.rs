@@ -1,0 +1,534 @@
+//! Primitive set-up: assembled primitives to [`Prim`]s ready for
+//! rasterization.
+//!
+//! Takes the vertex stage's outputs and, per primitive of a set-up chunk,
+//! its vertices ([`Setup::chunk`], which assembles them with
+//! `crate::assembly`); clips them in clip space against the view volume
+//! and the user clip planes (`crate::clip`, GL 2.1 §2.12), divides and maps
+//! them to window space (§2.11), decides facing from the window-space area
+//! (§3.5.1), culls, applies polygon offset (§3.5.5) and the polygon mode,
+//! and gives the chunk's [`Prim`]s with the planes of their fragment
+//! varyings ([`Out`]). Triangles and quads inside every clip plane skip
+//! the clipper; with shared vertices each vertex's outcode and window
+//! position ([`Corner`]) are computed once per draw.
+
+use std::ops::Range;
+
+use crate::assembly::{primitive, small_polygon, Assembled, Mode};
+use crate::clip::{ClipVertex, Planes};
+use crate::framebuffer::{Framebuffer, DEPTH_MAX};
+use crate::interpolate::{Plane, PrimPlanes};
+use crate::linkage::{FsLayout, VsLayout};
+use crate::prim::{plane_origin, Prim};
+use crate::probe::Probe;
+use crate::rasterize::{max_depth_slope, snap, vertex_depths, PixelRect, Shape, WinVertex};
+use crate::simd::Isa;
+use crate::state::{CullFace, FrontFace, PipelineState, PolygonMode};
+
+/// Largest point size used (points are clamped to [1, MAX_POINT_SIZE]).
+pub const MAX_POINT_SIZE: f32 = 2048.0;
+
+/// Viewport coordinates are clamped to ±2^19 so window positions fit the
+/// rasterizer's fixed-point range.
+const VIEWPORT_LIMIT: i64 = 1 << 19;
+
+/// Turns assembled primitives into set-up [`Prim`]s.
+pub(crate) struct Setup<'a> {
+    state: &'a PipelineState,
+    vs: &'a VsLayout,
+    fs: &'a FsLayout,
+    outputs: &'a [f32],
+    planes: Planes,
+    clip_rect: PixelRect,
+    /// Viewport transform (px/2, ox, py/2, oy, (f-n)/2, (n+f)/2).
+    vp: [f64; 6],
+    probe: Option<&'a Probe>,
+    /// Per vertex (when vertices are shared enough to be worth it, else
+    /// empty): its clip-plane outcode and window position, what
+    /// [`Setup::polygon`] computes for each primitive's vertices.
+    corners: &'a [Corner],
+}
+
+/// A vertex's [`Planes::outcode_of`], [`Setup::window`] and that
+/// position in fixed point ([`snap`]).
+#[derive(Clone, Copy)]
+pub(crate) struct Corner {
+    outcode: u32,
+    win: Option<(WinVertex, (i64, i64))>,
+}
+
+impl Corner {
+    /// A placeholder, before a table's entries are computed.
+    pub const BLANK: Corner = Corner {
+        outcode: 0,
+        win: None,
+    };
+}
+
+/// Below this many primitive vertices per vertex the set-up computes each
+/// vertex's outcode and window position where it is used (no table).
+pub(crate) const CORNER_REUSE: usize = 2;
+
+/// Where set-up primitives go: the primitives of one chunk, their
+/// fragment varyings' planes (`Prim::index` × links locates a primitive's in `planes`), and the index of
+/// the assembled primitive being set up.
+pub(crate) struct Out {
+    pub prims: Vec<Prim>,
+    pub planes: Vec<Plane>,
+    pub source: u32,
+    /// The set-up chunk (its index in the draw's chunks).
+    pub chunk: u32,
+}
+
+const NO_WIN: WinVertex = WinVertex {
+    x: 0.0,
+    y: 0.0,
+    z: 0.0,
+    inv_w: 0.0,
+};
+
+impl<'a> Setup<'a> {
+    /// The set-up of a draw into `fb` with `state`: the vertex stage's
+    /// `outputs` (laid out as `vs` says), linked to the fragment stage
+    /// by `fs`; no per-vertex table yet ([`Setup::with_corners`]).
+    pub fn new(
+        state: &'a PipelineState,
+        (vs, fs): (&'a VsLayout, &'a FsLayout),
+        outputs: &'a [f32],
+        fb: &Framebuffer,
+        probe: Option<&'a Probe>,
+    ) -> Setup<'a> {
+        let vp = state.viewport;
+        let lim = |v: i32| (v as i64).clamp(-VIEWPORT_LIMIT, VIEWPORT_LIMIT) as f64;
+        let (vw, vh) = (lim(vp.w.max(0)), lim(vp.h.max(0)));
+        let (n, f) = (state.depth_range.0 as f64, state.depth_range.1 as f64);
+        let mut clip_rect = (0, 0, fb.width as i64, fb.height as i64);
+        if let Some(s) = state.scissor {
+            let (x0, y0) = (s.x as i64, s.y as i64);
+            clip_rect = (
+                clip_rect.0.max(x0),
+                clip_rect.1.max(y0),
+                clip_rect.2.min(x0 + s.w.max(0) as i64),
+                clip_rect.3.min(y0 + s.h.max(0) as i64),
+            );
+        }
+        Setup {
+            state,
+            vs,
+            fs,
+            outputs,
+            planes: Planes::new(&state.clip_planes),
+            clip_rect,
+            vp: [
+                vw / 2.0,
+                lim(vp.x) + vw / 2.0,
+                vh / 2.0,
+                lim(vp.y) + vh / 2.0,
+                (f - n) / 2.0,
+                (n + f) / 2.0,
+            ],
+            probe,
+            corners: &[],
+        }
+    }
+
+    /// This set-up reading each vertex's outcode and window position
+    /// from `corners` (entry `v` is [`Setup::compute_corner`] of `v`).
+    pub fn with_corners(self, corners: &'a [Corner]) -> Setup<'a> {
+        Setup { corners, ..self }
+    }
+}
+
+impl Setup<'_> {
+    /// Assembles and sets up primitives `range` of the draw (`vertex_of`:
+    /// the vertex at each position of the index list) into `out`, in
+    /// order. Triangles and quads take [`Setup::polygon`] (its AVX2
+    /// build when `isa` allows), except under the debugger's probe, which
+    /// notes each assembled primitive.
+    #[inline(always)]
+    pub fn chunk(
+        &self,
+        out: &mut Out,
+        mode: Mode,
+        vertex_of: &[u32],
+        range: Range<usize>,
+        isa: Isa,
+    ) {
+        let probe = self.probe;
+        let count = vertex_of.len();
+        let v = |i: usize| vertex_of.get(i).map_or(0, |&v| v as usize);
+        for k in range {
+            out.source = k as u32;
+            if probe.is_none() {
+                if let Some((vs, n, prov)) = small_polygon(mode, k) {
+                    let vs = vs.map(v);
+                    match isa {
+                        #[cfg(target_arch = "x86_64")]
+                        // SAFETY: `isa` is one of these only when the CPU
+                        // has their features (`simd::detect`).
+                        Isa::Avx2 | Isa::Avx512 => unsafe {
+                            self.polygon_avx2(out, &vs[..n], v(prov))
+                        },
+                        _ => self.polygon(out, &vs[..n], v(prov)),
+                    }
+                    continue;
+                }
+            }
+            let p = primitive(mode, count, k);
+            if let Some(probe) = probe {
+                probe.note_primitive(out.source, &p);
+            }
+            match p {
+                Assembled::Point(i) => {
+                    let cv = self.clip_vertex(v(i));
+                    self.point(out, &cv, false, 0.0, self.data(v(i)));
+                }
+                Assembled::Line(a, b) => {
+                    let (ca, cb) = (self.clip_vertex(v(a)), self.clip_vertex(v(b)));
+                    self.line(out, &ca, &cb, false, 0.0, self.data(v(b)));
+                }
+                Assembled::Polygon(vs, prov) => {
+                    let vs: Vec<usize> = vs.into_iter().map(v).collect();
+                    self.polygon(out, &vs, v(prov));
+                }
+            }
+        }
+    }
+
+    fn data(&self, v: usize) -> &[f32] {
+        let s = self.vs.outputs;
+        self.outputs.get(v * s..(v + 1) * s).unwrap_or(&[])
+    }
+
+    fn clip_vertex(&self, v: usize) -> ClipVertex {
+        let data = self.data(v);
+        ClipVertex {
+            pos: self.vs.position(data),
+            eye: self.vs.eye(data),
+            data: data.to_vec(),
+        }
+    }
+
+    /// Perspective division and viewport transform (GL 2.1 §2.11) of a
+    /// clip-space position.
+    fn window(&self, pos: [f32; 4]) -> Option<WinVertex> {
+        let w = pos[3] as f64;
+        if w.is_nan() || w <= 0.0 {
+            return None;
+        }
+        let [sx, ox, sy, oy, sz, oz] = self.vp;
+        let xd = pos[0] as f64 / w;
+        let yd = pos[1] as f64 / w;
+        let zd = pos[2] as f64 / w;
+        let win = WinVertex {
+            x: sx * xd + ox,
+            y: sy * yd + oy,
+            z: sz * zd + oz,
+            inv_w: 1.0 / w,
+        };
+        (win.x.is_finite() && win.y.is_finite() && win.z.is_finite() && win.inv_w.is_finite())
+            .then_some(win)
+    }
+
+    /// Appends the planes of the fragment varyings of `shape` (`win` and
+    /// `vertices`: the window positions and the data of its vertices) to
+    /// `out.planes`, flat-shaded colours constant at `provoking`'s,
+    /// origin pixel `origin`; returns the primitive's own planes (window
+    /// z, 1/w).
+    #[inline(always)]
+    fn planes(
+        &self,
+        out: &mut Out,
+        (shape, win): (&Shape, &[WinVertex]),
+        origin: (i64, i64),
+        vertices: &[&[f32]],
+        (back, provoking): (bool, &[f32]),
+    ) -> PrimPlanes {
+        let basis = shape.basis(origin);
+        let (z, inv_w) = vertex_depths(win);
+        let prim = PrimPlanes::new(&basis, z, inv_w);
+        // A line's or a point's missing vertices repeat its last.
+        let data = |j: usize| vertices.get(j).or(vertices.last()).copied().unwrap_or(&[]);
+        let (d0, d1, d2) = (data(0), data(1), data(2));
+        let flat = self.state.flat_shading;
+        for link in &self.fs.links {
+            let src = if back { link.back } else { link.front };
+            let get = |d: &[f32]| src.and_then(|o| d.get(o)).copied().unwrap_or(0.0);
+            out.planes.push(match flat && link.color {
+                true => Plane::constant(get(provoking)),
+                false => prim.varying(&basis, [get(d0), get(d1), get(d2)], inv_w),
+            });
+        }
+        prim
+    }
+
+    /// Sets up `shape`, whose vertices are `win` (window positions) and
+    /// `vertices` (their data).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn push(
+        &self,
+        out: &mut Out,
+        (shape, win): (Shape, &[WinVertex]),
+        back: bool,
+        z_offset: f64,
+        vertices: &[&[f32]],
+        provoking: &[f32],
+    ) {
+        if let Some(p) = self.probe {
+            p.note_shape(win);
+        }
+        let b = shape.bounds();
+        let c = self.clip_rect;
+        let bounds = (b.0.max(c.0), b.1.max(c.1), b.2.min(c.2), b.3.min(c.3));
+        if bounds.0 >= bounds.2 || bounds.1 >= bounds.3 {
+            return;
+        }
+        let origin = plane_origin(bounds);
+        let planes = self.planes(out, (&shape, win), origin, vertices, (back, provoking));
+        if let Some(p) = self.probe {
+            p.note_window(win);
+        }
+        out.prims.push(Prim {
+            shape,
+            bounds,
+            back,
+            z_offset,
+            planes,
+            index: out.prims.len() as u32,
+            chunk: out.chunk,
+            source: out.source,
+        });
+    }
+
+    fn point_size(&self, data: &[f32]) -> f32 {
+        let size = match (self.state.vertex_program_point_size, self.vs.point_size) {
+            (true, Some(o)) => data.get(o).copied().unwrap_or(1.0),
+            _ => self.state.point_size,
+        };
+        if size.is_nan() {
+            1.0
+        } else {
+            size.clamp(1.0, MAX_POINT_SIZE)
+        }
+    }
+
+    fn point(&self, out: &mut Out, v: &ClipVertex, back: bool, z_offset: f64, provoking: &[f32]) {
+        if !self.planes.point_inside(v) {
+            return;
+        }
+        let Some(win) = self.window(v.pos) else {
+            return;
+        };
+        let size = self.point_size(&v.data) as f64;
+        let shape = Shape::point(win, size, self.state.point_sprite);
+        self.push(out, (shape, &[win]), back, z_offset, &[&v.data], provoking);
+    }
+
+    fn line(
+        &self,
+        out: &mut Out,
+        a: &ClipVertex,
+        b: &ClipVertex,
+        back: bool,
+        z_offset: f64,
+        provoking: &[f32],
+    ) {
+        let Some((a, b)) = self.planes.clip_line(a, b) else {
+            return;
+        };
+        let (Some(wa), Some(wb)) = (self.window(a.pos), self.window(b.pos)) else {
+            return;
+        };
+        let shape = Shape::line([wa, wb], self.state.line_width);
+        self.push(
+            out,
+            (shape, &[wa, wb]),
+            back,
+            z_offset,
+            &[&a.data, &b.data],
+            provoking,
+        );
+    }
+
+    /// Vertex `v`'s outcode and window position: from the table when
+    /// there is one, else computed.
+    #[inline(always)]
+    fn corner(&self, v: usize) -> Corner {
+        match self.corners.get(v) {
+            Some(&c) => c,
+            None => self.compute_corner(v),
+        }
+    }
+
+    pub fn compute_corner(&self, v: usize) -> Corner {
+        let d = self.data(v);
+        let pos = self.vs.position(d);
+        let outcode = self.planes.outcode_of(&pos, &self.vs.eye(d));
+        Corner {
+            outcode,
+            // Only read for vertices inside every plane.
+            win: match outcode {
+                0 => self.window(pos).map(|w| (w, snap(&w))),
+                _ => None,
+            },
+        }
+    }
+
+    /// Sets up a polygon (`vertices`, `provoking`: vertex numbers):
+    /// clipped, culled, offset, filled as triangles or outlined.
+    fn polygon(&self, out: &mut Out, vertices: &[usize], provoking: usize) {
+        self.polygon_with(out, vertices, provoking)
+    }
+
+    /// [`Setup::polygon`] compiled for AVX2 with the bit-count
+    /// instructions (the set-up inlined into it: the same f64 operations,
+    /// none fused, so the same values).
+    ///
+    /// # Safety
+    /// The CPU must have those features ([`crate::simd::Isa::Avx2`]).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt")]
+    unsafe fn polygon_avx2(&self, out: &mut Out, vertices: &[usize], provoking: usize) {
+        self.polygon_with(out, vertices, provoking)
+    }
+
+    #[inline(always)]
+    fn polygon_with(&self, out: &mut Out, vertices: &[usize], provoking: usize) {
+        // Line and point modes draw the unclipped polygon's edges/vertices.
+        let filled_only = self.state.polygon_mode == [PolygonMode::Fill; 2];
+        let prov = self.data(provoking);
+        if filled_only && (3..=4).contains(&vertices.len()) {
+            // Triangles and quads inside every plane (the usual case) skip
+            // the clipper and its copies: what it would return unchanged.
+            let mut corners = [Corner {
+                outcode: 0,
+                win: None,
+            }; 4];
+            let (mut all, mut any) = (0u32, !0u32);
+            for (c, &v) in corners.iter_mut().zip(vertices) {
+                *c = self.corner(v);
+                all |= c.outcode;
+                any &= c.outcode;
+            }
+            if any != 0 {
+                return;
+            }
+            if all == 0 {
+                let mut win = [NO_WIN; 4];
+                let mut fixed = [(0, 0); 4];
+                let mut data: [&[f32]; 4] = [&[]; 4];
+                for (i, (&v, c)) in vertices.iter().zip(&corners).enumerate() {
+                    let Some((w, f)) = c.win else {
+                        return;
+                    };
+                    (win[i], fixed[i]) = (w, f);
+                    data[i] = self.data(v);
+                }
+                let n = vertices.len();
+                let polygon = (&win[..n], &fixed[..n]);
+                self.set_up_polygon(out, polygon, &data[..n], &[], prov);
+                return;
+            }
+        }
+        let original: Vec<ClipVertex> = vertices.iter().map(|&v| self.clip_vertex(v)).collect();
+        let (original, clipped) = if filled_only {
+            (Vec::new(), self.planes.clip_polygon(original))
+        } else {
+            let clipped = self.planes.clip_polygon(original.clone());
+            (original, clipped)
+        };
+        if clipped.len() < 3 {
+            return;
+        }
+        let Some(win) = clipped
+            .iter()
+            .map(|v| self.window(v.pos))
+            .collect::<Option<Vec<_>>>()
+        else {
+            return;
+        };
+        let data: Vec<&[f32]> = clipped.iter().map(|v| &v.data[..]).collect();
+        let fixed: Vec<(i64, i64)> = win.iter().map(snap).collect();
+        self.set_up_polygon(out, (&win, &fixed), &data, &original, prov);
+    }
+
+    /// Facing, culling, polygon offset and the polygon mode of a clipped
+    /// polygon (`win`, its [`snap`] `fixed` and `data` per vertex, at
+    /// least three; `original`: the unclipped polygon, for line and point
+    /// modes).
+    #[inline(always)]
+    fn set_up_polygon(
+        &self,
+        out: &mut Out,
+        (win, fixed): (&[WinVertex], &[(i64, i64)]),
+        data: &[&[f32]],
+        original: &[ClipVertex],
+        prov: &[f32],
+    ) {
+        // GL 2.1 §3.5.1 eq. 3.6: the sign of the window-space area.
+        let mut area = 0.0f64;
+        for i in 0..win.len() {
+            let j = (i + 1) % win.len();
+            area += win[i].x * win[j].y - win[j].x * win[i].y;
+        }
+        let ccw = area > 0.0;
+        let front = ccw == (self.state.front_face == FrontFace::Ccw);
+        let back = !front;
+        match self.state.cull {
+            Some(CullFace::FrontAndBack) => return,
+            Some(CullFace::Front) if front => return,
+            Some(CullFace::Back) if back => return,
+            _ => {}
+        }
+        let mode = self.state.polygon_mode[back as usize];
+        let po = self.state.polygon_offset;
+        let offset_on = match mode {
+            PolygonMode::Fill => po.fill,
+            PolygonMode::Line => po.line,
+            PolygonMode::Point => po.point,
+        };
+        // Fan triangle i (vertices 0, i, i + 1), from the snapped
+        // positions; `None` when it has no area.
+        let fan = |i: usize| {
+            let corner = |j: usize| fixed.get(j).copied().unwrap_or_default();
+            Shape::triangle_snapped([corner(0), corner(i), corner(i + 1)])
+        };
+        let z_offset = if offset_on {
+            // §3.5.5: o = m · factor + r · units.
+            let m = (1..win.len() - 1)
+                .find(|&i| fan(i).is_some())
+                .map_or(0.0, |i| max_depth_slope(&[win[0], win[i], win[i + 1]]));
+            m * po.factor as f64 + po.units as f64 / DEPTH_MAX as f64
+        } else {
+            0.0
+        };
+        match mode {
+            PolygonMode::Fill => {
+                for i in 1..win.len() - 1 {
+                    let Some(shape) = fan(i) else {
+                        continue;
+                    };
+                    let tri = [win[0], win[i], win[i + 1]];
+                    let (Some(&d0), Some(&di), Some(&dj)) =
+                        (data.first(), data.get(i), data.get(i + 1))
+                    else {
+                        continue;
+                    };
+                    self.push(out, (shape, &tri), back, z_offset, &[d0, di, dj], prov);
+                }
+            }
+            PolygonMode::Line => {
+                for i in 0..original.len() {
+                    let j = (i + 1) % original.len();
+                    self.line(out, &original[i], &original[j], back, z_offset, prov);
+                }
+            }
+            PolygonMode::Point => {
+                for v in original {
+                    self.point(out, v, back, z_offset, prov);
+                }
+            }
+        }
+    }
+}

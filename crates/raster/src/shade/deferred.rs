@@ -1,0 +1,469 @@
+//! The fragment stage's deferred (two-pass) loop: the depth-only slice on
+//! every fragment, then the full shader once per visible (primitive,
+//! quad). Takes a tile and its bin; gives the tile's pixels, the same
+//! bytes as [`FragmentStage::shade`] over the bin (tests compare them).
+//! See [`FragmentStage::shade_deferred`].
+
+use super::*;
+
+/// The lane of pixel `k` of `e`, the `q`-th quad of a batch: `4q + k`,
+/// or in a packed batch the next lane (`*next`, then counted) when the
+/// quad runs that pixel (`e.write`), else none. Called for the quads in
+/// order, each one's pixels in order.
+#[inline(always)]
+fn lane_of(packed: bool, q: usize, e: &Entry, k: usize, next: &mut usize) -> Option<usize> {
+    match packed {
+        true if e.write & (1 << k) != 0 => {
+            *next += 1;
+            Some(*next - 1)
+        }
+        true => None,
+        false => Some(4 * q + k),
+    }
+}
+
+/// What the passes of [`FragmentStage::shade_deferred`] share in a tile.
+struct DeferredPass<'d> {
+    /// The depth-only slice.
+    depth: &'d dyn ShaderStage,
+    /// The tile's origin in the window.
+    origin: (u32, u32),
+    quick: Option<QuickOps>,
+    /// Whether the slice runs (else the pass only depth-tests).
+    run_slice: bool,
+    /// Whether the slice and the full shader run packed batches
+    /// ([`FragmentStage::fill_packed_with`]).
+    pack_depth: bool,
+    pack_colors: bool,
+}
+
+/// Takes the quad just set at `pending[*n]` (running the pixels
+/// `write`) into a batch being gathered, `*lanes` lanes of it used so
+/// far: a quad per 4 lanes, or with `packed` its pixels of `write` only
+/// ([`FragmentStage::fill_packed_with`]). Returns `Some((count, spill))` when
+/// `pending[..count]` is to run now: with `spill` the new quad did not
+/// fit and is to be moved to `pending[0]`, where the next batch starts.
+fn admit(packed: bool, n: &mut usize, lanes: &mut usize, write: u8) -> Option<(usize, bool)> {
+    let c = match packed {
+        true => (write & 0xf).count_ones() as usize,
+        false => 4,
+    };
+    if *lanes + c > LANES {
+        let count = *n;
+        *n = 1;
+        *lanes = c;
+        return Some((count, true));
+    }
+    *n += 1;
+    *lanes += c;
+    if *lanes == LANES || *n == LANES {
+        let count = *n;
+        *n = 0;
+        *lanes = 0;
+        return Some((count, false));
+    }
+    None
+}
+
+impl<'a> FragmentStage<'a> {
+    /// The primitives `bin` (indices into `prims`, in draw order) inside
+    /// `tile`, shading colors only for the fragments that end up visible.
+    /// Only for a stage with [`FragmentStage::deferred`] and per-fragment
+    /// operations where the last fragment to pass the depth test decides
+    /// a pixel's color ([`fragment_ops::last_writer_wins`]).
+    ///
+    /// Pass 1 runs the depth-only slice on every fragment (without
+    /// gl_FragDepth: every fragment early depth rejection keeps), four
+    /// quads at a time, and sends them through the depth test in draw
+    /// order, keeping
+    /// per pixel the primitive of the last fragment that passed (and that
+    /// quad's coverage). Pass 2 runs the full shader once per (primitive,
+    /// quad) that won a pixel, with the same quad inputs, coverage and
+    /// helper lanes as the straightforward path, and writes the colors of
+    /// the winning pixels. The slice computes the same gl_FragDepth and
+    /// discards as the full shader, and a lane depends only on its quad, so
+    /// the tile ends with the same bytes as [`FragmentStage::shade`] over
+    /// the bin. On an error `fb` is left partly drawn: the caller redraws
+    /// the tile the straightforward way to get the same error and pixels.
+    pub fn shade_deferred<'p>(
+        &self,
+        depth: &dyn ShaderStage,
+        fb: &mut Framebuffer,
+        prims: &[&'p Prim],
+        bin: &[u32],
+        tile: PixelRect,
+        scratch: &mut Scratch<'p>,
+    ) -> Result<(), ExecError> {
+        match self.isa {
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: `isa` is only Avx512 when the CPU has the features
+            // (`simd::detect`).
+            Isa::Avx512 => unsafe {
+                self.shade_deferred_avx512(depth, fb, prims, bin, tile, scratch)
+            },
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: likewise for AVX2.
+            Isa::Avx2 => unsafe { self.shade_deferred_avx2(depth, fb, prims, bin, tile, scratch) },
+            _ => self.shade_deferred_with(depth, fb, prims, bin, tile, scratch),
+        }
+    }
+
+    /// [`FragmentStage::shade_deferred`] compiled for AVX2 (its quad
+    /// loops, depth tests and f64 quad set-up inlined: the same
+    /// operations).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt")]
+    unsafe fn shade_deferred_avx2<'p>(
+        &self,
+        depth: &dyn ShaderStage,
+        fb: &mut Framebuffer,
+        prims: &[&'p Prim],
+        bin: &[u32],
+        tile: PixelRect,
+        scratch: &mut Scratch<'p>,
+    ) -> Result<(), ExecError> {
+        self.shade_deferred_with(depth, fb, prims, bin, tile, scratch)
+    }
+
+    /// [`FragmentStage::shade_deferred`] compiled for AVX-512.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt,avx512f,avx512dq,avx512vl")]
+    unsafe fn shade_deferred_avx512<'p>(
+        &self,
+        depth: &dyn ShaderStage,
+        fb: &mut Framebuffer,
+        prims: &[&'p Prim],
+        bin: &[u32],
+        tile: PixelRect,
+        scratch: &mut Scratch<'p>,
+    ) -> Result<(), ExecError> {
+        self.shade_deferred_with(depth, fb, prims, bin, tile, scratch)
+    }
+
+    /// The depth pass of [`FragmentStage::shade_deferred`] on the quads
+    /// `pending`: the slice (when it runs), then the depth test of every
+    /// fragment left, in order, keeping in `winner` each pixel's last.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn depth_pass(
+        &self,
+        pass: &DeferredPass,
+        fb: &mut Framebuffer,
+        batch: &mut Batch,
+        winner: &mut [(u32, u8)],
+        pending: &[Entry],
+    ) -> Result<(), ExecError> {
+        if pass.run_slice {
+            self.fill(batch, pending, &self.depth_fills, pass.pack_depth);
+            self.run_depth(pass.depth, batch)?;
+        } else {
+            batch.discarded = 0;
+        }
+        // Per quad: the pixels still alive (covered, not discarded) and
+        // their window z, then their depth tests.
+        let mut next = 0;
+        let mut alive_z = |q: usize, e: &Entry| {
+            let quad = &e.quad;
+            let mut alive = 0u8;
+            let mut z = [0f32; 4];
+            for (k, z) in z.iter_mut().enumerate() {
+                let Some(lane) = lane_of(pass.pack_depth, q, e, k, &mut next) else {
+                    continue;
+                };
+                if quad.live & (1 << k) != 0 && batch.discarded & (1 << lane) == 0 {
+                    alive |= 1 << k;
+                    *z = self.frag_z(batch, lane, quad, k);
+                }
+            }
+            (alive, z)
+        };
+        match &pass.quick {
+            Some(q) => {
+                // A quad's four pixels are distinct: tested together as
+                // one after the other.
+                let mut target = q.target(fb, pass.origin);
+                for (q, e) in pending.iter().enumerate() {
+                    let (alive, z) = alive_z(q, e);
+                    if alive == 0 {
+                        continue;
+                    }
+                    let quad = &e.quad;
+                    let zf = match self.layout.frag_depth {
+                        Some(_) => z.map(depth_to_fixed),
+                        None => quad.zf,
+                    };
+                    let (pass, index, _) = target.test_quad((quad.x, quad.y), alive, z, zf);
+                    for (k, &at) in index.iter().enumerate() {
+                        if pass & (1 << k) != 0 {
+                            if let Some(slot) = winner.get_mut(at) {
+                                *slot = (e.index, quad.live);
+                            }
+                        }
+                    }
+                }
+            }
+            None => {
+                for (q, e) in pending.iter().enumerate() {
+                    let (alive, z) = alive_z(q, e);
+                    let quad = &e.quad;
+                    for (k, &z) in z.iter().enumerate() {
+                        let (x, y) = quad.pixel(k);
+                        if alive & (1 << k) == 0 || x < 0 || y < 0 {
+                            continue;
+                        }
+                        let frag = Fragment {
+                            x: x as u32,
+                            y: y as u32,
+                            z,
+                            back_facing: e.prim.is_some_and(|p| p.back),
+                            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
+                        };
+                        let passed = fragment_ops::tests(fb, pass.origin, self.state, &frag);
+                        if let Some(slot) = passed.and_then(|i| winner.get_mut(i)) {
+                            *slot = (e.index, quad.live);
+                        }
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The colour pass of [`FragmentStage::shade_deferred`] on the quads
+    /// `todo`: the full shader, then the colours of the pixels each quad
+    /// won (`Entry::write`).
+    #[inline(always)]
+    fn color_pass(
+        &self,
+        pass: &DeferredPass,
+        fb: &mut Framebuffer,
+        batch: &mut Batch,
+        todo: &[Entry],
+    ) -> Result<(), ExecError> {
+        self.fill(batch, todo, &self.fills, pass.pack_colors);
+        self.run_shader(batch)?;
+        // (lane, pixel index) of the fragments to write, in order.
+        let mut writes = [(0usize, 0usize); LANES];
+        let mut count = 0;
+        let mut next = 0;
+        for (q, e) in todo.iter().enumerate() {
+            for k in 0..4 {
+                let Some(lane) = lane_of(pass.pack_colors, q, e, k, &mut next) else {
+                    continue;
+                };
+                if e.write & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
+                    continue;
+                }
+                let (x, y) = e.quad.pixel(k);
+                let lx = x as usize - pass.origin.0 as usize;
+                let ly = y as usize - pass.origin.1 as usize;
+                if let Some(slot) = writes.get_mut(count) {
+                    *slot = (lane, ly * fb.width as usize + lx);
+                    count += 1;
+                }
+            }
+        }
+        let writes = &writes[..count];
+        match pass.quick.and_then(|q| Some((q, q.color_output()?))) {
+            Some((q, o)) => {
+                let mut target = q.target(fb, pass.origin);
+                match batch.outputs.get(o..o + 4) {
+                    // Without blending, the batch's colours converted
+                    // together (as `write_quick` does).
+                    Some([r, g, b, a]) if target.opaque() => {
+                        let rgba = fragment_ops::unorm8_batch(self.isa, [r, g, b, a]);
+                        for &(lane, index) in writes {
+                            if let Some(&c) = rgba.get(lane) {
+                                target.write_rgba8(index, c);
+                            }
+                        }
+                    }
+                    _ => {
+                        for &(lane, index) in writes {
+                            target.write(index, [0, 1, 2, 3].map(|j| get(batch, o + j, lane)));
+                        }
+                    }
+                }
+            }
+            None => {
+                let mut colors = [[0.0; 4]; MAX_DRAW_BUFFERS];
+                for &(lane, index) in writes {
+                    self.colors_into(batch, lane, &mut colors);
+                    fragment_ops::write_colors(fb, index, self.state, &colors);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    #[inline(always)]
+    fn shade_deferred_with<'p>(
+        &self,
+        depth: &dyn ShaderStage,
+        fb: &mut Framebuffer,
+        prims: &[&'p Prim],
+        bin: &[u32],
+        tile: PixelRect,
+        scratch: &mut Scratch<'p>,
+    ) -> Result<(), ExecError> {
+        let origin = (tile.0.max(0) as u32, tile.1.max(0) as u32);
+        let (w, h) = (fb.width as usize, fb.height as usize);
+        let Scratch {
+            batch,
+            slots,
+            n,
+            quads,
+            packed,
+        } = scratch;
+        *n = 0;
+        // Per pixel: (winning primitive, its quad's coverage).
+        let mut winner: Vec<(u32, u8)> = vec![(NO_PRIM, 0); w * h];
+        // Without gl_FragDepth a fragment's depth is known before the
+        // slice runs: lanes the depth test will reject are dropped first
+        // when that stays right against a depth buffer missing the
+        // pending batch (as for `shade_batched`). A rejected lane cannot
+        // win; a winner's quad keeps the coverage the forward path gives
+        // it.
+        let early = self.early && self.batches_primitives(fb);
+        let quick = QuickOps::new(fb, self.state, &self.colors_out);
+        // A slice without ops (no gl_FragDepth, no discard) decides
+        // nothing: the pass only depth-tests.
+        let run_slice = !depth.does_nothing() || self.layout.frag_depth.is_some();
+        // Stages whose lanes are independent run the covered pixels of up
+        // to `LANES` quads per batch, without helper lanes.
+        let pack_depth = run_slice && self.deferred_lanes_independent;
+        let pack_colors = self.lanes_independent;
+        let pass = DeferredPass {
+            depth,
+            origin,
+            quick,
+            run_slice,
+            pack_depth,
+            pack_colors,
+        };
+        // Nothing to run and the common per-fragment operations: each
+        // quad is depth-tested as soon as it is covered (the order and the
+        // tests of the batched pass, which would only run the empty slice).
+        match quick.as_ref().filter(|_| !run_slice) {
+            Some(q) => {
+                let mut target = q.target(fb, origin);
+                for (i, &p) in bin.iter().enumerate() {
+                    let Some(&prim) = prims.get(p as usize) else {
+                        continue;
+                    };
+                    // (The pass interpolates nothing.)
+                    self.prefetch_ahead(prims, bin, i, false);
+                    let clip = clip_to(prim, tile);
+                    prim.shape.quads_each(
+                        clip,
+                        quads,
+                        #[inline(always)]
+                        |qx, qy, live| {
+                            let (z, zf) = quad_depths(prim, (qx, qy));
+                            // The f32 z only for a quad tested pixel by pixel.
+                            let z = || z.map(|z| z as f32);
+                            let (pass, index, _) = target.test_quad_with((qx, qy), live, z, zf);
+                            for (k, &at) in index.iter().enumerate() {
+                                if pass & (1 << k) != 0 {
+                                    if let Some(slot) = winner.get_mut(at) {
+                                        *slot = (p, live);
+                                    }
+                                }
+                            }
+                        },
+                    );
+                }
+            }
+            None => {
+                let pending: &mut [Entry<'p>] = match pack_depth {
+                    true => &mut packed[..],
+                    false => &mut slots[..],
+                };
+                let mut lanes = 0;
+                for (i, &p) in bin.iter().enumerate() {
+                    let Some(&prim) = prims.get(p as usize) else {
+                        continue;
+                    };
+                    self.prefetch_ahead(prims, bin, i, pass.run_slice);
+                    prim.shape.quads_into(clip_to(prim, tile), quads);
+                    for &quad in quads.iter() {
+                        let Some(e) = pending.get_mut(*n) else { break };
+                        e.set(prim, p, quad, 0, self.window_z);
+                        if early {
+                            self.early_rejects(fb, origin, prim, &mut e.quad);
+                            if e.quad.live == 0 {
+                                continue;
+                            }
+                        }
+                        e.write = e.quad.live;
+                        let write = e.write;
+                        if let Some((count, spill)) = admit(pack_depth, n, &mut lanes, write) {
+                            self.depth_pass(&pass, fb, batch, &mut winner, &pending[..count])?;
+                            if spill {
+                                pending.swap(0, count);
+                            }
+                        }
+                    }
+                }
+                if *n > 0 {
+                    self.depth_pass(&pass, fb, batch, &mut winner, &pending[..*n])?;
+                    *n = 0;
+                }
+            }
+        }
+
+        // Pass 2: (primitive, quad, coverage, lanes to write) per winner.
+        let pending: &mut [Entry<'p>] = match pack_colors {
+            true => &mut packed[..],
+            false => &mut slots[..],
+        };
+        let mut used = 0;
+        // The depth tests are behind: the window z only for gl_FragCoord
+        // or the probe.
+        let window_z = self.layout.frag_coord.is_some() || self.probe.is_some();
+        for ly in (0..h).step_by(2) {
+            for lx in (0..w).step_by(2) {
+                // The quad's pixels (lane order) and their winners.
+                let mut lanes = [(NO_PRIM, 0u8); 4];
+                for (k, lane) in lanes.iter_mut().enumerate() {
+                    let (x, y) = (lx + (k & 1), ly + (k >> 1));
+                    if x < w && y < h {
+                        *lane = winner.get(y * w + x).copied().unwrap_or((NO_PRIM, 0));
+                    }
+                }
+                let mut done = 0u8;
+                for k in 0..4 {
+                    let (p, live) = lanes[k];
+                    if p == NO_PRIM || done & (1 << k) != 0 {
+                        continue;
+                    }
+                    let mut write = 0u8;
+                    for (j, lane) in lanes.iter().enumerate() {
+                        if lane.0 == p {
+                            write |= 1 << j;
+                        }
+                    }
+                    done |= write;
+                    let Some(&prim) = prims.get(p as usize) else {
+                        continue;
+                    };
+                    let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
+                    let Some(e) = pending.get_mut(*n) else { break };
+                    self.prefetch_attrs(prim);
+                    e.set(prim, p, (qx, qy, live), write, window_z);
+                    if let Some((count, spill)) = admit(pack_colors, n, &mut used, write) {
+                        self.color_pass(&pass, fb, batch, &pending[..count])?;
+                        if spill {
+                            pending.swap(0, count);
+                        }
+                    }
+                }
+            }
+        }
+        if *n > 0 {
+            self.color_pass(&pass, fb, batch, &pending[..*n])?;
+            *n = 0;
+        }
+        Ok(())
+    }
+}
