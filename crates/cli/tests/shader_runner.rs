@@ -136,6 +136,28 @@ mod rendering {
     }
 
     #[test]
+    fn huge_rectangles_cover_every_pixel() {
+        // Clipped in f32, the cut of a rectangle reaching 10⁶ moved its
+        // left edge by pixels; a cut is now placed exactly on the plane.
+        for m in ["1e5", "1e6", "1e9", "1e20"] {
+            let text = GREEN
+                .replace(
+                    "draw rect -1 -1 2 2",
+                    &format!("draw rect -{m} -{m} 2{} 2{}", &m[1..], &m[1..]),
+                )
+                .replace("clear color 0.0 0.0 0.0 0.0", "clear color 1.0 0.0 0.0 1.0");
+            let path = script(&format!("huge-{m}"), &text);
+            let o = shaderbox(&["shader-runner", &path, "-auto", "-fbo"]);
+            assert_eq!(
+                last_line(&o),
+                r#"PIGLIT: {"result": "pass" }"#,
+                "{m}: {}",
+                stdout(&o)
+            );
+        }
+    }
+
+    #[test]
     fn later_gl_is_a_skip() {
         let path = script("glsl130", "[require]\nGLSL >= 1.30\n[test]\n");
         let o = shaderbox(&["shader-runner", &path, "-auto"]);

@@ -6,6 +6,13 @@
 //! New vertices on an edge are always computed from the inside vertex
 //! towards the outside one, so an edge shared by two primitives is cut at
 //! bit-identical points whatever the primitives' winding.
+//!
+//! Where a new vertex lies is computed in `f64` and rounded once, and a
+//! vertex made on a view-volume plane is put exactly on it: in `f32` the
+//! cut's rounding grows with the coordinates (at 10⁶ it is a sixteenth of
+//! the view volume's half-width), which moved the clipped edges of very
+//! large primitives by pixels. The carried values are interpolated in
+//! `f32` at the same parameter.
 
 /// A vertex during clipping.
 #[derive(Clone, Debug, PartialEq)]
@@ -39,6 +46,28 @@ impl Planes {
     /// Signed distance of `v` to plane `p` (inside when >= 0; NaN is outside).
     fn distance(&self, p: usize, v: &ClipVertex) -> f32 {
         self.distance_of(p, &v.pos, &v.eye)
+    }
+
+    /// [`Planes::distance`] in `f64`, for placing a cut: the sum of a
+    /// view plane's two `f32` terms is exact in `f64` for every finite
+    /// input that matters (their exponents differ by less than 29).
+    fn distance_f64(&self, p: usize, v: &ClipVertex) -> f64 {
+        let [x, y, z, w] = v.pos.map(f64::from);
+        match p {
+            0 => w + x,
+            1 => w - x,
+            2 => w + y,
+            3 => w - y,
+            4 => w + z,
+            5 => w - z,
+            _ => f64::from(self.distance(p, v)),
+        }
+    }
+
+    /// Where along `inside → outside` plane `p` cuts (0 at `inside`).
+    fn cut(&self, p: usize, inside: &ClipVertex, outside: &ClipVertex) -> f64 {
+        let (di, do_) = (self.distance_f64(p, inside), self.distance_f64(p, outside));
+        di / (di - do_)
     }
 
     /// [`Planes::distance`] of a vertex at `pos` (eye-space `eye`).
@@ -90,23 +119,36 @@ impl Planes {
         if ca | cb == 0 {
             return Some((a.clone(), b.clone()));
         }
-        // Parametric: keep t in [t0, t1] along a → b.
-        let (mut t0, mut t1) = (0.0f32, 1.0f32);
+        // Parametric: keep t in [t0, t1] along a → b, each end with the
+        // plane that set it.
+        let (mut t0, mut t1) = ((0.0f64, None), (1.0f64, None));
         for p in 0..self.count() {
             let (da, db) = (self.distance(p, a), self.distance(p, b));
             match (inside(da), inside(db)) {
                 (true, true) => {}
                 (false, false) => return None,
-                (true, false) => t1 = t1.min(da / (da - db)),
-                (false, true) => t0 = t0.max(da / (da - db)),
+                (true, false) => {
+                    let t = self.cut(p, a, b);
+                    if t < t1.0 {
+                        t1 = (t, Some(p));
+                    }
+                }
+                (false, true) => {
+                    let t = 1.0 - self.cut(p, b, a);
+                    if t > t0.0 {
+                        t0 = (t, Some(p));
+                    }
+                }
             }
         }
-        if t0.is_nan() || t1.is_nan() || t0 > t1 {
+        if t0.0.is_nan() || t1.0.is_nan() || t0.0 > t1.0 {
             return None;
         }
-        let na = if t0 > 0.0 { lerp(a, b, t0) } else { a.clone() };
-        let nb = if t1 < 1.0 { lerp(a, b, t1) } else { b.clone() };
-        Some((na, nb))
+        let end = |t: (f64, Option<usize>), at: &ClipVertex| match t.1 {
+            Some(p) => on_plane(p, lerp(a, b, t.0)),
+            None => at.clone(),
+        };
+        Some((end(t0, a), end(t1, b)))
     }
 
     /// Sutherland–Hodgman clipping of a convex polygon; returns fewer than
@@ -147,11 +189,11 @@ impl Planes {
                 if ci != ni {
                     // From the inside vertex towards the outside one.
                     let v = if ci {
-                        lerp(cur, next, dc / (dc - dn))
+                        lerp(cur, next, self.cut(p, cur, next))
                     } else {
-                        lerp(next, cur, dn / (dn - dc))
+                        lerp(next, cur, self.cut(p, next, cur))
                     };
-                    out.push(v);
+                    out.push(on_plane(p, v));
                 }
             }
             poly = out;
@@ -168,12 +210,18 @@ fn inside(d: f32) -> bool {
     d >= 0.0
 }
 
-fn lerp4(a: &[f32; 4], b: &[f32; 4], t: f32) -> [f32; 4] {
-    std::array::from_fn(|i| a[i] + t * (b[i] - a[i]))
+/// `a + t (b - a)` in `f64`, rounded once.
+fn lerp4(a: &[f32; 4], b: &[f32; 4], t: f64) -> [f32; 4] {
+    std::array::from_fn(|i| {
+        let (x, y) = (f64::from(a[i]), f64::from(b[i]));
+        (x + t * (y - x)) as f32
+    })
 }
 
-/// `a + t (b - a)` for every carried value.
-fn lerp(a: &ClipVertex, b: &ClipVertex, t: f32) -> ClipVertex {
+/// `a + t (b - a)` for every carried value: positions in `f64`, the
+/// vertex shader's outputs in `f32`.
+fn lerp(a: &ClipVertex, b: &ClipVertex, t: f64) -> ClipVertex {
+    let tf = t as f32;
     ClipVertex {
         pos: lerp4(&a.pos, &b.pos, t),
         eye: lerp4(&a.eye, &b.eye, t),
@@ -181,9 +229,25 @@ fn lerp(a: &ClipVertex, b: &ClipVertex, t: f32) -> ClipVertex {
             .data
             .iter()
             .zip(&b.data)
-            .map(|(&x, &y)| x + t * (y - x))
+            .map(|(&x, &y)| x + tf * (y - x))
             .collect(),
     }
+}
+
+/// `v`, made on plane `p`, put exactly on it when `p` is a view-volume
+/// plane (its coordinate `±w`).
+fn on_plane(p: usize, mut v: ClipVertex) -> ClipVertex {
+    let w = v.pos[3];
+    match p {
+        0 => v.pos[0] = -w,
+        1 => v.pos[0] = w,
+        2 => v.pos[1] = -w,
+        3 => v.pos[1] = w,
+        4 => v.pos[2] = -w,
+        5 => v.pos[2] = w,
+        _ => {}
+    }
+    v
 }
 
 #[cfg(test)]
@@ -267,9 +331,11 @@ mod tests {
         // Triangles (0,1,2) and (1,0,3) share edge 0-1 in opposite directions.
         let t1 = planes.clip_polygon(vec![p[0].clone(), p[1].clone(), p[2].clone()]);
         let t2 = planes.clip_polygon(vec![p[1].clone(), p[0].clone(), p[3].clone()]);
+        // The cut of edge 0-1 carries 0.4; t1's other cut on x = -w (edge
+        // 2-0) carries about 0.87.
         let on_edge = |t: &[ClipVertex]| -> Vec<[f32; 4]> {
             t.iter()
-                .filter(|c| c.pos[0] == -1.0 && c.data[0] <= 1.0)
+                .filter(|c| c.pos[0] == -1.0 && c.data[0] < 0.5)
                 .map(|c| c.pos)
                 .collect()
         };
@@ -282,5 +348,38 @@ mod tests {
     fn nan_is_outside() {
         let planes = Planes::new(&[None; 8]);
         assert!(!planes.point_inside(&v([f32::NAN, 0.0, 0.0, 1.0], 0.0)));
+    }
+
+    #[test]
+    fn huge_polygon_cut_on_the_view_planes() {
+        // A quad reaching 10⁶ in every direction: every new vertex lies on
+        // the view volume's boundary exactly, so the clipped quad is the
+        // whole view square.
+        let planes = Planes::new(&[None; 8]);
+        let big = 1.0e6;
+        let quad = vec![
+            v([-big, -big, 0.0, 1.0], 0.0),
+            v([big, -big, 0.0, 1.0], 1.0),
+            v([big, big, 0.0, 1.0], 2.0),
+            v([-big, big, 0.0, 1.0], 3.0),
+        ];
+        let out = planes.clip_polygon(quad);
+        let mut corners: Vec<[f32; 2]> = out.iter().map(|c| [c.pos[0], c.pos[1]]).collect();
+        corners.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        corners.dedup();
+        assert_eq!(
+            corners,
+            vec![[-1.0, -1.0], [-1.0, 1.0], [1.0, -1.0], [1.0, 1.0]]
+        );
+    }
+
+    #[test]
+    fn huge_line_cut_on_the_view_planes() {
+        let planes = Planes::new(&[None; 8]);
+        let a = v([-3.0e6, 0.25, 0.0, 1.0], 0.0);
+        let b = v([5.0e6, 0.25, 0.0, 1.0], 1.0);
+        let (na, nb) = planes.clip_line(&a, &b).unwrap();
+        assert_eq!((na.pos[0], nb.pos[0]), (-1.0, 1.0));
+        assert_eq!((na.pos[1], nb.pos[1]), (0.25, 0.25));
     }
 }
