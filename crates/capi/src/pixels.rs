@@ -62,7 +62,7 @@ fn with_unpack_4(c: &mut OsContext, f: impl FnOnce(&mut OsContext)) {
 /// Whether `internal` is a depth internal format.
 fn is_depth(internal: i32) -> bool {
     matches!(
-        gl::objects::base_format(internal),
+        gl::texture_format::base_format(internal),
         Some(GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL)
     )
 }
@@ -95,7 +95,7 @@ fn copy_tex_image(
     if c.gl.reject_in_begin() {
         return;
     }
-    if gl::objects::base_format(internal as i32).is_none() {
+    if gl::texture_format::base_format(internal as i32).is_none() {
         c.gl.record_error(GL_INVALID_VALUE);
         return;
     }

@@ -956,7 +956,7 @@ impl Context {
                 let fmt = f.color[a]
                     .and_then(|x| self.attachment_info(&x))
                     .map_or(0, |i| i.2);
-                if objects::is_float_format(fmt as i32) {
+                if crate::texture_format::is_float_format(fmt as i32) {
                     ColorFormat::Rgba32F
                 } else {
                     ColorFormat::Rgba8
@@ -1093,7 +1093,7 @@ impl Context {
                 {
                     let fmt = img.internal_format as i32;
                     for (d, s) in img.texels.iter_mut().zip(px) {
-                        *d = objects::texel_for(s, fmt);
+                        *d = crate::texture_format::texel_for(s, fmt);
                     }
                     t.generation += 1;
                 }
@@ -1105,7 +1105,7 @@ impl Context {
                     } else {
                         let fmt = r.internal_format as i32;
                         for (d, s) in r.texels.iter_mut().zip(px) {
-                            *d = objects::texel_for(s, fmt);
+                            *d = crate::texture_format::texel_for(s, fmt);
                         }
                     }
                 }
@@ -1217,11 +1217,11 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
-        let Some(n) = objects::format_components(format) else {
+        let Some(n) = crate::pixel_transfer::format_components(format) else {
             self.set_error(GL_INVALID_ENUM);
             return;
         };
-        let Some((px, comp)) = objects::pixel_size(format, ty) else {
+        let Some((px, comp)) = crate::pixel_transfer::pixel_size(format, ty) else {
             self.set_error(
                 if matches!(
                     ty,
@@ -1257,22 +1257,9 @@ impl Context {
         let Some(block) = self.read_block(x, y, w as u32, h as u32, what) else {
             return;
         };
-        let stride = objects::row_stride(w as usize, format, ty, self.st.pack_alignment as usize);
-        for row in 0..h as usize {
-            for col in 0..w as usize {
-                let Some(p) = block.get(row * w as usize + col) else {
-                    continue;
-                };
-                let vals = pack_components(*p, format);
-                let at = row * stride + col * px;
-                for (c, v) in vals.iter().take(n).enumerate() {
-                    let o = at + c * comp;
-                    if let Some(dst) = out.get_mut(o..o + comp) {
-                        encode(*v, ty, format == GL_STENCIL_INDEX, dst);
-                    }
-                }
-            }
-        }
+        let (w, h) = (w as usize, h as usize);
+        let align = self.st.pack_alignment as usize;
+        crate::pixel_transfer::pack_into(&block, w, h, format, ty, align, out);
     }
 
     /// glReadPixels with GL_RGBA / GL_FLOAT, as `w * h` RGBA values,
@@ -1288,100 +1275,6 @@ impl Context {
                 [f(0), f(4), f(8), f(12)]
             })
             .collect()
-    }
-}
-
-/// Packs `w * h` RGBA values (bottom row first) as `format`/`ty` rows at
-/// `align` (GL 2.1 §4.3.2's conversions, as glReadPixels).
-pub(crate) fn pack_pixels(
-    block: &[[f32; 4]],
-    w: usize,
-    h: usize,
-    format: u32,
-    ty: u32,
-    align: usize,
-) -> Vec<u8> {
-    let (Some(n), Some((px, comp))) = (
-        objects::format_components(format),
-        objects::pixel_size(format, ty),
-    ) else {
-        return Vec::new();
-    };
-    let stride = objects::row_stride(w, format, ty, align);
-    let mut out = vec![0u8; stride.saturating_mul(h)];
-    for row in 0..h {
-        for col in 0..w {
-            let Some(p) = block.get(row * w + col) else {
-                continue;
-            };
-            let vals = pack_components(*p, format);
-            let at = row * stride + col * px;
-            for (c, v) in vals.iter().take(n).enumerate() {
-                let o = at + c * comp;
-                if let Some(dst) = out.get_mut(o..o + comp) {
-                    encode(*v, ty, format == GL_STENCIL_INDEX, dst);
-                }
-            }
-        }
-    }
-    out
-}
-
-/// The components a client format takes from an RGBA (or depth/stencil in
-/// component 0) value; luminance is R + G + B (GL 2.1 §4.3.2).
-fn pack_components(p: [f32; 4], format: u32) -> Vec<f32> {
-    let [r, g, b, a] = p;
-    match format {
-        GL_RED | GL_DEPTH_COMPONENT | GL_STENCIL_INDEX => vec![r],
-        GL_GREEN => vec![g],
-        GL_BLUE => vec![b],
-        GL_ALPHA => vec![a],
-        GL_LUMINANCE => vec![(r + g + b).min(1.0)],
-        GL_LUMINANCE_ALPHA => vec![(r + g + b).min(1.0), a],
-        GL_RG => vec![r, g],
-        GL_RGB => vec![r, g, b],
-        GL_BGR => vec![b, g, r],
-        GL_BGRA => vec![b, g, r, a],
-        _ => vec![r, g, b, a],
-    }
-}
-
-/// Writes one component (GL 2.1 Table 4.7 conversions; stencil indices
-/// are written as integers).
-fn encode(v: f32, ty: u32, index: bool, dst: &mut [u8]) {
-    let unorm = |max: f64| -> u64 {
-        let c = if v > 0.0 { (v as f64).min(1.0) } else { 0.0 };
-        (c * max + 0.5).floor() as u64
-    };
-    let snorm = |max: f64| -> i64 {
-        let c = (v as f64).clamp(-1.0, 1.0);
-        let c = if v.is_nan() { 0.0 } else { c };
-        (c * max).round() as i64
-    };
-    // Little-endian bytes of the converted value, `n` of them (no
-    // allocation: this runs per component of every pixel read).
-    let mut bytes = [0u8; 8];
-    let mut put = |b: &[u8]| {
-        let n = b.len().min(8);
-        bytes[..n].copy_from_slice(&b[..n]);
-        n
-    };
-    let n = match ty {
-        GL_FLOAT => put(&v.to_le_bytes()),
-        _ if index => put(&(v as i64).to_le_bytes()).min(dst.len()),
-        GL_UNSIGNED_BYTE => put(&[unorm(255.0) as u8]),
-        GL_BYTE => put(&[snorm(127.0) as i8 as u8]),
-        GL_UNSIGNED_SHORT => put(&(unorm(65535.0) as u16).to_le_bytes()),
-        GL_SHORT => put(&(snorm(32767.0) as i16).to_le_bytes()),
-        GL_UNSIGNED_INT => put(&(unorm(4294967295.0) as u32).to_le_bytes()),
-        GL_INT => put(&(snorm(2147483647.0) as i32).to_le_bytes()),
-        _ => {
-            dst.fill(0);
-            return;
-        }
-    };
-    for (d, s) in dst.iter_mut().zip(&bytes[..n]) {
-        *d = *s;
     }
 }
 
@@ -1421,7 +1314,7 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
             match t.image(0, l) {
                 Some(i) => {
                     if l == t.params.base_level.max(0) as usize {
-                        depth_format = objects::base_format(i.internal_format as i32)
+                        depth_format = crate::texture_format::base_format(i.internal_format as i32)
                             .is_some_and(|b| matches!(b, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL));
                     }
                     levels.push(raster::Image::new(

@@ -51,19 +51,25 @@
 //! - glPushAttrib does not save texture-object parameters or hints.
 
 pub mod attrib_stack;
+pub mod buffers;
 pub mod builtins;
 pub mod debug;
 pub mod draw;
 pub mod enums;
 pub mod ff_fragment;
 pub mod ffgen;
+pub mod framebuffer;
 pub mod get;
 pub mod matrix;
+pub mod mipmap;
 pub mod objects;
 pub mod occlusion;
 pub mod pixel_path;
+pub mod pixel_transfer;
 pub mod program;
 pub mod state;
+pub mod texture_format;
+pub mod textures;
 pub mod uniform;
 pub mod vertex;
 
