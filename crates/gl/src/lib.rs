@@ -56,19 +56,25 @@ pub mod builtins;
 pub mod debug;
 pub mod draw;
 pub mod enums;
+pub mod fetch;
 pub mod ff_fragment;
 pub mod ffgen;
 pub mod framebuffer;
 pub mod get;
+pub mod kernels;
 pub mod matrix;
 pub mod mipmap;
 pub mod objects;
 pub mod occlusion;
+pub mod pipeline_state;
 pub mod pixel_path;
 pub mod pixel_transfer;
 pub mod program;
+pub mod readback;
+pub mod render_target;
 pub mod state;
 pub mod texture_format;
+pub mod texture_units;
 pub mod textures;
 pub mod uniform;
 pub mod vertex;
@@ -118,7 +124,7 @@ pub struct Context {
     pub(crate) va: vertex::VertexState,
     /// The default framebuffer.
     pub(crate) fb: raster::Framebuffer,
-    pub(crate) cache: draw::DrawCache,
+    pub(crate) cache: kernels::DrawCache,
     /// The threads draws run on ([`Context::set_threads`]).
     pub(crate) workers: raster::Workers,
     /// glPushAttrib / glPushClientAttrib stacks.
@@ -183,7 +189,7 @@ impl Context {
                 true,
                 true,
             ),
-            cache: draw::DrawCache::default(),
+            cache: kernels::DrawCache::default(),
             workers: raster::Workers::new(threads_from_env()),
             attrib_stack: Vec::new(),
             client_attrib_stack: Vec::new(),

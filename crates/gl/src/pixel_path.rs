@@ -35,8 +35,8 @@
 //! raise GL_INVALID_OPERATION; bitmaps are read most significant bit
 //! first (GL_UNPACK_LSB_FIRST is ignored).
 
-use crate::draw::Fetcher;
 use crate::enums::*;
+use crate::fetch::Fetcher;
 use crate::pixel_transfer::{bitmap_row_bytes, clamp01, pixel_size, unpack_rgba, PixelTransfer};
 use crate::Context;
 use glsl::Stage;
@@ -455,7 +455,7 @@ impl Context {
         self.raster.window[1] += ymove;
     }
 
-    fn write_fragments(&mut self, t: &mut crate::draw::Target, frags: &[PixelFragment]) {
+    fn write_fragments(&mut self, t: &mut crate::render_target::Target, frags: &[PixelFragment]) {
         let state = self.pipeline_state(t.draw_buffers);
         let n = raster::write_pixel_fragments(&mut t.fb, &state, frags);
         self.count_samples(n);
