@@ -2,7 +2,7 @@
 //! (enabled arrays in buffer objects or client memory, current values, or
 //! the glBegin/glEnd vertices), and the element indices of glDrawElements.
 //!
-//! Contract: [`Fetcher`] is raster's [`raster::VertexFetch`]; in a draw
+//! Contract: `Fetcher` is raster's [`raster::VertexFetch`]; in a draw
 //! from arrays each input's source is resolved once per draw, so the
 //! per-vertex read is a bounds-checked load. Reads past the end of an
 //! array give (0, 0, 0, 1); indices past the end of the index data are

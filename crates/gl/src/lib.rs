@@ -40,6 +40,27 @@
 //!   bytes (reads and writes of the buffer store through
 //!   [`Context::get_buffer_sub_data`] / [`Context::buffer_sub_data`]).
 //!
+//! ## Modules
+//! One job each; the [`Context`] entry points live with their job.
+//! - Objects: [`objects`] (the tables, glGen* names), [`buffers`],
+//!   [`textures`] (glTex*, texture queries), [`mipmap`],
+//!   [`texture_format`] (internal formats, stored texels),
+//!   [`framebuffer`] (renderbuffers, FBOs, completeness, draw/read
+//!   buffers).
+//! - Client images: [`pixel_transfer`] (layout, unpack, pack, scale and
+//!   bias), [`readback`] (glReadPixels), [`pixel_path`] (raster position,
+//!   glDrawPixels, glBitmap, glCopyPixels).
+//! - Shaders: [`program`], [`uniform`], [`builtins`] (the `gl_*`
+//!   uniforms), [`ffgen`] (fixed-function stages as GLSL).
+//! - State: [`state`] (the fixed-function state, capabilities),
+//!   [`transform`], [`shading`], [`rasterization`], [`per_fragment`],
+//!   [`vertex`] (arrays, current values, glBegin/glEnd), [`matrix`],
+//!   [`attrib_stack`], [`get`] (glGet*), [`occlusion`].
+//! - A draw: [`draw`] (the calls, glClear) puts together [`kernels`],
+//!   [`fetch`], [`pipeline_state`], [`texture_units`] and
+//!   [`render_target`], with [`ff_fragment`] for the fixed-function
+//!   fragment stage and [`debug`] for probes.
+//!
 //! ## Limitations
 //! - No display lists (a C layer records them), selection/feedback,
 //!   accumulation buffer, color index mode, evaluators.

@@ -92,6 +92,14 @@ fn format_bits(internal: i32) -> Option<u32> {
     }
 }
 
+/// True for depth and depth-stencil internal formats.
+pub fn is_depth_format(internal: i32) -> bool {
+    matches!(
+        base_format(internal),
+        Some(GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL)
+    )
+}
+
 /// True for formats whose texels are not clamped to [0, 1].
 pub fn is_float_format(internal: i32) -> bool {
     format_bits(internal).is_none() && base_format(internal) != Some(GL_DEPTH_COMPONENT)

@@ -9,6 +9,7 @@
 use crate::enums::*;
 use crate::objects;
 use crate::pipeline_state::compare_func;
+use crate::texture_format::is_depth_format;
 use crate::Context;
 use std::sync::Arc;
 
@@ -88,8 +89,7 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
             match t.image(0, l) {
                 Some(i) => {
                     if l == t.params.base_level.max(0) as usize {
-                        depth_format = crate::texture_format::base_format(i.internal_format as i32)
-                            .is_some_and(|b| matches!(b, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL));
+                        depth_format = is_depth_format(i.internal_format as i32);
                     }
                     levels.push(raster::Image::new(
                         i.width as u32,

@@ -16,7 +16,7 @@ use crate::objects::{
     gen_names, image_target, set_image, target_index, Attachment, Image, TextureObj, MAX_LEVELS,
 };
 use crate::pixel_transfer::{format_components, pack_pixels, pixel_size, unpack_image};
-use crate::texture_format::base_format;
+use crate::texture_format::{base_format, is_depth_format};
 use crate::{Context, MAX_TEXTURE_SIZE};
 
 fn valid_filter(f: u32, min: bool) -> bool {
@@ -669,8 +669,7 @@ impl Context {
             return Vec::new();
         };
         let base = base_format(img.internal_format as i32).unwrap_or(GL_RGBA);
-        let is_depth = matches!(base, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL);
-        if is_depth != (format == GL_DEPTH_COMPONENT) {
+        if is_depth_format(img.internal_format as i32) != (format == GL_DEPTH_COMPONENT) {
             self.set_error(GL_INVALID_OPERATION);
             return Vec::new();
         }
