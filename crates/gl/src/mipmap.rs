@@ -2,8 +2,9 @@
 //!
 //! Contract: levels base+1 down to 1x1(x1) are rebuilt from the base level
 //! by averaging 2x2(x2) blocks (a dimension already 1 is not halved), then
-//! re-quantized to the internal format; nothing happens without a base
-//! image.
+//! re-quantized to the internal format (depth values are kept as
+//! averaged), at most down to level [`crate::objects`]' `MAX_LEVELS`;
+//! nothing happens without a base image.
 
 use crate::enums::*;
 use crate::objects::{set_image, Image, TextureObj, MAX_LEVELS};

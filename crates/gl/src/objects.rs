@@ -304,6 +304,8 @@ impl Default for FramebufferObj {
     }
 }
 
+/// Stores `img` as level `level` of face `face` (growing the tables) and
+/// bumps the texture's generation.
 pub(crate) fn set_image(tex: &mut TextureObj, face: usize, level: usize, img: Image) {
     if tex.faces.len() <= face {
         tex.faces.resize(face + 1, Vec::new());
