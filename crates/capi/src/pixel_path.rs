@@ -10,7 +10,7 @@ use crate::context::{with_ctx, OsContext};
 use crate::entry::{gl_entry_points, image_bytes, rd, record_vector};
 use crate::types::*;
 use gl::enums::*;
-use gl::pixel_path::PixelTransfer;
+use gl::pixel_transfer::PixelTransfer;
 use std::ffi::c_void;
 
 /// Most bytes a glBitmap image may have.
@@ -62,7 +62,7 @@ unsafe fn bitmap_bytes(
     if (data.is_null() && pbo == 0) || w <= 0 || h <= 0 {
         return Ok(None);
     }
-    let row = gl::pixel_path::bitmap_row_bytes(w as usize, align);
+    let row = gl::pixel_transfer::bitmap_row_bytes(w as usize, align);
     let Some(len) = row
         .checked_mul(h as usize)
         .filter(|&n| n <= MAX_BITMAP_BYTES)

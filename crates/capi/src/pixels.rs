@@ -59,14 +59,6 @@ fn with_unpack_4(c: &mut OsContext, f: impl FnOnce(&mut OsContext)) {
     c.gl.record_error(before);
 }
 
-/// Whether `internal` is a depth internal format.
-fn is_depth(internal: i32) -> bool {
-    matches!(
-        gl::objects::base_format(internal),
-        Some(GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL)
-    )
-}
-
 /// The internal format of the image a sub-image copy targets (None: an
 /// error was recorded, or no image).
 fn target_format(c: &mut OsContext, target: u32, level: i32) -> Option<i32> {
@@ -95,7 +87,7 @@ fn copy_tex_image(
     if c.gl.reject_in_begin() {
         return;
     }
-    if gl::objects::base_format(internal as i32).is_none() {
+    if gl::texture_format::base_format(internal as i32).is_none() {
         c.gl.record_error(GL_INVALID_VALUE);
         return;
     }
@@ -103,7 +95,7 @@ fn copy_tex_image(
         c.gl.record_error(GL_INVALID_VALUE);
         return;
     }
-    let format = if is_depth(internal as i32) {
+    let format = if gl::texture_format::is_depth_format(internal as i32) {
         GL_DEPTH_COMPONENT
     } else {
         GL_RGBA
@@ -158,7 +150,7 @@ fn copy_tex_sub_image(
     let Some(internal) = target_format(c, target, level) else {
         return;
     };
-    let format = if is_depth(internal) {
+    let format = if gl::texture_format::is_depth_format(internal) {
         GL_DEPTH_COMPONENT
     } else {
         GL_RGBA

@@ -22,7 +22,7 @@
 //! sum (§3.9) and fog (§3.10).
 
 use crate::enums::*;
-use crate::objects::base_format;
+use crate::texture_format::base_format;
 use crate::Context;
 use std::fmt::Write;
 

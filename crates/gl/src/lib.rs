@@ -40,6 +40,27 @@
 //!   bytes (reads and writes of the buffer store through
 //!   [`Context::get_buffer_sub_data`] / [`Context::buffer_sub_data`]).
 //!
+//! ## Modules
+//! One job each; the [`Context`] entry points live with their job.
+//! - Objects: [`objects`] (the tables, glGen* names), [`buffers`],
+//!   [`textures`] (glTex*, texture queries), [`mipmap`],
+//!   [`texture_format`] (internal formats, stored texels),
+//!   [`framebuffer`] (renderbuffers, FBOs, completeness, draw/read
+//!   buffers).
+//! - Client images: [`pixel_transfer`] (layout, unpack, pack, scale and
+//!   bias), [`readback`] (glReadPixels), [`pixel_path`] (raster position,
+//!   glDrawPixels, glBitmap, glCopyPixels).
+//! - Shaders: [`program`], [`uniform`], [`builtins`] (the `gl_*`
+//!   uniforms), [`ffgen`] (fixed-function stages as GLSL).
+//! - State: [`state`] (the fixed-function state, capabilities),
+//!   [`transform`], [`shading`], [`rasterization`], [`per_fragment`],
+//!   [`vertex`] (arrays, current values, glBegin/glEnd), [`matrix`],
+//!   [`attrib_stack`], [`get`] (glGet*), [`occlusion`].
+//! - A draw: [`draw`] (the calls, glClear) puts together [`kernels`],
+//!   [`fetch`], [`pipeline_state`], [`texture_units`] and
+//!   [`render_target`], with [`ff_fragment`] for the fixed-function
+//!   fragment stage and [`debug`] for probes.
+//!
 //! ## Limitations
 //! - No display lists (a C layer records them), selection/feedback,
 //!   accumulation buffer, color index mode, evaluators.
@@ -51,19 +72,35 @@
 //! - glPushAttrib does not save texture-object parameters or hints.
 
 pub mod attrib_stack;
+pub mod buffers;
 pub mod builtins;
 pub mod debug;
 pub mod draw;
 pub mod enums;
+pub mod fetch;
 pub mod ff_fragment;
 pub mod ffgen;
+pub mod framebuffer;
 pub mod get;
+pub mod kernels;
 pub mod matrix;
+pub mod mipmap;
 pub mod objects;
 pub mod occlusion;
+pub mod per_fragment;
+pub mod pipeline_state;
 pub mod pixel_path;
+pub mod pixel_transfer;
 pub mod program;
+pub mod rasterization;
+pub mod readback;
+pub mod render_target;
+pub mod shading;
 pub mod state;
+pub mod texture_format;
+pub mod texture_units;
+pub mod textures;
+pub mod transform;
 pub mod uniform;
 pub mod vertex;
 
@@ -112,7 +149,7 @@ pub struct Context {
     pub(crate) va: vertex::VertexState,
     /// The default framebuffer.
     pub(crate) fb: raster::Framebuffer,
-    pub(crate) cache: draw::DrawCache,
+    pub(crate) cache: kernels::DrawCache,
     /// The threads draws run on ([`Context::set_threads`]).
     pub(crate) workers: raster::Workers,
     /// glPushAttrib / glPushClientAttrib stacks.
@@ -177,7 +214,7 @@ impl Context {
                 true,
                 true,
             ),
-            cache: draw::DrawCache::default(),
+            cache: kernels::DrawCache::default(),
             workers: raster::Workers::new(threads_from_env()),
             attrib_stack: Vec::new(),
             client_attrib_stack: Vec::new(),

@@ -35,9 +35,9 @@
 //! raise GL_INVALID_OPERATION; bitmaps are read most significant bit
 //! first (GL_UNPACK_LSB_FIRST is ignored).
 
-use crate::draw::Fetcher;
 use crate::enums::*;
-use crate::objects;
+use crate::fetch::Fetcher;
+use crate::pixel_transfer::{bitmap_row_bytes, clamp01, pixel_size, unpack_rgba, PixelTransfer};
 use crate::Context;
 use glsl::Stage;
 use raster::PixelFragment;
@@ -67,63 +67,6 @@ impl Default for RasterPos {
     }
 }
 
-/// The pixel transfer state that applies to pixel rectangles (kept by the
-/// caller, e.g. a C layer that stores glPixelTransfer and glPixelZoom).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PixelTransfer {
-    /// GL_RED_SCALE .. GL_ALPHA_SCALE and GL_RED_BIAS .. GL_ALPHA_BIAS.
-    pub scale: [f32; 4],
-    pub bias: [f32; 4],
-    pub depth_scale: f32,
-    pub depth_bias: f32,
-    /// GL_INDEX_SHIFT / GL_INDEX_OFFSET (stencil indices).
-    pub index_shift: i32,
-    pub index_offset: i32,
-    /// glPixelZoom.
-    pub zoom: (f32, f32),
-}
-
-impl Default for PixelTransfer {
-    fn default() -> Self {
-        PixelTransfer {
-            scale: [1.0; 4],
-            bias: [0.0; 4],
-            depth_scale: 1.0,
-            depth_bias: 0.0,
-            index_shift: 0,
-            index_offset: 0,
-            zoom: (1.0, 1.0),
-        }
-    }
-}
-
-fn clamp01(x: f32) -> f32 {
-    if x > 0.0 {
-        x.min(1.0)
-    } else {
-        0.0
-    }
-}
-
-impl PixelTransfer {
-    fn color(&self, c: [f32; 4]) -> [f32; 4] {
-        std::array::from_fn(|i| clamp01(c[i] * self.scale[i] + self.bias[i]))
-    }
-
-    fn depth(&self, d: f32) -> f32 {
-        clamp01(d * self.depth_scale + self.depth_bias)
-    }
-
-    fn index(&self, s: i64) -> u8 {
-        let shifted = if self.index_shift >= 0 {
-            s.checked_shl(self.index_shift.min(62) as u32).unwrap_or(0)
-        } else {
-            s >> (-(self.index_shift as i64)).min(63)
-        };
-        (shifted.wrapping_add(self.index_offset as i64) & 0xff) as u8
-    }
-}
-
 /// A rectangle of pixel values ready to draw.
 enum Block {
     Color(Vec<[f32; 4]>),
@@ -138,13 +81,6 @@ fn covered(a: f64, b: f64, limit: u32) -> std::ops::Range<u32> {
     let first = (lo - 0.5).ceil().clamp(0.0, limit as f64) as u32;
     let end = (hi - 0.5).ceil().clamp(0.0, limit as f64) as u32;
     first..end.max(first)
-}
-
-/// Bytes per row of a glBitmap image (GL 2.1 §3.6.4 with one bit per
-/// pixel) at `alignment`.
-pub fn bitmap_row_bytes(width: usize, alignment: usize) -> usize {
-    let a = alignment.max(1);
-    width.div_ceil(8).div_ceil(a).saturating_mul(a)
 }
 
 impl Context {
@@ -298,8 +234,8 @@ impl Context {
                 | GL_LUMINANCE_ALPHA
         );
         let known_type = ty == GL_BITMAP
-            || objects::pixel_size(GL_RGBA, ty).is_some()
-            || objects::pixel_size(GL_RGB, ty).is_some();
+            || pixel_size(GL_RGBA, ty).is_some()
+            || pixel_size(GL_RGB, ty).is_some();
         if !known_format || !known_type {
             self.set_error(GL_INVALID_ENUM);
             return false;
@@ -308,7 +244,7 @@ impl Context {
             self.set_error(GL_INVALID_ENUM);
             return false;
         }
-        if objects::pixel_size(format, ty).is_none() || format == GL_COLOR_INDEX {
+        if pixel_size(format, ty).is_none() || format == GL_COLOR_INDEX {
             // Packed types with the wrong component count; color-index
             // and bitmap data (not implemented).
             self.set_error(GL_INVALID_OPERATION);
@@ -370,7 +306,7 @@ impl Context {
         }
         let Some(data) = data else { return };
         let (wu, hu) = (w as usize, h as usize);
-        let px = objects::unpack_rgba(data, wu, hu, format, ty, alignment.max(1));
+        let px = unpack_rgba(data, wu, hu, format, ty, alignment.max(1));
         let block = match format {
             GL_DEPTH_COMPONENT => Block::Depth(px.iter().map(|p| transfer.depth(p[0])).collect()),
             GL_STENCIL_INDEX => {
@@ -519,7 +455,7 @@ impl Context {
         self.raster.window[1] += ymove;
     }
 
-    fn write_fragments(&mut self, t: &mut crate::draw::Target, frags: &[PixelFragment]) {
+    fn write_fragments(&mut self, t: &mut crate::render_target::Target, frags: &[PixelFragment]) {
         let state = self.pipeline_state(t.draw_buffers);
         let n = raster::write_pixel_fragments(&mut t.fb, &state, frags);
         self.count_samples(n);

@@ -65,7 +65,7 @@ pub struct Executable {
     pub uniforms: UniformTable,
     pub attribs: Vec<AttribInfo>,
     /// Lowered stages, built at link time; see [`crate::draw`].
-    pub kernels: crate::draw::Kernels,
+    pub kernels: crate::kernels::Kernels,
     /// The compiled shader objects linked, in attachment order (the
     /// debugger maps source spans back to their text).
     pub shaders: Vec<Arc<glsl::Shader>>,
@@ -759,7 +759,7 @@ fn build_executable(
     let modules: Vec<&Module> = program.stages.iter().map(|s| &s.module).collect();
     let uniforms = UniformTable::build(&modules);
     let attribs = assign_attribs(&program, bindings)?;
-    let kernels = crate::draw::Kernels::new(&program)?;
+    let kernels = crate::kernels::Kernels::new(&program)?;
     Ok(Executable {
         program,
         uniforms,

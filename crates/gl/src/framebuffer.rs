@@ -1,0 +1,578 @@
+//! Renderbuffer and framebuffer objects (EXT/ARB_framebuffer_object):
+//! their names and storage, attachments, completeness
+//! (glCheckFramebufferStatus) and the draw/read buffer selection
+//! (glDrawBuffers, glDrawBuffer, glReadBuffer).
+//!
+//! Contract: completeness follows EXT_framebuffer_object §4.4.4 (color
+//! attachments must be RGB/RGBA/RED/RG; ALPHA, LUMINANCE and INTENSITY are
+//! GL_FRAMEBUFFER_UNSUPPORTED); a draw, clear or read on an incomplete
+//! framebuffer is GL_INVALID_FRAMEBUFFER_OPERATION. How attached images
+//! become a render target is [`crate::render_target`]'s job.
+
+use crate::enums::*;
+use crate::objects::{
+    gen_names, image_target, Attachment, FramebufferObj, RenderbufferObj, MAX_LEVELS,
+};
+use crate::texture_format::base_format;
+use crate::{Context, MAX_TEXTURE_SIZE};
+
+impl Context {
+    // ---- renderbuffers ----
+
+    /// glGenRenderbuffers(EXT).
+    pub fn gen_renderbuffers(&mut self, n: i32) -> Vec<u32> {
+        let Some(n) = self.gen_count(n) else {
+            return Vec::new();
+        };
+        let o = &mut self.objects;
+        gen_names(
+            &mut o.renderbuffers,
+            &mut o.next_renderbuffer,
+            n,
+            RenderbufferObj::default,
+        )
+    }
+
+    /// glGenRenderbuffersEXT.
+    pub fn gen_renderbuffers_ext(&mut self, n: i32) -> Vec<u32> {
+        self.gen_renderbuffers(n)
+    }
+
+    /// glBindRenderbuffer(EXT).
+    pub fn bind_renderbuffer(&mut self, target: u32, rb: u32) {
+        if target != GL_RENDERBUFFER {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        if rb != 0 {
+            self.objects.renderbuffers.entry(rb).or_default();
+        }
+        self.objects.bound_renderbuffer = rb;
+    }
+
+    /// glBindRenderbufferEXT.
+    pub fn bind_renderbuffer_ext(&mut self, target: u32, rb: u32) {
+        self.bind_renderbuffer(target, rb);
+    }
+
+    /// glDeleteRenderbuffers(EXT).
+    pub fn delete_renderbuffers(&mut self, names: &[u32]) {
+        for &r in names {
+            if r == 0 {
+                continue;
+            }
+            self.objects.renderbuffers.remove(&r);
+            if self.objects.bound_renderbuffer == r {
+                self.objects.bound_renderbuffer = 0;
+            }
+        }
+    }
+
+    /// glRenderbufferStorage(EXT).
+    pub fn renderbuffer_storage(&mut self, target: u32, internal: u32, w: i32, h: i32) {
+        if target != GL_RENDERBUFFER {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        let ok_format = base_format(internal as i32).is_some()
+            || matches!(
+                internal,
+                GL_STENCIL_INDEX8
+                    | GL_STENCIL_INDEX
+                    | GL_STENCIL_INDEX1
+                    | GL_STENCIL_INDEX4
+                    | GL_STENCIL_INDEX16
+            );
+        if !ok_format {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        if !(0..=MAX_TEXTURE_SIZE).contains(&w) || !(0..=MAX_TEXTURE_SIZE).contains(&h) {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        let rb = self.objects.bound_renderbuffer;
+        let Some(r) = self.objects.renderbuffers.get_mut(&rb).filter(|_| rb != 0) else {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        };
+        let n = w as usize * h as usize;
+        *r = RenderbufferObj {
+            internal_format: internal,
+            width: w,
+            height: h,
+            texels: vec![[0.0, 0.0, 0.0, 0.0]; n],
+            stencil: vec![0; n],
+        };
+    }
+
+    /// glRenderbufferStorageEXT.
+    pub fn renderbuffer_storage_ext(&mut self, target: u32, internal: u32, w: i32, h: i32) {
+        self.renderbuffer_storage(target, internal, w, h);
+    }
+
+    // ---- framebuffers ----
+
+    /// glGenFramebuffers(EXT).
+    pub fn gen_framebuffers(&mut self, n: i32) -> Vec<u32> {
+        let Some(n) = self.gen_count(n) else {
+            return Vec::new();
+        };
+        let o = &mut self.objects;
+        gen_names(
+            &mut o.framebuffers,
+            &mut o.next_framebuffer,
+            n,
+            FramebufferObj::new,
+        )
+    }
+
+    /// glGenFramebuffersEXT.
+    pub fn gen_framebuffers_ext(&mut self, n: i32) -> Vec<u32> {
+        self.gen_framebuffers(n)
+    }
+
+    /// glBindFramebuffer(EXT).
+    pub fn bind_framebuffer(&mut self, target: u32, fb: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if !matches!(
+            target,
+            GL_FRAMEBUFFER | GL_DRAW_FRAMEBUFFER | GL_READ_FRAMEBUFFER
+        ) {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        if fb != 0 {
+            self.objects.framebuffers.entry(fb).or_default();
+        }
+        if target != GL_READ_FRAMEBUFFER {
+            self.objects.draw_framebuffer = fb;
+        }
+        if target != GL_DRAW_FRAMEBUFFER {
+            self.objects.read_framebuffer = fb;
+        }
+    }
+
+    /// glBindFramebufferEXT.
+    pub fn bind_framebuffer_ext(&mut self, target: u32, fb: u32) {
+        self.bind_framebuffer(target, fb);
+    }
+
+    /// glDeleteFramebuffers(EXT): bindings revert to the default framebuffer.
+    pub fn delete_framebuffers(&mut self, names: &[u32]) {
+        for &f in names {
+            if f == 0 {
+                continue;
+            }
+            self.objects.framebuffers.remove(&f);
+            if self.objects.draw_framebuffer == f {
+                self.objects.draw_framebuffer = 0;
+            }
+            if self.objects.read_framebuffer == f {
+                self.objects.read_framebuffer = 0;
+            }
+        }
+    }
+
+    /// glIsFramebuffer.
+    pub fn is_framebuffer(&self, name: u32) -> bool {
+        name != 0 && self.objects.framebuffers.contains_key(&name)
+    }
+
+    fn attachment_slot(&mut self, target: u32, attachment: u32) -> Option<u32> {
+        if !matches!(
+            target,
+            GL_FRAMEBUFFER | GL_DRAW_FRAMEBUFFER | GL_READ_FRAMEBUFFER
+        ) {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        }
+        let fb = if target == GL_READ_FRAMEBUFFER {
+            self.objects.read_framebuffer
+        } else {
+            self.objects.draw_framebuffer
+        };
+        if fb == 0 {
+            self.set_error(GL_INVALID_OPERATION);
+            return None;
+        }
+        let ok = (GL_COLOR_ATTACHMENT0..GL_COLOR_ATTACHMENT0 + crate::MAX_DRAW_BUFFERS as u32)
+            .contains(&attachment)
+            || matches!(
+                attachment,
+                GL_DEPTH_ATTACHMENT | GL_STENCIL_ATTACHMENT | GL_DEPTH_STENCIL_ATTACHMENT
+            );
+        if !ok {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        }
+        Some(fb)
+    }
+
+    fn set_attachment(&mut self, fb: u32, attachment: u32, a: Option<Attachment>) {
+        let Some(f) = self.objects.framebuffers.get_mut(&fb) else {
+            return;
+        };
+        match attachment {
+            GL_DEPTH_ATTACHMENT => f.depth = a,
+            GL_STENCIL_ATTACHMENT => f.stencil = a,
+            GL_DEPTH_STENCIL_ATTACHMENT => {
+                f.depth = a;
+                f.stencil = a;
+            }
+            _ => {
+                if let Some(c) = f
+                    .color
+                    .get_mut(attachment.wrapping_sub(GL_COLOR_ATTACHMENT0) as usize)
+                {
+                    *c = a;
+                }
+            }
+        }
+    }
+
+    /// glFramebufferTexture2D(EXT).
+    pub fn framebuffer_texture_2d(
+        &mut self,
+        target: u32,
+        attachment: u32,
+        textarget: u32,
+        texture: u32,
+        level: i32,
+    ) {
+        let Some(fb) = self.attachment_slot(target, attachment) else {
+            return;
+        };
+        if texture == 0 {
+            self.set_attachment(fb, attachment, None);
+            return;
+        }
+        let Some((bind, face)) = image_target(textarget, 2).or_else(|| image_target(textarget, 1))
+        else {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        };
+        let tex_target = self.objects.textures.get(&texture).map(|t| t.target);
+        match tex_target {
+            None => {
+                self.set_error(GL_INVALID_OPERATION);
+                return;
+            }
+            Some(t) if t != bind => {
+                self.set_error(GL_INVALID_OPERATION);
+                return;
+            }
+            _ => {}
+        }
+        if !(0..MAX_LEVELS).contains(&level) {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.set_attachment(
+            fb,
+            attachment,
+            Some(Attachment::Texture {
+                texture,
+                face: face as u32,
+                level,
+                zoffset: 0,
+            }),
+        );
+    }
+
+    /// glFramebufferTexture2DEXT.
+    pub fn framebuffer_texture_2d_ext(
+        &mut self,
+        target: u32,
+        attachment: u32,
+        textarget: u32,
+        texture: u32,
+        level: i32,
+    ) {
+        self.framebuffer_texture_2d(target, attachment, textarget, texture, level);
+    }
+
+    /// glFramebufferTexture1D(EXT).
+    pub fn framebuffer_texture_1d(
+        &mut self,
+        target: u32,
+        attachment: u32,
+        textarget: u32,
+        texture: u32,
+        level: i32,
+    ) {
+        self.framebuffer_texture_2d(target, attachment, textarget, texture, level);
+    }
+
+    /// glFramebufferRenderbuffer(EXT).
+    pub fn framebuffer_renderbuffer(
+        &mut self,
+        target: u32,
+        attachment: u32,
+        rbtarget: u32,
+        rb: u32,
+    ) {
+        let Some(fb) = self.attachment_slot(target, attachment) else {
+            return;
+        };
+        if rbtarget != GL_RENDERBUFFER {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        if rb != 0 && !self.objects.renderbuffers.contains_key(&rb) {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
+        let a = (rb != 0).then_some(Attachment::Renderbuffer(rb));
+        self.set_attachment(fb, attachment, a);
+    }
+
+    /// glFramebufferRenderbufferEXT.
+    pub fn framebuffer_renderbuffer_ext(
+        &mut self,
+        target: u32,
+        attachment: u32,
+        rbtarget: u32,
+        rb: u32,
+    ) {
+        self.framebuffer_renderbuffer(target, attachment, rbtarget, rb);
+    }
+
+    /// Size and internal format of an attachment's image.
+    pub(crate) fn attachment_info(&self, a: &Attachment) -> Option<(i32, i32, u32)> {
+        match *a {
+            Attachment::Texture {
+                texture,
+                face,
+                level,
+                ..
+            } => {
+                let img = self
+                    .objects
+                    .textures
+                    .get(&texture)?
+                    .image(face as usize, level as usize)?;
+                Some((img.width, img.height, img.internal_format))
+            }
+            Attachment::Renderbuffer(rb) => {
+                let r = self.objects.renderbuffers.get(&rb)?;
+                Some((r.width, r.height, r.internal_format))
+            }
+        }
+    }
+
+    /// Completeness of a framebuffer object (EXT_framebuffer_object §4.4.4).
+    pub(crate) fn framebuffer_status(&self, fb: u32) -> u32 {
+        if fb == 0 {
+            return GL_FRAMEBUFFER_COMPLETE;
+        }
+        let Some(f) = self.objects.framebuffers.get(&fb) else {
+            return GL_FRAMEBUFFER_UNSUPPORTED;
+        };
+        let mut sizes = Vec::new();
+        for c in f.color.iter().flatten() {
+            let Some((w, h, fmt)) = self.attachment_info(c) else {
+                return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+            };
+            if w == 0 || h == 0 {
+                return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+            }
+            match base_format(fmt as i32) {
+                Some(GL_RGB | GL_RGBA | GL_RED | GL_RG) => {}
+                Some(GL_ALPHA | GL_LUMINANCE | GL_LUMINANCE_ALPHA | GL_INTENSITY) => {
+                    return GL_FRAMEBUFFER_UNSUPPORTED
+                }
+                _ => return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT,
+            }
+            sizes.push((w, h));
+        }
+        for (a, want_depth) in [(&f.depth, true), (&f.stencil, false)] {
+            let Some(a) = a else { continue };
+            let Some((w, h, fmt)) = self.attachment_info(a) else {
+                return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+            };
+            if w == 0 || h == 0 {
+                return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+            }
+            let base = base_format(fmt as i32);
+            let ok = if want_depth {
+                matches!(base, Some(GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL))
+            } else {
+                base == Some(GL_DEPTH_STENCIL)
+                    || matches!(
+                        fmt,
+                        GL_STENCIL_INDEX8
+                            | GL_STENCIL_INDEX
+                            | GL_STENCIL_INDEX1
+                            | GL_STENCIL_INDEX4
+                            | GL_STENCIL_INDEX16
+                    )
+            };
+            if !ok {
+                return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+            }
+            sizes.push((w, h));
+        }
+        if sizes.is_empty() {
+            return GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT;
+        }
+        if sizes.iter().any(|s| *s != sizes[0]) {
+            return GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT;
+        }
+        for &db in &f.draw_buffers {
+            if db != GL_NONE {
+                let i = db.wrapping_sub(GL_COLOR_ATTACHMENT0) as usize;
+                if f.color.get(i).is_none_or(|c| c.is_none()) {
+                    return GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
+                }
+            }
+        }
+        GL_FRAMEBUFFER_COMPLETE
+    }
+
+    /// glCheckFramebufferStatus(EXT).
+    pub fn check_framebuffer_status(&mut self, target: u32) -> u32 {
+        let fb = match target {
+            GL_FRAMEBUFFER | GL_DRAW_FRAMEBUFFER => self.objects.draw_framebuffer,
+            GL_READ_FRAMEBUFFER => self.objects.read_framebuffer,
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return 0;
+            }
+        };
+        self.framebuffer_status(fb)
+    }
+
+    /// glCheckFramebufferStatusEXT.
+    pub fn check_framebuffer_status_ext(&mut self, target: u32) -> u32 {
+        self.check_framebuffer_status(target)
+    }
+
+    /// glDrawBuffers.
+    pub fn draw_buffers(&mut self, bufs: &[u32]) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if bufs.len() > crate::MAX_DRAW_BUFFERS {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        let fb = self.objects.draw_framebuffer;
+        for (i, &b) in bufs.iter().enumerate() {
+            let ok = if fb == 0 {
+                matches!(
+                    b,
+                    GL_NONE
+                        | GL_FRONT_LEFT
+                        | GL_BACK_LEFT
+                        | GL_FRONT
+                        | GL_BACK
+                        | GL_LEFT
+                        | GL_FRONT_AND_BACK
+                )
+            } else {
+                b == GL_NONE
+                    || (GL_COLOR_ATTACHMENT0..GL_COLOR_ATTACHMENT0 + crate::MAX_DRAW_BUFFERS as u32)
+                        .contains(&b)
+            };
+            if !ok {
+                self.set_error(GL_INVALID_ENUM);
+                return;
+            }
+            if bufs[..i].contains(&b) && b != GL_NONE {
+                self.set_error(GL_INVALID_OPERATION);
+                return;
+            }
+        }
+        if fb == 0 {
+            self.st.draw_buffers = bufs.to_vec();
+        } else if let Some(f) = self.objects.framebuffers.get_mut(&fb) {
+            f.draw_buffers = bufs.to_vec();
+        }
+    }
+
+    /// glDrawBuffer.
+    pub fn draw_buffer(&mut self, buf: u32) {
+        let fb = self.objects.draw_framebuffer;
+        if fb == 0
+            && !matches!(
+                buf,
+                GL_NONE
+                    | GL_FRONT_LEFT
+                    | GL_BACK_LEFT
+                    | GL_FRONT
+                    | GL_BACK
+                    | GL_LEFT
+                    | GL_FRONT_AND_BACK
+            )
+        {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        self.draw_buffers(&[buf]);
+    }
+
+    /// glReadBuffer.
+    pub fn read_buffer(&mut self, buf: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        let fb = self.objects.read_framebuffer;
+        if fb == 0 {
+            self.st.read_buffer = buf;
+        } else if let Some(f) = self.objects.framebuffers.get_mut(&fb) {
+            f.read_buffer = buf;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn framebuffer_completeness() {
+        let mut ctx = Context::new(4, 4);
+        let fb = ctx.gen_framebuffers(1)[0];
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+        assert_eq!(
+            ctx.check_framebuffer_status(GL_FRAMEBUFFER),
+            GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT
+        );
+        let t = ctx.gen_textures(1)[0];
+        ctx.bind_texture(GL_TEXTURE_2D, t);
+        ctx.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA as i32,
+            8,
+            8,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            None,
+        );
+        ctx.framebuffer_texture_2d(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t, 0);
+        assert_eq!(
+            ctx.check_framebuffer_status(GL_FRAMEBUFFER),
+            GL_FRAMEBUFFER_COMPLETE
+        );
+        let rb = ctx.gen_renderbuffers(1)[0];
+        ctx.bind_renderbuffer(GL_RENDERBUFFER, rb);
+        ctx.renderbuffer_storage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, 4, 4);
+        ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb);
+        assert_eq!(
+            ctx.check_framebuffer_status(GL_FRAMEBUFFER),
+            GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT
+        );
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, 0);
+        ctx.framebuffer_texture_2d(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t, 0);
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        assert_eq!(
+            ctx.check_framebuffer_status(GL_FRAMEBUFFER),
+            GL_FRAMEBUFFER_COMPLETE
+        );
+    }
+}

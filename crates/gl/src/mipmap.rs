@@ -1,0 +1,118 @@
+//! Mipmap generation (GL 2.1 §3.8.8 GENERATE_MIPMAP; glGenerateMipmap).
+//!
+//! Contract: levels base+1 down to 1x1(x1) are rebuilt from the base level
+//! by averaging 2x2(x2) blocks (a dimension already 1 is not halved), then
+//! re-quantized to the internal format (depth values are kept as
+//! averaged), at most down to level [`crate::objects`]' `MAX_LEVELS`;
+//! nothing happens without a base image.
+
+use crate::enums::*;
+use crate::objects::{set_image, Image, TextureObj, MAX_LEVELS};
+use crate::texture_format::texel_for_stored;
+use crate::Context;
+
+impl Context {
+    /// glGenerateMipmap / glGenerateMipmapEXT: box-filtered levels down to
+    /// 1x1 from the base level.
+    pub fn generate_mipmap(&mut self, target: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if !matches!(
+            target,
+            GL_TEXTURE_1D | GL_TEXTURE_2D | GL_TEXTURE_3D | GL_TEXTURE_CUBE_MAP
+        ) {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        let unit = self.st.active_texture as usize;
+        if let Some(tex) = self.objects.bound_texture_mut(unit, target) {
+            for face in 0..tex.faces.len() {
+                generate_mipmaps(tex, face);
+            }
+        }
+    }
+
+    /// glGenerateMipmapEXT.
+    pub fn generate_mipmap_ext(&mut self, target: u32) {
+        self.generate_mipmap(target);
+    }
+}
+
+/// Box-filters levels base+1.. from the base level (GL 2.1 §3.8.8,
+/// GENERATE_MIPMAP: any filter that averages 2x2(x2) blocks is allowed).
+pub(crate) fn generate_mipmaps(tex: &mut TextureObj, face: usize) {
+    let base = tex.params.base_level.max(0) as usize;
+    let Some(mut cur) = tex.image(face, base).cloned() else {
+        return;
+    };
+    let mut level = base;
+    while (cur.width > 1 || cur.height > 1 || cur.depth > 1) && level < MAX_LEVELS as usize {
+        let (w, h, d) = (cur.width as usize, cur.height as usize, cur.depth as usize);
+        let (nw, nh, nd) = ((w / 2).max(1), (h / 2).max(1), (d / 2).max(1));
+        let mut texels = Vec::with_capacity(nw * nh * nd);
+        for z in 0..nd {
+            for y in 0..nh {
+                for x in 0..nw {
+                    let mut sum = [0.0f32; 4];
+                    let mut n = 0.0f32;
+                    for dz in 0..(if d > 1 { 2 } else { 1 }) {
+                        for dy in 0..(if h > 1 { 2 } else { 1 }) {
+                            for dx in 0..(if w > 1 { 2 } else { 1 }) {
+                                let (sx, sy, sz) = (2 * x + dx, 2 * y + dy, 2 * z + dz);
+                                if let Some(t) = cur.texels.get((sz * h + sy) * w + sx) {
+                                    for c in 0..4 {
+                                        sum[c] += t[c];
+                                    }
+                                    n += 1.0;
+                                }
+                            }
+                        }
+                    }
+                    let avg = sum.map(|s| if n > 0.0 { s / n } else { 0.0 });
+                    texels.push(texel_for_stored(avg, cur.internal_format as i32));
+                }
+            }
+        }
+        cur = Image {
+            width: nw as i32,
+            height: nh as i32,
+            depth: nd as i32,
+            internal_format: cur.internal_format,
+            texels,
+        };
+        level += 1;
+        set_image(tex, face, level, cur.clone());
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn float_texels_unclamped_and_mipmaps() {
+        let mut ctx = Context::new(4, 4);
+        let t = ctx.gen_textures(1)[0];
+        ctx.bind_texture(GL_TEXTURE_2D, t);
+        let px: Vec<f32> = vec![
+            2.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 2.0, 0.0, 0.0, 1.0,
+        ];
+        let bytes: Vec<u8> = px.iter().flat_map(|f| f.to_le_bytes()).collect();
+        ctx.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA32F as i32,
+            2,
+            2,
+            0,
+            GL_RGBA,
+            GL_FLOAT,
+            Some(&bytes),
+        );
+        ctx.generate_mipmap(GL_TEXTURE_2D);
+        let tex = &ctx.objects.textures[&t];
+        assert_eq!(tex.image(0, 0).unwrap().texels[0][0], 2.0);
+        assert_eq!(tex.image(0, 1).unwrap().texels, vec![[1.0, 0.0, 0.0, 1.0]]);
+    }
+}

@@ -1,0 +1,200 @@
+//! Rasterization controls (GL 2.1 §3.3-3.5) and pixel storage (§3.6.1):
+//! culling, front face, polygon mode and offset, shade model, point size
+//! and parameters, line width, glPixelStore, and glHint.
+//!
+//! Contract: each setter validates as GL 2.1 says and changes nothing on
+//! error; glHint only validates its arguments (no hint changes an image).
+
+use crate::enums::*;
+use crate::Context;
+
+impl Context {
+    /// glCullFace.
+    pub fn cull_face(&mut self, mode: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if Self::faces(mode).is_none() {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        self.st.cull_face = mode;
+    }
+
+    /// glFrontFace.
+    pub fn front_face(&mut self, mode: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if mode != GL_CW && mode != GL_CCW {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        self.st.front_face = mode;
+    }
+
+    /// glPolygonMode.
+    pub fn polygon_mode(&mut self, face: u32, mode: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        let Some(faces) = Self::faces(face) else {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        };
+        if !matches!(mode, GL_POINT | GL_LINE | GL_FILL) {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        for &f in faces {
+            self.st.polygon_mode[f] = mode;
+        }
+    }
+
+    /// glPolygonOffset.
+    pub fn polygon_offset(&mut self, factor: f32, units: f32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        self.st.polygon_offset = [factor, units];
+    }
+
+    /// glShadeModel.
+    pub fn shade_model(&mut self, mode: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if mode != GL_FLAT && mode != GL_SMOOTH {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        self.st.shade_model = mode;
+    }
+
+    /// glPointSize.
+    pub fn point_size(&mut self, size: f32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if size.is_nan() || size <= 0.0 {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.st.point.size = size;
+    }
+
+    /// glLineWidth.
+    pub fn line_width(&mut self, width: f32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if width.is_nan() || width <= 0.0 {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.st.line_width = width;
+    }
+
+    /// glPointParameterf.
+    pub fn point_parameterf(&mut self, pname: u32, v: f32) {
+        self.point_parameterfv(pname, &[v]);
+    }
+
+    /// glPointParameteri.
+    pub fn point_parameteri(&mut self, pname: u32, v: i32) {
+        self.point_parameterfv(pname, &[v as f32]);
+    }
+
+    /// glPointParameterfv.
+    pub fn point_parameterfv(&mut self, pname: u32, v: &[f32]) {
+        if self.reject_in_begin() {
+            return;
+        }
+        let need = if pname == GL_POINT_DISTANCE_ATTENUATION {
+            3
+        } else {
+            1
+        };
+        if v.len() < need {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        let x = v[0];
+        let p = &mut self.st.point;
+        match pname {
+            GL_POINT_SIZE_MIN | GL_POINT_SIZE_MAX | GL_POINT_FADE_THRESHOLD_SIZE if x < 0.0 => {
+                self.set_error(GL_INVALID_VALUE)
+            }
+            GL_POINT_SIZE_MIN => p.size_min = x,
+            GL_POINT_SIZE_MAX => p.size_max = x,
+            GL_POINT_FADE_THRESHOLD_SIZE => p.fade_threshold = x,
+            GL_POINT_DISTANCE_ATTENUATION => p.attenuation = [v[0], v[1], v[2]],
+            GL_POINT_SPRITE_COORD_ORIGIN => {
+                let o = x as u32;
+                if o == GL_LOWER_LEFT || o == GL_UPPER_LEFT {
+                    p.sprite_origin = o;
+                } else {
+                    self.set_error(GL_INVALID_VALUE);
+                }
+            }
+            _ => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
+    /// glPixelStorei.
+    pub fn pixel_storei(&mut self, pname: u32, v: i32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        match pname {
+            GL_UNPACK_ALIGNMENT | GL_PACK_ALIGNMENT => {
+                if ![1, 2, 4, 8].contains(&v) {
+                    self.set_error(GL_INVALID_VALUE);
+                } else if pname == GL_UNPACK_ALIGNMENT {
+                    self.st.unpack_alignment = v;
+                } else {
+                    self.st.pack_alignment = v;
+                }
+            }
+            GL_UNPACK_ROW_LENGTH
+            | GL_UNPACK_SKIP_ROWS
+            | GL_UNPACK_SKIP_PIXELS
+            | GL_PACK_ROW_LENGTH
+            | GL_PACK_SKIP_ROWS
+            | GL_PACK_SKIP_PIXELS
+            | GL_UNPACK_IMAGE_HEIGHT
+            | GL_UNPACK_SKIP_IMAGES
+            | GL_PACK_IMAGE_HEIGHT
+            | GL_PACK_SKIP_IMAGES => {
+                // Accepted; only 0 (the default) is implemented.
+                if v < 0 {
+                    self.set_error(GL_INVALID_VALUE);
+                }
+            }
+            GL_UNPACK_SWAP_BYTES | GL_UNPACK_LSB_FIRST | GL_PACK_SWAP_BYTES | GL_PACK_LSB_FIRST => {
+            }
+            _ => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
+    /// glHint (accepted and ignored).
+    pub fn hint(&mut self, target: u32, mode: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        let target_ok = matches!(
+            target,
+            GL_PERSPECTIVE_CORRECTION_HINT
+                | GL_POINT_SMOOTH_HINT
+                | GL_LINE_SMOOTH_HINT
+                | GL_POLYGON_SMOOTH_HINT
+                | GL_FOG_HINT
+                | GL_GENERATE_MIPMAP_HINT
+                | GL_TEXTURE_COMPRESSION_HINT
+                | GL_FRAGMENT_SHADER_DERIVATIVE_HINT
+        );
+        if !target_ok || !matches!(mode, GL_FASTEST | GL_NICEST | GL_DONT_CARE) {
+            self.set_error(GL_INVALID_ENUM);
+        }
+    }
+}

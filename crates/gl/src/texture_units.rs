@@ -1,0 +1,142 @@
+//! Texture objects as raster's textures: the bound texture of every
+//! target on every image unit, converted to [`raster::Texture`] (levels,
+//! cube faces, sampler parameters) for a draw.
+//!
+//! Contract: a conversion is cached per (name, target) and reused while
+//! the texture's generation is unchanged; an incomplete cube level becomes
+//! an empty image.
+
+use crate::enums::*;
+use crate::objects;
+use crate::pipeline_state::compare_func;
+use crate::texture_format::is_depth_format;
+use crate::Context;
+use std::sync::Arc;
+
+impl Context {
+    /// A texture object as raster's texture (cached per generation).
+    fn raster_texture(
+        &mut self,
+        name: u32,
+        target: u32,
+        unit: usize,
+    ) -> Option<Arc<raster::Texture>> {
+        let t = self.objects.bound_texture(unit, target)?;
+        let key = (name, target);
+        if let Some((gen, tex)) = self.cache.textures.get(&key) {
+            if *gen == t.generation {
+                return Some(tex.clone());
+            }
+        }
+        let tex = Arc::new(convert_texture(t));
+        self.cache.textures.insert(key, (t.generation, tex.clone()));
+        Some(tex)
+    }
+
+    /// Raster's texture units: the texture bound to each target on every
+    /// image unit, and the unit's LOD bias.
+    pub(crate) fn texture_units(&mut self) -> raster::TextureUnits {
+        let mut units = Vec::with_capacity(crate::MAX_TEXTURE_IMAGE_UNITS);
+        for u in 0..crate::MAX_TEXTURE_IMAGE_UNITS {
+            let names = self.objects.bound.get(u).copied().unwrap_or([0; 4]);
+            let mut get = |i: usize| self.raster_texture(names[i], objects::TEXTURE_TARGETS[i], u);
+            let unit = raster::TextureUnit {
+                tex_1d: get(0),
+                tex_2d: get(1),
+                tex_3d: get(2),
+                cube: get(3),
+                lod_bias: self.st.tex_env.get(u).map_or(0.0, |e| e.lod_bias),
+            };
+            units.push(unit);
+        }
+        raster::TextureUnits::new(units)
+    }
+}
+
+/// A GL texture object as raster's texture.
+fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
+    use raster::{MagFilter, MinFilter, TextureTarget, Wrap};
+    let target = match t.target {
+        GL_TEXTURE_1D => TextureTarget::Tex1D,
+        GL_TEXTURE_3D => TextureTarget::Tex3D,
+        GL_TEXTURE_CUBE_MAP => TextureTarget::Cube,
+        _ => TextureTarget::Tex2D,
+    };
+    let nlevels = t.faces.iter().map(|f| f.len()).max().unwrap_or(0);
+    let mut levels = Vec::with_capacity(nlevels);
+    let mut depth_format = false;
+    for l in 0..nlevels {
+        if target == TextureTarget::Cube {
+            let faces: Vec<Option<&objects::Image>> = (0..6).map(|f| t.image(f, l)).collect();
+            let first = faces.iter().flatten().next();
+            let img = match first {
+                Some(f0)
+                    if faces.iter().all(|f| {
+                        f.is_some_and(|f| f.width == f0.width && f.height == f0.height)
+                    }) =>
+                {
+                    let texels = faces
+                        .iter()
+                        .flatten()
+                        .flat_map(|f| f.texels.iter().copied())
+                        .collect();
+                    raster::Image::new(f0.width as u32, f0.height as u32, 6, texels)
+                }
+                _ => raster::Image::new(0, 0, 0, Vec::new()),
+            };
+            levels.push(img);
+        } else {
+            match t.image(0, l) {
+                Some(i) => {
+                    if l == t.params.base_level.max(0) as usize {
+                        depth_format = is_depth_format(i.internal_format as i32);
+                    }
+                    levels.push(raster::Image::new(
+                        i.width as u32,
+                        i.height as u32,
+                        i.depth as u32,
+                        i.texels.clone(),
+                    ))
+                }
+                None => levels.push(raster::Image::new(0, 0, 0, Vec::new())),
+            }
+        }
+    }
+    let p = &t.params;
+    let wrap = |w: u32| match w {
+        GL_CLAMP => Wrap::Clamp,
+        GL_CLAMP_TO_EDGE => Wrap::ClampToEdge,
+        GL_CLAMP_TO_BORDER => Wrap::ClampToBorder,
+        GL_MIRRORED_REPEAT => Wrap::MirroredRepeat,
+        _ => Wrap::Repeat,
+    };
+    let mut out = raster::Texture::new(target, levels);
+    out.min_filter = match p.min_filter {
+        GL_NEAREST => MinFilter::Nearest,
+        GL_LINEAR => MinFilter::Linear,
+        GL_NEAREST_MIPMAP_NEAREST => MinFilter::NearestMipmapNearest,
+        GL_LINEAR_MIPMAP_NEAREST => MinFilter::LinearMipmapNearest,
+        GL_LINEAR_MIPMAP_LINEAR => MinFilter::LinearMipmapLinear,
+        _ => MinFilter::NearestMipmapLinear,
+    };
+    out.mag_filter = if p.mag_filter == GL_NEAREST {
+        MagFilter::Nearest
+    } else {
+        MagFilter::Linear
+    };
+    out.wrap = p.wrap.map(wrap);
+    out.border_color = p.border_color;
+    out.min_lod = p.min_lod;
+    out.max_lod = p.max_lod;
+    out.lod_bias = p.lod_bias;
+    out.base_level = p.base_level.max(0) as u32;
+    out.max_level = p.max_level.max(0) as u32;
+    out.depth_format = depth_format;
+    out.compare = (p.compare_mode == GL_COMPARE_R_TO_TEXTURE).then(|| compare_func(p.compare_func));
+    out.depth_mode = match p.depth_mode {
+        GL_INTENSITY => raster::DepthTextureMode::Intensity,
+        GL_ALPHA => raster::DepthTextureMode::Alpha,
+        _ => raster::DepthTextureMode::Luminance,
+    };
+    out
+}
