@@ -310,7 +310,15 @@ impl Context {
             }
         }
         let refs: Vec<&glsl::Shader> = shaders.iter().map(|s| s.as_ref()).collect();
-        let linked = glsl::link::link(&refs);
+        // GL 2.1 §2.15.2 gives no reason for a program with no shader
+        // objects to fail: its executable is fixed function for both
+        // stages, as for any stage without a shader (Mesa's compatibility
+        // contexts link it too).
+        let linked = if p.attached.is_empty() {
+            glsl::link::Program::default()
+        } else {
+            glsl::link::link(&refs)
+        };
         let mut log = String::new();
         for s in &not_compiled {
             log.push_str(&format!("error: shader {s} was never compiled\n"));

@@ -107,6 +107,19 @@ fn fragment_only_program_uses_fixed_vertex_stage() {
 }
 
 #[test]
+fn program_without_shaders_links_to_fixed_function() {
+    // GL 2.1 gives an empty program no reason to fail: both stages are
+    // fixed function, as Mesa's compatibility contexts link it.
+    let mut ctx = Context::new(8, 8);
+    program(&mut ctx, None, None);
+    ctx.color_4f(1.0, 0.5, 0.0, 1.0);
+    draw_rect(&mut ctx, -1.0, -1.0, 2.0, 2.0);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(ctx.take_draw_error(), None);
+    assert!(close(pixel(&mut ctx, 4, 4), [1.0, 0.5, 0.0, 1.0]));
+}
+
+#[test]
 fn immediate_mode_without_program() {
     let mut ctx = Context::new(16, 16);
     ctx.shade_model(GL_FLAT);
