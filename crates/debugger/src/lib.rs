@@ -43,7 +43,8 @@ pub struct DrawReport {
     pub count: usize,
     pub program: u32,
     pub framebuffer: u32,
-    /// Why no fragment could reach the pixel, or why the replay failed.
+    /// Why no fragment could reach the pixel, or the error that stopped the
+    /// draw (what it recorded before is still reported).
     pub note: Option<String>,
     pub fragments: Vec<FragmentReport>,
     /// `debugPrintfEXT` output of the print rectangle (other pixels).
@@ -67,6 +68,8 @@ pub struct VertexTrace {
     pub index: u32,
     pub inputs: Vec<Named>,
     pub steps: Vec<Step>,
+    /// The steps stop short: the draw's trace limit was reached.
+    pub truncated: bool,
     pub outputs: Vec<Named>,
     pub error: Option<String>,
 }
@@ -98,6 +101,8 @@ pub struct FragmentReport {
     pub inputs: Vec<Named>,
     pub early_rejected: bool,
     pub steps: Vec<Step>,
+    /// The steps stop short: the draw's trace limit was reached.
+    pub truncated: bool,
     pub discarded: Option<Step>,
     pub error: Option<String>,
     pub outputs: Vec<Named>,
@@ -492,14 +497,12 @@ fn draw_report(r: &DrawRecord) -> DrawReport {
         vertex: None,
         outlines: Vec::new(),
     };
-    let probe = match &r.probe {
-        Ok(p) => p,
-        Err(e) => {
-            d.note = Some(format!("the replay failed: {e}"));
-            return d;
-        }
+    let probe = &r.probe;
+    d.note = match (&probe.unreachable, &probe.stopped) {
+        (Some(u), _) => Some(u.clone()),
+        (None, Some(e)) => Some(format!("the draw stopped: {e}")),
+        (None, None) => None,
     };
-    d.note = probe.unreachable.clone();
     d.outlines = probe.outlines.clone();
     d.vertex = probe.vertex.as_ref().map(|v| {
         let k = &r.vertex.kernel;
@@ -509,6 +512,7 @@ fn draw_report(r: &DrawRecord) -> DrawReport {
             index: v.index,
             inputs: named_slots(&iface.inputs, &v.inputs, &iface.structs, false),
             steps: steps(k, &r.vertex, &v.events),
+            truncated: v.truncated,
             outputs: named_slots(&iface.outputs, &v.outputs, &iface.structs, true),
             error: v.error.clone(),
         }
@@ -579,6 +583,7 @@ fn fragment_report(
         inputs: named_slots(&fs.inputs, &f.inputs, &fs.structs, false),
         early_rejected: f.early_rejected,
         steps,
+        truncated: f.truncated,
         discarded,
         error: f.error.clone(),
         outputs: if f.early_rejected {
@@ -634,6 +639,16 @@ fn pixel_text(p: &PixelReport) -> String {
 }
 
 /// Executed statements, source beside the values they stored.
+fn write_truncated(s: &mut String, truncated: bool) {
+    if truncated {
+        let _ = writeln!(
+            s,
+            "    trace truncated: the draw recorded its limit of {} statements, stores and prints; the shader ran on",
+            raster::MAX_TRACE_EVENTS
+        );
+    }
+}
+
 fn write_steps(s: &mut String, steps: &[Step]) {
     for st in steps {
         let at = st.line.map_or("     ".to_string(), |l| format!("{l:>4} |"));
@@ -672,6 +687,7 @@ fn write_vertex(s: &mut String, v: &VertexTrace) {
         let _ = writeln!(s, "    inputs: {}", named_text(&v.inputs));
     }
     write_steps(s, &v.steps);
+    write_truncated(s, v.truncated);
     if let Some(e) = &v.error {
         let _ = writeln!(s, "    {e}");
     } else {
@@ -712,6 +728,7 @@ fn write_fragment(s: &mut String, n: usize, f: &FragmentReport) {
         );
     }
     write_steps(s, &f.steps);
+    write_truncated(s, f.truncated);
     if let Some(d) = &f.discarded {
         let at = d.line.map_or(String::new(), |l| format!(" at line {l}"));
         let _ = writeln!(s, "    discarded{at}: {}", d.source);

@@ -80,8 +80,8 @@ pub struct DrawRecord {
     pub framebuffer: u32,
     pub vertex: StageInfo,
     pub fragment: StageInfo,
-    /// What happened at the pixel, or why the replay failed.
-    pub probe: Result<raster::DrawProbe, String>,
+    /// What happened at the pixel (a draw that failed part-way included).
+    pub probe: raster::DrawProbe,
     /// The requested view, or why it could not be made.
     pub view: Option<Result<ViewRecord, String>>,
 }

@@ -158,7 +158,7 @@ impl Context {
         let probe = self
             .debug
             .wants()
-            .map(|req| raster::probe_draw(&target.fb, &replay, req).map_err(|e| e.to_string()));
+            .map(|req| raster::probe_draw(&target.fb, &replay, req));
         let view = self.debug.view().map(|name| {
             let (v, kinds) = crate::debug::resolve_view(&fs, name)?;
             let image = raster::view_draw(&target.fb, &replay, v).map_err(|e| e.to_string())?;

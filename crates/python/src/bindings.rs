@@ -263,10 +263,7 @@ impl RawContext {
     fn debug_end(&self) -> (String, String) {
         let mut ctx = self.gl();
         let records = ctx.take_debug_records();
-        let pixel = records
-            .first()
-            .and_then(|r| r.probe.as_ref().ok())
-            .map_or((0, 0), |p| p.pixel);
+        let pixel = records.first().map_or((0, 0), |r| r.probe.pixel);
         ctx.set_debug(None);
         let report = debugger::Report::from_records(pixel, &records);
         (report.text(), report.json())

@@ -233,6 +233,7 @@ pub use framebuffer::{
 pub use pixel_fragments::{write_pixel_fragments, PixelFragment};
 pub use probe::{
     DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine, VertexProbe, View, ViewImage,
+    MAX_TRACE_EVENTS,
 };
 pub use rasterize::SUBPIXEL_BITS;
 pub use replay::{probe_draw, view_draw, ProbeRequest, Replay};

@@ -23,6 +23,12 @@ use crate::ShaderStage;
 use glsl::Span;
 use std::sync::Mutex;
 
+/// Trace events (statements, stores, prints) one replayed draw records
+/// over all its traced invocations. A shader that loops until the loop
+/// budget stops it would otherwise record without bound; past the limit
+/// the shaders run on unrecorded and the trace says it was truncated.
+pub const MAX_TRACE_EVENTS: usize = 1 << 20;
+
 /// A value to show for the whole frame as a false-colour image.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum View {
@@ -55,6 +61,8 @@ pub struct VertexProbe {
     /// §2.14.6 that `DrawProbe::vertex_outputs` shows).
     pub inputs: Vec<f32>,
     pub events: Vec<Event>,
+    /// `events` stopped at [`MAX_TRACE_EVENTS`]; the shader ran on.
+    pub truncated: bool,
     pub outputs: Vec<f32>,
     pub error: Option<String>,
 }
@@ -66,6 +74,9 @@ pub struct DrawProbe {
     /// The pixel is outside the framebuffer or the scissor box: no fragment
     /// can reach it.
     pub unreachable: Option<String>,
+    /// The replayed draw stopped with this error (a shader's loop
+    /// budget...); what it recorded up to then is kept.
+    pub stopped: Option<String>,
     /// Every assembled primitive's vertices, as positions in the draw's
     /// index list (only primitives that produced a fragment here are
     /// referenced by [`FragmentProbe::primitive`]).
@@ -115,6 +126,9 @@ pub struct FragmentProbe {
     pub inputs: Vec<f32>,
     /// Statements, stores and prints of the invocation, in order.
     pub events: Vec<Event>,
+    /// `events` stopped at the draw's [`MAX_TRACE_EVENTS`]; the shader ran
+    /// on.
+    pub truncated: bool,
     pub discarded: bool,
     /// The shader failed (loop budget...).
     pub error: Option<String>,
@@ -205,33 +219,50 @@ pub(crate) struct Probe {
     /// [`Prim::index`] (a probed draw sets up in one chunk): primitives
     /// keep only what rasterization reads.
     windows: Mutex<Vec<Vec<[f64; 4]>>>,
+    /// Trace events the draw may still record ([`MAX_TRACE_EVENTS`]).
+    events_left: Mutex<usize>,
 }
 
 /// The trace of the probed lane while its batch runs.
 pub(crate) struct Recording {
     pub fragment: FragmentProbe,
+    /// Events it may still record (the draw's budget).
+    left: usize,
+    /// The last statement recorded: the span of a print that follows.
+    last_statement: Span,
+}
+
+impl Recording {
+    /// A recording of `fragment`'s invocation that may keep `left` events.
+    pub fn new(fragment: FragmentProbe, left: usize) -> Recording {
+        Recording {
+            fragment,
+            left,
+            last_statement: Span::default(),
+        }
+    }
+
+    fn record(&mut self, event: Event) {
+        if self.left == 0 {
+            self.fragment.truncated = true;
+            return;
+        }
+        self.left -= 1;
+        self.fragment.events.push(event);
+    }
 }
 
 impl Trace for Recording {
     fn statement(&mut self, span: Span) {
-        self.fragment.events.push(Event::Statement(span));
+        self.last_statement = span;
+        self.record(Event::Statement(span));
     }
     fn store(&mut self, register: u32, bits: u32) {
-        self.fragment.events.push(Event::Store { register, bits });
+        self.record(Event::Store { register, bits });
     }
     fn printf(&mut self, text: &str) {
-        // The span of the call is the statement just reported.
-        let span = self
-            .fragment
-            .events
-            .iter()
-            .rev()
-            .find_map(|e| match e {
-                Event::Statement(s) => Some(*s),
-                _ => None,
-            })
-            .unwrap_or_default();
-        self.fragment.events.push(Event::Print {
+        let span = self.last_statement;
+        self.record(Event::Print {
             span,
             text: text.to_string(),
         });
@@ -264,6 +295,7 @@ impl Probe {
             image: Mutex::new(ViewImage::default()),
             inner: Mutex::new(report),
             windows: Mutex::default(),
+            events_left: Mutex::new(MAX_TRACE_EVENTS),
         }
     }
 
@@ -282,6 +314,7 @@ impl Probe {
                 pixels: vec![None; width as usize * height as usize],
             }),
             windows: Mutex::default(),
+            events_left: Mutex::new(MAX_TRACE_EVENTS),
         }
     }
 
@@ -447,7 +480,8 @@ impl Probe {
     pub fn begin(&self, prim: &Prim, batch: &Batch, lane: usize, z: f64) -> Recording {
         let mut fragment = self.fragment(prim, z);
         fragment.inputs = batch.inputs.iter().map(|c| c[lane]).collect();
-        Recording { fragment }
+        let left = *self.events_left.lock().unwrap_or_else(|e| e.into_inner());
+        Recording::new(fragment, left)
     }
 
     /// The per-fragment operations of the probed fragment, recorded.
@@ -503,6 +537,7 @@ impl Probe {
     }
 
     pub fn push(&self, rec: Recording) {
+        *self.events_left.lock().unwrap_or_else(|e| e.into_inner()) = rec.left;
         self.with(|r| r.fragments.push(rec.fragment));
     }
 
@@ -579,5 +614,34 @@ impl Probe {
             primitive,
         };
         shader.run_printing(batch, uniforms, textures, &mut sink)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn recording_stops_at_its_budget_and_says_so() {
+        let mut rec = Recording::new(FragmentProbe::default(), 3);
+        for i in 0..5 {
+            rec.statement(Span::new(i, i + 1));
+            rec.store(i, i);
+        }
+        rec.printf("late");
+        assert_eq!(rec.fragment.events.len(), 3);
+        assert!(rec.fragment.truncated);
+        assert_eq!(rec.left, 0);
+        let mut roomy = Recording::new(FragmentProbe::default(), 10);
+        roomy.statement(Span::new(4, 9));
+        roomy.printf("x");
+        assert!(!roomy.fragment.truncated);
+        assert_eq!(
+            roomy.fragment.events[1],
+            Event::Print {
+                span: Span::new(4, 9),
+                text: "x".into()
+            }
+        );
     }
 }

@@ -16,6 +16,7 @@ use crate::framebuffer::Framebuffer;
 use crate::linkage::new_batch;
 use crate::probe::{
     DrawProbe, FragmentProbe, PixelState, Probe, Recording, VertexProbe, View, ViewImage,
+    MAX_TRACE_EVENTS,
 };
 use crate::state::{PipelineState, Rect};
 use crate::vertex::fetch_vertex;
@@ -98,12 +99,9 @@ impl ProbeRequest {
 }
 
 /// Replays a draw on a copy of `fb` and reports what happened at
-/// `req.pixel` (see the module docs).
-pub fn probe_draw(
-    fb: &Framebuffer,
-    draw: &Replay,
-    req: ProbeRequest,
-) -> Result<DrawProbe, DrawError> {
+/// `req.pixel` (see the module docs). A draw that fails part-way is still
+/// reported, with the error in [`DrawProbe::stopped`].
+pub fn probe_draw(fb: &Framebuffer, draw: &Replay, req: ProbeRequest) -> DrawProbe {
     let state = draw.state;
     let (px, py) = req.pixel;
     let mut report = DrawProbe {
@@ -115,7 +113,7 @@ pub fn probe_draw(
             "pixel ({px}, {py}) is outside the {}×{} framebuffer",
             fb.width, fb.height
         ));
-        return Ok(report);
+        return report;
     }
     // The region replayed: the pixel and the print rectangle, inside the
     // real scissor box.
@@ -159,7 +157,10 @@ pub fn probe_draw(
     if let Some(position) = req.vertex {
         report.vertex = Some(trace_vertex(draw, position));
     }
-    result.map(|()| report)
+    // A failed draw still shows what it recorded: the fragment whose shader
+    // failed is often the one being debugged.
+    report.stopped = result.err().map(|e| e.to_string());
+    report
 }
 
 /// Runs the vertex shader alone for one position of the index list, traced
@@ -181,14 +182,13 @@ fn trace_vertex(draw: &Replay, position: usize) -> VertexProbe {
     let mut batch = new_batch(iface.input_components, iface.output_components);
     fetch_vertex(iface, draw.fetch, index, &mut batch, 0);
     batch.active = 1;
-    let mut rec = Recording {
-        fragment: FragmentProbe::default(),
-    };
+    let mut rec = Recording::new(FragmentProbe::default(), MAX_TRACE_EVENTS);
     let result = vs.run_traced(&mut batch, draw.vs_uniforms, draw.textures, 0, &mut rec);
     VertexProbe {
         position,
         index,
         inputs: batch.inputs.iter().map(|c| c[0]).collect(),
+        truncated: rec.fragment.truncated,
         events: rec.fragment.events,
         outputs: batch.outputs.iter().map(|c| c[0]).collect(),
         error: result.err().map(|e| e.to_string()),
