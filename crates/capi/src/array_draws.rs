@@ -2,9 +2,9 @@
 //! array element as immediate-mode attribute calls), glMultiDrawElements,
 //! and glInterleavedArrays (GL 2.1 §2.8, Table 2.5).
 
+use crate::abi::*;
 use crate::context::{guard, with_ctx, OsContext};
-use crate::entry::{element_source, gl_entry_points, rd_vec};
-use crate::types::*;
+use crate::entry::element_source;
 use gl::enums::*;
 use gl::vertex::AttribSource;
 use std::ffi::c_void;

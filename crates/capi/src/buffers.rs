@@ -5,10 +5,9 @@
 //! through GL_PIXEL_PACK_BUFFER and GL_PIXEL_UNPACK_BUFFER (GL 2.1 §2.9,
 //! §4.3.5, §6.1.13).
 
+use crate::abi::*;
 use crate::arrays::array_state;
-use crate::context::OsContext;
-use crate::entry::{gl_entry_points, wr};
-use crate::types::*;
+use crate::context::{with_ctx, OsContext};
 use gl::enums::*;
 use gl::vertex::AttribSource;
 use std::ffi::c_void;

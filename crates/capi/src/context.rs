@@ -404,6 +404,37 @@ pub fn with_ctx<R>(default: R, f: impl FnOnce(&mut OsContext) -> R) -> R {
     caught(catch_unwind(AssertUnwindSafe(|| f(ctx))), default)
 }
 
+/// [`OsContext::record`] on the current context, from outside `with_ctx`.
+pub fn record_call(cmd: impl Fn() + 'static) -> bool {
+    let p = current();
+    if p.is_null() {
+        return false;
+    }
+    // SAFETY: the current context, not otherwise borrowed here (entry
+    // points call this before `with_ctx`).
+    guard(false, || unsafe { &mut *p }.record(cmd))
+}
+
+/// While a display list is being compiled, records a replay of a vector
+/// call: the `N` values at `v` are read now (a list keeps values, not the
+/// caller's pointer) and `replay` gets a pointer to the copy. True when
+/// the call must not also run now (GL_COMPILE); false when it must
+/// (GL_COMPILE_AND_EXECUTE, or not compiling, or a null pointer).
+pub fn record_vector<const N: usize, T: Copy + 'static>(
+    c: &mut OsContext,
+    v: *const T,
+    replay: impl Fn(*const T) + 'static,
+) -> bool {
+    if !c.compiling() {
+        return false;
+    }
+    // SAFETY: GL's contract for vector arguments: N values at v (or null).
+    match unsafe { crate::abi::rd::<N, T>(v) } {
+        Some(arr) => c.record(move || replay(arr.as_ptr())),
+        None => false,
+    }
+}
+
 /// Runs `f` with panics caught (for entry points without a context).
 pub fn guard<R>(default: R, f: impl FnOnce() -> R) -> R {
     caught(catch_unwind(AssertUnwindSafe(f)), default)

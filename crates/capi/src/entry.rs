@@ -7,12 +7,12 @@
 //! pixels mark the context dirty; glFinish, glFlush and glReadPixels copy
 //! the default framebuffer into the client's buffer ([`OsContext::sync`]).
 
-use crate::context::OsContext;
-use crate::types::*;
+use crate::abi::*;
+use crate::context::{record_call, record_vector, with_ctx, OsContext};
 use gl::enums::*;
 use gl::vertex::AttribSource;
 use gl::ArrayData;
-use std::ffi::{c_char, c_void, CStr, CString};
+use std::ffi::{c_void, CStr, CString};
 use std::sync::Arc;
 
 /// Largest glBufferData/glBufferSubData copy (larger: GL_OUT_OF_MEMORY
@@ -21,67 +21,6 @@ const MAX_BUFFER_BYTES: usize = 1 << 31;
 
 /// Most array elements read from client memory by one glUniform*v call.
 const MAX_UNIFORM_ELEMENTS: i32 = 4096;
-
-/// Reads `N` values at `p` (None for null).
-pub(crate) unsafe fn rd<const N: usize, T: Copy>(p: *const T) -> Option<[T; N]> {
-    if p.is_null() {
-        None
-    } else {
-        // SAFETY: GL's contract for vector arguments: N values at p.
-        Some(unsafe { std::ptr::read_unaligned(p as *const [T; N]) })
-    }
-}
-
-/// While a display list is being compiled, records a replay of a vector
-/// call: the `N` values at `v` are read now (a list keeps values, not the
-/// caller's pointer) and `replay` gets a pointer to the copy. True when
-/// the call must not also run now (GL_COMPILE); false when it must
-/// (GL_COMPILE_AND_EXECUTE, or not compiling, or a null pointer).
-pub(crate) fn record_vector<const N: usize, T: Copy + 'static>(
-    c: &mut OsContext,
-    v: *const T,
-    replay: impl Fn(*const T) + 'static,
-) -> bool {
-    if !c.compiling() {
-        return false;
-    }
-    // SAFETY: GL's contract for vector arguments: N values at v (or null).
-    match unsafe { rd::<N, T>(v) } {
-        Some(arr) => c.record(move || replay(arr.as_ptr())),
-        None => false,
-    }
-}
-
-/// Reads `n` values at `p` (empty for null or n <= 0).
-pub(crate) unsafe fn rd_vec<T: Copy>(p: *const T, n: i64) -> Vec<T> {
-    if p.is_null() || n <= 0 {
-        return Vec::new();
-    }
-    // SAFETY: GL's contract: n values at p.
-    (0..n as usize)
-        .map(|i| unsafe { std::ptr::read_unaligned(p.add(i)) })
-        .collect()
-}
-
-/// Writes `v` at `p` (nothing for null).
-pub(crate) unsafe fn wr<T: Copy>(p: *mut T, v: &[T]) {
-    if p.is_null() {
-        return;
-    }
-    for (i, x) in v.iter().enumerate() {
-        // SAFETY: GL's contract: the query's value count fits at p.
-        unsafe { std::ptr::write_unaligned(p.add(i), *x) };
-    }
-}
-
-/// A C string argument (lossy UTF-8).
-pub(crate) unsafe fn cstr(p: *const c_char) -> Option<String> {
-    if p.is_null() {
-        return None;
-    }
-    // SAFETY: NUL-terminated per GL's contract.
-    Some(unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned())
-}
 
 /// glGet*InfoLog / glGetShaderSource output: at most `buf_size - 1` bytes
 /// and a NUL; `length` gets the bytes written without the NUL.
@@ -102,7 +41,7 @@ unsafe fn wr_string(
         let n = s.len().min(buf_size as usize - 1);
         // SAFETY: the caller's buffer holds buf_size bytes.
         unsafe {
-            std::ptr::copy_nonoverlapping(s.as_ptr() as *const c_char, out, n);
+            std::ptr::copy_nonoverlapping(s.as_ptr() as *const GLchar, out, n);
             *out.add(n) = 0;
         }
         n
@@ -155,19 +94,7 @@ pub(crate) unsafe fn image_bytes(
     }
     // SAFETY: GL's contract: the client image holds w x h x d pixels of
     // format/type laid out per the unpack state.
-    Ok(Some(
-        unsafe { std::slice::from_raw_parts(data as *const u8, len) }.to_vec(),
-    ))
-}
-
-/// A signed integer color/normal component to [-1, 1]: (2c + 1) / (2^b - 1)
-/// (GL 2.1 Table 2.9).
-fn snorm(x: f64, max: f64) -> f32 {
-    ((2.0 * x + 1.0) / max) as f32
-}
-
-fn b(x: GLboolean) -> bool {
-    x != 0
+    Ok(Some(unsafe { bytes(data, len) }.to_vec()))
 }
 
 /// glDrawElements' index array as the context takes it (an offset into the
@@ -219,9 +146,9 @@ pub(crate) unsafe fn element_source(
         (ArrayData::Client(Arc::from(Vec::new())), Vec::new())
     } else {
         // SAFETY: GL's contract: `count` indices of `ty` at `indices`.
-        let bytes = unsafe { std::slice::from_raw_parts(indices as *const u8, n) };
-        let idx = if read { convert(bytes) } else { Vec::new() };
-        (ArrayData::Client(Arc::from(bytes)), idx)
+        let data = unsafe { bytes(indices, n) };
+        let idx = if read { convert(data) } else { Vec::new() };
+        (ArrayData::Client(Arc::from(data)), idx)
     }
 }
 
@@ -245,47 +172,6 @@ pub(crate) unsafe fn prepare_elements(
     }
     data
 }
-
-/// Generates the extern "C" functions and [`lookup`] (the
-/// OSMesaGetProcAddress table).
-macro_rules! gl_entry_points {
-    ($(
-        $(#[$m:meta])*
-        $([$list:ident])? fn $name:ident($($a:ident: $t:ty),*) $(-> $r:ty [$def:expr])? => |$c:ident| $body:block
-    )*) => {
-        $(
-            $(#[$m])*
-            #[no_mangle]
-            #[allow(unused_unsafe, clippy::too_many_arguments, clippy::unnecessary_cast)]
-            pub unsafe extern "C" fn $name($($a: $t),*) $(-> $r)? {
-                gl_entry_points!(@maybe [$($list)?] $name($($a),*));
-                crate::context::with_ctx(gl_entry_points!(@def $($def)?), |$c: &mut crate::context::OsContext| unsafe { $body })
-            }
-        )*
-
-        /// The address of the gl* entry point `name`.
-        pub fn lookup(name: &str) -> Option<*const ()> {
-            match name {
-                $(stringify!($name) => Some($name as *const ()),)*
-                _ => None,
-            }
-        }
-
-        /// Every gl* entry point exported.
-        pub const NAMES: &[&str] = &[$(stringify!($name)),*];
-    };
-    // Compiled into display lists (GL 2.1 §5.4): record a re-issue of the
-    // call; in GL_COMPILE mode do not execute it now.
-    (@maybe [] $name:ident($($a:ident),*)) => {};
-    (@maybe [list] $name:ident($($a:ident),*)) => {
-        if crate::lists::record(move || unsafe { $name($($a),*) }) {
-            return;
-        }
-    };
-    (@def) => { () };
-    (@def $d:expr) => { $d };
-}
-pub(crate) use gl_entry_points;
 
 gl_entry_points! {
     // ---- errors, strings, queries ----
@@ -366,9 +252,9 @@ gl_entry_points! {
     [list] fn glClearStencil(s: GLint) => |c| { c.gl.clear_stencil(s) }
     [list] fn glClear(mask: GLbitfield) => |c| { c.gl.clear(mask); c.dirty = true; }
     [list] fn glColorMask(r: GLboolean, g: GLboolean, bl: GLboolean, a: GLboolean) => |c| {
-        c.gl.color_mask(b(r), b(g), b(bl), b(a))
+        c.gl.color_mask(as_bool(r), as_bool(g), as_bool(bl), as_bool(a))
     }
-    [list] fn glDepthMask(flag: GLboolean) => |c| { c.gl.depth_mask(b(flag)) }
+    [list] fn glDepthMask(flag: GLboolean) => |c| { c.gl.depth_mask(as_bool(flag)) }
     [list] fn glDepthFunc(func: GLenum) => |c| { c.gl.depth_func(func) }
     [list] fn glBlendFunc(src: GLenum, dst: GLenum) => |c| { c.gl.blend_func(src, dst) }
     [list] fn glBlendEquation(mode: GLenum) => |c| { c.gl.blend_equation(mode) }
@@ -702,8 +588,7 @@ gl_entry_points! {
             } else if len < 0 {
                 CStr::from_ptr(s).to_string_lossy().into_owned()
             } else {
-                let bytes = std::slice::from_raw_parts(s as *const u8, len as usize);
-                String::from_utf8_lossy(bytes).into_owned()
+                String::from_utf8_lossy(bytes(s, len as usize)).into_owned()
             };
             parts.push(text);
         }
@@ -810,15 +695,15 @@ gl_entry_points! {
     }
     fn glUniformMatrix2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
         let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_2fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 4));
+        c.gl.uniform_matrix_2fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 4));
     }
     fn glUniformMatrix3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
         let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_3fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 9));
+        c.gl.uniform_matrix_3fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 9));
     }
     fn glUniformMatrix4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
         let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_4fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 16));
+        c.gl.uniform_matrix_4fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 16));
     }
 
     // ---- more state ----
@@ -1050,7 +935,7 @@ gl_entry_points! {
             None
         } else {
             // SAFETY: GL's contract: `size` bytes at `data`.
-            Some(std::slice::from_raw_parts(data as *const u8, size as usize))
+            Some(bytes(data, size as usize))
         };
         c.gl.buffer_data(target, size, bytes, usage);
     }
@@ -1064,8 +949,7 @@ gl_entry_points! {
             return;
         }
         // SAFETY: GL's contract: `size` bytes at `data`.
-        let bytes = std::slice::from_raw_parts(data as *const u8, size as usize);
-        c.gl.buffer_sub_data(target, offset, bytes);
+        c.gl.buffer_sub_data(target, offset, bytes(data, size as usize));
     }
 
     // ---- framebuffer objects ----
@@ -1185,27 +1069,27 @@ gl_entry_points! {
     }
     fn glUniformMatrix2x3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
         let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_2x3fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 6));
+        c.gl.uniform_matrix_2x3fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 6));
     }
     fn glUniformMatrix3x2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
         let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_3x2fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 6));
+        c.gl.uniform_matrix_3x2fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 6));
     }
     fn glUniformMatrix2x4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
         let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_2x4fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 8));
+        c.gl.uniform_matrix_2x4fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 8));
     }
     fn glUniformMatrix4x2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
         let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_4x2fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 8));
+        c.gl.uniform_matrix_4x2fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 8));
     }
     fn glUniformMatrix3x4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
         let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_3x4fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 12));
+        c.gl.uniform_matrix_3x4fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 12));
     }
     fn glUniformMatrix4x3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
         let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_4x3fv(loc, n, b(transpose), &rd_vec(v, n as i64 * 12));
+        c.gl.uniform_matrix_4x3fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 12));
     }
     fn glVertexAttrib1fv(index: GLuint, v: *const GLfloat) => |c| {
         if record_vector::<1, f32>(c, v, move |p| unsafe { glVertexAttrib1fv(index, p) }) {
@@ -1399,19 +1283,19 @@ gl_entry_points! {
         }
         if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), 1.0) }
     }
-    [list] fn glColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, 1.0) }
+    [list] fn glColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.color_4f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0), 1.0) }
     fn glColor3usv(v: *const GLushort) => |c| {
         if record_vector::<3, u16>(c, v, move |p| unsafe { glColor3usv(p) }) {
             return;
         }
-        if let Some([x, y, z]) = rd::<3, u16>(v) { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, 1.0) }
+        if let Some([x, y, z]) = rd::<3, u16>(v) { c.gl.color_4f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0), 1.0) }
     }
-    [list] fn glColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, 1.0) }
+    [list] fn glColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.color_4f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0), 1.0) }
     fn glColor3uiv(v: *const GLuint) => |c| {
         if record_vector::<3, u32>(c, v, move |p| unsafe { glColor3uiv(p) }) {
             return;
         }
-        if let Some([x, y, z]) = rd::<3, u32>(v) { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, 1.0) }
+        if let Some([x, y, z]) = rd::<3, u32>(v) { c.gl.color_4f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0), 1.0) }
     }
     [list] fn glColor4b(x: GLbyte, y: GLbyte, z: GLbyte, w: GLbyte) => |c| { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
     fn glColor4bv(v: *const GLbyte) => |c| {
@@ -1434,19 +1318,19 @@ gl_entry_points! {
         }
         if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
     }
-    [list] fn glColor4us(x: GLushort, y: GLushort, z: GLushort, w: GLushort) => |c| { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, (w as f64 / 65535.0) as f32) }
+    [list] fn glColor4us(x: GLushort, y: GLushort, z: GLushort, w: GLushort) => |c| { c.gl.color_4f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0), unorm(w as f64, 65535.0)) }
     fn glColor4usv(v: *const GLushort) => |c| {
         if record_vector::<4, u16>(c, v, move |p| unsafe { glColor4usv(p) }) {
             return;
         }
-        if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.color_4f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, (w as f64 / 65535.0) as f32) }
+        if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.color_4f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0), unorm(w as f64, 65535.0)) }
     }
-    [list] fn glColor4ui(x: GLuint, y: GLuint, z: GLuint, w: GLuint) => |c| { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, (w as f64 / 4294967295.0) as f32) }
+    [list] fn glColor4ui(x: GLuint, y: GLuint, z: GLuint, w: GLuint) => |c| { c.gl.color_4f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0), unorm(w as f64, 4294967295.0)) }
     fn glColor4uiv(v: *const GLuint) => |c| {
         if record_vector::<4, u32>(c, v, move |p| unsafe { glColor4uiv(p) }) {
             return;
         }
-        if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.color_4f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, (w as f64 / 4294967295.0) as f32) }
+        if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.color_4f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0), unorm(w as f64, 4294967295.0)) }
     }
     [list] fn glNormal3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.normal_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
     fn glNormal3bv(v: *const GLbyte) => |c| {
@@ -1762,21 +1646,21 @@ gl_entry_points! {
         if record_vector::<4, u8>(c, v, move |p| unsafe { glVertexAttrib4Nubv(index, p) }) {
             return;
         }
-        if let Some([x, y, z, w]) = rd::<4, u8>(v) { c.gl.vertex_attrib_4f(index, (x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32, (w as f64 / 255.0) as f32) }
+        if let Some([x, y, z, w]) = rd::<4, u8>(v) { c.gl.vertex_attrib_4f(index, unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0), unorm(w as f64, 255.0)) }
     }
     fn glVertexAttrib4Nusv(index: GLuint, v: *const GLushort) => |c| {
         if record_vector::<4, u16>(c, v, move |p| unsafe { glVertexAttrib4Nusv(index, p) }) {
             return;
         }
-        if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.vertex_attrib_4f(index, (x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32, (w as f64 / 65535.0) as f32) }
+        if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.vertex_attrib_4f(index, unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0), unorm(w as f64, 65535.0)) }
     }
     fn glVertexAttrib4Nuiv(index: GLuint, v: *const GLuint) => |c| {
         if record_vector::<4, u32>(c, v, move |p| unsafe { glVertexAttrib4Nuiv(index, p) }) {
             return;
         }
-        if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.vertex_attrib_4f(index, (x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32, (w as f64 / 4294967295.0) as f32) }
+        if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.vertex_attrib_4f(index, unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0), unorm(w as f64, 4294967295.0)) }
     }
-    [list] fn glVertexAttrib4Nub(index: GLuint, x: GLubyte, y: GLubyte, z: GLubyte, w: GLubyte) => |c| { c.gl.vertex_attrib_4f(index, (x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32, (w as f64 / 255.0) as f32) }
+    [list] fn glVertexAttrib4Nub(index: GLuint, x: GLubyte, y: GLubyte, z: GLubyte, w: GLubyte) => |c| { c.gl.vertex_attrib_4f(index, unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0), unorm(w as f64, 255.0)) }
     [list] fn glSecondaryColor3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
     fn glSecondaryColor3bv(v: *const GLbyte) => |c| {
         if record_vector::<3, i8>(c, v, move |p| unsafe { glSecondaryColor3bv(p) }) {
@@ -1811,26 +1695,26 @@ gl_entry_points! {
         }
         if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
     }
-    [list] fn glSecondaryColor3ub(x: GLubyte, y: GLubyte, z: GLubyte) => |c| { c.gl.secondary_color_3f((x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32) }
+    [list] fn glSecondaryColor3ub(x: GLubyte, y: GLubyte, z: GLubyte) => |c| { c.gl.secondary_color_3f(unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0)) }
     fn glSecondaryColor3ubv(v: *const GLubyte) => |c| {
         if record_vector::<3, u8>(c, v, move |p| unsafe { glSecondaryColor3ubv(p) }) {
             return;
         }
-        if let Some([x, y, z]) = rd::<3, u8>(v) { c.gl.secondary_color_3f((x as f64 / 255.0) as f32, (y as f64 / 255.0) as f32, (z as f64 / 255.0) as f32) }
+        if let Some([x, y, z]) = rd::<3, u8>(v) { c.gl.secondary_color_3f(unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0)) }
     }
-    [list] fn glSecondaryColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.secondary_color_3f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32) }
+    [list] fn glSecondaryColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.secondary_color_3f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0)) }
     fn glSecondaryColor3usv(v: *const GLushort) => |c| {
         if record_vector::<3, u16>(c, v, move |p| unsafe { glSecondaryColor3usv(p) }) {
             return;
         }
-        if let Some([x, y, z]) = rd::<3, u16>(v) { c.gl.secondary_color_3f((x as f64 / 65535.0) as f32, (y as f64 / 65535.0) as f32, (z as f64 / 65535.0) as f32) }
+        if let Some([x, y, z]) = rd::<3, u16>(v) { c.gl.secondary_color_3f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0)) }
     }
-    [list] fn glSecondaryColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.secondary_color_3f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32) }
+    [list] fn glSecondaryColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.secondary_color_3f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0)) }
     fn glSecondaryColor3uiv(v: *const GLuint) => |c| {
         if record_vector::<3, u32>(c, v, move |p| unsafe { glSecondaryColor3uiv(p) }) {
             return;
         }
-        if let Some([x, y, z]) = rd::<3, u32>(v) { c.gl.secondary_color_3f((x as f64 / 4294967295.0) as f32, (y as f64 / 4294967295.0) as f32, (z as f64 / 4294967295.0) as f32) }
+        if let Some([x, y, z]) = rd::<3, u32>(v) { c.gl.secondary_color_3f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0)) }
     }
     fn glFogCoordfv(v: *const GLfloat) => |c| {
         if record_vector::<1, f32>(c, v, move |p| unsafe { glFogCoordfv(p) }) {
@@ -1859,7 +1743,7 @@ gl_entry_points! {
     ) => |c| {
         let src = AttribSource::Generic(index.min(255) as u8);
         c.arrays.set_pointer(&mut c.gl, src, pointer as *const u8, |g, d| {
-            g.vertex_attrib_pointer(index, size, ty, b(normalized), stride, d)
+            g.vertex_attrib_pointer(index, size, ty, as_bool(normalized), stride, d)
         });
     }
     fn glVertexPointer(size: GLint, ty: GLenum, stride: GLsizei, pointer: *const c_void) => |c| {

@@ -26,9 +26,8 @@
 //! - glPrioritizeTextures / glAreTexturesResident: every texture is
 //!   resident; priorities are validated, not kept.
 
-use crate::context::OsContext;
-use crate::entry::{gl_entry_points, rd, rd_vec, wr};
-use crate::types::*;
+use crate::abi::*;
+use crate::context::{record_call, with_ctx, OsContext};
 use gl::enums::*;
 use std::collections::BTreeMap;
 use std::ffi::c_void;

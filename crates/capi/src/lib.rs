@@ -103,6 +103,7 @@
 #[global_allocator]
 static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
+pub mod abi;
 pub mod array_draws;
 pub mod arrays;
 pub mod attribs;
@@ -119,7 +120,6 @@ pub mod pixel_path;
 pub mod pixels;
 pub mod procs;
 pub mod queries;
-pub mod types;
 
 pub use array_draws::*;
 pub use attribs::*;
@@ -131,8 +131,8 @@ pub use pixel_path::*;
 pub use pixels::*;
 pub use queries::*;
 // Each entry-point module has its own table; the crate root names entry's.
+pub use abi::*;
 pub use entry::{lookup, NAMES};
 pub use lists::*;
 pub use osmesa::*;
 pub use osmesa_enums::*;
-pub use types::*;

@@ -12,8 +12,8 @@
 //! records its error, raised when the list runs. Pixel images
 //! (glDrawPixels, glBitmap) are copied at compile time too.
 
-use crate::context::{self, guard, with_ctx, OsContext};
-use crate::types::*;
+use crate::abi::*;
+use crate::context::{guard, record_call, with_ctx, OsContext};
 use gl::enums::*;
 use std::collections::BTreeMap;
 use std::rc::Rc;
@@ -55,17 +55,6 @@ impl OsContext {
     pub fn compiling(&self) -> bool {
         self.lists.compiling.is_some() && self.lists.replaying == 0
     }
-}
-
-/// [`OsContext::record`] on the current context, from outside `with_ctx`.
-pub fn record(cmd: impl Fn() + 'static) -> bool {
-    let p = context::current();
-    if p.is_null() {
-        return false;
-    }
-    // SAFETY: the current context, not otherwise borrowed here (entry
-    // points call this before `with_ctx`).
-    guard(false, || unsafe { &mut *p }.record(cmd))
 }
 
 #[no_mangle]
@@ -126,7 +115,7 @@ fn call_list(n: u32) {
 #[no_mangle]
 pub extern "C" fn glCallList(list: GLuint) {
     guard((), || {
-        if record(move || call_list(list)) {
+        if record_call(move || call_list(list)) {
             return;
         }
         call_list(list)
@@ -176,7 +165,7 @@ pub unsafe extern "C" fn glCallLists(n: GLsizei, ty: GLenum, lists: *const std::
         let base = with_ctx(0, |c| c.lists.base);
         let names: Vec<u32> = names.iter().map(|&x| x.wrapping_add(base)).collect();
         let replay = names.clone();
-        if record(move || replay.iter().for_each(|&l| call_list(l))) {
+        if record_call(move || replay.iter().for_each(|&l| call_list(l))) {
             return;
         }
         names.iter().for_each(|&l| call_list(l));
@@ -244,7 +233,7 @@ pub extern "C" fn glIsList(list: GLuint) -> GLboolean {
 #[no_mangle]
 pub extern "C" fn glListBase(base: GLuint) {
     guard((), || {
-        if record(move || glListBase(base)) {
+        if record_call(move || glListBase(base)) {
             return;
         }
         with_ctx((), |c| {

@@ -1,8 +1,8 @@
 //! The OSMesa context API (Mesa's `GL/osmesa.h`), C ABI.
 
+use crate::abi::*;
 use crate::context::{self, guard, with_ctx, OsContext};
 use crate::osmesa_enums::*;
-use crate::types::*;
 use std::ffi::{c_char, c_void, CStr};
 
 /// Largest buffer width/height accepted (OSMESA_MAX_WIDTH/HEIGHT).

@@ -6,9 +6,9 @@
 //! and bias, index shift/offset and zoom kept by [`crate::legacy`] apply
 //! when the rectangle is drawn.
 
-use crate::context::{with_ctx, OsContext};
-use crate::entry::{gl_entry_points, image_bytes, rd, record_vector};
-use crate::types::*;
+use crate::abi::*;
+use crate::context::{record_call, record_vector, with_ctx, OsContext};
+use crate::entry::image_bytes;
 use gl::enums::*;
 use gl::pixel_path::PixelTransfer;
 use std::ffi::c_void;

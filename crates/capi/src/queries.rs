@@ -5,9 +5,8 @@
 //! already there (glTexGen{d,i}v, transpose double matrices,
 //! glPointParameteriv).
 
-use crate::context::OsContext;
-use crate::entry::{gl_entry_points, rd, rd_vec, record_vector, wr};
-use crate::types::*;
+use crate::abi::*;
+use crate::context::{record_call, record_vector, with_ctx, OsContext};
 use gl::enums::*;
 use gl::vertex::AttribSource;
 use std::ffi::c_void;
