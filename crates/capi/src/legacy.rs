@@ -167,11 +167,6 @@ pub fn get(c: &OsContext, pname: u32) -> Option<Vec<f64>> {
     })
 }
 
-/// Sets the current colour index (no effect on RGBA rendering).
-fn index(c: &mut OsContext, v: f32) {
-    c.legacy.current_index = v;
-}
-
 /// Whether the polygon-stipple pattern may be read/written at `p`: with a
 /// pixel buffer bound the pointer is an offset, not memory.
 fn stipple_through_buffer(c: &mut OsContext, pack: bool) -> bool {
@@ -252,52 +247,8 @@ fn compressed(c: &mut OsContext) {
 }
 
 gl_entry_points! {
-    // ---- colour index (RGBA contexts keep the values only) ----
-    [list] fn glIndexf(v: GLfloat) => |c| { index(c, v) }
-    [list] fn glIndexd(v: GLdouble) => |c| { index(c, v as f32) }
-    [list] fn glIndexi(v: GLint) => |c| { index(c, v as f32) }
-    [list] fn glIndexs(v: GLshort) => |c| { index(c, v as f32) }
-    [list] fn glIndexub(v: GLubyte) => |c| { index(c, v as f32) }
-    fn glIndexfv(v: *const GLfloat) => |c| {
-        if let Some([x]) = rd::<1, f32>(v) {
-            if c.record(move || unsafe { glIndexf(x) }) {
-                return;
-            }
-            index(c, x as f32)
-        }
-    }
-    fn glIndexdv(v: *const GLdouble) => |c| {
-        if let Some([x]) = rd::<1, f64>(v) {
-            if c.record(move || unsafe { glIndexd(x) }) {
-                return;
-            }
-            index(c, x as f32)
-        }
-    }
-    fn glIndexiv(v: *const GLint) => |c| {
-        if let Some([x]) = rd::<1, i32>(v) {
-            if c.record(move || unsafe { glIndexi(x) }) {
-                return;
-            }
-            index(c, x as f32)
-        }
-    }
-    fn glIndexsv(v: *const GLshort) => |c| {
-        if let Some([x]) = rd::<1, i16>(v) {
-            if c.record(move || unsafe { glIndexs(x) }) {
-                return;
-            }
-            index(c, x as f32)
-        }
-    }
-    fn glIndexubv(v: *const GLubyte) => |c| {
-        if let Some([x]) = rd::<1, u8>(v) {
-            if c.record(move || unsafe { glIndexub(x) }) {
-                return;
-            }
-            index(c, x as f32)
-        }
-    }
+    // ---- colour index (RGBA contexts keep the values only; glIndex* are
+    // in crate::variants) ----
     [list] fn glIndexMask(mask: GLuint) => |c| {
         if !c.gl.reject_in_begin() { c.legacy.index_mask = mask }
     }
@@ -559,31 +510,6 @@ gl_entry_points! {
             c.gl.record_error(GL_INVALID_OPERATION);
         }
     }
-
-    // ---- rectangles from vectors ----
-    fn glRectfv(v1: *const GLfloat, v2: *const GLfloat) => |c| {
-        if let (Some([a, b2]), Some([x, y])) = (rd::<2, f32>(v1), rd::<2, f32>(v2)) {
-            rect(c, a, b2, x, y)
-        }
-    }
-    fn glRectdv(v1: *const GLdouble, v2: *const GLdouble) => |c| {
-        if let (Some([a, b2]), Some([x, y])) = (rd::<2, f64>(v1), rd::<2, f64>(v2)) {
-            rect(c, a as f32, b2 as f32, x as f32, y as f32)
-        }
-    }
-    fn glRectiv(v1: *const GLint, v2: *const GLint) => |c| {
-        if let (Some([a, b2]), Some([x, y])) = (rd::<2, i32>(v1), rd::<2, i32>(v2)) {
-            rect(c, a as f32, b2 as f32, x as f32, y as f32)
-        }
-    }
-    fn glRects(x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort) => |c| {
-        rect(c, x1 as f32, y1 as f32, x2 as f32, y2 as f32)
-    }
-    fn glRectsv(v1: *const GLshort, v2: *const GLshort) => |c| {
-        if let (Some([a, b2]), Some([x, y])) = (rd::<2, i16>(v1), rd::<2, i16>(v2)) {
-            rect(c, a as f32, b2 as f32, x as f32, y as f32)
-        }
-    }
 }
 
 /// Replays a recorded glPolygonStipple.
@@ -593,15 +519,6 @@ fn with_stipple(m: &[u8]) {
             c.legacy.polygon_stipple.copy_from_slice(m);
         }
     })
-}
-
-/// glRect* (recorded as glRectf while compiling a list).
-fn rect(c: &mut OsContext, x1: f32, y1: f32, x2: f32, y2: f32) {
-    if c.record(move || unsafe { crate::entry::glRectf(x1, y1, x2, y2) }) {
-        return;
-    }
-    c.gl.rectf(x1, y1, x2, y2);
-    c.dirty = true;
 }
 
 /// glPixelTransfer{f,i}.

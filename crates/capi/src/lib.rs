@@ -120,6 +120,7 @@ pub mod pixel_path;
 pub mod pixels;
 pub mod procs;
 pub mod queries;
+pub mod variants;
 
 pub use array_draws::*;
 pub use attribs::*;
@@ -130,6 +131,7 @@ pub use occlusion::*;
 pub use pixel_path::*;
 pub use pixels::*;
 pub use queries::*;
+pub use variants::*;
 // Each entry-point module has its own table; the crate root names entry's.
 pub use abi::*;
 pub use entry::{lookup, NAMES};

@@ -15,6 +15,7 @@ pub fn lookup(name: &str) -> Option<*const ()> {
         crate::array_draws::lookup_extra,
         crate::occlusion::lookup,
         crate::pixel_path::lookup,
+        crate::variants::lookup,
     ] {
         if let Some(p) = table(name) {
             return Some(p);
