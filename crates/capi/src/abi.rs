@@ -109,7 +109,7 @@ pub(crate) fn unorm(x: f64, max: f64) -> f32 {
 
 /// Generates, from a table of entries, the `#[no_mangle] extern "C"`
 /// functions and the module's `lookup` (its part of the
-/// OSMesaGetProcAddress table, [`crate::procs`]) and `NAMES`.
+/// OSMesaGetProcAddress table, [`crate::procs`]).
 ///
 /// An entry is `fn glName(arg: CType, ...) -> Ret [default] => |c| { body }`:
 /// the function runs `body` on the thread's current context `c`, returns
@@ -144,9 +144,6 @@ macro_rules! gl_entry_points {
                 _ => None,
             }
         }
-
-        /// Every gl* entry point exported.
-        pub const NAMES: &[&str] = &[$(stringify!($name)),*];
     };
     // Compiled into display lists (GL 2.1 §5.4): record a re-issue of the
     // call; in GL_COMPILE mode do not execute it now.

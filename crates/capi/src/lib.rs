@@ -104,13 +104,16 @@
 static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 pub mod abi;
-pub mod array_draws;
 pub mod arrays;
 pub mod attribs;
 pub mod buffers;
 pub mod context;
 pub mod debug_env;
-pub mod entry;
+pub mod drawing;
+pub mod fixed_function;
+pub mod framebuffer;
+pub mod framebuffer_objects;
+pub mod layer_state;
 pub mod legacy;
 pub mod lists;
 pub mod occlusion;
@@ -120,21 +123,37 @@ pub mod pixel_path;
 pub mod pixels;
 pub mod procs;
 pub mod queries;
+pub mod rasterization;
+pub mod shaders;
+pub mod textures;
+pub mod transform;
+pub mod uniforms;
 pub mod variants;
+pub mod vertex_arrays;
 
-pub use array_draws::*;
+// The C ABI at the crate root, as C sees it: the types, the OSMesa API
+// and every gl* entry point. Each entry-point module has its own `lookup`;
+// the root's is the whole OSMesaGetProcAddress table.
+pub use abi::*;
 pub use attribs::*;
 pub use buffers::*;
-pub use entry::*;
+pub use drawing::*;
+pub use fixed_function::*;
+pub use framebuffer::*;
+pub use framebuffer_objects::*;
 pub use legacy::*;
-pub use occlusion::*;
-pub use pixel_path::*;
-pub use pixels::*;
-pub use queries::*;
-pub use variants::*;
-// Each entry-point module has its own table; the crate root names entry's.
-pub use abi::*;
-pub use entry::{lookup, NAMES};
 pub use lists::*;
+pub use occlusion::*;
 pub use osmesa::*;
 pub use osmesa_enums::*;
+pub use pixel_path::*;
+pub use pixels::*;
+pub use procs::{lookup, OSMesaGetProcAddress};
+pub use queries::*;
+pub use rasterization::*;
+pub use shaders::*;
+pub use textures::*;
+pub use transform::*;
+pub use uniforms::*;
+pub use variants::*;
+pub use vertex_arrays::*;

@@ -8,54 +8,15 @@
 //! Vertex-array draws (glDrawArrays, glDrawElements, glDrawRangeElements,
 //! glMultiDraw*, glArrayElement) dereference the enabled arrays at compile
 //! time and record the elements' values, replayed as glBegin / attribute
-//! calls / glEnd (`crate::array_draws::compile_draw`); an invalid call
+//! calls / glEnd (`crate::drawing::compile_draw`); an invalid call
 //! records its error, raised when the list runs. Pixel images
 //! (glDrawPixels, glBitmap) are copied at compile time too.
 
 use crate::abi::*;
-use crate::context::{guard, record_call, with_ctx, OsContext};
+use crate::context::{guard, record_call, with_ctx};
+use crate::layer_state::MAX_LIST_NESTING;
 use gl::enums::*;
-use std::collections::BTreeMap;
 use std::rc::Rc;
-
-/// A recorded command.
-pub type Cmd = Box<dyn Fn()>;
-
-/// GL_MAX_LIST_NESTING.
-pub const MAX_LIST_NESTING: u32 = 64;
-
-/// Display-list state of one context.
-#[derive(Default)]
-pub struct Lists {
-    pub lists: BTreeMap<u32, Rc<Vec<Cmd>>>,
-    /// The list being compiled: name, mode, commands so far.
-    pub compiling: Option<(u32, u32, Vec<Cmd>)>,
-    /// glCallList nesting depth (recording is off while replaying).
-    pub replaying: u32,
-    pub base: u32,
-}
-
-impl OsContext {
-    /// Records `cmd` into the list being compiled. True when the call
-    /// must not execute now (GL_COMPILE).
-    pub fn record(&mut self, cmd: impl Fn() + 'static) -> bool {
-        if self.lists.replaying > 0 {
-            return false;
-        }
-        match &mut self.lists.compiling {
-            Some((_, mode, cmds)) => {
-                cmds.push(Box::new(cmd));
-                *mode == GL_COMPILE
-            }
-            None => false,
-        }
-    }
-
-    /// Whether a list is being compiled (outside replay).
-    pub fn compiling(&self) -> bool {
-        self.lists.compiling.is_some() && self.lists.replaying == 0
-    }
-}
 
 #[no_mangle]
 pub extern "C" fn glNewList(list: GLuint, mode: GLenum) {

@@ -7,8 +7,8 @@
 //! when the rectangle is drawn.
 
 use crate::abi::*;
+use crate::buffers::image_bytes;
 use crate::context::{record_call, with_ctx, OsContext};
-use crate::entry::image_bytes;
 use gl::enums::*;
 use gl::pixel_path::PixelTransfer;
 use std::ffi::c_void;

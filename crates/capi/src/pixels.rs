@@ -4,8 +4,8 @@
 //! (glCopyTexImage*, glCopyTexSubImage*; GL 2.1 §3.8.2, §6.1.4).
 
 use crate::abi::*;
+use crate::buffers::image_bytes;
 use crate::context::{record_call, with_ctx, OsContext};
-use crate::entry::image_bytes;
 use gl::enums::*;
 use std::ffi::c_void;
 
