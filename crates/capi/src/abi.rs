@@ -1,7 +1,7 @@
 //! The C side of the boundary, depending on no other module of the crate:
 //! the GL C types (x86-64 / aarch64 Linux), reading and writing the memory
 //! C pointers designate, C argument values to GL values, and
-//! [`gl_entry_points!`], which turns a table of `fn glX(args) => |c| body`
+//! `gl_entry_points!`, which turns a table of `fn glX(args) => |c| body`
 //! into the exported `extern "C"` functions.
 
 use std::ffi::{c_char, CStr};

@@ -3,7 +3,7 @@
 //! glReadPixels (into client memory or the pixel pack buffer), the pixel
 //! store modes, and glFinish / glFlush — which, with glReadPixels, copy
 //! the default framebuffer into the client's buffer
-//! ([`OsContext::sync`]).
+//! ([`crate::context::OsContext::sync`]).
 
 use crate::abi::*;
 use crate::buffers::MAX_BUFFER_BYTES;

@@ -1,7 +1,7 @@
 //! Texture objects, images and parameters (GL 2.1 §3.8, §6.1.3–§6.1.4):
 //! names and bindings, the active unit, glTexImage{1,2,3}D and
 //! glTexSubImage2D (images from client memory or the pixel unpack buffer,
-//! [`crate::buffers::image_bytes`]), parameters and their queries, and
+//! `buffers::image_bytes`), parameters and their queries, and
 //! mipmap generation. Reading images back and the other sub-image and
 //! copy commands are [`crate::pixels`].
 

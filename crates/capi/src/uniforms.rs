@@ -1,7 +1,7 @@
 //! Uniform variables of the current program (GL 2.1 §2.15.3, §6.1.14):
 //! locations, the glUniform* setters (scalars compiled into display lists;
 //! the array forms read `count` elements, at most
-//! [`MAX_UNIFORM_ELEMENTS`], and execute at once) and glGetUniform*v.
+//! `MAX_UNIFORM_ELEMENTS`, and execute at once) and glGetUniform*v.
 
 use crate::abi::*;
 use crate::context::{record_call, with_ctx};
