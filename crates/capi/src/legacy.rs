@@ -3,8 +3,8 @@
 //! only. Each keeps the state GL 2.1 defines (so glGet* returns it) and
 //! validates its arguments with the errors the spec gives; what is *not*
 //! applied when drawing is listed in the crate docs:
-//! - color-index calls (glIndex*, glIndexMask, glClearIndex,
-//!   glIndexPointer): legal in RGBA mode, no effect on RGBA rendering
+//! - color-index calls (glIndexMask, glClearIndex, glIndexPointer; glIndex*
+//!   is generated in [`crate::variants`]): legal in RGBA mode, no effect on RGBA rendering
 //!   (GL 2.1 §2.7, §4.2.2) — as the spec says;
 //! - glSampleCoverage: no multisample buffer, so no effect — as the spec
 //!   says;

@@ -6,8 +6,7 @@
 //! Drawing from the arrays is [`crate::drawing`].
 
 use crate::abi::*;
-use crate::context::guard;
-use crate::context::{with_ctx, OsContext};
+use crate::context::{guard, with_ctx, OsContext};
 use gl::enums::*;
 use gl::vertex::AttribSource;
 use std::ffi::c_void;
