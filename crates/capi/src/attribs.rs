@@ -3,8 +3,8 @@
 //! once); the context keeps the GL state ([`gl::attrib_stack`]), this
 //! layer the client pointers of the vertex arrays that go with it.
 
-use crate::entry::gl_entry_points;
-use crate::types::*;
+use crate::abi::*;
+use crate::context::{record_call, with_ctx};
 use gl::enums::*;
 
 gl_entry_points! {

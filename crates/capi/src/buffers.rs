@@ -5,23 +5,21 @@
 //! through GL_PIXEL_PACK_BUFFER and GL_PIXEL_UNPACK_BUFFER (GL 2.1 §2.9,
 //! §4.3.5, §6.1.13).
 
+use crate::abi::*;
 use crate::arrays::array_state;
-use crate::context::OsContext;
-use crate::entry::{gl_entry_points, wr};
-use crate::types::*;
+use crate::context::{with_ctx, OsContext};
+use crate::layer_state::Mapping;
 use gl::enums::*;
 use gl::vertex::AttribSource;
 use std::ffi::c_void;
 
+/// Largest glBufferData/glBufferSubData copy (larger: GL_OUT_OF_MEMORY
+/// from the context, or GL_INVALID_VALUE).
+pub(crate) const MAX_BUFFER_BYTES: usize = 1 << 31;
+
 /// A failed transfer whose GL error has been recorded.
 #[derive(Debug)]
 pub struct Recorded;
-
-/// A mapped buffer: the copy handed to the client and the access asked.
-pub struct Mapping {
-    pub data: Box<[u8]>,
-    pub access: u32,
-}
 
 /// The bytes `offset..offset + len` of the buffer bound to `target` (a
 /// pixel buffer target) for an unpack. GL_INVALID_OPERATION when the range
@@ -51,6 +49,53 @@ pub fn write_pixel_buffer(c: &mut OsContext, offset: usize, bytes: &[u8]) {
         return;
     }
     c.gl.buffer_sub_data(GL_PIXEL_PACK_BUFFER, offset as isize, bytes);
+}
+
+/// The client image a glTexImage*/glTexSubImage* call reads: `w*h*d`
+/// pixels of `format`/`ty` at the unpack alignment, from client memory or,
+/// with a buffer bound to GL_PIXEL_UNPACK_BUFFER, from that buffer at the
+/// offset `data` (GL 2.1 §4.3.5). Ok(None): no data (null pointer, an
+/// unknown format/type or an empty image: the context validates those).
+/// Err: an error was recorded (the range read lies outside the buffer, or
+/// the buffer is mapped: GL_INVALID_OPERATION); the call must do nothing.
+pub(crate) unsafe fn image_bytes(
+    c: &mut OsContext,
+    w: GLsizei,
+    h: GLsizei,
+    d: GLsizei,
+    format: GLenum,
+    ty: GLenum,
+    data: *const c_void,
+) -> Result<Option<Vec<u8>>, crate::buffers::Recorded> {
+    let pbo = c.gl.bound_buffer(GL_PIXEL_UNPACK_BUFFER);
+    if (data.is_null() && pbo == 0) || w <= 0 || h <= 0 || d <= 0 {
+        return Ok(None);
+    }
+    if gl::objects::pixel_size(format, ty).is_none() {
+        return Ok(None);
+    }
+    let align =
+        c.gl.get_integerv(GL_UNPACK_ALIGNMENT)
+            .first()
+            .copied()
+            .unwrap_or(4);
+    let row = gl::objects::row_stride(w as usize, format, ty, align.max(1) as usize);
+    let Some(len) = row
+        .checked_mul(h as usize)
+        .and_then(|x| x.checked_mul(d as usize))
+    else {
+        return Ok(None);
+    };
+    if len > MAX_BUFFER_BYTES {
+        return Ok(None);
+    }
+    if pbo != 0 {
+        return crate::buffers::read_pixel_buffer(c, GL_PIXEL_UNPACK_BUFFER, data as usize, len)
+            .map(Some);
+    }
+    // SAFETY: GL's contract: the client image holds w x h x d pixels of
+    // format/type laid out per the unpack state.
+    Ok(Some(unsafe { bytes(data, len) }.to_vec()))
 }
 
 /// Whether a draw would source data from a mapped buffer (enabled arrays
@@ -97,6 +142,44 @@ fn bound(c: &mut OsContext, target: u32) -> Option<u32> {
 }
 
 gl_entry_points! {
+    // ---- buffer objects ----
+    fn glGenBuffers(n: GLsizei, names: *mut GLuint) => |c| {
+        let v = c.gl.gen_buffers(n);
+        wr(names, &v);
+    }
+    fn glDeleteBuffers(n: GLsizei, names: *const GLuint) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        if !c.gl.reject_in_begin() { crate::buffers::forget_mappings(c, &rd_vec(names, n as i64)) }
+        c.gl.delete_buffers(&rd_vec(names, n as i64));
+    }
+    fn glIsBuffer(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_buffer(name) as GLboolean }
+    fn glBindBuffer(target: GLenum, name: GLuint) => |c| { c.gl.bind_buffer(target, name) }
+    fn glBufferData(target: GLenum, size: GLsizeiptr, data: *const c_void, usage: GLenum) => |c| {
+        // Re-specifying the store ends a mapping (not an error, GL 2.1 §2.9).
+        let b = c.gl.bound_buffer(target);
+        if !c.gl.in_begin_end() { c.mapped.remove(&b); }
+        let bytes = if data.is_null() || size <= 0 || size as usize > MAX_BUFFER_BYTES {
+            None
+        } else {
+            // SAFETY: GL's contract: `size` bytes at `data`.
+            Some(bytes(data, size as usize))
+        };
+        c.gl.buffer_data(target, size, bytes, usage);
+    }
+    fn glBufferSubData(target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *const c_void) => |c| {
+        if !c.gl.in_begin_end() && c.mapped.contains_key(&c.gl.bound_buffer(target)) {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        if size < 0 || data.is_null() || size as usize > MAX_BUFFER_BYTES {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        // SAFETY: GL's contract: `size` bytes at `data`.
+        c.gl.buffer_sub_data(target, offset, bytes(data, size as usize));
+    }
+
+    // ---- mapping and queries ----
     fn glMapBuffer(target: GLenum, access: GLenum) -> *mut c_void [std::ptr::null_mut()] => |c| {
         if c.gl.reject_in_begin() {
             return std::ptr::null_mut();

@@ -11,7 +11,9 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
 
 /// GL enums the context code needs.
-use gl::enums::{GL_FLOAT, GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_UNSIGNED_SHORT_5_6_5};
+use gl::enums::{
+    GL_COMPILE, GL_FLOAT, GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_UNSIGNED_SHORT_5_6_5,
+};
 
 /// One OSMesa context: a [`gl::Context`] plus the client buffer it renders
 /// into.
@@ -40,11 +42,11 @@ pub struct OsContext {
     /// Client-memory vertex array pointers.
     pub arrays: ClientArrays,
     /// Display lists.
-    pub lists: crate::lists::Lists,
+    pub lists: crate::layer_state::Lists,
     /// Buffer objects mapped by glMapBuffer, by name.
-    pub mapped: std::collections::BTreeMap<u32, crate::buffers::Mapping>,
+    pub mapped: std::collections::BTreeMap<u32, crate::layer_state::Mapping>,
     /// State of the GL 1.x calls kept at the C level ([`crate::legacy`]).
-    pub legacy: crate::legacy::Legacy,
+    pub legacy: crate::layer_state::Legacy,
     /// glPushClientAttrib's stack (the client pointers of the arrays).
     pub client_attrib_stack: Vec<(u32, crate::arrays::ClientArrays)>,
     /// Pixels changed since the last copy to the client buffer.
@@ -86,7 +88,7 @@ impl OsContext {
             dirty: true,
             mapped: std::collections::BTreeMap::new(),
             client_attrib_stack: Vec::new(),
-            legacy: crate::legacy::Legacy::default(),
+            legacy: crate::layer_state::Legacy::default(),
             depth_copy: DepthCopy::None,
             arrays: ClientArrays::default(),
             lists: Default::default(),
@@ -339,6 +341,28 @@ fn decode_pixel(src: &[u8], format: u32, ty: u32) -> [u8; 4] {
     }
 }
 
+impl OsContext {
+    /// Records `cmd` into the list being compiled. True when the call
+    /// must not execute now (GL_COMPILE).
+    pub fn record(&mut self, cmd: impl Fn() + 'static) -> bool {
+        if self.lists.replaying > 0 {
+            return false;
+        }
+        match &mut self.lists.compiling {
+            Some((_, mode, cmds)) => {
+                cmds.push(Box::new(cmd));
+                *mode == GL_COMPILE
+            }
+            None => false,
+        }
+    }
+
+    /// Whether a list is being compiled (outside replay).
+    pub fn compiling(&self) -> bool {
+        self.lists.compiling.is_some() && self.lists.replaying == 0
+    }
+}
+
 thread_local! {
     static CURRENT: Cell<*mut OsContext> = const { Cell::new(std::ptr::null_mut()) };
 }
@@ -402,6 +426,37 @@ pub fn with_ctx<R>(default: R, f: impl FnOnce(&mut OsContext) -> R) -> R {
     // GL entry points do not re-enter, so this is the only reference.
     let ctx = unsafe { &mut *p };
     caught(catch_unwind(AssertUnwindSafe(|| f(ctx))), default)
+}
+
+/// [`OsContext::record`] on the current context, from outside `with_ctx`.
+pub fn record_call(cmd: impl Fn() + 'static) -> bool {
+    let p = current();
+    if p.is_null() {
+        return false;
+    }
+    // SAFETY: the current context, not otherwise borrowed here (entry
+    // points call this before `with_ctx`).
+    guard(false, || unsafe { &mut *p }.record(cmd))
+}
+
+/// While a display list is being compiled, records a replay of a vector
+/// call: the `N` values at `v` are read now (a list keeps values, not the
+/// caller's pointer) and `replay` gets a pointer to the copy. True when
+/// the call must not also run now (GL_COMPILE); false when it must
+/// (GL_COMPILE_AND_EXECUTE, or not compiling, or a null pointer).
+pub(crate) fn record_vector<const N: usize, T: Copy + 'static>(
+    c: &mut OsContext,
+    v: *const T,
+    replay: impl Fn(*const T) + 'static,
+) -> bool {
+    if !c.compiling() {
+        return false;
+    }
+    // SAFETY: GL's contract for vector arguments: N values at v (or null).
+    match unsafe { crate::abi::rd::<N, T>(v) } {
+        Some(arr) => c.record(move || replay(arr.as_ptr())),
+        None => false,
+    }
 }
 
 /// Runs `f` with panics caught (for entry points without a context).

@@ -3,8 +3,8 @@
 //! only. Each keeps the state GL 2.1 defines (so glGet* returns it) and
 //! validates its arguments with the errors the spec gives; what is *not*
 //! applied when drawing is listed in the crate docs:
-//! - color-index calls (glIndex*, glIndexMask, glClearIndex,
-//!   glIndexPointer): legal in RGBA mode, no effect on RGBA rendering
+//! - color-index calls (glIndexMask, glClearIndex, glIndexPointer; glIndex*
+//!   is generated in [`crate::variants`]): legal in RGBA mode, no effect on RGBA rendering
 //!   (GL 2.1 §2.7, §4.2.2) — as the spec says;
 //! - glSampleCoverage: no multisample buffer, so no effect — as the spec
 //!   says;
@@ -26,152 +26,11 @@
 //! - glPrioritizeTextures / glAreTexturesResident: every texture is
 //!   resident; priorities are validated, not kept.
 
-use crate::context::OsContext;
-use crate::entry::{gl_entry_points, rd, rd_vec, wr};
-use crate::types::*;
+use crate::abi::*;
+use crate::context::{record_call, with_ctx, OsContext};
+use crate::layer_state::{MAX_PIXEL_MAP_TABLE, PIXEL_MAPS};
 use gl::enums::*;
-use std::collections::BTreeMap;
 use std::ffi::c_void;
-
-/// GL_MAX_PIXEL_MAP_TABLE.
-pub const MAX_PIXEL_MAP_TABLE: i32 = 256;
-/// GL_MAX_NAME_STACK_DEPTH.
-pub const MAX_NAME_STACK_DEPTH: i32 = 64;
-
-/// The state of this module's entry points.
-pub struct Legacy {
-    pub current_index: f32,
-    pub clear_index: f32,
-    pub index_mask: u32,
-    pub index_pointer: usize,
-    pub index_type: u32,
-    pub index_stride: i32,
-    pub edge_flag: bool,
-    pub edge_flag_pointer: usize,
-    pub edge_flag_stride: i32,
-    pub select_buffer: usize,
-    pub select_size: i32,
-    pub feedback_buffer: usize,
-    pub feedback_size: i32,
-    pub feedback_type: u32,
-    pub line_stipple: (i32, u16),
-    pub polygon_stipple: [u8; 128],
-    pub sample_coverage: (f32, bool),
-    pub pixel_zoom: (f32, f32),
-    pub pixel_transfer: BTreeMap<u32, f32>,
-    pub pixel_maps: BTreeMap<u32, Vec<f32>>,
-    pub accum_clear: [f32; 4],
-}
-
-impl Default for Legacy {
-    fn default() -> Legacy {
-        let mut pixel_transfer = BTreeMap::new();
-        for (p, v) in [
-            (GL_MAP_COLOR, 0.0),
-            (GL_MAP_STENCIL, 0.0),
-            (GL_INDEX_SHIFT, 0.0),
-            (GL_INDEX_OFFSET, 0.0),
-            (GL_RED_SCALE, 1.0),
-            (GL_GREEN_SCALE, 1.0),
-            (GL_BLUE_SCALE, 1.0),
-            (GL_ALPHA_SCALE, 1.0),
-            (GL_DEPTH_SCALE, 1.0),
-            (GL_RED_BIAS, 0.0),
-            (GL_GREEN_BIAS, 0.0),
-            (GL_BLUE_BIAS, 0.0),
-            (GL_ALPHA_BIAS, 0.0),
-            (GL_DEPTH_BIAS, 0.0),
-        ] {
-            pixel_transfer.insert(p, v);
-        }
-        let pixel_maps = PIXEL_MAPS.iter().map(|&m| (m, vec![0.0])).collect();
-        Legacy {
-            current_index: 1.0,
-            clear_index: 0.0,
-            index_mask: u32::MAX,
-            index_pointer: 0,
-            index_type: GL_FLOAT,
-            index_stride: 0,
-            edge_flag: true,
-            edge_flag_pointer: 0,
-            edge_flag_stride: 0,
-            select_buffer: 0,
-            select_size: 0,
-            feedback_buffer: 0,
-            feedback_size: 0,
-            feedback_type: GL_2D,
-            line_stipple: (1, 0xffff),
-            polygon_stipple: [0xff; 128],
-            sample_coverage: (1.0, false),
-            pixel_zoom: (1.0, 1.0),
-            pixel_transfer,
-            pixel_maps,
-            accum_clear: [0.0; 4],
-        }
-    }
-}
-
-/// The ten pixel maps and, for each, its size query.
-const PIXEL_MAPS: [u32; 10] = [
-    GL_PIXEL_MAP_I_TO_I,
-    GL_PIXEL_MAP_S_TO_S,
-    GL_PIXEL_MAP_I_TO_R,
-    GL_PIXEL_MAP_I_TO_G,
-    GL_PIXEL_MAP_I_TO_B,
-    GL_PIXEL_MAP_I_TO_A,
-    GL_PIXEL_MAP_R_TO_R,
-    GL_PIXEL_MAP_G_TO_G,
-    GL_PIXEL_MAP_B_TO_B,
-    GL_PIXEL_MAP_A_TO_A,
-];
-
-/// glGet* values of this module's state (None: not one of them).
-pub fn get(c: &OsContext, pname: u32) -> Option<Vec<f64>> {
-    let l = &c.legacy;
-    let b = |x: bool| x as i32 as f64;
-    Some(match pname {
-        GL_CURRENT_INDEX => vec![l.current_index as f64],
-        GL_INDEX_CLEAR_VALUE => vec![l.clear_index as f64],
-        GL_INDEX_WRITEMASK => vec![l.index_mask as f64],
-        GL_INDEX_ARRAY_TYPE => vec![l.index_type as f64],
-        GL_INDEX_ARRAY_STRIDE => vec![l.index_stride as f64],
-        GL_EDGE_FLAG => vec![b(l.edge_flag)],
-        GL_EDGE_FLAG_ARRAY_STRIDE => vec![l.edge_flag_stride as f64],
-        GL_RENDER_MODE => vec![GL_RENDER as f64],
-        GL_SELECTION_BUFFER_SIZE => vec![l.select_size as f64],
-        GL_FEEDBACK_BUFFER_SIZE => vec![l.feedback_size as f64],
-        GL_FEEDBACK_BUFFER_TYPE => vec![l.feedback_type as f64],
-        GL_NAME_STACK_DEPTH => vec![0.0],
-        GL_MAX_NAME_STACK_DEPTH => vec![MAX_NAME_STACK_DEPTH as f64],
-        GL_LINE_STIPPLE_PATTERN => vec![l.line_stipple.1 as f64],
-        GL_LINE_STIPPLE_REPEAT => vec![l.line_stipple.0 as f64],
-        GL_SAMPLE_COVERAGE_VALUE => vec![l.sample_coverage.0 as f64],
-        GL_SAMPLE_COVERAGE_INVERT => vec![b(l.sample_coverage.1)],
-        GL_ZOOM_X => vec![l.pixel_zoom.0 as f64],
-        GL_ZOOM_Y => vec![l.pixel_zoom.1 as f64],
-        GL_ACCUM_CLEAR_VALUE => l.accum_clear.iter().map(|&x| x as f64).collect(),
-        GL_ACCUM_RED_BITS | GL_ACCUM_GREEN_BITS | GL_ACCUM_BLUE_BITS | GL_ACCUM_ALPHA_BITS => {
-            vec![0.0]
-        }
-        GL_INDEX_BITS => vec![0.0],
-        GL_INDEX_MODE => vec![0.0],
-        GL_RGBA_MODE => vec![1.0],
-        GL_MAX_PIXEL_MAP_TABLE => vec![MAX_PIXEL_MAP_TABLE as f64],
-        p if PIXEL_MAPS
-            .iter()
-            .any(|&m| m - GL_PIXEL_MAP_I_TO_I + GL_PIXEL_MAP_I_TO_I_SIZE == p) =>
-        {
-            let m = p - GL_PIXEL_MAP_I_TO_I_SIZE + GL_PIXEL_MAP_I_TO_I;
-            vec![l.pixel_maps.get(&m).map_or(1, |v| v.len()) as f64]
-        }
-        p => vec![*l.pixel_transfer.get(&p)? as f64],
-    })
-}
-
-/// Sets the current colour index (no effect on RGBA rendering).
-fn index(c: &mut OsContext, v: f32) {
-    c.legacy.current_index = v;
-}
 
 /// Whether the polygon-stipple pattern may be read/written at `p`: with a
 /// pixel buffer bound the pointer is an offset, not memory.
@@ -253,52 +112,8 @@ fn compressed(c: &mut OsContext) {
 }
 
 gl_entry_points! {
-    // ---- colour index (RGBA contexts keep the values only) ----
-    [list] fn glIndexf(v: GLfloat) => |c| { index(c, v) }
-    [list] fn glIndexd(v: GLdouble) => |c| { index(c, v as f32) }
-    [list] fn glIndexi(v: GLint) => |c| { index(c, v as f32) }
-    [list] fn glIndexs(v: GLshort) => |c| { index(c, v as f32) }
-    [list] fn glIndexub(v: GLubyte) => |c| { index(c, v as f32) }
-    fn glIndexfv(v: *const GLfloat) => |c| {
-        if let Some([x]) = rd::<1, f32>(v) {
-            if c.record(move || unsafe { glIndexf(x) }) {
-                return;
-            }
-            index(c, x as f32)
-        }
-    }
-    fn glIndexdv(v: *const GLdouble) => |c| {
-        if let Some([x]) = rd::<1, f64>(v) {
-            if c.record(move || unsafe { glIndexd(x) }) {
-                return;
-            }
-            index(c, x as f32)
-        }
-    }
-    fn glIndexiv(v: *const GLint) => |c| {
-        if let Some([x]) = rd::<1, i32>(v) {
-            if c.record(move || unsafe { glIndexi(x) }) {
-                return;
-            }
-            index(c, x as f32)
-        }
-    }
-    fn glIndexsv(v: *const GLshort) => |c| {
-        if let Some([x]) = rd::<1, i16>(v) {
-            if c.record(move || unsafe { glIndexs(x) }) {
-                return;
-            }
-            index(c, x as f32)
-        }
-    }
-    fn glIndexubv(v: *const GLubyte) => |c| {
-        if let Some([x]) = rd::<1, u8>(v) {
-            if c.record(move || unsafe { glIndexub(x) }) {
-                return;
-            }
-            index(c, x as f32)
-        }
-    }
+    // ---- colour index (RGBA contexts keep the values only; glIndex* are in
+    // crate::variants) ----
     [list] fn glIndexMask(mask: GLuint) => |c| {
         if !c.gl.reject_in_begin() { c.legacy.index_mask = mask }
     }
@@ -457,16 +272,6 @@ gl_entry_points! {
     }
 
     // ---- pixel transfer state (kept, not applied) ----
-    fn glPixelStoref(pname: GLenum, param: GLfloat) => |c| {
-        // GL 2.1 §3.6.1: rounded to the nearest integer (booleans: != 0).
-        let v = if param.is_nan() { 0 } else { (param as f64 + 0.5).floor().clamp(i32::MIN as f64, i32::MAX as f64) as i32 };
-        let v = if matches!(pname, GL_PACK_SWAP_BYTES | GL_PACK_LSB_FIRST | GL_UNPACK_SWAP_BYTES | GL_UNPACK_LSB_FIRST) {
-            (param != 0.0) as i32
-        } else {
-            v
-        };
-        c.gl.pixel_storei(pname, v)
-    }
     [list] fn glPixelZoom(x: GLfloat, y: GLfloat) => |c| {
         if !c.gl.reject_in_begin() { c.legacy.pixel_zoom = (x, y) }
     }
@@ -560,31 +365,6 @@ gl_entry_points! {
             c.gl.record_error(GL_INVALID_OPERATION);
         }
     }
-
-    // ---- rectangles from vectors ----
-    fn glRectfv(v1: *const GLfloat, v2: *const GLfloat) => |c| {
-        if let (Some([a, b2]), Some([x, y])) = (rd::<2, f32>(v1), rd::<2, f32>(v2)) {
-            rect(c, a, b2, x, y)
-        }
-    }
-    fn glRectdv(v1: *const GLdouble, v2: *const GLdouble) => |c| {
-        if let (Some([a, b2]), Some([x, y])) = (rd::<2, f64>(v1), rd::<2, f64>(v2)) {
-            rect(c, a as f32, b2 as f32, x as f32, y as f32)
-        }
-    }
-    fn glRectiv(v1: *const GLint, v2: *const GLint) => |c| {
-        if let (Some([a, b2]), Some([x, y])) = (rd::<2, i32>(v1), rd::<2, i32>(v2)) {
-            rect(c, a as f32, b2 as f32, x as f32, y as f32)
-        }
-    }
-    fn glRects(x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort) => |c| {
-        rect(c, x1 as f32, y1 as f32, x2 as f32, y2 as f32)
-    }
-    fn glRectsv(v1: *const GLshort, v2: *const GLshort) => |c| {
-        if let (Some([a, b2]), Some([x, y])) = (rd::<2, i16>(v1), rd::<2, i16>(v2)) {
-            rect(c, a as f32, b2 as f32, x as f32, y as f32)
-        }
-    }
 }
 
 /// Replays a recorded glPolygonStipple.
@@ -594,15 +374,6 @@ fn with_stipple(m: &[u8]) {
             c.legacy.polygon_stipple.copy_from_slice(m);
         }
     })
-}
-
-/// glRect* (recorded as glRectf while compiling a list).
-fn rect(c: &mut OsContext, x1: f32, y1: f32, x2: f32, y2: f32) {
-    if c.record(move || unsafe { crate::entry::glRectf(x1, y1, x2, y2) }) {
-        return;
-    }
-    c.gl.rectf(x1, y1, x2, y2);
-    c.dirty = true;
 }
 
 /// glPixelTransfer{f,i}.

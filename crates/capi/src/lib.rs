@@ -3,7 +3,7 @@
 //! Built as `libOSMesa.so` (`cargo build --release -p shaderbox-capi`), this
 //! crate exports Mesa's off-screen context API (`OSMesaCreateContext*`,
 //! `OSMesaMakeCurrent`, ... — [`osmesa`]) and OpenGL 2.1 entry points
-//! ([`entry`]) with their C signatures, over [`gl::Context`]. Programs
+//! (the modules below) with their C signatures, over [`gl::Context`]. Programs
 //! written against OSMesa (PyOpenGL with `PYOPENGL_PLATFORM=osmesa`, C
 //! tools' off-screen paths) run unchanged:
 //!
@@ -19,8 +19,8 @@
 //!   away or releasing, OSMesaGetColorBuffer, OSMesaPixelStore and
 //!   OSMesaDestroyContext — as with Mesa's llvmpipe, which bins draws and
 //!   rasterizes at flush, the buffer is complete only after glFinish or
-//!   glFlush. (Copying after every draw cost 6 ms per draw at 512x512:
-//!   500 tiny glBegin/glEnd triangles took 3058 ms, now 41 ms; Mesa 99 ms.)
+//!   glFlush (copying after every draw would cost a full-buffer copy per
+//!   draw).
 //!   The copy is in the client's format (RGBA, BGRA, ARGB, RGB, BGR, RGB_565)
 //!   and type (GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_FLOAT,
 //!   GL_UNSIGNED_SHORT_5_6_5) given, bottom row first unless
@@ -50,15 +50,30 @@
 //! contexts before use.
 //!
 //! ## Modules
-//! [`entry`] holds the bulk of the gl* entry points and the macro that
-//! generates them; [`queries`] (state queries), [`buffers`] (map/unmap,
-//! buffer queries, pixel buffer objects), [`pixels`] (texture read-back,
-//! 1D/3D sub-images, framebuffer copies), [`array_draws`]
-//! (glArrayElement, glMultiDrawElements, glInterleavedArrays, array draws
-//! compiled into lists), [`occlusion`] (queries), [`pixel_path`]
-//! (glRasterPos*, glWindowPos*, glDrawPixels, glBitmap, glCopyPixels), [`attribs`]
-//! (attribute stacks) and [`legacy`] (GL 1.x calls kept as state) add the
-//! rest; [`procs`] chains their tables for OSMesaGetProcAddress.
+//! From the C boundary inwards:
+//! - [`abi`]: the C types, reading/writing C memory, and
+//!   `gl_entry_points!`, which every entry-point module uses; it depends
+//!   on no other module.
+//! - [`context`]: [`context::OsContext`] (a [`gl::Context`] plus the
+//!   client buffer), the thread's current context, the copy into the
+//!   client buffer, and recording into display lists; [`layer_state`],
+//!   [`arrays`] and [`debug_env`] are the state it holds.
+//! - The gl* entry points, by GL 2.1 chapter: [`variants`] (generated: the
+//!   type/arity variants — glVertex*, glColor*, glTexCoord*,
+//!   glVertexAttrib*, glRasterPos*...), [`drawing`] (glBegin/glEnd, array
+//!   draws), [`vertex_arrays`], [`buffers`], [`transform`],
+//!   [`fixed_function`] (lighting, texgen, texture environment, fog),
+//!   [`rasterization`] (and per-fragment state), [`pixel_path`]
+//!   (glDrawPixels, glBitmap, glCopyPixels), [`textures`], [`pixels`]
+//!   (texture read-back and copies), [`framebuffer`] (clears, masks,
+//!   glReadPixels, glFinish), [`framebuffer_objects`], [`shaders`],
+//!   [`uniforms`], [`lists`], [`attribs`], [`occlusion`], [`queries`] and
+//!   [`legacy`] (GL 1.x calls kept as state).
+//! - [`osmesa`]: the OSMesa context API; [`procs`]: OSMesaGetProcAddress
+//!   and its table, naming every entry-point module.
+//!
+//! No module depends back on one that depends on it
+//! (`scripts/module-graph.py capi`).
 //!
 //! ## Limitations
 //! - Missing entry points (README.md lists all 55 of GL 1.0–2.1's 583):
@@ -103,13 +118,17 @@
 #[global_allocator]
 static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-pub mod array_draws;
+pub mod abi;
 pub mod arrays;
 pub mod attribs;
 pub mod buffers;
 pub mod context;
 pub mod debug_env;
-pub mod entry;
+pub mod drawing;
+pub mod fixed_function;
+pub mod framebuffer;
+pub mod framebuffer_objects;
+pub mod layer_state;
 pub mod legacy;
 pub mod lists;
 pub mod occlusion;
@@ -119,20 +138,37 @@ pub mod pixel_path;
 pub mod pixels;
 pub mod procs;
 pub mod queries;
-pub mod types;
+pub mod rasterization;
+pub mod shaders;
+pub mod textures;
+pub mod transform;
+pub mod uniforms;
+pub mod variants;
+pub mod vertex_arrays;
 
-pub use array_draws::*;
+// The C ABI at the crate root, as C sees it: the types, the OSMesa API
+// and every gl* entry point. Each entry-point module has its own `lookup`;
+// the root's is the whole OSMesaGetProcAddress table.
+pub use abi::*;
 pub use attribs::*;
 pub use buffers::*;
-pub use entry::*;
+pub use drawing::*;
+pub use fixed_function::*;
+pub use framebuffer::*;
+pub use framebuffer_objects::*;
 pub use legacy::*;
-pub use occlusion::*;
-pub use pixel_path::*;
-pub use pixels::*;
-pub use queries::*;
-// Each entry-point module has its own table; the crate root names entry's.
-pub use entry::{lookup, NAMES};
 pub use lists::*;
+pub use occlusion::*;
 pub use osmesa::*;
 pub use osmesa_enums::*;
-pub use types::*;
+pub use pixel_path::*;
+pub use pixels::*;
+pub use procs::{lookup, OSMesaGetProcAddress};
+pub use queries::*;
+pub use rasterization::*;
+pub use shaders::*;
+pub use textures::*;
+pub use transform::*;
+pub use uniforms::*;
+pub use variants::*;
+pub use vertex_arrays::*;

@@ -8,65 +8,15 @@
 //! Vertex-array draws (glDrawArrays, glDrawElements, glDrawRangeElements,
 //! glMultiDraw*, glArrayElement) dereference the enabled arrays at compile
 //! time and record the elements' values, replayed as glBegin / attribute
-//! calls / glEnd (`crate::array_draws::compile_draw`); an invalid call
+//! calls / glEnd (`crate::drawing::compile_draw`); an invalid call
 //! records its error, raised when the list runs. Pixel images
 //! (glDrawPixels, glBitmap) are copied at compile time too.
 
-use crate::context::{self, guard, with_ctx, OsContext};
-use crate::types::*;
+use crate::abi::*;
+use crate::context::{guard, record_call, with_ctx};
+use crate::layer_state::MAX_LIST_NESTING;
 use gl::enums::*;
-use std::collections::BTreeMap;
 use std::rc::Rc;
-
-/// A recorded command.
-pub type Cmd = Box<dyn Fn()>;
-
-/// GL_MAX_LIST_NESTING.
-pub const MAX_LIST_NESTING: u32 = 64;
-
-/// Display-list state of one context.
-#[derive(Default)]
-pub struct Lists {
-    pub lists: BTreeMap<u32, Rc<Vec<Cmd>>>,
-    /// The list being compiled: name, mode, commands so far.
-    pub compiling: Option<(u32, u32, Vec<Cmd>)>,
-    /// glCallList nesting depth (recording is off while replaying).
-    pub replaying: u32,
-    pub base: u32,
-}
-
-impl OsContext {
-    /// Records `cmd` into the list being compiled. True when the call
-    /// must not execute now (GL_COMPILE).
-    pub fn record(&mut self, cmd: impl Fn() + 'static) -> bool {
-        if self.lists.replaying > 0 {
-            return false;
-        }
-        match &mut self.lists.compiling {
-            Some((_, mode, cmds)) => {
-                cmds.push(Box::new(cmd));
-                *mode == GL_COMPILE
-            }
-            None => false,
-        }
-    }
-
-    /// Whether a list is being compiled (outside replay).
-    pub fn compiling(&self) -> bool {
-        self.lists.compiling.is_some() && self.lists.replaying == 0
-    }
-}
-
-/// [`OsContext::record`] on the current context, from outside `with_ctx`.
-pub fn record(cmd: impl Fn() + 'static) -> bool {
-    let p = context::current();
-    if p.is_null() {
-        return false;
-    }
-    // SAFETY: the current context, not otherwise borrowed here (entry
-    // points call this before `with_ctx`).
-    guard(false, || unsafe { &mut *p }.record(cmd))
-}
 
 #[no_mangle]
 pub extern "C" fn glNewList(list: GLuint, mode: GLenum) {
@@ -126,7 +76,7 @@ fn call_list(n: u32) {
 #[no_mangle]
 pub extern "C" fn glCallList(list: GLuint) {
     guard((), || {
-        if record(move || call_list(list)) {
+        if record_call(move || call_list(list)) {
             return;
         }
         call_list(list)
@@ -176,7 +126,7 @@ pub unsafe extern "C" fn glCallLists(n: GLsizei, ty: GLenum, lists: *const std::
         let base = with_ctx(0, |c| c.lists.base);
         let names: Vec<u32> = names.iter().map(|&x| x.wrapping_add(base)).collect();
         let replay = names.clone();
-        if record(move || replay.iter().for_each(|&l| call_list(l))) {
+        if record_call(move || replay.iter().for_each(|&l| call_list(l))) {
             return;
         }
         names.iter().for_each(|&l| call_list(l));
@@ -244,7 +194,7 @@ pub extern "C" fn glIsList(list: GLuint) -> GLboolean {
 #[no_mangle]
 pub extern "C" fn glListBase(base: GLuint) {
     guard((), || {
-        if record(move || glListBase(base)) {
+        if record_call(move || glListBase(base)) {
             return;
         }
         with_ctx((), |c| {

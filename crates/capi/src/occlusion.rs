@@ -2,8 +2,8 @@
 //! [`gl::occlusion`]. glBeginQuery/glEndQuery are compiled into display
 //! lists; the object calls and queries execute immediately (§5.4).
 
-use crate::entry::{gl_entry_points, rd_vec, wr};
-use crate::types::*;
+use crate::abi::*;
+use crate::context::{record_call, with_ctx};
 use gl::enums::*;
 
 gl_entry_points! {

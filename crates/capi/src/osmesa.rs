@@ -1,9 +1,9 @@
 //! The OSMesa context API (Mesa's `GL/osmesa.h`), C ABI.
 
+use crate::abi::*;
 use crate::context::{self, guard, with_ctx, OsContext};
 use crate::osmesa_enums::*;
-use crate::types::*;
-use std::ffi::{c_char, c_void, CStr};
+use std::ffi::c_void;
 
 /// Largest buffer width/height accepted (OSMESA_MAX_WIDTH/HEIGHT).
 pub const MAX_SIZE: i32 = gl::MAX_TEXTURE_SIZE;
@@ -274,22 +274,6 @@ pub unsafe extern "C" fn OSMesaGetColorBuffer(
         } else {
             GL_FALSE
         }
-    })
-}
-
-/// OSMesaGetProcAddress: the entry points this library exports, by name.
-#[no_mangle]
-pub unsafe extern "C" fn OSMesaGetProcAddress(name: *const c_char) -> OSMESAproc {
-    guard(None, || {
-        if name.is_null() {
-            return None;
-        }
-        // SAFETY: a NUL-terminated C string per osmesa.h.
-        let name = unsafe { CStr::from_ptr(name) }.to_str().ok()?;
-        let p = crate::procs::lookup(name)?;
-        // SAFETY: `p` is the address of one of our extern "C" functions;
-        // the caller casts it back to that function's real signature.
-        Some(unsafe { std::mem::transmute::<*const (), unsafe extern "C" fn()>(p) })
     })
 }
 

@@ -6,9 +6,9 @@
 //! and bias, index shift/offset and zoom kept by [`crate::legacy`] apply
 //! when the rectangle is drawn.
 
-use crate::context::{with_ctx, OsContext};
-use crate::entry::{gl_entry_points, image_bytes, rd, record_vector};
-use crate::types::*;
+use crate::abi::*;
+use crate::buffers::image_bytes;
+use crate::context::{record_call, with_ctx, OsContext};
 use gl::enums::*;
 use gl::pixel_transfer::PixelTransfer;
 use std::ffi::c_void;
@@ -80,146 +80,6 @@ unsafe fn bitmap_bytes(
 }
 
 gl_entry_points! {
-    [list] fn glRasterPos2d(x: GLdouble, y: GLdouble) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glRasterPos2dv(v: *const GLdouble) => |c| {
-        if record_vector::<2, f64>(c, v, move |p| unsafe { glRasterPos2dv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
-    [list] fn glRasterPos2f(x: GLfloat, y: GLfloat) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glRasterPos2fv(v: *const GLfloat) => |c| {
-        if record_vector::<2, f32>(c, v, move |p| unsafe { glRasterPos2fv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
-    [list] fn glRasterPos2i(x: GLint, y: GLint) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glRasterPos2iv(v: *const GLint) => |c| {
-        if record_vector::<2, i32>(c, v, move |p| unsafe { glRasterPos2iv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
-    [list] fn glRasterPos2s(x: GLshort, y: GLshort) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glRasterPos2sv(v: *const GLshort) => |c| {
-        if record_vector::<2, i16>(c, v, move |p| unsafe { glRasterPos2sv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
-    [list] fn glRasterPos3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glRasterPos3dv(v: *const GLdouble) => |c| {
-        if record_vector::<3, f64>(c, v, move |p| unsafe { glRasterPos3dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
-    [list] fn glRasterPos3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glRasterPos3fv(v: *const GLfloat) => |c| {
-        if record_vector::<3, f32>(c, v, move |p| unsafe { glRasterPos3fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
-    [list] fn glRasterPos3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glRasterPos3iv(v: *const GLint) => |c| {
-        if record_vector::<3, i32>(c, v, move |p| unsafe { glRasterPos3iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
-    [list] fn glRasterPos3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glRasterPos3sv(v: *const GLshort) => |c| {
-        if record_vector::<3, i16>(c, v, move |p| unsafe { glRasterPos3sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
-    [list] fn glRasterPos4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glRasterPos4dv(v: *const GLdouble) => |c| {
-        if record_vector::<4, f64>(c, v, move |p| unsafe { glRasterPos4dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
-    [list] fn glRasterPos4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glRasterPos4fv(v: *const GLfloat) => |c| {
-        if record_vector::<4, f32>(c, v, move |p| unsafe { glRasterPos4fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
-    [list] fn glRasterPos4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glRasterPos4iv(v: *const GLint) => |c| {
-        if record_vector::<4, i32>(c, v, move |p| unsafe { glRasterPos4iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
-    [list] fn glRasterPos4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glRasterPos4sv(v: *const GLshort) => |c| {
-        if record_vector::<4, i16>(c, v, move |p| unsafe { glRasterPos4sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
-    [list] fn glWindowPos2d(x: GLdouble, y: GLdouble) => |c| { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    fn glWindowPos2dv(v: *const GLdouble) => |c| {
-        if record_vector::<2, f64>(c, v, move |p| unsafe { glWindowPos2dv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    }
-    [list] fn glWindowPos2f(x: GLfloat, y: GLfloat) => |c| { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    fn glWindowPos2fv(v: *const GLfloat) => |c| {
-        if record_vector::<2, f32>(c, v, move |p| unsafe { glWindowPos2fv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f32>(v) { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    }
-    [list] fn glWindowPos2i(x: GLint, y: GLint) => |c| { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    fn glWindowPos2iv(v: *const GLint) => |c| {
-        if record_vector::<2, i32>(c, v, move |p| unsafe { glWindowPos2iv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i32>(v) { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    }
-    [list] fn glWindowPos2s(x: GLshort, y: GLshort) => |c| { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    fn glWindowPos2sv(v: *const GLshort) => |c| {
-        if record_vector::<2, i16>(c, v, move |p| unsafe { glWindowPos2sv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    }
-    [list] fn glWindowPos3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    fn glWindowPos3dv(v: *const GLdouble) => |c| {
-        if record_vector::<3, f64>(c, v, move |p| unsafe { glWindowPos3dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    }
-    [list] fn glWindowPos3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    fn glWindowPos3fv(v: *const GLfloat) => |c| {
-        if record_vector::<3, f32>(c, v, move |p| unsafe { glWindowPos3fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    }
-    [list] fn glWindowPos3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    fn glWindowPos3iv(v: *const GLint) => |c| {
-        if record_vector::<3, i32>(c, v, move |p| unsafe { glWindowPos3iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    }
-    [list] fn glWindowPos3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    fn glWindowPos3sv(v: *const GLshort) => |c| {
-        if record_vector::<3, i16>(c, v, move |p| unsafe { glWindowPos3sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    }
     fn glDrawPixels(w: GLsizei, h: GLsizei, format: GLenum, ty: GLenum, data: *const c_void) => |c| {
         let align = unpack_alignment(c);
         let Ok(bytes) = image_bytes(c, w, h, 1, format, ty, data) else {

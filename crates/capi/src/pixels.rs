@@ -3,9 +3,9 @@
 //! buffer), 1D and 3D sub-images, and copies from the read framebuffer
 //! (glCopyTexImage*, glCopyTexSubImage*; GL 2.1 §3.8.2, §6.1.4).
 
-use crate::context::OsContext;
-use crate::entry::{gl_entry_points, image_bytes};
-use crate::types::*;
+use crate::abi::*;
+use crate::buffers::image_bytes;
+use crate::context::{record_call, with_ctx, OsContext};
 use gl::enums::*;
 use std::ffi::c_void;
 

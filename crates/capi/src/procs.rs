@@ -1,20 +1,32 @@
-//! The OSMesaGetProcAddress table: every exported entry point by name.
+//! OSMesaGetProcAddress and its table: every exported function by name.
+//! It names every entry-point module; nothing depends back on it.
 
+use crate::context::guard;
 use crate::osmesa::*;
+use std::ffi::{c_char, CStr};
 
 /// The address of the exported function `name` (gl* or OSMesa*).
 pub fn lookup(name: &str) -> Option<*const ()> {
     for table in [
-        crate::entry::lookup,
-        crate::buffers::lookup,
-        crate::queries::lookup,
-        crate::legacy::lookup,
         crate::attribs::lookup,
-        crate::pixels::lookup,
-        crate::array_draws::lookup,
-        crate::array_draws::lookup_extra,
+        crate::buffers::lookup,
+        crate::drawing::lookup,
+        crate::fixed_function::lookup,
+        crate::framebuffer::lookup,
+        crate::framebuffer_objects::lookup,
+        crate::legacy::lookup,
         crate::occlusion::lookup,
         crate::pixel_path::lookup,
+        crate::pixels::lookup,
+        crate::queries::lookup,
+        crate::rasterization::lookup,
+        crate::shaders::lookup,
+        crate::textures::lookup,
+        crate::transform::lookup,
+        crate::uniforms::lookup,
+        crate::variants::lookup,
+        crate::vertex_arrays::lookup,
+        crate::vertex_arrays::lookup_extra,
     ] {
         if let Some(p) = table(name) {
             return Some(p);
@@ -42,5 +54,21 @@ pub fn lookup(name: &str) -> Option<*const ()> {
         "glIsList" => crate::lists::glIsList as *const (),
         "glListBase" => crate::lists::glListBase as *const (),
         _ => return None,
+    })
+}
+
+/// OSMesaGetProcAddress: the entry points this library exports, by name.
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaGetProcAddress(name: *const c_char) -> OSMESAproc {
+    guard(None, || {
+        if name.is_null() {
+            return None;
+        }
+        // SAFETY: a NUL-terminated C string per osmesa.h.
+        let name = unsafe { CStr::from_ptr(name) }.to_str().ok()?;
+        let p = lookup(name)?;
+        // SAFETY: `p` is the address of one of our extern "C" functions;
+        // the caller casts it back to that function's real signature.
+        Some(unsafe { std::mem::transmute::<*const (), unsafe extern "C" fn()>(p) })
     })
 }

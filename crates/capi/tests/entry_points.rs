@@ -408,3 +408,74 @@ fn attribute_stacks_restore_state_and_client_pointers() {
         OSMesaDestroyContext(ctx);
     }
 }
+
+/// The generated type/arity variants (src/variants.rs) convert as GL 2.1
+/// §2.7 / Table 2.9 say: integer colors and normals normalized, positions
+/// and texture coordinates not; vector forms compiled into a list keep the
+/// values read at compile time.
+#[test]
+fn generated_variants_convert_and_compile_into_lists() {
+    unsafe {
+        let mut buf = Vec::new();
+        let ctx = context(&mut buf, 4, 4);
+        let get = |pname: u32| {
+            let mut v = [0f32; 4];
+            glGetFloatv(pname, v.as_mut_ptr());
+            v
+        };
+        let snorm = |x: f64, max: f64| ((2.0 * x + 1.0) / max) as f32;
+
+        glColor3ub(255, 0, 51);
+        assert_eq!(get(GL_CURRENT_COLOR), [1.0, 0.0, 51.0 / 255.0, 1.0]);
+        glColor4s(32767, 0, -32768, 32767);
+        assert_eq!(get(GL_CURRENT_COLOR), [1.0, snorm(0.0, 65535.0), -1.0, 1.0]);
+        let us = [65535u16, 0, 32768, 65535];
+        glColor4usv(us.as_ptr());
+        assert_eq!(
+            get(GL_CURRENT_COLOR),
+            [1.0, 0.0, (32768.0 / 65535.0f64) as f32, 1.0]
+        );
+
+        glNormal3b(-128, 0, 127);
+        let n = get(GL_CURRENT_NORMAL);
+        assert_eq!(&n[..3], &[-1.0, snorm(0.0, 255.0), 1.0]);
+
+        glTexCoord2s(3, 4);
+        assert_eq!(get(GL_CURRENT_TEXTURE_COORDS), [3.0, 4.0, 0.0, 1.0]);
+        let t = [1i32, 2, 3];
+        glMultiTexCoord3iv(GL_TEXTURE1, t.as_ptr());
+        glActiveTexture(GL_TEXTURE1);
+        assert_eq!(get(GL_CURRENT_TEXTURE_COORDS), [1.0, 2.0, 3.0, 1.0]);
+        glActiveTexture(GL_TEXTURE0);
+
+        let mut a = [0f32; 4];
+        glVertexAttrib4Nusv(1, us.as_ptr());
+        glGetVertexAttribfv(1, GL_CURRENT_VERTEX_ATTRIB, a.as_mut_ptr());
+        assert_eq!(a, [1.0, 0.0, (32768.0 / 65535.0f64) as f32, 1.0]);
+        glVertexAttrib4usv(1, us.as_ptr());
+        glGetVertexAttribfv(1, GL_CURRENT_VERTEX_ATTRIB, a.as_mut_ptr());
+        assert_eq!(a, [65535.0, 0.0, 32768.0, 65535.0]);
+        glVertexAttrib2d(2, 0.5, 2.0);
+        glGetVertexAttribfv(2, GL_CURRENT_VERTEX_ATTRIB, a.as_mut_ptr());
+        assert_eq!(a, [0.5, 2.0, 0.0, 1.0]);
+
+        glIndexs(7);
+        assert_eq!(get(GL_CURRENT_INDEX)[0], 7.0);
+
+        // A vector call compiled into a list keeps the values it read.
+        let mut v = [0u8, 255, 0];
+        glNewList(1, GL_COMPILE);
+        glColor3ubv(v.as_ptr());
+        glEndList();
+        assert_eq!(
+            get(GL_CURRENT_COLOR),
+            [1.0, 0.0, (32768.0 / 65535.0f64) as f32, 1.0]
+        );
+        v[1] = 0;
+        std::hint::black_box(&v);
+        glCallList(1);
+        assert_eq!(get(GL_CURRENT_COLOR), [0.0, 1.0, 0.0, 1.0]);
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        OSMesaDestroyContext(ctx);
+    }
+}

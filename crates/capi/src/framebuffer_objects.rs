@@ -1,0 +1,74 @@
+//! Framebuffer and renderbuffer objects (GL 3.0 §4.4 /
+//! ARB_framebuffer_object, and the EXT_framebuffer_object names, which
+//! differ in the errors for names not from glGen*).
+
+use crate::abi::*;
+use crate::context::with_ctx;
+use gl::enums::*;
+
+gl_entry_points! {
+    // ---- framebuffers ----
+    fn glGenFramebuffers(n: GLsizei, names: *mut GLuint) => |c| {
+        let v = c.gl.gen_framebuffers(n);
+        wr(names, &v);
+    }
+    fn glGenFramebuffersEXT(n: GLsizei, names: *mut GLuint) => |c| {
+        let v = c.gl.gen_framebuffers_ext(n);
+        wr(names, &v);
+    }
+    fn glBindFramebuffer(target: GLenum, fb: GLuint) => |c| { c.gl.bind_framebuffer(target, fb) }
+    fn glBindFramebufferEXT(target: GLenum, fb: GLuint) => |c| { c.gl.bind_framebuffer_ext(target, fb) }
+    fn glDeleteFramebuffers(n: GLsizei, names: *const GLuint) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        c.gl.delete_framebuffers(&rd_vec(names, n as i64));
+    }
+    fn glDeleteFramebuffersEXT(n: GLsizei, names: *const GLuint) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        c.gl.delete_framebuffers(&rd_vec(names, n as i64));
+    }
+    fn glIsFramebuffer(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_framebuffer(name) as GLboolean }
+    fn glCheckFramebufferStatus(target: GLenum) -> GLenum [0] => |c| {
+        c.gl.check_framebuffer_status(target)
+    }
+    fn glCheckFramebufferStatusEXT(target: GLenum) -> GLenum [0] => |c| {
+        c.gl.check_framebuffer_status_ext(target)
+    }
+    fn glFramebufferTexture2D(
+        target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint
+    ) => |c| { c.gl.framebuffer_texture_2d(target, attachment, textarget, texture, level) }
+    fn glFramebufferTexture2DEXT(
+        target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint
+    ) => |c| { c.gl.framebuffer_texture_2d_ext(target, attachment, textarget, texture, level) }
+    fn glFramebufferRenderbuffer(
+        target: GLenum, attachment: GLenum, rbtarget: GLenum, rb: GLuint
+    ) => |c| { c.gl.framebuffer_renderbuffer(target, attachment, rbtarget, rb) }
+    fn glFramebufferRenderbufferEXT(
+        target: GLenum, attachment: GLenum, rbtarget: GLenum, rb: GLuint
+    ) => |c| { c.gl.framebuffer_renderbuffer_ext(target, attachment, rbtarget, rb) }
+
+    // ---- renderbuffers ----
+    fn glGenRenderbuffers(n: GLsizei, names: *mut GLuint) => |c| {
+        let v = c.gl.gen_renderbuffers(n);
+        wr(names, &v);
+    }
+    fn glGenRenderbuffersEXT(n: GLsizei, names: *mut GLuint) => |c| {
+        let v = c.gl.gen_renderbuffers_ext(n);
+        wr(names, &v);
+    }
+    fn glBindRenderbuffer(target: GLenum, rb: GLuint) => |c| { c.gl.bind_renderbuffer(target, rb) }
+    fn glBindRenderbufferEXT(target: GLenum, rb: GLuint) => |c| { c.gl.bind_renderbuffer_ext(target, rb) }
+    fn glDeleteRenderbuffers(n: GLsizei, names: *const GLuint) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        c.gl.delete_renderbuffers(&rd_vec(names, n as i64));
+    }
+    fn glDeleteRenderbuffersEXT(n: GLsizei, names: *const GLuint) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        c.gl.delete_renderbuffers(&rd_vec(names, n as i64));
+    }
+    fn glRenderbufferStorage(target: GLenum, internal: GLenum, w: GLsizei, h: GLsizei) => |c| {
+        c.gl.renderbuffer_storage(target, internal, w, h)
+    }
+    fn glRenderbufferStorageEXT(target: GLenum, internal: GLenum, w: GLsizei, h: GLsizei) => |c| {
+        c.gl.renderbuffer_storage_ext(target, internal, w, h)
+    }
+}

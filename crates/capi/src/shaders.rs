@@ -1,0 +1,146 @@
+//! Shader and program objects (GL 2.1 §2.15, §6.1.14): creating,
+//! compiling, attaching and linking them, attribute locations, and their
+//! queries (info logs, sources, active attributes and uniforms). Setting
+//! uniforms is [`crate::uniforms`].
+
+use crate::abi::*;
+use crate::context::{record_call, with_ctx, OsContext};
+use gl::enums::*;
+use std::ffi::CStr;
+
+/// glGet*InfoLog / glGetShaderSource output: at most `buf_size - 1` bytes
+/// and a NUL; `length` gets the bytes written without the NUL.
+pub(crate) unsafe fn wr_string(
+    c: &mut OsContext,
+    s: &str,
+    buf_size: GLsizei,
+    length: *mut GLsizei,
+    out: *mut GLchar,
+) {
+    if buf_size < 0 {
+        c.gl.record_error(GL_INVALID_VALUE);
+        return;
+    }
+    let n = if out.is_null() || buf_size == 0 {
+        0
+    } else {
+        let n = s.len().min(buf_size as usize - 1);
+        // SAFETY: the caller's buffer holds buf_size bytes.
+        unsafe {
+            std::ptr::copy_nonoverlapping(s.as_ptr() as *const GLchar, out, n);
+            *out.add(n) = 0;
+        }
+        n
+    };
+    // SAFETY: out pointer or null.
+    unsafe { wr(length, &[n as GLsizei]) };
+}
+
+gl_entry_points! {
+    // ---- shaders ----
+    fn glCreateShader(kind: GLenum) -> GLuint [0] => |c| { c.gl.create_shader(kind) }
+    fn glShaderSource(
+        shader: GLuint, count: GLsizei, strings: *const *const GLchar, lengths: *const GLint
+    ) => |c| {
+        if count < 0 || (count > 0 && strings.is_null()) {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let mut parts = Vec::with_capacity(count as usize);
+        for i in 0..count as usize {
+            let s = *strings.add(i);
+            let len = if lengths.is_null() { -1 } else { *lengths.add(i) };
+            let text = if s.is_null() {
+                String::new()
+            } else if len < 0 {
+                CStr::from_ptr(s).to_string_lossy().into_owned()
+            } else {
+                String::from_utf8_lossy(bytes(s, len as usize)).into_owned()
+            };
+            parts.push(text);
+        }
+        let refs: Vec<&str> = parts.iter().map(|s| s.as_str()).collect();
+        c.gl.shader_source(shader, &refs);
+    }
+    fn glCompileShader(shader: GLuint) => |c| { c.gl.compile_shader(shader) }
+    fn glDeleteShader(shader: GLuint) => |c| { c.gl.delete_shader(shader) }
+    fn glIsShader(shader: GLuint) -> GLboolean [0] => |c| { c.gl.is_shader(shader) as GLboolean }
+    fn glGetShaderiv(shader: GLuint, pname: GLenum, params: *mut GLint) => |c| {
+        let v = c.gl.get_shaderiv(shader, pname);
+        wr(params, &[v]);
+    }
+    fn glGetShaderInfoLog(
+        shader: GLuint, buf_size: GLsizei, length: *mut GLsizei, log: *mut GLchar
+    ) => |c| {
+        let s = c.gl.get_shader_info_log(shader);
+        wr_string(c, &s, buf_size, length, log);
+    }
+    fn glGetShaderSource(
+        shader: GLuint, buf_size: GLsizei, length: *mut GLsizei, source: *mut GLchar
+    ) => |c| {
+        let s = c.gl.get_shader_source(shader);
+        wr_string(c, &s, buf_size, length, source);
+    }
+
+    // ---- programs ----
+    fn glCreateProgram() -> GLuint [0] => |c| { c.gl.create_program() }
+    fn glDeleteProgram(program: GLuint) => |c| { c.gl.delete_program(program) }
+    fn glIsProgram(program: GLuint) -> GLboolean [0] => |c| {
+        c.gl.is_program(program) as GLboolean
+    }
+    fn glAttachShader(program: GLuint, shader: GLuint) => |c| { c.gl.attach_shader(program, shader) }
+    fn glDetachShader(program: GLuint, shader: GLuint) => |c| { c.gl.detach_shader(program, shader) }
+    fn glLinkProgram(program: GLuint) => |c| { c.gl.link_program(program) }
+    fn glValidateProgram(program: GLuint) => |c| { c.gl.validate_program(program) }
+    [list] fn glUseProgram(program: GLuint) => |c| { c.gl.use_program(program) }
+    fn glGetProgramiv(program: GLuint, pname: GLenum, params: *mut GLint) => |c| {
+        let v = c.gl.get_programiv(program, pname);
+        wr(params, &[v]);
+    }
+    fn glGetProgramInfoLog(
+        program: GLuint, buf_size: GLsizei, length: *mut GLsizei, log: *mut GLchar
+    ) => |c| {
+        let s = c.gl.get_program_info_log(program);
+        wr_string(c, &s, buf_size, length, log);
+    }
+    fn glGetAttachedShaders(
+        program: GLuint, max: GLsizei, count: *mut GLsizei, shaders: *mut GLuint
+    ) => |c| {
+        if max < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        let v = c.gl.get_attached_shaders(program);
+        let n = v.len().min(max as usize);
+        wr(shaders, &v[..n]);
+        wr(count, &[n as GLsizei]);
+    }
+
+    // ---- attributes and active variables ----
+    fn glGetAttribLocation(program: GLuint, name: *const GLchar) -> GLint [-1] => |c| {
+        match cstr(name) {
+            Some(n) => c.gl.get_attrib_location(program, &n),
+            None => -1,
+        }
+    }
+    fn glBindAttribLocation(program: GLuint, index: GLuint, name: *const GLchar) => |c| {
+        if let Some(n) = cstr(name) { c.gl.bind_attrib_location(program, index, &n) }
+    }
+    fn glGetActiveAttrib(
+        program: GLuint, index: GLuint, buf_size: GLsizei, length: *mut GLsizei,
+        size: *mut GLint, ty: *mut GLenum, name: *mut GLchar
+    ) => |c| {
+        if let Some(info) = c.gl.get_active_attrib(program, index) {
+            wr(size, &[info.size]);
+            wr(ty, &[info.ty]);
+            wr_string(c, &info.name, buf_size, length, name);
+        }
+    }
+    fn glGetActiveUniform(
+        program: GLuint, index: GLuint, buf_size: GLsizei, length: *mut GLsizei,
+        size: *mut GLint, ty: *mut GLenum, name: *mut GLchar
+    ) => |c| {
+        if let Some(info) = c.gl.get_active_uniform(program, index) {
+            wr(size, &[info.size]);
+            wr(ty, &[info.ty]);
+            wr_string(c, &info.name, buf_size, length, name);
+        }
+    }
+}

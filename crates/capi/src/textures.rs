@@ -1,0 +1,103 @@
+//! Texture objects, images and parameters (GL 2.1 §3.8, §6.1.3–§6.1.4):
+//! names and bindings, the active unit, glTexImage{1,2,3}D and
+//! glTexSubImage2D (images from client memory or the pixel unpack buffer,
+//! `buffers::image_bytes`), parameters and their queries, and
+//! mipmap generation. Reading images back and the other sub-image and
+//! copy commands are [`crate::pixels`].
+
+use crate::abi::*;
+use crate::buffers::image_bytes;
+use crate::context::{record_call, with_ctx};
+use gl::enums::*;
+use std::ffi::c_void;
+
+gl_entry_points! {
+    // ---- objects ----
+    fn glGenTextures(n: GLsizei, names: *mut GLuint) => |c| {
+        let v = c.gl.gen_textures(n);
+        wr(names, &v);
+    }
+    fn glDeleteTextures(n: GLsizei, names: *const GLuint) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        c.gl.delete_textures(&rd_vec(names, n as i64));
+    }
+    fn glIsTexture(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_texture(name) as GLboolean }
+    [list] fn glBindTexture(target: GLenum, name: GLuint) => |c| { c.gl.bind_texture(target, name) }
+    [list] fn glActiveTexture(unit: GLenum) => |c| { c.gl.active_texture(unit) }
+
+    // ---- parameters ----
+    [list] fn glTexParameteri(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_parameteri(target, pname, v) }
+    [list] fn glTexParameterf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_parameterf(target, pname, v) }
+    fn glTexParameterfv(target: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
+        let n = if pname == GL_TEXTURE_BORDER_COLOR { 4 } else { 1 };
+        if c.compiling() && !v.is_null() {
+            let arr = rd_vec(v, n);
+            if c.record(move || unsafe { glTexParameterfv(target, pname, arr.as_ptr()) }) {
+                return;
+            }
+        }
+        if !v.is_null() { c.gl.tex_parameterfv(target, pname, &rd_vec(v, n)) }
+    }
+    fn glTexParameteriv(target: GLenum, pname: GLenum, v: *const GLint) => |c| {
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            let f: Vec<f32> = rd_vec(v, 4).iter().map(|&x| gl::state::int_to_unit(x)).collect();
+            if !v.is_null() { c.gl.tex_parameterfv(target, pname, &f) }
+        } else if let Some([x]) = rd::<1, i32>(v) {
+            c.gl.tex_parameteri(target, pname, x)
+        }
+    }
+    fn glGetTexParameteriv(target: GLenum, pname: GLenum, v: *mut GLint) => |c| {
+        let r = c.gl.get_tex_parameteriv(target, pname);
+        wr(v, &[r]);
+    }
+    fn glGetTexParameterfv(target: GLenum, pname: GLenum, v: *mut GLfloat) => |c| {
+        let r = c.gl.get_tex_parameterfv(target, pname);
+        wr(v, &r);
+    }
+    fn glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, v: *mut GLint) => |c| {
+        let r = c.gl.get_tex_level_parameteriv(target, level, pname);
+        wr(v, &[r]);
+    }
+    fn glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, v: *mut GLfloat) => |c| {
+        let before = c.gl.get_error();
+        let r = c.gl.get_tex_level_parameteriv(target, level, pname);
+        let e = c.gl.get_error();
+        c.gl.record_error(if before != GL_NO_ERROR { before } else { e });
+        if e == GL_NO_ERROR {
+            wr(v, &[r as f32]);
+        }
+    }
+
+    // ---- images ----
+    fn glTexImage1D(
+        target: GLenum, level: GLint, internal: GLint, w: GLsizei, border: GLint,
+        format: GLenum, ty: GLenum, data: *const c_void
+    ) => |c| {
+        let Ok(bytes) = image_bytes(c, w, 1, 1, format, ty, data) else { return };
+        c.gl.tex_image_1d(target, level, internal, w, border, format, ty, bytes.as_deref());
+    }
+    fn glTexImage2D(
+        target: GLenum, level: GLint, internal: GLint, w: GLsizei, h: GLsizei, border: GLint,
+        format: GLenum, ty: GLenum, data: *const c_void
+    ) => |c| {
+        let Ok(bytes) = image_bytes(c, w, h, 1, format, ty, data) else { return };
+        c.gl.tex_image_2d(target, level, internal, w, h, border, format, ty, bytes.as_deref());
+    }
+    fn glTexImage3D(
+        target: GLenum, level: GLint, internal: GLint, w: GLsizei, h: GLsizei, d: GLsizei,
+        border: GLint, format: GLenum, ty: GLenum, data: *const c_void
+    ) => |c| {
+        let Ok(bytes) = image_bytes(c, w, h, d, format, ty, data) else { return };
+        c.gl.tex_image_3d(target, level, internal, w, h, d, border, format, ty, bytes.as_deref());
+    }
+    fn glTexSubImage2D(
+        target: GLenum, level: GLint, xoff: GLint, yoff: GLint, w: GLsizei, h: GLsizei,
+        format: GLenum, ty: GLenum, data: *const c_void
+    ) => |c| {
+        let Ok(bytes) = image_bytes(c, w, h, 1, format, ty, data) else { return };
+        let bytes = bytes.unwrap_or_default();
+        c.gl.tex_sub_image_2d(target, level, xoff, yoff, w, h, format, ty, &bytes);
+    }
+    fn glGenerateMipmap(target: GLenum) => |c| { c.gl.generate_mipmap(target) }
+    fn glGenerateMipmapEXT(target: GLenum) => |c| { c.gl.generate_mipmap_ext(target) }
+}

@@ -1,0 +1,115 @@
+//! Uniform variables of the current program (GL 2.1 §2.15.3, §6.1.14):
+//! locations, the glUniform* setters (scalars compiled into display lists;
+//! the array forms read `count` elements, at most
+//! `MAX_UNIFORM_ELEMENTS`, and execute at once) and glGetUniform*v.
+
+use crate::abi::*;
+use crate::context::{record_call, with_ctx};
+
+/// Most array elements read from client memory by one glUniform*v call.
+const MAX_UNIFORM_ELEMENTS: i32 = 4096;
+
+gl_entry_points! {
+    fn glGetUniformLocation(program: GLuint, name: *const GLchar) -> GLint [-1] => |c| {
+        match cstr(name) {
+            Some(n) => c.gl.get_uniform_location(program, &n),
+            None => -1,
+        }
+    }
+
+    // ---- scalars ----
+    [list] fn glUniform1f(loc: GLint, x: GLfloat) => |c| { c.gl.uniform_1f(loc, x) }
+    [list] fn glUniform2f(loc: GLint, x: GLfloat, y: GLfloat) => |c| { c.gl.uniform_2f(loc, x, y) }
+    [list] fn glUniform3f(loc: GLint, x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.uniform_3f(loc, x, y, z) }
+    [list] fn glUniform4f(loc: GLint, x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| {
+        c.gl.uniform_4f(loc, x, y, z, w)
+    }
+    [list] fn glUniform1i(loc: GLint, x: GLint) => |c| { c.gl.uniform_1i(loc, x) }
+    [list] fn glUniform2i(loc: GLint, x: GLint, y: GLint) => |c| { c.gl.uniform_2i(loc, x, y) }
+    [list] fn glUniform3i(loc: GLint, x: GLint, y: GLint, z: GLint) => |c| { c.gl.uniform_3i(loc, x, y, z) }
+    [list] fn glUniform4i(loc: GLint, x: GLint, y: GLint, z: GLint, w: GLint) => |c| {
+        c.gl.uniform_4i(loc, x, y, z, w)
+    }
+
+    // ---- arrays ----
+    fn glUniform1fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_1fv(loc, n, &rd_vec(v, n as i64));
+    }
+    fn glUniform2fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_2fv(loc, n, &rd_vec(v, n as i64 * 2));
+    }
+    fn glUniform3fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_3fv(loc, n, &rd_vec(v, n as i64 * 3));
+    }
+    fn glUniform4fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_4fv(loc, n, &rd_vec(v, n as i64 * 4));
+    }
+    fn glUniform1iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_1iv(loc, n, &rd_vec(v, n as i64));
+    }
+    fn glUniform2iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_2iv(loc, n, &rd_vec(v, n as i64 * 2));
+    }
+    fn glUniform3iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_3iv(loc, n, &rd_vec(v, n as i64 * 3));
+    }
+    fn glUniform4iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_4iv(loc, n, &rd_vec(v, n as i64 * 4));
+    }
+
+    // ---- matrices ----
+    fn glUniformMatrix2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_2fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 4));
+    }
+    fn glUniformMatrix3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_3fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 9));
+    }
+    fn glUniformMatrix4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_4fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 16));
+    }
+    fn glUniformMatrix2x3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_2x3fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 6));
+    }
+    fn glUniformMatrix3x2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_3x2fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 6));
+    }
+    fn glUniformMatrix2x4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_2x4fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 8));
+    }
+    fn glUniformMatrix4x2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_4x2fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 8));
+    }
+    fn glUniformMatrix3x4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_3x4fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 12));
+    }
+    fn glUniformMatrix4x3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_matrix_4x3fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 12));
+    }
+
+    // ---- queries ----
+    fn glGetUniformfv(program: GLuint, loc: GLint, v: *mut GLfloat) => |c| {
+        let r = c.gl.get_uniformfv(program, loc);
+        wr(v, &r);
+    }
+    fn glGetUniformiv(program: GLuint, loc: GLint, v: *mut GLint) => |c| {
+        let r = c.gl.get_uniformiv(program, loc);
+        wr(v, &r);
+    }
+}

@@ -1,0 +1,274 @@
+//! Vertex array specification and its queries (GL 2.1 §2.8, §6.1.12,
+//! §6.1.14): enabling arrays, the gl*Pointer calls (client pointers are
+//! kept by [`crate::arrays`], the data copied at draw time),
+//! glInterleavedArrays, and glGetVertexAttrib*v / glGetPointerv. Array
+//! state is client state: none of these is compiled into display lists.
+//! Drawing from the arrays is [`crate::drawing`].
+
+use crate::abi::*;
+use crate::context::{guard, with_ctx, OsContext};
+use gl::enums::*;
+use gl::vertex::AttribSource;
+use std::ffi::c_void;
+
+/// The generic array `index`, GL_INVALID_VALUE past the last.
+fn generic(c: &mut OsContext, index: GLuint) -> Option<gl::ArrayState> {
+    match c.gl.vertex_state().generic_arrays.get(index as usize) {
+        Some(a) => Some(a.clone()),
+        None => {
+            c.gl.record_error(GL_INVALID_VALUE);
+            None
+        }
+    }
+}
+
+/// glGetVertexAttrib{i,f,d}v as doubles (GL 2.1 §6.1.12).
+fn vertex_attrib(c: &mut OsContext, index: GLuint, pname: GLenum) -> Vec<f64> {
+    if c.gl.reject_in_begin() {
+        return Vec::new();
+    }
+    if pname == GL_CURRENT_VERTEX_ATTRIB {
+        return c
+            .gl
+            .get_current_vertex_attrib(index)
+            .iter()
+            .map(|&x| x as f64)
+            .collect();
+    }
+    let Some(a) = generic(c, index) else {
+        return Vec::new();
+    };
+    let v = match pname {
+        GL_VERTEX_ATTRIB_ARRAY_ENABLED => a.enabled as i64,
+        GL_VERTEX_ATTRIB_ARRAY_SIZE => a.size as i64,
+        GL_VERTEX_ATTRIB_ARRAY_STRIDE => a.stride as i64,
+        GL_VERTEX_ATTRIB_ARRAY_TYPE => a.ty as i64,
+        GL_VERTEX_ATTRIB_ARRAY_NORMALIZED => a.normalized as i64,
+        GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING => a.buffer as i64,
+        _ => {
+            c.gl.record_error(GL_INVALID_ENUM);
+            return Vec::new();
+        }
+    };
+    vec![v as f64]
+}
+
+gl_entry_points! {
+    // ---- client state ----
+    fn glEnableClientState(cap: GLenum) => |c| { c.gl.enable_client_state(cap) }
+    fn glDisableClientState(cap: GLenum) => |c| { c.gl.disable_client_state(cap) }
+    fn glClientActiveTexture(unit: GLenum) => |c| { c.gl.client_active_texture(unit) }
+    fn glEnableVertexAttribArray(index: GLuint) => |c| { c.gl.enable_vertex_attrib_array(index) }
+    fn glDisableVertexAttribArray(index: GLuint) => |c| { c.gl.disable_vertex_attrib_array(index) }
+
+    // ---- pointers ----
+    fn glVertexPointer(size: GLint, ty: GLenum, stride: GLsizei, pointer: *const c_void) => |c| {
+        c.arrays.set_pointer(&mut c.gl, AttribSource::Position, pointer as *const u8, |g, d| {
+            g.vertex_pointer(size, ty, stride, d)
+        });
+    }
+    fn glColorPointer(size: GLint, ty: GLenum, stride: GLsizei, pointer: *const c_void) => |c| {
+        c.arrays.set_pointer(&mut c.gl, AttribSource::Color, pointer as *const u8, |g, d| {
+            g.color_pointer(size, ty, stride, d)
+        });
+    }
+    fn glSecondaryColorPointer(size: GLint, ty: GLenum, stride: GLsizei, pointer: *const c_void) => |c| {
+        c.arrays.set_pointer(&mut c.gl, AttribSource::SecondaryColor, pointer as *const u8, |g, d| {
+            g.secondary_color_pointer(size, ty, stride, d)
+        });
+    }
+    fn glNormalPointer(ty: GLenum, stride: GLsizei, pointer: *const c_void) => |c| {
+        c.arrays.set_pointer(&mut c.gl, AttribSource::Normal, pointer as *const u8, |g, d| {
+            g.normal_pointer(ty, stride, d)
+        });
+    }
+    fn glFogCoordPointer(ty: GLenum, stride: GLsizei, pointer: *const c_void) => |c| {
+        c.arrays.set_pointer(&mut c.gl, AttribSource::FogCoord, pointer as *const u8, |g, d| {
+            g.fog_coord_pointer(ty, stride, d)
+        });
+    }
+    fn glTexCoordPointer(size: GLint, ty: GLenum, stride: GLsizei, pointer: *const c_void) => |c| {
+        let unit = c.gl.vertex_state().client_active_texture.min(255) as u8;
+        c.arrays.set_pointer(&mut c.gl, AttribSource::TexCoord(unit), pointer as *const u8, |g, d| {
+            g.tex_coord_pointer(size, ty, stride, d)
+        });
+    }
+    fn glVertexAttribPointer(
+        index: GLuint, size: GLint, ty: GLenum, normalized: GLboolean, stride: GLsizei,
+        pointer: *const c_void
+    ) => |c| {
+        let src = AttribSource::Generic(index.min(255) as u8);
+        c.arrays.set_pointer(&mut c.gl, src, pointer as *const u8, |g, d| {
+            g.vertex_attrib_pointer(index, size, ty, as_bool(normalized), stride, d)
+        });
+    }
+
+    // ---- queries ----
+    fn glGetVertexAttribiv(index: GLuint, pname: GLenum, v: *mut GLint) => |c| {
+        let r: Vec<GLint> = vertex_attrib(c, index, pname)
+            .iter()
+            .map(|&x| if pname == GL_CURRENT_VERTEX_ATTRIB { x as i32 } else { x as i64 as i32 })
+            .collect();
+        wr(v, &r);
+    }
+    fn glGetVertexAttribfv(index: GLuint, pname: GLenum, v: *mut GLfloat) => |c| {
+        if pname == GL_CURRENT_VERTEX_ATTRIB {
+            let r = c.gl.get_current_vertex_attrib(index);
+            wr(v, &r);
+        } else {
+            c.gl.record_error(GL_INVALID_ENUM);
+        }
+    }
+    fn glGetVertexAttribdv(index: GLuint, pname: GLenum, v: *mut GLdouble) => |c| {
+        let r = vertex_attrib(c, index, pname);
+        wr(v, &r);
+    }
+    fn glGetVertexAttribPointerv(index: GLuint, pname: GLenum, v: *mut *mut c_void) => |c| {
+        if c.gl.reject_in_begin() {
+            return;
+        }
+        if generic(c, index).is_none() {
+            return;
+        }
+        if pname != GL_VERTEX_ATTRIB_ARRAY_POINTER {
+            c.gl.record_error(GL_INVALID_ENUM);
+            return;
+        }
+        let p = c.arrays.pointer_value(c.gl.vertex_state(), AttribSource::Generic(index as u8));
+        wr(v, &[p as *mut c_void]);
+    }
+    fn glGetPointerv(pname: GLenum, v: *mut *mut c_void) => |c| {
+        if c.gl.reject_in_begin() {
+            return;
+        }
+        let va = c.gl.vertex_state();
+        let src = match pname {
+            GL_VERTEX_ARRAY_POINTER => Some(AttribSource::Position),
+            GL_NORMAL_ARRAY_POINTER => Some(AttribSource::Normal),
+            GL_COLOR_ARRAY_POINTER => Some(AttribSource::Color),
+            GL_SECONDARY_COLOR_ARRAY_POINTER => Some(AttribSource::SecondaryColor),
+            GL_FOG_COORD_ARRAY_POINTER => Some(AttribSource::FogCoord),
+            GL_TEXTURE_COORD_ARRAY_POINTER => {
+                Some(AttribSource::TexCoord(va.client_active_texture as u8))
+            }
+            GL_INDEX_ARRAY_POINTER | GL_EDGE_FLAG_ARRAY_POINTER => None,
+            GL_FEEDBACK_BUFFER_POINTER | GL_SELECTION_BUFFER_POINTER => None,
+            _ => {
+                c.gl.record_error(GL_INVALID_ENUM);
+                return;
+            }
+        };
+        let p = match src {
+            Some(s) => c.arrays.pointer_value(va, s),
+            None => match pname {
+                GL_INDEX_ARRAY_POINTER => c.legacy.index_pointer,
+                GL_EDGE_FLAG_ARRAY_POINTER => c.legacy.edge_flag_pointer,
+                GL_FEEDBACK_BUFFER_POINTER => c.legacy.feedback_buffer,
+                _ => c.legacy.select_buffer,
+            },
+        };
+        wr(v, &[p as *mut c_void]);
+    }
+}
+
+/// One row of GL 2.1 Table 2.5: (texcoord size, colour size, colour type,
+/// normal?, vertex size).
+fn interleaved_layout(format: u32) -> Option<(i32, i32, u32, bool, i32)> {
+    Some(match format {
+        GL_V2F => (0, 0, 0, false, 2),
+        GL_V3F => (0, 0, 0, false, 3),
+        GL_C4UB_V2F => (0, 4, GL_UNSIGNED_BYTE, false, 2),
+        GL_C4UB_V3F => (0, 4, GL_UNSIGNED_BYTE, false, 3),
+        GL_C3F_V3F => (0, 3, GL_FLOAT, false, 3),
+        GL_N3F_V3F => (0, 0, 0, true, 3),
+        GL_C4F_N3F_V3F => (0, 4, GL_FLOAT, true, 3),
+        GL_T2F_V3F => (2, 0, 0, false, 3),
+        GL_T4F_V4F => (4, 0, 0, false, 4),
+        GL_T2F_C4UB_V3F => (2, 4, GL_UNSIGNED_BYTE, false, 3),
+        GL_T2F_C3F_V3F => (2, 3, GL_FLOAT, false, 3),
+        GL_T2F_N3F_V3F => (2, 0, 0, true, 3),
+        GL_T2F_C4F_N3F_V3F => (2, 4, GL_FLOAT, true, 3),
+        GL_T4F_C4F_N3F_V4F => (4, 4, GL_FLOAT, true, 4),
+        _ => return None,
+    })
+}
+
+/// glInterleavedArrays: sets and enables the arrays of `format` (and
+/// disables the others), as the sequence of calls Table 2.5 defines.
+/// Client state: never compiled into display lists.
+#[no_mangle]
+pub unsafe extern "C" fn glInterleavedArrays(
+    format: GLenum,
+    stride: GLsizei,
+    pointer: *const c_void,
+) {
+    guard((), || {
+        let ok = with_ctx(false, |c| {
+            if c.gl.reject_in_begin() {
+                return false;
+            }
+            if interleaved_layout(format).is_none() {
+                c.gl.record_error(GL_INVALID_ENUM);
+                return false;
+            }
+            if stride < 0 {
+                c.gl.record_error(GL_INVALID_VALUE);
+                return false;
+            }
+            true
+        });
+        let Some((tsize, csize, cty, normal, vsize)) = interleaved_layout(format) else {
+            return;
+        };
+        if !ok {
+            return;
+        }
+        let f = 4usize; // sizeof(GLfloat)
+        let pc = tsize as usize * f;
+        let csize_bytes = if cty == GL_UNSIGNED_BYTE {
+            4
+        } else {
+            csize as usize * f
+        };
+        let pn = pc + csize_bytes;
+        let pv = pn + if normal { 3 * f } else { 0 };
+        let s = pv + vsize as usize * f;
+        let stride = if stride == 0 { s as GLsizei } else { stride };
+        let p = pointer as *const u8;
+        let at = |o: usize| p.wrapping_add(o) as *const c_void;
+        // SAFETY (all calls): entry points of this library, called in
+        // sequence outside any other entry point; the pointers are the
+        // caller's interleaved array at the offsets Table 2.5 gives.
+        unsafe {
+            glDisableClientState(GL_EDGE_FLAG_ARRAY);
+            glDisableClientState(GL_INDEX_ARRAY);
+            glDisableClientState(GL_SECONDARY_COLOR_ARRAY);
+            glDisableClientState(GL_FOG_COORD_ARRAY);
+            if tsize > 0 {
+                glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+                glTexCoordPointer(tsize, GL_FLOAT, stride, at(0));
+            } else {
+                glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+            }
+            if csize > 0 {
+                glEnableClientState(GL_COLOR_ARRAY);
+                glColorPointer(csize, cty, stride, at(pc));
+            } else {
+                glDisableClientState(GL_COLOR_ARRAY);
+            }
+            if normal {
+                glEnableClientState(GL_NORMAL_ARRAY);
+                glNormalPointer(GL_FLOAT, stride, at(pn));
+            } else {
+                glDisableClientState(GL_NORMAL_ARRAY);
+            }
+            glEnableClientState(GL_VERTEX_ARRAY);
+            glVertexPointer(vsize, GL_FLOAT, stride, at(pv));
+        }
+    })
+}
+
+/// This module's exported functions outside the entry-point table.
+pub fn lookup_extra(name: &str) -> Option<*const ()> {
+    (name == "glInterleavedArrays").then_some(glInterleavedArrays as *const ())
+}
