@@ -71,7 +71,7 @@ pub(crate) unsafe fn image_bytes(
     if (data.is_null() && pbo == 0) || w <= 0 || h <= 0 || d <= 0 {
         return Ok(None);
     }
-    if gl::objects::pixel_size(format, ty).is_none() {
+    if gl::pixel_transfer::pixel_size(format, ty).is_none() {
         return Ok(None);
     }
     let align =
@@ -79,7 +79,7 @@ pub(crate) unsafe fn image_bytes(
             .first()
             .copied()
             .unwrap_or(4);
-    let row = gl::objects::row_stride(w as usize, format, ty, align.max(1) as usize);
+    let row = gl::pixel_transfer::row_stride(w as usize, format, ty, align.max(1) as usize);
     let Some(len) = row
         .checked_mul(h as usize)
         .and_then(|x| x.checked_mul(d as usize))

@@ -54,8 +54,8 @@ gl_entry_points! {
             crate::debug_env::flush(&mut c.gl, d);
         }
         let align = c.gl.get_integerv(GL_PACK_ALIGNMENT).first().copied().unwrap_or(4).max(1);
-        let len = if w > 0 && h > 0 && gl::objects::pixel_size(format, ty).is_some() {
-            gl::objects::row_stride(w as usize, format, ty, align as usize)
+        let len = if w > 0 && h > 0 && gl::pixel_transfer::pixel_size(format, ty).is_some() {
+            gl::pixel_transfer::row_stride(w as usize, format, ty, align as usize)
                 .saturating_mul(h as usize)
         } else {
             0

@@ -14,10 +14,6 @@ use crate::Context;
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
-/// The C layer's image-size checks (`capi/src/entry.rs`) name these here;
-/// they are [`crate::pixel_transfer`]'s.
-pub use crate::pixel_transfer::{pixel_size, row_stride};
-
 /// A buffer object's store.
 #[derive(Clone, Debug, Default)]
 pub struct BufferObj {
