@@ -46,13 +46,20 @@ gl_entry_points! {
             c.gl.record_error(GL_INVALID_VALUE);
             return;
         }
+        if !c.gl.check_shader(shader) {
+            return;
+        }
+        // A NULL string: GL_INVALID_OPERATION and the source unchanged, as
+        // Mesa answers (GL 2.1 leaves it undefined; reading it would crash).
+        if (0..count as usize).any(|i| (*strings.add(i)).is_null()) {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
         let mut parts = Vec::with_capacity(count as usize);
         for i in 0..count as usize {
             let s = *strings.add(i);
             let len = if lengths.is_null() { -1 } else { *lengths.add(i) };
-            let text = if s.is_null() {
-                String::new()
-            } else if len < 0 {
+            let text = if len < 0 {
                 CStr::from_ptr(s).to_string_lossy().into_owned()
             } else {
                 String::from_utf8_lossy(bytes(s, len as usize)).into_owned()

@@ -167,6 +167,13 @@ fn triangle_with_attrib_pointers_lands_in_the_client_buffer() {
         // Errors, never crashes.
         glShaderSource(vs, -1, null(), null());
         assert_eq!(glGetError(), GL_INVALID_VALUE);
+        // A NULL string in the array: GL_INVALID_OPERATION, as Mesa.
+        let some = c"void main() {}".as_ptr();
+        let with_null = [some, null()];
+        glShaderSource(vs, 2, with_null.as_ptr(), null());
+        assert_eq!(glGetError(), GL_INVALID_OPERATION);
+        glShaderSource(0xbad, 2, with_null.as_ptr(), null());
+        assert_eq!(glGetError(), GL_INVALID_VALUE);
         glEnable(0xdead);
         assert_eq!(glGetError(), GL_INVALID_ENUM);
         glLoadMatrixf(null());

@@ -127,8 +127,9 @@ impl Context {
     }
 
     /// Checks a shader name: `GL_INVALID_VALUE` if unknown,
-    /// `GL_INVALID_OPERATION` if it names a program.
-    fn check_shader(&mut self, shader: u32) -> bool {
+    /// `GL_INVALID_OPERATION` if it names a program (the C layer checks the
+    /// name before it looks at glShaderSource's strings, as Mesa does).
+    pub fn check_shader(&mut self, shader: u32) -> bool {
         if self.shaders.contains_key(&shader) {
             return true;
         }
