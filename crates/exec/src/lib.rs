@@ -103,7 +103,7 @@
 //! names the registers of globals and (inlined) locals.
 //!
 //! ## Execution
-//! [`Kernel::new`] also rewrites the program for the executor (`engine`):
+//! [`Kernel::new`] also rewrites the program for the executor (`opt`):
 //! constants, uniform words and what is computed from them alone move to a
 //! prologue run once per `run` (or once per draw: [`Kernel::prepare`] and
 //! [`Kernel::run_prepared`]); dead ops go; `t = op(..); var = t` becomes one
@@ -179,6 +179,7 @@
 
 pub mod cpu;
 mod depth_slice;
+mod dispatch;
 mod engine;
 mod float_env;
 mod interface;
@@ -190,7 +191,7 @@ pub mod lane;
 pub mod lanes16;
 mod liveness;
 mod lower;
-mod mask_flow;
+mod opt;
 mod program;
 mod variant;
 
@@ -403,8 +404,8 @@ pub struct Kernel {
     inputs: Vec<(usize, u32, glsl::types::Scalar)>,
     outputs: Vec<(u32, usize, glsl::types::Scalar)>,
     loop_budget: u64,
-    /// The program rewritten for [`engine::run`].
-    code: std::sync::Arc<engine::Code>,
+    /// The program optimized for the executors ([`dispatch::run`]).
+    code: std::sync::Arc<opt::Code>,
     /// [`Kernel::depth_only`], computed on first use (shared by clones).
     depth: std::sync::Arc<std::sync::OnceLock<Option<Kernel>>>,
     /// Native code for `code`, made on demand (shared by clones).
@@ -416,7 +417,7 @@ pub struct Kernel {
 /// words ([`Kernel::prepare`]) and reused by [`Kernel::run_prepared`].
 #[derive(Clone, Debug)]
 pub struct Prepared {
-    code: std::sync::Arc<engine::Code>,
+    code: std::sync::Arc<opt::Code>,
     pool: Vec<[u32; LANES]>,
     uniforms: Vec<u32>,
 }
@@ -454,7 +455,7 @@ impl Kernel {
         loop_budget: u64,
     ) -> Kernel {
         let live_out: Vec<u32> = outputs.iter().map(|&(r, _, _)| r).collect();
-        let code = std::sync::Arc::new(engine::compile(&program, &live_out));
+        let code = std::sync::Arc::new(opt::optimize(&program, &live_out));
         Kernel {
             stage,
             program,
@@ -490,7 +491,7 @@ impl Kernel {
         uniforms: &[u32],
         textures: &dyn Textures,
     ) -> Result<(), ExecError> {
-        engine::run(self, &self.code, batch, uniforms, textures, None)
+        dispatch::run(self, &self.code, batch, uniforms, textures, None)
     }
 
     /// The uniform-only values of this kernel for `uniforms` (constants,
@@ -513,7 +514,7 @@ impl Kernel {
         prepared: &Prepared,
         textures: &dyn Textures,
     ) -> Result<(), ExecError> {
-        engine::run(
+        dispatch::run(
             self,
             &self.code,
             batch,
@@ -537,7 +538,7 @@ impl Kernel {
             // Compile now rather than after a few runs.
             self.jit.get(&self.code, true);
         }
-        engine::run_on(v, self, &self.code, batch, uniforms, textures, None)
+        dispatch::run_on(v, self, &self.code, batch, uniforms, textures, None)
     }
 
     /// The reference interpreter (what `run_traced` uses), for tests.

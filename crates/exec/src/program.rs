@@ -659,3 +659,32 @@ impl Program {
         }
     }
 }
+
+/// Ops that compute every lane from their register operands alone (no
+/// mask, no other lanes, no ranges), so they may run in the prologue.
+pub(crate) fn pure(op: &Op) -> bool {
+    !matches!(
+        op,
+        Op::Store { .. }
+            | Op::Scatter { .. }
+            | Op::Gather { .. }
+            | Op::Noise { .. }
+            | Op::Texture { .. }
+            | Op::Printf { .. }
+            | Op::DdX { .. }
+            | Op::DdY { .. }
+            | Op::FMac { .. }
+            | Op::SaveMask { .. }
+            | Op::RestoreMask { .. }
+            | Op::AndMask { .. }
+            | Op::AndNotMask { .. }
+            | Op::JumpIfNone { .. }
+            | Op::Jump { .. }
+            | Op::LoopIter
+            | Op::Kill { .. }
+            | Op::Discard { .. }
+            | Op::Call { .. }
+            | Op::Ret { .. }
+            | Op::SyncDiscard { .. }
+    )
+}

@@ -2,7 +2,7 @@
 
 use super::PROLOGUE_OP;
 use super::{jit_step, math_helpers, Const16, Ctx, Entry, Native, F1_CALLED, F2_CALLED, MAX_OPS};
-use crate::engine::{Code, Ins};
+use crate::opt::{Code, Ins};
 use crate::program::{Op, Reg, F1, F2, F3};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
 use cranelift_codegen::ir::types::{F32X4, I32, I32X4, I64, I8X16};
