@@ -81,10 +81,10 @@ pub(crate) const MAX_OPS: usize = 6000;
 
 /// A kernel's native code is started on its run number this, on a thread
 /// of its own, while the runs go on in the interpreter; they switch to the
-/// native code once it is there (10–260 ms for the seed shaders on the
-/// 2-core Zen 4). Kernels of tiny draws (under 1,024 batches: 16,384
-/// lanes) never pay for it; a draw that stops before the code is ready
-/// has lost only the compiling thread's time.
+/// native code once it is there (compiling takes milliseconds to tenths of
+/// a second). Kernels of tiny draws (under 1,024 batches: 16,384 lanes)
+/// never pay for it; a draw that stops before the code is ready has lost
+/// only the compiling thread's time.
 pub(crate) const COMPILE_AFTER_RUNS: u32 = 1024;
 
 /// The run count of [`compile_after`] when set by [`set_compile_after`]
@@ -495,8 +495,8 @@ math_helpers_for!(
 );
 
 /// The math helpers native code calls: the widest build the CPU runs
-/// (AVX-512: 16 lanes of `f64` are two 512-bit registers; measured ~4 %
-/// less time per batch of the materials shader than AVX2 on Zen 4), else
+/// (AVX-512: 16 lanes of `f64` are two 512-bit registers instead of four
+/// 256-bit ones, so it takes less time per batch than AVX2), else
 /// the baseline one.
 fn math_helpers() -> (*const (), *const ()) {
     #[cfg(target_arch = "x86_64")]

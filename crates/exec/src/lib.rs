@@ -145,12 +145,6 @@
 //! ready, so compiling and linking a program costs no code generation,
 //! kernels of tiny draws never pay for it and no draw waits for it;
 //! [`Kernel::compile_native`] compiles at once.
-//! Measured per 16-lane batch on a 2-core Zen 4 (`bench_sphere`,
-//! `bench_materials`, all 16 lanes active, session 5, under load): the
-//! sphere-impostor shader (unrolled light loop, 631 executor ops) 1.0–1.3 µs
-//! with prepared uniforms against 3.1 µs for the AVX2 interpreter running
-//! its uniform prologue per batch; the lit-mesh materials shader
-//! 0.50–0.65 µs against 1.2 µs.
 //! Limitations: kernels with subroutine calls (inlining limit exceeded)
 //! or over 6000 executor ops stay on the interpreter, as does everything
 //! when Cranelift does not support the CPU or fails (the reason:
@@ -176,6 +170,25 @@
 //!   [`LOOP_BUDGET`] like loop iterations.
 //! - Programs beyond [`limits::MAX_REGISTERS`] registers or
 //!   [`limits::MAX_OPS`] instructions are refused.
+//!
+//! ## Modules, in the order a kernel goes through them
+//! - `lower` ([`Kernel::new`] → `lower::lower`): IR to a register program
+//!   (`program`: the ops), the interface (`interface`); its submodules
+//!   hold unrolling, calls, places, expressions, built-ins, textures.
+//! - `opt` (`opt::optimize`): the program rewritten for the executors
+//!   (hoisting, dead code, store fusion; `opt::mask_flow`), using
+//!   `liveness`.
+//! - `dispatch` (`dispatch::run`): which executor runs, per run, as
+//!   `variant` selects.
+//! - `engine` (`engine::run_in`): the interpreter over 16 lanes, built per
+//!   CPU variant (`cpu`, `lane` for its per-lane float operations).
+//! - `jit` (`jit::run`, `jit::codegen::compile`): native code with
+//!   Cranelift, sharing `engine`'s loading, output copy and callbacks, with
+//!   `float_env` for the subnormal mode.
+//! - `interp` (`interp::run`): the reference interpreter of the unrewritten
+//!   program, for hooked runs and tests.
+//! - `depth_slice` ([`Kernel::depth_only`]): a fragment kernel sliced to
+//!   its depth and discards.
 
 pub mod cpu;
 mod depth_slice;
@@ -206,12 +219,9 @@ pub use variant::{
 /// Fragment kernels without `gl_FragDepth` get a [`Kernel::depth_only`]
 /// slice (their discards) from this many executor ops on: below, a
 /// renderer's extra depth pass costs more than the shading it saves.
-/// Measured on three overlapping sheets (`bench/scene.py`): the seed
-/// materials shader (193 ops) 1.5× faster deferred; the fixed-function
-/// stage with smooth colour and linear fog (20 ops) 3–5 % faster since
-/// the deferred pass got cheaper (it was 10–15 % slower when this was 96);
-/// flat colour alone (10 ops, sub-pixel triangles) 8–10 % slower. The
-/// crossover lies between; the threshold is the measured 20.
+/// The threshold is where the two cross on overlapping sheets
+/// (`bench/scene.py`): a fixed-function stage with smooth colour and fog
+/// gains from the deferred pass, flat colour alone does not.
 pub const DEFER_MIN_OPS: usize = 20;
 
 /// Makes kernels of the `jit` variant compile to native code on their
