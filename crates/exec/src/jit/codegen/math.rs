@@ -1,7 +1,7 @@
 //! Lane arithmetic emitted inline, on one 4-lane quarter: subnormal
 //! flushes, `min`/`max`, `floor`/`ceil`, booleans, and the inline
-//! functions of one, two and three floats ([`Op::F1`], [`Op::F2`],
-//! [`Op::F3`]), each the same IEEE operations in the same order as the
+//! functions of one, two and three floats ([`crate::program::Op::F1`], `F2`,
+//! `F3`), each the same IEEE operations in the same order as the
 //! interpreter (`engine::step`, `engine::f1`/`f2`).
 
 use super::{Emit, ONE, SIGN};
