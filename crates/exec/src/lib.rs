@@ -249,7 +249,8 @@ pub type LaneMask = u32;
 
 /// Size limits of lowered programs.
 pub mod limits {
-    pub use crate::lower::{INLINE_LIMIT, MAX_CALL_DEPTH, MAX_OPS, MAX_REGISTERS};
+    pub use crate::lower::{INLINE_LIMIT, MAX_CALL_DEPTH};
+    pub use crate::program::{MAX_OPS, MAX_REGISTERS};
 }
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

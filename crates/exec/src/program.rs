@@ -19,6 +19,12 @@ use glsl::Span;
 /// A register index.
 pub(crate) type Reg = u32;
 
+/// Most registers a program may use (each is `4 * LANES` bytes).
+pub const MAX_REGISTERS: u32 = 1 << 18;
+
+/// Most instructions a lowered program may have (after inlining).
+pub const MAX_OPS: usize = 1 << 21;
+
 /// A `glsl::math` function of one float.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum F1 {

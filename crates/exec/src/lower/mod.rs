@@ -68,12 +68,6 @@ use glsl::types::{Scalar, Type};
 use glsl::Span;
 use unroll::UNROLL_BUDGET;
 
-/// Most registers a program may use (each is `4 * LANES` bytes).
-pub const MAX_REGISTERS: u32 = 1 << 18;
-
-/// Most instructions a lowered program may have (after inlining).
-pub const MAX_OPS: usize = 1 << 21;
-
 /// Deepest chain of inlined calls.
 pub const MAX_CALL_DEPTH: usize = 128;
 

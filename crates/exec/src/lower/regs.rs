@@ -1,13 +1,13 @@
 //! Allocation and emission: registers (a bump allocator whose mark each
 //! block and statement resets), mask slots, uniform words, the registers of
 //! a function's locals, constants, and appending ops within the program's
-//! size limits ([`super::MAX_REGISTERS`], [`super::MAX_OPS`]). Every other
+//! size limits ([`crate::program::MAX_REGISTERS`], [`crate::program::MAX_OPS`]). Every other
 //! module emits through these.
 
 use super::visit::visit_block;
-use super::{const_index, unsupported, GlobalLoc, Lowerer, Val, MAX_OPS, MAX_REGISTERS, R};
+use super::{const_index, unsupported, GlobalLoc, Lowerer, Val, R};
 use crate::interface::{kinds, size_of};
-use crate::program::{Op, Reg, StatementMark, VarInfo};
+use crate::program::{Op, Reg, StatementMark, VarInfo, MAX_OPS, MAX_REGISTERS};
 use glsl::ir::{ExprKind, FunctionId, GlobalId};
 use glsl::types::{ArraySize, Scalar, Type};
 use glsl::Span;

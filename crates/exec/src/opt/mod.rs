@@ -291,7 +291,7 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
             }
             _ => None,
         };
-        if next > crate::lower::MAX_REGISTERS {
+        if next > crate::program::MAX_REGISTERS {
             return None;
         }
         for &(r, c) in e.full_defs.iter().chain(&e.partial_defs) {
