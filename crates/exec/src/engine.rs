@@ -1,442 +1,26 @@
-//! The fast executor: a lowered [`Program`] rewritten once per kernel
-//! ([`compile`]) and run over a reused register file ([`run`]).
+//! The interpreter: runs an optimized program ([`Code`], made by
+//! [`crate::opt`]) over a register file reused per thread, one op at a
+//! time over all 16 lanes ([`step`]), compiled once per CPU variant
+//! (baseline, AVX2, AVX-512: [`run_in`] and its `#[target_feature]`
+//! copies; which one runs is chosen by [`crate::dispatch`]).
 //!
-//! The rewrite keeps the program's meaning bit for bit (the reference is
-//! `interp`, which `Kernel::run_traced` uses; tests compare the two):
-//! - **Invariant hoisting**: constants, uniform words and pure data ops whose
-//!   operands are all such values go to a *prologue* computing them once per
-//!   run (or once per draw, [`crate::Prepared`]) into extra *pool*
-//!   registers; later readers read the pool register instead. The original
-//!   op stays where it was unless nothing reads it any more.
-//! - **Dead code**: ops whose results nobody reads ([`crate::liveness`],
-//!   with every output live at the end) are dropped.
-//! - **Store fusion**: `t = op(...)` followed by `var = t` (a masked store,
-//!   or a copy: stores in full flow become copies, [`crate::mask_flow`])
-//!   with `t` dead afterwards becomes one op writing `var` (under the mask
-//!   for a store).
-//! - **Initialization**: only the registers live at the entry (read before
-//!   written on some path) are zeroed at the start of a run.
+//! Also what native code (`jit`) shares with it: loading a run's inputs
+//! and pool ([`load`]), copying its outputs ([`store_outputs`]), the
+//! uniform prologue ([`prepare`]), and the data ops native code calls
+//! back for ([`step_data`], [`f1`], [`f2`]).
 //!
 //! The interpreter loop indexes registers without bounds checks: every
-//! register index of the rewritten program and prologue is checked once by
-//! [`Program::validate`] when the kernel is built (a program that fails the
-//! check runs unrewritten through the same checks).
+//! register index of `Code` was validated when the kernel was built
+//! ([`crate::opt`]).
 
 use crate::interp::FULL;
-use crate::liveness::{analyze, effects};
-use crate::program::{Op, Program, Reg, TexLod, F1, F2, F3};
+use crate::opt::{Code, Ins};
+use crate::program::{Op, Reg, TexLod, F1, F2, F3};
 use crate::{Batch, ExecError, Kernel, LaneMask, Lod, SampleRequest, Textures, LANES};
 use glsl::math;
 use glsl::types::Scalar;
-use std::cell::RefCell;
-use std::collections::BTreeMap;
-
-/// One instruction of the rewritten program: the op and whether its
-/// destination is written under the current mask (fused store).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Ins {
-    pub op: Op,
-    pub masked: bool,
-}
-
-/// A program ready for [`run`].
-#[derive(Clone, Debug)]
-pub(crate) struct Code {
-    /// The rewritten program (its `registers` include the pool).
-    pub prog: Program,
-    pub ins: Vec<Ins>,
-    /// Pure data ops filling the pool registers, in order.
-    pub prologue: Vec<Op>,
-    /// First pool register; the pool ends at `prog.registers`.
-    pub pool_base: u32,
-    /// Registers to zero at the start of a run.
-    pub zero: Vec<Reg>,
-    /// The output registers (live at the end of a run).
-    pub live_out: Vec<Reg>,
-}
-
-/// Programs with more ops than this are run unrewritten (the analysis
-/// would cost more than it saves).
-const MAX_REWRITE_OPS: usize = 1 << 16;
-
-/// Rewrites `p` (see the module docs); `live_out`: the output registers.
-pub(crate) fn compile(p: &Program, live_out: &[Reg]) -> Code {
-    if p.ops.len() <= MAX_REWRITE_OPS {
-        if let Some(c) = rewrite(p, live_out) {
-            return c;
-        }
-    }
-    plain(p, live_out)
-}
-
-/// The program as it is, every register zeroed at the start.
-fn plain(p: &Program, live_out: &[Reg]) -> Code {
-    Code {
-        prog: p.clone(),
-        ins: p.ops.iter().map(|&op| Ins { op, masked: false }).collect(),
-        prologue: Vec::new(),
-        pool_base: p.registers,
-        zero: (0..p.registers).collect(),
-        live_out: live_out.to_vec(),
-    }
-}
-
-fn leaders(ops: &[Op]) -> Vec<bool> {
-    let n = ops.len();
-    let mut leader = vec![false; n + 1];
-    leader[0] = true;
-    for (i, op) in ops.iter().enumerate() {
-        match *op {
-            Op::Jump { target } | Op::JumpIfNone { target } | Op::Call { target, .. } => {
-                leader[(target as usize).min(n)] = true;
-                leader[i + 1] = true;
-            }
-            Op::Ret { .. } => leader[i + 1] = true,
-            _ => {}
-        }
-    }
-    leader
-}
-
-/// Ops that compute every lane from their register operands alone (no
-/// mask, no other lanes, no ranges), so they may run in the prologue.
-pub(crate) fn pure(op: &Op) -> bool {
-    !matches!(
-        op,
-        Op::Store { .. }
-            | Op::Scatter { .. }
-            | Op::Gather { .. }
-            | Op::Noise { .. }
-            | Op::Texture { .. }
-            | Op::Printf { .. }
-            | Op::DdX { .. }
-            | Op::DdY { .. }
-            | Op::FMac { .. }
-            | Op::SaveMask { .. }
-            | Op::RestoreMask { .. }
-            | Op::AndMask { .. }
-            | Op::AndNotMask { .. }
-            | Op::JumpIfNone { .. }
-            | Op::Jump { .. }
-            | Op::LoopIter
-            | Op::Kill { .. }
-            | Op::Discard { .. }
-            | Op::Call { .. }
-            | Op::Ret { .. }
-            | Op::SyncDiscard { .. }
-    )
-}
-
-/// Replaces the single-register reads of `op` through `f` (ranges, the
-/// accumulator of `FMac` and destinations are left alone). Returns whether
-/// every read register was replaced by one satisfying `is_pool`.
-fn map_reads(op: &mut Op, f: &mut dyn FnMut(Reg) -> Reg, is_pool: &dyn Fn(Reg) -> bool) -> bool {
-    let mut all = true;
-    let mut m = |r: &mut Reg| {
-        *r = f(*r);
-        all &= is_pool(*r);
-    };
-    use Op::*;
-    match op {
-        Const { .. } | Uniform { .. } => {}
-        Mov { a, .. }
-        | Store { a, .. }
-        | FNeg { a, .. }
-        | INeg { a, .. }
-        | Not { a, .. }
-        | FToI { a, .. }
-        | IToF { a, .. }
-        | FToB { a, .. }
-        | IToB { a, .. }
-        | BToF { a, .. }
-        | DdX { a, .. }
-        | DdY { a, .. }
-        | F1 { a, .. }
-        | ClampIdx { a, .. } => m(a),
-        FAdd { a, b, .. }
-        | FSub { a, b, .. }
-        | FMul { a, b, .. }
-        | FDiv { a, b, .. }
-        | FMac { a, b, .. }
-        | F2 { a, b, .. }
-        | FLt { a, b, .. }
-        | FLe { a, b, .. }
-        | FEq { a, b, .. }
-        | IAdd { a, b, .. }
-        | ISub { a, b, .. }
-        | IMul { a, b, .. }
-        | IDiv { a, b, .. }
-        | ILt { a, b, .. }
-        | ILe { a, b, .. }
-        | IEq { a, b, .. }
-        | And { a, b, .. }
-        | Or { a, b, .. }
-        | Xor { a, b, .. } => {
-            m(a);
-            m(b)
-        }
-        F3 { a, b, c, .. } | Select { a, b, c, .. } => {
-            m(a);
-            m(b);
-            m(c)
-        }
-        Dot { n, a, b, .. } => {
-            for k in 0..(*n as usize).min(4) {
-                m(&mut a[k]);
-                m(&mut b[k]);
-            }
-        }
-        Gather { off, .. } | GatherUniform { off, .. } => m(off),
-        Scatter { off, a, .. } => {
-            m(off);
-            m(a)
-        }
-        AndMask { c } | AndNotMask { c, .. } => m(c),
-        Noise { .. } | Texture { .. } => all = false,
-        Printf { .. }
-        | SaveMask { .. }
-        | RestoreMask { .. }
-        | JumpIfNone { .. }
-        | Jump { .. }
-        | LoopIter
-        | Kill { .. }
-        | Discard { .. }
-        | Call { .. }
-        | Ret { .. }
-        | SyncDiscard { .. } => {}
-    }
-    all
-}
-
-fn set_dest(op: &mut Op, to: Reg) {
-    use Op::*;
-    match op {
-        Const { d, .. }
-        | Mov { d, .. }
-        | Store { d, .. }
-        | Uniform { d, .. }
-        | FAdd { d, .. }
-        | FSub { d, .. }
-        | FMul { d, .. }
-        | FDiv { d, .. }
-        | FNeg { d, .. }
-        | FMac { d, .. }
-        | Dot { d, .. }
-        | F1 { d, .. }
-        | F2 { d, .. }
-        | F3 { d, .. }
-        | FLt { d, .. }
-        | FLe { d, .. }
-        | FEq { d, .. }
-        | IAdd { d, .. }
-        | ISub { d, .. }
-        | IMul { d, .. }
-        | IDiv { d, .. }
-        | INeg { d, .. }
-        | ILt { d, .. }
-        | ILe { d, .. }
-        | IEq { d, .. }
-        | And { d, .. }
-        | Or { d, .. }
-        | Xor { d, .. }
-        | Not { d, .. }
-        | FToI { d, .. }
-        | IToF { d, .. }
-        | FToB { d, .. }
-        | IToB { d, .. }
-        | BToF { d, .. }
-        | Select { d, .. }
-        | ClampIdx { d, .. }
-        | Gather { d, .. }
-        | GatherUniform { d, .. }
-        | DdX { d, .. }
-        | DdY { d, .. } => *d = to,
-        _ => {}
-    }
-}
-
-/// The single full destination of a plain data op.
-fn single_dest(p: &Program, op: &Op) -> Option<Reg> {
-    if !pure(op) && !matches!(op, Op::Gather { .. } | Op::DdX { .. } | Op::DdY { .. }) {
-        return None;
-    }
-    let e = effects(p, op);
-    match (e.full_defs.as_slice(), e.partial_defs.is_empty()) {
-        ([(d, 1)], true) => Some(*d),
-        _ => None,
-    }
-}
-
-fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
-    let n = p.ops.len();
-    let leader = leaders(&p.ops);
-    let pool_base = p.registers;
-    let mut next = pool_base;
-    let mut prologue = Vec::new();
-    let mut consts: BTreeMap<u32, Reg> = BTreeMap::new();
-    let mut words: BTreeMap<u32, Reg> = BTreeMap::new();
-    let nregs = p.registers as usize;
-    // known[r]: pool register holding what r holds now (u32::MAX: none).
-    let mut known = vec![u32::MAX; nregs];
-    let mut touched: Vec<Reg> = Vec::new();
-    let mut ops = p.ops.clone();
-    crate::mask_flow::unmask_stores(p, &mut ops);
-    for i in 0..n {
-        if leader[i] {
-            for &r in &touched {
-                known[r as usize] = u32::MAX;
-            }
-            touched.clear();
-        }
-        let op = &mut ops[i];
-        let is_pool = |r: Reg| r >= pool_base;
-        let all_pool = map_reads(
-            op,
-            &mut |r| match known.get(r as usize) {
-                Some(&k) if k != u32::MAX => k,
-                _ => r,
-            },
-            &is_pool,
-        );
-        let e = effects(p, op);
-        let hoisted = match *op {
-            Op::Const { bits, .. } => Some(*consts.entry(bits).or_insert_with(|| {
-                let r = next;
-                next += 1;
-                prologue.push(Op::Const { d: r, bits });
-                r
-            })),
-            Op::Uniform { word, float, .. } => Some(*words.entry(word).or_insert_with(|| {
-                let r = next;
-                next += 1;
-                prologue.push(Op::Uniform { d: r, word, float });
-                r
-            })),
-            _ if pure(op) && all_pool => {
-                let r = next;
-                next += 1;
-                let mut h = *op;
-                set_dest(&mut h, r);
-                prologue.push(h);
-                Some(r)
-            }
-            _ => None,
-        };
-        if next > crate::lower::MAX_REGISTERS {
-            return None;
-        }
-        for &(r, c) in e.full_defs.iter().chain(&e.partial_defs) {
-            for k in 0..c.max(1) {
-                if let Some(x) = known.get_mut(r.saturating_add(k) as usize) {
-                    *x = u32::MAX;
-                }
-            }
-        }
-        if let (Some(h), [(d, 1)]) = (hoisted, e.full_defs.as_slice()) {
-            if let Some(x) = known.get_mut(*d as usize) {
-                *x = h;
-                touched.push(*d);
-            }
-        }
-    }
-
-    let live = analyze(p, &ops, next, live_out)?;
-    // Store fusion: op i writes t, op i+1 is `Store { d: v, a: t }` in the
-    // same block with t dead after it.
-    let mut keep = live.keep.clone();
-    // A copy (`Mov`, a store in full flow: `mask_flow`) fuses the same
-    // way, unmasked.
-    let mut new_dest: Vec<Option<(Reg, bool)>> = vec![None; n];
-    for i in 0..n.saturating_sub(1) {
-        if !keep[i] || !keep[i + 1] || leader[i + 1] {
-            continue;
-        }
-        let (v, t, masked) = match ops[i + 1] {
-            Op::Store { d, a } => (d, a, true),
-            Op::Mov { d, a } => (d, a, false),
-            _ => continue,
-        };
-        if live.store_source_dead[i + 1] && single_dest(p, &ops[i]) == Some(t) && v != t {
-            new_dest[i] = Some((v, masked));
-            keep[i + 1] = false;
-        }
-    }
-
-    // Compact, remapping jump targets to the next kept op.
-    let mut new_index = vec![0u32; n + 1];
-    let mut count = 0u32;
-    for i in 0..n {
-        new_index[i] = count;
-        if keep[i] {
-            count += 1;
-        }
-    }
-    new_index[n] = count;
-    let remap = |t: u32| new_index[(t as usize).min(n)];
-    let mut ins = Vec::with_capacity(count as usize);
-    for i in 0..n {
-        if !keep[i] {
-            continue;
-        }
-        let mut op = match ops[i] {
-            Op::Jump { target } => Op::Jump {
-                target: remap(target),
-            },
-            Op::JumpIfNone { target } => Op::JumpIfNone {
-                target: remap(target),
-            },
-            Op::Call { target, slot } => Op::Call {
-                target: remap(target),
-                slot,
-            },
-            other => other,
-        };
-        let masked = match new_dest[i] {
-            Some((v, masked)) => {
-                set_dest(&mut op, v);
-                masked
-            }
-            None => false,
-        };
-        ins.push(Ins { op, masked });
-    }
-    let prog = Program {
-        ops: ins.iter().map(|i| i.op).collect(),
-        textures: p.textures.clone(),
-        kill_slots: p.kill_slots.clone(),
-        registers: next,
-        mask_slots: p.mask_slots,
-        subroutines: p.subroutines,
-        init: p.init.clone(),
-        statements: Vec::new(),
-        vars: Vec::new(),
-        printfs: p.printfs.clone(),
-    };
-    prog.validate().ok()?;
-    let pro = Program {
-        ops: prologue.clone(),
-        ..prog.clone()
-    };
-    pro.validate().ok()?;
-    let zero = (0..pool_base).filter(|&r| live.entry_live(r)).collect();
-    Some(Code {
-        prog,
-        ins,
-        prologue,
-        pool_base,
-        zero,
-        live_out: live_out.to_vec(),
-    })
-}
-
-// ---- running -----------------------------------------------------------
 
 pub(crate) type Lanes = [u32; LANES];
-
-thread_local! {
-    /// The register file, reused across runs on this thread.
-    pub(crate) static FILE: RefCell<Vec<Lanes>> = const { RefCell::new(Vec::new()) };
-}
 
 #[inline(always)]
 fn f(x: u32) -> f32 {
@@ -520,98 +104,13 @@ struct State<'a> {
     iterations: &'a mut u64,
 }
 
-/// Runs `k` (whose compiled code is `code`) on `batch`. `pool`: the
-/// prepared pool registers, or `None` to run the prologue.
-pub(crate) fn run(
-    k: &Kernel,
-    code: &Code,
-    batch: &mut Batch,
-    uniforms: &[u32],
-    textures: &dyn Textures,
-    pool: Option<&[Lanes]>,
-) -> Result<(), ExecError> {
-    run_on(
-        crate::variant::current(),
-        k,
-        code,
-        batch,
-        uniforms,
-        textures,
-        pool,
-    )
-}
-
-/// [`run`] with the given variant, which must be supported (else the
-/// portable one runs).
-pub(crate) fn run_on(
-    variant: crate::Variant,
-    k: &Kernel,
-    code: &Code,
-    batch: &mut Batch,
-    uniforms: &[u32],
-    textures: &dyn Textures,
-    pool: Option<&[Lanes]>,
-) -> Result<(), ExecError> {
-    let variant = if variant.supported() {
-        variant
-    } else {
-        crate::Variant::Portable
-    };
-    // Native code when the kernel has it (compiled on demand), else the
-    // best interpreter.
-    #[cfg(feature = "jit")]
-    let native = match variant {
-        // The kernel's cache holds the native code of its own `code`
-        // (what every caller passes); any other code is interpreted.
-        crate::Variant::Jit if std::ptr::eq(code, &*k.code) => k.jit.get_or_start(&k.code),
-        _ => None,
-    };
-    let variant = match variant {
-        crate::Variant::Jit => crate::variant::best_interpreter(),
-        v => v,
-    };
-    FILE.with(|cell| {
-        // A textures implementation that runs a kernel on this thread
-        // finds the file borrowed: it then gets its own.
-        let mut own;
-        let mut guard;
-        let file: &mut Vec<Lanes> = match cell.try_borrow_mut() {
-            Ok(g) => {
-                guard = g;
-                &mut guard
-            }
-            Err(_) => {
-                own = Vec::new();
-                &mut own
-            }
-        };
-        #[cfg(feature = "jit")]
-        if let Some(n) = native {
-            return crate::jit::run(n, k, code, file, batch, uniforms, textures, pool);
-        }
-        match variant {
-            #[cfg(target_arch = "x86_64")]
-            crate::Variant::Avx512 => {
-                // SAFETY: checked supported above.
-                unsafe { run_avx512(k, code, file, batch, uniforms, textures, pool) }
-            }
-            #[cfg(target_arch = "x86_64")]
-            crate::Variant::Avx2 => {
-                // SAFETY: as above.
-                unsafe { run_avx2(k, code, file, batch, uniforms, textures, pool) }
-            }
-            _ => run_in(k, code, file, batch, uniforms, textures, pool),
-        }
-    })
-}
-
 /// [`run_in`] compiled for AVX2.
 ///
 /// # Safety
 /// The CPU must support AVX2.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-unsafe fn run_avx2(
+pub(crate) unsafe fn run_avx2(
     k: &Kernel,
     code: &Code,
     file: &mut Vec<Lanes>,
@@ -629,7 +128,7 @@ unsafe fn run_avx2(
 /// The CPU must support those AVX-512 subsets.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2")]
-unsafe fn run_avx512(
+pub(crate) unsafe fn run_avx512(
     k: &Kernel,
     code: &Code,
     file: &mut Vec<Lanes>,
@@ -645,7 +144,7 @@ unsafe fn run_avx512(
 /// the same IEEE operations (Rust never contracts `a * b + c` into a fused
 /// multiply-add), so every variant computes the same bits.
 #[inline(always)]
-fn run_in(
+pub(crate) fn run_in(
     k: &Kernel,
     code: &Code,
     file: &mut Vec<Lanes>,
@@ -1331,6 +830,8 @@ unsafe fn texture(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::opt::unoptimized;
+    use crate::program::Program;
     use glsl::math::flush_denormal;
 
     #[test]
@@ -1450,7 +951,7 @@ mod tests {
             }
             for func in three {
                 // The F3 arms are inlined in `step`: run them as an op.
-                let code = plain(
+                let code = unoptimized(
                     &Program {
                         ops: vec![Op::F3 {
                             f: func,

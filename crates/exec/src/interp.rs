@@ -201,7 +201,7 @@ pub(crate) fn run<H: Hook>(
     let mut return_address = vec![0u32; p.subroutines as usize];
     let ops = &p.ops[..];
     let mut pc = 0usize;
-    let uni = |w: usize, float: bool| crate::engine::uniform_word(uniforms, w, float);
+    let uni = |w: usize, float: bool| crate::lane::uniform_word(uniforms, w, float);
 
     macro_rules! un {
         ($d:expr, $a:expr, |$x:ident| $body:expr) => {{
@@ -433,7 +433,7 @@ pub(crate) fn run<H: Hook>(
             for (l, v) in dst.iter_mut().enumerate() {
                 if active & (1 << l) != 0 {
                     *v = match kind {
-                        Scalar::Float => f(crate::engine::float_output(src[l])),
+                        Scalar::Float => f(crate::lane::float_output(src[l])),
                         Scalar::Int => src[l] as i32 as f32,
                         Scalar::Bool => (src[l] != 0) as u32 as f32,
                     };

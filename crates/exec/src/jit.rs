@@ -1,4 +1,4 @@
-//! The native-code backend: a kernel's rewritten program ([`Code`]: the
+//! The native-code backend: a kernel's optimized program ([`Code`], `opt`: the
 //! prologue and the executor's ops) compiled by Cranelift into one machine
 //! function, run instead of the interpreter loop of `engine`.
 //!
@@ -9,7 +9,7 @@
 //! multiply-add, so IEEE results are those of the interpreter.
 //!
 //! ## Shape of the generated code
-//! The register file stays in memory (the thread's `engine` file, the same
+//! The register file stays in memory (the thread's `dispatch` file, the same
 //! layout: a register is 16 `u32` lanes, 64 bytes), each register handled
 //! as four 4-lane vectors (quarters; Cranelift's x86-64 vectors are 128
 //! bits). A run of lane-wise data ops inside a basic block (arithmetic,
@@ -64,9 +64,10 @@
 
 mod codegen;
 
-use crate::engine::{self, Code, Lanes};
+use crate::engine::{self, Lanes};
 use crate::float_env;
 use crate::interp::FULL;
+use crate::opt::{Code, Ins};
 use crate::program::{F1, F2};
 use crate::{Batch, ExecError, Kernel, Textures};
 use std::any::Any;
@@ -80,10 +81,10 @@ pub(crate) const MAX_OPS: usize = 6000;
 
 /// A kernel's native code is started on its run number this, on a thread
 /// of its own, while the runs go on in the interpreter; they switch to the
-/// native code once it is there (10–260 ms for the seed shaders on the
-/// 2-core Zen 4). Kernels of tiny draws (under 1,024 batches: 16,384
-/// lanes) never pay for it; a draw that stops before the code is ready
-/// has lost only the compiling thread's time.
+/// native code once it is there (compiling takes milliseconds to tenths of
+/// a second). Kernels of tiny draws (under 1,024 batches: 16,384 lanes)
+/// never pay for it; a draw that stops before the code is ready has lost
+/// only the compiling thread's time.
 pub(crate) const COMPILE_AFTER_RUNS: u32 = 1024;
 
 /// The run count of [`compile_after`] when set by [`set_compile_after`]
@@ -309,7 +310,7 @@ pub(crate) fn supported() -> bool {
     *OK.get_or_init(|| codegen::isa().is_ok())
 }
 
-/// [`engine::run`]'s body with native code: same register file set-up and
+/// [`engine::run_in`]'s body with native code: same register file set-up and
 /// output copy, the interpreter loop replaced by `native`.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn run(
@@ -396,7 +397,7 @@ unsafe extern "C" fn jit_step(ctx: *mut Ctx, index: u32, cur: u32) {
     let ins = if index & PROLOGUE_OP != 0 {
         code.prologue
             .get((index & !PROLOGUE_OP) as usize)
-            .map(|&op| engine::Ins { op, masked: false })
+            .map(|&op| Ins { op, masked: false })
     } else {
         code.ins.get(index as usize).copied()
     };
@@ -494,16 +495,24 @@ math_helpers_for!(
 );
 
 /// The math helpers native code calls: the widest build the CPU runs
-/// (AVX-512: 16 lanes of `f64` are two 512-bit registers; measured ~4 %
-/// less time per batch of the materials shader than AVX2 on Zen 4), else
+/// (AVX-512: 16 lanes of `f64` are two 512-bit registers instead of four
+/// 256-bit ones, so it takes less time per batch than AVX2), else
 /// the baseline one.
 fn math_helpers() -> (*const (), *const ()) {
     #[cfg(target_arch = "x86_64")]
     {
-        if crate::Variant::Avx512.supported() {
+        use crate::cpu::{supports, Features};
+        // The features each build is compiled with (its `target_feature`).
+        if supports(
+            Features::AVX512F
+                .and(Features::AVX512BW)
+                .and(Features::AVX512DQ)
+                .and(Features::AVX512VL)
+                .and(Features::AVX2),
+        ) {
             return (jit_f1_avx512 as *const (), jit_f2_avx512 as *const ());
         }
-        if crate::Variant::Avx2.supported() {
+        if supports(Features::AVX2) {
             return (jit_f1_avx2 as *const (), jit_f2_avx2 as *const ());
         }
     }

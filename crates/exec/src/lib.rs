@@ -103,7 +103,7 @@
 //! names the registers of globals and (inlined) locals.
 //!
 //! ## Execution
-//! [`Kernel::new`] also rewrites the program for the executor (`engine`):
+//! [`Kernel::new`] also rewrites the program for the executor (`opt`):
 //! constants, uniform words and what is computed from them alone move to a
 //! prologue run once per `run` (or once per draw: [`Kernel::prepare`] and
 //! [`Kernel::run_prepared`]); dead ops go; `t = op(..); var = t` becomes one
@@ -145,12 +145,6 @@
 //! ready, so compiling and linking a program costs no code generation,
 //! kernels of tiny draws never pay for it and no draw waits for it;
 //! [`Kernel::compile_native`] compiles at once.
-//! Measured per 16-lane batch on a 2-core Zen 4 (`bench_sphere`,
-//! `bench_materials`, all 16 lanes active, session 5, under load): the
-//! sphere-impostor shader (unrolled light loop, 631 executor ops) 1.0–1.3 µs
-//! with prepared uniforms against 3.1 µs for the AVX2 interpreter running
-//! its uniform prologue per batch; the lit-mesh materials shader
-//! 0.50–0.65 µs against 1.2 µs.
 //! Limitations: kernels with subroutine calls (inlining limit exceeded)
 //! or over 6000 executor ops stay on the interpreter, as does everything
 //! when Cranelift does not support the CPU or fails (the reason:
@@ -176,9 +170,29 @@
 //!   [`LOOP_BUDGET`] like loop iterations.
 //! - Programs beyond [`limits::MAX_REGISTERS`] registers or
 //!   [`limits::MAX_OPS`] instructions are refused.
+//!
+//! ## Modules, in the order a kernel goes through them
+//! - `lower` ([`Kernel::new`] → `lower::lower`): IR to a register program
+//!   (`program`: the ops), the interface (`interface`); its submodules
+//!   hold unrolling, calls, places, expressions, built-ins, textures.
+//! - `opt` (`opt::optimize`): the program rewritten for the executors
+//!   (hoisting, dead code, store fusion; `opt::mask_flow`), using
+//!   `liveness`.
+//! - `dispatch` (`dispatch::run`): which executor runs, per run, as
+//!   `variant` selects.
+//! - `engine` (`engine::run_in`): the interpreter over 16 lanes, built per
+//!   CPU variant (`cpu`, `lane` for its per-lane float operations).
+//! - `jit` (`jit::run`, `jit::codegen::compile`): native code with
+//!   Cranelift, sharing `engine`'s loading, output copy and callbacks, with
+//!   `float_env` for the subnormal mode.
+//! - `interp` (`interp::run`): the reference interpreter of the unrewritten
+//!   program, for hooked runs and tests.
+//! - `depth_slice` ([`Kernel::depth_only`]): a fragment kernel sliced to
+//!   its depth and discards.
 
 pub mod cpu;
 mod depth_slice;
+mod dispatch;
 mod engine;
 mod float_env;
 mod interface;
@@ -190,7 +204,7 @@ pub mod lane;
 pub mod lanes16;
 mod liveness;
 mod lower;
-mod mask_flow;
+mod opt;
 pub mod print;
 mod program;
 mod variant;
@@ -206,12 +220,9 @@ pub use variant::{
 /// Fragment kernels without `gl_FragDepth` get a [`Kernel::depth_only`]
 /// slice (their discards) from this many executor ops on: below, a
 /// renderer's extra depth pass costs more than the shading it saves.
-/// Measured on three overlapping sheets (`bench/scene.py`): the seed
-/// materials shader (193 ops) 1.5× faster deferred; the fixed-function
-/// stage with smooth colour and linear fog (20 ops) 3–5 % faster since
-/// the deferred pass got cheaper (it was 10–15 % slower when this was 96);
-/// flat colour alone (10 ops, sub-pixel triangles) 8–10 % slower. The
-/// crossover lies between; the threshold is the measured 20.
+/// The threshold is where the two cross on overlapping sheets
+/// (`bench/scene.py`): a fixed-function stage with smooth colour and fog
+/// gains from the deferred pass, flat colour alone does not.
 pub const DEFER_MIN_OPS: usize = 20;
 
 /// Makes kernels of the `jit` variant compile to native code on their
@@ -239,7 +250,8 @@ pub type LaneMask = u32;
 
 /// Size limits of lowered programs.
 pub mod limits {
-    pub use crate::lower::{INLINE_LIMIT, MAX_CALL_DEPTH, MAX_OPS, MAX_REGISTERS};
+    pub use crate::lower::{INLINE_LIMIT, MAX_CALL_DEPTH};
+    pub use crate::program::{MAX_OPS, MAX_REGISTERS};
 }
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -404,8 +416,8 @@ pub struct Kernel {
     inputs: Vec<(usize, u32, glsl::types::Scalar)>,
     outputs: Vec<(u32, usize, glsl::types::Scalar)>,
     loop_budget: u64,
-    /// The program rewritten for [`engine::run`].
-    code: std::sync::Arc<engine::Code>,
+    /// The program optimized for the executors ([`dispatch::run`]).
+    code: std::sync::Arc<opt::Code>,
     /// [`Kernel::depth_only`], computed on first use (shared by clones).
     depth: std::sync::Arc<std::sync::OnceLock<Option<Kernel>>>,
     /// Native code for `code`, made on demand (shared by clones).
@@ -417,7 +429,7 @@ pub struct Kernel {
 /// words ([`Kernel::prepare`]) and reused by [`Kernel::run_prepared`].
 #[derive(Clone, Debug)]
 pub struct Prepared {
-    code: std::sync::Arc<engine::Code>,
+    code: std::sync::Arc<opt::Code>,
     pool: Vec<[u32; LANES]>,
     uniforms: Vec<u32>,
 }
@@ -455,7 +467,7 @@ impl Kernel {
         loop_budget: u64,
     ) -> Kernel {
         let live_out: Vec<u32> = outputs.iter().map(|&(r, _, _)| r).collect();
-        let code = std::sync::Arc::new(engine::compile(&program, &live_out));
+        let code = std::sync::Arc::new(opt::optimize(&program, &live_out));
         Kernel {
             stage,
             program,
@@ -491,7 +503,7 @@ impl Kernel {
         uniforms: &[u32],
         textures: &dyn Textures,
     ) -> Result<(), ExecError> {
-        engine::run(self, &self.code, batch, uniforms, textures, None)
+        dispatch::run(self, &self.code, batch, uniforms, textures, None)
     }
 
     /// The uniform-only values of this kernel for `uniforms` (constants,
@@ -514,7 +526,7 @@ impl Kernel {
         prepared: &Prepared,
         textures: &dyn Textures,
     ) -> Result<(), ExecError> {
-        engine::run(
+        dispatch::run(
             self,
             &self.code,
             batch,
@@ -538,7 +550,7 @@ impl Kernel {
             // Compile now rather than after a few runs.
             self.jit.get(&self.code, true);
         }
-        engine::run_on(v, self, &self.code, batch, uniforms, textures, None)
+        dispatch::run_on(v, self, &self.code, batch, uniforms, textures, None)
     }
 
     /// The reference interpreter (what `run_traced` uses), for tests.

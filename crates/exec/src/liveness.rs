@@ -1,6 +1,6 @@
 //! Backward register liveness over a program's control-flow graph, and the
 //! dead code it reveals (used by [`crate::Kernel::depth_only`] and by the
-//! executor's compiler, `crate::engine`).
+//! optimizer, `crate::opt`).
 //!
 //! Basic blocks end at jumps, conditional jumps, subroutine calls and
 //! returns; the analysis iterates to a fixpoint (loops). Control-flow ops

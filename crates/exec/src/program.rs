@@ -19,6 +19,12 @@ use glsl::Span;
 /// A register index.
 pub(crate) type Reg = u32;
 
+/// Most registers a program may use (each is `4 * LANES` bytes).
+pub const MAX_REGISTERS: u32 = 1 << 18;
+
+/// Most instructions a lowered program may have (after inlining).
+pub const MAX_OPS: usize = 1 << 21;
+
 /// A `glsl::math` function of one float.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum F1 {
@@ -658,4 +664,33 @@ impl Program {
             None => Ok(()),
         }
     }
+}
+
+/// Ops that compute every lane from their register operands alone (no
+/// mask, no other lanes, no ranges), so they may run in the prologue.
+pub(crate) fn pure(op: &Op) -> bool {
+    !matches!(
+        op,
+        Op::Store { .. }
+            | Op::Scatter { .. }
+            | Op::Gather { .. }
+            | Op::Noise { .. }
+            | Op::Texture { .. }
+            | Op::Printf { .. }
+            | Op::DdX { .. }
+            | Op::DdY { .. }
+            | Op::FMac { .. }
+            | Op::SaveMask { .. }
+            | Op::RestoreMask { .. }
+            | Op::AndMask { .. }
+            | Op::AndNotMask { .. }
+            | Op::JumpIfNone { .. }
+            | Op::Jump { .. }
+            | Op::LoopIter
+            | Op::Kill { .. }
+            | Op::Discard { .. }
+            | Op::Call { .. }
+            | Op::Ret { .. }
+            | Op::SyncDiscard { .. }
+    )
 }

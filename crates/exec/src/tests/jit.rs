@@ -10,7 +10,7 @@
 //! the canonical NaN.
 
 use super::bits_of;
-use crate::engine::{Code, Ins};
+use crate::opt::{Code, Ins};
 use crate::program::{Op, Program, Reg, F1, F2, F3};
 use crate::{Batch, Interface, Kernel, NoTextures, Variant, LANES};
 use glsl::types::Scalar;

@@ -132,13 +132,13 @@ fn prepared_runs_compute_the_same_bytes() {
             for v in supported_variants() {
                 // Garbage in the thread's register file: what a run reads
                 // must come from the batch and the prepared pool.
-                crate::engine::FILE.with(|f| {
+                crate::dispatch::FILE.with(|f| {
                     for r in f.borrow_mut().iter_mut() {
                         *r = [0x7fc0_dead; crate::LANES];
                     }
                 });
                 let mut got = base.clone();
-                let r = crate::engine::run_on(
+                let r = crate::dispatch::run_on(
                     v,
                     &k,
                     &k.code,

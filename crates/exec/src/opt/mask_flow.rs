@@ -238,7 +238,7 @@ fn full_flow(p: &Program) -> Vec<bool> {
                     let uniform = match op {
                         Op::Store { a, .. } => cur == FULL && s.is_uniform(*a),
                         _ => {
-                            crate::engine::pure(op)
+                            crate::program::pure(op)
                                 && e.partial_defs.is_empty()
                                 && e.uses.iter().all(|&(r, k)| {
                                     (r..r.saturating_add(k)).all(|r| s.is_uniform(r))

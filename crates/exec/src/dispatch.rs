@@ -1,0 +1,104 @@
+//! Which executor runs a kernel's optimized code, per run: native code
+//! (`jit`) when the kernel has it (compiled on demand), else the
+//! interpreter (`engine`) built for the selected [`crate::Variant`]; and
+//! the per-thread register file both work on.
+//!
+//! It sits above the executors so that they need not know of each other
+//! or of the variant selection.
+
+#[cfg(target_arch = "x86_64")]
+use crate::engine::{run_avx2, run_avx512};
+use crate::engine::{run_in, Lanes};
+use crate::opt::Code;
+use crate::{Batch, ExecError, Kernel, Textures};
+use std::cell::RefCell;
+
+thread_local! {
+    /// The register file, reused across runs on this thread.
+    pub(crate) static FILE: RefCell<Vec<Lanes>> = const { RefCell::new(Vec::new()) };
+}
+
+/// Runs `k` (whose compiled code is `code`) on `batch`. `pool`: the
+/// prepared pool registers, or `None` to run the prologue.
+pub(crate) fn run(
+    k: &Kernel,
+    code: &Code,
+    batch: &mut Batch,
+    uniforms: &[u32],
+    textures: &dyn Textures,
+    pool: Option<&[Lanes]>,
+) -> Result<(), ExecError> {
+    run_on(
+        crate::variant::current(),
+        k,
+        code,
+        batch,
+        uniforms,
+        textures,
+        pool,
+    )
+}
+
+/// [`run`] with the given variant, which must be supported (else the
+/// portable one runs).
+pub(crate) fn run_on(
+    variant: crate::Variant,
+    k: &Kernel,
+    code: &Code,
+    batch: &mut Batch,
+    uniforms: &[u32],
+    textures: &dyn Textures,
+    pool: Option<&[Lanes]>,
+) -> Result<(), ExecError> {
+    let variant = if variant.supported() {
+        variant
+    } else {
+        crate::Variant::Portable
+    };
+    // Native code when the kernel has it (compiled on demand), else the
+    // best interpreter.
+    #[cfg(feature = "jit")]
+    let native = match variant {
+        // The kernel's cache holds the native code of its own `code`
+        // (what every caller passes); any other code is interpreted.
+        crate::Variant::Jit if std::ptr::eq(code, &*k.code) => k.jit.get_or_start(&k.code),
+        _ => None,
+    };
+    let variant = match variant {
+        crate::Variant::Jit => crate::variant::best_interpreter(),
+        v => v,
+    };
+    FILE.with(|cell| {
+        // A textures implementation that runs a kernel on this thread
+        // finds the file borrowed: it then gets its own.
+        let mut own;
+        let mut guard;
+        let file: &mut Vec<Lanes> = match cell.try_borrow_mut() {
+            Ok(g) => {
+                guard = g;
+                &mut guard
+            }
+            Err(_) => {
+                own = Vec::new();
+                &mut own
+            }
+        };
+        #[cfg(feature = "jit")]
+        if let Some(n) = native {
+            return crate::jit::run(n, k, code, file, batch, uniforms, textures, pool);
+        }
+        match variant {
+            #[cfg(target_arch = "x86_64")]
+            crate::Variant::Avx512 => {
+                // SAFETY: checked supported above.
+                unsafe { run_avx512(k, code, file, batch, uniforms, textures, pool) }
+            }
+            #[cfg(target_arch = "x86_64")]
+            crate::Variant::Avx2 => {
+                // SAFETY: as above.
+                unsafe { run_avx2(k, code, file, batch, uniforms, textures, pool) }
+            }
+            _ => run_in(k, code, file, batch, uniforms, textures, pool),
+        }
+    })
+}

@@ -1,0 +1,241 @@
+//! Lane arithmetic emitted inline, on one 4-lane quarter: subnormal
+//! flushes, `min`/`max`, `floor`/`ceil`, booleans, and the inline
+//! functions of one, two and three floats ([`crate::program::Op::F1`], `F2`,
+//! `F3`), each the same IEEE operations in the same order as the
+//! interpreter (`engine::step`, `engine::f1`/`f2`).
+
+use super::{Emit, ONE, SIGN};
+use crate::program::{F1, F2, F3};
+use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
+use cranelift_codegen::ir::{InstBuilder, Value};
+
+impl<'a, 'b> Emit<'a, 'b> {
+    /// `engine::ftz` of an F32X4, as I32X4: a subnormal keeps only its
+    /// sign. Under DAZ, `x` as it is: every float op reads it as the
+    /// flushed value, and it is flushed where it leaves the code (outputs,
+    /// callback operands).
+    pub(super) fn ftz(&mut self, x: Value) -> Value {
+        if self.daz {
+            return self.iv(x);
+        }
+        let b = self.iv(x);
+        let exp = self.splat(0x7f80_0000);
+        let e = self.b.ins().band(b, exp);
+        let zero = self.splat(0);
+        let z = self.b.ins().icmp(IntCC::Equal, e, zero);
+        let mag = self.splat(!SIGN);
+        let drop = self.b.ins().band(z, mag);
+        self.b.ins().band_not(b, drop)
+    }
+
+    /// [`Self::ftz`] as an F32X4: an intermediate result flushed before
+    /// the next op uses it.
+    pub(super) fn fz(&mut self, x: Value) -> Value {
+        let v = self.ftz(x);
+        self.fv(v)
+    }
+
+    /// Uniform words (I32X4) as read: [`Self::ftz`] for a float's.
+    pub(super) fn ftz_word(&mut self, float: bool, v: Value) -> Value {
+        if float && !self.daz {
+            let x = self.fv(v);
+            self.ftz(x)
+        } else {
+            v
+        }
+    }
+
+    /// 0/1 from an all-ones/zero lane mask.
+    pub(super) fn bool01(&mut self, m: Value) -> Value {
+        let one = self.splat(1);
+        self.b.ins().band(m, one)
+    }
+
+    /// All-ones where `v` is 0 (one compare; `!= 0` would take three).
+    pub(super) fn is_zero(&mut self, v: Value) -> Value {
+        let zero = self.splat(0);
+        self.b.ins().icmp(IntCC::Equal, v, zero)
+    }
+
+    /// 1 where `v` is nonzero, else 0.
+    pub(super) fn bool_of(&mut self, v: Value) -> Value {
+        let z = self.is_zero(v);
+        let one = self.splat(1);
+        self.b.ins().band_not(one, z)
+    }
+
+    /// `engine::fmin`: `y` if `x` is NaN or `y < x`, else `x` (F32X4 in,
+    /// F32X4 out).
+    pub(super) fn fmin(&mut self, x: Value, y: Value) -> Value {
+        let nan = self.b.ins().fcmp(FloatCC::Unordered, x, x);
+        let lt = self.b.ins().fcmp(FloatCC::LessThan, y, x);
+        let c = self.b.ins().bor(nan, lt);
+        let (xi, yi) = (self.iv(x), self.iv(y));
+        let r = self.b.ins().bitselect(c, yi, xi);
+        self.fv(r)
+    }
+
+    /// `engine::fmax`: `y` if `x` is NaN or `x < y`, else `x`.
+    pub(super) fn fmax(&mut self, x: Value, y: Value) -> Value {
+        let nan = self.b.ins().fcmp(FloatCC::Unordered, x, x);
+        let lt = self.b.ins().fcmp(FloatCC::LessThan, x, y);
+        let c = self.b.ins().bor(nan, lt);
+        let (xi, yi) = (self.iv(x), self.iv(y));
+        let r = self.b.ins().bitselect(c, yi, xi);
+        self.fv(r)
+    }
+
+    /// `engine::floor`: IEEE floor, NaN returned as it is (bits kept).
+    pub(super) fn floor(&mut self, x: Value) -> Value {
+        let r = self.b.ins().floor(x);
+        self.keep_nan(x, r)
+    }
+
+    pub(super) fn ceil(&mut self, x: Value) -> Value {
+        let r = self.b.ins().ceil(x);
+        self.keep_nan(x, r)
+    }
+
+    pub(super) fn keep_nan(&mut self, x: Value, r: Value) -> Value {
+        let nan = self.b.ins().fcmp(FloatCC::Unordered, x, x);
+        let (xi, ri) = (self.iv(x), self.iv(r));
+        let v = self.b.ins().bitselect(nan, xi, ri);
+        self.fv(v)
+    }
+
+    pub(super) fn fconst(&mut self, x: f32) -> Value {
+        let v = self.splat(x.to_bits());
+        self.fv(v)
+    }
+
+    /// The inline functions of one float (F32X4 in, I32X4 out).
+    pub(super) fn f1(&mut self, f: F1, x: Value) -> Value {
+        match f {
+            F1::Abs => {
+                let xi = self.iv(x);
+                let mag = self.splat(!SIGN);
+                let a = self.b.ins().band(xi, mag);
+                let a = self.fv(a);
+                self.ftz(a)
+            }
+            // Neither result is ever subnormal (a square root is at least
+            // 2^-74.5 when nonzero, 1/sqrt at least 2^-64), so they need no
+            // flush.
+            F1::Sqrt => {
+                let r = self.b.ins().sqrt(x);
+                self.iv(r)
+            }
+            F1::InverseSqrt => {
+                let s = self.b.ins().sqrt(x);
+                let one = self.fconst(1.0);
+                let r = self.b.ins().fdiv(one, s);
+                self.iv(r)
+            }
+            F1::Radians | F1::Degrees => {
+                let k = if f == F1::Radians {
+                    glsl::math::PI / 180.0
+                } else {
+                    180.0 / glsl::math::PI
+                };
+                let k = self.fconst(k);
+                let r = self.b.ins().fmul(x, k);
+                self.ftz(r)
+            }
+            F1::Sign => {
+                let zero = self.fconst(0.0);
+                let gt = self.b.ins().fcmp(FloatCC::GreaterThan, x, zero);
+                let lt = self.b.ins().fcmp(FloatCC::LessThan, x, zero);
+                let (one, minus) = (self.splat(ONE), self.splat((-1.0f32).to_bits()));
+                let p = self.b.ins().band(gt, one);
+                let n = self.b.ins().band(lt, minus);
+                self.b.ins().bor(p, n)
+            }
+            F1::Floor => {
+                let r = self.floor(x);
+                self.ftz(r)
+            }
+            F1::Ceil => {
+                let r = self.ceil(x);
+                self.ftz(r)
+            }
+            F1::Fract => {
+                let fl = self.floor(x);
+                let r = self.b.ins().fsub(x, fl);
+                self.ftz(r)
+            }
+            // The rest are calls (`F1_CALLED`).
+            _ => self.splat(0),
+        }
+    }
+
+    /// The inline functions of two floats.
+    pub(super) fn f2(&mut self, f: F2, x: Value, y: Value) -> Value {
+        match f {
+            F2::Min => {
+                let r = self.fmin(x, y);
+                self.ftz(r)
+            }
+            F2::Max => {
+                let r = self.fmax(x, y);
+                self.ftz(r)
+            }
+            F2::Step => {
+                // step(edge = x, v = y): 0 if v < edge, else 1.
+                let lt = self.b.ins().fcmp(FloatCC::LessThan, y, x);
+                let one = self.splat(ONE);
+                self.b.ins().band_not(one, lt)
+            }
+            F2::Mod => {
+                let q = self.b.ins().fdiv(x, y);
+                let q = self.fz(q);
+                let fl = self.floor(q);
+                let p = self.b.ins().fmul(y, fl);
+                let r = self.b.ins().fsub(x, p);
+                self.ftz(r)
+            }
+            // The rest are calls (`F2_CALLED`).
+            _ => self.splat(0),
+        }
+    }
+
+    /// The functions of three floats, as `engine::step` computes them.
+    pub(super) fn f3(&mut self, f: F3, x: Value, y: Value, z: Value) -> Value {
+        match f {
+            // glsl::math's formulas, with its flushed intermediates.
+            F3::Mix => {
+                let one = self.fconst(1.0);
+                let omt = self.b.ins().fsub(one, z);
+                let p = self.b.ins().fmul(x, omt);
+                let p = self.fz(p);
+                let r = self.b.ins().fmul(y, z);
+                let r = self.fz(r);
+                let s = self.b.ins().fadd(p, r);
+                self.ftz(s)
+            }
+            F3::Clamp => {
+                let t = self.fmax(x, y);
+                let t = self.fmin(t, z);
+                self.ftz(t)
+            }
+            F3::SmoothStep => {
+                // (e0, e1, v) = (x, y, z)
+                let num = self.b.ins().fsub(z, x);
+                let num = self.fz(num);
+                let den = self.b.ins().fsub(y, x);
+                let den = self.fz(den);
+                let t = self.b.ins().fdiv(num, den);
+                let t = self.fz(t);
+                let (zero, one) = (self.fconst(0.0), self.fconst(1.0));
+                let t = self.fmax(t, zero);
+                let t = self.fmin(t, one);
+                let (two, three) = (self.fconst(2.0), self.fconst(3.0));
+                let tt = self.b.ins().fmul(t, t);
+                let tt = self.fz(tt);
+                let t2 = self.b.ins().fmul(two, t);
+                let k = self.b.ins().fsub(three, t2);
+                let r = self.b.ins().fmul(tt, k);
+                self.ftz(r)
+            }
+        }
+    }
+}

@@ -1,0 +1,402 @@
+//! Built-in functions other than texture lookups: component-wise
+//! application with scalar broadcasting, the geometric functions expanded
+//! into ops (`dot`, `length`, `normalize`, `reflect`, `refract`...), matrix
+//! and vector-relational functions, derivatives, noise, `ftransform`.
+
+use super::textures::is_texture;
+use super::{kind_of, unsupported, Lowerer, Val, R};
+use crate::program::{Op, Reg, F1, F2, F3};
+use glsl::builtins::BuiltinFn;
+use glsl::ir::Expr;
+use glsl::types::{Base, Scalar, Type};
+
+fn fsub_op(d: Reg, x: &[Reg]) -> Op {
+    Op::FSub {
+        d,
+        a: x[0],
+        b: x[1],
+    }
+}
+
+fn fmul_op(d: Reg, x: &[Reg]) -> Op {
+    Op::FMul {
+        d,
+        a: x[0],
+        b: x[1],
+    }
+}
+
+fn fdiv_op(d: Reg, x: &[Reg]) -> Op {
+    Op::FDiv {
+        d,
+        a: x[0],
+        b: x[1],
+    }
+}
+
+fn fadd_op(d: Reg, x: &[Reg]) -> Op {
+    Op::FAdd {
+        d,
+        a: x[0],
+        b: x[1],
+    }
+}
+
+impl<'m> Lowerer<'m> {
+    /// Component-wise application with scalar broadcasting.
+    pub(super) fn map(&mut self, args: &[&Val], mut f: impl FnMut(Reg, &[Reg]) -> Op) -> R<Val> {
+        let n = args.iter().map(|a| a.len()).max().unwrap_or(0);
+        if n == 0 || args.iter().any(|a| a.len() != n && a.len() != 1) {
+            return unsupported("built-in arguments of different sizes");
+        }
+        let out = self.temps(n)?;
+        let mut ins = Vec::with_capacity(args.len());
+        for (i, &d) in out.iter().enumerate() {
+            ins.clear();
+            ins.extend(args.iter().map(|a| a[if a.len() == 1 { 0 } else { i }]));
+            let op = f(d, &ins);
+            self.emit(op)?;
+        }
+        Ok(out)
+    }
+
+    fn map1(&mut self, a: &Val, f: F1) -> R<Val> {
+        self.map(&[a], |d, x| Op::F1 { f, d, a: x[0] })
+    }
+
+    fn map2(&mut self, a: &Val, b: &Val, f: F2) -> R<Val> {
+        self.map(&[a, b], |d, x| Op::F2 {
+            f,
+            d,
+            a: x[0],
+            b: x[1],
+        })
+    }
+
+    fn map3(&mut self, a: &Val, b: &Val, c: &Val, f: F3) -> R<Val> {
+        self.map(&[a, b, c], |d, x| Op::F3 {
+            f,
+            d,
+            a: x[0],
+            b: x[1],
+            c: x[2],
+        })
+    }
+
+    /// `dot`, summed left to right from 0.0 like `glsl::math::dot`.
+    fn dot(&mut self, a: &[Reg], b: &[Reg]) -> R<Reg> {
+        let d = self.temp()?;
+        let pairs: Vec<(Reg, Reg)> = a.iter().copied().zip(b.iter().copied()).collect();
+        self.emit_dot(d, &pairs)?;
+        Ok(d)
+    }
+
+    /// `d = 0.0`, then `d += a * b` for each pair in order: one
+    /// [`Op::Dot`] for up to 4 pairs, else a [`Op::FMac`] chain.
+    pub(super) fn emit_dot(&mut self, d: Reg, pairs: &[(Reg, Reg)]) -> R<()> {
+        if (1..=4).contains(&pairs.len()) {
+            let mut a = [0; 4];
+            let mut b = [0; 4];
+            for (k, &(x, y)) in pairs.iter().enumerate() {
+                a[k] = x;
+                b[k] = y;
+            }
+            return self.emit(Op::Dot {
+                d,
+                n: pairs.len() as u8,
+                a,
+                b,
+            });
+        }
+        self.emit(Op::Const {
+            d,
+            bits: 0.0f32.to_bits(),
+        })?;
+        for &(x, y) in pairs {
+            self.emit(Op::FMac { d, a: x, b: y })?;
+        }
+        Ok(())
+    }
+
+    fn sqrt(&mut self, a: Reg) -> R<Reg> {
+        let d = self.temp()?;
+        self.emit(Op::F1 { f: F1::Sqrt, d, a })?;
+        Ok(d)
+    }
+
+    pub(super) fn fbin(&mut self, mk: fn(Reg, Reg, Reg) -> Op, a: Reg, b: Reg) -> R<Reg> {
+        let d = self.temp()?;
+        self.emit(mk(d, a, b))?;
+        Ok(d)
+    }
+
+    pub(super) fn builtin(&mut self, f: BuiltinFn, args: &[Expr], ty: Type) -> R<Val> {
+        use BuiltinFn as B;
+        if is_texture(f) {
+            return self.texture(f, args);
+        }
+        if f == B::Ftransform {
+            let mvp = self.global_by_name("gl_ModelViewProjectionMatrix")?;
+            let vertex = self.global_by_name("gl_Vertex")?;
+            let a = self.read(&mvp)?;
+            let b = self.read(&vertex)?;
+            return self.matmul(&a, mvp.ty, &b, vertex.ty);
+        }
+        let refs: Vec<&Expr> = args.iter().collect();
+        let v = self.operands(&refs)?;
+        let arg = |i: usize| -> R<&Val> {
+            match v.get(i) {
+                Some(x) if !x.is_empty() => Ok(x),
+                _ => unsupported(format!("{} is missing an argument", f.name())),
+            }
+        };
+        let fmul = |d, a, b| Op::FMul { d, a, b };
+        let fsub = |d, a, b| Op::FSub { d, a, b };
+        let fadd = |d, a, b| Op::FAdd { d, a, b };
+        let flt = |d, a, b| Op::FLt { d, a, b };
+        match f {
+            B::Radians => self.map1(arg(0)?, F1::Radians),
+            B::Degrees => self.map1(arg(0)?, F1::Degrees),
+            B::Sin => self.map1(arg(0)?, F1::Sin),
+            B::Cos => self.map1(arg(0)?, F1::Cos),
+            B::Tan => self.map1(arg(0)?, F1::Tan),
+            B::Asin => self.map1(arg(0)?, F1::Asin),
+            B::Acos => self.map1(arg(0)?, F1::Acos),
+            B::Atan if args.len() == 1 => self.map1(arg(0)?, F1::Atan),
+            B::Atan => self.map2(arg(0)?, arg(1)?, F2::Atan2),
+            B::Pow => self.map2(arg(0)?, arg(1)?, F2::Pow),
+            B::Exp => self.map1(arg(0)?, F1::Exp),
+            B::Log => self.map1(arg(0)?, F1::Log),
+            B::Exp2 => self.map1(arg(0)?, F1::Exp2),
+            B::Log2 => self.map1(arg(0)?, F1::Log2),
+            B::Sqrt => self.map1(arg(0)?, F1::Sqrt),
+            B::InverseSqrt => self.map1(arg(0)?, F1::InverseSqrt),
+            B::Abs => self.map1(arg(0)?, F1::Abs),
+            B::Sign => self.map1(arg(0)?, F1::Sign),
+            B::Floor => self.map1(arg(0)?, F1::Floor),
+            B::Ceil => self.map1(arg(0)?, F1::Ceil),
+            B::Fract => self.map1(arg(0)?, F1::Fract),
+            B::Mod => self.map2(arg(0)?, arg(1)?, F2::Mod),
+            B::Min => self.map2(arg(0)?, arg(1)?, F2::Min),
+            B::Max => self.map2(arg(0)?, arg(1)?, F2::Max),
+            B::Clamp => self.map3(arg(0)?, arg(1)?, arg(2)?, F3::Clamp),
+            B::Mix => self.map3(arg(0)?, arg(1)?, arg(2)?, F3::Mix),
+            B::Step => self.map2(arg(0)?, arg(1)?, F2::Step),
+            B::SmoothStep => self.map3(arg(0)?, arg(1)?, arg(2)?, F3::SmoothStep),
+            B::Length => {
+                let x = arg(0)?.clone();
+                let d = self.dot(&x, &x)?;
+                Ok(vec![self.sqrt(d)?])
+            }
+            B::Distance => {
+                let (x, y) = (arg(0)?.clone(), arg(1)?.clone());
+                if x.len() != y.len() {
+                    return unsupported("distance of different sizes");
+                }
+                let diff = self.map(&[&x, &y], fsub_op)?;
+                let d = self.dot(&diff, &diff)?;
+                Ok(vec![self.sqrt(d)?])
+            }
+            B::Dot => {
+                let (x, y) = (arg(0)?.clone(), arg(1)?.clone());
+                Ok(vec![self.dot(&x, &y)?])
+            }
+            B::Cross => {
+                let (x, y) = (arg(0)?.clone(), arg(1)?.clone());
+                if x.len() != 3 || y.len() != 3 {
+                    return unsupported("cross of non-vec3");
+                }
+                let mut out = Vec::with_capacity(3);
+                for (i, j) in [(1, 2), (2, 0), (0, 1)] {
+                    // x[i] * y[j] - y[i] * x[j]
+                    let p = self.fbin(fmul, x[i], y[j])?;
+                    let q = self.fbin(fmul, y[i], x[j])?;
+                    out.push(self.fbin(fsub, p, q)?);
+                }
+                Ok(out)
+            }
+            B::Normalize => {
+                let x = arg(0)?.clone();
+                let d = self.dot(&x, &x)?;
+                let len = self.sqrt(d)?;
+                self.map(&[&x, &vec![len]], fdiv_op)
+            }
+            B::FaceForward => {
+                let (n, i, nref) = (arg(0)?.clone(), arg(1)?.clone(), arg(2)?.clone());
+                let d = self.dot(&nref, &i)?;
+                let zero = self.fconst(0.0)?;
+                let c = self.fbin(flt, d, zero)?;
+                let neg = self.temps(n.len())?;
+                for (&d, &a) in neg.iter().zip(&n) {
+                    self.emit(Op::FNeg { d, a })?;
+                }
+                self.map(&[&vec![c], &n, &neg], |d, x| Op::Select {
+                    d,
+                    c: x[0],
+                    a: x[1],
+                    b: x[2],
+                })
+            }
+            B::Reflect => {
+                let (i, n) = (arg(0)?.clone(), arg(1)?.clone());
+                let dt = self.dot(&n, &i)?;
+                let two = self.fconst(2.0)?;
+                let d = self.fbin(fmul, two, dt)?;
+                let dn = self.map(&[&vec![d], &n], fmul_op)?;
+                self.map(&[&i, &dn], fsub_op)
+            }
+            B::Refract => {
+                let (i, n, eta) = (arg(0)?.clone(), arg(1)?.clone(), arg(2)?[0]);
+                let d = self.dot(&n, &i)?;
+                let one = self.fconst(1.0)?;
+                let e2 = self.fbin(fmul, eta, eta)?;
+                let dd = self.fbin(fmul, d, d)?;
+                let om = self.fbin(fsub, one, dd)?;
+                let t = self.fbin(fmul, e2, om)?;
+                let k = self.fbin(fsub, one, t)?;
+                let zero = self.fconst(0.0)?;
+                let neg = self.fbin(flt, k, zero)?;
+                let sk = self.sqrt(k)?;
+                let ed = self.fbin(fmul, eta, d)?;
+                let s = self.fbin(fadd, ed, sk)?;
+                let ei = self.map(&[&vec![eta], &i], fmul_op)?;
+                let sn = self.map(&[&vec![s], &n], fmul_op)?;
+                let r = self.map(&[&ei, &sn], fsub_op)?;
+                self.map(&[&vec![neg], &vec![zero], &r], |d, x| Op::Select {
+                    d,
+                    c: x[0],
+                    a: x[1],
+                    b: x[2],
+                })
+            }
+            B::MatrixCompMult => self.map(&[arg(0)?, arg(1)?], fmul_op),
+            B::OuterProduct => {
+                let (c, r) = (arg(0)?.clone(), arg(1)?.clone());
+                let mut out = Vec::with_capacity(c.len() * r.len());
+                for &rj in &r {
+                    for &ci in &c {
+                        out.push(self.fbin(fmul, ci, rj)?);
+                    }
+                }
+                Ok(out)
+            }
+            B::Transpose => {
+                let Base::Matrix { cols, rows } = args[0].ty.base else {
+                    return unsupported("transpose of a non-matrix");
+                };
+                let (cols, rows) = (cols as usize, rows as usize);
+                let m = arg(0)?;
+                if m.len() != cols * rows {
+                    return unsupported("transpose of a malformed matrix");
+                }
+                Ok((0..rows)
+                    .flat_map(|j| (0..cols).map(move |i| i * rows + j))
+                    .map(|k| m[k])
+                    .collect())
+            }
+            B::LessThan | B::LessThanEqual | B::GreaterThan | B::GreaterThanEqual => {
+                let float = kind_of(args[0].ty) == Scalar::Float;
+                let (x, y) = (arg(0)?.clone(), arg(1)?.clone());
+                let (x, y) = if matches!(f, B::GreaterThan | B::GreaterThanEqual) {
+                    (y, x)
+                } else {
+                    (x, y)
+                };
+                let strict = matches!(f, B::LessThan | B::GreaterThan);
+                self.map(&[&x, &y], |d, v| match (float, strict) {
+                    (true, true) => Op::FLt {
+                        d,
+                        a: v[0],
+                        b: v[1],
+                    },
+                    (true, false) => Op::FLe {
+                        d,
+                        a: v[0],
+                        b: v[1],
+                    },
+                    (false, true) => Op::ILt {
+                        d,
+                        a: v[0],
+                        b: v[1],
+                    },
+                    (false, false) => Op::ILe {
+                        d,
+                        a: v[0],
+                        b: v[1],
+                    },
+                })
+            }
+            B::Equal | B::NotEqual => {
+                let float = kind_of(args[0].ty) == Scalar::Float;
+                let eq = self.map(&[arg(0)?, arg(1)?], |d, v| {
+                    if float {
+                        Op::FEq {
+                            d,
+                            a: v[0],
+                            b: v[1],
+                        }
+                    } else {
+                        Op::IEq {
+                            d,
+                            a: v[0],
+                            b: v[1],
+                        }
+                    }
+                })?;
+                if f == B::Equal {
+                    Ok(eq)
+                } else {
+                    self.map(&[&eq], |d, v| Op::Not { d, a: v[0] })
+                }
+            }
+            B::Any | B::All => {
+                let x = arg(0)?.clone();
+                let mut acc = x[0];
+                for &c in &x[1..] {
+                    let d = self.temp()?;
+                    self.emit(if f == B::Any {
+                        Op::Or { d, a: acc, b: c }
+                    } else {
+                        Op::And { d, a: acc, b: c }
+                    })?;
+                    acc = d;
+                }
+                Ok(vec![acc])
+            }
+            B::Not => self.map(&[arg(0)?], |d, v| Op::Not { d, a: v[0] }),
+            B::DFdx => self.map(&[arg(0)?], |d, v| Op::DdX { d, a: v[0] }),
+            B::DFdy => self.map(&[arg(0)?], |d, v| Op::DdY { d, a: v[0] }),
+            B::Fwidth => {
+                let x = arg(0)?.clone();
+                let dx = self.map(&[&x], |d, v| Op::DdX { d, a: v[0] })?;
+                let dy = self.map(&[&x], |d, v| Op::DdY { d, a: v[0] })?;
+                let ax = self.map1(&dx, F1::Abs)?;
+                let ay = self.map1(&dy, F1::Abs)?;
+                self.map(&[&ax, &ay], fadd_op)
+            }
+            B::Noise1 | B::Noise2 | B::Noise3 | B::Noise4 => {
+                let x = arg(0)?.clone();
+                let dims = x.len().min(4) as u8;
+                let a = self.consecutive(&x[..dims as usize])?;
+                let n = match f {
+                    B::Noise1 => 1,
+                    B::Noise2 => 2,
+                    B::Noise3 => 3,
+                    _ => 4,
+                };
+                let out = self.temps(n as usize)?;
+                self.emit(Op::Noise {
+                    d: out[0],
+                    n,
+                    a,
+                    dims,
+                })?;
+                Ok(out)
+            }
+            _ => {
+                let _ = ty;
+                unsupported(format!("built-in {} is not implemented", f.name()))
+            }
+        }
+    }
+}
