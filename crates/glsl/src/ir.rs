@@ -18,7 +18,7 @@
 
 pub mod print;
 
-use crate::builtins::BuiltinFn;
+use crate::builtin_fn::BuiltinFn;
 use crate::source::Span;
 use crate::token::Version;
 use crate::types::{StructDef, Type};

@@ -26,6 +26,7 @@
 //!   (`all : warn`, unknown extensions with `warn`/`disable`).
 
 pub mod ast;
+pub mod builtin_fn;
 pub mod builtins;
 pub mod consteval;
 pub mod diag;

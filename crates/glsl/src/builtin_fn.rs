@@ -1,0 +1,127 @@
+//! The names of the built-in functions (GLSL 1.20 §8): the IR calls them
+//! by [`BuiltinFn`], and [`crate::builtins`] declares, types and folds them.
+//! Overloads of one name share a variant; the argument types in the IR tell
+//! them apart (`atan(y)` / `atan(y, x)`, `texture2D(s, p)` /
+//! `texture2D(s, p, bias)`). Its own module so that the IR depends on the
+//! names alone, not on the tables that depend on the IR.
+
+macro_rules! builtin_fns {
+    ($($variant:ident = $name:literal;)*) => {
+        /// A built-in function (GLSL 1.20 §8).
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
+        pub enum BuiltinFn { $($variant),* }
+
+        impl BuiltinFn {
+            pub const ALL: &'static [BuiltinFn] = &[$(BuiltinFn::$variant),*];
+
+            pub fn name(self) -> &'static str {
+                match self { $(BuiltinFn::$variant => $name),* }
+            }
+
+            pub fn from_name(name: &str) -> Option<BuiltinFn> {
+                match name { $($name => Some(BuiltinFn::$variant),)* _ => None }
+            }
+        }
+    };
+}
+
+builtin_fns! {
+    // §8.1 angle and trigonometry
+    Radians = "radians";
+    Degrees = "degrees";
+    Sin = "sin";
+    Cos = "cos";
+    Tan = "tan";
+    Asin = "asin";
+    Acos = "acos";
+    Atan = "atan";
+    // §8.2 exponential
+    Pow = "pow";
+    Exp = "exp";
+    Log = "log";
+    Exp2 = "exp2";
+    Log2 = "log2";
+    Sqrt = "sqrt";
+    InverseSqrt = "inversesqrt";
+    // §8.3 common
+    Abs = "abs";
+    Sign = "sign";
+    Floor = "floor";
+    Ceil = "ceil";
+    Fract = "fract";
+    Mod = "mod";
+    Min = "min";
+    Max = "max";
+    Clamp = "clamp";
+    Mix = "mix";
+    Step = "step";
+    SmoothStep = "smoothstep";
+    // §8.4 geometric
+    Length = "length";
+    Distance = "distance";
+    Dot = "dot";
+    Cross = "cross";
+    Normalize = "normalize";
+    Ftransform = "ftransform";
+    FaceForward = "faceforward";
+    Reflect = "reflect";
+    Refract = "refract";
+    // §8.5 matrix
+    MatrixCompMult = "matrixCompMult";
+    OuterProduct = "outerProduct";
+    Transpose = "transpose";
+    // §8.6 vector relational
+    LessThan = "lessThan";
+    LessThanEqual = "lessThanEqual";
+    GreaterThan = "greaterThan";
+    GreaterThanEqual = "greaterThanEqual";
+    Equal = "equal";
+    NotEqual = "notEqual";
+    Any = "any";
+    All = "all";
+    Not = "not";
+    // §8.7 texture lookup
+    Texture1D = "texture1D";
+    Texture1DProj = "texture1DProj";
+    Texture1DLod = "texture1DLod";
+    Texture1DProjLod = "texture1DProjLod";
+    Texture2D = "texture2D";
+    Texture2DProj = "texture2DProj";
+    Texture2DLod = "texture2DLod";
+    Texture2DProjLod = "texture2DProjLod";
+    Texture3D = "texture3D";
+    Texture3DProj = "texture3DProj";
+    Texture3DLod = "texture3DLod";
+    Texture3DProjLod = "texture3DProjLod";
+    TextureCube = "textureCube";
+    TextureCubeLod = "textureCubeLod";
+    Shadow1D = "shadow1D";
+    Shadow2D = "shadow2D";
+    Shadow1DProj = "shadow1DProj";
+    Shadow2DProj = "shadow2DProj";
+    Shadow1DLod = "shadow1DLod";
+    Shadow2DLod = "shadow2DLod";
+    Shadow1DProjLod = "shadow1DProjLod";
+    Shadow2DProjLod = "shadow2DProjLod";
+    // §8.8 fragment processing
+    DFdx = "dFdx";
+    DFdy = "dFdy";
+    Fwidth = "fwidth";
+    // §8.9 noise
+    Noise1 = "noise1";
+    Noise2 = "noise2";
+    Noise3 = "noise3";
+    Noise4 = "noise4";
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip() {
+        for f in BuiltinFn::ALL {
+            assert_eq!(BuiltinFn::from_name(f.name()), Some(*f));
+        }
+    }
+}
