@@ -36,7 +36,9 @@ def strip_comments(text):
 
 
 def without_tests(text):
-    m = re.search(r"^\s*#\[cfg\(test\)\]", text, flags=re.M)
+    """The text before its first inline test module (`#[cfg(test)]` then
+    `mod name {`); a `#[cfg(test)] mod name;` declaration is kept past."""
+    m = re.search(r"^\s*#\[cfg\(test\)\]\s*mod\s+\w+\s*\{", text, flags=re.M)
     return text[: m.start()] if m else text
 
 

@@ -119,7 +119,7 @@ pub fn distance_bonds(s: &Structure) -> Vec<(usize, usize)> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::structure::crambin;
+    use crate::load::crambin;
 
     #[test]
     fn crambin_bonds() {

@@ -60,15 +60,19 @@ pub mod elements;
 pub mod gallery;
 pub mod image;
 pub mod library;
+pub mod load;
 pub mod mmcif;
+pub mod pdb;
 pub mod scene;
 pub mod structure;
 
 pub use camera::{Camera, Projection};
 pub use elements::Element;
 pub use image::Image;
+pub use load::{crambin, load_file, parse};
+pub use pdb::parse_pdb;
 pub use scene::{Recorder, Scene};
-pub use structure::{crambin, load_file, parse, parse_pdb, Atom, LoadError, Structure};
+pub use structure::{Atom, LoadError, Structure};
 
 use gl::enums::*;
 use gl::Context;

@@ -384,9 +384,18 @@ pub fn parse_mmcif(bytes: &[u8], source: &str) -> Result<Structure, LoadError> {
     })
 }
 
+/// Whether the first non-blank text is `data_` (an mmCIF data block).
+pub(crate) fn is_mmcif(bytes: &[u8]) -> bool {
+    let first_text = bytes
+        .iter()
+        .position(|b| !b.is_ascii_whitespace())
+        .map_or(&[][..], |p| &bytes[p..]);
+    first_text.starts_with(b"data_")
+}
+
 #[cfg(test)]
 mod tests {
-    use crate::structure::{crambin, parse};
+    use crate::load::{crambin, parse};
 
     const CIF: &str = "data_TEST
 # a comment
