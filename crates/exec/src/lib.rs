@@ -309,8 +309,8 @@ pub struct SampleRequest {
     pub mask: LaneMask,
 }
 
-// The variants are plain per-lane arrays by design (PIPELINE.md); boxing
-// would cost an allocation per lookup.
+// The variants are plain per-lane arrays by design (docs/ARCHITECTURE.md,
+// cross-crate rules): boxing would cost an allocation per lookup.
 #[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq)]
 pub enum Lod {
