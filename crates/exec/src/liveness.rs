@@ -3,7 +3,8 @@
 //! optimizer, `crate::opt`).
 //!
 //! Basic blocks end at jumps, conditional jumps, subroutine calls and
-//! returns; the analysis iterates to a fixpoint (loops). Control-flow ops
+//! returns; the analysis iterates to a fixpoint (loops, subroutine
+//! returns) over a worklist of the blocks whose successors changed. Control-flow ops
 //! (mask bookkeeping, jumps, loop counting, `discard`, calls) are always
 //! needed, with the registers they read; a data op is needed when it writes
 //! a register that is live after it. Ops that write every lane kill their
@@ -156,36 +157,48 @@ fn analyze_with(
     }
     let mut live_in = vec![vec![0u64; words]; nblocks];
     let mut live = vec![0u64; words];
-    // Round-robin in reverse order until nothing changes. Each pass can
-    // only add bits, so this ends after at most nblocks * nregs passes (in
-    // practice a few).
-    loop {
-        let mut changed = false;
-        for b in (0..nblocks).rev() {
-            live.iter_mut().for_each(|w| *w = 0);
-            for &s in &succs[b] {
-                let src = if s >= n {
-                    &exit
-                } else {
-                    match block_of.get(s) {
-                        Some(&sb) if sb < nblocks => &live_in[sb],
-                        _ => continue,
-                    }
-                };
-                for (w, x) in live.iter_mut().zip(src) {
-                    *w |= x;
-                }
-            }
-            for i in (starts[b]..end_of(b)).rev() {
-                transfer(&eff[i], &mut live);
-            }
-            if live != live_in[b] {
-                live_in[b].clone_from(&live);
-                changed = true;
+    // Predecessor blocks of each block, for the worklist.
+    let mut preds: Vec<Vec<usize>> = vec![Vec::new(); nblocks];
+    for (b, ss) in succs.iter().enumerate() {
+        for &s in ss {
+            if let Some(&sb) = block_of.get(s).filter(|&&sb| sb < nblocks) {
+                preds[sb].push(b);
             }
         }
-        if !changed {
-            break;
+    }
+    // A worklist, last block first: a block is visited again only when a
+    // successor's live-in set grew. Sets only grow, so it ends; a sweep of
+    // every block until nothing changes would instead cost a whole sweep
+    // per link of a long chain of subroutine returns.
+    let mut pending: std::collections::VecDeque<usize> = (0..nblocks).rev().collect();
+    let mut queued = vec![true; nblocks];
+    while let Some(b) = pending.pop_front() {
+        queued[b] = false;
+        live.iter_mut().for_each(|w| *w = 0);
+        for &s in &succs[b] {
+            let src = if s >= n {
+                &exit
+            } else {
+                match block_of.get(s) {
+                    Some(&sb) if sb < nblocks => &live_in[sb],
+                    _ => continue,
+                }
+            };
+            for (w, x) in live.iter_mut().zip(src) {
+                *w |= x;
+            }
+        }
+        for i in (starts[b]..end_of(b)).rev() {
+            transfer(&eff[i], &mut live);
+        }
+        if live != live_in[b] {
+            live_in[b].clone_from(&live);
+            for &p in &preds[b] {
+                if !queued[p] {
+                    queued[p] = true;
+                    pending.push_back(p);
+                }
+            }
         }
     }
 

@@ -122,6 +122,30 @@ fn frag_colors(src: &str, unis: &[(&str, &[u32])]) -> (Vec<[f32; 4]>, LaneMask) 
 }
 
 #[test]
+fn deep_call_chains_lower_and_run() {
+    // 3,000 nested calls: the program holds as many subroutines and
+    // blocks; liveness over their chain of returns must not sweep every
+    // block once per link. The result: 3000 increments.
+    let n = 3000;
+    let mut src = String::from("float f0(float x) { return x + 1.0; }\n");
+    for i in 1..n {
+        src.push_str(&format!(
+            "float f{i}(float x) {{ return f{}(x) + 1.0; }}\n",
+            i - 1
+        ));
+    }
+    src.push_str(&format!(
+        "void main() {{ gl_FragColor = vec4(f{}(0.0) / 4096.0); }}\n",
+        n - 1
+    ));
+    let k = kernel(Stage::Fragment, &src);
+    let mut b = frag_batch(&k);
+    k.run(&mut b, &[], &NoTextures).expect("runs");
+    let c = output(&k, &b, "gl_FragColor");
+    assert_eq!(c[0][0], n as f32 / 4096.0);
+}
+
+#[test]
 fn divergent_if_else() {
     let (c, _) = frag_colors(
         "void main() {
