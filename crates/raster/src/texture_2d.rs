@@ -4,7 +4,7 @@
 //! lane of the request. That covers fixed-function texturing and nearly
 //! every `texture2D` call.
 //!
-//! It computes exactly what the general path (`texture::sample`) computes,
+//! It computes exactly what the general path (`texture_general::sample`) computes,
 //! operation for operation and in the same order (λ, level selection,
 //! wrapping, weights; for RGBA8 levels the fixed-point filter of
 //! [`crate::unorm8_filter`], for f32 levels the float sum over the four
@@ -15,7 +15,7 @@
 //! looked at once per request, texel indices are plain integers (no
 //! border case), and every step works on arrays of the 16 lanes: λ (its
 //! base once per quad, from the quad's first lane, as the general path
-//! defines it: `texture::quad_first`), levels, wrapping, the four
+//! defines it: `levels::quad_first`), levels, wrapping, the four
 //! corners' indices and weights, then the texels (scalar loads per lane,
 //! or the AVX2 gather instruction when every lane reads one level), the
 //! filter over all lanes (nearest lanes take corner 0) and the blend of
@@ -45,13 +45,13 @@
 //! the request's (tested).
 
 use crate::ex::{Lod, SampleRequest, LANES};
+use crate::texture::levels::{lod_log2, select_levels, wrap_coord, Levels, MAX_LOD_BIAS};
 use crate::texture::{
-    select_levels, wrap_coord, Image, Levels, MagFilter, MinFilter, Texels, Texture, TextureTarget,
-    TextureUnits, Wrap, MAX_LOD_BIAS, MISSING,
+    Image, MagFilter, MinFilter, Texels, Texture, TextureTarget, TextureUnit, Wrap, MISSING,
 };
 use crate::unorm8_filter;
 use glsl::types::SamplerKind;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 #[cfg(target_arch = "x86_64")]
 mod wide;
@@ -118,12 +118,13 @@ impl Isa {
 #[inline]
 pub(crate) fn sample_with(
     isa: Isa,
-    units: &TextureUnits,
+    units: &[TextureUnit],
+    checked_2d: &CheckedUnits,
     req: &SampleRequest,
     out: &mut [[f32; LANES]; 4],
 ) -> bool {
     match Lookup2D::of(req) {
-        Some(lookup) => sample_lookup(isa, units, &lookup, out) != Sampled::No,
+        Some(lookup) => sample_lookup(isa, units, checked_2d, &lookup, out) != Sampled::No,
         None => false,
     }
 }
@@ -151,7 +152,8 @@ pub(crate) enum Sampled {
 #[inline]
 pub(crate) fn sample_implicit_with(
     isa: Isa,
-    units: &TextureUnits,
+    units: &[TextureUnit],
+    checked_2d: &CheckedUnits,
     unit: u32,
     st: [&[f32; LANES]; 2],
     mask: u32,
@@ -166,7 +168,7 @@ pub(crate) fn sample_implicit_with(
         st,
         lod: LodRef::Implicit,
     };
-    sample_lookup(isa, units, &lookup, out)
+    sample_lookup(isa, units, checked_2d, &lookup, out)
 }
 
 /// A 2D lookup without depth comparison of one unit for every lane of
@@ -191,7 +193,7 @@ enum LodRef<'a> {
     },
     /// Derivatives the quad differences of the lookup's s and t
     /// (`exec::lane::quad_diffs`), no bias: only the quads' first lanes'
-    /// are read (`texture::quad_first`), `s[4q + 1] − s[4q]` along x and
+    /// are read (`levels::quad_first`), `s[4q + 1] − s[4q]` along x and
     /// `s[4q + 2] − s[4q]` along y.
     Implicit,
 }
@@ -238,7 +240,8 @@ impl<'a> Lookup2D<'a> {
 #[inline(always)]
 fn sample_lookup(
     isa: Isa,
-    units: &TextureUnits,
+    units: &[TextureUnit],
+    checked_2d: &CheckedUnits,
     lookup: &Lookup2D,
     out: &mut [[f32; LANES]; 4],
 ) -> Sampled {
@@ -247,22 +250,27 @@ fn sample_lookup(
     #[cfg(target_arch = "x86_64")]
     match isa {
         // SAFETY: the CPU supports the instruction set (checked first).
-        Isa::Avx512 if isa.supported() => return unsafe { sample_avx512(units, lookup, out) },
+        Isa::Avx512 if isa.supported() => {
+            return unsafe { sample_avx512(units, checked_2d, lookup, out) }
+        }
         // SAFETY: as above.
-        Isa::Avx2 if isa.supported() => return unsafe { sample_avx2(units, lookup, out) },
+        Isa::Avx2 if isa.supported() => {
+            return unsafe { sample_avx2(units, checked_2d, lookup, out) }
+        }
         _ => {}
     }
-    sample_portable(units, lookup, out)
+    sample_portable(units, checked_2d, lookup, out)
 }
 
 /// [`sample_in`] compiled for the baseline instruction set.
 #[inline(never)]
 fn sample_portable(
-    units: &TextureUnits,
+    units: &[TextureUnit],
+    checked_2d: &CheckedUnits,
     lookup: &Lookup2D,
     out: &mut [[f32; LANES]; 4],
 ) -> Sampled {
-    sample_in::<false, NO_WIDE>(units, lookup, out)
+    sample_in::<false, NO_WIDE>(units, checked_2d, lookup, out)
 }
 
 /// [`sample_in`] compiled for AVX2 and FMA.
@@ -272,11 +280,12 @@ fn sample_portable(
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 unsafe fn sample_avx2(
-    units: &TextureUnits,
+    units: &[TextureUnit],
+    checked_2d: &CheckedUnits,
     lookup: &Lookup2D,
     out: &mut [[f32; LANES]; 4],
 ) -> Sampled {
-    sample_in::<true, WIDE_AVX2>(units, lookup, out)
+    sample_in::<true, WIDE_AVX2>(units, checked_2d, lookup, out)
 }
 
 /// [`sample_in`] compiled for AVX-512 (F, BW, DQ, VL) and FMA.
@@ -286,11 +295,12 @@ unsafe fn sample_avx2(
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2,fma")]
 unsafe fn sample_avx512(
-    units: &TextureUnits,
+    units: &[TextureUnit],
+    checked_2d: &CheckedUnits,
     lookup: &Lookup2D,
     out: &mut [[f32; LANES]; 4],
 ) -> Sampled {
-    sample_in::<true, WIDE_AVX512>(units, lookup, out)
+    sample_in::<true, WIDE_AVX512>(units, checked_2d, lookup, out)
 }
 
 /// `sample_in`'s `WIDE`: no register filter ([`wide`]).
@@ -307,12 +317,13 @@ const WIDE_AVX512: u8 = 2;
 /// filter the RGBA8 levels of the requests [`wide`] takes.
 #[inline(always)]
 fn sample_in<const SIMD: bool, const WIDE: u8>(
-    units: &TextureUnits,
+    units: &[TextureUnit],
+    checked_2d: &CheckedUnits,
     lookup: &Lookup2D,
     out: &mut [[f32; LANES]; 4],
 ) -> Sampled {
     let unit_index = lookup.unit;
-    let Some(unit) = units.units.get(unit_index as usize) else {
+    let Some(unit) = units.get(unit_index as usize) else {
         return Sampled::No;
     };
     let Some(tex_arc) = unit.tex_2d.as_ref() else {
@@ -330,9 +341,8 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
     // Incomplete textures take the general path (which samples black).
     // What depends on the texture alone is found once per set of units
     // (the entry of this very texture, else found here).
-    let checked = units.checked_2d.get_or_init(|| {
+    let checked = checked_2d.get_or_init(|| {
         units
-            .units
             .iter()
             .map(|u| u.tex_2d.as_ref().and_then(Checked::new))
             .collect()
@@ -355,7 +365,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
         return Sampled::No;
     };
 
-    // The level(s) of every lane, as `texture::select_levels` picks them.
+    // The level(s) of every lane, as `levels::select_levels` picks them.
     let mask = lookup.mask;
     let mut level = [[base as i32; LANES]; 2];
     let mut f = [0.0f32; LANES];
@@ -386,7 +396,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
         tex.min_filter,
         MinFilter::LinearMipmapLinear | MinFilter::NearestMipmapLinear
     ) {
-        // λ of every lane, as `texture::lambda` computes it.
+        // λ of every lane, as `levels::lambda` computes it.
         let lam = lambdas::<SIMD>(tex, base_img, unit.lod_bias, lookup.lod, lookup.st);
         // Eq. 3.28/3.29 over the lanes, branch-free.
         let c = if tex.mag_filter == MagFilter::Linear
@@ -657,16 +667,16 @@ fn lanes(mask: u32) -> [bool; LANES] {
     flags
 }
 
-/// `texture::lambda` for every lane (the lanes outside the request's
+/// `levels::lambda` for every lane (the lanes outside the request's
 /// mask get some value): with derivatives, λ_base once per quad from the
-/// derivatives of its first lane (`texture::quad_first`), computed for the
+/// derivatives of its first lane (`levels::quad_first`), computed for the
 /// quads' first lanes (eight lanes, the four twice: four-lane loops
 /// compile to scalar code) and spread, then each lane's biases and
 /// clamps.
 #[inline(always)]
 fn lambdas<const SIMD: bool>(
     tex: &Texture,
-    base_img: &crate::texture::Image,
+    base_img: &Image,
     unit_bias: f32,
     lod: LodRef,
     st: [&[f32; LANES]; 2],
@@ -715,11 +725,11 @@ fn lambdas<const SIMD: bool>(
     clamp_lambdas(tex, &base, &extra)
 }
 
-/// λ_base (`texture::lambda`'s log2 ρ) from the derivatives of S and T,
+/// λ_base (`levels::lambda`'s log2 ρ) from the derivatives of S and T,
 /// for N lanes at once.
 #[inline(always)]
 fn lambda_bases<const N: usize>(
-    base_img: &crate::texture::Image,
+    base_img: &Image,
     ddx: [&[f32; N]; 2],
     ddy: [&[f32; N]; 2],
 ) -> [f32; N] {
@@ -744,7 +754,7 @@ fn lambda_bases<const N: usize>(
     // vectorizes.
     let mut base = [0.0f32; N];
     for l in 0..N {
-        base[l] = crate::texture::lod_log2(rho[l]);
+        base[l] = lod_log2(rho[l]);
     }
     base
 }
@@ -772,7 +782,7 @@ fn clamp_lambdas<const N: usize>(tex: &Texture, base: &[f32; N], extra: &[f32; N
 
 /// The floor of `x` for the fast path's uses: with `SIMD` (code compiled
 /// for AVX2, so SSE4.1), the rounding instruction, else [`floor_lane`].
-/// Both give `texture::floor`'s bits except on signaling NaNs, which the
+/// Both give `levels::floor`'s bits except on signaling NaNs, which the
 /// instruction quiets; no use tells them apart: a NaN floor becomes
 /// index 0 ([`floor_index`]), or is subtracted from the NaN it is the
 /// floor of, and a NaN minuend gives itself, quieted, whatever the
@@ -786,7 +796,7 @@ fn floor_of<const SIMD: bool>(x: f32) -> f32 {
     }
 }
 
-/// `texture::floor` without a branch (so loops over lanes vectorize):
+/// `levels::floor` without a branch (so loops over lanes vectorize):
 /// |x| ≥ 2^23, infinities and NaN are their own floor.
 #[inline(always)]
 fn floor_lane(x: f32) -> f32 {
@@ -912,7 +922,7 @@ fn corner_indices(
 }
 
 /// NEAREST or LINEAR on f32 level `level[lane]` of every lane (NEAREST
-/// for those in `nearest`), as `texture::filter` for a 2D texture without
+/// for those in `nearest`), as `texture_general::filter` for a 2D texture without
 /// border texels, into `out` (RGBA, lane-major). Every lane's level must
 /// be one of the table's (those outside the request give some value).
 ///
@@ -1176,9 +1186,15 @@ fn gather_unorm8<const K: usize>(
     }
 }
 
+/// The [`Checked`] entry of each unit's 2D texture, found at the first
+/// lookup through a set of units (`TextureUnits::checked_2d`); an entry
+/// holds the texture it describes and is used only for that texture (the
+/// units may change after it is filled).
+pub(crate) type CheckedUnits = OnceLock<Vec<Option<Checked>>>;
+
 /// What [`LevelTable::new`] needs to know about a texture that depends on
 /// the texture alone, with the texture (found once per
-/// [`TextureUnits`], see `TextureUnits::checked_2d`).
+/// set of units, see [`CheckedUnits`]).
 #[derive(Clone, Debug)]
 pub(crate) struct Checked {
     /// The texture described (its entry is used for it alone).
@@ -1338,4 +1354,4 @@ impl<'a> LevelTable<'a> {
 mod tests;
 
 #[cfg(test)]
-mod bench;
+mod bench_tests;
