@@ -152,7 +152,11 @@
 //! - interpolation: `interpolate` (`PrimPlanes`, `Plane`);
 //! - fragment shading: `shade` (`FragmentStage::shade`; the faster loops
 //!   with the same bytes in `shade/batched.rs`, `shade/deferred.rs`);
-//! - per-fragment operations: `fragment_ops` (`process`);
+//! - per-fragment operations: `fragment_ops` (`process`, one fragment at
+//!   a time), its parts `stencil`, `depth` (a quad's four depth tests),
+//!   `color` (blending, logic op, masks), `quick` (`QuickOps`: the common
+//!   states decided once per tile) and `wide` (16 colours in vector
+//!   registers);
 //! - textures, in layers: `texture` (storage, completeness; in
 //!   `texture/levels.rs` λ, level selection and wrapping, shared by both
 //!   paths), beside each other above it `texture_general` (every lookup,
