@@ -160,9 +160,11 @@
 //! - textures, in layers: `texture` (storage, completeness; in
 //!   `texture/levels.rs` λ, level selection and wrapping, shared by both
 //!   paths), beside each other above it `texture_general` (every lookup,
-//!   lane by lane) and `texture_2d` (the 2D fast path, same bits), and
-//!   on top `texture_units` (`TextureUnits`, handing each lookup to one
-//!   of the two); `unorm8_filter` (fixed-point RGBA8 filtering);
+//!   lane by lane) and `texture_2d` (the 2D fast path, same bits; its
+//!   parts `storage`, `lod`, `address`, `filter`, `lanes` and the x86
+//!   register filter `wide`), and on top `texture_units`
+//!   (`TextureUnits`, handing each lookup to one of the two);
+//!   `unorm8_filter` (fixed-point RGBA8 filtering);
 //! - framebuffers: `framebuffer`, clears in `clear`;
 //! - the draw driver and threads: `draw` (`draw_probed`, `shade_tiles`),
 //!   `workers`, `spare` (buffers kept between draws);

@@ -1,3 +1,5 @@
+use super::lanes::floor_lane;
+use super::storage::*;
 use super::*;
 use crate::texture::{Image, TextureUnit};
 use crate::texture_units::TextureUnits;
