@@ -2,7 +2,7 @@
 
 use crate::ex::{Batch, ExecError, Interface, Slot, Textures, LANES};
 use crate::state::*;
-use crate::texture::TextureUnits;
+use crate::texture_units::TextureUnits;
 use crate::{
     draw_stages, ColorFormat, DrawError, Framebuffer, Mode, ShaderStage, VertexFetch, Workers,
 };

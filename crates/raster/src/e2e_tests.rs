@@ -5,9 +5,8 @@ use std::sync::Arc;
 
 use crate::ex::Kernel;
 use crate::state::*;
-use crate::texture::{
-    Image, MagFilter, MinFilter, Texture, TextureTarget, TextureUnit, TextureUnits,
-};
+use crate::texture::{Image, MagFilter, MinFilter, Texture, TextureTarget, TextureUnit};
+use crate::texture_units::TextureUnits;
 use crate::{draw, ColorFormat, Framebuffer, Mode, VertexFetch};
 use glsl::ir::Stage;
 use glsl::{compile, CompileOptions};

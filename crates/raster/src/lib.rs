@@ -152,9 +152,19 @@
 //! - interpolation: `interpolate` (`PrimPlanes`, `Plane`);
 //! - fragment shading: `shade` (`FragmentStage::shade`; the faster loops
 //!   with the same bytes in `shade/batched.rs`, `shade/deferred.rs`);
-//! - per-fragment operations: `fragment_ops` (`process`);
-//! - textures: `texture` (storage and the general path, `TextureUnits`),
-//!   `texture_2d` (the 2D fast path), `unorm8_filter`;
+//! - per-fragment operations: `fragment_ops` (`process`, one fragment at
+//!   a time), its parts `stencil`, `depth` (a quad's four depth tests),
+//!   `color` (blending, logic op, masks), `quick` (`QuickOps`: the common
+//!   states decided once per tile) and `wide` (16 colours in vector
+//!   registers);
+//! - textures, in layers: `texture` (storage, completeness; in
+//!   `texture/levels.rs` λ, level selection and wrapping, shared by both
+//!   paths), beside each other above it `texture_general` (every lookup,
+//!   lane by lane) and `texture_2d` (the 2D fast path, same bits; its
+//!   parts `storage`, `lod`, `address`, `filter`, `lanes` and the x86
+//!   register filter `wide`), and on top `texture_units`
+//!   (`TextureUnits`, handing each lookup to one of the two);
+//!   `unorm8_filter` (fixed-point RGBA8 filtering);
 //! - framebuffers: `framebuffer`, clears in `clear`;
 //! - the draw driver and threads: `draw` (`draw_probed`, `shade_tiles`),
 //!   `workers`, `spare` (buffers kept between draws);
@@ -198,6 +208,8 @@ mod spare;
 mod state;
 mod texture;
 mod texture_2d;
+mod texture_general;
+mod texture_units;
 mod unorm8_filter;
 mod vertex;
 mod workers;
@@ -243,9 +255,9 @@ pub use state::{
     PolygonMode, PolygonOffset, Rect, StencilFace, StencilOp, StencilState,
 };
 pub use texture::{
-    DepthTextureMode, Image, MagFilter, MinFilter, Texture, TextureTarget, TextureUnit,
-    TextureUnits, Wrap,
+    DepthTextureMode, Image, MagFilter, MinFilter, Texture, TextureTarget, TextureUnit, Wrap,
 };
+pub use texture_units::TextureUnits;
 pub use vertex::{fetch_column_each, fetch_vertex, VertexFetch};
 pub use workers::{Workers, MAX_THREADS};
 

@@ -1,6 +1,9 @@
 use super::*;
-use crate::framebuffer::ColorFormat;
-use crate::state::{CompareFunc, LogicOp, StencilState};
+use super::{color::*, depth::*, quick::*, stencil::*, wide::*};
+use crate::framebuffer::{float_to_unorm8, ColorFormat};
+use crate::state::{
+    Blend, BlendEquation, BlendFactor, CompareFunc, LogicOp, StencilFace, StencilOp, StencilState,
+};
 
 /// Every instruction set's batch conversion gives `unorm8_lanes`'s
 /// bytes, on values in and out of [0, 1], near the rounding points,

@@ -1,6 +1,32 @@
+use super::lanes::floor_lane;
+use super::storage::*;
 use super::*;
 use crate::texture::{Image, TextureUnit};
+use crate::texture_units::TextureUnits;
 use std::sync::Arc;
+
+/// [`super::sample_with`] through `units`, as `TextureUnits` calls it.
+pub(super) fn sample_with(
+    isa: Isa,
+    units: &TextureUnits,
+    req: &SampleRequest,
+    out: &mut [[f32; LANES]; 4],
+) -> bool {
+    super::sample_with(isa, &units.units, &units.checked_2d, req, out)
+}
+
+/// [`super::sample_implicit_with`] through `units`, as `TextureUnits`
+/// calls it.
+fn sample_implicit_with(
+    isa: Isa,
+    units: &TextureUnits,
+    unit: u32,
+    st: [&[f32; LANES]; 2],
+    mask: u32,
+    out: &mut [[f32; LANES]; 4],
+) -> Sampled {
+    super::sample_implicit_with(isa, &units.units, &units.checked_2d, unit, st, mask, out)
+}
 
 /// A lookup on unit 0's 2D texture for the lanes of `mask`, its LOD
 /// from the derivatives `ddx`, `ddy` (no bias).

@@ -8,7 +8,7 @@
 //! The coordinates, texel indices and weights are computed over
 //! [`Lanes16`] (one AVX-512 register or two AVX2 ones per value) with the
 //! portable code's operations (floors by the rounding instruction as
-//! [`super::floor_of`] allows), so the same values; the level's size is
+//! [`super::lanes::floor_of`] allows), so the same values; the level's size is
 //! a scalar (REPEAT of a power-of-two size wraps by a mask). The filter
 //! itself works on AVX2 registers of four pixels × four channels × 16
 //! bits (both instruction sets have AVX2). The texels are read from the
@@ -25,7 +25,8 @@
 //! bits, tested for every m). Every step is exact integer arithmetic, so
 //! the same bits as the portable code.
 
-use super::{LevelTable, Store, LANES};
+use super::storage::{LevelTable, Store};
+use crate::ex::LANES;
 use crate::texture::{Texture, Wrap};
 use crate::unorm8_filter;
 use exec::lanes16::Lanes16;

@@ -1,5 +1,7 @@
+use super::tests::sample_with;
 use super::*;
 use crate::texture::{Image, MagFilter, MinFilter, TextureUnit};
+use crate::texture_units::TextureUnits;
 use std::sync::Arc;
 
 /// `cargo test --release -p shaderbox-raster bench_sample_2d -- --ignored --nocapture`:

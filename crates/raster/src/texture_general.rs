@@ -1,0 +1,383 @@
+//! The general path of texture lookups (GL 2.1 §3.8): every target,
+//! filter, wrap mode and depth comparison, lane by lane. Each lane finds
+//! its unit's texture and its completeness, selects the cube face,
+//! computes λ and the level(s) ([`crate::texture::levels`]) and filters
+//! each level: RGBA8 levels of 2D lookups in fixed point
+//! ([`crate::unorm8_filter`]), everything else in f32 ([`filter`]).
+//! `texture_2d` computes the same bits faster for the common 2D case;
+//! `texture_units` picks between them.
+
+use crate::ex::{Lod, SampleRequest, LANES};
+use crate::texture::levels::{
+    floor, lambda, mix_levels, quad_first, select_levels, wrap_coord, Levels, LodBase,
+};
+use crate::texture::{
+    DepthTextureMode, Image, Texels, Texture, TextureTarget, TextureUnit, Wrap, MISSING,
+};
+use crate::unorm8_filter;
+use glsl::math;
+use glsl::types::SamplerKind;
+
+/// Every lookup of `req` through `units`, lane by lane (`texture_2d` is
+/// the fast path of the common case, with the same results).
+pub(crate) fn sample_general(
+    units: &[TextureUnit],
+    req: &SampleRequest,
+    out: &mut [[f32; LANES]; 4],
+) {
+    // (unit, texture and its last level) of the previous lane: lanes
+    // almost always share them, and completeness costs a walk over
+    // every level.
+    let mut cache: Option<(u32, Option<(&Texture, usize)>)> = None;
+    for lane in 0..LANES {
+        if req.mask & (1 << lane) == 0 {
+            continue;
+        }
+        let unit = req.unit[lane];
+        let tex = match cache {
+            Some((u, t)) if u == unit => t,
+            _ => {
+                let t = complete_texture(units, req, unit);
+                cache = Some((unit, t));
+                t
+            }
+        };
+        let rgba = match tex {
+            Some((tex, q)) => sample_lane(units, req, lane, tex, q),
+            None => MISSING,
+        };
+        for (o, v) in out.iter_mut().zip(rgba) {
+            o[lane] = v;
+        }
+    }
+}
+
+/// The texture of `req`'s target bound to `unit` and its last level,
+/// or `None` (no such unit, nothing bound, incomplete).
+fn complete_texture<'a>(
+    units: &'a [TextureUnit],
+    req: &SampleRequest,
+    unit: u32,
+) -> Option<(&'a Texture, usize)> {
+    let unit = units.get(unit as usize)?;
+    let tex = match req.target {
+        SamplerKind::Sampler1D | SamplerKind::Sampler1DShadow => &unit.tex_1d,
+        SamplerKind::Sampler2D | SamplerKind::Sampler2DShadow => &unit.tex_2d,
+        SamplerKind::Sampler3D => &unit.tex_3d,
+        SamplerKind::SamplerCube => &unit.cube,
+    };
+    let tex = tex.as_deref()?;
+    Some((tex, tex.last_level()?))
+}
+
+fn sample_lane(
+    units: &[TextureUnit],
+    req: &SampleRequest,
+    lane: usize,
+    tex: &Texture,
+    q: usize,
+) -> [f32; 4] {
+    let Some(unit) = units.get(req.unit[lane] as usize) else {
+        return MISSING;
+    };
+    let coord = [0, 1, 2].map(|c| req.coord[c][lane]);
+    let (lod_base, shader_bias) = match &req.lod {
+        Lod::Explicit(l) => (LodBase::Value(l[lane]), 0.0),
+        Lod::Derivatives { ddx, ddy, bias } => {
+            let first = quad_first(lane);
+            (
+                LodBase::Derivatives(
+                    [0, 1, 2].map(|c| ddx[c][first]),
+                    [0, 1, 2].map(|c| ddy[c][first]),
+                ),
+                bias[lane],
+            )
+        }
+    };
+    let reference = req.compare.map(|r| r[lane]);
+    sample(
+        tex,
+        q,
+        coord,
+        lod_base,
+        unit.lod_bias + shader_bias,
+        reference,
+    )
+}
+
+/// Cube face selection (GL 2.1 §3.8.6, table 3.19): face index and
+/// (sc, tc, ma). Ties prefer x over y over z.
+pub(crate) fn cube_face(r: [f32; 3]) -> (usize, f32, f32, f32) {
+    let [x, y, z] = r;
+    let (ax, ay, az) = (math::abs(x), math::abs(y), math::abs(z));
+    if ax >= ay && ax >= az {
+        if x >= 0.0 {
+            (0, -z, -y, x)
+        } else {
+            (1, z, -y, x)
+        }
+    } else if ay >= az {
+        if y >= 0.0 {
+            (2, x, z, y)
+        } else {
+            (3, x, -z, y)
+        }
+    } else if z >= 0.0 {
+        (4, x, -y, z)
+    } else {
+        (5, -x, -y, z)
+    }
+}
+
+/// Derivative of `sc / |ma|` given the derivatives of the direction.
+fn cube_deriv(face: usize, r: [f32; 3], d: [f32; 3]) -> (f32, f32) {
+    // Same table applied to the derivative vector.
+    let pick = |v: [f32; 3]| -> (f32, f32, f32) {
+        let [x, y, z] = v;
+        match face {
+            0 => (-z, -y, x),
+            1 => (z, -y, x),
+            2 => (x, z, y),
+            3 => (x, -z, y),
+            4 => (x, -y, z),
+            _ => (-x, -y, z),
+        }
+    };
+    let (sc, tc, ma) = pick(r);
+    let (dsc, dtc, dma) = pick(d);
+    let ama = math::abs(ma);
+    let dama = if ma >= 0.0 { dma } else { -dma };
+    let m2 = ama * ama;
+    (
+        0.5 * (dsc * ama - sc * dama) / m2,
+        0.5 * (dtc * ama - tc * dama) / m2,
+    )
+}
+
+/// Samples `tex` (complete, last level `q`) at `coord` (s, t, r).
+pub(crate) fn sample(
+    tex: &Texture,
+    q: usize,
+    coord: [f32; 3],
+    lod: LodBase,
+    extra_bias: f32,
+    reference: Option<f32>,
+) -> [f32; 4] {
+    let base = tex.base_level as usize;
+    let Some(base_img) = tex.levels.get(base) else {
+        return MISSING;
+    };
+    // Face selection turns a cube lookup into a 2D one on layer `face`.
+    let (st, layer, derivs) = if tex.target == TextureTarget::Cube {
+        let (face, sc, tc, ma) = cube_face(coord);
+        let ama = math::abs(ma);
+        let s = 0.5 * (sc / ama + 1.0);
+        let t = 0.5 * (tc / ama + 1.0);
+        let derivs = match lod {
+            LodBase::Derivatives(dx, dy) => {
+                let (sx, tx) = cube_deriv(face, coord, dx);
+                let (sy, ty) = cube_deriv(face, coord, dy);
+                LodBase::Derivatives([sx, tx, 0.0], [sy, ty, 0.0])
+            }
+            other => other,
+        };
+        ([s, t, 0.0], Some(face), derivs)
+    } else {
+        (coord, None, lod)
+    };
+
+    let lambda = lambda(tex, base_img, derivs, extra_bias);
+    let reference = reference.map(|r| r.clamp(0.0, 1.0));
+    let one = |level: usize, linear: bool| -> [f32; 4] {
+        match tex.levels.get(level) {
+            Some(img) => filter(tex, img, st, layer, linear, reference),
+            None => MISSING,
+        }
+    };
+    // RGBA8 levels in fixed point when they qualify (`unorm8_filter`).
+    let fixed = |level: usize, linear: bool| -> Option<[i32; 4]> {
+        filter_unorm8(tex, tex.levels.get(level)?, st, layer, linear)
+    };
+    let value = match select_levels(tex, q, lambda) {
+        Levels::One(level, linear) => match fixed(level, linear) {
+            Some(v) => v.map(unorm8_filter::value),
+            None => one(level, linear),
+        },
+        Levels::Two(d1, d2, f, linear) => match (fixed(d1, linear), fixed(d2, linear)) {
+            (Some(v1), Some(v2)) => {
+                let w = unorm8_filter::level_weight(f);
+                std::array::from_fn(|c| {
+                    unorm8_filter::value(unorm8_filter::levels(v1[c], v2[c], w))
+                })
+            }
+            _ => {
+                let (t1, t2) = (one(d1, linear), one(d2, linear));
+                mix_levels(t1, t2, f)
+            }
+        },
+    };
+    if tex.depth_format {
+        let r = value[0];
+        match tex.depth_mode {
+            DepthTextureMode::Luminance => [r, r, r, 1.0],
+            DepthTextureMode::Intensity => [r, r, r, r],
+            DepthTextureMode::Alpha => [0.0, 0.0, 0.0, r],
+        }
+    } else {
+        value
+    }
+}
+
+/// A wrapped texel coordinate: `None` selects the border color.
+type Texel = Option<usize>;
+
+#[inline(always)]
+pub(crate) fn index(i: i64, wrap: Wrap, n: u32) -> Texel {
+    let n = n as i64;
+    match wrap {
+        // Linear filtering asks for -1 and n at the edges, otherwise the
+        // index is in range: no division for those.
+        Wrap::Repeat if (0..n).contains(&i) => Some(i as usize),
+        Wrap::Repeat if i == -1 => Some((n - 1) as usize),
+        Wrap::Repeat if i == n => Some(0),
+        Wrap::Repeat => Some(i.rem_euclid(n) as usize),
+        Wrap::ClampToEdge | Wrap::MirroredRepeat => Some(i.clamp(0, n - 1) as usize),
+        Wrap::Clamp | Wrap::ClampToBorder => (0..n).contains(&i).then_some(i as usize),
+    }
+}
+
+/// The NEAREST texel (eq. 3.23–3.25) of the scaled coordinate `u` on an
+/// axis `n` texels long.
+#[inline(always)]
+fn nearest_texel(u: f32, wrap: Wrap, n: u32) -> Texel {
+    let i = floor(u) as i64;
+    let i = match wrap {
+        // s = 1 selects the last texel (eq. 3.23).
+        Wrap::Clamp => i.min(n as i64 - 1),
+        _ => i,
+    };
+    index(i, wrap, n)
+}
+
+/// [`filter`] of a level stored as RGBA8 in fixed point
+/// ([`unorm8_filter`]), as values ×128: for 2D lookups (2D textures and
+/// cube faces) of colour textures whose texels are all inside the level;
+/// `None` for the others (1D, 3D, depth, f32 storage, a border texel),
+/// which [`filter`] takes.
+fn filter_unorm8(
+    tex: &Texture,
+    img: &Image,
+    st: [f32; 3],
+    layer: Option<usize>,
+    linear: bool,
+) -> Option<[i32; 4]> {
+    let Texels::Unorm8(texels) = &img.texels else {
+        return None;
+    };
+    if tex.depth_format || (layer.is_none() && tex.target != TextureTarget::Tex2D) {
+        return None;
+    }
+    let (w, h) = (img.width.max(1), img.height.max(1));
+    // Per axis: texel 0, texel 1, weight of texel 1 (in 128ths).
+    let mut axes = [(0usize, 0usize, 0i32); 2];
+    for (a, n) in [(0, w), (1, h)] {
+        let wrap = tex.wrap[a];
+        let u = wrap_coord(st[a], wrap, n) * n as f32;
+        axes[a] = if linear {
+            let (i0, weight) = unorm8_filter::split(unorm8_filter::coord(floor(u * 128.0)));
+            let i0 = i64::from(i0);
+            (index(i0, wrap, n)?, index(i0 + 1, wrap, n)?, weight)
+        } else {
+            (nearest_texel(u, wrap, n)?, 0, 0)
+        };
+    }
+    let base = layer.unwrap_or(0) * h as usize;
+    let at = |i: usize, j: usize| -> Option<[u8; 4]> {
+        texels.get((base + j) * w as usize + i).copied()
+    };
+    let ((i0, i1, a), (j0, j1, b)) = (axes[0], axes[1]);
+    if !linear {
+        return Some(unorm8_filter::nearest(at(i0, j0)?));
+    }
+    let t = [at(i0, j0)?, at(i1, j0)?, at(i0, j1)?, at(i1, j1)?];
+    Some(unorm8_filter::bilinear(t, a, b))
+}
+
+/// NEAREST (eq. 3.23–3.25) or LINEAR (eq. 3.26) on one level. For depth
+/// textures the result's component 0 is the depth, or the comparison
+/// result against `reference` (GL 2.1 §3.8.14), filtered.
+fn filter(
+    tex: &Texture,
+    img: &Image,
+    st: [f32; 3],
+    layer: Option<usize>,
+    linear: bool,
+    reference: Option<f32>,
+) -> [f32; 4] {
+    let dims = if layer.is_some() { 2 } else { tex.dims() };
+    let sizes = [img.width, img.height, img.depth].map(|s| s.max(1));
+    // Per axis: (texel 0, texel 1, weight of texel 1).
+    let mut axes: [(Texel, Texel, f32); 3] = [(Some(0), Some(0), 0.0); 3];
+    for a in 0..dims {
+        let n = sizes[a];
+        let wrap = tex.wrap[a];
+        let u = wrap_coord(st[a], wrap, n) * n as f32;
+        axes[a] = if linear {
+            let v = u - 0.5;
+            let i0 = floor(v);
+            let alpha = v - i0;
+            let i0 = i0 as i64;
+            (
+                index(i0, wrap, n),
+                index(i0.saturating_add(1), wrap, n),
+                alpha,
+            )
+        } else {
+            (nearest_texel(u, wrap, n), None, 0.0)
+        };
+    }
+    if let Some(face) = layer {
+        axes[2] = (Some(face), None, 0.0);
+    }
+    let fetch = |i: Texel, j: Texel, k: Texel| -> [f32; 4] {
+        let t = match (i, j, k) {
+            (Some(i), Some(j), Some(k)) => img.texel(i, j, k),
+            _ => tex.border_color,
+        };
+        match (tex.depth_format, tex.compare, reference) {
+            (true, Some(func), Some(r)) => {
+                let d = t[0];
+                let pass = if func.test(r, d) { 1.0 } else { 0.0 };
+                [pass, pass, pass, pass]
+            }
+            _ => t,
+        }
+    };
+    if !linear {
+        return fetch(axes[0].0, axes[1].0, axes[2].0);
+    }
+    let mut acc = [0.0f32; 4];
+    let corners = 1usize << dims;
+    for corner in 0..corners {
+        let mut w = 1.0f32;
+        let mut idx = [None; 3];
+        for a in 0..3 {
+            let (t0, t1, alpha) = axes[a];
+            if a < dims {
+                let hi = corner & (1 << a) != 0;
+                idx[a] = if hi { t1 } else { t0 };
+                w *= if hi { alpha } else { 1.0 - alpha };
+            } else {
+                idx[a] = t0;
+            }
+        }
+        let t = fetch(idx[0], idx[1], idx[2]);
+        for c in 0..4 {
+            acc[c] += w * t[c];
+        }
+    }
+    acc
+}
+
+#[cfg(test)]
+mod tests;

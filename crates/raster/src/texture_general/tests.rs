@@ -1,0 +1,323 @@
+use super::*;
+use crate::ex::Textures;
+use crate::state::CompareFunc;
+use crate::texture::{MagFilter, MinFilter};
+use crate::texture_units::TextureUnits;
+use std::sync::Arc;
+
+fn solid(w: u32, h: u32, color: [f32; 4]) -> Image {
+    Image::new(w, h, 1, vec![color; (w * h) as usize])
+}
+
+/// A 2D texture whose texel (i, j) is (i, j, level, 1).
+fn ramp(w: u32, h: u32, levels: u32) -> Texture {
+    let imgs = (0..levels)
+        .map(|l| {
+            let (lw, lh) = ((w >> l).max(1), (h >> l).max(1));
+            let mut t = Vec::new();
+            for j in 0..lh {
+                for i in 0..lw {
+                    t.push([i as f32, j as f32, l as f32, 1.0]);
+                }
+            }
+            Image::new(lw, lh, 1, t)
+        })
+        .collect();
+    Texture::new(TextureTarget::Tex2D, imgs)
+}
+
+fn at(tex: &Texture, s: f32, t: f32, lod: f32) -> [f32; 4] {
+    let q = tex.last_level().expect("complete");
+    sample(tex, q, [s, t, 0.0], LodBase::Value(lod), 0.0, None)
+}
+
+#[test]
+fn nearest_and_linear() {
+    let mut tex = ramp(4, 4, 1);
+    tex.min_filter = MinFilter::Nearest;
+    tex.mag_filter = MagFilter::Nearest;
+    assert_eq!(at(&tex, 0.3, 0.6, 0.0), [1.0, 2.0, 0.0, 1.0]);
+    tex.mag_filter = MagFilter::Linear;
+    // u = 1.5 → exactly texel 1; v = 2.0 → halfway between 1 and 2.
+    assert_eq!(at(&tex, 1.5 / 4.0, 0.5, 0.0), [1.0, 1.5, 0.0, 1.0]);
+}
+
+/// RGBA8 levels filter by `unorm8_filter`'s definition: 7-bit
+/// weights, rows exact, the result m/32640; f32 levels in f32.
+#[test]
+fn rgba8_levels_filter_in_fixed_point() {
+    let texels = vec![
+        [0.0, 1.0, 10.0 / 255.0, 1.0],
+        [1.0, 0.0, 200.0 / 255.0, 1.0],
+    ];
+    let mut tex = Texture::new(TextureTarget::Tex2D, vec![Image::new(2, 1, 1, texels)]);
+    assert!(tex.levels[0].is_unorm8());
+    tex.min_filter = MinFilter::Linear;
+    tex.mag_filter = MagFilter::Linear;
+    tex.wrap = [Wrap::ClampToEdge; 3];
+    // u = 2·0.4 = 0.8: x = ⌊102.4⌋ − 64 = 38, texel 0 and 1, a = 38.
+    let got = at(&tex, 0.4, 0.5, 0.0);
+    let want = |t0: u8, t1: u8| {
+        let h = unorm8_filter::row(t0, t1, 38);
+        unorm8_filter::value(unorm8_filter::rows(h, h, 0))
+    };
+    assert_eq!(got, [want(0, 255), want(255, 0), want(10, 200), 1.0]);
+    assert_eq!(got[0], 38.0 * 255.0 / 32640.0);
+    // The same texels as f32 (not all k/255): the float weights.
+    let texels = vec![[0.0, 1.0, 0.1, 1.0], [1.0, 0.0, 0.7, 1.0]];
+    tex.levels = vec![Image::new(2, 1, 1, texels)];
+    assert!(!tex.levels[0].is_unorm8());
+    let got = at(&tex, 0.4, 0.5, 0.0);
+    let alpha = 0.8f32 - 0.5;
+    assert_eq!(got[0], (1.0 - 0.0) * alpha * 1.0);
+}
+
+/// λ_base is the quad's: its first lane's derivatives decide the level
+/// of every lane of the quad, the biases stay per lane.
+#[test]
+fn level_of_detail_is_per_quad() {
+    let mut tex = ramp(8, 8, 4);
+    tex.mag_filter = MagFilter::Nearest;
+    tex.min_filter = MinFilter::NearestMipmapNearest;
+    let units = TextureUnits::new(vec![TextureUnit {
+        tex_2d: Some(std::sync::Arc::new(tex)),
+        ..TextureUnit::default()
+    }]);
+    let mut ddx = [[0.0; LANES]; 3];
+    let mut ddy = [[0.0; LANES]; 3];
+    let mut bias = [0.0; LANES];
+    // Quad q's first lane: λ = q (ds/dx = 2^q/8); the others would say
+    // λ = 0.
+    ddx[0] = std::array::from_fn(|l| {
+        if l % 4 == 0 {
+            (1 << (l / 4)) as f32 / 8.0
+        } else {
+            0.125
+        }
+    });
+    ddy[1] = [0.125; LANES];
+    // Lane 6's own bias: one level coarser than its quad's.
+    bias[6] = 1.0;
+    let req = SampleRequest {
+        unit: [0; LANES],
+        target: SamplerKind::Sampler2D,
+        coord: [[0.5; LANES], [0.5; LANES], [0.0; LANES], [1.0; LANES]],
+        compare: None,
+        lod: Lod::Derivatives { ddx, ddy, bias },
+        mask: 0xffff,
+    };
+    let mut out = [[0.0; LANES]; 4];
+    units.sample_general(&req, &mut out);
+    for (l, &got) in out[2].iter().enumerate() {
+        let level = (l / 4 + usize::from(l == 6)).min(3) as f32;
+        assert_eq!(got, level, "lane {l}");
+    }
+}
+
+#[test]
+fn wrap_modes() {
+    let mut tex = ramp(4, 1, 1);
+    tex.min_filter = MinFilter::Nearest;
+    tex.mag_filter = MagFilter::Nearest;
+    tex.border_color = [9.0; 4];
+    let s = |tex: &Texture, s: f32| at(tex, s, 0.5, 0.0)[0];
+    tex.wrap[0] = Wrap::Repeat;
+    assert_eq!(s(&tex, 1.3), 1.0);
+    assert_eq!(s(&tex, -0.1), 3.0);
+    tex.wrap[0] = Wrap::MirroredRepeat;
+    assert_eq!(s(&tex, 1.1), 3.0);
+    assert_eq!(s(&tex, -0.1), 0.0);
+    tex.wrap[0] = Wrap::ClampToEdge;
+    assert_eq!(s(&tex, 7.0), 3.0);
+    tex.wrap[0] = Wrap::Clamp;
+    assert_eq!(s(&tex, 1.0), 3.0);
+    assert_eq!(s(&tex, -2.0), 0.0);
+    tex.wrap[0] = Wrap::ClampToBorder;
+    assert_eq!(s(&tex, 1.5), 9.0);
+    assert_eq!(s(&tex, 0.9), 3.0);
+    // LINEAR: CLAMP blends with the border at the edge, CLAMP_TO_EDGE not.
+    tex.mag_filter = MagFilter::Linear;
+    tex.wrap[0] = Wrap::Clamp;
+    assert_eq!(s(&tex, 1.0), 0.5 * 3.0 + 0.5 * 9.0);
+    tex.wrap[0] = Wrap::ClampToEdge;
+    assert_eq!(s(&tex, 1.0), 3.0);
+    tex.wrap[0] = Wrap::Repeat;
+    assert_eq!(s(&tex, 0.0), 0.5 * 3.0 + 0.5 * 0.0);
+}
+
+#[test]
+fn lod_selection() {
+    let mut tex = ramp(8, 8, 4);
+    tex.mag_filter = MagFilter::Nearest;
+    tex.min_filter = MinFilter::NearestMipmapNearest;
+    let level = |tex: &Texture, lod: f32| at(tex, 0.5, 0.5, lod)[2];
+    assert_eq!(level(&tex, 0.4), 0.0);
+    assert_eq!(level(&tex, 0.6), 1.0);
+    assert_eq!(level(&tex, 1.4), 1.0);
+    assert_eq!(level(&tex, 1.6), 2.0);
+    assert_eq!(level(&tex, 9.0), 3.0);
+    tex.min_filter = MinFilter::NearestMipmapLinear;
+    assert_eq!(level(&tex, 1.25), 1.25);
+    assert_eq!(level(&tex, 5.0), 3.0);
+    // c = 0.5 for LINEAR mag with a NEAREST_MIPMAP min filter: λ = 0.4 magnifies.
+    tex.mag_filter = MagFilter::Linear;
+    assert_eq!(level(&tex, 0.4), 0.0);
+    // Clamped by MAX_LOD and biased.
+    tex.max_lod = 1.0;
+    assert_eq!(level(&tex, 3.0), 1.0);
+    tex.max_lod = 1000.0;
+    tex.lod_bias = 1.0;
+    assert_eq!(level(&tex, 1.0), 2.0);
+}
+
+#[test]
+fn lod_from_derivatives() {
+    let mut tex = ramp(8, 8, 4);
+    tex.mag_filter = MagFilter::Nearest;
+    tex.min_filter = MinFilter::NearestMipmapNearest;
+    // ds/dx = 4/8: four texels per pixel → λ = 2.
+    let q = tex.last_level().unwrap();
+    let lod = LodBase::Derivatives([0.5, 0.0, 0.0], [0.0, 0.125, 0.0]);
+    assert_eq!(sample(&tex, q, [0.5, 0.5, 0.0], lod, 0.0, None)[2], 2.0);
+    // A shader bias of -1 gives level 1.
+    assert_eq!(sample(&tex, q, [0.5, 0.5, 0.0], lod, -1.0, None)[2], 1.0);
+}
+
+#[test]
+fn incomplete_textures_sample_black() {
+    let mut tex = ramp(8, 8, 2);
+    assert_eq!(tex.last_level(), None, "mipmaps missing");
+    tex.min_filter = MinFilter::Linear;
+    assert_eq!(tex.last_level(), Some(0));
+    let units = TextureUnits::new(vec![TextureUnit {
+        tex_2d: Some(Arc::new(ramp(8, 8, 2))),
+        ..TextureUnit::default()
+    }]);
+    let req = SampleRequest {
+        unit: [0; LANES],
+        target: SamplerKind::Sampler2D,
+        coord: [[0.5; LANES]; 4],
+        compare: None,
+        lod: Lod::Explicit([0.0; LANES]),
+        mask: 0b11,
+    };
+    let mut out = [[7.0; LANES]; 4];
+    units.sample(&req, &mut out);
+    assert_eq!([out[0][0], out[1][0], out[2][0], out[3][0]], MISSING);
+    assert_eq!(out[0][2], 7.0, "lanes outside the mask untouched");
+    // Unbound unit.
+    let req = SampleRequest {
+        unit: [3; LANES],
+        ..req
+    };
+    units.sample(&req, &mut out);
+    assert_eq!(out[3][1], 1.0);
+}
+
+#[test]
+fn cube_face_selection() {
+    assert_eq!(cube_face([1.0, 0.5, -0.2]), (0, 0.2, -0.5, 1.0));
+    assert_eq!(cube_face([-1.0, 0.5, -0.2]), (1, -0.2, -0.5, -1.0));
+    assert_eq!(cube_face([0.1, 2.0, 0.3]), (2, 0.1, 0.3, 2.0));
+    assert_eq!(cube_face([0.1, -2.0, 0.3]), (3, 0.1, -0.3, -2.0));
+    assert_eq!(cube_face([0.1, 0.2, 3.0]), (4, 0.1, -0.2, 3.0));
+    assert_eq!(cube_face([0.1, 0.2, -3.0]), (5, -0.1, -0.2, -3.0));
+    // Sampling picks the face layer.
+    let faces: Vec<[f32; 4]> = (0..6).map(|f| [f as f32, 0.0, 0.0, 1.0]).collect();
+    let mut tex = Texture::new(TextureTarget::Cube, vec![Image::new(1, 1, 6, faces)]);
+    tex.min_filter = MinFilter::Linear;
+    let q = tex.last_level().unwrap();
+    for (dir, face) in [
+        ([0.0, 0.0, -1.0], 5.0),
+        ([0.0, 1.0, 0.0], 2.0),
+        ([-1.0, 0.0, 0.0], 1.0),
+    ] {
+        assert_eq!(
+            sample(&tex, q, dir, LodBase::Value(0.0), 0.0, None)[0],
+            face
+        );
+    }
+}
+
+#[test]
+fn shadow_compare_and_depth_modes() {
+    let mut tex = Texture::new(
+        TextureTarget::Tex2D,
+        vec![solid(2, 2, [0.5, 0.0, 0.0, 1.0])],
+    );
+    tex.min_filter = MinFilter::Nearest;
+    tex.mag_filter = MagFilter::Nearest;
+    tex.depth_format = true;
+    let q = tex.last_level().unwrap();
+    let s =
+        |tex: &Texture, r: f32| sample(tex, q, [0.5, 0.5, 0.0], LodBase::Value(0.0), 0.0, Some(r));
+    assert_eq!(
+        s(&tex, 0.9),
+        [0.5, 0.5, 0.5, 1.0],
+        "no compare: depth as luminance"
+    );
+    tex.compare = Some(CompareFunc::LessEqual);
+    assert_eq!(s(&tex, 0.4), [1.0, 1.0, 1.0, 1.0]);
+    assert_eq!(s(&tex, 0.6), [0.0, 0.0, 0.0, 1.0]);
+    tex.depth_mode = DepthTextureMode::Intensity;
+    assert_eq!(s(&tex, 0.6), [0.0; 4]);
+    tex.depth_mode = DepthTextureMode::Alpha;
+    assert_eq!(s(&tex, 0.4), [0.0, 0.0, 0.0, 1.0]);
+    tex.compare = Some(CompareFunc::Greater);
+    // R is clamped to [0, 1]: 7 > 0.5.
+    assert_eq!(s(&tex, 7.0), [0.0, 0.0, 0.0, 1.0]);
+}
+
+#[test]
+fn garbage_coordinates_do_not_panic() {
+    let vals = [
+        f32::NAN,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        1e30,
+        -1e30,
+        0.0,
+        1.0,
+        f32::MAX,
+    ];
+    for target in [
+        TextureTarget::Tex1D,
+        TextureTarget::Tex2D,
+        TextureTarget::Tex3D,
+        TextureTarget::Cube,
+    ] {
+        let depth = if target == TextureTarget::Cube { 6 } else { 2 };
+        let h = if target == TextureTarget::Tex1D { 1 } else { 2 };
+        let d = if target == TextureTarget::Tex3D || target == TextureTarget::Cube {
+            depth
+        } else {
+            1
+        };
+        let img = Image::new(2, h, d, vec![[0.5; 4]; (2 * h * d) as usize]);
+        for wrap in [
+            Wrap::Repeat,
+            Wrap::Clamp,
+            Wrap::ClampToEdge,
+            Wrap::ClampToBorder,
+            Wrap::MirroredRepeat,
+        ] {
+            for filter in [MinFilter::Nearest, MinFilter::LinearMipmapLinear] {
+                let mut tex = Texture::new(target, vec![img.clone()]);
+                tex.wrap = [wrap; 3];
+                tex.min_filter = filter;
+                tex.mag_filter = MagFilter::Linear;
+                tex.max_level = 0;
+                tex.depth_format = true;
+                tex.compare = Some(CompareFunc::Less);
+                let q = tex.last_level().expect("complete");
+                for &a in &vals {
+                    for &b in &vals {
+                        let lod = LodBase::Derivatives([a, b, a], [b, a, 1.0]);
+                        let _ = sample(&tex, q, [a, b, 0.25], lod, b, Some(a));
+                        let _ = sample(&tex, q, [b, 0.5, a], LodBase::Value(a), 0.0, None);
+                    }
+                }
+            }
+        }
+    }
+}

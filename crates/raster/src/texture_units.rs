@@ -1,0 +1,78 @@
+//! The texture units of a draw ([`TextureUnits`]) and the lookups the
+//! shaders make through them (`exec::Textures`): each request goes to
+//! the 2D fast path (`texture_2d`) when it applies, else to the general
+//! path (`texture_general`); both give the same bits.
+
+use crate::ex::{SampleRequest, Textures, LANES};
+use crate::texture::TextureUnit;
+use crate::{texture_2d, texture_general};
+
+/// All texture units; samples for the exec crate.
+#[derive(Clone, Debug)]
+pub struct TextureUnits {
+    pub units: Vec<TextureUnit>,
+    /// What the fast path of 2D lookups finds out about each unit's 2D
+    /// texture that depends on the texture alone (completeness, last
+    /// level, storage), at the first lookup through these units; each
+    /// entry holds the texture it describes and is used only for that
+    /// texture (`units` may change after it is filled).
+    pub(crate) checked_2d: texture_2d::CheckedUnits,
+    /// The instruction set the fast path of 2D lookups runs in (the
+    /// executor's, `texture_2d::Isa::current`), found once per set of
+    /// units rather than per lookup.
+    pub(crate) isa: texture_2d::Isa,
+}
+
+impl TextureUnits {
+    /// The units `units` (the texture units of a draw).
+    pub fn new(units: Vec<TextureUnit>) -> TextureUnits {
+        TextureUnits {
+            units,
+            checked_2d: texture_2d::CheckedUnits::new(),
+            isa: texture_2d::Isa::current(),
+        }
+    }
+}
+
+impl Default for TextureUnits {
+    /// No units.
+    fn default() -> TextureUnits {
+        TextureUnits::new(Vec::new())
+    }
+}
+
+impl Textures for TextureUnits {
+    fn sample(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]) {
+        if !texture_2d::sample_with(self.isa, &self.units, &self.checked_2d, req, out) {
+            texture_general::sample_general(&self.units, req, out);
+        }
+    }
+
+    fn sample_2d_implicit(
+        &self,
+        unit: u32,
+        st: [&[f32; LANES]; 2],
+        mask: u32,
+        out: &mut [[f32; LANES]; 4],
+    ) -> bool {
+        use texture_2d::{sample_implicit_with, Sampled};
+        let (units, checked) = (&self.units, &self.checked_2d);
+        match sample_implicit_with(self.isa, units, checked, unit, st, mask, out) {
+            Sampled::Unorm8 => true,
+            Sampled::Yes => false,
+            Sampled::No => {
+                self.sample(&exec::implicit_2d_request(unit, st, mask), out);
+                false
+            }
+        }
+    }
+}
+
+impl TextureUnits {
+    /// [`texture_general::sample_general`] through these units: every
+    /// lookup the general way (the reference of the fast path's tests).
+    #[cfg(test)]
+    pub(crate) fn sample_general(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]) {
+        texture_general::sample_general(&self.units, req, out);
+    }
+}
