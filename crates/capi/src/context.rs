@@ -459,6 +459,25 @@ pub(crate) fn record_vector<const N: usize, T: Copy + 'static>(
     }
 }
 
+/// The body of a vector entry point (glColor3ubv...): while a display list
+/// is compiled the values are recorded ([`record_vector`]); unless that is
+/// all (GL_COMPILE), `apply` runs on the `N` values at `v` (nothing for a
+/// null pointer).
+pub(crate) fn vector_call<const N: usize, T: Copy + 'static>(
+    c: &mut OsContext,
+    v: *const T,
+    replay: impl Fn(*const T) + 'static,
+    apply: impl FnOnce(&mut OsContext, [T; N]),
+) {
+    if record_vector::<N, T>(c, v, replay) {
+        return;
+    }
+    // SAFETY: GL's contract for vector arguments: N values at v (or null).
+    if let Some(values) = unsafe { crate::abi::rd::<N, T>(v) } {
+        apply(c, values);
+    }
+}
+
 /// Runs `f` with panics caught (for entry points without a context).
 pub fn guard<R>(default: R, f: impl FnOnce() -> R) -> R {
     caught(catch_unwind(AssertUnwindSafe(f)), default)

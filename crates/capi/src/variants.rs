@@ -11,941 +11,311 @@
 //! build from parts, and because the output stays plain, greppable code.
 
 use crate::abi::*;
-use crate::context::{record_call, record_vector, with_ctx};
+use crate::context::{record_call, vector_call, with_ctx, OsContext};
 
 gl_entry_points! {
     // GL 2.1 §2.7: a vertex; (x, y, 0, 1) for two components.
     [list] fn glVertex2s(x: GLshort, y: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glVertex2sv(v: *const GLshort) => |c| {
-        if record_vector::<2, i16>(c, v, move |p| unsafe { glVertex2sv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glVertex2sv(v: *const GLshort) => |c| { vector_call::<2, i16>(c, v, move |p| unsafe { glVertex2sv(p) }, |c, [x, y]| c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glVertex2i(x: GLint, y: GLint) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glVertex2iv(v: *const GLint) => |c| {
-        if record_vector::<2, i32>(c, v, move |p| unsafe { glVertex2iv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i32>(v) { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glVertex2iv(v: *const GLint) => |c| { vector_call::<2, i32>(c, v, move |p| unsafe { glVertex2iv(p) }, |c, [x, y]| c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glVertex2f(x: GLfloat, y: GLfloat) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glVertex2fv(v: *const GLfloat) => |c| {
-        if record_vector::<2, f32>(c, v, move |p| unsafe { glVertex2fv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f32>(v) { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glVertex2fv(v: *const GLfloat) => |c| { vector_call::<2, f32>(c, v, move |p| unsafe { glVertex2fv(p) }, |c, [x, y]| c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glVertex2d(x: GLdouble, y: GLdouble) => |c| { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glVertex2dv(v: *const GLdouble) => |c| {
-        if record_vector::<2, f64>(c, v, move |p| unsafe { glVertex2dv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glVertex2dv(v: *const GLdouble) => |c| { vector_call::<2, f64>(c, v, move |p| unsafe { glVertex2dv(p) }, |c, [x, y]| c.gl.vertex_4f(x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glVertex3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glVertex3sv(v: *const GLshort) => |c| {
-        if record_vector::<3, i16>(c, v, move |p| unsafe { glVertex3sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glVertex3sv(v: *const GLshort) => |c| { vector_call::<3, i16>(c, v, move |p| unsafe { glVertex3sv(p) }, |c, [x, y, z]| c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glVertex3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glVertex3iv(v: *const GLint) => |c| {
-        if record_vector::<3, i32>(c, v, move |p| unsafe { glVertex3iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glVertex3iv(v: *const GLint) => |c| { vector_call::<3, i32>(c, v, move |p| unsafe { glVertex3iv(p) }, |c, [x, y, z]| c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glVertex3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glVertex3fv(v: *const GLfloat) => |c| {
-        if record_vector::<3, f32>(c, v, move |p| unsafe { glVertex3fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glVertex3fv(v: *const GLfloat) => |c| { vector_call::<3, f32>(c, v, move |p| unsafe { glVertex3fv(p) }, |c, [x, y, z]| c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glVertex3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glVertex3dv(v: *const GLdouble) => |c| {
-        if record_vector::<3, f64>(c, v, move |p| unsafe { glVertex3dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glVertex3dv(v: *const GLdouble) => |c| { vector_call::<3, f64>(c, v, move |p| unsafe { glVertex3dv(p) }, |c, [x, y, z]| c.gl.vertex_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glVertex4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glVertex4sv(v: *const GLshort) => |c| {
-        if record_vector::<4, i16>(c, v, move |p| unsafe { glVertex4sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glVertex4sv(v: *const GLshort) => |c| { vector_call::<4, i16>(c, v, move |p| unsafe { glVertex4sv(p) }, |c, [x, y, z, w]| c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glVertex4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glVertex4iv(v: *const GLint) => |c| {
-        if record_vector::<4, i32>(c, v, move |p| unsafe { glVertex4iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glVertex4iv(v: *const GLint) => |c| { vector_call::<4, i32>(c, v, move |p| unsafe { glVertex4iv(p) }, |c, [x, y, z, w]| c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glVertex4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glVertex4fv(v: *const GLfloat) => |c| {
-        if record_vector::<4, f32>(c, v, move |p| unsafe { glVertex4fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f32>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glVertex4fv(v: *const GLfloat) => |c| { vector_call::<4, f32>(c, v, move |p| unsafe { glVertex4fv(p) }, |c, [x, y, z, w]| c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glVertex4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glVertex4dv(v: *const GLdouble) => |c| {
-        if record_vector::<4, f64>(c, v, move |p| unsafe { glVertex4dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glVertex4dv(v: *const GLdouble) => |c| { vector_call::<4, f64>(c, v, move |p| unsafe { glVertex4dv(p) }, |c, [x, y, z, w]| c.gl.vertex_4f(x as f32, y as f32, z as f32, w as f32)) }
 
     // GL 2.1 §2.7: the current color, integers normalized (Table 2.9).
     [list] fn glColor3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), 1.0) }
-    fn glColor3bv(v: *const GLbyte) => |c| {
-        if record_vector::<3, i8>(c, v, move |p| unsafe { glColor3bv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i8>(v) { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), 1.0) }
-    }
+    fn glColor3bv(v: *const GLbyte) => |c| { vector_call::<3, i8>(c, v, move |p| unsafe { glColor3bv(p) }, |c, [x, y, z]| c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), 1.0)) }
     [list] fn glColor3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), 1.0) }
-    fn glColor3sv(v: *const GLshort) => |c| {
-        if record_vector::<3, i16>(c, v, move |p| unsafe { glColor3sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), 1.0) }
-    }
+    fn glColor3sv(v: *const GLshort) => |c| { vector_call::<3, i16>(c, v, move |p| unsafe { glColor3sv(p) }, |c, [x, y, z]| c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), 1.0)) }
     [list] fn glColor3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), 1.0) }
-    fn glColor3iv(v: *const GLint) => |c| {
-        if record_vector::<3, i32>(c, v, move |p| unsafe { glColor3iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), 1.0) }
-    }
+    fn glColor3iv(v: *const GLint) => |c| { vector_call::<3, i32>(c, v, move |p| unsafe { glColor3iv(p) }, |c, [x, y, z]| c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), 1.0)) }
     [list] fn glColor3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.color_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glColor3fv(v: *const GLfloat) => |c| {
-        if record_vector::<3, f32>(c, v, move |p| unsafe { glColor3fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.color_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glColor3fv(v: *const GLfloat) => |c| { vector_call::<3, f32>(c, v, move |p| unsafe { glColor3fv(p) }, |c, [x, y, z]| c.gl.color_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glColor3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.color_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glColor3dv(v: *const GLdouble) => |c| {
-        if record_vector::<3, f64>(c, v, move |p| unsafe { glColor3dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.color_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glColor3dv(v: *const GLdouble) => |c| { vector_call::<3, f64>(c, v, move |p| unsafe { glColor3dv(p) }, |c, [x, y, z]| c.gl.color_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glColor3ub(x: GLubyte, y: GLubyte, z: GLubyte) => |c| { c.gl.color_4f(unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0), 1.0) }
-    fn glColor3ubv(v: *const GLubyte) => |c| {
-        if record_vector::<3, u8>(c, v, move |p| unsafe { glColor3ubv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, u8>(v) { c.gl.color_4f(unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0), 1.0) }
-    }
+    fn glColor3ubv(v: *const GLubyte) => |c| { vector_call::<3, u8>(c, v, move |p| unsafe { glColor3ubv(p) }, |c, [x, y, z]| c.gl.color_4f(unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0), 1.0)) }
     [list] fn glColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.color_4f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0), 1.0) }
-    fn glColor3usv(v: *const GLushort) => |c| {
-        if record_vector::<3, u16>(c, v, move |p| unsafe { glColor3usv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, u16>(v) { c.gl.color_4f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0), 1.0) }
-    }
+    fn glColor3usv(v: *const GLushort) => |c| { vector_call::<3, u16>(c, v, move |p| unsafe { glColor3usv(p) }, |c, [x, y, z]| c.gl.color_4f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0), 1.0)) }
     [list] fn glColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.color_4f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0), 1.0) }
-    fn glColor3uiv(v: *const GLuint) => |c| {
-        if record_vector::<3, u32>(c, v, move |p| unsafe { glColor3uiv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, u32>(v) { c.gl.color_4f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0), 1.0) }
-    }
+    fn glColor3uiv(v: *const GLuint) => |c| { vector_call::<3, u32>(c, v, move |p| unsafe { glColor3uiv(p) }, |c, [x, y, z]| c.gl.color_4f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0), 1.0)) }
     [list] fn glColor4b(x: GLbyte, y: GLbyte, z: GLbyte, w: GLbyte) => |c| { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
-    fn glColor4bv(v: *const GLbyte) => |c| {
-        if record_vector::<4, i8>(c, v, move |p| unsafe { glColor4bv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i8>(v) { c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
-    }
+    fn glColor4bv(v: *const GLbyte) => |c| { vector_call::<4, i8>(c, v, move |p| unsafe { glColor4bv(p) }, |c, [x, y, z, w]| c.gl.color_4f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0))) }
     [list] fn glColor4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0)) }
-    fn glColor4sv(v: *const GLshort) => |c| {
-        if record_vector::<4, i16>(c, v, move |p| unsafe { glColor4sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0)) }
-    }
+    fn glColor4sv(v: *const GLshort) => |c| { vector_call::<4, i16>(c, v, move |p| unsafe { glColor4sv(p) }, |c, [x, y, z, w]| c.gl.color_4f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0))) }
     [list] fn glColor4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
-    fn glColor4iv(v: *const GLint) => |c| {
-        if record_vector::<4, i32>(c, v, move |p| unsafe { glColor4iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
-    }
+    fn glColor4iv(v: *const GLint) => |c| { vector_call::<4, i32>(c, v, move |p| unsafe { glColor4iv(p) }, |c, [x, y, z, w]| c.gl.color_4f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0))) }
     [list] fn glColor4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| { c.gl.color_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glColor4fv(v: *const GLfloat) => |c| {
-        if record_vector::<4, f32>(c, v, move |p| unsafe { glColor4fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f32>(v) { c.gl.color_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glColor4fv(v: *const GLfloat) => |c| { vector_call::<4, f32>(c, v, move |p| unsafe { glColor4fv(p) }, |c, [x, y, z, w]| c.gl.color_4f(x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glColor4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.color_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glColor4dv(v: *const GLdouble) => |c| {
-        if record_vector::<4, f64>(c, v, move |p| unsafe { glColor4dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.color_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glColor4dv(v: *const GLdouble) => |c| { vector_call::<4, f64>(c, v, move |p| unsafe { glColor4dv(p) }, |c, [x, y, z, w]| c.gl.color_4f(x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glColor4ub(x: GLubyte, y: GLubyte, z: GLubyte, w: GLubyte) => |c| { c.gl.color_4f(unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0), unorm(w as f64, 255.0)) }
-    fn glColor4ubv(v: *const GLubyte) => |c| {
-        if record_vector::<4, u8>(c, v, move |p| unsafe { glColor4ubv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, u8>(v) { c.gl.color_4f(unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0), unorm(w as f64, 255.0)) }
-    }
+    fn glColor4ubv(v: *const GLubyte) => |c| { vector_call::<4, u8>(c, v, move |p| unsafe { glColor4ubv(p) }, |c, [x, y, z, w]| c.gl.color_4f(unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0), unorm(w as f64, 255.0))) }
     [list] fn glColor4us(x: GLushort, y: GLushort, z: GLushort, w: GLushort) => |c| { c.gl.color_4f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0), unorm(w as f64, 65535.0)) }
-    fn glColor4usv(v: *const GLushort) => |c| {
-        if record_vector::<4, u16>(c, v, move |p| unsafe { glColor4usv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.color_4f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0), unorm(w as f64, 65535.0)) }
-    }
+    fn glColor4usv(v: *const GLushort) => |c| { vector_call::<4, u16>(c, v, move |p| unsafe { glColor4usv(p) }, |c, [x, y, z, w]| c.gl.color_4f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0), unorm(w as f64, 65535.0))) }
     [list] fn glColor4ui(x: GLuint, y: GLuint, z: GLuint, w: GLuint) => |c| { c.gl.color_4f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0), unorm(w as f64, 4294967295.0)) }
-    fn glColor4uiv(v: *const GLuint) => |c| {
-        if record_vector::<4, u32>(c, v, move |p| unsafe { glColor4uiv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.color_4f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0), unorm(w as f64, 4294967295.0)) }
-    }
+    fn glColor4uiv(v: *const GLuint) => |c| { vector_call::<4, u32>(c, v, move |p| unsafe { glColor4uiv(p) }, |c, [x, y, z, w]| c.gl.color_4f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0), unorm(w as f64, 4294967295.0))) }
 
     // GL 2.1 §2.7: the current secondary color, integers normalized.
     [list] fn glSecondaryColor3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
-    fn glSecondaryColor3bv(v: *const GLbyte) => |c| {
-        if record_vector::<3, i8>(c, v, move |p| unsafe { glSecondaryColor3bv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i8>(v) { c.gl.secondary_color_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
-    }
+    fn glSecondaryColor3bv(v: *const GLbyte) => |c| { vector_call::<3, i8>(c, v, move |p| unsafe { glSecondaryColor3bv(p) }, |c, [x, y, z]| c.gl.secondary_color_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0))) }
     [list] fn glSecondaryColor3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
-    fn glSecondaryColor3sv(v: *const GLshort) => |c| {
-        if record_vector::<3, i16>(c, v, move |p| unsafe { glSecondaryColor3sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.secondary_color_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
-    }
+    fn glSecondaryColor3sv(v: *const GLshort) => |c| { vector_call::<3, i16>(c, v, move |p| unsafe { glSecondaryColor3sv(p) }, |c, [x, y, z]| c.gl.secondary_color_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0))) }
     [list] fn glSecondaryColor3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.secondary_color_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
-    fn glSecondaryColor3iv(v: *const GLint) => |c| {
-        if record_vector::<3, i32>(c, v, move |p| unsafe { glSecondaryColor3iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.secondary_color_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
-    }
+    fn glSecondaryColor3iv(v: *const GLint) => |c| { vector_call::<3, i32>(c, v, move |p| unsafe { glSecondaryColor3iv(p) }, |c, [x, y, z]| c.gl.secondary_color_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0))) }
     [list] fn glSecondaryColor3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
-    fn glSecondaryColor3fv(v: *const GLfloat) => |c| {
-        if record_vector::<3, f32>(c, v, move |p| unsafe { glSecondaryColor3fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
-    }
+    fn glSecondaryColor3fv(v: *const GLfloat) => |c| { vector_call::<3, f32>(c, v, move |p| unsafe { glSecondaryColor3fv(p) }, |c, [x, y, z]| c.gl.secondary_color_3f(x as f32, y as f32, z as f32)) }
     [list] fn glSecondaryColor3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
-    fn glSecondaryColor3dv(v: *const GLdouble) => |c| {
-        if record_vector::<3, f64>(c, v, move |p| unsafe { glSecondaryColor3dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.secondary_color_3f(x as f32, y as f32, z as f32) }
-    }
+    fn glSecondaryColor3dv(v: *const GLdouble) => |c| { vector_call::<3, f64>(c, v, move |p| unsafe { glSecondaryColor3dv(p) }, |c, [x, y, z]| c.gl.secondary_color_3f(x as f32, y as f32, z as f32)) }
     [list] fn glSecondaryColor3ub(x: GLubyte, y: GLubyte, z: GLubyte) => |c| { c.gl.secondary_color_3f(unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0)) }
-    fn glSecondaryColor3ubv(v: *const GLubyte) => |c| {
-        if record_vector::<3, u8>(c, v, move |p| unsafe { glSecondaryColor3ubv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, u8>(v) { c.gl.secondary_color_3f(unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0)) }
-    }
+    fn glSecondaryColor3ubv(v: *const GLubyte) => |c| { vector_call::<3, u8>(c, v, move |p| unsafe { glSecondaryColor3ubv(p) }, |c, [x, y, z]| c.gl.secondary_color_3f(unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0))) }
     [list] fn glSecondaryColor3us(x: GLushort, y: GLushort, z: GLushort) => |c| { c.gl.secondary_color_3f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0)) }
-    fn glSecondaryColor3usv(v: *const GLushort) => |c| {
-        if record_vector::<3, u16>(c, v, move |p| unsafe { glSecondaryColor3usv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, u16>(v) { c.gl.secondary_color_3f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0)) }
-    }
+    fn glSecondaryColor3usv(v: *const GLushort) => |c| { vector_call::<3, u16>(c, v, move |p| unsafe { glSecondaryColor3usv(p) }, |c, [x, y, z]| c.gl.secondary_color_3f(unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0))) }
     [list] fn glSecondaryColor3ui(x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.secondary_color_3f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0)) }
-    fn glSecondaryColor3uiv(v: *const GLuint) => |c| {
-        if record_vector::<3, u32>(c, v, move |p| unsafe { glSecondaryColor3uiv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, u32>(v) { c.gl.secondary_color_3f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0)) }
-    }
+    fn glSecondaryColor3uiv(v: *const GLuint) => |c| { vector_call::<3, u32>(c, v, move |p| unsafe { glSecondaryColor3uiv(p) }, |c, [x, y, z]| c.gl.secondary_color_3f(unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0))) }
 
     // GL 2.1 §2.7: the current normal, integers normalized.
     [list] fn glNormal3b(x: GLbyte, y: GLbyte, z: GLbyte) => |c| { c.gl.normal_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
-    fn glNormal3bv(v: *const GLbyte) => |c| {
-        if record_vector::<3, i8>(c, v, move |p| unsafe { glNormal3bv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i8>(v) { c.gl.normal_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0)) }
-    }
+    fn glNormal3bv(v: *const GLbyte) => |c| { vector_call::<3, i8>(c, v, move |p| unsafe { glNormal3bv(p) }, |c, [x, y, z]| c.gl.normal_3f(snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0))) }
     [list] fn glNormal3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.normal_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
-    fn glNormal3sv(v: *const GLshort) => |c| {
-        if record_vector::<3, i16>(c, v, move |p| unsafe { glNormal3sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.normal_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0)) }
-    }
+    fn glNormal3sv(v: *const GLshort) => |c| { vector_call::<3, i16>(c, v, move |p| unsafe { glNormal3sv(p) }, |c, [x, y, z]| c.gl.normal_3f(snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0))) }
     [list] fn glNormal3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.normal_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
-    fn glNormal3iv(v: *const GLint) => |c| {
-        if record_vector::<3, i32>(c, v, move |p| unsafe { glNormal3iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.normal_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0)) }
-    }
+    fn glNormal3iv(v: *const GLint) => |c| { vector_call::<3, i32>(c, v, move |p| unsafe { glNormal3iv(p) }, |c, [x, y, z]| c.gl.normal_3f(snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0))) }
     [list] fn glNormal3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.normal_3f(x as f32, y as f32, z as f32) }
-    fn glNormal3fv(v: *const GLfloat) => |c| {
-        if record_vector::<3, f32>(c, v, move |p| unsafe { glNormal3fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.normal_3f(x as f32, y as f32, z as f32) }
-    }
+    fn glNormal3fv(v: *const GLfloat) => |c| { vector_call::<3, f32>(c, v, move |p| unsafe { glNormal3fv(p) }, |c, [x, y, z]| c.gl.normal_3f(x as f32, y as f32, z as f32)) }
     [list] fn glNormal3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.normal_3f(x as f32, y as f32, z as f32) }
-    fn glNormal3dv(v: *const GLdouble) => |c| {
-        if record_vector::<3, f64>(c, v, move |p| unsafe { glNormal3dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.normal_3f(x as f32, y as f32, z as f32) }
-    }
+    fn glNormal3dv(v: *const GLdouble) => |c| { vector_call::<3, f64>(c, v, move |p| unsafe { glNormal3dv(p) }, |c, [x, y, z]| c.gl.normal_3f(x as f32, y as f32, z as f32)) }
 
     // GL 2.1 §2.7: the current fog coordinate.
     [list] fn glFogCoordf(x: GLfloat) => |c| { c.gl.fog_coordf(x as f32) }
-    fn glFogCoordfv(v: *const GLfloat) => |c| {
-        if record_vector::<1, f32>(c, v, move |p| unsafe { glFogCoordfv(p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, f32>(v) { c.gl.fog_coordf(x as f32) }
-    }
+    fn glFogCoordfv(v: *const GLfloat) => |c| { vector_call::<1, f32>(c, v, move |p| unsafe { glFogCoordfv(p) }, |c, [x]| c.gl.fog_coordf(x as f32)) }
     [list] fn glFogCoordd(x: GLdouble) => |c| { c.gl.fog_coordf(x as f32) }
-    fn glFogCoorddv(v: *const GLdouble) => |c| {
-        if record_vector::<1, f64>(c, v, move |p| unsafe { glFogCoorddv(p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, f64>(v) { c.gl.fog_coordf(x as f32) }
-    }
+    fn glFogCoorddv(v: *const GLdouble) => |c| { vector_call::<1, f64>(c, v, move |p| unsafe { glFogCoorddv(p) }, |c, [x]| c.gl.fog_coordf(x as f32)) }
 
     // GL 2.1 §2.7: texture unit 0's current coordinates.
     [list] fn glTexCoord1s(x: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
-    fn glTexCoord1sv(v: *const GLshort) => |c| {
-        if record_vector::<1, i16>(c, v, move |p| unsafe { glTexCoord1sv(p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, i16>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
-    }
+    fn glTexCoord1sv(v: *const GLshort) => |c| { vector_call::<1, i16>(c, v, move |p| unsafe { glTexCoord1sv(p) }, |c, [x]| c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0)) }
     [list] fn glTexCoord1i(x: GLint) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
-    fn glTexCoord1iv(v: *const GLint) => |c| {
-        if record_vector::<1, i32>(c, v, move |p| unsafe { glTexCoord1iv(p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, i32>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
-    }
+    fn glTexCoord1iv(v: *const GLint) => |c| { vector_call::<1, i32>(c, v, move |p| unsafe { glTexCoord1iv(p) }, |c, [x]| c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0)) }
     [list] fn glTexCoord1f(x: GLfloat) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
-    fn glTexCoord1fv(v: *const GLfloat) => |c| {
-        if record_vector::<1, f32>(c, v, move |p| unsafe { glTexCoord1fv(p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, f32>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
-    }
+    fn glTexCoord1fv(v: *const GLfloat) => |c| { vector_call::<1, f32>(c, v, move |p| unsafe { glTexCoord1fv(p) }, |c, [x]| c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0)) }
     [list] fn glTexCoord1d(x: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
-    fn glTexCoord1dv(v: *const GLdouble) => |c| {
-        if record_vector::<1, f64>(c, v, move |p| unsafe { glTexCoord1dv(p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, f64>(v) { c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0) }
-    }
+    fn glTexCoord1dv(v: *const GLdouble) => |c| { vector_call::<1, f64>(c, v, move |p| unsafe { glTexCoord1dv(p) }, |c, [x]| c.gl.tex_coord_4f(x as f32, 0.0, 0.0, 1.0)) }
     [list] fn glTexCoord2s(x: GLshort, y: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glTexCoord2sv(v: *const GLshort) => |c| {
-        if record_vector::<2, i16>(c, v, move |p| unsafe { glTexCoord2sv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glTexCoord2sv(v: *const GLshort) => |c| { vector_call::<2, i16>(c, v, move |p| unsafe { glTexCoord2sv(p) }, |c, [x, y]| c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glTexCoord2i(x: GLint, y: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glTexCoord2iv(v: *const GLint) => |c| {
-        if record_vector::<2, i32>(c, v, move |p| unsafe { glTexCoord2iv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glTexCoord2iv(v: *const GLint) => |c| { vector_call::<2, i32>(c, v, move |p| unsafe { glTexCoord2iv(p) }, |c, [x, y]| c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glTexCoord2f(x: GLfloat, y: GLfloat) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glTexCoord2fv(v: *const GLfloat) => |c| {
-        if record_vector::<2, f32>(c, v, move |p| unsafe { glTexCoord2fv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glTexCoord2fv(v: *const GLfloat) => |c| { vector_call::<2, f32>(c, v, move |p| unsafe { glTexCoord2fv(p) }, |c, [x, y]| c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glTexCoord2d(x: GLdouble, y: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glTexCoord2dv(v: *const GLdouble) => |c| {
-        if record_vector::<2, f64>(c, v, move |p| unsafe { glTexCoord2dv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glTexCoord2dv(v: *const GLdouble) => |c| { vector_call::<2, f64>(c, v, move |p| unsafe { glTexCoord2dv(p) }, |c, [x, y]| c.gl.tex_coord_4f(x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glTexCoord3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glTexCoord3sv(v: *const GLshort) => |c| {
-        if record_vector::<3, i16>(c, v, move |p| unsafe { glTexCoord3sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glTexCoord3sv(v: *const GLshort) => |c| { vector_call::<3, i16>(c, v, move |p| unsafe { glTexCoord3sv(p) }, |c, [x, y, z]| c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glTexCoord3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glTexCoord3iv(v: *const GLint) => |c| {
-        if record_vector::<3, i32>(c, v, move |p| unsafe { glTexCoord3iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glTexCoord3iv(v: *const GLint) => |c| { vector_call::<3, i32>(c, v, move |p| unsafe { glTexCoord3iv(p) }, |c, [x, y, z]| c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glTexCoord3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glTexCoord3fv(v: *const GLfloat) => |c| {
-        if record_vector::<3, f32>(c, v, move |p| unsafe { glTexCoord3fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glTexCoord3fv(v: *const GLfloat) => |c| { vector_call::<3, f32>(c, v, move |p| unsafe { glTexCoord3fv(p) }, |c, [x, y, z]| c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glTexCoord3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glTexCoord3dv(v: *const GLdouble) => |c| {
-        if record_vector::<3, f64>(c, v, move |p| unsafe { glTexCoord3dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glTexCoord3dv(v: *const GLdouble) => |c| { vector_call::<3, f64>(c, v, move |p| unsafe { glTexCoord3dv(p) }, |c, [x, y, z]| c.gl.tex_coord_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glTexCoord4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glTexCoord4sv(v: *const GLshort) => |c| {
-        if record_vector::<4, i16>(c, v, move |p| unsafe { glTexCoord4sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glTexCoord4sv(v: *const GLshort) => |c| { vector_call::<4, i16>(c, v, move |p| unsafe { glTexCoord4sv(p) }, |c, [x, y, z, w]| c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glTexCoord4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glTexCoord4iv(v: *const GLint) => |c| {
-        if record_vector::<4, i32>(c, v, move |p| unsafe { glTexCoord4iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glTexCoord4iv(v: *const GLint) => |c| { vector_call::<4, i32>(c, v, move |p| unsafe { glTexCoord4iv(p) }, |c, [x, y, z, w]| c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glTexCoord4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glTexCoord4fv(v: *const GLfloat) => |c| {
-        if record_vector::<4, f32>(c, v, move |p| unsafe { glTexCoord4fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f32>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glTexCoord4fv(v: *const GLfloat) => |c| { vector_call::<4, f32>(c, v, move |p| unsafe { glTexCoord4fv(p) }, |c, [x, y, z, w]| c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glTexCoord4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glTexCoord4dv(v: *const GLdouble) => |c| {
-        if record_vector::<4, f64>(c, v, move |p| unsafe { glTexCoord4dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glTexCoord4dv(v: *const GLdouble) => |c| { vector_call::<4, f64>(c, v, move |p| unsafe { glTexCoord4dv(p) }, |c, [x, y, z, w]| c.gl.tex_coord_4f(x as f32, y as f32, z as f32, w as f32)) }
 
     // GL 2.1 §2.7: a texture unit's current coordinates.
     [list] fn glMultiTexCoord1s(target: GLenum, x: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
-    fn glMultiTexCoord1sv(target: GLenum, v: *const GLshort) => |c| {
-        if record_vector::<1, i16>(c, v, move |p| unsafe { glMultiTexCoord1sv(target, p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
-    }
+    fn glMultiTexCoord1sv(target: GLenum, v: *const GLshort) => |c| { vector_call::<1, i16>(c, v, move |p| unsafe { glMultiTexCoord1sv(target, p) }, |c, [x]| c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0)) }
     [list] fn glMultiTexCoord1i(target: GLenum, x: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
-    fn glMultiTexCoord1iv(target: GLenum, v: *const GLint) => |c| {
-        if record_vector::<1, i32>(c, v, move |p| unsafe { glMultiTexCoord1iv(target, p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
-    }
+    fn glMultiTexCoord1iv(target: GLenum, v: *const GLint) => |c| { vector_call::<1, i32>(c, v, move |p| unsafe { glMultiTexCoord1iv(target, p) }, |c, [x]| c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0)) }
     [list] fn glMultiTexCoord1f(target: GLenum, x: GLfloat) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
-    fn glMultiTexCoord1fv(target: GLenum, v: *const GLfloat) => |c| {
-        if record_vector::<1, f32>(c, v, move |p| unsafe { glMultiTexCoord1fv(target, p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, f32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
-    }
+    fn glMultiTexCoord1fv(target: GLenum, v: *const GLfloat) => |c| { vector_call::<1, f32>(c, v, move |p| unsafe { glMultiTexCoord1fv(target, p) }, |c, [x]| c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0)) }
     [list] fn glMultiTexCoord1d(target: GLenum, x: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
-    fn glMultiTexCoord1dv(target: GLenum, v: *const GLdouble) => |c| {
-        if record_vector::<1, f64>(c, v, move |p| unsafe { glMultiTexCoord1dv(target, p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0) }
-    }
+    fn glMultiTexCoord1dv(target: GLenum, v: *const GLdouble) => |c| { vector_call::<1, f64>(c, v, move |p| unsafe { glMultiTexCoord1dv(target, p) }, |c, [x]| c.gl.multi_tex_coord_4f(target, x as f32, 0.0, 0.0, 1.0)) }
     [list] fn glMultiTexCoord2s(target: GLenum, x: GLshort, y: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
-    fn glMultiTexCoord2sv(target: GLenum, v: *const GLshort) => |c| {
-        if record_vector::<2, i16>(c, v, move |p| unsafe { glMultiTexCoord2sv(target, p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glMultiTexCoord2sv(target: GLenum, v: *const GLshort) => |c| { vector_call::<2, i16>(c, v, move |p| unsafe { glMultiTexCoord2sv(target, p) }, |c, [x, y]| c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glMultiTexCoord2i(target: GLenum, x: GLint, y: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
-    fn glMultiTexCoord2iv(target: GLenum, v: *const GLint) => |c| {
-        if record_vector::<2, i32>(c, v, move |p| unsafe { glMultiTexCoord2iv(target, p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glMultiTexCoord2iv(target: GLenum, v: *const GLint) => |c| { vector_call::<2, i32>(c, v, move |p| unsafe { glMultiTexCoord2iv(target, p) }, |c, [x, y]| c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glMultiTexCoord2f(target: GLenum, x: GLfloat, y: GLfloat) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
-    fn glMultiTexCoord2fv(target: GLenum, v: *const GLfloat) => |c| {
-        if record_vector::<2, f32>(c, v, move |p| unsafe { glMultiTexCoord2fv(target, p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glMultiTexCoord2fv(target: GLenum, v: *const GLfloat) => |c| { vector_call::<2, f32>(c, v, move |p| unsafe { glMultiTexCoord2fv(target, p) }, |c, [x, y]| c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glMultiTexCoord2d(target: GLenum, x: GLdouble, y: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
-    fn glMultiTexCoord2dv(target: GLenum, v: *const GLdouble) => |c| {
-        if record_vector::<2, f64>(c, v, move |p| unsafe { glMultiTexCoord2dv(target, p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glMultiTexCoord2dv(target: GLenum, v: *const GLdouble) => |c| { vector_call::<2, f64>(c, v, move |p| unsafe { glMultiTexCoord2dv(target, p) }, |c, [x, y]| c.gl.multi_tex_coord_4f(target, x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glMultiTexCoord3s(target: GLenum, x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
-    fn glMultiTexCoord3sv(target: GLenum, v: *const GLshort) => |c| {
-        if record_vector::<3, i16>(c, v, move |p| unsafe { glMultiTexCoord3sv(target, p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glMultiTexCoord3sv(target: GLenum, v: *const GLshort) => |c| { vector_call::<3, i16>(c, v, move |p| unsafe { glMultiTexCoord3sv(target, p) }, |c, [x, y, z]| c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glMultiTexCoord3i(target: GLenum, x: GLint, y: GLint, z: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
-    fn glMultiTexCoord3iv(target: GLenum, v: *const GLint) => |c| {
-        if record_vector::<3, i32>(c, v, move |p| unsafe { glMultiTexCoord3iv(target, p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glMultiTexCoord3iv(target: GLenum, v: *const GLint) => |c| { vector_call::<3, i32>(c, v, move |p| unsafe { glMultiTexCoord3iv(target, p) }, |c, [x, y, z]| c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glMultiTexCoord3f(target: GLenum, x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
-    fn glMultiTexCoord3fv(target: GLenum, v: *const GLfloat) => |c| {
-        if record_vector::<3, f32>(c, v, move |p| unsafe { glMultiTexCoord3fv(target, p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glMultiTexCoord3fv(target: GLenum, v: *const GLfloat) => |c| { vector_call::<3, f32>(c, v, move |p| unsafe { glMultiTexCoord3fv(target, p) }, |c, [x, y, z]| c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glMultiTexCoord3d(target: GLenum, x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
-    fn glMultiTexCoord3dv(target: GLenum, v: *const GLdouble) => |c| {
-        if record_vector::<3, f64>(c, v, move |p| unsafe { glMultiTexCoord3dv(target, p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glMultiTexCoord3dv(target: GLenum, v: *const GLdouble) => |c| { vector_call::<3, f64>(c, v, move |p| unsafe { glMultiTexCoord3dv(target, p) }, |c, [x, y, z]| c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glMultiTexCoord4s(target: GLenum, x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
-    fn glMultiTexCoord4sv(target: GLenum, v: *const GLshort) => |c| {
-        if record_vector::<4, i16>(c, v, move |p| unsafe { glMultiTexCoord4sv(target, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glMultiTexCoord4sv(target: GLenum, v: *const GLshort) => |c| { vector_call::<4, i16>(c, v, move |p| unsafe { glMultiTexCoord4sv(target, p) }, |c, [x, y, z, w]| c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glMultiTexCoord4i(target: GLenum, x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
-    fn glMultiTexCoord4iv(target: GLenum, v: *const GLint) => |c| {
-        if record_vector::<4, i32>(c, v, move |p| unsafe { glMultiTexCoord4iv(target, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glMultiTexCoord4iv(target: GLenum, v: *const GLint) => |c| { vector_call::<4, i32>(c, v, move |p| unsafe { glMultiTexCoord4iv(target, p) }, |c, [x, y, z, w]| c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glMultiTexCoord4f(target: GLenum, x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
-    fn glMultiTexCoord4fv(target: GLenum, v: *const GLfloat) => |c| {
-        if record_vector::<4, f32>(c, v, move |p| unsafe { glMultiTexCoord4fv(target, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f32>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glMultiTexCoord4fv(target: GLenum, v: *const GLfloat) => |c| { vector_call::<4, f32>(c, v, move |p| unsafe { glMultiTexCoord4fv(target, p) }, |c, [x, y, z, w]| c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glMultiTexCoord4d(target: GLenum, x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
-    fn glMultiTexCoord4dv(target: GLenum, v: *const GLdouble) => |c| {
-        if record_vector::<4, f64>(c, v, move |p| unsafe { glMultiTexCoord4dv(target, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glMultiTexCoord4dv(target: GLenum, v: *const GLdouble) => |c| { vector_call::<4, f64>(c, v, move |p| unsafe { glMultiTexCoord4dv(target, p) }, |c, [x, y, z, w]| c.gl.multi_tex_coord_4f(target, x as f32, y as f32, z as f32, w as f32)) }
 
     // GL 2.1 §2.7: a generic attribute's current value (index 0: a vertex).
     [list] fn glVertexAttrib1s(index: GLuint, x: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
-    fn glVertexAttrib1sv(index: GLuint, v: *const GLshort) => |c| {
-        if record_vector::<1, i16>(c, v, move |p| unsafe { glVertexAttrib1sv(index, p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
-    }
+    fn glVertexAttrib1sv(index: GLuint, v: *const GLshort) => |c| { vector_call::<1, i16>(c, v, move |p| unsafe { glVertexAttrib1sv(index, p) }, |c, [x]| c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0)) }
     [list] fn glVertexAttrib1f(index: GLuint, x: GLfloat) => |c| { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
-    fn glVertexAttrib1fv(index: GLuint, v: *const GLfloat) => |c| {
-        if record_vector::<1, f32>(c, v, move |p| unsafe { glVertexAttrib1fv(index, p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, f32>(v) { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
-    }
+    fn glVertexAttrib1fv(index: GLuint, v: *const GLfloat) => |c| { vector_call::<1, f32>(c, v, move |p| unsafe { glVertexAttrib1fv(index, p) }, |c, [x]| c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0)) }
     [list] fn glVertexAttrib1d(index: GLuint, x: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
-    fn glVertexAttrib1dv(index: GLuint, v: *const GLdouble) => |c| {
-        if record_vector::<1, f64>(c, v, move |p| unsafe { glVertexAttrib1dv(index, p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0) }
-    }
+    fn glVertexAttrib1dv(index: GLuint, v: *const GLdouble) => |c| { vector_call::<1, f64>(c, v, move |p| unsafe { glVertexAttrib1dv(index, p) }, |c, [x]| c.gl.vertex_attrib_4f(index, x as f32, 0.0, 0.0, 1.0)) }
     [list] fn glVertexAttrib2s(index: GLuint, x: GLshort, y: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
-    fn glVertexAttrib2sv(index: GLuint, v: *const GLshort) => |c| {
-        if record_vector::<2, i16>(c, v, move |p| unsafe { glVertexAttrib2sv(index, p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glVertexAttrib2sv(index: GLuint, v: *const GLshort) => |c| { vector_call::<2, i16>(c, v, move |p| unsafe { glVertexAttrib2sv(index, p) }, |c, [x, y]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glVertexAttrib2f(index: GLuint, x: GLfloat, y: GLfloat) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
-    fn glVertexAttrib2fv(index: GLuint, v: *const GLfloat) => |c| {
-        if record_vector::<2, f32>(c, v, move |p| unsafe { glVertexAttrib2fv(index, p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f32>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glVertexAttrib2fv(index: GLuint, v: *const GLfloat) => |c| { vector_call::<2, f32>(c, v, move |p| unsafe { glVertexAttrib2fv(index, p) }, |c, [x, y]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glVertexAttrib2d(index: GLuint, x: GLdouble, y: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
-    fn glVertexAttrib2dv(index: GLuint, v: *const GLdouble) => |c| {
-        if record_vector::<2, f64>(c, v, move |p| unsafe { glVertexAttrib2dv(index, p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glVertexAttrib2dv(index: GLuint, v: *const GLdouble) => |c| { vector_call::<2, f64>(c, v, move |p| unsafe { glVertexAttrib2dv(index, p) }, |c, [x, y]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glVertexAttrib3s(index: GLuint, x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
-    fn glVertexAttrib3sv(index: GLuint, v: *const GLshort) => |c| {
-        if record_vector::<3, i16>(c, v, move |p| unsafe { glVertexAttrib3sv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glVertexAttrib3sv(index: GLuint, v: *const GLshort) => |c| { vector_call::<3, i16>(c, v, move |p| unsafe { glVertexAttrib3sv(index, p) }, |c, [x, y, z]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glVertexAttrib3f(index: GLuint, x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
-    fn glVertexAttrib3fv(index: GLuint, v: *const GLfloat) => |c| {
-        if record_vector::<3, f32>(c, v, move |p| unsafe { glVertexAttrib3fv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glVertexAttrib3fv(index: GLuint, v: *const GLfloat) => |c| { vector_call::<3, f32>(c, v, move |p| unsafe { glVertexAttrib3fv(index, p) }, |c, [x, y, z]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glVertexAttrib3d(index: GLuint, x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
-    fn glVertexAttrib3dv(index: GLuint, v: *const GLdouble) => |c| {
-        if record_vector::<3, f64>(c, v, move |p| unsafe { glVertexAttrib3dv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glVertexAttrib3dv(index: GLuint, v: *const GLdouble) => |c| { vector_call::<3, f64>(c, v, move |p| unsafe { glVertexAttrib3dv(index, p) }, |c, [x, y, z]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glVertexAttrib4s(index: GLuint, x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
-    fn glVertexAttrib4sv(index: GLuint, v: *const GLshort) => |c| {
-        if record_vector::<4, i16>(c, v, move |p| unsafe { glVertexAttrib4sv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glVertexAttrib4sv(index: GLuint, v: *const GLshort) => |c| { vector_call::<4, i16>(c, v, move |p| unsafe { glVertexAttrib4sv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glVertexAttrib4f(index: GLuint, x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
-    fn glVertexAttrib4fv(index: GLuint, v: *const GLfloat) => |c| {
-        if record_vector::<4, f32>(c, v, move |p| unsafe { glVertexAttrib4fv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f32>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glVertexAttrib4fv(index: GLuint, v: *const GLfloat) => |c| { vector_call::<4, f32>(c, v, move |p| unsafe { glVertexAttrib4fv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glVertexAttrib4d(index: GLuint, x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
-    fn glVertexAttrib4dv(index: GLuint, v: *const GLdouble) => |c| {
-        if record_vector::<4, f64>(c, v, move |p| unsafe { glVertexAttrib4dv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glVertexAttrib4dv(index: GLuint, v: *const GLdouble) => |c| { vector_call::<4, f64>(c, v, move |p| unsafe { glVertexAttrib4dv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32)) }
 
     // GL 2.1 §2.7: the integer forms are not normalized.
-    fn glVertexAttrib4bv(index: GLuint, v: *const GLbyte) => |c| {
-        if record_vector::<4, i8>(c, v, move |p| unsafe { glVertexAttrib4bv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i8>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
-    }
-    fn glVertexAttrib4iv(index: GLuint, v: *const GLint) => |c| {
-        if record_vector::<4, i32>(c, v, move |p| unsafe { glVertexAttrib4iv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
-    }
-    fn glVertexAttrib4ubv(index: GLuint, v: *const GLubyte) => |c| {
-        if record_vector::<4, u8>(c, v, move |p| unsafe { glVertexAttrib4ubv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, u8>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
-    }
-    fn glVertexAttrib4usv(index: GLuint, v: *const GLushort) => |c| {
-        if record_vector::<4, u16>(c, v, move |p| unsafe { glVertexAttrib4usv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
-    }
-    fn glVertexAttrib4uiv(index: GLuint, v: *const GLuint) => |c| {
-        if record_vector::<4, u32>(c, v, move |p| unsafe { glVertexAttrib4uiv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glVertexAttrib4bv(index: GLuint, v: *const GLbyte) => |c| { vector_call::<4, i8>(c, v, move |p| unsafe { glVertexAttrib4bv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32)) }
+    fn glVertexAttrib4iv(index: GLuint, v: *const GLint) => |c| { vector_call::<4, i32>(c, v, move |p| unsafe { glVertexAttrib4iv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32)) }
+    fn glVertexAttrib4ubv(index: GLuint, v: *const GLubyte) => |c| { vector_call::<4, u8>(c, v, move |p| unsafe { glVertexAttrib4ubv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32)) }
+    fn glVertexAttrib4usv(index: GLuint, v: *const GLushort) => |c| { vector_call::<4, u16>(c, v, move |p| unsafe { glVertexAttrib4usv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32)) }
+    fn glVertexAttrib4uiv(index: GLuint, v: *const GLuint) => |c| { vector_call::<4, u32>(c, v, move |p| unsafe { glVertexAttrib4uiv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, x as f32, y as f32, z as f32, w as f32)) }
 
     // GL 2.1 §2.7: the N forms normalize (Table 2.9).
-    fn glVertexAttrib4Nbv(index: GLuint, v: *const GLbyte) => |c| {
-        if record_vector::<4, i8>(c, v, move |p| unsafe { glVertexAttrib4Nbv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i8>(v) { c.gl.vertex_attrib_4f(index, snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0)) }
-    }
-    fn glVertexAttrib4Nsv(index: GLuint, v: *const GLshort) => |c| {
-        if record_vector::<4, i16>(c, v, move |p| unsafe { glVertexAttrib4Nsv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.vertex_attrib_4f(index, snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0)) }
-    }
-    fn glVertexAttrib4Niv(index: GLuint, v: *const GLint) => |c| {
-        if record_vector::<4, i32>(c, v, move |p| unsafe { glVertexAttrib4Niv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.vertex_attrib_4f(index, snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0)) }
-    }
+    fn glVertexAttrib4Nbv(index: GLuint, v: *const GLbyte) => |c| { vector_call::<4, i8>(c, v, move |p| unsafe { glVertexAttrib4Nbv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, snorm(x as f64, 255.0), snorm(y as f64, 255.0), snorm(z as f64, 255.0), snorm(w as f64, 255.0))) }
+    fn glVertexAttrib4Nsv(index: GLuint, v: *const GLshort) => |c| { vector_call::<4, i16>(c, v, move |p| unsafe { glVertexAttrib4Nsv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, snorm(x as f64, 65535.0), snorm(y as f64, 65535.0), snorm(z as f64, 65535.0), snorm(w as f64, 65535.0))) }
+    fn glVertexAttrib4Niv(index: GLuint, v: *const GLint) => |c| { vector_call::<4, i32>(c, v, move |p| unsafe { glVertexAttrib4Niv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, snorm(x as f64, 4294967295.0), snorm(y as f64, 4294967295.0), snorm(z as f64, 4294967295.0), snorm(w as f64, 4294967295.0))) }
     [list] fn glVertexAttrib4Nub(index: GLuint, x: GLubyte, y: GLubyte, z: GLubyte, w: GLubyte) => |c| { c.gl.vertex_attrib_4f(index, unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0), unorm(w as f64, 255.0)) }
-    fn glVertexAttrib4Nubv(index: GLuint, v: *const GLubyte) => |c| {
-        if record_vector::<4, u8>(c, v, move |p| unsafe { glVertexAttrib4Nubv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, u8>(v) { c.gl.vertex_attrib_4f(index, unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0), unorm(w as f64, 255.0)) }
-    }
-    fn glVertexAttrib4Nusv(index: GLuint, v: *const GLushort) => |c| {
-        if record_vector::<4, u16>(c, v, move |p| unsafe { glVertexAttrib4Nusv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, u16>(v) { c.gl.vertex_attrib_4f(index, unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0), unorm(w as f64, 65535.0)) }
-    }
-    fn glVertexAttrib4Nuiv(index: GLuint, v: *const GLuint) => |c| {
-        if record_vector::<4, u32>(c, v, move |p| unsafe { glVertexAttrib4Nuiv(index, p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, u32>(v) { c.gl.vertex_attrib_4f(index, unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0), unorm(w as f64, 4294967295.0)) }
-    }
+    fn glVertexAttrib4Nubv(index: GLuint, v: *const GLubyte) => |c| { vector_call::<4, u8>(c, v, move |p| unsafe { glVertexAttrib4Nubv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, unorm(x as f64, 255.0), unorm(y as f64, 255.0), unorm(z as f64, 255.0), unorm(w as f64, 255.0))) }
+    fn glVertexAttrib4Nusv(index: GLuint, v: *const GLushort) => |c| { vector_call::<4, u16>(c, v, move |p| unsafe { glVertexAttrib4Nusv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, unorm(x as f64, 65535.0), unorm(y as f64, 65535.0), unorm(z as f64, 65535.0), unorm(w as f64, 65535.0))) }
+    fn glVertexAttrib4Nuiv(index: GLuint, v: *const GLuint) => |c| { vector_call::<4, u32>(c, v, move |p| unsafe { glVertexAttrib4Nuiv(index, p) }, |c, [x, y, z, w]| c.gl.vertex_attrib_4f(index, unorm(x as f64, 4294967295.0), unorm(y as f64, 4294967295.0), unorm(z as f64, 4294967295.0), unorm(w as f64, 4294967295.0))) }
 
     // GL 2.1 §2.13: the raster position, transformed as a vertex.
     [list] fn glRasterPos2s(x: GLshort, y: GLshort) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glRasterPos2sv(v: *const GLshort) => |c| {
-        if record_vector::<2, i16>(c, v, move |p| unsafe { glRasterPos2sv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glRasterPos2sv(v: *const GLshort) => |c| { vector_call::<2, i16>(c, v, move |p| unsafe { glRasterPos2sv(p) }, |c, [x, y]| c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glRasterPos2i(x: GLint, y: GLint) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glRasterPos2iv(v: *const GLint) => |c| {
-        if record_vector::<2, i32>(c, v, move |p| unsafe { glRasterPos2iv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glRasterPos2iv(v: *const GLint) => |c| { vector_call::<2, i32>(c, v, move |p| unsafe { glRasterPos2iv(p) }, |c, [x, y]| c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glRasterPos2f(x: GLfloat, y: GLfloat) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glRasterPos2fv(v: *const GLfloat) => |c| {
-        if record_vector::<2, f32>(c, v, move |p| unsafe { glRasterPos2fv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glRasterPos2fv(v: *const GLfloat) => |c| { vector_call::<2, f32>(c, v, move |p| unsafe { glRasterPos2fv(p) }, |c, [x, y]| c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glRasterPos2d(x: GLdouble, y: GLdouble) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    fn glRasterPos2dv(v: *const GLdouble) => |c| {
-        if record_vector::<2, f64>(c, v, move |p| unsafe { glRasterPos2dv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0) }
-    }
+    fn glRasterPos2dv(v: *const GLdouble) => |c| { vector_call::<2, f64>(c, v, move |p| unsafe { glRasterPos2dv(p) }, |c, [x, y]| c.gl.raster_pos_4f(x as f32, y as f32, 0.0, 1.0)) }
     [list] fn glRasterPos3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glRasterPos3sv(v: *const GLshort) => |c| {
-        if record_vector::<3, i16>(c, v, move |p| unsafe { glRasterPos3sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glRasterPos3sv(v: *const GLshort) => |c| { vector_call::<3, i16>(c, v, move |p| unsafe { glRasterPos3sv(p) }, |c, [x, y, z]| c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glRasterPos3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glRasterPos3iv(v: *const GLint) => |c| {
-        if record_vector::<3, i32>(c, v, move |p| unsafe { glRasterPos3iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glRasterPos3iv(v: *const GLint) => |c| { vector_call::<3, i32>(c, v, move |p| unsafe { glRasterPos3iv(p) }, |c, [x, y, z]| c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glRasterPos3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glRasterPos3fv(v: *const GLfloat) => |c| {
-        if record_vector::<3, f32>(c, v, move |p| unsafe { glRasterPos3fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glRasterPos3fv(v: *const GLfloat) => |c| { vector_call::<3, f32>(c, v, move |p| unsafe { glRasterPos3fv(p) }, |c, [x, y, z]| c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glRasterPos3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    fn glRasterPos3dv(v: *const GLdouble) => |c| {
-        if record_vector::<3, f64>(c, v, move |p| unsafe { glRasterPos3dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0) }
-    }
+    fn glRasterPos3dv(v: *const GLdouble) => |c| { vector_call::<3, f64>(c, v, move |p| unsafe { glRasterPos3dv(p) }, |c, [x, y, z]| c.gl.raster_pos_4f(x as f32, y as f32, z as f32, 1.0)) }
     [list] fn glRasterPos4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glRasterPos4sv(v: *const GLshort) => |c| {
-        if record_vector::<4, i16>(c, v, move |p| unsafe { glRasterPos4sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i16>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glRasterPos4sv(v: *const GLshort) => |c| { vector_call::<4, i16>(c, v, move |p| unsafe { glRasterPos4sv(p) }, |c, [x, y, z, w]| c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glRasterPos4i(x: GLint, y: GLint, z: GLint, w: GLint) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glRasterPos4iv(v: *const GLint) => |c| {
-        if record_vector::<4, i32>(c, v, move |p| unsafe { glRasterPos4iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, i32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glRasterPos4iv(v: *const GLint) => |c| { vector_call::<4, i32>(c, v, move |p| unsafe { glRasterPos4iv(p) }, |c, [x, y, z, w]| c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glRasterPos4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glRasterPos4fv(v: *const GLfloat) => |c| {
-        if record_vector::<4, f32>(c, v, move |p| unsafe { glRasterPos4fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f32>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glRasterPos4fv(v: *const GLfloat) => |c| { vector_call::<4, f32>(c, v, move |p| unsafe { glRasterPos4fv(p) }, |c, [x, y, z, w]| c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32)) }
     [list] fn glRasterPos4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => |c| { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    fn glRasterPos4dv(v: *const GLdouble) => |c| {
-        if record_vector::<4, f64>(c, v, move |p| unsafe { glRasterPos4dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z, w]) = rd::<4, f64>(v) { c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32) }
-    }
+    fn glRasterPos4dv(v: *const GLdouble) => |c| { vector_call::<4, f64>(c, v, move |p| unsafe { glRasterPos4dv(p) }, |c, [x, y, z, w]| c.gl.raster_pos_4f(x as f32, y as f32, z as f32, w as f32)) }
 
     // GL 2.1 §2.13: the raster position in window coordinates.
     [list] fn glWindowPos2s(x: GLshort, y: GLshort) => |c| { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    fn glWindowPos2sv(v: *const GLshort) => |c| {
-        if record_vector::<2, i16>(c, v, move |p| unsafe { glWindowPos2sv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i16>(v) { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    }
+    fn glWindowPos2sv(v: *const GLshort) => |c| { vector_call::<2, i16>(c, v, move |p| unsafe { glWindowPos2sv(p) }, |c, [x, y]| c.gl.window_pos_3f(x as f32, y as f32, 0.0)) }
     [list] fn glWindowPos2i(x: GLint, y: GLint) => |c| { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    fn glWindowPos2iv(v: *const GLint) => |c| {
-        if record_vector::<2, i32>(c, v, move |p| unsafe { glWindowPos2iv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, i32>(v) { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    }
+    fn glWindowPos2iv(v: *const GLint) => |c| { vector_call::<2, i32>(c, v, move |p| unsafe { glWindowPos2iv(p) }, |c, [x, y]| c.gl.window_pos_3f(x as f32, y as f32, 0.0)) }
     [list] fn glWindowPos2f(x: GLfloat, y: GLfloat) => |c| { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    fn glWindowPos2fv(v: *const GLfloat) => |c| {
-        if record_vector::<2, f32>(c, v, move |p| unsafe { glWindowPos2fv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f32>(v) { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    }
+    fn glWindowPos2fv(v: *const GLfloat) => |c| { vector_call::<2, f32>(c, v, move |p| unsafe { glWindowPos2fv(p) }, |c, [x, y]| c.gl.window_pos_3f(x as f32, y as f32, 0.0)) }
     [list] fn glWindowPos2d(x: GLdouble, y: GLdouble) => |c| { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    fn glWindowPos2dv(v: *const GLdouble) => |c| {
-        if record_vector::<2, f64>(c, v, move |p| unsafe { glWindowPos2dv(p) }) {
-            return;
-        }
-        if let Some([x, y]) = rd::<2, f64>(v) { c.gl.window_pos_3f(x as f32, y as f32, 0.0) }
-    }
+    fn glWindowPos2dv(v: *const GLdouble) => |c| { vector_call::<2, f64>(c, v, move |p| unsafe { glWindowPos2dv(p) }, |c, [x, y]| c.gl.window_pos_3f(x as f32, y as f32, 0.0)) }
     [list] fn glWindowPos3s(x: GLshort, y: GLshort, z: GLshort) => |c| { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    fn glWindowPos3sv(v: *const GLshort) => |c| {
-        if record_vector::<3, i16>(c, v, move |p| unsafe { glWindowPos3sv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i16>(v) { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    }
+    fn glWindowPos3sv(v: *const GLshort) => |c| { vector_call::<3, i16>(c, v, move |p| unsafe { glWindowPos3sv(p) }, |c, [x, y, z]| c.gl.window_pos_3f(x as f32, y as f32, z as f32)) }
     [list] fn glWindowPos3i(x: GLint, y: GLint, z: GLint) => |c| { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    fn glWindowPos3iv(v: *const GLint) => |c| {
-        if record_vector::<3, i32>(c, v, move |p| unsafe { glWindowPos3iv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, i32>(v) { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    }
+    fn glWindowPos3iv(v: *const GLint) => |c| { vector_call::<3, i32>(c, v, move |p| unsafe { glWindowPos3iv(p) }, |c, [x, y, z]| c.gl.window_pos_3f(x as f32, y as f32, z as f32)) }
     [list] fn glWindowPos3f(x: GLfloat, y: GLfloat, z: GLfloat) => |c| { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    fn glWindowPos3fv(v: *const GLfloat) => |c| {
-        if record_vector::<3, f32>(c, v, move |p| unsafe { glWindowPos3fv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f32>(v) { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    }
+    fn glWindowPos3fv(v: *const GLfloat) => |c| { vector_call::<3, f32>(c, v, move |p| unsafe { glWindowPos3fv(p) }, |c, [x, y, z]| c.gl.window_pos_3f(x as f32, y as f32, z as f32)) }
     [list] fn glWindowPos3d(x: GLdouble, y: GLdouble, z: GLdouble) => |c| { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    fn glWindowPos3dv(v: *const GLdouble) => |c| {
-        if record_vector::<3, f64>(c, v, move |p| unsafe { glWindowPos3dv(p) }) {
-            return;
-        }
-        if let Some([x, y, z]) = rd::<3, f64>(v) { c.gl.window_pos_3f(x as f32, y as f32, z as f32) }
-    }
+    fn glWindowPos3dv(v: *const GLdouble) => |c| { vector_call::<3, f64>(c, v, move |p| unsafe { glWindowPos3dv(p) }, |c, [x, y, z]| c.gl.window_pos_3f(x as f32, y as f32, z as f32)) }
 
     // GL 2.1 §2.7: the color index, kept as state (RGBA contexts).
     [list] fn glIndexs(x: GLshort) => |c| { c.legacy.current_index = x as f32 }
-    fn glIndexsv(v: *const GLshort) => |c| {
-        if record_vector::<1, i16>(c, v, move |p| unsafe { glIndexsv(p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, i16>(v) { c.legacy.current_index = x as f32 }
-    }
+    fn glIndexsv(v: *const GLshort) => |c| { vector_call::<1, i16>(c, v, move |p| unsafe { glIndexsv(p) }, |c, [x]| c.legacy.current_index = x as f32) }
     [list] fn glIndexi(x: GLint) => |c| { c.legacy.current_index = x as f32 }
-    fn glIndexiv(v: *const GLint) => |c| {
-        if record_vector::<1, i32>(c, v, move |p| unsafe { glIndexiv(p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, i32>(v) { c.legacy.current_index = x as f32 }
-    }
+    fn glIndexiv(v: *const GLint) => |c| { vector_call::<1, i32>(c, v, move |p| unsafe { glIndexiv(p) }, |c, [x]| c.legacy.current_index = x as f32) }
     [list] fn glIndexf(x: GLfloat) => |c| { c.legacy.current_index = x as f32 }
-    fn glIndexfv(v: *const GLfloat) => |c| {
-        if record_vector::<1, f32>(c, v, move |p| unsafe { glIndexfv(p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, f32>(v) { c.legacy.current_index = x as f32 }
-    }
+    fn glIndexfv(v: *const GLfloat) => |c| { vector_call::<1, f32>(c, v, move |p| unsafe { glIndexfv(p) }, |c, [x]| c.legacy.current_index = x as f32) }
     [list] fn glIndexd(x: GLdouble) => |c| { c.legacy.current_index = x as f32 }
-    fn glIndexdv(v: *const GLdouble) => |c| {
-        if record_vector::<1, f64>(c, v, move |p| unsafe { glIndexdv(p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, f64>(v) { c.legacy.current_index = x as f32 }
-    }
+    fn glIndexdv(v: *const GLdouble) => |c| { vector_call::<1, f64>(c, v, move |p| unsafe { glIndexdv(p) }, |c, [x]| c.legacy.current_index = x as f32) }
     [list] fn glIndexub(x: GLubyte) => |c| { c.legacy.current_index = x as f32 }
-    fn glIndexubv(v: *const GLubyte) => |c| {
-        if record_vector::<1, u8>(c, v, move |p| unsafe { glIndexubv(p) }) {
-            return;
-        }
-        if let Some([x]) = rd::<1, u8>(v) { c.legacy.current_index = x as f32 }
-    }
+    fn glIndexubv(v: *const GLubyte) => |c| { vector_call::<1, u8>(c, v, move |p| unsafe { glIndexubv(p) }, |c, [x]| c.legacy.current_index = x as f32) }
 
     // GL 2.1 §2.10: a rectangle as a polygon; the vector forms take two corners.
-    [list] fn glRects(x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort) => |c| {
-        c.gl.rectf(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
-        c.dirty = true;
-    }
+    [list] fn glRects(x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort) => |c| { rect(c, [x1 as f32, y1 as f32, x2 as f32, y2 as f32]) }
     fn glRectsv(v1: *const GLshort, v2: *const GLshort) => |c| {
         if let (Some([x1, y1]), Some([x2, y2])) = (rd::<2, i16>(v1), rd::<2, i16>(v2)) {
-            let (x1, y1, x2, y2) = (x1 as f32, y1 as f32, x2 as f32, y2 as f32);
-            if c.record(move || unsafe { glRectf(x1, y1, x2, y2) }) {
-                return;
-            }
-            c.gl.rectf(x1, y1, x2, y2);
-            c.dirty = true;
+            rect_vector(c, [x1 as f32, y1 as f32, x2 as f32, y2 as f32]);
         }
     }
-    [list] fn glRecti(x1: GLint, y1: GLint, x2: GLint, y2: GLint) => |c| {
-        c.gl.rectf(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
-        c.dirty = true;
-    }
+    [list] fn glRecti(x1: GLint, y1: GLint, x2: GLint, y2: GLint) => |c| { rect(c, [x1 as f32, y1 as f32, x2 as f32, y2 as f32]) }
     fn glRectiv(v1: *const GLint, v2: *const GLint) => |c| {
         if let (Some([x1, y1]), Some([x2, y2])) = (rd::<2, i32>(v1), rd::<2, i32>(v2)) {
-            let (x1, y1, x2, y2) = (x1 as f32, y1 as f32, x2 as f32, y2 as f32);
-            if c.record(move || unsafe { glRectf(x1, y1, x2, y2) }) {
-                return;
-            }
-            c.gl.rectf(x1, y1, x2, y2);
-            c.dirty = true;
+            rect_vector(c, [x1 as f32, y1 as f32, x2 as f32, y2 as f32]);
         }
     }
-    [list] fn glRectf(x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) => |c| {
-        c.gl.rectf(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
-        c.dirty = true;
-    }
+    [list] fn glRectf(x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) => |c| { rect(c, [x1 as f32, y1 as f32, x2 as f32, y2 as f32]) }
     fn glRectfv(v1: *const GLfloat, v2: *const GLfloat) => |c| {
         if let (Some([x1, y1]), Some([x2, y2])) = (rd::<2, f32>(v1), rd::<2, f32>(v2)) {
-            let (x1, y1, x2, y2) = (x1 as f32, y1 as f32, x2 as f32, y2 as f32);
-            if c.record(move || unsafe { glRectf(x1, y1, x2, y2) }) {
-                return;
-            }
-            c.gl.rectf(x1, y1, x2, y2);
-            c.dirty = true;
+            rect_vector(c, [x1 as f32, y1 as f32, x2 as f32, y2 as f32]);
         }
     }
-    [list] fn glRectd(x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble) => |c| {
-        c.gl.rectf(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
-        c.dirty = true;
-    }
+    [list] fn glRectd(x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble) => |c| { rect(c, [x1 as f32, y1 as f32, x2 as f32, y2 as f32]) }
     fn glRectdv(v1: *const GLdouble, v2: *const GLdouble) => |c| {
         if let (Some([x1, y1]), Some([x2, y2])) = (rd::<2, f64>(v1), rd::<2, f64>(v2)) {
-            let (x1, y1, x2, y2) = (x1 as f32, y1 as f32, x2 as f32, y2 as f32);
-            if c.record(move || unsafe { glRectf(x1, y1, x2, y2) }) {
-                return;
-            }
-            c.gl.rectf(x1, y1, x2, y2);
-            c.dirty = true;
+            rect_vector(c, [x1 as f32, y1 as f32, x2 as f32, y2 as f32]);
         }
     }
+}
+
+/// glRect's body: the rectangle drawn as a polygon (GL 2.1 §2.10).
+fn rect(c: &mut OsContext, [x1, y1, x2, y2]: [f32; 4]) {
+    c.gl.rectf(x1, y1, x2, y2);
+    c.dirty = true;
+}
+
+/// glRect*v's body: inside glNewList the corners read now are recorded as
+/// glRectf (a list keeps values, not the caller's pointers); else drawn.
+fn rect_vector(c: &mut OsContext, corners: [f32; 4]) {
+    let [x1, y1, x2, y2] = corners;
+    // SAFETY: glRectf reads only its arguments.
+    if c.record(move || unsafe { glRectf(x1, y1, x2, y2) }) {
+        return;
+    }
+    rect(c, corners);
 }

@@ -139,19 +139,15 @@ def vector(family, name, size, t):
     lead = "".join(f"{a}, " for a, _ in family.lead)
     comps = ", ".join(COMPONENTS[:size])
     return (
-        f"    fn {name}v({', '.join(params)}) => |c| {{\n"
-        f"        if record_vector::<{size}, {rtype}>(c, v, move |p| unsafe {{ {name}v({lead}p) }}) {{\n"
-        f"            return;\n"
-        f"        }}\n"
-        f"        if let Some([{comps}]) = rd::<{size}, {rtype}>(v) {{ {call(family, size, t)} }}\n"
-        f"    }}\n"
+        f"    fn {name}v({', '.join(params)}) => |c| {{ vector_call::<{size}, {rtype}>(c, v, "
+        f"move |p| unsafe {{ {name}v({lead}p) }}, |c, [{comps}]| {call(family, size, t)}) }}\n"
     )
 
 
 def rects():
     """glRect{s,i,f,d}[v] (GL 2.1 §2.10): the vector forms take two
     corners; while compiling they record glRectf with the converted
-    corners."""
+    corners (`rect_vector`, in RECT_HELPERS)."""
     out = "    // GL 2.1 §2.10: a rectangle as a polygon; the vector forms take two corners.\n"
     for t in "s i f d".split():
         ctype, rtype = TYPES[t][:2]
@@ -159,22 +155,34 @@ def rects():
         params = ", ".join(f"{x}: {ctype}" for x in corners)
         conv = ", ".join(f"{x} as f32" for x in corners)
         out += (
-            f"    [list] fn glRect{t}({params}) => |c| {{\n"
-            f"        c.gl.rectf({conv});\n"
-            f"        c.dirty = true;\n"
-            f"    }}\n"
+            f"    [list] fn glRect{t}({params}) => |c| {{ rect(c, [{conv}]) }}\n"
             f"    fn glRect{t}v(v1: *const {ctype}, v2: *const {ctype}) => |c| {{\n"
             f"        if let (Some([x1, y1]), Some([x2, y2])) = (rd::<2, {rtype}>(v1), rd::<2, {rtype}>(v2)) {{\n"
-            f"            let (x1, y1, x2, y2) = ({conv});\n"
-            f"            if c.record(move || unsafe {{ glRectf(x1, y1, x2, y2) }}) {{\n"
-            f"                return;\n"
-            f"            }}\n"
-            f"            c.gl.rectf(x1, y1, x2, y2);\n"
-            f"            c.dirty = true;\n"
+            f"            rect_vector(c, [{conv}]);\n"
             f"        }}\n"
             f"    }}\n"
         )
     return out
+
+
+RECT_HELPERS = '''
+/// glRect's body: the rectangle drawn as a polygon (GL 2.1 §2.10).
+fn rect(c: &mut OsContext, [x1, y1, x2, y2]: [f32; 4]) {
+    c.gl.rectf(x1, y1, x2, y2);
+    c.dirty = true;
+}
+
+/// glRect*v's body: inside glNewList the corners read now are recorded as
+/// glRectf (a list keeps values, not the caller's pointers); else drawn.
+fn rect_vector(c: &mut OsContext, corners: [f32; 4]) {
+    let [x1, y1, x2, y2] = corners;
+    // SAFETY: glRectf reads only its arguments.
+    if c.record(move || unsafe { glRectf(x1, y1, x2, y2) }) {
+        return;
+    }
+    rect(c, corners);
+}
+'''
 
 
 HEADER = '''\
@@ -191,7 +199,7 @@ HEADER = '''\
 //! build from parts, and because the output stays plain, greppable code.
 
 use crate::abi::*;
-use crate::context::{record_call, record_vector, with_ctx};
+use crate::context::{record_call, vector_call, with_ctx, OsContext};
 '''
 
 
@@ -211,6 +219,7 @@ def main():
     out.append("\n")
     out.append(rects())
     out.append("}\n")
+    out.append(RECT_HELPERS)
     print("".join(out), end="")
 
 
