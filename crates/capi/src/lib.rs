@@ -112,9 +112,9 @@
 
 // mimalloc for the library's own allocations (the host program keeps its
 // allocator): the system allocator returned the worker threads' arenas to
-// the OS after every large draw and faulted them in again on the next one
-// (1M-triangle mesh: 10-13 % of the frame), and it costs a third of compile
-// time (docs/PERFORMANCE.md).
+// the OS after every large draw and faulted them in again on the next one,
+// and it is slower for the compiler's many small nodes (the measurements:
+// docs/PERFORMANCE.md, design decisions).
 #[global_allocator]
 static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
 

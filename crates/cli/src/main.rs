@@ -33,8 +33,8 @@ mod shader_runner;
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
-// mimalloc: the compiler allocates many small nodes; the system allocator
-// cost a third of compile time (docs/PERFORMANCE.md).
+// mimalloc: the compiler allocates many small nodes, which the system
+// allocator serves more slowly (docs/PERFORMANCE.md, design decisions).
 #[global_allocator]
 static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
