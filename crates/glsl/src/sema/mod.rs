@@ -14,9 +14,12 @@
 //!
 //! Submodules: `scope` (symbol tables), `types` (type specifiers,
 //! structs, array sizes), `decl` (variable declarations and qualifiers),
-//! `func` (functions, calls, overloads), `expr` (expressions),
-//! `stmt` (statements).
+//! `func` (functions, calls, overloads), `expr` (names, operators,
+//! conversions, assignment), `access` (indexing, fields, swizzles,
+//! l-values), `construct` (constructors), `stmt` (statements).
 
+mod access;
+mod construct;
 mod decl;
 mod expr;
 mod func;

@@ -1,0 +1,445 @@
+//! Access to parts of values (GLSL 1.20 §5.5-5.7): array and vector
+//! indexing, struct fields, swizzles, `.length()`, and the l-value checks
+//! of everything that is written.
+
+use super::expr::mk;
+use super::scope::{Symbol, Var};
+use super::{const_expr, const_int, error_expr, Analyzer};
+use crate::ast::{self, ExprKind as A};
+use crate::diag::{did_you_mean, Code};
+use crate::ir::{self, ExprKind as K, Stage, Storage};
+use crate::limits::MAX_TEXTURE_COORDS;
+use crate::source::Span;
+use crate::token::Version;
+use crate::types::{ArraySize, Base, Scalar, Type};
+
+/// Parses a swizzle: one naming set, 1 to 4 components, each within `size`.
+fn parse_swizzle(name: &str, size: u8) -> Result<([u8; 4], u8), String> {
+    const SETS: [&str; 3] = ["xyzw", "rgba", "stpq"];
+    if name.len() > 4 {
+        return Err(format!("swizzle `{name}' has more than 4 components"));
+    }
+    let mut set = None;
+    let mut comps = [0u8; 4];
+    for (i, c) in name.chars().enumerate() {
+        let found = SETS
+            .iter()
+            .enumerate()
+            .find_map(|(s, letters)| letters.find(c).map(|p| (s, p)));
+        let Some((s, p)) = found else {
+            return Err(format!(
+                "`{c}' is not a vector component (use xyzw, rgba or stpq)"
+            ));
+        };
+        if *set.get_or_insert(s) != s {
+            return Err(format!(
+                "swizzle `{name}' mixes component sets (xyzw, rgba, stpq)"
+            ));
+        }
+        if p as u8 >= size {
+            return Err(format!(
+                "swizzle `{name}' selects component `{c}' of a {size}-component vector"
+            ));
+        }
+        if i < 4 {
+            comps[i] = p as u8;
+        }
+    }
+    if name.is_empty() {
+        return Err("empty swizzle".into());
+    }
+    Ok((comps, name.len() as u8))
+}
+
+impl Analyzer {
+    /// The bound a constant index must respect for an unsized built-in
+    /// array (`gl_TexCoord[]`: gl_MaxTextureCoords).
+    pub(super) fn builtin_unsized_bound(&self, base: &ir::Expr) -> Option<u32> {
+        match base.kind {
+            K::Global(g) => {
+                let g = self.module.globals.get(g.0 as usize)?;
+                (g.builtin && g.ty.array == Some(ArraySize::Unsized)).then_some(MAX_TEXTURE_COORDS)
+            }
+            _ => None,
+        }
+    }
+
+    pub(super) fn note_implicit_index(&mut self, base: &ir::Expr, i: u32) {
+        match base.kind {
+            K::Global(g) => {
+                if let Some(g) = self.module.globals.get_mut(g.0 as usize) {
+                    g.implicit_size = g.implicit_size.max(i + 1);
+                }
+            }
+            K::Local(l) => {
+                if let Some(s) = self
+                    .cur
+                    .as_mut()
+                    .and_then(|f| f.implicit.get_mut(l.0 as usize))
+                {
+                    *s = (*s).max(i + 1);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// `base[index]` on an array, vector or matrix.
+    pub(super) fn index(&mut self, base: ir::Expr, i: &ast::Expr, span: Span) -> ir::Expr {
+        let iv = self.rvalue(i);
+        if base.ty.is_error() || iv.ty.is_error() {
+            return error_expr(span);
+        }
+        if iv.ty != Type::INT {
+            self.error(
+                Code::TypeMismatch,
+                i.span,
+                format!("an index must be an int scalar, found {}", self.tn(iv.ty)),
+            );
+            return error_expr(span);
+        }
+        let cidx = match &iv.kind {
+            K::Const(c) => const_int(c),
+            _ => None,
+        };
+        let t = base.ty;
+        let (len, ty, what) = match (t.array, t.base) {
+            (Some(ArraySize::Sized(n)), _) => (Some(n), t.element(), "array"),
+            (Some(ArraySize::Unsized), _) => (None, t.element(), "array"),
+            (None, Base::Vector(s, n)) => (Some(n as u32), Type::new(Base::Scalar(s)), "vector"),
+            (None, Base::Matrix { cols, rows }) => {
+                (Some(cols as u32), Type::vec(Scalar::Float, rows), "matrix")
+            }
+            _ => {
+                self.error(
+                    Code::TypeMismatch,
+                    span,
+                    format!("cannot index a value of type {}", self.tn(t)),
+                )
+                .notes
+                .push("only arrays, vectors and matrices can be indexed".into());
+                return error_expr(span);
+            }
+        };
+        if let Some(c) = cidx {
+            if c < 0 {
+                self.error(
+                    Code::IndexOutOfRange,
+                    i.span,
+                    format!("{what} index {c} is negative"),
+                );
+                return error_expr(span);
+            }
+            let bound = len.or_else(|| self.builtin_unsized_bound(&base));
+            if let Some(n) = bound {
+                if c as u32 >= n {
+                    self.error(
+                        Code::IndexOutOfRange,
+                        i.span,
+                        format!("{what} index {c} is out of range for {}", self.tn(t)),
+                    )
+                    .notes
+                    .push(format!("valid indices are 0 to {}", n.saturating_sub(1)));
+                    return error_expr(span);
+                }
+            }
+            if len.is_none() {
+                self.note_implicit_index(&base, c as u32);
+            }
+        } else if len.is_none() {
+            // GLSL 1.20 §4.1.9 and, for gl_TexCoord, §7.6: "indices used to
+            // subscript gl_TexCoord must either be an integral constant
+            // expression, or this array must be re-declared with a size".
+            let hint = match base.kind {
+                K::Global(g)
+                    if self
+                        .module
+                        .globals
+                        .get(g.0 as usize)
+                        .is_some_and(|g| g.builtin) =>
+                {
+                    "redeclare it with a size first, e.g. `varying vec4 gl_TexCoord[4];'"
+                }
+                _ => "declare the array with an explicit size",
+            };
+            self.error(
+                Code::BadArraySize,
+                i.span,
+                "an array without a size can only be indexed with constants",
+            )
+            .notes
+            .push(hint.into());
+            return error_expr(span);
+        }
+        self.fold(mk(
+            K::Index {
+                base: Box::new(base),
+                index: Box::new(iv),
+            },
+            ty,
+            span,
+        ))
+    }
+
+    /// `base.name`: a struct member or a swizzle.
+    pub(super) fn field(
+        &mut self,
+        base: ir::Expr,
+        name: &ast::Ident,
+        span: Span,
+        lvalue: bool,
+    ) -> ir::Expr {
+        let t = base.ty;
+        if t.is_error() {
+            return error_expr(span);
+        }
+        if let (None, Base::Struct(id)) = (t.array, t.base) {
+            let members = self
+                .module
+                .structs
+                .get(id.0 as usize)
+                .map(|s| s.members.clone())
+                .unwrap_or_default();
+            match members.iter().position(|m| m.name == name.name.as_str()) {
+                Some(i) => {
+                    let ty = members[i].ty;
+                    return self.fold(mk(
+                        K::Member {
+                            base: Box::new(base),
+                            index: i as u32,
+                        },
+                        ty,
+                        span,
+                    ));
+                }
+                None => {
+                    let sugg = if self.may_suggest(&name.name) {
+                        did_you_mean(&name.name, members.iter().map(|m| m.name.as_str()))
+                            .map(str::to_string)
+                    } else {
+                        None
+                    };
+                    let d = self.error(
+                        Code::Undeclared,
+                        name.span,
+                        format!(
+                            "struct {} has no member `{}'",
+                            self.module.type_name(t),
+                            name.name
+                        ),
+                    );
+                    if let Some(s) = sugg {
+                        d.notes.push(format!("did you mean `{s}'?"));
+                    }
+                    return error_expr(span);
+                }
+            }
+        }
+        let Some(n) = t.vector_size().filter(|_| t.is_vector()) else {
+            let msg = if t.is_scalar() {
+                format!(
+                    "cannot select `.{}' of a scalar {} in GLSL {}",
+                    name.name,
+                    self.tn(t),
+                    self.version.dotted()
+                )
+            } else {
+                format!(
+                    "cannot select `.{}' of a value of type {}",
+                    name.name,
+                    self.tn(t)
+                )
+            };
+            self.error(Code::BadSwizzle, name.span, msg);
+            return error_expr(span);
+        };
+        match parse_swizzle(&name.name, n) {
+            Ok((components, count)) => {
+                if lvalue {
+                    let c = &components[..count as usize];
+                    if (1..c.len()).any(|i| c[..i].contains(&c[i])) {
+                        self.error(
+                            Code::NotAnLvalue,
+                            name.span,
+                            format!(
+                                "swizzle `{}' repeats a component and cannot be assigned",
+                                name.name
+                            ),
+                        );
+                        return error_expr(span);
+                    }
+                }
+                let s = t.scalar().unwrap_or(Scalar::Float);
+                let ty = Type::vec(s, count);
+                self.fold(mk(
+                    K::Swizzle {
+                        base: Box::new(base),
+                        components,
+                        count,
+                    },
+                    ty,
+                    span,
+                ))
+            }
+            Err(msg) => {
+                self.error(Code::BadSwizzle, name.span, msg);
+                error_expr(span)
+            }
+        }
+    }
+
+    /// `a.length()` (GLSL 1.20 §5.7 for arrays).
+    pub(super) fn method(
+        &mut self,
+        b: &ast::Expr,
+        name: &ast::Ident,
+        args: &[ast::Expr],
+        span: Span,
+    ) -> ir::Expr {
+        let base = self.rvalue(b);
+        for a in args {
+            let _ = self.rvalue(a);
+        }
+        if base.ty.is_error() {
+            return error_expr(span);
+        }
+        if name.name != "length" {
+            self.error(
+                Code::Undeclared,
+                name.span,
+                format!("unknown method `{}'", name.name),
+            )
+            .notes
+            .push("the only method is `.length()' on arrays".into());
+            return error_expr(span);
+        }
+        if self.version < Version::V120 {
+            self.error(
+                Code::VersionTooLow,
+                name.span,
+                "`.length()' requires GLSL 1.20",
+            );
+            return error_expr(span);
+        }
+        let Some(ArraySize::Sized(n)) = base.ty.array else {
+            self.error(
+                Code::TypeMismatch,
+                name.span,
+                format!("`.length()' needs an array, found {}", self.tn(base.ty)),
+            );
+            return error_expr(span);
+        };
+        if !args.is_empty() {
+            self.error(Code::TypeMismatch, span, "`.length()' takes no arguments");
+            return error_expr(span);
+        }
+        const_expr(
+            ir::ConstValue {
+                ty: Type::INT,
+                components: vec![ir::ConstScalar::Int(n as i32)],
+            },
+            span,
+        )
+    }
+
+    /// An expression that is written (assignment target, `++`, out
+    /// argument): checks it is an l-value and marks the variable written
+    /// (and read when `also_read`).
+    pub fn lvalue(&mut self, e: &ast::Expr, also_read: bool, what: &str) -> ir::Expr {
+        let span = e.span;
+        match &e.kind {
+            A::Error => error_expr(span),
+            A::Ident(id) => {
+                let v = match self.lookup(&id.name) {
+                    Some(Symbol::Var(v)) => v,
+                    _ => return self.ident(id),
+                };
+                let ty = self.var_type(v);
+                match v {
+                    Var::Local(l) => {
+                        let is_const = self
+                            .cur
+                            .as_ref()
+                            .and_then(|f| f.locals.get(l.0 as usize))
+                            .is_some_and(|l| l.is_const);
+                        if is_const {
+                            self.error(
+                                Code::ReadOnly,
+                                span,
+                                format!("cannot {what} `{}': it is read-only (const)", id.name),
+                            );
+                            return error_expr(span);
+                        }
+                        mk(K::Local(l), ty, span)
+                    }
+                    _ => {
+                        let Some(g) = self.global_of(v) else {
+                            return error_expr(span);
+                        };
+                        let gl = &self.module.globals[g.0 as usize];
+                        let ro = match gl.storage {
+                            Storage::Const => Some("const"),
+                            Storage::Uniform => Some("a uniform"),
+                            Storage::Attribute => Some("an attribute"),
+                            Storage::Varying if self.stage == Stage::Fragment => {
+                                Some("a fragment shader input")
+                            }
+                            _ => None,
+                        };
+                        if let Some(kind) = ro {
+                            self.error(
+                                Code::ReadOnly,
+                                span,
+                                format!("cannot {what} `{}': it is {kind} and read-only", id.name),
+                            );
+                            return error_expr(span);
+                        }
+                        let builtin = gl.builtin;
+                        let gl = &mut self.module.globals[g.0 as usize];
+                        gl.written = true;
+                        gl.read |= also_read;
+                        if builtin && self.stage == Stage::Fragment {
+                            if id.name == "gl_FragColor" {
+                                self.frag_color_write.get_or_insert(span);
+                            } else if id.name == "gl_FragData" {
+                                self.frag_data_write.get_or_insert(span);
+                            }
+                        }
+                        mk(K::Global(g), ty, span)
+                    }
+                }
+            }
+            A::Index(b, i) => {
+                let base = self.lvalue(b, also_read, what);
+                self.index(base, i, span)
+            }
+            A::Field(b, name) => {
+                let base = self.lvalue(b, also_read, what);
+                self.field(base, name, span, true)
+            }
+            _ => {
+                let v = self.rvalue(e);
+                if !v.ty.is_error() {
+                    self.error(Code::NotAnLvalue, span, format!("cannot {what} this expression: it is not a variable"))
+                        .notes
+                        .push("only variables, their elements, members and swizzles without repeats can be written".into());
+                }
+                error_expr(span)
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn swizzles() {
+        assert_eq!(parse_swizzle("xy", 2), Ok(([0, 1, 0, 0], 2)));
+        assert_eq!(parse_swizzle("bgra", 4), Ok(([2, 1, 0, 3], 4)));
+        assert!(parse_swizzle("xg", 4).is_err());
+        assert!(parse_swizzle("z", 2).is_err());
+        assert!(parse_swizzle("xxxxx", 4).is_err());
+    }
+}

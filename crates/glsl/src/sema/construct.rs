@@ -1,0 +1,175 @@
+//! Constructors (GLSL 1.20 §5.4): `T(args)` for scalars, vectors,
+//! matrices, structs and arrays, with the argument checks of §5.4.1-5.4.3.
+
+use super::expr::mk;
+use super::{error_expr, Analyzer};
+use crate::ast;
+use crate::diag::Code;
+use crate::ir::{self, ExprKind as K};
+use crate::source::Span;
+use crate::token::Version;
+use crate::types::{ArraySize, Base, Type};
+
+impl Analyzer {
+    /// A constructor call `T(args)` (GLSL 1.20 §5.4).
+    pub fn construct(&mut self, ty: Type, args: &[ast::Expr], span: Span) -> ir::Expr {
+        let vals: Vec<ir::Expr> = args.iter().map(|a| self.rvalue(a)).collect();
+        if ty.is_error() || vals.iter().any(|v| v.ty.is_error()) {
+            return error_expr(span);
+        }
+        let tn = self.tn(ty);
+        if vals.is_empty() {
+            self.error(
+                Code::BadConstructor,
+                span,
+                format!("constructor `{tn}' needs arguments"),
+            );
+            return error_expr(span);
+        }
+        let mut ty = ty;
+        let args_out = if ty.is_array() {
+            let et = ty.element();
+            if let Some(ArraySize::Sized(n)) = ty.array {
+                if n as usize != vals.len() {
+                    self.error(
+                        Code::BadConstructor,
+                        span,
+                        format!(
+                            "array constructor `{tn}' has {} arguments, expected {n}",
+                            vals.len()
+                        ),
+                    );
+                    return error_expr(span);
+                }
+            } else {
+                ty = et.array_of(ArraySize::Sized(vals.len() as u32));
+            }
+            let what = format!("cannot construct an element of {}", self.tn(ty));
+            let mut out = Vec::new();
+            for v in vals {
+                let sp = v.span;
+                let c = self.coerce(v, et, sp, &what);
+                if c.ty.is_error() {
+                    return error_expr(span);
+                }
+                out.push(c);
+            }
+            out
+        } else if let Base::Struct(id) = ty.base {
+            let members = self
+                .module
+                .structs
+                .get(id.0 as usize)
+                .map(|s| s.members.clone())
+                .unwrap_or_default();
+            if members.len() != vals.len() {
+                self.error(
+                    Code::BadConstructor,
+                    span,
+                    format!(
+                        "constructor `{tn}' has {} arguments, expected {} (one per member)",
+                        vals.len(),
+                        members.len()
+                    ),
+                );
+                return error_expr(span);
+            }
+            let mut out = Vec::new();
+            for (v, m) in vals.into_iter().zip(&members) {
+                let sp = v.span;
+                let what = format!(
+                    "cannot initialize member `{}' of type {}",
+                    m.name,
+                    self.tn(m.ty)
+                );
+                let c = self.coerce(v, m.ty, sp, &what);
+                if c.ty.is_error() {
+                    return error_expr(span);
+                }
+                out.push(c);
+            }
+            out
+        } else {
+            match self.check_basic_ctor(ty, &vals, span) {
+                true => vals,
+                false => return error_expr(span),
+            }
+        };
+        self.fold(mk(K::Construct { args: args_out }, ty, span))
+    }
+
+    /// Argument checks of scalar, vector and matrix constructors.
+    pub(super) fn check_basic_ctor(&mut self, ty: Type, vals: &[ir::Expr], span: Span) -> bool {
+        let tn = self.tn(ty);
+        let Some(need) = ty.component_count() else {
+            self.error(
+                Code::BadConstructor,
+                span,
+                format!("there is no constructor for type {tn}"),
+            );
+            return false;
+        };
+        for v in vals {
+            if v.ty.component_count().is_none() {
+                self.error(
+                    Code::BadConstructor,
+                    v.span,
+                    format!(
+                        "constructor `{tn}' cannot take an argument of type {}",
+                        self.tn(v.ty)
+                    ),
+                );
+                return false;
+            }
+        }
+        let first = vals[0].ty;
+        if ty.is_matrix() {
+            if let Some(m) = vals.iter().find(|v| v.ty.is_matrix()) {
+                if self.version < Version::V120 {
+                    self.error(
+                        Code::VersionTooLow,
+                        m.span,
+                        "constructing a matrix from a matrix requires GLSL 1.20",
+                    );
+                    return false;
+                }
+                if vals.len() > 1 {
+                    self.error(
+                        Code::BadConstructor,
+                        m.span,
+                        format!("a matrix argument of `{tn}' must be its only argument"),
+                    );
+                    return false;
+                }
+                return true;
+            }
+        }
+        if vals.len() == 1 && (first.is_scalar() || ty.is_scalar()) {
+            return true;
+        }
+        let mut left = need;
+        for v in vals {
+            if left == 0 {
+                self.error(
+                    Code::BadConstructor,
+                    v.span,
+                    format!("too many arguments to constructor `{tn}'; it needs {need} components"),
+                );
+                return false;
+            }
+            left = left.saturating_sub(v.ty.component_count().unwrap_or(1));
+        }
+        if left > 0 {
+            self.error(
+                Code::BadConstructor,
+                span,
+                format!(
+                    "not enough components for constructor `{tn}': it needs {need}, {} given",
+                    need - left
+                ),
+            );
+            return false;
+        }
+        true
+    }
+}
