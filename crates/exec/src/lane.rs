@@ -158,3 +158,65 @@ pub fn quad_diffs(v: &[f32; LANES]) -> ([f32; LANES], [f32; LANES]) {
     }
     (dx, dy)
 }
+
+/// A `match` over an op with the arms of the lane-wise ops of one or two
+/// register operands added: each computes every lane of `d` from the same
+/// lane of its operands by a formula over their `u32` bits, written here
+/// once for the engine (`engine::step`) and the reference interpreter
+/// (`interp::run`).
+///
+/// `match_op!(match op { arms })` is `match op { arms, table arms }`; a
+/// table arm is `Op::Name { .. } => un!(d, a, |x| formula)` or
+/// `bin!(d, a, b, |x, y| formula)`, so the caller's `un!`/`bin!` say how
+/// registers are read and written, and `f` (bits to `f32`) is the
+/// caller's too.
+///
+/// Not here: ops reading other lanes, ranges, the mask or side tables;
+/// `Select`, `FMac` and `Dot` (written on whole registers), and the
+/// built-in functions (`F1`, `F2`, `F3`: the interpreter computes them
+/// with the scalar `glsl::math`, the reference for the engine's
+/// vectorized forms).
+macro_rules! match_op {
+    (match $($op:ident).+ { $($arms:tt)* }) => {
+        match $($op).+ {
+            $($arms)*
+            $crate::program::Op::FAdd { d, a, b } => bin!(d, a, b, |x, y| $crate::lane::add(f(x), f(y)).to_bits()),
+            $crate::program::Op::FSub { d, a, b } => bin!(d, a, b, |x, y| $crate::lane::sub(f(x), f(y)).to_bits()),
+            $crate::program::Op::FMul { d, a, b } => bin!(d, a, b, |x, y| $crate::lane::mul(f(x), f(y)).to_bits()),
+            $crate::program::Op::FDiv { d, a, b } => bin!(d, a, b, |x, y| $crate::lane::div(f(x), f(y)).to_bits()),
+            $crate::program::Op::FNeg { d, a } => un!(d, a, |x| $crate::lane::neg(f(x)).to_bits()),
+            $crate::program::Op::FLt { d, a, b } => bin!(d, a, b, |x, y| (f(x) < f(y)) as u32),
+            $crate::program::Op::FLe { d, a, b } => bin!(d, a, b, |x, y| (f(x) <= f(y)) as u32),
+            $crate::program::Op::FEq { d, a, b } => bin!(d, a, b, |x, y| (f(x) == f(y)) as u32),
+            $crate::program::Op::IAdd { d, a, b } => bin!(d, a, b, |x, y| x.wrapping_add(y)),
+            $crate::program::Op::ISub { d, a, b } => bin!(d, a, b, |x, y| x.wrapping_sub(y)),
+            $crate::program::Op::IMul { d, a, b } => bin!(d, a, b, |x, y| x.wrapping_mul(y)),
+            // Wrapping, and 0 for a division by zero.
+            $crate::program::Op::IDiv { d, a, b } => bin!(d, a, b, |x, y| {
+                if y == 0 {
+                    0
+                } else {
+                    (x as i32).wrapping_div(y as i32) as u32
+                }
+            }),
+            $crate::program::Op::INeg { d, a } => un!(d, a, |x| (x as i32).wrapping_neg() as u32),
+            $crate::program::Op::ILt { d, a, b } => bin!(d, a, b, |x, y| ((x as i32) < (y as i32)) as u32),
+            $crate::program::Op::ILe { d, a, b } => bin!(d, a, b, |x, y| ((x as i32) <= (y as i32)) as u32),
+            $crate::program::Op::IEq { d, a, b } => bin!(d, a, b, |x, y| (x == y) as u32),
+            $crate::program::Op::And { d, a, b } => bin!(d, a, b, |x, y| ((x != 0) & (y != 0)) as u32),
+            $crate::program::Op::Or { d, a, b } => bin!(d, a, b, |x, y| ((x != 0) | (y != 0)) as u32),
+            $crate::program::Op::Xor { d, a, b } => bin!(d, a, b, |x, y| ((x != 0) ^ (y != 0)) as u32),
+            $crate::program::Op::Not { d, a } => un!(d, a, |x| (x == 0) as u32),
+            $crate::program::Op::FToI { d, a } => un!(d, a, |x| glsl::consteval::float_to_int(f(x)) as u32),
+            $crate::program::Op::IToF { d, a } => un!(d, a, |x| (x as i32 as f32).to_bits()),
+            $crate::program::Op::FToB { d, a } => un!(d, a, |x| (f(x) != 0.0) as u32),
+            $crate::program::Op::IToB { d, a } => un!(d, a, |x| (x != 0) as u32),
+            $crate::program::Op::BToF { d, a } => un!(d, a, |x| if x != 0 { 1.0f32 } else { 0.0 }.to_bits()),
+            $crate::program::Op::ClampIdx { d, a, max, stride } => {
+                un!(d, a, |x| ((x as i32).clamp(0, max as i32) as u32)
+                    .wrapping_mul(stride))
+            }
+        }
+    };
+}
+pub(crate) use match_op;
