@@ -90,21 +90,7 @@ fn analyze_with(
         });
     }
 
-    // Basic blocks: leaders are op 0, every jump/call target and every op
-    // after a jump, conditional jump, call or return.
-    let mut leader = vec![false; n + 1];
-    leader[0] = true;
-    leader[n] = true;
-    for (i, op) in ops.iter().enumerate() {
-        match *op {
-            Op::Jump { target } | Op::JumpIfNone { target } | Op::Call { target, .. } => {
-                leader[(target as usize).min(n)] = true;
-                leader[i + 1] = true;
-            }
-            Op::Ret { .. } => leader[i + 1] = true,
-            _ => {}
-        }
-    }
+    let leader = crate::program::leaders(ops);
     let starts: Vec<usize> = (0..n).filter(|&i| leader[i]).collect();
     let nblocks = starts.len();
     if (nblocks as u64).saturating_mul(words as u64 * 64) > MAX_BITS {

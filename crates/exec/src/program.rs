@@ -155,12 +155,14 @@ pub(crate) enum Role {
 /// - `defs(n)`, `reads(n)`: the `n` registers from there (`n` a field);
 /// - `span(max)`: read, the `max + 1` registers from there;
 /// - `masked_span(max)`: written under the mask, `max + 1` registers;
-/// - `reads4(n)`: an array of 4 registers of which the first `n` are read.
+/// - `reads4(n)`: an array of 4 registers of which the first `n` are read;
+/// - `target`: not a register, the index of the op it may jump to.
 ///
 /// Generates the enum, [`Op::class`], [`Op::for_each_operand`] (every
-/// register operand, ranges included) and [`Op::for_each_single_mut`]
-/// (the single-register operands, to rename them): what the validator,
-/// liveness and the optimizer know about the shape of each op.
+/// register operand, ranges included), [`Op::for_each_single_mut`] (the
+/// single-register operands, to rename them) and [`Op::target_mut`]: what
+/// the validator, liveness, the optimizer and the slicer know about the
+/// shape of each op.
 macro_rules! define_ops {
     ($(
         $(#[$meta:meta])*
@@ -199,12 +201,25 @@ macro_rules! define_ops {
                     })*
                 }
             }
+
+            /// The index of the op it may jump to (a jump, conditional
+            /// jump or call), to change.
+            #[allow(unused_variables)]
+            pub(crate) fn target_mut(&mut self) -> Option<&mut u32> {
+                match self {
+                    $(Op::$name $({ $($field),* })? => {
+                        $($(target!($field, $role);)*)?
+                    })*
+                }
+                None
+            }
         }
     };
 }
 
 macro_rules! operand {
     ($f:ident, $x:ident, imm) => {};
+    ($f:ident, $x:ident, target) => {};
     ($f:ident, $x:ident, def) => {
         $f(Role::Def, $x, 1)
     };
@@ -234,6 +249,13 @@ macro_rules! operand {
             $f(Role::Read, *r, 1)
         }
     };
+}
+
+macro_rules! target {
+    ($x:ident, target) => {
+        return Some($x)
+    };
+    ($x:ident, $other:ident) => {};
 }
 
 macro_rules! operand_mut {
@@ -353,8 +375,8 @@ define_ops! {
     /// `cur = masks[slot] & (c == 0)`.
     Control AndNotMask { slot: u32 = imm, c: Reg = read },
     /// Jump when no lane is active.
-    Control JumpIfNone { target: u32 = imm },
-    Control Jump { target: u32 = imm },
+    Control JumpIfNone { target: u32 = target },
+    Control Jump { target: u32 = target },
     /// One loop iteration: counts against the loop budget.
     Control LoopIter,
     /// Removes the active lanes from the mask slots
@@ -363,7 +385,7 @@ define_ops! {
     /// `discarded |= cur`, then like [`Op::Kill`].
     Control Discard { start: u32 = imm, end: u32 = imm },
     /// Subroutine call: `return_address[slot] = pc + 1`, jump to `target`.
-    Control Call { target: u32 = imm, slot: u32 = imm },
+    Control Call { target: u32 = target, slot: u32 = imm },
     /// Jump to `return_address[slot]`.
     Control Ret { slot: u32 = imm },
     /// After a subroutine call: removes the discarded lanes from `cur` and
@@ -439,6 +461,39 @@ pub(crate) struct PrintfSite {
     pub span: Span,
 }
 
+impl Op {
+    /// The index of the op it may jump to (a jump, conditional jump or
+    /// call).
+    pub(crate) fn target(&self) -> Option<u32> {
+        let mut op = *self;
+        op.target_mut().copied()
+    }
+
+    /// Whether the op ends a basic block: it may jump, or it returns.
+    pub(crate) fn ends_block(&self) -> bool {
+        self.target().is_some() || matches!(self, Op::Ret { .. })
+    }
+}
+
+/// Per op, and one past the end: whether it starts a basic block (op 0,
+/// every jump or call target and every op after one that ends a block;
+/// the end counts as a start).
+pub(crate) fn leaders(ops: &[Op]) -> Vec<bool> {
+    let n = ops.len();
+    let mut leader = vec![false; n + 1];
+    leader[0] = true;
+    leader[n] = true;
+    for (i, op) in ops.iter().enumerate() {
+        if let Some(t) = op.target() {
+            leader[(t as usize).min(n)] = true;
+        }
+        if op.ends_block() {
+            leader[i + 1] = true;
+        }
+    }
+    leader
+}
+
 impl Program {
     /// Checks that every register, mask slot, jump target and side-table
     /// index is in range, so that the interpreter cannot index out of
@@ -461,13 +516,7 @@ impl Program {
                 Op::SaveMask { slot } | Op::RestoreMask { slot } | Op::AndNotMask { slot, .. } => {
                     slot < self.mask_slots
                 }
-                Op::JumpIfNone { target } | Op::Jump { target } => {
-                    target as usize <= self.ops.len()
-                }
-                Op::Call { target, slot } => {
-                    target as usize <= self.ops.len() && slot < self.subroutines
-                }
-                Op::Ret { slot } => slot < self.subroutines,
+                Op::Call { slot, .. } | Op::Ret { slot } => slot < self.subroutines,
                 Op::Kill { start, end }
                 | Op::Discard { start, end }
                 | Op::SyncDiscard { start, end } => {
@@ -497,7 +546,8 @@ impl Program {
                 Op::Dot { n, .. } => (1..=4).contains(&n),
                 _ => true,
             };
-            if !ok && bad.is_none() {
+            let target_ok = op.target().is_none_or(|t| t as usize <= self.ops.len());
+            if !(ok && target_ok) && bad.is_none() {
                 bad = Some(format!("op {i} ({op:?}) is out of range"));
             }
         }

@@ -26,7 +26,7 @@
 mod mask_flow;
 
 use crate::liveness::{analyze, effects};
-use crate::program::{pure, Op, Program, Reg, Role};
+use crate::program::{leaders, pure, Op, Program, Reg, Role};
 use std::collections::BTreeMap;
 
 /// One instruction of the rewritten program: the op and whether its
@@ -77,23 +77,6 @@ pub(crate) fn unoptimized(p: &Program, live_out: &[Reg]) -> Code {
         zero: (0..p.registers).collect(),
         live_out: live_out.to_vec(),
     }
-}
-
-fn leaders(ops: &[Op]) -> Vec<bool> {
-    let n = ops.len();
-    let mut leader = vec![false; n + 1];
-    leader[0] = true;
-    for (i, op) in ops.iter().enumerate() {
-        match *op {
-            Op::Jump { target } | Op::JumpIfNone { target } | Op::Call { target, .. } => {
-                leader[(target as usize).min(n)] = true;
-                leader[i + 1] = true;
-            }
-            Op::Ret { .. } => leader[i + 1] = true,
-            _ => {}
-        }
-    }
-    leader
 }
 
 /// Replaces the single-register reads of `op` through `f` (ranges, the
@@ -244,19 +227,10 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
         if !keep[i] {
             continue;
         }
-        let mut op = match ops[i] {
-            Op::Jump { target } => Op::Jump {
-                target: remap(target),
-            },
-            Op::JumpIfNone { target } => Op::JumpIfNone {
-                target: remap(target),
-            },
-            Op::Call { target, slot } => Op::Call {
-                target: remap(target),
-                slot,
-            },
-            other => other,
-        };
+        let mut op = ops[i];
+        if let Some(t) = op.target_mut() {
+            *t = remap(*t);
+        }
         let masked = match new_dest[i] {
             Some((v, masked)) => {
                 set_dest(&mut op, v);
