@@ -542,19 +542,7 @@ unsafe fn step(
                 for (k, xk) in x.iter_mut().enumerate().take(dims as usize) {
                     *xk = fz(f(g!(a + k as u32)[l]));
                 }
-                let x = &x[..(dims as usize).min(4)];
-                let v: [f32; 4] = match n {
-                    1 => [math::noise1(x), 0.0, 0.0, 0.0],
-                    2 => {
-                        let v = math::noise2(x);
-                        [v[0], v[1], 0.0, 0.0]
-                    }
-                    3 => {
-                        let v = math::noise3(x);
-                        [v[0], v[1], v[2], 0.0]
-                    }
-                    _ => math::noise4(x),
-                };
+                let v = lane::noise(n, &x[..(dims as usize).min(4)]);
                 for k in 0..4 {
                     out[k][l] = ftz(v[k]);
                 }

@@ -5,7 +5,7 @@ use crate::program::{Op, Program, TexLod};
 use crate::{
     Batch, ExecError, Kernel, LaneMask, Lod, PrintSink, SampleRequest, Textures, Trace, LANES,
 };
-use glsl::math::{self, flush_denormal};
+use glsl::math::flush_denormal;
 use glsl::types::Scalar;
 
 /// Loop iterations (summed over every loop, counted once per iteration of
@@ -305,19 +305,7 @@ pub(crate) fn run<H: Hook>(
                     for (k, xk) in x.iter_mut().enumerate().take(dims as usize) {
                         *xk = f(r[a as usize + k][l]);
                     }
-                    let x = &x[..dims as usize];
-                    let v: [f32; 4] = match n {
-                        1 => [math::noise1(x), 0.0, 0.0, 0.0],
-                        2 => {
-                            let v = math::noise2(x);
-                            [v[0], v[1], 0.0, 0.0]
-                        }
-                        3 => {
-                            let v = math::noise3(x);
-                            [v[0], v[1], v[2], 0.0]
-                        }
-                        _ => math::noise4(x),
-                    };
+                    let v = crate::lane::noise(n, &x[..dims as usize]);
                     for k in 0..4 {
                         out[k][l] = ftz(v[k]);
                     }

@@ -101,6 +101,25 @@ pub fn exp(x: f32) -> f32 {
     flush(glsl::math::exp(x))
 }
 
+/// `noise1` .. `noise4` of `x` (`n` 1 to 4, `Noise`), padded with zeros
+/// to 4 components (unflushed).
+#[inline(always)]
+pub(crate) fn noise(n: u8, x: &[f32]) -> [f32; 4] {
+    use glsl::math;
+    match n {
+        1 => [math::noise1(x), 0.0, 0.0, 0.0],
+        2 => {
+            let v = math::noise2(x);
+            [v[0], v[1], 0.0, 0.0]
+        }
+        3 => {
+            let v = math::noise3(x);
+            [v[0], v[1], v[2], 0.0]
+        }
+        _ => math::noise4(x),
+    }
+}
+
 /// `bits` as a float output: any NaN becomes the canonical quiet NaN, a
 /// subnormal zero of its sign.
 ///
