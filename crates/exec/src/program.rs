@@ -12,6 +12,11 @@
 //! inactive lanes are computed and never observed); only [`Op::Store`] and
 //! [`Op::Scatter`] (writes to variables) respect the current execution mask.
 //! Control flow is structured by mask slots: see the `lower` module.
+//!
+//! Each op's operands are declared once, with what the op does with each
+//! (`define_ops!`): the analyses (validation, liveness, the optimizer)
+//! walk them through [`Op::for_each_operand`] and its siblings rather than
+//! naming every op. What the lane-wise ops compute is in `lane::match_op!`.
 
 use glsl::types::SamplerKind;
 use glsl::Span;
