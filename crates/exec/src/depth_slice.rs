@@ -114,19 +114,11 @@ fn compact(p: &Program, keep: &[bool]) -> Program {
         if !keep.get(i).copied().unwrap_or(false) {
             continue;
         }
-        ops.push(match *op {
-            Op::Jump { target } => Op::Jump {
-                target: remap(target),
-            },
-            Op::JumpIfNone { target } => Op::JumpIfNone {
-                target: remap(target),
-            },
-            Op::Call { target, slot } => Op::Call {
-                target: remap(target),
-                slot,
-            },
-            other => other,
-        });
+        let mut op = *op;
+        if let Some(t) = op.target_mut() {
+            *t = remap(*t);
+        }
+        ops.push(op);
     }
     let mut statements: Vec<_> = p
         .statements

@@ -27,7 +27,7 @@ fn f(x: u32) -> f32 {
     f32::from_bits(x)
 }
 
-use crate::lane::{self, flush as fz, flush_bits as ftz, max as fmax, min as fmin};
+use crate::lane::{self, flush as fz, flush_bits as ftz, match_op, max as fmax, min as fmin};
 pub(crate) use crate::lane::{float_output, uniform_word};
 
 /// `a` with its subnormals flushed ([`ftz`]).
@@ -451,7 +451,7 @@ unsafe fn step(
     }
     let uni = |w: usize, float: bool| uniform_word(uniforms, w, float);
     let mut next = pc + 1;
-    match i.op {
+    match_op!(match i.op {
         Op::Const { d, bits } => put!(d, [bits; LANES]),
         Op::Mov { d, a } => put!(d, g!(a)),
         Op::Store { d, a } => {
@@ -460,11 +460,6 @@ unsafe fn step(
             *dst = lanes(|l| (a[l] & mk[l]) | (dst[l] & !mk[l]));
         }
         Op::Uniform { d, word, float } => put!(d, [uni(word as usize, float); LANES]),
-        Op::FAdd { d, a, b } => bin!(d, a, b, |x, y| lane::add(f(x), f(y)).to_bits()),
-        Op::FSub { d, a, b } => bin!(d, a, b, |x, y| lane::sub(f(x), f(y)).to_bits()),
-        Op::FMul { d, a, b } => bin!(d, a, b, |x, y| lane::mul(f(x), f(y)).to_bits()),
-        Op::FDiv { d, a, b } => bin!(d, a, b, |x, y| lane::div(f(x), f(y)).to_bits()),
-        Op::FNeg { d, a } => un!(d, a, |x| lane::neg(f(x)).to_bits()),
         Op::FMac { d, a, b } => {
             let (a, b, acc) = (g!(a), g!(b), g!(d));
             put!(d, lanes(|l| ftz(f(acc[l]) + f(ftz(f(a[l]) * f(b[l]))))))
@@ -500,39 +495,9 @@ unsafe fn step(
                 ftz(fz(t * t) * (3.0 - 2.0 * t))
             }),
         },
-        Op::FLt { d, a, b } => bin!(d, a, b, |x, y| (f(x) < f(y)) as u32),
-        Op::FLe { d, a, b } => bin!(d, a, b, |x, y| (f(x) <= f(y)) as u32),
-        Op::FEq { d, a, b } => bin!(d, a, b, |x, y| (f(x) == f(y)) as u32),
-        Op::IAdd { d, a, b } => bin!(d, a, b, |x, y| x.wrapping_add(y)),
-        Op::ISub { d, a, b } => bin!(d, a, b, |x, y| x.wrapping_sub(y)),
-        Op::IMul { d, a, b } => bin!(d, a, b, |x, y| x.wrapping_mul(y)),
-        Op::IDiv { d, a, b } => bin!(d, a, b, |x, y| {
-            if y == 0 {
-                0
-            } else {
-                (x as i32).wrapping_div(y as i32) as u32
-            }
-        }),
-        Op::INeg { d, a } => un!(d, a, |x| (x as i32).wrapping_neg() as u32),
-        Op::ILt { d, a, b } => bin!(d, a, b, |x, y| ((x as i32) < (y as i32)) as u32),
-        Op::ILe { d, a, b } => bin!(d, a, b, |x, y| ((x as i32) <= (y as i32)) as u32),
-        Op::IEq { d, a, b } => bin!(d, a, b, |x, y| (x == y) as u32),
-        Op::And { d, a, b } => bin!(d, a, b, |x, y| ((x != 0) & (y != 0)) as u32),
-        Op::Or { d, a, b } => bin!(d, a, b, |x, y| ((x != 0) | (y != 0)) as u32),
-        Op::Xor { d, a, b } => bin!(d, a, b, |x, y| ((x != 0) ^ (y != 0)) as u32),
-        Op::Not { d, a } => un!(d, a, |x| (x == 0) as u32),
-        Op::FToI { d, a } => un!(d, a, |x| glsl::consteval::float_to_int(f(x)) as u32),
-        Op::IToF { d, a } => un!(d, a, |x| (x as i32 as f32).to_bits()),
-        Op::FToB { d, a } => un!(d, a, |x| (f(x) != 0.0) as u32),
-        Op::IToB { d, a } => un!(d, a, |x| (x != 0) as u32),
-        Op::BToF { d, a } => un!(d, a, |x| if x != 0 { 1.0f32 } else { 0.0 }.to_bits()),
         Op::Select { d, c, a, b } => {
             let (c, a, b) = (g!(c), g!(a), g!(b));
             put!(d, lanes(|l| if c[l] != 0 { a[l] } else { b[l] }))
-        }
-        Op::ClampIdx { d, a, max, stride } => {
-            un!(d, a, |x| ((x as i32).clamp(0, max as i32) as u32)
-                .wrapping_mul(stride))
         }
         Op::Gather { d, base, off, max } => {
             let o = g!(off);
@@ -577,19 +542,7 @@ unsafe fn step(
                 for (k, xk) in x.iter_mut().enumerate().take(dims as usize) {
                     *xk = fz(f(g!(a + k as u32)[l]));
                 }
-                let x = &x[..(dims as usize).min(4)];
-                let v: [f32; 4] = match n {
-                    1 => [math::noise1(x), 0.0, 0.0, 0.0],
-                    2 => {
-                        let v = math::noise2(x);
-                        [v[0], v[1], 0.0, 0.0]
-                    }
-                    3 => {
-                        let v = math::noise3(x);
-                        [v[0], v[1], v[2], 0.0]
-                    }
-                    _ => math::noise4(x),
-                };
+                let v = lane::noise(n, &x[..(dims as usize).min(4)]);
                 for k in 0..4 {
                     out[k][l] = ftz(v[k]);
                 }
@@ -666,7 +619,7 @@ unsafe fn step(
             st.cur = 0;
             st.mk = [0; LANES];
         }
-    }
+    });
     Ok(next)
 }
 

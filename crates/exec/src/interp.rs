@@ -1,10 +1,11 @@
 //! The lane-parallel interpreter of a lowered [`Program`].
 
+use crate::lane::match_op;
 use crate::program::{Op, Program, TexLod};
 use crate::{
     Batch, ExecError, Kernel, LaneMask, Lod, PrintSink, SampleRequest, Textures, Trace, LANES,
 };
-use glsl::math::{self, flush_denormal};
+use glsl::math::flush_denormal;
 use glsl::types::Scalar;
 
 /// Loop iterations (summed over every loop, counted once per iteration of
@@ -225,7 +226,7 @@ pub(crate) fn run<H: Hook>(
     while let Some(&op) = ops.get(pc) {
         hook.before(p, pc, cur, &r);
         pc += 1;
-        match op {
+        match_op!(match op {
             Op::Const { d, bits } => r[d as usize] = [bits; LANES],
             Op::Mov { d, a } => r[d as usize] = r[a as usize],
             Op::Store { d, a } => {
@@ -238,11 +239,6 @@ pub(crate) fn run<H: Hook>(
                 }
             }
             Op::Uniform { d, word, float } => r[d as usize] = [uni(word as usize, float); LANES],
-            Op::FAdd { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) + f(y))),
-            Op::FSub { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) - f(y))),
-            Op::FMul { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) * f(y))),
-            Op::FDiv { d, a, b } => bin!(d, a, b, |x, y| ftz(f(x) / f(y))),
-            Op::FNeg { d, a } => un!(d, a, |x| (-f(x)).to_bits()),
             Op::FMac { d, a, b } => {
                 let (a, b, acc) = (r[a as usize], r[b as usize], r[d as usize]);
                 r[d as usize] = lanes(|l| {
@@ -273,39 +269,9 @@ pub(crate) fn run<H: Hook>(
                 let (a, b, c) = (r[a as usize], r[b as usize], r[c as usize]);
                 r[d as usize] = lanes(|l| ftz(func.eval(f(a[l]), f(b[l]), f(c[l]))));
             }
-            Op::FLt { d, a, b } => bin!(d, a, b, |x, y| (f(x) < f(y)) as u32),
-            Op::FLe { d, a, b } => bin!(d, a, b, |x, y| (f(x) <= f(y)) as u32),
-            Op::FEq { d, a, b } => bin!(d, a, b, |x, y| (f(x) == f(y)) as u32),
-            Op::IAdd { d, a, b } => bin!(d, a, b, |x, y| x.wrapping_add(y)),
-            Op::ISub { d, a, b } => bin!(d, a, b, |x, y| x.wrapping_sub(y)),
-            Op::IMul { d, a, b } => bin!(d, a, b, |x, y| x.wrapping_mul(y)),
-            Op::IDiv { d, a, b } => bin!(d, a, b, |x, y| {
-                if y == 0 {
-                    0
-                } else {
-                    (x as i32).wrapping_div(y as i32) as u32
-                }
-            }),
-            Op::INeg { d, a } => un!(d, a, |x| (x as i32).wrapping_neg() as u32),
-            Op::ILt { d, a, b } => bin!(d, a, b, |x, y| ((x as i32) < (y as i32)) as u32),
-            Op::ILe { d, a, b } => bin!(d, a, b, |x, y| ((x as i32) <= (y as i32)) as u32),
-            Op::IEq { d, a, b } => bin!(d, a, b, |x, y| (x == y) as u32),
-            Op::And { d, a, b } => bin!(d, a, b, |x, y| ((x != 0) & (y != 0)) as u32),
-            Op::Or { d, a, b } => bin!(d, a, b, |x, y| ((x != 0) | (y != 0)) as u32),
-            Op::Xor { d, a, b } => bin!(d, a, b, |x, y| ((x != 0) ^ (y != 0)) as u32),
-            Op::Not { d, a } => un!(d, a, |x| (x == 0) as u32),
-            Op::FToI { d, a } => un!(d, a, |x| glsl::consteval::float_to_int(f(x)) as u32),
-            Op::IToF { d, a } => un!(d, a, |x| (x as i32 as f32).to_bits()),
-            Op::FToB { d, a } => un!(d, a, |x| (f(x) != 0.0) as u32),
-            Op::IToB { d, a } => un!(d, a, |x| (x != 0) as u32),
-            Op::BToF { d, a } => un!(d, a, |x| if x != 0 { 1.0f32 } else { 0.0 }.to_bits()),
             Op::Select { d, c, a, b } => {
                 let (c, a, b) = (r[c as usize], r[a as usize], r[b as usize]);
                 r[d as usize] = lanes(|l| if c[l] != 0 { a[l] } else { b[l] });
-            }
-            Op::ClampIdx { d, a, max, stride } => {
-                un!(d, a, |x| ((x as i32).clamp(0, max as i32) as u32)
-                    .wrapping_mul(stride))
             }
             Op::Gather { d, base, off, max } => {
                 let o = r[off as usize];
@@ -339,19 +305,7 @@ pub(crate) fn run<H: Hook>(
                     for (k, xk) in x.iter_mut().enumerate().take(dims as usize) {
                         *xk = f(r[a as usize + k][l]);
                     }
-                    let x = &x[..dims as usize];
-                    let v: [f32; 4] = match n {
-                        1 => [math::noise1(x), 0.0, 0.0, 0.0],
-                        2 => {
-                            let v = math::noise2(x);
-                            [v[0], v[1], 0.0, 0.0]
-                        }
-                        3 => {
-                            let v = math::noise3(x);
-                            [v[0], v[1], v[2], 0.0]
-                        }
-                        _ => math::noise4(x),
-                    };
+                    let v = crate::lane::noise(n, &x[..dims as usize]);
                     for k in 0..4 {
                         out[k][l] = ftz(v[k]);
                     }
@@ -418,7 +372,7 @@ pub(crate) fn run<H: Hook>(
                 }
                 cur = 0;
             }
-        }
+        });
     }
 
     let active = batch.active & FULL & !batch.discarded;

@@ -101,6 +101,25 @@ pub fn exp(x: f32) -> f32 {
     flush(glsl::math::exp(x))
 }
 
+/// `noise1` .. `noise4` of `x` (`n` 1 to 4, `Noise`), padded with zeros
+/// to 4 components (unflushed).
+#[inline(always)]
+pub(crate) fn noise(n: u8, x: &[f32]) -> [f32; 4] {
+    use glsl::math;
+    match n {
+        1 => [math::noise1(x), 0.0, 0.0, 0.0],
+        2 => {
+            let v = math::noise2(x);
+            [v[0], v[1], 0.0, 0.0]
+        }
+        3 => {
+            let v = math::noise3(x);
+            [v[0], v[1], v[2], 0.0]
+        }
+        _ => math::noise4(x),
+    }
+}
+
 /// `bits` as a float output: any NaN becomes the canonical quiet NaN, a
 /// subnormal zero of its sign.
 ///
@@ -158,3 +177,138 @@ pub fn quad_diffs(v: &[f32; LANES]) -> ([f32; LANES], [f32; LANES]) {
     }
     (dx, dy)
 }
+
+/// A `match` over an op with the arms of the lane-wise ops of one or two
+/// register operands added from one table, [`lane_ops!`]: each op computes
+/// every lane of `d` from the same lane of its operands.
+///
+/// - `match_op!(match op { arms })` is `match op { arms, lane arms }`
+///   (`engine::step`, `interp::run`): a lane arm is `Op::Name { .. } =>
+///   un!(d, a, |x| formula)` or `bin!(d, a, b, |x, y| formula)`, a formula
+///   over the operands' `u32` bits, with the caller's `un!`/`bin!` (how
+///   registers are read and written) and `f` (bits to `f32`).
+/// - `match_op!(jit match op { arms })` is `match op { jit arms, arms }`
+///   (`jit::codegen::ops`, whose arms end with a catch-all): a jit arm
+///   invokes the caller's macro named in the row's `jit` column, which
+///   emits the op for each quarter of the lanes (or calls the engine
+///   back).
+///
+/// Not in the table: ops reading other lanes, ranges, the mask or side
+/// tables; `Select`, `FMac` and `Dot` (written on whole registers), and
+/// the built-in functions (`F1`, `F2`, `F3`: the interpreter computes
+/// them with the scalar `glsl::math`, the reference for the engine's
+/// vectorized forms).
+macro_rules! match_op {
+    (match $($op:ident).+ { $($arms:tt)* }) => {
+        $crate::lane::lane_ops!(lane, ($($op).+) { $($arms)* })
+    };
+    (jit match $($op:ident).+ { $($arms:tt)* }) => {
+        $crate::lane::lane_ops!(jit, ($($op).+) { $($arms)* })
+    };
+}
+pub(crate) use match_op;
+
+/// The table of [`match_op!`]: a row per op, `Name { fields } => lane
+/// un!/bin!(..), jit emitter!(..);`, handed to [`expand_lane_ops!`] with
+/// which column to use.
+macro_rules! lane_ops {
+    ($column:ident, $op:tt { $($arms:tt)* }) => {
+        $crate::lane::expand_lane_ops! { $column, $op { $($arms)* }
+            FAdd { d, a, b } => lane bin!(d, a, b, |x, y| $crate::lane::add(f(x), f(y)).to_bits()),
+                jit fbin!(d, a, b, fadd);
+            FSub { d, a, b } => lane bin!(d, a, b, |x, y| $crate::lane::sub(f(x), f(y)).to_bits()),
+                jit fbin!(d, a, b, fsub);
+            FMul { d, a, b } => lane bin!(d, a, b, |x, y| $crate::lane::mul(f(x), f(y)).to_bits()),
+                jit fbin!(d, a, b, fmul);
+            FDiv { d, a, b } => lane bin!(d, a, b, |x, y| $crate::lane::div(f(x), f(y)).to_bits()),
+                jit fbin!(d, a, b, fdiv);
+            FNeg { d, a } => lane un!(d, a, |x| $crate::lane::neg(f(x)).to_bits()),
+                jit un_ins!(d, a, ld, fneg);
+            FLt { d, a, b } => lane bin!(d, a, b, |x, y| (f(x) < f(y)) as u32),
+                jit fcmp!(d, a, b, FloatCC::LessThan);
+            FLe { d, a, b } => lane bin!(d, a, b, |x, y| (f(x) <= f(y)) as u32),
+                jit fcmp!(d, a, b, FloatCC::LessThanOrEqual);
+            FEq { d, a, b } => lane bin!(d, a, b, |x, y| (f(x) == f(y)) as u32),
+                jit fcmp!(d, a, b, FloatCC::Equal);
+            IAdd { d, a, b } => lane bin!(d, a, b, |x, y| x.wrapping_add(y)),
+                jit ibin!(d, a, b, iadd);
+            ISub { d, a, b } => lane bin!(d, a, b, |x, y| x.wrapping_sub(y)),
+                jit ibin!(d, a, b, isub);
+            IMul { d, a, b } => lane bin!(d, a, b, |x, y| x.wrapping_mul(y)),
+                jit ibin!(d, a, b, imul);
+            // Wrapping, and 0 for a division by zero.
+            IDiv { d, a, b } => lane bin!(d, a, b, |x, y| {
+                if y == 0 {
+                    0
+                } else {
+                    (x as i32).wrapping_div(y as i32) as u32
+                }
+            }),
+                jit call_step!();
+            INeg { d, a } => lane un!(d, a, |x| (x as i32).wrapping_neg() as u32),
+                jit un_ins!(d, a, ld, ineg);
+            ILt { d, a, b } => lane bin!(d, a, b, |x, y| ((x as i32) < (y as i32)) as u32),
+                jit icmp!(d, a, b, IntCC::SignedLessThan);
+            ILe { d, a, b } => lane bin!(d, a, b, |x, y| ((x as i32) <= (y as i32)) as u32),
+                jit icmp!(d, a, b, IntCC::SignedLessThanOrEqual);
+            IEq { d, a, b } => lane bin!(d, a, b, |x, y| (x == y) as u32),
+                jit icmp!(d, a, b, IntCC::Equal);
+            And { d, a, b } => lane bin!(d, a, b, |x, y| ((x != 0) & (y != 0)) as u32),
+                jit logic!(d, a, b, bor, true);
+            Or { d, a, b } => lane bin!(d, a, b, |x, y| ((x != 0) | (y != 0)) as u32),
+                jit logic!(d, a, b, band, true);
+            Xor { d, a, b } => lane bin!(d, a, b, |x, y| ((x != 0) ^ (y != 0)) as u32),
+                jit logic!(d, a, b, bxor, false);
+            Not { d, a } => lane un!(d, a, |x| (x == 0) as u32),
+                jit un_ins!(d, a, ld, not01);
+            FToI { d, a } => lane un!(d, a, |x| glsl::consteval::float_to_int(f(x)) as u32),
+                jit un_ins!(d, a, ldf, ftoi);
+            IToF { d, a } => lane un!(d, a, |x| (x as i32 as f32).to_bits()),
+                jit un_ins!(d, a, ld, itof);
+            FToB { d, a } => lane un!(d, a, |x| (f(x) != 0.0) as u32),
+                jit un_ins!(d, a, ldf, ftob);
+            IToB { d, a } => lane un!(d, a, |x| (x != 0) as u32),
+                jit un_ins!(d, a, ld, bool_of);
+            BToF { d, a } => lane un!(d, a, |x| if x != 0 { 1.0f32 } else { 0.0 }.to_bits()),
+                jit un_ins!(d, a, ld, btof);
+            ClampIdx { d, a, max, stride } => lane un!(d, a, |x| {
+                ((x as i32).clamp(0, max as i32) as u32).wrapping_mul(stride)
+            }),
+                jit clamp_idx!(d, a, max, stride);
+        }
+    };
+}
+pub(crate) use lane_ops;
+
+/// The `match` of [`match_op!`] from the rows of [`lane_ops!`].
+macro_rules! expand_lane_ops {
+    (
+        $column:ident, ($($op:ident).+) { $($arms:tt)* }
+        $(
+            $name:ident { $($field:ident),* }
+                => lane $lane:ident!($($lane_args:tt)*), jit $jit:ident!($($jit_args:tt)*);
+        )*
+    ) => {
+        $crate::lane::expand_lane_ops!(@$column ($($op).+) { $($arms)* }
+            $($name { $($field),* } lane $lane!($($lane_args)*) jit $jit!($($jit_args)*);)*)
+    };
+    (@lane ($($op:ident).+) { $($arms:tt)* }
+        $($name:ident { $($field:ident),* } lane $lane:ident!($($lane_args:tt)*)
+            jit $jit:ident!($($jit_args:tt)*);)*) => {
+        match $($op).+ {
+            $($arms)*
+            $($crate::program::Op::$name { $($field),* } => $lane!($($lane_args)*),)*
+        }
+    };
+    (@jit ($($op:ident).+) { $($arms:tt)* }
+        $($name:ident { $($field:ident),* } lane $lane:ident!($($lane_args:tt)*)
+            jit $jit:ident!($($jit_args:tt)*);)*) => {
+        match $($op).+ {
+            // (A call back reads its operands itself.)
+            $(#[allow(unused_variables)]
+            $crate::program::Op::$name { $($field),* } => $jit!($($jit_args)*),)*
+            $($arms)*
+        }
+    };
+}
+pub(crate) use expand_lane_ops;

@@ -12,7 +12,7 @@
 //! keep the old value). Dropping the unneeded ops leaves every needed op
 //! reading the very bits it read before, on every lane.
 
-use crate::program::{Op, Program, Reg, TexLod};
+use crate::program::{Class, Op, Program, Reg, Role, TexLod};
 use smallvec::SmallVec;
 
 /// What [`analyze`] finds.
@@ -91,21 +91,7 @@ fn analyze_with(
         });
     }
 
-    // Basic blocks: leaders are op 0, every jump/call target and every op
-    // after a jump, conditional jump, call or return.
-    let mut leader = vec![false; n + 1];
-    leader[0] = true;
-    leader[n] = true;
-    for (i, op) in ops.iter().enumerate() {
-        match *op {
-            Op::Jump { target } | Op::JumpIfNone { target } | Op::Call { target, .. } => {
-                leader[(target as usize).min(n)] = true;
-                leader[i + 1] = true;
-            }
-            Op::Ret { .. } => leader[i + 1] = true,
-            _ => {}
-        }
-    }
+    let leader = crate::program::leaders(ops);
     let starts: Vec<usize> = (0..n).filter(|&i| leader[i]).collect();
     let nblocks = starts.len();
     if (nblocks as u64).saturating_mul(words as u64 * 64) > MAX_BITS {
@@ -276,71 +262,29 @@ pub(crate) fn effects(p: &Program, op: &Op) -> Effects {
         full_defs: SmallVec::new(),
         partial_defs: SmallVec::new(),
         uses: SmallVec::new(),
-        control: false,
+        control: op.class() == Class::Control,
     };
-    match *op {
-        Op::FMac { d, a, b } => {
-            // d = d + a * b reads its destination.
-            e.full_defs.push((d, 1));
-            e.uses.extend([(d, 1), (a, 1), (b, 1)]);
+    op.for_each_operand(&mut |role, r, n| match role {
+        Role::Def => e.full_defs.push((r, n)),
+        Role::Acc => {
+            e.full_defs.push((r, n));
+            e.uses.push((r, n));
         }
-        Op::Store { d, a } => {
-            e.partial_defs.push((d, 1));
-            e.uses.push((a, 1));
-        }
-        Op::Scatter { base, off, max, a } => {
-            e.partial_defs.push((base, max.saturating_add(1)));
-            e.uses.push((off, 1));
-            e.uses.push((a, 1));
-        }
-        Op::Gather { d, base, off, max } => {
-            e.full_defs.push((d, 1));
-            e.uses.push((off, 1));
-            e.uses.push((base, max.saturating_add(1)));
-        }
-        Op::Noise { d, n, a, dims } => {
-            e.full_defs.push((d, n as u32));
-            e.uses.push((a, dims as u32));
-        }
-        Op::Texture { index } => {
-            if let Some(t) = p.textures.get(index as usize) {
-                e.full_defs.push((t.d, 4));
-                e.uses.push((t.unit, 1));
-                e.uses.extend(t.coord.iter().map(|&c| (c, 1)));
-                if let Some(c) = t.compare {
-                    e.uses.push((c, 1));
-                }
-                if let TexLod::Implicit { bias: Some(b) } | TexLod::Explicit(Some(b)) = t.lod {
-                    e.uses.push((b, 1));
-                }
+        Role::Masked => e.partial_defs.push((r, n)),
+        Role::Read => e.uses.push((r, n)),
+    });
+    // A lookup's registers are in its side table.
+    if let Op::Texture { index } = *op {
+        if let Some(t) = p.textures.get(index as usize) {
+            e.full_defs.push((t.d, 4));
+            e.uses.push((t.unit, 1));
+            e.uses.extend(t.coord.iter().map(|&c| (c, 1)));
+            if let Some(c) = t.compare {
+                e.uses.push((c, 1));
             }
-        }
-        Op::AndMask { c } | Op::AndNotMask { c, .. } => {
-            e.control = true;
-            e.uses.push((c, 1));
-        }
-        Op::SaveMask { .. }
-        | Op::RestoreMask { .. }
-        | Op::JumpIfNone { .. }
-        | Op::Jump { .. }
-        | Op::LoopIter
-        | Op::Kill { .. }
-        | Op::Discard { .. }
-        | Op::Call { .. }
-        | Op::Ret { .. }
-        | Op::SyncDiscard { .. } => e.control = true,
-        _ => {
-            // Plain data ops: the first register operand is the
-            // destination, written on every lane.
-            let mut first = true;
-            op.for_each_reg(&mut |r, n| {
-                if first {
-                    e.full_defs.push((r, n));
-                    first = false;
-                } else {
-                    e.uses.push((r, n));
-                }
-            });
+            if let TexLod::Implicit { bias: Some(b) } | TexLod::Explicit(Some(b)) = t.lod {
+                e.uses.push((b, 1));
+            }
         }
     }
     e

@@ -12,6 +12,11 @@
 //! inactive lanes are computed and never observed); only [`Op::Store`] and
 //! [`Op::Scatter`] (writes to variables) respect the current execution mask.
 //! Control flow is structured by mask slots: see the `lower` module.
+//!
+//! Each op's operands are declared once, with what the op does with each
+//! (`define_ops!`): the analyses (validation, liveness, the optimizer)
+//! walk them through [`Op::for_each_operand`] and its siblings rather than
+//! naming every op. What the lane-wise ops compute is in `lane::match_op!`.
 
 use glsl::types::SamplerKind;
 use glsl::Span;
@@ -121,309 +126,276 @@ impl F3 {
     }
 }
 
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum Op {
+/// What an op is, for the analyses: the flag each row of [`define_ops!`]
+/// starts with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Class {
+    /// Computes every lane from its register operands alone (no mask, no
+    /// other lanes, no ranges, no side tables): may run in the prologue.
+    Pure,
+    /// Any other op on registers (masked writes, ranges, other lanes,
+    /// side tables, the hook).
+    Data,
+    /// Changes the mask, the pc or the run's counters: always needed.
+    Control,
+}
+
+/// How an op uses a register operand.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Role {
+    /// Written on every lane.
+    Def,
+    /// Read, then written on every lane (an accumulator).
+    Acc,
+    /// Written on the lanes of the current mask only.
+    Masked,
+    /// Read.
+    Read,
+}
+
+/// Declares [`Op`] from one row per variant: its class ([`Class`]), its
+/// fields, and the role of each field (`= role`):
+/// - `imm`: not a register;
+/// - `def`, `acc`, `masked`, `read`: one register, in that [`Role`];
+/// - `defs(n)`, `reads(n)`: the `n` registers from there (`n` a field);
+/// - `span(max)`: read, the `max + 1` registers from there;
+/// - `masked_span(max)`: written under the mask, `max + 1` registers;
+/// - `reads4(n)`: an array of 4 registers of which the first `n` are read;
+/// - `target`: not a register, the index of the op it may jump to.
+///
+/// Generates the enum, [`Op::class`], [`Op::for_each_operand`] (every
+/// register operand, ranges included), [`Op::for_each_single_mut`] (the
+/// single-register operands, to rename them) and [`Op::target_mut`]: what
+/// the validator, liveness, the optimizer and the slicer know about the
+/// shape of each op.
+macro_rules! define_ops {
+    ($(
+        $(#[$meta:meta])*
+        $class:ident $name:ident $({ $($field:ident: $ty:ty = $role:ident $(($arg:ident))?),* $(,)? })?,
+    )*) => {
+        #[derive(Clone, Copy, Debug)]
+        pub(crate) enum Op {
+            $($(#[$meta])* $name $({ $($field: $ty),* })?,)*
+        }
+
+        impl Op {
+            pub(crate) fn class(&self) -> Class {
+                match self {
+                    $(Op::$name { .. } => Class::$class,)*
+                }
+            }
+
+            /// Calls `f` on every register operand with its role and the
+            /// number of registers it addresses from there.
+            #[allow(unused_variables)]
+            pub(crate) fn for_each_operand(&self, f: &mut dyn FnMut(Role, Reg, u32)) {
+                match *self {
+                    $(Op::$name $({ $($field),* })? => {
+                        $($(operand!(f, $field, $role $(($arg))?);)*)?
+                    })*
+                }
+            }
+
+            /// Calls `f` on every operand naming one register (not the
+            /// ranges), which it may change.
+            #[allow(unused_variables)]
+            pub(crate) fn for_each_single_mut(&mut self, f: &mut dyn FnMut(Role, &mut Reg)) {
+                match self {
+                    $(Op::$name $({ $($field),* })? => {
+                        $($(operand_mut!(f, $field, $role $(($arg))?);)*)?
+                    })*
+                }
+            }
+
+            /// The index of the op it may jump to (a jump, conditional
+            /// jump or call), to change.
+            #[allow(unused_variables)]
+            pub(crate) fn target_mut(&mut self) -> Option<&mut u32> {
+                match self {
+                    $(Op::$name $({ $($field),* })? => {
+                        $($(target!($field, $role);)*)?
+                    })*
+                }
+                None
+            }
+        }
+    };
+}
+
+macro_rules! operand {
+    ($f:ident, $x:ident, imm) => {};
+    ($f:ident, $x:ident, target) => {};
+    ($f:ident, $x:ident, def) => {
+        $f(Role::Def, $x, 1)
+    };
+    ($f:ident, $x:ident, acc) => {
+        $f(Role::Acc, $x, 1)
+    };
+    ($f:ident, $x:ident, masked) => {
+        $f(Role::Masked, $x, 1)
+    };
+    ($f:ident, $x:ident, read) => {
+        $f(Role::Read, $x, 1)
+    };
+    ($f:ident, $x:ident, defs($n:ident)) => {
+        $f(Role::Def, $x, $n as u32)
+    };
+    ($f:ident, $x:ident, reads($n:ident)) => {
+        $f(Role::Read, $x, $n as u32)
+    };
+    ($f:ident, $x:ident, span($m:ident)) => {
+        $f(Role::Read, $x, $m.saturating_add(1))
+    };
+    ($f:ident, $x:ident, masked_span($m:ident)) => {
+        $f(Role::Masked, $x, $m.saturating_add(1))
+    };
+    ($f:ident, $x:ident, reads4($n:ident)) => {
+        for r in $x.iter().take(($n as usize).min(4)) {
+            $f(Role::Read, *r, 1)
+        }
+    };
+}
+
+macro_rules! target {
+    ($x:ident, target) => {
+        return Some($x)
+    };
+    ($x:ident, $other:ident) => {};
+}
+
+macro_rules! operand_mut {
+    ($f:ident, $x:ident, def) => {
+        $f(Role::Def, $x)
+    };
+    ($f:ident, $x:ident, acc) => {
+        $f(Role::Acc, $x)
+    };
+    ($f:ident, $x:ident, masked) => {
+        $f(Role::Masked, $x)
+    };
+    ($f:ident, $x:ident, read) => {
+        $f(Role::Read, $x)
+    };
+    ($f:ident, $x:ident, reads4($n:ident)) => {
+        for r in $x.iter_mut().take((*$n as usize).min(4)) {
+            $f(Role::Read, r)
+        }
+    };
+    ($f:ident, $x:ident, $other:ident $(($arg:ident))?) => {};
+}
+
+define_ops! {
     /// `d = bits` on every lane.
-    Const {
-        d: Reg,
-        bits: u32,
-    },
+    Pure Const { d: Reg = def, bits: u32 = imm },
     /// `d = a` on every lane.
-    Mov {
-        d: Reg,
-        a: Reg,
-    },
+    Pure Mov { d: Reg = def, a: Reg = read },
     /// `d = a` on the lanes of the current mask.
-    Store {
-        d: Reg,
-        a: Reg,
-    },
+    Data Store { d: Reg = masked, a: Reg = read },
     /// `d = uniforms[word]` on every lane (0 past the end of the words);
     /// a `float` word's subnormal is read as zero.
-    Uniform {
-        d: Reg,
-        word: u32,
-        float: bool,
-    },
+    Pure Uniform { d: Reg = def, word: u32 = imm, float: bool = imm },
 
-    FAdd {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    FSub {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    FMul {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    FDiv {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    FNeg {
-        d: Reg,
-        a: Reg,
-    },
+    Pure FAdd { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure FSub { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure FMul { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure FDiv { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure FNeg { d: Reg = def, a: Reg = read },
     /// `d = d + a * b`, two roundings (never fused).
-    FMac {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
+    Data FMac { d: Reg = acc, a: Reg = read, b: Reg = read },
     /// `d = 0.0`, then `d += a[k] * b[k]` for `k < n` (1..=4), each
     /// product and sum rounded and flushed (an [`Op::FMac`] chain in one
     /// op).
-    Dot {
-        d: Reg,
-        n: u8,
-        a: [Reg; 4],
-        b: [Reg; 4],
-    },
-    F1 {
-        f: F1,
-        d: Reg,
-        a: Reg,
-    },
-    F2 {
-        f: F2,
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    F3 {
-        f: F3,
-        d: Reg,
-        a: Reg,
-        b: Reg,
-        c: Reg,
-    },
-    FLt {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    FLe {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    FEq {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
+    Pure Dot { d: Reg = def, n: u8 = imm, a: [Reg; 4] = reads4(n), b: [Reg; 4] = reads4(n) },
+    Pure F1 { f: F1 = imm, d: Reg = def, a: Reg = read },
+    Pure F2 { f: F2 = imm, d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure F3 { f: F3 = imm, d: Reg = def, a: Reg = read, b: Reg = read, c: Reg = read },
+    Pure FLt { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure FLe { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure FEq { d: Reg = def, a: Reg = read, b: Reg = read },
 
-    IAdd {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    ISub {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    IMul {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
+    Pure IAdd { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure ISub { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure IMul { d: Reg = def, a: Reg = read, b: Reg = read },
     /// Wrapping division; division by zero gives 0.
-    IDiv {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    INeg {
-        d: Reg,
-        a: Reg,
-    },
-    ILt {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    ILe {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
+    Pure IDiv { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure INeg { d: Reg = def, a: Reg = read },
+    Pure ILt { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure ILe { d: Reg = def, a: Reg = read, b: Reg = read },
     /// Bit equality (ints, bools, samplers).
-    IEq {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
+    Pure IEq { d: Reg = def, a: Reg = read, b: Reg = read },
 
-    And {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    Or {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    Xor {
-        d: Reg,
-        a: Reg,
-        b: Reg,
-    },
-    Not {
-        d: Reg,
-        a: Reg,
-    },
+    Pure And { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure Or { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure Xor { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure Not { d: Reg = def, a: Reg = read },
 
-    FToI {
-        d: Reg,
-        a: Reg,
-    },
-    IToF {
-        d: Reg,
-        a: Reg,
-    },
-    FToB {
-        d: Reg,
-        a: Reg,
-    },
-    IToB {
-        d: Reg,
-        a: Reg,
-    },
-    BToF {
-        d: Reg,
-        a: Reg,
-    },
+    Pure FToI { d: Reg = def, a: Reg = read },
+    Pure IToF { d: Reg = def, a: Reg = read },
+    Pure FToB { d: Reg = def, a: Reg = read },
+    Pure IToB { d: Reg = def, a: Reg = read },
+    Pure BToF { d: Reg = def, a: Reg = read },
 
     /// `d = c != 0 ? a : b` per lane.
-    Select {
-        d: Reg,
-        c: Reg,
-        a: Reg,
-        b: Reg,
-    },
+    Pure Select { d: Reg = def, c: Reg = read, a: Reg = read, b: Reg = read },
 
     /// `d = clamp(a as i32, 0, max) * stride` (a dynamic index made safe:
     /// out-of-range indices select the nearest element).
-    ClampIdx {
-        d: Reg,
-        a: Reg,
-        max: u32,
-        stride: u32,
-    },
+    Pure ClampIdx { d: Reg = def, a: Reg = read, max: u32 = imm, stride: u32 = imm },
     /// `d = r[base + min(off, max)]` per lane.
-    Gather {
-        d: Reg,
-        base: Reg,
-        off: Reg,
-        max: u32,
-    },
+    Data Gather { d: Reg = def, base: Reg = span(max), off: Reg = read, max: u32 = imm },
     /// `r[base + min(off, max)] = a` on the lanes of the current mask.
-    Scatter {
-        base: Reg,
-        off: Reg,
-        max: u32,
-        a: Reg,
-    },
+    Data Scatter { base: Reg = masked_span(max), off: Reg = read, max: u32 = imm, a: Reg = read },
     /// `d = uniforms[word + min(off, max)]` per lane; `float` as for
     /// [`Op::Uniform`] (the words `word + k * stride` are elements of one
     /// array, all of one kind).
-    GatherUniform {
-        d: Reg,
-        word: u32,
-        off: Reg,
-        max: u32,
-        float: bool,
+    Pure GatherUniform {
+        d: Reg = def,
+        word: u32 = imm,
+        off: Reg = read,
+        max: u32 = imm,
+        float: bool = imm,
     },
 
     /// `d = a(lane | 1) - a(lane & !1)`.
-    DdX {
-        d: Reg,
-        a: Reg,
-    },
+    Data DdX { d: Reg = def, a: Reg = read },
     /// `d = a(lane | 2) - a(lane & !2)`.
-    DdY {
-        d: Reg,
-        a: Reg,
-    },
+    Data DdY { d: Reg = def, a: Reg = read },
     /// `noiseN` of the `dims` consecutive registers at `a` into `n`
     /// consecutive registers at `d`.
-    Noise {
-        d: Reg,
-        n: u8,
-        a: Reg,
-        dims: u8,
-    },
-    /// A texture lookup described by `Program::textures[index]`.
-    Texture {
-        index: u32,
-    },
+    Data Noise { d: Reg = defs(n), n: u8 = imm, a: Reg = reads(dims), dims: u8 = imm },
+    /// A texture lookup described by `Program::textures[index]` (its
+    /// registers are there, not operands here).
+    Data Texture { index: u32 = imm },
     /// `debugPrintfEXT` described by `Program::printfs[index]`: reported
     /// to the run's hook for the lanes of the current mask (no effect on
     /// the registers).
-    Printf {
-        index: u32,
-    },
+    Data Printf { index: u32 = imm },
 
     /// `masks[slot] = cur`.
-    SaveMask {
-        slot: u32,
-    },
+    Control SaveMask { slot: u32 = imm },
     /// `cur = masks[slot]`.
-    RestoreMask {
-        slot: u32,
-    },
+    Control RestoreMask { slot: u32 = imm },
     /// `cur &= (c != 0)`.
-    AndMask {
-        c: Reg,
-    },
+    Control AndMask { c: Reg = read },
     /// `cur = masks[slot] & (c == 0)`.
-    AndNotMask {
-        slot: u32,
-        c: Reg,
-    },
+    Control AndNotMask { slot: u32 = imm, c: Reg = read },
     /// Jump when no lane is active.
-    JumpIfNone {
-        target: u32,
-    },
-    Jump {
-        target: u32,
-    },
+    Control JumpIfNone { target: u32 = target },
+    Control Jump { target: u32 = target },
     /// One loop iteration: counts against the loop budget.
-    LoopIter,
+    Control LoopIter,
     /// Removes the active lanes from the mask slots
     /// `kill_slots[start..end]`, then `cur = 0` (break, continue, return).
-    Kill {
-        start: u32,
-        end: u32,
-    },
+    Control Kill { start: u32 = imm, end: u32 = imm },
     /// `discarded |= cur`, then like [`Op::Kill`].
-    Discard {
-        start: u32,
-        end: u32,
-    },
+    Control Discard { start: u32 = imm, end: u32 = imm },
     /// Subroutine call: `return_address[slot] = pc + 1`, jump to `target`.
-    Call {
-        target: u32,
-        slot: u32,
-    },
+    Control Call { target: u32 = target, slot: u32 = imm },
     /// Jump to `return_address[slot]`.
-    Ret {
-        slot: u32,
-    },
+    Control Ret { slot: u32 = imm },
     /// After a subroutine call: removes the discarded lanes from `cur` and
     /// from the mask slots `kill_slots[start..end]`.
-    SyncDiscard {
-        start: u32,
-        end: u32,
-    },
+    Control SyncDiscard { start: u32 = imm, end: u32 = imm },
 }
 
 /// How a texture lookup chooses its level of detail.
@@ -495,101 +467,36 @@ pub(crate) struct PrintfSite {
 }
 
 impl Op {
-    /// Calls `f` on every register operand, with the number of registers
-    /// the operand may address from there (more than 1 for gathers).
-    pub(crate) fn for_each_reg(&self, f: &mut dyn FnMut(Reg, u32)) {
-        use Op::*;
-        match *self {
-            Const { d, .. } | Uniform { d, .. } => f(d, 1),
-            Mov { d, a }
-            | Store { d, a }
-            | FNeg { d, a }
-            | INeg { d, a }
-            | Not { d, a }
-            | FToI { d, a }
-            | IToF { d, a }
-            | FToB { d, a }
-            | IToB { d, a }
-            | BToF { d, a }
-            | DdX { d, a }
-            | DdY { d, a }
-            | F1 { d, a, .. } => {
-                f(d, 1);
-                f(a, 1)
-            }
-            FAdd { d, a, b }
-            | FSub { d, a, b }
-            | FMul { d, a, b }
-            | FDiv { d, a, b }
-            | FMac { d, a, b }
-            | F2 { d, a, b, .. }
-            | FLt { d, a, b }
-            | FLe { d, a, b }
-            | FEq { d, a, b }
-            | IAdd { d, a, b }
-            | ISub { d, a, b }
-            | IMul { d, a, b }
-            | IDiv { d, a, b }
-            | ILt { d, a, b }
-            | ILe { d, a, b }
-            | IEq { d, a, b }
-            | And { d, a, b }
-            | Or { d, a, b }
-            | Xor { d, a, b } => {
-                f(d, 1);
-                f(a, 1);
-                f(b, 1)
-            }
-            F3 { d, a, b, c, .. } | Select { d, c, a, b } => {
-                f(d, 1);
-                f(a, 1);
-                f(b, 1);
-                f(c, 1)
-            }
-            ClampIdx { d, a, .. } => {
-                f(d, 1);
-                f(a, 1)
-            }
-            Gather { d, base, off, max } => {
-                f(d, 1);
-                f(off, 1);
-                f(base, max.saturating_add(1))
-            }
-            Scatter { base, off, max, a } => {
-                f(a, 1);
-                f(off, 1);
-                f(base, max.saturating_add(1))
-            }
-            GatherUniform { d, off, .. } => {
-                f(d, 1);
-                f(off, 1)
-            }
-            Noise { d, n, a, dims } => {
-                f(d, n as u32);
-                f(a, dims as u32)
-            }
-            Dot { d, n, a, b } => {
-                f(d, 1);
-                for k in 0..(n as usize).min(4) {
-                    f(a[k], 1);
-                    f(b[k], 1);
-                }
-            }
-            AndMask { c } | AndNotMask { c, .. } => f(c, 1),
-            Texture { .. }
-            | Printf { .. }
-            | SaveMask { .. }
-            | RestoreMask { .. }
-            | JumpIfNone { .. }
-            | Jump { .. }
-            | LoopIter
-            | Kill { .. }
-            | Discard { .. }
-            | Call { .. }
-            | Ret { .. }
-            | SyncDiscard { .. } => {}
+    /// The index of the op it may jump to (a jump, conditional jump or
+    /// call).
+    pub(crate) fn target(&self) -> Option<u32> {
+        let mut op = *self;
+        op.target_mut().copied()
+    }
+
+    /// Whether the op ends a basic block: it may jump, or it returns.
+    pub(crate) fn ends_block(&self) -> bool {
+        self.target().is_some() || matches!(self, Op::Ret { .. })
+    }
+}
+
+/// Per op, and one past the end: whether it starts a basic block (op 0,
+/// every jump or call target and every op after one that ends a block;
+/// the end counts as a start).
+pub(crate) fn leaders(ops: &[Op]) -> Vec<bool> {
+    let n = ops.len();
+    let mut leader = vec![false; n + 1];
+    leader[0] = true;
+    leader[n] = true;
+    for (i, op) in ops.iter().enumerate() {
+        if let Some(t) = op.target() {
+            leader[(t as usize).min(n)] = true;
+        }
+        if op.ends_block() {
+            leader[i + 1] = true;
         }
     }
+    leader
 }
 
 impl Program {
@@ -605,7 +512,7 @@ impl Program {
         };
         let mut bad = None;
         for (i, op) in self.ops.iter().enumerate() {
-            op.for_each_reg(&mut |r, n| {
+            op.for_each_operand(&mut |_, r, n| {
                 if !reg_ok(r, n) && bad.is_none() {
                     bad = Some(format!("op {i} ({op:?}) uses register {r}+{n} of {nregs}"));
                 }
@@ -614,13 +521,7 @@ impl Program {
                 Op::SaveMask { slot } | Op::RestoreMask { slot } | Op::AndNotMask { slot, .. } => {
                     slot < self.mask_slots
                 }
-                Op::JumpIfNone { target } | Op::Jump { target } => {
-                    target as usize <= self.ops.len()
-                }
-                Op::Call { target, slot } => {
-                    target as usize <= self.ops.len() && slot < self.subroutines
-                }
-                Op::Ret { slot } => slot < self.subroutines,
+                Op::Call { slot, .. } | Op::Ret { slot } => slot < self.subroutines,
                 Op::Kill { start, end }
                 | Op::Discard { start, end }
                 | Op::SyncDiscard { start, end } => {
@@ -650,7 +551,8 @@ impl Program {
                 Op::Dot { n, .. } => (1..=4).contains(&n),
                 _ => true,
             };
-            if !ok && bad.is_none() {
+            let target_ok = op.target().is_none_or(|t| t as usize <= self.ops.len());
+            if !(ok && target_ok) && bad.is_none() {
                 bad = Some(format!("op {i} ({op:?}) is out of range"));
             }
         }
@@ -669,28 +571,5 @@ impl Program {
 /// Ops that compute every lane from their register operands alone (no
 /// mask, no other lanes, no ranges), so they may run in the prologue.
 pub(crate) fn pure(op: &Op) -> bool {
-    !matches!(
-        op,
-        Op::Store { .. }
-            | Op::Scatter { .. }
-            | Op::Gather { .. }
-            | Op::Noise { .. }
-            | Op::Texture { .. }
-            | Op::Printf { .. }
-            | Op::DdX { .. }
-            | Op::DdY { .. }
-            | Op::FMac { .. }
-            | Op::SaveMask { .. }
-            | Op::RestoreMask { .. }
-            | Op::AndMask { .. }
-            | Op::AndNotMask { .. }
-            | Op::JumpIfNone { .. }
-            | Op::Jump { .. }
-            | Op::LoopIter
-            | Op::Kill { .. }
-            | Op::Discard { .. }
-            | Op::Call { .. }
-            | Op::Ret { .. }
-            | Op::SyncDiscard { .. }
-    )
+    op.class() == Class::Pure
 }

@@ -26,7 +26,7 @@
 mod mask_flow;
 
 use crate::liveness::{analyze, effects};
-use crate::program::{pure, Op, Program, Reg};
+use crate::program::{leaders, pure, Op, Program, Reg, Role};
 use std::collections::BTreeMap;
 
 /// One instruction of the rewritten program: the op and whether its
@@ -79,149 +79,29 @@ pub(crate) fn unoptimized(p: &Program, live_out: &[Reg]) -> Code {
     }
 }
 
-fn leaders(ops: &[Op]) -> Vec<bool> {
-    let n = ops.len();
-    let mut leader = vec![false; n + 1];
-    leader[0] = true;
-    for (i, op) in ops.iter().enumerate() {
-        match *op {
-            Op::Jump { target } | Op::JumpIfNone { target } | Op::Call { target, .. } => {
-                leader[(target as usize).min(n)] = true;
-                leader[i + 1] = true;
-            }
-            Op::Ret { .. } => leader[i + 1] = true,
-            _ => {}
-        }
-    }
-    leader
-}
-
 /// Replaces the single-register reads of `op` through `f` (ranges, the
 /// accumulator of `FMac` and destinations are left alone). Returns whether
-/// every read register was replaced by one satisfying `is_pool`.
+/// every read register was replaced by one satisfying `is_pool` (for a
+/// pure op, whose reads are all single registers: whether it reads pool
+/// registers only).
 fn map_reads(op: &mut Op, f: &mut dyn FnMut(Reg) -> Reg, is_pool: &dyn Fn(Reg) -> bool) -> bool {
     let mut all = true;
-    let mut m = |r: &mut Reg| {
-        *r = f(*r);
-        all &= is_pool(*r);
-    };
-    use Op::*;
-    match op {
-        Const { .. } | Uniform { .. } => {}
-        Mov { a, .. }
-        | Store { a, .. }
-        | FNeg { a, .. }
-        | INeg { a, .. }
-        | Not { a, .. }
-        | FToI { a, .. }
-        | IToF { a, .. }
-        | FToB { a, .. }
-        | IToB { a, .. }
-        | BToF { a, .. }
-        | DdX { a, .. }
-        | DdY { a, .. }
-        | F1 { a, .. }
-        | ClampIdx { a, .. } => m(a),
-        FAdd { a, b, .. }
-        | FSub { a, b, .. }
-        | FMul { a, b, .. }
-        | FDiv { a, b, .. }
-        | FMac { a, b, .. }
-        | F2 { a, b, .. }
-        | FLt { a, b, .. }
-        | FLe { a, b, .. }
-        | FEq { a, b, .. }
-        | IAdd { a, b, .. }
-        | ISub { a, b, .. }
-        | IMul { a, b, .. }
-        | IDiv { a, b, .. }
-        | ILt { a, b, .. }
-        | ILe { a, b, .. }
-        | IEq { a, b, .. }
-        | And { a, b, .. }
-        | Or { a, b, .. }
-        | Xor { a, b, .. } => {
-            m(a);
-            m(b)
+    op.for_each_single_mut(&mut |role, r| {
+        if role == Role::Read {
+            *r = f(*r);
+            all &= is_pool(*r);
         }
-        F3 { a, b, c, .. } | Select { a, b, c, .. } => {
-            m(a);
-            m(b);
-            m(c)
-        }
-        Dot { n, a, b, .. } => {
-            for k in 0..(*n as usize).min(4) {
-                m(&mut a[k]);
-                m(&mut b[k]);
-            }
-        }
-        Gather { off, .. } | GatherUniform { off, .. } => m(off),
-        Scatter { off, a, .. } => {
-            m(off);
-            m(a)
-        }
-        AndMask { c } | AndNotMask { c, .. } => m(c),
-        Noise { .. } | Texture { .. } => all = false,
-        Printf { .. }
-        | SaveMask { .. }
-        | RestoreMask { .. }
-        | JumpIfNone { .. }
-        | Jump { .. }
-        | LoopIter
-        | Kill { .. }
-        | Discard { .. }
-        | Call { .. }
-        | Ret { .. }
-        | SyncDiscard { .. } => {}
-    }
+    });
     all
 }
 
+/// Makes `to` the single destination register of `op` (if it has one).
 fn set_dest(op: &mut Op, to: Reg) {
-    use Op::*;
-    match op {
-        Const { d, .. }
-        | Mov { d, .. }
-        | Store { d, .. }
-        | Uniform { d, .. }
-        | FAdd { d, .. }
-        | FSub { d, .. }
-        | FMul { d, .. }
-        | FDiv { d, .. }
-        | FNeg { d, .. }
-        | FMac { d, .. }
-        | Dot { d, .. }
-        | F1 { d, .. }
-        | F2 { d, .. }
-        | F3 { d, .. }
-        | FLt { d, .. }
-        | FLe { d, .. }
-        | FEq { d, .. }
-        | IAdd { d, .. }
-        | ISub { d, .. }
-        | IMul { d, .. }
-        | IDiv { d, .. }
-        | INeg { d, .. }
-        | ILt { d, .. }
-        | ILe { d, .. }
-        | IEq { d, .. }
-        | And { d, .. }
-        | Or { d, .. }
-        | Xor { d, .. }
-        | Not { d, .. }
-        | FToI { d, .. }
-        | IToF { d, .. }
-        | FToB { d, .. }
-        | IToB { d, .. }
-        | BToF { d, .. }
-        | Select { d, .. }
-        | ClampIdx { d, .. }
-        | Gather { d, .. }
-        | GatherUniform { d, .. }
-        | DdX { d, .. }
-        | DdY { d, .. } => *d = to,
-        _ => {}
-    }
+    op.for_each_single_mut(&mut |role, r| {
+        if role != Role::Read {
+            *r = to;
+        }
+    });
 }
 
 /// The single full destination of a plain data op.
@@ -347,19 +227,10 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
         if !keep[i] {
             continue;
         }
-        let mut op = match ops[i] {
-            Op::Jump { target } => Op::Jump {
-                target: remap(target),
-            },
-            Op::JumpIfNone { target } => Op::JumpIfNone {
-                target: remap(target),
-            },
-            Op::Call { target, slot } => Op::Call {
-                target: remap(target),
-                slot,
-            },
-            other => other,
-        };
+        let mut op = ops[i];
+        if let Some(t) = op.target_mut() {
+            *t = remap(*t);
+        }
         let masked = match new_dest[i] {
             Some((v, masked)) => {
                 set_dest(&mut op, v);

@@ -5,6 +5,7 @@
 
 use super::super::{jit_step, math_helpers, Ctx, F1_CALLED, F2_CALLED};
 use super::{mem, Emit, ONE, QUARTERS, SIGN};
+use crate::lane::match_op;
 use crate::opt::Ins;
 use crate::program::{Op, Reg};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
@@ -257,6 +258,45 @@ impl<'a, 'b> Emit<'a, 'b> {
         self.ftz(r)
     }
 
+    /// `-x` (`FNeg`): the sign bit flipped.
+    fn fneg(&mut self, x: Value) -> Value {
+        let s = self.splat(SIGN);
+        self.b.ins().bxor(x, s)
+    }
+
+    fn ineg(&mut self, x: Value) -> Value {
+        self.b.ins().ineg(x)
+    }
+
+    /// `x == 0` as 0/1 (`Not`).
+    fn not01(&mut self, x: Value) -> Value {
+        let z = self.is_zero(x);
+        self.bool01(z)
+    }
+
+    fn ftoi(&mut self, x: Value) -> Value {
+        self.b.ins().fcvt_to_sint_sat(I32X4, x)
+    }
+
+    fn itof(&mut self, x: Value) -> Value {
+        let f = self.b.ins().fcvt_from_sint(F32X4, x);
+        self.iv(f)
+    }
+
+    /// `x != 0.0` as 0/1 (`FToB`; true for NaN, as in Rust).
+    fn ftob(&mut self, x: Value) -> Value {
+        let zero = self.fconst(0.0);
+        let c = self.b.ins().fcmp(FloatCC::NotEqual, x, zero);
+        self.bool01(c)
+    }
+
+    /// 1.0 for a nonzero `x`, else 0.0 (`BToF`).
+    fn btof(&mut self, x: Value) -> Value {
+        let z = self.is_zero(x);
+        let one = self.splat(ONE);
+        self.b.ins().band_not(one, z)
+    }
+
     /// A data op (no control flow); `index`: its index for `jit_step`.
     pub(super) fn data(&mut self, ins: &Ins, index: u32) -> Result<(), String> {
         let m = ins.masked;
@@ -320,7 +360,36 @@ impl<'a, 'b> Emit<'a, 'b> {
                 })
             };
         }
-        match ins.op {
+        // The lane-wise ops whose column names a method of `Emit`.
+        macro_rules! un_ins {
+            ($d:expr, $a:expr, $load:ident, $method:ident) => {
+                each!($d, |q| {
+                    let x = self.$load($a, q);
+                    self.$method(x)
+                })
+            };
+        }
+        macro_rules! call_step {
+            () => {
+                self.call_step(index)
+            };
+        }
+        macro_rules! clamp_idx {
+            ($d:expr, $a:expr, $max:expr, $stride:expr) => {
+                if $max <= i32::MAX as u32 {
+                    each!($d, |q| {
+                        let x = self.ld($a, q);
+                        let (lo, hi, s) = (self.splat(0), self.splat($max), self.splat($stride));
+                        let x = self.b.ins().smax(x, lo);
+                        let x = self.b.ins().smin(x, hi);
+                        self.b.ins().imul(x, s)
+                    })
+                } else {
+                    self.call_step(index)
+                }
+            };
+        }
+        match_op!(jit match ins.op {
             Op::Const { d, bits } => each!(d, |q| self.splat(bits)),
             Op::Mov { d, a } => each!(d, |q| self.ld(a, q)),
             Op::Store { d, a } => {
@@ -329,15 +398,6 @@ impl<'a, 'b> Emit<'a, 'b> {
                     self.put(d, q, v, true);
                 }
             }
-            Op::FAdd { d, a, b } => fbin!(d, a, b, fadd),
-            Op::FSub { d, a, b } => fbin!(d, a, b, fsub),
-            Op::FMul { d, a, b } => fbin!(d, a, b, fmul),
-            Op::FDiv { d, a, b } => fbin!(d, a, b, fdiv),
-            Op::FNeg { d, a } => each!(d, |q| {
-                let x = self.ld(a, q);
-                let s = self.splat(SIGN);
-                self.b.ins().bxor(x, s)
-            }),
             Op::FMac { d, a, b } => each!(d, |q| {
                 let (x, y, acc) = (self.ldf(a, q), self.ldf(b, q), self.ldf(d, q));
                 let p = self.b.ins().fmul(x, y);
@@ -374,64 +434,10 @@ impl<'a, 'b> Emit<'a, 'b> {
                 let (x, y, z) = (self.ldf(a, q), self.ldf(b, q), self.ldf(c, q));
                 self.f3(f, x, y, z)
             }),
-            Op::FLt { d, a, b } => fcmp!(d, a, b, FloatCC::LessThan),
-            Op::FLe { d, a, b } => fcmp!(d, a, b, FloatCC::LessThanOrEqual),
-            Op::FEq { d, a, b } => fcmp!(d, a, b, FloatCC::Equal),
-            Op::IAdd { d, a, b } => ibin!(d, a, b, iadd),
-            Op::ISub { d, a, b } => ibin!(d, a, b, isub),
-            Op::IMul { d, a, b } => ibin!(d, a, b, imul),
-            Op::INeg { d, a } => each!(d, |q| {
-                let x = self.ld(a, q);
-                self.b.ins().ineg(x)
-            }),
-            Op::ILt { d, a, b } => icmp!(d, a, b, IntCC::SignedLessThan),
-            Op::ILe { d, a, b } => icmp!(d, a, b, IntCC::SignedLessThanOrEqual),
-            Op::IEq { d, a, b } => icmp!(d, a, b, IntCC::Equal),
-            Op::And { d, a, b } => logic!(d, a, b, bor, true),
-            Op::Or { d, a, b } => logic!(d, a, b, band, true),
-            Op::Xor { d, a, b } => logic!(d, a, b, bxor, false),
-            Op::Not { d, a } => each!(d, |q| {
-                let x = self.ld(a, q);
-                let z = self.is_zero(x);
-                self.bool01(z)
-            }),
-            Op::FToI { d, a } => each!(d, |q| {
-                let x = self.ldf(a, q);
-                self.b.ins().fcvt_to_sint_sat(I32X4, x)
-            }),
-            Op::IToF { d, a } => each!(d, |q| {
-                let x = self.ld(a, q);
-                let f = self.b.ins().fcvt_from_sint(F32X4, x);
-                self.iv(f)
-            }),
-            Op::FToB { d, a } => each!(d, |q| {
-                let x = self.ldf(a, q);
-                let zero = self.fconst(0.0);
-                // `!=` is true for NaN, as in Rust.
-                let c = self.b.ins().fcmp(FloatCC::NotEqual, x, zero);
-                self.bool01(c)
-            }),
-            Op::IToB { d, a } => each!(d, |q| {
-                let x = self.ld(a, q);
-                self.bool_of(x)
-            }),
-            Op::BToF { d, a } => each!(d, |q| {
-                let x = self.ld(a, q);
-                let z = self.is_zero(x);
-                let one = self.splat(ONE);
-                self.b.ins().band_not(one, z)
-            }),
             Op::Select { d, c, a, b } => each!(d, |q| {
                 let (cv, x, y) = (self.ld(c, q), self.ld(a, q), self.ld(b, q));
                 let z = self.is_zero(cv);
                 self.b.ins().bitselect(z, y, x)
-            }),
-            Op::ClampIdx { d, a, max, stride } if max <= i32::MAX as u32 => each!(d, |q| {
-                let x = self.ld(a, q);
-                let (lo, hi, s) = (self.splat(0), self.splat(max), self.splat(stride));
-                let x = self.b.ins().smax(x, lo);
-                let x = self.b.ins().smin(x, hi);
-                self.b.ins().imul(x, s)
             }),
             Op::Uniform { d, word, float } => {
                 let v = self.uniform_word(word);
@@ -473,10 +479,10 @@ impl<'a, 'b> Emit<'a, 'b> {
             | Op::SyncDiscard { .. } => {
                 return Err(format!("control op {:?} where data was expected", ins.op))
             }
-            // Integer division, gathers, scatters, uniform reads outside
-            // the prologue, derivatives, noise, texture lookups.
+            // Uniform reads out of the prologue's range, noise, texture
+            // lookups.
             _ => self.call_step(index),
-        }
+        });
         Ok(())
     }
 }
