@@ -4,9 +4,9 @@
 //!
 //! Basic blocks end at jumps, conditional jumps, subroutine calls and
 //! returns; the analysis iterates to a fixpoint (loops, subroutine
-//! returns) over a worklist of the blocks whose successors changed. Control-flow ops
-//! (mask bookkeeping, jumps, loop counting, `discard`, calls) are always
-//! needed, with the registers they read; a data op is needed when it writes
+//! returns) over a worklist of the blocks whose successors changed.
+//! Control-flow ops (mask bookkeeping, jumps, loop counting, `discard`,
+//! calls) are always needed, with the registers they read; a data op is needed when it writes
 //! a register that is live after it. Ops that write every lane kill their
 //! destinations; masked writes (`Store`, `Scatter`) do not (the other lanes
 //! keep the old value). Dropping the unneeded ops leaves every needed op
