@@ -86,28 +86,10 @@ fn blend_eq(e: u32) -> raster::BlendEquation {
 }
 
 fn logic_op(op: u32) -> raster::LogicOp {
-    use raster::LogicOp::*;
-    [
-        Clear,
-        And,
-        AndReverse,
-        Copy,
-        AndInverted,
-        Noop,
-        Xor,
-        Or,
-        Nor,
-        Equiv,
-        Invert,
-        OrReverse,
-        CopyInverted,
-        OrInverted,
-        Nand,
-        Set,
-    ]
-    .get(op.wrapping_sub(GL_CLEAR) as usize)
-    .copied()
-    .unwrap_or(Copy)
+    raster::LogicOp::ALL
+        .get(op.wrapping_sub(GL_CLEAR) as usize)
+        .copied()
+        .unwrap_or(raster::LogicOp::Copy)
 }
 
 pub(crate) fn rect(r: [i32; 4]) -> raster::Rect {

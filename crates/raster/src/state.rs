@@ -197,6 +197,27 @@ pub enum LogicOp {
 }
 
 impl LogicOp {
+    /// Every operation in the order of their GL enums (GL_CLEAR ...
+    /// GL_SET are consecutive).
+    pub const ALL: [LogicOp; 16] = [
+        LogicOp::Clear,
+        LogicOp::And,
+        LogicOp::AndReverse,
+        LogicOp::Copy,
+        LogicOp::AndInverted,
+        LogicOp::Noop,
+        LogicOp::Xor,
+        LogicOp::Or,
+        LogicOp::Nor,
+        LogicOp::Equiv,
+        LogicOp::Invert,
+        LogicOp::OrReverse,
+        LogicOp::CopyInverted,
+        LogicOp::OrInverted,
+        LogicOp::Nand,
+        LogicOp::Set,
+    ];
+
     /// `s op d` on bits.
     pub fn apply(self, s: u8, d: u8) -> u8 {
         match self {
