@@ -862,7 +862,12 @@ impl<'a> FragmentStage<'a> {
                     self.shader
                         .run_probed(batch, self.uniforms, self.textures, lane, &mut r);
                 r.finish(batch, lane, result.as_ref().err());
-                result?;
+                if let Err(e) = result {
+                    // The failing invocation is kept: it is often the one
+                    // being debugged, and its trace shows where it looped.
+                    p.push(r);
+                    return Err(e);
+                }
                 record = Some((p, lane, r));
             }
             None => {
