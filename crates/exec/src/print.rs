@@ -1,10 +1,10 @@
 //! Text listings of a kernel's programs, for snapshot tests and for
 //! reading what lowering and the executor's rewrite made of a shader:
-//! [`Kernel::print_lowered`] (the [`Program`] as lowered, which the
+//! [`Kernel::print_lowered`] (the program as lowered, which the
 //! reference interpreter and `run_traced` run) and
-//! [`Kernel::print_rewritten`] (the program the executor runs, after
-//! the `engine` rewrite: hoisting into the prologue, dead code, store
-//! fusion).
+//! [`Kernel::print_rewritten`] (the program the executor runs, after the
+//! optimizer's rewrite, `opt`: hoisting into the prologue, dead code,
+//! store fusion).
 //!
 //! Both listings start with the same header and interface:
 //!

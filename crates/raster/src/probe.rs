@@ -95,10 +95,10 @@ pub struct DrawProbe {
     pub vertex_prints: Vec<(u32, Span, String)>,
     /// The pixel after the draw.
     pub after: PixelState,
-    /// The traced vertex ([`ProbeRequest::vertex`]).
+    /// The traced vertex ([`crate::ProbeRequest::vertex`]).
     pub vertex: Option<VertexProbe>,
     /// Window-space (x, y) corners of every primitive set up for
-    /// rasterization (after clipping), when [`ProbeRequest::outlines`].
+    /// rasterization (after clipping), when [`crate::ProbeRequest::outlines`].
     pub outlines: Vec<Vec<[f64; 2]>>,
 }
 

@@ -22,7 +22,7 @@ pub const MAX_THREADS: usize = 256;
 /// The threads a draw runs on: 1 = inline on the calling thread (no pool);
 /// more = a rayon pool of that many threads, built at the first parallel
 /// use and kept for later draws. It also keeps the draws' big buffers
-/// ([`Spare`]) from one draw to the next: it is the object a caller keeps
+/// (`spare::Spare`) from one draw to the next: it is the object a caller keeps
 /// across draws.
 pub struct Workers {
     threads: usize,
