@@ -122,11 +122,15 @@ impl Level {
     }
 
     /// The highest level this CPU runs.
+    #[inline]
     pub fn best() -> Level {
-        [Level::Avx512, Level::Avx2]
-            .into_iter()
-            .find(|l| l.supported())
-            .unwrap_or(Level::Portable)
+        if Level::Avx512.supported() {
+            Level::Avx512
+        } else if Level::Avx2.supported() {
+            Level::Avx2
+        } else {
+            Level::Portable
+        }
     }
 
     /// Every level this CPU runs, the portable one (the tests' oracle)
