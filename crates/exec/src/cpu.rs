@@ -5,25 +5,24 @@
 //! read with one atomic load ([`supports`] with a [`Features`] set). It is
 //! this module's alone. Other targets support none of them.
 //!
-//! The levels: every SIMD variant of every crate (the executor's
-//! interpreter and math callbacks, [`crate::lanes16`], the rasterizer's
-//! set-up, shading loops, fragment operations and texture fast path,
-//! `gl`'s fixed-function fragment stage) is compiled for one [`Level`]:
-//! the baseline target, AVX2 or AVX-512, each with ONE feature set
-//! ([`Level::features`], and the same set as `#[target_feature]` string
-//! in [`compiled_for!`]). The sets are what the variants need together
-//! (AVX2 with FMA and the bit-count instructions every AVX2 CPU has;
-//! AVX-512 F/BW/DQ/VL on top). Enabling FMA changes no bits: Rust never
-//! contracts `a * b + c` into a fused operation, and nothing here calls
-//! `mul_add`, so every level computes the same IEEE operations and the
-//! portable level is the oracle of the tests.
+//! The levels: every SIMD variant of every crate (the executor's interpreter
+//! and math callbacks, [`crate::lanes16`], the rasterizer's set-up, shading
+//! loops, fragment operations and texture fast path, `gl`'s fixed-function
+//! fragment stage) is compiled for one [`Level`]: the baseline target, AVX2 or
+//! AVX-512, each with ONE feature set ([`Level::features`], and the same set as
+//! `#[target_feature]` string in [`compiled_for!`](crate::compiled_for)). The
+//! sets are what the variants need together (AVX2 with FMA and the bit-count
+//! instructions every AVX2 CPU has; AVX-512 F/BW/DQ/VL on top). Enabling FMA
+//! changes no bits: Rust never contracts `a * b + c` into a fused operation,
+//! and nothing here calls `mul_add`, so every level computes the same IEEE
+//! operations and the portable level is the oracle of the tests.
 //!
-//! The dispatch: [`multiversion!`] writes a function once (a body
-//! `#[inline(always)]` into each level's copy) and generates the
-//! `#[target_feature]` copies and the `match` on a [`Level`] that calls
-//! them. Who chooses the level is the caller's policy (the executor's
-//! [`crate::Variant`], the rasterizer's `SHADERBOX_RASTER_ISA`), never a
-//! second detection.
+//! The dispatch: [`multiversion!`](crate::multiversion) writes a function once
+//! (a body `#[inline(always)]` into each level's copy) and generates the
+//! `#[target_feature]` copies and the `match` on a [`Level`] that calls them.
+//! Who chooses the level is the caller's policy (the executor's
+//! [`crate::Variant`], the rasterizer's `SHADERBOX_RASTER_ISA`), never a second
+//! detection.
 
 use std::sync::atomic::{AtomicU32, Ordering};
 
@@ -62,14 +61,16 @@ pub enum Level {
     Avx512,
 }
 
-/// [`Level::Avx2`]'s features (the string in [`compiled_for!`]).
+/// [`Level::Avx2`]'s features (the string in
+/// [`compiled_for!`](crate::compiled_for)).
 const AVX2_FEATURES: Features = Features::AVX2
     .and(Features::FMA)
     .and(Features::POPCNT)
     .and(Features::BMI1)
     .and(Features::LZCNT);
 
-/// [`Level::Avx512`]'s features (the string in [`compiled_for!`]).
+/// [`Level::Avx512`]'s features (the string in
+/// [`compiled_for!`](crate::compiled_for)).
 const AVX512_FEATURES: Features = AVX2_FEATURES
     .and(Features::AVX512F)
     .and(Features::AVX512BW)
@@ -187,16 +188,16 @@ macro_rules! compiled_for {
 /// ```
 ///
 /// generates the three copies (`sum_portable` plain and `#[inline(never)]`,
-/// `sum_avx2` and `sum_avx512` through [`compiled_for!`]), each calling the
-/// body (an `#[inline(always)]` function, so that it is compiled into each
-/// copy with the copy's features), and `sum`, which calls the copy of the
-/// `level` expression when the CPU runs it ([`Level::supported`], one
-/// atomic load), else the portable one: a caller cannot run a level the
-/// CPU lacks. Methods take `&self` first (`level = self.level` then reads
-/// a field); a first parameter marked `#[level]` is the level itself and
-/// is not passed to the copies; lifetimes go in `<..>`. When the levels'
-/// bodies differ (a generic over [`crate::lanes16`]'s types), `body = {
-/// portable: .., avx2: .., avx512: .. }` gives one each; those bodies may
+/// `sum_avx2` and `sum_avx512` through [`compiled_for!`](crate::compiled_for)),
+/// each calling the body (an `#[inline(always)]` function, so that it is
+/// compiled into each copy with the copy's features), and `sum`, which calls
+/// the copy of the `level` expression when the CPU runs it
+/// ([`Level::supported`], one atomic load), else the portable one: a caller
+/// cannot run a level the CPU lacks. Methods take `&self` first (`level =
+/// self.level` then reads a field); a first parameter marked `#[level]` is the
+/// level itself and is not passed to the copies; lifetimes go in `<..>`. When
+/// the levels' bodies differ (a generic over [`crate::lanes16`]'s types), `body
+/// = { portable: .., avx2: .., avx512: .. }` gives one each; those bodies may
 /// use the `unsafe` operations the copy's level allows.
 ///
 /// Why a macro rather than the `multiversion` or `pulp` crates: both
@@ -206,9 +207,12 @@ macro_rules! compiled_for {
 /// against the portable oracle); `multiversion` does not take methods
 /// (`self`), and `pulp` has its own levels (`V3`, `V4`) with their own
 /// feature sets and dispatches through a `WithSimd` value per call site.
-/// The macro expands to the wrappers the crates had written by hand (the
-/// copies' symbols in a release build keep their sizes, up to the
-/// feature-set union), so it costs nothing the hand-written code did not.
+/// The macro expands to the wrappers the crates had written by hand (in
+/// a release build the copies kept the byte sizes of the wrappers they
+/// replaced where the feature set's union changed no code), so it costs
+/// nothing the hand-written code did not but the `supported` check: one
+/// relaxed load per call, which makes a safe dispatch sound whatever
+/// level it is given.
 #[macro_export]
 macro_rules! multiversion {
     // A method: `level` an expression (of `self`).

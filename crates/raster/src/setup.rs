@@ -142,8 +142,8 @@ impl<'a> Setup<'a> {
 impl Setup<'_> {
     /// Assembles and sets up primitives `range` of the draw (`vertex_of`:
     /// the vertex at each position of the index list) into `out`, in
-    /// order. Triangles and quads take [`Setup::polygon`] (its AVX2
-    /// build when `isa` allows), except under the debugger's probe, which
+    /// order. Triangles and quads take [`Setup::polygon_at`] (the copy of
+    /// `level`), except under the debugger's probe, which
     /// notes each assembled primitive.
     #[inline(always)]
     pub fn chunk(
@@ -152,7 +152,7 @@ impl Setup<'_> {
         mode: Mode,
         vertex_of: &[u32],
         range: Range<usize>,
-        isa: Level,
+        level: Level,
     ) {
         let probe = self.probe;
         let count = vertex_of.len();
@@ -162,7 +162,7 @@ impl Setup<'_> {
             if probe.is_none() {
                 if let Some((vs, n, prov)) = small_polygon(mode, k) {
                     let vs = vs.map(v);
-                    self.polygon_at(isa, out, &vs[..n], v(prov));
+                    self.polygon_at(level, out, &vs[..n], v(prov));
                     continue;
                 }
             }
