@@ -6,9 +6,7 @@
 //! It sits above the executors so that they need not know of each other
 //! or of the variant selection.
 
-#[cfg(target_arch = "x86_64")]
-use crate::engine::{run_avx2, run_avx512};
-use crate::engine::{run_in, Lanes};
+use crate::engine::{run_at, Lanes};
 use crate::opt::Code;
 use crate::{Batch, ExecError, Kernel, Textures};
 use std::cell::RefCell;
@@ -87,18 +85,15 @@ pub(crate) fn run_on(
         if let Some(n) = native {
             return crate::jit::run(n, k, code, file, batch, uniforms, textures, pool);
         }
-        match variant {
-            #[cfg(target_arch = "x86_64")]
-            crate::Variant::Avx512 => {
-                // SAFETY: checked supported above.
-                unsafe { run_avx512(k, code, file, batch, uniforms, textures, pool) }
-            }
-            #[cfg(target_arch = "x86_64")]
-            crate::Variant::Avx2 => {
-                // SAFETY: as above.
-                unsafe { run_avx2(k, code, file, batch, uniforms, textures, pool) }
-            }
-            _ => run_in(k, code, file, batch, uniforms, textures, pool),
-        }
+        run_at(
+            variant.level(),
+            k,
+            code,
+            file,
+            batch,
+            uniforms,
+            textures,
+            pool,
+        )
     })
 }

@@ -1,8 +1,9 @@
 //! The interpreter: runs an optimized program ([`Code`], made by
 //! [`crate::opt`]) over a register file reused per thread, one op at a
 //! time over all 16 lanes ([`step`]), compiled once per CPU variant
-//! (baseline, AVX2, AVX-512: [`run_in`] and its `#[target_feature]`
-//! copies; which one runs is chosen by [`crate::dispatch`]).
+//! (each [`crate::cpu::Level`]: [`run_in`] and its copies by
+//! [`crate::multiversion!`], [`run_at`]; which one runs is chosen by
+//! [`crate::dispatch`]).
 //!
 //! Also what native code (`jit`) shares with it: loading a run's inputs
 //! and pool ([`load`]), copying its outputs ([`store_outputs`]), the
@@ -104,40 +105,22 @@ struct State<'a> {
     iterations: &'a mut u64,
 }
 
-/// [`run_in`] compiled for AVX2.
-///
-/// # Safety
-/// The CPU must support AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-pub(crate) unsafe fn run_avx2(
-    k: &Kernel,
-    code: &Code,
-    file: &mut Vec<Lanes>,
-    batch: &mut Batch,
-    uniforms: &[u32],
-    textures: &dyn Textures,
-    pool: Option<&[Lanes]>,
-) -> Result<(), ExecError> {
-    run_in(k, code, file, batch, uniforms, textures, pool)
-}
-
-/// [`run_in`] compiled for AVX-512 (F, BW, DQ, VL).
-///
-/// # Safety
-/// The CPU must support those AVX-512 subsets.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2")]
-pub(crate) unsafe fn run_avx512(
-    k: &Kernel,
-    code: &Code,
-    file: &mut Vec<Lanes>,
-    batch: &mut Batch,
-    uniforms: &[u32],
-    textures: &dyn Textures,
-    pool: Option<&[Lanes]>,
-) -> Result<(), ExecError> {
-    run_in(k, code, file, batch, uniforms, textures, pool)
+crate::multiversion! {
+    /// [`run_in`] compiled for `level` (its copies `run_portable`,
+    /// `run_avx2`, `run_avx512`); the portable one when the CPU lacks it.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn run_at(
+        #[level] level: crate::cpu::Level,
+        k: &Kernel,
+        code: &Code,
+        file: &mut Vec<Lanes>,
+        batch: &mut Batch,
+        uniforms: &[u32],
+        textures: &dyn Textures,
+        pool: Option<&[Lanes]>,
+    ) -> Result<(), ExecError>;
+    copies = [run_portable, run_avx2, run_avx512],
+    body = run_in(k, code, file, batch, uniforms, textures, pool)
 }
 
 /// The interpreter proper; inlined into each CPU variant, which compile
@@ -226,33 +209,21 @@ pub(crate) fn load(
 /// conversions and the flush of subnormal float inputs (integer selects):
 /// compiled for the widest vectors the CPU has, the same values.
 pub(crate) fn load_inputs(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batch) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        use crate::cpu::{supports, Features};
-        if supports(Features::AVX512F) {
-            // SAFETY: the CPU has AVX-512 F.
-            return unsafe { load_inputs_avx512(k, code, file, batch) };
-        }
-        if supports(Features::AVX2) {
-            // SAFETY: the CPU has AVX2.
-            return unsafe { load_inputs_avx2(k, code, file, batch) };
-        }
-    }
-    load_inputs_with(k, code, file, batch)
+    load_inputs_at(crate::cpu::Level::best(), k, code, file, batch)
 }
 
-/// [`load_inputs_with`] compiled for AVX2 (a register in two stores).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn load_inputs_avx2(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batch) {
-    load_inputs_with(k, code, file, batch)
-}
-
-/// [`load_inputs_with`] compiled for AVX-512 (a register in one store).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,avx512f")]
-unsafe fn load_inputs_avx512(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batch) {
-    load_inputs_with(k, code, file, batch)
+crate::multiversion! {
+    /// [`load_inputs_with`] at `level` (AVX2: a register in two stores;
+    /// AVX-512: in one).
+    fn load_inputs_at(
+        #[level] level: crate::cpu::Level,
+        k: &Kernel,
+        code: &Code,
+        file: &mut Vec<Lanes>,
+        batch: &Batch,
+    );
+    copies = [load_inputs_portable, load_inputs_avx2, load_inputs_avx512],
+    body = load_inputs_with(k, code, file, batch)
 }
 
 #[inline(always)]
@@ -286,34 +257,20 @@ fn load_inputs_with(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batc
 
 /// Copies the output registers of the active lanes into `batch.outputs`.
 pub(crate) fn store_outputs(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        use crate::cpu::{supports, Features};
-        if supports(Features::AVX512F) {
-            // SAFETY: the CPU has AVX-512 F.
-            return unsafe { store_outputs_avx512(k, file, batch) };
-        }
-        if supports(Features::AVX2) {
-            // SAFETY: the CPU has AVX2.
-            return unsafe { store_outputs_avx2(k, file, batch) };
-        }
-    }
-    store_outputs_with(k, file, batch)
+    store_outputs_at(crate::cpu::Level::best(), k, file, batch)
 }
 
-/// [`store_outputs_with`] compiled for AVX2 (integer selects only: the
-/// same bits).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn store_outputs_avx2(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
-    store_outputs_with(k, file, batch)
-}
-
-/// [`store_outputs_with`] compiled for AVX-512.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,avx512f")]
-unsafe fn store_outputs_avx512(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
-    store_outputs_with(k, file, batch)
+crate::multiversion! {
+    /// [`store_outputs_with`] at `level` (integer selects only: the same
+    /// bits).
+    fn store_outputs_at(
+        #[level] level: crate::cpu::Level,
+        k: &Kernel,
+        file: &[Lanes],
+        batch: &mut Batch,
+    );
+    copies = [store_outputs_portable, store_outputs_avx2, store_outputs_avx512],
+    body = store_outputs_with(k, file, batch)
 }
 
 #[inline(always)]

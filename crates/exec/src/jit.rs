@@ -457,64 +457,55 @@ unsafe extern "C" fn jit_f2(func: u32, out: *mut Lanes, a: *const Lanes, b: *con
     }
 }
 
-/// [`jit_f1`] and [`jit_f2`] compiled for an x86-64 feature set:
+/// [`jit_f1`] and [`jit_f2`] compiled for a [`crate::cpu::Level`]:
 /// `engine::f1`/`f2`'s lane loops over the branch-free `glsl::math`
 /// functions vectorize wider there (Rust never contracts into fused
-/// multiply-adds, so the bits are those of the baseline build).
+/// multiply-adds, so the bits are those of the baseline build). Native
+/// code calls them through pointers, so they are copies without a
+/// dispatch ([`crate::compiled_for!`]).
 #[cfg(target_arch = "x86_64")]
 macro_rules! math_helpers_for {
-    ($features:literal, $f1:ident, $f2:ident) => {
-        /// # Safety
-        /// As for [`jit_f1`], and the CPU must have the target features.
-        #[target_feature(enable = $features)]
-        unsafe extern "C" fn $f1(func: u32, out: *mut Lanes, a: *const Lanes) {
-            if let Some(&f) = F1_CALLED.get(func as usize) {
-                *out = float_env::callback(daz(), || engine::f1(f, &engine::flushed(&*a)));
+    ($level:ident, $f1:ident, $f2:ident) => {
+        crate::compiled_for!(
+            $level,
+            /// # Safety
+            /// As for [`jit_f1`], and the CPU must run the level.
+            unsafe extern "C" fn $f1(func: u32, out: *mut Lanes, a: *const Lanes) {
+                if let Some(&f) = F1_CALLED.get(func as usize) {
+                    *out = float_env::callback(daz(), || engine::f1(f, &engine::flushed(&*a)));
+                }
             }
-        }
+        );
 
-        /// # Safety
-        /// As for [`jit_f2`], and the CPU must have the target features.
-        #[target_feature(enable = $features)]
-        unsafe extern "C" fn $f2(func: u32, out: *mut Lanes, a: *const Lanes, b: *const Lanes) {
-            if let Some(&f) = F2_CALLED.get(func as usize) {
-                *out = float_env::callback(daz(), || {
-                    engine::f2(f, &engine::flushed(&*a), &engine::flushed(&*b))
-                });
+        crate::compiled_for!(
+            $level,
+            /// # Safety
+            /// As for [`jit_f2`], and the CPU must run the level.
+            unsafe extern "C" fn $f2(func: u32, out: *mut Lanes, a: *const Lanes, b: *const Lanes) {
+                if let Some(&f) = F2_CALLED.get(func as usize) {
+                    *out = float_env::callback(daz(), || {
+                        engine::f2(f, &engine::flushed(&*a), &engine::flushed(&*b))
+                    });
+                }
             }
-        }
+        );
     };
 }
 #[cfg(target_arch = "x86_64")]
-math_helpers_for!("avx2", jit_f1_avx2, jit_f2_avx2);
+math_helpers_for!(avx2, jit_f1_avx2, jit_f2_avx2);
 #[cfg(target_arch = "x86_64")]
-math_helpers_for!(
-    "avx512f,avx512bw,avx512dq,avx512vl,avx2",
-    jit_f1_avx512,
-    jit_f2_avx512
-);
+math_helpers_for!(avx512, jit_f1_avx512, jit_f2_avx512);
 
-/// The math helpers native code calls: the widest build the CPU runs
-/// (AVX-512: 16 lanes of `f64` are two 512-bit registers instead of four
-/// 256-bit ones, so it takes less time per batch than AVX2), else
-/// the baseline one.
+/// The math helpers native code calls: those of the highest level the CPU
+/// runs (AVX-512: 16 lanes of `f64` are two 512-bit registers instead of
+/// four 256-bit ones, so it takes less time per batch than AVX2).
 fn math_helpers() -> (*const (), *const ()) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        use crate::cpu::{supports, Features};
-        // The features each build is compiled with (its `target_feature`).
-        if supports(
-            Features::AVX512F
-                .and(Features::AVX512BW)
-                .and(Features::AVX512DQ)
-                .and(Features::AVX512VL)
-                .and(Features::AVX2),
-        ) {
-            return (jit_f1_avx512 as *const (), jit_f2_avx512 as *const ());
-        }
-        if supports(Features::AVX2) {
-            return (jit_f1_avx2 as *const (), jit_f2_avx2 as *const ());
-        }
+    use crate::cpu::Level;
+    match Level::best() {
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => (jit_f1_avx512 as *const (), jit_f2_avx512 as *const ()),
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 => (jit_f1_avx2 as *const (), jit_f2_avx2 as *const ()),
+        _ => (jit_f1 as *const (), jit_f2 as *const ()),
     }
-    (jit_f1 as *const (), jit_f2 as *const ())
 }

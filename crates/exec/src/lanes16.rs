@@ -14,26 +14,17 @@
 //! exceptions, conversions truncate).
 //!
 //! The methods are `unsafe`: the CPU must have the set
-//! ([`Lanes16::supported`]: AVX-512 F, BW, DQ, VL, AVX2 and FMA for
-//! [`X512`]; AVX2 and FMA for [`X256`]; code calling only methods of a
-//! subset may require just that, as raster's strip write does) and they
-//! must be inlined into code compiled for it (they are
-//! `#[inline(always)]`; a closure calling them is compiled without the
-//! features, so callers use loops and functions, never closures).
+//! ([`Lanes16::supported`]: [`Level::Avx512`] for [`X512`],
+//! [`Level::Avx2`] for [`X256`]) and they must be inlined into code
+//! compiled for that level (they are `#[inline(always)]`; callers are the
+//! copies of [`crate::multiversion!`]; a closure calling them is compiled
+//! without the features, so callers use loops and functions, never
+//! closures).
 
 #![allow(clippy::missing_safety_doc)]
 
-use crate::cpu::{supports, Features};
+use crate::cpu::Level;
 use std::arch::x86_64::*;
-
-/// The features [`X256`] is compiled with.
-const X256_FEATURES: Features = Features::AVX2.and(Features::FMA);
-/// The features [`X512`] is compiled with.
-const X512_FEATURES: Features = X256_FEATURES
-    .and(Features::AVX512F)
-    .and(Features::AVX512BW)
-    .and(Features::AVX512DQ)
-    .and(Features::AVX512VL);
 
 /// Sixteen lanes of f32 ([`Lanes16::F`]), i32 ([`Lanes16::I`]) and
 /// lane masks ([`Lanes16::M`]); see the module documentation.
@@ -149,7 +140,7 @@ impl Lanes16 for X512 {
 
     #[inline]
     fn supported() -> bool {
-        supports(X512_FEATURES)
+        Level::Avx512.supported()
     }
 
     #[inline(always)]
@@ -515,7 +506,7 @@ impl Lanes16 for X256 {
 
     #[inline]
     fn supported() -> bool {
-        supports(X256_FEATURES)
+        Level::Avx2.supported()
     }
 
     #[inline(always)]

@@ -113,7 +113,9 @@
 //! `fract`, `mod`, `sqrt`, `inversesqrt` run inline over the 16 lanes (the
 //! same bits as `glsl::math`, tested on over a million inputs each); the
 //! transcendental functions call `glsl::math` per lane. The executor is
-//! compiled three times (baseline, AVX2, AVX-512), chosen at run time
+//! compiled once per CPU level ([`cpu::Level`]: baseline, AVX2, AVX-512,
+//! by [`multiversion!`], the one dispatch every crate's SIMD variants
+//! use), chosen at run time
 //! ([`Variant`], [`kernel_variant`], [`set_kernel_variant`]; environment
 //! variable `SHADERBOX_KERNEL=jit|portable|avx2|avx512`); every variant
 //! computes the same bits (tested).
@@ -181,7 +183,9 @@
 //! - `dispatch` (`dispatch::run`): which executor runs, per run, as
 //!   `variant` selects.
 //! - `engine` (`engine::run_in`): the interpreter over 16 lanes, built per
-//!   CPU variant (`cpu`, `lane` for its per-lane float operations).
+//!   CPU level (`cpu`: the levels, their detection and the
+//!   `multiversion!`/`compiled_for!` macros; `lane` for its per-lane float
+//!   operations).
 //! - `jit` (`jit::run`, `jit::codegen::compile`): native code with
 //!   Cranelift, sharing `engine`'s loading, output copy and callbacks, with
 //!   `float_env` for the subnormal mode.

@@ -1,34 +1,59 @@
-//! Which variant of the executor runs: the same interpreter built for the
-//! baseline instruction set, for AVX2 or for AVX-512, or native code
+//! Which variant of the executor runs: the same interpreter built for one
+//! of the CPU levels ([`Level`]: baseline, AVX2, AVX-512), or native code
 //! generated per kernel (`jit`), chosen once per process from the CPU
 //! ([`crate::cpu`], whether Cranelift supports it) and the
 //! environment variable `SHADERBOX_KERNEL=jit|portable|avx2|avx512`. Every
 //! variant computes the same bits (tests compare them); only speed differs.
+//!
+//! The variant also sets the level of the code that runs along kernels
+//! ([`Variant::level`]: the rasterizer's texture fast path follows it).
 
-use crate::cpu::{supports, Features};
+use crate::cpu::Level;
 use std::sync::atomic::{AtomicU8, Ordering};
 
-/// A compiled variant of the executor.
+/// A compiled variant of the executor: the interpreter at a [`Level`]
+/// (the first three, named as their level) or native code.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Variant {
-    /// The target's baseline instruction set (SSE2 on x86-64).
+    /// The interpreter at [`Level::Portable`].
     Portable,
-    /// x86-64 with AVX2.
+    /// The interpreter at [`Level::Avx2`].
     Avx2,
-    /// x86-64 with AVX-512 F/BW/DQ/VL.
+    /// The interpreter at [`Level::Avx512`].
     Avx512,
     /// Native code per kernel (the `jit` module); kernels it does not
     /// compile, and runs before compilation, use the best interpreter.
     Jit,
 }
 
+impl From<Level> for Variant {
+    /// The interpreter at `level`.
+    fn from(level: Level) -> Variant {
+        match level {
+            Level::Portable => Variant::Portable,
+            Level::Avx2 => Variant::Avx2,
+            Level::Avx512 => Variant::Avx512,
+        }
+    }
+}
+
 impl Variant {
     pub fn name(self) -> &'static str {
         match self {
-            Variant::Portable => "portable",
-            Variant::Avx2 => "avx2",
-            Variant::Avx512 => "avx512",
             Variant::Jit => "jit",
+            v => v.level().name(),
+        }
+    }
+
+    /// The level the variant's Rust code runs at (the interpreter's, the
+    /// texture fast path's): its own, and for native code the highest
+    /// this CPU runs.
+    pub fn level(self) -> Level {
+        match self {
+            Variant::Portable => Level::Portable,
+            Variant::Avx2 => Level::Avx2,
+            Variant::Avx512 => Level::Avx512,
+            Variant::Jit => Level::best(),
         }
     }
 
@@ -44,21 +69,11 @@ impl Variant {
     /// Whether this CPU can run the variant.
     pub fn supported(self) -> bool {
         match self {
-            Variant::Portable => true,
             #[cfg(feature = "jit")]
             Variant::Jit => crate::jit::supported(),
-            #[cfg(target_arch = "x86_64")]
-            Variant::Avx2 => supports(Features::AVX2),
-            #[cfg(target_arch = "x86_64")]
-            Variant::Avx512 => supports(
-                Features::AVX512F
-                    .and(Features::AVX512BW)
-                    .and(Features::AVX512DQ)
-                    .and(Features::AVX512VL)
-                    .and(Features::AVX2),
-            ),
-            #[cfg(not(target_arch = "x86_64"))]
-            _ => false,
+            #[cfg(not(feature = "jit"))]
+            Variant::Jit => false,
+            v => v.level().supported(),
         }
     }
 }
@@ -123,11 +138,7 @@ fn names() -> String {
 /// are two AVX2 registers, and 512-bit code lowers the clock), else
 /// portable.
 pub(crate) fn best_interpreter() -> Variant {
-    if Variant::Avx2.supported() {
-        Variant::Avx2
-    } else {
-        Variant::Portable
-    }
+    Variant::from(Level::best().min(Level::Avx2))
 }
 
 fn choose() -> Variant {
@@ -139,11 +150,10 @@ fn choose() -> Variant {
     match std::env::var("SHADERBOX_KERNEL") {
         Ok(s) if !s.is_empty() => {
             let want = match s.trim() {
-                "portable" => Some(Variant::Portable),
-                "avx2" => Some(Variant::Avx2),
-                "avx512" => Some(Variant::Avx512),
                 "jit" => Some(Variant::Jit),
-                _ => None,
+                // `base` is the rasterizer's name of the portable level.
+                "base" => None,
+                name => Level::parse(name).map(Variant::from),
             };
             match want {
                 Some(v) if v.supported() => v,

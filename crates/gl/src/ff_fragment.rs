@@ -139,46 +139,22 @@ impl Plan {
         })
     }
 
-    /// The kernel's run on `batch` (see [`Plan::run_with`]), compiled for
-    /// the widest vectors the CPU has: the same IEEE operations (Rust
-    /// never fuses a multiply and an add), so the same bits.
-    #[inline(always)]
-    fn run(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
-        #[cfg(target_arch = "x86_64")]
-        {
-            if X512::supported() {
-                // SAFETY: the CPU has the features.
-                return unsafe { self.run_avx512(batch, uniforms, textures) };
-            }
-            if X256::supported() {
-                // SAFETY: the CPU has the features.
-                return unsafe { self.run_avx2(batch, uniforms, textures) };
-            }
+    exec::multiversion! {
+        /// The kernel's run on `batch` (see [`Plan::run_with`]), compiled
+        /// for the highest level the CPU runs ([`Plan::run_in`] in its
+        /// registers): the same IEEE operations (Rust never fuses a
+        /// multiply and an add), so the same bits.
+        #[inline(always)]
+        fn run(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures);
+        level = exec::cpu::Level::best(),
+        copies = [run_portable, run_avx2, run_avx512],
+        body = {
+            portable: self.run_with(batch, uniforms, textures),
+            // SAFETY: compiled for AVX2, which the caller's CPU has.
+            avx2: unsafe { self.run_in::<X256>(batch, uniforms, textures) },
+            // SAFETY: compiled for AVX-512, which the caller's CPU has.
+            avx512: unsafe { self.run_in::<X512>(batch, uniforms, textures) },
         }
-        self.run_portable(batch, uniforms, textures)
-    }
-
-    /// [`Plan::run_with`] on its own (so that [`Plan::run`], inlined into
-    /// its caller, stays a dispatch).
-    #[inline(never)]
-    fn run_portable(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
-        self.run_with(batch, uniforms, textures)
-    }
-
-    /// [`Plan::run_in`] in AVX2 registers.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,fma")]
-    unsafe fn run_avx2(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
-        // SAFETY: compiled for AVX2, which the caller's CPU has.
-        unsafe { self.run_in::<X256>(batch, uniforms, textures) }
-    }
-
-    /// [`Plan::run_in`] in AVX-512 registers.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2,fma")]
-    unsafe fn run_avx512(&self, batch: &mut Batch, uniforms: &[u32], textures: &dyn Textures) {
-        // SAFETY: compiled for AVX-512, which the caller's CPU has.
-        unsafe { self.run_in::<X512>(batch, uniforms, textures) }
     }
 
     /// [`Plan::run_with`]'s operations on all 16 lanes at once in `V`'s

@@ -125,7 +125,7 @@ pub(crate) fn draw_probed(
         SETUP_CHUNK
     };
     let chunks = n_prims.div_ceil(chunk);
-    let isa = crate::simd::detect();
+    let level = crate::simd::detect();
     let parts = workers.map(chunks, 1, |c, _| {
         let first = c * chunk;
         let n = chunk.min(n_prims.saturating_sub(first));
@@ -139,7 +139,7 @@ pub(crate) fn draw_probed(
             chunk: c as u32,
         };
         let range = c * chunk..((c + 1) * chunk).min(n_prims);
-        setup.chunk(&mut out, mode, &vertex_of, range, isa);
+        setup.chunk(&mut out, mode, &vertex_of, range, level);
         // Binned here, on the workers: the chunks' bins read in chunk
         // order list each tile's primitives in draw order.
         let bins = ChunkBins::new(&out.prims, &grid);

@@ -344,9 +344,9 @@ fn strips_give_the_bytes_of_quads() {
             }
             fb.read_pixels_u8(0, 0, 0, w, h)
         };
-        for isa in crate::simd::Isa::all_supported() {
+        for isa in crate::simd::Level::all_supported() {
             let (with, without) =
-                crate::simd::with_isa(isa, || (draw(), crate::shade::without_strips(draw)));
+                crate::simd::with_level(isa, || (draw(), crate::shade::without_strips(draw)));
             assert_eq!(
                 with, without,
                 "{isa:?}, {blend:?}, depth {depth}, flat {flat}"
@@ -388,9 +388,9 @@ fn strips_of_consecutive_primitives_take_their_own_constants() {
         run(&mut fb, &st, &strip_fs(), Mode::Triangles, &v).unwrap();
         fb.read_pixels_u8(0, 0, 0, w, h)
     };
-    for isa in crate::simd::Isa::all_supported() {
+    for isa in crate::simd::Level::all_supported() {
         let (with, without) =
-            crate::simd::with_isa(isa, || (draw(), crate::shade::without_strips(draw)));
+            crate::simd::with_level(isa, || (draw(), crate::shade::without_strips(draw)));
         assert_eq!(with, without, "{isa:?}");
         // Both layers are in every pixel: not the clear colour, nor the
         // first triangle's colour blended alone.

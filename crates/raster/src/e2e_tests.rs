@@ -1050,17 +1050,17 @@ fn colours_of_visible_fragments_only_without_frag_depth_give_the_same_bytes() {
 
 #[test]
 fn instruction_set_variants_give_the_same_bytes() {
-    use crate::simd::{with_isa, Isa};
+    use crate::simd::{with_level, Level};
     let one = || crate::Workers::new(1);
-    let base = with_isa(Isa::Base, || {
+    let base = with_level(Level::Portable, || {
         (
             small_triangles(&one(), false, CompareFunc::Less, |_| {}),
             impostors(&one(), true, true, 200, |_| {}),
             scene(&one()),
         )
     });
-    for isa in Isa::all_supported() {
-        let got = with_isa(isa, || {
+    for isa in Level::all_supported() {
+        let got = with_level(isa, || {
             (
                 small_triangles(&one(), false, CompareFunc::Less, |_| {}),
                 impostors(&one(), true, true, 200, |_| {}),

@@ -74,10 +74,11 @@
 //! the per-pixel write's operations.
 //!
 //! Filling a batch's inputs and a quad's interpolation are compiled for
-//! the baseline target, AVX2 and AVX-512 and picked at run time (so is
-//! the batched quad loop of coverage, quad set-up, early depth test and
-//! writes; the best
-//! the CPU has; `SHADERBOX_RASTER_ISA=base|avx2|avx512` to choose); they
+//! every CPU level (`exec::cpu::Level`: baseline, AVX2, AVX-512, by
+//! `exec::multiversion!`) and picked at run time (so are set-up and the
+//! batched quad loop of coverage, quad set-up, early depth test and
+//! writes; the highest level the CPU runs, or
+//! `SHADERBOX_RASTER_ISA=portable|avx2|avx512`: `simd`); they
 //! use plain IEEE operations, so every variant gives the same bits (tests
 //! compare them). With no alpha or stencil test, the per-fragment tests
 //! run with the state's choices made once per tile (a quad's four pixels

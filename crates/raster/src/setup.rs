@@ -22,7 +22,7 @@ use crate::linkage::{FsLayout, VsLayout};
 use crate::prim::{plane_origin, Prim};
 use crate::probe::Probe;
 use crate::rasterize::{max_depth_slope, snap, vertex_depths, PixelRect, Shape, WinVertex};
-use crate::simd::Isa;
+use crate::simd::Level;
 use crate::state::{CullFace, FrontFace, PipelineState, PolygonMode};
 
 /// Largest point size used (points are clamped to [1, MAX_POINT_SIZE]).
@@ -142,8 +142,8 @@ impl<'a> Setup<'a> {
 impl Setup<'_> {
     /// Assembles and sets up primitives `range` of the draw (`vertex_of`:
     /// the vertex at each position of the index list) into `out`, in
-    /// order. Triangles and quads take [`Setup::polygon`] (its AVX2
-    /// build when `isa` allows), except under the debugger's probe, which
+    /// order. Triangles and quads take [`Setup::polygon_at`] (the copy of
+    /// `level`), except under the debugger's probe, which
     /// notes each assembled primitive.
     #[inline(always)]
     pub fn chunk(
@@ -152,7 +152,7 @@ impl Setup<'_> {
         mode: Mode,
         vertex_of: &[u32],
         range: Range<usize>,
-        isa: Isa,
+        level: Level,
     ) {
         let probe = self.probe;
         let count = vertex_of.len();
@@ -162,15 +162,7 @@ impl Setup<'_> {
             if probe.is_none() {
                 if let Some((vs, n, prov)) = small_polygon(mode, k) {
                     let vs = vs.map(v);
-                    match isa {
-                        #[cfg(target_arch = "x86_64")]
-                        // SAFETY: `isa` is one of these only when the CPU
-                        // has their features (`simd::detect`).
-                        Isa::Avx2 | Isa::Avx512 => unsafe {
-                            self.polygon_avx2(out, &vs[..n], v(prov))
-                        },
-                        _ => self.polygon(out, &vs[..n], v(prov)),
-                    }
+                    self.polygon_at(level, out, &vs[..n], v(prov));
                     continue;
                 }
             }
@@ -375,22 +367,21 @@ impl Setup<'_> {
         }
     }
 
-    /// Sets up a polygon (`vertices`, `provoking`: vertex numbers):
-    /// clipped, culled, offset, filled as triangles or outlined.
-    fn polygon(&self, out: &mut Out, vertices: &[usize], provoking: usize) {
-        self.polygon_with(out, vertices, provoking)
-    }
-
-    /// [`Setup::polygon`] compiled for AVX2 with the bit-count
-    /// instructions (the set-up inlined into it: the same f64 operations,
-    /// none fused, so the same values).
-    ///
-    /// # Safety
-    /// The CPU must have those features ([`crate::simd::Isa::Avx2`]).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt")]
-    unsafe fn polygon_avx2(&self, out: &mut Out, vertices: &[usize], provoking: usize) {
-        self.polygon_with(out, vertices, provoking)
+    exec::multiversion! {
+        /// Sets up a polygon (`vertices`, `provoking`: vertex numbers):
+        /// clipped, culled, offset, filled as triangles or outlined;
+        /// compiled for `level` (the set-up inlined into each copy: the
+        /// same f64 operations, none fused, so the same values). The
+        /// portable copy, [`Setup::polygon`], is also the general path's.
+        fn polygon_at(
+            &self,
+            #[level] level: Level,
+            out: &mut Out,
+            vertices: &[usize],
+            provoking: usize,
+        );
+        copies = [polygon, polygon_avx2, polygon_avx512],
+        body = self.polygon_with(out, vertices, provoking)
     }
 
     #[inline(always)]

@@ -22,7 +22,7 @@ use crate::linkage::{new_batch, FsLayout};
 use crate::prim::Prim;
 use crate::probe::Probe;
 use crate::rasterize::{PixelRect, Shape, STRIP};
-use crate::simd::Isa;
+use crate::simd::Level;
 use crate::state::PipelineState;
 use crate::ShaderStage;
 
@@ -234,7 +234,7 @@ pub(crate) struct FragmentStage<'a> {
     /// Those the depth-only slice reads (its interface's inputs).
     depth_fills: Vec<FillLink>,
     /// The instruction set of the hot loops.
-    isa: Isa,
+    level: Level,
     /// (draw buffer, output offset) of each colour the fragment carries.
     pub colors_out: Vec<(usize, usize)>,
     /// Depth/stencil-test before shading (no gl_FragDepth write).
@@ -335,7 +335,7 @@ impl<'a> FragmentStage<'a> {
             attrs,
             fills,
             depth_fills,
-            isa: crate::simd::detect(),
+            level: crate::simd::detect(),
             colors_out: (0..MAX_DRAW_BUFFERS)
                 .filter_map(|i| match (layout.color_out[i], state.draw_buffers[i]) {
                     (Some(o), Some(_)) => Some((i, o)),
@@ -492,7 +492,7 @@ impl<'a> FragmentStage<'a> {
             // batch's colours converted together.
             let rgba = match batch.outputs.get(o..o + 4) {
                 Some([r, g, b, a]) if target.opaque() => {
-                    Some(fragment_ops::unorm8_batch(self.isa, [r, g, b, a]))
+                    Some(fragment_ops::unorm8_batch(self.level, [r, g, b, a]))
                 }
                 _ => None,
             };
@@ -564,44 +564,28 @@ impl<'a> FragmentStage<'a> {
         }
     }
 
-    /// Writes the fragment inputs of `pending` (quad `q` in lanes
-    /// `4q..4q + 4`; at most `LANES / 4` quads) that `plan` lists, zeroes
-    /// the outputs, and sets the active and helper lanes. Varyings are
-    /// interpolated with each quad's per-pixel weights, in f64:
-    /// `0 + w0·v0 + w1·v1 + w2·v2` for triangles, `0 + w0·v0 + w1·v1` for
-    /// lines; vertex 0's value for points and flat-shaded colours.
-    ///
-    /// Inputs the plan leaves out are not touched: they are zero from
-    /// [`new_batch`] when no plan of the draw lists them, and only read by
-    /// a stage that does not read them otherwise (stages never write their
-    /// inputs). With fewer than `LANES / 4` quads every input is cleared
-    /// first, so the lanes of absent quads read zeros.
-    ///
-    /// With `packed`, [`FragmentStage::fill_packed_with`]'s batch instead.
-    fn fill(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink], packed: bool) {
-        match self.isa {
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 | Isa::Avx512 => {
-                // SAFETY: `isa` is only Avx2 or Avx512 when the CPU has
-                // AVX2 and the bit-count instructions (`simd::detect`).
-                unsafe { self.fill_avx2(batch, pending, plan, packed) }
-            }
-            _ => self.fill_with(batch, pending, plan, packed),
-        }
-    }
-
-    /// [`FragmentStage::fill`] compiled for AVX2 (the same operations:
-    /// four pixels' f64 arithmetic in one register instead of two).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt")]
-    unsafe fn fill_avx2(
-        &self,
-        batch: &mut Batch,
-        pending: &[Entry],
-        plan: &[FillLink],
-        packed: bool,
-    ) {
-        self.fill_with(batch, pending, plan, packed)
+    exec::multiversion! {
+        /// Writes the fragment inputs of `pending` (quad `q` in lanes
+        /// `4q..4q + 4`; at most `LANES / 4` quads) that `plan` lists, zeroes
+        /// the outputs, and sets the active and helper lanes. Varyings are
+        /// interpolated with each quad's per-pixel weights, in f64:
+        /// `0 + w0·v0 + w1·v1 + w2·v2` for triangles, `0 + w0·v0 + w1·v1` for
+        /// lines; vertex 0's value for points and flat-shaded colours.
+        ///
+        /// Inputs the plan leaves out are not touched: they are zero from
+        /// [`new_batch`] when no plan of the draw lists them, and only read by
+        /// a stage that does not read them otherwise (stages never write their
+        /// inputs). With fewer than `LANES / 4` quads every input is cleared
+        /// first, so the lanes of absent quads read zeros.
+        ///
+        /// With `packed`, [`FragmentStage::fill_packed_with`]'s batch instead.
+        ///
+        /// Compiled for the stage's level (AVX2: four pixels' f64
+        /// arithmetic in one register instead of two; the same operations).
+        fn fill(&self, batch: &mut Batch, pending: &[Entry], plan: &[FillLink], packed: bool);
+        level = self.level,
+        copies = [fill_portable, fill_avx2, fill_avx512],
+        body = self.fill_with(batch, pending, plan, packed)
     }
 
     #[inline(always)]

@@ -76,71 +76,35 @@ use lod::lambdas;
 use storage::{LevelTable, Store};
 
 #[cfg(target_arch = "x86_64")]
-use exec::lanes16::{Lanes16, X256, X512};
+use exec::lanes16::{X256, X512};
 
-/// An instruction set the fast path is compiled for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Isa {
-    /// The target's baseline (SSE2 on x86-64).
-    Portable,
-    /// x86-64 with AVX2 and FMA.
-    Avx2,
-    /// x86-64 with AVX-512 F/BW/DQ/VL and FMA.
-    Avx512,
-}
+pub(crate) use exec::cpu::Level;
 
-impl Isa {
-    /// Whether this CPU runs `self`.
-    pub(crate) fn supported(self) -> bool {
-        match self {
-            Isa::Portable => true,
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 => X256::supported(),
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx512 => X512::supported(),
-            #[cfg(not(target_arch = "x86_64"))]
-            _ => false,
-        }
-    }
-
-    /// The instruction set of the executor's variant
-    /// (`exec::kernel_variant`, `SHADERBOX_KERNEL`); for the native-code
-    /// executor, the fastest one this CPU supports.
-    pub(crate) fn current() -> Isa {
-        match exec::kernel_variant() {
-            exec::Variant::Portable => Isa::Portable,
-            exec::Variant::Avx2 => Isa::Avx2,
-            exec::Variant::Avx512 => Isa::Avx512,
-            exec::Variant::Jit => {
-                if Isa::Avx512.supported() {
-                    Isa::Avx512
-                } else if Isa::Avx2.supported() {
-                    Isa::Avx2
-                } else {
-                    Isa::Portable
-                }
-            }
-        }
-    }
+/// The level the fast path runs at: the executor's variant's
+/// (`exec::Variant::level`, `SHADERBOX_KERNEL`), since it runs inside the
+/// kernel's texture calls; for the native-code executor, the highest this
+/// CPU runs.
+pub(crate) fn current_level() -> Level {
+    exec::kernel_variant().level()
 }
 
 /// Samples `req` through the fast path when it applies (see the module
 /// documentation) and returns true; false leaves `out` untouched. The
-/// code is compiled for several instruction sets, `isa` chosen at run
-/// time (the executor's, [`Isa::current`], which `TextureUnits` finds
+/// code is compiled for every level, `level` chosen at run
+/// time (the executor's, [`current_level`], which `TextureUnits` finds
 /// once; the baseline one when the CPU lacks it); all compute the same
 /// IEEE operations (Rust never fuses a multiply and an add), so the same
 /// bits.
 #[inline]
 pub(crate) fn sample_with(
-    isa: Isa,
+    level: Level,
     units: &[TextureUnit],
     checked_2d: &CheckedUnits,
     req: &SampleRequest,
     out: &mut [[f32; LANES]; 4],
 ) -> bool {
     match Lookup2D::of(req) {
-        Some(lookup) => sample_lookup(isa, units, checked_2d, &lookup, out) != Sampled::No,
+        Some(lookup) => sample_lookup(level, units, checked_2d, &lookup, out) != Sampled::No,
         None => false,
     }
 }
@@ -160,14 +124,14 @@ pub(crate) enum Sampled {
 
 /// The 2D lookup of unit `unit` on the lanes `mask` at (s, t), the
 /// implicit LOD from the quad differences of s and t
-/// ([`exec::lane::quad_diffs`]) with no bias, compiled for `isa` (the
+/// ([`exec::lane::quad_diffs`]) with no bias, compiled for `level` (the
 /// baseline one when the CPU lacks it): what [`sample_with`] gives the
 /// request `exec::Textures::sample_2d_implicit` describes, without the
 /// request ([`Sampled::No`], with nothing written, when the fast path
 /// does not apply).
 #[inline]
 pub(crate) fn sample_implicit_with(
-    isa: Isa,
+    level: Level,
     units: &[TextureUnit],
     checked_2d: &CheckedUnits,
     unit: u32,
@@ -184,7 +148,7 @@ pub(crate) fn sample_implicit_with(
         st,
         lod: LodRef::Implicit,
     };
-    sample_lookup(isa, units, checked_2d, &lookup, out)
+    sample_lookup(level, units, checked_2d, &lookup, out)
 }
 
 /// A 2D lookup without depth comparison of one unit for every lane of
@@ -250,73 +214,25 @@ impl<'a> Lookup2D<'a> {
     }
 }
 
-/// [`sample_in`] of `lookup` compiled for `isa` (the baseline one when
-/// the CPU lacks it). Inlined into its callers, a dispatch to the
-/// variants (each its own function).
-#[inline(always)]
-fn sample_lookup(
-    isa: Isa,
-    units: &[TextureUnit],
-    checked_2d: &CheckedUnits,
-    lookup: &Lookup2D,
-    out: &mut [[f32; LANES]; 4],
-) -> Sampled {
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = isa;
-    #[cfg(target_arch = "x86_64")]
-    match isa {
-        // SAFETY: the CPU supports the instruction set (checked first).
-        Isa::Avx512 if isa.supported() => {
-            return unsafe { sample_avx512(units, checked_2d, lookup, out) }
-        }
-        // SAFETY: as above.
-        Isa::Avx2 if isa.supported() => {
-            return unsafe { sample_avx2(units, checked_2d, lookup, out) }
-        }
-        _ => {}
+exec::multiversion! {
+    /// [`sample_in`] of `lookup` compiled for `level` (the baseline one
+    /// when the CPU lacks it). Inlined into its callers, a dispatch to
+    /// the copies (each its own function): `SIMD` and `WIDE` say which
+    /// registers the copy has.
+    #[inline(always)]
+    fn sample_lookup(
+        #[level] level: Level,
+        units: &[TextureUnit],
+        checked_2d: &CheckedUnits,
+        lookup: &Lookup2D,
+        out: &mut [[f32; LANES]; 4],
+    ) -> Sampled;
+    copies = [sample_portable, sample_avx2, sample_avx512],
+    body = {
+        portable: sample_in::<false, NO_WIDE>(units, checked_2d, lookup, out),
+        avx2: sample_in::<true, WIDE_AVX2>(units, checked_2d, lookup, out),
+        avx512: sample_in::<true, WIDE_AVX512>(units, checked_2d, lookup, out),
     }
-    sample_portable(units, checked_2d, lookup, out)
-}
-
-/// [`sample_in`] compiled for the baseline instruction set.
-#[inline(never)]
-fn sample_portable(
-    units: &[TextureUnit],
-    checked_2d: &CheckedUnits,
-    lookup: &Lookup2D,
-    out: &mut [[f32; LANES]; 4],
-) -> Sampled {
-    sample_in::<false, NO_WIDE>(units, checked_2d, lookup, out)
-}
-
-/// [`sample_in`] compiled for AVX2 and FMA.
-///
-/// # Safety
-/// The CPU must support AVX2 and FMA.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-unsafe fn sample_avx2(
-    units: &[TextureUnit],
-    checked_2d: &CheckedUnits,
-    lookup: &Lookup2D,
-    out: &mut [[f32; LANES]; 4],
-) -> Sampled {
-    sample_in::<true, WIDE_AVX2>(units, checked_2d, lookup, out)
-}
-
-/// [`sample_in`] compiled for AVX-512 (F, BW, DQ, VL) and FMA.
-///
-/// # Safety
-/// The CPU must support those AVX-512 subsets and FMA.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2,fma")]
-unsafe fn sample_avx512(
-    units: &[TextureUnit],
-    checked_2d: &CheckedUnits,
-    lookup: &Lookup2D,
-    out: &mut [[f32; LANES]; 4],
-) -> Sampled {
-    sample_in::<true, WIDE_AVX512>(units, checked_2d, lookup, out)
 }
 
 /// `sample_in`'s `WIDE`: no register filter ([`wide`]).

@@ -18,9 +18,9 @@ pub struct TextureUnits {
     /// texture (`units` may change after it is filled).
     pub(crate) checked_2d: texture_2d::CheckedUnits,
     /// The instruction set the fast path of 2D lookups runs in (the
-    /// executor's, `texture_2d::Isa::current`), found once per set of
+    /// executor's, `texture_2d::current_level`), found once per set of
     /// units rather than per lookup.
-    pub(crate) isa: texture_2d::Isa,
+    pub(crate) level: texture_2d::Level,
 }
 
 impl TextureUnits {
@@ -29,7 +29,7 @@ impl TextureUnits {
         TextureUnits {
             units,
             checked_2d: texture_2d::CheckedUnits::new(),
-            isa: texture_2d::Isa::current(),
+            level: texture_2d::current_level(),
         }
     }
 }
@@ -43,7 +43,7 @@ impl Default for TextureUnits {
 
 impl Textures for TextureUnits {
     fn sample(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]) {
-        if !texture_2d::sample_with(self.isa, &self.units, &self.checked_2d, req, out) {
+        if !texture_2d::sample_with(self.level, &self.units, &self.checked_2d, req, out) {
             texture_general::sample_general(&self.units, req, out);
         }
     }
@@ -57,7 +57,7 @@ impl Textures for TextureUnits {
     ) -> bool {
         use texture_2d::{sample_implicit_with, Sampled};
         let (units, checked) = (&self.units, &self.checked_2d);
-        match sample_implicit_with(self.isa, units, checked, unit, st, mask, out) {
+        match sample_implicit_with(self.level, units, checked, unit, st, mask, out) {
             Sampled::Unorm8 => true,
             Sampled::Yes => false,
             Sampled::No => {

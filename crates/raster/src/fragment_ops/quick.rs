@@ -281,18 +281,22 @@ impl QuickTarget<'_> {
     /// `rgba[c][lane]`), on its two rows of eight pixels at once in
     /// AVX-512 or AVX2 registers: the bytes [`QuickTarget::write`] gives
     /// each fragment (the same operations per pixel, a pixel per element).
-    /// False, with nothing done, unless `isa` is one of those, the strip lies
+    /// False, with nothing done, unless `level` is one of those, the strip lies
     /// inside the target and nothing but the colour write applies (no
     /// depth test, no scissor; no blending or SRC_ALPHA /
     /// ONE_MINUS_SRC_ALPHA).
     #[inline(always)]
     pub fn write_strip(
         &mut self,
-        isa: crate::simd::Isa,
+        level: crate::simd::Level,
         (x, y): (i64, i64),
         rgba: [&[f32; 16]; 4],
     ) -> bool {
-        if isa == crate::simd::Isa::Base || self.depth.is_some() || self.scissor.is_some() {
+        if !level.supported()
+            || level == crate::simd::Level::Portable
+            || self.depth.is_some()
+            || self.scissor.is_some()
+        {
             return false;
         }
         let Some((v, blend)) = &mut self.color else {
@@ -314,11 +318,10 @@ impl QuickTarget<'_> {
         };
         #[cfg(target_arch = "x86_64")]
         {
-            // SAFETY: `isa` is only Avx512 (Avx2) when the CPU has those
-            // features (`simd::detect`); `rows` holds both rows of eight
-            // pixels.
+            // SAFETY: the CPU runs `level` (checked above); `rows` holds
+            // both rows of eight pixels.
             unsafe {
-                if isa == crate::simd::Isa::Avx512 {
+                if level == crate::simd::Level::Avx512 {
                     write_strip_avx512(rows, w as usize, rgba, over)
                 } else {
                     write_strip_avx2(rows, w as usize, rgba, over)

@@ -41,9 +41,9 @@ fn batch_conversion_matches_the_scalar_one() {
         let [r, g, b, a] = &rgba;
         let want = unorm8_lanes([r, g, b, a]);
         for isa in [
-            crate::simd::Isa::Base,
-            crate::simd::Isa::Avx2,
-            crate::simd::Isa::Avx512,
+            crate::simd::Level::Portable,
+            crate::simd::Level::Avx2,
+            crate::simd::Level::Avx512,
         ] {
             if isa.supported() {
                 assert_eq!(unorm8_batch(isa, [r, g, b, a]), want, "{isa:?} {rgba:?}");
@@ -206,8 +206,8 @@ fn common_blends_match_the_general_equation() {
 #[test]
 #[cfg(target_arch = "x86_64")]
 fn strip_writes_match_the_pixel_writes() {
-    use crate::simd::Isa;
-    let isas: Vec<Isa> = [Isa::Avx2, Isa::Avx512]
+    use crate::simd::Level;
+    let isas: Vec<Level> = [Level::Avx2, Level::Avx512]
         .into_iter()
         .filter(|i| i.supported())
         .collect();
@@ -254,7 +254,7 @@ fn strip_writes_match_the_pixel_writes() {
             // `got` holds w + 8 pixels.
             unsafe {
                 match isa {
-                    Isa::Avx512 => write_strip_avx512(&mut got, w, [r, g, b, a], over),
+                    Level::Avx512 => write_strip_avx512(&mut got, w, [r, g, b, a], over),
                     _ => write_strip_avx2(&mut got, w, [r, g, b, a], over),
                 }
             };

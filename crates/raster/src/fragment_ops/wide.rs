@@ -99,76 +99,54 @@ unsafe fn unorm8_lanes_in<V: Lanes16>(rgba: [&[f32; 16]; 4]) -> [[u8; 4]; 16] {
     }
 }
 
-/// [`unorm8_lanes_in`] compiled for AVX-512 (as `write_strip_avx512`).
-///
-/// # Safety
-/// The CPU must have AVX2 and AVX-512 F, DQ and VL.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2")]
-pub(super) unsafe fn unorm8_lanes_avx512(rgba: [&[f32; 16]; 4]) -> [[u8; 4]; 16] {
-    // SAFETY: the caller's contract.
-    unsafe { unorm8_lanes_in::<X512>(rgba) }
-}
-
-/// [`unorm8_lanes_in`] compiled for AVX2.
-///
-/// # Safety
-/// The CPU must have AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-pub(super) unsafe fn unorm8_lanes_avx2(rgba: [&[f32; 16]; 4]) -> [[u8; 4]; 16] {
-    // SAFETY: the caller's contract.
-    unsafe { unorm8_lanes_in::<X256>(rgba) }
-}
-
-/// [`unorm8_lanes`] of a batch's 16 lanes in `isa`'s registers: the same
-/// bytes (the clamp and conversion are the same operations).
-pub(crate) fn unorm8_batch(isa: crate::simd::Isa, rgba: [&[f32; 16]; 4]) -> [[u8; 4]; 16] {
-    #[cfg(target_arch = "x86_64")]
-    {
-        // SAFETY: `isa` is only Avx512 (Avx2) when the CPU has those
-        // features (`simd::detect`).
-        match isa {
-            crate::simd::Isa::Avx512 => return unsafe { unorm8_lanes_avx512(rgba) },
-            crate::simd::Isa::Avx2 => return unsafe { unorm8_lanes_avx2(rgba) },
-            _ => {}
-        }
+exec::multiversion! {
+    /// [`unorm8_lanes`] of a batch's 16 lanes at `level` (AVX2, AVX-512:
+    /// [`unorm8_lanes_in`] in their registers): the same bytes (the clamp
+    /// and conversion are the same operations).
+    pub(crate) fn unorm8_batch(
+        #[level] level: crate::simd::Level,
+        rgba: [&[f32; 16]; 4],
+    ) -> [[u8; 4]; 16];
+    copies = [unorm8_portable, unorm8_lanes_avx2, unorm8_lanes_avx512],
+    body = {
+        portable: unorm8_lanes(rgba),
+        // SAFETY: compiled for the level's registers.
+        avx2: unsafe { unorm8_lanes_in::<X256>(rgba) },
+        // SAFETY: likewise.
+        avx512: unsafe { unorm8_lanes_in::<X512>(rgba) },
     }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = isa;
-    unorm8_lanes(rgba)
 }
 
-/// [`write_strip_in`] compiled for AVX-512 (the features
-/// `simd::Isa::Avx512` checks; the operations it uses are AVX-512 F's).
-///
-/// # Safety
-/// The CPU must have AVX2 and AVX-512 F, DQ and VL; `rows` as for
-/// [`write_strip_in`].
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2")]
-pub(super) unsafe fn write_strip_avx512(
-    rows: &mut [[u8; 4]],
-    w: usize,
-    rgba: [&[f32; 16]; 4],
-    over: bool,
-) {
-    // SAFETY: the caller's contract.
-    unsafe { write_strip_in::<X512>(rows, w, rgba, over) }
-}
+exec::compiled_for!(
+    avx512,
+    /// [`write_strip_in`] in AVX-512 registers.
+    ///
+    /// # Safety
+    /// The CPU must run `Level::Avx512`; `rows` as for [`write_strip_in`].
+    pub(super) unsafe fn write_strip_avx512(
+        rows: &mut [[u8; 4]],
+        w: usize,
+        rgba: [&[f32; 16]; 4],
+        over: bool,
+    ) {
+        // SAFETY: the caller's contract.
+        unsafe { write_strip_in::<X512>(rows, w, rgba, over) }
+    }
+);
 
-/// [`write_strip_in`] compiled for AVX2.
-///
-/// # Safety
-/// The CPU must have AVX2; `rows` as for [`write_strip_in`].
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-pub(super) unsafe fn write_strip_avx2(
-    rows: &mut [[u8; 4]],
-    w: usize,
-    rgba: [&[f32; 16]; 4],
-    over: bool,
-) {
-    // SAFETY: the caller's contract.
-    unsafe { write_strip_in::<X256>(rows, w, rgba, over) }
-}
+exec::compiled_for!(
+    avx2,
+    /// [`write_strip_in`] in AVX2 registers.
+    ///
+    /// # Safety
+    /// The CPU must run `Level::Avx2`; `rows` as for [`write_strip_in`].
+    pub(super) unsafe fn write_strip_avx2(
+        rows: &mut [[u8; 4]],
+        w: usize,
+        rgba: [&[f32; 16]; 4],
+        over: bool,
+    ) {
+        // SAFETY: the caller's contract.
+        unsafe { write_strip_in::<X256>(rows, w, rgba, over) }
+    }
+);

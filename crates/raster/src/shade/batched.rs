@@ -53,62 +53,30 @@ impl<'a> FragmentStage<'a> {
         }
     }
 
-    /// The primitives `bin` (indices into `prims`, in draw order) inside
-    /// `tile`, quads of consecutive primitives sharing batches (a
-    /// primitive covering a pixel or two no longer costs a whole batch).
-    /// Fragments still go through the per-fragment operations in draw
-    /// order after their batch ran, so the bytes are those of
-    /// [`FragmentStage::shade`] per primitive, provided early rejection
-    /// against a depth buffer that misses the batch's pending fragments is
-    /// still right: [`FragmentStage::batches_primitives`] says when. On an
-    /// error the caller redraws the tile with [`FragmentStage::shade`].
-    pub fn shade_batched<'p>(
-        &self,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        match self.isa {
-            #[cfg(target_arch = "x86_64")]
-            // SAFETY: `isa` is only Avx512 when the CPU has the features
-            // (`simd::detect`).
-            Isa::Avx512 => unsafe { self.shade_batched_avx512(fb, prims, bin, tile, scratch) },
-            #[cfg(target_arch = "x86_64")]
-            // SAFETY: likewise for AVX2.
-            Isa::Avx2 => unsafe { self.shade_batched_avx2(fb, prims, bin, tile, scratch) },
-            _ => self.shade_batched_with(fb, prims, bin, tile, scratch),
-        }
-    }
-
-    /// [`FragmentStage::shade_batched`] compiled for AVX2 (the quad loop,
-    /// early depth test and writes inlined: the same operations).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt")]
-    unsafe fn shade_batched_avx2<'p>(
-        &self,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        self.shade_batched_with(fb, prims, bin, tile, scratch)
-    }
-
-    /// [`FragmentStage::shade_batched`] compiled for AVX-512.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt,avx512f,avx512dq,avx512vl")]
-    unsafe fn shade_batched_avx512<'p>(
-        &self,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        self.shade_batched_with(fb, prims, bin, tile, scratch)
+    exec::multiversion! {
+        /// The primitives `bin` (indices into `prims`, in draw order) inside
+        /// `tile`, quads of consecutive primitives sharing batches (a
+        /// primitive covering a pixel or two no longer costs a whole batch).
+        /// Fragments still go through the per-fragment operations in draw
+        /// order after their batch ran, so the bytes are those of
+        /// [`FragmentStage::shade`] per primitive, provided early rejection
+        /// against a depth buffer that misses the batch's pending fragments is
+        /// still right: [`FragmentStage::batches_primitives`] says when. On an
+        /// error the caller redraws the tile with [`FragmentStage::shade`].
+        ///
+        /// Compiled for the stage's level (the quad loop, early depth test
+        /// and writes inlined into each copy: the same operations).
+        pub fn shade_batched<'p>(
+            &self,
+            fb: &mut Framebuffer,
+            prims: &[&'p Prim],
+            bin: &[u32],
+            tile: PixelRect,
+            scratch: &mut Scratch<'p>,
+        ) -> Result<(), ExecError>;
+        level = self.level,
+        copies = [shade_batched_portable, shade_batched_avx2, shade_batched_avx512],
+        body = self.shade_batched_with(fb, prims, bin, tile, scratch)
     }
 
     /// Fills and runs one batch of [`FragmentStage::shade_batched`] and
@@ -320,7 +288,7 @@ impl<'a> FragmentStage<'a> {
         // one), none discarded: the strip's two rows at once.
         if live_mask == 0xffff && batch.discarded == 0 && self.layout.frag_depth.is_none() {
             if let Some([r, g, b, a]) = batch.outputs.get(o..o + 4) {
-                if target.write_strip(self.isa, (qx, qy), [r, g, b, a]) {
+                if target.write_strip(self.level, (qx, qy), [r, g, b, a]) {
                     return Ok(());
                 }
             }

@@ -66,78 +66,41 @@ fn admit(packed: bool, n: &mut usize, lanes: &mut usize, write: u8) -> Option<(u
 }
 
 impl<'a> FragmentStage<'a> {
-    /// The primitives `bin` (indices into `prims`, in draw order) inside
-    /// `tile`, shading colors only for the fragments that end up visible.
-    /// Only for a stage with [`FragmentStage::deferred`] and per-fragment
-    /// operations where the last fragment to pass the depth test decides
-    /// a pixel's color ([`fragment_ops::last_writer_wins`]).
-    ///
-    /// Pass 1 runs the depth-only slice on every fragment (without
-    /// gl_FragDepth: every fragment early depth rejection keeps), four
-    /// quads at a time, and sends them through the depth test in draw
-    /// order, keeping
-    /// per pixel the primitive of the last fragment that passed (and that
-    /// quad's coverage). Pass 2 runs the full shader once per (primitive,
-    /// quad) that won a pixel, with the same quad inputs, coverage and
-    /// helper lanes as the straightforward path, and writes the colors of
-    /// the winning pixels. The slice computes the same gl_FragDepth and
-    /// discards as the full shader, and a lane depends only on its quad, so
-    /// the tile ends with the same bytes as [`FragmentStage::shade`] over
-    /// the bin. On an error `fb` is left partly drawn: the caller redraws
-    /// the tile the straightforward way to get the same error and pixels.
-    pub fn shade_deferred<'p>(
-        &self,
-        depth: &dyn ShaderStage,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        match self.isa {
-            #[cfg(target_arch = "x86_64")]
-            // SAFETY: `isa` is only Avx512 when the CPU has the features
-            // (`simd::detect`).
-            Isa::Avx512 => unsafe {
-                self.shade_deferred_avx512(depth, fb, prims, bin, tile, scratch)
-            },
-            #[cfg(target_arch = "x86_64")]
-            // SAFETY: likewise for AVX2.
-            Isa::Avx2 => unsafe { self.shade_deferred_avx2(depth, fb, prims, bin, tile, scratch) },
-            _ => self.shade_deferred_with(depth, fb, prims, bin, tile, scratch),
-        }
-    }
-
-    /// [`FragmentStage::shade_deferred`] compiled for AVX2 (its quad
-    /// loops, depth tests and f64 quad set-up inlined: the same
-    /// operations).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt")]
-    unsafe fn shade_deferred_avx2<'p>(
-        &self,
-        depth: &dyn ShaderStage,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        self.shade_deferred_with(depth, fb, prims, bin, tile, scratch)
-    }
-
-    /// [`FragmentStage::shade_deferred`] compiled for AVX-512.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,popcnt,bmi1,lzcnt,avx512f,avx512dq,avx512vl")]
-    unsafe fn shade_deferred_avx512<'p>(
-        &self,
-        depth: &dyn ShaderStage,
-        fb: &mut Framebuffer,
-        prims: &[&'p Prim],
-        bin: &[u32],
-        tile: PixelRect,
-        scratch: &mut Scratch<'p>,
-    ) -> Result<(), ExecError> {
-        self.shade_deferred_with(depth, fb, prims, bin, tile, scratch)
+    exec::multiversion! {
+        /// The primitives `bin` (indices into `prims`, in draw order) inside
+        /// `tile`, shading colors only for the fragments that end up visible.
+        /// Only for a stage with [`FragmentStage::deferred`] and per-fragment
+        /// operations where the last fragment to pass the depth test decides
+        /// a pixel's color ([`fragment_ops::last_writer_wins`]).
+        ///
+        /// Pass 1 runs the depth-only slice on every fragment (without
+        /// gl_FragDepth: every fragment early depth rejection keeps), four
+        /// quads at a time, and sends them through the depth test in draw
+        /// order, keeping
+        /// per pixel the primitive of the last fragment that passed (and that
+        /// quad's coverage). Pass 2 runs the full shader once per (primitive,
+        /// quad) that won a pixel, with the same quad inputs, coverage and
+        /// helper lanes as the straightforward path, and writes the colors of
+        /// the winning pixels. The slice computes the same gl_FragDepth and
+        /// discards as the full shader, and a lane depends only on its quad, so
+        /// the tile ends with the same bytes as [`FragmentStage::shade`] over
+        /// the bin. On an error `fb` is left partly drawn: the caller redraws
+        /// the tile the straightforward way to get the same error and pixels.
+        ///
+        /// Compiled for the stage's level (its quad loops, depth tests and
+        /// f64 quad set-up inlined into each copy: the same operations).
+        pub fn shade_deferred<'p>(
+            &self,
+            depth: &dyn ShaderStage,
+            fb: &mut Framebuffer,
+            prims: &[&'p Prim],
+            bin: &[u32],
+            tile: PixelRect,
+            scratch: &mut Scratch<'p>,
+        ) -> Result<(), ExecError>;
+        level = self.level,
+        copies = [shade_deferred_portable, shade_deferred_avx2, shade_deferred_avx512],
+        body = self.shade_deferred_with(depth, fb, prims, bin, tile, scratch)
     }
 
     /// The depth pass of [`FragmentStage::shade_deferred`] on the quads
@@ -271,7 +234,7 @@ impl<'a> FragmentStage<'a> {
                     // Without blending, the batch's colours converted
                     // together (as `write_quick` does).
                     Some([r, g, b, a]) if target.opaque() => {
-                        let rgba = fragment_ops::unorm8_batch(self.isa, [r, g, b, a]);
+                        let rgba = fragment_ops::unorm8_batch(self.level, [r, g, b, a]);
                         for &(lane, index) in writes {
                             if let Some(&c) = rgba.get(lane) {
                                 target.write_rgba8(index, c);

@@ -84,7 +84,7 @@ fn time_lookups(units: &TextureUnits, reqs: &[SampleRequest]) {
     let mut sink = 0.0f32;
     // Each supported instruction set's fast path, then the general
     // path; alternating rounds, best of each (the machine is shared).
-    let isas: Vec<Isa> = [Isa::Portable, Isa::Avx2, Isa::Avx512]
+    let isas: Vec<Level> = [Level::Portable, Level::Avx2, Level::Avx512]
         .into_iter()
         .filter(|i| {
             i.supported() && std::env::var("BENCH_ISA").map_or(true, |v| v == format!("{i:?}"))

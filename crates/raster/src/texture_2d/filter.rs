@@ -274,38 +274,40 @@ fn gather<const SIMD: bool, const K: usize>(
     gather_unorm8(levels, level, idx, raw);
 }
 
-/// Texels `idx[k][lane]` of `texels` (never empty), as little-endian RGBA8
-/// words, by the AVX2 gather instruction, eight lanes at a time.
-///
-/// # Safety
-/// The CPU must support AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn gather_unorm8_avx2<const K: usize>(
-    texels: &[[u8; 4]],
-    idx: &[[u32; LANES]; K],
-    raw: &mut [[u32; LANES]; K],
-) {
-    use std::arch::x86_64::*;
-    // Every index is below the level's width × height ≤ 2^31 − 1, which
-    // it holds (`Store::Unorm8`); the clamp to the last texel keeps that
-    // local (and the index non-negative as an i32).
-    let last = texels.len().saturating_sub(1).min(i32::MAX as usize) as i32;
-    // SAFETY: the loads and stores are of 8 consecutive elements inside
-    // `idx[k]` and `raw[k]` (offset 0 or 8 of 16); each gathered index is
-    // in 0..=last, so every 4-byte read is of a texel of `texels`.
-    unsafe {
-        let last = _mm256_set1_epi32(last);
-        for k in 0..K {
-            for o in [0, 8] {
-                let i = _mm256_loadu_si256(idx[k].as_ptr().add(o).cast());
-                let i = _mm256_min_epu32(i, last);
-                let v = _mm256_i32gather_epi32::<4>(texels.as_ptr().cast(), i);
-                _mm256_storeu_si256(raw[k].as_mut_ptr().add(o).cast(), v);
+exec::compiled_for!(
+    avx2,
+    /// Texels `idx[k][lane]` of `texels` (never empty), as little-endian RGBA8
+    /// words, by the AVX2 gather instruction, eight lanes at a time.
+    ///
+    /// # Safety
+    /// The CPU must run `Level::Avx2` (the code calling it is compiled for
+    /// it: the `SIMD` copies of the fast path).
+    unsafe fn gather_unorm8_avx2<const K: usize>(
+        texels: &[[u8; 4]],
+        idx: &[[u32; LANES]; K],
+        raw: &mut [[u32; LANES]; K],
+    ) {
+        use std::arch::x86_64::*;
+        // Every index is below the level's width × height ≤ 2^31 − 1, which
+        // it holds (`Store::Unorm8`); the clamp to the last texel keeps that
+        // local (and the index non-negative as an i32).
+        let last = texels.len().saturating_sub(1).min(i32::MAX as usize) as i32;
+        // SAFETY: the loads and stores are of 8 consecutive elements inside
+        // `idx[k]` and `raw[k]` (offset 0 or 8 of 16); each gathered index is
+        // in 0..=last, so every 4-byte read is of a texel of `texels`.
+        unsafe {
+            let last = _mm256_set1_epi32(last);
+            for k in 0..K {
+                for o in [0, 8] {
+                    let i = _mm256_loadu_si256(idx[k].as_ptr().add(o).cast());
+                    let i = _mm256_min_epu32(i, last);
+                    let v = _mm256_i32gather_epi32::<4>(texels.as_ptr().cast(), i);
+                    _mm256_storeu_si256(raw[k].as_mut_ptr().add(o).cast(), v);
+                }
             }
         }
     }
-}
+);
 
 /// Texels `idx[k][lane]` of level `level[lane]` (of [`Store::Unorm8`](super::storage::Store::Unorm8)),
 /// as little-endian RGBA8 words: scalar loads (from one level's texels

@@ -7,7 +7,7 @@ use std::sync::Arc;
 
 /// [`super::sample_with`] through `units`, as `TextureUnits` calls it.
 pub(super) fn sample_with(
-    isa: Isa,
+    isa: Level,
     units: &TextureUnits,
     req: &SampleRequest,
     out: &mut [[f32; LANES]; 4],
@@ -18,7 +18,7 @@ pub(super) fn sample_with(
 /// [`super::sample_implicit_with`] through `units`, as `TextureUnits`
 /// calls it.
 fn sample_implicit_with(
-    isa: Isa,
+    isa: Level,
     units: &TextureUnits,
     unit: u32,
     st: [&[f32; LANES]; 2],
@@ -111,7 +111,7 @@ fn fast_path_matches_the_general_path_bit_for_bit() {
     ];
     let wraps = [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat];
     let mut checked = 0;
-    let isas: Vec<Isa> = [Isa::Portable, Isa::Avx2, Isa::Avx512]
+    let isas: Vec<Level> = [Level::Portable, Level::Avx2, Level::Avx512]
         .into_iter()
         .filter(|i| i.supported())
         .collect();
@@ -284,7 +284,7 @@ fn nearby_lanes_match_the_general_path() {
         seed = crate::lcg_step(seed);
         (seed >> 8) as f32 / 16_777_216.0
     };
-    let isas: Vec<Isa> = [Isa::Portable, Isa::Avx2, Isa::Avx512]
+    let isas: Vec<Level> = [Level::Portable, Level::Avx2, Level::Avx512]
         .into_iter()
         .filter(|i| i.supported())
         .collect();
@@ -455,7 +455,7 @@ fn checked_entries_follow_the_units_textures() {
         units.units[0].tex_2d = Some(Arc::new(tex));
         let slow = general(&units, &req);
         let mut fast = [[0.0; LANES]; 4];
-        if sample_with(Isa::current(), &units, &req, &mut fast) {
+        if sample_with(current_level(), &units, &req, &mut fast) {
             assert_eq!(
                 fast.map(|c| c.map(f32::to_bits)),
                 slow.map(|c| c.map(f32::to_bits))
@@ -526,7 +526,7 @@ fn other_requests_take_the_general_path() {
     };
     let mut out = [[0.0; LANES]; 4];
     assert!(sample_with(
-        Isa::current(),
+        current_level(),
         &units(tex.clone()),
         &req([0; LANES]),
         &mut out
@@ -535,7 +535,7 @@ fn other_requests_take_the_general_path() {
     let mut two = [0; LANES];
     two[2] = 1;
     assert!(!sample_with(
-        Isa::current(),
+        current_level(),
         &units(tex.clone()),
         &req(two),
         &mut out
@@ -546,7 +546,7 @@ fn other_requests_take_the_general_path() {
         ..req(two)
     };
     assert!(sample_with(
-        Isa::current(),
+        current_level(),
         &units(tex.clone()),
         &masked,
         &mut out
@@ -555,7 +555,7 @@ fn other_requests_take_the_general_path() {
     let mut border = tex.clone();
     border.wrap[1] = Wrap::ClampToBorder;
     assert!(!sample_with(
-        Isa::current(),
+        current_level(),
         &units(border),
         &req([0; LANES]),
         &mut out
@@ -563,7 +563,7 @@ fn other_requests_take_the_general_path() {
     let mut depth = tex.clone();
     depth.depth_format = true;
     assert!(!sample_with(
-        Isa::current(),
+        current_level(),
         &units(depth),
         &req([0; LANES]),
         &mut out
@@ -571,7 +571,7 @@ fn other_requests_take_the_general_path() {
     let mut incomplete = tex;
     incomplete.levels.truncate(1);
     assert!(!sample_with(
-        Isa::current(),
+        current_level(),
         &units(incomplete),
         &req([0; LANES]),
         &mut out

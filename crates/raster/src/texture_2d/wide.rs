@@ -452,31 +452,33 @@ mod tests {
     /// p (64-bit element) holds lane `LANE_OF[k][p]`.
     const LANE_OF: [[usize; 4]; 4] = [[0, 1, 4, 5], [2, 3, 6, 7], [8, 9, 12, 13], [10, 11, 14, 15]];
 
-    /// `to_lanes` of registers holding `m[c][lane] − 16384`.
-    #[target_feature(enable = "avx2,fma")]
-    unsafe fn to_lanes_of(m: &[[i32; LANES]; 4]) -> [[f32; LANES]; 4] {
-        let mut regs = [_mm256_setzero_si256(); 4];
-        for (k, r) in regs.iter_mut().enumerate() {
-            let mut words = [0i16; 16];
-            for (p, &lane) in LANE_OF[k].iter().enumerate() {
-                for c in 0..4 {
-                    words[4 * p + c] = (m[c][lane] - 16384) as i16;
+    exec::compiled_for!(
+        avx2,
+        /// `to_lanes` of registers holding `m[c][lane] − 16384`.
+        unsafe fn to_lanes_of(m: &[[i32; LANES]; 4]) -> [[f32; LANES]; 4] {
+            let mut regs = [_mm256_setzero_si256(); 4];
+            for (k, r) in regs.iter_mut().enumerate() {
+                let mut words = [0i16; 16];
+                for (p, &lane) in LANE_OF[k].iter().enumerate() {
+                    for c in 0..4 {
+                        words[4 * p + c] = (m[c][lane] - 16384) as i16;
+                    }
+                }
+                // SAFETY: 32 bytes read from a 16-element i16 array.
+                *r = unsafe { _mm256_loadu_si256(words.as_ptr().cast()) };
+            }
+            // SAFETY: the CPU has AVX2 and FMA (this function's level).
+            let out = unsafe { to_lanes(regs) };
+            let mut lanes = [[0.0f32; LANES]; 4];
+            for c in 0..4 {
+                for (h, &v) in out[c].iter().enumerate() {
+                    // SAFETY: 8 floats written inside a 16-element array.
+                    unsafe { _mm256_storeu_ps(lanes[c].as_mut_ptr().add(8 * h), v) };
                 }
             }
-            // SAFETY: 32 bytes read from a 16-element i16 array.
-            *r = unsafe { _mm256_loadu_si256(words.as_ptr().cast()) };
+            lanes
         }
-        // SAFETY: the CPU has AVX2 and FMA (this function's features).
-        let out = unsafe { to_lanes(regs) };
-        let mut lanes = [[0.0f32; LANES]; 4];
-        for c in 0..4 {
-            for (h, &v) in out[c].iter().enumerate() {
-                // SAFETY: 8 floats written inside a 16-element array.
-                unsafe { _mm256_storeu_ps(lanes[c].as_mut_ptr().add(8 * h), v) };
-            }
-        }
-        lanes
-    }
+    );
 
     /// Every fixed-point value becomes `unorm8_filter::value`'s float in
     /// its own lane and channel.
