@@ -1001,3 +1001,32 @@ fn debug_printf_prints_per_lane_in_execution_order() {
     assert_eq!(t.0.len(), 2);
     assert!(t.0[1].starts_with("x=1.5 i=1"));
 }
+
+/// Every program of the shader library compiles to native code (a kernel
+/// the JIT declines runs interpreted, slower, with no other sign).
+#[test]
+fn library_shaders_compile_to_native_code() {
+    if !Variant::Jit.supported() || crate::kernel_variant() != Variant::Jit {
+        return;
+    }
+    let mut bad = Vec::new();
+    for entry in std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../../shaders")).unwrap() {
+        let p = entry.unwrap().path();
+        let stage = match p.extension().and_then(|e| e.to_str()) {
+            Some("vert") => Stage::Vertex,
+            Some("frag") => Stage::Fragment,
+            _ => continue,
+        };
+        let src = std::fs::read_to_string(&p).unwrap();
+        let Ok(s) = link_one(stage, &src) else {
+            continue;
+        };
+        let Ok(k) = Kernel::new(&s) else { continue };
+        k.compile_native();
+        match k.native_code() {
+            Some(Ok(_)) => {}
+            other => bad.push(format!("{}: {:?}", p.display(), other)),
+        }
+    }
+    assert!(bad.is_empty(), "{bad:#?}");
+}
