@@ -160,20 +160,7 @@ fn analyze_with(
     let mut queued = vec![true; nblocks];
     while let Some(b) = pending.pop_front() {
         queued[b] = false;
-        live.iter_mut().for_each(|w| *w = 0);
-        for &s in &succs[b] {
-            let src = if s >= n {
-                &exit
-            } else {
-                match block_of.get(s) {
-                    Some(&sb) if sb < nblocks => &live_in[sb],
-                    _ => continue,
-                }
-            };
-            for (w, x) in live.iter_mut().zip(src) {
-                *w |= x;
-            }
-        }
+        block_live_out(&mut live, &succs[b], &live_in, &exit, &block_of, n);
         for i in (starts[b]..end_of(b)).rev() {
             transfer(&eff[i], &mut live);
         }
@@ -197,20 +184,7 @@ fn analyze_with(
         Vec::new()
     };
     for b in 0..nblocks {
-        live.iter_mut().for_each(|w| *w = 0);
-        for &s in &succs[b] {
-            let src = if s >= n {
-                &exit
-            } else {
-                match block_of.get(s) {
-                    Some(&sb) if sb < nblocks => &live_in[sb],
-                    _ => continue,
-                }
-            };
-            for (w, x) in live.iter_mut().zip(src) {
-                *w |= x;
-            }
-        }
+        block_live_out(&mut live, &succs[b], &live_in, &exit, &block_of, n);
         for i in (starts[b]..end_of(b)).rev() {
             if let Some(a) = after.get_mut(i) {
                 a.clone_from(&live);
@@ -229,6 +203,32 @@ fn analyze_with(
         store_source_dead,
         after,
     })
+}
+
+/// The registers live at the end of a block: the union of its successors'
+/// live-in sets (`exit` for the end of the program, successor op `n`).
+fn block_live_out(
+    live: &mut [u64],
+    succs: &[usize],
+    live_in: &[Vec<u64>],
+    exit: &[u64],
+    block_of: &[usize],
+    n: usize,
+) {
+    live.iter_mut().for_each(|w| *w = 0);
+    for &s in succs {
+        let src = if s >= n {
+            exit
+        } else {
+            match block_of.get(s).and_then(|&sb| live_in.get(sb)) {
+                Some(b) => b,
+                None => continue,
+            }
+        };
+        for (w, x) in live.iter_mut().zip(src) {
+            *w |= x;
+        }
+    }
 }
 
 fn set(bits: &mut [u64], r: Reg) {
