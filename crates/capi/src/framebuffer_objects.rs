@@ -13,11 +13,11 @@ gl_entry_points! {
         wr(names, &v);
     }
     fn glGenFramebuffersEXT(n: GLsizei, names: *mut GLuint) => |c| {
-        let v = c.gl.gen_framebuffers_ext(n);
+        let v = c.gl.gen_framebuffers(n);
         wr(names, &v);
     }
     fn glBindFramebuffer(target: GLenum, fb: GLuint) => |c| { c.gl.bind_framebuffer(target, fb) }
-    fn glBindFramebufferEXT(target: GLenum, fb: GLuint) => |c| { c.gl.bind_framebuffer_ext(target, fb) }
+    fn glBindFramebufferEXT(target: GLenum, fb: GLuint) => |c| { c.gl.bind_framebuffer(target, fb) }
     fn glDeleteFramebuffers(n: GLsizei, names: *const GLuint) => |c| {
         if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
         c.gl.delete_framebuffers(&rd_vec(names, n as i64));
@@ -31,20 +31,20 @@ gl_entry_points! {
         c.gl.check_framebuffer_status(target)
     }
     fn glCheckFramebufferStatusEXT(target: GLenum) -> GLenum [0] => |c| {
-        c.gl.check_framebuffer_status_ext(target)
+        c.gl.check_framebuffer_status(target)
     }
     fn glFramebufferTexture2D(
         target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint
     ) => |c| { c.gl.framebuffer_texture_2d(target, attachment, textarget, texture, level) }
     fn glFramebufferTexture2DEXT(
         target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint
-    ) => |c| { c.gl.framebuffer_texture_2d_ext(target, attachment, textarget, texture, level) }
+    ) => |c| { c.gl.framebuffer_texture_2d(target, attachment, textarget, texture, level) }
     fn glFramebufferRenderbuffer(
         target: GLenum, attachment: GLenum, rbtarget: GLenum, rb: GLuint
     ) => |c| { c.gl.framebuffer_renderbuffer(target, attachment, rbtarget, rb) }
     fn glFramebufferRenderbufferEXT(
         target: GLenum, attachment: GLenum, rbtarget: GLenum, rb: GLuint
-    ) => |c| { c.gl.framebuffer_renderbuffer_ext(target, attachment, rbtarget, rb) }
+    ) => |c| { c.gl.framebuffer_renderbuffer(target, attachment, rbtarget, rb) }
 
     // ---- renderbuffers ----
     fn glGenRenderbuffers(n: GLsizei, names: *mut GLuint) => |c| {
@@ -52,11 +52,11 @@ gl_entry_points! {
         wr(names, &v);
     }
     fn glGenRenderbuffersEXT(n: GLsizei, names: *mut GLuint) => |c| {
-        let v = c.gl.gen_renderbuffers_ext(n);
+        let v = c.gl.gen_renderbuffers(n);
         wr(names, &v);
     }
     fn glBindRenderbuffer(target: GLenum, rb: GLuint) => |c| { c.gl.bind_renderbuffer(target, rb) }
-    fn glBindRenderbufferEXT(target: GLenum, rb: GLuint) => |c| { c.gl.bind_renderbuffer_ext(target, rb) }
+    fn glBindRenderbufferEXT(target: GLenum, rb: GLuint) => |c| { c.gl.bind_renderbuffer(target, rb) }
     fn glDeleteRenderbuffers(n: GLsizei, names: *const GLuint) => |c| {
         if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
         c.gl.delete_renderbuffers(&rd_vec(names, n as i64));
@@ -69,6 +69,6 @@ gl_entry_points! {
         c.gl.renderbuffer_storage(target, internal, w, h)
     }
     fn glRenderbufferStorageEXT(target: GLenum, internal: GLenum, w: GLsizei, h: GLsizei) => |c| {
-        c.gl.renderbuffer_storage_ext(target, internal, w, h)
+        c.gl.renderbuffer_storage(target, internal, w, h)
     }
 }

@@ -99,5 +99,5 @@ gl_entry_points! {
         c.gl.tex_sub_image_2d(target, level, xoff, yoff, w, h, format, ty, &bytes);
     }
     fn glGenerateMipmap(target: GLenum) => |c| { c.gl.generate_mipmap(target) }
-    fn glGenerateMipmapEXT(target: GLenum) => |c| { c.gl.generate_mipmap_ext(target) }
+    fn glGenerateMipmapEXT(target: GLenum) => |c| { c.gl.generate_mipmap(target) }
 }

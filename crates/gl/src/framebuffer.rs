@@ -7,7 +7,9 @@
 //! attachments must be RGB/RGBA/RED/RG; ALPHA, LUMINANCE and INTENSITY are
 //! GL_FRAMEBUFFER_UNSUPPORTED); a draw, clear or read on an incomplete
 //! framebuffer is GL_INVALID_FRAMEBUFFER_OPERATION. How attached images
-//! become a render target is [`crate::render_target`]'s job.
+//! become a render target is [`crate::render_target`]'s job. The EXT
+//! names of these calls (glBindFramebufferEXT...) behave as the core ones:
+//! the C layer maps both names to the one method here.
 
 use crate::enums::*;
 use crate::objects::{
@@ -33,11 +35,6 @@ impl Context {
         )
     }
 
-    /// glGenRenderbuffersEXT.
-    pub fn gen_renderbuffers_ext(&mut self, n: i32) -> Vec<u32> {
-        self.gen_renderbuffers(n)
-    }
-
     /// glBindRenderbuffer(EXT).
     pub fn bind_renderbuffer(&mut self, target: u32, rb: u32) {
         if target != GL_RENDERBUFFER {
@@ -48,11 +45,6 @@ impl Context {
             self.objects.renderbuffers.entry(rb).or_default();
         }
         self.objects.bound_renderbuffer = rb;
-    }
-
-    /// glBindRenderbufferEXT.
-    pub fn bind_renderbuffer_ext(&mut self, target: u32, rb: u32) {
-        self.bind_renderbuffer(target, rb);
     }
 
     /// glDeleteRenderbuffers(EXT).
@@ -106,11 +98,6 @@ impl Context {
         };
     }
 
-    /// glRenderbufferStorageEXT.
-    pub fn renderbuffer_storage_ext(&mut self, target: u32, internal: u32, w: i32, h: i32) {
-        self.renderbuffer_storage(target, internal, w, h);
-    }
-
     // ---- framebuffers ----
 
     /// glGenFramebuffers(EXT).
@@ -125,11 +112,6 @@ impl Context {
             n,
             FramebufferObj::new,
         )
-    }
-
-    /// glGenFramebuffersEXT.
-    pub fn gen_framebuffers_ext(&mut self, n: i32) -> Vec<u32> {
-        self.gen_framebuffers(n)
     }
 
     /// glBindFramebuffer(EXT).
@@ -153,11 +135,6 @@ impl Context {
         if target != GL_DRAW_FRAMEBUFFER {
             self.objects.read_framebuffer = fb;
         }
-    }
-
-    /// glBindFramebufferEXT.
-    pub fn bind_framebuffer_ext(&mut self, target: u32, fb: u32) {
-        self.bind_framebuffer(target, fb);
     }
 
     /// glDeleteFramebuffers(EXT): bindings revert to the default framebuffer.
@@ -282,18 +259,6 @@ impl Context {
         );
     }
 
-    /// glFramebufferTexture2DEXT.
-    pub fn framebuffer_texture_2d_ext(
-        &mut self,
-        target: u32,
-        attachment: u32,
-        textarget: u32,
-        texture: u32,
-        level: i32,
-    ) {
-        self.framebuffer_texture_2d(target, attachment, textarget, texture, level);
-    }
-
     /// glFramebufferTexture1D(EXT).
     pub fn framebuffer_texture_1d(
         &mut self,
@@ -327,17 +292,6 @@ impl Context {
         }
         let a = (rb != 0).then_some(Attachment::Renderbuffer(rb));
         self.set_attachment(fb, attachment, a);
-    }
-
-    /// glFramebufferRenderbufferEXT.
-    pub fn framebuffer_renderbuffer_ext(
-        &mut self,
-        target: u32,
-        attachment: u32,
-        rbtarget: u32,
-        rb: u32,
-    ) {
-        self.framebuffer_renderbuffer(target, attachment, rbtarget, rb);
     }
 
     /// Size and internal format of an attachment's image.
@@ -443,11 +397,6 @@ impl Context {
             }
         };
         self.framebuffer_status(fb)
-    }
-
-    /// glCheckFramebufferStatusEXT.
-    pub fn check_framebuffer_status_ext(&mut self, target: u32) -> u32 {
-        self.check_framebuffer_status(target)
     }
 
     /// glDrawBuffers.

@@ -32,11 +32,6 @@ impl Context {
             }
         }
     }
-
-    /// glGenerateMipmapEXT.
-    pub fn generate_mipmap_ext(&mut self, target: u32) {
-        self.generate_mipmap(target);
-    }
 }
 
 /// Box-filters levels base+1.. from the base level (GL 2.1 §3.8.8,

@@ -194,9 +194,9 @@ fn render_to_texture_then_sample_it() {
         None,
     );
     ctx.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
-    let fb = ctx.gen_framebuffers_ext(1)[0];
-    ctx.bind_framebuffer_ext(GL_FRAMEBUFFER_EXT, fb);
-    ctx.framebuffer_texture_2d_ext(
+    let fb = ctx.gen_framebuffers(1)[0];
+    ctx.bind_framebuffer(GL_FRAMEBUFFER_EXT, fb);
+    ctx.framebuffer_texture_2d(
         GL_FRAMEBUFFER_EXT,
         GL_COLOR_ATTACHMENT0_EXT,
         GL_TEXTURE_2D,
@@ -204,7 +204,7 @@ fn render_to_texture_then_sample_it() {
         0,
     );
     assert_eq!(
-        ctx.check_framebuffer_status_ext(GL_FRAMEBUFFER_EXT),
+        ctx.check_framebuffer_status(GL_FRAMEBUFFER_EXT),
         GL_FRAMEBUFFER_COMPLETE_EXT
     );
     ctx.viewport(0, 0, 4, 4);
@@ -218,7 +218,7 @@ fn render_to_texture_then_sample_it() {
     // Float color buffer: written unclamped? GL 2.1 clamps fragment colors.
     let c = pixel(&mut ctx, 1, 1);
     assert!(close(c, [1.0, 0.5, 0.0, 1.0]), "{c:?}");
-    ctx.bind_framebuffer_ext(GL_FRAMEBUFFER_EXT, 0);
+    ctx.bind_framebuffer(GL_FRAMEBUFFER_EXT, 0);
     ctx.viewport(0, 0, 8, 8);
     program(
         &mut ctx,
@@ -306,7 +306,7 @@ fn threaded_scene(threads: usize) -> (Vec<u8>, Vec<u8>, Vec<u8>, Option<String>)
         GL_UNSIGNED_BYTE,
         Some(&texels),
     );
-    ctx.generate_mipmap_ext(GL_TEXTURE_2D);
+    ctx.generate_mipmap(GL_TEXTURE_2D);
     ctx.tex_parameteri(
         GL_TEXTURE_2D,
         GL_TEXTURE_MIN_FILTER,
