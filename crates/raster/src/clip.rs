@@ -64,10 +64,10 @@ impl Planes {
         }
     }
 
-    /// Where along `inside → outside` plane `p` cuts (0 at `inside`).
-    fn cut(&self, p: usize, inside: &ClipVertex, outside: &ClipVertex) -> f64 {
-        let (di, do_) = (self.distance_f64(p, inside), self.distance_f64(p, outside));
-        di / (di - do_)
+    /// Where along `from → to` plane `p` cuts (0 at `from`, 1 at `to`).
+    fn cut(&self, p: usize, from: &ClipVertex, to: &ClipVertex) -> f64 {
+        let (df, dt) = (self.distance_f64(p, from), self.distance_f64(p, to));
+        df / (df - dt)
     }
 
     /// [`Planes::distance`] of a vertex at `pos` (eye-space `eye`).
@@ -134,7 +134,7 @@ impl Planes {
                     }
                 }
                 (false, true) => {
-                    let t = 1.0 - self.cut(p, b, a);
+                    let t = self.cut(p, a, b);
                     if t > t0.0 {
                         t0 = (t, Some(p));
                     }
