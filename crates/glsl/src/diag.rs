@@ -298,13 +298,12 @@ pub fn did_you_mean<'a>(
     name: &str,
     candidates: impl IntoIterator<Item = &'a str>,
 ) -> Option<&'a str> {
-    let max = crate::limits::MAX_SUGGESTED_NAME_LEN;
-    if name.len() > max {
+    if !suggestible(name) {
         return None;
     }
     let mut best: Option<(f64, &str)> = None;
     for c in candidates {
-        if c == name || c.len() > max {
+        if c == name || !suggestible(c) {
             continue;
         }
         let score = strsim::jaro_winkler(name, c);
@@ -315,6 +314,12 @@ pub fn did_you_mean<'a>(
         }
     }
     best.map(|(_, c)| c)
+}
+
+/// Whether a name is short enough to be compared for "did you mean"
+/// ([`crate::limits::MAX_SUGGESTED_NAME_LEN`]).
+pub fn suggestible(name: &str) -> bool {
+    name.len() <= crate::limits::MAX_SUGGESTED_NAME_LEN
 }
 
 /// `word` with its indefinite article: "an int", "a vec3".

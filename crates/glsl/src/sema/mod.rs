@@ -419,7 +419,7 @@ impl Analyzer {
     /// short enough to compare and this shader's budget of searches is not
     /// spent (each search costs one comparison per visible name).
     pub fn may_suggest(&mut self, name: &str) -> bool {
-        if name.len() > crate::limits::MAX_SUGGESTED_NAME_LEN || self.suggestions_left == 0 {
+        if !crate::diag::suggestible(name) || self.suggestions_left == 0 {
             return false;
         }
         self.suggestions_left -= 1;
