@@ -25,9 +25,10 @@ pub struct Args {
     #[arg(long)]
     pub link: bool,
 
-    /// The GLSL version of files without a `#version` directive.
-    #[arg(long, value_enum, value_name = "VERSION")]
-    pub glsl_version: Option<GlslVersion>,
+    /// The GLSL version of files without a `#version` directive: 110, 120,
+    /// 130, 140, 150 or 330.
+    #[arg(long, value_parser = parse_glsl_version, value_name = "VERSION")]
+    pub glsl_version: Option<Version>,
 
     /// The stage of every file, instead of guessing it from the extension
     /// (.vert/.vs: vertex, .frag/.fs: fragment).
@@ -49,21 +50,21 @@ pub struct Args {
     pub files: Vec<PathBuf>,
 }
 
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum GlslVersion {
-    #[value(name = "110")]
-    V110,
-    #[value(name = "120")]
-    V120,
-}
-
-impl From<GlslVersion> for Version {
-    fn from(v: GlslVersion) -> Version {
-        match v {
-            GlslVersion::V110 => Version::V110,
-            GlslVersion::V120 => Version::V120,
-        }
-    }
+/// `--glsl-version N`: one of the versions the compiler knows.
+fn parse_glsl_version(text: &str) -> Result<Version, String> {
+    text.parse::<u32>()
+        .ok()
+        .and_then(Version::from_number)
+        .ok_or_else(|| {
+            let known: Vec<String> = Version::ALL
+                .iter()
+                .map(|v| v.number().to_string())
+                .collect();
+            format!(
+                "`{text}' is not a GLSL version shaderbox knows ({})",
+                known.join(", ")
+            )
+        })
 }
 
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -158,7 +159,7 @@ fn check(args: &Args) -> Result<Report, (Exit, String)> {
         let name = input.path.display().to_string();
         let opts = CompileOptions {
             name: name.clone(),
-            default_version: args.glsl_version.map(Version::from),
+            default_version: args.glsl_version,
             ..CompileOptions::new(input.stage)
         };
         let shader = guarded(|| glsl::compile(&[input.text.as_str()], &opts)).map_err(|p| {
@@ -288,7 +289,7 @@ fn render_text(report: &Report, link_requested: bool, color: bool) -> String {
             "{status}: {} ({} shader, GLSL {})",
             s.source.name,
             s.stage.name(),
-            s.version.dotted()
+            s.language.version.dotted()
         );
         if errors > 0 || warnings > 0 {
             let mut parts = Vec::new();
@@ -416,7 +417,7 @@ mod tests {
         Shader {
             stage: Stage::Fragment,
             source: SourceMap::new(name, text),
-            version: Version::V110,
+            language: glsl::Language::new(Version::V110, true),
             module: None,
             diagnostics,
         }

@@ -105,19 +105,32 @@ impl Verdict {
 /// The version a test asks for.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Requested {
-    /// 1.10 or 1.20 of desktop GLSL.
-    Supported(Version),
+    /// A version of desktop GLSL shaderbox implements, and whether the
+    /// context is a compatibility one (every request but `core`).
+    Supported {
+        version: Version,
+        compatibility_context: bool,
+    },
     /// A well-formed version shaderbox does not implement.
     Other,
 }
 
 /// Parses piglit's version argument: `MAJOR.MINOR` with two minor digits,
-/// optionally followed by `es`, `core` or `compatibility`.
+/// optionally followed (with or without a space) by `es`, `core` or
+/// `compatibility`.
 pub fn parse_version(text: &str) -> Result<Requested, String> {
     let ill_formed = || format!("Ill-formed GLSL version number: {text}");
     let mut words = text.split_whitespace();
-    let number = words.next().ok_or_else(ill_formed)?;
-    let profile = words.next();
+    let first = words.next().ok_or_else(ill_formed)?;
+    // piglit writes `1.50 core` but also `1.50compatibility`.
+    let (number, glued) = match first.find(|c: char| c.is_ascii_alphabetic()) {
+        Some(i) => (&first[..i], Some(&first[i..])),
+        None => (first, None),
+    };
+    let profile = match glued {
+        Some(p) => Some(p),
+        None => words.next(),
+    };
     if words.next().is_some() || !matches!(profile, None | Some("es" | "core" | "compatibility")) {
         return Err(ill_formed());
     }
@@ -129,7 +142,10 @@ pub fn parse_version(text: &str) -> Result<Requested, String> {
     let n = major.parse::<u32>().map_err(|_| ill_formed())? * 100
         + minor.parse::<u32>().map_err(|_| ill_formed())?;
     match (Version::from_number(n), profile) {
-        (Some(v), None | Some("compatibility")) => Ok(Requested::Supported(v)),
+        (Some(version), None | Some("compatibility" | "core")) => Ok(Requested::Supported {
+            version,
+            compatibility_context: profile != Some("core"),
+        }),
         _ => Ok(Requested::Other),
     }
 }
@@ -182,19 +198,23 @@ fn evaluate(args: &Args) -> Outcome {
             )
         }
     };
-    match parse_version(&args.version) {
+    let compatibility_context = match parse_version(&args.version) {
         Err(e) => return Outcome::new(Verdict::Fail, e),
         Ok(Requested::Other) => {
             return Outcome::new(
                 Verdict::Skip,
                 format!(
-                    "Test requires GLSL {}; shaderbox implements GLSL 1.10 and 1.20",
-                    args.version
+                    "Test requires GLSL {}; shaderbox implements desktop GLSL {}",
+                    args.version,
+                    Version::ALL.map(|v| v.dotted()).join(", ")
                 ),
             )
         }
-        Ok(Requested::Supported(_)) => {}
-    }
+        Ok(Requested::Supported {
+            compatibility_context,
+            ..
+        }) => compatibility_context,
+    };
     if args.dummy_shader_include || args.shader_include_path.is_some() {
         return Outcome::new(
             Verdict::Skip,
@@ -214,7 +234,8 @@ fn evaluate(args: &Args) -> Outcome {
         Err(e) => return Outcome::new(Verdict::Fail, e),
     };
     let file = args.file.display().to_string();
-    let result = guarded(|| compile_and_link(&text, stage, &file, args.check_link));
+    let result =
+        guarded(|| compile_and_link(&text, stage, &file, args.check_link, compatibility_context));
     let (ok, log) = match result {
         Ok(r) => r,
         Err(panic) => {
@@ -232,9 +253,16 @@ fn evaluate(args: &Args) -> Outcome {
 
 /// Compiles the shader and, when asked, links it alone into a program:
 /// whether both succeeded, and the info logs.
-fn compile_and_link(text: &str, stage: Stage, file: &str, check_link: bool) -> (bool, String) {
+fn compile_and_link(
+    text: &str,
+    stage: Stage,
+    file: &str,
+    check_link: bool,
+    compatibility_context: bool,
+) -> (bool, String) {
     let opts = CompileOptions {
         name: file.to_string(),
+        compatibility_context,
         ..CompileOptions::new(stage)
     };
     let shader: Shader = glsl::compile(&[text], &opts);
@@ -299,19 +327,25 @@ mod tests {
 
     #[test]
     fn versions() {
-        assert_eq!(
-            parse_version("1.10"),
-            Ok(Requested::Supported(Version::V110))
-        );
-        assert_eq!(
-            parse_version("1.20"),
-            Ok(Requested::Supported(Version::V120))
-        );
+        let supported = |version, compatibility_context| {
+            Ok(Requested::Supported {
+                version,
+                compatibility_context,
+            })
+        };
+        assert_eq!(parse_version("1.10"), supported(Version::V110, true));
+        assert_eq!(parse_version("1.20"), supported(Version::V120, true));
         assert_eq!(
             parse_version("1.20 compatibility"),
-            Ok(Requested::Supported(Version::V120))
+            supported(Version::V120, true)
         );
-        assert_eq!(parse_version("1.50"), Ok(Requested::Other));
+        assert_eq!(parse_version("1.50"), supported(Version::V150, true));
+        assert_eq!(parse_version("3.30 core"), supported(Version::V330, false));
+        assert_eq!(
+            parse_version("1.50compatibility"),
+            supported(Version::V150, true)
+        );
+        assert_eq!(parse_version("4.00"), Ok(Requested::Other));
         assert_eq!(parse_version("1.00"), Ok(Requested::Other));
         assert_eq!(parse_version("3.00 es"), Ok(Requested::Other));
         assert_eq!(parse_version("1.10 es"), Ok(Requested::Other));
@@ -392,7 +426,7 @@ mod tests {
         assert_eq!(e(args("/none/t.geom", "1.50", &[])), Verdict::Skip);
         assert_eq!(e(args("/none/t.comp", "1.20", &[])), Verdict::Skip);
         assert_eq!(e(args("/none/t.vert", "3.00 es", &[])), Verdict::Skip);
-        assert_eq!(e(args("/none/t.vert", "1.30", &[])), Verdict::Skip);
+        assert_eq!(e(args("/none/t.vert", "4.00", &[])), Verdict::Skip);
         assert_eq!(
             e(args("/none/t.vert", "1.20", &["GL_ARB_foo"])),
             Verdict::Skip

@@ -347,7 +347,7 @@ fn parsertest_skips() {
     let p = temp_shader("pt-skip", "ok.vert", VALID_VERT);
     let g = temp_shader("pt-skip", "ok.geom", "void main() {}\n");
     for args in [
-        vec!["glslparsertest", &p, "pass", "1.50"],
+        vec!["glslparsertest", &p, "pass", "4.00"],
         vec!["glslparsertest", &p, "pass", "3.00 es"],
         vec!["glslparsertest", &p, "pass", "1.20", "GL_ARB_gpu_shader5"],
         vec!["glslparsertest", &g, "pass", "1.50"],

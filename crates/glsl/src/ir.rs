@@ -19,8 +19,8 @@
 pub mod print;
 
 use crate::builtin_fn::BuiltinFn;
+use crate::lang::Language;
 use crate::source::Span;
-use crate::token::Version;
 use crate::types::{StructDef, Type};
 use serde::Serialize;
 
@@ -444,7 +444,7 @@ pub enum ExtensionBehavior {
 /// One analyzed shader object.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Module {
-    pub version: Version,
+    pub language: Language,
     pub stage: Stage,
     pub structs: Vec<StructDef>,
     pub globals: Vec<Global>,

@@ -1,4 +1,4 @@
-//! # shaderbox-glsl: the GLSL 1.10/1.20 front end
+//! # shaderbox-glsl: the GLSL front end (1.10 to 3.30)
 //!
 //! Source text in, a typed and validated IR ([`ir::Module`]) or a list of
 //! [`diag::Diagnostic`]s out; then the link-time checks of a GL program
@@ -10,9 +10,12 @@
 //! ```
 //!
 //! ## Contract
-//! - Follows the GLSL 1.10 and 1.20 specifications, chosen per shader by
-//!   `#version` (default 110). A shader that the spec allows compiles; one
-//!   it forbids gets at least one error with a location.
+//! - Follows the GLSL specification of the shader's language
+//!   ([`lang::Language`]: `#version`, default 110, the profile and the
+//!   enabled extensions). A shader that the spec allows compiles; one it
+//!   forbids gets at least one error with a location. Which version,
+//!   profile or extension each construct needs is stated once, in
+//!   [`lang::Language::gate`] and the keyword table of [`token`].
 //! - Never panics on any input and always terminates: macro expansion,
 //!   nesting depth and token counts are bounded ([`limits`]).
 //! - Reports every independent error of a compile, not only the first.
@@ -21,9 +24,12 @@
 //!   platform's).
 //!
 //! ## Limitations
-//! - GLSL ES and versions other than 1.10 and 1.20 are rejected.
-//! - No extension is supported beyond what `#extension` needs to accept
-//!   (`all : warn`, unknown extensions with `warn`/`disable`).
+//! - GLSL ES is rejected. `#version 130` to `330` are accepted and read
+//!   with the GLSL 1.20 language plus what [`lang::Feature`] lists; the
+//!   rest of those versions (their types, qualifiers, blocks and built-ins)
+//!   is being added, and a construct not yet there is a compile error.
+//! - Extensions: those of [`lang::Extension`]; others are accepted by
+//!   `#extension` only with `warn`/`disable`.
 
 pub mod ast;
 pub mod builtin_fn;
@@ -31,6 +37,7 @@ pub mod builtins;
 pub mod consteval;
 pub mod diag;
 pub mod ir;
+pub mod lang;
 pub mod lex;
 pub mod limits;
 pub mod link;
@@ -46,8 +53,8 @@ pub mod validate;
 
 pub use diag::{Code, Diagnostic, Severity};
 pub use ir::Stage;
+pub use lang::{Language, Profile, Version};
 pub use source::{Loc, SourceMap, Span};
-pub use token::Version;
 
 /// What to compile and how.
 #[derive(Clone, Debug)]
@@ -58,6 +65,11 @@ pub struct CompileOptions {
     /// The version of a shader without `#version`; `None` means 1.10, as
     /// the spec says.
     pub default_version: Option<Version>,
+    /// Whether the context offers the compatibility profile: it decides the
+    /// profile of a `#version 140` shader (GL_ARB_compatibility) and
+    /// whether `#version 150 compatibility` is accepted. GL 2.1 contexts
+    /// and `shaderbox check` say yes.
+    pub compatibility_context: bool,
 }
 
 impl CompileOptions {
@@ -66,6 +78,7 @@ impl CompileOptions {
             stage,
             name: String::from("<shader>"),
             default_version: None,
+            compatibility_context: true,
         }
     }
 }
@@ -75,8 +88,9 @@ impl CompileOptions {
 pub struct Shader {
     pub stage: Stage,
     pub source: SourceMap,
-    /// The version from `#version` (or 1.10 without one).
-    pub version: Version,
+    /// The version from `#version` (or 1.10 without one), the profile, and
+    /// the extensions the shader enables.
+    pub language: Language,
     /// The analyzed module; present only when there are no errors.
     pub module: Option<ir::Module>,
     pub diagnostics: Vec<Diagnostic>,
@@ -107,17 +121,18 @@ pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
         &pp::PpOptions {
             stage: opts.stage,
             default_version: opts.default_version.unwrap_or(Version::V110),
+            compatibility_context: opts.compatibility_context,
         },
     );
     let mut diagnostics = pp_out.diagnostics;
-    let version = pp_out.version;
+    let language = pp_out.language;
     let pp_failed = diagnostics.iter().any(Diagnostic::is_error);
     let mut module = None;
     if !pp_failed {
-        let (tu, parse_diags) = parse::parse(&pp_out.tokens, version);
+        let (tu, parse_diags) = parse::parse(&pp_out.tokens, language);
         diagnostics.extend(parse_diags);
         let ctx = sema::Context {
-            version,
+            language,
             stage: opts.stage,
             extensions: pp_out.extensions.clone(),
             invariant_all: pp_out.invariant_all,
@@ -153,7 +168,7 @@ pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
     Shader {
         stage: opts.stage,
         source,
-        version,
+        language,
         module,
         diagnostics,
     }

@@ -270,11 +270,11 @@ fn merge_stage(
 ) -> Option<LinkedStage> {
     let first = objects[0].1;
     let mut merged = Module {
-        version: objects
+        language: objects
             .iter()
-            .map(|(_, m)| m.version)
-            .max()
-            .unwrap_or(first.version),
+            .map(|(_, m)| m.language)
+            .max_by_key(|l| l.version)
+            .unwrap_or(first.language),
         stage,
         structs: Vec::new(),
         globals: Vec::new(),

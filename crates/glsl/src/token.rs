@@ -2,45 +2,14 @@
 //! expansion, with identifiers classified into keywords for the shader's
 //! `#version`.
 
+use crate::lang::{Language, Version};
 use crate::source::Span;
 use smol_str::SmolStr;
 
-/// A language version this front end accepts.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
-pub enum Version {
-    V110,
-    V120,
-}
-
-impl Version {
-    /// The number as written after `#version`.
-    pub fn number(self) -> u32 {
-        match self {
-            Version::V110 => 110,
-            Version::V120 => 120,
-        }
-    }
-
-    pub fn from_number(n: u32) -> Option<Version> {
-        match n {
-            110 => Some(Version::V110),
-            120 => Some(Version::V120),
-            _ => None,
-        }
-    }
-
-    /// "1.10" / "1.20", as error messages spell it.
-    pub fn dotted(self) -> &'static str {
-        match self {
-            Version::V110 => "1.10",
-            Version::V120 => "1.20",
-        }
-    }
-}
-
 macro_rules! keywords {
     ($($variant:ident = $text:literal $(since $v:ident)?;)*) => {
-        /// Keywords of GLSL 1.10 and 1.20 (§3.6 of each spec).
+        /// Keywords of GLSL 1.10 to 3.30 (§3.6 of each spec), each with
+        /// the first version that has it.
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
         pub enum Keyword { $($variant),* }
 
@@ -116,59 +85,142 @@ keywords! {
     Sampler1DShadow = "sampler1DShadow";
     Sampler2DShadow = "sampler2DShadow";
     Struct = "struct";
+    Flat = "flat" since V130;
+    Smooth = "smooth" since V130;
+    Noperspective = "noperspective" since V130;
+    Switch = "switch" since V130;
+    Case = "case" since V130;
+    Default = "default" since V130;
+    Uint = "uint" since V130;
+    Uvec2 = "uvec2" since V130;
+    Uvec3 = "uvec3" since V130;
+    Uvec4 = "uvec4" since V130;
+    Lowp = "lowp" since V130;
+    Mediump = "mediump" since V130;
+    Highp = "highp" since V130;
+    Precision = "precision" since V130;
+    SamplerCubeShadow = "samplerCubeShadow" since V130;
+    Sampler1DArray = "sampler1DArray" since V130;
+    Sampler2DArray = "sampler2DArray" since V130;
+    Sampler1DArrayShadow = "sampler1DArrayShadow" since V130;
+    Sampler2DArrayShadow = "sampler2DArrayShadow" since V130;
+    Isampler1D = "isampler1D" since V130;
+    Isampler2D = "isampler2D" since V130;
+    Isampler3D = "isampler3D" since V130;
+    IsamplerCube = "isamplerCube" since V130;
+    Isampler1DArray = "isampler1DArray" since V130;
+    Isampler2DArray = "isampler2DArray" since V130;
+    Usampler1D = "usampler1D" since V130;
+    Usampler2D = "usampler2D" since V130;
+    Usampler3D = "usampler3D" since V130;
+    UsamplerCube = "usamplerCube" since V130;
+    Usampler1DArray = "usampler1DArray" since V130;
+    Usampler2DArray = "usampler2DArray" since V130;
+    Layout = "layout" since V140;
+    Sampler2DRect = "sampler2DRect" since V140;
+    Sampler2DRectShadow = "sampler2DRectShadow" since V140;
+    Isampler2DRect = "isampler2DRect" since V140;
+    Usampler2DRect = "usampler2DRect" since V140;
+    SamplerBuffer = "samplerBuffer" since V140;
+    IsamplerBuffer = "isamplerBuffer" since V140;
+    UsamplerBuffer = "usamplerBuffer" since V140;
+    Sampler2DMS = "sampler2DMS" since V150;
+    Isampler2DMS = "isampler2DMS" since V150;
+    Usampler2DMS = "usampler2DMS" since V150;
+    Sampler2DMSArray = "sampler2DMSArray" since V150;
+    Isampler2DMSArray = "isampler2DMSArray" since V150;
+    Usampler2DMSArray = "usampler2DMSArray" since V150;
 }
 
-/// Words reserved for future use in both versions (§3.6): using one is an
-/// error.
-const RESERVED_BOTH: &[&str] = &[
-    "asm",
-    "class",
-    "union",
-    "enum",
-    "typedef",
-    "template",
-    "this",
-    "packed",
-    "goto",
-    "switch",
-    "default",
-    "inline",
-    "noinline",
-    "volatile",
-    "public",
-    "static",
-    "extern",
-    "external",
-    "interface",
-    "long",
-    "short",
-    "double",
-    "half",
-    "fixed",
-    "unsigned",
-    "input",
-    "output",
-    "hvec2",
-    "hvec3",
-    "hvec4",
-    "dvec2",
-    "dvec3",
-    "dvec4",
-    "fvec2",
-    "fvec3",
-    "fvec4",
-    "sampler2DRect",
-    "sampler3DRect",
-    "sampler2DRectShadow",
-    "sizeof",
-    "cast",
-    "namespace",
-    "using",
-];
-
-/// Words reserved in 1.20 only (§3.6 of the 1.20 spec adds the precision
-/// qualifiers of GLSL ES).
-const RESERVED_120: &[&str] = &["lowp", "mediump", "highp", "precision"];
+/// Words reserved for future use (§3.6), with the first version that
+/// reserves each: using one is an error. A word that later becomes a
+/// keyword (`switch`, `precision`, `sampler2DRect`) is listed here for the
+/// versions before; the keyword table wins from its version on.
+const RESERVED: &[(&str, Version)] = &{
+    use Version::{V110, V120, V130};
+    [
+        ("asm", V110),
+        ("class", V110),
+        ("union", V110),
+        ("enum", V110),
+        ("typedef", V110),
+        ("template", V110),
+        ("this", V110),
+        ("packed", V110),
+        ("goto", V110),
+        ("switch", V110),
+        ("default", V110),
+        ("inline", V110),
+        ("noinline", V110),
+        ("volatile", V110),
+        ("public", V110),
+        ("static", V110),
+        ("extern", V110),
+        ("external", V110),
+        ("interface", V110),
+        ("long", V110),
+        ("short", V110),
+        ("double", V110),
+        ("half", V110),
+        ("fixed", V110),
+        ("unsigned", V110),
+        ("input", V110),
+        ("output", V110),
+        ("hvec2", V110),
+        ("hvec3", V110),
+        ("hvec4", V110),
+        ("dvec2", V110),
+        ("dvec3", V110),
+        ("dvec4", V110),
+        ("fvec2", V110),
+        ("fvec3", V110),
+        ("fvec4", V110),
+        ("sampler2DRect", V110),
+        ("sampler3DRect", V110),
+        ("sampler2DRectShadow", V110),
+        ("sizeof", V110),
+        ("cast", V110),
+        ("namespace", V110),
+        ("using", V110),
+        // The precision qualifiers of GLSL ES, reserved by 1.20.
+        ("lowp", V120),
+        ("mediump", V120),
+        ("highp", V120),
+        ("precision", V120),
+        ("common", V130),
+        ("partition", V130),
+        ("active", V130),
+        ("superp", V130),
+        ("samplerBuffer", V130),
+        ("filter", V130),
+        ("image1D", V130),
+        ("image2D", V130),
+        ("image3D", V130),
+        ("imageCube", V130),
+        ("iimage1D", V130),
+        ("iimage2D", V130),
+        ("iimage3D", V130),
+        ("iimageCube", V130),
+        ("uimage1D", V130),
+        ("uimage2D", V130),
+        ("uimage3D", V130),
+        ("uimageCube", V130),
+        ("image1DArray", V130),
+        ("image2DArray", V130),
+        ("iimage1DArray", V130),
+        ("iimage2DArray", V130),
+        ("uimage1DArray", V130),
+        ("uimage2DArray", V130),
+        ("image1DShadow", V130),
+        ("image2DShadow", V130),
+        ("image1DArrayShadow", V130),
+        ("image2DArrayShadow", V130),
+        ("imageBuffer", V130),
+        ("iimageBuffer", V130),
+        ("uimageBuffer", V130),
+        ("row_major", V130),
+    ]
+};
 
 /// How the lexer classifies an identifier-shaped word.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -179,16 +231,20 @@ pub enum WordClass {
     Identifier,
 }
 
-/// Classifies `word` for `version`. Keywords of a later version are plain
-/// identifiers in an earlier one (`invariant` is an identifier in 1.10).
-pub fn classify(word: &str, version: Version) -> WordClass {
+/// Classifies `word` for `lang`. A keyword of a later version is reserved
+/// in an earlier one when §3.6 reserves it there, and a plain identifier
+/// otherwise (`invariant` is an identifier in 1.10).
+pub fn classify(word: &str, lang: Language) -> WordClass {
+    let version = lang.version;
     if let Some(k) = Keyword::lookup(word) {
         if k.since() <= version {
             return WordClass::Keyword(k);
         }
-        return WordClass::Identifier;
     }
-    if RESERVED_BOTH.contains(&word) || (version >= Version::V120 && RESERVED_120.contains(&word)) {
+    if RESERVED
+        .iter()
+        .any(|&(w, since)| w == word && since <= version)
+    {
         return WordClass::Reserved;
     }
     WordClass::Identifier
@@ -393,16 +449,45 @@ mod tests {
 
     #[test]
     fn classification_by_version() {
-        assert_eq!(classify("invariant", Version::V110), WordClass::Identifier);
+        let l = |v| Language::new(v, true);
         assert_eq!(
-            classify("invariant", Version::V120),
+            classify("invariant", l(Version::V110)),
+            WordClass::Identifier
+        );
+        assert_eq!(
+            classify("invariant", l(Version::V120)),
             WordClass::Keyword(Keyword::Invariant)
         );
-        assert_eq!(classify("precision", Version::V110), WordClass::Identifier);
-        assert_eq!(classify("precision", Version::V120), WordClass::Reserved);
-        assert_eq!(classify("switch", Version::V110), WordClass::Reserved);
         assert_eq!(
-            classify("vec3", Version::V110),
+            classify("precision", l(Version::V110)),
+            WordClass::Identifier
+        );
+        assert_eq!(classify("precision", l(Version::V120)), WordClass::Reserved);
+        assert_eq!(
+            classify("precision", l(Version::V130)),
+            WordClass::Keyword(Keyword::Precision)
+        );
+        assert_eq!(classify("switch", l(Version::V110)), WordClass::Reserved);
+        assert_eq!(
+            classify("switch", l(Version::V130)),
+            WordClass::Keyword(Keyword::Switch)
+        );
+        assert_eq!(classify("case", l(Version::V120)), WordClass::Identifier);
+        assert_eq!(
+            classify("samplerBuffer", l(Version::V120)),
+            WordClass::Identifier
+        );
+        assert_eq!(
+            classify("samplerBuffer", l(Version::V130)),
+            WordClass::Reserved
+        );
+        assert_eq!(
+            classify("samplerBuffer", l(Version::V140)),
+            WordClass::Keyword(Keyword::SamplerBuffer)
+        );
+        assert_eq!(classify("layout", l(Version::V130)), WordClass::Identifier);
+        assert_eq!(
+            classify("vec3", l(Version::V110)),
             WordClass::Keyword(Keyword::Vec3)
         );
     }

@@ -67,9 +67,16 @@ fn stage_of(name: &str) -> PyResult<glsl::Stage> {
 fn version_of(v: Option<u32>) -> PyResult<Option<glsl::Version>> {
     match v {
         None => Ok(None),
-        Some(n) => report::parse_version(n)
-            .map(Some)
-            .ok_or_else(|| PyValueError::new_err(format!("version {n} is not 110 or 120"))),
+        Some(n) => glsl::Version::from_number(n).map(Some).ok_or_else(|| {
+            let known: Vec<String> = glsl::Version::ALL
+                .iter()
+                .map(|v| v.number().to_string())
+                .collect();
+            PyValueError::new_err(format!(
+                "version {n} is not a GLSL version shaderbox knows ({})",
+                known.join(", ")
+            ))
+        }),
     }
 }
 

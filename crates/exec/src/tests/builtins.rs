@@ -37,7 +37,7 @@ fn parse_type(name: &str) -> Option<Type> {
 /// vertex-stage 1.20 prelude with non-sampler arguments.
 fn overloads() -> Vec<(BuiltinFn, String, Vec<Type>, Type)> {
     let mut out = Vec::new();
-    for line in prelude(Version::V120, Stage::Vertex).lines() {
+    for line in prelude(glsl::Language::new(Version::V120, true), Stage::Vertex).lines() {
         let Some(line) = line.strip_suffix(");") else {
             continue;
         };

@@ -33,11 +33,11 @@ pub const BUILTIN_STRUCT_NAMES: &[&str] = &[
 mod struct_name_tests {
     #[test]
     fn every_builtin_struct_is_declared_by_the_preludes() {
-        use crate::{ir::Stage, token::Version};
+        use crate::{ir::Stage, lang::Language, lang::Version};
         for name in super::BUILTIN_STRUCT_NAMES {
             for v in [Version::V110, Version::V120] {
                 for s in [Stage::Vertex, Stage::Fragment] {
-                    let text = super::prelude(v, s);
+                    let text = super::prelude(Language::new(v, true), s);
                     assert!(text.contains(&format!("struct {name} {{")), "{name}");
                 }
             }

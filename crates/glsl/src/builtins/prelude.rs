@@ -22,38 +22,30 @@
 //! `#version` line and has no other preprocessor directive.
 
 use crate::ir::Stage;
+use crate::lang::{Language, Version};
 use crate::limits;
-use crate::token::Version;
 use std::fmt::Write;
-use std::sync::OnceLock;
 
-/// The built-in declarations for `version` and `stage`, built once per
-/// combination and then shared.
-pub fn prelude(version: Version, stage: Stage) -> &'static str {
-    static CACHE: [OnceLock<String>; 4] = [
-        OnceLock::new(),
-        OnceLock::new(),
-        OnceLock::new(),
-        OnceLock::new(),
-    ];
-    let index = match (version, stage) {
-        (Version::V110, Stage::Vertex) => 0,
-        (Version::V110, Stage::Fragment) => 1,
-        (Version::V120, Stage::Vertex) => 2,
-        (Version::V120, Stage::Fragment) => 3,
-    };
-    CACHE[index].get_or_init(|| build(version, stage)).as_str()
+/// The built-in declarations for `lang` and `stage` (the semantic
+/// analyzer caches what it makes of them).
+pub fn prelude(lang: Language, stage: Stage) -> String {
+    build(lang, stage)
 }
 
 /// `genType` of §8: the argument and result types of component-wise
 /// functions.
 const GEN_TYPES: [&str; 4] = ["float", "vec2", "vec3", "vec4"];
 
-fn build(version: Version, stage: Stage) -> String {
+fn build(lang: Language, stage: Stage) -> String {
+    let version = lang.version;
     let mut out = String::with_capacity(32 * 1024);
     // The preprocessor classifies keywords by the `#version` it sees, so the
     // prelude states its own (`mat2x3` is a type only in 1.20).
-    let _ = writeln!(out, "#version {}", version.number());
+    if version.has_profiles() {
+        let _ = writeln!(out, "#version {} {}", version.number(), lang.profile.name());
+    } else {
+        let _ = writeln!(out, "#version {}", version.number());
+    }
     let _ = writeln!(
         out,
         "// Built-in declarations of GLSL {} ({} shader).",
@@ -186,10 +178,11 @@ uniform gl_LightProducts gl_BackLightProduct[gl_MaxLights];
 ",
     );
     // 1.10 §7.5 sizes gl_TextureEnvColor by the texture image units, 1.20
-    // §7.5 by the fixed-function texture units.
-    let env_size = match version {
-        Version::V110 => "gl_MaxTextureImageUnits",
-        Version::V120 => "gl_MaxTextureUnits",
+    // §7.5 (and later) by the fixed-function texture units.
+    let env_size = if version >= Version::V120 {
+        "gl_MaxTextureUnits"
+    } else {
+        "gl_MaxTextureImageUnits"
     };
     let _ = writeln!(out, "uniform vec4 gl_TextureEnvColor[{env_size}];");
     for plane in ["Eye", "Object"] {
@@ -259,7 +252,7 @@ varying vec4 gl_TexCoord[];
 varying float gl_FogFragCoord;
 ",
     );
-    if version == Version::V120 {
+    if version >= Version::V120 {
         out.push_str("varying vec2 gl_PointCoord;\n");
     }
 }
@@ -302,7 +295,7 @@ fn matrices(version: Version) -> Vec<(String, u8, u8)> {
         for rows in 2u8..=4 {
             if cols == rows {
                 list.push((format!("mat{cols}"), cols, rows));
-            } else if version == Version::V120 {
+            } else if version >= Version::V120 {
                 list.push((format!("mat{cols}x{rows}"), cols, rows));
             }
         }
@@ -366,7 +359,7 @@ fn functions(out: &mut String, version: Version, stage: Stage) {
     for (m, _, _) in matrices(version) {
         proto(out, &m, "matrixCompMult", &[&m, &m]);
     }
-    if version == Version::V120 {
+    if version >= Version::V120 {
         for (m, cols, rows) in matrices(version) {
             // Column vector c (rows components) times row vector r (cols).
             let c = format!("vec{rows}");
@@ -462,6 +455,11 @@ mod tests {
     use super::*;
     use crate::builtins::BuiltinFn;
 
+    /// The prelude of a version in a compatibility context.
+    fn prelude(v: Version, s: Stage) -> String {
+        super::prelude(Language::new(v, true), s)
+    }
+
     const ALL: [(Version, Stage); 4] = [
         (Version::V110, Stage::Vertex),
         (Version::V110, Stage::Fragment),
@@ -488,7 +486,7 @@ mod tests {
     }
 
     fn has(v: Version, s: Stage, name: &str) -> bool {
-        declares_fn(prelude(v, s), name)
+        declares_fn(&prelude(v, s), name)
     }
 
     #[test]
@@ -550,20 +548,20 @@ mod tests {
     fn variables_per_stage() {
         use Stage::{Fragment, Vertex};
         use Version::{V110, V120};
-        assert!(declares_var(prelude(V120, Fragment), "gl_PointCoord"));
+        assert!(declares_var(&prelude(V120, Fragment), "gl_PointCoord"));
         for (v, s) in [(V110, Fragment), (V110, Vertex), (V120, Vertex)] {
-            assert!(!declares_var(prelude(v, s), "gl_PointCoord"));
+            assert!(!declares_var(&prelude(v, s), "gl_PointCoord"));
         }
         for v in [V110, V120] {
             let vs = prelude(v, Vertex);
             let fs = prelude(v, Fragment);
-            assert!(vs.contains("\nvec4 gl_Position;\n") && !declares_var(fs, "gl_Position"));
+            assert!(vs.contains("\nvec4 gl_Position;\n") && !declares_var(&fs, "gl_Position"));
             assert!(vs.contains("attribute vec4 gl_Color;"));
             assert!(fs.contains("varying vec4 gl_Color;"));
             assert!(fs.contains("\nvec4 gl_FragData[gl_MaxDrawBuffers];\n"));
-            assert!(!declares_var(vs, "gl_FragColor") && !declares_var(vs, "gl_FrontFacing"));
-            assert!(!declares_var(fs, "gl_FrontColor") && !declares_var(fs, "gl_MultiTexCoord0"));
-            for text in [vs, fs] {
+            assert!(!declares_var(&vs, "gl_FragColor") && !declares_var(&vs, "gl_FrontFacing"));
+            assert!(!declares_var(&fs, "gl_FrontColor") && !declares_var(&fs, "gl_MultiTexCoord0"));
+            for text in [&vs, &fs] {
                 assert!(text.contains("const int gl_MaxLights = 8;"));
                 assert!(
                     text.contains("uniform gl_LightSourceParameters gl_LightSource[gl_MaxLights];")
@@ -581,7 +579,7 @@ mod tests {
         use crate::lex::{lex, LexOptions, PpKind};
         use crate::token::{classify, WordClass};
         for (v, s) in ALL {
-            let text = prelude(v, s);
+            let text = &prelude(v, s);
             assert!(text.is_ascii());
             assert!(text.starts_with(&format!("#version {}\n", v.number())));
             assert_eq!(text.matches('#').count(), 1);
@@ -590,16 +588,14 @@ mod tests {
             for t in &tokens {
                 assert!(!matches!(t.kind, PpKind::Other(_)));
                 if t.kind == PpKind::Ident {
-                    assert_ne!(classify(&t.text, v), WordClass::Reserved, "{}", t.text);
+                    assert_ne!(
+                        classify(&t.text, Language::new(v, true)),
+                        WordClass::Reserved,
+                        "{}",
+                        t.text
+                    );
                 }
             }
         }
-    }
-
-    #[test]
-    fn cached_per_version_and_stage() {
-        let a = prelude(Version::V120, Stage::Vertex);
-        assert!(std::ptr::eq(a, prelude(Version::V120, Stage::Vertex)));
-        assert_ne!(a, prelude(Version::V120, Stage::Fragment));
     }
 }

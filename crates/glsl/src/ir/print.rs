@@ -122,9 +122,14 @@ impl<'a> Printer<'a> {
         let m = self.m;
         w!(
             self,
-            "// {} shader, #version {}\n",
+            "// {} shader, #version {}{}\n",
             m.stage.name(),
-            m.version.number()
+            m.language.version.number(),
+            if m.language.version.has_profiles() {
+                format!(" {}", m.language.profile.name())
+            } else {
+                String::new()
+            }
         );
         for (name, behavior) in &m.extensions {
             let b = match behavior {

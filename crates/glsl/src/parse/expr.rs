@@ -6,8 +6,9 @@
 
 use super::{PResult, Parser};
 use crate::ast::*;
+use crate::lang::Version;
 use crate::source::Span;
-use crate::token::{Keyword, Punct, TokenKind, Version};
+use crate::token::{Keyword, Punct, TokenKind};
 
 /// Expressions are returned boxed: on the deeply recursive expression path
 /// a `Box` is much cheaper to pass around than the node itself (unoptimized
@@ -141,7 +142,7 @@ impl Parser<'_> {
         self.bump();
         let then = self.expression()?;
         self.expect_punct(Punct::Colon)?;
-        let else_ = if self.version >= Version::V120 {
+        let else_ = if self.lang.version >= Version::V120 {
             self.assignment()?
         } else {
             self.enter()?;

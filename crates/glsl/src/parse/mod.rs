@@ -37,15 +37,16 @@ mod tests;
 
 use crate::ast::{ExternalDecl, TranslationUnit};
 use crate::diag::{Code, Diagnostic};
+use crate::lang::Language;
 use crate::limits;
 use crate::source::Span;
-use crate::token::{Keyword, Punct, Token, TokenKind, Version};
+use crate::token::{Keyword, Punct, Token, TokenKind};
 use scope::Scopes;
 
 /// Parses a whole shader. `tokens` normally ends with [`TokenKind::Eof`];
 /// one is assumed if it is missing, and nothing after the first `Eof` is read.
 /// Never panics; every problem is in the returned diagnostics.
-pub fn parse(tokens: &[Token], version: Version) -> (TranslationUnit, Vec<Diagnostic>) {
+pub fn parse(tokens: &[Token], lang: Language) -> (TranslationUnit, Vec<Diagnostic>) {
     let owned: Vec<Token>;
     let toks = if matches!(tokens.last(), Some(t) if t.kind == TokenKind::Eof) {
         tokens
@@ -59,7 +60,7 @@ pub fn parse(tokens: &[Token], version: Version) -> (TranslationUnit, Vec<Diagno
         owned = v;
         &owned
     };
-    let mut p = Parser::new(toks, version);
+    let mut p = Parser::new(toks, lang);
     let tu = p.translation_unit();
     (tu, p.diags)
 }
@@ -75,7 +76,7 @@ pub(super) struct Parser<'t> {
     /// Never empty; the last token is `Eof`.
     toks: &'t [Token],
     pos: usize,
-    version: Version,
+    lang: Language,
     diags: Vec<Diagnostic>,
     scopes: Scopes,
     depth: u32,
@@ -93,11 +94,11 @@ pub(super) struct Parser<'t> {
 }
 
 impl<'t> Parser<'t> {
-    fn new(toks: &'t [Token], version: Version) -> Parser<'t> {
+    fn new(toks: &'t [Token], lang: Language) -> Parser<'t> {
         Parser {
             toks,
             pos: 0,
-            version,
+            lang,
             diags: Vec::new(),
             scopes: Scopes::new(),
             depth: 0,
@@ -267,7 +268,10 @@ impl<'t> Parser<'t> {
         let d = Diagnostic::error(
             Code::ReservedWord,
             self.span(),
-            format!("`{word}' is reserved in GLSL {}", self.version.dotted()),
+            format!(
+                "`{word}' is reserved in GLSL {}",
+                self.lang.version.dotted()
+            ),
         )
         .with_note(reserved_note(&word));
         self.report(d);

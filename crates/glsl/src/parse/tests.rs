@@ -5,9 +5,15 @@
 use super::parse;
 use crate::ast::*;
 use crate::diag::{Code, Diagnostic};
+use crate::lang::{Language, Version};
 use crate::lex::{self, PpKind};
 use crate::source::Span;
-use crate::token::{classify, Keyword, Token, TokenKind, Version, WordClass};
+use crate::token::{classify, Keyword, Token, TokenKind, WordClass};
+
+/// The language of `#version v` in a compatibility context.
+fn lang(v: Version) -> Language {
+    Language::new(v, true)
+}
 
 /// Test-only tokenizer: text to parser tokens, ending with `Eof`. Lines
 /// starting with `#` are dropped; characters the language does not use are
@@ -32,7 +38,7 @@ pub(crate) fn tokens(src: &str, version: Version) -> Vec<Token> {
             continue;
         }
         let kind = match &t.kind {
-            PpKind::Ident => match classify(&t.text, version) {
+            PpKind::Ident => match classify(&t.text, lang(version)) {
                 WordClass::Keyword(k) => TokenKind::Keyword(k),
                 WordClass::Reserved => TokenKind::Reserved(t.text.clone()),
                 WordClass::Identifier => TokenKind::Identifier(t.text.clone()),
@@ -87,7 +93,7 @@ pub(crate) fn version_of(src: &str) -> Version {
 }
 
 fn run(src: &str, version: Version) -> (TranslationUnit, Vec<Diagnostic>) {
-    parse(&tokens(src, version), version)
+    parse(&tokens(src, version), lang(version))
 }
 
 /// Parses in GLSL 1.20 and asserts there are no diagnostics.
@@ -214,12 +220,12 @@ fn quals(q: &[SpannedQualifier]) -> Vec<Qualifier> {
 #[test]
 fn empty_input_and_missing_eof() {
     assert!(ok("").items.is_empty());
-    let (tu, d) = parse(&[], Version::V110);
+    let (tu, d) = parse(&[], lang(Version::V110));
     assert!(tu.items.is_empty() && d.is_empty());
     // Without the final Eof the parser still terminates and reports.
     let mut t = tokens("float x", Version::V110);
     t.pop();
-    let (tu, d) = parse(&t, Version::V110);
+    let (tu, d) = parse(&t, lang(Version::V110));
     assert_eq!(d.len(), 1, "{d:?}");
     assert_eq!(d[0].message, "expected `;', found end of input");
     assert_eq!(tu.items.len(), 0);
@@ -919,7 +925,7 @@ fn repeated(prefix: &str, unit: &str, n: usize, suffix: &str, v: Version) -> Vec
 fn too_deep(prefix: &str, unit: &str, suffix: &str) {
     for v in [Version::V110, Version::V120] {
         let toks = repeated(prefix, unit, 100_000, suffix, v);
-        let (_, d) = parse(&toks, v);
+        let (_, d) = parse(&toks, lang(v));
         assert_eq!(d.len(), 1, "{unit:?}: {d:?}");
         assert_eq!(d[0].message, "nesting too deep");
     }
@@ -947,7 +953,7 @@ fn deep_nesting_is_an_error_not_a_crash() {
     let mut toks = toks;
     toks.pop();
     toks.extend(repeated("1", ")", depth, "; }", Version::V120));
-    let (_, d) = parse(&toks, Version::V120);
+    let (_, d) = parse(&toks, lang(Version::V120));
     assert!(d.is_empty(), "{d:?}");
 }
 
@@ -993,7 +999,7 @@ fn garbage_never_panics() {
             // Every prefix and a truncation at every token must terminate too.
             let toks = tokens(src, v);
             for n in 0..toks.len() {
-                let _ = parse(&toks[..n], v);
+                let _ = parse(&toks[..n], lang(v));
             }
         }
     }
@@ -1116,7 +1122,7 @@ fn piglit_sweep() {
             pp_rejected += 1;
             continue;
         }
-        let result = std::panic::catch_unwind(|| parse(&pp.tokens, pp.version));
+        let result = std::panic::catch_unwind(|| parse(&pp.tokens, pp.language));
         let Ok((_, diags)) = result else {
             panics.push(path.to_string());
             continue;
@@ -1173,7 +1179,7 @@ fn dir_sweep() {
         };
         let v = version_of(&src);
         let toks = tokens(&src, v);
-        let (_, diags) = parse(&toks, v);
+        let (_, diags) = parse(&toks, lang(v));
         if diags.is_empty() {
             clean += 1;
         }
@@ -1233,7 +1239,7 @@ fn mutate_and_parse(src: &str, rounds: usize, seed: u64) {
                 kind: TokenKind::Eof,
                 span: Span::new(end, end),
             });
-            let (_, diags) = parse(&t, v);
+            let (_, diags) = parse(&t, lang(v));
             for d in diags {
                 assert!(d.span.is_some_and(|s| s.end <= end), "{d:?}");
             }

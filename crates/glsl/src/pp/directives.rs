@@ -6,13 +6,14 @@
 
 use super::expr::{unexpected, ExprParser};
 use super::macros::{Macro, PTok, BUILTIN_MACROS};
-use super::{Cond, ExtensionDirective, Line, Preprocessor, SUPPORTED_EXTENSIONS};
+use super::{Cond, ExtensionDirective, Line, Preprocessor};
 use crate::diag::{did_you_mean, Code, Diagnostic};
 use crate::ir::ExtensionBehavior;
+use crate::lang::{Extension, ExtensionSet, Language, Profile, Version};
 use crate::lex::{PpKind, PpToken};
 use crate::limits;
 use crate::source::Span;
-use crate::token::{Punct, Version};
+use crate::token::Punct;
 use smol_str::SmolStr;
 
 const DIRECTIVES: &[&str] = &[
@@ -568,7 +569,8 @@ impl Preprocessor<'_> {
         }
     }
 
-    /// `#version N`: must come first, once; only 110 and 120 (§3.3).
+    /// `#version N [profile]`: must come first, once (§3.3); a profile word
+    /// only from 1.50 on.
     fn d_version(&mut self, d: &Directive) {
         if let Some(first) = self.version_span {
             self.diags.push(
@@ -613,26 +615,62 @@ impl Preprocessor<'_> {
                     number.span,
                     format!("GLSL version `{}' is not supported", number.text),
                 )
-                .with_note("supported versions are 110 (the default) and 120"),
+                .with_note(format!(
+                    "supported versions are {} (110 is the default)",
+                    Version::ALL.map(|v| v.number().to_string()).join(", ")
+                )),
             );
             return;
         };
+        let mut lang = Language::new(version, self.compatibility_context);
+        lang.extensions = self.lang.extensions;
         if let Some(extra) = d.rest.get(1) {
-            let msg = match extra.text.as_str() {
-                "es" => "GLSL ES is not supported (`es' after the version number)".to_string(),
-                "core" | "compatibility" => format!(
+            let profile = match extra.text.as_str() {
+                "core" => Some(Profile::Core),
+                "compatibility" => Some(Profile::Compatibility),
+                _ => None,
+            };
+            let problem = match (profile, extra.text.as_str()) {
+                (_, "es") => {
+                    Some("GLSL ES is not supported (`es' after the version number)".to_string())
+                }
+                (Some(_), _) if !version.has_profiles() => Some(format!(
                     "profile `{}' is not allowed: profiles exist only from GLSL 1.50 on",
                     extra.text
+                )),
+                (Some(Profile::Compatibility), _) if !self.compatibility_context => Some(
+                    "the compatibility profile is not available in a core-profile context"
+                        .to_string(),
                 ),
-                other => format!("unexpected `{other}' after the version number"),
+                (Some(_), _) => None,
+                (None, other) => Some(format!("unexpected `{other}' after the version number")),
             };
-            self.diags.push(
-                Diagnostic::error(Code::PpVersion, extra.span, msg)
-                    .with_note("write `#version 110' or `#version 120'"),
-            );
-            return;
+            if let Some(msg) = problem {
+                let note = if version.has_profiles() {
+                    format!(
+                        "write `#version {0}', `#version {0} core' or `#version {0} compatibility'",
+                        version.number()
+                    )
+                } else {
+                    format!("write `#version {}'", version.number())
+                };
+                self.diags
+                    .push(Diagnostic::error(Code::PpVersion, extra.span, msg).with_note(note));
+                return;
+            }
+            if let Some(p) = profile {
+                lang.profile = p;
+            }
+            if let Some(more) = d.rest.get(2) {
+                self.diags.push(Diagnostic::error(
+                    Code::PpVersion,
+                    more.span,
+                    format!("unexpected `{}' after the profile", more.text),
+                ));
+                return;
+            }
         }
-        self.version = version;
+        self.lang = lang;
     }
 
     /// `#extension name : behavior` (§3.3; not macro-expanded).
@@ -642,7 +680,8 @@ impl Preprocessor<'_> {
         };
         let span = d.full_span();
         let is_all = name.text == "all";
-        let supported = SUPPORTED_EXTENSIONS.contains(&name.text.as_str());
+        let known = Extension::from_name(&name.text);
+        let supported = known.is_some();
         if is_all
             && matches!(
                 behavior,
@@ -677,6 +716,15 @@ impl Preprocessor<'_> {
                 span,
                 "#extension should come before any shader code (§3.3)",
             ));
+        }
+        // `enable`, `require` and `warn` turn a named extension on;
+        // `disable` turns it (or, for `all`, every one) off. `all : warn`
+        // only changes how uses are reported.
+        let on = behavior != ExtensionBehavior::Disable;
+        match known {
+            Some(e) => self.lang.extensions.set(e, on),
+            None if is_all && !on => self.lang.extensions = ExtensionSet::EMPTY,
+            None => {}
         }
         self.extensions.push(ExtensionDirective {
             name: name.text.to_string(),

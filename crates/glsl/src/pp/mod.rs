@@ -28,10 +28,11 @@ mod tests;
 
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{ExtensionBehavior, Stage};
+use crate::lang::{Extension, Feature, Language, Version};
 use crate::lex::{self, LexOptions, PpKind, PpToken};
 use crate::limits;
 use crate::source::{SourceMap, Span};
-use crate::token::{classify, Punct, Token, TokenKind, Version, WordClass};
+use crate::token::{classify, Punct, Token, TokenKind, WordClass};
 use literal::{parse_number, Literal};
 use macros::{Budget, Expander, MacroTable, PTok};
 
@@ -40,6 +41,10 @@ pub struct PpOptions {
     /// The version of a shader without `#version` (GLSL says 1.10;
     /// `shaderbox check --glsl-version` can choose another).
     pub default_version: Version,
+    /// Whether the context offers the compatibility profile (GL 2.1 and
+    /// compatibility contexts do): it decides a 1.40 shader's profile and
+    /// whether `#version 150 compatibility` is accepted.
+    pub compatibility_context: bool,
 }
 
 impl PpOptions {
@@ -47,6 +52,7 @@ impl PpOptions {
         PpOptions {
             stage,
             default_version: Version::V110,
+            compatibility_context: true,
         }
     }
 }
@@ -62,7 +68,9 @@ pub struct ExtensionDirective {
 pub struct PpOutput {
     /// Parser tokens, ending with one `Eof` token.
     pub tokens: Vec<Token>,
-    pub version: Version,
+    /// The shader's language: `#version` (or the default), its profile,
+    /// and the supported extensions enabled at the end of the text.
+    pub language: Language,
     /// Every well-formed `#extension` directive in source order, supported
     /// or not (the name `all` included); unsupported ones were warned about.
     pub extensions: Vec<ExtensionDirective>,
@@ -71,27 +79,8 @@ pub struct PpOutput {
     pub invariant_all: bool,
 }
 
-/// Extensions this implementation supports (each also gets a macro of the
-/// same name with value 1). GL_ARB_draw_buffers: its GLSL side is
-/// `gl_FragData`, which GLSL 1.10 already has; `#extension` must accept it
-/// since the GL layer reports the extension. GL_SHADERBOX_debug_printf:
-/// shaderbox's `debugPrintfEXT` (see [`crate::printf`]).
-pub const SUPPORTED_EXTENSIONS: &[&str] = &["GL_ARB_draw_buffers", PRINTF_EXTENSION];
-
 /// The extension that enables string literals and `debugPrintfEXT`.
 pub const PRINTF_EXTENSION: &str = "GL_SHADERBOX_debug_printf";
-
-/// Whether `#extension` directives (name, behavior, in source order) leave
-/// [`PRINTF_EXTENSION`] enabled: the last one naming it (or `all`) does not
-/// disable it.
-pub(crate) fn printf_enabled<'a>(
-    directives: impl DoubleEndedIterator<Item = (&'a str, ExtensionBehavior)>,
-) -> bool {
-    directives
-        .rev()
-        .find(|(n, _)| *n == PRINTF_EXTENSION || *n == "all")
-        .is_some_and(|(n, b)| n == PRINTF_EXTENSION && b != ExtensionBehavior::Disable)
-}
 
 /// Preprocesses the text of `map`, recording `#line` directives in it.
 /// Never fails: problems are diagnostics, and the token list always ends
@@ -116,7 +105,8 @@ pub(crate) fn preprocess_with_limit(
     let end = text.len() as u32;
     let mut lexer = lex::Lexer::new(&text, lex_opts);
     let mut pp = Preprocessor::new(map, opts.stage, max_tokens);
-    pp.version = opts.default_version;
+    pp.compatibility_context = opts.compatibility_context;
+    pp.lang = Language::new(opts.default_version, opts.compatibility_context);
     // A directive line is gathered whole; text goes to the preprocessor
     // token by token.
     let mut directive: Option<Vec<PpToken>> = None;
@@ -210,7 +200,8 @@ pub(crate) struct Preprocessor<'m> {
     map: &'m mut SourceMap,
     #[allow(dead_code)]
     stage: Stage,
-    version: Version,
+    lang: Language,
+    compatibility_context: bool,
     /// The first `#version` directive.
     version_span: Option<Span>,
     /// Something other than comments and whitespace has been seen.
@@ -236,9 +227,9 @@ pub(crate) struct Preprocessor<'m> {
 impl<'m> Preprocessor<'m> {
     fn new(map: &'m mut SourceMap, stage: Stage, max_tokens: usize) -> Self {
         let mut macros = MacroTable::new();
-        for ext in SUPPORTED_EXTENSIONS {
+        for ext in Extension::ALL {
             macros.insert(
-                (*ext).into(),
+                ext.name().into(),
                 macros::Macro {
                     params: None,
                     body: vec![PpToken {
@@ -254,7 +245,8 @@ impl<'m> Preprocessor<'m> {
         Preprocessor {
             map,
             stage,
-            version: Version::V110,
+            lang: Language::new(Version::V110, true),
+            compatibility_context: true,
             version_span: None,
             seen_content: false,
             macros,
@@ -308,7 +300,7 @@ impl<'m> Preprocessor<'m> {
             in_condition,
             macros: &self.macros,
             map: &*self.map,
-            version: self.version.number(),
+            version: self.lang.version.number(),
             diags: &mut self.diags,
             budget: &mut self.budget,
         }
@@ -352,20 +344,16 @@ impl<'m> Preprocessor<'m> {
         self.out.push(Token { kind, span: t.span });
     }
 
-    /// Whether the last `#extension` directive so far for the printf
-    /// extension (or `all`) enables it.
+    /// Whether the `#extension` directives so far leave the printf
+    /// extension enabled.
     fn printf_enabled(&self) -> bool {
-        printf_enabled(
-            self.extensions
-                .iter()
-                .map(|e| (e.name.as_str(), e.behavior)),
-        )
+        self.lang.has(Extension::ShaderboxDebugPrintf)
     }
 
     /// A preprocessing token to a parser token kind (`None` after an error).
     fn convert(&mut self, t: &PTok) -> Option<TokenKind> {
         match &t.kind {
-            PpKind::Ident => Some(match classify(&t.text, self.version) {
+            PpKind::Ident => Some(match classify(&t.text, self.lang) {
                 WordClass::Keyword(k) => TokenKind::Keyword(k),
                 WordClass::Reserved => TokenKind::Reserved(t.text.clone()),
                 WordClass::Identifier => TokenKind::Identifier(t.text.clone()),
@@ -451,7 +439,7 @@ impl<'m> Preprocessor<'m> {
                 Some(TokenKind::IntLiteral(value as u32))
             }
             Ok(Literal::Float { value, suffix }) => {
-                if suffix && self.version < Version::V120 {
+                if suffix && !self.lang.allows(Feature::FloatSuffix) {
                     self.diags.push(
                         Diagnostic::error(
                             Code::LexBadNumber,
@@ -503,7 +491,7 @@ impl<'m> Preprocessor<'m> {
         });
         PpOutput {
             tokens: self.out,
-            version: self.version,
+            language: self.lang,
             extensions: self.extensions,
             diagnostics: self.diags,
             invariant_all: self.invariant_all,

@@ -353,11 +353,14 @@ fn if_undefined_identifier_is_zero() {
 
 #[test]
 fn version() {
-    assert_eq!(run("void").0.version, Version::V110);
-    assert_eq!(run("#version 120\nvoid").0.version, Version::V120);
-    assert_eq!(run("#version 110\nvoid").0.version, Version::V110);
+    assert_eq!(run("void").0.language.version, Version::V110);
+    assert_eq!(run("#version 120\nvoid").0.language.version, Version::V120);
+    assert_eq!(run("#version 110\nvoid").0.language.version, Version::V110);
     assert_eq!(
-        run("// c\n/* c\n */  #version 120\nvoid").0.version,
+        run("// c\n/* c\n */  #version 120\nvoid")
+            .0
+            .language
+            .version,
         Version::V120
     );
     ok("\n\n   # version 120 // trailing comment\nvoid");
@@ -366,7 +369,10 @@ fn version() {
 #[test]
 fn version_errors() {
     err("#version 100\n", "`100' is not supported");
-    err("#version 130\n", "not supported");
+    err("#version 400\n", "not supported");
+    err("#version 140 core\n", "profiles exist only from GLSL 1.50");
+    err("#version 150 core core\n", "after the profile");
+    err("#version 330 strict\n", "unexpected `strict'");
     err("#version 0\n", "not supported");
     err("#version 999\n", "not supported");
     err("#version 4294967295\n", "not supported");
@@ -384,7 +390,37 @@ fn version_errors() {
     err("#define V 120\n#version V\n", "must come before");
     err("#version V\n", "expected a version number");
     let (out, _) = run("#version 999\n");
-    assert_eq!(out.version, Version::V110);
+    assert_eq!(out.language.version, Version::V110);
+}
+
+#[test]
+fn versions_and_profiles() {
+    use crate::lang::Profile;
+    for (src, version, profile) in [
+        ("#version 130\n", Version::V130, Profile::Compatibility),
+        ("#version 140\n", Version::V140, Profile::Compatibility),
+        ("#version 150\n", Version::V150, Profile::Core),
+        (
+            "#version 150 compatibility\n",
+            Version::V150,
+            Profile::Compatibility,
+        ),
+        ("#version 330 core\n", Version::V330, Profile::Core),
+    ] {
+        let (out, _) = run(src);
+        assert!(messages(&out, Severity::Error).is_empty(), "{src}");
+        assert_eq!(
+            (out.language.version, out.language.profile),
+            (version, profile)
+        );
+    }
+    let mut map = SourceMap::new("t", "#version 150 compatibility\n");
+    let mut opts = PpOptions::new(Stage::Vertex);
+    opts.compatibility_context = false;
+    let out = preprocess(&mut map, &opts);
+    assert!(messages(&out, Severity::Error)
+        .iter()
+        .any(|m| m.contains("not available in a core-profile context")));
 }
 
 #[test]
@@ -694,14 +730,17 @@ fn eof_span_is_end_of_text() {
 fn builtin_prelude_preprocesses_cleanly() {
     for v in [Version::V110, Version::V120] {
         for s in [Stage::Vertex, Stage::Fragment] {
-            let mut map = SourceMap::new("prelude", crate::builtins::prelude(v, s));
+            let mut map = SourceMap::new(
+                "prelude",
+                crate::builtins::prelude(crate::Language::new(v, true), s),
+            );
             let out = preprocess(&mut map, &PpOptions::new(s));
             assert!(
                 out.diagnostics.is_empty(),
                 "{v:?} {s:?}: {:?}",
                 out.diagnostics
             );
-            assert_eq!(out.version, v);
+            assert_eq!(out.language.version, v);
             assert!(out.tokens.len() > 100);
         }
     }

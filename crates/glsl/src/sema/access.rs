@@ -8,9 +8,9 @@ use super::{const_expr, const_int, error_expr, Analyzer};
 use crate::ast::{self, ExprKind as A};
 use crate::diag::{did_you_mean, Code};
 use crate::ir::{self, ExprKind as K, Stage, Storage};
+use crate::lang::Version;
 use crate::limits::MAX_TEXTURE_COORDS;
 use crate::source::Span;
-use crate::token::Version;
 use crate::types::{ArraySize, Base, Scalar, Type};
 
 /// Parses a swizzle: one naming set, 1 to 4 components, each within `size`.
@@ -241,7 +241,7 @@ impl Analyzer {
                     "cannot select `.{}' of a scalar {} in GLSL {}",
                     name.name,
                     self.tn(t),
-                    self.version.dotted()
+                    self.lang.version.dotted()
                 )
             } else {
                 format!(
@@ -313,7 +313,7 @@ impl Analyzer {
             .push("the only method is `.length()' on arrays".into());
             return error_expr(span);
         }
-        if self.version < Version::V120 {
+        if self.lang.version < Version::V120 {
             self.error(
                 Code::VersionTooLow,
                 name.span,

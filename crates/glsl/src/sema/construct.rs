@@ -6,8 +6,8 @@ use super::{error_expr, Analyzer};
 use crate::ast;
 use crate::diag::Code;
 use crate::ir::{self, ExprKind as K};
+use crate::lang::Version;
 use crate::source::Span;
-use crate::token::Version;
 use crate::types::{ArraySize, Base, Type};
 
 impl Analyzer {
@@ -125,7 +125,7 @@ impl Analyzer {
         let first = vals[0].ty;
         if ty.is_matrix() {
             if let Some(m) = vals.iter().find(|v| v.ty.is_matrix()) {
-                if self.version < Version::V120 {
+                if self.lang.version < Version::V120 {
                     self.error(
                         Code::VersionTooLow,
                         m.span,

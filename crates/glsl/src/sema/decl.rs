@@ -5,9 +5,9 @@ use super::Analyzer;
 use crate::ast::{Declaration, InitDeclarator, InitDeclaratorList, Qualifier, SpannedQualifier};
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{self, ExprKind, Global, Stage, Storage};
+use crate::lang::Version;
 use crate::limits::MAX_TEXTURE_COORDS;
 use crate::source::Span;
-use crate::token::Version;
 use crate::types::{ArraySize, Base, Type};
 
 /// The qualifiers of a variable declaration, checked.
@@ -76,7 +76,7 @@ impl Analyzer {
                         sq.span,
                         format!(
                             "`{name}' is only allowed on function parameters in GLSL {}",
-                            self.version.dotted()
+                            self.lang.version.dotted()
                         ),
                     )
                     .notes
@@ -254,7 +254,7 @@ impl Analyzer {
         let mut ty = self.apply_array(base, d.array.as_ref());
         let name = d.name.name.clone();
         self.check_storage_type(q, ty, d);
-        if self.version < Version::V120 && ty.is_array() && d.init.is_some() {
+        if self.lang.version < Version::V120 && ty.is_array() && d.init.is_some() {
             self.error(
                 Code::VersionTooLow,
                 d.span,
@@ -304,7 +304,7 @@ impl Analyzer {
         }
         if q.storage == Some(Qualifier::Uniform) {
             if let Some(e) = &init {
-                if self.version < Version::V120 {
+                if self.lang.version < Version::V120 {
                     self.error(
                         Code::VersionTooLow,
                         e.span,

@@ -7,9 +7,9 @@ use super::{const_expr, error_expr, Analyzer};
 use crate::ast::{self, AssignOp, Callee, ExprKind as A, UnaryOp as AU};
 use crate::diag::Code;
 use crate::ir::{self, BinaryOp as B, ExprKind as K, IncDec};
+use crate::lang::Version;
 use crate::limits::MAX_NESTING_DEPTH;
 use crate::source::Span;
-use crate::token::Version;
 use crate::types::{ArraySize, Base, Scalar, Type};
 
 /// GLSL 1.20 §4.1.10: int → float, ivecN → vecN, nothing else (never for
@@ -220,7 +220,7 @@ impl Analyzer {
             return e;
         }
         if implicitly_converts(e.ty, to) {
-            if self.version >= Version::V120 {
+            if self.lang.version >= Version::V120 {
                 return self.convert(e, to);
             }
             self.error(
@@ -243,7 +243,7 @@ impl Analyzer {
 
     /// GLSL 1.20: converts the int side of a mixed int/float pair to float.
     pub(super) fn balance(&mut self, l: ir::Expr, r: ir::Expr) -> (ir::Expr, ir::Expr) {
-        if self.version < Version::V120 || l.ty.is_array() || r.ty.is_array() {
+        if self.lang.version < Version::V120 || l.ty.is_array() || r.ty.is_array() {
             return (l, r);
         }
         match (l.ty.scalar(), r.ty.scalar()) {
@@ -265,7 +265,7 @@ impl Analyzer {
             span,
             format!(
                 "operator `{op}' is reserved in GLSL {}",
-                self.version.dotted()
+                self.lang.version.dotted()
             ),
         )
         .notes
@@ -470,7 +470,7 @@ impl Analyzer {
         let (lt, rt) = (lv.ty, rv.ty);
         let mismatch = |a: &mut Analyzer, expected: &str| {
             let (l, r) = (a.tn(lt), a.tn(rt));
-            let v110 = a.version < Version::V120;
+            let v110 = a.lang.version < Version::V120;
             let d = a.error(
                 Code::TypeMismatch,
                 span,
@@ -517,7 +517,7 @@ impl Analyzer {
                 if lt != rt || lt.base == Base::Void || self.contains_sampler(lt) {
                     return mismatch(self, "it needs two operands of the same type");
                 }
-                if self.version < Version::V120 && (self.contains_array(lt)) {
+                if self.lang.version < Version::V120 && (self.contains_array(lt)) {
                     self.error(
                         Code::VersionTooLow,
                         span,
@@ -574,7 +574,7 @@ impl Analyzer {
             return error_expr(span);
         }
         let tt = target.ty;
-        if tt.is_array() && self.version < Version::V120 {
+        if tt.is_array() && self.lang.version < Version::V120 {
             self.error(
                 Code::VersionTooLow,
                 span,
@@ -605,7 +605,7 @@ impl Analyzer {
                 )
             }
             Some(o) => {
-                let value = if self.version >= Version::V120
+                let value = if self.lang.version >= Version::V120
                     && tt.scalar() == Some(Scalar::Float)
                     && value.ty.scalar() == Some(Scalar::Int)
                     && !value.ty.is_array()
@@ -673,7 +673,7 @@ impl Analyzer {
             );
             return error_expr(span);
         }
-        if av.ty.is_array() && self.version < Version::V120 {
+        if av.ty.is_array() && self.lang.version < Version::V120 {
             self.error(
                 Code::VersionTooLow,
                 span,

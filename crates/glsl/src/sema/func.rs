@@ -6,8 +6,8 @@ use super::{error_expr, Analyzer, FnInfo, FnState};
 use crate::ast::{self, FunctionDef, FunctionProto, Qualifier};
 use crate::diag::{did_you_mean, Code, Diagnostic};
 use crate::ir::{self, ExprKind, FunctionId, LocalId, Param, ParamQualifier};
+use crate::lang::Version;
 use crate::source::Span;
-use crate::token::Version;
 use crate::types::{ArraySize, Type};
 
 /// A callable signature, user or built-in.
@@ -125,7 +125,7 @@ impl Analyzer {
                     );
                 } else if qualifier != ParamQualifier::In
                     && ty.is_array()
-                    && self.version < Version::V120
+                    && self.lang.version < Version::V120
                 {
                     self.error(
                         Code::VersionTooLow,
@@ -480,7 +480,8 @@ impl Analyzer {
                 d.notes
                     .push(format!("candidate: {}", self.sig_string(&name.name, s)));
             }
-            if self.version < Version::V120 && sigs.iter().any(|s| self.match_sig_120(s, &arg_tys))
+            if self.lang.version < Version::V120
+                && sigs.iter().any(|s| self.match_sig_120(s, &arg_tys))
             {
                 d.notes.push("GLSL 1.10 has no implicit int→float conversions: write float literals (`1.0'), or use `#version 120'".into());
             }
@@ -678,7 +679,7 @@ impl Analyzer {
                 continue;
             }
             exact = false;
-            let ok = self.version >= Version::V120
+            let ok = self.lang.version >= Version::V120
                 && match q {
                     ParamQualifier::In => super::expr::implicitly_converts(a, p),
                     ParamQualifier::Out => super::expr::implicitly_converts(p, a),
@@ -762,10 +763,10 @@ impl Analyzer {
         }
     }
 
-    /// Whether the last `#extension` directive for the printf extension
-    /// enables it (see `pp::PRINTF_EXTENSION`).
+    /// Whether the shader's `#extension` directives leave the printf
+    /// extension enabled (see `pp::PRINTF_EXTENSION`).
     fn printf_enabled(&self) -> bool {
-        crate::pp::printf_enabled(self.module.extensions.iter().map(|(n, b)| (n.as_str(), *b)))
+        self.lang.has(crate::lang::Extension::ShaderboxDebugPrintf)
     }
 
     /// `debugPrintfEXT("format", args...)`: the format is a string literal

@@ -33,20 +33,20 @@ use crate::diag::{Code, Diagnostic};
 use crate::ir::{
     self, ConstScalar, ConstValue, FunctionId, GlobalId, LocalId, Module, ParamQualifier, Stage,
 };
+use crate::lang::{Language, Profile, Unavailable, Version};
 use crate::pp::ExtensionDirective;
 use crate::source::{SourceMap, Span};
-use crate::token::Version;
 use crate::types::{Base, StructDef, Type};
 use scope::{FnRef, Scopes, Symbol, Var};
 use smol_str::SmolStr;
 // FxHash: symbol names are short and trusted to be few; SipHash showed
 // up at 4% of compile time.
 use rustc_hash::FxHashMap as HashMap;
-use std::sync::OnceLock;
+use std::sync::{Mutex, OnceLock};
 
 /// What the analysis needs to know about the shader besides its text.
 pub struct Context {
-    pub version: Version,
+    pub language: Language,
     pub stage: Stage,
     pub extensions: Vec<ExtensionDirective>,
     /// `#pragma STDGL invariant(all)`: every output is invariant.
@@ -56,8 +56,8 @@ pub struct Context {
 /// Analyzes one shader. The module is complete only when no error was
 /// reported; with errors it is a best effort (error types inside).
 pub fn analyze(tu: &TranslationUnit, ctx: &Context) -> (Module, Vec<Diagnostic>) {
-    let env = builtin_env(ctx.version, ctx.stage);
-    let mut a = Analyzer::new(ctx.version, ctx.stage, Some(env));
+    let env = builtin_env(ctx.language, ctx.stage);
+    let mut a = Analyzer::new(ctx.language, ctx.stage, Some(env));
     a.module.extensions = ctx
         .extensions
         .iter()
@@ -120,30 +120,40 @@ impl BuiltinEnv {
     }
 }
 
-/// The cached built-in environment of a version and stage.
-pub(crate) fn builtin_env(version: Version, stage: Stage) -> &'static BuiltinEnv {
-    static CACHE: [OnceLock<BuiltinEnv>; 4] = [
-        OnceLock::new(),
-        OnceLock::new(),
-        OnceLock::new(),
-        OnceLock::new(),
-    ];
-    let i = match (version, stage) {
-        (Version::V110, Stage::Vertex) => 0,
-        (Version::V110, Stage::Fragment) => 1,
-        (Version::V120, Stage::Vertex) => 2,
-        (Version::V120, Stage::Fragment) => 3,
-    };
-    CACHE[i].get_or_init(|| build_env(version, stage))
+/// The cached built-in environment of a language and stage, built once
+/// per combination (there are few: versions × profiles × stages × the
+/// extension sets shaders enable) and then shared.
+pub(crate) fn builtin_env(lang: Language, stage: Stage) -> &'static BuiltinEnv {
+    type Cache = Mutex<HashMap<(Language, Stage), &'static BuiltinEnv>>;
+    static CACHE: OnceLock<Cache> = OnceLock::new();
+    let cache = CACHE.get_or_init(Default::default);
+    if let Some(env) = cache
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .get(&(lang, stage))
+    {
+        return env;
+    }
+    // Built outside the lock: the prelude's analysis may itself look up
+    // other environments (availability notes are not made in built-in
+    // mode, but nothing here should rely on that).
+    let env: &'static BuiltinEnv = Box::leak(Box::new(build_env(lang, stage)));
+    cache
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .entry((lang, stage))
+        .or_insert(env)
 }
 
 /// Parses and analyzes the prelude text in built-in mode.
-fn build_env(version: Version, stage: Stage) -> BuiltinEnv {
-    let text = crate::builtins::prelude(version, stage);
+fn build_env(lang: Language, stage: Stage) -> BuiltinEnv {
+    let text = crate::builtins::prelude(lang, stage);
     let mut map = SourceMap::new("<built-ins>", text);
-    let pp = crate::pp::preprocess(&mut map, &crate::pp::PpOptions::new(stage));
-    let (tu, parse_diags) = crate::parse::parse(&pp.tokens, version);
-    let mut a = Analyzer::new(version, stage, None);
+    let mut opts = crate::pp::PpOptions::new(stage);
+    opts.compatibility_context = lang.profile == Profile::Compatibility;
+    let pp = crate::pp::preprocess(&mut map, &opts);
+    let (tu, parse_diags) = crate::parse::parse(&pp.tokens, lang);
+    let mut a = Analyzer::new(lang, stage, None);
     a.builtin_mode = true;
     a.translation_unit(&tu);
     let mut diagnostics = pp.diagnostics;
@@ -152,7 +162,7 @@ fn build_env(version: Version, stage: Stage) -> BuiltinEnv {
     let module = std::mem::replace(
         &mut a.module,
         Module {
-            version,
+            language: lang,
             stage,
             structs: Vec::new(),
             globals: Vec::new(),
@@ -232,7 +242,7 @@ pub(crate) struct FnInfo {
 }
 
 pub(crate) struct Analyzer {
-    pub version: Version,
+    pub lang: Language,
     pub stage: Stage,
     /// Analyzing the prelude: `gl_` names and built-in-only forms allowed.
     pub builtin_mode: bool,
@@ -256,15 +266,15 @@ pub(crate) struct Analyzer {
 }
 
 impl Analyzer {
-    pub fn new(version: Version, stage: Stage, env: Option<&'static BuiltinEnv>) -> Analyzer {
+    pub fn new(lang: Language, stage: Stage, env: Option<&'static BuiltinEnv>) -> Analyzer {
         let structs = env.map(|e| e.structs.clone()).unwrap_or_default();
         Analyzer {
-            version,
+            lang,
             stage,
             builtin_mode: false,
             env,
             module: Module {
-                version,
+                language: lang,
                 stage,
                 structs,
                 globals: Vec::new(),
@@ -451,27 +461,54 @@ impl Analyzer {
         if self.builtin_mode || !name.starts_with(|c: char| c.is_ascii_alphabetic()) {
             return None;
         }
-        let other = match self.stage {
-            Stage::Vertex => Stage::Fragment,
-            Stage::Fragment => Stage::Vertex,
-        };
-        if self.version == Version::V110
-            && builtin_env(Version::V120, self.stage)
-                .lookup(name)
-                .is_some()
-        {
+        let found = |lang: Language, stage: Stage| builtin_env(lang, stage).lookup(name).is_some();
+        // A later version of the same profile has it.
+        let later = Version::ALL
+            .into_iter()
+            .filter(|&v| v > self.lang.version)
+            .find(|&v| {
+                let mut l = Language::new(v, self.lang.profile == Profile::Compatibility);
+                l.profile = if v.has_profiles() || v == Version::V140 {
+                    self.lang.profile
+                } else {
+                    Profile::Compatibility
+                };
+                found(l, self.stage)
+            });
+        if let Some(v) = later {
             return Some((
                 Code::VersionTooLow,
-                format!("`{name}' requires GLSL 1.20 (add `#version 120' as the first line)"),
+                format!(
+                    "`{name}' requires GLSL {} (add `#version {}' as the first line)",
+                    v.dotted(),
+                    v.number()
+                ),
             ));
         }
-        if builtin_env(self.version, other).lookup(name).is_some()
-            || builtin_env(Version::V120, other).lookup(name).is_some()
-        {
-            return Some((
-                Code::StageMismatch,
-                format!("`{name}' is only available in {} shaders", other.name()),
-            ));
+        // The compatibility profile of this version has it.
+        if self.lang.profile == Profile::Core {
+            let compat = Language {
+                profile: Profile::Compatibility,
+                ..self.lang
+            };
+            if found(compat, self.stage) {
+                return Some((
+                    Code::VersionTooLow,
+                    Unavailable::RemovedInCore(Version::V140)
+                        .message(&format!("`{name}'"), self.lang),
+                ));
+            }
+        }
+        let others = [Stage::Vertex, Stage::Fragment]
+            .into_iter()
+            .filter(|&s| s != self.stage);
+        for other in others {
+            if found(self.lang, other) {
+                return Some((
+                    Code::StageMismatch,
+                    format!("`{name}' is only available in {} shaders", other.name()),
+                ));
+            }
         }
         None
     }

@@ -33,10 +33,10 @@ fn fails(s: Shader, code: Code) {
 
 #[test]
 fn builtin_envs_are_clean() {
-    use crate::token::Version;
+    use crate::lang::Version;
     for v in [Version::V110, Version::V120] {
         for st in [Stage::Vertex, Stage::Fragment] {
-            let env = super::builtin_env(v, st);
+            let env = super::builtin_env(crate::Language::new(v, true), st);
             assert!(
                 env.diagnostics.is_empty(),
                 "{v:?} {st:?}: {:?}",

@@ -4,8 +4,9 @@ use super::scope::Symbol;
 use super::{const_int, Analyzer};
 use crate::ast::{ArraySpec, StructSpecifier, TypeName, TypeSpecifier};
 use crate::diag::{did_you_mean, Code};
+use crate::lang::Version;
 use crate::limits::MAX_ARRAY_SIZE;
-use crate::token::{Keyword, Version};
+use crate::token::Keyword;
 use crate::types::{ArraySize, Base, SamplerKind, Scalar, StructDef, StructId, StructMember, Type};
 
 /// The type a built-in type keyword names.
@@ -96,7 +97,7 @@ impl Analyzer {
         match &ts.array {
             None => base,
             Some(spec) => {
-                if self.version < Version::V120 {
+                if self.lang.version < Version::V120 {
                     self.error(
                         Code::VersionTooLow,
                         spec.span,

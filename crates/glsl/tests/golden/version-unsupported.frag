@@ -1,2 +1,2 @@
-#version 130
+#version 400
 void main() { gl_FragColor = vec4(1.0); }

@@ -22,8 +22,8 @@ def check(
     :class:`Diagnostics` (empty and ``ok`` when it compiles cleanly).
 
     ``stage`` is required for text; for a path it defaults from the
-    extension (``.vert``/``.vs``, ``.frag``/``.fs``). ``version`` (110 or
-    120) is the version of a shader without ``#version`` (1.10 by
+    extension (``.vert``/``.vs``, ``.frag``/``.fs``). ``version`` (110,
+    120, 130, 140, 150 or 330) is the version of a shader without ``#version`` (1.10 by
     default, as the spec says); a ``#version`` line always wins."""
     name = "<shader>"
     if isinstance(source, os.PathLike):
@@ -38,6 +38,6 @@ def check(
         raise TypeError(f"source must be GLSL text (str) or a path, got {type(source).__name__}")
     if stage is None:
         raise ValueError("check() needs stage='vertex' or stage='fragment' for source text")
-    if version is not None and version not in (110, 120):
-        raise ValueError(f"version {version!r} is not 110 or 120")
+    if version is not None and not isinstance(version, int):
+        raise TypeError(f"version must be an int such as 330, got {type(version).__name__}")
     return _diagnostics(_shaderbox.compile_report(source, stage, version, name))

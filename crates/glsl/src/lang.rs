@@ -1,0 +1,338 @@
+//! The language a shader is written in: its version, profile and enabled
+//! extensions ([`Language`]), and the one table that says which version,
+//! profile or extension each language feature needs ([`Feature`],
+//! [`Language::gate`]).
+//!
+//! Every version check of the front end goes through [`Language::gate`]
+//! (or, for keywords, the `since` column of [`crate::token`]'s keyword
+//! table), so that a feature's availability is stated once and its
+//! diagnostic ("`switch' needs GLSL 1.30") is worded once.
+
+use serde::Serialize;
+
+/// A language version this front end accepts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+pub enum Version {
+    V110,
+    V120,
+    V130,
+    V140,
+    V150,
+    V330,
+}
+
+impl Version {
+    /// Every version, oldest first.
+    pub const ALL: [Version; 6] = [
+        Version::V110,
+        Version::V120,
+        Version::V130,
+        Version::V140,
+        Version::V150,
+        Version::V330,
+    ];
+
+    /// The number as written after `#version`.
+    pub fn number(self) -> u32 {
+        match self {
+            Version::V110 => 110,
+            Version::V120 => 120,
+            Version::V130 => 130,
+            Version::V140 => 140,
+            Version::V150 => 150,
+            Version::V330 => 330,
+        }
+    }
+
+    pub fn from_number(n: u32) -> Option<Version> {
+        Version::ALL.into_iter().find(|v| v.number() == n)
+    }
+
+    /// "1.10", "3.30", as error messages spell it.
+    pub fn dotted(self) -> &'static str {
+        match self {
+            Version::V110 => "1.10",
+            Version::V120 => "1.20",
+            Version::V130 => "1.30",
+            Version::V140 => "1.40",
+            Version::V150 => "1.50",
+            Version::V330 => "3.30",
+        }
+    }
+
+    /// Whether `#version N core|compatibility` may name a profile (from
+    /// 1.50 on; GLSL 1.50 §3.3).
+    pub fn has_profiles(self) -> bool {
+        self >= Version::V150
+    }
+}
+
+/// Which of a version's two profiles a shader is compiled for.
+///
+/// Versions up to 1.30 have one language, the whole of it: they are
+/// `Compatibility` here. GLSL 1.40 removes the fixed-function interface
+/// (its §1.2.5) unless the context has `GL_ARB_compatibility`, so a 1.40
+/// shader takes the context's profile. From 1.50 on the `#version` line
+/// names the profile, and its absence means core (GLSL 1.50 §3.3).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+pub enum Profile {
+    Core,
+    Compatibility,
+}
+
+impl Profile {
+    /// The word after the version number in `#version`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Profile::Core => "core",
+            Profile::Compatibility => "compatibility",
+        }
+    }
+}
+
+macro_rules! extensions {
+    ($($variant:ident = $name:literal;)*) => {
+        /// The extensions the front end implements: `#extension` accepts
+        /// them and each defines a macro of its name with value 1.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+        pub enum Extension { $($variant),* }
+
+        impl Extension {
+            pub const ALL: &'static [Extension] = &[$(Extension::$variant),*];
+
+            pub fn name(self) -> &'static str {
+                match self { $(Extension::$variant => $name),* }
+            }
+
+            pub fn from_name(name: &str) -> Option<Extension> {
+                match name { $($name => Some(Extension::$variant),)* _ => None }
+            }
+        }
+    };
+}
+
+extensions! {
+    // Its GLSL side is `gl_FragData`, which GLSL 1.10 already has;
+    // `#extension` must accept it since the GL layer reports it.
+    ArbDrawBuffers = "GL_ARB_draw_buffers";
+    // shaderbox's `debugPrintfEXT` (see `crate::printf`).
+    ShaderboxDebugPrintf = "GL_SHADERBOX_debug_printf";
+}
+
+/// A set of [`Extension`]s.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize)]
+pub struct ExtensionSet(u64);
+
+impl ExtensionSet {
+    pub const EMPTY: ExtensionSet = ExtensionSet(0);
+
+    pub fn contains(self, e: Extension) -> bool {
+        self.0 & (1 << e as u32) != 0
+    }
+
+    pub fn set(&mut self, e: Extension, on: bool) {
+        if on {
+            self.0 |= 1 << e as u32;
+        } else {
+            self.0 &= !(1 << e as u32);
+        }
+    }
+}
+
+/// Version, profile and enabled extensions: everything that decides which
+/// words are keywords and which constructs and built-ins exist.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub struct Language {
+    pub version: Version,
+    pub profile: Profile,
+    /// Extensions enabled by `#extension` (`enable`, `require` or `warn`)
+    /// at the point of the shader being looked at.
+    pub extensions: ExtensionSet,
+}
+
+/// A construct or built-in whose existence depends on the language.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Feature {
+    /// The `f`/`F` suffix on floating-point literals.
+    FloatSuffix,
+    /// Array constructors, `.length()`, array assignment and comparison,
+    /// initializers of uniforms, non-square matrices, implicit int→float.
+    Glsl120Core,
+    /// `uint`, `uvec*` and the `u` literal suffix.
+    Unsigned,
+    /// `switch`, `case`, `default`.
+    Switch,
+    /// `%`, `<<`, `>>`, `&`, `|`, `^`, `~` and their assignments.
+    IntegerOperators,
+    /// `flat`, `smooth`, `noperspective`.
+    InterpolationQualifiers,
+    /// `in`/`out`/`centroid in`/`centroid out` at global scope.
+    StageInOut,
+    /// `lowp`, `mediump`, `highp`, `precision` (accepted, no effect).
+    Precision,
+    /// The fixed-function interface GLSL 1.40 removes (its §1.2.5):
+    /// built-in vertex inputs (`gl_Vertex`...), built-in uniforms other
+    /// than `gl_DepthRange`, `gl_TexCoord`, `gl_FogFragCoord` and the
+    /// colour varyings, `gl_ClipVertex`, `ftransform()`.
+    CompatibilityInterface,
+}
+
+/// Why a feature is not available to a shader.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unavailable {
+    /// It exists from this version on.
+    NeedsVersion(Version),
+    /// It exists from this version on, or earlier with the extension.
+    NeedsVersionOrExtension(Version, Extension),
+    /// The core profile of this version (and later) removes it.
+    RemovedInCore(Version),
+}
+
+impl Unavailable {
+    /// One sentence for a diagnostic: "`switch' needs GLSL 1.30 (this
+    /// shader is GLSL 1.20)". `what` names the construct, quoted.
+    pub fn message(self, what: &str, lang: Language) -> String {
+        let this = format!(
+            "this shader is GLSL {}{}",
+            lang.version.dotted(),
+            if lang.version >= Version::V140 {
+                format!(", {} profile", lang.profile.name())
+            } else {
+                String::new()
+            }
+        );
+        match self {
+            Unavailable::NeedsVersion(v) => format!("{what} needs GLSL {} ({this})", v.dotted()),
+            Unavailable::NeedsVersionOrExtension(v, e) => format!(
+                "{what} needs GLSL {} or `#extension {} : enable' ({this})",
+                v.dotted(),
+                e.name()
+            ),
+            Unavailable::RemovedInCore(v) => format!(
+                "{what} is removed in the core profile of GLSL {} and later ({this})",
+                v.dotted()
+            ),
+        }
+    }
+
+    /// What the user can write instead, as a note.
+    pub fn fix(self) -> String {
+        match self {
+            Unavailable::NeedsVersion(v) | Unavailable::NeedsVersionOrExtension(v, _) => {
+                format!("start the shader with `#version {}'", v.number())
+            }
+            Unavailable::RemovedInCore(v) if v >= Version::V150 => format!(
+                "write `#version {} compatibility' to keep it, in a compatibility context",
+                v.number()
+            ),
+            Unavailable::RemovedInCore(_) => {
+                "it is kept only in a compatibility context (GL_ARB_compatibility)".to_string()
+            }
+        }
+    }
+}
+
+impl Language {
+    /// The language of a shader with `#version` `version` (and no
+    /// profile word) in a context that does (`compatibility_context`) or
+    /// does not offer the compatibility profile.
+    pub fn new(version: Version, compatibility_context: bool) -> Language {
+        let profile = match version {
+            Version::V110 | Version::V120 | Version::V130 => Profile::Compatibility,
+            Version::V140 if compatibility_context => Profile::Compatibility,
+            _ => Profile::Core,
+        };
+        Language {
+            version,
+            profile,
+            extensions: ExtensionSet::EMPTY,
+        }
+    }
+
+    pub fn has(self, e: Extension) -> bool {
+        self.extensions.contains(e)
+    }
+
+    /// Whether `feature` exists in this language, or why not.
+    pub fn gate(self, feature: Feature) -> Result<(), Unavailable> {
+        let since = |v: Version| {
+            if self.version >= v {
+                Ok(())
+            } else {
+                Err(Unavailable::NeedsVersion(v))
+            }
+        };
+        match feature {
+            Feature::FloatSuffix | Feature::Glsl120Core => since(Version::V120),
+            Feature::Unsigned
+            | Feature::Switch
+            | Feature::IntegerOperators
+            | Feature::InterpolationQualifiers
+            | Feature::StageInOut
+            | Feature::Precision => since(Version::V130),
+            Feature::CompatibilityInterface => {
+                if self.version >= Version::V140 && self.profile == Profile::Core {
+                    Err(Unavailable::RemovedInCore(Version::V140))
+                } else {
+                    Ok(())
+                }
+            }
+        }
+    }
+
+    /// `gate` as a bool.
+    pub fn allows(self, feature: Feature) -> bool {
+        self.gate(feature).is_ok()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn profiles_follow_the_version_and_context() {
+        assert_eq!(
+            Language::new(Version::V130, false).profile,
+            Profile::Compatibility
+        );
+        assert_eq!(
+            Language::new(Version::V140, true).profile,
+            Profile::Compatibility
+        );
+        assert_eq!(Language::new(Version::V140, false).profile, Profile::Core);
+        assert_eq!(Language::new(Version::V150, true).profile, Profile::Core);
+    }
+
+    #[test]
+    fn gates_name_the_version_that_adds_a_feature() {
+        let l = Language::new(Version::V120, true);
+        let why = l.gate(Feature::Switch).unwrap_err();
+        assert_eq!(why, Unavailable::NeedsVersion(Version::V130));
+        assert_eq!(
+            why.message("`switch'", l),
+            "`switch' needs GLSL 1.30 (this shader is GLSL 1.20)"
+        );
+        let core = Language::new(Version::V150, true);
+        assert_eq!(
+            core.gate(Feature::CompatibilityInterface),
+            Err(Unavailable::RemovedInCore(Version::V140))
+        );
+        let mut compat = core;
+        compat.profile = Profile::Compatibility;
+        assert!(compat.allows(Feature::CompatibilityInterface));
+    }
+
+    #[test]
+    fn extension_names_round_trip() {
+        for &e in Extension::ALL {
+            assert_eq!(Extension::from_name(e.name()), Some(e));
+        }
+        let mut s = ExtensionSet::EMPTY;
+        s.set(Extension::ShaderboxDebugPrintf, true);
+        assert!(s.contains(Extension::ShaderboxDebugPrintf));
+        assert!(!s.contains(Extension::ArbDrawBuffers));
+        s.set(Extension::ShaderboxDebugPrintf, false);
+        assert_eq!(s, ExtensionSet::EMPTY);
+    }
+}
