@@ -269,7 +269,7 @@ def main():
 
     if args.counts:
         with open(args.counts, "w", encoding="utf-8") as f:
-            f.write("# Written by scripts/piglit-run.sh; quoted by docs/CONFORMANCE.md.\n")
+            f.write("# Written by scripts/piglit_compare.py (from piglit-run.sh or piglit-mesa.sh); quoted by docs/CONFORMANCE.md.\n")
             f.write("suite {}\n".format(args.title))
             f.write("total {}\n".format(total))
             for s in STATUSES:
