@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Obtain piglit's framework and its GLSL 1.10/1.20 tests from Debian's
-# `piglit` package, without installing it (the full install is 2 GB and
-# pulls in Mesa, Vulkan and OpenCL).
+# Obtain piglit's framework and the test folders of every set in
+# scripts/piglit-sets.sh (GLSL 1.10-3.30 and their extensions) from
+# Debian's `piglit` package, without installing it (the full install is
+# 2 GB and pulls in Mesa, Vulkan and OpenCL).
 #
 # Usage: scripts/piglit-fetch.sh
 #
@@ -14,17 +15,25 @@
 #   usr/bin/piglit                               the runner script
 #   usr/lib/x86_64-linux-gnu/piglit/framework/   its Python framework
 #   usr/lib/x86_64-linux-gnu/piglit/tests/{glslparser,shader}.xml.gz
-#   usr/lib/x86_64-linux-gnu/piglit/{tests,generated_tests}/spec/glsl-1.{10,20}/
+#   usr/lib/x86_64-linux-gnu/piglit/{tests,generated_tests}/spec/FOLDER/
+#                                                for each FOLDER of the sets
 # and the Python modules the framework imports (mako, six) are installed
 # for /usr/bin/python3, the interpreter the runner script names.
 #
-# Idempotent: a second run with the same .deb does nothing.
+# Idempotent: a second run with the same .deb does nothing. root/.extracted-from
+# names the .deb and root/.extracted-folders the folders taken from it (a
+# tree without the latter has the GLSL 1.10/1.20 folders); folders missing
+# from a tree of the same .deb are added to it, and a different .deb
+# replaces the tree.
 
 set -euo pipefail
 
 root_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cache="${PIGLIT_CACHE:-$root_dir/.piglit}"
 data_rel="usr/lib/x86_64-linux-gnu/piglit"
+# shellcheck source=piglit-sets.sh
+. "$root_dir/scripts/piglit-sets.sh"
+read -r -a folders <<<"$(piglit_folders all)"
 
 log() { printf 'piglit-fetch: %s\n' "$*" >&2; }
 die() { log "error: $*"; exit 1; }
@@ -100,27 +109,55 @@ find_deb() {
     printf '%s\n' "$deb"
 }
 
+# The tar members of FOLDER's tests.
+folder_members() {
+    printf '%s\n' "./$data_rel/tests/spec/$1/*" "./$data_rel/generated_tests/spec/$1/*"
+}
+
 extract() {
     local deb="$1"
-    local stamp="$cache/root/.extracted-from"
+    local stamp="$cache/root/.extracted-from" have_file="$cache/root/.extracted-folders"
+    local tmp="$cache/root.tmp" members=() missing=() have f
+    rm -rf "$tmp"
+    mkdir -p "$tmp"
     if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$(basename "$deb")" ]; then
-        log "up to date ($(basename "$deb"))"
+        # A tree from this .deb: add the folders it lacks.
+        have="$piglit_legacy_folders"
+        [ -f "$have_file" ] && have="$(cat "$have_file")"
+        for f in "${folders[@]}"; do
+            case " $have " in *" $f "*) ;; *) missing+=("$f") ;; esac
+        done
+        if [ "${#missing[@]}" -eq 0 ]; then
+            rmdir "$tmp"
+            log "up to date ($(basename "$deb"))"
+            return
+        fi
+        log "adding ${missing[*]} from $(basename "$deb")"
+        for f in "${missing[@]}"; do mapfile -t -O "${#members[@]}" members < <(folder_members "$f"); done
+        dpkg-deb --fsys-tarfile "$deb" | tar -x -C "$tmp" --wildcards "${members[@]}"
+        # Move each folder in whole, then record it: an interrupted run
+        # leaves folders that the next run extracts again.
+        local kind
+        for f in "${missing[@]}"; do
+            for kind in tests generated_tests; do
+                if [ -d "$tmp/$data_rel/$kind/spec/$f" ]; then
+                    mkdir -p "$cache/root/$data_rel/$kind/spec"
+                    rm -rf "$cache/root/$data_rel/$kind/spec/$f"
+                    mv "$tmp/$data_rel/$kind/spec/$f" "$cache/root/$data_rel/$kind/spec/$f"
+                fi
+            done
+        done
+        echo "$have ${missing[*]}" >"$have_file"
+        rm -rf "$tmp"
         return
     fi
     log "extracting from $(basename "$deb")"
-    local tmp="$cache/root.tmp"
-    rm -rf "$tmp"
-    mkdir -p "$tmp"
-    dpkg-deb --fsys-tarfile "$deb" | tar -x -C "$tmp" --wildcards \
-        ./usr/bin/piglit \
-        "./$data_rel/framework/*" \
-        "./$data_rel/tests/glslparser.xml.gz" \
-        "./$data_rel/tests/shader.xml.gz" \
-        "./$data_rel/tests/spec/glsl-1.10/*" \
-        "./$data_rel/tests/spec/glsl-1.20/*" \
-        "./$data_rel/generated_tests/spec/glsl-1.10/*" \
-        "./$data_rel/generated_tests/spec/glsl-1.20/*"
+    members=(./usr/bin/piglit "./$data_rel/framework/*"
+        "./$data_rel/tests/glslparser.xml.gz" "./$data_rel/tests/shader.xml.gz")
+    for f in "${folders[@]}"; do mapfile -t -O "${#members[@]}" members < <(folder_members "$f"); done
+    dpkg-deb --fsys-tarfile "$deb" | tar -x -C "$tmp" --wildcards "${members[@]}"
     basename "$deb" >"$tmp/.extracted-from"
+    echo "${folders[*]}" >"$tmp/.extracted-folders"
     rm -rf "$cache/root"
     mv "$tmp" "$cache/root"
 }

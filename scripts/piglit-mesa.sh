@@ -3,7 +3,15 @@
 # the oracle shaderbox is compared with: counts and wall time, for
 # docs/CONFORMANCE.md.
 #
-# Usage: scripts/piglit-mesa.sh [--suite shader|glslparser] [-j JOBS]
+# Usage: scripts/piglit-mesa.sh [--suite shader|glslparser]
+#                               [--folders legacy|glsl3|all] [-j JOBS]
+#
+# --folders chooses the same tests as scripts/piglit-run.sh's (default
+# legacy: GLSL 1.10 and 1.20; see scripts/piglit-sets.sh). The counts, with
+# one line per folder, go to tests/piglit/mesa-TAG-counts.txt (TAG as in
+# piglit-run.sh: glslparser, glslparser-glsl3...; an `all` run writes the
+# legacy and glsl3 files), written by scripts/piglit_compare.py
+# --summary-only; the tests Mesa neither passes nor skips are listed.
 #
 # Needs scripts/piglit-fetch.sh first (framework and test data). Extracts
 # piglit's own shader_runner and glslparsertest binaries with their
@@ -14,11 +22,15 @@ root_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cache="${PIGLIT_CACHE:-$root_dir/.piglit}"
 data_rel=usr/lib/x86_64-linux-gnu/piglit
 data="$cache/root/$data_rel"
+# shellcheck source=piglit-sets.sh
+. "$root_dir/scripts/piglit-sets.sh"
 suite=shader
+set=legacy
 jobs="$(nproc 2>/dev/null || echo 2)"
 while [ $# -gt 0 ]; do
     case "$1" in
         --suite) suite="$2"; shift ;;
+        --folders) set="$2"; shift ;;
         -j) jobs="$2"; shift ;;
         *) echo "piglit-mesa: unknown argument \`$1'" >&2; exit 2 ;;
     esac
@@ -26,6 +38,13 @@ while [ $# -gt 0 ]; do
 done
 log() { printf 'piglit-mesa: %s\n' "$*" >&2; }
 [ -d "$data/framework" ] || { log "run scripts/piglit-fetch.sh first"; exit 2; }
+case "$suite" in glslparser|shader) ;; *) log "unknown suite \`$suite'"; exit 2 ;; esac
+folders_line="$(piglit_folders "$set")" || { log "unknown folder set \`$set' (legacy, glsl3 or all)"; exit 2; }
+read -r -a folders <<<"$folders_line"
+for f in "${folders[@]}"; do
+    [ -d "$data/tests/spec/$f" ] || { log "piglit's $f tests are not fetched yet: run scripts/piglit-fetch.sh"; exit 2; }
+done
+case "$set" in all) compared=(legacy glsl3) ;; *) compared=("$set") ;; esac
 deb="$(ls -1 "$cache"/debs/piglit_*.deb 2>/dev/null | tail -n 1 || true)"
 [ -n "$deb" ] || { log "no piglit .deb in $cache/debs (run scripts/piglit-fetch.sh)"; exit 2; }
 
@@ -47,25 +66,25 @@ mkdir -p "$build"
 ln -sfn "$mesa/$data_rel/bin" "$build/bin"
 ln -sfn "$data/tests" "$build/tests"
 ln -sfn "$data/generated_tests" "$build/generated_tests"
-results="$cache/results/mesa-$suite"
+results="$cache/results/mesa-$(piglit_tag "$suite" "$set")"
 rm -rf "$results"
+mapfile -t filters < <(piglit_filters "${folders[@]}")
+log "running $suite tests of ${folders[*]} on Mesa ($jobs jobs)"
 start=$(date +%s)
 PIGLIT_BUILD_DIR="$build" PIGLIT_NO_FAST_SKIP=1 PIGLIT_PLATFORM=surfaceless_egl \
     LD_LIBRARY_PATH="$mesa/$data_rel/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
     /usr/bin/python3 "$cache/root/usr/bin/piglit" run "$suite" \
-    -t 'spec@glsl-1\.10@' -t 'spec@glsl-1\.20@' -c -j "$jobs" --timeout 120 "$results" >/dev/null 2>&1 || true
+    "${filters[@]}" -c -j "$jobs" --timeout 120 "$results" >/dev/null 2>&1 || true
 elapsed=$(( $(date +%s) - start ))
-/usr/bin/python3 - "$results" "$elapsed" <<'PY'
-import bz2, collections, glob, json, os, sys
-res, elapsed = sys.argv[1], sys.argv[2]
-path = (glob.glob(os.path.join(res, "results.json*")) or [None])[0]
-if path is None:
-    sys.exit("piglit-mesa: no results written")
-opener = bz2.open if path.endswith(".bz2") else open
-tests = json.load(opener(path, "rt"))["tests"]
-c = collections.Counter(t["result"] for t in tests.values())
-print(f"mesa {os.path.basename(res)[5:]}: {len(tests)} tests: " + ", ".join(f"{n} {k}" for k, n in sorted(c.items())) + f"; run took {elapsed} s")
-for name, t in sorted(tests.items()):
-    if t["result"] not in ("pass", "skip"):
-        print(f"  {name} [{t['result']}]")
-PY
+status=0
+for s in "${compared[@]}"; do
+    t="$(piglit_tag "$suite" "$s")"
+    read -r -a set_folders <<<"$(piglit_folders "$s")"
+    rc=0
+    /usr/bin/python3 "$root_dir/scripts/piglit_compare.py" "$results" --summary-only \
+        --title "mesa-$t" --counts "$root_dir/tests/piglit/mesa-$t-counts.txt" \
+        --folders "$(piglit_prefixes "${set_folders[@]}")" --profile "$data/tests/$suite.xml.gz" \
+        --elapsed "$elapsed" || rc=$?
+    [ "$rc" -gt "$status" ] && status=$rc
+done
+exit "$status"

@@ -1,16 +1,24 @@
 #!/usr/bin/env bash
-# Run piglit's GLSL 1.10/1.20 tests against shaderbox, through piglit's own
+# Run piglit's GLSL tests against shaderbox, through piglit's own
 # framework, and compare with the expected failures.
 #
-# Usage: scripts/piglit-run.sh [--suite glslparser|shader] [--debug] [--bless]
-#                              [-j JOBS] [--timeout SECONDS]
+# Usage: scripts/piglit-run.sh [--suite glslparser|shader]
+#                              [--folders legacy|glsl3|all] [--debug]
+#                              [--bless] [-j JOBS] [--timeout SECONDS]
 #
-#   --suite     glslparser (default): the compiler tests, 1678, run by
+#   --suite     glslparser (default): the compiler tests, run by
 #               `shaderbox glslparsertest`; shader: the execution tests
-#               (.shader_test files), 3138, run by `shaderbox shader-runner`
+#               (.shader_test files), run by `shaderbox shader-runner`
+#   --folders   which of piglit's spec/ folders (scripts/piglit-sets.sh):
+#               legacy (default): glsl-1.10 and glsl-1.20 (glslparser 1678
+#               tests, shader 3138); glsl3: glsl-1.30, 1.40, 1.50, 3.30,
+#               arb_geometry_shader4, arb_explicit_attrib_location and
+#               arb_uniform_buffer_object (glslparser 3564); all: both, run
+#               once and compared set by set. The number of tests is taken
+#               from piglit's test list and checked against the results.
 #   --debug     build and test the debug binary (default: release)
-#   --bless     rewrite tests/piglit/expected-failures-SUITE.txt to the
-#               current failures (crashes and timeouts are never blessed)
+#   --bless     rewrite the set's expected-failures list to the current
+#               failures (crashes and timeouts are never blessed)
 #   -j JOBS     concurrent tests (default: number of CPUs)
 #   --timeout   seconds per test before piglit calls it a timeout (default 30
 #               for glslparser, 60 for shader)
@@ -19,15 +27,25 @@
 # CARGO_TARGET_DIR, SHADERBOX_BIN (test this binary instead of building).
 #
 # Needs scripts/piglit-fetch.sh to have run. Exit status: 0 when nothing
-# new failed, 1 on a new failure, crash or timeout, 2 on setup problems.
+# new failed, 1 on a new failure, crash or timeout, 2 on setup problems
+# (including a run that does not hold every test of the folders).
+#
+# Files, per suite and set, named by TAG = SUITE for legacy (the names CI
+# has always used) and SUITE-SET otherwise (glslparser-glsl3):
+#   tests/piglit/expected-failures-TAG.txt   the expected failures
+#   tests/piglit/TAG-counts.txt              counts of the last run, with
+#                                            one line per folder
+#   $PIGLIT_CACHE/results/TAG/               piglit's results
+# An `all` run writes results/SUITE-all/ and compares the legacy and glsl3
+# folders each with its own list and counts, exactly as separate runs would.
 #
 # How piglit is driven: a PIGLIT_BUILD_DIR-style directory whose
 # bin/glslparsertest runs `shaderbox glslparsertest "$@"` and whose
 # bin/shader_runner runs `shaderbox shader-runner "$@"`, with piglit's
 # tests/ and generated_tests/ linked in; `piglit run glslparser` or
-# `piglit run shader` with the test names filtered to spec@glsl-1.10@ and
-# spec@glsl-1.20@; the results JSON is then read by
-# scripts/piglit_compare.py, which writes tests/piglit/SUITE-counts.txt.
+# `piglit run shader` with the test names filtered to the set's folders
+# (spec@glsl-1.10@...); the results JSON is then read by
+# scripts/piglit_compare.py, which writes the counts.
 
 set -euo pipefail
 
@@ -35,8 +53,11 @@ root_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cache="${PIGLIT_CACHE:-$root_dir/.piglit}"
 data="$cache/root/usr/lib/x86_64-linux-gnu/piglit"
 runner="$cache/root/usr/bin/piglit"
+# shellcheck source=piglit-sets.sh
+. "$root_dir/scripts/piglit-sets.sh"
 
 suite=glslparser
+set=legacy
 profile=release
 bless=()
 jobs="$(nproc 2>/dev/null || echo 2)"
@@ -45,6 +66,8 @@ while [ $# -gt 0 ]; do
     case "$1" in
         --suite) suite="$2"; shift ;;
         --suite=*) suite="${1#--suite=}" ;;
+        --folders) set="$2"; shift ;;
+        --folders=*) set="${1#--folders=}" ;;
         --debug) profile=debug ;;
         --release) profile=release ;;
         --bless) bless=(--bless) ;;
@@ -60,18 +83,36 @@ done
 log() { printf 'piglit-run: %s\n' "$*" >&2; }
 
 case "$suite" in
-    glslparser) ntests=1678; default_timeout=30 ;;
-    shader) ntests=3138; default_timeout=60 ;;
+    glslparser) default_timeout=30 ;;
+    shader) default_timeout=60 ;;
     *) log "unknown suite \`$suite' (glslparser or shader)"; exit 2 ;;
 esac
 timeout="${timeout:-$default_timeout}"
-expected="$root_dir/tests/piglit/expected-failures-$suite.txt"
-counts="$root_dir/tests/piglit/$suite-counts.txt"
+folders_line="$(piglit_folders "$set")" || {
+    log "unknown folder set \`$set' (legacy, glsl3 or all)"
+    exit 2
+}
+read -r -a folders <<<"$folders_line"
+# The sets compared, each with its own list and counts.
+case "$set" in
+    all) compared=(legacy glsl3) ;;
+    *) compared=("$set") ;;
+esac
+tag="$(piglit_tag "$suite" "$set")"
 
 [ -x "$runner" ] && [ -d "$data/framework" ] || {
     log "piglit is not fetched yet: run scripts/piglit-fetch.sh first"
     exit 2
 }
+for f in "${folders[@]}"; do
+    [ -d "$data/tests/spec/$f" ] || {
+        log "piglit's $f tests are not fetched yet: run scripts/piglit-fetch.sh"
+        exit 2
+    }
+done
+profile_list="$data/tests/$suite.xml.gz"
+ntests="$(/usr/bin/python3 "$root_dir/scripts/piglit_compare.py" --count-profile "$profile_list" \
+    --folders "$(piglit_prefixes "${folders[@]}")")" || exit 2
 
 # 1. The binary under test.
 if [ -n "${SHADERBOX_BIN:-}" ]; then
@@ -108,27 +149,39 @@ chmod +x "$build/bin/glslparsertest" "$build/bin/shader_runner"
 # 3. Run. Fast skipping needs waffle's wflinfo to ask a GL driver for its
 # versions; without it every test would be skipped, so it is disabled and
 # the programs decide skips themselves. No core dumps from crashing tests.
-results="$cache/results/$suite"
+results="$cache/results/$tag"
 mkdir -p "$(dirname "$results")"
 level=dummy
 [ -t 1 ] && [ -z "${CI:-}" ] && level=quiet
-log "running $ntests $suite tests ($profile build, $jobs jobs, ${timeout}s timeout)"
+mapfile -t filters < <(piglit_filters "${folders[@]}")
+log "running $ntests $suite tests of ${folders[*]} ($profile build, $jobs jobs, ${timeout}s timeout)"
 ulimit -c 0
 start=$(date +%s.%N)
 (
     cd "$cache"
     PIGLIT_BUILD_DIR="$build" PIGLIT_NO_FAST_SKIP=1 PYTHONWARNINGS=ignore \
-        /usr/bin/python3 "$runner" run "$suite" \
-        -t 'spec@glsl-1\.10@' -t 'spec@glsl-1\.20@' \
+        /usr/bin/python3 "$runner" run "$suite" "${filters[@]}" \
         -c -j "$jobs" --timeout "$timeout" -l "$level" -n shaderbox -o "$results"
-) >"$cache/results/$suite.log" 2>&1 || {
-    cat "$cache/results/$suite.log" >&2
+) >"$cache/results/$tag.log" 2>&1 || {
+    cat "$cache/results/$tag.log" >&2
     log "piglit itself failed (see above)"
     exit 2
 }
 end=$(date +%s.%N)
 elapsed=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.1f", b - a }')
 
-# 4. Compare with the expected failures.
-/usr/bin/python3 "$root_dir/scripts/piglit_compare.py" "$results" "$expected" \
-    --counts "$counts" --elapsed "$elapsed" --title "$suite" "${bless[@]}"
+# 4. Compare with the expected failures, set by set. The worst status wins
+# (2 over 1 over 0).
+status=0
+for s in "${compared[@]}"; do
+    t="$(piglit_tag "$suite" "$s")"
+    read -r -a set_folders <<<"$(piglit_folders "$s")"
+    rc=0
+    /usr/bin/python3 "$root_dir/scripts/piglit_compare.py" "$results" \
+        "$root_dir/tests/piglit/expected-failures-$t.txt" \
+        --counts "$root_dir/tests/piglit/$t-counts.txt" --title "$t" \
+        --folders "$(piglit_prefixes "${set_folders[@]}")" --profile "$profile_list" \
+        --elapsed "$elapsed" "${bless[@]}" || rc=$?
+    [ "$rc" -gt "$status" ] && status=$rc
+done
+exit "$status"
