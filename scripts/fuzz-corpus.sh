@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Rebuilds fuzz/corpus/compile/ from the project's own shaders (golden,
 # seed and example shaders) and, when piglit has been fetched, a sample of
-# piglit's GLSL 1.10/1.20 compiler tests. Each corpus file is one stage byte
-# (0 = vertex, 1 = fragment) followed by the shader text, the input format
-# of fuzz/fuzz_targets/compile.rs.
+# piglit's GLSL compiler tests (1.10 to 3.30). Each corpus file is one
+# control byte (bit 0: 0 = vertex, 1 = fragment; the other bits as
+# fuzz/fuzz_targets/compile.rs reads them, left 0 here: a compatibility
+# context, default version 1.10) followed by the shader text.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="$root/fuzz/corpus/compile"
@@ -22,6 +23,10 @@ add() {
 while IFS= read -r -d '' f; do add "$f"; done < <(find "$root/crates/glsl/tests" "$root/examples" \( -name '*.vert' -o -name '*.frag' \) -print0)
 piglit="${PIGLIT_CACHE:-$root/.piglit}/root/usr/lib/x86_64-linux-gnu/piglit/tests/spec"
 if [ -d "$piglit" ]; then
-    while IFS= read -r -d '' f; do add "$f"; done < <(find "$piglit/glsl-1.10" "$piglit/glsl-1.20" \( -name '*.vert' -o -name '*.frag' \) -print0 | head -z -n 400)
+    # 400 per version folder that is present, in a fixed order.
+    for v in glsl-1.10 glsl-1.20 glsl-1.30 glsl-1.40 glsl-1.50 glsl-3.30; do
+        [ -d "$piglit/$v" ] || continue
+        while IFS= read -r -d '' f; do add "$f"; done < <(find "$piglit/$v" \( -name '*.vert' -o -name '*.frag' \) -print0 | sort -z | head -z -n 400)
+    done
 fi
 echo "fuzz corpus: $(ls "$out" | wc -l) files in $out"
