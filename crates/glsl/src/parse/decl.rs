@@ -66,13 +66,22 @@ pub(super) fn qualifier_of(k: Keyword) -> Option<Qualifier> {
 
 impl Parser<'_> {
     /// True if the current token names a type (a type keyword or a struct
-    /// name in scope).
+    /// name in scope), or is a near-miss of a type name (`vec`, `Vec3`)
+    /// followed by the declared name: that is parsed as a declaration so
+    /// analysis reports the one bad type and still declares the variable.
     pub(super) fn at_type_name(&self) -> bool {
         match self.kind() {
             TokenKind::Keyword(k) => is_type_keyword(*k),
-            TokenKind::Identifier(name) => self.scopes.is_type(name),
+            TokenKind::Identifier(name) => {
+                self.scopes.is_type(name) || self.at_misspelled_type(name)
+            }
             _ => false,
         }
+    }
+
+    fn at_misspelled_type(&self, name: &str) -> bool {
+        matches!(self.nth(1).kind, TokenKind::Identifier(_))
+            && super::type_name_hint(name, self.lang).is_some()
     }
 
     /// True if the current token can only start a declaration at global
@@ -228,7 +237,9 @@ impl Parser<'_> {
                 self.bump();
                 TypeName::Builtin(*k)
             }
-            TokenKind::Identifier(name) if self.scopes.is_type(name) => {
+            TokenKind::Identifier(name)
+                if self.scopes.is_type(name) || self.at_misspelled_type(name) =>
+            {
                 let span = self.bump().span;
                 TypeName::Named(Ident {
                     name: name.clone(),

@@ -240,7 +240,10 @@ impl<'t> Parser<'t> {
         );
         if let TokenKind::Identifier(name) = self.kind() {
             if expected == "type" {
-                d = d.with_note(format!("`{name}' is not the name of a type here"));
+                d = d.with_note(
+                    type_name_hint(name, self.lang)
+                        .unwrap_or_else(|| format!("`{name}' is not the name of a type here")),
+                );
             }
         }
         self.report(d);
@@ -446,4 +449,49 @@ fn reserved_note(word: &str) -> String {
         }
         _ => format!("`{word}' is reserved for future use; choose another name"),
     }
+}
+
+/// What a word that looks like a type name but is not one probably meant:
+/// a vector or matrix without its size (`vec`, `mat`: slides write them as
+/// shorthand for `vec3`/`mat4`), or a type in the wrong case (`Vec3`).
+pub fn type_name_hint(word: &str, lang: Language) -> Option<String> {
+    let lower = word.to_ascii_lowercase();
+    let sized = |prefix: &str| -> Option<&'static str> {
+        match prefix {
+            "vec" => Some("`vec2', `vec3' or `vec4'"),
+            "ivec" => Some("`ivec2', `ivec3' or `ivec4'"),
+            "bvec" => Some("`bvec2', `bvec3' or `bvec4'"),
+            "uvec" if lang.version >= crate::lang::Version::V130 => {
+                Some("`uvec2', `uvec3' or `uvec4'")
+            }
+            "mat" => Some("`mat2', `mat3', `mat4' (or `matCxR' from GLSL 1.20)"),
+            _ => None,
+        }
+    };
+    if let Some(choices) = sized(&lower) {
+        let case = if lower == word {
+            String::new()
+        } else {
+            " (and type names are lower case)".to_string()
+        };
+        return Some(format!(
+            "GLSL has no type `{word}': the size is part of the name, write {choices}{case}"
+        ));
+    }
+    if lower != word {
+        let is_type = |k: &str| {
+            matches!(k, "float" | "int" | "uint" | "bool" | "void")
+                || [
+                    "vec", "ivec", "bvec", "uvec", "mat", "sampler", "isampler", "usampler",
+                ]
+                .iter()
+                .any(|p| k.starts_with(p))
+        };
+        if let crate::token::WordClass::Keyword(k) = crate::token::classify(&lower, lang) {
+            if is_type(k.as_str()) {
+                return Some(format!("type names are lower case: write `{}'", k.as_str()));
+            }
+        }
+    }
+    None
 }

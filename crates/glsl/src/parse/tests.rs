@@ -1283,3 +1283,25 @@ fn mutation_soak() {
         mutate_and_parse(SAMPLE, 1000, seed);
     }
 }
+
+#[test]
+fn near_miss_type_names_get_a_hint_and_still_declare() {
+    use super::type_name_hint;
+    let l = lang(Version::V120);
+    assert!(type_name_hint("vec", l)
+        .unwrap()
+        .contains("`vec2', `vec3' or `vec4'"));
+    assert!(type_name_hint("mat", l).unwrap().contains("`mat4'"));
+    assert!(type_name_hint("Vec", l).unwrap().contains("lower case"));
+    assert_eq!(
+        type_name_hint("Vec3", l).as_deref(),
+        Some("type names are lower case: write `vec3'")
+    );
+    assert_eq!(type_name_hint("If", l), None);
+    assert_eq!(type_name_hint("uvec", l), None);
+    assert!(type_name_hint("uvec", lang(Version::V130)).is_some());
+    // Parsed as a declaration, so no cascade of syntax errors.
+    let (tu, d) = run("void main() { vec n = vec3(1.0); }", Version::V110);
+    assert!(d.is_empty(), "{d:?}");
+    assert_eq!(tu.items.len(), 1);
+}

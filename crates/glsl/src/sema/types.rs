@@ -75,6 +75,16 @@ impl Analyzer {
                     return Type::ERROR;
                 }
                 None => {
+                    if let Some(hint) = crate::parse::type_name_hint(&id.name, self.lang) {
+                        self.error(
+                            Code::Undeclared,
+                            id.span,
+                            format!("type `{}' undeclared", id.name),
+                        )
+                        .notes
+                        .push(hint);
+                        return Type::ERROR;
+                    }
                     let sugg = if self.may_suggest(&id.name) {
                         let names = self.struct_names();
                         did_you_mean(&id.name, names.iter().map(|s| s.as_str())).map(str::to_string)
