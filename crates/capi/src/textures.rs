@@ -9,6 +9,7 @@ use crate::abi::*;
 use crate::buffers::image_bytes;
 use crate::context::{record_call, with_ctx};
 use gl::enums::*;
+use gl::Param;
 use std::ffi::c_void;
 
 gl_entry_points! {
@@ -26,8 +27,8 @@ gl_entry_points! {
     [list] fn glActiveTexture(unit: GLenum) => |c| { c.gl.active_texture(unit) }
 
     // ---- parameters ----
-    [list] fn glTexParameteri(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_parameteri(target, pname, v) }
-    [list] fn glTexParameterf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_parameterf(target, pname, v) }
+    [list] fn glTexParameteri(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_parameter(target, pname, Param::I(v)) }
+    [list] fn glTexParameterf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_parameter(target, pname, Param::F(v)) }
     fn glTexParameterfv(target: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
         let n = if pname == GL_TEXTURE_BORDER_COLOR { 4 } else { 1 };
         if c.compiling() && !v.is_null() {
@@ -36,15 +37,11 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.tex_parameterfv(target, pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.tex_parameter(target, pname, Param::Fv(&rd_vec(v, n))) }
     }
     fn glTexParameteriv(target: GLenum, pname: GLenum, v: *const GLint) => |c| {
-        if pname == GL_TEXTURE_BORDER_COLOR {
-            let f: Vec<f32> = rd_vec(v, 4).iter().map(|&x| gl::state::int_to_unit(x)).collect();
-            if !v.is_null() { c.gl.tex_parameterfv(target, pname, &f) }
-        } else if let Some([x]) = rd::<1, i32>(v) {
-            c.gl.tex_parameteri(target, pname, x)
-        }
+        let n = if pname == GL_TEXTURE_BORDER_COLOR { 4 } else { 1 };
+        if !v.is_null() { c.gl.tex_parameter(target, pname, Param::Iv(&rd_vec(v, n))) }
     }
     fn glGetTexParameteriv(target: GLenum, pname: GLenum, v: *mut GLint) => |c| {
         let r = c.gl.get_tex_parameteriv(target, pname);

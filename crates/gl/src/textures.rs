@@ -15,6 +15,7 @@ use crate::mipmap::generate_mipmaps;
 use crate::objects::{
     gen_names, image_target, set_image, target_index, Attachment, Image, TextureObj, MAX_LEVELS,
 };
+use crate::param::Param;
 use crate::pixel_transfer::{format_components, pack_pixels, pixel_size, unpack_image};
 use crate::texture_format::{base_format, is_depth_format};
 use crate::{Context, MAX_TEXTURE_SIZE};
@@ -428,26 +429,13 @@ impl Context {
         }
     }
 
-    /// glTexParameteri.
-    pub fn tex_parameteri(&mut self, target: u32, pname: u32, v: i32) {
-        self.tex_parameter(target, pname, &[v as f32], v as u32);
-    }
-
-    /// glTexParameterf.
-    pub fn tex_parameterf(&mut self, target: u32, pname: u32, v: f32) {
-        self.tex_parameter(target, pname, &[v], v as u32);
-    }
-
-    /// glTexParameterfv.
-    pub fn tex_parameterfv(&mut self, target: u32, pname: u32, v: &[f32]) {
-        let e = v.first().map(|&x| x as u32).unwrap_or(0);
-        self.tex_parameter(target, pname, v, e);
-    }
-
-    fn tex_parameter(&mut self, target: u32, pname: u32, v: &[f32], e: u32) {
+    /// glTexParameter{f,i,fv,iv} (a scalar form of
+    /// GL_TEXTURE_BORDER_COLOR is too few values: GL_INVALID_VALUE).
+    pub fn tex_parameter(&mut self, target: u32, pname: u32, v: Param) {
         if self.reject_in_begin() {
             return;
         }
+        let (e, v) = (v.as_enum(), &v.floats(pname)[..]);
         if target_index(target).is_none() {
             self.set_error(GL_INVALID_ENUM);
             return;

@@ -1,7 +1,7 @@
 //! End-to-end: GL calls in, pixels out.
 
 use gl::enums::*;
-use gl::{ArrayData, Context};
+use gl::{ArrayData, Context, Param};
 
 fn program(ctx: &mut Context, vs: Option<&str>, fs: Option<&str>) -> u32 {
     let p = ctx.create_program();
@@ -165,8 +165,16 @@ fn fixed_function_lighting_and_texture() {
         GL_UNSIGNED_BYTE,
         Some(&texels),
     );
-    ctx.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
-    ctx.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        Param::I(GL_NEAREST as i32),
+    );
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MAG_FILTER,
+        Param::I(GL_NEAREST as i32),
+    );
     ctx.enable(GL_TEXTURE_2D);
     ctx.color_3f(1.0, 1.0, 1.0);
     draw_rect(&mut ctx, -1.0, -1.0, 2.0, 2.0);
@@ -193,7 +201,11 @@ fn render_to_texture_then_sample_it() {
         GL_FLOAT,
         None,
     );
-    ctx.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        Param::I(GL_NEAREST as i32),
+    );
     let fb = ctx.gen_framebuffers(1)[0];
     ctx.bind_framebuffer(GL_FRAMEBUFFER_EXT, fb);
     ctx.framebuffer_texture_2d(
@@ -307,10 +319,10 @@ fn threaded_scene(threads: usize) -> (Vec<u8>, Vec<u8>, Vec<u8>, Option<String>)
         Some(&texels),
     );
     ctx.generate_mipmap(GL_TEXTURE_2D);
-    ctx.tex_parameteri(
+    ctx.tex_parameter(
         GL_TEXTURE_2D,
         GL_TEXTURE_MIN_FILTER,
-        GL_LINEAR_MIPMAP_LINEAR as i32,
+        Param::I(GL_LINEAR_MIPMAP_LINEAR as i32),
     );
     program(
         &mut ctx,
