@@ -580,12 +580,11 @@ mod tests {
         let mut ctx = Context::new(4, 4);
         let t = ctx.gen_textures(1)[0];
         ctx.bind_texture(GL_TEXTURE_2D, t);
-        ctx.tex_image_2d(
+        ctx.tex_image(
             GL_TEXTURE_2D,
             0,
             GL_ALPHA as i32,
-            1,
-            1,
+            [1, 1],
             0,
             GL_ALPHA,
             GL_UNSIGNED_BYTE,
@@ -600,12 +599,11 @@ mod tests {
             GL_TEXTURE_ENV_MODE,
             Param::I(GL_REPLACE as i32),
         );
-        ctx.tex_image_2d(
+        ctx.tex_image(
             GL_TEXTURE_2D,
             0,
             GL_RGB as i32,
-            1,
-            1,
+            [1, 1],
             0,
             GL_RGB,
             GL_UNSIGNED_BYTE,

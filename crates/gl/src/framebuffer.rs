@@ -492,12 +492,11 @@ mod tests {
         );
         let t = ctx.gen_textures(1)[0];
         ctx.bind_texture(GL_TEXTURE_2D, t);
-        ctx.tex_image_2d(
+        ctx.tex_image(
             GL_TEXTURE_2D,
             0,
             GL_RGBA as i32,
-            8,
-            8,
+            [8, 8],
             0,
             GL_RGBA,
             GL_UNSIGNED_BYTE,

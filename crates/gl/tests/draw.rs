@@ -154,12 +154,11 @@ fn fixed_function_lighting_and_texture() {
     let texels = [
         255u8, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255,
     ];
-    ctx.tex_image_2d(
+    ctx.tex_image(
         GL_TEXTURE_2D,
         0,
         GL_RGBA as i32,
-        2,
-        2,
+        [2, 2],
         0,
         GL_RGBA,
         GL_UNSIGNED_BYTE,
@@ -190,12 +189,11 @@ fn render_to_texture_then_sample_it() {
     let mut ctx = Context::new(8, 8);
     let t = ctx.gen_textures(1)[0];
     ctx.bind_texture(GL_TEXTURE_2D, t);
-    ctx.tex_image_2d(
+    ctx.tex_image(
         GL_TEXTURE_2D,
         0,
         GL_RGBA32F as i32,
-        4,
-        4,
+        [4, 4],
         0,
         GL_RGBA,
         GL_FLOAT,
@@ -307,12 +305,11 @@ fn threaded_scene(threads: usize) -> (Vec<u8>, Vec<u8>, Vec<u8>, Option<String>)
             }
         })
         .collect();
-    ctx.tex_image_2d(
+    ctx.tex_image(
         GL_TEXTURE_2D,
         0,
         GL_RGBA as i32,
-        32,
-        32,
+        [32, 32],
         0,
         GL_RGBA,
         GL_UNSIGNED_BYTE,

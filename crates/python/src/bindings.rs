@@ -645,12 +645,11 @@ impl RawContext {
     ) {
         let mut gl = self.gl();
         gl.active_texture(GL_TEXTURE0 + unit);
-        gl.tex_image_2d(
+        gl.tex_image(
             GL_TEXTURE_2D,
             0,
             internal,
-            width,
-            height,
+            [width, height],
             0,
             format,
             ty,

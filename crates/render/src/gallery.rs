@@ -335,12 +335,11 @@ fn texture_2d(ctx: &mut Context, unit: u32, size: usize, texel: impl Fn(usize, u
         Param::I(GL_LINEAR as i32),
     );
     let s = size as i32;
-    ctx.tex_image_2d(
+    ctx.tex_image(
         GL_TEXTURE_2D,
         0,
         GL_RGBA as i32,
-        s,
-        s,
+        [s, s],
         0,
         GL_RGBA,
         GL_UNSIGNED_BYTE,
@@ -440,13 +439,11 @@ fn volume(ctx: &mut Context, program: u32) {
         ctx.tex_parameter(GL_TEXTURE_3D, wrap, Param::I(GL_CLAMP_TO_EDGE as i32));
     }
     let n = N as i32;
-    ctx.tex_image_3d(
+    ctx.tex_image(
         GL_TEXTURE_3D,
         0,
         GL_RGBA as i32,
-        n,
-        n,
-        n,
+        [n, n, n],
         0,
         GL_RGBA,
         GL_UNSIGNED_BYTE,

@@ -247,7 +247,7 @@ impl GlApi for gl::Context {
         gl::Context::tex_parameter(self, target, pname, Param::Fv(params))
     }
     fn tex_image_1d(&mut self, t: u32, l: i32, i: i32, w: i32, b: i32, f: u32, ty: u32, p: &[f32]) {
-        gl::Context::tex_image_1d(self, t, l, i, w, b, f, ty, Some(&f32_bytes(p)))
+        gl::Context::tex_image(self, t, l, i, [w], b, f, ty, Some(&f32_bytes(p)))
     }
     fn tex_image_2d(
         &mut self,
@@ -261,7 +261,7 @@ impl GlApi for gl::Context {
         ty: u32,
         p: &[f32],
     ) {
-        gl::Context::tex_image_2d(self, t, l, i, w, h, b, f, ty, Some(&f32_bytes(p)))
+        gl::Context::tex_image(self, t, l, i, [w, h], b, f, ty, Some(&f32_bytes(p)))
     }
     fn tex_image_3d(
         &mut self,
@@ -276,7 +276,7 @@ impl GlApi for gl::Context {
         ty: u32,
         p: &[f32],
     ) {
-        gl::Context::tex_image_3d(self, t, l, i, w, h, d, b, f, ty, Some(&f32_bytes(p)))
+        gl::Context::tex_image(self, t, l, i, [w, h, d], b, f, ty, Some(&f32_bytes(p)))
     }
     fn read_pixels_f32(&mut self, x: i32, y: i32, w: i32, h: i32, f: u32, p: &mut [f32]) {
         let comps = match f {
