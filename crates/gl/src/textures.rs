@@ -14,7 +14,7 @@
 use crate::enums::*;
 use crate::mipmap::generate_mipmaps;
 use crate::objects::{
-    gen_names, image_target, set_image, target_index, Attachment, Image, TextureObj, MAX_LEVELS,
+    image_target, set_image, target_index, Attachment, Image, TextureObj, MAX_LEVELS,
 };
 use crate::param::Param;
 use crate::pixel_transfer::{format_components, pack_pixels, pixel_size, unpack_image};
@@ -42,11 +42,11 @@ fn valid_filter(f: u32, min: bool) -> bool {
 impl Context {
     /// glGenTextures.
     pub fn gen_textures(&mut self, n: i32) -> Vec<u32> {
-        let Some(n) = self.gen_count(n) else {
-            return Vec::new();
-        };
-        let o = &mut self.objects;
-        gen_names(&mut o.textures, &mut o.next_texture, n, TextureObj::default)
+        self.gen_objects(
+            n,
+            |o| (&mut o.textures, &mut o.next_texture),
+            TextureObj::default,
+        )
     }
 
     /// glDeleteTextures (bindings revert to 0, attachments are removed).
