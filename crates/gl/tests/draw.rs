@@ -164,16 +164,9 @@ fn fixed_function_lighting_and_texture() {
         GL_UNSIGNED_BYTE,
         Some(&texels),
     );
-    ctx.tex_parameter(
-        GL_TEXTURE_2D,
-        GL_TEXTURE_MIN_FILTER,
-        Param::I(GL_NEAREST as i32),
-    );
-    ctx.tex_parameter(
-        GL_TEXTURE_2D,
-        GL_TEXTURE_MAG_FILTER,
-        Param::I(GL_NEAREST as i32),
-    );
+    for filter in [GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER] {
+        ctx.tex_parameter(GL_TEXTURE_2D, filter, Param::I(GL_NEAREST as i32));
+    }
     ctx.enable(GL_TEXTURE_2D);
     ctx.color_3f(1.0, 1.0, 1.0);
     draw_rect(&mut ctx, -1.0, -1.0, 2.0, 2.0);

@@ -324,16 +324,9 @@ fn texture_2d(ctx: &mut Context, unit: u32, size: usize, texel: impl Fn(usize, u
     ctx.active_texture(GL_TEXTURE0 + unit);
     let name = ctx.gen_textures(1).first().copied().unwrap_or(0);
     ctx.bind_texture(GL_TEXTURE_2D, name);
-    ctx.tex_parameter(
-        GL_TEXTURE_2D,
-        GL_TEXTURE_MIN_FILTER,
-        Param::I(GL_LINEAR as i32),
-    );
-    ctx.tex_parameter(
-        GL_TEXTURE_2D,
-        GL_TEXTURE_MAG_FILTER,
-        Param::I(GL_LINEAR as i32),
-    );
+    for filter in [GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER] {
+        ctx.tex_parameter(GL_TEXTURE_2D, filter, Param::I(GL_LINEAR as i32));
+    }
     let s = size as i32;
     ctx.tex_image(
         GL_TEXTURE_2D,
@@ -425,16 +418,9 @@ fn volume(ctx: &mut Context, program: u32) {
     ctx.active_texture(GL_TEXTURE0);
     let name = ctx.gen_textures(1).first().copied().unwrap_or(0);
     ctx.bind_texture(GL_TEXTURE_3D, name);
-    ctx.tex_parameter(
-        GL_TEXTURE_3D,
-        GL_TEXTURE_MIN_FILTER,
-        Param::I(GL_LINEAR as i32),
-    );
-    ctx.tex_parameter(
-        GL_TEXTURE_3D,
-        GL_TEXTURE_MAG_FILTER,
-        Param::I(GL_LINEAR as i32),
-    );
+    for filter in [GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER] {
+        ctx.tex_parameter(GL_TEXTURE_3D, filter, Param::I(GL_LINEAR as i32));
+    }
     for wrap in [GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R] {
         ctx.tex_parameter(GL_TEXTURE_3D, wrap, Param::I(GL_CLAMP_TO_EDGE as i32));
     }
