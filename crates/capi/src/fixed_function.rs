@@ -7,6 +7,7 @@
 use crate::abi::*;
 use crate::context::{record_call, with_ctx};
 use gl::enums::*;
+use gl::Param;
 
 /// Integer form of a float query: colours (ranges [0, 1] or [-1, 1]) map
 /// linearly to the integer range, the rest round (GL 2.1 §6.1.2).
@@ -27,8 +28,8 @@ fn to_int(v: f32, color: bool) -> i32 {
 gl_entry_points! {
     // ---- lighting ----
     [list] fn glShadeModel(mode: GLenum) => |c| { c.gl.shade_model(mode) }
-    [list] fn glLightf(light: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.lightf(light, pname, v) }
-    [list] fn glLighti(light: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.lighti(light, pname, v) }
+    [list] fn glLightf(light: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.light(light, pname, Param::F(v)) }
+    [list] fn glLighti(light: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.light(light, pname, Param::I(v)) }
     fn glLightfv(light: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
         let n = match pname {
             GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => 4,
@@ -41,7 +42,7 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.lightfv(light, pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.light(light, pname, Param::Fv(&rd_vec(v, n))) }
     }
     fn glLightiv(light: GLenum, pname: GLenum, v: *const GLint) => |c| {
         let n = match pname {
@@ -55,10 +56,10 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.lightiv(light, pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.light(light, pname, Param::Iv(&rd_vec(v, n))) }
     }
-    [list] fn glMaterialf(face: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.materialf(face, pname, v) }
-    [list] fn glMateriali(face: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.materiali(face, pname, v) }
+    [list] fn glMaterialf(face: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.material(face, pname, Param::F(v)) }
+    [list] fn glMateriali(face: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.material(face, pname, Param::I(v)) }
     fn glMaterialfv(face: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
         let n = match pname {
             GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => 4,
@@ -71,7 +72,7 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.materialfv(face, pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.material(face, pname, Param::Fv(&rd_vec(v, n))) }
     }
     fn glMaterialiv(face: GLenum, pname: GLenum, v: *const GLint) => |c| {
         let n = match pname {
@@ -85,11 +86,11 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.materialiv(face, pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.material(face, pname, Param::Iv(&rd_vec(v, n))) }
     }
     [list] fn glColorMaterial(face: GLenum, mode: GLenum) => |c| { c.gl.color_material(face, mode) }
-    [list] fn glLightModelf(pname: GLenum, v: GLfloat) => |c| { c.gl.light_modelf(pname, v) }
-    [list] fn glLightModeli(pname: GLenum, v: GLint) => |c| { c.gl.light_modeli(pname, v) }
+    [list] fn glLightModelf(pname: GLenum, v: GLfloat) => |c| { c.gl.light_model(pname, Param::F(v)) }
+    [list] fn glLightModeli(pname: GLenum, v: GLint) => |c| { c.gl.light_model(pname, Param::I(v)) }
     fn glLightModelfv(pname: GLenum, v: *const GLfloat) => |c| {
         let n = if pname == GL_LIGHT_MODEL_AMBIENT { 4 } else { 1 };
         if c.compiling() && !v.is_null() {
@@ -98,7 +99,7 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.light_modelfv(pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.light_model(pname, Param::Fv(&rd_vec(v, n))) }
     }
     fn glLightModeliv(pname: GLenum, v: *const GLint) => |c| {
         let n = if pname == GL_LIGHT_MODEL_AMBIENT { 4 } else { 1 };
@@ -108,7 +109,7 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.light_modeliv(pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.light_model(pname, Param::Iv(&rd_vec(v, n))) }
     }
     fn glGetLightfv(light: GLenum, pname: GLenum, v: *mut GLfloat) => |c| {
         let r = c.gl.get_lightfv(light, pname);
@@ -130,9 +131,9 @@ gl_entry_points! {
     }
 
     // ---- texture coordinate generation ----
-    [list] fn glTexGeni(coord: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_geni(coord, pname, v) }
-    [list] fn glTexGenf(coord: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_genf(coord, pname, v) }
-    [list] fn glTexGend(coord: GLenum, pname: GLenum, v: GLdouble) => |c| { c.gl.tex_genf(coord, pname, v as f32) }
+    [list] fn glTexGeni(coord: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_gen(coord, pname, Param::I(v)) }
+    [list] fn glTexGenf(coord: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_gen(coord, pname, Param::F(v)) }
+    [list] fn glTexGend(coord: GLenum, pname: GLenum, v: GLdouble) => |c| { c.gl.tex_gen(coord, pname, Param::F(v as f32)) }
     fn glTexGenfv(coord: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
         let n = if pname == GL_TEXTURE_GEN_MODE { 1 } else { 4 };
         if c.compiling() && !v.is_null() {
@@ -141,7 +142,7 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.tex_genfv(coord, pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.tex_gen(coord, pname, Param::Fv(&rd_vec(v, n))) }
     }
     fn glTexGendv(coord: GLenum, pname: GLenum, v: *const GLdouble) => |c| {
         let n = if pname == GL_TEXTURE_GEN_MODE { 1 } else { 4 };
@@ -153,7 +154,7 @@ gl_entry_points! {
         }
         if !v.is_null() {
             let f: Vec<f32> = rd_vec(v, n).iter().map(|&x| x as f32).collect();
-            c.gl.tex_genfv(coord, pname, &f)
+            c.gl.tex_gen(coord, pname, Param::Fv(&f))
         }
     }
     fn glTexGeniv(coord: GLenum, pname: GLenum, v: *const GLint) => |c| {
@@ -166,7 +167,7 @@ gl_entry_points! {
         }
         if !v.is_null() {
             let f: Vec<f32> = rd_vec(v, n).iter().map(|&x| x as f32).collect();
-            c.gl.tex_genfv(coord, pname, &f)
+            c.gl.tex_gen(coord, pname, Param::Fv(&f))
         }
     }
     fn glGetTexGenfv(coord: GLenum, pname: GLenum, v: *mut GLfloat) => |c| {
@@ -183,8 +184,8 @@ gl_entry_points! {
     }
 
     // ---- texture environment ----
-    [list] fn glTexEnvi(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_envi(target, pname, v) }
-    [list] fn glTexEnvf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_envf(target, pname, v) }
+    [list] fn glTexEnvi(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_env(target, pname, Param::I(v)) }
+    [list] fn glTexEnvf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_env(target, pname, Param::F(v)) }
     fn glTexEnvfv(target: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
         let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
         if c.compiling() && !v.is_null() {
@@ -193,7 +194,7 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.tex_envfv(target, pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.tex_env(target, pname, Param::Fv(&rd_vec(v, n))) }
     }
     fn glTexEnviv(target: GLenum, pname: GLenum, v: *const GLint) => |c| {
         let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
@@ -203,7 +204,7 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.tex_enviv(target, pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.tex_env(target, pname, Param::Iv(&rd_vec(v, n))) }
     }
     fn glGetTexEnvfv(target: GLenum, pname: GLenum, v: *mut GLfloat) => |c| {
         let r = c.gl.get_tex_envfv(target, pname);
@@ -216,8 +217,8 @@ gl_entry_points! {
     }
 
     // ---- fog ----
-    [list] fn glFogf(pname: GLenum, v: GLfloat) => |c| { c.gl.fogf(pname, v) }
-    [list] fn glFogi(pname: GLenum, v: GLint) => |c| { c.gl.fogi(pname, v) }
+    [list] fn glFogf(pname: GLenum, v: GLfloat) => |c| { c.gl.fog(pname, Param::F(v)) }
+    [list] fn glFogi(pname: GLenum, v: GLint) => |c| { c.gl.fog(pname, Param::I(v)) }
     fn glFogfv(pname: GLenum, v: *const GLfloat) => |c| {
         let n = if pname == GL_FOG_COLOR { 4 } else { 1 };
         if c.compiling() && !v.is_null() {
@@ -226,7 +227,7 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.fogfv(pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.fog(pname, Param::Fv(&rd_vec(v, n))) }
     }
     fn glFogiv(pname: GLenum, v: *const GLint) => |c| {
         let n = if pname == GL_FOG_COLOR { 4 } else { 1 };
@@ -236,7 +237,7 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.fogiv(pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.fog(pname, Param::Iv(&rd_vec(v, n))) }
     }
 }
 

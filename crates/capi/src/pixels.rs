@@ -103,30 +103,12 @@ fn copy_tex_image(
     let Some(data) = read_block(c, x, y, w, h, format) else {
         return;
     };
+    let (internal, data) = (internal as i32, Some(&data[..]));
     with_unpack_4(c, |c| {
         if dims == 1 {
-            c.gl.tex_image_1d(
-                target,
-                level,
-                internal as i32,
-                w,
-                0,
-                format,
-                GL_FLOAT,
-                Some(&data),
-            );
+            c.gl.tex_image(target, level, internal, [w], 0, format, GL_FLOAT, data)
         } else {
-            c.gl.tex_image_2d(
-                target,
-                level,
-                internal as i32,
-                w,
-                h,
-                0,
-                format,
-                GL_FLOAT,
-                Some(&data),
-            );
+            c.gl.tex_image(target, level, internal, [w, h], 0, format, GL_FLOAT, data)
         }
     });
 }
@@ -160,13 +142,19 @@ fn copy_tex_sub_image(
     };
     with_unpack_4(c, |c| match dims {
         1 => {
-            c.gl.tex_sub_image_1d(target, level, off[0], w, format, GL_FLOAT, &data)
+            c.gl.tex_sub_image(target, level, [off[0]], [w], format, GL_FLOAT, &data)
         }
-        2 => {
-            c.gl.tex_sub_image_2d(target, level, off[0], off[1], w, h, format, GL_FLOAT, &data)
-        }
+        2 => c.gl.tex_sub_image(
+            target,
+            level,
+            [off[0], off[1]],
+            [w, h],
+            format,
+            GL_FLOAT,
+            &data,
+        ),
         _ => {
-            c.gl.tex_sub_image_3d(target, level, off, [w, h, 1], format, GL_FLOAT, &data)
+            c.gl.tex_sub_image(target, level, off, [w, h, 1], format, GL_FLOAT, &data)
         }
     });
     c.dirty = true;
@@ -192,7 +180,7 @@ gl_entry_points! {
     ) => |c| {
         let Ok(bytes) = image_bytes(c, w, 1, 1, format, ty, data) else { return };
         let bytes = bytes.unwrap_or_default();
-        c.gl.tex_sub_image_1d(target, level, xoff, w, format, ty, &bytes);
+        c.gl.tex_sub_image(target, level, [xoff], [w], format, ty, &bytes);
     }
     fn glTexSubImage3D(
         target: GLenum, level: GLint, xoff: GLint, yoff: GLint, zoff: GLint, w: GLsizei,
@@ -200,7 +188,7 @@ gl_entry_points! {
     ) => |c| {
         let Ok(bytes) = image_bytes(c, w, h, d, format, ty, data) else { return };
         let bytes = bytes.unwrap_or_default();
-        c.gl.tex_sub_image_3d(target, level, [xoff, yoff, zoff], [w, h, d], format, ty, &bytes);
+        c.gl.tex_sub_image(target, level, [xoff, yoff, zoff], [w, h, d], format, ty, &bytes);
     }
     [list] fn glCopyTexImage1D(
         target: GLenum, level: GLint, internal: GLenum, x: GLint, y: GLint, w: GLsizei,

@@ -6,12 +6,13 @@
 use crate::abi::*;
 use crate::context::{record_call, with_ctx};
 use gl::enums::*;
+use gl::Param;
 
 gl_entry_points! {
     // ---- points, lines, polygons ----
     [list] fn glPointSize(size: GLfloat) => |c| { c.gl.point_size(size) }
-    [list] fn glPointParameterf(pname: GLenum, v: GLfloat) => |c| { c.gl.point_parameterf(pname, v) }
-    [list] fn glPointParameteri(pname: GLenum, v: GLint) => |c| { c.gl.point_parameteri(pname, v) }
+    [list] fn glPointParameterf(pname: GLenum, v: GLfloat) => |c| { c.gl.point_parameter(pname, Param::F(v)) }
+    [list] fn glPointParameteri(pname: GLenum, v: GLint) => |c| { c.gl.point_parameter(pname, Param::I(v)) }
     fn glPointParameterfv(pname: GLenum, v: *const GLfloat) => |c| {
         let n = if pname == GL_POINT_DISTANCE_ATTENUATION { 3 } else { 1 };
         if c.compiling() && !v.is_null() {
@@ -20,7 +21,7 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.point_parameterfv(pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.point_parameter(pname, Param::Fv(&rd_vec(v, n))) }
     }
     fn glPointParameteriv(pname: GLenum, v: *const GLint) => |c| {
         let n = if pname == GL_POINT_DISTANCE_ATTENUATION { 3 } else { 1 };
@@ -30,10 +31,7 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() {
-            let f: Vec<f32> = rd_vec(v, n).iter().map(|&x| x as f32).collect();
-            c.gl.point_parameterfv(pname, &f)
-        }
+        if !v.is_null() { c.gl.point_parameter(pname, Param::Iv(&rd_vec(v, n))) }
     }
     [list] fn glLineWidth(width: GLfloat) => |c| { c.gl.line_width(width) }
     [list] fn glCullFace(mode: GLenum) => |c| { c.gl.cull_face(mode) }

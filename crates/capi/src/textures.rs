@@ -9,6 +9,7 @@ use crate::abi::*;
 use crate::buffers::image_bytes;
 use crate::context::{record_call, with_ctx};
 use gl::enums::*;
+use gl::Param;
 use std::ffi::c_void;
 
 gl_entry_points! {
@@ -26,8 +27,8 @@ gl_entry_points! {
     [list] fn glActiveTexture(unit: GLenum) => |c| { c.gl.active_texture(unit) }
 
     // ---- parameters ----
-    [list] fn glTexParameteri(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_parameteri(target, pname, v) }
-    [list] fn glTexParameterf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_parameterf(target, pname, v) }
+    [list] fn glTexParameteri(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_parameter(target, pname, Param::I(v)) }
+    [list] fn glTexParameterf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_parameter(target, pname, Param::F(v)) }
     fn glTexParameterfv(target: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
         let n = if pname == GL_TEXTURE_BORDER_COLOR { 4 } else { 1 };
         if c.compiling() && !v.is_null() {
@@ -36,15 +37,11 @@ gl_entry_points! {
                 return;
             }
         }
-        if !v.is_null() { c.gl.tex_parameterfv(target, pname, &rd_vec(v, n)) }
+        if !v.is_null() { c.gl.tex_parameter(target, pname, Param::Fv(&rd_vec(v, n))) }
     }
     fn glTexParameteriv(target: GLenum, pname: GLenum, v: *const GLint) => |c| {
-        if pname == GL_TEXTURE_BORDER_COLOR {
-            let f: Vec<f32> = rd_vec(v, 4).iter().map(|&x| gl::state::int_to_unit(x)).collect();
-            if !v.is_null() { c.gl.tex_parameterfv(target, pname, &f) }
-        } else if let Some([x]) = rd::<1, i32>(v) {
-            c.gl.tex_parameteri(target, pname, x)
-        }
+        let n = if pname == GL_TEXTURE_BORDER_COLOR { 4 } else { 1 };
+        if !v.is_null() { c.gl.tex_parameter(target, pname, Param::Iv(&rd_vec(v, n))) }
     }
     fn glGetTexParameteriv(target: GLenum, pname: GLenum, v: *mut GLint) => |c| {
         let r = c.gl.get_tex_parameteriv(target, pname);
@@ -74,21 +71,21 @@ gl_entry_points! {
         format: GLenum, ty: GLenum, data: *const c_void
     ) => |c| {
         let Ok(bytes) = image_bytes(c, w, 1, 1, format, ty, data) else { return };
-        c.gl.tex_image_1d(target, level, internal, w, border, format, ty, bytes.as_deref());
+        c.gl.tex_image(target, level, internal, [w], border, format, ty, bytes.as_deref());
     }
     fn glTexImage2D(
         target: GLenum, level: GLint, internal: GLint, w: GLsizei, h: GLsizei, border: GLint,
         format: GLenum, ty: GLenum, data: *const c_void
     ) => |c| {
         let Ok(bytes) = image_bytes(c, w, h, 1, format, ty, data) else { return };
-        c.gl.tex_image_2d(target, level, internal, w, h, border, format, ty, bytes.as_deref());
+        c.gl.tex_image(target, level, internal, [w, h], border, format, ty, bytes.as_deref());
     }
     fn glTexImage3D(
         target: GLenum, level: GLint, internal: GLint, w: GLsizei, h: GLsizei, d: GLsizei,
         border: GLint, format: GLenum, ty: GLenum, data: *const c_void
     ) => |c| {
         let Ok(bytes) = image_bytes(c, w, h, d, format, ty, data) else { return };
-        c.gl.tex_image_3d(target, level, internal, w, h, d, border, format, ty, bytes.as_deref());
+        c.gl.tex_image(target, level, internal, [w, h, d], border, format, ty, bytes.as_deref());
     }
     fn glTexSubImage2D(
         target: GLenum, level: GLint, xoff: GLint, yoff: GLint, w: GLsizei, h: GLsizei,
@@ -96,7 +93,7 @@ gl_entry_points! {
     ) => |c| {
         let Ok(bytes) = image_bytes(c, w, h, 1, format, ty, data) else { return };
         let bytes = bytes.unwrap_or_default();
-        c.gl.tex_sub_image_2d(target, level, xoff, yoff, w, h, format, ty, &bytes);
+        c.gl.tex_sub_image(target, level, [xoff, yoff], [w, h], format, ty, &bytes);
     }
     fn glGenerateMipmap(target: GLenum) => |c| { c.gl.generate_mipmap(target) }
     fn glGenerateMipmapEXT(target: GLenum) => |c| { c.gl.generate_mipmap(target) }

@@ -8,40 +8,30 @@
 //! (a C layer moves pixels through them).
 
 use crate::enums::*;
-use crate::objects::{gen_names, BufferObj};
+use crate::objects::{delete_names, BufferObj};
 use crate::Context;
 use std::sync::Arc;
 
 impl Context {
     /// glGenBuffers.
     pub fn gen_buffers(&mut self, n: i32) -> Vec<u32> {
-        let Some(n) = self.gen_count(n) else {
-            return Vec::new();
-        };
-        let o = &mut self.objects;
-        gen_names(&mut o.buffers, &mut o.next_buffer, n, BufferObj::default)
+        self.gen_objects(
+            n,
+            |o| (&mut o.buffers, &mut o.next_buffer),
+            BufferObj::default,
+        )
     }
 
     /// glDeleteBuffers (unbinds them).
     pub fn delete_buffers(&mut self, names: &[u32]) {
-        for &b in names {
-            if b == 0 {
-                continue;
-            }
-            self.objects.buffers.remove(&b);
-            if self.va.array_buffer == b {
-                self.va.array_buffer = 0;
-            }
-            if self.va.element_buffer == b {
-                self.va.element_buffer = 0;
-            }
-            if self.objects.pack_buffer == b {
-                self.objects.pack_buffer = 0;
-            }
-            if self.objects.unpack_buffer == b {
-                self.objects.unpack_buffer = 0;
-            }
-        }
+        let o = &mut self.objects;
+        let bindings = &mut [
+            &mut self.va.array_buffer,
+            &mut self.va.element_buffer,
+            &mut o.pack_buffer,
+            &mut o.unpack_buffer,
+        ];
+        delete_names(&mut o.buffers, names, bindings);
     }
 
     /// The buffer bound to `target` (0: none or not a buffer target).

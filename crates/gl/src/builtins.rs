@@ -228,6 +228,7 @@ impl Context {
 mod tests {
     use super::*;
     use crate::enums::*;
+    use crate::param::Param;
 
     fn close(a: &[f32], b: &[f32]) -> bool {
         a.len() == b.len() && a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-5)
@@ -272,15 +273,15 @@ mod tests {
         assert!(close(&ls[4..8], &[1.0; 4]));
         assert!(close(&ls[16..20], &[0.0, 0.0, 1.0, 1.0]));
         assert!(close(&ls[23..29], &[0.0, 180.0, -1.0, 1.0, 0.0, 0.0]));
-        ctx.lightfv(GL_LIGHT0, GL_POSITION, &[1.0, 0.0, 0.0, 0.0]);
+        ctx.light(GL_LIGHT0, GL_POSITION, Param::Fv(&[1.0, 0.0, 0.0, 0.0]));
         let h = ctx.builtin_uniform("gl_LightSource").unwrap();
         let s = 1.0 / 2.0f32.sqrt();
         assert!(close(&h[16..20], &[s, 0.0, s, 1.0]));
-        ctx.lightf(GL_LIGHT0, GL_SPOT_CUTOFF, 60.0);
+        ctx.light(GL_LIGHT0, GL_SPOT_CUTOFF, Param::F(60.0));
         let h = ctx.builtin_uniform("gl_LightSource").unwrap();
         assert!(close(&h[25..26], &[0.5]));
-        ctx.materialfv(GL_FRONT, GL_DIFFUSE, &[0.5, 0.5, 0.5, 0.25]);
-        ctx.lightfv(GL_LIGHT1, GL_DIFFUSE, &[0.2, 0.4, 0.6, 1.0]);
+        ctx.material(GL_FRONT, GL_DIFFUSE, Param::Fv(&[0.5, 0.5, 0.5, 0.25]));
+        ctx.light(GL_LIGHT1, GL_DIFFUSE, Param::Fv(&[0.2, 0.4, 0.6, 1.0]));
         let p = ctx.builtin_uniform("gl_FrontLightProduct").unwrap();
         assert_eq!(p.len(), 8 * 12);
         assert!(close(&p[12 + 4..12 + 8], &[0.1, 0.2, 0.3, 0.25]));
@@ -295,8 +296,8 @@ mod tests {
     #[test]
     fn fog_depth_range_planes() {
         let mut ctx = Context::new(4, 4);
-        ctx.fogf(GL_FOG_START, 2.0);
-        ctx.fogf(GL_FOG_END, 6.0);
+        ctx.fog(GL_FOG_START, Param::F(2.0));
+        ctx.fog(GL_FOG_END, Param::F(6.0));
         let f = ctx.builtin_uniform("gl_Fog").unwrap();
         assert!(close(&f, &[0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 6.0, 0.25]));
         ctx.depth_range(0.25, 0.75);
@@ -306,7 +307,7 @@ mod tests {
         ));
         ctx.translatef(1.0, 0.0, 0.0);
         ctx.active_texture(GL_TEXTURE1);
-        ctx.tex_genfv(GL_S, GL_EYE_PLANE, &[1.0, 0.0, 0.0, 0.0]);
+        ctx.tex_gen(GL_S, GL_EYE_PLANE, Param::Fv(&[1.0, 0.0, 0.0, 0.0]));
         let e = ctx.builtin_uniform("gl_EyePlaneS").unwrap();
         // Plane x = 0 in object space is x = 1 in eye space: (1, 0, 0, -1).
         assert!(close(&e[4..8], &[1.0, 0.0, 0.0, -1.0]));

@@ -495,6 +495,7 @@ pub fn fragment_source(shape: &FragmentShape) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::param::Param;
     use glsl::{compile, CompileOptions, Stage};
 
     fn compiles(src: &str, stage: Stage) {
@@ -525,13 +526,13 @@ mod tests {
         ctx.enable(GL_FOG);
         ctx.enable(GL_CLIP_PLANE2);
         ctx.enable(GL_COLOR_SUM);
-        ctx.light_modeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
-        ctx.light_modeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
-        ctx.light_modeli(
+        ctx.light_model(GL_LIGHT_MODEL_TWO_SIDE, Param::I(1));
+        ctx.light_model(GL_LIGHT_MODEL_LOCAL_VIEWER, Param::I(1));
+        ctx.light_model(
             GL_LIGHT_MODEL_COLOR_CONTROL,
-            GL_SEPARATE_SPECULAR_COLOR as i32,
+            Param::I(GL_SEPARATE_SPECULAR_COLOR as i32),
         );
-        ctx.fogi(GL_FOG_MODE, GL_LINEAR as i32);
+        ctx.fog(GL_FOG_MODE, Param::I(GL_LINEAR as i32));
         let mut modes = [GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD].iter();
         for (u, target) in [
             GL_TEXTURE_2D,
@@ -545,10 +546,10 @@ mod tests {
         {
             ctx.active_texture(GL_TEXTURE0 + u as u32);
             ctx.enable(*target);
-            ctx.tex_envi(
+            ctx.tex_env(
                 GL_TEXTURE_ENV,
                 GL_TEXTURE_ENV_MODE,
-                *modes.next().unwrap() as i32,
+                Param::I(*modes.next().unwrap() as i32),
             );
             ctx.enable(GL_TEXTURE_GEN_S);
             ctx.enable(GL_TEXTURE_GEN_T);
@@ -559,8 +560,8 @@ mod tests {
                 GL_REFLECTION_MAP,
                 GL_NORMAL_MAP,
             ][u];
-            ctx.tex_geni(GL_S, GL_TEXTURE_GEN_MODE, mode as i32);
-            ctx.tex_geni(GL_T, GL_TEXTURE_GEN_MODE, mode as i32);
+            ctx.tex_gen(GL_S, GL_TEXTURE_GEN_MODE, Param::I(mode as i32));
+            ctx.tex_gen(GL_T, GL_TEXTURE_GEN_MODE, Param::I(mode as i32));
         }
         assert_eq!(ctx.get_error(), GL_NO_ERROR);
         assert_eq!(ctx.ff_texcoord_count(), 5);
@@ -579,12 +580,11 @@ mod tests {
         let mut ctx = Context::new(4, 4);
         let t = ctx.gen_textures(1)[0];
         ctx.bind_texture(GL_TEXTURE_2D, t);
-        ctx.tex_image_2d(
+        ctx.tex_image(
             GL_TEXTURE_2D,
             0,
             GL_ALPHA as i32,
-            1,
-            1,
+            [1, 1],
             0,
             GL_ALPHA,
             GL_UNSIGNED_BYTE,
@@ -594,13 +594,16 @@ mod tests {
         let fs = ctx.ff_fragment_source(true);
         // MODULATE with an ALPHA texture keeps the fragment color.
         assert!(fs.contains("vec4(c.rgb, c.a * t.a)"), "{fs}");
-        ctx.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
-        ctx.tex_image_2d(
+        ctx.tex_env(
+            GL_TEXTURE_ENV,
+            GL_TEXTURE_ENV_MODE,
+            Param::I(GL_REPLACE as i32),
+        );
+        ctx.tex_image(
             GL_TEXTURE_2D,
             0,
             GL_RGB as i32,
-            1,
-            1,
+            [1, 1],
             0,
             GL_RGB,
             GL_UNSIGNED_BYTE,

@@ -13,7 +13,7 @@
 
 use crate::enums::*;
 use crate::objects::{
-    gen_names, image_target, Attachment, FramebufferObj, RenderbufferObj, MAX_LEVELS,
+    delete_names, image_target, Attachment, FramebufferObj, RenderbufferObj, MAX_LEVELS,
 };
 use crate::texture_format::base_format;
 use crate::{Context, MAX_TEXTURE_SIZE};
@@ -23,14 +23,9 @@ impl Context {
 
     /// glGenRenderbuffers(EXT).
     pub fn gen_renderbuffers(&mut self, n: i32) -> Vec<u32> {
-        let Some(n) = self.gen_count(n) else {
-            return Vec::new();
-        };
-        let o = &mut self.objects;
-        gen_names(
-            &mut o.renderbuffers,
-            &mut o.next_renderbuffer,
+        self.gen_objects(
             n,
+            |o| (&mut o.renderbuffers, &mut o.next_renderbuffer),
             RenderbufferObj::default,
         )
     }
@@ -49,15 +44,12 @@ impl Context {
 
     /// glDeleteRenderbuffers(EXT).
     pub fn delete_renderbuffers(&mut self, names: &[u32]) {
-        for &r in names {
-            if r == 0 {
-                continue;
-            }
-            self.objects.renderbuffers.remove(&r);
-            if self.objects.bound_renderbuffer == r {
-                self.objects.bound_renderbuffer = 0;
-            }
-        }
+        let o = &mut self.objects;
+        delete_names(
+            &mut o.renderbuffers,
+            names,
+            &mut [&mut o.bound_renderbuffer],
+        );
     }
 
     /// glRenderbufferStorage(EXT).
@@ -102,14 +94,9 @@ impl Context {
 
     /// glGenFramebuffers(EXT).
     pub fn gen_framebuffers(&mut self, n: i32) -> Vec<u32> {
-        let Some(n) = self.gen_count(n) else {
-            return Vec::new();
-        };
-        let o = &mut self.objects;
-        gen_names(
-            &mut o.framebuffers,
-            &mut o.next_framebuffer,
+        self.gen_objects(
             n,
+            |o| (&mut o.framebuffers, &mut o.next_framebuffer),
             FramebufferObj::new,
         )
     }
@@ -139,18 +126,9 @@ impl Context {
 
     /// glDeleteFramebuffers(EXT): bindings revert to the default framebuffer.
     pub fn delete_framebuffers(&mut self, names: &[u32]) {
-        for &f in names {
-            if f == 0 {
-                continue;
-            }
-            self.objects.framebuffers.remove(&f);
-            if self.objects.draw_framebuffer == f {
-                self.objects.draw_framebuffer = 0;
-            }
-            if self.objects.read_framebuffer == f {
-                self.objects.read_framebuffer = 0;
-            }
-        }
+        let o = &mut self.objects;
+        let bindings = &mut [&mut o.draw_framebuffer, &mut o.read_framebuffer];
+        delete_names(&mut o.framebuffers, names, bindings);
     }
 
     /// glIsFramebuffer.
@@ -482,6 +460,35 @@ mod tests {
     use super::*;
 
     #[test]
+    fn gen_and_delete_unbind() {
+        let mut ctx = Context::new(4, 4);
+        assert!(ctx.gen_framebuffers(-1).is_empty());
+        assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+        let [f, g] = ctx.gen_framebuffers(2)[..] else {
+            panic!("two names")
+        };
+        let r = ctx.gen_renderbuffers(1)[0];
+        let b = ctx.gen_buffers(1)[0];
+        assert!(f != 0 && g == f + 1);
+        ctx.bind_framebuffer(GL_DRAW_FRAMEBUFFER, f);
+        ctx.bind_framebuffer(GL_READ_FRAMEBUFFER, g);
+        ctx.bind_renderbuffer(GL_RENDERBUFFER, r);
+        ctx.bind_buffer(GL_ARRAY_BUFFER, b);
+        ctx.bind_buffer(GL_PIXEL_PACK_BUFFER, b);
+        ctx.delete_framebuffers(&[0, g]);
+        assert_eq!(ctx.objects.draw_framebuffer, f);
+        assert_eq!(ctx.objects.read_framebuffer, 0);
+        assert!(!ctx.is_framebuffer(g));
+        ctx.delete_renderbuffers(&[r]);
+        assert_eq!(ctx.objects.bound_renderbuffer, 0);
+        ctx.delete_buffers(&[b]);
+        assert_eq!(ctx.bound_buffer(GL_ARRAY_BUFFER), 0);
+        assert_eq!(ctx.bound_buffer(GL_PIXEL_PACK_BUFFER), 0);
+        assert!(!ctx.is_buffer(b));
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    }
+
+    #[test]
     fn framebuffer_completeness() {
         let mut ctx = Context::new(4, 4);
         let fb = ctx.gen_framebuffers(1)[0];
@@ -492,12 +499,11 @@ mod tests {
         );
         let t = ctx.gen_textures(1)[0];
         ctx.bind_texture(GL_TEXTURE_2D, t);
-        ctx.tex_image_2d(
+        ctx.tex_image(
             GL_TEXTURE_2D,
             0,
             GL_RGBA as i32,
-            8,
-            8,
+            [8, 8],
             0,
             GL_RGBA,
             GL_UNSIGNED_BYTE,

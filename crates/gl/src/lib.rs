@@ -3,8 +3,10 @@
 //! [`Context`] holds the state of one GL 2.1 (compatibility) context and its
 //! objects; its methods are the GL entry points in snake case: `glFooBar4fv`
 //! is `foo_bar_4fv` (`glCreateShader` → [`Context::create_shader`],
-//! `glUniformMatrix2x3fv` → [`Context::uniform_matrix_2x3fv`]). Enum values
-//! are GL's, in [`enums`].
+//! `glUniformMatrix2x3fv` → [`Context::uniform_matrix_2x3fv`]), except
+//! that a parameter family whose forms differ only in how the values are
+//! passed is one method over a [`param::Param`] (`glFogf`, `glFogiv` →
+//! [`Context::fog`]). Enum values are GL's, in [`enums`].
 //!
 //! ## Contract
 //! - Every invalid call records the GL 2.1 error (`GL_INVALID_ENUM`,
@@ -55,6 +57,7 @@
 //! - State: [`state`] (the fixed-function state, capabilities),
 //!   [`transform`], [`shading`], [`rasterization`], [`per_fragment`],
 //!   [`vertex`] (arrays, current values, glBegin/glEnd), [`matrix`],
+//!   [`param`] (the values of the glFog/glLight/glTexEnv... call families),
 //!   [`attrib_stack`], [`get`] (glGet*), [`occlusion`].
 //! - A draw: [`draw`] (the calls, glClear) puts together [`kernels`],
 //!   [`fetch`], [`pipeline_state`], [`texture_units`] and
@@ -87,6 +90,7 @@ pub mod matrix;
 pub mod mipmap;
 pub mod objects;
 pub mod occlusion;
+pub mod param;
 pub mod per_fragment;
 pub mod pipeline_state;
 pub mod pixel_path;
@@ -107,6 +111,7 @@ pub mod vertex;
 use enums::*;
 use std::collections::BTreeMap;
 
+pub use param::Param;
 pub use program::{ActiveInfo, ProgramObj, ShaderObj};
 pub use state::{Light, Material};
 pub use vertex::{ArrayData, ArrayState};

@@ -94,12 +94,11 @@ mod tests {
             2.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 2.0, 0.0, 0.0, 1.0,
         ];
         let bytes: Vec<u8> = px.iter().flat_map(|f| f.to_le_bytes()).collect();
-        ctx.tex_image_2d(
+        ctx.tex_image(
             GL_TEXTURE_2D,
             0,
             GL_RGBA32F as i32,
-            2,
-            2,
+            [2, 2],
             0,
             GL_RGBA,
             GL_FLOAT,

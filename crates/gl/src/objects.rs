@@ -249,36 +249,48 @@ pub(crate) fn image_target(target: u32, dims: u32) -> Option<(u32, usize)> {
 /// Largest mipmap level index accepted.
 pub(crate) const MAX_LEVELS: i32 = 14;
 
-/// Reserves `n` names unused in `map`, searching upward from `*next` and
-/// skipping 0, and creates each object with `make` (glGen*, GL 2.1 §2.9).
-pub(crate) fn gen_names<T>(
+/// Deletes the objects `names` of one table (glDelete*); each binding in
+/// `bindings` that names one of them reverts to 0. Name 0 is skipped.
+pub(crate) fn delete_names<T>(
     map: &mut BTreeMap<u32, T>,
-    next: &mut u32,
-    n: usize,
-    make: impl Fn() -> T,
-) -> Vec<u32> {
-    (0..n)
-        .map(|_| {
-            while map.contains_key(next) || *next == 0 {
-                *next = next.wrapping_add(1);
-            }
-            let name = *next;
-            map.insert(name, make());
-            *next = next.wrapping_add(1);
-            name
-        })
-        .collect()
+    names: &[u32],
+    bindings: &mut [&mut u32],
+) {
+    for &name in names.iter().filter(|&&n| n != 0) {
+        map.remove(&name);
+        for b in bindings.iter_mut().filter(|b| ***b == name) {
+            **b = 0;
+        }
+    }
 }
 
 impl Context {
-    /// The count of a glGen* call: negative is GL_INVALID_VALUE; at most
-    /// 65536 names per call.
-    pub(crate) fn gen_count(&mut self, n: i32) -> Option<usize> {
+    /// glGen*: reserves `n` names unused in the table `table` picks,
+    /// searching upward from its next-name counter and skipping 0, and
+    /// creates each object with `make` (GL 2.1 §2.9). A negative `n` is
+    /// GL_INVALID_VALUE; at most 65536 names per call.
+    pub(crate) fn gen_objects<T>(
+        &mut self,
+        n: i32,
+        table: impl FnOnce(&mut Objects) -> (&mut BTreeMap<u32, T>, &mut u32),
+        make: impl Fn() -> T,
+    ) -> Vec<u32> {
         if n < 0 {
             self.set_error(GL_INVALID_VALUE);
-            return None;
+            return Vec::new();
         }
-        Some(n.min(1 << 16) as usize)
+        let (map, next) = table(&mut self.objects);
+        (0..n.min(1 << 16))
+            .map(|_| {
+                while map.contains_key(next) || *next == 0 {
+                    *next = next.wrapping_add(1);
+                }
+                let name = *next;
+                map.insert(name, make());
+                *next = next.wrapping_add(1);
+                name
+            })
+            .collect()
     }
 }
 

@@ -130,29 +130,76 @@ impl Context {
     /// `GL_INVALID_OPERATION` if it names a program (the C layer checks the
     /// name before it looks at glShaderSource's strings, as Mesa does).
     pub fn check_shader(&mut self, shader: u32) -> bool {
-        if self.shaders.contains_key(&shader) {
+        self.check_name(shader, true)
+    }
+
+    /// Checks a program name as [`Context::check_shader`] checks a shader's.
+    fn check_program(&mut self, program: u32) -> bool {
+        self.check_name(program, false)
+    }
+
+    /// Whether `name` is a shader (`want_shader`) or a program; else
+    /// records `GL_INVALID_OPERATION` if it is the other kind and
+    /// `GL_INVALID_VALUE` if neither (GL 2.1 §2.15).
+    fn check_name(&mut self, name: u32, want_shader: bool) -> bool {
+        let is_shader = self.shaders.contains_key(&name);
+        let is_program = self.programs.contains_key(&name);
+        let (this_kind, other_kind) = if want_shader {
+            (is_shader, is_program)
+        } else {
+            (is_program, is_shader)
+        };
+        if this_kind {
             return true;
         }
-        let err = if self.programs.contains_key(&shader) {
+        self.set_error(if other_kind {
             GL_INVALID_OPERATION
         } else {
             GL_INVALID_VALUE
-        };
-        self.set_error(err);
+        });
         false
     }
 
-    fn check_program(&mut self, program: u32) -> bool {
-        if self.programs.contains_key(&program) {
-            return true;
+    /// `f` of shader object `shader`; `None` after check_shader's error.
+    fn shader_query<R>(&mut self, shader: u32, f: impl FnOnce(&ShaderObj) -> R) -> Option<R> {
+        self.check_shader(shader)
+            .then(|| self.shaders.get(&shader).map(f))
+            .flatten()
+    }
+
+    /// `f` of program object `program`; `None` after check_program's error.
+    fn program_query<R>(&mut self, program: u32, f: impl FnOnce(&ProgramObj) -> R) -> Option<R> {
+        self.check_program(program)
+            .then(|| self.programs.get(&program).map(f))
+            .flatten()
+    }
+
+    /// The value of a glGet*iv query: 0 after a name's error, and
+    /// `GL_INVALID_ENUM` with 0 for a pname the query does not know
+    /// (`Some(None)`).
+    fn iv_query(&mut self, v: Option<Option<i32>>) -> i32 {
+        if v == Some(None) {
+            self.set_error(GL_INVALID_ENUM);
         }
-        let err = if self.shaders.contains_key(&program) {
-            GL_INVALID_OPERATION
-        } else {
-            GL_INVALID_VALUE
-        };
-        self.set_error(err);
-        false
+        v.flatten().unwrap_or(0)
+    }
+
+    /// The executable of a linked program, for the queries that need one:
+    /// `None` after check_program's error or, for a program not linked,
+    /// `GL_INVALID_OPERATION`; inside glBegin/glEnd `GL_INVALID_OPERATION`.
+    fn linked_exe(&mut self, program: u32) -> Option<&Executable> {
+        if self.reject_in_begin() || !self.check_program(program) {
+            return None;
+        }
+        let linked = self
+            .programs
+            .get(&program)
+            .is_some_and(|p| p.link_status && p.exe.is_some());
+        if !linked {
+            self.set_error(GL_INVALID_OPERATION);
+            return None;
+        }
+        self.programs.get(&program).and_then(|p| p.exe.as_ref())
     }
 
     /// glShaderSource (the strings are concatenated at compile time).
@@ -267,12 +314,7 @@ impl Context {
 
     /// glGetAttachedShaders.
     pub fn get_attached_shaders(&mut self, program: u32) -> Vec<u32> {
-        if !self.check_program(program) {
-            return Vec::new();
-        }
-        self.programs
-            .get(&program)
-            .map(|p| p.attached.clone())
+        self.program_query(program, |p| p.attached.clone())
             .unwrap_or_default()
     }
 
@@ -404,110 +446,75 @@ impl Context {
 
     /// glGetShaderiv.
     pub fn get_shaderiv(&mut self, shader: u32, pname: u32) -> i32 {
-        if !self.check_shader(shader) {
-            return 0;
-        }
-        let Some(s) = self.shaders.get(&shader) else {
-            return 0;
-        };
-        match pname {
-            GL_SHADER_TYPE => s.kind as i32,
-            GL_DELETE_STATUS => s.delete_pending as i32,
-            GL_COMPILE_STATUS => s.compile_status() as i32,
-            GL_INFO_LOG_LENGTH => with_nul(s.info_log().len()),
-            GL_SHADER_SOURCE_LENGTH => with_nul(s.source.iter().map(String::len).sum()),
-            _ => {
-                self.set_error(GL_INVALID_ENUM);
-                0
-            }
-        }
+        let v = self.shader_query(shader, |s| {
+            Some(match pname {
+                GL_SHADER_TYPE => s.kind as i32,
+                GL_DELETE_STATUS => s.delete_pending as i32,
+                GL_COMPILE_STATUS => s.compile_status() as i32,
+                GL_INFO_LOG_LENGTH => with_nul(s.info_log().len()),
+                GL_SHADER_SOURCE_LENGTH => with_nul(s.source.iter().map(String::len).sum()),
+                _ => return None,
+            })
+        });
+        self.iv_query(v)
     }
 
     /// glGetShaderInfoLog.
     pub fn get_shader_info_log(&mut self, shader: u32) -> String {
-        if !self.check_shader(shader) {
-            return String::new();
-        }
-        self.shaders
-            .get(&shader)
-            .map(ShaderObj::info_log)
+        self.shader_query(shader, ShaderObj::info_log)
             .unwrap_or_default()
     }
 
     /// glGetShaderSource.
     pub fn get_shader_source(&mut self, shader: u32) -> String {
-        if !self.check_shader(shader) {
-            return String::new();
-        }
-        self.shaders
-            .get(&shader)
-            .map(|s| s.source.concat())
+        self.shader_query(shader, |s| s.source.concat())
             .unwrap_or_default()
     }
 
     /// glGetProgramiv.
     pub fn get_programiv(&mut self, program: u32, pname: u32) -> i32 {
-        if !self.check_program(program) {
-            return 0;
-        }
-        let Some(p) = self.programs.get(&program) else {
-            return 0;
-        };
-        let uniforms = p
-            .exe
-            .as_ref()
-            .map(|e| e.uniforms.leaves.as_slice())
-            .unwrap_or(&[]);
-        let attribs = p.exe.as_ref().map(|e| e.attribs.as_slice()).unwrap_or(&[]);
-        match pname {
-            GL_DELETE_STATUS => p.delete_pending as i32,
-            GL_LINK_STATUS => p.link_status as i32,
-            GL_VALIDATE_STATUS => p.validate_status as i32,
-            GL_INFO_LOG_LENGTH => with_nul(p.info_log.len()),
-            GL_ATTACHED_SHADERS => p.attached.len() as i32,
-            GL_ACTIVE_UNIFORMS => uniforms.len() as i32,
-            GL_ACTIVE_UNIFORM_MAX_LENGTH => uniforms
-                .iter()
-                .map(|l| with_nul(l.name.len() + if l.array.is_some() { 3 } else { 0 }))
-                .max()
-                .unwrap_or(0),
-            GL_ACTIVE_ATTRIBUTES => attribs.len() as i32,
-            GL_ACTIVE_ATTRIBUTE_MAX_LENGTH => attribs
-                .iter()
-                .map(|a| with_nul(a.name.len()))
-                .max()
-                .unwrap_or(0),
-            _ => {
-                self.set_error(GL_INVALID_ENUM);
-                0
-            }
-        }
+        let v = self.program_query(program, |p| {
+            let uniforms = p
+                .exe
+                .as_ref()
+                .map(|e| e.uniforms.leaves.as_slice())
+                .unwrap_or(&[]);
+            let attribs = p.exe.as_ref().map(|e| e.attribs.as_slice()).unwrap_or(&[]);
+            Some(match pname {
+                GL_DELETE_STATUS => p.delete_pending as i32,
+                GL_LINK_STATUS => p.link_status as i32,
+                GL_VALIDATE_STATUS => p.validate_status as i32,
+                GL_INFO_LOG_LENGTH => with_nul(p.info_log.len()),
+                GL_ATTACHED_SHADERS => p.attached.len() as i32,
+                GL_ACTIVE_UNIFORMS => uniforms.len() as i32,
+                GL_ACTIVE_UNIFORM_MAX_LENGTH => uniforms
+                    .iter()
+                    .map(|l| with_nul(l.name.len() + if l.array.is_some() { 3 } else { 0 }))
+                    .max()
+                    .unwrap_or(0),
+                GL_ACTIVE_ATTRIBUTES => attribs.len() as i32,
+                GL_ACTIVE_ATTRIBUTE_MAX_LENGTH => attribs
+                    .iter()
+                    .map(|a| with_nul(a.name.len()))
+                    .max()
+                    .unwrap_or(0),
+                _ => return None,
+            })
+        });
+        self.iv_query(v)
     }
 
     /// glGetProgramInfoLog.
     pub fn get_program_info_log(&mut self, program: u32) -> String {
-        if !self.check_program(program) {
-            return String::new();
-        }
-        self.programs
-            .get(&program)
-            .map(|p| p.info_log.clone())
+        self.program_query(program, |p| p.info_log.clone())
             .unwrap_or_default()
     }
 
     /// glGetActiveUniform: name (`"a[0]"` for arrays), size, GL type.
     pub fn get_active_uniform(&mut self, program: u32, index: u32) -> Option<ActiveInfo> {
-        if !self.check_program(program) {
-            return None;
-        }
-        let leaf = self
-            .programs
-            .get(&program)
-            .and_then(|p| p.exe.as_ref())
-            .and_then(|e| e.uniforms.leaves.get(index as usize))
-            .cloned();
-        match leaf {
-            Some(l) => Some(ActiveInfo {
+        self.active_info(program, |e| {
+            let l = e.uniforms.leaves.get(index as usize)?;
+            Some(ActiveInfo {
                 name: if l.array.is_some() {
                     format!("{}[0]", l.name)
                 } else {
@@ -515,70 +522,51 @@ impl Context {
                 },
                 size: l.array.unwrap_or(1) as i32,
                 ty: gl_type(l.ty),
-            }),
-            None => {
-                self.set_error(GL_INVALID_VALUE);
-                None
-            }
-        }
+            })
+        })
     }
 
     /// glGetActiveAttrib.
     pub fn get_active_attrib(&mut self, program: u32, index: u32) -> Option<ActiveInfo> {
-        if !self.check_program(program) {
-            return None;
-        }
-        let a = self
-            .programs
-            .get(&program)
-            .and_then(|p| p.exe.as_ref())
-            .and_then(|e| e.attribs.get(index as usize))
-            .cloned();
-        match a {
-            Some(a) => Some(ActiveInfo {
-                name: a.name,
+        self.active_info(program, |e| {
+            let a = e.attribs.get(index as usize)?;
+            Some(ActiveInfo {
+                name: a.name.clone(),
                 size: 1,
                 ty: gl_type(a.ty),
-            }),
-            None => {
-                self.set_error(GL_INVALID_VALUE);
-                None
-            }
+            })
+        })
+    }
+
+    /// An active uniform or attribute that `pick` finds in the program's
+    /// executable; an index past the active ones (or a program without an
+    /// executable) is `GL_INVALID_VALUE`.
+    fn active_info(
+        &mut self,
+        program: u32,
+        pick: impl FnOnce(&Executable) -> Option<ActiveInfo>,
+    ) -> Option<ActiveInfo> {
+        let info = self.program_query(program, |p| p.exe.as_ref().and_then(pick))?;
+        if info.is_none() {
+            self.set_error(GL_INVALID_VALUE);
         }
+        info
     }
 
     /// glGetAttribLocation.
     pub fn get_attrib_location(&mut self, program: u32, name: &str) -> i32 {
-        if self.reject_in_begin() || !self.check_program(program) {
-            return -1;
-        }
-        let Some(p) = self.programs.get(&program) else {
-            return -1;
-        };
-        let Some(exe) = p.exe.as_ref().filter(|_| p.link_status) else {
-            self.set_error(GL_INVALID_OPERATION);
-            return -1;
-        };
-        exe.attribs
-            .iter()
-            .find(|a| a.name == name)
-            .map(|a| a.location)
-            .unwrap_or(-1)
+        self.linked_exe(program).map_or(-1, |exe| {
+            exe.attribs
+                .iter()
+                .find(|a| a.name == name)
+                .map_or(-1, |a| a.location)
+        })
     }
 
     /// glGetUniformLocation.
     pub fn get_uniform_location(&mut self, program: u32, name: &str) -> i32 {
-        if self.reject_in_begin() || !self.check_program(program) {
-            return -1;
-        }
-        let Some(p) = self.programs.get(&program) else {
-            return -1;
-        };
-        let Some(exe) = p.exe.as_ref().filter(|_| p.link_status) else {
-            self.set_error(GL_INVALID_OPERATION);
-            return -1;
-        };
-        exe.uniforms.location(name, &exe.modules())
+        self.linked_exe(program)
+            .map_or(-1, |exe| exe.uniforms.location(name, &exe.modules()))
     }
 
     /// The current program's executable, mutably (for glUniform*).
@@ -676,15 +664,7 @@ impl Context {
     }
 
     fn get_uniform(&mut self, program: u32, loc: i32) -> Option<(Vec<u32>, Type)> {
-        if self.reject_in_begin() || !self.check_program(program) {
-            return None;
-        }
-        let r = self
-            .programs
-            .get(&program)
-            .filter(|p| p.link_status)
-            .and_then(|p| p.exe.as_ref())
-            .and_then(|e| e.uniforms.get(loc));
+        let r = self.linked_exe(program)?.uniforms.get(loc);
         if r.is_none() {
             self.set_error(GL_INVALID_OPERATION);
         }
@@ -946,6 +926,25 @@ mod tests {
         ctx.compile_shader(p);
         assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
         ctx.compile_shader(777);
+        assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+        // The queries: a name of the other kind, an unknown name, an
+        // unknown pname, an index past the active ones.
+        let s = ctx.get_attached_shaders(p)[0];
+        assert_eq!(ctx.get_programiv(s, GL_LINK_STATUS), 0);
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        assert_eq!(ctx.get_shader_source(p), "");
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        assert_eq!(ctx.get_shaderiv(777, GL_SHADER_TYPE), 0);
+        assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+        assert_eq!(ctx.get_shaderiv(s, GL_LINK_STATUS), 0);
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+        assert_eq!(ctx.get_programiv(p, GL_ACTIVE_ATTRIBUTES), 2);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        assert_eq!(ctx.get_active_attrib(p, 2), None);
+        assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+        assert_eq!(ctx.get_active_uniform(s, 0), None);
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        assert_eq!(ctx.get_attrib_location(777, "n"), -1);
         assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
     }
 

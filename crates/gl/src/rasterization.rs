@@ -6,6 +6,7 @@
 //! error; glHint only validates its arguments (no hint changes an image).
 
 use crate::enums::*;
+use crate::param::Param;
 use crate::Context;
 
 impl Context {
@@ -95,21 +96,13 @@ impl Context {
         self.st.line_width = width;
     }
 
-    /// glPointParameterf.
-    pub fn point_parameterf(&mut self, pname: u32, v: f32) {
-        self.point_parameterfv(pname, &[v]);
-    }
-
-    /// glPointParameteri.
-    pub fn point_parameteri(&mut self, pname: u32, v: i32) {
-        self.point_parameterfv(pname, &[v as f32]);
-    }
-
-    /// glPointParameterfv.
-    pub fn point_parameterfv(&mut self, pname: u32, v: &[f32]) {
+    /// glPointParameter{f,i,fv,iv} (a scalar form of
+    /// GL_POINT_DISTANCE_ATTENUATION is too few values: GL_INVALID_VALUE).
+    pub fn point_parameter(&mut self, pname: u32, v: Param) {
         if self.reject_in_begin() {
             return;
         }
+        let v = &v.floats(pname)[..];
         let need = if pname == GL_POINT_DISTANCE_ATTENUATION {
             3
         } else {

@@ -5,13 +5,17 @@
 //! active texture unit.
 //!
 //! Contract: light positions and spot directions are transformed to eye
-//! coordinates by the modelview matrix when set (Table 6.9); integer color
-//! parameters map linearly to [-1, 1] (Table 2.9); the *iv/*fv/*i/*f forms
-//! share one validation per parameter.
+//! coordinates by the modelview matrix when set (Table 6.9); each call
+//! family (glLight{f,i,fv,iv}...) is one method over a [`Param`], which
+//! maps integer colors linearly to [-1, 1] (Table 2.9); a scalar form of
+//! a parameter of several values is GL_INVALID_ENUM for lights,
+//! materials, the light model and fog, and GL_INVALID_VALUE (too few
+//! values) for the texture environment and coordinate generation.
 
 use crate::enums::*;
 use crate::matrix;
-use crate::state::{clamp01, int_to_unit};
+use crate::param::Param;
+use crate::state::clamp01;
 use crate::{Context, MAX_LIGHTS, MAX_TEXTURE_UNITS};
 
 /// The number of values a light/material/fog/light-model parameter takes.
@@ -31,35 +35,46 @@ fn light_param_len(pname: u32) -> usize {
 }
 
 impl Context {
-    /// glLightf.
-    pub fn lightf(&mut self, light: u32, pname: u32, v: f32) {
-        if light_param_len(pname) != 1 {
+    /// The values of a light, material, light-model or fog call as an enum
+    /// and as floats, or `None` with the error recorded. The checks run in
+    /// this order: a scalar form of a parameter of several values is
+    /// GL_INVALID_ENUM; a call between glBegin and glEnd is
+    /// GL_INVALID_OPERATION unless `in_begin_ok` (glMaterial); an unknown
+    /// light or face (`object_ok` false) is GL_INVALID_ENUM; too few values
+    /// is GL_INVALID_VALUE.
+    fn lighting_values(
+        &mut self,
+        pname: u32,
+        v: Param,
+        object_ok: bool,
+        in_begin_ok: bool,
+    ) -> Option<(u32, Vec<f32>)> {
+        if v.is_scalar() && light_param_len(pname) != 1 {
             self.set_error(GL_INVALID_ENUM);
-            return;
+            return None;
         }
-        self.lightfv(light, pname, &[v]);
-    }
-
-    /// glLighti.
-    pub fn lighti(&mut self, light: u32, pname: u32, v: i32) {
-        self.lightf(light, pname, v as f32);
-    }
-
-    /// glLightfv. GL_POSITION is transformed by the model-view matrix,
-    /// GL_SPOT_DIRECTION by its upper 3x3 (GL 2.1 §2.14.2).
-    pub fn lightfv(&mut self, light: u32, pname: u32, v: &[f32]) {
-        if self.reject_in_begin() {
-            return;
+        if !in_begin_ok && self.reject_in_begin() {
+            return None;
         }
-        let i = light.wrapping_sub(GL_LIGHT0) as usize;
-        if i >= MAX_LIGHTS {
+        if !object_ok {
             self.set_error(GL_INVALID_ENUM);
-            return;
+            return None;
         }
-        if v.len() < light_param_len(pname) {
+        let f = v.floats(pname);
+        if f.len() < light_param_len(pname) {
             self.set_error(GL_INVALID_VALUE);
-            return;
+            return None;
         }
+        Some((v.as_enum(), f))
+    }
+
+    /// glLight{f,i,fv,iv}. GL_POSITION is transformed by the model-view
+    /// matrix, GL_SPOT_DIRECTION by its upper 3x3 (GL 2.1 §2.14.2).
+    pub fn light(&mut self, light: u32, pname: u32, v: Param) {
+        let i = light.wrapping_sub(GL_LIGHT0) as usize;
+        let Some((_, v)) = self.lighting_values(pname, v, i < MAX_LIGHTS, false) else {
+            return;
+        };
         let mv = self.modelview_matrix();
         let l = &mut self.st.lights[i];
         let v4 = || [v[0], v[1], v[2], v[3]];
@@ -97,12 +112,6 @@ impl Context {
         }
     }
 
-    /// glLightiv (colors map [-2^31, 2^31-1] to [-1, 1]).
-    pub fn lightiv(&mut self, light: u32, pname: u32, v: &[i32]) {
-        let f = int_params(pname, v);
-        self.lightfv(light, pname, &f);
-    }
-
     /// glGetLightfv (position and direction in eye coordinates).
     pub fn get_lightfv(&mut self, light: u32, pname: u32) -> Vec<f32> {
         let i = light.wrapping_sub(GL_LIGHT0) as usize;
@@ -128,30 +137,12 @@ impl Context {
         }
     }
 
-    /// glMaterialf.
-    pub fn materialf(&mut self, face: u32, pname: u32, v: f32) {
-        if pname != GL_SHININESS {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        self.materialfv(face, pname, &[v]);
-    }
-
-    /// glMateriali.
-    pub fn materiali(&mut self, face: u32, pname: u32, v: i32) {
-        self.materialf(face, pname, v as f32);
-    }
-
-    /// glMaterialfv.
-    pub fn materialfv(&mut self, face: u32, pname: u32, v: &[f32]) {
-        let Some(faces) = Self::faces(face) else {
-            self.set_error(GL_INVALID_ENUM);
+    /// glMaterial{f,i,fv,iv}.
+    pub fn material(&mut self, face: u32, pname: u32, v: Param) {
+        let faces = Self::faces(face).unwrap_or(&[]);
+        let Some((_, v)) = self.lighting_values(pname, v, !faces.is_empty(), true) else {
             return;
         };
-        if v.len() < light_param_len(pname) {
-            self.set_error(GL_INVALID_VALUE);
-            return;
-        }
         let v4 = || [v[0], v[1], v[2], v[3]];
         if pname == GL_SHININESS && !(0.0..=128.0).contains(&v[0]) {
             self.set_error(GL_INVALID_VALUE);
@@ -176,12 +167,6 @@ impl Context {
                 }
             }
         }
-    }
-
-    /// glMaterialiv.
-    pub fn materialiv(&mut self, face: u32, pname: u32, v: &[i32]) {
-        let f = int_params(pname, v);
-        self.materialfv(face, pname, &f);
     }
 
     /// glGetMaterialfv.
@@ -251,45 +236,11 @@ impl Context {
         }
     }
 
-    /// glLightModelf.
-    pub fn light_modelf(&mut self, pname: u32, v: f32) {
-        if pname == GL_LIGHT_MODEL_AMBIENT {
-            self.set_error(GL_INVALID_ENUM);
+    /// glLightModel{f,i,fv,iv}.
+    pub fn light_model(&mut self, pname: u32, v: Param) {
+        let Some((as_enum, v)) = self.lighting_values(pname, v, true, false) else {
             return;
-        }
-        self.light_modelfv(pname, &[v]);
-    }
-
-    /// glLightModeli.
-    pub fn light_modeli(&mut self, pname: u32, v: i32) {
-        if pname == GL_LIGHT_MODEL_AMBIENT {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        self.light_model_values(pname, &[v as f32], v as u32);
-    }
-
-    /// glLightModelfv.
-    pub fn light_modelfv(&mut self, pname: u32, v: &[f32]) {
-        let e = v.first().map(|&x| x as u32).unwrap_or(0);
-        self.light_model_values(pname, v, e);
-    }
-
-    /// glLightModeliv.
-    pub fn light_modeliv(&mut self, pname: u32, v: &[i32]) {
-        let f = int_params(pname, v);
-        let e = v.first().map(|&x| x as u32).unwrap_or(0);
-        self.light_model_values(pname, &f, e);
-    }
-
-    fn light_model_values(&mut self, pname: u32, v: &[f32], as_enum: u32) {
-        if self.reject_in_begin() {
-            return;
-        }
-        if v.len() < light_param_len(pname) {
-            self.set_error(GL_INVALID_VALUE);
-            return;
-        }
+        };
         match pname {
             GL_LIGHT_MODEL_AMBIENT => self.st.light_model_ambient = [v[0], v[1], v[2], v[3]],
             GL_LIGHT_MODEL_LOCAL_VIEWER => self.st.light_model_local_viewer = v[0] != 0.0,
@@ -307,45 +258,11 @@ impl Context {
 
     // ---- fog ----
 
-    /// glFogf.
-    pub fn fogf(&mut self, pname: u32, v: f32) {
-        if pname == GL_FOG_COLOR {
-            self.set_error(GL_INVALID_ENUM);
+    /// glFog{f,i,fv,iv}.
+    pub fn fog(&mut self, pname: u32, v: Param) {
+        let Some((as_enum, v)) = self.lighting_values(pname, v, true, false) else {
             return;
-        }
-        self.fog_values(pname, &[v], v as u32);
-    }
-
-    /// glFogi.
-    pub fn fogi(&mut self, pname: u32, v: i32) {
-        if pname == GL_FOG_COLOR {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        self.fog_values(pname, &[v as f32], v as u32);
-    }
-
-    /// glFogfv.
-    pub fn fogfv(&mut self, pname: u32, v: &[f32]) {
-        let e = v.first().map(|&x| x as u32).unwrap_or(0);
-        self.fog_values(pname, v, e);
-    }
-
-    /// glFogiv.
-    pub fn fogiv(&mut self, pname: u32, v: &[i32]) {
-        let f = int_params(pname, v);
-        let e = v.first().map(|&x| x as u32).unwrap_or(0);
-        self.fog_values(pname, &f, e);
-    }
-
-    fn fog_values(&mut self, pname: u32, v: &[f32], as_enum: u32) {
-        if self.reject_in_begin() {
-            return;
-        }
-        if v.len() < light_param_len(pname) {
-            self.set_error(GL_INVALID_VALUE);
-            return;
-        }
+        };
         let fog = &mut self.st.fog;
         match pname {
             GL_FOG_MODE => {
@@ -379,37 +296,12 @@ impl Context {
 
     // ---- texture environment and coordinate generation ----
 
-    /// glTexEnvi.
-    pub fn tex_envi(&mut self, target: u32, pname: u32, v: i32) {
-        self.tex_env_values(target, pname, &[v as f32], v as u32);
-    }
-
-    /// glTexEnvf.
-    pub fn tex_envf(&mut self, target: u32, pname: u32, v: f32) {
-        self.tex_env_values(target, pname, &[v], v as u32);
-    }
-
-    /// glTexEnvfv.
-    pub fn tex_envfv(&mut self, target: u32, pname: u32, v: &[f32]) {
-        let e = v.first().map(|&x| x as u32).unwrap_or(0);
-        self.tex_env_values(target, pname, v, e);
-    }
-
-    /// glTexEnviv.
-    pub fn tex_enviv(&mut self, target: u32, pname: u32, v: &[i32]) {
-        let f = if pname == GL_TEXTURE_ENV_COLOR {
-            v.iter().map(|&x| int_to_unit(x)).collect()
-        } else {
-            v.iter().map(|&x| x as f32).collect::<Vec<_>>()
-        };
-        let e = v.first().map(|&x| x as u32).unwrap_or(0);
-        self.tex_env_values(target, pname, &f, e);
-    }
-
-    fn tex_env_values(&mut self, target: u32, pname: u32, v: &[f32], as_enum: u32) {
+    /// glTexEnv{f,i,fv,iv}.
+    pub fn tex_env(&mut self, target: u32, pname: u32, v: Param) {
         if self.reject_in_begin() {
             return;
         }
+        let (as_enum, v) = (v.as_enum(), &v.floats(pname)[..]);
         let unit = self.st.active_texture as usize;
         let need = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
         if v.len() < need {
@@ -515,27 +407,14 @@ impl Context {
         }
     }
 
-    /// glTexGeni.
-    pub fn tex_geni(&mut self, coord: u32, pname: u32, v: i32) {
-        self.tex_gen_values(coord, pname, &[v as f32], v as u32);
-    }
-
-    /// glTexGenf.
-    pub fn tex_genf(&mut self, coord: u32, pname: u32, v: f32) {
-        self.tex_gen_values(coord, pname, &[v], v as u32);
-    }
-
-    /// glTexGenfv. GL_EYE_PLANE is transformed by the inverse model-view
-    /// matrix (GL 2.1 §2.11.4).
-    pub fn tex_genfv(&mut self, coord: u32, pname: u32, v: &[f32]) {
-        let e = v.first().map(|&x| x as u32).unwrap_or(0);
-        self.tex_gen_values(coord, pname, v, e);
-    }
-
-    fn tex_gen_values(&mut self, coord: u32, pname: u32, v: &[f32], as_enum: u32) {
+    /// glTexGen{f,i,fv,iv} (glTexGend* convert to floats first).
+    /// GL_EYE_PLANE is transformed by the inverse model-view matrix
+    /// (GL 2.1 §2.11.4).
+    pub fn tex_gen(&mut self, coord: u32, pname: u32, v: Param) {
         if self.reject_in_begin() {
             return;
         }
+        let (as_enum, v) = (v.as_enum(), &v.floats(pname)[..]);
         let c = match coord {
             GL_S => 0,
             GL_T => 1,
@@ -592,24 +471,6 @@ impl Context {
     }
 }
 
-/// Integer parameters as floats: colors map the integer range linearly to
-/// [-1, 1] (GL 2.1 §2.14.2, Table 2.9), everything else converts directly.
-fn int_params(pname: u32, v: &[i32]) -> Vec<f32> {
-    let color = matches!(
-        pname,
-        GL_AMBIENT
-            | GL_DIFFUSE
-            | GL_SPECULAR
-            | GL_EMISSION
-            | GL_AMBIENT_AND_DIFFUSE
-            | GL_LIGHT_MODEL_AMBIENT
-            | GL_FOG_COLOR
-    );
-    v.iter()
-        .map(|&x| if color { int_to_unit(x) } else { x as f32 })
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -618,25 +479,62 @@ mod tests {
     fn light_position_goes_to_eye_space() {
         let mut ctx = Context::new(4, 4);
         ctx.translatef(0.0, 0.0, -5.0);
-        ctx.lightfv(GL_LIGHT1, GL_POSITION, &[1.0, 2.0, 3.0, 1.0]);
+        ctx.light(GL_LIGHT1, GL_POSITION, Param::Fv(&[1.0, 2.0, 3.0, 1.0]));
         assert_eq!(
             ctx.get_lightfv(GL_LIGHT1, GL_POSITION),
             vec![1.0, 2.0, -2.0, 1.0]
         );
         // Directions ignore the translation.
-        ctx.lightfv(GL_LIGHT1, GL_SPOT_DIRECTION, &[0.0, 1.0, 0.0]);
+        ctx.light(GL_LIGHT1, GL_SPOT_DIRECTION, Param::Fv(&[0.0, 1.0, 0.0]));
         assert_eq!(
             ctx.get_lightfv(GL_LIGHT1, GL_SPOT_DIRECTION),
             vec![0.0, 1.0, 0.0]
         );
-        ctx.lightf(GL_LIGHT1, GL_SPOT_CUTOFF, 95.0);
+        ctx.light(GL_LIGHT1, GL_SPOT_CUTOFF, Param::F(95.0));
         assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
-        ctx.lightf(GL_LIGHT1, GL_POSITION, 1.0);
+        ctx.light(GL_LIGHT1, GL_POSITION, Param::F(1.0));
         assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
-        ctx.lightfv(GL_LIGHT0 + 8, GL_AMBIENT, &[0.0; 4]);
+        ctx.light(GL_LIGHT0 + 8, GL_AMBIENT, Param::Fv(&[0.0; 4]));
         assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
-        ctx.lightfv(GL_LIGHT0, GL_AMBIENT, &[0.0; 2]);
+        ctx.light(GL_LIGHT0, GL_AMBIENT, Param::Fv(&[0.0; 2]));
         assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    }
+
+    #[test]
+    fn every_form_of_a_family_checks_and_converts_alike() {
+        let mut ctx = Context::new(4, 4);
+        // A scalar form of a color: GL_INVALID_ENUM for lighting and fog,
+        // too few values for the texture environment.
+        ctx.material(GL_FRONT, GL_DIFFUSE, Param::I(1));
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+        ctx.fog(GL_FOG_COLOR, Param::F(1.0));
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+        ctx.tex_env(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, Param::F(1.0));
+        assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+        // The scalar check comes before the light number's.
+        ctx.light(GL_LIGHT0 + 99, GL_DIFFUSE, Param::F(1.0));
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+        ctx.light(GL_LIGHT0 + 99, GL_DIFFUSE, Param::Fv(&[1.0]));
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+        ctx.light(GL_LIGHT0, GL_DIFFUSE, Param::Fv(&[1.0]));
+        assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+        // Integer colors are normalized, other integers convert.
+        ctx.fog(GL_FOG_COLOR, Param::Iv(&[i32::MAX, 0, i32::MAX, i32::MAX]));
+        assert_eq!(ctx.st.fog.color[0], 1.0);
+        ctx.tex_env(
+            GL_TEXTURE_ENV,
+            GL_TEXTURE_ENV_COLOR,
+            Param::Iv(&[i32::MAX; 4]),
+        );
+        assert_eq!(ctx.st.tex_env[0].color, [1.0; 4]);
+        ctx.fog(GL_FOG_END, Param::Iv(&[3]));
+        assert_eq!(ctx.st.fog.end, 3.0);
+        ctx.light_model(
+            GL_LIGHT_MODEL_COLOR_CONTROL,
+            Param::Iv(&[GL_SEPARATE_SPECULAR_COLOR as i32]),
+        );
+        assert_eq!(ctx.st.light_model_color_control, GL_SEPARATE_SPECULAR_COLOR);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
     }
 
     #[test]

@@ -438,14 +438,10 @@ impl Context {
     }
 }
 
-/// c = (2x + 1) / (2^32 - 1) (GL 2.1 Table 2.9).
-pub fn int_to_unit(x: i32) -> f32 {
-    ((2.0 * x as f64 + 1.0) / 4294967295.0) as f32
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::param::Param;
 
     #[test]
     fn caps_and_enum_checks() {
@@ -471,11 +467,11 @@ mod tests {
         assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
         ctx.point_size(0.0);
         assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
-        ctx.fogi(GL_FOG_MODE, GL_LINEAR as i32);
+        ctx.fog(GL_FOG_MODE, Param::I(GL_LINEAR as i32));
         assert_eq!(ctx.st.fog.mode, GL_LINEAR);
-        ctx.fogi(GL_FOG_MODE, GL_ONE as i32);
+        ctx.fog(GL_FOG_MODE, Param::I(GL_ONE as i32));
         assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
-        ctx.tex_geni(GL_R, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP as i32);
+        ctx.tex_gen(GL_R, GL_TEXTURE_GEN_MODE, Param::I(GL_SPHERE_MAP as i32));
         assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
         ctx.active_texture(GL_TEXTURE0 + 40);
         assert_eq!(ctx.get_error(), GL_INVALID_ENUM);

@@ -1,6 +1,7 @@
 //! Texture objects' entry points (GL 2.1 §3.8): glGenTextures,
 //! glBindTexture, glDeleteTextures, image specification (glTexImage*,
-//! glTexSubImage*), sampler parameters (glTexParameter*) and the queries
+//! glTexSubImage*: one method each for the 1D, 2D and 3D forms), sampler
+//! parameters (glTexParameter*) and the queries
 //! (glGetTexParameter*, glGetTexLevelParameteriv, glGetTexImage).
 //!
 //! Contract: every image specification unpacks the client image through
@@ -13,11 +14,18 @@
 use crate::enums::*;
 use crate::mipmap::generate_mipmaps;
 use crate::objects::{
-    gen_names, image_target, set_image, target_index, Attachment, Image, TextureObj, MAX_LEVELS,
+    image_target, set_image, target_index, Attachment, Image, TextureObj, MAX_LEVELS,
 };
+use crate::param::Param;
 use crate::pixel_transfer::{format_components, pack_pixels, pixel_size, unpack_image};
 use crate::texture_format::{base_format, is_depth_format};
 use crate::{Context, MAX_TEXTURE_SIZE};
+
+/// The first three of `v`'s entries, `pad` for those it lacks: the
+/// extent or offset of a 1D, 2D or 3D image as a 3D one.
+fn extent<const D: usize>(v: [i32; D], pad: i32) -> [i32; 3] {
+    std::array::from_fn(|i| v.get(i).copied().unwrap_or(pad))
+}
 
 fn valid_filter(f: u32, min: bool) -> bool {
     matches!(f, GL_NEAREST | GL_LINEAR)
@@ -34,11 +42,11 @@ fn valid_filter(f: u32, min: bool) -> bool {
 impl Context {
     /// glGenTextures.
     pub fn gen_textures(&mut self, n: i32) -> Vec<u32> {
-        let Some(n) = self.gen_count(n) else {
-            return Vec::new();
-        };
-        let o = &mut self.objects;
-        gen_names(&mut o.textures, &mut o.next_texture, n, TextureObj::default)
+        self.gen_objects(
+            n,
+            |o| (&mut o.textures, &mut o.next_texture),
+            TextureObj::default,
+        )
     }
 
     /// glDeleteTextures (bindings revert to 0, attachments are removed).
@@ -104,96 +112,16 @@ impl Context {
         }
     }
 
-    /// glTexImage1D.
+    /// glTexImage1D, glTexImage2D and glTexImage3D: `size` holds one extent
+    /// per dimension (`[w]`, `[w, h]`, `[w, h, d]`), which selects the call
+    /// and so the targets it takes (GL 2.1 §3.8.1).
     #[allow(clippy::too_many_arguments)]
-    pub fn tex_image_1d(
+    pub fn tex_image<const D: usize>(
         &mut self,
         target: u32,
         level: i32,
         internal: i32,
-        w: i32,
-        border: i32,
-        format: u32,
-        ty: u32,
-        data: Option<&[u8]>,
-    ) {
-        self.tex_image(
-            1,
-            target,
-            level,
-            internal,
-            [w, 1, 1],
-            border,
-            format,
-            ty,
-            data,
-        );
-    }
-
-    /// glTexImage2D.
-    #[allow(clippy::too_many_arguments)]
-    pub fn tex_image_2d(
-        &mut self,
-        target: u32,
-        level: i32,
-        internal: i32,
-        w: i32,
-        h: i32,
-        border: i32,
-        format: u32,
-        ty: u32,
-        data: Option<&[u8]>,
-    ) {
-        self.tex_image(
-            2,
-            target,
-            level,
-            internal,
-            [w, h, 1],
-            border,
-            format,
-            ty,
-            data,
-        );
-    }
-
-    /// glTexImage3D.
-    #[allow(clippy::too_many_arguments)]
-    pub fn tex_image_3d(
-        &mut self,
-        target: u32,
-        level: i32,
-        internal: i32,
-        w: i32,
-        h: i32,
-        d: i32,
-        border: i32,
-        format: u32,
-        ty: u32,
-        data: Option<&[u8]>,
-    ) {
-        self.tex_image(
-            3,
-            target,
-            level,
-            internal,
-            [w, h, d],
-            border,
-            format,
-            ty,
-            data,
-        );
-    }
-
-    /// Checks of GL 2.1 §3.8.1 shared by the glTexImage calls.
-    #[allow(clippy::too_many_arguments)]
-    fn tex_image(
-        &mut self,
-        dims: u32,
-        target: u32,
-        level: i32,
-        internal: i32,
-        size: [i32; 3],
+        size: [i32; D],
         border: i32,
         format: u32,
         ty: u32,
@@ -202,6 +130,7 @@ impl Context {
         if self.reject_in_begin() {
             return;
         }
+        let (dims, size) = (D as u32, extent(size, 1));
         let Some((bind_target, face)) = image_target(target, dims) else {
             self.set_error(GL_INVALID_ENUM);
             return;
@@ -288,73 +217,17 @@ impl Context {
         }
     }
 
-    /// glTexSubImage2D.
+    /// glTexSubImage1D, glTexSubImage2D and glTexSubImage3D: replaces the
+    /// `size` block at `off` of an existing image, one entry per dimension
+    /// as for [`Context::tex_image`] (`data`: the client image, already
+    /// validated in size by the caller, or empty for a null pointer).
     #[allow(clippy::too_many_arguments)]
-    pub fn tex_sub_image_2d(
+    pub fn tex_sub_image<const D: usize>(
         &mut self,
         target: u32,
         level: i32,
-        xoff: i32,
-        yoff: i32,
-        w: i32,
-        h: i32,
-        format: u32,
-        ty: u32,
-        data: &[u8],
-    ) {
-        self.tex_sub_image(
-            2,
-            target,
-            level,
-            [xoff, yoff, 0],
-            [w, h, 1],
-            format,
-            ty,
-            data,
-        );
-    }
-
-    /// glTexSubImage1D.
-    #[allow(clippy::too_many_arguments)]
-    pub fn tex_sub_image_1d(
-        &mut self,
-        target: u32,
-        level: i32,
-        xoff: i32,
-        w: i32,
-        format: u32,
-        ty: u32,
-        data: &[u8],
-    ) {
-        self.tex_sub_image(1, target, level, [xoff, 0, 0], [w, 1, 1], format, ty, data);
-    }
-
-    /// glTexSubImage3D.
-    #[allow(clippy::too_many_arguments)]
-    pub fn tex_sub_image_3d(
-        &mut self,
-        target: u32,
-        level: i32,
-        off: [i32; 3],
-        size: [i32; 3],
-        format: u32,
-        ty: u32,
-        data: &[u8],
-    ) {
-        self.tex_sub_image(3, target, level, off, size, format, ty, data);
-    }
-
-    /// glTexSubImage{1,2,3}D: replaces the `size` block at `off` of an
-    /// existing image (`data`: the client image, already validated in
-    /// size by the caller, or empty for a null pointer).
-    #[allow(clippy::too_many_arguments)]
-    fn tex_sub_image(
-        &mut self,
-        dims: u32,
-        target: u32,
-        level: i32,
-        off: [i32; 3],
-        size: [i32; 3],
+        off: [i32; D],
+        size: [i32; D],
         format: u32,
         ty: u32,
         data: &[u8],
@@ -362,6 +235,7 @@ impl Context {
         if self.reject_in_begin() {
             return;
         }
+        let (dims, off, size) = (D as u32, extent(off, 0), extent(size, 1));
         let Some((bind_target, face)) = image_target(target, dims) else {
             self.set_error(GL_INVALID_ENUM);
             return;
@@ -428,26 +302,13 @@ impl Context {
         }
     }
 
-    /// glTexParameteri.
-    pub fn tex_parameteri(&mut self, target: u32, pname: u32, v: i32) {
-        self.tex_parameter(target, pname, &[v as f32], v as u32);
-    }
-
-    /// glTexParameterf.
-    pub fn tex_parameterf(&mut self, target: u32, pname: u32, v: f32) {
-        self.tex_parameter(target, pname, &[v], v as u32);
-    }
-
-    /// glTexParameterfv.
-    pub fn tex_parameterfv(&mut self, target: u32, pname: u32, v: &[f32]) {
-        let e = v.first().map(|&x| x as u32).unwrap_or(0);
-        self.tex_parameter(target, pname, v, e);
-    }
-
-    fn tex_parameter(&mut self, target: u32, pname: u32, v: &[f32], e: u32) {
+    /// glTexParameter{f,i,fv,iv} (a scalar form of
+    /// GL_TEXTURE_BORDER_COLOR is too few values: GL_INVALID_VALUE).
+    pub fn tex_parameter(&mut self, target: u32, pname: u32, v: Param) {
         if self.reject_in_begin() {
             return;
         }
+        let (e, v) = (v.as_enum(), &v.floats(pname)[..]);
         if target_index(target).is_none() {
             self.set_error(GL_INVALID_ENUM);
             return;
@@ -711,12 +572,11 @@ mod tests {
         ctx.bind_texture(GL_TEXTURE_2D, t);
         // 3x2 luminance bytes with 4-byte row alignment: rows are 4 bytes.
         let data = [10u8, 20, 30, 0, 40, 50, 60, 0];
-        ctx.tex_image_2d(
+        ctx.tex_image(
             GL_TEXTURE_2D,
             0,
             GL_LUMINANCE as i32,
-            3,
-            2,
+            [3, 2],
             0,
             GL_LUMINANCE,
             GL_UNSIGNED_BYTE,
@@ -728,12 +588,11 @@ mod tests {
             img.texels[3],
             [40.0 / 255.0, 40.0 / 255.0, 40.0 / 255.0, 1.0]
         );
-        ctx.tex_image_2d(
+        ctx.tex_image(
             GL_TEXTURE_2D,
             0,
             GL_ALPHA as i32,
-            1,
-            1,
+            [1, 1],
             0,
             GL_RGBA,
             GL_FLOAT,
@@ -741,26 +600,24 @@ mod tests {
         );
         let img = ctx.objects.textures[&t].image(0, 0).unwrap().clone();
         assert_eq!(img.texels[0], [0.0; 4]);
-        ctx.tex_image_2d(GL_TEXTURE_2D, 0, 0x1234, 1, 1, 0, GL_RGBA, GL_FLOAT, None);
+        ctx.tex_image(GL_TEXTURE_2D, 0, 0x1234, [1, 1], 0, GL_RGBA, GL_FLOAT, None);
         assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
-        ctx.tex_image_2d(
+        ctx.tex_image(
             GL_TEXTURE_2D,
             0,
             GL_RGBA as i32,
-            1,
-            1,
+            [1, 1],
             1,
             GL_RGBA,
             GL_FLOAT,
             None,
         );
         assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
-        ctx.tex_image_2d(
+        ctx.tex_image(
             GL_TEXTURE_2D,
             0,
             GL_DEPTH_COMPONENT as i32,
-            1,
-            1,
+            [1, 1],
             0,
             GL_RGBA,
             GL_FLOAT,

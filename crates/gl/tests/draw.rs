@@ -1,7 +1,7 @@
 //! End-to-end: GL calls in, pixels out.
 
 use gl::enums::*;
-use gl::{ArrayData, Context};
+use gl::{ArrayData, Context, Param};
 
 fn program(ctx: &mut Context, vs: Option<&str>, fs: Option<&str>) -> u32 {
     let p = ctx.create_program();
@@ -154,19 +154,19 @@ fn fixed_function_lighting_and_texture() {
     let texels = [
         255u8, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255,
     ];
-    ctx.tex_image_2d(
+    ctx.tex_image(
         GL_TEXTURE_2D,
         0,
         GL_RGBA as i32,
-        2,
-        2,
+        [2, 2],
         0,
         GL_RGBA,
         GL_UNSIGNED_BYTE,
         Some(&texels),
     );
-    ctx.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
-    ctx.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+    for filter in [GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER] {
+        ctx.tex_parameter(GL_TEXTURE_2D, filter, Param::I(GL_NEAREST as i32));
+    }
     ctx.enable(GL_TEXTURE_2D);
     ctx.color_3f(1.0, 1.0, 1.0);
     draw_rect(&mut ctx, -1.0, -1.0, 2.0, 2.0);
@@ -182,18 +182,21 @@ fn render_to_texture_then_sample_it() {
     let mut ctx = Context::new(8, 8);
     let t = ctx.gen_textures(1)[0];
     ctx.bind_texture(GL_TEXTURE_2D, t);
-    ctx.tex_image_2d(
+    ctx.tex_image(
         GL_TEXTURE_2D,
         0,
         GL_RGBA32F as i32,
-        4,
-        4,
+        [4, 4],
         0,
         GL_RGBA,
         GL_FLOAT,
         None,
     );
-    ctx.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        Param::I(GL_NEAREST as i32),
+    );
     let fb = ctx.gen_framebuffers(1)[0];
     ctx.bind_framebuffer(GL_FRAMEBUFFER_EXT, fb);
     ctx.framebuffer_texture_2d(
@@ -295,22 +298,21 @@ fn threaded_scene(threads: usize) -> (Vec<u8>, Vec<u8>, Vec<u8>, Option<String>)
             }
         })
         .collect();
-    ctx.tex_image_2d(
+    ctx.tex_image(
         GL_TEXTURE_2D,
         0,
         GL_RGBA as i32,
-        32,
-        32,
+        [32, 32],
         0,
         GL_RGBA,
         GL_UNSIGNED_BYTE,
         Some(&texels),
     );
     ctx.generate_mipmap(GL_TEXTURE_2D);
-    ctx.tex_parameteri(
+    ctx.tex_parameter(
         GL_TEXTURE_2D,
         GL_TEXTURE_MIN_FILTER,
-        GL_LINEAR_MIPMAP_LINEAR as i32,
+        Param::I(GL_LINEAR_MIPMAP_LINEAR as i32),
     );
     program(
         &mut ctx,

@@ -11,7 +11,7 @@
 use crate::molecule::{self, MoleculeArgs, MoleculeError};
 use crate::report::{self, Located, Report};
 use gl::enums::*;
-use gl::{ArrayData, Context};
+use gl::{ArrayData, Context, Param};
 use pyo3::exceptions::{PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
@@ -345,25 +345,25 @@ impl RawContext {
         self.gl().get_integerv(pname)
     }
     fn lightfv(&self, light: u32, pname: u32, v: Vec<f32>) {
-        self.gl().lightfv(light, pname, &v);
+        self.gl().light(light, pname, Param::Fv(&v));
     }
     fn get_lightfv(&self, light: u32, pname: u32) -> Vec<f32> {
         self.gl().get_lightfv(light, pname)
     }
     fn materialfv(&self, face: u32, pname: u32, v: Vec<f32>) {
-        self.gl().materialfv(face, pname, &v);
+        self.gl().material(face, pname, Param::Fv(&v));
     }
     fn get_materialfv(&self, face: u32, pname: u32) -> Vec<f32> {
         self.gl().get_materialfv(face, pname)
     }
     fn fogfv(&self, pname: u32, v: Vec<f32>) {
-        self.gl().fogfv(pname, &v);
+        self.gl().fog(pname, Param::Fv(&v));
     }
     fn fogi(&self, pname: u32, v: i32) {
-        self.gl().fogi(pname, v);
+        self.gl().fog(pname, Param::I(v));
     }
     fn light_modelfv(&self, pname: u32, v: Vec<f32>) {
-        self.gl().light_modelfv(pname, &v);
+        self.gl().light_model(pname, Param::Fv(&v));
     }
 
     /// Compiles and links a program through GL; returns (name, linked,
@@ -652,12 +652,11 @@ impl RawContext {
     ) {
         let mut gl = self.gl();
         gl.active_texture(GL_TEXTURE0 + unit);
-        gl.tex_image_2d(
+        gl.tex_image(
             GL_TEXTURE_2D,
             0,
             internal,
-            width,
-            height,
+            [width, height],
             0,
             format,
             ty,
@@ -669,7 +668,7 @@ impl RawContext {
     fn tex_parameteri(&self, unit: u32, pname: u32, value: i32) {
         let mut gl = self.gl();
         gl.active_texture(GL_TEXTURE0 + unit);
-        gl.tex_parameteri(GL_TEXTURE_2D, pname, value);
+        gl.tex_parameter(GL_TEXTURE_2D, pname, Param::I(value));
         gl.active_texture(GL_TEXTURE0);
     }
     /// glGenerateMipmap on the GL_TEXTURE_2D bound to texture unit `unit`.

@@ -18,7 +18,7 @@
 use crate::library::{self, Program, SceneKind};
 use crate::{image, Background, Effect, Fog, Image, Projection, RenderError, RenderOptions, Style};
 use gl::enums::*;
-use gl::{ArrayData, Context};
+use gl::{ArrayData, Context, Param};
 
 /// One picture of the gallery.
 #[derive(Clone, Debug, PartialEq)]
@@ -158,33 +158,37 @@ fn setup(ctx: &mut Context, scene: SceneKind) {
     ctx.matrix_mode(GL_MODELVIEW);
     ctx.load_identity();
     // Lights in eye space: 0 directional, 1 point, 2 spot at the object.
-    ctx.lightfv(GL_LIGHT0, GL_POSITION, &[-0.5, 0.7, 1.0, 0.0]);
-    ctx.lightfv(GL_LIGHT0, GL_AMBIENT, &[0.15, 0.15, 0.15, 1.0]);
-    ctx.lightfv(GL_LIGHT0, GL_DIFFUSE, &[0.8, 0.8, 0.8, 1.0]);
-    ctx.lightfv(GL_LIGHT0, GL_SPECULAR, &[0.6, 0.6, 0.6, 1.0]);
-    ctx.lightfv(GL_LIGHT1, GL_POSITION, &[2.0, -1.0, -2.0, 1.0]);
-    ctx.lightfv(GL_LIGHT1, GL_DIFFUSE, &[0.3, 0.3, 0.6, 1.0]);
-    ctx.lightfv(GL_LIGHT1, GL_SPECULAR, &[0.3, 0.3, 0.3, 1.0]);
-    ctx.lightf(GL_LIGHT1, GL_LINEAR_ATTENUATION, 0.1);
-    ctx.lightfv(GL_LIGHT2, GL_POSITION, &[0.0, 3.0, -2.0, 1.0]);
-    ctx.lightfv(GL_LIGHT2, GL_DIFFUSE, &[0.6, 0.5, 0.2, 1.0]);
-    ctx.lightfv(GL_LIGHT2, GL_SPOT_DIRECTION, &[0.0, -1.0, -1.2]);
-    ctx.lightf(GL_LIGHT2, GL_SPOT_CUTOFF, 25.0);
-    ctx.lightf(GL_LIGHT2, GL_SPOT_EXPONENT, 8.0);
+    ctx.light(GL_LIGHT0, GL_POSITION, Param::Fv(&[-0.5, 0.7, 1.0, 0.0]));
+    ctx.light(GL_LIGHT0, GL_AMBIENT, Param::Fv(&[0.15, 0.15, 0.15, 1.0]));
+    ctx.light(GL_LIGHT0, GL_DIFFUSE, Param::Fv(&[0.8, 0.8, 0.8, 1.0]));
+    ctx.light(GL_LIGHT0, GL_SPECULAR, Param::Fv(&[0.6, 0.6, 0.6, 1.0]));
+    ctx.light(GL_LIGHT1, GL_POSITION, Param::Fv(&[2.0, -1.0, -2.0, 1.0]));
+    ctx.light(GL_LIGHT1, GL_DIFFUSE, Param::Fv(&[0.3, 0.3, 0.6, 1.0]));
+    ctx.light(GL_LIGHT1, GL_SPECULAR, Param::Fv(&[0.3, 0.3, 0.3, 1.0]));
+    ctx.light(GL_LIGHT1, GL_LINEAR_ATTENUATION, Param::F(0.1));
+    ctx.light(GL_LIGHT2, GL_POSITION, Param::Fv(&[0.0, 3.0, -2.0, 1.0]));
+    ctx.light(GL_LIGHT2, GL_DIFFUSE, Param::Fv(&[0.6, 0.5, 0.2, 1.0]));
+    ctx.light(GL_LIGHT2, GL_SPOT_DIRECTION, Param::Fv(&[0.0, -1.0, -1.2]));
+    ctx.light(GL_LIGHT2, GL_SPOT_CUTOFF, Param::F(25.0));
+    ctx.light(GL_LIGHT2, GL_SPOT_EXPONENT, Param::F(8.0));
     if scene == SceneKind::Mesh || scene == SceneKind::WireMesh {
         // variable-lights' third light (two more directions, coloured).
-        ctx.lightfv(GL_LIGHT1, GL_AMBIENT, &[0.0, 0.0, 0.0, 1.0]);
+        ctx.light(GL_LIGHT1, GL_AMBIENT, Param::Fv(&[0.0, 0.0, 0.0, 1.0]));
     }
     for l in [GL_LIGHT0, GL_LIGHT1, GL_LIGHT2] {
         ctx.enable(l);
     }
     ctx.enable(GL_LIGHTING);
-    ctx.materialfv(GL_FRONT, GL_AMBIENT, &[1.0, 0.6, 0.2, 1.0]);
-    ctx.materialfv(GL_FRONT, GL_DIFFUSE, &[1.0, 0.6, 0.2, 1.0]);
-    ctx.materialfv(GL_BACK, GL_AMBIENT, &[0.2, 0.4, 1.0, 1.0]);
-    ctx.materialfv(GL_BACK, GL_DIFFUSE, &[0.2, 0.4, 1.0, 1.0]);
-    ctx.materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, &[0.8, 0.8, 0.8, 1.0]);
-    ctx.materialf(GL_FRONT_AND_BACK, GL_SHININESS, 40.0);
+    ctx.material(GL_FRONT, GL_AMBIENT, Param::Fv(&[1.0, 0.6, 0.2, 1.0]));
+    ctx.material(GL_FRONT, GL_DIFFUSE, Param::Fv(&[1.0, 0.6, 0.2, 1.0]));
+    ctx.material(GL_BACK, GL_AMBIENT, Param::Fv(&[0.2, 0.4, 1.0, 1.0]));
+    ctx.material(GL_BACK, GL_DIFFUSE, Param::Fv(&[0.2, 0.4, 1.0, 1.0]));
+    ctx.material(
+        GL_FRONT_AND_BACK,
+        GL_SPECULAR,
+        Param::Fv(&[0.8, 0.8, 0.8, 1.0]),
+    );
+    ctx.material(GL_FRONT_AND_BACK, GL_SHININESS, Param::F(40.0));
     ctx.clear_color(0.1, 0.1, 0.12, 1.0);
     ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     ctx.enable(GL_DEPTH_TEST);
@@ -266,8 +270,8 @@ fn mesh(ctx: &mut Context, program: u32, p: &Program, size: u32) {
     };
     let (pos, nor, col) = surface(tube, nu, nv);
     if p.name == "variable-lights" {
-        ctx.lightfv(GL_LIGHT1, GL_POSITION, &[1.0, -0.3, 0.6, 0.0]);
-        ctx.lightfv(GL_LIGHT2, GL_POSITION, &[0.0, -1.0, 0.3, 0.0]);
+        ctx.light(GL_LIGHT1, GL_POSITION, Param::Fv(&[1.0, -0.3, 0.6, 0.0]));
+        ctx.light(GL_LIGHT2, GL_POSITION, Param::Fv(&[0.0, -1.0, 0.3, 0.0]));
         uniform_f(
             ctx,
             program,
@@ -320,15 +324,15 @@ fn texture_2d(ctx: &mut Context, unit: u32, size: usize, texel: impl Fn(usize, u
     ctx.active_texture(GL_TEXTURE0 + unit);
     let name = ctx.gen_textures(1).first().copied().unwrap_or(0);
     ctx.bind_texture(GL_TEXTURE_2D, name);
-    ctx.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
-    ctx.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as i32);
+    for filter in [GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER] {
+        ctx.tex_parameter(GL_TEXTURE_2D, filter, Param::I(GL_LINEAR as i32));
+    }
     let s = size as i32;
-    ctx.tex_image_2d(
+    ctx.tex_image(
         GL_TEXTURE_2D,
         0,
         GL_RGBA as i32,
-        s,
-        s,
+        [s, s],
         0,
         GL_RGBA,
         GL_UNSIGNED_BYTE,
@@ -348,7 +352,11 @@ fn quad(ctx: &mut Context, program: u32, (mode0, mode1): (i32, i32)) {
             [255, 140, 0, 128]
         }
     });
-    ctx.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[0.2, 0.6, 1.0, 1.0]);
+    ctx.tex_env(
+        GL_TEXTURE_ENV,
+        GL_TEXTURE_ENV_COLOR,
+        Param::Fv(&[0.2, 0.6, 1.0, 1.0]),
+    );
     // Unit 1: rings.
     texture_2d(ctx, 1, 64, |x, y| {
         let (dx, dy) = (x as f32 - 31.5, y as f32 - 31.5);
@@ -410,19 +418,18 @@ fn volume(ctx: &mut Context, program: u32) {
     ctx.active_texture(GL_TEXTURE0);
     let name = ctx.gen_textures(1).first().copied().unwrap_or(0);
     ctx.bind_texture(GL_TEXTURE_3D, name);
-    ctx.tex_parameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
-    ctx.tex_parameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as i32);
+    for filter in [GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER] {
+        ctx.tex_parameter(GL_TEXTURE_3D, filter, Param::I(GL_LINEAR as i32));
+    }
     for wrap in [GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R] {
-        ctx.tex_parameteri(GL_TEXTURE_3D, wrap, GL_CLAMP_TO_EDGE as i32);
+        ctx.tex_parameter(GL_TEXTURE_3D, wrap, Param::I(GL_CLAMP_TO_EDGE as i32));
     }
     let n = N as i32;
-    ctx.tex_image_3d(
+    ctx.tex_image(
         GL_TEXTURE_3D,
         0,
         GL_RGBA as i32,
-        n,
-        n,
-        n,
+        [n, n, n],
         0,
         GL_RGBA,
         GL_UNSIGNED_BYTE,

@@ -10,7 +10,7 @@
 //! their contents. Enum values are GL's numbers.
 
 use gl::enums::*;
-use gl::{ArrayData, Context};
+use gl::{ArrayData, Context, Param};
 use serde::{Deserialize, Serialize};
 
 /// One recorded GL call (the JSON form: `{"call": "Enable", "args": ...}`).
@@ -225,11 +225,11 @@ impl Call {
             Call::Frustum(a) => ctx.frustum(a[0], a[1], a[2], a[3], a[4], a[5]),
             Call::Translate(v) => ctx.translatef(v[0], v[1], v[2]),
             Call::Rotate(r) => ctx.rotatef(r[0], r[1], r[2], r[3]),
-            Call::Light(light, pname, params) => ctx.lightfv(*light, *pname, params),
-            Call::Material(face, pname, params) => ctx.materialfv(*face, *pname, params),
+            Call::Light(light, pname, params) => ctx.light(*light, *pname, Param::Fv(params)),
+            Call::Material(face, pname, params) => ctx.material(*face, *pname, Param::Fv(params)),
             Call::Enable(cap) => ctx.enable(*cap),
             Call::Disable(cap) => ctx.disable(*cap),
-            Call::Fog(pname, params) => ctx.fogfv(*pname, params),
+            Call::Fog(pname, params) => ctx.fog(*pname, Param::Fv(params)),
             Call::ClearColor(c) => ctx.clear_color(c[0], c[1], c[2], c[3]),
             Call::ClearDepth(d) => ctx.clear_depth(*d),
             Call::Clear(mask) => ctx.clear(*mask),

@@ -7,7 +7,7 @@ use super::gl_api::GlApi;
 use super::run::Verdict;
 use super::script::Script;
 use super::{execute_on, Options};
-use gl::ArrayData;
+use gl::{ArrayData, Param};
 
 /// Creates the script's context and runs it. (`gl::Context::new` always has
 /// depth and stencil buffers; piglit's window has a depth buffer only with
@@ -187,16 +187,16 @@ impl GlApi for gl::Context {
         gl::Context::clip_plane(self, plane, equation)
     }
     fn light_f(&mut self, light: u32, pname: u32, param: f32) {
-        gl::Context::lightf(self, light, pname, param)
+        gl::Context::light(self, light, pname, Param::F(param))
     }
     fn light_fv(&mut self, light: u32, pname: u32, params: &[f32]) {
-        gl::Context::lightfv(self, light, pname, params)
+        gl::Context::light(self, light, pname, Param::Fv(params))
     }
     fn light_i(&mut self, light: u32, pname: u32, param: i32) {
-        gl::Context::lighti(self, light, pname, param)
+        gl::Context::light(self, light, pname, Param::I(param))
     }
     fn light_iv(&mut self, light: u32, pname: u32, params: &[i32]) {
-        gl::Context::lightiv(self, light, pname, params)
+        gl::Context::light(self, light, pname, Param::Iv(params))
     }
     fn color_4fv(&mut self, v: &[f32; 4]) {
         gl::Context::color_4fv(self, v)
@@ -238,16 +238,16 @@ impl GlApi for gl::Context {
         gl::Context::bind_texture(self, target, texture)
     }
     fn tex_parameter_i(&mut self, target: u32, pname: u32, param: i32) {
-        gl::Context::tex_parameteri(self, target, pname, param)
+        gl::Context::tex_parameter(self, target, pname, Param::I(param))
     }
     fn tex_parameter_f(&mut self, target: u32, pname: u32, param: f32) {
-        gl::Context::tex_parameterf(self, target, pname, param)
+        gl::Context::tex_parameter(self, target, pname, Param::F(param))
     }
     fn tex_parameter_fv(&mut self, target: u32, pname: u32, params: &[f32]) {
-        gl::Context::tex_parameterfv(self, target, pname, params)
+        gl::Context::tex_parameter(self, target, pname, Param::Fv(params))
     }
     fn tex_image_1d(&mut self, t: u32, l: i32, i: i32, w: i32, b: i32, f: u32, ty: u32, p: &[f32]) {
-        gl::Context::tex_image_1d(self, t, l, i, w, b, f, ty, Some(&f32_bytes(p)))
+        gl::Context::tex_image(self, t, l, i, [w], b, f, ty, Some(&f32_bytes(p)))
     }
     fn tex_image_2d(
         &mut self,
@@ -261,7 +261,7 @@ impl GlApi for gl::Context {
         ty: u32,
         p: &[f32],
     ) {
-        gl::Context::tex_image_2d(self, t, l, i, w, h, b, f, ty, Some(&f32_bytes(p)))
+        gl::Context::tex_image(self, t, l, i, [w, h], b, f, ty, Some(&f32_bytes(p)))
     }
     fn tex_image_3d(
         &mut self,
@@ -276,7 +276,7 @@ impl GlApi for gl::Context {
         ty: u32,
         p: &[f32],
     ) {
-        gl::Context::tex_image_3d(self, t, l, i, w, h, d, b, f, ty, Some(&f32_bytes(p)))
+        gl::Context::tex_image(self, t, l, i, [w, h, d], b, f, ty, Some(&f32_bytes(p)))
     }
     fn read_pixels_f32(&mut self, x: i32, y: i32, w: i32, h: i32, f: u32, p: &mut [f32]) {
         let comps = match f {
