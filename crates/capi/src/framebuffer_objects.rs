@@ -45,6 +45,20 @@ gl_entry_points! {
     fn glFramebufferRenderbufferEXT(
         target: GLenum, attachment: GLenum, rbtarget: GLenum, rb: GLuint
     ) => |c| { c.gl.framebuffer_renderbuffer(target, attachment, rbtarget, rb) }
+    fn glGetFramebufferAttachmentParameteriv(
+        target: GLenum, attachment: GLenum, pname: GLenum, params: *mut GLint
+    ) => |c| {
+        if let Some(v) = c.gl.get_framebuffer_attachment_parameter(target, attachment, pname) {
+            wr(params, &[v]);
+        }
+    }
+    fn glGetFramebufferAttachmentParameterivEXT(
+        target: GLenum, attachment: GLenum, pname: GLenum, params: *mut GLint
+    ) => |c| {
+        if let Some(v) = c.gl.get_framebuffer_attachment_parameter(target, attachment, pname) {
+            wr(params, &[v]);
+        }
+    }
 
     // ---- renderbuffers ----
     fn glGenRenderbuffers(n: GLsizei, names: *mut GLuint) => |c| {

@@ -272,6 +272,132 @@ impl Context {
         self.set_attachment(fb, attachment, a);
     }
 
+    /// glGetFramebufferAttachmentParameteriv(EXT) (EXT_framebuffer_object
+    /// §6.1.3, with GL 3.0 §6.1.17's queries of the default framebuffer:
+    /// GL_FRONT_LEFT, GL_BACK_LEFT, GL_DEPTH, GL_STENCIL). On an object:
+    /// the object type and name, texture level, cube face and layer, the
+    /// color encoding (linear) and component type (unsigned normalized);
+    /// on the default framebuffer also the bit sizes. Other pnames (the
+    /// sizes of an object's attachment) are GL_INVALID_ENUM. None after
+    /// recording an error.
+    pub fn get_framebuffer_attachment_parameter(
+        &mut self,
+        target: u32,
+        attachment: u32,
+        pname: u32,
+    ) -> Option<i32> {
+        if !matches!(
+            target,
+            GL_FRAMEBUFFER | GL_DRAW_FRAMEBUFFER | GL_READ_FRAMEBUFFER
+        ) {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        }
+        let fb = if target == GL_READ_FRAMEBUFFER {
+            self.objects.read_framebuffer
+        } else {
+            self.objects.draw_framebuffer
+        };
+        if fb == 0 {
+            return self.default_attachment_parameter(attachment, pname);
+        }
+        let fb = self.attachment_slot(target, attachment)?;
+        let f = self.objects.framebuffers.get(&fb)?;
+        let a = match attachment {
+            GL_DEPTH_ATTACHMENT => f.depth,
+            GL_STENCIL_ATTACHMENT => f.stencil,
+            GL_DEPTH_STENCIL_ATTACHMENT if f.depth != f.stencil => {
+                self.set_error(GL_INVALID_OPERATION);
+                return None;
+            }
+            GL_DEPTH_STENCIL_ATTACHMENT => f.depth,
+            _ => f
+                .color
+                .get(attachment.wrapping_sub(GL_COLOR_ATTACHMENT0) as usize)
+                .copied()
+                .flatten(),
+        };
+        let v = match (pname, a) {
+            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, None) => GL_NONE as i32,
+            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Some(Attachment::Texture { .. })) => {
+                GL_TEXTURE as i32
+            }
+            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Some(Attachment::Renderbuffer(_))) => {
+                GL_RENDERBUFFER as i32
+            }
+            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, None) => 0,
+            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, Some(Attachment::Texture { texture, .. })) => {
+                texture as i32
+            }
+            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, Some(Attachment::Renderbuffer(rb))) => {
+                rb as i32
+            }
+            (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, Some(Attachment::Texture { level, .. })) => {
+                level
+            }
+            (
+                GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE,
+                Some(Attachment::Texture { texture, face, .. }),
+            ) => {
+                let cube = self
+                    .objects
+                    .textures
+                    .get(&texture)
+                    .is_some_and(|t| t.target == GL_TEXTURE_CUBE_MAP);
+                if cube {
+                    (GL_TEXTURE_CUBE_MAP_POSITIVE_X + face) as i32
+                } else {
+                    0
+                }
+            }
+            (
+                GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER,
+                Some(Attachment::Texture { zoffset, .. }),
+            ) => zoffset,
+            (GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, Some(_)) => GL_LINEAR as i32,
+            (GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, Some(_)) => GL_UNSIGNED_NORMALIZED as i32,
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return None;
+            }
+        };
+        Some(v)
+    }
+
+    /// The default framebuffer's part of
+    /// [`Context::get_framebuffer_attachment_parameter`].
+    fn default_attachment_parameter(&mut self, attachment: u32, pname: u32) -> Option<i32> {
+        let present = match attachment {
+            GL_FRONT_LEFT | GL_BACK_LEFT => true,
+            GL_DEPTH => self.fb.depth.is_some(),
+            GL_STENCIL => self.fb.stencil.is_some(),
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return None;
+            }
+        };
+        let size = |bits: i32, which: bool| if which { bits } else { 0 };
+        let color = matches!(attachment, GL_FRONT_LEFT | GL_BACK_LEFT);
+        let v = match pname {
+            GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE if present => GL_FRAMEBUFFER_DEFAULT as i32,
+            GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE => GL_NONE as i32,
+            GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME => 0,
+            GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE
+            | GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE
+            | GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE
+            | GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE => size(8, color),
+            GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE => size(24, attachment == GL_DEPTH && present),
+            GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE => size(8, attachment == GL_STENCIL && present),
+            GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING if present => GL_LINEAR as i32,
+            GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE if present => GL_UNSIGNED_NORMALIZED as i32,
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return None;
+            }
+        };
+        Some(v)
+    }
+
     /// Size and internal format of an attachment's image.
     pub(crate) fn attachment_info(&self, a: &Attachment) -> Option<(i32, i32, u32)> {
         match *a {

@@ -283,6 +283,17 @@ impl Context {
             raster::Framebuffer::new(w as u32, h as u32, raster::ColorFormat::Rgba8, true, true);
     }
 
+    /// Replaces the default framebuffer with `fb` and returns the one it
+    /// held: a window system whose surfaces own their pixels (EGL) moves a
+    /// surface's buffers in when a context is made current to it and out
+    /// when it is released. The size follows `fb`; the viewport and scissor
+    /// box are left as they are.
+    pub fn replace_default_framebuffer(&mut self, fb: raster::Framebuffer) -> raster::Framebuffer {
+        self.width = (fb.width as i32).clamp(1, MAX_TEXTURE_SIZE);
+        self.height = (fb.height as i32).clamp(1, MAX_TEXTURE_SIZE);
+        std::mem::replace(&mut self.fb, fb)
+    }
+
     /// Loads `pixels` (RGBA8, bottom row first, `width * height` of them)
     /// into the default framebuffer's color buffer: a wrapper whose client
     /// memory *is* the window (OSMesa) makes it the starting contents.
