@@ -2,8 +2,9 @@
 # Builds shaderbox's EGL library and prints the directory a program's
 # LD_LIBRARY_PATH names to run on it:
 #
-#   DIR/libEGL.so.1, DIR/libGL.so.1, DIR/libOpenGL.so.0
-#       one file (target/PROFILE/libEGL.so) under the three names;
+#   DIR/libEGL.so.1, DIR/libGL.so.1, DIR/libOpenGL.so.0 (and the
+#       unversioned libEGL.so, libGL.so, libOpenGL.so PyOpenGL loads)
+#       one file (target/PROFILE/libEGL.so) under all these names;
 #   DIR/glvnd/libEGL_shaderbox.so.0, DIR/glvnd/50_shaderbox.json
 #       the GLVND vendor library and its JSON, for the system's libglvnd
 #       libEGL.so.1: __EGL_VENDOR_LIBRARY_FILENAMES=DIR/glvnd/50_shaderbox.json
@@ -25,7 +26,8 @@ target_dir="${CARGO_TARGET_DIR:-$root_dir/target}"
 target_dir="$(cd "$target_dir" && pwd)"
 dir="$target_dir/$profile/egl"
 mkdir -p "$dir/glvnd"
-for name in libEGL.so.1 libGL.so.1 libOpenGL.so.0; do
+# PyOpenGL loads the unversioned names (libEGL.so, libOpenGL.so).
+for name in libEGL.so.1 libGL.so.1 libOpenGL.so.0 libEGL.so libGL.so libOpenGL.so; do
     ln -sfn ../libEGL.so "$dir/$name"
 done
 ln -sfn ../../libEGL.so "$dir/glvnd/libEGL_shaderbox.so.0"
