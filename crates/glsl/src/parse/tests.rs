@@ -149,6 +149,7 @@ fn show(e: &Expr) -> String {
     match &e.kind {
         ExprKind::Ident(i) => i.name.to_string(),
         ExprKind::IntLit(v) => v.to_string(),
+        ExprKind::UintLit(v) => format!("{v}u"),
         ExprKind::FloatLit(v) => format!("{v:?}"),
         ExprKind::BoolLit(b) => b.to_string(),
         ExprKind::Unary(op, a) => match op {
