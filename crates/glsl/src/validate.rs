@@ -200,8 +200,8 @@ impl Validator<'_> {
             ExprKind::Index { base, index } => {
                 self.expr(base);
                 self.expr(index);
-                if index.ty != Type::INT {
-                    self.fail(index.span, "index is not an int");
+                if index.ty != Type::INT && index.ty != Type::UINT {
+                    self.fail(index.span, "index is not an int or uint");
                 }
             }
             ExprKind::Swizzle {

@@ -308,3 +308,20 @@ fn switch_falls_through_and_breaks() {
         assert_eq!(c[l][1], s, "lane {l}");
     }
 }
+
+#[test]
+fn uint_indices_clamp_like_int_ones() {
+    // Lane l indexes with a[l]: in range, or past it (huge values select
+    // the last element, as out-of-range int indices do).
+    let src = "#version 130\nuniform uint a[16];\n\
+        void main() { int i = int(gl_FragCoord.x); float t[4] = float[4](1.0, 2.0, 3.0, 4.0); \
+        vec4 v = vec4(5.0, 6.0, 7.0, 8.0); \
+        gl_FragColor = vec4(t[a[i]], v[a[i]], t[a[i] & 3u], 0.0); }";
+    let (c, _) = frag_colors(src, &[("a", &A)]);
+    for l in 0..LANES {
+        let k = (A[l] as usize).min(3);
+        assert_eq!(c[l][0], k as f32 + 1.0, "t[{:#x}]", A[l]);
+        assert_eq!(c[l][1], k as f32 + 5.0, "v[{:#x}]", A[l]);
+        assert_eq!(c[l][2], (A[l] & 3) as f32 + 1.0, "t[{:#x} & 3]", A[l]);
+    }
+}

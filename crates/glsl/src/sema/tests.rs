@@ -620,3 +620,19 @@ fn switch_statements() {
     // Before 1.30 the words are reserved or plain identifiers.
     assert!(!frag("void main() { switch (1) { } }").ok());
 }
+
+#[test]
+fn uint_indices() {
+    ok(v130(
+        "uniform float a[4]; uniform uint k; void main() { vec4 v = vec4(1.0); \
+         gl_FragColor = vec4(a[k], a[2u], v[k], a[k & 1u]); }",
+    ));
+    fails(
+        v130("uniform float a[4]; void main() { gl_FragColor = vec4(a[4u]); }"),
+        Code::IndexOutOfRange,
+    );
+    fails(
+        v130("uniform float a[4]; void main() { gl_FragColor = vec4(a[0xffffffffu]); }"),
+        Code::IndexOutOfRange,
+    );
+}
