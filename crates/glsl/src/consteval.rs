@@ -577,4 +577,78 @@ mod tests {
         );
         assert_eq!(fold(&i, &[]), None);
     }
+
+    fn int_op(op: BinaryOp, a: ConstScalar, b: ConstScalar, ty: Type) -> Option<ConstScalar> {
+        let ta = if matches!(a, ConstScalar::Uint(_)) {
+            Type::UINT
+        } else {
+            Type::INT
+        };
+        let tb = if matches!(b, ConstScalar::Uint(_)) {
+            Type::UINT
+        } else {
+            Type::INT
+        };
+        let x = e(
+            ExprKind::Binary {
+                op,
+                left: Box::new(c(ta, vec![a])),
+                right: Box::new(c(tb, vec![b])),
+            },
+            ty,
+        );
+        fold(&x, &[]).map(|v| v.components[0])
+    }
+
+    #[test]
+    fn integer_operators() {
+        use ConstScalar::{Int, Uint};
+        let i = |op, a, b| int_op(op, Int(a), Int(b), Type::INT);
+        let u = |op, a, b| int_op(op, Uint(a), Uint(b), Type::UINT);
+        assert_eq!(i(BinaryOp::Mod, -7, 3), Some(Int(-1)));
+        assert_eq!(i(BinaryOp::Mod, i32::MIN, -1), Some(Int(0)));
+        assert_eq!(i(BinaryOp::Mod, 5, 0), None);
+        assert_eq!(u(BinaryOp::Mod, 7, 0), None);
+        assert_eq!(u(BinaryOp::Div, 0xffff_fffe, 2), Some(Uint(0x7fff_ffff)));
+        assert_eq!(u(BinaryOp::Sub, 0, 1), Some(Uint(u32::MAX)));
+        assert_eq!(i(BinaryOp::Shr, -8, 1), Some(Int(-4)));
+        assert_eq!(u(BinaryOp::Shr, 0x8000_0000, 31), Some(Uint(1)));
+        // Amounts modulo 32, negative ones included.
+        assert_eq!(i(BinaryOp::Shl, 1, 33), Some(Int(2)));
+        assert_eq!(i(BinaryOp::Shl, 1, -1), Some(Int(i32::MIN)));
+        assert_eq!(
+            int_op(BinaryOp::Shl, Uint(1), Int(4), Type::UINT),
+            Some(Uint(16))
+        );
+        assert_eq!(i(BinaryOp::BitXor, 6, 3), Some(Int(5)));
+        assert_eq!(u(BinaryOp::BitAnd, 6, 3), Some(Uint(2)));
+        assert_eq!(u(BinaryOp::BitOr, 6, 3), Some(Uint(7)));
+        // Mixed signedness is not folded (analysis never builds it).
+        assert_eq!(int_op(BinaryOp::BitAnd, Int(1), Uint(1), Type::INT), None);
+        let not = e(
+            ExprKind::Unary {
+                op: UnaryOp::BitNot,
+                operand: Box::new(c(Type::UINT, vec![Uint(5)])),
+            },
+            Type::UINT,
+        );
+        assert_eq!(fold(&not, &[]).unwrap().components, vec![Uint(!5)]);
+    }
+
+    #[test]
+    fn unsigned_conversions() {
+        use ConstScalar::*;
+        assert_eq!(convert(Int(-1), Scalar::Uint), Uint(u32::MAX));
+        assert_eq!(convert(Uint(u32::MAX), Scalar::Int), Int(-1));
+        assert_eq!(convert(Float(-3.5), Scalar::Uint), Uint(0));
+        assert_eq!(convert(Float(3.9), Scalar::Uint), Uint(3));
+        assert_eq!(convert(Float(f32::NAN), Scalar::Uint), Uint(0));
+        assert_eq!(convert(Float(1e20), Scalar::Uint), Uint(u32::MAX));
+        assert_eq!(
+            convert(Uint(u32::MAX), Scalar::Float),
+            Float(4_294_967_296.0)
+        );
+        assert_eq!(convert(Uint(2), Scalar::Bool), Bool(true));
+        assert_eq!(convert(Bool(true), Scalar::Uint), Uint(1));
+    }
 }
