@@ -175,6 +175,7 @@ fn view_png(
                             f[c] = match k {
                                 Scalar::Float => f32::from_bits(bits[c]),
                                 Scalar::Int => bits[c] as i32 as f32,
+                                Scalar::Uint => bits[c] as f32,
                                 Scalar::Bool => (bits[c] != 0) as u32 as f32,
                             };
                         }

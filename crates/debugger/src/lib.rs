@@ -122,12 +122,13 @@ pub struct Named {
     pub values: Vec<Number>,
 }
 
-/// A value as its type says: float, int or bool.
+/// A value as its type says: float, int, uint or bool.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum Number {
     Float(f32),
     Int(i32),
+    Uint(u32),
     Bool(bool),
 }
 
@@ -136,6 +137,7 @@ impl Number {
         match kind {
             Scalar::Float => Number::Float(f32::from_bits(bits)),
             Scalar::Int => Number::Int(bits as i32),
+            Scalar::Uint => Number::Uint(bits),
             Scalar::Bool => Number::Bool(bits != 0),
         }
     }
@@ -144,6 +146,7 @@ impl Number {
         match kind {
             Scalar::Float => Number::Float(v),
             Scalar::Int => Number::Int(v as i32),
+            Scalar::Uint => Number::Uint(v as u32),
             Scalar::Bool => Number::Bool(v != 0.0),
         }
     }
@@ -157,6 +160,7 @@ impl std::fmt::Display for Number {
             }
             Number::Float(v) => write!(f, "{v}"),
             Number::Int(v) => write!(f, "{v}"),
+            Number::Uint(v) => write!(f, "{v}u"),
             Number::Bool(v) => write!(f, "{v}"),
         }
     }

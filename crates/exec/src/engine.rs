@@ -249,6 +249,7 @@ fn load_inputs_with(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batc
                 // Subnormal inputs enter as zero, as every float value.
                 Scalar::Float => lanes(|l| ftz(src[l])),
                 Scalar::Int => src.map(|v| v as i32 as u32),
+                Scalar::Uint => src.map(|v| v as u32),
                 Scalar::Bool => src.map(|v| (v != 0.0) as u32),
             };
         }
@@ -292,6 +293,7 @@ fn store_outputs_with(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
             let value: Lanes = match kind {
                 Scalar::Float => lanes(|l| float_output(src[l])),
                 Scalar::Int => src.map(|x| (x as i32 as f32).to_bits()),
+                Scalar::Uint => src.map(|x| (x as f32).to_bits()),
                 Scalar::Bool => src.map(|x| ((x != 0) as u32 as f32).to_bits()),
             };
             for (l, v) in dst.iter_mut().enumerate() {

@@ -191,6 +191,7 @@ pub(crate) fn run<H: Hook>(
         r[reg as usize] = lanes(|l| match kind {
             Scalar::Float => ftz(src[l]),
             Scalar::Int => src[l] as i32 as u32,
+            Scalar::Uint => src[l] as u32,
             Scalar::Bool => (src[l] != 0.0) as u32,
         });
     }
@@ -389,6 +390,7 @@ pub(crate) fn run<H: Hook>(
                     *v = match kind {
                         Scalar::Float => f(crate::lane::float_output(src[l])),
                         Scalar::Int => src[l] as i32 as f32,
+                        Scalar::Uint => src[l] as f32,
                         Scalar::Bool => (src[l] != 0) as u32 as f32,
                     };
                 }

@@ -253,6 +253,39 @@ macro_rules! lane_ops {
                 jit icmp!(d, a, b, IntCC::SignedLessThanOrEqual);
             IEq { d, a, b } => lane bin!(d, a, b, |x, y| (x == y) as u32),
                 jit icmp!(d, a, b, IntCC::Equal);
+            // Wrapping, and 0 for a division by zero.
+            UDiv { d, a, b } => lane bin!(d, a, b, |x, y| x.checked_div(y).unwrap_or(0)),
+                jit call_step!();
+            IMod { d, a, b } => lane bin!(d, a, b, |x, y| {
+                if y == 0 {
+                    0
+                } else {
+                    (x as i32).wrapping_rem(y as i32) as u32
+                }
+            }),
+                jit call_step!();
+            UMod { d, a, b } => lane bin!(d, a, b, |x, y| x.checked_rem(y).unwrap_or(0)),
+                jit call_step!();
+            ULt { d, a, b } => lane bin!(d, a, b, |x, y| (x < y) as u32),
+                jit icmp!(d, a, b, IntCC::UnsignedLessThan);
+            ULe { d, a, b } => lane bin!(d, a, b, |x, y| (x <= y) as u32),
+                jit icmp!(d, a, b, IntCC::UnsignedLessThanOrEqual);
+            // Amounts modulo 32 (what `wrapping_sh*` and the native
+            // code's scalar shifts do).
+            Shl { d, a, b } => lane bin!(d, a, b, |x, y| x.wrapping_shl(y)),
+                jit shift!(d, a, b, ishl);
+            ShrS { d, a, b } => lane bin!(d, a, b, |x, y| (x as i32).wrapping_shr(y) as u32),
+                jit shift!(d, a, b, sshr);
+            ShrU { d, a, b } => lane bin!(d, a, b, |x, y| x.wrapping_shr(y)),
+                jit shift!(d, a, b, ushr);
+            BitAnd { d, a, b } => lane bin!(d, a, b, |x, y| x & y),
+                jit ibin!(d, a, b, band);
+            BitOr { d, a, b } => lane bin!(d, a, b, |x, y| x | y),
+                jit ibin!(d, a, b, bor);
+            BitXor { d, a, b } => lane bin!(d, a, b, |x, y| x ^ y),
+                jit ibin!(d, a, b, bxor);
+            BitNot { d, a } => lane un!(d, a, |x| !x),
+                jit un_ins!(d, a, ld, bit_not);
             And { d, a, b } => lane bin!(d, a, b, |x, y| ((x != 0) & (y != 0)) as u32),
                 jit logic!(d, a, b, bor, true);
             Or { d, a, b } => lane bin!(d, a, b, |x, y| ((x != 0) | (y != 0)) as u32),
@@ -265,6 +298,10 @@ macro_rules! lane_ops {
                 jit un_ins!(d, a, ldf, ftoi);
             IToF { d, a } => lane un!(d, a, |x| (x as i32 as f32).to_bits()),
                 jit un_ins!(d, a, ld, itof);
+            FToU { d, a } => lane un!(d, a, |x| glsl::consteval::float_to_uint(f(x))),
+                jit un_ins!(d, a, ldf, ftou);
+            UToF { d, a } => lane un!(d, a, |x| (x as f32).to_bits()),
+                jit un_ins!(d, a, ld, utof);
             FToB { d, a } => lane un!(d, a, |x| (f(x) != 0.0) as u32),
                 jit un_ins!(d, a, ldf, ftob);
             IToB { d, a } => lane un!(d, a, |x| (x != 0) as u32),

@@ -8,13 +8,17 @@
 //! ## Contract
 //! - **Semantics** are those of the IR (`glsl::ir`) and of constant folding
 //!   (`glsl::consteval`, `glsl::builtins::eval_builtin`): IEEE-754 `f32`
-//!   arithmetic without contraction, integer arithmetic wrapping at 32 bits,
-//!   float→int conversion truncating toward zero and saturating (NaN → 0),
+//!   arithmetic without contraction, int and uint arithmetic wrapping at
+//!   32 bits, float→int and float→uint conversion truncating toward zero
+//!   and saturating (NaN → 0; negative → 0 for uint), int↔uint keeping
+//!   the bits, uint→float rounding to nearest,
 //!   matrix products and dot products summed in index order from 0.0,
 //!   built-in functions through `glsl::math`, so a shader computes the very
 //!   bits constant folding would.
 //! - **Defined results where GLSL leaves them undefined** (documented
-//!   choices): integer division by zero gives 0; a dynamic index out of
+//!   choices): integer division and remainder (`%`) by zero give 0, and
+//!   `i32::MIN % -1` gives 0; shift amounts are taken modulo 32 (their low
+//!   five bits, so negative amounts too); a dynamic index out of
 //!   range is clamped to the nearest element (negative → element 0, too
 //!   large → the last element), for reads and writes; uninitialized
 //!   variables hold unspecified but deterministic values (0 at the start of
@@ -94,8 +98,11 @@
 //! matrices column-major, arrays element by element, structs member by
 //! member); a sampler takes one component (its texture unit). Uniform
 //! words are `u32` bit patterns: `f32::to_bits` for floats, `i32 as u32`
-//! for ints, 0/1 for bools, the unit number for samplers. Inputs and
-//! outputs are `f32` (bool `gl_FrontFacing` is 1.0/0.0).
+//! for ints, the value for uints, 0/1 for bools, the unit number for
+//! samplers. Inputs and outputs are `f32` (bool `gl_FrontFacing` is
+//! 1.0/0.0); int and uint inputs and outputs convert to and from `f32` by
+//! value, so integers beyond 2^24 in magnitude lose their low bits on the
+//! way between stages (see Limitations).
 //!
 //! ## Debugging hooks
 //! [`Kernel::run_traced`] reports, for one lane, every statement start
@@ -137,7 +144,8 @@
 //! operations in the same order as the interpreter, with subnormals read
 //! as zero in hardware on x86-64 (MXCSR.DAZ, set around each run: see
 //! `float_env`) and flushed after each op elsewhere, and calls back into the interpreter's own lane
-//! code for the transcendental functions, integer division, noise and
+//! code for the transcendental functions, integer division and remainder,
+//! noise and
 //! texture lookups, so it computes the same bits (tests compare it with
 //! the interpreter on random programs of every op, on every unit-test
 //! shader, and on piglit's execution and built-in function shaders).
@@ -170,6 +178,11 @@
 //!   versions); `sin`, `cos`, `tan`, `asin`, `acos`, `atan` are still scalar
 //!   `libm` calls per lane. Subroutine calls count against
 //!   [`LOOP_BUDGET`] like loop iterations.
+//! - Integer inputs and outputs travel as `f32` values (the interface's
+//!   type): an int or uint varying or attribute beyond 2^24 in magnitude
+//!   is rounded. Uniforms are exact.
+//! - `switch` computes each lane's starting case with one compare and
+//!   select per label: no jump table.
 //! - Programs beyond [`limits::MAX_REGISTERS`] registers or
 //!   [`limits::MAX_OPS`] instructions are refused.
 //!

@@ -321,16 +321,43 @@ define_ops! {
     Pure INeg { d: Reg = def, a: Reg = read },
     Pure ILt { d: Reg = def, a: Reg = read, b: Reg = read },
     Pure ILe { d: Reg = def, a: Reg = read, b: Reg = read },
-    /// Bit equality (ints, bools, samplers).
+    /// Bit equality (ints, uints, bools, samplers).
     Pure IEq { d: Reg = def, a: Reg = read, b: Reg = read },
+    /// Unsigned division; division by zero gives 0.
+    Pure UDiv { d: Reg = def, a: Reg = read, b: Reg = read },
+    /// Signed remainder (of the truncating division: the dividend's sign;
+    /// `i32::MIN % -1` is 0); by zero gives 0.
+    Pure IMod { d: Reg = def, a: Reg = read, b: Reg = read },
+    /// Unsigned remainder; by zero gives 0.
+    Pure UMod { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure ULt { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure ULe { d: Reg = def, a: Reg = read, b: Reg = read },
+    /// `a << (b mod 32)`.
+    Pure Shl { d: Reg = def, a: Reg = read, b: Reg = read },
+    /// `a >> (b mod 32)`, sign-extending (int).
+    Pure ShrS { d: Reg = def, a: Reg = read, b: Reg = read },
+    /// `a >> (b mod 32)`, zero-extending (uint).
+    Pure ShrU { d: Reg = def, a: Reg = read, b: Reg = read },
+    /// Bitwise and, or, xor, not of the 32 bits (the ops below them,
+    /// `And`...`Not`, are the logical ones of bools).
+    Pure BitAnd { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure BitOr { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure BitXor { d: Reg = def, a: Reg = read, b: Reg = read },
+    Pure BitNot { d: Reg = def, a: Reg = read },
 
     Pure And { d: Reg = def, a: Reg = read, b: Reg = read },
     Pure Or { d: Reg = def, a: Reg = read, b: Reg = read },
     Pure Xor { d: Reg = def, a: Reg = read, b: Reg = read },
     Pure Not { d: Reg = def, a: Reg = read },
 
+    /// float→int: truncation; NaN → 0; out of range saturates.
     Pure FToI { d: Reg = def, a: Reg = read },
     Pure IToF { d: Reg = def, a: Reg = read },
+    /// float→uint: truncation; NaN and negative values → 0; from 2^32 on
+    /// `u32::MAX` (`glsl::consteval::float_to_uint`).
+    Pure FToU { d: Reg = def, a: Reg = read },
+    /// uint→float, rounded to nearest even.
+    Pure UToF { d: Reg = def, a: Reg = read },
     Pure FToB { d: Reg = def, a: Reg = read },
     Pure IToB { d: Reg = def, a: Reg = read },
     Pure BToF { d: Reg = def, a: Reg = read },

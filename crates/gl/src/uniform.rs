@@ -274,7 +274,8 @@ impl UniformTable {
         let (leaf, element) = self.resolve(loc).ok_or(UniformError::InvalidOperation)?;
         let ok = match (kind, leaf.ty.base) {
             (SetterKind::Float, Base::Scalar(s) | Base::Vector(s, _)) => {
-                s != Scalar::Int && leaf.ty.vector_size() == Some(comps as u8)
+                matches!(s, Scalar::Float | Scalar::Bool)
+                    && leaf.ty.vector_size() == Some(comps as u8)
             }
             (SetterKind::Int, Base::Scalar(s) | Base::Vector(s, _)) => {
                 s != Scalar::Float && leaf.ty.vector_size() == Some(comps as u8)
@@ -364,6 +365,7 @@ pub fn scalar_word(c: ConstScalar) -> u32 {
     match c {
         ConstScalar::Float(f) => f.to_bits(),
         ConstScalar::Int(i) => i as u32,
+        ConstScalar::Uint(u) => u,
         ConstScalar::Bool(b) => u32::from(b),
     }
 }
@@ -444,6 +446,7 @@ pub fn gl_type(ty: Type) -> u32 {
     match ty.base {
         Base::Scalar(Scalar::Float) => GL_FLOAT,
         Base::Scalar(Scalar::Int) => GL_INT,
+        Base::Scalar(Scalar::Uint) => GL_UNSIGNED_INT,
         Base::Scalar(Scalar::Bool) => GL_BOOL,
         Base::Vector(Scalar::Float, 2) => GL_FLOAT_VEC2,
         Base::Vector(Scalar::Float, 3) => GL_FLOAT_VEC3,
@@ -451,6 +454,9 @@ pub fn gl_type(ty: Type) -> u32 {
         Base::Vector(Scalar::Int, 2) => GL_INT_VEC2,
         Base::Vector(Scalar::Int, 3) => GL_INT_VEC3,
         Base::Vector(Scalar::Int, _) => GL_INT_VEC4,
+        Base::Vector(Scalar::Uint, 2) => GL_UNSIGNED_INT_VEC2,
+        Base::Vector(Scalar::Uint, 3) => GL_UNSIGNED_INT_VEC3,
+        Base::Vector(Scalar::Uint, _) => GL_UNSIGNED_INT_VEC4,
         Base::Vector(Scalar::Bool, 2) => GL_BOOL_VEC2,
         Base::Vector(Scalar::Bool, 3) => GL_BOOL_VEC3,
         Base::Vector(Scalar::Bool, _) => GL_BOOL_VEC4,

@@ -240,6 +240,17 @@ pub enum StmtKind {
         step: Option<Expr>,
         body: Box<Stmt>,
     },
+    /// `switch (selector) { ... }`: the body is one scope; its statements
+    /// include the labels ([`StmtKind::Case`], [`StmtKind::Default`]).
+    Switch {
+        selector: Expr,
+        body: Block,
+    },
+    /// `case expr:`, wherever it was written (analysis checks that it is
+    /// directly in a switch body).
+    Case(Expr),
+    /// `default:`, likewise.
+    Default,
     Break,
     Continue,
     Return(Option<Expr>),
@@ -336,6 +347,8 @@ pub struct Expr {
 pub enum ExprKind {
     Ident(Ident),
     IntLit(u32),
+    /// `7u` (GLSL 1.30 on).
+    UintLit(u32),
     FloatLit(f32),
     BoolLit(bool),
     /// `"text"` without its quotes: only the format of `debugPrintfEXT`

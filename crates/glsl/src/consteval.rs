@@ -10,7 +10,10 @@
 //! [`ExprKind::Const`] before folding, so this module never looks variables
 //! up. The arithmetic is the same the executor performs: IEEE-754 single
 //! precision without contraction, integer arithmetic wrapping at 32 bits,
-//! conversions as GLSL 1.20 §5.4.1 defines them.
+//! conversions as GLSL 1.30 §5.4.1 defines them. Integer operators whose
+//! result the spec leaves undefined fold to the executor's values: shift
+//! amounts are taken modulo 32, `i32::MIN % -1` is 0; a remainder or
+//! quotient by zero is not folded (the executor gives 0).
 
 use crate::builtins;
 use crate::ir::{BinaryOp, ConstScalar, ConstValue, Expr, ExprKind, UnaryOp};
@@ -71,6 +74,7 @@ pub fn fold(expr: &Expr, structs: &[StructDef]) -> Option<ConstValue> {
             let b = fold(base, structs)?;
             let i = match fold(index, structs)?.components.first() {
                 Some(ConstScalar::Int(i)) => *i,
+                Some(ConstScalar::Uint(u)) => i32::try_from(*u).ok()?,
                 _ => return None,
             };
             let width = flat_size(ty, structs);
@@ -139,19 +143,28 @@ pub fn fold(expr: &Expr, structs: &[StructDef]) -> Option<ConstValue> {
     Some(ConstValue { ty, components })
 }
 
-/// Converts one scalar as constructors do (GLSL 1.20 §5.4.1): float→int
-/// truncates toward zero, anything→bool is "not zero", bool→number is 0/1.
+/// Converts one scalar as constructors do (GLSL 1.30 §5.4.1): float→int
+/// and float→uint truncate toward zero, int↔uint keep the bit pattern,
+/// anything→bool is "not zero", bool→number is 0/1.
 pub fn convert(c: ConstScalar, to: Scalar) -> ConstScalar {
+    use ConstScalar as C;
     match (c, to) {
-        (ConstScalar::Float(f), Scalar::Float) => ConstScalar::Float(f),
-        (ConstScalar::Float(f), Scalar::Int) => ConstScalar::Int(float_to_int(f)),
-        (ConstScalar::Float(f), Scalar::Bool) => ConstScalar::Bool(f != 0.0),
-        (ConstScalar::Int(i), Scalar::Float) => ConstScalar::Float(i as f32),
-        (ConstScalar::Int(i), Scalar::Int) => ConstScalar::Int(i),
-        (ConstScalar::Int(i), Scalar::Bool) => ConstScalar::Bool(i != 0),
-        (ConstScalar::Bool(b), Scalar::Float) => ConstScalar::Float(if b { 1.0 } else { 0.0 }),
-        (ConstScalar::Bool(b), Scalar::Int) => ConstScalar::Int(b as i32),
-        (ConstScalar::Bool(b), Scalar::Bool) => ConstScalar::Bool(b),
+        (C::Float(f), Scalar::Float) => C::Float(f),
+        (C::Float(f), Scalar::Int) => C::Int(float_to_int(f)),
+        (C::Float(f), Scalar::Uint) => C::Uint(float_to_uint(f)),
+        (C::Float(f), Scalar::Bool) => C::Bool(f != 0.0),
+        (C::Int(i), Scalar::Float) => C::Float(i as f32),
+        (C::Int(i), Scalar::Int) => C::Int(i),
+        (C::Int(i), Scalar::Uint) => C::Uint(i as u32),
+        (C::Int(i), Scalar::Bool) => C::Bool(i != 0),
+        (C::Uint(u), Scalar::Float) => C::Float(u as f32),
+        (C::Uint(u), Scalar::Int) => C::Int(u as i32),
+        (C::Uint(u), Scalar::Uint) => C::Uint(u),
+        (C::Uint(u), Scalar::Bool) => C::Bool(u != 0),
+        (C::Bool(b), Scalar::Float) => C::Float(if b { 1.0 } else { 0.0 }),
+        (C::Bool(b), Scalar::Int) => C::Int(b as i32),
+        (C::Bool(b), Scalar::Uint) => C::Uint(b as u32),
+        (C::Bool(b), Scalar::Bool) => C::Bool(b),
     }
 }
 
@@ -162,10 +175,40 @@ pub fn float_to_int(f: f32) -> i32 {
     f as i32
 }
 
+/// float→uint with truncation; NaN and negative values give 0, values
+/// from 2^32 on give `u32::MAX` (undefined in GLSL; the executor's choice
+/// too).
+pub fn float_to_uint(f: f32) -> u32 {
+    f as u32
+}
+
+/// A shift amount of either signedness, modulo 32 (see [`BinaryOp::Shl`]).
+fn shift_amount(c: ConstScalar) -> Option<u32> {
+    match c {
+        ConstScalar::Int(i) => Some(i as u32 & 31),
+        ConstScalar::Uint(u) => Some(u & 31),
+        _ => None,
+    }
+}
+
+fn shift(op: BinaryOp, a: ConstScalar, b: ConstScalar) -> Option<ConstScalar> {
+    let n = shift_amount(b)?;
+    Some(match (op, a) {
+        (BinaryOp::Shl, ConstScalar::Int(x)) => ConstScalar::Int(x << n),
+        (BinaryOp::Shl, ConstScalar::Uint(x)) => ConstScalar::Uint(x << n),
+        (BinaryOp::Shr, ConstScalar::Int(x)) => ConstScalar::Int(x >> n),
+        (BinaryOp::Shr, ConstScalar::Uint(x)) => ConstScalar::Uint(x >> n),
+        _ => return None,
+    })
+}
+
 fn unary(op: UnaryOp, c: ConstScalar) -> Option<ConstScalar> {
     Some(match (op, c) {
         (UnaryOp::Neg, ConstScalar::Float(f)) => ConstScalar::Float(-f),
         (UnaryOp::Neg, ConstScalar::Int(i)) => ConstScalar::Int(i.wrapping_neg()),
+        (UnaryOp::Neg, ConstScalar::Uint(u)) => ConstScalar::Uint(u.wrapping_neg()),
+        (UnaryOp::BitNot, ConstScalar::Int(i)) => ConstScalar::Int(!i),
+        (UnaryOp::BitNot, ConstScalar::Uint(u)) => ConstScalar::Uint(!u),
         (UnaryOp::Not, ConstScalar::Bool(b)) => ConstScalar::Bool(!b),
         _ => return None,
     })
@@ -191,6 +234,26 @@ fn scalar_op(op: BinaryOp, a: ConstScalar, b: ConstScalar) -> Option<ConstScalar
                 }
                 x.wrapping_div(y)
             }
+            BinaryOp::Mod => {
+                if y == 0 {
+                    return None;
+                }
+                x.wrapping_rem(y)
+            }
+            BinaryOp::BitAnd => x & y,
+            BinaryOp::BitOr => x | y,
+            BinaryOp::BitXor => x ^ y,
+            _ => return None,
+        }),
+        (Uint(x), Uint(y)) => Uint(match op {
+            BinaryOp::Add => x.wrapping_add(y),
+            BinaryOp::Sub => x.wrapping_sub(y),
+            BinaryOp::Mul => x.wrapping_mul(y),
+            BinaryOp::Div => x.checked_div(y)?,
+            BinaryOp::Mod => x.checked_rem(y)?,
+            BinaryOp::BitAnd => x & y,
+            BinaryOp::BitOr => x | y,
+            BinaryOp::BitXor => x ^ y,
             _ => return None,
         }),
         _ => return None,
@@ -215,6 +278,7 @@ fn scalar_eq(a: ConstScalar, b: ConstScalar) -> bool {
     match (a, b) {
         (ConstScalar::Float(x), ConstScalar::Float(y)) => x == y,
         (ConstScalar::Int(x), ConstScalar::Int(y)) => x == y,
+        (ConstScalar::Uint(x), ConstScalar::Uint(y)) => x == y,
         (ConstScalar::Bool(x), ConstScalar::Bool(y)) => x == y,
         _ => false,
     }
@@ -223,7 +287,16 @@ fn scalar_eq(a: ConstScalar, b: ConstScalar) -> bool {
 fn binary(op: BinaryOp, l: &ConstValue, r: &ConstValue, ty: Type) -> Option<Vec<ConstScalar>> {
     let (lc, rc) = (&l.components, &r.components);
     match op {
-        BinaryOp::Add | BinaryOp::Sub | BinaryOp::Mul | BinaryOp::Div => {
+        BinaryOp::Add
+        | BinaryOp::Sub
+        | BinaryOp::Mul
+        | BinaryOp::Div
+        | BinaryOp::Mod
+        | BinaryOp::BitAnd
+        | BinaryOp::BitOr
+        | BinaryOp::BitXor
+        | BinaryOp::Shl
+        | BinaryOp::Shr => {
             // Component-wise with broadcasting of a scalar operand.
             let n = lc.len().max(rc.len());
             if !(lc.len() == rc.len() || lc.len() == 1 || rc.len() == 1) {
@@ -231,9 +304,12 @@ fn binary(op: BinaryOp, l: &ConstValue, r: &ConstValue, ty: Type) -> Option<Vec<
             }
             (0..n)
                 .map(|i| {
-                    let a = lc[if lc.len() == 1 { 0 } else { i }];
-                    let b = rc[if rc.len() == 1 { 0 } else { i }];
-                    scalar_op(op, a, b)
+                    let a = *lc.get(if lc.len() == 1 { 0 } else { i })?;
+                    let b = *rc.get(if rc.len() == 1 { 0 } else { i })?;
+                    match op {
+                        BinaryOp::Shl | BinaryOp::Shr => shift(op, a, b),
+                        _ => scalar_op(op, a, b),
+                    }
                 })
                 .collect()
         }
@@ -243,6 +319,7 @@ fn binary(op: BinaryOp, l: &ConstValue, r: &ConstValue, ty: Type) -> Option<Vec<
             let ord = match (a, b) {
                 (ConstScalar::Float(x), ConstScalar::Float(y)) => x.partial_cmp(&y),
                 (ConstScalar::Int(x), ConstScalar::Int(y)) => Some(x.cmp(&y)),
+                (ConstScalar::Uint(x), ConstScalar::Uint(y)) => Some(x.cmp(&y)),
                 _ => return None,
             };
             use std::cmp::Ordering::*;
@@ -499,5 +576,79 @@ mod tests {
             Type::FLOAT,
         );
         assert_eq!(fold(&i, &[]), None);
+    }
+
+    fn int_op(op: BinaryOp, a: ConstScalar, b: ConstScalar, ty: Type) -> Option<ConstScalar> {
+        let ta = if matches!(a, ConstScalar::Uint(_)) {
+            Type::UINT
+        } else {
+            Type::INT
+        };
+        let tb = if matches!(b, ConstScalar::Uint(_)) {
+            Type::UINT
+        } else {
+            Type::INT
+        };
+        let x = e(
+            ExprKind::Binary {
+                op,
+                left: Box::new(c(ta, vec![a])),
+                right: Box::new(c(tb, vec![b])),
+            },
+            ty,
+        );
+        fold(&x, &[]).map(|v| v.components[0])
+    }
+
+    #[test]
+    fn integer_operators() {
+        use ConstScalar::{Int, Uint};
+        let i = |op, a, b| int_op(op, Int(a), Int(b), Type::INT);
+        let u = |op, a, b| int_op(op, Uint(a), Uint(b), Type::UINT);
+        assert_eq!(i(BinaryOp::Mod, -7, 3), Some(Int(-1)));
+        assert_eq!(i(BinaryOp::Mod, i32::MIN, -1), Some(Int(0)));
+        assert_eq!(i(BinaryOp::Mod, 5, 0), None);
+        assert_eq!(u(BinaryOp::Mod, 7, 0), None);
+        assert_eq!(u(BinaryOp::Div, 0xffff_fffe, 2), Some(Uint(0x7fff_ffff)));
+        assert_eq!(u(BinaryOp::Sub, 0, 1), Some(Uint(u32::MAX)));
+        assert_eq!(i(BinaryOp::Shr, -8, 1), Some(Int(-4)));
+        assert_eq!(u(BinaryOp::Shr, 0x8000_0000, 31), Some(Uint(1)));
+        // Amounts modulo 32, negative ones included.
+        assert_eq!(i(BinaryOp::Shl, 1, 33), Some(Int(2)));
+        assert_eq!(i(BinaryOp::Shl, 1, -1), Some(Int(i32::MIN)));
+        assert_eq!(
+            int_op(BinaryOp::Shl, Uint(1), Int(4), Type::UINT),
+            Some(Uint(16))
+        );
+        assert_eq!(i(BinaryOp::BitXor, 6, 3), Some(Int(5)));
+        assert_eq!(u(BinaryOp::BitAnd, 6, 3), Some(Uint(2)));
+        assert_eq!(u(BinaryOp::BitOr, 6, 3), Some(Uint(7)));
+        // Mixed signedness is not folded (analysis never builds it).
+        assert_eq!(int_op(BinaryOp::BitAnd, Int(1), Uint(1), Type::INT), None);
+        let not = e(
+            ExprKind::Unary {
+                op: UnaryOp::BitNot,
+                operand: Box::new(c(Type::UINT, vec![Uint(5)])),
+            },
+            Type::UINT,
+        );
+        assert_eq!(fold(&not, &[]).unwrap().components, vec![Uint(!5)]);
+    }
+
+    #[test]
+    fn unsigned_conversions() {
+        use ConstScalar::*;
+        assert_eq!(convert(Int(-1), Scalar::Uint), Uint(u32::MAX));
+        assert_eq!(convert(Uint(u32::MAX), Scalar::Int), Int(-1));
+        assert_eq!(convert(Float(-3.5), Scalar::Uint), Uint(0));
+        assert_eq!(convert(Float(3.9), Scalar::Uint), Uint(3));
+        assert_eq!(convert(Float(f32::NAN), Scalar::Uint), Uint(0));
+        assert_eq!(convert(Float(1e20), Scalar::Uint), Uint(u32::MAX));
+        assert_eq!(
+            convert(Uint(u32::MAX), Scalar::Float),
+            Float(4_294_967_296.0)
+        );
+        assert_eq!(convert(Uint(2), Scalar::Bool), Bool(true));
+        assert_eq!(convert(Bool(true), Scalar::Uint), Uint(1));
     }
 }

@@ -3,16 +3,24 @@
 //! Contract (what [`crate::validate`] checks and later stages rely on):
 //! - every [`Expr`] carries its resolved [`Type`]; no expression has the
 //!   error type in a module that compiled without errors;
-//! - every implicit conversion is explicit: GLSL 1.20's int→float
-//!   conversions (§4.1.10) appear as [`ExprKind::Convert`]; GLSL 1.10 has
-//!   none;
+//! - every implicit conversion is explicit: the int→float (1.20 on) and
+//!   uint→float (1.30 on) conversions of §4.1.10 appear as
+//!   [`ExprKind::Convert`]; GLSL 1.10 has none;
 //! - operands of binary operators already have the shapes the spec allows
 //!   (scalar⊗vector broadcasting is left to the executor, matrix products are
-//!   [`BinaryOp::MatMul`], everything else is component-wise);
+//!   [`BinaryOp::MatMul`], everything else is component-wise); the
+//!   integer operators take int/uint scalars and vectors: `%`, `&`, `|`,
+//!   `^` two operands of one signedness, the shifts any signedness with
+//!   the left operand's type as result and a scalar right operand for a
+//!   scalar left one;
 //! - constant expressions are folded: array sizes are numbers, `const`
 //!   variables have [`ConstValue`] initializers, `.length()` is a constant;
 //! - control flow is structured: `while`, `do`/`while` and `for` are all
 //!   [`Stmt::Loop`] with the condition as an explicit `if (!c) break;`;
+//!   `switch` is [`Stmt::Switch`], whose labels are distinct constants of
+//!   the selector's type (int or uint scalar) with at most one default;
+//!   `break` leaves the innermost loop or switch, `continue` the innermost
+//!   loop;
 //! - expressions may have side effects (assignments, `++`, calls) and are
 //!   evaluated left to right; `&&`, `||` and `?:` evaluate lazily.
 
@@ -53,6 +61,7 @@ pub struct LocalId(pub u32);
 pub enum ConstScalar {
     Float(f32),
     Int(i32),
+    Uint(u32),
     Bool(bool),
 }
 
@@ -171,18 +180,47 @@ pub enum Stmt {
         continuing: Block,
         span: Span,
     },
+    /// `switch (selector) { case ...: ... }` (GLSL 1.30 §6.2). Each lane
+    /// starts at the case whose labels hold the selector's value, or at the
+    /// default case, or skips the switch; it runs the cases from there on
+    /// in order (fall through) until a `break`. The cases share one scope,
+    /// the switch body's.
+    Switch {
+        selector: Expr,
+        cases: Vec<SwitchCase>,
+        span: Span,
+    },
+    /// Leaves the innermost loop or switch.
     Break(Span),
     Continue(Span),
     Return(Option<Expr>, Span),
     Discard(Span),
 }
 
+/// A case of a [`Stmt::Switch`]: one or more labels (consecutive labels
+/// without statements between them), then the statements up to the next
+/// label. A case other than the last may have no statements.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SwitchCase {
+    pub labels: Vec<CaseLabel>,
+    pub body: Block,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub enum CaseLabel {
+    /// `case c:`, an int or uint like the selector.
+    Value(ConstScalar),
+    Default,
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum UnaryOp {
-    /// Arithmetic negation.
+    /// Arithmetic negation (wrapping for int and uint).
     Neg,
     /// Logical not of a `bool`.
     Not,
+    /// `~`: every bit of an int/uint scalar or vector complemented.
+    BitNot,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -194,7 +232,23 @@ pub enum BinaryOp {
     Div,
     /// Linear-algebra product: matrix×matrix, matrix×vector, vector×matrix.
     MatMul,
-    /// `<`, `>`, `<=`, `>=` on int/float scalars.
+    /// `%` on int/uint (component-wise, scalar broadcasting). Int: the
+    /// remainder of the truncating division (sign of the dividend,
+    /// `i32::MIN % -1` is 0); by zero: 0 (not constant when folding,
+    /// like `/`).
+    Mod,
+    /// `<<`: the left operand's bits shifted; the amount is taken modulo
+    /// 32 (its low 5 bits), so any amount has a defined result (the spec
+    /// leaves amounts below 0 or from 32 on undefined).
+    Shl,
+    /// `>>`: arithmetic (sign-extending) for int, logical for uint; the
+    /// amount modulo 32 as for `Shl`.
+    Shr,
+    /// `&`, `|`, `^` on int/uint of one signedness.
+    BitAnd,
+    BitOr,
+    BitXor,
+    /// `<`, `>`, `<=`, `>=` on int, uint or float scalars.
     Less,
     Greater,
     LessEq,
@@ -291,7 +345,7 @@ pub enum ExprKind {
     Construct {
         args: Vec<Expr>,
     },
-    /// Implicit int→float conversion (GLSL 1.20 §4.1.10) to `ty`.
+    /// Implicit int→float or uint→float conversion (§4.1.10) to `ty`.
     Convert {
         operand: Box<Expr>,
     },
@@ -394,6 +448,14 @@ pub fn for_each_block_expr<'a>(block: &'a [Stmt], f: &mut impl FnMut(&'a Expr)) 
                 for_each_block_expr(body, f);
                 for_each_block_expr(continuing, f);
             }
+            Stmt::Switch {
+                selector, cases, ..
+            } => {
+                f(selector);
+                for c in cases {
+                    for_each_block_expr(&c.body, f);
+                }
+            }
             Stmt::Declare { init: None, .. }
             | Stmt::Return(None, _)
             | Stmt::Break(_)
@@ -422,6 +484,14 @@ pub fn for_each_block_expr_mut(block: &mut [Stmt], f: &mut impl FnMut(&mut Expr)
             } => {
                 for_each_block_expr_mut(body, f);
                 for_each_block_expr_mut(continuing, f);
+            }
+            Stmt::Switch {
+                selector, cases, ..
+            } => {
+                f(selector);
+                for c in cases.iter_mut() {
+                    for_each_block_expr_mut(&mut c.body, f);
+                }
             }
             Stmt::Declare { init: None, .. }
             | Stmt::Return(None, _)

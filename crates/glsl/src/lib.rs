@@ -25,9 +25,15 @@
 //!
 //! ## Limitations
 //! - GLSL ES is rejected. `#version 130` to `330` are accepted and read
-//!   with the GLSL 1.20 language plus what [`lang::Feature`] lists; the
-//!   rest of those versions (their types, qualifiers, blocks and built-ins)
-//!   is being added, and a construct not yet there is a compile error.
+//!   with the GLSL 1.20 language plus what [`lang::Feature`] lists: so far
+//!   `uint`/`uvec*` with the `u` suffix and the int/uint→float implicit
+//!   conversions, the integer operators (`%`, shifts, bitwise) and
+//!   `switch`. The rest of those versions (their qualifiers, blocks and
+//!   built-ins) is being added, and a construct not yet there is a compile
+//!   error.
+//! - Integer operations the spec leaves undefined have the executor's
+//!   defined results when folded ([`consteval`]): shift amounts modulo 32,
+//!   `i32::MIN % -1` is 0; division and `%` by zero are not constant.
 //! - Extensions: those of [`lang::Extension`]; others are accepted by
 //!   `#extension` only with `warn`/`disable`.
 

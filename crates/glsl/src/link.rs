@@ -232,6 +232,14 @@ fn collect_calls(b: &Block, out: &mut BTreeSet<FunctionId>) {
                 collect_calls(body, out);
                 collect_calls(continuing, out);
             }
+            Stmt::Switch {
+                selector, cases, ..
+            } => {
+                expr(selector, out);
+                for c in cases {
+                    collect_calls(&c.body, out);
+                }
+            }
             other => ir::for_each_block_expr(std::slice::from_ref(other), &mut |e| expr(e, out)),
         }
     }

@@ -413,6 +413,8 @@ pub enum TokenKind {
     /// that do not fit 32 bits were reported by the preprocessor and are
     /// truncated here.
     IntLiteral(u32),
+    /// An integer literal with the `u`/`U` suffix (GLSL 1.30 on).
+    UintLiteral(u32),
     FloatLiteral(f32),
     /// A string literal, without its quotes (GL_SHADERBOX_debug_printf only).
     StringLiteral(SmolStr),
@@ -435,6 +437,7 @@ impl TokenKind {
             TokenKind::Identifier(s) | TokenKind::Reserved(s) => format!("`{s}'"),
             TokenKind::Keyword(k) => format!("`{}'", k.as_str()),
             TokenKind::IntLiteral(v) => format!("integer `{v}'"),
+            TokenKind::UintLiteral(v) => format!("unsigned integer `{v}u'"),
             TokenKind::FloatLiteral(v) => format!("float `{v}'"),
             TokenKind::StringLiteral(s) => format!("string \"{s}\""),
             TokenKind::Punct(p) => format!("`{}'", p.as_str()),

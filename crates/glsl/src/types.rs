@@ -1,4 +1,4 @@
-//! GLSL 1.10/1.20 types.
+//! GLSL types (1.10 to 3.30).
 //!
 //! [`Type`] is a small `Copy` value: GLSL 1.20 has no arrays of arrays, so a
 //! type is a [`Base`] plus an optional array size. Struct types are
@@ -13,6 +13,8 @@ use std::fmt;
 pub enum Scalar {
     Float,
     Int,
+    /// `uint` (GLSL 1.30 §4.1.3): 32 bits, arithmetic modulo 2^32.
+    Uint,
     Bool,
 }
 
@@ -21,6 +23,7 @@ impl Scalar {
         match self {
             Scalar::Float => "float",
             Scalar::Int => "int",
+            Scalar::Uint => "uint",
             Scalar::Bool => "bool",
         }
     }
@@ -92,6 +95,7 @@ impl Type {
     pub const VOID: Type = Type::new(Base::Void);
     pub const FLOAT: Type = Type::new(Base::Scalar(Scalar::Float));
     pub const INT: Type = Type::new(Base::Scalar(Scalar::Int));
+    pub const UINT: Type = Type::new(Base::Scalar(Scalar::Uint));
     pub const BOOL: Type = Type::new(Base::Scalar(Scalar::Bool));
     pub const ERROR: Type = Type::new(Base::Error);
 
@@ -232,6 +236,7 @@ impl fmt::Display for TypeDisplay<'_> {
                 let p = match s {
                     Scalar::Float => "",
                     Scalar::Int => "i",
+                    Scalar::Uint => "u",
                     Scalar::Bool => "b",
                 };
                 write!(f, "{p}vec{n}")?
@@ -281,5 +286,10 @@ mod tests {
                 .to_string(),
             "ivec3[4]"
         );
+        assert_eq!(
+            Type::vec(Scalar::Uint, 2).display(&none).to_string(),
+            "uvec2"
+        );
+        assert_eq!(Type::UINT.display(&none).to_string(), "uint");
     }
 }

@@ -7,7 +7,10 @@
 //! compile with a message asking for a bug report) instead of a panic.
 
 use crate::diag::{Code, Diagnostic};
-use crate::ir::{BinaryOp, Block, Expr, ExprKind, Function, Module, ParamQualifier, Stmt};
+use crate::ir::{
+    BinaryOp, Block, CaseLabel, ConstScalar, Expr, ExprKind, Function, Module, ParamQualifier,
+    Stmt, UnaryOp,
+};
 use crate::source::Span;
 use crate::types::{Base, Scalar, Type};
 
@@ -18,6 +21,7 @@ pub fn validate(m: &Module) -> Vec<Diagnostic> {
         func: None,
         diags: Vec::new(),
         loop_depth: 0,
+        switch_depth: 0,
     };
     for g in &m.globals {
         if g.ty.is_error() || g.ty.base == Base::Void {
@@ -46,6 +50,7 @@ struct Validator<'a> {
     func: Option<&'a Function>,
     diags: Vec<Diagnostic>,
     loop_depth: u32,
+    switch_depth: u32,
 }
 
 impl Validator<'_> {
@@ -104,9 +109,53 @@ impl Validator<'_> {
                 self.block(continuing);
                 self.loop_depth -= 1;
             }
-            Stmt::Break(span) | Stmt::Continue(span) => {
+            Stmt::Switch {
+                selector,
+                cases,
+                span,
+            } => {
+                self.expr(selector);
+                let int = match selector.ty {
+                    Type::INT => Some(false),
+                    Type::UINT => Some(true),
+                    _ => None,
+                };
+                let mut seen = Vec::new();
+                let mut defaults = 0;
+                for c in cases {
+                    for l in &c.labels {
+                        let ok = match (l, int) {
+                            (CaseLabel::Default, _) => {
+                                defaults += 1;
+                                defaults == 1
+                            }
+                            (CaseLabel::Value(v @ ConstScalar::Int(_)), Some(false))
+                            | (CaseLabel::Value(v @ ConstScalar::Uint(_)), Some(true)) => {
+                                let fresh = !seen.contains(v);
+                                seen.push(*v);
+                                fresh
+                            }
+                            _ => false,
+                        };
+                        if !ok {
+                            self.fail(*span, "malformed switch labels");
+                        }
+                    }
+                }
+                self.switch_depth += 1;
+                for c in cases {
+                    self.block(&c.body);
+                }
+                self.switch_depth -= 1;
+            }
+            Stmt::Break(span) => {
+                if self.loop_depth == 0 && self.switch_depth == 0 {
+                    self.fail(*span, "`break' outside a loop or switch");
+                }
+            }
+            Stmt::Continue(span) => {
                 if self.loop_depth == 0 {
-                    self.fail(*span, "`break' or `continue' outside a loop");
+                    self.fail(*span, "`continue' outside a loop");
                 }
             }
             Stmt::Return(value, span) => {
@@ -151,8 +200,8 @@ impl Validator<'_> {
             ExprKind::Index { base, index } => {
                 self.expr(base);
                 self.expr(index);
-                if index.ty != Type::INT {
-                    self.fail(index.span, "index is not an int");
+                if index.ty != Type::INT && index.ty != Type::UINT {
+                    self.fail(index.span, "index is not an int or uint");
                 }
             }
             ExprKind::Swizzle {
@@ -185,7 +234,23 @@ impl Validator<'_> {
                     self.fail(e.span, "member of a non-struct or out of range");
                 }
             }
-            ExprKind::Unary { operand, .. } => self.expr(operand),
+            ExprKind::Unary { op, operand } => {
+                self.expr(operand);
+                let s = operand.ty.scalar();
+                let ok = operand.ty == e.ty
+                    && match op {
+                        UnaryOp::Neg => {
+                            matches!(s, Some(Scalar::Float | Scalar::Int | Scalar::Uint))
+                        }
+                        UnaryOp::Not => operand.ty == Type::BOOL,
+                        UnaryOp::BitNot => {
+                            matches!(s, Some(Scalar::Int | Scalar::Uint)) && !operand.ty.is_matrix()
+                        }
+                    };
+                if !ok {
+                    self.fail(e.span, format!("malformed unary operation {op:?}"));
+                }
+            }
             ExprKind::Binary { op, left, right } => {
                 self.expr(left);
                 self.expr(right);
@@ -255,11 +320,11 @@ impl Validator<'_> {
             }
             ExprKind::Convert { operand } => {
                 self.expr(operand);
-                let ok = operand.ty.scalar() == Some(Scalar::Int)
+                let ok = matches!(operand.ty.scalar(), Some(Scalar::Int | Scalar::Uint))
                     && e.ty.scalar() == Some(Scalar::Float)
                     && operand.ty.vector_size() == e.ty.vector_size();
                 if !ok {
-                    self.fail(e.span, "conversion other than int to float");
+                    self.fail(e.span, "conversion other than int or uint to float");
                 }
             }
             ExprKind::Comma { left, right } => {
@@ -285,7 +350,22 @@ impl Validator<'_> {
                     && r.ty.scalar() == Some(Scalar::Float)
             }
             Less | Greater | LessEq | GreaterEq => {
-                l.ty == r.ty && (l.ty == Type::INT || l.ty == Type::FLOAT) && e.ty == Type::BOOL
+                l.ty == r.ty
+                    && (l.ty == Type::INT || l.ty == Type::UINT || l.ty == Type::FLOAT)
+                    && e.ty == Type::BOOL
+            }
+            Mod | BitAnd | BitOr | BitXor => {
+                let (ls, rs) = (int_kind(l.ty), int_kind(r.ty));
+                ls.is_some()
+                    && ls == rs
+                    && (l.ty == r.ty || l.ty.is_scalar() || r.ty.is_scalar())
+                    && e.ty == if l.ty.is_scalar() { r.ty } else { l.ty }
+            }
+            Shl | Shr => {
+                int_kind(l.ty).is_some()
+                    && int_kind(r.ty).is_some()
+                    && (r.ty.is_scalar() || r.ty.vector_size() == l.ty.vector_size())
+                    && e.ty == l.ty
             }
             Equal | NotEqual => same_shape(l.ty, r.ty) && e.ty == Type::BOOL,
             LogicalAnd | LogicalOr | LogicalXor => {
@@ -318,6 +398,16 @@ impl Validator<'_> {
         if !ok {
             self.fail(e.span, "assignment target is not an l-value");
         }
+    }
+}
+
+/// The scalar kind of an int/uint scalar or vector.
+fn int_kind(t: Type) -> Option<Scalar> {
+    match (t.array, t.base) {
+        (None, Base::Scalar(s) | Base::Vector(s, _)) if matches!(s, Scalar::Int | Scalar::Uint) => {
+            Some(s)
+        }
+        _ => None,
     }
 }
 

@@ -295,7 +295,7 @@ impl<'m> Lowerer<'m> {
                     .collect())
             }
             B::LessThan | B::LessThanEqual | B::GreaterThan | B::GreaterThanEqual => {
-                let float = kind_of(args[0].ty) == Scalar::Float;
+                let kind = kind_of(args[0].ty);
                 let (x, y) = (arg(0)?.clone(), arg(1)?.clone());
                 let (x, y) = if matches!(f, B::GreaterThan | B::GreaterThanEqual) {
                     (y, x)
@@ -303,27 +303,16 @@ impl<'m> Lowerer<'m> {
                     (x, y)
                 };
                 let strict = matches!(f, B::LessThan | B::GreaterThan);
-                self.map(&[&x, &y], |d, v| match (float, strict) {
-                    (true, true) => Op::FLt {
-                        d,
-                        a: v[0],
-                        b: v[1],
-                    },
-                    (true, false) => Op::FLe {
-                        d,
-                        a: v[0],
-                        b: v[1],
-                    },
-                    (false, true) => Op::ILt {
-                        d,
-                        a: v[0],
-                        b: v[1],
-                    },
-                    (false, false) => Op::ILe {
-                        d,
-                        a: v[0],
-                        b: v[1],
-                    },
+                self.map(&[&x, &y], |d, v| {
+                    let (a, b) = (v[0], v[1]);
+                    match (kind, strict) {
+                        (Scalar::Float, true) => Op::FLt { d, a, b },
+                        (Scalar::Float, false) => Op::FLe { d, a, b },
+                        (Scalar::Uint, true) => Op::ULt { d, a, b },
+                        (Scalar::Uint, false) => Op::ULe { d, a, b },
+                        (_, true) => Op::ILt { d, a, b },
+                        (_, false) => Op::ILe { d, a, b },
+                    }
                 })
             }
             B::Equal | B::NotEqual => {

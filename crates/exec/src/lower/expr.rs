@@ -66,6 +66,7 @@ impl<'m> Lowerer<'m> {
                         (UnaryOp::Neg, Scalar::Float) => Op::FNeg { d, a },
                         (UnaryOp::Neg, _) => Op::INeg { d, a },
                         (UnaryOp::Not, _) => Op::Not { d, a },
+                        (UnaryOp::BitNot, _) => Op::BitNot { d, a },
                     })?;
                 }
                 Ok(out)
@@ -154,28 +155,24 @@ impl<'m> Lowerer<'m> {
         }
     }
 
-    /// Converts one scalar register (GLSL 1.20 §5.4.1).
+    /// Converts one scalar register (GLSL 1.30 §5.4.1; int ↔ uint keep
+    /// the bits).
     fn convert(&mut self, a: Reg, from: Scalar, to: Scalar) -> R<Reg> {
-        let op = match (from, to) {
-            (Scalar::Float, Scalar::Float)
-            | (Scalar::Int, Scalar::Int)
-            | (Scalar::Bool, Scalar::Bool)
-            | (Scalar::Bool, Scalar::Int) => return Ok(a),
-            (Scalar::Float, Scalar::Int) => Op::FToI { d: 0, a },
-            (Scalar::Float, Scalar::Bool) => Op::FToB { d: 0, a },
-            (Scalar::Int, Scalar::Float) => Op::IToF { d: 0, a },
-            (Scalar::Int, Scalar::Bool) => Op::IToB { d: 0, a },
-            (Scalar::Bool, Scalar::Float) => Op::BToF { d: 0, a },
+        use Scalar::*;
+        let op: fn(Reg, Reg) -> Op = match (from, to) {
+            (Float, Float) | (Int | Uint, Int | Uint) | (Bool, Bool) | (Bool, Int | Uint) => {
+                return Ok(a)
+            }
+            (Float, Int) => |d, a| Op::FToI { d, a },
+            (Float, Uint) => |d, a| Op::FToU { d, a },
+            (Float, Bool) => |d, a| Op::FToB { d, a },
+            (Int, Float) => |d, a| Op::IToF { d, a },
+            (Uint, Float) => |d, a| Op::UToF { d, a },
+            (Int | Uint, Bool) => |d, a| Op::IToB { d, a },
+            (Bool, Float) => |d, a| Op::BToF { d, a },
         };
         let d = self.temp()?;
-        self.emit(match op {
-            Op::FToI { a, .. } => Op::FToI { d, a },
-            Op::FToB { a, .. } => Op::FToB { d, a },
-            Op::IToF { a, .. } => Op::IToF { d, a },
-            Op::IToB { a, .. } => Op::IToB { d, a },
-            Op::BToF { a, .. } => Op::BToF { d, a },
-            other => other,
-        })?;
+        self.emit(op(d, a))?;
         Ok(d)
     }
 
@@ -210,7 +207,16 @@ impl<'m> Lowerer<'m> {
                 (BinaryOp::Add, _) => Op::IAdd { d, a: x, b: y },
                 (BinaryOp::Sub, _) => Op::ISub { d, a: x, b: y },
                 (BinaryOp::Mul, _) => Op::IMul { d, a: x, b: y },
+                (BinaryOp::Div, Scalar::Uint) => Op::UDiv { d, a: x, b: y },
                 (BinaryOp::Div, _) => Op::IDiv { d, a: x, b: y },
+                (BinaryOp::Mod, Scalar::Uint) => Op::UMod { d, a: x, b: y },
+                (BinaryOp::Mod, _) => Op::IMod { d, a: x, b: y },
+                (BinaryOp::Shl, _) => Op::Shl { d, a: x, b: y },
+                (BinaryOp::Shr, Scalar::Uint) => Op::ShrU { d, a: x, b: y },
+                (BinaryOp::Shr, _) => Op::ShrS { d, a: x, b: y },
+                (BinaryOp::BitAnd, _) => Op::BitAnd { d, a: x, b: y },
+                (BinaryOp::BitOr, _) => Op::BitOr { d, a: x, b: y },
+                (BinaryOp::BitXor, _) => Op::BitXor { d, a: x, b: y },
                 _ => return unsupported(format!("{op:?} is not arithmetic")),
             })?;
         }
@@ -315,22 +321,33 @@ impl<'m> Lowerer<'m> {
             _ => unsupported("comparison operand without a value"),
         };
         match op {
-            BinaryOp::Add | BinaryOp::Sub | BinaryOp::Mul | BinaryOp::Div | BinaryOp::MatMul => {
-                self.arith(op, a, left.ty, b, right.ty, ty)
-            }
+            BinaryOp::Add
+            | BinaryOp::Sub
+            | BinaryOp::Mul
+            | BinaryOp::Div
+            | BinaryOp::MatMul
+            | BinaryOp::Mod
+            | BinaryOp::Shl
+            | BinaryOp::Shr
+            | BinaryOp::BitAnd
+            | BinaryOp::BitOr
+            | BinaryOp::BitXor => self.arith(op, a, left.ty, b, right.ty, ty),
             BinaryOp::Less | BinaryOp::Greater | BinaryOp::LessEq | BinaryOp::GreaterEq => {
                 let (x, y) = two(scalar(a), scalar(b))?;
                 let d = self.temp()?;
-                let float = kind_of(left.ty) == Scalar::Float;
-                self.emit(match (op, float) {
-                    (BinaryOp::Less, true) => Op::FLt { d, a: x, b: y },
-                    (BinaryOp::Greater, true) => Op::FLt { d, a: y, b: x },
-                    (BinaryOp::LessEq, true) => Op::FLe { d, a: x, b: y },
-                    (_, true) => Op::FLe { d, a: y, b: x },
-                    (BinaryOp::Less, false) => Op::ILt { d, a: x, b: y },
-                    (BinaryOp::Greater, false) => Op::ILt { d, a: y, b: x },
-                    (BinaryOp::LessEq, false) => Op::ILe { d, a: x, b: y },
-                    (_, false) => Op::ILe { d, a: y, b: x },
+                // `a > b` is `b < a`, `a >= b` is `b <= a`.
+                let (a, b) = match op {
+                    BinaryOp::Less | BinaryOp::LessEq => (x, y),
+                    _ => (y, x),
+                };
+                let strict = matches!(op, BinaryOp::Less | BinaryOp::Greater);
+                self.emit(match (kind_of(left.ty), strict) {
+                    (Scalar::Float, true) => Op::FLt { d, a, b },
+                    (Scalar::Float, false) => Op::FLe { d, a, b },
+                    (Scalar::Uint, true) => Op::ULt { d, a, b },
+                    (Scalar::Uint, false) => Op::ULe { d, a, b },
+                    (_, true) => Op::ILt { d, a, b },
+                    (_, false) => Op::ILe { d, a, b },
                 })?;
                 Ok(vec![d])
             }

@@ -28,6 +28,10 @@
 //!   `return` and `discard` remove the active lanes from the slots between
 //!   the statement and the construct they leave, so when the construct
 //!   restores its saved mask those lanes stay off.
+//! - `switch`: each lane's starting case is computed as an index (a chain
+//!   of selects over the labels); case `i` runs on the lanes of the
+//!   switch's running mask whose index is at most `i`, so lanes fall
+//!   through until `break` removes them from the running mask.
 //! - `&&`, `||` and `?:` whose later operands have side effects run those
 //!   operands under a narrowed mask; pure ones are computed on every lane
 //!   and selected.
@@ -98,6 +102,10 @@ enum CtxKind {
     If,
     LoopEntry,
     LoopRun,
+    /// The lanes that entered a switch (restored after it).
+    SwitchEntry,
+    /// The lanes still running a switch's cases (`break` leaves it).
+    SwitchRun,
     Function,
 }
 
@@ -316,6 +324,7 @@ fn const_bits(c: ConstScalar) -> u32 {
     match c {
         ConstScalar::Float(f) => glsl::math::flush_denormal(f).to_bits(),
         ConstScalar::Int(i) => i as u32,
+        ConstScalar::Uint(u) => u,
         ConstScalar::Bool(b) => b as u32,
     }
 }

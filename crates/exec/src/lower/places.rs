@@ -70,6 +70,11 @@ impl<'m> Lowerer<'m> {
                 let Some(&i) = i.first() else {
                     return unsupported("index without a value");
                 };
+                let i = if index.ty.scalar() == Some(glsl::types::Scalar::Uint) {
+                    self.uint_index(i)?
+                } else {
+                    i
+                };
                 self.index_dynamic(p, i)
             }
             ExprKind::Member { base, index } => {
@@ -173,6 +178,28 @@ impl<'m> Lowerer<'m> {
         p.off += i * stride;
         p.ty = elem;
         Ok(p)
+    }
+
+    /// A uint index as an int one for [`Op::ClampIdx`] (which reads it
+    /// signed): values from 2^31 on become `i32::MAX`, so they too select
+    /// the last element.
+    fn uint_index(&mut self, i: Reg) -> R<Reg> {
+        let limit = self.konst(0x8000_0000)?;
+        let small = self.temp()?;
+        self.emit(Op::ULt {
+            d: small,
+            a: i,
+            b: limit,
+        })?;
+        let largest = self.konst(i32::MAX as u32)?;
+        let d = self.temp()?;
+        self.emit(Op::Select {
+            d,
+            c: small,
+            a: i,
+            b: largest,
+        })?;
+        Ok(d)
     }
 
     fn index_dynamic(&mut self, mut p: Place, i: Reg) -> R<Place> {

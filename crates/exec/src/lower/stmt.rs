@@ -1,12 +1,12 @@
 //! Statements and structured control flow: blocks, `if` (constant
-//! conditions lowered to the taken branch), loops, `break`, `continue`,
+//! conditions lowered to the taken branch), loops, `switch`, `break`, `continue`,
 //! `return` and `discard` as execution-mask operations on the mask slots of
 //! the enclosing contexts (see the module docs of [`super`]).
 
 use super::visit::const_bool;
-use super::{unsupported, CtxKind, Lowerer, R};
+use super::{const_bits, unsupported, CtxKind, Lowerer, R};
 use crate::program::Op;
-use glsl::ir::{Block, Stmt};
+use glsl::ir::{Block, CaseLabel, Expr, Stmt, SwitchCase};
 
 impl<'m> Lowerer<'m> {
     pub(super) fn block(&mut self, b: &Block) -> R<()> {
@@ -132,9 +132,19 @@ impl<'m> Lowerer<'m> {
                 self.emit(Op::RestoreMask { slot: entry })?;
                 false
             }
+            Stmt::Switch {
+                selector,
+                cases,
+                span,
+            } => {
+                self.mark_statement(*span);
+                self.switch(selector, cases)?;
+                false
+            }
             Stmt::Break(span) => {
                 self.mark_statement(*span);
-                let slots = self.kill_list(|k| k == CtxKind::LoopRun, true)?;
+                let slots =
+                    self.kill_list(|k| k == CtxKind::LoopRun || k == CtxKind::SwitchRun, true)?;
                 self.kill(slots, false)?;
                 true
             }
@@ -173,6 +183,75 @@ impl<'m> Lowerer<'m> {
         };
         self.next_reg = mark;
         Ok(ends)
+    }
+
+    /// A switch: per lane the index of the case it starts at (`cases.len()`
+    /// when none), then case `i` under the running mask narrowed to the
+    /// lanes whose index is at most `i` (those that started there or fell
+    /// through; `break` has removed the others from the running mask).
+    fn switch(&mut self, selector: &Expr, cases: &[SwitchCase]) -> R<()> {
+        let v = self.expr(selector)?;
+        // A copy: the cases may write the selector's variable.
+        let v = self.copy(&v[..1.min(v.len())])?;
+        let Some(&sel) = v.first() else {
+            return unsupported("switch selector has no value");
+        };
+        if cases.is_empty() {
+            return Ok(());
+        }
+        let none = cases
+            .iter()
+            .position(|c| c.labels.contains(&CaseLabel::Default))
+            .unwrap_or(cases.len());
+        let mut start = self.konst(none as u32)?;
+        for (i, c) in cases.iter().enumerate() {
+            for l in &c.labels {
+                let CaseLabel::Value(value) = l else {
+                    continue;
+                };
+                let k = self.konst(const_bits(*value))?;
+                let eq = self.temp()?;
+                self.emit(Op::IEq {
+                    d: eq,
+                    a: sel,
+                    b: k,
+                })?;
+                let here = self.konst(i as u32)?;
+                let next = self.temp()?;
+                self.emit(Op::Select {
+                    d: next,
+                    c: eq,
+                    a: here,
+                    b: start,
+                })?;
+                start = next;
+            }
+        }
+        let entry = self.new_slot();
+        self.emit(Op::SaveMask { slot: entry })?;
+        self.ctx.push((CtxKind::SwitchEntry, entry));
+        let run = self.new_slot();
+        self.emit(Op::SaveMask { slot: run })?;
+        self.ctx.push((CtxKind::SwitchRun, run));
+        for (i, c) in cases.iter().enumerate() {
+            self.emit(Op::RestoreMask { slot: run })?;
+            let here = self.konst(i as u32)?;
+            let reached = self.temp()?;
+            self.emit(Op::ULe {
+                d: reached,
+                a: start,
+                b: here,
+            })?;
+            self.emit(Op::AndMask { c: reached })?;
+            let skip = self.pc();
+            self.emit(Op::JumpIfNone { target: 0 })?;
+            self.block(&c.body)?;
+            let end = self.pc();
+            self.patch(skip, end);
+        }
+        self.ctx.pop();
+        self.ctx.pop();
+        self.emit(Op::RestoreMask { slot: entry })
     }
 
     /// The mask slots from the innermost context out to the first one for

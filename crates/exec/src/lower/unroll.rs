@@ -44,6 +44,9 @@ fn leaves_loop(b: &[Stmt]) -> bool {
         Stmt::Break(_) | Stmt::Continue(_) => true,
         Stmt::Block(b) => leaves_loop(b),
         Stmt::If { then, else_, .. } => leaves_loop(then) || leaves_loop(else_),
+        // (A `break` there leaves only the switch: counted anyway, which
+        // only forgoes unrolling.)
+        Stmt::Switch { cases, .. } => cases.iter().any(|c| leaves_loop(&c.body)),
         _ => false,
     })
 }

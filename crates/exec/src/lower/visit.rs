@@ -65,6 +65,14 @@ fn visit_block_with(b: &[Stmt], live_only: bool, f: &mut dyn FnMut(&Expr)) {
                 visit_block_with(body, live_only, f);
                 visit_block_with(continuing, live_only, f);
             }
+            Stmt::Switch {
+                selector, cases, ..
+            } => {
+                visit_expr(selector, f);
+                for c in cases {
+                    visit_block_with(&c.body, live_only, f);
+                }
+            }
             _ => {}
         }
     }

@@ -91,6 +91,7 @@ fn bits(c: &ConstScalar) -> u32 {
     match c {
         ConstScalar::Float(f) => f.to_bits(),
         ConstScalar::Int(i) => *i as u32,
+        ConstScalar::Uint(u) => *u,
         ConstScalar::Bool(b) => *b as u32,
     }
 }
@@ -99,6 +100,7 @@ fn as_float(c: &ConstScalar) -> f32 {
     match c {
         ConstScalar::Float(f) => *f,
         ConstScalar::Int(i) => *i as f32,
+        ConstScalar::Uint(u) => *u as f32,
         ConstScalar::Bool(b) => *b as u8 as f32,
     }
 }

@@ -122,7 +122,7 @@ fn random_op(r: &mut Rng, i: u32, n: u32) -> Op {
     let (d, a, b, c) = (r.f(), r.f(), r.f(), r.f());
     let (id, ia, ib, ic) = (r.i(), r.i(), r.i(), r.i());
     let any = r.reg();
-    match r.below(48) {
+    match r.below(61) {
         // Float constants are flushed, as lowering makes them.
         0 => Op::Const {
             d: any,
@@ -289,6 +289,66 @@ fn random_op(r: &mut Rng, i: u32, n: u32) -> Op {
             _ => Op::SyncDiscard { start: 0, end: 2 },
         },
         46 => Op::LoopIter,
+        47 => Op::UDiv {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        48 => Op::IMod {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        49 => Op::UMod {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        50 => Op::ULt {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        51 => Op::ULe {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        52 => Op::Shl {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        53 => Op::ShrS {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        54 => Op::ShrU {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        55 => Op::BitAnd {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        56 => Op::BitOr {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        57 => Op::BitXor {
+            d: id,
+            a: ia,
+            b: ib,
+        },
+        58 => Op::BitNot { d: id, a: ia },
+        59 => match r.below(2) {
+            0 => Op::FToU { d: id, a },
+            _ => Op::UToF { d, a: ia },
+        },
         _ => {
             // Forward jumps only: every program ends.
             let target = (i + 1 + r.below(8)).min(n);

@@ -329,6 +329,7 @@ fn equality(args: &[ConstValue], want_equal: bool) -> Option<Vec<ConstScalar>> {
     let eq = |a: &ConstScalar, b: &ConstScalar| match (a, b) {
         (ConstScalar::Float(p), ConstScalar::Float(q)) => Some(p == q),
         (ConstScalar::Int(p), ConstScalar::Int(q)) => Some(p == q),
+        (ConstScalar::Uint(p), ConstScalar::Uint(q)) => Some(p == q),
         (ConstScalar::Bool(p), ConstScalar::Bool(q)) => Some(p == q),
         _ => None,
     };

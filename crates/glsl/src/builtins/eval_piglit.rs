@@ -38,6 +38,7 @@ fn parse_value(text: &str) -> Option<ConstValue> {
     let ty = match s {
         ConstScalar::Float(_) => Type::FLOAT,
         ConstScalar::Int(_) => Type::INT,
+        ConstScalar::Uint(_) => Type::UINT,
         ConstScalar::Bool(_) => Type::BOOL,
     };
     Some(ConstValue {

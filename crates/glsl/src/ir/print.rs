@@ -75,8 +75,8 @@
 //!   comments or whitespace of the source do.
 
 use super::{
-    BinaryOp, ConstScalar, ConstValue, Expr, ExprKind, IncDec, Module, ParamQualifier, Stmt,
-    Storage, UnaryOp,
+    BinaryOp, CaseLabel, ConstScalar, ConstValue, Expr, ExprKind, IncDec, Module, ParamQualifier,
+    Stmt, Storage, UnaryOp,
 };
 use crate::printf::Piece;
 use crate::types::{Base, Type};
@@ -293,6 +293,25 @@ impl<'a> Printer<'a> {
                     self.block(continuing, depth);
                 }
             }
+            Stmt::Switch {
+                selector, cases, ..
+            } => {
+                w!(self, "switch ({}) {{\n", self.expr_top(selector));
+                for c in cases {
+                    for l in &c.labels {
+                        self.indent(depth);
+                        match l {
+                            CaseLabel::Value(v) => w!(self, "case {}:\n", scalar(*v)),
+                            CaseLabel::Default => self.out.push_str("default:\n"),
+                        }
+                    }
+                    for st in &c.body {
+                        self.stmt(st, depth + 1);
+                    }
+                }
+                self.indent(depth);
+                self.out.push('}');
+            }
             Stmt::Break(_) => self.out.push_str("break;"),
             Stmt::Continue(_) => self.out.push_str("continue;"),
             Stmt::Return(None, _) => self.out.push_str("return;"),
@@ -375,6 +394,7 @@ impl<'a> Printer<'a> {
                 out.push(match op {
                     UnaryOp::Neg => '-',
                     UnaryOp::Not => '!',
+                    UnaryOp::BitNot => '~',
                 });
                 self.expr(operand, out, false);
                 out.push_str(close);
@@ -501,6 +521,7 @@ fn scalar(c: ConstScalar) -> String {
     match c {
         ConstScalar::Float(x) => format!("{x:?}"),
         ConstScalar::Int(i) => i.to_string(),
+        ConstScalar::Uint(u) => format!("{u}u"),
         ConstScalar::Bool(b) => b.to_string(),
     }
 }
@@ -512,6 +533,12 @@ fn binary(op: BinaryOp) -> &'static str {
         BinaryOp::Mul => "*",
         BinaryOp::Div => "/",
         BinaryOp::MatMul => "matmul",
+        BinaryOp::Mod => "%",
+        BinaryOp::Shl => "<<",
+        BinaryOp::Shr => ">>",
+        BinaryOp::BitAnd => "&",
+        BinaryOp::BitOr => "|",
+        BinaryOp::BitXor => "^",
         BinaryOp::Less => "<",
         BinaryOp::Greater => ">",
         BinaryOp::LessEq => "<=",

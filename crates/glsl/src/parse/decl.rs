@@ -23,6 +23,10 @@ pub(super) fn is_type_keyword(k: Keyword) -> bool {
             | Ivec2
             | Ivec3
             | Ivec4
+            | Uint
+            | Uvec2
+            | Uvec3
+            | Uvec4
             | Bvec2
             | Bvec3
             | Bvec4

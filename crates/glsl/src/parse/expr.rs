@@ -280,6 +280,7 @@ impl Parser<'_> {
         let start = self.span();
         let kind = match self.kind() {
             TokenKind::IntLiteral(v) => ExprKind::IntLit(*v),
+            TokenKind::UintLiteral(v) => ExprKind::UintLit(*v),
             TokenKind::FloatLiteral(v) => ExprKind::FloatLit(*v),
             TokenKind::StringLiteral(s) => ExprKind::StringLit(s.clone()),
             TokenKind::Keyword(Keyword::True) => ExprKind::BoolLit(true),

@@ -1,5 +1,6 @@
-//! Statements (GLSL 1.20 §9: `statement`, `compound_statement`,
-//! `selection_statement`, `iteration_statement`, `jump_statement`).
+//! Statements (GLSL 1.30 §9: `statement`, `compound_statement`,
+//! `selection_statement`, `switch_statement`, `case_label`,
+//! `iteration_statement`, `jump_statement`).
 //!
 //! Scopes follow the grammar: a nested `{ }` and the branches of `if` open a
 //! new scope; a function body shares the parameters' scope; `while` and
@@ -65,6 +66,8 @@ impl Parser<'_> {
             TokenKind::Keyword(Keyword::While) => self.while_statement(),
             TokenKind::Keyword(Keyword::Do) => self.do_statement(),
             TokenKind::Keyword(Keyword::For) => self.for_statement(),
+            TokenKind::Keyword(Keyword::Switch) => self.switch_statement(),
+            TokenKind::Keyword(Keyword::Case | Keyword::Default) => self.case_label(),
             TokenKind::Reserved(_) => Err(self.reserved_word()),
             _ => self.simple_statement(),
         }
@@ -145,6 +148,43 @@ impl Parser<'_> {
         };
         Ok(Box::new(Stmt {
             kind: StmtKind::If { cond, then, else_ },
+            span: self.span_from(start),
+        }))
+    }
+
+    /// `switch ( expression ) { switch_statement_list }`; the body is one
+    /// scope (labels are statements of it).
+    fn switch_statement(&mut self) -> PResult<Box<Stmt>> {
+        let start = self.bump().span;
+        self.expect_punct(Punct::LeftParen)?;
+        let selector = *self.expression()?;
+        self.expect_punct(Punct::RightParen)?;
+        if !self.at_punct(Punct::LeftBrace) {
+            return Err(self.unexpected("`{' to open the body of `switch'"));
+        }
+        self.scopes.push();
+        let body = self.compound_body();
+        self.scopes.pop();
+        Ok(Box::new(Stmt {
+            kind: StmtKind::Switch {
+                selector,
+                body: body?,
+            },
+            span: self.span_from(start),
+        }))
+    }
+
+    /// `case expression :` or `default :`.
+    fn case_label(&mut self) -> PResult<Box<Stmt>> {
+        let start = self.span();
+        let kind = if self.bump().kind == TokenKind::Keyword(Keyword::Case) {
+            StmtKind::Case(*self.expression()?)
+        } else {
+            StmtKind::Default
+        };
+        self.expect_punct(Punct::Colon)?;
+        Ok(Box::new(Stmt {
+            kind,
             span: self.span_from(start),
         }))
     }

@@ -57,9 +57,16 @@ pub(crate) fn tokens(src: &str, version: Version) -> Vec<Token> {
     out
 }
 
-/// Converts a number's spelling (decimal, octal, hex, float).
+/// Converts a number's spelling (decimal, octal, hex, float; a `u`
+/// suffix makes an unsigned literal).
 fn number(text: &str) -> TokenKind {
     let lower = text.to_ascii_lowercase();
+    if let Some(digits) = lower.strip_suffix('u').filter(|d| !d.contains(['.', 'e'])) {
+        return match number(digits) {
+            TokenKind::IntLiteral(v) => TokenKind::UintLiteral(v),
+            other => other,
+        };
+    }
     if let Some(hex) = lower.strip_prefix("0x") {
         return TokenKind::IntLiteral(u64::from_str_radix(hex, 16).unwrap_or(0) as u32);
     }
@@ -149,6 +156,7 @@ fn show(e: &Expr) -> String {
     match &e.kind {
         ExprKind::Ident(i) => i.name.to_string(),
         ExprKind::IntLit(v) => v.to_string(),
+        ExprKind::UintLit(v) => format!("{v}u"),
         ExprKind::FloatLit(v) => format!("{v:?}"),
         ExprKind::BoolLit(b) => b.to_string(),
         ExprKind::Unary(op, a) => match op {
@@ -1304,4 +1312,44 @@ fn near_miss_type_names_get_a_hint_and_still_declare() {
     let (tu, d) = run("void main() { vec n = vec3(1.0); }", Version::V110);
     assert!(d.is_empty(), "{d:?}");
     assert_eq!(tu.items.len(), 1);
+}
+
+#[test]
+fn switch_labels_are_statements_of_the_body() {
+    let src = "#version 130\nvoid f(int x) { switch (x + 1) { case 1u: case 2: x = 3; break; default: ; } }";
+    let tu = ok_v(src, Version::V130);
+    let Some(ExternalDecl::FunctionDef(f)) = tu.items.into_iter().next() else {
+        panic!("no function");
+    };
+    let [Stmt {
+        kind: StmtKind::Switch { selector, body },
+        ..
+    }] = f.body.stmts.as_slice()
+    else {
+        panic!("not a switch: {:?}", f.body.stmts);
+    };
+    assert_eq!(show(selector), "(x + 1)");
+    let kinds: Vec<String> = body
+        .stmts
+        .iter()
+        .map(|s| match &s.kind {
+            StmtKind::Case(e) => format!("case {}", show(e)),
+            StmtKind::Default => "default".into(),
+            StmtKind::Break => "break".into(),
+            StmtKind::Expr(None) => ";".into(),
+            StmtKind::Expr(Some(_)) => "expr".into(),
+            other => format!("{other:?}"),
+        })
+        .collect();
+    assert_eq!(
+        kinds,
+        ["case 1u", "case 2", "expr", "break", "default", ";"]
+    );
+    // A label needs its colon; the body its braces.
+    assert!(!errs_v(
+        "void f(int x) { switch (x) { case 1 x = 2; } }",
+        Version::V130
+    )
+    .is_empty());
+    assert!(!errs_v("void f(int x) { switch (x) case 1: ; }", Version::V130).is_empty());
 }

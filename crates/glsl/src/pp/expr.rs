@@ -248,6 +248,7 @@ fn number_value(t: &PTok) -> Result<i64, Diagnostic> {
         Ok(Literal::Int {
             value,
             fits_u64: true,
+            ..
         }) => Ok(value as i64),
         Ok(Literal::Int { .. }) => Err(Diagnostic::error(
             Code::PpSyntax,

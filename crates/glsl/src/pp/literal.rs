@@ -1,7 +1,9 @@
 //! Numeric literals: the spelling of a preprocessing number to its value.
 //!
-//! Integer constants follow GLSL 1.20 §4.1.3 (decimal, octal with a leading
-//! `0`, hexadecimal with `0x`/`0X`; no suffixes). Floating constants follow
+//! Integer constants follow GLSL 1.30 §4.1.3 (decimal, octal with a leading
+//! `0`, hexadecimal with `0x`/`0X`, each with an optional `u`/`U` suffix;
+//! whether the suffix is allowed depends on the version, which the caller
+//! checks). Floating constants follow
 //! §4.1.4: `1.`, `.5`, `1e5`, `1.5e-3`; the `f`/`F` suffix exists only from
 //! GLSL 1.20 on (the 1.10 grammar has no floating-suffix). Values are
 //! converted exactly: integers with checked arithmetic, floats with Rust's
@@ -11,8 +13,12 @@
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Literal {
     /// An integer constant. `value` is exact when `fits_u64`; otherwise it
-    /// holds the low 64 bits.
-    Int { value: u64, fits_u64: bool },
+    /// holds the low 64 bits. `unsigned`: written with the `u`/`U` suffix.
+    Int {
+        value: u64,
+        fits_u64: bool,
+        unsigned: bool,
+    },
     /// A floating constant; `suffix` is true when it ends in `f`/`F`.
     Float { value: f32, suffix: bool },
 }
@@ -21,11 +27,28 @@ pub(crate) enum Literal {
 /// sentence naming the literal.
 pub(crate) fn parse_number(text: &str) -> Result<Literal, String> {
     let bytes = text.as_bytes();
+    // The suffix is not part of the digits: `0x1u` is hexadecimal 1.
+    let (body, unsigned) = match text.strip_suffix(['u', 'U']) {
+        Some(b) => (b, true),
+        None => (text, false),
+    };
+    let with_suffix = |r: Result<Literal, String>| {
+        r.map(|l| match l {
+            Literal::Int {
+                value, fits_u64, ..
+            } => Literal::Int {
+                value,
+                fits_u64,
+                unsigned,
+            },
+            other => other,
+        })
+    };
     if bytes.len() >= 2 && bytes[0] == b'0' && (bytes[1] == b'x' || bytes[1] == b'X') {
-        return parse_hex(text);
+        return with_suffix(parse_hex(body));
     }
-    if bytes.iter().all(u8::is_ascii_digit) {
-        return parse_decimal_or_octal(text);
+    if !body.is_empty() && body.bytes().all(|b| b.is_ascii_digit()) {
+        return with_suffix(parse_decimal_or_octal(body));
     }
     parse_float(text)
 }
@@ -75,7 +98,11 @@ fn accumulate(digits: &str, radix: u32) -> Literal {
             }
         }
     }
-    Literal::Int { value, fits_u64 }
+    Literal::Int {
+        value,
+        fits_u64,
+        unsigned: false,
+    }
 }
 
 /// Validates the §4.1.4 grammar, then converts.
@@ -126,12 +153,6 @@ fn describe_bad_number(text: &str) -> String {
     let has_float_marks = text.contains('.') || text.contains('e') || text.contains('E');
     if !has_float_marks && text.starts_with(|c: char| c.is_ascii_digit()) {
         let suffix: String = text.chars().skip_while(char::is_ascii_digit).collect();
-        if suffix.eq_ignore_ascii_case("u") {
-            return format!(
-                "invalid integer literal `{text}': unsigned integers and the `u' suffix do \
-                 not exist in GLSL 1.10/1.20"
-            );
-        }
         return format!("invalid integer literal `{text}': unexpected `{suffix}' after the digits");
     }
     format!("invalid floating-point literal `{text}'")
@@ -152,6 +173,7 @@ mod tests {
             Ok(Literal::Int {
                 value,
                 fits_u64: true,
+                unsigned: false,
             }) => value,
             other => panic!("{text}: {other:?}"),
         }
@@ -178,9 +200,32 @@ mod tests {
             parse_number("18446744073709551616"),
             Ok(Literal::Int {
                 value: 0,
-                fits_u64: false
+                fits_u64: false,
+                unsigned: false,
             })
         );
+    }
+
+    #[test]
+    fn unsigned_suffix() {
+        let uint = |t: &str| match parse_number(t) {
+            Ok(Literal::Int {
+                value,
+                fits_u64: true,
+                unsigned: true,
+            }) => value,
+            other => panic!("{t}: {other:?}"),
+        };
+        assert_eq!(uint("1u"), 1);
+        assert_eq!(uint("0U"), 0);
+        assert_eq!(uint("017u"), 15);
+        assert_eq!(uint("0xffffffffu"), 0xffff_ffff);
+        assert_eq!(uint("0x1ffffffffU"), 0x1_ffff_ffff);
+        assert!(parse_number("u").is_err());
+        assert!(parse_number("1uu").is_err());
+        assert!(parse_number("0xu").is_err());
+        assert!(parse_number("1.0u").is_err());
+        assert!(parse_number("09u").unwrap_err().contains("octal"));
     }
 
     #[test]
@@ -189,7 +234,6 @@ mod tests {
         assert!(parse_number("0779").unwrap_err().contains("`9'"));
         assert!(parse_number("0xg").unwrap_err().contains("hexadecimal"));
         assert!(parse_number("0x").unwrap_err().contains("hexadecimal"));
-        assert!(parse_number("1u").unwrap_err().contains("`u' suffix"));
         assert!(parse_number("12abc").is_err());
         assert!(parse_number("1f").is_err());
     }

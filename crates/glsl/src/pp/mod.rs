@@ -425,8 +425,46 @@ impl<'m> Preprocessor<'m> {
 
     fn convert_number(&mut self, t: &PTok) -> Option<TokenKind> {
         match parse_number(&t.text) {
-            Ok(Literal::Int { value, fits_u64 }) => {
-                if !fits_u64 || value > u64::from(u32::MAX) {
+            Ok(Literal::Int {
+                value,
+                fits_u64,
+                unsigned,
+            }) => {
+                if unsigned {
+                    if let Err(why) = self.lang.gate(Feature::Unsigned) {
+                        self.diags.push(
+                            Diagnostic::error(
+                                Code::LexBadNumber,
+                                t.span,
+                                format!(
+                                    "invalid integer literal `{}': {}",
+                                    t.text,
+                                    why.message("the `u' suffix", self.lang)
+                                ),
+                            )
+                            .with_note(why.fix()),
+                        );
+                        return None;
+                    }
+                }
+                let too_large = !fits_u64 || value > u64::from(u32::MAX);
+                if too_large && self.lang.allows(Feature::Unsigned) {
+                    // GLSL 1.30 §4.1.3: an error from 1.30 on; 1.10/1.20
+                    // say nothing, so there it stays a warning.
+                    self.diags.push(
+                        Diagnostic::error(
+                            Code::LexBadNumber,
+                            t.span,
+                            format!("integer literal `{}' does not fit in 32 bits", t.text),
+                        )
+                        .with_note(
+                            "an integer literal must fit its type: 32 bits for int (as a bit \
+                             pattern, up to 0xffffffff) and uint (GLSL 1.30 §4.1.3)",
+                        ),
+                    );
+                    return None;
+                }
+                if too_large {
                     self.diags.push(Diagnostic::warning(
                         Code::LexBadNumber,
                         t.span,
@@ -436,7 +474,11 @@ impl<'m> Preprocessor<'m> {
                         ),
                     ));
                 }
-                Some(TokenKind::IntLiteral(value as u32))
+                Some(if unsigned {
+                    TokenKind::UintLiteral(value as u32)
+                } else {
+                    TokenKind::IntLiteral(value as u32)
+                })
             }
             Ok(Literal::Float { value, suffix }) => {
                 if suffix && !self.lang.allows(Feature::FloatSuffix) {

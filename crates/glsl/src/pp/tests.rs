@@ -24,6 +24,7 @@ fn render(out: &PpOutput) -> String {
             TokenKind::Identifier(s) | TokenKind::Reserved(s) => Some(s.to_string()),
             TokenKind::Keyword(k) => Some(k.as_str().to_string()),
             TokenKind::IntLiteral(v) => Some(v.to_string()),
+            TokenKind::UintLiteral(v) => Some(format!("{v}u")),
             TokenKind::FloatLiteral(v) => Some(format!("{v:?}")),
             TokenKind::Punct(p) => Some(p.as_str().to_string()),
             TokenKind::StringLiteral(s) => Some(format!("{s:?}")),

@@ -90,16 +90,25 @@ impl Analyzer {
         if base.ty.is_error() || iv.ty.is_error() {
             return error_expr(span);
         }
-        if iv.ty != Type::INT {
+        if iv.ty != Type::INT && iv.ty != Type::UINT {
+            let what = if self.lang.allows(crate::lang::Feature::Unsigned) {
+                "an int or uint scalar"
+            } else {
+                "an int scalar"
+            };
             self.error(
                 Code::TypeMismatch,
                 i.span,
-                format!("an index must be an int scalar, found {}", self.tn(iv.ty)),
+                format!("an index must be {what}, found {}", self.tn(iv.ty)),
             );
             return error_expr(span);
         }
         let cidx = match &iv.kind {
-            K::Const(c) => const_int(c),
+            // A uint past i32::MAX is as out of range as the largest int.
+            K::Const(c) => match c.components.as_slice() {
+                [ir::ConstScalar::Uint(u)] => Some(i32::try_from(*u).unwrap_or(i32::MAX)),
+                _ => const_int(c),
+            },
             _ => None,
         };
         let t = base.ty;

@@ -7,21 +7,56 @@ use super::{const_expr, error_expr, Analyzer};
 use crate::ast::{self, AssignOp, Callee, ExprKind as A, UnaryOp as AU};
 use crate::diag::Code;
 use crate::ir::{self, BinaryOp as B, ExprKind as K, IncDec};
-use crate::lang::Version;
+use crate::lang::{Feature, Version};
 use crate::limits::MAX_NESTING_DEPTH;
 use crate::source::Span;
 use crate::types::{ArraySize, Base, Scalar, Type};
 
-/// GLSL 1.20 §4.1.10: int → float, ivecN → vecN, nothing else (never for
-/// arrays or structs as wholes).
+/// §4.1.10 of GLSL 1.20 to 3.30: int or uint → float, ivecN or uvecN →
+/// vecN, nothing else (never int ↔ uint, never for arrays or structs as
+/// wholes). uint exists only from 1.30 on, so one table serves every
+/// version; 1.10 has no implicit conversions at all (see `coerce`).
 pub(crate) fn implicitly_converts(from: Type, to: Type) -> bool {
     if from.is_array() || to.is_array() {
         return false;
     }
     match (from.base, to.base) {
-        (Base::Scalar(Scalar::Int), Base::Scalar(Scalar::Float)) => true,
-        (Base::Vector(Scalar::Int, n), Base::Vector(Scalar::Float, m)) => n == m,
+        (Base::Scalar(Scalar::Int | Scalar::Uint), Base::Scalar(Scalar::Float)) => true,
+        (Base::Vector(Scalar::Int | Scalar::Uint, n), Base::Vector(Scalar::Float, m)) => n == m,
         _ => false,
+    }
+}
+
+/// The scalar kind of an int or uint scalar or vector (the operands of the
+/// integer operators, GLSL 1.30 §5.9).
+fn int_kind(t: Type) -> Option<Scalar> {
+    match (t.array, t.base) {
+        (None, Base::Scalar(s) | Base::Vector(s, _)) if matches!(s, Scalar::Int | Scalar::Uint) => {
+            Some(s)
+        }
+        _ => None,
+    }
+}
+
+/// The result type of `%`, `&`, `|`, `^` (§5.9: one signedness, vectors of
+/// one size, a scalar applied to every component) or of a shift (any
+/// signedness, the left operand's type; a scalar left operand needs a
+/// scalar amount, a vector one a scalar or a vector of its size).
+fn int_op_type(shift: bool, l: Type, r: Type) -> Option<Type> {
+    let (ls, rs) = (int_kind(l)?, int_kind(r)?);
+    if shift {
+        let ok = r.is_scalar() || (l.is_vector() && r.vector_size() == l.vector_size());
+        return ok.then_some(l);
+    }
+    if ls != rs {
+        return None;
+    }
+    if l.is_scalar() {
+        Some(r)
+    } else if r.is_scalar() || l == r {
+        Some(l)
+    } else {
+        None
     }
 }
 
@@ -29,9 +64,9 @@ pub(super) fn mk(kind: K, ty: Type, span: Span) -> ir::Expr {
     ir::Expr { kind, ty, span }
 }
 
-/// True for int/float scalars, vectors and matrices (not arrays).
+/// True for int/uint/float scalars, vectors and matrices (not arrays).
 fn is_numeric(t: Type) -> bool {
-    matches!(t.scalar(), Some(Scalar::Int | Scalar::Float))
+    matches!(t.scalar(), Some(Scalar::Int | Scalar::Uint | Scalar::Float))
 }
 
 impl Analyzer {
@@ -83,6 +118,13 @@ impl Analyzer {
                 ir::ConstValue {
                     ty: Type::INT,
                     components: vec![ir::ConstScalar::Int(*v as i32)],
+                },
+                span,
+            ),
+            A::UintLit(v) => const_expr(
+                ir::ConstValue {
+                    ty: Type::UINT,
+                    components: vec![ir::ConstScalar::Uint(*v)],
                 },
                 span,
             ),
@@ -241,17 +283,18 @@ impl Analyzer {
         error_expr(span)
     }
 
-    /// GLSL 1.20: converts the int side of a mixed int/float pair to float.
+    /// GLSL 1.20 on: converts the int (or uint) side of a mixed pair with
+    /// float to float.
     pub(super) fn balance(&mut self, l: ir::Expr, r: ir::Expr) -> (ir::Expr, ir::Expr) {
         if self.lang.version < Version::V120 || l.ty.is_array() || r.ty.is_array() {
             return (l, r);
         }
         match (l.ty.scalar(), r.ty.scalar()) {
-            (Some(Scalar::Int), Some(Scalar::Float)) => {
+            (Some(Scalar::Int | Scalar::Uint), Some(Scalar::Float)) => {
                 let to = l.ty.with_scalar(Scalar::Float);
                 (self.convert(l, to), r)
             }
-            (Some(Scalar::Float), Some(Scalar::Int)) => {
+            (Some(Scalar::Float), Some(Scalar::Int | Scalar::Uint)) => {
                 let to = r.ty.with_scalar(Scalar::Float);
                 (l, self.convert(r, to))
             }
@@ -259,17 +302,68 @@ impl Analyzer {
         }
     }
 
-    pub(super) fn reserved_op(&mut self, op: &str, span: Span) {
-        self.error(
+    /// Whether the integer operators exist (GLSL 1.30 on; reserved
+    /// before); reports `op` when they do not.
+    pub(super) fn integer_ops_allowed(&mut self, op: &str, span: Span) -> bool {
+        let Err(why) = self.lang.gate(Feature::IntegerOperators) else {
+            return true;
+        };
+        let lang = self.lang;
+        let d = self.error(
             Code::ReservedWord,
             span,
-            format!(
-                "operator `{op}' is reserved in GLSL {}",
-                self.lang.version.dotted()
-            ),
-        )
-        .notes
-        .push("integer bit operations and `%' arrive in GLSL 1.30; use mod() for floats".into());
+            why.message(&format!("operator `{op}'"), lang),
+        );
+        d.notes.push(why.fix());
+        if op.starts_with('%') {
+            d.notes.push("for floats, use mod()".into());
+        }
+        false
+    }
+
+    /// `%`, `<<`, `>>`, `&`, `|`, `^` on analyzed operands (no implicit
+    /// conversions apply, §5.9).
+    fn integer_binary(
+        &mut self,
+        op: ast::BinaryOp,
+        lv: ir::Expr,
+        rv: ir::Expr,
+        span: Span,
+    ) -> ir::Expr {
+        use ast::BinaryOp as O;
+        let shift = matches!(op, O::Shl | O::Shr);
+        let Some(ty) = int_op_type(shift, lv.ty, rv.ty) else {
+            let (l, r) = (self.tn(lv.ty), self.tn(rv.ty));
+            let expected = if shift {
+                "it needs int or uint scalars or vectors, and a scalar amount for a scalar"
+            } else {
+                "it needs int or uint scalars or vectors of one signedness and of matching sizes"
+            };
+            let d = self.error(
+                Code::TypeMismatch,
+                span,
+                format!(
+                    "operator `{}' cannot take {l} and {r}; {expected}",
+                    op.as_str()
+                ),
+            );
+            if !shift && int_kind(lv.ty).is_some() && int_kind(rv.ty).is_some() {
+                d.notes.push(
+                    "int and uint do not convert implicitly: write a `u' suffix or uint(...)"
+                        .into(),
+                );
+            }
+            return error_expr(span);
+        };
+        self.fold(mk(
+            K::Binary {
+                op: integer_ir_op(op),
+                left: Box::new(lv),
+                right: Box::new(rv),
+            },
+            ty,
+            span,
+        ))
     }
 
     pub(super) fn unary(&mut self, op: AU, x: &ast::Expr, span: Span) -> ir::Expr {
@@ -284,7 +378,7 @@ impl Analyzer {
                         Code::TypeMismatch,
                         span,
                         format!(
-                            "`++'/`--' need an int or float operand, found {}",
+                            "`++'/`--' need an int, uint or float operand, found {}",
                             self.tn(t.ty)
                         ),
                     );
@@ -307,9 +401,30 @@ impl Analyzer {
                 )
             }
             AU::BitNot => {
-                let _ = self.rvalue(x);
-                self.reserved_op("~", span);
-                error_expr(span)
+                let v = self.rvalue(x);
+                if !self.integer_ops_allowed("~", span) || v.ty.is_error() {
+                    return error_expr(span);
+                }
+                if int_kind(v.ty).is_none() {
+                    self.error(
+                        Code::TypeMismatch,
+                        span,
+                        format!(
+                            "`~' needs an int or uint scalar or vector, found {}",
+                            self.tn(v.ty)
+                        ),
+                    );
+                    return error_expr(span);
+                }
+                let ty = v.ty;
+                self.fold(mk(
+                    K::Unary {
+                        op: ir::UnaryOp::BitNot,
+                        operand: Box::new(v),
+                    },
+                    ty,
+                    span,
+                ))
             }
             AU::Plus | AU::Minus => {
                 let v = self.rvalue(x);
@@ -322,7 +437,7 @@ impl Analyzer {
                         Code::TypeMismatch,
                         span,
                         format!(
-                            "unary `{o}' needs an int or float operand, found {}",
+                            "unary `{o}' needs an int, uint or float operand, found {}",
                             self.tn(v.ty)
                         ),
                     );
@@ -460,8 +575,11 @@ impl Analyzer {
             op,
             O::Mod | O::Shl | O::Shr | O::BitAnd | O::BitOr | O::BitXor
         ) {
-            self.reserved_op(op.as_str(), span);
-            return error_expr(span);
+            if !self.integer_ops_allowed(op.as_str(), span) || lv.ty.is_error() || rv.ty.is_error()
+            {
+                return error_expr(span);
+            }
+            return self.integer_binary(op, lv, rv, span);
         }
         if lv.ty.is_error() || rv.ty.is_error() {
             return error_expr(span);
@@ -491,18 +609,16 @@ impl Analyzer {
         let (ty, irop) = match op {
             O::Add | O::Sub | O::Mul | O::Div => match self.arith_type(op, lt, rt) {
                 Some(x) => x,
-                None => {
-                    return mismatch(
-                        self,
-                        "it needs int or float scalars, vectors or matrices of matching shapes",
-                    )
-                }
+                None => return mismatch(
+                    self,
+                    "it needs int, uint or float scalars, vectors or matrices of matching shapes",
+                ),
             },
             O::Less | O::Greater | O::LessEq | O::GreaterEq => {
-                if lt != rt || !(lt == Type::INT || lt == Type::FLOAT) {
+                if lt != rt || !(lt == Type::INT || lt == Type::UINT || lt == Type::FLOAT) {
                     return mismatch(
                         self,
-                        "it needs two int or two float scalars (use lessThan() etc. for vectors)",
+                        "it needs two int, two uint or two float scalars (use lessThan() etc. for vectors)",
                     );
                 }
                 let irop = match op {
@@ -561,17 +677,42 @@ impl Analyzer {
         use ast::BinaryOp as O;
         let target = self.lvalue(t, op.0.is_some(), "assign to");
         let value = self.rvalue(v);
-        if let Some(o) = op.0 {
-            if matches!(
+        let integer_op = op.0.filter(|o| {
+            matches!(
                 o,
                 O::Mod | O::Shl | O::Shr | O::BitAnd | O::BitOr | O::BitXor
-            ) {
-                self.reserved_op(&format!("{}=", o.as_str()), span);
+            )
+        });
+        if let Some(o) = integer_op {
+            if !self.integer_ops_allowed(&format!("{}=", o.as_str()), span) {
                 return error_expr(span);
             }
         }
         if target.ty.is_error() || value.ty.is_error() {
             return error_expr(span);
+        }
+        if let Some(o) = integer_op {
+            let tt = target.ty;
+            return match int_op_type(matches!(o, O::Shl | O::Shr), tt, value.ty) {
+                Some(ty) if ty == tt => mk(
+                    K::Assign {
+                        op: Some(integer_ir_op(o)),
+                        target: Box::new(target),
+                        value: Box::new(value),
+                    },
+                    tt,
+                    span,
+                ),
+                _ => {
+                    let (a, b) = (self.tn(tt), self.tn(value.ty));
+                    self.error(
+                        Code::TypeMismatch,
+                        span,
+                        format!("operator `{}=' cannot take {a} and {b}", o.as_str()),
+                    );
+                    error_expr(span)
+                }
+            };
         }
         let tt = target.ty;
         if tt.is_array() && self.lang.version < Version::V120 {
@@ -607,7 +748,7 @@ impl Analyzer {
             Some(o) => {
                 let value = if self.lang.version >= Version::V120
                     && tt.scalar() == Some(Scalar::Float)
-                    && value.ty.scalar() == Some(Scalar::Int)
+                    && matches!(value.ty.scalar(), Some(Scalar::Int | Scalar::Uint))
                     && !value.ty.is_array()
                 {
                     let to = value.ty.with_scalar(Scalar::Float);
@@ -691,6 +832,19 @@ impl Analyzer {
             ty,
             span,
         ))
+    }
+}
+
+/// The IR operator of an integer operator of the syntax.
+fn integer_ir_op(op: ast::BinaryOp) -> B {
+    use ast::BinaryOp as O;
+    match op {
+        O::Mod => B::Mod,
+        O::Shl => B::Shl,
+        O::Shr => B::Shr,
+        O::BitAnd => B::BitAnd,
+        O::BitOr => B::BitOr,
+        _ => B::BitXor,
     }
 }
 

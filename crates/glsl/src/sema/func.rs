@@ -286,6 +286,7 @@ impl Analyzer {
             consts: Vec::new(),
             implicit: Vec::new(),
             loop_depth: 0,
+            switch_depth: 0,
         });
         self.scopes.push();
         let mut params_out = Vec::with_capacity(params.len());

@@ -230,6 +230,8 @@ pub(crate) struct FnState {
     /// Largest constant index + 1 used on each local unsized array.
     pub implicit: Vec<u32>,
     pub loop_depth: u32,
+    /// Switch statements around the current statement (for `break`).
+    pub switch_depth: u32,
 }
 
 /// Bookkeeping per module function.
@@ -541,6 +543,7 @@ impl SpanOrder for Span {
 pub(crate) fn const_int(c: &ConstValue) -> Option<i32> {
     match (c.ty.base, c.ty.array, c.components.as_slice()) {
         (Base::Scalar(_), None, [ConstScalar::Int(i)]) => Some(*i),
+        (Base::Scalar(_), None, [ConstScalar::Uint(u)]) => i32::try_from(*u).ok(),
         _ => None,
     }
 }

@@ -1,10 +1,12 @@
-//! Statements and control flow (GLSL 1.20 §6). Loops are lowered to
-//! [`ir::Stmt::Loop`] with their conditions as explicit `if (!c) break;`.
+//! Statements and control flow (GLSL 1.30 §6). Loops are lowered to
+//! [`ir::Stmt::Loop`] with their conditions as explicit `if (!c) break;`;
+//! `switch` to [`ir::Stmt::Switch`], its labels grouped into cases.
 
 use super::Analyzer;
 use crate::ast::{self, Condition, StmtKind};
-use crate::diag::Code;
-use crate::ir::{self, ExprKind, Stage};
+use crate::diag::{Code, Label};
+use crate::ir::{self, CaseLabel, ConstScalar, ExprKind, Stage};
+use crate::lang::Feature;
 use crate::limits::MAX_NESTING_DEPTH;
 use crate::source::Span;
 use crate::types::Type;
@@ -123,12 +125,29 @@ impl Analyzer {
                 });
                 out.push(ir::Stmt::Block(block));
             }
+            StmtKind::Switch { selector, body } => self.switch(selector, body, span, out),
+            StmtKind::Case(e) => {
+                // Only the statements directly in a switch body are labels
+                // (`switch` handles those); this one is elsewhere.
+                let _ = self.rvalue(e);
+                self.misplaced_label("case", span);
+            }
+            StmtKind::Default => self.misplaced_label("default", span),
             StmtKind::Break | StmtKind::Continue => {
                 let is_break = matches!(s.kind, StmtKind::Break);
-                let in_loop = self.cur.as_ref().is_some_and(|f| f.loop_depth > 0);
+                let in_loop = self
+                    .cur
+                    .as_ref()
+                    .is_some_and(|f| f.loop_depth > 0 || (is_break && f.switch_depth > 0));
                 if !in_loop {
-                    let w = if is_break { "break" } else { "continue" };
-                    self.error(Code::BadControlFlow, span, format!("`{w}' outside a loop"));
+                    let (w, place) = if is_break && self.lang.allows(Feature::Switch) {
+                        ("break", "a loop or switch")
+                    } else if is_break {
+                        ("break", "a loop")
+                    } else {
+                        ("continue", "a loop")
+                    };
+                    self.error(Code::BadControlFlow, span, format!("`{w}' outside {place}"));
                 } else if is_break {
                     out.push(ir::Stmt::Break(span));
                 } else {
@@ -147,6 +166,209 @@ impl Analyzer {
                 out.push(ir::Stmt::Discard(span));
             }
         }
+    }
+
+    /// A `case`/`default` label that is not directly in a switch body.
+    fn misplaced_label(&mut self, word: &str, span: Span) {
+        let inside = self.cur.as_ref().is_some_and(|f| f.switch_depth > 0);
+        let d = self.error(
+            Code::BadControlFlow,
+            span,
+            if inside {
+                format!("`{word}' label nested inside other statements of its switch")
+            } else {
+                format!("`{word}' label outside a switch statement")
+            },
+        );
+        if inside {
+            d.notes.push(
+                "labels must be statements of the switch body itself, not inside a loop, `if' \
+                 or block in it (GLSL 1.30 §6.2)"
+                    .into(),
+            );
+        }
+    }
+
+    /// `switch (selector) { body }` (GLSL 1.30 §6.2): the selector an int or
+    /// uint scalar, labels constant expressions of its type, distinct, at
+    /// most one `default`, no statement before the first label and at
+    /// least one after the last.
+    fn switch(&mut self, selector: &ast::Expr, body: &ast::Block, span: Span, out: &mut ir::Block) {
+        let sel = self.rvalue(selector);
+        let sel_ty = sel.ty;
+        let sel_ok = sel_ty == Type::INT || sel_ty == Type::UINT;
+        if !sel_ty.is_error() && !sel_ok {
+            self.error(
+                Code::TypeMismatch,
+                selector.span,
+                format!(
+                    "the selector of `switch' must be an int or uint scalar, found {}",
+                    self.tn(sel_ty)
+                ),
+            );
+        }
+        self.scopes.push();
+        if let Some(f) = self.cur.as_mut() {
+            f.switch_depth += 1;
+        }
+        let mut cases: Vec<ir::SwitchCase> = Vec::new();
+        // Whether the last case has a statement after its labels (an empty
+        // statement counts: it is a statement of the grammar).
+        let mut last_has_stmt = true;
+        let mut last_label = None;
+        let mut seen: Vec<(ConstScalar, Span)> = Vec::new();
+        let mut default_at: Option<Span> = None;
+        let mut reported_first = false;
+        for st in &body.stmts {
+            let label = match &st.kind {
+                StmtKind::Case(e) => self.case_value(e, sel_ty, sel_ok, &mut seen),
+                StmtKind::Default => {
+                    if let Some(first) = default_at {
+                        self.error(
+                            Code::BadControlFlow,
+                            st.span,
+                            "more than one `default' label in a switch",
+                        )
+                        .labels
+                        .push(Label {
+                            span: first,
+                            message: "the first `default' is here".into(),
+                        });
+                    } else {
+                        default_at = Some(st.span);
+                    }
+                    Some(CaseLabel::Default)
+                }
+                _ => {
+                    if cases.is_empty() && !reported_first {
+                        reported_first = true;
+                        self.error(
+                            Code::BadControlFlow,
+                            st.span,
+                            "a statement before the first `case' or `default' label of a switch",
+                        )
+                        .notes
+                        .push("every statement of a switch body follows a label".into());
+                    }
+                    if cases.is_empty() {
+                        cases.push(ir::SwitchCase {
+                            labels: Vec::new(),
+                            body: Vec::new(),
+                        });
+                    }
+                    last_has_stmt = true;
+                    let mut b = Vec::new();
+                    self.stmt(st, &mut b);
+                    if let Some(c) = cases.last_mut() {
+                        c.body.extend(b);
+                    }
+                    continue;
+                }
+            };
+            last_label = Some(st.span);
+            // Consecutive labels share a case; a label after statements
+            // starts a new one.
+            match cases.last_mut() {
+                Some(c) if !last_has_stmt => c.labels.extend(label),
+                _ => cases.push(ir::SwitchCase {
+                    labels: label.into_iter().collect(),
+                    body: Vec::new(),
+                }),
+            }
+            last_has_stmt = false;
+        }
+        if let (false, Some(at)) = (last_has_stmt, last_label) {
+            self.error(
+                Code::BadControlFlow,
+                at,
+                "a label at the end of a switch needs a statement after it",
+            )
+            .notes
+            .push(
+                "GLSL 1.30 §6.2: it is an error to have no statement between a label and the end \
+                 of the switch; add `break;'"
+                    .into(),
+            );
+        }
+        if let Some(f) = self.cur.as_mut() {
+            f.switch_depth -= 1;
+        }
+        self.scopes.pop();
+        out.push(ir::Stmt::Switch {
+            selector: sel,
+            cases,
+            span,
+        });
+    }
+
+    /// A `case` label's value: a constant of the selector's type, not seen
+    /// before in the switch. `None` after reporting a problem.
+    fn case_value(
+        &mut self,
+        e: &ast::Expr,
+        sel_ty: Type,
+        sel_ok: bool,
+        seen: &mut Vec<(ConstScalar, Span)>,
+    ) -> Option<CaseLabel> {
+        let v = self.rvalue(e);
+        if v.ty.is_error() {
+            return None;
+        }
+        let value = match &v.kind {
+            ExprKind::Const(c) if v.ty == Type::INT || v.ty == Type::UINT => {
+                c.components.first().copied()
+            }
+            _ => None,
+        };
+        let Some(value) = value else {
+            self.error(
+                Code::NotConstant,
+                e.span,
+                format!(
+                    "a case label must be a constant int or uint expression, found {}{}",
+                    if matches!(v.kind, ExprKind::Const(_)) {
+                        ""
+                    } else {
+                        "a non-constant "
+                    },
+                    self.tn(v.ty)
+                ),
+            );
+            return None;
+        };
+        if !sel_ok {
+            return None;
+        }
+        if v.ty != sel_ty {
+            let (l, s) = (self.tn(v.ty), self.tn(sel_ty));
+            self.error(
+                Code::TypeMismatch,
+                e.span,
+                format!("a case label of type {l} in a switch on {s}"),
+            )
+            .notes
+            .push(
+                "labels must have the selector's type; int and uint do not convert implicitly \
+                 (write a `u' suffix or remove it)"
+                    .into(),
+            );
+            return None;
+        }
+        if let Some(&(_, first)) = seen.iter().find(|(x, _)| *x == value) {
+            self.error(
+                Code::BadControlFlow,
+                e.span,
+                "a case label repeats the value of an earlier one",
+            )
+            .labels
+            .push(Label {
+                span: first,
+                message: "the same value is here".into(),
+            });
+            return None;
+        }
+        seen.push((value, e.span));
+        Some(CaseLabel::Value(value))
     }
 
     /// The body of `if`/`else`: a block statement opens its own scope as the

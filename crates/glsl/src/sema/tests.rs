@@ -417,3 +417,222 @@ fn piglit() {
     }
     println!("piglit: {pass}/{total} ({link_only} use --check-link)");
 }
+
+fn v130(body: &str) -> Shader {
+    frag(&format!("#version 130\n{body}"))
+}
+
+#[test]
+fn unsigned_types_literals_and_conversions() {
+    ok(v130(
+        "void main() { uint a = 3u; uvec2 b = uvec2(a, 0xffffffffU); \
+         float f = a; vec2 g = b; int i = int(a); uint u = uint(-1); \
+         uvec3 c = uvec3(vec3(1.5)); bool t = bool(a); gl_FragColor = vec4(f, g, float(i + int(u + c.x)) + float(t)); }",
+    ));
+    // No implicit conversion between int and uint.
+    fails(v130("void main() { uint a = 1; }"), Code::TypeMismatch);
+    fails(v130("void main() { int a = 1u; }"), Code::TypeMismatch);
+    fails(v130("void main() { uint a = 1u + 1; }"), Code::TypeMismatch);
+    // The suffix and the type need 1.30.
+    let s = frag("void main() { int a = 1u; }");
+    assert!(!s.ok());
+    assert!(s.info_log().contains("needs GLSL 1.30"), "{}", s.info_log());
+    // Literals must fit 32 bits from 1.30 on; 0xffffffff is still an int.
+    fails(
+        v130("int f() { return int(0x1ffffffff); }"),
+        Code::LexBadNumber,
+    );
+    fails(
+        v130("uint f() { return 0x100000000u; }"),
+        Code::LexBadNumber,
+    );
+    ok(v130(
+        "int f() { return 0xffffffff; } void main() { gl_FragColor = vec4(f()); }",
+    ));
+    ok(v130(
+        "uint f() { return 4294967295u; } void main() { gl_FragColor = vec4(f()); }",
+    ));
+}
+
+#[test]
+fn unsigned_constants_fold() {
+    let s = v130(
+        "const uint a = 0xfffffff0u + 0x20u; const int b = int(0xffffffffu); \
+         const uint c = uint(-2); const float d = float(4000000000u); \
+         float x[a]; float y[b + 2]; \
+         void main() { gl_FragColor = vec4(x.length(), y.length(), float(c), d); }",
+    );
+    ok(s.clone());
+    let text = s.module.unwrap().to_string();
+    assert!(
+        text.contains("vec4(16.0, 1.0, 4294967300.0, 4000000000.0)"),
+        "{text}"
+    );
+}
+
+#[test]
+fn integer_operators_follow_1_30() {
+    ok(v130(
+        "void main() { int i = 7; uint u = 9u; ivec3 iv = ivec3(1); uvec2 uv = uvec2(2u); \
+         i = i % 3 & 5 | 6 ^ ~i; u = u % 4u; iv = iv % 2; iv = 5 & iv; iv <<= 1; iv >>= iv; \
+         uv = uv << 1; uv = uv >> uvec2(1u, 2u); i = i << u; u = u >> i; iv = iv << 2u; \
+         i %= 2; u &= 3u; u |= u; u ^= 1u; uv %= 3u; \
+         gl_FragColor = vec4(float(i), float(u), vec2(uv)); }",
+    ));
+    // Bitwise and `%' need one signedness.
+    fails(v130("void main() { int i = 1 & 1u; }"), Code::TypeMismatch);
+    fails(v130("void main() { uint u = 1u % 2; }"), Code::TypeMismatch);
+    // Not on floats or bools; no vectors of different sizes.
+    fails(
+        v130("void main() { float f = 1.0 % 2.0; }"),
+        Code::TypeMismatch,
+    );
+    fails(
+        v130("void main() { bool b = true & false; }"),
+        Code::TypeMismatch,
+    );
+    fails(
+        v130("void main() { ivec2 a = ivec2(1) | ivec3(1).xyz.xy.xyy; }"),
+        Code::TypeMismatch,
+    );
+    fails(v130("void main() { float f = ~1.0; }"), Code::TypeMismatch);
+    // A scalar shifted by a vector; the result is the left operand's type.
+    fails(
+        v130("void main() { int i = 1 << ivec2(1); }"),
+        Code::TypeMismatch,
+    );
+    fails(
+        v130("void main() { uint u = 1u << 1; uint v = 1 << 1u; }"),
+        Code::TypeMismatch,
+    );
+    // Compound assignments keep the target's type.
+    fails(
+        v130("void main() { int i = 1; i &= ivec2(1); }"),
+        Code::TypeMismatch,
+    );
+    // Reserved before 1.30.
+    let s = frag("#version 120\nvoid main() { int a = 7; a %= 2; }");
+    assert!(!s.ok());
+    assert!(
+        s.info_log()
+            .contains("operator `%=' needs GLSL 1.30 (this shader is GLSL 1.20)"),
+        "{}",
+        s.info_log()
+    );
+}
+
+#[test]
+fn integer_operators_fold() {
+    let s = v130(
+        "const int a = -7 % 3; const int b = -8 >> 1; const uint c = 0x80000000u >> 31; \
+         const int d = 1 << 33; const uint e = ~0u ^ 0xffu; const int f = (6 & 3) | 8; \
+         const uint g = 7u % 0x10u; const int h = -2147483647 - 1; const int k = h % -1; \
+         void main() { gl_FragColor = vec4(float(a + b), float(c), float(d + f + k), float(e + g)); }",
+    );
+    let text = s.module.expect("compiles").to_string();
+    // a = -1, b = -4; c = 1; d = 2 (33 mod 32), f = 10, k = 0;
+    // e = 0xffffff00 + 7.
+    assert!(
+        text.contains("vec4(-5.0, 1.0, 12.0, 4.2949670e9)")
+            || text.contains("vec4(-5.0, 1.0, 12.0, 4294967000.0)"),
+        "{text}"
+    );
+}
+
+#[test]
+fn switch_statements() {
+    let s = v130(
+        "uniform int x; void main() { int r = 0; \
+         switch (x) { case 0: case 1: r = 1; case 2: { r += 2; break; } default: r = 5; break; \
+         case 3 + 4: for (int i = 0; i < 3; i++) { if (i == 1) break; r++; } } \
+         switch (uint(x)) { case 1u: r = 2; } switch (x) { } \
+         gl_FragColor = vec4(float(r)); }",
+    );
+    ok(s.clone());
+    let text = s.module.unwrap().to_string();
+    assert!(text.contains("case 0:\n"), "{text}");
+    assert!(text.contains("case 1u:\n"), "{text}");
+    // Selector, labels and their types.
+    fails(
+        v130("void main() { switch (1.0) { case 1: break; } }"),
+        Code::TypeMismatch,
+    );
+    fails(
+        v130("void main() { switch (ivec2(1)) { default: break; } }"),
+        Code::TypeMismatch,
+    );
+    fails(
+        v130("void main() { uint x = 1u; switch (x) { case 1: break; } }"),
+        Code::TypeMismatch,
+    );
+    fails(
+        v130("uniform int u; void main() { switch (1) { case u: break; } }"),
+        Code::NotConstant,
+    );
+    fails(
+        v130("void main() { switch (1) { case 1.0: break; } }"),
+        Code::NotConstant,
+    );
+    // Duplicates, two defaults, misplaced labels and statements.
+    fails(
+        v130("void main() { switch (1) { case 1: break; case 0 + 1: break; } }"),
+        Code::BadControlFlow,
+    );
+    fails(
+        v130("void main() { switch (1) { default: break; default: break; } }"),
+        Code::BadControlFlow,
+    );
+    fails(
+        v130("void main() { switch (1) { int a = 1; case 1: break; } }"),
+        Code::BadControlFlow,
+    );
+    fails(v130("void main() { case 1: ; }"), Code::BadControlFlow);
+    fails(
+        v130("void main() { switch (1) { case 0: while (true) { default: break; } } }"),
+        Code::BadControlFlow,
+    );
+    fails(
+        v130("void main() { switch (1) { case 0: } }"),
+        Code::BadControlFlow,
+    );
+    fails(
+        v130("void main() { switch (1) { case 0: break; default: } }"),
+        Code::BadControlFlow,
+    );
+    ok(v130("void main() { switch (1) { case 0: ; } }"));
+    // `break' leaves a switch; `continue' needs a loop.
+    fails(
+        v130("void main() { switch (1) { case 0: continue; } }"),
+        Code::BadControlFlow,
+    );
+    ok(v130(
+        "void main() { for (;;) { switch (1) { case 0: continue; default: break; } break; } }",
+    ));
+    // Declarations of one case are visible in the next (one scope), not
+    // after the switch.
+    ok(v130(
+        "void main() { switch (1) { case 0: int a = 1; case 1: a = 2; break; } }",
+    ));
+    fails(
+        v130("void main() { switch (1) { case 0: int a = 1; break; } a = 2; }"),
+        Code::Undeclared,
+    );
+    // Before 1.30 the words are reserved or plain identifiers.
+    assert!(!frag("void main() { switch (1) { } }").ok());
+}
+
+#[test]
+fn uint_indices() {
+    ok(v130(
+        "uniform float a[4]; uniform uint k; void main() { vec4 v = vec4(1.0); \
+         gl_FragColor = vec4(a[k], a[2u], v[k], a[k & 1u]); }",
+    ));
+    fails(
+        v130("uniform float a[4]; void main() { gl_FragColor = vec4(a[4u]); }"),
+        Code::IndexOutOfRange,
+    );
+    fails(
+        v130("uniform float a[4]; void main() { gl_FragColor = vec4(a[0xffffffffu]); }"),
+        Code::IndexOutOfRange,
+    );
+}

@@ -24,6 +24,10 @@ pub(crate) fn keyword_type(k: Keyword) -> Option<Type> {
         K::Ivec2 => Type::vec(Int, 2),
         K::Ivec3 => Type::vec(Int, 3),
         K::Ivec4 => Type::vec(Int, 4),
+        K::Uint => Type::UINT,
+        K::Uvec2 => Type::vec(Uint, 2),
+        K::Uvec3 => Type::vec(Uint, 3),
+        K::Uvec4 => Type::vec(Uint, 4),
         K::Bvec2 => Type::vec(Bool, 2),
         K::Bvec3 => Type::vec(Bool, 3),
         K::Bvec4 => Type::vec(Bool, 4),
@@ -167,19 +171,23 @@ impl Analyzer {
         if v.ty.is_error() {
             return ArraySize::Sized(1);
         }
-        if v.ty != Type::INT {
+        if v.ty != Type::INT && v.ty != Type::UINT {
             self.error(
                 Code::BadArraySize,
                 e.span,
                 format!(
-                    "array size must be an int constant expression, found {}",
+                    "array size must be an integer constant expression, found {}",
                     self.tn(v.ty)
                 ),
             );
             return ArraySize::Sized(1);
         }
         let Some(n) = (match &v.kind {
-            crate::ir::ExprKind::Const(c) => const_int(c),
+            // A uint past i32::MAX is as out of range as the largest int.
+            crate::ir::ExprKind::Const(c) => match c.components.as_slice() {
+                [crate::ir::ConstScalar::Uint(u)] => Some(i32::try_from(*u).unwrap_or(i32::MAX)),
+                _ => const_int(c),
+            },
             _ => None,
         }) else {
             self.error(

@@ -276,6 +276,17 @@ fn separable(ins: &Ins) -> bool {
         | Op::ILt { .. }
         | Op::ILe { .. }
         | Op::IEq { .. }
+        | Op::ULt { .. }
+        | Op::ULe { .. }
+        | Op::Shl { .. }
+        | Op::ShrS { .. }
+        | Op::ShrU { .. }
+        | Op::BitAnd { .. }
+        | Op::BitOr { .. }
+        | Op::BitXor { .. }
+        | Op::BitNot { .. }
+        | Op::FToU { .. }
+        | Op::UToF { .. }
         | Op::And { .. }
         | Op::Or { .. }
         | Op::Xor { .. }

@@ -283,6 +283,41 @@ impl<'a, 'b> Emit<'a, 'b> {
         self.iv(f)
     }
 
+    /// Truncating, saturating at 0 and `u32::MAX`, NaN → 0 (`FToU`, as
+    /// Rust's `as u32`).
+    fn ftou(&mut self, x: Value) -> Value {
+        self.b.ins().fcvt_to_uint_sat(I32X4, x)
+    }
+
+    /// The lanes as unsigned (`UToF`), correctly rounded.
+    fn utof(&mut self, x: Value) -> Value {
+        let f = self.b.ins().fcvt_from_uint(F32X4, x);
+        self.iv(f)
+    }
+
+    fn bit_not(&mut self, x: Value) -> Value {
+        self.b.ins().bnot(x)
+    }
+
+    /// `x` shifted per lane by `y`'s lane modulo 32: a vector shift takes
+    /// one amount for all lanes, so each lane goes through the scalar
+    /// shift (which takes its amount modulo 32, as the interpreter does).
+    fn lane_shift(
+        &mut self,
+        x: Value,
+        y: Value,
+        op: fn(&mut FunctionBuilder, Value, Value) -> Value,
+    ) -> Value {
+        let mut out = x;
+        for l in 0..4u8 {
+            let xl = self.b.ins().extractlane(x, l);
+            let yl = self.b.ins().extractlane(y, l);
+            let r = op(&mut self.b, xl, yl);
+            out = self.b.ins().insertlane(out, r, l);
+        }
+        out
+    }
+
     /// `x != 0.0` as 0/1 (`FToB`; true for NaN, as in Rust).
     fn ftob(&mut self, x: Value) -> Value {
         let zero = self.fconst(0.0);
@@ -357,6 +392,14 @@ impl<'a, 'b> Emit<'a, 'b> {
                     } else {
                         self.b.ins().band(c, one)
                     }
+                })
+            };
+        }
+        macro_rules! shift {
+            ($d:expr, $a:expr, $b:expr, $op:ident) => {
+                each!($d, |q| {
+                    let (x, y) = (self.ld($a, q), self.ld($b, q));
+                    self.lane_shift(x, y, |b, x, y| b.ins().$op(x, y))
                 })
             };
         }
