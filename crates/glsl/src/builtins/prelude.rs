@@ -685,6 +685,9 @@ struct SamplerRow {
     lod: bool,
     /// The `offset` type of the `Offset` forms.
     offset: Option<&'static str>,
+    /// Whether `textureOffset` is missing though other `Offset` forms
+    /// exist (`sampler2DArrayShadow` has `textureGradOffset` only).
+    grad_offset_only: bool,
     /// The type of `dPdx`/`dPdy` of the `Grad` forms.
     grad: Option<&'static str>,
     /// `P` of `texelFetch`, and its last parameter (`lod`, `sample`, or
@@ -710,6 +713,7 @@ const SAMPLERS: &[SamplerRow] = {
             bias: false,
             lod: false,
             offset: None,
+            grad_offset_only: false,
             grad: None,
             fetch: None,
         }
@@ -806,6 +810,7 @@ const SAMPLERS: &[SamplerRow] = {
             p: Some("vec4"),
             grad: Some("vec2"),
             offset: Some("ivec2"),
+            grad_offset_only: true,
             ..row("sampler2DArrayShadow", V130, false, ("ivec3", true))
         },
         SamplerRow {
@@ -1021,7 +1026,7 @@ fn lookups(out: &mut String, row: &SamplerRow, stage: Stage) {
                     f("textureProjLod", &[q, "float"]);
                 }
             }
-            if let Some(o) = row.offset {
+            if let Some(o) = row.offset.filter(|_| !row.grad_offset_only) {
                 biased(&mut f, "textureOffset", &[p, o]);
                 for &q in row.proj {
                     biased(&mut f, "textureProjOffset", &[q, o]);
@@ -1050,15 +1055,9 @@ fn lookups(out: &mut String, row: &SamplerRow, stage: Stage) {
             let mut params = vec![p];
             params.extend(last);
             f("texelFetch", &params);
-            // Offsets apply to mipmapped and rectangle textures only.
-            if let (Some(o), true) = (
-                row.offset,
-                matches!(last, Some("int")) || row.name == "sampler2DRect",
-            ) {
-                if !row.name.contains("MS") {
-                    params.push(o);
-                    f("texelFetchOffset", &params);
-                }
+            if let Some(o) = row.offset {
+                params.push(o);
+                f("texelFetchOffset", &params);
             }
         }
         let (size, lod) = row.size;
@@ -1333,6 +1332,10 @@ mod tests {
         assert!(declares_var(&f150, "gl_PrimitiveID"));
         assert!(f150.contains("ivec4 texelFetch(isampler2DMS, ivec2, int);"));
         assert!(f150.contains("const int gl_MaxGeometryOutputVertices = 256;"));
+        // textureGradOffset but no textureOffset on 2D array shadows.
+        assert!(f150
+            .contains("float textureGradOffset(sampler2DArrayShadow, vec4, vec2, vec2, ivec2);"));
+        assert!(!f150.contains(" textureOffset(sampler2DArrayShadow"));
         let v330 = super::prelude(core(V330), Vertex);
         assert!(v330.contains("ivec3 floatBitsToInt(vec3);"));
         assert!(v330.contains("vec2 intBitsToFloat(ivec2);"));
