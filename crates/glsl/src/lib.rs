@@ -26,8 +26,11 @@
 //! ## Limitations
 //! - GLSL ES is rejected. `#version 130` to `330` are accepted and read
 //!   with the GLSL 1.20 language plus what [`lang::Feature`] lists; the
-//!   rest of those versions (their types, qualifiers, blocks and built-ins)
-//!   is being added, and a construct not yet there is a compile error.
+//!   rest of those versions (their types, qualifiers and blocks) is being
+//!   added, and a construct not yet there is a compile error. Their
+//!   built-ins follow each version, profile and stage ([`builtins`]),
+//!   except the overloads on `uint` (not a type yet) and the geometry
+//!   stage's variables.
 //! - Extensions: those of [`lang::Extension`]; others are accepted by
 //!   `#extension` only with `warn`/`disable`.
 
