@@ -489,3 +489,23 @@ fn piglit() {
     }
     println!("piglit: {pass}/{total} ({link_only} use --check-link)");
 }
+
+#[test]
+fn texel_offsets_and_sampler_array_indices_are_constant_from_130() {
+    let s = frag(
+        "#version 130\nuniform sampler2D a;\nuniform ivec2 o;\nvoid main() { gl_FragColor = texelFetchOffset(a, ivec2(0), 0, o); }\n",
+    );
+    assert!(
+        s.info_log().contains("must be a constant expression"),
+        "{}",
+        s.info_log()
+    );
+    ok(frag(
+        "#version 130\nuniform sampler2D a;\nvoid main() { gl_FragColor = textureOffset(a, vec2(0.0), ivec2(1, -1), 2.0); }\n",
+    ));
+    let src = |v: u32| {
+        format!("#version {v}\nuniform sampler2D s[4];\nuniform int x;\nvoid main() {{ gl_FragColor = texture2D(s[x], vec2(0.0)) + texture2D(s[1], vec2(0.0)); }}\n")
+    };
+    ok(frag(&src(120)));
+    fails(frag(&src(130)), Code::NotConstant);
+}
