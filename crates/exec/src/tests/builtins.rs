@@ -297,3 +297,51 @@ fn what_the_pipeline_cannot_run_is_refused_when_lowered() {
         }
     }
 }
+
+#[test]
+fn glsl130_lookups_lower_like_their_120_forms() {
+    // The same program, apart from the header line and the statements'
+    // source spans.
+    let body = |stage: Stage, v: u32, lookups: &str| {
+        let (input, output) = match stage {
+            Stage::Vertex => ("attribute", "gl_Position"),
+            Stage::Fragment => ("varying", "gl_FragColor"),
+        };
+        let k = kernel(
+            stage,
+            &format!(
+                "#version {v}\nuniform sampler2D s;\nuniform sampler2DShadow z;\n{input} vec4 p;\nvoid main() {{ {output} = {lookups}; }}"
+            ),
+        );
+        let text = k.print_lowered();
+        text.lines()
+            .skip(1)
+            .filter(|l| !l.starts_with("; stmt"))
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    assert_eq!(
+        body(
+            Stage::Fragment,
+            120,
+            "texture2D(s, p.xy) + texture2DProj(s, p, 1.5) + shadow2D(z, p.xyz).xxxx"
+        ),
+        body(
+            Stage::Fragment,
+            130,
+            "texture(s, p.xy) + textureProj(s, p, 1.5) + vec4(texture(z, p.xyz))"
+        )
+    );
+    assert_eq!(
+        body(
+            Stage::Vertex,
+            120,
+            "texture2DLod(s, p.xy, 2.0) + texture2DProjLod(s, p.xyw, 1.0)"
+        ),
+        body(
+            Stage::Vertex,
+            130,
+            "textureLod(s, p.xy, 2.0) + textureProjLod(s, p.xyw, 1.0)"
+        )
+    );
+}
