@@ -33,9 +33,13 @@
 //! `#version` line and has no other preprocessor directive.
 //!
 //! Unsigned integers do not exist yet (`uint`, `uvec*`); the overloads that
-//! need them are not declared: `floatBitsToUint`, `uintBitsToFloat`, the
-//! `genUType` forms of `min`, `max`, `clamp`, `mix`... and every lookup on a
-//! `usampler*` (see [`G_PREFIXES`]).
+//! need them are not declared. Each is one line of [`FUNCTIONS`] once they
+//! do (`genUType`/`uvec` expand already): `genUType min(genUType,
+//! genUType)`, `uvec min(uvec, uint)` and the same for `max`, `clamp`
+//! (`uvec clamp(uvec, uint, uint)`), `bvec lessThan(uvec, uvec)` and the
+//! other five relational functions (1.30), `genUType
+//! floatBitsToUint(genType)` and `genType uintBitsToFloat(genUType)`
+//! (3.30); the lookups on `usampler*` are a `"u"` in [`G_PREFIXES`].
 
 use crate::ir::Stage;
 use crate::lang::{Feature, Language, Version};
@@ -477,7 +481,7 @@ varying float gl_FogFragCoord;",
 /// Built-in functions other than the lookups of [`SAMPLERS`], as
 /// prototypes with the spec's placeholders, each expanded over its types
 /// ([`expand`]): `genType` (`float`, `vec2`...`vec4`), `genIType`,
-/// `genBType`; `vec`, `ivec`, `bvec` (sizes 2 to 4); `mat` (every matrix
+/// `genUType`, `genBType`; `vec`, `ivec`, `uvec`, `bvec` (sizes 2 to 4); `mat` (every matrix
 /// type of the version) with `matT` its transpose and `colvec`/`rowvec`
 /// the vectors of its column and row; `sqmat` (`mat2`...`mat4`). All
 /// placeholders of one line vary together.
@@ -932,7 +936,10 @@ fn expand(out: &mut String, proto: &str, version: Version) {
             .any(|x| x == w)
     };
     let mut lines = Vec::new();
-    if ["genType", "genIType", "genBType"].iter().any(|w| has(w)) {
+    if ["genType", "genIType", "genUType", "genBType"]
+        .iter()
+        .any(|w| has(w))
+    {
         for n in 1..=4u8 {
             let v = |p: &str, s: &str| {
                 if n == 1 {
@@ -944,14 +951,15 @@ fn expand(out: &mut String, proto: &str, version: Version) {
             lines.push(substitute(proto, |w| match w {
                 "genType" => Some(v("", "float")),
                 "genIType" => Some(v("i", "int")),
+                "genUType" => Some(v("u", "uint")),
                 "genBType" => Some(v("b", "bool")),
                 _ => None,
             }));
         }
-    } else if ["vec", "ivec", "bvec"].iter().any(|w| has(w)) {
+    } else if ["vec", "ivec", "uvec", "bvec"].iter().any(|w| has(w)) {
         for n in 2..=4u8 {
             lines.push(substitute(proto, |w| match w {
-                "vec" | "ivec" | "bvec" => Some(format!("{w}{n}")),
+                "vec" | "ivec" | "uvec" | "bvec" => Some(format!("{w}{n}")),
                 _ => None,
             }));
         }
@@ -1424,5 +1432,17 @@ mod tests {
                 assert!(!text.contains(absent), "{v:?} {s:?} {absent}");
             }
         }
+    }
+
+    #[test]
+    fn unsigned_placeholders_expand_for_the_lines_uint_will_add() {
+        let mut out = String::new();
+        expand(&mut out, "genUType min(genUType, genUType)", Version::V130);
+        expand(&mut out, "bvec lessThan(uvec, uvec)", Version::V130);
+        assert_eq!(
+            out,
+            "uint min(uint, uint);\nuvec2 min(uvec2, uvec2);\nuvec3 min(uvec3, uvec3);\nuvec4 min(uvec4, uvec4);\n\
+             bvec2 lessThan(uvec2, uvec2);\nbvec3 lessThan(uvec3, uvec3);\nbvec4 lessThan(uvec4, uvec4);\n"
+        );
     }
 }
