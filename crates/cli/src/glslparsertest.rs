@@ -106,7 +106,11 @@ impl Verdict {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Requested {
     /// A version of desktop GLSL shaderbox implements, and whether the
-    /// context is a compatibility one (every request but `core`).
+    /// context is a compatibility one: `compatibility` asks for one, and
+    /// so does a version below 1.40 (a GL 2.1 or 3.0 context); a bare
+    /// 1.40 or later gets the core context piglit's program creates for it
+    /// (GL 3.1 without `GL_ARB_compatibility`, 3.2+ core), where `#version
+    /// 140` is the core language.
     Supported {
         version: Version,
         compatibility_context: bool,
@@ -144,7 +148,10 @@ pub fn parse_version(text: &str) -> Result<Requested, String> {
     match (Version::from_number(n), profile) {
         (Some(version), None | Some("compatibility" | "core")) => Ok(Requested::Supported {
             version,
-            compatibility_context: profile != Some("core"),
+            compatibility_context: match profile {
+                Some(p) => p == "compatibility",
+                None => version < Version::V140,
+            },
         }),
         _ => Ok(Requested::Other),
     }
@@ -339,7 +346,13 @@ mod tests {
             parse_version("1.20 compatibility"),
             supported(Version::V120, true)
         );
-        assert_eq!(parse_version("1.50"), supported(Version::V150, true));
+        assert_eq!(parse_version("1.30"), supported(Version::V130, true));
+        assert_eq!(parse_version("1.40"), supported(Version::V140, false));
+        assert_eq!(parse_version("1.50"), supported(Version::V150, false));
+        assert_eq!(
+            parse_version("1.40compatibility"),
+            supported(Version::V140, true)
+        );
         assert_eq!(parse_version("3.30 core"), supported(Version::V330, false));
         assert_eq!(
             parse_version("1.50compatibility"),

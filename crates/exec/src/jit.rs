@@ -417,7 +417,9 @@ unsafe extern "C" fn jit_step(ctx: *mut Ctx, index: u32, cur: u32) {
 }
 
 /// The functions of one float the native code calls (index = argument).
-const F1_CALLED: [F1; 10] = [
+/// The functions of GLSL 1.30 and later are calls too: `engine::f1`
+/// evaluates them with `glsl::math`, the bits of constant folding.
+const F1_CALLED: [F1; 21] = [
     F1::Sin,
     F1::Cos,
     F1::Tan,
@@ -428,6 +430,17 @@ const F1_CALLED: [F1; 10] = [
     F1::Log,
     F1::Exp2,
     F1::Log2,
+    F1::Sinh,
+    F1::Cosh,
+    F1::Tanh,
+    F1::Asinh,
+    F1::Acosh,
+    F1::Atanh,
+    F1::Trunc,
+    F1::Round,
+    F1::RoundEven,
+    F1::ModfFract,
+    F1::FlushBits,
 ];
 
 /// The functions of two floats the native code calls.

@@ -289,6 +289,17 @@ fn f1_name(f: F1) -> &'static str {
         F1::Floor => "floor",
         F1::Ceil => "ceil",
         F1::Fract => "fract",
+        F1::Sinh => "sinh",
+        F1::Cosh => "cosh",
+        F1::Tanh => "tanh",
+        F1::Asinh => "asinh",
+        F1::Acosh => "acosh",
+        F1::Atanh => "atanh",
+        F1::Trunc => "trunc",
+        F1::Round => "round",
+        F1::RoundEven => "roundEven",
+        F1::ModfFract => "modf_fract",
+        F1::FlushBits => "flush_bits",
     }
 }
 

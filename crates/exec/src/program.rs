@@ -52,6 +52,19 @@ pub(crate) enum F1 {
     Floor,
     Ceil,
     Fract,
+    Sinh,
+    Cosh,
+    Tanh,
+    Asinh,
+    Acosh,
+    Atanh,
+    Trunc,
+    Round,
+    RoundEven,
+    /// The fraction `modf` returns (`glsl::math::modf_fract`).
+    ModfFract,
+    /// `intBitsToFloat`: the bits as they are, a subnormal flushed.
+    FlushBits,
 }
 
 /// A `glsl::math` function of two floats.
@@ -97,6 +110,17 @@ impl F1 {
             F1::Floor => m::floor(x),
             F1::Ceil => m::ceil(x),
             F1::Fract => m::fract(x),
+            F1::Sinh => m::sinh(x),
+            F1::Cosh => m::cosh(x),
+            F1::Tanh => m::tanh(x),
+            F1::Asinh => m::asinh(x),
+            F1::Acosh => m::acosh(x),
+            F1::Atanh => m::atanh(x),
+            F1::Trunc => m::trunc(x),
+            F1::Round => m::round(x),
+            F1::RoundEven => m::round_even(x),
+            F1::ModfFract => m::modf_fract(x),
+            F1::FlushBits => x,
         }
     }
 }

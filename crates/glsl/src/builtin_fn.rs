@@ -1,4 +1,4 @@
-//! The names of the built-in functions (GLSL 1.20 §8): the IR calls them
+//! The names of the built-in functions (GLSL 1.10 to 3.30 §8): the IR calls them
 //! by [`BuiltinFn`], and [`crate::builtins`] declares, types and folds them.
 //! Overloads of one name share a variant; the argument types in the IR tell
 //! them apart (`atan(y)` / `atan(y, x)`, `texture2D(s, p)` /
@@ -7,7 +7,7 @@
 
 macro_rules! builtin_fns {
     ($($variant:ident = $name:literal;)*) => {
-        /// A built-in function (GLSL 1.20 §8).
+        /// A built-in function (GLSL 1.10 to 3.30 §8).
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
         pub enum BuiltinFn { $($variant),* }
 
@@ -35,6 +35,12 @@ builtin_fns! {
     Asin = "asin";
     Acos = "acos";
     Atan = "atan";
+    Sinh = "sinh";
+    Cosh = "cosh";
+    Tanh = "tanh";
+    Asinh = "asinh";
+    Acosh = "acosh";
+    Atanh = "atanh";
     // §8.2 exponential
     Pow = "pow";
     Exp = "exp";
@@ -47,15 +53,23 @@ builtin_fns! {
     Abs = "abs";
     Sign = "sign";
     Floor = "floor";
+    Trunc = "trunc";
+    Round = "round";
+    RoundEven = "roundEven";
     Ceil = "ceil";
     Fract = "fract";
     Mod = "mod";
+    Modf = "modf";
     Min = "min";
     Max = "max";
     Clamp = "clamp";
     Mix = "mix";
     Step = "step";
     SmoothStep = "smoothstep";
+    IsNan = "isnan";
+    IsInf = "isinf";
+    FloatBitsToInt = "floatBitsToInt";
+    IntBitsToFloat = "intBitsToFloat";
     // §8.4 geometric
     Length = "length";
     Distance = "distance";
@@ -70,6 +84,8 @@ builtin_fns! {
     MatrixCompMult = "matrixCompMult";
     OuterProduct = "outerProduct";
     Transpose = "transpose";
+    Determinant = "determinant";
+    Inverse = "inverse";
     // §8.6 vector relational
     LessThan = "lessThan";
     LessThanEqual = "lessThanEqual";
@@ -103,6 +119,23 @@ builtin_fns! {
     Shadow2DLod = "shadow2DLod";
     Shadow1DProjLod = "shadow1DProjLod";
     Shadow2DProjLod = "shadow2DProjLod";
+    // §8.7 (1.30 and later): one name per kind of lookup, the sampler
+    // type telling the target apart.
+    TextureSize = "textureSize";
+    Texture = "texture";
+    TextureProj = "textureProj";
+    TextureLod = "textureLod";
+    TextureOffset = "textureOffset";
+    TexelFetch = "texelFetch";
+    TexelFetchOffset = "texelFetchOffset";
+    TextureProjOffset = "textureProjOffset";
+    TextureLodOffset = "textureLodOffset";
+    TextureProjLod = "textureProjLod";
+    TextureProjLodOffset = "textureProjLodOffset";
+    TextureGrad = "textureGrad";
+    TextureGradOffset = "textureGradOffset";
+    TextureProjGrad = "textureProjGrad";
+    TextureProjGradOffset = "textureProjGradOffset";
     // §8.8 fragment processing
     DFdx = "dFdx";
     DFdy = "dFdy";

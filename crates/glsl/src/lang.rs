@@ -170,6 +170,10 @@ pub enum Feature {
     StageInOut,
     /// `lowp`, `mediump`, `highp`, `precision` (accepted, no effect).
     Precision,
+    /// Indexing an array of samplers with an expression that is not
+    /// constant: GLSL 1.10 and 1.20 say nothing against it, 1.30 §4.1.7
+    /// allows "integral constant expressions" only.
+    NonConstantSamplerIndex,
     /// The fixed-function interface GLSL 1.40 removes (its §1.2.5):
     /// built-in vertex inputs (`gl_Vertex`...), built-in uniforms other
     /// than `gl_DepthRange`, `gl_TexCoord`, `gl_FogFragCoord` and the
@@ -186,6 +190,8 @@ pub enum Unavailable {
     NeedsVersionOrExtension(Version, Extension),
     /// The core profile of this version (and later) removes it.
     RemovedInCore(Version),
+    /// This version (and later) removes it from both profiles.
+    Removed(Version),
 }
 
 impl Unavailable {
@@ -212,6 +218,9 @@ impl Unavailable {
                 "{what} is removed in the core profile of GLSL {} and later ({this})",
                 v.dotted()
             ),
+            Unavailable::Removed(v) => {
+                format!("{what} is not allowed from GLSL {} on ({this})", v.dotted())
+            }
         }
     }
 
@@ -228,6 +237,10 @@ impl Unavailable {
             Unavailable::RemovedInCore(_) => {
                 "it is kept only in a compatibility context (GL_ARB_compatibility)".to_string()
             }
+            Unavailable::Removed(v) => format!(
+                "it needs a version before {}; later versions have no way to keep it",
+                v.dotted()
+            ),
         }
     }
 }
@@ -270,6 +283,13 @@ impl Language {
             | Feature::InterpolationQualifiers
             | Feature::StageInOut
             | Feature::Precision => since(Version::V130),
+            Feature::NonConstantSamplerIndex => {
+                if self.version >= Version::V130 {
+                    Err(Unavailable::Removed(Version::V130))
+                } else {
+                    Ok(())
+                }
+            }
             Feature::CompatibilityInterface => {
                 if self.version >= Version::V140 && self.profile == Profile::Core {
                     Err(Unavailable::RemovedInCore(Version::V140))

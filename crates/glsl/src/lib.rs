@@ -28,8 +28,10 @@
 //!   with the GLSL 1.20 language plus what [`lang::Feature`] lists: so far
 //!   `uint`/`uvec*` with the `u` suffix and the int/uint→float implicit
 //!   conversions, the integer operators (`%`, shifts, bitwise) and
-//!   `switch`. The rest of those versions (their qualifiers, blocks and
-//!   built-ins) is being added, and a construct not yet there is a compile
+//!   `switch`. Their built-ins follow each version, profile and stage
+//!   ([`builtins`]), except the overloads on `uint` and the geometry
+//!   stage's variables. The rest of those versions (their qualifiers and
+//!   blocks) is being added, and a construct not yet there is a compile
 //!   error.
 //! - Integer operations the spec leaves undefined have the executor's
 //!   defined results when folded ([`consteval`]): shift amounts modulo 32,

@@ -30,6 +30,24 @@ pub const MAX_TEXTURE_IMAGE_UNITS: u32 = 16;
 pub const MAX_FRAGMENT_UNIFORM_COMPONENTS: u32 = 16384;
 /// `gl_MaxDrawBuffers` (minimum 1).
 pub const MAX_DRAW_BUFFERS: u32 = 8;
+/// `gl_MaxClipDistances` (GLSL 1.30, minimum 8): the same planes as
+/// `gl_MaxClipPlanes`.
+pub const MAX_CLIP_DISTANCES: u32 = MAX_CLIP_PLANES;
+/// `gl_MaxVertexOutputComponents` (GLSL 1.50, minimum 64): the varying
+/// floats a vertex shader writes.
+pub const MAX_VERTEX_OUTPUT_COMPONENTS: u32 = MAX_VARYING_FLOATS;
+/// `gl_MaxFragmentInputComponents` (GLSL 1.50, minimum 128). The spec's
+/// minimum, though the linker allows `MAX_VARYING_FLOATS` between stages.
+pub const MAX_FRAGMENT_INPUT_COMPONENTS: u32 = 128;
+/// The geometry stage's constants, which GLSL 1.50 gives every stage.
+/// shaderbox has no geometry stage; they are the spec's minimums.
+pub const MAX_GEOMETRY_INPUT_COMPONENTS: u32 = 64;
+pub const MAX_GEOMETRY_OUTPUT_COMPONENTS: u32 = 128;
+pub const MAX_GEOMETRY_TEXTURE_IMAGE_UNITS: u32 = 16;
+pub const MAX_GEOMETRY_OUTPUT_VERTICES: u32 = 256;
+pub const MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS: u32 = 1024;
+pub const MAX_GEOMETRY_UNIFORM_COMPONENTS: u32 = 1024;
+pub const MAX_GEOMETRY_VARYING_COMPONENTS: u32 = 64;
 
 /// Macro expansion depth at which the preprocessor gives up (recursive
 /// macros are not expanded again, so this only bounds pathological input).

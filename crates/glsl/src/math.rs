@@ -50,6 +50,7 @@
 //!   repeatable.
 
 pub mod exp_log;
+pub mod matrix;
 pub mod noise;
 
 pub use exp_log::{exp, exp2, log, log2, pow};
@@ -122,6 +123,67 @@ pub fn sign(x: f32) -> f32 {
         -1.0
     } else {
         0.0
+    }
+}
+
+/// Hyperbolic sine, `(e^x - e^-x) / 2` (GLSL 1.30 §8.1), libm's routine.
+pub fn sinh(x: f32) -> f32 {
+    libm::sinhf(x)
+}
+
+pub fn cosh(x: f32) -> f32 {
+    libm::coshf(x)
+}
+
+pub fn tanh(x: f32) -> f32 {
+    libm::tanhf(x)
+}
+
+pub fn asinh(x: f32) -> f32 {
+    libm::asinhf(x)
+}
+
+/// NaN when x < 1.
+pub fn acosh(x: f32) -> f32 {
+    libm::acoshf(x)
+}
+
+/// NaN when |x| > 1, ±inf at ±1.
+pub fn atanh(x: f32) -> f32 {
+    libm::atanhf(x)
+}
+
+/// The integer nearest `x` no larger in magnitude (exact).
+pub fn trunc(x: f32) -> f32 {
+    libm::truncf(x)
+}
+
+/// GLSL `round`: the nearest integer, halves away from zero (GLSL 1.30
+/// §8.3 leaves the direction of a half to the implementation; this is C's
+/// `roundf`). Exact.
+pub fn round(x: f32) -> f32 {
+    libm::roundf(x)
+}
+
+/// GLSL `roundEven`: the nearest integer, halves to the even one. Exact:
+/// below 2^23 adding and subtracting 2^23 rounds to an integer in the
+/// default (nearest-even) mode; from 2^23 on every `f32` is an integer.
+pub fn round_even(x: f32) -> f32 {
+    let a = x.abs();
+    // NaN and infinities included.
+    if a >= 8_388_608.0 || a.is_nan() {
+        return x;
+    }
+    ((a + 8_388_608.0) - 8_388_608.0).copysign(x)
+}
+
+/// The fractional part `modf` returns, `x - trunc(x)` with the sign of
+/// `x` (0 for infinities, as C's `modff`); the whole part is [`trunc`].
+pub fn modf_fract(x: f32) -> f32 {
+    if x.is_infinite() {
+        0.0f32.copysign(x)
+    } else {
+        (x - trunc(x)).copysign(x)
     }
 }
 

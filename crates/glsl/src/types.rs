@@ -29,27 +29,110 @@ impl Scalar {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
-pub enum SamplerKind {
-    Sampler1D,
-    Sampler2D,
-    Sampler3D,
-    SamplerCube,
-    Sampler1DShadow,
-    Sampler2DShadow,
+macro_rules! sampler_kinds {
+    ($($variant:ident = $name:literal, $dim:ident, $result:ident, $shadow:literal, $array:literal;)*) => {
+        /// A sampler type (GLSL 1.30 §4.1.7 and its additions in 1.40 and
+        /// 1.50): the texture target it reads, the kind of its results,
+        /// whether it compares against a reference (shadow) and whether
+        /// the texture is an array. Which version has each is the keyword
+        /// table's (`crate::token`); which lookups each takes is
+        /// `crate::builtins`'.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+        pub enum SamplerKind { $($variant),* }
+
+        impl SamplerKind {
+            pub const ALL: &'static [SamplerKind] = &[$(SamplerKind::$variant),*];
+
+            pub fn name(self) -> &'static str {
+                match self { $(SamplerKind::$variant => $name),* }
+            }
+
+            pub fn from_name(name: &str) -> Option<SamplerKind> {
+                match name { $($name => Some(SamplerKind::$variant),)* _ => None }
+            }
+
+            /// The texture target it samples.
+            pub fn dim(self) -> SamplerDim {
+                match self { $(SamplerKind::$variant => SamplerDim::$dim),* }
+            }
+
+            /// The kind of a lookup's result components (`vec4`, `ivec4`
+            /// or `uvec4`; a shadow lookup returns one `float`).
+            pub fn result(self) -> SamplerResult {
+                match self { $(SamplerKind::$variant => SamplerResult::$result),* }
+            }
+
+            pub fn is_shadow(self) -> bool {
+                match self { $(SamplerKind::$variant => $shadow),* }
+            }
+
+            pub fn is_array(self) -> bool {
+                match self { $(SamplerKind::$variant => $array),* }
+            }
+        }
+    };
 }
 
-impl SamplerKind {
-    pub fn name(self) -> &'static str {
-        match self {
-            SamplerKind::Sampler1D => "sampler1D",
-            SamplerKind::Sampler2D => "sampler2D",
-            SamplerKind::Sampler3D => "sampler3D",
-            SamplerKind::SamplerCube => "samplerCube",
-            SamplerKind::Sampler1DShadow => "sampler1DShadow",
-            SamplerKind::Sampler2DShadow => "sampler2DShadow",
-        }
-    }
+sampler_kinds! {
+    Sampler1D = "sampler1D", D1, Float, false, false;
+    Sampler2D = "sampler2D", D2, Float, false, false;
+    Sampler3D = "sampler3D", D3, Float, false, false;
+    SamplerCube = "samplerCube", Cube, Float, false, false;
+    Sampler1DShadow = "sampler1DShadow", D1, Float, true, false;
+    Sampler2DShadow = "sampler2DShadow", D2, Float, true, false;
+    SamplerCubeShadow = "samplerCubeShadow", Cube, Float, true, false;
+    Sampler1DArray = "sampler1DArray", D1, Float, false, true;
+    Sampler2DArray = "sampler2DArray", D2, Float, false, true;
+    Sampler1DArrayShadow = "sampler1DArrayShadow", D1, Float, true, true;
+    Sampler2DArrayShadow = "sampler2DArrayShadow", D2, Float, true, true;
+    ISampler1D = "isampler1D", D1, Int, false, false;
+    ISampler2D = "isampler2D", D2, Int, false, false;
+    ISampler3D = "isampler3D", D3, Int, false, false;
+    ISamplerCube = "isamplerCube", Cube, Int, false, false;
+    ISampler1DArray = "isampler1DArray", D1, Int, false, true;
+    ISampler2DArray = "isampler2DArray", D2, Int, false, true;
+    USampler1D = "usampler1D", D1, Uint, false, false;
+    USampler2D = "usampler2D", D2, Uint, false, false;
+    USampler3D = "usampler3D", D3, Uint, false, false;
+    USamplerCube = "usamplerCube", Cube, Uint, false, false;
+    USampler1DArray = "usampler1DArray", D1, Uint, false, true;
+    USampler2DArray = "usampler2DArray", D2, Uint, false, true;
+    Sampler2DRect = "sampler2DRect", Rect, Float, false, false;
+    Sampler2DRectShadow = "sampler2DRectShadow", Rect, Float, true, false;
+    ISampler2DRect = "isampler2DRect", Rect, Int, false, false;
+    USampler2DRect = "usampler2DRect", Rect, Uint, false, false;
+    SamplerBuffer = "samplerBuffer", Buffer, Float, false, false;
+    ISamplerBuffer = "isamplerBuffer", Buffer, Int, false, false;
+    USamplerBuffer = "usamplerBuffer", Buffer, Uint, false, false;
+    Sampler2DMS = "sampler2DMS", Ms, Float, false, false;
+    ISampler2DMS = "isampler2DMS", Ms, Int, false, false;
+    USampler2DMS = "usampler2DMS", Ms, Uint, false, false;
+    Sampler2DMSArray = "sampler2DMSArray", Ms, Float, false, true;
+    ISampler2DMSArray = "isampler2DMSArray", Ms, Int, false, true;
+    USampler2DMSArray = "usampler2DMSArray", Ms, Uint, false, true;
+}
+
+/// The texture target of a [`SamplerKind`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+pub enum SamplerDim {
+    D1,
+    D2,
+    D3,
+    Cube,
+    /// `GL_TEXTURE_RECTANGLE`: unnormalized coordinates, no mipmaps.
+    Rect,
+    /// `GL_TEXTURE_BUFFER`: texels fetched by index only.
+    Buffer,
+    /// `GL_TEXTURE_2D_MULTISAMPLE`: texels fetched by sample only.
+    Ms,
+}
+
+/// What the components of a [`SamplerKind`]'s lookups are.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+pub enum SamplerResult {
+    Float,
+    Int,
+    Uint,
 }
 
 /// Index of a struct declaration in [`crate::ir::Module::structs`].

@@ -65,6 +65,10 @@ fn complete_texture<'a>(
         SamplerKind::Sampler2D | SamplerKind::Sampler2DShadow => &unit.tex_2d,
         SamplerKind::Sampler3D => &unit.tex_3d,
         SamplerKind::SamplerCube => &unit.cube,
+        // The lowering refuses lookups on the other sampler types; a
+        // request naming one finds no texture (the incomplete-texture
+        // result).
+        _ => return None,
     };
     let tex = tex.as_deref()?;
     Some((tex, tex.last_level()?))

@@ -1,11 +1,15 @@
 //! Built-in functions other than texture lookups: component-wise
 //! application with scalar broadcasting, the geometric functions expanded
 //! into ops (`dot`, `length`, `normalize`, `reflect`, `refract`...), matrix
-//! and vector-relational functions, derivatives, noise, `ftransform`.
+//! and vector-relational functions, derivatives, noise, `ftransform`; the
+//! integer and bool-selector overloads of GLSL 1.30 as compares and
+//! selects; `determinant`/`inverse` through `glsl::math::matrix`, the
+//! formulas constant folding uses.
 
 use super::textures::is_texture;
 use super::{kind_of, unsupported, Lowerer, Val, R};
 use crate::program::{Op, Reg, F1, F2, F3};
+use crate::ExecError;
 use glsl::builtins::BuiltinFn;
 use glsl::ir::Expr;
 use glsl::types::{Base, Scalar, Type};
@@ -42,7 +46,115 @@ fn fadd_op(d: Reg, x: &[Reg]) -> Op {
     }
 }
 
+/// One op per operation of `glsl::math::matrix`'s formulas.
+struct EmitArith<'a, 'm>(&'a mut Lowerer<'m>);
+
+impl glsl::math::matrix::Arith for EmitArith<'_, '_> {
+    type V = Reg;
+    type E = ExecError;
+    fn mul(&mut self, a: Reg, b: Reg) -> R<Reg> {
+        self.0.fbin(|d, a, b| Op::FMul { d, a, b }, a, b)
+    }
+    fn add(&mut self, a: Reg, b: Reg) -> R<Reg> {
+        self.0.fbin(|d, a, b| Op::FAdd { d, a, b }, a, b)
+    }
+    fn sub(&mut self, a: Reg, b: Reg) -> R<Reg> {
+        self.0.fbin(|d, a, b| Op::FSub { d, a, b }, a, b)
+    }
+    fn div(&mut self, a: Reg, b: Reg) -> R<Reg> {
+        self.0.fbin(|d, a, b| Op::FDiv { d, a, b }, a, b)
+    }
+    fn neg(&mut self, a: Reg) -> R<Reg> {
+        let d = self.0.temp()?;
+        self.0.emit(Op::FNeg { d, a })?;
+        Ok(d)
+    }
+}
+
 impl<'m> Lowerer<'m> {
+    fn iconst(&mut self, i: i32) -> R<Reg> {
+        self.konst(i as u32)
+    }
+
+    /// `c ? a : b` component-wise.
+    fn select(&mut self, c: &Val, a: &Val, b: &Val) -> R<Val> {
+        self.map(&[c, a, b], |d, x| Op::Select {
+            d,
+            c: x[0],
+            a: x[1],
+            b: x[2],
+        })
+    }
+
+    /// `b < a` (ints) component-wise.
+    fn ilt(&mut self, a: &Val, b: &Val) -> R<Val> {
+        self.map(&[a, b], |d, x| Op::ILt {
+            d,
+            a: x[0],
+            b: x[1],
+        })
+    }
+
+    /// `min` of ints: `b < a ? b : a` (GLSL 1.30 §8.3).
+    fn imin(&mut self, a: &Val, b: &Val) -> R<Val> {
+        let c = self.ilt(b, a)?;
+        self.select(&c, b, a)
+    }
+
+    /// `max` of ints: `a < b ? b : a`.
+    fn imax(&mut self, a: &Val, b: &Val) -> R<Val> {
+        let c = self.ilt(a, b)?;
+        self.select(&c, b, a)
+    }
+
+    /// The integer overloads of `abs`, `sign`, `min`, `max`, `clamp`.
+    fn int_builtin(&mut self, f: BuiltinFn, v: &[Val]) -> R<Val> {
+        use BuiltinFn as B;
+        let arg = |i: usize| -> R<&Val> {
+            match v.get(i) {
+                Some(x) if !x.is_empty() => Ok(x),
+                _ => unsupported(format!("{} is missing an argument", f.name())),
+            }
+        };
+        let zero = vec![self.iconst(0)?];
+        match f {
+            B::Abs => {
+                let x = arg(0)?.clone();
+                let neg = self.map(&[&x], |d, a| Op::INeg { d, a: a[0] })?;
+                let c = self.ilt(&x, &zero)?;
+                self.select(&c, &neg, &x)
+            }
+            B::Sign => {
+                let x = arg(0)?.clone();
+                let (one, minus) = (vec![self.iconst(1)?], vec![self.iconst(-1)?]);
+                let pos = self.ilt(&zero, &x)?;
+                let neg = self.ilt(&x, &zero)?;
+                let low = self.select(&neg, &minus, &zero)?;
+                self.select(&pos, &one, &low)
+            }
+            B::Min => self.imin(arg(0)?, arg(1)?),
+            B::Max => self.imax(arg(0)?, arg(1)?),
+            B::Clamp => {
+                let m = self.imax(arg(0)?, arg(1)?)?;
+                self.imin(&m, arg(2)?)
+            }
+            _ => unsupported(format!("integer {} is not implemented", f.name())),
+        }
+    }
+
+    /// `modf(x, out i)`: writes `trunc(x)` to `i`, returns the fraction.
+    fn modf(&mut self, args: &[Expr]) -> R<Val> {
+        let [x, whole] = args else {
+            return unsupported("modf takes two arguments");
+        };
+        let x = self.expr(x)?;
+        let place = self.place(whole)?;
+        let w = self.map1(&x, F1::Trunc)?;
+        let fract = self.map1(&x, F1::ModfFract)?;
+        self.write(&place, &w)?;
+        Ok(fract)
+    }
+
     /// Component-wise application with scalar broadcasting.
     pub(super) fn map(&mut self, args: &[&Val], mut f: impl FnMut(Reg, &[Reg]) -> Op) -> R<Val> {
         let n = args.iter().map(|a| a.len()).max().unwrap_or(0);
@@ -142,8 +254,16 @@ impl<'m> Lowerer<'m> {
             let b = self.read(&vertex)?;
             return self.matmul(&a, mvp.ty, &b, vertex.ty);
         }
+        if f == B::Modf {
+            return self.modf(args);
+        }
         let refs: Vec<&Expr> = args.iter().collect();
         let v = self.operands(&refs)?;
+        let int_form = matches!(f, B::Abs | B::Sign | B::Min | B::Max | B::Clamp)
+            && args.first().is_some_and(|a| kind_of(a.ty) == Scalar::Int);
+        if int_form {
+            return self.int_builtin(f, &v);
+        }
         let arg = |i: usize| -> R<&Val> {
             match v.get(i) {
                 Some(x) if !x.is_empty() => Ok(x),
@@ -164,6 +284,61 @@ impl<'m> Lowerer<'m> {
             B::Acos => self.map1(arg(0)?, F1::Acos),
             B::Atan if args.len() == 1 => self.map1(arg(0)?, F1::Atan),
             B::Atan => self.map2(arg(0)?, arg(1)?, F2::Atan2),
+            B::Sinh => self.map1(arg(0)?, F1::Sinh),
+            B::Cosh => self.map1(arg(0)?, F1::Cosh),
+            B::Tanh => self.map1(arg(0)?, F1::Tanh),
+            B::Asinh => self.map1(arg(0)?, F1::Asinh),
+            B::Acosh => self.map1(arg(0)?, F1::Acosh),
+            B::Atanh => self.map1(arg(0)?, F1::Atanh),
+            B::Trunc => self.map1(arg(0)?, F1::Trunc),
+            B::Round => self.map1(arg(0)?, F1::Round),
+            B::RoundEven => self.map1(arg(0)?, F1::RoundEven),
+            B::IsNan => {
+                // NaN is the one value unequal to itself.
+                let x = arg(0)?.clone();
+                let eq = self.map(&[&x, &x], |d, v| Op::FEq {
+                    d,
+                    a: v[0],
+                    b: v[1],
+                })?;
+                self.map(&[&eq], |d, v| Op::Not { d, a: v[0] })
+            }
+            B::IsInf => {
+                let a = self.map1(arg(0)?, F1::Abs)?;
+                let inf = vec![self.fconst(f32::INFINITY)?];
+                self.map(&[&a, &inf], |d, v| Op::FEq {
+                    d,
+                    a: v[0],
+                    b: v[1],
+                })
+            }
+            B::FloatBitsToInt => {
+                let x = arg(0)?.clone();
+                self.copy(&x)
+            }
+            B::IntBitsToFloat => self.map1(arg(0)?, F1::FlushBits),
+            // mix(x, y, bvec a): y where a is true.
+            B::Mix if args.get(2).is_some_and(|a| kind_of(a.ty) == Scalar::Bool) => {
+                let (x, y, a) = (arg(0)?.clone(), arg(1)?.clone(), arg(2)?.clone());
+                self.select(&a, &y, &x)
+            }
+            B::Determinant | B::Inverse => {
+                let m = arg(0)?.clone();
+                let n = match args[0].ty.base {
+                    Base::Matrix { cols, rows } if cols == rows => cols as usize,
+                    _ => return unsupported(format!("{} of a non-square matrix", f.name())),
+                };
+                let mut a = EmitArith(self);
+                let r = if f == B::Determinant {
+                    glsl::math::matrix::determinant(&mut a, &m, n).map(|r| r.map(|d| vec![d]))
+                } else {
+                    glsl::math::matrix::inverse(&mut a, &m, n)
+                };
+                match r {
+                    Some(r) => r,
+                    None => unsupported(format!("{} of a malformed matrix", f.name())),
+                }
+            }
             B::Pow => self.map2(arg(0)?, arg(1)?, F2::Pow),
             B::Exp => self.map1(arg(0)?, F1::Exp),
             B::Log => self.map1(arg(0)?, F1::Log),

@@ -34,6 +34,21 @@ pub(super) fn is_texture(f: BuiltinFn) -> bool {
             | B::Shadow2DLod
             | B::Shadow1DProjLod
             | B::Shadow2DProjLod
+            | B::TextureSize
+            | B::Texture
+            | B::TextureProj
+            | B::TextureLod
+            | B::TextureOffset
+            | B::TexelFetch
+            | B::TexelFetchOffset
+            | B::TextureProjOffset
+            | B::TextureLodOffset
+            | B::TextureProjLod
+            | B::TextureProjLodOffset
+            | B::TextureGrad
+            | B::TextureGradOffset
+            | B::TextureProjGrad
+            | B::TextureProjGradOffset
     )
 }
 
@@ -50,9 +65,31 @@ impl<'m> Lowerer<'m> {
         };
         let coord = coord.clone();
         let extra = v.get(2).and_then(|x| x.first()).copied();
+        // The lookups of GLSL 1.30 the texture op has no form for yet.
+        if matches!(
+            f,
+            B::TextureSize
+                | B::TextureOffset
+                | B::TexelFetch
+                | B::TexelFetchOffset
+                | B::TextureProjOffset
+                | B::TextureLodOffset
+                | B::TextureProjLodOffset
+                | B::TextureGrad
+                | B::TextureGradOffset
+                | B::TextureProjGrad
+                | B::TextureProjGradOffset
+        ) {
+            return unsupported(format!(
+                "`{}' is not implemented by the pipeline yet",
+                f.name()
+            ));
+        }
         let proj = matches!(
             f,
-            B::Texture1DProj
+            B::TextureProj
+                | B::TextureProjLod
+                | B::Texture1DProj
                 | B::Texture1DProjLod
                 | B::Texture2DProj
                 | B::Texture2DProjLod
@@ -65,7 +102,9 @@ impl<'m> Lowerer<'m> {
         );
         let explicit = matches!(
             f,
-            B::Texture1DLod
+            B::TextureLod
+                | B::TextureProjLod
+                | B::Texture1DLod
                 | B::Texture1DProjLod
                 | B::Texture2DLod
                 | B::Texture2DProjLod
@@ -83,6 +122,14 @@ impl<'m> Lowerer<'m> {
             SamplerKind::Sampler3D | SamplerKind::SamplerCube => (3, false),
             SamplerKind::Sampler1DShadow => (1, true),
             SamplerKind::Sampler2DShadow => (2, true),
+            // Arrays, rectangles, buffers, multisample, cube shadows and
+            // integer results: the texture units have no such targets.
+            other => {
+                return unsupported(format!(
+                    "lookups on `{}' samplers are not implemented by the pipeline yet",
+                    other.name()
+                ))
+            }
         };
         let need = if shadow { 3 } else { dims };
         if coord.len() < need || (proj && coord.len() < need + 1) {
@@ -127,6 +174,11 @@ impl<'m> Lowerer<'m> {
             d: d[0],
         });
         self.emit(Op::Texture { index })?;
+        // The lookups of 1.30 and later return the comparison alone from a
+        // shadow sampler (`float`), the older ones a `vec4`.
+        if shadow && !f.name().starts_with("shadow") {
+            return Ok(vec![d[0]]);
+        }
         Ok(d)
     }
 }

@@ -34,10 +34,10 @@ fn parse_type(name: &str) -> Option<Type> {
 }
 
 /// (function, argument types, result type) of every prototype in the
-/// vertex-stage 1.20 prelude with non-sampler arguments.
-fn overloads() -> Vec<(BuiltinFn, String, Vec<Type>, Type)> {
+/// vertex-stage prelude of `lang` with non-sampler, `in` arguments.
+fn overloads(lang: glsl::Language) -> Vec<(BuiltinFn, String, Vec<Type>, Type)> {
     let mut out = Vec::new();
-    for line in prelude(glsl::Language::new(Version::V120, true), Stage::Vertex).lines() {
+    for line in prelude(lang, Stage::Vertex).lines() {
         let Some(line) = line.strip_suffix(");") else {
             continue;
         };
@@ -63,8 +63,23 @@ fn overloads() -> Vec<(BuiltinFn, String, Vec<Type>, Type)> {
     out
 }
 
-const FLOATS: [f32; 14] = [
-    -2.5, -1.0, -0.75, -0.3, 0.0, 0.25, 0.5, 0.7, 1.0, 1.5, 3.25, 10.0, -0.0, 0.9,
+const FLOATS: [f32; 16] = [
+    -2.5,
+    -1.0,
+    -0.75,
+    -0.3,
+    0.0,
+    0.25,
+    0.5,
+    0.7,
+    1.0,
+    1.5,
+    3.25,
+    10.0,
+    -0.0,
+    0.9,
+    f32::INFINITY,
+    2.5,
 ];
 const INTS: [i32; 6] = [-3, -1, 0, 1, 2, 5];
 
@@ -113,7 +128,26 @@ fn tname(ty: Type) -> String {
 fn every_overload_matches_constant_folding() {
     let mut checked = 0;
     let mut skipped = Vec::new();
-    for (f, name, params, ret) in overloads() {
+    let v120 = glsl::Language::new(Version::V120, true);
+    let v330 = glsl::Language::new(Version::V330, true);
+    let older = overloads(v120);
+    // 1.20's overloads, then those GLSL 1.30 to 3.30 add (compatibility
+    // profile, so that the test's `varying` and `gl_Position` exist).
+    let newer = overloads(v330)
+        .into_iter()
+        .filter(|(_, n, p, r)| {
+            !older
+                .iter()
+                .any(|(_, n2, p2, r2)| n == n2 && p == p2 && r == r2)
+        })
+        .map(|o| (o, "330 compatibility"));
+    let all: Vec<_> = older
+        .iter()
+        .cloned()
+        .map(|o| (o, "120"))
+        .chain(newer)
+        .collect();
+    for ((f, name, params, ret), version) in all {
         if matches!(
             f,
             BuiltinFn::Ftransform
@@ -136,7 +170,7 @@ fn every_overload_matches_constant_folding() {
             .collect();
         let call_args: Vec<String> = (0..params.len()).map(|i| format!("a{i}")).collect();
         let src = format!(
-            "#version 120\n{decls}varying {} o;\nvoid main() {{ gl_Position = vec4(0.0); o = {}({}({})); }}",
+            "#version {version}\n{decls}varying {} o;\nvoid main() {{ gl_Position = vec4(0.0); o = {}({}({})); }}",
             tname(out_ty),
             tname(out_ty),
             name,
@@ -187,7 +221,7 @@ fn every_overload_matches_constant_folding() {
         }
     }
     assert!(skipped.is_empty(), "not folded: {skipped:?}");
-    assert!(checked > 1500, "only {checked} cases");
+    assert!(checked > 2000, "only {checked} cases");
 }
 
 #[test]
@@ -208,4 +242,108 @@ fn noise_matches_glsl_math() {
     }
     let n1 = k.interface().output("n1").unwrap().offset;
     assert_eq!(b.outputs[n1][0], glsl::math::noise1(&p[..2]));
+}
+
+#[test]
+fn modf_writes_the_whole_part_and_returns_the_fraction() {
+    let k = kernel(
+        Stage::Vertex,
+        "#version 130
+uniform vec2 x;
+varying vec2 whole;
+varying vec2 fraction;
+void main() { gl_Position = vec4(0.0); fraction = modf(x, whole); }",
+    );
+    let x = [-2.75f32, 3.5];
+    let u = uniforms(&k, &[("x", &x.map(f32::to_bits))]);
+    let mut b = Batch::for_kernel(&k, 1);
+    k.run(&mut b, &u, &NoTextures).expect("runs");
+    let w = k.interface().output("whole").expect("whole").offset;
+    let f = k.interface().output("fraction").expect("fraction").offset;
+    for (i, &v) in x.iter().enumerate() {
+        assert_eq!(b.outputs[w + i][0], glsl::math::trunc(v));
+        assert_eq!(b.outputs[f + i][0], glsl::math::modf_fract(v));
+    }
+    assert_eq!(b.outputs[f][0], -0.75);
+}
+
+#[test]
+fn what_the_pipeline_cannot_run_is_refused_when_lowered() {
+    for (stage, src, what) in [
+        (
+            Stage::Fragment,
+            "#version 130\nuniform sampler2DArray s;\nvoid main() { gl_FragColor = texture(s, vec3(0.5)); }",
+            "sampler2DArray",
+        ),
+        (
+            Stage::Fragment,
+            "#version 130\nuniform isampler2D s;\nvoid main() { gl_FragColor = vec4(texture(s, vec2(0.5))); }",
+            "isampler2D",
+        ),
+        (
+            Stage::Fragment,
+            "#version 130\nuniform sampler2D s;\nvoid main() { gl_FragColor = vec4(textureSize(s, 0), 0.0, 1.0); }",
+            "textureSize",
+        ),
+        (
+            Stage::Vertex,
+            "#version 130\nvoid main() { gl_Position = vec4(float(gl_VertexID)); }",
+            "gl_VertexID",
+        ),
+    ] {
+        let s = super::link_one(stage, src).unwrap_or_else(|e| panic!("{e}"));
+        match crate::Kernel::new(&s) {
+            Err(crate::ExecError::Unsupported(m)) => assert!(m.contains(what), "{m}"),
+            Err(e) => panic!("{what}: {e}"),
+            Ok(_) => panic!("{what}: lowered"),
+        }
+    }
+}
+
+#[test]
+fn glsl130_lookups_lower_like_their_120_forms() {
+    // The same program, apart from the header line and the statements'
+    // source spans.
+    let body = |stage: Stage, v: u32, lookups: &str| {
+        let (input, output) = match stage {
+            Stage::Vertex => ("attribute", "gl_Position"),
+            Stage::Fragment => ("varying", "gl_FragColor"),
+        };
+        let k = kernel(
+            stage,
+            &format!(
+                "#version {v}\nuniform sampler2D s;\nuniform sampler2DShadow z;\n{input} vec4 p;\nvoid main() {{ {output} = {lookups}; }}"
+            ),
+        );
+        let text = k.print_lowered();
+        text.lines()
+            .skip(1)
+            .filter(|l| !l.starts_with("; stmt"))
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    assert_eq!(
+        body(
+            Stage::Fragment,
+            120,
+            "texture2D(s, p.xy) + texture2DProj(s, p, 1.5) + shadow2D(z, p.xyz).xxxx"
+        ),
+        body(
+            Stage::Fragment,
+            130,
+            "texture(s, p.xy) + textureProj(s, p, 1.5) + vec4(texture(z, p.xyz))"
+        )
+    );
+    assert_eq!(
+        body(
+            Stage::Vertex,
+            120,
+            "texture2DLod(s, p.xy, 2.0) + texture2DProjLod(s, p.xyw, 1.0)"
+        ),
+        body(
+            Stage::Vertex,
+            130,
+            "textureLod(s, p.xy, 2.0) + textureProjLod(s, p.xyw, 1.0)"
+        )
+    );
 }

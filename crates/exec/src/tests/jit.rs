@@ -63,7 +63,7 @@ impl Rng {
 /// Registers `0..FLOAT_REGS` hold floats, the rest ints and bools.
 const FLOAT_REGS: u32 = REGS / 2;
 
-const F1S: [F1; 19] = [
+const F1S: [F1; 30] = [
     F1::Radians,
     F1::Degrees,
     F1::Sin,
@@ -83,6 +83,17 @@ const F1S: [F1; 19] = [
     F1::Floor,
     F1::Ceil,
     F1::Fract,
+    F1::Sinh,
+    F1::Cosh,
+    F1::Tanh,
+    F1::Asinh,
+    F1::Acosh,
+    F1::Atanh,
+    F1::Trunc,
+    F1::Round,
+    F1::RoundEven,
+    F1::ModfFract,
+    F1::FlushBits,
 ];
 const F2S: [F2; 6] = [F2::Atan2, F2::Pow, F2::Mod, F2::Min, F2::Max, F2::Step];
 const F3S: [F3; 3] = [F3::Clamp, F3::Mix, F3::SmoothStep];

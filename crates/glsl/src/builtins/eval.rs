@@ -1,13 +1,14 @@
 //! Constant folding of built-in function calls.
 //!
-//! GLSL 1.20 §4.3.3: "a built-in function call whose arguments are all
+//! GLSL 1.30 §4.3.3 (and 1.20's, and every later version's): "a built-in function call whose arguments are all
 //! constant expressions, with the exception of the texture lookup
 //! functions, the noise functions, and ftransform" is a constant expression,
 //! and dFdx, dFdy and fwidth "must return 0 when evaluated inside an
 //! initializer with an argument that is a constant expression". GLSL 1.10
 //! §4.3.2 allows no function calls in constant initializers at all; that
 //! version rule is the analyzer's to enforce, this module folds whatever it
-//! is given.
+//! is given. Functions with an `out` parameter (`modf`) are not folded:
+//! their call has an effect besides its value.
 //!
 //! Every function follows the formula its §8 entry gives, one `f32`
 //! rounding per operation, with the deterministic scalar functions of
@@ -60,6 +61,38 @@ fn eval(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<Vec<ConstScal
         Acos => unary(args, math::acos),
         Atan if args.len() == 1 => unary(args, math::atan),
         Atan => binary(args, math::atan2),
+        Sinh => unary(args, math::sinh),
+        Cosh => unary(args, math::cosh),
+        Tanh => unary(args, math::tanh),
+        Asinh => unary(args, math::asinh),
+        Acosh => unary(args, math::acosh),
+        Atanh => unary(args, math::atanh),
+        Trunc => unary(args, math::trunc),
+        Round => unary(args, math::round),
+        RoundEven => unary(args, math::round_even),
+        Modf => None,
+        IsNan => float_test(args, f32::is_nan),
+        IsInf => float_test(args, f32::is_infinite),
+        // The bits of the (flushed) float, and back.
+        FloatBitsToInt => {
+            let [x] = args else { return None };
+            Some(
+                floats(x)?
+                    .iter()
+                    .map(|f| ConstScalar::Int(f.to_bits() as i32))
+                    .collect(),
+            )
+        }
+        IntBitsToFloat => {
+            let [x] = args else { return None };
+            Some(
+                ints(x)?
+                    .iter()
+                    .map(|&i| ConstScalar::Float(f32::from_bits(i as u32)))
+                    .collect(),
+            )
+        }
+        Abs | Sign | Min | Max | Clamp | Mix if is_int_or_bool_call(f, args) => int_call(f, args),
         Pow => binary(args, math::pow),
         Exp => unary(args, math::exp),
         Log => unary(args, math::log),
@@ -98,6 +131,20 @@ fn eval(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<Vec<ConstScal
         }
         OuterProduct => outer_product(args),
         Transpose => transpose(args),
+        Determinant => {
+            let [m] = args else { return None };
+            let n = square(m)?;
+            Some(vec![ConstScalar::Float(
+                math::matrix::determinant(&mut F32Arith, &floats(m)?, n)?.ok()?,
+            )])
+        }
+        Inverse => {
+            let [m] = args else { return None };
+            let n = square(m)?;
+            Some(float_result(
+                math::matrix::inverse(&mut F32Arith, &floats(m)?, n)?.ok()?,
+            ))
+        }
         LessThan => compare(args, |a, b| a < b, |a, b| a < b),
         LessThanEqual => compare(args, |a, b| a <= b, |a, b| a <= b),
         GreaterThan => compare(args, |a, b| a > b, |a, b| a > b),
@@ -124,7 +171,110 @@ fn eval(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<Vec<ConstScal
         | Texture2DLod | Texture2DProjLod | Texture3D | Texture3DProj | Texture3DLod
         | Texture3DProjLod | TextureCube | TextureCubeLod | Shadow1D | Shadow2D | Shadow1DProj
         | Shadow2DProj | Shadow1DLod | Shadow2DLod | Shadow1DProjLod | Shadow2DProjLod => None,
+        TextureSize
+        | Texture
+        | TextureProj
+        | TextureLod
+        | TextureOffset
+        | TexelFetch
+        | TexelFetchOffset
+        | TextureProjOffset
+        | TextureLodOffset
+        | TextureProjLod
+        | TextureProjLodOffset
+        | TextureGrad
+        | TextureGradOffset
+        | TextureProjGrad
+        | TextureProjGradOffset => None,
     }
+}
+
+/// `f32` arithmetic, each operation rounded and flushed as the executor
+/// does it, for [`math::matrix`].
+struct F32Arith;
+
+impl math::matrix::Arith for F32Arith {
+    type V = f32;
+    type E = ();
+    fn mul(&mut self, a: f32, b: f32) -> Result<f32, ()> {
+        Ok(math::flush_denormal(a * b))
+    }
+    fn add(&mut self, a: f32, b: f32) -> Result<f32, ()> {
+        Ok(math::flush_denormal(a + b))
+    }
+    fn sub(&mut self, a: f32, b: f32) -> Result<f32, ()> {
+        Ok(math::flush_denormal(a - b))
+    }
+    fn div(&mut self, a: f32, b: f32) -> Result<f32, ()> {
+        Ok(math::flush_denormal(a / b))
+    }
+    fn neg(&mut self, a: f32) -> Result<f32, ()> {
+        Ok(-a)
+    }
+}
+
+/// The size of a square matrix.
+fn square(m: &ConstValue) -> Option<usize> {
+    match m.ty.base {
+        Base::Matrix { cols, rows } if cols == rows && !m.ty.is_array() => Some(cols as usize),
+        _ => None,
+    }
+}
+
+/// `isnan`/`isinf`: a bool per float component.
+fn float_test(args: &[ConstValue], f: fn(f32) -> bool) -> Option<Vec<ConstScalar>> {
+    let [x] = args else { return None };
+    Some(
+        floats(x)?
+            .into_iter()
+            .map(|v| ConstScalar::Bool(f(v)))
+            .collect(),
+    )
+}
+
+/// The integer forms of `abs`, `sign`, `min`, `max`, `clamp` and the
+/// bool-selector form of `mix` (GLSL 1.30 §8.3).
+fn is_int_or_bool_call(f: BuiltinFn, args: &[ConstValue]) -> bool {
+    let kind = |a: &ConstValue| a.ty.scalar();
+    match f {
+        BuiltinFn::Mix => args.get(2).and_then(kind) == Some(crate::types::Scalar::Bool),
+        _ => args.first().and_then(kind) == Some(crate::types::Scalar::Int),
+    }
+}
+
+fn int_call(f: BuiltinFn, args: &[ConstValue]) -> Option<Vec<ConstScalar>> {
+    if f == BuiltinFn::Mix {
+        // mix(x, y, a): y where a is true, else x.
+        let [x, y, a] = args else { return None };
+        let a = bools(a)?;
+        if x.components.len() != a.len() || y.components.len() != a.len() {
+            return None;
+        }
+        return Some(
+            a.iter()
+                .zip(x.components.iter().zip(&y.components))
+                .map(|(&a, (x, y))| if a { *y } else { *x })
+                .collect(),
+        );
+    }
+    let vals = args.iter().map(ints).collect::<Option<Vec<_>>>()?;
+    let n = vals.iter().map(Vec::len).max()?;
+    if vals.iter().any(|v| v.len() != n && v.len() != 1) {
+        return None;
+    }
+    let at = |k: usize, i: usize| vals[k][if vals[k].len() == 1 { 0 } else { i }];
+    let one = |i: usize| -> Option<i32> {
+        Some(match (f, vals.len()) {
+            (BuiltinFn::Abs, 1) => at(0, i).wrapping_abs(),
+            (BuiltinFn::Sign, 1) => at(0, i).signum(),
+            (BuiltinFn::Min, 2) => at(0, i).min(at(1, i)),
+            (BuiltinFn::Max, 2) => at(0, i).max(at(1, i)),
+            // min(max(x, lo), hi), whatever the order of lo and hi.
+            (BuiltinFn::Clamp, 3) => at(0, i).max(at(1, i)).min(at(2, i)),
+            _ => return None,
+        })
+    };
+    (0..n).map(|i| one(i).map(ConstScalar::Int)).collect()
 }
 
 /// The components of a float scalar, vector or matrix.
@@ -423,7 +573,7 @@ mod tests {
         );
         // Nor int arguments to a float function.
         assert_eq!(
-            eval_builtin(BuiltinFn::Abs, &[ivec(&[1, 2])], Type::vec(Scalar::Int, 2)),
+            eval_builtin(BuiltinFn::Sin, &[ivec(&[1, 2])], Type::vec(Scalar::Int, 2)),
             None
         );
     }
@@ -485,5 +635,88 @@ mod tests {
             Type::vec(Scalar::Float, 2),
         );
         assert_eq!(floats_of(r), vec![0.0, 0.0]);
+    }
+
+    #[test]
+    fn glsl130_common_functions() {
+        let v4 = Type::vec(Scalar::Float, 4);
+        let x = vec(&[-2.5, -0.5, 0.5, 3.5]);
+        let r = |f| floats_of(eval_builtin(f, std::slice::from_ref(&x), v4));
+        assert_eq!(r(BuiltinFn::Trunc), vec![-2.0, -0.0, 0.0, 3.0]);
+        assert_eq!(r(BuiltinFn::Round), vec![-3.0, -1.0, 1.0, 4.0]);
+        assert_eq!(r(BuiltinFn::RoundEven), vec![-2.0, -0.0, 0.0, 4.0]);
+        assert_eq!(r(BuiltinFn::Sinh)[2], math::sinh(0.5));
+        assert_eq!(r(BuiltinFn::Atanh)[1], math::atanh(-0.5));
+        let b = eval_builtin(
+            BuiltinFn::IsInf,
+            &[vec(&[f32::INFINITY, 1.0])],
+            Type::vec(Scalar::Bool, 2),
+        )
+        .unwrap();
+        assert_eq!(
+            b.components,
+            vec![ConstScalar::Bool(true), ConstScalar::Bool(false)]
+        );
+        let b = eval_builtin(BuiltinFn::IsNan, &[vec(&[f32::NAN])], Type::BOOL).unwrap();
+        assert_eq!(b.components, vec![ConstScalar::Bool(true)]);
+        // Integer overloads.
+        let i2 = Type::vec(Scalar::Int, 2);
+        let c = eval_builtin(
+            BuiltinFn::Clamp,
+            &[ivec(&[-5, 9]), ivec(&[0]), ivec(&[4])],
+            i2,
+        )
+        .unwrap();
+        assert_eq!(c.components, vec![ConstScalar::Int(0), ConstScalar::Int(4)]);
+        let a = eval_builtin(BuiltinFn::Abs, &[ivec(&[i32::MIN, -3])], i2).unwrap();
+        assert_eq!(
+            a.components,
+            vec![ConstScalar::Int(i32::MIN), ConstScalar::Int(3)]
+        );
+        // mix with a bool selector.
+        let sel = ConstValue {
+            ty: Type::vec(Scalar::Bool, 2),
+            components: vec![ConstScalar::Bool(true), ConstScalar::Bool(false)],
+        };
+        let m = eval_builtin(
+            BuiltinFn::Mix,
+            &[vec(&[1.0, 2.0]), vec(&[3.0, 4.0]), sel],
+            Type::vec(Scalar::Float, 2),
+        );
+        assert_eq!(floats_of(m), vec![3.0, 2.0]);
+        // Bits, both ways; modf is not folded (it writes its argument).
+        let bits = eval_builtin(BuiltinFn::FloatBitsToInt, &[vec(&[1.0])], Type::INT).unwrap();
+        assert_eq!(bits.components, vec![ConstScalar::Int(0x3f80_0000)]);
+        let back = eval_builtin(
+            BuiltinFn::IntBitsToFloat,
+            &[ivec(&[0x3f80_0000])],
+            Type::FLOAT,
+        );
+        assert_eq!(floats_of(back), vec![1.0]);
+        let sub = eval_builtin(BuiltinFn::IntBitsToFloat, &[ivec(&[1])], Type::FLOAT);
+        assert_eq!(floats_of(sub), vec![0.0]);
+        assert_eq!(
+            eval_builtin(BuiltinFn::Modf, &[vec(&[1.5]), vec(&[0.0])], Type::FLOAT),
+            None
+        );
+    }
+
+    #[test]
+    fn determinant_and_inverse() {
+        let m = ConstValue {
+            ty: Type::mat(2, 2),
+            components: [2.0, 0.0, 1.0, 4.0]
+                .iter()
+                .map(|&f| ConstScalar::Float(f))
+                .collect(),
+        };
+        let d = eval_builtin(
+            BuiltinFn::Determinant,
+            std::slice::from_ref(&m),
+            Type::FLOAT,
+        );
+        assert_eq!(floats_of(d), vec![8.0]);
+        let i = eval_builtin(BuiltinFn::Inverse, &[m], Type::mat(2, 2));
+        assert_eq!(floats_of(i), vec![0.5, 0.0, -0.125, 0.25]);
     }
 }

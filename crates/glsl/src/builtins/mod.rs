@@ -1,4 +1,4 @@
-//! Built-in functions, variables, constants and uniforms of GLSL 1.10/1.20.
+//! Built-in functions, variables, constants and uniforms of GLSL 1.10 to 3.30.
 //!
 //! [`BuiltinFn`] (defined in [`crate::builtin_fn`], the IR's vocabulary)
 //! names every built-in function.
@@ -15,9 +15,11 @@ mod prelude;
 pub use crate::builtin_fn::BuiltinFn;
 pub use eval::eval_builtin;
 pub use prelude::prelude;
+pub(crate) use prelude::replacement;
 
-/// The built-in struct types (GLSL 1.10/1.20 §7.5), in both versions and
-/// stages. User shaders may name them as types.
+/// The built-in struct types (GLSL 1.10/1.20 §7.5), in every version and
+/// stage of the compatibility profile (the core profile keeps
+/// `gl_DepthRangeParameters` only). User shaders may name them as types.
 pub const BUILTIN_STRUCT_NAMES: &[&str] = &[
     "gl_DepthRangeParameters",
     "gl_PointParameters",

@@ -1,14 +1,25 @@
 //! The built-in environment of a shader, as GLSL source.
 //!
-//! [`prelude`] returns the declarations of everything GLSL 1.10 / 1.20 make
-//! visible to a shader of one stage before its first line: the constants of
-//! §7.4, the uniform state of §7.5 (with its struct types), the stage's
-//! special variables, attributes and varyings (§7.1-7.3, §7.6) and the
-//! prototypes of every built-in function of §8. The semantic analyzer parses
-//! it in a privileged mode (where `gl_` names, `varying bool` and bodiless
-//! prototypes of built-ins are accepted) before the user's shader.
+//! [`prelude`] returns the declarations of everything a language
+//! ([`Language`]: version and profile) makes visible to a shader of one
+//! stage before its first line: the constants of §7.4, the uniform state of
+//! §7.5 (with its struct types), the stage's special variables, inputs and
+//! outputs (§7.1-7.3, §7.6) and the prototypes of every built-in function
+//! of §8. The semantic analyzer parses it in a privileged mode (where `gl_`
+//! names, `varying bool`, `attribute int` and bodiless prototypes of
+//! built-ins are accepted) before the user's shader.
 //!
-//! Access rules are expressed with ordinary qualifiers:
+//! Where each built-in exists is stated once, beside its declaration, as
+//! a [`Where`] (first version, last version, stage, profile) in one of
+//! three tables: [`VARIABLES`] (constants, uniforms, stage variables),
+//! [`FUNCTIONS`] (§8.1-8.6, 8.8, 8.9 and the pre-1.30 lookups of §8.7) and
+//! [`SAMPLERS`] (the lookups of §8.7 from 1.30 on, one row per sampler
+//! type). The text of a language is those tables filtered by it, in table
+//! order. [`REPLACEMENTS`] says what to write instead of what the core
+//! profile removes.
+//!
+//! Access rules are expressed with ordinary qualifiers (the same in every
+//! version, since a built-in is never redeclared with another storage):
 //! - stage outputs (`gl_Position`, `gl_FragColor`, ...) are plain globals:
 //!   readable and writable;
 //! - vertex inputs are `attribute`s (read-only);
@@ -18,11 +29,20 @@
 //!   vertex shader).
 //!
 //! Nothing else is declared: a name missing from this text is not a
-//! built-in of that version and stage. The text starts with the matching
+//! built-in of that language and stage. The text starts with the matching
 //! `#version` line and has no other preprocessor directive.
+//!
+//! Unsigned integers do not exist yet (`uint`, `uvec*`); the overloads that
+//! need them are not declared. Each is one line of [`FUNCTIONS`] once they
+//! do (`genUType`/`uvec` expand already): `genUType min(genUType,
+//! genUType)`, `uvec min(uvec, uint)` and the same for `max`, `clamp`
+//! (`uvec clamp(uvec, uint, uint)`), `bvec lessThan(uvec, uvec)` and the
+//! other five relational functions (1.30), `genUType
+//! floatBitsToUint(genType)` and `genType uintBitsToFloat(genUType)`
+//! (3.30); the lookups on `usampler*` are a `"u"` in [`G_PREFIXES`].
 
 use crate::ir::Stage;
-use crate::lang::{Language, Version};
+use crate::lang::{Feature, Language, Version};
 use crate::limits;
 use std::fmt::Write;
 
@@ -32,74 +52,236 @@ pub fn prelude(lang: Language, stage: Stage) -> String {
     build(lang, stage)
 }
 
-/// `genType` of §8: the argument and result types of component-wise
-/// functions.
-const GEN_TYPES: [&str; 4] = ["float", "vec2", "vec3", "vec4"];
-
-fn build(lang: Language, stage: Stage) -> String {
-    let version = lang.version;
-    let mut out = String::with_capacity(32 * 1024);
-    // The preprocessor classifies keywords by the `#version` it sees, so the
-    // prelude states its own (`mat2x3` is a type only in 1.20).
-    if version.has_profiles() {
-        let _ = writeln!(out, "#version {} {}", version.number(), lang.profile.name());
-    } else {
-        let _ = writeln!(out, "#version {}", version.number());
-    }
-    let _ = writeln!(
-        out,
-        "// Built-in declarations of GLSL {} ({} shader).",
-        version.dotted(),
-        stage.name()
-    );
-    constants(&mut out);
-    uniform_state(&mut out, version);
-    match stage {
-        Stage::Vertex => vertex_variables(&mut out),
-        Stage::Fragment => fragment_variables(&mut out, version),
-    }
-    functions(&mut out, version, stage);
-    out
+/// Which stages a built-in exists in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Stages {
+    All,
+    Vertex,
+    Fragment,
 }
 
-/// §7.4, the same list in 1.10 and 1.20.
-fn constants(out: &mut String) {
-    let list: [(&str, u32); 12] = [
-        ("gl_MaxLights", limits::MAX_LIGHTS),
-        ("gl_MaxClipPlanes", limits::MAX_CLIP_PLANES),
-        ("gl_MaxTextureUnits", limits::MAX_TEXTURE_UNITS),
-        ("gl_MaxTextureCoords", limits::MAX_TEXTURE_COORDS),
-        ("gl_MaxVertexAttribs", limits::MAX_VERTEX_ATTRIBS),
-        (
-            "gl_MaxVertexUniformComponents",
-            limits::MAX_VERTEX_UNIFORM_COMPONENTS,
-        ),
-        ("gl_MaxVaryingFloats", limits::MAX_VARYING_FLOATS),
-        (
-            "gl_MaxVertexTextureImageUnits",
-            limits::MAX_VERTEX_TEXTURE_IMAGE_UNITS,
-        ),
-        (
-            "gl_MaxCombinedTextureImageUnits",
-            limits::MAX_COMBINED_TEXTURE_IMAGE_UNITS,
-        ),
-        ("gl_MaxTextureImageUnits", limits::MAX_TEXTURE_IMAGE_UNITS),
-        (
-            "gl_MaxFragmentUniformComponents",
-            limits::MAX_FRAGMENT_UNIFORM_COMPONENTS,
-        ),
-        ("gl_MaxDrawBuffers", limits::MAX_DRAW_BUFFERS),
-    ];
-    out.push_str("// section 7.4 built-in constants\n");
-    for (name, value) in list {
-        let _ = writeln!(out, "const int {name} = {value};");
+/// Where a built-in exists: from `since`, up to but not including `until`,
+/// in `stages`, and in both profiles or only the compatibility one.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Where {
+    since: Version,
+    until: Option<Version>,
+    stages: Stages,
+    /// Part of the fixed-function interface GLSL 1.40 removes from the
+    /// core profile ([`Feature::CompatibilityInterface`]).
+    compat_only: bool,
+}
+
+impl Where {
+    /// Every version, stage and profile.
+    const ALL: Where = Where {
+        since: Version::V110,
+        until: None,
+        stages: Stages::All,
+        compat_only: false,
+    };
+
+    const fn since(v: Version) -> Where {
+        Where {
+            since: v,
+            ..Where::ALL
+        }
+    }
+
+    const fn until(self, v: Version) -> Where {
+        Where {
+            until: Some(v),
+            ..self
+        }
+    }
+
+    const fn vs(self) -> Where {
+        Where {
+            stages: Stages::Vertex,
+            ..self
+        }
+    }
+
+    const fn fs(self) -> Where {
+        Where {
+            stages: Stages::Fragment,
+            ..self
+        }
+    }
+
+    const fn compat(self) -> Where {
+        Where {
+            compat_only: true,
+            ..self
+        }
+    }
+
+    fn holds(self, lang: Language, stage: Stage) -> bool {
+        lang.version >= self.since
+            && self.until.is_none_or(|u| lang.version < u)
+            && match self.stages {
+                Stages::All => true,
+                Stages::Vertex => stage == Stage::Vertex,
+                Stages::Fragment => stage == Stage::Fragment,
+            }
+            && (!self.compat_only || lang.allows(Feature::CompatibilityInterface))
     }
 }
 
-/// §7.5, visible to both stages.
-fn uniform_state(out: &mut String, version: Version) {
-    out.push_str(
-        "// section 7.5 built-in uniform state
+const COMPAT: Where = Where::ALL.compat();
+const VS: Where = Where::ALL.vs();
+const FS: Where = Where::ALL.fs();
+const V120: Version = Version::V120;
+const V130: Version = Version::V130;
+const V140: Version = Version::V140;
+const V150: Version = Version::V150;
+const V330: Version = Version::V330;
+
+/// A built-in constant: `const int NAME = VALUE;`.
+enum Item {
+    Const(&'static str, u32),
+    /// Declarations written out.
+    Text(&'static str),
+}
+
+/// Built-in constants (§7.4), uniform state (§7.5) and stage variables
+/// (§7.1-7.3, §7.6), in the order the prelude declares them (a constant
+/// before the arrays it sizes, a struct before its uniforms).
+const VARIABLES: &[(Where, Item)] = {
+    use Item::{Const, Text};
+    &[
+        (COMPAT, Const("gl_MaxLights", limits::MAX_LIGHTS)),
+        (COMPAT, Const("gl_MaxClipPlanes", limits::MAX_CLIP_PLANES)),
+        // GLSL 1.40 §7.4 still lists it, by mistake: it counts
+        // fixed-function texture units, and 1.50 moves it to the
+        // compatibility profile (piglit's glsl-1.40 tests expect it gone).
+        (
+            COMPAT,
+            Const("gl_MaxTextureUnits", limits::MAX_TEXTURE_UNITS),
+        ),
+        (
+            COMPAT,
+            Const("gl_MaxTextureCoords", limits::MAX_TEXTURE_COORDS),
+        ),
+        (
+            Where::ALL,
+            Const("gl_MaxVertexAttribs", limits::MAX_VERTEX_ATTRIBS),
+        ),
+        (
+            Where::ALL,
+            Const(
+                "gl_MaxVertexUniformComponents",
+                limits::MAX_VERTEX_UNIFORM_COMPONENTS,
+            ),
+        ),
+        (
+            Where::ALL,
+            Const("gl_MaxVaryingFloats", limits::MAX_VARYING_FLOATS),
+        ),
+        (
+            Where::ALL,
+            Const(
+                "gl_MaxVertexTextureImageUnits",
+                limits::MAX_VERTEX_TEXTURE_IMAGE_UNITS,
+            ),
+        ),
+        (
+            Where::ALL,
+            Const(
+                "gl_MaxCombinedTextureImageUnits",
+                limits::MAX_COMBINED_TEXTURE_IMAGE_UNITS,
+            ),
+        ),
+        (
+            Where::ALL,
+            Const("gl_MaxTextureImageUnits", limits::MAX_TEXTURE_IMAGE_UNITS),
+        ),
+        (
+            Where::ALL,
+            Const(
+                "gl_MaxFragmentUniformComponents",
+                limits::MAX_FRAGMENT_UNIFORM_COMPONENTS,
+            ),
+        ),
+        (
+            Where::ALL,
+            Const("gl_MaxDrawBuffers", limits::MAX_DRAW_BUFFERS),
+        ),
+        (
+            Where::since(V130),
+            Const("gl_MaxVaryingComponents", limits::MAX_VARYING_FLOATS),
+        ),
+        (
+            Where::since(V130),
+            Const("gl_MaxClipDistances", limits::MAX_CLIP_DISTANCES),
+        ),
+        (
+            Where::since(V150),
+            Const(
+                "gl_MaxVertexOutputComponents",
+                limits::MAX_VERTEX_OUTPUT_COMPONENTS,
+            ),
+        ),
+        (
+            Where::since(V150),
+            Const(
+                "gl_MaxFragmentInputComponents",
+                limits::MAX_FRAGMENT_INPUT_COMPONENTS,
+            ),
+        ),
+        (
+            Where::since(V150),
+            Const(
+                "gl_MaxGeometryInputComponents",
+                limits::MAX_GEOMETRY_INPUT_COMPONENTS,
+            ),
+        ),
+        (
+            Where::since(V150),
+            Const(
+                "gl_MaxGeometryOutputComponents",
+                limits::MAX_GEOMETRY_OUTPUT_COMPONENTS,
+            ),
+        ),
+        (
+            Where::since(V150),
+            Const(
+                "gl_MaxGeometryTextureImageUnits",
+                limits::MAX_GEOMETRY_TEXTURE_IMAGE_UNITS,
+            ),
+        ),
+        (
+            Where::since(V150),
+            Const(
+                "gl_MaxGeometryOutputVertices",
+                limits::MAX_GEOMETRY_OUTPUT_VERTICES,
+            ),
+        ),
+        (
+            Where::since(V150),
+            Const(
+                "gl_MaxGeometryTotalOutputComponents",
+                limits::MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS,
+            ),
+        ),
+        (
+            Where::since(V150),
+            Const(
+                "gl_MaxGeometryUniformComponents",
+                limits::MAX_GEOMETRY_UNIFORM_COMPONENTS,
+            ),
+        ),
+        (
+            Where::since(V150),
+            Const(
+                "gl_MaxGeometryVaryingComponents",
+                limits::MAX_GEOMETRY_VARYING_COMPONENTS,
+            ),
+        ),
+        (
+            COMPAT,
+            Text(
+                "// section 7.5 built-in uniform state
 uniform mat4 gl_ModelViewMatrix;
 uniform mat4 gl_ProjectionMatrix;
 uniform mat4 gl_ModelViewProjectionMatrix;
@@ -117,14 +299,25 @@ uniform mat4 gl_ModelViewMatrixInverseTranspose;
 uniform mat4 gl_ProjectionMatrixInverseTranspose;
 uniform mat4 gl_ModelViewProjectionMatrixInverseTranspose;
 uniform mat4 gl_TextureMatrixInverseTranspose[gl_MaxTextureCoords];
-uniform float gl_NormalScale;
-struct gl_DepthRangeParameters {
+uniform float gl_NormalScale;",
+            ),
+        ),
+        // The one uniform the core profile keeps (GLSL 1.40 §7.5).
+        (
+            Where::ALL,
+            Text(
+                "struct gl_DepthRangeParameters {
     float near;
     float far;
     float diff;
 };
-uniform gl_DepthRangeParameters gl_DepthRange;
-uniform vec4 gl_ClipPlane[gl_MaxClipPlanes];
+uniform gl_DepthRangeParameters gl_DepthRange;",
+            ),
+        ),
+        (
+            COMPAT,
+            Text(
+                "uniform vec4 gl_ClipPlane[gl_MaxClipPlanes];
 struct gl_PointParameters {
     float size;
     float sizeMin;
@@ -174,133 +367,557 @@ struct gl_LightProducts {
     vec4 specular;
 };
 uniform gl_LightProducts gl_FrontLightProduct[gl_MaxLights];
-uniform gl_LightProducts gl_BackLightProduct[gl_MaxLights];
-",
-    );
-    // 1.10 §7.5 sizes gl_TextureEnvColor by the texture image units, 1.20
-    // §7.5 (and later) by the fixed-function texture units.
-    let env_size = if version >= Version::V120 {
-        "gl_MaxTextureUnits"
-    } else {
-        "gl_MaxTextureImageUnits"
-    };
-    let _ = writeln!(out, "uniform vec4 gl_TextureEnvColor[{env_size}];");
-    for plane in ["Eye", "Object"] {
-        for coord in ["S", "T", "R", "Q"] {
-            let _ = writeln!(
-                out,
-                "uniform vec4 gl_{plane}Plane{coord}[gl_MaxTextureCoords];"
-            );
-        }
-    }
-    out.push_str(
-        "struct gl_FogParameters {
+uniform gl_LightProducts gl_BackLightProduct[gl_MaxLights];",
+            ),
+        ),
+        // 1.10 §7.5 sizes it by the texture image units, 1.20 §7.5 (and
+        // later) by the fixed-function texture units.
+        (
+            COMPAT.until(V120),
+            Text("uniform vec4 gl_TextureEnvColor[gl_MaxTextureImageUnits];"),
+        ),
+        (
+            Where::since(V120).compat(),
+            Text("uniform vec4 gl_TextureEnvColor[gl_MaxTextureUnits];"),
+        ),
+        (
+            COMPAT,
+            Text(
+                "uniform vec4 gl_EyePlaneS[gl_MaxTextureCoords];
+uniform vec4 gl_EyePlaneT[gl_MaxTextureCoords];
+uniform vec4 gl_EyePlaneR[gl_MaxTextureCoords];
+uniform vec4 gl_EyePlaneQ[gl_MaxTextureCoords];
+uniform vec4 gl_ObjectPlaneS[gl_MaxTextureCoords];
+uniform vec4 gl_ObjectPlaneT[gl_MaxTextureCoords];
+uniform vec4 gl_ObjectPlaneR[gl_MaxTextureCoords];
+uniform vec4 gl_ObjectPlaneQ[gl_MaxTextureCoords];
+struct gl_FogParameters {
     vec4 color;
     float density;
     float start;
     float end;
     float scale;
 };
-uniform gl_FogParameters gl_Fog;
-",
-    );
-}
-
-/// §7.1 special variables, §7.3 attributes, §7.6 vertex varyings.
-fn vertex_variables(out: &mut String) {
-    out.push_str(
-        "// section 7.1 vertex shader special variables
-vec4 gl_Position;
-float gl_PointSize;
-vec4 gl_ClipVertex;
-// section 7.3 built-in attributes
-attribute vec4 gl_Color;
+uniform gl_FogParameters gl_Fog;",
+            ),
+        ),
+        // §7.1 vertex shader special variables.
+        (
+            VS,
+            Text(
+                "vec4 gl_Position;
+float gl_PointSize;",
+            ),
+        ),
+        (VS.compat(), Text("vec4 gl_ClipVertex;")),
+        (
+            Where::since(V130).vs(),
+            Text(
+                "float gl_ClipDistance[];
+attribute int gl_VertexID;",
+            ),
+        ),
+        (
+            Where::since(V140).vs(),
+            Text("attribute int gl_InstanceID;"),
+        ),
+        // §7.3 built-in vertex attributes, §7.6 varying outputs.
+        (
+            VS.compat(),
+            Text(
+                "attribute vec4 gl_Color;
 attribute vec4 gl_SecondaryColor;
 attribute vec3 gl_Normal;
 attribute vec4 gl_Vertex;
-",
-    );
-    for i in 0..8 {
-        let _ = writeln!(out, "attribute vec4 gl_MultiTexCoord{i};");
-    }
-    out.push_str(
-        "attribute float gl_FogCoord;
-// section 7.6 varying outputs
+attribute vec4 gl_MultiTexCoord0;
+attribute vec4 gl_MultiTexCoord1;
+attribute vec4 gl_MultiTexCoord2;
+attribute vec4 gl_MultiTexCoord3;
+attribute vec4 gl_MultiTexCoord4;
+attribute vec4 gl_MultiTexCoord5;
+attribute vec4 gl_MultiTexCoord6;
+attribute vec4 gl_MultiTexCoord7;
+attribute float gl_FogCoord;
 varying vec4 gl_FrontColor;
 varying vec4 gl_BackColor;
 varying vec4 gl_FrontSecondaryColor;
 varying vec4 gl_BackSecondaryColor;
 varying vec4 gl_TexCoord[];
-varying float gl_FogFragCoord;
-",
-    );
-}
-
-/// §7.2 special variables, §7.6 fragment varyings.
-fn fragment_variables(out: &mut String, version: Version) {
-    out.push_str(
-        "// section 7.2 fragment shader special variables
-varying vec4 gl_FragCoord;
+varying float gl_FogFragCoord;",
+            ),
+        ),
+        // §7.2 fragment shader special variables. `gl_FragColor` and
+        // `gl_FragData` are deprecated from 1.30 on, not removed: the core
+        // profiles of 1.40 to 3.30 keep them.
+        (
+            FS,
+            Text(
+                "varying vec4 gl_FragCoord;
 varying bool gl_FrontFacing;
 vec4 gl_FragColor;
 vec4 gl_FragData[gl_MaxDrawBuffers];
-float gl_FragDepth;
-// section 7.6 varying inputs
-varying vec4 gl_Color;
+float gl_FragDepth;",
+            ),
+        ),
+        // §7.6 varying inputs.
+        (
+            FS.compat(),
+            Text(
+                "varying vec4 gl_Color;
 varying vec4 gl_SecondaryColor;
 varying vec4 gl_TexCoord[];
-varying float gl_FogFragCoord;
-",
+varying float gl_FogFragCoord;",
+            ),
+        ),
+        (Where::since(V120).fs(), Text("varying vec2 gl_PointCoord;")),
+        (
+            Where::since(V130).fs(),
+            Text("varying float gl_ClipDistance[];"),
+        ),
+        (Where::since(V150).fs(), Text("varying int gl_PrimitiveID;")),
+    ]
+};
+
+/// Built-in functions other than the lookups of [`SAMPLERS`], as
+/// prototypes with the spec's placeholders, each expanded over its types
+/// ([`expand`]): `genType` (`float`, `vec2`...`vec4`), `genIType`,
+/// `genUType`, `genBType`; `vec`, `ivec`, `uvec`, `bvec` (sizes 2 to 4); `mat` (every matrix
+/// type of the version) with `matT` its transpose and `colvec`/`rowvec`
+/// the vectors of its column and row; `sqmat` (`mat2`...`mat4`). All
+/// placeholders of one line vary together.
+const FUNCTIONS: &[(Where, &str)] = &[
+    // §8.1 angle and trigonometry functions
+    (Where::ALL, "genType radians(genType)"),
+    (Where::ALL, "genType degrees(genType)"),
+    (Where::ALL, "genType sin(genType)"),
+    (Where::ALL, "genType cos(genType)"),
+    (Where::ALL, "genType tan(genType)"),
+    (Where::ALL, "genType asin(genType)"),
+    (Where::ALL, "genType acos(genType)"),
+    (Where::ALL, "genType atan(genType, genType)"),
+    (Where::ALL, "genType atan(genType)"),
+    (Where::since(V130), "genType sinh(genType)"),
+    (Where::since(V130), "genType cosh(genType)"),
+    (Where::since(V130), "genType tanh(genType)"),
+    (Where::since(V130), "genType asinh(genType)"),
+    (Where::since(V130), "genType acosh(genType)"),
+    (Where::since(V130), "genType atanh(genType)"),
+    // §8.2 exponential functions
+    (Where::ALL, "genType pow(genType, genType)"),
+    (Where::ALL, "genType exp(genType)"),
+    (Where::ALL, "genType log(genType)"),
+    (Where::ALL, "genType exp2(genType)"),
+    (Where::ALL, "genType log2(genType)"),
+    (Where::ALL, "genType sqrt(genType)"),
+    (Where::ALL, "genType inversesqrt(genType)"),
+    // §8.3 common functions
+    (Where::ALL, "genType abs(genType)"),
+    (Where::ALL, "genType sign(genType)"),
+    (Where::ALL, "genType floor(genType)"),
+    (Where::ALL, "genType ceil(genType)"),
+    (Where::ALL, "genType fract(genType)"),
+    (Where::ALL, "genType mod(genType, genType)"),
+    (Where::ALL, "vec mod(vec, float)"),
+    (Where::ALL, "genType min(genType, genType)"),
+    (Where::ALL, "vec min(vec, float)"),
+    (Where::ALL, "genType max(genType, genType)"),
+    (Where::ALL, "vec max(vec, float)"),
+    (Where::ALL, "genType clamp(genType, genType, genType)"),
+    (Where::ALL, "vec clamp(vec, float, float)"),
+    (Where::ALL, "genType mix(genType, genType, genType)"),
+    (Where::ALL, "vec mix(vec, vec, float)"),
+    (Where::ALL, "genType step(genType, genType)"),
+    (Where::ALL, "vec step(float, vec)"),
+    (Where::ALL, "genType smoothstep(genType, genType, genType)"),
+    (Where::ALL, "vec smoothstep(float, float, vec)"),
+    (Where::since(V130), "genIType abs(genIType)"),
+    (Where::since(V130), "genIType sign(genIType)"),
+    (Where::since(V130), "genType trunc(genType)"),
+    (Where::since(V130), "genType round(genType)"),
+    (Where::since(V130), "genType roundEven(genType)"),
+    (Where::since(V130), "genType modf(genType, out genType)"),
+    (Where::since(V130), "genIType min(genIType, genIType)"),
+    (Where::since(V130), "ivec min(ivec, int)"),
+    (Where::since(V130), "genIType max(genIType, genIType)"),
+    (Where::since(V130), "ivec max(ivec, int)"),
+    (
+        Where::since(V130),
+        "genIType clamp(genIType, genIType, genIType)",
+    ),
+    (Where::since(V130), "ivec clamp(ivec, int, int)"),
+    (
+        Where::since(V130),
+        "genType mix(genType, genType, genBType)",
+    ),
+    (Where::since(V130), "genBType isnan(genType)"),
+    (Where::since(V130), "genBType isinf(genType)"),
+    (Where::since(V330), "genIType floatBitsToInt(genType)"),
+    (Where::since(V330), "genType intBitsToFloat(genIType)"),
+    // §8.4 geometric functions
+    (Where::ALL, "float length(genType)"),
+    (Where::ALL, "float distance(genType, genType)"),
+    (Where::ALL, "float dot(genType, genType)"),
+    (Where::ALL, "vec3 cross(vec3, vec3)"),
+    (Where::ALL, "genType normalize(genType)"),
+    (VS.compat(), "vec4 ftransform()"),
+    (Where::ALL, "genType faceforward(genType, genType, genType)"),
+    (Where::ALL, "genType reflect(genType, genType)"),
+    (Where::ALL, "genType refract(genType, genType, float)"),
+    // §8.5 matrix functions
+    (Where::ALL, "mat matrixCompMult(mat, mat)"),
+    (Where::since(V120), "mat outerProduct(colvec, rowvec)"),
+    (Where::since(V120), "matT transpose(mat)"),
+    (Where::since(V150), "float determinant(sqmat)"),
+    (Where::since(V140), "sqmat inverse(sqmat)"),
+    // §8.6 vector relational functions
+    (Where::ALL, "bvec lessThan(vec, vec)"),
+    (Where::ALL, "bvec lessThan(ivec, ivec)"),
+    (Where::ALL, "bvec lessThanEqual(vec, vec)"),
+    (Where::ALL, "bvec lessThanEqual(ivec, ivec)"),
+    (Where::ALL, "bvec greaterThan(vec, vec)"),
+    (Where::ALL, "bvec greaterThan(ivec, ivec)"),
+    (Where::ALL, "bvec greaterThanEqual(vec, vec)"),
+    (Where::ALL, "bvec greaterThanEqual(ivec, ivec)"),
+    (Where::ALL, "bvec equal(vec, vec)"),
+    (Where::ALL, "bvec equal(ivec, ivec)"),
+    (Where::ALL, "bvec equal(bvec, bvec)"),
+    (Where::ALL, "bvec notEqual(vec, vec)"),
+    (Where::ALL, "bvec notEqual(ivec, ivec)"),
+    (Where::ALL, "bvec notEqual(bvec, bvec)"),
+    (Where::ALL, "bool any(bvec)"),
+    (Where::ALL, "bool all(bvec)"),
+    (Where::ALL, "bvec not(bvec)"),
+    // §8.7 texture lookup functions of 1.10 and 1.20, deprecated (not
+    // removed) from 1.30 on. The bias forms are the fragment stage's; the
+    // `Lod` forms are the vertex stage's until 1.30 names them for every
+    // stage.
+    (Where::ALL, "vec4 texture1D(sampler1D, float)"),
+    (FS, "vec4 texture1D(sampler1D, float, float)"),
+    (Where::ALL, "vec4 texture1DProj(sampler1D, vec2)"),
+    (FS, "vec4 texture1DProj(sampler1D, vec2, float)"),
+    (Where::ALL, "vec4 texture1DProj(sampler1D, vec4)"),
+    (FS, "vec4 texture1DProj(sampler1D, vec4, float)"),
+    (Where::ALL, "vec4 texture2D(sampler2D, vec2)"),
+    (FS, "vec4 texture2D(sampler2D, vec2, float)"),
+    (Where::ALL, "vec4 texture2DProj(sampler2D, vec3)"),
+    (FS, "vec4 texture2DProj(sampler2D, vec3, float)"),
+    (Where::ALL, "vec4 texture2DProj(sampler2D, vec4)"),
+    (FS, "vec4 texture2DProj(sampler2D, vec4, float)"),
+    (Where::ALL, "vec4 texture3D(sampler3D, vec3)"),
+    (FS, "vec4 texture3D(sampler3D, vec3, float)"),
+    (Where::ALL, "vec4 texture3DProj(sampler3D, vec4)"),
+    (FS, "vec4 texture3DProj(sampler3D, vec4, float)"),
+    (Where::ALL, "vec4 textureCube(samplerCube, vec3)"),
+    (FS, "vec4 textureCube(samplerCube, vec3, float)"),
+    (Where::ALL, "vec4 shadow1D(sampler1DShadow, vec3)"),
+    (FS, "vec4 shadow1D(sampler1DShadow, vec3, float)"),
+    (Where::ALL, "vec4 shadow2D(sampler2DShadow, vec3)"),
+    (FS, "vec4 shadow2D(sampler2DShadow, vec3, float)"),
+    (Where::ALL, "vec4 shadow1DProj(sampler1DShadow, vec4)"),
+    (FS, "vec4 shadow1DProj(sampler1DShadow, vec4, float)"),
+    (Where::ALL, "vec4 shadow2DProj(sampler2DShadow, vec4)"),
+    (FS, "vec4 shadow2DProj(sampler2DShadow, vec4, float)"),
+    (LOD, "vec4 texture1DLod(sampler1D, float, float)"),
+    (LOD, "vec4 texture1DProjLod(sampler1D, vec2, float)"),
+    (LOD, "vec4 texture1DProjLod(sampler1D, vec4, float)"),
+    (LOD, "vec4 texture2DLod(sampler2D, vec2, float)"),
+    (LOD, "vec4 texture2DProjLod(sampler2D, vec3, float)"),
+    (LOD, "vec4 texture2DProjLod(sampler2D, vec4, float)"),
+    (LOD, "vec4 texture3DLod(sampler3D, vec3, float)"),
+    (LOD, "vec4 texture3DProjLod(sampler3D, vec4, float)"),
+    (LOD, "vec4 textureCubeLod(samplerCube, vec3, float)"),
+    (LOD, "vec4 shadow1DLod(sampler1DShadow, vec3, float)"),
+    (LOD, "vec4 shadow2DLod(sampler2DShadow, vec3, float)"),
+    (LOD, "vec4 shadow1DProjLod(sampler1DShadow, vec4, float)"),
+    (LOD, "vec4 shadow2DProjLod(sampler2DShadow, vec4, float)"),
+    (LOD_130, "vec4 texture1DLod(sampler1D, float, float)"),
+    (LOD_130, "vec4 texture1DProjLod(sampler1D, vec2, float)"),
+    (LOD_130, "vec4 texture1DProjLod(sampler1D, vec4, float)"),
+    (LOD_130, "vec4 texture2DLod(sampler2D, vec2, float)"),
+    (LOD_130, "vec4 texture2DProjLod(sampler2D, vec3, float)"),
+    (LOD_130, "vec4 texture2DProjLod(sampler2D, vec4, float)"),
+    (LOD_130, "vec4 texture3DLod(sampler3D, vec3, float)"),
+    (LOD_130, "vec4 texture3DProjLod(sampler3D, vec4, float)"),
+    (LOD_130, "vec4 textureCubeLod(samplerCube, vec3, float)"),
+    (LOD_130, "vec4 shadow1DLod(sampler1DShadow, vec3, float)"),
+    (LOD_130, "vec4 shadow2DLod(sampler2DShadow, vec3, float)"),
+    (
+        LOD_130,
+        "vec4 shadow1DProjLod(sampler1DShadow, vec4, float)",
+    ),
+    (
+        LOD_130,
+        "vec4 shadow2DProjLod(sampler2DShadow, vec4, float)",
+    ),
+    // §8.8 fragment processing functions
+    (FS, "genType dFdx(genType)"),
+    (FS, "genType dFdy(genType)"),
+    (FS, "genType fwidth(genType)"),
+    // §8.9 noise functions
+    (Where::ALL, "float noise1(genType)"),
+    (Where::ALL, "vec2 noise2(genType)"),
+    (Where::ALL, "vec3 noise3(genType)"),
+    (Where::ALL, "vec4 noise4(genType)"),
+];
+
+/// The explicit-LOD lookups of 1.10 and 1.20: vertex shaders only.
+const LOD: Where = VS.until(V130);
+/// The same from 1.30 on, in every stage (GLSL 1.30 §8.7 lists them
+/// without a stage restriction).
+const LOD_130: Where = Where::since(V130);
+
+/// The lookups of GLSL 1.30 §8.7 (and 1.40, 1.50) on one sampler type.
+/// `g` rows stand for the float, int (and, once `uint` exists, unsigned)
+/// samplers alike (`gsampler2D`, result `gvec4`); shadow rows return one
+/// `float`. A `None` column: no such lookup on that sampler.
+struct SamplerRow {
+    /// The sampler's name without the `g`/`i`/`u` prefix.
+    name: &'static str,
+    since: Version,
+    /// `gsampler` (float and integer forms) or one shadow sampler.
+    g: bool,
+    /// `textureSize`'s result, and whether it takes a `lod`.
+    size: (&'static str, bool),
+    /// `P` of `texture`, `textureLod`, `textureGrad`...
+    p: Option<&'static str>,
+    /// `P` of the projective forms.
+    proj: &'static [&'static str],
+    /// Whether `texture`/`textureProj`/`textureOffset` take a `bias` (in
+    /// the fragment stage).
+    bias: bool,
+    /// Whether `textureLod` (and its offset and projective forms) exist.
+    lod: bool,
+    /// The `offset` type of the `Offset` forms.
+    offset: Option<&'static str>,
+    /// Whether `textureOffset` is missing though other `Offset` forms
+    /// exist (`sampler2DArrayShadow` has `textureGradOffset` only).
+    grad_offset_only: bool,
+    /// The type of `dPdx`/`dPdy` of the `Grad` forms.
+    grad: Option<&'static str>,
+    /// `P` of `texelFetch`, and its last parameter (`lod`, `sample`, or
+    /// none for rectangles and buffers).
+    fetch: Option<(&'static str, Option<&'static str>)>,
+}
+
+/// Every sampler type of GLSL 1.30-3.30 with the lookups §8.7 gives it.
+const SAMPLERS: &[SamplerRow] = {
+    const fn row(
+        name: &'static str,
+        since: Version,
+        g: bool,
+        size: (&'static str, bool),
+    ) -> SamplerRow {
+        SamplerRow {
+            name,
+            since,
+            g,
+            size,
+            p: None,
+            proj: &[],
+            bias: false,
+            lod: false,
+            offset: None,
+            grad_offset_only: false,
+            grad: None,
+            fetch: None,
+        }
+    }
+    &[
+        SamplerRow {
+            p: Some("float"),
+            proj: &["vec2", "vec4"],
+            bias: true,
+            lod: true,
+            offset: Some("int"),
+            grad: Some("float"),
+            fetch: Some(("int", Some("int"))),
+            ..row("sampler1D", V130, true, ("int", true))
+        },
+        SamplerRow {
+            p: Some("vec2"),
+            proj: &["vec3", "vec4"],
+            bias: true,
+            lod: true,
+            offset: Some("ivec2"),
+            grad: Some("vec2"),
+            fetch: Some(("ivec2", Some("int"))),
+            ..row("sampler2D", V130, true, ("ivec2", true))
+        },
+        SamplerRow {
+            p: Some("vec3"),
+            proj: &["vec4"],
+            bias: true,
+            lod: true,
+            offset: Some("ivec3"),
+            grad: Some("vec3"),
+            fetch: Some(("ivec3", Some("int"))),
+            ..row("sampler3D", V130, true, ("ivec3", true))
+        },
+        SamplerRow {
+            p: Some("vec3"),
+            bias: true,
+            lod: true,
+            grad: Some("vec3"),
+            ..row("samplerCube", V130, true, ("ivec2", true))
+        },
+        SamplerRow {
+            p: Some("vec3"),
+            proj: &["vec4"],
+            bias: true,
+            lod: true,
+            offset: Some("int"),
+            grad: Some("float"),
+            ..row("sampler1DShadow", V130, false, ("int", true))
+        },
+        SamplerRow {
+            p: Some("vec3"),
+            proj: &["vec4"],
+            bias: true,
+            lod: true,
+            offset: Some("ivec2"),
+            grad: Some("vec2"),
+            ..row("sampler2DShadow", V130, false, ("ivec2", true))
+        },
+        SamplerRow {
+            p: Some("vec4"),
+            bias: true,
+            grad: Some("vec3"),
+            ..row("samplerCubeShadow", V130, false, ("ivec2", true))
+        },
+        SamplerRow {
+            p: Some("vec2"),
+            bias: true,
+            lod: true,
+            offset: Some("int"),
+            grad: Some("float"),
+            fetch: Some(("ivec2", Some("int"))),
+            ..row("sampler1DArray", V130, true, ("ivec2", true))
+        },
+        SamplerRow {
+            p: Some("vec3"),
+            bias: true,
+            lod: true,
+            offset: Some("ivec2"),
+            grad: Some("vec2"),
+            fetch: Some(("ivec3", Some("int"))),
+            ..row("sampler2DArray", V130, true, ("ivec3", true))
+        },
+        SamplerRow {
+            p: Some("vec3"),
+            bias: true,
+            lod: true,
+            offset: Some("int"),
+            grad: Some("float"),
+            ..row("sampler1DArrayShadow", V130, false, ("ivec2", true))
+        },
+        SamplerRow {
+            p: Some("vec4"),
+            grad: Some("vec2"),
+            offset: Some("ivec2"),
+            grad_offset_only: true,
+            ..row("sampler2DArrayShadow", V130, false, ("ivec3", true))
+        },
+        SamplerRow {
+            p: Some("vec2"),
+            proj: &["vec3", "vec4"],
+            offset: Some("ivec2"),
+            grad: Some("vec2"),
+            fetch: Some(("ivec2", None)),
+            ..row("sampler2DRect", V140, true, ("ivec2", false))
+        },
+        SamplerRow {
+            p: Some("vec3"),
+            proj: &["vec4"],
+            offset: Some("ivec2"),
+            grad: Some("vec2"),
+            ..row("sampler2DRectShadow", V140, false, ("ivec2", false))
+        },
+        SamplerRow {
+            fetch: Some(("int", None)),
+            ..row("samplerBuffer", V140, true, ("int", false))
+        },
+        SamplerRow {
+            fetch: Some(("ivec2", Some("int"))),
+            ..row("sampler2DMS", V150, true, ("ivec2", false))
+        },
+        SamplerRow {
+            fetch: Some(("ivec3", Some("int"))),
+            ..row("sampler2DMSArray", V150, true, ("ivec3", false))
+        },
+    ]
+};
+
+/// The prefixes a `g` row of [`SAMPLERS`] is declared with: float and
+/// signed-integer samplers. `u` (`usampler*`, results `uvec4`) joins once
+/// `uint` is a type.
+const G_PREFIXES: &[&str] = &["", "i"];
+
+fn build(lang: Language, stage: Stage) -> String {
+    let version = lang.version;
+    let mut out = String::with_capacity(48 * 1024);
+    // The preprocessor classifies keywords by the `#version` it sees, so the
+    // prelude states its own (`mat2x3` is a type only in 1.20).
+    if version.has_profiles() {
+        let _ = writeln!(out, "#version {} {}", version.number(), lang.profile.name());
+    } else {
+        let _ = writeln!(out, "#version {}", version.number());
+    }
+    let _ = writeln!(
+        out,
+        "// Built-in declarations of GLSL {} ({} shader).",
+        version.dotted(),
+        stage.name()
     );
-    if version >= Version::V120 {
-        out.push_str("varying vec2 gl_PointCoord;\n");
-    }
-}
-
-/// Writes `ret name(params);`.
-fn proto(out: &mut String, ret: &str, name: &str, params: &[&str]) {
-    let _ = writeln!(out, "{ret} {name}({});", params.join(", "));
-}
-
-/// One prototype per `genType`, with `G` in `ret` and `params` replaced by
-/// the type. Parameters spelled `float` stay scalar.
-fn gen(out: &mut String, ret: &str, name: &str, params: &[&str]) {
-    for t in GEN_TYPES {
-        let ret = if ret == "G" { t } else { ret };
-        let params: Vec<&str> = params
-            .iter()
-            .map(|&p| if p == "G" { t } else { p })
-            .collect();
-        proto(out, ret, name, &params);
-    }
-}
-
-/// The `genType f(genType, float)`-style variants: like [`gen`] but without
-/// the `float` instance, which the all-`genType` overload already declares.
-fn gen_vec(out: &mut String, name: &str, params: &[&str]) {
-    for t in &GEN_TYPES[1..] {
-        let params: Vec<&str> = params
-            .iter()
-            .map(|&p| if p == "G" { *t } else { p })
-            .collect();
-        proto(out, t, name, &params);
-    }
-}
-
-/// Matrix types of the version: square ones always, non-square from 1.20
-/// (as `(name, cols, rows)`).
-fn matrices(version: Version) -> Vec<(String, u8, u8)> {
-    let mut list = Vec::new();
-    for cols in 2u8..=4 {
-        for rows in 2u8..=4 {
-            if cols == rows {
-                list.push((format!("mat{cols}"), cols, rows));
-            } else if version >= Version::V120 {
-                list.push((format!("mat{cols}x{rows}"), cols, rows));
+    out.push_str("// section 7 built-in variables and constants\n");
+    for (at, item) in VARIABLES {
+        if !at.holds(lang, stage) {
+            continue;
+        }
+        match item {
+            Item::Const(name, value) => {
+                let _ = writeln!(out, "const int {name} = {value};");
+            }
+            Item::Text(text) => {
+                out.push_str(text);
+                out.push('\n');
             }
         }
     }
-    list
+    out.push_str("// section 8 built-in functions\n");
+    for (at, proto) in FUNCTIONS {
+        if at.holds(lang, stage) {
+            expand(&mut out, proto, version);
+        }
+    }
+    for row in SAMPLERS {
+        if version >= row.since {
+            lookups(&mut out, row, stage);
+        }
+    }
+    out
+}
+
+/// Replaces each identifier of `text` for which `f` gives a replacement.
+fn substitute(text: &str, f: impl Fn(&str) -> Option<String>) -> String {
+    let mut out = String::with_capacity(text.len() + 16);
+    let mut word = String::new();
+    let flush = |word: &mut String, out: &mut String| {
+        match f(word) {
+            Some(r) => out.push_str(&r),
+            None => out.push_str(word),
+        }
+        word.clear();
+    };
+    for c in text.chars() {
+        if c.is_ascii_alphanumeric() || c == '_' {
+            word.push(c);
+        } else {
+            flush(&mut word, &mut out);
+            out.push(c);
+        }
+    }
+    flush(&mut word, &mut out);
+    out
 }
 
 fn mat_name(cols: u8, rows: u8) -> String {
@@ -311,143 +928,194 @@ fn mat_name(cols: u8, rows: u8) -> String {
     }
 }
 
-fn functions(out: &mut String, version: Version, stage: Stage) {
-    out.push_str("// section 8.1 angle and trigonometry functions\n");
-    for f in ["radians", "degrees", "sin", "cos", "tan", "asin", "acos"] {
-        gen(out, "G", f, &["G"]);
-    }
-    gen(out, "G", "atan", &["G", "G"]);
-    gen(out, "G", "atan", &["G"]);
-
-    out.push_str("// section 8.2 exponential functions\n");
-    gen(out, "G", "pow", &["G", "G"]);
-    for f in ["exp", "log", "exp2", "log2", "sqrt", "inversesqrt"] {
-        gen(out, "G", f, &["G"]);
-    }
-
-    out.push_str("// section 8.3 common functions\n");
-    for f in ["abs", "sign", "floor", "ceil", "fract"] {
-        gen(out, "G", f, &["G"]);
-    }
-    for f in ["mod", "min", "max"] {
-        gen(out, "G", f, &["G", "G"]);
-        gen_vec(out, f, &["G", "float"]);
-    }
-    gen(out, "G", "clamp", &["G", "G", "G"]);
-    gen_vec(out, "clamp", &["G", "float", "float"]);
-    gen(out, "G", "mix", &["G", "G", "G"]);
-    gen_vec(out, "mix", &["G", "G", "float"]);
-    gen(out, "G", "step", &["G", "G"]);
-    gen_vec(out, "step", &["float", "G"]);
-    gen(out, "G", "smoothstep", &["G", "G", "G"]);
-    gen_vec(out, "smoothstep", &["float", "float", "G"]);
-
-    out.push_str("// section 8.4 geometric functions\n");
-    gen(out, "float", "length", &["G"]);
-    gen(out, "float", "distance", &["G", "G"]);
-    gen(out, "float", "dot", &["G", "G"]);
-    proto(out, "vec3", "cross", &["vec3", "vec3"]);
-    gen(out, "G", "normalize", &["G"]);
-    if stage == Stage::Vertex {
-        proto(out, "vec4", "ftransform", &[]);
-    }
-    gen(out, "G", "faceforward", &["G", "G", "G"]);
-    gen(out, "G", "reflect", &["G", "G"]);
-    gen(out, "G", "refract", &["G", "G", "float"]);
-
-    out.push_str("// section 8.5 matrix functions\n");
-    for (m, _, _) in matrices(version) {
-        proto(out, &m, "matrixCompMult", &[&m, &m]);
-    }
-    if version >= Version::V120 {
-        for (m, cols, rows) in matrices(version) {
-            // Column vector c (rows components) times row vector r (cols).
-            let c = format!("vec{rows}");
-            let r = format!("vec{cols}");
-            proto(out, &m, "outerProduct", &[&c, &r]);
+/// Writes the prototypes a [`FUNCTIONS`] line stands for, each `;`-ended.
+fn expand(out: &mut String, proto: &str, version: Version) {
+    let has = |w: &str| {
+        proto
+            .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .any(|x| x == w)
+    };
+    let mut lines = Vec::new();
+    if ["genType", "genIType", "genUType", "genBType"]
+        .iter()
+        .any(|w| has(w))
+    {
+        for n in 1..=4u8 {
+            let v = |p: &str, s: &str| {
+                if n == 1 {
+                    s.to_string()
+                } else {
+                    format!("{p}vec{n}")
+                }
+            };
+            lines.push(substitute(proto, |w| match w {
+                "genType" => Some(v("", "float")),
+                "genIType" => Some(v("i", "int")),
+                "genUType" => Some(v("u", "uint")),
+                "genBType" => Some(v("b", "bool")),
+                _ => None,
+            }));
         }
-        for (m, cols, rows) in matrices(version) {
-            proto(out, &mat_name(rows, cols), "transpose", &[&m]);
+    } else if ["vec", "ivec", "uvec", "bvec"].iter().any(|w| has(w)) {
+        for n in 2..=4u8 {
+            lines.push(substitute(proto, |w| match w {
+                "vec" | "ivec" | "uvec" | "bvec" => Some(format!("{w}{n}")),
+                _ => None,
+            }));
         }
-    }
-
-    out.push_str("// section 8.6 vector relational functions\n");
-    for f in [
-        "lessThan",
-        "lessThanEqual",
-        "greaterThan",
-        "greaterThanEqual",
-    ] {
-        for n in 2..=4 {
-            let (b, v, i) = (format!("bvec{n}"), format!("vec{n}"), format!("ivec{n}"));
-            proto(out, &b, f, &[&v, &v]);
-            proto(out, &b, f, &[&i, &i]);
+    } else if has("mat") {
+        // Square matrices always, non-square ones from 1.20.
+        for cols in 2u8..=4 {
+            for rows in 2u8..=4 {
+                if cols != rows && version < Version::V120 {
+                    continue;
+                }
+                lines.push(substitute(proto, |w| match w {
+                    "mat" => Some(mat_name(cols, rows)),
+                    "matT" => Some(mat_name(rows, cols)),
+                    // Column vector c (rows components) times row vector r.
+                    "colvec" => Some(format!("vec{rows}")),
+                    "rowvec" => Some(format!("vec{cols}")),
+                    _ => None,
+                }));
+            }
         }
-    }
-    for f in ["equal", "notEqual"] {
-        for n in 2..=4 {
-            let (b, v, i) = (format!("bvec{n}"), format!("vec{n}"), format!("ivec{n}"));
-            proto(out, &b, f, &[&v, &v]);
-            proto(out, &b, f, &[&i, &i]);
-            proto(out, &b, f, &[&b, &b]);
+    } else if has("sqmat") {
+        for n in 2..=4u8 {
+            lines.push(substitute(proto, |w| {
+                (w == "sqmat").then(|| format!("mat{n}"))
+            }));
         }
+    } else {
+        lines.push(proto.to_string());
     }
-    for n in 2..=4 {
-        let b = format!("bvec{n}");
-        proto(out, "bool", "any", &[&b]);
-        proto(out, "bool", "all", &[&b]);
-        proto(out, &b, "not", &[&b]);
+    for line in lines {
+        out.push_str(&line);
+        out.push_str(";\n");
     }
-
-    texture_functions(out, stage);
-
-    if stage == Stage::Fragment {
-        out.push_str("// section 8.8 fragment processing functions\n");
-        for f in ["dFdx", "dFdy", "fwidth"] {
-            gen(out, "G", f, &["G"]);
-        }
-    }
-
-    out.push_str("// section 8.9 noise functions\n");
-    gen(out, "float", "noise1", &["G"]);
-    gen(out, "vec2", "noise2", &["G"]);
-    gen(out, "vec3", "noise3", &["G"]);
-    gen(out, "vec4", "noise4", &["G"]);
 }
 
-/// §8.7 (the same in 1.10 and 1.20): every lookup takes an optional `bias`
-/// in fragment shaders only; the `Lod` variants exist in vertex shaders
-/// only.
-fn texture_functions(out: &mut String, stage: Stage) {
-    // (name without suffix, sampler, coordinate types)
-    let lookups: [(&str, &str, &[&str]); 9] = [
-        ("texture1D", "sampler1D", &["float"]),
-        ("texture1DProj", "sampler1D", &["vec2", "vec4"]),
-        ("texture2D", "sampler2D", &["vec2"]),
-        ("texture2DProj", "sampler2D", &["vec3", "vec4"]),
-        ("texture3D", "sampler3D", &["vec3"]),
-        ("texture3DProj", "sampler3D", &["vec4"]),
-        ("textureCube", "samplerCube", &["vec3"]),
-        ("shadow1D", "sampler1DShadow", &["vec3"]),
-        ("shadow2D", "sampler2DShadow", &["vec3"]),
-    ];
-    let shadow_proj: [(&str, &str, &[&str]); 2] = [
-        ("shadow1DProj", "sampler1DShadow", &["vec4"]),
-        ("shadow2DProj", "sampler2DShadow", &["vec4"]),
-    ];
-    out.push_str("// section 8.7 texture lookup functions\n");
-    for (name, sampler, coords) in lookups.iter().chain(shadow_proj.iter()) {
-        for coord in coords.iter() {
-            proto(out, "vec4", name, &[sampler, coord]);
-            match stage {
-                Stage::Fragment => proto(out, "vec4", name, &[sampler, coord, "float"]),
-                Stage::Vertex => {
-                    let lod = format!("{name}Lod");
-                    proto(out, "vec4", &lod, &[sampler, coord, "float"]);
+/// The §8.7 lookups (1.30 and later) on the samplers of one row.
+fn lookups(out: &mut String, row: &SamplerRow, stage: Stage) {
+    let prefixes: &[&str] = if row.g { G_PREFIXES } else { &[""] };
+    let fragment = stage == Stage::Fragment;
+    for prefix in prefixes {
+        let s = format!("{prefix}{}", row.name);
+        let r = if row.g {
+            format!("{prefix}vec4")
+        } else {
+            "float".to_string()
+        };
+        let mut f = |name: &str, params: &[&str]| {
+            let _ = writeln!(
+                out,
+                "{r} {name}({s}{}{});",
+                if params.is_empty() { "" } else { ", " },
+                params.join(", ")
+            );
+        };
+        // `bias` forms exist in the fragment stage only (§8.7).
+        let biased = |f: &mut dyn FnMut(&str, &[&str]), name: &str, params: &[&str]| {
+            f(name, params);
+            if row.bias && fragment {
+                let mut with = params.to_vec();
+                with.push("float");
+                f(name, &with);
+            }
+        };
+        if let Some(p) = row.p {
+            biased(&mut f, "texture", &[p]);
+            for &q in row.proj {
+                biased(&mut f, "textureProj", &[q]);
+            }
+            if row.lod {
+                f("textureLod", &[p, "float"]);
+                for &q in row.proj {
+                    f("textureProjLod", &[q, "float"]);
+                }
+            }
+            if let Some(o) = row.offset.filter(|_| !row.grad_offset_only) {
+                biased(&mut f, "textureOffset", &[p, o]);
+                for &q in row.proj {
+                    biased(&mut f, "textureProjOffset", &[q, o]);
+                }
+                if row.lod {
+                    f("textureLodOffset", &[p, "float", o]);
+                    for &q in row.proj {
+                        f("textureProjLodOffset", &[q, "float", o]);
+                    }
+                }
+            }
+            if let Some(d) = row.grad {
+                f("textureGrad", &[p, d, d]);
+                for &q in row.proj {
+                    f("textureProjGrad", &[q, d, d]);
+                }
+                if let Some(o) = row.offset {
+                    f("textureGradOffset", &[p, d, d, o]);
+                    for &q in row.proj {
+                        f("textureProjGradOffset", &[q, d, d, o]);
+                    }
                 }
             }
         }
+        if let Some((p, last)) = row.fetch {
+            let mut params = vec![p];
+            params.extend(last);
+            f("texelFetch", &params);
+            if let Some(o) = row.offset {
+                params.push(o);
+                f("texelFetchOffset", &params);
+            }
+        }
+        let (size, lod) = row.size;
+        let _ = writeln!(
+            out,
+            "{size} textureSize({s}{});",
+            if lod { ", int" } else { "" }
+        );
     }
+}
+
+/// What to write instead of a built-in the core profile removes (GLSL
+/// 1.40 §1.2.5), for the diagnostic of a core-profile shader that uses it.
+pub(crate) const REPLACEMENTS: &[(&str, &str)] = &[
+    ("gl_Vertex", "declare an `in vec4' vertex input instead"),
+    ("gl_Normal", "declare an `in vec3' vertex input instead"),
+    ("gl_Color", "declare an `in vec4' input instead (a vertex input, or a fragment input written by the vertex shader)"),
+    ("gl_SecondaryColor", "declare an `in vec4' input instead (a vertex input, or a fragment input written by the vertex shader)"),
+    ("gl_MultiTexCoord", "declare an `in vec4' vertex input instead"),
+    ("gl_FogCoord", "declare an `in float' vertex input instead"),
+    ("gl_FrontColor", "declare an `out vec4' of your own and read it as an `in' in the fragment shader"),
+    ("gl_BackColor", "declare an `out vec4' of your own and read it as an `in' in the fragment shader"),
+    ("gl_FrontSecondaryColor", "declare an `out vec4' of your own and read it as an `in' in the fragment shader"),
+    ("gl_BackSecondaryColor", "declare an `out vec4' of your own and read it as an `in' in the fragment shader"),
+    ("gl_TexCoord", "declare an `out' variable in the vertex shader and an `in' of the same name in the fragment shader"),
+    ("gl_FogFragCoord", "declare an `out' variable in the vertex shader and an `in' of the same name in the fragment shader"),
+    ("gl_ClipVertex", "write the distances to your planes to `gl_ClipDistance[]' instead"),
+    ("gl_ClipPlane", "declare a `uniform vec4' plane and write its distance to `gl_ClipDistance[]'"),
+    ("gl_MaxClipPlanes", "use `gl_MaxClipDistances' instead"),
+    ("gl_MaxTextureCoords", "use `in'/`out' variables of your own instead (`gl_MaxVaryingComponents' bounds them)"),
+    ("gl_MaxTextureUnits", "use `gl_MaxTextureImageUnits' instead"),
+    ("ftransform", "declare a `uniform mat4' and an `in vec4' position and write `gl_Position = mvp * position'"),
+];
+
+/// The note for a removed built-in [`REPLACEMENTS`] does not name: the
+/// uniform state of §7.5 and its struct types.
+const UNIFORM_REPLACEMENT: &str =
+    "declare a `uniform' (and struct type) of your own and set it from the application instead";
+
+/// What to write instead of `name`, a built-in the core profile removes.
+pub(crate) fn replacement(name: &str) -> &'static str {
+    let key = if name.starts_with("gl_MultiTexCoord") {
+        "gl_MultiTexCoord"
+    } else {
+        name
+    };
+    REPLACEMENTS
+        .iter()
+        .find(|(n, _)| *n == key)
+        .map_or(UNIFORM_REPLACEMENT, |&(_, r)| r)
 }
 
 #[cfg(test)]
@@ -460,12 +1128,37 @@ mod tests {
         super::prelude(Language::new(v, true), s)
     }
 
+    /// 1.10 and 1.20 (one profile).
     const ALL: [(Version, Stage); 4] = [
         (Version::V110, Stage::Vertex),
         (Version::V110, Stage::Fragment),
         (Version::V120, Stage::Vertex),
         (Version::V120, Stage::Fragment),
     ];
+
+    /// Every language (each version in each profile) and stage.
+    fn every_language() -> Vec<(Language, Stage)> {
+        let mut out = Vec::new();
+        for v in Version::ALL {
+            for p in [
+                crate::lang::Profile::Core,
+                crate::lang::Profile::Compatibility,
+            ] {
+                let mut l = Language::new(v, true);
+                l.profile = p;
+                for s in [Stage::Vertex, Stage::Fragment] {
+                    out.push((l, s));
+                }
+            }
+        }
+        out
+    }
+
+    fn core(v: Version) -> Language {
+        let mut l = Language::new(v, false);
+        l.profile = crate::lang::Profile::Core;
+        l
+    }
 
     /// True when `text` declares a function `name` (a prototype line
     /// `... name(`).
@@ -491,9 +1184,13 @@ mod tests {
 
     #[test]
     fn every_builtin_fn_has_a_prototype() {
+        let texts: Vec<String> = every_language()
+            .into_iter()
+            .map(|(l, s)| super::prelude(l, s))
+            .collect();
         for f in BuiltinFn::ALL {
             assert!(
-                ALL.iter().any(|&(v, s)| has(v, s, f.name())),
+                texts.iter().any(|t| declares_fn(t, f.name())),
                 "no prototype of `{}'",
                 f.name()
             );
@@ -502,8 +1199,8 @@ mod tests {
 
     #[test]
     fn every_prototype_names_a_builtin_fn() {
-        for (v, s) in ALL {
-            for line in prelude(v, s).lines().filter(|l| l.ends_with(");")) {
+        for (l, s) in every_language() {
+            for line in super::prelude(l, s).lines().filter(|l| l.ends_with(");")) {
                 let name = line
                     .split('(')
                     .next()
@@ -578,24 +1275,174 @@ mod tests {
     fn lexes_cleanly_with_no_reserved_words() {
         use crate::lex::{lex, LexOptions, PpKind};
         use crate::token::{classify, WordClass};
-        for (v, s) in ALL {
-            let text = &prelude(v, s);
+        for (l, s) in every_language() {
+            let v = l.version;
+            let text = &super::prelude(l, s);
             assert!(text.is_ascii());
-            assert!(text.starts_with(&format!("#version {}\n", v.number())));
+            assert!(text.starts_with(&format!("#version {}", v.number())));
             assert_eq!(text.matches('#').count(), 1);
             let (tokens, diags) = lex(text, LexOptions::default());
             assert!(diags.is_empty(), "{v:?} {s:?}: {diags:?}");
             for t in &tokens {
                 assert!(!matches!(t.kind, PpKind::Other(_)));
                 if t.kind == PpKind::Ident {
-                    assert_ne!(
-                        classify(&t.text, Language::new(v, true)),
-                        WordClass::Reserved,
-                        "{}",
-                        t.text
-                    );
+                    assert_ne!(classify(&t.text, l), WordClass::Reserved, "{}", t.text);
                 }
             }
         }
+    }
+
+    #[test]
+    fn glsl130_and_later_additions() {
+        use Stage::{Fragment, Vertex};
+        use Version::{V120, V130, V140, V150, V330};
+        let c130 = |s| super::prelude(Language::new(V130, true), s);
+        let vs = c130(Vertex);
+        let fs = c130(Fragment);
+        for f in [
+            "trunc",
+            "round",
+            "roundEven",
+            "sinh",
+            "atanh",
+            "modf",
+            "isnan",
+            "texture",
+        ] {
+            assert!(declares_fn(&vs, f) && !has(V120, Vertex, f), "{f}");
+        }
+        assert!(vs.contains("ivec2 min(ivec2, int);"));
+        assert!(vs.contains("vec3 mix(vec3, vec3, bvec3);"));
+        assert!(vs.contains("float modf(float, out float);"));
+        assert!(vs.contains("bvec4 isinf(vec4);"));
+        assert!(vs.contains("ivec4 texelFetch(isampler2D, ivec2, int);"));
+        assert!(vs.contains("ivec3 textureSize(sampler2DArray, int);"));
+        assert!(vs.contains("float texture(samplerCubeShadow, vec4);"));
+        assert!(!vs.contains("float texture(samplerCubeShadow, vec4, float);"));
+        assert!(fs.contains("float texture(samplerCubeShadow, vec4, float);"));
+        assert!(vs.contains("vec4 textureGradOffset(sampler2D, vec2, vec2, vec2, ivec2);"));
+        // No usampler lookups until `uint` exists, no 1.40 samplers in 1.30.
+        assert!(!vs.contains("usampler"));
+        assert!(!vs.contains("sampler2DRect"));
+        // The Lod forms of 1.10 reach the fragment stage in 1.30.
+        assert!(declares_fn(&fs, "texture2DLod") && !has(V120, Fragment, "texture2DLod"));
+        assert!(declares_var(&vs, "gl_VertexID") && !declares_var(&vs, "gl_InstanceID"));
+        assert!(declares_var(&fs, "gl_ClipDistance") && declares_var(&vs, "gl_ClipDistance"));
+        assert!(vs.contains("const int gl_MaxClipDistances = 8;"));
+        assert!(!declares_fn(&vs, "inverse") && !declares_fn(&vs, "floatBitsToInt"));
+        let c140 = super::prelude(Language::new(V140, true), Vertex);
+        assert!(declares_fn(&c140, "inverse") && !declares_fn(&c140, "determinant"));
+        assert!(declares_var(&c140, "gl_InstanceID"));
+        assert!(c140.contains("ivec2 textureSize(sampler2DRect);"));
+        assert!(c140.contains("vec4 texelFetch(samplerBuffer, int);"));
+        let f150 = super::prelude(core(V150), Fragment);
+        assert!(declares_fn(&f150, "determinant"));
+        assert!(declares_var(&f150, "gl_PrimitiveID"));
+        assert!(f150.contains("ivec4 texelFetch(isampler2DMS, ivec2, int);"));
+        assert!(f150.contains("const int gl_MaxGeometryOutputVertices = 256;"));
+        // textureGradOffset but no textureOffset on 2D array shadows.
+        assert!(f150
+            .contains("float textureGradOffset(sampler2DArrayShadow, vec4, vec2, vec2, ivec2);"));
+        assert!(!f150.contains(" textureOffset(sampler2DArrayShadow"));
+        let v330 = super::prelude(core(V330), Vertex);
+        assert!(v330.contains("ivec3 floatBitsToInt(vec3);"));
+        assert!(v330.contains("vec2 intBitsToFloat(ivec2);"));
+    }
+
+    #[test]
+    fn the_core_profile_removes_the_fixed_function_interface() {
+        use Stage::{Fragment, Vertex};
+        for v in [Version::V140, Version::V150, Version::V330] {
+            let vs = super::prelude(core(v), Vertex);
+            let fs = super::prelude(core(v), Fragment);
+            for name in [
+                "gl_Vertex",
+                "gl_MultiTexCoord3",
+                "gl_FrontColor",
+                "gl_TexCoord",
+                "gl_ClipVertex",
+                "gl_ModelViewMatrix",
+                "gl_LightSource",
+                "gl_MaxLights",
+                "gl_MaxClipPlanes",
+                "gl_MaxTextureUnits",
+                "gl_MaxTextureCoords",
+                "gl_FogFragCoord",
+            ] {
+                assert!(
+                    !declares_var(&vs, name) && !declares_var(&fs, name),
+                    "{v:?} {name}"
+                );
+            }
+            assert!(!declares_fn(&vs, "ftransform"));
+            assert!(!fs.contains("struct gl_LightSourceParameters"));
+            // Kept: gl_DepthRange, the deprecated fragment outputs and
+            // lookups, gl_Position.
+            for text in [&vs, &fs] {
+                assert!(declares_var(text, "gl_DepthRange"));
+                assert!(declares_fn(text, "texture2D"));
+            }
+            assert!(declares_var(&fs, "gl_FragColor") && declares_var(&fs, "gl_FragData"));
+            assert!(declares_var(&vs, "gl_Position") && declares_var(&vs, "gl_PointSize"));
+            let mut compat = core(v);
+            compat.profile = crate::lang::Profile::Compatibility;
+            let cvs = super::prelude(compat, Vertex);
+            assert!(declares_var(&cvs, "gl_Vertex") && declares_fn(&cvs, "ftransform"));
+        }
+        // Every removed name has a replacement note.
+        assert!(super::replacement("gl_MultiTexCoord5").contains("in vec4"));
+        assert!(super::replacement("gl_FrontLightProduct").contains("uniform"));
+    }
+
+    #[test]
+    fn glsl110_and_120_text_is_unchanged_in_substance() {
+        // The declarations of 1.10/1.20 before the table: a sample of
+        // lines in their order.
+        let vs = prelude(Version::V120, Stage::Vertex);
+        let order = [
+            "const int gl_MaxLights = 8;",
+            "const int gl_MaxDrawBuffers = 8;",
+            "uniform mat4 gl_ModelViewMatrix;",
+            "uniform gl_DepthRangeParameters gl_DepthRange;",
+            "uniform vec4 gl_TextureEnvColor[gl_MaxTextureUnits];",
+            "uniform gl_FogParameters gl_Fog;",
+            "vec4 gl_Position;",
+            "attribute vec4 gl_MultiTexCoord7;",
+            "varying float gl_FogFragCoord;",
+            "float radians(float);",
+            "vec4 noise4(vec4);",
+        ];
+        let mut at = 0;
+        for line in order {
+            let i = vs[at..].find(line).unwrap_or_else(|| panic!("{line}"));
+            at += i;
+        }
+        assert!(prelude(Version::V110, Stage::Vertex)
+            .contains("uniform vec4 gl_TextureEnvColor[gl_MaxTextureImageUnits];"));
+        for (v, s) in ALL {
+            let text = prelude(v, s);
+            for absent in [
+                "gl_VertexID",
+                "gl_ClipDistance",
+                "gl_MaxClipDistances",
+                "trunc",
+                "texture(",
+                "isampler",
+            ] {
+                assert!(!text.contains(absent), "{v:?} {s:?} {absent}");
+            }
+        }
+    }
+
+    #[test]
+    fn unsigned_placeholders_expand_for_the_lines_uint_will_add() {
+        let mut out = String::new();
+        expand(&mut out, "genUType min(genUType, genUType)", Version::V130);
+        expand(&mut out, "bvec lessThan(uvec, uvec)", Version::V130);
+        assert_eq!(
+            out,
+            "uint min(uint, uint);\nuvec2 min(uvec2, uvec2);\nuvec3 min(uvec3, uvec3);\nuvec4 min(uvec4, uvec4);\n\
+             bvec2 lessThan(uvec2, uvec2);\nbvec3 lessThan(uvec3, uvec3);\nbvec4 lessThan(uvec4, uvec4);\n"
+        );
     }
 }

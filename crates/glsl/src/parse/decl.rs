@@ -48,7 +48,7 @@ pub(super) fn is_type_keyword(k: Keyword) -> bool {
             | SamplerCube
             | Sampler1DShadow
             | Sampler2DShadow
-    )
+    ) || crate::types::SamplerKind::from_name(k.as_str()).is_some()
 }
 
 /// The qualifier a keyword spells, if any (storage, parameter, `centroid`,

@@ -112,6 +112,21 @@ impl Analyzer {
             _ => None,
         };
         let t = base.ty;
+        if t.is_array() && t.is_sampler() && cidx.is_none() {
+            if let Err(why) = self
+                .lang
+                .gate(crate::lang::Feature::NonConstantSamplerIndex)
+            {
+                self.error(
+                    Code::NotConstant,
+                    i.span,
+                    why.message("indexing an array of samplers with a non-constant expression", self.lang),
+                )
+                .notes
+                .push("GLSL 1.30 §4.1.7: samplers in arrays can only be indexed with integral constant expressions".into());
+                return error_expr(span);
+            }
+        }
         let (len, ty, what) = match (t.array, t.base) {
             (Some(ArraySize::Sized(n)), _) => (Some(n), t.element(), "array"),
             (Some(ArraySize::Unsized), _) => (None, t.element(), "array"),

@@ -209,6 +209,10 @@ impl Analyzer {
                 | Base::Matrix { .. }
         );
         match q.storage {
+            // The prelude's inputs (`gl_VertexID`, `gl_FrontFacing`,
+            // `gl_PrimitiveID`) have types user attributes and varyings
+            // may not.
+            Some(Qualifier::Attribute | Qualifier::Varying) if self.builtin_mode => {}
             Some(Qualifier::Attribute) => {
                 if !float_based || ty.is_array() {
                     self.error(
@@ -219,8 +223,7 @@ impl Analyzer {
                 }
             }
             Some(Qualifier::Varying) => {
-                let bool_ok = self.builtin_mode && ty.scalar() == Some(crate::types::Scalar::Bool);
-                if !float_based && !bool_ok {
+                if !float_based {
                     self.error(
                         Code::TypeMismatch,
                         d.name.span,

@@ -543,10 +543,13 @@ impl Analyzer {
                     .and_then(|e| e.functions.get(i as usize))
                     .map(|b| b.function);
                 match function {
-                    Some(function) => ExprKind::Builtin {
-                        function,
-                        args: out_args,
-                    },
+                    Some(function) => {
+                        self.check_texel_offset(function, &out_args);
+                        ExprKind::Builtin {
+                            function,
+                            args: out_args,
+                        }
+                    }
                     None => return error_expr(span),
                 }
             }
@@ -574,6 +577,32 @@ impl Analyzer {
                 span,
             }
         })
+    }
+
+    /// GLSL 1.30 §8.7: "The offset value must be a constant expression"
+    /// (the `offset` of the `*Offset` lookups: the third argument of
+    /// `textureOffset` and `textureProjOffset`, which a `bias` may follow,
+    /// the last of the others).
+    fn check_texel_offset(&mut self, f: crate::builtin_fn::BuiltinFn, args: &[ir::Expr]) {
+        use crate::builtin_fn::BuiltinFn as B;
+        let at = match f {
+            B::TextureOffset | B::TextureProjOffset => 2,
+            B::TexelFetchOffset
+            | B::TextureLodOffset
+            | B::TextureProjLodOffset
+            | B::TextureGradOffset
+            | B::TextureProjGradOffset => args.len().saturating_sub(1),
+            _ => return,
+        };
+        if let Some(a) = args.get(at) {
+            if !matches!(a.kind, ExprKind::Const(_)) && !a.ty.is_error() {
+                self.error(
+                    Code::NotConstant,
+                    a.span,
+                    format!("the offset of `{}' must be a constant expression", f.name()),
+                );
+            }
+        }
     }
 
     /// Replaces every non-constant index inside the l-value `lv` by a new

@@ -496,8 +496,12 @@ impl Analyzer {
             if found(compat, self.stage) {
                 return Some((
                     Code::VersionTooLow,
-                    Unavailable::RemovedInCore(Version::V140)
-                        .message(&format!("`{name}'"), self.lang),
+                    format!(
+                        "{}; {}",
+                        Unavailable::RemovedInCore(Version::V140)
+                            .message(&format!("`{name}'"), self.lang),
+                        crate::builtins::replacement(name)
+                    ),
                 ));
             }
         }

@@ -33,21 +33,93 @@ fn fails(s: Shader, code: Code) {
 
 #[test]
 fn builtin_envs_are_clean() {
-    use crate::lang::Version;
-    for v in [Version::V110, Version::V120] {
-        for st in [Stage::Vertex, Stage::Fragment] {
-            let env = super::builtin_env(crate::Language::new(v, true), st);
-            assert!(
-                env.diagnostics.is_empty(),
-                "{v:?} {st:?}: {:?}",
-                env.diagnostics
-            );
-            assert!(env.functions.len() > 100);
-            assert!(env.lookup("gl_MaxLights").is_some());
+    use crate::lang::{Profile, Version};
+    for v in Version::ALL {
+        for profile in [Profile::Core, Profile::Compatibility] {
+            let mut lang = crate::Language::new(v, true);
+            lang.profile = profile;
+            for st in [Stage::Vertex, Stage::Fragment] {
+                let env = super::builtin_env(lang, st);
+                assert!(
+                    env.diagnostics.is_empty(),
+                    "{v:?} {profile:?} {st:?}: {:?}",
+                    env.diagnostics
+                );
+                assert!(env.functions.len() > 100);
+                assert!(env.lookup("gl_MaxDrawBuffers").is_some());
+                let compat = profile == Profile::Compatibility || v < Version::V140;
+                assert_eq!(env.lookup("gl_MaxLights").is_some(), compat);
+            }
         }
     }
 }
 
+#[test]
+fn removed_builtins_name_their_replacement() {
+    let s = vert("#version 150\nin vec4 p;\nvoid main() { gl_Position = gl_Vertex + p; }\n");
+    let log = s.info_log();
+    assert!(!s.ok());
+    assert!(
+        log.contains("`gl_Vertex' is removed in the core profile of GLSL 1.40 and later")
+            && log.contains("declare an `in vec4' vertex input instead"),
+        "{log}"
+    );
+    let s = vert("#version 150 compatibility\nvoid main() { gl_Position = ftransform(); }\n");
+    assert!(s.ok(), "{}", s.info_log());
+    let s = frag("#version 120\nvoid main() { gl_FragColor = vec4(trunc(1.5)); }\n");
+    assert!(
+        s.info_log().contains("`trunc' requires GLSL 1.30"),
+        "{}",
+        s.info_log()
+    );
+}
+
+#[test]
+fn glsl130_builtins_type_check_and_fold() {
+    let s = frag(
+        "#version 130
+uniform sampler2D s;
+uniform isampler2D is;
+uniform sampler2DArray arr;
+uniform samplerCubeShadow cs;
+const float t = trunc(-2.5) + round(2.5) + roundEven(2.5);
+const ivec2 m = clamp(ivec2(-5, 9), 0, 4) + abs(ivec2(-1)) + sign(ivec2(-7, 0));
+void main() {
+    vec4 a = texture(s, vec2(0.5)) + textureLod(s, vec2(0.5), 1.0) + textureProj(s, vec3(1.0));
+    ivec4 b = texture(is, vec2(0.5)) + texelFetch(is, ivec2(0), 0);
+    ivec2 size = textureSize(s, 0);
+    vec4 c = texture(arr, vec3(0.5, 0.5, 1.0)) + textureOffset(s, vec2(0.5), ivec2(1, -1));
+    float d = texture(cs, vec4(1.0)) + textureGrad(s, vec2(0.0), vec2(1.0), vec2(1.0)).x;
+    bvec2 n = isnan(vec2(0.0, sinh(1.0)));
+    float whole;
+    float f = modf(1.5, whole);
+    vec2 sel = mix(vec2(0.0), vec2(1.0), bvec2(true, false));
+    gl_FragColor = a + vec4(b) + vec4(size, t, float(m.x)) + c + vec4(d, f, sel) + vec4(n, gl_FragCoord.xy);
+}
+",
+    );
+    assert!(s.ok(), "{}", s.info_log());
+    let m = s.module.as_ref().unwrap();
+    let value = |name: &str| {
+        m.globals
+            .iter()
+            .find(|g| g.name == name)
+            .and_then(|g| g.init.clone())
+            .map(|c| c.components)
+    };
+    use crate::ir::ConstScalar::{Float, Int};
+    // -2 + 3 (half away from zero) + 2 (half to even).
+    assert_eq!(value("t"), Some(vec![Float(3.0)]));
+    // clamp + abs + sign: (0 + 1 - 1, 4 + 1 + 0).
+    assert_eq!(value("m"), Some(vec![Int(0), Int(5)]));
+    // inverse is 1.40, determinant 1.50; usampler lookups wait for uint.
+    let s = frag("#version 140\nvoid main() { mat2 i = inverse(mat2(2.0)); gl_FragColor = vec4(i[0], i[1]); }\n");
+    assert!(s.ok(), "{}", s.info_log());
+    let s = frag("#version 140\nvoid main() { gl_FragColor = vec4(determinant(mat2(2.0))); }\n");
+    assert!(!s.ok());
+    let s = frag("#version 150\nconst float d = determinant(mat3(2.0));\nout vec4 o;\nvoid main() { o = vec4(d); }\n");
+    assert!(s.ok() || s.info_log().contains("out"), "{}", s.info_log());
+}
 #[test]
 fn minimal_shaders() {
     ok(frag("void main() { gl_FragColor = vec4(1.0); }"));
@@ -635,4 +707,24 @@ fn uint_indices() {
         v130("uniform float a[4]; void main() { gl_FragColor = vec4(a[0xffffffffu]); }"),
         Code::IndexOutOfRange,
     );
+}
+
+#[test]
+fn texel_offsets_and_sampler_array_indices_are_constant_from_130() {
+    let s = frag(
+        "#version 130\nuniform sampler2D a;\nuniform ivec2 o;\nvoid main() { gl_FragColor = texelFetchOffset(a, ivec2(0), 0, o); }\n",
+    );
+    assert!(
+        s.info_log().contains("must be a constant expression"),
+        "{}",
+        s.info_log()
+    );
+    ok(frag(
+        "#version 130\nuniform sampler2D a;\nvoid main() { gl_FragColor = textureOffset(a, vec2(0.0), ivec2(1, -1), 2.0); }\n",
+    ));
+    let src = |v: u32| {
+        format!("#version {v}\nuniform sampler2D s[4];\nuniform int x;\nvoid main() {{ gl_FragColor = texture2D(s[x], vec2(0.0)) + texture2D(s[1], vec2(0.0)); }}\n")
+    };
+    ok(frag(&src(120)));
+    fails(frag(&src(130)), Code::NotConstant);
 }

@@ -40,13 +40,8 @@ pub(crate) fn keyword_type(k: Keyword) -> Option<Type> {
         K::Mat3x4 => Type::mat(3, 4),
         K::Mat4x2 => Type::mat(4, 2),
         K::Mat4x3 => Type::mat(4, 3),
-        K::Sampler1D => Type::new(Base::Sampler(SamplerKind::Sampler1D)),
-        K::Sampler2D => Type::new(Base::Sampler(SamplerKind::Sampler2D)),
-        K::Sampler3D => Type::new(Base::Sampler(SamplerKind::Sampler3D)),
-        K::SamplerCube => Type::new(Base::Sampler(SamplerKind::SamplerCube)),
-        K::Sampler1DShadow => Type::new(Base::Sampler(SamplerKind::Sampler1DShadow)),
-        K::Sampler2DShadow => Type::new(Base::Sampler(SamplerKind::Sampler2DShadow)),
-        _ => return None,
+        // Every sampler keyword spells its type's name.
+        k => return SamplerKind::from_name(k.as_str()).map(|s| Type::new(Base::Sampler(s))),
     })
 }
 
