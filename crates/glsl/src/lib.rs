@@ -25,9 +25,12 @@
 //!
 //! ## Limitations
 //! - GLSL ES is rejected. `#version 130` to `330` are accepted and read
-//!   with the GLSL 1.20 language plus what [`lang::Feature`] lists; the
-//!   rest of those versions (their types, qualifiers, blocks and built-ins)
-//!   is being added, and a construct not yet there is a compile error.
+//!   with the GLSL 1.20 language plus what [`lang::Feature`] lists
+//!   (storage, interpolation, precision and layout qualifiers, uniform and
+//!   input/output blocks among them); the rest of those versions (their
+//!   types and built-ins) is being added, and a construct not yet there is
+//!   a compile error. Geometry-shader layouts are parsed and rejected (no
+//!   geometry stage); `gl_PerVertex` cannot be redeclared yet.
 //! - Extensions: those of [`lang::Extension`]; others are accepted by
 //!   `#extension` only with `warn`/`disable`.
 
