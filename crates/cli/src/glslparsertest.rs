@@ -35,8 +35,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// GL extensions whose compiler side shaderbox implements. A test
-/// requiring any other is skipped; `!NAME` (requires NAME to be absent)
-/// always holds.
+/// requiring any other is skipped, and so is one requiring one of these
+/// to be absent (`!NAME`).
 const SUPPORTED_EXTENSIONS: &[&str] = &[
     "GL_ARB_explicit_attrib_location",
     "GL_ARB_fragment_coord_conventions",
@@ -228,11 +228,20 @@ fn evaluate(args: &Args) -> Outcome {
         );
     }
     for ext in &args.extensions {
-        if !ext.starts_with('!') && !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) {
-            return Outcome::new(
-                Verdict::Skip,
-                format!("Test requires extension {ext}, which shaderbox does not support"),
-            );
+        match ext.strip_prefix('!') {
+            Some(absent) if SUPPORTED_EXTENSIONS.contains(&absent) => {
+                return Outcome::new(
+                    Verdict::Skip,
+                    format!("Test requires {absent} to be absent, and shaderbox supports it"),
+                );
+            }
+            None if !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) => {
+                return Outcome::new(
+                    Verdict::Skip,
+                    format!("Test requires extension {ext}, which shaderbox does not support"),
+                );
+            }
+            _ => {}
         }
     }
     let text = match read_source(&args.file) {

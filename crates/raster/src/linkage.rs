@@ -164,7 +164,8 @@ impl FsLayout {
         // User outputs (GLSL 1.30 `out`): each at its location, or, without
         // one, at the next free draw buffers in declaration order.
         let user: Vec<&Slot> = out.iter().filter(|s| !s.name.starts_with("gl_")).collect();
-        if !user.is_empty() {
+        let has_user = !user.is_empty();
+        if has_user {
             color_out = [None; MAX_DRAW_BUFFERS];
             let mut next = 0usize;
             let placed = user.iter().filter(|s| s.location.is_some());
@@ -198,11 +199,16 @@ impl FsLayout {
                 .map(|s| s.offset + s.components)
                 .max()
                 .unwrap_or(0),
+            // A draw buffer reads four components from an output's offset;
+            // a user output may have fewer (`out float c;'), whose missing
+            // components are undefined (GLSL 1.30 §4.3.6): three spare
+            // components keep the read in the batch.
             outputs: out
                 .iter()
                 .map(|s| s.offset + s.components)
                 .max()
-                .unwrap_or(0),
+                .unwrap_or(0)
+                + if has_user { 3 } else { 0 },
             links,
             frag_coord,
             front_facing,

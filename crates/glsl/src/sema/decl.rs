@@ -7,7 +7,7 @@ use crate::ast::{Declaration, InitDeclarator, InitDeclaratorList, Qualifier};
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{self, ExprKind, Global, Interpolation, Stage, Storage};
 use crate::lang::{Feature, Version};
-use crate::limits::MAX_TEXTURE_COORDS;
+use crate::limits::{MAX_CLIP_PLANES, MAX_TEXTURE_COORDS};
 use crate::source::Span;
 use crate::types::{ArraySize, Base, Scalar, Type};
 
@@ -536,6 +536,14 @@ impl Analyzer {
         let vec4 = ty.base == Type::vec(Scalar::Float, 4).base;
         let varying = storage == Storage::Varying && builtin.is_some() && vec4;
         let texcoord_ok = name == "gl_TexCoord" && varying && ty.is_array();
+        // GLSL 1.30 §7.1: `out float gl_ClipDistance[N];' (vertex) and
+        // `in float gl_ClipDistance[N];' (fragment) may size it.
+        let clip_ok = name == "gl_ClipDistance"
+            && storage == Storage::Varying
+            && builtin.is_some()
+            && ty.base == Base::Scalar(Scalar::Float)
+            && ty.is_array()
+            && q.storage != Some(Qualifier::Varying);
         let colors: &[&str] = match self.stage {
             Stage::Vertex => &[
                 "gl_FrontColor",
@@ -619,7 +627,12 @@ impl Analyzer {
             }
             return;
         }
-        if !texcoord_ok {
+        let (array_ok, max, max_name) = if clip_ok {
+            (true, MAX_CLIP_PLANES, "gl_MaxClipDistances")
+        } else {
+            (texcoord_ok, MAX_TEXTURE_COORDS, "gl_MaxTextureCoords")
+        };
+        if !array_ok {
             self.error(
                 Code::Redeclared,
                 d.name.span,
@@ -635,11 +648,11 @@ impl Analyzer {
         }
         let Some(v) = builtin else { return };
         if let Some(ArraySize::Sized(n)) = ty.array {
-            if n > MAX_TEXTURE_COORDS {
+            if n > max {
                 self.error(
                     Code::BadArraySize,
                     d.name.span,
-                    format!("`gl_TexCoord' redeclared with size {n}, larger than gl_MaxTextureCoords ({MAX_TEXTURE_COORDS})"),
+                    format!("`{name}' redeclared with size {n}, larger than {max_name} ({max})"),
                 );
                 return;
             }
@@ -649,7 +662,7 @@ impl Analyzer {
                     Code::IndexOutOfRange,
                     d.name.span,
                     format!(
-                        "`gl_TexCoord' redeclared with size {n}, but index {} is already used",
+                        "`{name}' redeclared with size {n}, but index {} is already used",
                         used - 1
                     ),
                 );

@@ -22,6 +22,8 @@ pub(crate) struct LayoutQuals {
     /// The span of the first `layout(...)`.
     pub span: Option<Span>,
     pub location: Option<(u32, Span)>,
+    /// `index = N` (accepted on fragment outputs with a location).
+    pub index: Option<Span>,
     pub block_layout: Option<(BlockLayout, Span)>,
     pub row_major: Option<(bool, Span)>,
     pub origin_upper_left: Option<Span>,
@@ -401,7 +403,7 @@ impl Analyzer {
         // GLSL 1.50 §4.3.8: layout identifiers are not case sensitive.
         let lower = id.name.name.to_ascii_lowercase();
         let span = id.span;
-        let takes_value = lower == "location" || lower == "max_vertices";
+        let takes_value = matches!(lower.as_str(), "location" | "index" | "max_vertices");
         if takes_value && id.value.is_none() {
             self.error(
                 Code::BadQualifier,
@@ -427,6 +429,20 @@ impl Analyzer {
                     return;
                 };
                 out.location = Some((v, span));
+            }
+            "index" => {
+                // GL_ARB_blend_func_extended's second colour of an output;
+                // dual-source blending is not implemented, so the value is
+                // checked and dropped.
+                if !self.require(Feature::ExplicitLocation, "`layout(index)'", span) {
+                    return;
+                }
+                if let Some(v) = id.value.as_ref().and_then(|e| self.layout_value(e)) {
+                    if v > 1 {
+                        self.error(Code::BadQualifier, span, "`index' must be 0 or 1");
+                    }
+                    out.index = Some(span);
+                }
             }
             "std140" | "shared" | "packed" => {
                 if !self.require(Feature::UniformBlocks, &format!("`{lower}'"), span) {
@@ -508,6 +524,15 @@ impl Analyzer {
             _ => false,
         };
         let mut location = None;
+        if let Some(span) = l.index {
+            if !(loc_ok && self.stage == Stage::Fragment && l.location.is_some()) {
+                self.error(
+                    Code::BadQualifier,
+                    span,
+                    "`index' is only allowed with `location' on fragment shader outputs",
+                );
+            }
+        }
         if let Some((v, span)) = l.location {
             if loc_ok {
                 location = Some(v);
@@ -764,21 +789,37 @@ impl Analyzer {
             );
             return;
         }
-        if let Some(prev) = self.scopes.lookup_current(&b.name.name) {
-            // Block names live in their own name space, except that a
-            // block may not take the name of a global variable or type
-            // (GLSL 1.50 §4.3.7).
-            if !matches!(prev, Symbol::Funcs(_)) {
-                self.error(
-                    Code::Redeclared,
-                    b.name.span,
-                    format!("block name `{}' is already used by a global", b.name.name),
-                );
-                return;
-            }
+        // A block name is a global name: nothing else at global scope may
+        // take it (GLSL 1.40 §4.3.5.1, 1.50 §4.3.7).
+        if self.scopes.lookup_current(&b.name.name).is_some() {
+            self.error(
+                Code::Redeclared,
+                b.name.span,
+                format!(
+                    "block name `{}' is already declared at global scope",
+                    b.name.name
+                ),
+            );
+            return;
         }
-        let members = self.block_members(b, storage, row_major);
+        let block_interp = q.interpolation.map(|(i, _)| i);
+        let members = self.block_members(b, storage, row_major, block_interp);
         let id = BlockId(self.module.blocks.len() as u32);
+        // The block's members as a struct: the type of a named instance,
+        // and what the block name stands for in the global scope.
+        let sid = crate::types::StructId(self.module.structs.len() as u32);
+        self.module.structs.push(StructDef {
+            name: b.name.name.to_string(),
+            members: members
+                .iter()
+                .map(|m| StructMember {
+                    name: m.name.clone(),
+                    ty: m.ty,
+                })
+                .collect(),
+            builtin: self.builtin_mode,
+        });
+        self.scopes.insert(b.name.name.clone(), Symbol::Struct(sid));
         let mut globals = Vec::new();
         let mut array = None;
         match &b.instance {
@@ -803,18 +844,6 @@ impl Analyzer {
                 }
             }
             Some((inst, arr)) => {
-                let sid = crate::types::StructId(self.module.structs.len() as u32);
-                self.module.structs.push(StructDef {
-                    name: b.name.name.to_string(),
-                    members: members
-                        .iter()
-                        .map(|m| StructMember {
-                            name: m.name.clone(),
-                            ty: m.ty,
-                        })
-                        .collect(),
-                    builtin: self.builtin_mode,
-                });
                 let ty = self.apply_array(
                     Type {
                         base: Base::Struct(sid),
@@ -915,11 +944,13 @@ impl Analyzer {
         b: &InterfaceBlock,
         storage: Storage,
         row_major: bool,
+        block_interp: Option<Interpolation>,
     ) -> Vec<BlockMember> {
         let mut out: Vec<BlockMember> = Vec::new();
+        let frag_input = storage == Storage::Varying && self.stage == Stage::Fragment;
         for m in &b.members {
             let mut member_row_major = row_major;
-            let mut interpolation = None;
+            let mut interpolation = block_interp;
             let mut centroid = false;
             let mut invariant = false;
             let mut precision = None;
@@ -1016,6 +1047,17 @@ impl Analyzer {
                         d.name.span,
                         format!(
                             "member `{}' of an input or output block cannot be bool",
+                            d.name.name
+                        ),
+                    );
+                }
+                let integer = matches!(mty.element().base, Base::Scalar(s) | Base::Vector(s, _) if super::decl::is_integer(s));
+                if frag_input && integer && interpolation != Some(Interpolation::Flat) {
+                    self.error(
+                        Code::BadQualifier,
+                        d.name.span,
+                        format!(
+                            "member `{}' of a fragment input block has an integer type; it must be `flat'",
                             d.name.name
                         ),
                     );

@@ -316,6 +316,10 @@ fn uniform_blocks() {
         "uniform B { float x; }; uniform B { float y; };",
         "uniform B { varying float x; };",
         "uniform B { float x; float x; };",
+        "uniform a { vec4 b; }; float a;",
+        "uniform a { vec4 b; }; struct a { vec4 c; };",
+        "uniform a { vec4 b; }; float a(void) { return b.x; }",
+        "struct a { vec4 c; }; uniform a { vec4 b; };",
     ] {
         let s = vert(&format!("#version 140\n{bad} void main() {{}}"));
         assert!(!s.ok(), "{bad}");
@@ -418,4 +422,32 @@ fn link_matches_interpolation_blocks_and_locations() {
         "#version 330\nout vec4 c; void main() { c = vec4(0); }",
     );
     assert!(p.ok(), "{}", p.info_log());
+}
+
+#[test]
+fn integer_members_of_fragment_input_blocks_are_flat() {
+    fails(
+        &frag("#version 150\nin B { int i; } b; void main() {}"),
+        Code::BadQualifier,
+    );
+    ok(&frag(
+        "#version 150\nin B { flat int i; } b; void main() {}",
+    ));
+    ok(&frag(
+        "#version 150\nflat in B { int i; } b; void main() {}",
+    ));
+}
+
+#[test]
+fn fragment_output_index_needs_a_location() {
+    let ext = "#version 110\n#extension GL_ARB_explicit_attrib_location : require\n";
+    ok(&frag(&format!(
+        "{ext}layout(location = 0, index = 1) out vec4 c; void main() {{ c = vec4(1); }}"
+    )));
+    fails(
+        &frag(&format!(
+            "{ext}layout(index = 1) out vec4 c; void main() {{}}"
+        )),
+        Code::BadQualifier,
+    );
 }
