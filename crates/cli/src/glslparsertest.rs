@@ -24,7 +24,8 @@
 //! linked on its own into a program)" equals "expected pass". It is
 //! skipped when it needs what shaderbox does not have: a GLSL version
 //! other than 1.10 and 1.20 (GLSL ES included), a stage other than vertex
-//! and fragment, any GL extension, or shader includes.
+//! and fragment, a GL extension outside `SUPPORTED_EXTENSIONS`, or shader
+//! includes.
 
 use crate::guard::guarded;
 use crate::input::{read_source, stage_from_path, StageGuess};
@@ -33,9 +34,14 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-/// GL extensions shaderbox implements (none yet). A test requiring any
-/// other is skipped; `!NAME` (requires NAME to be absent) always holds.
-const SUPPORTED_EXTENSIONS: &[&str] = &[];
+/// GL extensions whose compiler side shaderbox implements. A test
+/// requiring any other is skipped, and so is one requiring one of these
+/// to be absent (`!NAME`).
+const SUPPORTED_EXTENSIONS: &[&str] = &[
+    "GL_ARB_explicit_attrib_location",
+    "GL_ARB_fragment_coord_conventions",
+    "GL_ARB_uniform_buffer_object",
+];
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -229,11 +235,20 @@ fn evaluate(args: &Args) -> Outcome {
         );
     }
     for ext in &args.extensions {
-        if !ext.starts_with('!') && !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) {
-            return Outcome::new(
-                Verdict::Skip,
-                format!("Test requires extension {ext}, which shaderbox does not support"),
-            );
+        match ext.strip_prefix('!') {
+            Some(absent) if SUPPORTED_EXTENSIONS.contains(&absent) => {
+                return Outcome::new(
+                    Verdict::Skip,
+                    format!("Test requires {absent} to be absent, and shaderbox supports it"),
+                );
+            }
+            None if !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) => {
+                return Outcome::new(
+                    Verdict::Skip,
+                    format!("Test requires extension {ext}, which shaderbox does not support"),
+                );
+            }
+            _ => {}
         }
     }
     let text = match read_source(&args.file) {

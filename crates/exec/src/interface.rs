@@ -22,6 +22,12 @@ pub struct Slot {
     /// Outputs: statically written by the shader. Inputs and uniforms:
     /// `true` when the program reads them.
     pub written: bool,
+    /// `layout(location = N)` of a user fragment output (its draw buffer)
+    /// or vertex input.
+    pub location: Option<u32>,
+    /// The interpolation qualifier of a varying (`flat`: the provoking
+    /// vertex's value, not interpolated).
+    pub interpolation: Option<glsl::ir::Interpolation>,
 }
 
 /// Where each interface variable lives (see the crate docs).

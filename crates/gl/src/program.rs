@@ -791,7 +791,9 @@ fn assign_attribs(
             });
             continue;
         }
-        if let Some(&b) = bindings.get(&g.name) {
+        // A `layout(location)` in the shader wins over glBindAttribLocation
+        // (GL 3.3 §2.11.3).
+        if let Some(b) = g.location.or_else(|| bindings.get(&g.name).copied()) {
             let n = slots(g.ty);
             if b as usize + n > used.len() {
                 return Err(format!(
@@ -810,7 +812,7 @@ fn assign_attribs(
         }
     }
     for g in &globals {
-        if g.builtin || bindings.contains_key(&g.name) {
+        if g.builtin || g.location.is_some() || bindings.contains_key(&g.name) {
             continue;
         }
         let n = slots(g.ty);

@@ -475,3 +475,73 @@ fn element_indices_of_every_type_and_place_draw_the_same() {
         assert!(got == want, "type {ty:#x}, client memory");
     }
 }
+
+/// GLSL 1.30 `in`/`out` draw like their `attribute`/`varying` equivalents:
+/// a vertex input at an explicit location, a smooth and a flat varying
+/// (an integer one among them), and a user fragment output.
+#[test]
+fn glsl_130_inputs_outputs_and_flat_varyings() {
+    let vs = "#version 130\n\
+        #extension GL_ARB_explicit_attrib_location : require\n\
+        layout(location = 3) in vec4 pos;\n\
+        in vec4 col;\n\
+        out vec3 v;\n\
+        flat out int band;\n\
+        void main() { gl_Position = pos; v = col.rgb; band = pos.x < 0.0 ? 1 : 2; }";
+    let fs = "#version 130\n\
+        in vec3 v;\n\
+        flat in int band;\n\
+        out vec4 color;\n\
+        void main() { color = vec4(v, 1.0) * (band == 1 ? 1.0 : 0.5); }";
+    let attribute_vs = "attribute vec4 pos; attribute vec4 col; varying vec3 v;\n\
+        void main() { gl_Position = pos; v = col.rgb; }";
+    let varying_fs = "varying vec3 v; void main() { gl_FragColor = vec4(v, 1.0); }";
+    let quad = [
+        -1.0, -1.0, 0.0, 1.0, 1.0, -1.0, 0.0, 1.0, -1.0, 1.0, 0.0, 1.0, 1.0, 1.0, 0.0, 1.0,
+    ];
+    let cols = [
+        0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0,
+    ];
+    let mut images = Vec::new();
+    for (vs, fs) in [(attribute_vs, varying_fs), (vs, fs)] {
+        let mut ctx = Context::new(16, 16);
+        let p = program(&mut ctx, Some(vs), Some(fs));
+        let pos = ctx.get_attrib_location(p, "pos");
+        let col = ctx.get_attrib_location(p, "col");
+        assert!(pos >= 0 && col >= 0 && pos != col);
+        if vs.contains("layout") {
+            assert_eq!(pos, 3);
+        }
+        ctx.clear_color(0.0, 0.0, 0.0, 0.0);
+        ctx.clear(GL_COLOR_BUFFER_BIT);
+        ctx.vertex_attrib_pointer(
+            pos as u32,
+            4,
+            GL_FLOAT,
+            false,
+            0,
+            ArrayData::from_f32(&quad),
+        );
+        ctx.vertex_attrib_pointer(
+            col as u32,
+            4,
+            GL_FLOAT,
+            false,
+            0,
+            ArrayData::from_f32(&cols),
+        );
+        ctx.enable_vertex_attrib_array(pos as u32);
+        ctx.enable_vertex_attrib_array(col as u32);
+        ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        assert_eq!(ctx.take_draw_error(), None);
+        images.push((pixel(&mut ctx, 2, 8), pixel(&mut ctx, 13, 8)));
+    }
+    // attribute/varying: green everywhere.
+    assert!(close(images[0].0, [0.0, 1.0, 0.0, 1.0]), "{:?}", images[0]);
+    assert!(close(images[0].1, [0.0, 1.0, 0.0, 1.0]), "{:?}", images[0]);
+    // in/out: the same green, halved in the triangle whose provoking
+    // vertex (the last) has x > 0: the strip's second, (1,-1) (-1,1) (1,1).
+    assert!(close(images[1].0, [0.0, 1.0, 0.0, 1.0]), "{:?}", images[1]);
+    assert!(close(images[1].1, [0.0, 0.5, 0.0, 0.5]), "{:?}", images[1]);
+}

@@ -40,6 +40,16 @@ pub enum Qualifier {
     In,
     Out,
     Inout,
+    /// Interpolation qualifiers (GLSL 1.30 §4.3.7).
+    Flat,
+    Smooth,
+    Noperspective,
+    /// Precision qualifiers (GLSL 1.30 §4.5): accepted, no effect.
+    Lowp,
+    Mediump,
+    Highp,
+    /// `layout(...)`: its identifiers are in [`SpannedQualifier::layout`].
+    Layout,
 }
 
 impl Qualifier {
@@ -54,13 +64,46 @@ impl Qualifier {
             Qualifier::In => "in",
             Qualifier::Out => "out",
             Qualifier::Inout => "inout",
+            Qualifier::Flat => "flat",
+            Qualifier::Smooth => "smooth",
+            Qualifier::Noperspective => "noperspective",
+            Qualifier::Lowp => "lowp",
+            Qualifier::Mediump => "mediump",
+            Qualifier::Highp => "highp",
+            Qualifier::Layout => "layout",
         }
+    }
+
+    pub fn is_interpolation(self) -> bool {
+        matches!(
+            self,
+            Qualifier::Flat | Qualifier::Smooth | Qualifier::Noperspective
+        )
+    }
+
+    pub fn is_precision(self) -> bool {
+        matches!(
+            self,
+            Qualifier::Lowp | Qualifier::Mediump | Qualifier::Highp
+        )
     }
 }
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct SpannedQualifier {
     pub qualifier: Qualifier,
+    pub span: Span,
+    /// The identifiers of `layout(...)`, in order; empty for the other
+    /// qualifiers.
+    pub layout: Vec<LayoutId>,
+}
+
+/// One entry of `layout(...)`: `std140`, `location = 3`. Analysis judges
+/// the name (case-sensitively) and that the value is an integer literal.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LayoutId {
+    pub name: Ident,
+    pub value: Option<Expr>,
     pub span: Span,
 }
 
@@ -133,11 +176,32 @@ pub enum Declaration {
     Variables(InitDeclaratorList),
     /// `invariant gl_Position, v;` (GLSL 1.20 §4.6.1).
     Invariant { names: Vec<Ident>, span: Span },
-    /// `precision mediump float;` is not GLSL 1.10/1.20 (`precision` is
-    /// reserved in 1.20); the parser reports it as a reserved word, so there
-    /// is no node for it.
-    #[doc(hidden)]
-    _Reserved,
+    /// `precision mediump float;` (GLSL 1.30 §4.5.3).
+    Precision {
+        precision: SpannedQualifier,
+        ty: TypeSpecifier,
+        span: Span,
+    },
+    /// A block: `uniform B { vec4 a; } b[2];` (GLSL 1.40 §4.3.5.1,
+    /// 1.50 §4.3.7).
+    Block(InterfaceBlock),
+    /// Qualifiers alone: `layout(std140) uniform;` (default layout of
+    /// later uniform blocks), `layout(triangles) in;`.
+    Qualifiers {
+        qualifiers: Vec<SpannedQualifier>,
+        span: Span,
+    },
+}
+
+/// An interface block as written.
+#[derive(Clone, Debug, PartialEq)]
+pub struct InterfaceBlock {
+    pub qualifiers: Vec<SpannedQualifier>,
+    pub name: Ident,
+    pub members: Vec<StructMemberDecl>,
+    /// The instance name and its array size, if any.
+    pub instance: Option<(Ident, Option<ArraySpec>)>,
+    pub span: Span,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -22,7 +22,18 @@
 //!   `break` leaves the innermost loop or switch, `continue` the innermost
 //!   loop;
 //! - expressions may have side effects (assignments, `++`, calls) and are
-//!   evaluated left to right; `&&`, `||` and `?:` evaluate lazily.
+//!   evaluated left to right; `&&`, `||` and `?:` evaluate lazily;
+//! - the stage interface is in [`Global::storage`], whatever the keywords
+//!   were: vertex inputs (`attribute`, vertex `in`) are
+//!   [`Storage::Attribute`], vertex outputs and fragment inputs (`varying`,
+//!   vertex `out`, fragment `in`) are [`Storage::Varying`], user fragment
+//!   outputs (fragment `out`) are [`Storage::FragOutput`]; their
+//!   qualifiers are [`Global::interpolation`], [`Global::centroid`],
+//!   [`Global::invariant`] and [`Global::location`]. Precision qualifiers
+//!   leave no trace;
+//! - interface blocks ([`Module::blocks`]) are made of ordinary globals of
+//!   the block's storage (see [`InterfaceBlock`]), each naming its block in
+//!   [`Global::block`].
 
 pub mod print;
 
@@ -85,9 +96,87 @@ pub enum Storage {
     Uniform,
     /// Vertex-stage input.
     Attribute,
-    /// Written by the vertex stage, read (only) by the fragment stage.
-    /// Also the read-only fragment inputs `gl_FragCoord`, `gl_FrontFacing`.
+    /// Written by the vertex stage, read (only) by the fragment stage:
+    /// `varying`, vertex `out` and fragment `in` (GLSL 1.30 §4.3.4,
+    /// §4.3.6). Also the read-only fragment inputs `gl_FragCoord`,
+    /// `gl_FrontFacing`.
     Varying,
+    /// A user-declared fragment output (`out` in a fragment shader, GLSL
+    /// 1.30 §4.3.6): written like a private global, its value goes to the
+    /// draw buffer of [`Global::location`] (0 when absent and it is the
+    /// only output; the GL layer may bind others).
+    FragOutput,
+}
+
+/// How a varying is interpolated (GLSL 1.30 §4.3.7). `None` in
+/// [`Global::interpolation`] means no qualifier: smooth, or the GL shade
+/// model for the built-in colours.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum Interpolation {
+    Smooth,
+    Flat,
+    NoPerspective,
+}
+
+impl Interpolation {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Interpolation::Smooth => "smooth",
+            Interpolation::Flat => "flat",
+            Interpolation::NoPerspective => "noperspective",
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+pub struct BlockId(pub u32);
+
+/// How a uniform block's members are laid out in its buffer (GLSL 1.40
+/// §4.3.5.2). `Shared` is the default.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum BlockLayout {
+    Shared,
+    Packed,
+    Std140,
+}
+
+/// A member of an interface block.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct BlockMember {
+    pub name: String,
+    pub ty: Type,
+    /// Matrices (and arrays and structs of them) are stored row by row
+    /// in the buffer (`row_major`).
+    pub row_major: bool,
+    pub interpolation: Option<Interpolation>,
+    pub centroid: bool,
+    pub invariant: bool,
+}
+
+/// An interface block (GLSL 1.40 §4.3.5.1 uniform blocks, 1.50 §4.3.7
+/// input and output blocks). Its members are ordinary globals of the
+/// block's storage, so the executor sees uniforms and varyings: without
+/// an instance name one global per member, named as the member; with one,
+/// a single global of the instance's name whose type is an (array of an)
+/// anonymous struct of the members ([`InterfaceBlock::globals`] holds
+/// it). Offsets in a buffer are the GL layer's business; the block keeps
+/// what decides them (layout, member types, row-major flags).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct InterfaceBlock {
+    pub name: String,
+    /// [`Storage::Uniform`], or [`Storage::Varying`] / [`Storage::Attribute`]
+    /// for the output / input blocks of 1.50.
+    pub storage: Storage,
+    /// An input block of a fragment shader (its storage is `Varying`, as
+    /// is an output block of a vertex shader).
+    pub input: bool,
+    pub instance: Option<String>,
+    /// Arrayed instance: `uniform B { ... } b[4];`.
+    pub array: Option<u32>,
+    pub layout: BlockLayout,
+    pub members: Vec<BlockMember>,
+    pub globals: Vec<GlobalId>,
+    pub span: Span,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -99,6 +188,13 @@ pub struct Global {
     pub builtin: bool,
     pub invariant: bool,
     pub centroid: bool,
+    /// The interpolation qualifier of a varying, as written.
+    pub interpolation: Option<Interpolation>,
+    /// `layout(location = N)` of a vertex input or fragment output.
+    pub location: Option<u32>,
+    /// The interface block this global belongs to (a member, or the
+    /// instance of a named block).
+    pub block: Option<BlockId>,
     /// Constant initializer (`const` globals, uniforms with an initializer).
     pub init: Option<ConstValue>,
     /// Non-constant initializer of a private global, evaluated at the start
@@ -520,6 +616,19 @@ pub struct Module {
     pub globals: Vec<Global>,
     pub functions: Vec<Function>,
     pub extensions: Vec<(String, ExtensionBehavior)>,
+    pub blocks: Vec<InterfaceBlock>,
+    /// `layout(origin_upper_left)` / `layout(pixel_center_integer)` on a
+    /// redeclared `gl_FragCoord` (GLSL 1.50 §7.2,
+    /// GL_ARB_fragment_coord_conventions).
+    pub frag_coord: FragCoordConventions,
+}
+
+/// The conventions of `gl_FragCoord`: the default is a lower-left origin
+/// and pixel centres at half-integers.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct FragCoordConventions {
+    pub origin_upper_left: bool,
+    pub pixel_center_integer: bool,
 }
 
 impl Module {

@@ -117,6 +117,12 @@ extensions! {
     ArbDrawBuffers = "GL_ARB_draw_buffers";
     // shaderbox's `debugPrintfEXT` (see `crate::printf`).
     ShaderboxDebugPrintf = "GL_SHADERBOX_debug_printf";
+    // `layout(location = N)` on vertex inputs and fragment outputs.
+    ArbExplicitAttribLocation = "GL_ARB_explicit_attrib_location";
+    // Uniform blocks and their layout qualifiers.
+    ArbUniformBufferObject = "GL_ARB_uniform_buffer_object";
+    // `layout(origin_upper_left, pixel_center_integer)` on `gl_FragCoord`.
+    ArbFragmentCoordConventions = "GL_ARB_fragment_coord_conventions";
 }
 
 /// A set of [`Extension`]s.
@@ -174,6 +180,16 @@ pub enum Feature {
     /// constant: GLSL 1.10 and 1.20 say nothing against it, 1.30 §4.1.7
     /// allows "integral constant expressions" only.
     NonConstantSamplerIndex,
+    /// Uniform blocks (`uniform B { ... };`) and their layout qualifiers
+    /// `std140`, `shared`, `packed`, `row_major`, `column_major`.
+    UniformBlocks,
+    /// Input and output interface blocks (`out B { ... } b;`).
+    InOutBlocks,
+    /// `layout(location = N)` on vertex inputs and fragment outputs.
+    ExplicitLocation,
+    /// `layout(origin_upper_left)`, `layout(pixel_center_integer)` on a
+    /// redeclared `gl_FragCoord`.
+    FragCoordConventions,
     /// The fixed-function interface GLSL 1.40 removes (its §1.2.5):
     /// built-in vertex inputs (`gl_Vertex`...), built-in uniforms other
     /// than `gl_DepthRange`, `gl_TexCoord`, `gl_FogFragCoord` and the
@@ -281,7 +297,6 @@ impl Language {
             | Feature::Switch
             | Feature::IntegerOperators
             | Feature::InterpolationQualifiers
-            | Feature::StageInOut
             | Feature::Precision => since(Version::V130),
             Feature::NonConstantSamplerIndex => {
                 if self.version >= Version::V130 {
@@ -289,6 +304,21 @@ impl Language {
                 } else {
                     Ok(())
                 }
+            }
+            // GL_ARB_explicit_attrib_location's `layout(location) in`
+            // needs global `in`/`out` in the versions it extends.
+            Feature::StageInOut => {
+                self.since_or(Version::V130, Extension::ArbExplicitAttribLocation)
+            }
+            Feature::UniformBlocks => {
+                self.since_or(Version::V140, Extension::ArbUniformBufferObject)
+            }
+            Feature::InOutBlocks => since(Version::V150),
+            Feature::ExplicitLocation => {
+                self.since_or(Version::V330, Extension::ArbExplicitAttribLocation)
+            }
+            Feature::FragCoordConventions => {
+                self.since_or(Version::V150, Extension::ArbFragmentCoordConventions)
             }
             Feature::CompatibilityInterface => {
                 if self.version >= Version::V140 && self.profile == Profile::Core {
@@ -298,6 +328,24 @@ impl Language {
                 }
             }
         }
+    }
+
+    /// Available from `v` on, or earlier with `e` enabled.
+    fn since_or(self, v: Version, e: Extension) -> Result<(), Unavailable> {
+        if self.version >= v || self.has(e) {
+            Ok(())
+        } else {
+            Err(Unavailable::NeedsVersionOrExtension(v, e))
+        }
+    }
+
+    /// Whether `layout` is a keyword: from GLSL 1.40 on, and earlier when
+    /// an extension that uses it is enabled.
+    pub fn has_layout_keyword(self) -> bool {
+        self.version >= Version::V140
+            || self.has(Extension::ArbExplicitAttribLocation)
+            || self.has(Extension::ArbUniformBufferObject)
+            || self.has(Extension::ArbFragmentCoordConventions)
     }
 
     /// `gate` as a bool.

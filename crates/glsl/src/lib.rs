@@ -25,14 +25,14 @@
 //!
 //! ## Limitations
 //! - GLSL ES is rejected. `#version 130` to `330` are accepted and read
-//!   with the GLSL 1.20 language plus what [`lang::Feature`] lists: so far
+//!   with the GLSL 1.20 language plus what [`lang::Feature`] lists:
 //!   `uint`/`uvec*` with the `u` suffix and the int/uint→float implicit
-//!   conversions, the integer operators (`%`, shifts, bitwise) and
-//!   `switch`. Their built-ins follow each version, profile and stage
-//!   ([`builtins`]), except the overloads on `uint` and the geometry
-//!   stage's variables. The rest of those versions (their qualifiers and
-//!   blocks) is being added, and a construct not yet there is a compile
-//!   error.
+//!   conversions, the integer operators (`%`, shifts, bitwise), `switch`,
+//!   storage, interpolation, precision and layout qualifiers, uniform and
+//!   input/output blocks. Their built-ins follow each version, profile and
+//!   stage ([`builtins`]), except the overloads on `uint` and the geometry
+//!   stage's variables. Geometry-shader layouts are parsed and rejected (no
+//!   geometry stage yet); `gl_PerVertex` cannot be redeclared yet.
 //! - Integer operations the spec leaves undefined have the executor's
 //!   defined results when folded ([`consteval`]): shift amounts modulo 32,
 //!   `i32::MIN % -1` is 0; division and `%` by zero are not constant.

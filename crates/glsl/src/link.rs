@@ -108,6 +108,7 @@ pub fn link(shaders: &[&Shader]) -> Program {
             }
             if let Some(linked) = merge_stage(stage, &objects, &names, &mut diags) {
                 check_limits(&linked, &mut diags);
+                check_locations(&linked, &mut diags);
                 program.stages.push(linked);
             }
         }
@@ -288,6 +289,8 @@ fn merge_stage(
         globals: Vec::new(),
         functions: Vec::new(),
         extensions: Vec::new(),
+        blocks: Vec::new(),
+        frag_coord: Default::default(),
     };
     let mut errors = false;
     // Global name -> (merged id, object that declared it first).
@@ -379,6 +382,12 @@ fn merge_stage(
                         )),
                     }
                 }
+                if existing.location != g.location || existing.interpolation != g.interpolation {
+                    problems.push(format!(
+                        "`{}' has a different location or interpolation qualifier here and in {}",
+                        g.name, names[other]
+                    ));
+                }
                 // §4.3.6: centroid and invariant must match; within one
                 // stage the objects share the variable, so the same holds.
                 if existing.centroid != g.centroid || existing.invariant != g.invariant {
@@ -431,6 +440,9 @@ fn merge_stage(
                 map.globals.push(id);
             }
         }
+        merge_blocks(&mut merged, m, &map, obj, diags, &mut errors);
+        merged.frag_coord.origin_upper_left |= m.frag_coord.origin_upper_left;
+        merged.frag_coord.pixel_center_integer |= m.frag_coord.pixel_center_integer;
         remaps.push((obj, m, map));
     }
 
@@ -639,7 +651,10 @@ fn merge_stage(
     // GLSL 1.10 §7.1: "All executions of a well-formed vertex shader must
     // write a value into [gl_Position]"; a vertex stage that never does is
     // rejected.
+    // From GLSL 1.40 (GL 3.1) on, a vertex shader that does not write
+    // gl_Position links; its position is undefined.
     if stage == Stage::Vertex
+        && merged.language.version < crate::lang::Version::V140
         && !merged
             .globals
             .iter()
@@ -684,6 +699,224 @@ fn signature(m: &Module, f: &Function) -> String {
 /// Components a value of this type occupies, for the limits.
 fn components(m: &Module, ty: Type) -> u32 {
     crate::consteval::flat_size(ty, &m.structs).min(u32::MAX as usize) as u32
+}
+
+/// Adds the interface blocks of object `obj` (module `m`, its globals
+/// already merged through `map`) to `merged`: a block of the same name and
+/// kind in another object must have the same members (GLSL 1.50 §4.3.7).
+fn merge_blocks(
+    merged: &mut Module,
+    m: &Module,
+    map: &Remap,
+    obj: usize,
+    diags: &mut Vec<LinkDiagnostic>,
+    errors: &mut bool,
+) {
+    for (bi, b) in m.blocks.iter().enumerate() {
+        let members: Vec<ir::BlockMember> = b
+            .members
+            .iter()
+            .map(|mb| ir::BlockMember {
+                ty: remap_type(mb.ty, map),
+                ..mb.clone()
+            })
+            .collect();
+        let same_kind = |x: &ir::InterfaceBlock| {
+            x.name == b.name && x.storage == b.storage && x.input == b.input
+        };
+        let id = match merged.blocks.iter().position(same_kind) {
+            Some(i) => {
+                let x = &merged.blocks[i];
+                if !same_members(&x.members, &members, merged) || x.layout != b.layout {
+                    *errors = true;
+                    diags.push(LinkDiagnostic {
+                        shader: Some(obj),
+                        diagnostic: Diagnostic::error(
+                            Code::LinkInterfaceMismatch,
+                            b.span,
+                            format!(
+                                "block `{}' is declared with different members or layout in two shader objects",
+                                b.name
+                            ),
+                        ),
+                    });
+                }
+                ir::BlockId(i as u32)
+            }
+            None => {
+                merged.blocks.push(ir::InterfaceBlock {
+                    members,
+                    globals: Vec::new(),
+                    ..b.clone()
+                });
+                ir::BlockId(merged.blocks.len() as u32 - 1)
+            }
+        };
+        for (gi, g) in m.globals.iter().enumerate() {
+            if g.block != Some(ir::BlockId(bi as u32)) {
+                continue;
+            }
+            let Some(&mg) = map.globals.get(gi) else {
+                continue;
+            };
+            merged.globals[mg.0 as usize].block = Some(id);
+            let blk = &mut merged.blocks[id.0 as usize];
+            if !blk.globals.contains(&mg) {
+                blk.globals.push(mg);
+            }
+        }
+    }
+}
+
+/// Block members match by name, type and qualifiers, in order.
+fn same_members(a: &[ir::BlockMember], b: &[ir::BlockMember], m: &Module) -> bool {
+    a.len() == b.len()
+        && a.iter().zip(b).all(|(x, y)| {
+            x.name == y.name
+                && compatible_types(x.ty, y.ty)
+                && (x.ty == y.ty || m.type_name(x.ty) == m.type_name(y.ty))
+                && x.row_major == y.row_major
+                && x.interpolation == y.interpolation
+                && x.centroid == y.centroid
+        })
+}
+
+/// Blocks between the stages: a fragment input block needs the vertex
+/// output block of its name, and uniform blocks of one name have the same
+/// members in both stages (GLSL 1.50 §4.3.7: matched by block name, not
+/// instance name).
+fn check_blocks(vm: &Module, fm: &Module, diags: &mut Vec<LinkDiagnostic>) {
+    for fb in &fm.blocks {
+        let kind = |x: &&ir::InterfaceBlock| {
+            x.name == fb.name
+                && x.storage == fb.storage
+                && (fb.storage == Storage::Uniform || !x.input)
+        };
+        let vb = vm.blocks.iter().find(kind);
+        let used = fb.globals.iter().any(|g| fm.global(*g).read);
+        match vb {
+            None if fb.input && used => push(
+                diags,
+                None,
+                Code::LinkVaryingNotWritten,
+                format!(
+                    "the fragment shader reads block `{}' but the vertex shader has no output block of that name",
+                    fb.name
+                ),
+            ),
+            Some(vb) => {
+                let same = vb.members.len() == fb.members.len()
+                    && vb.members.iter().zip(&fb.members).all(|(a, b)| {
+                        a.name == b.name
+                            && vm.type_name(a.ty) == fm.type_name(b.ty)
+                            && a.row_major == b.row_major
+                            && a.interpolation == b.interpolation
+                    })
+                    && vb.layout == fb.layout
+                    && vb.array.is_some() == fb.array.is_some();
+                if !same {
+                    push(
+                        diags,
+                        None,
+                        Code::LinkInterfaceMismatch,
+                        format!(
+                            "block `{}' has different members in the vertex and fragment shaders",
+                            fb.name
+                        ),
+                    );
+                }
+            }
+            None => {}
+        }
+    }
+}
+
+/// Slots a vertex input or fragment output takes from its location on: one
+/// per array element, and per matrix column.
+fn location_slots(ty: Type) -> u32 {
+    let per = match ty.base {
+        Base::Matrix { cols, .. } => cols as u32,
+        _ => 1,
+    };
+    match ty.array {
+        Some(ArraySize::Sized(n)) => per * n,
+        _ => per,
+    }
+}
+
+/// Explicit locations (GL_ARB_explicit_attrib_location, GLSL 3.30
+/// §4.3.8): within the limits; fragment outputs may not share one
+/// (vertex inputs may: GL 2.0 allows aliasing attributes).
+fn check_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
+    let (storage, max, what) = match s.stage {
+        Stage::Vertex => (
+            Storage::Attribute,
+            limits::MAX_VERTEX_ATTRIBS,
+            "vertex input",
+        ),
+        Stage::Fragment => (
+            Storage::FragOutput,
+            limits::MAX_DRAW_BUFFERS,
+            "fragment output",
+        ),
+    };
+    let mut used: Vec<Option<&str>> = vec![None; max as usize];
+    for g in s.module.globals.iter().filter(|g| g.storage == storage) {
+        let Some(loc) = g.location else { continue };
+        let n = location_slots(g.ty);
+        if u64::from(loc) + u64::from(n) > u64::from(max) {
+            push(
+                diags,
+                None,
+                Code::LinkTooMany,
+                format!(
+                    "{what} `{}' at location {loc} does not fit: there are {max} locations",
+                    g.name
+                ),
+            );
+            continue;
+        }
+        if s.stage == Stage::Fragment {
+            for slot in &mut used[loc as usize..(loc + n) as usize] {
+                if let Some(other) = slot {
+                    push(
+                        diags,
+                        None,
+                        Code::LinkInterfaceMismatch,
+                        format!(
+                            "fragment outputs `{other}' and `{}' are both assigned location {loc}",
+                            g.name
+                        ),
+                    );
+                    break;
+                }
+                *slot = Some(&g.name);
+            }
+        }
+    }
+    // GLSL 1.30 §7.2: user outputs and gl_FragColor/gl_FragData exclude
+    // each other (checked here across the stage's shader objects).
+    if s.stage == Stage::Fragment {
+        let user = s
+            .module
+            .globals
+            .iter()
+            .find(|g| g.storage == Storage::FragOutput && g.written);
+        let builtin = s.module.globals.iter().find(|g| {
+            g.builtin && g.written && matches!(g.name.as_str(), "gl_FragColor" | "gl_FragData")
+        });
+        if let (Some(u), Some(b)) = (user, builtin) {
+            push(
+                diags,
+                None,
+                Code::LinkInterfaceMismatch,
+                format!(
+                    "the fragment shader writes both `{}' and the user output `{}'",
+                    b.name, u.name
+                ),
+            );
+        }
+    }
 }
 
 fn check_limits(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
@@ -770,7 +1003,13 @@ fn check_limits(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
 
 fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
     let (vm, fm) = (&v.module, &f.module);
-    for fg in fm.globals.iter().filter(|g| !g.builtin) {
+    check_blocks(vm, fm, diags);
+    // Members and instances of blocks match by block (check_blocks).
+    for fg in fm
+        .globals
+        .iter()
+        .filter(|g| !g.builtin && g.block.is_none())
+    {
         let vg = vm.globals.iter().find(|g| g.name == fg.name);
         match fg.storage {
             Storage::Varying => match vg {
@@ -786,6 +1025,21 @@ fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnos
                                 fg.name,
                                 vm.type_name(vg.ty),
                                 fm.type_name(fg.ty)
+                            ),
+                        );
+                    } else if vg.interpolation != fg.interpolation {
+                        // GLSL 1.30 §4.3.7: the interpolation qualifiers of
+                        // a vertex output and its fragment input match.
+                        let q = |i: Option<ir::Interpolation>| i.map_or("none", |i| i.as_str());
+                        push(
+                            diags,
+                            None,
+                            Code::LinkInterfaceMismatch,
+                            format!(
+                                "varying `{}' is interpolated `{}' in the vertex shader but `{}' in the fragment shader",
+                                fg.name,
+                                q(vg.interpolation),
+                                q(fg.interpolation)
                             ),
                         );
                     } else if vg.centroid != fg.centroid || vg.invariant != fg.invariant {

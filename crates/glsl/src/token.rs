@@ -237,7 +237,7 @@ pub enum WordClass {
 pub fn classify(word: &str, lang: Language) -> WordClass {
     let version = lang.version;
     if let Some(k) = Keyword::lookup(word) {
-        if k.since() <= version {
+        if k.since() <= version || (k == Keyword::Layout && lang.has_layout_keyword()) {
             return WordClass::Keyword(k);
         }
     }
@@ -489,6 +489,10 @@ mod tests {
             WordClass::Keyword(Keyword::SamplerBuffer)
         );
         assert_eq!(classify("layout", l(Version::V130)), WordClass::Identifier);
+        let mut ext = l(Version::V120);
+        ext.extensions
+            .set(crate::lang::Extension::ArbExplicitAttribLocation, true);
+        assert_eq!(classify("layout", ext), WordClass::Keyword(Keyword::Layout));
         assert_eq!(
             classify("vec3", l(Version::V110)),
             WordClass::Keyword(Keyword::Vec3)

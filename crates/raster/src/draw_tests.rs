@@ -35,6 +35,8 @@ fn slot(name: &str, offset: usize, components: usize) -> Slot {
         offset,
         components,
         written: true,
+        location: None,
+        interpolation: None,
     }
 }
 
@@ -818,6 +820,8 @@ fn scissor_and_multiple_draw_buffers() {
                 offset: 0,
                 components: 8,
                 written: true,
+                location: None,
+                interpolation: None,
             }],
         ),
         f: Box::new(|b| {

@@ -4,6 +4,8 @@
 
 use crate::ex::{Batch, Interface, Slot, LANES};
 use crate::framebuffer::MAX_DRAW_BUFFERS;
+use glsl::ir::Interpolation;
+use glsl::types::ArraySize;
 
 fn find<'a>(slots: &'a [Slot], name: &str) -> Option<&'a Slot> {
     slots.iter().find(|s| s.name == name)
@@ -86,6 +88,9 @@ pub(crate) struct VaryingLink {
     pub back: Option<usize>,
     /// gl_Color / gl_SecondaryColor: flat-shaded under ShadeModel(FLAT).
     pub color: bool,
+    /// Declared `flat` (GLSL 1.30 §4.3.7): always the provoking vertex's
+    /// value. (`noperspective` is interpolated like `smooth` for now.)
+    pub flat: bool,
     /// gl_TexCoord[set].component, for point-sprite coordinate replacement.
     pub texcoord: Option<(u32, usize)>,
 }
@@ -123,6 +128,9 @@ impl FsLayout {
                         ),
                         other => (other, None, false),
                     };
+                    let flat = slot.interpolation == Some(Interpolation::Flat)
+                        || find(&vs.outputs, front_name)
+                            .is_some_and(|s| s.interpolation == Some(Interpolation::Flat));
                     let front = find(&vs.outputs, front_name);
                     let back = back_name
                         .filter(|_| two_sided)
@@ -136,6 +144,7 @@ impl FsLayout {
                             front,
                             back: pick(back).or(front),
                             color,
+                            flat,
                             texcoord: (name == "gl_TexCoord").then_some(((c / 4) as u32, c % 4)),
                         });
                     }
@@ -152,6 +161,37 @@ impl FsLayout {
                 None => color.map(|s| s.offset),
             };
         }
+        // User outputs (GLSL 1.30 `out`): each at its location, or, without
+        // one, at the next free draw buffers in declaration order.
+        let user: Vec<&Slot> = out.iter().filter(|s| !s.name.starts_with("gl_")).collect();
+        let has_user = !user.is_empty();
+        if has_user {
+            color_out = [None; MAX_DRAW_BUFFERS];
+            let mut next = 0usize;
+            let placed = user.iter().filter(|s| s.location.is_some());
+            let unplaced = user.iter().filter(|s| s.location.is_none());
+            for s in placed.chain(unplaced) {
+                let elems = match s.ty.array {
+                    Some(ArraySize::Sized(n)) => n as usize,
+                    _ => 1,
+                };
+                let per = s.components / elems.max(1);
+                let start = match s.location {
+                    Some(l) => l as usize,
+                    None => {
+                        while color_out.get(next).is_some_and(|c| c.is_some()) {
+                            next += 1;
+                        }
+                        next
+                    }
+                };
+                for e in 0..elems {
+                    if let Some(c) = color_out.get_mut(start + e) {
+                        *c = Some(s.offset + e * per);
+                    }
+                }
+            }
+        }
         FsLayout {
             inputs: fs
                 .inputs
@@ -159,11 +199,16 @@ impl FsLayout {
                 .map(|s| s.offset + s.components)
                 .max()
                 .unwrap_or(0),
+            // A draw buffer reads four components from an output's offset;
+            // a user output may have fewer (`out float c;'), whose missing
+            // components are undefined (GLSL 1.30 §4.3.6): three spare
+            // components keep the read in the batch.
             outputs: out
                 .iter()
                 .map(|s| s.offset + s.components)
                 .max()
-                .unwrap_or(0),
+                .unwrap_or(0)
+                + if has_user { 3 } else { 0 },
             links,
             frag_coord,
             front_facing,

@@ -246,7 +246,7 @@ impl Setup<'_> {
         for link in &self.fs.links {
             let src = if back { link.back } else { link.front };
             let get = |d: &[f32]| src.and_then(|o| d.get(o)).copied().unwrap_or(0.0);
-            out.planes.push(match flat && link.color {
+            out.planes.push(match (flat && link.color) || link.flat {
                 true => Plane::constant(get(provoking)),
                 false => prim.varying(&basis, [get(d0), get(d1), get(d2)], inv_w),
             });

@@ -330,6 +330,9 @@ fn with_ftransform_inputs(m: &Module) -> Option<Module> {
             builtin: true,
             invariant: false,
             centroid: false,
+            interpolation: None,
+            location: None,
+            block: None,
             init: None,
             init_expr: None,
             read: false,
@@ -397,12 +400,13 @@ impl<'m> Lowerer<'m> {
                             ))
                 }
                 Stage::Fragment => {
-                    g.builtin
-                        && g.storage == Storage::Private
-                        && matches!(
-                            g.name.as_str(),
-                            "gl_FragColor" | "gl_FragData" | "gl_FragDepth"
-                        )
+                    g.storage == Storage::FragOutput
+                        || (g.builtin
+                            && g.storage == Storage::Private
+                            && matches!(
+                                g.name.as_str(),
+                                "gl_FragColor" | "gl_FragData" | "gl_FragDepth"
+                            ))
                 }
             };
             let ks = kinds(g.ty, structs);
@@ -416,6 +420,8 @@ impl<'m> Lowerer<'m> {
                     offset: next_in,
                     components: n,
                     written: true,
+                    location: g.location,
+                    interpolation: g.interpolation,
                 });
                 next_in += n;
             }
@@ -429,6 +435,8 @@ impl<'m> Lowerer<'m> {
                     offset: next_out,
                     components: n,
                     written: g.written,
+                    location: g.location,
+                    interpolation: g.interpolation,
                 });
                 next_out += n;
             }
@@ -442,6 +450,8 @@ impl<'m> Lowerer<'m> {
                     offset: w as usize,
                     components: size_of(global.ty, structs),
                     written: true,
+                    location: None,
+                    interpolation: None,
                 });
             }
         }

@@ -166,6 +166,12 @@ impl<'a> Printer<'a> {
             if g.invariant {
                 line.push_str("invariant ");
             }
+            if let Some(i) = g.interpolation {
+                let _ = write!(line, "{} ", i.as_str());
+            }
+            if let Some(l) = g.location {
+                let _ = write!(line, "layout(location = {l}) ");
+            }
             if g.centroid {
                 line.push_str("centroid ");
             }
@@ -175,6 +181,7 @@ impl<'a> Printer<'a> {
                 Storage::Uniform => "uniform ",
                 Storage::Attribute => "attribute ",
                 Storage::Varying => "varying ",
+                Storage::FragOutput => "out ",
             });
             let _ = write!(line, "{} {}", self.ty(g.ty), g.name);
             if let Some(c) = &g.init {
@@ -194,6 +201,9 @@ impl<'a> Printer<'a> {
             }
             if g.ty.array == Some(crate::types::ArraySize::Unsized) {
                 let _ = write!(line, ", implicit size {}", g.implicit_size);
+            }
+            if let Some(b) = g.block.and_then(|b| m.blocks.get(b.0 as usize)) {
+                let _ = write!(line, ", block {}", b.name);
             }
             self.out.push_str(&line);
             self.out.push('\n');

@@ -64,6 +64,13 @@ pub(super) fn qualifier_of(k: Keyword) -> Option<Qualifier> {
         Keyword::In => Qualifier::In,
         Keyword::Out => Qualifier::Out,
         Keyword::Inout => Qualifier::Inout,
+        Keyword::Flat => Qualifier::Flat,
+        Keyword::Smooth => Qualifier::Smooth,
+        Keyword::Noperspective => Qualifier::Noperspective,
+        Keyword::Lowp => Qualifier::Lowp,
+        Keyword::Mediump => Qualifier::Mediump,
+        Keyword::Highp => Qualifier::Highp,
+        Keyword::Layout => Qualifier::Layout,
         _ => return None,
     })
 }
@@ -92,7 +99,7 @@ impl Parser<'_> {
     /// scope: a qualifier, `struct` or a type.
     pub(super) fn at_declaration_keyword_or_type(&self) -> bool {
         match self.kind() {
-            TokenKind::Keyword(Keyword::Struct) => true,
+            TokenKind::Keyword(Keyword::Struct | Keyword::Precision) => true,
             TokenKind::Keyword(k) if qualifier_of(*k).is_some() => true,
             _ => self.at_type_name(),
         }
@@ -150,7 +157,31 @@ impl Parser<'_> {
         if self.at_invariant_list() {
             return self.invariant_list().map(ExternalDecl::Declaration);
         }
-        let ty = self.fully_specified_type()?;
+        if self.at_keyword(Keyword::Precision) {
+            return self.precision_statement().map(ExternalDecl::Declaration);
+        }
+        let qualifiers = self.qualifiers()?;
+        if !qualifiers.is_empty() {
+            if self.eat_punct(Punct::Semicolon) {
+                return Ok(ExternalDecl::Declaration(Declaration::Qualifiers {
+                    qualifiers,
+                    span: self.span_from(start),
+                }));
+            }
+            let block_name =
+                matches!(self.kind(), TokenKind::Identifier(n) if !self.scopes.is_type(n));
+            if block_name && self.nth_is_punct(1, Punct::LeftBrace) {
+                return self
+                    .interface_block(qualifiers, start)
+                    .map(|b| ExternalDecl::Declaration(Declaration::Block(b)));
+            }
+        }
+        let ty = self.type_specifier()?;
+        let ty = FullType {
+            qualifiers,
+            ty,
+            span: self.span_from(start),
+        };
         if self.eat_punct(Punct::Semicolon) {
             // `struct S { ... };` or the grammar's bare `float;`.
             return Ok(ExternalDecl::Declaration(Declaration::Variables(
@@ -167,6 +198,68 @@ impl Parser<'_> {
         }
         let list = self.init_declarator_list(ty, name, start)?;
         Ok(ExternalDecl::Declaration(Declaration::Variables(list)))
+    }
+
+    /// `precision lowp float;` (GLSL 1.30 §4.5.3).
+    fn precision_statement(&mut self) -> PResult<Declaration> {
+        let start = self.bump().span;
+        let precision = match self.kind() {
+            TokenKind::Keyword(k @ (Keyword::Lowp | Keyword::Mediump | Keyword::Highp)) => {
+                let qualifier = qualifier_of(*k).ok_or(Reported)?;
+                SpannedQualifier {
+                    qualifier,
+                    span: self.bump().span,
+                    layout: Vec::new(),
+                }
+            }
+            _ => return Err(self.unexpected("`lowp', `mediump' or `highp'")),
+        };
+        let ty = self.type_specifier()?;
+        self.expect_semicolon()?;
+        Ok(Declaration::Precision {
+            precision,
+            ty,
+            span: self.span_from(start),
+        })
+    }
+
+    /// An interface block after its qualifiers: `NAME { members } inst[N]? ;`.
+    /// The block name is not a type; the instance name is declared.
+    fn interface_block(
+        &mut self,
+        qualifiers: Vec<SpannedQualifier>,
+        start: Span,
+    ) -> PResult<InterfaceBlock> {
+        let name = self.ident("block name")?;
+        self.expect_punct(Punct::LeftBrace)?;
+        self.enter()?;
+        let members = self.struct_members();
+        self.leave();
+        if members.is_empty() && self.at_punct(Punct::RightBrace) {
+            let _ = self.unexpected("member declaration");
+        }
+        self.expect_punct(Punct::RightBrace)?;
+        let instance = match self.kind() {
+            TokenKind::Identifier(_) => {
+                let inst = self.ident("instance name")?;
+                let array = if self.at_punct(Punct::LeftBracket) {
+                    Some(self.array_spec()?)
+                } else {
+                    None
+                };
+                self.scopes.declare(&inst.name, false);
+                Some((inst, array))
+            }
+            _ => None,
+        };
+        self.expect_semicolon()?;
+        Ok(InterfaceBlock {
+            qualifiers,
+            name,
+            members,
+            instance,
+            span: self.span_from(start),
+        })
     }
 
     /// `invariant a, b;` (GLSL 1.20 §4.6.1): `invariant` followed by a name
@@ -204,23 +297,67 @@ impl Parser<'_> {
         }
     }
 
-    /// Any sequence of qualifier keywords, as written.
-    pub(super) fn qualifiers(&mut self) -> Vec<SpannedQualifier> {
+    /// Any sequence of qualifier keywords, as written; `layout` with its
+    /// parenthesized list.
+    pub(super) fn qualifiers(&mut self) -> PResult<Vec<SpannedQualifier>> {
         let mut out = Vec::new();
         while let TokenKind::Keyword(k) = self.kind() {
             let Some(qualifier) = qualifier_of(*k) else {
                 break;
             };
-            let span = self.bump().span;
-            out.push(SpannedQualifier { qualifier, span });
+            let start = self.bump().span;
+            let layout = if qualifier == Qualifier::Layout {
+                self.layout_ids()?
+            } else {
+                Vec::new()
+            };
+            out.push(SpannedQualifier {
+                qualifier,
+                span: self.span_from(start),
+                layout,
+            });
         }
-        out
+        Ok(out)
+    }
+
+    /// `( id (= value)? , ... )` after `layout` (GLSL 1.40 §9
+    /// `layout_qualifier_id_list`; the value is parsed as an expression so
+    /// analysis can say what is wrong with it).
+    fn layout_ids(&mut self) -> PResult<Vec<LayoutId>> {
+        self.expect_punct(Punct::LeftParen)?;
+        let mut ids = Vec::new();
+        loop {
+            // `shared` is a keyword of later versions; here any word is a
+            // layout identifier.
+            let name = match self.kind() {
+                TokenKind::Identifier(n) => n.clone(),
+                TokenKind::Reserved(w) => w.clone(),
+                TokenKind::Keyword(k) => smol_str::SmolStr::new(k.as_str()),
+                _ => return Err(self.unexpected("layout qualifier identifier")),
+            };
+            let span = self.bump().span;
+            let value = if self.eat_punct(Punct::Equal) {
+                Some(*self.conditional()?)
+            } else {
+                None
+            };
+            ids.push(LayoutId {
+                name: Ident { name, span },
+                value,
+                span: self.span_from(span),
+            });
+            if !self.eat_punct(Punct::Comma) {
+                break;
+            }
+        }
+        self.expect_punct(Punct::RightParen)?;
+        Ok(ids)
     }
 
     /// `fully_specified_type`: qualifiers and a type specifier.
     pub(super) fn fully_specified_type(&mut self) -> PResult<FullType> {
         let start = self.span();
-        let qualifiers = self.qualifiers();
+        let qualifiers = self.qualifiers()?;
         let ty = self.type_specifier()?;
         Ok(FullType {
             qualifiers,
@@ -330,7 +467,7 @@ impl Parser<'_> {
     /// to reject).
     fn struct_member(&mut self) -> PResult<StructMemberDecl> {
         let start = self.span();
-        let qualifiers = self.qualifiers();
+        let qualifiers = self.qualifiers()?;
         let ty = self.type_specifier()?;
         let mut declarators = Vec::new();
         loop {
@@ -464,7 +601,7 @@ impl Parser<'_> {
     /// [`ParamDecl::array`], not in the type.
     fn parameter(&mut self) -> PResult<ParamDecl> {
         let start = self.span();
-        let qualifiers = self.qualifiers();
+        let qualifiers = self.qualifiers()?;
         let mut ty = self.type_specifier()?;
         let (name, array) = match self.kind() {
             TokenKind::Identifier(_) => {

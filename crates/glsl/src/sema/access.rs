@@ -111,6 +111,16 @@ impl Analyzer {
             },
             _ => None,
         };
+        if cidx.is_none() && self.is_block_instance_array(&base) {
+            // GLSL 1.50 §4.3.7: arrays of uniform blocks are indexed only
+            // with integral constant expressions.
+            self.error(
+                Code::NotConstant,
+                i.span,
+                "an array of uniform blocks can only be indexed with a constant expression",
+            );
+            return error_expr(span);
+        }
         let t = base.ty;
         if t.is_array() && t.is_sampler() && cidx.is_none() {
             if let Err(why) = self

@@ -1,22 +1,15 @@
 //! Variable declarations, storage qualifiers and `invariant` redeclarations.
 
+use super::interface::VarQuals;
 use super::scope::{Symbol, Var};
 use super::Analyzer;
-use crate::ast::{Declaration, InitDeclarator, InitDeclaratorList, Qualifier, SpannedQualifier};
+use crate::ast::{Declaration, InitDeclarator, InitDeclaratorList, Qualifier};
 use crate::diag::{Code, Diagnostic};
-use crate::ir::{self, ExprKind, Global, Stage, Storage};
-use crate::lang::Version;
-use crate::limits::MAX_TEXTURE_COORDS;
+use crate::ir::{self, ExprKind, Global, Interpolation, Stage, Storage};
+use crate::lang::{Feature, Version};
+use crate::limits::{MAX_CLIP_PLANES, MAX_TEXTURE_COORDS};
 use crate::source::Span;
-use crate::types::{ArraySize, Base, Type};
-
-/// The qualifiers of a variable declaration, checked.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct VarQuals {
-    pub storage: Option<Qualifier>,
-    pub invariant: bool,
-    pub centroid: bool,
-}
+use crate::types::{ArraySize, Base, Scalar, Type};
 
 impl Analyzer {
     /// Analyzes a declaration; at function scope returns the statements that
@@ -42,127 +35,19 @@ impl Analyzer {
                 self.invariant_redeclaration(names, *span);
                 Vec::new()
             }
-            Declaration::_Reserved => Vec::new(),
-        }
-    }
-
-    /// Checks a variable's qualifier list (GLSL 1.20 §4.3, §4.6.1).
-    fn var_qualifiers(&mut self, quals: &[SpannedQualifier]) -> VarQuals {
-        let mut q = VarQuals::default();
-        let global = self.scopes.is_global();
-        for (i, sq) in quals.iter().enumerate() {
-            let name = sq.qualifier.as_str();
-            match sq.qualifier {
-                Qualifier::Const
-                | Qualifier::Attribute
-                | Qualifier::Uniform
-                | Qualifier::Varying => {
-                    if let Some(prev) = q.storage {
-                        self.error(
-                            Code::BadQualifier,
-                            sq.span,
-                            format!(
-                                "`{name}' after `{}': only one storage qualifier is allowed",
-                                prev.as_str()
-                            ),
-                        );
-                        continue;
-                    }
-                    q.storage = Some(sq.qualifier);
-                }
-                Qualifier::In | Qualifier::Out | Qualifier::Inout => {
-                    self.error(
-                        Code::BadQualifier,
-                        sq.span,
-                        format!(
-                            "`{name}' is only allowed on function parameters in GLSL {}",
-                            self.lang.version.dotted()
-                        ),
-                    )
-                    .notes
-                    .push("use `attribute'/`varying' for stage inputs and outputs".into());
-                }
-                Qualifier::Centroid => {
-                    let next = quals.get(i + 1).map(|n| n.qualifier);
-                    if next != Some(Qualifier::Varying) {
-                        self.error(
-                            Code::BadQualifier,
-                            sq.span,
-                            "`centroid' must be followed by `varying'",
-                        );
-                    }
-                    q.centroid = true;
-                }
-                Qualifier::Invariant => {
-                    if i != 0 {
-                        self.error(
-                            Code::BadQualifier,
-                            sq.span,
-                            "`invariant' must come before the other qualifiers",
-                        );
-                    }
-                    if q.invariant {
-                        self.error(Code::BadQualifier, sq.span, "`invariant' given twice");
-                    }
-                    q.invariant = true;
-                }
+            Declaration::Precision { precision, ty, .. } => {
+                self.precision_statement(precision, ty);
+                Vec::new()
+            }
+            Declaration::Block(b) => {
+                self.interface_block(b);
+                Vec::new()
+            }
+            Declaration::Qualifiers { qualifiers, span } => {
+                self.qualifiers_only(qualifiers, *span);
+                Vec::new()
             }
         }
-        if !global {
-            if let Some(s) = q.storage.filter(|s| *s != Qualifier::Const) {
-                let span = quals
-                    .iter()
-                    .find(|x| x.qualifier == s)
-                    .map_or(Span::default(), |x| x.span);
-                self.error(
-                    Code::BadQualifier,
-                    span,
-                    format!(
-                        "`{}' is not allowed on local variables; declare it at global scope",
-                        s.as_str()
-                    ),
-                );
-                q.storage = None;
-            }
-            if q.invariant {
-                let span = quals
-                    .iter()
-                    .find(|x| x.qualifier == Qualifier::Invariant)
-                    .map_or(Span::default(), |x| x.span);
-                self.error(
-                    Code::BadQualifier,
-                    span,
-                    "`invariant' is only allowed on global varyings",
-                );
-                q.invariant = false;
-            }
-        } else if q.invariant && q.storage != Some(Qualifier::Varying) && !self.builtin_mode {
-            let span = quals
-                .iter()
-                .find(|x| x.qualifier == Qualifier::Invariant)
-                .map_or(Span::default(), |x| x.span);
-            self.error(
-                Code::BadQualifier,
-                span,
-                "`invariant' applies only to varyings (GLSL 1.20 §4.6.1)",
-            );
-            q.invariant = false;
-        }
-        if q.storage == Some(Qualifier::Attribute) && self.stage != Stage::Vertex {
-            let span = quals
-                .iter()
-                .find(|x| x.qualifier == Qualifier::Attribute)
-                .map_or(Span::default(), |x| x.span);
-            self.error(
-                Code::StageMismatch,
-                span,
-                "`attribute' is only allowed in vertex shaders",
-            )
-            .notes
-            .push("fragment shaders read per-vertex data through `varying'".into());
-            q.storage = None;
-        }
-        q
     }
 
     fn variables(&mut self, list: &InitDeclaratorList) -> Vec<ir::Stmt> {
@@ -170,6 +55,7 @@ impl Analyzer {
         let base = self.resolve_type(&list.ty.ty);
         let mut out = Vec::new();
         if list.declarators.is_empty() {
+            self.check_precision(quals.precision, base);
             if !matches!(list.ty.ty.name, crate::ast::TypeName::Struct(_)) && !base.is_error() {
                 self.push(Diagnostic::warning(
                     Code::Syntax,
@@ -180,15 +66,36 @@ impl Analyzer {
             return out;
         }
         for d in &list.declarators {
-            if let Some(s) = self.declarator(quals, base, d, list.ty.span) {
+            if let Some(s) = self.declarator(&quals, base, d, list.ty.span) {
                 out.push(s);
             }
         }
         out
     }
 
-    /// Checks what a storage qualifier allows for a type.
-    fn check_storage_type(&mut self, q: VarQuals, ty: Type, d: &InitDeclarator) {
+    /// The storage of a global with qualifiers `q` in this stage: a vertex
+    /// `in` is an attribute, a vertex `out` and a fragment `in` are
+    /// varyings, a fragment `out` is a user output (GLSL 1.30 §4.3.4,
+    /// §4.3.6).
+    pub(crate) fn global_storage(&self, q: &VarQuals) -> Storage {
+        let vertex = self.stage == Stage::Vertex;
+        match q.storage {
+            Some(Qualifier::Const) => Storage::Const,
+            Some(Qualifier::Uniform) => Storage::Uniform,
+            Some(Qualifier::Attribute) => Storage::Attribute,
+            Some(Qualifier::Varying) => Storage::Varying,
+            Some(Qualifier::In) if vertex => Storage::Attribute,
+            Some(Qualifier::In) => Storage::Varying,
+            Some(Qualifier::Out) if vertex => Storage::Varying,
+            Some(Qualifier::Out) => Storage::FragOutput,
+            _ => Storage::Private,
+        }
+    }
+
+    /// Checks what a storage qualifier allows for a type (GLSL 1.20
+    /// §4.3.3-§4.3.5; 1.30 §4.3.4, §4.3.6; 1.50 adds arrays of vertex
+    /// inputs and structs of varyings).
+    fn check_storage_type(&mut self, q: &VarQuals, ty: Type, d: &InitDeclarator) {
         if ty.is_error() {
             return;
         }
@@ -202,36 +109,110 @@ impl Analyzer {
             );
             return;
         }
+        let v130 = self.lang.allows(Feature::StageInOut);
+        let v150 = self.lang.version >= Version::V150;
+        let elem = ty.element();
         let float_based = matches!(
-            ty.base,
-            Base::Scalar(crate::types::Scalar::Float)
-                | Base::Vector(crate::types::Scalar::Float, _)
-                | Base::Matrix { .. }
+            elem.base,
+            Base::Scalar(Scalar::Float) | Base::Vector(Scalar::Float, _) | Base::Matrix { .. }
         );
-        match q.storage {
+        let int_based = matches!(elem.base, Base::Scalar(s) | Base::Vector(s, _) if is_integer(s));
+        let is_struct = matches!(elem.base, Base::Struct(_));
+        let vertex = self.stage == Stage::Vertex;
+        let storage = if q.storage.is_some() {
+            Some(self.global_storage(q))
+        } else {
+            None
+        };
+        match storage {
             // The prelude's inputs (`gl_VertexID`, `gl_FrontFacing`,
             // `gl_PrimitiveID`) have types user attributes and varyings
             // may not.
-            Some(Qualifier::Attribute | Qualifier::Varying) if self.builtin_mode => {}
-            Some(Qualifier::Attribute) => {
-                if !float_based || ty.is_array() {
+            Some(Storage::Attribute | Storage::Varying) if self.builtin_mode => {}
+            Some(Storage::Attribute) => {
+                // GLSL 1.30 adds integer inputs; 1.50 arrays of inputs (not
+                // of `attribute').
+                let arrays = v150 && q.storage == Some(Qualifier::In);
+                let base_ok = float_based || (v130 && int_based);
+                if !base_ok || (ty.is_array() && !arrays) {
+                    let allowed = if v130 {
+                        "float, int or uint scalars, vectors or float matrices"
+                    } else {
+                        "float, vec or mat"
+                    };
+                    let (what, plural) = if q.storage == Some(Qualifier::Attribute) {
+                        ("attribute", "attributes")
+                    } else {
+                        ("vertex input", "inputs")
+                    };
                     self.error(
                         Code::TypeMismatch,
                         d.name.span,
-                        format!("attribute `{name}' has type {tn}; attributes must be float, vec or mat (no arrays or structs)"),
+                        format!(
+                            "{what} `{name}' has type {tn}; {plural} must be {allowed}{}",
+                            if arrays {
+                                ", or arrays of them"
+                            } else {
+                                " (no arrays or structs)"
+                            }
+                        ),
                     );
                 }
             }
-            Some(Qualifier::Varying) => {
-                if !float_based {
+            Some(Storage::Varying) => {
+                let bool_ok = self.builtin_mode && ty.scalar() == Some(Scalar::Bool);
+                let struct_ok = v150 && is_struct && q.storage != Some(Qualifier::Varying);
+                let base_ok = float_based || (v130 && int_based) || struct_ok;
+                if !base_ok && !bool_ok {
+                    let (what, plural) = if q.storage == Some(Qualifier::Varying) {
+                        ("varying", "varyings")
+                    } else if vertex {
+                        ("vertex output", "vertex outputs")
+                    } else {
+                        ("fragment input", "fragment inputs")
+                    };
+                    let allowed = if v130 {
+                        "float, int or uint scalars, vectors, float matrices or arrays of them"
+                    } else {
+                        "float, vec or mat, or arrays of them"
+                    };
                     self.error(
                         Code::TypeMismatch,
                         d.name.span,
-                        format!("varying `{name}' has type {tn}; varyings must be float, vec or mat, or arrays of them"),
+                        format!("{what} `{name}' has type {tn}; {plural} must be {allowed}"),
+                    );
+                } else if !vertex
+                    && (int_based || (is_struct && self.contains_integer(elem)))
+                    && q.interpolation.map(|(i, _)| i) != Some(Interpolation::Flat)
+                    && !self.builtin_mode
+                {
+                    // GLSL 1.50 §4.3.4 moves 1.30's rule for vertex outputs to
+                    // fragment inputs; read it so in 1.30 too, as the GL
+                    // conformance tests do.
+                    self.error(
+                        Code::BadQualifier,
+                        d.name.span,
+                        format!("fragment input `{name}' has integer type {tn}; it must be `flat'"),
+                    )
+                    .notes
+                    .push("integers are not interpolated: declare it `flat in'".into());
+                }
+            }
+            Some(Storage::FragOutput) => {
+                let ok = elem.base != Base::Scalar(Scalar::Bool)
+                    && (matches!(
+                        elem.base,
+                        Base::Scalar(Scalar::Float) | Base::Vector(Scalar::Float, _)
+                    ) || int_based);
+                if !ok {
+                    self.error(
+                        Code::TypeMismatch,
+                        d.name.span,
+                        format!("fragment output `{name}' has type {tn}; outputs must be float, int or uint scalars or vectors, or arrays of them"),
                     );
                 }
             }
-            Some(Qualifier::Uniform) => {}
+            Some(Storage::Uniform) => {}
             _ => {
                 if self.contains_sampler(ty) {
                     self.error(
@@ -246,10 +227,27 @@ impl Analyzer {
         }
     }
 
+    /// True when a struct type has an integer member (at any depth).
+    fn contains_integer(&self, ty: Type) -> bool {
+        let mut stack = vec![(ty, 0u32)];
+        while let Some((t, depth)) = stack.pop() {
+            match t.base {
+                Base::Scalar(s) | Base::Vector(s, _) if is_integer(s) => return true,
+                Base::Struct(id) if depth < 64 => {
+                    if let Some(s) = self.module.structs.get(id.0 as usize) {
+                        stack.extend(s.members.iter().map(|m| (m.ty, depth + 1)));
+                    }
+                }
+                _ => {}
+            }
+        }
+        false
+    }
+
     /// One declarator of a declaration list.
     fn declarator(
         &mut self,
-        q: VarQuals,
+        q: &VarQuals,
         base: Type,
         d: &InitDeclarator,
         _tyspan: Span,
@@ -257,6 +255,7 @@ impl Analyzer {
         let mut ty = self.apply_array(base, d.array.as_ref());
         let name = d.name.name.clone();
         self.check_storage_type(q, ty, d);
+        self.check_precision(q.precision, ty);
         if self.lang.version < Version::V120 && ty.is_array() && d.init.is_some() {
             self.error(
                 Code::VersionTooLow,
@@ -324,7 +323,10 @@ impl Analyzer {
                 }
             }
         }
-        if matches!(q.storage, Some(Qualifier::Attribute | Qualifier::Varying)) {
+        if matches!(
+            q.storage,
+            Some(Qualifier::Attribute | Qualifier::Varying | Qualifier::In | Qualifier::Out)
+        ) {
             if let Some(e) = &init {
                 self.error(
                     Code::BadQualifier,
@@ -364,13 +366,8 @@ impl Analyzer {
             return None;
         }
         if self.scopes.is_global() {
-            let storage = match q.storage {
-                Some(Qualifier::Const) => Storage::Const,
-                Some(Qualifier::Uniform) => Storage::Uniform,
-                Some(Qualifier::Attribute) => Storage::Attribute,
-                Some(Qualifier::Varying) => Storage::Varying,
-                _ => Storage::Private,
-            };
+            let storage = self.global_storage(q);
+            let location = self.check_var_layout(q, &name);
             let id = ir::GlobalId(self.module.globals.len() as u32);
             let init_expr = match (&value, storage) {
                 (None, Storage::Private) => init,
@@ -383,6 +380,9 @@ impl Analyzer {
                 builtin: self.builtin_mode,
                 invariant: q.invariant,
                 centroid: q.centroid,
+                interpolation: q.interpolation.map(|(i, _)| i),
+                location,
+                block: None,
                 init: value,
                 init_expr,
                 read: false,
@@ -526,20 +526,117 @@ impl Analyzer {
         }
     }
 
-    /// The only built-in a shader may redeclare: `varying vec4 gl_TexCoord[n]`
-    /// with n ≤ gl_MaxTextureCoords (GLSL 1.20 §7.6).
-    fn redeclare_builtin(&mut self, q: VarQuals, ty: Type, d: &InitDeclarator) {
+    /// The built-ins a shader may redeclare: `gl_TexCoord[n]` with n ≤
+    /// gl_MaxTextureCoords (GLSL 1.20 §7.6); the colour varyings with an
+    /// interpolation qualifier (1.30 §4.3.7); `gl_FragCoord` with its
+    /// layout (1.50 §7.2, GL_ARB_fragment_coord_conventions).
+    fn redeclare_builtin(&mut self, q: &VarQuals, ty: Type, d: &InitDeclarator) {
         let name = &d.name.name;
         let builtin = match self.env.and_then(|e| e.lookup(name)) {
             Some(Symbol::Var(v)) => Some(*v),
             _ => None,
         };
-        let texcoord_ok = name == "gl_TexCoord"
-            && q.storage == Some(Qualifier::Varying)
-            && ty.base == Type::vec(crate::types::Scalar::Float, 4).base
+        let storage = self.global_storage(q);
+        let vec4 = ty.base == Type::vec(Scalar::Float, 4).base;
+        let varying = storage == Storage::Varying && builtin.is_some() && vec4;
+        let texcoord_ok = name == "gl_TexCoord" && varying && ty.is_array();
+        // GLSL 1.30 §7.1: `out float gl_ClipDistance[N];' (vertex) and
+        // `in float gl_ClipDistance[N];' (fragment) may size it.
+        let clip_ok = name == "gl_ClipDistance"
+            && storage == Storage::Varying
+            && builtin.is_some()
+            && ty.base == Base::Scalar(Scalar::Float)
             && ty.is_array()
-            && builtin.is_some();
-        if !texcoord_ok {
+            && q.storage != Some(Qualifier::Varying);
+        let colors: &[&str] = match self.stage {
+            Stage::Vertex => &[
+                "gl_FrontColor",
+                "gl_BackColor",
+                "gl_FrontSecondaryColor",
+                "gl_BackSecondaryColor",
+            ],
+            Stage::Fragment => &["gl_Color", "gl_SecondaryColor"],
+        };
+        let color_ok = colors.contains(&name.as_str()) && varying && !ty.is_array();
+        let frag_coord_ok = name == "gl_FragCoord"
+            && self.stage == Stage::Fragment
+            && vec4
+            && !ty.is_array()
+            && builtin.is_some()
+            && matches!(q.storage, Some(Qualifier::In | Qualifier::Varying));
+        if frag_coord_ok && q.interpolation.is_none() {
+            let l = &q.layout;
+            let conv = ir::FragCoordConventions {
+                origin_upper_left: l.origin_upper_left.is_some(),
+                pixel_center_integer: l.pixel_center_integer.is_some(),
+            };
+            // GL_ARB_fragment_coord_conventions: every redeclaration has
+            // the same layout, and comes before any use.
+            if self.frag_coord_redeclared.is_some_and(|c| c != conv) {
+                self.error(
+                    Code::Redeclared,
+                    d.name.span,
+                    "`gl_FragCoord' redeclared with a different layout",
+                );
+            }
+            // A built-in is in the module once the shader refers to it.
+            let used = match builtin {
+                Some(Var::Builtin(i)) => self
+                    .builtin_globals
+                    .get(i as usize)
+                    .copied()
+                    .flatten()
+                    .and_then(|g| self.module.globals.get(g.0 as usize))
+                    .is_some_and(|g| g.read || g.written),
+                _ => false,
+            };
+            if used && self.frag_coord_redeclared.is_none() {
+                self.error(
+                    Code::Redeclared,
+                    d.name.span,
+                    "`gl_FragCoord' is redeclared after it is used",
+                )
+                .notes
+                .push("redeclare it before the first use".into());
+            }
+            self.frag_coord_redeclared.get_or_insert(conv);
+            self.module.frag_coord = conv;
+            if let Some(span) = l
+                .location
+                .map(|(_, s)| s)
+                .or(l.block_layout.map(|(_, s)| s))
+            {
+                self.error(
+                    Code::BadQualifier,
+                    span,
+                    "`gl_FragCoord' takes only `origin_upper_left' and `pixel_center_integer'",
+                );
+            }
+            return;
+        }
+        if let Some(span) = q.layout.span.filter(|_| texcoord_ok || color_ok) {
+            self.error(
+                Code::BadQualifier,
+                span,
+                format!("`{name}' cannot be redeclared with a layout"),
+            );
+        }
+        if color_ok {
+            if let Some(g) = builtin.and_then(|v| self.global_of(v)) {
+                if let Some(gl) = self.module.globals.get_mut(g.0 as usize) {
+                    gl.interpolation = q.interpolation.map(|(i, _)| i);
+                    gl.invariant |= q.invariant;
+                    gl.centroid |= q.centroid;
+                }
+            }
+            return;
+        }
+        let (array_ok, max, max_name) = if clip_ok {
+            (true, MAX_CLIP_PLANES, "gl_MaxClipDistances")
+        } else {
+            (texcoord_ok, MAX_TEXTURE_COORDS, "gl_MaxTextureCoords")
+        };
+        if !array_ok {
             self.error(
                 Code::Redeclared,
                 d.name.span,
@@ -555,11 +652,11 @@ impl Analyzer {
         }
         let Some(v) = builtin else { return };
         if let Some(ArraySize::Sized(n)) = ty.array {
-            if n > MAX_TEXTURE_COORDS {
+            if n > max {
                 self.error(
                     Code::BadArraySize,
                     d.name.span,
-                    format!("`gl_TexCoord' redeclared with size {n}, larger than gl_MaxTextureCoords ({MAX_TEXTURE_COORDS})"),
+                    format!("`{name}' redeclared with size {n}, larger than {max_name} ({max})"),
                 );
                 return;
             }
@@ -569,7 +666,7 @@ impl Analyzer {
                     Code::IndexOutOfRange,
                     d.name.span,
                     format!(
-                        "`gl_TexCoord' redeclared with size {n}, but index {} is already used",
+                        "`{name}' redeclared with size {n}, but index {} is already used",
                         used - 1
                     ),
                 );
@@ -636,4 +733,9 @@ impl Analyzer {
             self.module.globals[g.0 as usize].invariant = true;
         }
     }
+}
+
+/// Signed and unsigned integers (every scalar but float and bool).
+pub(crate) fn is_integer(s: Scalar) -> bool {
+    !matches!(s, Scalar::Float | Scalar::Bool)
 }

@@ -22,8 +22,24 @@ impl Analyzer {
     fn param_qualifiers(&mut self, p: &ast::ParamDecl) -> (ParamQualifier, bool) {
         let mut q = None;
         let mut is_const = false;
+        let mut precision: Option<Span> = None;
         for sq in &p.qualifiers {
+            if let Some(prec) = precision.filter(|_| !sq.qualifier.is_precision()) {
+                // GLSL 1.30 §4.7: the precision qualifier comes last.
+                self.error(
+                    Code::BadQualifier,
+                    prec,
+                    format!(
+                        "a precision qualifier must come after `{}'",
+                        sq.qualifier.as_str()
+                    ),
+                );
+                precision = None;
+            }
             match sq.qualifier {
+                q if q.is_precision() => {
+                    self.precision_qualifier(sq, &mut precision);
+                }
                 Qualifier::Const => {
                     if q.is_some() || is_const {
                         self.error(
@@ -75,8 +91,11 @@ impl Analyzer {
 
     /// The parameters and return type of a prototype, checked.
     fn signature(&mut self, p: &FunctionProto) -> (Vec<Param>, Type) {
+        let mut precision = None;
         for sq in &p.return_type.qualifiers {
-            if !(self.builtin_mode && sq.qualifier == Qualifier::Const) {
+            if sq.qualifier.is_precision() {
+                self.precision_qualifier(sq, &mut precision);
+            } else if !(self.builtin_mode && sq.qualifier == Qualifier::Const) {
                 self.error(
                     Code::BadQualifier,
                     sq.span,

@@ -23,6 +23,7 @@ mod construct;
 mod decl;
 mod expr;
 mod func;
+mod interface;
 mod scope;
 mod stmt;
 mod types;
@@ -168,6 +169,8 @@ fn build_env(lang: Language, stage: Stage) -> BuiltinEnv {
             globals: Vec::new(),
             functions: Vec::new(),
             extensions: Vec::new(),
+            blocks: Vec::new(),
+            frag_coord: Default::default(),
         },
     );
     // Prototypes without bodies become built-in functions.
@@ -265,6 +268,12 @@ pub(crate) struct Analyzer {
     pub declared_functions: Vec<(SmolStr, Span)>,
     /// "Did you mean" searches left (`limits::MAX_SUGGESTIONS`).
     pub suggestions_left: u32,
+    /// The layout of uniform blocks declared from here on, as set by
+    /// `layout(...) uniform;` (GLSL 1.40 §4.3.5.2).
+    pub default_block_layout: ir::BlockLayout,
+    pub default_row_major: bool,
+    /// The first redeclaration of `gl_FragCoord`, with its layout.
+    pub frag_coord_redeclared: Option<ir::FragCoordConventions>,
 }
 
 impl Analyzer {
@@ -282,6 +291,8 @@ impl Analyzer {
                 globals: Vec::new(),
                 functions: Vec::new(),
                 extensions: Vec::new(),
+                blocks: Vec::new(),
+                frag_coord: Default::default(),
             },
             diags: Vec::new(),
             scopes: Scopes::new(),
@@ -293,6 +304,9 @@ impl Analyzer {
             depth: 0,
             declared_functions: Vec::new(),
             suggestions_left: crate::limits::MAX_SUGGESTIONS,
+            default_block_layout: ir::BlockLayout::Shared,
+            default_row_major: false,
+            frag_coord_redeclared: None,
         }
     }
 
@@ -320,6 +334,27 @@ impl Analyzer {
                 .with_label(c.min_by_start(d), "the other one is written here")
                 .with_note("GLSL 1.10 §7.2: write all outputs through `gl_FragData[i]' or only `gl_FragColor'"),
             );
+        }
+        // GLSL 1.30 §7.2: a shader that statically writes a user output
+        // may not write gl_FragColor or gl_FragData.
+        if let Some(builtin) = self.frag_color_write.or(self.frag_data_write) {
+            let user = self
+                .module
+                .globals
+                .iter()
+                .find(|g| g.storage == ir::Storage::FragOutput && g.written);
+            if let Some(g) = user {
+                let d = Diagnostic::error(
+                    Code::TypeMismatch,
+                    builtin,
+                    format!(
+                        "a shader that writes the output `{}' cannot also write `gl_FragColor' or `gl_FragData'",
+                        g.name
+                    ),
+                )
+                .with_label(g.span, "user output declared here");
+                self.diags.push(d);
+            }
         }
         (self.module, self.diags)
     }

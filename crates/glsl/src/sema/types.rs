@@ -217,7 +217,13 @@ impl Analyzer {
     pub fn declare_struct(&mut self, s: &StructSpecifier) -> StructId {
         let mut members: Vec<StructMember> = Vec::new();
         for m in &s.members {
-            if let Some(q) = m.qualifiers.first() {
+            // Precision qualifiers are the only ones a member may have
+            // (GLSL 1.30 §4.5.2).
+            let mut precision = None;
+            for q in m.qualifiers.iter().filter(|q| q.qualifier.is_precision()) {
+                self.precision_qualifier(q, &mut precision);
+            }
+            if let Some(q) = m.qualifiers.iter().find(|q| !q.qualifier.is_precision()) {
                 self.error(
                     Code::BadQualifier,
                     q.span,
@@ -241,6 +247,7 @@ impl Analyzer {
             let ty = self.resolve_type(&m.ty);
             for d in &m.declarators {
                 let mty = self.apply_array(ty, d.array.as_ref());
+                self.check_precision(precision, mty);
                 if mty.base == Base::Void {
                     self.error(
                         Code::TypeMismatch,

@@ -1,0 +1,1103 @@
+//! Qualifiers of GLSL 1.30-3.30 declarations and the stage interface:
+//! their order (§4.7), storage `in`/`out` (§4.3.4, §4.3.6),
+//! interpolation (§4.3.7), precision (§4.5), `layout(...)` (1.40
+//! §4.3.5.2, 1.50 §4.3.8, GL_ARB_explicit_attrib_location,
+//! GL_ARB_fragment_coord_conventions), default precision statements,
+//! interface blocks (1.40 §4.3.5.1, 1.50 §4.3.7) and qualifier-only
+//! declarations. Every version check goes through [`Language::gate`].
+
+use super::scope::{Symbol, Var};
+use super::Analyzer;
+use crate::ast::{InterfaceBlock, LayoutId, Qualifier, SpannedQualifier, TypeName};
+use crate::diag::Code;
+use crate::ir::{self, BlockId, BlockLayout, BlockMember, Global, Interpolation, Stage, Storage};
+use crate::lang::Feature;
+use crate::source::Span;
+use crate::types::{ArraySize, Base, Scalar, StructDef, StructMember, Type};
+
+/// What `layout(...)` qualifiers said, checked one by one; where they
+/// may appear is judged by the declaration.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct LayoutQuals {
+    /// The span of the first `layout(...)`.
+    pub span: Option<Span>,
+    pub location: Option<(u32, Span)>,
+    /// `index = N` (accepted on fragment outputs with a location).
+    pub index: Option<Span>,
+    pub block_layout: Option<(BlockLayout, Span)>,
+    pub row_major: Option<(bool, Span)>,
+    pub origin_upper_left: Option<Span>,
+    pub pixel_center_integer: Option<Span>,
+    /// Geometry-shader identifiers (`triangles`, `max_vertices`...): no
+    /// stage here accepts them.
+    pub geometry: Option<(String, Span)>,
+}
+
+/// The qualifiers of a variable declaration, checked.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct VarQuals {
+    /// `const`, `attribute`, `uniform`, `varying`, `in` or `out`.
+    pub storage: Option<Qualifier>,
+    pub storage_span: Span,
+    pub invariant: bool,
+    pub centroid: bool,
+    pub interpolation: Option<(Interpolation, Span)>,
+    pub precision: Option<Span>,
+    pub layout: LayoutQuals,
+}
+
+/// The rank of a qualifier in §4.7's strict order: invariant,
+/// interpolation, layout, storage, precision.
+fn rank(q: Qualifier) -> u8 {
+    match q {
+        Qualifier::Invariant => 0,
+        Qualifier::Flat | Qualifier::Smooth | Qualifier::Noperspective => 1,
+        Qualifier::Layout => 2,
+        Qualifier::Const
+        | Qualifier::Attribute
+        | Qualifier::Uniform
+        | Qualifier::Varying
+        | Qualifier::Centroid
+        | Qualifier::In
+        | Qualifier::Out
+        | Qualifier::Inout => 3,
+        Qualifier::Lowp | Qualifier::Mediump | Qualifier::Highp => 4,
+    }
+}
+
+const GEOMETRY_LAYOUTS: &[&str] = &[
+    "points",
+    "lines",
+    "lines_adjacency",
+    "triangles",
+    "triangles_adjacency",
+    "line_strip",
+    "triangle_strip",
+    "max_vertices",
+];
+
+/// Whether a type can take a precision qualifier (§4.5.2: floating-point
+/// and integer types, samplers, and arrays of them).
+fn takes_precision(ty: Type) -> bool {
+    ty.is_sampler()
+        || matches!(ty.base, Base::Matrix { .. })
+        || matches!(ty.base, Base::Scalar(s) | Base::Vector(s, _) if s != Scalar::Bool)
+}
+
+impl Analyzer {
+    /// Reports `what` unless `feature` exists in this shader's language.
+    pub(crate) fn require(&mut self, feature: Feature, what: &str, span: Span) -> bool {
+        match self.lang.gate(feature) {
+            Ok(()) => true,
+            Err(why) => {
+                let lang = self.lang;
+                self.error(Code::VersionTooLow, span, why.message(what, lang))
+                    .notes
+                    .push(why.fix());
+                false
+            }
+        }
+    }
+
+    /// Checks a variable's qualifier list (GLSL 1.20 §4.3, §4.6.1; 1.30
+    /// §4.3-§4.7).
+    pub(crate) fn var_qualifiers(&mut self, quals: &[SpannedQualifier]) -> VarQuals {
+        let mut q = VarQuals::default();
+        let global = self.scopes.is_global();
+        let mut highest: Option<&SpannedQualifier> = None;
+        let mut order_reported = false;
+        for (i, sq) in quals.iter().enumerate() {
+            let name = sq.qualifier.as_str();
+            if let Some(h) = highest {
+                if rank(sq.qualifier) < rank(h.qualifier) && !order_reported {
+                    order_reported = true;
+                    let msg = if sq.qualifier == Qualifier::Invariant {
+                        "`invariant' must come before the other qualifiers".to_string()
+                    } else {
+                        format!("`{name}' must come before `{}'", h.qualifier.as_str())
+                    };
+                    self.error(Code::BadQualifier, sq.span, msg).notes.push(
+                        "the order is: invariant, interpolation, layout, storage, precision".into(),
+                    );
+                }
+            }
+            if highest.is_none_or(|h| rank(sq.qualifier) >= rank(h.qualifier)) {
+                highest = Some(sq);
+            }
+            match sq.qualifier {
+                Qualifier::Const
+                | Qualifier::Attribute
+                | Qualifier::Uniform
+                | Qualifier::Varying
+                | Qualifier::In
+                | Qualifier::Out
+                | Qualifier::Inout => {
+                    if matches!(
+                        sq.qualifier,
+                        Qualifier::In | Qualifier::Out | Qualifier::Inout
+                    ) {
+                        let ok = if sq.qualifier == Qualifier::Inout || !global {
+                            false
+                        } else {
+                            self.lang.allows(Feature::StageInOut)
+                        };
+                        if !ok {
+                            self.in_out_misplaced(sq, global);
+                            continue;
+                        }
+                    }
+                    if let Some(prev) = q.storage {
+                        self.error(
+                            Code::BadQualifier,
+                            sq.span,
+                            format!(
+                                "`{name}' after `{}': only one storage qualifier is allowed",
+                                prev.as_str()
+                            ),
+                        );
+                        continue;
+                    }
+                    q.storage = Some(sq.qualifier);
+                    q.storage_span = sq.span;
+                }
+                Qualifier::Centroid => {
+                    let next = quals.get(i + 1).map(|n| n.qualifier);
+                    let stage_io = self.lang.allows(Feature::StageInOut);
+                    let ok = match next {
+                        Some(Qualifier::Varying) => true,
+                        Some(Qualifier::In | Qualifier::Out) => stage_io,
+                        _ => false,
+                    };
+                    if !ok {
+                        let msg = if stage_io {
+                            "`centroid' must be followed by `in', `out' or `varying'"
+                        } else {
+                            "`centroid' must be followed by `varying'"
+                        };
+                        self.error(Code::BadQualifier, sq.span, msg);
+                    }
+                    q.centroid = true;
+                }
+                Qualifier::Invariant => {
+                    if q.invariant {
+                        self.error(Code::BadQualifier, sq.span, "`invariant' given twice");
+                    }
+                    q.invariant = true;
+                }
+                Qualifier::Flat | Qualifier::Smooth | Qualifier::Noperspective => {
+                    if !self.require(
+                        Feature::InterpolationQualifiers,
+                        &format!("`{name}'"),
+                        sq.span,
+                    ) {
+                        continue;
+                    }
+                    if let Some((prev, _)) = q.interpolation {
+                        self.error(
+                            Code::BadQualifier,
+                            sq.span,
+                            format!(
+                                "`{name}' after `{}': only one interpolation qualifier is allowed",
+                                prev.as_str()
+                            ),
+                        );
+                        continue;
+                    }
+                    let interp = match sq.qualifier {
+                        Qualifier::Flat => Interpolation::Flat,
+                        Qualifier::Smooth => Interpolation::Smooth,
+                        _ => Interpolation::NoPerspective,
+                    };
+                    q.interpolation = Some((interp, sq.span));
+                }
+                Qualifier::Lowp | Qualifier::Mediump | Qualifier::Highp => {
+                    if !self.require(Feature::Precision, &format!("`{name}'"), sq.span) {
+                        continue;
+                    }
+                    if q.precision.is_some() {
+                        self.error(
+                            Code::BadQualifier,
+                            sq.span,
+                            "only one precision qualifier is allowed",
+                        );
+                    }
+                    q.precision = Some(sq.span);
+                }
+                Qualifier::Layout => {
+                    if !global {
+                        self.error(
+                            Code::BadQualifier,
+                            sq.span,
+                            "`layout' qualifiers are only allowed at global scope",
+                        );
+                        continue;
+                    }
+                    self.layout_ids(sq, &mut q.layout);
+                }
+            }
+        }
+        if !global {
+            if let Some(s) = q.storage.filter(|s| *s != Qualifier::Const) {
+                self.error(
+                    Code::BadQualifier,
+                    q.storage_span,
+                    format!(
+                        "`{}' is not allowed on local variables; declare it at global scope",
+                        s.as_str()
+                    ),
+                );
+                q.storage = None;
+            }
+            if q.invariant {
+                let span = find(quals, Qualifier::Invariant);
+                self.error(
+                    Code::BadQualifier,
+                    span,
+                    "`invariant' is only allowed on global outputs",
+                );
+                q.invariant = false;
+            }
+            if let Some((i, span)) = q.interpolation.take() {
+                self.error(
+                    Code::BadQualifier,
+                    span,
+                    format!(
+                        "`{}' is only allowed on global `in' and `out' variables",
+                        i.as_str()
+                    ),
+                );
+            }
+            if q.centroid {
+                let span = find(quals, Qualifier::Centroid);
+                self.error(
+                    Code::BadQualifier,
+                    span,
+                    "`centroid' is only allowed on global inputs and outputs",
+                );
+                q.centroid = false;
+            }
+            return q;
+        }
+        self.stage_qualifiers(&mut q, quals);
+        q
+    }
+
+    /// `in`/`out`/`inout` where a global storage qualifier is not allowed.
+    fn in_out_misplaced(&mut self, sq: &SpannedQualifier, global: bool) {
+        let name = sq.qualifier.as_str();
+        if sq.qualifier == Qualifier::Inout {
+            self.error(
+                Code::BadQualifier,
+                sq.span,
+                "`inout' is only allowed on function parameters",
+            )
+            .notes
+            .push("a shader's inputs and outputs are separate `in' and `out' variables".into());
+        } else if !global {
+            self.error(
+                Code::BadQualifier,
+                sq.span,
+                format!("`{name}' is not allowed on local variables; declare it at global scope"),
+            );
+        } else if let Err(why) = self.lang.gate(Feature::StageInOut) {
+            let lang = self.lang;
+            let d = self.error(
+                Code::BadQualifier,
+                sq.span,
+                format!(
+                    "`{name}' at global scope needs GLSL 1.30 (this shader is GLSL {}); before, `{name}' is only allowed on function parameters",
+                    lang.version.dotted()
+                ),
+            );
+            d.notes
+                .push("use `attribute'/`varying' for stage inputs and outputs".into());
+            d.notes.push(why.fix());
+        }
+    }
+
+    /// The rules that depend on the stage and the storage: interpolation,
+    /// `centroid` and `invariant` placement (§4.3.4-§4.3.7, §4.6.1).
+    fn stage_qualifiers(&mut self, q: &mut VarQuals, quals: &[SpannedQualifier]) {
+        let vertex = self.stage == Stage::Vertex;
+        let storage = q.storage;
+        if let Some((i, span)) = q.interpolation {
+            let msg = match storage {
+                Some(Qualifier::In) if vertex => Some("vertex shader inputs"),
+                Some(Qualifier::Out) if !vertex => Some("fragment shader outputs"),
+                Some(Qualifier::In | Qualifier::Out) => None,
+                Some(Qualifier::Varying) => Some("`varying' (use `in'/`out')"),
+                Some(Qualifier::Attribute) => Some("`attribute'"),
+                _ => Some("variables that are not `in' or `out'"),
+            };
+            if let Some(m) = msg {
+                self.error(
+                    Code::BadQualifier,
+                    span,
+                    format!("`{}' does not apply to {m}", i.as_str()),
+                )
+                .notes
+                .push("GLSL 1.30 §4.3: interpolation qualifiers apply to vertex outputs and fragment inputs".into());
+                q.interpolation = None;
+            }
+        }
+        if q.centroid {
+            let bad = match storage {
+                Some(Qualifier::In) => vertex,
+                Some(Qualifier::Out) => !vertex,
+                _ => false,
+            };
+            if bad {
+                let span = find(quals, Qualifier::Centroid);
+                let what = if vertex {
+                    "centroid in"
+                } else {
+                    "centroid out"
+                };
+                self.error(
+                    Code::BadQualifier,
+                    span,
+                    format!("`{what}' is not allowed in a {} shader", self.stage.name()),
+                );
+                q.centroid = false;
+            }
+        }
+        if q.invariant && !self.builtin_mode {
+            let ok = match storage {
+                Some(Qualifier::Varying) => true,
+                Some(Qualifier::Out) => vertex,
+                Some(Qualifier::In) => !vertex,
+                _ => false,
+            };
+            if !ok {
+                let span = find(quals, Qualifier::Invariant);
+                let msg = if self.lang.allows(Feature::StageInOut) {
+                    "`invariant' applies only to vertex outputs and fragment inputs (GLSL 1.30 §4.6.1)"
+                } else {
+                    "`invariant' applies only to varyings (GLSL 1.20 §4.6.1)"
+                };
+                self.error(Code::BadQualifier, span, msg);
+                q.invariant = false;
+            }
+        }
+        if storage == Some(Qualifier::Attribute) && !vertex {
+            self.error(
+                Code::StageMismatch,
+                q.storage_span,
+                "`attribute' is only allowed in vertex shaders",
+            )
+            .notes
+            .push("fragment shaders read per-vertex data through `varying'".into());
+            q.storage = None;
+        }
+    }
+
+    /// Reads the identifiers of one `layout(...)` into `out`.
+    fn layout_ids(&mut self, sq: &SpannedQualifier, out: &mut LayoutQuals) {
+        out.span.get_or_insert(sq.span);
+        for id in &sq.layout {
+            self.layout_id(id, out);
+        }
+    }
+
+    fn layout_id(&mut self, id: &LayoutId, out: &mut LayoutQuals) {
+        // GLSL 1.50 §4.3.8: layout identifiers are not case sensitive.
+        let lower = id.name.name.to_ascii_lowercase();
+        let span = id.span;
+        let takes_value = matches!(lower.as_str(), "location" | "index" | "max_vertices");
+        if takes_value && id.value.is_none() {
+            self.error(
+                Code::BadQualifier,
+                span,
+                format!("`{}' needs a value: `{} = N'", id.name.name, lower),
+            );
+            return;
+        }
+        if !takes_value && id.value.is_some() {
+            self.error(
+                Code::BadQualifier,
+                span,
+                format!("`{}' does not take a value", id.name.name),
+            );
+            return;
+        }
+        match lower.as_str() {
+            "location" => {
+                if !self.require(Feature::ExplicitLocation, "`layout(location)'", span) {
+                    return;
+                }
+                let Some(v) = id.value.as_ref().and_then(|e| self.layout_value(e)) else {
+                    return;
+                };
+                out.location = Some((v, span));
+            }
+            "index" => {
+                // GL_ARB_blend_func_extended's second colour of an output;
+                // dual-source blending is not implemented, so the value is
+                // checked and dropped.
+                if !self.require(Feature::ExplicitLocation, "`layout(index)'", span) {
+                    return;
+                }
+                if let Some(v) = id.value.as_ref().and_then(|e| self.layout_value(e)) {
+                    if v > 1 {
+                        self.error(Code::BadQualifier, span, "`index' must be 0 or 1");
+                    }
+                    out.index = Some(span);
+                }
+            }
+            "std140" | "shared" | "packed" => {
+                if !self.require(Feature::UniformBlocks, &format!("`{lower}'"), span) {
+                    return;
+                }
+                let l = match lower.as_str() {
+                    "std140" => BlockLayout::Std140,
+                    "shared" => BlockLayout::Shared,
+                    _ => BlockLayout::Packed,
+                };
+                out.block_layout = Some((l, span));
+            }
+            "row_major" | "column_major" => {
+                if !self.require(Feature::UniformBlocks, &format!("`{lower}'"), span) {
+                    return;
+                }
+                out.row_major = Some((lower == "row_major", span));
+            }
+            "origin_upper_left" | "pixel_center_integer" => {
+                if !self.require(Feature::FragCoordConventions, &format!("`{lower}'"), span) {
+                    return;
+                }
+                if lower == "origin_upper_left" {
+                    out.origin_upper_left = Some(span);
+                } else {
+                    out.pixel_center_integer = Some(span);
+                }
+            }
+            g if GEOMETRY_LAYOUTS.contains(&g) => {
+                if let Some(e) = &id.value {
+                    self.layout_value(e);
+                }
+                out.geometry = Some((lower.clone(), span));
+            }
+            _ => {
+                self.error(
+                    Code::BadQualifier,
+                    id.name.span,
+                    format!("unknown layout qualifier `{}'", id.name.name),
+                )
+                .notes
+                .push(
+                    "known here: location, std140, shared, packed, row_major, column_major, origin_upper_left, pixel_center_integer"
+                        .into(),
+                );
+            }
+        }
+    }
+
+    /// The value of `location = N`: an integer literal (the grammar's
+    /// INTCONSTANT; a constant expression is not allowed).
+    fn layout_value(&mut self, e: &crate::ast::Expr) -> Option<u32> {
+        match e.kind {
+            crate::ast::ExprKind::IntLit(v) if v <= i32::MAX as u32 => Some(v),
+            crate::ast::ExprKind::IntLit(_) => {
+                self.error(Code::BadQualifier, e.span, "layout value out of range");
+                None
+            }
+            _ => {
+                self.error(
+                    Code::BadQualifier,
+                    e.span,
+                    "a layout value must be an integer literal",
+                )
+                .notes
+                .push("GLSL 3.30 §9: `IDENTIFIER = INTCONSTANT'".into());
+                None
+            }
+        }
+    }
+
+    /// Reports layout identifiers a variable declaration may not have and
+    /// returns its location.
+    pub(crate) fn check_var_layout(&mut self, q: &VarQuals, name: &str) -> Option<u32> {
+        let l = &q.layout;
+        let loc_ok = match q.storage {
+            Some(Qualifier::In) => self.stage == Stage::Vertex,
+            Some(Qualifier::Out) => self.stage == Stage::Fragment,
+            _ => false,
+        };
+        let mut location = None;
+        if let Some(span) = l.index {
+            if !(loc_ok && self.stage == Stage::Fragment && l.location.is_some()) {
+                self.error(
+                    Code::BadQualifier,
+                    span,
+                    "`index' is only allowed with `location' on fragment shader outputs",
+                );
+            }
+        }
+        if let Some((v, span)) = l.location {
+            if loc_ok {
+                location = Some(v);
+            } else {
+                self.error(
+                    Code::BadQualifier,
+                    span,
+                    format!("`location' is only allowed on vertex shader `in' and fragment shader `out' variables, not on `{name}'"),
+                );
+            }
+        }
+        for (what, span) in [
+            l.block_layout.map(|(_, s)| ("std140/shared/packed", s)),
+            l.row_major.map(|(_, s)| ("row_major/column_major", s)),
+        ]
+        .into_iter()
+        .flatten()
+        {
+            self.error(
+                Code::BadQualifier,
+                span,
+                format!("`{what}' applies only to uniform blocks and their members"),
+            );
+        }
+        let frag_coord = name == "gl_FragCoord" && self.stage == Stage::Fragment;
+        for span in [l.origin_upper_left, l.pixel_center_integer]
+            .into_iter()
+            .flatten()
+        {
+            if !frag_coord {
+                self.error(
+                    Code::BadQualifier,
+                    span,
+                    "`origin_upper_left' and `pixel_center_integer' apply only to a redeclaration of `gl_FragCoord'",
+                );
+            }
+        }
+        if let Some((g, span)) = &l.geometry {
+            self.error(
+                Code::StageMismatch,
+                *span,
+                format!(
+                    "`{g}' is a geometry shader layout qualifier; {} shaders have no input or output layouts",
+                    self.stage.name()
+                ),
+            );
+        }
+        location
+    }
+
+    /// One precision qualifier of a parameter, return type or member:
+    /// checks it is available and not repeated.
+    pub(crate) fn precision_qualifier(&mut self, sq: &SpannedQualifier, seen: &mut Option<Span>) {
+        if !self.require(
+            Feature::Precision,
+            &format!("`{}'", sq.qualifier.as_str()),
+            sq.span,
+        ) {
+            return;
+        }
+        if seen.is_some() {
+            self.error(
+                Code::BadQualifier,
+                sq.span,
+                "only one precision qualifier is allowed",
+            );
+        }
+        *seen = Some(sq.span);
+    }
+
+    /// Whether a precision qualifier may be on a declaration of `ty`.
+    pub(crate) fn check_precision(&mut self, span: Option<Span>, ty: Type) {
+        let Some(span) = span else { return };
+        if ty.is_error() {
+            return;
+        }
+        if !takes_precision(ty.element()) {
+            let tn = self.tn(ty);
+            self.error(
+                Code::BadQualifier,
+                span,
+                format!("precision qualifiers apply to floating-point, integer and sampler types, not {tn}"),
+            );
+        }
+    }
+
+    /// `precision highp float;` (GLSL 1.30 §4.5.3): the type is `float`,
+    /// `int` or a sampler; no effect.
+    pub(crate) fn precision_statement(
+        &mut self,
+        precision: &SpannedQualifier,
+        ty: &crate::ast::TypeSpecifier,
+    ) {
+        if !self.require(Feature::Precision, "`precision'", precision.span) {
+            return;
+        }
+        let ok = match &ty.name {
+            TypeName::Builtin(crate::token::Keyword::Float | crate::token::Keyword::Int) => true,
+            TypeName::Builtin(_) => self.resolve_type(ty).is_sampler(),
+            _ => false,
+        };
+        if !ok || ty.array.is_some() {
+            self.error(
+                Code::BadQualifier,
+                ty.span,
+                "a default precision is set for `float', `int' or a sampler type",
+            );
+        }
+    }
+
+    /// Qualifiers alone (`layout(std140) uniform;`, `layout(triangles) in;`).
+    pub(crate) fn qualifiers_only(&mut self, quals: &[SpannedQualifier], span: Span) {
+        let q = self.var_qualifiers(quals);
+        let l = &q.layout;
+        match q.storage {
+            Some(Qualifier::Uniform) if l.span.is_some() => {
+                if l.location.is_some()
+                    || l.origin_upper_left.is_some()
+                    || l.pixel_center_integer.is_some()
+                    || l.geometry.is_some()
+                {
+                    self.error(
+                        Code::BadQualifier,
+                        span,
+                        "a default uniform layout takes only std140, shared, packed, row_major or column_major",
+                    );
+                    return;
+                }
+                if let Some((b, _)) = l.block_layout {
+                    self.default_block_layout = b;
+                }
+                if let Some((r, _)) = l.row_major {
+                    self.default_row_major = r;
+                }
+            }
+            _ => {
+                if let Some((g, s)) = &l.geometry {
+                    self.error(
+                        Code::StageMismatch,
+                        *s,
+                        format!(
+                            "`{g}' is a geometry shader layout qualifier; {} shaders have no input or output layouts",
+                            self.stage.name()
+                        ),
+                    );
+                } else {
+                    self.error(
+                        Code::Syntax,
+                        span,
+                        "a declaration needs a type and a name (only `layout(...) uniform;' may stand alone)",
+                    );
+                }
+            }
+        }
+    }
+
+    /// An interface block: checks it and declares its members (without an
+    /// instance name) or its instance.
+    pub(crate) fn interface_block(&mut self, b: &InterfaceBlock) {
+        let q = self.var_qualifiers(&b.qualifiers);
+        let (storage, input) = match q.storage {
+            Some(Qualifier::Uniform) => {
+                if !self.require(Feature::UniformBlocks, "uniform blocks", b.name.span) {
+                    return;
+                }
+                (Storage::Uniform, false)
+            }
+            Some(Qualifier::In) | Some(Qualifier::Out) => {
+                if !self.require(Feature::InOutBlocks, "input and output blocks", b.name.span) {
+                    return;
+                }
+                let is_in = q.storage == Some(Qualifier::In);
+                let vertex = self.stage == Stage::Vertex;
+                if is_in == vertex {
+                    self.error(
+                        Code::StageMismatch,
+                        b.name.span,
+                        format!(
+                            "{} blocks are not allowed in a {} shader",
+                            if is_in { "input" } else { "output" },
+                            self.stage.name()
+                        ),
+                    );
+                    return;
+                }
+                (Storage::Varying, is_in)
+            }
+            _ => {
+                self.error(
+                    Code::BadQualifier,
+                    b.name.span,
+                    "a block must be declared `uniform', `in' or `out'",
+                );
+                return;
+            }
+        };
+        if !self.scopes.is_global() {
+            self.error(
+                Code::BadQualifier,
+                b.span,
+                "blocks must be declared at global scope",
+            );
+            return;
+        }
+        let mut layout = self.default_block_layout;
+        let mut row_major = self.default_row_major;
+        if storage == Storage::Uniform {
+            if let Some((l, _)) = q.layout.block_layout {
+                layout = l;
+            }
+            if let Some((r, _)) = q.layout.row_major {
+                row_major = r;
+            }
+            let l = &q.layout;
+            if l.location.is_some()
+                || l.origin_upper_left.is_some()
+                || l.pixel_center_integer.is_some()
+                || l.geometry.is_some()
+            {
+                self.error(
+                    Code::BadQualifier,
+                    l.span.unwrap_or(b.span),
+                    "a uniform block takes only std140, shared, packed, row_major or column_major",
+                );
+            }
+        } else if let Some(s) = q.layout.span {
+            self.error(
+                Code::BadQualifier,
+                s,
+                "input and output blocks of vertex and fragment shaders take no layout",
+            );
+        }
+        if b.name.name.starts_with("gl_") && !self.builtin_mode {
+            self.error(
+                Code::Redeclared,
+                b.name.span,
+                format!(
+                    "`{}': names starting with `gl_' are reserved for the implementation",
+                    b.name.name
+                ),
+            );
+            return;
+        }
+        if self
+            .module
+            .blocks
+            .iter()
+            .any(|x| x.name == b.name.name.as_str() && (x.storage == storage && x.input == input))
+        {
+            self.error(
+                Code::Redeclared,
+                b.name.span,
+                format!("block `{}' is already declared", b.name.name),
+            );
+            return;
+        }
+        // A block name is a global name: nothing else at global scope may
+        // take it (GLSL 1.40 §4.3.5.1, 1.50 §4.3.7).
+        if self.scopes.lookup_current(&b.name.name).is_some() {
+            self.error(
+                Code::Redeclared,
+                b.name.span,
+                format!(
+                    "block name `{}' is already declared at global scope",
+                    b.name.name
+                ),
+            );
+            return;
+        }
+        let block_interp = q.interpolation.map(|(i, _)| i);
+        let members = self.block_members(b, storage, row_major, block_interp);
+        let id = BlockId(self.module.blocks.len() as u32);
+        // The block's members as a struct: the type of a named instance,
+        // and what the block name stands for in the global scope.
+        let sid = crate::types::StructId(self.module.structs.len() as u32);
+        self.module.structs.push(StructDef {
+            name: b.name.name.to_string(),
+            members: members
+                .iter()
+                .map(|m| StructMember {
+                    name: m.name.clone(),
+                    ty: m.ty,
+                })
+                .collect(),
+            builtin: self.builtin_mode,
+        });
+        self.scopes.insert(b.name.name.clone(), Symbol::Struct(sid));
+        let mut globals = Vec::new();
+        let mut array = None;
+        match &b.instance {
+            None => {
+                for m in &members {
+                    if self.scopes.lookup_current(&m.name).is_some() {
+                        self.error(
+                            Code::Redeclared,
+                            b.span,
+                            format!(
+                                "block member `{}' is already declared at global scope",
+                                m.name
+                            ),
+                        );
+                        continue;
+                    }
+                    let gid =
+                        self.push_block_global(&m.name, m.ty, storage, Some(m), id, b.name.span);
+                    self.scopes
+                        .insert(m.name.as_str().into(), Symbol::Var(Var::Global(gid)));
+                    globals.push(gid);
+                }
+            }
+            Some((inst, arr)) => {
+                let ty = self.apply_array(
+                    Type {
+                        base: Base::Struct(sid),
+                        array: None,
+                    },
+                    arr.as_ref(),
+                );
+                if ty.array == Some(ArraySize::Unsized) {
+                    self.error(
+                        Code::BadArraySize,
+                        inst.span,
+                        format!("block instance `{}' needs an array size", inst.name),
+                    );
+                }
+                if let Some(ArraySize::Sized(n)) = ty.array {
+                    array = Some(n);
+                }
+                if !self.check_reserved_name(&inst.name, inst.span) {
+                    return;
+                }
+                if self.scopes.lookup_current(&inst.name).is_some() {
+                    self.error(
+                        Code::Redeclared,
+                        inst.span,
+                        format!("`{}' is already declared in this scope", inst.name),
+                    );
+                    return;
+                }
+                let gid = self.push_block_global(&inst.name, ty, storage, None, id, inst.span);
+                self.scopes
+                    .insert(inst.name.clone(), Symbol::Var(Var::Global(gid)));
+                globals.push(gid);
+            }
+        }
+        self.module.blocks.push(ir::InterfaceBlock {
+            name: b.name.name.to_string(),
+            storage,
+            input,
+            instance: b.instance.as_ref().map(|(i, _)| i.name.to_string()),
+            array,
+            layout,
+            members,
+            globals,
+            span: b.name.span,
+        });
+    }
+
+    /// Whether `e` names the instance array of a uniform block.
+    pub(crate) fn is_block_instance_array(&self, e: &ir::Expr) -> bool {
+        let ir::ExprKind::Global(g) = e.kind else {
+            return false;
+        };
+        let Some(g) = self.module.globals.get(g.0 as usize) else {
+            return false;
+        };
+        g.storage == Storage::Uniform
+            && g.ty.is_array()
+            && g.block
+                .and_then(|b| self.module.blocks.get(b.0 as usize))
+                .is_some_and(|b| b.instance.is_some())
+    }
+
+    fn push_block_global(
+        &mut self,
+        name: &str,
+        ty: Type,
+        storage: Storage,
+        member: Option<&BlockMember>,
+        block: BlockId,
+        span: Span,
+    ) -> ir::GlobalId {
+        let id = ir::GlobalId(self.module.globals.len() as u32);
+        self.module.globals.push(Global {
+            name: name.to_string(),
+            ty,
+            storage,
+            builtin: self.builtin_mode,
+            invariant: member.is_some_and(|m| m.invariant),
+            centroid: member.is_some_and(|m| m.centroid),
+            interpolation: member.and_then(|m| m.interpolation),
+            location: None,
+            block: Some(block),
+            init: None,
+            init_expr: None,
+            read: false,
+            written: false,
+            implicit_size: 0,
+            span,
+        });
+        id
+    }
+
+    /// The members of a block, checked (§4.3.7: no initializers, no
+    /// samplers, no struct definitions in uniform blocks of 1.40, member
+    /// storage matching the block's).
+    fn block_members(
+        &mut self,
+        b: &InterfaceBlock,
+        storage: Storage,
+        row_major: bool,
+        block_interp: Option<Interpolation>,
+    ) -> Vec<BlockMember> {
+        let mut out: Vec<BlockMember> = Vec::new();
+        let frag_input = storage == Storage::Varying && self.stage == Stage::Fragment;
+        for m in &b.members {
+            let mut member_row_major = row_major;
+            let mut interpolation = block_interp;
+            let mut centroid = false;
+            let mut invariant = false;
+            let mut precision = None;
+            for sq in &m.qualifiers {
+                match sq.qualifier {
+                    Qualifier::Layout => {
+                        let mut l = LayoutQuals::default();
+                        self.layout_ids(sq, &mut l);
+                        if let (Some((r, _)), Storage::Uniform) = (l.row_major, storage) {
+                            member_row_major = r;
+                        }
+                        let bad = l.location.is_some()
+                            || l.block_layout.is_some()
+                            || l.origin_upper_left.is_some()
+                            || l.pixel_center_integer.is_some()
+                            || l.geometry.is_some()
+                            || (storage != Storage::Uniform && l.row_major.is_some());
+                        if bad {
+                            self.error(
+                                Code::BadQualifier,
+                                sq.span,
+                                "a block member takes only `row_major' or `column_major' (in uniform blocks)",
+                            );
+                        }
+                    }
+                    Qualifier::Uniform if storage == Storage::Uniform => {}
+                    Qualifier::In if storage == Storage::Varying && b_is(b, Qualifier::In) => {}
+                    Qualifier::Out if storage == Storage::Varying && b_is(b, Qualifier::Out) => {}
+                    Qualifier::Flat | Qualifier::Smooth | Qualifier::Noperspective
+                        if storage == Storage::Varying =>
+                    {
+                        interpolation = Some(match sq.qualifier {
+                            Qualifier::Flat => Interpolation::Flat,
+                            Qualifier::Smooth => Interpolation::Smooth,
+                            _ => Interpolation::NoPerspective,
+                        });
+                    }
+                    Qualifier::Centroid if storage == Storage::Varying => centroid = true,
+                    Qualifier::Invariant if storage == Storage::Varying => invariant = true,
+                    Qualifier::Lowp | Qualifier::Mediump | Qualifier::Highp => {
+                        precision = Some(sq.span);
+                    }
+                    other => {
+                        self.error(
+                            Code::BadQualifier,
+                            sq.span,
+                            format!(
+                                "`{}' is not allowed on a member of block `{}'",
+                                other.as_str(),
+                                b.name.name
+                            ),
+                        )
+                        .notes
+                        .push("a member's storage qualifier, if any, must be the block's".into());
+                    }
+                }
+            }
+            let ty = self.resolve_type(&m.ty);
+            for d in &m.declarators {
+                let mty = self.apply_array(ty, d.array.as_ref());
+                if mty.is_error() {
+                    continue;
+                }
+                self.check_precision(precision, mty);
+                if mty.base == Base::Void {
+                    self.error(
+                        Code::TypeMismatch,
+                        d.name.span,
+                        format!("block member `{}' cannot be void", d.name.name),
+                    );
+                    continue;
+                }
+                if mty.array == Some(ArraySize::Unsized) {
+                    self.error(
+                        Code::BadArraySize,
+                        d.span,
+                        format!("block member `{}' must have an array size", d.name.name),
+                    );
+                }
+                if self.contains_sampler(mty) {
+                    self.error(
+                        Code::TypeMismatch,
+                        d.name.span,
+                        format!(
+                            "block member `{}' is a sampler; blocks cannot hold samplers",
+                            d.name.name
+                        ),
+                    );
+                    continue;
+                }
+                if storage == Storage::Varying && mty.scalar() == Some(Scalar::Bool) {
+                    self.error(
+                        Code::TypeMismatch,
+                        d.name.span,
+                        format!(
+                            "member `{}' of an input or output block cannot be bool",
+                            d.name.name
+                        ),
+                    );
+                }
+                let integer = matches!(mty.element().base, Base::Scalar(s) | Base::Vector(s, _) if super::decl::is_integer(s));
+                if frag_input && integer && interpolation != Some(Interpolation::Flat) {
+                    self.error(
+                        Code::BadQualifier,
+                        d.name.span,
+                        format!(
+                            "member `{}' of a fragment input block has an integer type; it must be `flat'",
+                            d.name.name
+                        ),
+                    );
+                }
+                if !self.check_reserved_name(&d.name.name, d.name.span) {
+                    continue;
+                }
+                if out.iter().any(|x| x.name == d.name.name.as_str()) {
+                    self.error(
+                        Code::Redeclared,
+                        d.name.span,
+                        format!("block member `{}' declared twice", d.name.name),
+                    );
+                    continue;
+                }
+                out.push(BlockMember {
+                    name: d.name.name.to_string(),
+                    ty: mty,
+                    row_major: member_row_major,
+                    interpolation,
+                    centroid,
+                    invariant,
+                });
+            }
+        }
+        out
+    }
+}
+
+fn b_is(b: &InterfaceBlock, q: Qualifier) -> bool {
+    b.qualifiers.iter().any(|x| x.qualifier == q)
+}
+
+fn find(quals: &[SpannedQualifier], q: Qualifier) -> Span {
+    quals
+        .iter()
+        .find(|x| x.qualifier == q)
+        .map_or(Span::default(), |x| x.span)
+}
+
+#[cfg(test)]
+#[path = "interface_tests.rs"]
+mod tests;

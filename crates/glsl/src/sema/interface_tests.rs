@@ -1,0 +1,453 @@
+//! Unit tests of the GLSL 1.30-3.30 declarations: storage, interpolation,
+//! precision and layout qualifiers, blocks, and their link rules.
+
+use crate::diag::Code;
+use crate::ir::{BlockLayout, Interpolation, Stage, Storage};
+use crate::{compile, CompileOptions, Shader};
+
+fn frag(src: &str) -> Shader {
+    compile(&[src], &CompileOptions::new(Stage::Fragment))
+}
+
+fn vert(src: &str) -> Shader {
+    compile(&[src], &CompileOptions::new(Stage::Vertex))
+}
+
+#[track_caller]
+fn ok(s: &Shader) {
+    assert!(s.ok(), "expected success:\n{}", s.info_log());
+}
+
+#[track_caller]
+fn fails(s: &Shader, code: Code) {
+    let codes: Vec<Code> = s
+        .diagnostics
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| d.code)
+        .collect();
+    assert!(!s.ok(), "expected failure");
+    assert!(codes.contains(&code), "{codes:?}\n{}", s.info_log());
+}
+
+fn global<'a>(s: &'a Shader, name: &str) -> &'a crate::ir::Global {
+    let m = s.module.as_ref().expect("compiled");
+    m.globals
+        .iter()
+        .find(|g| g.name == name)
+        .expect("global exists")
+}
+
+#[test]
+fn stage_inputs_and_outputs_map_to_storages() {
+    let v = vert(
+        "#version 130\nin vec4 p; centroid out vec2 t; flat out int k; noperspective out float z;\n\
+         void main() { gl_Position = p; t = p.xy; k = 1; z = 0.0; }",
+    );
+    ok(&v);
+    assert_eq!(global(&v, "p").storage, Storage::Attribute);
+    assert_eq!(global(&v, "t").storage, Storage::Varying);
+    assert!(global(&v, "t").centroid);
+    assert_eq!(global(&v, "k").interpolation, Some(Interpolation::Flat));
+    assert_eq!(
+        global(&v, "z").interpolation,
+        Some(Interpolation::NoPerspective)
+    );
+    let f = frag("#version 130\nin vec2 t; out vec4 c; void main() { c = t.xyxy; }");
+    ok(&f);
+    assert_eq!(global(&f, "t").storage, Storage::Varying);
+    assert_eq!(global(&f, "c").storage, Storage::FragOutput);
+}
+
+#[test]
+fn in_out_need_130_and_global_scope() {
+    fails(
+        &vert("in vec4 p; void main() { gl_Position = p; }"),
+        Code::BadQualifier,
+    );
+    fails(
+        &vert("#version 130\nvoid main() { in vec4 p; gl_Position = vec4(0); }"),
+        Code::BadQualifier,
+    );
+    fails(
+        &vert("#version 130\ninout vec4 p; void main() {}"),
+        Code::BadQualifier,
+    );
+    // The message names the version that has them.
+    let s = vert("#version 120\nin vec4 p; void main() { gl_Position = p; }");
+    assert!(s.info_log().contains("needs GLSL 1.30"), "{}", s.info_log());
+}
+
+#[test]
+fn interpolation_rules() {
+    // Only on vertex outputs and fragment inputs, never on varying.
+    fails(
+        &vert("#version 130\nflat in vec4 p; void main() {}"),
+        Code::BadQualifier,
+    );
+    fails(
+        &frag("#version 130\nflat out vec4 c; void main() {}"),
+        Code::BadQualifier,
+    );
+    fails(
+        &frag("#version 130\nsmooth varying float x; void main() {}"),
+        Code::BadQualifier,
+    );
+    fails(
+        &frag("#version 130\nflat smooth in float x; void main() {}"),
+        Code::BadQualifier,
+    );
+    fails(
+        &frag("#version 130\nvoid main() { smooth float x = 0.0; }"),
+        Code::BadQualifier,
+    );
+    // Integer fragment inputs must be flat; integer vertex outputs need not.
+    fails(
+        &frag("#version 130\nin int i; void main() {}"),
+        Code::BadQualifier,
+    );
+    ok(&frag("#version 130\nflat in int i; void main() {}"));
+    ok(&vert("#version 130\nout int i; void main() { i = 1; }"));
+    // Interpolation qualifiers exist from 1.30 on.
+    fails(
+        &frag("#version 120\nflat varying float x; void main() {}"),
+        Code::Syntax,
+    );
+    // The colour varyings may be redeclared with one.
+    let f = frag("#version 130\nflat in vec4 gl_Color; void main() { gl_FragColor = gl_Color; }");
+    ok(&f);
+    assert_eq!(
+        global(&f, "gl_Color").interpolation,
+        Some(Interpolation::Flat)
+    );
+}
+
+#[test]
+fn qualifier_order_is_strict() {
+    ok(&vert(
+        "#version 130\ninvariant smooth centroid out highp float x; void main() { x = 0.0; }",
+    ));
+    for bad in [
+        "smooth invariant out float x;",
+        "smooth out invariant float x;",
+        "highp smooth out float x;",
+        "centroid smooth out float x;",
+    ] {
+        fails(
+            &vert(&format!("#version 130\n{bad} void main() {{}}")),
+            Code::BadQualifier,
+        );
+    }
+    ok(&vert(
+        "#version 130\nfloat f(const in highp float x) { return x; } void main() {}",
+    ));
+    fails(
+        &vert("#version 130\nfloat f(highp in float x) { return x; } void main() {}"),
+        Code::BadQualifier,
+    );
+}
+
+#[test]
+fn storage_types_per_version() {
+    fails(
+        &frag("#version 130\nflat in bool b; void main() {}"),
+        Code::TypeMismatch,
+    );
+    fails(
+        &frag("#version 130\nstruct S { vec4 v; }; in S s; void main() {}"),
+        Code::TypeMismatch,
+    );
+    fails(
+        &vert("#version 130\nin float a[2]; void main() {}"),
+        Code::TypeMismatch,
+    );
+    ok(&vert(
+        "#version 150\nin float a[2]; void main() { gl_Position = vec4(a[0]); }",
+    ));
+    ok(&frag(
+        "#version 150\nflat in struct A { int x; vec3 z; } a; out vec4 c; void main() { c = vec4(a.z, 1.0); }",
+    ));
+    fails(
+        &frag("#version 130\nout mat4 m; void main() {}"),
+        Code::TypeMismatch,
+    );
+    fails(
+        &frag("#version 130\ncentroid out vec4 c; void main() {}"),
+        Code::BadQualifier,
+    );
+    fails(
+        &vert("#version 130\ncentroid in vec4 c; void main() {}"),
+        Code::BadQualifier,
+    );
+    fails(
+        &frag("#version 130\nin float x; void main() { x = 1.0; }"),
+        Code::ReadOnly,
+    );
+}
+
+#[test]
+fn user_outputs_exclude_gl_fragcolor() {
+    fails(
+        &frag("#version 130\nout vec4 c; void main() { gl_FragColor = vec4(1); if (false) c = vec4(0); }"),
+        Code::TypeMismatch,
+    );
+    ok(&frag(
+        "#version 130\nout vec4 unused; void main() { gl_FragColor = vec4(1); }",
+    ));
+}
+
+#[test]
+fn precision_qualifiers() {
+    ok(&frag(
+        "#version 130\nprecision mediump float; precision lowp int; precision highp sampler2D;\n\
+         uniform lowp sampler2D s; highp float a[4]; struct S { lowp float x; };\n\
+         highp float f(lowp int x) { mediump vec2 v; return 1.0; } void main() {}",
+    ));
+    fails(
+        &frag("#version 130\nprecision highp bool; void main() {}"),
+        Code::BadQualifier,
+    );
+    fails(
+        &frag("#version 130\nprecision highp vec2; void main() {}"),
+        Code::BadQualifier,
+    );
+    fails(
+        &frag("#version 130\nvoid main() { highp bool b; }"),
+        Code::BadQualifier,
+    );
+    fails(
+        &frag("#version 130\nhighp struct S { float a; }; void main() {}"),
+        Code::BadQualifier,
+    );
+    fails(
+        &frag("#version 130\nvoid main() { lowp lowp float x; }"),
+        Code::BadQualifier,
+    );
+}
+
+#[test]
+fn explicit_locations() {
+    let ext = "#version 110\n#extension GL_ARB_explicit_attrib_location : require\n";
+    let v = vert(&format!(
+        "{ext}layout(location = 0x3) in vec4 p; void main() {{ gl_Position = p; }}"
+    ));
+    ok(&v);
+    assert_eq!(global(&v, "p").location, Some(3));
+    let f = frag(&format!(
+        "{ext}layout(location = 1) out vec4 c; void main() {{ c = vec4(1); }}"
+    ));
+    ok(&f);
+    for bad in [
+        "layout(location = 0.0) out vec4 c;",
+        "layout(location = 1 - 1) out vec4 c;",
+        "out layout(location = 0) vec4 c;",
+        "layout(location = 0) varying vec4 c;",
+        "layout(location = 0) uniform vec4 c;",
+        "layout(locaton = 0) out vec4 c;",
+        "layout(location) out vec4 c;",
+    ] {
+        let s = frag(&format!("{ext}{bad} void main() {{}}"));
+        assert!(!s.ok(), "{bad}");
+    }
+    // Without the extension, 3.30 has it and 1.50 does not.
+    ok(&frag(
+        "#version 330\nlayout(location = 0) out vec4 c; void main() { c = vec4(1); }",
+    ));
+    let s = frag("#version 150\nlayout(location = 0) out vec4 c; void main() { c = vec4(1); }");
+    assert!(
+        s.info_log().contains("GL_ARB_explicit_attrib_location"),
+        "{}",
+        s.info_log()
+    );
+    // `layout' is an identifier where no extension makes it a keyword.
+    ok(&frag("#version 130\nfloat layout; void main() {}"));
+}
+
+#[test]
+fn frag_coord_layouts() {
+    ok(&frag(
+        "#version 150\nlayout(PIXEL_center_inTEger) in vec4 gl_FragCoord; out vec4 c; void main() { c = gl_FragCoord; }",
+    ));
+    let f = frag("#version 150\nlayout(origin_upper_left) in vec4 gl_FragCoord; out vec4 c; void main() { c = gl_FragCoord; }");
+    ok(&f);
+    assert!(f
+        .module
+        .as_ref()
+        .is_some_and(|m| m.frag_coord.origin_upper_left));
+    fails(
+        &frag("#version 150\nvec4 p = gl_FragCoord;\nlayout(origin_upper_left) in vec4 gl_FragCoord; void main() {}"),
+        Code::Redeclared,
+    );
+    fails(
+        &frag("#version 150\nlayout(origin_upper_left) in vec4 gl_FragCoord;\nin vec4 gl_FragCoord; void main() {}"),
+        Code::Redeclared,
+    );
+    fails(
+        &frag("#version 130\nlayout(origin_upper_left) in vec4 gl_FragCoord; void main() {}"),
+        Code::Syntax,
+    );
+    fails(
+        &frag("#version 150\nlayout(points) out vec4 b; void main() {}"),
+        Code::StageMismatch,
+    );
+}
+
+#[test]
+fn uniform_blocks() {
+    let v = vert(
+        "#version 140\nlayout(std140) uniform;\n\
+         uniform B { vec4 a; layout(row_major) mat4 m; };\n\
+         uniform C { vec4 b; } c[2];\n\
+         void main() { gl_Position = a * m + c[1].b; }",
+    );
+    ok(&v);
+    let m = v.module.as_ref().expect("compiled");
+    assert_eq!(m.blocks.len(), 2);
+    assert_eq!(m.blocks[0].layout, BlockLayout::Std140);
+    assert!(m.blocks[0].members[1].row_major);
+    assert_eq!(m.blocks[1].array, Some(2));
+    assert_eq!(global(&v, "a").block, Some(crate::ir::BlockId(0)));
+    assert_eq!(global(&v, "c").storage, Storage::Uniform);
+    for bad in [
+        "uniform B { sampler2D s; };",
+        "uniform B { float x = 1.0; };",
+        "uniform B { float x; }; float x;",
+        "float x; uniform B { float x; };",
+        "uniform B { float x; }; uniform B { float y; };",
+        "uniform B { varying float x; };",
+        "uniform B { float x; float x; };",
+        "uniform a { vec4 b; }; float a;",
+        "uniform a { vec4 b; }; struct a { vec4 c; };",
+        "uniform a { vec4 b; }; float a(void) { return b.x; }",
+        "struct a { vec4 c; }; uniform a { vec4 b; };",
+    ] {
+        let s = vert(&format!("#version 140\n{bad} void main() {{}}"));
+        assert!(!s.ok(), "{bad}");
+    }
+    fails(
+        &vert("#version 130\nuniform B { float x; }; void main() {}"),
+        Code::VersionTooLow,
+    );
+    ok(&vert(
+        "#version 130\n#extension GL_ARB_uniform_buffer_object : enable\nlayout(std140) uniform B { float x; }; void main() { gl_Position = vec4(x); }",
+    ));
+}
+
+#[test]
+fn uniform_block_arrays_take_constant_indices() {
+    fails(
+        &vert(
+            "#version 140\nuniform B { vec4 v; } b[2]; uniform int i;\n\
+             void main() { gl_Position = b[i].v; }",
+        ),
+        Code::NotConstant,
+    );
+    ok(&vert(
+        "#version 140\nuniform B { vec4 v; } b[2]; void main() { gl_Position = b[1].v; }",
+    ));
+}
+
+#[test]
+fn in_out_blocks() {
+    ok(&vert(
+        "#version 150\nout B { smooth out vec4 v; } b; void main() { b.v = vec4(1); gl_Position = vec4(0); }",
+    ));
+    fails(
+        &vert("#version 150\nin B { vec4 v; } b; void main() {}"),
+        Code::StageMismatch,
+    );
+    fails(
+        &frag("#version 150\nout B { vec4 v; } b; void main() {}"),
+        Code::StageMismatch,
+    );
+    fails(
+        &vert("#version 140\nout B { vec4 v; } b; void main() {}"),
+        Code::VersionTooLow,
+    );
+    fails(
+        &frag("#version 150\nin B { vec4 v; } b; void main() { b.v = vec4(0); }"),
+        Code::ReadOnly,
+    );
+}
+
+#[test]
+fn link_matches_interpolation_blocks_and_locations() {
+    let link = |v: &str, f: &str| {
+        let (v, f) = (vert(v), frag(f));
+        ok(&v);
+        ok(&f);
+        crate::link::link(&[&v, &f])
+    };
+    let p = link(
+        "#version 130\nin vec4 p; out vec3 v; void main() { gl_Position = p; v = p.xyz; }",
+        "#version 130\nin vec3 v; out vec4 c; void main() { c = vec4(v, 1.0); }",
+    );
+    assert!(p.ok(), "{}", p.info_log());
+    let p = link(
+        "#version 130\nflat out vec3 v; void main() { gl_Position = vec4(0); v = vec3(0); }",
+        "#version 130\nsmooth in vec3 v; out vec4 c; void main() { c = vec4(v, 1.0); }",
+    );
+    assert!(!p.ok());
+    assert!(p.info_log().contains("interpolated"), "{}", p.info_log());
+    let p = link(
+        "#version 150\nout B { vec4 v; } b; void main() { b.v = vec4(0); }",
+        "#version 150\nin B { vec4 v; } other; out vec4 c; void main() { c = other.v; }",
+    );
+    assert!(p.ok(), "{}", p.info_log());
+    let p = link(
+        "#version 150\nout B { vec3 v; } b; void main() { b.v = vec3(0); }",
+        "#version 150\nin B { vec4 v; } b; out vec4 c; void main() { c = b.v; }",
+    );
+    assert!(!p.ok());
+    let p = link(
+        "#version 150\nvoid main() { gl_Position = vec4(0); }",
+        "#version 150\nin B { vec4 v; } b; out vec4 c; void main() { c = b.v; }",
+    );
+    assert!(!p.ok());
+    let p = link(
+        "#version 330\nvoid main() { gl_Position = vec4(0); }",
+        "#version 330\nlayout(location = 1) out vec4 a; layout(location = 1) out vec4 b;\n\
+         void main() { a = vec4(0); b = vec4(1); }",
+    );
+    assert!(!p.ok());
+    let p = link(
+        "#version 330\nlayout(location = 15) in mat2 m; void main() { gl_Position = vec4(m[0], m[1]); }",
+        "#version 330\nout vec4 c; void main() { c = vec4(0); }",
+    );
+    assert!(!p.ok(), "a mat2 at 15 needs locations 15 and 16");
+    // Aliased vertex inputs link (GL 2.0 allows aliasing).
+    let p = link(
+        "#version 330\nlayout(location = 0) in vec4 a; layout(location = 0) in vec4 b;\n\
+         void main() { gl_Position = a + b; }",
+        "#version 330\nout vec4 c; void main() { c = vec4(0); }",
+    );
+    assert!(p.ok(), "{}", p.info_log());
+}
+
+#[test]
+fn integer_members_of_fragment_input_blocks_are_flat() {
+    fails(
+        &frag("#version 150\nin B { int i; } b; void main() {}"),
+        Code::BadQualifier,
+    );
+    ok(&frag(
+        "#version 150\nin B { flat int i; } b; void main() {}",
+    ));
+    ok(&frag(
+        "#version 150\nflat in B { int i; } b; void main() {}",
+    ));
+}
+
+#[test]
+fn fragment_output_index_needs_a_location() {
+    let ext = "#version 110\n#extension GL_ARB_explicit_attrib_location : require\n";
+    ok(&frag(&format!(
+        "{ext}layout(location = 0, index = 1) out vec4 c; void main() {{ c = vec4(1); }}"
+    )));
+    fails(
+        &frag(&format!(
+            "{ext}layout(index = 1) out vec4 c; void main() {{}}"
+        )),
+        Code::BadQualifier,
+    );
+}
