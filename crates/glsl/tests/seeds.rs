@@ -6,6 +6,12 @@
 //! `NAME.out` so a reviewer can see that they name the real problem (run
 //! with `BLESS=1` to rewrite after an intended change). The programs of
 //! `programs.txt` must link or fail as listed.
+//!
+//! The lecture (seed 001) targets GL 3.3 and loads its shaders behind a
+//! first source string `"#version 150\n"`. `lecture.txt` lists the files
+//! compiled that way too (`FILE | 150 | pass` or `fail: <why>`; `150
+//! compatibility` puts `"#version 150 compatibility\n"` first); failures
+//! pin their diagnostics in `NAME.150.out` (`NAME.150-compatibility.out`).
 
 use glsl::{compile, link::link, CompileOptions, Shader, Stage, Version};
 use std::collections::BTreeMap;
@@ -110,6 +116,104 @@ fn seed_shaders() {
     }
     assert!(count >= 30, "only {count} seed shaders found");
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The lecture's way of compiling a shader: `first` as its own source
+/// string, then the file.
+fn compile_after(first: &str, case: &Case, text: &str) -> Shader {
+    let mut opts = CompileOptions::new(case.stage);
+    opts.name = case
+        .path
+        .file_name()
+        .unwrap()
+        .to_string_lossy()
+        .into_owned();
+    compile(&[first, text], &opts)
+}
+
+#[test]
+fn seed_shaders_as_the_lecture_loads_them() {
+    let list = fs::read_to_string(dir().join("lecture.txt")).unwrap();
+    let bless = std::env::var_os("BLESS").is_some();
+    let mut failures = Vec::new();
+    let mut count = 0;
+    for line in list
+        .lines()
+        .filter(|l| !l.trim().is_empty() && !l.starts_with('#'))
+    {
+        let parts: Vec<&str> = line.split('|').map(str::trim).collect();
+        assert_eq!(parts.len(), 3, "bad line: {line}");
+        let (file, version, expect) = (parts[0], parts[1], parts[2]);
+        let (case, text) = load(&dir().join(file)).expect("seed file");
+        count += 1;
+        let expect_pass = expect == "pass" || expect.starts_with("pass:");
+        let shader = compile_after(&format!("#version {version}\n"), &case, &text);
+        if shader.ok() != expect_pass {
+            failures.push(format!(
+                "{file} (#version {version}): expected {expect}, got {}\n{}",
+                if shader.ok() { "pass" } else { "fail" },
+                shader.info_log()
+            ));
+        }
+        if expect_pass {
+            continue;
+        }
+        let out = format!(
+            "{}-- terminal --\n{}",
+            shader.info_log(),
+            shader.render(false)
+        );
+        let golden = dir().join(format!("{file}.{}.out", version.replace(' ', "-")));
+        if bless {
+            fs::write(&golden, &out).unwrap();
+        } else if fs::read_to_string(&golden).ok().as_deref() != Some(out.as_str()) {
+            failures.push(format!(
+                "{file} (#version {version}): diagnostics differ from the golden\n{out}"
+            ));
+        }
+    }
+    assert!(count >= 8, "only {count} lecture cases found");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The lecture's three-string example: `"#version 150\n"`, a shared
+/// `common.glsl` and the stage's own file, as three source strings of one
+/// shader. The two files are not in the lecture (it names them only);
+/// `tests/lecture/` has a plausible pair.
+#[test]
+fn lecture_three_string_source() {
+    let lecture = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/lecture");
+    let common = fs::read_to_string(lecture.join("common.glsl")).unwrap();
+    let mut program = Vec::new();
+    for (file, stage) in [("mesh.vert", Stage::Vertex), ("mesh.frag", Stage::Fragment)] {
+        let text = fs::read_to_string(lecture.join(file)).unwrap();
+        let mut opts = CompileOptions::new(stage);
+        opts.name = file.to_string();
+        let shader = compile(&["#version 150\n", &common, &text], &opts);
+        assert!(shader.ok(), "{file}: {}", shader.info_log());
+        assert_eq!(shader.language.version, Version::V150);
+        program.push(shader);
+    }
+    let linked = link(&program.iter().collect::<Vec<_>>());
+    assert!(linked.ok(), "{}", linked.info_log());
+    // An error in the second string is reported in source string 1, on
+    // that string's own line numbers.
+    let mut opts = CompileOptions::new(Stage::Vertex);
+    opts.name = "mesh.vert".into();
+    let broken = compile(
+        &[
+            "#version 150\n",
+            "float shade(vec3 n) {\n  return n;\n}\n",
+            "void main() {}\n",
+        ],
+        &opts,
+    );
+    assert!(!broken.ok());
+    assert!(
+        broken.info_log().starts_with("1:2("),
+        "{}",
+        broken.info_log()
+    );
 }
 
 #[test]
