@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Compile+link time of the seed's sphere-impostor program, shaderbox and
-# Mesa side by side in one run (docs/PERFORMANCE.md).
+# Mesa side by side in one run (docs/PERFORMANCE.md): as GLSL 1.10 (the
+# files have no #version) and as GLSL 1.50 compatibility (a first source
+# string "#version 150 compatibility").
 #
 #   bash bench/compile.sh
 #
@@ -18,7 +20,10 @@ fs=crates/glsl/tests/seeds/000-sphere.frag
 # The seed shaders have no #version; Mesa compiles them as 1.10, and so does
 # the benchmark when the file says nothing (see the bench source).
 mesa=$(python3 bench/mesa_compile.py "$vs" "$fs" --iterations 300)
-sb=$(cargo bench -q -p shaderbox-glsl --bench compile -- --noplot 2>/dev/null | grep -E "time:" | head -1)
+mesa150=$(python3 bench/mesa_compile.py "$vs" "$fs" --iterations 300 --first $'#version 150 compatibility\n')
+sb=$(cargo bench -q -p shaderbox-glsl --bench compile -- --noplot 2>/dev/null | grep -E "time:")
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)"
-echo "mesa:      $mesa"
-echo "shaderbox: $sb"
+echo "mesa 1.10:           $mesa"
+echo "mesa 1.50 compat:    $mesa150"
+echo "shaderbox (1.10, then 1.50 compat):"
+echo "$sb"

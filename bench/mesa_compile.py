@@ -5,7 +5,10 @@ Loads Debian's libOSMesa (Mesa llvmpipe/softpipe off-screen), makes a small
 context current, and compiles and links the pair N times with fresh shader
 and program objects, printing the median and spread in microseconds as JSON.
 
-    python3 bench/mesa_compile.py VERT FRAG [--iterations N]
+    python3 bench/mesa_compile.py VERT FRAG [--iterations N] [--first STRING]
+
+--first passes STRING (e.g. "#version 150 compatibility\n") as a first
+source string before each file, as programs that share one version line do.
 
 Only ctypes from the standard library is used, so nothing but libosmesa6 is
 needed.
@@ -43,6 +46,7 @@ def main():
     ap.add_argument("vert")
     ap.add_argument("frag")
     ap.add_argument("--iterations", type=int, default=200)
+    ap.add_argument("--first", default=None, help="a first source string before each file")
     args = ap.parse_args()
     osm = load_osmesa()
     osm.OSMesaCreateContextExt.restype = ctypes.c_void_p
@@ -87,13 +91,17 @@ def main():
         shaders = []
         for kind, text in sources:
             s = create_shader(kind)
-            arr = (ctypes.c_char_p * 1)(text)
-            shader_source(s, 1, arr, None)
+            strings = [args.first.encode(), text] if args.first else [text]
+            arr = (ctypes.c_char_p * len(strings))(*strings)
+            shader_source(s, len(strings), arr, None)
             compile_shader(s)
             ok = i32()
             get_shaderiv(s, GL_COMPILE_STATUS, ctypes.byref(ok))
             if not ok.value:
-                sys.exit("Mesa failed to compile the shader")
+                log = (ctypes.c_char * 4096)()
+                get_log = gl("glGetShaderInfoLog", None, uint, i32, p, p)
+                get_log(s, 4096, None, log)
+                sys.exit("Mesa failed to compile the shader: " + log.value.decode(errors="replace"))
             attach(prog, s)
             shaders.append(s)
         link(prog)
