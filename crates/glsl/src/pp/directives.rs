@@ -670,7 +670,7 @@ impl Preprocessor<'_> {
                 return;
             }
         }
-        self.lang = lang;
+        self.set_language(lang);
     }
 
     /// `#extension name : behavior` (§3.3; not macro-expanded).

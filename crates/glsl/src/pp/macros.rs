@@ -74,6 +74,20 @@ pub(crate) struct Macro {
 }
 
 impl Macro {
+    /// A predefined object-like macro whose value is `1`.
+    pub fn one() -> Macro {
+        Macro {
+            params: None,
+            body: vec![PpToken {
+                kind: PpKind::Number,
+                text: "1".into(),
+                span: Span::default(),
+                space_before: true,
+            }],
+            name_span: Span::default(),
+        }
+    }
+
     /// Whether a redefinition is allowed: the same parameters and the same
     /// replacement list, where whitespace between tokens must agree in
     /// presence but not amount (C++ [cpp.replace]; trailing whitespace does

@@ -28,7 +28,7 @@ mod tests;
 
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{ExtensionBehavior, Stage};
-use crate::lang::{Extension, Feature, Language, Version};
+use crate::lang::{Extension, Feature, Language, Profile, Version};
 use crate::lex::{self, LexOptions, PpKind, PpToken};
 use crate::limits;
 use crate::source::{SourceMap, Span};
@@ -106,7 +106,10 @@ pub(crate) fn preprocess_with_limit(
     let mut lexer = lex::Lexer::new(&text, lex_opts);
     let mut pp = Preprocessor::new(map, opts.stage, max_tokens);
     pp.compatibility_context = opts.compatibility_context;
-    pp.lang = Language::new(opts.default_version, opts.compatibility_context);
+    pp.set_language(Language::new(
+        opts.default_version,
+        opts.compatibility_context,
+    ));
     // A directive line is gathered whole; text goes to the preprocessor
     // token by token.
     let mut directive: Option<Vec<PpToken>> = None;
@@ -228,19 +231,7 @@ impl<'m> Preprocessor<'m> {
     fn new(map: &'m mut SourceMap, stage: Stage, max_tokens: usize) -> Self {
         let mut macros = MacroTable::new();
         for ext in Extension::ALL {
-            macros.insert(
-                ext.name().into(),
-                macros::Macro {
-                    params: None,
-                    body: vec![PpToken {
-                        kind: PpKind::Number,
-                        text: "1".into(),
-                        span: Span::default(),
-                        space_before: true,
-                    }],
-                    name_span: Span::default(),
-                },
-            );
+            macros.insert(ext.name().into(), macros::Macro::one());
         }
         Preprocessor {
             map,
@@ -261,6 +252,29 @@ impl<'m> Preprocessor<'m> {
             max_tokens,
             overflowed: false,
             invariant_all: false,
+        }
+    }
+
+    /// Sets the shader's language and the macros that follow from it:
+    /// `GL_FRAGMENT_PRECISION_HIGH` (1.30 §4.5.4, both stages),
+    /// `GL_core_profile` (1.50 §3.3, every 1.50+ shader) and
+    /// `GL_compatibility_profile` (1.50+ compatibility-profile shaders).
+    fn set_language(&mut self, lang: Language) {
+        self.lang = lang;
+        let v = lang.version;
+        for (name, on) in [
+            ("GL_FRAGMENT_PRECISION_HIGH", v >= Version::V130),
+            ("GL_core_profile", v.has_profiles()),
+            (
+                "GL_compatibility_profile",
+                v.has_profiles() && lang.profile == Profile::Compatibility,
+            ),
+        ] {
+            if on {
+                self.macros.insert(name.into(), macros::Macro::one());
+            } else {
+                self.macros.remove(name);
+            }
         }
     }
 

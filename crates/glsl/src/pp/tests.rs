@@ -782,3 +782,25 @@ fn function_like_invocation_spans_a_long_text() {
     let out = ok(&src);
     assert!(out.ends_with("b 1 + 1"), "{}", &out[out.len() - 20..]);
 }
+
+#[test]
+fn language_macros_follow_the_version_and_profile() {
+    let defined = |src: &str, name: &str| {
+        let text = format!("{src}#ifdef {name}\nint yes;\n#endif\n");
+        ok(&text).contains("yes")
+    };
+    assert!(!defined("#version 120\n", "GL_FRAGMENT_PRECISION_HIGH"));
+    assert!(defined("#version 130\n", "GL_FRAGMENT_PRECISION_HIGH"));
+    assert!(!defined("#version 140\n", "GL_core_profile"));
+    assert!(defined("#version 150\n", "GL_core_profile"));
+    assert!(defined("#version 150 compatibility\n", "GL_core_profile"));
+    assert!(!defined("#version 150\n", "GL_compatibility_profile"));
+    assert!(defined(
+        "#version 150 compatibility\n",
+        "GL_compatibility_profile"
+    ));
+    assert!(defined(
+        "#version 330 compatibility\n",
+        "GL_compatibility_profile"
+    ));
+}
