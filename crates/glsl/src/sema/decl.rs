@@ -227,8 +227,9 @@ impl Analyzer {
         }
     }
 
-    /// True when a struct type has an integer member (at any depth).
-    fn contains_integer(&self, ty: Type) -> bool {
+    /// True when a type is or has (as a struct member, at any depth) an
+    /// integer scalar or vector.
+    pub(crate) fn contains_integer(&self, ty: Type) -> bool {
         let mut stack = vec![(ty, 0u32)];
         while let Some((t, depth)) = stack.pop() {
             match t.base {

@@ -1051,7 +1051,9 @@ impl Analyzer {
                         ),
                     );
                 }
-                let integer = matches!(mty.element().base, Base::Scalar(s) | Base::Vector(s, _) if super::decl::is_integer(s));
+                // A struct member with an integer inside counts too (1.50
+                // §4.3.4: the rule is on the type, at any depth).
+                let integer = self.contains_integer(mty.element());
                 if frag_input && integer && interpolation != Some(Interpolation::Flat) {
                     self.error(
                         Code::BadQualifier,
