@@ -8,7 +8,10 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="$root/fuzz/corpus/compile"
-mkdir -p "$out"
+# piglit's tests are not ours to commit: they go to a git-ignored folder
+# that a run names after the main corpus.
+piglit_out="$root/fuzz/corpus/piglit"
+mkdir -p "$out" "$piglit_out"
 add() {
     local f="$1" byte
     case "$f" in
@@ -18,7 +21,7 @@ add() {
     esac
     local name
     name="$(sha1sum "$f" | cut -c1-16)"
-    { printf "$byte"; cat "$f"; } >"$out/$name"
+    { printf "$byte"; cat "$f"; } >"${2:-$out}/$name"
 }
 while IFS= read -r -d '' f; do add "$f"; done < <(find "$root/crates/glsl/tests" "$root/examples" \( -name '*.vert' -o -name '*.frag' \) -print0)
 piglit="${PIGLIT_CACHE:-$root/.piglit}/root/usr/lib/x86_64-linux-gnu/piglit/tests/spec"
@@ -26,7 +29,7 @@ if [ -d "$piglit" ]; then
     # 400 per version folder that is present, in a fixed order.
     for v in glsl-1.10 glsl-1.20 glsl-1.30 glsl-1.40 glsl-1.50 glsl-3.30; do
         [ -d "$piglit/$v" ] || continue
-        while IFS= read -r -d '' f; do add "$f"; done < <(find "$piglit/$v" \( -name '*.vert' -o -name '*.frag' \) -print0 | sort -z | head -z -n 400)
+        while IFS= read -r -d '' f; do add "$f" "$piglit_out"; done < <(find "$piglit/$v" \( -name '*.vert' -o -name '*.frag' \) -print0 | sort -z | head -z -n 400)
     done
 fi
-echo "fuzz corpus: $(ls "$out" | wc -l) files in $out"
+echo "fuzz corpus: $(ls "$out" | wc -l) files in $out, $(ls "$piglit_out" | wc -l) in $piglit_out"
