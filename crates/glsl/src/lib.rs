@@ -29,7 +29,7 @@
 //!   `uint`/`uvec*` with the `u` suffix and the int/uint→float implicit
 //!   conversions, the integer operators (`%`, shifts, bitwise) and
 //!   `switch`. Their built-ins follow each version, profile and stage
-//!   ([`builtins`]), except the overloads on `uint` and the geometry
+//!   ([`builtins`]), except the lookups on `usampler*` and the geometry
 //!   stage's variables. The rest of those versions (their qualifiers and
 //!   blocks) is being added, and a construct not yet there is a compile
 //!   error.

@@ -32,14 +32,13 @@
 //! built-in of that language and stage. The text starts with the matching
 //! `#version` line and has no other preprocessor directive.
 //!
-//! Unsigned integers do not exist yet (`uint`, `uvec*`); the overloads that
-//! need them are not declared. Each is one line of [`FUNCTIONS`] once they
-//! do (`genUType`/`uvec` expand already): `genUType min(genUType,
-//! genUType)`, `uvec min(uvec, uint)` and the same for `max`, `clamp`
-//! (`uvec clamp(uvec, uint, uint)`), `bvec lessThan(uvec, uvec)` and the
-//! other five relational functions (1.30), `genUType
-//! floatBitsToUint(genType)` and `genType uintBitsToFloat(genUType)`
-//! (3.30); the lookups on `usampler*` are a `"u"` in [`G_PREFIXES`].
+//! The unsigned overloads are those the specs list and no more: `min`,
+//! `max` and `clamp` on `genUType` (with the `uvec, uint` forms), the six
+//! relational functions on `uvec` (1.30), `floatBitsToUint` and
+//! `uintBitsToFloat` (3.30). `abs` and `sign` have no unsigned form, and
+//! `mix` with a `bvec` selector takes `genType` only until GLSL 4.50 adds
+//! the integer and bool forms. The lookups on `usampler*` are still to
+//! come: a `"u"` in [`G_PREFIXES`].
 
 use crate::ir::Stage;
 use crate::lang::{Feature, Language, Version};
@@ -545,6 +544,15 @@ const FUNCTIONS: &[(Where, &str)] = &[
         "genIType clamp(genIType, genIType, genIType)",
     ),
     (Where::since(V130), "ivec clamp(ivec, int, int)"),
+    (Where::since(V130), "genUType min(genUType, genUType)"),
+    (Where::since(V130), "uvec min(uvec, uint)"),
+    (Where::since(V130), "genUType max(genUType, genUType)"),
+    (Where::since(V130), "uvec max(uvec, uint)"),
+    (
+        Where::since(V130),
+        "genUType clamp(genUType, genUType, genUType)",
+    ),
+    (Where::since(V130), "uvec clamp(uvec, uint, uint)"),
     (
         Where::since(V130),
         "genType mix(genType, genType, genBType)",
@@ -553,6 +561,8 @@ const FUNCTIONS: &[(Where, &str)] = &[
     (Where::since(V130), "genBType isinf(genType)"),
     (Where::since(V330), "genIType floatBitsToInt(genType)"),
     (Where::since(V330), "genType intBitsToFloat(genIType)"),
+    (Where::since(V330), "genUType floatBitsToUint(genType)"),
+    (Where::since(V330), "genType uintBitsToFloat(genUType)"),
     // §8.4 geometric functions
     (Where::ALL, "float length(genType)"),
     (Where::ALL, "float distance(genType, genType)"),
@@ -572,17 +582,23 @@ const FUNCTIONS: &[(Where, &str)] = &[
     // §8.6 vector relational functions
     (Where::ALL, "bvec lessThan(vec, vec)"),
     (Where::ALL, "bvec lessThan(ivec, ivec)"),
+    (Where::since(V130), "bvec lessThan(uvec, uvec)"),
     (Where::ALL, "bvec lessThanEqual(vec, vec)"),
     (Where::ALL, "bvec lessThanEqual(ivec, ivec)"),
+    (Where::since(V130), "bvec lessThanEqual(uvec, uvec)"),
     (Where::ALL, "bvec greaterThan(vec, vec)"),
     (Where::ALL, "bvec greaterThan(ivec, ivec)"),
+    (Where::since(V130), "bvec greaterThan(uvec, uvec)"),
     (Where::ALL, "bvec greaterThanEqual(vec, vec)"),
     (Where::ALL, "bvec greaterThanEqual(ivec, ivec)"),
+    (Where::since(V130), "bvec greaterThanEqual(uvec, uvec)"),
     (Where::ALL, "bvec equal(vec, vec)"),
     (Where::ALL, "bvec equal(ivec, ivec)"),
+    (Where::since(V130), "bvec equal(uvec, uvec)"),
     (Where::ALL, "bvec equal(bvec, bvec)"),
     (Where::ALL, "bvec notEqual(vec, vec)"),
     (Where::ALL, "bvec notEqual(ivec, ivec)"),
+    (Where::since(V130), "bvec notEqual(uvec, uvec)"),
     (Where::ALL, "bvec notEqual(bvec, bvec)"),
     (Where::ALL, "bool any(bvec)"),
     (Where::ALL, "bool all(bvec)"),
@@ -1435,7 +1451,68 @@ mod tests {
     }
 
     #[test]
-    fn unsigned_placeholders_expand_for_the_lines_uint_will_add() {
+    fn unsigned_overloads_by_version() {
+        use Stage::{Fragment, Vertex};
+        use Version::{V120, V130, V140, V150, V330};
+        let c = |v, s| super::prelude(Language::new(v, true), s);
+        let (v130, f130) = (c(V130, Vertex), c(V130, Fragment));
+        for line in [
+            "uint min(uint, uint);",
+            "uvec3 min(uvec3, uvec3);",
+            "uvec3 min(uvec3, uint);",
+            "uvec4 max(uvec4, uvec4);",
+            "uvec2 max(uvec2, uint);",
+            "uint clamp(uint, uint, uint);",
+            "uvec2 clamp(uvec2, uvec2, uvec2);",
+            "uvec4 clamp(uvec4, uint, uint);",
+            "bvec2 lessThan(uvec2, uvec2);",
+            "bvec3 lessThanEqual(uvec3, uvec3);",
+            "bvec4 greaterThan(uvec4, uvec4);",
+            "bvec2 greaterThanEqual(uvec2, uvec2);",
+            "bvec3 equal(uvec3, uvec3);",
+            "bvec4 notEqual(uvec4, uvec4);",
+        ] {
+            assert!(v130.contains(line) && f130.contains(line), "{line}");
+        }
+        // `uint min(uint, uint)` once: the `uvec, uint` form starts at 2.
+        assert_eq!(v130.matches("uint min(uint, uint);").count(), 1);
+        // No unsigned abs, sign or bool-selector mix before GLSL 4.50, and
+        // no relational function on scalars.
+        for absent in [
+            " abs(uint",
+            " sign(uint",
+            " abs(uvec",
+            " mix(uint",
+            " mix(uvec",
+            " lessThan(uint",
+        ] {
+            for v in [V130, V140, V150, V330] {
+                assert!(!c(v, Fragment).contains(absent), "{v:?} {absent}");
+            }
+        }
+        // The bit casts are 3.30's.
+        for v in [V130, V140, V150] {
+            assert!(!declares_fn(&c(v, Vertex), "floatBitsToUint"));
+            assert!(!declares_fn(&c(v, Vertex), "uintBitsToFloat"));
+        }
+        let v330 = super::prelude(core(V330), Vertex);
+        assert!(v330.contains("uint floatBitsToUint(float);"));
+        assert!(v330.contains("uvec3 floatBitsToUint(vec3);"));
+        assert!(v330.contains("float uintBitsToFloat(uint);"));
+        assert!(v330.contains("vec4 uintBitsToFloat(uvec4);"));
+        // Nothing unsigned before 1.30.
+        for (v, s) in ALL {
+            let text = prelude(v, s);
+            assert!(
+                !text.contains("uint") && !text.contains("uvec"),
+                "{v:?} {s:?}"
+            );
+        }
+        assert!(!has(V120, Vertex, "floatBitsToUint"));
+    }
+
+    #[test]
+    fn unsigned_placeholders_expand() {
         let mut out = String::new();
         expand(&mut out, "genUType min(genUType, genUType)", Version::V130);
         expand(&mut out, "bvec lessThan(uvec, uvec)", Version::V130);
