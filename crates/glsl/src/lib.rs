@@ -29,10 +29,10 @@
 //!   `uint`/`uvec*` with the `u` suffix and the int/uint→float implicit
 //!   conversions, the integer operators (`%`, shifts, bitwise) and
 //!   `switch`. Their built-ins follow each version, profile and stage
-//!   ([`builtins`]), except the lookups on `usampler*` and the geometry
-//!   stage's variables. The rest of those versions (their qualifiers and
-//!   blocks) is being added, and a construct not yet there is a compile
-//!   error.
+//!   ([`builtins`]), the overloads on `uint`/`uvec` and the `usampler*`
+//!   lookups included, except the geometry stage's variables. The rest
+//!   of those versions (their qualifiers and blocks) is being added, and
+//!   a construct not yet there is a compile error.
 //! - Integer operations the spec leaves undefined have the executor's
 //!   defined results when folded ([`consteval`]): shift amounts modulo 32,
 //!   `i32::MIN % -1` is 0; division and `%` by zero are not constant.

@@ -329,6 +329,11 @@ fn what_the_pipeline_cannot_run_is_refused_when_lowered() {
         ),
         (
             Stage::Fragment,
+            "#version 130\nuniform usampler2D s;\nvoid main() { gl_FragColor = vec4(texture(s, vec2(0.5))); }",
+            "usampler2D",
+        ),
+        (
+            Stage::Fragment,
             "#version 130\nuniform sampler2D s;\nvoid main() { gl_FragColor = vec4(textureSize(s, 0), 0.0, 1.0); }",
             "textureSize",
         ),

@@ -35,10 +35,11 @@
 //! The unsigned overloads are those the specs list and no more: `min`,
 //! `max` and `clamp` on `genUType` (with the `uvec, uint` forms), the six
 //! relational functions on `uvec` (1.30), `floatBitsToUint` and
-//! `uintBitsToFloat` (3.30). `abs` and `sign` have no unsigned form, and
-//! `mix` with a `bvec` selector takes `genType` only until GLSL 4.50 adds
-//! the integer and bool forms. The lookups on `usampler*` are still to
-//! come: a `"u"` in [`G_PREFIXES`].
+//! `uintBitsToFloat` (3.30), and every lookup on `usampler*` (a `"u"` in
+//! [`G_PREFIXES`]: the same rows as the float and int samplers, results
+//! `uvec4`, `textureSize` still `int`/`ivec`). `abs` and `sign` have no
+//! unsigned form, and `mix` with a `bvec` selector takes `genType` only
+//! until GLSL 4.50 adds the integer and bool forms.
 
 use crate::ir::Stage;
 use crate::lang::{Feature, Language, Version};
@@ -683,8 +684,7 @@ const LOD: Where = VS.until(V130);
 const LOD_130: Where = Where::since(V130);
 
 /// The lookups of GLSL 1.30 §8.7 (and 1.40, 1.50) on one sampler type.
-/// `g` rows stand for the float, int (and, once `uint` exists, unsigned)
-/// samplers alike (`gsampler2D`, result `gvec4`); shadow rows return one
+/// `g` rows stand for the float, int and unsigned samplers alike (`gsampler2D`, result `gvec4`); shadow rows return one
 /// `float`. A `None` column: no such lookup on that sampler.
 struct SamplerRow {
     /// The sampler's name without the `g`/`i`/`u` prefix.
@@ -863,10 +863,10 @@ const SAMPLERS: &[SamplerRow] = {
     ]
 };
 
-/// The prefixes a `g` row of [`SAMPLERS`] is declared with: float and
-/// signed-integer samplers. `u` (`usampler*`, results `uvec4`) joins once
-/// `uint` is a type.
-const G_PREFIXES: &[&str] = &["", "i"];
+/// The prefixes a `g` row of [`SAMPLERS`] is declared with: float,
+/// signed-integer and unsigned-integer samplers (results `vec4`, `ivec4`,
+/// `uvec4`).
+const G_PREFIXES: &[&str] = &["", "i", "u"];
 
 fn build(lang: Language, stage: Stage) -> String {
     let version = lang.version;
@@ -1337,8 +1337,7 @@ mod tests {
         assert!(!vs.contains("float texture(samplerCubeShadow, vec4, float);"));
         assert!(fs.contains("float texture(samplerCubeShadow, vec4, float);"));
         assert!(vs.contains("vec4 textureGradOffset(sampler2D, vec2, vec2, vec2, ivec2);"));
-        // No usampler lookups until `uint` exists, no 1.40 samplers in 1.30.
-        assert!(!vs.contains("usampler"));
+        // No 1.40 samplers in 1.30.
         assert!(!vs.contains("sampler2DRect"));
         // The Lod forms of 1.10 reach the fragment stage in 1.30.
         assert!(declares_fn(&fs, "texture2DLod") && !has(V120, Fragment, "texture2DLod"));
@@ -1509,6 +1508,58 @@ mod tests {
             );
         }
         assert!(!has(V120, Vertex, "floatBitsToUint"));
+    }
+
+    #[test]
+    fn usampler_lookups_are_the_isampler_ones_with_uvec4_results() {
+        use Stage::{Fragment, Vertex};
+        for v in [Version::V130, Version::V140, Version::V150, Version::V330] {
+            for s in [Vertex, Fragment] {
+                let text = super::prelude(Language::new(v, true), s);
+                let lines = |p: &str| -> Vec<String> {
+                    text.lines()
+                        .filter(|l| l.contains(&format!("({p}sampler")))
+                        .map(|l| l.replace(&format!("({p}sampler"), "(Xsampler"))
+                        .map(|l| l.replacen(&format!("{p}vec4 "), "Xvec4 ", 1))
+                        .collect()
+                };
+                let (i, u) = (lines("i"), lines("u"));
+                assert!(!u.is_empty());
+                assert_eq!(i, u, "{v:?} {s:?}");
+                // textureSize stays signed; everything else returns uvec4.
+                for l in text.lines().filter(|l| l.contains("(usampler")) {
+                    assert!(
+                        l.starts_with("uvec4 ") || l.contains(" textureSize("),
+                        "{l}"
+                    );
+                }
+            }
+        }
+        let f130 = super::prelude(Language::new(Version::V130, true), Fragment);
+        for line in [
+            "uvec4 texture(usampler2D, vec2, float);",
+            "uvec4 textureProj(usampler3D, vec4);",
+            "uvec4 textureLod(usamplerCube, vec3, float);",
+            "uvec4 textureOffset(usampler1DArray, vec2, int);",
+            "uvec4 texelFetch(usampler2DArray, ivec3, int);",
+            "uvec4 texelFetchOffset(usampler1D, int, int, int);",
+            "uvec4 textureProjGradOffset(usampler2D, vec4, vec2, vec2, ivec2);",
+            "int textureSize(usampler1D, int);",
+            "ivec3 textureSize(usampler2DArray, int);",
+        ] {
+            assert!(f130.contains(line), "{line}");
+        }
+        assert!(!f130.contains("usampler2DRect") && !f130.contains("usampler2DMS"));
+        let f150 = super::prelude(core(Version::V150), Fragment);
+        for line in [
+            "uvec4 texture(usampler2DRect, vec2);",
+            "uvec4 texelFetch(usamplerBuffer, int);",
+            "ivec2 textureSize(usampler2DRect);",
+            "uvec4 texelFetch(usampler2DMSArray, ivec3, int);",
+            "ivec3 textureSize(usampler2DMSArray);",
+        ] {
+            assert!(f150.contains(line), "{line}");
+        }
     }
 
     #[test]

@@ -124,7 +124,8 @@ void main() {
 fn unsigned_builtins_type_check_and_fold() {
     let s = frag(
         "#version 330
-uniform uvec4 t;
+uniform usampler2D us;
+uniform usampler2DArray ua;
 const uvec2 m = min(uvec2(0x80000000u, 3u), 1u) + max(uvec2(1u), uvec2(0xfffffff0u, 0u));
 const uint c = clamp(5u, 9u, 4u);
 const bvec2 lt = lessThan(uvec2(0x80000000u, 1u), uvec2(1u, 2u));
@@ -132,8 +133,10 @@ const uint bits = floatBitsToUint(1.0);
 const float one = uintBitsToFloat(0x3f800000u);
 const float denormal = uintBitsToFloat(1u);
 void main() {
+    uvec4 t = texture(us, vec2(0.5)) + texelFetch(ua, ivec3(0), 0) + textureLod(us, vec2(0.0), 1.0);
+    ivec2 size = textureSize(us, 0);
     bvec3 e = equal(uvec3(t.xyz), uvec3(1u));
-    gl_FragColor = vec4(t) + vec4(e, 1.0);
+    gl_FragColor = vec4(t) + vec4(size, 0.0, 0.0) + vec4(e, 1.0);
 }
 ",
     );
