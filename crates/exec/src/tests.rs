@@ -1003,6 +1003,29 @@ fn debug_printf_prints_per_lane_in_execution_order() {
     assert!(t.0[1].starts_with("x=1.5 i=1"));
 }
 
+#[test]
+fn debug_printf_prints_uints_unsigned() {
+    let k = kernel(
+        Stage::Fragment,
+        "#version 130
+        #extension GL_SHADERBOX_debug_printf : enable
+        uniform uint u;
+        void main() {
+            if (gl_FragCoord.x < 1.0)
+                debugPrintfEXT(\"%u %#x %v2u %d\\n\", u, u, uvec2(u, 7u), int(u));
+            gl_FragColor = vec4(1.0);
+        }",
+    );
+    let u = uniforms(&k, &[("u", &[0xffff_fffe])]);
+    let mut out = Printed::default();
+    let mut b = frag_batch(&k);
+    k.run_printing(&mut b, &u, &NoTextures, &mut out).unwrap();
+    assert_eq!(
+        out.0,
+        vec![(0, "4294967294 0xfffffffe 4294967294, 7 -2\n".to_string())]
+    );
+}
+
 /// Every program of the shader library compiles to native code (a kernel
 /// the JIT declines runs interpreted, slower, with no other sign).
 #[test]

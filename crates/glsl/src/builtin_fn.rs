@@ -70,6 +70,8 @@ builtin_fns! {
     IsInf = "isinf";
     FloatBitsToInt = "floatBitsToInt";
     IntBitsToFloat = "intBitsToFloat";
+    FloatBitsToUint = "floatBitsToUint";
+    UintBitsToFloat = "uintBitsToFloat";
     // §8.4 geometric
     Length = "length";
     Distance = "distance";

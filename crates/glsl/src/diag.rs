@@ -322,12 +322,17 @@ pub fn suggestible(name: &str) -> bool {
     name.len() <= crate::limits::MAX_SUGGESTED_NAME_LEN
 }
 
-/// `word` with its indefinite article: "an int", "a vec3".
+/// `word` with its indefinite article: "an int", "a vec3", "a uint".
 pub fn with_article(word: &str) -> String {
-    let vowel = word
-        .chars()
-        .next()
-        .is_some_and(|c| matches!(c.to_ascii_lowercase(), 'a' | 'e' | 'i' | 'o' | 'u'));
+    // `uint', `uvec3', `usampler2D' are said with a "you" sound: "a uint".
+    let you = ["uint", "uvec", "usampler"]
+        .iter()
+        .any(|p| word.starts_with(p));
+    let vowel = !you
+        && word
+            .chars()
+            .next()
+            .is_some_and(|c| matches!(c.to_ascii_lowercase(), 'a' | 'e' | 'i' | 'o' | 'u'));
     format!("{} {word}", if vowel { "an" } else { "a" })
 }
 

@@ -30,9 +30,10 @@
 //!   conversions, the integer operators (`%`, shifts, bitwise), `switch`,
 //!   storage, interpolation, precision and layout qualifiers, uniform and
 //!   input/output blocks. Their built-ins follow each version, profile and
-//!   stage ([`builtins`]), except the overloads on `uint` and the geometry
-//!   stage's variables. Geometry-shader layouts are parsed and rejected (no
-//!   geometry stage yet); `gl_PerVertex` cannot be redeclared yet.
+//!   stage ([`builtins`]), the overloads on `uint`/`uvec` and the
+//!   `usampler*` lookups included, except the geometry stage's variables.
+//!   Geometry-shader layouts are parsed and rejected (no geometry stage
+//!   yet); `gl_PerVertex` cannot be redeclared yet.
 //! - Integer operations the spec leaves undefined have the executor's
 //!   defined results when folded ([`consteval`]): shift amounts modulo 32,
 //!   `i32::MIN % -1` is 0; division and `%` by zero are not constant.

@@ -8,7 +8,7 @@
 //! | conversion | argument |
 //! |---|---|
 //! | `%d` `%i` | `int` (a `bool` prints as 0 or 1) |
-//! | `%u` `%x` `%X` `%o` | `int`, printed as its 32-bit pattern |
+//! | `%u` `%x` `%X` `%o` | `uint`, or an `int` or `bool` printed as its 32-bit pattern |
 //! | `%f` `%F` `%e` `%E` `%g` `%G` `%a` `%A` | `float` |
 //! | `%vNc` (N = 2, 3, 4; c one of the above) | a vector of N components, printed `x, y, z` |
 //! | `%%` | a literal `%` |
@@ -17,6 +17,10 @@
 //! before the conversion as in C. Escapes in the string: `\n`, `\t`, `\\`,
 //! `\"`. Formatting is done by [`format_values`], in Rust, so the text is the
 //! same on every machine.
+//!
+//! A `uint` given to `%d`/`%i` is an error rather than a signed reading of
+//! its bits (4294967295u would print as -1): `%u` prints it. The unsigned
+//! conversions keep taking `int`s, which are all GLSL 1.10 and 1.20 have.
 
 use crate::types::{Base, Scalar, Type};
 
@@ -52,17 +56,22 @@ impl Conversion {
         matches!(self.kind, 'f' | 'F' | 'e' | 'E' | 'g' | 'G' | 'a' | 'A')
     }
 
+    /// Whether the conversion prints the bits as unsigned (`%u`, `%x`,
+    /// `%X`, `%o`): it takes `uint`s as well as `int`s.
+    pub fn is_unsigned(&self) -> bool {
+        matches!(self.kind, 'u' | 'x' | 'X' | 'o')
+    }
+
     /// The GLSL type an argument must have, spelled for a message.
     pub fn expected(&self) -> String {
-        let (scalar, vec) = if self.is_float() {
-            ("float", "vec")
-        } else {
-            ("int", "ivec")
-        };
-        if self.components == 1 {
-            scalar.to_string()
-        } else {
-            format!("{vec}{}", self.components)
+        let n = self.components;
+        match (self.is_float(), self.is_unsigned(), n) {
+            (true, _, 1) => "float".to_string(),
+            (true, _, _) => format!("vec{n}"),
+            (false, true, 1) => "uint or int".to_string(),
+            (false, true, _) => format!("uvec{n} or ivec{n}"),
+            (false, false, 1) => "int".to_string(),
+            (false, false, _) => format!("ivec{n}"),
         }
     }
 
@@ -81,6 +90,8 @@ impl Conversion {
         }
         if self.is_float() {
             scalar == Scalar::Float
+        } else if self.is_unsigned() {
+            matches!(scalar, Scalar::Uint | Scalar::Int | Scalar::Bool)
         } else {
             matches!(scalar, Scalar::Int | Scalar::Bool)
         }
@@ -158,8 +169,8 @@ pub fn parse(text: &str) -> Result<Vec<Piece>, String> {
                     ) => k,
                     Some(k) => {
                         return Err(format!(
-                            "unsupported conversion `%{k}' (use %d %i %u %x %o for int, \
-                             %f %e %g %a for float, %v3f for a vec3, %% for a percent sign)"
+                            "unsupported conversion `%{k}' (use %d %i for int, %u %x %o for uint \
+                             or int, %f %e %g %a for float, %v3f for a vec3, %% for a percent sign)"
                         ))
                     }
                     None => return Err("the format ends inside a `%' conversion".into()),
@@ -202,8 +213,8 @@ pub fn conversions(pieces: &[Piece]) -> impl Iterator<Item = &Conversion> {
 }
 
 /// Formats `values`: for each conversion in order, its components' raw
-/// bits (floats as `f32` bits, ints as `i32` bits). Missing values print
-/// as 0.
+/// bits (floats as `f32` bits, ints as `i32` bits, uints as they are).
+/// Missing values print as 0.
 pub fn format_values(pieces: &[Piece], values: &[u32]) -> String {
     let mut out = String::new();
     let mut next = values.iter().copied();
@@ -458,5 +469,27 @@ mod tests {
         assert!(c[1].accepts(Type::new(Base::Vector(Scalar::Float, 3))));
         assert!(!c[1].accepts(Type::new(Base::Vector(Scalar::Float, 4))));
         assert_eq!(c[1].expected(), "vec3");
+    }
+
+    #[test]
+    fn unsigned_conversions_take_uints_and_signed_ones_do_not() {
+        let uvec3 = Type::new(Base::Vector(Scalar::Uint, 3));
+        let p = parse("%d %i %u %x %X %o %v3u %v3d").unwrap();
+        let c: Vec<_> = conversions(&p).copied().collect();
+        for signed in &c[..2] {
+            assert!(!signed.accepts(Type::UINT) && signed.accepts(Type::INT));
+            assert_eq!(signed.expected(), "int");
+        }
+        for unsigned in &c[2..6] {
+            assert!(unsigned.accepts(Type::UINT) && unsigned.accepts(Type::INT));
+            assert!(unsigned.accepts(Type::BOOL) && !unsigned.accepts(Type::FLOAT));
+            assert_eq!(unsigned.expected(), "uint or int");
+        }
+        assert!(c[6].accepts(uvec3) && c[6].expected() == "uvec3 or ivec3");
+        assert!(!c[7].accepts(uvec3));
+        assert_eq!(
+            fmt("%u %v2u", &[u32::MAX, 0x8000_0000, 7]),
+            "4294967295 2147483648, 7"
+        );
     }
 }

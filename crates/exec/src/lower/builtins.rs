@@ -3,8 +3,10 @@
 //! into ops (`dot`, `length`, `normalize`, `reflect`, `refract`...), matrix
 //! and vector-relational functions, derivatives, noise, `ftransform`; the
 //! integer and bool-selector overloads of GLSL 1.30 as compares and
-//! selects; `determinant`/`inverse` through `glsl::math::matrix`, the
-//! formulas constant folding uses.
+//! selects (signed for `int`, unsigned for `uint`, as folding compares);
+//! the bit casts of GLSL 3.30 as copies (a float from bits is flushed, as
+//! every float entering a run is); `determinant`/`inverse` through
+//! `glsl::math::matrix`, the formulas constant folding uses.
 
 use super::textures::is_texture;
 use super::{kind_of, unsupported, Lowerer, Val, R};
@@ -86,29 +88,33 @@ impl<'m> Lowerer<'m> {
         })
     }
 
-    /// `b < a` (ints) component-wise.
-    fn ilt(&mut self, a: &Val, b: &Val) -> R<Val> {
-        self.map(&[a, b], |d, x| Op::ILt {
-            d,
-            a: x[0],
-            b: x[1],
+    /// `a < b` component-wise: unsigned for `uint`s, signed for `int`s.
+    fn ilt(&mut self, a: &Val, b: &Val, unsigned: bool) -> R<Val> {
+        self.map(&[a, b], |d, x| {
+            let (a, b) = (x[0], x[1]);
+            if unsigned {
+                Op::ULt { d, a, b }
+            } else {
+                Op::ILt { d, a, b }
+            }
         })
     }
 
-    /// `min` of ints: `b < a ? b : a` (GLSL 1.30 §8.3).
-    fn imin(&mut self, a: &Val, b: &Val) -> R<Val> {
-        let c = self.ilt(b, a)?;
+    /// `min` of integers: `b < a ? b : a` (GLSL 1.30 §8.3).
+    fn imin(&mut self, a: &Val, b: &Val, unsigned: bool) -> R<Val> {
+        let c = self.ilt(b, a, unsigned)?;
         self.select(&c, b, a)
     }
 
-    /// `max` of ints: `a < b ? b : a`.
-    fn imax(&mut self, a: &Val, b: &Val) -> R<Val> {
-        let c = self.ilt(a, b)?;
+    /// `max` of integers: `a < b ? b : a`.
+    fn imax(&mut self, a: &Val, b: &Val, unsigned: bool) -> R<Val> {
+        let c = self.ilt(a, b, unsigned)?;
         self.select(&c, b, a)
     }
 
-    /// The integer overloads of `abs`, `sign`, `min`, `max`, `clamp`.
-    fn int_builtin(&mut self, f: BuiltinFn, v: &[Val]) -> R<Val> {
+    /// The integer overloads of `abs`, `sign` (`int` only), `min`, `max`,
+    /// `clamp` (`int` and `uint`, `unsigned` telling which).
+    fn int_builtin(&mut self, f: BuiltinFn, v: &[Val], unsigned: bool) -> R<Val> {
         use BuiltinFn as B;
         let arg = |i: usize| -> R<&Val> {
             match v.get(i) {
@@ -118,25 +124,29 @@ impl<'m> Lowerer<'m> {
         };
         let zero = vec![self.iconst(0)?];
         match f {
+            // GLSL has no unsigned abs or sign: the analyzer never picks one.
+            B::Abs | B::Sign if unsigned => {
+                unsupported(format!("unsigned {} is not a built-in", f.name()))
+            }
             B::Abs => {
                 let x = arg(0)?.clone();
                 let neg = self.map(&[&x], |d, a| Op::INeg { d, a: a[0] })?;
-                let c = self.ilt(&x, &zero)?;
+                let c = self.ilt(&x, &zero, false)?;
                 self.select(&c, &neg, &x)
             }
             B::Sign => {
                 let x = arg(0)?.clone();
                 let (one, minus) = (vec![self.iconst(1)?], vec![self.iconst(-1)?]);
-                let pos = self.ilt(&zero, &x)?;
-                let neg = self.ilt(&x, &zero)?;
+                let pos = self.ilt(&zero, &x, false)?;
+                let neg = self.ilt(&x, &zero, false)?;
                 let low = self.select(&neg, &minus, &zero)?;
                 self.select(&pos, &one, &low)
             }
-            B::Min => self.imin(arg(0)?, arg(1)?),
-            B::Max => self.imax(arg(0)?, arg(1)?),
+            B::Min => self.imin(arg(0)?, arg(1)?, unsigned),
+            B::Max => self.imax(arg(0)?, arg(1)?, unsigned),
             B::Clamp => {
-                let m = self.imax(arg(0)?, arg(1)?)?;
-                self.imin(&m, arg(2)?)
+                let m = self.imax(arg(0)?, arg(1)?, unsigned)?;
+                self.imin(&m, arg(2)?, unsigned)
             }
             _ => unsupported(format!("integer {} is not implemented", f.name())),
         }
@@ -259,10 +269,11 @@ impl<'m> Lowerer<'m> {
         }
         let refs: Vec<&Expr> = args.iter().collect();
         let v = self.operands(&refs)?;
+        let first_kind = args.first().map(|a| kind_of(a.ty));
         let int_form = matches!(f, B::Abs | B::Sign | B::Min | B::Max | B::Clamp)
-            && args.first().is_some_and(|a| kind_of(a.ty) == Scalar::Int);
+            && matches!(first_kind, Some(Scalar::Int | Scalar::Uint));
         if int_form {
-            return self.int_builtin(f, &v);
+            return self.int_builtin(f, &v, first_kind == Some(Scalar::Uint));
         }
         let arg = |i: usize| -> R<&Val> {
             match v.get(i) {
@@ -312,11 +323,13 @@ impl<'m> Lowerer<'m> {
                     b: v[1],
                 })
             }
-            B::FloatBitsToInt => {
+            // Registers hold bits: the float's bits are the int's (or
+            // uint's), and back, flushed as folding flushes.
+            B::FloatBitsToInt | B::FloatBitsToUint => {
                 let x = arg(0)?.clone();
                 self.copy(&x)
             }
-            B::IntBitsToFloat => self.map1(arg(0)?, F1::FlushBits),
+            B::IntBitsToFloat | B::UintBitsToFloat => self.map1(arg(0)?, F1::FlushBits),
             // mix(x, y, bvec a): y where a is true.
             B::Mix if args.get(2).is_some_and(|a| kind_of(a.ty) == Scalar::Bool) => {
                 let (x, y, a) = (arg(0)?.clone(), arg(1)?.clone(), arg(2)?.clone());

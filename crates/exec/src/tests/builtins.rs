@@ -1,8 +1,11 @@
 //! Every overload of every built-in function that constant folding can
 //! evaluate, run by the kernel on uniform arguments and compared bit for
-//! bit with `glsl::builtins::eval_builtin` (the constant-folding oracle).
+//! bit with `glsl::builtins::eval_builtin` (the constant-folding oracle),
+//! on every path: the reference interpreter, each supported interpreter
+//! level and native code.
 
 use super::{kernel, uniforms};
+use crate::variant::supported_variants;
 use crate::{Batch, NoTextures, LANES};
 use glsl::builtins::{eval_builtin, prelude, BuiltinFn};
 use glsl::ir::{ConstScalar, ConstValue, Stage};
@@ -15,9 +18,11 @@ fn parse_type(name: &str) -> Option<Type> {
     Some(match name {
         "float" => Type::FLOAT,
         "int" => Type::INT,
+        "uint" => Type::UINT,
         "bool" => Type::BOOL,
         _ if name.starts_with("vec") => Type::vec(Scalar::Float, digit(&name[3..])?),
         _ if name.starts_with("ivec") => Type::vec(Scalar::Int, digit(&name[4..])?),
+        _ if name.starts_with("uvec") => Type::vec(Scalar::Uint, digit(&name[4..])?),
         _ if name.starts_with("bvec") => Type::vec(Scalar::Bool, digit(&name[4..])?),
         _ if name.starts_with("mat") => {
             let rest = &name[3..];
@@ -82,6 +87,18 @@ const FLOATS: [f32; 16] = [
     2.5,
 ];
 const INTS: [i32; 6] = [-3, -1, 0, 1, 2, 5];
+/// Small values, values past `i32::MAX` (where signed and unsigned
+/// compares differ), and as float bits: 1.5, a subnormal, -0.0, NaNs.
+const UINTS: [u32; 8] = [
+    0,
+    1,
+    7,
+    0x3fc0_0000,
+    0x7fff_ffff,
+    0x8000_0000,
+    0x8000_0001,
+    0xffff_ffff,
+];
 
 fn value(ty: Type, round: u32, arg: u32) -> ConstValue {
     let n = ty.component_count().unwrap_or(1);
@@ -94,6 +111,7 @@ fn value(ty: Type, round: u32, arg: u32) -> ConstValue {
                 >> 3;
             match ty.scalar() {
                 Some(Scalar::Int) => ConstScalar::Int(INTS[h as usize % INTS.len()]),
+                Some(Scalar::Uint) => ConstScalar::Uint(UINTS[h as usize % UINTS.len()]),
                 Some(Scalar::Bool) => ConstScalar::Bool(h % 2 == 1),
                 _ => ConstScalar::Float(FLOATS[h as usize % FLOATS.len()]),
             }
@@ -111,12 +129,15 @@ fn bits(c: &ConstScalar) -> u32 {
     }
 }
 
-fn as_float(c: &ConstScalar) -> f32 {
+/// What the test shader writes for a result component: floats as they
+/// are, bools as 0.0/1.0, and integers in two halves (the bits above and
+/// below bit 16, each exact as a float) so that every bit is compared.
+fn as_floats(c: &ConstScalar) -> [f32; 2] {
     match c {
-        ConstScalar::Float(f) => *f,
-        ConstScalar::Int(i) => *i as f32,
-        ConstScalar::Uint(u) => *u as f32,
-        ConstScalar::Bool(b) => *b as u8 as f32,
+        ConstScalar::Float(f) => [*f, 0.0],
+        ConstScalar::Int(i) => [(*i >> 16) as f32, (*i & 0xffff) as f32],
+        ConstScalar::Uint(u) => [(*u >> 16) as f32, (*u & 0xffff) as f32],
+        ConstScalar::Bool(b) => [*b as u8 as f32, 0.0],
     }
 }
 
@@ -169,12 +190,23 @@ fn every_overload_matches_constant_folding() {
             .map(|(i, t)| format!("uniform {} a{i};\n", tname(*t)))
             .collect();
         let call_args: Vec<String> = (0..params.len()).map(|i| format!("a{i}")).collect();
+        let call = format!("{name}({})", call_args.join(", "));
+        let o = tname(out_ty);
+        // Integer results (GLSL 1.30 on) in two halves: o the high bits
+        // (arithmetic shift for ints), lo the low 16.
+        let body = match ret.scalar() {
+            Some(s @ (Scalar::Int | Scalar::Uint)) => {
+                let u = if s == Scalar::Uint { "u" } else { "" };
+                format!(
+                    "{} r = {call}; o = {o}(r >> 16{u}); lo = {o}(r & 65535{u});",
+                    tname(ret)
+                )
+            }
+            _ => format!("o = {o}({call}); lo = {o}(0.0);"),
+        };
         let src = format!(
-            "#version {version}\n{decls}varying {} o;\nvoid main() {{ gl_Position = vec4(0.0); o = {}({}({})); }}",
-            tname(out_ty),
-            tname(out_ty),
-            name,
-            call_args.join(", ")
+            "#version {version}\n{decls}varying {o} o;\nvarying {o} lo;\n\
+             void main() {{ gl_Position = vec4(0.0); {body} }}"
         );
         let k = kernel(Stage::Vertex, &src);
         for round in 0..12 {
@@ -198,23 +230,38 @@ fn every_overload_matches_constant_folding() {
                 .zip(words.iter().map(|w| w.as_slice()))
                 .collect();
             let u = uniforms(&k, &unis);
+            let mut runs = vec![("run", Batch::for_kernel(&k, 0xffff))];
+            k.run(&mut runs[0].1, &u, &NoTextures).expect("runs");
             let mut b = Batch::for_kernel(&k, 0xffff);
-            k.run(&mut b, &u, &NoTextures).expect("runs");
-            let slot = k.interface().output("o").expect("o");
-            for (i, c) in want.components.iter().enumerate() {
-                let w = as_float(c);
-                for lane in [0, LANES - 1] {
-                    let g = b.outputs[slot.offset + i][lane];
-                    assert!(
-                        g.to_bits() == w.to_bits() || (g.is_nan() && w.is_nan()),
-                        "{name}({}) component {i}: kernel {g} ({:#x}), folding {w} ({:#x})",
-                        args.iter()
-                            .map(|a| format!("{:?}", a.components))
-                            .collect::<Vec<_>>()
-                            .join(", "),
-                        g.to_bits(),
-                        w.to_bits()
-                    );
+            k.run_reference(&mut b, &u, &NoTextures).expect("runs");
+            runs.push(("reference", b));
+            for v in supported_variants() {
+                let mut b = Batch::for_kernel(&k, 0xffff);
+                k.run_variant(v, &mut b, &u, &NoTextures).expect("runs");
+                runs.push((v.name(), b));
+            }
+            let slots = [
+                k.interface().output("o").expect("o").offset,
+                k.interface().output("lo").expect("lo").offset,
+            ];
+            for (path, b) in &runs {
+                for (i, c) in want.components.iter().enumerate() {
+                    for (&slot, w) in slots.iter().zip(as_floats(c)) {
+                        for lane in [0, LANES - 1] {
+                            let g = b.outputs[slot + i][lane];
+                            assert!(
+                                g.to_bits() == w.to_bits() || (g.is_nan() && w.is_nan()),
+                                "{name}({}) component {i} ({path}): kernel {g} ({:#x}), \
+                                 folding {w} ({:#x})",
+                                args.iter()
+                                    .map(|a| format!("{:?}", a.components))
+                                    .collect::<Vec<_>>()
+                                    .join(", "),
+                                g.to_bits(),
+                                w.to_bits()
+                            );
+                        }
+                    }
                 }
             }
             checked += 1;
@@ -279,6 +326,11 @@ fn what_the_pipeline_cannot_run_is_refused_when_lowered() {
             Stage::Fragment,
             "#version 130\nuniform isampler2D s;\nvoid main() { gl_FragColor = vec4(texture(s, vec2(0.5))); }",
             "isampler2D",
+        ),
+        (
+            Stage::Fragment,
+            "#version 130\nuniform usampler2D s;\nvoid main() { gl_FragColor = vec4(texture(s, vec2(0.5))); }",
+            "usampler2D",
         ),
         (
             Stage::Fragment,

@@ -15,6 +15,17 @@
 //! [`crate::math`]. Results the spec leaves undefined (`log(-1)`,
 //! `clamp` with `minVal > maxVal`, `smoothstep` with equal edges) are
 //! whatever those formulas give (NaN, ±inf), repeatably.
+//!
+//! The integer overloads of GLSL 1.30 compare as their type does: `min`,
+//! `max`, `clamp` and the relational functions on `uint`/`uvec` are
+//! unsigned (`min(0x80000000u, 1u)` is `1u`), on `int`/`ivec` signed.
+//! `floatBitsToInt`/`floatBitsToUint` and `intBitsToFloat`/
+//! `uintBitsToFloat` keep the bits (GLSL 3.30 §8.3), but a float is never
+//! subnormal here or in the executor: a subnormal pattern gives the zero
+//! of its sign (`uintBitsToFloat(1u)` is `0.0`,
+//! `uintBitsToFloat(0x80000001u)` is `-0.0`), as every float result is
+//! flushed, and NaN patterns keep their bits in folding (the spec leaves
+//! the value of an inf or NaN pattern unspecified).
 
 use crate::builtins::BuiltinFn;
 use crate::ir::{ConstScalar, ConstValue};
@@ -92,6 +103,26 @@ fn eval(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<Vec<ConstScal
                     .collect(),
             )
         }
+        FloatBitsToUint => {
+            let [x] = args else { return None };
+            Some(
+                floats(x)?
+                    .iter()
+                    .map(|f| ConstScalar::Uint(f.to_bits()))
+                    .collect(),
+            )
+        }
+        // Flushed with every other float result by `eval_builtin`.
+        UintBitsToFloat => {
+            let [x] = args else { return None };
+            Some(
+                uints(x)?
+                    .iter()
+                    .map(|&u| ConstScalar::Float(f32::from_bits(u)))
+                    .collect(),
+            )
+        }
+        Min | Max | Clamp if is_uint_call(args) => uint_call(f, args),
         Abs | Sign | Min | Max | Clamp | Mix if is_int_or_bool_call(f, args) => int_call(f, args),
         Pow => binary(args, math::pow),
         Exp => unary(args, math::exp),
@@ -145,10 +176,10 @@ fn eval(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<Vec<ConstScal
                 math::matrix::inverse(&mut F32Arith, &floats(m)?, n)?.ok()?,
             ))
         }
-        LessThan => compare(args, |a, b| a < b, |a, b| a < b),
-        LessThanEqual => compare(args, |a, b| a <= b, |a, b| a <= b),
-        GreaterThan => compare(args, |a, b| a > b, |a, b| a > b),
-        GreaterThanEqual => compare(args, |a, b| a >= b, |a, b| a >= b),
+        LessThan => compare(args, |a, b| a < b, |a, b| a < b, |a, b| a < b),
+        LessThanEqual => compare(args, |a, b| a <= b, |a, b| a <= b, |a, b| a <= b),
+        GreaterThan => compare(args, |a, b| a > b, |a, b| a > b, |a, b| a > b),
+        GreaterThanEqual => compare(args, |a, b| a >= b, |a, b| a >= b, |a, b| a >= b),
         Equal => equality(args, true),
         NotEqual => equality(args, false),
         Any => reduce_bools(args, |b| b.iter().any(|&x| x)),
@@ -242,6 +273,33 @@ fn is_int_or_bool_call(f: BuiltinFn, args: &[ConstValue]) -> bool {
     }
 }
 
+/// The unsigned forms of `min`, `max` and `clamp` (GLSL 1.30 §8.3).
+fn is_uint_call(args: &[ConstValue]) -> bool {
+    args.first().and_then(|a| a.ty.scalar()) == Some(crate::types::Scalar::Uint)
+}
+
+/// `min`, `max`, `clamp` on `uint`s, compared unsigned, a scalar argument
+/// standing for every component (`uvec min(uvec, uint)`).
+fn uint_call(f: BuiltinFn, args: &[ConstValue]) -> Option<Vec<ConstScalar>> {
+    let vals = args.iter().map(uints).collect::<Option<Vec<_>>>()?;
+    let n = vals.iter().map(Vec::len).max()?;
+    if vals.iter().any(|v| v.len() != n && v.len() != 1) {
+        return None;
+    }
+    let at = |k: usize, i: usize| vals[k][if vals[k].len() == 1 { 0 } else { i }];
+    let one = |i: usize| -> Option<u32> {
+        Some(match (f, vals.len()) {
+            (BuiltinFn::Min, 2) => at(0, i).min(at(1, i)),
+            (BuiltinFn::Max, 2) => at(0, i).max(at(1, i)),
+            // min(max(x, lo), hi), whatever the order of lo and hi, as
+            // the signed form.
+            (BuiltinFn::Clamp, 3) => at(0, i).max(at(1, i)).min(at(2, i)),
+            _ => return None,
+        })
+    };
+    (0..n).map(|i| one(i).map(ConstScalar::Uint)).collect()
+}
+
 fn int_call(f: BuiltinFn, args: &[ConstValue]) -> Option<Vec<ConstScalar>> {
     if f == BuiltinFn::Mix {
         // mix(x, y, a): y where a is true, else x.
@@ -296,6 +354,16 @@ fn ints(v: &ConstValue) -> Option<Vec<i32>> {
         .iter()
         .map(|c| match c {
             ConstScalar::Int(i) => Some(*i),
+            _ => None,
+        })
+        .collect()
+}
+
+fn uints(v: &ConstValue) -> Option<Vec<u32>> {
+    v.components
+        .iter()
+        .map(|c| match c {
+            ConstScalar::Uint(u) => Some(*u),
             _ => None,
         })
         .collect()
@@ -451,11 +519,13 @@ fn transpose(args: &[ConstValue]) -> Option<Vec<ConstScalar>> {
     ))
 }
 
-/// Component-wise ordering of two `vec`s or two `ivec`s (§8.6).
+/// Component-wise ordering of two `vec`s, `ivec`s or `uvec`s (§8.6),
+/// each compared as its type (`uvec`s unsigned).
 fn compare(
     args: &[ConstValue],
     on_floats: fn(f32, f32) -> bool,
     on_ints: fn(i32, i32) -> bool,
+    on_uints: fn(u32, u32) -> bool,
 ) -> Option<Vec<ConstScalar>> {
     let [x, y] = args else { return None };
     if x.ty != y.ty || !x.ty.is_vector() {
@@ -463,6 +533,8 @@ fn compare(
     }
     let out: Vec<bool> = if let (Some(a), Some(b)) = (floats(x), floats(y)) {
         a.iter().zip(&b).map(|(&p, &q)| on_floats(p, q)).collect()
+    } else if let (Some(a), Some(b)) = (uints(x), uints(y)) {
+        a.iter().zip(&b).map(|(&p, &q)| on_uints(p, q)).collect()
     } else {
         let (a, b) = (ints(x)?, ints(y)?);
         a.iter().zip(&b).map(|(&p, &q)| on_ints(p, q)).collect()
@@ -515,6 +587,21 @@ mod tests {
             ty: Type::vec(Scalar::Int, v.len() as u8),
             components: v.iter().map(|&i| ConstScalar::Int(i)).collect(),
         }
+    }
+
+    fn uvec(v: &[u32]) -> ConstValue {
+        ConstValue {
+            ty: Type::vec(Scalar::Uint, v.len() as u8),
+            components: v.iter().map(|&u| ConstScalar::Uint(u)).collect(),
+        }
+    }
+
+    fn uints_of(v: Option<ConstValue>) -> Vec<u32> {
+        uints(&v.expect("folds")).expect("uints")
+    }
+
+    fn bools_of(v: Option<ConstValue>) -> Vec<bool> {
+        bools(&v.expect("folds")).expect("bools")
     }
 
     fn floats_of(v: Option<ConstValue>) -> Vec<f32> {
@@ -697,6 +784,95 @@ mod tests {
         assert_eq!(floats_of(sub), vec![0.0]);
         assert_eq!(
             eval_builtin(BuiltinFn::Modf, &[vec(&[1.5]), vec(&[0.0])], Type::FLOAT),
+            None
+        );
+    }
+
+    #[test]
+    fn unsigned_min_max_clamp_compare_unsigned() {
+        let u2 = Type::vec(Scalar::Uint, 2);
+        let big = 0x8000_0000;
+        let min = eval_builtin(BuiltinFn::Min, &[uvec(&[big, 3]), uvec(&[1, u32::MAX])], u2);
+        assert_eq!(uints_of(min), vec![1, 3]);
+        let max = eval_builtin(BuiltinFn::Max, &[uvec(&[big, 3]), uvec(&[1])], u2);
+        assert_eq!(uints_of(max), vec![big, 3]);
+        let c = eval_builtin(
+            BuiltinFn::Clamp,
+            &[uvec(&[u32::MAX, 0]), uvec(&[2]), uvec(&[big])],
+            u2,
+        );
+        assert_eq!(uints_of(c), vec![big, 2]);
+        // Scalar forms, and lo > hi giving hi as for ints.
+        let c = eval_builtin(
+            BuiltinFn::Clamp,
+            &[uvec(&[5]), uvec(&[9]), uvec(&[4])],
+            Type::UINT,
+        );
+        assert_eq!(uints_of(c), vec![4]);
+        // No unsigned abs or sign: not an overload, not folded.
+        assert_eq!(
+            eval_builtin(BuiltinFn::Abs, &[uvec(&[1])], Type::UINT),
+            None
+        );
+        // Mixed signedness is no overload either.
+        assert_eq!(
+            eval_builtin(BuiltinFn::Min, &[uvec(&[1, 2]), ivec(&[1])], u2),
+            None
+        );
+    }
+
+    #[test]
+    fn unsigned_relational_functions() {
+        let b3 = Type::vec(Scalar::Bool, 3);
+        let x = uvec(&[0x8000_0000, 1, 7]);
+        let y = uvec(&[1, 0xffff_ffff, 7]);
+        let r = |f| bools_of(eval_builtin(f, &[x.clone(), y.clone()], b3));
+        assert_eq!(r(BuiltinFn::LessThan), vec![false, true, false]);
+        assert_eq!(r(BuiltinFn::LessThanEqual), vec![false, true, true]);
+        assert_eq!(r(BuiltinFn::GreaterThan), vec![true, false, false]);
+        assert_eq!(r(BuiltinFn::GreaterThanEqual), vec![true, false, true]);
+        assert_eq!(r(BuiltinFn::Equal), vec![false, false, true]);
+        assert_eq!(r(BuiltinFn::NotEqual), vec![true, true, false]);
+        // The same bits as ivecs compare signed.
+        let (xi, yi) = (ivec(&[i32::MIN, 1, 7]), ivec(&[1, -1, 7]));
+        assert_eq!(
+            bools_of(eval_builtin(BuiltinFn::LessThan, &[xi, yi], b3)),
+            vec![true, false, false]
+        );
+    }
+
+    #[test]
+    fn unsigned_bit_casts() {
+        let u2 = Type::vec(Scalar::Uint, 2);
+        let v2 = Type::vec(Scalar::Float, 2);
+        let bits = eval_builtin(BuiltinFn::FloatBitsToUint, &[vec(&[1.0, -2.0])], u2);
+        assert_eq!(uints_of(bits), vec![0x3f80_0000, 0xc000_0000]);
+        let back = eval_builtin(
+            BuiltinFn::UintBitsToFloat,
+            &[uvec(&[0x3f80_0000, 0xc000_0000])],
+            v2,
+        );
+        assert_eq!(floats_of(back), vec![1.0, -2.0]);
+        // Subnormal patterns are the zero of their sign.
+        let to_bits = |v: Vec<f32>| v.iter().map(|f| f.to_bits()).collect::<Vec<_>>();
+        let sub = to_bits(floats_of(eval_builtin(
+            BuiltinFn::UintBitsToFloat,
+            &[uvec(&[1, 0x8000_0001])],
+            v2,
+        )));
+        assert_eq!(sub, vec![0, 0x8000_0000]);
+        // Infinities and NaN patterns keep their bits.
+        let special = to_bits(floats_of(eval_builtin(
+            BuiltinFn::UintBitsToFloat,
+            &[uvec(&[0x7f80_0000, 0x7fc0_0001])],
+            v2,
+        )));
+        assert_eq!(special, vec![0x7f80_0000, 0x7fc0_0001]);
+        // Scalars, and an int argument is no overload.
+        let one = eval_builtin(BuiltinFn::FloatBitsToUint, &[vec(&[0.5])], Type::UINT);
+        assert_eq!(uints_of(one), vec![0x3f00_0000]);
+        assert_eq!(
+            eval_builtin(BuiltinFn::UintBitsToFloat, &[ivec(&[1])], Type::FLOAT),
             None
         );
     }

@@ -32,14 +32,14 @@
 //! built-in of that language and stage. The text starts with the matching
 //! `#version` line and has no other preprocessor directive.
 //!
-//! Unsigned integers do not exist yet (`uint`, `uvec*`); the overloads that
-//! need them are not declared. Each is one line of [`FUNCTIONS`] once they
-//! do (`genUType`/`uvec` expand already): `genUType min(genUType,
-//! genUType)`, `uvec min(uvec, uint)` and the same for `max`, `clamp`
-//! (`uvec clamp(uvec, uint, uint)`), `bvec lessThan(uvec, uvec)` and the
-//! other five relational functions (1.30), `genUType
-//! floatBitsToUint(genType)` and `genType uintBitsToFloat(genUType)`
-//! (3.30); the lookups on `usampler*` are a `"u"` in [`G_PREFIXES`].
+//! The unsigned overloads are those the specs list and no more: `min`,
+//! `max` and `clamp` on `genUType` (with the `uvec, uint` forms), the six
+//! relational functions on `uvec` (1.30), `floatBitsToUint` and
+//! `uintBitsToFloat` (3.30), and every lookup on `usampler*` (a `"u"` in
+//! [`G_PREFIXES`]: the same rows as the float and int samplers, results
+//! `uvec4`, `textureSize` still `int`/`ivec`). `abs` and `sign` have no
+//! unsigned form, and `mix` with a `bvec` selector takes `genType` only
+//! until GLSL 4.50 adds the integer and bool forms.
 
 use crate::ir::Stage;
 use crate::lang::{Feature, Language, Version};
@@ -545,6 +545,15 @@ const FUNCTIONS: &[(Where, &str)] = &[
         "genIType clamp(genIType, genIType, genIType)",
     ),
     (Where::since(V130), "ivec clamp(ivec, int, int)"),
+    (Where::since(V130), "genUType min(genUType, genUType)"),
+    (Where::since(V130), "uvec min(uvec, uint)"),
+    (Where::since(V130), "genUType max(genUType, genUType)"),
+    (Where::since(V130), "uvec max(uvec, uint)"),
+    (
+        Where::since(V130),
+        "genUType clamp(genUType, genUType, genUType)",
+    ),
+    (Where::since(V130), "uvec clamp(uvec, uint, uint)"),
     (
         Where::since(V130),
         "genType mix(genType, genType, genBType)",
@@ -553,6 +562,8 @@ const FUNCTIONS: &[(Where, &str)] = &[
     (Where::since(V130), "genBType isinf(genType)"),
     (Where::since(V330), "genIType floatBitsToInt(genType)"),
     (Where::since(V330), "genType intBitsToFloat(genIType)"),
+    (Where::since(V330), "genUType floatBitsToUint(genType)"),
+    (Where::since(V330), "genType uintBitsToFloat(genUType)"),
     // §8.4 geometric functions
     (Where::ALL, "float length(genType)"),
     (Where::ALL, "float distance(genType, genType)"),
@@ -572,17 +583,23 @@ const FUNCTIONS: &[(Where, &str)] = &[
     // §8.6 vector relational functions
     (Where::ALL, "bvec lessThan(vec, vec)"),
     (Where::ALL, "bvec lessThan(ivec, ivec)"),
+    (Where::since(V130), "bvec lessThan(uvec, uvec)"),
     (Where::ALL, "bvec lessThanEqual(vec, vec)"),
     (Where::ALL, "bvec lessThanEqual(ivec, ivec)"),
+    (Where::since(V130), "bvec lessThanEqual(uvec, uvec)"),
     (Where::ALL, "bvec greaterThan(vec, vec)"),
     (Where::ALL, "bvec greaterThan(ivec, ivec)"),
+    (Where::since(V130), "bvec greaterThan(uvec, uvec)"),
     (Where::ALL, "bvec greaterThanEqual(vec, vec)"),
     (Where::ALL, "bvec greaterThanEqual(ivec, ivec)"),
+    (Where::since(V130), "bvec greaterThanEqual(uvec, uvec)"),
     (Where::ALL, "bvec equal(vec, vec)"),
     (Where::ALL, "bvec equal(ivec, ivec)"),
+    (Where::since(V130), "bvec equal(uvec, uvec)"),
     (Where::ALL, "bvec equal(bvec, bvec)"),
     (Where::ALL, "bvec notEqual(vec, vec)"),
     (Where::ALL, "bvec notEqual(ivec, ivec)"),
+    (Where::since(V130), "bvec notEqual(uvec, uvec)"),
     (Where::ALL, "bvec notEqual(bvec, bvec)"),
     (Where::ALL, "bool any(bvec)"),
     (Where::ALL, "bool all(bvec)"),
@@ -667,8 +684,7 @@ const LOD: Where = VS.until(V130);
 const LOD_130: Where = Where::since(V130);
 
 /// The lookups of GLSL 1.30 §8.7 (and 1.40, 1.50) on one sampler type.
-/// `g` rows stand for the float, int (and, once `uint` exists, unsigned)
-/// samplers alike (`gsampler2D`, result `gvec4`); shadow rows return one
+/// `g` rows stand for the float, int and unsigned samplers alike (`gsampler2D`, result `gvec4`); shadow rows return one
 /// `float`. A `None` column: no such lookup on that sampler.
 struct SamplerRow {
     /// The sampler's name without the `g`/`i`/`u` prefix.
@@ -847,10 +863,10 @@ const SAMPLERS: &[SamplerRow] = {
     ]
 };
 
-/// The prefixes a `g` row of [`SAMPLERS`] is declared with: float and
-/// signed-integer samplers. `u` (`usampler*`, results `uvec4`) joins once
-/// `uint` is a type.
-const G_PREFIXES: &[&str] = &["", "i"];
+/// The prefixes a `g` row of [`SAMPLERS`] is declared with: float,
+/// signed-integer and unsigned-integer samplers (results `vec4`, `ivec4`,
+/// `uvec4`).
+const G_PREFIXES: &[&str] = &["", "i", "u"];
 
 fn build(lang: Language, stage: Stage) -> String {
     let version = lang.version;
@@ -1321,8 +1337,7 @@ mod tests {
         assert!(!vs.contains("float texture(samplerCubeShadow, vec4, float);"));
         assert!(fs.contains("float texture(samplerCubeShadow, vec4, float);"));
         assert!(vs.contains("vec4 textureGradOffset(sampler2D, vec2, vec2, vec2, ivec2);"));
-        // No usampler lookups until `uint` exists, no 1.40 samplers in 1.30.
-        assert!(!vs.contains("usampler"));
+        // No 1.40 samplers in 1.30.
         assert!(!vs.contains("sampler2DRect"));
         // The Lod forms of 1.10 reach the fragment stage in 1.30.
         assert!(declares_fn(&fs, "texture2DLod") && !has(V120, Fragment, "texture2DLod"));
@@ -1435,7 +1450,120 @@ mod tests {
     }
 
     #[test]
-    fn unsigned_placeholders_expand_for_the_lines_uint_will_add() {
+    fn unsigned_overloads_by_version() {
+        use Stage::{Fragment, Vertex};
+        use Version::{V120, V130, V140, V150, V330};
+        let c = |v, s| super::prelude(Language::new(v, true), s);
+        let (v130, f130) = (c(V130, Vertex), c(V130, Fragment));
+        for line in [
+            "uint min(uint, uint);",
+            "uvec3 min(uvec3, uvec3);",
+            "uvec3 min(uvec3, uint);",
+            "uvec4 max(uvec4, uvec4);",
+            "uvec2 max(uvec2, uint);",
+            "uint clamp(uint, uint, uint);",
+            "uvec2 clamp(uvec2, uvec2, uvec2);",
+            "uvec4 clamp(uvec4, uint, uint);",
+            "bvec2 lessThan(uvec2, uvec2);",
+            "bvec3 lessThanEqual(uvec3, uvec3);",
+            "bvec4 greaterThan(uvec4, uvec4);",
+            "bvec2 greaterThanEqual(uvec2, uvec2);",
+            "bvec3 equal(uvec3, uvec3);",
+            "bvec4 notEqual(uvec4, uvec4);",
+        ] {
+            assert!(v130.contains(line) && f130.contains(line), "{line}");
+        }
+        // `uint min(uint, uint)` once: the `uvec, uint` form starts at 2.
+        assert_eq!(v130.matches("uint min(uint, uint);").count(), 1);
+        // No unsigned abs, sign or bool-selector mix before GLSL 4.50, and
+        // no relational function on scalars.
+        for absent in [
+            " abs(uint",
+            " sign(uint",
+            " abs(uvec",
+            " mix(uint",
+            " mix(uvec",
+            " lessThan(uint",
+        ] {
+            for v in [V130, V140, V150, V330] {
+                assert!(!c(v, Fragment).contains(absent), "{v:?} {absent}");
+            }
+        }
+        // The bit casts are 3.30's.
+        for v in [V130, V140, V150] {
+            assert!(!declares_fn(&c(v, Vertex), "floatBitsToUint"));
+            assert!(!declares_fn(&c(v, Vertex), "uintBitsToFloat"));
+        }
+        let v330 = super::prelude(core(V330), Vertex);
+        assert!(v330.contains("uint floatBitsToUint(float);"));
+        assert!(v330.contains("uvec3 floatBitsToUint(vec3);"));
+        assert!(v330.contains("float uintBitsToFloat(uint);"));
+        assert!(v330.contains("vec4 uintBitsToFloat(uvec4);"));
+        // Nothing unsigned before 1.30.
+        for (v, s) in ALL {
+            let text = prelude(v, s);
+            assert!(
+                !text.contains("uint") && !text.contains("uvec"),
+                "{v:?} {s:?}"
+            );
+        }
+        assert!(!has(V120, Vertex, "floatBitsToUint"));
+    }
+
+    #[test]
+    fn usampler_lookups_are_the_isampler_ones_with_uvec4_results() {
+        use Stage::{Fragment, Vertex};
+        for v in [Version::V130, Version::V140, Version::V150, Version::V330] {
+            for s in [Vertex, Fragment] {
+                let text = super::prelude(Language::new(v, true), s);
+                let lines = |p: &str| -> Vec<String> {
+                    text.lines()
+                        .filter(|l| l.contains(&format!("({p}sampler")))
+                        .map(|l| l.replace(&format!("({p}sampler"), "(Xsampler"))
+                        .map(|l| l.replacen(&format!("{p}vec4 "), "Xvec4 ", 1))
+                        .collect()
+                };
+                let (i, u) = (lines("i"), lines("u"));
+                assert!(!u.is_empty());
+                assert_eq!(i, u, "{v:?} {s:?}");
+                // textureSize stays signed; everything else returns uvec4.
+                for l in text.lines().filter(|l| l.contains("(usampler")) {
+                    assert!(
+                        l.starts_with("uvec4 ") || l.contains(" textureSize("),
+                        "{l}"
+                    );
+                }
+            }
+        }
+        let f130 = super::prelude(Language::new(Version::V130, true), Fragment);
+        for line in [
+            "uvec4 texture(usampler2D, vec2, float);",
+            "uvec4 textureProj(usampler3D, vec4);",
+            "uvec4 textureLod(usamplerCube, vec3, float);",
+            "uvec4 textureOffset(usampler1DArray, vec2, int);",
+            "uvec4 texelFetch(usampler2DArray, ivec3, int);",
+            "uvec4 texelFetchOffset(usampler1D, int, int, int);",
+            "uvec4 textureProjGradOffset(usampler2D, vec4, vec2, vec2, ivec2);",
+            "int textureSize(usampler1D, int);",
+            "ivec3 textureSize(usampler2DArray, int);",
+        ] {
+            assert!(f130.contains(line), "{line}");
+        }
+        assert!(!f130.contains("usampler2DRect") && !f130.contains("usampler2DMS"));
+        let f150 = super::prelude(core(Version::V150), Fragment);
+        for line in [
+            "uvec4 texture(usampler2DRect, vec2);",
+            "uvec4 texelFetch(usamplerBuffer, int);",
+            "ivec2 textureSize(usampler2DRect);",
+            "uvec4 texelFetch(usampler2DMSArray, ivec3, int);",
+            "ivec3 textureSize(usampler2DMSArray);",
+        ] {
+            assert!(f150.contains(line), "{line}");
+        }
+    }
+
+    #[test]
+    fn unsigned_placeholders_expand() {
         let mut out = String::new();
         expand(&mut out, "genUType min(genUType, genUType)", Version::V130);
         expand(&mut out, "bvec lessThan(uvec, uvec)", Version::V130);

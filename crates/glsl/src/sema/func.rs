@@ -898,7 +898,19 @@ impl Analyzer {
                     ),
                 )
                 .notes
-                .push("convert it (e.g. `float(i)') or change the conversion".into());
+                .push(
+                    if v.ty.scalar() == Some(crate::types::Scalar::Uint) && !c.is_float() {
+                        // A uint given to %d: its own conversion prints it.
+                        match c.components {
+                            1 => "print a uint with `%u' (or convert it: `int(u)')".to_string(),
+                            n => format!(
+                                "print a uvec{n} with `%v{n}u' (or convert it: `ivec{n}(u)')"
+                            ),
+                        }
+                    } else {
+                        "convert it (e.g. `float(i)') or change the conversion".into()
+                    },
+                );
                 ok = false;
             }
         }

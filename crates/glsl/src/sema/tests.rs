@@ -112,7 +112,7 @@ void main() {
     assert_eq!(value("t"), Some(vec![Float(3.0)]));
     // clamp + abs + sign: (0 + 1 - 1, 4 + 1 + 0).
     assert_eq!(value("m"), Some(vec![Int(0), Int(5)]));
-    // inverse is 1.40, determinant 1.50; usampler lookups wait for uint.
+    // inverse is 1.40, determinant 1.50.
     let s = frag("#version 140\nvoid main() { mat2 i = inverse(mat2(2.0)); gl_FragColor = vec4(i[0], i[1]); }\n");
     assert!(s.ok(), "{}", s.info_log());
     let s = frag("#version 140\nvoid main() { gl_FragColor = vec4(determinant(mat2(2.0))); }\n");
@@ -120,6 +120,62 @@ void main() {
     let s = frag("#version 150\nconst float d = determinant(mat3(2.0));\nout vec4 o;\nvoid main() { o = vec4(d); }\n");
     assert!(s.ok() || s.info_log().contains("out"), "{}", s.info_log());
 }
+#[test]
+fn unsigned_builtins_type_check_and_fold() {
+    let s = frag(
+        "#version 330
+uniform usampler2D us;
+uniform usampler2DArray ua;
+const uvec2 m = min(uvec2(0x80000000u, 3u), 1u) + max(uvec2(1u), uvec2(0xfffffff0u, 0u));
+const uint c = clamp(5u, 9u, 4u);
+const bvec2 lt = lessThan(uvec2(0x80000000u, 1u), uvec2(1u, 2u));
+const uint bits = floatBitsToUint(1.0);
+const float one = uintBitsToFloat(0x3f800000u);
+const float denormal = uintBitsToFloat(1u);
+void main() {
+    uvec4 t = texture(us, vec2(0.5)) + texelFetch(ua, ivec3(0), 0) + textureLod(us, vec2(0.0), 1.0);
+    ivec2 size = textureSize(us, 0);
+    bvec3 e = equal(uvec3(t.xyz), uvec3(1u));
+    gl_FragColor = vec4(t) + vec4(size, 0.0, 0.0) + vec4(e, 1.0);
+}
+",
+    );
+    assert!(s.ok(), "{}", s.info_log());
+    let m = s.module.as_ref().unwrap();
+    let value = |name: &str| {
+        m.globals
+            .iter()
+            .find(|g| g.name == name)
+            .and_then(|g| g.init.clone())
+            .map(|c| c.components)
+    };
+    use crate::ir::ConstScalar::{Bool, Float, Uint};
+    // Unsigned: min(0x80000000, 1) is 1; max(1, 0xfffffff0) is 0xfffffff0.
+    assert_eq!(value("m"), Some(vec![Uint(0xffff_fff1), Uint(2)]));
+    assert_eq!(value("c"), Some(vec![Uint(4)]));
+    assert_eq!(value("lt"), Some(vec![Bool(false), Bool(true)]));
+    assert_eq!(value("bits"), Some(vec![Uint(0x3f80_0000)]));
+    assert_eq!(value("one"), Some(vec![Float(1.0)]));
+    assert_eq!(value("denormal"), Some(vec![Float(0.0)]));
+    // 1.30 has the unsigned min but not the bit casts. No version of
+    // these has an unsigned abs or a uint mix with a bool selector: the
+    // uints convert to float and the float overload returns a float (and
+    // int does not convert to uint before GLSL 4.00, so `min(1u, 2)` is
+    // the float min too).
+    let s = frag("#version 130\nvoid main() { uint u = min(1u, 2u); gl_FragColor = vec4(u); }\n");
+    assert!(s.ok(), "{}", s.info_log());
+    for bad in [
+        "#version 130\nvoid main() { gl_FragColor = vec4(floatBitsToUint(1.0)); }\n",
+        "#version 330\nvoid main() { uint u = abs(1u); gl_FragColor = vec4(u); }\n",
+        "#version 330\nvoid main() { uint u = mix(1u, 2u, true); gl_FragColor = vec4(u); }\n",
+        "#version 330\nvoid main() { uint u = min(1u, 2); gl_FragColor = vec4(u); }\n",
+    ] {
+        assert!(!frag(bad).ok(), "{bad}");
+    }
+    let s = frag("#version 330\nvoid main() { float f = min(1u, 2); gl_FragColor = vec4(f); }\n");
+    assert!(s.ok(), "{}", s.info_log());
+}
+
 #[test]
 fn minimal_shaders() {
     ok(frag("void main() { gl_FragColor = vec4(1.0); }"));
