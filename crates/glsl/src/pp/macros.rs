@@ -6,10 +6,12 @@
 //! the replacement is being rescanned the macro is *disabled*, and a token
 //! naming a disabled macro is *painted* so that it is never expanded again
 //! (C++ [cpp.rescan]). Arguments of function-like macros are fully expanded
-//! on their own before substitution, since GLSL has no `#` or `##` operators.
+//! on their own before substitution, except beside a `##` (GLSL 1.30 on),
+//! where they are pasted as written and only the result is rescanned.
 //!
 //! Termination and size are bounded: every replacement is charged to a
-//! token [`Budget`], and nesting (active macros, and arguments within
+//! token [`Budget`] (as is the spelling of pasted tokens, an eighth of a
+//! token per byte), and nesting (active macros, and arguments within
 //! arguments) is limited by [`limits::MAX_MACRO_EXPANSION_DEPTH`].
 
 use crate::diag::{Code, Diagnostic};
@@ -364,7 +366,7 @@ impl Expander<'_> {
             let text = format!("{}{}", left.text, right.text);
             // Long pasted spellings are charged to the budget, so that
             // pasting through nested macros cannot grow text without bound.
-            let cost = text.len() / 64;
+            let cost = text.len() / 8;
             if cost > self.budget.remaining {
                 self.out_of_budget(name);
                 return None;
