@@ -176,6 +176,9 @@ pub enum Feature {
     StageInOut,
     /// `lowp`, `mediump`, `highp`, `precision` (accepted, no effect).
     Precision,
+    /// The preprocessor's token-pasting operator `##` in a macro's
+    /// replacement list (GLSL 1.30 §3.3).
+    TokenPasting,
     /// Indexing an array of samplers with an expression that is not
     /// constant: GLSL 1.10 and 1.20 say nothing against it, 1.30 §4.1.7
     /// allows "integral constant expressions" only.
@@ -297,7 +300,8 @@ impl Language {
             | Feature::Switch
             | Feature::IntegerOperators
             | Feature::InterpolationQualifiers
-            | Feature::Precision => since(Version::V130),
+            | Feature::Precision
+            | Feature::TokenPasting => since(Version::V130),
             Feature::NonConstantSamplerIndex => {
                 if self.version >= Version::V130 {
                     Err(Unavailable::Removed(Version::V130))

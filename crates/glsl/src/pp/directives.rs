@@ -9,7 +9,7 @@ use super::macros::{Macro, PTok, BUILTIN_MACROS};
 use super::{Cond, ExtensionDirective, Line, Preprocessor};
 use crate::diag::{did_you_mean, Code, Diagnostic};
 use crate::ir::ExtensionBehavior;
-use crate::lang::{Extension, ExtensionSet, Language, Profile, Version};
+use crate::lang::{Extension, ExtensionSet, Feature, Language, Profile, Version};
 use crate::lex::{PpKind, PpToken};
 use crate::limits;
 use crate::source::Span;
@@ -416,18 +416,7 @@ impl Preprocessor<'_> {
             }
             _ => (None, after),
         };
-        if let Some(h) = body
-            .iter()
-            .find(|t| matches!(t.kind, PpKind::Hash | PpKind::HashHash))
-        {
-            self.diags.push(
-                Diagnostic::error(
-                    Code::PpMacro,
-                    h.span,
-                    format!("`{}' is not allowed in a macro definition", h.text),
-                )
-                .with_note("GLSL has no stringizing or token-pasting operators (§3.3)"),
-            );
+        if !self.check_operators(body) {
             return;
         }
         let mac = Macro {
@@ -454,6 +443,43 @@ impl Preprocessor<'_> {
         }
         self.function_like += usize::from(mac.params.is_some());
         self.macros.insert(name.text.clone(), mac);
+    }
+
+    /// Checks the `#` and `##` in a replacement list: `#` (stringizing)
+    /// never exists, since GLSL has no strings; `##` (token pasting) exists
+    /// from GLSL 1.30 on and needs an operand on each side (C++
+    /// [cpp.concat]). Reports the first problem.
+    fn check_operators(&mut self, body: &[PpToken]) -> bool {
+        for (i, t) in body.iter().enumerate() {
+            let d = match t.kind {
+                PpKind::Hash => Diagnostic::error(
+                    Code::PpMacro,
+                    t.span,
+                    "`#' is not allowed in a macro definition",
+                )
+                .with_note("GLSL has no stringizing operator: it has no strings (§3.3)"),
+                PpKind::HashHash => match self.lang.gate(Feature::TokenPasting) {
+                    Err(why) => {
+                        Diagnostic::error(Code::PpMacro, t.span, why.message("`##'", self.lang))
+                            .with_note(why.fix())
+                    }
+                    Ok(()) if i == 0 || i + 1 == body.len() => Diagnostic::error(
+                        Code::PpMacro,
+                        t.span,
+                        format!(
+                            "`##' cannot be at the {} of a macro's replacement list",
+                            if i == 0 { "start" } else { "end" }
+                        ),
+                    )
+                    .with_note("`##' pastes the tokens on its two sides into one"),
+                    Ok(()) => continue,
+                },
+                _ => continue,
+            };
+            self.diags.push(d);
+            return false;
+        }
+        true
     }
 
     /// Parses `( a, b )` at the start of `toks`: the parameter names and how

@@ -6,14 +6,16 @@
 //! the replacement is being rescanned the macro is *disabled*, and a token
 //! naming a disabled macro is *painted* so that it is never expanded again
 //! (C++ [cpp.rescan]). Arguments of function-like macros are fully expanded
-//! on their own before substitution, since GLSL has no `#` or `##` operators.
+//! on their own before substitution, except beside a `##` (GLSL 1.30 on),
+//! where they are pasted as written and only the result is rescanned.
 //!
 //! Termination and size are bounded: every replacement is charged to a
-//! token [`Budget`], and nesting (active macros, and arguments within
+//! token [`Budget`] (as is the spelling of pasted tokens, an eighth of a
+//! token per byte), and nesting (active macros, and arguments within
 //! arguments) is limited by [`limits::MAX_MACRO_EXPANSION_DEPTH`].
 
 use crate::diag::{Code, Diagnostic};
-use crate::lex::{PpKind, PpToken};
+use crate::lex::{self, LexOptions, PpKind, PpToken};
 use crate::limits;
 use crate::source::{SourceMap, Span};
 use crate::token::Punct;
@@ -236,7 +238,9 @@ impl Expander<'_> {
                 break;
             }
             let Some(params) = &mac.params else {
-                let body = instantiate(mac, tok.span, tok.space_before, &[]);
+                let Some(body) = self.instantiate(mac, &tok, tok.span, &[], depth) else {
+                    break;
+                };
                 self.push_replacement(&mut stack, &mut disabled, &tok, body);
                 continue;
             };
@@ -267,14 +271,153 @@ impl Expander<'_> {
                 self.too_deep(&tok);
                 break;
             }
-            let args: Vec<Vec<PTok>> = args
-                .into_iter()
-                .map(|a| self.expand_at(a, depth + 1))
-                .collect();
-            let body = instantiate(mac, span, tok.space_before, &args);
+            let Some(body) = self.instantiate(mac, &tok, span, &args, depth) else {
+                break;
+            };
             self.push_replacement(&mut stack, &mut disabled, &tok, body);
         }
         out
+    }
+
+    /// The replacement list of `mac` invoked as `name` with `args` (raw):
+    /// a parameter is replaced by its argument fully expanded, or as
+    /// written when it is an operand of `##`; then each `a ## b` pastes the
+    /// last token of its left operand and the first of its right one into
+    /// one token (GLSL 1.30 §3.3: "macro expansion happens after token
+    /// pasting and does not happen before"). An empty operand pastes as
+    /// nothing (C++'s placemarker). Every token gets the invocation's
+    /// `span`. `None` when the budget ran out (already reported).
+    fn instantiate(
+        &mut self,
+        mac: &Macro,
+        name: &PTok,
+        span: Span,
+        args: &[Vec<PTok>],
+        depth: u32,
+    ) -> Option<Vec<PTok>> {
+        let body = &mac.body;
+        let param = |t: &PpToken| match (&mac.params, &t.kind) {
+            (Some(params), PpKind::Ident) => params.iter().position(|p| *p == t.text),
+            _ => None,
+        };
+        let is_paste = |i: usize| body.get(i).is_some_and(|t| t.kind == PpKind::HashHash);
+        // Arguments expanded on demand: one used only beside `##` is never
+        // expanded.
+        let mut expanded: Vec<Option<Vec<PTok>>> = vec![None; args.len()];
+        let mut out: Vec<PTok> = Vec::with_capacity(body.len());
+        // The space before the operand just substituted, when it was empty
+        // (a placemarker): a following `##` then has nothing to paste to.
+        let mut placemarker: Option<bool> = None;
+        let mut i = 0;
+        while i < body.len() {
+            let bt = &body[i];
+            let sb = if i == 0 {
+                name.space_before
+            } else {
+                bt.space_before
+            };
+            let pasting = is_paste(i) && i + 1 < body.len() && (i > 0);
+            let (operand_index, toks) = if pasting {
+                (i + 1, &body[i + 1])
+            } else {
+                (i, bt)
+            };
+            // The operand's tokens, with the invocation's span.
+            let mut operand: Vec<PTok> = match param(toks).and_then(|p| args.get(p).map(|a| (p, a)))
+            {
+                Some((p, raw)) => {
+                    let beside_paste = pasting || is_paste(operand_index + 1);
+                    let arg = if beside_paste {
+                        raw.clone()
+                    } else {
+                        if expanded[p].is_none() {
+                            let e = self.expand_at(raw.clone(), depth + 1);
+                            if self.budget.exhausted {
+                                return None;
+                            }
+                            expanded[p] = Some(e);
+                        }
+                        expanded[p].clone().unwrap_or_default()
+                    };
+                    arg.into_iter().map(|at| PTok { span, ..at }).collect()
+                }
+                None => vec![PTok {
+                    kind: toks.kind.clone(),
+                    text: toks.text.clone(),
+                    span,
+                    space_before: toks.space_before,
+                    painted: false,
+                }],
+            };
+            if !pasting {
+                if let Some(first) = operand.first_mut() {
+                    first.space_before = sb;
+                }
+                placemarker = operand.is_empty().then_some(sb);
+                out.extend(operand);
+                i += 1;
+                continue;
+            }
+            i += 2;
+            if let Some(psb) = placemarker {
+                // Nothing on the left: the right operand stands alone.
+                if let Some(first) = operand.first_mut() {
+                    first.space_before = psb;
+                }
+                placemarker = operand.is_empty().then_some(psb);
+                out.extend(operand);
+                continue;
+            }
+            if operand.is_empty() {
+                continue;
+            }
+            let right = operand.remove(0);
+            let Some(left) = out.pop() else {
+                out.push(right);
+                out.extend(operand);
+                continue;
+            };
+            let text = format!("{}{}", left.text, right.text);
+            // Long pasted spellings are charged to the budget, so that
+            // pasting through nested macros cannot grow text without bound.
+            let cost = text.len() / 8;
+            if cost > self.budget.remaining {
+                self.out_of_budget(name);
+                return None;
+            }
+            self.budget.remaining -= cost;
+            match lex_one(&text) {
+                Some((kind, text)) => out.push(PTok {
+                    kind,
+                    text,
+                    span,
+                    space_before: left.space_before,
+                    painted: false,
+                }),
+                None => {
+                    self.diags.push(
+                        Diagnostic::error(
+                            Code::PpMacro,
+                            span,
+                            format!(
+                                "pasting `{}' and `{}' in macro `{}' does not give a valid token",
+                                left.text, right.text, name.text
+                            ),
+                        )
+                        .with_note(format!(
+                            "`{text}' is not one token; `##' must produce a single token \
+                             (GLSL 1.30 §3.3)"
+                        ))
+                        .with_label(mac.name_span, "macro defined here"),
+                    );
+                    // Keep both tokens, unpasted.
+                    out.push(left);
+                    out.push(right);
+                }
+            }
+            out.extend(operand);
+        }
+        Some(out)
     }
 
     /// `__LINE__`, `__FILE__` and `__VERSION__` (§3.3).
@@ -296,24 +439,28 @@ impl Expander<'_> {
         body: Vec<PTok>,
     ) {
         if body.len() > self.budget.remaining {
-            self.budget.exhausted = true;
-            self.diags.push(
-                Diagnostic::error(
-                    Code::PpMacro,
-                    name.span,
-                    format!(
-                        "expanding macro `{}' produces too many tokens (the limit is {})",
-                        name.text, self.budget.limit
-                    ),
-                )
-                .with_note("the macros probably expand exponentially; simplify them"),
-            );
+            self.out_of_budget(name);
             return;
         }
         self.budget.remaining -= body.len();
         stack.push(Item::End);
         stack.extend(body.into_iter().rev().map(Item::Tok));
         disabled.push(name.text.clone());
+    }
+
+    fn out_of_budget(&mut self, name: &PTok) {
+        self.budget.exhausted = true;
+        self.diags.push(
+            Diagnostic::error(
+                Code::PpMacro,
+                name.span,
+                format!(
+                    "expanding macro `{}' produces too many tokens (the limit is {})",
+                    name.text, self.budget.limit
+                ),
+            )
+            .with_note("the macros probably expand exponentially; simplify them"),
+        );
     }
 
     fn too_deep(&mut self, tok: &PTok) {
@@ -423,34 +570,13 @@ fn wrong_arity(name: &str, params: usize, given: usize, span: Span, mac: &Macro)
     .with_label(mac.name_span, "macro defined here")
 }
 
-/// The replacement list of `mac` with parameters replaced by the (expanded)
-/// arguments; every token gets the invocation's span.
-fn instantiate(mac: &Macro, span: Span, space_before: bool, args: &[Vec<PTok>]) -> Vec<PTok> {
-    let mut out = Vec::with_capacity(mac.body.len());
-    for (i, bt) in mac.body.iter().enumerate() {
-        let sb = if i == 0 {
-            space_before
-        } else {
-            bt.space_before
-        };
-        let param = match (&mac.params, &bt.kind) {
-            (Some(params), PpKind::Ident) => params.iter().position(|p| *p == bt.text),
-            _ => None,
-        };
-        match param.and_then(|p| args.get(p)) {
-            Some(arg) => out.extend(arg.iter().enumerate().map(|(j, at)| PTok {
-                span,
-                space_before: if j == 0 { sb } else { at.space_before },
-                ..at.clone()
-            })),
-            None => out.push(PTok {
-                kind: bt.kind.clone(),
-                text: bt.text.clone(),
-                span,
-                space_before: sb,
-                painted: false,
-            }),
+/// The one preprocessing token spelled `text`, if it is one.
+fn lex_one(text: &str) -> Option<(PpKind, SmolStr)> {
+    let (toks, diags) = lex::lex(text, LexOptions::default());
+    match toks.as_slice() {
+        [t] if diags.is_empty() && t.text.len() == text.len() && t.kind != PpKind::Newline => {
+            Some((t.kind.clone(), t.text.clone()))
         }
+        _ => None,
     }
-    out
 }

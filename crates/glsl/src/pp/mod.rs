@@ -1,4 +1,4 @@
-//! The GLSL 1.10/1.20 preprocessor (GLSL 1.20 §3.3).
+//! The GLSL preprocessor (GLSL 1.20 §3.3; GLSL 1.30 adds `##`).
 //!
 //! [`preprocess`] lexes the shader's text ([`crate::lex`]), runs the
 //! directives line by line, expands macros in the remaining text and turns
@@ -15,8 +15,12 @@
 //! - Macro names containing `__` draw a warning ("reserved", but allowed,
 //!   as piglit expects); names starting with `GL_`, `defined` and the
 //!   built-in macros cannot be defined or undefined.
-//! - The `#` and `##` operators do not exist ("There are no number sign
-//!   based operators", §3.3): a `#` in a macro body is an error.
+//! - The `#` operator never exists (GLSL has no strings): a `#` in a
+//!   macro body is an error. The `##` operator exists from GLSL 1.30 on
+//!   (its §3.3; 1.10 and 1.20 say "There are no number sign based
+//!   operators"), as C++'s: operands are pasted before they are expanded,
+//!   the result must be one token and is rescanned, an empty argument
+//!   pastes as nothing; `##` may not begin or end a replacement list.
 //! - Integer literals that do not fit 32 bits draw a warning and wrap.
 
 mod directives;
@@ -396,8 +400,8 @@ impl<'m> Preprocessor<'m> {
                         format!("unexpected `{}' outside a preprocessor directive", t.text),
                     )
                     .with_note(
-                        "a directive's `#' must be the first thing on its line, and GLSL has \
-                         no `#'/`##' operators (§3.3)",
+                        "a directive's `#' must be the first thing on its line, and `##' is an \
+                         operator only in a macro's replacement list (GLSL 1.30 and later)",
                     ),
                 );
                 None

@@ -190,15 +190,144 @@ fn reserved_macro_names() {
 
 #[test]
 fn no_hash_operators() {
-    err("#define S(a) #a", "not allowed in a macro definition");
+    // `#' (stringizing) never exists: GLSL has no strings.
+    err(
+        "#define S(a) #a",
+        "`#' is not allowed in a macro definition",
+    );
+    err(
+        "#version 130\n#define S(a) #a",
+        "`#' is not allowed in a macro definition",
+    );
+    err("#version 330\n#define S #", "`#' is not allowed");
+    // `##' exists from GLSL 1.30 on.
     err(
         "#define P(a, b) a ## b",
-        "not allowed in a macro definition",
+        "`##' needs GLSL 1.30 (this shader is GLSL 1.10)",
+    );
+    err(
+        "#version 120\n#define P(a, b) a ## b",
+        "`##' needs GLSL 1.30 (this shader is GLSL 1.20)",
     );
     err("a # b", "unexpected `#'");
     err("a ## b", "unexpected `##'");
+    err("#version 130\na ## b", "unexpected `##'");
     // Skipped blocks may contain anything.
-    ok("#ifdef X\n#define S(a) #a\n@ $ \"\n#endif");
+    ok("#ifdef X\n#define S(a) #a\n#define P(a) a ## a\n@ $ \"\n#endif");
+}
+
+/// `ok` for a GLSL 1.30 shader.
+fn ok130(src: &str) -> String {
+    ok(&format!("#version 130\n{src}"))
+}
+
+fn err130(src: &str, needle: &str) {
+    err(&format!("#version 130\n{src}"), needle);
+}
+
+#[test]
+fn token_pasting() {
+    // piglit concat-01..03: with and without spaces, object-like and
+    // function-like.
+    assert_eq!(ok130("#define INT i##n##t\nINT x;"), "int x ;");
+    assert_eq!(ok130("#define INT i ## n ## t\nINT x;"), "int x ;");
+    assert_eq!(
+        ok130("#define CONCAT(x, y, z) x ## y ## z\nCONCAT(i, n, t) x;"),
+        "int x ;"
+    );
+    assert_eq!(ok130("#define P(a, b) a ## b\nP(x, 1) P(1, 2)"), "x1 12");
+    assert_eq!(ok130("#define P(a, b) a ## b\nP(+, =) P(<, <=)"), "+= <<=");
+    assert_eq!(
+        ok130("#define P(a, b) a ## b\nP(1, .5) P(1e, 3)"),
+        "1.5 1000.0"
+    );
+    // Only the tokens next to `##' are pasted.
+    assert_eq!(ok130("#define P(a, b) [a ## b]\nP(x y, z w)"), "[ x yz w ]");
+    assert_eq!(ok130("#define P(a) q a ## _s r\nP(v)"), "q v_s r");
+}
+
+#[test]
+fn token_pasting_expands_after_pasting() {
+    // piglit concat-04: the operands are not expanded, the result is.
+    assert_eq!(
+        ok130(
+            "#define I i\n#define N n\n#define T t\n#define INT invalid_type\n\
+             #define X I ## N ## T\nX"
+        ),
+        "invalid_type"
+    );
+    // An argument beside `##' is used as written; elsewhere, expanded.
+    assert_eq!(ok130("#define A 1\n#define P(x) x x ## 2\nP(A)"), "1 A2");
+    assert_eq!(ok130("#define A 1\n#define P(x) x ## 2 x\nP(A)"), "A2 1");
+    assert_eq!(ok130("#define AB 7\n#define P(x, y) x ## y\nP(A, B)"), "7");
+    // The result may name a function-like macro invoked by what follows.
+    assert_eq!(
+        ok130("#define f_1(x) <x>\n#define CALL(n, x) f_ ## n(x)\nCALL(1, 2)"),
+        "< 2 >"
+    );
+    // piglit nested_concat: an indirection expands the arguments first.
+    assert_eq!(
+        ok130(
+            "#define STEP_ONE() done\n#define GLUE(x,y) x ## _ ## y\n\
+             #define EVALUATE(x,y) GLUE(x,y)\n#define STEP(s) EVALUATE(STEP, s)()\n\
+             #define PERFORM STEP(ONE)\nPERFORM;"
+        ),
+        "done ;"
+    );
+    // A pasted name of the macro being expanded is not expanded again.
+    assert_eq!(ok130("#define M(x) M ## x\nM()"), "M");
+    assert_eq!(ok130("#define MM MM ## M\n#define MMM 1\nMM"), "1");
+}
+
+#[test]
+fn token_pasting_empty_operands() {
+    let d = "#define P(a, b) [a ## b]\n";
+    assert_eq!(ok130(&format!("{d}P(, x) P(x, ) P(, )")), "[ x ] [ x ] [ ]");
+    let d = "#define C(a, b, c) a ## b ## c\n";
+    assert_eq!(
+        ok130(&format!("{d}C(, , z) C(x, , z) C(x, y, ) C(, , )")),
+        "z xz xy"
+    );
+    // An empty operand does not paste its neighbours' other tokens.
+    assert_eq!(ok130("#define P(a) + a ## = \nP()"), "+ =");
+}
+
+#[test]
+fn token_pasting_errors() {
+    err130("#define P(a) ## a", "`##' cannot be at the start");
+    err130("#define P(a) a ##", "`##' cannot be at the end");
+    err130("#define X ##", "`##' cannot be at the start");
+    err130("#define X x ##", "`##' cannot be at the end");
+    let d = "#define P(a, b) a ## b\n";
+    err130(
+        &format!("{d}P(x, +)"),
+        "pasting `x' and `+' in macro `P' does not give a valid token",
+    );
+    err130(&format!("{d}P(/, /)"), "pasting `/' and `/'");
+    err130(&format!("{d}P(+, -)"), "pasting `+' and `-'");
+    err130(&format!("{d}P(x, 1.5)"), "pasting `x' and `1.5'");
+    err130("#define X a ## ## b\nX", "pasting `a' and `##'");
+    // `#'s in arguments paste to a `##' token, which is not an operator.
+    err130(&format!("{d}P(#, #)"), "unexpected `##'");
+}
+
+#[test]
+fn token_pasting_is_bounded() {
+    // Each level doubles the pasted spelling while the tokens stay few:
+    // the spelling is charged to the budget.
+    let mut src = String::from("#version 130\n#define D(x) x ## x\n#define L0(x) D(x)\n");
+    for i in 1..60 {
+        src.push_str(&format!("#define L{i}(x) L{}(D(x))\n", i - 1));
+    }
+    src.push_str("L59(a)\n");
+    let mut map = SourceMap::new("t", src);
+    let opts = PpOptions::new(Stage::Vertex);
+    let out = preprocess_with_limit(&mut map, &opts, 10_000);
+    let errs = messages(&out, Severity::Error);
+    assert!(
+        errs.iter().any(|m| m.contains("too many tokens")),
+        "{errs:?}"
+    );
 }
 
 #[test]
@@ -708,6 +837,13 @@ fn never_panics() {
         "#if defined()",
         "#line 1 -1",
         "#line (",
+        "#version 130\n#define P(a, b) a ## b\nP(",
+        "#version 130\n#define P(a, b) a ## b\nP(#, #) P(\"x, \"y) P(@, $) P(1e, +)",
+        "#version 130\n#define P(a, b) a ## b\nP(P, (1, 2)) P(P(1, 2), 3)",
+        "#version 130\n#define P a ##",
+        "#version 130\n#define P ## ##",
+        "#version 130\n#define P(a) a ## ## a\nP(x)",
+        "#version 130\n#define P(a) a ##b\n#if P(1)\n#endif",
     ];
     for src in inputs {
         let _ = run(src);
