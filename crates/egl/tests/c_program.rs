@@ -19,7 +19,12 @@ fn profile_dir() -> PathBuf {
 #[test]
 fn surfaceless_and_pbuffer_triangles() {
     let lib = profile_dir().join("libEGL.so");
-    assert!(lib.exists(), "{} not built", lib.display());
+    assert!(
+        lib.exists(),
+        "{} not built: `cargo test` does not write the cdylib in a fresh target \
+         directory; run `cargo build -p shaderbox-egl` first (.ci/run does)",
+        lib.display()
+    );
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("egl-c-program");
     std::fs::create_dir_all(&dir).unwrap();
     let so = dir.join("libEGL.so.1");
