@@ -70,6 +70,7 @@ fn parse_glsl_version(text: &str) -> Result<Version, String> {
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum StageArg {
     Vertex,
+    Geometry,
     Fragment,
 }
 
@@ -77,6 +78,7 @@ impl From<StageArg> for Stage {
     fn from(s: StageArg) -> Stage {
         match s {
             StageArg::Vertex => Stage::Vertex,
+            StageArg::Geometry => Stage::Geometry,
             StageArg::Fragment => Stage::Fragment,
         }
     }
@@ -204,8 +206,8 @@ fn read_inputs(args: &Args) -> Result<Vec<Input>, (Exit, String)> {
                 return Err((
                     Exit::Misuse,
                     format!(
-                        "`{}' looks like a {what} shader, which OpenGL 2.1 does not have; \
-                         use --stage vertex|fragment if it is not",
+                        "`{}' looks like a {what} shader, which shaderbox does not have; \
+                         use --stage vertex|geometry|fragment if it is not",
                         path.display()
                     ),
                 ))
@@ -214,10 +216,10 @@ fn read_inputs(args: &Args) -> Result<Vec<Input>, (Exit, String)> {
                 return Err((
                     Exit::Misuse,
                     format!(
-                        "cannot tell the stage of `{}' from its name; name it .vert or .frag, \
-                         or pass --stage vertex|fragment",
-                        path.display()
-                    ),
+                    "cannot tell the stage of `{}' from its name; name it .vert, .geom or .frag, \
+                         or pass --stage vertex|geometry|fragment",
+                    path.display()
+                ),
                 ))
             }
         };

@@ -45,7 +45,7 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// The shader: .vert or .frag (.geom, .tesc, .tese and .comp are
+    /// The shader: .vert, .geom or .frag (.tesc, .tese and .comp are
     /// skipped).
     #[arg(value_name = "FILE")]
     pub file: PathBuf,
@@ -211,7 +211,7 @@ fn evaluate(args: &Args) -> Outcome {
             )
         }
     };
-    let compatibility_context = match parse_version(&args.version) {
+    let (version, compatibility_context) = match parse_version(&args.version) {
         Err(e) => return Outcome::new(Verdict::Fail, e),
         Ok(Requested::Other) => {
             return Outcome::new(
@@ -224,9 +224,9 @@ fn evaluate(args: &Args) -> Outcome {
             )
         }
         Ok(Requested::Supported {
+            version,
             compatibility_context,
-            ..
-        }) => compatibility_context,
+        }) => (version, compatibility_context),
     };
     if args.dummy_shader_include || args.shader_include_path.is_some() {
         return Outcome::new(
@@ -256,8 +256,16 @@ fn evaluate(args: &Args) -> Outcome {
         Err(e) => return Outcome::new(Verdict::Fail, e),
     };
     let file = args.file.display().to_string();
-    let result =
-        guarded(|| compile_and_link(&text, stage, &file, args.check_link, compatibility_context));
+    let result = guarded(|| {
+        compile_and_link(
+            &text,
+            stage,
+            &file,
+            args.check_link,
+            version,
+            compatibility_context,
+        )
+    });
     let (ok, log) = match result {
         Ok(r) => r,
         Err(panic) => {
@@ -273,13 +281,16 @@ fn evaluate(args: &Args) -> Outcome {
     verdict(args.expect, args.check_link, stage, &file, ok, &log)
 }
 
-/// Compiles the shader and, when asked, links it alone into a program:
-/// whether both succeeded, and the info logs.
+/// Compiles the shader and, when asked, links it alone into a program
+/// (a geometry shader with piglit's dummy vertex shader, `void main() {
+/// gl_Position = vec4(0.0); }` of the test's version, as a program needs
+/// one): whether both succeeded, and the info logs.
 fn compile_and_link(
     text: &str,
     stage: Stage,
     file: &str,
     check_link: bool,
+    version: Version,
     compatibility_context: bool,
 ) -> (bool, String) {
     let opts = CompileOptions {
@@ -292,7 +303,23 @@ fn compile_and_link(
     if !shader.ok() || !check_link {
         return (shader.ok(), log);
     }
-    let program = glsl::link::link(&[&shader]);
+    let dummy;
+    let mut objects = vec![&shader];
+    if stage == Stage::Geometry {
+        let source = format!(
+            "#version {}\nvoid main() {{ gl_Position = vec4(0.0); }}",
+            version.number()
+        );
+        dummy = glsl::compile(
+            &[&source],
+            &CompileOptions {
+                compatibility_context,
+                ..CompileOptions::new(Stage::Vertex)
+            },
+        );
+        objects.insert(0, &dummy);
+    }
+    let program = glsl::link::link(&objects);
     log.push_str(program.info_log());
     (program.ok(), log)
 }
@@ -451,7 +478,6 @@ mod tests {
     fn skips_and_usage_failures_before_reading_the_file() {
         // None of these files exist: the verdict comes before reading.
         let e = |a: Args| evaluate(&a).verdict;
-        assert_eq!(e(args("/none/t.geom", "1.50", &[])), Verdict::Skip);
         assert_eq!(e(args("/none/t.comp", "1.20", &[])), Verdict::Skip);
         assert_eq!(e(args("/none/t.vert", "3.00 es", &[])), Verdict::Skip);
         assert_eq!(e(args("/none/t.vert", "4.00", &[])), Verdict::Skip);

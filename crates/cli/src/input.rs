@@ -8,19 +8,20 @@ use std::path::Path;
 pub enum StageGuess {
     /// A stage shaderbox implements.
     Known(Stage),
-    /// A stage of a later GL (`.geom`, `.tesc`, `.tese`, `.comp`).
+    /// A stage of a later GL (`.tesc`, `.tese`, `.comp`).
     Unsupported(&'static str),
     /// No recognised extension.
     Unknown,
 }
 
 /// The stage from the file extension: `.vert`/`.vs` are vertex shaders,
-/// `.frag`/`.fs` fragment shaders (case-sensitive, as piglit's are).
+/// `.geom`/`.gs` geometry shaders, `.frag`/`.fs` fragment shaders
+/// (case-sensitive, as piglit's are).
 pub fn stage_from_path(path: &Path) -> StageGuess {
     match path.extension().and_then(|e| e.to_str()) {
         Some("vert" | "vs") => StageGuess::Known(Stage::Vertex),
         Some("frag" | "fs") => StageGuess::Known(Stage::Fragment),
-        Some("geom") => StageGuess::Unsupported("geometry"),
+        Some("geom" | "gs") => StageGuess::Known(Stage::Geometry),
         Some("tesc") => StageGuess::Unsupported("tessellation control"),
         Some("tese") => StageGuess::Unsupported("tessellation evaluation"),
         Some("comp") => StageGuess::Unsupported("compute"),
@@ -54,7 +55,8 @@ mod tests {
         assert_eq!(g("b.vs"), StageGuess::Known(Stage::Vertex));
         assert_eq!(g("x.y.frag"), StageGuess::Known(Stage::Fragment));
         assert_eq!(g("b.fs"), StageGuess::Known(Stage::Fragment));
-        assert_eq!(g("b.geom"), StageGuess::Unsupported("geometry"));
+        assert_eq!(g("b.geom"), StageGuess::Known(Stage::Geometry));
+        assert_eq!(g("b.gs"), StageGuess::Known(Stage::Geometry));
         assert_eq!(g("b.comp"), StageGuess::Unsupported("compute"));
         assert_eq!(g("b.glsl"), StageGuess::Unknown);
         assert_eq!(g("frag"), StageGuess::Unknown);

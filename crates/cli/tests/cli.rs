@@ -345,17 +345,36 @@ fn parsertest_expected_pass_that_fails_fails() {
 #[test]
 fn parsertest_skips() {
     let p = temp_shader("pt-skip", "ok.vert", VALID_VERT);
-    let g = temp_shader("pt-skip", "ok.geom", "void main() {}\n");
+    let t = temp_shader("pt-skip", "ok.tesc", "void main() {}\n");
     for args in [
         vec!["glslparsertest", &p, "pass", "4.00"],
         vec!["glslparsertest", &p, "pass", "3.00 es"],
         vec!["glslparsertest", &p, "pass", "1.20", "GL_ARB_gpu_shader5"],
-        vec!["glslparsertest", &g, "pass", "1.50"],
+        vec!["glslparsertest", &t, "pass", "1.50"],
     ] {
         let o = shaderbox(&args);
         assert_eq!(piglit_result(&o), "skip", "{args:?}");
         assert_eq!(o.status.code(), Some(0), "{args:?}");
     }
+}
+
+#[test]
+fn parsertest_links_a_geometry_shader_with_a_dummy_vertex_shader() {
+    let g = temp_shader(
+        "pt-geom",
+        "pass.geom",
+        "#version 150\nlayout(points) in;\nlayout(points, max_vertices = 1) out;\nvoid main() { gl_Position = gl_in[0].gl_Position; EmitVertex(); }\n",
+    );
+    let o = shaderbox(&["glslparsertest", "--check-link", &g, "pass", "1.50"]);
+    assert_eq!(piglit_result(&o), "pass", "{}", stdout(&o));
+    // Without an output layout the program does not link.
+    let n = temp_shader(
+        "pt-geom",
+        "nolayout.geom",
+        "#version 150\nlayout(points) in;\nvoid main() { EmitVertex(); }\n",
+    );
+    let o = shaderbox(&["glslparsertest", "--check-link", &n, "fail", "1.50"]);
+    assert_eq!(piglit_result(&o), "pass", "{}", stdout(&o));
 }
 
 #[test]

@@ -29,6 +29,9 @@ impl Kernels {
             match s.stage {
                 Stage::Vertex => k.vs = Some(kernel),
                 Stage::Fragment => k.fs = Some(kernel),
+                // exec refuses a geometry stage before this (GL contexts
+                // cannot create geometry shaders yet either).
+                Stage::Geometry => return Err("geometry shaders do not run yet".into()),
             }
         }
         Ok(k)

@@ -147,6 +147,9 @@ builtin_fns! {
     Noise2 = "noise2";
     Noise3 = "noise3";
     Noise4 = "noise4";
+    // §8.10 geometry shader functions (1.50, GL_EXT_geometry_shader4)
+    EmitVertex = "EmitVertex";
+    EndPrimitive = "EndPrimitive";
 }
 
 #[cfg(test)]

@@ -27,13 +27,22 @@
 //!   were: vertex inputs (`attribute`, vertex `in`) are
 //!   [`Storage::Attribute`], vertex outputs and fragment inputs (`varying`,
 //!   vertex `out`, fragment `in`) are [`Storage::Varying`], user fragment
-//!   outputs (fragment `out`) are [`Storage::FragOutput`]; their
+//!   outputs (fragment `out`) are [`Storage::FragOutput`]; geometry
+//!   inputs (geometry `in`, `varying in`) are [`Storage::GeometryInput`]
+//!   and geometry outputs (`out`, `varying out`) [`Storage::Varying`]; their
 //!   qualifiers are [`Global::interpolation`], [`Global::centroid`],
 //!   [`Global::invariant`] and [`Global::location`]. Precision qualifiers
 //!   leave no trace;
 //! - interface blocks ([`Module::blocks`]) are made of ordinary globals of
 //!   the block's storage (see [`InterfaceBlock`]), each naming its block in
-//!   [`Global::block`].
+//!   [`Global::block`];
+//! - a geometry shader's input and output layouts are in
+//!   [`Module::geometry`]: the input primitive, the output primitive and
+//!   `max_vertices`, each as the shader object declared it (at most one
+//!   value each; the linker requires all three in the program, GLSL 1.50
+//!   §4.3.8.1-2). User geometry inputs are arrays, sized (by their
+//!   declaration or the input primitive) or still unsized when the object
+//!   declares no input primitive.
 
 pub mod print;
 
@@ -46,6 +55,9 @@ use serde::Serialize;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 pub enum Stage {
     Vertex,
+    /// GLSL 1.50 §2.2, and GL_EXT/ARB_geometry_shader4 on 1.10/1.20. The
+    /// front end compiles and links it; nothing runs it yet.
+    Geometry,
     Fragment,
 }
 
@@ -53,6 +65,7 @@ impl Stage {
     pub fn name(self) -> &'static str {
         match self {
             Stage::Vertex => "vertex",
+            Stage::Geometry => "geometry",
             Stage::Fragment => "fragment",
         }
     }
@@ -96,11 +109,18 @@ pub enum Storage {
     Uniform,
     /// Vertex-stage input.
     Attribute,
-    /// Written by the vertex stage, read (only) by the fragment stage:
-    /// `varying`, vertex `out` and fragment `in` (GLSL 1.30 §4.3.4,
-    /// §4.3.6). Also the read-only fragment inputs `gl_FragCoord`,
-    /// `gl_FrontFacing`.
+    /// Written by the vertex or geometry stage, read (only) by the next
+    /// stage: `varying`, vertex and geometry `out`, fragment `in` (GLSL
+    /// 1.30 §4.3.4, §4.3.6). Also the read-only fragment inputs
+    /// `gl_FragCoord`, `gl_FrontFacing`, and the geometry stage's
+    /// `gl_PrimitiveID`, `gl_Layer` outputs.
     Varying,
+    /// A geometry-shader input (GLSL 1.50 §4.3.4, GL_EXT_geometry_shader4
+    /// `varying in`): read-only; a user input is an array with one
+    /// element per vertex of the input primitive, matched by name with
+    /// the vertex stage's output of the element type. Also the built-ins
+    /// `gl_in[]`, `gl_PrimitiveIDIn` and the EXT form's `gl_PositionIn[]`...
+    GeometryInput,
     /// A user-declared fragment output (`out` in a fragment shader, GLSL
     /// 1.30 §4.3.6): written like a private global, its value goes to the
     /// draw buffer of [`Global::location`] (0 when absent and it is the
@@ -621,6 +641,92 @@ pub struct Module {
     /// redeclared `gl_FragCoord` (GLSL 1.50 §7.2,
     /// GL_ARB_fragment_coord_conventions).
     pub frag_coord: FragCoordConventions,
+    /// A geometry shader's layouts (all `None` in other stages).
+    pub geometry: GeometryLayout,
+}
+
+/// The primitive a geometry shader takes (`layout(...) in;`, GLSL 1.50
+/// §4.3.8.1, or GL_EXT_geometry_shader4's GEOMETRY_INPUT_TYPE).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum InputPrimitive {
+    Points,
+    Lines,
+    LinesAdjacency,
+    Triangles,
+    TrianglesAdjacency,
+}
+
+impl InputPrimitive {
+    pub const ALL: [InputPrimitive; 5] = [
+        InputPrimitive::Points,
+        InputPrimitive::Lines,
+        InputPrimitive::LinesAdjacency,
+        InputPrimitive::Triangles,
+        InputPrimitive::TrianglesAdjacency,
+    ];
+
+    /// The layout identifier.
+    pub fn name(self) -> &'static str {
+        match self {
+            InputPrimitive::Points => "points",
+            InputPrimitive::Lines => "lines",
+            InputPrimitive::LinesAdjacency => "lines_adjacency",
+            InputPrimitive::Triangles => "triangles",
+            InputPrimitive::TrianglesAdjacency => "triangles_adjacency",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<InputPrimitive> {
+        InputPrimitive::ALL.into_iter().find(|p| p.name() == name)
+    }
+
+    /// Vertices per input primitive: the size of every input array
+    /// (GLSL 1.50 §4.3.8.1's table).
+    pub fn vertices(self) -> u32 {
+        match self {
+            InputPrimitive::Points => 1,
+            InputPrimitive::Lines => 2,
+            InputPrimitive::LinesAdjacency => 4,
+            InputPrimitive::Triangles => 3,
+            InputPrimitive::TrianglesAdjacency => 6,
+        }
+    }
+}
+
+/// The primitive a geometry shader emits (`layout(...) out;`, §4.3.8.2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum OutputPrimitive {
+    Points,
+    LineStrip,
+    TriangleStrip,
+}
+
+impl OutputPrimitive {
+    pub fn name(self) -> &'static str {
+        match self {
+            OutputPrimitive::Points => "points",
+            OutputPrimitive::LineStrip => "line_strip",
+            OutputPrimitive::TriangleStrip => "triangle_strip",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<OutputPrimitive> {
+        [
+            OutputPrimitive::Points,
+            OutputPrimitive::LineStrip,
+            OutputPrimitive::TriangleStrip,
+        ]
+        .into_iter()
+        .find(|p| p.name() == name)
+    }
+}
+
+/// What a geometry shader object declares of its layouts.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct GeometryLayout {
+    pub input: Option<InputPrimitive>,
+    pub output: Option<OutputPrimitive>,
+    pub max_vertices: Option<u32>,
 }
 
 /// The conventions of `gl_FragCoord`: the default is a lower-left origin

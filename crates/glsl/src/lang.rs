@@ -198,6 +198,10 @@ pub enum Feature {
     /// than `gl_DepthRange`, `gl_TexCoord`, `gl_FogFragCoord` and the
     /// colour varyings, `gl_ClipVertex`, `ftransform()`.
     CompatibilityInterface,
+    /// The geometry stage: its inputs, outputs, layouts and built-ins
+    /// (GLSL 1.50 §2.2). GL_EXT_geometry_shader4's form for 1.10/1.20 is
+    /// not implemented.
+    GeometryShader,
 }
 
 /// Why a feature is not available to a shader.
@@ -317,7 +321,7 @@ impl Language {
             Feature::UniformBlocks => {
                 self.since_or(Version::V140, Extension::ArbUniformBufferObject)
             }
-            Feature::InOutBlocks => since(Version::V150),
+            Feature::InOutBlocks | Feature::GeometryShader => since(Version::V150),
             Feature::ExplicitLocation => {
                 self.since_or(Version::V330, Extension::ArbExplicitAttribLocation)
             }

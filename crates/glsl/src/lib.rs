@@ -31,9 +31,18 @@
 //!   storage, interpolation, precision and layout qualifiers, uniform and
 //!   input/output blocks. Their built-ins follow each version, profile and
 //!   stage ([`builtins`]), the overloads on `uint`/`uvec` and the
-//!   `usampler*` lookups included, except the geometry stage's variables.
-//!   Geometry-shader layouts are parsed and rejected (no geometry stage
-//!   yet); `gl_PerVertex` cannot be redeclared yet.
+//!   `usampler*` lookups included.
+//! - Geometry shaders (GLSL 1.50): `gl_in[]`, `gl_PrimitiveIDIn`, the
+//!   outputs, `EmitVertex`/`EndPrimitive`, `layout(...) in;` /
+//!   `layout(..., max_vertices = N) out;` (recorded in
+//!   [`ir::Module::geometry`]), input arrays sized by the input primitive,
+//!   and the link rules (a vertex shader, all three layouts, the
+//!   vertex → geometry → fragment interfaces). Not yet: the
+//!   GL_EXT/ARB_geometry_shader4 form on 1.10/1.20 (`varying in`,
+//!   `gl_PositionIn[]`...; a geometry shader needs `#version 150`),
+//!   redeclaring `gl_PerVertex`, and the uniform match between the vertex
+//!   and fragment stages of a program with a geometry stage. Nothing runs
+//!   a geometry stage yet (exec refuses it).
 //! - Integer operations the spec leaves undefined have the executor's
 //!   defined results when folded ([`consteval`]): shift amounts modulo 32,
 //!   `i32::MIN % -1` is 0; division and `%` by zero are not constant.

@@ -96,7 +96,7 @@ pub fn link(shaders: &[&Shader]) -> Program {
         })
         .collect();
     if diags.is_empty() {
-        for stage in [Stage::Vertex, Stage::Fragment] {
+        for stage in [Stage::Vertex, Stage::Geometry, Stage::Fragment] {
             let objects: Vec<(usize, &Module)> = shaders
                 .iter()
                 .enumerate()
@@ -112,8 +112,30 @@ pub fn link(shaders: &[&Shader]) -> Program {
                 program.stages.push(linked);
             }
         }
-        if let (Some(v), Some(f)) = (program.stage(Stage::Vertex), program.stage(Stage::Fragment)) {
-            check_interface(v, f, &mut diags);
+        let v = program.stage(Stage::Vertex);
+        let f = program.stage(Stage::Fragment);
+        match program.stage(Stage::Geometry) {
+            // GL 3.2 §2.12.2 (and GL_EXT_geometry_shader4): linking fails
+            // when a program has a geometry shader but no vertex shader.
+            Some(_) if v.is_none() => push(
+                &mut diags,
+                None,
+                Code::LinkNoMain,
+                "the program has a geometry shader but no vertex shader; attach one",
+            ),
+            Some(g) => {
+                if let Some(v) = v {
+                    check_interface(v, g, &mut diags);
+                }
+                if let Some(f) = f {
+                    check_interface(g, f, &mut diags);
+                }
+            }
+            None => {
+                if let (Some(v), Some(f)) = (v, f) {
+                    check_interface(v, f, &mut diags);
+                }
+            }
         }
     }
     program.info_log = render_link_log(&diags, shaders);
@@ -291,6 +313,7 @@ fn merge_stage(
         extensions: Vec::new(),
         blocks: Vec::new(),
         frag_coord: Default::default(),
+        geometry: Default::default(),
     };
     let mut errors = false;
     // Global name -> (merged id, object that declared it first).
@@ -441,6 +464,7 @@ fn merge_stage(
             }
         }
         merge_blocks(&mut merged, m, &map, obj, diags, &mut errors);
+        merge_geometry_layout(&mut merged.geometry, &m.geometry, obj, diags, &mut errors);
         merged.frag_coord.origin_upper_left |= m.frag_coord.origin_upper_left;
         merged.frag_coord.pixel_center_integer |= m.frag_coord.pixel_center_integer;
         remaps.push((obj, m, map));
@@ -621,6 +645,10 @@ fn merge_stage(
         }
     }
 
+    if stage == Stage::Geometry {
+        errors |= !check_geometry_layout(&mut merged, diags);
+    }
+
     // Unsized arrays take their largest implicit size; an explicit size
     // elsewhere must cover every index used (§4.3, shared globals).
     for g in &mut merged.globals {
@@ -674,6 +702,114 @@ fn merge_stage(
         module: merged,
         main,
     })
+}
+
+/// Adds one geometry shader object's layouts to the stage's: every object
+/// that declares one declares the same (GLSL 1.50 §4.3.8.1-2).
+fn merge_geometry_layout(
+    merged: &mut ir::GeometryLayout,
+    m: &ir::GeometryLayout,
+    obj: usize,
+    diags: &mut Vec<LinkDiagnostic>,
+    errors: &mut bool,
+) {
+    let mut differ = |what: String| {
+        *errors = true;
+        push(
+            diags,
+            Some(obj),
+            Code::LinkInterfaceMismatch,
+            format!("the geometry shader objects declare different {what}"),
+        );
+    };
+    match (merged.input, m.input) {
+        (Some(a), Some(b)) if a != b => differ(format!(
+            "input primitives (`{}' and `{}')",
+            a.name(),
+            b.name()
+        )),
+        (None, b) => merged.input = b,
+        _ => {}
+    }
+    match (merged.output, m.output) {
+        (Some(a), Some(b)) if a != b => differ(format!(
+            "output primitives (`{}' and `{}')",
+            a.name(),
+            b.name()
+        )),
+        (None, b) => merged.output = b,
+        _ => {}
+    }
+    match (merged.max_vertices, m.max_vertices) {
+        (Some(a), Some(b)) if a != b => differ(format!("`max_vertices' ({a} and {b})")),
+        (None, b) => merged.max_vertices = b,
+        _ => {}
+    }
+}
+
+/// A linked geometry stage has an input primitive, an output primitive
+/// and `max_vertices` (GL 3.2 §2.12.2); its input arrays take the input
+/// primitive's size, which a sized one must have. False on an error.
+fn check_geometry_layout(merged: &mut Module, diags: &mut Vec<LinkDiagnostic>) -> bool {
+    let g = merged.geometry;
+    let missing: Vec<&str> = [
+        g.input
+            .is_none()
+            .then_some("an input primitive (`layout(triangles) in;')"),
+        g.output
+            .is_none()
+            .then_some("an output primitive (`layout(triangle_strip) out;')"),
+        g.max_vertices
+            .is_none()
+            .then_some("`max_vertices' (`layout(max_vertices = 3) out;')"),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
+    if !missing.is_empty() {
+        push(
+            diags,
+            None,
+            Code::LinkInterfaceMismatch,
+            format!(
+                "no geometry shader object declares {}",
+                missing.join(", nor ")
+            ),
+        );
+        return false;
+    }
+    let Some(n) = g.input.map(ir::InputPrimitive::vertices) else {
+        return false;
+    };
+    let mut ok = true;
+    for gl in merged
+        .globals
+        .iter_mut()
+        .filter(|x| x.storage == Storage::GeometryInput)
+    {
+        match gl.ty.array {
+            Some(ArraySize::Unsized) => gl.ty.array = Some(ArraySize::Sized(n)),
+            Some(ArraySize::Sized(len)) if len != n => {
+                ok = false;
+                push(
+                    diags,
+                    None,
+                    Code::LinkInterfaceMismatch,
+                    format!(
+                        "geometry input `{}' has {len} elements, but the input primitive has {n} vertices",
+                        gl.name
+                    ),
+                );
+            }
+            _ => {}
+        }
+    }
+    for b in merged.blocks.iter_mut() {
+        if b.storage == Storage::GeometryInput && b.instance.is_some() {
+            b.array = Some(n);
+        }
+    }
+    ok
 }
 
 /// A global's initializer: `None` without one, `Some(None)` when it is not
@@ -781,16 +917,22 @@ fn same_members(a: &[ir::BlockMember], b: &[ir::BlockMember], m: &Module) -> boo
         })
 }
 
-/// Blocks between the stages: a fragment input block needs the vertex
-/// output block of its name, and uniform blocks of one name have the same
+/// Blocks between two consecutive stages: an input block needs the
+/// previous stage's output block of its name, and uniform blocks of one name have the same
 /// members in both stages (GLSL 1.50 §4.3.7: matched by block name, not
 /// instance name).
 fn check_blocks(vm: &Module, fm: &Module, diags: &mut Vec<LinkDiagnostic>) {
+    let (pn, cn) = (vm.stage.name(), fm.stage.name());
     for fb in &fm.blocks {
+        // An input block (a geometry shader's has its own storage)
+        // matches the output block of its name.
         let kind = |x: &&ir::InterfaceBlock| {
             x.name == fb.name
-                && x.storage == fb.storage
-                && (fb.storage == Storage::Uniform || !x.input)
+                && if fb.storage == Storage::Uniform {
+                    x.storage == Storage::Uniform
+                } else {
+                    x.storage == Storage::Varying && !x.input
+                }
         };
         let vb = vm.blocks.iter().find(kind);
         let used = fb.globals.iter().any(|g| fm.global(*g).read);
@@ -800,7 +942,7 @@ fn check_blocks(vm: &Module, fm: &Module, diags: &mut Vec<LinkDiagnostic>) {
                 None,
                 Code::LinkVaryingNotWritten,
                 format!(
-                    "the fragment shader reads block `{}' but the vertex shader has no output block of that name",
+                    "the {cn} shader reads block `{}' but the {pn} shader has no output block of that name",
                     fb.name
                 ),
             ),
@@ -813,14 +955,20 @@ fn check_blocks(vm: &Module, fm: &Module, diags: &mut Vec<LinkDiagnostic>) {
                             && a.interpolation == b.interpolation
                     })
                     && vb.layout == fb.layout
-                    && vb.array.is_some() == fb.array.is_some();
+                    // A geometry input block is the array of the vertex
+                    // stage's output block, one per vertex.
+                    && if fb.storage == Storage::GeometryInput {
+                        vb.array.is_none()
+                    } else {
+                        vb.array.is_some() == fb.array.is_some()
+                    };
                 if !same {
                     push(
                         diags,
                         None,
                         Code::LinkInterfaceMismatch,
                         format!(
-                            "block `{}' has different members in the vertex and fragment shaders",
+                            "block `{}' has different members in the {pn} and {cn} shaders",
                             fb.name
                         ),
                     );
@@ -859,6 +1007,9 @@ fn check_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
             limits::MAX_DRAW_BUFFERS,
             "fragment output",
         ),
+        // Geometry inputs and outputs take no location before GLSL 4.10
+        // (GL_ARB_separate_shader_objects).
+        Stage::Geometry => return,
     };
     let mut used: Vec<Option<&str>> = vec![None; max as usize];
     for g in s.module.globals.iter().filter(|g| g.storage == storage) {
@@ -976,6 +1127,29 @@ fn check_limits(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
                 .sum();
             limit("varying components", varyings, limits::MAX_VARYING_FLOATS);
         }
+        Stage::Geometry => {
+            limit(
+                "uniform components",
+                uniforms,
+                limits::MAX_GEOMETRY_UNIFORM_COMPONENTS,
+            );
+            limit(
+                "samplers",
+                samplers,
+                limits::MAX_GEOMETRY_TEXTURE_IMAGE_UNITS,
+            );
+            let outputs: u32 = m
+                .globals
+                .iter()
+                .filter(|g| g.storage == Storage::Varying && !g.builtin && g.written)
+                .map(|g| components(m, g.ty))
+                .sum();
+            limit(
+                "output components",
+                outputs,
+                limits::MAX_GEOMETRY_OUTPUT_COMPONENTS,
+            );
+        }
         Stage::Fragment => {
             limit(
                 "uniform components",
@@ -1003,6 +1177,13 @@ fn check_limits(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
 
 fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
     let (vm, fm) = (&v.module, &f.module);
+    let (pn, cn) = (v.stage.name(), f.stage.name());
+    // A geometry shader's inputs are arrays of the vertex outputs.
+    let (input, per_vertex) = if f.stage == Stage::Geometry {
+        (Storage::GeometryInput, true)
+    } else {
+        (Storage::Varying, false)
+    };
     check_blocks(vm, fm, diags);
     // Members and instances of blocks match by block (check_blocks).
     for fg in fm
@@ -1011,17 +1192,18 @@ fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnos
         .filter(|g| !g.builtin && g.block.is_none())
     {
         let vg = vm.globals.iter().find(|g| g.name == fg.name);
+        let fty = if per_vertex { fg.ty.element() } else { fg.ty };
         match fg.storage {
-            Storage::Varying => match vg {
+            s if s == input => match vg {
                 Some(vg) if vg.storage == Storage::Varying => {
-                    if !compatible_types(vg.ty, fg.ty) || vm.type_name(vg.ty) != fm.type_name(fg.ty)
+                    if !compatible_types(vg.ty, fty) || vm.type_name(vg.ty) != fm.type_name(fty)
                     {
                         push(
                             diags,
                             None,
                             Code::LinkInterfaceMismatch,
                             format!(
-                                "varying `{}' is {} in the vertex shader but {} in the fragment shader",
+                                "varying `{}' is {} in the {pn} shader but {} in the {cn} shader",
                                 fg.name,
                                 vm.type_name(vg.ty),
                                 fm.type_name(fg.ty)
@@ -1036,7 +1218,7 @@ fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnos
                             None,
                             Code::LinkInterfaceMismatch,
                             format!(
-                                "varying `{}' is interpolated `{}' in the vertex shader but `{}' in the fragment shader",
+                                "varying `{}' is interpolated `{}' in the {pn} shader but `{}' in the {cn} shader",
                                 fg.name,
                                 q(vg.interpolation),
                                 q(fg.interpolation)
@@ -1048,7 +1230,7 @@ fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnos
                             None,
                             Code::LinkInterfaceMismatch,
                             format!(
-                                "varying `{}' has different `centroid'/`invariant' qualifiers in the vertex and fragment shaders",
+                                "varying `{}' has different `centroid'/`invariant' qualifiers in the {pn} and {cn} shaders",
                                 fg.name
                             ),
                         );
@@ -1058,7 +1240,7 @@ fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnos
                             None,
                             Code::LinkVaryingNotWritten,
                             format!(
-                                "the fragment shader reads varying `{}' but the vertex shader never writes it",
+                                "the {cn} shader reads varying `{}' but the {pn} shader never writes it",
                                 fg.name
                             ),
                         );
@@ -1069,7 +1251,7 @@ fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnos
                     None,
                     Code::LinkVaryingNotWritten,
                     format!(
-                        "the fragment shader reads varying `{}' but the vertex shader does not declare it",
+                        "the {cn} shader reads varying `{}' but the {pn} shader does not declare it",
                         fg.name
                     ),
                 ),
@@ -1083,7 +1265,7 @@ fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnos
                             None,
                             Code::LinkInterfaceMismatch,
                             format!(
-                                "uniform `{}' is {} in the vertex shader but {} in the fragment shader",
+                                "uniform `{}' is {} in the {pn} shader but {} in the {cn} shader",
                                 fg.name,
                                 vm.type_name(vg.ty),
                                 fm.type_name(fg.ty)
@@ -1096,7 +1278,7 @@ fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnos
                                 None,
                                 Code::LinkInterfaceMismatch,
                                 format!(
-                                    "uniform `{}' has different initializers in the vertex and fragment shaders",
+                                    "uniform `{}' has different initializers in the {pn} and {cn} shaders",
                                     fg.name
                                 ),
                             );

@@ -59,7 +59,7 @@ fn report_tuple(r: Report) -> ReportTuple {
 fn stage_of(name: &str) -> PyResult<glsl::Stage> {
     report::parse_stage(name).ok_or_else(|| {
         PyValueError::new_err(format!(
-            "stage {name:?} is not 'vertex' or 'fragment' (GLSL 1.10/1.20 have no other stages)"
+            "stage {name:?} is not 'vertex', 'geometry' or 'fragment'"
         ))
     })
 }

@@ -43,6 +43,7 @@ pub struct Report {
 pub fn parse_stage(name: &str) -> Option<Stage> {
     match name.trim().to_ascii_lowercase().as_str() {
         "vertex" | "vert" | "vs" => Some(Stage::Vertex),
+        "geometry" | "geom" | "gs" => Some(Stage::Geometry),
         "fragment" | "frag" | "fs" => Some(Stage::Fragment),
         _ => None,
     }
@@ -178,6 +179,7 @@ mod tests {
     fn stage_names() {
         assert_eq!(parse_stage("Vertex"), Some(Stage::Vertex));
         assert_eq!(parse_stage("frag"), Some(Stage::Fragment));
-        assert_eq!(parse_stage("geometry"), None);
+        assert_eq!(parse_stage("geometry"), Some(Stage::Geometry));
+        assert_eq!(parse_stage("tessellation"), None);
     }
 }

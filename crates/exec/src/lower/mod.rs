@@ -187,6 +187,11 @@ const UNSUPPORTED_BUILTINS: &[&str] = &[
 ];
 
 pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
+    // The front end compiles and links geometry shaders; the pipeline has
+    // no geometry stage (primitive input, EmitVertex/EndPrimitive) yet.
+    if stage.stage == Stage::Geometry {
+        return unsupported("geometry shaders do not run yet".to_string());
+    }
     if let Some(g) = stage
         .module
         .globals
@@ -387,10 +392,11 @@ impl<'m> Lowerer<'m> {
             let n = size_of(g.ty, structs);
             let is_input = match self.stage {
                 Stage::Vertex => g.storage == Storage::Attribute,
+                Stage::Geometry => g.storage == Storage::GeometryInput,
                 Stage::Fragment => g.storage == Storage::Varying,
             };
             let is_output = match self.stage {
-                Stage::Vertex => {
+                Stage::Vertex | Stage::Geometry => {
                     g.storage == Storage::Varying
                         || (g.builtin
                             && g.storage == Storage::Private

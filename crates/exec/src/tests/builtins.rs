@@ -359,7 +359,7 @@ fn glsl130_lookups_lower_like_their_120_forms() {
     let body = |stage: Stage, v: u32, lookups: &str| {
         let (input, output) = match stage {
             Stage::Vertex => ("attribute", "gl_Position"),
-            Stage::Fragment => ("varying", "gl_FragColor"),
+            _ => ("varying", "gl_FragColor"),
         };
         let k = kernel(
             stage,

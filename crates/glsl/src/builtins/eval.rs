@@ -197,7 +197,7 @@ fn eval(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<Vec<ConstScal
                 result.component_count()? as usize
             ])
         }
-        Ftransform | Noise1 | Noise2 | Noise3 | Noise4 => None,
+        Ftransform | Noise1 | Noise2 | Noise3 | Noise4 | EmitVertex | EndPrimitive => None,
         Texture1D | Texture1DProj | Texture1DLod | Texture1DProjLod | Texture2D | Texture2DProj
         | Texture2DLod | Texture2DProjLod | Texture3D | Texture3DProj | Texture3DLod
         | Texture3DProjLod | TextureCube | TextureCubeLod | Shadow1D | Shadow2D | Shadow1DProj

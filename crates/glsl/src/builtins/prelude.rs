@@ -26,7 +26,10 @@
 //! - fragment inputs, including `gl_FragCoord` and `gl_FrontFacing`, are
 //!   `varying`s (read-only in a fragment shader);
 //! - vertex outputs to the fragment stage are `varying`s (writable in a
-//!   vertex shader).
+//!   vertex shader);
+//! - geometry inputs are `in` (read-only: `gl_in[]`, `gl_PrimitiveIDIn`);
+//!   its outputs are plain globals like the vertex stage's, or `varying`s
+//!   (`gl_PrimitiveID`, `gl_Layer`, the compatibility colours).
 //!
 //! Nothing else is declared: a name missing from this text is not a
 //! built-in of that language and stage. The text starts with the matching
@@ -57,7 +60,11 @@ pub fn prelude(lang: Language, stage: Stage) -> String {
 enum Stages {
     All,
     Vertex,
+    Geometry,
     Fragment,
+    /// The vertex and geometry stages (the explicit-LOD lookups of
+    /// 1.10/1.20, which GL_EXT_geometry_shader4 gives geometry shaders).
+    VertexGeometry,
 }
 
 /// Where a built-in exists: from `since`, up to but not including `until`,
@@ -70,6 +77,9 @@ pub(crate) struct Where {
     /// Part of the fixed-function interface GLSL 1.40 removes from the
     /// core profile ([`Feature::CompatibilityInterface`]).
     compat_only: bool,
+    /// The core profile's form of something the compatibility profile
+    /// extends (`gl_in[]`'s members, GLSL 1.50 §7.1 and §7.1.1).
+    core_only: bool,
 }
 
 impl Where {
@@ -79,6 +89,7 @@ impl Where {
         until: None,
         stages: Stages::All,
         compat_only: false,
+        core_only: false,
     };
 
     const fn since(v: Version) -> Where {
@@ -98,6 +109,20 @@ impl Where {
     const fn vs(self) -> Where {
         Where {
             stages: Stages::Vertex,
+            ..self
+        }
+    }
+
+    const fn gs(self) -> Where {
+        Where {
+            stages: Stages::Geometry,
+            ..self
+        }
+    }
+
+    const fn core(self) -> Where {
+        Where {
+            core_only: true,
             ..self
         }
     }
@@ -122,9 +147,12 @@ impl Where {
             && match self.stages {
                 Stages::All => true,
                 Stages::Vertex => stage == Stage::Vertex,
+                Stages::Geometry => stage == Stage::Geometry,
                 Stages::Fragment => stage == Stage::Fragment,
+                Stages::VertexGeometry => stage != Stage::Fragment,
             }
             && (!self.compat_only || lang.allows(Feature::CompatibilityInterface))
+            && (!self.core_only || !lang.allows(Feature::CompatibilityInterface))
     }
 }
 
@@ -475,6 +503,61 @@ varying float gl_FogFragCoord;",
             Text("varying float gl_ClipDistance[];"),
         ),
         (Where::since(V150).fs(), Text("varying int gl_PrimitiveID;")),
+        // GLSL 1.50 §7.1 geometry shader special variables: the inputs,
+        // one `gl_PerVertex' per vertex of the input primitive (sized by
+        // `layout(...) in;'), and the outputs of the vertex being emitted.
+        (
+            Where::since(V150).gs().core(),
+            Text(
+                "in gl_PerVertex {
+    vec4 gl_Position;
+    float gl_PointSize;
+    float gl_ClipDistance[];
+} gl_in[];",
+            ),
+        ),
+        // §7.1.1: the compatibility profile's `gl_in[]' adds the vertex
+        // stage's fixed-function outputs.
+        (
+            Where::since(V150).gs().compat(),
+            Text(
+                "in gl_PerVertex {
+    vec4 gl_Position;
+    float gl_PointSize;
+    float gl_ClipDistance[];
+    vec4 gl_ClipVertex;
+    vec4 gl_FrontColor;
+    vec4 gl_BackColor;
+    vec4 gl_FrontSecondaryColor;
+    vec4 gl_BackSecondaryColor;
+    vec4 gl_TexCoord[];
+    float gl_FogFragCoord;
+} gl_in[];",
+            ),
+        ),
+        (
+            Where::since(V150).gs(),
+            Text(
+                "in int gl_PrimitiveIDIn;
+vec4 gl_Position;
+float gl_PointSize;
+float gl_ClipDistance[];
+varying int gl_PrimitiveID;
+varying int gl_Layer;",
+            ),
+        ),
+        (
+            Where::since(V150).gs().compat(),
+            Text(
+                "vec4 gl_ClipVertex;
+varying vec4 gl_FrontColor;
+varying vec4 gl_BackColor;
+varying vec4 gl_FrontSecondaryColor;
+varying vec4 gl_BackSecondaryColor;
+varying vec4 gl_TexCoord[];
+varying float gl_FogFragCoord;",
+            ),
+        ),
     ]
 };
 
@@ -675,10 +758,18 @@ const FUNCTIONS: &[(Where, &str)] = &[
     (Where::ALL, "vec2 noise2(genType)"),
     (Where::ALL, "vec3 noise3(genType)"),
     (Where::ALL, "vec4 noise4(genType)"),
+    // §8.10 geometry shader functions
+    (Where::since(V150).gs(), "void EmitVertex()"),
+    (Where::since(V150).gs(), "void EndPrimitive()"),
 ];
 
-/// The explicit-LOD lookups of 1.10 and 1.20: vertex shaders only.
-const LOD: Where = VS.until(V130);
+/// The explicit-LOD lookups of 1.10 and 1.20: vertex shaders only (and
+/// geometry shaders, GL_EXT_geometry_shader4).
+const LOD: Where = Where {
+    stages: Stages::VertexGeometry,
+    ..Where::ALL
+}
+.until(V130);
 /// The same from 1.30 on, in every stage (GLSL 1.30 §8.7 lists them
 /// without a stage restriction).
 const LOD_130: Where = Where::since(V130);
@@ -1162,7 +1253,7 @@ mod tests {
             ] {
                 let mut l = Language::new(v, true);
                 l.profile = p;
-                for s in [Stage::Vertex, Stage::Fragment] {
+                for s in [Stage::Vertex, Stage::Geometry, Stage::Fragment] {
                     out.push((l, s));
                 }
             }

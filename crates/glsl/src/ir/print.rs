@@ -34,7 +34,9 @@
 //! ```
 //!
 //! - The header names the stage and version, then one `#extension` line
-//!   per directive, in source order.
+//!   per directive, in source order, then a geometry shader's layouts
+//!   (`layout(triangles) in;`, `layout(line_strip, max_vertices = 4) out;`)
+//!   as far as it declares them.
 //! - The built-in structs (`gl_LightSourceParameters`...: every module
 //!   has them, their members are the spec's) on one line, then the
 //!   shader's struct declarations (`sN` is the
@@ -140,6 +142,16 @@ impl<'a> Printer<'a> {
             };
             w!(self, "#extension {name} : {b}\n");
         }
+        let g = m.geometry;
+        if let Some(p) = g.input {
+            w!(self, "layout({}) in;\n", p.name());
+        }
+        let out: Vec<String> = (g.output.map(|p| p.name().to_string()).into_iter())
+            .chain(g.max_vertices.map(|n| format!("max_vertices = {n}")))
+            .collect();
+        if !out.is_empty() {
+            w!(self, "layout({}) out;\n", out.join(", "));
+        }
         // The built-in structs (members fixed by the spec) on one line.
         let builtins: Vec<String> = (m.structs.iter().enumerate())
             .filter(|(_, s)| s.builtin)
@@ -182,6 +194,7 @@ impl<'a> Printer<'a> {
                 Storage::Attribute => "attribute ",
                 Storage::Varying => "varying ",
                 Storage::FragOutput => "out ",
+                Storage::GeometryInput => "in ",
             });
             let _ = write!(line, "{} {}", self.ty(g.ty), g.name);
             if let Some(c) = &g.init {

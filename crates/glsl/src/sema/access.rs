@@ -418,6 +418,7 @@ impl Analyzer {
                             Storage::Varying if self.stage == Stage::Fragment => {
                                 Some("a fragment shader input")
                             }
+                            Storage::GeometryInput => Some("a geometry shader input"),
                             _ => None,
                         };
                         if let Some(kind) = ro {

@@ -74,20 +74,20 @@ impl Analyzer {
     }
 
     /// The storage of a global with qualifiers `q` in this stage: a vertex
-    /// `in` is an attribute, a vertex `out` and a fragment `in` are
-    /// varyings, a fragment `out` is a user output (GLSL 1.30 §4.3.4,
-    /// §4.3.6).
+    /// `in` is an attribute, a vertex or geometry `out` and a fragment `in`
+    /// are varyings, a geometry `in` a geometry input, a fragment `out` a
+    /// user output (GLSL 1.30 §4.3.4, §4.3.6; 1.50 §4.3.4).
     pub(crate) fn global_storage(&self, q: &VarQuals) -> Storage {
-        let vertex = self.stage == Stage::Vertex;
-        match q.storage {
-            Some(Qualifier::Const) => Storage::Const,
-            Some(Qualifier::Uniform) => Storage::Uniform,
-            Some(Qualifier::Attribute) => Storage::Attribute,
-            Some(Qualifier::Varying) => Storage::Varying,
-            Some(Qualifier::In) if vertex => Storage::Attribute,
-            Some(Qualifier::In) => Storage::Varying,
-            Some(Qualifier::Out) if vertex => Storage::Varying,
-            Some(Qualifier::Out) => Storage::FragOutput,
+        match (q.storage, self.stage) {
+            (Some(Qualifier::Const), _) => Storage::Const,
+            (Some(Qualifier::Uniform), _) => Storage::Uniform,
+            (Some(Qualifier::Attribute), _) => Storage::Attribute,
+            (Some(Qualifier::Varying), _) => Storage::Varying,
+            (Some(Qualifier::In), Stage::Vertex) => Storage::Attribute,
+            (Some(Qualifier::In), Stage::Geometry) => Storage::GeometryInput,
+            (Some(Qualifier::In), Stage::Fragment) => Storage::Varying,
+            (Some(Qualifier::Out), Stage::Vertex | Stage::Geometry) => Storage::Varying,
+            (Some(Qualifier::Out), Stage::Fragment) => Storage::FragOutput,
             _ => Storage::Private,
         }
     }
@@ -128,7 +128,28 @@ impl Analyzer {
             // The prelude's inputs (`gl_VertexID`, `gl_FrontFacing`,
             // `gl_PrimitiveID`) have types user attributes and varyings
             // may not.
-            Some(Storage::Attribute | Storage::Varying) if self.builtin_mode => {}
+            Some(Storage::Attribute | Storage::Varying | Storage::GeometryInput)
+                if self.builtin_mode => {}
+            Some(Storage::GeometryInput) => {
+                // GLSL 1.50 §4.3.4: the types of outputs, one element per
+                // input vertex.
+                let struct_ok = is_struct && !self.contains_integer(elem);
+                if !(float_based || int_based || struct_ok) {
+                    self.error(
+                        Code::TypeMismatch,
+                        d.name.span,
+                        format!("geometry input `{name}' has type {tn}; inputs must be float, int or uint scalars, vectors, float matrices or structs"),
+                    );
+                } else if !ty.is_array() {
+                    self.error(
+                        Code::TypeMismatch,
+                        d.name.span,
+                        format!("geometry shader input `{name}' must be an array: `in {tn} {name}[];'"),
+                    )
+                    .notes
+                    .push("GLSL 1.50 §4.3.4: a geometry shader has one input per vertex of its primitive; the primitive's layout sizes the array".into());
+                }
+            }
             Some(Storage::Attribute) => {
                 // GLSL 1.30 adds integer inputs; 1.50 arrays of inputs (not
                 // of `attribute').
@@ -168,6 +189,8 @@ impl Analyzer {
                         ("varying", "varyings")
                     } else if vertex {
                         ("vertex output", "vertex outputs")
+                    } else if self.stage == Stage::Geometry {
+                        ("geometry output", "geometry outputs")
                     } else {
                         ("fragment input", "fragment inputs")
                     };
@@ -181,7 +204,7 @@ impl Analyzer {
                         d.name.span,
                         format!("{what} `{name}' has type {tn}; {plural} must be {allowed}"),
                     );
-                } else if !vertex
+                } else if self.stage == Stage::Fragment
                     && (int_based || (is_struct && self.contains_integer(elem)))
                     && q.interpolation.map(|(i, _)| i) != Some(Interpolation::Flat)
                     && !self.builtin_mode
@@ -392,6 +415,9 @@ impl Analyzer {
                 span: d.name.span,
             });
             self.scopes.insert(name, Symbol::Var(Var::Global(id)));
+            if storage == Storage::GeometryInput && !self.builtin_mode && ty.is_array() {
+                self.size_geometry_input(id, d.name.span);
+            }
             None
         } else {
             let local = self.new_local(&name, ty, is_const, d.name.span);
@@ -550,7 +576,9 @@ impl Analyzer {
             && ty.is_array()
             && q.storage != Some(Qualifier::Varying);
         let colors: &[&str] = match self.stage {
-            Stage::Vertex => &[
+            // Compatibility-profile geometry outputs are the vertex
+            // stage's (GLSL 1.50 §7.1.1).
+            Stage::Vertex | Stage::Geometry => &[
                 "gl_FrontColor",
                 "gl_BackColor",
                 "gl_FrontSecondaryColor",

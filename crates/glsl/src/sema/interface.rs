@@ -28,9 +28,11 @@ pub(crate) struct LayoutQuals {
     pub row_major: Option<(bool, Span)>,
     pub origin_upper_left: Option<Span>,
     pub pixel_center_integer: Option<Span>,
-    /// Geometry-shader identifiers (`triangles`, `max_vertices`...): no
-    /// stage here accepts them.
-    pub geometry: Option<(String, Span)>,
+    /// Geometry-shader identifiers (`triangles`, `max_vertices`...) in
+    /// order, with the value of `max_vertices`: only `layout(...) in;` and
+    /// `layout(...) out;` of a geometry shader take them
+    /// ([`Analyzer::geometry_layout`]).
+    pub geometry: Vec<(String, Option<u32>, Span)>,
 }
 
 /// The qualifiers of a variable declaration, checked.
@@ -319,11 +321,14 @@ impl Analyzer {
     /// `centroid` and `invariant` placement (§4.3.4-§4.3.7, §4.6.1).
     fn stage_qualifiers(&mut self, q: &mut VarQuals, quals: &[SpannedQualifier]) {
         let vertex = self.stage == Stage::Vertex;
+        let fragment = self.stage == Stage::Fragment;
         let storage = q.storage;
+        // A geometry shader's inputs and outputs both take interpolation
+        // and `centroid' (GLSL 1.50 §4.3.4, §4.3.6).
         if let Some((i, span)) = q.interpolation {
             let msg = match storage {
                 Some(Qualifier::In) if vertex => Some("vertex shader inputs"),
-                Some(Qualifier::Out) if !vertex => Some("fragment shader outputs"),
+                Some(Qualifier::Out) if fragment => Some("fragment shader outputs"),
                 Some(Qualifier::In | Qualifier::Out) => None,
                 Some(Qualifier::Varying) => Some("`varying' (use `in'/`out')"),
                 Some(Qualifier::Attribute) => Some("`attribute'"),
@@ -343,7 +348,7 @@ impl Analyzer {
         if q.centroid {
             let bad = match storage {
                 Some(Qualifier::In) => vertex,
-                Some(Qualifier::Out) => !vertex,
+                Some(Qualifier::Out) => fragment,
                 _ => false,
             };
             if bad {
@@ -364,8 +369,8 @@ impl Analyzer {
         if q.invariant && !self.builtin_mode {
             let ok = match storage {
                 Some(Qualifier::Varying) => true,
-                Some(Qualifier::Out) => vertex,
-                Some(Qualifier::In) => !vertex,
+                Some(Qualifier::Out) => !fragment,
+                Some(Qualifier::In) => fragment,
                 _ => false,
             };
             if !ok {
@@ -472,10 +477,11 @@ impl Analyzer {
                 }
             }
             g if GEOMETRY_LAYOUTS.contains(&g) => {
-                if let Some(e) = &id.value {
-                    self.layout_value(e);
+                let value = id.value.as_ref().and_then(|e| self.layout_value(e));
+                if id.value.is_some() && value.is_none() {
+                    return;
                 }
-                out.geometry = Some((lower.clone(), span));
+                out.geometry.push((lower.clone(), value, span));
             }
             _ => {
                 self.error(
@@ -570,15 +576,8 @@ impl Analyzer {
                 );
             }
         }
-        if let Some((g, span)) = &l.geometry {
-            self.error(
-                Code::StageMismatch,
-                *span,
-                format!(
-                    "`{g}' is a geometry shader layout qualifier; {} shaders have no input or output layouts",
-                    self.stage.name()
-                ),
-            );
+        if let Some((g, _, span)) = l.geometry.first() {
+            self.misplaced_geometry_layout(g, *span);
         }
         location
     }
@@ -652,7 +651,7 @@ impl Analyzer {
                 if l.location.is_some()
                     || l.origin_upper_left.is_some()
                     || l.pixel_center_integer.is_some()
-                    || l.geometry.is_some()
+                    || !l.geometry.is_empty()
                 {
                     self.error(
                         Code::BadQualifier,
@@ -668,16 +667,15 @@ impl Analyzer {
                     self.default_row_major = r;
                 }
             }
+            Some(Qualifier::In | Qualifier::Out)
+                if self.stage == Stage::Geometry && l.span.is_some() =>
+            {
+                let input = q.storage == Some(Qualifier::In);
+                self.geometry_layout(&q, input);
+            }
             _ => {
-                if let Some((g, s)) = &l.geometry {
-                    self.error(
-                        Code::StageMismatch,
-                        *s,
-                        format!(
-                            "`{g}' is a geometry shader layout qualifier; {} shaders have no input or output layouts",
-                            self.stage.name()
-                        ),
-                    );
+                if let Some((g, _, s)) = l.geometry.first() {
+                    self.misplaced_geometry_layout(g, *s);
                 } else {
                     self.error(
                         Code::Syntax,
@@ -705,8 +703,14 @@ impl Analyzer {
                     return;
                 }
                 let is_in = q.storage == Some(Qualifier::In);
-                let vertex = self.stage == Stage::Vertex;
-                if is_in == vertex {
+                // Vertex shaders have output blocks, fragment shaders
+                // input blocks, geometry shaders both (GLSL 1.50 §4.3.7).
+                let allowed = match self.stage {
+                    Stage::Vertex => !is_in,
+                    Stage::Geometry => true,
+                    Stage::Fragment => is_in,
+                };
+                if !allowed {
                     self.error(
                         Code::StageMismatch,
                         b.name.span,
@@ -718,7 +722,12 @@ impl Analyzer {
                     );
                     return;
                 }
-                (Storage::Varying, is_in)
+                let storage = if is_in && self.stage == Stage::Geometry {
+                    Storage::GeometryInput
+                } else {
+                    Storage::Varying
+                };
+                (storage, is_in)
             }
             _ => {
                 self.error(
@@ -750,7 +759,7 @@ impl Analyzer {
             if l.location.is_some()
                 || l.origin_upper_left.is_some()
                 || l.pixel_center_integer.is_some()
-                || l.geometry.is_some()
+                || !l.geometry.is_empty()
             {
                 self.error(
                     Code::BadQualifier,
@@ -762,8 +771,26 @@ impl Analyzer {
             self.error(
                 Code::BadQualifier,
                 s,
-                "input and output blocks of vertex and fragment shaders take no layout",
+                "input and output blocks take no layout",
+            )
+            .notes
+            .push(
+                "a geometry shader's primitive layouts stand alone: `layout(triangles) in;'".into(),
             );
+        }
+        if storage == Storage::GeometryInput && b.instance.as_ref().is_none_or(|(_, a)| a.is_none())
+        {
+            self.error(
+                Code::TypeMismatch,
+                b.name.span,
+                format!(
+                    "geometry shader input block `{}' must be declared as an array: `in {} {{ ... }} name[];'",
+                    b.name.name, b.name.name
+                ),
+            )
+            .notes
+            .push("GLSL 1.50 §4.3.4: a geometry shader has one input per vertex of its primitive".into());
+            return;
         }
         if b.name.name.starts_with("gl_") && !self.builtin_mode {
             self.error(
@@ -851,7 +878,9 @@ impl Analyzer {
                     },
                     arr.as_ref(),
                 );
-                if ty.array == Some(ArraySize::Unsized) {
+                // Geometry input arrays take their size from the input
+                // primitive (GLSL 1.50 §4.3.8.1).
+                if ty.array == Some(ArraySize::Unsized) && storage != Storage::GeometryInput {
                     self.error(
                         Code::BadArraySize,
                         inst.span,
@@ -876,6 +905,13 @@ impl Analyzer {
                 self.scopes
                     .insert(inst.name.clone(), Symbol::Var(Var::Global(gid)));
                 globals.push(gid);
+                if storage == Storage::GeometryInput {
+                    self.size_geometry_input(gid, inst.span);
+                    if let Some(ArraySize::Sized(n)) = self.module.globals[gid.0 as usize].ty.array
+                    {
+                        array = Some(n);
+                    }
+                }
             }
         }
         self.module.blocks.push(ir::InterfaceBlock {
@@ -948,6 +984,9 @@ impl Analyzer {
     ) -> Vec<BlockMember> {
         let mut out: Vec<BlockMember> = Vec::new();
         let frag_input = storage == Storage::Varying && self.stage == Stage::Fragment;
+        // Input or output block (a geometry shader's inputs have their own
+        // storage).
+        let inout = matches!(storage, Storage::Varying | Storage::GeometryInput);
         for m in &b.members {
             let mut member_row_major = row_major;
             let mut interpolation = block_interp;
@@ -966,7 +1005,7 @@ impl Analyzer {
                             || l.block_layout.is_some()
                             || l.origin_upper_left.is_some()
                             || l.pixel_center_integer.is_some()
-                            || l.geometry.is_some()
+                            || !l.geometry.is_empty()
                             || (storage != Storage::Uniform && l.row_major.is_some());
                         if bad {
                             self.error(
@@ -977,19 +1016,17 @@ impl Analyzer {
                         }
                     }
                     Qualifier::Uniform if storage == Storage::Uniform => {}
-                    Qualifier::In if storage == Storage::Varying && b_is(b, Qualifier::In) => {}
-                    Qualifier::Out if storage == Storage::Varying && b_is(b, Qualifier::Out) => {}
-                    Qualifier::Flat | Qualifier::Smooth | Qualifier::Noperspective
-                        if storage == Storage::Varying =>
-                    {
+                    Qualifier::In if inout && b_is(b, Qualifier::In) => {}
+                    Qualifier::Out if inout && b_is(b, Qualifier::Out) => {}
+                    Qualifier::Flat | Qualifier::Smooth | Qualifier::Noperspective if inout => {
                         interpolation = Some(match sq.qualifier {
                             Qualifier::Flat => Interpolation::Flat,
                             Qualifier::Smooth => Interpolation::Smooth,
                             _ => Interpolation::NoPerspective,
                         });
                     }
-                    Qualifier::Centroid if storage == Storage::Varying => centroid = true,
-                    Qualifier::Invariant if storage == Storage::Varying => invariant = true,
+                    Qualifier::Centroid if inout => centroid = true,
+                    Qualifier::Invariant if inout => invariant = true,
                     Qualifier::Lowp | Qualifier::Mediump | Qualifier::Highp => {
                         precision = Some(sq.span);
                     }
@@ -1023,7 +1060,8 @@ impl Analyzer {
                     );
                     continue;
                 }
-                if mty.array == Some(ArraySize::Unsized) {
+                // The prelude's `gl_PerVertex' has `gl_ClipDistance[]'.
+                if mty.array == Some(ArraySize::Unsized) && !self.builtin_mode {
                     self.error(
                         Code::BadArraySize,
                         d.span,
@@ -1041,7 +1079,7 @@ impl Analyzer {
                     );
                     continue;
                 }
-                if storage == Storage::Varying && mty.scalar() == Some(Scalar::Bool) {
+                if inout && mty.scalar() == Some(Scalar::Bool) {
                     self.error(
                         Code::TypeMismatch,
                         d.name.span,

@@ -23,6 +23,7 @@ mod construct;
 mod decl;
 mod expr;
 mod func;
+mod geometry;
 mod interface;
 mod scope;
 mod stmt;
@@ -74,6 +75,15 @@ pub fn analyze(tu: &TranslationUnit, ctx: &Context) -> (Module, Vec<Diagnostic>)
         })
         .map(|n| (n.name.clone(), n.span))
         .collect();
+    if ctx.stage == Stage::Geometry {
+        // Reported at the start of the source: the whole shader is the
+        // construct.
+        a.require(
+            crate::lang::Feature::GeometryShader,
+            "a geometry shader",
+            crate::source::Span::default(),
+        );
+    }
     a.translation_unit(tu);
     if ctx.invariant_all && ctx.stage == Stage::Vertex {
         // GLSL 1.20 §4.6.1: "#pragma STDGL invariant(all)" makes all
@@ -171,6 +181,7 @@ fn build_env(lang: Language, stage: Stage) -> BuiltinEnv {
             extensions: Vec::new(),
             blocks: Vec::new(),
             frag_coord: Default::default(),
+            geometry: Default::default(),
         },
     );
     // Prototypes without bodies become built-in functions.
@@ -274,6 +285,10 @@ pub(crate) struct Analyzer {
     pub default_row_major: bool,
     /// The first redeclaration of `gl_FragCoord`, with its layout.
     pub frag_coord_redeclared: Option<ir::FragCoordConventions>,
+    /// A geometry shader's first sized input array before any input
+    /// layout: its size and name (later sizes must agree, GLSL 1.50
+    /// §4.3.8.1).
+    pub geometry_input_len: Option<(u32, String)>,
 }
 
 impl Analyzer {
@@ -293,6 +308,7 @@ impl Analyzer {
                 extensions: Vec::new(),
                 blocks: Vec::new(),
                 frag_coord: Default::default(),
+                geometry: Default::default(),
             },
             diags: Vec::new(),
             scopes: Scopes::new(),
@@ -307,6 +323,7 @@ impl Analyzer {
             default_block_layout: ir::BlockLayout::Shared,
             default_row_major: false,
             frag_coord_redeclared: None,
+            geometry_input_len: None,
         }
     }
 
@@ -387,7 +404,8 @@ impl Analyzer {
                 if let Some(Some(g)) = self.builtin_globals.get(i as usize) {
                     return Some(*g);
                 }
-                let g = self.env?.globals.get(i as usize)?.clone();
+                let mut g = self.env?.globals.get(i as usize)?.clone();
+                g.ty = self.builtin_global_type(&g);
                 let id = GlobalId(self.module.globals.len() as u32);
                 self.module.globals.push(g);
                 if let Some(slot) = self.builtin_globals.get_mut(i as usize) {
@@ -395,6 +413,19 @@ impl Analyzer {
                 }
                 Some(id)
             }
+        }
+    }
+
+    /// The type of a built-in global as this shader sees it: `gl_in[]'
+    /// (and the EXT form's `gl_PositionIn[]'...) take the input
+    /// primitive's size once it is declared.
+    fn builtin_global_type(&self, g: &ir::Global) -> Type {
+        match (g.storage, g.ty.array, self.geometry_input_size()) {
+            (ir::Storage::GeometryInput, Some(crate::types::ArraySize::Unsized), Some(n)) => Type {
+                array: Some(crate::types::ArraySize::Sized(n)),
+                ..g.ty
+            },
+            _ => g.ty,
         }
     }
 
@@ -421,7 +452,7 @@ impl Analyzer {
                 None => self
                     .env
                     .and_then(|e| e.globals.get(i as usize))
-                    .map_or(Type::ERROR, |g| g.ty),
+                    .map_or(Type::ERROR, |g| self.builtin_global_type(g)),
             },
         }
     }
@@ -540,7 +571,7 @@ impl Analyzer {
                 ));
             }
         }
-        let others = [Stage::Vertex, Stage::Fragment]
+        let others = [Stage::Vertex, Stage::Geometry, Stage::Fragment]
             .into_iter()
             .filter(|&s| s != self.stage);
         for other in others {
@@ -608,5 +639,7 @@ pub(crate) fn const_expr(value: ConstValue, span: Span) -> ir::Expr {
     }
 }
 
+#[cfg(test)]
+mod geometry_tests;
 #[cfg(test)]
 mod tests;

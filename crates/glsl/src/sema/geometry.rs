@@ -1,0 +1,254 @@
+//! A geometry shader's layouts and the sizes of its input arrays (GLSL
+//! 1.50 §4.3.8.1-2): `layout(triangles) in;` names the input primitive,
+//! which sizes every input array (declared before or after it);
+//! `layout(triangle_strip, max_vertices = N) out;` the output primitive
+//! and the vertex count. They are recorded in [`ir::Module::geometry`].
+
+use super::Analyzer;
+use crate::diag::Code;
+use crate::ir::{GlobalId, InputPrimitive, OutputPrimitive, Stage, Storage};
+use crate::limits;
+use crate::source::Span;
+use crate::types::ArraySize;
+
+use super::interface::VarQuals;
+
+impl Analyzer {
+    /// A geometry layout identifier where none is allowed.
+    pub(crate) fn misplaced_geometry_layout(&mut self, g: &str, span: Span) {
+        let msg = if self.stage == Stage::Geometry {
+            format!("`{g}' is allowed only in `layout({g}) in;' or `layout({g}) out;', not on a declaration")
+        } else {
+            format!(
+                "`{g}' is a geometry shader layout qualifier; {} shaders have no input or output layouts",
+                self.stage.name()
+            )
+        };
+        let code = if self.stage == Stage::Geometry {
+            Code::BadQualifier
+        } else {
+            Code::StageMismatch
+        };
+        self.error(code, span, msg);
+    }
+
+    /// The size of every input array: the vertices of the declared input
+    /// primitive.
+    pub(crate) fn geometry_input_size(&self) -> Option<u32> {
+        self.module.geometry.input.map(InputPrimitive::vertices)
+    }
+
+    /// `layout(...) in;` (`input`) or `layout(...) out;` of a geometry
+    /// shader.
+    pub(crate) fn geometry_layout(&mut self, q: &VarQuals, input: bool) {
+        let l = &q.layout;
+        let others = [
+            l.location.map(|(_, s)| s),
+            l.index,
+            l.block_layout.map(|(_, s)| s),
+            l.row_major.map(|(_, s)| s),
+            l.origin_upper_left,
+            l.pixel_center_integer,
+        ];
+        for s in others.into_iter().flatten() {
+            self.error(
+                Code::BadQualifier,
+                s,
+                format!(
+                    "a geometry shader's `layout(...) {}' takes only {}",
+                    if input { "in;" } else { "out;" },
+                    if input {
+                        "points, lines, lines_adjacency, triangles or triangles_adjacency"
+                    } else {
+                        "points, line_strip, triangle_strip and max_vertices"
+                    }
+                ),
+            );
+        }
+        let mut prim: Option<(&str, Span)> = None;
+        let mut max_vertices = None;
+        for (name, value, s) in &l.geometry {
+            let ok = if input {
+                InputPrimitive::from_name(name).is_some()
+            } else {
+                name == "max_vertices" || OutputPrimitive::from_name(name).is_some()
+            };
+            if !ok {
+                self.error(
+                    Code::BadQualifier,
+                    *s,
+                    format!(
+                        "`{name}' is not an {} layout of a geometry shader",
+                        if input { "input" } else { "output" }
+                    ),
+                )
+                .notes
+                .push(if input {
+                    "inputs: points, lines, lines_adjacency, triangles, triangles_adjacency".into()
+                } else {
+                    "outputs: points, line_strip, triangle_strip, max_vertices = N".into()
+                });
+                continue;
+            }
+            if name == "max_vertices" {
+                max_vertices = Some((value.unwrap_or(0), *s));
+            } else if let Some((first, _)) = prim {
+                self.error(
+                    Code::BadQualifier,
+                    *s,
+                    format!("`{name}' after `{first}': one layout declares one primitive"),
+                );
+            } else {
+                prim = Some((name, *s));
+            }
+        }
+        if input {
+            if let Some((name, s)) = prim {
+                let p = InputPrimitive::from_name(name).unwrap_or(InputPrimitive::Points);
+                self.declare_input_primitive(p, s);
+            }
+            return;
+        }
+        if let Some((name, s)) = prim {
+            let p = OutputPrimitive::from_name(name).unwrap_or(OutputPrimitive::Points);
+            match self.module.geometry.output {
+                Some(old) if old != p => {
+                    self.error(
+                        Code::Redeclared,
+                        s,
+                        format!(
+                            "output primitive `{name}' contradicts the earlier `layout({}) out;'",
+                            old.name()
+                        ),
+                    );
+                }
+                _ => self.module.geometry.output = Some(p),
+            }
+        }
+        if let Some((n, s)) = max_vertices {
+            if n > limits::MAX_GEOMETRY_OUTPUT_VERTICES {
+                self.error(
+                    Code::BadQualifier,
+                    s,
+                    format!(
+                        "`max_vertices = {n}' exceeds gl_MaxGeometryOutputVertices ({})",
+                        limits::MAX_GEOMETRY_OUTPUT_VERTICES
+                    ),
+                );
+                return;
+            }
+            match self.module.geometry.max_vertices {
+                Some(old) if old != n => {
+                    self.error(
+                        Code::Redeclared,
+                        s,
+                        format!(
+                            "`max_vertices = {n}' contradicts the earlier `max_vertices = {old}'"
+                        ),
+                    );
+                }
+                _ => self.module.geometry.max_vertices = Some(n),
+            }
+        }
+    }
+
+    /// Records the input primitive and sizes the input arrays declared so
+    /// far (§4.3.8.1: an unsized one takes the primitive's size; a sized
+    /// one, or one indexed past it, must agree).
+    fn declare_input_primitive(&mut self, p: InputPrimitive, span: Span) {
+        if let Some(old) = self.module.geometry.input {
+            if old != p {
+                self.error(
+                    Code::Redeclared,
+                    span,
+                    format!(
+                        "input primitive `{}' contradicts the earlier `layout({}) in;'",
+                        p.name(),
+                        old.name()
+                    ),
+                );
+            }
+            return;
+        }
+        self.module.geometry.input = Some(p);
+        let n = p.vertices();
+        if let Some((len, name)) = self.geometry_input_len.clone() {
+            if len != n {
+                self.error(
+                    Code::BadArraySize,
+                    span,
+                    format!(
+                        "`layout({}) in;' gives input arrays {n} elements, but `{name}' is declared with {len}",
+                        p.name()
+                    ),
+                );
+            }
+        }
+        let ids: Vec<GlobalId> = (0..self.module.globals.len())
+            .map(|i| GlobalId(i as u32))
+            .filter(|g| {
+                let g = &self.module.globals[g.0 as usize];
+                g.storage == Storage::GeometryInput && g.ty.array == Some(ArraySize::Unsized)
+            })
+            .collect();
+        for id in ids {
+            let g = &self.module.globals[id.0 as usize];
+            if g.implicit_size > n {
+                let msg = format!(
+                    "`layout({}) in;' gives `{}' {n} elements, but index {} is already used",
+                    p.name(),
+                    g.name,
+                    g.implicit_size - 1
+                );
+                self.error(Code::IndexOutOfRange, span, msg);
+            }
+            self.resize_geometry_input(id, n);
+        }
+    }
+
+    /// A geometry input array just declared (a variable or a block
+    /// instance): sized by the input primitive if there is one, else
+    /// checked against the other sized inputs.
+    pub(crate) fn size_geometry_input(&mut self, id: GlobalId, span: Span) {
+        let Some(g) = self.module.globals.get(id.0 as usize) else {
+            return;
+        };
+        let name = g.name.clone();
+        match (g.ty.array, self.geometry_input_size()) {
+            (Some(ArraySize::Unsized), Some(n)) => self.resize_geometry_input(id, n),
+            (Some(ArraySize::Sized(len)), Some(n)) if len != n => {
+                let p = self.module.geometry.input.map_or("", InputPrimitive::name);
+                self.error(
+                    Code::BadArraySize,
+                    span,
+                    format!("input `{name}' has {len} elements, but `layout({p}) in;' gives input arrays {n}"),
+                );
+            }
+            (Some(ArraySize::Sized(len)), None) => match &self.geometry_input_len {
+                Some((first, other)) if *first != len => {
+                    let msg = format!(
+                        "input `{name}' has {len} elements, but `{other}' has {first}; geometry input arrays have one size"
+                    );
+                    self.error(Code::BadArraySize, span, msg);
+                }
+                Some(_) => {}
+                None => self.geometry_input_len = Some((len, name)),
+            },
+            _ => {}
+        }
+    }
+
+    fn resize_geometry_input(&mut self, id: GlobalId, n: u32) {
+        let Some(g) = self.module.globals.get_mut(id.0 as usize) else {
+            return;
+        };
+        g.ty.array = Some(ArraySize::Sized(n));
+        if let Some(b) = g.block {
+            if let Some(blk) = self.module.blocks.get_mut(b.0 as usize) {
+                if blk.instance.is_some() {
+                    blk.array = Some(n);
+                }
+            }
+        }
+    }
+}

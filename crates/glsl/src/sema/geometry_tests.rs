@@ -1,0 +1,233 @@
+//! Unit tests of the geometry stage: its built-ins, layouts, input array
+//! sizing (GLSL 1.50 §4.3.8.1's examples) and link rules.
+
+use crate::diag::Code;
+use crate::ir::{InputPrimitive, OutputPrimitive, Stage, Storage};
+use crate::types::ArraySize;
+use crate::{compile, link::link, CompileOptions, Shader};
+
+fn geom(src: &str) -> Shader {
+    compile(&[src], &CompileOptions::new(Stage::Geometry))
+}
+
+fn stage(stage: Stage, src: &str) -> Shader {
+    compile(&[src], &CompileOptions::new(stage))
+}
+
+#[track_caller]
+fn ok(s: &Shader) {
+    assert!(s.ok(), "expected success:\n{}", s.info_log());
+}
+
+#[track_caller]
+fn fails(s: &Shader, code: Code) {
+    let codes: Vec<Code> = s
+        .diagnostics
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| d.code)
+        .collect();
+    assert!(!s.ok(), "expected failure");
+    assert!(codes.contains(&code), "{codes:?}\n{}", s.info_log());
+}
+
+/// The seed lecture's "Simple Program" (vertex + geometry + fragment), its
+/// geometry shader a pass-through of triangles in GLSL 1.50.
+const VS: &str = "#version 150\nin vec4 position;\nout vec4 color;\nvoid main() { color = position; gl_Position = position; }";
+const GS: &str = "#version 150
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+in vec4 color[];
+out vec4 fcolor;
+void main()
+{
+    for (int i = 0; i < gl_in.length(); i++) {
+        gl_Position = gl_in[i].gl_Position;
+        fcolor = color[i];
+        gl_PrimitiveID = gl_PrimitiveIDIn;
+        EmitVertex();
+    }
+    EndPrimitive();
+}";
+const FS: &str = "#version 150\nin vec4 fcolor;\nout vec4 frag;\nvoid main() { frag = fcolor; }";
+
+#[test]
+fn pass_through_program_links() {
+    let (v, g, f) = (
+        stage(Stage::Vertex, VS),
+        geom(GS),
+        stage(Stage::Fragment, FS),
+    );
+    ok(&g);
+    let m = g.module.as_ref().expect("compiled");
+    assert_eq!(m.geometry.input, Some(InputPrimitive::Triangles));
+    assert_eq!(m.geometry.output, Some(OutputPrimitive::TriangleStrip));
+    assert_eq!(m.geometry.max_vertices, Some(3));
+    let color = m.globals.iter().find(|x| x.name == "color").expect("input");
+    assert_eq!(color.storage, Storage::GeometryInput);
+    assert_eq!(color.ty.array, Some(ArraySize::Sized(3)));
+    let p = link(&[&f, &v, &g]);
+    assert!(p.ok(), "{}", p.info_log());
+    let stages: Vec<Stage> = p.stages.iter().map(|s| s.stage).collect();
+    assert_eq!(stages, [Stage::Vertex, Stage::Geometry, Stage::Fragment]);
+    assert!(m
+        .to_string()
+        .contains("layout(triangle_strip, max_vertices = 3) out;"));
+}
+
+#[test]
+fn link_rules() {
+    let (v, g, f) = (
+        stage(Stage::Vertex, VS),
+        geom(GS),
+        stage(Stage::Fragment, FS),
+    );
+    // No vertex shader.
+    assert!(!link(&[&g, &f]).ok());
+    // The fragment input is the geometry output, not the vertex output.
+    let f2 = stage(
+        Stage::Fragment,
+        "#version 150\nin vec4 color;\nout vec4 frag;\nvoid main() { frag = color; }",
+    );
+    assert!(!link(&[&v, &g, &f2]).ok());
+    // A geometry input the vertex shader does not write, or of another type.
+    let v2 = stage(
+        Stage::Vertex,
+        "#version 150\nout vec3 color;\nvoid main() { color = vec3(1.0); gl_Position = vec4(0.0); }",
+    );
+    let p = link(&[&v2, &g, &f]);
+    assert!(!p.ok());
+    assert!(p.info_log().contains("geometry"), "{}", p.info_log());
+    // Layouts split across objects link; a missing or contradicting one
+    // does not.
+    let main = geom("#version 150\nlayout(points) in;\nvoid emit();\nvoid main() { emit(); }");
+    let out = geom(
+        "#version 150\nlayout(points, max_vertices = 1) out;\nvoid emit() { gl_Position = gl_in[0].gl_Position; EmitVertex(); }",
+    );
+    ok(&main);
+    ok(&out);
+    assert!(link(&[&v, &main, &out]).ok());
+    assert!(!link(&[&v, &main]).ok());
+    let lines =
+        geom("#version 150\nlayout(lines) in;\nlayout(points, max_vertices = 1) out;\nvoid f() {}");
+    assert!(!link(&[&v, &main, &out, &lines]).ok());
+}
+
+#[test]
+fn input_sizing_follows_the_spec_examples() {
+    // §4.3.8.1: an unsized input takes the primitive's size, before or
+    // after the layout; sizes must agree with it and with each other.
+    ok(&geom(
+        "#version 150\nlayout(lines) in;\nin vec4 c[];\nuniform int u[c.length() == 2 ? 1 : -1];",
+    ));
+    ok(&geom(
+        "#version 150\nin vec4 c[];\nlayout(lines) in;\nuniform int u[c.length() == 2 ? 1 : -1];",
+    ));
+    ok(&geom(
+        "#version 150\nin vec4 c[];\nvec4 f() { return c[2]; }\nlayout(triangles) in;",
+    ));
+    ok(&geom(
+        "#version 150\nin vec4 a[3];\nlayout(triangles) in;\nlayout(triangles) in;",
+    ));
+    fails(
+        &geom("#version 150\nin vec4 c[];\nvec4 f() { return c[2]; }\nlayout(lines) in;"),
+        Code::IndexOutOfRange,
+    );
+    fails(
+        &geom("#version 150\nin vec4 c[];\nint f() { return c.length(); }\nlayout(lines) in;"),
+        Code::BadArraySize,
+    );
+    fails(
+        &geom("#version 150\nin vec4 a[2];\nin vec4 b[3];"),
+        Code::BadArraySize,
+    );
+    fails(
+        &geom("#version 150\nin vec4 a[3];\nlayout(lines) in;"),
+        Code::BadArraySize,
+    );
+    fails(
+        &geom("#version 150\nlayout(lines) in;\nin vec4 a[3];"),
+        Code::BadArraySize,
+    );
+    fails(
+        &geom("#version 150\nlayout(lines) in;\nlayout(triangles) in;"),
+        Code::Redeclared,
+    );
+    // Blocks: arrays, sized the same way.
+    ok(&geom("#version 150\nin B { vec4 p; } b[];\nlayout(triangles) in;\nuniform int u[b.length() == 3 ? 1 : -1];"));
+    fails(
+        &geom("#version 150\nin B { vec4 p; } b;"),
+        Code::TypeMismatch,
+    );
+    fails(&geom("#version 150\nin vec4 c;"), Code::TypeMismatch);
+}
+
+#[test]
+fn layouts_belong_to_geometry_shaders() {
+    fails(
+        &geom("#version 150\nlayout(points, points) in;"),
+        Code::BadQualifier,
+    );
+    fails(
+        &geom("#version 150\nlayout(line_strip) in;"),
+        Code::BadQualifier,
+    );
+    fails(
+        &geom("#version 150\nlayout(triangles) out;"),
+        Code::BadQualifier,
+    );
+    fails(
+        &geom("#version 150\nlayout(std140) in;"),
+        Code::BadQualifier,
+    );
+    fails(
+        &geom("#version 150\nlayout(points) in float c[];"),
+        Code::BadQualifier,
+    );
+    fails(
+        &geom("#version 150\nlayout(max_vertices = 257) out;"),
+        Code::BadQualifier,
+    );
+    ok(&geom("#version 150\nlayout(max_vertices = 256) out;"));
+    fails(
+        &geom("#version 150\nlayout(max_vertices = 2) out;\nlayout(max_vertices = 3) out;"),
+        Code::Redeclared,
+    );
+    fails(
+        &stage(Stage::Vertex, "#version 150\nlayout(triangles) in;"),
+        Code::StageMismatch,
+    );
+    // A geometry shader needs GLSL 1.50.
+    fails(&geom("#version 130\nvoid main() {}"), Code::VersionTooLow);
+}
+
+#[test]
+fn builtins_of_the_geometry_stage() {
+    ok(&geom(
+        "#version 150\nlayout(points) in;\nvoid main() { gl_Layer = gl_PrimitiveIDIn; gl_PointSize = gl_in[0].gl_PointSize; gl_ClipDistance[0] = 1.0; EmitVertex(); EndPrimitive(); }",
+    ));
+    // Inputs are read-only; no derivatives or bias forms; EmitVertex only
+    // here.
+    fails(
+        &geom("#version 150\nin vec4 c[];\nvoid main() { c[0] = vec4(1.0); }"),
+        Code::ReadOnly,
+    );
+    fails(
+        &geom("#version 150\nvoid main() { gl_PrimitiveIDIn = 1; }"),
+        Code::ReadOnly,
+    );
+    fails(
+        &geom("#version 150\nin float c[];\nvoid main() { gl_Position = vec4(dFdx(c[0])); }"),
+        Code::StageMismatch,
+    );
+    fails(
+        &stage(Stage::Vertex, "#version 150\nvoid main() { EmitVertex(); }"),
+        Code::StageMismatch,
+    );
+    // The compatibility profile's `gl_in[]' has the colours (§7.1.1).
+    ok(&geom("#version 150 compatibility\nlayout(points) in;\nvoid main() { gl_FrontColor = gl_in[0].gl_FrontColor; gl_TexCoord[0] = gl_in[0].gl_TexCoord[0]; }"));
+    let core = geom(
+        "#version 150\nlayout(points) in;\nvoid main() { gl_Position = gl_in[0].gl_FrontColor; }",
+    );
+    assert!(!core.ok());
+}
