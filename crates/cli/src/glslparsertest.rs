@@ -43,6 +43,10 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "GL_ARB_uniform_buffer_object",
 ];
 
+/// The extension of a context with the compatibility profile: a test
+/// requiring it runs in one.
+const COMPATIBILITY: &str = "GL_ARB_compatibility";
+
 #[derive(clap::Args, Debug)]
 pub struct Args {
     /// The shader: .vert, .geom or .frag (.tesc, .tese and .comp are
@@ -55,7 +59,8 @@ pub struct Args {
     pub expect: Expect,
 
     /// The GLSL version the test needs, as piglit writes it: 1.10, 1.20,
-    /// "1.50", "3.00 es"... Versions other than 1.10 and 1.20 are skipped.
+    /// "1.50", "3.00 es"... Versions shaderbox does not implement (4.00 and
+    /// later, GLSL ES) are skipped.
     #[arg(value_name = "VERSION")]
     pub version: String,
 
@@ -228,6 +233,10 @@ fn evaluate(args: &Args) -> Outcome {
             compatibility_context,
         }) => (version, compatibility_context),
     };
+    // A test that needs GL_ARB_compatibility gets a context that has it, a
+    // compatibility one, as piglit's program asks for.
+    let compat_required = args.extensions.iter().any(|e| e == COMPATIBILITY);
+    let compatibility_context = compatibility_context || compat_required;
     if args.dummy_shader_include || args.shader_include_path.is_some() {
         return Outcome::new(
             Verdict::Skip,
@@ -242,7 +251,7 @@ fn evaluate(args: &Args) -> Outcome {
                     format!("Test requires {absent} to be absent, and shaderbox supports it"),
                 );
             }
-            None if !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) => {
+            None if !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) && ext != COMPATIBILITY => {
                 return Outcome::new(
                     Verdict::Skip,
                     format!("Test requires extension {ext}, which shaderbox does not support"),

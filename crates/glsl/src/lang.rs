@@ -117,6 +117,10 @@ extensions! {
     ArbDrawBuffers = "GL_ARB_draw_buffers";
     // shaderbox's `debugPrintfEXT` (see `crate::printf`).
     ShaderboxDebugPrintf = "GL_SHADERBOX_debug_printf";
+    // In a compatibility context, enabling it gives a core-profile shader
+    // (`#version 140`, or `150` without a profile word) the compatibility
+    // profile's built-ins, as the context's GL_ARB_compatibility promises.
+    ArbCompatibility = "GL_ARB_compatibility";
     // `layout(location = N)` on vertex inputs and fragment outputs.
     ArbExplicitAttribLocation = "GL_ARB_explicit_attrib_location";
     // Uniform blocks and their layout qualifiers.

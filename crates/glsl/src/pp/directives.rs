@@ -706,7 +706,10 @@ impl Preprocessor<'_> {
         };
         let span = d.full_span();
         let is_all = name.text == "all";
-        let known = Extension::from_name(&name.text);
+        // GL_ARB_compatibility exists only in a context that has the
+        // compatibility profile.
+        let known = Extension::from_name(&name.text)
+            .filter(|&e| e != Extension::ArbCompatibility || self.compatibility_context);
         let supported = known.is_some();
         if is_all
             && matches!(
@@ -748,7 +751,12 @@ impl Preprocessor<'_> {
         // only changes how uses are reported.
         let on = behavior != ExtensionBehavior::Disable;
         match known {
-            Some(e) => self.lang.extensions.set(e, on),
+            Some(e) => {
+                self.lang.extensions.set(e, on);
+                if e == Extension::ArbCompatibility && on {
+                    self.lang.profile = Profile::Compatibility;
+                }
+            }
             None if is_all && !on => self.lang.extensions = ExtensionSet::EMPTY,
             None => {}
         }

@@ -234,7 +234,11 @@ pub(crate) struct Preprocessor<'m> {
 impl<'m> Preprocessor<'m> {
     fn new(map: &'m mut SourceMap, stage: Stage, max_tokens: usize) -> Self {
         let mut macros = MacroTable::new();
-        for ext in Extension::ALL {
+        // GL_ARB_compatibility's macro depends on the context: set_language.
+        for ext in Extension::ALL
+            .iter()
+            .filter(|&&e| e != Extension::ArbCompatibility)
+        {
             macros.insert(ext.name().into(), macros::Macro::one());
         }
         Preprocessor {
@@ -262,7 +266,8 @@ impl<'m> Preprocessor<'m> {
     /// Sets the shader's language and the macros that follow from it:
     /// `GL_FRAGMENT_PRECISION_HIGH` (1.30 §4.5.4, both stages),
     /// `GL_core_profile` (1.50 §3.3, every 1.50+ shader) and
-    /// `GL_compatibility_profile` (1.50+ compatibility-profile shaders).
+    /// `GL_compatibility_profile` (1.50+ compatibility-profile shaders),
+    /// and `GL_ARB_compatibility` in a context that has that profile.
     fn set_language(&mut self, lang: Language) {
         self.lang = lang;
         let v = lang.version;
@@ -273,6 +278,7 @@ impl<'m> Preprocessor<'m> {
                 "GL_compatibility_profile",
                 v.has_profiles() && lang.profile == Profile::Compatibility,
             ),
+            ("GL_ARB_compatibility", self.compatibility_context),
         ] {
             if on {
                 self.macros.insert(name.into(), macros::Macro::one());

@@ -940,3 +940,21 @@ fn language_macros_follow_the_version_and_profile() {
         "GL_compatibility_profile"
     ));
 }
+
+#[test]
+fn arb_compatibility_gives_a_core_shader_the_compatibility_profile() {
+    use crate::lang::Profile;
+    let (out, _) = run("#version 150\n#extension GL_ARB_compatibility : enable\n");
+    assert_eq!(out.language.profile, Profile::Compatibility);
+    let mut map = SourceMap::new(
+        "t",
+        "#version 150\n#extension GL_ARB_compatibility : require\n",
+    );
+    let mut opts = PpOptions::new(Stage::Vertex);
+    opts.compatibility_context = false;
+    let out = preprocess(&mut map, &opts);
+    assert_eq!(out.language.profile, Profile::Core);
+    assert!(messages(&out, Severity::Error)
+        .iter()
+        .any(|m| m.contains("required but not supported")));
+}
