@@ -55,13 +55,7 @@ fn load(path: &Path) -> Option<(Case, String)> {
 }
 
 fn compile_case(case: &Case, text: &str) -> Shader {
-    let mut opts = CompileOptions::new(case.stage);
-    opts.name = case
-        .path
-        .file_name()
-        .unwrap()
-        .to_string_lossy()
-        .into_owned();
+    let mut opts = case_options(case);
     opts.default_version = case.version;
     compile(&[text], &opts)
 }
@@ -121,6 +115,11 @@ fn seed_shaders() {
 /// The lecture's way of compiling a shader: `first` as its own source
 /// string, then the file.
 fn compile_after(first: &str, case: &Case, text: &str) -> Shader {
+    compile(&[first, text], &case_options(case))
+}
+
+/// The options of a seed file: its stage, named by its file name.
+fn case_options(case: &Case) -> CompileOptions {
     let mut opts = CompileOptions::new(case.stage);
     opts.name = case
         .path
@@ -128,7 +127,7 @@ fn compile_after(first: &str, case: &Case, text: &str) -> Shader {
         .unwrap()
         .to_string_lossy()
         .into_owned();
-    compile(&[first, text], &opts)
+    opts
 }
 
 #[test]

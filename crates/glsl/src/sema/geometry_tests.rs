@@ -14,22 +14,8 @@ fn stage(stage: Stage, src: &str) -> Shader {
     compile(&[src], &CompileOptions::new(stage))
 }
 
-#[track_caller]
-fn ok(s: &Shader) {
-    assert!(s.ok(), "expected success:\n{}", s.info_log());
-}
-
-#[track_caller]
-fn fails(s: &Shader, code: Code) {
-    let codes: Vec<Code> = s
-        .diagnostics
-        .iter()
-        .filter(|d| d.is_error())
-        .map(|d| d.code)
-        .collect();
-    assert!(!s.ok(), "expected failure");
-    assert!(codes.contains(&code), "{codes:?}\n{}", s.info_log());
-}
+// The checks the interface tests use.
+use super::interface::tests::{fails, ok};
 
 /// The seed lecture's "Simple Program" (vertex + geometry + fragment), its
 /// geometry shader a pass-through of triangles in GLSL 1.50.

@@ -1140,4 +1140,4 @@ fn find(quals: &[SpannedQualifier], q: Qualifier) -> Span {
 
 #[cfg(test)]
 #[path = "interface_tests.rs"]
-mod tests;
+pub(crate) mod tests;

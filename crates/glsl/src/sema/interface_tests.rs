@@ -14,12 +14,12 @@ fn vert(src: &str) -> Shader {
 }
 
 #[track_caller]
-fn ok(s: &Shader) {
+pub(crate) fn ok(s: &Shader) {
     assert!(s.ok(), "expected success:\n{}", s.info_log());
 }
 
 #[track_caller]
-fn fails(s: &Shader, code: Code) {
+pub(crate) fn fails(s: &Shader, code: Code) {
     let codes: Vec<Code> = s
         .diagnostics
         .iter()
