@@ -479,16 +479,8 @@ pub fn type_name_hint(word: &str, lang: Language) -> Option<String> {
         ));
     }
     if lower != word {
-        let is_type = |k: &str| {
-            matches!(k, "float" | "int" | "uint" | "bool" | "void")
-                || [
-                    "vec", "ivec", "bvec", "uvec", "mat", "sampler", "isampler", "usampler",
-                ]
-                .iter()
-                .any(|p| k.starts_with(p))
-        };
         if let crate::token::WordClass::Keyword(k) = crate::token::classify(&lower, lang) {
-            if is_type(k.as_str()) {
+            if decl::is_type_keyword(k) {
                 return Some(format!("type names are lower case: write `{}'", k.as_str()));
             }
         }

@@ -667,6 +667,40 @@ impl Analyzer {
         ))
     }
 
+    /// `target o= value`, given the operator's result type and IR op for
+    /// the operand types: an assignment when that type is the target's,
+    /// otherwise the one error both operator families report.
+    fn compound_assign(
+        &mut self,
+        o: ast::BinaryOp,
+        result: Option<(Type, ir::BinaryOp)>,
+        target: ir::Expr,
+        value: ir::Expr,
+        span: Span,
+    ) -> ir::Expr {
+        let tt = target.ty;
+        match result {
+            Some((ty, irop)) if ty == tt => mk(
+                K::Assign {
+                    op: Some(irop),
+                    target: Box::new(target),
+                    value: Box::new(value),
+                },
+                tt,
+                span,
+            ),
+            _ => {
+                let (a, b) = (self.tn(tt), self.tn(value.ty));
+                self.error(
+                    Code::TypeMismatch,
+                    span,
+                    format!("operator `{}=' cannot take {a} and {b}", o.as_str()),
+                );
+                error_expr(span)
+            }
+        }
+    }
+
     pub(super) fn assign(
         &mut self,
         op: AssignOp,
@@ -692,27 +726,9 @@ impl Analyzer {
             return error_expr(span);
         }
         if let Some(o) = integer_op {
-            let tt = target.ty;
-            return match int_op_type(matches!(o, O::Shl | O::Shr), tt, value.ty) {
-                Some(ty) if ty == tt => mk(
-                    K::Assign {
-                        op: Some(integer_ir_op(o)),
-                        target: Box::new(target),
-                        value: Box::new(value),
-                    },
-                    tt,
-                    span,
-                ),
-                _ => {
-                    let (a, b) = (self.tn(tt), self.tn(value.ty));
-                    self.error(
-                        Code::TypeMismatch,
-                        span,
-                        format!("operator `{}=' cannot take {a} and {b}", o.as_str()),
-                    );
-                    error_expr(span)
-                }
-            };
+            let result = int_op_type(matches!(o, O::Shl | O::Shr), target.ty, value.ty)
+                .map(|ty| (ty, integer_ir_op(o)));
+            return self.compound_assign(o, result, target, value, span);
         }
         let tt = target.ty;
         if tt.is_array() && self.lang.version < Version::V120 {
@@ -756,26 +772,8 @@ impl Analyzer {
                 } else {
                     value
                 };
-                match self.arith_type(o, tt, value.ty) {
-                    Some((ty, irop)) if ty == tt => mk(
-                        K::Assign {
-                            op: Some(irop),
-                            target: Box::new(target),
-                            value: Box::new(value),
-                        },
-                        tt,
-                        span,
-                    ),
-                    _ => {
-                        let (a, b) = (self.tn(tt), self.tn(value.ty));
-                        self.error(
-                            Code::TypeMismatch,
-                            span,
-                            format!("operator `{}=' cannot take {a} and {b}", o.as_str()),
-                        );
-                        error_expr(span)
-                    }
-                }
+                let result = self.arith_type(o, tt, value.ty);
+                self.compound_assign(o, result, target, value, span)
             }
         }
     }
