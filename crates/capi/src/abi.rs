@@ -116,7 +116,10 @@ pub(crate) fn unorm(x: f64, max: f64) -> f32 {
 /// `default` when there is none, and catches panics (they never unwind
 /// into C). An entry prefixed `[list]` is compiled into display lists
 /// (GL 2.1 §5.4): while a list is being compiled the call is recorded with
-/// its arguments and, in GL_COMPILE mode, not executed.
+/// its arguments and, in GL_COMPILE mode, not executed. An entry point
+/// the core profile removes ([`gl::version::removed_in_core`], decided by
+/// name at compile time) records `GL_INVALID_OPERATION` and returns
+/// `default` in a core context.
 ///
 /// The expansion calls `with_ctx(default, |c| ...)` and, for `[list]`
 /// entries, `record_call(replay)` unqualified, so the invoking module
@@ -132,8 +135,16 @@ macro_rules! gl_entry_points {
             #[no_mangle]
             #[allow(unused_unsafe, clippy::too_many_arguments, clippy::unnecessary_cast)]
             pub unsafe extern "C" fn $name($($a: $t),*) $(-> $r)? {
+                // Decided per entry point at compile time; a core context
+                // refuses the removed ones (GL 3.3 core appendix E.2.2).
+                const REMOVED_IN_CORE: bool = gl::version::removed_in_core(stringify!($name));
                 gl_entry_points!(@maybe [$($list)?] $name($($a),*));
-                with_ctx(gl_entry_points!(@def $($def)?), |$c| unsafe { $body })
+                with_ctx(gl_entry_points!(@def $($def)?), |$c| unsafe {
+                    if REMOVED_IN_CORE && $c.gl.refuse_removed() {
+                        return gl_entry_points!(@def $($def)?);
+                    }
+                    $body
+                })
             }
         )*
 

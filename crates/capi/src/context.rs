@@ -53,6 +53,8 @@ pub struct OsContext {
     pub dirty: bool,
     /// glGetString results, kept alive for the context's lifetime.
     pub strings: std::collections::BTreeMap<u32, std::ffi::CString>,
+    /// glGetStringi(GL_EXTENSIONS, i)'s strings, by index.
+    pub extension_strings: std::collections::BTreeMap<u32, std::ffi::CString>,
     /// Pixel debugging asked for by the environment ([`crate::debug_env`]).
     pub debug: Option<crate::debug_env::DebugEnv>,
 }
@@ -65,9 +67,15 @@ pub enum DepthCopy {
 }
 
 impl OsContext {
-    pub fn new(format: u32, depth_bits: i32, stencil_bits: i32, accum_bits: i32) -> OsContext {
+    pub fn new(
+        api: gl::Api,
+        format: u32,
+        depth_bits: i32,
+        stencil_bits: i32,
+        accum_bits: i32,
+    ) -> OsContext {
         let debug = crate::debug_env::from_process();
-        let mut gl = gl::Context::new(1, 1);
+        let mut gl = gl::Context::with_api(1, 1, api);
         if let Some(d) = &debug {
             gl.set_debug(Some(d.request.clone()));
         }
@@ -93,6 +101,7 @@ impl OsContext {
             arrays: ClientArrays::default(),
             lists: Default::default(),
             strings: Default::default(),
+            extension_strings: Default::default(),
         }
     }
 
@@ -426,6 +435,14 @@ pub fn with_ctx<R>(default: R, f: impl FnOnce(&mut OsContext) -> R) -> R {
     // GL entry points do not re-enter, so this is the only reference.
     let ctx = unsafe { &mut *p };
     caught(catch_unwind(AssertUnwindSafe(|| f(ctx))), default)
+}
+
+/// For a hand-written entry point the core profile removes: true (the
+/// call must return at once) when the current context is a core one,
+/// which then records GL_INVALID_OPERATION; the `gl_entry_points!` macro
+/// does the same for its entries.
+pub fn refused_in_core() -> bool {
+    with_ctx(false, |c| c.gl.refuse_removed())
 }
 
 /// [`OsContext::record`] on the current context, from outside `with_ctx`.

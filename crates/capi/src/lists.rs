@@ -13,13 +13,16 @@
 //! (glDrawPixels, glBitmap) are copied at compile time too.
 
 use crate::abi::*;
-use crate::context::{guard, record_call, with_ctx};
+use crate::context::{guard, record_call, refused_in_core, with_ctx};
 use crate::layer_state::MAX_LIST_NESTING;
 use gl::enums::*;
 use std::rc::Rc;
 
 #[no_mangle]
 pub extern "C" fn glNewList(list: GLuint, mode: GLenum) {
+    if refused_in_core() {
+        return;
+    }
     with_ctx((), |c| {
         if c.gl.reject_in_begin() {
             return;
@@ -38,6 +41,9 @@ pub extern "C" fn glNewList(list: GLuint, mode: GLenum) {
 
 #[no_mangle]
 pub extern "C" fn glEndList() {
+    if refused_in_core() {
+        return;
+    }
     with_ctx((), |c| {
         if c.gl.reject_in_begin() {
             return;
@@ -75,6 +81,9 @@ fn call_list(n: u32) {
 
 #[no_mangle]
 pub extern "C" fn glCallList(list: GLuint) {
+    if refused_in_core() {
+        return;
+    }
     guard((), || {
         if record_call(move || call_list(list)) {
             return;
@@ -86,6 +95,9 @@ pub extern "C" fn glCallList(list: GLuint) {
 /// glCallLists: `n` names of `ty` at `lists`, each offset by glListBase.
 #[no_mangle]
 pub unsafe extern "C" fn glCallLists(n: GLsizei, ty: GLenum, lists: *const std::ffi::c_void) {
+    if refused_in_core() {
+        return;
+    }
     guard((), || {
         let size = match ty {
             GL_BYTE | GL_UNSIGNED_BYTE => 1,
@@ -135,6 +147,9 @@ pub unsafe extern "C" fn glCallLists(n: GLsizei, ty: GLenum, lists: *const std::
 
 #[no_mangle]
 pub extern "C" fn glGenLists(range: GLsizei) -> GLuint {
+    if refused_in_core() {
+        return 0;
+    }
     with_ctx(0, |c| {
         if c.gl.reject_in_begin() {
             return 0;
@@ -165,6 +180,9 @@ pub extern "C" fn glGenLists(range: GLsizei) -> GLuint {
 
 #[no_mangle]
 pub extern "C" fn glDeleteLists(list: GLuint, range: GLsizei) {
+    if refused_in_core() {
+        return;
+    }
     with_ctx((), |c| {
         if c.gl.reject_in_begin() {
             return;
@@ -183,6 +201,9 @@ pub extern "C" fn glDeleteLists(list: GLuint, range: GLsizei) {
 
 #[no_mangle]
 pub extern "C" fn glIsList(list: GLuint) -> GLboolean {
+    if refused_in_core() {
+        return 0;
+    }
     with_ctx(0, |c| {
         if c.gl.reject_in_begin() {
             return 0;
@@ -193,6 +214,9 @@ pub extern "C" fn glIsList(list: GLuint) -> GLboolean {
 
 #[no_mangle]
 pub extern "C" fn glListBase(base: GLuint) {
+    if refused_in_core() {
+        return;
+    }
     guard((), || {
         if record_call(move || glListBase(base)) {
             return;

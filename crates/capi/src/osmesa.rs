@@ -17,14 +17,14 @@ pub type OSMesaContext = *mut OsContext;
 /// OSMesa's `OSMESAproc`.
 pub type OSMESAproc = Option<unsafe extern "C" fn()>;
 
-fn create(format: u32, depth: i32, stencil: i32, accum: i32) -> OSMesaContext {
+fn create(api: gl::Api, format: u32, depth: i32, stencil: i32, accum: i32) -> OSMesaContext {
     if !matches!(
         format,
         OSMESA_RGBA | OSMESA_BGRA | OSMESA_ARGB | OSMESA_RGB | OSMESA_BGR | OSMESA_RGB_565
     ) {
         return std::ptr::null_mut();
     }
-    let p = Box::into_raw(Box::new(OsContext::new(format, depth, stencil, accum)));
+    let p = Box::into_raw(Box::new(OsContext::new(api, format, depth, stencil, accum)));
     context::register(p);
     p
 }
@@ -33,7 +33,9 @@ fn create(format: u32, depth: i32, stencil: i32, accum: i32) -> OSMesaContext {
 /// buffer. `sharelist` is accepted but objects are not shared.
 #[no_mangle]
 pub extern "C" fn OSMesaCreateContext(format: GLenum, _sharelist: OSMesaContext) -> OSMesaContext {
-    guard(std::ptr::null_mut(), || create(format, 24, 8, 0))
+    guard(std::ptr::null_mut(), || {
+        create(gl::Api::GL21, format, 24, 8, 0)
+    })
 }
 
 /// OSMesaCreateContextExt.
@@ -46,12 +48,15 @@ pub extern "C" fn OSMesaCreateContextExt(
     _sharelist: OSMesaContext,
 ) -> OSMesaContext {
     guard(std::ptr::null_mut(), || {
-        create(format, depth_bits, stencil_bits, accum_bits)
+        create(gl::Api::GL21, format, depth_bits, stencil_bits, accum_bits)
     })
 }
 
 /// OSMesaCreateContextAttribs: a 0-terminated list of (name, value) pairs.
-/// Only compatibility-profile versions up to 2.1 are available.
+/// The version and profile asked for choose the context's API as
+/// [`gl::Api::for_request`] says (the default, 1.0 compatibility, is a 2.1
+/// context); a version beyond 3.3, an unknown profile or attribute, or a
+/// bad format gives NULL, as Mesa's OSMesa does.
 #[no_mangle]
 pub unsafe extern "C" fn OSMesaCreateContextAttribs(
     attrib_list: *const GLint,
@@ -60,6 +65,7 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
     guard(std::ptr::null_mut(), || {
         let (mut format, mut depth, mut stencil, mut accum) = (OSMESA_RGBA, 24, 8, 0);
         let (mut major, mut minor) = (1, 0);
+        let mut profile = gl::Profile::Compatibility;
         if !attrib_list.is_null() {
             for i in 0..MAX_ATTRIBS {
                 // SAFETY: the caller's list is 0-terminated (osmesa.h).
@@ -74,8 +80,10 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
                     OSMESA_STENCIL_BITS => stencil = value,
                     OSMESA_ACCUM_BITS => accum = value,
                     OSMESA_PROFILE => {
-                        if value != OSMESA_COMPAT_PROFILE {
-                            return std::ptr::null_mut();
+                        profile = match value {
+                            OSMESA_COMPAT_PROFILE => gl::Profile::Compatibility,
+                            OSMESA_CORE_PROFILE => gl::Profile::Core,
+                            _ => return std::ptr::null_mut(),
                         }
                     }
                     OSMESA_CONTEXT_MAJOR_VERSION => major = value,
@@ -84,10 +92,10 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
                 }
             }
         }
-        if (major, minor) > (2, 1) || major < 1 {
+        let Some(api) = gl::Api::for_request(major, minor, profile) else {
             return std::ptr::null_mut();
-        }
-        create(format, depth, stencil, accum)
+        };
+        create(api, format, depth, stencil, accum)
     })
 }
 

@@ -15,9 +15,12 @@ gl_entry_points! {
         if !c.strings.contains_key(&name) {
             let s = c.gl.get_string(name);
             let s = match name {
+                // A core context has no GL_EXTENSIONS string (the context
+                // recorded GL_INVALID_ENUM).
+                GL_EXTENSIONS if c.gl.is_core() => return std::ptr::null(),
                 GL_VENDOR | GL_SHADING_LANGUAGE_VERSION | GL_EXTENSIONS => s,
                 GL_RENDERER => "shaderbox (CPU)".to_string(),
-                GL_VERSION => format!("2.1 shaderbox {}", env!("CARGO_PKG_VERSION")),
+                GL_VERSION => format!("{s} {}", env!("CARGO_PKG_VERSION")),
                 _ => return std::ptr::null(),
             };
             let Ok(cs) = CString::new(s) else { return std::ptr::null() };
@@ -25,8 +28,15 @@ gl_entry_points! {
         }
         c.strings.get(&name).map_or(std::ptr::null(), |s| s.as_ptr() as *const GLubyte)
     }
+    fn glGetStringi(name: GLenum, index: GLuint) -> *const GLubyte [std::ptr::null()] => |c| {
+        let Some(ext) = c.gl.get_stringi(name, index) else { return std::ptr::null() };
+        let cs = c.extension_strings.entry(index).or_insert_with(|| {
+            CString::new(ext).unwrap_or_default()
+        });
+        cs.as_ptr() as *const GLubyte
+    }
     fn glGetIntegerv(pname: GLenum, params: *mut GLint) => |c| {
-        if let Some(v) = c.legacy.get(pname) {
+        if let Some(v) = c.legacy.get(pname).filter(|_| !c.gl.is_removed_state(pname)) {
             if !c.gl.reject_in_begin() {
                 let v: Vec<GLint> = v.iter().map(|&x| (x + 0.5).floor().clamp(i32::MIN as f64, i32::MAX as f64) as GLint).collect();
                 wr(params, &v);
@@ -37,7 +47,7 @@ gl_entry_points! {
         wr(params, &v);
     }
     fn glGetFloatv(pname: GLenum, params: *mut GLfloat) => |c| {
-        if let Some(v) = c.legacy.get(pname) {
+        if let Some(v) = c.legacy.get(pname).filter(|_| !c.gl.is_removed_state(pname)) {
             if !c.gl.reject_in_begin() {
                 let v: Vec<GLfloat> = v.iter().map(|&x| x as f32).collect();
                 wr(params, &v);
@@ -48,7 +58,7 @@ gl_entry_points! {
         wr(params, &v);
     }
     fn glGetDoublev(pname: GLenum, params: *mut GLdouble) => |c| {
-        if let Some(v) = c.legacy.get(pname) {
+        if let Some(v) = c.legacy.get(pname).filter(|_| !c.gl.is_removed_state(pname)) {
             if !c.gl.reject_in_begin() {
                 wr(params, &v);
             }
@@ -58,7 +68,7 @@ gl_entry_points! {
         wr(params, &v);
     }
     fn glGetBooleanv(pname: GLenum, params: *mut GLboolean) => |c| {
-        if let Some(v) = c.legacy.get(pname) {
+        if let Some(v) = c.legacy.get(pname).filter(|_| !c.gl.is_removed_state(pname)) {
             if !c.gl.reject_in_begin() {
                 let v: Vec<GLboolean> = v.iter().map(|&x| (x != 0.0) as GLboolean).collect();
                 wr(params, &v);

@@ -202,6 +202,9 @@ pub unsafe extern "C" fn glInterleavedArrays(
     stride: GLsizei,
     pointer: *const c_void,
 ) {
+    if crate::context::refused_in_core() {
+        return;
+    }
     guard((), || {
         let ok = with_ctx(false, |c| {
             if c.gl.reject_in_begin() {

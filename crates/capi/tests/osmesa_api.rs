@@ -237,10 +237,16 @@ fn context_attribs_and_queries() {
         ];
         let ctx = OSMesaCreateContextAttribs(attribs.as_ptr(), null_mut());
         assert!(!ctx.is_null());
-        let core = [OSMESA_PROFILE, OSMESA_CORE_PROFILE, 0];
-        assert!(OSMesaCreateContextAttribs(core.as_ptr(), null_mut()).is_null());
-        let v33 = [OSMESA_CONTEXT_MAJOR_VERSION, 3, 0];
-        assert!(OSMesaCreateContextAttribs(v33.as_ptr(), null_mut()).is_null());
+        let v34 = [
+            OSMESA_CONTEXT_MAJOR_VERSION,
+            3,
+            OSMESA_CONTEXT_MINOR_VERSION,
+            4,
+            0,
+        ];
+        assert!(OSMesaCreateContextAttribs(v34.as_ptr(), null_mut()).is_null());
+        let bad_profile = [OSMESA_PROFILE, 0x99, 0];
+        assert!(OSMesaCreateContextAttribs(bad_profile.as_ptr(), null_mut()).is_null());
 
         let mut buf = vec![0u8; 5 * 3 * 3];
         let p = buf.as_mut_ptr() as *mut c_void;
@@ -264,6 +270,143 @@ fn context_attribs_and_queries() {
         assert!(f.is_some());
         assert!(OSMesaGetProcAddress(c"glNoSuchThing".as_ptr()).is_none());
         OSMesaDestroyContext(ctx);
+    }
+}
+
+unsafe fn string(name: u32) -> Option<String> {
+    let p = glGetString(name);
+    (!p.is_null()).then(|| CStr::from_ptr(p as *const _).to_string_lossy().into_owned())
+}
+
+unsafe fn integer(pname: u32) -> i32 {
+    let mut v = -1;
+    glGetIntegerv(pname, &mut v);
+    v
+}
+
+/// A context made current on a fresh `W`x`H` buffer from an attribute
+/// list, with what GL_VERSION says.
+unsafe fn attrib_context(attribs: &[i32], buf: &mut [u8]) -> (OSMesaContext, String) {
+    let ctx = OSMesaCreateContextAttribs(attribs.as_ptr(), null_mut());
+    assert!(!ctx.is_null(), "{attribs:x?}");
+    let p = buf.as_mut_ptr() as *mut c_void;
+    assert_eq!(OSMesaMakeCurrent(ctx, p, GL_UNSIGNED_BYTE, W, H), GL_TRUE);
+    (ctx, string(GL_VERSION).unwrap())
+}
+
+#[test]
+fn contexts_by_version_and_profile() {
+    unsafe {
+        let mut buf = vec![0u8; (W * H * 4) as usize];
+        let (ctx, v) = attrib_context(&[0], &mut buf);
+        assert!(v.starts_with("2.1 shaderbox"), "{v}");
+        assert_eq!(string(GL_SHADING_LANGUAGE_VERSION).unwrap(), "1.20");
+        assert_eq!(integer(GL_MAJOR_VERSION), -1);
+        assert_eq!(glGetError(), GL_INVALID_ENUM);
+        OSMesaDestroyContext(ctx);
+
+        let compat = [
+            OSMESA_CONTEXT_MAJOR_VERSION,
+            3,
+            OSMESA_CONTEXT_MINOR_VERSION,
+            2,
+            0,
+        ];
+        let (ctx, v) = attrib_context(&compat, &mut buf);
+        assert!(
+            v.starts_with("3.3 (Compatibility Profile) shaderbox"),
+            "{v}"
+        );
+        assert_eq!(integer(GL_CONTEXT_PROFILE_MASK), 2);
+        assert!(string(GL_EXTENSIONS)
+            .unwrap()
+            .contains("GL_ARB_compatibility"));
+        glBegin(GL_TRIANGLES);
+        glEnd();
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        OSMesaDestroyContext(ctx);
+
+        // Mesa answers a core request of any version up to its own with a
+        // core context; so does shaderbox.
+        for minor in [0, 3] {
+            let core = [
+                OSMESA_PROFILE,
+                OSMESA_CORE_PROFILE,
+                OSMESA_CONTEXT_MAJOR_VERSION,
+                3,
+                OSMESA_CONTEXT_MINOR_VERSION,
+                minor,
+                0,
+            ];
+            let (ctx, v) = attrib_context(&core, &mut buf);
+            assert!(v.starts_with("3.3 (Core Profile) shaderbox"), "{v}");
+            assert_eq!(string(GL_SHADING_LANGUAGE_VERSION).unwrap(), "3.30");
+            assert_eq!(
+                (integer(GL_MAJOR_VERSION), integer(GL_MINOR_VERSION)),
+                (3, 3)
+            );
+            assert_eq!(integer(GL_CONTEXT_PROFILE_MASK), 1);
+            assert_eq!(integer(GL_CONTEXT_FLAGS), 0);
+            assert_eq!(glGetError(), GL_NO_ERROR);
+            // No unified extension string: glGetStringi numbers them.
+            assert_eq!(string(GL_EXTENSIONS), None);
+            assert_eq!(glGetError(), GL_INVALID_ENUM);
+            let n = integer(GL_NUM_EXTENSIONS);
+            let names: Vec<String> = (0..n as u32)
+                .map(|i| {
+                    CStr::from_ptr(glGetStringi(GL_EXTENSIONS, i) as *const _)
+                        .to_string_lossy()
+                        .into_owned()
+                })
+                .collect();
+            assert!(
+                names.iter().any(|e| e == "GL_ARB_framebuffer_object"),
+                "{names:?}"
+            );
+            assert!(!names.iter().any(|e| e == "GL_ARB_compatibility"));
+            assert!(glGetStringi(GL_EXTENSIONS, n as u32).is_null());
+            assert_eq!(glGetError(), GL_INVALID_VALUE);
+            // What the core profile removes: entry points, capabilities,
+            // state, draw modes, drawing without a program.
+            glBegin(GL_TRIANGLES);
+            assert_eq!(glGetError(), GL_INVALID_OPERATION);
+            glMatrixMode(GL_PROJECTION);
+            assert_eq!(glGetError(), GL_INVALID_OPERATION);
+            assert_eq!(glGenLists(1), 0);
+            assert_eq!(glGetError(), GL_INVALID_OPERATION);
+            glEnable(GL_LIGHTING);
+            assert_eq!(glGetError(), GL_INVALID_ENUM);
+            glEnable(GL_DEPTH_TEST);
+            assert_eq!(glGetError(), GL_NO_ERROR);
+            assert_eq!(integer(GL_MODELVIEW_STACK_DEPTH), -1);
+            assert_eq!(glGetError(), GL_INVALID_ENUM);
+            assert_eq!(integer(GL_ACCUM_RED_BITS), -1);
+            assert_eq!(glGetError(), GL_INVALID_ENUM);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            assert_eq!(glGetError(), GL_INVALID_OPERATION);
+            glDrawArrays(GL_QUADS, 0, 4);
+            assert_eq!(glGetError(), GL_INVALID_ENUM);
+            // GLSL 1.10 and 1.20 are gone; 1.30+ compile.
+            let old = shader(
+                GL_FRAGMENT_SHADER,
+                "void main() { gl_FragColor = vec4(1.0); }\n",
+            );
+            let mut ok = 1;
+            glGetShaderiv(old, GL_COMPILE_STATUS, &mut ok);
+            assert_eq!(ok, 0);
+            assert!(
+                info_log(old).contains("core-profile context"),
+                "{}",
+                info_log(old)
+            );
+            let new = shader(
+                GL_FRAGMENT_SHADER,
+                "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n",
+            );
+            glGetShaderiv(new, GL_COMPILE_STATUS, &mut ok);
+            assert_eq!(ok, 1, "{}", info_log(new));
+            OSMesaDestroyContext(ctx);
+        }
     }
 }
 

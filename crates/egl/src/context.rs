@@ -1,11 +1,12 @@
 //! Rendering contexts: OpenGL only (the API eglBindAPI(EGL_OPENGL_API)
-//! selects), EGL_KHR_create_context's attributes. Versions 1.0 to 2.1 and
-//! the compatibility profile are created (as a GL 2.1 compatibility
-//! context, which implements them all); any later version, a
-//! forward-compatible or robust context, or a reset strategy other than
-//! none is EGL_BAD_MATCH, the error the extension names for a version and
-//! feature set the config does not support. Objects are not shared:
-//! `share_context` is checked and otherwise ignored.
+//! selects), EGL_KHR_create_context's attributes. Versions 1.0 to 3.3 are
+//! created as the context API [`gl::Api::for_request`] chooses (2.1, or
+//! 3.3 core or compatibility; the profile mask counts from 3.2 on, as the
+//! extension says); a later version, a forward-compatible or robust
+//! context, or a reset strategy other than none is EGL_BAD_MATCH, the
+//! error the extension names for a version and feature set the config
+//! does not support. Objects are not shared: `share_context` is checked
+//! and otherwise ignored.
 
 use crate::config;
 use crate::current;
@@ -14,7 +15,7 @@ use crate::objects::{self, Context};
 use crate::types::*;
 
 /// The newest OpenGL version a context can be.
-pub const MAX_VERSION: (i32, i32) = (2, 1);
+pub const MAX_VERSION: (i32, i32) = (3, 3);
 
 /// A context request: version and flags.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -22,6 +23,21 @@ pub struct Request {
     pub version: (i32, i32),
     pub flags: EGLint,
     pub profile: EGLint,
+}
+
+impl Request {
+    /// The context API that satisfies the request ([`parse`] refused
+    /// versions beyond [`MAX_VERSION`]).
+    pub fn api(&self) -> gl::Api {
+        let (major, minor) = self.version;
+        let profile =
+            if (major, minor) >= (3, 2) && self.profile == EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT {
+                gl::Profile::Core
+            } else {
+                gl::Profile::Compatibility
+            };
+        gl::Api::for_request(major, minor, profile).unwrap_or(gl::Api::GL21)
+    }
 }
 
 /// Whether `(major, minor)` is a defined OpenGL version.
@@ -127,8 +143,13 @@ pub unsafe extern "C" fn eglCreateContext(
             o.context(d, share)?;
         }
         let r = parse(&list)?;
-        let os =
-            capi::context::OsContext::new(capi::osmesa_enums::OSMESA_RGBA, c.depth, c.stencil, 0);
+        let os = capi::context::OsContext::new(
+            r.api(),
+            capi::osmesa_enums::OSMESA_RGBA,
+            c.depth,
+            c.stencil,
+            0,
+        );
         let gl = Box::into_raw(Box::new(os)) as usize;
         let id = o.new_id();
         let ctx = Context {
@@ -207,8 +228,25 @@ mod tests {
         assert_eq!(v(2, 1).map(|r| r.version), Ok((2, 1)));
         assert_eq!(v(1, 5).map(|r| r.version), Ok((1, 5)));
         assert_eq!(v(2, 2), Err(EGL_BAD_MATCH));
-        assert_eq!(v(3, 3), Err(EGL_BAD_MATCH));
+        assert_eq!(v(3, 3).map(|r| r.api()), Ok(gl::Api::GL33_CORE));
+        assert_eq!(v(3, 4), Err(EGL_BAD_MATCH));
         assert_eq!(v(4, 1), Err(EGL_BAD_MATCH));
+        assert_eq!(v(2, 1).map(|r| r.api()), Ok(gl::Api::GL21));
+        // The profile mask counts from 3.2 on; below, a compatibility
+        // context (its default, core, is ignored).
+        assert_eq!(v(3, 1).map(|r| r.api()), Ok(gl::Api::GL33_COMPAT));
+        assert_eq!(
+            parse(&[
+                (EGL_CONTEXT_MAJOR_VERSION, 3),
+                (EGL_CONTEXT_MINOR_VERSION, 2),
+                (
+                    EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                    EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT
+                ),
+            ])
+            .map(|r| r.api()),
+            Ok(gl::Api::GL33_COMPAT)
+        );
         assert_eq!(v(0, 0), Err(EGL_BAD_MATCH));
         assert_eq!(parse(&[]).map(|r| r.version), Ok((1, 0)));
         assert_eq!(parse(&[(0x3333, 1)]), Err(EGL_BAD_ATTRIBUTE));

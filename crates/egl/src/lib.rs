@@ -22,9 +22,10 @@
 //!   the context then draws into a 1×1 placeholder; use framebuffer
 //!   objects). Window and pixmap surfaces are `EGL_BAD_MATCH`.
 //! - Contexts ([`context`]): `eglBindAPI(EGL_OPENGL_API)` only (the initial
-//!   API is `EGL_NONE`); `EGL_KHR_create_context` versions 1.0 to 2.1
-//!   (compatibility); later versions, forward-compatible and robust
-//!   contexts are `EGL_BAD_MATCH`. No object sharing.
+//!   API is `EGL_NONE`); `EGL_KHR_create_context` versions 1.0 to 3.3,
+//!   core and compatibility, made as the GL 2.1 or 3.3 context
+//!   `gl::Api::for_request` chooses; later versions, forward-compatible
+//!   and robust contexts are `EGL_BAD_MATCH`. No object sharing.
 //! - One current context per thread, a context current to one thread and
 //!   a surface to one context at a time ([`current`]); destroying a
 //!   current object defers its deletion to its release.

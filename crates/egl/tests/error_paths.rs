@@ -254,7 +254,13 @@ fn contexts_and_api() {
         };
         let (null, e, ctx) = v(2, 1);
         assert!(!null && e == EGL_SUCCESS);
-        assert_eq!(v(3, 3).1, EGL_BAD_MATCH);
+        let (null, e, ctx33) = v(3, 3);
+        assert!(!null && e == EGL_SUCCESS);
+        assert_eq!(
+            egl::context::eglDestroyContext(d, ctx33),
+            EGL_TRUE as EGLBoolean
+        );
+        assert_eq!(v(3, 4).1, EGL_BAD_MATCH);
         assert_eq!(v(4, 1).1, EGL_BAD_MATCH);
         assert_eq!(v(2, 7).1, EGL_BAD_MATCH);
         let ctx2 = context(d, c, &[0x7777, 0, EGL_NONE]);

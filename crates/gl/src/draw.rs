@@ -32,12 +32,25 @@ impl Context {
         if self.reject_in_begin() {
             return false;
         }
-        if mode > GL_POLYGON {
+        // The core profile removes quads and polygons (GL 3.3 core
+        // appendix E.2.2).
+        let last_mode = if self.is_core() {
+            GL_TRIANGLE_FAN
+        } else {
+            GL_POLYGON
+        };
+        if mode > last_mode {
             self.set_error(GL_INVALID_ENUM);
             return false;
         }
         if count < 0 {
             self.set_error(GL_INVALID_VALUE);
+            return false;
+        }
+        // Core draws need a program: there is no fixed-function vertex
+        // stage to fall back on.
+        if self.is_core() && self.current_program == 0 {
+            self.set_error(GL_INVALID_OPERATION);
             return false;
         }
         self.check_fbo_complete()

@@ -60,13 +60,23 @@ fn b(x: bool) -> f64 {
 impl Context {
     fn query(&mut self, pname: u32) -> Option<(Vec<f64>, Kind)> {
         use Kind::*;
+        if self.is_removed_state(pname) {
+            return None;
+        }
         let unit = self.st.active_texture as usize;
         let int = |v: &[i64]| Some((v.iter().map(|&x| x as f64).collect(), Int));
         let flt = |v: &[f32]| Some((v.iter().map(|&x| x as f64).collect(), Float));
         let nrm = |v: &[f32]| Some((v.iter().map(|&x| x as f64).collect(), Normalized));
         let st = &self.st;
         let fb = self.objects.draw_framebuffer;
+        let api = self.api;
         match pname {
+            // The context's version and profile (GL 3.0+ queries).
+            GL_MAJOR_VERSION if api.at_least(3, 0) => int(&[api.major as i64]),
+            GL_MINOR_VERSION if api.at_least(3, 0) => int(&[api.minor as i64]),
+            GL_NUM_EXTENSIONS if api.at_least(3, 0) => int(&[api.extensions().len() as i64]),
+            GL_CONTEXT_FLAGS if api.at_least(3, 0) => int(&[0]),
+            GL_CONTEXT_PROFILE_MASK if api.at_least(3, 2) => int(&[api.profile_mask() as i64]),
             GL_MAX_LIGHTS => int(&[limits::MAX_LIGHTS as i64]),
             GL_MAX_CLIP_PLANES => int(&[limits::MAX_CLIP_PLANES as i64]),
             GL_MAX_TEXTURE_UNITS => int(&[limits::MAX_TEXTURE_UNITS as i64]),
@@ -379,9 +389,11 @@ impl Context {
         match name {
             GL_VENDOR => "shaderbox".into(),
             GL_RENDERER => "shaderbox software renderer".into(),
-            GL_VERSION => "2.1 shaderbox".into(),
-            GL_SHADING_LANGUAGE_VERSION => "1.20".into(),
-            GL_EXTENSIONS => EXTENSIONS.join(" "),
+            GL_VERSION => self.api.version_string(),
+            GL_SHADING_LANGUAGE_VERSION => self.api.glsl_version_string().into(),
+            // The core profile removes the unified extension string (GL 3.3
+            // core appendix E.2.2): glGetStringi numbers them instead.
+            GL_EXTENSIONS if !self.api.is_core() => self.api.extensions().join(" "),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 String::new()

@@ -1,7 +1,8 @@
-//! # shaderbox-gl: the OpenGL 2.1 state machine
+//! # shaderbox-gl: the OpenGL state machine
 //!
-//! [`Context`] holds the state of one GL 2.1 (compatibility) context and its
-//! objects; its methods are the GL entry points in snake case: `glFooBar4fv`
+//! [`Context`] holds the state of one context and its objects: OpenGL 2.1,
+//! or 3.3 core or compatibility ([`version::Api`]; the core profile
+//! refuses what it removes, [`version`]); its methods are the GL entry points in snake case: `glFooBar4fv`
 //! is `foo_bar_4fv` (`glCreateShader` → [`Context::create_shader`],
 //! `glUniformMatrix2x3fv` → [`Context::uniform_matrix_2x3fv`]), except
 //! that a parameter family whose forms differ only in how the values are
@@ -44,6 +45,8 @@
 //!
 //! ## Modules
 //! One job each; the [`Context`] entry points live with their job.
+//! - The API: [`version`] (version and profile, their strings and
+//!   queries, what the core profile removes).
 //! - Objects: [`objects`] (the tables, glGen* names), [`buffers`],
 //!   [`textures`] (glTex*, texture queries), [`mipmap`],
 //!   [`texture_format`] (internal formats, stored texels),
@@ -106,6 +109,7 @@ pub mod texture_units;
 pub mod textures;
 pub mod transform;
 pub mod uniform;
+pub mod version;
 pub mod vertex;
 
 use enums::*;
@@ -114,6 +118,7 @@ use std::collections::BTreeMap;
 pub use param::Param;
 pub use program::{ActiveInfo, ProgramObj, ShaderObj};
 pub use state::{Light, Material};
+pub use version::{Api, Profile};
 pub use vertex::{ArrayData, ArrayState};
 
 /// Maximum depth of every matrix stack.
@@ -131,6 +136,8 @@ pub const MAX_TEXTURE_SIZE: i32 = 8192;
 
 /// A GL context.
 pub struct Context {
+    /// The version and profile ([`version`]).
+    pub(crate) api: Api,
     pub(crate) error: u32,
     pub(crate) width: i32,
     pub(crate) height: i32,
@@ -187,14 +194,22 @@ impl Default for Context {
 }
 
 impl Context {
-    /// A context whose default framebuffer is `width` x `height` RGBA8 with
-    /// a 24-bit depth and an 8-bit stencil buffer.
+    /// A GL 2.1 context whose default framebuffer is `width` x `height`
+    /// RGBA8 with a 24-bit depth and an 8-bit stencil buffer.
     pub fn new(width: i32, height: i32) -> Context {
+        Context::with_api(width, height, Api::GL21)
+    }
+
+    /// [`Context::new`] implementing `api` (one of [`Api::GL21`],
+    /// [`Api::GL33_CORE`], [`Api::GL33_COMPAT`]; [`Api::for_request`]
+    /// maps a requested version onto them).
+    pub fn with_api(width: i32, height: i32, api: Api) -> Context {
         let (w, h) = (
             width.clamp(1, MAX_TEXTURE_SIZE),
             height.clamp(1, MAX_TEXTURE_SIZE),
         );
         Context {
+            api,
             error: GL_NO_ERROR,
             width: w,
             height: h,

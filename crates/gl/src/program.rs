@@ -219,7 +219,11 @@ impl Context {
         }
         if let Some(s) = self.shaders.get_mut(&shader) {
             let strs: Vec<&str> = s.source.iter().map(String::as_str).collect();
-            let compiled = glsl::compile(&strs, &CompileOptions::new(s.stage()));
+            let opts = CompileOptions {
+                compatibility_context: self.api.compatibility(),
+                ..CompileOptions::new(s.stage())
+            };
+            let compiled = glsl::compile(&strs, &opts);
             s.compiled = Some(Arc::new(compiled));
         }
     }

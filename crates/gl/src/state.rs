@@ -368,7 +368,7 @@ pub(crate) fn clamp01(x: f32) -> f32 {
 
 impl Context {
     fn set_cap(&mut self, cap: u32, on: bool) {
-        if self.reject_in_begin() {
+        if self.reject_in_begin() || self.refuse_removed_cap(cap) {
             return;
         }
         let key = if UNIT_CAPS.contains(&cap) {
@@ -408,7 +408,7 @@ impl Context {
 
     /// glIsEnabled (also answers for the client array capabilities).
     pub fn is_enabled(&mut self, cap: u32) -> bool {
-        if self.reject_in_begin() {
+        if self.reject_in_begin() || self.refuse_removed_cap(cap) {
             return false;
         }
         if UNIT_CAPS.contains(&cap) {

@@ -597,6 +597,36 @@ impl Preprocessor<'_> {
 
     /// `#version N [profile]`: must come first, once (§3.3); a profile word
     /// only from 1.50 on.
+    /// GL 3.2+ core contexts remove GLSL 1.10 and 1.20 (GL 3.3 core
+    /// appendix E.2.2), whether chosen by `#version` or by its absence.
+    pub(super) fn check_core_version(&mut self) {
+        let v = self.lang.version;
+        if self.compatibility_context || v >= Version::V130 {
+            return;
+        }
+        let span = self.version_span.unwrap_or(Span::new(0, 0));
+        let how = if self.version_span.is_some() {
+            format!("`#version {}'", v.number())
+        } else {
+            "no #version (so GLSL 1.10)".to_string()
+        };
+        self.diags.push(
+            Diagnostic::error(
+                Code::PpVersion,
+                span,
+                format!(
+                    "GLSL {} is not available in a core-profile context: the shader asks for it \
+                     with {how}",
+                    v.dotted()
+                ),
+            )
+            .with_note(
+                "core profiles accept GLSL 1.30 and later: start the shader with \
+                 `#version 330 core' (or 130/140/150), or create a compatibility-profile context",
+            ),
+        );
+    }
+
     fn d_version(&mut self, d: &Directive) {
         if let Some(first) = self.version_span {
             self.diags.push(

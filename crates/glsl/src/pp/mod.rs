@@ -541,6 +541,7 @@ impl<'m> Preprocessor<'m> {
 
     fn finish(mut self, end: u32) -> PpOutput {
         self.flush();
+        self.check_core_version();
         for c in std::mem::take(&mut self.conds).iter().rev() {
             self.diags.push(
                 Diagnostic::error(

@@ -554,6 +554,36 @@ fn versions_and_profiles() {
 }
 
 #[test]
+fn core_contexts_remove_glsl_110_and_120() {
+    let core = |src: &str| {
+        let mut map = SourceMap::new("t", src);
+        let mut opts = PpOptions::new(Stage::Fragment);
+        opts.compatibility_context = false;
+        messages(&preprocess(&mut map, &opts), Severity::Error)
+    };
+    let errs = core("void main() {}\n");
+    assert!(
+        errs.len() == 1
+            && errs[0].contains("GLSL 1.10 is not available")
+            && errs[0].contains("no #version"),
+        "{errs:?}"
+    );
+    let errs = core("#version 120\nvoid main() {}\n");
+    assert!(
+        errs.len() == 1 && errs[0].contains("GLSL 1.20 is not available"),
+        "{errs:?}"
+    );
+    for v in ["130", "140", "150", "150 core", "330"] {
+        assert!(
+            core(&format!("#version {v}\nvoid main() {{}}\n")).is_empty(),
+            "{v}"
+        );
+    }
+    // Compatibility contexts keep them.
+    assert!(messages(&run("#version 120\n").0, Severity::Error).is_empty());
+}
+
+#[test]
 fn keywords_follow_version() {
     let (out, _) = run("invariant precision");
     assert_eq!(
