@@ -30,6 +30,12 @@ gl_entry_points! {
     [list] fn glUniform4i(loc: GLint, x: GLint, y: GLint, z: GLint, w: GLint) => |c| {
         c.gl.uniform_4i(loc, x, y, z, w)
     }
+    [list] fn glUniform1ui(loc: GLint, x: GLuint) => |c| { c.gl.uniform_1ui(loc, x) }
+    [list] fn glUniform2ui(loc: GLint, x: GLuint, y: GLuint) => |c| { c.gl.uniform_2ui(loc, x, y) }
+    [list] fn glUniform3ui(loc: GLint, x: GLuint, y: GLuint, z: GLuint) => |c| { c.gl.uniform_3ui(loc, x, y, z) }
+    [list] fn glUniform4ui(loc: GLint, x: GLuint, y: GLuint, z: GLuint, w: GLuint) => |c| {
+        c.gl.uniform_4ui(loc, x, y, z, w)
+    }
 
     // ---- arrays ----
     fn glUniform1fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
@@ -63,6 +69,23 @@ gl_entry_points! {
     fn glUniform4iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| {
         let n = count.min(MAX_UNIFORM_ELEMENTS);
         c.gl.uniform_4iv(loc, n, &rd_vec(v, n as i64 * 4));
+    }
+
+    fn glUniform1uiv(loc: GLint, count: GLsizei, v: *const GLuint) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_1uiv(loc, n, &rd_vec(v, n as i64));
+    }
+    fn glUniform2uiv(loc: GLint, count: GLsizei, v: *const GLuint) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_2uiv(loc, n, &rd_vec(v, n as i64 * 2));
+    }
+    fn glUniform3uiv(loc: GLint, count: GLsizei, v: *const GLuint) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_3uiv(loc, n, &rd_vec(v, n as i64 * 3));
+    }
+    fn glUniform4uiv(loc: GLint, count: GLsizei, v: *const GLuint) => |c| {
+        let n = count.min(MAX_UNIFORM_ELEMENTS);
+        c.gl.uniform_4uiv(loc, n, &rd_vec(v, n as i64 * 4));
     }
 
     // ---- matrices ----
@@ -110,6 +133,10 @@ gl_entry_points! {
     }
     fn glGetUniformiv(program: GLuint, loc: GLint, v: *mut GLint) => |c| {
         let r = c.gl.get_uniformiv(program, loc);
+        wr(v, &r);
+    }
+    fn glGetUniformuiv(program: GLuint, loc: GLint, v: *mut GLuint) => |c| {
+        let r = c.gl.get_uniformuiv(program, loc);
         wr(v, &r);
     }
 }

@@ -159,9 +159,11 @@ mod rendering {
 
     #[test]
     fn later_gl_is_a_skip() {
-        let path = script("glsl130", "[require]\nGLSL >= 1.30\n[test]\n");
-        let o = shaderbox(&["shader-runner", &path, "-auto"]);
-        assert_eq!(o.status.code(), Some(0));
-        assert_eq!(last_line(&o), r#"PIGLIT: {"result": "skip" }"#);
+        for (name, req) in [("glsl400", "GLSL >= 4.00"), ("gl40", "GLSL >= 1.50\nGL >= 4.0")] {
+            let path = script(name, &format!("[require]\n{req}\n[test]\n"));
+            let o = shaderbox(&["shader-runner", &path, "-auto"]);
+            assert_eq!(o.status.code(), Some(0));
+            assert_eq!(last_line(&o), r#"PIGLIT: {"result": "skip" }"#, "{req}");
+        }
     }
 }

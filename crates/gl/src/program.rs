@@ -608,6 +608,11 @@ impl Context {
         self.set_uniform(loc, count, SetterKind::Int, comps, &w);
     }
 
+    fn uniform_ui(&mut self, loc: i32, count: i32, comps: usize, v: &[u32]) {
+        let w: Vec<Word> = v.iter().map(|&u| Word::Uint(u)).collect();
+        self.set_uniform(loc, count, SetterKind::Uint, comps, &w);
+    }
+
     /// Shared body of glUniformMatrix*fv; `transpose` input is row-major.
     fn uniform_matrix(
         &mut self,
@@ -644,6 +649,7 @@ impl Context {
                     .map(|&b| match ty.scalar() {
                         Some(glsl::types::Scalar::Float) => f32::from_bits(b),
                         Some(glsl::types::Scalar::Bool) => b as f32,
+                        Some(glsl::types::Scalar::Uint) => b as f32,
                         _ => b as i32 as f32,
                     })
                     .collect()
@@ -667,6 +673,14 @@ impl Context {
             .unwrap_or_default()
     }
 
+    /// glGetUniformuiv (GL 3.0): floats convert as glGetUniformiv's do.
+    pub fn get_uniformuiv(&mut self, program: u32, loc: i32) -> Vec<u32> {
+        self.get_uniformiv(program, loc)
+            .into_iter()
+            .map(|i| i as u32)
+            .collect()
+    }
+
     fn get_uniform(&mut self, program: u32, loc: i32) -> Option<(Vec<u32>, Type)> {
         let r = self.linked_exe(program)?.uniforms.get(loc);
         if r.is_none() {
@@ -676,9 +690,9 @@ impl Context {
     }
 }
 
-/// Generates glUniform{1,2,3,4}{f,i}[v] and glUniformMatrix*fv.
+/// Generates glUniform{1,2,3,4}{f,i,ui}[v] and glUniformMatrix*fv.
 macro_rules! uniform_entry_points {
-    ($($f:ident $fv:ident $i:ident $iv:ident $n:literal ($($a:ident),*);)*) => {
+    ($($f:ident $fv:ident $i:ident $iv:ident $ui:ident $uiv:ident $n:literal ($($a:ident),*);)*) => {
         impl Context {
             $(
                 #[doc = concat!("glUniform", stringify!($n), "f.")]
@@ -697,16 +711,24 @@ macro_rules! uniform_entry_points {
                 pub fn $iv(&mut self, loc: i32, count: i32, v: &[i32]) {
                     self.uniform_i(loc, count, $n, v);
                 }
+                #[doc = concat!("glUniform", stringify!($n), "ui (GL 3.0).")]
+                pub fn $ui(&mut self, loc: i32, $($a: u32),*) {
+                    self.uniform_ui(loc, 1, $n, &[$($a),*]);
+                }
+                #[doc = concat!("glUniform", stringify!($n), "uiv (GL 3.0).")]
+                pub fn $uiv(&mut self, loc: i32, count: i32, v: &[u32]) {
+                    self.uniform_ui(loc, count, $n, v);
+                }
             )*
         }
     };
 }
 
 uniform_entry_points! {
-    uniform_1f uniform_1fv uniform_1i uniform_1iv 1 (x);
-    uniform_2f uniform_2fv uniform_2i uniform_2iv 2 (x, y);
-    uniform_3f uniform_3fv uniform_3i uniform_3iv 3 (x, y, z);
-    uniform_4f uniform_4fv uniform_4i uniform_4iv 4 (x, y, z, w);
+    uniform_1f uniform_1fv uniform_1i uniform_1iv uniform_1ui uniform_1uiv 1 (x);
+    uniform_2f uniform_2fv uniform_2i uniform_2iv uniform_2ui uniform_2uiv 2 (x, y);
+    uniform_3f uniform_3fv uniform_3i uniform_3iv uniform_3ui uniform_3uiv 3 (x, y, z);
+    uniform_4f uniform_4fv uniform_4i uniform_4iv uniform_4ui uniform_4uiv 4 (x, y, z, w);
 }
 
 macro_rules! uniform_matrix_entry_points {

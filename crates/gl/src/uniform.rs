@@ -81,6 +81,8 @@ pub struct UniformTable {
 pub enum SetterKind {
     Float,
     Int,
+    /// glUniform*ui (GL 3.0).
+    Uint,
     /// glUniformMatrix{cols}x{rows}fv.
     Matrix {
         cols: u8,
@@ -277,8 +279,15 @@ impl UniformTable {
                 matches!(s, Scalar::Float | Scalar::Bool)
                     && leaf.ty.vector_size() == Some(comps as u8)
             }
+            // Each setter family loads its own type and bool (GL 3.3
+            // §2.11.4): glUniform*i ints, glUniform*ui uints.
             (SetterKind::Int, Base::Scalar(s) | Base::Vector(s, _)) => {
-                s != Scalar::Float && leaf.ty.vector_size() == Some(comps as u8)
+                matches!(s, Scalar::Int | Scalar::Bool)
+                    && leaf.ty.vector_size() == Some(comps as u8)
+            }
+            (SetterKind::Uint, Base::Scalar(s) | Base::Vector(s, _)) => {
+                matches!(s, Scalar::Uint | Scalar::Bool)
+                    && leaf.ty.vector_size() == Some(comps as u8)
             }
             (SetterKind::Int, Base::Sampler(_)) => comps == 1,
             (SetterKind::Matrix { cols, rows }, Base::Matrix { cols: c, rows: r }) => {
@@ -301,7 +310,7 @@ impl UniformTable {
         if is_sampler
             && data[..n].iter().any(|w| match w {
                 Word::Int(i) => *i < 0 || *i as usize >= crate::MAX_TEXTURE_IMAGE_UNITS,
-                Word::Float(_) => true,
+                Word::Float(_) | Word::Uint(_) => true,
             })
         {
             return Err(UniformError::InvalidValue);
@@ -341,6 +350,7 @@ impl UniformTable {
 pub enum Word {
     Float(f32),
     Int(i32),
+    Uint(u32),
 }
 
 impl Word {
@@ -348,6 +358,7 @@ impl Word {
         match self {
             Word::Float(f) => f.to_bits(),
             Word::Int(i) => i as u32,
+            Word::Uint(u) => u,
         }
     }
 
@@ -357,6 +368,7 @@ impl Word {
         match self {
             Word::Float(f) => f != 0.0,
             Word::Int(i) => i != 0,
+            Word::Uint(u) => u != 0,
         }
     }
 }

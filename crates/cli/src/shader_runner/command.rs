@@ -186,6 +186,8 @@ pub enum UniformType {
     Float(u8),
     /// int, ivec2..4.
     Int(u8),
+    /// uint, uvec2..4 (glUniform*uiv, GL 3.0).
+    Uint(u8),
     /// bool, bvec2..4 (not in piglit; set with glUniform*iv).
     Bool(u8),
     /// matCxR: columns, rows.
@@ -196,7 +198,10 @@ impl UniformType {
     /// Values the command reads.
     pub fn components(self) -> usize {
         match self {
-            UniformType::Float(n) | UniformType::Int(n) | UniformType::Bool(n) => usize::from(n),
+            UniformType::Float(n)
+            | UniformType::Int(n)
+            | UniformType::Uint(n)
+            | UniformType::Bool(n) => usize::from(n),
             UniformType::Mat(c, r) => usize::from(c) * usize::from(r),
         }
     }
@@ -206,6 +211,7 @@ impl UniformType {
 pub enum UniformValues {
     Floats(Vec<f32>),
     Ints(Vec<i32>),
+    Uints(Vec<u32>),
 }
 
 /// A line piglit's `shader_runner` would reject.
@@ -936,8 +942,10 @@ pub fn uniform_type(name: &str) -> Result<Option<UniformType>, String> {
                     (Some(c), Some(r)) => UniformType::Mat(c, r),
                     _ => return Ok(None),
                 }
-            } else if name == "uint" || name.starts_with("uvec") {
-                return Err("unsigned integer uniforms (OpenGL 3.0)".into());
+            } else if name == "uint" {
+                UniformType::Uint(1)
+            } else if let Some(n) = name.strip_prefix("uvec").and_then(vec_n) {
+                UniformType::Uint(n)
             } else if name == "double" || name.starts_with("dvec") || name.starts_with("dmat") {
                 return Err("double uniforms (OpenGL 4.0)".into());
             } else if name.contains("64") {
@@ -978,6 +986,12 @@ fn parse_uniform(rest: &str, line: &str) -> Result<Command, CommandError> {
             missing = n - v.len();
             v.resize(n, 0);
             UniformValues::Ints(v)
+        }
+        UniformType::Uint(_) => {
+            let (mut v, _) = scan::scan_list(rest, n, scan::scan_u32_base0);
+            missing = n - v.len();
+            v.resize(n, 0);
+            UniformValues::Uints(v)
         }
     };
     if missing == n {
@@ -1194,7 +1208,15 @@ mod tests {
             Command::Uniform { ty, .. } => assert_eq!(ty, UniformType::Mat(4, 4)),
             c => panic!("{c:?}"),
         }
-        assert!(matches!(p("uniform uint u 1"), Command::NeedsLaterGl(_)));
+        assert!(matches!(
+            p("uniform uvec2 u 0xffffffff -1"),
+            Command::Uniform {
+                ty: UniformType::Uint(2),
+                values: UniformValues::Uints(ref v),
+                ..
+            } if v == &[u32::MAX, u32::MAX]
+        ));
+        assert!(matches!(p("uniform dvec2 u 1 2"), Command::NeedsLaterGl(_)));
         assert_eq!(
             p("uniform vec4 v 0.5 -1.5 1.5, 0.0"),
             Command::Uniform {

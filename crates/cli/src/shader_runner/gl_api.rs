@@ -47,6 +47,10 @@ pub trait GlApi {
     fn uniform_2iv(&mut self, location: i32, count: i32, value: &[i32]);
     fn uniform_3iv(&mut self, location: i32, count: i32, value: &[i32]);
     fn uniform_4iv(&mut self, location: i32, count: i32, value: &[i32]);
+    fn uniform_1uiv(&mut self, location: i32, count: i32, value: &[u32]);
+    fn uniform_2uiv(&mut self, location: i32, count: i32, value: &[u32]);
+    fn uniform_3uiv(&mut self, location: i32, count: i32, value: &[u32]);
+    fn uniform_4uiv(&mut self, location: i32, count: i32, value: &[u32]);
     fn uniform_matrix_2fv(&mut self, location: i32, count: i32, transpose: bool, value: &[f32]);
     fn uniform_matrix_3fv(&mut self, location: i32, count: i32, transpose: bool, value: &[f32]);
     fn uniform_matrix_4fv(&mut self, location: i32, count: i32, transpose: bool, value: &[f32]);

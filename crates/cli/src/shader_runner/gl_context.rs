@@ -14,7 +14,7 @@ use gl::{ArrayData, Param};
 /// `depthbuffer`, which only matters to depth tests without one.)
 pub fn execute(opts: &Options, name: &str, script: &Script) -> (Verdict, String, String) {
     let window = super::run::window_config(script);
-    let mut ctx = gl::Context::new(window.width, window.height);
+    let mut ctx = gl::Context::with_api(window.width, window.height, window.api);
     execute_on(&mut ctx, opts, name, script)
 }
 
@@ -24,6 +24,11 @@ fn f32_bytes(v: &[f32]) -> Vec<u8> {
 
 impl GlApi for gl::Context {
     fn get_string(&mut self, name: u32) -> String {
+        // Core contexts have no GL_EXTENSIONS string; the runner checks
+        // extensions the way piglit does there, through glGetStringi.
+        if name == gl::enums::GL_EXTENSIONS && self.is_core() {
+            return self.api().extensions().join(" ");
+        }
         gl::Context::get_string(self, name)
     }
     fn get_integer_v(&mut self, pname: u32, params: &mut [i32]) {
@@ -110,6 +115,18 @@ impl GlApi for gl::Context {
     }
     fn uniform_4iv(&mut self, l: i32, c: i32, v: &[i32]) {
         gl::Context::uniform_4iv(self, l, c, v)
+    }
+    fn uniform_1uiv(&mut self, l: i32, c: i32, v: &[u32]) {
+        gl::Context::uniform_1uiv(self, l, c, v)
+    }
+    fn uniform_2uiv(&mut self, l: i32, c: i32, v: &[u32]) {
+        gl::Context::uniform_2uiv(self, l, c, v)
+    }
+    fn uniform_3uiv(&mut self, l: i32, c: i32, v: &[u32]) {
+        gl::Context::uniform_3uiv(self, l, c, v)
+    }
+    fn uniform_4uiv(&mut self, l: i32, c: i32, v: &[u32]) {
+        gl::Context::uniform_4uiv(self, l, c, v)
     }
     fn uniform_matrix_2fv(&mut self, l: i32, c: i32, t: bool, v: &[f32]) {
         gl::Context::uniform_matrix_2fv(self, l, c, t, v)

@@ -56,6 +56,8 @@ pub struct WindowConfig {
     pub width: i32,
     pub height: i32,
     pub depth: bool,
+    /// The context the script asks for ([`required_api`]).
+    pub api: gl::Api,
 }
 
 /// piglit's default `shader_runner` window.
@@ -68,6 +70,7 @@ pub fn window_config(script: &Script) -> WindowConfig {
         width: DEFAULT_SIZE,
         height: DEFAULT_SIZE,
         depth: false,
+        api: required_api(script),
     };
     for (_, r) in &script.requirements {
         match r {
@@ -80,6 +83,55 @@ pub fn window_config(script: &Script) -> WindowConfig {
         }
     }
     cfg
+}
+
+/// The GL version a GLSL version needs (the GL that introduced it).
+fn gl_for_glsl(glsl: u32) -> u32 {
+    match glsl {
+        0..=110 => 20,
+        111..=120 => 21,
+        121..=130 => 30,
+        131..=140 => 31,
+        141..=150 => 32,
+        v => v / 10,
+    }
+}
+
+/// The context piglit's shader_runner asks for before reading the script
+/// (its `get_required_config`): the `GL` requirement if it is `>=`, `>`
+/// or `==` (else 1.0), raised to what the `GLSL` requirement needs; from
+/// 3.1 on a core context unless the requirement says `COMPAT` (piglit's
+/// framework tries core first, and gets it), below a compatibility one.
+/// shaderbox answers with the API [`gl::Api::for_request`] gives.
+pub fn required_api(script: &Script) -> gl::Api {
+    let mut gl_req = (10, false, false);
+    let mut glsl = 0;
+    for (_, r) in &script.requirements {
+        match r {
+            Requirement::Gl(v) if !v.es && matches!(v.cmp, Cmp::Ge | Cmp::Gt | Cmp::Eq) => {
+                gl_req = (v.number, v.core, v.compat)
+            }
+            Requirement::Glsl(v) if !v.es && matches!(v.cmp, Cmp::Ge | Cmp::Gt | Cmp::Eq) => {
+                glsl = v.number
+            }
+            _ => {}
+        }
+    }
+    let (mut num, core, compat) = gl_req;
+    num = num.max(gl_for_glsl(glsl));
+    let profile = if num >= 31 && (core || !compat) {
+        gl::Profile::Core
+    } else {
+        gl::Profile::Compatibility
+    };
+    let major = (num / 10) as i32;
+    let minor = (num % 10) as i32;
+    // A version beyond shaderbox's: the newest context of the profile,
+    // whose version check then skips the test as piglit's would.
+    gl::Api::for_request(major, minor, profile).unwrap_or(match profile {
+        gl::Profile::Core => gl::Api::GL33_CORE,
+        gl::Profile::Compatibility => gl::Api::GL33_COMPAT,
+    })
 }
 
 /// What a run printed and its verdict.
@@ -797,6 +849,12 @@ impl<'a, G: GlApi> Runner<'a, G> {
                 3 => gl.uniform_3iv(loc, 1, v),
                 _ => gl.uniform_4iv(loc, 1, v),
             },
+            (UniformType::Uint(n), UniformValues::Uints(v)) => match n {
+                1 => gl.uniform_1uiv(loc, 1, v),
+                2 => gl.uniform_2uiv(loc, 1, v),
+                3 => gl.uniform_3uiv(loc, 1, v),
+                _ => gl.uniform_4uiv(loc, 1, v),
+            },
             (UniformType::Mat(c, r), UniformValues::Floats(v)) => match (c, r) {
                 (2, 2) => gl.uniform_matrix_2fv(loc, 1, false, v),
                 (2, 3) => gl.uniform_matrix_2x3fv(loc, 1, false, v),
@@ -1094,7 +1152,8 @@ mod tests {
             WindowConfig {
                 width: 20,
                 height: 30,
-                depth: true
+                depth: true,
+                api: gl::Api::GL21,
             }
         );
         let s = super::super::script::parse("[require]\nGLSL >= 1.10\n").unwrap();
@@ -1103,9 +1162,24 @@ mod tests {
             WindowConfig {
                 width: 250,
                 height: 250,
-                depth: false
+                depth: false,
+                api: gl::Api::GL21,
             }
         );
+    }
+
+    #[test]
+    fn contexts_follow_piglits_choice() {
+        let api = |req: &str| {
+            required_api(&super::super::script::parse(&format!("[require]\n{req}\n")).unwrap())
+        };
+        assert_eq!(api("GLSL >= 1.20"), gl::Api::GL21);
+        assert_eq!(api("GLSL >= 1.30"), gl::Api::GL33_COMPAT);
+        assert_eq!(api("GLSL >= 1.40"), gl::Api::GL33_CORE);
+        assert_eq!(api("GLSL >= 1.50\nGL COMPAT >= 3.2"), gl::Api::GL33_COMPAT);
+        assert_eq!(api("GLSL >= 1.30\nGL >= 3.1"), gl::Api::GL33_CORE);
+        assert_eq!(api("GLSL >= 1.10\nGL >= 2.1"), gl::Api::GL21);
+        assert_eq!(api("GLSL >= 4.00"), gl::Api::GL33_CORE);
     }
 
     #[test]

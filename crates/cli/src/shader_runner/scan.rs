@@ -123,6 +123,13 @@ pub fn scan_i32_base0(s: &str) -> Option<(i32, &str)> {
     Some((v as i32, rest))
 }
 
+/// C's `strtoul(s, &end, 0)` converted to `unsigned` (`-1` wraps to
+/// 0xffffffff, as in C).
+pub fn scan_u32_base0(s: &str) -> Option<(u32, &str)> {
+    let (v, rest) = scan_i64_base(s, 0)?;
+    Some((v as u32, rest))
+}
+
 /// C's `strtol(s, &end, 10)` converted to `int`.
 pub fn scan_i32_dec(s: &str) -> Option<(i32, &str)> {
     let (v, rest) = scan_i64_base(s, 10)?;

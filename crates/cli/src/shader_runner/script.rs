@@ -99,6 +99,7 @@ pub struct VersionReq {
     pub number: u32,
     pub es: bool,
     pub core: bool,
+    pub compat: bool,
 }
 
 /// One line of `[require]`.
@@ -364,6 +365,7 @@ fn finish(
 fn parse_version(rest: &str, line: usize, glsl: bool) -> Result<VersionReq, ScriptError> {
     let mut s = scan::skip_space(rest);
     let mut core = false;
+    let mut compat = false;
     let mut es = false;
     for (word, flag) in [("CORE", 0), ("COMPAT", 1), ("ES", 2)] {
         let t = scan::skip_space(s);
@@ -371,8 +373,8 @@ fn parse_version(rest: &str, line: usize, glsl: bool) -> Result<VersionReq, Scri
             s = r;
             match flag {
                 0 => core = true,
-                2 => es = true,
-                _ => {}
+                1 => compat = true,
+                _ => es = true,
             }
         }
     }
@@ -412,6 +414,7 @@ fn parse_version(rest: &str, line: usize, glsl: bool) -> Result<VersionReq, Scri
         number,
         es,
         core,
+        compat,
     })
 }
 
@@ -684,13 +687,15 @@ draw rect -1 -1 2 2
                     cmp: Cmp::Ge,
                     number: 110,
                     es: false,
-                    core: false
+                    core: false,
+                    compat: false,
                 }),
                 &Requirement::Gl(VersionReq {
                     cmp: Cmp::Ge,
                     number: 20,
                     es: false,
-                    core: false
+                    core: false,
+                    compat: false,
                 }),
                 &Requirement::Limit {
                     name: "GL_MAX_VARYING_COMPONENTS".into(),
