@@ -16,6 +16,19 @@ mod jit;
 mod piglit;
 mod variants;
 
+/// A small deterministic generator (xorshift) for the randomized tests;
+/// each test module adds the draws it needs.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+}
+
 pub(crate) fn link_one(stage: Stage, src: &str) -> Result<glsl::link::LinkedStage, String> {
     let sh = compile(&[src], &CompileOptions::new(stage));
     if !sh.ok() {
