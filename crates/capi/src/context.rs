@@ -476,6 +476,32 @@ pub(crate) fn record_vector<const N: usize, T: Copy + 'static>(
     }
 }
 
+/// The body of a vector entry point whose value count depends on its
+/// pname (glLightfv, glFogiv...): the `n` values at `v` are read once;
+/// while a display list is compiled `replay` is recorded with a copy of
+/// them, and unless that is all (GL_COMPILE) `apply` runs on them. Nothing
+/// happens for a null pointer.
+pub(crate) fn vector_call_n<T: Copy + 'static>(
+    c: &mut OsContext,
+    v: *const T,
+    n: i64,
+    replay: impl Fn(*const T) + 'static,
+    apply: impl FnOnce(&mut OsContext, &[T]),
+) {
+    if v.is_null() {
+        return;
+    }
+    // SAFETY: GL's contract for vector arguments: n values at v.
+    let values = unsafe { crate::abi::rd_vec(v, n) };
+    if c.compiling() {
+        let copy = values.clone();
+        if c.record(move || replay(copy.as_ptr())) {
+            return;
+        }
+    }
+    apply(c, &values);
+}
+
 /// The body of a vector entry point (glColor3ubv...): while a display list
 /// is compiled the values are recorded ([`record_vector`]); unless that is
 /// all (GL_COMPILE), `apply` runs on the `N` values at `v` (nothing for a

@@ -9,6 +9,22 @@ use crate::context::{record_call, with_ctx};
 /// Most array elements read from client memory by one glUniform*v call.
 const MAX_UNIFORM_ELEMENTS: i32 = 4096;
 
+/// The body of a glUniform*v call: reads `count` elements (at most
+/// [`MAX_UNIFORM_ELEMENTS`]) of `per` values each at `v` and hands `set`
+/// the element count and the values.
+unsafe fn uniform_array<T: Copy>(
+    gl: &mut gl::Context,
+    count: GLsizei,
+    v: *const T,
+    per: i64,
+    set: impl FnOnce(&mut gl::Context, GLsizei, &[T]),
+) {
+    let n = count.min(MAX_UNIFORM_ELEMENTS);
+    // SAFETY: GL's contract: `count` elements of `per` values at v.
+    let values = unsafe { rd_vec(v, n as i64 * per) };
+    set(gl, n, &values);
+}
+
 gl_entry_points! {
     fn glGetUniformLocation(program: GLuint, name: *const GLchar) -> GLint [-1] => |c| {
         match cstr(name) {
@@ -38,38 +54,14 @@ gl_entry_points! {
     }
 
     // ---- arrays ----
-    fn glUniform1fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_1fv(loc, n, &rd_vec(v, n as i64));
-    }
-    fn glUniform2fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_2fv(loc, n, &rd_vec(v, n as i64 * 2));
-    }
-    fn glUniform3fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_3fv(loc, n, &rd_vec(v, n as i64 * 3));
-    }
-    fn glUniform4fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_4fv(loc, n, &rd_vec(v, n as i64 * 4));
-    }
-    fn glUniform1iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_1iv(loc, n, &rd_vec(v, n as i64));
-    }
-    fn glUniform2iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_2iv(loc, n, &rd_vec(v, n as i64 * 2));
-    }
-    fn glUniform3iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_3iv(loc, n, &rd_vec(v, n as i64 * 3));
-    }
-    fn glUniform4iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_4iv(loc, n, &rd_vec(v, n as i64 * 4));
-    }
+    fn glUniform1fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 1, |g, n, a| g.uniform_1fv(loc, n, a)) }
+    fn glUniform2fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 2, |g, n, a| g.uniform_2fv(loc, n, a)) }
+    fn glUniform3fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 3, |g, n, a| g.uniform_3fv(loc, n, a)) }
+    fn glUniform4fv(loc: GLint, count: GLsizei, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 4, |g, n, a| g.uniform_4fv(loc, n, a)) }
+    fn glUniform1iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| { uniform_array(&mut c.gl, count, v, 1, |g, n, a| g.uniform_1iv(loc, n, a)) }
+    fn glUniform2iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| { uniform_array(&mut c.gl, count, v, 2, |g, n, a| g.uniform_2iv(loc, n, a)) }
+    fn glUniform3iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| { uniform_array(&mut c.gl, count, v, 3, |g, n, a| g.uniform_3iv(loc, n, a)) }
+    fn glUniform4iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| { uniform_array(&mut c.gl, count, v, 4, |g, n, a| g.uniform_4iv(loc, n, a)) }
 
     fn glUniform1uiv(loc: GLint, count: GLsizei, v: *const GLuint) => |c| {
         let n = count.min(MAX_UNIFORM_ELEMENTS);
@@ -89,42 +81,15 @@ gl_entry_points! {
     }
 
     // ---- matrices ----
-    fn glUniformMatrix2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_2fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 4));
-    }
-    fn glUniformMatrix3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_3fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 9));
-    }
-    fn glUniformMatrix4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_4fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 16));
-    }
-    fn glUniformMatrix2x3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_2x3fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 6));
-    }
-    fn glUniformMatrix3x2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_3x2fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 6));
-    }
-    fn glUniformMatrix2x4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_2x4fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 8));
-    }
-    fn glUniformMatrix4x2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_4x2fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 8));
-    }
-    fn glUniformMatrix3x4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_3x4fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 12));
-    }
-    fn glUniformMatrix4x3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_matrix_4x3fv(loc, n, as_bool(transpose), &rd_vec(v, n as i64 * 12));
-    }
+    fn glUniformMatrix2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 4, |g, n, a| g.uniform_matrix_2fv(loc, n, as_bool(transpose), a)) }
+    fn glUniformMatrix3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 9, |g, n, a| g.uniform_matrix_3fv(loc, n, as_bool(transpose), a)) }
+    fn glUniformMatrix4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 16, |g, n, a| g.uniform_matrix_4fv(loc, n, as_bool(transpose), a)) }
+    fn glUniformMatrix2x3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 6, |g, n, a| g.uniform_matrix_2x3fv(loc, n, as_bool(transpose), a)) }
+    fn glUniformMatrix3x2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 6, |g, n, a| g.uniform_matrix_3x2fv(loc, n, as_bool(transpose), a)) }
+    fn glUniformMatrix2x4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 8, |g, n, a| g.uniform_matrix_2x4fv(loc, n, as_bool(transpose), a)) }
+    fn glUniformMatrix4x2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 8, |g, n, a| g.uniform_matrix_4x2fv(loc, n, as_bool(transpose), a)) }
+    fn glUniformMatrix3x4fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 12, |g, n, a| g.uniform_matrix_3x4fv(loc, n, as_bool(transpose), a)) }
+    fn glUniformMatrix4x3fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 12, |g, n, a| g.uniform_matrix_4x3fv(loc, n, as_bool(transpose), a)) }
 
     // ---- queries ----
     fn glGetUniformfv(program: GLuint, loc: GLint, v: *mut GLfloat) => |c| {

@@ -276,13 +276,7 @@ crate::multiversion! {
 
 #[inline(always)]
 fn store_outputs_with(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
-    // Discarded lanes' registers may hold anything (`mask_flow`).
-    let active = batch.active & FULL & !batch.discarded;
-    if batch.outputs.len() < k.interface.output_components {
-        batch
-            .outputs
-            .resize(k.interface.output_components, [0.0; LANES]);
-    }
+    let active = batch.output_lanes(k);
     for &(reg, oc, kind) in &k.outputs {
         let Some(&src) = file.get(reg as usize) else {
             continue;

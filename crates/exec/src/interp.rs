@@ -376,12 +376,7 @@ pub(crate) fn run<H: Hook>(
         });
     }
 
-    let active = batch.active & FULL & !batch.discarded;
-    if batch.outputs.len() < k.interface.output_components {
-        batch
-            .outputs
-            .resize(k.interface.output_components, [0.0; LANES]);
-    }
+    let active = batch.output_lanes(k);
     for &(reg, oc, kind) in &k.outputs {
         let src = r[reg as usize];
         if let Some(dst) = batch.outputs.get_mut(oc) {

@@ -308,6 +308,18 @@ impl Batch {
             helper: 0,
         }
     }
+
+    /// Before a run stores `k`'s outputs: makes room for all of them and
+    /// gives the lanes stored, the active ones not discarded (whose
+    /// registers may hold anything, `mask_flow`).
+    #[inline]
+    pub(crate) fn output_lanes(&mut self, k: &Kernel) -> LaneMask {
+        if self.outputs.len() < k.interface.output_components {
+            self.outputs
+                .resize(k.interface.output_components, [0.0; LANES]);
+        }
+        self.active & lane::FULL & !self.discarded
+    }
 }
 
 /// A texture lookup for the lanes of `mask`.
@@ -465,24 +477,16 @@ impl Kernel {
         limit: u64,
     ) -> Result<Kernel, ExecError> {
         let l = lower::lower(stage, limit)?;
-        Ok(Kernel::assemble(
-            stage.stage,
-            l.program,
-            l.interface,
-            l.inputs,
-            l.outputs,
-            LOOP_BUDGET,
-        ))
+        Ok(Kernel::assemble(stage.stage, l, LOOP_BUDGET))
     }
 
-    fn assemble(
-        stage: glsl::Stage,
-        program: program::Program,
-        interface: Interface,
-        inputs: Vec<(usize, u32, glsl::types::Scalar)>,
-        outputs: Vec<(u32, usize, glsl::types::Scalar)>,
-        loop_budget: u64,
-    ) -> Kernel {
+    fn assemble(stage: glsl::Stage, l: lower::Lowered, loop_budget: u64) -> Kernel {
+        let lower::Lowered {
+            program,
+            interface,
+            inputs,
+            outputs,
+        } = l;
         let live_out: Vec<u32> = outputs.iter().map(|&(r, _, _)| r).collect();
         let code = std::sync::Arc::new(opt::optimize(&program, &live_out));
         Kernel {
@@ -673,14 +677,13 @@ impl Kernel {
             let range = slot.offset..slot.offset + slot.components;
             slot.written &= inputs.iter().any(|&(ic, _, _)| range.contains(&ic));
         }
-        Some(Kernel::assemble(
-            self.stage,
+        let l = lower::Lowered {
             program,
             interface,
             inputs,
             outputs,
-            self.loop_budget,
-        ))
+        };
+        Some(Kernel::assemble(self.stage, l, self.loop_budget))
     }
 
     /// Like [`Kernel::run`], reporting what each active (non-helper) lane

@@ -138,38 +138,12 @@ impl Kernel {
     fn print_interface(&self, out: &mut String) {
         let itf = &self.interface;
         for s in &itf.inputs {
-            let regs: Vec<String> = (s.offset..s.offset + s.components)
-                .map(|c| {
-                    self.inputs
-                        .iter()
-                        .find(|&&(ic, _, _)| ic == c)
-                        .map_or("-".to_string(), |&(_, r, _)| format!("r{r}"))
-                })
-                .collect();
-            let _ = writeln!(
-                out,
-                "in  {} -> {}{}",
-                slot(s, itf),
-                regs.join(" "),
-                if s.written { "" } else { " unread" }
-            );
+            let reg = |c| self.inputs.iter().find(|i| i.0 == c).map(|i| i.1);
+            slot_line(out, "in ", "->", s, itf, reg, "unread");
         }
         for s in &itf.outputs {
-            let regs: Vec<String> = (s.offset..s.offset + s.components)
-                .map(|c| {
-                    self.outputs
-                        .iter()
-                        .find(|&&(_, oc, _)| oc == c)
-                        .map_or("-".to_string(), |&(r, _, _)| format!("r{r}"))
-                })
-                .collect();
-            let _ = writeln!(
-                out,
-                "out {} <- {}{}",
-                slot(s, itf),
-                regs.join(" "),
-                if s.written { "" } else { " unwritten" }
-            );
+            let reg = |c| self.outputs.iter().find(|o| o.1 == c).map(|o| o.0);
+            slot_line(out, "out", "<-", s, itf, reg, "unwritten");
         }
         for s in &itf.uniforms {
             let _ = writeln!(
@@ -183,6 +157,34 @@ impl Kernel {
             );
         }
     }
+}
+
+/// One input or output line: the slot, then the register that holds each
+/// of its components (`-` for none), then `unused` when the program does
+/// not use the slot.
+fn slot_line(
+    out: &mut String,
+    dir: &str,
+    arrow: &str,
+    s: &Slot,
+    itf: &Interface,
+    reg: impl Fn(usize) -> Option<u32>,
+    unused: &str,
+) {
+    let regs: Vec<String> = (s.offset..s.offset + s.components)
+        .map(|c| reg(c).map_or("-".to_string(), |r| format!("r{r}")))
+        .collect();
+    let _ = writeln!(
+        out,
+        "{dir} {} {arrow} {}{}",
+        slot(s, itf),
+        regs.join(" "),
+        if s.written {
+            String::new()
+        } else {
+            format!(" {unused}")
+        }
+    );
 }
 
 fn header(out: &mut String, k: &Kernel, what: &str, p: &Program) {

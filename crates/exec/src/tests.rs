@@ -16,6 +16,19 @@ mod jit;
 mod piglit;
 mod variants;
 
+/// A small deterministic generator (xorshift) for the randomized tests;
+/// each test module adds the draws it needs.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+}
+
 pub(crate) fn link_one(stage: Stage, src: &str) -> Result<glsl::link::LinkedStage, String> {
     let sh = compile(&[src], &CompileOptions::new(stage));
     if !sh.ok() {
@@ -335,30 +348,26 @@ fn discard_stops_the_lane() {
 
 #[test]
 fn discard_in_a_function_inside_a_loop() {
-    let (c, discarded) = frag_colors(
-        "float k;
-        void kill(float x) { if (x > 3.0) discard; k += 1.0; }
-        void main() {
-            k = 0.0;
-            for (int i = 0; i < 4; i++) kill(gl_FragCoord.x + float(i));
-            gl_FragColor = vec4(k);
-        }",
-        &[],
-    );
+    // Lanes whose x + i passes `limit` for some i are discarded.
+    let run = |limit: &str| {
+        frag_colors(
+            &format!(
+                "float k;
+                void kill(float x) {{ if (x > {limit}) discard; k += 1.0; }}
+                void main() {{
+                    k = 0.0;
+                    for (int i = 0; i < 4; i++) kill(gl_FragCoord.x + float(i));
+                    gl_FragColor = vec4(k);
+                }}"
+            ),
+            &[],
+        )
+    };
     // Lane 0 (x=0.5): i=0..3 → 0.5..3.5: killed at i=3. Only lanes with
     // x + 3 <= 3 survive: none.
+    let (_, discarded) = run("3.0");
     assert_eq!(discarded, 0xffff);
-    let _ = c;
-    let (c, discarded) = frag_colors(
-        "float k;
-        void kill(float x) { if (x > 5.0) discard; k += 1.0; }
-        void main() {
-            k = 0.0;
-            for (int i = 0; i < 4; i++) kill(gl_FragCoord.x + float(i));
-            gl_FragColor = vec4(k);
-        }",
-        &[],
-    );
+    let (c, discarded) = run("5.0");
     // x + 3 <= 5 → x <= 2: lanes 0, 1 survive.
     assert_eq!(discarded, 0xffff & !0b11);
     assert_eq!(c[0][0], 4.0);

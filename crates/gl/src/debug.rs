@@ -182,4 +182,23 @@ impl Context {
             })
             .unwrap_or_default()
     }
+
+    /// A debugged draw's `stage`: its kernel, and the application's shader
+    /// objects when the stage is the program's (`user`), none for the
+    /// fixed-function one.
+    pub(crate) fn stage_info(
+        &self,
+        stage: glsl::Stage,
+        user: bool,
+        kernel: Arc<exec::Kernel>,
+    ) -> StageInfo {
+        StageInfo {
+            shaders: if user {
+                self.stage_shaders(stage)
+            } else {
+                Vec::new()
+            },
+            kernel,
+        }
+    }
 }

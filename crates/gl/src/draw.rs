@@ -207,22 +207,8 @@ impl Context {
                 count: indices.len(),
                 program: self.current_program,
                 framebuffer: target.name,
-                vertex: crate::debug::StageInfo {
-                    shaders: if vs_user {
-                        self.stage_shaders(glsl::Stage::Vertex)
-                    } else {
-                        Vec::new()
-                    },
-                    kernel: vs,
-                },
-                fragment: crate::debug::StageInfo {
-                    shaders: if fs_user {
-                        self.stage_shaders(glsl::Stage::Fragment)
-                    } else {
-                        Vec::new()
-                    },
-                    kernel: fs,
-                },
+                vertex: self.stage_info(glsl::Stage::Vertex, vs_user, vs),
+                fragment: self.stage_info(glsl::Stage::Fragment, fs_user, fs),
                 probe,
                 view,
             };

@@ -376,20 +376,28 @@ impl Context {
         }
     }
 
+    /// The index of a glTexGen coordinate (GL_S..GL_Q); GL_INVALID_ENUM
+    /// for another value.
+    fn tex_gen_coord(&mut self, coord: u32) -> Option<usize> {
+        match coord {
+            GL_S => Some(0),
+            GL_T => Some(1),
+            GL_R => Some(2),
+            GL_Q => Some(3),
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                None
+            }
+        }
+    }
+
     /// glGetTexGenfv (the eye plane as stored: in eye coordinates).
     pub fn get_tex_genfv(&mut self, coord: u32, pname: u32) -> Vec<f32> {
         if self.reject_in_begin() {
             return Vec::new();
         }
-        let c = match coord {
-            GL_S => 0,
-            GL_T => 1,
-            GL_R => 2,
-            GL_Q => 3,
-            _ => {
-                self.set_error(GL_INVALID_ENUM);
-                return Vec::new();
-            }
+        let Some(c) = self.tex_gen_coord(coord) else {
+            return Vec::new();
         };
         let unit = self.st.active_texture as usize;
         let Some(g) = self.st.tex_gen.get(unit).map(|u| u[c]) else {
@@ -415,15 +423,8 @@ impl Context {
             return;
         }
         let (as_enum, v) = (v.as_enum(), &v.floats(pname)[..]);
-        let c = match coord {
-            GL_S => 0,
-            GL_T => 1,
-            GL_R => 2,
-            GL_Q => 3,
-            _ => {
-                self.set_error(GL_INVALID_ENUM);
-                return;
-            }
+        let Some(c) = self.tex_gen_coord(coord) else {
+            return;
         };
         let unit = self.st.active_texture as usize;
         if unit >= MAX_TEXTURE_UNITS {

@@ -14,6 +14,8 @@
 //! large primitives by pixels. The carried values are interpolated in
 //! `f32` at the same parameter.
 
+use std::ops::{Add, Sub};
+
 /// A vertex during clipping.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct ClipVertex {
@@ -31,6 +33,23 @@ pub(crate) struct Planes {
 }
 
 const VIEW_PLANES: usize = 6;
+
+/// The distance of clip-space `[x, y, z, w]` inside view plane `p`
+/// (`w ± x`, `w ± y`, `w ± z` for planes 0 to 5), in the type it is given
+/// in; `None` for a user plane.
+#[inline]
+fn view_distance<T: Copy + Add<Output = T> + Sub<Output = T>>(p: usize, pos: [T; 4]) -> Option<T> {
+    let [x, y, z, w] = pos;
+    match p {
+        0 => Some(w + x),
+        1 => Some(w - x),
+        2 => Some(w + y),
+        3 => Some(w - y),
+        4 => Some(w + z),
+        5 => Some(w - z),
+        _ => None,
+    }
+}
 
 impl Planes {
     pub fn new(user: &[Option<[f32; 4]>; 8]) -> Planes {
@@ -52,16 +71,7 @@ impl Planes {
     /// view plane's two `f32` terms is exact in `f64` for every finite
     /// input that matters (their exponents differ by less than 29).
     fn distance_f64(&self, p: usize, v: &ClipVertex) -> f64 {
-        let [x, y, z, w] = v.pos.map(f64::from);
-        match p {
-            0 => w + x,
-            1 => w - x,
-            2 => w + y,
-            3 => w - y,
-            4 => w + z,
-            5 => w - z,
-            _ => f64::from(self.distance(p, v)),
-        }
+        view_distance(p, v.pos.map(f64::from)).unwrap_or_else(|| f64::from(self.distance(p, v)))
     }
 
     /// Where along `from → to` plane `p` cuts (0 at `from`, 1 at `to`).
@@ -72,19 +82,10 @@ impl Planes {
 
     /// [`Planes::distance`] of a vertex at `pos` (eye-space `eye`).
     fn distance_of(&self, p: usize, pos: &[f32; 4], eye: &[f32; 4]) -> f32 {
-        let [x, y, z, w] = *pos;
-        match p {
-            0 => w + x,
-            1 => w - x,
-            2 => w + y,
-            3 => w - y,
-            4 => w + z,
-            5 => w - z,
-            _ => match self.user.get(p - VIEW_PLANES) {
-                Some(pl) => pl[0] * eye[0] + pl[1] * eye[1] + pl[2] * eye[2] + pl[3] * eye[3],
-                None => 0.0,
-            },
-        }
+        view_distance(p, *pos).unwrap_or_else(|| match self.user.get(p - VIEW_PLANES) {
+            Some(pl) => pl[0] * eye[0] + pl[1] * eye[1] + pl[2] * eye[2] + pl[3] * eye[3],
+            None => 0.0,
+        })
     }
 
     /// Bit p set when `v` is outside plane p.

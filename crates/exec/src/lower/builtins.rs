@@ -241,9 +241,7 @@ impl<'m> Lowerer<'m> {
     }
 
     fn sqrt(&mut self, a: Reg) -> R<Reg> {
-        let d = self.temp()?;
-        self.emit(Op::F1 { f: F1::Sqrt, d, a })?;
-        Ok(d)
+        self.emit_temp(|d| Op::F1 { f: F1::Sqrt, d, a })
     }
 
     pub(super) fn fbin(&mut self, mk: fn(Reg, Reg, Reg) -> Op, a: Reg, b: Reg) -> R<Reg> {

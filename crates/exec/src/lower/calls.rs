@@ -45,6 +45,16 @@ pub(super) fn inlined_cost(
 }
 
 impl<'m> Lowerer<'m> {
+    /// Fresh registers for a function's return value (none for void).
+    fn return_regs(&mut self, ty: Type) -> R<Val> {
+        if ty.is_void() {
+            Ok(Vec::new())
+        } else {
+            let n = self.size(ty)?;
+            self.temps(n)
+        }
+    }
+
     pub(super) fn call(&mut self, fid: FunctionId, args: &[Expr]) -> R<Val> {
         let m = self.m;
         let Some(f) = m.functions.get(fid.0 as usize) else {
@@ -81,7 +91,8 @@ impl<'m> Lowerer<'m> {
                 return unsupported("parameter without a local");
             };
             let n = self.size(param.ty)? as u32;
-            match param.qualifier {
+            // The value the parameter starts with: `in` and `inout` ones.
+            let value = match param.qualifier {
                 ParamQualifier::In => {
                     // An int argument known here, in a parameter the body
                     // never writes: the callee's indexing by it is static
@@ -92,32 +103,28 @@ impl<'m> Lowerer<'m> {
                             *slot = self.const_int(arg);
                         }
                     }
-                    let v = self.expr(arg)?;
-                    if v.len() as u32 != n {
-                        return unsupported("argument of the wrong size");
-                    }
-                    for (k, a) in v.into_iter().enumerate() {
-                        self.emit(Op::Store {
-                            d: preg + k as u32,
-                            a,
-                        })?;
-                    }
+                    Some(self.expr(arg)?)
                 }
                 ParamQualifier::Out | ParamQualifier::InOut => {
                     let p = self.place(arg)?;
-                    if param.qualifier == ParamQualifier::InOut {
-                        let v = self.read(&p)?;
-                        if v.len() as u32 != n {
-                            return unsupported("argument of the wrong size");
-                        }
-                        for (k, a) in v.into_iter().enumerate() {
-                            self.emit(Op::Store {
-                                d: preg + k as u32,
-                                a,
-                            })?;
-                        }
-                    }
+                    let v = if param.qualifier == ParamQualifier::InOut {
+                        Some(self.read(&p)?)
+                    } else {
+                        None
+                    };
                     outs.push((p, preg, n));
+                    v
+                }
+            };
+            if let Some(v) = value {
+                if v.len() as u32 != n {
+                    return unsupported("argument of the wrong size");
+                }
+                for (k, a) in v.into_iter().enumerate() {
+                    self.emit(Op::Store {
+                        d: preg + k as u32,
+                        a,
+                    })?;
                 }
             }
         }
@@ -142,12 +149,7 @@ impl<'m> Lowerer<'m> {
             }
             return Ok(ret);
         }
-        let ret = if f.return_type.is_void() {
-            Vec::new()
-        } else {
-            let n = self.size(f.return_type)?;
-            self.temps(n)?
-        };
+        let ret = self.return_regs(f.return_type)?;
         let fs = self.new_slot();
         self.emit(Op::SaveMask { slot: fs })?;
         self.ctx.push((CtxKind::Function, fs));
@@ -223,12 +225,7 @@ impl<'m> Lowerer<'m> {
                 return unsupported(format!("`{}' has no body", func.name));
             };
             let locals = self.alloc_locals(f)?;
-            let ret = if func.return_type.is_void() {
-                Vec::new()
-            } else {
-                let n = self.size(func.return_type)?;
-                self.temps(n)?
-            };
+            let ret = self.return_regs(func.return_type)?;
             let entry = self.pc();
             let fs = self.new_slot();
             self.emit(Op::SaveMask { slot: fs })?;

@@ -266,15 +266,11 @@ impl<'m> Lowerer<'m> {
             })?;
             acc = Some(match acc {
                 None => d,
-                Some(prev) => {
-                    let r = self.temp()?;
-                    self.emit(Op::And {
-                        d: r,
-                        a: prev,
-                        b: d,
-                    })?;
-                    r
-                }
+                Some(prev) => self.emit_temp(|dst| Op::And {
+                    d: dst,
+                    a: prev,
+                    b: d,
+                })?,
             });
         }
         match acc {
@@ -290,8 +286,7 @@ impl<'m> Lowerer<'m> {
             let Some(&a) = a.first() else {
                 return unsupported("logical operand without a value");
             };
-            let result = self.temp()?;
-            self.emit(Op::Mov { d: result, a })?;
+            let result = self.emit_temp(|d| Op::Mov { d, a })?;
             let s = self.new_slot();
             self.emit(Op::SaveMask { slot: s })?;
             self.ctx.push((CtxKind::If, s));
@@ -356,8 +351,7 @@ impl<'m> Lowerer<'m> {
                 if op == BinaryOp::Equal {
                     Ok(vec![eq])
                 } else {
-                    let d = self.temp()?;
-                    self.emit(Op::Not { d, a: eq })?;
+                    let d = self.emit_temp(|d| Op::Not { d, a: eq })?;
                     Ok(vec![d])
                 }
             }

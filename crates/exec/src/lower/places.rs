@@ -185,21 +185,14 @@ impl<'m> Lowerer<'m> {
     /// the last element.
     fn uint_index(&mut self, i: Reg) -> R<Reg> {
         let limit = self.konst(0x8000_0000)?;
-        let small = self.temp()?;
-        self.emit(Op::ULt {
-            d: small,
-            a: i,
-            b: limit,
-        })?;
+        let small = self.emit_temp(|d| Op::ULt { d, a: i, b: limit })?;
         let largest = self.konst(i32::MAX as u32)?;
-        let d = self.temp()?;
-        self.emit(Op::Select {
+        self.emit_temp(|d| Op::Select {
             d,
             c: small,
             a: i,
             b: largest,
-        })?;
-        Ok(d)
+        })
     }
 
     fn index_dynamic(&mut self, mut p: Place, i: Reg) -> R<Place> {
@@ -209,9 +202,8 @@ impl<'m> Lowerer<'m> {
             let Some((&first, rest)) = comps.split_first() else {
                 return unsupported("indexing an empty swizzle");
             };
-            let k = self.temp()?;
-            self.emit(Op::ClampIdx {
-                d: k,
+            let k = self.emit_temp(|d| Op::ClampIdx {
+                d,
                 a: i,
                 max: rest.len() as u32,
                 stride: 1,
@@ -219,12 +211,10 @@ impl<'m> Lowerer<'m> {
             let mut d = self.konst(first)?;
             for (j, &c) in rest.iter().enumerate() {
                 let jr = self.konst(j as u32 + 1)?;
-                let eq = self.temp()?;
-                self.emit(Op::IEq { d: eq, a: k, b: jr })?;
+                let eq = self.emit_temp(|d| Op::IEq { d, a: k, b: jr })?;
                 let cr = self.konst(c)?;
-                let sel = self.temp()?;
-                self.emit(Op::Select {
-                    d: sel,
+                let sel = self.emit_temp(|dst| Op::Select {
+                    d: dst,
                     c: eq,
                     a: cr,
                     b: d,
@@ -238,8 +228,7 @@ impl<'m> Lowerer<'m> {
             if n == 0 {
                 return unsupported("indexing an empty array");
             }
-            let d = self.temp()?;
-            self.emit(Op::ClampIdx {
+            let d = self.emit_temp(|d| Op::ClampIdx {
                 d,
                 a: i,
                 max: n - 1,
@@ -250,9 +239,8 @@ impl<'m> Lowerer<'m> {
         p.dynamic = match p.dynamic {
             None => Some((d, span)),
             Some((prev, max)) => {
-                let sum = self.temp()?;
-                self.emit(Op::IAdd {
-                    d: sum,
+                let sum = self.emit_temp(|dst| Op::IAdd {
+                    d: dst,
                     a: prev,
                     b: d,
                 })?;
@@ -277,16 +265,12 @@ impl<'m> Lowerer<'m> {
             let pos = p.off + c;
             let r = match (p.root, p.dynamic) {
                 (Root::Reg(r), None) => r + pos,
-                (Root::Reg(r), Some((off, max))) => {
-                    let d = self.temp()?;
-                    self.emit(Op::Gather {
-                        d,
-                        base: r + pos,
-                        off,
-                        max,
-                    })?;
-                    d
-                }
+                (Root::Reg(r), Some((off, max))) => self.emit_temp(|d| Op::Gather {
+                    d,
+                    base: r + pos,
+                    off,
+                    max,
+                })?,
                 (Root::Uniform(w), None) => {
                     let d = self.temp()?;
                     let float = self.uniform_is_float(w + pos);

@@ -43,6 +43,13 @@ impl<'m> Lowerer<'m> {
         self.alloc(1)
     }
 
+    /// Emits the op `op` makes for a fresh register and gives that register.
+    pub(super) fn emit_temp(&mut self, op: impl FnOnce(Reg) -> Op) -> R<Reg> {
+        let d = self.temp()?;
+        self.emit(op(d))?;
+        Ok(d)
+    }
+
     pub(super) fn new_slot(&mut self) -> u32 {
         self.p.mask_slots += 1;
         self.p.mask_slots - 1

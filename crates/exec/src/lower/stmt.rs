@@ -210,16 +210,10 @@ impl<'m> Lowerer<'m> {
                     continue;
                 };
                 let k = self.konst(const_bits(*value))?;
-                let eq = self.temp()?;
-                self.emit(Op::IEq {
-                    d: eq,
-                    a: sel,
-                    b: k,
-                })?;
+                let eq = self.emit_temp(|d| Op::IEq { d, a: sel, b: k })?;
                 let here = self.konst(i as u32)?;
-                let next = self.temp()?;
-                self.emit(Op::Select {
-                    d: next,
+                let next = self.emit_temp(|d| Op::Select {
+                    d,
                     c: eq,
                     a: here,
                     b: start,
@@ -236,9 +230,8 @@ impl<'m> Lowerer<'m> {
         for (i, c) in cases.iter().enumerate() {
             self.emit(Op::RestoreMask { slot: run })?;
             let here = self.konst(i as u32)?;
-            let reached = self.temp()?;
-            self.emit(Op::ULe {
-                d: reached,
+            let reached = self.emit_temp(|d| Op::ULe {
+                d,
                 a: start,
                 b: here,
             })?;

@@ -1,22 +1,13 @@
 //! `Kernel::depth_only`: the slice writes the same `gl_FragDepth` bits and
 //! discards the same lanes as the full kernel, with fewer ops.
 
-use super::{kernel, link_one, uniforms};
+use super::{kernel, link_one, uniforms, Rng};
 use crate::{Batch, ExecError, Kernel, NoTextures, LANES};
 use glsl::ir::Stage;
 
 const SPHERE_FRAG: &str = include_str!("../../../../shaders/sphere.frag");
 
-/// A small deterministic generator (xorshift).
-struct Rng(u64);
-
 impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
     /// Uniform in [lo, hi).
     fn range(&mut self, lo: f32, hi: f32) -> f32 {
         lo + (hi - lo) * ((self.next() >> 40) as f32 / (1u64 << 24) as f32)

@@ -9,7 +9,7 @@
 //! two NaN operands in) can only reach a float output, where it becomes
 //! the canonical NaN.
 
-use super::bits_of;
+use super::{bits_of, Rng};
 use crate::opt::{Code, Ins};
 use crate::program::{Op, Program, Reg, F1, F2, F3};
 use crate::{Batch, Interface, Kernel, NoTextures, Variant, LANES};
@@ -17,15 +17,7 @@ use glsl::types::Scalar;
 
 const REGS: u32 = 24;
 
-struct Rng(u64);
-
 impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
     fn below(&mut self, n: u32) -> u32 {
         (self.next() >> 20) as u32 % n
     }

@@ -160,6 +160,90 @@ fn prepared_runs_compute_the_same_bytes() {
     }
 }
 
+/// A kernel's sizes for the benchmarks' headers: ops, executor
+/// instructions, prologue, registers.
+fn sizes(k: &Kernel) -> String {
+    format!(
+        "{} ops (executor: {}, prologue {}, {} registers",
+        k.op_count(),
+        k.code.ins.len(),
+        k.code.prologue.len(),
+        k.code.prog.registers
+    )
+}
+
+/// The benchmarks' workload: 64 batches of 16 live lanes with
+/// pseudo-random inputs, each timed pass running a kernel over all of them.
+struct Bench {
+    batches: Vec<Batch>,
+}
+
+impl Bench {
+    fn new(k: &Kernel) -> Self {
+        let batches = (0..64)
+            .map(|i| {
+                let mut b = Batch::for_kernel(k, 0xffff);
+                fill(&mut b, i + 1);
+                b
+            })
+            .collect();
+        Bench { batches }
+    }
+
+    /// Nanoseconds per batch of `f`: the best of 7 rounds of 20 passes.
+    fn time(&mut self, f: &mut dyn FnMut(&mut Batch)) -> f64 {
+        let mut best = f64::MAX;
+        for _ in 0..7 {
+            let t = std::time::Instant::now();
+            for _ in 0..20 {
+                for b in self.batches.iter_mut() {
+                    f(b);
+                }
+            }
+            best = best.min(t.elapsed().as_secs_f64() / (20.0 * 64.0));
+        }
+        best * 1e9
+    }
+
+    /// For profiling one variant: with `BENCH_ONLY` naming it, times only
+    /// that one, for a few seconds, and says so (true).
+    fn only(&mut self, k: &Kernel, u: &[u32]) -> bool {
+        let Ok(only) = std::env::var("BENCH_ONLY") else {
+            return false;
+        };
+        let v = supported_variants()
+            .into_iter()
+            .find(|v| v.name() == only)
+            .expect("BENCH_ONLY names a supported variant");
+        for _ in 0..20 {
+            let t = self.time(&mut |b| k.run_variant(v, b, u, &NoTextures).unwrap());
+            eprintln!("  {:8} {t:.0} ns/batch", v.name());
+        }
+        true
+    }
+
+    /// Prints each supported variant's time and its speed-up over
+    /// `reference`.
+    fn variants(&mut self, k: &Kernel, u: &[u32], reference: f64) {
+        for v in supported_variants() {
+            let t = self.time(&mut |b| k.run_variant(v, b, u, &NoTextures).unwrap());
+            eprintln!("  {:8} {t:.0} ns/batch ({:.2}x)", v.name(), reference / t);
+        }
+    }
+
+    /// Prints the time of the kernel's own variant run on the uniforms `u`
+    /// prepared once.
+    fn prepared(&mut self, k: &Kernel, u: &[u32], reference: f64) {
+        let prepared = k.prepare(u);
+        let t = self.time(&mut |b| k.run_prepared(b, &prepared, &NoTextures).unwrap());
+        eprintln!(
+            "  {:8} {t:.0} ns/batch with run_prepared ({:.2}x)",
+            crate::kernel_variant().name(),
+            reference / t
+        );
+    }
+}
+
 /// Time per 16-lane batch of the sphere-impostor fragment shader with the
 /// reference interpreter and each executor variant, best of 7 rounds
 /// (run with `cargo test --release -p shaderbox-exec bench_sphere --
@@ -170,60 +254,20 @@ fn bench_sphere() {
     let linked = link_one(Stage::Fragment, SPHERE_FRAG).unwrap();
     let k = Kernel::new(&linked).unwrap();
     let u = super::depth_slice::sphere_uniforms(&k, 0.0);
-    let mut batches: Vec<Batch> = (0..64)
-        .map(|i| {
-            let mut b = Batch::for_kernel(&k, 0xffff);
-            fill(&mut b, i + 1);
-            b
-        })
-        .collect();
-    let prepared = k.prepare(&u);
-    let mut time = |f: &mut dyn FnMut(&mut Batch)| {
-        let mut best = f64::MAX;
-        for _ in 0..7 {
-            let t = std::time::Instant::now();
-            for _ in 0..20 {
-                for b in batches.iter_mut() {
-                    f(b);
-                }
-            }
-            best = best.min(t.elapsed().as_secs_f64() / (20.0 * 64.0));
-        }
-        best * 1e9
-    };
-    if let Ok(only) = std::env::var("BENCH_ONLY") {
-        // For profiling one variant: run it for a few seconds.
-        let v = supported_variants()
-            .into_iter()
-            .find(|v| v.name() == only)
-            .expect("BENCH_ONLY names a supported variant");
-        for _ in 0..20 {
-            let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
-            eprintln!("  {:8} {t:.0} ns/batch", v.name());
-        }
+    let mut bench = Bench::new(&k);
+    if bench.only(&k, &u) {
         return;
     }
-    let reference = time(&mut |b| k.run_reference(b, &u, &NoTextures).unwrap());
+    let reference = bench.time(&mut |b| k.run_reference(b, &u, &NoTextures).unwrap());
     eprintln!(
-        "sphere.frag: {} ops (executor: {}, prologue {}, {} registers, {} zeroed per run); reference interpreter {reference:.0} ns/batch",
-        k.op_count(),
-        k.code.ins.len(),
-        k.code.prologue.len(),
-        k.code.prog.registers,
+        "sphere.frag: {}, {} zeroed per run); reference interpreter {reference:.0} ns/batch",
+        sizes(&k),
         k.code.zero.len()
     );
-    for v in supported_variants() {
-        let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
-        eprintln!("  {:8} {t:.0} ns/batch ({:.2}x)", v.name(), reference / t);
-    }
-    let t = time(&mut |b| k.run_prepared(b, &prepared, &NoTextures).unwrap());
-    eprintln!(
-        "  {:8} {t:.0} ns/batch with run_prepared ({:.2}x)",
-        crate::kernel_variant().name(),
-        reference / t
-    );
+    bench.variants(&k, &u, reference);
+    bench.prepared(&k, &u, reference);
     if let Some(d) = k.depth_only() {
-        let t = time(&mut |b| d.run(b, &u, &NoTextures).unwrap());
+        let t = bench.time(&mut |b| d.run(b, &u, &NoTextures).unwrap());
         eprintln!(
             "  depth_only: {} ops, {} zeroed per run, {t:.0} ns/batch ({:.2}x)",
             d.op_count(),
@@ -253,57 +297,17 @@ fn bench_materials() {
             *x = 30.0f32.to_bits();
         }
     }
-    let mut batches: Vec<Batch> = (0..64)
-        .map(|i| {
-            let mut b = Batch::for_kernel(&k, 0xffff);
-            fill(&mut b, i + 1);
-            b
-        })
-        .collect();
-    let prepared = k.prepare(&u);
-    let mut time = |f: &mut dyn FnMut(&mut Batch)| {
-        let mut best = f64::MAX;
-        for _ in 0..7 {
-            let t = std::time::Instant::now();
-            for _ in 0..20 {
-                for b in batches.iter_mut() {
-                    f(b);
-                }
-            }
-            best = best.min(t.elapsed().as_secs_f64() / (20.0 * 64.0));
-        }
-        best * 1e9
-    };
-    if let Ok(only) = std::env::var("BENCH_ONLY") {
-        // For profiling one variant: run it for a few seconds.
-        let v = supported_variants()
-            .into_iter()
-            .find(|v| v.name() == only)
-            .expect("BENCH_ONLY names a supported variant");
-        for _ in 0..20 {
-            let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
-            eprintln!("  {:8} {t:.0} ns/batch", v.name());
-        }
+    let mut bench = Bench::new(&k);
+    if bench.only(&k, &u) {
         return;
     }
-    let reference = time(&mut |b| k.run_reference(b, &u, &NoTextures).unwrap());
+    let reference = bench.time(&mut |b| k.run_reference(b, &u, &NoTextures).unwrap());
     eprintln!(
-        "materials.frag: {} ops (executor: {}, prologue {}, {} registers); reference interpreter {reference:.0} ns/batch",
-        k.op_count(),
-        k.code.ins.len(),
-        k.code.prologue.len(),
-        k.code.prog.registers
+        "materials.frag: {}); reference interpreter {reference:.0} ns/batch",
+        sizes(&k)
     );
-    for v in supported_variants() {
-        let t = time(&mut |b| k.run_variant(v, b, &u, &NoTextures).unwrap());
-        eprintln!("  {:8} {t:.0} ns/batch ({:.2}x)", v.name(), reference / t);
-    }
-    let t = time(&mut |b| k.run_prepared(b, &prepared, &NoTextures).unwrap());
-    eprintln!(
-        "  {:8} {t:.0} ns/batch with run_prepared ({:.2}x)",
-        crate::kernel_variant().name(),
-        reference / t
-    );
+    bench.variants(&k, &u, reference);
+    bench.prepared(&k, &u, reference);
 }
 
 /// Time per 16-lane batch of a shader made of `pow`, `exp`, `exp2`, `log`
@@ -324,32 +328,10 @@ fn bench_math() {
         }";
     let linked = link_one(Stage::Fragment, src).unwrap();
     let k = Kernel::new(&linked).unwrap();
-    let mut batches: Vec<Batch> = (0..64)
-        .map(|i| {
-            let mut b = Batch::for_kernel(&k, 0xffff);
-            fill(&mut b, i + 1);
-            b
-        })
-        .collect();
-    let mut time = |f: &mut dyn FnMut(&mut Batch)| {
-        let mut best = f64::MAX;
-        for _ in 0..7 {
-            let t = std::time::Instant::now();
-            for _ in 0..20 {
-                for b in batches.iter_mut() {
-                    f(b);
-                }
-            }
-            best = best.min(t.elapsed().as_secs_f64() / (20.0 * 64.0));
-        }
-        best * 1e9
-    };
-    let reference = time(&mut |b| k.run_reference(b, &[], &NoTextures).unwrap());
+    let mut bench = Bench::new(&k);
+    let reference = bench.time(&mut |b| k.run_reference(b, &[], &NoTextures).unwrap());
     eprintln!("math: reference interpreter {reference:.0} ns/batch");
-    for v in supported_variants() {
-        let t = time(&mut |b| k.run_variant(v, b, &[], &NoTextures).unwrap());
-        eprintln!("  {:8} {t:.0} ns/batch ({:.2}x)", v.name(), reference / t);
-    }
+    bench.variants(&k, &[], reference);
 }
 
 /// Subnormal values are zero in every variant, wherever they arise: float
