@@ -62,23 +62,10 @@ gl_entry_points! {
     fn glUniform2iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| { uniform_array(&mut c.gl, count, v, 2, |g, n, a| g.uniform_2iv(loc, n, a)) }
     fn glUniform3iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| { uniform_array(&mut c.gl, count, v, 3, |g, n, a| g.uniform_3iv(loc, n, a)) }
     fn glUniform4iv(loc: GLint, count: GLsizei, v: *const GLint) => |c| { uniform_array(&mut c.gl, count, v, 4, |g, n, a| g.uniform_4iv(loc, n, a)) }
-
-    fn glUniform1uiv(loc: GLint, count: GLsizei, v: *const GLuint) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_1uiv(loc, n, &rd_vec(v, n as i64));
-    }
-    fn glUniform2uiv(loc: GLint, count: GLsizei, v: *const GLuint) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_2uiv(loc, n, &rd_vec(v, n as i64 * 2));
-    }
-    fn glUniform3uiv(loc: GLint, count: GLsizei, v: *const GLuint) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_3uiv(loc, n, &rd_vec(v, n as i64 * 3));
-    }
-    fn glUniform4uiv(loc: GLint, count: GLsizei, v: *const GLuint) => |c| {
-        let n = count.min(MAX_UNIFORM_ELEMENTS);
-        c.gl.uniform_4uiv(loc, n, &rd_vec(v, n as i64 * 4));
-    }
+    fn glUniform1uiv(loc: GLint, count: GLsizei, v: *const GLuint) => |c| { uniform_array(&mut c.gl, count, v, 1, |g, n, a| g.uniform_1uiv(loc, n, a)) }
+    fn glUniform2uiv(loc: GLint, count: GLsizei, v: *const GLuint) => |c| { uniform_array(&mut c.gl, count, v, 2, |g, n, a| g.uniform_2uiv(loc, n, a)) }
+    fn glUniform3uiv(loc: GLint, count: GLsizei, v: *const GLuint) => |c| { uniform_array(&mut c.gl, count, v, 3, |g, n, a| g.uniform_3uiv(loc, n, a)) }
+    fn glUniform4uiv(loc: GLint, count: GLsizei, v: *const GLuint) => |c| { uniform_array(&mut c.gl, count, v, 4, |g, n, a| g.uniform_4uiv(loc, n, a)) }
 
     // ---- matrices ----
     fn glUniformMatrix2fv(loc: GLint, count: GLsizei, transpose: GLboolean, v: *const GLfloat) => |c| { uniform_array(&mut c.gl, count, v, 4, |g, n, a| g.uniform_matrix_2fv(loc, n, as_bool(transpose), a)) }
