@@ -159,7 +159,10 @@ mod rendering {
 
     #[test]
     fn later_gl_is_a_skip() {
-        for (name, req) in [("glsl400", "GLSL >= 4.00"), ("gl40", "GLSL >= 1.50\nGL >= 4.0")] {
+        for (name, req) in [
+            ("glsl400", "GLSL >= 4.00"),
+            ("gl40", "GLSL >= 1.50\nGL >= 4.0"),
+        ] {
             let path = script(name, &format!("[require]\n{req}\n[test]\n"));
             let o = shaderbox(&["shader-runner", &path, "-auto"]);
             assert_eq!(o.status.code(), Some(0));

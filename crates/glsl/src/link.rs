@@ -1175,6 +1175,50 @@ fn check_limits(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
     }
 }
 
+/// GLSL 1.30 §4.3.7: when the fragment shader uses gl_Color (or
+/// gl_SecondaryColor), the front and back colors the previous stage
+/// writes carry the same interpolation qualifier it does, an unqualified
+/// declaration matching only an unqualified one. Only statically used
+/// variables are compared.
+fn check_builtin_color_interpolation(
+    v: &LinkedStage,
+    f: &LinkedStage,
+    diags: &mut Vec<LinkDiagnostic>,
+) {
+    let (vm, fm) = (&v.module, &f.module);
+    let q = |i: Option<ir::Interpolation>| i.map_or("no qualifier", |i| i.as_str());
+    for (input, outputs) in [
+        ("gl_Color", ["gl_FrontColor", "gl_BackColor"]),
+        (
+            "gl_SecondaryColor",
+            ["gl_FrontSecondaryColor", "gl_BackSecondaryColor"],
+        ),
+    ] {
+        let Some(fg) = fm.globals.iter().find(|g| g.name == input && g.read) else {
+            continue;
+        };
+        for out in outputs {
+            let Some(vg) = vm.globals.iter().find(|g| g.name == out && g.written) else {
+                continue;
+            };
+            if vg.interpolation != fg.interpolation {
+                push(
+                    diags,
+                    None,
+                    Code::LinkInterfaceMismatch,
+                    format!(
+                        "`{out}' is declared with {} in the {} shader but `{input}' with {} in the {} shader; GLSL 1.30 §4.3.7 requires the same interpolation qualifier",
+                        q(vg.interpolation),
+                        v.stage.name(),
+                        q(fg.interpolation),
+                        f.stage.name()
+                    ),
+                );
+            }
+        }
+    }
+}
+
 fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
     let (vm, fm) = (&v.module, &f.module);
     let (pn, cn) = (v.stage.name(), f.stage.name());
@@ -1185,6 +1229,9 @@ fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnos
         (Storage::Varying, false)
     };
     check_blocks(vm, fm, diags);
+    if f.stage == Stage::Fragment {
+        check_builtin_color_interpolation(v, f, diags);
+    }
     // Members and instances of blocks match by block (check_blocks).
     for fg in fm
         .globals

@@ -425,6 +425,39 @@ fn link_matches_interpolation_blocks_and_locations() {
 }
 
 #[test]
+fn built_in_colors_match_gl_color_interpolation() {
+    let link = |v: &str, f: &str| crate::link::link(&[&vert(v), &frag(f)]);
+    let vs = |decl: &str| {
+        format!("#version 130\n{decl}\nvoid main() {{ gl_Position = vec4(0); gl_FrontColor = vec4(0); }}")
+    };
+    let fs = |decl: &str, read: bool| {
+        let body = if read {
+            "c = gl_Color;"
+        } else {
+            "c = vec4(0);"
+        };
+        format!("#version 130\n{decl}\nout vec4 c;\nvoid main() {{ {body} }}")
+    };
+    // An unqualified declaration matches only an unqualified one.
+    assert!(!link(&vs("smooth out vec4 gl_FrontColor;"), &fs("", true)).ok());
+    assert!(!link(&vs(""), &fs("flat in vec4 gl_Color;", true)).ok());
+    assert!(link(&vs(""), &fs("", true)).ok());
+    let p = link(
+        &vs("flat out vec4 gl_FrontColor;"),
+        &fs("flat in vec4 gl_Color;", true),
+    );
+    assert!(p.ok(), "{}", p.info_log());
+    // Only statically used variables are compared.
+    assert!(link(
+        &vs("flat out vec4 gl_FrontColor;"),
+        &fs("in vec4 gl_Color;", false)
+    )
+    .ok());
+    let p = link(&vs("smooth out vec4 gl_FrontColor;"), &fs("", true));
+    assert!(p.info_log().contains("§4.3.7"), "{}", p.info_log());
+}
+
+#[test]
 fn integer_members_of_fragment_input_blocks_are_flat() {
     fails(
         &frag("#version 150\nin B { int i; } b; void main() {}"),
