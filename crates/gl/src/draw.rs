@@ -1,5 +1,7 @@
 //! The draw calls: glDrawArrays, glMultiDrawArrays, glDrawElements,
-//! glDrawRangeElements, the glBegin/glEnd vertices, and glClear.
+//! glDrawRangeElements, their instanced and base-vertex forms (GL 3.3
+//! §2.8.2-2.8.3), primitive restart (§2.8.1, [`crate::restart`]), the
+//! glBegin/glEnd vertices, and glClear.
 //!
 //! A draw checks its arguments and the draw framebuffer's completeness,
 //! then puts the stages together: the kernels and their uniform words
@@ -54,7 +56,14 @@ impl Context {
 
     /// glDrawArrays.
     pub fn draw_arrays(&mut self, mode: u32, first: i32, count: i32) {
-        if first < 0 {
+        self.draw_arrays_instanced(mode, first, count, 1);
+    }
+
+    /// glDrawArraysInstanced (GL 3.3 §2.8.2): `instances` draws of the
+    /// arrays, instance `i` with `gl_InstanceID` = i and the instanced
+    /// arrays at element i / divisor.
+    pub fn draw_arrays_instanced(&mut self, mode: u32, first: i32, count: i32, instances: i32) {
+        if first < 0 || instances < 0 {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
@@ -63,11 +72,16 @@ impl Context {
         }
         let count = count.min(1 << 24) as u32;
         let indices: Vec<u32> = (0..count).map(|i| i.saturating_add(first as u32)).collect();
-        self.run_draw(mode, &indices, None);
+        self.run_draw(mode, &indices, None, instances as u32);
     }
 
-    /// glMultiDrawArrays.
+    /// glMultiDrawArrays: one glDrawArrays per pair (a negative count is
+    /// GL_INVALID_VALUE before anything is drawn).
     pub fn multi_draw_arrays(&mut self, mode: u32, first: &[i32], count: &[i32]) {
+        if count.iter().chain(first).any(|&c| c < 0) {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
         for (f, c) in first.iter().zip(count) {
             self.draw_arrays(mode, *f, *c);
         }
@@ -76,20 +90,11 @@ impl Context {
     /// glDrawElements: `indices` is an offset into the bound element
     /// buffer or client index data.
     pub fn draw_elements(&mut self, mode: u32, count: i32, ty: u32, indices: ArrayData) {
-        if !matches!(ty, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT) {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        if !self.check_draw(mode, count) {
-            return;
-        }
-        let Some(idx) = self.read_indices(count as usize, ty, &indices) else {
-            return;
-        };
-        self.run_draw(mode, idx.as_slice(), None);
+        self.draw_elements_instanced_base_vertex(mode, count, ty, indices, 1, 0);
     }
 
-    /// glDrawRangeElements.
+    /// glDrawRangeElements: the range is a hint; indices outside it are
+    /// drawn as any others.
     pub fn draw_range_elements(
         &mut self,
         mode: u32,
@@ -99,11 +104,142 @@ impl Context {
         ty: u32,
         indices: ArrayData,
     ) {
+        self.draw_range_elements_base_vertex(mode, start, end, count, ty, indices, 0);
+    }
+
+    /// glDrawElementsBaseVertex (GL 3.3 §2.8.3): `basevertex` is added
+    /// to every index (after the primitive-restart comparison).
+    pub fn draw_elements_base_vertex(
+        &mut self,
+        mode: u32,
+        count: i32,
+        ty: u32,
+        indices: ArrayData,
+        basevertex: i32,
+    ) {
+        self.draw_elements_instanced_base_vertex(mode, count, ty, indices, 1, basevertex);
+    }
+
+    /// glDrawRangeElementsBaseVertex.
+    #[allow(clippy::too_many_arguments)]
+    pub fn draw_range_elements_base_vertex(
+        &mut self,
+        mode: u32,
+        start: u32,
+        end: u32,
+        count: i32,
+        ty: u32,
+        indices: ArrayData,
+        basevertex: i32,
+    ) {
         if end < start {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
-        self.draw_elements(mode, count, ty, indices);
+        self.draw_elements_instanced_base_vertex(mode, count, ty, indices, 1, basevertex);
+    }
+
+    /// glDrawElementsInstanced.
+    pub fn draw_elements_instanced(
+        &mut self,
+        mode: u32,
+        count: i32,
+        ty: u32,
+        indices: ArrayData,
+        instances: i32,
+    ) {
+        self.draw_elements_instanced_base_vertex(mode, count, ty, indices, instances, 0);
+    }
+
+    /// glDrawElementsInstancedBaseVertex: the element draws' common
+    /// path. With primitive restart on (GL 3.3 §2.8.1), an index equal to
+    /// the restart index ends the primitive and starts a new one
+    /// ([`crate::restart`]).
+    pub fn draw_elements_instanced_base_vertex(
+        &mut self,
+        mode: u32,
+        count: i32,
+        ty: u32,
+        indices: ArrayData,
+        instances: i32,
+        basevertex: i32,
+    ) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if mode > GL_POLYGON
+            || !matches!(ty, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT)
+        {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        if instances < 0 {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        if !self.check_draw(mode, count) {
+            return;
+        }
+        let Some(idx) = self.read_indices(count as usize, ty, &indices) else {
+            return;
+        };
+        let restart = self
+            .st
+            .is_on(GL_PRIMITIVE_RESTART)
+            .then_some(self.va.restart_index);
+        let instances = instances as u32;
+        match restart {
+            Some(r) if idx.as_slice().contains(&r) => {
+                for (m, list) in crate::restart::split(mode, idx.as_slice(), r) {
+                    let list = with_base(list, basevertex);
+                    self.run_draw(m, &list, None, instances);
+                }
+            }
+            _ if basevertex != 0 => {
+                let list = with_base(idx.as_slice().to_vec(), basevertex);
+                self.run_draw(mode, &list, None, instances);
+            }
+            _ => self.run_draw(mode, idx.as_slice(), None, instances),
+        }
+    }
+
+    /// glMultiDrawElements: one glDrawElements per count (a negative count
+    /// is GL_INVALID_VALUE before anything is drawn).
+    pub fn multi_draw_elements(
+        &mut self,
+        mode: u32,
+        count: &[i32],
+        ty: u32,
+        indices: &[ArrayData],
+    ) {
+        let zeros = vec![0; count.len()];
+        self.multi_draw_elements_base_vertex(mode, count, ty, indices, &zeros);
+    }
+
+    /// glMultiDrawElementsBaseVertex.
+    pub fn multi_draw_elements_base_vertex(
+        &mut self,
+        mode: u32,
+        count: &[i32],
+        ty: u32,
+        indices: &[ArrayData],
+        basevertex: &[i32],
+    ) {
+        if count.iter().any(|&c| c < 0) {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        for ((c, i), b) in count.iter().zip(indices).zip(basevertex) {
+            self.draw_elements_base_vertex(mode, *c, ty, i.clone(), *b);
+        }
+    }
+
+    /// glPrimitiveRestartIndex.
+    pub fn primitive_restart_index(&mut self, index: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        self.va.restart_index = index;
     }
 
     /// Draws the vertices recorded between glBegin and glEnd.
@@ -112,11 +248,19 @@ impl Context {
             return;
         }
         let indices: Vec<u32> = (0..verts.len() as u32).collect();
-        self.run_draw(mode, &indices, Some(verts));
+        self.run_draw(mode, &indices, Some(verts), 1);
     }
 
-    fn run_draw(&mut self, mode: u32, indices: &[u32], immediate: Option<&[ImmVertex]>) {
-        if indices.is_empty() {
+    /// Draws `indices` `instances` times: each instance a whole draw, in
+    /// order, as that many separate draws would (GL 3.3 §2.8.2).
+    fn run_draw(
+        &mut self,
+        mode: u32,
+        indices: &[u32],
+        immediate: Option<&[ImmVertex]>,
+        instances: u32,
+    ) {
+        if indices.is_empty() || instances == 0 {
             return;
         }
         let (vs, vs_user, fs, ff_shape) = match self.draw_kernels() {
@@ -143,80 +287,82 @@ impl Context {
             return;
         };
         let state = self.pipeline_state(target.draw_buffers);
-        let fetch = Fetcher::new(self, self.input_sources(&vs), immediate);
-        let replay = raster::Replay {
-            state: &state,
-            vs: &vs,
-            vs_uniforms: &vs_words,
-            fs: &fs,
-            fs_uniforms: &fs_words,
-            mode: raster_mode(mode),
-            indices,
-            fetch: &fetch,
-            textures: &units,
-        };
-        let probe = self
-            .debug
-            .wants()
-            .map(|req| raster::probe_draw(&target.fb, &replay, req));
-        let view = self.debug.view().map(|name| {
-            let (v, kinds) = crate::debug::resolve_view(&fs, name)?;
-            let image = raster::view_draw(&target.fb, &replay, v).map_err(|e| e.to_string())?;
-            Ok(crate::debug::ViewRecord {
-                name: name.to_string(),
-                kinds,
-                image,
-            })
-        });
-        let samples_before = target.fb.samples_passed;
-        let r = raster::draw_on(
-            &self.workers,
-            &mut target.fb,
-            &state,
-            &vs,
-            &vs_words,
-            fs_stage,
-            &fs_words,
-            raster_mode(mode),
-            indices,
-            &fetch,
-            &units,
-        );
-        if let Err(e) = r {
-            self.cache.error = Some(e.to_string());
-        }
-        let samples = target.fb.samples_passed.wrapping_sub(samples_before);
-        self.count_samples(samples);
-        if let Some(probe) = probe {
-            let record = crate::debug::DrawRecord {
-                draw: self.debug.draws,
-                mode,
-                count: indices.len(),
-                program: self.current_program,
-                framebuffer: target.name,
-                vertex: crate::debug::StageInfo {
-                    shaders: if vs_user {
-                        self.stage_shaders(glsl::Stage::Vertex)
-                    } else {
-                        Vec::new()
-                    },
-                    kernel: vs,
-                },
-                fragment: crate::debug::StageInfo {
-                    shaders: if fs_user {
-                        self.stage_shaders(glsl::Stage::Fragment)
-                    } else {
-                        Vec::new()
-                    },
-                    kernel: fs,
-                },
-                probe,
-                view,
+        for instance in 0..instances {
+            let fetch = Fetcher::new(self, &vs, immediate, instance);
+            let replay = raster::Replay {
+                state: &state,
+                vs: &vs,
+                vs_uniforms: &vs_words,
+                fs: &fs,
+                fs_uniforms: &fs_words,
+                mode: raster_mode(mode),
+                indices,
+                fetch: &fetch,
+                textures: &units,
             };
-            self.debug.records.push(record);
-        }
-        if self.debug.request.is_some() {
-            self.debug.draws += 1;
+            let probe = self
+                .debug
+                .wants()
+                .map(|req| raster::probe_draw(&target.fb, &replay, req));
+            let view = self.debug.view().map(|name| {
+                let (v, kinds) = crate::debug::resolve_view(&fs, name)?;
+                let image = raster::view_draw(&target.fb, &replay, v).map_err(|e| e.to_string())?;
+                Ok(crate::debug::ViewRecord {
+                    name: name.to_string(),
+                    kinds,
+                    image,
+                })
+            });
+            let samples_before = target.fb.samples_passed;
+            let r = raster::draw_on(
+                &self.workers,
+                &mut target.fb,
+                &state,
+                &vs,
+                &vs_words,
+                fs_stage,
+                &fs_words,
+                raster_mode(mode),
+                indices,
+                &fetch,
+                &units,
+            );
+            if let Err(e) = r {
+                self.cache.error = Some(e.to_string());
+            }
+            let samples = target.fb.samples_passed.wrapping_sub(samples_before);
+            self.count_samples(samples);
+            if let Some(probe) = probe {
+                let record = crate::debug::DrawRecord {
+                    draw: self.debug.draws,
+                    mode,
+                    count: indices.len(),
+                    program: self.current_program,
+                    framebuffer: target.name,
+                    vertex: crate::debug::StageInfo {
+                        shaders: if vs_user {
+                            self.stage_shaders(glsl::Stage::Vertex)
+                        } else {
+                            Vec::new()
+                        },
+                        kernel: vs.clone(),
+                    },
+                    fragment: crate::debug::StageInfo {
+                        shaders: if fs_user {
+                            self.stage_shaders(glsl::Stage::Fragment)
+                        } else {
+                            Vec::new()
+                        },
+                        kernel: fs.clone(),
+                    },
+                    probe,
+                    view,
+                };
+                self.debug.records.push(record);
+            }
+            if self.debug.request.is_some() {
+                self.debug.draws += 1;
+            }
         }
         self.store_target(target);
     }
@@ -262,4 +408,15 @@ impl Context {
         }
         self.store_target(t);
     }
+}
+
+/// `list` with `basevertex` added to every index (wrapping: an index
+/// below 0 reads past the arrays, which gives the defaults).
+fn with_base(mut list: Vec<u32>, basevertex: i32) -> Vec<u32> {
+    if basevertex != 0 {
+        for i in &mut list {
+            *i = i.wrapping_add(basevertex as u32);
+        }
+    }
+    list
 }

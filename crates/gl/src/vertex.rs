@@ -58,6 +58,12 @@ pub struct ArrayState {
     /// The buffer bound to GL_ARRAY_BUFFER at pointer time (0: client).
     pub buffer: u32,
     pub data: ArrayData,
+    /// Specified by glVertexAttribIPointer: the components are integers
+    /// handed to integer shader inputs unconverted (GL 3.3 §2.8).
+    pub integer: bool,
+    /// Instances per element (glVertexAttribDivisor; 0: one element per
+    /// vertex).
+    pub divisor: u32,
 }
 
 impl ArrayState {
@@ -70,7 +76,65 @@ impl ArrayState {
             stride: 0,
             buffer: 0,
             data: ArrayData::default(),
+            integer: false,
+            divisor: 0,
         }
+    }
+}
+
+/// How a current generic attribute value was specified (GL 3.3 §2.7:
+/// glVertexAttrib*, glVertexAttribI* with signed or unsigned values).
+/// Integer values are kept as their bits in the `f32` slots.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum ValueKind {
+    #[default]
+    Float,
+    Int,
+    Uint,
+}
+
+/// The state a vertex array object holds (GL 3.3 compatibility §2.10,
+/// Table 6.5-6.8): every array and the element-array buffer binding.
+/// The bound object's state lives in [`VertexState`]'s fields; the others
+/// are kept as this ([`crate::vertex_array`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct VaoArrays {
+    pub vertex_array: ArrayState,
+    pub normal_array: ArrayState,
+    pub color_array: ArrayState,
+    pub secondary_array: ArrayState,
+    pub fog_array: ArrayState,
+    pub tex_arrays: Vec<ArrayState>,
+    pub generic_arrays: Vec<ArrayState>,
+    pub element_buffer: u32,
+}
+
+impl VaoArrays {
+    /// A new object's state (GL 3.3 §2.10: the initial values of the
+    /// tables).
+    pub fn new() -> VaoArrays {
+        let mut normal_array = ArrayState::new(3);
+        normal_array.normalized = true;
+        let mut color_array = ArrayState::new(4);
+        color_array.normalized = true;
+        let mut secondary_array = ArrayState::new(3);
+        secondary_array.normalized = true;
+        VaoArrays {
+            vertex_array: ArrayState::new(4),
+            normal_array,
+            color_array,
+            secondary_array,
+            fog_array: ArrayState::new(1),
+            tex_arrays: vec![ArrayState::new(4); MAX_TEXTURE_UNITS],
+            generic_arrays: vec![ArrayState::new(4); MAX_VERTEX_ATTRIBS],
+            element_buffer: 0,
+        }
+    }
+}
+
+impl Default for VaoArrays {
+    fn default() -> Self {
+        VaoArrays::new()
     }
 }
 
@@ -127,6 +191,8 @@ pub struct VertexState {
     pub fog: [f32; 4],
     pub tex: [[f32; 4]; MAX_TEXTURE_UNITS],
     pub generic: [[f32; 4]; MAX_VERTEX_ATTRIBS],
+    /// How each current generic value was specified.
+    pub generic_kind: [ValueKind; MAX_VERTEX_ATTRIBS],
     pub vertex_array: ArrayState,
     pub normal_array: ArrayState,
     pub color_array: ArrayState,
@@ -139,6 +205,12 @@ pub struct VertexState {
     pub immediate: Vec<ImmVertex>,
     pub array_buffer: u32,
     pub element_buffer: u32,
+    /// The bound vertex array object (0: the default one).
+    pub vao: u32,
+    /// Every vertex array object name, and the state of those not bound.
+    pub(crate) vaos: std::collections::BTreeMap<u32, crate::vertex_array::VaoSlot>,
+    /// glPrimitiveRestartIndex.
+    pub restart_index: u32,
 }
 
 /// Vertices kept between glBegin and glEnd at most (more are dropped).
@@ -146,12 +218,16 @@ pub const MAX_IMMEDIATE_VERTICES: usize = 1 << 20;
 
 impl VertexState {
     pub fn new() -> VertexState {
-        let mut normal_array = ArrayState::new(3);
-        normal_array.normalized = true;
-        let mut color_array = ArrayState::new(4);
-        color_array.normalized = true;
-        let mut secondary_array = ArrayState::new(3);
-        secondary_array.normalized = true;
+        let VaoArrays {
+            vertex_array,
+            normal_array,
+            color_array,
+            secondary_array,
+            fog_array,
+            tex_arrays,
+            generic_arrays,
+            element_buffer,
+        } = VaoArrays::new();
         VertexState {
             color: [1.0; 4],
             secondary: [0.0, 0.0, 0.0, 1.0],
@@ -159,18 +235,22 @@ impl VertexState {
             fog: [0.0, 0.0, 0.0, 1.0],
             tex: [[0.0, 0.0, 0.0, 1.0]; MAX_TEXTURE_UNITS],
             generic: [[0.0, 0.0, 0.0, 1.0]; MAX_VERTEX_ATTRIBS],
-            vertex_array: ArrayState::new(4),
+            generic_kind: [ValueKind::Float; MAX_VERTEX_ATTRIBS],
+            vertex_array,
             normal_array,
             color_array,
             secondary_array,
-            fog_array: ArrayState::new(1),
-            tex_arrays: vec![ArrayState::new(4); MAX_TEXTURE_UNITS],
-            generic_arrays: vec![ArrayState::new(4); MAX_VERTEX_ATTRIBS],
+            fog_array,
+            tex_arrays,
+            generic_arrays,
             client_active_texture: 0,
             begin_mode: None,
             immediate: Vec::new(),
             array_buffer: 0,
-            element_buffer: 0,
+            element_buffer,
+            vao: 0,
+            vaos: [(0, crate::vertex_array::VaoSlot::Bound)].into(),
+            restart_index: 0,
         }
     }
 
@@ -213,12 +293,17 @@ impl VertexState {
                 .get(i as usize)
                 .copied()
                 .unwrap_or([0.0, 0.0, 0.0, 1.0]),
-            AttribSource::Generic(i) => self
-                .generic
-                .get(i as usize)
-                .copied()
-                .unwrap_or([0.0, 0.0, 0.0, 1.0]),
+            AttribSource::Generic(i) => match self.current_generic(i as usize) {
+                Some((v, kind)) => float_view(v, kind),
+                None => [0.0, 0.0, 0.0, 1.0],
+            },
         }
+    }
+
+    /// Current generic value `i` as stored (integer values as bits) and
+    /// how it was specified.
+    pub fn current_generic(&self, i: usize) -> Option<([f32; 4], ValueKind)> {
+        Some((*self.generic.get(i)?, *self.generic_kind.get(i)?))
     }
 
     pub(crate) fn snapshot(&self, position: [f32; 4]) -> ImmVertex {
@@ -260,6 +345,52 @@ impl ImmVertex {
                 .unwrap_or([0.0, 0.0, 0.0, 1.0]),
         }
     }
+}
+
+/// A stored value as floats: integer values (kept as bits) converted.
+pub fn float_view(v: [f32; 4], kind: ValueKind) -> [f32; 4] {
+    match kind {
+        ValueKind::Float => v,
+        ValueKind::Int => v.map(|x| x.to_bits() as i32 as f32),
+        ValueKind::Uint => v.map(|x| x.to_bits() as f32),
+    }
+}
+
+/// A stored value as the bits of an integer shader input of `want`
+/// (Int or Uint): integer values as they are, float values converted
+/// (GL leaves a float value read by an integer input undefined; this is
+/// the value's integer part, saturated).
+pub fn integer_bits(v: [f32; 4], kind: ValueKind, want: ValueKind) -> [u32; 4] {
+    match kind {
+        ValueKind::Int | ValueKind::Uint => v.map(f32::to_bits),
+        ValueKind::Float if want == ValueKind::Uint => v.map(|x| x as u32),
+        ValueKind::Float => v.map(|x| x as i32 as u32),
+    }
+}
+
+/// Reads one element of an integer array (glVertexAttribIPointer):
+/// `size` components of `ty` at `at`, signed types sign-extended, missing
+/// components from (0, 0, 0, 1). Out-of-range reads give the defaults.
+pub fn read_integer_element(bytes: &[u8], at: usize, size: usize, ty: u32) -> [u32; 4] {
+    let mut out = [0, 0, 0, 1];
+    let Some(cs) = type_size(ty) else {
+        return out;
+    };
+    for (c, o) in out.iter_mut().enumerate().take(size.min(4)) {
+        let start = at.saturating_add(c * cs);
+        let Some(b) = bytes.get(start..start.saturating_add(cs)) else {
+            return [0, 0, 0, 1];
+        };
+        *o = match (ty, b) {
+            (GL_BYTE, [x]) => *x as i8 as i32 as u32,
+            (GL_UNSIGNED_BYTE, [x]) => *x as u32,
+            (GL_SHORT, [x, y]) => i16::from_le_bytes([*x, *y]) as i32 as u32,
+            (GL_UNSIGNED_SHORT, [x, y]) => u16::from_le_bytes([*x, *y]) as u32,
+            (_, [x, y, z, w]) => u32::from_le_bytes([*x, *y, *z, *w]),
+            _ => 0,
+        };
+    }
+    out
 }
 
 /// Bytes per component of an array type.
@@ -473,6 +604,13 @@ impl Context {
             return;
         }
         let buffer = self.va.array_buffer;
+        // Client memory is the default object's alone (GL 3.3 §2.8: a
+        // non-null pointer with no buffer bound while a vertex array
+        // object is bound).
+        if self.va.vao != 0 && buffer == 0 && !matches!(data, ArrayData::Offset(0)) {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
         let unit = self.va.client_active_texture as usize;
         let a = match which {
             PointerTarget::Vertex => &mut self.va.vertex_array,
@@ -484,13 +622,15 @@ impl Context {
                 Some(a) => a,
                 None => return,
             },
-            PointerTarget::Generic(i) => match self.va.generic_arrays.get_mut(i as usize) {
-                Some(a) => a,
-                None => {
-                    self.set_error(GL_INVALID_VALUE);
-                    return;
+            PointerTarget::Generic(i) | PointerTarget::GenericInteger(i) => {
+                match self.va.generic_arrays.get_mut(i as usize) {
+                    Some(a) => a,
+                    None => {
+                        self.set_error(GL_INVALID_VALUE);
+                        return;
+                    }
                 }
-            },
+            }
         };
         a.size = size;
         a.ty = ty;
@@ -498,6 +638,7 @@ impl Context {
         a.stride = stride;
         a.buffer = buffer;
         a.data = data;
+        a.integer = matches!(which, PointerTarget::GenericInteger(_));
     }
 
     /// glVertexPointer.
@@ -603,6 +744,91 @@ impl Context {
             stride,
             data,
         );
+    }
+
+    /// glVertexAttribIPointer: integer components, never converted
+    /// (GL 3.3 §2.8; float types are GL_INVALID_ENUM).
+    pub fn vertex_attrib_i_pointer(
+        &mut self,
+        index: u32,
+        size: i32,
+        ty: u32,
+        stride: i32,
+        data: ArrayData,
+    ) {
+        if index as usize >= MAX_VERTEX_ATTRIBS {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.set_pointer(
+            PointerTarget::GenericInteger(index),
+            size,
+            &[1, 2, 3, 4],
+            ty,
+            &INTEGER_TYPES,
+            false,
+            stride,
+            data,
+        );
+    }
+
+    /// glVertexAttribDivisor (GL 3.3 §2.8.2).
+    pub fn vertex_attrib_divisor(&mut self, index: u32, divisor: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        match self.va.generic_arrays.get_mut(index as usize) {
+            Some(a) => a.divisor = divisor,
+            None => self.set_error(GL_INVALID_VALUE),
+        }
+    }
+
+    /// glVertexAttribI4i (the other glVertexAttribI* forms fill in
+    /// (0, 0, 0, 1) and call this or [`Context::vertex_attrib_i4ui`]).
+    /// Index 0 inside glBegin/glEnd emits a vertex, as glVertexAttrib4f.
+    pub fn vertex_attrib_i4i(&mut self, index: u32, v: [i32; 4]) {
+        self.set_integer_attrib(index, v.map(|x| x as u32), ValueKind::Int);
+    }
+
+    /// glVertexAttribI4ui.
+    pub fn vertex_attrib_i4ui(&mut self, index: u32, v: [u32; 4]) {
+        self.set_integer_attrib(index, v, ValueKind::Uint);
+    }
+
+    fn set_integer_attrib(&mut self, index: u32, v: [u32; 4], kind: ValueKind) {
+        if index as usize >= MAX_VERTEX_ATTRIBS {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        let f = float_view(v.map(f32::from_bits), kind);
+        if index == 0 {
+            self.vertex_4f(f[0], f[1], f[2], f[3]);
+        }
+        self.va.generic[index as usize] = v.map(f32::from_bits);
+        self.va.generic_kind[index as usize] = kind;
+    }
+
+    /// glGetVertexAttribI{i,ui}v with GL_CURRENT_VERTEX_ATTRIB: the
+    /// current value's integer bits (a float value converted).
+    pub fn get_current_vertex_attrib_integer(&mut self, index: u32, unsigned: bool) -> [u32; 4] {
+        if index == 0 || index as usize >= MAX_VERTEX_ATTRIBS {
+            self.set_error(if index == 0 {
+                GL_INVALID_OPERATION
+            } else {
+                GL_INVALID_VALUE
+            });
+            return [0; 4];
+        }
+        let want = if unsigned {
+            ValueKind::Uint
+        } else {
+            ValueKind::Int
+        };
+        integer_bits(
+            self.va.generic[index as usize],
+            self.va.generic_kind[index as usize],
+            want,
+        )
     }
 
     // ---- current values ----
@@ -724,6 +950,7 @@ impl Context {
             self.vertex_4f(x, y, z, w);
         }
         self.va.generic[index as usize] = [x, y, z, w];
+        self.va.generic_kind[index as usize] = ValueKind::Float;
     }
 
     /// glVertexAttrib1f.
@@ -762,7 +989,8 @@ impl Context {
             });
             return [0.0; 4];
         }
-        self.va.generic[index as usize]
+        let i = index as usize;
+        float_view(self.va.generic[i], self.va.generic_kind[i])
     }
 
     // ---- glBegin / glEnd ----
@@ -844,6 +1072,15 @@ const ALL_TYPES: [u32; 8] = [
     GL_DOUBLE,
 ];
 
+const INTEGER_TYPES: [u32; 6] = [
+    GL_BYTE,
+    GL_UNSIGNED_BYTE,
+    GL_SHORT,
+    GL_UNSIGNED_SHORT,
+    GL_INT,
+    GL_UNSIGNED_INT,
+];
+
 #[derive(Clone, Copy)]
 enum PointerTarget {
     Vertex,
@@ -853,6 +1090,8 @@ enum PointerTarget {
     Fog,
     TexCoord,
     Generic(u32),
+    /// glVertexAttribIPointer.
+    GenericInteger(u32),
 }
 
 #[cfg(test)]
