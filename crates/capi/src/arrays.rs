@@ -72,6 +72,13 @@ impl ClientArrays {
         ptr: *const u8,
         call: impl FnOnce(&mut gl::Context, ArrayData),
     ) {
+        // A vertex array object other than the default one holds no
+        // client memory (the context refuses a non-null pointer with no
+        // buffer bound): the pointers kept are the default object's.
+        if gl.vertex_array_binding() != 0 {
+            call(gl, ArrayData::Offset(ptr as usize));
+            return;
+        }
         if gl.vertex_state().array_buffer != 0 {
             call(gl, ArrayData::Offset(ptr as usize));
             if let Some(a) = array_state(gl.vertex_state(), src) {
@@ -99,6 +106,9 @@ impl ClientArrays {
     /// Whether a draw reads an enabled array from client memory (then
     /// [`ClientArrays::prepare`] has vertices to copy).
     pub fn reads_client_memory(&self, gl: &gl::Context) -> bool {
+        if gl.vertex_array_binding() != 0 {
+            return false;
+        }
         self.pointers.keys().any(|&src| {
             array_state(gl.vertex_state(), src).is_some_and(|a| a.enabled && a.buffer == 0)
         })
@@ -107,6 +117,16 @@ impl ClientArrays {
     /// Before a draw reading vertices `lo..=hi`: copies those vertices of
     /// every enabled client array into the context.
     pub fn prepare(&self, gl: &mut gl::Context, lo: u32, hi: u32) {
+        self.prepare_instanced(gl, lo, hi, 1);
+    }
+
+    /// [`ClientArrays::prepare`] for `instances` instances: an instanced
+    /// array (divisor d) is read at elements 0..=(instances - 1) / d
+    /// instead of the vertices.
+    pub fn prepare_instanced(&self, gl: &mut gl::Context, lo: u32, hi: u32, instances: u32) {
+        if gl.vertex_array_binding() != 0 {
+            return;
+        }
         for (&src, &ptr) in &self.pointers {
             let Some(a) = array_state(gl.vertex_state(), src) else {
                 continue;
@@ -114,6 +134,10 @@ impl ClientArrays {
             if !a.enabled || a.buffer != 0 {
                 continue;
             }
+            let (lo, hi) = match a.divisor {
+                0 => (lo, hi),
+                d => (0, instances.saturating_sub(1) / d),
+            };
             let Some(bytes) = copy_range(ptr as *const u8, a, lo, hi) else {
                 gl.record_error(gl::enums::GL_OUT_OF_MEMORY);
                 continue;
@@ -160,6 +184,8 @@ mod tests {
             stride: 8,
             buffer: 0,
             data: ArrayData::default(),
+            integer: false,
+            divisor: 0,
         };
         let v = copy_range(data.as_ptr(), &a, 2, 3).unwrap();
         assert_eq!(v.len(), 3 * 8 + 2);

@@ -1,5 +1,7 @@
 //! Vertex array specification and its queries (GL 2.1 §2.8, §6.1.12,
-//! §6.1.14): enabling arrays, the gl*Pointer calls (client pointers are
+//! §6.1.14; GL 3.3 §2.8, §2.10): vertex array objects, enabling arrays,
+//! the gl*Pointer calls (glVertexAttribIPointer, glVertexAttribDivisor
+//! among them; client pointers are
 //! kept by [`crate::arrays`], the data copied at draw time),
 //! glInterleavedArrays, and glGetVertexAttrib*v / glGetPointerv. Array
 //! state is client state: none of these is compiled into display lists.
@@ -22,7 +24,9 @@ fn generic(c: &mut OsContext, index: GLuint) -> Option<gl::ArrayState> {
     }
 }
 
-/// glGetVertexAttrib{i,f,d}v as doubles (GL 2.1 §6.1.12).
+/// glGetVertexAttrib{i,f,d}v as doubles (GL 2.1 §6.1.12; GL 3.3 adds
+/// GL_VERTEX_ATTRIB_ARRAY_INTEGER and _DIVISOR): the bound vertex array
+/// object's state, or the current value.
 fn vertex_attrib(c: &mut OsContext, index: GLuint, pname: GLenum) -> Vec<f64> {
     if c.gl.reject_in_begin() {
         return Vec::new();
@@ -35,22 +39,33 @@ fn vertex_attrib(c: &mut OsContext, index: GLuint, pname: GLenum) -> Vec<f64> {
             .map(|&x| x as f64)
             .collect();
     }
-    let Some(a) = generic(c, index) else {
+    match c.gl.get_vertex_attrib_array(index, pname) {
+        Some(v) => vec![v as f64],
+        None => Vec::new(),
+    }
+}
+
+/// glGetVertexAttribI{i,ui}v: the current value's integers, or the
+/// array state as for glGetVertexAttribiv.
+fn vertex_attrib_integer(
+    c: &mut OsContext,
+    index: GLuint,
+    pname: GLenum,
+    unsigned: bool,
+) -> Vec<u32> {
+    if c.gl.reject_in_begin() {
         return Vec::new();
-    };
-    let v = match pname {
-        GL_VERTEX_ATTRIB_ARRAY_ENABLED => a.enabled as i64,
-        GL_VERTEX_ATTRIB_ARRAY_SIZE => a.size as i64,
-        GL_VERTEX_ATTRIB_ARRAY_STRIDE => a.stride as i64,
-        GL_VERTEX_ATTRIB_ARRAY_TYPE => a.ty as i64,
-        GL_VERTEX_ATTRIB_ARRAY_NORMALIZED => a.normalized as i64,
-        GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING => a.buffer as i64,
-        _ => {
-            c.gl.record_error(GL_INVALID_ENUM);
-            return Vec::new();
-        }
-    };
-    vec![v as f64]
+    }
+    if pname == GL_CURRENT_VERTEX_ATTRIB {
+        return c
+            .gl
+            .get_current_vertex_attrib_integer(index, unsigned)
+            .to_vec();
+    }
+    match c.gl.get_vertex_attrib_array(index, pname) {
+        Some(v) => vec![v as u32],
+        None => Vec::new(),
+    }
 }
 
 gl_entry_points! {
@@ -103,6 +118,39 @@ gl_entry_points! {
         });
     }
 
+    fn glVertexAttribIPointer(
+        index: GLuint, size: GLint, ty: GLenum, stride: GLsizei, pointer: *const c_void
+    ) => |c| {
+        let src = AttribSource::Generic(index.min(255) as u8);
+        c.arrays.set_pointer(&mut c.gl, src, pointer as *const u8, |g, d| {
+            g.vertex_attrib_i_pointer(index, size, ty, stride, d)
+        });
+    }
+    fn glVertexAttribDivisor(index: GLuint, divisor: GLuint) => |c| {
+        c.gl.vertex_attrib_divisor(index, divisor)
+    }
+
+    // ---- vertex array objects (GL 3.3 §2.10) ----
+    fn glGenVertexArrays(n: GLsizei, arrays: *mut GLuint) => |c| {
+        let names = c.gl.gen_vertex_arrays(n);
+        wr(arrays, &names);
+    }
+    fn glBindVertexArray(array: GLuint) => |c| { c.gl.bind_vertex_array(array) }
+    fn glDeleteVertexArrays(n: GLsizei, arrays: *const GLuint) => |c| {
+        if n < 0 {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let names = rd_vec(arrays, n as i64);
+        c.gl.delete_vertex_arrays(&names);
+    }
+    fn glIsVertexArray(array: GLuint) -> GLboolean [0] => |c| {
+        if c.gl.reject_in_begin() {
+            return 0;
+        }
+        c.gl.is_vertex_array(array) as GLboolean
+    }
+
     // ---- queries ----
     fn glGetVertexAttribiv(index: GLuint, pname: GLenum, v: *mut GLint) => |c| {
         let r: Vec<GLint> = vertex_attrib(c, index, pname)
@@ -112,12 +160,19 @@ gl_entry_points! {
         wr(v, &r);
     }
     fn glGetVertexAttribfv(index: GLuint, pname: GLenum, v: *mut GLfloat) => |c| {
-        if pname == GL_CURRENT_VERTEX_ATTRIB {
-            let r = c.gl.get_current_vertex_attrib(index);
-            wr(v, &r);
-        } else {
-            c.gl.record_error(GL_INVALID_ENUM);
-        }
+        let r: Vec<GLfloat> = vertex_attrib(c, index, pname).iter().map(|&x| x as f32).collect();
+        wr(v, &r);
+    }
+    fn glGetVertexAttribIiv(index: GLuint, pname: GLenum, v: *mut GLint) => |c| {
+        let r: Vec<GLint> = vertex_attrib_integer(c, index, pname, false)
+            .iter()
+            .map(|&x| x as i32)
+            .collect();
+        wr(v, &r);
+    }
+    fn glGetVertexAttribIuiv(index: GLuint, pname: GLenum, v: *mut GLuint) => |c| {
+        let r = vertex_attrib_integer(c, index, pname, true);
+        wr(v, &r);
     }
     fn glGetVertexAttribdv(index: GLuint, pname: GLenum, v: *mut GLdouble) => |c| {
         let r = vertex_attrib(c, index, pname);

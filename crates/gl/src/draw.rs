@@ -183,10 +183,7 @@ impl Context {
         let Some(idx) = self.read_indices(count as usize, ty, &indices) else {
             return;
         };
-        let restart = self
-            .st
-            .is_on(GL_PRIMITIVE_RESTART)
-            .then_some(self.va.restart_index);
+        let restart = self.primitive_restart();
         let instances = instances as u32;
         match restart {
             Some(r) if idx.as_slice().contains(&r) => {
@@ -232,6 +229,13 @@ impl Context {
         for ((c, i), b) in count.iter().zip(indices).zip(basevertex) {
             self.draw_elements_base_vertex(mode, *c, ty, i.clone(), *b);
         }
+    }
+
+    /// The primitive restart index when restart is enabled.
+    pub fn primitive_restart(&self) -> Option<u32> {
+        self.st
+            .is_on(GL_PRIMITIVE_RESTART)
+            .then_some(self.va.restart_index)
     }
 
     /// glPrimitiveRestartIndex.
