@@ -52,7 +52,9 @@ impl ClientArrays {
     /// buffer object.
     pub fn pointer_value(&self, va: &VertexState, src: AttribSource) -> usize {
         match array_state(va, src) {
-            Some(a) if a.buffer != 0 => match a.data {
+            // The pointers kept are the default object's; another object's
+            // arrays are offsets (null, or into their buffers).
+            Some(a) if a.buffer != 0 || va.vao != 0 => match a.data {
                 gl::ArrayData::Offset(o) => o,
                 _ => 0,
             },

@@ -186,6 +186,9 @@ fn instanced_integer_attributes_from_a_vertex_array_object() {
         // Client pointers are refused in a vertex array object.
         glVertexAttribPointer(corner, 2, GL_FLOAT, 0, 0, CORNERS.as_ptr() as *const c_void);
         assert_eq!(glGetError(), GL_INVALID_OPERATION);
+        let mut ptr: *mut c_void = null_mut();
+        glGetVertexAttribPointerv(corner, GL_VERTEX_ATTRIB_ARRAY_POINTER, &mut ptr);
+        assert!(ptr.is_null());
 
         glClearColor(0.0, 0.0, 0.0, 0.0);
         glClear(GL_COLOR_BUFFER_BIT);
@@ -211,8 +214,13 @@ fn instanced_integer_attributes_from_a_vertex_array_object() {
         assert_eq!(px(&buf, 2, 2), [10, 0, 0, 255]);
         assert_eq!(px(&buf, 6, 2), [20, 0, 0, 255]);
         assert_eq!(px(&buf, 10, 2), [0, 255, 0, 255]);
-        // The object kept its state.
+        // The object kept its state; each object answers for its own
+        // pointers.
+        glGetVertexAttribPointerv(code, GL_VERTEX_ATTRIB_ARRAY_POINTER, &mut ptr);
+        assert_eq!(ptr as usize, client_codes.as_ptr() as usize);
         glBindVertexArray(vao);
+        glGetVertexAttribPointerv(code, GL_VERTEX_ATTRIB_ARRAY_POINTER, &mut ptr);
+        assert!(ptr.is_null());
         glGetVertexAttribiv(
             corner,
             GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING,
