@@ -18,7 +18,7 @@
 //! no error code for it).
 
 use crate::enums::*;
-use crate::fetch::Fetcher;
+use crate::fetch::{Fetcher, InstanceBatch};
 use crate::pipeline_state::{raster_mode, rect};
 use crate::vertex::{ArrayData, ImmVertex};
 use crate::Context;
@@ -72,7 +72,7 @@ impl Context {
         }
         let count = count.min(1 << 24) as u32;
         let indices: Vec<u32> = (0..count).map(|i| i.saturating_add(first as u32)).collect();
-        self.run_draw(mode, &indices, None, instances as u32);
+        self.draw_list(mode, &indices, None, 0, instances as u32);
     }
 
     /// glMultiDrawArrays: one glDrawArrays per pair (a negative count is
@@ -184,19 +184,82 @@ impl Context {
             return;
         };
         let restart = self.primitive_restart();
-        let instances = instances as u32;
-        match restart {
-            Some(r) if idx.as_slice().contains(&r) => {
-                for (m, list) in crate::restart::split(mode, idx.as_slice(), r) {
-                    let list = with_base(list, basevertex);
-                    self.run_draw(m, &list, None, instances);
+        self.draw_list(mode, idx.as_slice(), restart, basevertex, instances as u32);
+    }
+
+    /// Draws the element indices `list` (`restart`: the restart index
+    /// when restart is on; `basevertex` added after the comparison)
+    /// `instances` times. Instances are drawn in batches, each batch as
+    /// one draw whose vertices number (instance, element) pairs
+    /// ([`InstanceBatch`]) and whose primitives are those of each
+    /// instance in turn (strips and loops as their independent
+    /// primitives, [`crate::restart`]): the primitives, their order and
+    /// their vertices are those of one draw per instance.
+    fn draw_list(
+        &mut self,
+        mode: u32,
+        list: &[u32],
+        restart: Option<u32>,
+        basevertex: i32,
+        instances: u32,
+    ) {
+        let restart = restart.filter(|r| list.contains(r));
+        let base = basevertex as u32;
+        let vertices = || {
+            list.iter()
+                .filter(move |&&i| Some(i) != restart)
+                .map(move |&i| i.wrapping_add(base))
+        };
+        let (Some(lo), Some(hi)) = (vertices().min(), vertices().max()) else {
+            return;
+        };
+        let stride = (hi - lo) as u64 + 1;
+        let per_instance = list.len() as u64 + 1;
+        // Virtual vertex numbers stay below the separator (u32::MAX); a
+        // batch's list stays below 2^22 indices.
+        let batch = ((u32::MAX as u64 - 1) / stride)
+            .min((1 << 22) / per_instance)
+            .min(instances as u64) as u32;
+        if instances == 1 || batch < 2 {
+            for instance in 0..instances {
+                let one = InstanceBatch::one(instance);
+                match restart {
+                    Some(r) => {
+                        for (m, l) in crate::restart::split(mode, list, r) {
+                            self.run_draw(m, &with_base(l, basevertex), None, one);
+                        }
+                    }
+                    None if basevertex != 0 => {
+                        self.run_draw(mode, &with_base(list.to_vec(), basevertex), None, one)
+                    }
+                    None => self.run_draw(mode, list, None, one),
                 }
             }
-            _ if basevertex != 0 => {
-                let list = with_base(idx.as_slice().to_vec(), basevertex);
-                self.run_draw(mode, &list, None, instances);
+            return;
+        }
+        const SEPARATOR: u32 = u32::MAX;
+        let stride = stride as u32;
+        let mut first = 0u32;
+        while first < instances {
+            let n = batch.min(instances - first);
+            let mut combined = Vec::with_capacity(n as usize * per_instance as usize);
+            for k in 0..n {
+                if k > 0 {
+                    combined.push(SEPARATOR);
+                }
+                combined.extend(list.iter().map(|&i| {
+                    if Some(i) == restart {
+                        SEPARATOR
+                    } else {
+                        k * stride + i.wrapping_add(base).wrapping_sub(lo)
+                    }
+                }));
             }
-            _ => self.run_draw(mode, idx.as_slice(), None, instances),
+            let b = InstanceBatch { first, lo, stride };
+            for (m, l) in crate::restart::split(mode, &combined, SEPARATOR) {
+                self.run_draw(m, &l, None, b);
+            }
+            first += n;
         }
     }
 
@@ -252,19 +315,18 @@ impl Context {
             return;
         }
         let indices: Vec<u32> = (0..verts.len() as u32).collect();
-        self.run_draw(mode, &indices, Some(verts), 1);
+        self.run_draw(mode, &indices, Some(verts), InstanceBatch::one(0));
     }
 
-    /// Draws `indices` `instances` times: each instance a whole draw, in
-    /// order, as that many separate draws would (GL 3.3 §2.8.2).
+    /// Draws `indices`, vertices of the instances `batch`.
     fn run_draw(
         &mut self,
         mode: u32,
         indices: &[u32],
         immediate: Option<&[ImmVertex]>,
-        instances: u32,
+        batch: InstanceBatch,
     ) {
-        if indices.is_empty() || instances == 0 {
+        if indices.is_empty() {
             return;
         }
         let (vs, vs_user, fs, ff_shape) = match self.draw_kernels() {
@@ -291,82 +353,80 @@ impl Context {
             return;
         };
         let state = self.pipeline_state(target.draw_buffers);
-        for instance in 0..instances {
-            let fetch = Fetcher::new(self, &vs, immediate, instance);
-            let replay = raster::Replay {
-                state: &state,
-                vs: &vs,
-                vs_uniforms: &vs_words,
-                fs: &fs,
-                fs_uniforms: &fs_words,
-                mode: raster_mode(mode),
-                indices,
-                fetch: &fetch,
-                textures: &units,
+        let fetch = Fetcher::new(self, &vs, immediate, batch);
+        let replay = raster::Replay {
+            state: &state,
+            vs: &vs,
+            vs_uniforms: &vs_words,
+            fs: &fs,
+            fs_uniforms: &fs_words,
+            mode: raster_mode(mode),
+            indices,
+            fetch: &fetch,
+            textures: &units,
+        };
+        let probe = self
+            .debug
+            .wants()
+            .map(|req| raster::probe_draw(&target.fb, &replay, req));
+        let view = self.debug.view().map(|name| {
+            let (v, kinds) = crate::debug::resolve_view(&fs, name)?;
+            let image = raster::view_draw(&target.fb, &replay, v).map_err(|e| e.to_string())?;
+            Ok(crate::debug::ViewRecord {
+                name: name.to_string(),
+                kinds,
+                image,
+            })
+        });
+        let samples_before = target.fb.samples_passed;
+        let r = raster::draw_on(
+            &self.workers,
+            &mut target.fb,
+            &state,
+            &vs,
+            &vs_words,
+            fs_stage,
+            &fs_words,
+            raster_mode(mode),
+            indices,
+            &fetch,
+            &units,
+        );
+        if let Err(e) = r {
+            self.cache.error = Some(e.to_string());
+        }
+        let samples = target.fb.samples_passed.wrapping_sub(samples_before);
+        self.count_samples(samples);
+        if let Some(probe) = probe {
+            let record = crate::debug::DrawRecord {
+                draw: self.debug.draws,
+                mode,
+                count: indices.len(),
+                program: self.current_program,
+                framebuffer: target.name,
+                vertex: crate::debug::StageInfo {
+                    shaders: if vs_user {
+                        self.stage_shaders(glsl::Stage::Vertex)
+                    } else {
+                        Vec::new()
+                    },
+                    kernel: vs,
+                },
+                fragment: crate::debug::StageInfo {
+                    shaders: if fs_user {
+                        self.stage_shaders(glsl::Stage::Fragment)
+                    } else {
+                        Vec::new()
+                    },
+                    kernel: fs,
+                },
+                probe,
+                view,
             };
-            let probe = self
-                .debug
-                .wants()
-                .map(|req| raster::probe_draw(&target.fb, &replay, req));
-            let view = self.debug.view().map(|name| {
-                let (v, kinds) = crate::debug::resolve_view(&fs, name)?;
-                let image = raster::view_draw(&target.fb, &replay, v).map_err(|e| e.to_string())?;
-                Ok(crate::debug::ViewRecord {
-                    name: name.to_string(),
-                    kinds,
-                    image,
-                })
-            });
-            let samples_before = target.fb.samples_passed;
-            let r = raster::draw_on(
-                &self.workers,
-                &mut target.fb,
-                &state,
-                &vs,
-                &vs_words,
-                fs_stage,
-                &fs_words,
-                raster_mode(mode),
-                indices,
-                &fetch,
-                &units,
-            );
-            if let Err(e) = r {
-                self.cache.error = Some(e.to_string());
-            }
-            let samples = target.fb.samples_passed.wrapping_sub(samples_before);
-            self.count_samples(samples);
-            if let Some(probe) = probe {
-                let record = crate::debug::DrawRecord {
-                    draw: self.debug.draws,
-                    mode,
-                    count: indices.len(),
-                    program: self.current_program,
-                    framebuffer: target.name,
-                    vertex: crate::debug::StageInfo {
-                        shaders: if vs_user {
-                            self.stage_shaders(glsl::Stage::Vertex)
-                        } else {
-                            Vec::new()
-                        },
-                        kernel: vs.clone(),
-                    },
-                    fragment: crate::debug::StageInfo {
-                        shaders: if fs_user {
-                            self.stage_shaders(glsl::Stage::Fragment)
-                        } else {
-                            Vec::new()
-                        },
-                        kernel: fs.clone(),
-                    },
-                    probe,
-                    view,
-                };
-                self.debug.records.push(record);
-            }
-            if self.debug.request.is_some() {
-                self.debug.draws += 1;
-            }
+            self.debug.records.push(record);
+        }
+        if self.debug.request.is_some() {
+            self.debug.draws += 1;
         }
         self.store_target(target);
     }

@@ -28,6 +28,38 @@ pub(crate) enum InputSource {
     InstanceId,
 }
 
+/// Which instances a draw's vertices belong to. A draw of one instance
+/// (`stride` 0) fetches its element indices as they are; a batch of
+/// instances drawn at once numbers its vertices so that vertex `v` is
+/// element `lo + v % stride` of instance `first + v / stride`
+/// (`crate::draw`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct InstanceBatch {
+    pub(crate) first: u32,
+    pub(crate) lo: u32,
+    pub(crate) stride: u32,
+}
+
+impl InstanceBatch {
+    /// Instance `instance` alone.
+    pub(crate) fn one(instance: u32) -> InstanceBatch {
+        InstanceBatch {
+            first: instance,
+            lo: 0,
+            stride: 0,
+        }
+    }
+
+    /// (element index, instance) of vertex `v`.
+    #[inline]
+    fn decode(self, v: u32) -> (u32, u32) {
+        match self.stride {
+            0 => (v, self.first),
+            s => (self.lo.wrapping_add(v % s), self.first.wrapping_add(v / s)),
+        }
+    }
+}
+
 /// Vertex input slots mapped to their sources.
 pub(crate) struct Fetcher<'a> {
     pub(crate) ctx: &'a Context,
@@ -36,7 +68,7 @@ pub(crate) struct Fetcher<'a> {
     /// `exec::Batch::inputs`).
     kinds: Vec<ValueKind>,
     pub(crate) immediate: Option<&'a [ImmVertex]>,
-    instance: u32,
+    batch: InstanceBatch,
     /// Per slot, per column (one for non-matrix slots): the attribute's
     /// array or current value, resolved once per draw (array draws only).
     resolved: Vec<Vec<ResolvedAttrib>>,
@@ -58,9 +90,15 @@ enum Convert {
 /// Where one attribute's values come from during a draw.
 enum ResolvedAttrib {
     /// Every vertex reads this value (the array is disabled: the current
-    /// value; an instanced array: this instance's element; or enabled
-    /// without bytes: the defaults). Already in the input's form.
+    /// value; or enabled without bytes: the defaults). Already in the
+    /// input's form.
     Value([f32; 4]),
+    /// An instanced array: element instance / divisor of `array`
+    /// (GL 3.3 §2.8.2).
+    PerInstance {
+        array: Box<ResolvedAttrib>,
+        divisor: u32,
+    },
     /// An enabled array.
     Array {
         bytes: std::sync::Arc<[u8]>,
@@ -91,7 +129,7 @@ fn as_input(v: [f32; 4], stored: ValueKind, kind: ValueKind) -> [f32; 4] {
 }
 
 impl ResolvedAttrib {
-    fn new(ctx: &Context, src: AttribSource, kind: ValueKind, instance: u32) -> ResolvedAttrib {
+    fn new(ctx: &Context, src: AttribSource, kind: ValueKind) -> ResolvedAttrib {
         let Some(a) = ctx.va.array_for(src) else {
             let stored = match src {
                 AttribSource::Generic(i) => ctx
@@ -135,19 +173,21 @@ impl ResolvedAttrib {
             normalized: a.normalized && !a.integer,
             convert,
         };
-        // An instanced array: one element for the whole instance
-        // (GL 3.3 §2.8.2).
         match a.divisor {
             0 => r,
-            d => ResolvedAttrib::Value(r.read(instance / d)),
+            divisor => ResolvedAttrib::PerInstance {
+                array: Box::new(r),
+                divisor,
+            },
         }
     }
 
     /// Element `index` in the input's form: float arrays read directly,
     /// other types through `read_element` / `read_integer_element`.
-    fn read(&self, index: u32) -> [f32; 4] {
+    fn read(&self, index: u32, instance: u32) -> [f32; 4] {
         match self {
             ResolvedAttrib::Value(v) => *v,
+            ResolvedAttrib::PerInstance { array, divisor } => array.read(instance / divisor, 0),
             ResolvedAttrib::Array {
                 bytes,
                 base,
@@ -199,14 +239,14 @@ impl<'a> Fetcher<'a> {
         }
     }
 
-    /// The fetcher of instance `instance` of a draw from arrays
+    /// The fetcher of the instances `batch` of a draw from arrays
     /// (`immediate: None`) or of glBegin/glEnd vertices, for the inputs
     /// of `vs`.
     pub(crate) fn new(
         ctx: &'a Context,
         vs: &exec::Kernel,
         immediate: Option<&'a [ImmVertex]>,
-        instance: u32,
+        batch: InstanceBatch,
     ) -> Fetcher<'a> {
         let attribs = ctx.input_sources(vs);
         let iface = vs.interface();
@@ -229,7 +269,6 @@ impl<'a> Fetcher<'a> {
                 _ => ValueKind::Float,
             })
             .collect();
-        let instance_value = [instance, 0, 0, 1].map(f32::from_bits);
         let resolved = if immediate.is_some() {
             Vec::new()
         } else {
@@ -243,14 +282,13 @@ impl<'a> Fetcher<'a> {
                         .take(4)
                         .map(|loc| {
                             let src = AttribSource::Generic(loc as u8);
-                            ResolvedAttrib::new(ctx, src, kind, instance)
+                            ResolvedAttrib::new(ctx, src, kind)
                         })
                         .collect(),
                     Some(InputSource::Attrib(src)) => {
-                        vec![ResolvedAttrib::new(ctx, *src, kind, instance)]
+                        vec![ResolvedAttrib::new(ctx, *src, kind)]
                     }
-                    Some(InputSource::InstanceId) => vec![ResolvedAttrib::Value(instance_value)],
-                    Some(InputSource::VertexId) | None => Vec::new(),
+                    Some(InputSource::InstanceId | InputSource::VertexId) | None => Vec::new(),
                 })
                 .collect()
         };
@@ -259,7 +297,7 @@ impl<'a> Fetcher<'a> {
             slots,
             kinds,
             immediate,
-            instance,
+            batch,
             resolved,
         }
     }
@@ -299,7 +337,10 @@ impl raster::VertexFetch for Fetcher<'_> {
         // Arrays of a draw from arrays: the source resolved once for the
         // whole list.
         match self.resolved_column(input_slot, column) {
-            Some(r) => raster::fetch_column_each(indices, out, |ix, v| *v = r.read(ix)),
+            Some(r) => raster::fetch_column_each(indices, out, |ix, v| {
+                let (index, instance) = self.batch.decode(ix);
+                *v = r.read(index, instance)
+            }),
             None => raster::fetch_column_each(indices, out, |ix, v| {
                 self.fetch_column(input_slot, column, ix, v)
             }),
@@ -314,20 +355,21 @@ impl raster::VertexFetch for Fetcher<'_> {
         out: &mut [f32; 4],
     ) {
         let kind = self.kinds.get(input_slot).copied().unwrap_or_default();
+        let (index, instance) = self.batch.decode(vertex_index);
         match self.slots.get(input_slot) {
             Some(Some(InputSource::VertexId)) if column == 0 => {
-                *out = [vertex_index, 0, 0, 1].map(f32::from_bits);
+                *out = [index, 0, 0, 1].map(f32::from_bits);
                 return;
             }
             Some(Some(InputSource::InstanceId)) if column == 0 => {
-                *out = [self.instance, 0, 0, 1].map(f32::from_bits);
+                *out = [instance, 0, 0, 1].map(f32::from_bits);
                 return;
             }
             _ => {}
         }
         if self.immediate.is_none() {
             if let Some(r) = self.resolved_column(input_slot, column) {
-                *out = r.read(vertex_index);
+                *out = r.read(index, instance);
             }
             return;
         }

@@ -490,3 +490,95 @@ fn draw_errors() {
     assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
 }
+
+/// Instanced element draws with restart and a base vertex, strips and
+/// fans, render what one draw per instance renders.
+#[test]
+fn instanced_restart_strips_equal_separate_draws() {
+    let instanced_vs = "#version 140\n\
+        in vec2 pos;\n\
+        in vec4 tint;\n\
+        flat out vec4 c;\n\
+        void main() {\n\
+          vec2 o = vec2(0.0, -0.9 + 0.3 * float(gl_InstanceID));\n\
+          gl_Position = vec4(pos * vec2(1.0, 0.1) + o, 0.0, 1.0);\n\
+          c = tint + vec4(float(gl_VertexID) / 64.0, 0.0, 0.0, 0.0);\n\
+        }";
+    let separate_vs = "#version 140\n\
+        uniform int instance;\n\
+        in vec2 pos;\n\
+        in vec4 tint;\n\
+        flat out vec4 c;\n\
+        void main() {\n\
+          vec2 o = vec2(0.0, -0.9 + 0.3 * float(instance));\n\
+          gl_Position = vec4(pos * vec2(1.0, 0.1) + o, 0.0, 1.0);\n\
+          c = tint + vec4(float(gl_VertexID) / 64.0, 0.0, 0.0, 0.0);\n\
+        }";
+    // Vertices 3.. : two squares side by side (left, right), as strips.
+    let mut pos = vec![0.0f32; 6];
+    pos.extend([
+        -0.9, -1.0, -0.1, -1.0, -0.9, 1.0, -0.1, 1.0, //
+        0.1, -1.0, 0.9, -1.0, 0.1, 1.0, 0.9, 1.0,
+    ]);
+    let tints: Vec<f32> = (0..7)
+        .flat_map(|i| [0.0, i as f32 / 8.0, 1.0 - i as f32 / 8.0, 1.0])
+        .collect();
+    let strip: Vec<u8> = vec![0, 1, 2, 3, 0xff, 4, 5, 6, 7];
+    let fan: Vec<u8> = vec![0, 1, 3, 2, 0xff, 4, 5, 7, 6];
+    for (mode, elements) in [(GL_TRIANGLE_STRIP, &strip), (GL_TRIANGLE_FAN, &fan)] {
+        let setup = |vs: &str, divisor: bool| {
+            let mut ctx = Context::new(24, 24);
+            let p = program(&mut ctx, vs, INSTANCED_FS);
+            let (a, t) = (attrib(&mut ctx, p, "pos"), attrib(&mut ctx, p, "tint"));
+            ctx.vertex_attrib_pointer(a, 2, GL_FLOAT, false, 0, ArrayData::from_f32(&pos));
+            ctx.enable_vertex_attrib_array(a);
+            if divisor {
+                ctx.vertex_attrib_pointer(t, 4, GL_FLOAT, false, 0, ArrayData::from_f32(&tints));
+                ctx.enable_vertex_attrib_array(t);
+                ctx.vertex_attrib_divisor(t, 1);
+            }
+            ctx.enable(GL_PRIMITIVE_RESTART);
+            ctx.primitive_restart_index(0xff);
+            buffer(&mut ctx, GL_ELEMENT_ARRAY_BUFFER, elements);
+            clear(&mut ctx);
+            (ctx, p, t)
+        };
+        let instanced = {
+            let (mut ctx, _, _) = setup(instanced_vs, true);
+            ctx.draw_elements_instanced_base_vertex(
+                mode,
+                elements.len() as i32,
+                GL_UNSIGNED_BYTE,
+                ArrayData::Offset(0),
+                7,
+                3,
+            );
+            assert_eq!(ctx.get_error(), GL_NO_ERROR);
+            image(&mut ctx)
+        };
+        let separate = {
+            let (mut ctx, p, t) = setup(separate_vs, false);
+            let u = ctx.get_uniform_location(p, "instance");
+            for i in 0..7 {
+                ctx.uniform_1i(u, i);
+                let c = &tints[4 * i as usize..][..4];
+                ctx.vertex_attrib_4f(t, c[0], c[1], c[2], c[3]);
+                ctx.draw_elements_base_vertex(
+                    mode,
+                    elements.len() as i32,
+                    GL_UNSIGNED_BYTE,
+                    ArrayData::Offset(0),
+                    3,
+                );
+            }
+            image(&mut ctx)
+        };
+        assert!(instanced == separate, "mode {mode:#x}");
+        // Seven rows of two squares (instance 0 at rows 0-2, instance 6
+        // at rows 22-23), gaps between them.
+        let row = |y: usize| &instanced[y * 24..][..24];
+        assert!(row(1)[4] != [0; 4] && row(1)[20] != [0; 4] && row(1)[12] == [0; 4]);
+        assert!(row(3).iter().all(|p| *p == [0; 4]));
+        assert!(row(22)[4] != [0; 4] && row(22)[4] != row(1)[4]);
+    }
+}
