@@ -11,7 +11,7 @@
 //! arrays, so memory the GL contract does not cover (disabled arrays,
 //! vertices outside the draw) is never touched.
 
-use gl::vertex::{type_size, ArrayState, AttribSource, VertexState};
+use gl::vertex::{element_size, ArrayState, AttribSource, VertexState};
 use gl::ArrayData;
 use std::collections::BTreeMap;
 use std::sync::Arc;
@@ -152,7 +152,7 @@ impl ClientArrays {
 /// The bytes of vertices `lo..=hi` of array `a` at `ptr`, at their offsets
 /// from `ptr` (bytes before vertex `lo` are zero, never read).
 fn copy_range(ptr: *const u8, a: &ArrayState, lo: u32, hi: u32) -> Option<Vec<u8>> {
-    let elem = (a.size.max(0) as usize).checked_mul(type_size(a.ty)?)?;
+    let elem = element_size(a.size, a.ty)?;
     let stride = if a.stride > 0 {
         a.stride as usize
     } else {

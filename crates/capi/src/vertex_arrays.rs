@@ -8,7 +8,7 @@
 //! Drawing from the arrays is [`crate::drawing`].
 
 use crate::abi::*;
-use crate::context::{guard, with_ctx, OsContext};
+use crate::context::{guard, record_call, vector_call, with_ctx, OsContext};
 use gl::enums::*;
 use gl::vertex::AttribSource;
 use std::ffi::c_void;
@@ -125,6 +125,51 @@ gl_entry_points! {
         c.arrays.set_pointer(&mut c.gl, src, pointer as *const u8, |g, d| {
             g.vertex_attrib_i_pointer(index, size, ty, stride, d)
         });
+    }
+    // ---- packed current values (GL 3.3 §2.7) ----
+    [list] fn glVertexAttribP1ui(index: GLuint, ty: GLenum, normalized: GLboolean, value: GLuint) => |c| {
+        c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 1, value)
+    }
+    fn glVertexAttribP1uiv(index: GLuint, ty: GLenum, normalized: GLboolean, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexAttribP1uiv(index, ty, normalized, p) },
+            |c, [v]| c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 1, v),
+        )
+    }
+    [list] fn glVertexAttribP2ui(index: GLuint, ty: GLenum, normalized: GLboolean, value: GLuint) => |c| {
+        c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 2, value)
+    }
+    fn glVertexAttribP2uiv(index: GLuint, ty: GLenum, normalized: GLboolean, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexAttribP2uiv(index, ty, normalized, p) },
+            |c, [v]| c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 2, v),
+        )
+    }
+    [list] fn glVertexAttribP3ui(index: GLuint, ty: GLenum, normalized: GLboolean, value: GLuint) => |c| {
+        c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 3, value)
+    }
+    fn glVertexAttribP3uiv(index: GLuint, ty: GLenum, normalized: GLboolean, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexAttribP3uiv(index, ty, normalized, p) },
+            |c, [v]| c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 3, v),
+        )
+    }
+    [list] fn glVertexAttribP4ui(index: GLuint, ty: GLenum, normalized: GLboolean, value: GLuint) => |c| {
+        c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 4, value)
+    }
+    fn glVertexAttribP4uiv(index: GLuint, ty: GLenum, normalized: GLboolean, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexAttribP4uiv(index, ty, normalized, p) },
+            |c, [v]| c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 4, v),
+        )
     }
     fn glVertexAttribDivisor(index: GLuint, divisor: GLuint) => |c| {
         c.gl.vertex_attrib_divisor(index, divisor)

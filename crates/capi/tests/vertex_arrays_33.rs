@@ -48,6 +48,14 @@ const NAMES: &[&str] = &[
     "glDrawElementsInstancedBaseVertex",
     "glMultiDrawElementsBaseVertex",
     "glPrimitiveRestartIndex",
+    "glVertexAttribP1ui",
+    "glVertexAttribP2ui",
+    "glVertexAttribP3ui",
+    "glVertexAttribP4ui",
+    "glVertexAttribP1uiv",
+    "glVertexAttribP2uiv",
+    "glVertexAttribP3uiv",
+    "glVertexAttribP4uiv",
     "glDrawRangeElements",
     "glMultiDrawArrays",
     "glMultiDrawElements",
@@ -352,6 +360,17 @@ fn errors_the_spec_names() {
         assert_eq!(glGetError(), GL_INVALID_VALUE);
         glVertexAttribI4i(1000, 0, 0, 0, 0);
         assert_eq!(glGetError(), GL_INVALID_VALUE);
+        // Packed current values.
+        let word: u32 = 1023 | (1 << 10) | (2 << 20) | (1 << 30);
+        glVertexAttribP4uiv(3, GL_UNSIGNED_INT_2_10_10_10_REV, 0, &word);
+        let mut f = [0f32; 4];
+        glGetVertexAttribfv(3, GL_CURRENT_VERTEX_ATTRIB, f.as_mut_ptr());
+        assert_eq!(f, [1023.0, 1.0, 2.0, 1.0]);
+        glVertexAttribP2ui(3, GL_INT_2_10_10_10_REV, 1, word);
+        glGetVertexAttribfv(3, GL_CURRENT_VERTEX_ATTRIB, f.as_mut_ptr());
+        assert_eq!(f, [-1.0 / 1023.0, 3.0 / 1023.0, 0.0, 1.0]);
+        glVertexAttribP4ui(3, GL_FLOAT, 0, word);
+        assert_eq!(glGetError(), GL_INVALID_ENUM);
         glGenVertexArrays(-1, null_mut());
         assert_eq!(glGetError(), GL_INVALID_VALUE);
         glDeleteVertexArrays(-1, null());

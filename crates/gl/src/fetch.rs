@@ -152,8 +152,9 @@ impl ResolvedAttrib {
         let Some((bytes, base)) = ctx.array_bytes(a) else {
             return ResolvedAttrib::Value(defaults(kind));
         };
-        let cs = crate::vertex::type_size(a.ty).unwrap_or(4);
+        // The component count (or BGRA) as `read_element` takes it.
         let size = a.size.max(1) as usize;
+        let element = crate::vertex::element_size(a.size, a.ty).unwrap_or(16);
         let convert = match (kind, a.integer) {
             (ValueKind::Float, _) => Convert::Float,
             (_, true) => Convert::Bits,
@@ -165,7 +166,7 @@ impl ResolvedAttrib {
             stride: if a.stride > 0 {
                 a.stride as usize
             } else {
-                cs * size
+                element
             },
             size,
             ty: a.ty,

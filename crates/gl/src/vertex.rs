@@ -393,26 +393,104 @@ pub fn read_integer_element(bytes: &[u8], at: usize, size: usize, ty: u32) -> [u
     out
 }
 
-/// Bytes per component of an array type.
+/// Bytes per component of an array type (none for the packed types,
+/// [`element_size`]).
 pub fn type_size(ty: u32) -> Option<usize> {
     Some(match ty {
         GL_BYTE | GL_UNSIGNED_BYTE => 1,
-        GL_SHORT | GL_UNSIGNED_SHORT => 2,
+        GL_SHORT | GL_UNSIGNED_SHORT | GL_HALF_FLOAT => 2,
         GL_INT | GL_UNSIGNED_INT | GL_FLOAT => 4,
         GL_DOUBLE => 8,
         _ => return None,
     })
 }
 
-/// Reads one element of an array: `size` components of `ty` starting at
-/// `at`, normalized per GL 2.1 Table 2.9 when asked, missing components
-/// from (0, 0, 0, 1). Out-of-range reads give the defaults.
+/// Whether `ty` packs a whole element into one 32-bit word (GL 3.3 §2.8:
+/// GL_INT_2_10_10_10_REV, GL_UNSIGNED_INT_2_10_10_10_REV).
+pub fn is_packed(ty: u32) -> bool {
+    matches!(ty, GL_INT_2_10_10_10_REV | GL_UNSIGNED_INT_2_10_10_10_REV)
+}
+
+/// The size a pointer call takes for four components in B, G, R, A
+/// order (GL 3.3 §2.8, ARB_vertex_array_bgra).
+pub const SIZE_BGRA: i32 = GL_BGRA as i32;
+
+/// Bytes of one element of an array of `size` components (or
+/// [`SIZE_BGRA`]) of `ty`.
+pub fn element_size(size: i32, ty: u32) -> Option<usize> {
+    if is_packed(ty) {
+        return Some(4);
+    }
+    let n = if size == SIZE_BGRA {
+        4
+    } else {
+        size.clamp(1, 4) as usize
+    };
+    Some(n * type_size(ty)?)
+}
+
+/// A half float's value (GL 3.3 §2.1.2).
+fn half_to_f32(h: u16) -> f32 {
+    let sign = if h & 0x8000 != 0 { -1.0 } else { 1.0 };
+    let e = ((h >> 10) & 0x1f) as i32;
+    let m = (h & 0x3ff) as f32;
+    sign * match e {
+        0 => m * (2.0f32).powi(-24),
+        31 if m == 0.0 => f32::INFINITY,
+        31 => f32::NAN,
+        _ => (1.0 + m / 1024.0) * (2.0f32).powi(e - 15),
+    }
+}
+
+/// The four fields of a packed 2_10_10_10 word (x in the low bits), as
+/// values (GL 3.3 §2.8, Table 2.7), normalized per §2.1.6 when asked.
+pub fn unpack_2_10_10_10(word: u32, ty: u32, normalized: bool) -> [f32; 4] {
+    let bits = [10u32, 10, 10, 2];
+    let mut out = [0.0; 4];
+    let mut shift = 0;
+    for (o, b) in out.iter_mut().zip(bits) {
+        let field = (word >> shift) & ((1 << b) - 1);
+        shift += b;
+        let max = ((1u32 << b) - 1) as f32;
+        *o = if ty == GL_INT_2_10_10_10_REV {
+            // Sign-extended from b bits.
+            let v = ((field << (32 - b)) as i32 >> (32 - b)) as f32;
+            if normalized {
+                (2.0 * v + 1.0) / max
+            } else {
+                v
+            }
+        } else if normalized {
+            field as f32 / max
+        } else {
+            field as f32
+        };
+    }
+    out
+}
+
+/// Reads one element of an array: `size` components (or
+/// [`SIZE_BGRA`], as usize) of `ty` starting at `at`, normalized per
+/// GL 2.1 Table 2.9 when asked, missing components from (0, 0, 0, 1).
+/// Out-of-range reads give the defaults.
 pub fn read_element(bytes: &[u8], at: usize, size: usize, ty: u32, normalized: bool) -> [f32; 4] {
+    let bgra = size == SIZE_BGRA as usize;
+    if is_packed(ty) {
+        let Some(&[a, b, c, d]) = bytes.get(at..at.saturating_add(4)) else {
+            return [0.0, 0.0, 0.0, 1.0];
+        };
+        let mut v = unpack_2_10_10_10(u32::from_le_bytes([a, b, c, d]), ty, normalized);
+        if bgra {
+            v.swap(0, 2);
+        }
+        return v;
+    }
     let mut out = [0.0, 0.0, 0.0, 1.0];
     let Some(cs) = type_size(ty) else {
         return out;
     };
-    for (c, o) in out.iter_mut().enumerate().take(size.min(4)) {
+    let n = if bgra { 4 } else { size.min(4) };
+    for (c, o) in out.iter_mut().enumerate().take(n) {
         let start = at.saturating_add(c * cs);
         let Some(b) = bytes.get(start..start.saturating_add(cs)) else {
             return [0.0, 0.0, 0.0, 1.0];
@@ -469,8 +547,12 @@ pub fn read_element(bytes: &[u8], at: usize, size: usize, ty: u32, normalized: b
                 }
             }
             GL_FLOAT => f32::from_le_bytes([raw[0], raw[1], raw[2], raw[3]]),
+            GL_HALF_FLOAT => half_to_f32(u16::from_le_bytes([raw[0], raw[1]])),
             _ => f64::from_le_bytes(raw) as f32,
         };
+    }
+    if bgra {
+        out.swap(0, 2);
     }
     out
 }
@@ -495,11 +577,10 @@ impl Context {
                 let Some((bytes, base)) = self.array_bytes(a) else {
                     return [0.0, 0.0, 0.0, 1.0];
                 };
-                let cs = type_size(a.ty).unwrap_or(4);
                 let stride = if a.stride > 0 {
                     a.stride as usize
                 } else {
-                    cs * a.size.max(1) as usize
+                    element_size(a.size, a.ty).unwrap_or(16)
                 };
                 let at = base.saturating_add(stride.saturating_mul(index as usize));
                 read_element(&bytes, at, a.size.max(1) as usize, a.ty, a.normalized)
@@ -734,12 +815,39 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
+        let sizes = [1, 2, 3, 4, SIZE_BGRA];
+        let types = [
+            GL_BYTE,
+            GL_UNSIGNED_BYTE,
+            GL_SHORT,
+            GL_UNSIGNED_SHORT,
+            GL_INT,
+            GL_UNSIGNED_INT,
+            GL_FLOAT,
+            GL_DOUBLE,
+            GL_HALF_FLOAT,
+            GL_INT_2_10_10_10_REV,
+            GL_UNSIGNED_INT_2_10_10_10_REV,
+        ];
+        // GL 3.3 §2.8: BGRA only for unsigned bytes and the packed types,
+        // normalized; the packed types only with four components.
+        let bgra = size == SIZE_BGRA;
+        if sizes.contains(&size)
+            && types.contains(&ty)
+            && stride >= 0
+            && ((bgra && !(ty == GL_UNSIGNED_BYTE || is_packed(ty)))
+                || (is_packed(ty) && !(size == 4 || bgra))
+                || (bgra && !normalized))
+        {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
         self.set_pointer(
             PointerTarget::Generic(index),
             size,
-            &[1, 2, 3, 4],
+            &sizes,
             ty,
-            &ALL_TYPES,
+            &types,
             normalized,
             stride,
             data,
@@ -770,6 +878,26 @@ impl Context {
             stride,
             data,
         );
+    }
+
+    /// glVertexAttribP{1,2,3,4}ui: the first `components` fields of a
+    /// packed 2_10_10_10 word (GL 3.3 §2.7), the others from (0, 0, 0, 1).
+    pub fn vertex_attrib_p(
+        &mut self,
+        index: u32,
+        ty: u32,
+        normalized: bool,
+        components: usize,
+        value: u32,
+    ) {
+        if !is_packed(ty) {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        let mut v = [0.0, 0.0, 0.0, 1.0];
+        let fields = unpack_2_10_10_10(value, ty, normalized);
+        v[..components.min(4)].copy_from_slice(&fields[..components.min(4)]);
+        self.vertex_attrib_4f(index, v[0], v[1], v[2], v[3]);
     }
 
     /// glVertexAttribDivisor (GL 3.3 §2.8.2).
@@ -1156,6 +1284,87 @@ mod tests {
         ctx.vertex_pointer(4, GL_UNSIGNED_BYTE, 0, ArrayData::Offset(0));
         assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
         ctx.enable_client_state(GL_LIGHTING);
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    }
+
+    #[test]
+    fn half_packed_and_bgra_elements() {
+        // 1.0, -2.0, 0.5 as half floats; a subnormal; infinity.
+        let halves: Vec<u8> = [0x3c00u16, 0xc000, 0x3800, 0x0001, 0x7c00]
+            .iter()
+            .flat_map(|h| h.to_le_bytes())
+            .collect();
+        assert_eq!(
+            read_element(&halves, 0, 3, GL_HALF_FLOAT, false),
+            [1.0, -2.0, 0.5, 1.0]
+        );
+        assert_eq!(
+            read_element(&halves, 6, 2, GL_HALF_FLOAT, false),
+            [2.0f32.powi(-24), f32::INFINITY, 0.0, 1.0]
+        );
+        // x = 1023, y = -512 (signed), z = 5, w = 3 / -1.
+        let word: u32 = 1023 | (512 << 10) | (5 << 20) | (3 << 30);
+        let b = word.to_le_bytes();
+        assert_eq!(
+            read_element(&b, 0, 4, GL_UNSIGNED_INT_2_10_10_10_REV, false),
+            [1023.0, 512.0, 5.0, 3.0]
+        );
+        assert_eq!(
+            read_element(&b, 0, 4, GL_INT_2_10_10_10_REV, false),
+            [-1.0, -512.0, 5.0, -1.0]
+        );
+        assert_eq!(
+            read_element(&b, 0, 4, GL_UNSIGNED_INT_2_10_10_10_REV, true),
+            [1.0, 512.0 / 1023.0, 5.0 / 1023.0, 1.0]
+        );
+        // Signed normalization (2c + 1) / (2^b - 1): -512 gives -1.
+        assert_eq!(read_element(&b, 0, 4, GL_INT_2_10_10_10_REV, true)[1], -1.0);
+        assert_eq!(
+            read_element(
+                &b,
+                0,
+                SIZE_BGRA as usize,
+                GL_UNSIGNED_INT_2_10_10_10_REV,
+                false
+            ),
+            [5.0, 512.0, 1023.0, 3.0]
+        );
+        assert_eq!(
+            read_element(
+                &[255, 0, 51, 255],
+                0,
+                SIZE_BGRA as usize,
+                GL_UNSIGNED_BYTE,
+                true
+            ),
+            [0.2, 0.0, 1.0, 1.0]
+        );
+        assert_eq!(element_size(SIZE_BGRA, GL_UNSIGNED_BYTE), Some(4));
+        assert_eq!(element_size(4, GL_INT_2_10_10_10_REV), Some(4));
+        assert_eq!(element_size(3, GL_HALF_FLOAT), Some(6));
+    }
+
+    #[test]
+    fn bgra_and_packed_pointer_rules() {
+        let mut ctx = Context::new(4, 4);
+        let d = || ArrayData::Offset(0);
+        ctx.vertex_attrib_pointer(1, SIZE_BGRA, GL_UNSIGNED_BYTE, true, 0, d());
+        ctx.vertex_attrib_pointer(1, 4, GL_INT_2_10_10_10_REV, true, 0, d());
+        ctx.vertex_attrib_pointer(1, 3, GL_HALF_FLOAT, false, 0, d());
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        ctx.vertex_attrib_pointer(1, SIZE_BGRA, GL_UNSIGNED_BYTE, false, 0, d());
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.vertex_attrib_pointer(1, SIZE_BGRA, GL_FLOAT, true, 0, d());
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.vertex_attrib_pointer(1, 3, GL_UNSIGNED_INT_2_10_10_10_REV, true, 0, d());
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.vertex_attrib_i_pointer(1, 4, GL_INT_2_10_10_10_REV, 0, d());
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+        ctx.vertex_attrib_i_pointer(1, SIZE_BGRA, GL_UNSIGNED_BYTE, 0, d());
+        assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+        ctx.vertex_attrib_p(2, GL_UNSIGNED_INT_2_10_10_10_REV, false, 3, 7 | (3 << 30));
+        assert_eq!(ctx.get_current_vertex_attrib(2), [7.0, 0.0, 0.0, 1.0]);
+        ctx.vertex_attrib_p(2, GL_FLOAT, false, 4, 0);
         assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
     }
 

@@ -582,3 +582,70 @@ fn instanced_restart_strips_equal_separate_draws() {
         assert!(row(22)[4] != [0; 4] && row(22)[4] != row(1)[4]);
     }
 }
+
+/// GL 3.0-3.3 vertex formats in a draw: half-float positions, a BGRA
+/// colour array, packed 2_10_10_10 values.
+#[test]
+fn half_float_bgra_and_packed_arrays_draw() {
+    let vs = "#version 130\n\
+        in vec2 pos;\n\
+        in vec4 col;\n\
+        in vec4 words;\n\
+        flat out vec4 c;\n\
+        void main() { gl_Position = vec4(pos, 0.0, 1.0); c = col * vec4(words.xyz, 1.0); }";
+    let fs = "#version 130\n\
+        flat in vec4 c;\n\
+        out vec4 color;\n\
+        void main() { color = c; }";
+    let mut ctx = Context::new(4, 4);
+    let p = program(&mut ctx, vs, fs);
+    let (pos, col, packed) = (
+        attrib(&mut ctx, p, "pos"),
+        attrib(&mut ctx, p, "col"),
+        attrib(&mut ctx, p, "words"),
+    );
+    // -1.0 and 1.0 as half floats.
+    let halves: Vec<u16> = [
+        0xbc00u16, 0xbc00, 0x3c00, 0xbc00, 0xbc00, 0x3c00, 0x3c00, 0x3c00,
+    ]
+    .to_vec();
+    ctx.vertex_attrib_pointer(
+        pos,
+        2,
+        GL_HALF_FLOAT,
+        false,
+        0,
+        ArrayData::from_u16(&halves),
+    );
+    ctx.enable_vertex_attrib_array(pos);
+    let bgra: Vec<u8> = [255u8, 0, 51, 255].repeat(4);
+    ctx.vertex_attrib_pointer(
+        col,
+        gl::vertex::SIZE_BGRA,
+        GL_UNSIGNED_BYTE,
+        true,
+        0,
+        ArrayData::from_bytes(&bgra),
+    );
+    ctx.enable_vertex_attrib_array(col);
+    // x = 1023 (1.0), y = 511 (0.5), z = 1023, normalized unsigned.
+    let word: u32 = 1023 | (511 << 10) | (1023 << 20);
+    ctx.vertex_attrib_pointer(
+        packed,
+        4,
+        GL_UNSIGNED_INT_2_10_10_10_REV,
+        true,
+        0,
+        ArrayData::from_u32(&[word; 4]),
+    );
+    ctx.enable_vertex_attrib_array(packed);
+    clear(&mut ctx);
+    ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(ctx.take_draw_error(), None);
+    assert_eq!(pixel(&mut ctx, 1, 1), [51, 0, 255, 255]);
+    assert_eq!(
+        ctx.get_vertex_attrib_array(col, GL_VERTEX_ATTRIB_ARRAY_SIZE),
+        Some(GL_BGRA as i64)
+    );
+}
