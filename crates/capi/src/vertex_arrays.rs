@@ -68,6 +68,16 @@ fn vertex_attrib_integer(
     }
 }
 
+/// A packed 2_10_10_10 word's four values (GL 3.3 §2.7), or
+/// GL_INVALID_ENUM for another type.
+fn packed(c: &mut OsContext, ty: GLenum, value: GLuint, normalized: bool) -> Option<[f32; 4]> {
+    if !gl::vertex::is_packed(ty) {
+        c.gl.record_error(GL_INVALID_ENUM);
+        return None;
+    }
+    Some(gl::vertex::unpack_2_10_10_10(value, ty, normalized))
+}
+
 gl_entry_points! {
     // ---- client state ----
     fn glEnableClientState(cap: GLenum) => |c| { c.gl.enable_client_state(cap) }
@@ -125,6 +135,263 @@ gl_entry_points! {
         c.arrays.set_pointer(&mut c.gl, src, pointer as *const u8, |g, d| {
             g.vertex_attrib_i_pointer(index, size, ty, stride, d)
         });
+    }
+    // ---- packed current values of the fixed-function attributes
+    // (GL 3.3 compatibility §2.7; normals and colours normalized) ----
+    [list] fn glVertexP2ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.vertex_4f(v[0], v[1], 0.0, 1.0)
+        }
+    }
+    fn glVertexP2uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexP2uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.vertex_4f(v[0], v[1], 0.0, 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glVertexP3ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.vertex_4f(v[0], v[1], v[2], 1.0)
+        }
+    }
+    fn glVertexP3uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexP3uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.vertex_4f(v[0], v[1], v[2], 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glVertexP4ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.vertex_4f(v[0], v[1], v[2], v[3])
+        }
+    }
+    fn glVertexP4uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexP4uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.vertex_4f(v[0], v[1], v[2], v[3])
+                }
+            },
+        )
+    }
+    [list] fn glTexCoordP1ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.tex_coord_4f(v[0], 0.0, 0.0, 1.0)
+        }
+    }
+    fn glTexCoordP1uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glTexCoordP1uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.tex_coord_4f(v[0], 0.0, 0.0, 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glTexCoordP2ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.tex_coord_4f(v[0], v[1], 0.0, 1.0)
+        }
+    }
+    fn glTexCoordP2uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glTexCoordP2uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.tex_coord_4f(v[0], v[1], 0.0, 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glTexCoordP3ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.tex_coord_4f(v[0], v[1], v[2], 1.0)
+        }
+    }
+    fn glTexCoordP3uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glTexCoordP3uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.tex_coord_4f(v[0], v[1], v[2], 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glTexCoordP4ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.tex_coord_4f(v[0], v[1], v[2], v[3])
+        }
+    }
+    fn glTexCoordP4uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glTexCoordP4uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.tex_coord_4f(v[0], v[1], v[2], v[3])
+                }
+            },
+        )
+    }
+    [list] fn glMultiTexCoordP1ui(texture: GLenum, ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.multi_tex_coord_4f(texture, v[0], 0.0, 0.0, 1.0)
+        }
+    }
+    fn glMultiTexCoordP1uiv(texture: GLenum, ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glMultiTexCoordP1uiv(texture, ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.multi_tex_coord_4f(texture, v[0], 0.0, 0.0, 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glMultiTexCoordP2ui(texture: GLenum, ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.multi_tex_coord_4f(texture, v[0], v[1], 0.0, 1.0)
+        }
+    }
+    fn glMultiTexCoordP2uiv(texture: GLenum, ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glMultiTexCoordP2uiv(texture, ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.multi_tex_coord_4f(texture, v[0], v[1], 0.0, 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glMultiTexCoordP3ui(texture: GLenum, ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.multi_tex_coord_4f(texture, v[0], v[1], v[2], 1.0)
+        }
+    }
+    fn glMultiTexCoordP3uiv(texture: GLenum, ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glMultiTexCoordP3uiv(texture, ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.multi_tex_coord_4f(texture, v[0], v[1], v[2], 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glMultiTexCoordP4ui(texture: GLenum, ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.multi_tex_coord_4f(texture, v[0], v[1], v[2], v[3])
+        }
+    }
+    fn glMultiTexCoordP4uiv(texture: GLenum, ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glMultiTexCoordP4uiv(texture, ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.multi_tex_coord_4f(texture, v[0], v[1], v[2], v[3])
+                }
+            },
+        )
+    }
+    [list] fn glNormalP3ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, true) {
+            c.gl.normal_3f(v[0], v[1], v[2])
+        }
+    }
+    fn glNormalP3uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glNormalP3uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, true) {
+                    c.gl.normal_3f(v[0], v[1], v[2])
+                }
+            },
+        )
+    }
+    [list] fn glColorP3ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, true) {
+            c.gl.color_4f(v[0], v[1], v[2], 1.0)
+        }
+    }
+    fn glColorP3uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glColorP3uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, true) {
+                    c.gl.color_4f(v[0], v[1], v[2], 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glColorP4ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, true) {
+            c.gl.color_4f(v[0], v[1], v[2], v[3])
+        }
+    }
+    fn glColorP4uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glColorP4uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, true) {
+                    c.gl.color_4f(v[0], v[1], v[2], v[3])
+                }
+            },
+        )
+    }
+    [list] fn glSecondaryColorP3ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, true) {
+            c.gl.secondary_color_3f(v[0], v[1], v[2])
+        }
+    }
+    fn glSecondaryColorP3uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glSecondaryColorP3uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, true) {
+                    c.gl.secondary_color_3f(v[0], v[1], v[2])
+                }
+            },
+        )
     }
     // ---- packed current values (GL 3.3 §2.7) ----
     [list] fn glVertexAttribP1ui(index: GLuint, ty: GLenum, normalized: GLboolean, value: GLuint) => |c| {

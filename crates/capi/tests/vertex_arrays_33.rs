@@ -56,6 +56,36 @@ const NAMES: &[&str] = &[
     "glVertexAttribP2uiv",
     "glVertexAttribP3uiv",
     "glVertexAttribP4uiv",
+    "glVertexP2ui",
+    "glVertexP2uiv",
+    "glVertexP3ui",
+    "glVertexP3uiv",
+    "glVertexP4ui",
+    "glVertexP4uiv",
+    "glTexCoordP1ui",
+    "glTexCoordP1uiv",
+    "glTexCoordP2ui",
+    "glTexCoordP2uiv",
+    "glTexCoordP3ui",
+    "glTexCoordP3uiv",
+    "glTexCoordP4ui",
+    "glTexCoordP4uiv",
+    "glMultiTexCoordP1ui",
+    "glMultiTexCoordP1uiv",
+    "glMultiTexCoordP2ui",
+    "glMultiTexCoordP2uiv",
+    "glMultiTexCoordP3ui",
+    "glMultiTexCoordP3uiv",
+    "glMultiTexCoordP4ui",
+    "glMultiTexCoordP4uiv",
+    "glNormalP3ui",
+    "glNormalP3uiv",
+    "glColorP3ui",
+    "glColorP3uiv",
+    "glColorP4ui",
+    "glColorP4uiv",
+    "glSecondaryColorP3ui",
+    "glSecondaryColorP3uiv",
     "glDrawRangeElements",
     "glMultiDrawArrays",
     "glMultiDrawElements",
@@ -370,6 +400,16 @@ fn errors_the_spec_names() {
         glGetVertexAttribfv(3, GL_CURRENT_VERTEX_ATTRIB, f.as_mut_ptr());
         assert_eq!(f, [-1.0 / 1023.0, 3.0 / 1023.0, 0.0, 1.0]);
         glVertexAttribP4ui(3, GL_FLOAT, 0, word);
+        assert_eq!(glGetError(), GL_INVALID_ENUM);
+        // The fixed-function attributes: colours normalized.
+        glColorP4ui(GL_UNSIGNED_INT_2_10_10_10_REV, 1023 | (3 << 30));
+        glGetFloatv(GL_CURRENT_COLOR, f.as_mut_ptr());
+        assert_eq!(f, [1.0, 0.0, 0.0, 1.0]);
+        glMultiTexCoordP2uiv(GL_TEXTURE1, GL_INT_2_10_10_10_REV, &word);
+        glActiveTexture(GL_TEXTURE1);
+        glGetFloatv(GL_CURRENT_TEXTURE_COORDS, f.as_mut_ptr());
+        assert_eq!(f, [-1.0, 1.0, 0.0, 1.0]);
+        glNormalP3ui(GL_FLOAT, 0);
         assert_eq!(glGetError(), GL_INVALID_ENUM);
         glGenVertexArrays(-1, null_mut());
         assert_eq!(glGetError(), GL_INVALID_VALUE);
