@@ -369,8 +369,11 @@ impl raster::VertexFetch for Fetcher<'_> {
             _ => {}
         }
         if self.immediate.is_none() {
-            if let Some(r) = self.resolved_column(input_slot, column) {
-                *out = r.read(index, instance);
+            match self.resolved_column(input_slot, column) {
+                Some(r) => *out = r.read(index, instance),
+                // No source: the defaults, as integers for an integer
+                // input (`out` starts as float ones).
+                None => *out = defaults(kind),
             }
             return;
         }
