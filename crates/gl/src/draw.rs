@@ -210,17 +210,25 @@ impl Context {
                 .filter(move |&&i| Some(i) != restart)
                 .map(move |&i| i.wrapping_add(base))
         };
-        let (Some(lo), Some(hi)) = (vertices().min(), vertices().max()) else {
-            return;
+        // (The index range only for several instances: a single draw
+        // does not pay the passes.)
+        let range = match instances {
+            0 => return,
+            1 => None,
+            _ => match (vertices().min(), vertices().max()) {
+                (Some(lo), Some(hi)) => Some((lo, hi)),
+                _ => return,
+            },
         };
-        let stride = (hi - lo) as u64 + 1;
         let per_instance = list.len() as u64 + 1;
         // Virtual vertex numbers stay below the separator (u32::MAX); a
         // batch's list stays below 2^22 indices.
-        let batch = ((u32::MAX as u64 - 1) / stride)
-            .min((1 << 22) / per_instance)
-            .min(instances as u64) as u32;
-        if instances == 1 || batch < 2 {
+        let batch = range.map_or(0, |(lo, hi)| {
+            ((u32::MAX as u64 - 1) / ((hi - lo) as u64 + 1))
+                .min((1 << 22) / per_instance)
+                .min(instances as u64) as u32
+        });
+        let Some((lo, hi)) = range.filter(|_| batch >= 2) else {
             for instance in 0..instances {
                 let one = InstanceBatch::one(instance);
                 match restart {
@@ -236,9 +244,9 @@ impl Context {
                 }
             }
             return;
-        }
+        };
         const SEPARATOR: u32 = u32::MAX;
-        let stride = stride as u32;
+        let stride = hi - lo + 1;
         let mut first = 0u32;
         while first < instances {
             let n = batch.min(instances - first);
