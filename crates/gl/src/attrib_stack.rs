@@ -39,6 +39,8 @@ pub(crate) struct ClientAttribs {
     arrays: VaoArrays,
     client_active_texture: u32,
     array_buffer: u32,
+    /// Primitive restart: enabled, and the index.
+    restart: (bool, u32),
     pack_alignment: i32,
     unpack_alignment: i32,
     pack_buffer: u32,
@@ -120,7 +122,12 @@ impl Context {
         let st = &mut self.st;
         // Enables: every cap of a restored group (all for GL_ENABLE_BIT).
         let restored =
-            |cap: u32| has(GL_ENABLE_BIT) || (cap_group(cap) != 0 && has(cap_group(cap)));
+            // Primitive restart is vertex-array state (GL 3.3
+            // compatibility Table 6.8): glPopClientAttrib's.
+            |cap: u32| {
+                cap != GL_PRIMITIVE_RESTART
+                    && (has(GL_ENABLE_BIT) || (cap_group(cap) != 0 && has(cap_group(cap))))
+            };
         st.enabled.retain(|&(cap, _)| !restored(cap));
         st.enabled
             .extend(old.enabled.iter().filter(|&&(cap, _)| restored(cap)));
@@ -237,6 +244,7 @@ impl Context {
             arrays: va.arrays_copy(),
             client_active_texture: va.client_active_texture,
             array_buffer: va.array_buffer,
+            restart: (self.st.is_on(GL_PRIMITIVE_RESTART), va.restart_index),
             pack_alignment: self.st.pack_alignment,
             unpack_alignment: self.st.unpack_alignment,
             pack_buffer: self.objects.pack_buffer,
@@ -275,6 +283,13 @@ impl Context {
             }
             self.va.client_active_texture = s.client_active_texture;
             self.va.array_buffer = live(s.array_buffer, &self.objects.buffers);
+            let (restart, index) = s.restart;
+            if restart {
+                self.st.enabled.insert((GL_PRIMITIVE_RESTART, 0));
+            } else {
+                self.st.enabled.remove(&(GL_PRIMITIVE_RESTART, 0));
+            }
+            self.va.restart_index = index;
         }
         Some(s.mask)
     }
@@ -327,6 +342,16 @@ mod tests {
         ctx.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
         assert_eq!(ctx.pop_client_attrib(), Some(GL_CLIENT_ALL_ATTRIB_BITS));
         assert!(!ctx.vertex_state().vertex_array.enabled);
+        // Primitive restart is client vertex-array state.
+        ctx.push_attrib(GL_ALL_ATTRIB_BITS);
+        ctx.push_client_attrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+        ctx.enable(GL_PRIMITIVE_RESTART);
+        ctx.primitive_restart_index(9);
+        ctx.pop_attrib();
+        assert!(ctx.is_enabled(GL_PRIMITIVE_RESTART));
+        ctx.pop_client_attrib();
+        assert!(!ctx.is_enabled(GL_PRIMITIVE_RESTART));
+        assert_eq!(ctx.get_integerv(GL_PRIMITIVE_RESTART_INDEX), vec![0]);
         assert_eq!(ctx.get_integerv(GL_UNPACK_ALIGNMENT), vec![4]);
         assert_eq!(ctx.pop_client_attrib(), None);
         assert_eq!(ctx.get_error(), GL_STACK_UNDERFLOW);
