@@ -11,7 +11,7 @@
 //! arrays, so memory the GL contract does not cover (disabled arrays,
 //! vertices outside the draw) is never touched.
 
-use gl::vertex::{type_size, ArrayState, AttribSource, VertexState};
+use gl::vertex::{element_size, ArrayState, AttribSource, VertexState};
 use gl::ArrayData;
 use std::collections::BTreeMap;
 use std::sync::Arc;
@@ -52,7 +52,9 @@ impl ClientArrays {
     /// buffer object.
     pub fn pointer_value(&self, va: &VertexState, src: AttribSource) -> usize {
         match array_state(va, src) {
-            Some(a) if a.buffer != 0 => match a.data {
+            // The pointers kept are the default object's; another object's
+            // arrays are offsets (null, or into their buffers).
+            Some(a) if a.buffer != 0 || va.vao != 0 => match a.data {
                 gl::ArrayData::Offset(o) => o,
                 _ => 0,
             },
@@ -72,6 +74,13 @@ impl ClientArrays {
         ptr: *const u8,
         call: impl FnOnce(&mut gl::Context, ArrayData),
     ) {
+        // A vertex array object other than the default one holds no
+        // client memory (the context refuses a non-null pointer with no
+        // buffer bound): the pointers kept are the default object's.
+        if gl.vertex_array_binding() != 0 {
+            call(gl, ArrayData::Offset(ptr as usize));
+            return;
+        }
         if gl.vertex_state().array_buffer != 0 {
             call(gl, ArrayData::Offset(ptr as usize));
             if let Some(a) = array_state(gl.vertex_state(), src) {
@@ -99,6 +108,9 @@ impl ClientArrays {
     /// Whether a draw reads an enabled array from client memory (then
     /// [`ClientArrays::prepare`] has vertices to copy).
     pub fn reads_client_memory(&self, gl: &gl::Context) -> bool {
+        if gl.vertex_array_binding() != 0 {
+            return false;
+        }
         self.pointers.keys().any(|&src| {
             array_state(gl.vertex_state(), src).is_some_and(|a| a.enabled && a.buffer == 0)
         })
@@ -107,6 +119,16 @@ impl ClientArrays {
     /// Before a draw reading vertices `lo..=hi`: copies those vertices of
     /// every enabled client array into the context.
     pub fn prepare(&self, gl: &mut gl::Context, lo: u32, hi: u32) {
+        self.prepare_instanced(gl, lo, hi, 1);
+    }
+
+    /// [`ClientArrays::prepare`] for `instances` instances: an instanced
+    /// array (divisor d) is read at elements 0..=(instances - 1) / d
+    /// instead of the vertices.
+    pub fn prepare_instanced(&self, gl: &mut gl::Context, lo: u32, hi: u32, instances: u32) {
+        if gl.vertex_array_binding() != 0 {
+            return;
+        }
         for (&src, &ptr) in &self.pointers {
             let Some(a) = array_state(gl.vertex_state(), src) else {
                 continue;
@@ -114,6 +136,10 @@ impl ClientArrays {
             if !a.enabled || a.buffer != 0 {
                 continue;
             }
+            let (lo, hi) = match a.divisor {
+                0 => (lo, hi),
+                d => (0, instances.saturating_sub(1) / d),
+            };
             let Some(bytes) = copy_range(ptr as *const u8, a, lo, hi) else {
                 gl.record_error(gl::enums::GL_OUT_OF_MEMORY);
                 continue;
@@ -126,7 +152,7 @@ impl ClientArrays {
 /// The bytes of vertices `lo..=hi` of array `a` at `ptr`, at their offsets
 /// from `ptr` (bytes before vertex `lo` are zero, never read).
 fn copy_range(ptr: *const u8, a: &ArrayState, lo: u32, hi: u32) -> Option<Vec<u8>> {
-    let elem = (a.size.max(0) as usize).checked_mul(type_size(a.ty)?)?;
+    let elem = element_size(a.size, a.ty)?;
     let stride = if a.stride > 0 {
         a.stride as usize
     } else {
@@ -160,6 +186,8 @@ mod tests {
             stride: 8,
             buffer: 0,
             data: ArrayData::default(),
+            integer: false,
+            divisor: 0,
         };
         let v = copy_range(data.as_ptr(), &a, 2, 3).unwrap();
         assert_eq!(v.len(), 3 * 8 + 2);

@@ -1,6 +1,8 @@
-//! Drawing (GL 2.1 §2.6, §2.8): glBegin / glEnd, the vertex-array draws
-//! (glDrawArrays, glDrawElements, glDrawRangeElements, glMultiDraw*,
-//! glArrayElement), and their compilation into display lists, which
+//! Drawing (GL 2.1 §2.6, §2.8; GL 3.3 §2.8.1-2.8.3): glBegin / glEnd,
+//! the vertex-array draws (glDrawArrays, glDrawElements,
+//! glDrawRangeElements, glMultiDraw*, the instanced and base-vertex
+//! forms, glPrimitiveRestartIndex, glArrayElement), and their
+//! compilation into display lists (not the instanced ones), which
 //! dereferences the arrays when the list is compiled (§5.4). A draw copies
 //! the client-memory vertices it reads first ([`crate::arrays`]), and one
 //! that would read a mapped buffer raises GL_INVALID_OPERATION (§2.9).
@@ -80,13 +82,68 @@ pub(crate) unsafe fn prepare_elements(
     ty: GLenum,
     indices: *const c_void,
 ) -> ArrayData {
+    // SAFETY: the caller's.
+    unsafe { prepare_elements_with(c, (count, ty, indices), 0, 1) }
+}
+
+/// [`prepare_elements`] for a base-vertex or instanced draw: the vertices
+/// are the indices plus `basevertex` (primitive-restart indices are no
+/// vertex), the instanced arrays' elements those `instances` read.
+pub(crate) unsafe fn prepare_elements_with(
+    c: &mut OsContext,
+    (count, ty, indices): (GLsizei, GLenum, *const c_void),
+    basevertex: GLint,
+    instances: GLsizei,
+) -> ArrayData {
     let read = c.arrays.reads_client_memory(&c.gl);
     // SAFETY: the caller's.
     let (data, idx) = unsafe { element_source(c, count, ty, indices, read) };
-    if let (Some(lo), Some(hi)) = (idx.iter().min(), idx.iter().max()) {
-        c.arrays.prepare(&mut c.gl, *lo, *hi);
+    let restart = c.gl.primitive_restart();
+    let vertices = idx
+        .iter()
+        .filter(|&&i| Some(i) != restart)
+        .map(|&i| i.wrapping_add(basevertex as u32));
+    let (lo, hi) = vertices.fold((u32::MAX, None), |(lo, hi), i| {
+        (lo.min(i), Some(hi.map_or(i, |h: u32| h.max(i))))
+    });
+    if let Some(hi) = hi {
+        c.arrays
+            .prepare_instanced(&mut c.gl, lo, hi, instances.max(0) as u32);
     }
     data
+}
+
+/// glDrawElementsInstancedBaseVertex (glDrawElementsInstanced with
+/// `basevertex` 0).
+unsafe fn draw_elements_instanced(
+    c: &mut OsContext,
+    mode: GLenum,
+    elements: (GLsizei, GLenum, *const c_void),
+    instances: GLsizei,
+    basevertex: GLint,
+) {
+    if refuse_in_list(c) {
+        return;
+    }
+    if crate::buffers::sources_mapped(c, true) && !c.gl.in_begin_end() {
+        c.gl.record_error(GL_INVALID_OPERATION);
+        return;
+    }
+    // SAFETY: the caller's (GL's contract for the index pointer).
+    let data = unsafe { prepare_elements_with(c, elements, basevertex, instances) };
+    let (count, ty, _) = elements;
+    c.gl.draw_elements_instanced_base_vertex(mode, count, ty, data, instances, basevertex);
+    c.dirty = true;
+}
+
+/// The instanced draws are not compiled into display lists: compiling
+/// one is GL_INVALID_OPERATION and it does not execute (as Mesa does).
+fn refuse_in_list(c: &mut OsContext) -> bool {
+    if c.compiling() {
+        c.gl.record_error(GL_INVALID_OPERATION);
+        return true;
+    }
+    false
 }
 
 /// The attribute values array element `i` gives, position last (None for
@@ -178,6 +235,22 @@ pub(crate) fn array_indices(first: GLint, count: GLsizei) -> Result<Vec<u32>, u3
     }
     let n = (count as usize).min(MAX_COMPILED_ELEMENTS + 1) as u32;
     Ok((0..n).map(|i| (first as u32).saturating_add(i)).collect())
+}
+
+/// The indices glDrawElementsBaseVertex draws, or its error.
+pub(crate) unsafe fn compiled_base_vertex_indices(
+    c: &mut OsContext,
+    count: GLsizei,
+    ty: GLenum,
+    indices: *const c_void,
+    basevertex: GLint,
+) -> Result<Vec<u32>, u32> {
+    // SAFETY: the caller's.
+    let idx = unsafe { compiled_element_indices(c, count, ty, indices) }?;
+    Ok(idx
+        .into_iter()
+        .map(|i| i.wrapping_add(basevertex as u32))
+        .collect())
 }
 
 /// The indices glDrawElements(count, ty, indices) draws, or its error.
@@ -325,6 +398,115 @@ gl_entry_points! {
         }
         c.dirty = true;
     }
+    // ---- GL 3.1-3.3 draws ----
+    fn glDrawArraysInstanced(mode: GLenum, first: GLint, count: GLsizei, instances: GLsizei) => |c| {
+        if refuse_in_list(c) {
+            return;
+        }
+        if crate::buffers::sources_mapped(c, false) && !c.gl.in_begin_end() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        if first >= 0 && count > 0 {
+            let last = (first as i64 + count.min(1 << 24) as i64 - 1).min(u32::MAX as i64);
+            c.arrays
+                .prepare_instanced(&mut c.gl, first as u32, last as u32, instances.max(0) as u32);
+        }
+        c.gl.draw_arrays_instanced(mode, first, count, instances);
+        c.dirty = true;
+    }
+    fn glDrawElementsInstanced(
+        mode: GLenum, count: GLsizei, ty: GLenum, indices: *const c_void, instances: GLsizei
+    ) => |c| {
+        draw_elements_instanced(c, mode, (count, ty, indices), instances, 0);
+    }
+    fn glDrawElementsInstancedBaseVertex(
+        mode: GLenum, count: GLsizei, ty: GLenum, indices: *const c_void, instances: GLsizei,
+        basevertex: GLint
+    ) => |c| {
+        draw_elements_instanced(c, mode, (count, ty, indices), instances, basevertex);
+    }
+    fn glDrawElementsBaseVertex(
+        mode: GLenum, count: GLsizei, ty: GLenum, indices: *const c_void, basevertex: GLint
+    ) => |c| {
+        if c.compiling() {
+            let idx = compiled_base_vertex_indices(c, count, ty, indices, basevertex);
+            if compile_draw(c, mode, idx) {
+                return;
+            }
+        }
+        if crate::buffers::sources_mapped(c, true) && !c.gl.in_begin_end() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        let data = prepare_elements_with(c, (count, ty, indices), basevertex, 1);
+        c.gl.draw_elements_base_vertex(mode, count, ty, data, basevertex);
+        c.dirty = true;
+    }
+    fn glDrawRangeElementsBaseVertex(
+        mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, ty: GLenum,
+        indices: *const c_void, basevertex: GLint
+    ) => |c| {
+        if c.compiling() {
+            let idx = if end < start {
+                Err(GL_INVALID_VALUE)
+            } else {
+                compiled_base_vertex_indices(c, count, ty, indices, basevertex)
+            };
+            if compile_draw(c, mode, idx) {
+                return;
+            }
+        }
+        if end < start {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        if crate::buffers::sources_mapped(c, true) && !c.gl.in_begin_end() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        let data = prepare_elements_with(c, (count, ty, indices), basevertex, 1);
+        c.gl
+            .draw_range_elements_base_vertex(mode, start, end, count, ty, data, basevertex);
+        c.dirty = true;
+    }
+    fn glMultiDrawElementsBaseVertex(
+        mode: GLenum, count: *const GLsizei, ty: GLenum, indices: *const *const c_void,
+        primcount: GLsizei, basevertex: *const GLint
+    ) => |c| {
+        if primcount < 0 {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let counts = rd_vec(count, primcount as i64);
+        let ptrs = rd_vec(indices, primcount as i64);
+        let bases = rd_vec(basevertex, primcount as i64);
+        if c.compiling() {
+            let mut skip = false;
+            for ((&k, &p), &b) in counts.iter().zip(&ptrs).zip(&bases) {
+                let idx = compiled_base_vertex_indices(c, k, ty, p, b);
+                skip = compile_draw(c, mode, idx);
+            }
+            if skip || primcount == 0 {
+                return;
+            }
+        }
+        if crate::buffers::sources_mapped(c, true) && !c.gl.in_begin_end() {
+            c.gl.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        if counts.iter().any(|&k| k < 0) {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        for ((&k, &p), &b) in counts.iter().zip(&ptrs).zip(&bases) {
+            let data = prepare_elements_with(c, (k, ty, p), b, 1);
+            c.gl.draw_elements_base_vertex(mode, k, ty, data, b);
+        }
+        c.dirty = true;
+    }
+    fn glPrimitiveRestartIndex(index: GLuint) => |c| { c.gl.primitive_restart_index(index) }
+
     fn glArrayElement(i: GLint) => |c| {
         if i < 0 {
             // Undefined by GL 2.1; nothing is fetched.

@@ -1,12 +1,14 @@
 //! Vertex array specification and its queries (GL 2.1 §2.8, §6.1.12,
-//! §6.1.14): enabling arrays, the gl*Pointer calls (client pointers are
+//! §6.1.14; GL 3.3 §2.8, §2.10): vertex array objects, enabling arrays,
+//! the gl*Pointer calls (glVertexAttribIPointer, glVertexAttribDivisor
+//! among them; client pointers are
 //! kept by [`crate::arrays`], the data copied at draw time),
 //! glInterleavedArrays, and glGetVertexAttrib*v / glGetPointerv. Array
 //! state is client state: none of these is compiled into display lists.
 //! Drawing from the arrays is [`crate::drawing`].
 
 use crate::abi::*;
-use crate::context::{guard, with_ctx, OsContext};
+use crate::context::{guard, record_call, vector_call, with_ctx, OsContext};
 use gl::enums::*;
 use gl::vertex::AttribSource;
 use std::ffi::c_void;
@@ -22,7 +24,9 @@ fn generic(c: &mut OsContext, index: GLuint) -> Option<gl::ArrayState> {
     }
 }
 
-/// glGetVertexAttrib{i,f,d}v as doubles (GL 2.1 §6.1.12).
+/// glGetVertexAttrib{i,f,d}v as doubles (GL 2.1 §6.1.12; GL 3.3 adds
+/// GL_VERTEX_ATTRIB_ARRAY_INTEGER and _DIVISOR): the bound vertex array
+/// object's state, or the current value.
 fn vertex_attrib(c: &mut OsContext, index: GLuint, pname: GLenum) -> Vec<f64> {
     if c.gl.reject_in_begin() {
         return Vec::new();
@@ -35,22 +39,43 @@ fn vertex_attrib(c: &mut OsContext, index: GLuint, pname: GLenum) -> Vec<f64> {
             .map(|&x| x as f64)
             .collect();
     }
-    let Some(a) = generic(c, index) else {
+    match c.gl.get_vertex_attrib_array(index, pname) {
+        Some(v) => vec![v as f64],
+        None => Vec::new(),
+    }
+}
+
+/// glGetVertexAttribI{i,ui}v: the current value's integers, or the
+/// array state as for glGetVertexAttribiv.
+fn vertex_attrib_integer(
+    c: &mut OsContext,
+    index: GLuint,
+    pname: GLenum,
+    unsigned: bool,
+) -> Vec<u32> {
+    if c.gl.reject_in_begin() {
         return Vec::new();
-    };
-    let v = match pname {
-        GL_VERTEX_ATTRIB_ARRAY_ENABLED => a.enabled as i64,
-        GL_VERTEX_ATTRIB_ARRAY_SIZE => a.size as i64,
-        GL_VERTEX_ATTRIB_ARRAY_STRIDE => a.stride as i64,
-        GL_VERTEX_ATTRIB_ARRAY_TYPE => a.ty as i64,
-        GL_VERTEX_ATTRIB_ARRAY_NORMALIZED => a.normalized as i64,
-        GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING => a.buffer as i64,
-        _ => {
-            c.gl.record_error(GL_INVALID_ENUM);
-            return Vec::new();
-        }
-    };
-    vec![v as f64]
+    }
+    if pname == GL_CURRENT_VERTEX_ATTRIB {
+        return c
+            .gl
+            .get_current_vertex_attrib_integer(index, unsigned)
+            .to_vec();
+    }
+    match c.gl.get_vertex_attrib_array(index, pname) {
+        Some(v) => vec![v as u32],
+        None => Vec::new(),
+    }
+}
+
+/// A packed 2_10_10_10 word's four values (GL 3.3 §2.7), or
+/// GL_INVALID_ENUM for another type.
+fn packed(c: &mut OsContext, ty: GLenum, value: GLuint, normalized: bool) -> Option<[f32; 4]> {
+    if !gl::vertex::is_packed(ty) {
+        c.gl.record_error(GL_INVALID_ENUM);
+        return None;
+    }
+    Some(gl::vertex::unpack_2_10_10_10(value, ty, normalized))
 }
 
 gl_entry_points! {
@@ -103,6 +128,341 @@ gl_entry_points! {
         });
     }
 
+    fn glVertexAttribIPointer(
+        index: GLuint, size: GLint, ty: GLenum, stride: GLsizei, pointer: *const c_void
+    ) => |c| {
+        let src = AttribSource::Generic(index.min(255) as u8);
+        c.arrays.set_pointer(&mut c.gl, src, pointer as *const u8, |g, d| {
+            g.vertex_attrib_i_pointer(index, size, ty, stride, d)
+        });
+    }
+    // ---- packed current values of the fixed-function attributes
+    // (GL 3.3 compatibility §2.7; normals and colours normalized) ----
+    [list] fn glVertexP2ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.vertex_4f(v[0], v[1], 0.0, 1.0)
+        }
+    }
+    fn glVertexP2uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexP2uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.vertex_4f(v[0], v[1], 0.0, 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glVertexP3ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.vertex_4f(v[0], v[1], v[2], 1.0)
+        }
+    }
+    fn glVertexP3uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexP3uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.vertex_4f(v[0], v[1], v[2], 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glVertexP4ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.vertex_4f(v[0], v[1], v[2], v[3])
+        }
+    }
+    fn glVertexP4uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexP4uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.vertex_4f(v[0], v[1], v[2], v[3])
+                }
+            },
+        )
+    }
+    [list] fn glTexCoordP1ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.tex_coord_4f(v[0], 0.0, 0.0, 1.0)
+        }
+    }
+    fn glTexCoordP1uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glTexCoordP1uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.tex_coord_4f(v[0], 0.0, 0.0, 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glTexCoordP2ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.tex_coord_4f(v[0], v[1], 0.0, 1.0)
+        }
+    }
+    fn glTexCoordP2uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glTexCoordP2uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.tex_coord_4f(v[0], v[1], 0.0, 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glTexCoordP3ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.tex_coord_4f(v[0], v[1], v[2], 1.0)
+        }
+    }
+    fn glTexCoordP3uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glTexCoordP3uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.tex_coord_4f(v[0], v[1], v[2], 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glTexCoordP4ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.tex_coord_4f(v[0], v[1], v[2], v[3])
+        }
+    }
+    fn glTexCoordP4uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glTexCoordP4uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.tex_coord_4f(v[0], v[1], v[2], v[3])
+                }
+            },
+        )
+    }
+    [list] fn glMultiTexCoordP1ui(texture: GLenum, ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.multi_tex_coord_4f(texture, v[0], 0.0, 0.0, 1.0)
+        }
+    }
+    fn glMultiTexCoordP1uiv(texture: GLenum, ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glMultiTexCoordP1uiv(texture, ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.multi_tex_coord_4f(texture, v[0], 0.0, 0.0, 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glMultiTexCoordP2ui(texture: GLenum, ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.multi_tex_coord_4f(texture, v[0], v[1], 0.0, 1.0)
+        }
+    }
+    fn glMultiTexCoordP2uiv(texture: GLenum, ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glMultiTexCoordP2uiv(texture, ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.multi_tex_coord_4f(texture, v[0], v[1], 0.0, 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glMultiTexCoordP3ui(texture: GLenum, ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.multi_tex_coord_4f(texture, v[0], v[1], v[2], 1.0)
+        }
+    }
+    fn glMultiTexCoordP3uiv(texture: GLenum, ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glMultiTexCoordP3uiv(texture, ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.multi_tex_coord_4f(texture, v[0], v[1], v[2], 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glMultiTexCoordP4ui(texture: GLenum, ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, false) {
+            c.gl.multi_tex_coord_4f(texture, v[0], v[1], v[2], v[3])
+        }
+    }
+    fn glMultiTexCoordP4uiv(texture: GLenum, ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glMultiTexCoordP4uiv(texture, ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, false) {
+                    c.gl.multi_tex_coord_4f(texture, v[0], v[1], v[2], v[3])
+                }
+            },
+        )
+    }
+    [list] fn glNormalP3ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, true) {
+            c.gl.normal_3f(v[0], v[1], v[2])
+        }
+    }
+    fn glNormalP3uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glNormalP3uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, true) {
+                    c.gl.normal_3f(v[0], v[1], v[2])
+                }
+            },
+        )
+    }
+    [list] fn glColorP3ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, true) {
+            c.gl.color_4f(v[0], v[1], v[2], 1.0)
+        }
+    }
+    fn glColorP3uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glColorP3uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, true) {
+                    c.gl.color_4f(v[0], v[1], v[2], 1.0)
+                }
+            },
+        )
+    }
+    [list] fn glColorP4ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, true) {
+            c.gl.color_4f(v[0], v[1], v[2], v[3])
+        }
+    }
+    fn glColorP4uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glColorP4uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, true) {
+                    c.gl.color_4f(v[0], v[1], v[2], v[3])
+                }
+            },
+        )
+    }
+    [list] fn glSecondaryColorP3ui(ty: GLenum, value: GLuint) => |c| {
+        if let Some(v) = packed(c, ty, value, true) {
+            c.gl.secondary_color_3f(v[0], v[1], v[2])
+        }
+    }
+    fn glSecondaryColorP3uiv(ty: GLenum, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glSecondaryColorP3uiv(ty, p) },
+            |c, [w]| {
+                if let Some(v) = packed(c, ty, w, true) {
+                    c.gl.secondary_color_3f(v[0], v[1], v[2])
+                }
+            },
+        )
+    }
+    // ---- packed current values (GL 3.3 §2.7) ----
+    [list] fn glVertexAttribP1ui(index: GLuint, ty: GLenum, normalized: GLboolean, value: GLuint) => |c| {
+        c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 1, value)
+    }
+    fn glVertexAttribP1uiv(index: GLuint, ty: GLenum, normalized: GLboolean, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexAttribP1uiv(index, ty, normalized, p) },
+            |c, [v]| c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 1, v),
+        )
+    }
+    [list] fn glVertexAttribP2ui(index: GLuint, ty: GLenum, normalized: GLboolean, value: GLuint) => |c| {
+        c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 2, value)
+    }
+    fn glVertexAttribP2uiv(index: GLuint, ty: GLenum, normalized: GLboolean, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexAttribP2uiv(index, ty, normalized, p) },
+            |c, [v]| c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 2, v),
+        )
+    }
+    [list] fn glVertexAttribP3ui(index: GLuint, ty: GLenum, normalized: GLboolean, value: GLuint) => |c| {
+        c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 3, value)
+    }
+    fn glVertexAttribP3uiv(index: GLuint, ty: GLenum, normalized: GLboolean, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexAttribP3uiv(index, ty, normalized, p) },
+            |c, [v]| c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 3, v),
+        )
+    }
+    [list] fn glVertexAttribP4ui(index: GLuint, ty: GLenum, normalized: GLboolean, value: GLuint) => |c| {
+        c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 4, value)
+    }
+    fn glVertexAttribP4uiv(index: GLuint, ty: GLenum, normalized: GLboolean, value: *const GLuint) => |c| {
+        vector_call::<1, u32>(
+            c,
+            value,
+            move |p| unsafe { glVertexAttribP4uiv(index, ty, normalized, p) },
+            |c, [v]| c.gl.vertex_attrib_p(index, ty, as_bool(normalized), 4, v),
+        )
+    }
+    fn glVertexAttribDivisor(index: GLuint, divisor: GLuint) => |c| {
+        c.gl.vertex_attrib_divisor(index, divisor)
+    }
+
+    // ---- vertex array objects (GL 3.3 §2.10) ----
+    fn glGenVertexArrays(n: GLsizei, arrays: *mut GLuint) => |c| {
+        let names = c.gl.gen_vertex_arrays(n);
+        wr(arrays, &names);
+    }
+    fn glBindVertexArray(array: GLuint) => |c| { c.gl.bind_vertex_array(array) }
+    fn glDeleteVertexArrays(n: GLsizei, arrays: *const GLuint) => |c| {
+        if n < 0 {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let names = rd_vec(arrays, n as i64);
+        c.gl.delete_vertex_arrays(&names);
+    }
+    fn glIsVertexArray(array: GLuint) -> GLboolean [0] => |c| {
+        if c.gl.reject_in_begin() {
+            return 0;
+        }
+        c.gl.is_vertex_array(array) as GLboolean
+    }
+
     // ---- queries ----
     fn glGetVertexAttribiv(index: GLuint, pname: GLenum, v: *mut GLint) => |c| {
         let r: Vec<GLint> = vertex_attrib(c, index, pname)
@@ -112,12 +472,19 @@ gl_entry_points! {
         wr(v, &r);
     }
     fn glGetVertexAttribfv(index: GLuint, pname: GLenum, v: *mut GLfloat) => |c| {
-        if pname == GL_CURRENT_VERTEX_ATTRIB {
-            let r = c.gl.get_current_vertex_attrib(index);
-            wr(v, &r);
-        } else {
-            c.gl.record_error(GL_INVALID_ENUM);
-        }
+        let r: Vec<GLfloat> = vertex_attrib(c, index, pname).iter().map(|&x| x as f32).collect();
+        wr(v, &r);
+    }
+    fn glGetVertexAttribIiv(index: GLuint, pname: GLenum, v: *mut GLint) => |c| {
+        let r: Vec<GLint> = vertex_attrib_integer(c, index, pname, false)
+            .iter()
+            .map(|&x| x as i32)
+            .collect();
+        wr(v, &r);
+    }
+    fn glGetVertexAttribIuiv(index: GLuint, pname: GLenum, v: *mut GLuint) => |c| {
+        let r = vertex_attrib_integer(c, index, pname, true);
+        wr(v, &r);
     }
     fn glGetVertexAttribdv(index: GLuint, pname: GLenum, v: *mut GLdouble) => |c| {
         let r = vertex_attrib(c, index, pname);

@@ -91,6 +91,10 @@ const ENUMS: &[u32] = &[
     GL_SRC_ALPHA,
     GL_ONE,
     GL_LESS,
+    GL_TRIANGLE_STRIP,
+    GL_INT,
+    GL_PRIMITIVE_RESTART,
+    GL_VERTEX_ATTRIB_ARRAY_DIVISOR,
 ];
 
 const VS: &[u8] = b"attribute vec4 p; uniform mat4 m; uniform vec4 u[3]; void main() { gl_Position = m * p + u[1]; }\0";
@@ -131,7 +135,7 @@ fn hostile_call_sequences_never_crash() {
             let e2 = rng.pick(ENUMS);
             let n = names[rng.next() as usize % names.len()];
             let (a, b) = (rng.int(), rng.int().clamp(-4, 64));
-            match rng.next() % 63 {
+            match rng.next() % 71 {
                 0 => glBegin(e),
                 1 => glEnd(),
                 2 => glVertex3f(rng.f(), rng.f(), rng.f()),
@@ -267,6 +271,31 @@ fn hostile_call_sequences_never_crash() {
                 ),
                 60 => glCopyPixels(a, b, a.clamp(-1, 30), b.clamp(-1, 30), e),
                 61 => glPixelZoom(rng.f(), rng.f()),
+                62 => {
+                    let mut v = [0u32; 2];
+                    glGenVertexArrays(rng.pick(&[-1, 0, 1, 2]), v.as_mut_ptr());
+                    names.extend(v.iter().filter(|&&x| x != 0));
+                }
+                63 => glBindVertexArray(n),
+                64 => glDeleteVertexArrays(1, &n),
+                65 => glDrawArraysInstanced(e, a.clamp(-1, 200), b, rng.pick(&[-1, 0, 1, 3])),
+                66 => glDrawElementsInstancedBaseVertex(
+                    e,
+                    b,
+                    e2,
+                    idx.as_ptr() as *const c_void,
+                    rng.pick(&[-1, 0, 1, 3]),
+                    a.clamp(-300, 300),
+                ),
+                67 => glVertexAttribIPointer(
+                    n % 20,
+                    a,
+                    e,
+                    rng.pick(&[0, 4, 16, -1]),
+                    fp as *const c_void,
+                ),
+                68 => glVertexAttribDivisor(n % 20, rng.pick(&[0, 1, 2, u32::MAX])),
+                69 => glPrimitiveRestartIndex(rng.pick(&[0, 7, 0xffff, u32::MAX])),
                 _ => {
                     let _ = glGetError();
                 }

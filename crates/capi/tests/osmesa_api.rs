@@ -378,6 +378,7 @@ fn contexts_by_version_and_profile() {
             assert_eq!(glGetError(), GL_INVALID_ENUM);
             glEnable(GL_DEPTH_TEST);
             assert_eq!(glGetError(), GL_NO_ERROR);
+            glDisable(GL_DEPTH_TEST);
             assert_eq!(integer(GL_MODELVIEW_STACK_DEPTH), -1);
             assert_eq!(glGetError(), GL_INVALID_ENUM);
             assert_eq!(integer(GL_ACCUM_RED_BITS), -1);
@@ -405,6 +406,49 @@ fn contexts_by_version_and_profile() {
             );
             glGetShaderiv(new, GL_COMPILE_STATUS, &mut ok);
             assert_eq!(ok, 1, "{}", info_log(new));
+            // A core draw: a program, a vertex array object, a buffer.
+            let vs = shader(
+                GL_VERTEX_SHADER,
+                "#version 330 core\nlayout(location = 0) in vec2 p;\n\
+                 void main() { gl_Position = vec4(p, 0.0, 1.0); }\n",
+            );
+            let prog = glCreateProgram();
+            glAttachShader(prog, vs);
+            glAttachShader(prog, new);
+            glLinkProgram(prog);
+            glUseProgram(prog);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            assert_eq!(glGetError(), GL_INVALID_OPERATION, "no vertex array object");
+            let tri: [f32; 6] = [-1.0, -1.0, 3.0, -1.0, -1.0, 3.0];
+            glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, tri.as_ptr() as *const c_void);
+            assert_eq!(glGetError(), GL_INVALID_OPERATION, "no client arrays");
+            let (mut vao, mut vbo) = (0, 0);
+            glGenVertexArrays(1, &mut vao);
+            glBindVertexArray(vao);
+            glGenBuffers(1, &mut vbo);
+            glBindBuffer(GL_ARRAY_BUFFER, vbo);
+            glBufferData(
+                GL_ARRAY_BUFFER,
+                24,
+                tri.as_ptr() as *const c_void,
+                GL_STATIC_DRAW,
+            );
+            glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, null());
+            glEnableVertexAttribArray(0);
+            glClearColor(0.0, 0.0, 0.0, 0.0);
+            glClear(GL_COLOR_BUFFER_BIT);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            assert_eq!(glGetError(), GL_NO_ERROR);
+            let idx: [u16; 3] = [0, 1, 2];
+            glDrawElements(
+                GL_TRIANGLES,
+                3,
+                GL_UNSIGNED_SHORT,
+                idx.as_ptr() as *const c_void,
+            );
+            assert_eq!(glGetError(), GL_INVALID_OPERATION, "no client index arrays");
+            glFinish();
+            assert_eq!(px(&buf, 3, 3), [255, 255, 255, 255]);
             OSMesaDestroyContext(ctx);
         }
     }

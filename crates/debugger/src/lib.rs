@@ -142,6 +142,16 @@ impl Number {
         }
     }
 
+    /// An input component: a vertex shader's integer inputs carry the
+    /// integers' bits (`exec::Batch::inputs`), other values are floats.
+    fn from_input(kind: Scalar, v: f32, vertex: bool) -> Number {
+        match kind {
+            Scalar::Int if vertex => Number::Int(v.to_bits() as i32),
+            Scalar::Uint if vertex => Number::Uint(v.to_bits()),
+            _ => Number::from_f32(kind, v),
+        }
+    }
+
     fn from_f32(kind: Scalar, v: f32) -> Number {
         match kind {
             Scalar::Float => Number::Float(v),
@@ -257,6 +267,7 @@ fn named_slots(
     values: &[f32],
     structs: &[glsl::types::StructDef],
     written_only: bool,
+    vertex_inputs: bool,
 ) -> Vec<Named> {
     slots
         .iter()
@@ -268,7 +279,8 @@ fn named_slots(
                 values: (0..s.components)
                     .map(|c| {
                         let v = values.get(s.offset + c).copied().unwrap_or(0.0);
-                        Number::from_f32(kinds.get(c).copied().unwrap_or(Scalar::Float), v)
+                        let kind = kinds.get(c).copied().unwrap_or(Scalar::Float);
+                        Number::from_input(kind, v, vertex_inputs)
                     })
                     .collect(),
             }
@@ -514,10 +526,10 @@ fn draw_report(r: &DrawRecord) -> DrawReport {
         VertexTrace {
             position: v.position,
             index: v.index,
-            inputs: named_slots(&iface.inputs, &v.inputs, &iface.structs, false),
+            inputs: named_slots(&iface.inputs, &v.inputs, &iface.structs, false, true),
             steps: steps(k, &r.vertex, &v.events),
             truncated: v.truncated,
-            outputs: named_slots(&iface.outputs, &v.outputs, &iface.structs, true),
+            outputs: named_slots(&iface.outputs, &v.outputs, &iface.structs, true, false),
             error: v.error.clone(),
         }
     });
@@ -568,6 +580,7 @@ fn fragment_report(
                         probe.vertex_outputs.get(p).map_or(&[][..], |v| &v[..]),
                         &vs.structs,
                         true,
+                        false,
                     ),
                 })
                 .collect()
@@ -584,7 +597,7 @@ fn fragment_report(
         facing: if f.back_facing { "back" } else { "front" },
         vertices,
         window_z: f.window_z,
-        inputs: named_slots(&fs.inputs, &f.inputs, &fs.structs, false),
+        inputs: named_slots(&fs.inputs, &f.inputs, &fs.structs, false, false),
         early_rejected: f.early_rejected,
         steps,
         truncated: f.truncated,
@@ -593,7 +606,7 @@ fn fragment_report(
         outputs: if f.early_rejected {
             Vec::new()
         } else {
-            named_slots(&fs.outputs, &f.outputs, &fs.structs, true)
+            named_slots(&fs.outputs, &f.outputs, &fs.structs, true, false)
         },
         operations: f.ops.as_ref().map(ops_report),
     }
@@ -789,5 +802,52 @@ fn write_fragment(s: &mut String, n: usize, f: &FragmentReport) {
             },
             pixel_text(&o.after)
         );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use gl::enums::*;
+
+    /// A vertex shader's integer input is reported as the integer the
+    /// attribute held (its bits), not as the float those bits make.
+    #[test]
+    fn integer_vertex_inputs_show_their_values() {
+        let mut ctx = gl::Context::new(4, 4);
+        let p = ctx.create_program();
+        for (kind, src) in [
+            (
+                GL_VERTEX_SHADER,
+                "#version 130\nin vec2 pos;\nin ivec2 code;\nflat out int k;\n\
+                 void main() { gl_Position = vec4(pos, 0.0, 1.0); k = code.x; }",
+            ),
+            (
+                GL_FRAGMENT_SHADER,
+                "#version 130\nflat in int k;\nout vec4 c;\n\
+                 void main() { c = vec4(k < 0 ? 1.0 : 0.0); }",
+            ),
+        ] {
+            let s = ctx.create_shader(kind);
+            ctx.shader_source(s, &[src]);
+            ctx.compile_shader(s);
+            ctx.attach_shader(p, s);
+        }
+        ctx.link_program(p);
+        ctx.use_program(p);
+        let pos = ctx.get_attrib_location(p, "pos") as u32;
+        let code = ctx.get_attrib_location(p, "code") as u32;
+        let quad = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
+        ctx.vertex_attrib_pointer(pos, 2, GL_FLOAT, false, 0, gl::ArrayData::from_f32(&quad));
+        ctx.enable_vertex_attrib_array(pos);
+        ctx.vertex_attrib_i4i(code, [-123456789, 7, 0, 1]);
+        let mut request = gl::debug::DebugRequest::pixel(1, 1);
+        request.vertex = Some(0);
+        ctx.set_debug(Some(request));
+        ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+        let records = ctx.take_debug_records();
+        let report = Report::from_records((1, 1), &records);
+        let text = report.text();
+        assert!(text.contains("-123456789"), "{text}");
     }
 }

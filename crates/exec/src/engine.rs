@@ -242,12 +242,16 @@ fn load_inputs_with(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batc
             *x = [bits; LANES];
         }
     }
+    // Vertex-stage integer inputs are attributes: their bits (see
+    // `Batch::inputs`).
+    let bits = k.stage == glsl::Stage::Vertex;
     for &(ic, reg, kind) in &k.inputs {
         let src = batch.inputs.get(ic).copied().unwrap_or([0.0; LANES]);
         if let Some(x) = file.get_mut(reg as usize) {
             *x = match kind {
                 // Subnormal inputs enter as zero, as every float value.
                 Scalar::Float => lanes(|l| ftz(src[l])),
+                Scalar::Int | Scalar::Uint if bits => src.map(f32::to_bits),
                 Scalar::Int => src.map(|v| v as i32 as u32),
                 Scalar::Uint => src.map(|v| v as u32),
                 Scalar::Bool => src.map(|v| (v != 0.0) as u32),

@@ -186,10 +186,13 @@ pub(crate) fn run<H: Hook>(
     for &(reg, bits) in &p.init {
         r[reg as usize] = [bits; LANES];
     }
+    // Vertex-stage integer inputs are their bits (`Batch::inputs`).
+    let bits = k.stage == glsl::Stage::Vertex;
     for &(ic, reg, kind) in &k.inputs {
         let src = batch.inputs.get(ic).copied().unwrap_or([0.0; LANES]);
         r[reg as usize] = lanes(|l| match kind {
             Scalar::Float => ftz(src[l]),
+            Scalar::Int | Scalar::Uint if bits => src[l].to_bits(),
             Scalar::Int => src[l] as i32 as u32,
             Scalar::Uint => src[l] as u32,
             Scalar::Bool => (src[l] != 0.0) as u32,

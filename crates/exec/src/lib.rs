@@ -282,7 +282,12 @@ pub enum ExecError {
 /// Structure-of-arrays invocation data.
 #[derive(Clone, Debug, Default)]
 pub struct Batch {
-    /// One entry per input component (see [`Interface::inputs`]).
+    /// One entry per input component (see [`Interface::inputs`]). The
+    /// components of a vertex shader's `int`/`uint` inputs (attributes,
+    /// `gl_VertexID`, `gl_InstanceID`) are the integers' bits
+    /// (`f32::from_bits`), so that every 32-bit value arrives exactly;
+    /// those of other stages' integer inputs (flat varyings) are the
+    /// values as floats, as the previous stage's outputs are.
     pub inputs: Vec<[f32; LANES]>,
     /// One entry per output component (see [`Interface::outputs`]); grown
     /// to the interface's size by `run` if shorter. Only the active lanes

@@ -10,7 +10,7 @@
 
 use crate::enums::*;
 use crate::state::State;
-use crate::vertex::ArrayState;
+use crate::vertex::VaoArrays;
 use crate::{Context, MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
 
 /// GL_MAX_ATTRIB_STACK_DEPTH and GL_MAX_CLIENT_ATTRIB_STACK_DEPTH.
@@ -34,12 +34,13 @@ pub(crate) struct ServerAttribs {
 /// A glPushClientAttrib entry.
 pub(crate) struct ClientAttribs {
     mask: u32,
-    arrays: [ArrayState; 5],
-    tex_arrays: Vec<ArrayState>,
-    generic_arrays: Vec<ArrayState>,
+    /// The bound vertex array object and its state.
+    vao: u32,
+    arrays: VaoArrays,
     client_active_texture: u32,
     array_buffer: u32,
-    element_buffer: u32,
+    /// Primitive restart: enabled, and the index.
+    restart: (bool, u32),
     pack_alignment: i32,
     unpack_alignment: i32,
     pack_buffer: u32,
@@ -121,7 +122,12 @@ impl Context {
         let st = &mut self.st;
         // Enables: every cap of a restored group (all for GL_ENABLE_BIT).
         let restored =
-            |cap: u32| has(GL_ENABLE_BIT) || (cap_group(cap) != 0 && has(cap_group(cap)));
+            // Primitive restart is vertex-array state (GL 3.3
+            // compatibility Table 6.8): glPopClientAttrib's.
+            |cap: u32| {
+                cap != GL_PRIMITIVE_RESTART
+                    && (has(GL_ENABLE_BIT) || (cap_group(cap) != 0 && has(cap_group(cap))))
+            };
         st.enabled.retain(|&(cap, _)| !restored(cap));
         st.enabled
             .extend(old.enabled.iter().filter(|&&(cap, _)| restored(cap)));
@@ -234,18 +240,11 @@ impl Context {
         let va = &self.va;
         self.client_attrib_stack.push(ClientAttribs {
             mask,
-            arrays: [
-                va.vertex_array.clone(),
-                va.normal_array.clone(),
-                va.color_array.clone(),
-                va.secondary_array.clone(),
-                va.fog_array.clone(),
-            ],
-            tex_arrays: va.tex_arrays.clone(),
-            generic_arrays: va.generic_arrays.clone(),
+            vao: va.vao,
+            arrays: va.arrays_copy(),
             client_active_texture: va.client_active_texture,
             array_buffer: va.array_buffer,
-            element_buffer: va.element_buffer,
+            restart: (self.st.is_on(GL_PRIMITIVE_RESTART), va.restart_index),
             pack_alignment: self.st.pack_alignment,
             unpack_alignment: self.st.unpack_alignment,
             pack_buffer: self.objects.pack_buffer,
@@ -274,17 +273,23 @@ impl Context {
             self.objects.unpack_buffer = live(s.unpack_buffer, &self.objects.buffers);
         }
         if s.mask & GL_CLIENT_VERTEX_ARRAY_BIT != 0 {
-            let [v, n, c, sc, f] = s.arrays;
-            self.va.vertex_array = v;
-            self.va.normal_array = n;
-            self.va.color_array = c;
-            self.va.secondary_array = sc;
-            self.va.fog_array = f;
-            self.va.tex_arrays = s.tex_arrays;
-            self.va.generic_arrays = s.generic_arrays;
+            // The object bound at push time is bound again and gets its
+            // arrays back; one deleted since keeps the current binding
+            // and state.
+            if self.va.bind_vao(s.vao) {
+                let mut arrays = s.arrays;
+                arrays.element_buffer = live(arrays.element_buffer, &self.objects.buffers);
+                self.va.set_arrays(arrays);
+            }
             self.va.client_active_texture = s.client_active_texture;
             self.va.array_buffer = live(s.array_buffer, &self.objects.buffers);
-            self.va.element_buffer = live(s.element_buffer, &self.objects.buffers);
+            let (restart, index) = s.restart;
+            if restart {
+                self.st.enabled.insert((GL_PRIMITIVE_RESTART, 0));
+            } else {
+                self.st.enabled.remove(&(GL_PRIMITIVE_RESTART, 0));
+            }
+            self.va.restart_index = index;
         }
         Some(s.mask)
     }
@@ -337,6 +342,16 @@ mod tests {
         ctx.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
         assert_eq!(ctx.pop_client_attrib(), Some(GL_CLIENT_ALL_ATTRIB_BITS));
         assert!(!ctx.vertex_state().vertex_array.enabled);
+        // Primitive restart is client vertex-array state.
+        ctx.push_attrib(GL_ALL_ATTRIB_BITS);
+        ctx.push_client_attrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+        ctx.enable(GL_PRIMITIVE_RESTART);
+        ctx.primitive_restart_index(9);
+        ctx.pop_attrib();
+        assert!(ctx.is_enabled(GL_PRIMITIVE_RESTART));
+        ctx.pop_client_attrib();
+        assert!(!ctx.is_enabled(GL_PRIMITIVE_RESTART));
+        assert_eq!(ctx.get_integerv(GL_PRIMITIVE_RESTART_INDEX), vec![0]);
         assert_eq!(ctx.get_integerv(GL_UNPACK_ALIGNMENT), vec![4]);
         assert_eq!(ctx.pop_client_attrib(), None);
         assert_eq!(ctx.get_error(), GL_STACK_UNDERFLOW);

@@ -1,5 +1,7 @@
 //! The draw calls: glDrawArrays, glMultiDrawArrays, glDrawElements,
-//! glDrawRangeElements, the glBegin/glEnd vertices, and glClear.
+//! glDrawRangeElements, their instanced and base-vertex forms (GL 3.3
+//! §2.8.2-2.8.3), primitive restart (§2.8.1, [`crate::restart`]), the
+//! glBegin/glEnd vertices, and glClear.
 //!
 //! A draw checks its arguments and the draw framebuffer's completeness,
 //! then puts the stages together: the kernels and their uniform words
@@ -16,7 +18,7 @@
 //! no error code for it).
 
 use crate::enums::*;
-use crate::fetch::Fetcher;
+use crate::fetch::{Fetcher, InstanceBatch};
 use crate::pipeline_state::{raster_mode, rect};
 use crate::vertex::{ArrayData, ImmVertex};
 use crate::Context;
@@ -47,9 +49,10 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return false;
         }
-        // Core draws need a program: there is no fixed-function vertex
-        // stage to fall back on.
-        if self.is_core() && self.current_program == 0 {
+        // Core draws need a program (there is no fixed-function vertex
+        // stage to fall back on) and a vertex array object (the default
+        // one is removed).
+        if self.is_core() && (self.current_program == 0 || self.vertex_array_binding() == 0) {
             self.set_error(GL_INVALID_OPERATION);
             return false;
         }
@@ -67,7 +70,14 @@ impl Context {
 
     /// glDrawArrays.
     pub fn draw_arrays(&mut self, mode: u32, first: i32, count: i32) {
-        if first < 0 {
+        self.draw_arrays_instanced(mode, first, count, 1);
+    }
+
+    /// glDrawArraysInstanced (GL 3.3 §2.8.2): `instances` draws of the
+    /// arrays, instance `i` with `gl_InstanceID` = i and the instanced
+    /// arrays at element i / divisor.
+    pub fn draw_arrays_instanced(&mut self, mode: u32, first: i32, count: i32, instances: i32) {
+        if first < 0 || instances < 0 {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
@@ -76,11 +86,16 @@ impl Context {
         }
         let count = count.min(1 << 24) as u32;
         let indices: Vec<u32> = (0..count).map(|i| i.saturating_add(first as u32)).collect();
-        self.run_draw(mode, &indices, None);
+        self.draw_list(mode, &indices, None, 0, instances as u32);
     }
 
-    /// glMultiDrawArrays.
+    /// glMultiDrawArrays: one glDrawArrays per pair (a negative count is
+    /// GL_INVALID_VALUE before anything is drawn).
     pub fn multi_draw_arrays(&mut self, mode: u32, first: &[i32], count: &[i32]) {
+        if count.iter().chain(first).any(|&c| c < 0) {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
         for (f, c) in first.iter().zip(count) {
             self.draw_arrays(mode, *f, *c);
         }
@@ -89,20 +104,11 @@ impl Context {
     /// glDrawElements: `indices` is an offset into the bound element
     /// buffer or client index data.
     pub fn draw_elements(&mut self, mode: u32, count: i32, ty: u32, indices: ArrayData) {
-        if !matches!(ty, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT) {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        if !self.check_draw(mode, count) {
-            return;
-        }
-        let Some(idx) = self.read_indices(count as usize, ty, &indices) else {
-            return;
-        };
-        self.run_draw(mode, idx.as_slice(), None);
+        self.draw_elements_instanced_base_vertex(mode, count, ty, indices, 1, 0);
     }
 
-    /// glDrawRangeElements.
+    /// glDrawRangeElements: the range is a hint; indices outside it are
+    /// drawn as any others.
     pub fn draw_range_elements(
         &mut self,
         mode: u32,
@@ -112,11 +118,217 @@ impl Context {
         ty: u32,
         indices: ArrayData,
     ) {
+        self.draw_range_elements_base_vertex(mode, start, end, count, ty, indices, 0);
+    }
+
+    /// glDrawElementsBaseVertex (GL 3.3 §2.8.3): `basevertex` is added
+    /// to every index (after the primitive-restart comparison).
+    pub fn draw_elements_base_vertex(
+        &mut self,
+        mode: u32,
+        count: i32,
+        ty: u32,
+        indices: ArrayData,
+        basevertex: i32,
+    ) {
+        self.draw_elements_instanced_base_vertex(mode, count, ty, indices, 1, basevertex);
+    }
+
+    /// glDrawRangeElementsBaseVertex.
+    #[allow(clippy::too_many_arguments)]
+    pub fn draw_range_elements_base_vertex(
+        &mut self,
+        mode: u32,
+        start: u32,
+        end: u32,
+        count: i32,
+        ty: u32,
+        indices: ArrayData,
+        basevertex: i32,
+    ) {
         if end < start {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
-        self.draw_elements(mode, count, ty, indices);
+        self.draw_elements_instanced_base_vertex(mode, count, ty, indices, 1, basevertex);
+    }
+
+    /// glDrawElementsInstanced.
+    pub fn draw_elements_instanced(
+        &mut self,
+        mode: u32,
+        count: i32,
+        ty: u32,
+        indices: ArrayData,
+        instances: i32,
+    ) {
+        self.draw_elements_instanced_base_vertex(mode, count, ty, indices, instances, 0);
+    }
+
+    /// glDrawElementsInstancedBaseVertex: the element draws' common
+    /// path. With primitive restart on (GL 3.3 §2.8.1), an index equal to
+    /// the restart index ends the primitive and starts a new one
+    /// ([`crate::restart`]).
+    pub fn draw_elements_instanced_base_vertex(
+        &mut self,
+        mode: u32,
+        count: i32,
+        ty: u32,
+        indices: ArrayData,
+        instances: i32,
+        basevertex: i32,
+    ) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if mode > GL_POLYGON
+            || !matches!(ty, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT)
+        {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        if instances < 0 {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        if !self.check_draw(mode, count) {
+            return;
+        }
+        let Some(idx) = self.read_indices(count as usize, ty, &indices) else {
+            return;
+        };
+        let restart = self.primitive_restart();
+        self.draw_list(mode, idx.as_slice(), restart, basevertex, instances as u32);
+    }
+
+    /// Draws the element indices `list` (`restart`: the restart index
+    /// when restart is on; `basevertex` added after the comparison)
+    /// `instances` times. Instances are drawn in batches, each batch as
+    /// one draw whose vertices number (instance, element) pairs
+    /// ([`InstanceBatch`]) and whose primitives are those of each
+    /// instance in turn (strips and loops as their independent
+    /// primitives, [`crate::restart`]): the primitives, their order and
+    /// their vertices are those of one draw per instance.
+    fn draw_list(
+        &mut self,
+        mode: u32,
+        list: &[u32],
+        restart: Option<u32>,
+        basevertex: i32,
+        instances: u32,
+    ) {
+        let restart = restart.filter(|r| list.contains(r));
+        let base = basevertex as u32;
+        let vertices = || {
+            list.iter()
+                .filter(move |&&i| Some(i) != restart)
+                .map(move |&i| i.wrapping_add(base))
+        };
+        // (The index range only for several instances: a single draw
+        // does not pay the passes.)
+        let range = match instances {
+            0 => return,
+            1 => None,
+            _ => match (vertices().min(), vertices().max()) {
+                (Some(lo), Some(hi)) => Some((lo, hi)),
+                _ => return,
+            },
+        };
+        let per_instance = list.len() as u64 + 1;
+        // Virtual vertex numbers stay below the separator (u32::MAX); a
+        // batch's list stays below 2^22 indices.
+        let batch = range.map_or(0, |(lo, hi)| {
+            ((u32::MAX as u64 - 1) / ((hi - lo) as u64 + 1))
+                .min((1 << 22) / per_instance)
+                .min(instances as u64) as u32
+        });
+        let Some((lo, hi)) = range.filter(|_| batch >= 2) else {
+            for instance in 0..instances {
+                let one = InstanceBatch::one(instance);
+                match restart {
+                    Some(r) => {
+                        for (m, l) in crate::restart::split(mode, list, r) {
+                            self.run_draw(m, &with_base(l, basevertex), None, one);
+                        }
+                    }
+                    None if basevertex != 0 => {
+                        self.run_draw(mode, &with_base(list.to_vec(), basevertex), None, one)
+                    }
+                    None => self.run_draw(mode, list, None, one),
+                }
+            }
+            return;
+        };
+        const SEPARATOR: u32 = u32::MAX;
+        let stride = hi - lo + 1;
+        let mut first = 0u32;
+        while first < instances {
+            let n = batch.min(instances - first);
+            let mut combined = Vec::with_capacity(n as usize * per_instance as usize);
+            for k in 0..n {
+                if k > 0 {
+                    combined.push(SEPARATOR);
+                }
+                combined.extend(list.iter().map(|&i| {
+                    if Some(i) == restart {
+                        SEPARATOR
+                    } else {
+                        k * stride + i.wrapping_add(base).wrapping_sub(lo)
+                    }
+                }));
+            }
+            let b = InstanceBatch { first, lo, stride };
+            for (m, l) in crate::restart::split(mode, &combined, SEPARATOR) {
+                self.run_draw(m, &l, None, b);
+            }
+            first += n;
+        }
+    }
+
+    /// glMultiDrawElements: one glDrawElements per count (a negative count
+    /// is GL_INVALID_VALUE before anything is drawn).
+    pub fn multi_draw_elements(
+        &mut self,
+        mode: u32,
+        count: &[i32],
+        ty: u32,
+        indices: &[ArrayData],
+    ) {
+        let zeros = vec![0; count.len()];
+        self.multi_draw_elements_base_vertex(mode, count, ty, indices, &zeros);
+    }
+
+    /// glMultiDrawElementsBaseVertex.
+    pub fn multi_draw_elements_base_vertex(
+        &mut self,
+        mode: u32,
+        count: &[i32],
+        ty: u32,
+        indices: &[ArrayData],
+        basevertex: &[i32],
+    ) {
+        if count.iter().any(|&c| c < 0) {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        for ((c, i), b) in count.iter().zip(indices).zip(basevertex) {
+            self.draw_elements_base_vertex(mode, *c, ty, i.clone(), *b);
+        }
+    }
+
+    /// The primitive restart index when restart is enabled.
+    pub fn primitive_restart(&self) -> Option<u32> {
+        self.st
+            .is_on(GL_PRIMITIVE_RESTART)
+            .then_some(self.va.restart_index)
+    }
+
+    /// glPrimitiveRestartIndex.
+    pub fn primitive_restart_index(&mut self, index: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        self.va.restart_index = index;
     }
 
     /// Draws the vertices recorded between glBegin and glEnd.
@@ -125,10 +337,17 @@ impl Context {
             return;
         }
         let indices: Vec<u32> = (0..verts.len() as u32).collect();
-        self.run_draw(mode, &indices, Some(verts));
+        self.run_draw(mode, &indices, Some(verts), InstanceBatch::one(0));
     }
 
-    fn run_draw(&mut self, mode: u32, indices: &[u32], immediate: Option<&[ImmVertex]>) {
+    /// Draws `indices`, vertices of the instances `batch`.
+    fn run_draw(
+        &mut self,
+        mode: u32,
+        indices: &[u32],
+        immediate: Option<&[ImmVertex]>,
+        batch: InstanceBatch,
+    ) {
         if indices.is_empty() {
             return;
         }
@@ -156,7 +375,7 @@ impl Context {
             return;
         };
         let state = self.pipeline_state(target.draw_buffers);
-        let fetch = Fetcher::new(self, self.input_sources(&vs), immediate);
+        let fetch = Fetcher::new(self, &vs, immediate, batch);
         let replay = raster::Replay {
             state: &state,
             vs: &vs,
@@ -261,4 +480,15 @@ impl Context {
         }
         self.store_target(t);
     }
+}
+
+/// `list` with `basevertex` added to every index (wrapping: an index
+/// below 0 reads past the arrays, which gives the defaults).
+fn with_base(mut list: Vec<u32>, basevertex: i32) -> Vec<u32> {
+    if basevertex != 0 {
+        for i in &mut list {
+            *i = i.wrapping_add(basevertex as u32);
+        }
+    }
+    list
 }

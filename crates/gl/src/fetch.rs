@@ -1,33 +1,104 @@
 //! Vertex fetch: where each vertex input of a draw reads its values
-//! (enabled arrays in buffer objects or client memory, current values, or
-//! the glBegin/glEnd vertices), and the element indices of glDrawElements.
+//! (enabled arrays in buffer objects or client memory, instanced arrays,
+//! current values, the glBegin/glEnd vertices, `gl_VertexID` and
+//! `gl_InstanceID`), and the element indices of glDrawElements.
 //!
 //! Contract: `Fetcher` is raster's [`raster::VertexFetch`]; in a draw
 //! from arrays each input's source is resolved once per draw, so the
 //! per-vertex read is a bounds-checked load. Reads past the end of an
 //! array give (0, 0, 0, 1); indices past the end of the index data are
-//! dropped.
+//! dropped. Integer inputs (`int`, `uint` and their vectors) get the
+//! integers' bits, as `exec::Batch::inputs` says: from integer arrays
+//! (glVertexAttribIPointer) and integer current values unconverted.
 
 use crate::enums::*;
-use crate::vertex::{ArrayData, AttribSource, ImmVertex};
+use crate::vertex::{
+    float_view, integer_bits, read_integer_element, ArrayData, AttribSource, ImmVertex, ValueKind,
+};
 use crate::Context;
 use std::sync::Arc;
 
-/// Vertex input slots mapped to attribute sources.
+/// What feeds one vertex input slot.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum InputSource {
+    Attrib(AttribSource),
+    /// `gl_VertexID`: the element index fetched (after the base vertex).
+    VertexId,
+    /// `gl_InstanceID`: the instance number.
+    InstanceId,
+}
+
+/// Which instances a draw's vertices belong to. A draw of one instance
+/// (`stride` 0) fetches its element indices as they are; a batch of
+/// instances drawn at once numbers its vertices so that vertex `v` is
+/// element `lo + v % stride` of instance `first + v / stride`
+/// (`crate::draw`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct InstanceBatch {
+    pub(crate) first: u32,
+    pub(crate) lo: u32,
+    pub(crate) stride: u32,
+}
+
+impl InstanceBatch {
+    /// Instance `instance` alone.
+    pub(crate) fn one(instance: u32) -> InstanceBatch {
+        InstanceBatch {
+            first: instance,
+            lo: 0,
+            stride: 0,
+        }
+    }
+
+    /// (element index, instance) of vertex `v`.
+    #[inline]
+    fn decode(self, v: u32) -> (u32, u32) {
+        match self.stride {
+            0 => (v, self.first),
+            s => (self.lo.wrapping_add(v % s), self.first.wrapping_add(v / s)),
+        }
+    }
+}
+
+/// Vertex input slots mapped to their sources.
 pub(crate) struct Fetcher<'a> {
     pub(crate) ctx: &'a Context,
-    pub(crate) slots: Vec<Option<AttribSource>>,
+    pub(crate) slots: Vec<Option<InputSource>>,
+    /// Per slot: how the shader reads it (integer inputs take bits,
+    /// `exec::Batch::inputs`).
+    kinds: Vec<ValueKind>,
     pub(crate) immediate: Option<&'a [ImmVertex]>,
+    batch: InstanceBatch,
     /// Per slot, per column (one for non-matrix slots): the attribute's
     /// array or current value, resolved once per draw (array draws only).
     resolved: Vec<Vec<ResolvedAttrib>>,
 }
 
+/// How an array's elements become an input's components.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Convert {
+    /// To float values (normalized when the array says so).
+    Float,
+    /// An integer array (glVertexAttribIPointer) into an integer input:
+    /// the integers' bits.
+    Bits,
+    /// A float-converting array into an integer input (undefined in GL):
+    /// the values' integer parts, as bits.
+    FloatToBits(ValueKind),
+}
+
 /// Where one attribute's values come from during a draw.
 enum ResolvedAttrib {
     /// Every vertex reads this value (the array is disabled: the current
-    /// value; or enabled without bytes: the defaults).
+    /// value; or enabled without bytes: the defaults). Already in the
+    /// input's form.
     Value([f32; 4]),
+    /// An instanced array: element instance / divisor of `array`
+    /// (GL 3.3 §2.8.2).
+    PerInstance {
+        array: Box<ResolvedAttrib>,
+        divisor: u32,
+    },
     /// An enabled array.
     Array {
         bytes: std::sync::Arc<[u8]>,
@@ -36,38 +107,88 @@ enum ResolvedAttrib {
         size: usize,
         ty: u32,
         normalized: bool,
+        convert: Convert,
     },
 }
 
+/// The defaults of a missing element, in the form of an input of `kind`.
+fn defaults(kind: ValueKind) -> [f32; 4] {
+    match kind {
+        ValueKind::Float => [0.0, 0.0, 0.0, 1.0],
+        _ => [0, 0, 0, 1].map(f32::from_bits),
+    }
+}
+
+/// A stored value (`stored` as specified) in the form of an input of
+/// `kind`.
+fn as_input(v: [f32; 4], stored: ValueKind, kind: ValueKind) -> [f32; 4] {
+    match kind {
+        ValueKind::Float => float_view(v, stored),
+        _ => integer_bits(v, stored, kind).map(f32::from_bits),
+    }
+}
+
 impl ResolvedAttrib {
-    fn new(ctx: &Context, src: AttribSource) -> ResolvedAttrib {
+    fn new(ctx: &Context, src: AttribSource, kind: ValueKind) -> ResolvedAttrib {
         let Some(a) = ctx.va.array_for(src) else {
-            return ResolvedAttrib::Value(ctx.va.current_value(src));
+            let stored = match src {
+                AttribSource::Generic(i) => ctx
+                    .va
+                    .generic_kind
+                    .get(i as usize)
+                    .copied()
+                    .unwrap_or_default(),
+                _ => ValueKind::Float,
+            };
+            let v = match src {
+                AttribSource::Generic(i) => ctx.va.generic.get(i as usize).copied(),
+                _ => None,
+            };
+            return ResolvedAttrib::Value(match v {
+                Some(v) => as_input(v, stored, kind),
+                None => as_input(ctx.va.current_value(src), ValueKind::Float, kind),
+            });
         };
         let Some((bytes, base)) = ctx.array_bytes(a) else {
-            return ResolvedAttrib::Value([0.0, 0.0, 0.0, 1.0]);
+            return ResolvedAttrib::Value(defaults(kind));
         };
-        let cs = crate::vertex::type_size(a.ty).unwrap_or(4);
+        // The component count (or BGRA) as `read_element` takes it.
         let size = a.size.max(1) as usize;
-        ResolvedAttrib::Array {
+        let element = crate::vertex::element_size(a.size, a.ty).unwrap_or(16);
+        let convert = match (kind, a.integer) {
+            (ValueKind::Float, _) => Convert::Float,
+            (_, true) => Convert::Bits,
+            (k, false) => Convert::FloatToBits(k),
+        };
+        let r = ResolvedAttrib::Array {
             bytes,
             base,
             stride: if a.stride > 0 {
                 a.stride as usize
             } else {
-                cs * size
+                element
             },
             size,
             ty: a.ty,
-            normalized: a.normalized,
+            // An integer array is never normalized.
+            normalized: a.normalized && !a.integer,
+            convert,
+        };
+        match a.divisor {
+            0 => r,
+            divisor => ResolvedAttrib::PerInstance {
+                array: Box::new(r),
+                divisor,
+            },
         }
     }
 
-    /// What `Context::fetch_attrib` gives for element `index`: float
-    /// arrays read directly, other types through `read_element`.
-    fn read(&self, index: u32) -> [f32; 4] {
+    /// Element `index` in the input's form: float arrays read directly,
+    /// other types through `read_element` / `read_integer_element`.
+    fn read(&self, index: u32, instance: u32) -> [f32; 4] {
         match self {
             ResolvedAttrib::Value(v) => *v,
+            ResolvedAttrib::PerInstance { array, divisor } => array.read(instance / divisor, 0),
             ResolvedAttrib::Array {
                 bytes,
                 base,
@@ -75,8 +196,19 @@ impl ResolvedAttrib {
                 size,
                 ty,
                 normalized,
+                convert,
             } => {
                 let at = base.saturating_add(stride.saturating_mul(index as usize));
+                match convert {
+                    Convert::Float => {}
+                    Convert::Bits => {
+                        return read_integer_element(bytes, at, *size, *ty).map(f32::from_bits)
+                    }
+                    Convert::FloatToBits(k) => {
+                        let v = crate::vertex::read_element(bytes, at, *size, *ty, *normalized);
+                        return integer_bits(v, ValueKind::Float, *k).map(f32::from_bits);
+                    }
+                }
                 if *ty != GL_FLOAT {
                     return crate::vertex::read_element(bytes, at, *size, *ty, *normalized);
                 }
@@ -108,45 +240,86 @@ impl<'a> Fetcher<'a> {
         }
     }
 
-    /// The fetcher of a draw from arrays (`immediate: None`) or from
-    /// glBegin/glEnd vertices.
+    /// The fetcher of the instances `batch` of a draw from arrays
+    /// (`immediate: None`) or of glBegin/glEnd vertices, for the inputs
+    /// of `vs`.
     pub(crate) fn new(
         ctx: &'a Context,
-        slots: Vec<Option<AttribSource>>,
+        vs: &exec::Kernel,
         immediate: Option<&'a [ImmVertex]>,
+        batch: InstanceBatch,
     ) -> Fetcher<'a> {
+        let attribs = ctx.input_sources(vs);
+        let iface = vs.interface();
+        let slots: Vec<Option<InputSource>> = iface
+            .inputs
+            .iter()
+            .zip(attribs)
+            .map(|(s, a)| match s.name.as_str() {
+                "gl_VertexID" => Some(InputSource::VertexId),
+                "gl_InstanceID" => Some(InputSource::InstanceId),
+                _ => a.map(InputSource::Attrib),
+            })
+            .collect();
+        let kinds: Vec<ValueKind> = iface
+            .inputs
+            .iter()
+            .map(|s| match s.ty.scalar() {
+                Some(glsl::types::Scalar::Int) => ValueKind::Int,
+                Some(glsl::types::Scalar::Uint) => ValueKind::Uint,
+                _ => ValueKind::Float,
+            })
+            .collect();
         let resolved = if immediate.is_some() {
             Vec::new()
         } else {
             slots
                 .iter()
-                .map(|s| match s {
+                .zip(&kinds)
+                .map(|(s, &kind)| match s {
                     // Matrix attributes take a location per column.
-                    Some(AttribSource::Generic(l)) => (*l as usize..crate::MAX_VERTEX_ATTRIBS)
+                    Some(InputSource::Attrib(AttribSource::Generic(l))) => (*l as usize
+                        ..crate::MAX_VERTEX_ATTRIBS)
                         .take(4)
-                        .map(|loc| ResolvedAttrib::new(ctx, AttribSource::Generic(loc as u8)))
+                        .map(|loc| {
+                            let src = AttribSource::Generic(loc as u8);
+                            ResolvedAttrib::new(ctx, src, kind)
+                        })
                         .collect(),
-                    Some(src) => vec![ResolvedAttrib::new(ctx, *src)],
-                    None => Vec::new(),
+                    Some(InputSource::Attrib(src)) => {
+                        vec![ResolvedAttrib::new(ctx, *src, kind)]
+                    }
+                    Some(InputSource::InstanceId | InputSource::VertexId) | None => Vec::new(),
                 })
                 .collect()
         };
         Fetcher {
             ctx,
             slots,
+            kinds,
             immediate,
+            batch,
             resolved,
         }
     }
 
-    fn value(&self, src: AttribSource, index: u32) -> [f32; 4] {
-        match self.immediate {
-            Some(v) => v
-                .get(index as usize)
-                .map(|v| v.value(src))
-                .unwrap_or([0.0, 0.0, 0.0, 1.0]),
-            None => self.ctx.fetch_attrib(src, index),
-        }
+    /// Attribute `src` of glBegin/glEnd vertex `index`, as an input of
+    /// `kind`.
+    fn immediate_value(&self, src: AttribSource, index: u32, kind: ValueKind) -> [f32; 4] {
+        let Some(v) = self.immediate.and_then(|v| v.get(index as usize)) else {
+            return defaults(kind);
+        };
+        let stored = match src {
+            AttribSource::Generic(i) if i > 0 => self
+                .ctx
+                .va
+                .generic_kind
+                .get(i as usize)
+                .copied()
+                .unwrap_or_default(),
+            _ => ValueKind::Float,
+        };
+        as_input(v.value(src), stored, kind)
     }
 }
 
@@ -165,7 +338,10 @@ impl raster::VertexFetch for Fetcher<'_> {
         // Arrays of a draw from arrays: the source resolved once for the
         // whole list.
         match self.resolved_column(input_slot, column) {
-            Some(r) => raster::fetch_column_each(indices, out, |ix, v| *v = r.read(ix)),
+            Some(r) => raster::fetch_column_each(indices, out, |ix, v| {
+                let (index, instance) = self.batch.decode(ix);
+                *v = r.read(index, instance)
+            }),
             None => raster::fetch_column_each(indices, out, |ix, v| {
                 self.fetch_column(input_slot, column, ix, v)
             }),
@@ -179,20 +355,39 @@ impl raster::VertexFetch for Fetcher<'_> {
         vertex_index: u32,
         out: &mut [f32; 4],
     ) {
+        let kind = self.kinds.get(input_slot).copied().unwrap_or_default();
+        let (index, instance) = self.batch.decode(vertex_index);
+        match self.slots.get(input_slot) {
+            Some(Some(InputSource::VertexId)) if column == 0 => {
+                *out = [index, 0, 0, 1].map(f32::from_bits);
+                return;
+            }
+            Some(Some(InputSource::InstanceId)) if column == 0 => {
+                *out = [instance, 0, 0, 1].map(f32::from_bits);
+                return;
+            }
+            _ => {}
+        }
         if self.immediate.is_none() {
-            if let Some(r) = self.resolved_column(input_slot, column) {
-                *out = r.read(vertex_index);
+            match self.resolved_column(input_slot, column) {
+                Some(r) => *out = r.read(index, instance),
+                // No source: the defaults, as integers for an integer
+                // input (`out` starts as float ones).
+                None => *out = defaults(kind),
             }
             return;
         }
         match self.slots.get(input_slot) {
-            Some(Some(AttribSource::Generic(l))) => {
+            Some(Some(InputSource::Attrib(AttribSource::Generic(l)))) => {
                 let loc = *l as usize + column;
                 if loc < crate::MAX_VERTEX_ATTRIBS {
-                    *out = self.value(AttribSource::Generic(loc as u8), vertex_index);
+                    let src = AttribSource::Generic(loc as u8);
+                    *out = self.immediate_value(src, vertex_index, kind);
                 }
             }
-            Some(Some(src)) if column == 0 => *out = self.value(*src, vertex_index),
+            Some(Some(InputSource::Attrib(src))) if column == 0 => {
+                *out = self.immediate_value(*src, vertex_index, kind)
+            }
             _ => {}
         }
     }
@@ -206,6 +401,12 @@ impl Context {
         data: &ArrayData,
     ) -> Option<Indices> {
         let (bytes, base): (Arc<[u8]>, usize) = match data {
+            // Core contexts have no client index arrays (GL 3.3 core
+            // appendix E.2.2).
+            ArrayData::Client(_) if self.is_core() => {
+                self.set_error(GL_INVALID_OPERATION);
+                return None;
+            }
             ArrayData::Client(b) => (b.clone(), 0),
             ArrayData::Offset(off) => {
                 let b = self.va.element_buffer;

@@ -213,6 +213,8 @@ impl Context {
                 }])
             }
             GL_ARRAY_BUFFER_BINDING => int(&[self.va.array_buffer as i64]),
+            GL_VERTEX_ARRAY_BINDING => int(&[self.va.vao as i64]),
+            GL_PRIMITIVE_RESTART_INDEX => int(&[self.va.restart_index as i64]),
             GL_ELEMENT_ARRAY_BUFFER_BINDING => int(&[self.va.element_buffer as i64]),
             GL_PIXEL_PACK_BUFFER_BINDING => int(&[self.objects.pack_buffer as i64]),
             GL_PIXEL_UNPACK_BUFFER_BINDING => int(&[self.objects.unpack_buffer as i64]),

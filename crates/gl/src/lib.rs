@@ -59,10 +59,12 @@
 //!   uniforms), [`ffgen`] (fixed-function stages as GLSL).
 //! - State: [`state`] (the fixed-function state, capabilities),
 //!   [`transform`], [`shading`], [`rasterization`], [`per_fragment`],
-//!   [`vertex`] (arrays, current values, glBegin/glEnd), [`matrix`],
+//!   [`vertex`] (arrays, current values, glBegin/glEnd),
+//!   [`vertex_array`] (vertex array objects), [`matrix`],
 //!   [`param`] (the values of the glFog/glLight/glTexEnv... call families),
 //!   [`attrib_stack`], [`get`] (glGet*), [`occlusion`].
-//! - A draw: [`draw`] (the calls, glClear) puts together [`kernels`],
+//! - A draw: [`draw`] (the calls, glClear; [`restart`] splits at
+//!   primitive-restart indices) puts together [`kernels`],
 //!   [`fetch`], [`pipeline_state`], [`texture_units`] and
 //!   [`render_target`], with [`ff_fragment`] for the fixed-function
 //!   fragment stage and [`debug`] for probes.
@@ -102,6 +104,7 @@ pub mod program;
 pub mod rasterization;
 pub mod readback;
 pub mod render_target;
+pub(crate) mod restart;
 pub mod shading;
 pub mod state;
 pub mod texture_format;
@@ -111,6 +114,7 @@ pub mod transform;
 pub mod uniform;
 pub mod version;
 pub mod vertex;
+pub mod vertex_array;
 
 use enums::*;
 use std::collections::BTreeMap;

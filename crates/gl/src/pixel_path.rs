@@ -120,7 +120,12 @@ impl Context {
         let vertex = [self.va.snapshot(pos)];
         let mut batch = exec::Batch::for_kernel(&vs, 1);
         {
-            let fetch = Fetcher::new(self, self.input_sources(&vs), Some(&vertex));
+            let fetch = Fetcher::new(
+                self,
+                &vs,
+                Some(&vertex),
+                crate::fetch::InstanceBatch::one(0),
+            );
             raster::fetch_vertex(vs.interface(), &fetch, 0, &mut batch, 0);
         }
         vs.run(&mut batch, &words, &units).ok()?;

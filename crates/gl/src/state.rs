@@ -343,6 +343,7 @@ const CAPS: &[u32] = &[
     GL_FRAMEBUFFER_SRGB,
     GL_CLAMP_VERTEX_COLOR,
     GL_CLAMP_FRAGMENT_COLOR,
+    GL_PRIMITIVE_RESTART,
 ];
 
 /// Capabilities that apply to the active texture unit.

@@ -58,6 +58,12 @@ pub struct ArrayState {
     /// The buffer bound to GL_ARRAY_BUFFER at pointer time (0: client).
     pub buffer: u32,
     pub data: ArrayData,
+    /// Specified by glVertexAttribIPointer: the components are integers
+    /// handed to integer shader inputs unconverted (GL 3.3 §2.8).
+    pub integer: bool,
+    /// Instances per element (glVertexAttribDivisor; 0: one element per
+    /// vertex).
+    pub divisor: u32,
 }
 
 impl ArrayState {
@@ -70,7 +76,65 @@ impl ArrayState {
             stride: 0,
             buffer: 0,
             data: ArrayData::default(),
+            integer: false,
+            divisor: 0,
         }
+    }
+}
+
+/// How a current generic attribute value was specified (GL 3.3 §2.7:
+/// glVertexAttrib*, glVertexAttribI* with signed or unsigned values).
+/// Integer values are kept as their bits in the `f32` slots.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum ValueKind {
+    #[default]
+    Float,
+    Int,
+    Uint,
+}
+
+/// The state a vertex array object holds (GL 3.3 compatibility §2.10,
+/// Table 6.5-6.8): every array and the element-array buffer binding.
+/// The bound object's state lives in [`VertexState`]'s fields; the others
+/// are kept as this ([`crate::vertex_array`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct VaoArrays {
+    pub vertex_array: ArrayState,
+    pub normal_array: ArrayState,
+    pub color_array: ArrayState,
+    pub secondary_array: ArrayState,
+    pub fog_array: ArrayState,
+    pub tex_arrays: Vec<ArrayState>,
+    pub generic_arrays: Vec<ArrayState>,
+    pub element_buffer: u32,
+}
+
+impl VaoArrays {
+    /// A new object's state (GL 3.3 §2.10: the initial values of the
+    /// tables).
+    pub fn new() -> VaoArrays {
+        let mut normal_array = ArrayState::new(3);
+        normal_array.normalized = true;
+        let mut color_array = ArrayState::new(4);
+        color_array.normalized = true;
+        let mut secondary_array = ArrayState::new(3);
+        secondary_array.normalized = true;
+        VaoArrays {
+            vertex_array: ArrayState::new(4),
+            normal_array,
+            color_array,
+            secondary_array,
+            fog_array: ArrayState::new(1),
+            tex_arrays: vec![ArrayState::new(4); MAX_TEXTURE_UNITS],
+            generic_arrays: vec![ArrayState::new(4); MAX_VERTEX_ATTRIBS],
+            element_buffer: 0,
+        }
+    }
+}
+
+impl Default for VaoArrays {
+    fn default() -> Self {
+        VaoArrays::new()
     }
 }
 
@@ -127,6 +191,8 @@ pub struct VertexState {
     pub fog: [f32; 4],
     pub tex: [[f32; 4]; MAX_TEXTURE_UNITS],
     pub generic: [[f32; 4]; MAX_VERTEX_ATTRIBS],
+    /// How each current generic value was specified.
+    pub generic_kind: [ValueKind; MAX_VERTEX_ATTRIBS],
     pub vertex_array: ArrayState,
     pub normal_array: ArrayState,
     pub color_array: ArrayState,
@@ -139,6 +205,12 @@ pub struct VertexState {
     pub immediate: Vec<ImmVertex>,
     pub array_buffer: u32,
     pub element_buffer: u32,
+    /// The bound vertex array object (0: the default one).
+    pub vao: u32,
+    /// Every vertex array object name, and the state of those not bound.
+    pub(crate) vaos: std::collections::BTreeMap<u32, crate::vertex_array::VaoSlot>,
+    /// glPrimitiveRestartIndex.
+    pub restart_index: u32,
 }
 
 /// Vertices kept between glBegin and glEnd at most (more are dropped).
@@ -146,12 +218,16 @@ pub const MAX_IMMEDIATE_VERTICES: usize = 1 << 20;
 
 impl VertexState {
     pub fn new() -> VertexState {
-        let mut normal_array = ArrayState::new(3);
-        normal_array.normalized = true;
-        let mut color_array = ArrayState::new(4);
-        color_array.normalized = true;
-        let mut secondary_array = ArrayState::new(3);
-        secondary_array.normalized = true;
+        let VaoArrays {
+            vertex_array,
+            normal_array,
+            color_array,
+            secondary_array,
+            fog_array,
+            tex_arrays,
+            generic_arrays,
+            element_buffer,
+        } = VaoArrays::new();
         VertexState {
             color: [1.0; 4],
             secondary: [0.0, 0.0, 0.0, 1.0],
@@ -159,18 +235,22 @@ impl VertexState {
             fog: [0.0, 0.0, 0.0, 1.0],
             tex: [[0.0, 0.0, 0.0, 1.0]; MAX_TEXTURE_UNITS],
             generic: [[0.0, 0.0, 0.0, 1.0]; MAX_VERTEX_ATTRIBS],
-            vertex_array: ArrayState::new(4),
+            generic_kind: [ValueKind::Float; MAX_VERTEX_ATTRIBS],
+            vertex_array,
             normal_array,
             color_array,
             secondary_array,
-            fog_array: ArrayState::new(1),
-            tex_arrays: vec![ArrayState::new(4); MAX_TEXTURE_UNITS],
-            generic_arrays: vec![ArrayState::new(4); MAX_VERTEX_ATTRIBS],
+            fog_array,
+            tex_arrays,
+            generic_arrays,
             client_active_texture: 0,
             begin_mode: None,
             immediate: Vec::new(),
             array_buffer: 0,
-            element_buffer: 0,
+            element_buffer,
+            vao: 0,
+            vaos: [(0, crate::vertex_array::VaoSlot::Bound)].into(),
+            restart_index: 0,
         }
     }
 
@@ -213,12 +293,17 @@ impl VertexState {
                 .get(i as usize)
                 .copied()
                 .unwrap_or([0.0, 0.0, 0.0, 1.0]),
-            AttribSource::Generic(i) => self
-                .generic
-                .get(i as usize)
-                .copied()
-                .unwrap_or([0.0, 0.0, 0.0, 1.0]),
+            AttribSource::Generic(i) => match self.current_generic(i as usize) {
+                Some((v, kind)) => float_view(v, kind),
+                None => [0.0, 0.0, 0.0, 1.0],
+            },
         }
+    }
+
+    /// Current generic value `i` as stored (integer values as bits) and
+    /// how it was specified.
+    pub fn current_generic(&self, i: usize) -> Option<([f32; 4], ValueKind)> {
+        Some((*self.generic.get(i)?, *self.generic_kind.get(i)?))
     }
 
     pub(crate) fn snapshot(&self, position: [f32; 4]) -> ImmVertex {
@@ -262,26 +347,150 @@ impl ImmVertex {
     }
 }
 
-/// Bytes per component of an array type.
+/// A stored value as floats: integer values (kept as bits) converted.
+pub fn float_view(v: [f32; 4], kind: ValueKind) -> [f32; 4] {
+    match kind {
+        ValueKind::Float => v,
+        ValueKind::Int => v.map(|x| x.to_bits() as i32 as f32),
+        ValueKind::Uint => v.map(|x| x.to_bits() as f32),
+    }
+}
+
+/// A stored value as the bits of an integer shader input of `want`
+/// (Int or Uint): integer values as they are, float values converted
+/// (GL leaves a float value read by an integer input undefined; this is
+/// the value's integer part, saturated).
+pub fn integer_bits(v: [f32; 4], kind: ValueKind, want: ValueKind) -> [u32; 4] {
+    match kind {
+        ValueKind::Int | ValueKind::Uint => v.map(f32::to_bits),
+        ValueKind::Float if want == ValueKind::Uint => v.map(|x| x as u32),
+        ValueKind::Float => v.map(|x| x as i32 as u32),
+    }
+}
+
+/// Reads one element of an integer array (glVertexAttribIPointer):
+/// `size` components of `ty` at `at`, signed types sign-extended, missing
+/// components from (0, 0, 0, 1). Out-of-range reads give the defaults.
+pub fn read_integer_element(bytes: &[u8], at: usize, size: usize, ty: u32) -> [u32; 4] {
+    let mut out = [0, 0, 0, 1];
+    let Some(cs) = type_size(ty) else {
+        return out;
+    };
+    for (c, o) in out.iter_mut().enumerate().take(size.min(4)) {
+        let start = at.saturating_add(c * cs);
+        let Some(b) = bytes.get(start..start.saturating_add(cs)) else {
+            return [0, 0, 0, 1];
+        };
+        *o = match (ty, b) {
+            (GL_BYTE, [x]) => *x as i8 as i32 as u32,
+            (GL_UNSIGNED_BYTE, [x]) => *x as u32,
+            (GL_SHORT, [x, y]) => i16::from_le_bytes([*x, *y]) as i32 as u32,
+            (GL_UNSIGNED_SHORT, [x, y]) => u16::from_le_bytes([*x, *y]) as u32,
+            (_, [x, y, z, w]) => u32::from_le_bytes([*x, *y, *z, *w]),
+            _ => 0,
+        };
+    }
+    out
+}
+
+/// Bytes per component of an array type (none for the packed types,
+/// [`element_size`]).
 pub fn type_size(ty: u32) -> Option<usize> {
     Some(match ty {
         GL_BYTE | GL_UNSIGNED_BYTE => 1,
-        GL_SHORT | GL_UNSIGNED_SHORT => 2,
+        GL_SHORT | GL_UNSIGNED_SHORT | GL_HALF_FLOAT => 2,
         GL_INT | GL_UNSIGNED_INT | GL_FLOAT => 4,
         GL_DOUBLE => 8,
         _ => return None,
     })
 }
 
-/// Reads one element of an array: `size` components of `ty` starting at
-/// `at`, normalized per GL 2.1 Table 2.9 when asked, missing components
-/// from (0, 0, 0, 1). Out-of-range reads give the defaults.
+/// Whether `ty` packs a whole element into one 32-bit word (GL 3.3 §2.8:
+/// GL_INT_2_10_10_10_REV, GL_UNSIGNED_INT_2_10_10_10_REV).
+pub fn is_packed(ty: u32) -> bool {
+    matches!(ty, GL_INT_2_10_10_10_REV | GL_UNSIGNED_INT_2_10_10_10_REV)
+}
+
+/// The size a pointer call takes for four components in B, G, R, A
+/// order (GL 3.3 §2.8, ARB_vertex_array_bgra).
+pub const SIZE_BGRA: i32 = GL_BGRA as i32;
+
+/// Bytes of one element of an array of `size` components (or
+/// [`SIZE_BGRA`]) of `ty`.
+pub fn element_size(size: i32, ty: u32) -> Option<usize> {
+    if is_packed(ty) {
+        return Some(4);
+    }
+    let n = if size == SIZE_BGRA {
+        4
+    } else {
+        size.clamp(1, 4) as usize
+    };
+    Some(n * type_size(ty)?)
+}
+
+/// A half float's value (GL 3.3 §2.1.2).
+fn half_to_f32(h: u16) -> f32 {
+    let sign = if h & 0x8000 != 0 { -1.0 } else { 1.0 };
+    let e = ((h >> 10) & 0x1f) as i32;
+    let m = (h & 0x3ff) as f32;
+    sign * match e {
+        0 => m * (2.0f32).powi(-24),
+        31 if m == 0.0 => f32::INFINITY,
+        31 => f32::NAN,
+        _ => (1.0 + m / 1024.0) * (2.0f32).powi(e - 15),
+    }
+}
+
+/// The four fields of a packed 2_10_10_10 word (x in the low bits), as
+/// values (GL 3.3 §2.8, Table 2.7), normalized per §2.1.6 when asked.
+pub fn unpack_2_10_10_10(word: u32, ty: u32, normalized: bool) -> [f32; 4] {
+    let bits = [10u32, 10, 10, 2];
+    let mut out = [0.0; 4];
+    let mut shift = 0;
+    for (o, b) in out.iter_mut().zip(bits) {
+        let field = (word >> shift) & ((1 << b) - 1);
+        shift += b;
+        let max = ((1u32 << b) - 1) as f32;
+        *o = if ty == GL_INT_2_10_10_10_REV {
+            // Sign-extended from b bits.
+            let v = ((field << (32 - b)) as i32 >> (32 - b)) as f32;
+            if normalized {
+                (2.0 * v + 1.0) / max
+            } else {
+                v
+            }
+        } else if normalized {
+            field as f32 / max
+        } else {
+            field as f32
+        };
+    }
+    out
+}
+
+/// Reads one element of an array: `size` components (or
+/// [`SIZE_BGRA`], as usize) of `ty` starting at `at`, normalized per
+/// GL 2.1 Table 2.9 when asked, missing components from (0, 0, 0, 1).
+/// Out-of-range reads give the defaults.
 pub fn read_element(bytes: &[u8], at: usize, size: usize, ty: u32, normalized: bool) -> [f32; 4] {
+    let bgra = size == SIZE_BGRA as usize;
+    if is_packed(ty) {
+        let Some(&[a, b, c, d]) = bytes.get(at..at.saturating_add(4)) else {
+            return [0.0, 0.0, 0.0, 1.0];
+        };
+        let mut v = unpack_2_10_10_10(u32::from_le_bytes([a, b, c, d]), ty, normalized);
+        if bgra {
+            v.swap(0, 2);
+        }
+        return v;
+    }
     let mut out = [0.0, 0.0, 0.0, 1.0];
     let Some(cs) = type_size(ty) else {
         return out;
     };
-    for (c, o) in out.iter_mut().enumerate().take(size.min(4)) {
+    let n = if bgra { 4 } else { size.min(4) };
+    for (c, o) in out.iter_mut().enumerate().take(n) {
         let start = at.saturating_add(c * cs);
         let Some(b) = bytes.get(start..start.saturating_add(cs)) else {
             return [0.0, 0.0, 0.0, 1.0];
@@ -338,8 +547,12 @@ pub fn read_element(bytes: &[u8], at: usize, size: usize, ty: u32, normalized: b
                 }
             }
             GL_FLOAT => f32::from_le_bytes([raw[0], raw[1], raw[2], raw[3]]),
+            GL_HALF_FLOAT => half_to_f32(u16::from_le_bytes([raw[0], raw[1]])),
             _ => f64::from_le_bytes(raw) as f32,
         };
+    }
+    if bgra {
+        out.swap(0, 2);
     }
     out
 }
@@ -364,11 +577,10 @@ impl Context {
                 let Some((bytes, base)) = self.array_bytes(a) else {
                     return [0.0, 0.0, 0.0, 1.0];
                 };
-                let cs = type_size(a.ty).unwrap_or(4);
                 let stride = if a.stride > 0 {
                     a.stride as usize
                 } else {
-                    cs * a.size.max(1) as usize
+                    element_size(a.size, a.ty).unwrap_or(16)
                 };
                 let at = base.saturating_add(stride.saturating_mul(index as usize));
                 read_element(&bytes, at, a.size.max(1) as usize, a.ty, a.normalized)
@@ -473,6 +685,17 @@ impl Context {
             return;
         }
         let buffer = self.va.array_buffer;
+        // Client memory is the default object's alone (GL 3.3 §2.8: a
+        // non-null pointer with no buffer bound while a vertex array
+        // object is bound).
+        // The core profile has no default object and no client arrays
+        // (GL 3.3 core appendix E.2.2).
+        if (self.va.vao != 0 && buffer == 0 && !matches!(data, ArrayData::Offset(0)))
+            || (self.is_core() && self.va.vao == 0)
+        {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
         let unit = self.va.client_active_texture as usize;
         let a = match which {
             PointerTarget::Vertex => &mut self.va.vertex_array,
@@ -484,13 +707,15 @@ impl Context {
                 Some(a) => a,
                 None => return,
             },
-            PointerTarget::Generic(i) => match self.va.generic_arrays.get_mut(i as usize) {
-                Some(a) => a,
-                None => {
-                    self.set_error(GL_INVALID_VALUE);
-                    return;
+            PointerTarget::Generic(i) | PointerTarget::GenericInteger(i) => {
+                match self.va.generic_arrays.get_mut(i as usize) {
+                    Some(a) => a,
+                    None => {
+                        self.set_error(GL_INVALID_VALUE);
+                        return;
+                    }
                 }
-            },
+            }
         };
         a.size = size;
         a.ty = ty;
@@ -498,6 +723,7 @@ impl Context {
         a.stride = stride;
         a.buffer = buffer;
         a.data = data;
+        a.integer = matches!(which, PointerTarget::GenericInteger(_));
     }
 
     /// glVertexPointer.
@@ -593,16 +819,148 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
+        let sizes = [1, 2, 3, 4, SIZE_BGRA];
+        let types = [
+            GL_BYTE,
+            GL_UNSIGNED_BYTE,
+            GL_SHORT,
+            GL_UNSIGNED_SHORT,
+            GL_INT,
+            GL_UNSIGNED_INT,
+            GL_FLOAT,
+            GL_DOUBLE,
+            GL_HALF_FLOAT,
+            GL_INT_2_10_10_10_REV,
+            GL_UNSIGNED_INT_2_10_10_10_REV,
+        ];
+        // GL 3.3 §2.8: BGRA only for unsigned bytes and the packed types,
+        // normalized; the packed types only with four components.
+        let bgra = size == SIZE_BGRA;
+        if sizes.contains(&size)
+            && types.contains(&ty)
+            && stride >= 0
+            && ((bgra && !(ty == GL_UNSIGNED_BYTE || is_packed(ty)))
+                || (is_packed(ty) && !(size == 4 || bgra))
+                || (bgra && !normalized))
+        {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
         self.set_pointer(
             PointerTarget::Generic(index),
             size,
-            &[1, 2, 3, 4],
+            &sizes,
             ty,
-            &ALL_TYPES,
+            &types,
             normalized,
             stride,
             data,
         );
+    }
+
+    /// glVertexAttribIPointer: integer components, never converted
+    /// (GL 3.3 §2.8; float types are GL_INVALID_ENUM).
+    pub fn vertex_attrib_i_pointer(
+        &mut self,
+        index: u32,
+        size: i32,
+        ty: u32,
+        stride: i32,
+        data: ArrayData,
+    ) {
+        if index as usize >= MAX_VERTEX_ATTRIBS {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.set_pointer(
+            PointerTarget::GenericInteger(index),
+            size,
+            &[1, 2, 3, 4],
+            ty,
+            &INTEGER_TYPES,
+            false,
+            stride,
+            data,
+        );
+    }
+
+    /// glVertexAttribP{1,2,3,4}ui: the first `components` fields of a
+    /// packed 2_10_10_10 word (GL 3.3 §2.7), the others from (0, 0, 0, 1).
+    pub fn vertex_attrib_p(
+        &mut self,
+        index: u32,
+        ty: u32,
+        normalized: bool,
+        components: usize,
+        value: u32,
+    ) {
+        if !is_packed(ty) {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        let mut v = [0.0, 0.0, 0.0, 1.0];
+        let fields = unpack_2_10_10_10(value, ty, normalized);
+        v[..components.min(4)].copy_from_slice(&fields[..components.min(4)]);
+        self.vertex_attrib_4f(index, v[0], v[1], v[2], v[3]);
+    }
+
+    /// glVertexAttribDivisor (GL 3.3 §2.8.2).
+    pub fn vertex_attrib_divisor(&mut self, index: u32, divisor: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        match self.va.generic_arrays.get_mut(index as usize) {
+            Some(a) => a.divisor = divisor,
+            None => self.set_error(GL_INVALID_VALUE),
+        }
+    }
+
+    /// glVertexAttribI4i (the other glVertexAttribI* forms fill in
+    /// (0, 0, 0, 1) and call this or [`Context::vertex_attrib_i4ui`]).
+    /// Index 0 inside glBegin/glEnd emits a vertex, as glVertexAttrib4f.
+    pub fn vertex_attrib_i4i(&mut self, index: u32, v: [i32; 4]) {
+        self.set_integer_attrib(index, v.map(|x| x as u32), ValueKind::Int);
+    }
+
+    /// glVertexAttribI4ui.
+    pub fn vertex_attrib_i4ui(&mut self, index: u32, v: [u32; 4]) {
+        self.set_integer_attrib(index, v, ValueKind::Uint);
+    }
+
+    fn set_integer_attrib(&mut self, index: u32, v: [u32; 4], kind: ValueKind) {
+        if index as usize >= MAX_VERTEX_ATTRIBS {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        let f = float_view(v.map(f32::from_bits), kind);
+        if index == 0 {
+            self.vertex_4f(f[0], f[1], f[2], f[3]);
+        }
+        self.va.generic[index as usize] = v.map(f32::from_bits);
+        self.va.generic_kind[index as usize] = kind;
+    }
+
+    /// glGetVertexAttribI{i,ui}v with GL_CURRENT_VERTEX_ATTRIB: the
+    /// current value's integer bits (a float value converted).
+    pub fn get_current_vertex_attrib_integer(&mut self, index: u32, unsigned: bool) -> [u32; 4] {
+        if index == 0 || index as usize >= MAX_VERTEX_ATTRIBS {
+            self.set_error(if index == 0 {
+                GL_INVALID_OPERATION
+            } else {
+                GL_INVALID_VALUE
+            });
+            return [0; 4];
+        }
+        let want = if unsigned {
+            ValueKind::Uint
+        } else {
+            ValueKind::Int
+        };
+        integer_bits(
+            self.va.generic[index as usize],
+            self.va.generic_kind[index as usize],
+            want,
+        )
     }
 
     // ---- current values ----
@@ -724,6 +1082,7 @@ impl Context {
             self.vertex_4f(x, y, z, w);
         }
         self.va.generic[index as usize] = [x, y, z, w];
+        self.va.generic_kind[index as usize] = ValueKind::Float;
     }
 
     /// glVertexAttrib1f.
@@ -762,7 +1121,8 @@ impl Context {
             });
             return [0.0; 4];
         }
-        self.va.generic[index as usize]
+        let i = index as usize;
+        float_view(self.va.generic[i], self.va.generic_kind[i])
     }
 
     // ---- glBegin / glEnd ----
@@ -844,6 +1204,15 @@ const ALL_TYPES: [u32; 8] = [
     GL_DOUBLE,
 ];
 
+const INTEGER_TYPES: [u32; 6] = [
+    GL_BYTE,
+    GL_UNSIGNED_BYTE,
+    GL_SHORT,
+    GL_UNSIGNED_SHORT,
+    GL_INT,
+    GL_UNSIGNED_INT,
+];
+
 #[derive(Clone, Copy)]
 enum PointerTarget {
     Vertex,
@@ -853,6 +1222,8 @@ enum PointerTarget {
     Fog,
     TexCoord,
     Generic(u32),
+    /// glVertexAttribIPointer.
+    GenericInteger(u32),
 }
 
 #[cfg(test)]
@@ -917,6 +1288,87 @@ mod tests {
         ctx.vertex_pointer(4, GL_UNSIGNED_BYTE, 0, ArrayData::Offset(0));
         assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
         ctx.enable_client_state(GL_LIGHTING);
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    }
+
+    #[test]
+    fn half_packed_and_bgra_elements() {
+        // 1.0, -2.0, 0.5 as half floats; a subnormal; infinity.
+        let halves: Vec<u8> = [0x3c00u16, 0xc000, 0x3800, 0x0001, 0x7c00]
+            .iter()
+            .flat_map(|h| h.to_le_bytes())
+            .collect();
+        assert_eq!(
+            read_element(&halves, 0, 3, GL_HALF_FLOAT, false),
+            [1.0, -2.0, 0.5, 1.0]
+        );
+        assert_eq!(
+            read_element(&halves, 6, 2, GL_HALF_FLOAT, false),
+            [2.0f32.powi(-24), f32::INFINITY, 0.0, 1.0]
+        );
+        // x = 1023, y = -512 (signed), z = 5, w = 3 / -1.
+        let word: u32 = 1023 | (512 << 10) | (5 << 20) | (3 << 30);
+        let b = word.to_le_bytes();
+        assert_eq!(
+            read_element(&b, 0, 4, GL_UNSIGNED_INT_2_10_10_10_REV, false),
+            [1023.0, 512.0, 5.0, 3.0]
+        );
+        assert_eq!(
+            read_element(&b, 0, 4, GL_INT_2_10_10_10_REV, false),
+            [-1.0, -512.0, 5.0, -1.0]
+        );
+        assert_eq!(
+            read_element(&b, 0, 4, GL_UNSIGNED_INT_2_10_10_10_REV, true),
+            [1.0, 512.0 / 1023.0, 5.0 / 1023.0, 1.0]
+        );
+        // Signed normalization (2c + 1) / (2^b - 1): -512 gives -1.
+        assert_eq!(read_element(&b, 0, 4, GL_INT_2_10_10_10_REV, true)[1], -1.0);
+        assert_eq!(
+            read_element(
+                &b,
+                0,
+                SIZE_BGRA as usize,
+                GL_UNSIGNED_INT_2_10_10_10_REV,
+                false
+            ),
+            [5.0, 512.0, 1023.0, 3.0]
+        );
+        assert_eq!(
+            read_element(
+                &[255, 0, 51, 255],
+                0,
+                SIZE_BGRA as usize,
+                GL_UNSIGNED_BYTE,
+                true
+            ),
+            [0.2, 0.0, 1.0, 1.0]
+        );
+        assert_eq!(element_size(SIZE_BGRA, GL_UNSIGNED_BYTE), Some(4));
+        assert_eq!(element_size(4, GL_INT_2_10_10_10_REV), Some(4));
+        assert_eq!(element_size(3, GL_HALF_FLOAT), Some(6));
+    }
+
+    #[test]
+    fn bgra_and_packed_pointer_rules() {
+        let mut ctx = Context::new(4, 4);
+        let d = || ArrayData::Offset(0);
+        ctx.vertex_attrib_pointer(1, SIZE_BGRA, GL_UNSIGNED_BYTE, true, 0, d());
+        ctx.vertex_attrib_pointer(1, 4, GL_INT_2_10_10_10_REV, true, 0, d());
+        ctx.vertex_attrib_pointer(1, 3, GL_HALF_FLOAT, false, 0, d());
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        ctx.vertex_attrib_pointer(1, SIZE_BGRA, GL_UNSIGNED_BYTE, false, 0, d());
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.vertex_attrib_pointer(1, SIZE_BGRA, GL_FLOAT, true, 0, d());
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.vertex_attrib_pointer(1, 3, GL_UNSIGNED_INT_2_10_10_10_REV, true, 0, d());
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.vertex_attrib_i_pointer(1, 4, GL_INT_2_10_10_10_REV, 0, d());
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+        ctx.vertex_attrib_i_pointer(1, SIZE_BGRA, GL_UNSIGNED_BYTE, 0, d());
+        assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+        ctx.vertex_attrib_p(2, GL_UNSIGNED_INT_2_10_10_10_REV, false, 3, 7 | (3 << 30));
+        assert_eq!(ctx.get_current_vertex_attrib(2), [7.0, 0.0, 0.0, 1.0]);
+        ctx.vertex_attrib_p(2, GL_FLOAT, false, 4, 0);
         assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
     }
 

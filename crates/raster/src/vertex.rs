@@ -24,6 +24,9 @@ pub trait VertexFetch: Sync {
     /// Writes the attribute of vertex-kernel input slot `input_slot`
     /// (an index into `Interface::inputs`) for `vertex_index`. `out` starts
     /// as (0, 0, 0, 1); components the array does not provide stay so.
+    /// An integer input's components are the integers' bits
+    /// (`exec::Batch::inputs`), which the fetcher writes, defaults
+    /// included.
     fn fetch(&self, input_slot: usize, vertex_index: u32, out: &mut [f32; 4]);
 
     /// Column `column` of a matrix attribute (matrix attributes take one

@@ -7,6 +7,7 @@ use super::gl_api::GlApi;
 use super::run::Verdict;
 use super::script::Script;
 use super::{execute_on, Options};
+use gl::enums::*;
 use gl::{ArrayData, Param};
 
 /// Creates the script's context and runs it. (`gl::Context::new` always has
@@ -15,6 +16,13 @@ use gl::{ArrayData, Param};
 pub fn execute(opts: &Options, name: &str, script: &Script) -> (Verdict, String, String) {
     let window = super::run::window_config(script);
     let mut ctx = gl::Context::with_api(window.width, window.height, window.api);
+    // Core contexts draw only with a vertex array object bound; piglit
+    // binds one for the whole test.
+    if window.api.is_core() {
+        if let Some(&vao) = ctx.gen_vertex_arrays(1).first() {
+            ctx.bind_vertex_array(vao);
+        }
+    }
     execute_on(&mut ctx, opts, name, script)
 }
 
@@ -231,7 +239,36 @@ impl GlApi for gl::Context {
         gl::Context::disable_client_state(self, array)
     }
     fn vertex_attrib_pointer(&mut self, i: u32, s: i32, ty: u32, n: bool, st: i32, d: &[f32]) {
-        gl::Context::vertex_attrib_pointer(self, i, s, ty, n, st, ArrayData::from_f32(d))
+        if !self.is_core() {
+            return gl::Context::vertex_attrib_pointer(
+                self,
+                i,
+                s,
+                ty,
+                n,
+                st,
+                ArrayData::from_f32(d),
+            );
+        }
+        // Core contexts have no client arrays: the data goes into the
+        // buffer the attribute already reads (or a new one), as piglit
+        // does for its rectangles there.
+        let bound = self.get_vertex_attrib_array(i, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING);
+        let buffer = match bound {
+            Some(b) if b > 0 => b as u32,
+            _ => self.gen_buffers(1).first().copied().unwrap_or(0),
+        };
+        let previous = self.bound_buffer(GL_ARRAY_BUFFER);
+        self.bind_buffer(GL_ARRAY_BUFFER, buffer);
+        let bytes = f32_bytes(d);
+        self.buffer_data(
+            GL_ARRAY_BUFFER,
+            bytes.len() as isize,
+            Some(&bytes),
+            GL_STREAM_DRAW,
+        );
+        gl::Context::vertex_attrib_pointer(self, i, s, ty, n, st, ArrayData::Offset(0));
+        self.bind_buffer(GL_ARRAY_BUFFER, previous);
     }
     fn enable_vertex_attrib_array(&mut self, index: u32) {
         gl::Context::enable_vertex_attrib_array(self, index)

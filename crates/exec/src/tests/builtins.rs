@@ -337,11 +337,6 @@ fn what_the_pipeline_cannot_run_is_refused_when_lowered() {
             "#version 130\nuniform sampler2D s;\nvoid main() { gl_FragColor = vec4(textureSize(s, 0), 0.0, 1.0); }",
             "textureSize",
         ),
-        (
-            Stage::Vertex,
-            "#version 130\nvoid main() { gl_Position = vec4(float(gl_VertexID)); }",
-            "gl_VertexID",
-        ),
     ] {
         let s = super::link_one(stage, src).unwrap_or_else(|e| panic!("{e}"));
         match crate::Kernel::new(&s) {
