@@ -735,6 +735,10 @@ pub struct GeometryLayout {
 pub struct FragCoordConventions {
     pub origin_upper_left: bool,
     pub pixel_center_integer: bool,
+    /// The shader redeclares `gl_FragCoord` (with these qualifiers or
+    /// none): the linker compares the redeclarations of a program's
+    /// fragment shader objects.
+    pub redeclared: bool,
 }
 
 impl Module {

@@ -465,9 +465,18 @@ fn merge_stage(
         }
         merge_blocks(&mut merged, m, &map, obj, diags, &mut errors);
         merge_geometry_layout(&mut merged.geometry, &m.geometry, obj, diags, &mut errors);
-        merged.frag_coord.origin_upper_left |= m.frag_coord.origin_upper_left;
-        merged.frag_coord.pixel_center_integer |= m.frag_coord.pixel_center_integer;
+        merge_frag_coord(
+            &mut merged.frag_coord,
+            &m.frag_coord,
+            obj,
+            diags,
+            &mut errors,
+        );
         remaps.push((obj, m, map));
+    }
+    let objects: Vec<(usize, &ir::Module)> = remaps.iter().map(|(o, m, _)| (*o, *m)).collect();
+    if !check_frag_coord_redeclared(&objects, diags) {
+        errors = true;
     }
 
     // Functions: definitions first, so prototypes resolve to them.
@@ -706,6 +715,62 @@ fn merge_stage(
 
 /// Adds one geometry shader object's layouts to the stage's: every object
 /// that declares one declares the same (GLSL 1.50 §4.3.8.1-2).
+/// GLSL 1.50 §4.3.8.1: every redeclaration of `gl_FragCoord` in a
+/// program's fragment shader objects has the same qualifiers (checked
+/// here, object by object); the objects that use it without redeclaring
+/// it while another redeclares it are found by
+/// [`check_frag_coord_redeclared`].
+fn merge_frag_coord(
+    merged: &mut ir::FragCoordConventions,
+    m: &ir::FragCoordConventions,
+    obj: usize,
+    diags: &mut Vec<LinkDiagnostic>,
+    errors: &mut bool,
+) {
+    if !m.redeclared {
+        return;
+    }
+    if merged.redeclared && merged != m {
+        *errors = true;
+        push(
+            diags,
+            Some(obj),
+            Code::LinkInterfaceMismatch,
+            "the fragment shader objects redeclare `gl_FragCoord' with different layout qualifiers",
+        );
+        return;
+    }
+    *merged = *m;
+}
+
+/// GLSL 1.50 §4.3.8.1: once one fragment shader object redeclares
+/// `gl_FragCoord`, every object that statically uses it redeclares it.
+fn check_frag_coord_redeclared(
+    objects: &[(usize, &ir::Module)],
+    diags: &mut Vec<LinkDiagnostic>,
+) -> bool {
+    if !objects.iter().any(|(_, m)| m.frag_coord.redeclared) {
+        return true;
+    }
+    let mut ok = true;
+    for &(obj, m) in objects {
+        let uses = m
+            .globals
+            .iter()
+            .any(|g| g.builtin && g.name == "gl_FragCoord" && (g.read || g.written));
+        if uses && !m.frag_coord.redeclared {
+            ok = false;
+            push(
+                diags,
+                Some(obj),
+                Code::LinkInterfaceMismatch,
+                "this fragment shader object uses `gl_FragCoord' without redeclaring it, while another redeclares it; redeclare it the same way in every object that uses it",
+            );
+        }
+    }
+    ok
+}
+
 fn merge_geometry_layout(
     merged: &mut ir::GeometryLayout,
     m: &ir::GeometryLayout,

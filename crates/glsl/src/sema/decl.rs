@@ -598,6 +598,7 @@ impl Analyzer {
             let conv = ir::FragCoordConventions {
                 origin_upper_left: l.origin_upper_left.is_some(),
                 pixel_center_integer: l.pixel_center_integer.is_some(),
+                redeclared: true,
             };
             // GL_ARB_fragment_coord_conventions: every redeclaration has
             // the same layout, and comes before any use.

@@ -458,6 +458,30 @@ fn built_in_colors_match_gl_color_interpolation() {
 }
 
 #[test]
+fn frag_coord_redeclarations_agree_across_objects() {
+    let vs = vert("#version 150\nin vec4 p; void main() { gl_Position = p; }");
+    let main = |decl: &str| {
+        frag(&format!(
+            "#version 150\n{decl}\nvoid foo();\nvoid main() {{ gl_FragColor = gl_FragCoord; foo(); }}"
+        ))
+    };
+    let foo =
+        |decl: &str, body: &str| frag(&format!("#version 150\n{decl}\nvoid foo() {{ {body} }}"));
+    let link = |a: &Shader, b: &Shader| crate::link::link(&[&vs, a, b]);
+    let ul = "layout(origin_upper_left) in vec4 gl_FragCoord;";
+    let both = "layout(origin_upper_left, pixel_center_integer) in vec4 gl_FragCoord;";
+    assert!(link(&main(ul), &foo(ul, "")).ok());
+    assert!(
+        !link(&main(ul), &foo(both, "")).ok(),
+        "different qualifiers"
+    );
+    // An object that uses gl_FragCoord must redeclare it as the others do;
+    // one that does not use it need not.
+    assert!(!link(&main(ul), &foo("", "vec4 x = gl_FragCoord;")).ok());
+    assert!(link(&main(ul), &foo("", "")).ok());
+}
+
+#[test]
 fn integer_members_of_fragment_input_blocks_are_flat() {
     fails(
         &frag("#version 150\nin B { int i; } b; void main() {}"),

@@ -161,7 +161,10 @@ fn build_env(lang: Language, stage: Stage) -> BuiltinEnv {
     let text = crate::builtins::prelude(lang, stage);
     let mut map = SourceMap::new("<built-ins>", text);
     let mut opts = crate::pp::PpOptions::new(stage);
-    opts.compatibility_context = lang.profile == Profile::Compatibility;
+    // The prelude's own #version is never refused: GLSL 1.10/1.20 exist
+    // only in compatibility contexts, whatever profile the key names.
+    opts.compatibility_context =
+        lang.profile == Profile::Compatibility || lang.version < crate::lang::Version::V130;
     let pp = crate::pp::preprocess(&mut map, &opts);
     let (tu, parse_diags) = crate::parse::parse(&pp.tokens, lang);
     let mut a = Analyzer::new(lang, stage, None);
