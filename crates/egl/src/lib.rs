@@ -8,7 +8,10 @@
 //! directory a program's `LD_LIBRARY_PATH` names: `libEGL.so.1`,
 //! `libGL.so.1` and `libOpenGL.so.0`, three names of the one file (one
 //! inode, so the dynamic loader maps it once and EGL and GL share the
-//! current context). docs/EGL.md says how to run a program on it.
+//! current context). The same file is a GLVND EGL vendor library
+//! ([`glvnd`]: `__egl_Main`), which the system's libglvnd `libEGL.so.1`
+//! loads from a vendor JSON file (`DIR/glvnd/50_shaderbox.json`).
+//! docs/EGL.md says how to run a program either way.
 //!
 //! ## Contract
 //! - Displays ([`display`]): `EGL_DEFAULT_DISPLAY`, the surfaceless platform
@@ -43,7 +46,9 @@
 //!   [`objects`]: the table of live surfaces, contexts and syncs.
 //! - [`display`], [`config`], [`surface`], [`context`], [`current`],
 //!   [`sync`] (fences, images): the entry points, by job.
-//! - [`glx`]: the GLX names; [`procs`]: eglGetProcAddress, on top.
+//! - [`glx`]: the GLX names; [`procs`]: eglGetProcAddress.
+//! - [`glvnd`]: `__egl_Main`, the GLVND vendor interface (on top: the
+//!   same file is a vendor library of the system's libglvnd `libEGL.so.1`).
 //!
 //! ## Limitations
 //! - A read surface different from the draw surface is reserved, but
@@ -57,6 +62,7 @@ pub mod context;
 pub mod current;
 pub mod display;
 pub mod error;
+pub mod glvnd;
 pub mod glx;
 pub mod handles;
 pub mod objects;

@@ -18,9 +18,11 @@ use pyo3::types::PyBytes;
 use std::path::PathBuf;
 use std::sync::{Mutex, MutexGuard};
 
-// The OSMesa + gl* C ABI, linked into this extension so that its
-// `#[no_mangle]` symbols are exported from it (see shaderbox/pyopengl.py).
+// The OSMesa + gl* C ABI and the EGL one, linked into this extension so
+// that their `#[no_mangle]` symbols are exported from it (see
+// shaderbox/pyopengl.py and shaderbox/egl.py).
 extern crate capi as _;
+extern crate egl as _;
 
 type DiagTuple = (
     Option<&'static str>,

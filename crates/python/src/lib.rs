@@ -22,7 +22,9 @@
 //! the loaded module exports `OSMesaCreateContextExt`, `glDrawArrays`, ...
 //! with C linkage: `import shaderbox.pyopengl` points PyOpenGL's OSMesa
 //! platform at this very file, so PyOpenGL code runs on shaderbox without
-//! environment variables or a separate `libOSMesa.so`.
+//! environment variables or a separate `libOSMesa.so`. It links
+//! `shaderbox-egl` too (the EGL 1.5 C ABI: `eglGetDisplay`, ...), which
+//! `import shaderbox.egl` points PyOpenGL's EGL platform at the same way.
 //!
 //! ## Contract
 //! - No call panics on any Python input: sizes, names, enums and lengths

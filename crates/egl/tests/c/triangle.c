@@ -21,6 +21,8 @@ typedef unsigned int EGLBoolean, EGLenum;
 #define EGL_NO_SURFACE ((EGLSurface)0)
 #define EGL_DEFAULT_DISPLAY ((void *)0)
 #define EGL_NONE 0x3038
+#define EGL_EXTENSIONS 0x3055
+#define EGL_VENDOR 0x3053
 #define EGL_DEPTH_SIZE 0x3025
 #define EGL_RED_SIZE 0x3024
 #define EGL_SURFACE_TYPE 0x3033
@@ -46,9 +48,11 @@ EGLBoolean eglDestroyContext(EGLDisplay, EGLContext);
 EGLBoolean eglTerminate(EGLDisplay);
 EGLBoolean eglReleaseThread(void);
 EGLint eglGetError(void);
+const char *eglQueryString(EGLDisplay, EGLint);
 void (*eglGetProcAddress(const char *))(void);
 typedef EGLBoolean (*PFNEGLQUERYDEVICESEXTPROC)(EGLint, EGLDeviceEXT *, EGLint *);
 typedef EGLDisplay (*PFNEGLGETPLATFORMDISPLAYEXTPROC)(EGLenum, void *, const EGLint *);
+typedef const char *(*PFNEGLQUERYDEVICESTRINGEXTPROC)(EGLDeviceEXT, EGLint);
 
 typedef unsigned int GLenum;
 typedef unsigned int GLuint;
@@ -69,6 +73,7 @@ typedef unsigned int GLbitfield;
 #define GL_FRAMEBUFFER_COMPLETE 0x8CD5
 #define GL_VERSION 0x1F02
 #define GL_RENDERER 0x1F01
+#define GL_VENDOR 0x1F00
 
 static void (*Clear)(GLbitfield);
 static void (*ClearColor)(GLfloat, GLfloat, GLfloat, GLfloat);
@@ -133,6 +138,11 @@ int main(int argc, char **argv) {
         EGLDeviceEXT devices[4];
         EGLint n = 0;
         CHECK(queryDevices(4, devices, &n) && n == 1);
+        PFNEGLQUERYDEVICESTRINGEXTPROC queryDeviceString =
+            (PFNEGLQUERYDEVICESTRINGEXTPROC)eglGetProcAddress("eglQueryDeviceStringEXT");
+        CHECK(queryDeviceString);
+        const char *devext = queryDeviceString(devices[0], EGL_EXTENSIONS);
+        CHECK(devext && strstr(devext, "EGL_MESA_device_software"));
         dpy = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[0], NULL);
     } else {
         dpy = eglGetDisplay(EGL_DEFAULT_DISPLAY);
@@ -170,7 +180,8 @@ int main(int argc, char **argv) {
     LOAD(CheckFramebufferStatus, "glCheckFramebufferStatusEXT");
     LOAD(GetString, "glGetString");
     LOAD(GetError, "glGetError");
-    printf("GL_RENDERER: %s\nGL_VERSION: %s\n", GetString(GL_RENDERER), GetString(GL_VERSION));
+    printf("EGL_VENDOR: %s\nGL_VENDOR: %s\nGL_RENDERER: %s\nGL_VERSION: %s\n", eglQueryString(dpy, EGL_VENDOR),
+           GetString(GL_VENDOR), GetString(GL_RENDERER), GetString(GL_VERSION));
     GLuint fbo, rb;
     GenFramebuffers(1, &fbo);
     BindFramebuffer(GL_FRAMEBUFFER, fbo);
