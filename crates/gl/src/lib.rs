@@ -106,6 +106,7 @@ pub mod texture_units;
 pub mod textures;
 pub mod transform;
 pub mod uniform;
+pub mod uniform_block;
 pub mod vertex;
 
 use enums::*;

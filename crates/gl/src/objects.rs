@@ -19,6 +19,8 @@ use std::sync::Arc;
 pub struct BufferObj {
     pub data: Arc<[u8]>,
     pub usage: u32,
+    /// The mapped range, while mapped ([`crate::buffers`]).
+    pub map: Option<crate::buffers::BufferMap>,
 }
 
 /// One mipmap level (or cube face level) of a texture.
@@ -148,6 +150,8 @@ pub struct Objects {
     /// moves pixels through them; the context only keeps the names).
     pub pack_buffer: u32,
     pub unpack_buffer: u32,
+    /// The GL 3.x buffer targets and indexed binding points.
+    pub buffer_targets: crate::buffers::BufferTargets,
 }
 
 /// Texture targets in binding-table order.
@@ -184,6 +188,7 @@ impl Objects {
             read_framebuffer: 0,
             pack_buffer: 0,
             unpack_buffer: 0,
+            buffer_targets: crate::buffers::BufferTargets::default(),
         }
     }
 

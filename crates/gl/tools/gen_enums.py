@@ -2,7 +2,7 @@
 """Generates crates/gl/src/enums.rs from the system GL headers.
 
 Takes every `#define GL_NAME 0x...` of gl.h (GL 1.0-1.3) and of the glext.h
-sections listed in SECTIONS (GL 1.2-3.0 and the framebuffer-object and
+sections listed in SECTIONS (GL 1.2-3.1 and the framebuffer-object and
 float-texture extensions shaderbox implements). Values are GL's.
 Usage: python3 tools/gen_enums.py /usr/include/GL > src/enums.rs
 """
@@ -15,7 +15,7 @@ SECTIONS = ["GL_VERSION_1_2", "GL_VERSION_1_3", "GL_VERSION_1_4", "GL_VERSION_1_
             "GL_ARB_multitexture", "GL_EXT_packed_depth_stencil", "GL_ARB_depth_buffer_float",
             "GL_ARB_point_sprite", "GL_ARB_vertex_program", "GL_ARB_fragment_program",
             "GL_EXT_texture_lod_bias", "GL_ARB_texture_rectangle", "GL_EXT_gpu_shader4",
-            "GL_ARB_color_buffer_float"]
+            "GL_ARB_color_buffer_float", "GL_VERSION_3_1"]
 DEF = re.compile(r"^#define\s+(GL_\w+)\s+(0x[0-9A-Fa-f]+|\d+)\s*$")
 
 def defines(lines):
