@@ -189,10 +189,6 @@ gl_entry_points! {
         c.gl.buffer_data(target, size, bytes, usage);
     }
     fn glBufferSubData(target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *const c_void) => |c| {
-        if !c.gl.in_begin_end() && c.mapped.contains_key(&c.gl.bound_buffer(target)) {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return;
-        }
         if size < 0 || data.is_null() || size as usize > MAX_BUFFER_BYTES {
             c.gl.record_error(GL_INVALID_VALUE);
             return;

@@ -178,11 +178,11 @@ fn uniform_block_draws_from_its_buffer() {
         let ctx = context(&mut buf);
         let vs = shader(
             GL_VERTEX_SHADER,
-            "#version 140\nin vec4 pos;\nvoid main() { gl_Position = pos; }\n",
+            "#version 150\nin vec4 pos;\nvoid main() { gl_Position = pos; }\n",
         );
         let fs = shader(
             GL_FRAGMENT_SHADER,
-            "#version 140\nuniform Tint { float pad; vec4 colour; } tint;\nout vec4 o;\n\
+            "#version 150\nuniform Tint { float pad; vec4 colour; } tint;\nout vec4 o;\n\
              void main() { o = tint.colour; }\n",
         );
         let prog = glCreateProgram();

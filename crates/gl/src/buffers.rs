@@ -460,12 +460,13 @@ impl Context {
         }
     }
 
-    /// glBufferSubData (`GL_INVALID_OPERATION` on a mapped buffer).
+    /// glBufferSubData (`GL_INVALID_OPERATION` when the range overlaps
+    /// the mapped range, GL 3.3 §2.9.2).
     pub fn buffer_sub_data(&mut self, target: u32, offset: isize, data: &[u8]) {
         if self.reject_in_begin() {
             return;
         }
-        let Some(b) = self.unmapped_buffer(target) else {
+        let Some(b) = self.bound_buffer_name(target) else {
             return;
         };
         let len = self.buffer_info(b).map_or(0, |i| i.0);
@@ -475,6 +476,14 @@ impl Context {
                 .is_none_or(|e| e > len)
         {
             self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        let (start, end) = (offset as usize, offset as usize + data.len());
+        if self
+            .buffer_mapping(b)
+            .is_some_and(|m| start < m.offset + m.length && m.offset < end)
+        {
+            self.set_error(GL_INVALID_OPERATION);
             return;
         }
         self.write_store(b, offset as usize, data);
@@ -769,8 +778,12 @@ mod tests {
         // Mapped: a second map, sub-data writes and reads, copies fail.
         assert_eq!(ctx.map_buffer_range(t, 0, 1, r), None);
         assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
-        ctx.buffer_sub_data(t, 0, &[1]);
+        // Sub-data writes fail where they touch the mapped range 2..5.
+        ctx.buffer_sub_data(t, 4, &[1, 1]);
         assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.buffer_sub_data(t, 0, &[0, 1]);
+        ctx.buffer_sub_data(t, 5, &[5]);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
         assert!(ctx.get_buffer_sub_data(t, 0, 1).is_empty());
         assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
         ctx.copy_buffer_sub_data(t, t, 0, 4, 1);

@@ -6,8 +6,8 @@ use gl::enums::*;
 use gl::uniform_block::INVALID_INDEX;
 use gl::{ArrayData, Context};
 
-const VS: &str = "#version 140\nin vec4 pos;\nvoid main() { gl_Position = pos; }\n";
-const FS: &str = "#version 140
+const VS: &str = "#version 150\nin vec4 pos;\nvoid main() { gl_Position = pos; }\n";
+const FS: &str = "#version 150
 layout(std140) uniform Colors {
     vec4 colour;
     mat4 m;
