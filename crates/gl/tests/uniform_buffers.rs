@@ -250,3 +250,71 @@ fn draws_read_blocks_from_their_binding_points() {
     assert_close(pixel(&mut ctx), [0.0, 0.5, 0.0, 1.0]);
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
 }
+
+#[test]
+fn vertex_stage_blocks_and_arrays_of_blocks() {
+    let vs = "#version 150
+uniform Xform { mat4 mvp; };
+in vec4 pos;
+void main() { gl_Position = mvp * pos; }
+";
+    let fs = "#version 150
+uniform Pal { vec4 c; } pal[2];
+out vec4 o;
+void main() { o = pal[0].c + pal[1].c; }
+";
+    let mut ctx = Context::new(8, 8);
+    let p = program(&mut ctx, vs, fs);
+    ctx.use_program(p);
+    assert_eq!(ctx.get_programiv(p, GL_ACTIVE_UNIFORM_BLOCKS), 3);
+    let xform = ctx.get_uniform_block_index(p, "Xform");
+    let pal0 = ctx.get_uniform_block_index(p, "Pal[0]");
+    let pal1 = ctx.get_uniform_block_index(p, "Pal[1]");
+    assert_eq!(ctx.get_uniform_block_index(p, "Pal"), INVALID_INDEX);
+    assert_eq!(ctx.get_uniform_block_index(p, "Pal[2]"), INVALID_INDEX);
+    assert_ne!(pal0, pal1);
+    let iv = |ctx: &mut Context, b, pname| ctx.get_active_uniform_blockiv(p, b, pname).unwrap()[0];
+    assert_eq!(iv(&mut ctx, xform, GL_UNIFORM_BLOCK_REFERENCED_BY_VERTEX_SHADER), 1);
+    assert_eq!(iv(&mut ctx, xform, GL_UNIFORM_BLOCK_REFERENCED_BY_FRAGMENT_SHADER), 0);
+    assert_eq!(iv(&mut ctx, pal1, GL_UNIFORM_BLOCK_REFERENCED_BY_FRAGMENT_SHADER), 1);
+    assert_eq!(iv(&mut ctx, pal1, GL_UNIFORM_BLOCK_NAME_LENGTH), 7);
+    assert_eq!(iv(&mut ctx, xform, GL_UNIFORM_BLOCK_DATA_SIZE), 64);
+    assert_eq!(ctx.get_uniform_indices(p, &["mvp", "Pal.c"]).unwrap().len(), 2);
+    assert!(!ctx
+        .get_uniform_indices(p, &["mvp", "Pal.c"])
+        .unwrap()
+        .contains(&INVALID_INDEX));
+
+    // Xform: a scale by 0.5 (the quad covers the middle 4x4 pixels).
+    let mut bytes = Vec::new();
+    for (i, v) in [0.5f32, 0.5, 0.5, 1.0].iter().enumerate() {
+        let mut col = [0.0f32; 4];
+        col[i] = *v;
+        bytes.extend(f32_bytes(&col));
+    }
+    // Pal[0] at 256, Pal[1] at 512.
+    bytes.resize(256, 0);
+    bytes.extend(f32_bytes(&[0.25, 0.0, 0.0, 0.5]));
+    bytes.resize(512, 0);
+    bytes.extend(f32_bytes(&[0.0, 0.75, 0.0, 0.5]));
+    let b = ctx.gen_buffers(1)[0];
+    ctx.bind_buffer(GL_UNIFORM_BUFFER, b);
+    ctx.buffer_data(GL_UNIFORM_BUFFER, bytes.len() as isize, Some(&bytes), GL_STATIC_DRAW);
+    for (block, binding, offset) in [(xform, 0, 0), (pal0, 1, 256), (pal1, 2, 512)] {
+        ctx.uniform_block_binding(p, block, binding);
+        ctx.bind_buffer_range(GL_UNIFORM_BUFFER, binding, b, offset, 16.max(64 - offset.min(64)));
+    }
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    let quad = [
+        -1.0, -1.0, 0.0, 1.0, 1.0, -1.0, 0.0, 1.0, -1.0, 1.0, 0.0, 1.0, 1.0, 1.0, 0.0, 1.0,
+    ];
+    let pos = ctx.get_attrib_location(p, "pos") as u32;
+    ctx.vertex_attrib_pointer(pos, 4, GL_FLOAT, false, 0, ArrayData::from_f32(&quad));
+    ctx.enable_vertex_attrib_array(pos);
+    ctx.clear_color(0.0, 0.0, 1.0, 1.0);
+    ctx.clear(GL_COLOR_BUFFER_BIT);
+    ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+    assert_eq!(ctx.take_draw_error(), None);
+    assert_close(pixel(&mut ctx), [0.25, 0.75, 0.0, 1.0]);
+    assert_close(ctx.read_pixels_f32(0, 0, 1, 1)[0], [0.0, 0.0, 1.0, 1.0]);
+}
