@@ -257,3 +257,144 @@ fn uniform_block_draws_from_its_buffer() {
         OSMesaDestroyContext(ctx);
     }
 }
+
+/// xorshift64*: a fixed sequence of arguments.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
+    }
+    fn pick<T: Copy>(&mut self, v: &[T]) -> T {
+        v[self.next() as usize % v.len()]
+    }
+    fn int(&mut self) -> isize {
+        self.pick(&[-17, -1, 0, 1, 3, 4, 15, 16, 32, 48, 64, 100, 256, 4096])
+    }
+}
+
+#[test]
+fn hostile_buffer_and_block_calls_never_crash() {
+    unsafe {
+        let mut buf = Vec::new();
+        let ctx = context(&mut buf);
+        let vs = shader(
+            GL_VERTEX_SHADER,
+            "#version 150\nuniform V { mat4 m; float s[2]; };\nin vec4 pos;\n\
+             void main() { gl_Position = m * pos * s[1]; }\n",
+        );
+        let fs = shader(
+            GL_FRAGMENT_SHADER,
+            "#version 150\nuniform F { vec4 c; layout(row_major) mat3 r; } f[2];\nout vec4 o;\n\
+             void main() { o = f[0].c + vec4(f[1].r[2], 0.0); }\n",
+        );
+        let prog = glCreateProgram();
+        glAttachShader(prog, vs);
+        glAttachShader(prog, fs);
+        glLinkProgram(prog);
+        glUseProgram(prog);
+        let mut status = 0;
+        glGetProgramiv(prog, GL_LINK_STATUS, &mut status);
+        assert_eq!(status, 1);
+        let quad: [f32; 8] = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
+        glVertexAttribPointer(0, 2, GL_FLOAT, 0, 0, quad.as_ptr() as *const c_void);
+        glEnableVertexAttribArray(0);
+        let targets = [
+            GL_UNIFORM_BUFFER,
+            GL_COPY_READ_BUFFER,
+            GL_COPY_WRITE_BUFFER,
+            GL_TEXTURE_BUFFER,
+            GL_TRANSFORM_FEEDBACK_BUFFER,
+            GL_ARRAY_BUFFER,
+            GL_LESS,
+        ];
+        let pnames = [
+            GL_UNIFORM_BLOCK_BINDING,
+            GL_UNIFORM_BLOCK_DATA_SIZE,
+            GL_UNIFORM_BLOCK_ACTIVE_UNIFORM_INDICES,
+            GL_UNIFORM_OFFSET,
+            GL_UNIFORM_ARRAY_STRIDE,
+            GL_UNIFORM_BUFFER_SIZE,
+            GL_UNIFORM_BUFFER_START,
+            GL_BUFFER_MAP_LENGTH,
+            GL_LESS,
+        ];
+        let data: Vec<u8> = (0..4096u32).map(|i| (i * 37 % 251) as u8).collect();
+        let mut out = vec![0i32; 4096];
+        let mut names = vec![0u32, 1, 2, 9999];
+        let mut rng = Rng(0x5eed_0b0);
+        for _ in 0..40_000 {
+            let t = rng.pick(&targets);
+            let t2 = rng.pick(&targets);
+            let n = rng.pick(&names);
+            let (a, b) = (rng.int(), rng.int());
+            let bits = (rng.next() % 0x80) as u32;
+            let pname = rng.pick(&pnames);
+            match rng.next() % 16 {
+                0 => {
+                    let mut x = 0;
+                    glGenBuffers(1, &mut x);
+                    names.push(x);
+                }
+                1 => glBindBuffer(t, n),
+                2 => glBufferData(
+                    t,
+                    b.min(4096),
+                    data.as_ptr() as *const c_void,
+                    GL_DYNAMIC_DRAW,
+                ),
+                3 => {
+                    let p = glMapBufferRange(t, a, b, bits) as *mut u8;
+                    if !p.is_null() {
+                        let mut len = 0;
+                        glGetBufferParameteriv(t, GL_BUFFER_MAP_LENGTH, &mut len);
+                        std::ptr::write_bytes(p, 0x3c, len.max(0) as usize);
+                    }
+                }
+                4 => glFlushMappedBufferRange(t, a, b),
+                5 => {
+                    glUnmapBuffer(t);
+                }
+                6 => glCopyBufferSubData(t, t2, a, b, rng.int()),
+                7 => glBindBufferRange(t, (rng.next() % 40) as u32, n, a, b),
+                8 => glBindBufferBase(t, (rng.next() % 40) as u32, n),
+                9 => glGetIntegeri_v(pname, (rng.next() % 40) as u32, out.as_mut_ptr()),
+                10 => {
+                    glUniformBlockBinding(prog, (rng.next() % 6) as u32, (rng.next() % 40) as u32)
+                }
+                11 => glGetActiveUniformBlockiv(
+                    prog,
+                    (rng.next() % 6) as u32,
+                    pname,
+                    out.as_mut_ptr(),
+                ),
+                12 => {
+                    let idx: Vec<u32> = (0..4).map(|_| (rng.next() % 12) as u32).collect();
+                    glGetActiveUniformsiv(
+                        prog,
+                        rng.pick(&[0, 1, 4, -1]),
+                        idx.as_ptr(),
+                        pname,
+                        out.as_mut_ptr(),
+                    );
+                }
+                13 => glDrawArrays(GL_TRIANGLE_STRIP, 0, 4),
+                14 => glDeleteBuffers(1, &n),
+                _ => {
+                    glGetBufferParameteri64v(t, pname, out.as_mut_ptr() as *mut i64);
+                }
+            }
+        }
+        while glGetError() != 0 {}
+        glClearColor(0.0, 1.0, 0.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glFinish();
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        assert_eq!(&buf[0..4], &[0, 255, 0, 255]);
+        assert_eq!(OSMesa::context::caught_panics(), 0);
+        OSMesaDestroyContext(ctx);
+    }
+}

@@ -274,12 +274,36 @@ void main() { o = pal[0].c + pal[1].c; }
     assert_eq!(ctx.get_uniform_block_index(p, "Pal[2]"), INVALID_INDEX);
     assert_ne!(pal0, pal1);
     let iv = |ctx: &mut Context, b, pname| ctx.get_active_uniform_blockiv(p, b, pname).unwrap()[0];
-    assert_eq!(iv(&mut ctx, xform, GL_UNIFORM_BLOCK_REFERENCED_BY_VERTEX_SHADER), 1);
-    assert_eq!(iv(&mut ctx, xform, GL_UNIFORM_BLOCK_REFERENCED_BY_FRAGMENT_SHADER), 0);
-    assert_eq!(iv(&mut ctx, pal1, GL_UNIFORM_BLOCK_REFERENCED_BY_FRAGMENT_SHADER), 1);
+    assert_eq!(
+        iv(
+            &mut ctx,
+            xform,
+            GL_UNIFORM_BLOCK_REFERENCED_BY_VERTEX_SHADER
+        ),
+        1
+    );
+    assert_eq!(
+        iv(
+            &mut ctx,
+            xform,
+            GL_UNIFORM_BLOCK_REFERENCED_BY_FRAGMENT_SHADER
+        ),
+        0
+    );
+    assert_eq!(
+        iv(
+            &mut ctx,
+            pal1,
+            GL_UNIFORM_BLOCK_REFERENCED_BY_FRAGMENT_SHADER
+        ),
+        1
+    );
     assert_eq!(iv(&mut ctx, pal1, GL_UNIFORM_BLOCK_NAME_LENGTH), 7);
     assert_eq!(iv(&mut ctx, xform, GL_UNIFORM_BLOCK_DATA_SIZE), 64);
-    assert_eq!(ctx.get_uniform_indices(p, &["mvp", "Pal.c"]).unwrap().len(), 2);
+    assert_eq!(
+        ctx.get_uniform_indices(p, &["mvp", "Pal.c"]).unwrap().len(),
+        2
+    );
     assert!(!ctx
         .get_uniform_indices(p, &["mvp", "Pal.c"])
         .unwrap()
@@ -299,10 +323,21 @@ void main() { o = pal[0].c + pal[1].c; }
     bytes.extend(f32_bytes(&[0.0, 0.75, 0.0, 0.5]));
     let b = ctx.gen_buffers(1)[0];
     ctx.bind_buffer(GL_UNIFORM_BUFFER, b);
-    ctx.buffer_data(GL_UNIFORM_BUFFER, bytes.len() as isize, Some(&bytes), GL_STATIC_DRAW);
+    ctx.buffer_data(
+        GL_UNIFORM_BUFFER,
+        bytes.len() as isize,
+        Some(&bytes),
+        GL_STATIC_DRAW,
+    );
     for (block, binding, offset) in [(xform, 0, 0), (pal0, 1, 256), (pal1, 2, 512)] {
         ctx.uniform_block_binding(p, block, binding);
-        ctx.bind_buffer_range(GL_UNIFORM_BUFFER, binding, b, offset, 16.max(64 - offset.min(64)));
+        ctx.bind_buffer_range(
+            GL_UNIFORM_BUFFER,
+            binding,
+            b,
+            offset,
+            16.max(64 - offset.min(64)),
+        );
     }
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
     let quad = [
