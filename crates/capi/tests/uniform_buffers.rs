@@ -325,7 +325,7 @@ fn hostile_buffer_and_block_calls_never_crash() {
         let data: Vec<u8> = (0..4096u32).map(|i| (i * 37 % 251) as u8).collect();
         let mut out = vec![0i32; 4096];
         let mut names = vec![0u32, 1, 2, 9999];
-        let mut rng = Rng(0x5eed_0b0);
+        let mut rng = Rng(0x05ee_d0b0);
         for _ in 0..40_000 {
             let t = rng.pick(&targets);
             let t2 = rng.pick(&targets);
