@@ -423,7 +423,8 @@ impl Context {
         let mut ok = p.link_status;
         if let Some(exe) = &p.exe {
             let mut units: BTreeMap<u32, glsl::types::SamplerKind> = BTreeMap::new();
-            for leaf in &exe.uniforms.leaves {
+            // Block members have no words of their own (and no samplers).
+            for leaf in exe.uniforms.leaves.iter().filter(|l| l.block.is_none()) {
                 if let Base::Sampler(k) = leaf.ty.base {
                     for e in 0..leaf.array.unwrap_or(1) as usize {
                         let unit = exe

@@ -259,9 +259,10 @@ in vec4 pos;
 void main() { gl_Position = mvp * pos; }
 ";
     let fs = "#version 150
+uniform Xform { mat4 mvp; };
 uniform Pal { vec4 c; } pal[2];
 out vec4 o;
-void main() { o = pal[0].c + pal[1].c; }
+void main() { o = pal[0].c + pal[1].c + vec4(0.0, 0.0, mvp[0][0], 0.0); }
 ";
     let mut ctx = Context::new(8, 8);
     let p = program(&mut ctx, vs, fs);
@@ -274,30 +275,15 @@ void main() { o = pal[0].c + pal[1].c; }
     assert_eq!(ctx.get_uniform_block_index(p, "Pal[2]"), INVALID_INDEX);
     assert_ne!(pal0, pal1);
     let iv = |ctx: &mut Context, b, pname| ctx.get_active_uniform_blockiv(p, b, pname).unwrap()[0];
-    assert_eq!(
-        iv(
-            &mut ctx,
-            xform,
-            GL_UNIFORM_BLOCK_REFERENCED_BY_VERTEX_SHADER
-        ),
-        1
+    let (by_vs, by_fs) = (
+        GL_UNIFORM_BLOCK_REFERENCED_BY_VERTEX_SHADER,
+        GL_UNIFORM_BLOCK_REFERENCED_BY_FRAGMENT_SHADER,
     );
-    assert_eq!(
-        iv(
-            &mut ctx,
-            xform,
-            GL_UNIFORM_BLOCK_REFERENCED_BY_FRAGMENT_SHADER
-        ),
-        0
-    );
-    assert_eq!(
-        iv(
-            &mut ctx,
-            pal1,
-            GL_UNIFORM_BLOCK_REFERENCED_BY_FRAGMENT_SHADER
-        ),
-        1
-    );
+    // Both stages declare Xform; only the fragment stage has Pal.
+    assert_eq!(iv(&mut ctx, xform, by_vs), 1);
+    assert_eq!(iv(&mut ctx, xform, by_fs), 1);
+    assert_eq!(iv(&mut ctx, pal0, by_vs), 0);
+    assert_eq!(iv(&mut ctx, pal1, by_fs), 1);
     assert_eq!(iv(&mut ctx, pal1, GL_UNIFORM_BLOCK_NAME_LENGTH), 7);
     assert_eq!(iv(&mut ctx, xform, GL_UNIFORM_BLOCK_DATA_SIZE), 64);
     assert_eq!(
@@ -350,6 +336,7 @@ void main() { o = pal[0].c + pal[1].c; }
     ctx.clear(GL_COLOR_BUFFER_BIT);
     ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
     assert_eq!(ctx.take_draw_error(), None);
-    assert_close(pixel(&mut ctx), [0.25, 0.75, 0.0, 1.0]);
+    // Blue: the fragment stage's view of Xform (mvp[0][0] = 0.5).
+    assert_close(pixel(&mut ctx), [0.25, 0.75, 0.5, 1.0]);
     assert_close(ctx.read_pixels_f32(0, 0, 1, 1)[0], [0.0, 0.0, 1.0, 1.0]);
 }
