@@ -147,11 +147,12 @@ fn hand_out(c: &mut OsContext, target: u32, bytes: Option<Vec<u8>>) -> *mut c_vo
     };
     let b = c.gl.bound_buffer(target);
     let access = c.gl.buffer_mapping(b).map_or(0, |m| m.access);
-    let m = c.mapped.entry(b).or_insert(Mapping {
-        data: bytes.into_boxed_slice(),
-        access,
-    });
-    map_pointer(m)
+    // A fresh copy always: the context just started this mapping.
+    let data = bytes.into_boxed_slice();
+    c.mapped.insert(b, Mapping { data, access });
+    c.mapped
+        .get_mut(&b)
+        .map_or(std::ptr::null_mut(), map_pointer)
 }
 
 /// The client's pointer to a mapping.
