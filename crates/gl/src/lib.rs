@@ -55,8 +55,9 @@
 //! - Client images: [`pixel_transfer`] (layout, unpack, pack, scale and
 //!   bias), [`readback`] (glReadPixels), [`pixel_path`] (raster position,
 //!   glDrawPixels, glBitmap, glCopyPixels).
-//! - Shaders: [`program`], [`uniform`], [`uniform_block`] (std140
-//!   layout, blocks read from uniform buffers at draw time), [`builtins`] (the `gl_*`
+//! - Shaders: [`program`], [`program_blocks`] (uniform-block queries,
+//!   blocks read from uniform buffers at draw time), [`uniform`],
+//!   [`uniform_block`] (std140 layout), [`builtins`] (the `gl_*`
 //!   uniforms), [`ffgen`] (fixed-function stages as GLSL).
 //! - State: [`state`] (the fixed-function state, capabilities),
 //!   [`transform`], [`shading`], [`rasterization`], [`per_fragment`],
@@ -100,6 +101,7 @@ pub mod pipeline_state;
 pub mod pixel_path;
 pub mod pixel_transfer;
 pub mod program;
+pub mod program_blocks;
 pub mod rasterization;
 pub mod readback;
 pub mod render_target;

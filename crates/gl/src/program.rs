@@ -762,7 +762,7 @@ fn build_executable(
 ) -> Result<Executable, String> {
     let modules: Vec<&Module> = program.stages.iter().map(|s| &s.module).collect();
     let uniforms = UniformTable::build(&modules);
-    crate::uniform_block::check_limits(&uniforms, &modules)?;
+    crate::uniform_block::check_limits(&uniforms.blocks, &modules)?;
     let attribs = assign_attribs(&program, bindings)?;
     let kernels = crate::kernels::Kernels::new(&program)?;
     Ok(Executable {

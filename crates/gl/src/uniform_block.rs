@@ -1,7 +1,8 @@
 //! Uniform blocks (GL 3.3 §2.11.4 "Uniform Blocks", GLSL 1.40 §4.3.5.1):
-//! the standard (std140) layout of block members, the active-block table
-//! of a linked program, and the decoding of block members from the
-//! buffers bound to the blocks' binding points at draw time.
+//! the standard (std140) layout of block members, the active-block records
+//! of a linked program, the block limits, and the decoding of block
+//! members from buffer bytes. The entry points are
+//! [`crate::program_blocks`].
 //!
 //! Contract: every block uses the std140 layout, whatever its layout
 //! qualifier (`shared` and `packed` leave the layout to the
@@ -13,10 +14,7 @@
 //! store (or no buffer bound) read as 0, which is what Mesa effectively
 //! gives. Row-major matrices are transposed on the way in.
 
-use crate::enums::*;
-use crate::uniform::array_len;
-use crate::Context;
-use glsl::types::{Base, Scalar, StructDef, Type};
+use glsl::types::{ArraySize, Base, Scalar, StructDef, Type};
 
 /// GL_MAX_UNIFORM_BLOCK_SIZE in bytes.
 pub const MAX_UNIFORM_BLOCK_SIZE: usize = 65536;
@@ -32,6 +30,15 @@ pub const MATRIX_STRIDE: usize = 16;
 /// default-block components plus all its blocks' (GL 3.3 Table 6.43).
 pub fn combined_components(default_block: i64) -> i64 {
     default_block + (MAX_STAGE_UNIFORM_BLOCKS * MAX_UNIFORM_BLOCK_SIZE / 4) as i64
+}
+
+/// The element count of an array type.
+fn array_len(ty: Type) -> Option<u32> {
+    match ty.array {
+        Some(ArraySize::Sized(n)) => Some(n),
+        Some(ArraySize::Unsized) => Some(0),
+        None => None,
+    }
 }
 
 fn round_up(x: usize, a: usize) -> usize {
@@ -167,7 +174,7 @@ pub fn decode(
                 decode(ty, structs, row_major, off + o, bytes, out);
             }
         }
-        _ => out.resize(out.len() + crate::uniform::words(ty, structs), 0),
+        _ => out.resize(out.len() + exec::size_of(ty, structs), 0),
     }
 }
 
@@ -216,42 +223,14 @@ pub struct BlockGlobal {
     pub members: Vec<(Type, usize, bool)>,
 }
 
-impl Context {
-    /// The words of a block global for a draw, read from the buffers bound
-    /// to its blocks' binding points.
-    pub(crate) fn block_global_words(
-        &self,
-        table: &crate::uniform::UniformTable,
-        g: &BlockGlobal,
-        structs: &[StructDef],
-    ) -> Vec<u32> {
-        let mut out = Vec::new();
-        for e in 0..g.elements {
-            let binding = table
-                .blocks
-                .get(g.first_block + e)
-                .map_or(u32::MAX, |b| b.binding);
-            let (store, start, end) = self.uniform_binding_bytes(binding as usize);
-            let bytes = &store[start..end];
-            for &(ty, off, rm) in &g.members {
-                decode(ty, structs, rm, off, bytes, &mut out);
-            }
-        }
-        out
-    }
-}
-
 /// GL_INVALID_INDEX: glGetUniformBlockIndex / glGetUniformIndices for a
 /// name that is not active.
 pub const INVALID_INDEX: u32 = u32::MAX;
 
 /// The link-time limits of uniform blocks (GL 3.3 §2.11.4): blocks per
 /// stage, blocks of all stages, and the size of each.
-pub fn check_limits(
-    table: &crate::uniform::UniformTable,
-    modules: &[&glsl::ir::Module],
-) -> Result<(), String> {
-    for b in &table.blocks {
+pub fn check_limits(blocks: &[ActiveBlock], modules: &[&glsl::ir::Module]) -> Result<(), String> {
+    for b in blocks {
         if b.data_size > MAX_UNIFORM_BLOCK_SIZE {
             return Err(format!(
                 "uniform block `{}' needs {} bytes, more than GL_MAX_UNIFORM_BLOCK_SIZE ({MAX_UNIFORM_BLOCK_SIZE})",
@@ -266,7 +245,7 @@ pub fn check_limits(
             glsl::Stage::Geometry => 1,
             _ => 2,
         };
-        let n = table.blocks.iter().filter(|b| b.referenced[slot]).count();
+        let n = blocks.iter().filter(|b| b.referenced[slot]).count();
         if n > MAX_STAGE_UNIFORM_BLOCKS {
             return Err(format!(
                 "the {} shader uses {n} uniform blocks, more than {MAX_STAGE_UNIFORM_BLOCKS}",
@@ -281,166 +260,6 @@ pub fn check_limits(
         ));
     }
     Ok(())
-}
-
-impl Context {
-    /// `f` of a program's uniform table (empty before a successful link);
-    /// `None` after the program name's error.
-    fn uniform_table_query<R>(
-        &mut self,
-        program: u32,
-        f: impl FnOnce(&crate::uniform::UniformTable) -> R,
-    ) -> Option<R> {
-        let empty = crate::uniform::UniformTable::default();
-        self.program_query(program, |p| match &p.exe {
-            Some(e) => f(&e.uniforms),
-            None => f(&empty),
-        })
-    }
-
-    /// glGetUniformBlockIndex ([`INVALID_INDEX`] for a name that is not an
-    /// active block's, or after an error).
-    pub fn get_uniform_block_index(&mut self, program: u32, name: &str) -> u32 {
-        self.uniform_table_query(program, |t| {
-            t.blocks
-                .iter()
-                .position(|b| b.name == name)
-                .map_or(INVALID_INDEX, |i| i as u32)
-        })
-        .unwrap_or(INVALID_INDEX)
-    }
-
-    /// glGetActiveUniformBlockName (`GL_INVALID_VALUE` for an index past
-    /// the active blocks).
-    pub fn get_active_uniform_block_name(&mut self, program: u32, index: u32) -> Option<String> {
-        let r = self.uniform_table_query(program, |t| {
-            t.blocks.get(index as usize).map(|b| b.name.clone())
-        })?;
-        if r.is_none() {
-            self.set_error(GL_INVALID_VALUE);
-        }
-        r
-    }
-
-    /// glGetActiveUniformBlockiv: the values of `pname` for block `index`
-    /// (several for GL_UNIFORM_BLOCK_ACTIVE_UNIFORM_INDICES).
-    pub fn get_active_uniform_blockiv(
-        &mut self,
-        program: u32,
-        index: u32,
-        pname: u32,
-    ) -> Option<Vec<i32>> {
-        let r = self.uniform_table_query(program, |t| {
-            let Some(b) = t.blocks.get(index as usize) else {
-                return Err(GL_INVALID_VALUE);
-            };
-            Ok(match pname {
-                GL_UNIFORM_BLOCK_BINDING => vec![b.binding as i32],
-                GL_UNIFORM_BLOCK_DATA_SIZE => vec![b.data_size as i32],
-                GL_UNIFORM_BLOCK_NAME_LENGTH => vec![b.name.len() as i32 + 1],
-                GL_UNIFORM_BLOCK_ACTIVE_UNIFORMS => vec![b.uniforms.len() as i32],
-                GL_UNIFORM_BLOCK_ACTIVE_UNIFORM_INDICES => {
-                    b.uniforms.iter().map(|&u| u as i32).collect()
-                }
-                GL_UNIFORM_BLOCK_REFERENCED_BY_VERTEX_SHADER => vec![b.referenced[0] as i32],
-                GL_UNIFORM_BLOCK_REFERENCED_BY_GEOMETRY_SHADER => vec![b.referenced[1] as i32],
-                GL_UNIFORM_BLOCK_REFERENCED_BY_FRAGMENT_SHADER => vec![b.referenced[2] as i32],
-                _ => return Err(GL_INVALID_ENUM),
-            })
-        })?;
-        r.map_err(|e| self.set_error(e)).ok()
-    }
-
-    /// glUniformBlockBinding (GL 3.3 §2.11.4).
-    pub fn uniform_block_binding(&mut self, program: u32, index: u32, binding: u32) {
-        if self.reject_in_begin() {
-            return;
-        }
-        let Some(n) = self.uniform_table_query(program, |t| t.blocks.len()) else {
-            return;
-        };
-        if index as usize >= n || binding as usize >= crate::buffers::MAX_UNIFORM_BUFFER_BINDINGS {
-            self.set_error(GL_INVALID_VALUE);
-            return;
-        }
-        let block = self
-            .programs
-            .get_mut(&program)
-            .and_then(|p| p.exe.as_mut())
-            .and_then(|e| e.uniforms.blocks.get_mut(index as usize));
-        if let Some(b) = block {
-            b.binding = binding;
-        }
-    }
-
-    /// glGetUniformIndices: the active uniform index of each name
-    /// ([`INVALID_INDEX`] for the others); `None` after an error.
-    pub fn get_uniform_indices(&mut self, program: u32, names: &[&str]) -> Option<Vec<u32>> {
-        self.uniform_table_query(program, |t| {
-            names
-                .iter()
-                .map(|n| t.uniform_index(n).map_or(INVALID_INDEX, |i| i as u32))
-                .collect()
-        })
-    }
-
-    /// glGetActiveUniformName (`GL_INVALID_VALUE` past the active
-    /// uniforms).
-    pub fn get_active_uniform_name(&mut self, program: u32, index: u32) -> Option<String> {
-        let r = self.uniform_table_query(program, |t| t.leaf_name(index as usize))?;
-        if r.is_none() {
-            self.set_error(GL_INVALID_VALUE);
-        }
-        r
-    }
-
-    /// glGetActiveUniformsiv: `pname` of each uniform of `indices`
-    /// (`GL_INVALID_VALUE` if one is past the active uniforms, and then
-    /// nothing is returned). Default-block uniforms report -1 for the
-    /// block index, offset and strides (GL 3.3 §2.11.4).
-    pub fn get_active_uniformsiv(
-        &mut self,
-        program: u32,
-        indices: &[u32],
-        pname: u32,
-    ) -> Option<Vec<i32>> {
-        let r = self.uniform_table_query(program, |t| {
-            if !matches!(
-                pname,
-                GL_UNIFORM_TYPE
-                    | GL_UNIFORM_SIZE
-                    | GL_UNIFORM_NAME_LENGTH
-                    | GL_UNIFORM_BLOCK_INDEX
-                    | GL_UNIFORM_OFFSET
-                    | GL_UNIFORM_ARRAY_STRIDE
-                    | GL_UNIFORM_MATRIX_STRIDE
-                    | GL_UNIFORM_IS_ROW_MAJOR
-            ) {
-                return Err(GL_INVALID_ENUM);
-            }
-            let mut out = Vec::with_capacity(indices.len());
-            for &i in indices {
-                let Some(l) = t.leaves.get(i as usize) else {
-                    return Err(GL_INVALID_VALUE);
-                };
-                let b = l.block;
-                out.push(match pname {
-                    GL_UNIFORM_TYPE => crate::uniform::gl_type(l.ty) as i32,
-                    GL_UNIFORM_SIZE => l.array.unwrap_or(1) as i32,
-                    GL_UNIFORM_NAME_LENGTH => {
-                        t.leaf_name(i as usize).map_or(0, |n| n.len() as i32 + 1)
-                    }
-                    GL_UNIFORM_BLOCK_INDEX => b.map_or(-1, |b| b.block as i32),
-                    GL_UNIFORM_OFFSET => b.map_or(-1, |b| b.offset as i32),
-                    GL_UNIFORM_ARRAY_STRIDE => b.map_or(-1, |b| b.array_stride as i32),
-                    GL_UNIFORM_MATRIX_STRIDE => b.map_or(-1, |b| b.matrix_stride as i32),
-                    _ => b.is_some_and(|b| b.row_major) as i32,
-                });
-            }
-            Ok(out)
-        })?;
-        r.map_err(|e| self.set_error(e)).ok()
-    }
 }
 
 #[cfg(test)]
