@@ -1,9 +1,10 @@
-//! Buffer-object entry points kept at the C level: glMapBuffer /
-//! glUnmapBuffer (a mapping is a copy of the store that the client edits
-//! and that glUnmapBuffer writes back), the buffer queries, and the pixel
-//! buffer (PBO) transfers glReadPixels / glTexImage* / glGetTexImage make
-//! through GL_PIXEL_PACK_BUFFER and GL_PIXEL_UNPACK_BUFFER (GL 2.1 §2.9,
-//! §4.3.5, §6.1.13).
+//! Buffer-object entry points (GL 3.3 §2.9, §6.1.8): the objects, the
+//! indexed binding points, glCopyBufferSubData, mapping (the context
+//! validates and records a mapping; this layer holds the copy of the range
+//! the client edits, handing it back at glFlushMappedBufferRange and
+//! glUnmapBuffer), the buffer queries, and the pixel buffer (PBO)
+//! transfers glReadPixels / glTexImage* / glGetTexImage make through
+//! GL_PIXEL_PACK_BUFFER and GL_PIXEL_UNPACK_BUFFER (GL 2.1 §4.3.5).
 
 use crate::abi::*;
 use crate::arrays::array_state;
@@ -126,10 +127,7 @@ pub fn sources_mapped(c: &OsContext, elements: bool) -> bool {
 /// The buffer bound to a buffer target, GL_INVALID_ENUM for another
 /// target and GL_INVALID_OPERATION for none bound.
 fn bound(c: &mut OsContext, target: u32) -> Option<u32> {
-    if !matches!(
-        target,
-        GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER | GL_PIXEL_PACK_BUFFER | GL_PIXEL_UNPACK_BUFFER
-    ) {
+    if !gl::Context::is_buffer_target(target) {
         c.gl.record_error(GL_INVALID_ENUM);
         return None;
     }
@@ -139,6 +137,31 @@ fn bound(c: &mut OsContext, target: u32) -> Option<u32> {
         return None;
     }
     Some(b)
+}
+
+/// Hands the copy of a range the context just mapped to the client: kept
+/// in [`OsContext::mapped`] until unmapped.
+fn hand_out(c: &mut OsContext, target: u32, bytes: Option<Vec<u8>>) -> *mut c_void {
+    let Some(bytes) = bytes else {
+        return std::ptr::null_mut();
+    };
+    let b = c.gl.bound_buffer(target);
+    let access = c.gl.buffer_mapping(b).map_or(0, |m| m.access);
+    // A fresh copy always: the context just started this mapping.
+    let data = bytes.into_boxed_slice();
+    c.mapped.insert(b, Mapping { data, access });
+    c.mapped
+        .get_mut(&b)
+        .map_or(std::ptr::null_mut(), map_pointer)
+}
+
+/// The client's pointer to a mapping.
+fn map_pointer(m: &mut Mapping) -> *mut c_void {
+    if m.data.is_empty() {
+        // An empty range: a valid, unique, never-dereferenced pointer.
+        return std::ptr::NonNull::<u8>::dangling().as_ptr() as *mut c_void;
+    }
+    m.data.as_mut_ptr() as *mut c_void
 }
 
 gl_entry_points! {
@@ -167,10 +190,6 @@ gl_entry_points! {
         c.gl.buffer_data(target, size, bytes, usage);
     }
     fn glBufferSubData(target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *const c_void) => |c| {
-        if !c.gl.in_begin_end() && c.mapped.contains_key(&c.gl.bound_buffer(target)) {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return;
-        }
         if size < 0 || data.is_null() || size as usize > MAX_BUFFER_BYTES {
             c.gl.record_error(GL_INVALID_VALUE);
             return;
@@ -181,59 +200,38 @@ gl_entry_points! {
 
     // ---- mapping and queries ----
     fn glMapBuffer(target: GLenum, access: GLenum) -> *mut c_void [std::ptr::null_mut()] => |c| {
-        if c.gl.reject_in_begin() {
-            return std::ptr::null_mut();
-        }
-        let Some(b) = bound(c, target) else { return std::ptr::null_mut() };
-        if !matches!(access, GL_READ_ONLY | GL_WRITE_ONLY | GL_READ_WRITE) {
-            c.gl.record_error(GL_INVALID_ENUM);
-            return std::ptr::null_mut();
-        }
-        if c.mapped.contains_key(&b) {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return std::ptr::null_mut();
-        }
-        let size = c.gl.buffer_info(b).map_or(0, |i| i.0);
-        let data = c.gl.get_buffer_sub_data(target, 0, size as isize).into_boxed_slice();
-        let m = c.mapped.entry(b).or_insert(Mapping { data, access });
-        if m.data.is_empty() {
-            // A zero-size store: a valid, unique, never-dereferenced pointer.
-            return std::ptr::NonNull::<u8>::dangling().as_ptr() as *mut c_void;
-        }
-        m.data.as_mut_ptr() as *mut c_void
+        let bytes = c.gl.map_buffer(target, access);
+        hand_out(c, target, bytes)
+    }
+    fn glMapBufferRange(
+        target: GLenum, offset: GLintptr, length: GLsizeiptr, access: GLbitfield
+    ) -> *mut c_void [std::ptr::null_mut()] => |c| {
+        let bytes = c.gl.map_buffer_range(target, offset, length, access);
+        hand_out(c, target, bytes)
+    }
+    fn glFlushMappedBufferRange(target: GLenum, offset: GLintptr, length: GLsizeiptr) => |c| {
+        let b = c.gl.bound_buffer(target);
+        let data = c.mapped.get(&b).map_or(&[][..], |m| &m.data[..]);
+        c.gl.flush_mapped_buffer_range(target, offset, length, data);
     }
     fn glUnmapBuffer(target: GLenum) -> GLboolean [0] => |c| {
-        if c.gl.reject_in_begin() {
-            return 0;
-        }
-        let Some(b) = bound(c, target) else { return 0 };
-        let Some(m) = c.mapped.remove(&b) else {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return 0;
+        let b = c.gl.bound_buffer(target);
+        let data = if c.gl.buffer_mapping(b).is_some() && !c.gl.in_begin_end() {
+            c.mapped.remove(&b).map(|m| m.data)
+        } else {
+            None
         };
-        if m.access != GL_READ_ONLY && !m.data.is_empty() {
-            c.gl.buffer_sub_data(target, 0, &m.data);
-        }
-        1
+        c.gl.unmap_buffer(target, data.as_deref().unwrap_or(&[])) as GLboolean
     }
     fn glGetBufferParameteriv(target: GLenum, pname: GLenum, v: *mut GLint) => |c| {
-        if c.gl.reject_in_begin() {
-            return;
+        if let Some(r) = c.gl.get_buffer_parameter(target, pname) {
+            wr(v, &[r.clamp(i32::MIN as i64, i32::MAX as i64) as GLint]);
         }
-        let Some(b) = bound(c, target) else { return };
-        let (size, usage) = c.gl.buffer_info(b).unwrap_or((0, GL_STATIC_DRAW));
-        let m = c.mapped.get(&b);
-        let r = match pname {
-            GL_BUFFER_SIZE => size.min(i32::MAX as usize) as i32,
-            GL_BUFFER_USAGE => usage as i32,
-            GL_BUFFER_ACCESS => m.map_or(GL_READ_WRITE, |m| m.access) as i32,
-            GL_BUFFER_MAPPED => m.is_some() as i32,
-            _ => {
-                c.gl.record_error(GL_INVALID_ENUM);
-                return;
-            }
-        };
-        wr(v, &[r]);
+    }
+    fn glGetBufferParameteri64v(target: GLenum, pname: GLenum, v: *mut i64) => |c| {
+        if let Some(r) = c.gl.get_buffer_parameter(target, pname) {
+            wr(v, &[r]);
+        }
     }
     fn glGetBufferPointerv(target: GLenum, pname: GLenum, v: *mut *mut c_void) => |c| {
         if c.gl.reject_in_begin() {
@@ -251,6 +249,30 @@ gl_entry_points! {
         };
         wr(v, &[p]);
     }
+    fn glCopyBufferSubData(
+        read_target: GLenum, write_target: GLenum, read_offset: GLintptr,
+        write_offset: GLintptr, size: GLsizeiptr
+    ) => |c| {
+        c.gl.copy_buffer_sub_data(read_target, write_target, read_offset, write_offset, size)
+    }
+
+    // ---- indexed binding points (GL 3.0, 3.1) ----
+    fn glBindBufferRange(
+        target: GLenum, index: GLuint, buffer: GLuint, offset: GLintptr, size: GLsizeiptr
+    ) => |c| { c.gl.bind_buffer_range(target, index, buffer, offset, size) }
+    fn glBindBufferBase(target: GLenum, index: GLuint, buffer: GLuint) => |c| {
+        c.gl.bind_buffer_base(target, index, buffer)
+    }
+    fn glGetIntegeri_v(pname: GLenum, index: GLuint, v: *mut GLint) => |c| {
+        if let Some(r) = c.gl.get_integeri(pname, index) { wr(v, &[r]) }
+    }
+    fn glGetInteger64i_v(pname: GLenum, index: GLuint, v: *mut i64) => |c| {
+        if let Some(r) = c.gl.get_integer64_indexed(pname, index) { wr(v, &[r]) }
+    }
+    fn glGetBooleani_v(pname: GLenum, index: GLuint, v: *mut GLboolean) => |c| {
+        if let Some(r) = c.gl.get_integer64_indexed(pname, index) { wr(v, &[(r != 0) as GLboolean]) }
+    }
+
     fn glGetBufferSubData(target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *mut c_void) => |c| {
         if c.gl.reject_in_begin() {
             return;

@@ -98,9 +98,13 @@
 //! - glPushAttrib does not save texture-object parameters or hints.
 //! - glGetTexImage and glReadPixels do not write packed pixel types
 //!   (GL_UNSIGNED_SHORT_5_6_5...: GL_INVALID_OPERATION).
-//! - A mapping (glMapBuffer) is a copy of the store, written back by
-//!   glUnmapBuffer; drawing from, or glBufferSubData/glGetBufferSubData
-//!   on, a mapped buffer raise GL_INVALID_OPERATION (GL 2.1 §2.9).
+//! - A mapping (glMapBuffer, glMapBufferRange) is a copy of the mapped
+//!   range, written back by glUnmapBuffer (or, with
+//!   GL_MAP_FLUSH_EXPLICIT_BIT, by each glFlushMappedBufferRange): writes
+//!   through the pointer are not seen by GL before then. Drawing from a
+//!   mapped vertex or element buffer, glGetBufferSubData on a mapped
+//!   buffer and glBufferSubData into the mapped range raise
+//!   GL_INVALID_OPERATION (GL 3.3 §2.9).
 //! - The client buffer's contents are loaded as the framebuffer's at
 //!   OSMesaMakeCurrent and OSMesaPixelStore (Mesa renders in place); what
 //!   the client writes into it later, between GL calls, is not seen by GL

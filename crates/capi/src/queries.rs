@@ -1,7 +1,7 @@
 //! Enabling and disabling capabilities, hints, the error flag and the
 //! general state queries (GL 2.1 §2.5, §5.6, §6.1): glEnable / glDisable /
-//! glIsEnabled, glHint, glGetError, glGetString and glGet{Integer, Float,
-//! Double, Boolean}v. The queries answer for the state this layer keeps
+//! glIsEnabled, glHint, glGetError, glGetString and glGet{Integer,
+//! Integer64, Float, Double, Boolean}v. The queries answer for the state this layer keeps
 //! ([`crate::layer_state::Legacy::get`]) before asking the context.
 
 use crate::abi::*;
@@ -44,6 +44,17 @@ gl_entry_points! {
             return;
         }
         let v = c.gl.get_integerv(pname);
+        wr(params, &v);
+    }
+    fn glGetInteger64v(pname: GLenum, params: *mut i64) => |c| {
+        if let Some(v) = c.legacy.get(pname) {
+            if !c.gl.reject_in_begin() {
+                let v: Vec<i64> = v.iter().map(|&x| (x + 0.5).floor() as i64).collect();
+                wr(params, &v);
+            }
+            return;
+        }
+        let v = c.gl.get_integer64v(pname);
         wr(params, &v);
     }
     fn glGetFloatv(pname: GLenum, params: *mut GLfloat) => |c| {

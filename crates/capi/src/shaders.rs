@@ -1,7 +1,8 @@
 //! Shader and program objects (GL 2.1 §2.15, §6.1.14): creating,
 //! compiling, attaching and linking them, attribute locations, and their
-//! queries (info logs, sources, active attributes and uniforms). Setting
-//! uniforms is [`crate::uniforms`].
+//! queries (info logs, sources, active attributes and uniforms), and the
+//! uniform-block queries and bindings (GL 3.3 §2.11.4). Setting uniforms
+//! is [`crate::uniforms`].
 
 use crate::abi::*;
 use crate::context::{record_call, with_ctx, OsContext};
@@ -148,6 +149,56 @@ gl_entry_points! {
             wr(size, &[info.size]);
             wr(ty, &[info.ty]);
             wr_string(c, &info.name, buf_size, length, name);
+        }
+    }
+
+    // ---- uniform blocks (GL 3.1, ARB_uniform_buffer_object) ----
+    fn glGetUniformBlockIndex(program: GLuint, name: *const GLchar) -> GLuint [u32::MAX] => |c| {
+        match cstr(name) {
+            Some(n) => c.gl.get_uniform_block_index(program, &n),
+            None => u32::MAX,
+        }
+    }
+    fn glGetActiveUniformBlockName(
+        program: GLuint, index: GLuint, buf_size: GLsizei, length: *mut GLsizei, name: *mut GLchar
+    ) => |c| {
+        if let Some(s) = c.gl.get_active_uniform_block_name(program, index) {
+            wr_string(c, &s, buf_size, length, name);
+        }
+    }
+    fn glGetActiveUniformBlockiv(program: GLuint, index: GLuint, pname: GLenum, params: *mut GLint) => |c| {
+        if let Some(v) = c.gl.get_active_uniform_blockiv(program, index, pname) {
+            wr(params, &v);
+        }
+    }
+    fn glUniformBlockBinding(program: GLuint, index: GLuint, binding: GLuint) => |c| {
+        c.gl.uniform_block_binding(program, index, binding)
+    }
+    fn glGetUniformIndices(
+        program: GLuint, count: GLsizei, names: *const *const GLchar, indices: *mut GLuint
+    ) => |c| {
+        if count < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        let ptrs = rd_vec(names, count as i64);
+        let owned: Vec<String> = ptrs.iter().map(|&p| cstr(p).unwrap_or_default()).collect();
+        let refs: Vec<&str> = owned.iter().map(String::as_str).collect();
+        if let Some(v) = c.gl.get_uniform_indices(program, &refs) {
+            wr(indices, &v);
+        }
+    }
+    fn glGetActiveUniformsiv(
+        program: GLuint, count: GLsizei, indices: *const GLuint, pname: GLenum, params: *mut GLint
+    ) => |c| {
+        if count < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        let idx = rd_vec(indices, count as i64);
+        if let Some(v) = c.gl.get_active_uniformsiv(program, &idx, pname) {
+            wr(params, &v);
+        }
+    }
+    fn glGetActiveUniformName(
+        program: GLuint, index: GLuint, buf_size: GLsizei, length: *mut GLsizei, name: *mut GLchar
+    ) => |c| {
+        if let Some(s) = c.gl.get_active_uniform_name(program, index) {
+            wr_string(c, &s, buf_size, length, name);
         }
     }
 }

@@ -113,6 +113,78 @@ fn command_line_errors_fail() {
 mod rendering {
     use super::*;
 
+    /// Uniform blocks: `uniform` commands on block members fill each
+    /// block's buffer (piglit's `set_ubo_uniform`), `ubo array index`
+    /// picks an element of an array of blocks, and `active uniform`
+    /// checks the std140 layout.
+    const UBO: &str = "\
+[require]
+GLSL >= 1.10
+
+[vertex shader]
+#version 150
+in vec4 piglit_vertex;
+void main() { gl_Position = piglit_vertex; }
+
+[fragment shader]
+#version 150
+layout(std140) uniform Block {
+    float f[2];
+    layout(row_major) mat2 m;
+};
+uniform Pal { vec4 c; } pal[2];
+out vec4 o;
+void main() { o = vec4(f[1], (m * vec2(1.0, 0.0)).y, 0.0, 1.0) + pal[1].c; }
+
+[test]
+active uniform f[0] GL_UNIFORM_OFFSET 0
+active uniform f[0] GL_UNIFORM_ARRAY_STRIDE 16
+active uniform f[0] GL_UNIFORM_TYPE GL_FLOAT
+active uniform m GL_UNIFORM_OFFSET 32
+active uniform m GL_UNIFORM_IS_ROW_MAJOR 1
+active uniform Pal.c GL_UNIFORM_TYPE GL_FLOAT_VEC4
+uniform float f[1] 0.25
+uniform mat2 m 0.0 0.5 0.9 0.0
+ubo array index 1
+uniform vec4 Pal.c 0.0 0.0 0.75 0.0
+draw rect -1 -1 2 2
+probe all rgba 0.25 0.5 0.75 1.0
+";
+
+    #[test]
+    fn uniform_blocks_are_filled_from_uniform_commands() {
+        let path = script("ubo", UBO);
+        let o = shaderbox(&["shader-runner", &path, "-auto", "-fbo"]);
+        assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+        assert_eq!(last_line(&o), r#"PIGLIT: {"result": "pass" }"#);
+    }
+
+    #[test]
+    fn a_wrong_active_uniform_value_fails() {
+        let text = UBO.replace("GL_UNIFORM_OFFSET 32", "GL_UNIFORM_OFFSET 24");
+        let path = script("ubo-wrong-offset", &text);
+        let o = shaderbox(&["shader-runner", &path, "-auto", "-fbo"]);
+        assert_eq!(o.status.code(), Some(1));
+        assert!(
+            stderr(&o).contains("expected 24 (0x0018), got 32 (0x0020)"),
+            "{}{}",
+            stdout(&o),
+            stderr(&o)
+        );
+        let text = UBO.replace(
+            "active uniform m GL_UNIFORM_OFFSET",
+            "active uniform n GL_UNIFORM_OFFSET",
+        );
+        let path = script("ubo-no-such-uniform", &text);
+        let o = shaderbox(&["shader-runner", &path, "-auto", "-fbo"]);
+        assert_eq!(o.status.code(), Some(1));
+        assert!(
+            stderr(&o).contains("No active uniform named \"n\""),
+            "{}",
+            stderr(&o)
+        );
+    }
+
     #[test]
     fn green_quad_passes() {
         let path = script("green", GREEN);

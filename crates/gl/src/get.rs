@@ -47,6 +47,17 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_fog_coord",
     "GL_EXT_secondary_color",
     "GL_SGIS_generate_mipmap",
+    "GL_ARB_vertex_array_object",
+    "GL_ARB_draw_instanced",
+    "GL_ARB_instanced_arrays",
+    "GL_ARB_draw_elements_base_vertex",
+    "GL_ARB_half_float_vertex",
+    "GL_ARB_vertex_type_2_10_10_10_rev",
+    "GL_ARB_vertex_array_bgra",
+    "GL_ARB_map_buffer_range",
+    "GL_ARB_copy_buffer",
+    "GL_ARB_uniform_buffer_object",
+    "GL_ARB_explicit_attrib_location",
 ];
 
 fn b(x: bool) -> f64 {
@@ -218,6 +229,47 @@ impl Context {
             GL_ELEMENT_ARRAY_BUFFER_BINDING => int(&[self.va.element_buffer as i64]),
             GL_PIXEL_PACK_BUFFER_BINDING => int(&[self.objects.pack_buffer as i64]),
             GL_PIXEL_UNPACK_BUFFER_BINDING => int(&[self.objects.unpack_buffer as i64]),
+            // The GL 3.x targets are their own binding queries, but for the
+            // ones named *_BINDING (GL 3.3 Table 6.6, 6.x).
+            GL_UNIFORM_BUFFER_BINDING
+            | GL_COPY_READ_BUFFER
+            | GL_COPY_WRITE_BUFFER
+            | GL_TEXTURE_BUFFER
+            | GL_TRANSFORM_FEEDBACK_BUFFER_BINDING => int(&[self.bound_buffer(match pname {
+                GL_UNIFORM_BUFFER_BINDING => GL_UNIFORM_BUFFER,
+                GL_TRANSFORM_FEEDBACK_BUFFER_BINDING => GL_TRANSFORM_FEEDBACK_BUFFER,
+                p => p,
+            }) as i64]),
+            GL_MAX_UNIFORM_BUFFER_BINDINGS => {
+                int(&[crate::buffers::MAX_UNIFORM_BUFFER_BINDINGS as i64])
+            }
+            GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT => {
+                int(&[crate::buffers::UNIFORM_BUFFER_OFFSET_ALIGNMENT])
+            }
+            GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS => {
+                int(&[crate::buffers::MAX_TRANSFORM_FEEDBACK_BUFFERS as i64])
+            }
+            GL_MAX_UNIFORM_BLOCK_SIZE => {
+                int(&[crate::uniform_block::MAX_UNIFORM_BLOCK_SIZE as i64])
+            }
+            GL_MAX_VERTEX_UNIFORM_BLOCKS
+            | GL_MAX_GEOMETRY_UNIFORM_BLOCKS
+            | GL_MAX_FRAGMENT_UNIFORM_BLOCKS => {
+                int(&[crate::uniform_block::MAX_STAGE_UNIFORM_BLOCKS as i64])
+            }
+            GL_MAX_COMBINED_UNIFORM_BLOCKS => {
+                int(&[crate::uniform_block::MAX_COMBINED_UNIFORM_BLOCKS as i64])
+            }
+            GL_MAX_COMBINED_VERTEX_UNIFORM_COMPONENTS => {
+                int(&[crate::uniform_block::combined_components(
+                    limits::MAX_VERTEX_UNIFORM_COMPONENTS as i64,
+                )])
+            }
+            GL_MAX_COMBINED_FRAGMENT_UNIFORM_COMPONENTS => {
+                int(&[crate::uniform_block::combined_components(
+                    limits::MAX_FRAGMENT_UNIFORM_COMPONENTS as i64,
+                )])
+            }
             GL_FRAMEBUFFER_BINDING => int(&[fb as i64]),
             GL_READ_FRAMEBUFFER_BINDING => int(&[self.objects.read_framebuffer as i64]),
             GL_RENDERBUFFER_BINDING => int(&[self.objects.bound_renderbuffer as i64]),
@@ -344,6 +396,27 @@ impl Context {
                     }
                     Kind::Float => x.round() as i32,
                     _ => x as i64 as i32,
+                })
+                .collect(),
+            None => {
+                self.set_error(GL_INVALID_ENUM);
+                Vec::new()
+            }
+        }
+    }
+
+    /// glGetInteger64v (GL 3.2): glGetIntegerv without the 32-bit clamp.
+    pub fn get_integer64v(&mut self, pname: u32) -> Vec<i64> {
+        match self.query(pname) {
+            Some((v, kind)) => v
+                .iter()
+                .map(|&x| match kind {
+                    Kind::Normalized => {
+                        let c = x.clamp(-1.0, 1.0);
+                        ((c * 4294967295.0 - 1.0) / 2.0).round() as i64
+                    }
+                    Kind::Float => x.round() as i64,
+                    _ => x as i64,
                 })
                 .collect(),
             None => {

@@ -124,6 +124,19 @@ impl Context {
                 {
                     *d = u;
                 }
+            } else if let Some((e, bg)) =
+                exe.and_then(|e| Some((e, e.uniforms.block_global(&slot.name)?)))
+            {
+                // Uniform block members come from their uniform buffers.
+                let structs = e
+                    .program
+                    .stages
+                    .get(bg.stage)
+                    .map_or(&[][..], |s| &s.module.structs[..]);
+                let v = self.block_global_words(&e.uniforms, bg, structs);
+                for (d, s) in dst[..n].iter_mut().zip(v) {
+                    *d = s;
+                }
             } else if let Some(v) = exe.and_then(|e| e.uniforms.global_words(&slot.name)) {
                 for (d, s) in dst[..n].iter_mut().zip(v) {
                     *d = *s;

@@ -38,6 +38,9 @@
 //! - Attribute stacks ([`attrib_stack`]): glPushAttrib/glPopAttrib restore
 //!   per group; glPushClientAttrib/glPopClientAttrib the pixel-store and
 //!   vertex-array state.
+//! - Buffer objects follow GL 3.3 §2.9 ([`buffers`]): the GL 3.x targets,
+//!   indexed uniform and transform-feedback binding points, mapping
+//!   ranges (the caller holds the client's copy), copies.
 //! - Pixel buffer objects: the GL_PIXEL_PACK_BUFFER / GL_PIXEL_UNPACK_BUFFER
 //!   bindings are kept ([`Context::bound_buffer`]); a C layer moves the
 //!   bytes (reads and writes of the buffer store through
@@ -55,7 +58,9 @@
 //! - Client images: [`pixel_transfer`] (layout, unpack, pack, scale and
 //!   bias), [`readback`] (glReadPixels), [`pixel_path`] (raster position,
 //!   glDrawPixels, glBitmap, glCopyPixels).
-//! - Shaders: [`program`], [`uniform`], [`builtins`] (the `gl_*`
+//! - Shaders: [`program`], [`program_blocks`] (uniform-block queries,
+//!   blocks read from uniform buffers at draw time), [`uniform`],
+//!   [`uniform_block`] (std140 layout), [`builtins`] (the `gl_*`
 //!   uniforms), [`ffgen`] (fixed-function stages as GLSL).
 //! - State: [`state`] (the fixed-function state, capabilities),
 //!   [`transform`], [`shading`], [`rasterization`], [`per_fragment`],
@@ -101,6 +106,7 @@ pub mod pipeline_state;
 pub mod pixel_path;
 pub mod pixel_transfer;
 pub mod program;
+pub mod program_blocks;
 pub mod rasterization;
 pub mod readback;
 pub mod render_target;
@@ -112,6 +118,7 @@ pub mod texture_units;
 pub mod textures;
 pub mod transform;
 pub mod uniform;
+pub mod uniform_block;
 pub mod version;
 pub mod vertex;
 pub mod vertex_array;

@@ -19,6 +19,71 @@ use std::sync::Arc;
 pub struct BufferObj {
     pub data: Arc<[u8]>,
     pub usage: u32,
+    /// The mapped range, while mapped.
+    pub map: Option<BufferMap>,
+}
+
+/// GL_MAX_UNIFORM_BUFFER_BINDINGS (GL 3.3's minimum is 36).
+pub const MAX_UNIFORM_BUFFER_BINDINGS: usize = 36;
+/// GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT: glBindBufferRange offsets on
+/// GL_UNIFORM_BUFFER are multiples of this (a vec4).
+pub const UNIFORM_BUFFER_OFFSET_ALIGNMENT: i64 = 16;
+/// GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS (GL 3.0's minimum).
+pub const MAX_TRANSFORM_FEEDBACK_BUFFERS: usize = 4;
+/// A buffer's mapped range (GL 3.3 Table 2.11).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BufferMap {
+    pub offset: usize,
+    pub length: usize,
+    /// GL_BUFFER_ACCESS_FLAGS: the GL_MAP_*_BIT bits asked for.
+    pub access: u32,
+}
+
+impl BufferMap {
+    /// GL_BUFFER_ACCESS: the GL 1.5 enum the read/write bits stand for.
+    pub fn access_enum(&self) -> u32 {
+        match self.access & (GL_MAP_READ_BIT | GL_MAP_WRITE_BIT) {
+            GL_MAP_READ_BIT => GL_READ_ONLY,
+            GL_MAP_WRITE_BIT => GL_WRITE_ONLY,
+            _ => GL_READ_WRITE,
+        }
+    }
+}
+
+/// One indexed binding point (GL 3.3 §2.9.1).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct IndexedBinding {
+    pub buffer: u32,
+    pub offset: i64,
+    /// The glBindBufferRange size; `None` after glBindBufferBase (the
+    /// whole store, whatever its size when it is used).
+    pub size: Option<i64>,
+}
+
+/// The buffer targets added by GL 3.0–3.1 and the indexed binding points.
+#[derive(Clone, Debug)]
+pub struct BufferTargets {
+    pub uniform: u32,
+    pub copy_read: u32,
+    pub copy_write: u32,
+    pub texture: u32,
+    pub transform_feedback: u32,
+    pub uniform_bindings: [IndexedBinding; MAX_UNIFORM_BUFFER_BINDINGS],
+    pub feedback_bindings: [IndexedBinding; MAX_TRANSFORM_FEEDBACK_BUFFERS],
+}
+
+impl Default for BufferTargets {
+    fn default() -> Self {
+        BufferTargets {
+            uniform: 0,
+            copy_read: 0,
+            copy_write: 0,
+            texture: 0,
+            transform_feedback: 0,
+            uniform_bindings: [IndexedBinding::default(); MAX_UNIFORM_BUFFER_BINDINGS],
+            feedback_bindings: [IndexedBinding::default(); MAX_TRANSFORM_FEEDBACK_BUFFERS],
+        }
+    }
 }
 
 /// One mipmap level (or cube face level) of a texture.
@@ -148,6 +213,8 @@ pub struct Objects {
     /// moves pixels through them; the context only keeps the names).
     pub pack_buffer: u32,
     pub unpack_buffer: u32,
+    /// The GL 3.x buffer targets and indexed binding points.
+    pub buffer_targets: BufferTargets,
 }
 
 /// Texture targets in binding-table order.
@@ -184,6 +251,7 @@ impl Objects {
             read_framebuffer: 0,
             pack_buffer: 0,
             unpack_buffer: 0,
+            buffer_targets: BufferTargets::default(),
         }
     }
 

@@ -168,7 +168,11 @@ impl Context {
     }
 
     /// `f` of program object `program`; `None` after check_program's error.
-    fn program_query<R>(&mut self, program: u32, f: impl FnOnce(&ProgramObj) -> R) -> Option<R> {
+    pub(crate) fn program_query<R>(
+        &mut self,
+        program: u32,
+        f: impl FnOnce(&ProgramObj) -> R,
+    ) -> Option<R> {
         self.check_program(program)
             .then(|| self.programs.get(&program).map(f))
             .flatten()
@@ -177,7 +181,7 @@ impl Context {
     /// The value of a glGet*iv query: 0 after a name's error, and
     /// `GL_INVALID_ENUM` with 0 for a pname the query does not know
     /// (`Some(None)`).
-    fn iv_query(&mut self, v: Option<Option<i32>>) -> i32 {
+    pub(crate) fn iv_query(&mut self, v: Option<Option<i32>>) -> i32 {
         if v == Some(None) {
             self.set_error(GL_INVALID_ENUM);
         }
@@ -423,7 +427,8 @@ impl Context {
         let mut ok = p.link_status;
         if let Some(exe) = &p.exe {
             let mut units: BTreeMap<u32, glsl::types::SamplerKind> = BTreeMap::new();
-            for leaf in &exe.uniforms.leaves {
+            // Block members have no words of their own (and no samplers).
+            for leaf in exe.uniforms.leaves.iter().filter(|l| l.block.is_none()) {
                 if let Base::Sampler(k) = leaf.ty.base {
                     for e in 0..leaf.array.unwrap_or(1) as usize {
                         let unit = exe
@@ -496,6 +501,20 @@ impl Context {
                     .map(|l| with_nul(l.name.len() + if l.array.is_some() { 3 } else { 0 }))
                     .max()
                     .unwrap_or(0),
+                GL_ACTIVE_UNIFORM_BLOCKS => {
+                    p.exe.as_ref().map_or(0, |e| e.uniforms.blocks.len()) as i32
+                }
+                GL_ACTIVE_UNIFORM_BLOCK_MAX_NAME_LENGTH => p
+                    .exe
+                    .as_ref()
+                    .and_then(|e| {
+                        e.uniforms
+                            .blocks
+                            .iter()
+                            .map(|b| with_nul(b.name.len()))
+                            .max()
+                    })
+                    .unwrap_or(0),
                 GL_ACTIVE_ATTRIBUTES => attribs.len() as i32,
                 GL_ACTIVE_ATTRIBUTE_MAX_LENGTH => attribs
                     .iter()
@@ -519,11 +538,7 @@ impl Context {
         self.active_info(program, |e| {
             let l = e.uniforms.leaves.get(index as usize)?;
             Some(ActiveInfo {
-                name: if l.array.is_some() {
-                    format!("{}[0]", l.name)
-                } else {
-                    l.name.clone()
-                },
+                name: e.uniforms.leaf_name(index as usize)?,
                 size: l.array.unwrap_or(1) as i32,
                 ty: gl_type(l.ty),
             })
@@ -756,7 +771,7 @@ uniform_matrix_entry_points! {
     uniform_matrix_4x3fv 4 3;
 }
 
-fn with_nul(len: usize) -> i32 {
+pub(crate) fn with_nul(len: usize) -> i32 {
     if len == 0 {
         0
     } else {
@@ -773,6 +788,7 @@ fn build_executable(
 ) -> Result<Executable, String> {
     let modules: Vec<&Module> = program.stages.iter().map(|s| &s.module).collect();
     let uniforms = UniformTable::build(&modules);
+    crate::uniform_block::check_limits(&uniforms.blocks, &modules)?;
     let attribs = assign_attribs(&program, bindings)?;
     let kernels = crate::kernels::Kernels::new(&program)?;
     Ok(Executable {

@@ -13,7 +13,8 @@
 //! leaf of basic type (scalar, vector, matrix, sampler), leaves found by
 //! expanding structs and arrays of structs member by member.
 
-use glsl::ir::{ConstScalar, Module, Storage};
+use crate::uniform_block::{block_offsets, ActiveBlock, BlockGlobal, BlockLeaf};
+use glsl::ir::{ConstScalar, InterfaceBlock, Module, Storage};
 use glsl::types::{ArraySize, Base, Scalar, StructDef, Type};
 
 /// Words a value of `ty` occupies: the executor's flattened layout
@@ -57,9 +58,18 @@ pub struct Leaf {
     pub offset: usize,
     /// Words per element.
     pub elem_words: usize,
-    /// Index of the first location of this leaf.
+    /// Index of the first location of this leaf ([`NO_LOCATION`] for a
+    /// block member).
     pub first_location: usize,
+    /// Where a member of a uniform block lives in its buffer (`None` in
+    /// the default block).
+    pub block: Option<BlockLeaf>,
 }
+
+/// The `first_location` and `offset` of a block member leaf: block members
+/// have neither a location nor words of their own in
+/// [`UniformTable::values`].
+pub const NO_LOCATION: usize = usize::MAX;
 
 /// A uniform location: element `element` of leaf `leaf`.
 #[derive(Clone, Copy, Debug)]
@@ -71,9 +81,14 @@ pub struct Location {
 #[derive(Clone, Debug, Default)]
 pub struct UniformTable {
     pub globals: Vec<UniformGlobal>,
+    /// The active uniforms: default-block leaves and block members.
     pub leaves: Vec<Leaf>,
     pub locations: Vec<Location>,
     pub values: Vec<u32>,
+    /// The active uniform blocks ([`crate::uniform_block`]).
+    pub blocks: Vec<ActiveBlock>,
+    /// The executor globals whose words come from uniform buffers.
+    pub block_globals: Vec<BlockGlobal>,
 }
 
 /// Scalar kind of a value passed to glUniform*.
@@ -107,6 +122,10 @@ impl UniformTable {
         for (si, m) in stages.iter().enumerate() {
             for g in &m.globals {
                 if g.storage != Storage::Uniform {
+                    continue;
+                }
+                if let Some(b) = g.block.and_then(|b| m.blocks.get(b.0 as usize)) {
+                    t.add_block(b, si, m);
                     continue;
                 }
                 if let Some(u) = t.globals.iter().find(|u| u.name == g.name) {
@@ -157,6 +176,111 @@ impl UniformTable {
             }
         }
         t
+    }
+
+    /// Adds uniform block `b` of stage `si` (module `m`) when first seen;
+    /// a block another stage declared already is marked referenced by this
+    /// one (the linker checked both declare it alike).
+    fn add_block(&mut self, b: &InterfaceBlock, si: usize, m: &Module) {
+        let stage_slot = match m.stage {
+            glsl::Stage::Vertex => 0,
+            glsl::Stage::Geometry => 1,
+            _ => 2,
+        };
+        let elements = b.array.unwrap_or(1) as usize;
+        let names: Vec<String> = match b.array {
+            Some(n) => (0..n).map(|i| format!("{}[{i}]", b.name)).collect(),
+            None => vec![b.name.clone()],
+        };
+        if let Some(first) = self.blocks.iter().position(|x| x.name == names[0]) {
+            for blk in self.blocks.iter_mut().skip(first).take(elements) {
+                blk.referenced[stage_slot] = true;
+            }
+            return;
+        }
+        let members: Vec<(Type, bool)> = b.members.iter().map(|mb| (mb.ty, mb.row_major)).collect();
+        let (offsets, data_size) = block_offsets(&members, &m.structs);
+        let first_block = self.blocks.len();
+        let mut leaves = Vec::new();
+        for (mb, &off) in b.members.iter().zip(&offsets) {
+            let name = match &b.instance {
+                Some(_) => format!("{}.{}", b.name, mb.name),
+                None => mb.name.clone(),
+            };
+            collect_block_leaves(
+                &name,
+                mb.ty,
+                off,
+                &m.structs,
+                mb.row_major,
+                first_block,
+                &mut leaves,
+                0,
+            );
+        }
+        let first_leaf = self.leaves.len();
+        let uniforms: Vec<usize> = (first_leaf..first_leaf + leaves.len()).collect();
+        self.leaves.extend(leaves);
+        for name in names {
+            let mut referenced = [false; 3];
+            referenced[stage_slot] = true;
+            self.blocks.push(ActiveBlock {
+                name,
+                data_size,
+                binding: 0,
+                referenced,
+                uniforms: uniforms.clone(),
+            });
+        }
+        let member = |i: usize| {
+            let mb = &b.members[i];
+            (mb.ty, offsets[i], mb.row_major)
+        };
+        match &b.instance {
+            Some(inst) => self.block_globals.push(BlockGlobal {
+                name: inst.clone(),
+                stage: si,
+                first_block,
+                elements,
+                members: (0..b.members.len()).map(member).collect(),
+            }),
+            None => {
+                for (i, mb) in b.members.iter().enumerate() {
+                    self.block_globals.push(BlockGlobal {
+                        name: mb.name.clone(),
+                        stage: si,
+                        first_block,
+                        elements: 1,
+                        members: vec![member(i)],
+                    });
+                }
+            }
+        }
+    }
+
+    /// The block global of an executor uniform, by name.
+    pub fn block_global(&self, name: &str) -> Option<&BlockGlobal> {
+        self.block_globals.iter().find(|g| g.name == name)
+    }
+
+    /// The index of the active uniform `name` (glGetUniformIndices): a
+    /// leaf's name, or for an array leaf also `"name[0]"`.
+    pub fn uniform_index(&self, name: &str) -> Option<usize> {
+        self.leaves.iter().position(|l| {
+            l.name == name
+                || (l.array.is_some() && name.strip_suffix("[0]").is_some_and(|n| n == l.name))
+        })
+    }
+
+    /// The GL name of leaf `i` (`"a[0]"` for arrays), as glGetActiveUniform
+    /// and glGetActiveUniformName report it.
+    pub fn leaf_name(&self, i: usize) -> Option<String> {
+        let l = self.leaves.get(i)?;
+        Some(if l.array.is_some() {
+            format!("{}[0]", l.name)
+        } else {
+            l.name.clone()
+        })
     }
 
     /// glGetUniformLocation's lookup (GL 2.1 §2.15.3): `name` is a leaf of
@@ -242,7 +366,11 @@ impl UniformTable {
             return -1;
         }
         // `offset` is the leaf's start; find the leaf.
-        match self.leaves.iter().find(|l| l.offset == offset) {
+        match self
+            .leaves
+            .iter()
+            .find(|l| l.offset == offset && l.block.is_none())
+        {
             Some(l) => {
                 if element >= l.array.unwrap_or(1) {
                     return -1;
@@ -447,6 +575,82 @@ fn collect_leaves(
                 offset,
                 elem_words: words(elem, structs),
                 first_location: 0,
+                block: None,
+            });
+        }
+    }
+}
+
+/// The leaves of a block member of type `ty` at byte `offset` of block
+/// `block`, named from `name` as [`collect_leaves`] names them.
+#[allow(clippy::too_many_arguments)]
+fn collect_block_leaves(
+    name: &str,
+    ty: Type,
+    offset: usize,
+    structs: &[StructDef],
+    row_major: bool,
+    block: usize,
+    out: &mut Vec<Leaf>,
+    depth: u32,
+) {
+    use crate::uniform_block::{array_layout, std140, MATRIX_STRIDE};
+    if depth > 32 {
+        return;
+    }
+    let elem = ty.element();
+    let (_, stride) = array_layout(elem, structs, row_major);
+    match ty.base {
+        Base::Struct(id) => {
+            let Some(s) = structs.get(id.0 as usize) else {
+                return;
+            };
+            let (n, arr) = match array_len(ty) {
+                Some(n) => (n, true),
+                None => (1, false),
+            };
+            for i in 0..n as usize {
+                let base_name = if arr {
+                    format!("{name}[{i}]")
+                } else {
+                    name.to_string()
+                };
+                // Member offsets inside the struct, as std140 places them.
+                let mut at = offset + i * stride;
+                for mb in &s.members {
+                    let (align, size) = std140(mb.ty, structs, row_major);
+                    at = at.div_ceil(align) * align;
+                    collect_block_leaves(
+                        &format!("{base_name}.{}", mb.name),
+                        mb.ty,
+                        at,
+                        structs,
+                        row_major,
+                        block,
+                        out,
+                        depth + 1,
+                    );
+                    at += size;
+                }
+            }
+        }
+        Base::Void | Base::Error => {}
+        _ => {
+            let is_matrix = matches!(elem.base, Base::Matrix { .. });
+            out.push(Leaf {
+                name: name.to_string(),
+                ty: elem,
+                array: array_len(ty),
+                offset: NO_LOCATION,
+                elem_words: words(elem, structs),
+                first_location: NO_LOCATION,
+                block: Some(BlockLeaf {
+                    block,
+                    offset,
+                    array_stride: if ty.is_array() { stride } else { 0 },
+                    matrix_stride: if is_matrix { MATRIX_STRIDE } else { 0 },
+                    row_major: row_major && is_matrix,
+                }),
             });
         }
     }

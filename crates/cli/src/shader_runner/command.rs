@@ -120,6 +120,16 @@ pub enum Command {
         pname: u32,
         values: LightValues,
     },
+    /// `active uniform NAME PNAME VALUE`: glGetActiveUniformsiv of the
+    /// active uniform NAME (as glGetActiveUniform names it) gives VALUE.
+    ActiveUniform {
+        name: String,
+        pname: u32,
+        expected: i32,
+    },
+    /// `ubo array index N`: later `uniform` commands naming members of an
+    /// array of uniform blocks write element N's buffer.
+    UboArrayIndex(u32),
     /// A command shaderbox does not provide because it needs a later GL.
     NeedsLaterGl(String),
 }
@@ -219,6 +229,59 @@ pub enum UniformValues {
 #[error("{0}")]
 pub struct CommandError(pub String);
 
+/// The glGetActiveUniformsiv pnames `active uniform` names.
+fn active_uniform_pname(name: &str) -> Option<u32> {
+    use gl::enums as e;
+    Some(match name {
+        "GL_UNIFORM_TYPE" => e::GL_UNIFORM_TYPE,
+        "GL_UNIFORM_SIZE" => e::GL_UNIFORM_SIZE,
+        "GL_UNIFORM_NAME_LENGTH" => e::GL_UNIFORM_NAME_LENGTH,
+        "GL_UNIFORM_BLOCK_INDEX" => e::GL_UNIFORM_BLOCK_INDEX,
+        "GL_UNIFORM_OFFSET" => e::GL_UNIFORM_OFFSET,
+        "GL_UNIFORM_ARRAY_STRIDE" => e::GL_UNIFORM_ARRAY_STRIDE,
+        "GL_UNIFORM_MATRIX_STRIDE" => e::GL_UNIFORM_MATRIX_STRIDE,
+        "GL_UNIFORM_IS_ROW_MAJOR" => e::GL_UNIFORM_IS_ROW_MAJOR,
+        _ => return None,
+    })
+}
+
+/// The uniform type enums (and GL_TRUE/GL_FALSE) `active uniform` may
+/// expect, by name.
+fn uniform_type_enum(name: &str) -> Option<u32> {
+    use gl::enums as e;
+    Some(match name {
+        "GL_FALSE" => 0,
+        "GL_TRUE" => 1,
+        "GL_FLOAT" => e::GL_FLOAT,
+        "GL_FLOAT_VEC2" => e::GL_FLOAT_VEC2,
+        "GL_FLOAT_VEC3" => e::GL_FLOAT_VEC3,
+        "GL_FLOAT_VEC4" => e::GL_FLOAT_VEC4,
+        "GL_INT" => e::GL_INT,
+        "GL_INT_VEC2" => e::GL_INT_VEC2,
+        "GL_INT_VEC3" => e::GL_INT_VEC3,
+        "GL_INT_VEC4" => e::GL_INT_VEC4,
+        "GL_UNSIGNED_INT" => e::GL_UNSIGNED_INT,
+        "GL_UNSIGNED_INT_VEC2" => e::GL_UNSIGNED_INT_VEC2,
+        "GL_UNSIGNED_INT_VEC3" => e::GL_UNSIGNED_INT_VEC3,
+        "GL_UNSIGNED_INT_VEC4" => e::GL_UNSIGNED_INT_VEC4,
+        "GL_BOOL" => e::GL_BOOL,
+        "GL_BOOL_VEC2" => e::GL_BOOL_VEC2,
+        "GL_BOOL_VEC3" => e::GL_BOOL_VEC3,
+        "GL_BOOL_VEC4" => e::GL_BOOL_VEC4,
+        "GL_FLOAT_MAT2" => e::GL_FLOAT_MAT2,
+        "GL_FLOAT_MAT3" => e::GL_FLOAT_MAT3,
+        "GL_FLOAT_MAT4" => e::GL_FLOAT_MAT4,
+        "GL_FLOAT_MAT2x3" => e::GL_FLOAT_MAT2x3,
+        "GL_FLOAT_MAT2x4" => e::GL_FLOAT_MAT2x4,
+        "GL_FLOAT_MAT3x2" => e::GL_FLOAT_MAT3x2,
+        "GL_FLOAT_MAT3x4" => e::GL_FLOAT_MAT3x4,
+        "GL_FLOAT_MAT4x2" => e::GL_FLOAT_MAT4x2,
+        "GL_FLOAT_MAT4x3" => e::GL_FLOAT_MAT4x3,
+        "GL_SAMPLER_2D" => e::GL_SAMPLER_2D,
+        _ => return None,
+    })
+}
+
 fn bad(what: &str, line: &str) -> CommandError {
     CommandError(format!("{what} at: {line}"))
 }
@@ -284,6 +347,31 @@ fn parse_command(line: &str) -> Result<Command, CommandError> {
         if lit(line, prefix).is_some() {
             return Ok(C::NeedsLaterGl((*what).to_string()));
         }
+    }
+    if let Some(rest) = lit(line, "active uniform ") {
+        let (name, rest) = scan::word(rest).ok_or_else(|| bad("Bad active uniform", line))?;
+        let (pname, rest) = scan::word(rest).ok_or_else(|| bad("Bad active uniform", line))?;
+        let (value, _) = scan::word(rest).ok_or_else(|| bad("Bad active uniform", line))?;
+        let pname = active_uniform_pname(pname)
+            .ok_or_else(|| bad(&format!("Bad glGetUniformsiv pname {pname}"), line))?;
+        let expected = if value.starts_with(|c: char| c.is_ascii_digit() || c == '-') {
+            scan::scan_i32_base0(value).map(|v| v.0)
+        } else {
+            uniform_type_enum(value).map(|e| e as i32)
+        }
+        .ok_or_else(|| bad(&format!("Bad active uniform value {value}"), line))?;
+        return Ok(C::ActiveUniform {
+            name: name.to_string(),
+            pname,
+            expected,
+        });
+    }
+    if let Some(rest) = lit(line, "ubo array index ") {
+        let (w, _) = scan::word(rest).ok_or_else(|| bad("Bad ubo array index", line))?;
+        let v = w
+            .parse::<u32>()
+            .map_err(|_| bad("Bad ubo array index", line))?;
+        return Ok(C::UboArrayIndex(v));
     }
     if let Some(rest) = lit(line, "clear color ") {
         return Ok(C::ClearColor(floats::<4>(rest, "clear color", line)?));
@@ -614,9 +702,7 @@ const LATER_GL: &[(&str, &str)] = &[
         "program binaries (OpenGL 4.1)",
     ),
     ("provoking vertex ", "provoking vertex control (OpenGL 3.2)"),
-    ("ubo array index ", "uniform blocks (OpenGL 3.1)"),
     ("block ", "uniform blocks (OpenGL 3.1)"),
-    ("active uniform ", "glGetActiveUniformsiv (OpenGL 3.1)"),
     ("verify program_query", "program queries"),
     (
         "verify program_interface_query ",
@@ -1055,6 +1141,31 @@ mod tests {
 
     fn p(line: &str) -> Command {
         parse(line).unwrap().unwrap()
+    }
+
+    #[test]
+    fn uniform_block_commands() {
+        assert_eq!(p("ubo array index 3"), Command::UboArrayIndex(3));
+        assert!(parse("ubo array index x").is_err());
+        assert_eq!(
+            p("active uniform s.a[0] GL_UNIFORM_TYPE GL_FLOAT_MAT2x3"),
+            Command::ActiveUniform {
+                name: "s.a[0]".into(),
+                pname: gl::enums::GL_UNIFORM_TYPE,
+                expected: gl::enums::GL_FLOAT_MAT2x3 as i32,
+            }
+        );
+        assert_eq!(
+            p("active uniform m GL_UNIFORM_OFFSET 0x20"),
+            Command::ActiveUniform {
+                name: "m".into(),
+                pname: gl::enums::GL_UNIFORM_OFFSET,
+                expected: 32,
+            }
+        );
+        assert!(parse("active uniform m GL_UNIFORM_BOGUS 0").is_err());
+        assert!(parse("active uniform m GL_UNIFORM_TYPE GL_BOGUS").is_err());
+        assert!(parse("active uniform m").is_err());
     }
 
     #[test]

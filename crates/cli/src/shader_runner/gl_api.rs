@@ -38,6 +38,21 @@ pub trait GlApi {
     fn get_uniform_location(&mut self, program: u32, name: &str) -> i32;
     fn get_attrib_location(&mut self, program: u32, name: &str) -> i32;
 
+    // Uniform blocks and their buffers (GL 3.1).
+    fn get_active_uniform_block_iv(&mut self, program: u32, index: u32, pname: u32) -> i32;
+    fn uniform_block_binding(&mut self, program: u32, index: u32, binding: u32);
+    /// glGetUniformIndices of one name.
+    fn get_uniform_index(&mut self, program: u32, name: &str) -> u32;
+    /// glGetActiveUniformsiv of one uniform.
+    fn get_active_uniform_iv(&mut self, program: u32, index: u32, pname: u32) -> i32;
+    /// glGetActiveUniform: name, size, type (None: no such uniform).
+    fn get_active_uniform(&mut self, program: u32, index: u32) -> Option<(String, i32, u32)>;
+    fn gen_buffer(&mut self) -> u32;
+    fn bind_buffer(&mut self, target: u32, buffer: u32);
+    fn buffer_data(&mut self, target: u32, data: &[u8], usage: u32);
+    fn buffer_sub_data(&mut self, target: u32, offset: isize, data: &[u8]);
+    fn bind_buffer_base(&mut self, target: u32, index: u32, buffer: u32);
+
     // Uniforms.
     fn uniform_1fv(&mut self, location: i32, count: i32, value: &[f32]);
     fn uniform_2fv(&mut self, location: i32, count: i32, value: &[f32]);

@@ -71,6 +71,45 @@ impl GlApi for gl::Context {
     fn delete_shader(&mut self, shader: u32) {
         gl::Context::delete_shader(self, shader)
     }
+    fn get_active_uniform_block_iv(&mut self, program: u32, index: u32, pname: u32) -> i32 {
+        gl::Context::get_active_uniform_blockiv(self, program, index, pname)
+            .and_then(|v| v.first().copied())
+            .unwrap_or(0)
+    }
+    fn uniform_block_binding(&mut self, program: u32, index: u32, binding: u32) {
+        gl::Context::uniform_block_binding(self, program, index, binding)
+    }
+    fn get_uniform_index(&mut self, program: u32, name: &str) -> u32 {
+        gl::Context::get_uniform_indices(self, program, &[name])
+            .and_then(|v| v.first().copied())
+            .unwrap_or(gl::uniform_block::INVALID_INDEX)
+    }
+    fn get_active_uniform_iv(&mut self, program: u32, index: u32, pname: u32) -> i32 {
+        gl::Context::get_active_uniformsiv(self, program, &[index], pname)
+            .and_then(|v| v.first().copied())
+            .unwrap_or(0)
+    }
+    fn get_active_uniform(&mut self, program: u32, index: u32) -> Option<(String, i32, u32)> {
+        gl::Context::get_active_uniform(self, program, index).map(|i| (i.name, i.size, i.ty))
+    }
+    fn gen_buffer(&mut self) -> u32 {
+        gl::Context::gen_buffers(self, 1)
+            .first()
+            .copied()
+            .unwrap_or(0)
+    }
+    fn bind_buffer(&mut self, target: u32, buffer: u32) {
+        gl::Context::bind_buffer(self, target, buffer)
+    }
+    fn buffer_data(&mut self, target: u32, data: &[u8], usage: u32) {
+        gl::Context::buffer_data(self, target, data.len() as isize, Some(data), usage)
+    }
+    fn buffer_sub_data(&mut self, target: u32, offset: isize, data: &[u8]) {
+        gl::Context::buffer_sub_data(self, target, offset, data)
+    }
+    fn bind_buffer_base(&mut self, target: u32, index: u32, buffer: u32) {
+        gl::Context::bind_buffer_base(self, target, index, buffer)
+    }
     fn create_program(&mut self) -> u32 {
         gl::Context::create_program(self)
     }

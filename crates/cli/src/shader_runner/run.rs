@@ -21,6 +21,12 @@ use super::glenum::*;
 use super::images;
 use super::probe::{self, ProbeMode};
 use super::script::{Cmp, Requirement, Script, Stage, VersionReq};
+use gl::enums::{
+    GL_ACTIVE_UNIFORMS, GL_ACTIVE_UNIFORM_BLOCKS, GL_STATIC_DRAW, GL_UNIFORM_ARRAY_STRIDE,
+    GL_UNIFORM_BLOCK_DATA_SIZE, GL_UNIFORM_BLOCK_INDEX, GL_UNIFORM_BUFFER, GL_UNIFORM_IS_ROW_MAJOR,
+    GL_UNIFORM_MATRIX_STRIDE, GL_UNIFORM_NAME_LENGTH, GL_UNIFORM_OFFSET, GL_UNIFORM_SIZE,
+    GL_UNIFORM_TYPE,
+};
 
 /// piglit's verdicts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -176,6 +182,11 @@ pub struct Runner<'a, G: GlApi> {
     clear_bits: u32,
     vbo_rows: Option<usize>,
     ignore_missing_uniforms: bool,
+    /// The buffer of each active uniform block of the program, bound to
+    /// the binding point of the block's index (piglit's `setup_ubos`).
+    ubo_buffers: Vec<u32>,
+    /// `ubo array index`.
+    ubo_array_index: u32,
     report: Report,
 }
 
@@ -197,6 +208,8 @@ impl<'a, G: GlApi> Runner<'a, G> {
             clear_bits: 0,
             vbo_rows: None,
             ignore_missing_uniforms: false,
+            ubo_buffers: Vec::new(),
+            ubo_array_index: 0,
             report: Report::default(),
         }
     }
@@ -428,6 +441,7 @@ impl<'a, G: GlApi> Runner<'a, G> {
             self.gl.use_program(prog);
             if self.gl.get_error() == GL_NO_ERROR {
                 self.prog_in_use = true;
+                self.setup_ubos(prog);
             } else {
                 self.prog_err_info = self.gl.get_program_info_log(prog);
             }
@@ -438,6 +452,135 @@ impl<'a, G: GlApi> Runner<'a, G> {
             self.gl.delete_shader(s);
         }
         Ok(())
+    }
+
+    /// A zeroed buffer of its data size for each active uniform block,
+    /// block `i` on binding point `i`.
+    fn setup_ubos(&mut self, prog: u32) {
+        let mut n = [0i32];
+        self.gl
+            .get_program_iv(prog, GL_ACTIVE_UNIFORM_BLOCKS, &mut n);
+        self.ubo_buffers.clear();
+        for i in 0..n[0].max(0) as u32 {
+            let size = self
+                .gl
+                .get_active_uniform_block_iv(prog, i, GL_UNIFORM_BLOCK_DATA_SIZE);
+            let b = self.gl.gen_buffer();
+            self.gl.bind_buffer(GL_UNIFORM_BUFFER, b);
+            self.gl.buffer_data(
+                GL_UNIFORM_BUFFER,
+                &vec![0; size.max(0) as usize],
+                GL_STATIC_DRAW,
+            );
+            self.gl.uniform_block_binding(prog, i, i);
+            self.gl.bind_buffer_base(GL_UNIFORM_BUFFER, i, b);
+            self.ubo_buffers.push(b);
+        }
+    }
+
+    /// A `uniform` command naming a member of a uniform block writes the
+    /// values into the block's buffer at the member's offset, with its
+    /// array and matrix strides (piglit's `set_ubo_uniform`). False when
+    /// `name` is not a block member.
+    fn set_ubo_uniform(&mut self, ty: UniformType, name: &str, values: &UniformValues) -> bool {
+        let prog = self.current_program();
+        if prog == 0 || self.ubo_buffers.is_empty() {
+            return false;
+        }
+        // GL names arrays by their first element: `a[2]` is element 2 of
+        // the uniform `a`.
+        let (base, element) = match name.strip_suffix(']').and_then(|n| n.rsplit_once('[')) {
+            Some((b, i)) => match i.parse::<i32>() {
+                Ok(i) => (b, i),
+                Err(_) => (name, 0),
+            },
+            None => (name, 0),
+        };
+        let index = self.gl.get_uniform_index(prog, base);
+        if index == gl::uniform_block::INVALID_INDEX {
+            return false;
+        }
+        let gl = &mut *self.gl;
+        let block = gl.get_active_uniform_iv(prog, index, GL_UNIFORM_BLOCK_INDEX);
+        if block < 0 {
+            return false;
+        }
+        let Some(&buffer) = self
+            .ubo_buffers
+            .get(block as usize + self.ubo_array_index as usize)
+        else {
+            return false;
+        };
+        let offset = gl.get_active_uniform_iv(prog, index, GL_UNIFORM_OFFSET)
+            + element * gl.get_active_uniform_iv(prog, index, GL_UNIFORM_ARRAY_STRIDE);
+        let matrix_stride = gl.get_active_uniform_iv(prog, index, GL_UNIFORM_MATRIX_STRIDE);
+        let row_major = gl.get_active_uniform_iv(prog, index, GL_UNIFORM_IS_ROW_MAJOR) != 0;
+        let words: Vec<[u8; 4]> = match values {
+            UniformValues::Floats(v) => v.iter().map(|f| f.to_ne_bytes()).collect(),
+            UniformValues::Ints(v) => v.iter().map(|i| i.to_ne_bytes()).collect(),
+            UniformValues::Uints(v) => v.iter().map(|u| u.to_ne_bytes()).collect(),
+        };
+        gl.bind_buffer(GL_UNIFORM_BUFFER, buffer);
+        let (cols, rows) = match ty {
+            UniformType::Mat(c, r) => (c as i32, r as i32),
+            _ => (1, ty.components() as i32),
+        };
+        for (i, w) in words.iter().enumerate().take((cols * rows) as usize) {
+            let (c, r) = (i as i32 / rows, i as i32 % rows);
+            let at = match ty {
+                UniformType::Mat(..) if row_major => offset + r * matrix_stride + 4 * c,
+                UniformType::Mat(..) => offset + c * matrix_stride + 4 * r,
+                _ => offset + 4 * r,
+            };
+            gl.buffer_sub_data(GL_UNIFORM_BUFFER, at as isize, w);
+        }
+        true
+    }
+
+    /// `active uniform`: finds NAME among the active uniforms and compares
+    /// glGetActiveUniformsiv (and, for the type, size and name length,
+    /// glGetActiveUniform) with the expected value (piglit's
+    /// `active_uniform`).
+    fn active_uniform(&mut self, name: &str, pname: u32, expected: i32) -> bool {
+        let prog = self.prog;
+        let mut n = [0i32];
+        self.gl.get_program_iv(prog, GL_ACTIVE_UNIFORMS, &mut n);
+        for i in 0..n[0].max(0) as u32 {
+            let Some((got_name, size, ty)) = self.gl.get_active_uniform(prog, i) else {
+                self.err("glGetActiveUniform error");
+                return false;
+            };
+            if got_name != name {
+                continue;
+            }
+            let mut pass = true;
+            let from_active = match pname {
+                GL_UNIFORM_TYPE => Some(ty as i32),
+                GL_UNIFORM_SIZE => Some(size),
+                GL_UNIFORM_NAME_LENGTH => Some(got_name.len() as i32),
+                _ => None,
+            };
+            if let Some(got) = from_active.filter(|&g| g != expected) {
+                self.err(format!(
+                    "glGetActiveUniform({name}, {pname:#06x}): expected {expected} ({expected:#06x}), got {got} ({got:#06x})"
+                ));
+                pass = false;
+            }
+            let got = self.gl.get_active_uniform_iv(prog, i, pname);
+            if self.gl.get_error() != GL_NO_ERROR {
+                self.err("glGetActiveUniformsiv error");
+                return false;
+            }
+            if got != expected {
+                self.err(format!(
+                    "glGetActiveUniformsiv({name}, {pname:#06x}): expected {expected} ({expected:#06x}), got {got} ({got:#06x})"
+                ));
+                pass = false;
+            }
+            return pass;
+        }
+        self.err(format!("No active uniform named \"{name}\""));
+        false
     }
 
     fn must_be_in_use_verdict(&mut self) -> Verdict {
@@ -672,6 +815,17 @@ impl<'a, G: GlApi> Runner<'a, G> {
                 LightValues::Int(v) if v.len() == 1 => gl.light_i(*light, *pname, v[0]),
                 LightValues::Int(v) => gl.light_iv(*light, *pname, v),
             },
+            Command::UboArrayIndex(i) => self.ubo_array_index = *i,
+            Command::ActiveUniform {
+                name,
+                pname,
+                expected,
+            } => {
+                // piglit ends the test at the first mismatch.
+                if !self.active_uniform(name, *pname, *expected) {
+                    return Err(Stop(Verdict::Fail));
+                }
+            }
             Command::NeedsLaterGl(what) => {
                 let msg = format!(
                     "{}:{line}: test requires {what}, which shaderbox (OpenGL 2.1) does not implement",
@@ -817,6 +971,10 @@ impl<'a, G: GlApi> Runner<'a, G> {
         name: &str,
         values: &UniformValues,
     ) -> Result<(), Stop> {
+        if !name.starts_with(|c: char| c.is_ascii_digit()) && self.set_ubo_uniform(ty, name, values)
+        {
+            return Ok(());
+        }
         let loc = if name.starts_with(|c: char| c.is_ascii_digit()) {
             crate::shader_runner::scan::scan_i32_base0(name).map_or(-1, |v| v.0)
         } else {
