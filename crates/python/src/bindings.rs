@@ -241,20 +241,57 @@ fn multi_tex_coord_unit(name: &str) -> Option<u32> {
 #[pymethods]
 impl RawContext {
     #[new]
-    fn new(width: i32, height: i32) -> PyResult<RawContext> {
+    #[pyo3(signature = (width, height, major=2, minor=1, profile="compatibility"))]
+    fn new(
+        width: i32,
+        height: i32,
+        major: i32,
+        minor: i32,
+        profile: &str,
+    ) -> PyResult<RawContext> {
         let max = gl::MAX_TEXTURE_SIZE;
         if !(1..=max).contains(&width) || !(1..=max).contains(&height) {
             return Err(PyValueError::new_err(format!(
                 "context size {width}x{height} is invalid: each side must be 1-{max}"
             )));
         }
-        let mut ctx = Context::new(width, height);
+        let profile = match profile {
+            "core" => gl::Profile::Core,
+            "compatibility" => gl::Profile::Compatibility,
+            other => {
+                return Err(PyValueError::new_err(format!(
+                    "profile {other:?} is not 'core' or 'compatibility'"
+                )))
+            }
+        };
+        let api = gl::Api::for_request(major, minor, profile).ok_or_else(|| {
+            PyValueError::new_err(format!(
+                "OpenGL {major}.{minor} is not available: shaderbox implements 2.1 and 3.3 \
+                 (core and compatibility); ask for a version up to 3.3"
+            ))
+        })?;
+        let mut ctx = Context::with_api(width, height, api);
+        // Core contexts draw only with a vertex array object: the
+        // package's vertex arrays share this one (their attributes are
+        // set before each draw).
+        if api.is_core() {
+            if let Some(&vao) = ctx.gen_vertex_arrays(1).first() {
+                ctx.bind_vertex_array(vao);
+            }
+        }
         // Tightly packed rows, as numpy arrays are.
         ctx.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
         ctx.pixel_storei(GL_PACK_ALIGNMENT, 1);
         Ok(RawContext {
             ctx: Mutex::new(ctx),
         })
+    }
+
+    /// The context's (major, minor, profile).
+    fn api(&self) -> (u32, u32, &'static str) {
+        let api = self.gl().api();
+        let profile = if api.is_core() { "core" } else { "compatibility" };
+        (api.major, api.minor, profile)
     }
 
     /// Starts tracing `pixel` in the following draws (see

@@ -681,34 +681,90 @@ def _matrix_in(value: ArrayLike, what: str) -> List[float]:
 
 
 class Context:
-    """An OpenGL 2.1 context drawing into a ``width`` x ``height`` RGBA8
+    """An OpenGL context drawing into a ``width`` x ``height`` RGBA8
     framebuffer (with 24-bit depth and 8-bit stencil), on the CPU.
 
+    ``version`` and ``profile`` choose the API: the default is OpenGL 2.1;
+    ``version=(3, 3)`` gives 3.3, ``profile="core"`` (GLSL 1.30 and later
+    only, no fixed-function state) or ``"compatibility"`` (everything).
     Make programs with :meth:`program`, vertex data with :meth:`buffer`
     and :meth:`vertex_array`, textures with :meth:`texture`; set the
     fixed-function state shaders read through :attr:`lights`,
-    :attr:`material`, :attr:`fog`, :attr:`modelview`, :attr:`projection`;
-    :meth:`clear`, ``vao.render()``, then :meth:`read` / :meth:`image`.
-    ``threads`` sets how many threads draws use (images do not depend on
-    it; default: the machine's cores).
+    :attr:`material`, :attr:`fog`, :attr:`modelview`, :attr:`projection`
+    (compatibility contexts); :meth:`clear`, ``vao.render()``, then
+    :meth:`read` / :meth:`image`. ``threads`` sets how many threads draws
+    use (images do not depend on it; default: the machine's cores).
     """
 
-    def __init__(self, width: int, height: int, *, threads: Optional[int] = None):
+    def __init__(
+        self,
+        width: int,
+        height: int,
+        *,
+        threads: Optional[int] = None,
+        version: Tuple[int, int] = (2, 1),
+        profile: Optional[str] = None,
+    ):
         for n, v in (("width", width), ("height", height)):
             if not isinstance(v, (int, np.integer)) or isinstance(v, bool):
                 raise TypeError(f"{n} must be an int, got {type(v).__name__}")
-        self._raw = _shaderbox.RawContext(int(width), int(height))
+        if (
+            not isinstance(version, tuple)
+            or len(version) != 2
+            or not all(isinstance(x, int) and not isinstance(x, bool) for x in version)
+        ):
+            raise TypeError(f"version must be a (major, minor) tuple of ints, got {version!r}")
+        if profile is None:
+            profile = "core" if version >= (3, 2) else "compatibility"
+        if profile not in ("core", "compatibility"):
+            raise ValueError(f"profile must be 'core' or 'compatibility', got {profile!r}")
+        self._raw = _shaderbox.RawContext(int(width), int(height), version[0], version[1], profile)
         if threads is not None:
             if not isinstance(threads, int) or threads < 0:
                 raise ValueError(f"threads must be a non-negative int, got {threads!r}")
             self._raw.set_threads(threads)
         self._drawn = False
-        #: GL lights 0-7 (:class:`Light`).
-        self.lights: Tuple[Light, ...] = tuple(Light(self, i) for i in range(_shaderbox.MAX_LIGHTS))
-        #: The material (:class:`Material`).
-        self.material = Material(self)
-        #: The fog state (:class:`Fog`).
-        self.fog = Fog(self)
+        major, minor, self._profile = self._raw.api()
+        self._version = (int(major), int(minor))
+        self._lights: Tuple[Light, ...] = tuple(Light(self, i) for i in range(_shaderbox.MAX_LIGHTS))
+        self._material = Material(self)
+        self._fog = Fog(self)
+
+    @property
+    def version(self) -> Tuple[int, int]:
+        """The OpenGL version the context implements: (2, 1) or (3, 3)."""
+        return self._version
+
+    @property
+    def profile(self) -> str:
+        """``"core"`` or ``"compatibility"``."""
+        return self._profile
+
+    def _compatibility(self, what: str) -> None:
+        if self._profile == "core":
+            raise RuntimeError(
+                f"{what} is fixed-function state, which the core profile removes: pass the values "
+                "to your shaders as uniforms (or a uniform block), or create the context with "
+                "profile='compatibility'"
+            )
+
+    @property
+    def lights(self) -> Tuple[Light, ...]:
+        """GL lights 0-7 (:class:`Light`); compatibility contexts only."""
+        self._compatibility("lights")
+        return self._lights
+
+    @property
+    def material(self) -> Material:
+        """The material (:class:`Material`); compatibility contexts only."""
+        self._compatibility("material")
+        return self._material
+
+    @property
+    def fog(self) -> Fog:
+        """The fog state (:class:`Fog`); compatibility contexts only."""
+        self._compatibility("fog")
+        return self._fog
 
     @property
     def width(self) -> int:
@@ -864,15 +920,18 @@ class Context:
     @property
     def light_model_ambient(self) -> np.ndarray:
         """``gl_LightModel.ambient`` (RGBA)."""
+        self._compatibility("light model ambient")
         return np.asarray(self._raw.get_floatv(_gl.LIGHT_MODEL_AMBIENT), dtype=np.float32)
 
     @light_model_ambient.setter
     def light_model_ambient(self, rgba: ArrayLike) -> None:
+        self._compatibility("light model ambient")
         self._raw.light_modelfv(_gl.LIGHT_MODEL_AMBIENT, _floats(rgba, 4, "light_model_ambient"))
 
     @property
     def modelview(self) -> np.ndarray:
         """The model-view matrix, 4x4 as ``m[row, col]`` (``gl_ModelViewMatrix``)."""
+        self._compatibility("modelview")
         return _matrix_out(self._raw.get_floatv(_gl.MODELVIEW_MATRIX))
 
     @modelview.setter
@@ -882,6 +941,7 @@ class Context:
     @property
     def projection(self) -> np.ndarray:
         """The projection matrix, 4x4 as ``m[row, col]`` (``gl_ProjectionMatrix``)."""
+        self._compatibility("projection")
         return _matrix_out(self._raw.get_floatv(_gl.PROJECTION_MATRIX))
 
     @projection.setter
@@ -889,6 +949,7 @@ class Context:
         self._load(_gl.PROJECTION, _matrix_in(m, "projection"))
 
     def _load(self, mode: int, m: List[float]) -> None:
+        self._compatibility("the modelview and projection matrices")
         self._raw.matrix_mode(mode)
         self._raw.load_matrixf(m)
         self._raw.matrix_mode(_gl.MODELVIEW)
