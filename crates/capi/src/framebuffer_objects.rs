@@ -85,4 +85,33 @@ gl_entry_points! {
     fn glRenderbufferStorageEXT(target: GLenum, internal: GLenum, w: GLsizei, h: GLsizei) => |c| {
         c.gl.renderbuffer_storage(target, internal, w, h)
     }
+
+    fn glFramebufferTexture1D(
+        target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint
+    ) => |c| { c.gl.framebuffer_texture_1d(target, attachment, textarget, texture, level) }
+    fn glFramebufferTexture1DEXT(
+        target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint
+    ) => |c| { c.gl.framebuffer_texture_1d(target, attachment, textarget, texture, level) }
+    fn glIsRenderbuffer(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_renderbuffer(name) as GLboolean }
+    fn glIsRenderbufferEXT(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_renderbuffer(name) as GLboolean }
+    fn glGetRenderbufferParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) => |c| {
+        if let Some(v) = c.gl.get_renderbuffer_parameteriv(target, pname) { wr(params, &[v]); }
+    }
+    fn glGetRenderbufferParameterivEXT(target: GLenum, pname: GLenum, params: *mut GLint) => |c| {
+        if let Some(v) = c.gl.get_renderbuffer_parameteriv(target, pname) { wr(params, &[v]); }
+    }
+    fn glRenderbufferStorageMultisample(
+        target: GLenum, samples: GLsizei, internal: GLenum, w: GLsizei, h: GLsizei
+    ) => |c| { c.gl.renderbuffer_storage_multisample(target, samples, internal, w, h) }
+    fn glRenderbufferStorageMultisampleEXT(
+        target: GLenum, samples: GLsizei, internal: GLenum, w: GLsizei, h: GLsizei
+    ) => |c| { c.gl.renderbuffer_storage_multisample(target, samples, internal, w, h) }
+    fn glBlitFramebuffer(
+        sx0: GLint, sy0: GLint, sx1: GLint, sy1: GLint,
+        dx0: GLint, dy0: GLint, dx1: GLint, dy1: GLint, mask: GLbitfield, filter: GLenum
+    ) => |c| { c.gl.blit_framebuffer([sx0, sy0, sx1, sy1], [dx0, dy0, dx1, dy1], mask, filter) }
+    fn glBlitFramebufferEXT(
+        sx0: GLint, sy0: GLint, sx1: GLint, sy1: GLint,
+        dx0: GLint, dy0: GLint, dx1: GLint, dy1: GLint, mask: GLbitfield, filter: GLenum
+    ) => |c| { c.gl.blit_framebuffer([sx0, sy0, sx1, sy1], [dx0, dy0, dx1, dy1], mask, filter) }
 }

@@ -3,6 +3,13 @@
 //! (glCheckFramebufferStatus) and the draw/read buffer selection
 //! (glDrawBuffers, glDrawBuffer, glReadBuffer).
 //!
+//! Multisample renderbuffers (glRenderbufferStorageMultisample, up to
+//! [`MAX_SAMPLES`]) keep one value per pixel: every sample of a pixel sits
+//! at its centre, a placement GL leaves to the implementation (GL 3.3
+//! §3.3.1), so coverage and shading equal single-sample rendering and a
+//! resolve ([`crate::blit`]) is a copy. Edges are therefore not
+//! antialiased.
+//!
 //! Contract: completeness follows EXT_framebuffer_object §4.4.4 (color
 //! attachments must be RGB/RGBA/RED/RG; ALPHA, LUMINANCE and INTENSITY are
 //! GL_FRAMEBUFFER_UNSUPPORTED); a draw, clear or read on an incomplete
@@ -17,6 +24,27 @@ use crate::objects::{
 };
 use crate::texture_format::base_format;
 use crate::{Context, MAX_TEXTURE_SIZE};
+
+/// A renderbuffer's component sizes in bits: red, green, blue, alpha,
+/// depth, stencil (GL_RENDERBUFFER_*_SIZE).
+fn renderbuffer_bits(internal: u32) -> [i32; 6] {
+    let float = matches!(internal, GL_RGBA32F | GL_RGB32F | GL_RG32F | GL_R32F);
+    let c = if float { 32 } else { 8 };
+    match base_format(internal as i32) {
+        Some(GL_RGBA) => [c, c, c, c, 0, 0],
+        Some(GL_RGB) => [c, c, c, 0, 0, 0],
+        Some(GL_RG) => [c, c, 0, 0, 0, 0],
+        Some(GL_RED) => [c, 0, 0, 0, 0, 0],
+        Some(GL_DEPTH_COMPONENT) => [0, 0, 0, 0, 24, 0],
+        Some(GL_DEPTH_STENCIL) => [0, 0, 0, 0, 24, 8],
+        _ if internal != 0 => [0, 0, 0, 0, 0, 8],
+        _ => [0; 6],
+    }
+}
+
+/// GL_MAX_SAMPLES: the sample count multisample renderbuffers get (GL 3.0
+/// requires at least 4).
+pub const MAX_SAMPLES: i32 = 4;
 
 impl Context {
     // ---- renderbuffers ----
@@ -52,11 +80,108 @@ impl Context {
         );
     }
 
-    /// glRenderbufferStorage(EXT).
-    pub fn renderbuffer_storage(&mut self, target: u32, internal: u32, w: i32, h: i32) {
+    /// glIsRenderbuffer(EXT): a name bound at least once and not deleted.
+    pub fn is_renderbuffer(&self, rb: u32) -> bool {
+        rb != 0 && self.objects.renderbuffers.contains_key(&rb)
+    }
+
+    /// glRenderbufferStorageMultisample (GL 3.0): `samples` up to
+    /// [`MAX_SAMPLES`] (else GL_INVALID_VALUE); see the module docs for
+    /// how samples are kept.
+    pub fn renderbuffer_storage_multisample(
+        &mut self,
+        target: u32,
+        samples: i32,
+        internal: u32,
+        w: i32,
+        h: i32,
+    ) {
+        if target == GL_RENDERBUFFER && !(0..=MAX_SAMPLES).contains(&samples) {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        if self.storage(target, internal, w, h) {
+            let rb = self.objects.bound_renderbuffer;
+            if let Some(r) = self.objects.renderbuffers.get_mut(&rb) {
+                r.samples = if samples == 0 { 0 } else { MAX_SAMPLES };
+            }
+        }
+    }
+
+    /// glGetRenderbufferParameteriv(EXT) of the bound renderbuffer.
+    pub fn get_renderbuffer_parameteriv(&mut self, target: u32, pname: u32) -> Option<i32> {
         if target != GL_RENDERBUFFER {
             self.set_error(GL_INVALID_ENUM);
-            return;
+            return None;
+        }
+        let rb = self.objects.bound_renderbuffer;
+        let Some(r) = self.objects.renderbuffers.get(&rb).filter(|_| rb != 0) else {
+            self.set_error(GL_INVALID_OPERATION);
+            return None;
+        };
+        let sizes = renderbuffer_bits(r.internal_format);
+        let v = match pname {
+            GL_RENDERBUFFER_WIDTH => r.width,
+            GL_RENDERBUFFER_HEIGHT => r.height,
+            GL_RENDERBUFFER_INTERNAL_FORMAT => {
+                if r.internal_format == 0 {
+                    GL_RGBA as i32
+                } else {
+                    r.internal_format as i32
+                }
+            }
+            GL_RENDERBUFFER_SAMPLES => r.samples,
+            GL_RENDERBUFFER_RED_SIZE => sizes[0],
+            GL_RENDERBUFFER_GREEN_SIZE => sizes[1],
+            GL_RENDERBUFFER_BLUE_SIZE => sizes[2],
+            GL_RENDERBUFFER_ALPHA_SIZE => sizes[3],
+            GL_RENDERBUFFER_DEPTH_SIZE => sizes[4],
+            GL_RENDERBUFFER_STENCIL_SIZE => sizes[5],
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return None;
+            }
+        };
+        Some(v)
+    }
+
+    /// The sample count of the draw framebuffer (its multisample
+    /// renderbuffers'; 0 for the default framebuffer and single-sampled
+    /// attachments).
+    pub(crate) fn draw_framebuffer_samples(&self) -> i32 {
+        self.framebuffer_samples(self.objects.draw_framebuffer)
+    }
+
+    /// The sample count of framebuffer object `name` (0: single-sampled).
+    pub(crate) fn framebuffer_samples(&self, name: u32) -> i32 {
+        let Some(f) = self.objects.framebuffers.get(&name) else {
+            return 0;
+        };
+        f.color
+            .iter()
+            .flatten()
+            .chain(f.depth.iter())
+            .chain(f.stencil.iter())
+            .filter_map(|a| match a {
+                Attachment::Renderbuffer(rb) => self.objects.renderbuffers.get(rb),
+                Attachment::Texture { .. } => None,
+            })
+            .map(|r| r.samples)
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// glRenderbufferStorage(EXT).
+    pub fn renderbuffer_storage(&mut self, target: u32, internal: u32, w: i32, h: i32) {
+        self.storage(target, internal, w, h);
+    }
+
+    /// The body of glRenderbufferStorage*: false when an error was
+    /// recorded.
+    fn storage(&mut self, target: u32, internal: u32, w: i32, h: i32) -> bool {
+        if target != GL_RENDERBUFFER {
+            self.set_error(GL_INVALID_ENUM);
+            return false;
         }
         let ok_format = base_format(internal as i32).is_some()
             || matches!(
@@ -69,16 +194,16 @@ impl Context {
             );
         if !ok_format {
             self.set_error(GL_INVALID_ENUM);
-            return;
+            return false;
         }
         if !(0..=MAX_TEXTURE_SIZE).contains(&w) || !(0..=MAX_TEXTURE_SIZE).contains(&h) {
             self.set_error(GL_INVALID_VALUE);
-            return;
+            return false;
         }
         let rb = self.objects.bound_renderbuffer;
         let Some(r) = self.objects.renderbuffers.get_mut(&rb).filter(|_| rb != 0) else {
             self.set_error(GL_INVALID_OPERATION);
-            return;
+            return false;
         };
         let n = w as usize * h as usize;
         *r = RenderbufferObj {
@@ -87,7 +212,9 @@ impl Context {
             height: h,
             texels: vec![[0.0, 0.0, 0.0, 0.0]; n],
             stencil: vec![0; n],
+            samples: 0,
         };
+        true
     }
 
     // ---- framebuffers ----
@@ -478,6 +605,23 @@ impl Context {
         }
         if sizes.iter().any(|s| *s != sizes[0]) {
             return GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT;
+        }
+        // Every attachment has the same sample count (textures: 0).
+        let samples: Vec<i32> = f
+            .color
+            .iter()
+            .flatten()
+            .chain(f.depth.iter())
+            .chain(f.stencil.iter())
+            .map(|a| match a {
+                Attachment::Renderbuffer(rb) => {
+                    self.objects.renderbuffers.get(rb).map_or(0, |r| r.samples)
+                }
+                Attachment::Texture { .. } => 0,
+            })
+            .collect();
+        if samples.iter().any(|&n| n != samples[0]) {
+            return GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE;
         }
         for &db in &f.draw_buffers {
             if db != GL_NONE {

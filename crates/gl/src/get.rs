@@ -126,7 +126,16 @@ impl Context {
             GL_CLIENT_ATTRIB_STACK_DEPTH => int(&[self.attrib_stack_depths().1 as i64]),
             GL_MAX_TEXTURE_LOD_BIAS => flt(&[16.0]),
             GL_SUBPIXEL_BITS => int(&[8]),
-            GL_NUM_COMPRESSED_TEXTURE_FORMATS | GL_SAMPLE_BUFFERS | GL_SAMPLES => int(&[0]),
+            GL_NUM_COMPRESSED_TEXTURE_FORMATS => int(&[0]),
+            GL_MAX_SAMPLES => int(&[crate::framebuffer::MAX_SAMPLES as i64]),
+            GL_SAMPLE_BUFFERS | GL_SAMPLES => {
+                let samples = self.draw_framebuffer_samples() as i64;
+                if pname == GL_SAMPLES {
+                    int(&[samples])
+                } else {
+                    int(&[(samples > 0) as i64])
+                }
+            }
             GL_RED_BITS | GL_GREEN_BITS | GL_BLUE_BITS | GL_ALPHA_BITS => int(&[8]),
             GL_DEPTH_BITS => int(&[24]),
             GL_STENCIL_BITS => int(&[8]),

@@ -54,7 +54,7 @@
 //!   [`textures`] (glTex*, texture queries), [`mipmap`],
 //!   [`texture_format`] (internal formats, stored texels),
 //!   [`framebuffer`] (renderbuffers, FBOs, completeness, draw/read
-//!   buffers).
+//!   buffers), [`blit`] (glBlitFramebuffer).
 //! - Client images: [`pixel_transfer`] (layout, unpack, pack, scale and
 //!   bias), [`readback`] (glReadPixels), [`pixel_path`] (raster position,
 //!   glDrawPixels, glBitmap, glCopyPixels).
@@ -85,6 +85,7 @@
 //! - glPushAttrib does not save texture-object parameters or hints.
 
 pub mod attrib_stack;
+pub mod blit;
 pub mod buffers;
 pub mod builtins;
 pub mod debug;

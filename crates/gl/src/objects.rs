@@ -167,6 +167,9 @@ pub struct RenderbufferObj {
     /// Contents (kept between draws), RGBA or depth in .0.
     pub texels: Vec<[f32; 4]>,
     pub stencil: Vec<u8>,
+    /// GL_RENDERBUFFER_SAMPLES: what glRenderbufferStorageMultisample
+    /// asked for, rounded up to a supported count (0: single-sampled).
+    pub samples: i32,
 }
 
 /// What a framebuffer attachment point refers to.

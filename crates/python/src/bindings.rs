@@ -242,13 +242,7 @@ fn multi_tex_coord_unit(name: &str) -> Option<u32> {
 impl RawContext {
     #[new]
     #[pyo3(signature = (width, height, major=2, minor=1, profile="compatibility"))]
-    fn new(
-        width: i32,
-        height: i32,
-        major: i32,
-        minor: i32,
-        profile: &str,
-    ) -> PyResult<RawContext> {
+    fn new(width: i32, height: i32, major: i32, minor: i32, profile: &str) -> PyResult<RawContext> {
         let max = gl::MAX_TEXTURE_SIZE;
         if !(1..=max).contains(&width) || !(1..=max).contains(&height) {
             return Err(PyValueError::new_err(format!(
@@ -290,7 +284,11 @@ impl RawContext {
     /// The context's (major, minor, profile).
     fn api(&self) -> (u32, u32, &'static str) {
         let api = self.gl().api();
-        let profile = if api.is_core() { "core" } else { "compatibility" };
+        let profile = if api.is_core() {
+            "core"
+        } else {
+            "compatibility"
+        };
         (api.major, api.minor, profile)
     }
 
