@@ -113,6 +113,15 @@ pub trait GlApi {
         stride: i32,
         data: &[f32],
     );
+    /// glVertexAttribIPointer: `data` holds the integers' bits.
+    fn vertex_attrib_i_pointer(
+        &mut self,
+        index: u32,
+        size: i32,
+        ty: u32,
+        stride: i32,
+        data: &[f32],
+    );
     fn enable_vertex_attrib_array(&mut self, index: u32);
     fn disable_vertex_attrib_array(&mut self, index: u32);
     fn draw_arrays(&mut self, mode: u32, first: i32, count: i32);

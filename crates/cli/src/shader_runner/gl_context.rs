@@ -26,6 +26,40 @@ pub fn execute(opts: &Options, name: &str, script: &Script) -> (Verdict, String,
     execute_on(&mut ctx, opts, name, script)
 }
 
+/// The data of attribute `index`'s next pointer: the values themselves
+/// (a client array), or in a core context, which has no client arrays,
+/// offset 0 of the buffer the attribute already reads (or a new one),
+/// filled with them and left bound to GL_ARRAY_BUFFER for the pointer
+/// call ([`restore_array_buffer`] unbinds it), as piglit streams its
+/// arrays there.
+fn array_data(ctx: &mut gl::Context, index: u32, values: &[f32]) -> ArrayData {
+    if !ctx.is_core() {
+        return ArrayData::from_f32(values);
+    }
+    let bound = ctx.get_vertex_attrib_array(index, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING);
+    let buffer = match bound {
+        Some(b) if b > 0 => b as u32,
+        _ => ctx.gen_buffers(1).first().copied().unwrap_or(0),
+    };
+    ctx.bind_buffer(GL_ARRAY_BUFFER, buffer);
+    let bytes = f32_bytes(values);
+    ctx.buffer_data(
+        GL_ARRAY_BUFFER,
+        bytes.len() as isize,
+        Some(&bytes),
+        GL_STREAM_DRAW,
+    );
+    ArrayData::Offset(0)
+}
+
+/// Unbinds the buffer [`array_data`] bound (the runner binds no array
+/// buffer of its own).
+fn restore_array_buffer(ctx: &mut gl::Context) {
+    if ctx.is_core() {
+        ctx.bind_buffer(GL_ARRAY_BUFFER, 0);
+    }
+}
+
 fn f32_bytes(v: &[f32]) -> Vec<u8> {
     v.iter().flat_map(|f| f.to_le_bytes()).collect()
 }
@@ -278,36 +312,14 @@ impl GlApi for gl::Context {
         gl::Context::disable_client_state(self, array)
     }
     fn vertex_attrib_pointer(&mut self, i: u32, s: i32, ty: u32, n: bool, st: i32, d: &[f32]) {
-        if !self.is_core() {
-            return gl::Context::vertex_attrib_pointer(
-                self,
-                i,
-                s,
-                ty,
-                n,
-                st,
-                ArrayData::from_f32(d),
-            );
-        }
-        // Core contexts have no client arrays: the data goes into the
-        // buffer the attribute already reads (or a new one), as piglit
-        // does for its rectangles there.
-        let bound = self.get_vertex_attrib_array(i, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING);
-        let buffer = match bound {
-            Some(b) if b > 0 => b as u32,
-            _ => self.gen_buffers(1).first().copied().unwrap_or(0),
-        };
-        let previous = self.bound_buffer(GL_ARRAY_BUFFER);
-        self.bind_buffer(GL_ARRAY_BUFFER, buffer);
-        let bytes = f32_bytes(d);
-        self.buffer_data(
-            GL_ARRAY_BUFFER,
-            bytes.len() as isize,
-            Some(&bytes),
-            GL_STREAM_DRAW,
-        );
-        gl::Context::vertex_attrib_pointer(self, i, s, ty, n, st, ArrayData::Offset(0));
-        self.bind_buffer(GL_ARRAY_BUFFER, previous);
+        let data = array_data(self, i, d);
+        gl::Context::vertex_attrib_pointer(self, i, s, ty, n, st, data);
+        restore_array_buffer(self);
+    }
+    fn vertex_attrib_i_pointer(&mut self, i: u32, s: i32, ty: u32, st: i32, d: &[f32]) {
+        let data = array_data(self, i, d);
+        gl::Context::vertex_attrib_i_pointer(self, i, s, ty, st, data);
+        restore_array_buffer(self);
     }
     fn enable_vertex_attrib_array(&mut self, index: u32) {
         gl::Context::enable_vertex_attrib_array(self, index)

@@ -630,8 +630,13 @@ impl<'a, G: GlApi> Runner<'a, G> {
                 ));
                 return Err(Stop(Verdict::Fail));
             }
-            self.gl
-                .vertex_attrib_pointer(loc as u32, size, GL_FLOAT, false, 0, &values);
+            if col.ty == GL_FLOAT {
+                self.gl
+                    .vertex_attrib_pointer(loc as u32, size, GL_FLOAT, false, 0, &values);
+            } else {
+                self.gl
+                    .vertex_attrib_i_pointer(loc as u32, size, col.ty, 0, &values);
+            }
             self.gl.enable_vertex_attrib_array(loc as u32);
         }
         self.vbo_rows = Some(vd.rows);

@@ -20,6 +20,7 @@
 //! test a skip: shaderbox implements OpenGL 2.1.
 
 use super::scan;
+use gl::enums::{GL_FLOAT, GL_INT, GL_UNSIGNED_INT};
 
 /// A shader stage section.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -145,6 +146,9 @@ pub struct VertexData {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Column {
     pub name: String,
+    /// GL_FLOAT, GL_INT or GL_UNSIGNED_INT; integer values are stored as
+    /// their bits in [`VertexData::values`].
+    pub ty: u32,
     pub components: usize,
     /// Offset of the column's first value within a row.
     pub offset: usize,
@@ -560,12 +564,17 @@ fn parse_vertex_data(
                 ))
             }
         };
-        if ty != "float" {
-            return Err(err(
-                header_line,
-                format!("vertex data type `{ty}' needs integer or double attributes (OpenGL 3.0 or later)"),
-            ));
-        }
+        let gl_ty = match ty {
+            "float" => GL_FLOAT,
+            "int" => GL_INT,
+            "uint" => GL_UNSIGNED_INT,
+            _ => {
+                return Err(err(
+                    header_line,
+                    format!("vertex data type `{ty}' is not supported (float, int, uint)"),
+                ))
+            }
+        };
         let components = match count {
             "1" | "2" | "3" | "4" => count.parse::<usize>().unwrap_or(4),
             "vec2" => 2,
@@ -586,6 +595,7 @@ fn parse_vertex_data(
         }
         columns.push(Column {
             name: name.to_string(),
+            ty: gl_ty,
             components,
             offset,
         });
@@ -594,10 +604,20 @@ fn parse_vertex_data(
     let stride = offset;
     let mut values = Vec::new();
     let mut count = 0;
+    // The type of each value of a row.
+    let types: Vec<u32> = columns
+        .iter()
+        .flat_map(|c| std::iter::repeat_n(c.ty, c.components))
+        .collect();
     for (n, row) in rows {
         let before = values.len();
-        for tok in row.split_whitespace() {
-            let v = match scan::scan_f32_or_bits(tok) {
+        for (i, tok) in row.split_whitespace().enumerate() {
+            let v = match types.get(i).copied().unwrap_or(GL_FLOAT) {
+                GL_INT => scan::scan_i32_base0(tok).map(|(v, r)| (f32::from_bits(v as u32), r)),
+                GL_UNSIGNED_INT => scan::scan_u32_base0(tok).map(|(v, r)| (f32::from_bits(v), r)),
+                _ => scan::scan_f32_or_bits(tok),
+            };
+            let v = match v {
                 Some((v, "")) => v,
                 _ => return Err(err(n, format!("bad vertex data value `{tok}'"))),
             };
