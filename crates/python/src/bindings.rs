@@ -35,6 +35,11 @@ type DiagTuple = (
     Vec<String>,
 );
 type ReportTuple = (bool, Vec<DiagTuple>, String, String);
+/// A uniform block member: (name, GL type, array size, offset, array
+/// stride, matrix stride, row major).
+type MemberTuple = (String, u32, i32, i32, i32, i32, bool);
+/// A uniform block: (name, index, binding, data size, members).
+type BlockTuple = (String, u32, u32, i32, Vec<MemberTuple>);
 
 fn diag_tuple(d: Located) -> DiagTuple {
     (
@@ -82,40 +87,42 @@ fn version_of(v: Option<u32>) -> PyResult<Option<glsl::Version>> {
     }
 }
 
-/// compile_report(source, stage, version, name) -> (ok, diagnostics, text, info_log)
+/// compile_report(source, stage, version, name, compatibility) -> (ok,
+/// diagnostics, text, info_log); `compatibility`: whether the context
+/// offers the compatibility profile (false for core contexts).
 #[pyfunction]
-#[pyo3(signature = (source, stage, version=None, name="<shader>"))]
+#[pyo3(signature = (source, stage, version=None, name="<shader>", compatibility=true))]
 fn compile_report(
     source: &str,
     stage: &str,
     version: Option<u32>,
     name: &str,
+    compatibility: bool,
 ) -> PyResult<ReportTuple> {
-    let shader = report::compile(source, stage_of(stage)?, version_of(version)?, name);
+    let shader = report::compile_for(
+        source,
+        stage_of(stage)?,
+        version_of(version)?,
+        name,
+        compatibility,
+    );
     Ok(report_tuple(report::compile_report(&shader)))
 }
 
-/// link_report(vertex, fragment) -> (ok, diagnostics, text, info_log).
-/// Both given shaders must compile (call compile_report first).
+/// link_report(vertex, fragment, compatibility) -> (ok, diagnostics, text,
+/// info_log). Both given shaders must compile (call compile_report
+/// first).
 #[pyfunction]
-#[pyo3(signature = (vertex=None, fragment=None))]
-fn link_report(vertex: Option<&str>, fragment: Option<&str>) -> ReportTuple {
+#[pyo3(signature = (vertex=None, fragment=None, compatibility=true))]
+fn link_report(vertex: Option<&str>, fragment: Option<&str>, compatibility: bool) -> ReportTuple {
     let mut shaders = Vec::new();
-    if let Some(v) = vertex {
-        shaders.push(report::compile(
-            v,
-            glsl::Stage::Vertex,
-            None,
-            "vertex_shader",
-        ));
-    }
-    if let Some(f) = fragment {
-        shaders.push(report::compile(
-            f,
-            glsl::Stage::Fragment,
-            None,
-            "fragment_shader",
-        ));
+    for (src, stage, name) in [
+        (vertex, glsl::Stage::Vertex, "vertex_shader"),
+        (fragment, glsl::Stage::Fragment, "fragment_shader"),
+    ] {
+        if let Some(src) = src {
+            shaders.push(report::compile_for(src, stage, None, name, compatibility));
+        }
     }
     let refs: Vec<&glsl::Shader> = shaders.iter().collect();
     report_tuple(report::link_report(&refs))
@@ -403,20 +410,27 @@ impl RawContext {
         self.gl().light_model(pname, Param::Fv(&v));
     }
 
-    /// Compiles and links a program through GL; returns (name, linked,
-    /// info log). The caller checks the sources first (compile_report,
-    /// link_report) for structured diagnostics.
+    /// Compiles and links a program through GL; returns (name, compiled,
+    /// linked, info log). The caller checks the sources first
+    /// (compile_report, link_report) for structured diagnostics; what
+    /// only the context refuses (GLSL 1.10 in a core context) fails here.
     #[pyo3(signature = (vertex=None, fragment=None))]
-    fn build_program(&self, vertex: Option<&str>, fragment: Option<&str>) -> (u32, bool, String) {
+    fn build_program(
+        &self,
+        vertex: Option<&str>,
+        fragment: Option<&str>,
+    ) -> (u32, bool, bool, String) {
         let mut gl = self.gl();
         let program = gl.create_program();
         let mut log = String::new();
+        let mut compiled = true;
         for (kind, src) in [(GL_VERTEX_SHADER, vertex), (GL_FRAGMENT_SHADER, fragment)] {
             let Some(src) = src else { continue };
             let sh = gl.create_shader(kind);
             gl.shader_source(sh, &[src]);
             gl.compile_shader(sh);
             if gl.get_shaderiv(sh, GL_COMPILE_STATUS) == 0 {
+                compiled = false;
                 log.push_str(&gl.get_shader_info_log(sh));
             }
             gl.attach_shader(program, sh);
@@ -426,7 +440,7 @@ impl RawContext {
         gl.link_program(program);
         let linked = gl.get_programiv(program, GL_LINK_STATUS) != 0;
         log.push_str(&gl.get_program_info_log(program));
-        (program, linked, log)
+        (program, compiled, linked, log)
     }
     fn delete_program(&self, program: u32) {
         self.gl().delete_program(program);
@@ -434,18 +448,81 @@ impl RawContext {
     fn use_program(&self, program: u32) {
         self.gl().use_program(program);
     }
-    /// [(name, array size, GL type, location)] of every active uniform.
-    fn active_uniforms(&self, program: u32) -> Vec<(String, i32, u32, i32)> {
+    /// [(name, array size, GL type, location, block index)] of every
+    /// active uniform; members of uniform blocks have location -1 and the
+    /// index of their block, the others block index -1.
+    fn active_uniforms(&self, program: u32) -> Vec<(String, i32, u32, i32, i32)> {
         let mut gl = self.gl();
         let n = gl.get_programiv(program, GL_ACTIVE_UNIFORMS).max(0) as u32;
         let mut out = Vec::new();
         for i in 0..n {
             if let Some(info) = gl.get_active_uniform(program, i) {
                 let loc = gl.get_uniform_location(program, &info.name);
-                out.push((info.name, info.size, info.ty, loc));
+                let block = gl
+                    .get_active_uniformsiv(program, &[i], GL_UNIFORM_BLOCK_INDEX)
+                    .and_then(|v| v.first().copied())
+                    .unwrap_or(-1);
+                out.push((info.name, info.size, info.ty, loc, block));
             }
         }
         out
+    }
+    /// [(name, index, binding, data size, members)] of every active
+    /// uniform block, members as [(name, GL type, array size, offset,
+    /// array stride, matrix stride, row major)] (glGetActiveUniformsiv).
+    fn uniform_blocks(&self, program: u32) -> Vec<BlockTuple> {
+        let mut gl = self.gl();
+        let n = gl.get_programiv(program, GL_ACTIVE_UNIFORM_BLOCKS).max(0) as u32;
+        let mut out = Vec::new();
+        for b in 0..n {
+            let Some(name) = gl.get_active_uniform_block_name(program, b) else {
+                continue;
+            };
+            let mut iv = |pname| {
+                gl.get_active_uniform_blockiv(program, b, pname)
+                    .unwrap_or_default()
+            };
+            let binding = iv(GL_UNIFORM_BLOCK_BINDING).first().copied().unwrap_or(0);
+            let size = iv(GL_UNIFORM_BLOCK_DATA_SIZE).first().copied().unwrap_or(0);
+            let indices: Vec<u32> = iv(GL_UNIFORM_BLOCK_ACTIVE_UNIFORM_INDICES)
+                .into_iter()
+                .map(|i| i as u32)
+                .collect();
+            let mut q = |pname| {
+                gl.get_active_uniformsiv(program, &indices, pname)
+                    .unwrap_or_else(|| vec![0; indices.len()])
+            };
+            let [types, sizes, offsets, astrides, mstrides, row_major] = [
+                GL_UNIFORM_TYPE,
+                GL_UNIFORM_SIZE,
+                GL_UNIFORM_OFFSET,
+                GL_UNIFORM_ARRAY_STRIDE,
+                GL_UNIFORM_MATRIX_STRIDE,
+                GL_UNIFORM_IS_ROW_MAJOR,
+            ]
+            .map(&mut q);
+            let mut members = Vec::new();
+            for (k, &i) in indices.iter().enumerate() {
+                let Some(mname) = gl.get_active_uniform_name(program, i) else {
+                    continue;
+                };
+                members.push((
+                    mname,
+                    types[k] as u32,
+                    sizes[k],
+                    offsets[k],
+                    astrides[k],
+                    mstrides[k],
+                    row_major[k] != 0,
+                ));
+            }
+            out.push((name, b, binding as u32, size, members));
+        }
+        out
+    }
+    /// glUniformBlockBinding.
+    fn uniform_block_binding(&self, program: u32, index: u32, binding: u32) {
+        self.gl().uniform_block_binding(program, index, binding);
     }
     /// [(name, GL type, location)] of every active attribute; built-in
     /// attributes (gl_Vertex...) have location -1.
@@ -488,6 +565,18 @@ impl RawContext {
         }
         Ok(())
     }
+    /// glUniform{comps}uiv.
+    fn uniform_u(&self, loc: i32, comps: u32, count: i32, v: Vec<u32>) -> PyResult<()> {
+        let mut gl = self.gl();
+        match comps {
+            1 => gl.uniform_1uiv(loc, count, &v),
+            2 => gl.uniform_2uiv(loc, count, &v),
+            3 => gl.uniform_3uiv(loc, count, &v),
+            4 => gl.uniform_4uiv(loc, count, &v),
+            _ => return Err(PyValueError::new_err("components must be 1-4")),
+        }
+        Ok(())
+    }
     /// glUniformMatrix{cols}x{rows}fv with row-major input (transpose).
     fn uniform_matrix(
         &self,
@@ -518,6 +607,9 @@ impl RawContext {
     fn get_uniformi(&self, program: u32, loc: i32) -> Vec<i32> {
         self.gl().get_uniformiv(program, loc)
     }
+    fn get_uniformu(&self, program: u32, loc: i32) -> Vec<u32> {
+        self.gl().get_uniformuiv(program, loc)
+    }
 
     /// A buffer object holding `data`; returns its name.
     fn create_buffer(&self, data: &[u8]) -> PyResult<u32> {
@@ -533,9 +625,67 @@ impl RawContext {
     fn delete_buffer(&self, name: u32) {
         self.gl().delete_buffers(&[name]);
     }
-    /// Disables every vertex array (client state and generic).
+    /// glBufferSubData on buffer `name`.
+    fn buffer_sub_data(&self, name: u32, offset: usize, data: &[u8]) -> PyResult<()> {
+        let offset =
+            isize::try_from(offset).map_err(|_| PyValueError::new_err("offset too large"))?;
+        let mut gl = self.gl();
+        gl.bind_buffer(GL_ARRAY_BUFFER, name);
+        gl.buffer_sub_data(GL_ARRAY_BUFFER, offset, data);
+        gl.bind_buffer(GL_ARRAY_BUFFER, 0);
+        Ok(())
+    }
+    /// glGetBufferSubData of buffer `name`.
+    fn get_buffer_sub_data<'py>(
+        &self,
+        py: Python<'py>,
+        name: u32,
+        offset: usize,
+        size: usize,
+    ) -> PyResult<Bound<'py, PyBytes>> {
+        let (Ok(offset), Ok(size)) = (isize::try_from(offset), isize::try_from(size)) else {
+            return Err(PyValueError::new_err("range too large"));
+        };
+        let mut gl = self.gl();
+        gl.bind_buffer(GL_ARRAY_BUFFER, name);
+        let bytes = gl.get_buffer_sub_data(GL_ARRAY_BUFFER, offset, size);
+        gl.bind_buffer(GL_ARRAY_BUFFER, 0);
+        Ok(PyBytes::new(py, &bytes))
+    }
+    /// Binds buffer `name` to uniform-buffer binding point `binding`:
+    /// glBindBufferBase, or glBindBufferRange with `range` = (offset, size).
+    #[pyo3(signature = (binding, name, range=None))]
+    fn bind_uniform_buffer(
+        &self,
+        binding: u32,
+        name: u32,
+        range: Option<(usize, usize)>,
+    ) -> PyResult<()> {
+        let mut gl = self.gl();
+        match range {
+            None => gl.bind_buffer_base(GL_UNIFORM_BUFFER, binding, name),
+            Some((offset, size)) => {
+                let (Ok(offset), Ok(size)) = (isize::try_from(offset), isize::try_from(size))
+                else {
+                    return Err(PyValueError::new_err("range too large"));
+                };
+                gl.bind_buffer_range(GL_UNIFORM_BUFFER, binding, name, offset, size);
+            }
+        }
+        Ok(())
+    }
+    /// Disables every vertex array (client state and generic) and resets
+    /// the generic arrays' divisors. Core contexts have no client-state
+    /// arrays.
     fn reset_arrays(&self) {
         let mut gl = self.gl();
+        for i in 0..gl::MAX_VERTEX_ATTRIBS as u32 {
+            gl.disable_vertex_attrib_array(i);
+            gl.vertex_attrib_divisor(i, 0);
+        }
+        if gl.api().is_core() {
+            return;
+        }
         for cap in [
             GL_VERTEX_ARRAY,
             GL_NORMAL_ARRAY,
@@ -550,9 +700,6 @@ impl RawContext {
             gl.disable_client_state(GL_TEXTURE_COORD_ARRAY);
         }
         gl.client_active_texture(GL_TEXTURE0);
-        for i in 0..gl::MAX_VERTEX_ATTRIBS as u32 {
-            gl.disable_vertex_attrib_array(i);
-        }
     }
     /// Points a built-in attribute (`gl_Vertex`, `gl_Normal`, `gl_Color`,
     /// `gl_SecondaryColor`, `gl_FogCoord`, `gl_MultiTexCoordN`) at a
@@ -610,8 +757,11 @@ impl RawContext {
         gl.bind_buffer(GL_ARRAY_BUFFER, 0);
         true
     }
-    /// glVertexAttribPointer into a buffer, and enables the array.
+    /// glVertexAttribPointer (glVertexAttribIPointer when `integer`:
+    /// the values reach the shader unconverted) into a buffer, with
+    /// glVertexAttribDivisor(`divisor`), and enables the array.
     #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (index, size, ty, normalized, stride, buffer, offset, integer=false, divisor=0))]
     fn attrib_pointer(
         &self,
         index: u32,
@@ -621,30 +771,41 @@ impl RawContext {
         stride: i32,
         buffer: u32,
         offset: usize,
+        integer: bool,
+        divisor: u32,
     ) {
         let mut gl = self.gl();
         gl.bind_buffer(GL_ARRAY_BUFFER, buffer);
-        gl.vertex_attrib_pointer(
-            index,
-            size,
-            ty,
-            normalized,
-            stride,
-            ArrayData::Offset(offset),
-        );
+        let data = ArrayData::Offset(offset);
+        if integer {
+            gl.vertex_attrib_i_pointer(index, size, ty, stride, data);
+        } else {
+            gl.vertex_attrib_pointer(index, size, ty, normalized, stride, data);
+        }
+        gl.vertex_attrib_divisor(index, divisor);
         gl.enable_vertex_attrib_array(index);
         gl.bind_buffer(GL_ARRAY_BUFFER, 0);
     }
-    /// glDrawArrays; returns the pipeline's error message, if any (GL
-    /// errors are read with get_error).
-    fn draw_arrays(&self, py: Python<'_>, mode: u32, first: i32, count: i32) -> Option<String> {
+    /// glDrawArraysInstanced (glDrawArrays for one instance); returns the
+    /// pipeline's error message, if any (GL errors are read with
+    /// get_error).
+    #[pyo3(signature = (mode, first, count, instances=1))]
+    fn draw_arrays(
+        &self,
+        py: Python<'_>,
+        mode: u32,
+        first: i32,
+        count: i32,
+        instances: i32,
+    ) -> Option<String> {
         py.detach(|| {
             let mut gl = self.gl();
-            gl.draw_arrays(mode, first, count);
+            gl.draw_arrays_instanced(mode, first, count, instances);
             gl.take_draw_error()
         })
     }
-    /// glDrawElements with the indices in buffer `indices`.
+    /// glDrawElementsInstanced with the indices in buffer `indices`.
+    #[pyo3(signature = (mode, count, ty, indices, instances=1))]
     fn draw_elements(
         &self,
         py: Python<'_>,
@@ -652,11 +813,12 @@ impl RawContext {
         count: i32,
         ty: u32,
         indices: u32,
+        instances: i32,
     ) -> Option<String> {
         py.detach(|| {
             let mut gl = self.gl();
             gl.bind_buffer(GL_ELEMENT_ARRAY_BUFFER, indices);
-            gl.draw_elements(mode, count, ty, ArrayData::Offset(0));
+            gl.draw_elements_instanced(mode, count, ty, ArrayData::Offset(0), instances);
             gl.bind_buffer(GL_ELEMENT_ARRAY_BUFFER, 0);
             gl.take_draw_error()
         })

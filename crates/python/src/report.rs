@@ -65,9 +65,24 @@ fn locate(d: &Diagnostic, map: &SourceMap, stage: Option<Stage>) -> Located {
 
 /// Compiles `source` as `stage`, naming it `name` in the rendered text.
 pub fn compile(source: &str, stage: Stage, version: Option<Version>, name: &str) -> Shader {
+    compile_for(source, stage, version, name, true)
+}
+
+/// [`compile`] for a context that offers the compatibility profile or
+/// not (a core context: `#version 140` shaders are core ones and
+/// `#version 150 compatibility` is refused; see
+/// `glsl::CompileOptions::compatibility_context`).
+pub fn compile_for(
+    source: &str,
+    stage: Stage,
+    version: Option<Version>,
+    name: &str,
+    compatibility_context: bool,
+) -> Shader {
     let mut opts = CompileOptions::new(stage);
     opts.name = name.to_string();
     opts.default_version = version;
+    opts.compatibility_context = compatibility_context;
     glsl::compile(&[source], &opts)
 }
 

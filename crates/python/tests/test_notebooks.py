@@ -40,3 +40,21 @@ def test_notebook_runs(path, tmp_path):
         text = "".join(o.get("text", "") for o in outputs if o.output_type == "stream")
         assert "normalise" in text and "error" in text
         assert len(pngs) >= 3
+        # The OpenGL 3.3 core section: its context, its uniform block's
+        # std140 layout, one instanced draw of the grid, and its pictures.
+        assert "(3, 3) core" in text and "view       mat4  offset  64" in text
+        assert "81 instances" in text
+        core_cells = [c for c in nb.cells if c.cell_type == "code" and "instances=k * k" in c.source]
+        core_pngs = [o for c in core_cells for o in c.outputs if "image/png" in o.get("data", {})]
+        assert len(core_pngs) == 2
+        image = pytest.importorskip("PIL.Image")
+        import base64
+        import io
+
+        import numpy as np
+
+        for o in core_pngs:
+            px = np.asarray(image.open(io.BytesIO(base64.b64decode(o["data"]["image/png"]))).convert("RGB"))
+            background = (px == px[0, 0]).all(axis=2)
+            # Spheres cover much of the picture.
+            assert 0.2 < 1 - background.mean() < 0.9

@@ -20,6 +20,7 @@ from . import _shaderbox
 from ._check import check
 from ._context import (
     Attribute,
+    BlockMember,
     Buffer,
     Context,
     Fog,
@@ -29,6 +30,7 @@ from ._context import (
     Program,
     Texture,
     Uniform,
+    UniformBlock,
     VertexArray,
     parse_format,
 )
@@ -40,6 +42,7 @@ __version__: str = _shaderbox.__version__
 
 __all__ = [
     "Attribute",
+    "BlockMember",
     "Buffer",
     "CompileError",
     "Context",
@@ -56,6 +59,7 @@ __all__ = [
     "Program",
     "Texture",
     "Uniform",
+    "UniformBlock",
     "VertexArray",
     "check",
     "parse_format",

@@ -56,7 +56,7 @@ class Uniform:
     array_length: Optional[int]
     shape: Tuple[int, ...]
     location: int
-    kind: str  # "float", "int", "bool" or "sampler"
+    kind: str  # "float", "int", "uint", "bool" or "sampler"
 
     @property
     def element_shape(self) -> Tuple[int, ...]:
@@ -79,6 +79,160 @@ class Attribute:
     def builtin(self) -> bool:
         return self.name.startswith("gl_")
 
+    @property
+    def integer(self) -> bool:
+        """Whether the attribute is ``int``/``ivecN``/``uint``/``uvecN``:
+        fed unconverted (glVertexAttribIPointer), from an integer format."""
+        kind = next((k for g, k, _ in _gl.TYPES.values() if g == self.type), "float")
+        return kind in ("int", "uint")
+
+
+@dataclass(frozen=True)
+class BlockMember:
+    """A member of a uniform block as the program lays it out (std140 for
+    ``layout(std140)`` blocks): ``offset`` in bytes from the block's start,
+    ``array_stride`` between array elements, ``matrix_stride`` between a
+    matrix's columns (rows if ``row_major``)."""
+
+    name: str
+    type: str
+    array_length: Optional[int]
+    shape: Tuple[int, ...]
+    kind: str
+    offset: int
+    array_stride: int
+    matrix_stride: int
+    row_major: bool
+
+    @property
+    def element_shape(self) -> Tuple[int, ...]:
+        return self.shape[1:] if self.array_length is not None else self.shape
+
+    def _describe(self) -> str:
+        return f"{self.type}[{self.array_length}]" if self.array_length is not None else self.type
+
+
+class UniformBlock:
+    """An active uniform block of a :class:`Program` (``prog["Block"]`` or
+    ``prog.uniform_blocks["Block"]``).
+
+    The block reads its members from the buffer bound to its binding
+    point: set :attr:`binding`, write the data into a :class:`Buffer`
+    (:meth:`pack` lays values out at the member offsets the program uses)
+    and bind it with :meth:`Buffer.bind_to_uniform_block`::
+
+        block = prog["Light"]
+        block.binding = 0
+        ubo = ctx.buffer(block.pack({"color": (1, 0, 0, 1), "dir": (0, 0, 1)}))
+        ubo.bind_to_uniform_block(0)
+    """
+
+    def __init__(self, program: "Program", name: str, index: int, size: int, members: Dict[str, BlockMember]):
+        self.program = program
+        self.name = name
+        #: The block index (glGetUniformBlockIndex).
+        self.index = index
+        #: GL_UNIFORM_BLOCK_DATA_SIZE: the bytes a buffer must hold.
+        self.size = size
+        #: The members by the names GL gives them (``"Block.member"`` for
+        #: a block with an instance name).
+        self.members = members
+
+    @property
+    def binding(self) -> int:
+        """The uniform-buffer binding point the block reads
+        (glUniformBlockBinding; 0 until set)."""
+        raw = self.program.ctx._raw
+        for name, _index, binding, _size, _members in raw.uniform_blocks(self.program.glo):
+            if name == self.name:
+                return int(binding)
+        return 0
+
+    @binding.setter
+    def binding(self, binding: int) -> None:
+        raw = self.program.ctx._raw
+        n = _max_uniform_bindings(raw)
+        if not isinstance(binding, (int, np.integer)) or isinstance(binding, bool) or not 0 <= int(binding) < n:
+            raise ValueError(f"uniform block {self.name!r}: binding points are 0-{n - 1}, got {binding!r}")
+        raw.uniform_block_binding(self.program.glo, self.index, int(binding))
+        _check_gl(raw, f"setting the binding of uniform block {self.name!r}")
+
+    def _member(self, key: str) -> BlockMember:
+        m = self.members.get(key) or self.members.get(f"{self.name}.{key}")
+        if m is None:
+            known = ", ".join(sorted(self.members)) or "none"
+            raise KeyError(f"uniform block {self.name!r} has no active member {key!r} (its members: {known})")
+        return m
+
+    def pack(self, values: Dict[str, Any], into: Optional[bytearray] = None) -> bytes:
+        """``values`` (member name -> value, shaped as for uniforms) laid
+        out as the block's bytes (:attr:`size` of them; members not given
+        are zero, or keep their bytes from ``into``). Names are the
+        members' (``"color"``, or ``"Block.color"`` / ``"color"`` for a
+        block with an instance name)."""
+        out = bytearray(self.size) if into is None else bytearray(into)
+        if len(out) < self.size:
+            raise ValueError(f"uniform block {self.name!r} is {self.size} bytes, `into` holds {len(out)}")
+        for key, value in values.items():
+            m = self._member(key)
+            _pack_member(out, m, value, f"member {key!r} of uniform block {self.name!r} ({m._describe()})")
+        return bytes(out)
+
+    def __repr__(self) -> str:
+        return f"<shaderbox.UniformBlock {self.name!r}: {self.size} bytes, members {sorted(self.members)}>"
+
+
+def _max_uniform_bindings(raw: Any) -> int:
+    v = raw.get_integerv(_gl.MAX_UNIFORM_BUFFER_BINDINGS)
+    return int(v[0]) if v else 0
+
+
+_BLOCK_DTYPES = {"float": np.dtype("<f4"), "int": np.dtype("<i4"), "uint": np.dtype("<u4"), "bool": np.dtype("<u4")}
+
+
+def _pack_member(out: bytearray, m: BlockMember, value: Any, what: str) -> None:
+    """Writes ``value`` into ``out`` at ``m``'s offsets and strides."""
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{what}: got {type(value).__name__} {value!r}")
+    a = _numeric(value, what)
+    elem = m.element_shape
+    n_elem = _size(elem)
+    n = m.array_length if m.array_length is not None else 1
+    if a.shape == elem or (m.array_length is None and a.ndim == 1 and a.size == n_elem):
+        count = 1
+    elif m.array_length is not None and a.ndim == len(elem) + 1 and a.shape[1:] == elem and 1 <= a.shape[0] <= n:
+        count = a.shape[0]
+    elif m.array_length is not None and a.ndim == 1 and a.size % max(1, n_elem) == 0 and 1 <= a.size // max(1, n_elem) <= n:
+        count = a.size // max(1, n_elem)
+    else:
+        want = (n,) + elem if m.array_length is not None else elem
+        raise ValueError(f"{what}: expected shape {want}, got shape {a.shape}")
+    flat = a.reshape(count, n_elem)
+    if m.kind == "float":
+        if not np.all(np.isfinite(flat)):
+            raise ValueError(f"{what}: values must be finite")
+    elif a.dtype.kind == "f":
+        raise TypeError(f"{what} takes integers, got {a.dtype} values; convert with .astype(int)")
+    elif m.kind == "int" and (np.any(flat < -(2**31)) or np.any(flat >= 2**31)):
+        raise ValueError(f"{what}: values must fit in 32 bits, got {flat.tolist()}")
+    elif m.kind == "uint" and (np.any(flat < 0) or np.any(flat >= 2**32)):
+        raise ValueError(f"{what}: values must be 0 to 2**32-1, got {flat.tolist()}")
+    if m.kind == "bool":
+        flat = flat != 0
+    words = flat.astype(_BLOCK_DTYPES.get(m.kind, np.dtype("<f4")))
+    for i in range(count):
+        base = m.offset + i * m.array_stride
+        if len(elem) == 2:
+            rows, cols = elem
+            mat = words[i].reshape(rows, cols)
+            # Each column (each row when row-major) is a vector at its stride.
+            vectors = mat if m.row_major else mat.T
+            for k, vec in enumerate(vectors):
+                start = base + k * m.matrix_stride
+                out[start : start + 4 * vec.size] = vec.tobytes()
+        else:
+            out[base : base + 4 * n_elem] = words[i].tobytes()
+
 
 class Program:
     """A linked GLSL program (made by :meth:`Context.program`).
@@ -91,6 +245,11 @@ class Program:
     Unknown names raise ``KeyError``, wrong shapes ``ValueError``, wrong
     dtypes (floats for an ``int``, strings...) ``TypeError``.
     ``prog["name"]`` reads the value back.
+
+    ``prog["Block"]`` is the :class:`UniformBlock` named ``Block`` (also in
+    :attr:`uniform_blocks`); the members of uniform blocks are not set
+    with ``prog[...]`` but read from a buffer (:meth:`UniformBlock.pack`,
+    :meth:`Buffer.bind_to_uniform_block`).
     """
 
     def __init__(self, ctx: "Context", name: int, warnings: Diagnostics):
@@ -100,12 +259,27 @@ class Program:
         self.warnings = warnings
         raw = ctx._raw
         self.uniforms: Dict[str, Uniform] = {}
-        for uname, size, ty, loc in raw.active_uniforms(name):
+        for uname, size, ty, loc, block in raw.active_uniforms(name):
+            if block >= 0:
+                continue  # a block member: in uniform_blocks
             glsl, kind, shape = _gl.TYPES.get(ty, (f"0x{ty:04x}", "float", ()))
             base = uname[:-3] if uname.endswith("[0]") else uname
             array = size if uname.endswith("[0]") else None
             full = ((size,) + shape) if array is not None else shape
             self.uniforms[base] = Uniform(base, glsl, array, full, loc, kind)
+        #: The active uniform blocks by name (:class:`UniformBlock`).
+        self.uniform_blocks: Dict[str, UniformBlock] = {}
+        self._block_of_member: Dict[str, str] = {}
+        for bname, index, _binding, bsize, members in raw.uniform_blocks(name):
+            mems: Dict[str, BlockMember] = {}
+            for mname, ty, size, offset, astride, mstride, row_major in members:
+                glsl, kind, shape = _gl.TYPES.get(ty, (f"0x{ty:04x}", "float", ()))
+                base = mname[:-3] if mname.endswith("[0]") else mname
+                array = size if mname.endswith("[0]") else None
+                full = ((size,) + shape) if array is not None else shape
+                mems[base] = BlockMember(base, glsl, array, full, kind, offset, astride, mstride, bool(row_major))
+                self._block_of_member[base] = bname
+            self.uniform_blocks[bname] = UniformBlock(self, bname, index, bsize, mems)
         self.attributes: Dict[str, Attribute] = {}
         for aname, ty, loc in raw.active_attributes(name):
             glsl = _gl.TYPES.get(ty, (f"0x{ty:04x}",))[0]
@@ -116,6 +290,7 @@ class Program:
         are left from there (None: not an array)."""
         if not isinstance(name, str):
             raise TypeError(f"uniform names are strings, not {type(name).__name__}")
+        self._refuse_block_member(name)
         u = self.uniforms.get(name)
         if u is not None:
             return u, u.location, u.array_length
@@ -130,10 +305,25 @@ class Program:
         known = ", ".join(sorted(self.uniforms)) or "none"
         raise KeyError(f"the program has no active uniform {name!r} (its uniforms: {known})")
 
+    def _refuse_block_member(self, name: str) -> None:
+        base = re.sub(r"\[\d+\]$", "", name)
+        block = self._block_of_member.get(base)
+        if block is not None:
+            raise TypeError(
+                f"{name!r} is a member of uniform block {block!r}, whose values come from a buffer, not from "
+                f"prog[...]: write them into a Buffer (prog[{block!r}].pack({{...}}) lays them out), bind it with "
+                f"buffer.bind_to_uniform_block(binding) and set prog[{block!r}].binding = binding"
+            )
+
     def __contains__(self, name: object) -> bool:
-        return isinstance(name, str) and name in self.uniforms
+        return isinstance(name, str) and (name in self.uniforms or name in self.uniform_blocks)
 
     def __setitem__(self, name: str, value: Any) -> None:
+        if isinstance(name, str) and name in self.uniform_blocks:
+            raise TypeError(
+                f"{name!r} is a uniform block: set its binding point with prog[{name!r}].binding = n and bind "
+                "a buffer holding its data with buffer.bind_to_uniform_block(n)"
+            )
         u, loc, left = self._lookup(name)
         raw = self.ctx._raw
         raw.use_program(self.glo)
@@ -163,6 +353,12 @@ class Program:
                 n_units = _shaderbox.MAX_TEXTURE_UNITS
                 if np.any(flat < 0) or np.any(flat >= n_units):
                     raise ValueError(f"{what}: texture units are 0-{n_units - 1}, got {flat.tolist()}")
+            if u.kind == "uint":
+                if np.any(flat < 0) or np.any(flat >= 2**32):
+                    raise ValueError(f"{what}: values must be 0 to 2**32-1, got {flat.tolist()}")
+                raw.uniform_u(loc, max(1, _size(elem)), count, [int(x) for x in flat])
+                _check_gl(raw, f"setting uniform {name!r}")
+                return
             if np.any(flat < -(2**31)) or np.any(flat >= 2**31):
                 raise ValueError(f"{what}: values must fit in 32 bits, got {flat.tolist()}")
             raw.uniform_i(loc, max(1, _size(elem)), count, [int(x) for x in flat])
@@ -191,6 +387,8 @@ class Program:
         raise ValueError(f"{what}: expected shape {(left,) + elem} (or fewer elements), got shape {a.shape}")
 
     def __getitem__(self, name: str) -> Any:
+        if isinstance(name, str) and name in self.uniform_blocks:
+            return self.uniform_blocks[name]
         u, loc, left = self._lookup(name)
         raw = self.ctx._raw
         n = left if left is not None else 1
@@ -200,10 +398,12 @@ class Program:
             el_loc = loc if (i == 0) else raw.uniform_location(self.glo, f"{base}[{i}]")
             if u.kind == "float":
                 vals.append(raw.get_uniformf(self.glo, el_loc))
+            elif u.kind == "uint":
+                vals.append(raw.get_uniformu(self.glo, el_loc))
             else:
                 vals.append(raw.get_uniformi(self.glo, el_loc))
         _check_gl(raw, f"reading uniform {name!r}")
-        dtype = np.float32 if u.kind == "float" else (np.bool_ if u.kind == "bool" else np.int32)
+        dtype = {"float": np.float32, "bool": np.bool_, "uint": np.uint32}.get(u.kind, np.int32)
         out: np.ndarray = np.asarray(vals, dtype=dtype)
         elem = u.element_shape
         if len(elem) == 2:
@@ -219,7 +419,8 @@ class Program:
         return out
 
     def __repr__(self) -> str:
-        return f"<shaderbox.Program {self.glo}: uniforms {sorted(self.uniforms)}, attributes {sorted(self.attributes)}>"
+        blocks = f", uniform blocks {sorted(self.uniform_blocks)}" if self.uniform_blocks else ""
+        return f"<shaderbox.Program {self.glo}: uniforms {sorted(self.uniforms)}{blocks}, attributes {sorted(self.attributes)}>"
 
 
 def _size(shape: Tuple[int, ...]) -> int:
@@ -245,6 +446,8 @@ _FORMATS = {
     "u2": (_gl.UNSIGNED_SHORT, 2, "u"),
     "u1": (_gl.UNSIGNED_BYTE, 1, "u"),
 }
+# GL type -> "f" (float) or "i"/"u" (integer).
+_FORMATS_KIND = {gl_type: kind for gl_type, _, kind in _FORMATS.values()}
 _NUMPY_OF: Dict[Tuple[int, int], np.dtype] = {
     (_gl.FLOAT, 4): np.dtype("<f4"),
     (_gl.DOUBLE, 8): np.dtype("<f8"),
@@ -264,6 +467,8 @@ class _Field:
     size: int  # bytes per component
     normalized: bool
     padding: bool
+    # glVertexAttribDivisor: 0 per vertex, 1 per instance.
+    divisor: int = 0
 
 
 def parse_format(fmt: str) -> List[_Field]:
@@ -271,11 +476,27 @@ def parse_format(fmt: str) -> List[_Field]:
     ``"3f 4x"``: per field, a component count, a type (``f``/``f4``
     float32, ``f8`` float64, ``i``/``i4``, ``i2``, ``i1``, ``u``/``u4``,
     ``u2``, ``u1``), ``n`` to normalize integers to 0-1 (or -1-1), or
-    ``x`` for padding bytes."""
+    ``x`` for padding bytes. A trailing ``/i`` makes every field of the
+    format per instance (the next element each instance, divisor 1),
+    ``/r`` per render (element 0 for every instance); ``/v`` (the
+    default) is per vertex."""
     if not isinstance(fmt, str) or not fmt.strip():
         raise ValueError(f"vertex format {fmt!r} is empty: write e.g. '3f' or '3f 4f'")
+    divisor = 0
+    m = re.fullmatch(r"(.*?)\s*/\s*(\S*)\s*", fmt)
+    body = fmt
+    if m:
+        rate = m.group(2)
+        if rate not in ("v", "i", "r"):
+            raise ValueError(
+                f"vertex format {fmt!r}: {'/' + rate!r} is not a rate ('/v' per vertex, '/i' per instance, '/r' per render)"
+            )
+        divisor = {"v": 0, "i": 1, "r": _gl.PER_RENDER_DIVISOR}[rate]
+        body = m.group(1)
+        if not body.strip():
+            raise ValueError(f"vertex format {fmt!r} has a rate but no fields: write e.g. '3f/i'")
     fields = []
-    for tok in fmt.split():
+    for tok in body.split():
         m = re.fullmatch(r"(\d*)(x|f8|f4|f|d|i4|i2|i1|i|u4|u2|u1|u)(n?)", tok)
         if not m:
             raise ValueError(
@@ -287,14 +508,14 @@ def parse_format(fmt: str) -> List[_Field]:
         if kind == "x":
             if norm:
                 raise ValueError(f"vertex format {fmt!r}: padding ({tok!r}) cannot be normalized")
-            fields.append(_Field(count, 0, 1, False, True))
+            fields.append(_Field(count, 0, 1, False, True, divisor))
             continue
         if not 1 <= count <= 4:
             raise ValueError(f"vertex format {fmt!r}: {tok!r} has {count} components; attributes have 1-4")
         gl_type, size, k = _FORMATS[kind]
         if norm and k == "f":
             raise ValueError(f"vertex format {fmt!r}: only integer types can be normalized ({tok!r})")
-        fields.append(_Field(count, gl_type, size, norm, False))
+        fields.append(_Field(count, gl_type, size, norm, False, divisor))
     return fields
 
 
@@ -306,6 +527,7 @@ class Buffer:
     def __init__(self, ctx: "Context", data: Any):
         self.ctx = ctx
         self.dtype: Optional[np.dtype] = None
+        self.shape: Tuple[int, ...] = ()
         if isinstance(data, (bytes, bytearray, memoryview)):
             raw_bytes = bytes(data)
         else:
@@ -328,6 +550,65 @@ class Buffer:
             self.ctx._raw.delete_buffer(self.glo)
             self.glo = 0
 
+    def _range(self, offset: int, size: Optional[int], what: str) -> Tuple[int, int]:
+        for n, v in (("offset", offset), ("size", size)):
+            if v is not None and (not isinstance(v, (int, np.integer)) or isinstance(v, bool) or v < 0):
+                raise ValueError(f"{what}: {n} must be a non-negative int, got {v!r}")
+        offset = int(offset)
+        size = self.nbytes - offset if size is None else int(size)
+        if offset + size > self.nbytes or size < 0:
+            raise ValueError(f"{what}: bytes {offset}-{offset + size} are past the buffer's {self.nbytes}")
+        return offset, size
+
+    def write(self, data: Any, offset: int = 0) -> None:
+        """Replaces bytes from ``offset`` with ``data`` (bytes or a numeric
+        array; glBufferSubData). The buffer keeps its size."""
+        if isinstance(data, (bytes, bytearray, memoryview)):
+            raw_bytes = bytes(data)
+        else:
+            a = _numeric(data, "buffer data")
+            if a.dtype.byteorder == ">":
+                a = a.astype(a.dtype.newbyteorder("<"))
+            raw_bytes = np.ascontiguousarray(a).tobytes()
+        offset, _ = self._range(offset, len(raw_bytes), "Buffer.write")
+        self.ctx._raw.buffer_sub_data(self.glo, offset, raw_bytes)
+        _check_gl(self.ctx._raw, "writing a buffer")
+
+    def read(self, size: Optional[int] = None, offset: int = 0) -> bytes:
+        """``size`` bytes (default: to the end) from ``offset``."""
+        offset, size = self._range(offset, size, "Buffer.read")
+        data = self.ctx._raw.get_buffer_sub_data(self.glo, offset, size)
+        _check_gl(self.ctx._raw, "reading a buffer")
+        return bytes(data)
+
+    def bind_to_uniform_block(self, binding: int = 0, offset: int = 0, size: Optional[int] = None) -> None:
+        """Binds the buffer (bytes ``offset`` to ``offset + size``; default:
+        all of it) to uniform-buffer binding point ``binding``
+        (glBindBufferBase / glBindBufferRange on GL_UNIFORM_BUFFER): the
+        uniform blocks whose :attr:`UniformBlock.binding` is ``binding``
+        read their members from it."""
+        raw = self.ctx._raw
+        if self.ctx.version < (3, 1):
+            raise RuntimeError(
+                f"uniform buffers are OpenGL 3.1; this context is {self.ctx.version[0]}.{self.ctx.version[1]}: "
+                "create it with version=(3, 3)"
+            )
+        n = _max_uniform_bindings(raw)
+        if not isinstance(binding, (int, np.integer)) or isinstance(binding, bool) or not 0 <= int(binding) < n:
+            raise ValueError(f"uniform buffer binding points are 0-{n - 1}, got {binding!r}")
+        if offset == 0 and size is None:
+            raw.bind_uniform_buffer(int(binding), self.glo, None)
+        else:
+            offset, size = self._range(offset, size, "bind_to_uniform_block")
+            align = raw.get_integerv(_gl.UNIFORM_BUFFER_OFFSET_ALIGNMENT)
+            a = int(align[0]) if align else 1
+            if offset % a:
+                raise ValueError(f"bind_to_uniform_block: offset {offset} is not a multiple of {a} (GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT)")
+            if size == 0:
+                raise ValueError("bind_to_uniform_block: the range is empty")
+            raw.bind_uniform_buffer(int(binding), self.glo, (offset, size))
+        _check_gl(raw, f"binding a buffer to uniform binding point {binding}")
+
     def __repr__(self) -> str:
         return f"<shaderbox.Buffer {self.glo}: {self.nbytes} bytes{'' if self.dtype is None else ', ' + str(self.dtype)}>"
 
@@ -347,8 +628,11 @@ class VertexArray:
             raise TypeError(f"vertex_array needs a Program first, got {type(program).__name__}")
         self.ctx = ctx
         self.program = program
-        self._bindings: List[Tuple[str, _Field, int, int, int]] = []  # name, field, buffer, stride, offset
+        # name, field, buffer, stride, offset, integer
+        self._bindings: List[Tuple[str, _Field, int, int, int, bool]] = []
         counts = []
+        # Instances the per-instance buffers can feed (None: no limit).
+        instance_limits: List[int] = []
         seen = set()
         if isinstance(content, tuple) and content and isinstance(content[1] if len(content) > 1 else None, str):
             content = [content]
@@ -386,14 +670,41 @@ class VertexArray:
                     if name in seen:
                         raise ValueError(f"attribute {name!r} is given twice")
                     seen.add(name)
-                    if not name.startswith("gl_") and name not in program.attributes:
+                    builtin = name.startswith("gl_")
+                    if builtin and ctx.profile == "core":
+                        raise ValueError(
+                            f"{name!r} is a built-in attribute of the compatibility profile; a core context feeds "
+                            "the shader's own `in` attributes (declare e.g. `layout(location = 0) in vec3 pos;`)"
+                        )
+                    if builtin and f.divisor:
+                        raise ValueError(f"built-in attribute {name!r} cannot be per instance ({fmt!r})")
+                    if not builtin and name not in program.attributes:
                         known = ", ".join(sorted(program.attributes)) or "none"
                         raise KeyError(f"the program has no active attribute {name!r} (its attributes: {known})")
-                    self._bindings.append((name, f, buf.glo, stride, offset))
+                    integer = not builtin and program.attributes[name].integer
+                    if integer and (_FORMATS_KIND[f.gl_type] == "f" or f.normalized):
+                        a = program.attributes[name]
+                        raise TypeError(
+                            f"attribute {name!r} is {a.type}, an integer attribute: feed it an integer format "
+                            f"('i', 'i2', 'i1', 'u', 'u2', 'u1', without 'n'), not {fmt!r}; its values reach the "
+                            "shader unconverted"
+                        )
+                    self._bindings.append((name, f, buf.glo, stride, offset, integer))
                 offset += f.components * f.size
-            counts.append(buf.nbytes // stride if stride else 0)
-        #: Vertices available in every buffer (what render() draws by default).
-        self.vertices = min(counts) if counts else 0
+            elements = buf.nbytes // stride if stride else 0
+            divisor = fields[0].divisor
+            if divisor == 0:
+                counts.append(elements)
+            elif divisor == _gl.PER_RENDER_DIVISOR:
+                instance_limits.append(2**31 - 1 if elements else 0)
+            else:
+                instance_limits.append(min(elements * divisor, 2**31 - 1))
+        #: Vertices available in every per-vertex buffer (what render()
+        #: draws by default); None when no buffer is per vertex (the
+        #: shader works from gl_VertexID: pass render(vertices=...)).
+        self.vertices: Optional[int] = min(counts) if counts else None
+        #: Instances the per-instance buffers hold (None: no such buffer).
+        self.instances: Optional[int] = min(instance_limits) if instance_limits else None
         self.index_buffer: Optional[Buffer] = None
         self._index_type = 0
         if index_buffer is not None:
@@ -413,19 +724,40 @@ class VertexArray:
             self._index_type = types[index_buffer.dtype]
             self.vertices = index_buffer.nbytes // index_buffer.dtype.itemsize
 
-    def render(self, mode: Union[str, int] = "triangles", vertices: Optional[int] = None, first: int = 0) -> None:
+    def render(
+        self,
+        mode: Union[str, int] = "triangles",
+        vertices: Optional[int] = None,
+        first: int = 0,
+        instances: int = 1,
+    ) -> None:
         """Draws ``vertices`` vertices (default: all) from ``first`` as
         ``mode``: ``"points"``, ``"lines"``, ``"line_strip"``,
         ``"line_loop"``, ``"triangles"``, ``"triangle_strip"``,
-        ``"triangle_fan"``, ``"quads"``, ``"quad_strip"`` or ``"polygon"``."""
+        ``"triangle_fan"``, ``"quads"``, ``"quad_strip"`` or ``"polygon"``
+        (the last three: compatibility contexts only).
+
+        ``instances`` > 1 draws that many instances
+        (glDrawArraysInstanced / glDrawElementsInstanced): ``gl_InstanceID``
+        counts them and ``/i`` attributes advance once per instance."""
         gl_mode = _mode(mode)
-        count = self.vertices - first if vertices is None else int(vertices)
-        if first < 0 or count < 0 or (self.index_buffer is None and first + count > self.vertices):
-            raise ValueError(f"cannot draw {count} vertices from {first}: the buffers hold {self.vertices}")
+        for n, v in (("first", first), ("instances", instances)) + ((("vertices", vertices),) if vertices is not None else ()):
+            if not isinstance(v, (int, np.integer)) or isinstance(v, bool):
+                raise TypeError(f"{n} must be an int, got {v!r}")
+        if vertices is None and self.vertices is None:
+            raise ValueError("no buffer of this vertex array is per vertex: say how many to draw with render(vertices=...)")
+        count = (self.vertices or 0) - first if vertices is None else int(vertices)
+        have = self.vertices
+        if first < 0 or count < 0 or (self.index_buffer is None and have is not None and first + count > have):
+            raise ValueError(f"cannot draw {count} vertices from {first}: the buffers hold {have}")
+        if instances < 0:
+            raise ValueError(f"instances must be >= 0, got {instances}")
+        if self.instances is not None and instances > self.instances:
+            raise ValueError(f"cannot draw {instances} instances: the per-instance buffers hold {self.instances}")
         raw = self.ctx._raw
         raw.use_program(self.program.glo)
         raw.reset_arrays()
-        for name, f, buf, stride, offset in self._bindings:
+        for name, f, buf, stride, offset, integer in self._bindings:
             if name.startswith("gl_"):
                 if not raw.builtin_pointer(name, f.components, f.gl_type, stride, buf, offset):
                     raise KeyError(
@@ -434,14 +766,14 @@ class VertexArray:
                     )
             else:
                 loc = self.program.attributes[name].location
-                raw.attrib_pointer(loc, f.components, f.gl_type, f.normalized, stride, buf, offset)
+                raw.attrib_pointer(loc, f.components, f.gl_type, f.normalized, stride, buf, offset, integer, f.divisor)
         _check_gl(raw, "specifying the vertex arrays")
         if self.index_buffer is not None:
             if first:
                 raise ValueError("first is not supported with an index buffer")
-            err = raw.draw_elements(gl_mode, count, self._index_type, self.index_buffer.glo)
+            err = raw.draw_elements(gl_mode, count, self._index_type, self.index_buffer.glo, int(instances))
         else:
-            err = raw.draw_arrays(gl_mode, first, count)
+            err = raw.draw_arrays(gl_mode, int(first), count, int(instances))
         if err:
             raise Error(f"drawing failed: {err}")
         _check_gl(raw, "drawing")
@@ -449,7 +781,8 @@ class VertexArray:
 
     def __repr__(self) -> str:
         names = [b[0] for b in self._bindings]
-        return f"<shaderbox.VertexArray {self.vertices} vertices: {names}>"
+        inst = f", {self.instances} instances" if self.instances is not None else ""
+        return f"<shaderbox.VertexArray {self.vertices} vertices{inst}: {names}>"
 
 
 def _mode(mode: Union[str, int]) -> int:
@@ -688,7 +1021,9 @@ class Context:
     ``version=(3, 3)`` gives 3.3, ``profile="core"`` (GLSL 1.30 and later
     only, no fixed-function state) or ``"compatibility"`` (everything).
     Make programs with :meth:`program`, vertex data with :meth:`buffer`
-    and :meth:`vertex_array`, textures with :meth:`texture`; set the
+    and :meth:`vertex_array` (instanced attributes, integer attributes and
+    uniform blocks in 3.3: :meth:`Buffer.bind_to_uniform_block`,
+    :class:`UniformBlock`), textures with :meth:`texture`; set the
     fixed-function state shaders read through :attr:`lights`,
     :attr:`material`, :attr:`fog`, :attr:`modelview`, :attr:`projection`
     (compatibility contexts); :meth:`clear`, ``vao.render()``, then
@@ -791,10 +1126,11 @@ class Context:
         for n, s in (("vertex_shader", vertex_shader), ("fragment_shader", fragment_shader)):
             if s is not None and not isinstance(s, str):
                 raise TypeError(f"{n} must be GLSL source text (str), got {type(s).__name__}")
+        compatibility = self._profile != "core"
         reports = []
         for stage, src, label in (("vertex", vertex_shader, "vertex_shader"), ("fragment", fragment_shader, "fragment_shader")):
             if src is not None:
-                reports.append(_diagnostics(_shaderbox.compile_report(src, stage, None, label)))
+                reports.append(_diagnostics(_shaderbox.compile_report(src, stage, None, label, compatibility)))
         if not all(r.ok for r in reports):
             merged = Diagnostics(
                 [d for r in reports for d in r],
@@ -803,12 +1139,15 @@ class Context:
                 ok=False,
             )
             raise CompileError(merged)
-        link = _diagnostics(_shaderbox.link_report(vertex_shader, fragment_shader))
+        link = _diagnostics(_shaderbox.link_report(vertex_shader, fragment_shader, compatibility))
         if not link.ok:
             raise LinkError(link)
-        name, linked, log = self._raw.build_program(vertex_shader, fragment_shader)
-        if not linked:
-            raise LinkError(Diagnostics([], text=log, info_log=log, ok=False))
+        name, compiled, linked, log = self._raw.build_program(vertex_shader, fragment_shader)
+        if not (compiled and linked):
+            # What only the context refuses (e.g. GLSL 1.10 in a core context).
+            self._raw.delete_program(name)
+            failed = Diagnostics([], text=log, info_log=log, ok=False)
+            raise CompileError(failed) if not compiled else LinkError(failed)
         _check_gl(self._raw, "building the program")
         warnings = Diagnostics(
             [d for r in reports + [link] for d in r],
@@ -818,9 +1157,16 @@ class Context:
         )
         return Program(self, name, warnings)
 
-    def buffer(self, data: Any) -> Buffer:
+    def buffer(self, data: Any = None, *, reserve: int = 0) -> Buffer:
         """A buffer object holding ``data`` (a numeric numpy array, anything
-        ``np.asarray`` takes, or bytes)."""
+        ``np.asarray`` takes, or bytes), or ``reserve`` zero bytes (fill
+        them with :meth:`Buffer.write`)."""
+        if data is None:
+            if not isinstance(reserve, (int, np.integer)) or isinstance(reserve, bool) or reserve < 1:
+                raise ValueError(f"buffer: give data, or reserve a positive number of bytes (got reserve={reserve!r})")
+            return Buffer(self, bytes(int(reserve)))
+        if reserve:
+            raise ValueError("buffer: give data or reserve, not both")
         return Buffer(self, data)
 
     def vertex_array(
@@ -833,9 +1179,12 @@ class Context:
 
         ``content`` lists ``(buffer, format, name, ...)``: a :class:`Buffer`
         or numpy array, a format like ``"3f"`` or ``"3f 4f"`` (interleaved,
-        see :func:`parse_format`), and one attribute name per field, either
-        the program's own attributes or built-in ones (``"gl_Vertex"``,
-        ``"gl_Normal"``, ``"gl_Color"``, ``"gl_MultiTexCoord0"``...).
+        see :func:`parse_format`; ``"3f 4f/i"`` per instance), and one
+        attribute name per field, either the program's own attributes or
+        built-in ones (``"gl_Vertex"``, ``"gl_Normal"``, ``"gl_Color"``,
+        ``"gl_MultiTexCoord0"``...; compatibility contexts only).
+        ``int``/``ivecN``/``uint``/``uvecN`` attributes take integer
+        formats and get the values unconverted (glVertexAttribIPointer).
         ``index_buffer`` (integers) makes :meth:`VertexArray.render` draw
         indexed."""
         return VertexArray(self, program, content, index_buffer)
@@ -1076,6 +1425,12 @@ class Context:
     def draw_spheres(self, centers: ArrayLike, radii: ArrayLike = 1.0, colors: ArrayLike = (0.8, 0.8, 0.8), **kw: Any) -> Program:
         """Draws spheres with the seed's ray-cast impostor shaders; see
         :func:`shaderbox.spheres.draw_spheres`."""
+        if self._profile == "core":
+            raise RuntimeError(
+                "draw_spheres runs the seed's GLSL 1.10 shaders with the fixed-function lights, material and "
+                "matrices, which the core profile removes: create the context with profile='compatibility' "
+                "(or draw impostors with your own #version 330 program, as the example notebook does)"
+            )
         from .spheres import draw_spheres
 
         return draw_spheres(self, centers, radii, colors, **kw)

@@ -1,4 +1,4 @@
-"""OpenGL 2.1 enum values the package uses (numbers from the GL 2.1 spec's tables)."""
+"""OpenGL 2.1 and 3.3 enum values the package uses (numbers from the specs' tables)."""
 
 # Errors.
 NO_ERROR = 0
@@ -182,7 +182,48 @@ TYPES = {
     0x8B60: ("samplerCube", "sampler", ()),
     0x8B61: ("sampler1DShadow", "sampler", ()),
     0x8B62: ("sampler2DShadow", "sampler", ()),
+    # GL 3.0-3.3.
+    0x1405: ("uint", "uint", ()),
+    0x8DC6: ("uvec2", "uint", (2,)),
+    0x8DC7: ("uvec3", "uint", (3,)),
+    0x8DC8: ("uvec4", "uint", (4,)),
+    0x8B63: ("sampler2DRect", "sampler", ()),
+    0x8B64: ("sampler2DRectShadow", "sampler", ()),
+    0x8DC0: ("sampler1DArray", "sampler", ()),
+    0x8DC1: ("sampler2DArray", "sampler", ()),
+    0x8DC2: ("samplerBuffer", "sampler", ()),
+    0x8DC3: ("sampler1DArrayShadow", "sampler", ()),
+    0x8DC4: ("sampler2DArrayShadow", "sampler", ()),
+    0x8DC5: ("samplerCubeShadow", "sampler", ()),
+    0x8DC9: ("isampler1D", "sampler", ()),
+    0x8DCA: ("isampler2D", "sampler", ()),
+    0x8DCB: ("isampler3D", "sampler", ()),
+    0x8DCC: ("isamplerCube", "sampler", ()),
+    0x8DCD: ("isampler2DRect", "sampler", ()),
+    0x8DCE: ("isampler1DArray", "sampler", ()),
+    0x8DCF: ("isampler2DArray", "sampler", ()),
+    0x8DD0: ("isamplerBuffer", "sampler", ()),
+    0x8DD1: ("usampler1D", "sampler", ()),
+    0x8DD2: ("usampler2D", "sampler", ()),
+    0x8DD3: ("usampler3D", "sampler", ()),
+    0x8DD4: ("usamplerCube", "sampler", ()),
+    0x8DD5: ("usampler2DRect", "sampler", ()),
+    0x8DD6: ("usampler1DArray", "sampler", ()),
+    0x8DD7: ("usampler2DArray", "sampler", ()),
+    0x8DD8: ("usamplerBuffer", "sampler", ()),
+    0x9108: ("sampler2DMS", "sampler", ()),
+    0x9109: ("isampler2DMS", "sampler", ()),
+    0x910A: ("usampler2DMS", "sampler", ()),
+    0x910B: ("sampler2DMSArray", "sampler", ()),
+    0x910C: ("isampler2DMSArray", "sampler", ()),
+    0x910D: ("usampler2DMSArray", "sampler", ()),
 }
+
+# Uniform buffers (GL 3.1).
+MAX_UNIFORM_BUFFER_BINDINGS = 0x8A2F
+UNIFORM_BUFFER_OFFSET_ALIGNMENT = 0x8A34
+# Per-render divisor of a "/r" vertex format: every instance reads element 0.
+PER_RENDER_DIVISOR = 0x7FFFFFFF
 
 
 def error_name(code: int) -> str:
