@@ -348,7 +348,13 @@ impl Context {
         immediate: Option<&[ImmVertex]>,
         batch: InstanceBatch,
     ) {
-        if indices.is_empty() {
+        // Conditional rendering discards the whole command (GL 3.3 §2.15).
+        if indices.is_empty() || self.render_discarded() {
+            return;
+        }
+        self.count_primitives(mode, indices.len());
+        // GL_RASTERIZER_DISCARD: the primitives end before rasterization.
+        if self.st.is_on(GL_RASTERIZER_DISCARD) {
             return;
         }
         let (vs, vs_user, fs, ff_shape) = match self.draw_kernels() {
@@ -450,7 +456,12 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
-        if !self.check_fbo_complete() {
+        // Clears are rendering commands: conditional rendering and
+        // rasterizer discard skip them (as Mesa does for the latter).
+        if !self.check_fbo_complete()
+            || self.render_discarded()
+            || self.st.is_on(GL_RASTERIZER_DISCARD)
+        {
             return;
         }
         let Some(mut t) = self.draw_target() else {

@@ -69,10 +69,25 @@ fn b(x: bool) -> f64 {
 }
 
 impl Context {
+    /// The 64-bit integer states (GL 3.2-3.3), which glGetInteger64v
+    /// returns exactly and glGetIntegerv clamps.
+    fn int64_state(&self, pname: u32) -> Option<i64> {
+        match pname {
+            GL_MAX_SERVER_WAIT_TIMEOUT if self.api.at_least(3, 2) => {
+                Some(crate::sync::MAX_SERVER_WAIT_TIMEOUT)
+            }
+            GL_TIMESTAMP if self.api.at_least(3, 3) => Some(crate::occlusion::timestamp_ns()),
+            _ => None,
+        }
+    }
+
     fn query(&mut self, pname: u32) -> Option<(Vec<f64>, Kind)> {
         use Kind::*;
         if self.is_removed_state(pname) {
             return None;
+        }
+        if let Some(v) = self.int64_state(pname) {
+            return Some((vec![v as f64], Int));
         }
         let unit = self.st.active_texture as usize;
         let int = |v: &[i64]| Some((v.iter().map(|&x| x as f64).collect(), Int));
@@ -386,6 +401,9 @@ impl Context {
 
     /// glGetIntegerv.
     pub fn get_integerv(&mut self, pname: u32) -> Vec<i32> {
+        if let Some(v) = self.int64_state(pname) {
+            return vec![v.clamp(i32::MIN as i64, i32::MAX as i64) as i32];
+        }
         match self.query(pname) {
             Some((v, kind)) => v
                 .iter()
@@ -407,6 +425,9 @@ impl Context {
 
     /// glGetInteger64v (GL 3.2): glGetIntegerv without the 32-bit clamp.
     pub fn get_integer64v(&mut self, pname: u32) -> Vec<i64> {
+        if let Some(v) = self.int64_state(pname) {
+            return vec![v];
+        }
         match self.query(pname) {
             Some((v, kind)) => v
                 .iter()

@@ -67,7 +67,7 @@
 //!   [`vertex`] (arrays, current values, glBegin/glEnd),
 //!   [`vertex_array`] (vertex array objects), [`matrix`],
 //!   [`param`] (the values of the glFog/glLight/glTexEnv... call families),
-//!   [`attrib_stack`], [`get`] (glGet*), [`occlusion`].
+//!   [`attrib_stack`], [`get`] (glGet*), [`occlusion`], [`sync`] (fences).
 //! - A draw: [`draw`] (the calls, glClear; [`restart`] splits at
 //!   primitive-restart indices) puts together [`kernels`],
 //!   [`fetch`], [`pipeline_state`], [`texture_units`] and
@@ -113,6 +113,7 @@ pub mod render_target;
 pub(crate) mod restart;
 pub mod shading;
 pub mod state;
+pub mod sync;
 pub mod texture_format;
 pub mod texture_units;
 pub mod textures;
@@ -184,6 +185,8 @@ pub struct Context {
     pub(crate) queries: occlusion::Queries,
     /// The current raster position ([`pixel_path`]).
     pub(crate) raster: pixel_path::RasterPos,
+    /// Sync objects ([`sync`]).
+    pub(crate) syncs: sync::Syncs,
 }
 
 /// The environment variable giving the default number of draw threads.
@@ -252,6 +255,7 @@ impl Context {
             debug: debug::DebugSession::default(),
             queries: occlusion::Queries::default(),
             raster: pixel_path::RasterPos::default(),
+            syncs: sync::Syncs::default(),
         }
     }
 

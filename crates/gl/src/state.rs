@@ -346,6 +346,14 @@ const CAPS: &[u32] = &[
     GL_PRIMITIVE_RESTART,
 ];
 
+/// Capabilities of GL 3.x, with the version that adds each: GL 2.1
+/// contexts refuse them (GL_INVALID_ENUM).
+const CAPS_3X: &[(u32, (u32, u32))] = &[
+    (GL_RASTERIZER_DISCARD, (3, 0)),
+    (GL_DEPTH_CLAMP, (3, 2)),
+    (GL_TEXTURE_CUBE_MAP_SEAMLESS, (3, 2)),
+];
+
 /// Capabilities that apply to the active texture unit.
 const UNIT_CAPS: &[u32] = &[
     GL_TEXTURE_1D,
@@ -368,6 +376,16 @@ pub(crate) fn clamp01(x: f32) -> f32 {
 }
 
 impl Context {
+    /// Whether `cap` is a global (not per-unit) capability of this context.
+    fn global_cap(&self, cap: u32) -> bool {
+        CAPS.contains(&cap)
+            || (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as u32).contains(&cap)
+            || (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap)
+            || CAPS_3X
+                .iter()
+                .any(|&(c, (major, minor))| c == cap && self.api.at_least(major, minor))
+    }
+
     fn set_cap(&mut self, cap: u32, on: bool) {
         if self.reject_in_begin() || self.refuse_removed_cap(cap) {
             return;
@@ -378,10 +396,7 @@ impl Context {
                 return;
             }
             (cap, self.st.active_texture)
-        } else if CAPS.contains(&cap)
-            || (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as u32).contains(&cap)
-            || (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap)
-        {
+        } else if self.global_cap(cap) {
             (cap, 0)
         } else {
             self.set_error(GL_INVALID_ENUM);
@@ -415,10 +430,7 @@ impl Context {
         if UNIT_CAPS.contains(&cap) {
             return self.st.is_on_unit(cap, self.st.active_texture);
         }
-        if CAPS.contains(&cap)
-            || (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as u32).contains(&cap)
-            || (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap)
-        {
+        if self.global_cap(cap) {
             return self.st.is_on(cap);
         }
         if let Some(on) = self.client_state_enabled(cap) {
