@@ -131,6 +131,15 @@ gl_entry_points! {
     fn glBindAttribLocation(program: GLuint, index: GLuint, name: *const GLchar) => |c| {
         if let Some(n) = cstr(name) { c.gl.bind_attrib_location(program, index, &n) }
     }
+    fn glBindFragDataLocation(program: GLuint, color: GLuint, name: *const GLchar) => |c| {
+        if let Some(n) = cstr(name) { c.gl.bind_frag_data_location(program, color, &n) }
+    }
+    fn glGetFragDataLocation(program: GLuint, name: *const GLchar) -> GLint [-1] => |c| {
+        match cstr(name) {
+            Some(n) => c.gl.get_frag_data_location(program, &n),
+            None => -1,
+        }
+    }
     fn glGetActiveAttrib(
         program: GLuint, index: GLuint, buf_size: GLsizei, length: *mut GLsizei,
         size: *mut GLint, ty: *mut GLenum, name: *mut GLchar

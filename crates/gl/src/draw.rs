@@ -247,7 +247,7 @@ impl Context {
                 let one = InstanceBatch::one(instance);
                 match restart {
                     Some(r) => {
-                        for (m, l) in crate::restart::split(mode, list, r) {
+                        for (m, l) in crate::restart::split(mode, list, r, self.provoking_first()) {
                             self.run_draw(m, &with_base(l, basevertex), None, one);
                         }
                     }
@@ -278,7 +278,8 @@ impl Context {
                 }));
             }
             let b = InstanceBatch { first, lo, stride };
-            for (m, l) in crate::restart::split(mode, &combined, SEPARATOR) {
+            for (m, l) in crate::restart::split(mode, &combined, SEPARATOR, self.provoking_first())
+            {
                 self.run_draw(m, &l, None, b);
             }
             first += n;
@@ -472,10 +473,13 @@ impl Context {
             .is_on(GL_SCISSOR_TEST)
             .then(|| rect(self.st.scissor));
         if mask & GL_COLOR_BUFFER_BIT != 0 {
-            let mut bufs: Vec<usize> = t.draw_buffers.iter().flatten().copied().collect();
-            bufs.dedup();
-            let (color, write) = (self.st.clear_color, self.st.color_mask);
-            t.fb.clear_color_on(&self.workers, &bufs, color, write, scissor);
+            // Each draw buffer with its own mask (glColorMaski).
+            let color = self.st.clear_color;
+            for (i, buf) in t.draw_buffers.iter().enumerate() {
+                let Some(buf) = *buf else { continue };
+                let write = self.st.color_masks[i % crate::MAX_DRAW_BUFFERS];
+                t.fb.clear_color_on(&self.workers, &[buf], color, write, scissor);
+            }
         }
         if mask & GL_DEPTH_BUFFER_BIT != 0 {
             let (depth, write) = (self.st.clear_depth, self.st.depth_mask);

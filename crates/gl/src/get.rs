@@ -298,7 +298,7 @@ impl Context {
             GL_LOGIC_OP_MODE => int(&[st.logic_op as i64]),
             GL_DEPTH_FUNC => int(&[st.depth_func as i64]),
             GL_DEPTH_WRITEMASK => Some((vec![b(st.depth_mask)], Bool)),
-            GL_COLOR_WRITEMASK => Some((st.color_mask.iter().map(|&m| b(m)).collect(), Bool)),
+            GL_COLOR_WRITEMASK => Some((st.color_masks[0].iter().map(|&m| b(m)).collect(), Bool)),
             GL_STENCIL_FUNC => int(&[st.stencil[0].func as i64]),
             GL_STENCIL_REF => int(&[st.stencil[0].reference as i64]),
             GL_STENCIL_VALUE_MASK => int(&[st.stencil[0].value_mask as i32 as i64]),
@@ -321,6 +321,11 @@ impl Context {
             GL_POLYGON_OFFSET_FACTOR => flt(&st.polygon_offset[..1]),
             GL_POLYGON_OFFSET_UNITS => flt(&st.polygon_offset[1..]),
             GL_SHADE_MODEL => int(&[st.shade_model as i64]),
+            GL_PROVOKING_VERTEX if api.at_least(3, 2) => int(&[st.provoking_vertex as i64]),
+            // Quads take the provoking vertex of the convention in effect.
+            GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION if api.at_least(3, 2) => {
+                Some((vec![1.0], Bool))
+            }
             GL_POINT_SIZE => flt(&[st.point.size]),
             GL_POINT_SIZE_MIN => flt(&[st.point.size_min]),
             GL_POINT_SIZE_MAX => flt(&[st.point.size_max]),

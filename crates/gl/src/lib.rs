@@ -59,7 +59,8 @@
 //!   bias), [`readback`] (glReadPixels), [`pixel_path`] (raster position,
 //!   glDrawPixels, glBitmap, glCopyPixels).
 //! - Shaders: [`program`], [`program_blocks`] (uniform-block queries,
-//!   blocks read from uniform buffers at draw time), [`uniform`],
+//!   blocks read from uniform buffers at draw time), [`program_outputs`]
+//!   (fragment-output locations), [`uniform`],
 //!   [`uniform_block`] (std140 layout), [`builtins`] (the `gl_*`
 //!   uniforms), [`ffgen`] (fixed-function stages as GLSL).
 //! - State: [`state`] (the fixed-function state, capabilities),
@@ -67,7 +68,8 @@
 //!   [`vertex`] (arrays, current values, glBegin/glEnd),
 //!   [`vertex_array`] (vertex array objects), [`matrix`],
 //!   [`param`] (the values of the glFog/glLight/glTexEnv... call families),
-//!   [`attrib_stack`], [`get`] (glGet*), [`occlusion`], [`sync`] (fences).
+//!   [`attrib_stack`], [`get`] (glGet*), [`occlusion`], [`sync`] (fences),
+//!   [`per_buffer`] (per-draw-buffer blending and masks, glClearBuffer*).
 //! - A draw: [`draw`] (the calls, glClear; [`restart`] splits at
 //!   primitive-restart indices) puts together [`kernels`],
 //!   [`fetch`], [`pipeline_state`], [`texture_units`] and
@@ -101,12 +103,14 @@ pub mod mipmap;
 pub mod objects;
 pub mod occlusion;
 pub mod param;
+pub mod per_buffer;
 pub mod per_fragment;
 pub mod pipeline_state;
 pub mod pixel_path;
 pub mod pixel_transfer;
 pub mod program;
 pub mod program_blocks;
+pub mod program_outputs;
 pub mod rasterization;
 pub mod readback;
 pub mod render_target;

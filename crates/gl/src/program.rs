@@ -86,6 +86,8 @@ impl Executable {
 pub struct ProgramObj {
     pub attached: Vec<u32>,
     pub bindings: BTreeMap<String, u32>,
+    /// glBindFragDataLocation bindings ([`crate::program_outputs`]).
+    pub frag_bindings: BTreeMap<String, u32>,
     pub link_status: bool,
     pub validate_status: bool,
     pub info_log: String,
@@ -134,7 +136,7 @@ impl Context {
     }
 
     /// Checks a program name as [`Context::check_shader`] checks a shader's.
-    fn check_program(&mut self, program: u32) -> bool {
+    pub(crate) fn check_program(&mut self, program: u32) -> bool {
         self.check_name(program, false)
     }
 
@@ -191,7 +193,7 @@ impl Context {
     /// The executable of a linked program, for the queries that need one:
     /// `None` after check_program's error or, for a program not linked,
     /// `GL_INVALID_OPERATION`; inside glBegin/glEnd `GL_INVALID_OPERATION`.
-    fn linked_exe(&mut self, program: u32) -> Option<&Executable> {
+    pub(crate) fn linked_exe(&mut self, program: u32) -> Option<&Executable> {
         if self.reject_in_begin() || !self.check_program(program) {
             return None;
         }
@@ -377,9 +379,10 @@ impl Context {
         log.push_str(linked.info_log());
         let mut ok = linked.ok() && not_compiled.is_empty();
         let bindings = p.bindings.clone();
+        let frag_bindings = p.frag_bindings.clone();
         let mut exe = None;
         if ok {
-            match build_executable(linked, &bindings, shaders.clone()) {
+            match build_executable(linked, (&bindings, &frag_bindings), shaders.clone()) {
                 Ok(e) => exe = Some(e),
                 Err(msg) => {
                     log.push_str(&format!("error: {msg}\n"));
@@ -782,10 +785,11 @@ pub(crate) fn with_nul(len: usize) -> i32 {
 /// Builds uniform storage, attribute locations and kernels for a linked
 /// program.
 fn build_executable(
-    program: glsl::link::Program,
-    bindings: &BTreeMap<String, u32>,
+    mut program: glsl::link::Program,
+    (bindings, frag_bindings): (&BTreeMap<String, u32>, &BTreeMap<String, u32>),
     shaders: Vec<Arc<glsl::Shader>>,
 ) -> Result<Executable, String> {
+    crate::program_outputs::place_frag_outputs(&mut program, frag_bindings)?;
     let modules: Vec<&Module> = program.stages.iter().map(|s| &s.module).collect();
     let uniforms = UniformTable::build(&modules);
     crate::uniform_block::check_limits(&uniforms.blocks, &modules)?;

@@ -72,6 +72,24 @@ impl Context {
         self.st.shade_model = mode;
     }
 
+    /// glProvokingVertex (GL 3.3 §2.19): which vertex of a primitive
+    /// gives flat-shaded values; GL_INVALID_ENUM for another mode.
+    pub fn provoking_vertex(&mut self, mode: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if mode != GL_FIRST_VERTEX_CONVENTION && mode != GL_LAST_VERTEX_CONVENTION {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        self.st.provoking_vertex = mode;
+    }
+
+    /// Whether the first-vertex provoking convention is in effect.
+    pub(crate) fn provoking_first(&self) -> bool {
+        self.st.provoking_vertex == GL_FIRST_VERTEX_CONVENTION
+    }
+
     /// glPointSize.
     pub fn point_size(&mut self, size: f32) {
         if self.reject_in_begin() {
