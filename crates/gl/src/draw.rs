@@ -49,6 +49,9 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return false;
         }
+        if !self.feedback_allows(mode) {
+            return false;
+        }
         // Core draws need a program (there is no fixed-function vertex
         // stage to fall back on) and a vertex array object (the default
         // one is removed).
@@ -354,8 +357,10 @@ impl Context {
             return;
         }
         self.count_primitives(mode, indices.len());
-        // GL_RASTERIZER_DISCARD: the primitives end before rasterization.
-        if self.st.is_on(GL_RASTERIZER_DISCARD) {
+        let discard = self.st.is_on(GL_RASTERIZER_DISCARD);
+        // GL_RASTERIZER_DISCARD: the primitives end before rasterization
+        // (after transform feedback).
+        if discard && !self.feedback_active() {
             return;
         }
         let (vs, vs_user, fs, ff_shape) = match self.draw_kernels() {
@@ -365,6 +370,26 @@ impl Context {
                 return;
             }
         };
+        if self.feedback_active() {
+            let words = self.uniform_words(&vs, vs_user);
+            let units = self.texture_units();
+            let fetch = Fetcher::new(self, &vs, immediate, batch);
+            let shaded =
+                raster::shade_vertices(&self.workers, &*vs, &words, &units, indices, &fetch, true);
+            drop(fetch);
+            match shaded {
+                Ok((vertex_of, outputs, stride)) => {
+                    self.capture_feedback(mode, (&vertex_of, &outputs, stride))
+                }
+                Err(e) => {
+                    self.cache.error = Some(e.to_string());
+                    return;
+                }
+            }
+            if discard {
+                return;
+            }
+        }
         let fs_user = ff_shape.is_none();
         // The fixed-function fragment stage runs without the engine where
         // it can (the same bits: `ff_fragment`).

@@ -264,6 +264,12 @@ impl Context {
             GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS => {
                 int(&[crate::buffers::MAX_TRANSFORM_FEEDBACK_BUFFERS as i64])
             }
+            GL_MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS if api.at_least(3, 0) => {
+                int(&[crate::transform_feedback::MAX_INTERLEAVED_COMPONENTS as i64])
+            }
+            GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS if api.at_least(3, 0) => {
+                int(&[crate::transform_feedback::MAX_SEPARATE_COMPONENTS as i64])
+            }
             GL_MAX_UNIFORM_BLOCK_SIZE => {
                 int(&[crate::uniform_block::MAX_UNIFORM_BLOCK_SIZE as i64])
             }

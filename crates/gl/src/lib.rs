@@ -60,7 +60,7 @@
 //!   glDrawPixels, glBitmap, glCopyPixels).
 //! - Shaders: [`program`], [`program_blocks`] (uniform-block queries,
 //!   blocks read from uniform buffers at draw time), [`program_outputs`]
-//!   (fragment-output locations), [`uniform`],
+//!   (fragment-output locations), [`transform_feedback`], [`uniform`],
 //!   [`uniform_block`] (std140 layout), [`builtins`] (the `gl_*`
 //!   uniforms), [`ffgen`] (fixed-function stages as GLSL).
 //! - State: [`state`] (the fixed-function state, capabilities),
@@ -122,6 +122,7 @@ pub mod texture_format;
 pub mod texture_units;
 pub mod textures;
 pub mod transform;
+pub mod transform_feedback;
 pub mod uniform;
 pub mod uniform_block;
 pub mod version;
@@ -191,6 +192,8 @@ pub struct Context {
     pub(crate) raster: pixel_path::RasterPos,
     /// Sync objects ([`sync`]).
     pub(crate) syncs: sync::Syncs,
+    /// The active transform feedback ([`transform_feedback`]).
+    pub(crate) feedback: transform_feedback::Feedback,
 }
 
 /// The environment variable giving the default number of draw threads.
@@ -260,6 +263,7 @@ impl Context {
             queries: occlusion::Queries::default(),
             raster: pixel_path::RasterPos::default(),
             syncs: sync::Syncs::default(),
+            feedback: transform_feedback::Feedback::default(),
         }
     }
 

@@ -153,6 +153,13 @@ impl Context {
         }
     }
 
+    /// Adds `n` to the active GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN
+    /// query.
+    pub(crate) fn count_primitives_written(&mut self, n: u64) {
+        self.queries
+            .add(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, n);
+    }
+
     /// Whether conditional rendering discards rendering commands now: it
     /// is active and its query's result is zero (GL 3.3 §2.15).
     pub(crate) fn render_discarded(&self) -> bool {
