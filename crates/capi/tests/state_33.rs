@@ -1,7 +1,7 @@
 //! GL 3.0–3.3 state entry points, driven as a C program would on a 3.3
 //! compatibility context: the provoking vertex, per-draw-buffer blending
 //! and masks and their indexed queries, glClearBuffer*, fragment-output
-//! locations, and their lookup by name.
+//! locations, transform feedback, and their lookup by name.
 
 use gl::enums::*;
 use std::ffi::{c_void, CString};
@@ -22,6 +22,10 @@ const NAMES: &[&str] = &[
     "glClearBufferfi",
     "glBindFragDataLocation",
     "glGetFragDataLocation",
+    "glTransformFeedbackVaryings",
+    "glGetTransformFeedbackVarying",
+    "glBeginTransformFeedback",
+    "glEndTransformFeedback",
 ];
 
 unsafe fn compat_context(buf: &mut Vec<u8>) -> OSMesaContext {
@@ -156,6 +160,57 @@ fn per_buffer_state_clears_and_frag_data_locations() {
         assert_eq!(pixel(), [0, 0, 255, 255]);
         glBindFragDataLocation(p, 8, a.as_ptr());
         assert_eq!(glGetError(), GL_INVALID_VALUE);
+        OSMesaDestroyContext(ctx);
+    }
+}
+
+#[test]
+fn transform_feedback_captures_points() {
+    unsafe {
+        let mut buf = Vec::new();
+        let ctx = compat_context(&mut buf);
+        let p = glCreateProgram();
+        let vs = "#version 130\nin float x;\nout float y;\nvoid main() { gl_Position = vec4(x); y = 2.0 * x; }\n";
+        let sh = glCreateShader(GL_VERTEX_SHADER);
+        let (ptr, len) = (vs.as_ptr() as *const GLchar, vs.len() as GLint);
+        glShaderSource(sh, 1, &ptr, &len);
+        glCompileShader(sh);
+        glAttachShader(p, sh);
+        let x = CString::new("x").unwrap();
+        glBindAttribLocation(p, 0, x.as_ptr());
+        let names = [CString::new("y").unwrap(), CString::new("gl_Position").unwrap()];
+        let ptrs: Vec<*const GLchar> = names.iter().map(|n| n.as_ptr()).collect();
+        glTransformFeedbackVaryings(p, 2, ptrs.as_ptr(), GL_INTERLEAVED_ATTRIBS);
+        glLinkProgram(p);
+        let mut ok = 0;
+        glGetProgramiv(p, GL_LINK_STATUS, &mut ok);
+        assert_eq!(ok, 1);
+        let (mut n, mut size, mut ty) = (0, 0, 0u32);
+        let mut name = [0 as GLchar; 32];
+        glGetTransformFeedbackVarying(p, 1, 32, &mut n, &mut size, &mut ty, name.as_mut_ptr());
+        assert_eq!((n, size, ty), (11, 1, GL_FLOAT_VEC4));
+        glUseProgram(p);
+        let mut b = 0;
+        glGenBuffers(1, &mut b);
+        glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, b);
+        glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, 60, std::ptr::null(), GL_STREAM_READ);
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, b);
+        let xs = [1.0f32, 2.0, 3.0];
+        glVertexAttribPointer(0, 1, GL_FLOAT, 0, 0, xs.as_ptr() as *const c_void);
+        glEnableVertexAttribArray(0);
+        glEnable(GL_RASTERIZER_DISCARD);
+        glBeginTransformFeedback(GL_POINTS);
+        glDrawArrays(GL_POINTS, 0, 3);
+        glEndTransformFeedback();
+        glDisable(GL_RASTERIZER_DISCARD);
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        let mut out = [0f32; 15];
+        glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 60, out.as_mut_ptr() as *mut c_void);
+        for (i, x) in xs.iter().enumerate() {
+            assert_eq!(&out[i * 5..i * 5 + 5], &[2.0 * x, *x, *x, *x, *x]);
+        }
+        glEndTransformFeedback();
+        assert_eq!(glGetError(), GL_INVALID_OPERATION);
         OSMesaDestroyContext(ctx);
     }
 }
