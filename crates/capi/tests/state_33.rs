@@ -178,7 +178,10 @@ fn transform_feedback_captures_points() {
         glAttachShader(p, sh);
         let x = CString::new("x").unwrap();
         glBindAttribLocation(p, 0, x.as_ptr());
-        let names = [CString::new("y").unwrap(), CString::new("gl_Position").unwrap()];
+        let names = [
+            CString::new("y").unwrap(),
+            CString::new("gl_Position").unwrap(),
+        ];
         let ptrs: Vec<*const GLchar> = names.iter().map(|n| n.as_ptr()).collect();
         glTransformFeedbackVaryings(p, 2, ptrs.as_ptr(), GL_INTERLEAVED_ATTRIBS);
         glLinkProgram(p);
@@ -193,7 +196,12 @@ fn transform_feedback_captures_points() {
         let mut b = 0;
         glGenBuffers(1, &mut b);
         glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, b);
-        glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, 60, std::ptr::null(), GL_STREAM_READ);
+        glBufferData(
+            GL_TRANSFORM_FEEDBACK_BUFFER,
+            60,
+            std::ptr::null(),
+            GL_STREAM_READ,
+        );
         glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, b);
         let xs = [1.0f32, 2.0, 3.0];
         glVertexAttribPointer(0, 1, GL_FLOAT, 0, 0, xs.as_ptr() as *const c_void);
@@ -205,7 +213,12 @@ fn transform_feedback_captures_points() {
         glDisable(GL_RASTERIZER_DISCARD);
         assert_eq!(glGetError(), GL_NO_ERROR);
         let mut out = [0f32; 15];
-        glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 60, out.as_mut_ptr() as *mut c_void);
+        glGetBufferSubData(
+            GL_TRANSFORM_FEEDBACK_BUFFER,
+            0,
+            60,
+            out.as_mut_ptr() as *mut c_void,
+        );
         for (i, x) in xs.iter().enumerate() {
             assert_eq!(&out[i * 5..i * 5 + 5], &[2.0 * x, *x, *x, *x, *x]);
         }

@@ -60,6 +60,15 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_explicit_attrib_location",
 ];
 
+/// The extensions a 3.3 context adds (their GL 3.2–3.3 core features,
+/// whose entry points and enums a 2.1 context does not take).
+pub const EXTENSIONS_33: &[&str] = &[
+    "GL_ARB_sync",
+    "GL_ARB_timer_query",
+    "GL_ARB_occlusion_query2",
+    "GL_ARB_provoking_vertex",
+];
+
 fn b(x: bool) -> f64 {
     if x {
         1.0

@@ -85,6 +85,11 @@
 //! - GL_COMBINE texture-environment parameters are kept for queries
 //!   ([`Context::get_tex_envfv`]) but GL_COMBINE draws as GL_MODULATE.
 //! - glPushAttrib does not save texture-object parameters or hints.
+//! - GL_DEPTH_CLAMP turns off near/far clipping and clamps fragment
+//!   depths to [0, 1] as they are stored; with a glDepthRange narrower
+//!   than [0, 1] they are not clamped to that range. GL 3.3 allows
+//!   GL_TEXTURE_CUBE_MAP_SEAMLESS to be enabled, but cube maps are still
+//!   filtered face by face.
 
 pub mod attrib_stack;
 pub mod buffers;

@@ -127,6 +127,7 @@ impl Context {
         raster::PipelineState {
             viewport: rect(self.viewport),
             depth_range: (self.depth_range[0], self.depth_range[1]),
+            depth_clamp: on(GL_DEPTH_CLAMP),
             scissor: on(GL_SCISSOR_TEST).then(|| rect(st.scissor)),
             cull: on(GL_CULL_FACE).then_some(match st.cull_face {
                 GL_FRONT => raster::CullFace::Front,

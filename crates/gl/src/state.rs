@@ -356,6 +356,7 @@ const CAPS: &[u32] = &[
 /// GL 3.3 §3.8.8 allows only with it off).
 const CAPS_3X: &[(u32, (u32, u32))] = &[
     (GL_RASTERIZER_DISCARD, (3, 0)),
+    (GL_DEPTH_CLAMP, (3, 2)),
     (GL_TEXTURE_CUBE_MAP_SEAMLESS, (3, 2)),
 ];
 

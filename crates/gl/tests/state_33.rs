@@ -355,3 +355,48 @@ fn clear_buffer_depth_stencil_and_errors() {
         assert_eq!(ctx.get_error(), err);
     }
 }
+
+#[test]
+fn depth_clamp_replaces_near_and_far_clipping() {
+    let mut ctx = Context::with_api(8, 8, gl::Api::GL33_COMPAT);
+    let quad = |ctx: &mut Context, z: f32| {
+        ctx.begin(GL_QUADS);
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            ctx.vertex_3f(x, y, z);
+        }
+        ctx.end();
+    };
+    ctx.enable(GL_DEPTH_TEST);
+    ctx.clear_depth(0.5);
+    ctx.color_4f(0.0, 1.0, 0.0, 1.0);
+    for (clamp, z, drawn, depth) in [
+        // In front of the near plane: clipped away, or drawn at depth 0.
+        (false, -3.0, false, 0.5),
+        (true, -3.0, true, 0.0),
+        // Behind the far plane: clipped, or at depth 1 (failing GL_LESS).
+        (false, 3.0, false, 0.5),
+        (true, 3.0, false, 0.5),
+    ] {
+        if clamp {
+            ctx.enable(GL_DEPTH_CLAMP);
+        } else {
+            ctx.disable(GL_DEPTH_CLAMP);
+        }
+        assert_eq!(ctx.is_enabled(GL_DEPTH_CLAMP), clamp);
+        ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        quad(&mut ctx, z);
+        assert_eq!(pixel(&mut ctx, 4, 4) == GREEN, drawn, "clamp {clamp} z {z}");
+        let d = read_depth(&mut ctx, 4, 4);
+        assert!((d - depth).abs() < 1e-6, "clamp {clamp} z {z}: {d}");
+    }
+    // Behind the far plane with GL_ALWAYS: stored at depth 1.
+    ctx.depth_func(GL_ALWAYS);
+    ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    quad(&mut ctx, 3.0);
+    assert_eq!(pixel(&mut ctx, 4, 4), GREEN);
+    assert_eq!(read_depth(&mut ctx, 4, 4), 1.0);
+    // A 2.1 context has no GL_DEPTH_CLAMP.
+    let mut old = Context::new(4, 4);
+    old.enable(GL_DEPTH_CLAMP);
+    assert_eq!(old.get_error(), GL_INVALID_ENUM);
+}

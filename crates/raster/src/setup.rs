@@ -117,7 +117,7 @@ impl<'a> Setup<'a> {
             vs,
             fs,
             outputs,
-            planes: Planes::new(&state.clip_planes),
+            planes: Planes::new(&state.clip_planes).with_depth_clamp(state.depth_clamp),
             clip_rect,
             vp: [
                 vw / 2.0,

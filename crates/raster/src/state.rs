@@ -258,6 +258,9 @@ pub struct PipelineState {
     pub viewport: Rect,
     /// DepthRange (n, f), already clamped to [0, 1].
     pub depth_range: (f32, f32),
+    /// GL_DEPTH_CLAMP: primitives are not clipped by the near and far
+    /// planes; fragment depths are clamped to [0, 1] as they are stored.
+    pub depth_clamp: bool,
     /// The scissor box when the scissor test is enabled.
     pub scissor: Option<Rect>,
     pub cull: Option<CullFace>,
@@ -318,6 +321,7 @@ impl Default for PipelineState {
         PipelineState {
             viewport: Rect::default(),
             depth_range: (0.0, 1.0),
+            depth_clamp: false,
             scissor: None,
             cull: None,
             front_face: FrontFace::Ccw,
