@@ -197,3 +197,35 @@ fn feedback_errors() {
     ctx.begin_transform_feedback(GL_POINTS);
     assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
 }
+
+/// A GLSL 3.30 core vertex stage: gl_Position (a member of the
+/// gl_PerVertex block there) and user outputs are captured.
+#[test]
+fn core_profile_outputs_and_gl_position() {
+    let mut ctx = Context::with_api(8, 8, gl::Api::GL33_CORE);
+    let vs = "#version 330 core\n\
+        layout(location = 0) in vec4 pos;\n\
+        out vec2 a;\n\
+        out float b;\n\
+        void main() { gl_Position = pos; a = pos.xy * 10.0; b = pos.x + 100.0; }";
+    let fs = "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }";
+    let p = ctx.create_program();
+    for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
+        let s = ctx.create_shader(kind);
+        ctx.shader_source(s, &[src]);
+        ctx.compile_shader(s);
+        ctx.attach_shader(p, s);
+    }
+    let names: Vec<String> = ["b", "gl_Position", "a"]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+    ctx.transform_feedback_varyings(p, &names, GL_INTERLEAVED_ATTRIBS);
+    ctx.link_program(p);
+    assert_eq!(
+        ctx.get_programiv(p, GL_LINK_STATUS),
+        1,
+        "{}",
+        ctx.get_program_info_log(p)
+    );
+}
