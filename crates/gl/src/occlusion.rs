@@ -519,6 +519,15 @@ mod tests {
             ctx.clear(GL_COLOR_BUFFER_BIT);
             ctx.color_4f(0.0, 1.0, 0.0, 1.0);
             quad(&mut ctx, -1.0, 1.0, 0.0);
+            // Pixel rectangles too; a bitmap does not move the raster
+            // position.
+            ctx.window_pos_3f(5.0, 5.0, 0.0);
+            let t = crate::pixel_transfer::PixelTransfer::default();
+            let red = [255u8, 0, 0, 255];
+            ctx.draw_pixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, Some(&red), 4, &t);
+            ctx.copy_pixels(0, 0, 10, 10, GL_COLOR, &t);
+            ctx.bitmap(1, 1, 0.0, 0.0, 2.0, 0.0, Some(&[0x80]), 1);
+            assert_eq!(ctx.raster_pos().window[0], 5.0);
             ctx.end_conditional_render();
             assert_eq!(pixel(&mut ctx), [0.0, 0.0, 1.0, 1.0]);
         }
@@ -527,6 +536,9 @@ mod tests {
         ctx.clear(GL_COLOR_BUFFER_BIT);
         assert_eq!(pixel(&mut ctx), [1.0, 0.0, 0.0, 1.0]);
         quad(&mut ctx, -1.0, 1.0, 0.0);
+        ctx.window_pos_3f(5.0, 5.0, 0.0);
+        ctx.bitmap(1, 1, 0.0, 0.0, 2.0, 0.0, Some(&[0x80]), 1);
+        assert_eq!(ctx.raster_pos().window[0], 7.0);
         ctx.end_conditional_render();
         assert_eq!(pixel(&mut ctx), [0.0, 1.0, 0.0, 1.0]);
         assert_eq!(ctx.get_error(), GL_NO_ERROR);

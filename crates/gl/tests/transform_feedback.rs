@@ -138,9 +138,12 @@ fn separate_capture_lines_and_rasterizer_discard() {
     // A line loop: 3 lines, of which the range of binding 1 (4 floats)
     // takes 2.
     ctx.draw_arrays(GL_LINE_LOOP, 0, 3);
-    // Triangles do not match the feedback's lines.
+    // Triangles do not match the feedback's lines, drawn or begun.
     ctx.draw_arrays(GL_TRIANGLES, 0, 3);
     assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+    ctx.begin(GL_QUADS);
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+    assert!(!ctx.in_begin_end());
     ctx.end_transform_feedback();
     ctx.disable(GL_RASTERIZER_DISCARD);
     let a = floats(&mut ctx, ba, 8);
