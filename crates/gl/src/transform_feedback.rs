@@ -29,7 +29,6 @@
 //!   own, skipped with GL_RASTERIZER_DISCARD).
 
 use crate::enums::*;
-use crate::program::Executable;
 use crate::uniform::gl_type;
 use crate::Context;
 use glsl::types::{ArraySize, Base, Scalar, Type};
@@ -219,11 +218,17 @@ impl Context {
         self.feedback.active
     }
 
-    /// The linked executable of the current program, if any.
-    fn current_exe(&self) -> Option<&Executable> {
-        self.programs
+    /// The current program's feedback varyings and buffer mode (none
+    /// without a linked current program).
+    fn current_feedback(&self) -> (&[FeedbackVarying], u32) {
+        match self
+            .programs
             .get(&self.current_program)
             .and_then(|p| p.exe.as_ref())
+        {
+            Some(e) => (&e.feedback, e.feedback_mode),
+            None => (&[], GL_INTERLEAVED_ATTRIBS),
+        }
     }
 
     /// glTransformFeedbackVaryings (used at the next link):
@@ -251,23 +256,19 @@ impl Context {
     }
 
     /// glGetTransformFeedbackVarying: varying `index` of the last link
-    /// (name, array size, GL type); GL_INVALID_VALUE past them.
+    /// (its name, array size and GL type); GL_INVALID_VALUE past them.
     pub fn get_transform_feedback_varying(
         &mut self,
         program: u32,
         index: u32,
-    ) -> Option<crate::ActiveInfo> {
+    ) -> Option<FeedbackVarying> {
         let v = self.program_query(program, |p| {
             p.exe
                 .as_ref()
                 .and_then(|e| e.feedback.get(index as usize).cloned())
         })?;
         match v {
-            Some(v) => Some(crate::ActiveInfo {
-                name: v.name,
-                size: v.size,
-                ty: v.ty,
-            }),
+            Some(v) => Some(v),
             None => {
                 self.set_error(GL_INVALID_VALUE);
                 None
@@ -287,15 +288,10 @@ impl Context {
             self.set_error(GL_INVALID_ENUM);
             return;
         }
-        let needed = match self.current_exe() {
-            Some(e) if !e.feedback.is_empty() => {
-                if e.feedback_mode == GL_SEPARATE_ATTRIBS {
-                    e.feedback.len()
-                } else {
-                    1
-                }
-            }
-            _ => 0,
+        let needed = match self.current_feedback() {
+            ([], _) => 0,
+            (v, GL_SEPARATE_ATTRIBS) => v.len(),
+            _ => 1,
         };
         let bound = &self.objects.buffer_targets.feedback_bindings;
         if self.feedback_active() || needed == 0 || bound[..needed].iter().any(|b| b.buffer == 0) {
@@ -339,11 +335,8 @@ impl Context {
         mode: u32,
         (vertex_of, outputs, stride): (&[u32], &[f32], usize),
     ) {
-        let Some(exe) = self.current_exe() else {
-            return;
-        };
-        let varyings = exe.feedback.clone();
-        let separate = exe.feedback_mode == GL_SEPARATE_ATTRIBS;
+        let (varyings, buffer_mode) = self.current_feedback();
+        let (varyings, separate) = (varyings.to_vec(), buffer_mode == GL_SEPARATE_ATTRIBS);
         if self.feedback.full || varyings.is_empty() {
             return;
         }
