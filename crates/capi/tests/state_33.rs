@@ -26,6 +26,8 @@ const NAMES: &[&str] = &[
     "glGetTransformFeedbackVarying",
     "glBeginTransformFeedback",
     "glEndTransformFeedback",
+    "glSampleMaski",
+    "glGetMultisamplefv",
 ];
 
 unsafe fn compat_context(buf: &mut Vec<u8>) -> OSMesaContext {

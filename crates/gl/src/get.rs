@@ -151,6 +151,9 @@ impl Context {
             GL_MAX_TEXTURE_LOD_BIAS => flt(&[16.0]),
             GL_SUBPIXEL_BITS => int(&[8]),
             GL_NUM_COMPRESSED_TEXTURE_FORMATS | GL_SAMPLE_BUFFERS | GL_SAMPLES => int(&[0]),
+            GL_MAX_SAMPLE_MASK_WORDS if api.at_least(3, 2) => {
+                int(&[crate::rasterization::MAX_SAMPLE_MASK_WORDS as i64])
+            }
             GL_RED_BITS | GL_GREEN_BITS | GL_BLUE_BITS | GL_ALPHA_BITS => int(&[8]),
             GL_DEPTH_BITS => int(&[24]),
             GL_STENCIL_BITS => int(&[8]),

@@ -109,6 +109,17 @@ impl Context {
                     mask.iter().map(|&m| m as i64).collect()
                 })
             }
+            // The mask's bits as a GLint (-1 for all ones), as Mesa.
+            GL_SAMPLE_MASK_VALUE if self.api.at_least(3, 2) => {
+                if self.reject_in_begin() {
+                    return None;
+                }
+                if index >= crate::rasterization::MAX_SAMPLE_MASK_WORDS {
+                    self.set_error(GL_INVALID_VALUE);
+                    return None;
+                }
+                Some(vec![self.st.sample_mask as i32 as i64])
+            }
             _ => self.get_integer64_indexed(pname, index).map(|v| vec![v]),
         }
     }

@@ -186,6 +186,8 @@ pub struct State {
     pub shade_model: u32,
     /// glProvokingVertex (GL 3.2).
     pub provoking_vertex: u32,
+    /// glSampleMaski's word 0 (GL_SAMPLE_MASK_VALUE, GL 3.2).
+    pub sample_mask: u32,
     pub line_width: f32,
     pub point: PointParams,
     pub lights: [Light; MAX_LIGHTS],
@@ -250,6 +252,7 @@ impl State {
             polygon_offset: [0.0; 2],
             shade_model: GL_SMOOTH,
             provoking_vertex: GL_LAST_VERTEX_CONVENTION,
+            sample_mask: !0,
             line_width: 1.0,
             point: PointParams {
                 size: 1.0,
@@ -358,6 +361,7 @@ const CAPS_3X: &[(u32, (u32, u32))] = &[
     (GL_RASTERIZER_DISCARD, (3, 0)),
     (GL_DEPTH_CLAMP, (3, 2)),
     (GL_TEXTURE_CUBE_MAP_SEAMLESS, (3, 2)),
+    (GL_SAMPLE_MASK, (3, 2)),
 ];
 
 /// Capabilities that apply to the active texture unit.

@@ -400,3 +400,24 @@ fn depth_clamp_replaces_near_and_far_clipping() {
     old.enable(GL_DEPTH_CLAMP);
     assert_eq!(old.get_error(), GL_INVALID_ENUM);
 }
+
+#[test]
+fn sample_mask_state_and_sample_positions() {
+    let mut ctx = Context::with_api(4, 4, gl::Api::GL33_CORE);
+    assert_eq!(ctx.get_integerv(GL_MAX_SAMPLE_MASK_WORDS), vec![1]);
+    assert_eq!(ctx.get_indexed(GL_SAMPLE_MASK_VALUE, 0), Some(vec![-1]));
+    ctx.sample_maski(0, 5);
+    assert_eq!(ctx.get_indexed(GL_SAMPLE_MASK_VALUE, 0), Some(vec![5]));
+    ctx.enable(GL_SAMPLE_MASK);
+    assert!(ctx.is_enabled(GL_SAMPLE_MASK));
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    ctx.sample_maski(1, 5);
+    assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    assert_eq!(ctx.get_indexed(GL_SAMPLE_MASK_VALUE, 1), None);
+    assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    // Single-sampled framebuffers have no sample positions.
+    assert_eq!(ctx.get_multisamplefv(GL_SAMPLE_POSITION, 0), None);
+    assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    assert_eq!(ctx.get_multisamplefv(GL_SAMPLES, 0), None);
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+}

@@ -330,5 +330,24 @@ def transform_feedback(log):
     return False
 
 
+@scene("gl33_multisample_state", 8, 8, CORE)
+def multisample_state(log):
+    v = (ctypes.c_float * 2)(-1, -1)
+    check(log, "glGetMultisamplefv(SAMPLE_POSITION, 0)", GL.glGetMultisamplefv, GL.GL_SAMPLE_POSITION, 0, v)
+    check(log, "glGetMultisamplefv(SAMPLES)", GL.glGetMultisamplefv, GL.GL_SAMPLES, 0, v)
+    log.append(f"max words: {GL.glGetIntegerv(GL.GL_MAX_SAMPLE_MASK_WORDS)} {errors()}")
+    check(log, "glSampleMaski(1)", GL.glSampleMaski, 1, 5)
+    x = (ctypes.c_int * 1)()
+    GL.glGetIntegeri_v(GL.GL_SAMPLE_MASK_VALUE, 0, x)
+    log.append(f"initial mask: {x[0]} {errors()}")
+    check(log, "glSampleMaski(0)", GL.glSampleMaski, 0, 5)
+    GL.glGetIntegeri_v(GL.GL_SAMPLE_MASK_VALUE, 0, x)
+    log.append(f"mask: {x[0]} {errors()}")
+    check(log, "glGetIntegeri_v(SAMPLE_MASK_VALUE, 1)", GL.glGetIntegeri_v, GL.GL_SAMPLE_MASK_VALUE, 1, x)
+    check(log, "glEnable(SAMPLE_MASK)", GL.glEnable, GL.GL_SAMPLE_MASK)
+    log.append(f"enabled: {GL.glIsEnabled(GL.GL_SAMPLE_MASK)}")
+    return False
+
+
 if __name__ == "__main__":
     sys.exit(main())
