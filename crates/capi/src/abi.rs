@@ -25,6 +25,11 @@ pub type GLclampd = f64;
 pub type GLchar = std::ffi::c_char;
 pub type GLsizeiptr = isize;
 pub type GLintptr = isize;
+pub type GLint64 = i64;
+pub type GLuint64 = u64;
+/// A sync object handle: the context's nonzero handle as the pointer's
+/// value ([`gl::sync`]); never dereferenced.
+pub type GLsync = *const std::ffi::c_void;
 
 pub const GL_FALSE: GLboolean = 0;
 pub const GL_TRUE: GLboolean = 1;

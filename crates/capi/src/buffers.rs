@@ -263,14 +263,22 @@ gl_entry_points! {
     fn glBindBufferBase(target: GLenum, index: GLuint, buffer: GLuint) => |c| {
         c.gl.bind_buffer_base(target, index, buffer)
     }
+    // The indexed buffer bindings and the per-draw-buffer GL_BLEND /
+    // GL_COLOR_WRITEMASK ([`gl::Context::get_indexed`]).
     fn glGetIntegeri_v(pname: GLenum, index: GLuint, v: *mut GLint) => |c| {
-        if let Some(r) = c.gl.get_integeri(pname, index) { wr(v, &[r]) }
+        if let Some(r) = c.gl.get_indexed(pname, index) {
+            let r: Vec<GLint> = r.iter().map(|&x| x.clamp(i32::MIN as i64, i32::MAX as i64) as GLint).collect();
+            wr(v, &r)
+        }
     }
     fn glGetInteger64i_v(pname: GLenum, index: GLuint, v: *mut i64) => |c| {
-        if let Some(r) = c.gl.get_integer64_indexed(pname, index) { wr(v, &[r]) }
+        if let Some(r) = c.gl.get_indexed(pname, index) { wr(v, &r) }
     }
     fn glGetBooleani_v(pname: GLenum, index: GLuint, v: *mut GLboolean) => |c| {
-        if let Some(r) = c.gl.get_integer64_indexed(pname, index) { wr(v, &[(r != 0) as GLboolean]) }
+        if let Some(r) = c.gl.get_indexed(pname, index) {
+            let r: Vec<GLboolean> = r.iter().map(|&x| (x != 0) as GLboolean).collect();
+            wr(v, &r)
+        }
     }
 
     fn glGetBufferSubData(target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *mut c_void) => |c| {

@@ -78,6 +78,7 @@ fn to_f32<T: Copy + Into<f64>>(v: &[T]) -> Vec<f32> {
 gl_entry_points! {
     // ---- lighting ----
     [list] fn glShadeModel(mode: GLenum) => |c| { c.gl.shade_model(mode) }
+    [list] fn glProvokingVertex(mode: GLenum) => |c| { c.gl.provoking_vertex(mode) }
     [list] fn glLightf(light: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.light(light, pname, Param::F(v)) }
     [list] fn glLighti(light: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.light(light, pname, Param::I(v)) }
     fn glLightfv(light: GLenum, pname: GLenum, v: *const GLfloat) => |c| {

@@ -22,6 +22,30 @@ gl_entry_points! {
     [list] fn glColorMask(r: GLboolean, g: GLboolean, bl: GLboolean, a: GLboolean) => |c| {
         c.gl.color_mask(as_bool(r), as_bool(g), as_bool(bl), as_bool(a))
     }
+    [list] fn glColorMaski(index: GLuint, r: GLboolean, g: GLboolean, bl: GLboolean, a: GLboolean) => |c| {
+        c.gl.color_maski(index, as_bool(r), as_bool(g), as_bool(bl), as_bool(a))
+    }
+    // The value count follows the buffer: four for GL_COLOR, one for
+    // GL_DEPTH / GL_STENCIL (an invalid buffer reads nothing).
+    [list] fn glClearBufferfv(buffer: GLenum, drawbuffer: GLint, value: *const GLfloat) => |c| {
+        let v = rd_vec(value, clear_buffer_values(buffer));
+        c.gl.clear_bufferfv(buffer, drawbuffer, &v);
+        c.dirty = true;
+    }
+    [list] fn glClearBufferiv(buffer: GLenum, drawbuffer: GLint, value: *const GLint) => |c| {
+        let v = rd_vec(value, clear_buffer_values(buffer));
+        c.gl.clear_bufferiv(buffer, drawbuffer, &v);
+        c.dirty = true;
+    }
+    [list] fn glClearBufferuiv(buffer: GLenum, drawbuffer: GLint, value: *const GLuint) => |c| {
+        let v = rd_vec(value, clear_buffer_values(buffer));
+        c.gl.clear_bufferuiv(buffer, drawbuffer, &v);
+        c.dirty = true;
+    }
+    [list] fn glClearBufferfi(buffer: GLenum, drawbuffer: GLint, depth: GLfloat, stencil: GLint) => |c| {
+        c.gl.clear_bufferfi(buffer, drawbuffer, depth, stencil);
+        c.dirty = true;
+    }
     [list] fn glDepthMask(flag: GLboolean) => |c| { c.gl.depth_mask(as_bool(flag)) }
     [list] fn glStencilMask(mask: GLuint) => |c| { c.gl.stencil_mask(mask) }
     [list] fn glStencilMaskSeparate(face: GLenum, mask: GLuint) => |c| { c.gl.stencil_mask_separate(face, mask) }
@@ -93,4 +117,13 @@ gl_entry_points! {
     // ---- flush and finish ----
     fn glFinish() => |c| { c.gl.finish(); c.sync(); }
     fn glFlush() => |c| { c.gl.flush(); c.sync(); }
+}
+
+/// The values glClearBuffer*v reads for `buffer`.
+fn clear_buffer_values(buffer: GLenum) -> i64 {
+    match buffer {
+        GL_COLOR => 4,
+        GL_DEPTH | GL_STENCIL => 1,
+        _ => 0,
+    }
 }

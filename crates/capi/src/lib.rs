@@ -28,9 +28,9 @@
 //! - Display lists are recorded at the C level ([`lists`]); vertex-array
 //!   draws and pixel images (glDrawPixels, glBitmap) are dereferenced at
 //!   compile time (GL 2.1 §5.4).
-//! - Occlusion queries ([`occlusion`]) count exactly the fragments that
-//!   pass the depth test, whatever the thread count; results are
-//!   available when glEndQuery returns.
+//! - Query objects ([`occlusion`]: occlusion, primitive and timer queries)
+//!   count exactly, whatever the thread count; results are available when
+//!   glEndQuery returns. Sync objects ([`sync`]) are signaled when created.
 //! - The raster-position pixel path ([`pixel_path`]): glRasterPos runs the
 //!   current vertex stage (lighting, texture matrices, a user vertex
 //!   shader) on one vertex; glDrawPixels / glBitmap / glCopyPixels
@@ -67,7 +67,8 @@
 //!   (glDrawPixels, glBitmap, glCopyPixels), [`textures`], [`pixels`]
 //!   (texture read-back and copies), [`framebuffer`] (clears, masks,
 //!   glReadPixels, glFinish), [`framebuffer_objects`], [`shaders`],
-//!   [`uniforms`], [`lists`], [`attribs`], [`occlusion`], [`queries`] and
+//!   [`uniforms`], [`lists`], [`attribs`], [`occlusion`] (query objects,
+//!   conditional rendering), [`sync`] (fences), [`queries`] and
 //!   [`legacy`] (GL 1.x calls kept as state).
 //! - [`osmesa`]: the OSMesa context API; [`procs`]: OSMesaGetProcAddress
 //!   and its table, naming every entry-point module.
@@ -144,6 +145,7 @@ pub mod procs;
 pub mod queries;
 pub mod rasterization;
 pub mod shaders;
+pub mod sync;
 pub mod textures;
 pub mod transform;
 pub mod uniforms;
@@ -171,6 +173,7 @@ pub use procs::{lookup, OSMesaGetProcAddress};
 pub use queries::*;
 pub use rasterization::*;
 pub use shaders::*;
+pub use sync::*;
 pub use textures::*;
 pub use transform::*;
 pub use uniforms::*;

@@ -1,6 +1,8 @@
-//! Occlusion-query entry points (GL 2.1 §4.1.7, §6.1.12) over
-//! [`gl::occlusion`]. glBeginQuery/glEndQuery are compiled into display
-//! lists; the object calls and queries execute immediately (§5.4).
+//! Query-object entry points (GL 3.3 §2.14, §2.15, §5.1, §6.1.12) over
+//! [`gl::occlusion`]: occlusion, primitive and timer queries and
+//! conditional rendering. glBeginQuery/glEndQuery, glQueryCounter and the
+//! conditional-render calls are compiled into display lists; the object
+//! calls and queries execute immediately (§5.4).
 
 use crate::abi::*;
 use crate::context::{record_call, with_ctx};
@@ -38,4 +40,19 @@ gl_entry_points! {
             wr(v, &[x.min(u32::MAX as u64) as u32]);
         }
     }
+    fn glGetQueryObjecti64v(id: GLuint, pname: GLenum, v: *mut GLint64) => |c| {
+        if let Some(x) = c.gl.get_query_object(id, pname) {
+            wr(v, &[x.min(i64::MAX as u64) as i64]);
+        }
+    }
+    fn glGetQueryObjectui64v(id: GLuint, pname: GLenum, v: *mut GLuint64) => |c| {
+        if let Some(x) = c.gl.get_query_object(id, pname) {
+            wr(v, &[x]);
+        }
+    }
+    [list] fn glQueryCounter(id: GLuint, target: GLenum) => |c| { c.gl.query_counter(id, target) }
+    [list] fn glBeginConditionalRender(id: GLuint, mode: GLenum) => |c| {
+        c.gl.begin_conditional_render(id, mode)
+    }
+    [list] fn glEndConditionalRender() => |c| { c.gl.end_conditional_render() }
 }

@@ -21,6 +21,7 @@ pub fn lookup(name: &str) -> Option<*const ()> {
         crate::queries::lookup,
         crate::rasterization::lookup,
         crate::shaders::lookup,
+        crate::sync::lookup,
         crate::textures::lookup,
         crate::transform::lookup,
         crate::uniforms::lookup,

@@ -92,5 +92,10 @@ gl_entry_points! {
     [list] fn glEnable(cap: GLenum) => |c| { c.gl.enable(cap) }
     [list] fn glDisable(cap: GLenum) => |c| { c.gl.disable(cap) }
     fn glIsEnabled(cap: GLenum) -> GLboolean [0] => |c| { c.gl.is_enabled(cap) as GLboolean }
+    [list] fn glEnablei(cap: GLenum, index: GLuint) => |c| { c.gl.enablei(cap, index) }
+    [list] fn glDisablei(cap: GLenum, index: GLuint) => |c| { c.gl.disablei(cap, index) }
+    fn glIsEnabledi(cap: GLenum, index: GLuint) -> GLboolean [0] => |c| {
+        c.gl.is_enabledi(cap, index) as GLboolean
+    }
     [list] fn glHint(target: GLenum, mode: GLenum) => |c| { c.gl.hint(target, mode) }
 }

@@ -9,6 +9,11 @@ use gl::enums::*;
 use gl::Param;
 
 gl_entry_points! {
+    // ---- multisampling (GL 3.2) ----
+    fn glSampleMaski(index: GLuint, mask: GLbitfield) => |c| { c.gl.sample_maski(index, mask) }
+    fn glGetMultisamplefv(pname: GLenum, index: GLuint, val: *mut GLfloat) => |c| {
+        if let Some(v) = c.gl.get_multisamplefv(pname, index) { wr(val, &v) }
+    }
     // ---- points, lines, polygons ----
     [list] fn glPointSize(size: GLfloat) => |c| { c.gl.point_size(size) }
     [list] fn glPointParameterf(pname: GLenum, v: GLfloat) => |c| { c.gl.point_parameter(pname, Param::F(v)) }

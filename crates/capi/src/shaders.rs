@@ -131,6 +131,42 @@ gl_entry_points! {
     fn glBindAttribLocation(program: GLuint, index: GLuint, name: *const GLchar) => |c| {
         if let Some(n) = cstr(name) { c.gl.bind_attrib_location(program, index, &n) }
     }
+    fn glBindFragDataLocation(program: GLuint, color: GLuint, name: *const GLchar) => |c| {
+        if let Some(n) = cstr(name) { c.gl.bind_frag_data_location(program, color, &n) }
+    }
+    fn glGetFragDataLocation(program: GLuint, name: *const GLchar) -> GLint [-1] => |c| {
+        match cstr(name) {
+            Some(n) => c.gl.get_frag_data_location(program, &n),
+            None => -1,
+        }
+    }
+    fn glTransformFeedbackVaryings(
+        program: GLuint, count: GLsizei, varyings: *const *const GLchar, mode: GLenum
+    ) => |c| {
+        if count < 0 {
+            if !c.gl.reject_in_begin() {
+                c.gl.record_error(gl::enums::GL_INVALID_VALUE);
+            }
+            return;
+        }
+        let names: Vec<String> = rd_vec(varyings, count as i64)
+            .into_iter()
+            .map(|p| cstr(p).unwrap_or_default())
+            .collect();
+        c.gl.transform_feedback_varyings(program, &names, mode)
+    }
+    fn glGetTransformFeedbackVarying(
+        program: GLuint, index: GLuint, buf_size: GLsizei, length: *mut GLsizei,
+        size: *mut GLsizei, ty: *mut GLenum, name: *mut GLchar
+    ) => |c| {
+        if let Some(info) = c.gl.get_transform_feedback_varying(program, index) {
+            wr(size, &[info.size]);
+            wr(ty, &[info.ty]);
+            wr_string(c, &info.name, buf_size, length, name);
+        }
+    }
+    [list] fn glBeginTransformFeedback(mode: GLenum) => |c| { c.gl.begin_transform_feedback(mode) }
+    [list] fn glEndTransformFeedback() => |c| { c.gl.end_transform_feedback() }
     fn glGetActiveAttrib(
         program: GLuint, index: GLuint, buf_size: GLsizei, length: *mut GLsizei,
         size: *mut GLint, ty: *mut GLenum, name: *mut GLchar

@@ -139,7 +139,7 @@ impl Context {
             st.blend_eq = old.blend_eq;
             st.blend_color = old.blend_color;
             st.logic_op = old.logic_op;
-            st.color_mask = old.color_mask;
+            st.color_masks = old.color_masks;
             st.clear_color = old.clear_color;
             st.draw_buffers = old.draw_buffers.clone();
         }
@@ -161,6 +161,7 @@ impl Context {
             st.color_material_face = old.color_material_face;
             st.color_material_mode = old.color_material_mode;
             st.shade_model = old.shade_model;
+            st.provoking_vertex = old.provoking_vertex;
         }
         if has(GL_LINE_BIT) {
             st.line_width = old.line_width;

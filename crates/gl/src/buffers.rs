@@ -211,6 +211,11 @@ impl Context {
                 return;
             }
         };
+        // The bindings being written stay put (GL 3.3 §2.16).
+        if target == GL_TRANSFORM_FEEDBACK_BUFFER && self.feedback_active() {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
         if index as usize >= max {
             self.set_error(GL_INVALID_VALUE);
             return;
@@ -392,7 +397,7 @@ impl Context {
 
     /// Writes `data` at `offset` into buffer `b`'s store (range checked
     /// by the caller).
-    fn write_store(&mut self, b: u32, offset: usize, data: &[u8]) {
+    pub(crate) fn write_store(&mut self, b: u32, offset: usize, data: &[u8]) {
         if let Some(obj) = self.objects.buffers.get_mut(&b) {
             let mut v = obj.data.to_vec();
             if let Some(dst) = v.get_mut(offset..offset + data.len()) {

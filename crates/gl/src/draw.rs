@@ -49,6 +49,9 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return false;
         }
+        if !self.feedback_allows(mode) {
+            return false;
+        }
         // Core draws need a program (there is no fixed-function vertex
         // stage to fall back on) and a vertex array object (the default
         // one is removed).
@@ -247,7 +250,7 @@ impl Context {
                 let one = InstanceBatch::one(instance);
                 match restart {
                     Some(r) => {
-                        for (m, l) in crate::restart::split(mode, list, r) {
+                        for (m, l) in crate::restart::split(mode, list, r, self.provoking_first()) {
                             self.run_draw(m, &with_base(l, basevertex), None, one);
                         }
                     }
@@ -278,7 +281,8 @@ impl Context {
                 }));
             }
             let b = InstanceBatch { first, lo, stride };
-            for (m, l) in crate::restart::split(mode, &combined, SEPARATOR) {
+            for (m, l) in crate::restart::split(mode, &combined, SEPARATOR, self.provoking_first())
+            {
                 self.run_draw(m, &l, None, b);
             }
             first += n;
@@ -348,7 +352,15 @@ impl Context {
         immediate: Option<&[ImmVertex]>,
         batch: InstanceBatch,
     ) {
-        if indices.is_empty() {
+        // Conditional rendering discards the whole command (GL 3.3 §2.15).
+        if indices.is_empty() || self.render_discarded() {
+            return;
+        }
+        self.count_primitives(mode, indices.len());
+        let discard = self.st.is_on(GL_RASTERIZER_DISCARD);
+        // GL_RASTERIZER_DISCARD: the primitives end before rasterization
+        // (after transform feedback).
+        if discard && !self.feedback_active() {
             return;
         }
         let (vs, vs_user, fs, ff_shape) = match self.draw_kernels() {
@@ -358,6 +370,26 @@ impl Context {
                 return;
             }
         };
+        if self.feedback_active() {
+            let words = self.uniform_words(&vs, vs_user);
+            let units = self.texture_units();
+            let fetch = Fetcher::new(self, &vs, immediate, batch);
+            let shaded =
+                raster::shade_vertices(&self.workers, &*vs, &words, &units, indices, &fetch, true);
+            drop(fetch);
+            match shaded {
+                Ok((vertex_of, outputs, stride)) => {
+                    self.capture_feedback(mode, (&vertex_of, &outputs, stride))
+                }
+                Err(e) => {
+                    self.cache.error = Some(e.to_string());
+                    return;
+                }
+            }
+            if discard {
+                return;
+            }
+        }
         let fs_user = ff_shape.is_none();
         // The fixed-function fragment stage runs without the engine where
         // it can (the same bits: `ff_fragment`).
@@ -450,7 +482,12 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
-        if !self.check_fbo_complete() {
+        // Clears are rendering commands: conditional rendering and
+        // rasterizer discard skip them (as Mesa does for the latter).
+        if !self.check_fbo_complete()
+            || self.render_discarded()
+            || self.st.is_on(GL_RASTERIZER_DISCARD)
+        {
             return;
         }
         let Some(mut t) = self.draw_target() else {
@@ -461,10 +498,13 @@ impl Context {
             .is_on(GL_SCISSOR_TEST)
             .then(|| rect(self.st.scissor));
         if mask & GL_COLOR_BUFFER_BIT != 0 {
-            let mut bufs: Vec<usize> = t.draw_buffers.iter().flatten().copied().collect();
-            bufs.dedup();
-            let (color, write) = (self.st.clear_color, self.st.color_mask);
-            t.fb.clear_color_on(&self.workers, &bufs, color, write, scissor);
+            // Each draw buffer with its own mask (glColorMaski).
+            let color = self.st.clear_color;
+            for (i, buf) in t.draw_buffers.iter().enumerate() {
+                let Some(buf) = *buf else { continue };
+                let write = self.st.color_masks[i % crate::MAX_DRAW_BUFFERS];
+                t.fb.clear_color_on(&self.workers, &[buf], color, write, scissor);
+            }
         }
         if mask & GL_DEPTH_BUFFER_BIT != 0 {
             let (depth, write) = (self.st.clear_depth, self.st.depth_mask);

@@ -60,6 +60,15 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_explicit_attrib_location",
 ];
 
+/// The extensions a 3.3 context adds (their GL 3.2–3.3 core features,
+/// whose entry points and enums a 2.1 context does not take).
+pub const EXTENSIONS_33: &[&str] = &[
+    "GL_ARB_sync",
+    "GL_ARB_timer_query",
+    "GL_ARB_occlusion_query2",
+    "GL_ARB_provoking_vertex",
+];
+
 fn b(x: bool) -> f64 {
     if x {
         1.0
@@ -69,10 +78,25 @@ fn b(x: bool) -> f64 {
 }
 
 impl Context {
+    /// The 64-bit integer states (GL 3.2-3.3), which glGetInteger64v
+    /// returns exactly and glGetIntegerv clamps.
+    fn int64_state(&self, pname: u32) -> Option<i64> {
+        match pname {
+            GL_MAX_SERVER_WAIT_TIMEOUT if self.api.at_least(3, 2) => {
+                Some(crate::sync::MAX_SERVER_WAIT_TIMEOUT)
+            }
+            GL_TIMESTAMP if self.api.at_least(3, 3) => Some(crate::occlusion::timestamp_ns()),
+            _ => None,
+        }
+    }
+
     fn query(&mut self, pname: u32) -> Option<(Vec<f64>, Kind)> {
         use Kind::*;
         if self.is_removed_state(pname) {
             return None;
+        }
+        if let Some(v) = self.int64_state(pname) {
+            return Some((vec![v as f64], Int));
         }
         let unit = self.st.active_texture as usize;
         let int = |v: &[i64]| Some((v.iter().map(|&x| x as f64).collect(), Int));
@@ -135,6 +159,9 @@ impl Context {
                 } else {
                     int(&[(samples > 0) as i64])
                 }
+            }
+            GL_MAX_SAMPLE_MASK_WORDS if api.at_least(3, 2) => {
+                int(&[crate::rasterization::MAX_SAMPLE_MASK_WORDS as i64])
             }
             GL_RED_BITS | GL_GREEN_BITS | GL_BLUE_BITS | GL_ALPHA_BITS => int(&[8]),
             GL_DEPTH_BITS => int(&[24]),
@@ -258,6 +285,12 @@ impl Context {
             GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS => {
                 int(&[crate::buffers::MAX_TRANSFORM_FEEDBACK_BUFFERS as i64])
             }
+            GL_MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS if api.at_least(3, 0) => {
+                int(&[crate::transform_feedback::MAX_INTERLEAVED_COMPONENTS as i64])
+            }
+            GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS if api.at_least(3, 0) => {
+                int(&[crate::transform_feedback::MAX_SEPARATE_COMPONENTS as i64])
+            }
             GL_MAX_UNIFORM_BLOCK_SIZE => {
                 int(&[crate::uniform_block::MAX_UNIFORM_BLOCK_SIZE as i64])
             }
@@ -292,7 +325,7 @@ impl Context {
             GL_LOGIC_OP_MODE => int(&[st.logic_op as i64]),
             GL_DEPTH_FUNC => int(&[st.depth_func as i64]),
             GL_DEPTH_WRITEMASK => Some((vec![b(st.depth_mask)], Bool)),
-            GL_COLOR_WRITEMASK => Some((st.color_mask.iter().map(|&m| b(m)).collect(), Bool)),
+            GL_COLOR_WRITEMASK => Some((st.color_masks[0].iter().map(|&m| b(m)).collect(), Bool)),
             GL_STENCIL_FUNC => int(&[st.stencil[0].func as i64]),
             GL_STENCIL_REF => int(&[st.stencil[0].reference as i64]),
             GL_STENCIL_VALUE_MASK => int(&[st.stencil[0].value_mask as i32 as i64]),
@@ -315,6 +348,11 @@ impl Context {
             GL_POLYGON_OFFSET_FACTOR => flt(&st.polygon_offset[..1]),
             GL_POLYGON_OFFSET_UNITS => flt(&st.polygon_offset[1..]),
             GL_SHADE_MODEL => int(&[st.shade_model as i64]),
+            GL_PROVOKING_VERTEX if api.at_least(3, 2) => int(&[st.provoking_vertex as i64]),
+            // Quads take the provoking vertex of the convention in effect.
+            GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION if api.at_least(3, 2) => {
+                Some((vec![1.0], Bool))
+            }
             GL_POINT_SIZE => flt(&[st.point.size]),
             GL_POINT_SIZE_MIN => flt(&[st.point.size_min]),
             GL_POINT_SIZE_MAX => flt(&[st.point.size_max]),
@@ -395,6 +433,9 @@ impl Context {
 
     /// glGetIntegerv.
     pub fn get_integerv(&mut self, pname: u32) -> Vec<i32> {
+        if let Some(v) = self.int64_state(pname) {
+            return vec![v.clamp(i32::MIN as i64, i32::MAX as i64) as i32];
+        }
         match self.query(pname) {
             Some((v, kind)) => v
                 .iter()
@@ -416,6 +457,9 @@ impl Context {
 
     /// glGetInteger64v (GL 3.2): glGetIntegerv without the 32-bit clamp.
     pub fn get_integer64v(&mut self, pname: u32) -> Vec<i64> {
+        if let Some(v) = self.int64_state(pname) {
+            return vec![v];
+        }
         match self.query(pname) {
             Some((v, kind)) => v
                 .iter()

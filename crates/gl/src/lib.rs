@@ -59,7 +59,8 @@
 //!   bias), [`readback`] (glReadPixels), [`pixel_path`] (raster position,
 //!   glDrawPixels, glBitmap, glCopyPixels).
 //! - Shaders: [`program`], [`program_blocks`] (uniform-block queries,
-//!   blocks read from uniform buffers at draw time), [`uniform`],
+//!   blocks read from uniform buffers at draw time), [`program_outputs`]
+//!   (fragment-output locations), [`transform_feedback`], [`uniform`],
 //!   [`uniform_block`] (std140 layout), [`builtins`] (the `gl_*`
 //!   uniforms), [`ffgen`] (fixed-function stages as GLSL).
 //! - State: [`state`] (the fixed-function state, capabilities),
@@ -67,7 +68,8 @@
 //!   [`vertex`] (arrays, current values, glBegin/glEnd),
 //!   [`vertex_array`] (vertex array objects), [`matrix`],
 //!   [`param`] (the values of the glFog/glLight/glTexEnv... call families),
-//!   [`attrib_stack`], [`get`] (glGet*), [`occlusion`].
+//!   [`attrib_stack`], [`get`] (glGet*), [`occlusion`], [`sync`] (fences),
+//!   [`per_buffer`] (per-draw-buffer blending and masks, glClearBuffer*).
 //! - A draw: [`draw`] (the calls, glClear; [`restart`] splits at
 //!   primitive-restart indices) puts together [`kernels`],
 //!   [`fetch`], [`pipeline_state`], [`texture_units`] and
@@ -83,6 +85,11 @@
 //! - GL_COMBINE texture-environment parameters are kept for queries
 //!   ([`Context::get_tex_envfv`]) but GL_COMBINE draws as GL_MODULATE.
 //! - glPushAttrib does not save texture-object parameters or hints.
+//! - GL_DEPTH_CLAMP turns off near/far clipping and clamps fragment
+//!   depths to [0, 1] as they are stored; with a glDepthRange narrower
+//!   than [0, 1] they are not clamped to that range. GL 3.3 allows
+//!   GL_TEXTURE_CUBE_MAP_SEAMLESS to be enabled, but cube maps are still
+//!   filtered face by face.
 
 pub mod attrib_stack;
 pub mod blit;
@@ -102,22 +109,26 @@ pub mod mipmap;
 pub mod objects;
 pub mod occlusion;
 pub mod param;
+pub mod per_buffer;
 pub mod per_fragment;
 pub mod pipeline_state;
 pub mod pixel_path;
 pub mod pixel_transfer;
 pub mod program;
 pub mod program_blocks;
+pub mod program_outputs;
 pub mod rasterization;
 pub mod readback;
 pub mod render_target;
 pub(crate) mod restart;
 pub mod shading;
 pub mod state;
+pub mod sync;
 pub mod texture_format;
 pub mod texture_units;
 pub mod textures;
 pub mod transform;
+pub mod transform_feedback;
 pub mod uniform;
 pub mod uniform_block;
 pub mod version;
@@ -185,6 +196,10 @@ pub struct Context {
     pub(crate) queries: occlusion::Queries,
     /// The current raster position ([`pixel_path`]).
     pub(crate) raster: pixel_path::RasterPos,
+    /// Sync objects ([`sync`]).
+    pub(crate) syncs: sync::Syncs,
+    /// The active transform feedback ([`transform_feedback`]).
+    pub(crate) feedback: transform_feedback::Feedback,
 }
 
 /// The environment variable giving the default number of draw threads.
@@ -253,6 +268,8 @@ impl Context {
             debug: debug::DebugSession::default(),
             queries: occlusion::Queries::default(),
             raster: pixel_path::RasterPos::default(),
+            syncs: sync::Syncs::default(),
+            feedback: transform_feedback::Feedback::default(),
         }
     }
 

@@ -248,6 +248,6 @@ impl Context {
         if self.reject_in_begin() {
             return;
         }
-        self.st.color_mask = [r, g, b, a];
+        self.st.color_masks = [[r, g, b, a]; crate::MAX_DRAW_BUFFERS];
     }
 }

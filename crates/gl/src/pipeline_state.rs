@@ -127,6 +127,7 @@ impl Context {
         raster::PipelineState {
             viewport: rect(self.viewport),
             depth_range: (self.depth_range[0], self.depth_range[1]),
+            depth_clamp: on(GL_DEPTH_CLAMP),
             scissor: on(GL_SCISSOR_TEST).then(|| rect(st.scissor)),
             cull: on(GL_CULL_FACE).then_some(match st.cull_face {
                 GL_FRONT => raster::CullFace::Front,
@@ -140,6 +141,7 @@ impl Context {
             },
             polygon_mode: [poly(st.polygon_mode[0]), poly(st.polygon_mode[1])],
             flat_shading: st.shade_model == GL_FLAT,
+            provoking_first: self.provoking_first(),
             point_size: st.point.size,
             point_sprite: on(GL_POINT_SPRITE),
             coord_replace,
@@ -157,7 +159,7 @@ impl Context {
             }),
             depth_test: on(GL_DEPTH_TEST).then_some(compare_func(st.depth_func)),
             depth_mask: st.depth_mask,
-            blend: on(GL_BLEND).then_some(raster::Blend {
+            blend: self.any_buffer_blends().then_some(raster::Blend {
                 src_rgb: blend_factor(st.blend_src[0]),
                 dst_rgb: blend_factor(st.blend_dst[0]),
                 src_alpha: blend_factor(st.blend_src[1]),
@@ -166,7 +168,8 @@ impl Context {
                 equation_alpha: blend_eq(st.blend_eq[1]),
                 color: st.blend_color,
             }),
-            color_mask: st.color_mask,
+            color_mask: st.color_masks[0],
+            per_buffer: self.per_buffer_ops(),
             logic_op: on(GL_COLOR_LOGIC_OP).then_some(logic_op(st.logic_op)),
             polygon_offset: raster::PolygonOffset {
                 factor: st.polygon_offset[0],

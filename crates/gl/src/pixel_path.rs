@@ -298,6 +298,11 @@ impl Context {
         if !self.check_pixel_format(format, ty) {
             return;
         }
+        // Conditional rendering discards pixel rectangles (GL 3.3
+        // compatibility §2.19).
+        if self.render_discarded() {
+            return;
+        }
         let what = match format {
             GL_DEPTH_COMPONENT | GL_STENCIL_INDEX => format,
             _ => GL_RGBA,
@@ -363,6 +368,9 @@ impl Context {
                 return;
             }
         };
+        if self.render_discarded() {
+            return;
+        }
         if !self.has_buffer(self.objects.draw_framebuffer, what)
             || !self.has_buffer(self.objects.read_framebuffer, what)
         {
@@ -419,7 +427,8 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
-        if !self.check_fbo_complete() || !self.raster.valid {
+        // A discarded glBitmap does not move the raster position either.
+        if !self.check_fbo_complete() || !self.raster.valid || self.render_discarded() {
             return;
         }
         if let (Some(bits), true) = (bits, w > 0 && h > 0) {

@@ -69,6 +69,10 @@ pub struct Executable {
     /// The compiled shader objects linked, in attachment order (the
     /// debugger maps source spans back to their text).
     pub shaders: Vec<Arc<glsl::Shader>>,
+    /// The transform feedback varyings ([`crate::transform_feedback`])
+    /// and GL_INTERLEAVED_ATTRIBS or GL_SEPARATE_ATTRIBS.
+    pub feedback: Vec<crate::transform_feedback::FeedbackVarying>,
+    pub feedback_mode: u32,
 }
 
 impl Executable {
@@ -86,6 +90,12 @@ impl Executable {
 pub struct ProgramObj {
     pub attached: Vec<u32>,
     pub bindings: BTreeMap<String, u32>,
+    /// glBindFragDataLocation bindings ([`crate::program_outputs`]).
+    pub frag_bindings: BTreeMap<String, u32>,
+    /// glTransformFeedbackVaryings' names and buffer mode (0 until set:
+    /// GL_INTERLEAVED_ATTRIBS), for the next link.
+    pub feedback_names: Vec<String>,
+    pub feedback_mode: u32,
     pub link_status: bool,
     pub validate_status: bool,
     pub info_log: String,
@@ -134,7 +144,7 @@ impl Context {
     }
 
     /// Checks a program name as [`Context::check_shader`] checks a shader's.
-    fn check_program(&mut self, program: u32) -> bool {
+    pub(crate) fn check_program(&mut self, program: u32) -> bool {
         self.check_name(program, false)
     }
 
@@ -191,7 +201,7 @@ impl Context {
     /// The executable of a linked program, for the queries that need one:
     /// `None` after check_program's error or, for a program not linked,
     /// `GL_INVALID_OPERATION`; inside glBegin/glEnd `GL_INVALID_OPERATION`.
-    fn linked_exe(&mut self, program: u32) -> Option<&Executable> {
+    pub(crate) fn linked_exe(&mut self, program: u32) -> Option<&Executable> {
         if self.reject_in_begin() || !self.check_program(program) {
             return None;
         }
@@ -344,9 +354,14 @@ impl Context {
         }
     }
 
-    /// glLinkProgram.
+    /// glLinkProgram (GL_INVALID_OPERATION for the current program while
+    /// transform feedback is active).
     pub fn link_program(&mut self, program: u32) {
         if self.reject_in_begin() || !self.check_program(program) {
+            return;
+        }
+        if self.feedback_active() && program == self.current_program {
+            self.set_error(GL_INVALID_OPERATION);
             return;
         }
         let Some(p) = self.programs.get(&program) else {
@@ -377,9 +392,16 @@ impl Context {
         log.push_str(linked.info_log());
         let mut ok = linked.ok() && not_compiled.is_empty();
         let bindings = p.bindings.clone();
+        let frag_bindings = p.frag_bindings.clone();
+        let feedback = (p.feedback_names.clone(), p.feedback_mode);
         let mut exe = None;
         if ok {
-            match build_executable(linked, &bindings, shaders.clone()) {
+            match build_executable(
+                linked,
+                (&bindings, &frag_bindings),
+                &feedback,
+                shaders.clone(),
+            ) {
                 Ok(e) => exe = Some(e),
                 Err(msg) => {
                     log.push_str(&format!("error: {msg}\n"));
@@ -395,9 +417,14 @@ impl Context {
         }
     }
 
-    /// glUseProgram.
+    /// glUseProgram (GL_INVALID_OPERATION while transform feedback is
+    /// active).
     pub fn use_program(&mut self, program: u32) {
         if self.reject_in_begin() {
+            return;
+        }
+        if self.feedback_active() {
+            self.set_error(GL_INVALID_OPERATION);
             return;
         }
         if program != 0 {
@@ -516,6 +543,19 @@ impl Context {
                     })
                     .unwrap_or(0),
                 GL_ACTIVE_ATTRIBUTES => attribs.len() as i32,
+                GL_TRANSFORM_FEEDBACK_VARYINGS => {
+                    p.exe.as_ref().map_or(0, |e| e.feedback.len()) as i32
+                }
+                GL_TRANSFORM_FEEDBACK_VARYING_MAX_LENGTH => p
+                    .exe
+                    .as_ref()
+                    .and_then(|e| e.feedback.iter().map(|v| with_nul(v.name.len())).max())
+                    .unwrap_or(0),
+                GL_TRANSFORM_FEEDBACK_BUFFER_MODE => p
+                    .exe
+                    .as_ref()
+                    .map_or(GL_INTERLEAVED_ATTRIBS, |e| e.feedback_mode)
+                    as i32,
                 GL_ACTIVE_ATTRIBUTE_MAX_LENGTH => attribs
                     .iter()
                     .map(|a| with_nul(a.name.len()))
@@ -782,21 +822,34 @@ pub(crate) fn with_nul(len: usize) -> i32 {
 /// Builds uniform storage, attribute locations and kernels for a linked
 /// program.
 fn build_executable(
-    program: glsl::link::Program,
-    bindings: &BTreeMap<String, u32>,
+    mut program: glsl::link::Program,
+    (bindings, frag_bindings): (&BTreeMap<String, u32>, &BTreeMap<String, u32>),
+    (feedback_names, feedback_mode): &(Vec<String>, u32),
     shaders: Vec<Arc<glsl::Shader>>,
 ) -> Result<Executable, String> {
+    crate::program_outputs::place_frag_outputs(&mut program, frag_bindings)?;
     let modules: Vec<&Module> = program.stages.iter().map(|s| &s.module).collect();
     let uniforms = UniformTable::build(&modules);
     crate::uniform_block::check_limits(&uniforms.blocks, &modules)?;
     let attribs = assign_attribs(&program, bindings)?;
     let kernels = crate::kernels::Kernels::new(&program)?;
+    let feedback_mode = match *feedback_mode {
+        GL_SEPARATE_ATTRIBS => GL_SEPARATE_ATTRIBS,
+        _ => GL_INTERLEAVED_ATTRIBS,
+    };
+    let feedback = crate::transform_feedback::resolve(
+        kernels.vs.as_ref().map(|k| k.interface()),
+        feedback_names,
+        feedback_mode == GL_SEPARATE_ATTRIBS,
+    )?;
     Ok(Executable {
         program,
         uniforms,
         attribs,
         kernels,
         shaders,
+        feedback,
+        feedback_mode,
     })
 }
 

@@ -9,6 +9,9 @@ use crate::enums::*;
 use crate::param::Param;
 use crate::Context;
 
+/// GL_MAX_SAMPLE_MASK_WORDS.
+pub const MAX_SAMPLE_MASK_WORDS: u32 = 1;
+
 impl Context {
     /// glCullFace.
     pub fn cull_face(&mut self, mode: u32) {
@@ -70,6 +73,56 @@ impl Context {
             return;
         }
         self.st.shade_model = mode;
+    }
+
+    /// glProvokingVertex (GL 3.3 §2.19): which vertex of a primitive
+    /// gives flat-shaded values; GL_INVALID_ENUM for another mode.
+    pub fn provoking_vertex(&mut self, mode: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if mode != GL_FIRST_VERTEX_CONVENTION && mode != GL_LAST_VERTEX_CONVENTION {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        self.st.provoking_vertex = mode;
+    }
+
+    /// Whether the first-vertex provoking convention is in effect.
+    pub(crate) fn provoking_first(&self) -> bool {
+        self.st.provoking_vertex == GL_FIRST_VERTEX_CONVENTION
+    }
+
+    /// glSampleMaski (GL 3.3 §3.3.1): word `index` of the sample mask
+    /// (GL_INVALID_VALUE past GL_MAX_SAMPLE_MASK_WORDS, 1). The mask, like
+    /// the rest of multisample rasterization, applies only to
+    /// framebuffers with sample buffers (GL_SAMPLE_BUFFERS 1), which
+    /// shaderbox's are not yet: it is kept and queried.
+    pub fn sample_maski(&mut self, index: u32, mask: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if index >= MAX_SAMPLE_MASK_WORDS {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.st.sample_mask = mask;
+    }
+
+    /// glGetMultisamplefv(GL_SAMPLE_POSITION, index): GL_INVALID_ENUM for
+    /// another pname; every index is GL_INVALID_VALUE, being at least
+    /// GL_SAMPLES, which is 0 for shaderbox's single-sampled framebuffers
+    /// (Mesa answers the same for them).
+    pub fn get_multisamplefv(&mut self, pname: u32, _index: u32) -> Option<[f32; 2]> {
+        if self.reject_in_begin() {
+            return None;
+        }
+        if pname != GL_SAMPLE_POSITION {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        }
+        self.set_error(GL_INVALID_VALUE);
+        None
     }
 
     /// glPointSize.

@@ -11,7 +11,7 @@
 //! validates as GL 2.1 says and changes nothing on error.
 
 use crate::enums::*;
-use crate::{Context, MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_UNITS};
+use crate::{Context, MAX_CLIP_PLANES, MAX_DRAW_BUFFERS, MAX_LIGHTS, MAX_TEXTURE_UNITS};
 use std::collections::BTreeSet;
 
 /// One light source (GL 2.1 Table 6.9 defaults). Position and spot
@@ -176,13 +176,18 @@ pub struct State {
     pub stencil: [StencilFace; 2],
     pub alpha_func: u32,
     pub alpha_ref: f32,
-    pub color_mask: [bool; 4],
+    /// glColorMask / glColorMaski, per draw buffer.
+    pub color_masks: [[bool; 4]; MAX_DRAW_BUFFERS],
     pub cull_face: u32,
     pub front_face: u32,
     /// Front, back.
     pub polygon_mode: [u32; 2],
     pub polygon_offset: [f32; 2],
     pub shade_model: u32,
+    /// glProvokingVertex (GL 3.2).
+    pub provoking_vertex: u32,
+    /// glSampleMaski's word 0 (GL_SAMPLE_MASK_VALUE, GL 3.2).
+    pub sample_mask: u32,
     pub line_width: f32,
     pub point: PointParams,
     pub lights: [Light; MAX_LIGHTS],
@@ -240,12 +245,14 @@ impl State {
             stencil: [stencil; 2],
             alpha_func: GL_ALWAYS,
             alpha_ref: 0.0,
-            color_mask: [true; 4],
+            color_masks: [[true; 4]; MAX_DRAW_BUFFERS],
             cull_face: GL_BACK,
             front_face: GL_CCW,
             polygon_mode: [GL_FILL; 2],
             polygon_offset: [0.0; 2],
             shade_model: GL_SMOOTH,
+            provoking_vertex: GL_LAST_VERTEX_CONVENTION,
+            sample_mask: !0,
             line_width: 1.0,
             point: PointParams {
                 size: 1.0,
@@ -346,6 +353,17 @@ const CAPS: &[u32] = &[
     GL_PRIMITIVE_RESTART,
 ];
 
+/// Capabilities of GL 3.x, with the version that adds each: GL 2.1
+/// contexts refuse them (GL_INVALID_ENUM). GL_TEXTURE_CUBE_MAP_SEAMLESS
+/// is kept and queried but cube maps are still filtered face by face (as
+/// GL 3.3 §3.8.8 allows only with it off).
+const CAPS_3X: &[(u32, (u32, u32))] = &[
+    (GL_RASTERIZER_DISCARD, (3, 0)),
+    (GL_DEPTH_CLAMP, (3, 2)),
+    (GL_TEXTURE_CUBE_MAP_SEAMLESS, (3, 2)),
+    (GL_SAMPLE_MASK, (3, 2)),
+];
+
 /// Capabilities that apply to the active texture unit.
 const UNIT_CAPS: &[u32] = &[
     GL_TEXTURE_1D,
@@ -368,6 +386,16 @@ pub(crate) fn clamp01(x: f32) -> f32 {
 }
 
 impl Context {
+    /// Whether `cap` is a global (not per-unit) capability of this context.
+    fn global_cap(&self, cap: u32) -> bool {
+        CAPS.contains(&cap)
+            || (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as u32).contains(&cap)
+            || (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap)
+            || CAPS_3X
+                .iter()
+                .any(|&(c, (major, minor))| c == cap && self.api.at_least(major, minor))
+    }
+
     fn set_cap(&mut self, cap: u32, on: bool) {
         if self.reject_in_begin() || self.refuse_removed_cap(cap) {
             return;
@@ -378,10 +406,7 @@ impl Context {
                 return;
             }
             (cap, self.st.active_texture)
-        } else if CAPS.contains(&cap)
-            || (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as u32).contains(&cap)
-            || (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap)
-        {
+        } else if self.global_cap(cap) {
             (cap, 0)
         } else {
             self.set_error(GL_INVALID_ENUM);
@@ -391,6 +416,13 @@ impl Context {
             self.st.enabled.insert(key);
         } else {
             self.st.enabled.remove(&key);
+        }
+        // GL_BLEND is per draw buffer (key (GL_BLEND, i), GL 3.3 §4.1.8):
+        // glEnable/glDisable set every buffer's.
+        if cap == GL_BLEND {
+            for i in 1..MAX_DRAW_BUFFERS as u32 {
+                self.set_indexed_cap(cap, i, on);
+            }
         }
         if cap == GL_COLOR_MATERIAL && on {
             self.track_color_material();
@@ -415,10 +447,7 @@ impl Context {
         if UNIT_CAPS.contains(&cap) {
             return self.st.is_on_unit(cap, self.st.active_texture);
         }
-        if CAPS.contains(&cap)
-            || (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as u32).contains(&cap)
-            || (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap)
-        {
+        if self.global_cap(cap) {
             return self.st.is_on(cap);
         }
         if let Some(on) = self.client_state_enabled(cap) {

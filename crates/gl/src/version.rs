@@ -120,6 +120,9 @@ impl Api {
     /// strings `glGetStringi(GL_EXTENSIONS, i)` numbers.
     pub fn extensions(self) -> Vec<&'static str> {
         let mut v = crate::get::EXTENSIONS.to_vec();
+        if self.at_least(3, 3) {
+            v.extend_from_slice(crate::get::EXTENSIONS_33);
+        }
         if self.at_least(3, 1) && self.profile == Profile::Compatibility {
             v.push("GL_ARB_compatibility");
         }

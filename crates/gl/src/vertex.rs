@@ -1137,6 +1137,11 @@ impl Context {
             self.set_error(GL_INVALID_ENUM);
             return;
         }
+        // The mode must make transform feedback's primitives while it
+        // is active (GL 3.3 compatibility §2.20).
+        if !self.feedback_allows(mode) {
+            return;
+        }
         self.va.begin_mode = Some(mode);
         self.va.immediate.clear();
     }

@@ -105,6 +105,21 @@ pub(crate) fn small_polygon(mode: Mode, k: usize) -> Option<([usize; 4], usize, 
     })
 }
 
+/// The provoking vertex of primitive `k` of `mode` under the first-vertex
+/// convention (GL 3.3 table 2.15): the primitive's first vertex in the
+/// order the draw gives them — for a fan, the first after the centre; a
+/// polygon keeps its first vertex under either convention.
+pub(crate) fn first_vertex_provoking(mode: Mode, k: usize) -> usize {
+    match mode {
+        Mode::Points | Mode::LineStrip | Mode::LineLoop | Mode::TriangleStrip => k,
+        Mode::Lines | Mode::QuadStrip => 2 * k,
+        Mode::Triangles => 3 * k,
+        Mode::TriangleFan => k + 1,
+        Mode::Quads => 4 * k,
+        Mode::Polygon => 0,
+    }
+}
+
 /// Splits `count` vertices of `mode` into primitives, in order.
 #[cfg(test)]
 pub(crate) fn assemble(mode: Mode, count: usize, mut emit: impl FnMut(Assembled)) {
@@ -154,5 +169,34 @@ mod tests {
         );
         assert_eq!(collect(Mode::Polygon, 2), vec![]);
         assert_eq!(collect(Mode::Triangles, 2), vec![]);
+    }
+
+    /// The first-vertex convention's provoking vertex is the lowest
+    /// vertex of the primitive in draw order, except a fan's centre and a
+    /// polygon's (GL 3.3 table 2.15).
+    #[test]
+    fn first_vertex_convention() {
+        for mode in [
+            Mode::Points,
+            Mode::Lines,
+            Mode::LineStrip,
+            Mode::Triangles,
+            Mode::TriangleStrip,
+            Mode::Quads,
+            Mode::QuadStrip,
+        ] {
+            for k in 0..primitive_count(mode, 12) {
+                let lowest = match primitive(mode, 12, k) {
+                    Assembled::Point(i) => i,
+                    Assembled::Line(a, b) => a.min(b),
+                    Assembled::Polygon(v, _) => v.into_iter().min().unwrap_or(0),
+                };
+                assert_eq!(first_vertex_provoking(mode, k), lowest, "{mode:?} {k}");
+            }
+        }
+        assert_eq!(first_vertex_provoking(Mode::TriangleFan, 3), 4);
+        assert_eq!(first_vertex_provoking(Mode::LineLoop, 5), 5);
+        assert_eq!(primitive(Mode::LineLoop, 6, 5), Assembled::Line(5, 0));
+        assert_eq!(first_vertex_provoking(Mode::Polygon, 0), 0);
     }
 }

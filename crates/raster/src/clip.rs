@@ -30,6 +30,8 @@ pub(crate) struct ClipVertex {
 /// The clip planes of one draw.
 pub(crate) struct Planes {
     user: Vec<[f32; 4]>,
+    /// GL_DEPTH_CLAMP: no near and far planes (planes 4 and 5).
+    depth_clamp: bool,
 }
 
 const VIEW_PLANES: usize = 6;
@@ -55,6 +57,16 @@ impl Planes {
     pub fn new(user: &[Option<[f32; 4]>; 8]) -> Planes {
         Planes {
             user: user.iter().flatten().copied().collect(),
+            depth_clamp: false,
+        }
+    }
+
+    /// These planes without the near and far ones when `on` (GL 3.3
+    /// §2.20 depth clamping: depths are clamped per fragment instead).
+    pub fn with_depth_clamp(self, on: bool) -> Planes {
+        Planes {
+            depth_clamp: on,
+            ..self
         }
     }
 
@@ -82,6 +94,9 @@ impl Planes {
 
     /// [`Planes::distance`] of a vertex at `pos` (eye-space `eye`).
     fn distance_of(&self, p: usize, pos: &[f32; 4], eye: &[f32; 4]) -> f32 {
+        if self.depth_clamp && (p == 4 || p == 5) {
+            return 1.0;
+        }
         view_distance(p, *pos).unwrap_or_else(|| match self.user.get(p - VIEW_PLANES) {
             Some(pl) => pl[0] * eye[0] + pl[1] * eye[1] + pl[2] * eye[2] + pl[3] * eye[3],
             None => 0.0,

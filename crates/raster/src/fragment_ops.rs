@@ -196,7 +196,14 @@ pub(crate) fn write_colors(
         let Some(buf) = fb.color.get_mut(target) else {
             continue;
         };
-        write_color(buf, index, state, *src);
+        let (blend, mask) = match &state.per_buffer {
+            Some(per) => {
+                let (on, mask) = per[output % per.len()];
+                (state.blend.as_ref().filter(|_| on), mask)
+            }
+            None => (state.blend.as_ref(), state.color_mask),
+        };
+        write_color(buf, index, state, *src, (blend, mask));
     }
 }
 

@@ -259,7 +259,7 @@ pub use texture::{
     DepthTextureMode, Image, MagFilter, MinFilter, Texture, TextureTarget, TextureUnit, Wrap,
 };
 pub use texture_units::TextureUnits;
-pub use vertex::{fetch_column_each, fetch_vertex, VertexFetch};
+pub use vertex::{fetch_column_each, fetch_vertex, shade_vertices, VertexFetch};
 pub use workers::{Workers, MAX_THREADS};
 
 /// Why a draw stopped. Fragments written before the error stay written

@@ -14,7 +14,7 @@
 
 use std::ops::Range;
 
-use crate::assembly::{primitive, small_polygon, Assembled, Mode};
+use crate::assembly::{first_vertex_provoking, primitive, small_polygon, Assembled, Mode};
 use crate::clip::{ClipVertex, Planes};
 use crate::framebuffer::{Framebuffer, DEPTH_MAX};
 use crate::interpolate::{Plane, PrimPlanes};
@@ -117,7 +117,7 @@ impl<'a> Setup<'a> {
             vs,
             fs,
             outputs,
-            planes: Planes::new(&state.clip_planes),
+            planes: Planes::new(&state.clip_planes).with_depth_clamp(state.depth_clamp),
             clip_rect,
             vp: [
                 vw / 2.0,
@@ -157,12 +157,22 @@ impl Setup<'_> {
         let probe = self.probe;
         let count = vertex_of.len();
         let v = |i: usize| vertex_of.get(i).map_or(0, |&v| v as usize);
+        let first = self.state.provoking_first;
         for k in range {
             out.source = k as u32;
+            // The assembly names the last-vertex convention's provoking
+            // vertex; the first-vertex convention picks another.
+            let provoking = |last: usize| {
+                if first {
+                    first_vertex_provoking(mode, k)
+                } else {
+                    last
+                }
+            };
             if probe.is_none() {
                 if let Some((vs, n, prov)) = small_polygon(mode, k) {
                     let vs = vs.map(v);
-                    self.polygon_at(level, out, &vs[..n], v(prov));
+                    self.polygon_at(level, out, &vs[..n], v(provoking(prov)));
                     continue;
                 }
             }
@@ -177,11 +187,11 @@ impl Setup<'_> {
                 }
                 Assembled::Line(a, b) => {
                     let (ca, cb) = (self.clip_vertex(v(a)), self.clip_vertex(v(b)));
-                    self.line(out, &ca, &cb, false, 0.0, self.data(v(b)));
+                    self.line(out, &ca, &cb, false, 0.0, self.data(v(provoking(b))));
                 }
                 Assembled::Polygon(vs, prov) => {
                     let vs: Vec<usize> = vs.into_iter().map(v).collect();
-                    self.polygon(out, &vs, v(prov));
+                    self.polygon(out, &vs, v(provoking(prov)));
                 }
             }
         }

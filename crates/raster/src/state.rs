@@ -258,6 +258,9 @@ pub struct PipelineState {
     pub viewport: Rect,
     /// DepthRange (n, f), already clamped to [0, 1].
     pub depth_range: (f32, f32),
+    /// GL_DEPTH_CLAMP: primitives are not clipped by the near and far
+    /// planes; fragment depths are clamped to [0, 1] as they are stored.
+    pub depth_clamp: bool,
     /// The scissor box when the scissor test is enabled.
     pub scissor: Option<Rect>,
     pub cull: Option<CullFace>,
@@ -267,6 +270,10 @@ pub struct PipelineState {
     /// ShadeModel(FLAT): gl_Color / gl_SecondaryColor come from the
     /// provoking vertex.
     pub flat_shading: bool,
+    /// ProvokingVertex(FIRST_VERTEX_CONVENTION) (GL 3.3 §2.19, table
+    /// 2.15): flat values come from each primitive's first vertex instead
+    /// of its last (quads follow the convention too).
+    pub provoking_first: bool,
     /// PointSize (used unless `vertex_program_point_size` and the vertex
     /// shader writes gl_PointSize).
     pub point_size: f32,
@@ -291,8 +298,16 @@ pub struct PipelineState {
     pub depth_test: Option<CompareFunc>,
     pub depth_mask: bool,
     pub blend: Option<Blend>,
-    /// ColorMask (r, g, b, a), for all draw buffers.
+    /// ColorMask (r, g, b, a), for all draw buffers unless `per_buffer`
+    /// says otherwise.
     pub color_mask: [bool; 4],
+    /// Per-draw-buffer blending and masks (glEnablei(BLEND, i),
+    /// glColorMaski; GL 3.3 §4.1.8, §4.2.2): `None` when every draw buffer
+    /// blends as `blend` says and masks with `color_mask`; else, for draw
+    /// buffer (fragment output) i, whether `blend` applies to it and its
+    /// mask (`blend` then holds the equations and factors if any buffer
+    /// blends).
+    pub per_buffer: Option<[(bool, [bool; 4]); 8]>,
     pub logic_op: Option<LogicOp>,
     pub polygon_offset: PolygonOffset,
     /// DrawBuffers: fragment output i (`gl_FragData[i]`; gl_FragColor goes to
@@ -306,11 +321,13 @@ impl Default for PipelineState {
         PipelineState {
             viewport: Rect::default(),
             depth_range: (0.0, 1.0),
+            depth_clamp: false,
             scissor: None,
             cull: None,
             front_face: FrontFace::Ccw,
             polygon_mode: [PolygonMode::Fill; 2],
             flat_shading: false,
+            provoking_first: false,
             point_size: 1.0,
             point_sprite: false,
             coord_replace: 0,
@@ -327,6 +344,7 @@ impl Default for PipelineState {
             depth_mask: true,
             blend: None,
             color_mask: [true; 4],
+            per_buffer: None,
             logic_op: None,
             polygon_offset: PolygonOffset::default(),
             draw_buffers: [Some(0), None, None, None, None, None, None, None],

@@ -80,6 +80,36 @@ pub fn fetch_column_each(
     }
 }
 
+/// The vertex stage alone, as a draw runs it (transform feedback reads
+/// its outputs before clipping): per position in `indices`, the vertex
+/// number, and the outputs of every vertex, laid out as
+/// `vs.interface().outputs` says, `stride` (the second value) apart.
+/// Vertex colours are clamped when `clamp_colors` is set, as for a draw.
+#[allow(clippy::too_many_arguments)]
+pub fn shade_vertices(
+    workers: &Workers,
+    vs: &dyn ShaderStage,
+    uniforms: &[u32],
+    textures: &(dyn Textures + Sync),
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    clamp_colors: bool,
+) -> Result<(Vec<u32>, Vec<f32>, usize), DrawError> {
+    let layout = VsLayout::new(vs.interface());
+    let (vertex_of, outputs) = run_vertices(
+        workers,
+        vs,
+        uniforms,
+        textures,
+        indices,
+        fetch,
+        &layout,
+        clamp_colors,
+        None,
+    )?;
+    Ok((vertex_of, outputs, layout.outputs))
+}
+
 /// Runs the vertex kernel once per distinct index. Returns, per position
 /// in `indices`, the vertex number, and the outputs of every vertex
 /// (`layout.outputs` values each). Batches of `LANES` vertices run as

@@ -35,11 +35,14 @@ SEEDS = os.path.join(ROOT, "crates", "glsl", "tests", "seeds")
 _SCENES = []
 
 
-def scene(name, w=64, h=64):
+def scene(name, w=64, h=64, version=None):
     """Registers a scene function f(log) rendering into a w x h context;
-    `log` is a list the scene appends text lines to."""
+    `log` is a list the scene appends text lines to. `version`, e.g.
+    (3, 3, "core"): the context comes from OSMesaCreateContextAttribs with
+    that version and profile ("core" or "compat") instead of
+    OSMesaCreateContextExt."""
     def reg(f):
-        _SCENES.append((name, w, h, f))
+        _SCENES.append((name, w, h, f, version))
         return f
     return reg
 
@@ -123,10 +126,22 @@ def errors():
     return " ".join(out) or "GL_NO_ERROR"
 
 
-def _run(name, w, h, f, outdir):
-    ctx = osmesa.OSMesaCreateContextExt(osmesa.OSMESA_RGBA, 24, 8, 0, None)
+def _context(version):
+    if version is None:
+        return osmesa.OSMesaCreateContextExt(osmesa.OSMESA_RGBA, 24, 8, 0, None)
+    major, minor, profile = version
+    prof = osmesa.OSMESA_CORE_PROFILE if profile == "core" else osmesa.OSMESA_COMPAT_PROFILE
+    attribs = [osmesa.OSMESA_FORMAT, osmesa.OSMESA_RGBA, osmesa.OSMESA_DEPTH_BITS, 24,
+               osmesa.OSMESA_STENCIL_BITS, 8, osmesa.OSMESA_PROFILE, prof,
+               osmesa.OSMESA_CONTEXT_MAJOR_VERSION, major,
+               osmesa.OSMESA_CONTEXT_MINOR_VERSION, minor, 0]
+    return osmesa.OSMesaCreateContextAttribs((ctypes.c_int * len(attribs))(*attribs), None)
+
+
+def _run(name, w, h, f, outdir, version=None):
+    ctx = _context(version)
     if not ctx:
-        raise RuntimeError("OSMesaCreateContextExt failed")
+        raise RuntimeError("OSMesaCreateContext failed")
     buf = arrays.GLubyteArray.zeros((h, w, 4))
     try:
         if not osmesa.OSMesaMakeCurrent(ctx, buf, GL.GL_UNSIGNED_BYTE, w, h):
@@ -149,11 +164,11 @@ def main():
     outdir = sys.argv[1]
     only = set(sys.argv[2:])
     os.makedirs(outdir, exist_ok=True)
-    for name, w, h, f in _SCENES:
+    for name, w, h, f, version in _SCENES:
         if only and name not in only:
             continue
         try:
-            _run(name, w, h, f, outdir)
+            _run(name, w, h, f, outdir, version)
         except Exception:
             with open(os.path.join(outdir, name + ".fail"), "w") as o:
                 o.write(traceback.format_exc())

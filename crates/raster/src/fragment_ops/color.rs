@@ -6,13 +6,15 @@
 use crate::framebuffer::{float_to_unorm8, ColorBuffer};
 use crate::state::{Blend, BlendEquation, BlendFactor, PipelineState};
 
+/// Writes `src` to pixel `index` of `buf`, blending with `blend` and
+/// masking with `mask` (the draw buffer's, [`PipelineState::per_buffer`]).
 pub(super) fn write_color(
     buf: &mut ColorBuffer,
     index: usize,
     state: &PipelineState,
     src: [f32; 4],
+    (blend, mask): (Option<&Blend>, [bool; 4]),
 ) {
-    let mask = state.color_mask;
     match buf {
         ColorBuffer::Rgba8(v) => {
             let Some(p) = v.get_mut(index) else { return };
@@ -21,7 +23,7 @@ pub(super) fn write_color(
             let out: [u8; 4] = if let Some(op) = state.logic_op {
                 let sb = s.map(float_to_unorm8);
                 std::array::from_fn(|c| op.apply(sb[c], p[c]))
-            } else if let Some(blend) = &state.blend {
+            } else if let Some(blend) = blend {
                 // `unorm8_to_float`, four at a time.
                 let d = p.map(|b| b as f32 / 255.0);
                 to_unorm8(blend_unit(blend, s, d))
@@ -46,7 +48,7 @@ pub(super) fn write_color(
                 src
             };
             // Logic ops do not apply to float buffers (§4.1.10).
-            let out = match &state.blend {
+            let out = match blend {
                 Some(blend) if state.logic_op.is_none() => blend_color(blend, s, *p),
                 _ => s,
             };

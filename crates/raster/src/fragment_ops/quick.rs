@@ -55,7 +55,11 @@ impl QuickOps {
         state: &PipelineState,
         colors: &[(usize, usize)],
     ) -> Option<QuickOps> {
-        if state.alpha_test.is_some() || (state.stencil.is_some() && fb.stencil.is_some()) {
+        // (Per-buffer blending and masks: the general path.)
+        if state.alpha_test.is_some()
+            || (state.stencil.is_some() && fb.stencil.is_some())
+            || state.per_buffer.is_some()
+        {
             return None;
         }
         let depth = state.depth_test.filter(|_| fb.depth.is_some());
