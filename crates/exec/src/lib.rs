@@ -57,8 +57,9 @@
 //!   static registers instead (same results).
 //! - **Interface**: inputs are the attributes (vertex) or varyings
 //!   (fragment, including `gl_FragCoord`, `gl_FrontFacing`,
-//!   `gl_PointCoord`) the shader reads; outputs are `gl_Position`,
-//!   `gl_PointSize`, `gl_ClipVertex` and every varying (vertex) or
+//!   `gl_PointCoord`, `gl_ClipDistance`) the shader reads; outputs are
+//!   `gl_Position`, `gl_PointSize`, `gl_ClipVertex`, `gl_ClipDistance`
+//!   and every varying (vertex) or
 //!   `gl_FragColor`, `gl_FragData`, `gl_FragDepth` (fragment) — built-ins
 //!   the shader never names do not exist in the module and are absent;
 //!   [`Slot::written`] tells whether an output is statically written.

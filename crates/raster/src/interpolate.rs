@@ -132,6 +132,23 @@ impl PrimPlanes {
         Plane { c, dx, dy, kind }
     }
 
+    /// The plane of a `noperspective` varying component with values `v`
+    /// at the vertices (GLSL 1.30 §4.3.7): linear in window space.
+    #[inline(always)]
+    pub fn screen_linear(&self, basis: &Basis, v: [f32; 3]) -> Plane {
+        let b = v.map(f32::to_bits);
+        if b[1] == b[0] && b[2] == b[0] {
+            return Plane::constant(v[0]);
+        }
+        let [c, dx, dy] = to_f32(basis.plane(v.map(f64::from)));
+        Plane {
+            c,
+            dx,
+            dy,
+            kind: Kind::Linear,
+        }
+    }
+
     /// Window z (before offset) at the pixels of `offsets` (exact as f64).
     #[inline(always)]
     pub fn z_at<const N: usize>(&self, x: &[f32; N], y: &[f32; N]) -> [f64; N] {

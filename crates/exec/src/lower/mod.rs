@@ -179,7 +179,7 @@ struct Sub {
 /// Built-in inputs and outputs of GLSL 1.30 and later the pipeline does
 /// not provide or consume yet: a shader that uses one is refused rather
 /// than run with a zero or an ignored value.
-const UNSUPPORTED_BUILTINS: &[&str] = &["gl_ClipDistance", "gl_PrimitiveID"];
+const UNSUPPORTED_BUILTINS: &[&str] = &["gl_PrimitiveID"];
 
 pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
     // The front end compiles and links geometry shaders; the pipeline has
@@ -397,7 +397,10 @@ impl<'m> Lowerer<'m> {
                             && g.storage == Storage::Private
                             && matches!(
                                 g.name.as_str(),
-                                "gl_Position" | "gl_PointSize" | "gl_ClipVertex"
+                                "gl_Position"
+                                    | "gl_PointSize"
+                                    | "gl_ClipVertex"
+                                    | "gl_ClipDistance"
                             ))
                 }
                 Stage::Fragment => {
