@@ -284,15 +284,17 @@ pub enum ExecError {
 #[derive(Clone, Debug, Default)]
 pub struct Batch {
     /// One entry per input component (see [`Interface::inputs`]). The
-    /// components of a vertex shader's `int`/`uint` inputs (attributes,
-    /// `gl_VertexID`, `gl_InstanceID`) are the integers' bits
-    /// (`f32::from_bits`), so that every 32-bit value arrives exactly;
-    /// those of other stages' integer inputs (flat varyings) are the
-    /// values as floats, as the previous stage's outputs are.
+    /// components of `int`/`uint` inputs (a vertex shader's attributes,
+    /// `gl_VertexID`, `gl_InstanceID`; other stages' flat varyings) are
+    /// the integers' bits (`f32::from_bits`), so that every 32-bit value
+    /// arrives exactly.
     pub inputs: Vec<[f32; LANES]>,
     /// One entry per output component (see [`Interface::outputs`]); grown
     /// to the interface's size by `run` if shorter. Only the active lanes
-    /// that did not discard are written.
+    /// that did not discard are written. The `int`/`uint` outputs of a
+    /// vertex or geometry shader (varyings) are the integers' bits, as
+    /// the next stage's inputs take them; a fragment shader's are the
+    /// values as floats (`bool`s are 0.0 or 1.0 in every stage).
     pub outputs: Vec<[f32; LANES]>,
     /// Lanes to run.
     pub active: LaneMask,

@@ -733,6 +733,60 @@ fn integer_division_by_zero_gives_zero() {
     assert_eq!(c[0][1], -2147483648.0);
 }
 
+/// Integer varyings cross stages as their bits: a vertex shader's `flat
+/// out int`/`uint` (values no float holds: odd large ones, and bits that
+/// spell NaNs) and a fragment shader's `flat in` arrive exactly, through
+/// every executor.
+#[test]
+fn integer_varyings_are_their_bits() {
+    let vs = kernel(
+        Stage::Vertex,
+        "#version 130
+        uniform int a; uniform uint b;
+        flat out int i; flat out uint u;
+        void main() { gl_Position = vec4(0.0); i = a; u = b; }",
+    );
+    let fs = kernel(
+        Stage::Fragment,
+        "#version 130
+        uniform int a; uniform uint b;
+        flat in int i; flat in uint u;
+        void main() { gl_FragColor = vec4(i == a ? 1.0 : 0.0, u == b ? 1.0 : 0.0, 0.0, 0.0); }",
+    );
+    for value in [0x7fe8_92c2u32, 0xffe3_c7cd, 0x8000_0001, 16_777_217, 1] {
+        let words = [("a", &[value][..]), ("b", &[value.rotate_left(7)][..])];
+        let uv = uniforms(&vs, &words);
+        let mut runs: Vec<Batch> = Vec::new();
+        let mut b = Batch::for_kernel(&vs, FULL_MASK);
+        vs.run(&mut b, &uv, &NoTextures).unwrap();
+        runs.push(b.clone());
+        vs.run_reference(&mut b, &uv, &NoTextures).unwrap();
+        runs.push(b.clone());
+        if Variant::Jit.supported() {
+            vs.run_variant(Variant::Jit, &mut b, &uv, &NoTextures)
+                .unwrap();
+            runs.push(b);
+        }
+        for b in &runs {
+            assert_eq!(output(&vs, b, "i")[0][3].to_bits(), value);
+            assert_eq!(output(&vs, b, "u")[0][3].to_bits(), value.rotate_left(7));
+        }
+        let uf = uniforms(&fs, &words);
+        let mut fb = frag_batch(&fs);
+        for (name, v) in [("i", value), ("u", value.rotate_left(7))] {
+            let s = fs.interface().input(name).expect("input");
+            fb.inputs[s.offset] = [f32::from_bits(v); LANES];
+        }
+        let mut reference = fb.clone();
+        fs.run(&mut fb, &uf, &NoTextures).unwrap();
+        fs.run_reference(&mut reference, &uf, &NoTextures).unwrap();
+        for b in [&fb, &reference] {
+            let c = output(&fs, b, "gl_FragColor");
+            assert_eq!((c[0][5], c[1][5]), (1.0, 1.0), "{value:#x}");
+        }
+    }
+}
+
 #[test]
 fn results_do_not_depend_on_active_lanes() {
     let src = "uniform float u;
