@@ -253,7 +253,7 @@ pub use replay::{probe_draw, view_draw, ProbeRequest, Replay};
 pub use setup::MAX_POINT_SIZE;
 pub use state::{
     Blend, BlendEquation, BlendFactor, CompareFunc, CullFace, FrontFace, LogicOp, PipelineState,
-    PolygonMode, PolygonOffset, Rect, StencilFace, StencilOp, StencilState,
+    PolygonMode, PolygonOffset, PrimitiveIds, Rect, StencilFace, StencilOp, StencilState,
 };
 pub use texture::{
     DepthTextureMode, Image, MagFilter, MinFilter, Texture, TextureTarget, TextureUnit, Wrap,

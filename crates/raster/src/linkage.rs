@@ -113,6 +113,8 @@ pub(crate) struct FsLayout {
     pub frag_coord: Option<usize>,
     pub front_facing: Option<usize>,
     pub point_coord: Option<usize>,
+    /// gl_PrimitiveID (an int: its bits, `exec::Batch::inputs`).
+    pub primitive_id: Option<usize>,
     /// Output offset of the color for each fragment output index.
     pub color_out: [Option<usize>; MAX_DRAW_BUFFERS],
     pub frag_depth: Option<usize>,
@@ -124,9 +126,11 @@ impl FsLayout {
         let mut frag_coord = None;
         let mut front_facing = None;
         let mut point_coord = None;
+        let mut primitive_id = None;
         for slot in &fs.inputs {
             match slot.name.as_str() {
                 "gl_FragCoord" => frag_coord = Some(slot.offset),
+                "gl_PrimitiveID" => primitive_id = Some(slot.offset),
                 "gl_FrontFacing" => front_facing = Some(slot.offset),
                 "gl_PointCoord" => point_coord = Some(slot.offset),
                 name => {
@@ -225,6 +229,7 @@ impl FsLayout {
             frag_coord,
             front_facing,
             point_coord,
+            primitive_id,
             color_out,
             frag_depth: find(out, "gl_FragDepth")
                 .filter(|s| s.written)

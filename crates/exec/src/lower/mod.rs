@@ -176,27 +176,11 @@ struct Sub {
     ret: Val,
 }
 
-/// Built-in inputs and outputs of GLSL 1.30 and later the pipeline does
-/// not provide or consume yet: a shader that uses one is refused rather
-/// than run with a zero or an ignored value.
-const UNSUPPORTED_BUILTINS: &[&str] = &["gl_PrimitiveID"];
-
 pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
     // The front end compiles and links geometry shaders; the pipeline has
     // no geometry stage (primitive input, EmitVertex/EndPrimitive) yet.
     if stage.stage == Stage::Geometry {
         return unsupported("geometry shaders do not run yet".to_string());
-    }
-    if let Some(g) = stage
-        .module
-        .globals
-        .iter()
-        .find(|g| g.builtin && UNSUPPORTED_BUILTINS.contains(&g.name.as_str()))
-    {
-        return unsupported(format!(
-            "`{}' is not implemented by the pipeline yet",
-            g.name
-        ));
     }
     let owned;
     let m = match with_ftransform_inputs(&stage.module) {
