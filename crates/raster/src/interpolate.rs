@@ -23,7 +23,9 @@
 //! and a varying is [`Kind::Constant`]: `c` itself (the same value at
 //! every vertex, or flat-shaded: exact), [`Kind::Linear`]: `P` (all the
 //! primitive's vertices have the same 1/w, as under orthographic
-//! projections, where the division cancels exactly), or
+//! projections, where the division cancels exactly, or the varying is
+//! `noperspective`, GLSL 1.30 §4.3.7: its plane is of the values
+//! themselves, [`PrimPlanes::screen_linear`]), or
 //! [`Kind::Perspective`]: `P · (1 / Q)` with `Q` the 1/w plane at the
 //! pixel. These are the operations of llvmpipe and of GPUs (f32 plane
 //! equations); results differ from exact barycentrics by a few f32 ulps
