@@ -312,6 +312,27 @@ mod tests {
     }
 
     #[test]
+    fn noperspective_planes_ignore_w() {
+        // The same vertices as `equal_w_gives_linear_planes`, now with
+        // different 1/w: a smooth varying turns perspective, a
+        // noperspective one keeps the window-linear plane.
+        let basis = basis_of([0.0, 0.5, 0.0], [0.0, 0.0, 0.5]);
+        let inv_w = [1.0, 0.5, 0.25];
+        let p = PrimPlanes::new(&basis, [0.0, 1.0, 0.5], inv_w);
+        assert!(p.perspective);
+        let smooth = p.varying(&basis, [1.0, 3.0, 5.0], inv_w);
+        assert_eq!(smooth.kind, Kind::Perspective);
+        let linear = p.screen_linear(&basis, [1.0, 3.0, 5.0]);
+        assert_eq!(linear.kind, Kind::Linear);
+        assert_eq!((linear.c, linear.dx, linear.dy), (1.0, 1.0, 2.0));
+        let (x, y) = offsets((10, 20), (12, 21), &QUAD_X, &QUAD_Y);
+        let rw = p.reciprocal_w(&x, &y);
+        assert_eq!(linear.values(&x, &y, &rw), [5.0, 6.0, 7.0, 8.0]);
+        assert_ne!(smooth.values(&x, &y, &rw), [5.0, 6.0, 7.0, 8.0]);
+        assert_eq!(p.screen_linear(&basis, [0.5; 3]), Plane::constant(0.5));
+    }
+
+    #[test]
     fn strips_and_quads_give_the_same_bits() {
         let basis = basis_of([0.013, 0.0071, -0.0033], [0.41, -0.0029, 0.0117]);
         let inv_w = [0.31, 0.07, 0.9];
