@@ -324,3 +324,58 @@ fn clip_plane_equations_without_clip_distance() {
         }
     }
 }
+
+/// Many perspective triangles with smooth, noperspective and flat
+/// varyings, cut by two clip distances: the same bits whatever the
+/// thread count.
+#[test]
+fn clipped_noperspective_scene_is_identical_whatever_the_thread_count() {
+    let vs = "#version 130\n\
+        in vec4 pos; in vec4 val;\n\
+        smooth out float s; noperspective out float n; flat out float f;\n\
+        void main() {\n\
+            gl_Position = pos; s = val.x; n = val.y; f = val.z;\n\
+            gl_ClipDistance[0] = pos.x + 0.6 * pos.w;\n\
+            gl_ClipDistance[1] = 0.7 * pos.w - pos.y;\n\
+        }";
+    let fs = "#version 130\n\
+        smooth in float s; noperspective in float n; flat in float f;\n\
+        void main() { gl_FragColor = vec4(s, n, f, 1.0); }";
+    let mut seed = 7u32;
+    let mut rnd = move || {
+        seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12_345);
+        (seed >> 8) as f32 / (1u32 << 24) as f32
+    };
+    let (mut pos, mut val) = (Vec::new(), Vec::new());
+    for _ in 0..3 * 400 {
+        let w = 0.5 + 3.0 * rnd();
+        let (x, y) = (2.6 * rnd() - 1.3, 2.6 * rnd() - 1.3);
+        pos.extend([x * w, y * w, 0.0, w]);
+        val.extend([rnd(), rnd(), rnd(), 1.0]);
+    }
+    let render = |threads: usize| {
+        let mut ctx = Context::new(96, 80);
+        ctx.set_threads(threads);
+        let p = program(&mut ctx, vs, fs);
+        ctx.enable(GL_CLIP_DISTANCE0);
+        ctx.enable(GL_CLIP_DISTANCE1);
+        ctx.enable(GL_BLEND);
+        ctx.blend_func(GL_ONE, GL_ONE);
+        for (name, data) in [("pos", &pos), ("val", &val)] {
+            let loc = ctx.get_attrib_location(p, name) as u32;
+            ctx.vertex_attrib_pointer(loc, 4, GL_FLOAT, false, 0, ArrayData::from_f32(data));
+            ctx.enable_vertex_attrib_array(loc);
+        }
+        ctx.draw_arrays(GL_TRIANGLES, 0, (pos.len() / 4) as i32);
+        assert_eq!(ctx.take_draw_error(), None);
+        ctx.read_pixels_f32(0, 0, 96, 80)
+            .iter()
+            .flat_map(|p| p.map(f32::to_bits))
+            .collect::<Vec<u32>>()
+    };
+    let one = render(1);
+    assert!(one.chunks(4).filter(|p| p[3] != 0).count() > 1000);
+    for threads in [2, 4] {
+        assert!(render(threads) == one, "{threads} threads");
+    }
+}
