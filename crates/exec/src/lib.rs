@@ -60,7 +60,10 @@
 //!   `gl_PointCoord`, `gl_ClipDistance`) the shader reads; outputs are
 //!   `gl_Position`, `gl_PointSize`, `gl_ClipVertex`, `gl_ClipDistance`
 //!   and every varying (vertex) or
-//!   `gl_FragColor`, `gl_FragData`, `gl_FragDepth` (fragment) — built-ins
+//!   `gl_FragColor`, `gl_FragData`, `gl_FragDepth` (fragment); the
+//!   instance of a named input or output block is one slot per member
+//!   (per element), named `Block.member` (`Block[i].member`) after the
+//!   block, with the member's interpolation qualifier. Built-ins
 //!   the shader never names do not exist in the module and are absent;
 //!   [`Slot::written`] tells whether an output is statically written.
 //!   Uniforms: every uniform the shader reads, in declaration order (plus

@@ -837,6 +837,40 @@ fn interface_layout() {
     assert!(i.output("gl_PointSize").is_none_or(|s| !s.written));
 }
 
+/// A named output block's instance is one slot per member (per element),
+/// named after the block with the member's interpolation qualifier; an
+/// unnamed block's members are plain varyings.
+#[test]
+fn block_members_are_slots_named_after_the_block() {
+    use glsl::ir::Interpolation;
+    let k = kernel(
+        Stage::Vertex,
+        "#version 150
+        in vec4 p;
+        out Blk { flat float f; noperspective vec2 n; float s; } inst;
+        out Arr { flat int i; } arr[2];
+        out Plain { vec3 q; };
+        void main() { gl_Position = p; inst.f = 1.0; inst.n = p.xy; inst.s = 2.0; arr[0].i = 1; arr[1].i = 2; q = p.xyz; }",
+    );
+    let i = k.interface();
+    let slot = |name: &str| {
+        let s = i.output(name).unwrap_or_else(|| panic!("{name}"));
+        (s.components, s.interpolation)
+    };
+    assert_eq!(slot("Blk.f"), (1, Some(Interpolation::Flat)));
+    assert_eq!(slot("Blk.n"), (2, Some(Interpolation::NoPerspective)));
+    assert_eq!(slot("Blk.s"), (1, None));
+    assert_eq!(slot("Arr[1].i"), (1, Some(Interpolation::Flat)));
+    assert_eq!(slot("q"), (3, None));
+    assert!(i.output("inst").is_none());
+    let (f, n) = (i.output("Blk.f").unwrap(), i.output("Blk.n").unwrap());
+    assert_eq!(n.offset, f.offset + 1);
+    assert_eq!(
+        i.output("Arr[1].i").unwrap().offset,
+        i.output("Arr[0].i").unwrap().offset + 1
+    );
+}
+
 #[derive(Default)]
 struct Lines(Vec<Span>, Vec<(u32, u32)>);
 impl Trace for Lines {
