@@ -142,12 +142,14 @@ impl Number {
         }
     }
 
-    /// An input component: a vertex shader's integer inputs carry the
-    /// integers' bits (`exec::Batch::inputs`), other values are floats.
-    fn from_input(kind: Scalar, v: f32, vertex: bool) -> Number {
+    /// An interface component: integers carry their bits when
+    /// `integer_bits` (every stage's inputs, the varyings a vertex shader
+    /// outputs: `exec::Batch`), else their values as floats (fragment
+    /// outputs).
+    fn from_slot(kind: Scalar, v: f32, integer_bits: bool) -> Number {
         match kind {
-            Scalar::Int if vertex => Number::Int(v.to_bits() as i32),
-            Scalar::Uint if vertex => Number::Uint(v.to_bits()),
+            Scalar::Int if integer_bits => Number::Int(v.to_bits() as i32),
+            Scalar::Uint if integer_bits => Number::Uint(v.to_bits()),
             _ => Number::from_f32(kind, v),
         }
     }
@@ -267,7 +269,7 @@ fn named_slots(
     values: &[f32],
     structs: &[glsl::types::StructDef],
     written_only: bool,
-    vertex_inputs: bool,
+    integer_bits: bool,
 ) -> Vec<Named> {
     slots
         .iter()
@@ -280,7 +282,7 @@ fn named_slots(
                     .map(|c| {
                         let v = values.get(s.offset + c).copied().unwrap_or(0.0);
                         let kind = kinds.get(c).copied().unwrap_or(Scalar::Float);
-                        Number::from_input(kind, v, vertex_inputs)
+                        Number::from_slot(kind, v, integer_bits)
                     })
                     .collect(),
             }
@@ -529,7 +531,7 @@ fn draw_report(r: &DrawRecord) -> DrawReport {
             inputs: named_slots(&iface.inputs, &v.inputs, &iface.structs, false, true),
             steps: steps(k, &r.vertex, &v.events),
             truncated: v.truncated,
-            outputs: named_slots(&iface.outputs, &v.outputs, &iface.structs, true, false),
+            outputs: named_slots(&iface.outputs, &v.outputs, &iface.structs, true, true),
             error: v.error.clone(),
         }
     });
@@ -580,7 +582,7 @@ fn fragment_report(
                         probe.vertex_outputs.get(p).map_or(&[][..], |v| &v[..]),
                         &vs.structs,
                         true,
-                        false,
+                        true,
                     ),
                 })
                 .collect()
@@ -597,7 +599,7 @@ fn fragment_report(
         facing: if f.back_facing { "back" } else { "front" },
         vertices,
         window_z: f.window_z,
-        inputs: named_slots(&fs.inputs, &f.inputs, &fs.structs, false, false),
+        inputs: named_slots(&fs.inputs, &f.inputs, &fs.structs, false, true),
         early_rejected: f.early_rejected,
         steps,
         truncated: f.truncated,

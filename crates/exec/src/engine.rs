@@ -242,18 +242,14 @@ fn load_inputs_with(k: &Kernel, code: &Code, file: &mut Vec<Lanes>, batch: &Batc
             *x = [bits; LANES];
         }
     }
-    // Vertex-stage integer inputs are attributes: their bits (see
-    // `Batch::inputs`).
-    let bits = k.stage == glsl::Stage::Vertex;
+    // Integer inputs are their bits (see `Batch::inputs`).
     for &(ic, reg, kind) in &k.inputs {
         let src = batch.inputs.get(ic).copied().unwrap_or([0.0; LANES]);
         if let Some(x) = file.get_mut(reg as usize) {
             *x = match kind {
                 // Subnormal inputs enter as zero, as every float value.
                 Scalar::Float => lanes(|l| ftz(src[l])),
-                Scalar::Int | Scalar::Uint if bits => src.map(f32::to_bits),
-                Scalar::Int => src.map(|v| v as i32 as u32),
-                Scalar::Uint => src.map(|v| v as u32),
+                Scalar::Int | Scalar::Uint => src.map(f32::to_bits),
                 Scalar::Bool => src.map(|v| (v != 0.0) as u32),
             };
         }
@@ -281,6 +277,8 @@ crate::multiversion! {
 #[inline(always)]
 fn store_outputs_with(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
     let active = batch.output_lanes(k);
+    // Varyings' integers are their bits (see `Batch::outputs`).
+    let bits = k.stage != glsl::Stage::Fragment;
     for &(reg, oc, kind) in &k.outputs {
         let Some(&src) = file.get(reg as usize) else {
             continue;
@@ -290,6 +288,7 @@ fn store_outputs_with(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
             // branches (so the loops vectorize).
             let value: Lanes = match kind {
                 Scalar::Float => lanes(|l| float_output(src[l])),
+                Scalar::Int | Scalar::Uint if bits => src,
                 Scalar::Int => src.map(|x| (x as i32 as f32).to_bits()),
                 Scalar::Uint => src.map(|x| (x as f32).to_bits()),
                 Scalar::Bool => src.map(|x| ((x != 0) as u32 as f32).to_bits()),

@@ -186,15 +186,12 @@ pub(crate) fn run<H: Hook>(
     for &(reg, bits) in &p.init {
         r[reg as usize] = [bits; LANES];
     }
-    // Vertex-stage integer inputs are their bits (`Batch::inputs`).
-    let bits = k.stage == glsl::Stage::Vertex;
+    // Integer inputs are their bits (`Batch::inputs`).
     for &(ic, reg, kind) in &k.inputs {
         let src = batch.inputs.get(ic).copied().unwrap_or([0.0; LANES]);
         r[reg as usize] = lanes(|l| match kind {
             Scalar::Float => ftz(src[l]),
-            Scalar::Int | Scalar::Uint if bits => src[l].to_bits(),
-            Scalar::Int => src[l] as i32 as u32,
-            Scalar::Uint => src[l] as u32,
+            Scalar::Int | Scalar::Uint => src[l].to_bits(),
             Scalar::Bool => (src[l] != 0.0) as u32,
         });
     }
@@ -380,6 +377,8 @@ pub(crate) fn run<H: Hook>(
     }
 
     let active = batch.output_lanes(k);
+    // Varyings' integers are their bits (`Batch::outputs`).
+    let bits = k.stage != glsl::Stage::Fragment;
     for &(reg, oc, kind) in &k.outputs {
         let src = r[reg as usize];
         if let Some(dst) = batch.outputs.get_mut(oc) {
@@ -387,6 +386,7 @@ pub(crate) fn run<H: Hook>(
                 if active & (1 << l) != 0 {
                     *v = match kind {
                         Scalar::Float => f(crate::lane::float_output(src[l])),
+                        Scalar::Int | Scalar::Uint if bits => f(src[l]),
                         Scalar::Int => src[l] as i32 as f32,
                         Scalar::Uint => src[l] as f32,
                         Scalar::Bool => (src[l] != 0) as u32 as f32,

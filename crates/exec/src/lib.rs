@@ -57,9 +57,13 @@
 //!   static registers instead (same results).
 //! - **Interface**: inputs are the attributes (vertex) or varyings
 //!   (fragment, including `gl_FragCoord`, `gl_FrontFacing`,
-//!   `gl_PointCoord`) the shader reads; outputs are `gl_Position`,
-//!   `gl_PointSize`, `gl_ClipVertex` and every varying (vertex) or
-//!   `gl_FragColor`, `gl_FragData`, `gl_FragDepth` (fragment) — built-ins
+//!   `gl_PointCoord`, `gl_ClipDistance`) the shader reads; outputs are
+//!   `gl_Position`, `gl_PointSize`, `gl_ClipVertex`, `gl_ClipDistance`
+//!   and every varying (vertex) or
+//!   `gl_FragColor`, `gl_FragData`, `gl_FragDepth` (fragment); the
+//!   instance of a named input or output block is one slot per member
+//!   (per element), named `Block.member` (`Block[i].member`) after the
+//!   block, with the member's interpolation qualifier. Built-ins
 //!   the shader never names do not exist in the module and are absent;
 //!   [`Slot::written`] tells whether an output is statically written.
 //!   Uniforms: every uniform the shader reads, in declaration order (plus
@@ -283,15 +287,17 @@ pub enum ExecError {
 #[derive(Clone, Debug, Default)]
 pub struct Batch {
     /// One entry per input component (see [`Interface::inputs`]). The
-    /// components of a vertex shader's `int`/`uint` inputs (attributes,
-    /// `gl_VertexID`, `gl_InstanceID`) are the integers' bits
-    /// (`f32::from_bits`), so that every 32-bit value arrives exactly;
-    /// those of other stages' integer inputs (flat varyings) are the
-    /// values as floats, as the previous stage's outputs are.
+    /// components of `int`/`uint` inputs (a vertex shader's attributes,
+    /// `gl_VertexID`, `gl_InstanceID`; other stages' flat varyings) are
+    /// the integers' bits (`f32::from_bits`), so that every 32-bit value
+    /// arrives exactly.
     pub inputs: Vec<[f32; LANES]>,
     /// One entry per output component (see [`Interface::outputs`]); grown
     /// to the interface's size by `run` if shorter. Only the active lanes
-    /// that did not discard are written.
+    /// that did not discard are written. The `int`/`uint` outputs of a
+    /// vertex or geometry shader (varyings) are the integers' bits, as
+    /// the next stage's inputs take them; a fragment shader's are the
+    /// values as floats (`bool`s are 0.0 or 1.0 in every stage).
     pub outputs: Vec<[f32; LANES]>,
     /// Lanes to run.
     pub active: LaneMask,

@@ -733,6 +733,60 @@ fn integer_division_by_zero_gives_zero() {
     assert_eq!(c[0][1], -2147483648.0);
 }
 
+/// Integer varyings cross stages as their bits: a vertex shader's `flat
+/// out int`/`uint` (values no float holds: odd large ones, and bits that
+/// spell NaNs) and a fragment shader's `flat in` arrive exactly, through
+/// every executor.
+#[test]
+fn integer_varyings_are_their_bits() {
+    let vs = kernel(
+        Stage::Vertex,
+        "#version 130
+        uniform int a; uniform uint b;
+        flat out int i; flat out uint u;
+        void main() { gl_Position = vec4(0.0); i = a; u = b; }",
+    );
+    let fs = kernel(
+        Stage::Fragment,
+        "#version 130
+        uniform int a; uniform uint b;
+        flat in int i; flat in uint u;
+        void main() { gl_FragColor = vec4(i == a ? 1.0 : 0.0, u == b ? 1.0 : 0.0, 0.0, 0.0); }",
+    );
+    for value in [0x7fe8_92c2u32, 0xffe3_c7cd, 0x8000_0001, 16_777_217, 1] {
+        let words = [("a", &[value][..]), ("b", &[value.rotate_left(7)][..])];
+        let uv = uniforms(&vs, &words);
+        let mut runs: Vec<Batch> = Vec::new();
+        let mut b = Batch::for_kernel(&vs, FULL_MASK);
+        vs.run(&mut b, &uv, &NoTextures).unwrap();
+        runs.push(b.clone());
+        vs.run_reference(&mut b, &uv, &NoTextures).unwrap();
+        runs.push(b.clone());
+        if Variant::Jit.supported() {
+            vs.run_variant(Variant::Jit, &mut b, &uv, &NoTextures)
+                .unwrap();
+            runs.push(b);
+        }
+        for b in &runs {
+            assert_eq!(output(&vs, b, "i")[0][3].to_bits(), value);
+            assert_eq!(output(&vs, b, "u")[0][3].to_bits(), value.rotate_left(7));
+        }
+        let uf = uniforms(&fs, &words);
+        let mut fb = frag_batch(&fs);
+        for (name, v) in [("i", value), ("u", value.rotate_left(7))] {
+            let s = fs.interface().input(name).expect("input");
+            fb.inputs[s.offset] = [f32::from_bits(v); LANES];
+        }
+        let mut reference = fb.clone();
+        fs.run(&mut fb, &uf, &NoTextures).unwrap();
+        fs.run_reference(&mut reference, &uf, &NoTextures).unwrap();
+        for b in [&fb, &reference] {
+            let c = output(&fs, b, "gl_FragColor");
+            assert_eq!((c[0][5], c[1][5]), (1.0, 1.0), "{value:#x}");
+        }
+    }
+}
+
 #[test]
 fn results_do_not_depend_on_active_lanes() {
     let src = "uniform float u;
@@ -781,6 +835,40 @@ fn interface_layout() {
     assert!(i.output("gl_Position").unwrap().written);
     // Built-ins the shader never mentions are not in the module at all.
     assert!(i.output("gl_PointSize").is_none_or(|s| !s.written));
+}
+
+/// A named output block's instance is one slot per member (per element),
+/// named after the block with the member's interpolation qualifier; an
+/// unnamed block's members are plain varyings.
+#[test]
+fn block_members_are_slots_named_after_the_block() {
+    use glsl::ir::Interpolation;
+    let k = kernel(
+        Stage::Vertex,
+        "#version 150
+        in vec4 p;
+        out Blk { flat float f; noperspective vec2 n; float s; } inst;
+        out Arr { flat int i; } arr[2];
+        out Plain { vec3 q; };
+        void main() { gl_Position = p; inst.f = 1.0; inst.n = p.xy; inst.s = 2.0; arr[0].i = 1; arr[1].i = 2; q = p.xyz; }",
+    );
+    let i = k.interface();
+    let slot = |name: &str| {
+        let s = i.output(name).unwrap_or_else(|| panic!("{name}"));
+        (s.components, s.interpolation)
+    };
+    assert_eq!(slot("Blk.f"), (1, Some(Interpolation::Flat)));
+    assert_eq!(slot("Blk.n"), (2, Some(Interpolation::NoPerspective)));
+    assert_eq!(slot("Blk.s"), (1, None));
+    assert_eq!(slot("Arr[1].i"), (1, Some(Interpolation::Flat)));
+    assert_eq!(slot("q"), (3, None));
+    assert!(i.output("inst").is_none());
+    let (f, n) = (i.output("Blk.f").unwrap(), i.output("Blk.n").unwrap());
+    assert_eq!(n.offset, f.offset + 1);
+    assert_eq!(
+        i.output("Arr[1].i").unwrap().offset,
+        i.output("Arr[0].i").unwrap().offset + 1
+    );
 }
 
 #[derive(Default)]

@@ -22,6 +22,7 @@ use crate::fetch::{Fetcher, InstanceBatch};
 use crate::pipeline_state::{raster_mode, rect};
 use crate::vertex::{ArrayData, ImmVertex};
 use crate::Context;
+use raster::PrimitiveIds;
 
 impl Context {
     /// Takes the message of the last draw that stopped early.
@@ -245,23 +246,44 @@ impl Context {
                 .min((1 << 22) / per_instance)
                 .min(instances as u64) as u32
         });
+        let whole = PrimitiveIds::default();
         let Some((lo, hi)) = range.filter(|_| batch >= 2) else {
             for instance in 0..instances {
                 let one = InstanceBatch::one(instance);
                 match restart {
                     Some(r) => {
+                        // A restart leaves the primitive ID counter alone.
+                        let mut first = 0u32;
                         for (m, l) in crate::restart::split(mode, list, r, self.provoking_first()) {
-                            self.run_draw(m, &with_base(l, basevertex), None, one);
+                            let ids = PrimitiveIds { first, ..whole };
+                            first = first.wrapping_add(primitives(m, l.len()));
+                            self.run_draw(m, &with_base(l, basevertex), None, one, ids);
                         }
                     }
-                    None if basevertex != 0 => {
-                        self.run_draw(mode, &with_base(list.to_vec(), basevertex), None, one)
-                    }
-                    None => self.run_draw(mode, list, None, one),
+                    None if basevertex != 0 => self.run_draw(
+                        mode,
+                        &with_base(list.to_vec(), basevertex),
+                        None,
+                        one,
+                        whole,
+                    ),
+                    None => self.run_draw(mode, list, None, one, whole),
                 }
             }
             return;
         };
+        // The draws one instance makes (as `split` makes them) and their
+        // primitives: a batch's draws are these, instance after instance
+        // (one draw when `split` joins the pieces: the primitive IDs
+        // restart every instance's worth).
+        let pieces: Vec<u32> = match restart {
+            Some(r) => crate::restart::split(mode, list, r, self.provoking_first())
+                .iter()
+                .map(|(m, l)| primitives(*m, l.len()))
+                .collect(),
+            None => vec![primitives(mode, list.len())],
+        };
+        let per_instance = pieces.iter().fold(0u32, |a, &p| a.wrapping_add(p));
         const SEPARATOR: u32 = u32::MAX;
         let stride = hi - lo + 1;
         let mut first = 0u32;
@@ -281,9 +303,22 @@ impl Context {
                 }));
             }
             let b = InstanceBatch { first, lo, stride };
-            for (m, l) in crate::restart::split(mode, &combined, SEPARATOR, self.provoking_first())
-            {
-                self.run_draw(m, &l, None, b);
+            let draws = crate::restart::split(mode, &combined, SEPARATOR, self.provoking_first());
+            let joined = draws.len() == 1 && n > 1;
+            for (j, (m, l)) in draws.into_iter().enumerate() {
+                let ids = if joined {
+                    PrimitiveIds {
+                        first: 0,
+                        period: per_instance.max(1),
+                    }
+                } else {
+                    let k = j % pieces.len().max(1);
+                    PrimitiveIds {
+                        first: pieces[..k].iter().fold(0u32, |a, &p| a.wrapping_add(p)),
+                        ..whole
+                    }
+                };
+                self.run_draw(m, &l, None, b, ids);
             }
             first += n;
         }
@@ -341,16 +376,19 @@ impl Context {
             return;
         }
         let indices: Vec<u32> = (0..verts.len() as u32).collect();
-        self.run_draw(mode, &indices, Some(verts), InstanceBatch::one(0));
+        let ids = PrimitiveIds::default();
+        self.run_draw(mode, &indices, Some(verts), InstanceBatch::one(0), ids);
     }
 
-    /// Draws `indices`, vertices of the instances `batch`.
+    /// Draws `indices`, vertices of the instances `batch`, its primitives
+    /// numbered `ids` for gl_PrimitiveID.
     fn run_draw(
         &mut self,
         mode: u32,
         indices: &[u32],
         immediate: Option<&[ImmVertex]>,
         batch: InstanceBatch,
+        ids: PrimitiveIds,
     ) {
         // Conditional rendering discards the whole command (GL 3.3 §2.15).
         if indices.is_empty() || self.render_discarded() {
@@ -406,7 +444,8 @@ impl Context {
         let Some(mut target) = self.draw_target() else {
             return;
         };
-        let state = self.pipeline_state(target.draw_buffers);
+        let mut state = self.pipeline_state(target.draw_buffers);
+        state.primitive_ids = ids;
         let fetch = Fetcher::new(self, &vs, immediate, batch);
         let replay = raster::Replay {
             state: &state,
@@ -524,6 +563,11 @@ impl Context {
 
 /// `list` with `basevertex` added to every index (wrapping: an index
 /// below 0 reads past the arrays, which gives the defaults).
+/// The primitives `vertices` vertices of GL mode `mode` make.
+fn primitives(mode: u32, vertices: usize) -> u32 {
+    raster_mode(mode).primitives(vertices) as u32
+}
+
 fn with_base(mut list: Vec<u32>, basevertex: i32) -> Vec<u32> {
     if basevertex != 0 {
         for i in &mut list {

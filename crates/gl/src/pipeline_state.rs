@@ -179,6 +179,8 @@ impl Context {
                 point: on(GL_POLYGON_OFFSET_POINT),
             },
             draw_buffers,
+            // Numbered per draw by the draw call.
+            primitive_ids: raster::PrimitiveIds::default(),
         }
     }
 

@@ -150,10 +150,20 @@ impl Context {
             return None;
         }
         let clip_vertex = v4(out("gl_ClipVertex", 4).or(out("gl_Position", 4)), clip);
+        // GL 3.3 §2.20: a shader writing gl_ClipDistance clips against its
+        // elements instead of the plane equations (elements it lacks do
+        // not clip).
+        let distances = iface
+            .output("gl_ClipDistance")
+            .filter(|s| s.written)
+            .and_then(|s| out("gl_ClipDistance", s.components));
         for (i, p) in self.clip_planes.iter().enumerate() {
             if self.st.is_on(GL_CLIP_PLANE0 + i as u32) {
-                let d: f64 = (0..4).map(|k| p[k] as f64 * clip_vertex[k] as f64).sum();
-                if d < 0.0 {
+                let d: f64 = match &distances {
+                    Some(d) => d.get(i).map_or(0.0, |&d| d as f64),
+                    None => (0..4).map(|k| p[k] as f64 * clip_vertex[k] as f64).sum(),
+                };
+                if d.is_nan() || d < 0.0 {
                     return None;
                 }
             }

@@ -389,13 +389,12 @@ impl Context {
                         .unwrap_or(&[]);
                     for v in vars {
                         for c in 0..v.components {
-                            // The stage's outputs hold integers as
-                            // their values; the buffer gets their bits.
+                            // The vertex stage's integer outputs are
+                            // already their bits (exec's varying
+                            // convention), as the buffer stores them.
                             let x = data.get(v.offset + c).copied().unwrap_or(0.0);
                             let bits = match v.scalar {
-                                Scalar::Float => x.to_bits(),
-                                Scalar::Int => x as i32 as u32,
-                                Scalar::Uint => x as u32,
+                                Scalar::Float | Scalar::Int | Scalar::Uint => x.to_bits(),
                                 Scalar::Bool => (x != 0.0) as u32,
                             };
                             s.2.extend_from_slice(&bits.to_le_bytes());

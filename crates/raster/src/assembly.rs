@@ -21,6 +21,14 @@ pub enum Mode {
     Polygon,
 }
 
+impl Mode {
+    /// How many primitives `vertices` vertices of this mode make
+    /// (incomplete trailing primitives dropped).
+    pub fn primitives(self, vertices: usize) -> usize {
+        primitive_count(self, vertices)
+    }
+}
+
 /// One assembled primitive; vertex numbers are positions in `indices`.
 #[derive(Debug, PartialEq)]
 pub(crate) enum Assembled {

@@ -1,7 +1,12 @@
-//! Clipping in clip space (GL 2.1 §2.12): against the view volume
-//! `-w <= x, y, z <= w` and the enabled user clip planes, evaluated on the
-//! eye-space clip vertex. Every vertex carries its whole vertex-shader
-//! output vector, interpolated linearly in clip space.
+//! Clipping in clip space (GL 2.1 §2.12, GL 3.3 §2.20): against the view
+//! volume `-w <= x, y, z <= w` and the enabled user clip planes. A user
+//! plane's distance at a vertex is either its plane equation dotted with
+//! the eye-space clip vertex (gl_ClipVertex, or gl_Position without it)
+//! or, when the vertex shader writes `gl_ClipDistance`, that array's
+//! element for the plane ([`UserPlane`]). Every vertex carries its whole
+//! vertex-shader output vector, interpolated linearly in clip space,
+//! except the components named `noperspective`, interpolated at the
+//! parameter that is linear in window space (GL 3.3 §2.20).
 //!
 //! New vertices on an edge are always computed from the inside vertex
 //! towards the outside one, so an edge shared by two primitives is cut at
@@ -27,9 +32,22 @@ pub(crate) struct ClipVertex {
     pub data: Vec<f32>,
 }
 
+/// Where an enabled user clip plane's distance comes from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum UserPlane {
+    /// The plane equation dotted with the eye-space clip vertex.
+    Equation([f32; 4]),
+    /// This component of the vertex data (an element of
+    /// `gl_ClipDistance`).
+    Distance(usize),
+}
+
 /// The clip planes of one draw.
 pub(crate) struct Planes {
-    user: Vec<[f32; 4]>,
+    user: Vec<UserPlane>,
+    /// The vertex-data components interpolated linearly in window space
+    /// (`noperspective` varyings), ascending.
+    noperspective: Vec<usize>,
     /// GL_DEPTH_CLAMP: no near and far planes (planes 4 and 5).
     depth_clamp: bool,
 }
@@ -54,9 +72,32 @@ fn view_distance<T: Copy + Add<Output = T> + Sub<Output = T>>(p: usize, pos: [T;
 }
 
 impl Planes {
-    pub fn new(user: &[Option<[f32; 4]>; 8]) -> Planes {
+    /// The planes of a draw with user clip planes `user` (their
+    /// equations when enabled), the vertex shader writing
+    /// `clip_distance` (its first component and length) when it writes
+    /// `gl_ClipDistance`: then enabled plane `i` clips against element
+    /// `i`, and is ignored when the array is shorter (GL 3.3 §2.20
+    /// leaves that undefined). Carried components in `noperspective`
+    /// are interpolated linearly in window space.
+    pub fn new(
+        user: &[Option<[f32; 4]>; 8],
+        clip_distance: Option<(usize, usize)>,
+        noperspective: Vec<usize>,
+    ) -> Planes {
+        let user = user
+            .iter()
+            .enumerate()
+            .filter_map(|(i, eq)| {
+                let eq = (*eq)?;
+                match clip_distance {
+                    Some((at, len)) => (i < len).then_some(UserPlane::Distance(at + i)),
+                    None => Some(UserPlane::Equation(eq)),
+                }
+            })
+            .collect();
         Planes {
-            user: user.iter().flatten().copied().collect(),
+            user,
+            noperspective,
             depth_clamp: false,
         }
     }
@@ -76,7 +117,7 @@ impl Planes {
 
     /// Signed distance of `v` to plane `p` (inside when >= 0; NaN is outside).
     fn distance(&self, p: usize, v: &ClipVertex) -> f32 {
-        self.distance_of(p, &v.pos, &v.eye)
+        self.distance_of(p, &v.pos, &v.eye, &v.data)
     }
 
     /// [`Planes::distance`] in `f64`, for placing a cut: the sum of a
@@ -92,28 +133,32 @@ impl Planes {
         df / (df - dt)
     }
 
-    /// [`Planes::distance`] of a vertex at `pos` (eye-space `eye`).
-    fn distance_of(&self, p: usize, pos: &[f32; 4], eye: &[f32; 4]) -> f32 {
+    /// [`Planes::distance`] of a vertex at `pos` (eye-space `eye`, data
+    /// `data`).
+    fn distance_of(&self, p: usize, pos: &[f32; 4], eye: &[f32; 4], data: &[f32]) -> f32 {
         if self.depth_clamp && (p == 4 || p == 5) {
             return 1.0;
         }
         view_distance(p, *pos).unwrap_or_else(|| match self.user.get(p - VIEW_PLANES) {
-            Some(pl) => pl[0] * eye[0] + pl[1] * eye[1] + pl[2] * eye[2] + pl[3] * eye[3],
+            Some(UserPlane::Equation(pl)) => {
+                pl[0] * eye[0] + pl[1] * eye[1] + pl[2] * eye[2] + pl[3] * eye[3]
+            }
+            Some(&UserPlane::Distance(at)) => data.get(at).copied().unwrap_or(0.0),
             None => 0.0,
         })
     }
 
     /// Bit p set when `v` is outside plane p.
     fn outcode(&self, v: &ClipVertex) -> u32 {
-        self.outcode_of(&v.pos, &v.eye)
+        self.outcode_of(&v.pos, &v.eye, &v.data)
     }
 
-    /// [`Planes::outcode`] of a vertex at `pos` (eye-space `eye`): 0 when
-    /// inside every plane.
-    pub fn outcode_of(&self, pos: &[f32; 4], eye: &[f32; 4]) -> u32 {
+    /// [`Planes::outcode`] of a vertex at `pos` (eye-space `eye`, data
+    /// `data`): 0 when inside every plane.
+    pub fn outcode_of(&self, pos: &[f32; 4], eye: &[f32; 4], data: &[f32]) -> u32 {
         let mut code = 0;
         for p in 0..self.count() {
-            if !inside(self.distance_of(p, pos, eye)) {
+            if !inside(self.distance_of(p, pos, eye, data)) {
                 code |= 1 << p;
             }
         }
@@ -161,7 +206,7 @@ impl Planes {
             return None;
         }
         let end = |t: (f64, Option<usize>), at: &ClipVertex| match t.1 {
-            Some(p) => on_plane(p, lerp(a, b, t.0)),
+            Some(p) => on_plane(p, self.lerp(a, b, t.0)),
             None => at.clone(),
         };
         Some((end(t0, a), end(t1, b)))
@@ -205,9 +250,9 @@ impl Planes {
                 if ci != ni {
                     // From the inside vertex towards the outside one.
                     let v = if ci {
-                        lerp(cur, next, self.cut(p, cur, next))
+                        self.lerp(cur, next, self.cut(p, cur, next))
                     } else {
-                        lerp(next, cur, self.cut(p, next, cur))
+                        self.lerp(next, cur, self.cut(p, next, cur))
                     };
                     out.push(on_plane(p, v));
                 }
@@ -234,19 +279,41 @@ fn lerp4(a: &[f32; 4], b: &[f32; 4], t: f64) -> [f32; 4] {
     })
 }
 
-/// `a + t (b - a)` for every carried value: positions in `f64`, the
-/// vertex shader's outputs in `f32`.
-fn lerp(a: &ClipVertex, b: &ClipVertex, t: f64) -> ClipVertex {
-    let tf = t as f32;
-    ClipVertex {
-        pos: lerp4(&a.pos, &b.pos, t),
-        eye: lerp4(&a.eye, &b.eye, t),
-        data: a
+impl Planes {
+    /// `a + t (b - a)` for every carried value: positions in `f64`, the
+    /// vertex shader's outputs in `f32`; the `noperspective` ones at the
+    /// parameter `s = t w_b / (w_a + t (w_b - w_a))` where the new
+    /// vertex lies between the two in window space (`t` itself when that
+    /// is not a number in [0, 1], as for a vertex at w = 0).
+    fn lerp(&self, a: &ClipVertex, b: &ClipVertex, t: f64) -> ClipVertex {
+        let tf = t as f32;
+        let mut data: Vec<f32> = a
             .data
             .iter()
             .zip(&b.data)
             .map(|(&x, &y)| x + tf * (y - x))
-            .collect(),
+            .collect();
+        if !self.noperspective.is_empty() {
+            let (wa, wb) = (f64::from(a.pos[3]), f64::from(b.pos[3]));
+            let s = t * wb / (wa + t * (wb - wa));
+            let sf = if (0.0..=1.0).contains(&s) {
+                s as f32
+            } else {
+                tf
+            };
+            for &c in &self.noperspective {
+                if let (Some(d), Some(&x), Some(&y)) =
+                    (data.get_mut(c), a.data.get(c), b.data.get(c))
+                {
+                    *d = x + sf * (y - x);
+                }
+            }
+        }
+        ClipVertex {
+            pos: lerp4(&a.pos, &b.pos, t),
+            eye: lerp4(&a.eye, &b.eye, t),
+            data,
+        }
     }
 }
 
@@ -280,7 +347,7 @@ mod tests {
 
     #[test]
     fn triangle_crossing_the_near_plane() {
-        let planes = Planes::new(&[None; 8]);
+        let planes = Planes::new(&[None; 8], None, Vec::new());
         // One vertex behind the near plane (z < -w).
         let tri = vec![
             v([0.0, 0.0, -3.0, 1.0], 0.0),
@@ -303,7 +370,7 @@ mod tests {
 
     #[test]
     fn fully_outside_and_inside() {
-        let planes = Planes::new(&[None; 8]);
+        let planes = Planes::new(&[None; 8], None, Vec::new());
         let outside = vec![
             v([2.0, 0.0, 0.0, 1.0], 0.0),
             v([3.0, 0.0, 0.0, 1.0], 0.0),
@@ -322,7 +389,7 @@ mod tests {
     fn user_plane_uses_eye_coordinates() {
         let mut user = [None; 8];
         user[3] = Some([1.0, 0.0, 0.0, 0.0]); // keep x_eye >= 0
-        let planes = Planes::new(&user);
+        let planes = Planes::new(&user, None, Vec::new());
         let mut a = v([0.0, 0.0, 0.0, 1.0], 0.0);
         a.eye = [-1.0, 0.0, 0.0, 1.0];
         let mut b = v([0.0, 0.0, 0.0, 1.0], 1.0);
@@ -336,8 +403,50 @@ mod tests {
     }
 
     #[test]
+    fn clip_distances_replace_the_plane_equations() {
+        // Planes 1 and 4 enabled; the vertex data holds gl_ClipDistance[0..2]
+        // at components 1 and 2, so plane 1 reads component 2 and plane 4
+        // (beyond the array) does not clip.
+        let mut user = [None; 8];
+        user[1] = Some([0.0, 0.0, 0.0, -1.0]);
+        user[4] = Some([0.0, 0.0, 0.0, -1.0]);
+        let planes = Planes::new(&user, Some((1, 2)), Vec::new());
+        let mut a = v([0.0, 0.0, 0.0, 1.0], 0.0);
+        a.data.extend([5.0, -1.0]);
+        let mut b = v([0.5, 0.0, 0.0, 1.0], 1.0);
+        b.data.extend([5.0, 3.0]);
+        assert!(!planes.point_inside(&a));
+        assert!(planes.point_inside(&b));
+        let (na, nb) = planes.clip_line(&a, &b).unwrap();
+        // Cut where the distance, interpolated linearly, is 0.
+        assert_eq!(na.pos[0], 0.125);
+        assert_eq!(na.data, vec![0.25, 5.0, 0.0]);
+        assert_eq!(nb, b);
+        // The plane equations (every vertex outside) are not used.
+        let equations = Planes::new(&user, None, Vec::new());
+        assert!(!equations.point_inside(&b));
+    }
+
+    #[test]
+    fn noperspective_values_are_cut_linearly_in_window_space() {
+        // x = -w/2 cuts the segment from (-w, w = 1) to (w, w = 3) at
+        // t = 1/10 in clip space: window x -1 to 1, cut at window x -0.5,
+        // a quarter of the way in window space.
+        let mut user = [None; 8];
+        user[0] = Some([1.0, 0.0, 0.0, 0.5]);
+        let planes = Planes::new(&user, None, vec![1]);
+        let mut a = v([-1.0, 0.0, 0.0, 1.0], 0.0);
+        a.data.push(0.0);
+        let mut b = v([3.0, 0.0, 0.0, 3.0], 1.0);
+        b.data.push(1.0);
+        let (na, _) = planes.clip_line(&a, &b).unwrap();
+        assert_eq!(na.pos[0] / na.pos[3], -0.5);
+        assert_eq!(na.data, vec![0.1, 0.25]);
+    }
+
+    #[test]
     fn shared_edge_cut_identically() {
-        let planes = Planes::new(&[None; 8]);
+        let planes = Planes::new(&[None; 8], None, Vec::new());
         let p = [
             v([-2.0, -0.5, 0.0, 1.0], 0.0),
             v([0.5, 0.7, 0.1, 1.0], 1.0),
@@ -362,7 +471,7 @@ mod tests {
 
     #[test]
     fn nan_is_outside() {
-        let planes = Planes::new(&[None; 8]);
+        let planes = Planes::new(&[None; 8], None, Vec::new());
         assert!(!planes.point_inside(&v([f32::NAN, 0.0, 0.0, 1.0], 0.0)));
     }
 
@@ -371,7 +480,7 @@ mod tests {
         // A quad reaching 10⁶ in every direction: every new vertex lies on
         // the view volume's boundary exactly, so the clipped quad is the
         // whole view square.
-        let planes = Planes::new(&[None; 8]);
+        let planes = Planes::new(&[None; 8], None, Vec::new());
         let big = 1.0e6;
         let quad = vec![
             v([-big, -big, 0.0, 1.0], 0.0),
@@ -391,7 +500,7 @@ mod tests {
 
     #[test]
     fn huge_line_cut_on_the_view_planes() {
-        let planes = Planes::new(&[None; 8]);
+        let planes = Planes::new(&[None; 8], None, Vec::new());
         let a = v([-3.0e6, 0.25, 0.0, 1.0], 0.0);
         let b = v([5.0e6, 0.25, 0.0, 1.0], 1.0);
         let (na, nb) = planes.clip_line(&a, &b).unwrap();

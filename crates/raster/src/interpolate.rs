@@ -23,7 +23,9 @@
 //! and a varying is [`Kind::Constant`]: `c` itself (the same value at
 //! every vertex, or flat-shaded: exact), [`Kind::Linear`]: `P` (all the
 //! primitive's vertices have the same 1/w, as under orthographic
-//! projections, where the division cancels exactly), or
+//! projections, where the division cancels exactly, or the varying is
+//! `noperspective`, GLSL 1.30 §4.3.7: its plane is of the values
+//! themselves, [`PrimPlanes::screen_linear`]), or
 //! [`Kind::Perspective`]: `P · (1 / Q)` with `Q` the 1/w plane at the
 //! pixel. These are the operations of llvmpipe and of GPUs (f32 plane
 //! equations); results differ from exact barycentrics by a few f32 ulps
@@ -130,6 +132,23 @@ impl PrimPlanes {
             false => Kind::Linear,
         };
         Plane { c, dx, dy, kind }
+    }
+
+    /// The plane of a `noperspective` varying component with values `v`
+    /// at the vertices (GLSL 1.30 §4.3.7): linear in window space.
+    #[inline(always)]
+    pub fn screen_linear(&self, basis: &Basis, v: [f32; 3]) -> Plane {
+        let b = v.map(f32::to_bits);
+        if b[1] == b[0] && b[2] == b[0] {
+            return Plane::constant(v[0]);
+        }
+        let [c, dx, dy] = to_f32(basis.plane(v.map(f64::from)));
+        Plane {
+            c,
+            dx,
+            dy,
+            kind: Kind::Linear,
+        }
     }
 
     /// Window z (before offset) at the pixels of `offsets` (exact as f64).
@@ -290,6 +309,27 @@ mod tests {
         let rw = p.reciprocal_w(&x, &y);
         assert_eq!(v.values(&x, &y, &rw), [5.0, 6.0, 7.0, 8.0]);
         assert_eq!(p.z_at(&x, &y), [1.25, 1.75, 1.5, 2.0]);
+    }
+
+    #[test]
+    fn noperspective_planes_ignore_w() {
+        // The same vertices as `equal_w_gives_linear_planes`, now with
+        // different 1/w: a smooth varying turns perspective, a
+        // noperspective one keeps the window-linear plane.
+        let basis = basis_of([0.0, 0.5, 0.0], [0.0, 0.0, 0.5]);
+        let inv_w = [1.0, 0.5, 0.25];
+        let p = PrimPlanes::new(&basis, [0.0, 1.0, 0.5], inv_w);
+        assert!(p.perspective);
+        let smooth = p.varying(&basis, [1.0, 3.0, 5.0], inv_w);
+        assert_eq!(smooth.kind, Kind::Perspective);
+        let linear = p.screen_linear(&basis, [1.0, 3.0, 5.0]);
+        assert_eq!(linear.kind, Kind::Linear);
+        assert_eq!((linear.c, linear.dx, linear.dy), (1.0, 1.0, 2.0));
+        let (x, y) = offsets((10, 20), (12, 21), &QUAD_X, &QUAD_Y);
+        let rw = p.reciprocal_w(&x, &y);
+        assert_eq!(linear.values(&x, &y, &rw), [5.0, 6.0, 7.0, 8.0]);
+        assert_ne!(smooth.values(&x, &y, &rw), [5.0, 6.0, 7.0, 8.0]);
+        assert_eq!(p.screen_linear(&basis, [0.5; 3]), Plane::constant(0.5));
     }
 
     #[test]

@@ -173,8 +173,11 @@
 //!   ([`probe_draw`], [`view_draw`]).
 //!
 //! # Limitations and choices where GL leaves things undefined
-//! - When the vertex shader does not write gl_ClipVertex, user clip planes
-//!   are evaluated against gl_Position (GL 2.1 §2.12 leaves it undefined).
+//! - When the vertex shader writes neither gl_ClipDistance nor
+//!   gl_ClipVertex, user clip planes are evaluated against gl_Position
+//!   (GL 2.1 §2.12 leaves it undefined); an enabled plane past the end of
+//!   the gl_ClipDistance it writes does not clip (GL 3.3 §2.20 leaves it
+//!   undefined).
 //! - Polygons in line or point mode draw the edges / vertices of the
 //!   unclipped polygon (clipped as lines / points); no edges appear along
 //!   clip boundaries.
@@ -253,7 +256,7 @@ pub use replay::{probe_draw, view_draw, ProbeRequest, Replay};
 pub use setup::MAX_POINT_SIZE;
 pub use state::{
     Blend, BlendEquation, BlendFactor, CompareFunc, CullFace, FrontFace, LogicOp, PipelineState,
-    PolygonMode, PolygonOffset, Rect, StencilFace, StencilOp, StencilState,
+    PolygonMode, PolygonOffset, PrimitiveIds, Rect, StencilFace, StencilOp, StencilState,
 };
 pub use texture::{
     DepthTextureMode, Image, MagFilter, MinFilter, Texture, TextureTarget, TextureUnit, Wrap,

@@ -19,6 +19,10 @@ pub(crate) struct VsLayout {
     /// gl_ClipVertex when the shader writes it. GL 2.1 §2.12 leaves user
     /// clipping undefined otherwise; we then clip against gl_Position.
     pub clip_vertex: Option<usize>,
+    /// gl_ClipDistance (first component, length) when the shader writes
+    /// it: the enabled user clip planes then clip against its elements
+    /// (GL 3.3 §2.20).
+    pub clip_distance: Option<(usize, usize)>,
     /// gl_{Front,Back}{,Secondary}Color ranges (clamped per §2.14.6).
     pub colors: Vec<(usize, usize)>,
 }
@@ -44,6 +48,9 @@ impl VsLayout {
             clip_vertex: find(out, "gl_ClipVertex")
                 .filter(|s| s.written && s.components >= 4)
                 .map(|s| s.offset),
+            clip_distance: find(out, "gl_ClipDistance")
+                .filter(|s| s.written && s.components >= 1)
+                .map(|s| (s.offset, s.components)),
             colors: [
                 "gl_FrontColor",
                 "gl_BackColor",
@@ -86,11 +93,15 @@ pub(crate) struct VaryingLink {
     pub front: Option<usize>,
     /// For back faces with two-sided color on (gl_BackColor ...).
     pub back: Option<usize>,
-    /// gl_Color / gl_SecondaryColor: flat-shaded under ShadeModel(FLAT).
+    /// gl_Color / gl_SecondaryColor: flat-shaded under ShadeModel(FLAT)
+    /// unless declared with an interpolation qualifier.
     pub color: bool,
-    /// Declared `flat` (GLSL 1.30 §4.3.7): always the provoking vertex's
-    /// value. (`noperspective` is interpolated like `smooth` for now.)
-    pub flat: bool,
+    /// The declared interpolation qualifier (GLSL 1.30 §4.3.7), the
+    /// fragment input's or else the vertex output's: `flat` is always
+    /// the provoking vertex's value, `noperspective` linear in window
+    /// space, `smooth` perspective-correct; any of them overrides the
+    /// shade model. `None`: smooth, or the shade model's for colors.
+    pub interpolation: Option<Interpolation>,
     /// gl_TexCoord[set].component, for point-sprite coordinate replacement.
     pub texcoord: Option<(u32, usize)>,
 }
@@ -102,6 +113,8 @@ pub(crate) struct FsLayout {
     pub frag_coord: Option<usize>,
     pub front_facing: Option<usize>,
     pub point_coord: Option<usize>,
+    /// gl_PrimitiveID (an int: its bits, `exec::Batch::inputs`).
+    pub primitive_id: Option<usize>,
     /// Output offset of the color for each fragment output index.
     pub color_out: [Option<usize>; MAX_DRAW_BUFFERS],
     pub frag_depth: Option<usize>,
@@ -113,9 +126,11 @@ impl FsLayout {
         let mut frag_coord = None;
         let mut front_facing = None;
         let mut point_coord = None;
+        let mut primitive_id = None;
         for slot in &fs.inputs {
             match slot.name.as_str() {
                 "gl_FragCoord" => frag_coord = Some(slot.offset),
+                "gl_PrimitiveID" => primitive_id = Some(slot.offset),
                 "gl_FrontFacing" => front_facing = Some(slot.offset),
                 "gl_PointCoord" => point_coord = Some(slot.offset),
                 name => {
@@ -128,13 +143,14 @@ impl FsLayout {
                         ),
                         other => (other, None, false),
                     };
-                    let flat = slot.interpolation == Some(Interpolation::Flat)
-                        || find(&vs.outputs, front_name)
-                            .is_some_and(|s| s.interpolation == Some(Interpolation::Flat));
                     let front = find(&vs.outputs, front_name);
                     let back = back_name
                         .filter(|_| two_sided)
                         .and_then(|n| find(&vs.outputs, n));
+                    let interpolation = slot
+                        .interpolation
+                        .or_else(|| front.and_then(|s| s.interpolation))
+                        .or_else(|| back.and_then(|s| s.interpolation));
                     for c in 0..slot.components {
                         let pick =
                             |s: Option<&Slot>| s.filter(|s| c < s.components).map(|s| s.offset + c);
@@ -144,7 +160,7 @@ impl FsLayout {
                             front,
                             back: pick(back).or(front),
                             color,
-                            flat,
+                            interpolation,
                             texcoord: (name == "gl_TexCoord").then_some(((c / 4) as u32, c % 4)),
                         });
                     }
@@ -213,11 +229,30 @@ impl FsLayout {
             frag_coord,
             front_facing,
             point_coord,
+            primitive_id,
             color_out,
             frag_depth: find(out, "gl_FragDepth")
                 .filter(|s| s.written)
                 .map(|s| s.offset),
         }
+    }
+}
+
+impl FsLayout {
+    /// The vertex-output components feeding `noperspective` fragment
+    /// inputs (front and back), ascending: what clipping interpolates
+    /// linearly in window space.
+    pub fn noperspective_outputs(&self) -> Vec<usize> {
+        let mut out: Vec<usize> = self
+            .links
+            .iter()
+            .filter(|l| l.interpolation == Some(Interpolation::NoPerspective))
+            .flat_map(|l| [l.front, l.back])
+            .flatten()
+            .collect();
+        out.sort_unstable();
+        out.dedup();
+        out
     }
 }
 

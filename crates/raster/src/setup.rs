@@ -14,6 +14,8 @@
 
 use std::ops::Range;
 
+use glsl::ir::Interpolation;
+
 use crate::assembly::{first_vertex_provoking, primitive, small_polygon, Assembled, Mode};
 use crate::clip::{ClipVertex, Planes};
 use crate::framebuffer::{Framebuffer, DEPTH_MAX};
@@ -117,7 +119,12 @@ impl<'a> Setup<'a> {
             vs,
             fs,
             outputs,
-            planes: Planes::new(&state.clip_planes).with_depth_clamp(state.depth_clamp),
+            planes: Planes::new(
+                &state.clip_planes,
+                vs.clip_distance,
+                fs.noperspective_outputs(),
+            )
+            .with_depth_clamp(state.depth_clamp),
             clip_rect,
             vp: [
                 vw / 2.0,
@@ -252,13 +259,22 @@ impl Setup<'_> {
         // A line's or a point's missing vertices repeat its last.
         let data = |j: usize| vertices.get(j).or(vertices.last()).copied().unwrap_or(&[]);
         let (d0, d1, d2) = (data(0), data(1), data(2));
-        let flat = self.state.flat_shading;
+        let flat_colors = self.state.flat_shading;
         for link in &self.fs.links {
             let src = if back { link.back } else { link.front };
             let get = |d: &[f32]| src.and_then(|o| d.get(o)).copied().unwrap_or(0.0);
-            out.planes.push(match (flat && link.color) || link.flat {
-                true => Plane::constant(get(provoking)),
-                false => prim.varying(&basis, [get(d0), get(d1), get(d2)], inv_w),
+            // GLSL 1.30 §4.3.7: a qualifier overrides the shade model.
+            let interpolation = match link.interpolation {
+                None if flat_colors && link.color => Interpolation::Flat,
+                None => Interpolation::Smooth,
+                Some(i) => i,
+            };
+            out.planes.push(match interpolation {
+                Interpolation::Flat => Plane::constant(get(provoking)),
+                Interpolation::Smooth => prim.varying(&basis, [get(d0), get(d1), get(d2)], inv_w),
+                Interpolation::NoPerspective => {
+                    prim.screen_linear(&basis, [get(d0), get(d1), get(d2)])
+                }
             });
         }
         prim
@@ -366,7 +382,7 @@ impl Setup<'_> {
     pub fn compute_corner(&self, v: usize) -> Corner {
         let d = self.data(v);
         let pos = self.vs.position(d);
-        let outcode = self.planes.outcode_of(&pos, &self.vs.eye(d));
+        let outcode = self.planes.outcode_of(&pos, &self.vs.eye(d), d);
         Corner {
             outcode,
             // Only read for vertices inside every plane.

@@ -317,6 +317,7 @@ impl<'a> FragmentStage<'a> {
             && layout.frag_coord.is_none()
             && layout.front_facing.is_none()
             && layout.point_coord.is_none()
+            && layout.primitive_id.is_none()
             && fills.iter().all(|f| matches!(f.kind, FillKind::Interp));
         let depth_fills = match &deferred {
             // Only what both read (the slice reads a subset of the inputs).
@@ -692,7 +693,8 @@ impl<'a> FragmentStage<'a> {
         };
         let pixel_inputs = layout.frag_coord.is_some()
             || layout.front_facing.is_some()
-            || layout.point_coord.is_some();
+            || layout.point_coord.is_some()
+            || layout.primitive_id.is_some();
         for (q, e) in pending.iter().enumerate() {
             let (Some(prim), quad) = (e.prim, &e.quad) else {
                 continue;
@@ -749,6 +751,10 @@ impl<'a> FragmentStage<'a> {
                 if let Some(o) = layout.point_coord {
                     set(batch, o, lane, pc[i].0);
                     set(batch, o + 1, lane, pc[i].1);
+                }
+                if let Some(o) = layout.primitive_id {
+                    let id = self.state.primitive_ids.of(prim.source);
+                    set(batch, o, lane, f32::from_bits(id));
                 }
             }
         }

@@ -314,6 +314,38 @@ pub struct PipelineState {
     /// every one) is written to `Framebuffer::color[draw_buffers[i]]`;
     /// `None` is GL_NONE.
     pub draw_buffers: [Option<usize>; 8],
+    /// How the draw's primitives are numbered for gl_PrimitiveID.
+    pub primitive_ids: PrimitiveIds,
+}
+
+/// The gl_PrimitiveID of a draw's primitives (GL 3.3 §3.12.2, without a
+/// geometry shader): primitive `k` of the draw (its assembled
+/// primitives counted from zero, a quad or a polygon drawn as lines or
+/// points once) has ID `first + k % period`. A draw that stands for part
+/// of a GL draw (after a restart index) starts where the earlier parts
+/// stopped; one that stands for several instances restarts at each
+/// (`period`: the primitives of one instance).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PrimitiveIds {
+    pub first: u32,
+    /// Never zero.
+    pub period: u32,
+}
+
+impl Default for PrimitiveIds {
+    fn default() -> PrimitiveIds {
+        PrimitiveIds {
+            first: 0,
+            period: u32::MAX,
+        }
+    }
+}
+
+impl PrimitiveIds {
+    /// The ID of primitive `k` of the draw.
+    pub fn of(self, k: u32) -> u32 {
+        self.first.wrapping_add(k % self.period.max(1))
+    }
 }
 
 impl Default for PipelineState {
@@ -346,6 +378,7 @@ impl Default for PipelineState {
             color_mask: [true; 4],
             per_buffer: None,
             logic_op: None,
+            primitive_ids: PrimitiveIds::default(),
             polygon_offset: PolygonOffset::default(),
             draw_buffers: [Some(0), None, None, None, None, None, None, None],
         }

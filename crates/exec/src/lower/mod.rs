@@ -176,27 +176,11 @@ struct Sub {
     ret: Val,
 }
 
-/// Built-in inputs and outputs of GLSL 1.30 and later the pipeline does
-/// not provide or consume yet: a shader that uses one is refused rather
-/// than run with a zero or an ignored value.
-const UNSUPPORTED_BUILTINS: &[&str] = &["gl_ClipDistance", "gl_PrimitiveID"];
-
 pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
     // The front end compiles and links geometry shaders; the pipeline has
     // no geometry stage (primitive input, EmitVertex/EndPrimitive) yet.
     if stage.stage == Stage::Geometry {
         return unsupported("geometry shaders do not run yet".to_string());
-    }
-    if let Some(g) = stage
-        .module
-        .globals
-        .iter()
-        .find(|g| g.builtin && UNSUPPORTED_BUILTINS.contains(&g.name.as_str()))
-    {
-        return unsupported(format!(
-            "`{}' is not implemented by the pipeline yet",
-            g.name
-        ));
     }
     let owned;
     let m = match with_ftransform_inputs(&stage.module) {
@@ -298,6 +282,49 @@ pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
     l.finish()
 }
 
+/// The interface slots of `g` (laid out from `offset`, `n` components)
+/// when it is the instance of a named input or output block (GLSL 1.50
+/// §4.3.7): one per member (per element of an arrayed instance), named
+/// `Block.member` (`Block[i].member`) after the block, by which stages
+/// match blocks whatever their instance names, each with its member's
+/// interpolation qualifier. `None` for every other global, and when the
+/// members do not account for the instance's components (unsized
+/// members).
+fn block_member_slots(
+    m: &Module,
+    g: &glsl::ir::Global,
+    offset: usize,
+    n: usize,
+) -> Option<Vec<Slot>> {
+    let b = m.blocks.get(g.block?.0 as usize)?;
+    if b.instance.is_none() || b.storage == Storage::Uniform {
+        return None;
+    }
+    let elements = b.array.map_or(1, |a| a as usize);
+    let mut slots = Vec::new();
+    let mut at = offset;
+    for e in 0..elements {
+        for member in &b.members {
+            let components = size_of(member.ty, &m.structs);
+            let name = match b.array {
+                Some(_) => format!("{}[{e}].{}", b.name, member.name),
+                None => format!("{}.{}", b.name, member.name),
+            };
+            slots.push(Slot {
+                name,
+                ty: member.ty,
+                offset: at,
+                components,
+                written: false,
+                location: None,
+                interpolation: member.interpolation.or(g.interpolation),
+            });
+            at += components;
+        }
+    }
+    (at == offset + n).then_some(slots)
+}
+
 /// `ftransform()` reads `gl_ModelViewProjectionMatrix` and `gl_Vertex`,
 /// which the analyzer only declares in a module that names them: a copy of
 /// the module with the missing ones added (unread, so they enter the
@@ -397,7 +424,10 @@ impl<'m> Lowerer<'m> {
                             && g.storage == Storage::Private
                             && matches!(
                                 g.name.as_str(),
-                                "gl_Position" | "gl_PointSize" | "gl_ClipVertex"
+                                "gl_Position"
+                                    | "gl_PointSize"
+                                    | "gl_ClipVertex"
+                                    | "gl_ClipDistance"
                             ))
                 }
                 Stage::Fragment => {
@@ -411,34 +441,30 @@ impl<'m> Lowerer<'m> {
                 }
             };
             let ks = kinds(g.ty, structs);
+            let slots = |offset: usize, written: bool| match block_member_slots(m, g, offset, n) {
+                Some(members) => members.into_iter().map(|s| Slot { written, ..s }).collect(),
+                None => vec![Slot {
+                    name: g.name.clone(),
+                    ty: g.ty,
+                    offset,
+                    components: n,
+                    written,
+                    location: g.location,
+                    interpolation: g.interpolation,
+                }],
+            };
             if is_input && (g.read || self.used[i]) {
                 for (k, &kind) in ks.iter().enumerate() {
                     inputs.push((next_in + k, r + k as u32, kind));
                 }
-                iface.inputs.push(Slot {
-                    name: g.name.clone(),
-                    ty: g.ty,
-                    offset: next_in,
-                    components: n,
-                    written: true,
-                    location: g.location,
-                    interpolation: g.interpolation,
-                });
+                iface.inputs.extend(slots(next_in, true));
                 next_in += n;
             }
             if is_output {
                 for (k, &kind) in ks.iter().enumerate() {
                     outputs.push((r + k as u32, next_out + k, kind));
                 }
-                iface.outputs.push(Slot {
-                    name: g.name.clone(),
-                    ty: g.ty,
-                    offset: next_out,
-                    components: n,
-                    written: g.written,
-                    location: g.location,
-                    interpolation: g.interpolation,
-                });
+                iface.outputs.extend(slots(next_out, g.written));
                 next_out += n;
             }
         }
