@@ -179,12 +179,18 @@ impl Context {
             GL_TEXTURE_BINDING_1D
             | GL_TEXTURE_BINDING_2D
             | GL_TEXTURE_BINDING_3D
-            | GL_TEXTURE_BINDING_CUBE_MAP => {
+            | GL_TEXTURE_BINDING_CUBE_MAP
+            | GL_TEXTURE_BINDING_1D_ARRAY
+            | GL_TEXTURE_BINDING_2D_ARRAY
+            | GL_TEXTURE_BINDING_RECTANGLE => {
                 let ti = match pname {
                     GL_TEXTURE_BINDING_1D => 0,
                     GL_TEXTURE_BINDING_2D => 1,
                     GL_TEXTURE_BINDING_3D => 2,
-                    _ => 3,
+                    GL_TEXTURE_BINDING_CUBE_MAP => 3,
+                    GL_TEXTURE_BINDING_1D_ARRAY => 4,
+                    GL_TEXTURE_BINDING_2D_ARRAY => 5,
+                    _ => 6,
                 };
                 int(&[self.objects.bound.get(unit).map_or(0, |b| b[ti]) as i64])
             }

@@ -8,7 +8,8 @@
 //! for `*16`, none for float formats). Depth images keep the depth,
 //! clamped to [0, 1], in every color component and alpha 1.
 //! [`texel_for`] is the one conversion from an RGBA value to a stored
-//! texel (image specification, render-to-texture write-back).
+//! texel (image specification, render-to-texture write-back). Integer
+//! formats (GL 3.0) store the integers' bits ([`integer_texel`]).
 
 use crate::enums::*;
 
@@ -48,8 +49,66 @@ pub fn base_format(internal: i32) -> Option<u32> {
         | GL_DEPTH_COMPONENT32
         | GL_DEPTH_COMPONENT32F => GL_DEPTH_COMPONENT,
         GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 | GL_DEPTH32F_STENCIL8 => GL_DEPTH_STENCIL,
+        _ => return integer_format(internal).map(|(base, _, _)| base),
+    })
+}
+
+/// An integer internal format (GL 3.0 Table 3.16): its base format, its
+/// bits per component and whether it is signed.
+pub fn integer_format(internal: i32) -> Option<(u32, u32, bool)> {
+    Some(match internal as u32 {
+        GL_R8I => (GL_RED, 8, true),
+        GL_R8UI => (GL_RED, 8, false),
+        GL_R16I => (GL_RED, 16, true),
+        GL_R16UI => (GL_RED, 16, false),
+        GL_R32I => (GL_RED, 32, true),
+        GL_R32UI => (GL_RED, 32, false),
+        GL_RG8I => (GL_RG, 8, true),
+        GL_RG8UI => (GL_RG, 8, false),
+        GL_RG16I => (GL_RG, 16, true),
+        GL_RG16UI => (GL_RG, 16, false),
+        GL_RG32I => (GL_RG, 32, true),
+        GL_RG32UI => (GL_RG, 32, false),
+        GL_RGB8I => (GL_RGB, 8, true),
+        GL_RGB8UI => (GL_RGB, 8, false),
+        GL_RGB16I => (GL_RGB, 16, true),
+        GL_RGB16UI => (GL_RGB, 16, false),
+        GL_RGB32I => (GL_RGB, 32, true),
+        GL_RGB32UI => (GL_RGB, 32, false),
+        GL_RGBA8I => (GL_RGBA, 8, true),
+        GL_RGBA8UI => (GL_RGBA, 8, false),
+        GL_RGBA16I => (GL_RGBA, 16, true),
+        GL_RGBA16UI => (GL_RGBA, 16, false),
+        GL_RGBA32I => (GL_RGBA, 32, true),
+        GL_RGBA32UI => (GL_RGBA, 32, false),
         _ => return None,
     })
+}
+
+/// True for the integer internal formats.
+pub fn is_integer_format(internal: i32) -> bool {
+    integer_format(internal).is_some()
+}
+
+/// An integer texel (GL 3.3 §3.9.3: each component clamped to the
+/// internal format's range, not converted) from RGBA integer components:
+/// the integers' bits as `f32::from_bits`, missing components 0 and alpha
+/// 1 (Table 3.20).
+pub fn integer_texel(rgba: [i64; 4], internal: i32) -> [f32; 4] {
+    let (base, bits, signed) = integer_format(internal).unwrap_or((GL_RGBA, 32, false));
+    let (lo, hi) = if signed {
+        (-(1i64 << (bits - 1)), (1i64 << (bits - 1)) - 1)
+    } else {
+        (0, (1i64 << bits) - 1)
+    };
+    let c = rgba.map(|x| f32::from_bits(x.clamp(lo, hi) as u32));
+    let (zero, one) = (f32::from_bits(0), f32::from_bits(1));
+    match base {
+        GL_RED => [c[0], zero, zero, one],
+        GL_RG => [c[0], c[1], zero, one],
+        GL_RGB => [c[0], c[1], c[2], one],
+        _ => c,
+    }
 }
 
 /// Quantization of an internal format: `Some(bits)` for normalized fixed
@@ -88,6 +147,7 @@ fn format_bits(internal: i32) -> Option<u32> {
             Some(24)
         }
         GL_DEPTH_COMPONENT32 => None,
+        f if is_integer_format(f as i32) => None,
         _ => Some(8),
     }
 }
@@ -102,7 +162,9 @@ pub fn is_depth_format(internal: i32) -> bool {
 
 /// True for formats whose texels are not clamped to [0, 1].
 pub fn is_float_format(internal: i32) -> bool {
-    format_bits(internal).is_none() && base_format(internal) != Some(GL_DEPTH_COMPONENT)
+    format_bits(internal).is_none()
+        && base_format(internal) != Some(GL_DEPTH_COMPONENT)
+        && !is_integer_format(internal)
 }
 
 fn quantize(x: f32, bits: Option<u32>) -> f32 {
@@ -119,6 +181,14 @@ fn quantize(x: f32, bits: Option<u32>) -> f32 {
 /// RGBA to the texel sampling returns for a base internal format (GL 2.1
 /// Table 3.20), quantized.
 pub fn texel_for(rgba: [f32; 4], internal: i32) -> [f32; 4] {
+    if is_integer_format(internal) {
+        // Colour values reaching an integer texture (a default image, a
+        // write-back) are taken as integers.
+        return integer_texel(
+            rgba.map(|x| if x.is_nan() { 0 } else { x as i64 }),
+            internal,
+        );
+    }
     let bits = format_bits(internal);
     let q = |x: f32| quantize(x, bits);
     let [r, g, b, a] = rgba;
@@ -143,7 +213,7 @@ pub fn texel_for(rgba: [f32; 4], internal: i32) -> [f32; 4] {
 /// Re-quantizes an already expanded texel (for generated mipmaps).
 pub(crate) fn texel_for_stored(t: [f32; 4], internal: i32) -> [f32; 4] {
     let bits = format_bits(internal);
-    if base_format(internal) == Some(GL_DEPTH_COMPONENT) {
+    if base_format(internal) == Some(GL_DEPTH_COMPONENT) || is_integer_format(internal) {
         return t;
     }
     t.map(|x| quantize(x, bits))

@@ -9,7 +9,7 @@
 use crate::enums::*;
 use crate::objects;
 use crate::pipeline_state::compare_func;
-use crate::texture_format::is_depth_format;
+use crate::texture_format::{is_depth_format, is_integer_format};
 use crate::Context;
 use std::sync::Arc;
 
@@ -38,13 +38,22 @@ impl Context {
     pub(crate) fn texture_units(&mut self) -> raster::TextureUnits {
         let mut units = Vec::with_capacity(crate::MAX_TEXTURE_IMAGE_UNITS);
         for u in 0..crate::MAX_TEXTURE_IMAGE_UNITS {
-            let names = self.objects.bound.get(u).copied().unwrap_or([0; 4]);
+            let names = self
+                .objects
+                .bound
+                .get(u)
+                .copied()
+                .unwrap_or([0; objects::TEXTURE_TARGET_COUNT]);
             let mut get = |i: usize| self.raster_texture(names[i], objects::TEXTURE_TARGETS[i], u);
             let unit = raster::TextureUnit {
                 tex_1d: get(0),
                 tex_2d: get(1),
                 tex_3d: get(2),
                 cube: get(3),
+                tex_1d_array: get(4),
+                tex_2d_array: get(5),
+                rect: get(6),
+                buffer: None,
                 lod_bias: self.st.tex_env.get(u).map_or(0.0, |e| e.lod_bias),
             };
             units.push(unit);
@@ -60,11 +69,15 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
         GL_TEXTURE_1D => TextureTarget::Tex1D,
         GL_TEXTURE_3D => TextureTarget::Tex3D,
         GL_TEXTURE_CUBE_MAP => TextureTarget::Cube,
+        GL_TEXTURE_1D_ARRAY => TextureTarget::Tex1DArray,
+        GL_TEXTURE_2D_ARRAY => TextureTarget::Tex2DArray,
+        GL_TEXTURE_RECTANGLE => TextureTarget::Rect,
         _ => TextureTarget::Tex2D,
     };
     let nlevels = t.faces.iter().map(|f| f.len()).max().unwrap_or(0);
     let mut levels = Vec::with_capacity(nlevels);
     let mut depth_format = false;
+    let mut integer = false;
     for l in 0..nlevels {
         if target == TextureTarget::Cube {
             let faces: Vec<Option<&objects::Image>> = (0..6).map(|f| t.image(f, l)).collect();
@@ -90,6 +103,7 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
                 Some(i) => {
                     if l == t.params.base_level.max(0) as usize {
                         depth_format = is_depth_format(i.internal_format as i32);
+                        integer = is_integer_format(i.internal_format as i32);
                     }
                     levels.push(raster::Image::new(
                         i.width as u32,
@@ -132,6 +146,7 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
     out.base_level = p.base_level.max(0) as u32;
     out.max_level = p.max_level.max(0) as u32;
     out.depth_format = depth_format;
+    out.integer = integer;
     out.compare = (p.compare_mode == GL_COMPARE_R_TO_TEXTURE).then(|| compare_func(p.compare_func));
     out.depth_mode = match p.depth_mode {
         GL_INTENSITY => raster::DepthTextureMode::Intensity,

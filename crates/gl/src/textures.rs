@@ -17,14 +17,24 @@ use crate::objects::{
     image_target, set_image, target_index, Attachment, Image, TextureObj, MAX_LEVELS,
 };
 use crate::param::Param;
-use crate::pixel_transfer::{format_components, pack_pixels, pixel_size, unpack_image};
-use crate::texture_format::{base_format, is_depth_format};
+use crate::pixel_transfer::{
+    format_components, integer_client_format, pack_pixels, pixel_size, unpack_image,
+};
+use crate::texture_format::{base_format, is_depth_format, is_integer_format};
 use crate::{Context, MAX_TEXTURE_SIZE};
 
 /// The first three of `v`'s entries, `pad` for those it lacks: the
 /// extent or offset of a 1D, 2D or 3D image as a 3D one.
 fn extent<const D: usize>(v: [i32; D], pad: i32) -> [i32; 3] {
     std::array::from_fn(|i| v.get(i).copied().unwrap_or(pad))
+}
+
+/// GL 3.3 §3.9.3: integer internal formats take integer client data
+/// only, and integer data no FLOAT or HALF_FLOAT type; other formats no
+/// integer data.
+fn integer_data_matches(internal: i32, format: u32, ty: u32) -> bool {
+    let int_data = integer_client_format(format).is_some();
+    is_integer_format(internal) == int_data && !(int_data && matches!(ty, GL_FLOAT | GL_HALF_FLOAT))
 }
 
 fn valid_filter(f: u32, min: bool) -> bool {
@@ -186,10 +196,25 @@ impl Context {
         // Depth formats need depth data and vice versa (GL 2.1 §3.8.1).
         let depth_fmt = matches!(base, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL);
         let depth_data = matches!(format, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL);
-        if depth_fmt != depth_data
-            || (depth_fmt && !matches!(bind_target, GL_TEXTURE_1D | GL_TEXTURE_2D))
-        {
+        let depth_target = matches!(
+            bind_target,
+            GL_TEXTURE_1D
+                | GL_TEXTURE_2D
+                | GL_TEXTURE_1D_ARRAY
+                | GL_TEXTURE_2D_ARRAY
+                | GL_TEXTURE_RECTANGLE
+        );
+        if depth_fmt != depth_data || (depth_fmt && !depth_target) {
             self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
+        if !integer_data_matches(internal, format, ty) {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
+        // A rectangle texture has one level (GL 3.1 §3.8.1).
+        if bind_target == GL_TEXTURE_RECTANGLE && level != 0 {
+            self.set_error(GL_INVALID_VALUE);
             return;
         }
         let (w, h, d) = (size[0] as usize, size[1] as usize, size[2] as usize);
@@ -254,6 +279,15 @@ impl Context {
         }
         let alignment = self.st.unpack_alignment as usize;
         let unit = self.st.active_texture as usize;
+        let internal = self
+            .objects
+            .bound_texture(unit, bind_target)
+            .and_then(|t| t.image(face, level as usize))
+            .map(|i| i.internal_format as i32);
+        if internal.is_some_and(|i| !integer_data_matches(i, format, ty)) {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
         let Some(tex) = self.objects.bound_texture_mut(unit, bind_target) else {
             self.set_error(GL_INVALID_OPERATION);
             return;
@@ -327,9 +361,21 @@ impl Context {
             self.set_error(GL_INVALID_OPERATION);
             return;
         };
+        let rect = tex.target == GL_TEXTURE_RECTANGLE;
         let p = &mut tex.params;
         let mut err = GL_NO_ERROR;
         match pname {
+            // GL 3.1 §3.8.4: a rectangle texture has no mipmaps and does
+            // not repeat.
+            GL_TEXTURE_MIN_FILTER if rect && !matches!(e, GL_NEAREST | GL_LINEAR) => {
+                err = GL_INVALID_ENUM
+            }
+            GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R
+                if rect && matches!(e, GL_REPEAT | GL_MIRRORED_REPEAT) =>
+            {
+                err = GL_INVALID_ENUM
+            }
+            GL_TEXTURE_BASE_LEVEL if rect && v[0] as i32 != 0 => err = GL_INVALID_OPERATION,
             GL_TEXTURE_MIN_FILTER if valid_filter(e, true) => p.min_filter = e,
             GL_TEXTURE_MAG_FILTER if valid_filter(e, false) => p.mag_filter = e,
             GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R

@@ -1,0 +1,355 @@
+//! GL 3.0-3.3 textures, end to end: integer formats sampled by
+//! `isampler*`/`usampler*`, 1D and 2D array textures, rectangle
+//! textures, and the GLSL 1.30 lookups (`texelFetch`, `textureSize`,
+//! `textureOffset`, `textureGrad`) on them; each draw checks the values
+//! in the shader and the test reads the verdict's colour.
+
+use gl::enums::*;
+use gl::param::Param;
+use gl::{ArrayData, Context};
+
+const VS: &str = "#version 130\n\
+    in vec2 pos;\n\
+    out vec2 tc;\n\
+    void main() { gl_Position = vec4(pos, 0.0, 1.0); tc = pos * 0.5 + 0.5; }";
+
+const FULL_QUAD: [f32; 8] = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
+const GREEN: [u8; 4] = [0, 255, 0, 255];
+const RED: [u8; 4] = [255, 0, 0, 255];
+
+/// Links `fs` (which writes green when its checks pass, red otherwise)
+/// with [`VS`], draws the full quad into an 8×8 context and returns the
+/// pixel at (x, y).
+fn draw(ctx: &mut Context, fs: &str, at: (i32, i32)) -> [u8; 4] {
+    let p = ctx.create_program();
+    for (kind, src) in [(GL_VERTEX_SHADER, VS), (GL_FRAGMENT_SHADER, fs)] {
+        let s = ctx.create_shader(kind);
+        ctx.shader_source(s, &[src]);
+        ctx.compile_shader(s);
+        assert_eq!(
+            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
+            1,
+            "{}",
+            ctx.get_shader_info_log(s)
+        );
+        ctx.attach_shader(p, s);
+    }
+    ctx.link_program(p);
+    assert_eq!(
+        ctx.get_programiv(p, GL_LINK_STATUS),
+        1,
+        "{}",
+        ctx.get_program_info_log(p)
+    );
+    ctx.use_program(p);
+    let pos = ctx.get_attrib_location(p, "pos");
+    assert!(pos >= 0);
+    ctx.vertex_attrib_pointer(
+        pos as u32,
+        2,
+        GL_FLOAT,
+        false,
+        0,
+        ArrayData::from_f32(&FULL_QUAD),
+    );
+    ctx.enable_vertex_attrib_array(pos as u32);
+    ctx.clear_color(0.0, 0.0, 0.0, 0.0);
+    ctx.clear(GL_COLOR_BUFFER_BIT);
+    ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+    assert_eq!(ctx.take_draw_error(), None);
+    ctx.read_pixels_f32(at.0, at.1, 1, 1)[0].map(|c| (c * 255.0).round() as u8)
+}
+
+fn bytes<T: Copy>(v: &[T], f: impl Fn(T) -> Vec<u8>) -> Vec<u8> {
+    v.iter().flat_map(|&x| f(x)).collect()
+}
+
+fn nearest(ctx: &mut Context, target: u32) {
+    for p in [GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER] {
+        ctx.tex_parameter(target, p, Param::I(GL_NEAREST as i32));
+    }
+}
+
+#[test]
+fn integer_textures_sample_their_integers() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    // 2×1 RGBA32I texels with extremes, and an RGBA16UI level of the
+    // second texture from bytes.
+    let texels: [i32; 8] = [i32::MIN, -1, 7, i32::MAX, 1, 2, 3, 4];
+    let data = bytes(&texels, |x: i32| x.to_le_bytes().to_vec());
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA32I as i32,
+        [2, 1],
+        0,
+        GL_RGBA_INTEGER,
+        GL_INT,
+        Some(&data),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    nearest(&mut ctx, GL_TEXTURE_2D);
+    let fs = "#version 130\n\
+        uniform isampler2D s;\n\
+        in vec2 tc;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texture(s, vec2(0.25, 0.5)) == ivec4(-2147483647 - 1, -1, 7, 2147483647)\n\
+            && texelFetch(s, ivec2(1, 0), 0) == ivec4(1, 2, 3, 4)\n\
+            && textureSize(s, 0) == ivec2(2, 1);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+    // Unsigned, 8-bit red only: missing components 0, alpha 1; values
+    // clamped to the format's range.
+    let data = bytes(&[300u16, 65535], |x: u16| x.to_le_bytes().to_vec());
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_R8UI as i32,
+        [2, 1],
+        0,
+        GL_RED_INTEGER,
+        GL_UNSIGNED_SHORT,
+        Some(&data),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    let fs = "#version 130\n\
+        uniform usampler2D s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texelFetch(s, ivec2(0, 0), 0) == uvec4(255u, 0u, 0u, 1u);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+    // A wrong expectation is seen as wrong (the check can fail).
+    let fs_wrong = fs.replace("uvec4(255u, 0u, 0u, 1u)", "uvec4(254u, 0u, 0u, 1u)");
+    assert_eq!(draw(&mut ctx, &fs_wrong, (4, 4)), RED);
+}
+
+#[test]
+fn integer_formats_take_integer_data_only() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    let data = [0u8; 16];
+    for (internal, format, ty) in [
+        (GL_RGBA8I, GL_RGBA, GL_BYTE),
+        (GL_RGBA8, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE),
+        (GL_RGBA32UI, GL_RGBA_INTEGER, GL_FLOAT),
+    ] {
+        ctx.tex_image(
+            GL_TEXTURE_2D,
+            0,
+            internal as i32,
+            [1, 1],
+            0,
+            format,
+            ty,
+            Some(&data),
+        );
+        assert_eq!(
+            ctx.get_error(),
+            GL_INVALID_OPERATION,
+            "{internal:#x} {format:#x} {ty:#x}"
+        );
+    }
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RG16I as i32,
+        [1, 1],
+        0,
+        GL_RG_INTEGER,
+        GL_SHORT,
+        Some(&data),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    // A sub-image of an integer texture needs integer data too.
+    ctx.tex_sub_image(GL_TEXTURE_2D, 0, [0, 0], [1, 1], GL_RG, GL_SHORT, &data);
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+}
+
+#[test]
+fn array_textures_select_a_layer() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D_ARRAY, t);
+    // Three 2×2 layers: red, green, blue.
+    let mut texels = Vec::new();
+    for layer in 0..3 {
+        for _ in 0..4 {
+            let mut c = [0u8, 0, 0, 255];
+            c[layer] = 255;
+            texels.extend(c);
+        }
+    }
+    ctx.tex_image(
+        GL_TEXTURE_2D_ARRAY,
+        0,
+        GL_RGBA8 as i32,
+        [2, 2, 3],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    nearest(&mut ctx, GL_TEXTURE_2D_ARRAY);
+    assert_eq!(ctx.get_integerv(GL_TEXTURE_BINDING_2D_ARRAY)[0], t as i32);
+    let fs = "#version 130\n\
+        uniform sampler2DArray s;\n\
+        in vec2 tc;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texture(s, vec3(tc, 0.4)) == vec4(1.0, 0.0, 0.0, 1.0)\n\
+            && texture(s, vec3(tc, 1.5)) == vec4(0.0, 0.0, 1.0, 1.0)\n\
+            && texture(s, vec3(tc, 7.0)) == vec4(0.0, 0.0, 1.0, 1.0)\n\
+            && texelFetch(s, ivec3(1, 1, 1), 0) == vec4(0.0, 1.0, 0.0, 1.0)\n\
+            && textureSize(s, 0) == ivec3(2, 2, 3);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (3, 5)), GREEN);
+    // A 1D array from a 2D image: each row a layer.
+    let t1 = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_1D_ARRAY, t1);
+    ctx.tex_image(
+        GL_TEXTURE_1D_ARRAY,
+        0,
+        GL_RGBA8 as i32,
+        [4, 3],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    nearest(&mut ctx, GL_TEXTURE_1D_ARRAY);
+    let fs = "#version 130\n\
+        uniform sampler1DArray s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texture(s, vec2(0.1, 2.0)) == vec4(0.0, 0.0, 1.0, 1.0)\n\
+            && texture(s, vec2(0.9, 1.0)) == vec4(0.0, 1.0, 0.0, 1.0)\n\
+            && textureSize(s, 0) == ivec2(4, 3);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (3, 5)), GREEN);
+}
+
+#[test]
+fn rectangle_textures_take_texel_coordinates() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_RECTANGLE, t);
+    // Rectangles start CLAMP_TO_EDGE and LINEAR; they take neither
+    // repeating wraps nor mipmap filters nor a second level.
+    assert_eq!(
+        ctx.get_tex_parameteriv(GL_TEXTURE_RECTANGLE, GL_TEXTURE_WRAP_S),
+        GL_CLAMP_TO_EDGE as i32
+    );
+    assert_eq!(
+        ctx.get_tex_parameteriv(GL_TEXTURE_RECTANGLE, GL_TEXTURE_MIN_FILTER),
+        GL_LINEAR as i32
+    );
+    ctx.tex_parameter(
+        GL_TEXTURE_RECTANGLE,
+        GL_TEXTURE_WRAP_S,
+        Param::I(GL_REPEAT as i32),
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    ctx.tex_parameter(
+        GL_TEXTURE_RECTANGLE,
+        GL_TEXTURE_MIN_FILTER,
+        Param::I(GL_LINEAR_MIPMAP_LINEAR as i32),
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    let texels: Vec<u8> = (0..4 * 2).flat_map(|i| [i as u8 * 30, 0, 0, 255]).collect();
+    ctx.tex_image(
+        GL_TEXTURE_RECTANGLE,
+        1,
+        GL_RGBA8 as i32,
+        [4, 2],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    ctx.tex_image(
+        GL_TEXTURE_RECTANGLE,
+        0,
+        GL_RGBA8 as i32,
+        [4, 2],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    nearest(&mut ctx, GL_TEXTURE_RECTANGLE);
+    let fs = "#version 140\n\
+        uniform sampler2DRect s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texture(s, vec2(2.5, 1.5)).r == 180.0 / 255.0\n\
+            && texture(s, vec2(9.0, -3.0)).r == 90.0 / 255.0\n\
+            && texelFetch(s, ivec2(1, 1)).r == 150.0 / 255.0\n\
+            && textureOffset(s, vec2(0.5, 0.5), ivec2(3, 1)).r == 210.0 / 255.0\n\
+            && textureSize(s) == ivec2(4, 2);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (3, 5)), GREEN);
+}
+
+#[test]
+fn offsets_gradients_and_fetches_on_2d_textures() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    // Level 0: 4×4 texels whose red is 16·j + 4·i (of 255); level 1: 2×2
+    // blue; level 2: 1×1 green.
+    let l0: Vec<u8> = (0..16u8).flat_map(|k| [k * 4, 0, 0, 255]).collect();
+    let l1: Vec<u8> = [0u8, 0, 255, 255].repeat(4);
+    let l2: Vec<u8> = vec![0, 255, 0, 255];
+    for (level, size, data) in [(0, 4, &l0), (1, 2, &l1), (2, 1, &l2)] {
+        ctx.tex_image(
+            GL_TEXTURE_2D,
+            level,
+            GL_RGBA8 as i32,
+            [size, size],
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            Some(data),
+        );
+    }
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        Param::I(GL_NEAREST_MIPMAP_NEAREST as i32),
+    );
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MAG_FILTER,
+        Param::I(GL_NEAREST as i32),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    let fs = "#version 130\n\
+        uniform sampler2D s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          vec2 c = vec2(0.375, 0.125);\n\
+          bool ok = textureOffset(s, c, ivec2(1, 2)).r == 40.0 / 255.0\n\
+            && textureLodOffset(s, c, 0.0, ivec2(-1, 0)).r == 0.0\n\
+            && textureGrad(s, c, vec2(0.5, 0.0), vec2(0.0, 0.5)) == vec4(0.0, 0.0, 1.0, 1.0)\n\
+            && textureGrad(s, c, vec2(1.0, 0.0), vec2(0.0, 0.0)) == vec4(0.0, 1.0, 0.0, 1.0)\n\
+            && texelFetch(s, ivec2(3, 3), 0).r == 60.0 / 255.0\n\
+            && texelFetchOffset(s, ivec2(0, 0), 1, ivec2(1, 1)) == vec4(0.0, 0.0, 1.0, 1.0)\n\
+            && textureSize(s, 1) == ivec2(2) && textureSize(s, 2) == ivec2(1);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (1, 6)), GREEN);
+}
