@@ -163,8 +163,9 @@ pub enum TextureCommand {
         square: [u32; 2],
         colors: [[f32; 4]; 4],
     },
-    /// `texture shadow1D UNIT (W)` / `shadow2D UNIT (W, H)`: depth gradients
-    /// with compare mode on, compare func GREATER.
+    /// `texture shadow1D UNIT (W)` / `shadow2D UNIT (W, H)` / `shadowRect
+    /// UNIT (W, H)`: depth gradients with compare mode on, compare func
+    /// GREATER.
     Shadow {
         unit: u32,
         target: u32,
@@ -691,7 +692,6 @@ const LATER_GL: &[(&str, &str)] = &[
     ("texture storage ", "texture storage (OpenGL 4.2)"),
     ("texture rgbw 2DArray ", "array textures (OpenGL 3.0)"),
     ("texture rgbw 1DArray ", "array textures (OpenGL 3.0)"),
-    ("texture shadowRect ", "rectangle textures (OpenGL 3.1)"),
     ("texture shadow1DArray ", "array textures (OpenGL 3.0)"),
     ("texture shadow2DArray ", "array textures (OpenGL 3.0)"),
     ("texcoord ", "the `texcoord' command"),
@@ -881,6 +881,15 @@ fn parse_texture(line: &str) -> Result<Option<TextureCommand>, CommandError> {
             height: dim(i[2], line)?,
         }));
     }
+    if let Some(v) = sscanf_all(line, "texture shadowRect %d ( %d , %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::Shadow {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_RECTANGLE,
+            width: dim(i[1], line)?,
+            height: dim(i[2], line)?,
+        }));
+    }
     if let Some(v) = sscanf_all(line, "texture shadow1D %d ( %d )") {
         let i = scanned_i32(&v);
         return Ok(Some(T::Shadow {
@@ -903,7 +912,10 @@ fn parse_texparameter(rest: &str, line: &str) -> Result<Command, CommandError> {
         "2D" => GL_TEXTURE_2D,
         "3D" => GL_TEXTURE_3D,
         "Cube" => GL_TEXTURE_CUBE_MAP,
-        "Rect" | "1DArray" | "2DArray" | "CubeArray" | "2DMS" | "2DMSArray" | "Buffer" => {
+        "Rect" => GL_TEXTURE_RECTANGLE,
+        "1DArray" => GL_TEXTURE_1D_ARRAY,
+        "2DArray" => GL_TEXTURE_2D_ARRAY,
+        "CubeArray" | "2DMS" | "2DMSArray" | "Buffer" => {
             return Ok(Command::NeedsLaterGl(format!(
                 "{t} textures (OpenGL 3.0 or later)"
             )))
@@ -1423,6 +1435,15 @@ mod tests {
                 target: GL_TEXTURE_1D,
                 width: 32,
                 height: 1
+            })
+        );
+        assert_eq!(
+            p("texture shadowRect 2 (32, 16)"),
+            Command::Texture(TextureCommand::Shadow {
+                unit: 2,
+                target: GL_TEXTURE_RECTANGLE,
+                width: 32,
+                height: 16
             })
         );
         assert!(matches!(

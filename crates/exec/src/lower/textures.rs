@@ -34,6 +34,10 @@ pub(super) fn is_texture(f: BuiltinFn) -> bool {
             | B::Shadow2DLod
             | B::Shadow1DProjLod
             | B::Shadow2DProjLod
+            | B::Texture2DRect
+            | B::Texture2DRectProj
+            | B::Shadow2DRect
+            | B::Shadow2DRectProj
             | B::TextureSize
             | B::Texture
             | B::TextureProj
@@ -181,6 +185,8 @@ impl<'m> Lowerer<'m> {
                 | B::Shadow2DProj
                 | B::Shadow1DProjLod
                 | B::Shadow2DProjLod
+                | B::Texture2DRectProj
+                | B::Shadow2DRectProj
         );
         let explicit = matches!(
             f,
