@@ -34,7 +34,7 @@ pub fn base_format(internal: i32) -> Option<u32> {
         | GL_SLUMINANCE_ALPHA
         | GL_SLUMINANCE8_ALPHA8 => GL_LUMINANCE_ALPHA,
         3 | GL_RGB | GL_R3_G3_B2 | GL_RGB4 | GL_RGB5 | GL_RGB8 | GL_RGB10 | GL_RGB12 | GL_RGB16
-        | GL_RGB32F | GL_RGB16F | GL_SRGB | GL_SRGB8 => GL_RGB,
+        | GL_RGB32F | GL_RGB16F | GL_SRGB | GL_SRGB8 | GL_R11F_G11F_B10F | GL_RGB9_E5 => GL_RGB,
         4 | GL_RGBA | GL_RGBA2 | GL_RGBA4 | GL_RGB5_A1 | GL_RGBA8 | GL_RGB10_A2 | GL_RGBA12
         | GL_RGBA16 | GL_RGBA32F | GL_RGBA16F | GL_SRGB_ALPHA | GL_SRGB8_ALPHA8 => GL_RGBA,
         GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 | GL_ALPHA32F_ARB
@@ -85,6 +85,62 @@ pub fn integer_format(internal: i32) -> Option<(u32, u32, bool)> {
     })
 }
 
+/// True for the sRGB internal formats (EXT_texture_sRGB, GL 2.1 §3.8.15):
+/// their colour components are stored encoded and decoded on sampling.
+pub fn is_srgb_format(internal: i32) -> bool {
+    matches!(
+        internal as u32,
+        GL_SRGB
+            | GL_SRGB8
+            | GL_SRGB_ALPHA
+            | GL_SRGB8_ALPHA8
+            | GL_SLUMINANCE
+            | GL_SLUMINANCE8
+            | GL_SLUMINANCE_ALPHA
+            | GL_SLUMINANCE8_ALPHA8
+    )
+}
+
+/// `x` rounded to the nearest value of an unsigned float with `mantissa`
+/// bits and a 5-bit exponent (GL 3.0 §2.1.3's 11- and 10-bit floats):
+/// negative values and NaN become 0, values past the largest finite one
+/// (65024 for 6 bits, 64512 for 5) that largest one.
+fn small_float(x: f32, mantissa: u32) -> f32 {
+    if x.is_nan() || x <= 0.0 {
+        return 0.0;
+    }
+    let max = (2.0 - (-(mantissa as f64)).exp2()) * 32768.0;
+    let v = (x as f64).min(max);
+    // Below 2^-14 the values are denormal: steps of 2^(-14 - mantissa).
+    let e = v.log2().floor().max(-14.0);
+    let step = (e - mantissa as f64).exp2();
+    ((v / step).round() * step).min(max) as f32
+}
+
+/// GL 3.0 §3.8.1's RGB9_E5: a shared 5-bit exponent and 9-bit mantissas
+/// (components clamped to [0, 65408] first).
+fn rgb9e5(rgb: [f32; 3]) -> [f32; 3] {
+    const N: i32 = 9;
+    const B: i32 = 15;
+    let max = (511.0 / 512.0) * 65536.0f64;
+    let c = rgb.map(|x| {
+        if x.is_nan() {
+            0.0
+        } else {
+            (x as f64).clamp(0.0, max)
+        }
+    });
+    let m = c[0].max(c[1]).max(c[2]);
+    // The shared exponent's scale: the largest component's, one more
+    // when its mantissa would round up to 2^N.
+    let e = (m.log2().floor() as i32).max(-B - 1) + 1 + B;
+    let mut scale = ((e - B - N) as f64).exp2();
+    if (m / scale + 0.5).floor() as i32 == 1 << N {
+        scale *= 2.0;
+    }
+    c.map(|x| ((x / scale + 0.5).floor() * scale) as f32)
+}
+
 /// True for the integer internal formats.
 pub fn is_integer_format(internal: i32) -> bool {
     integer_format(internal).is_some()
@@ -133,7 +189,9 @@ fn format_bits(internal: i32) -> Option<u32> {
         | GL_RG16F
         | GL_RG32F
         | GL_DEPTH_COMPONENT32F
-        | GL_DEPTH32F_STENCIL8 => None,
+        | GL_DEPTH32F_STENCIL8
+        | GL_R11F_G11F_B10F
+        | GL_RGB9_E5 => None,
         GL_RGBA16
         | GL_RGB16
         | GL_ALPHA16
@@ -192,6 +250,16 @@ pub fn texel_for(rgba: [f32; 4], internal: i32) -> [f32; 4] {
     let bits = format_bits(internal);
     let q = |x: f32| quantize(x, bits);
     let [r, g, b, a] = rgba;
+    match internal as u32 {
+        GL_R11F_G11F_B10F => {
+            return [small_float(r, 6), small_float(g, 6), small_float(b, 5), 1.0];
+        }
+        GL_RGB9_E5 => {
+            let [r, g, b] = rgb9e5([r, g, b]);
+            return [r, g, b, 1.0];
+        }
+        _ => {}
+    }
     match base_format(internal).unwrap_or(GL_RGBA) {
         GL_ALPHA => [0.0, 0.0, 0.0, q(a)],
         GL_LUMINANCE => [q(r), q(r), q(r), 1.0],
@@ -216,5 +284,31 @@ pub(crate) fn texel_for_stored(t: [f32; 4], internal: i32) -> [f32; 4] {
     if base_format(internal) == Some(GL_DEPTH_COMPONENT) || is_integer_format(internal) {
         return t;
     }
+    if matches!(internal as u32, GL_R11F_G11F_B10F | GL_RGB9_E5) {
+        return texel_for(t, internal);
+    }
     t.map(|x| quantize(x, bits))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn packed_floats_round_to_their_precision() {
+        let t = texel_for(
+            [1.0 + 1.0 / 256.0, -3.0, 1e6, 0.5],
+            GL_R11F_G11F_B10F as i32,
+        );
+        assert_eq!(t, [1.0, 0.0, 64512.0, 1.0]);
+        let t = texel_for([4.0, 0.01, 1.0, 0.5], GL_RGB9_E5 as i32);
+        // The shared exponent of 4.0 leaves steps of 1/64.
+        assert_eq!(t, [4.0, 0.015625, 1.0, 1.0]);
+        // Denormal 11-bit floats: steps of 2^-20.
+        let t = texel_for(
+            [3.0 * 2f32.powi(-20), 0.0, 0.0, 1.0],
+            GL_R11F_G11F_B10F as i32,
+        );
+        assert_eq!(t[0], 3.0 * 2f32.powi(-20));
+    }
 }

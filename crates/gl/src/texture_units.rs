@@ -9,7 +9,7 @@
 use crate::enums::*;
 use crate::objects;
 use crate::pipeline_state::compare_func;
-use crate::texture_format::{is_depth_format, is_integer_format};
+use crate::texture_format::{is_depth_format, is_integer_format, is_srgb_format};
 use crate::Context;
 use std::sync::Arc;
 
@@ -77,7 +77,6 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
     let nlevels = t.faces.iter().map(|f| f.len()).max().unwrap_or(0);
     let mut levels = Vec::with_capacity(nlevels);
     let mut depth_format = false;
-    let mut integer = false;
     for l in 0..nlevels {
         if target == TextureTarget::Cube {
             let faces: Vec<Option<&objects::Image>> = (0..6).map(|f| t.image(f, l)).collect();
@@ -103,7 +102,6 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
                 Some(i) => {
                     if l == t.params.base_level.max(0) as usize {
                         depth_format = is_depth_format(i.internal_format as i32);
-                        integer = is_integer_format(i.internal_format as i32);
                     }
                     levels.push(raster::Image::new(
                         i.width as u32,
@@ -146,7 +144,11 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
     out.base_level = p.base_level.max(0) as u32;
     out.max_level = p.max_level.max(0) as u32;
     out.depth_format = depth_format;
-    out.integer = integer;
+    // Every face and level has the base level's kind of format when the
+    // texture is complete.
+    let internal = t.base_image().map(|i| i.internal_format as i32);
+    out.integer = internal.is_some_and(is_integer_format);
+    out.srgb = internal.is_some_and(is_srgb_format);
     out.compare = (p.compare_mode == GL_COMPARE_R_TO_TEXTURE).then(|| compare_func(p.compare_func));
     out.depth_mode = match p.depth_mode {
         GL_INTENSITY => raster::DepthTextureMode::Intensity,

@@ -353,3 +353,162 @@ fn offsets_gradients_and_fetches_on_2d_textures() {
         }";
     assert_eq!(draw(&mut ctx, fs, (1, 6)), GREEN);
 }
+
+#[test]
+fn srgb_textures_decode_to_linear() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    // Encoded 0, 10, 128, 255 (alpha stays linear).
+    let texels = [0u8, 10, 128, 128, 255, 255, 255, 255];
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_SRGB8_ALPHA8 as i32,
+        [2, 1],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    nearest(&mut ctx, GL_TEXTURE_2D);
+    let fs = "#version 130\n\
+        uniform sampler2D s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          vec4 a = texelFetch(s, ivec2(0, 0), 0);\n\
+          vec4 b = texture(s, vec2(0.75, 0.5));\n\
+          bool ok = a.r == 0.0 && abs(a.g - (10.0 / 255.0) / 12.92) < 1e-6\n\
+            && abs(a.b - 0.2158605) < 1e-5 && a.a == 128.0 / 255.0\n\
+            && abs(b.r - 1.0) < 1e-6 && b.a == 1.0;\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+    // The same bytes in RGBA8 are not decoded (the check can fail).
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        [2, 1],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), RED);
+}
+
+#[test]
+fn packed_float_formats_keep_their_precision() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    nearest(&mut ctx, GL_TEXTURE_2D);
+    let data = bytes(&[1.0f32 + 1.0 / 256.0, -3.0, 1e6, 0.0], |x: f32| {
+        x.to_le_bytes().to_vec()
+    });
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_R11F_G11F_B10F as i32,
+        [1, 1],
+        0,
+        GL_RGBA,
+        GL_FLOAT,
+        Some(&data),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    // 6 mantissa bits: 1 + 1/256 rounds to 1; negative to 0; large to
+    // the largest 10-bit float.
+    let fs = "#version 130\n\
+        uniform sampler2D s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texelFetch(s, ivec2(0), 0) == vec4(1.0, 0.0, 64512.0, 1.0);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+    // RGB9_E5: the shared exponent of 4.0 leaves 9-bit mantissas below 8,
+    // steps of 1/64, so 0.01 becomes 0.015625.
+    let data = bytes(&[4.0f32, 0.01, 1.0, 0.0], |x: f32| x.to_le_bytes().to_vec());
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGB9_E5 as i32,
+        [1, 1],
+        0,
+        GL_RGBA,
+        GL_FLOAT,
+        Some(&data),
+    );
+    let fs = "#version 130\n\
+        uniform sampler2D s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texelFetch(s, ivec2(0), 0) == vec4(4.0, 0.015625, 1.0, 1.0);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+}
+
+#[test]
+fn array_mipmaps_keep_their_layers() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D_ARRAY, t);
+    // Two 4×4 layers, each solid: 64 and 192.
+    let texels: Vec<u8> = [64u8, 192]
+        .iter()
+        .flat_map(|&v| [v, 0, 0, 255].repeat(16))
+        .collect();
+    ctx.tex_image(
+        GL_TEXTURE_2D_ARRAY,
+        0,
+        GL_RGBA8 as i32,
+        [4, 4, 2],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    ctx.generate_mipmap(GL_TEXTURE_2D_ARRAY);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(
+        ctx.get_tex_level_parameteriv(GL_TEXTURE_2D_ARRAY, 2, GL_TEXTURE_DEPTH),
+        2
+    );
+    assert_eq!(
+        ctx.get_tex_level_parameteriv(GL_TEXTURE_2D_ARRAY, 2, GL_TEXTURE_WIDTH),
+        1
+    );
+    ctx.tex_parameter(
+        GL_TEXTURE_2D_ARRAY,
+        GL_TEXTURE_MIN_FILTER,
+        Param::I(GL_NEAREST_MIPMAP_NEAREST as i32),
+    );
+    let fs = "#version 130\n\
+        uniform sampler2DArray s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = textureLod(s, vec3(0.5, 0.5, 1.0), 2.0).r == 192.0 / 255.0\n\
+            && textureLod(s, vec3(0.5, 0.5, 0.0), 2.0).r == 64.0 / 255.0\n\
+            && textureSize(s, 2) == ivec3(1, 1, 2);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+    // Integer textures have no mipmaps to generate.
+    let data = [0u8; 4];
+    ctx.tex_image(
+        GL_TEXTURE_2D_ARRAY,
+        0,
+        GL_R8UI as i32,
+        [2, 2, 1],
+        0,
+        GL_RED_INTEGER,
+        GL_UNSIGNED_BYTE,
+        Some(&data),
+    );
+    ctx.generate_mipmap(GL_TEXTURE_2D_ARRAY);
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+}

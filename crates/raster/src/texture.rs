@@ -314,6 +314,21 @@ pub struct Texture {
     /// the integers' bits (`f32::from_bits`), lookups read the nearest
     /// texel of one level and return them unconverted.
     pub integer: bool,
+    /// The internal format is an sRGB one (GL 2.1 §3.8.15, EXT_texture_sRGB):
+    /// each texel's red, green and blue are decoded to linear before
+    /// filtering ([`srgb_to_linear`]).
+    pub srgb: bool,
+}
+
+/// The sRGB decoding of a stored component c in [0, 1] (GL 2.1 eq. 3.30):
+/// c / 12.92 up to 0.04045, ((c + 0.055) / 1.055)^2.4 above, in
+/// `glsl::math`'s `pow`, so every machine computes the same bits.
+pub fn srgb_to_linear(c: f32) -> f32 {
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        glsl::math::pow((c + 0.055) / 1.055, 2.4)
+    }
 }
 
 impl Texture {
@@ -336,6 +351,7 @@ impl Texture {
             compare: None,
             depth_mode: DepthTextureMode::Luminance,
             integer: false,
+            srgb: false,
         }
     }
 

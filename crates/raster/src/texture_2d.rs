@@ -272,6 +272,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
     if tex.target != TextureTarget::Tex2D
         || tex.depth_format
         || tex.integer
+        || tex.srgb
         || !borderless(tex.wrap[0])
         || !borderless(tex.wrap[1])
     {

@@ -12,7 +12,8 @@ use crate::texture::levels::{
     floor, lambda, mix_levels, quad_first, select_levels, wrap_coord, Levels, LodBase,
 };
 use crate::texture::{
-    DepthTextureMode, Image, Texels, Texture, TextureTarget, TextureUnit, Wrap, MISSING,
+    srgb_to_linear, DepthTextureMode, Image, Texels, Texture, TextureTarget, TextureUnit, Wrap,
+    MISSING,
 };
 use crate::unorm8_filter;
 use glsl::math;
@@ -124,7 +125,7 @@ fn fetch_lane(units: &[TextureUnit], req: &FetchRequest, lane: usize) -> Option<
     }
     let at = |c: i32, a: usize| if a < n { c as usize } else { 0 };
     let t = img.texel(at(i, 0), at(j, 1), at(k, 2));
-    Some(depth_rgba(tex, t))
+    Some(depth_rgba(tex, decoded(tex, t)))
 }
 
 /// `textureSize` (GLSL 1.30 §8.7): the sizes of level base + `lod` of the
@@ -345,6 +346,22 @@ pub(crate) fn sample(
     depth_rgba(tex, value)
 }
 
+/// A stored texel as filtering reads it: sRGB textures' colour decoded
+/// to linear (alpha is stored linear).
+#[inline(always)]
+fn decoded(tex: &Texture, t: [f32; 4]) -> [f32; 4] {
+    if tex.srgb {
+        [
+            srgb_to_linear(t[0]),
+            srgb_to_linear(t[1]),
+            srgb_to_linear(t[2]),
+            t[3],
+        ]
+    } else {
+        t
+    }
+}
+
 /// A depth texture's value (or comparison result) in component 0 as
 /// RGBA by its DEPTH_TEXTURE_MODE; other textures' values unchanged.
 fn depth_rgba(tex: &Texture, value: [f32; 4]) -> [f32; 4] {
@@ -430,7 +447,7 @@ fn filter_unorm8(
             | TextureTarget::Tex2DArray
             | TextureTarget::Rect
     );
-    if tex.depth_format || !two_d {
+    if tex.depth_format || tex.srgb || !two_d {
         return None;
     }
     let (w, h) = (img.width.max(1), img.height.max(1));
@@ -500,7 +517,7 @@ fn filter(
     }
     let fetch = |i: Texel, j: Texel, k: Texel| -> [f32; 4] {
         let t = match (i, j, k) {
-            (Some(i), Some(j), Some(k)) => img.texel(i, j, k),
+            (Some(i), Some(j), Some(k)) => decoded(tex, img.texel(i, j, k)),
             _ => tex.border_color,
         };
         match (tex.depth_format, tex.compare, reference) {
