@@ -337,6 +337,70 @@ pub(crate) fn pack_pixels(
     out
 }
 
+/// Packs `w * h` integer texels (the integers' bits, signed or not) as an
+/// integer client format `format`/`ty` at `align`: each component the
+/// plain format takes, clamped to the type's range (EXT_texture_integer's
+/// final conversion for integer colours).
+pub(crate) fn pack_integer_pixels(
+    block: &[[f32; 4]],
+    signed: bool,
+    w: usize,
+    h: usize,
+    format: u32,
+    ty: u32,
+    align: usize,
+) -> Vec<u8> {
+    let (Some(plain), Some((px, comp))) = (integer_client_format(format), pixel_size(format, ty))
+    else {
+        return Vec::new();
+    };
+    let stride = row_stride(w, format, ty, align);
+    let mut out = vec![0u8; stride.saturating_mul(h)];
+    let (lo, hi): (i64, i64) = match ty {
+        GL_UNSIGNED_BYTE => (0, u8::MAX as i64),
+        GL_BYTE => (i8::MIN as i64, i8::MAX as i64),
+        GL_UNSIGNED_SHORT => (0, u16::MAX as i64),
+        GL_SHORT => (i16::MIN as i64, i16::MAX as i64),
+        GL_UNSIGNED_INT => (0, u32::MAX as i64),
+        _ => (i32::MIN as i64, i32::MAX as i64),
+    };
+    for row in 0..h {
+        for col in 0..w {
+            let Some(p) = block.get(row * w + col) else {
+                continue;
+            };
+            let v = p.map(|x| {
+                if signed {
+                    x.to_bits() as i32 as i64
+                } else {
+                    x.to_bits() as i64
+                }
+            });
+            let [r, g, b, a] = v;
+            let vals: &[i64] = match plain {
+                GL_RED => &[r],
+                GL_GREEN => &[g],
+                GL_BLUE => &[b],
+                GL_ALPHA => &[a],
+                GL_RG => &[r, g],
+                GL_RGB => &[r, g, b],
+                GL_BGR => &[b, g, r],
+                GL_BGRA => &[b, g, r, a],
+                _ => &[r, g, b, a],
+            };
+            let at = row * stride + col * px;
+            for (c, &x) in vals.iter().enumerate() {
+                let o = at + c * comp;
+                let bytes = x.clamp(lo, hi).to_le_bytes();
+                if let Some(dst) = out.get_mut(o..o + comp) {
+                    dst.copy_from_slice(&bytes[..comp]);
+                }
+            }
+        }
+    }
+    out
+}
+
 /// [`pack_pixels`] into the client buffer `out` (bytes past its end are
 /// dropped; bytes between pixels are left as they are).
 pub(crate) fn pack_into(

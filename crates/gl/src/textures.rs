@@ -18,9 +18,10 @@ use crate::objects::{
 };
 use crate::param::Param;
 use crate::pixel_transfer::{
-    format_components, integer_client_format, pack_pixels, pixel_size, unpack_image,
+    format_components, integer_client_format, pack_integer_pixels, pack_pixels, pixel_size,
+    unpack_image,
 };
-use crate::texture_format::{base_format, is_depth_format, is_integer_format};
+use crate::texture_format::{base_format, integer_format, is_depth_format, is_integer_format};
 use crate::{Context, MAX_TEXTURE_SIZE};
 
 /// The first three of `v`'s entries, `pad` for those it lacks: the
@@ -580,6 +581,13 @@ impl Context {
             self.set_error(GL_INVALID_OPERATION);
             return Vec::new();
         }
+        // Integer images go to integer formats only, and back (GL 3.3
+        // §6.1.4).
+        let integer = integer_format(img.internal_format as i32);
+        if integer.is_some() != integer_client_format(format).is_some() {
+            self.set_error(GL_INVALID_OPERATION);
+            return Vec::new();
+        }
         let n = format_components(format).unwrap_or(4);
         if comp != px / n.max(1) {
             // Packed types are not implemented for reads.
@@ -603,6 +611,12 @@ impl Context {
                 _ => [r, g, b, a],
             })
             .collect();
+        if let Some((_, _, signed)) = integer {
+            // Stored integer texels already hold 0 and 1 for the
+            // components their format lacks.
+            let rows = h.saturating_mul(d);
+            return pack_integer_pixels(&img.texels, signed, w, rows, format, ty, align);
+        }
         pack_pixels(&texels, w, h.saturating_mul(d), format, ty, align)
     }
 }

@@ -512,3 +512,68 @@ fn array_mipmaps_keep_their_layers() {
     ctx.generate_mipmap(GL_TEXTURE_2D_ARRAY);
     assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
 }
+
+#[test]
+fn integer_images_read_back_as_integers() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    let texels: [i32; 4] = [i32::MIN, -1, 7, i32::MAX];
+    let data = bytes(&texels, |x: i32| x.to_le_bytes().to_vec());
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA32I as i32,
+        [1, 1],
+        0,
+        GL_RGBA_INTEGER,
+        GL_INT,
+        Some(&data),
+    );
+    assert_eq!(
+        ctx.get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA_INTEGER, GL_INT),
+        data
+    );
+    // Clamped to the type's range; BGRA order.
+    assert_eq!(
+        ctx.get_tex_image(GL_TEXTURE_2D, 0, GL_BGRA_INTEGER, GL_BYTE),
+        vec![7, 0xff, 0x80, 0x7f]
+    );
+    // Not as normalized colours.
+    assert!(ctx
+        .get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE)
+        .is_empty());
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+    // A missing alpha reads as 1.
+    let data = [200u8];
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_R8UI as i32,
+        [1, 1],
+        0,
+        GL_RED_INTEGER,
+        GL_UNSIGNED_BYTE,
+        Some(&data),
+    );
+    ctx.pixel_storei(GL_PACK_ALIGNMENT, 1);
+    assert_eq!(
+        ctx.get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT),
+        vec![200, 0, 0, 0, 0, 0, 1, 0]
+    );
+    // Colour textures are not read as integers.
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        [1, 1],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&[1, 2, 3, 4]),
+    );
+    assert!(ctx
+        .get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE)
+        .is_empty());
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+}
