@@ -2,7 +2,7 @@
 //! names and bindings, the active unit, glTexImage{1,2,3}D and
 //! glTexSubImage2D (images from client memory or the pixel unpack buffer,
 //! `buffers::image_bytes`), parameters and their queries, and
-//! mipmap generation. Reading images back and the other sub-image and
+//! mipmap generation, buffer textures (glTexBuffer). Reading images back and the other sub-image and
 //! copy commands are [`crate::pixels`].
 
 use crate::abi::*;
@@ -96,5 +96,9 @@ gl_entry_points! {
         c.gl.tex_sub_image(target, level, [xoff, yoff], [w, h], format, ty, &bytes);
     }
     fn glGenerateMipmap(target: GLenum) => |c| { c.gl.generate_mipmap(target) }
+    // ---- buffer textures (GL 3.1, ARB/EXT_texture_buffer_object) ----
+    fn glTexBuffer(target: GLenum, internal: GLenum, buffer: GLuint) => |c| { c.gl.tex_buffer(target, internal, buffer) }
+    fn glTexBufferARB(target: GLenum, internal: GLenum, buffer: GLuint) => |c| { c.gl.tex_buffer(target, internal, buffer) }
+    fn glTexBufferEXT(target: GLenum, internal: GLenum, buffer: GLuint) => |c| { c.gl.tex_buffer(target, internal, buffer) }
     fn glGenerateMipmapEXT(target: GLenum) => |c| { c.gl.generate_mipmap(target) }
 }

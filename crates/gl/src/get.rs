@@ -118,6 +118,12 @@ impl Context {
             // The texel offsets the lookups take (GL 3.0 §3.8.8: at least
             // −8 to 7); any integer works.
             GL_MIN_PROGRAM_TEXEL_OFFSET => int(&[-8]),
+            GL_MAX_TEXTURE_BUFFER_SIZE => {
+                int(&[crate::texture_buffer::MAX_TEXTURE_BUFFER_SIZE as i64])
+            }
+            GL_TEXTURE_BUFFER_DATA_STORE_BINDING => {
+                int(&[self.active_tex_buffer().map_or(0, |b| b.buffer) as i64])
+            }
             GL_MAX_PROGRAM_TEXEL_OFFSET => int(&[7]),
             GL_MAX_VIEWPORT_DIMS => int(&[crate::MAX_TEXTURE_SIZE as i64; 2]),
             GL_MAX_MODELVIEW_STACK_DEPTH
@@ -187,7 +193,8 @@ impl Context {
             | GL_TEXTURE_BINDING_CUBE_MAP
             | GL_TEXTURE_BINDING_1D_ARRAY
             | GL_TEXTURE_BINDING_2D_ARRAY
-            | GL_TEXTURE_BINDING_RECTANGLE => {
+            | GL_TEXTURE_BINDING_RECTANGLE
+            | GL_TEXTURE_BINDING_BUFFER => {
                 let ti = match pname {
                     GL_TEXTURE_BINDING_1D => 0,
                     GL_TEXTURE_BINDING_2D => 1,
@@ -195,7 +202,8 @@ impl Context {
                     GL_TEXTURE_BINDING_CUBE_MAP => 3,
                     GL_TEXTURE_BINDING_1D_ARRAY => 4,
                     GL_TEXTURE_BINDING_2D_ARRAY => 5,
-                    _ => 6,
+                    GL_TEXTURE_BINDING_RECTANGLE => 6,
+                    _ => 7,
                 };
                 int(&[self.objects.bound.get(unit).map_or(0, |b| b[ti]) as i64])
             }

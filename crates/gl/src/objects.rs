@@ -144,8 +144,17 @@ pub struct TextureObj {
     /// -Y, +Z, -Z).
     pub faces: Vec<Vec<Option<Image>>>,
     pub params: TexParams,
+    /// A buffer texture's data store (glTexBuffer).
+    pub buffer: Option<TexBuffer>,
     /// Bumped on every change (for caches).
     pub generation: u64,
+}
+
+/// The buffer object a buffer texture reads and the format of its texels.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TexBuffer {
+    pub buffer: u32,
+    pub internal_format: u32,
 }
 
 impl TextureObj {
@@ -218,7 +227,7 @@ pub struct Objects {
 }
 
 /// Number of texture targets a unit binds.
-pub const TEXTURE_TARGET_COUNT: usize = 7;
+pub const TEXTURE_TARGET_COUNT: usize = 8;
 
 /// Texture targets in binding-table order.
 pub const TEXTURE_TARGETS: [u32; TEXTURE_TARGET_COUNT] = [
@@ -229,6 +238,7 @@ pub const TEXTURE_TARGETS: [u32; TEXTURE_TARGET_COUNT] = [
     GL_TEXTURE_1D_ARRAY,
     GL_TEXTURE_2D_ARRAY,
     GL_TEXTURE_RECTANGLE,
+    GL_TEXTURE_BUFFER,
 ];
 
 pub fn target_index(target: u32) -> Option<usize> {

@@ -136,7 +136,7 @@ pub fn row_stride(width: usize, format: u32, ty: u32, alignment: usize) -> usize
     }
 }
 
-fn half_to_f32(h: u16) -> f32 {
+pub(crate) fn half_to_f32(h: u16) -> f32 {
     let sign = if h & 0x8000 != 0 { -1.0f32 } else { 1.0 };
     let e = ((h >> 10) & 0x1f) as i32;
     let m = (h & 0x3ff) as f32;

@@ -9,6 +9,7 @@
 use crate::enums::*;
 use crate::objects;
 use crate::pipeline_state::compare_func;
+use crate::texture_buffer::buffer_texels;
 use crate::texture_format::{is_depth_format, is_integer_format, is_srgb_format};
 use crate::Context;
 use std::sync::Arc;
@@ -33,6 +34,33 @@ impl Context {
         Some(tex)
     }
 
+    /// The buffer texture bound on `unit` as raster's texture, decoded
+    /// from its buffer's current contents (never cached: the buffer may
+    /// change without the texture knowing).
+    fn buffer_texture(&self, unit: usize) -> Option<Arc<raster::Texture>> {
+        let t = self.objects.bound_texture(unit, GL_TEXTURE_BUFFER)?;
+        let texels = match t.buffer {
+            Some(b) => self
+                .objects
+                .buffers
+                .get(&b.buffer)
+                .map(|o| buffer_texels(b.internal_format, &o.data))
+                .unwrap_or_default(),
+            None => Vec::new(),
+        };
+        let width = texels.len() as u32;
+        let mut tex = raster::Texture::new(
+            raster::TextureTarget::Buffer,
+            vec![raster::Image::new(width, 1, 1, texels)],
+        );
+        tex.min_filter = raster::MinFilter::Nearest;
+        tex.mag_filter = raster::MagFilter::Nearest;
+        tex.integer = t
+            .buffer
+            .is_some_and(|b| is_integer_format(b.internal_format as i32));
+        Some(Arc::new(tex))
+    }
+
     /// Raster's texture units: the texture bound to each target on every
     /// image unit, and the unit's LOD bias.
     pub(crate) fn texture_units(&mut self) -> raster::TextureUnits {
@@ -53,7 +81,7 @@ impl Context {
                 tex_1d_array: get(4),
                 tex_2d_array: get(5),
                 rect: get(6),
-                buffer: None,
+                buffer: self.buffer_texture(u),
                 lod_bias: self.st.tex_env.get(u).map_or(0.0, |e| e.lod_bias),
             };
             units.push(unit);

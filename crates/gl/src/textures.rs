@@ -344,7 +344,8 @@ impl Context {
             return;
         }
         let (e, v) = (v.as_enum(), &v.floats(pname)[..]);
-        if target_index(target).is_none() {
+        // Buffer textures have no sampler parameters (GL 3.1 §3.8.4).
+        if target_index(target).is_none() || target == GL_TEXTURE_BUFFER {
             self.set_error(GL_INVALID_ENUM);
             return;
         }

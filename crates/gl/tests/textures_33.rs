@@ -577,3 +577,64 @@ fn integer_images_read_back_as_integers() {
         .is_empty());
     assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
 }
+
+#[test]
+fn buffer_textures_fetch_from_their_buffer() {
+    let mut ctx = Context::new(8, 8);
+    let b = ctx.gen_buffers(1)[0];
+    ctx.bind_buffer(GL_TEXTURE_BUFFER, b);
+    let values: [i32; 6] = [10, -20, 30, -40, 50, -60];
+    let data = bytes(&values, |x: i32| x.to_le_bytes().to_vec());
+    ctx.buffer_data(
+        GL_TEXTURE_BUFFER,
+        data.len() as isize,
+        Some(&data),
+        GL_STATIC_DRAW,
+    );
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_BUFFER, t);
+    ctx.tex_buffer(GL_TEXTURE_BUFFER, GL_RGB8, b);
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM, "no RGB formats in GL 3.1");
+    ctx.tex_buffer(GL_TEXTURE_BUFFER, GL_RG32I, 12345);
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+    ctx.tex_buffer(GL_TEXTURE_BUFFER, GL_RG32I, b);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(ctx.get_integerv(GL_TEXTURE_BINDING_BUFFER)[0], t as i32);
+    assert_eq!(
+        ctx.get_integerv(GL_TEXTURE_BUFFER_DATA_STORE_BINDING)[0],
+        b as i32
+    );
+    ctx.tex_parameter(
+        GL_TEXTURE_BUFFER,
+        GL_TEXTURE_MIN_FILTER,
+        Param::I(GL_NEAREST as i32),
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    let fs = "#version 140\n\
+        uniform isamplerBuffer s;\n\
+        uniform int want;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texelFetch(s, 2) == ivec4(50, -60, 0, 1)\n\
+            && texelFetch(s, 0).y == -20 && textureSize(s) == 3\n\
+            && texelFetch(s, 1).x == want;\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    // The first draw sees 30; after a write to the buffer, 99.
+    let want = |ctx: &mut Context, v: i32| {
+        let prog = ctx.get_integerv(GL_CURRENT_PROGRAM)[0] as u32;
+        let loc = ctx.get_uniform_location(prog, "want");
+        ctx.uniform_1i(loc, v);
+    };
+    // (`want` starts 0: the check can fail.)
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), RED);
+    want(&mut ctx, 30);
+    ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+    assert_eq!(ctx.read_pixels_f32(4, 4, 1, 1)[0], [0.0, 1.0, 0.0, 1.0]);
+    ctx.buffer_sub_data(GL_TEXTURE_BUFFER, 8, &99i32.to_le_bytes());
+    ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+    assert_eq!(ctx.read_pixels_f32(4, 4, 1, 1)[0], [1.0, 0.0, 0.0, 1.0]);
+    want(&mut ctx, 99);
+    ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+    assert_eq!(ctx.read_pixels_f32(4, 4, 1, 1)[0], [0.0, 1.0, 0.0, 1.0]);
+}
