@@ -58,6 +58,8 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_copy_buffer",
     "GL_ARB_uniform_buffer_object",
     "GL_ARB_explicit_attrib_location",
+    "GL_ARB_texture_rg",
+    "GL_EXT_texture_sRGB",
 ];
 
 fn b(x: bool) -> f64 {

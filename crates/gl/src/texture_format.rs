@@ -17,10 +17,17 @@ use crate::enums::*;
 pub fn base_format(internal: i32) -> Option<u32> {
     let f = internal as u32;
     Some(match f {
-        1 | GL_LUMINANCE | GL_LUMINANCE4 | GL_LUMINANCE8 | GL_LUMINANCE12 | GL_LUMINANCE16
-        | GL_LUMINANCE32F_ARB | GL_LUMINANCE16F_ARB | GL_SLUMINANCE | GL_SLUMINANCE8 => {
-            GL_LUMINANCE
-        }
+        1
+        | GL_LUMINANCE
+        | GL_LUMINANCE4
+        | GL_LUMINANCE8
+        | GL_LUMINANCE12
+        | GL_LUMINANCE16
+        | GL_LUMINANCE32F_ARB
+        | GL_LUMINANCE16F_ARB
+        | GL_SLUMINANCE
+        | GL_SLUMINANCE8
+        | GL_COMPRESSED_SLUMINANCE => GL_LUMINANCE,
         2
         | GL_LUMINANCE_ALPHA
         | GL_LUMINANCE4_ALPHA4
@@ -32,11 +39,25 @@ pub fn base_format(internal: i32) -> Option<u32> {
         | GL_LUMINANCE_ALPHA32F_ARB
         | GL_LUMINANCE_ALPHA16F_ARB
         | GL_SLUMINANCE_ALPHA
-        | GL_SLUMINANCE8_ALPHA8 => GL_LUMINANCE_ALPHA,
+        | GL_SLUMINANCE8_ALPHA8
+        | GL_COMPRESSED_SLUMINANCE_ALPHA => GL_LUMINANCE_ALPHA,
         3 | GL_RGB | GL_R3_G3_B2 | GL_RGB4 | GL_RGB5 | GL_RGB8 | GL_RGB10 | GL_RGB12 | GL_RGB16
-        | GL_RGB32F | GL_RGB16F | GL_SRGB | GL_SRGB8 | GL_R11F_G11F_B10F | GL_RGB9_E5 => GL_RGB,
-        4 | GL_RGBA | GL_RGBA2 | GL_RGBA4 | GL_RGB5_A1 | GL_RGBA8 | GL_RGB10_A2 | GL_RGBA12
-        | GL_RGBA16 | GL_RGBA32F | GL_RGBA16F | GL_SRGB_ALPHA | GL_SRGB8_ALPHA8 => GL_RGBA,
+        | GL_RGB32F | GL_RGB16F | GL_SRGB | GL_SRGB8 | GL_R11F_G11F_B10F | GL_RGB9_E5
+        | GL_COMPRESSED_SRGB => GL_RGB,
+        4
+        | GL_RGBA
+        | GL_RGBA2
+        | GL_RGBA4
+        | GL_RGB5_A1
+        | GL_RGBA8
+        | GL_RGB10_A2
+        | GL_RGBA12
+        | GL_RGBA16
+        | GL_RGBA32F
+        | GL_RGBA16F
+        | GL_SRGB_ALPHA
+        | GL_SRGB8_ALPHA8
+        | GL_COMPRESSED_SRGB_ALPHA => GL_RGBA,
         GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 | GL_ALPHA32F_ARB
         | GL_ALPHA16F_ARB => GL_ALPHA,
         GL_INTENSITY | GL_INTENSITY4 | GL_INTENSITY8 | GL_INTENSITY12 | GL_INTENSITY16
@@ -87,6 +108,8 @@ pub fn integer_format(internal: i32) -> Option<(u32, u32, bool)> {
 
 /// True for the sRGB internal formats (EXT_texture_sRGB, GL 2.1 §3.8.15):
 /// their colour components are stored encoded and decoded on sampling.
+/// The generic compressed ones are stored uncompressed, 8 bits a
+/// component, as §3.8.3 allows.
 pub fn is_srgb_format(internal: i32) -> bool {
     matches!(
         internal as u32,
@@ -98,6 +121,10 @@ pub fn is_srgb_format(internal: i32) -> bool {
             | GL_SLUMINANCE8
             | GL_SLUMINANCE_ALPHA
             | GL_SLUMINANCE8_ALPHA8
+            | GL_COMPRESSED_SRGB
+            | GL_COMPRESSED_SRGB_ALPHA
+            | GL_COMPRESSED_SLUMINANCE
+            | GL_COMPRESSED_SLUMINANCE_ALPHA
     )
 }
 

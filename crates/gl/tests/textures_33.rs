@@ -638,3 +638,72 @@ fn buffer_textures_fetch_from_their_buffer() {
     ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
     assert_eq!(ctx.read_pixels_f32(4, 4, 1, 1)[0], [0.0, 1.0, 0.0, 1.0]);
 }
+
+#[test]
+fn red_green_and_rectangle_textures_are_drawn_into() {
+    let mut ctx = Context::new(8, 8);
+    let fs_write = "#version 130\n\
+        out vec4 color;\n\
+        void main() { color = vec4(0.25, 0.75, 1.0, 0.5); }";
+    for (target, internal, want) in [
+        (GL_TEXTURE_2D, GL_RG8, [64u8, 191, 0, 255]),
+        (GL_TEXTURE_2D, GL_R8, [64, 0, 0, 255]),
+        (GL_TEXTURE_RECTANGLE, GL_RGBA8, [64, 191, 255, 128]),
+    ] {
+        let t = ctx.gen_textures(1)[0];
+        ctx.bind_texture(target, t);
+        ctx.tex_image(
+            target,
+            0,
+            internal as i32,
+            [8, 8],
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            None,
+        );
+        nearest(&mut ctx, target);
+        let fb = ctx.gen_framebuffers(1)[0];
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+        ctx.framebuffer_texture_2d(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, t, 0);
+        assert_eq!(
+            ctx.check_framebuffer_status(GL_FRAMEBUFFER),
+            GL_FRAMEBUFFER_COMPLETE
+        );
+        draw(&mut ctx, fs_write, (2, 2));
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, 0);
+        let got = ctx.get_tex_image(target, 0, GL_RGBA, GL_UNSIGNED_BYTE);
+        assert_eq!(got[..4], want, "{internal:#x}");
+    }
+    // Integer colour buffers are not drawn into.
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA8UI as i32,
+        [8, 8],
+        0,
+        GL_RGBA_INTEGER,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    let fb = ctx.gen_framebuffers(1)[0];
+    ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+    ctx.framebuffer_texture_2d(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t, 0);
+    assert_eq!(
+        ctx.check_framebuffer_status(GL_FRAMEBUFFER),
+        GL_FRAMEBUFFER_UNSUPPORTED
+    );
+    // A 1D array is attached by layer only.
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_1D_ARRAY, t);
+    ctx.framebuffer_texture_2d(
+        GL_FRAMEBUFFER,
+        GL_COLOR_ATTACHMENT0,
+        GL_TEXTURE_1D_ARRAY,
+        t,
+        0,
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+}
