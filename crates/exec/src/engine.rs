@@ -761,6 +761,7 @@ unsafe fn texture(
                     },
                 },
                 offset: t.offset.map(|o| o.map(ints)),
+                compare_only: t.compare_only,
                 mask: cur,
             };
             for (c, &x) in req.coord.iter_mut().zip(&t.coord) {

@@ -502,6 +502,7 @@ fn texture(r: &mut Regs, t: &crate::program::TexOp, cur: LaneMask, textures: &dy
                     compare: t.compare.map(|c| floats(&r[c as usize])),
                     lod,
                     offset: t.offset.map(|o| o.map(|x| ints(r, x))),
+                    compare_only: t.compare_only,
                     mask: cur,
                 };
                 textures.sample(&req, &mut out);

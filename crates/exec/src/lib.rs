@@ -344,6 +344,10 @@ pub struct SampleRequest {
     /// added to the scaled coordinates before wrapping (GLSL 1.30 §8.7,
     /// GL 3.0 §3.8.8); `None` for the others.
     pub offset: Option<[[i32; LANES]; 3]>,
+    /// The lookups of GLSL 1.30 and later on shadow samplers, which
+    /// return the comparison result as one `float` (§8.7): component 0
+    /// of `out` is that result whatever the texture's depth texture mode.
+    pub compare_only: bool,
     pub mask: LaneMask,
 }
 
@@ -453,6 +457,7 @@ pub fn implicit_2d_request(unit: u32, st: [&[f32; LANES]; 2], mask: LaneMask) ->
             bias: [0.0; LANES],
         },
         offset: None,
+        compare_only: false,
         mask,
     };
     if let Lod::Derivatives { ddx, ddy, .. } = &mut req.lod {

@@ -487,6 +487,9 @@ pub(crate) struct TexOp {
     pub lod: TexLod,
     /// Integer texel offsets of the `*Offset` forms (unused ones hold 0).
     pub offset: Option<[Reg; 3]>,
+    /// A 1.30 lookup on a shadow sampler ([`crate::SampleRequest`]'s
+    /// `compare_only`).
+    pub compare_only: bool,
     /// First of 4 consecutive result registers.
     pub d: Reg,
 }

@@ -104,7 +104,6 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
     };
     let nlevels = t.faces.iter().map(|f| f.len()).max().unwrap_or(0);
     let mut levels = Vec::with_capacity(nlevels);
-    let mut depth_format = false;
     for l in 0..nlevels {
         if target == TextureTarget::Cube {
             let faces: Vec<Option<&objects::Image>> = (0..6).map(|f| t.image(f, l)).collect();
@@ -127,17 +126,12 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
             levels.push(img);
         } else {
             match t.image(0, l) {
-                Some(i) => {
-                    if l == t.params.base_level.max(0) as usize {
-                        depth_format = is_depth_format(i.internal_format as i32);
-                    }
-                    levels.push(raster::Image::new(
-                        i.width as u32,
-                        i.height as u32,
-                        i.depth as u32,
-                        i.texels.clone(),
-                    ))
-                }
+                Some(i) => levels.push(raster::Image::new(
+                    i.width as u32,
+                    i.height as u32,
+                    i.depth as u32,
+                    i.texels.clone(),
+                )),
                 None => levels.push(raster::Image::new(0, 0, 0, Vec::new())),
             }
         }
@@ -171,16 +165,17 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
     out.lod_bias = p.lod_bias;
     out.base_level = p.base_level.max(0) as u32;
     out.max_level = p.max_level.max(0) as u32;
-    out.depth_format = depth_format;
     // Every face and level has the base level's kind of format when the
     // texture is complete.
     let internal = t.base_image().map(|i| i.internal_format as i32);
+    out.depth_format = internal.is_some_and(is_depth_format);
     out.integer = internal.is_some_and(is_integer_format);
     out.srgb = internal.is_some_and(is_srgb_format);
     out.compare = (p.compare_mode == GL_COMPARE_R_TO_TEXTURE).then(|| compare_func(p.compare_func));
     out.depth_mode = match p.depth_mode {
         GL_INTENSITY => raster::DepthTextureMode::Intensity,
         GL_ALPHA => raster::DepthTextureMode::Alpha,
+        GL_RED => raster::DepthTextureMode::Red,
         _ => raster::DepthTextureMode::Luminance,
     };
     out

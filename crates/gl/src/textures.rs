@@ -201,6 +201,7 @@ impl Context {
             bind_target,
             GL_TEXTURE_1D
                 | GL_TEXTURE_2D
+                | GL_TEXTURE_CUBE_MAP
                 | GL_TEXTURE_1D_ARRAY
                 | GL_TEXTURE_2D_ARRAY
                 | GL_TEXTURE_RECTANGLE

@@ -707,3 +707,47 @@ fn red_green_and_rectangle_textures_are_drawn_into() {
     );
     assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
 }
+
+#[test]
+fn depth_cube_maps_compare_through_sampler_cube_shadow() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_CUBE_MAP, t);
+    // Every face at depth 0.5 except +X at 0.25.
+    for face in 0..6u32 {
+        let d: f32 = if face == 0 { 0.25 } else { 0.5 };
+        let data = bytes(&[d; 4], |x: f32| x.to_le_bytes().to_vec());
+        ctx.tex_image(
+            GL_TEXTURE_CUBE_MAP_POSITIVE_X + face,
+            0,
+            GL_DEPTH_COMPONENT32F as i32,
+            [2, 2],
+            0,
+            GL_DEPTH_COMPONENT,
+            GL_FLOAT,
+            Some(&data),
+        );
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    }
+    nearest(&mut ctx, GL_TEXTURE_CUBE_MAP);
+    ctx.tex_parameter(
+        GL_TEXTURE_CUBE_MAP,
+        GL_TEXTURE_COMPARE_MODE,
+        Param::I(GL_COMPARE_R_TO_TEXTURE as i32),
+    );
+    ctx.tex_parameter(
+        GL_TEXTURE_CUBE_MAP,
+        GL_TEXTURE_COMPARE_FUNC,
+        Param::I(GL_LESS as i32),
+    );
+    let fs = "#version 130\n\
+        uniform samplerCubeShadow s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texture(s, vec4(1.0, 0.1, 0.1, 0.3)) == 0.0\n\
+            && texture(s, vec4(-1.0, 0.1, 0.1, 0.3)) == 1.0\n\
+            && texture(s, vec4(0.1, 0.1, 1.0, 0.6)) == 0.0;\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+}

@@ -287,6 +287,8 @@ pub enum DepthTextureMode {
     Intensity,
     /// (0, 0, 0, r)
     Alpha,
+    /// (r, 0, 0, 1) (GL 3.0)
+    Red,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -194,7 +194,7 @@ fn sample_lane(
         }
     };
     let reference = req.compare.map(|r| r[lane]);
-    sample(
+    let v = sample(
         tex,
         q,
         coord,
@@ -202,7 +202,16 @@ fn sample_lane(
         unit.lod_bias + shader_bias,
         reference,
         offset,
-    )
+    );
+    if req.compare_only && tex.depth_format {
+        // The value before the depth texture mode spread it.
+        let r = match tex.depth_mode {
+            DepthTextureMode::Alpha => v[3],
+            _ => v[0],
+        };
+        return [r; 4];
+    }
+    v
 }
 
 /// Cube face selection (GL 2.1 §3.8.6, table 3.19): face index and
@@ -371,6 +380,7 @@ fn depth_rgba(tex: &Texture, value: [f32; 4]) -> [f32; 4] {
             DepthTextureMode::Luminance => [r, r, r, 1.0],
             DepthTextureMode::Intensity => [r, r, r, r],
             DepthTextureMode::Alpha => [0.0, 0.0, 0.0, r],
+            DepthTextureMode::Red => [r, 0.0, 0.0, 1.0],
         }
     } else {
         value

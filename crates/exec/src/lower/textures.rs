@@ -100,6 +100,7 @@ impl<'m> Lowerer<'m> {
                 compare: None,
                 lod: TexLod::Explicit(lod),
                 offset: None,
+                compare_only: false,
                 d: d[0],
             });
             self.emit(Op::Texture { index })?;
@@ -159,6 +160,7 @@ impl<'m> Lowerer<'m> {
                 compare: None,
                 lod: TexLod::Explicit(lod),
                 offset,
+                compare_only: false,
                 d: d[0],
             });
             self.emit(Op::Texture { index })?;
@@ -268,6 +270,9 @@ impl<'m> Lowerer<'m> {
             TexLod::Explicit(extra)
         };
         let offset = offset3(self, off)?;
+        // The lookups of 1.30 and later return the comparison alone from a
+        // shadow sampler (`float`), the older ones a `vec4`.
+        let compare_only = shadow && !f.name().starts_with("shadow");
         let d = self.temps(4)?;
         let index = self.p.textures.len() as u32;
         self.p.textures.push(TexOp {
@@ -279,12 +284,11 @@ impl<'m> Lowerer<'m> {
             compare,
             lod,
             offset,
+            compare_only,
             d: d[0],
         });
         self.emit(Op::Texture { index })?;
-        // The lookups of 1.30 and later return the comparison alone from a
-        // shadow sampler (`float`), the older ones a `vec4`.
-        if shadow && !f.name().starts_with("shadow") {
+        if compare_only {
             return Ok(vec![d[0]]);
         }
         Ok(d)

@@ -47,6 +47,7 @@ pub(super) fn request_2d(
             bias: [0.0; LANES],
         },
         offset: None,
+        compare_only: false,
         mask,
     }
 }
@@ -209,6 +210,7 @@ fn fast_path_matches_the_general_path_bit_for_bit() {
                         compare: None,
                         lod,
                         offset: None,
+                        compare_only: false,
                         mask: 0xffff & !(1 << 9),
                     };
                     let slow = general(&units, &req);
@@ -442,6 +444,7 @@ fn checked_entries_follow_the_units_textures() {
         compare: None,
         lod: Lod::Explicit(std::array::from_fn(|l| l as f32 * 0.3 - 1.0)),
         offset: None,
+        compare_only: false,
         mask: 0xffff,
     };
     // Complete, another size, f32 texels, incomplete (a missing level).
@@ -520,6 +523,7 @@ fn other_requests_take_the_general_path() {
         compare: None,
         lod: Lod::Explicit([0.0; LANES]),
         offset: None,
+        compare_only: false,
         mask: 0b1111,
     };
     let units = |tex: Texture| {
@@ -547,6 +551,7 @@ fn other_requests_take_the_general_path() {
     // ... unless the other unit's lane is masked off.
     let masked = SampleRequest {
         offset: None,
+        compare_only: false,
         mask: 0b1011,
         ..req(two)
     };

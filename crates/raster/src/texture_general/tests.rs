@@ -105,6 +105,7 @@ fn level_of_detail_is_per_quad() {
         compare: None,
         lod: Lod::Derivatives { ddx, ddy, bias },
         offset: None,
+        compare_only: false,
         mask: 0xffff,
     };
     let mut out = [[0.0; LANES]; 4];
@@ -207,6 +208,7 @@ fn incomplete_textures_sample_black() {
         compare: None,
         lod: Lod::Explicit([0.0; LANES]),
         offset: None,
+        compare_only: false,
         mask: 0b11,
     };
     let mut out = [[7.0; LANES]; 4];
@@ -474,6 +476,7 @@ fn gradients_are_each_lanes_own() {
         compare: None,
         lod: Lod::Gradients { ddx, ddy },
         offset: None,
+        compare_only: false,
         mask: 0xffff,
     };
     let mut out = [[0.0; LANES]; 4];
@@ -539,4 +542,47 @@ fn fetches_and_sizes() {
     assert_eq!(units.size(0, SamplerKind::Sampler2DRect, 0), [5, 3, 0]);
     assert_eq!(units.size(0, SamplerKind::Sampler2D, 0), [0, 0, 0]);
     assert_eq!(units.size(1, SamplerKind::Sampler2DRect, 0), [0, 0, 0]);
+}
+
+#[test]
+fn glsl130_shadow_lookups_ignore_the_depth_texture_mode() {
+    let mut tex = Texture::new(
+        TextureTarget::Tex2D,
+        vec![solid(2, 2, [0.5, 0.5, 0.5, 1.0])],
+    );
+    tex.depth_format = true;
+    tex.compare = Some(CompareFunc::Less);
+    tex.min_filter = MinFilter::Nearest;
+    tex.mag_filter = MagFilter::Nearest;
+    for (mode, legacy) in [
+        (DepthTextureMode::Alpha, [0.0, 0.0, 0.0, 1.0]),
+        (DepthTextureMode::Red, [1.0, 0.0, 0.0, 1.0]),
+        (DepthTextureMode::Intensity, [1.0; 4]),
+    ] {
+        tex.depth_mode = mode;
+        let units = TextureUnits::new(vec![TextureUnit {
+            tex_2d: Some(Arc::new(tex.clone())),
+            ..TextureUnit::default()
+        }]);
+        let mut req = SampleRequest {
+            unit: [0; LANES],
+            target: SamplerKind::Sampler2DShadow,
+            coord: [[0.5; LANES]; 4],
+            compare: Some([0.25; LANES]),
+            lod: Lod::Explicit([0.0; LANES]),
+            offset: None,
+            compare_only: false,
+            mask: 1,
+        };
+        let mut out = [[0.0; LANES]; 4];
+        units.sample(&req, &mut out);
+        assert_eq!(
+            [out[0][0], out[1][0], out[2][0], out[3][0]],
+            legacy,
+            "{mode:?}"
+        );
+        req.compare_only = true;
+        units.sample(&req, &mut out);
+        assert_eq!(out[0][0], 1.0, "{mode:?}");
+    }
 }
