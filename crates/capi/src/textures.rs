@@ -44,6 +44,12 @@ gl_entry_points! {
         if !v.is_null() { c.gl.tex_parameter(target, pname, Param::Iv(&rd_vec(v, n))) }
     }
     fn glGetTexParameteriv(target: GLenum, pname: GLenum, v: *mut GLint) => |c| {
+        if pname == GL_TEXTURE_SWIZZLE_RGBA {
+            // The one four-valued integer parameter.
+            let r: Vec<GLint> = c.gl.get_tex_parameterfv(target, pname).iter().map(|&x| x as GLint).collect();
+            wr(v, &r);
+            return;
+        }
         let r = c.gl.get_tex_parameteriv(target, pname);
         wr(v, &[r]);
     }

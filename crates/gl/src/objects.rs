@@ -113,6 +113,8 @@ pub struct TexParams {
     pub compare_func: u32,
     pub depth_mode: u32,
     pub generate_mipmap: bool,
+    /// TEXTURE_SWIZZLE_R, _G, _B, _A (GL 3.3 §3.9.8).
+    pub swizzle: [u32; 4],
 }
 
 impl Default for TexParams {
@@ -131,6 +133,7 @@ impl Default for TexParams {
             compare_func: GL_LEQUAL,
             depth_mode: GL_LUMINANCE,
             generate_mipmap: false,
+            swizzle: [GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA],
         }
     }
 }

@@ -172,6 +172,14 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
     out.integer = internal.is_some_and(is_integer_format);
     out.srgb = internal.is_some_and(is_srgb_format);
     out.compare = (p.compare_mode == GL_COMPARE_R_TO_TEXTURE).then(|| compare_func(p.compare_func));
+    out.swizzle = p.swizzle.map(|s| match s {
+        GL_RED => raster::Swizzle::R,
+        GL_GREEN => raster::Swizzle::G,
+        GL_BLUE => raster::Swizzle::B,
+        GL_ALPHA => raster::Swizzle::A,
+        GL_ZERO => raster::Swizzle::Zero,
+        _ => raster::Swizzle::One,
+    });
     out.depth_mode = match p.depth_mode {
         GL_INTENSITY => raster::DepthTextureMode::Intensity,
         GL_ALPHA => raster::DepthTextureMode::Alpha,

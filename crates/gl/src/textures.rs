@@ -38,6 +38,11 @@ fn integer_data_matches(internal: i32, format: u32, ty: u32) -> bool {
     is_integer_format(internal) == int_data && !(int_data && matches!(ty, GL_FLOAT | GL_HALF_FLOAT))
 }
 
+/// GL 3.3 §3.9.8: what a texture swizzle may select.
+fn valid_swizzle(s: u32) -> bool {
+    matches!(s, GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_ZERO | GL_ONE)
+}
+
 fn valid_filter(f: u32, min: bool) -> bool {
     matches!(f, GL_NEAREST | GL_LINEAR)
         || (min
@@ -350,7 +355,7 @@ impl Context {
             self.set_error(GL_INVALID_ENUM);
             return;
         }
-        let need = if pname == GL_TEXTURE_BORDER_COLOR {
+        let need = if matches!(pname, GL_TEXTURE_BORDER_COLOR | GL_TEXTURE_SWIZZLE_RGBA) {
             4
         } else {
             1
@@ -424,6 +429,23 @@ impl Context {
                 p.depth_mode = e
             }
             GL_GENERATE_MIPMAP => p.generate_mipmap = v[0] != 0.0,
+            GL_TEXTURE_SWIZZLE_R..=GL_TEXTURE_SWIZZLE_RGBA => {
+                let all = pname == GL_TEXTURE_SWIZZLE_RGBA;
+                let values: Vec<u32> = v
+                    .iter()
+                    .take(if all { 4 } else { 1 })
+                    .map(|&x| x as u32)
+                    .collect();
+                if values.iter().all(|&s| valid_swizzle(s)) {
+                    if all {
+                        p.swizzle.copy_from_slice(&values);
+                    } else {
+                        p.swizzle[(pname - GL_TEXTURE_SWIZZLE_R) as usize] = values[0];
+                    }
+                } else {
+                    err = GL_INVALID_ENUM;
+                }
+            }
             GL_TEXTURE_PRIORITY => {}
             GL_TEXTURE_MIN_FILTER
             | GL_TEXTURE_MAG_FILTER
@@ -461,6 +483,9 @@ impl Context {
             GL_TEXTURE_COMPARE_FUNC => p.compare_func as i32,
             GL_DEPTH_TEXTURE_MODE => p.depth_mode as i32,
             GL_GENERATE_MIPMAP => p.generate_mipmap as i32,
+            GL_TEXTURE_SWIZZLE_R..=GL_TEXTURE_SWIZZLE_A => {
+                p.swizzle[(pname - GL_TEXTURE_SWIZZLE_R) as usize] as i32
+            }
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 0
@@ -526,6 +551,7 @@ impl Context {
             GL_TEXTURE_MAX_LOD => vec![p.max_lod],
             GL_TEXTURE_LOD_BIAS => vec![p.lod_bias],
             GL_TEXTURE_PRIORITY | GL_TEXTURE_RESIDENT => vec![1.0],
+            GL_TEXTURE_SWIZZLE_RGBA => p.swizzle.iter().map(|&s| s as f32).collect(),
             _ => vec![self.get_tex_parameteriv(target, pname) as f32],
         }
     }

@@ -751,3 +751,59 @@ fn depth_cube_maps_compare_through_sampler_cube_shadow() {
         }";
     assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
 }
+
+#[test]
+fn swizzles_rearrange_lookup_results() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        [1, 1],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&[255, 0, 51, 102]),
+    );
+    nearest(&mut ctx, GL_TEXTURE_2D);
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_SWIZZLE_R,
+        Param::I(GL_BLUE as i32),
+    );
+    ctx.tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_G, Param::I(GL_ONE as i32));
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_SWIZZLE_A,
+        Param::I(GL_ZERO as i32),
+    );
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_SWIZZLE_B,
+        Param::I(GL_RGBA as i32),
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    assert_eq!(
+        ctx.get_tex_parameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_R),
+        GL_BLUE as i32
+    );
+    assert_eq!(
+        ctx.get_tex_parameterfv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA),
+        [GL_BLUE, GL_ONE, GL_BLUE, GL_ZERO].map(|x| x as f32)
+    );
+    let fs = "#version 130\n\
+        uniform sampler2D s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texture(s, vec2(0.5)) == vec4(0.2, 1.0, 0.2, 0.0)\n\
+            && texelFetch(s, ivec2(0), 0) == vec4(0.2, 1.0, 0.2, 0.0);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+    // All four at once; back to the identity.
+    let identity = [GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA].map(|x| x as i32);
+    ctx.tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, Param::Iv(&identity));
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), RED);
+}

@@ -256,7 +256,8 @@ pub use state::{
     PolygonMode, PolygonOffset, Rect, StencilFace, StencilOp, StencilState,
 };
 pub use texture::{
-    DepthTextureMode, Image, MagFilter, MinFilter, Texture, TextureTarget, TextureUnit, Wrap,
+    DepthTextureMode, Image, MagFilter, MinFilter, Swizzle, Texture, TextureTarget, TextureUnit,
+    Wrap,
 };
 pub use texture_units::TextureUnits;
 pub use vertex::{fetch_column_each, fetch_vertex, VertexFetch};

@@ -320,6 +320,43 @@ pub struct Texture {
     /// each texel's red, green and blue are decoded to linear before
     /// filtering ([`srgb_to_linear`]).
     pub srgb: bool,
+    /// TEXTURE_SWIZZLE_R/G/B/A (GL 3.3 §3.9.8): what each component of a
+    /// lookup's result is, from the value after the depth texture mode.
+    pub swizzle: [Swizzle; 4],
+}
+
+/// One component's texture swizzle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Swizzle {
+    R,
+    G,
+    B,
+    A,
+    Zero,
+    One,
+}
+
+/// The identity swizzle.
+pub const NO_SWIZZLE: [Swizzle; 4] = [Swizzle::R, Swizzle::G, Swizzle::B, Swizzle::A];
+
+impl Texture {
+    /// `v` through the texture's swizzle (ONE is 1.0, or integer 1 for an
+    /// integer texture).
+    #[inline]
+    pub(crate) fn swizzled(&self, v: [f32; 4]) -> [f32; 4] {
+        if self.swizzle == NO_SWIZZLE {
+            return v;
+        }
+        let one = if self.integer { f32::from_bits(1) } else { 1.0 };
+        self.swizzle.map(|s| match s {
+            Swizzle::R => v[0],
+            Swizzle::G => v[1],
+            Swizzle::B => v[2],
+            Swizzle::A => v[3],
+            Swizzle::Zero => 0.0,
+            Swizzle::One => one,
+        })
+    }
 }
 
 /// The sRGB decoding of a stored component c in [0, 1] (GL 2.1 eq. 3.30):
@@ -354,6 +391,7 @@ impl Texture {
             depth_mode: DepthTextureMode::Luminance,
             integer: false,
             srgb: false,
+            swizzle: NO_SWIZZLE,
         }
     }
 

@@ -273,6 +273,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
         || tex.depth_format
         || tex.integer
         || tex.srgb
+        || tex.swizzle != crate::texture::NO_SWIZZLE
         || !borderless(tex.wrap[0])
         || !borderless(tex.wrap[1])
     {

@@ -125,7 +125,7 @@ fn fetch_lane(units: &[TextureUnit], req: &FetchRequest, lane: usize) -> Option<
     }
     let at = |c: i32, a: usize| if a < n { c as usize } else { 0 };
     let t = img.texel(at(i, 0), at(j, 1), at(k, 2));
-    Some(depth_rgba(tex, decoded(tex, t)))
+    Some(tex.swizzled(depth_rgba(tex, decoded(tex, t))))
 }
 
 /// `textureSize` (GLSL 1.30 §8.7): the sizes of level base + `lod` of the
@@ -211,7 +211,7 @@ fn sample_lane(
         };
         return [r; 4];
     }
-    v
+    tex.swizzled(v)
 }
 
 /// Cube face selection (GL 2.1 §3.8.6, table 3.19): face index and

@@ -983,7 +983,14 @@ fn parse_texparameter(rest: &str, line: &str) -> Result<Command, CommandError> {
                 value: TexParamValue::Color(c),
             });
         }
-        "swizzle_r" => return Ok(Command::NeedsLaterGl("texture swizzle (OpenGL 3.3)".into())),
+        "swizzle_r" | "swizzle_g" | "swizzle_b" | "swizzle_a" => &[
+            ("red", GL_RED),
+            ("green", GL_GREEN),
+            ("blue", GL_BLUE),
+            ("alpha", GL_ALPHA),
+            ("zero", GL_ZERO),
+            ("one", GL_ONE),
+        ],
         _ => {
             return Err(CommandError(format!(
                 "unknown texture parameter in `{line}'"
@@ -997,7 +1004,11 @@ fn parse_texparameter(rest: &str, line: &str) -> Result<Command, CommandError> {
         "mag" => GL_TEXTURE_MAG_FILTER,
         "wrap_s" => GL_TEXTURE_WRAP_S,
         "wrap_t" => GL_TEXTURE_WRAP_T,
-        _ => GL_TEXTURE_WRAP_R,
+        "wrap_r" => GL_TEXTURE_WRAP_R,
+        "swizzle_r" => GL_TEXTURE_SWIZZLE_R,
+        "swizzle_g" => GL_TEXTURE_SWIZZLE_G,
+        "swizzle_b" => GL_TEXTURE_SWIZZLE_B,
+        _ => GL_TEXTURE_SWIZZLE_A,
     };
     let (v, _) = scan::word(rest).ok_or_else(|| bad(&format!("Bad {param}"), line))?;
     let value = table
@@ -1458,7 +1469,16 @@ mod tests {
                 value: TexParamValue::Enum(GL_GREATER)
             }
         );
+        assert_eq!(
+            p("texparameter Rect swizzle_g one"),
+            Command::TexParameter {
+                target: GL_TEXTURE_RECTANGLE,
+                pname: GL_TEXTURE_SWIZZLE_G,
+                value: TexParamValue::Enum(GL_ONE)
+            }
+        );
         assert!(parse("texture rgbw 0 (8)").is_err());
         assert!(parse("texparameter 2D depth_mode purple").is_err());
+        assert!(parse("texparameter 2D swizzle_a purple").is_err());
     }
 }
