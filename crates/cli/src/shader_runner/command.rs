@@ -172,6 +172,27 @@ pub enum TextureCommand {
         width: u32,
         height: u32,
     },
+    /// `texture rgbw 1DArray UNIT (W, L)` / `rgbw 2DArray UNIT (W, H, L)`:
+    /// each layer one colour of red, green, blue, white in turn;
+    /// `texture junk 2DArray UNIT (W, H, L)` (`junk`): contents undefined,
+    /// no parameters set.
+    Array {
+        unit: u32,
+        target: u32,
+        width: u32,
+        height: u32,
+        layers: u32,
+        junk: bool,
+    },
+    /// `texture shadow1DArray UNIT (W, L)` / `shadow2DArray UNIT (W, H,
+    /// L)`: every layer the depth gradient of `Shadow`, compared GREATER.
+    ShadowArray {
+        unit: u32,
+        target: u32,
+        width: u32,
+        height: u32,
+        layers: u32,
+    },
 }
 
 /// A `texparameter` value.
@@ -688,12 +709,7 @@ const LATER_GL: &[(&str, &str)] = &[
     ("viewport swizzle ", "GL_NV_viewport_swizzle"),
     ("resident ", "GL_ARB_bindless_texture"),
     ("texture integer ", "integer textures (OpenGL 3.0)"),
-    ("texture junk 2DArray ", "array textures (OpenGL 3.0)"),
     ("texture storage ", "texture storage (OpenGL 4.2)"),
-    ("texture rgbw 2DArray ", "array textures (OpenGL 3.0)"),
-    ("texture rgbw 1DArray ", "array textures (OpenGL 3.0)"),
-    ("texture shadow1DArray ", "array textures (OpenGL 3.0)"),
-    ("texture shadow2DArray ", "array textures (OpenGL 3.0)"),
     ("texcoord ", "the `texcoord' command"),
     ("parameter ", "ARB assembly programs"),
     ("patch parameter ", "tessellation (OpenGL 4.0)"),
@@ -879,6 +895,59 @@ fn parse_texture(line: &str) -> Result<Option<TextureCommand>, CommandError> {
             target: GL_TEXTURE_2D,
             width: dim(i[1], line)?,
             height: dim(i[2], line)?,
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture rgbw 2DArray %d ( %d , %d , %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::Array {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_2D_ARRAY,
+            width: dim(i[1], line)?,
+            height: dim(i[2], line)?,
+            layers: dim(i[3], line)?,
+            junk: false,
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture junk 2DArray %d ( %d , %d , %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::Array {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_2D_ARRAY,
+            width: dim(i[1], line)?,
+            height: dim(i[2], line)?,
+            layers: dim(i[3], line)?,
+            junk: true,
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture rgbw 1DArray %d ( %d , %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::Array {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_1D_ARRAY,
+            width: dim(i[1], line)?,
+            height: 1,
+            layers: dim(i[2], line)?,
+            junk: false,
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture shadow2DArray %d ( %d , %d , %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::ShadowArray {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_2D_ARRAY,
+            width: dim(i[1], line)?,
+            height: dim(i[2], line)?,
+            layers: dim(i[3], line)?,
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture shadow1DArray %d ( %d , %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::ShadowArray {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_1D_ARRAY,
+            width: dim(i[1], line)?,
+            height: 1,
+            layers: dim(i[2], line)?,
         }));
     }
     if let Some(v) = sscanf_all(line, "texture shadowRect %d ( %d , %d )") {
@@ -1476,6 +1545,27 @@ mod tests {
                 pname: GL_TEXTURE_SWIZZLE_G,
                 value: TexParamValue::Enum(GL_ONE)
             }
+        );
+        assert_eq!(
+            p("texture rgbw 1DArray 1 (16, 3)"),
+            Command::Texture(TextureCommand::Array {
+                unit: 1,
+                target: GL_TEXTURE_1D_ARRAY,
+                width: 16,
+                height: 1,
+                layers: 3,
+                junk: false
+            })
+        );
+        assert_eq!(
+            p("texture shadow2DArray 0 (8, 4, 2)"),
+            Command::Texture(TextureCommand::ShadowArray {
+                unit: 0,
+                target: GL_TEXTURE_2D_ARRAY,
+                width: 8,
+                height: 4,
+                layers: 2
+            })
         );
         assert!(parse("texture rgbw 0 (8)").is_err());
         assert!(parse("texparameter 2D depth_mode purple").is_err());
