@@ -12,6 +12,15 @@ use gl::enums::*;
 use gl::Param;
 use std::ffi::c_void;
 
+/// How many values a glTexParameter*v call reads for `pname`.
+fn tex_parameter_count(pname: GLenum) -> i64 {
+    if matches!(pname, GL_TEXTURE_BORDER_COLOR | GL_TEXTURE_SWIZZLE_RGBA) {
+        4
+    } else {
+        1
+    }
+}
+
 gl_entry_points! {
     // ---- objects ----
     fn glGenTextures(n: GLsizei, names: *mut GLuint) => |c| {
@@ -30,7 +39,7 @@ gl_entry_points! {
     [list] fn glTexParameteri(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_parameter(target, pname, Param::I(v)) }
     [list] fn glTexParameterf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_parameter(target, pname, Param::F(v)) }
     fn glTexParameterfv(target: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
-        let n = if pname == GL_TEXTURE_BORDER_COLOR { 4 } else { 1 };
+        let n = tex_parameter_count(pname);
         if c.compiling() && !v.is_null() {
             let arr = rd_vec(v, n);
             if c.record(move || unsafe { glTexParameterfv(target, pname, arr.as_ptr()) }) {
@@ -40,8 +49,47 @@ gl_entry_points! {
         if !v.is_null() { c.gl.tex_parameter(target, pname, Param::Fv(&rd_vec(v, n))) }
     }
     fn glTexParameteriv(target: GLenum, pname: GLenum, v: *const GLint) => |c| {
-        let n = if pname == GL_TEXTURE_BORDER_COLOR { 4 } else { 1 };
+        let n = tex_parameter_count(pname);
         if !v.is_null() { c.gl.tex_parameter(target, pname, Param::Iv(&rd_vec(v, n))) }
+    }
+    // GL 3.0's integer forms: the border colour's values are taken as
+    // they are (not normalized), the other parameters as glTexParameteriv.
+    fn glTexParameterIiv(target: GLenum, pname: GLenum, v: *const GLint) => |c| {
+        if v.is_null() { return; }
+        let vals = rd_vec(v, tex_parameter_count(pname));
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            let f: Vec<f32> = vals.iter().map(|&x| x as f32).collect();
+            c.gl.tex_parameter(target, pname, Param::Fv(&f));
+        } else {
+            c.gl.tex_parameter(target, pname, Param::Iv(&vals));
+        }
+    }
+    fn glTexParameterIuiv(target: GLenum, pname: GLenum, v: *const GLuint) => |c| {
+        if v.is_null() { return; }
+        let vals = rd_vec(v, tex_parameter_count(pname));
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            let f: Vec<f32> = vals.iter().map(|&x| x as f32).collect();
+            c.gl.tex_parameter(target, pname, Param::Fv(&f));
+        } else {
+            let i: Vec<i32> = vals.iter().map(|&x| x as i32).collect();
+            c.gl.tex_parameter(target, pname, Param::Iv(&i));
+        }
+    }
+    fn glGetTexParameterIiv(target: GLenum, pname: GLenum, v: *mut GLint) => |c| {
+        let r: Vec<GLint> = if tex_parameter_count(pname) == 4 {
+            c.gl.get_tex_parameterfv(target, pname).iter().map(|&x| x as GLint).collect()
+        } else {
+            vec![c.gl.get_tex_parameteriv(target, pname)]
+        };
+        wr(v, &r);
+    }
+    fn glGetTexParameterIuiv(target: GLenum, pname: GLenum, v: *mut GLuint) => |c| {
+        let r: Vec<GLuint> = if tex_parameter_count(pname) == 4 {
+            c.gl.get_tex_parameterfv(target, pname).iter().map(|&x| x as GLuint).collect()
+        } else {
+            vec![c.gl.get_tex_parameteriv(target, pname) as GLuint]
+        };
+        wr(v, &r);
     }
     fn glGetTexParameteriv(target: GLenum, pname: GLenum, v: *mut GLint) => |c| {
         if pname == GL_TEXTURE_SWIZZLE_RGBA {
