@@ -3,8 +3,10 @@
 //! cube faces, sampler parameters) for a draw.
 //!
 //! Contract: a conversion is cached per (name, target) and reused while
-//! the texture's generation is unchanged; an incomplete cube level becomes
-//! an empty image.
+//! the texture's generation is unchanged, except for buffer textures,
+//! decoded from their buffer at every draw; an incomplete cube level
+//! becomes an empty image. The base level's internal format says whether
+//! the texture is a depth, integer or sRGB one.
 
 use crate::enums::*;
 use crate::objects;

@@ -1,8 +1,11 @@
-//! Texture objects' entry points (GL 2.1 §3.8): glGenTextures,
-//! glBindTexture, glDeleteTextures, image specification (glTexImage*,
-//! glTexSubImage*: one method each for the 1D, 2D and 3D forms), sampler
-//! parameters (glTexParameter*) and the queries
-//! (glGetTexParameter*, glGetTexLevelParameteriv, glGetTexImage).
+//! Texture objects' entry points (GL 2.1 §3.8, GL 3.3 §3.9): glGenTextures,
+//! glBindTexture (1D, 2D, 3D, cube, 1D and 2D array, rectangle and buffer
+//! targets), glDeleteTextures, image specification (glTexImage*,
+//! glTexSubImage*: one method each for the 1D, 2D and 3D forms; integer
+//! formats take integer data only), sampler parameters (glTexParameter*,
+//! swizzles included; rectangles refuse repeating wraps and mipmap
+//! filters) and the queries (glGetTexParameter*,
+//! glGetTexLevelParameteriv, glGetTexImage).
 //!
 //! Contract: every image specification unpacks the client image through
 //! [`crate::pixel_transfer`] into the stored texel form of
