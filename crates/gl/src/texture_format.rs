@@ -168,6 +168,34 @@ fn rgb9e5(rgb: [f32; 3]) -> [f32; 3] {
     c.map(|x| ((x / scale + 0.5).floor() * scale) as f32)
 }
 
+/// What `glGetTexLevelParameteriv` reports of an internal format's colour
+/// components (GL 3.0 Table 6.17): their bits (8 for the unsized and `*8`
+/// formats, as stored) and their type (GL_INT, GL_UNSIGNED_INT, GL_FLOAT
+/// or GL_UNSIGNED_NORMALIZED).
+pub fn component_info(internal: i32) -> (u32, u32) {
+    if let Some((_, bits, signed)) = integer_format(internal) {
+        return (bits, if signed { GL_INT } else { GL_UNSIGNED_INT });
+    }
+    match internal as u32 {
+        GL_R11F_G11F_B10F => (11, GL_FLOAT),
+        GL_RGB9_E5 => (9, GL_FLOAT),
+        GL_RGBA16F
+        | GL_RGB16F
+        | GL_R16F
+        | GL_RG16F
+        | GL_ALPHA16F_ARB
+        | GL_LUMINANCE16F_ARB
+        | GL_LUMINANCE_ALPHA16F_ARB
+        | GL_INTENSITY16F_ARB => (16, GL_FLOAT),
+        GL_DEPTH_COMPONENT32F | GL_DEPTH32F_STENCIL8 => (32, GL_FLOAT),
+        _ if is_float_format(internal) => (32, GL_FLOAT),
+        _ => match format_bits(internal) {
+            Some(b) => (b, GL_UNSIGNED_NORMALIZED),
+            None => (32, GL_UNSIGNED_NORMALIZED),
+        },
+    }
+}
+
 /// True for the integer internal formats.
 pub fn is_integer_format(internal: i32) -> bool {
     integer_format(internal).is_some()

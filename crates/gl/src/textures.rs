@@ -24,7 +24,9 @@ use crate::pixel_transfer::{
     format_components, integer_client_format, pack_integer_pixels, pack_pixels, pixel_size,
     unpack_image,
 };
-use crate::texture_format::{base_format, integer_format, is_depth_format, is_integer_format};
+use crate::texture_format::{
+    base_format, component_info, integer_format, is_depth_format, is_integer_format,
+};
 use crate::{Context, MAX_TEXTURE_SIZE};
 
 /// The first three of `v`'s entries, `pad` for those it lacks: the
@@ -510,14 +512,21 @@ impl Context {
             )
         });
         let bits = |has: &[u32]| match info {
-            Some((_, _, base)) if has.contains(&base) => {
-                if base == GL_DEPTH_COMPONENT {
+            Some((_, internal, base)) if has.contains(&base) => {
+                if base == GL_DEPTH_COMPONENT && internal != GL_DEPTH_COMPONENT32F {
                     24
                 } else {
-                    8
+                    component_info(internal as i32).0 as i32
                 }
             }
             _ => 0,
+        };
+        // GL 3.0's component types: NONE for a component the format lacks.
+        let kind = |has: &[u32]| match info {
+            Some((_, internal, base)) if has.contains(&base) => {
+                component_info(internal as i32).1 as i32
+            }
+            _ => GL_NONE as i32,
         };
         match pname {
             GL_TEXTURE_WIDTH => info.map_or(0, |i| i.0[0]),
@@ -527,11 +536,22 @@ impl Context {
             GL_TEXTURE_BORDER | GL_TEXTURE_COMPRESSED => 0,
             GL_TEXTURE_RED_SIZE => bits(&[GL_RGB, GL_RGBA, GL_RED, GL_RG]),
             GL_TEXTURE_GREEN_SIZE => bits(&[GL_RGB, GL_RGBA, GL_RG]),
-            GL_TEXTURE_BLUE_SIZE => bits(&[GL_RGB, GL_RGBA]),
+            // R11F_G11F_B10F's blue has one bit less.
+            GL_TEXTURE_BLUE_SIZE => match info {
+                Some((_, GL_R11F_G11F_B10F, _)) => 10,
+                _ => bits(&[GL_RGB, GL_RGBA]),
+            },
             GL_TEXTURE_ALPHA_SIZE => bits(&[GL_RGBA, GL_ALPHA, GL_LUMINANCE_ALPHA]),
             GL_TEXTURE_LUMINANCE_SIZE => bits(&[GL_LUMINANCE, GL_LUMINANCE_ALPHA]),
             GL_TEXTURE_INTENSITY_SIZE => bits(&[GL_INTENSITY]),
             GL_TEXTURE_DEPTH_SIZE => bits(&[GL_DEPTH_COMPONENT]),
+            GL_TEXTURE_RED_TYPE => kind(&[GL_RGB, GL_RGBA, GL_RED, GL_RG]),
+            GL_TEXTURE_GREEN_TYPE => kind(&[GL_RGB, GL_RGBA, GL_RG]),
+            GL_TEXTURE_BLUE_TYPE => kind(&[GL_RGB, GL_RGBA]),
+            GL_TEXTURE_ALPHA_TYPE => kind(&[GL_RGBA, GL_ALPHA, GL_LUMINANCE_ALPHA]),
+            GL_TEXTURE_LUMINANCE_TYPE => kind(&[GL_LUMINANCE, GL_LUMINANCE_ALPHA]),
+            GL_TEXTURE_INTENSITY_TYPE => kind(&[GL_INTENSITY]),
+            GL_TEXTURE_DEPTH_TYPE => kind(&[GL_DEPTH_COMPONENT, GL_DEPTH_STENCIL]),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 0

@@ -807,3 +807,61 @@ fn swizzles_rearrange_lookup_results() {
     ctx.tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, Param::Iv(&identity));
     assert_eq!(draw(&mut ctx, fs, (4, 4)), RED);
 }
+
+#[test]
+fn level_queries_report_component_sizes_and_types() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    let q = |ctx: &mut Context, pname: u32| ctx.get_tex_level_parameteriv(GL_TEXTURE_2D, 0, pname);
+    for (internal, format, size, ty) in [
+        (GL_RGBA16I, GL_RGBA_INTEGER, 16, GL_INT),
+        (GL_RGBA32UI, GL_RGBA_INTEGER, 32, GL_UNSIGNED_INT),
+        (GL_RGBA16F, GL_RGBA, 16, GL_FLOAT),
+        (GL_RGBA8, GL_RGBA, 8, GL_UNSIGNED_NORMALIZED),
+    ] {
+        ctx.tex_image(
+            GL_TEXTURE_2D,
+            0,
+            internal as i32,
+            [1, 1],
+            0,
+            format,
+            GL_UNSIGNED_BYTE,
+            None,
+        );
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        assert_eq!(q(&mut ctx, GL_TEXTURE_ALPHA_SIZE), size, "{internal:#x}");
+        assert_eq!(q(&mut ctx, GL_TEXTURE_RED_TYPE), ty as i32, "{internal:#x}");
+        assert_eq!(q(&mut ctx, GL_TEXTURE_DEPTH_TYPE), GL_NONE as i32);
+    }
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_R8 as i32,
+        [1, 1],
+        0,
+        GL_RED,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    assert_eq!(q(&mut ctx, GL_TEXTURE_GREEN_TYPE), GL_NONE as i32);
+    assert_eq!(q(&mut ctx, GL_TEXTURE_RED_SIZE), 8);
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_R11F_G11F_B10F as i32,
+        [1, 1],
+        0,
+        GL_RGB,
+        GL_FLOAT,
+        None,
+    );
+    assert_eq!(
+        [
+            q(&mut ctx, GL_TEXTURE_GREEN_SIZE),
+            q(&mut ctx, GL_TEXTURE_BLUE_SIZE)
+        ],
+        [11, 10]
+    );
+}
