@@ -2,7 +2,7 @@
 //! names and bindings, the active unit, glTexImage{1,2,3}D and
 //! glTexSubImage2D (images from client memory or the pixel unpack buffer,
 //! `buffers::image_bytes`), parameters and their queries, and
-//! mipmap generation. Reading images back and the other sub-image and
+//! mipmap generation, buffer textures (glTexBuffer). Reading images back and the other sub-image and
 //! copy commands are [`crate::pixels`].
 
 use crate::abi::*;
@@ -11,6 +11,15 @@ use crate::context::{record_call, with_ctx};
 use gl::enums::*;
 use gl::Param;
 use std::ffi::c_void;
+
+/// How many values a glTexParameter*v call reads for `pname`.
+fn tex_parameter_count(pname: GLenum) -> i64 {
+    if matches!(pname, GL_TEXTURE_BORDER_COLOR | GL_TEXTURE_SWIZZLE_RGBA) {
+        4
+    } else {
+        1
+    }
+}
 
 gl_entry_points! {
     // ---- objects ----
@@ -30,7 +39,7 @@ gl_entry_points! {
     [list] fn glTexParameteri(target: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.tex_parameter(target, pname, Param::I(v)) }
     [list] fn glTexParameterf(target: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.tex_parameter(target, pname, Param::F(v)) }
     fn glTexParameterfv(target: GLenum, pname: GLenum, v: *const GLfloat) => |c| {
-        let n = if pname == GL_TEXTURE_BORDER_COLOR { 4 } else { 1 };
+        let n = tex_parameter_count(pname);
         if c.compiling() && !v.is_null() {
             let arr = rd_vec(v, n);
             if c.record(move || unsafe { glTexParameterfv(target, pname, arr.as_ptr()) }) {
@@ -40,10 +49,55 @@ gl_entry_points! {
         if !v.is_null() { c.gl.tex_parameter(target, pname, Param::Fv(&rd_vec(v, n))) }
     }
     fn glTexParameteriv(target: GLenum, pname: GLenum, v: *const GLint) => |c| {
-        let n = if pname == GL_TEXTURE_BORDER_COLOR { 4 } else { 1 };
+        let n = tex_parameter_count(pname);
         if !v.is_null() { c.gl.tex_parameter(target, pname, Param::Iv(&rd_vec(v, n))) }
     }
+    // GL 3.0's integer forms: the border colour's values are taken as
+    // they are (not normalized), the other parameters as glTexParameteriv.
+    fn glTexParameterIiv(target: GLenum, pname: GLenum, v: *const GLint) => |c| {
+        if v.is_null() { return; }
+        let vals = rd_vec(v, tex_parameter_count(pname));
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            let f: Vec<f32> = vals.iter().map(|&x| x as f32).collect();
+            c.gl.tex_parameter(target, pname, Param::Fv(&f));
+        } else {
+            c.gl.tex_parameter(target, pname, Param::Iv(&vals));
+        }
+    }
+    fn glTexParameterIuiv(target: GLenum, pname: GLenum, v: *const GLuint) => |c| {
+        if v.is_null() { return; }
+        let vals = rd_vec(v, tex_parameter_count(pname));
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            let f: Vec<f32> = vals.iter().map(|&x| x as f32).collect();
+            c.gl.tex_parameter(target, pname, Param::Fv(&f));
+        } else {
+            let i: Vec<i32> = vals.iter().map(|&x| x as i32).collect();
+            c.gl.tex_parameter(target, pname, Param::Iv(&i));
+        }
+    }
+    fn glGetTexParameterIiv(target: GLenum, pname: GLenum, v: *mut GLint) => |c| {
+        let r: Vec<GLint> = if tex_parameter_count(pname) == 4 {
+            c.gl.get_tex_parameterfv(target, pname).iter().map(|&x| x as GLint).collect()
+        } else {
+            vec![c.gl.get_tex_parameteriv(target, pname)]
+        };
+        wr(v, &r);
+    }
+    fn glGetTexParameterIuiv(target: GLenum, pname: GLenum, v: *mut GLuint) => |c| {
+        let r: Vec<GLuint> = if tex_parameter_count(pname) == 4 {
+            c.gl.get_tex_parameterfv(target, pname).iter().map(|&x| x as GLuint).collect()
+        } else {
+            vec![c.gl.get_tex_parameteriv(target, pname) as GLuint]
+        };
+        wr(v, &r);
+    }
     fn glGetTexParameteriv(target: GLenum, pname: GLenum, v: *mut GLint) => |c| {
+        if pname == GL_TEXTURE_SWIZZLE_RGBA {
+            // The one four-valued integer parameter.
+            let r: Vec<GLint> = c.gl.get_tex_parameterfv(target, pname).iter().map(|&x| x as GLint).collect();
+            wr(v, &r);
+            return;
+        }
         let r = c.gl.get_tex_parameteriv(target, pname);
         wr(v, &[r]);
     }
@@ -96,5 +150,9 @@ gl_entry_points! {
         c.gl.tex_sub_image(target, level, [xoff, yoff], [w, h], format, ty, &bytes);
     }
     fn glGenerateMipmap(target: GLenum) => |c| { c.gl.generate_mipmap(target) }
+    // ---- buffer textures (GL 3.1, ARB/EXT_texture_buffer_object) ----
+    fn glTexBuffer(target: GLenum, internal: GLenum, buffer: GLuint) => |c| { c.gl.tex_buffer(target, internal, buffer) }
+    fn glTexBufferARB(target: GLenum, internal: GLenum, buffer: GLuint) => |c| { c.gl.tex_buffer(target, internal, buffer) }
+    fn glTexBufferEXT(target: GLenum, internal: GLenum, buffer: GLuint) => |c| { c.gl.tex_buffer(target, internal, buffer) }
     fn glGenerateMipmapEXT(target: GLenum) => |c| { c.gl.generate_mipmap(target) }
 }

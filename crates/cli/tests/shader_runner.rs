@@ -185,6 +185,58 @@ probe all rgba 0.25 0.5 0.75 1.0
         );
     }
 
+    /// Array textures made by `texture rgbw 2DArray`/`1DArray` (a colour
+    /// per layer) and `texture shadow2DArray` (the depth gradient in
+    /// every layer, compared GREATER), read through the GLSL 1.30
+    /// lookups.
+    const ARRAYS: &str = "\
+[require]
+GLSL >= 1.30
+
+[vertex shader]
+#version 130
+in vec4 piglit_vertex;
+out vec2 tc;
+void main() { gl_Position = piglit_vertex; tc = piglit_vertex.xy * 0.5 + 0.5; }
+
+[fragment shader]
+#version 130
+uniform sampler2DArray a;
+uniform sampler1DArray b;
+uniform sampler2DArrayShadow s;
+uniform int layer;
+in vec2 tc;
+out vec4 o;
+void main() {
+    o = texture(a, vec3(tc, float(layer))) * 0.5 + texture(b, vec2(tc.x, 3.0)) * 0.25
+        + vec4(0.0, 0.0, 0.0, texture(s, vec4(tc, 1.0, 0.5)) * 0.25);
+}
+
+[test]
+uniform int a 0
+uniform int b 1
+uniform int s 2
+texture rgbw 2DArray 0 (4, 4, 3)
+texture rgbw 1DArray 1 (4, 5)
+texture shadow2DArray 2 (16, 16, 2)
+uniform int layer 2
+draw rect -1 -1 2 2
+relative probe rgba (0.1, 0.5) (0.25, 0.25, 0.75, 1.0)
+relative probe rgba (0.9, 0.5) (0.25, 0.25, 0.75, 0.75)
+";
+
+    #[test]
+    fn array_textures_are_made_and_sampled() {
+        let path = script("arrays", ARRAYS);
+        let o = shaderbox(&["shader-runner", &path, "-auto", "-fbo"]);
+        assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+        assert_eq!(last_line(&o), r#"PIGLIT: {"result": "pass" }"#);
+        // Another layer, another colour (the probes can fail).
+        let path = script("arrays-layer", &ARRAYS.replace("layer 2", "layer 1"));
+        let o = shaderbox(&["shader-runner", &path, "-auto", "-fbo"]);
+        assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
+    }
+
     #[test]
     fn green_quad_passes() {
         let path = script("green", GREEN);

@@ -16,8 +16,10 @@
 
 use crate::interp::FULL;
 use crate::opt::{Code, Ins};
-use crate::program::{Op, Reg, TexLod, F1, F2, F3};
-use crate::{Batch, ExecError, Kernel, LaneMask, Lod, SampleRequest, Textures, LANES};
+use crate::program::{Op, Reg, TexKind, TexLod, F1, F2, F3};
+use crate::{
+    Batch, ExecError, FetchRequest, Kernel, LaneMask, Lod, SampleRequest, Textures, LANES,
+};
 use glsl::math;
 use glsl::types::Scalar;
 
@@ -691,48 +693,114 @@ unsafe fn texture(
     // SAFETY: the caller's contract: each register `t` names is in
     // `regs` (a reference to one, read while no register is written).
     let reg = |x: Reg| -> &Lanes { unsafe { &*regs.add(x as usize) } };
+    let ints = |x: Reg| -> [i32; LANES] { reg(x).map(|b| b as i32) };
+    let level = |l: Option<Reg>| l.map_or([0; LANES], ints);
     let mut out = [[0f32; LANES]; 4];
-    if cur != 0 {
-        // Built in place, then filled: the request is large, and building
-        // its parts apart and moving them in cost copies of each.
-        let mut req = SampleRequest {
-            unit: *reg(t.unit),
-            target: t.target,
-            coord: [[0.0; LANES]; 4],
-            compare: None,
-            lod: match t.lod {
-                TexLod::Explicit(_) => Lod::Explicit([0.0; LANES]),
-                TexLod::Implicit { .. } => Lod::Derivatives {
-                    ddx: [[0.0; LANES]; 3],
-                    ddy: [[0.0; LANES]; 3],
-                    bias: [0.0; LANES],
-                },
-            },
-            mask: cur,
-        };
-        for (c, &x) in req.coord.iter_mut().zip(&t.coord) {
-            *c = floats(reg(x));
-        }
-        if let Some(c) = t.compare {
-            req.compare = Some(floats(reg(c)));
-        }
-        match (&mut req.lod, t.lod) {
-            (Lod::Explicit(v), TexLod::Explicit(Some(l))) => *v = floats(reg(l)),
-            (Lod::Derivatives { ddx, ddy, bias }, TexLod::Implicit { bias: b }) => {
-                for k in 0..(t.dims as usize).min(3) {
-                    (ddx[k], ddy[k]) = lane::quad_diffs(&req.coord[k]);
-                }
-                if let Some(b) = b {
-                    *bias = floats(reg(b));
+    match t.kind {
+        TexKind::Size => {
+            let lod = match t.lod {
+                TexLod::Explicit(l) => level(l),
+                _ => [0; LANES],
+            };
+            let unit = reg(t.unit);
+            let mut sizes = [[0u32; LANES]; 4];
+            for l in 0..LANES {
+                if cur & (1 << l) != 0 {
+                    let v = textures.size(unit[l], t.target, lod[l]);
+                    for k in 0..3 {
+                        sizes[k][l] = v[k] as u32;
+                    }
                 }
             }
-            _ => {}
+            for (k, o) in sizes.iter().enumerate() {
+                *regs.add(t.d as usize + k) = *o;
+            }
+            return;
         }
-        textures.sample(&req, &mut out);
+        TexKind::Fetch if cur != 0 => {
+            let mut req = FetchRequest {
+                unit: *reg(t.unit),
+                target: t.target,
+                coord: [0, 1, 2].map(|k| ints(t.coord[k])),
+                lod: match t.lod {
+                    TexLod::Explicit(l) => level(l),
+                    _ => [0; LANES],
+                },
+                mask: cur,
+            };
+            if let Some(o) = t.offset {
+                for (c, &o) in req.coord.iter_mut().zip(&o) {
+                    let o = ints(o);
+                    for l in 0..LANES {
+                        c[l] = c[l].wrapping_add(o[l]);
+                    }
+                }
+            }
+            textures.fetch(&req, &mut out);
+        }
+        TexKind::Fetch => {}
+        TexKind::Sample if cur != 0 => {
+            // Built in place, then filled: the request is large, and building
+            // its parts apart and moving them in cost copies of each.
+            let mut req = SampleRequest {
+                unit: *reg(t.unit),
+                target: t.target,
+                coord: [[0.0; LANES]; 4],
+                compare: None,
+                lod: match t.lod {
+                    TexLod::Explicit(_) => Lod::Explicit([0.0; LANES]),
+                    TexLod::Implicit { .. } => Lod::Derivatives {
+                        ddx: [[0.0; LANES]; 3],
+                        ddy: [[0.0; LANES]; 3],
+                        bias: [0.0; LANES],
+                    },
+                    TexLod::Grad { .. } => Lod::Gradients {
+                        ddx: [[0.0; LANES]; 3],
+                        ddy: [[0.0; LANES]; 3],
+                    },
+                },
+                offset: t.offset.map(|o| o.map(ints)),
+                compare_only: t.compare_only,
+                mask: cur,
+            };
+            for (c, &x) in req.coord.iter_mut().zip(&t.coord) {
+                *c = floats(reg(x));
+            }
+            if let Some(c) = t.compare {
+                req.compare = Some(floats(reg(c)));
+            }
+            let dims = (t.dims as usize).min(3);
+            match (&mut req.lod, t.lod) {
+                (Lod::Explicit(v), TexLod::Explicit(Some(l))) => *v = floats(reg(l)),
+                (Lod::Derivatives { ddx, ddy, bias }, TexLod::Implicit { bias: b }) => {
+                    for k in 0..dims {
+                        (ddx[k], ddy[k]) = lane::quad_diffs(&req.coord[k]);
+                    }
+                    if let Some(b) = b {
+                        *bias = floats(reg(b));
+                    }
+                }
+                (Lod::Gradients { ddx, ddy }, TexLod::Grad { ddx: x, ddy: y }) => {
+                    for k in 0..dims {
+                        ddx[k] = floats(reg(x[k]));
+                        ddy[k] = floats(reg(y[k]));
+                    }
+                }
+                _ => {}
+            }
+            textures.sample(&req, &mut out);
+        }
+        TexKind::Sample => {}
     }
+    let integer = t.target.result() != glsl::types::SamplerResult::Float;
     for (k, o) in out.iter().enumerate() {
-        // Subnormal results (a border colour, say) enter as zero.
-        *regs.add(t.d as usize + k) = o.map(ftz);
+        // Subnormal results (a border colour, say) enter as zero; an
+        // integer texture's texels are the integers' bits.
+        *regs.add(t.d as usize + k) = if integer {
+            o.map(f32::to_bits)
+        } else {
+            o.map(ftz)
+        };
     }
 }
 

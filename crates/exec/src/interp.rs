@@ -1,9 +1,10 @@
 //! The lane-parallel interpreter of a lowered [`Program`].
 
 use crate::lane::match_op;
-use crate::program::{Op, Program, TexLod};
+use crate::program::{Op, Program, TexKind, TexLod};
 use crate::{
-    Batch, ExecError, Kernel, LaneMask, Lod, PrintSink, SampleRequest, Textures, Trace, LANES,
+    Batch, ExecError, FetchRequest, Kernel, LaneMask, Lod, PrintSink, SampleRequest, Textures,
+    Trace, LANES,
 };
 use glsl::math::flush_denormal;
 use glsl::types::Scalar;
@@ -418,43 +419,103 @@ fn floats(a: &[u32; LANES]) -> [f32; LANES] {
 }
 
 fn texture(r: &mut Regs, t: &crate::program::TexOp, cur: LaneMask, textures: &dyn Textures) {
+    let ints = |r: &Regs, x: u32| -> [i32; LANES] { r[x as usize].map(|b| b as i32) };
+    let lod_reg = match t.lod {
+        TexLod::Explicit(l) => l,
+        _ => None,
+    };
     let mut out = [[0f32; LANES]; 4];
-    if cur != 0 {
-        let coord = t.coord.map(|c| floats(&r[c as usize]));
-        let lod = match t.lod {
-            TexLod::Explicit(l) => Lod::Explicit(match l {
-                Some(l) => floats(&r[l as usize]),
-                None => [0.0; LANES],
-            }),
-            TexLod::Implicit { bias } => {
-                let mut ddx = [[0f32; LANES]; 3];
-                let mut ddy = [[0f32; LANES]; 3];
-                for k in 0..(t.dims as usize).min(3) {
-                    let c = &r[t.coord[k] as usize];
-                    ddx[k] = floats(&quad_diff(c, 1));
-                    ddy[k] = floats(&quad_diff(c, 2));
-                }
-                Lod::Derivatives {
-                    ddx,
-                    ddy,
-                    bias: match bias {
-                        Some(b) => floats(&r[b as usize]),
-                        None => [0.0; LANES],
-                    },
+    match t.kind {
+        TexKind::Size => {
+            let lod = lod_reg.map_or([0; LANES], |l| ints(r, l));
+            let unit = r[t.unit as usize];
+            for k in 0..4 {
+                r[t.d as usize + k] = [0; LANES];
+            }
+            for l in (0..LANES).filter(|l| cur & (1 << l) != 0) {
+                let v = textures.size(unit[l], t.target, lod[l]);
+                for (k, &x) in v.iter().enumerate() {
+                    r[t.d as usize + k][l] = x as u32;
                 }
             }
-        };
-        let req = SampleRequest {
-            unit: r[t.unit as usize],
-            target: t.target,
-            coord,
-            compare: t.compare.map(|c| floats(&r[c as usize])),
-            lod,
-            mask: cur,
-        };
-        textures.sample(&req, &mut out);
+            return;
+        }
+        TexKind::Fetch => {
+            if cur != 0 {
+                let offset = t.offset.map(|o| o.map(|x| ints(r, x)));
+                let coord = std::array::from_fn(|k| {
+                    let c = ints(r, t.coord[k]);
+                    std::array::from_fn(|l| match &offset {
+                        Some(o) => c[l].wrapping_add(o[k][l]),
+                        None => c[l],
+                    })
+                });
+                let req = FetchRequest {
+                    unit: r[t.unit as usize],
+                    target: t.target,
+                    coord,
+                    lod: lod_reg.map_or([0; LANES], |l| ints(r, l)),
+                    mask: cur,
+                };
+                textures.fetch(&req, &mut out);
+            }
+        }
+        TexKind::Sample => {
+            if cur != 0 {
+                let coord = t.coord.map(|c| floats(&r[c as usize]));
+                let lod = match t.lod {
+                    TexLod::Explicit(l) => Lod::Explicit(match l {
+                        Some(l) => floats(&r[l as usize]),
+                        None => [0.0; LANES],
+                    }),
+                    TexLod::Implicit { bias } => {
+                        let mut ddx = [[0f32; LANES]; 3];
+                        let mut ddy = [[0f32; LANES]; 3];
+                        for k in 0..(t.dims as usize).min(3) {
+                            let c = &r[t.coord[k] as usize];
+                            ddx[k] = floats(&quad_diff(c, 1));
+                            ddy[k] = floats(&quad_diff(c, 2));
+                        }
+                        Lod::Derivatives {
+                            ddx,
+                            ddy,
+                            bias: match bias {
+                                Some(b) => floats(&r[b as usize]),
+                                None => [0.0; LANES],
+                            },
+                        }
+                    }
+                    TexLod::Grad { ddx: x, ddy: y } => {
+                        let mut ddx = [[0f32; LANES]; 3];
+                        let mut ddy = [[0f32; LANES]; 3];
+                        for k in 0..(t.dims as usize).min(3) {
+                            ddx[k] = floats(&r[x[k] as usize]);
+                            ddy[k] = floats(&r[y[k] as usize]);
+                        }
+                        Lod::Gradients { ddx, ddy }
+                    }
+                };
+                let req = SampleRequest {
+                    unit: r[t.unit as usize],
+                    target: t.target,
+                    coord,
+                    compare: t.compare.map(|c| floats(&r[c as usize])),
+                    lod,
+                    offset: t.offset.map(|o| o.map(|x| ints(r, x))),
+                    compare_only: t.compare_only,
+                    mask: cur,
+                };
+                textures.sample(&req, &mut out);
+            }
+        }
     }
+    // An integer texture's texels are the integers' bits.
+    let integer = t.target.result() != glsl::types::SamplerResult::Float;
     for (k, o) in out.iter().enumerate() {
-        r[t.d as usize + k] = o.map(ftz);
+        r[t.d as usize + k] = if integer {
+            o.map(f32::to_bits)
+        } else {
+            o.map(ftz)
+        };
     }
 }

@@ -346,6 +346,30 @@ pub struct SampleRequest {
     /// forms).
     pub compare: Option<[f32; LANES]>,
     pub lod: Lod,
+    /// The texel offsets of the `*Offset` lookups (u, v, w per lane),
+    /// added to the scaled coordinates before wrapping (GLSL 1.30 §8.7,
+    /// GL 3.0 §3.8.8); `None` for the others.
+    pub offset: Option<[[i32; LANES]; 3]>,
+    /// The lookups of GLSL 1.30 and later on shadow samplers, which
+    /// return the comparison result as one `float` (§8.7): component 0
+    /// of `out` is that result whatever the texture's depth texture mode.
+    pub compare_only: bool,
+    pub mask: LaneMask,
+}
+
+/// A `texelFetch`/`texelFetchOffset` for the lanes of `mask`: the texel
+/// at integer coordinates of one level, no filtering, wrapping or
+/// comparison (GL 3.0 §3.8.8's texel fetch).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FetchRequest {
+    pub unit: [u32; LANES],
+    pub target: SamplerKind,
+    /// i, j, k per lane (the array layer in the coordinate after the
+    /// target's own; unused coordinates 0), offsets already added.
+    pub coord: [[i32; LANES]; 3],
+    /// The level, relative to the base level (0 for targets without
+    /// levels).
+    pub lod: [i32; LANES],
     pub mask: LaneMask,
 }
 
@@ -367,11 +391,20 @@ pub enum Lod {
     /// `*Lod` lookups, and vertex-shader lookups (level 0 plus the bias
     /// argument if any).
     Explicit([f32; LANES]),
+    /// `textureGrad`: each lane's own derivatives of the (divided)
+    /// coordinates along x and y (not one λ per quad: they are the
+    /// shader's values, not differences between the quad's lanes).
+    Gradients {
+        ddx: [[f32; LANES]; 3],
+        ddy: [[f32; LANES]; 3],
+    },
 }
 
 pub trait Textures {
     /// Samples for the lanes in `req.mask`, writing RGBA into `out`
-    /// (component-major: `out[c][lane]`).
+    /// (component-major: `out[c][lane]`). The lookups of integer
+    /// samplers (`isampler*`, `usampler*`) give the integers' bits
+    /// (`f32::from_bits`), which the executors store unflushed.
     fn sample(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]);
 
     /// [`Textures::sample`] of a `sampler2D` lookup of unit `unit` on the
@@ -391,6 +424,30 @@ pub trait Textures {
         self.sample(&implicit_2d_request(unit, st, mask), out);
         false
     }
+
+    /// Texel fetches for the lanes in `req.mask` (`out` as in
+    /// [`Textures::sample`]). Integer textures give the integers' bits
+    /// (`f32::from_bits`), as [`Textures::sample`] does for them. A
+    /// texel outside the level (undefined in GL 3.0 §3.8.8), or a missing
+    /// or incomplete texture, gives (0, 0, 0, 1).
+    fn fetch(&self, req: &FetchRequest, out: &mut [[f32; LANES]; 4]) {
+        for (c, value) in out.iter_mut().zip([0.0, 0.0, 0.0, 1.0]) {
+            for (l, x) in c.iter_mut().enumerate() {
+                if req.mask & (1 << l) != 0 {
+                    *x = value;
+                }
+            }
+        }
+    }
+
+    /// `textureSize`: the width, height and depth (or layer count) of
+    /// level `lod` (relative to the base level) of the texture of
+    /// `target` bound to `unit`, the sizes the target does not have 0;
+    /// (0, 0, 0) with no such texture or level.
+    fn size(&self, unit: u32, target: SamplerKind, lod: i32) -> [i32; 3] {
+        let _ = (unit, target, lod);
+        [0; 3]
+    }
 }
 
 /// The request [`Textures::sample_2d_implicit`] describes.
@@ -405,6 +462,8 @@ pub fn implicit_2d_request(unit: u32, st: [&[f32; LANES]; 2], mask: LaneMask) ->
             ddy: [[0.0; LANES]; 3],
             bias: [0.0; LANES],
         },
+        offset: None,
+        compare_only: false,
         mask,
     };
     if let Lod::Derivatives { ddx, ddy, .. } = &mut req.lod {

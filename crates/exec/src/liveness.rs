@@ -12,7 +12,7 @@
 //! keep the old value). Dropping the unneeded ops leaves every needed op
 //! reading the very bits it read before, on every lane.
 
-use crate::program::{Class, Op, Program, Reg, Role, TexLod};
+use crate::program::{Class, Op, Program, Reg, Role};
 use smallvec::SmallVec;
 
 /// What [`analyze`] finds.
@@ -277,14 +277,7 @@ pub(crate) fn effects(p: &Program, op: &Op) -> Effects {
     if let Op::Texture { index } = *op {
         if let Some(t) = p.textures.get(index as usize) {
             e.full_defs.push((t.d, 4));
-            e.uses.push((t.unit, 1));
-            e.uses.extend(t.coord.iter().map(|&c| (c, 1)));
-            if let Some(c) = t.compare {
-                e.uses.push((c, 1));
-            }
-            if let TexLod::Implicit { bias: Some(b) } | TexLod::Explicit(Some(b)) = t.lod {
-                e.uses.push((b, 1));
-            }
+            e.uses.extend(t.reads().into_iter().map(|r| (r, 1)));
         }
     }
     e

@@ -73,7 +73,7 @@
 //! The listings are deterministic: they depend only on the stage's IR.
 
 use crate::interface::{Interface, Slot};
-use crate::program::{Op, Program, Reg, TexLod, F1, F2, F3};
+use crate::program::{Op, Program, Reg, TexKind, TexLod, F1, F2, F3};
 use crate::Kernel;
 use std::fmt::Write;
 
@@ -432,8 +432,13 @@ fn op_text(op: &Op, masked: bool, p: &Program) -> String {
         }
         Texture { index } => match p.textures.get(index as usize) {
             Some(t) => {
+                let kind = match t.kind {
+                    TexKind::Sample => "texture",
+                    TexKind::Fetch => "texel_fetch",
+                    TexKind::Size => "texture_size",
+                };
                 let mut s = format!(
-                    "texture #{index} {} unit r{} coord (r{} r{} r{} r{}) dims {}",
+                    "{kind} #{index} {} unit r{} coord (r{} r{} r{} r{}) dims {}",
                     t.target.name(),
                     t.unit,
                     t.coord[0],
@@ -455,6 +460,16 @@ fn op_text(op: &Op, masked: bool, p: &Program) -> String {
                     TexLod::Explicit(l) => {
                         let _ = write!(s, " lod explicit {}", opt_reg(l));
                     }
+                    TexLod::Grad { ddx, ddy } => {
+                        let _ = write!(
+                            s,
+                            " grad x (r{} r{} r{}) y (r{} r{} r{})",
+                            ddx[0], ddx[1], ddx[2], ddy[0], ddy[1], ddy[2]
+                        );
+                    }
+                }
+                if let Some(o) = t.offset {
+                    let _ = write!(s, " offset (r{} r{} r{})", o[0], o[1], o[2]);
                 }
                 let _ = write!(s, " -> {}", range(t.d, 4));
                 s

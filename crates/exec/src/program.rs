@@ -455,12 +455,27 @@ pub(crate) enum TexLod {
     /// Fragment stage: derivatives of the coordinates, plus a bias.
     Implicit { bias: Option<Reg> },
     /// An explicit level (`*Lod` functions; 0 for other vertex-stage
-    /// lookups).
+    /// lookups). For fetches and size queries, an integer level.
     Explicit(Option<Reg>),
+    /// `textureGrad`: the derivatives along x and y of the (divided)
+    /// coordinates, `dims` of each used.
+    Grad { ddx: [Reg; 3], ddy: [Reg; 3] },
+}
+
+/// What a texture op computes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum TexKind {
+    /// A filtered lookup (float coordinates).
+    Sample,
+    /// `texelFetch`: `coord` holds integer coordinates.
+    Fetch,
+    /// `textureSize`: the level's sizes as integers.
+    Size,
 }
 
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct TexOp {
+    pub kind: TexKind,
     pub target: SamplerKind,
     /// Register holding the texture unit.
     pub unit: Reg,
@@ -470,8 +485,31 @@ pub(crate) struct TexOp {
     pub dims: u8,
     pub compare: Option<Reg>,
     pub lod: TexLod,
+    /// Integer texel offsets of the `*Offset` forms (unused ones hold 0).
+    pub offset: Option<[Reg; 3]>,
+    /// A 1.30 lookup on a shadow sampler ([`crate::SampleRequest`]'s
+    /// `compare_only`).
+    pub compare_only: bool,
     /// First of 4 consecutive result registers.
     pub d: Reg,
+}
+
+impl TexOp {
+    /// Every register the op reads.
+    pub(crate) fn reads(&self) -> Vec<Reg> {
+        let mut r = vec![self.unit];
+        r.extend(self.coord);
+        r.extend(self.compare);
+        match self.lod {
+            TexLod::Implicit { bias: b } | TexLod::Explicit(b) => r.extend(b),
+            TexLod::Grad { ddx, ddy } => {
+                r.extend(ddx);
+                r.extend(ddy);
+            }
+        }
+        r.extend(self.offset.into_iter().flatten());
+        r
+    }
 }
 
 /// Where a statement of the source starts in the op list (for traces).
@@ -557,10 +595,6 @@ impl Program {
     pub fn validate(&self) -> Result<(), String> {
         let nregs = self.registers as u64;
         let reg_ok = |r: Reg, n: u32| (r as u64) + (n.max(1) as u64) <= nregs;
-        let opt_ok = |r: Option<Reg>| match r {
-            Some(r) => reg_ok(r, 1),
-            None => true,
-        };
         let mut bad = None;
         for (i, op) in self.ops.iter().enumerate() {
             op.for_each_operand(&mut |_, r, n| {
@@ -587,15 +621,7 @@ impl Program {
                     None => false,
                 },
                 Op::Texture { index } => match self.textures.get(index as usize) {
-                    Some(t) => {
-                        reg_ok(t.unit, 1)
-                            && t.coord.iter().all(|&c| reg_ok(c, 1))
-                            && opt_ok(t.compare)
-                            && match t.lod {
-                                TexLod::Implicit { bias: b } | TexLod::Explicit(b) => opt_ok(b),
-                            }
-                            && reg_ok(t.d, 4)
-                    }
+                    Some(t) => t.reads().iter().all(|&r| reg_ok(r, 1)) && reg_ok(t.d, 4),
                     None => false,
                 },
                 Op::Noise { n, dims, .. } => (1..=4).contains(&n) && (1..=4).contains(&dims),

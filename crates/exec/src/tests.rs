@@ -700,6 +700,60 @@ fn texture_requests() {
     assert_eq!(c[2][0], 8.0);
 }
 
+/// Integer texels (3, −2, 7, 1 as bits), texel fetches echoing their
+/// integer coordinates and level, sizes echoing the unit and level.
+struct IntTextures;
+impl Textures for IntTextures {
+    fn sample(&self, req: &SampleRequest, out: &mut [[f32; LANES]; 4]) {
+        for l in 0..LANES {
+            for (c, v) in [3i32, -2, 7, 1].into_iter().enumerate() {
+                out[c][l] = f32::from_bits(v as u32);
+            }
+            assert!(req.offset.is_none_or(|o| o[0][l] == 1 && o[1][l] == -1));
+        }
+    }
+    fn fetch(&self, req: &crate::FetchRequest, out: &mut [[f32; LANES]; 4]) {
+        for l in 0..LANES {
+            for c in 0..3 {
+                out[c][l] = req.coord[c][l] as f32;
+            }
+            out[3][l] = req.lod[l] as f32;
+        }
+    }
+    fn size(&self, unit: u32, _: glsl::types::SamplerKind, lod: i32) -> [i32; 3] {
+        [unit as i32 * 10, lod, 0]
+    }
+}
+
+#[test]
+fn integer_lookups_fetches_and_sizes_arrive_exactly() {
+    let k = kernel(
+        Stage::Fragment,
+        "#version 130
+        uniform isampler2D si;
+        uniform sampler2D s;
+        out vec4 a, b, c;
+        void main() {
+            a = vec4(textureOffset(si, vec2(0.5), ivec2(1, -1)));
+            b = texelFetchOffset(s, ivec2(gl_FragCoord.xy), 2, ivec2(5, -3));
+            c = vec4(textureSize(s, 4), textureSize(si, 1));
+        }",
+    );
+    let u = uniforms(&k, &[("si", &[2]), ("s", &[3])]);
+    let mut b = frag_batch(&k);
+    k.run(&mut b, &u, &IntTextures).unwrap();
+    let (a, f, c) = (
+        output(&k, &b, "a"),
+        output(&k, &b, "b"),
+        output(&k, &b, "c"),
+    );
+    for l in 0..LANES {
+        assert_eq!([a[0][l], a[1][l], a[2][l], a[3][l]], [3.0, -2.0, 7.0, 1.0]);
+        assert_eq!([f[0][l], f[1][l], f[3][l]], [l as f32 + 5.0, -3.0, 2.0]);
+        assert_eq!([c[0][l], c[1][l], c[2][l], c[3][l]], [30.0, 4.0, 20.0, 1.0]);
+    }
+}
+
 #[test]
 fn loop_budget_ends_infinite_loops() {
     let mut k = kernel(

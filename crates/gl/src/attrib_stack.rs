@@ -28,7 +28,7 @@ pub(crate) struct ServerAttribs {
     current_tex: [[f32; 4]; MAX_TEXTURE_UNITS],
     current_generic: [[f32; 4]; MAX_VERTEX_ATTRIBS],
     raster: crate::pixel_path::RasterPos,
-    bound_textures: Vec<[u32; 4]>,
+    bound_textures: Vec<[u32; crate::objects::TEXTURE_TARGET_COUNT]>,
 }
 
 /// A glPushClientAttrib entry.

@@ -22,7 +22,7 @@ use crate::enums::*;
 use crate::objects::{
     delete_names, image_target, Attachment, FramebufferObj, RenderbufferObj, MAX_LEVELS,
 };
-use crate::texture_format::base_format;
+use crate::texture_format::{base_format, is_integer_format};
 use crate::{Context, MAX_TEXTURE_SIZE};
 
 /// A renderbuffer's component sizes in bits: red, green, blue, alpha,
@@ -331,8 +331,9 @@ impl Context {
             self.set_attachment(fb, attachment, None);
             return;
         }
-        let Some((bind, face)) = image_target(textarget, 2).or_else(|| image_target(textarget, 1))
-        else {
+        let image = image_target(textarget, 2).or_else(|| image_target(textarget, 1));
+        // A 1D array's layers are attached by layer, not as a 2D image.
+        let Some((bind, face)) = image.filter(|&(t, _)| t != GL_TEXTURE_1D_ARRAY) else {
             self.set_error(GL_INVALID_OPERATION);
             return;
         };
@@ -563,6 +564,11 @@ impl Context {
             };
             if w == 0 || h == 0 {
                 return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+            }
+            // Integer colour buffers are not drawn into (a fragment's
+            // colour is not converted to integers).
+            if is_integer_format(fmt as i32) {
+                return GL_FRAMEBUFFER_UNSUPPORTED;
             }
             match base_format(fmt as i32) {
                 Some(GL_RGB | GL_RGBA | GL_RED | GL_RG) => {}

@@ -58,6 +58,8 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_copy_buffer",
     "GL_ARB_uniform_buffer_object",
     "GL_ARB_explicit_attrib_location",
+    "GL_ARB_texture_rg",
+    "GL_EXT_texture_sRGB",
 ];
 
 /// The extensions a 3.3 context adds (their GL 3.2–3.3 core features,
@@ -137,7 +139,18 @@ impl Context {
             GL_MAX_TEXTURE_SIZE | GL_MAX_CUBE_MAP_TEXTURE_SIZE | GL_MAX_RENDERBUFFER_SIZE => {
                 int(&[crate::MAX_TEXTURE_SIZE as i64])
             }
-            GL_MAX_3D_TEXTURE_SIZE => int(&[2048]),
+            GL_MAX_3D_TEXTURE_SIZE | GL_MAX_ARRAY_TEXTURE_LAYERS => int(&[2048]),
+            GL_MAX_RECTANGLE_TEXTURE_SIZE => int(&[crate::MAX_TEXTURE_SIZE as i64]),
+            // The texel offsets the lookups take (GL 3.0 §3.8.8: at least
+            // −8 to 7); any integer works.
+            GL_MIN_PROGRAM_TEXEL_OFFSET => int(&[-8]),
+            GL_MAX_TEXTURE_BUFFER_SIZE => {
+                int(&[crate::texture_buffer::MAX_TEXTURE_BUFFER_SIZE as i64])
+            }
+            GL_TEXTURE_BUFFER_DATA_STORE_BINDING => {
+                int(&[self.active_tex_buffer().map_or(0, |b| b.buffer) as i64])
+            }
+            GL_MAX_PROGRAM_TEXEL_OFFSET => int(&[7]),
             GL_MAX_VIEWPORT_DIMS => int(&[crate::MAX_TEXTURE_SIZE as i64; 2]),
             GL_MAX_MODELVIEW_STACK_DEPTH
             | GL_MAX_PROJECTION_STACK_DEPTH
@@ -215,12 +228,20 @@ impl Context {
             GL_TEXTURE_BINDING_1D
             | GL_TEXTURE_BINDING_2D
             | GL_TEXTURE_BINDING_3D
-            | GL_TEXTURE_BINDING_CUBE_MAP => {
+            | GL_TEXTURE_BINDING_CUBE_MAP
+            | GL_TEXTURE_BINDING_1D_ARRAY
+            | GL_TEXTURE_BINDING_2D_ARRAY
+            | GL_TEXTURE_BINDING_RECTANGLE
+            | GL_TEXTURE_BINDING_BUFFER => {
                 let ti = match pname {
                     GL_TEXTURE_BINDING_1D => 0,
                     GL_TEXTURE_BINDING_2D => 1,
                     GL_TEXTURE_BINDING_3D => 2,
-                    _ => 3,
+                    GL_TEXTURE_BINDING_CUBE_MAP => 3,
+                    GL_TEXTURE_BINDING_1D_ARRAY => 4,
+                    GL_TEXTURE_BINDING_2D_ARRAY => 5,
+                    GL_TEXTURE_BINDING_RECTANGLE => 6,
+                    _ => 7,
                 };
                 int(&[self.objects.bound.get(unit).map_or(0, |b| b[ti]) as i64])
             }

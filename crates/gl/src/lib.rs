@@ -53,6 +53,7 @@
 //! - Objects: [`objects`] (the tables, glGen* names), [`buffers`],
 //!   [`textures`] (glTex*, texture queries), [`mipmap`],
 //!   [`texture_format`] (internal formats, stored texels),
+//!   [`texture_buffer`] (glTexBuffer, buffer textures' texels),
 //!   [`framebuffer`] (renderbuffers, FBOs, completeness, draw/read
 //!   buffers), [`blit`] (glBlitFramebuffer).
 //! - Client images: [`pixel_transfer`] (layout, unpack, pack, scale and
@@ -124,6 +125,7 @@ pub(crate) mod restart;
 pub mod shading;
 pub mod state;
 pub mod sync;
+pub mod texture_buffer;
 pub mod texture_format;
 pub mod texture_units;
 pub mod textures;

@@ -1,14 +1,15 @@
 //! Mipmap generation (GL 2.1 §3.8.8 GENERATE_MIPMAP; glGenerateMipmap).
 //!
 //! Contract: levels base+1 down to 1x1(x1) are rebuilt from the base level
-//! by averaging 2x2(x2) blocks (a dimension already 1 is not halved), then
+//! by averaging 2x2(x2) blocks (a dimension already 1 is not halved, nor
+//! the layers of an array texture), then
 //! re-quantized to the internal format (depth values are kept as
 //! averaged), at most down to level [`crate::objects`]' `MAX_LEVELS`;
 //! nothing happens without a base image.
 
 use crate::enums::*;
 use crate::objects::{set_image, Image, TextureObj, MAX_LEVELS};
-use crate::texture_format::texel_for_stored;
+use crate::texture_format::{is_integer_format, texel_for_stored};
 use crate::Context;
 
 impl Context {
@@ -20,12 +21,28 @@ impl Context {
         }
         if !matches!(
             target,
-            GL_TEXTURE_1D | GL_TEXTURE_2D | GL_TEXTURE_3D | GL_TEXTURE_CUBE_MAP
+            GL_TEXTURE_1D
+                | GL_TEXTURE_2D
+                | GL_TEXTURE_3D
+                | GL_TEXTURE_CUBE_MAP
+                | GL_TEXTURE_1D_ARRAY
+                | GL_TEXTURE_2D_ARRAY
         ) {
             self.set_error(GL_INVALID_ENUM);
             return;
         }
         let unit = self.st.active_texture as usize;
+        // Integer texels have no average (GL 4.x makes this an error; GL
+        // 3.3 leaves the result undefined).
+        let integer = self
+            .objects
+            .bound_texture(unit, target)
+            .and_then(|t| t.base_image())
+            .is_some_and(|i| is_integer_format(i.internal_format as i32));
+        if integer {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
         if let Some(tex) = self.objects.bound_texture_mut(unit, target) {
             for face in 0..tex.faces.len() {
                 generate_mipmaps(tex, face);
@@ -42,19 +59,43 @@ pub(crate) fn generate_mipmaps(tex: &mut TextureObj, face: usize) {
         return;
     };
     let mut level = base;
-    while (cur.width > 1 || cur.height > 1 || cur.depth > 1) && level < MAX_LEVELS as usize {
+    // An array's layers (a 1D array's rows, a 2D array's slices) are
+    // filtered apart, never halved.
+    let (rows_are_layers, slices_are_layers) = match tex.target {
+        GL_TEXTURE_1D_ARRAY => (true, false),
+        GL_TEXTURE_2D_ARRAY => (false, true),
+        _ => (false, false),
+    };
+    let halves = |n: i32, layers: bool| n > 1 && !layers;
+    while (cur.width > 1
+        || halves(cur.height, rows_are_layers)
+        || halves(cur.depth, slices_are_layers))
+        && level < MAX_LEVELS as usize
+    {
         let (w, h, d) = (cur.width as usize, cur.height as usize, cur.depth as usize);
-        let (nw, nh, nd) = ((w / 2).max(1), (h / 2).max(1), (d / 2).max(1));
+        let half = |n: usize, layers: bool| if layers { n } else { (n / 2).max(1) };
+        let (nw, nh, nd) = (
+            half(w, false),
+            half(h, rows_are_layers),
+            half(d, slices_are_layers),
+        );
+        // Per axis: the block size averaged and the source of index x.
+        let step = |n: usize, layers: bool| if n > 1 && !layers { 2 } else { 1 };
+        let (sw, sh, sd) = (
+            step(w, false),
+            step(h, rows_are_layers),
+            step(d, slices_are_layers),
+        );
         let mut texels = Vec::with_capacity(nw * nh * nd);
         for z in 0..nd {
             for y in 0..nh {
                 for x in 0..nw {
                     let mut sum = [0.0f32; 4];
                     let mut n = 0.0f32;
-                    for dz in 0..(if d > 1 { 2 } else { 1 }) {
-                        for dy in 0..(if h > 1 { 2 } else { 1 }) {
-                            for dx in 0..(if w > 1 { 2 } else { 1 }) {
-                                let (sx, sy, sz) = (2 * x + dx, 2 * y + dy, 2 * z + dz);
+                    for dz in 0..sd {
+                        for dy in 0..sh {
+                            for dx in 0..sw {
+                                let (sx, sy, sz) = (sw * x + dx, sh * y + dy, sd * z + dz);
                                 if let Some(t) = cur.texels.get((sz * h + sy) * w + sx) {
                                     for c in 0..4 {
                                         sum[c] += t[c];

@@ -113,6 +113,8 @@ pub struct TexParams {
     pub compare_func: u32,
     pub depth_mode: u32,
     pub generate_mipmap: bool,
+    /// TEXTURE_SWIZZLE_R, _G, _B, _A (GL 3.3 §3.9.8).
+    pub swizzle: [u32; 4],
 }
 
 impl Default for TexParams {
@@ -131,6 +133,7 @@ impl Default for TexParams {
             compare_func: GL_LEQUAL,
             depth_mode: GL_LUMINANCE,
             generate_mipmap: false,
+            swizzle: [GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA],
         }
     }
 }
@@ -144,8 +147,17 @@ pub struct TextureObj {
     /// -Y, +Z, -Z).
     pub faces: Vec<Vec<Option<Image>>>,
     pub params: TexParams,
+    /// A buffer texture's data store (glTexBuffer).
+    pub buffer: Option<TexBuffer>,
     /// Bumped on every change (for caches).
     pub generation: u64,
+}
+
+/// The buffer object a buffer texture reads and the format of its texels.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TexBuffer {
+    pub buffer: u32,
+    pub internal_format: u32,
 }
 
 impl TextureObj {
@@ -203,8 +215,8 @@ pub struct Objects {
     pub next_texture: u32,
     /// Default textures (name 0) per target.
     pub default_textures: BTreeMap<u32, TextureObj>,
-    /// `bound[unit][target index]`.
-    pub bound: Vec<[u32; 4]>,
+    /// `bound[unit][target index]` ([`TEXTURE_TARGETS`] order).
+    pub bound: Vec<[u32; TEXTURE_TARGET_COUNT]>,
     pub renderbuffers: BTreeMap<u32, RenderbufferObj>,
     pub next_renderbuffer: u32,
     pub bound_renderbuffer: u32,
@@ -220,12 +232,19 @@ pub struct Objects {
     pub buffer_targets: BufferTargets,
 }
 
+/// Number of texture targets a unit binds.
+pub const TEXTURE_TARGET_COUNT: usize = 8;
+
 /// Texture targets in binding-table order.
-pub const TEXTURE_TARGETS: [u32; 4] = [
+pub const TEXTURE_TARGETS: [u32; TEXTURE_TARGET_COUNT] = [
     GL_TEXTURE_1D,
     GL_TEXTURE_2D,
     GL_TEXTURE_3D,
     GL_TEXTURE_CUBE_MAP,
+    GL_TEXTURE_1D_ARRAY,
+    GL_TEXTURE_2D_ARRAY,
+    GL_TEXTURE_RECTANGLE,
+    GL_TEXTURE_BUFFER,
 ];
 
 pub fn target_index(target: u32) -> Option<usize> {
@@ -244,7 +263,7 @@ impl Objects {
             textures: BTreeMap::new(),
             next_texture: 1,
             default_textures,
-            bound: vec![[0; 4]; crate::MAX_TEXTURE_IMAGE_UNITS],
+            bound: vec![[0; TEXTURE_TARGET_COUNT]; crate::MAX_TEXTURE_IMAGE_UNITS],
             renderbuffers: BTreeMap::new(),
             next_renderbuffer: 1,
             bound_renderbuffer: 0,
@@ -295,6 +314,11 @@ impl TextureObj {
             ..Default::default()
         };
         t.faces = vec![Vec::new(); if target == GL_TEXTURE_CUBE_MAP { 6 } else { 1 }];
+        if target == GL_TEXTURE_RECTANGLE {
+            // GL 3.1 §3.8.7's initial state of rectangle textures.
+            t.params.wrap = [GL_CLAMP_TO_EDGE; 3];
+            t.params.min_filter = GL_LINEAR;
+        }
         t
     }
 }
@@ -304,6 +328,9 @@ pub(crate) fn image_target(target: u32, dims: u32) -> Option<(u32, usize)> {
     match (dims, target) {
         (1, GL_TEXTURE_1D) => Some((GL_TEXTURE_1D, 0)),
         (2, GL_TEXTURE_2D) => Some((GL_TEXTURE_2D, 0)),
+        (2, GL_TEXTURE_1D_ARRAY) => Some((GL_TEXTURE_1D_ARRAY, 0)),
+        (2, GL_TEXTURE_RECTANGLE) => Some((GL_TEXTURE_RECTANGLE, 0)),
+        (3, GL_TEXTURE_2D_ARRAY) => Some((GL_TEXTURE_2D_ARRAY, 0)),
         (2, t)
             if (GL_TEXTURE_CUBE_MAP_POSITIVE_X..=GL_TEXTURE_CUBE_MAP_NEGATIVE_Z).contains(&t) =>
         {

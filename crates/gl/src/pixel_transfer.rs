@@ -14,10 +14,13 @@
 //! crate, and the C layer's image sizes, go through here.
 
 use crate::enums::*;
-use crate::texture_format::texel_for;
+use crate::texture_format::{integer_texel, texel_for};
 
 /// Components per pixel of a client format.
 pub fn format_components(format: u32) -> Option<usize> {
+    if let Some(plain) = integer_client_format(format) {
+        return format_components(plain);
+    }
     Some(match format {
         GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE | GL_DEPTH_COMPONENT
         | GL_STENCIL_INDEX | GL_COLOR_INDEX => 1,
@@ -26,6 +29,75 @@ pub fn format_components(format: u32) -> Option<usize> {
         GL_RGBA | GL_BGRA => 4,
         _ => return None,
     })
+}
+
+/// The plain format of an integer client format (GL 3.0 Table 3.6:
+/// RED_INTEGER is RED with integer components...), `None` for the others.
+pub fn integer_client_format(format: u32) -> Option<u32> {
+    Some(match format {
+        GL_RED_INTEGER => GL_RED,
+        GL_GREEN_INTEGER => GL_GREEN,
+        GL_BLUE_INTEGER => GL_BLUE,
+        GL_ALPHA_INTEGER => GL_ALPHA,
+        GL_RG_INTEGER => GL_RG,
+        GL_RGB_INTEGER => GL_RGB,
+        GL_RGBA_INTEGER => GL_RGBA,
+        GL_BGR_INTEGER => GL_BGR,
+        GL_BGRA_INTEGER => GL_BGRA,
+        _ => return None,
+    })
+}
+
+/// Decodes one pixel of client data of an integer format into its
+/// components as integers (unnormalized; 0 for those it lacks).
+fn decode_pixel_int(b: &[u8], n: usize, ty: u32) -> [i64; 4] {
+    let mut out = [0i64; 4];
+    let rd = |i: usize, s: usize| -> u32 {
+        let mut v = [0u8; 4];
+        if let Some(src) = b.get(i * s..i * s + s) {
+            v[..s].copy_from_slice(src);
+        }
+        u32::from_le_bytes(v)
+    };
+    let fields = |word: u32, f: [(u32, u32); 4]| {
+        f.map(|(shift, bits)| ((word >> shift) & ((1u32 << bits) - 1)) as i64)
+    };
+    match ty {
+        GL_UNSIGNED_INT_8_8_8_8 => return fields(rd(0, 4), [(24, 8), (16, 8), (8, 8), (0, 8)]),
+        GL_UNSIGNED_INT_8_8_8_8_REV => return fields(rd(0, 4), [(0, 8), (8, 8), (16, 8), (24, 8)]),
+        GL_UNSIGNED_INT_2_10_10_10_REV => {
+            return fields(rd(0, 4), [(0, 10), (10, 10), (20, 10), (30, 2)])
+        }
+        GL_UNSIGNED_SHORT_5_6_5 => {
+            let v = fields(rd(0, 2), [(11, 5), (5, 6), (0, 5), (0, 1)]);
+            return [v[0], v[1], v[2], 0];
+        }
+        GL_UNSIGNED_SHORT_5_6_5_REV => {
+            let v = fields(rd(0, 2), [(0, 5), (5, 6), (11, 5), (0, 1)]);
+            return [v[0], v[1], v[2], 0];
+        }
+        GL_UNSIGNED_SHORT_4_4_4_4 => return fields(rd(0, 2), [(12, 4), (8, 4), (4, 4), (0, 4)]),
+        GL_UNSIGNED_SHORT_4_4_4_4_REV => {
+            return fields(rd(0, 2), [(0, 4), (4, 4), (8, 4), (12, 4)])
+        }
+        GL_UNSIGNED_SHORT_5_5_5_1 => return fields(rd(0, 2), [(11, 5), (6, 5), (1, 5), (0, 1)]),
+        GL_UNSIGNED_SHORT_1_5_5_5_REV => {
+            return fields(rd(0, 2), [(0, 5), (5, 5), (10, 5), (15, 1)])
+        }
+        _ => {}
+    }
+    for (i, o) in out.iter_mut().enumerate().take(n) {
+        *o = match ty {
+            GL_UNSIGNED_BYTE => rd(i, 1) as i64,
+            GL_BYTE => rd(i, 1) as u8 as i8 as i64,
+            GL_UNSIGNED_SHORT => rd(i, 2) as i64,
+            GL_SHORT => rd(i, 2) as u16 as i16 as i64,
+            GL_UNSIGNED_INT => rd(i, 4) as i64,
+            GL_INT => rd(i, 4) as i32 as i64,
+            _ => 0,
+        };
+    }
+    out
 }
 
 /// Bytes per pixel and per component of a client format/type pair (packed
@@ -64,7 +136,7 @@ pub fn row_stride(width: usize, format: u32, ty: u32, alignment: usize) -> usize
     }
 }
 
-fn half_to_f32(h: u16) -> f32 {
+pub(crate) fn half_to_f32(h: u16) -> f32 {
     let sign = if h & 0x8000 != 0 { -1.0f32 } else { 1.0 };
     let e = ((h >> 10) & 0x1f) as i32;
     let m = (h & 0x3ff) as f32;
@@ -205,6 +277,33 @@ pub fn unpack_image(
     let n = format_components(format).unwrap_or(4);
     let stride = row_stride(w, format, ty, alignment);
     let mut out = Vec::with_capacity(len);
+    if let Some(plain) = integer_client_format(format) {
+        // Integer data for an integer texture: components kept as
+        // integers, placed as the plain format places them.
+        for z in 0..d {
+            for y in 0..h {
+                let row = (z * h + y).saturating_mul(stride);
+                for x in 0..w {
+                    let at = row.saturating_add(x * px);
+                    let b = data.get(at..at.saturating_add(px)).unwrap_or(&[]);
+                    let c = decode_pixel_int(b, n, ty);
+                    let rgba = match plain {
+                        GL_GREEN => [0, c[0], 0, 1],
+                        GL_BLUE => [0, 0, c[0], 1],
+                        GL_ALPHA => [0, 0, 0, c[0]],
+                        GL_RED => [c[0], 0, 0, 1],
+                        GL_RG => [c[0], c[1], 0, 1],
+                        GL_RGB => [c[0], c[1], c[2], 1],
+                        GL_BGR => [c[2], c[1], c[0], 1],
+                        GL_BGRA => [c[2], c[1], c[0], c[3]],
+                        _ => c,
+                    };
+                    out.push(integer_texel(rgba, internal));
+                }
+            }
+        }
+        return out;
+    }
     for z in 0..d {
         for y in 0..h {
             let row = (z * h + y).saturating_mul(stride);
@@ -235,6 +334,70 @@ pub(crate) fn pack_pixels(
     let stride = row_stride(w, format, ty, align);
     let mut out = vec![0u8; stride.saturating_mul(h)];
     pack_into(block, w, h, format, ty, align, &mut out);
+    out
+}
+
+/// Packs `w * h` integer texels (the integers' bits, signed or not) as an
+/// integer client format `format`/`ty` at `align`: each component the
+/// plain format takes, clamped to the type's range (EXT_texture_integer's
+/// final conversion for integer colours).
+pub(crate) fn pack_integer_pixels(
+    block: &[[f32; 4]],
+    signed: bool,
+    w: usize,
+    h: usize,
+    format: u32,
+    ty: u32,
+    align: usize,
+) -> Vec<u8> {
+    let (Some(plain), Some((px, comp))) = (integer_client_format(format), pixel_size(format, ty))
+    else {
+        return Vec::new();
+    };
+    let stride = row_stride(w, format, ty, align);
+    let mut out = vec![0u8; stride.saturating_mul(h)];
+    let (lo, hi): (i64, i64) = match ty {
+        GL_UNSIGNED_BYTE => (0, u8::MAX as i64),
+        GL_BYTE => (i8::MIN as i64, i8::MAX as i64),
+        GL_UNSIGNED_SHORT => (0, u16::MAX as i64),
+        GL_SHORT => (i16::MIN as i64, i16::MAX as i64),
+        GL_UNSIGNED_INT => (0, u32::MAX as i64),
+        _ => (i32::MIN as i64, i32::MAX as i64),
+    };
+    for row in 0..h {
+        for col in 0..w {
+            let Some(p) = block.get(row * w + col) else {
+                continue;
+            };
+            let v = p.map(|x| {
+                if signed {
+                    x.to_bits() as i32 as i64
+                } else {
+                    x.to_bits() as i64
+                }
+            });
+            let [r, g, b, a] = v;
+            let vals: &[i64] = match plain {
+                GL_RED => &[r],
+                GL_GREEN => &[g],
+                GL_BLUE => &[b],
+                GL_ALPHA => &[a],
+                GL_RG => &[r, g],
+                GL_RGB => &[r, g, b],
+                GL_BGR => &[b, g, r],
+                GL_BGRA => &[b, g, r, a],
+                _ => &[r, g, b, a],
+            };
+            let at = row * stride + col * px;
+            for (c, &x) in vals.iter().enumerate() {
+                let o = at + c * comp;
+                let bytes = x.clamp(lo, hi).to_le_bytes();
+                if let Some(dst) = out.get_mut(o..o + comp) {
+                    dst.copy_from_slice(&bytes[..comp]);
+                }
+            }
+        }
+    }
     out
 }
 

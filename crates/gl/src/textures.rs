@@ -1,8 +1,11 @@
-//! Texture objects' entry points (GL 2.1 §3.8): glGenTextures,
-//! glBindTexture, glDeleteTextures, image specification (glTexImage*,
-//! glTexSubImage*: one method each for the 1D, 2D and 3D forms), sampler
-//! parameters (glTexParameter*) and the queries
-//! (glGetTexParameter*, glGetTexLevelParameteriv, glGetTexImage).
+//! Texture objects' entry points (GL 2.1 §3.8, GL 3.3 §3.9): glGenTextures,
+//! glBindTexture (1D, 2D, 3D, cube, 1D and 2D array, rectangle and buffer
+//! targets), glDeleteTextures, image specification (glTexImage*,
+//! glTexSubImage*: one method each for the 1D, 2D and 3D forms; integer
+//! formats take integer data only), sampler parameters (glTexParameter*,
+//! swizzles included; rectangles refuse repeating wraps and mipmap
+//! filters) and the queries (glGetTexParameter*,
+//! glGetTexLevelParameteriv, glGetTexImage).
 //!
 //! Contract: every image specification unpacks the client image through
 //! [`crate::pixel_transfer`] into the stored texel form of
@@ -17,14 +20,32 @@ use crate::objects::{
     image_target, set_image, target_index, Attachment, Image, TextureObj, MAX_LEVELS,
 };
 use crate::param::Param;
-use crate::pixel_transfer::{format_components, pack_pixels, pixel_size, unpack_image};
-use crate::texture_format::{base_format, is_depth_format};
+use crate::pixel_transfer::{
+    format_components, integer_client_format, pack_integer_pixels, pack_pixels, pixel_size,
+    unpack_image,
+};
+use crate::texture_format::{
+    base_format, component_info, integer_format, is_depth_format, is_integer_format,
+};
 use crate::{Context, MAX_TEXTURE_SIZE};
 
 /// The first three of `v`'s entries, `pad` for those it lacks: the
 /// extent or offset of a 1D, 2D or 3D image as a 3D one.
 fn extent<const D: usize>(v: [i32; D], pad: i32) -> [i32; 3] {
     std::array::from_fn(|i| v.get(i).copied().unwrap_or(pad))
+}
+
+/// GL 3.3 §3.9.3: integer internal formats take integer client data
+/// only, and integer data no FLOAT or HALF_FLOAT type; other formats no
+/// integer data.
+fn integer_data_matches(internal: i32, format: u32, ty: u32) -> bool {
+    let int_data = integer_client_format(format).is_some();
+    is_integer_format(internal) == int_data && !(int_data && matches!(ty, GL_FLOAT | GL_HALF_FLOAT))
+}
+
+/// GL 3.3 §3.9.8: what a texture swizzle may select.
+fn valid_swizzle(s: u32) -> bool {
+    matches!(s, GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_ZERO | GL_ONE)
 }
 
 fn valid_filter(f: u32, min: bool) -> bool {
@@ -186,10 +207,26 @@ impl Context {
         // Depth formats need depth data and vice versa (GL 2.1 §3.8.1).
         let depth_fmt = matches!(base, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL);
         let depth_data = matches!(format, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL);
-        if depth_fmt != depth_data
-            || (depth_fmt && !matches!(bind_target, GL_TEXTURE_1D | GL_TEXTURE_2D))
-        {
+        let depth_target = matches!(
+            bind_target,
+            GL_TEXTURE_1D
+                | GL_TEXTURE_2D
+                | GL_TEXTURE_CUBE_MAP
+                | GL_TEXTURE_1D_ARRAY
+                | GL_TEXTURE_2D_ARRAY
+                | GL_TEXTURE_RECTANGLE
+        );
+        if depth_fmt != depth_data || (depth_fmt && !depth_target) {
             self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
+        if !integer_data_matches(internal, format, ty) {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
+        // A rectangle texture has one level (GL 3.1 §3.8.1).
+        if bind_target == GL_TEXTURE_RECTANGLE && level != 0 {
+            self.set_error(GL_INVALID_VALUE);
             return;
         }
         let (w, h, d) = (size[0] as usize, size[1] as usize, size[2] as usize);
@@ -254,6 +291,15 @@ impl Context {
         }
         let alignment = self.st.unpack_alignment as usize;
         let unit = self.st.active_texture as usize;
+        let internal = self
+            .objects
+            .bound_texture(unit, bind_target)
+            .and_then(|t| t.image(face, level as usize))
+            .map(|i| i.internal_format as i32);
+        if internal.is_some_and(|i| !integer_data_matches(i, format, ty)) {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
         let Some(tex) = self.objects.bound_texture_mut(unit, bind_target) else {
             self.set_error(GL_INVALID_OPERATION);
             return;
@@ -309,11 +355,12 @@ impl Context {
             return;
         }
         let (e, v) = (v.as_enum(), &v.floats(pname)[..]);
-        if target_index(target).is_none() {
+        // Buffer textures have no sampler parameters (GL 3.1 §3.8.4).
+        if target_index(target).is_none() || target == GL_TEXTURE_BUFFER {
             self.set_error(GL_INVALID_ENUM);
             return;
         }
-        let need = if pname == GL_TEXTURE_BORDER_COLOR {
+        let need = if matches!(pname, GL_TEXTURE_BORDER_COLOR | GL_TEXTURE_SWIZZLE_RGBA) {
             4
         } else {
             1
@@ -327,9 +374,21 @@ impl Context {
             self.set_error(GL_INVALID_OPERATION);
             return;
         };
+        let rect = tex.target == GL_TEXTURE_RECTANGLE;
         let p = &mut tex.params;
         let mut err = GL_NO_ERROR;
         match pname {
+            // GL 3.1 §3.8.4: a rectangle texture has no mipmaps and does
+            // not repeat.
+            GL_TEXTURE_MIN_FILTER if rect && !matches!(e, GL_NEAREST | GL_LINEAR) => {
+                err = GL_INVALID_ENUM
+            }
+            GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R
+                if rect && matches!(e, GL_REPEAT | GL_MIRRORED_REPEAT) =>
+            {
+                err = GL_INVALID_ENUM
+            }
+            GL_TEXTURE_BASE_LEVEL if rect && v[0] as i32 != 0 => err = GL_INVALID_OPERATION,
             GL_TEXTURE_MIN_FILTER if valid_filter(e, true) => p.min_filter = e,
             GL_TEXTURE_MAG_FILTER if valid_filter(e, false) => p.mag_filter = e,
             GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R
@@ -375,6 +434,23 @@ impl Context {
                 p.depth_mode = e
             }
             GL_GENERATE_MIPMAP => p.generate_mipmap = v[0] != 0.0,
+            GL_TEXTURE_SWIZZLE_R..=GL_TEXTURE_SWIZZLE_RGBA => {
+                let all = pname == GL_TEXTURE_SWIZZLE_RGBA;
+                let values: Vec<u32> = v
+                    .iter()
+                    .take(if all { 4 } else { 1 })
+                    .map(|&x| x as u32)
+                    .collect();
+                if values.iter().all(|&s| valid_swizzle(s)) {
+                    if all {
+                        p.swizzle.copy_from_slice(&values);
+                    } else {
+                        p.swizzle[(pname - GL_TEXTURE_SWIZZLE_R) as usize] = values[0];
+                    }
+                } else {
+                    err = GL_INVALID_ENUM;
+                }
+            }
             GL_TEXTURE_PRIORITY => {}
             GL_TEXTURE_MIN_FILTER
             | GL_TEXTURE_MAG_FILTER
@@ -412,6 +488,9 @@ impl Context {
             GL_TEXTURE_COMPARE_FUNC => p.compare_func as i32,
             GL_DEPTH_TEXTURE_MODE => p.depth_mode as i32,
             GL_GENERATE_MIPMAP => p.generate_mipmap as i32,
+            GL_TEXTURE_SWIZZLE_R..=GL_TEXTURE_SWIZZLE_A => {
+                p.swizzle[(pname - GL_TEXTURE_SWIZZLE_R) as usize] as i32
+            }
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 0
@@ -433,14 +512,21 @@ impl Context {
             )
         });
         let bits = |has: &[u32]| match info {
-            Some((_, _, base)) if has.contains(&base) => {
-                if base == GL_DEPTH_COMPONENT {
+            Some((_, internal, base)) if has.contains(&base) => {
+                if base == GL_DEPTH_COMPONENT && internal != GL_DEPTH_COMPONENT32F {
                     24
                 } else {
-                    8
+                    component_info(internal as i32).0 as i32
                 }
             }
             _ => 0,
+        };
+        // GL 3.0's component types: NONE for a component the format lacks.
+        let kind = |has: &[u32]| match info {
+            Some((_, internal, base)) if has.contains(&base) => {
+                component_info(internal as i32).1 as i32
+            }
+            _ => GL_NONE as i32,
         };
         match pname {
             GL_TEXTURE_WIDTH => info.map_or(0, |i| i.0[0]),
@@ -450,11 +536,22 @@ impl Context {
             GL_TEXTURE_BORDER | GL_TEXTURE_COMPRESSED => 0,
             GL_TEXTURE_RED_SIZE => bits(&[GL_RGB, GL_RGBA, GL_RED, GL_RG]),
             GL_TEXTURE_GREEN_SIZE => bits(&[GL_RGB, GL_RGBA, GL_RG]),
-            GL_TEXTURE_BLUE_SIZE => bits(&[GL_RGB, GL_RGBA]),
+            // R11F_G11F_B10F's blue has one bit less.
+            GL_TEXTURE_BLUE_SIZE => match info {
+                Some((_, GL_R11F_G11F_B10F, _)) => 10,
+                _ => bits(&[GL_RGB, GL_RGBA]),
+            },
             GL_TEXTURE_ALPHA_SIZE => bits(&[GL_RGBA, GL_ALPHA, GL_LUMINANCE_ALPHA]),
             GL_TEXTURE_LUMINANCE_SIZE => bits(&[GL_LUMINANCE, GL_LUMINANCE_ALPHA]),
             GL_TEXTURE_INTENSITY_SIZE => bits(&[GL_INTENSITY]),
             GL_TEXTURE_DEPTH_SIZE => bits(&[GL_DEPTH_COMPONENT]),
+            GL_TEXTURE_RED_TYPE => kind(&[GL_RGB, GL_RGBA, GL_RED, GL_RG]),
+            GL_TEXTURE_GREEN_TYPE => kind(&[GL_RGB, GL_RGBA, GL_RG]),
+            GL_TEXTURE_BLUE_TYPE => kind(&[GL_RGB, GL_RGBA]),
+            GL_TEXTURE_ALPHA_TYPE => kind(&[GL_RGBA, GL_ALPHA, GL_LUMINANCE_ALPHA]),
+            GL_TEXTURE_LUMINANCE_TYPE => kind(&[GL_LUMINANCE, GL_LUMINANCE_ALPHA]),
+            GL_TEXTURE_INTENSITY_TYPE => kind(&[GL_INTENSITY]),
+            GL_TEXTURE_DEPTH_TYPE => kind(&[GL_DEPTH_COMPONENT, GL_DEPTH_STENCIL]),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 0
@@ -477,6 +574,7 @@ impl Context {
             GL_TEXTURE_MAX_LOD => vec![p.max_lod],
             GL_TEXTURE_LOD_BIAS => vec![p.lod_bias],
             GL_TEXTURE_PRIORITY | GL_TEXTURE_RESIDENT => vec![1.0],
+            GL_TEXTURE_SWIZZLE_RGBA => p.swizzle.iter().map(|&s| s as f32).collect(),
             _ => vec![self.get_tex_parameteriv(target, pname) as f32],
         }
     }
@@ -534,6 +632,13 @@ impl Context {
             self.set_error(GL_INVALID_OPERATION);
             return Vec::new();
         }
+        // Integer images go to integer formats only, and back (GL 3.3
+        // §6.1.4).
+        let integer = integer_format(img.internal_format as i32);
+        if integer.is_some() != integer_client_format(format).is_some() {
+            self.set_error(GL_INVALID_OPERATION);
+            return Vec::new();
+        }
         let n = format_components(format).unwrap_or(4);
         if comp != px / n.max(1) {
             // Packed types are not implemented for reads.
@@ -557,6 +662,12 @@ impl Context {
                 _ => [r, g, b, a],
             })
             .collect();
+        if let Some((_, _, signed)) = integer {
+            // Stored integer texels already hold 0 and 1 for the
+            // components their format lacks.
+            let rows = h.saturating_mul(d);
+            return pack_integer_pixels(&img.texels, signed, w, rows, format, ty, align);
+        }
         pack_pixels(&texels, w, h.saturating_mul(d), format, ty, align)
     }
 }

@@ -121,6 +121,12 @@ builtin_fns! {
     Shadow2DLod = "shadow2DLod";
     Shadow1DProjLod = "shadow1DProjLod";
     Shadow2DProjLod = "shadow2DProjLod";
+    // GL_ARB_texture_rectangle's lookups (GLSL 1.40 has the sampler
+    // types).
+    Texture2DRect = "texture2DRect";
+    Texture2DRectProj = "texture2DRectProj";
+    Shadow2DRect = "shadow2DRect";
+    Shadow2DRectProj = "shadow2DRectProj";
     // §8.7 (1.30 and later): one name per kind of lookup, the sampler
     // type telling the target apart.
     TextureSize = "textureSize";

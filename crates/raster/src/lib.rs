@@ -138,6 +138,12 @@
 //! rounded, so a texel read alone is exactly k/255), the same definition
 //! in every path and instruction set; f32 levels, 1D and 3D textures,
 //! depth textures and lookups touching the border colour filter in f32.
+//! The GL 3.x targets and lookups take the general path: 1D and 2D
+//! arrays (layer = clamp(RNE(r))), rectangles (texel coordinates),
+//! buffer textures, texel offsets, explicit gradients (each lane's own),
+//! integer textures (nearest texel, the integers' bits returned), sRGB
+//! decoding before filtering, swizzles; `texelFetch` and `textureSize`
+//! are `Textures::fetch` and `Textures::size`.
 //! Blending with FUNC_ADD and SRC_ALPHA/ONE_MINUS_SRC_ALPHA, ONE/ZERO or
 //! ONE/ONE into an RGBA8 buffer runs as straight-line code with the
 //! general equations' bits.
@@ -259,7 +265,8 @@ pub use state::{
     PolygonMode, PolygonOffset, PrimitiveIds, Rect, StencilFace, StencilOp, StencilState,
 };
 pub use texture::{
-    DepthTextureMode, Image, MagFilter, MinFilter, Texture, TextureTarget, TextureUnit, Wrap,
+    DepthTextureMode, Image, MagFilter, MinFilter, Swizzle, Texture, TextureTarget, TextureUnit,
+    Wrap,
 };
 pub use texture_units::TextureUnits;
 pub use vertex::{fetch_column_each, fetch_vertex, shade_vertices, VertexFetch};

@@ -1,5 +1,6 @@
-//! Texture storage (GL 2.1 §3.8): the texture objects ([`Texture`]: 1D,
-//! 2D, 3D and cube targets, mipmap levels, filters, wrap modes, LOD
+//! Texture storage (GL 2.1 §3.8, GL 3.3 §3.8): the texture objects
+//! ([`Texture`]: 1D, 2D, 3D, cube, 1D and 2D array, rectangle and buffer
+//! targets, mipmap levels, filters, wrap modes, LOD
 //! parameters, depth comparison), their levels ([`Image`]), what a
 //! texture unit binds ([`TextureUnit`]) and completeness
 //! ([`Texture::last_level`]). Sampling lives above this module: the
@@ -14,7 +15,8 @@
 //! an integer k (every unorm8 format: RGBA8, LUMINANCE8, ...) is stored as
 //! RGBA8 bytes instead (a quarter of the memory traffic) and read back
 //! through a table of those exact values, so the two storages sample to
-//! the same bits. Texture borders are not supported (border width 0);
+//! the same bits. Integer textures hold the integers' bits instead
+//! ([`Texture::integer`]). Texture borders are not supported (border width 0);
 //! CLAMP and CLAMP_TO_BORDER sample the border color.
 //!
 //! The 2D fast path's x86 variants read an RGBA8 level through a padded
@@ -36,6 +38,16 @@ pub enum TextureTarget {
     /// Six faces stored as the layers of each level, in the order
     /// +X, −X, +Y, −Y, +Z, −Z.
     Cube,
+    /// Layers stored as the rows of each level (its height is the layer
+    /// count).
+    Tex1DArray,
+    /// Layers stored as the depth of each level.
+    Tex2DArray,
+    /// One level addressed in texels (GL 3.1 §3.8.8: coordinates not
+    /// scaled by the size, no mipmaps; only the clamping wrap modes).
+    Rect,
+    /// One row of texels, reached by `texelFetch` only.
+    Buffer,
 }
 
 /// `k / 255` for every byte k, as `unorm8_to_float` computes it.
@@ -275,6 +287,8 @@ pub enum DepthTextureMode {
     Intensity,
     /// (0, 0, 0, r)
     Alpha,
+    /// (r, 0, 0, 1) (GL 3.0)
+    Red,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -298,6 +312,62 @@ pub struct Texture {
     /// TEXTURE_COMPARE_MODE = COMPARE_R_TO_TEXTURE with this function.
     pub compare: Option<CompareFunc>,
     pub depth_mode: DepthTextureMode,
+    /// The internal format is an integer one (GL 3.0 §3.8.1): texels hold
+    /// the integers' bits (`f32::from_bits`), lookups read the nearest
+    /// texel of one level and return them unconverted.
+    pub integer: bool,
+    /// The internal format is an sRGB one (GL 2.1 §3.8.15, EXT_texture_sRGB):
+    /// each texel's red, green and blue are decoded to linear before
+    /// filtering ([`srgb_to_linear`]).
+    pub srgb: bool,
+    /// TEXTURE_SWIZZLE_R/G/B/A (GL 3.3 §3.9.8): what each component of a
+    /// lookup's result is, from the value after the depth texture mode.
+    pub swizzle: [Swizzle; 4],
+}
+
+/// One component's texture swizzle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Swizzle {
+    R,
+    G,
+    B,
+    A,
+    Zero,
+    One,
+}
+
+/// The identity swizzle.
+pub const NO_SWIZZLE: [Swizzle; 4] = [Swizzle::R, Swizzle::G, Swizzle::B, Swizzle::A];
+
+impl Texture {
+    /// `v` through the texture's swizzle (ONE is 1.0, or integer 1 for an
+    /// integer texture).
+    #[inline]
+    pub(crate) fn swizzled(&self, v: [f32; 4]) -> [f32; 4] {
+        if self.swizzle == NO_SWIZZLE {
+            return v;
+        }
+        let one = if self.integer { f32::from_bits(1) } else { 1.0 };
+        self.swizzle.map(|s| match s {
+            Swizzle::R => v[0],
+            Swizzle::G => v[1],
+            Swizzle::B => v[2],
+            Swizzle::A => v[3],
+            Swizzle::Zero => 0.0,
+            Swizzle::One => one,
+        })
+    }
+}
+
+/// The sRGB decoding of a stored component c in [0, 1] (GL 2.1 eq. 3.30):
+/// c / 12.92 up to 0.04045, ((c + 0.055) / 1.055)^2.4 above, in
+/// `glsl::math`'s `pow`, so every machine computes the same bits.
+pub fn srgb_to_linear(c: f32) -> f32 {
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        glsl::math::pow((c + 0.055) / 1.055, 2.4)
+    }
 }
 
 impl Texture {
@@ -319,28 +389,43 @@ impl Texture {
             depth_format: false,
             compare: None,
             depth_mode: DepthTextureMode::Luminance,
+            integer: false,
+            srgb: false,
+            swizzle: NO_SWIZZLE,
         }
     }
 
     pub(crate) fn dims(&self) -> usize {
         match self.target {
-            TextureTarget::Tex1D => 1,
-            TextureTarget::Tex2D | TextureTarget::Cube => 2,
+            TextureTarget::Tex1D | TextureTarget::Tex1DArray | TextureTarget::Buffer => 1,
+            TextureTarget::Tex2D
+            | TextureTarget::Cube
+            | TextureTarget::Tex2DArray
+            | TextureTarget::Rect => 2,
             TextureTarget::Tex3D => 3,
         }
     }
 
     pub(crate) fn mipmapped(&self) -> bool {
         !matches!(self.min_filter, MinFilter::Nearest | MinFilter::Linear)
+            && !matches!(self.target, TextureTarget::Rect | TextureTarget::Buffer)
+    }
+
+    /// Whether the target's levels are arrays of layers.
+    pub(crate) fn layered(&self) -> bool {
+        matches!(
+            self.target,
+            TextureTarget::Tex1DArray | TextureTarget::Tex2DArray
+        )
     }
 
     /// Size of an image along `axis` as it matters for this target.
-    fn size(&self, img: &Image, axis: usize) -> u32 {
+    pub(crate) fn size(&self, img: &Image, axis: usize) -> u32 {
         match (axis, self.target) {
             (0, _) => img.width,
-            (1, TextureTarget::Tex1D) => 1,
+            (1, TextureTarget::Tex1D | TextureTarget::Buffer) => 1,
             (1, _) => img.height,
-            (2, TextureTarget::Tex3D) => img.depth,
+            (2, TextureTarget::Tex3D | TextureTarget::Tex2DArray) => img.depth,
             (2, TextureTarget::Cube) => 6,
             _ => 1,
         }
@@ -378,9 +463,12 @@ impl Texture {
         let levels = self.levels.get(base + 1..=q)?;
         for (s, img) in (1u32..).zip(levels) {
             let want = |a: usize| (dims[a] >> s).max(1);
+            // An array's levels all have the base level's layers.
+            let layers_ok = !self.layered() || self.size(img, nd) == dims[nd];
             let sizes_ok = img.width == want(0)
                 && (nd < 2 || img.height == want(1))
-                && (nd < 3 || img.depth == want(2));
+                && (nd < 3 || img.depth == want(2))
+                && layers_ok;
             if !sizes_ok || !img.holds_texels() {
                 return None;
             }
@@ -396,6 +484,10 @@ pub struct TextureUnit {
     pub tex_2d: Option<Arc<Texture>>,
     pub tex_3d: Option<Arc<Texture>>,
     pub cube: Option<Arc<Texture>>,
+    pub tex_1d_array: Option<Arc<Texture>>,
+    pub tex_2d_array: Option<Arc<Texture>>,
+    pub rect: Option<Arc<Texture>>,
+    pub buffer: Option<Arc<Texture>>,
     /// TEXTURE_LOD_BIAS of the texture environment.
     pub lod_bias: f32,
 }

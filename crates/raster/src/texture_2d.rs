@@ -183,7 +183,11 @@ impl<'a> Lookup2D<'a> {
     /// target, a depth comparison, no lanes, lanes on different units).
     #[inline(always)]
     fn of(req: &'a SampleRequest) -> Option<Lookup2D<'a>> {
-        if req.target != SamplerKind::Sampler2D || req.compare.is_some() || req.mask == 0 {
+        if req.target != SamplerKind::Sampler2D
+            || req.compare.is_some()
+            || req.offset.is_some()
+            || req.mask == 0
+        {
             return None;
         }
         let first = req.mask.trailing_zeros() as usize;
@@ -204,6 +208,8 @@ impl<'a> Lookup2D<'a> {
                 ddy: [&ddy[0], &ddy[1]],
                 bias,
             },
+            // Each lane's own derivatives: the general path.
+            Lod::Gradients { .. } => return None,
         };
         Some(Lookup2D {
             unit,
@@ -265,6 +271,9 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
     let borderless = |w: Wrap| matches!(w, Wrap::Repeat | Wrap::ClampToEdge | Wrap::MirroredRepeat);
     if tex.target != TextureTarget::Tex2D
         || tex.depth_format
+        || tex.integer
+        || tex.srgb
+        || tex.swizzle != crate::texture::NO_SWIZZLE
         || !borderless(tex.wrap[0])
         || !borderless(tex.wrap[1])
     {

@@ -7,16 +7,17 @@
 //! `texture_2d` computes the same bits faster for the common 2D case;
 //! `texture_units` picks between them.
 
-use crate::ex::{Lod, SampleRequest, LANES};
+use crate::ex::{FetchRequest, Lod, SampleRequest, LANES};
 use crate::texture::levels::{
     floor, lambda, mix_levels, quad_first, select_levels, wrap_coord, Levels, LodBase,
 };
 use crate::texture::{
-    DepthTextureMode, Image, Texels, Texture, TextureTarget, TextureUnit, Wrap, MISSING,
+    srgb_to_linear, DepthTextureMode, Image, Texels, Texture, TextureTarget, TextureUnit, Wrap,
+    MISSING,
 };
 use crate::unorm8_filter;
 use glsl::math;
-use glsl::types::SamplerKind;
+use glsl::types::{SamplerDim, SamplerKind};
 
 /// Every lookup of `req` through `units`, lane by lane (`texture_2d` is
 /// the fast path of the common case, with the same results).
@@ -59,19 +60,105 @@ fn complete_texture<'a>(
     req: &SampleRequest,
     unit: u32,
 ) -> Option<(&'a Texture, usize)> {
-    let unit = units.get(unit as usize)?;
-    let tex = match req.target {
-        SamplerKind::Sampler1D | SamplerKind::Sampler1DShadow => &unit.tex_1d,
-        SamplerKind::Sampler2D | SamplerKind::Sampler2DShadow => &unit.tex_2d,
-        SamplerKind::Sampler3D => &unit.tex_3d,
-        SamplerKind::SamplerCube => &unit.cube,
-        // The lowering refuses lookups on the other sampler types; a
-        // request naming one finds no texture (the incomplete-texture
-        // result).
+    let tex = unit_texture(units.get(unit as usize)?, req.target)?;
+    Some((tex, tex.last_level()?))
+}
+
+/// The texture a sampler of type `target` reads on `unit`, if bound.
+fn unit_texture(unit: &TextureUnit, target: SamplerKind) -> Option<&Texture> {
+    let tex = match (target.dim(), target.is_array()) {
+        (SamplerDim::D1, false) => &unit.tex_1d,
+        (SamplerDim::D2, false) => &unit.tex_2d,
+        (SamplerDim::D3, _) => &unit.tex_3d,
+        (SamplerDim::Cube, false) => &unit.cube,
+        (SamplerDim::D1, true) => &unit.tex_1d_array,
+        (SamplerDim::D2, true) => &unit.tex_2d_array,
+        (SamplerDim::Rect, _) => &unit.rect,
+        (SamplerDim::Buffer, _) => &unit.buffer,
+        // Multisample textures and cube map arrays: none are bound; the
+        // lookup finds no texture (the incomplete-texture result).
         _ => return None,
     };
-    let tex = tex.as_deref()?;
-    Some((tex, tex.last_level()?))
+    tex.as_deref()
+}
+
+/// Every texel fetch of `req` through `units` (GL 3.0 §3.8.8: the texel
+/// of level base + lod at the integer coordinates, unfiltered; outside
+/// the level or on an incomplete texture (0, 0, 0, 1)). Depth textures
+/// give their depth as RGBA by the depth texture mode, as lookups do.
+pub(crate) fn fetch_general(
+    units: &[TextureUnit],
+    req: &FetchRequest,
+    out: &mut [[f32; LANES]; 4],
+) {
+    for lane in 0..LANES {
+        if req.mask & (1 << lane) == 0 {
+            continue;
+        }
+        let rgba = fetch_lane(units, req, lane).unwrap_or(MISSING);
+        for (o, v) in out.iter_mut().zip(rgba) {
+            o[lane] = v;
+        }
+    }
+}
+
+fn fetch_lane(units: &[TextureUnit], req: &FetchRequest, lane: usize) -> Option<[f32; 4]> {
+    let tex = unit_texture(units.get(req.unit[lane] as usize)?, req.target)?;
+    let q = tex.last_level()?;
+    let lod = req.lod[lane];
+    let level = (tex.base_level as i64).checked_add(lod as i64)?;
+    if lod < 0 || level > q as i64 {
+        return None;
+    }
+    let img = tex.levels.get(level as usize)?;
+    let [i, j, k] = [0, 1, 2].map(|c| req.coord[c][lane]);
+    // Coordinates past the target's (and its layer) are 0.
+    let n = tex.dims() + usize::from(tex.layered());
+    let sizes = [img.width, img.height, img.depth];
+    let inside = [i, j, k]
+        .iter()
+        .zip(sizes)
+        .take(n)
+        .all(|(&c, size)| c >= 0 && (c as i64) < size as i64);
+    if !inside {
+        return None;
+    }
+    let at = |c: i32, a: usize| if a < n { c as usize } else { 0 };
+    let t = img.texel(at(i, 0), at(j, 1), at(k, 2));
+    Some(tex.swizzled(depth_rgba(tex, decoded(tex, t))))
+}
+
+/// `textureSize` (GLSL 1.30 §8.7): the sizes of level base + `lod` of the
+/// texture of `target` on `unit` (width, then height or the layers, then
+/// depth or the layers), 0 past the target's; (0, 0, 0) when there is no
+/// such texture or level.
+pub(crate) fn size_general(
+    units: &[TextureUnit],
+    unit: u32,
+    target: SamplerKind,
+    lod: i32,
+) -> [i32; 3] {
+    let Some(tex) = units
+        .get(unit as usize)
+        .and_then(|u| unit_texture(u, target))
+    else {
+        return [0; 3];
+    };
+    let level = tex.base_level as i64 + lod as i64;
+    let img = match usize::try_from(level) {
+        Ok(l) if lod >= 0 => tex.levels.get(l),
+        _ => None,
+    };
+    let Some(img) = img else {
+        return [0; 3];
+    };
+    let n = match tex.target {
+        TextureTarget::Tex1D | TextureTarget::Buffer => 1,
+        TextureTarget::Tex3D | TextureTarget::Tex2DArray => 3,
+        _ => 2,
+    };
+    let sizes = [img.width, img.height, img.depth];
+    std::array::from_fn(|a| if a < n { sizes[a] as i32 } else { 0 })
 }
 
 fn sample_lane(
@@ -85,8 +172,16 @@ fn sample_lane(
         return MISSING;
     };
     let coord = [0, 1, 2].map(|c| req.coord[c][lane]);
+    let offset = req.offset.map_or([0; 3], |o| [0, 1, 2].map(|c| o[c][lane]));
     let (lod_base, shader_bias) = match &req.lod {
         Lod::Explicit(l) => (LodBase::Value(l[lane]), 0.0),
+        Lod::Gradients { ddx, ddy } => (
+            LodBase::Derivatives(
+                [0, 1, 2].map(|c| ddx[c][lane]),
+                [0, 1, 2].map(|c| ddy[c][lane]),
+            ),
+            0.0,
+        ),
         Lod::Derivatives { ddx, ddy, bias } => {
             let first = quad_first(lane);
             (
@@ -99,14 +194,24 @@ fn sample_lane(
         }
     };
     let reference = req.compare.map(|r| r[lane]);
-    sample(
+    let v = sample(
         tex,
         q,
         coord,
         lod_base,
         unit.lod_bias + shader_bias,
         reference,
-    )
+        offset,
+    );
+    if req.compare_only && tex.depth_format {
+        // The value before the depth texture mode spread it.
+        let r = match tex.depth_mode {
+            DepthTextureMode::Alpha => v[3],
+            _ => v[0],
+        };
+        return [r; 4];
+    }
+    tex.swizzled(v)
 }
 
 /// Cube face selection (GL 2.1 §3.8.6, table 3.19): face index and
@@ -166,6 +271,7 @@ pub(crate) fn sample(
     lod: LodBase,
     extra_bias: f32,
     reference: Option<f32>,
+    offset: [i32; 3],
 ) -> [f32; 4] {
     let base = tex.base_level as usize;
     let Some(base_img) = tex.levels.get(base) else {
@@ -186,6 +292,20 @@ pub(crate) fn sample(
             other => other,
         };
         ([s, t, 0.0], Some(face), derivs)
+    } else if tex.layered() {
+        // GL 3.0 §3.8.8: layer = clamp(RNE(r), 0, layers − 1), of the
+        // coordinate after the target's.
+        let nd = tex.dims();
+        let layers = tex.size(base_img, nd).max(1);
+        let l = floor(coord[nd] + 0.5);
+        let l = if l.is_nan() {
+            0.0
+        } else {
+            l.clamp(0.0, (layers - 1) as f32)
+        };
+        let mut st = coord;
+        st[nd] = 0.0;
+        (st, Some(l as usize), lod)
     } else {
         (coord, None, lod)
     };
@@ -194,12 +314,24 @@ pub(crate) fn sample(
     let reference = reference.map(|r| r.clamp(0.0, 1.0));
     let one = |level: usize, linear: bool| -> [f32; 4] {
         match tex.levels.get(level) {
-            Some(img) => filter(tex, img, st, layer, linear, reference),
+            Some(img) => filter(tex, img, st, layer, linear, reference, offset),
             None => MISSING,
         }
     };
+    if tex.integer {
+        // Integer texels are not filtered: the nearest texel of one level
+        // (GL 3.0 §3.8.8 leaves other filters' results undefined).
+        let level = match select_levels(tex, q, lambda) {
+            Levels::One(level, _) | Levels::Two(level, ..) => level,
+        };
+        return one(level, false);
+    }
+    let offset_free = offset == [0; 3];
     // RGBA8 levels in fixed point when they qualify (`unorm8_filter`).
     let fixed = |level: usize, linear: bool| -> Option<[i32; 4]> {
+        if !offset_free {
+            return None;
+        }
         filter_unorm8(tex, tex.levels.get(level)?, st, layer, linear)
     };
     let value = match select_levels(tex, q, lambda) {
@@ -220,15 +352,55 @@ pub(crate) fn sample(
             }
         },
     };
+    depth_rgba(tex, value)
+}
+
+/// A stored texel as filtering reads it: sRGB textures' colour decoded
+/// to linear (alpha is stored linear).
+#[inline(always)]
+fn decoded(tex: &Texture, t: [f32; 4]) -> [f32; 4] {
+    if tex.srgb {
+        [
+            srgb_to_linear(t[0]),
+            srgb_to_linear(t[1]),
+            srgb_to_linear(t[2]),
+            t[3],
+        ]
+    } else {
+        t
+    }
+}
+
+/// A depth texture's value (or comparison result) in component 0 as
+/// RGBA by its DEPTH_TEXTURE_MODE; other textures' values unchanged.
+fn depth_rgba(tex: &Texture, value: [f32; 4]) -> [f32; 4] {
     if tex.depth_format {
         let r = value[0];
         match tex.depth_mode {
             DepthTextureMode::Luminance => [r, r, r, 1.0],
             DepthTextureMode::Intensity => [r, r, r, r],
             DepthTextureMode::Alpha => [0.0, 0.0, 0.0, r],
+            DepthTextureMode::Red => [r, 0.0, 0.0, 1.0],
         }
     } else {
         value
+    }
+}
+
+/// The coordinate `s` on an axis of `n` texels, wrapped and scaled to
+/// texels (`u` of GL 2.1 eq. 3.17 after §3.8.7); a rectangle's
+/// coordinates are texels already, clamped by the wrap mode (GL 3.1
+/// §3.8.7: [0, n], [½, n − ½] or [−½, n + ½]).
+#[inline(always)]
+fn scaled(tex: &Texture, s: f32, wrap: Wrap, n: u32) -> f32 {
+    if tex.target != TextureTarget::Rect {
+        return wrap_coord(s, wrap, n) * n as f32;
+    }
+    let n = n as f32;
+    match wrap {
+        Wrap::ClampToEdge => s.clamp(0.5, n - 0.5),
+        Wrap::ClampToBorder => s.clamp(-0.5, n + 0.5),
+        _ => s.clamp(0.0, n),
     }
 }
 
@@ -278,7 +450,14 @@ fn filter_unorm8(
     let Texels::Unorm8(texels) = &img.texels else {
         return None;
     };
-    if tex.depth_format || (layer.is_none() && tex.target != TextureTarget::Tex2D) {
+    let two_d = matches!(
+        tex.target,
+        TextureTarget::Tex2D
+            | TextureTarget::Cube
+            | TextureTarget::Tex2DArray
+            | TextureTarget::Rect
+    );
+    if tex.depth_format || tex.srgb || !two_d {
         return None;
     }
     let (w, h) = (img.width.max(1), img.height.max(1));
@@ -286,7 +465,7 @@ fn filter_unorm8(
     let mut axes = [(0usize, 0usize, 0i32); 2];
     for (a, n) in [(0, w), (1, h)] {
         let wrap = tex.wrap[a];
-        let u = wrap_coord(st[a], wrap, n) * n as f32;
+        let u = scaled(tex, st[a], wrap, n);
         axes[a] = if linear {
             let (i0, weight) = unorm8_filter::split(unorm8_filter::coord(floor(u * 128.0)));
             let i0 = i64::from(i0);
@@ -317,15 +496,18 @@ fn filter(
     layer: Option<usize>,
     linear: bool,
     reference: Option<f32>,
+    offset: [i32; 3],
 ) -> [f32; 4] {
-    let dims = if layer.is_some() { 2 } else { tex.dims() };
+    // A cube face or an array layer is the coordinate after the
+    // target's.
+    let dims = tex.dims();
     let sizes = [img.width, img.height, img.depth].map(|s| s.max(1));
     // Per axis: (texel 0, texel 1, weight of texel 1).
     let mut axes: [(Texel, Texel, f32); 3] = [(Some(0), Some(0), 0.0); 3];
     for a in 0..dims {
         let n = sizes[a];
         let wrap = tex.wrap[a];
-        let u = wrap_coord(st[a], wrap, n) * n as f32;
+        let u = scaled(tex, st[a], wrap, n) + offset[a] as f32;
         axes[a] = if linear {
             let v = u - 0.5;
             let i0 = floor(v);
@@ -340,12 +522,12 @@ fn filter(
             (nearest_texel(u, wrap, n), None, 0.0)
         };
     }
-    if let Some(face) = layer {
-        axes[2] = (Some(face), None, 0.0);
+    if let Some(layer) = layer {
+        axes[dims] = (Some(layer), None, 0.0);
     }
     let fetch = |i: Texel, j: Texel, k: Texel| -> [f32; 4] {
         let t = match (i, j, k) {
-            (Some(i), Some(j), Some(k)) => img.texel(i, j, k),
+            (Some(i), Some(j), Some(k)) => decoded(tex, img.texel(i, j, k)),
             _ => tex.border_color,
         };
         match (tex.depth_format, tex.compare, reference) {

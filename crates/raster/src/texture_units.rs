@@ -3,9 +3,10 @@
 //! the 2D fast path (`texture_2d`) when it applies, else to the general
 //! path (`texture_general`); both give the same bits.
 
-use crate::ex::{SampleRequest, Textures, LANES};
+use crate::ex::{FetchRequest, SampleRequest, Textures, LANES};
 use crate::texture::TextureUnit;
 use crate::{texture_2d, texture_general};
+use glsl::types::SamplerKind;
 
 /// All texture units; samples for the exec crate.
 #[derive(Clone, Debug)]
@@ -65,6 +66,14 @@ impl Textures for TextureUnits {
                 false
             }
         }
+    }
+
+    fn fetch(&self, req: &FetchRequest, out: &mut [[f32; LANES]; 4]) {
+        texture_general::fetch_general(&self.units, req, out);
+    }
+
+    fn size(&self, unit: u32, target: SamplerKind, lod: i32) -> [i32; 3] {
+        texture_general::size_general(&self.units, unit, target, lod)
     }
 }
 

@@ -163,13 +163,35 @@ pub enum TextureCommand {
         square: [u32; 2],
         colors: [[f32; 4]; 4],
     },
-    /// `texture shadow1D UNIT (W)` / `shadow2D UNIT (W, H)`: depth gradients
-    /// with compare mode on, compare func GREATER.
+    /// `texture shadow1D UNIT (W)` / `shadow2D UNIT (W, H)` / `shadowRect
+    /// UNIT (W, H)`: depth gradients with compare mode on, compare func
+    /// GREATER.
     Shadow {
         unit: u32,
         target: u32,
         width: u32,
         height: u32,
+    },
+    /// `texture rgbw 1DArray UNIT (W, L)` / `rgbw 2DArray UNIT (W, H, L)`:
+    /// each layer one colour of red, green, blue, white in turn;
+    /// `texture junk 2DArray UNIT (W, H, L)` (`junk`): contents undefined,
+    /// no parameters set.
+    Array {
+        unit: u32,
+        target: u32,
+        width: u32,
+        height: u32,
+        layers: u32,
+        junk: bool,
+    },
+    /// `texture shadow1DArray UNIT (W, L)` / `shadow2DArray UNIT (W, H,
+    /// L)`: every layer the depth gradient of `Shadow`, compared GREATER.
+    ShadowArray {
+        unit: u32,
+        target: u32,
+        width: u32,
+        height: u32,
+        layers: u32,
     },
 }
 
@@ -687,13 +709,7 @@ const LATER_GL: &[(&str, &str)] = &[
     ("viewport swizzle ", "GL_NV_viewport_swizzle"),
     ("resident ", "GL_ARB_bindless_texture"),
     ("texture integer ", "integer textures (OpenGL 3.0)"),
-    ("texture junk 2DArray ", "array textures (OpenGL 3.0)"),
     ("texture storage ", "texture storage (OpenGL 4.2)"),
-    ("texture rgbw 2DArray ", "array textures (OpenGL 3.0)"),
-    ("texture rgbw 1DArray ", "array textures (OpenGL 3.0)"),
-    ("texture shadowRect ", "rectangle textures (OpenGL 3.1)"),
-    ("texture shadow1DArray ", "array textures (OpenGL 3.0)"),
-    ("texture shadow2DArray ", "array textures (OpenGL 3.0)"),
     ("texcoord ", "the `texcoord' command"),
     ("parameter ", "ARB assembly programs"),
     ("patch parameter ", "tessellation (OpenGL 4.0)"),
@@ -881,6 +897,68 @@ fn parse_texture(line: &str) -> Result<Option<TextureCommand>, CommandError> {
             height: dim(i[2], line)?,
         }));
     }
+    if let Some(v) = sscanf_all(line, "texture rgbw 2DArray %d ( %d , %d , %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::Array {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_2D_ARRAY,
+            width: dim(i[1], line)?,
+            height: dim(i[2], line)?,
+            layers: dim(i[3], line)?,
+            junk: false,
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture junk 2DArray %d ( %d , %d , %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::Array {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_2D_ARRAY,
+            width: dim(i[1], line)?,
+            height: dim(i[2], line)?,
+            layers: dim(i[3], line)?,
+            junk: true,
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture rgbw 1DArray %d ( %d , %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::Array {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_1D_ARRAY,
+            width: dim(i[1], line)?,
+            height: 1,
+            layers: dim(i[2], line)?,
+            junk: false,
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture shadow2DArray %d ( %d , %d , %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::ShadowArray {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_2D_ARRAY,
+            width: dim(i[1], line)?,
+            height: dim(i[2], line)?,
+            layers: dim(i[3], line)?,
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture shadow1DArray %d ( %d , %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::ShadowArray {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_1D_ARRAY,
+            width: dim(i[1], line)?,
+            height: 1,
+            layers: dim(i[2], line)?,
+        }));
+    }
+    if let Some(v) = sscanf_all(line, "texture shadowRect %d ( %d , %d )") {
+        let i = scanned_i32(&v);
+        return Ok(Some(T::Shadow {
+            unit: unit(i[0], line)?,
+            target: GL_TEXTURE_RECTANGLE,
+            width: dim(i[1], line)?,
+            height: dim(i[2], line)?,
+        }));
+    }
     if let Some(v) = sscanf_all(line, "texture shadow1D %d ( %d )") {
         let i = scanned_i32(&v);
         return Ok(Some(T::Shadow {
@@ -903,7 +981,10 @@ fn parse_texparameter(rest: &str, line: &str) -> Result<Command, CommandError> {
         "2D" => GL_TEXTURE_2D,
         "3D" => GL_TEXTURE_3D,
         "Cube" => GL_TEXTURE_CUBE_MAP,
-        "Rect" | "1DArray" | "2DArray" | "CubeArray" | "2DMS" | "2DMSArray" | "Buffer" => {
+        "Rect" => GL_TEXTURE_RECTANGLE,
+        "1DArray" => GL_TEXTURE_1D_ARRAY,
+        "2DArray" => GL_TEXTURE_2D_ARRAY,
+        "CubeArray" | "2DMS" | "2DMSArray" | "Buffer" => {
             return Ok(Command::NeedsLaterGl(format!(
                 "{t} textures (OpenGL 3.0 or later)"
             )))
@@ -971,7 +1052,14 @@ fn parse_texparameter(rest: &str, line: &str) -> Result<Command, CommandError> {
                 value: TexParamValue::Color(c),
             });
         }
-        "swizzle_r" => return Ok(Command::NeedsLaterGl("texture swizzle (OpenGL 3.3)".into())),
+        "swizzle_r" | "swizzle_g" | "swizzle_b" | "swizzle_a" => &[
+            ("red", GL_RED),
+            ("green", GL_GREEN),
+            ("blue", GL_BLUE),
+            ("alpha", GL_ALPHA),
+            ("zero", GL_ZERO),
+            ("one", GL_ONE),
+        ],
         _ => {
             return Err(CommandError(format!(
                 "unknown texture parameter in `{line}'"
@@ -985,7 +1073,11 @@ fn parse_texparameter(rest: &str, line: &str) -> Result<Command, CommandError> {
         "mag" => GL_TEXTURE_MAG_FILTER,
         "wrap_s" => GL_TEXTURE_WRAP_S,
         "wrap_t" => GL_TEXTURE_WRAP_T,
-        _ => GL_TEXTURE_WRAP_R,
+        "wrap_r" => GL_TEXTURE_WRAP_R,
+        "swizzle_r" => GL_TEXTURE_SWIZZLE_R,
+        "swizzle_g" => GL_TEXTURE_SWIZZLE_G,
+        "swizzle_b" => GL_TEXTURE_SWIZZLE_B,
+        _ => GL_TEXTURE_SWIZZLE_A,
     };
     let (v, _) = scan::word(rest).ok_or_else(|| bad(&format!("Bad {param}"), line))?;
     let value = table
@@ -1425,6 +1517,15 @@ mod tests {
                 height: 1
             })
         );
+        assert_eq!(
+            p("texture shadowRect 2 (32, 16)"),
+            Command::Texture(TextureCommand::Shadow {
+                unit: 2,
+                target: GL_TEXTURE_RECTANGLE,
+                width: 32,
+                height: 16
+            })
+        );
         assert!(matches!(
             p("texture checkerboard 0 0 (32, 32) (0.5, 0.0, 0.0, 0.0) (1.0, 1.0, 1.0, 1.0)"),
             Command::Texture(TextureCommand::Checkerboard { width: 32, .. })
@@ -1437,7 +1538,37 @@ mod tests {
                 value: TexParamValue::Enum(GL_GREATER)
             }
         );
+        assert_eq!(
+            p("texparameter Rect swizzle_g one"),
+            Command::TexParameter {
+                target: GL_TEXTURE_RECTANGLE,
+                pname: GL_TEXTURE_SWIZZLE_G,
+                value: TexParamValue::Enum(GL_ONE)
+            }
+        );
+        assert_eq!(
+            p("texture rgbw 1DArray 1 (16, 3)"),
+            Command::Texture(TextureCommand::Array {
+                unit: 1,
+                target: GL_TEXTURE_1D_ARRAY,
+                width: 16,
+                height: 1,
+                layers: 3,
+                junk: false
+            })
+        );
+        assert_eq!(
+            p("texture shadow2DArray 0 (8, 4, 2)"),
+            Command::Texture(TextureCommand::ShadowArray {
+                unit: 0,
+                target: GL_TEXTURE_2D_ARRAY,
+                width: 8,
+                height: 4,
+                layers: 2
+            })
+        );
         assert!(parse("texture rgbw 0 (8)").is_err());
         assert!(parse("texparameter 2D depth_mode purple").is_err());
+        assert!(parse("texparameter 2D swizzle_a purple").is_err());
     }
 }

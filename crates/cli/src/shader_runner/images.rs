@@ -99,6 +99,19 @@ pub fn miptree() -> Vec<(u32, Vec<f32>)> {
         .collect()
 }
 
+/// `piglit_array_texture` level 0: `layers` layers of `width × height`
+/// texels, layer k solid in colour k of red, green, blue, white (cycling).
+pub fn array_layers(width: u32, height: u32, layers: u32) -> Vec<f32> {
+    let n = width as usize * height as usize;
+    let mut out = Vec::with_capacity(n * layers as usize * 4);
+    for k in 0..layers as usize {
+        for _ in 0..n {
+            out.extend_from_slice(&COLOR_WHEEL[k % COLOR_WHEEL.len()]);
+        }
+    }
+    out
+}
+
 /// `piglit_depth_texture` level 0: depth `x / (w - 1)` in single precision
 /// (a 1-texel-wide image divides 0 by 0, as piglit does).
 pub fn depth_gradient(width: u32, height: u32) -> Vec<f32> {

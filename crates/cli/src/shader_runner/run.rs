@@ -1215,6 +1215,101 @@ impl<'a, G: GlApi> Runner<'a, G> {
                     self.gl.enable(GL_TEXTURE_2D);
                 }
             }
+            TextureCommand::Array {
+                unit,
+                target,
+                width,
+                height,
+                layers,
+                junk,
+            } => {
+                self.new_texture(unit, target);
+                let img = if junk {
+                    // Undefined contents: zeros serve.
+                    vec![0.0; (width * height * layers * 4) as usize]
+                } else {
+                    self.params(
+                        target,
+                        &[
+                            (GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE),
+                            (GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE),
+                        ],
+                    );
+                    self.params(target, &nearest);
+                    images::array_layers(width, height, layers)
+                };
+                self.array_texture(target, GL_RGBA, GL_RGBA, width, height, layers, &img);
+            }
+            TextureCommand::ShadowArray {
+                unit,
+                target,
+                width,
+                height,
+                layers,
+            } => {
+                self.new_texture(unit, target);
+                self.params(
+                    target,
+                    &[
+                        (GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE),
+                        (GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE),
+                    ],
+                );
+                self.params(target, &nearest);
+                let img = images::depth_gradient(width, height * layers);
+                let depth = GL_DEPTH_COMPONENT;
+                self.array_texture(target, depth, depth, width, height, layers, &img);
+                self.params(
+                    target,
+                    &[
+                        (GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE),
+                        (GL_TEXTURE_COMPARE_FUNC, GL_GREATER),
+                    ],
+                );
+            }
+        }
+    }
+
+    /// A 1D or 2D array texture (`texture rgbw/junk ...Array`,
+    /// `texture shadow...Array`): `layers` layers of `pixels` (RGBA or
+    /// depth) through glTexImage2D (1D arrays: a row per layer) or
+    /// glTexImage3D.
+    #[allow(clippy::too_many_arguments)]
+    fn array_texture(
+        &mut self,
+        target: u32,
+        internal: u32,
+        format: u32,
+        width: u32,
+        height: u32,
+        layers: u32,
+        pixels: &[f32],
+    ) {
+        if target == GL_TEXTURE_1D_ARRAY {
+            self.gl.tex_image_2d(
+                target,
+                0,
+                internal as i32,
+                width as i32,
+                layers as i32,
+                0,
+                format,
+                GL_FLOAT,
+                pixels,
+            );
+        } else {
+            self.gl.tex_image_3d(
+                target,
+                0,
+                internal as i32,
+                width as i32,
+                height as i32,
+                layers as i32,
+                0,
+                format,
+                GL_FLOAT,
+                pixels,
+            );
         }
     }
 

@@ -3,10 +3,10 @@
 //! per-lane requests made by the executor's texture callback.
 
 use super::{unsupported, Lowerer, Val, R};
-use crate::program::{Op, Reg, TexLod, TexOp};
+use crate::program::{Op, Reg, TexKind, TexLod, TexOp};
 use glsl::builtins::BuiltinFn;
 use glsl::ir::{Expr, Stage};
-use glsl::types::{Base, SamplerKind};
+use glsl::types::{Base, SamplerDim};
 
 pub(super) fn is_texture(f: BuiltinFn) -> bool {
     use BuiltinFn as B;
@@ -34,6 +34,10 @@ pub(super) fn is_texture(f: BuiltinFn) -> bool {
             | B::Shadow2DLod
             | B::Shadow1DProjLod
             | B::Shadow2DProjLod
+            | B::Texture2DRect
+            | B::Texture2DRectProj
+            | B::Shadow2DRect
+            | B::Shadow2DRectProj
             | B::TextureSize
             | B::Texture
             | B::TextureProj
@@ -60,35 +64,119 @@ impl<'m> Lowerer<'m> {
         let Some(Base::Sampler(target)) = args.first().map(|a| a.ty.base) else {
             return unsupported("texture lookup without a sampler");
         };
-        let (Some(&unit), Some(coord)) = (v.first().and_then(|u| u.first()), v.get(1)) else {
+        let Some(&unit) = v.first().and_then(|u| u.first()) else {
+            return unsupported("texture lookup without a sampler");
+        };
+        // The coordinates a lookup's derivatives are taken of, and
+        // whether an array layer follows them.
+        let dims = match target.dim() {
+            SamplerDim::D1 | SamplerDim::Buffer => 1usize,
+            SamplerDim::D2 | SamplerDim::Rect => 2,
+            SamplerDim::D3 | SamplerDim::Cube => 3,
+            SamplerDim::Ms => {
+                return unsupported(format!(
+                    "lookups on `{}' samplers are not implemented by the pipeline yet",
+                    target.name()
+                ))
+            }
+        };
+        let layered = target.is_array();
+        let shadow = target.is_shadow();
+        let arg = |k: usize| v.get(k).cloned();
+        let one_reg = |k: usize| v.get(k).and_then(|x| x.first()).copied();
+        let index = self.p.textures.len() as u32;
+        // Levels: every target but rectangles and buffers has them.
+        let has_levels = !matches!(target.dim(), SamplerDim::Rect | SamplerDim::Buffer);
+        if f == B::TextureSize {
+            let lod = if has_levels { one_reg(1) } else { None };
+            let d = self.temps(4)?;
+            let zero_i = self.konst(0)?;
+            self.p.textures.push(TexOp {
+                kind: TexKind::Size,
+                target,
+                unit,
+                coord: [zero_i; 4],
+                dims: dims as u8,
+                compare: None,
+                lod: TexLod::Explicit(lod),
+                offset: None,
+                compare_only: false,
+                d: d[0],
+            });
+            self.emit(Op::Texture { index })?;
+            let n =
+                dims.min(2) + usize::from(layered) + usize::from(target.dim() == SamplerDim::D3);
+            return Ok(d[..n].to_vec());
+        }
+        let Some(coord) = arg(1) else {
             return unsupported("texture lookup without coordinates");
         };
-        let coord = coord.clone();
-        let extra = v.get(2).and_then(|x| x.first()).copied();
-        // The lookups of GLSL 1.30 the texture op has no form for yet.
-        if matches!(
-            f,
-            B::TextureSize
-                | B::TextureOffset
-                | B::TexelFetch
-                | B::TexelFetchOffset
-                | B::TextureProjOffset
-                | B::TextureLodOffset
-                | B::TextureProjLodOffset
-                | B::TextureGrad
-                | B::TextureGradOffset
-                | B::TextureProjGrad
-                | B::TextureProjGradOffset
-        ) {
-            return unsupported(format!(
-                "`{}' is not implemented by the pipeline yet",
-                f.name()
-            ));
+        // Unused offset components are 0.
+        let offset3 = |s: &mut Self, o: Option<Val>| -> R<Option<[Reg; 3]>> {
+            let Some(o) = o else { return Ok(None) };
+            let zero_i = s.konst(0)?;
+            let mut r = [zero_i; 3];
+            for (slot, &x) in r.iter_mut().zip(&o) {
+                *slot = x;
+            }
+            Ok(Some(r))
+        };
+        if matches!(f, B::TexelFetch | B::TexelFetchOffset) {
+            if shadow {
+                return unsupported("texelFetch on a shadow sampler");
+            }
+            let (lod, off) = if has_levels {
+                (
+                    one_reg(2),
+                    if f == B::TexelFetchOffset {
+                        arg(3)
+                    } else {
+                        None
+                    },
+                )
+            } else {
+                (
+                    None,
+                    if f == B::TexelFetchOffset {
+                        arg(2)
+                    } else {
+                        None
+                    },
+                )
+            };
+            let d = self.temps(4)?;
+            let zero_i = self.konst(0)?;
+            let mut c = [zero_i; 4];
+            for (slot, &x) in c.iter_mut().zip(&coord) {
+                *slot = x;
+            }
+            let offset = offset3(self, off)?;
+            self.p.textures.push(TexOp {
+                kind: TexKind::Fetch,
+                target,
+                unit,
+                coord: c,
+                dims: dims as u8,
+                compare: None,
+                lod: TexLod::Explicit(lod),
+                offset,
+                compare_only: false,
+                d: d[0],
+            });
+            self.emit(Op::Texture { index })?;
+            return Ok(d);
+        }
+        if target.dim() == SamplerDim::Buffer {
+            return unsupported("buffer textures have texelFetch and textureSize only");
         }
         let proj = matches!(
             f,
             B::TextureProj
                 | B::TextureProjLod
+                | B::TextureProjOffset
+                | B::TextureProjLodOffset
+                | B::TextureProjGrad
+                | B::TextureProjGradOffset
                 | B::Texture1DProj
                 | B::Texture1DProjLod
                 | B::Texture2DProj
@@ -99,11 +187,15 @@ impl<'m> Lowerer<'m> {
                 | B::Shadow2DProj
                 | B::Shadow1DProjLod
                 | B::Shadow2DProjLod
+                | B::Texture2DRectProj
+                | B::Shadow2DRectProj
         );
         let explicit = matches!(
             f,
             B::TextureLod
                 | B::TextureProjLod
+                | B::TextureLodOffset
+                | B::TextureProjLodOffset
                 | B::Texture1DLod
                 | B::Texture1DProjLod
                 | B::Texture2DLod
@@ -116,22 +208,26 @@ impl<'m> Lowerer<'m> {
                 | B::Shadow1DProjLod
                 | B::Shadow2DProjLod
         );
-        let (dims, shadow) = match target {
-            SamplerKind::Sampler1D => (1usize, false),
-            SamplerKind::Sampler2D => (2, false),
-            SamplerKind::Sampler3D | SamplerKind::SamplerCube => (3, false),
-            SamplerKind::Sampler1DShadow => (1, true),
-            SamplerKind::Sampler2DShadow => (2, true),
-            // Arrays, rectangles, buffers, multisample, cube shadows and
-            // integer results: the texture units have no such targets.
-            other => {
-                return unsupported(format!(
-                    "lookups on `{}' samplers are not implemented by the pipeline yet",
-                    other.name()
-                ))
+        let grad = matches!(
+            f,
+            B::TextureGrad | B::TextureGradOffset | B::TextureProjGrad | B::TextureProjGradOffset
+        );
+        // The arguments after the coordinates: (lod or bias, offset), or
+        // the derivatives and an offset.
+        let (extra, off, grads) = match f {
+            B::TextureOffset | B::TextureProjOffset => (one_reg(3), arg(2), None),
+            B::TextureLodOffset | B::TextureProjLodOffset => (one_reg(2), arg(3), None),
+            B::TextureGrad | B::TextureProjGrad => (None, None, Some((arg(2), arg(3)))),
+            B::TextureGradOffset | B::TextureProjGradOffset => {
+                (None, arg(4), Some((arg(2), arg(3))))
             }
+            _ => (one_reg(2), None, None),
         };
-        let need = if shadow { 3 } else { dims };
+        // Shadow lookups compare against the coordinate after the
+        // target's and the layer (r of 1D and 2D, q of cube maps and 2D
+        // arrays: GLSL 1.30 §8.7), divided by q in the Proj forms.
+        let compare_at = shadow.then_some((dims + usize::from(layered)).max(2));
+        let need = compare_at.map_or(dims + usize::from(layered), |c| c + 1);
         if coord.len() < need || (proj && coord.len() < need + 1) {
             return unsupported("texture coordinates too short");
         }
@@ -148,35 +244,51 @@ impl<'m> Lowerer<'m> {
         for (k, slot) in c.iter_mut().enumerate().take(dims) {
             *slot = div(self, coord[k])?;
         }
-        // Shadow lookups compare against the third coordinate (r), divided
-        // by q in the Proj forms (GLSL 1.20 §8.7).
-        let compare = if shadow {
-            Some(div(self, coord[2])?)
-        } else {
-            None
+        if layered {
+            c[dims] = coord[dims];
+        }
+        let compare = match compare_at {
+            Some(i) => Some(div(self, coord[i])?),
+            None => None,
         };
-        let lod = if explicit {
+        let lod = if grad {
+            let Some((Some(dx), Some(dy))) = grads else {
+                return unsupported("textureGrad without derivatives");
+            };
+            let mut ddx = [zero; 3];
+            let mut ddy = [zero; 3];
+            for k in 0..dims {
+                ddx[k] = dx.get(k).copied().unwrap_or(zero);
+                ddy[k] = dy.get(k).copied().unwrap_or(zero);
+            }
+            TexLod::Grad { ddx, ddy }
+        } else if explicit {
             TexLod::Explicit(extra)
         } else if self.stage == Stage::Fragment {
             TexLod::Implicit { bias: extra }
         } else {
             TexLod::Explicit(extra)
         };
+        let offset = offset3(self, off)?;
+        // The lookups of 1.30 and later return the comparison alone from a
+        // shadow sampler (`float`), the older ones a `vec4`.
+        let compare_only = shadow && !f.name().starts_with("shadow");
         let d = self.temps(4)?;
         let index = self.p.textures.len() as u32;
         self.p.textures.push(TexOp {
+            kind: TexKind::Sample,
             target,
             unit,
             coord: c,
             dims: dims as u8,
             compare,
             lod,
+            offset,
+            compare_only,
             d: d[0],
         });
         self.emit(Op::Texture { index })?;
-        // The lookups of 1.30 and later return the comparison alone from a
-        // shadow sampler (`float`), the older ones a `vec4`.
-        if shadow && !f.name().starts_with("shadow") {
+        if compare_only {
             return Ok(vec![d[0]]);
         }
         Ok(d)

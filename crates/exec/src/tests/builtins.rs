@@ -319,23 +319,13 @@ fn what_the_pipeline_cannot_run_is_refused_when_lowered() {
     for (stage, src, what) in [
         (
             Stage::Fragment,
-            "#version 130\nuniform sampler2DArray s;\nvoid main() { gl_FragColor = texture(s, vec3(0.5)); }",
-            "sampler2DArray",
+            "#version 150\nuniform sampler2DMS s;\nout vec4 c;\nvoid main() { c = texelFetch(s, ivec2(0), 0); }",
+            "sampler2DMS",
         ),
         (
             Stage::Fragment,
-            "#version 130\nuniform isampler2D s;\nvoid main() { gl_FragColor = vec4(texture(s, vec2(0.5))); }",
-            "isampler2D",
-        ),
-        (
-            Stage::Fragment,
-            "#version 130\nuniform usampler2D s;\nvoid main() { gl_FragColor = vec4(texture(s, vec2(0.5))); }",
-            "usampler2D",
-        ),
-        (
-            Stage::Fragment,
-            "#version 130\nuniform sampler2D s;\nvoid main() { gl_FragColor = vec4(textureSize(s, 0), 0.0, 1.0); }",
-            "textureSize",
+            "#version 150\nuniform isampler2DMSArray s;\nout vec4 c;\nvoid main() { c = vec4(textureSize(s), 1.0); }",
+            "isampler2DMSArray",
         ),
     ] {
         let s = super::link_one(stage, src).unwrap_or_else(|e| panic!("{e}"));

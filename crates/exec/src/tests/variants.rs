@@ -419,3 +419,122 @@ fn subnormals_are_zero_in_every_variant() {
         assert!(matches!(k.native_code(), Some(Ok(_))));
     }
 }
+
+/// Textures whose every answer is a function of the request (its
+/// coordinates, level or derivatives, offsets, unit): integer samplers
+/// get small integers' bits, which no executor may flush.
+struct Encoder;
+
+impl crate::Textures for Encoder {
+    fn sample(&self, req: &crate::SampleRequest, out: &mut [[f32; crate::LANES]; 4]) {
+        use crate::Lod;
+        let integer = req.target.result() != glsl::types::SamplerResult::Float;
+        for l in (0..crate::LANES).filter(|l| req.mask & (1 << l) != 0) {
+            let lod = match &req.lod {
+                Lod::Explicit(v) => v[l],
+                Lod::Derivatives { ddx, ddy, bias } => ddx[0][l] - ddy[1][l] + bias[l],
+                Lod::Gradients { ddx, ddy } => ddx[0][l] * 3.0 + ddy[1][l] * 5.0 + ddx[2][l],
+            };
+            let off = req.offset.map_or([0; 3], |o| [o[0][l], o[1][l], o[2][l]]);
+            let v = [
+                req.coord[0][l] + off[0] as f32 * 10.0,
+                req.coord[1][l] + off[1] as f32 * 100.0 + req.coord[2][l],
+                lod,
+                req.compare.map_or(req.unit[l] as f32, |c| c[l]),
+            ];
+            for c in 0..4 {
+                out[c][l] = if integer {
+                    f32::from_bits((v[c] * 8.0) as i32 as u32)
+                } else {
+                    v[c]
+                };
+            }
+        }
+    }
+
+    fn fetch(&self, req: &crate::FetchRequest, out: &mut [[f32; crate::LANES]; 4]) {
+        let integer = req.target.result() != glsl::types::SamplerResult::Float;
+        for l in (0..crate::LANES).filter(|l| req.mask & (1 << l) != 0) {
+            let v = [
+                req.coord[0][l],
+                req.coord[1][l],
+                req.coord[2][l],
+                req.lod[l],
+            ];
+            for c in 0..4 {
+                out[c][l] = if integer {
+                    f32::from_bits(v[c] as u32)
+                } else {
+                    v[c] as f32
+                };
+            }
+        }
+    }
+
+    fn size(&self, unit: u32, target: glsl::types::SamplerKind, lod: i32) -> [i32; 3] {
+        [unit as i32 % 7, lod, target as i32]
+    }
+}
+
+#[test]
+fn glsl130_lookups_are_the_same_in_every_variant() {
+    let fragment = "#version 140
+        uniform sampler2D s2;
+        uniform isampler2D si;
+        uniform usampler2DArray su;
+        uniform sampler1DArrayShadow sh;
+        uniform sampler3D s3;
+        uniform sampler2DRect sr;
+        in vec4 v;
+        out vec4 c0, c1, c2, c3;
+        void main() {
+            ivec2 p = ivec2(v.xy * 8.0);
+            c0 = textureOffset(s2, v.xy, ivec2(1, -2), v.z) + textureGrad(s3, v.xyz, v.yzw, v.wxy);
+            c1 = vec4(texelFetch(si, p, 1)) + vec4(texelFetchOffset(su, ivec3(p, 2), 0, ivec2(3, 4)));
+            c2 = vec4(textureSize(s3, 2), textureSize(sh, 1).x) + vec4(texture(si, v.xy))
+                + vec4(texture(su, v.xyz)) + texture(sr, v.zw * 4.0);
+            c3 = vec4(texture(sh, v.xyz), textureLodOffset(s2, v.xy, v.w, ivec2(-1, 1)).xyz)
+                + textureProjGradOffset(s2, v.xyz, v.xy, v.zw, ivec2(2, 2))
+                + vec4(texelFetch(sr, p).xy, textureSize(sr));
+        }";
+    let vertex = "#version 130
+        uniform sampler2D s2;
+        uniform usampler2D su;
+        uniform sampler2DArray sa;
+        in vec4 v;
+        out vec4 c0, c1;
+        void main() {
+            c0 = textureLod(s2, v.xy, v.z) + texture(sa, v.xyz) + textureOffset(s2, v.xy, ivec2(3, 1));
+            c1 = vec4(texelFetch(su, ivec2(v.xy * 16.0), 2)) + vec4(textureSize(sa, 1), 1.0)
+                + textureGradOffset(sa, v.xyz, v.xy, v.zw, ivec2(-3, 0));
+            gl_Position = v;
+        }";
+    let variants = supported_variants();
+    for (stage, src) in [(Stage::Fragment, fragment), (Stage::Vertex, vertex)] {
+        let linked = link_one(stage, src).unwrap_or_else(|e| panic!("{e}"));
+        let k = Kernel::new(&linked).expect("lowers");
+        let u: Vec<u32> = (0..k.interface().uniform_words)
+            .map(|w| w as u32 + 1)
+            .collect();
+        for round in 0..20u32 {
+            let active = if round % 4 == 3 { 0x0ff0 } else { 0xffff };
+            let mut base = Batch::for_kernel(&k, active);
+            fill(&mut base, round + 7);
+            let mut want = base.clone();
+            k.run_reference(&mut want, &u, &Encoder).expect("runs");
+            // The integer lookups' small values arrive (a flush would
+            // make every one 0).
+            assert!(want.outputs.iter().flatten().any(|&x| x != 0.0));
+            for &v in &variants {
+                let mut got = base.clone();
+                k.run_variant(v, &mut got, &u, &Encoder).expect("runs");
+                assert_eq!(
+                    bits_of(&got.outputs),
+                    bits_of(&want.outputs),
+                    "{stage:?} {} round {round}",
+                    v.name()
+                );
+            }
+        }
+    }
+}

@@ -201,7 +201,8 @@ fn eval(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<Vec<ConstScal
         Texture1D | Texture1DProj | Texture1DLod | Texture1DProjLod | Texture2D | Texture2DProj
         | Texture2DLod | Texture2DProjLod | Texture3D | Texture3DProj | Texture3DLod
         | Texture3DProjLod | TextureCube | TextureCubeLod | Shadow1D | Shadow2D | Shadow1DProj
-        | Shadow2DProj | Shadow1DLod | Shadow2DLod | Shadow1DProjLod | Shadow2DProjLod => None,
+        | Shadow2DProj | Shadow1DLod | Shadow2DLod | Shadow1DProjLod | Shadow2DProjLod
+        | Texture2DRect | Texture2DRectProj | Shadow2DRect | Shadow2DRectProj => None,
         TextureSize
         | Texture
         | TextureProj

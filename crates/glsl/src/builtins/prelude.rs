@@ -749,6 +749,28 @@ const FUNCTIONS: &[(Where, &str)] = &[
         LOD_130,
         "vec4 shadow2DProjLod(sampler2DShadow, vec4, float)",
     ),
+    // GL_ARB_texture_rectangle's lookups, on the sampler types GLSL 1.40
+    // makes part of the language.
+    (
+        Where::since(V140),
+        "vec4 texture2DRect(sampler2DRect, vec2)",
+    ),
+    (
+        Where::since(V140),
+        "vec4 texture2DRectProj(sampler2DRect, vec3)",
+    ),
+    (
+        Where::since(V140),
+        "vec4 texture2DRectProj(sampler2DRect, vec4)",
+    ),
+    (
+        Where::since(V140),
+        "vec4 shadow2DRect(sampler2DRectShadow, vec3)",
+    ),
+    (
+        Where::since(V140),
+        "vec4 shadow2DRectProj(sampler2DRectShadow, vec4)",
+    ),
     // §8.8 fragment processing functions
     (FS, "genType dFdx(genType)"),
     (FS, "genType dFdy(genType)"),
@@ -1440,6 +1462,10 @@ mod tests {
         assert!(declares_fn(&c140, "inverse") && !declares_fn(&c140, "determinant"));
         assert!(declares_var(&c140, "gl_InstanceID"));
         assert!(c140.contains("ivec2 textureSize(sampler2DRect);"));
+        // GL_ARB_texture_rectangle's lookups come with the types.
+        assert!(c140.contains("vec4 shadow2DRectProj(sampler2DRectShadow, vec4);"));
+        assert!(c140.contains("vec4 texture2DRect(sampler2DRect, vec2);"));
+        assert!(!declares_fn(&vs, "texture2DRect") && !declares_fn(&vs, "shadow2DRect"));
         assert!(c140.contains("vec4 texelFetch(samplerBuffer, int);"));
         let f150 = super::prelude(core(V150), Fragment);
         assert!(declares_fn(&f150, "determinant"));

@@ -110,7 +110,12 @@ pub(crate) fn lambda(tex: &Texture, base_img: &Image, derivs: LodBase, extra_bia
             let mut sx = 0.0f32;
             let mut sy = 0.0f32;
             for a in 0..tex.dims() {
-                let size = tex.size(base_img, a) as f32;
+                // A rectangle's coordinates are in texels already.
+                let size = if tex.target == super::TextureTarget::Rect {
+                    1.0
+                } else {
+                    tex.size(base_img, a) as f32
+                };
                 let (ux, uy) = (dx[a] * size, dy[a] * size);
                 sx += ux * ux;
                 sy += uy * uy;

@@ -46,6 +46,8 @@ pub(super) fn request_2d(
             ddy,
             bias: [0.0; LANES],
         },
+        offset: None,
+        compare_only: false,
         mask,
     }
 }
@@ -207,6 +209,8 @@ fn fast_path_matches_the_general_path_bit_for_bit() {
                         coord,
                         compare: None,
                         lod,
+                        offset: None,
+                        compare_only: false,
                         mask: 0xffff & !(1 << 9),
                     };
                     let slow = general(&units, &req);
@@ -439,6 +443,8 @@ fn checked_entries_follow_the_units_textures() {
         ],
         compare: None,
         lod: Lod::Explicit(std::array::from_fn(|l| l as f32 * 0.3 - 1.0)),
+        offset: None,
+        compare_only: false,
         mask: 0xffff,
     };
     // Complete, another size, f32 texels, incomplete (a missing level).
@@ -516,6 +522,8 @@ fn other_requests_take_the_general_path() {
         coord: [[0.5; LANES]; 4],
         compare: None,
         lod: Lod::Explicit([0.0; LANES]),
+        offset: None,
+        compare_only: false,
         mask: 0b1111,
     };
     let units = |tex: Texture| {
@@ -542,6 +550,8 @@ fn other_requests_take_the_general_path() {
     ));
     // ... unless the other unit's lane is masked off.
     let masked = SampleRequest {
+        offset: None,
+        compare_only: false,
         mask: 0b1011,
         ..req(two)
     };

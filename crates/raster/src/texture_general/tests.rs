@@ -28,7 +28,7 @@ fn ramp(w: u32, h: u32, levels: u32) -> Texture {
 
 fn at(tex: &Texture, s: f32, t: f32, lod: f32) -> [f32; 4] {
     let q = tex.last_level().expect("complete");
-    sample(tex, q, [s, t, 0.0], LodBase::Value(lod), 0.0, None)
+    sample(tex, q, [s, t, 0.0], LodBase::Value(lod), 0.0, None, [0; 3])
 }
 
 #[test]
@@ -104,6 +104,8 @@ fn level_of_detail_is_per_quad() {
         coord: [[0.5; LANES], [0.5; LANES], [0.0; LANES], [1.0; LANES]],
         compare: None,
         lod: Lod::Derivatives { ddx, ddy, bias },
+        offset: None,
+        compare_only: false,
         mask: 0xffff,
     };
     let mut out = [[0.0; LANES]; 4];
@@ -178,9 +180,15 @@ fn lod_from_derivatives() {
     // ds/dx = 4/8: four texels per pixel → λ = 2.
     let q = tex.last_level().unwrap();
     let lod = LodBase::Derivatives([0.5, 0.0, 0.0], [0.0, 0.125, 0.0]);
-    assert_eq!(sample(&tex, q, [0.5, 0.5, 0.0], lod, 0.0, None)[2], 2.0);
+    assert_eq!(
+        sample(&tex, q, [0.5, 0.5, 0.0], lod, 0.0, None, [0; 3])[2],
+        2.0
+    );
     // A shader bias of -1 gives level 1.
-    assert_eq!(sample(&tex, q, [0.5, 0.5, 0.0], lod, -1.0, None)[2], 1.0);
+    assert_eq!(
+        sample(&tex, q, [0.5, 0.5, 0.0], lod, -1.0, None, [0; 3])[2],
+        1.0
+    );
 }
 
 #[test]
@@ -199,6 +207,8 @@ fn incomplete_textures_sample_black() {
         coord: [[0.5; LANES]; 4],
         compare: None,
         lod: Lod::Explicit([0.0; LANES]),
+        offset: None,
+        compare_only: false,
         mask: 0b11,
     };
     let mut out = [[7.0; LANES]; 4];
@@ -233,7 +243,7 @@ fn cube_face_selection() {
         ([-1.0, 0.0, 0.0], 1.0),
     ] {
         assert_eq!(
-            sample(&tex, q, dir, LodBase::Value(0.0), 0.0, None)[0],
+            sample(&tex, q, dir, LodBase::Value(0.0), 0.0, None, [0; 3])[0],
             face
         );
     }
@@ -249,8 +259,17 @@ fn shadow_compare_and_depth_modes() {
     tex.mag_filter = MagFilter::Nearest;
     tex.depth_format = true;
     let q = tex.last_level().unwrap();
-    let s =
-        |tex: &Texture, r: f32| sample(tex, q, [0.5, 0.5, 0.0], LodBase::Value(0.0), 0.0, Some(r));
+    let s = |tex: &Texture, r: f32| {
+        sample(
+            tex,
+            q,
+            [0.5, 0.5, 0.0],
+            LodBase::Value(0.0),
+            0.0,
+            Some(r),
+            [0; 3],
+        )
+    };
     assert_eq!(
         s(&tex, 0.9),
         [0.5, 0.5, 0.5, 1.0],
@@ -313,11 +332,257 @@ fn garbage_coordinates_do_not_panic() {
                 for &a in &vals {
                     for &b in &vals {
                         let lod = LodBase::Derivatives([a, b, a], [b, a, 1.0]);
-                        let _ = sample(&tex, q, [a, b, 0.25], lod, b, Some(a));
-                        let _ = sample(&tex, q, [b, 0.5, a], LodBase::Value(a), 0.0, None);
+                        let _ = sample(&tex, q, [a, b, 0.25], lod, b, Some(a), [0; 3]);
+                        let _ = sample(&tex, q, [b, 0.5, a], LodBase::Value(a), 0.0, None, [0; 3]);
                     }
                 }
             }
         }
+    }
+}
+
+/// A level of `w × h × d` texels whose texel (i, j, k) is (i, j, k, 1).
+fn texel_ramp(w: u32, h: u32, d: u32) -> Image {
+    let mut t = Vec::new();
+    for k in 0..d {
+        for j in 0..h {
+            for i in 0..w {
+                t.push([i as f32, j as f32, k as f32, 1.0]);
+            }
+        }
+    }
+    Image::new(w, h, d, t)
+}
+
+fn nearest(mut tex: Texture) -> Texture {
+    tex.min_filter = MinFilter::Nearest;
+    tex.mag_filter = MagFilter::Nearest;
+    tex
+}
+
+fn at_offset(tex: &Texture, coord: [f32; 3], offset: [i32; 3]) -> [f32; 4] {
+    let q = tex.last_level().expect("complete");
+    sample(tex, q, coord, LodBase::Value(0.0), 0.0, None, offset)
+}
+
+#[test]
+fn array_layers_are_the_rounded_coordinate_clamped() {
+    let tex = nearest(Texture::new(
+        TextureTarget::Tex2DArray,
+        vec![texel_ramp(4, 2, 3)],
+    ));
+    // Layer = clamp(floor(r + 0.5), 0, 2).
+    for (r, layer) in [(0.49, 0.0), (0.5, 1.0), (1.7, 2.0), (-3.0, 0.0), (9.0, 2.0)] {
+        assert_eq!(
+            at_offset(&tex, [0.6, 0.7, r], [0; 3]),
+            [2.0, 1.0, layer, 1.0],
+            "{r}"
+        );
+    }
+    // A 1D array's layers are its rows.
+    let tex = nearest(Texture::new(
+        TextureTarget::Tex1DArray,
+        vec![texel_ramp(4, 3, 1)],
+    ));
+    assert_eq!(
+        at_offset(&tex, [0.3, 1.6, 0.0], [0; 3]),
+        [1.0, 2.0, 0.0, 1.0]
+    );
+    // Linear filtering blends within the layer only.
+    let mut tex = Texture::new(TextureTarget::Tex2DArray, vec![texel_ramp(4, 4, 2)]);
+    tex.min_filter = MinFilter::Linear;
+    assert_eq!(
+        at_offset(&tex, [0.25, 0.25, 1.2], [0; 3]),
+        [0.5, 0.5, 1.0, 1.0]
+    );
+}
+
+#[test]
+fn rectangles_take_texel_coordinates() {
+    let mut tex = nearest(Texture::new(TextureTarget::Rect, vec![texel_ramp(5, 3, 1)]));
+    tex.wrap = [Wrap::ClampToEdge; 3];
+    assert_eq!(
+        at_offset(&tex, [3.5, 2.9, 0.0], [0; 3]),
+        [3.0, 2.0, 0.0, 1.0]
+    );
+    // CLAMP_TO_EDGE keeps coordinates in [½, n − ½].
+    assert_eq!(
+        at_offset(&tex, [-4.0, 7.0, 0.0], [0; 3]),
+        [0.0, 2.0, 0.0, 1.0]
+    );
+    tex.mag_filter = MagFilter::Linear;
+    assert_eq!(
+        at_offset(&tex, [2.0, 1.5, 0.0], [0; 3]),
+        [1.5, 1.0, 0.0, 1.0]
+    );
+    // Mipmapping filters do not apply: the one level is complete.
+    tex.min_filter = MinFilter::LinearMipmapLinear;
+    assert_eq!(tex.last_level(), Some(0));
+}
+
+#[test]
+fn offsets_move_the_texel_before_wrapping() {
+    let tex = nearest(Texture::new(
+        TextureTarget::Tex2D,
+        vec![texel_ramp(4, 4, 1)],
+    ));
+    assert_eq!(
+        at_offset(&tex, [0.3, 0.6, 0.0], [1, -1, 0]),
+        [2.0, 1.0, 0.0, 1.0]
+    );
+    // REPEAT wraps the offset texel.
+    assert_eq!(
+        at_offset(&tex, [0.9, 0.1, 0.0], [2, -1, 0]),
+        [1.0, 3.0, 0.0, 1.0]
+    );
+    let mut tex = tex;
+    tex.wrap = [Wrap::ClampToEdge; 3];
+    assert_eq!(
+        at_offset(&tex, [0.9, 0.1, 0.0], [2, -1, 0]),
+        [3.0, 0.0, 0.0, 1.0]
+    );
+}
+
+#[test]
+fn integer_textures_read_one_texel_unfiltered() {
+    let bits = |v: [i32; 4]| v.map(|x| f32::from_bits(x as u32));
+    let texels = vec![bits([1, -2, 3, 4]), bits([5, 6, -7, 8])];
+    let mut tex = Texture::new(TextureTarget::Tex2D, vec![Image::new(2, 1, 1, texels)]);
+    tex.integer = true;
+    tex.min_filter = MinFilter::Linear;
+    tex.mag_filter = MagFilter::Linear;
+    let got = at_offset(&tex, [0.74, 0.5, 0.0], [0; 3]).map(f32::to_bits);
+    assert_eq!(got, bits([5, 6, -7, 8]).map(f32::to_bits));
+}
+
+#[test]
+fn gradients_are_each_lanes_own() {
+    let mut tex = ramp(8, 8, 4);
+    tex.min_filter = MinFilter::NearestMipmapNearest;
+    let units = TextureUnits::new(vec![TextureUnit {
+        tex_2d: Some(Arc::new(tex)),
+        ..TextureUnit::default()
+    }]);
+    // Lane l's derivatives select level l % 4 (2^l texels per pixel).
+    let mut ddx = [[0.0; LANES]; 3];
+    let ddy = [[0.0; LANES]; 3];
+    for (l, d) in ddx[0].iter_mut().enumerate() {
+        *d = (1u32 << (l % 4)) as f32 / 8.0;
+    }
+    let req = SampleRequest {
+        unit: [0; LANES],
+        target: SamplerKind::Sampler2D,
+        coord: [[0.5; LANES]; 4],
+        compare: None,
+        lod: Lod::Gradients { ddx, ddy },
+        offset: None,
+        compare_only: false,
+        mask: 0xffff,
+    };
+    let mut out = [[0.0; LANES]; 4];
+    units.sample(&req, &mut out);
+    for (l, &level) in out[2].iter().enumerate() {
+        assert_eq!(level, (l % 4) as f32, "lane {l}");
+    }
+}
+
+#[test]
+fn fetches_and_sizes() {
+    let mut arr = Texture::new(
+        TextureTarget::Tex2DArray,
+        vec![
+            texel_ramp(4, 2, 3),
+            texel_ramp(2, 1, 3),
+            texel_ramp(1, 1, 3),
+        ],
+    );
+    arr.base_level = 0;
+    arr.min_filter = MinFilter::NearestMipmapNearest;
+    let mut rect = Texture::new(TextureTarget::Rect, vec![texel_ramp(5, 3, 1)]);
+    rect.min_filter = MinFilter::Nearest;
+    let units = TextureUnits::new(vec![TextureUnit {
+        tex_2d_array: Some(Arc::new(arr)),
+        rect: Some(Arc::new(rect)),
+        ..TextureUnit::default()
+    }]);
+    let fetch = |target, c: [i32; 3], lod: i32| {
+        let req = FetchRequest {
+            unit: [0; LANES],
+            target,
+            coord: c.map(|x| [x; LANES]),
+            lod: [lod; LANES],
+            mask: 1,
+        };
+        let mut out = [[0.0; LANES]; 4];
+        units.fetch(&req, &mut out);
+        [out[0][0], out[1][0], out[2][0], out[3][0]]
+    };
+    assert_eq!(
+        fetch(SamplerKind::Sampler2DArray, [3, 1, 2], 0),
+        [3.0, 1.0, 2.0, 1.0]
+    );
+    assert_eq!(
+        fetch(SamplerKind::Sampler2DArray, [1, 0, 1], 1),
+        [1.0, 0.0, 1.0, 1.0]
+    );
+    // Outside the level, past the last level, a negative level.
+    assert_eq!(fetch(SamplerKind::Sampler2DArray, [4, 0, 0], 0), MISSING);
+    assert_eq!(fetch(SamplerKind::Sampler2DArray, [0, 0, 3], 0), MISSING);
+    assert_eq!(fetch(SamplerKind::Sampler2DArray, [0, 0, 0], 3), MISSING);
+    assert_eq!(fetch(SamplerKind::Sampler2DArray, [0, 0, 0], -1), MISSING);
+    assert_eq!(
+        fetch(SamplerKind::Sampler2DRect, [4, 2, 9], 0),
+        [4.0, 2.0, 0.0, 1.0]
+    );
+    assert_eq!(fetch(SamplerKind::Sampler2D, [0, 0, 0], 0), MISSING);
+    assert_eq!(units.size(0, SamplerKind::Sampler2DArray, 0), [4, 2, 3]);
+    assert_eq!(units.size(0, SamplerKind::ISampler2DArray, 1), [2, 1, 3]);
+    assert_eq!(units.size(0, SamplerKind::Sampler2DArray, 2), [1, 1, 3]);
+    assert_eq!(units.size(0, SamplerKind::Sampler2DArray, 3), [0, 0, 0]);
+    assert_eq!(units.size(0, SamplerKind::Sampler2DRect, 0), [5, 3, 0]);
+    assert_eq!(units.size(0, SamplerKind::Sampler2D, 0), [0, 0, 0]);
+    assert_eq!(units.size(1, SamplerKind::Sampler2DRect, 0), [0, 0, 0]);
+}
+
+#[test]
+fn glsl130_shadow_lookups_ignore_the_depth_texture_mode() {
+    let mut tex = Texture::new(
+        TextureTarget::Tex2D,
+        vec![solid(2, 2, [0.5, 0.5, 0.5, 1.0])],
+    );
+    tex.depth_format = true;
+    tex.compare = Some(CompareFunc::Less);
+    tex.min_filter = MinFilter::Nearest;
+    tex.mag_filter = MagFilter::Nearest;
+    for (mode, legacy) in [
+        (DepthTextureMode::Alpha, [0.0, 0.0, 0.0, 1.0]),
+        (DepthTextureMode::Red, [1.0, 0.0, 0.0, 1.0]),
+        (DepthTextureMode::Intensity, [1.0; 4]),
+    ] {
+        tex.depth_mode = mode;
+        let units = TextureUnits::new(vec![TextureUnit {
+            tex_2d: Some(Arc::new(tex.clone())),
+            ..TextureUnit::default()
+        }]);
+        let mut req = SampleRequest {
+            unit: [0; LANES],
+            target: SamplerKind::Sampler2DShadow,
+            coord: [[0.5; LANES]; 4],
+            compare: Some([0.25; LANES]),
+            lod: Lod::Explicit([0.0; LANES]),
+            offset: None,
+            compare_only: false,
+            mask: 1,
+        };
+        let mut out = [[0.0; LANES]; 4];
+        units.sample(&req, &mut out);
+        assert_eq!(
+            [out[0][0], out[1][0], out[2][0], out[3][0]],
+            legacy,
+            "{mode:?}"
+        );
+        req.compare_only = true;
+        units.sample(&req, &mut out);
+        assert_eq!(out[0][0], 1.0, "{mode:?}");
     }
 }

@@ -1,0 +1,102 @@
+//! The GL 3.0-3.3 texture entry points, driven as a C program would:
+//! buffer textures (glTexBuffer), four-valued swizzles through
+//! glTexParameteriv, the integer parameter forms, and their lookup by
+//! name.
+
+use gl::enums::*;
+use std::ffi::{c_void, CString};
+use std::ptr::null_mut;
+use OSMesa::*;
+
+const W: i32 = 4;
+const H: i32 = 4;
+
+const NAMES: &[&str] = &[
+    "glTexBuffer",
+    "glTexBufferARB",
+    "glTexBufferEXT",
+    "glTexParameterIiv",
+    "glTexParameterIuiv",
+    "glGetTexParameterIiv",
+    "glGetTexParameterIuiv",
+];
+
+#[test]
+fn every_new_entry_point_is_exported() {
+    for name in NAMES {
+        let c = CString::new(*name).unwrap();
+        assert!(
+            unsafe { OSMesaGetProcAddress(c.as_ptr()) }.is_some(),
+            "{name}"
+        );
+    }
+}
+
+#[test]
+fn buffer_textures_and_swizzles_through_the_c_abi() {
+    unsafe {
+        let mut buf = vec![0u8; (W * H * 4) as usize];
+        let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, null_mut());
+        assert!(!ctx.is_null());
+        assert_eq!(
+            OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, W, H),
+            OSMesa::GL_TRUE
+        );
+        // A buffer of RGBA8 texels: texel 1 is (0, 255, 0, 255).
+        let texels: [u8; 8] = [255, 0, 0, 255, 0, 255, 0, 255];
+        let mut b = 0;
+        glGenBuffers(1, &mut b);
+        glBindBuffer(GL_TEXTURE_BUFFER, b);
+        glBufferData(
+            GL_TEXTURE_BUFFER,
+            8,
+            texels.as_ptr() as *const c_void,
+            GL_STATIC_DRAW,
+        );
+        let mut t = 0;
+        glGenTextures(1, &mut t);
+        glBindTexture(GL_TEXTURE_BUFFER, t);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA8, b);
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        let vs = "#version 140\nin vec2 p;\nvoid main() { gl_Position = vec4(p, 0.0, 1.0); }";
+        let fs = "#version 140\nuniform samplerBuffer s;\nout vec4 c;\n\
+                  void main() { c = texelFetch(s, textureSize(s) - 1); }";
+        let prog = glCreateProgram();
+        for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
+            let s = glCreateShader(kind);
+            let (ptr, len) = (src.as_ptr() as *const GLchar, src.len() as GLint);
+            glShaderSource(s, 1, &ptr, &len);
+            glCompileShader(s);
+            glAttachShader(prog, s);
+        }
+        glLinkProgram(prog);
+        glUseProgram(prog);
+        let quad: [f32; 8] = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
+        let name = CString::new("p").unwrap();
+        let p = glGetAttribLocation(prog, name.as_ptr()) as u32;
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+        glVertexAttribPointer(p, 2, GL_FLOAT, 0, 0, quad.as_ptr() as *const c_void);
+        glEnableVertexAttribArray(p);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        glFinish();
+        assert_eq!(buf[..4], [0, 255, 0, 255]);
+        // Four swizzles in one glTexParameteriv, read back with the
+        // integer query.
+        let mut t2 = 0;
+        glGenTextures(1, &mut t2);
+        glBindTexture(GL_TEXTURE_2D, t2);
+        let swizzle = [GL_ALPHA, GL_ZERO, GL_ONE, GL_RED].map(|x| x as GLint);
+        glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle.as_ptr());
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        let mut got = [0 as GLint; 4];
+        glGetTexParameterIiv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, got.as_mut_ptr());
+        assert_eq!(got, swizzle);
+        let mut one = [0 as GLuint; 1];
+        glGetTexParameterIuiv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_G, one.as_mut_ptr());
+        assert_eq!(one[0], GL_ZERO);
+        let bad = [GL_LESS as GLint];
+        glTexParameterIiv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_B, bad.as_ptr());
+        assert_eq!(glGetError(), GL_INVALID_ENUM);
+        OSMesaDestroyContext(ctx);
+    }
+}

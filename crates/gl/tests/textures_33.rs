@@ -1,0 +1,867 @@
+//! GL 3.0-3.3 textures, end to end: integer formats sampled by
+//! `isampler*`/`usampler*`, 1D and 2D array textures, rectangle
+//! textures, and the GLSL 1.30 lookups (`texelFetch`, `textureSize`,
+//! `textureOffset`, `textureGrad`) on them; each draw checks the values
+//! in the shader and the test reads the verdict's colour.
+
+use gl::enums::*;
+use gl::param::Param;
+use gl::{ArrayData, Context};
+
+const VS: &str = "#version 130\n\
+    in vec2 pos;\n\
+    out vec2 tc;\n\
+    void main() { gl_Position = vec4(pos, 0.0, 1.0); tc = pos * 0.5 + 0.5; }";
+
+const FULL_QUAD: [f32; 8] = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
+const GREEN: [u8; 4] = [0, 255, 0, 255];
+const RED: [u8; 4] = [255, 0, 0, 255];
+
+/// Links `fs` (which writes green when its checks pass, red otherwise)
+/// with [`VS`], draws the full quad into an 8×8 context and returns the
+/// pixel at (x, y).
+fn draw(ctx: &mut Context, fs: &str, at: (i32, i32)) -> [u8; 4] {
+    let p = ctx.create_program();
+    for (kind, src) in [(GL_VERTEX_SHADER, VS), (GL_FRAGMENT_SHADER, fs)] {
+        let s = ctx.create_shader(kind);
+        ctx.shader_source(s, &[src]);
+        ctx.compile_shader(s);
+        assert_eq!(
+            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
+            1,
+            "{}",
+            ctx.get_shader_info_log(s)
+        );
+        ctx.attach_shader(p, s);
+    }
+    ctx.link_program(p);
+    assert_eq!(
+        ctx.get_programiv(p, GL_LINK_STATUS),
+        1,
+        "{}",
+        ctx.get_program_info_log(p)
+    );
+    ctx.use_program(p);
+    let pos = ctx.get_attrib_location(p, "pos");
+    assert!(pos >= 0);
+    ctx.vertex_attrib_pointer(
+        pos as u32,
+        2,
+        GL_FLOAT,
+        false,
+        0,
+        ArrayData::from_f32(&FULL_QUAD),
+    );
+    ctx.enable_vertex_attrib_array(pos as u32);
+    ctx.clear_color(0.0, 0.0, 0.0, 0.0);
+    ctx.clear(GL_COLOR_BUFFER_BIT);
+    ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+    assert_eq!(ctx.take_draw_error(), None);
+    ctx.read_pixels_f32(at.0, at.1, 1, 1)[0].map(|c| (c * 255.0).round() as u8)
+}
+
+fn bytes<T: Copy>(v: &[T], f: impl Fn(T) -> Vec<u8>) -> Vec<u8> {
+    v.iter().flat_map(|&x| f(x)).collect()
+}
+
+fn nearest(ctx: &mut Context, target: u32) {
+    for p in [GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER] {
+        ctx.tex_parameter(target, p, Param::I(GL_NEAREST as i32));
+    }
+}
+
+#[test]
+fn integer_textures_sample_their_integers() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    // 2×1 RGBA32I texels with extremes, and an RGBA16UI level of the
+    // second texture from bytes.
+    let texels: [i32; 8] = [i32::MIN, -1, 7, i32::MAX, 1, 2, 3, 4];
+    let data = bytes(&texels, |x: i32| x.to_le_bytes().to_vec());
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA32I as i32,
+        [2, 1],
+        0,
+        GL_RGBA_INTEGER,
+        GL_INT,
+        Some(&data),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    nearest(&mut ctx, GL_TEXTURE_2D);
+    let fs = "#version 130\n\
+        uniform isampler2D s;\n\
+        in vec2 tc;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texture(s, vec2(0.25, 0.5)) == ivec4(-2147483647 - 1, -1, 7, 2147483647)\n\
+            && texelFetch(s, ivec2(1, 0), 0) == ivec4(1, 2, 3, 4)\n\
+            && textureSize(s, 0) == ivec2(2, 1);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+    // Unsigned, 8-bit red only: missing components 0, alpha 1; values
+    // clamped to the format's range.
+    let data = bytes(&[300u16, 65535], |x: u16| x.to_le_bytes().to_vec());
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_R8UI as i32,
+        [2, 1],
+        0,
+        GL_RED_INTEGER,
+        GL_UNSIGNED_SHORT,
+        Some(&data),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    let fs = "#version 130\n\
+        uniform usampler2D s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texelFetch(s, ivec2(0, 0), 0) == uvec4(255u, 0u, 0u, 1u);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+    // A wrong expectation is seen as wrong (the check can fail).
+    let fs_wrong = fs.replace("uvec4(255u, 0u, 0u, 1u)", "uvec4(254u, 0u, 0u, 1u)");
+    assert_eq!(draw(&mut ctx, &fs_wrong, (4, 4)), RED);
+}
+
+#[test]
+fn integer_formats_take_integer_data_only() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    let data = [0u8; 16];
+    for (internal, format, ty) in [
+        (GL_RGBA8I, GL_RGBA, GL_BYTE),
+        (GL_RGBA8, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE),
+        (GL_RGBA32UI, GL_RGBA_INTEGER, GL_FLOAT),
+    ] {
+        ctx.tex_image(
+            GL_TEXTURE_2D,
+            0,
+            internal as i32,
+            [1, 1],
+            0,
+            format,
+            ty,
+            Some(&data),
+        );
+        assert_eq!(
+            ctx.get_error(),
+            GL_INVALID_OPERATION,
+            "{internal:#x} {format:#x} {ty:#x}"
+        );
+    }
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RG16I as i32,
+        [1, 1],
+        0,
+        GL_RG_INTEGER,
+        GL_SHORT,
+        Some(&data),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    // A sub-image of an integer texture needs integer data too.
+    ctx.tex_sub_image(GL_TEXTURE_2D, 0, [0, 0], [1, 1], GL_RG, GL_SHORT, &data);
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+}
+
+#[test]
+fn array_textures_select_a_layer() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D_ARRAY, t);
+    // Three 2×2 layers: red, green, blue.
+    let mut texels = Vec::new();
+    for layer in 0..3 {
+        for _ in 0..4 {
+            let mut c = [0u8, 0, 0, 255];
+            c[layer] = 255;
+            texels.extend(c);
+        }
+    }
+    ctx.tex_image(
+        GL_TEXTURE_2D_ARRAY,
+        0,
+        GL_RGBA8 as i32,
+        [2, 2, 3],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    nearest(&mut ctx, GL_TEXTURE_2D_ARRAY);
+    assert_eq!(ctx.get_integerv(GL_TEXTURE_BINDING_2D_ARRAY)[0], t as i32);
+    let fs = "#version 130\n\
+        uniform sampler2DArray s;\n\
+        in vec2 tc;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texture(s, vec3(tc, 0.4)) == vec4(1.0, 0.0, 0.0, 1.0)\n\
+            && texture(s, vec3(tc, 1.5)) == vec4(0.0, 0.0, 1.0, 1.0)\n\
+            && texture(s, vec3(tc, 7.0)) == vec4(0.0, 0.0, 1.0, 1.0)\n\
+            && texelFetch(s, ivec3(1, 1, 1), 0) == vec4(0.0, 1.0, 0.0, 1.0)\n\
+            && textureSize(s, 0) == ivec3(2, 2, 3);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (3, 5)), GREEN);
+    // A 1D array from a 2D image: each row a layer.
+    let t1 = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_1D_ARRAY, t1);
+    ctx.tex_image(
+        GL_TEXTURE_1D_ARRAY,
+        0,
+        GL_RGBA8 as i32,
+        [4, 3],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    nearest(&mut ctx, GL_TEXTURE_1D_ARRAY);
+    let fs = "#version 130\n\
+        uniform sampler1DArray s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texture(s, vec2(0.1, 2.0)) == vec4(0.0, 0.0, 1.0, 1.0)\n\
+            && texture(s, vec2(0.9, 1.0)) == vec4(0.0, 1.0, 0.0, 1.0)\n\
+            && textureSize(s, 0) == ivec2(4, 3);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (3, 5)), GREEN);
+}
+
+#[test]
+fn rectangle_textures_take_texel_coordinates() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_RECTANGLE, t);
+    // Rectangles start CLAMP_TO_EDGE and LINEAR; they take neither
+    // repeating wraps nor mipmap filters nor a second level.
+    assert_eq!(
+        ctx.get_tex_parameteriv(GL_TEXTURE_RECTANGLE, GL_TEXTURE_WRAP_S),
+        GL_CLAMP_TO_EDGE as i32
+    );
+    assert_eq!(
+        ctx.get_tex_parameteriv(GL_TEXTURE_RECTANGLE, GL_TEXTURE_MIN_FILTER),
+        GL_LINEAR as i32
+    );
+    ctx.tex_parameter(
+        GL_TEXTURE_RECTANGLE,
+        GL_TEXTURE_WRAP_S,
+        Param::I(GL_REPEAT as i32),
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    ctx.tex_parameter(
+        GL_TEXTURE_RECTANGLE,
+        GL_TEXTURE_MIN_FILTER,
+        Param::I(GL_LINEAR_MIPMAP_LINEAR as i32),
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    let texels: Vec<u8> = (0..4 * 2).flat_map(|i| [i as u8 * 30, 0, 0, 255]).collect();
+    ctx.tex_image(
+        GL_TEXTURE_RECTANGLE,
+        1,
+        GL_RGBA8 as i32,
+        [4, 2],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    ctx.tex_image(
+        GL_TEXTURE_RECTANGLE,
+        0,
+        GL_RGBA8 as i32,
+        [4, 2],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    nearest(&mut ctx, GL_TEXTURE_RECTANGLE);
+    let fs = "#version 140\n\
+        uniform sampler2DRect s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texture(s, vec2(2.5, 1.5)).r == 180.0 / 255.0\n\
+            && texture(s, vec2(9.0, -3.0)).r == 90.0 / 255.0\n\
+            && texelFetch(s, ivec2(1, 1)).r == 150.0 / 255.0\n\
+            && textureOffset(s, vec2(0.5, 0.5), ivec2(3, 1)).r == 210.0 / 255.0\n\
+            && textureSize(s) == ivec2(4, 2);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (3, 5)), GREEN);
+}
+
+#[test]
+fn offsets_gradients_and_fetches_on_2d_textures() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    // Level 0: 4×4 texels whose red is 16·j + 4·i (of 255); level 1: 2×2
+    // blue; level 2: 1×1 green.
+    let l0: Vec<u8> = (0..16u8).flat_map(|k| [k * 4, 0, 0, 255]).collect();
+    let l1: Vec<u8> = [0u8, 0, 255, 255].repeat(4);
+    let l2: Vec<u8> = vec![0, 255, 0, 255];
+    for (level, size, data) in [(0, 4, &l0), (1, 2, &l1), (2, 1, &l2)] {
+        ctx.tex_image(
+            GL_TEXTURE_2D,
+            level,
+            GL_RGBA8 as i32,
+            [size, size],
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            Some(data),
+        );
+    }
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        Param::I(GL_NEAREST_MIPMAP_NEAREST as i32),
+    );
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MAG_FILTER,
+        Param::I(GL_NEAREST as i32),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    let fs = "#version 130\n\
+        uniform sampler2D s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          vec2 c = vec2(0.375, 0.125);\n\
+          bool ok = textureOffset(s, c, ivec2(1, 2)).r == 40.0 / 255.0\n\
+            && textureLodOffset(s, c, 0.0, ivec2(-1, 0)).r == 0.0\n\
+            && textureGrad(s, c, vec2(0.5, 0.0), vec2(0.0, 0.5)) == vec4(0.0, 0.0, 1.0, 1.0)\n\
+            && textureGrad(s, c, vec2(1.0, 0.0), vec2(0.0, 0.0)) == vec4(0.0, 1.0, 0.0, 1.0)\n\
+            && texelFetch(s, ivec2(3, 3), 0).r == 60.0 / 255.0\n\
+            && texelFetchOffset(s, ivec2(0, 0), 1, ivec2(1, 1)) == vec4(0.0, 0.0, 1.0, 1.0)\n\
+            && textureSize(s, 1) == ivec2(2) && textureSize(s, 2) == ivec2(1);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (1, 6)), GREEN);
+}
+
+#[test]
+fn srgb_textures_decode_to_linear() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    // Encoded 0, 10, 128, 255 (alpha stays linear).
+    let texels = [0u8, 10, 128, 128, 255, 255, 255, 255];
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_SRGB8_ALPHA8 as i32,
+        [2, 1],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    nearest(&mut ctx, GL_TEXTURE_2D);
+    let fs = "#version 130\n\
+        uniform sampler2D s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          vec4 a = texelFetch(s, ivec2(0, 0), 0);\n\
+          vec4 b = texture(s, vec2(0.75, 0.5));\n\
+          bool ok = a.r == 0.0 && abs(a.g - (10.0 / 255.0) / 12.92) < 1e-6\n\
+            && abs(a.b - 0.2158605) < 1e-5 && a.a == 128.0 / 255.0\n\
+            && abs(b.r - 1.0) < 1e-6 && b.a == 1.0;\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+    // The same bytes in RGBA8 are not decoded (the check can fail).
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        [2, 1],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), RED);
+}
+
+#[test]
+fn packed_float_formats_keep_their_precision() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    nearest(&mut ctx, GL_TEXTURE_2D);
+    let data = bytes(&[1.0f32 + 1.0 / 256.0, -3.0, 1e6, 0.0], |x: f32| {
+        x.to_le_bytes().to_vec()
+    });
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_R11F_G11F_B10F as i32,
+        [1, 1],
+        0,
+        GL_RGBA,
+        GL_FLOAT,
+        Some(&data),
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    // 6 mantissa bits: 1 + 1/256 rounds to 1; negative to 0; large to
+    // the largest 10-bit float.
+    let fs = "#version 130\n\
+        uniform sampler2D s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texelFetch(s, ivec2(0), 0) == vec4(1.0, 0.0, 64512.0, 1.0);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+    // RGB9_E5: the shared exponent of 4.0 leaves 9-bit mantissas below 8,
+    // steps of 1/64, so 0.01 becomes 0.015625.
+    let data = bytes(&[4.0f32, 0.01, 1.0, 0.0], |x: f32| x.to_le_bytes().to_vec());
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGB9_E5 as i32,
+        [1, 1],
+        0,
+        GL_RGBA,
+        GL_FLOAT,
+        Some(&data),
+    );
+    let fs = "#version 130\n\
+        uniform sampler2D s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texelFetch(s, ivec2(0), 0) == vec4(4.0, 0.015625, 1.0, 1.0);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+}
+
+#[test]
+fn array_mipmaps_keep_their_layers() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D_ARRAY, t);
+    // Two 4×4 layers, each solid: 64 and 192.
+    let texels: Vec<u8> = [64u8, 192]
+        .iter()
+        .flat_map(|&v| [v, 0, 0, 255].repeat(16))
+        .collect();
+    ctx.tex_image(
+        GL_TEXTURE_2D_ARRAY,
+        0,
+        GL_RGBA8 as i32,
+        [4, 4, 2],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    ctx.generate_mipmap(GL_TEXTURE_2D_ARRAY);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(
+        ctx.get_tex_level_parameteriv(GL_TEXTURE_2D_ARRAY, 2, GL_TEXTURE_DEPTH),
+        2
+    );
+    assert_eq!(
+        ctx.get_tex_level_parameteriv(GL_TEXTURE_2D_ARRAY, 2, GL_TEXTURE_WIDTH),
+        1
+    );
+    ctx.tex_parameter(
+        GL_TEXTURE_2D_ARRAY,
+        GL_TEXTURE_MIN_FILTER,
+        Param::I(GL_NEAREST_MIPMAP_NEAREST as i32),
+    );
+    let fs = "#version 130\n\
+        uniform sampler2DArray s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = textureLod(s, vec3(0.5, 0.5, 1.0), 2.0).r == 192.0 / 255.0\n\
+            && textureLod(s, vec3(0.5, 0.5, 0.0), 2.0).r == 64.0 / 255.0\n\
+            && textureSize(s, 2) == ivec3(1, 1, 2);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+    // Integer textures have no mipmaps to generate.
+    let data = [0u8; 4];
+    ctx.tex_image(
+        GL_TEXTURE_2D_ARRAY,
+        0,
+        GL_R8UI as i32,
+        [2, 2, 1],
+        0,
+        GL_RED_INTEGER,
+        GL_UNSIGNED_BYTE,
+        Some(&data),
+    );
+    ctx.generate_mipmap(GL_TEXTURE_2D_ARRAY);
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+}
+
+#[test]
+fn integer_images_read_back_as_integers() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    let texels: [i32; 4] = [i32::MIN, -1, 7, i32::MAX];
+    let data = bytes(&texels, |x: i32| x.to_le_bytes().to_vec());
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA32I as i32,
+        [1, 1],
+        0,
+        GL_RGBA_INTEGER,
+        GL_INT,
+        Some(&data),
+    );
+    assert_eq!(
+        ctx.get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA_INTEGER, GL_INT),
+        data
+    );
+    // Clamped to the type's range; BGRA order.
+    assert_eq!(
+        ctx.get_tex_image(GL_TEXTURE_2D, 0, GL_BGRA_INTEGER, GL_BYTE),
+        vec![7, 0xff, 0x80, 0x7f]
+    );
+    // Not as normalized colours.
+    assert!(ctx
+        .get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE)
+        .is_empty());
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+    // A missing alpha reads as 1.
+    let data = [200u8];
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_R8UI as i32,
+        [1, 1],
+        0,
+        GL_RED_INTEGER,
+        GL_UNSIGNED_BYTE,
+        Some(&data),
+    );
+    ctx.pixel_storei(GL_PACK_ALIGNMENT, 1);
+    assert_eq!(
+        ctx.get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT),
+        vec![200, 0, 0, 0, 0, 0, 1, 0]
+    );
+    // Colour textures are not read as integers.
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        [1, 1],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&[1, 2, 3, 4]),
+    );
+    assert!(ctx
+        .get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE)
+        .is_empty());
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+}
+
+#[test]
+fn buffer_textures_fetch_from_their_buffer() {
+    let mut ctx = Context::new(8, 8);
+    let b = ctx.gen_buffers(1)[0];
+    ctx.bind_buffer(GL_TEXTURE_BUFFER, b);
+    let values: [i32; 6] = [10, -20, 30, -40, 50, -60];
+    let data = bytes(&values, |x: i32| x.to_le_bytes().to_vec());
+    ctx.buffer_data(
+        GL_TEXTURE_BUFFER,
+        data.len() as isize,
+        Some(&data),
+        GL_STATIC_DRAW,
+    );
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_BUFFER, t);
+    ctx.tex_buffer(GL_TEXTURE_BUFFER, GL_RGB8, b);
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM, "no RGB formats in GL 3.1");
+    ctx.tex_buffer(GL_TEXTURE_BUFFER, GL_RG32I, 12345);
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+    ctx.tex_buffer(GL_TEXTURE_BUFFER, GL_RG32I, b);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(ctx.get_integerv(GL_TEXTURE_BINDING_BUFFER)[0], t as i32);
+    assert_eq!(
+        ctx.get_integerv(GL_TEXTURE_BUFFER_DATA_STORE_BINDING)[0],
+        b as i32
+    );
+    ctx.tex_parameter(
+        GL_TEXTURE_BUFFER,
+        GL_TEXTURE_MIN_FILTER,
+        Param::I(GL_NEAREST as i32),
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    let fs = "#version 140\n\
+        uniform isamplerBuffer s;\n\
+        uniform int want;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texelFetch(s, 2) == ivec4(50, -60, 0, 1)\n\
+            && texelFetch(s, 0).y == -20 && textureSize(s) == 3\n\
+            && texelFetch(s, 1).x == want;\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    // The first draw sees 30; after a write to the buffer, 99.
+    let want = |ctx: &mut Context, v: i32| {
+        let prog = ctx.get_integerv(GL_CURRENT_PROGRAM)[0] as u32;
+        let loc = ctx.get_uniform_location(prog, "want");
+        ctx.uniform_1i(loc, v);
+    };
+    // (`want` starts 0: the check can fail.)
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), RED);
+    want(&mut ctx, 30);
+    ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+    assert_eq!(ctx.read_pixels_f32(4, 4, 1, 1)[0], [0.0, 1.0, 0.0, 1.0]);
+    ctx.buffer_sub_data(GL_TEXTURE_BUFFER, 8, &99i32.to_le_bytes());
+    ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+    assert_eq!(ctx.read_pixels_f32(4, 4, 1, 1)[0], [1.0, 0.0, 0.0, 1.0]);
+    want(&mut ctx, 99);
+    ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+    assert_eq!(ctx.read_pixels_f32(4, 4, 1, 1)[0], [0.0, 1.0, 0.0, 1.0]);
+}
+
+#[test]
+fn red_green_and_rectangle_textures_are_drawn_into() {
+    let mut ctx = Context::new(8, 8);
+    let fs_write = "#version 130\n\
+        out vec4 color;\n\
+        void main() { color = vec4(0.25, 0.75, 1.0, 0.5); }";
+    for (target, internal, want) in [
+        (GL_TEXTURE_2D, GL_RG8, [64u8, 191, 0, 255]),
+        (GL_TEXTURE_2D, GL_R8, [64, 0, 0, 255]),
+        (GL_TEXTURE_RECTANGLE, GL_RGBA8, [64, 191, 255, 128]),
+    ] {
+        let t = ctx.gen_textures(1)[0];
+        ctx.bind_texture(target, t);
+        ctx.tex_image(
+            target,
+            0,
+            internal as i32,
+            [8, 8],
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            None,
+        );
+        nearest(&mut ctx, target);
+        let fb = ctx.gen_framebuffers(1)[0];
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+        ctx.framebuffer_texture_2d(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, t, 0);
+        assert_eq!(
+            ctx.check_framebuffer_status(GL_FRAMEBUFFER),
+            GL_FRAMEBUFFER_COMPLETE
+        );
+        draw(&mut ctx, fs_write, (2, 2));
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, 0);
+        let got = ctx.get_tex_image(target, 0, GL_RGBA, GL_UNSIGNED_BYTE);
+        assert_eq!(got[..4], want, "{internal:#x}");
+    }
+    // Integer colour buffers are not drawn into.
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA8UI as i32,
+        [8, 8],
+        0,
+        GL_RGBA_INTEGER,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    let fb = ctx.gen_framebuffers(1)[0];
+    ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+    ctx.framebuffer_texture_2d(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t, 0);
+    assert_eq!(
+        ctx.check_framebuffer_status(GL_FRAMEBUFFER),
+        GL_FRAMEBUFFER_UNSUPPORTED
+    );
+    // A 1D array is attached by layer only.
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_1D_ARRAY, t);
+    ctx.framebuffer_texture_2d(
+        GL_FRAMEBUFFER,
+        GL_COLOR_ATTACHMENT0,
+        GL_TEXTURE_1D_ARRAY,
+        t,
+        0,
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+}
+
+#[test]
+fn depth_cube_maps_compare_through_sampler_cube_shadow() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_CUBE_MAP, t);
+    // Every face at depth 0.5 except +X at 0.25.
+    for face in 0..6u32 {
+        let d: f32 = if face == 0 { 0.25 } else { 0.5 };
+        let data = bytes(&[d; 4], |x: f32| x.to_le_bytes().to_vec());
+        ctx.tex_image(
+            GL_TEXTURE_CUBE_MAP_POSITIVE_X + face,
+            0,
+            GL_DEPTH_COMPONENT32F as i32,
+            [2, 2],
+            0,
+            GL_DEPTH_COMPONENT,
+            GL_FLOAT,
+            Some(&data),
+        );
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    }
+    nearest(&mut ctx, GL_TEXTURE_CUBE_MAP);
+    ctx.tex_parameter(
+        GL_TEXTURE_CUBE_MAP,
+        GL_TEXTURE_COMPARE_MODE,
+        Param::I(GL_COMPARE_R_TO_TEXTURE as i32),
+    );
+    ctx.tex_parameter(
+        GL_TEXTURE_CUBE_MAP,
+        GL_TEXTURE_COMPARE_FUNC,
+        Param::I(GL_LESS as i32),
+    );
+    let fs = "#version 130\n\
+        uniform samplerCubeShadow s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texture(s, vec4(1.0, 0.1, 0.1, 0.3)) == 0.0\n\
+            && texture(s, vec4(-1.0, 0.1, 0.1, 0.3)) == 1.0\n\
+            && texture(s, vec4(0.1, 0.1, 1.0, 0.6)) == 0.0;\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+}
+
+#[test]
+fn swizzles_rearrange_lookup_results() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        [1, 1],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&[255, 0, 51, 102]),
+    );
+    nearest(&mut ctx, GL_TEXTURE_2D);
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_SWIZZLE_R,
+        Param::I(GL_BLUE as i32),
+    );
+    ctx.tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_G, Param::I(GL_ONE as i32));
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_SWIZZLE_A,
+        Param::I(GL_ZERO as i32),
+    );
+    ctx.tex_parameter(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_SWIZZLE_B,
+        Param::I(GL_RGBA as i32),
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    assert_eq!(
+        ctx.get_tex_parameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_R),
+        GL_BLUE as i32
+    );
+    assert_eq!(
+        ctx.get_tex_parameterfv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA),
+        [GL_BLUE, GL_ONE, GL_BLUE, GL_ZERO].map(|x| x as f32)
+    );
+    let fs = "#version 130\n\
+        uniform sampler2D s;\n\
+        out vec4 color;\n\
+        void main() {\n\
+          bool ok = texture(s, vec2(0.5)) == vec4(0.2, 1.0, 0.2, 0.0)\n\
+            && texelFetch(s, ivec2(0), 0) == vec4(0.2, 1.0, 0.2, 0.0);\n\
+          color = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);\n\
+        }";
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
+    // All four at once; back to the identity.
+    let identity = [GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA].map(|x| x as i32);
+    ctx.tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, Param::Iv(&identity));
+    assert_eq!(draw(&mut ctx, fs, (4, 4)), RED);
+}
+
+#[test]
+fn level_queries_report_component_sizes_and_types() {
+    let mut ctx = Context::new(8, 8);
+    let t = ctx.gen_textures(1)[0];
+    ctx.bind_texture(GL_TEXTURE_2D, t);
+    let q = |ctx: &mut Context, pname: u32| ctx.get_tex_level_parameteriv(GL_TEXTURE_2D, 0, pname);
+    for (internal, format, size, ty) in [
+        (GL_RGBA16I, GL_RGBA_INTEGER, 16, GL_INT),
+        (GL_RGBA32UI, GL_RGBA_INTEGER, 32, GL_UNSIGNED_INT),
+        (GL_RGBA16F, GL_RGBA, 16, GL_FLOAT),
+        (GL_RGBA8, GL_RGBA, 8, GL_UNSIGNED_NORMALIZED),
+    ] {
+        ctx.tex_image(
+            GL_TEXTURE_2D,
+            0,
+            internal as i32,
+            [1, 1],
+            0,
+            format,
+            GL_UNSIGNED_BYTE,
+            None,
+        );
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        assert_eq!(q(&mut ctx, GL_TEXTURE_ALPHA_SIZE), size, "{internal:#x}");
+        assert_eq!(q(&mut ctx, GL_TEXTURE_RED_TYPE), ty as i32, "{internal:#x}");
+        assert_eq!(q(&mut ctx, GL_TEXTURE_DEPTH_TYPE), GL_NONE as i32);
+    }
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_R8 as i32,
+        [1, 1],
+        0,
+        GL_RED,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    assert_eq!(q(&mut ctx, GL_TEXTURE_GREEN_TYPE), GL_NONE as i32);
+    assert_eq!(q(&mut ctx, GL_TEXTURE_RED_SIZE), 8);
+    ctx.tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_R11F_G11F_B10F as i32,
+        [1, 1],
+        0,
+        GL_RGB,
+        GL_FLOAT,
+        None,
+    );
+    assert_eq!(
+        [
+            q(&mut ctx, GL_TEXTURE_GREEN_SIZE),
+            q(&mut ctx, GL_TEXTURE_BLUE_SIZE)
+        ],
+        [11, 10]
+    );
+}
