@@ -22,6 +22,13 @@ fn tex_parameter_count(pname: GLenum) -> i64 {
 }
 
 gl_entry_points! {
+    fn glTexImage2DMultisample(
+        target: GLenum, samples: GLsizei, internal: GLenum, w: GLsizei, h: GLsizei, fixed: GLboolean
+    ) => |c| { c.gl.tex_image_multisample(target, samples, internal, [w, h], as_bool(fixed)) }
+    fn glTexImage3DMultisample(
+        target: GLenum, samples: GLsizei, internal: GLenum, w: GLsizei, h: GLsizei, d: GLsizei,
+        fixed: GLboolean
+    ) => |c| { c.gl.tex_image_multisample(target, samples, internal, [w, h, d], as_bool(fixed)) }
     // ---- objects ----
     fn glGenTextures(n: GLsizei, names: *mut GLuint) => |c| {
         let v = c.gl.gen_textures(n);

@@ -325,6 +325,57 @@ mod tests {
     }
 
     #[test]
+    fn multisample_texture_and_renderbuffer_resolve() {
+        let mut ctx = Context::new(4, 4);
+        let tex = ctx.gen_textures(1)[0];
+        ctx.bind_texture(GL_TEXTURE_2D_MULTISAMPLE, tex);
+        ctx.tex_image_multisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, [4, 4], true);
+        let rb = ctx.gen_renderbuffers(1)[0];
+        ctx.bind_renderbuffer(GL_RENDERBUFFER, rb);
+        ctx.renderbuffer_storage_multisample(GL_RENDERBUFFER, 4, GL_DEPTH_COMPONENT24, 4, 4);
+        let fb = ctx.gen_framebuffers(1)[0];
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+        ctx.framebuffer_texture_2d(
+            GL_FRAMEBUFFER,
+            GL_COLOR_ATTACHMENT0,
+            GL_TEXTURE_2D_MULTISAMPLE,
+            tex,
+            0,
+        );
+        ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb);
+        assert_eq!(
+            ctx.check_framebuffer_status(GL_FRAMEBUFFER),
+            GL_FRAMEBUFFER_COMPLETE
+        );
+        assert_eq!(ctx.get_integerv(GL_SAMPLES), vec![4]);
+        assert_eq!(ctx.get_integerv(GL_SAMPLE_BUFFERS), vec![1]);
+        ctx.clear_color(1.0, 0.0, 0.0, 1.0);
+        ctx.clear(GL_COLOR_BUFFER_BIT);
+        ctx.bind_framebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        // A resolve must not scale.
+        ctx.blit_framebuffer([0, 0, 4, 4], [0, 0, 2, 2], GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.blit_framebuffer([0, 0, 4, 4], [0, 0, 4, 4], GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        ctx.bind_framebuffer(GL_READ_FRAMEBUFFER, 0);
+        assert_eq!(ctx.read_pixels_f32(1, 1, 1, 1)[0], [1.0, 0.0, 0.0, 1.0]);
+        // A single-sampled depth buffer beside it is incomplete.
+        let rb1 = ctx.gen_renderbuffers(1)[0];
+        ctx.bind_renderbuffer(GL_RENDERBUFFER, rb1);
+        ctx.renderbuffer_storage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, 4, 4);
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+        ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb1);
+        assert_eq!(
+            ctx.check_framebuffer_status(GL_FRAMEBUFFER),
+            GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE
+        );
+        ctx.tex_image_multisample(GL_TEXTURE_2D_MULTISAMPLE, 8, GL_RGBA8, [4, 4], true);
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.tex_image_multisample(GL_TEXTURE_2D, 4, GL_RGBA8, [4, 4], true);
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    }
+
+    #[test]
     fn errors() {
         let mut ctx = Context::new(4, 4);
         ctx.blit_framebuffer([0, 0, 1, 1], [0, 0, 1, 1], 0x1, GL_NEAREST);

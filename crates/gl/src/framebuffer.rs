@@ -3,7 +3,8 @@
 //! (glCheckFramebufferStatus) and the draw/read buffer selection
 //! (glDrawBuffers, glDrawBuffer, glReadBuffer).
 //!
-//! Multisample renderbuffers (glRenderbufferStorageMultisample, up to
+//! Multisample renderbuffers and textures (glRenderbufferStorageMultisample,
+//! glTexImage2DMultisample, up to
 //! [`MAX_SAMPLES`]) keep one value per pixel: every sample of a pixel sits
 //! at its centre, a placement GL leaves to the implementation (GL 3.3
 //! §3.3.1), so coverage and shading equal single-sample rendering and a
@@ -152,6 +153,18 @@ impl Context {
         self.framebuffer_samples(self.objects.draw_framebuffer)
     }
 
+    /// The sample count of one attached image (0: single-sampled).
+    fn attachment_samples(&self, a: &Attachment) -> i32 {
+        match a {
+            Attachment::Renderbuffer(rb) => {
+                self.objects.renderbuffers.get(rb).map_or(0, |r| r.samples)
+            }
+            Attachment::Texture { texture, .. } => {
+                self.objects.textures.get(texture).map_or(0, |t| t.samples)
+            }
+        }
+    }
+
     /// The sample count of framebuffer object `name` (0: single-sampled).
     pub(crate) fn framebuffer_samples(&self, name: u32) -> i32 {
         let Some(f) = self.objects.framebuffers.get(&name) else {
@@ -162,13 +175,72 @@ impl Context {
             .flatten()
             .chain(f.depth.iter())
             .chain(f.stencil.iter())
-            .filter_map(|a| match a {
-                Attachment::Renderbuffer(rb) => self.objects.renderbuffers.get(rb),
-                Attachment::Texture { .. } => None,
-            })
-            .map(|r| r.samples)
+            .map(|a| self.attachment_samples(a))
             .max()
             .unwrap_or(0)
+    }
+
+    /// glTexImage2DMultisample / glTexImage3DMultisample (GL 3.2):
+    /// `size` is `[w, h]` or `[w, h, layers]`. The image keeps one value
+    /// per texel (see the module docs); `fixed_locations` holds either
+    /// way, every sample sitting at the texel centre.
+    pub fn tex_image_multisample<const D: usize>(
+        &mut self,
+        target: u32,
+        samples: i32,
+        internal: u32,
+        size: [i32; D],
+        _fixed_locations: bool,
+    ) {
+        let want = if D == 2 {
+            GL_TEXTURE_2D_MULTISAMPLE
+        } else {
+            GL_TEXTURE_2D_MULTISAMPLE_ARRAY
+        };
+        if target != want {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        let renderable = matches!(
+            base_format(internal as i32),
+            Some(GL_RGBA | GL_RGB | GL_RG | GL_RED | GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL)
+        );
+        if !renderable {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        if size.iter().any(|&s| !(0..=MAX_TEXTURE_SIZE).contains(&s)) || samples < 0 {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        if samples > MAX_SAMPLES {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
+        let (w, h) = (size[0], size[1]);
+        let d = if D == 3 { size[2] } else { 1 };
+        let n = (w as usize)
+            .saturating_mul(h as usize)
+            .saturating_mul(d as usize);
+        if n > (1 << 26) {
+            self.set_error(GL_OUT_OF_MEMORY);
+            return;
+        }
+        let unit = self.st.active_texture as usize;
+        let Some(tex) = self.objects.bound_texture_mut(unit, target) else {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        };
+        let img = crate::objects::Image {
+            width: w,
+            height: h,
+            depth: d,
+            internal_format: internal,
+            texels: vec![[0.0; 4]; n],
+        };
+        crate::objects::set_image(tex, 0, 0, img);
+        tex.samples = if samples == 0 { 0 } else { MAX_SAMPLES };
+        tex.generation = tex.generation.wrapping_add(1);
     }
 
     /// glRenderbufferStorage(EXT).
@@ -619,12 +691,7 @@ impl Context {
             .flatten()
             .chain(f.depth.iter())
             .chain(f.stencil.iter())
-            .map(|a| match a {
-                Attachment::Renderbuffer(rb) => {
-                    self.objects.renderbuffers.get(rb).map_or(0, |r| r.samples)
-                }
-                Attachment::Texture { .. } => 0,
-            })
+            .map(|a| self.attachment_samples(a))
             .collect();
         if samples.iter().any(|&n| n != samples[0]) {
             return GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE;

@@ -164,7 +164,10 @@ impl Context {
             GL_MAX_TEXTURE_LOD_BIAS => flt(&[16.0]),
             GL_SUBPIXEL_BITS => int(&[8]),
             GL_NUM_COMPRESSED_TEXTURE_FORMATS => int(&[0]),
-            GL_MAX_SAMPLES => int(&[crate::framebuffer::MAX_SAMPLES as i64]),
+            GL_MAX_SAMPLES
+            | GL_MAX_COLOR_TEXTURE_SAMPLES
+            | GL_MAX_DEPTH_TEXTURE_SAMPLES
+            | GL_MAX_INTEGER_SAMPLES => int(&[crate::framebuffer::MAX_SAMPLES as i64]),
             GL_SAMPLE_BUFFERS | GL_SAMPLES => {
                 let samples = self.draw_framebuffer_samples() as i64;
                 if pname == GL_SAMPLES {

@@ -149,6 +149,9 @@ pub struct TextureObj {
     pub params: TexParams,
     /// A buffer texture's data store (glTexBuffer).
     pub buffer: Option<TexBuffer>,
+    /// A multisample texture's sample count (glTexImage2DMultisample;
+    /// one value per texel is kept, as for multisample renderbuffers).
+    pub samples: i32,
     /// Bumped on every change (for caches).
     pub generation: u64,
 }
@@ -233,7 +236,7 @@ pub struct Objects {
 }
 
 /// Number of texture targets a unit binds.
-pub const TEXTURE_TARGET_COUNT: usize = 8;
+pub const TEXTURE_TARGET_COUNT: usize = 10;
 
 /// Texture targets in binding-table order.
 pub const TEXTURE_TARGETS: [u32; TEXTURE_TARGET_COUNT] = [
@@ -245,6 +248,8 @@ pub const TEXTURE_TARGETS: [u32; TEXTURE_TARGET_COUNT] = [
     GL_TEXTURE_2D_ARRAY,
     GL_TEXTURE_RECTANGLE,
     GL_TEXTURE_BUFFER,
+    GL_TEXTURE_2D_MULTISAMPLE,
+    GL_TEXTURE_2D_MULTISAMPLE_ARRAY,
 ];
 
 pub fn target_index(target: u32) -> Option<usize> {
@@ -330,6 +335,7 @@ pub(crate) fn image_target(target: u32, dims: u32) -> Option<(u32, usize)> {
         (2, GL_TEXTURE_2D) => Some((GL_TEXTURE_2D, 0)),
         (2, GL_TEXTURE_1D_ARRAY) => Some((GL_TEXTURE_1D_ARRAY, 0)),
         (2, GL_TEXTURE_RECTANGLE) => Some((GL_TEXTURE_RECTANGLE, 0)),
+        (2, GL_TEXTURE_2D_MULTISAMPLE) => Some((GL_TEXTURE_2D_MULTISAMPLE, 0)),
         (3, GL_TEXTURE_2D_ARRAY) => Some((GL_TEXTURE_2D_ARRAY, 0)),
         (2, t)
             if (GL_TEXTURE_CUBE_MAP_POSITIVE_X..=GL_TEXTURE_CUBE_MAP_NEGATIVE_Z).contains(&t) =>
