@@ -1,6 +1,6 @@
 //! The draw calls: glDrawArrays, glMultiDrawArrays, glDrawElements,
 //! glDrawRangeElements, their instanced and base-vertex forms (GL 3.3
-//! §2.8.2-2.8.3), primitive restart (§2.8.1, [`crate::restart`]), the
+//! §2.8.2-2.8.3), primitive restart (§2.8.1, the `restart` module), the
 //! glBegin/glEnd vertices, and glClear.
 //!
 //! A draw checks its arguments and the draw framebuffer's completeness,
@@ -172,7 +172,7 @@ impl Context {
     /// glDrawElementsInstancedBaseVertex: the element draws' common
     /// path. With primitive restart on (GL 3.3 §2.8.1), an index equal to
     /// the restart index ends the primitive and starts a new one
-    /// ([`crate::restart`]).
+    /// (the `restart` module).
     pub fn draw_elements_instanced_base_vertex(
         &mut self,
         mode: u32,

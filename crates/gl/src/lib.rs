@@ -71,7 +71,7 @@
 //!   [`param`] (the values of the glFog/glLight/glTexEnv... call families),
 //!   [`attrib_stack`], [`get`] (glGet*), [`occlusion`], [`sync`] (fences),
 //!   [`per_buffer`] (per-draw-buffer blending and masks, glClearBuffer*).
-//! - A draw: [`draw`] (the calls, glClear; [`restart`] splits at
+//! - A draw: [`draw`] (the calls, glClear; `restart` splits at
 //!   primitive-restart indices) puts together [`kernels`],
 //!   [`fetch`], [`pipeline_state`], [`texture_units`] and
 //!   [`render_target`], with [`ff_fragment`] for the fixed-function

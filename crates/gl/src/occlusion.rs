@@ -72,7 +72,7 @@ pub struct QueryObj {
 pub struct Queries {
     pub objects: BTreeMap<u32, QueryObj>,
     pub next: u32,
-    /// The active query of each of [`TARGETS`] (0: none).
+    /// The active query of each of `TARGETS` (0: none).
     pub active: [u32; 5],
     /// The query of the active conditional render (0: none).
     pub condition: u32,

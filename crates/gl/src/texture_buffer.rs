@@ -4,7 +4,7 @@
 //! by `texelFetch` on `samplerBuffer` (and its integer forms).
 //!
 //! Contract: the texels are decoded from the buffer's current contents
-//! at every draw ([`buffer_texels`]), so writes to the buffer show
+//! at every draw (`buffer_texels`), so writes to the buffer show
 //! without re-attaching it; a deleted buffer leaves no texels.
 
 use crate::enums::*;

@@ -16,7 +16,7 @@
 //!   clamping, before clipping, for every primitive the draw assembles, in
 //!   order, each as independent points, lines or triangles (strips, loops
 //!   and fans decomposed, keeping each triangle's winding and the
-//!   provoking vertex's place as [`crate::restart`] does; quads and
+//!   provoking vertex's place as the `restart` module does; quads and
 //!   polygons of the compatibility profile as triangle fans). Each
 //!   component is 4 bytes: a float's bits, or an integer's. Interleaved:
 //!   one record of every varying in order per vertex into binding 0;

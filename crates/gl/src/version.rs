@@ -87,7 +87,7 @@ impl Api {
         (self.major, self.minor) >= (major, minor)
     }
 
-    /// `glGetString(GL_VERSION)`: "<major>.<minor>", then the profile
+    /// `glGetString(GL_VERSION)`: `"MAJOR.MINOR"`, then the profile
     /// from 3.2 on, then the implementation (GL 3.3 §6.1.5).
     pub fn version_string(self) -> String {
         let profile = match (self.at_least(3, 2), self.profile) {

@@ -96,7 +96,7 @@ pub enum ValueKind {
 /// The state a vertex array object holds (GL 3.3 compatibility §2.10,
 /// Table 6.5-6.8): every array and the element-array buffer binding.
 /// The bound object's state lives in [`VertexState`]'s fields; the others
-/// are kept as this ([`crate::vertex_array`]).
+/// are kept as this (the `vertex_array` module).
 #[derive(Clone, Debug, PartialEq)]
 pub struct VaoArrays {
     pub vertex_array: ArrayState,
@@ -183,6 +183,17 @@ pub struct ImmVertex {
     pub generic: [[f32; 4]; MAX_VERTEX_ATTRIBS],
 }
 
+/// What a vertex array object name has.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum VaoSlot {
+    /// Generated, never bound: no state yet.
+    Generated,
+    /// Not bound: its state.
+    Stored(Box<VaoArrays>),
+    /// Bound: its state is in [`VertexState`]'s fields.
+    Bound,
+}
+
 /// Vertex-specification state.
 pub struct VertexState {
     pub color: [f32; 4],
@@ -208,7 +219,7 @@ pub struct VertexState {
     /// The bound vertex array object (0: the default one).
     pub vao: u32,
     /// Every vertex array object name, and the state of those not bound.
-    pub(crate) vaos: std::collections::BTreeMap<u32, crate::vertex_array::VaoSlot>,
+    pub(crate) vaos: std::collections::BTreeMap<u32, VaoSlot>,
     /// glPrimitiveRestartIndex.
     pub restart_index: u32,
 }
@@ -249,7 +260,7 @@ impl VertexState {
             array_buffer: 0,
             element_buffer,
             vao: 0,
-            vaos: [(0, crate::vertex_array::VaoSlot::Bound)].into(),
+            vaos: [(0, VaoSlot::Bound)].into(),
             restart_index: 0,
         }
     }

@@ -318,7 +318,7 @@ pub struct Texture {
     pub integer: bool,
     /// The internal format is an sRGB one (GL 2.1 §3.8.15, EXT_texture_sRGB):
     /// each texel's red, green and blue are decoded to linear before
-    /// filtering ([`srgb_to_linear`]).
+    /// filtering (`srgb_to_linear`).
     pub srgb: bool,
     /// TEXTURE_SWIZZLE_R/G/B/A (GL 3.3 §3.9.8): what each component of a
     /// lookup's result is, from the value after the depth texture mode.
