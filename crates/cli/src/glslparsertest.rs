@@ -206,7 +206,7 @@ fn evaluate(args: &Args) -> Outcome {
         StageGuess::Unsupported(what) => {
             return Outcome::new(
                 Verdict::Skip,
-                format!("{what} shaders need a later OpenGL than 2.1"),
+                format!("{what} shaders need OpenGL 4.0 or later; shaderbox implements up to 3.3"),
             )
         }
         StageGuess::Unknown => {

@@ -237,7 +237,7 @@ impl<'a, G: GlApi> Runner<'a, G> {
         self.check_requirements(script)?;
         if let Some((line, header)) = script.unsupported_sections.first() {
             let msg = format!(
-                "{}:{line}: section {header} needs a later OpenGL than 2.1",
+                "{}:{line}: section {header} needs a pipeline stage shaderbox's shader runner does not run yet",
                 self.file
             );
             self.out(msg);
@@ -833,7 +833,7 @@ impl<'a, G: GlApi> Runner<'a, G> {
             }
             Command::NeedsLaterGl(what) => {
                 let msg = format!(
-                    "{}:{line}: test requires {what}, which shaderbox (OpenGL 2.1) does not implement",
+                    "{}:{line}: test requires {what}, which shaderbox's shader runner does not implement yet",
                     self.file
                 );
                 self.out(msg);
