@@ -6,32 +6,10 @@
 use gl::enums::*;
 use gl::{ArrayData, Context};
 
-const SIZE: i32 = 32;
+mod common;
+use common::program;
 
-fn program(ctx: &mut Context, vs: &str, fs: &str) -> u32 {
-    let p = ctx.create_program();
-    for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
-        let s = ctx.create_shader(kind);
-        ctx.shader_source(s, &[src]);
-        ctx.compile_shader(s);
-        assert_eq!(
-            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
-            1,
-            "{}",
-            ctx.get_shader_info_log(s)
-        );
-        ctx.attach_shader(p, s);
-    }
-    ctx.link_program(p);
-    assert_eq!(
-        ctx.get_programiv(p, GL_LINK_STATUS),
-        1,
-        "{}",
-        ctx.get_program_info_log(p)
-    );
-    ctx.use_program(p);
-    p
-}
+const SIZE: i32 = 32;
 
 /// Draws a triangle strip whose vertices have clip positions `pos` and
 /// the values `val` (a vec4 each) with program `p` (inputs `pos` and,

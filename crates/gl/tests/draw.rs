@@ -3,31 +3,8 @@
 use gl::enums::*;
 use gl::{ArrayData, Context, Param};
 
-fn program(ctx: &mut Context, vs: Option<&str>, fs: Option<&str>) -> u32 {
-    let p = ctx.create_program();
-    for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
-        let Some(src) = src else { continue };
-        let s = ctx.create_shader(kind);
-        ctx.shader_source(s, &[src]);
-        ctx.compile_shader(s);
-        assert_eq!(
-            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
-            1,
-            "{}",
-            ctx.get_shader_info_log(s)
-        );
-        ctx.attach_shader(p, s);
-    }
-    ctx.link_program(p);
-    assert_eq!(
-        ctx.get_programiv(p, GL_LINK_STATUS),
-        1,
-        "{}",
-        ctx.get_program_info_log(p)
-    );
-    ctx.use_program(p);
-    p
-}
+mod common;
+use common::linked_program as program;
 
 /// piglit_draw_rect: a quad from client arrays (positions and texcoords).
 fn draw_rect(ctx: &mut Context, x: f32, y: f32, w: f32, h: f32) {

@@ -6,6 +6,8 @@
 use gl::enums::*;
 use gl::{Api, ArrayData, Context};
 
+mod common;
+
 const W: i32 = 32;
 const H: i32 = 32;
 
@@ -20,28 +22,7 @@ fn program(ctx: &mut Context) -> u32 {
     let fs = "#version 150 compatibility\n\
         flat in int want;\n\
         void main() { gl_FragColor = want == gl_PrimitiveID ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0); }";
-    let p = ctx.create_program();
-    for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
-        let s = ctx.create_shader(kind);
-        ctx.shader_source(s, &[src]);
-        ctx.compile_shader(s);
-        assert_eq!(
-            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
-            1,
-            "{}",
-            ctx.get_shader_info_log(s)
-        );
-        ctx.attach_shader(p, s);
-    }
-    ctx.link_program(p);
-    assert_eq!(
-        ctx.get_programiv(p, GL_LINK_STATUS),
-        1,
-        "{}",
-        ctx.get_program_info_log(p)
-    );
-    ctx.use_program(p);
-    p
+    common::program(ctx, vs, fs)
 }
 
 /// Draws `mode` from vertices `(x, y, expected ID)`, through `indices`

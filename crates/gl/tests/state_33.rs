@@ -5,30 +5,8 @@
 use gl::enums::*;
 use gl::{ArrayData, Context};
 
-fn program(ctx: &mut Context, vs: &str, fs: &str) -> u32 {
-    let p = ctx.create_program();
-    for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
-        let s = ctx.create_shader(kind);
-        ctx.shader_source(s, &[src]);
-        ctx.compile_shader(s);
-        assert_eq!(
-            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
-            1,
-            "{}",
-            ctx.get_shader_info_log(s)
-        );
-        ctx.attach_shader(p, s);
-    }
-    ctx.link_program(p);
-    assert_eq!(
-        ctx.get_programiv(p, GL_LINK_STATUS),
-        1,
-        "{}",
-        ctx.get_program_info_log(p)
-    );
-    ctx.use_program(p);
-    p
-}
+mod common;
+use common::program;
 
 fn read_depth(ctx: &mut Context, x: i32, y: i32) -> f32 {
     let mut b = [0u8; 4];

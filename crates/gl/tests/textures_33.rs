@@ -8,6 +8,8 @@ use gl::enums::*;
 use gl::param::Param;
 use gl::{ArrayData, Context};
 
+mod common;
+
 const VS: &str = "#version 130\n\
     in vec2 pos;\n\
     out vec2 tc;\n\
@@ -21,27 +23,7 @@ const RED: [u8; 4] = [255, 0, 0, 255];
 /// with [`VS`], draws the full quad into an 8×8 context and returns the
 /// pixel at (x, y).
 fn draw(ctx: &mut Context, fs: &str, at: (i32, i32)) -> [u8; 4] {
-    let p = ctx.create_program();
-    for (kind, src) in [(GL_VERTEX_SHADER, VS), (GL_FRAGMENT_SHADER, fs)] {
-        let s = ctx.create_shader(kind);
-        ctx.shader_source(s, &[src]);
-        ctx.compile_shader(s);
-        assert_eq!(
-            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
-            1,
-            "{}",
-            ctx.get_shader_info_log(s)
-        );
-        ctx.attach_shader(p, s);
-    }
-    ctx.link_program(p);
-    assert_eq!(
-        ctx.get_programiv(p, GL_LINK_STATUS),
-        1,
-        "{}",
-        ctx.get_program_info_log(p)
-    );
-    ctx.use_program(p);
+    let p = common::program(ctx, VS, fs);
     let pos = ctx.get_attrib_location(p, "pos");
     assert!(pos >= 0);
     ctx.vertex_attrib_pointer(

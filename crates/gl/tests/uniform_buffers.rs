@@ -6,6 +6,9 @@ use gl::enums::*;
 use gl::uniform_block::INVALID_INDEX;
 use gl::{ArrayData, Context};
 
+mod common;
+use common::program;
+
 const VS: &str = "#version 150\nin vec4 pos;\nvoid main() { gl_Position = pos; }\n";
 const FS: &str = "#version 150
 layout(std140) uniform Colors {
@@ -21,30 +24,6 @@ void main() {
     result = vec4(c.x, c.y * weights[2], (r * vec2(1.0, 0.0)).y, 1.0) + extra.add;
 }
 ";
-
-fn program(ctx: &mut Context, vs: &str, fs: &str) -> u32 {
-    let p = ctx.create_program();
-    for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
-        let s = ctx.create_shader(kind);
-        ctx.shader_source(s, &[src]);
-        ctx.compile_shader(s);
-        assert_eq!(
-            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
-            1,
-            "{}",
-            ctx.get_shader_info_log(s)
-        );
-        ctx.attach_shader(p, s);
-    }
-    ctx.link_program(p);
-    assert_eq!(
-        ctx.get_programiv(p, GL_LINK_STATUS),
-        1,
-        "{}",
-        ctx.get_program_info_log(p)
-    );
-    p
-}
 
 fn f32_bytes(v: &[f32]) -> Vec<u8> {
     v.iter().flat_map(|f| f.to_ne_bytes()).collect()
