@@ -83,7 +83,7 @@ impl Context {
         if mask == 0 || sx0 == sx1 || sy0 == sy1 || dx0 == dx1 || dy0 == dy1 {
             return;
         }
-        let Some(source) = self.read_framebuffer_image() else {
+        let Some(source) = self.read_image().map(|f| f.into_owned()) else {
             return;
         };
         let Some(mut target) = self.draw_target() else {
@@ -147,23 +147,6 @@ impl Context {
             y1 = y1.min(sy.saturating_add(sh));
         }
         (x0, y0, x1.max(x0), y1.max(y0))
-    }
-
-    /// The read framebuffer's read buffer (first color buffer), depth and
-    /// stencil, as a raster framebuffer.
-    fn read_framebuffer_image(&self) -> Option<Framebuffer> {
-        let name = self.objects.read_framebuffer;
-        if name == 0 {
-            return Some(self.fb.clone());
-        }
-        let f = self.objects.framebuffers.get(&name)?.clone();
-        let a = f.read_buffer.wrapping_sub(GL_COLOR_ATTACHMENT0) as usize;
-        let atts = if f.color.get(a).is_some_and(|c| c.is_some()) {
-            vec![a]
-        } else {
-            Vec::new()
-        };
-        Some(self.assemble(name, &f, atts, [None; 8]).fb)
     }
 }
 

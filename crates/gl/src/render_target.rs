@@ -11,6 +11,7 @@ use crate::enums::*;
 use crate::objects::{self, Attachment};
 use crate::Context;
 use raster::{ColorBuffer, ColorFormat, Framebuffer};
+use std::borrow::Cow;
 
 /// A render target assembled for one operation.
 pub(crate) struct Target {
@@ -251,6 +252,24 @@ impl Context {
         }
     }
 
+    /// The read framebuffer as a raster framebuffer: the default one in
+    /// place, or a framebuffer object's read buffer (as its only color
+    /// buffer), depth and stencil images assembled.
+    pub(crate) fn read_image(&self) -> Option<Cow<'_, Framebuffer>> {
+        let name = self.objects.read_framebuffer;
+        if name == 0 {
+            return Some(Cow::Borrowed(&self.fb));
+        }
+        let f = self.objects.framebuffers.get(&name)?.clone();
+        let a = f.read_buffer.wrapping_sub(GL_COLOR_ATTACHMENT0) as usize;
+        let atts = if f.color.get(a).is_some_and(|c| c.is_some()) {
+            vec![a]
+        } else {
+            Vec::new()
+        };
+        Some(Cow::Owned(self.assemble(name, &f, atts, [None; 8]).fb))
+    }
+
     /// The read framebuffer's selected color buffer, depth and stencil
     /// values over a rectangle (bottom row first).
     pub(crate) fn read_block(
@@ -261,21 +280,7 @@ impl Context {
         h: u32,
         what: u32,
     ) -> Option<Vec<[f32; 4]>> {
-        let name = self.objects.read_framebuffer;
-        let read_fb;
-        let fb: &Framebuffer = if name == 0 {
-            &self.fb
-        } else {
-            let f = self.objects.framebuffers.get(&name)?.clone();
-            let a = f.read_buffer.wrapping_sub(GL_COLOR_ATTACHMENT0) as usize;
-            let atts = if f.color.get(a).is_some_and(|c| c.is_some()) {
-                vec![a]
-            } else {
-                Vec::new()
-            };
-            read_fb = self.assemble(name, &f, atts, [None; 8]).fb;
-            &read_fb
-        };
+        let fb = self.read_image()?;
         Some(match what {
             GL_DEPTH_COMPONENT => fb
                 .read_depth(x, y, w, h)
