@@ -8,6 +8,8 @@ use std::ffi::{c_void, CString};
 use std::ptr::null_mut;
 use OSMesa::*;
 
+mod common;
+
 const NAMES: &[&str] = &[
     "glProvokingVertex",
     "glEnablei",
@@ -57,28 +59,12 @@ unsafe fn compat_context(buf: &mut Vec<u8>) -> OSMesaContext {
 }
 
 unsafe fn pixel() -> [u8; 4] {
-    let mut p = [0u8; 4];
-    glReadPixels(
-        4,
-        4,
-        1,
-        1,
-        GL_RGBA,
-        GL_UNSIGNED_BYTE,
-        p.as_mut_ptr() as *mut c_void,
-    );
-    p
+    common::pixel_at(4, 4)
 }
 
 #[test]
 fn entry_points_are_exported_by_name() {
-    for name in NAMES {
-        let c = CString::new(*name).unwrap();
-        assert!(
-            unsafe { OSMesaGetProcAddress(c.as_ptr()) }.is_some(),
-            "{name}"
-        );
-    }
+    common::assert_exported(NAMES);
 }
 
 #[test]

@@ -8,6 +8,8 @@ use std::ffi::{c_void, CString};
 use std::ptr::null_mut;
 use OSMesa::*;
 
+mod common;
+
 const W: i32 = 4;
 const H: i32 = 4;
 
@@ -23,13 +25,7 @@ const NAMES: &[&str] = &[
 
 #[test]
 fn every_new_entry_point_is_exported() {
-    for name in NAMES {
-        let c = CString::new(*name).unwrap();
-        assert!(
-            unsafe { OSMesaGetProcAddress(c.as_ptr()) }.is_some(),
-            "{name}"
-        );
-    }
+    common::assert_exported(NAMES);
 }
 
 #[test]

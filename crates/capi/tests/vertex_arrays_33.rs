@@ -8,6 +8,8 @@ use std::ffi::{c_void, CString};
 use std::ptr::{null, null_mut};
 use OSMesa::*;
 
+mod common;
+
 const W: i32 = 16;
 const H: i32 = 4;
 
@@ -156,13 +158,7 @@ const CORNERS: [f32; 8] = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
 
 #[test]
 fn every_new_entry_point_is_exported() {
-    for name in NAMES {
-        let c = CString::new(*name).unwrap();
-        assert!(
-            unsafe { OSMesaGetProcAddress(c.as_ptr()) }.is_some(),
-            "{name}"
-        );
-    }
+    common::assert_exported(NAMES);
 }
 
 #[test]
