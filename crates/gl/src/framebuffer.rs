@@ -222,7 +222,7 @@ impl Context {
         let n = (w as usize)
             .saturating_mul(h as usize)
             .saturating_mul(d as usize);
-        if n > (1 << 26) {
+        if n > crate::MAX_TEXELS {
             self.set_error(GL_OUT_OF_MEMORY);
             return;
         }

@@ -139,7 +139,9 @@ impl Context {
             GL_MAX_TEXTURE_SIZE | GL_MAX_CUBE_MAP_TEXTURE_SIZE | GL_MAX_RENDERBUFFER_SIZE => {
                 int(&[crate::MAX_TEXTURE_SIZE as i64])
             }
-            GL_MAX_3D_TEXTURE_SIZE | GL_MAX_ARRAY_TEXTURE_LAYERS => int(&[2048]),
+            GL_MAX_3D_TEXTURE_SIZE | GL_MAX_ARRAY_TEXTURE_LAYERS => {
+                int(&[crate::MAX_3D_TEXTURE_SIZE.into()])
+            }
             GL_MAX_RECTANGLE_TEXTURE_SIZE => int(&[crate::MAX_TEXTURE_SIZE as i64]),
             // The texel offsets the lookups take (GL 3.0 §3.8.8: at least
             // −8 to 7); any integer works.

@@ -158,6 +158,14 @@ pub const MAX_VERTEX_ATTRIBS: usize = glsl::limits::MAX_VERTEX_ATTRIBS as usize;
 pub const MAX_DRAW_BUFFERS: usize = glsl::limits::MAX_DRAW_BUFFERS as usize;
 /// Largest texture / renderbuffer / viewport dimension.
 pub const MAX_TEXTURE_SIZE: i32 = 8192;
+/// Largest extent of a three-dimensional image (3D textures, and the
+/// layers and sides of array textures): GL_MAX_3D_TEXTURE_SIZE and
+/// GL_MAX_ARRAY_TEXTURE_LAYERS.
+pub const MAX_3D_TEXTURE_SIZE: i32 = 2048;
+/// Most texels one image or multisample buffer may hold (2^26, 1 GiB of
+/// float RGBA): a larger one is GL_OUT_OF_MEMORY, not an attempted
+/// allocation.
+pub const MAX_TEXELS: usize = 1 << 26;
 
 /// A GL context.
 pub struct Context {

@@ -233,6 +233,9 @@ pub struct Objects {
     pub unpack_buffer: u32,
     /// The GL 3.x buffer targets and indexed binding points.
     pub buffer_targets: BufferTargets,
+    /// The proxy image arrays (GL 3.3 §3.8.15), keyed by the target they
+    /// stand for: level sizes and internal formats, no texels.
+    pub proxies: BTreeMap<u32, TextureObj>,
 }
 
 /// Number of texture targets a unit binds.
@@ -279,6 +282,7 @@ impl Objects {
             pack_buffer: 0,
             unpack_buffer: 0,
             buffer_targets: BufferTargets::default(),
+            proxies: BTreeMap::new(),
         }
     }
 
@@ -346,6 +350,21 @@ pub(crate) fn image_target(target: u32, dims: u32) -> Option<(u32, usize)> {
             ))
         }
         (3, GL_TEXTURE_3D) => Some((GL_TEXTURE_3D, 0)),
+        _ => None,
+    }
+}
+
+/// The texture target a proxy target of a `dims`-dimensional glTexImage
+/// call stands for (GL 3.3 §3.8.15), None for any other target.
+pub(crate) fn proxy_target(target: u32, dims: u32) -> Option<u32> {
+    match (dims, target) {
+        (1, GL_PROXY_TEXTURE_1D) => Some(GL_TEXTURE_1D),
+        (2, GL_PROXY_TEXTURE_2D) => Some(GL_TEXTURE_2D),
+        (2, GL_PROXY_TEXTURE_1D_ARRAY) => Some(GL_TEXTURE_1D_ARRAY),
+        (2, GL_PROXY_TEXTURE_RECTANGLE) => Some(GL_TEXTURE_RECTANGLE),
+        (2, GL_PROXY_TEXTURE_CUBE_MAP) => Some(GL_TEXTURE_CUBE_MAP),
+        (3, GL_PROXY_TEXTURE_3D) => Some(GL_TEXTURE_3D),
+        (3, GL_PROXY_TEXTURE_2D_ARRAY) => Some(GL_TEXTURE_2D_ARRAY),
         _ => None,
     }
 }
@@ -418,6 +437,14 @@ impl Default for FramebufferObj {
 
 /// Stores `img` as level `level` of face `face` (growing the tables) and
 /// bumps the texture's generation.
+/// Makes image `level` of `face` undefined.
+pub(crate) fn clear_image(tex: &mut TextureObj, face: usize, level: usize) {
+    if let Some(slot) = tex.faces.get_mut(face).and_then(|f| f.get_mut(level)) {
+        *slot = None;
+        tex.generation += 1;
+    }
+}
+
 pub(crate) fn set_image(tex: &mut TextureObj, face: usize, level: usize, img: Image) {
     if tex.faces.len() <= face {
         tex.faces.resize(face + 1, Vec::new());

@@ -17,7 +17,8 @@
 use crate::enums::*;
 use crate::mipmap::generate_mipmaps;
 use crate::objects::{
-    image_target, set_image, target_index, Attachment, Image, TextureObj, MAX_LEVELS,
+    clear_image, image_target, proxy_target, set_image, target_index, Attachment, Image,
+    TextureObj, MAX_LEVELS,
 };
 use crate::param::Param;
 use crate::pixel_transfer::{
@@ -27,7 +28,7 @@ use crate::pixel_transfer::{
 use crate::texture_format::{
     base_format, component_info, integer_format, is_depth_format, is_integer_format,
 };
-use crate::{Context, MAX_TEXTURE_SIZE};
+use crate::{Context, MAX_3D_TEXTURE_SIZE, MAX_TEXELS, MAX_TEXTURE_SIZE};
 
 /// The first three of `v`'s entries, `pad` for those it lacks: the
 /// extent or offset of a 1D, 2D or 3D image as a 3D one.
@@ -152,7 +153,13 @@ impl Context {
             return;
         }
         let (dims, size) = (D as u32, extent(size, 1));
-        let Some((bind_target, face)) = image_target(target, dims) else {
+        // A proxy target is checked as the target it stands for, but an
+        // image too large to hold leaves the proxy level empty instead of
+        // setting an error (GL 3.3 §3.8.15).
+        let proxy = proxy_target(target, dims);
+        let Some((bind_target, face)) =
+            proxy.map(|t| (t, 0)).or_else(|| image_target(target, dims))
+        else {
             self.set_error(GL_INVALID_ENUM);
             return;
         };
@@ -188,10 +195,12 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return;
         };
+        let too_large = size.iter().any(|&s| s > MAX_TEXTURE_SIZE)
+            || (dims == 3 && size.iter().any(|&s| s > MAX_3D_TEXTURE_SIZE));
         if !(0..MAX_LEVELS).contains(&level)
-            || size.iter().any(|&s| !(0..=MAX_TEXTURE_SIZE).contains(&s))
+            || size.iter().any(|&s| s < 0)
             || border != 0
-            || (dims == 3 && size.iter().any(|&s| s > 2048))
+            || (too_large && proxy.is_none())
         {
             self.set_error(GL_INVALID_VALUE);
             return;
@@ -230,7 +239,27 @@ impl Context {
             return;
         }
         let (w, h, d) = (size[0] as usize, size[1] as usize, size[2] as usize);
-        if w.saturating_mul(h).saturating_mul(d) > (1 << 26) {
+        let out_of_memory = w.saturating_mul(h).saturating_mul(d) > MAX_TEXELS;
+        if let Some(bind) = proxy {
+            let img = (!too_large && !out_of_memory).then(|| Image {
+                width: size[0],
+                height: size[1],
+                depth: size[2],
+                internal_format: internal as u32,
+                texels: Vec::new(),
+            });
+            let tex = self
+                .objects
+                .proxies
+                .entry(bind)
+                .or_insert_with(|| TextureObj::new(bind));
+            match img {
+                Some(img) => set_image(tex, 0, level as usize, img),
+                None => clear_image(tex, 0, level as usize),
+            }
+            return;
+        }
+        if out_of_memory {
             self.set_error(GL_OUT_OF_MEMORY);
             return;
         }
@@ -501,7 +530,7 @@ impl Context {
     /// glGetTexLevelParameteriv: sizes, internal format, border, component
     /// sizes (8 bits per stored component, 24 for depth), compression.
     pub fn get_tex_level_parameteriv(&mut self, target: u32, level: i32, pname: u32) -> i32 {
-        let Some(img) = self.level_image(target, level) else {
+        let Some(img) = self.level_image(target, level, true) else {
             return 0;
         };
         let info = img.map(|i| {
@@ -580,10 +609,25 @@ impl Context {
     }
 
     /// The image `level` of the texture `target` names (a 1D/2D/3D target
-    /// or a cube face) on the active unit; None with GL_INVALID_ENUM or
-    /// GL_INVALID_VALUE set for a bad target or level, Some(None) for an
-    /// undefined image.
-    fn level_image(&mut self, target: u32, level: i32) -> Option<Option<&Image>> {
+    /// or a cube face) on the active unit, or with `proxies` of a proxy
+    /// target; None with GL_INVALID_ENUM or GL_INVALID_VALUE set for a bad
+    /// target or level, Some(None) for an undefined image.
+    fn level_image(&mut self, target: u32, level: i32, proxies: bool) -> Option<Option<&Image>> {
+        let proxy = (1..=3)
+            .find_map(|dims| proxy_target(target, dims))
+            .filter(|_| proxies);
+        if let Some(bind) = proxy {
+            if !(0..MAX_LEVELS).contains(&level) {
+                self.set_error(GL_INVALID_VALUE);
+                return None;
+            }
+            return Some(
+                self.objects
+                    .proxies
+                    .get(&bind)
+                    .and_then(|t| t.image(0, level as usize)),
+            );
+        }
         let Some((bind, face)) = image_target(target, 2)
             .or_else(|| image_target(target, 1))
             .or_else(|| image_target(target, 3))
@@ -621,7 +665,7 @@ impl Context {
             return Vec::new();
         };
         let align = self.st.pack_alignment.max(1) as usize;
-        let Some(img) = self.level_image(target, level) else {
+        let Some(img) = self.level_image(target, level, false) else {
             return Vec::new();
         };
         let Some(img) = img.cloned() else {

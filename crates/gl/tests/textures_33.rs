@@ -847,3 +847,142 @@ fn level_queries_report_component_sizes_and_types() {
         [11, 10]
     );
 }
+
+/// Proxy targets (GL 3.3 §3.8.15): a supported image sets the proxy level's
+/// sizes and format with no data and no error; one too large empties the
+/// level, also without an error; bad arguments are errors as for the real
+/// target; proxies cannot be bound or read back. VTK's volume mapper asks
+/// `GL_PROXY_TEXTURE_3D` before it uploads a volume.
+#[test]
+fn proxy_textures_report_what_would_be_supported() {
+    let mut ctx = Context::new(8, 8);
+    let q = |ctx: &mut Context, target: u32, pname: u32| {
+        ctx.get_tex_level_parameteriv(target, 0, pname)
+    };
+    ctx.tex_image(
+        GL_PROXY_TEXTURE_3D,
+        0,
+        GL_R32F as i32,
+        [48, 40, 32],
+        0,
+        GL_RED,
+        GL_FLOAT,
+        None,
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_WIDTH), 48);
+    assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_HEIGHT), 40);
+    assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_DEPTH), 32);
+    assert_eq!(
+        q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_INTERNAL_FORMAT),
+        GL_R32F as i32
+    );
+    assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_RED_SIZE), 32);
+    // The real target is untouched.
+    assert_eq!(q(&mut ctx, GL_TEXTURE_3D, GL_TEXTURE_WIDTH), 0);
+
+    // Too large for a 3D texture: the proxy level empties, no error.
+    ctx.tex_image(
+        GL_PROXY_TEXTURE_3D,
+        0,
+        GL_RGBA8 as i32,
+        [4096, 4, 4],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_WIDTH), 0);
+    assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_RED_SIZE), 0);
+    // More texels than an image may hold: also unsupported, not an error.
+    ctx.tex_image(
+        GL_PROXY_TEXTURE_2D_ARRAY,
+        0,
+        GL_RGBA8 as i32,
+        [2048, 2048, 32],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_2D_ARRAY, GL_TEXTURE_WIDTH), 0);
+    ctx.tex_image(
+        GL_PROXY_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        [256, 128],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_2D, GL_TEXTURE_HEIGHT), 128);
+    ctx.tex_image(
+        GL_PROXY_TEXTURE_CUBE_MAP,
+        0,
+        GL_RGBA8 as i32,
+        [64, 64],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_CUBE_MAP, GL_TEXTURE_WIDTH), 64);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+
+    // Errors other than size stay errors.
+    ctx.tex_image(
+        GL_PROXY_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        [-1, 4],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    ctx.tex_image(
+        GL_PROXY_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        [4, 4],
+        0,
+        GL_RGBA,
+        0x1234,
+        None,
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    ctx.tex_image(
+        GL_PROXY_TEXTURE_CUBE_MAP,
+        0,
+        GL_RGBA8 as i32,
+        [64, 32],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    // A 2D proxy target is not a 3D call's target.
+    ctx.tex_image(
+        GL_PROXY_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        [4, 4, 4],
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    // No binding, parameters or image of a proxy.
+    ctx.bind_texture(GL_PROXY_TEXTURE_2D, 1);
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    ctx.get_tex_parameteriv(GL_PROXY_TEXTURE_2D, GL_TEXTURE_MIN_FILTER);
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    ctx.get_tex_image(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE);
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+}
