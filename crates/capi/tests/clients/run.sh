@@ -1,0 +1,21 @@
+#!/bin/sh
+# Real client programs, unmodified, on shaderbox's libOSMesa and on Mesa's
+# (Debian's libosmesa6), images compared by ../python/compare.py with the
+# differential suite's bar: pyrender's OffscreenRenderer, VTK and PyVista
+# through vtkOSOpenGLRenderWindow, GLFW's OSMesa back end; every one asks
+# for an OpenGL 3.2+ core context.
+#   crates/capi/tests/clients/run.sh [VENV]
+# VENV (default TARGET/clients-venv) gets the pip packages of
+# requirements.txt; shaderbox's library is built and offered under every
+# name these programs load (scripts/osmesa-libs.sh).
+set -e
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../../../.." && pwd)
+venv=${1:-${CARGO_TARGET_DIR:-$root/target}/clients-venv}
+[ -x "$venv/bin/python" ] || python3 -m venv "$venv"
+pip="$venv/bin/python -m pip install -q --disable-pip-version-check"
+$pip -r "$here/requirements.txt"
+$pip --no-deps PyOpenGL==3.1.10
+libdir=$(bash "$root/scripts/osmesa-libs.sh" --release)
+"$venv/bin/python" "$here/../python/compare.py" "$libdir" \
+    "$here/pyrender_scenes.py" "$here/vtk_scenes.py" "$here/glfw_core.py"
