@@ -67,6 +67,9 @@ FULL = [
     ("tiny:300000:1024x1024", 2, "300k sub-pixel triangles (geometry-bound)"),
     ("compile:sphere", 2, "compile + link shaders/sphere.{vert,frag}"),
     ("compile:materials", 2, "compile + link the seed materials shaders"),
+    ("core-spheres:20000:1024x1024", 2, "3.3 core: 20,000 instanced impostors, UBO camera"),
+    ("core-mesh:100000:1024x1024", 2, "3.3 core: 100k-triangle VAO mesh, UBO-lit per fragment"),
+    ("core-itex:8:1024x1024", 2, "3.3 core: 8 blended passes of R16UI texelFetch + UBO palette"),
 ]
 QUICK = [
     ("spheres:20000:1024x1024:ortho:none", 2, "20,000 atoms, orthographic (issue bar)"),

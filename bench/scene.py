@@ -16,6 +16,8 @@ own process with its own library. SPEC names the scene (see `build` below):
                                                      an N×N texture)
     tiny:TRIANGLES:WxH                               many sub-pixel triangles
     compile:sphere|materials                         compile + link time
+    core-spheres|core-mesh|core-itex:...             OpenGL 3.3 core scenes
+                                                     (bench/scenes33.py)
 
 A frame is glClear + the scene's draws + glFinish. Warm-up frames (at least
 one, until WARMUP_SECONDS have gone), then
@@ -399,7 +401,22 @@ def build(spec):
         return w, h, lambda: tiny(int(args[0]), w, h)
     if kind == "compile":
         return 64, 64, None
+    import scenes33
+    core = scenes33.build(kind, args, parse_size)
+    if core is not None:
+        return core
     raise SystemExit(f"unknown scene {spec!r}")
+
+
+def create_context(spec):
+    """A compatibility context (OSMesaCreateContextExt), or for the core-*
+    scenes a 3.3 core one (OSMesaCreateContextAttribs, PyOpenGL >= 3.1.10)."""
+    if not spec.startswith("core-"):
+        return osmesa.OSMesaCreateContextExt(osmesa.OSMESA_RGBA, 24, 8, 0, None)
+    attribs = [osmesa.OSMESA_FORMAT, osmesa.OSMESA_RGBA, osmesa.OSMESA_DEPTH_BITS, 24,
+               osmesa.OSMESA_STENCIL_BITS, 8, osmesa.OSMESA_PROFILE, osmesa.OSMESA_CORE_PROFILE,
+               osmesa.OSMESA_CONTEXT_MAJOR_VERSION, 3, osmesa.OSMESA_CONTEXT_MINOR_VERSION, 3, 0]
+    return osmesa.OSMesaCreateContextAttribs((ctypes.c_int * len(attribs))(*attribs), None)
 
 
 def main():
@@ -410,9 +427,9 @@ def main():
     ap.add_argument("--out")
     args = ap.parse_args()
     w, h, setup = build(args.spec)
-    ctx = osmesa.OSMesaCreateContextExt(osmesa.OSMESA_RGBA, 24, 8, 0, None)
+    ctx = create_context(args.spec)
     if not ctx:
-        raise SystemExit("OSMesaCreateContextExt failed")
+        raise SystemExit("creating the OSMesa context failed")
     buf = arrays.GLubyteArray.zeros((h, w, 4))
     if not osmesa.OSMesaMakeCurrent(ctx, buf, GL.GL_UNSIGNED_BYTE, w, h):
         raise SystemExit("OSMesaMakeCurrent failed")
