@@ -11,7 +11,8 @@
 //! arrays, so memory the GL contract does not cover (disabled arrays,
 //! vertices outside the draw) is never touched.
 
-use gl::vertex::{element_size, ArrayState, AttribSource, VertexState};
+use gl::vertex::{ArrayState, AttribSource, VertexState};
+use gl::vertex_format::element_size;
 use gl::ArrayData;
 use std::collections::BTreeMap;
 use std::sync::Arc;

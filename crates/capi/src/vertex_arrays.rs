@@ -71,11 +71,11 @@ fn vertex_attrib_integer(
 /// A packed 2_10_10_10 word's four values (GL 3.3 §2.7), or
 /// GL_INVALID_ENUM for another type.
 fn packed(c: &mut OsContext, ty: GLenum, value: GLuint, normalized: bool) -> Option<[f32; 4]> {
-    if !gl::vertex::is_packed(ty) {
+    if !gl::vertex_format::is_packed(ty) {
         c.gl.record_error(GL_INVALID_ENUM);
         return None;
     }
-    Some(gl::vertex::unpack_2_10_10_10(value, ty, normalized))
+    Some(gl::vertex_format::unpack_2_10_10_10(value, ty, normalized))
 }
 
 gl_entry_points! {

@@ -12,8 +12,9 @@
 //! (glVertexAttribIPointer) and integer current values unconverted.
 
 use crate::enums::*;
-use crate::vertex::{
-    float_view, integer_bits, read_integer_element, ArrayData, AttribSource, ImmVertex, ValueKind,
+use crate::vertex::{ArrayData, AttribSource, ImmVertex, ValueKind};
+use crate::vertex_format::{
+    element_size, float_view, integer_bits, read_element, read_integer_element,
 };
 use crate::Context;
 use std::sync::Arc;
@@ -154,7 +155,7 @@ impl ResolvedAttrib {
         };
         // The component count (or BGRA) as `read_element` takes it.
         let size = a.size.max(1) as usize;
-        let element = crate::vertex::element_size(a.size, a.ty).unwrap_or(16);
+        let element = element_size(a.size, a.ty).unwrap_or(16);
         let convert = match (kind, a.integer) {
             (ValueKind::Float, _) => Convert::Float,
             (_, true) => Convert::Bits,
@@ -205,12 +206,12 @@ impl ResolvedAttrib {
                         return read_integer_element(bytes, at, *size, *ty).map(f32::from_bits)
                     }
                     Convert::FloatToBits(k) => {
-                        let v = crate::vertex::read_element(bytes, at, *size, *ty, *normalized);
+                        let v = read_element(bytes, at, *size, *ty, *normalized);
                         return integer_bits(v, ValueKind::Float, *k).map(f32::from_bits);
                     }
                 }
                 if *ty != GL_FLOAT {
-                    return crate::vertex::read_element(bytes, at, *size, *ty, *normalized);
+                    return read_element(bytes, at, *size, *ty, *normalized);
                 }
                 let n = (*size).min(4);
                 let Some(b) = bytes.get(at..at.saturating_add(4 * n)) else {

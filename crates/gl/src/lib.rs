@@ -66,7 +66,9 @@
 //!   uniforms), [`ffgen`] (fixed-function stages as GLSL).
 //! - State: [`state`] (the fixed-function state, capabilities),
 //!   [`transform`], [`shading`], [`rasterization`], [`per_fragment`],
-//!   [`vertex`] (arrays, current values, glBegin/glEnd),
+//!   [`vertex`] (the vertex state, array pointers, fetch of one element),
+//!   [`vertex_format`] (attribute types and their decoding),
+//!   [`immediate`] (current values, glBegin/glEnd),
 //!   [`vertex_array`] (vertex array objects), [`matrix`],
 //!   [`param`] (the values of the glFog/glLight/glTexEnv... call families),
 //!   [`attrib_stack`], [`get`] (glGet*), [`occlusion`], [`sync`] (fences),
@@ -104,6 +106,7 @@ pub mod ff_fragment;
 pub mod ffgen;
 pub mod framebuffer;
 pub mod get;
+pub mod immediate;
 pub mod kernels;
 pub mod matrix;
 pub mod mipmap;
@@ -136,6 +139,7 @@ pub mod uniform_block;
 pub mod version;
 pub mod vertex;
 pub mod vertex_array;
+pub mod vertex_format;
 
 use enums::*;
 use std::collections::BTreeMap;

@@ -599,7 +599,7 @@ fn half_float_bgra_and_packed_arrays_draw() {
     let bgra: Vec<u8> = [255u8, 0, 51, 255].repeat(4);
     ctx.vertex_attrib_pointer(
         col,
-        gl::vertex::SIZE_BGRA,
+        gl::vertex_format::SIZE_BGRA,
         GL_UNSIGNED_BYTE,
         true,
         0,
