@@ -704,9 +704,18 @@ unsafe fn texture(
             };
             let unit = reg(t.unit);
             let mut sizes = [[0u32; LANES]; 4];
+            // Lanes nearly always ask the same unit and level: ask once.
+            let mut last: Option<(u32, i32, [i32; 3])> = None;
             for l in 0..LANES {
                 if cur & (1 << l) != 0 {
-                    let v = textures.size(unit[l], t.target, lod[l]);
+                    let v = match last {
+                        Some((u, lod_l, v)) if u == unit[l] && lod_l == lod[l] => v,
+                        _ => {
+                            let v = textures.size(unit[l], t.target, lod[l]);
+                            last = Some((unit[l], lod[l], v));
+                            v
+                        }
+                    };
                     for k in 0..3 {
                         sizes[k][l] = v[k] as u32;
                     }

@@ -91,20 +91,36 @@ pub(crate) fn fetch_general(
     req: &FetchRequest,
     out: &mut [[f32; LANES]; 4],
 ) {
+    // The texture and its last complete level, found once per unit: the
+    // lanes nearly always share one, and completeness walks the levels.
+    let mut found: Option<(u32, Option<(&Texture, usize)>)> = None;
     for lane in 0..LANES {
         if req.mask & (1 << lane) == 0 {
             continue;
         }
-        let rgba = fetch_lane(units, req, lane).unwrap_or(MISSING);
+        let unit = req.unit[lane];
+        let complete = match found {
+            Some((u, complete)) if u == unit => complete,
+            _ => {
+                let complete = units
+                    .get(unit as usize)
+                    .and_then(|u| unit_texture(u, req.target))
+                    .and_then(|tex| Some((tex, tex.last_level()?)));
+                found = Some((unit, complete));
+                complete
+            }
+        };
+        let rgba = complete
+            .and_then(|(tex, q)| fetch_lane(tex, q, req, lane))
+            .unwrap_or(MISSING);
         for (o, v) in out.iter_mut().zip(rgba) {
             o[lane] = v;
         }
     }
 }
 
-fn fetch_lane(units: &[TextureUnit], req: &FetchRequest, lane: usize) -> Option<[f32; 4]> {
-    let tex = unit_texture(units.get(req.unit[lane] as usize)?, req.target)?;
-    let q = tex.last_level()?;
+/// Lane `lane`'s texel of `tex`, whose last complete level is `q`.
+fn fetch_lane(tex: &Texture, q: usize, req: &FetchRequest, lane: usize) -> Option<[f32; 4]> {
     let lod = req.lod[lane];
     let level = (tex.base_level as i64).checked_add(lod as i64)?;
     if lod < 0 || level > q as i64 {
