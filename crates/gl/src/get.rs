@@ -60,6 +60,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_explicit_attrib_location",
     "GL_ARB_texture_rg",
     "GL_EXT_texture_sRGB",
+    "GL_ARB_sampler_objects",
 ];
 
 /// The extensions a 3.3 context adds (their GL 3.2–3.3 core features,
@@ -247,6 +248,9 @@ impl Context {
                     _ => 7,
                 };
                 int(&[self.objects.bound.get(unit).map_or(0, |b| b[ti]) as i64])
+            }
+            GL_SAMPLER_BINDING => {
+                int(&[self.objects.bound_samplers.get(unit).copied().unwrap_or(0) as i64])
             }
             GL_VERTEX_ARRAY_SIZE => int(&[self.va.vertex_array.size as i64]),
             GL_VERTEX_ARRAY_TYPE => int(&[self.va.vertex_array.ty as i64]),

@@ -43,8 +43,9 @@ impl Kernels {
 pub struct DrawCache {
     /// Fixed-function stages by generated source.
     pub ff: BTreeMap<String, Result<Arc<exec::Kernel>, String>>,
-    /// Converted textures by (name, target): generation and texture.
-    pub textures: BTreeMap<(u32, u32), (u64, Arc<raster::Texture>)>,
+    /// Converted textures by (texture name, target, bound sampler name or
+    /// 0): the texture's and the sampler's generations, and the texture.
+    pub textures: BTreeMap<(u32, u32, u32), (u64, u64, Arc<raster::Texture>)>,
     /// Why the last draw stopped early, if it did.
     pub error: Option<String>,
 }

@@ -173,6 +173,17 @@ impl TextureObj {
     }
 }
 
+/// A sampler object (GL 3.3 §3.9.2): the sampling half of
+/// [`TexParams`]. Only the sampler state of GL 3.3 Table 6.23 is meaningful
+/// in `params` (filters, wraps, border colour, LOD range and bias, compare
+/// mode and function); the texture-only fields keep their defaults.
+#[derive(Clone, Debug, Default)]
+pub struct SamplerObj {
+    pub params: TexParams,
+    /// Bumped on every change (for caches).
+    pub generation: u64,
+}
+
 /// A renderbuffer object.
 #[derive(Clone, Debug, Default)]
 pub struct RenderbufferObj {
@@ -220,6 +231,12 @@ pub struct Objects {
     pub default_textures: BTreeMap<u32, TextureObj>,
     /// `bound[unit][target index]` ([`TEXTURE_TARGETS`] order).
     pub bound: Vec<[u32; TEXTURE_TARGET_COUNT]>,
+    /// Sampler objects by name (created by glGenSamplers only).
+    pub samplers: BTreeMap<u32, SamplerObj>,
+    pub next_sampler: u32,
+    /// The sampler bound to each texture image unit (0: none, the bound
+    /// textures' own parameters apply).
+    pub bound_samplers: Vec<u32>,
     pub renderbuffers: BTreeMap<u32, RenderbufferObj>,
     pub next_renderbuffer: u32,
     pub bound_renderbuffer: u32,
@@ -269,6 +286,9 @@ impl Objects {
             next_texture: 1,
             default_textures,
             bound: vec![[0; TEXTURE_TARGET_COUNT]; crate::MAX_TEXTURE_IMAGE_UNITS],
+            samplers: BTreeMap::new(),
+            next_sampler: 1,
+            bound_samplers: vec![0; crate::MAX_TEXTURE_IMAGE_UNITS],
             renderbuffers: BTreeMap::new(),
             next_renderbuffer: 1,
             bound_renderbuffer: 0,
@@ -309,6 +329,12 @@ impl Objects {
 
     pub fn texture_by_name(&self, name: u32) -> Option<&TextureObj> {
         self.textures.get(&name)
+    }
+
+    /// The sampler object bound to `unit`, if any.
+    pub fn bound_sampler(&self, unit: usize) -> Option<(u32, &SamplerObj)> {
+        let name = *self.bound_samplers.get(unit)?;
+        self.samplers.get(&name).map(|s| (name, s))
     }
 }
 
