@@ -1,0 +1,196 @@
+//! The GL 3.0–3.3 entry points that complete libOSMesa.so's 3.3 set,
+//! driven as a C program would on a 3.3 core context: sampler objects,
+//! glClampColor, the layer and layered framebuffer attachments, and
+//! dual-source blending; and their lookup by name.
+
+use gl::enums::*;
+use std::ffi::{c_void, CString};
+use std::ptr::null_mut;
+use OSMesa::*;
+
+mod common;
+
+const NAMES: &[&str] = &[
+    "glGenSamplers",
+    "glDeleteSamplers",
+    "glIsSampler",
+    "glBindSampler",
+    "glSamplerParameteri",
+    "glSamplerParameterf",
+    "glSamplerParameteriv",
+    "glSamplerParameterfv",
+    "glSamplerParameterIiv",
+    "glSamplerParameterIuiv",
+    "glGetSamplerParameteriv",
+    "glGetSamplerParameterfv",
+    "glGetSamplerParameterIiv",
+    "glGetSamplerParameterIuiv",
+];
+
+#[test]
+fn entry_points_are_exported_by_name() {
+    common::assert_exported(NAMES);
+}
+
+/// A current 3.3 context of `profile` on an 8×8 RGBA buffer.
+unsafe fn context(buf: &mut Vec<u8>, profile: i32) -> OSMesaContext {
+    *buf = vec![0u8; 8 * 8 * 4];
+    let attribs = [
+        OSMESA_FORMAT,
+        OSMESA_RGBA as i32,
+        OSMESA_DEPTH_BITS,
+        24,
+        OSMESA_PROFILE,
+        profile,
+        OSMESA_CONTEXT_MAJOR_VERSION,
+        3,
+        OSMESA_CONTEXT_MINOR_VERSION,
+        3,
+        0,
+    ];
+    let ctx = OSMesaCreateContextAttribs(attribs.as_ptr(), null_mut());
+    assert!(!ctx.is_null());
+    assert_eq!(
+        OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, 8, 8),
+        OSMesa::GL_TRUE
+    );
+    ctx
+}
+
+/// Links `vs` and `fs`, makes the program current and sets up a
+/// full-window quad in a vertex array object (attribute `pos`).
+unsafe fn program_and_quad(vs: &str, fs: &str) -> u32 {
+    let prog = glCreateProgram();
+    for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
+        let s = glCreateShader(kind);
+        let (ptr, len) = (src.as_ptr() as *const GLchar, src.len() as GLint);
+        glShaderSource(s, 1, &ptr, &len);
+        glCompileShader(s);
+        let mut ok = 0;
+        glGetShaderiv(s, GL_COMPILE_STATUS, &mut ok);
+        assert_eq!(ok, 1, "{src}");
+        glAttachShader(prog, s);
+    }
+    glLinkProgram(prog);
+    let mut ok = 0;
+    glGetProgramiv(prog, GL_LINK_STATUS, &mut ok);
+    assert_eq!(ok, 1);
+    glUseProgram(prog);
+    let mut vao = 0;
+    glGenVertexArrays(1, &mut vao);
+    glBindVertexArray(vao);
+    let mut b = 0;
+    glGenBuffers(1, &mut b);
+    glBindBuffer(GL_ARRAY_BUFFER, b);
+    let quad: [f32; 8] = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
+    glBufferData(
+        GL_ARRAY_BUFFER,
+        32,
+        quad.as_ptr() as *const c_void,
+        GL_STATIC_DRAW,
+    );
+    let name = CString::new("pos").unwrap();
+    let p = glGetAttribLocation(prog, name.as_ptr()) as u32;
+    glVertexAttribPointer(p, 2, GL_FLOAT, 0, 0, std::ptr::null());
+    glEnableVertexAttribArray(p);
+    prog
+}
+
+const VS: &str = "#version 330 core\n\
+    in vec2 pos;\n\
+    void main() { gl_Position = vec4(pos, 0.0, 1.0); }";
+
+#[test]
+fn a_bound_sampler_replaces_the_textures_filter() {
+    unsafe {
+        let mut buf = Vec::new();
+        let ctx = context(&mut buf, OSMESA_CORE_PROFILE);
+        // 2×1 texture, red then green, LINEAR on the texture.
+        let texels: [u8; 8] = [255, 0, 0, 255, 0, 255, 0, 255];
+        let mut t = 0;
+        glGenTextures(1, &mut t);
+        glBindTexture(GL_TEXTURE_2D, t);
+        glTexImage2D(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA8 as i32,
+            2,
+            1,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            texels.as_ptr() as *const c_void,
+        );
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+        let fs = "#version 330 core\n\
+            uniform sampler2D s;\n\
+            out vec4 c;\n\
+            void main() { c = texture(s, vec2(0.4, 0.5)); }";
+        program_and_quad(VS, fs);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        let linear = common::pixel_at(4, 4);
+        assert!(linear[0] > 100 && linear[1] > 30, "{linear:?}");
+
+        let mut s = [0u32; 2];
+        glGenSamplers(2, s.as_mut_ptr());
+        assert_eq!(glIsSampler(s[0]), OSMesa::GL_TRUE);
+        assert_eq!(glIsSampler(0), OSMesa::GL_FALSE);
+        glSamplerParameteri(s[0], GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+        let nearest = [GL_NEAREST as i32];
+        glSamplerParameteriv(s[0], GL_TEXTURE_MAG_FILTER, nearest.as_ptr());
+        glBindSampler(0, s[0]);
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        assert_eq!(common::pixel_at(4, 4), [255, 0, 0, 255]);
+        let mut v = [0i32; 4];
+        glGetIntegerv(GL_SAMPLER_BINDING, v.as_mut_ptr());
+        assert_eq!(v[0], s[0] as i32);
+        // The texture's parameter is still LINEAR.
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, v.as_mut_ptr());
+        assert_eq!(v[0], GL_LINEAR as i32);
+
+        // The parameter forms and queries.
+        glSamplerParameterf(s[1], GL_TEXTURE_MIN_LOD, 2.6);
+        let mut f = [0f32; 4];
+        glGetSamplerParameterfv(s[1], GL_TEXTURE_MIN_LOD, f.as_mut_ptr());
+        assert_eq!(f[0], 2.6);
+        glGetSamplerParameteriv(s[1], GL_TEXTURE_MIN_LOD, v.as_mut_ptr());
+        assert_eq!(v[0], 3);
+        let border = [0.0f32, 1.0, 0.5, 1.0];
+        glSamplerParameterfv(s[1], GL_TEXTURE_BORDER_COLOR, border.as_ptr());
+        glGetSamplerParameterfv(s[1], GL_TEXTURE_BORDER_COLOR, f.as_mut_ptr());
+        assert_eq!(f, border);
+        glGetSamplerParameteriv(s[1], GL_TEXTURE_BORDER_COLOR, v.as_mut_ptr());
+        // Normalized: 1.0 is the largest integer (glGetIntegerv's mapping).
+        assert_eq!((v[1], v[3]), (i32::MAX, i32::MAX));
+        let ints = [0i32, 1, 1, 1];
+        glSamplerParameterIiv(s[1], GL_TEXTURE_BORDER_COLOR, ints.as_ptr());
+        glGetSamplerParameterIiv(s[1], GL_TEXTURE_BORDER_COLOR, v.as_mut_ptr());
+        assert_eq!(v, ints);
+        let wrap = [GL_CLAMP_TO_EDGE];
+        glSamplerParameterIuiv(s[1], GL_TEXTURE_WRAP_T, wrap.as_ptr());
+        let mut u = [0u32; 4];
+        glGetSamplerParameterIuiv(s[1], GL_TEXTURE_WRAP_T, u.as_mut_ptr());
+        assert_eq!(u[0], GL_CLAMP_TO_EDGE);
+        assert_eq!(glGetError(), GL_NO_ERROR);
+
+        // Errors.
+        glBindSampler(0, 999);
+        assert_eq!(glGetError(), GL_INVALID_OPERATION);
+        glBindSampler(1000, s[0]);
+        assert_eq!(glGetError(), GL_INVALID_VALUE);
+        glSamplerParameteri(s[0], GL_TEXTURE_BASE_LEVEL, 1);
+        assert_eq!(glGetError(), GL_INVALID_ENUM);
+        glDeleteSamplers(-1, s.as_ptr());
+        assert_eq!(glGetError(), GL_INVALID_VALUE);
+
+        // Deleting the bound sampler unbinds it: LINEAR again.
+        glDeleteSamplers(2, s.as_ptr());
+        assert_eq!(glIsSampler(s[0]), OSMesa::GL_FALSE);
+        glGetIntegerv(GL_SAMPLER_BINDING, v.as_mut_ptr());
+        assert_eq!(v[0], 0);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        assert_eq!(common::pixel_at(4, 4), linear);
+        OSMesaDestroyContext(ctx);
+    }
+}
