@@ -206,9 +206,34 @@ pub enum Attachment {
         /// Cube face index (0..6) or 0.
         face: u32,
         level: i32,
-        zoffset: i32,
+        /// GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER: the layer of a 3D or
+        /// array texture's level that is the attached image (0 otherwise).
+        layer: i32,
+        /// GL_FRAMEBUFFER_ATTACHMENT_LAYERED: the whole level of a 3D,
+        /// cube map or array texture (glFramebufferTexture). With no
+        /// geometry stage to choose a layer, drawing goes to layer 0 (the
+        /// +X face of a cube map).
+        layered: bool,
     },
     Renderbuffer(u32),
+}
+
+/// Where the 2D image at `layer` of the level image `img` of a texture
+/// of `target` lies in `img.texels`: (first texel, width, height). A layer
+/// of a 3D or 2D array level is one `width × height` slice, a layer of a
+/// 1D array level one row; other targets have layer 0 only. None for a
+/// layer the level does not have.
+pub fn layer_span(target: u32, img: &Image, layer: i32) -> Option<(usize, i32, i32)> {
+    let (w, h) = (img.width.max(0), img.height.max(0));
+    match target {
+        GL_TEXTURE_3D | GL_TEXTURE_2D_ARRAY | GL_TEXTURE_2D_MULTISAMPLE_ARRAY => (0..img.depth)
+            .contains(&layer)
+            .then(|| (layer as usize * (w * h) as usize, w, h)),
+        GL_TEXTURE_1D_ARRAY => (0..h)
+            .contains(&layer)
+            .then(|| (layer as usize * w as usize, w, 1)),
+        _ => (layer == 0).then_some((0, w, h)),
+    }
 }
 
 /// A framebuffer object.
