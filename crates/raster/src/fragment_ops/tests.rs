@@ -58,7 +58,7 @@ fn frag(x: u32, y: u32, z: f32, color: [f32; 4]) -> Fragment {
         y,
         z,
         back_facing: false,
-        colors: [color; MAX_DRAW_BUFFERS],
+        colors: [color; FRAG_COLORS],
     }
 }
 
@@ -481,8 +481,7 @@ fn quick_ops_match_the_general_ones() {
                     y: next() % 14,
                     z: [0.25, 0.5, 0.75, next() as f32 / 16_777_216.0][next() as usize % 4],
                     back_facing: false,
-                    colors: [[0; 4].map(|_| next() as f32 / 16_777_216.0 * 1.4 - 0.2);
-                        MAX_DRAW_BUFFERS],
+                    colors: [[0; 4].map(|_| next() as f32 / 16_777_216.0 * 1.4 - 0.2); FRAG_COLORS],
                 };
                 let want = tests(&mut general, origin, &state, &f);
                 if let Some(index) = want {
