@@ -25,6 +25,12 @@ const NAMES: &[&str] = &[
     "glGetSamplerParameterfv",
     "glGetSamplerParameterIiv",
     "glGetSamplerParameterIuiv",
+    "glClampColor",
+    "glFramebufferTexture3D",
+    "glFramebufferTextureLayer",
+    "glFramebufferTexture",
+    "glBindFragDataLocationIndexed",
+    "glGetFragDataIndex",
 ];
 
 #[test]
@@ -191,6 +197,200 @@ fn a_bound_sampler_replaces_the_textures_filter() {
         assert_eq!(v[0], 0);
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
         assert_eq!(common::pixel_at(4, 4), linear);
+        OSMesaDestroyContext(ctx);
+    }
+}
+
+#[test]
+fn clamp_color_and_layer_attachments() {
+    unsafe {
+        let mut buf = Vec::new();
+        let ctx = context(&mut buf, OSMESA_CORE_PROFILE);
+        let mut v = [0i32; 4];
+        glGetIntegerv(GL_CLAMP_READ_COLOR, v.as_mut_ptr());
+        assert_eq!(v[0], GL_FIXED_ONLY as i32);
+        // A core context has no fragment clamping target.
+        glClampColor(GL_CLAMP_FRAGMENT_COLOR, gl::enums::GL_TRUE);
+        assert_eq!(glGetError(), GL_INVALID_ENUM);
+
+        // Layer 1 of a 2×2×2 RGBA32F array texture as the colour buffer.
+        let mut t = 0;
+        glGenTextures(1, &mut t);
+        glBindTexture(GL_TEXTURE_2D_ARRAY, t);
+        glTexImage3D(
+            GL_TEXTURE_2D_ARRAY,
+            0,
+            GL_RGBA32F as i32,
+            2,
+            2,
+            2,
+            0,
+            GL_RGBA,
+            GL_FLOAT,
+            std::ptr::null(),
+        );
+        let mut fb = 0;
+        glGenFramebuffers(1, &mut fb);
+        glBindFramebuffer(GL_FRAMEBUFFER, fb);
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, t, 0, 1);
+        assert_eq!(
+            glCheckFramebufferStatus(GL_FRAMEBUFFER),
+            GL_FRAMEBUFFER_COMPLETE
+        );
+        glGetFramebufferAttachmentParameteriv(
+            GL_FRAMEBUFFER,
+            GL_COLOR_ATTACHMENT0,
+            GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER,
+            v.as_mut_ptr(),
+        );
+        assert_eq!(v[0], 1);
+        // Out-of-range colours through a float buffer: kept, and read
+        // clamped only when CLAMP_READ_COLOR says so.
+        let fs = "#version 330 core\n\
+            out vec4 c;\n\
+            void main() { c = vec4(2.0, -1.0, 0.5, 1.0); }";
+        program_and_quad(VS, fs);
+        glViewport(0, 0, 2, 2);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        let mut px = [0f32; 4];
+        glReadPixels(
+            0,
+            0,
+            1,
+            1,
+            GL_RGBA,
+            GL_FLOAT,
+            px.as_mut_ptr() as *mut c_void,
+        );
+        assert_eq!(px, [2.0, -1.0, 0.5, 1.0]);
+        glClampColor(GL_CLAMP_READ_COLOR, gl::enums::GL_TRUE);
+        glReadPixels(
+            0,
+            0,
+            1,
+            1,
+            GL_RGBA,
+            GL_FLOAT,
+            px.as_mut_ptr() as *mut c_void,
+        );
+        assert_eq!(px, [1.0, 0.0, 0.5, 1.0]);
+        // Only layer 1 was drawn.
+        let mut all = [0f32; 2 * 2 * 2 * 4];
+        glGetTexImage(
+            GL_TEXTURE_2D_ARRAY,
+            0,
+            GL_RGBA,
+            GL_FLOAT,
+            all.as_mut_ptr() as *mut c_void,
+        );
+        assert_eq!(all[..4], [0.0; 4]);
+        assert_eq!(all[16..20], [2.0, -1.0, 0.5, 1.0]);
+
+        // glFramebufferTexture: a layered attachment.
+        glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, t, 0);
+        glGetFramebufferAttachmentParameteriv(
+            GL_FRAMEBUFFER,
+            GL_COLOR_ATTACHMENT0,
+            GL_FRAMEBUFFER_ATTACHMENT_LAYERED,
+            v.as_mut_ptr(),
+        );
+        assert_eq!(v[0], 1);
+        // glFramebufferTexture3D on a 3D texture's slice; a 2D array is
+        // refused.
+        glFramebufferTexture3D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_3D, t, 0, 0);
+        assert_eq!(glGetError(), GL_INVALID_OPERATION);
+        let mut t3 = 0;
+        glGenTextures(1, &mut t3);
+        glBindTexture(GL_TEXTURE_3D, t3);
+        glTexImage3D(
+            GL_TEXTURE_3D,
+            0,
+            GL_RGBA8 as i32,
+            2,
+            2,
+            3,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            std::ptr::null(),
+        );
+        glFramebufferTexture3D(
+            GL_FRAMEBUFFER,
+            GL_COLOR_ATTACHMENT0,
+            GL_TEXTURE_3D,
+            t3,
+            0,
+            2,
+        );
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        assert_eq!(
+            glCheckFramebufferStatus(GL_FRAMEBUFFER),
+            GL_FRAMEBUFFER_COMPLETE
+        );
+        glClearColor(0.0, 1.0, 0.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        let mut bytes = [0u8; 2 * 2 * 3 * 4];
+        glGetTexImage(
+            GL_TEXTURE_3D,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            bytes.as_mut_ptr() as *mut c_void,
+        );
+        assert_eq!(bytes[..4], [0, 0, 0, 0]);
+        assert_eq!(bytes[32..36], [0, 255, 0, 255]);
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        OSMesaDestroyContext(ctx);
+    }
+}
+
+#[test]
+fn dual_source_blending_through_the_c_abi() {
+    unsafe {
+        let mut buf = Vec::new();
+        let ctx = context(&mut buf, OSMESA_CORE_PROFILE);
+        let mut v = [0i32; 4];
+        glGetIntegerv(GL_MAX_DUAL_SOURCE_DRAW_BUFFERS, v.as_mut_ptr());
+        assert_eq!(v[0], 1);
+        let fs = "#version 330 core\n\
+            out vec4 a;\n\
+            out vec4 b;\n\
+            void main() { a = vec4(1.0, 0.0, 0.0, 1.0); b = vec4(0.0, 1.0, 0.0, 1.0); }";
+        let prog = glCreateProgram();
+        for (kind, src) in [(GL_VERTEX_SHADER, VS), (GL_FRAGMENT_SHADER, fs)] {
+            let s = glCreateShader(kind);
+            let (ptr, len) = (src.as_ptr() as *const GLchar, src.len() as GLint);
+            glShaderSource(s, 1, &ptr, &len);
+            glCompileShader(s);
+            glAttachShader(prog, s);
+        }
+        let (a, b) = (CString::new("a").unwrap(), CString::new("b").unwrap());
+        glBindFragDataLocationIndexed(prog, 0, 0, a.as_ptr());
+        glBindFragDataLocationIndexed(prog, 0, 1, b.as_ptr());
+        glBindFragDataLocationIndexed(prog, 1, 1, b.as_ptr());
+        assert_eq!(glGetError(), GL_INVALID_VALUE);
+        glLinkProgram(prog);
+        assert_eq!(glGetFragDataIndex(prog, b.as_ptr()), 1);
+        assert_eq!(glGetFragDataIndex(prog, a.as_ptr()), 0);
+        assert_eq!(glGetFragDataLocation(prog, b.as_ptr()), 0);
+        // Draw with the quad set up by the helper's program, then switch.
+        program_and_quad(VS, fs);
+        glUseProgram(prog);
+        glClearColor(0.0, 0.0, 1.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glEnable(GL_BLEND);
+        // a + dst · b: red plus the blue background's green (none).
+        glBlendFunc(GL_ONE, GL_SRC1_COLOR);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        assert_eq!(common::pixel_at(4, 4), [255, 0, 0, 255]);
+        // a · (1 - b) + dst · b: red from a, the background's green kept
+        // through b, its blue dropped.
+        glClearColor(0.0, 1.0, 1.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glBlendFunc(GL_ONE_MINUS_SRC1_COLOR, GL_SRC1_COLOR);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        assert_eq!(common::pixel_at(4, 4), [255, 255, 0, 255]);
+        assert_eq!(glGetError(), GL_NO_ERROR);
         OSMesaDestroyContext(ctx);
     }
 }
