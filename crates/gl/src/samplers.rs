@@ -6,9 +6,11 @@
 //! state (GL 3.3 Table 6.23) of every texture that unit samples, in place
 //! of the texture's own ([`crate::texture_units`] builds raster's textures
 //! from both); the texture's parameters stay as they were and queryable.
-//! Errors are GL 3.3's: a name glGenSamplers did not return (or since
-//! deleted) is GL_INVALID_OPERATION for glBindSampler and GL_INVALID_VALUE
-//! for the parameter calls and queries; a unit past
+//! Errors: a name glGenSamplers did not return (or since deleted) is
+//! GL_INVALID_OPERATION for glBindSampler and for the parameter calls and
+//! queries (the GL 3.3 text says GL_INVALID_VALUE for the latter; GL 4.x
+//! and Mesa answer GL_INVALID_OPERATION, which programs are tested
+//! against); a unit past
 //! GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS is GL_INVALID_VALUE; a pname that is
 //! not sampler state is GL_INVALID_ENUM; a bad value gets glTexParameter's
 //! error. Deleting a bound sampler unbinds it from every unit.
@@ -82,10 +84,10 @@ impl Context {
         self.objects.bound_samplers[unit as usize] = sampler;
     }
 
-    /// The sampler `sampler`'s object, or GL_INVALID_VALUE.
+    /// The sampler `sampler`'s object, or GL_INVALID_OPERATION.
     fn sampler_mut(&mut self, sampler: u32) -> Option<&mut SamplerObj> {
         if !self.objects.samplers.contains_key(&sampler) {
-            self.set_error(GL_INVALID_VALUE);
+            self.set_error(GL_INVALID_OPERATION);
             return None;
         }
         self.objects.samplers.get_mut(&sampler)
@@ -126,7 +128,7 @@ impl Context {
             return Vec::new();
         };
         let p: TexParams = s.params;
-        let v = match pname {
+        match pname {
             GL_TEXTURE_WRAP_S => vec![p.wrap[0] as f32],
             GL_TEXTURE_WRAP_T => vec![p.wrap[1] as f32],
             GL_TEXTURE_WRAP_R => vec![p.wrap[2] as f32],
@@ -140,10 +142,9 @@ impl Context {
             GL_TEXTURE_COMPARE_FUNC => vec![p.compare_func as f32],
             _ => {
                 self.set_error(GL_INVALID_ENUM);
-                return Vec::new();
+                Vec::new()
             }
-        };
-        v
+        }
     }
 }
 
