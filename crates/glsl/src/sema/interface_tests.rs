@@ -511,6 +511,19 @@ fn fragment_output_index_needs_a_location() {
     );
     ok(&f);
     assert_eq!(global(&f, "c").index, Some(0));
+    // GL_ARB_blend_func_extended is accepted (and defined) beside the
+    // explicit-location extension that brings `layout(index)` to 1.50.
+    let f = frag(
+        "#version 150\n\
+         #extension GL_ARB_blend_func_extended : require\n\
+         #extension GL_ARB_explicit_attrib_location : require\n\
+         #ifndef GL_ARB_blend_func_extended\n\
+         #error not defined\n\
+         #endif\n\
+         layout(location = 0, index = 1) out vec4 c; void main() { c = vec4(1); }",
+    );
+    ok(&f);
+    assert_eq!(global(&f, "c").index, Some(1));
     fails(
         &frag(&format!(
             "{ext}layout(index = 1) out vec4 c; void main() {{}}"
