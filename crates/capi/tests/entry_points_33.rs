@@ -394,3 +394,156 @@ fn dual_source_blending_through_the_c_abi() {
         OSMesaDestroyContext(ctx);
     }
 }
+
+/// Hostile arguments to every new entry point (bad enums, stale and
+/// unknown names, negative and huge values, null pointers) on a 3.3
+/// compatibility context: each records an error or succeeds, none
+/// panics (no panic caught at the C boundary), and drawing still works
+/// afterwards.
+#[test]
+fn hostile_arguments_never_crash() {
+    unsafe {
+        let mut buf = Vec::new();
+        let ctx = context(&mut buf, OSMESA_COMPAT_PROFILE);
+        let ints = [-1, 0, 1, 2, 3, 7, 1000, i32::MAX, i32::MIN];
+        let enums = [
+            0,
+            0xdead,
+            GL_TEXTURE_2D,
+            GL_TEXTURE_3D,
+            GL_TEXTURE_2D_ARRAY,
+            GL_TEXTURE_MIN_FILTER,
+            GL_TEXTURE_BORDER_COLOR,
+            GL_TEXTURE_WRAP_R,
+            GL_TEXTURE_COMPARE_FUNC,
+            GL_FRAMEBUFFER,
+            GL_READ_FRAMEBUFFER,
+            GL_COLOR_ATTACHMENT0,
+            GL_DEPTH_STENCIL_ATTACHMENT,
+            GL_CLAMP_READ_COLOR,
+            GL_CLAMP_FRAGMENT_COLOR,
+            GL_FIXED_ONLY,
+            GL_NEAREST,
+            GL_REPEAT,
+        ];
+        let mut names = vec![0u32, 1, 2, 12345];
+        let mut s = [0u32; 3];
+        glGenSamplers(3, s.as_mut_ptr());
+        names.extend(s);
+        let mut t = [0u32; 3];
+        glGenTextures(3, t.as_mut_ptr());
+        glBindTexture(GL_TEXTURE_3D, t[0]);
+        glTexImage3D(
+            GL_TEXTURE_3D,
+            0,
+            GL_RGBA8 as i32,
+            2,
+            2,
+            2,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            std::ptr::null(),
+        );
+        glBindTexture(GL_TEXTURE_2D_ARRAY, t[1]);
+        glTexImage3D(
+            GL_TEXTURE_2D_ARRAY,
+            0,
+            GL_RGBA8 as i32,
+            2,
+            2,
+            2,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            std::ptr::null(),
+        );
+        names.extend(t);
+        let mut fb = 0;
+        glGenFramebuffers(1, &mut fb);
+        let name = CString::new("c").unwrap();
+        let prog = glCreateProgram();
+        let mut out = [0u8; 64];
+        let op = out.as_mut_ptr();
+        let mut x: u64 = 0x5eed;
+        let mut next = || {
+            x = x
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (x >> 33) as usize
+        };
+        for step in 0..20_000 {
+            let (e, e2) = (enums[next() % enums.len()], enums[next() % enums.len()]);
+            let n = names[next() % names.len()];
+            let (a, b) = (ints[next() % ints.len()], ints[next() % ints.len()]);
+            if step % 500 == 0 {
+                glBindFramebuffer(GL_FRAMEBUFFER, if next() % 2 == 0 { fb } else { 0 });
+            }
+            match next() % 16 {
+                0 => glBindSampler(a as u32, n),
+                1 => glSamplerParameteri(n, e, e2 as i32),
+                2 => glSamplerParameterf(n, e, f32::NAN),
+                3 => glSamplerParameterfv(
+                    n,
+                    e,
+                    if a < 0 {
+                        std::ptr::null()
+                    } else {
+                        op as *const f32
+                    },
+                ),
+                4 => glSamplerParameterIiv(n, e, op as *const i32),
+                5 => glSamplerParameterIuiv(n, e, op as *const u32),
+                6 => glGetSamplerParameteriv(n, e, op as *mut i32),
+                7 => glGetSamplerParameterfv(n, e, if b < 0 { null_mut() } else { op as *mut f32 }),
+                8 => glGetSamplerParameterIiv(n, e, op as *mut i32),
+                9 => glGetSamplerParameterIuiv(n, e, op as *mut u32),
+                10 => glDeleteSamplers(b.clamp(-1, 2), [n, n].as_ptr()),
+                11 => glClampColor(e, e2),
+                12 => glFramebufferTexture3D(e, e2, enums[next() % enums.len()], n, a, b),
+                13 => glFramebufferTextureLayer(e, e2, n, a, b),
+                14 => glFramebufferTexture(e, e2, n, a),
+                _ => {
+                    glBindFragDataLocationIndexed(prog, a as u32, b as u32, name.as_ptr());
+                    glGetFragDataIndex(
+                        n,
+                        if a < 0 {
+                            std::ptr::null()
+                        } else {
+                            name.as_ptr()
+                        },
+                    );
+                }
+            }
+            // A draw now and then with whatever was bound.
+            if step % 1000 == 0 {
+                glBegin(GL_TRIANGLES);
+                glVertex2f(-1.0, -1.0);
+                glVertex2f(1.0, -1.0);
+                glVertex2f(0.0, 1.0);
+                glEnd();
+            }
+        }
+        while glGetError() != GL_NO_ERROR {}
+        assert_eq!(OSMesa::context::caught_panics(), 0);
+        // The context still draws.
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glUseProgram(0);
+        for u in 0..16 {
+            glBindSampler(u, 0);
+        }
+        glDisable(GL_TEXTURE_2D);
+        glClearColor(0.0, 0.0, 0.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glColor4f(0.0, 1.0, 0.0, 1.0);
+        glBegin(GL_QUADS);
+        glVertex2f(-1.0, -1.0);
+        glVertex2f(1.0, -1.0);
+        glVertex2f(1.0, 1.0);
+        glVertex2f(-1.0, 1.0);
+        glEnd();
+        assert_eq!(common::pixel_at(4, 4), [0, 255, 0, 255]);
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        OSMesaDestroyContext(ctx);
+    }
+}
