@@ -78,6 +78,29 @@ fn float_buffers_are_clamped_as_clamp_color_says() {
 }
 
 #[test]
+fn push_and_pop_attrib_restore_the_clamps() {
+    let mut ctx = Context::with_api(4, 4, gl::Api::GL33_COMPAT);
+    ctx.push_attrib(GL_COLOR_BUFFER_BIT | GL_LIGHTING_BIT);
+    ctx.clamp_color(GL_CLAMP_READ_COLOR, GL_TRUE);
+    ctx.clamp_color(GL_CLAMP_FRAGMENT_COLOR, GL_FALSE);
+    ctx.clamp_color(GL_CLAMP_VERTEX_COLOR, GL_FIXED_ONLY);
+    ctx.pop_attrib();
+    assert_eq!(
+        ctx.get_integerv(GL_CLAMP_READ_COLOR),
+        vec![GL_FIXED_ONLY as i32]
+    );
+    assert_eq!(
+        ctx.get_integerv(GL_CLAMP_FRAGMENT_COLOR),
+        vec![GL_FIXED_ONLY as i32]
+    );
+    assert_eq!(
+        ctx.get_integerv(GL_CLAMP_VERTEX_COLOR),
+        vec![GL_TRUE as i32]
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+}
+
+#[test]
 fn clamp_color_errors() {
     let mut ctx = Context::with_api(4, 4, gl::Api::GL33_CORE);
     ctx.clamp_color(GL_CLAMP_READ_COLOR, GL_RED);
