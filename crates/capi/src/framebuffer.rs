@@ -12,6 +12,10 @@ use gl::enums::*;
 use std::ffi::c_void;
 
 gl_entry_points! {
+    // ---- colour clamping (GL 3.0 §3.7.5, §4.3.2) ----
+    [list] fn glClampColor(target: GLenum, clamp: GLenum) => |c| { c.gl.clamp_color(target, clamp) }
+    [list] fn glClampColorARB(target: GLenum, clamp: GLenum) => |c| { c.gl.clamp_color(target, clamp) }
+
     // ---- clearing and masks ----
     [list] fn glClearColor(r: GLclampf, g: GLclampf, b: GLclampf, a: GLclampf) => |c| {
         c.gl.clear_color(r, g, b, a)

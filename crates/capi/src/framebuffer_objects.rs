@@ -92,6 +92,20 @@ gl_entry_points! {
     fn glFramebufferTexture1DEXT(
         target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint
     ) => |c| { c.gl.framebuffer_texture_1d(target, attachment, textarget, texture, level) }
+    fn glFramebufferTexture3D(
+        target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint,
+        layer: GLint
+    ) => |c| { c.gl.framebuffer_texture_3d(target, attachment, textarget, texture, level, layer) }
+    fn glFramebufferTexture3DEXT(
+        target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint,
+        layer: GLint
+    ) => |c| { c.gl.framebuffer_texture_3d(target, attachment, textarget, texture, level, layer) }
+    fn glFramebufferTextureLayer(
+        target: GLenum, attachment: GLenum, texture: GLuint, level: GLint, layer: GLint
+    ) => |c| { c.gl.framebuffer_texture_layer(target, attachment, texture, level, layer) }
+    fn glFramebufferTexture(
+        target: GLenum, attachment: GLenum, texture: GLuint, level: GLint
+    ) => |c| { c.gl.framebuffer_texture(target, attachment, texture, level) }
     fn glIsRenderbuffer(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_renderbuffer(name) as GLboolean }
     fn glIsRenderbufferEXT(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_renderbuffer(name) as GLboolean }
     fn glGetRenderbufferParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) => |c| {

@@ -140,6 +140,17 @@ gl_entry_points! {
             None => -1,
         }
     }
+    fn glBindFragDataLocationIndexed(
+        program: GLuint, color: GLuint, index: GLuint, name: *const GLchar
+    ) => |c| {
+        if let Some(n) = cstr(name) { c.gl.bind_frag_data_location_indexed(program, color, index, &n) }
+    }
+    fn glGetFragDataIndex(program: GLuint, name: *const GLchar) -> GLint [-1] => |c| {
+        match cstr(name) {
+            Some(n) => c.gl.get_frag_data_index(program, &n),
+            None => -1,
+        }
+    }
     fn glTransformFeedbackVaryings(
         program: GLuint, count: GLsizei, varyings: *const *const GLchar, mode: GLenum
     ) => |c| {

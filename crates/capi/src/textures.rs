@@ -21,7 +21,79 @@ fn tex_parameter_count(pname: GLenum) -> i64 {
     }
 }
 
+/// A float sampler parameter as glGetSamplerParameteriv returns it: the
+/// border colour's components map [-1, 1] onto the integer range (GL 3.3
+/// §6.1.2), the LODs round to the nearest integer, enums are exact.
+fn sampler_value_as_int(pname: GLenum, x: f32) -> GLint {
+    if pname == GL_TEXTURE_BORDER_COLOR {
+        let c = x.clamp(-1.0, 1.0) as f64;
+        ((c * 4294967295.0 - 1.0) / 2.0).round() as i64 as GLint
+    } else {
+        x.round() as GLint
+    }
+}
+
 gl_entry_points! {
+    // ---- sampler objects (GL 3.3 §3.8.2) ----
+    fn glGenSamplers(n: GLsizei, names: *mut GLuint) => |c| {
+        let v = c.gl.gen_samplers(n);
+        wr(names, &v);
+    }
+    fn glDeleteSamplers(n: GLsizei, names: *const GLuint) => |c| {
+        if n < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        c.gl.delete_samplers(&rd_vec(names, n as i64));
+    }
+    fn glIsSampler(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_sampler(name) as GLboolean }
+    fn glBindSampler(unit: GLuint, sampler: GLuint) => |c| { c.gl.bind_sampler(unit, sampler) }
+    fn glSamplerParameteri(s: GLuint, pname: GLenum, v: GLint) => |c| { c.gl.sampler_parameter(s, pname, Param::I(v)) }
+    fn glSamplerParameterf(s: GLuint, pname: GLenum, v: GLfloat) => |c| { c.gl.sampler_parameter(s, pname, Param::F(v)) }
+    fn glSamplerParameteriv(s: GLuint, pname: GLenum, v: *const GLint) => |c| {
+        let n = gl::samplers::sampler_parameter_count(pname).max(1) as i64;
+        if !v.is_null() { c.gl.sampler_parameter(s, pname, Param::Iv(&rd_vec(v, n))) }
+    }
+    fn glSamplerParameterfv(s: GLuint, pname: GLenum, v: *const GLfloat) => |c| {
+        let n = gl::samplers::sampler_parameter_count(pname).max(1) as i64;
+        if !v.is_null() { c.gl.sampler_parameter(s, pname, Param::Fv(&rd_vec(v, n))) }
+    }
+    // The integer forms take the border colour's values as they are (not
+    // normalized), the other parameters as glSamplerParameteriv.
+    fn glSamplerParameterIiv(s: GLuint, pname: GLenum, v: *const GLint) => |c| {
+        if v.is_null() { return; }
+        let vals = rd_vec(v, gl::samplers::sampler_parameter_count(pname).max(1) as i64);
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            let f: Vec<f32> = vals.iter().map(|&x| x as f32).collect();
+            c.gl.sampler_parameter(s, pname, Param::Fv(&f));
+        } else {
+            c.gl.sampler_parameter(s, pname, Param::Iv(&vals));
+        }
+    }
+    fn glSamplerParameterIuiv(s: GLuint, pname: GLenum, v: *const GLuint) => |c| {
+        if v.is_null() { return; }
+        let vals = rd_vec(v, gl::samplers::sampler_parameter_count(pname).max(1) as i64);
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            let f: Vec<f32> = vals.iter().map(|&x| x as f32).collect();
+            c.gl.sampler_parameter(s, pname, Param::Fv(&f));
+        } else {
+            let i: Vec<i32> = vals.iter().map(|&x| x as i32).collect();
+            c.gl.sampler_parameter(s, pname, Param::Iv(&i));
+        }
+    }
+    fn glGetSamplerParameteriv(s: GLuint, pname: GLenum, v: *mut GLint) => |c| {
+        let r: Vec<GLint> = c.gl.get_sampler_parameter(s, pname).iter().map(|&x| sampler_value_as_int(pname, x)).collect();
+        wr(v, &r);
+    }
+    fn glGetSamplerParameterfv(s: GLuint, pname: GLenum, v: *mut GLfloat) => |c| {
+        wr(v, &c.gl.get_sampler_parameter(s, pname));
+    }
+    fn glGetSamplerParameterIiv(s: GLuint, pname: GLenum, v: *mut GLint) => |c| {
+        let r: Vec<GLint> = c.gl.get_sampler_parameter(s, pname).iter().map(|&x| x.round() as GLint).collect();
+        wr(v, &r);
+    }
+    fn glGetSamplerParameterIuiv(s: GLuint, pname: GLenum, v: *mut GLuint) => |c| {
+        let r: Vec<GLuint> = c.gl.get_sampler_parameter(s, pname).iter().map(|&x| x.round() as i64 as GLuint).collect();
+        wr(v, &r);
+    }
+
     fn glTexImage2DMultisample(
         target: GLenum, samples: GLsizei, internal: GLenum, w: GLsizei, h: GLsizei, fixed: GLboolean
     ) => |c| { c.gl.tex_image_multisample(target, samples, internal, [w, h], as_bool(fixed)) }

@@ -25,6 +25,9 @@ pub struct Slot {
     /// `layout(location = N)` of a user fragment output (its draw buffer)
     /// or vertex input.
     pub location: Option<u32>,
+    /// `layout(index = N)` of a user fragment output: 1 is the second
+    /// source colour of its location's draw buffer (dual-source blending).
+    pub index: Option<u32>,
     /// The interpolation qualifier of a varying (`flat`: the provoking
     /// vertex's value, not interpolated).
     pub interpolation: Option<glsl::ir::Interpolation>,

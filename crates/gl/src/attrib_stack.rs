@@ -142,6 +142,10 @@ impl Context {
             st.color_masks = old.color_masks;
             st.clear_color = old.clear_color;
             st.draw_buffers = old.draw_buffers.clone();
+            // GL 3.0 compatibility's colour-buffer group holds glClampColor's
+            // fragment and read clamping.
+            st.clamp_fragment_color = old.clamp_fragment_color;
+            st.clamp_read_color = old.clamp_read_color;
         }
         if has(GL_DEPTH_BUFFER_BIT) {
             st.depth_func = old.depth_func;
@@ -162,6 +166,7 @@ impl Context {
             st.color_material_mode = old.color_material_mode;
             st.shade_model = old.shade_model;
             st.provoking_vertex = old.provoking_vertex;
+            st.clamp_vertex_color = old.clamp_vertex_color;
         }
         if has(GL_LINE_BIT) {
             st.line_width = old.line_width;

@@ -444,7 +444,7 @@ impl Context {
         let Some(mut target) = self.draw_target() else {
             return;
         };
-        let mut state = self.pipeline_state(target.draw_buffers);
+        let mut state = self.pipeline_state(&target);
         state.primitive_ids = ids;
         let fetch = Fetcher::new(self, &vs, immediate, batch);
         let replay = raster::Replay {

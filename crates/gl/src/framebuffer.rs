@@ -20,11 +20,29 @@
 //! the C layer maps both names to the one method here.
 
 use crate::enums::*;
+use crate::objects;
 use crate::objects::{
     delete_names, image_target, Attachment, FramebufferObj, RenderbufferObj, MAX_LEVELS,
 };
 use crate::texture_format::{base_format, is_integer_format};
 use crate::{Context, MAX_TEXTURE_SIZE};
+
+/// GL_MAX_3D_TEXTURE_SIZE and GL_MAX_ARRAY_TEXTURE_LAYERS: the layers a
+/// layer attachment may name.
+const MAX_LAYERS: i32 = 2048;
+
+/// Whether `level` is a level a texture of `target` can have (GL 3.3
+/// §4.4.2: up to log2 of the target's largest size; multisample
+/// textures have level 0 only).
+fn level_ok(target: u32, level: i32) -> bool {
+    match target {
+        GL_TEXTURE_RECTANGLE | GL_TEXTURE_2D_MULTISAMPLE | GL_TEXTURE_2D_MULTISAMPLE_ARRAY => {
+            level == 0
+        }
+        GL_TEXTURE_3D => (0..=MAX_LAYERS.ilog2() as i32).contains(&level),
+        _ => (0..MAX_LEVELS).contains(&level),
+    }
+}
 
 /// A renderbuffer's component sizes in bits: red, green, blue, alpha,
 /// depth, stencil (GL_RENDERBUFFER_*_SIZE).
@@ -432,7 +450,130 @@ impl Context {
                 texture,
                 face: face as u32,
                 level,
-                zoffset: 0,
+                layer: 0,
+                layered: false,
+            }),
+        );
+    }
+
+    /// glFramebufferTexture3D: layer `layer` of level `level` of a 3D
+    /// texture (GL 3.3 §4.4.2; `textarget` must be GL_TEXTURE_3D).
+    pub fn framebuffer_texture_3d(
+        &mut self,
+        target: u32,
+        attachment: u32,
+        textarget: u32,
+        texture: u32,
+        level: i32,
+        layer: i32,
+    ) {
+        if texture != 0 && textarget != GL_TEXTURE_3D {
+            // A texture target, but not this call's; or no target at all.
+            let is_target =
+                objects::target_index(textarget).is_some() || image_target(textarget, 2).is_some();
+            self.set_error(if is_target {
+                GL_INVALID_OPERATION
+            } else {
+                GL_INVALID_ENUM
+            });
+            return;
+        }
+        let tex_target = self.objects.textures.get(&texture).map(|t| t.target);
+        if texture != 0 && tex_target != Some(GL_TEXTURE_3D) {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
+        self.framebuffer_texture_layer(target, attachment, texture, level, layer);
+    }
+
+    /// glFramebufferTextureLayer: layer `layer` of level `level` of a 3D,
+    /// 1D or 2D array (or 2D multisample array) texture (GL 3.3 §4.4.2).
+    pub fn framebuffer_texture_layer(
+        &mut self,
+        target: u32,
+        attachment: u32,
+        texture: u32,
+        level: i32,
+        layer: i32,
+    ) {
+        let Some(fb) = self.attachment_slot(target, attachment) else {
+            return;
+        };
+        if texture == 0 {
+            self.set_attachment(fb, attachment, None);
+            return;
+        }
+        let tex_target = self.objects.textures.get(&texture).map(|t| t.target);
+        let Some(
+            tt @ (GL_TEXTURE_3D
+            | GL_TEXTURE_1D_ARRAY
+            | GL_TEXTURE_2D_ARRAY
+            | GL_TEXTURE_2D_MULTISAMPLE_ARRAY),
+        ) = tex_target
+        else {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        };
+        if !level_ok(tt, level) || !(0..MAX_LAYERS).contains(&layer) {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.set_attachment(
+            fb,
+            attachment,
+            Some(Attachment::Texture {
+                texture,
+                face: 0,
+                level,
+                layer,
+                layered: false,
+            }),
+        );
+    }
+
+    /// glFramebufferTexture: level `level` of a texture; of a 3D, cube map
+    /// or array texture the whole level, a layered attachment (GL 3.3
+    /// §4.4.2, §4.4.7), which draws into layer 0 (there is no geometry
+    /// stage to choose another).
+    pub fn framebuffer_texture(&mut self, target: u32, attachment: u32, texture: u32, level: i32) {
+        let Some(fb) = self.attachment_slot(target, attachment) else {
+            return;
+        };
+        if texture == 0 {
+            self.set_attachment(fb, attachment, None);
+            return;
+        }
+        let Some(tt) = self.objects.textures.get(&texture).map(|t| t.target) else {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        };
+        // A name glGenTextures returned but never bound has no target yet,
+        // hence no images to attach.
+        if tt == 0 || tt == GL_TEXTURE_BUFFER {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
+        if !level_ok(tt, level) {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        let layered = matches!(
+            tt,
+            GL_TEXTURE_3D
+                | GL_TEXTURE_CUBE_MAP
+                | GL_TEXTURE_1D_ARRAY
+                | GL_TEXTURE_2D_ARRAY
+                | GL_TEXTURE_2D_MULTISAMPLE_ARRAY
+        );
+        self.set_attachment(
+            fb,
+            attachment,
+            Some(Attachment::Texture {
+                texture,
+                face: 0,
+                level,
+                layer: 0,
+                layered,
             }),
         );
     }
@@ -550,10 +691,13 @@ impl Context {
                     0
                 }
             }
-            (
-                GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER,
-                Some(Attachment::Texture { zoffset, .. }),
-            ) => zoffset,
+            (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, Some(Attachment::Texture { layer, .. })) => {
+                layer
+            }
+            (GL_FRAMEBUFFER_ATTACHMENT_LAYERED, Some(Attachment::Texture { layered, .. })) => {
+                layered as i32
+            }
+            (GL_FRAMEBUFFER_ATTACHMENT_LAYERED, Some(Attachment::Renderbuffer(_))) => 0,
             (GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, Some(_)) => GL_LINEAR as i32,
             (GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, Some(_)) => GL_UNSIGNED_NORMALIZED as i32,
             _ => {
@@ -601,18 +745,9 @@ impl Context {
     /// Size and internal format of an attachment's image.
     pub(crate) fn attachment_info(&self, a: &Attachment) -> Option<(i32, i32, u32)> {
         match *a {
-            Attachment::Texture {
-                texture,
-                face,
-                level,
-                ..
-            } => {
-                let img = self
-                    .objects
-                    .textures
-                    .get(&texture)?
-                    .image(face as usize, level as usize)?;
-                Some((img.width, img.height, img.internal_format))
+            Attachment::Texture { .. } => {
+                let (img, (_, w, h)) = self.attached_image(a)?;
+                Some((w, h, img.internal_format))
             }
             Attachment::Renderbuffer(rb) => {
                 let r = self.objects.renderbuffers.get(&rb)?;
@@ -621,7 +756,31 @@ impl Context {
         }
     }
 
-    /// Completeness of a framebuffer object (EXT_framebuffer_object §4.4.4).
+    /// A texture attachment's level image and where its attached 2D image
+    /// lies in it ([`objects::layer_span`]; a layered attachment draws
+    /// into its layer 0). None for a renderbuffer, a missing image or a
+    /// layer the level does not have.
+    pub(crate) fn attached_image(
+        &self,
+        a: &Attachment,
+    ) -> Option<(&objects::Image, (usize, i32, i32))> {
+        let Attachment::Texture {
+            texture,
+            face,
+            level,
+            layer,
+            layered,
+        } = *a
+        else {
+            return None;
+        };
+        let t = self.objects.textures.get(&texture)?;
+        let img = t.image(face as usize, level.max(0) as usize)?;
+        let layer = if layered { 0 } else { layer };
+        Some((img, objects::layer_span(t.target, img, layer)?))
+    }
+
+    /// Completeness of a framebuffer object (GL 3.3 §4.4.4).
     pub(crate) fn framebuffer_status(&self, fb: u32) -> u32 {
         if fb == 0 {
             return GL_FRAMEBUFFER_COMPLETE;
@@ -680,6 +839,18 @@ impl Context {
         }
         if sizes.is_empty() {
             return GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT;
+        }
+        // Either every attachment is layered or none is (GL 3.3 §4.4.4).
+        let layered: Vec<bool> = f
+            .color
+            .iter()
+            .flatten()
+            .chain(f.depth.iter())
+            .chain(f.stencil.iter())
+            .map(|a| matches!(a, Attachment::Texture { layered: true, .. }))
+            .collect();
+        if layered.iter().any(|&l| l != layered[0]) {
+            return GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS;
         }
         if sizes.iter().any(|s| *s != sizes[0]) {
             return GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT;

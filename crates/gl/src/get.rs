@@ -60,6 +60,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_explicit_attrib_location",
     "GL_ARB_texture_rg",
     "GL_EXT_texture_sRGB",
+    "GL_ARB_sampler_objects",
 ];
 
 /// The extensions a 3.3 context adds (their GL 3.2–3.3 core features,
@@ -69,6 +70,7 @@ pub const EXTENSIONS_33: &[&str] = &[
     "GL_ARB_timer_query",
     "GL_ARB_occlusion_query2",
     "GL_ARB_provoking_vertex",
+    "GL_ARB_blend_func_extended",
 ];
 
 fn b(x: bool) -> f64 {
@@ -249,6 +251,20 @@ impl Context {
                     _ => 7,
                 };
                 int(&[self.objects.bound.get(unit).map_or(0, |b| b[ti]) as i64])
+            }
+            GL_CLAMP_READ_COLOR if api.at_least(3, 0) => int(&[st.clamp_read_color as i64]),
+            GL_MAX_DUAL_SOURCE_DRAW_BUFFERS if api.at_least(3, 3) => {
+                int(&[crate::program_outputs::MAX_DUAL_SOURCE_DRAW_BUFFERS as i64])
+            }
+            GL_CLAMP_VERTEX_COLOR | GL_CLAMP_FRAGMENT_COLOR
+                if api.is_core() || !api.at_least(3, 0) =>
+            {
+                None
+            }
+            GL_CLAMP_VERTEX_COLOR => int(&[st.clamp_vertex_color as i64]),
+            GL_CLAMP_FRAGMENT_COLOR => int(&[st.clamp_fragment_color as i64]),
+            GL_SAMPLER_BINDING => {
+                int(&[self.objects.bound_samplers.get(unit).copied().unwrap_or(0) as i64])
             }
             GL_VERTEX_ARRAY_SIZE => int(&[self.va.vertex_array.size as i64]),
             GL_VERTEX_ARRAY_TYPE => int(&[self.va.vertex_array.ty as i64]),

@@ -38,13 +38,18 @@ impl Kernels {
     }
 }
 
+/// A converted texture with the generations of the texture object and of
+/// the sampler object (0 for none) it was converted from.
+pub type CachedTexture = (u64, u64, Arc<raster::Texture>);
+
 /// Per-context caches of the draw path.
 #[derive(Default)]
 pub struct DrawCache {
     /// Fixed-function stages by generated source.
     pub ff: BTreeMap<String, Result<Arc<exec::Kernel>, String>>,
-    /// Converted textures by (name, target): generation and texture.
-    pub textures: BTreeMap<(u32, u32), (u64, Arc<raster::Texture>)>,
+    /// Converted textures by (texture name, target, bound sampler name or
+    /// 0): the texture's and the sampler's generations, and the texture.
+    pub textures: BTreeMap<(u32, u32, u32), CachedTexture>,
     /// Why the last draw stopped early, if it did.
     pub error: Option<String>,
 }

@@ -54,6 +54,7 @@
 //!   [`textures`] (glTex*, texture queries), [`mipmap`],
 //!   [`texture_format`] (internal formats, stored texels),
 //!   [`texture_buffer`] (glTexBuffer, buffer textures' texels),
+//!   [`samplers`] (sampler objects),
 //!   [`framebuffer`] (renderbuffers, FBOs, completeness, draw/read
 //!   buffers), [`blit`] (glBlitFramebuffer).
 //! - Client images: [`pixel_transfer`] (layout, unpack, pack, scale and
@@ -125,6 +126,7 @@ pub mod rasterization;
 pub mod readback;
 pub mod render_target;
 pub(crate) mod restart;
+pub mod samplers;
 pub mod shading;
 pub mod state;
 pub mod sync;

@@ -173,6 +173,17 @@ impl TextureObj {
     }
 }
 
+/// A sampler object (GL 3.3 §3.9.2): the sampling half of
+/// [`TexParams`]. Only the sampler state of GL 3.3 Table 6.23 is meaningful
+/// in `params` (filters, wraps, border colour, LOD range and bias, compare
+/// mode and function); the texture-only fields keep their defaults.
+#[derive(Clone, Debug, Default)]
+pub struct SamplerObj {
+    pub params: TexParams,
+    /// Bumped on every change (for caches).
+    pub generation: u64,
+}
+
 /// A renderbuffer object.
 #[derive(Clone, Debug, Default)]
 pub struct RenderbufferObj {
@@ -195,9 +206,34 @@ pub enum Attachment {
         /// Cube face index (0..6) or 0.
         face: u32,
         level: i32,
-        zoffset: i32,
+        /// GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER: the layer of a 3D or
+        /// array texture's level that is the attached image (0 otherwise).
+        layer: i32,
+        /// GL_FRAMEBUFFER_ATTACHMENT_LAYERED: the whole level of a 3D,
+        /// cube map or array texture (glFramebufferTexture). With no
+        /// geometry stage to choose a layer, drawing goes to layer 0 (the
+        /// +X face of a cube map).
+        layered: bool,
     },
     Renderbuffer(u32),
+}
+
+/// Where the 2D image at `layer` of the level image `img` of a texture
+/// of `target` lies in `img.texels`: (first texel, width, height). A layer
+/// of a 3D or 2D array level is one `width × height` slice, a layer of a
+/// 1D array level one row; other targets have layer 0 only. None for a
+/// layer the level does not have.
+pub fn layer_span(target: u32, img: &Image, layer: i32) -> Option<(usize, i32, i32)> {
+    let (w, h) = (img.width.max(0), img.height.max(0));
+    match target {
+        GL_TEXTURE_3D | GL_TEXTURE_2D_ARRAY | GL_TEXTURE_2D_MULTISAMPLE_ARRAY => (0..img.depth)
+            .contains(&layer)
+            .then(|| (layer as usize * (w * h) as usize, w, h)),
+        GL_TEXTURE_1D_ARRAY => (0..h)
+            .contains(&layer)
+            .then(|| (layer as usize * w as usize, w, 1)),
+        _ => (layer == 0).then_some((0, w, h)),
+    }
 }
 
 /// A framebuffer object.
@@ -220,6 +256,12 @@ pub struct Objects {
     pub default_textures: BTreeMap<u32, TextureObj>,
     /// `bound[unit][target index]` ([`TEXTURE_TARGETS`] order).
     pub bound: Vec<[u32; TEXTURE_TARGET_COUNT]>,
+    /// Sampler objects by name (created by glGenSamplers only).
+    pub samplers: BTreeMap<u32, SamplerObj>,
+    pub next_sampler: u32,
+    /// The sampler bound to each texture image unit (0: none, the bound
+    /// textures' own parameters apply).
+    pub bound_samplers: Vec<u32>,
     pub renderbuffers: BTreeMap<u32, RenderbufferObj>,
     pub next_renderbuffer: u32,
     pub bound_renderbuffer: u32,
@@ -272,6 +314,9 @@ impl Objects {
             next_texture: 1,
             default_textures,
             bound: vec![[0; TEXTURE_TARGET_COUNT]; crate::MAX_TEXTURE_IMAGE_UNITS],
+            samplers: BTreeMap::new(),
+            next_sampler: 1,
+            bound_samplers: vec![0; crate::MAX_TEXTURE_IMAGE_UNITS],
             renderbuffers: BTreeMap::new(),
             next_renderbuffer: 1,
             bound_renderbuffer: 0,
@@ -313,6 +358,12 @@ impl Objects {
 
     pub fn texture_by_name(&self, name: u32) -> Option<&TextureObj> {
         self.textures.get(&name)
+    }
+
+    /// The sampler object bound to `unit`, if any.
+    pub fn bound_sampler(&self, unit: usize) -> Option<(u32, &SamplerObj)> {
+        let name = *self.bound_samplers.get(unit)?;
+        self.samplers.get(&name).map(|s| (name, s))
     }
 }
 

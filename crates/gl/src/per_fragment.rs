@@ -4,7 +4,8 @@
 //!
 //! Contract: functions, operations and factors are checked against GL
 //! 2.1's lists (Tables 4.1-4.2; GL_SRC_ALPHA_SATURATE is a source factor
-//! only); colors and depth values are clamped to [0, 1] when set.
+//! only), with GL 3.3's SRC1 factors (dual-source blending) in 3.3
+//! contexts; colors and depth values are clamped to [0, 1] when set.
 
 use crate::enums::*;
 use crate::state::clamp01;
@@ -28,24 +29,32 @@ fn valid_stencil_op(op: u32) -> bool {
     )
 }
 
-fn valid_blend_factor(f: u32, is_src: bool) -> bool {
-    matches!(
-        f,
-        GL_ZERO
-            | GL_ONE
-            | GL_SRC_COLOR
-            | GL_ONE_MINUS_SRC_COLOR
-            | GL_DST_COLOR
-            | GL_ONE_MINUS_DST_COLOR
-            | GL_SRC_ALPHA
-            | GL_ONE_MINUS_SRC_ALPHA
-            | GL_DST_ALPHA
-            | GL_ONE_MINUS_DST_ALPHA
-            | GL_CONSTANT_COLOR
-            | GL_ONE_MINUS_CONSTANT_COLOR
-            | GL_CONSTANT_ALPHA
-            | GL_ONE_MINUS_CONSTANT_ALPHA
-    ) || (f == GL_SRC_ALPHA_SATURATE && is_src)
+/// Whether `f` is a blend factor; the second source colour's (GL 3.3
+/// dual-source blending) only when `dual`.
+fn valid_blend_factor(f: u32, is_src: bool, dual: bool) -> bool {
+    (dual
+        && matches!(
+            f,
+            GL_SRC1_COLOR | GL_ONE_MINUS_SRC1_COLOR | GL_SRC1_ALPHA | GL_ONE_MINUS_SRC1_ALPHA
+        ))
+        || matches!(
+            f,
+            GL_ZERO
+                | GL_ONE
+                | GL_SRC_COLOR
+                | GL_ONE_MINUS_SRC_COLOR
+                | GL_DST_COLOR
+                | GL_ONE_MINUS_DST_COLOR
+                | GL_SRC_ALPHA
+                | GL_ONE_MINUS_SRC_ALPHA
+                | GL_DST_ALPHA
+                | GL_ONE_MINUS_DST_ALPHA
+                | GL_CONSTANT_COLOR
+                | GL_ONE_MINUS_CONSTANT_COLOR
+                | GL_CONSTANT_ALPHA
+                | GL_ONE_MINUS_CONSTANT_ALPHA
+        )
+        || (f == GL_SRC_ALPHA_SATURATE && is_src)
 }
 
 fn valid_blend_eq(e: u32) -> bool {
@@ -55,7 +64,39 @@ fn valid_blend_eq(e: u32) -> bool {
     )
 }
 
+/// Whether a glClampColor setting `mode` clamps when the buffers it
+/// concerns are all fixed-point (`fixed`) or not.
+pub(crate) fn clamp_applies(mode: u32, fixed: bool) -> bool {
+    match mode {
+        GL_FIXED_ONLY => fixed,
+        m => m != GL_FALSE,
+    }
+}
+
 impl Context {
+    /// glClampColor (GL 3.0 §3.7.5, §4.3.2, §2.13.6): `clamp` is GL_TRUE,
+    /// GL_FALSE or GL_FIXED_ONLY; the targets are GL_CLAMP_READ_COLOR and,
+    /// outside the core profile (GL 3.3 core E.2.2), GL_CLAMP_VERTEX_COLOR
+    /// and GL_CLAMP_FRAGMENT_COLOR. Anything else is GL_INVALID_ENUM, as
+    /// is every target in a GL 2.1 context (which clamps colours always
+    /// and reads them as stored).
+    pub fn clamp_color(&mut self, target: u32, clamp: u32) {
+        if self.reject_in_begin() {
+            return;
+        }
+        if !self.api.at_least(3, 0) || !matches!(clamp, GL_FIXED_ONLY | GL_TRUE | GL_FALSE) {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        let core = self.api.is_core();
+        match target {
+            GL_CLAMP_READ_COLOR => self.st.clamp_read_color = clamp,
+            GL_CLAMP_VERTEX_COLOR if !core => self.st.clamp_vertex_color = clamp,
+            GL_CLAMP_FRAGMENT_COLOR if !core => self.st.clamp_fragment_color = clamp,
+            _ => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
     /// glClearColor (clamped, GL 2.1 §4.2.3).
     pub fn clear_color(&mut self, r: f32, g: f32, b: f32, a: f32) {
         if self.reject_in_begin() {
@@ -90,10 +131,11 @@ impl Context {
         if self.reject_in_begin() {
             return;
         }
-        if !(valid_blend_factor(src_rgb, true)
-            && valid_blend_factor(dst_rgb, false)
-            && valid_blend_factor(src_a, true)
-            && valid_blend_factor(dst_a, false))
+        let dual = self.api.at_least(3, 3);
+        if !(valid_blend_factor(src_rgb, true, dual)
+            && valid_blend_factor(dst_rgb, false, dual)
+            && valid_blend_factor(src_a, true, dual)
+            && valid_blend_factor(dst_a, false, dual))
         {
             self.set_error(GL_INVALID_ENUM);
             return;

@@ -7,6 +7,7 @@
 //! for (already rejected by its setter) maps to raster's default.
 
 use crate::enums::*;
+use crate::per_fragment::clamp_applies;
 use crate::Context;
 
 pub(crate) fn raster_mode(mode: u32) -> raster::Mode {
@@ -70,6 +71,10 @@ fn blend_factor(f: u32) -> raster::BlendFactor {
         GL_CONSTANT_ALPHA => ConstantAlpha,
         GL_ONE_MINUS_CONSTANT_ALPHA => OneMinusConstantAlpha,
         GL_SRC_ALPHA_SATURATE => SrcAlphaSaturate,
+        GL_SRC1_COLOR => Src1Color,
+        GL_ONE_MINUS_SRC1_COLOR => OneMinusSrc1Color,
+        GL_SRC1_ALPHA => Src1Alpha,
+        GL_ONE_MINUS_SRC1_ALPHA => OneMinusSrc1Alpha,
         _ => One,
     }
 }
@@ -98,7 +103,20 @@ pub(crate) fn rect(r: [i32; 4]) -> raster::Rect {
 
 impl Context {
     /// The GL state as raster's plain data.
-    pub(crate) fn pipeline_state(&self, draw_buffers: [Option<usize>; 8]) -> raster::PipelineState {
+    pub(crate) fn pipeline_state(
+        &self,
+        target: &crate::render_target::Target,
+    ) -> raster::PipelineState {
+        let draw_buffers = target.draw_buffers;
+        // glClampColor's FIXED_ONLY clamps when every colour buffer drawn
+        // is fixed-point; GL 2.1 clamps always (its state stays TRUE and
+        // FIXED_ONLY, glClampColor refused).
+        let fixed_point = !self.api.at_least(3, 0)
+            || target
+                .fb
+                .color
+                .iter()
+                .all(|c| matches!(c, raster::ColorBuffer::Rgba8(_)));
         let st = &self.st;
         let on = |c| st.is_on(c);
         let face = |f: usize| raster::StencilFace {
@@ -149,8 +167,8 @@ impl Context {
             vertex_program_point_size: on(GL_VERTEX_PROGRAM_POINT_SIZE),
             line_width: st.line_width,
             two_sided_color: self.two_sided_color(),
-            clamp_vertex_color: true,
-            clamp_fragment_color: true,
+            clamp_vertex_color: clamp_applies(st.clamp_vertex_color, fixed_point),
+            clamp_fragment_color: clamp_applies(st.clamp_fragment_color, fixed_point),
             clip_planes,
             alpha_test: on(GL_ALPHA_TEST).then_some((compare_func(st.alpha_func), st.alpha_ref)),
             stencil: on(GL_STENCIL_TEST).then(|| raster::StencilState {

@@ -480,7 +480,7 @@ impl Context {
     }
 
     fn write_fragments(&mut self, t: &mut crate::render_target::Target, frags: &[PixelFragment]) {
-        let state = self.pipeline_state(t.draw_buffers);
+        let state = self.pipeline_state(t);
         let n = raster::write_pixel_fragments(&mut t.fb, &state, frags);
         self.count_samples(n);
     }

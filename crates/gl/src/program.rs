@@ -85,13 +85,17 @@ impl Executable {
     }
 }
 
+/// glBindFragDataLocation(Indexed) bindings: output name to (location,
+/// index).
+pub type FragBindings = BTreeMap<String, (u32, u32)>;
+
 /// A program object.
 #[derive(Default)]
 pub struct ProgramObj {
     pub attached: Vec<u32>,
     pub bindings: BTreeMap<String, u32>,
     /// glBindFragDataLocation bindings ([`crate::program_outputs`]).
-    pub frag_bindings: BTreeMap<String, u32>,
+    pub frag_bindings: FragBindings,
     /// glTransformFeedbackVaryings' names and buffer mode (0 until set:
     /// GL_INTERLEAVED_ATTRIBS), for the next link.
     pub feedback_names: Vec<String>,
@@ -823,7 +827,7 @@ pub(crate) fn with_nul(len: usize) -> i32 {
 /// program.
 fn build_executable(
     mut program: glsl::link::Program,
-    (bindings, frag_bindings): (&BTreeMap<String, u32>, &BTreeMap<String, u32>),
+    (bindings, frag_bindings): (&BTreeMap<String, u32>, &FragBindings),
     (feedback_names, feedback_mode): &(Vec<String>, u32),
     shaders: Vec<Arc<glsl::Shader>>,
 ) -> Result<Executable, String> {

@@ -1,7 +1,8 @@
 //! glReadPixels: the read framebuffer's color, depth or stencil values
 //! packed into client memory ([`crate::pixel_transfer`]).
 //!
-//! Contract: GL 2.1 §4.3.2's checks and errors; pixels outside the
+//! Contract: GL 2.1 §4.3.2's checks and errors; colours clamped to
+//! [0, 1] by GL_CLAMP_READ_COLOR (glClampColor) as GL 3.3 §4.3.2 says; pixels outside the
 //! framebuffer read as 0; packed types and index formats are
 //! GL_INVALID_OPERATION (not implemented).
 
@@ -66,9 +67,20 @@ impl Context {
             GL_DEPTH_COMPONENT | GL_STENCIL_INDEX => format,
             _ => GL_RGBA,
         };
-        let Some(block) = self.read_block(x, y, w as u32, h as u32, what) else {
+        let Some(mut block) = self.read_block(x, y, w as u32, h as u32, what) else {
             return;
         };
+        // Read colour clamping (GL 3.3 §4.3.2): a fixed-point buffer's
+        // colours are in [0, 1] already, so only GL_TRUE on a float buffer
+        // changes values; integer formats are never clamped.
+        if what == GL_RGBA
+            && self.st.clamp_read_color == GL_TRUE
+            && crate::pixel_transfer::integer_client_format(format).is_none()
+        {
+            for p in block.iter_mut() {
+                *p = p.map(|c| c.clamp(0.0, 1.0));
+            }
+        }
         let (w, h) = (w as usize, h as usize);
         let align = self.st.pack_alignment as usize;
         crate::pixel_transfer::pack_into(&block, w, h, format, ty, align, out);

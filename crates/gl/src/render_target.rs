@@ -150,17 +150,13 @@ impl Context {
 
     fn attachment_texels(&self, a: &Attachment) -> Vec<[f32; 4]> {
         match *a {
-            Attachment::Texture {
-                texture,
-                face,
-                level,
-                ..
-            } => self
-                .objects
-                .textures
-                .get(&texture)
-                .and_then(|t| t.image(face as usize, level as usize))
-                .map(|i| i.texels.clone())
+            Attachment::Texture { .. } => self
+                .attached_image(a)
+                .and_then(|(img, (start, w, h))| {
+                    img.texels
+                        .get(start..start + w as usize * h as usize)
+                        .map(|t| t.to_vec())
+                })
                 .unwrap_or_default(),
             Attachment::Renderbuffer(rb) => self
                 .objects
@@ -221,6 +217,9 @@ impl Context {
                 level,
                 ..
             } => {
+                let Some((_, (start, _, _))) = self.attached_image(a) else {
+                    return;
+                };
                 let Some(t) = self.objects.textures.get_mut(&texture) else {
                     return;
                 };
@@ -231,7 +230,8 @@ impl Context {
                     .and_then(|i| i.as_mut())
                 {
                     let fmt = img.internal_format as i32;
-                    for (d, s) in img.texels.iter_mut().zip(px) {
+                    let slice = img.texels.get_mut(start..).unwrap_or_default();
+                    for (d, s) in slice.iter_mut().zip(px) {
                         *d = crate::texture_format::texel_for(s, fmt);
                     }
                     t.generation += 1;

@@ -208,6 +208,11 @@ pub struct State {
     pub pack_alignment: i32,
     pub draw_buffers: Vec<u32>,
     pub read_buffer: u32,
+    /// glClampColor's CLAMP_VERTEX_COLOR, CLAMP_FRAGMENT_COLOR and
+    /// CLAMP_READ_COLOR: GL_TRUE, GL_FALSE or GL_FIXED_ONLY.
+    pub clamp_vertex_color: u32,
+    pub clamp_fragment_color: u32,
+    pub clamp_read_color: u32,
 }
 
 impl State {
@@ -297,6 +302,9 @@ impl State {
             pack_alignment: 4,
             draw_buffers: vec![GL_BACK],
             read_buffer: GL_BACK,
+            clamp_vertex_color: GL_TRUE,
+            clamp_fragment_color: GL_FIXED_ONLY,
+            clamp_read_color: GL_FIXED_ONLY,
         }
     }
 
@@ -348,8 +356,6 @@ const CAPS: &[u32] = &[
     GL_MAP2_VERTEX_3,
     GL_MAP2_VERTEX_4,
     GL_FRAMEBUFFER_SRGB,
-    GL_CLAMP_VERTEX_COLOR,
-    GL_CLAMP_FRAGMENT_COLOR,
     GL_PRIMITIVE_RESTART,
 ];
 

@@ -2,15 +2,20 @@
 //! target on every image unit, converted to [`raster::Texture`] (levels,
 //! cube faces, sampler parameters) for a draw.
 //!
-//! Contract: a conversion is cached per (name, target) and reused while
-//! the texture's generation is unchanged, except for buffer textures,
-//! decoded from their buffer at every draw; an incomplete cube level
-//! becomes an empty image. The base level's internal format says whether
-//! the texture is a depth, integer or sRGB one.
+//! Contract: a conversion is cached per (name, target, sampler object) and
+//! reused while the texture's and the sampler's generations are unchanged,
+//! except for buffer textures, decoded from their buffer at every draw; an
+//! incomplete cube level becomes an empty image. A sampler object bound to
+//! the unit ([`crate::samplers`]) supplies the sampler state in place of
+//! the texture's; a rectangle texture under a sampler whose state
+//! glTexParameter would refuse for it samples as no texture (incomplete).
+//! The base level's internal format says whether the texture is a depth,
+//! integer or sRGB one.
 
 use crate::enums::*;
 use crate::objects;
 use crate::pipeline_state::compare_func;
+use crate::samplers::{invalid_for_rectangle, with_sampler};
 use crate::texture_buffer::buffer_texels;
 use crate::texture_format::{is_depth_format, is_integer_format, is_srgb_format};
 use crate::Context;
@@ -25,14 +30,27 @@ impl Context {
         unit: usize,
     ) -> Option<Arc<raster::Texture>> {
         let t = self.objects.bound_texture(unit, target)?;
-        let key = (name, target);
-        if let Some((gen, tex)) = self.cache.textures.get(&key) {
-            if *gen == t.generation {
+        let sampler = self.objects.bound_sampler(unit);
+        let params = match sampler {
+            Some((_, s)) => {
+                if t.target == GL_TEXTURE_RECTANGLE && invalid_for_rectangle(&s.params) {
+                    return None;
+                }
+                with_sampler(&t.params, &s.params)
+            }
+            None => t.params,
+        };
+        let (sampler_name, sampler_gen) = sampler.map_or((0, 0), |(n, s)| (n, s.generation));
+        let key = (name, target, sampler_name);
+        if let Some((gen, sgen, tex)) = self.cache.textures.get(&key) {
+            if *gen == t.generation && *sgen == sampler_gen {
                 return Some(tex.clone());
             }
         }
-        let tex = Arc::new(convert_texture(t));
-        self.cache.textures.insert(key, (t.generation, tex.clone()));
+        let tex = Arc::new(convert_texture(t, &params));
+        self.cache
+            .textures
+            .insert(key, (t.generation, sampler_gen, tex.clone()));
         Some(tex)
     }
 
@@ -93,7 +111,9 @@ impl Context {
 }
 
 /// A GL texture object as raster's texture.
-fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
+/// `p` is the sampling state to apply: the texture's own parameters, or
+/// those with a bound sampler's state in place.
+fn convert_texture(t: &objects::TextureObj, p: &objects::TexParams) -> raster::Texture {
     use raster::{MagFilter, MinFilter, TextureTarget, Wrap};
     let target = match t.target {
         GL_TEXTURE_1D => TextureTarget::Tex1D,
@@ -138,7 +158,6 @@ fn convert_texture(t: &objects::TextureObj) -> raster::Texture {
             }
         }
     }
-    let p = &t.params;
     let wrap = |w: u32| match w {
         GL_CLAMP => Wrap::Clamp,
         GL_CLAMP_TO_EDGE => Wrap::ClampToEdge,

@@ -17,7 +17,7 @@
 use crate::enums::*;
 use crate::mipmap::generate_mipmaps;
 use crate::objects::{
-    clear_image, image_target, proxy_target, set_image, target_index, Attachment, Image,
+    clear_image, image_target, proxy_target, set_image, target_index, Attachment, Image, TexParams,
     TextureObj, MAX_LEVELS,
 };
 use crate::param::Param;
@@ -61,6 +61,56 @@ fn valid_filter(f: u32, min: bool) -> bool {
             ))
 }
 
+/// Sets the sampler-state parameter `pname` (GL 3.3 Table 6.23: the state
+/// texture objects and sampler objects share) of `p` from the call's
+/// values `v` (its first value as an enum, `e`). Returns None when `pname`
+/// is no sampler state, else the error the values call for
+/// (GL_NO_ERROR when set); `v` holds at least as many values as `pname`
+/// takes.
+pub(crate) fn set_sampler_state(p: &mut TexParams, pname: u32, e: u32, v: &[f32]) -> Option<u32> {
+    let mut err = GL_NO_ERROR;
+    match pname {
+        GL_TEXTURE_MIN_FILTER | GL_TEXTURE_MAG_FILTER => {
+            let min = pname == GL_TEXTURE_MIN_FILTER;
+            if !valid_filter(e, min) {
+                err = GL_INVALID_ENUM;
+            } else if min {
+                p.min_filter = e;
+            } else {
+                p.mag_filter = e;
+            }
+        }
+        GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R => {
+            if matches!(
+                e,
+                GL_REPEAT | GL_CLAMP | GL_CLAMP_TO_EDGE | GL_CLAMP_TO_BORDER | GL_MIRRORED_REPEAT
+            ) {
+                let i = match pname {
+                    GL_TEXTURE_WRAP_S => 0,
+                    GL_TEXTURE_WRAP_T => 1,
+                    _ => 2,
+                };
+                p.wrap[i] = e;
+            } else {
+                err = GL_INVALID_ENUM;
+            }
+        }
+        GL_TEXTURE_BORDER_COLOR => {
+            p.border_color = [v[0], v[1], v[2], v[3]].map(|x| x.clamp(0.0, 1.0))
+        }
+        GL_TEXTURE_MIN_LOD => p.min_lod = v[0],
+        GL_TEXTURE_MAX_LOD => p.max_lod = v[0],
+        GL_TEXTURE_LOD_BIAS => p.lod_bias = v[0],
+        GL_TEXTURE_COMPARE_MODE if e == GL_NONE || e == GL_COMPARE_R_TO_TEXTURE => {
+            p.compare_mode = e
+        }
+        GL_TEXTURE_COMPARE_FUNC if (GL_NEVER..=GL_ALWAYS).contains(&e) => p.compare_func = e,
+        GL_TEXTURE_COMPARE_MODE | GL_TEXTURE_COMPARE_FUNC => err = GL_INVALID_ENUM,
+        _ => return None,
+    }
+    Some(err)
+}
+
 impl Context {
     /// glGenTextures.
     pub fn gen_textures(&mut self, n: i32) -> Vec<u32> {
@@ -77,6 +127,9 @@ impl Context {
             if t == 0 || self.objects.textures.remove(&t).is_none() {
                 continue;
             }
+            // A later texture of the same name starts its generations
+            // over: its conversions must not be taken for this one's.
+            self.cache.textures.retain(|k, _| k.0 != t);
             for unit in &mut self.objects.bound {
                 for b in unit.iter_mut() {
                     if *b == t {
@@ -418,31 +471,6 @@ impl Context {
                 err = GL_INVALID_ENUM
             }
             GL_TEXTURE_BASE_LEVEL if rect && v[0] as i32 != 0 => err = GL_INVALID_OPERATION,
-            GL_TEXTURE_MIN_FILTER if valid_filter(e, true) => p.min_filter = e,
-            GL_TEXTURE_MAG_FILTER if valid_filter(e, false) => p.mag_filter = e,
-            GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R
-                if matches!(
-                    e,
-                    GL_REPEAT
-                        | GL_CLAMP
-                        | GL_CLAMP_TO_EDGE
-                        | GL_CLAMP_TO_BORDER
-                        | GL_MIRRORED_REPEAT
-                ) =>
-            {
-                let i = match pname {
-                    GL_TEXTURE_WRAP_S => 0,
-                    GL_TEXTURE_WRAP_T => 1,
-                    _ => 2,
-                };
-                p.wrap[i] = e;
-            }
-            GL_TEXTURE_BORDER_COLOR => {
-                p.border_color = [v[0], v[1], v[2], v[3]].map(|x| x.clamp(0.0, 1.0))
-            }
-            GL_TEXTURE_MIN_LOD => p.min_lod = v[0],
-            GL_TEXTURE_MAX_LOD => p.max_lod = v[0],
-            GL_TEXTURE_LOD_BIAS => p.lod_bias = v[0],
             GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL => {
                 let l = v[0] as i32;
                 if l < 0 {
@@ -453,10 +481,6 @@ impl Context {
                     p.max_level = l;
                 }
             }
-            GL_TEXTURE_COMPARE_MODE if e == GL_NONE || e == GL_COMPARE_R_TO_TEXTURE => {
-                p.compare_mode = e
-            }
-            GL_TEXTURE_COMPARE_FUNC if (GL_NEVER..=GL_ALWAYS).contains(&e) => p.compare_func = e,
             GL_DEPTH_TEXTURE_MODE
                 if matches!(e, GL_LUMINANCE | GL_INTENSITY | GL_ALPHA | GL_RED) =>
             {
@@ -481,15 +505,7 @@ impl Context {
                 }
             }
             GL_TEXTURE_PRIORITY => {}
-            GL_TEXTURE_MIN_FILTER
-            | GL_TEXTURE_MAG_FILTER
-            | GL_TEXTURE_WRAP_S
-            | GL_TEXTURE_WRAP_T
-            | GL_TEXTURE_WRAP_R
-            | GL_TEXTURE_COMPARE_MODE
-            | GL_TEXTURE_COMPARE_FUNC
-            | GL_DEPTH_TEXTURE_MODE => err = GL_INVALID_ENUM,
-            _ => err = GL_INVALID_ENUM,
+            _ => err = set_sampler_state(p, pname, e, v).unwrap_or(GL_INVALID_ENUM),
         }
         tex.generation += 1;
         if err != GL_NO_ERROR {

@@ -212,6 +212,11 @@ pub struct Global {
     pub interpolation: Option<Interpolation>,
     /// `layout(location = N)` of a vertex input or fragment output.
     pub location: Option<u32>,
+    /// `layout(index = N)` of a fragment output (GLSL 3.30 §4.3.8.2,
+    /// ARB_blend_func_extended): which of the two source colours of its
+    /// location's draw buffer it is; 1 is the second (dual-source
+    /// blending). `None` when absent, as 0.
+    pub index: Option<u32>,
     /// The interface block this global belongs to (a member, or the
     /// instance of a named block).
     pub block: Option<BlockId>,

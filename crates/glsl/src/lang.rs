@@ -127,6 +127,11 @@ extensions! {
     ArbUniformBufferObject = "GL_ARB_uniform_buffer_object";
     // `layout(origin_upper_left, pixel_center_integer)` on `gl_FragCoord`.
     ArbFragmentCoordConventions = "GL_ARB_fragment_coord_conventions";
+    // Dual-source blending. Its GLSL side is `layout(index)`, taken
+    // wherever `layout(location)` is (GLSL 3.30, or with
+    // GL_ARB_explicit_attrib_location); `#extension` must accept it since
+    // the GL layer reports it.
+    ArbBlendFuncExtended = "GL_ARB_blend_func_extended";
 }
 
 /// A set of [`Extension`]s.

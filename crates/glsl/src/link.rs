@@ -1058,8 +1058,8 @@ fn location_slots(ty: Type) -> u32 {
 }
 
 /// Explicit locations (GL_ARB_explicit_attrib_location, GLSL 3.30
-/// §4.3.8): within the limits; fragment outputs may not share one
-/// (vertex inputs may: GL 2.0 allows aliasing attributes).
+/// §4.3.8): within the limits; fragment outputs may not share a location
+/// and index (vertex inputs may: GL 2.0 allows aliasing attributes).
 fn check_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
     let (storage, max, what) = match s.stage {
         Stage::Vertex => (
@@ -1076,9 +1076,11 @@ fn check_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
         // (GL_ARB_separate_shader_objects).
         Stage::Geometry => return,
     };
-    let mut used: Vec<Option<&str>> = vec![None; max as usize];
+    // Per `layout(index)` (0, or 1 for a second source colour).
+    let mut used: [Vec<Option<&str>>; 2] = [vec![None; max as usize], vec![None; max as usize]];
     for g in s.module.globals.iter().filter(|g| g.storage == storage) {
         let Some(loc) = g.location else { continue };
+        let used = &mut used[g.index.unwrap_or(0).min(1) as usize];
         let n = location_slots(g.ty);
         if u64::from(loc) + u64::from(n) > u64::from(max) {
             push(
@@ -1100,8 +1102,9 @@ fn check_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
                         None,
                         Code::LinkInterfaceMismatch,
                         format!(
-                            "fragment outputs `{other}' and `{}' are both assigned location {loc}",
-                            g.name
+                            "fragment outputs `{other}' and `{}' are both assigned location {loc}{}",
+                            g.name,
+                            if g.index == Some(1) { ", index 1" } else { "" }
                         ),
                     );
                     break;

@@ -36,6 +36,7 @@ fn slot(name: &str, offset: usize, components: usize) -> Slot {
         components,
         written: true,
         location: None,
+        index: None,
         interpolation: None,
     }
 }
@@ -821,6 +822,7 @@ fn scissor_and_multiple_draw_buffers() {
                 components: 8,
                 written: true,
                 location: None,
+                index: None,
                 interpolation: None,
             }],
         ),

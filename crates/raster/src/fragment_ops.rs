@@ -22,6 +22,15 @@ pub(crate) use stencil::stencil_passes;
 pub(crate) use wide::unorm8_batch;
 
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
+
+/// The colours a fragment carries: one per fragment output (draw buffer
+/// slot), then [`SRC1`].
+pub(crate) const FRAG_COLORS: usize = MAX_DRAW_BUFFERS + 1;
+/// The slot of [`Fragment::colors`] holding the second source colour of
+/// output 0 (`layout(location = 0, index = 1)`): what the SRC1 blend
+/// factors read (dual-source blending, GL 3.3 §4.1.8; one dual-source
+/// draw buffer).
+pub(crate) const SRC1: usize = MAX_DRAW_BUFFERS;
 use crate::state::PipelineState;
 use color::{clamp01, write_color};
 use stencil::{op_has_effect, stencil_face, stencil_test, write_stencil};
@@ -35,8 +44,8 @@ pub(crate) struct Fragment {
     /// Selects the back stencil state (polygons only).
     pub back_facing: bool,
     /// Color of fragment output `i` (gl_FragData[i], or gl_FragColor for
-    /// every `i`).
-    pub colors: [[f32; 4]; MAX_DRAW_BUFFERS],
+    /// every `i`), and at [`SRC1`] output 0's second source colour.
+    pub colors: [[f32; 4]; FRAG_COLORS],
 }
 
 /// For early depth testing: true when the fragment at `index` with fixed
@@ -186,7 +195,7 @@ pub(crate) fn write_colors(
     fb: &mut Framebuffer,
     index: usize,
     state: &PipelineState,
-    colors: &[[f32; 4]; MAX_DRAW_BUFFERS],
+    colors: &[[f32; 4]; FRAG_COLORS],
 ) {
     for (output, target) in state.draw_buffers.iter().enumerate() {
         let Some(target) = *target else { continue };
@@ -203,7 +212,10 @@ pub(crate) fn write_colors(
             }
             None => (state.blend.as_ref(), state.color_mask),
         };
-        write_color(buf, index, state, *src, (blend, mask));
+        // Only output 0 has a second source colour (one dual-source draw
+        // buffer); elsewhere the SRC1 factors read zeros.
+        let src1 = if output == 0 { colors[SRC1] } else { [0.0; 4] };
+        write_color(buf, index, state, (*src, src1), (blend, mask));
     }
 }
 

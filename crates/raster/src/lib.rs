@@ -146,7 +146,11 @@
 //! are `Textures::fetch` and `Textures::size`.
 //! Blending with FUNC_ADD and SRC_ALPHA/ONE_MINUS_SRC_ALPHA, ONE/ZERO or
 //! ONE/ONE into an RGBA8 buffer runs as straight-line code with the
-//! general equations' bits.
+//! general equations' bits. Dual-source blending (GL 3.3): a user output
+//! at location 0 with `index` 1 is draw buffer 0's second source colour,
+//! carried beside the draw buffers' colours and read by the SRC1 factors
+//! (the per-tile colour path steps aside for them); other draw buffers'
+//! SRC1 factors read zeros.
 //!
 //! # Modules, stage by stage
 //! - vertex fetch and the vertex stage: `vertex` (`run_vertices`);

@@ -117,6 +117,10 @@ pub(crate) struct FsLayout {
     pub primitive_id: Option<usize>,
     /// Output offset of the color for each fragment output index.
     pub color_out: [Option<usize>; MAX_DRAW_BUFFERS],
+    /// The output offset of the second source colour of draw buffer 0
+    /// (the user output at `layout(location = 0, index = 1)`), read by
+    /// the SRC1 blend factors (dual-source blending).
+    pub src1_out: Option<usize>,
     pub frag_depth: Option<usize>,
 }
 
@@ -179,8 +183,17 @@ impl FsLayout {
         }
         // User outputs (GLSL 1.30 `out`): each at its location, or, without
         // one, at the next free draw buffers in declaration order.
-        let user: Vec<&Slot> = out.iter().filter(|s| !s.name.starts_with("gl_")).collect();
-        let has_user = !user.is_empty();
+        // An output of index 1 is a second source colour, placed apart
+        // (only location 0 has one).
+        let src1_out = out
+            .iter()
+            .find(|s| !s.name.starts_with("gl_") && s.index == Some(1) && s.location == Some(0))
+            .map(|s| s.offset);
+        let user: Vec<&Slot> = out
+            .iter()
+            .filter(|s| !s.name.starts_with("gl_") && s.index != Some(1))
+            .collect();
+        let has_user = !user.is_empty() || src1_out.is_some();
         if has_user {
             color_out = [None; MAX_DRAW_BUFFERS];
             let mut next = 0usize;
@@ -231,6 +244,7 @@ impl FsLayout {
             point_coord,
             primitive_id,
             color_out,
+            src1_out,
             frag_depth: find(out, "gl_FragDepth")
                 .filter(|s| s.written)
                 .map(|s| s.offset),

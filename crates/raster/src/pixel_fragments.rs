@@ -4,8 +4,8 @@
 //! per-fragment operations, counted in
 //! [`Framebuffer::samples_passed`](crate::Framebuffer::samples_passed).
 
-use crate::fragment_ops::{self, Fragment};
-use crate::framebuffer::{Framebuffer, MAX_DRAW_BUFFERS};
+use crate::fragment_ops::{self, Fragment, FRAG_COLORS};
+use crate::framebuffer::Framebuffer;
 use crate::state::PipelineState;
 
 /// One fragment of a pixel rectangle: window position, depth in [0, 1]
@@ -35,7 +35,7 @@ pub fn write_pixel_fragments(
             y: f.y,
             z,
             back_facing: false,
-            colors: [f.color; MAX_DRAW_BUFFERS],
+            colors: [f.color; FRAG_COLORS],
         };
         if fragment_ops::process(fb, (0, 0), state, &frag) {
             passed += 1;

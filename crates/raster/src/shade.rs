@@ -15,7 +15,7 @@
 //! slice first, colours for visible fragments only).
 
 use crate::ex::{Batch, ExecError, Textures, LANES};
-use crate::fragment_ops::{self, Fragment, QuickOps, QuickTarget};
+use crate::fragment_ops::{self, Fragment, QuickOps, QuickTarget, FRAG_COLORS, SRC1};
 use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
 use crate::interpolate::{Kind, Plane, QUAD_X, QUAD_Y, STRIP_X, STRIP_Y};
 use crate::linkage::{new_batch, FsLayout};
@@ -342,6 +342,12 @@ impl<'a> FragmentStage<'a> {
                     (Some(o), Some(_)) => Some((i, o)),
                     _ => None,
                 })
+                .chain(
+                    layout
+                        .src1_out
+                        .filter(|_| state.blend.as_ref().is_some_and(|b| b.uses_src1()))
+                        .map(|o| (SRC1, o)),
+                )
                 .collect(),
             early: layout.frag_depth.is_none(),
             window_z,
@@ -801,7 +807,7 @@ impl<'a> FragmentStage<'a> {
     }
 
     /// Writes lane `lane`'s colours of `colors_out` into `colors`.
-    fn colors_into(&self, batch: &Batch, lane: usize, colors: &mut [[f32; 4]; MAX_DRAW_BUFFERS]) {
+    fn colors_into(&self, batch: &Batch, lane: usize, colors: &mut [[f32; 4]; FRAG_COLORS]) {
         for &(i, o) in &self.colors_out {
             if let Some(c) = colors.get_mut(i) {
                 for (j, v) in c.iter_mut().enumerate() {
@@ -882,7 +888,7 @@ impl<'a> FragmentStage<'a> {
             y: 0,
             z: 0.0,
             back_facing: false,
-            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
+            colors: [[0.0; 4]; FRAG_COLORS],
         };
         for (q, e) in pending.iter().enumerate() {
             for k in 0..4 {

@@ -136,6 +136,24 @@ pub enum BlendFactor {
     ConstantAlpha,
     OneMinusConstantAlpha,
     SrcAlphaSaturate,
+    /// The second source colour's (dual-source blending, GL 3.3 §4.1.8).
+    Src1Color,
+    OneMinusSrc1Color,
+    Src1Alpha,
+    OneMinusSrc1Alpha,
+}
+
+impl BlendFactor {
+    /// Whether the factor reads the second source colour.
+    pub fn is_src1(self) -> bool {
+        matches!(
+            self,
+            BlendFactor::Src1Color
+                | BlendFactor::OneMinusSrc1Color
+                | BlendFactor::Src1Alpha
+                | BlendFactor::OneMinusSrc1Alpha
+        )
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -159,6 +177,16 @@ pub struct Blend {
     pub equation_alpha: BlendEquation,
     /// BlendColor (already clamped to [0, 1] by the GL layer).
     pub color: [f32; 4],
+}
+
+impl Blend {
+    /// Whether any factor reads the second source colour (dual-source
+    /// blending).
+    pub fn uses_src1(&self) -> bool {
+        [self.src_rgb, self.dst_rgb, self.src_alpha, self.dst_alpha]
+            .iter()
+            .any(|f| f.is_src1())
+    }
 }
 
 impl Default for Blend {

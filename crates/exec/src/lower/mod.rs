@@ -317,6 +317,7 @@ fn block_member_slots(
                 components,
                 written: false,
                 location: None,
+                index: None,
                 interpolation: member.interpolation.or(g.interpolation),
             });
             at += components;
@@ -359,6 +360,7 @@ fn with_ftransform_inputs(m: &Module) -> Option<Module> {
             centroid: false,
             interpolation: None,
             location: None,
+            index: None,
             block: None,
             init: None,
             init_expr: None,
@@ -450,6 +452,7 @@ impl<'m> Lowerer<'m> {
                     components: n,
                     written,
                     location: g.location,
+                    index: g.index,
                     interpolation: g.interpolation,
                 }],
             };
@@ -478,6 +481,7 @@ impl<'m> Lowerer<'m> {
                     components: size_of(global.ty, structs),
                     written: true,
                     location: None,
+                    index: None,
                     interpolation: None,
                 });
             }

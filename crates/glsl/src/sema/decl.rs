@@ -391,7 +391,7 @@ impl Analyzer {
         }
         if self.scopes.is_global() {
             let storage = self.global_storage(q);
-            let location = self.check_var_layout(q, &name);
+            let (location, index) = self.check_var_layout(q, &name);
             let id = ir::GlobalId(self.module.globals.len() as u32);
             let init_expr = match (&value, storage) {
                 (None, Storage::Private) => init,
@@ -406,6 +406,7 @@ impl Analyzer {
                 centroid: q.centroid,
                 interpolation: q.interpolation.map(|(i, _)| i),
                 location,
+                index,
                 block: None,
                 init: value,
                 init_expr,

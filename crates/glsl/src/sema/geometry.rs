@@ -44,7 +44,7 @@ impl Analyzer {
         let l = &q.layout;
         let others = [
             l.location.map(|(_, s)| s),
-            l.index,
+            l.index.map(|(_, s)| s),
             l.block_layout.map(|(_, s)| s),
             l.row_major.map(|(_, s)| s),
             l.origin_upper_left,

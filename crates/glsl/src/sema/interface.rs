@@ -23,7 +23,7 @@ pub(crate) struct LayoutQuals {
     pub span: Option<Span>,
     pub location: Option<(u32, Span)>,
     /// `index = N` (accepted on fragment outputs with a location).
-    pub index: Option<Span>,
+    pub index: Option<(u32, Span)>,
     pub block_layout: Option<(BlockLayout, Span)>,
     pub row_major: Option<(bool, Span)>,
     pub origin_upper_left: Option<Span>,
@@ -436,9 +436,8 @@ impl Analyzer {
                 out.location = Some((v, span));
             }
             "index" => {
-                // GL_ARB_blend_func_extended's second colour of an output;
-                // dual-source blending is not implemented, so the value is
-                // checked and dropped.
+                // GL_ARB_blend_func_extended's second source colour of an
+                // output's draw buffer (dual-source blending).
                 if !self.require(Feature::ExplicitLocation, "`layout(index)'", span) {
                     return;
                 }
@@ -446,7 +445,7 @@ impl Analyzer {
                     if v > 1 {
                         self.error(Code::BadQualifier, span, "`index' must be 0 or 1");
                     }
-                    out.index = Some(span);
+                    out.index = Some((v.min(1), span));
                 }
             }
             "std140" | "shared" | "packed" => {
@@ -521,8 +520,12 @@ impl Analyzer {
     }
 
     /// Reports layout identifiers a variable declaration may not have and
-    /// returns its location.
-    pub(crate) fn check_var_layout(&mut self, q: &VarQuals, name: &str) -> Option<u32> {
+    /// returns its location and (fragment outputs) index.
+    pub(crate) fn check_var_layout(
+        &mut self,
+        q: &VarQuals,
+        name: &str,
+    ) -> (Option<u32>, Option<u32>) {
         let l = &q.layout;
         let loc_ok = match q.storage {
             Some(Qualifier::In) => self.stage == Stage::Vertex,
@@ -530,8 +533,11 @@ impl Analyzer {
             _ => false,
         };
         let mut location = None;
-        if let Some(span) = l.index {
-            if !(loc_ok && self.stage == Stage::Fragment && l.location.is_some()) {
+        let mut index = None;
+        if let Some((v, span)) = l.index {
+            if loc_ok && self.stage == Stage::Fragment && l.location.is_some() {
+                index = Some(v);
+            } else {
                 self.error(
                     Code::BadQualifier,
                     span,
@@ -579,7 +585,7 @@ impl Analyzer {
         if let Some((g, _, span)) = l.geometry.first() {
             self.misplaced_geometry_layout(g, *span);
         }
-        location
+        (location, index)
     }
 
     /// One precision qualifier of a parameter, return type or member:
@@ -961,6 +967,7 @@ impl Analyzer {
             centroid: member.is_some_and(|m| m.centroid),
             interpolation: member.and_then(|m| m.interpolation),
             location: None,
+            index: None,
             block: Some(block),
             init: None,
             init_expr: None,

@@ -498,9 +498,32 @@ fn integer_members_of_fragment_input_blocks_are_flat() {
 #[test]
 fn fragment_output_index_needs_a_location() {
     let ext = "#version 110\n#extension GL_ARB_explicit_attrib_location : require\n";
-    ok(&frag(&format!(
-        "{ext}layout(location = 0, index = 1) out vec4 c; void main() {{ c = vec4(1); }}"
-    )));
+    let f = frag(&format!(
+        "{ext}layout(location = 0, index = 1) out vec4 c; \
+         layout(location = 0) out vec4 d; void main() {{ c = vec4(1); d = c; }}"
+    ));
+    ok(&f);
+    // The index is kept for the GL layer (dual-source blending).
+    assert_eq!(global(&f, "c").index, Some(1));
+    assert_eq!(global(&f, "d").index, None);
+    let f = frag(
+        "#version 330\nlayout(location = 0, index = 0) out vec4 c; void main() { c = vec4(1); }",
+    );
+    ok(&f);
+    assert_eq!(global(&f, "c").index, Some(0));
+    // GL_ARB_blend_func_extended is accepted (and defined) beside the
+    // explicit-location extension that brings `layout(index)` to 1.50.
+    let f = frag(
+        "#version 150\n\
+         #extension GL_ARB_blend_func_extended : require\n\
+         #extension GL_ARB_explicit_attrib_location : require\n\
+         #ifndef GL_ARB_blend_func_extended\n\
+         #error not defined\n\
+         #endif\n\
+         layout(location = 0, index = 1) out vec4 c; void main() { c = vec4(1); }",
+    );
+    ok(&f);
+    assert_eq!(global(&f, "c").index, Some(1));
     fails(
         &frag(&format!(
             "{ext}layout(index = 1) out vec4 c; void main() {{}}"

@@ -6,13 +6,14 @@
 use crate::framebuffer::{float_to_unorm8, ColorBuffer};
 use crate::state::{Blend, BlendEquation, BlendFactor, PipelineState};
 
-/// Writes `src` to pixel `index` of `buf`, blending with `blend` and
-/// masking with `mask` (the draw buffer's, [`PipelineState::per_buffer`]).
+/// Writes `src` to pixel `index` of `buf`, blending with `blend` (whose
+/// SRC1 factors read `src1`, the second source colour) and masking with
+/// `mask` (the draw buffer's, [`PipelineState::per_buffer`]).
 pub(super) fn write_color(
     buf: &mut ColorBuffer,
     index: usize,
     state: &PipelineState,
-    src: [f32; 4],
+    (src, src1): ([f32; 4], [f32; 4]),
     (blend, mask): (Option<&Blend>, [bool; 4]),
 ) {
     match buf {
@@ -26,7 +27,11 @@ pub(super) fn write_color(
             } else if let Some(blend) = blend {
                 // `unorm8_to_float`, four at a time.
                 let d = p.map(|b| b as f32 / 255.0);
-                to_unorm8(blend_unit(blend, s, d))
+                if blend.uses_src1() {
+                    to_unorm8(blend_dual(blend, s, src1.map(clamp01), d))
+                } else {
+                    to_unorm8(blend_unit(blend, s, d))
+                }
             } else {
                 to_unorm8(s)
             };
@@ -42,14 +47,14 @@ pub(super) fn write_color(
         }
         ColorBuffer::Rgba32F(v) => {
             let Some(p) = v.get_mut(index) else { return };
-            let s = if state.clamp_fragment_color {
-                src.map(clamp01)
+            let (s, s1) = if state.clamp_fragment_color {
+                (src.map(clamp01), src1.map(clamp01))
             } else {
-                src
+                (src, src1)
             };
             // Logic ops do not apply to float buffers (§4.1.10).
             let out = match blend {
-                Some(blend) if state.logic_op.is_none() => blend_color(blend, s, *p),
+                Some(blend) if state.logic_op.is_none() => blend_dual(blend, s, s1, *p),
                 _ => s,
             };
             for c in 0..4 {
@@ -130,8 +135,15 @@ pub(super) fn blend_unit(b: &Blend, s: [f32; 4], d: [f32; 4]) -> [f32; 4] {
 }
 
 /// GL 2.1 §4.1.8 blend of source `s` over destination `d`
-/// (table 4.1 equations, table 4.2 factors).
+/// (table 4.1 equations, table 4.2 factors), with no second source colour
+/// (the SRC1 factors read zeros).
 pub(crate) fn blend_color(b: &Blend, s: [f32; 4], d: [f32; 4]) -> [f32; 4] {
+    blend_dual(b, s, [0.0; 4], d)
+}
+
+/// GL 3.3 §4.1.8 blend of source `s` over destination `d`, the SRC1
+/// factors reading the second source colour `s1` (dual-source blending).
+pub(crate) fn blend_dual(b: &Blend, s: [f32; 4], s1: [f32; 4], d: [f32; 4]) -> [f32; 4] {
     let factor = |f: BlendFactor, c: usize| -> f32 {
         let k = b.color;
         match f {
@@ -149,6 +161,10 @@ pub(crate) fn blend_color(b: &Blend, s: [f32; 4], d: [f32; 4]) -> [f32; 4] {
             BlendFactor::OneMinusConstantColor => 1.0 - k[c],
             BlendFactor::ConstantAlpha => k[3],
             BlendFactor::OneMinusConstantAlpha => 1.0 - k[3],
+            BlendFactor::Src1Color => s1[c],
+            BlendFactor::OneMinusSrc1Color => 1.0 - s1[c],
+            BlendFactor::Src1Alpha => s1[3],
+            BlendFactor::OneMinusSrc1Alpha => 1.0 - s1[3],
             BlendFactor::SrcAlphaSaturate => {
                 if c == 3 {
                     1.0

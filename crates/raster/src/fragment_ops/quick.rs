@@ -71,6 +71,7 @@ impl QuickOps {
         let color = match (targets.next(), targets.next()) {
             (Some((output, target)), None)
                 if state.logic_op.is_none()
+                    && !state.blend.as_ref().is_some_and(Blend::uses_src1)
                     && state.color_mask == [true; 4]
                     && matches!(fb.color.get(target), Some(ColorBuffer::Rgba8(_))) =>
             {

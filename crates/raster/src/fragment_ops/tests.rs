@@ -1,6 +1,6 @@
 use super::*;
 use super::{color::*, depth::*, quick::*, stencil::*, wide::*};
-use crate::framebuffer::{float_to_unorm8, ColorFormat};
+use crate::framebuffer::{float_to_unorm8, ColorBuffer, ColorFormat};
 use crate::state::{
     Blend, BlendEquation, BlendFactor, CompareFunc, LogicOp, StencilFace, StencilOp, StencilState,
 };
@@ -58,7 +58,7 @@ fn frag(x: u32, y: u32, z: f32, color: [f32; 4]) -> Fragment {
         y,
         z,
         back_facing: false,
-        colors: [color; MAX_DRAW_BUFFERS],
+        colors: [color; FRAG_COLORS],
     }
 }
 
@@ -118,6 +118,72 @@ fn every_blend_factor() {
         assert_eq!(out[0], 0.2 * fc as f32, "{f:?} dst rgb");
         assert_eq!(out[3], 0.1 * fa as f32, "{f:?} dst alpha");
     }
+}
+
+/// The SRC1 factors read the second source colour, on either side; with
+/// none (`blend_color`) they read zeros. Through `write_colors`, only
+/// output 0 has one.
+#[test]
+fn src1_factors_read_the_second_colour() {
+    use BlendFactor::*;
+    let (s, s1, d) = (
+        [0.5, 0.25, 1.0, 0.75],
+        [0.25, 0.5, 0.75, 0.5],
+        [0.2, 0.4, 0.6, 0.1],
+    );
+    let b = |src, dst| Blend {
+        src_rgb: src,
+        dst_rgb: dst,
+        src_alpha: src,
+        dst_alpha: dst,
+        ..Blend::default()
+    };
+    let mix = |fs: [f32; 4], fd: [f32; 4]| -> [f32; 4] {
+        std::array::from_fn(|c| s[c] * fs[c] + d[c] * fd[c])
+    };
+    let cases = [
+        (b(Src1Color, Zero), mix(s1, [0.0; 4])),
+        (b(One, Src1Color), mix([1.0; 4], s1)),
+        (
+            b(OneMinusSrc1Color, Src1Alpha),
+            mix(s1.map(|x| 1.0 - x), [s1[3]; 4]),
+        ),
+        (
+            b(Src1Alpha, OneMinusSrc1Alpha),
+            mix([s1[3]; 4], [1.0 - s1[3]; 4]),
+        ),
+    ];
+    for (blend, want) in cases {
+        assert!(blend.uses_src1());
+        assert_eq!(blend_dual(&blend, s, s1, d), want, "{blend:?}");
+        assert_eq!(
+            blend_color(&blend, s, d),
+            blend_dual(&blend, s, [0.0; 4], d)
+        );
+    }
+    assert!(!b(SrcAlpha, OneMinusSrcAlpha).uses_src1());
+
+    // Two float draw buffers, ONE / SRC1_COLOR: buffer 0 adds dst · s1,
+    // buffer 1 (no second colour) keeps the source alone.
+    let mut fb = Framebuffer::with_color_buffers(1, 1, &[ColorFormat::Rgba32F; 2], false, false);
+    for buf in fb.color.iter_mut() {
+        if let ColorBuffer::Rgba32F(v) = buf {
+            v[0] = d;
+        }
+    }
+    let mut state = PipelineState {
+        blend: Some(b(One, Src1Color)),
+        clamp_fragment_color: false,
+        ..PipelineState::default()
+    };
+    state.draw_buffers[1] = Some(1);
+    let mut colors = [[0.0; 4]; FRAG_COLORS];
+    colors[0] = s;
+    colors[1] = s;
+    colors[SRC1] = s1;
+    write_colors(&mut fb, 0, &state, &colors);
+    assert_eq!(fb.color[0].get(0), mix([1.0; 4], s1));
+    assert_eq!(fb.color[1].get(0), s);
 }
 
 #[test]
@@ -481,8 +547,7 @@ fn quick_ops_match_the_general_ones() {
                     y: next() % 14,
                     z: [0.25, 0.5, 0.75, next() as f32 / 16_777_216.0][next() as usize % 4],
                     back_facing: false,
-                    colors: [[0; 4].map(|_| next() as f32 / 16_777_216.0 * 1.4 - 0.2);
-                        MAX_DRAW_BUFFERS],
+                    colors: [[0; 4].map(|_| next() as f32 / 16_777_216.0 * 1.4 - 0.2); FRAG_COLORS],
                 };
                 let want = tests(&mut general, origin, &state, &f);
                 if let Some(index) = want {

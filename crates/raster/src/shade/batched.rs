@@ -41,7 +41,7 @@ impl<'a> FragmentStage<'a> {
             y: 0,
             z: 0.0,
             back_facing: false,
-            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
+            colors: [[0.0; 4]; FRAG_COLORS],
         };
         for (q, e) in pending.iter().enumerate() {
             let back = e.prim.is_some_and(|p| p.back);

@@ -179,7 +179,7 @@ impl<'a> FragmentStage<'a> {
                             y: y as u32,
                             z,
                             back_facing: e.prim.is_some_and(|p| p.back),
-                            colors: [[0.0; 4]; MAX_DRAW_BUFFERS],
+                            colors: [[0.0; 4]; FRAG_COLORS],
                         };
                         let passed = fragment_ops::tests(fb, pass.origin, self.state, &frag);
                         if let Some(slot) = passed.and_then(|i| winner.get_mut(i)) {
@@ -249,7 +249,7 @@ impl<'a> FragmentStage<'a> {
                 }
             }
             None => {
-                let mut colors = [[0.0; 4]; MAX_DRAW_BUFFERS];
+                let mut colors = [[0.0; 4]; FRAG_COLORS];
                 for &(lane, index) in writes {
                     self.colors_into(batch, lane, &mut colors);
                     fragment_ops::write_colors(fb, index, self.state, &colors);
