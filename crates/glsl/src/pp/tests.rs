@@ -354,6 +354,9 @@ fn several_source_strings() {
 
 #[test]
 fn line_directive_sets_locations() {
+    // The operands are "constant integer expressions" after macro
+    // substitution (GLSL 1.10 §3.3 to 3.30 §3.3), so `TWO+3` is line 5
+    // (Mesa's preprocessor wants an integer literal there).
     let src = "a\n#line 20 4\nb\n#define TWO 2\n#line TWO+3\nc";
     let (out, map) = run(src);
     assert!(out.diagnostics.is_empty(), "{:?}", out.diagnostics);
