@@ -66,7 +66,9 @@ pub const MAX_NESTING_DEPTH: u32 = 256;
 /// chain crosses shader objects). GLSL has no recursion, so the executor
 /// inlines calls, to this depth: a chain that compiles is never what
 /// sends a program to the slower subroutine path (deep chains used to run
-/// there, seconds per draw, and were then reported as loop iterations).
+/// there, seconds per draw). Inlining recurses once per level (about
+/// 30 KiB of stack each in an unoptimized build), on a thread of its own
+/// with a stack sized for this limit (`exec`'s lowering).
 pub const MAX_CALL_DEPTH: u32 = 128;
 /// Total tokens a preprocessed shader may have (guards against macro bombs).
 pub const MAX_TOKENS: usize = 4_000_000;
