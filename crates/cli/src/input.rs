@@ -33,15 +33,23 @@ pub fn stage_from_path(path: &Path) -> StageGuess {
 /// compiler then reports as invalid characters where they are (a shader
 /// with such bytes is a compile error, not a usage error).
 ///
+/// At most one byte past `glsl::limits::MAX_SOURCE_BYTES` is read: the
+/// compiler refuses such a source whole, with the message every front end
+/// gives, and a bigger file costs no more memory than that.
+///
 /// The error is a complete sentence naming the file.
 pub fn read_source(path: &Path) -> Result<String, String> {
-    match std::fs::read(path) {
-        Ok(bytes) => Ok(match String::from_utf8(bytes) {
-            Ok(s) => s,
-            Err(e) => String::from_utf8_lossy(e.as_bytes()).into_owned(),
-        }),
-        Err(e) => Err(format!("cannot read `{}': {}", path.display(), e)),
-    }
+    use std::io::Read;
+    let cannot = |e: std::io::Error| format!("cannot read `{}': {}", path.display(), e);
+    let file = std::fs::File::open(path).map_err(cannot)?;
+    let mut bytes = Vec::new();
+    file.take(glsl::limits::MAX_SOURCE_BYTES as u64 + 1)
+        .read_to_end(&mut bytes)
+        .map_err(cannot)?;
+    Ok(match String::from_utf8(bytes) {
+        Ok(s) => s,
+        Err(e) => String::from_utf8_lossy(e.as_bytes()).into_owned(),
+    })
 }
 
 #[cfg(test)]
@@ -61,6 +69,20 @@ mod tests {
         assert_eq!(g("b.glsl"), StageGuess::Unknown);
         assert_eq!(g("frag"), StageGuess::Unknown);
         assert_eq!(g("b.FRAG"), StageGuess::Unknown);
+    }
+
+    #[test]
+    fn reading_stops_past_the_source_limit() {
+        let dir = std::env::temp_dir().join(format!("shaderbox-big-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let p = dir.join("big.frag");
+        let max = glsl::limits::MAX_SOURCE_BYTES;
+        std::fs::write(&p, vec![b'\n'; max + 1000]).unwrap();
+        let s = read_source(&p).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        assert_eq!(s.len(), max + 1);
+        let sh = glsl::compile(&[&s], &glsl::CompileOptions::new(Stage::Fragment));
+        assert_eq!(sh.diagnostics[0].message, glsl::source_too_large_message());
     }
 
     #[test]

@@ -38,7 +38,8 @@ use std::process::ExitCode;
 #[global_allocator]
 static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-/// OpenGL 2.1 and GLSL 1.10/1.20 on the CPU: compile, validate, link.
+/// The command line; its `about` (the first line of `--help`) is the
+/// crate's description in Cargo.toml.
 #[derive(Parser, Debug)]
 #[command(name = "shaderbox", version, about, long_about = None)]
 struct Cli {

@@ -404,3 +404,33 @@ fn parsertest_bad_usage_is_nonzero() {
     let o = shaderbox(&["glslparsertest", "x.vert", "maybe", "1.10"]);
     assert_ne!(o.status.code(), Some(0));
 }
+
+#[test]
+fn help_describes_the_command_as_it_is() {
+    let o = shaderbox(&["--help"]);
+    let first = stdout(&o).lines().next().unwrap_or("").to_string();
+    assert_eq!(first, env!("CARGO_PKG_DESCRIPTION"));
+    assert!(!first.contains("later"), "{first}");
+    for command in ["check", "shader-runner", "render", "debug"] {
+        assert!(
+            stdout(&o).contains(&format!("  {command} ")),
+            "{}",
+            stdout(&o)
+        );
+    }
+}
+
+#[test]
+fn check_refuses_a_source_over_the_size_limit() {
+    // 40 MB of newlines: one error naming the limit, the file read only up
+    // to it.
+    let big = "\n".repeat(40 << 20) + "void main() {}\n";
+    let path = temp_shader("too-big", "big.frag", &big);
+    let o = shaderbox(&["check", "--format", "infolog", &path]);
+    assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
+    assert!(
+        stdout(&o).contains("the shader source is larger than 33554432 bytes, the limit"),
+        "{}",
+        stdout(&o)
+    );
+}

@@ -294,3 +294,41 @@ relative probe rgba (0.9, 0.5) (0.25, 0.25, 0.75, 0.75)
         }
     }
 }
+
+/// A fragment shader whose `main` calls a chain of `n` functions.
+fn call_chain_script(n: usize) -> String {
+    let mut fs = String::from("float f0(float x) { return x + 0.25; }\n");
+    for i in 1..n {
+        fs += &format!("float f{i}(float x) {{ return f{}(x); }}\n", i - 1);
+    }
+    fs += &format!("void main() {{ gl_FragColor = vec4(f{}(0.0)); }}\n", n - 1);
+    format!(
+        "[require]\nGLSL >= 1.10\n\n[vertex shader passthrough]\n\n[fragment shader]\n{fs}\n\
+         [test]\ndraw rect -1 -1 2 2\nprobe all rgba 0.25 0.25 0.25 0.25\n"
+    )
+}
+
+#[test]
+fn deep_call_chains_fail_to_compile_naming_the_call_depth() {
+    // 4,000 nested calls: refused at compile time with the limit named
+    // (they used to run as subroutines, seconds per draw, or be reported
+    // as loop iterations), in well under a second.
+    let path = script("deep-call-chain", &call_chain_script(4000));
+    let t = std::time::Instant::now();
+    let o = shaderbox(&["shader-runner", &path, "-auto"]);
+    let out = stdout(&o) + &stderr(&o);
+    assert_eq!(last_line(&o), r#"PIGLIT: {"result": "fail" }"#, "{out}");
+    assert!(out.contains("function calls nested too deeply"), "{out}");
+    assert!(!out.contains("loop iterations"), "{out}");
+    assert!(t.elapsed().as_secs() < 10, "{:?}", t.elapsed());
+    // The deepest chain allowed draws the right colour.
+    let path = script("call-chain-at-limit", &call_chain_script(127));
+    let o = shaderbox(&["shader-runner", &path, "-auto"]);
+    assert_eq!(
+        last_line(&o),
+        r#"PIGLIT: {"result": "pass" }"#,
+        "{}{}",
+        stdout(&o),
+        stderr(&o)
+    );
+}

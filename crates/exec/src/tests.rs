@@ -135,12 +135,9 @@ fn frag_colors(src: &str, unis: &[(&str, &[u32])]) -> (Vec<[f32; 4]>, LaneMask) 
     )
 }
 
-#[test]
-fn deep_call_chains_lower_and_run() {
-    // 3,000 nested calls: the program holds as many subroutines and
-    // blocks; liveness over their chain of returns must not sweep every
-    // block once per link. The result: 3000 increments.
-    let n = 3000;
+/// A chain of `n` functions, each adding one to its callee's result,
+/// called from `main`: `n + 1` frames deep.
+fn call_chain(n: usize) -> String {
     let mut src = String::from("float f0(float x) { return x + 1.0; }\n");
     for i in 1..n {
         src.push_str(&format!(
@@ -152,11 +149,52 @@ fn deep_call_chains_lower_and_run() {
         "void main() {{ gl_FragColor = vec4(f{}(0.0) / 4096.0); }}\n",
         n - 1
     ));
+    src
+}
+
+#[test]
+fn call_chains_as_deep_as_the_front_end_allows_inline_and_run() {
+    // The deepest chain that compiles: every call inlined (no subroutine,
+    // so native code can run it), and the subroutine form agrees.
+    let n = crate::limits::MAX_CALL_DEPTH - 1;
+    let src = call_chain(n);
     let k = kernel(Stage::Fragment, &src);
+    assert_eq!(k.program.subroutines, 0, "the chain is inlined");
     let mut b = frag_batch(&k);
     k.run(&mut b, &[], &NoTextures).expect("runs");
     let c = output(&k, &b, "gl_FragColor");
     assert_eq!(c[0][0], n as f32 / 4096.0);
+    let sk = Kernel::with_inline_limit(&link_one(Stage::Fragment, &src).unwrap(), 0)
+        .expect("lowers as subroutines");
+    assert_eq!(sk.program.subroutines as usize, n);
+    let mut sb = frag_batch(&sk);
+    sk.run(&mut sb, &[], &NoTextures).expect("runs");
+    assert_eq!(output(&sk, &sb, "gl_FragColor")[0][0], n as f32 / 4096.0);
+    // One more function is refused by the front end, with the limit named
+    // (it used to run as 3,000 subroutines, seconds per draw).
+    let e = link_one(Stage::Fragment, &call_chain(n + 1)).unwrap_err();
+    assert!(e.contains("function calls nested too deeply"), "{e}");
+}
+
+#[test]
+fn many_subroutines_lower_and_run() {
+    // 3,000 functions as subroutines, each called once: liveness over
+    // their returns must not sweep every block once per call.
+    let n = 3000;
+    let mut src = String::new();
+    for i in 0..n {
+        src.push_str(&format!("float f{i}(float x) {{ return x + 1.0; }}\n"));
+    }
+    src.push_str("void main() { float x = 0.0;\n");
+    for i in 0..n {
+        src.push_str(&format!("x = f{i}(x);\n"));
+    }
+    src.push_str("gl_FragColor = vec4(x / 4096.0); }\n");
+    let k = Kernel::with_inline_limit(&link_one(Stage::Fragment, &src).unwrap(), 0)
+        .expect("lowers as subroutines");
+    let mut b = frag_batch(&k);
+    k.run(&mut b, &[], &NoTextures).expect("runs");
+    assert_eq!(output(&k, &b, "gl_FragColor")[0][0], n as f32 / 4096.0);
 }
 
 #[test]

@@ -133,6 +133,12 @@ impl Shader {
 
 /// Compiles one shader object from its source strings.
 pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
+    let bytes = strings
+        .iter()
+        .fold(0usize, |n, s| n.saturating_add(s.len()));
+    if bytes > limits::MAX_SOURCE_BYTES {
+        return too_large(opts);
+    }
     let mut source = SourceMap::from_strings(opts.name.clone(), strings);
     let pp_out = pp::preprocess(
         &mut source,
@@ -190,4 +196,31 @@ pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
         module,
         diagnostics,
     }
+}
+
+/// The shader refused for its size, before any of it is copied or read.
+fn too_large(opts: &CompileOptions) -> Shader {
+    let source = SourceMap::from_strings(opts.name.clone(), &[]);
+    let language = Language::new(
+        opts.default_version.unwrap_or(Version::V110),
+        opts.compatibility_context,
+    );
+    let d = Diagnostic::error(Code::Unsupported, None, source_too_large_message())
+        .with_note("split the source, or generate less of it: shaders are rarely over 1 MiB");
+    Shader {
+        stage: opts.stage,
+        source,
+        language,
+        module: None,
+        diagnostics: vec![d],
+    }
+}
+
+/// The error for a source over [`limits::MAX_SOURCE_BYTES`], the same
+/// from every front end (a reader that stops at the limit gives it too).
+pub fn source_too_large_message() -> String {
+    format!(
+        "the shader source is larger than {} bytes, the limit",
+        limits::MAX_SOURCE_BYTES
+    )
 }

@@ -49,12 +49,27 @@ pub const MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS: u32 = 1024;
 pub const MAX_GEOMETRY_UNIFORM_COMPONENTS: u32 = 1024;
 pub const MAX_GEOMETRY_VARYING_COMPONENTS: u32 = 64;
 
+/// Largest shader source, in bytes, all strings together: a longer one is
+/// refused before it is copied. Compiling costs up to about 30 bytes of
+/// memory per source byte (a source of nothing but one-character tokens),
+/// so this keeps a compile under 1 GiB. Spans are 32-bit offsets, so the
+/// limit must stay under 4 GiB.
+pub const MAX_SOURCE_BYTES: usize = 32 << 20;
 /// Macro expansion depth at which the preprocessor gives up (recursive
 /// macros are not expanded again, so this only bounds pathological input).
 pub const MAX_MACRO_EXPANSION_DEPTH: u32 = 256;
 /// Nesting depth of parentheses, blocks and conditionals at which the parser
 /// stops with an error instead of exhausting the stack.
 pub const MAX_NESTING_DEPTH: u32 = 256;
+/// Functions that may be on the call stack at once, `main` included: a
+/// longer chain of calls is a compile error (or a link error when the
+/// chain crosses shader objects). GLSL has no recursion, so the executor
+/// inlines calls, to this depth: a chain that compiles is never what
+/// sends a program to the slower subroutine path (deep chains used to run
+/// there, seconds per draw). Inlining recurses once per level (about
+/// 30 KiB of stack each in an unoptimized build), on a thread of its own
+/// with a stack sized for this limit (`exec`'s lowering).
+pub const MAX_CALL_DEPTH: u32 = 128;
 /// Total tokens a preprocessed shader may have (guards against macro bombs).
 pub const MAX_TOKENS: usize = 4_000_000;
 /// Largest array size accepted in a declaration.

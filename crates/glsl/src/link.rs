@@ -222,6 +222,55 @@ fn remap_block(b: &mut Block, map: &Remap) {
 /// condition is a constant that rules the branch out (GLSL 1.20 constant
 /// expressions fold `if (degrees(0.0) != 0.0)`; a function called only there
 /// need not be defined, as Mesa's compile-time folding allows).
+/// Functions on the call stack at the deepest point of a call from
+/// `root` (`root` counts 1), capped just past [`limits::MAX_CALL_DEPTH`].
+/// The call graph has no cycles (each object was checked); a cycle made
+/// across objects is cut where it closes.
+fn call_depth(m: &Module, root: FunctionId) -> u32 {
+    let n = m.functions.len();
+    let callees = |f: FunctionId| {
+        let mut out = BTreeSet::new();
+        if let Some(b) = m.functions.get(f.0 as usize).and_then(|f| f.body.as_ref()) {
+            collect_calls(b, &mut out);
+        }
+        out.into_iter()
+            .filter(|c| (c.0 as usize) < n)
+            .collect::<Vec<_>>()
+    };
+    // depth[f]: 0 while unknown; an iterative post-order walk.
+    let mut depth = vec![0u32; n];
+    let mut open = vec![false; n];
+    let mut stack = vec![(root, callees(root), 0u32)];
+    open[root.0 as usize] = true;
+    loop {
+        let height = stack.len() as u32;
+        let Some((f, pending, deepest)) = stack.last_mut() else {
+            break;
+        };
+        match pending.pop() {
+            Some(c) if depth[c.0 as usize] > 0 => *deepest = (*deepest).max(depth[c.0 as usize]),
+            Some(c) if open[c.0 as usize] => {}
+            // Past the limit already: no need to know how much further.
+            Some(_) if height > limits::MAX_CALL_DEPTH => *deepest = (*deepest).max(1),
+            Some(c) => {
+                open[c.0 as usize] = true;
+                let cs = callees(c);
+                stack.push((c, cs, 0));
+            }
+            None => {
+                let (f, d) = (*f, *deepest);
+                depth[f.0 as usize] = (d + 1).min(limits::MAX_CALL_DEPTH + 1);
+                open[f.0 as usize] = false;
+                stack.pop();
+                if let Some((_, _, parent)) = stack.last_mut() {
+                    *parent = (*parent).max(depth[f.0 as usize]);
+                }
+            }
+        }
+    }
+    depth[root.0 as usize]
+}
+
 fn collect_calls(b: &Block, out: &mut BTreeSet<FunctionId>) {
     fn expr(e: &Expr, out: &mut BTreeSet<FunctionId>) {
         if let ExprKind::Call { function, .. } = &e.kind {
@@ -632,6 +681,26 @@ fn merge_stage(
                     .with_note("attach the shader object that defines it, or define it"),
                 });
             }
+        }
+    }
+
+    // Each object's chains were bounded when it compiled; one that crosses
+    // objects is bounded here, against the same limit.
+    if !errors {
+        let depth = call_depth(&merged, main);
+        if depth > limits::MAX_CALL_DEPTH {
+            errors = true;
+            push(
+                diags,
+                None,
+                Code::LinkTooMany,
+                format!(
+                    "function calls nested too deeply: the {} shader's `main' starts a chain of \
+                     {depth} nested calls across its shader objects; the limit is {}",
+                    stage.name(),
+                    limits::MAX_CALL_DEPTH
+                ),
+            );
         }
     }
 

@@ -191,6 +191,48 @@ mod tests {
     }
 
     #[test]
+    fn limits_give_the_compilers_errors() {
+        // What `shaderbox.check` and `CompileError` carry for the limits is
+        // the compiler's own message, as on the command line and in the C
+        // ABI's info log: a source over the size limit, a call chain past
+        // the call depth, nesting past the parser's depth.
+        let big = " ".repeat(glsl::limits::MAX_SOURCE_BYTES + 1);
+        let r = compile_report(&compile(&big, Stage::Fragment, None, "f"));
+        assert!(!r.ok);
+        assert_eq!(r.diagnostics[0].message, glsl::source_too_large_message());
+        assert_eq!(r.diagnostics[0].line, None);
+        assert!(
+            r.info_log.contains(&glsl::source_too_large_message()),
+            "{}",
+            r.info_log
+        );
+
+        let mut chain = String::from("float f0() { return 1.0; }\n");
+        for i in 1..200 {
+            chain += &format!("float f{i}() {{ return f{}(); }}\n", i - 1);
+        }
+        chain += "void main() { gl_FragColor = vec4(f199()); }\n";
+        let r = compile_report(&compile(&chain, Stage::Fragment, None, "f"));
+        assert!(!r.ok);
+        assert!(
+            r.diagnostics[0]
+                .message
+                .starts_with("function calls nested too deeply"),
+            "{:?}",
+            r.diagnostics
+        );
+
+        let deep = format!(
+            "void main() {{ float x = {}1.0{}; }}",
+            "(".repeat(100_000),
+            ")".repeat(100_000)
+        );
+        let r = compile_report(&compile(&deep, Stage::Fragment, None, "f"));
+        assert!(!r.ok);
+        assert_eq!(r.diagnostics[0].message, "nesting too deep");
+    }
+
+    #[test]
     fn stage_names() {
         assert_eq!(parse_stage("Vertex"), Some(Stage::Vertex));
         assert_eq!(parse_stage("frag"), Some(Stage::Fragment));

@@ -20,7 +20,8 @@ pub(super) fn inlined_cost(
     if let Some(Some(c)) = memo.get(f.0 as usize) {
         return *c;
     }
-    if depth > MAX_CALL_DEPTH {
+    // `depth` counts the frames below this one (main's is 0).
+    if depth >= MAX_CALL_DEPTH {
         return u64::MAX;
     }
     let Some(body) = m.functions.get(f.0 as usize).and_then(|f| f.body.as_ref()) else {
@@ -67,7 +68,9 @@ impl<'m> Lowerer<'m> {
             return unsupported(format!("`{}' is recursive", f.name));
         }
         if self.frames.len() >= MAX_CALL_DEPTH {
-            return unsupported("calls nested too deeply");
+            return unsupported(format!(
+                "function calls nested more than {MAX_CALL_DEPTH} deep"
+            ));
         }
         if f.params.len() != args.len() {
             return unsupported(format!("`{}' called with the wrong arguments", f.name));

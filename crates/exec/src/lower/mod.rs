@@ -72,8 +72,10 @@ use glsl::types::{Scalar, Type};
 use glsl::Span;
 use unroll::UNROLL_BUDGET;
 
-/// Deepest chain of inlined calls.
-pub const MAX_CALL_DEPTH: usize = 128;
+/// Deepest chain of inlined calls, in frames (`main`'s included): the
+/// front end refuses longer chains, so every program it accepts can be
+/// inlined as deep as it calls.
+pub const MAX_CALL_DEPTH: usize = glsl::limits::MAX_CALL_DEPTH as usize;
 
 /// Above this many expression nodes after inlining, functions become
 /// subroutines instead.

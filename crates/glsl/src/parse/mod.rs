@@ -397,6 +397,21 @@ impl<'t> Parser<'t> {
                 self.bump();
             }
         }
+        // The grammar's translation_unit (GLSL 1.10 §9 and every later
+        // version) is one or more external declarations: a shader that
+        // preprocesses to nothing is a syntax error (Mesa says so too).
+        if items.is_empty() && self.diags.is_empty() {
+            let d = Diagnostic::error(
+                Code::Syntax,
+                self.span(),
+                "the shader is empty: it declares nothing",
+            )
+            .with_note(
+                "the grammar's translation_unit needs at least one external declaration; \
+                 a shader stage needs `void main()'",
+            );
+            self.diags.push(d);
+        }
         TranslationUnit { items }
     }
 

@@ -227,9 +227,16 @@ fn quals(q: &[SpannedQualifier]) -> Vec<Qualifier> {
 
 #[test]
 fn empty_input_and_missing_eof() {
-    assert!(ok("").items.is_empty());
+    // The grammar's translation_unit needs one external declaration: an
+    // empty shader (or one of only directives) is an error, as in Mesa.
+    for src in ["", "#version 110\n", "// nothing\n#define A 1\n"] {
+        let (tu, d) = run(src, Version::V110);
+        assert!(tu.items.is_empty());
+        assert_eq!(d.len(), 1, "{src:?}: {d:?}");
+        assert_eq!(d[0].message, "the shader is empty: it declares nothing");
+    }
     let (tu, d) = parse(&[], lang(Version::V110));
-    assert!(tu.items.is_empty() && d.is_empty());
+    assert!(tu.items.is_empty() && d.len() == 1);
     // Without the final Eof the parser still terminates and reports.
     let mut t = tokens("float x", Version::V110);
     t.pop();

@@ -912,7 +912,14 @@ impl Preprocessor<'_> {
             Err(diag) => return self.diags.push(diag),
         };
         let at = self.map.physical_line(d.end.start);
-        self.map
-            .add_line_directive(at, line.wrapping_add(1), source);
+        // The line after the directive is `line + 1` up to GLSL 1.50, and
+        // `line` from 3.30 on ("as if it is compiling at line number line",
+        // 3.30 §3.3), as Mesa does.
+        let next = if self.lang.version >= Version::V330 {
+            line
+        } else {
+            line.wrapping_add(1)
+        };
+        self.map.add_line_directive(at, next, source);
     }
 }

@@ -337,6 +337,10 @@ fn builtin_macros() {
     assert_eq!(ok("#version 120\n__VERSION__"), "120");
     assert_eq!(ok("#line 10\n__LINE__\n__LINE__"), "11 12");
     assert_eq!(ok("#line 10 3\n__LINE__ __FILE__"), "11 3");
+    // From GLSL 3.30 the line after `#line L` is L itself (3.30 §3.3);
+    // up to 1.50 it is L + 1.
+    assert_eq!(ok("#version 330\n#line 10\n__LINE__\n__LINE__"), "10 11");
+    assert_eq!(ok("#version 150\n#line 10\n__LINE__"), "11");
     assert_eq!(ok("#define L __LINE__\n\nL"), "3");
     assert_eq!(
         ok("#if defined(__LINE__) && defined __FILE__\nyes\n#endif"),
@@ -354,6 +358,9 @@ fn several_source_strings() {
 
 #[test]
 fn line_directive_sets_locations() {
+    // The operands are "constant integer expressions" after macro
+    // substitution (GLSL 1.10 §3.3 to 3.30 §3.3), so `TWO+3` is line 5
+    // (Mesa's preprocessor wants an integer literal there).
     let src = "a\n#line 20 4\nb\n#define TWO 2\n#line TWO+3\nc";
     let (out, map) = run(src);
     assert!(out.diagnostics.is_empty(), "{:?}", out.diagnostics);

@@ -7,6 +7,7 @@ use crate::ast::{self, FunctionDef, FunctionProto, Qualifier};
 use crate::diag::{did_you_mean, Code, Diagnostic};
 use crate::ir::{self, ExprKind, FunctionId, LocalId, Param, ParamQualifier};
 use crate::lang::Version;
+use crate::limits;
 use crate::source::Span;
 use crate::types::{ArraySize, Type};
 
@@ -765,12 +766,19 @@ impl Analyzer {
     }
 
     /// Static recursion is an error (GLSL 1.20 §6.1; undefined in 1.10, and
-    /// not supported here either).
+    /// not supported here either). So is a chain of calls deeper than
+    /// [`limits::MAX_CALL_DEPTH`] functions (reported once, at the call
+    /// that passes the limit).
     pub fn check_recursion(&mut self) {
         let n = self.fns.len();
         // 0 = unvisited, 1 = on stack, 2 = done. Iterative DFS.
         let mut state = vec![0u8; n];
         let mut reported = vec![false; n];
+        // Functions on the stack in the deepest chain each one starts
+        // (itself included), filled in post-order; a callee still on the
+        // stack (recursion, reported above) counts as 0.
+        let mut depth = vec![0u32; n];
+        let mut too_deep = false;
         for root in 0..n {
             if state[root] != 0 {
                 continue;
@@ -806,6 +814,36 @@ impl Analyzer {
                     }
                 } else {
                     state[f] = 2;
+                    let callees = &self.fns[f].callees;
+                    let deepest = (0..callees.len())
+                        .filter_map(|i| {
+                            let c = callees[i].0 as usize;
+                            depth.get(c).map(|&d| (d, i))
+                        })
+                        .max_by_key(|&(d, i)| (d, std::cmp::Reverse(i)));
+                    depth[f] = 1 + deepest.map_or(0, |(d, _)| d);
+                    if depth[f] > limits::MAX_CALL_DEPTH && !too_deep {
+                        too_deep = true;
+                        let (_, i) = deepest.unwrap_or((0, 0));
+                        let func = &self.module.functions[f];
+                        let span = self.fns[f].call_spans.get(i).copied().unwrap_or(func.span);
+                        let name = func.name.clone();
+                        self.error(
+                            Code::BadControlFlow,
+                            span,
+                            format!(
+                                "function calls nested too deeply: `{name}' starts a chain of {} \
+                                 nested calls; the limit is {}",
+                                depth[f],
+                                limits::MAX_CALL_DEPTH
+                            ),
+                        )
+                        .notes
+                        .push(format!(
+                            "at most {} functions may be on the call stack at once, `main' included",
+                            limits::MAX_CALL_DEPTH
+                        ));
+                    }
                     stack.pop();
                 }
             }

@@ -177,6 +177,38 @@ void main() {
 }
 
 #[test]
+fn empty_shaders_are_syntax_errors() {
+    // GLSL's translation_unit is one or more external declarations.
+    fails(frag(""), Code::Syntax);
+    fails(frag("#version 120\n// only a comment\n"), Code::Syntax);
+    ok(frag("uniform float u;"));
+}
+
+#[test]
+fn sources_over_the_size_limit_are_refused_whole() {
+    let max = crate::limits::MAX_SOURCE_BYTES;
+    let main = "void main() {}\n";
+    // One byte over, in one string or spread over two: one error, nothing
+    // else looked at.
+    let over = "\n".repeat(max + 1 - main.len()) + main;
+    for s in [
+        frag(&over),
+        compile(
+            &[&over[..max / 2], &over[max / 2..]],
+            &CompileOptions::new(Stage::Fragment),
+        ),
+    ] {
+        assert_eq!(codes(&s), vec![Code::Unsupported]);
+        assert_eq!(s.diagnostics[0].message, crate::source_too_large_message());
+        assert!(
+            s.info_log().contains(&format!("larger than {max} bytes")),
+            "{}",
+            s.info_log()
+        );
+    }
+}
+
+#[test]
 fn minimal_shaders() {
     ok(frag("void main() { gl_FragColor = vec4(1.0); }"));
     ok(vert("void main() { gl_Position = ftransform(); }"));
@@ -204,6 +236,87 @@ fn undeclared_with_suggestion() {
         s.diagnostics[0].notes,
         vec!["did you mean `color'?".to_string()]
     );
+}
+
+/// A chain of `n` functions, each calling the one before, called from
+/// `main`: `n + 1` functions on the call stack at its deepest.
+fn call_chain(n: u32) -> String {
+    let mut src = String::from("float f0(float x) { return x + 0.25; }\n");
+    for i in 1..n {
+        src.push_str(&format!(
+            "float f{i}(float x) {{ return f{}(x); }}\n",
+            i - 1
+        ));
+    }
+    src + &format!("void main() {{ gl_FragColor = vec4(f{}(0.0)); }}\n", n - 1)
+}
+
+#[test]
+fn call_chains_deeper_than_the_limit_are_refused() {
+    let max = crate::limits::MAX_CALL_DEPTH;
+    ok(frag(&call_chain(max - 1)));
+    let s = frag(&call_chain(max));
+    fails(s.clone(), Code::BadControlFlow);
+    let d = &s.diagnostics[0];
+    assert_eq!(
+        d.message,
+        format!(
+            "function calls nested too deeply: `main' starts a chain of {} nested calls; \
+             the limit is {max}",
+            max + 1
+        )
+    );
+    // A chain that main never reaches is refused too, once, where it
+    // passes the limit; so is a long one, quickly.
+    let s = frag(&call_chain(4000).replace(
+        "void main() { gl_FragColor = vec4(f3999(0.0)); }",
+        "void main() {}",
+    ));
+    fails(s.clone(), Code::BadControlFlow);
+    assert!(s.diagnostics[0]
+        .message
+        .contains(&format!("`f{max}' starts a chain of {}", max + 1)));
+}
+
+#[test]
+fn call_chains_across_shader_objects_are_bounded_at_link() {
+    // Two objects, each within the limit, whose chain together is not.
+    let max = crate::limits::MAX_CALL_DEPTH;
+    let half = max / 2 + 1;
+    let chain = |from: u32, to: u32, last: &str| {
+        let mut src = format!("float g{to}(float x);\n");
+        src += &format!("float g{from}(float x) {{ return {last}; }}\n");
+        for i in from + 1..to {
+            src += &format!("float g{i}(float x) {{ return g{}(x); }}\n", i - 1);
+        }
+        src
+    };
+    let low = frag(&chain(0, half, "x"));
+    let high = frag(&format!(
+        "float g{}(float x);\n{}void main() {{ gl_FragColor = vec4(g{}(1.0)); }}\n",
+        half - 1,
+        chain(half, 2 * half, &format!("g{}(x)", half - 1)),
+        2 * half - 1
+    ));
+    ok(low.clone());
+    ok(high.clone());
+    let p = crate::link::link(&[&low, &high]);
+    assert!(!p.ok());
+    assert!(
+        p.info_log().contains(&format!(
+            "`main' starts a chain of {} nested calls across its shader objects; the limit is {max}",
+            max + 1
+        )),
+        "{}",
+        p.info_log()
+    );
+    // Within the limit, the same two objects link.
+    let short = frag(&format!(
+        "float g{}(float x);\nvoid main() {{ gl_FragColor = vec4(g{}(1.0)); }}\n",
+        half - 1,
+        half - 1
+    ));
+    assert!(crate::link::link(&[&low, &short]).ok());
 }
 
 #[test]
