@@ -50,6 +50,10 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return false;
         }
+        if count > crate::MAX_DRAW_VERTICES {
+            self.set_error(GL_OUT_OF_MEMORY);
+            return false;
+        }
         if !self.feedback_allows(mode) {
             return false;
         }
@@ -88,7 +92,11 @@ impl Context {
         if !self.check_draw(mode, count) {
             return;
         }
-        let count = count.min(1 << 24) as u32;
+        if count as i64 * instances as i64 > crate::MAX_DRAW_INVOCATIONS {
+            self.set_error(GL_OUT_OF_MEMORY);
+            return;
+        }
+        let count = count as u32;
         let indices: Vec<u32> = (0..count).map(|i| i.saturating_add(first as u32)).collect();
         self.draw_list(mode, &indices, None, 0, instances as u32);
     }
@@ -196,6 +204,10 @@ impl Context {
             return;
         }
         if !self.check_draw(mode, count) {
+            return;
+        }
+        if count as i64 * instances as i64 > crate::MAX_DRAW_INVOCATIONS {
+            self.set_error(GL_OUT_OF_MEMORY);
             return;
         }
         let Some(idx) = self.read_indices(count as usize, ty, &indices) else {

@@ -425,10 +425,13 @@ impl Context {
             GL_UNSIGNED_SHORT => 2,
             _ => 4,
         };
-        // The whole indices that fit in the buffer, at most 2^24 of them,
-        // converted in one pass per type (the loops vectorize).
+        // The whole indices that fit in the buffer (the count is at most
+        // MAX_DRAW_VERTICES, checked with the draw), converted in one pass
+        // per type (the loops vectorize).
         let avail = bytes.get(base..).unwrap_or(&[]);
-        let n = count.min(1 << 24).min(avail.len() / size);
+        let n = count
+            .min(crate::MAX_DRAW_VERTICES as usize)
+            .min(avail.len() / size);
         let src = avail.get(..n * size).unwrap_or(&[]);
         if size == 4 && words(src).is_some() {
             // 32-bit indices read where they are (no copy of a large

@@ -164,6 +164,12 @@ pub const MAX_VERTEX_ATTRIBS: usize = glsl::limits::MAX_VERTEX_ATTRIBS as usize;
 pub const MAX_DRAW_BUFFERS: usize = glsl::limits::MAX_DRAW_BUFFERS as usize;
 /// Largest texture / renderbuffer / viewport dimension.
 pub const MAX_TEXTURE_SIZE: i32 = 8192;
+/// Most vertices (array elements or indices) one draw call takes: a
+/// larger draw is GL_OUT_OF_MEMORY, not an allocation or a run without end.
+pub const MAX_DRAW_VERTICES: i32 = 1 << 24;
+/// Most vertices times instances of one draw call (GL_OUT_OF_MEMORY
+/// beyond, as for [`MAX_DRAW_VERTICES`]).
+pub const MAX_DRAW_INVOCATIONS: i64 = 1 << 28;
 /// Largest extent of a three-dimensional image (3D textures, and the
 /// layers and sides of array textures): GL_MAX_3D_TEXTURE_SIZE and
 /// GL_MAX_ARRAY_TEXTURE_LAYERS.

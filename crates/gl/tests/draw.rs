@@ -522,3 +522,24 @@ fn glsl_130_inputs_outputs_and_flat_varyings() {
     assert!(close(images[1].0, [0.0, 1.0, 0.0, 1.0]), "{:?}", images[1]);
     assert!(close(images[1].1, [0.0, 0.5, 0.0, 0.5]), "{:?}", images[1]);
 }
+
+/// A draw beyond the vertex limits is GL_OUT_OF_MEMORY at once, not a
+/// truncated picture or a run without end (docs/RELIABILITY.md, Limits).
+#[test]
+fn draws_beyond_the_vertex_limits_are_out_of_memory() {
+    let mut ctx = Context::new(4, 4);
+    ctx.draw_arrays(GL_POINTS, 0, i32::MAX);
+    assert_eq!(ctx.get_error(), GL_OUT_OF_MEMORY);
+    ctx.draw_arrays_instanced(GL_POINTS, 0, 1 << 20, 1 << 20);
+    assert_eq!(ctx.get_error(), GL_OUT_OF_MEMORY);
+    ctx.draw_elements(
+        GL_POINTS,
+        gl::MAX_DRAW_VERTICES + 1,
+        GL_UNSIGNED_INT,
+        ArrayData::from_u32(&[0]),
+    );
+    assert_eq!(ctx.get_error(), GL_OUT_OF_MEMORY);
+    // At the limits: drawn, no error.
+    ctx.draw_arrays(GL_POINTS, 0, 4);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+}
