@@ -529,7 +529,7 @@ impl Analyzer {
         }
     }
 
-    fn set_var_type(&mut self, v: Var, ty: Type) {
+    pub(crate) fn set_var_type(&mut self, v: Var, ty: Type) {
         match v {
             Var::Global(g) => {
                 if let Some(g) = self.module.globals.get_mut(g.0 as usize) {
