@@ -37,6 +37,7 @@ fn slot(name: &str, offset: usize, components: usize) -> Slot {
         written: true,
         location: None,
         interpolation: None,
+        block: None,
     }
 }
 
@@ -822,6 +823,7 @@ fn scissor_and_multiple_draw_buffers() {
                 written: true,
                 location: None,
                 interpolation: None,
+                block: None,
             }],
         ),
         f: Box::new(|b| {

@@ -11,6 +11,12 @@ fn find<'a>(slots: &'a [Slot], name: &str) -> Option<&'a Slot> {
     slots.iter().find(|s| s.name == name)
 }
 
+/// The vertex output feeding a fragment input named `link_name` (see
+/// [`Slot::link_name`]).
+fn find_link<'a>(slots: &'a [Slot], link_name: &str) -> Option<&'a Slot> {
+    slots.iter().find(|s| s.link_name() == link_name)
+}
+
 /// The vertex kernel's outputs the pipeline itself reads.
 pub(crate) struct VsLayout {
     pub outputs: usize,
@@ -128,7 +134,8 @@ impl FsLayout {
         let mut point_coord = None;
         let mut primitive_id = None;
         for slot in &fs.inputs {
-            match slot.name.as_str() {
+            let link_name = slot.link_name();
+            match link_name.as_ref() {
                 "gl_FragCoord" => frag_coord = Some(slot.offset),
                 "gl_PrimitiveID" => primitive_id = Some(slot.offset),
                 "gl_FrontFacing" => front_facing = Some(slot.offset),
@@ -143,10 +150,10 @@ impl FsLayout {
                         ),
                         other => (other, None, false),
                     };
-                    let front = find(&vs.outputs, front_name);
+                    let front = find_link(&vs.outputs, front_name);
                     let back = back_name
                         .filter(|_| two_sided)
-                        .and_then(|n| find(&vs.outputs, n));
+                        .and_then(|n| find_link(&vs.outputs, n));
                     let interpolation = slot
                         .interpolation
                         .or_else(|| front.and_then(|s| s.interpolation))

@@ -318,11 +318,19 @@ fn block_member_slots(
                 written: false,
                 location: None,
                 interpolation: member.interpolation.or(g.interpolation),
+                block: None,
             });
             at += components;
         }
     }
     (at == offset + n).then_some(slots)
+}
+
+/// The block of `g` when it is a member of an input or output block
+/// declared without an instance name (see [`Slot::block`]).
+fn unnamed_block(m: &Module, g: &glsl::ir::Global) -> Option<String> {
+    let b = m.blocks.get(g.block?.0 as usize)?;
+    (b.instance.is_none() && b.storage != Storage::Uniform).then(|| b.name.clone())
 }
 
 /// `ftransform()` reads `gl_ModelViewProjectionMatrix` and `gl_Vertex`,
@@ -451,6 +459,7 @@ impl<'m> Lowerer<'m> {
                     written,
                     location: g.location,
                     interpolation: g.interpolation,
+                    block: unnamed_block(m, g),
                 }],
             };
             if is_input && (g.read || self.used[i]) {
@@ -479,6 +488,7 @@ impl<'m> Lowerer<'m> {
                     written: true,
                     location: None,
                     interpolation: None,
+                    block: None,
                 });
             }
         }
