@@ -388,7 +388,7 @@ impl Analyzer {
     /// Reports an undeclared name with suggestions.
     pub fn undeclared(&mut self, name: &ast::Ident, function: bool) {
         let what = if function { "function " } else { "" };
-        if !function && self.hidden_builtins.iter().any(|h| *h == name.name) {
+        if !function && self.hidden_builtins.contains(&name.name) {
             self.error(
                 Code::Undeclared,
                 name.span,
