@@ -1,5 +1,6 @@
 //! Where things live in the vertex and fragment kernels' interfaces, and
-//! how vertex outputs feed fragment inputs (matched by name; gl_Color from
+//! how vertex outputs feed fragment inputs (matched by name, block members
+//! as `Block.member` whatever their instance names; gl_Color from
 //! gl_FrontColor / gl_BackColor, gl_SecondaryColor likewise).
 
 use crate::ex::{Batch, Interface, Slot, LANES};
