@@ -947,20 +947,7 @@ impl Analyzer {
     /// left out are no longer names. Recorded in
     /// [`ir::Module::per_vertex_out`] for the linker.
     fn redeclare_per_vertex(&mut self, b: &InterfaceBlock) {
-        // The output block's members, in the order of §7.1 (the
-        // compatibility profile's last).
-        const MEMBERS: [&str; 10] = [
-            "gl_Position",
-            "gl_PointSize",
-            "gl_ClipDistance",
-            "gl_ClipVertex",
-            "gl_FrontColor",
-            "gl_BackColor",
-            "gl_FrontSecondaryColor",
-            "gl_BackSecondaryColor",
-            "gl_TexCoord",
-            "gl_FogFragCoord",
-        ];
+        const MEMBERS: [&str; 10] = PER_VERTEX_OUT_MEMBERS;
         if let Some((inst, _)) = &b.instance {
             self.error(
                 Code::BadQualifier,
@@ -975,6 +962,16 @@ impl Analyzer {
                 b.name.span,
                 "`gl_PerVertex' is already redeclared",
             );
+            return;
+        }
+        if let Some(name) = self.per_vertex_member_redeclared.clone() {
+            self.error(
+                Code::Redeclared,
+                b.name.span,
+                format!("`gl_PerVertex' is redeclared after its member `{name}' is redeclared on its own"),
+            )
+            .notes
+            .push("redeclare the member inside the block only".into());
             return;
         }
         // The members are built-in names: checked as the prelude's are
@@ -1285,6 +1282,21 @@ impl Analyzer {
         out
     }
 }
+
+/// The members of the output `gl_PerVertex` block, in the order of GLSL
+/// 1.50 §7.1 (the compatibility profile's last).
+pub(crate) const PER_VERTEX_OUT_MEMBERS: [&str; 10] = [
+    "gl_Position",
+    "gl_PointSize",
+    "gl_ClipDistance",
+    "gl_ClipVertex",
+    "gl_FrontColor",
+    "gl_BackColor",
+    "gl_FrontSecondaryColor",
+    "gl_BackSecondaryColor",
+    "gl_TexCoord",
+    "gl_FogFragCoord",
+];
 
 fn b_is(b: &InterfaceBlock, q: Qualifier) -> bool {
     b.qualifiers.iter().any(|x| x.qualifier == q)

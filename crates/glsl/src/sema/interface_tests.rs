@@ -576,6 +576,16 @@ fn per_vertex_output_redeclared() {
         ),
         Code::Redeclared,
     );
+    // A member is redeclared in the block or on its own, not both.
+    for src in [
+        "out float gl_ClipDistance[];\nout gl_PerVertex { vec4 gl_Position; float gl_ClipDistance[4]; };",
+        "out gl_PerVertex { vec4 gl_Position; };\nout float gl_ClipDistance[4];",
+    ] {
+        fails(
+            &vert(&format!("#version 150\n{src}\nvoid main() {{}}")),
+            Code::Redeclared,
+        );
+    }
     // A sized gl_ClipDistance sizes the built-in.
     let s = vert(
         "#version 150\nout gl_PerVertex { vec4 gl_Position; float gl_ClipDistance[3]; };\n\

@@ -296,6 +296,10 @@ pub(crate) struct Analyzer {
     /// Built-in outputs a redeclared `gl_PerVertex` left out: no longer
     /// names (GLSL 1.50 §7.1).
     pub hidden_builtins: Vec<SmolStr>,
+    /// A member of the output `gl_PerVertex` redeclared on its own
+    /// (`out float gl_ClipDistance[4];`): the block can then not be
+    /// redeclared, nor the member after the block (GLSL 1.50 §7.1).
+    pub per_vertex_member_redeclared: Option<SmolStr>,
 }
 
 impl Analyzer {
@@ -333,6 +337,7 @@ impl Analyzer {
             frag_coord_redeclared: None,
             geometry_input_len: None,
             hidden_builtins: Vec::new(),
+            per_vertex_member_redeclared: None,
         }
     }
 
