@@ -31,6 +31,24 @@ pub struct Slot {
     /// The interpolation qualifier of a varying (`flat`: the provoking
     /// vertex's value, not interpolated).
     pub interpolation: Option<glsl::ir::Interpolation>,
+    /// For a member of an input or output block without an instance name:
+    /// the block's name. The slot keeps the member's own name (its name
+    /// in the GL API), while stages match it as `Block.member`, as they
+    /// do the members of a named instance (see [`Slot::link_name`]).
+    pub block: Option<String>,
+}
+
+impl Slot {
+    /// The name by which a vertex output feeds the fragment input of the
+    /// same name: blocks match by block name whatever their instance names,
+    /// or whether they have one (GLSL 1.50 §4.3.7), so a member of a block
+    /// is `Block.member` either way.
+    pub fn link_name(&self) -> std::borrow::Cow<'_, str> {
+        match &self.block {
+            Some(b) => format!("{b}.{}", self.name).into(),
+            None => self.name.as_str().into(),
+        }
+    }
 }
 
 /// Where each interface variable lives (see the crate docs).

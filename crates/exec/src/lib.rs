@@ -63,7 +63,10 @@
 //!   `gl_FragColor`, `gl_FragData`, `gl_FragDepth` (fragment); the
 //!   instance of a named input or output block is one slot per member
 //!   (per element), named `Block.member` (`Block[i].member`) after the
-//!   block, with the member's interpolation qualifier. Built-ins
+//!   block, with the member's interpolation qualifier; a member of a
+//!   block without an instance name is a slot of its own name that
+//!   records its block ([`Slot::block`]), and both kinds match between
+//!   stages as `Block.member` ([`Slot::link_name`]). Built-ins
 //!   the shader never names do not exist in the module and are absent;
 //!   [`Slot::written`] tells whether an output is statically written.
 //!   Uniforms: every uniform the shader reads, in declaration order (plus

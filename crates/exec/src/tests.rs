@@ -931,7 +931,8 @@ fn interface_layout() {
 
 /// A named output block's instance is one slot per member (per element),
 /// named after the block with the member's interpolation qualifier; an
-/// unnamed block's members are plain varyings.
+/// unnamed block's members are varyings of their own names that remember
+/// their block.
 #[test]
 fn block_members_are_slots_named_after_the_block() {
     use glsl::ir::Interpolation;
@@ -954,6 +955,10 @@ fn block_members_are_slots_named_after_the_block() {
     assert_eq!(slot("Blk.s"), (1, None));
     assert_eq!(slot("Arr[1].i"), (1, Some(Interpolation::Flat)));
     assert_eq!(slot("q"), (3, None));
+    // The unnamed block's member keeps its name and links as `Plain.q`,
+    // as a named instance's member would.
+    assert_eq!(i.output("q").unwrap().link_name(), "Plain.q");
+    assert_eq!(i.output("Blk.f").unwrap().link_name(), "Blk.f");
     assert!(i.output("inst").is_none());
     let (f, n) = (i.output("Blk.f").unwrap(), i.output("Blk.n").unwrap());
     assert_eq!(n.offset, f.offset + 1);

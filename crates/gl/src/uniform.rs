@@ -125,7 +125,7 @@ impl UniformTable {
                     continue;
                 }
                 if let Some(b) = g.block.and_then(|b| m.blocks.get(b.0 as usize)) {
-                    t.add_block(b, si, m);
+                    t.add_block(b, si, m, &g.name);
                     continue;
                 }
                 if let Some(u) = t.globals.iter().find(|u| u.name == g.name) {
@@ -180,8 +180,11 @@ impl UniformTable {
 
     /// Adds uniform block `b` of stage `si` (module `m`) when first seen;
     /// a block another stage declared already is marked referenced by this
-    /// one (the linker checked both declare it alike).
-    fn add_block(&mut self, b: &InterfaceBlock, si: usize, m: &Module) {
+    /// one (the linker checked both declare it alike). `global` is the
+    /// executor global of `b` being added: an instance or a member. Every
+    /// one gets its [`BlockGlobal`], as the instance names of one block
+    /// may differ between shader objects and stages (GLSL 1.50 §4.3.7).
+    fn add_block(&mut self, b: &InterfaceBlock, si: usize, m: &Module, global: &str) {
         let stage_slot = match m.stage {
             glsl::Stage::Vertex => 0,
             glsl::Stage::Geometry => 1,
@@ -192,14 +195,43 @@ impl UniformTable {
             Some(n) => (0..n).map(|i| format!("{}[{i}]", b.name)).collect(),
             None => vec![b.name.clone()],
         };
+        let members: Vec<(Type, bool)> = b.members.iter().map(|mb| (mb.ty, mb.row_major)).collect();
+        let (offsets, data_size) = block_offsets(&members, &m.structs);
+        let member = |i: usize| {
+            let mb = &b.members[i];
+            (mb.ty, offsets[i], mb.row_major)
+        };
         if let Some(first) = self.blocks.iter().position(|x| x.name == names[0]) {
             for blk in self.blocks.iter_mut().skip(first).take(elements) {
                 blk.referenced[stage_slot] = true;
             }
+            if self.block_globals.iter().any(|x| x.name == global) {
+                return;
+            }
+            let bg = match &b.instance {
+                Some(_) => BlockGlobal {
+                    name: global.to_string(),
+                    stage: si,
+                    first_block: first,
+                    elements,
+                    members: (0..b.members.len()).map(member).collect(),
+                },
+                None => {
+                    let Some(i) = b.members.iter().position(|mb| mb.name == global) else {
+                        return;
+                    };
+                    BlockGlobal {
+                        name: global.to_string(),
+                        stage: si,
+                        first_block: first,
+                        elements: 1,
+                        members: vec![member(i)],
+                    }
+                }
+            };
+            self.block_globals.push(bg);
             return;
         }
-        let members: Vec<(Type, bool)> = b.members.iter().map(|mb| (mb.ty, mb.row_major)).collect();
-        let (offsets, data_size) = block_offsets(&members, &m.structs);
         let first_block = self.blocks.len();
         let mut leaves = Vec::new();
         for (mb, &off) in b.members.iter().zip(&offsets) {
@@ -232,13 +264,9 @@ impl UniformTable {
                 uniforms: uniforms.clone(),
             });
         }
-        let member = |i: usize| {
-            let mb = &b.members[i];
-            (mb.ty, offsets[i], mb.row_major)
-        };
         match &b.instance {
-            Some(inst) => self.block_globals.push(BlockGlobal {
-                name: inst.clone(),
+            Some(_) => self.block_globals.push(BlockGlobal {
+                name: global.to_string(),
                 stage: si,
                 first_block,
                 elements,

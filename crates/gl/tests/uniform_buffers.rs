@@ -319,3 +319,46 @@ void main() { o = pal[0].c + pal[1].c + vec4(0.0, 0.0, mvp[0][0], 0.0); }
     assert_close(pixel(&mut ctx), [0.25, 0.75, 0.5, 1.0]);
     assert_close(ctx.read_pixels_f32(0, 0, 1, 1)[0], [0.0, 0.0, 1.0, 1.0]);
 }
+
+/// The instance names of one block may differ between stages (GLSL 1.50
+/// §4.3.7): each stage reads the block through its own instance. An
+/// output block without an instance name feeds the fragment stage's
+/// named instance of the block.
+#[test]
+fn instance_names_differ_between_stages() {
+    let vs = "#version 150
+uniform Col { vec4 c; } vcol;
+in vec4 pos;
+out Pass { vec4 v; };
+void main() { gl_Position = pos; v = vcol.c; }
+";
+    let fs = "#version 150
+uniform Col { vec4 c; } fcol;
+in Pass { vec4 v; } pass;
+out vec4 o;
+void main() { o = pass.v * 0.5 + fcol.c.wzyx * 0.5; }
+";
+    let mut ctx = Context::new(8, 8);
+    let p = program(&mut ctx, vs, fs);
+    let quad = [
+        -1.0, -1.0, 0.0, 1.0, 1.0, -1.0, 0.0, 1.0, -1.0, 1.0, 0.0, 1.0, 1.0, 1.0, 0.0, 1.0,
+    ];
+    let pos = ctx.get_attrib_location(p, "pos") as u32;
+    ctx.vertex_attrib_pointer(pos, 4, GL_FLOAT, false, 0, ArrayData::from_f32(&quad));
+    ctx.enable_vertex_attrib_array(pos);
+    let bytes = f32_bytes(&[0.2, 0.4, 0.6, 1.0]);
+    let b = ctx.gen_buffers(1)[0];
+    ctx.bind_buffer(GL_UNIFORM_BUFFER, b);
+    ctx.buffer_data(
+        GL_UNIFORM_BUFFER,
+        bytes.len() as isize,
+        Some(&bytes),
+        GL_STATIC_DRAW,
+    );
+    ctx.bind_buffer_base(GL_UNIFORM_BUFFER, 0, b);
+    ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+    assert_eq!(ctx.take_draw_error(), None);
+    // Half the colour through the varying, half its reverse from the
+    // fragment stage's instance.
+    assert_close(pixel(&mut ctx), [0.6, 0.5, 0.5, 0.6]);
+}

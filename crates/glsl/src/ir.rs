@@ -171,6 +171,11 @@ pub struct BlockMember {
     pub interpolation: Option<Interpolation>,
     pub centroid: bool,
     pub invariant: bool,
+    /// For an input or output block's array member declared without a
+    /// size: the largest constant index used through a named instance,
+    /// plus one (GLSL 1.50 §4.3.7 sizes it as an unsized array global;
+    /// the linker does).
+    pub implicit_size: u32,
 }
 
 /// An interface block (GLSL 1.40 §4.3.5.1 uniform blocks, 1.50 §4.3.7
@@ -648,6 +653,11 @@ pub struct Module {
     pub frag_coord: FragCoordConventions,
     /// A geometry shader's layouts (all `None` in other stages).
     pub geometry: GeometryLayout,
+    /// The members of a redeclared output `gl_PerVertex` block (GLSL 1.50
+    /// §7.1), in order; `None` when the shader keeps the built-in block.
+    /// The members stay the built-in globals; the linker checks that the
+    /// objects of a stage agree on the redeclaration.
+    pub per_vertex_out: Option<Vec<BlockMember>>,
 }
 
 /// The primitive a geometry shader takes (`layout(...) in;`, GLSL 1.50

@@ -40,7 +40,9 @@
 //!   vertex → geometry → fragment interfaces). Not yet: the
 //!   GL_EXT/ARB_geometry_shader4 form on 1.10/1.20 (`varying in`,
 //!   `gl_PositionIn[]`...; a geometry shader needs `#version 150`),
-//!   redeclaring `gl_PerVertex`, and the uniform match between the vertex
+//!   redeclaring the geometry stage's input `gl_PerVertex` (the output
+//!   block's redeclaration is done, [`ir::Module::per_vertex_out`]), and
+//!   the uniform match between the vertex
 //!   and fragment stages of a program with a geometry stage. Nothing runs
 //!   a geometry stage yet (exec refuses it).
 //! - Integer operations the spec leaves undefined have the executor's

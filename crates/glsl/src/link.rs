@@ -363,6 +363,7 @@ fn merge_stage(
         blocks: Vec::new(),
         frag_coord: Default::default(),
         geometry: Default::default(),
+        per_vertex_out: None,
     };
     let mut errors = false;
     // Global name -> (merged id, object that declared it first).
@@ -526,6 +527,10 @@ fn merge_stage(
     let objects: Vec<(usize, &ir::Module)> = remaps.iter().map(|(o, m, _)| (*o, *m)).collect();
     if !check_frag_coord_redeclared(&objects, diags) {
         errors = true;
+    }
+    match check_per_vertex_redeclared(&objects, diags) {
+        Some(members) => merged.per_vertex_out = members,
+        None => errors = true,
     }
 
     // Functions: definitions first, so prototypes resolve to them.
@@ -753,6 +758,7 @@ fn merge_stage(
             _ => {}
         }
     }
+    size_block_members(&mut merged);
 
     // GLSL 1.10 §7.1: "All executions of a well-formed vertex shader must
     // write a value into [gl_Position]"; a vertex stage that never does is
@@ -838,6 +844,77 @@ fn check_frag_coord_redeclared(
         }
     }
     ok
+}
+
+/// GLSL 1.50 §7.1: once one object of a stage redeclares the output
+/// `gl_PerVertex`, every object that uses a member of it redeclares it,
+/// all the same way. The stage's redeclaration, or `None` after an error.
+fn check_per_vertex_redeclared(
+    objects: &[(usize, &ir::Module)],
+    diags: &mut Vec<LinkDiagnostic>,
+) -> Option<Option<Vec<ir::BlockMember>>> {
+    let Some(&(_, first)) = objects.iter().find(|(_, m)| m.per_vertex_out.is_some()) else {
+        return Some(None);
+    };
+    let members = first.per_vertex_out.as_ref()?;
+    // The built-in outputs a redeclaration can name; a shader that uses
+    // one without redeclaring sees the whole built-in block.
+    let block_member = |g: &Global| {
+        g.builtin
+            && matches!(
+                g.name.as_str(),
+                "gl_Position"
+                    | "gl_PointSize"
+                    | "gl_ClipDistance"
+                    | "gl_ClipVertex"
+                    | "gl_FrontColor"
+                    | "gl_BackColor"
+                    | "gl_FrontSecondaryColor"
+                    | "gl_BackSecondaryColor"
+                    | "gl_TexCoord"
+                    | "gl_FogFragCoord"
+            )
+    };
+    let mut ok = true;
+    for &(obj, m) in objects {
+        let stage = m.stage.name();
+        match &m.per_vertex_out {
+            Some(other) => {
+                let same = other.len() == members.len()
+                    && other.iter().zip(members).all(|(a, b)| {
+                        a.name == b.name && m.type_name(a.ty) == first.type_name(b.ty)
+                    });
+                if !same {
+                    ok = false;
+                    push(
+                        diags,
+                        Some(obj),
+                        Code::LinkInterfaceMismatch,
+                        format!("this {stage} shader object redeclares `gl_PerVertex' with other members than another object of the stage"),
+                    );
+                }
+            }
+            None => {
+                if let Some(g) = m
+                    .globals
+                    .iter()
+                    .find(|g| block_member(g) && (g.read || g.written))
+                {
+                    ok = false;
+                    push(
+                        diags,
+                        Some(obj),
+                        Code::LinkInterfaceMismatch,
+                        format!(
+                            "this {stage} shader object uses `{}' without redeclaring `gl_PerVertex', while another object of the stage redeclares it; redeclare it the same way in every object that uses its members",
+                            g.name
+                        ),
+                    );
+                }
+            }
+        }
+    }
+    ok.then(|| Some(members.clone()))
 }
 
 fn merge_geometry_layout(
@@ -997,7 +1074,13 @@ fn merge_blocks(
         let id = match merged.blocks.iter().position(same_kind) {
             Some(i) => {
                 let x = &merged.blocks[i];
-                if !same_members(&x.members, &members, merged) || x.layout != b.layout {
+                // The same block in two objects of a stage is one block:
+                // an array in one is the same array in the other (GLSL
+                // 1.50 §4.3.7); instance names may differ.
+                if !same_members(&x.members, &members, merged)
+                    || x.layout != b.layout
+                    || x.array != b.array
+                {
                     *errors = true;
                     diags.push(LinkDiagnostic {
                         shader: Some(obj),
@@ -1005,11 +1088,14 @@ fn merge_blocks(
                             Code::LinkInterfaceMismatch,
                             b.span,
                             format!(
-                                "block `{}' is declared with different members or layout in two shader objects",
+                                "block `{}' is declared with different members, layout or array size in two shader objects",
                                 b.name
                             ),
                         ),
                     });
+                }
+                for (x, y) in merged.blocks[i].members.iter_mut().zip(&members) {
+                    x.implicit_size = x.implicit_size.max(y.implicit_size);
                 }
                 ir::BlockId(i as u32)
             }
@@ -1033,6 +1119,47 @@ fn merge_blocks(
             let blk = &mut merged.blocks[id.0 as usize];
             if !blk.globals.contains(&mg) {
                 blk.globals.push(mg);
+            }
+        }
+    }
+}
+
+/// Unsized array members of input and output blocks take their size from
+/// their use (GLSL 1.50 §4.3.7): without an instance name the member's
+/// global is sized like any unsized array (before this runs); with one, the
+/// largest constant index through the instance sizes the member in the
+/// block and in the instance's struct.
+fn size_block_members(merged: &mut Module) {
+    for b in &mut merged.blocks {
+        for (k, mb) in b.members.iter_mut().enumerate() {
+            if mb.ty.array != Some(ArraySize::Unsized) {
+                continue;
+            }
+            match &b.instance {
+                None => {
+                    if let Some(g) = b
+                        .globals
+                        .iter()
+                        .map(|g| &merged.globals[g.0 as usize])
+                        .find(|g| g.name == mb.name)
+                    {
+                        mb.ty = g.ty;
+                    }
+                }
+                Some(_) => {
+                    let n = mb.implicit_size.max(1);
+                    mb.ty.array = Some(ArraySize::Sized(n));
+                    let instance = b.globals.first().map(|g| merged.globals[g.0 as usize].ty);
+                    if let Some(Base::Struct(sid)) = instance.map(|t| t.base) {
+                        if let Some(m) = merged
+                            .structs
+                            .get_mut(sid.0 as usize)
+                            .and_then(|s| s.members.get_mut(k))
+                        {
+                            m.ty.array = Some(ArraySize::Sized(n));
+                        }
+                    }
+                }
             }
         }
     }
@@ -1090,11 +1217,13 @@ fn check_blocks(vm: &Module, fm: &Module, diags: &mut Vec<LinkDiagnostic>) {
                     })
                     && vb.layout == fb.layout
                     // A geometry input block is the array of the vertex
-                    // stage's output block, one per vertex.
+                    // stage's output block, one per vertex. Otherwise an
+                    // array instance matches an array of the same size
+                    // (GLSL 1.50 §4.3.7).
                     && if fb.storage == Storage::GeometryInput {
                         vb.array.is_none()
                     } else {
-                        vb.array.is_some() == fb.array.is_some()
+                        vb.array == fb.array
                     };
                 if !same {
                     push(
@@ -1102,7 +1231,7 @@ fn check_blocks(vm: &Module, fm: &Module, diags: &mut Vec<LinkDiagnostic>) {
                         None,
                         Code::LinkInterfaceMismatch,
                         format!(
-                            "block `{}' has different members in the {pn} and {cn} shaders",
+                            "block `{}' has different members or array sizes in the {pn} and {cn} shaders",
                             fb.name
                         ),
                     );

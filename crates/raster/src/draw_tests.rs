@@ -38,6 +38,7 @@ fn slot(name: &str, offset: usize, components: usize) -> Slot {
         location: None,
         index: None,
         interpolation: None,
+        block: None,
     }
 }
 
@@ -824,6 +825,7 @@ fn scissor_and_multiple_draw_buffers() {
                 location: None,
                 index: None,
                 interpolation: None,
+                block: None,
             }],
         ),
         f: Box::new(|b| {

@@ -1,5 +1,6 @@
 //! Where things live in the vertex and fragment kernels' interfaces, and
-//! how vertex outputs feed fragment inputs (matched by name; gl_Color from
+//! how vertex outputs feed fragment inputs (matched by name, block members
+//! as `Block.member` whatever their instance names; gl_Color from
 //! gl_FrontColor / gl_BackColor, gl_SecondaryColor likewise).
 
 use crate::ex::{Batch, Interface, Slot, LANES};
@@ -9,6 +10,12 @@ use glsl::types::ArraySize;
 
 fn find<'a>(slots: &'a [Slot], name: &str) -> Option<&'a Slot> {
     slots.iter().find(|s| s.name == name)
+}
+
+/// The vertex output feeding a fragment input named `link_name` (see
+/// [`Slot::link_name`]).
+fn find_link<'a>(slots: &'a [Slot], link_name: &str) -> Option<&'a Slot> {
+    slots.iter().find(|s| s.link_name() == link_name)
 }
 
 /// The vertex kernel's outputs the pipeline itself reads.
@@ -132,7 +139,8 @@ impl FsLayout {
         let mut point_coord = None;
         let mut primitive_id = None;
         for slot in &fs.inputs {
-            match slot.name.as_str() {
+            let link_name = slot.link_name();
+            match link_name.as_ref() {
                 "gl_FragCoord" => frag_coord = Some(slot.offset),
                 "gl_PrimitiveID" => primitive_id = Some(slot.offset),
                 "gl_FrontFacing" => front_facing = Some(slot.offset),
@@ -147,10 +155,10 @@ impl FsLayout {
                         ),
                         other => (other, None, false),
                     };
-                    let front = find(&vs.outputs, front_name);
+                    let front = find_link(&vs.outputs, front_name);
                     let back = back_name
                         .filter(|_| two_sided)
-                        .and_then(|n| find(&vs.outputs, n));
+                        .and_then(|n| find_link(&vs.outputs, n));
                     let interpolation = slot
                         .interpolation
                         .or_else(|| front.and_then(|s| s.interpolation))

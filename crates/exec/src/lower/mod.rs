@@ -321,11 +321,19 @@ fn block_member_slots(
                 location: None,
                 index: None,
                 interpolation: member.interpolation.or(g.interpolation),
+                block: None,
             });
             at += components;
         }
     }
     (at == offset + n).then_some(slots)
+}
+
+/// The block of `g` when it is a member of an input or output block
+/// declared without an instance name (see [`Slot::block`]).
+fn unnamed_block(m: &Module, g: &glsl::ir::Global) -> Option<String> {
+    let b = m.blocks.get(g.block?.0 as usize)?;
+    (b.instance.is_none() && b.storage != Storage::Uniform).then(|| b.name.clone())
 }
 
 /// `ftransform()` reads `gl_ModelViewProjectionMatrix` and `gl_Vertex`,
@@ -456,6 +464,7 @@ impl<'m> Lowerer<'m> {
                     location: g.location,
                     index: g.index,
                     interpolation: g.interpolation,
+                    block: unnamed_block(m, g),
                 }],
             };
             if is_input && (g.read || self.used[i]) {
@@ -485,6 +494,7 @@ impl<'m> Lowerer<'m> {
                     location: None,
                     index: None,
                     interpolation: None,
+                    block: None,
                 });
             }
         }

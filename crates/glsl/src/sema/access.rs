@@ -80,6 +80,32 @@ impl Analyzer {
                     *s = (*s).max(i + 1);
                 }
             }
+            // `inst.m[i]' or `inst[k].m[i]': the member of a block's
+            // named instance.
+            K::Member { ref base, index } => {
+                let mut root = &**base;
+                if let K::Index { base, .. } = &root.kind {
+                    root = base;
+                }
+                let K::Global(g) = root.kind else { return };
+                let Some(b) = self
+                    .module
+                    .globals
+                    .get(g.0 as usize)
+                    .filter(|g| !g.builtin)
+                    .and_then(|g| g.block)
+                else {
+                    return;
+                };
+                if let Some(m) = self
+                    .module
+                    .blocks
+                    .get_mut(b.0 as usize)
+                    .and_then(|b| b.members.get_mut(index as usize))
+                {
+                    m.implicit_size = m.implicit_size.max(i + 1);
+                }
+            }
             _ => {}
         }
     }

@@ -530,7 +530,7 @@ impl Analyzer {
         }
     }
 
-    fn set_var_type(&mut self, v: Var, ty: Type) {
+    pub(crate) fn set_var_type(&mut self, v: Var, ty: Type) {
         match v {
             Var::Global(g) => {
                 if let Some(g) = self.module.globals.get_mut(g.0 as usize) {
@@ -565,6 +565,27 @@ impl Analyzer {
             _ => None,
         };
         let storage = self.global_storage(q);
+        // A member of the output `gl_PerVertex' is redeclared either in
+        // the block or on its own, not both (GLSL 1.50 §7.1).
+        let output = match self.stage {
+            Stage::Vertex => true,
+            Stage::Geometry => q.storage != Some(Qualifier::In),
+            Stage::Fragment => false,
+        };
+        if output && super::interface::PER_VERTEX_OUT_MEMBERS.contains(&name.as_str()) {
+            if self.module.per_vertex_out.is_some() {
+                self.error(
+                    Code::Redeclared,
+                    d.name.span,
+                    format!("`{name}' is redeclared on its own after the `gl_PerVertex' block is redeclared"),
+                )
+                .notes
+                .push("redeclare it inside the block only".into());
+                return;
+            }
+            self.per_vertex_member_redeclared
+                .get_or_insert(name.clone());
+        }
         let vec4 = ty.base == Type::vec(Scalar::Float, 4).base;
         let varying = storage == Storage::Varying && builtin.is_some() && vec4;
         let texcoord_ok = name == "gl_TexCoord" && varying && ty.is_array();

@@ -389,6 +389,22 @@ impl Analyzer {
     /// Reports an undeclared name with suggestions.
     pub fn undeclared(&mut self, name: &ast::Ident, function: bool) {
         let what = if function { "function " } else { "" };
+        if !function && self.hidden_builtins.contains(&name.name) {
+            self.error(
+                Code::Undeclared,
+                name.span,
+                format!(
+                    "`{}' undeclared: the redeclared `gl_PerVertex' block leaves it out",
+                    name.name
+                ),
+            )
+            .notes
+            .push(format!(
+                "add `{}' to the `gl_PerVertex' redeclaration to use it",
+                name.name
+            ));
+            return;
+        }
         if let Some((code, note)) = self.availability_note(&name.name) {
             self.error(code, name.span, format!("{what}`{}' undeclared", name.name))
                 .notes

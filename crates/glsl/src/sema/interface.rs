@@ -784,6 +784,10 @@ impl Analyzer {
                 "a geometry shader's primitive layouts stand alone: `layout(triangles) in;'".into(),
             );
         }
+        if b.name.name == "gl_PerVertex" && !input && !self.builtin_mode {
+            self.redeclare_per_vertex(b);
+            return;
+        }
         if storage == Storage::GeometryInput && b.instance.as_ref().is_none_or(|(_, a)| a.is_none())
         {
             self.error(
@@ -823,8 +827,15 @@ impl Analyzer {
             return;
         }
         // A block name is a global name: nothing else at global scope may
-        // take it (GLSL 1.40 §4.3.5.1, 1.50 §4.3.7).
-        if self.scopes.lookup_current(&b.name.name).is_some() {
+        // take it (GLSL 1.40 §4.3.5.1, 1.50 §4.3.7). Block names live per
+        // interface, though: a uniform, an input and an output block may
+        // share one (1.50 §4.3.7), and the name keeps meaning the first.
+        let other_interface = self
+            .module
+            .blocks
+            .iter()
+            .any(|x| x.name == b.name.name.as_str());
+        if !other_interface && self.scopes.lookup_current(&b.name.name).is_some() {
             self.error(
                 Code::Redeclared,
                 b.name.span,
@@ -852,7 +863,9 @@ impl Analyzer {
                 .collect(),
             builtin: self.builtin_mode,
         });
-        self.scopes.insert(b.name.name.clone(), Symbol::Struct(sid));
+        if !other_interface {
+            self.scopes.insert(b.name.name.clone(), Symbol::Struct(sid));
+        }
         let mut globals = Vec::new();
         let mut array = None;
         match &b.instance {
@@ -931,6 +944,142 @@ impl Analyzer {
             globals,
             span: b.name.span,
         });
+    }
+
+    /// `out gl_PerVertex { ... };` (GLSL 1.50 §7.1): the built-in output
+    /// block redeclared with a subset of its members, before any of them
+    /// is used. Each member keeps being the built-in global (a sized
+    /// `gl_ClipDistance[N]` or `gl_TexCoord[N]` sizes it); the members
+    /// left out are no longer names. Recorded in
+    /// [`ir::Module::per_vertex_out`] for the linker.
+    fn redeclare_per_vertex(&mut self, b: &InterfaceBlock) {
+        const MEMBERS: [&str; 10] = PER_VERTEX_OUT_MEMBERS;
+        if let Some((inst, _)) = &b.instance {
+            self.error(
+                Code::BadQualifier,
+                inst.span,
+                "the output block `gl_PerVertex' is redeclared without an instance name",
+            );
+            return;
+        }
+        if self.module.per_vertex_out.is_some() {
+            self.error(
+                Code::Redeclared,
+                b.name.span,
+                "`gl_PerVertex' is already redeclared",
+            );
+            return;
+        }
+        if let Some(name) = self.per_vertex_member_redeclared.clone() {
+            self.error(
+                Code::Redeclared,
+                b.name.span,
+                format!("`gl_PerVertex' is redeclared after its member `{name}' is redeclared on its own"),
+            )
+            .notes
+            .push("redeclare the member inside the block only".into());
+            return;
+        }
+        // The members are built-in names: checked as the prelude's are
+        // (`gl_' names and unsized arrays allowed).
+        let saved = self.builtin_mode;
+        self.builtin_mode = true;
+        let members = self.block_members(b, Storage::Varying, false, None);
+        self.builtin_mode = saved;
+        let span_of = |name: &str| {
+            b.members
+                .iter()
+                .flat_map(|m| &m.declarators)
+                .find(|d| d.name.name == name)
+                .map_or(b.name.span, |d| d.name.span)
+        };
+        let builtin_var = |a: &Analyzer, name: &str| match a.env.and_then(|e| e.lookup(name)) {
+            Some(Symbol::Var(v)) if MEMBERS.contains(&name) => Some(*v),
+            _ => None,
+        };
+        for name in MEMBERS {
+            let Some(Var::Builtin(i)) = builtin_var(self, name) else {
+                continue;
+            };
+            let used = self
+                .builtin_globals
+                .get(i as usize)
+                .copied()
+                .flatten()
+                .and_then(|g| self.module.globals.get(g.0 as usize))
+                .is_some_and(|g| g.read || g.written);
+            if used {
+                self.error(
+                    Code::Redeclared,
+                    b.name.span,
+                    format!("`gl_PerVertex' is redeclared after `{name}' is used"),
+                )
+                .notes
+                .push("redeclare it before the first use".into());
+                return;
+            }
+        }
+        let mut kept = Vec::new();
+        for m in members {
+            let span = span_of(&m.name);
+            let Some(v) = builtin_var(self, &m.name) else {
+                self.error(
+                    Code::Redeclared,
+                    span,
+                    format!(
+                        "`{}' is not a member of the built-in block `gl_PerVertex'",
+                        m.name
+                    ),
+                );
+                continue;
+            };
+            let builtin_ty = self.var_type(v);
+            if builtin_ty.base != m.ty.base || builtin_ty.is_array() != m.ty.is_array() {
+                self.error(
+                    Code::TypeMismatch,
+                    span,
+                    format!(
+                        "`{}' is redeclared as {}, but it is {}",
+                        m.name,
+                        self.tn(m.ty),
+                        self.tn(builtin_ty)
+                    ),
+                );
+                continue;
+            }
+            if let Some(ArraySize::Sized(n)) = m.ty.array {
+                let max = if m.name == "gl_TexCoord" {
+                    crate::limits::MAX_TEXTURE_COORDS
+                } else {
+                    crate::limits::MAX_CLIP_PLANES
+                };
+                if n > max {
+                    self.error(
+                        Code::BadArraySize,
+                        span,
+                        format!("`{}' redeclared with size {n}, larger than {max}", m.name),
+                    );
+                    continue;
+                }
+                self.set_var_type(v, m.ty);
+            }
+            if let Some(g) = self.global_of(v) {
+                if let Some(gl) = self.module.globals.get_mut(g.0 as usize) {
+                    gl.invariant |= m.invariant;
+                    gl.centroid |= m.centroid;
+                    if m.interpolation.is_some() {
+                        gl.interpolation = m.interpolation;
+                    }
+                }
+            }
+            kept.push(m);
+        }
+        for name in MEMBERS {
+            if !kept.iter().any(|m: &BlockMember| m.name == name) {
+                self.hidden_builtins.push(name.into());
+            }
+        }
+        self.module.per_vertex_out = Some(kept);
     }
 
     /// Whether `e` names the instance array of a uniform block.
@@ -1067,12 +1216,18 @@ impl Analyzer {
                     );
                     continue;
                 }
-                // The prelude's `gl_PerVertex' has `gl_ClipDistance[]'.
-                if mty.array == Some(ArraySize::Unsized) && !self.builtin_mode {
+                // Input and output blocks size an unsized member by its
+                // use, as an unsized array global (GLSL 1.50 §4.3.7); a
+                // uniform block's layout needs every size. The prelude's
+                // `gl_PerVertex' has `gl_ClipDistance[]'.
+                if mty.array == Some(ArraySize::Unsized) && !self.builtin_mode && !inout {
                     self.error(
                         Code::BadArraySize,
                         d.span,
-                        format!("block member `{}' must have an array size", d.name.name),
+                        format!(
+                            "uniform block member `{}' must have an array size",
+                            d.name.name
+                        ),
                     );
                 }
                 if self.contains_sampler(mty) {
@@ -1127,12 +1282,28 @@ impl Analyzer {
                     interpolation,
                     centroid,
                     invariant,
+                    implicit_size: 0,
                 });
             }
         }
         out
     }
 }
+
+/// The members of the output `gl_PerVertex` block, in the order of GLSL
+/// 1.50 §7.1 (the compatibility profile's last).
+pub(crate) const PER_VERTEX_OUT_MEMBERS: [&str; 10] = [
+    "gl_Position",
+    "gl_PointSize",
+    "gl_ClipDistance",
+    "gl_ClipVertex",
+    "gl_FrontColor",
+    "gl_BackColor",
+    "gl_FrontSecondaryColor",
+    "gl_BackSecondaryColor",
+    "gl_TexCoord",
+    "gl_FogFragCoord",
+];
 
 fn b_is(b: &InterfaceBlock, q: Qualifier) -> bool {
     b.qualifiers.iter().any(|x| x.qualifier == q)

@@ -531,3 +531,229 @@ fn fragment_output_index_needs_a_location() {
         Code::BadQualifier,
     );
 }
+
+/// Links the shaders (each compiled, and checked to compile).
+fn link_all(shaders: &[Shader]) -> crate::link::Program {
+    for s in shaders {
+        ok(s);
+    }
+    let refs: Vec<&Shader> = shaders.iter().collect();
+    crate::link::link(&refs)
+}
+
+const FS_WHITE: &str = "#version 150\nvoid main() { gl_FragColor = vec4(1.0); }";
+
+#[test]
+fn per_vertex_output_redeclared() {
+    // A subset of the members: the others are no longer names.
+    let s = vert(
+        "#version 150\nin vec4 p; out gl_PerVertex { vec4 gl_Position; float gl_PointSize; };\n\
+         void main() { gl_Position = p; gl_PointSize = 2.0; }",
+    );
+    ok(&s);
+    let m = s.module.as_ref().expect("compiled");
+    let names: Vec<&str> = m
+        .per_vertex_out
+        .as_ref()
+        .expect("redeclared")
+        .iter()
+        .map(|x| x.name.as_str())
+        .collect();
+    assert_eq!(names, ["gl_Position", "gl_PointSize"]);
+    // The members stay the built-in outputs, not block members.
+    assert!(global(&s, "gl_Position").builtin);
+    assert!(m.blocks.is_empty());
+    fails(
+        &vert(
+            "#version 150\nout gl_PerVertex { vec4 gl_Position; };\n\
+             void main() { gl_Position = vec4(0); gl_PointSize = 1.0; }",
+        ),
+        Code::Undeclared,
+    );
+    // Not a member, a wrong type, an instance name, after a use, twice.
+    fails(
+        &vert(
+            "#version 150\nout gl_PerVertex { vec4 gl_Position; vec4 gl_Color; };\nvoid main() {}",
+        ),
+        Code::Redeclared,
+    );
+    fails(
+        &vert("#version 150\nout gl_PerVertex { vec3 gl_Position; };\nvoid main() {}"),
+        Code::TypeMismatch,
+    );
+    fails(
+        &vert("#version 150\nout gl_PerVertex { vec4 gl_Position; } pv;\nvoid main() {}"),
+        Code::BadQualifier,
+    );
+    fails(
+        &vert(
+            "#version 150\nvoid f() { gl_Position = vec4(0); }\n\
+             out gl_PerVertex { vec4 gl_Position; };\nvoid main() { f(); }",
+        ),
+        Code::Redeclared,
+    );
+    fails(
+        &vert(
+            "#version 150\nout gl_PerVertex { vec4 gl_Position; };\n\
+             out gl_PerVertex { vec4 gl_Position; };\nvoid main() {}",
+        ),
+        Code::Redeclared,
+    );
+    // A member is redeclared in the block or on its own, not both.
+    for src in [
+        "out float gl_ClipDistance[];\nout gl_PerVertex { vec4 gl_Position; float gl_ClipDistance[4]; };",
+        "out gl_PerVertex { vec4 gl_Position; };\nout float gl_ClipDistance[4];",
+    ] {
+        fails(
+            &vert(&format!("#version 150\n{src}\nvoid main() {{}}")),
+            Code::Redeclared,
+        );
+    }
+    // A sized gl_ClipDistance sizes the built-in.
+    let s = vert(
+        "#version 150\nout gl_PerVertex { vec4 gl_Position; float gl_ClipDistance[3]; };\n\
+         void main() { gl_Position = vec4(0); gl_ClipDistance[2] = 1.0; }",
+    );
+    ok(&s);
+    assert_eq!(
+        global(&s, "gl_ClipDistance").ty.array,
+        Some(crate::types::ArraySize::Sized(3))
+    );
+}
+
+#[test]
+fn per_vertex_redeclarations_agree_within_a_stage() {
+    let main = "#version 150\nout gl_PerVertex { vec4 gl_Position; };\n\
+                void foo();\nvoid main() { gl_Position = vec4(1.0); foo(); }";
+    // Another object redeclaring it otherwise.
+    let p = link_all(&[
+        vert(main),
+        vert("#version 150\nout gl_PerVertex { float gl_PointSize; };\nvoid foo() { gl_PointSize = 1.0; }"),
+        frag(FS_WHITE),
+    ]);
+    assert!(!p.ok());
+    assert!(p.info_log().contains("other members"), "{}", p.info_log());
+    // Another object using a member without redeclaring it.
+    let p = link_all(&[
+        vert(main),
+        vert("#version 150\nvoid foo() { gl_PointSize = 1.0; }"),
+        frag(FS_WHITE),
+    ]);
+    assert!(!p.ok());
+    assert!(p.info_log().contains("gl_PointSize"), "{}", p.info_log());
+    // An object that uses no member need not redeclare it; the same
+    // redeclaration everywhere links.
+    for other in [
+        "#version 150\nvoid foo() {}",
+        "#version 150\nout gl_PerVertex { vec4 gl_Position; };\nvoid foo() { gl_Position.x = 0.0; }",
+    ] {
+        let p = link_all(&[vert(main), vert(other), frag(FS_WHITE)]);
+        assert!(p.ok(), "{}", p.info_log());
+    }
+}
+
+#[test]
+fn unsized_block_members_are_sized_by_use() {
+    let vs = |decl: &str, body: &str| {
+        vert(&format!(
+            "#version 150\nout blk {{ float foo[]; }}{decl};\nvoid main() {{ {body} gl_Position = vec4(0); }}"
+        ))
+    };
+    let fs = |decl: &str, body: &str| {
+        frag(&format!(
+            "#version 150\nin blk {{ float foo[]; }}{decl};\nvoid main() {{ gl_FragColor = vec4({body}); }}"
+        ))
+    };
+    // Named instances: the largest constant index sizes the member, in
+    // the block and in the instance's type.
+    let p = link_all(&[
+        vs(" ifc", "ifc.foo[0] = 1.0; ifc.foo[2] = 1.0;"),
+        fs(" ifc", "ifc.foo[1] + ifc.foo[2]"),
+    ]);
+    assert!(p.ok(), "{}", p.info_log());
+    for stage in [Stage::Vertex, Stage::Fragment] {
+        let m = &p.stage(stage).expect("linked").module;
+        let b = &m.blocks[0];
+        assert_eq!(m.type_name(b.members[0].ty), "float[3]");
+        let inst = m
+            .globals
+            .iter()
+            .find(|g| g.name == "ifc")
+            .expect("instance");
+        let crate::types::Base::Struct(sid) = inst.ty.base else {
+            panic!("instance is a struct")
+        };
+        assert_eq!(
+            m.type_name(m.structs[sid.0 as usize].members[0].ty),
+            "float[3]"
+        );
+    }
+    // Without an instance name, as an unsized array global.
+    let p = link_all(&[vs("", "foo[2] = 1.0;"), fs("", "foo[2]")]);
+    assert!(p.ok(), "{}", p.info_log());
+    // Different sizes in the two stages do not match.
+    let p = link_all(&[vs(" ifc", "ifc.foo[1] = 1.0;"), fs(" ifc", "ifc.foo[2]")]);
+    assert!(!p.ok());
+    let p = link_all(&[vs("", "foo[1] = 1.0;"), fs("", "foo[2]")]);
+    assert!(!p.ok());
+    // A dynamic index needs a size, as for any unsized array.
+    fails(
+        &vert("#version 150\nout blk { float foo[]; } ifc;\nuniform int i;\nvoid main() { ifc.foo[i] = 1.0; }"),
+        Code::BadArraySize,
+    );
+    // A uniform block's layout needs its sizes.
+    fails(
+        &vert("#version 150\nuniform U { float foo[]; };\nvoid main() {}"),
+        Code::BadArraySize,
+    );
+}
+
+#[test]
+fn block_array_sizes_match() {
+    // Between stages: an output block array and an input block array of
+    // another size; a uniform block array of two sizes.
+    let p = link_all(&[
+        vert("#version 150\nout block { vec4 a; } vs_block[3];\nvoid main() { vs_block[0].a = vec4(1); }"),
+        frag("#version 150\nin block { vec4 a; } fs_block[2];\nout vec4 c;\nvoid main() { c = fs_block[0].a; }"),
+    ]);
+    assert!(!p.ok());
+    assert!(p.info_log().contains("array sizes"), "{}", p.info_log());
+    let p = link_all(&[
+        vert("#version 150\nuniform Foo { vec4 x; } foo[3];\nvoid main() { gl_Position = foo[0].x; }"),
+        frag("#version 150\nuniform Foo { vec4 x; } bar[2];\nvoid main() { gl_FragColor = bar[0].x; }"),
+    ]);
+    assert!(!p.ok());
+    // The same size under other instance names matches.
+    let p = link_all(&[
+        vert("#version 150\nuniform Foo { vec4 x; } foo[2];\nvoid main() { gl_Position = foo[0].x; }"),
+        frag("#version 150\nuniform Foo { vec4 x; } bar[2];\nvoid main() { gl_FragColor = bar[1].x; }"),
+    ]);
+    assert!(p.ok(), "{}", p.info_log());
+    // Within a stage: an array in one object, not in another.
+    let p = link_all(&[
+        vert("#version 150\nout blk { vec4 foo; };\nvoid f() { foo = vec4(1.0); }"),
+        vert("#version 150\nout blk { vec4 foo; } inst[3];\nvoid f();\nvoid main() { f(); inst[2].foo = vec4(1.0); }"),
+    ]);
+    assert!(!p.ok());
+    assert!(p.info_log().contains("array size"), "{}", p.info_log());
+}
+
+#[test]
+fn block_names_live_per_interface() {
+    // A uniform block and an output block may share a block name.
+    let s = vert(
+        "#version 150\nuniform block { vec4 color; } ucolor;\nout block { vec4 color; } vcolor;\n\
+         void main() { vcolor.color = ucolor.color; gl_Position = vec4(0); }",
+    );
+    ok(&s);
+    assert_eq!(s.module.as_ref().expect("compiled").blocks.len(), 2);
+    // Not two blocks of one interface, nor a block name and a variable.
+    fails(
+        &vert("#version 150\nout block { vec4 a; } x;\nout block { vec4 b; } y;\nvoid main() {}"),
+        Code::Redeclared,
+    );
+    fails(
+        &vert("#version 150\nuniform float block;\nout block { vec4 a; } x;\nvoid main() {}"),
+        Code::Redeclared,
+    );
+}

@@ -185,6 +185,7 @@ fn build_env(lang: Language, stage: Stage) -> BuiltinEnv {
             blocks: Vec::new(),
             frag_coord: Default::default(),
             geometry: Default::default(),
+            per_vertex_out: None,
         },
     );
     // Prototypes without bodies become built-in functions.
@@ -292,6 +293,13 @@ pub(crate) struct Analyzer {
     /// layout: its size and name (later sizes must agree, GLSL 1.50
     /// §4.3.8.1).
     pub geometry_input_len: Option<(u32, String)>,
+    /// Built-in outputs a redeclared `gl_PerVertex` left out: no longer
+    /// names (GLSL 1.50 §7.1).
+    pub hidden_builtins: Vec<SmolStr>,
+    /// A member of the output `gl_PerVertex` redeclared on its own
+    /// (`out float gl_ClipDistance[4];`): the block can then not be
+    /// redeclared, nor the member after the block (GLSL 1.50 §7.1).
+    pub per_vertex_member_redeclared: Option<SmolStr>,
 }
 
 impl Analyzer {
@@ -312,6 +320,7 @@ impl Analyzer {
                 blocks: Vec::new(),
                 frag_coord: Default::default(),
                 geometry: Default::default(),
+                per_vertex_out: None,
             },
             diags: Vec::new(),
             scopes: Scopes::new(),
@@ -327,6 +336,8 @@ impl Analyzer {
             default_row_major: false,
             frag_coord_redeclared: None,
             geometry_input_len: None,
+            hidden_builtins: Vec::new(),
+            per_vertex_member_redeclared: None,
         }
     }
 
@@ -522,6 +533,9 @@ impl Analyzer {
     pub fn lookup(&self, name: &str) -> Option<Symbol> {
         if let Some(s) = self.scopes.lookup(name) {
             return Some(s.clone());
+        }
+        if self.hidden_builtins.iter().any(|h| h == name) {
+            return None;
         }
         self.env.and_then(|e| e.lookup(name)).cloned()
     }
