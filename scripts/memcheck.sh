@@ -18,8 +18,8 @@
 #   --jit-after N
 #              SHADERBOX_JIT_AFTER for every run: kernels compile to native
 #              code on their Nth run (1: native from the first run; by
-#              default the 1,024th, which the C-ABI scenes, 64x64 pixels,
-#              never reach)
+#              default the 1,024th, which the C-ABI scenes, mostly 64x64
+#              pixels, do not reach)
 #   --logs DIR keep valgrind's log of every process in DIR (default: a
 #              temporary directory, removed at the end)
 #   --no-build use the binaries already in $CARGO_TARGET_DIR/memcheck/
