@@ -120,6 +120,9 @@
 // the OS after every large draw and faulted them in again on the next one,
 // and it is slower for the compiler's many small nodes (the measurements:
 // docs/PERFORMANCE.md, design decisions).
+// The `mimalloc` feature (default) selects it: memory checkers build without
+// it, since they track only the system allocator's blocks.
+#[cfg(feature = "mimalloc")]
 #[global_allocator]
 static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
 

@@ -35,6 +35,9 @@ use std::process::ExitCode;
 
 // mimalloc: the compiler allocates many small nodes, which the system
 // allocator serves more slowly (docs/PERFORMANCE.md, design decisions).
+// The `mimalloc` feature (default) selects it: memory checkers build without
+// it, since they track only the system allocator's blocks.
+#[cfg(feature = "mimalloc")]
 #[global_allocator]
 static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
