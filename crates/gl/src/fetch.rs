@@ -12,9 +12,9 @@
 //! (glVertexAttribIPointer) and integer current values unconverted.
 
 use crate::enums::*;
-use crate::vertex::{ArrayData, AttribSource, ImmVertex, ValueKind};
+use crate::vertex::{ArrayData, AttribSource, ImmVertex};
 use crate::vertex_format::{
-    element_size, float_view, integer_bits, read_element, read_integer_element,
+    element_size, float_view, integer_bits, read_element, read_integer_element, ValueKind,
 };
 use crate::Context;
 use std::sync::Arc;

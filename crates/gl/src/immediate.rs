@@ -5,8 +5,8 @@
 //! vertices with the current values and draw them at glEnd.
 
 use crate::enums::*;
-use crate::vertex::{ValueKind, MAX_IMMEDIATE_VERTICES};
-use crate::vertex_format::{float_view, integer_bits};
+use crate::vertex::MAX_IMMEDIATE_VERTICES;
+use crate::vertex_format::{float_view, integer_bits, ValueKind};
 use crate::{Context, MAX_VERTEX_ATTRIBS};
 
 impl Context {

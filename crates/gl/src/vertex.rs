@@ -11,7 +11,7 @@
 
 use crate::enums::*;
 use crate::vertex_format::{
-    element_size, float_view, is_packed, read_element, unpack_2_10_10_10, SIZE_BGRA,
+    element_size, float_view, is_packed, read_element, unpack_2_10_10_10, ValueKind, SIZE_BGRA,
 };
 use crate::{Context, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
 use std::sync::Arc;
@@ -86,17 +86,6 @@ impl ArrayState {
             divisor: 0,
         }
     }
-}
-
-/// How a current generic attribute value was specified (GL 3.3 §2.7:
-/// glVertexAttrib*, glVertexAttribI* with signed or unsigned values).
-/// Integer values are kept as their bits in the `f32` slots.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum ValueKind {
-    #[default]
-    Float,
-    Int,
-    Uint,
 }
 
 /// The state a vertex array object holds (GL 3.3 compatibility §2.10,

@@ -7,7 +7,17 @@
 
 use crate::enums::*;
 use crate::pixel_transfer::half_to_f32;
-use crate::vertex::ValueKind;
+
+/// How a current generic attribute value was specified (GL 3.3 §2.7:
+/// glVertexAttrib*, glVertexAttribI* with signed or unsigned values).
+/// Integer values are kept as their bits in the `f32` slots.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum ValueKind {
+    #[default]
+    Float,
+    Int,
+    Uint,
+}
 
 /// A stored value as floats: integer values (kept as bits) converted.
 pub fn float_view(v: [f32; 4], kind: ValueKind) -> [f32; 4] {
