@@ -1,0 +1,204 @@
+//! Interface and uniform blocks at link time (GLSL 1.50 §4.3.7): the same
+//! block across objects and stages, members sized by use, array sizes and
+//! instance names compared.
+
+use super::remap::{remap_type, Remap};
+use super::types::compatible_types;
+use super::{push, LinkDiagnostic};
+use crate::diag::{Code, Diagnostic};
+use crate::ir::{self, Module, Storage};
+use crate::types::{ArraySize, Base};
+
+/// Adds the interface blocks of object `obj` (module `m`, its globals
+/// already merged through `map`) to `merged`: a block of the same name and
+/// kind in another object must have the same members (GLSL 1.50 §4.3.7).
+pub(super) fn merge_blocks(
+    merged: &mut Module,
+    m: &Module,
+    map: &Remap,
+    obj: usize,
+    diags: &mut Vec<LinkDiagnostic>,
+    errors: &mut bool,
+) {
+    for (bi, b) in m.blocks.iter().enumerate() {
+        let members: Vec<ir::BlockMember> = b
+            .members
+            .iter()
+            .map(|mb| ir::BlockMember {
+                ty: remap_type(mb.ty, map),
+                ..mb.clone()
+            })
+            .collect();
+        let same_kind = |x: &ir::InterfaceBlock| {
+            x.name == b.name && x.storage == b.storage && x.input == b.input
+        };
+        let id = match merged.blocks.iter().position(same_kind) {
+            Some(i) => {
+                let x = &merged.blocks[i];
+                // The same block in two objects of a stage is one block:
+                // an array in one is the same array in the other (GLSL
+                // 1.50 §4.3.7); instance names may differ.
+                if !same_members(&x.members, &members, merged)
+                    || x.layout != b.layout
+                    || x.array != b.array
+                {
+                    *errors = true;
+                    diags.push(LinkDiagnostic {
+                        shader: Some(obj),
+                        diagnostic: Diagnostic::error(
+                            Code::LinkInterfaceMismatch,
+                            b.span,
+                            format!(
+                                "block `{}' is declared with different members, layout or array size in two shader objects",
+                                b.name
+                            ),
+                        ),
+                    });
+                }
+                for (x, y) in merged.blocks[i].members.iter_mut().zip(&members) {
+                    x.implicit_size = x.implicit_size.max(y.implicit_size);
+                }
+                ir::BlockId(i as u32)
+            }
+            None => {
+                merged.blocks.push(ir::InterfaceBlock {
+                    members,
+                    globals: Vec::new(),
+                    ..b.clone()
+                });
+                ir::BlockId(merged.blocks.len() as u32 - 1)
+            }
+        };
+        for (gi, g) in m.globals.iter().enumerate() {
+            if g.block != Some(ir::BlockId(bi as u32)) {
+                continue;
+            }
+            let Some(&mg) = map.globals.get(gi) else {
+                continue;
+            };
+            merged.globals[mg.0 as usize].block = Some(id);
+            let blk = &mut merged.blocks[id.0 as usize];
+            if !blk.globals.contains(&mg) {
+                blk.globals.push(mg);
+            }
+        }
+    }
+}
+
+/// Unsized array members of input and output blocks take their size from
+/// their use (GLSL 1.50 §4.3.7): without an instance name the member's
+/// global is sized like any unsized array (before this runs); with one, the
+/// largest constant index through the instance sizes the member in the
+/// block and in the instance's struct.
+pub(super) fn size_block_members(merged: &mut Module) {
+    for b in &mut merged.blocks {
+        for (k, mb) in b.members.iter_mut().enumerate() {
+            if mb.ty.array != Some(ArraySize::Unsized) {
+                continue;
+            }
+            match &b.instance {
+                None => {
+                    if let Some(g) = b
+                        .globals
+                        .iter()
+                        .map(|g| &merged.globals[g.0 as usize])
+                        .find(|g| g.name == mb.name)
+                    {
+                        mb.ty = g.ty;
+                    }
+                }
+                Some(_) => {
+                    let n = mb.implicit_size.max(1);
+                    mb.ty.array = Some(ArraySize::Sized(n));
+                    let instance = b.globals.first().map(|g| merged.globals[g.0 as usize].ty);
+                    if let Some(Base::Struct(sid)) = instance.map(|t| t.base) {
+                        if let Some(m) = merged
+                            .structs
+                            .get_mut(sid.0 as usize)
+                            .and_then(|s| s.members.get_mut(k))
+                        {
+                            m.ty.array = Some(ArraySize::Sized(n));
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Block members match by name, type and qualifiers, in order.
+pub(super) fn same_members(a: &[ir::BlockMember], b: &[ir::BlockMember], m: &Module) -> bool {
+    a.len() == b.len()
+        && a.iter().zip(b).all(|(x, y)| {
+            x.name == y.name
+                && compatible_types(x.ty, y.ty)
+                && (x.ty == y.ty || m.type_name(x.ty) == m.type_name(y.ty))
+                && x.row_major == y.row_major
+                && x.interpolation == y.interpolation
+                && x.centroid == y.centroid
+        })
+}
+
+/// Blocks between two consecutive stages: an input block needs the
+/// previous stage's output block of its name, and uniform blocks of one name have the same
+/// members in both stages (GLSL 1.50 §4.3.7: matched by block name, not
+/// instance name).
+pub(super) fn check_blocks(vm: &Module, fm: &Module, diags: &mut Vec<LinkDiagnostic>) {
+    let (pn, cn) = (vm.stage.name(), fm.stage.name());
+    for fb in &fm.blocks {
+        // An input block (a geometry shader's has its own storage)
+        // matches the output block of its name.
+        let kind = |x: &&ir::InterfaceBlock| {
+            x.name == fb.name
+                && if fb.storage == Storage::Uniform {
+                    x.storage == Storage::Uniform
+                } else {
+                    x.storage == Storage::Varying && !x.input
+                }
+        };
+        let vb = vm.blocks.iter().find(kind);
+        let used = fb.globals.iter().any(|g| fm.global(*g).read);
+        match vb {
+            None if fb.input && used => push(
+                diags,
+                None,
+                Code::LinkVaryingNotWritten,
+                format!(
+                    "the {cn} shader reads block `{}' but the {pn} shader has no output block of that name",
+                    fb.name
+                ),
+            ),
+            Some(vb) => {
+                let same = vb.members.len() == fb.members.len()
+                    && vb.members.iter().zip(&fb.members).all(|(a, b)| {
+                        a.name == b.name
+                            && vm.type_name(a.ty) == fm.type_name(b.ty)
+                            && a.row_major == b.row_major
+                            && a.interpolation == b.interpolation
+                    })
+                    && vb.layout == fb.layout
+                    // A geometry input block is the array of the vertex
+                    // stage's output block, one per vertex. Otherwise an
+                    // array instance matches an array of the same size
+                    // (GLSL 1.50 §4.3.7).
+                    && if fb.storage == Storage::GeometryInput {
+                        vb.array.is_none()
+                    } else {
+                        vb.array == fb.array
+                    };
+                if !same {
+                    push(
+                        diags,
+                        None,
+                        Code::LinkInterfaceMismatch,
+                        format!(
+                            "block `{}' has different members or array sizes in the {pn} and {cn} shaders",
+                            fb.name
+                        ),
+                    );
+                }
+            }
+            None => {}
+        }
+    }
+}

@@ -1,0 +1,374 @@
+//! The interface between the stages and the program's limits: locations,
+//! varyings matched by name and type (GLSL 1.20 §4.3.6), the built-in
+//! colours' interpolation (1.30 §4.3.7), and the resource limits of
+//! `crate::limits`.
+
+use super::blocks::check_blocks;
+use super::types::{compatible_types, components};
+use super::{push, LinkDiagnostic, LinkedStage};
+use crate::diag::Code;
+use crate::ir::{self, Stage, Storage};
+use crate::limits;
+use crate::types::{ArraySize, Base, Type};
+
+/// Slots a vertex input or fragment output takes from its location on: one
+/// per array element, and per matrix column.
+pub(super) fn location_slots(ty: Type) -> u32 {
+    let per = match ty.base {
+        Base::Matrix { cols, .. } => cols as u32,
+        _ => 1,
+    };
+    match ty.array {
+        Some(ArraySize::Sized(n)) => per * n,
+        _ => per,
+    }
+}
+
+/// Explicit locations (GL_ARB_explicit_attrib_location, GLSL 3.30
+/// §4.3.8): within the limits; fragment outputs may not share a location
+/// and index (vertex inputs may: GL 2.0 allows aliasing attributes).
+pub(super) fn check_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
+    let (storage, max, what) = match s.stage {
+        Stage::Vertex => (
+            Storage::Attribute,
+            limits::MAX_VERTEX_ATTRIBS,
+            "vertex input",
+        ),
+        Stage::Fragment => (
+            Storage::FragOutput,
+            limits::MAX_DRAW_BUFFERS,
+            "fragment output",
+        ),
+        // Geometry inputs and outputs take no location before GLSL 4.10
+        // (GL_ARB_separate_shader_objects).
+        Stage::Geometry => return,
+    };
+    // Per `layout(index)` (0, or 1 for a second source colour).
+    let mut used: [Vec<Option<&str>>; 2] = [vec![None; max as usize], vec![None; max as usize]];
+    for g in s.module.globals.iter().filter(|g| g.storage == storage) {
+        let Some(loc) = g.location else { continue };
+        let used = &mut used[g.index.unwrap_or(0).min(1) as usize];
+        let n = location_slots(g.ty);
+        if u64::from(loc) + u64::from(n) > u64::from(max) {
+            push(
+                diags,
+                None,
+                Code::LinkTooMany,
+                format!(
+                    "{what} `{}' at location {loc} does not fit: there are {max} locations",
+                    g.name
+                ),
+            );
+            continue;
+        }
+        if s.stage == Stage::Fragment {
+            for slot in &mut used[loc as usize..(loc + n) as usize] {
+                if let Some(other) = slot {
+                    push(
+                        diags,
+                        None,
+                        Code::LinkInterfaceMismatch,
+                        format!(
+                            "fragment outputs `{other}' and `{}' are both assigned location {loc}{}",
+                            g.name,
+                            if g.index == Some(1) { ", index 1" } else { "" }
+                        ),
+                    );
+                    break;
+                }
+                *slot = Some(&g.name);
+            }
+        }
+    }
+    // GLSL 1.30 §7.2: user outputs and gl_FragColor/gl_FragData exclude
+    // each other (checked here across the stage's shader objects).
+    if s.stage == Stage::Fragment {
+        let user = s
+            .module
+            .globals
+            .iter()
+            .find(|g| g.storage == Storage::FragOutput && g.written);
+        let builtin = s.module.globals.iter().find(|g| {
+            g.builtin && g.written && matches!(g.name.as_str(), "gl_FragColor" | "gl_FragData")
+        });
+        if let (Some(u), Some(b)) = (user, builtin) {
+            push(
+                diags,
+                None,
+                Code::LinkInterfaceMismatch,
+                format!(
+                    "the fragment shader writes both `{}' and the user output `{}'",
+                    b.name, u.name
+                ),
+            );
+        }
+    }
+}
+
+pub(super) fn check_limits(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
+    let m = &s.module;
+    let mut limit = |what: &str, used: u32, max: u32| {
+        if used > max {
+            push(
+                diags,
+                None,
+                Code::LinkTooMany,
+                format!(
+                    "the {} shader uses {used} {what}; the limit is {max}",
+                    s.stage.name()
+                ),
+            );
+        }
+    };
+    let uniforms: u32 = m
+        .globals
+        .iter()
+        .filter(|g| g.storage == Storage::Uniform && g.read && !g.ty.is_sampler())
+        .map(|g| components(m, g.ty))
+        .sum();
+    let samplers: u32 = m
+        .globals
+        .iter()
+        .filter(|g| g.storage == Storage::Uniform && g.read && g.ty.is_sampler())
+        .map(|g| match g.ty.array {
+            Some(ArraySize::Sized(n)) => n,
+            _ => 1,
+        })
+        .sum();
+    match s.stage {
+        Stage::Vertex => {
+            limit(
+                "uniform components",
+                uniforms,
+                limits::MAX_VERTEX_UNIFORM_COMPONENTS,
+            );
+            limit("samplers", samplers, limits::MAX_VERTEX_TEXTURE_IMAGE_UNITS);
+            // Generic attributes: one slot per vector, one per matrix column.
+            let slots: u32 = m
+                .globals
+                .iter()
+                .filter(|g| g.storage == Storage::Attribute && !g.builtin && g.read)
+                .map(|g| match g.ty.base {
+                    Base::Matrix { cols, .. } => cols as u32,
+                    _ => 1,
+                })
+                .sum();
+            limit("attribute slots", slots, limits::MAX_VERTEX_ATTRIBS);
+            let varyings: u32 = m
+                .globals
+                .iter()
+                .filter(|g| g.storage == Storage::Varying && g.written)
+                .map(|g| components(m, g.ty))
+                .sum();
+            limit("varying components", varyings, limits::MAX_VARYING_FLOATS);
+        }
+        Stage::Geometry => {
+            limit(
+                "uniform components",
+                uniforms,
+                limits::MAX_GEOMETRY_UNIFORM_COMPONENTS,
+            );
+            limit(
+                "samplers",
+                samplers,
+                limits::MAX_GEOMETRY_TEXTURE_IMAGE_UNITS,
+            );
+            let outputs: u32 = m
+                .globals
+                .iter()
+                .filter(|g| g.storage == Storage::Varying && !g.builtin && g.written)
+                .map(|g| components(m, g.ty))
+                .sum();
+            limit(
+                "output components",
+                outputs,
+                limits::MAX_GEOMETRY_OUTPUT_COMPONENTS,
+            );
+        }
+        Stage::Fragment => {
+            limit(
+                "uniform components",
+                uniforms,
+                limits::MAX_FRAGMENT_UNIFORM_COMPONENTS,
+            );
+            limit("samplers", samplers, limits::MAX_TEXTURE_IMAGE_UNITS);
+            let varyings: u32 = m
+                .globals
+                .iter()
+                .filter(|g| {
+                    g.storage == Storage::Varying
+                        && g.read
+                        && !matches!(
+                            g.name.as_str(),
+                            "gl_FragCoord" | "gl_FrontFacing" | "gl_PointCoord"
+                        )
+                })
+                .map(|g| components(m, g.ty))
+                .sum();
+            limit("varying components", varyings, limits::MAX_VARYING_FLOATS);
+        }
+    }
+}
+
+/// GLSL 1.30 §4.3.7: when the fragment shader uses gl_Color (or
+/// gl_SecondaryColor), the front and back colors the previous stage
+/// writes carry the same interpolation qualifier it does, an unqualified
+/// declaration matching only an unqualified one. Only statically used
+/// variables are compared.
+pub(super) fn check_builtin_color_interpolation(
+    v: &LinkedStage,
+    f: &LinkedStage,
+    diags: &mut Vec<LinkDiagnostic>,
+) {
+    let (vm, fm) = (&v.module, &f.module);
+    let q = |i: Option<ir::Interpolation>| i.map_or("no qualifier", |i| i.as_str());
+    for (input, outputs) in [
+        ("gl_Color", ["gl_FrontColor", "gl_BackColor"]),
+        (
+            "gl_SecondaryColor",
+            ["gl_FrontSecondaryColor", "gl_BackSecondaryColor"],
+        ),
+    ] {
+        let Some(fg) = fm.globals.iter().find(|g| g.name == input && g.read) else {
+            continue;
+        };
+        for out in outputs {
+            let Some(vg) = vm.globals.iter().find(|g| g.name == out && g.written) else {
+                continue;
+            };
+            if vg.interpolation != fg.interpolation {
+                push(
+                    diags,
+                    None,
+                    Code::LinkInterfaceMismatch,
+                    format!(
+                        "`{out}' is declared with {} in the {} shader but `{input}' with {} in the {} shader; GLSL 1.30 §4.3.7 requires the same interpolation qualifier",
+                        q(vg.interpolation),
+                        v.stage.name(),
+                        q(fg.interpolation),
+                        f.stage.name()
+                    ),
+                );
+            }
+        }
+    }
+}
+
+pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
+    let (vm, fm) = (&v.module, &f.module);
+    let (pn, cn) = (v.stage.name(), f.stage.name());
+    // A geometry shader's inputs are arrays of the vertex outputs.
+    let (input, per_vertex) = if f.stage == Stage::Geometry {
+        (Storage::GeometryInput, true)
+    } else {
+        (Storage::Varying, false)
+    };
+    check_blocks(vm, fm, diags);
+    if f.stage == Stage::Fragment {
+        check_builtin_color_interpolation(v, f, diags);
+    }
+    // Members and instances of blocks match by block (check_blocks).
+    for fg in fm
+        .globals
+        .iter()
+        .filter(|g| !g.builtin && g.block.is_none())
+    {
+        let vg = vm.globals.iter().find(|g| g.name == fg.name);
+        let fty = if per_vertex { fg.ty.element() } else { fg.ty };
+        match fg.storage {
+            s if s == input => match vg {
+                Some(vg) if vg.storage == Storage::Varying => {
+                    if !compatible_types(vg.ty, fty) || vm.type_name(vg.ty) != fm.type_name(fty)
+                    {
+                        push(
+                            diags,
+                            None,
+                            Code::LinkInterfaceMismatch,
+                            format!(
+                                "varying `{}' is {} in the {pn} shader but {} in the {cn} shader",
+                                fg.name,
+                                vm.type_name(vg.ty),
+                                fm.type_name(fg.ty)
+                            ),
+                        );
+                    } else if vg.interpolation != fg.interpolation {
+                        // GLSL 1.30 §4.3.7: the interpolation qualifiers of
+                        // a vertex output and its fragment input match.
+                        let q = |i: Option<ir::Interpolation>| i.map_or("none", |i| i.as_str());
+                        push(
+                            diags,
+                            None,
+                            Code::LinkInterfaceMismatch,
+                            format!(
+                                "varying `{}' is interpolated `{}' in the {pn} shader but `{}' in the {cn} shader",
+                                fg.name,
+                                q(vg.interpolation),
+                                q(fg.interpolation)
+                            ),
+                        );
+                    } else if vg.centroid != fg.centroid || vg.invariant != fg.invariant {
+                        push(
+                            diags,
+                            None,
+                            Code::LinkInterfaceMismatch,
+                            format!(
+                                "varying `{}' has different `centroid'/`invariant' qualifiers in the {pn} and {cn} shaders",
+                                fg.name
+                            ),
+                        );
+                    } else if fg.read && !vg.written {
+                        push(
+                            diags,
+                            None,
+                            Code::LinkVaryingNotWritten,
+                            format!(
+                                "the {cn} shader reads varying `{}' but the {pn} shader never writes it",
+                                fg.name
+                            ),
+                        );
+                    }
+                }
+                _ if fg.read => push(
+                    diags,
+                    None,
+                    Code::LinkVaryingNotWritten,
+                    format!(
+                        "the {cn} shader reads varying `{}' but the {pn} shader does not declare it",
+                        fg.name
+                    ),
+                ),
+                _ => {}
+            },
+            Storage::Uniform => {
+                if let Some(vg) = vg.filter(|g| g.storage == Storage::Uniform) {
+                    if !compatible_types(vg.ty, fg.ty) || vm.type_name(vg.ty) != fm.type_name(fg.ty) {
+                        push(
+                            diags,
+                            None,
+                            Code::LinkInterfaceMismatch,
+                            format!(
+                                "uniform `{}' is {} in the {pn} shader but {} in the {cn} shader",
+                                fg.name,
+                                vm.type_name(vg.ty),
+                                fm.type_name(fg.ty)
+                            ),
+                        );
+                    } else if let (Some(a), Some(b)) = (&vg.init, &fg.init) {
+                        if a.components != b.components {
+                            push(
+                                diags,
+                                None,
+                                Code::LinkInterfaceMismatch,
+                                format!(
+                                    "uniform `{}' has different initializers in the {pn} and {cn} shaders",
+                                    fg.name
+                                ),
+                            );
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+}
