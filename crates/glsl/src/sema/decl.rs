@@ -572,7 +572,7 @@ impl Analyzer {
             Stage::Geometry => q.storage != Some(Qualifier::In),
             Stage::Fragment => false,
         };
-        if output && super::interface::PER_VERTEX_OUT_MEMBERS.contains(&name.as_str()) {
+        if output && super::blocks::PER_VERTEX_OUT_MEMBERS.contains(&name.as_str()) {
             if self.module.per_vertex_out.is_some() {
                 self.error(
                     Code::Redeclared,

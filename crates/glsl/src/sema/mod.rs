@@ -19,6 +19,7 @@
 //! l-values), `construct` (constructors), `stmt` (statements).
 
 mod access;
+mod blocks;
 mod construct;
 mod decl;
 mod expr;
