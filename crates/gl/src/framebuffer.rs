@@ -353,19 +353,21 @@ impl Context {
         name != 0 && self.objects.framebuffers.contains_key(&name)
     }
 
-    fn attachment_slot(&mut self, target: u32, attachment: u32) -> Option<u32> {
-        if !matches!(
-            target,
-            GL_FRAMEBUFFER | GL_DRAW_FRAMEBUFFER | GL_READ_FRAMEBUFFER
-        ) {
-            self.set_error(GL_INVALID_ENUM);
-            return None;
+    /// The framebuffer bound to `target` (0 for the default one); None
+    /// with GL_INVALID_ENUM for a target that is not a framebuffer's.
+    fn bound_framebuffer(&mut self, target: u32) -> Option<u32> {
+        match target {
+            GL_READ_FRAMEBUFFER => Some(self.objects.read_framebuffer),
+            GL_FRAMEBUFFER | GL_DRAW_FRAMEBUFFER => Some(self.objects.draw_framebuffer),
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                None
+            }
         }
-        let fb = if target == GL_READ_FRAMEBUFFER {
-            self.objects.read_framebuffer
-        } else {
-            self.objects.draw_framebuffer
-        };
+    }
+
+    fn attachment_slot(&mut self, target: u32, attachment: u32) -> Option<u32> {
+        let fb = self.bound_framebuffer(target)?;
         if fb == 0 {
             self.set_error(GL_INVALID_OPERATION);
             return None;
@@ -627,19 +629,7 @@ impl Context {
         attachment: u32,
         pname: u32,
     ) -> Option<i32> {
-        if !matches!(
-            target,
-            GL_FRAMEBUFFER | GL_DRAW_FRAMEBUFFER | GL_READ_FRAMEBUFFER
-        ) {
-            self.set_error(GL_INVALID_ENUM);
-            return None;
-        }
-        let fb = if target == GL_READ_FRAMEBUFFER {
-            self.objects.read_framebuffer
-        } else {
-            self.objects.draw_framebuffer
-        };
-        if fb == 0 {
+        if self.bound_framebuffer(target)? == 0 {
             return self.default_attachment_parameter(attachment, pname);
         }
         let fb = self.attachment_slot(target, attachment)?;

@@ -859,10 +859,18 @@ fn proxy_textures_report_what_would_be_supported() {
     let q = |ctx: &mut Context, target: u32, pname: u32| {
         ctx.get_tex_level_parameteriv(target, 0, pname)
     };
+    // An RGBA8 image (or `ty`'s) of `size` on a proxy target, and the error.
+    fn rgba<const D: usize>(ctx: &mut Context, target: u32, size: [i32; D], ty: u32) -> u32 {
+        let f = GL_RGBA8 as i32;
+        ctx.tex_image(target, 0, f, size, 0, GL_RGBA, ty, None);
+        ctx.get_error()
+    }
+    const UB: u32 = GL_UNSIGNED_BYTE;
+    let r32f = GL_R32F as i32;
     ctx.tex_image(
         GL_PROXY_TEXTURE_3D,
         0,
-        GL_R32F as i32,
+        r32f,
         [48, 40, 32],
         0,
         GL_RED,
@@ -870,114 +878,56 @@ fn proxy_textures_report_what_would_be_supported() {
         None,
     );
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
-    assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_WIDTH), 48);
-    assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_HEIGHT), 40);
-    assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_DEPTH), 32);
-    assert_eq!(
-        q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_INTERNAL_FORMAT),
-        GL_R32F as i32
-    );
+    let sizes = [GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_DEPTH]
+        .map(|p| q(&mut ctx, GL_PROXY_TEXTURE_3D, p));
+    assert_eq!(sizes, [48, 40, 32]);
+    let format = q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_INTERNAL_FORMAT);
+    assert_eq!(format, r32f);
     assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_RED_SIZE), 32);
     // The real target is untouched.
     assert_eq!(q(&mut ctx, GL_TEXTURE_3D, GL_TEXTURE_WIDTH), 0);
 
     // Too large for a 3D texture: the proxy level empties, no error.
-    ctx.tex_image(
-        GL_PROXY_TEXTURE_3D,
-        0,
-        GL_RGBA8 as i32,
-        [4096, 4, 4],
-        0,
-        GL_RGBA,
-        GL_UNSIGNED_BYTE,
-        None,
+    assert_eq!(
+        rgba(&mut ctx, GL_PROXY_TEXTURE_3D, [4096, 4, 4], UB),
+        GL_NO_ERROR
     );
-    assert_eq!(ctx.get_error(), GL_NO_ERROR);
     assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_WIDTH), 0);
     assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_3D, GL_TEXTURE_RED_SIZE), 0);
     // More texels than an image may hold: also unsupported, not an error.
-    ctx.tex_image(
-        GL_PROXY_TEXTURE_2D_ARRAY,
-        0,
-        GL_RGBA8 as i32,
-        [2048, 2048, 32],
-        0,
-        GL_RGBA,
-        GL_UNSIGNED_BYTE,
-        None,
+    let huge = [2048, 2048, 32];
+    assert_eq!(
+        rgba(&mut ctx, GL_PROXY_TEXTURE_2D_ARRAY, huge, UB),
+        GL_NO_ERROR
     );
-    assert_eq!(ctx.get_error(), GL_NO_ERROR);
     assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_2D_ARRAY, GL_TEXTURE_WIDTH), 0);
-    ctx.tex_image(
-        GL_PROXY_TEXTURE_2D,
-        0,
-        GL_RGBA8 as i32,
-        [256, 128],
-        0,
-        GL_RGBA,
-        GL_UNSIGNED_BYTE,
-        None,
+    assert_eq!(
+        rgba(&mut ctx, GL_PROXY_TEXTURE_2D, [256, 128], UB),
+        GL_NO_ERROR
     );
     assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_2D, GL_TEXTURE_HEIGHT), 128);
-    ctx.tex_image(
-        GL_PROXY_TEXTURE_CUBE_MAP,
-        0,
-        GL_RGBA8 as i32,
-        [64, 64],
-        0,
-        GL_RGBA,
-        GL_UNSIGNED_BYTE,
-        None,
+    assert_eq!(
+        rgba(&mut ctx, GL_PROXY_TEXTURE_CUBE_MAP, [64, 64], UB),
+        GL_NO_ERROR
     );
     assert_eq!(q(&mut ctx, GL_PROXY_TEXTURE_CUBE_MAP, GL_TEXTURE_WIDTH), 64);
-    assert_eq!(ctx.get_error(), GL_NO_ERROR);
 
     // Errors other than size stay errors.
-    ctx.tex_image(
-        GL_PROXY_TEXTURE_2D,
-        0,
-        GL_RGBA8 as i32,
-        [-1, 4],
-        0,
-        GL_RGBA,
-        GL_UNSIGNED_BYTE,
-        None,
+    assert_eq!(
+        rgba(&mut ctx, GL_PROXY_TEXTURE_2D, [-1, 4], UB),
+        GL_INVALID_VALUE
     );
-    assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
-    ctx.tex_image(
-        GL_PROXY_TEXTURE_2D,
-        0,
-        GL_RGBA8 as i32,
-        [4, 4],
-        0,
-        GL_RGBA,
-        0x1234,
-        None,
+    assert_eq!(
+        rgba(&mut ctx, GL_PROXY_TEXTURE_2D, [4, 4], 0x1234),
+        GL_INVALID_ENUM
     );
-    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
-    ctx.tex_image(
-        GL_PROXY_TEXTURE_CUBE_MAP,
-        0,
-        GL_RGBA8 as i32,
-        [64, 32],
-        0,
-        GL_RGBA,
-        GL_UNSIGNED_BYTE,
-        None,
-    );
-    assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    let cube = rgba(&mut ctx, GL_PROXY_TEXTURE_CUBE_MAP, [64, 32], UB);
+    assert_eq!(cube, GL_INVALID_VALUE);
     // A 2D proxy target is not a 3D call's target.
-    ctx.tex_image(
-        GL_PROXY_TEXTURE_2D,
-        0,
-        GL_RGBA8 as i32,
-        [4, 4, 4],
-        0,
-        GL_RGBA,
-        GL_UNSIGNED_BYTE,
-        None,
+    assert_eq!(
+        rgba(&mut ctx, GL_PROXY_TEXTURE_2D, [4, 4, 4], UB),
+        GL_INVALID_ENUM
     );
-    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
     // No binding, parameters or image of a proxy.
     ctx.bind_texture(GL_PROXY_TEXTURE_2D, 1);
     assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
