@@ -366,6 +366,23 @@ impl Context {
         }
     }
 
+    /// The framebuffer a glFramebufferTexture* call attaches `texture`
+    /// to; None when the call is done (an error recorded, or texture 0
+    /// detached whatever was attached).
+    fn texture_attachment_slot(
+        &mut self,
+        target: u32,
+        attachment: u32,
+        texture: u32,
+    ) -> Option<u32> {
+        let fb = self.attachment_slot(target, attachment)?;
+        if texture == 0 {
+            self.set_attachment(fb, attachment, None);
+            return None;
+        }
+        Some(fb)
+    }
+
     fn attachment_slot(&mut self, target: u32, attachment: u32) -> Option<u32> {
         let fb = self.bound_framebuffer(target)?;
         if fb == 0 {
@@ -416,13 +433,9 @@ impl Context {
         texture: u32,
         level: i32,
     ) {
-        let Some(fb) = self.attachment_slot(target, attachment) else {
+        let Some(fb) = self.texture_attachment_slot(target, attachment, texture) else {
             return;
         };
-        if texture == 0 {
-            self.set_attachment(fb, attachment, None);
-            return;
-        }
         let image = image_target(textarget, 2).or_else(|| image_target(textarget, 1));
         // A 1D array's layers are attached by layer, not as a 2D image.
         let Some((bind, face)) = image.filter(|&(t, _)| t != GL_TEXTURE_1D_ARRAY) else {
@@ -498,13 +511,9 @@ impl Context {
         level: i32,
         layer: i32,
     ) {
-        let Some(fb) = self.attachment_slot(target, attachment) else {
+        let Some(fb) = self.texture_attachment_slot(target, attachment, texture) else {
             return;
         };
-        if texture == 0 {
-            self.set_attachment(fb, attachment, None);
-            return;
-        }
         let tex_target = self.objects.textures.get(&texture).map(|t| t.target);
         let Some(
             tt @ (GL_TEXTURE_3D
@@ -538,13 +547,9 @@ impl Context {
     /// §4.4.2, §4.4.7), which draws into layer 0 (there is no geometry
     /// stage to choose another).
     pub fn framebuffer_texture(&mut self, target: u32, attachment: u32, texture: u32, level: i32) {
-        let Some(fb) = self.attachment_slot(target, attachment) else {
+        let Some(fb) = self.texture_attachment_slot(target, attachment, texture) else {
             return;
         };
-        if texture == 0 {
-            self.set_attachment(fb, attachment, None);
-            return;
-        }
         let Some(tt) = self.objects.textures.get(&texture).map(|t| t.target) else {
             self.set_error(GL_INVALID_VALUE);
             return;
