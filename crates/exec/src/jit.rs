@@ -408,7 +408,18 @@ unsafe extern "C" fn jit_step(ctx: *mut Ctx, index: u32, cur: u32) {
     // lookups, noise, derivatives; `engine::floats`).
     let r = float_env::callback(daz(), || {
         catch_unwind(AssertUnwindSafe(|| unsafe {
-            engine::step_data(code, regs, &ins, cur, uniforms, textures)
+            // Texture ops, the most frequent callback, straight to the
+            // engine's lookup: `step_data` would build a whole engine
+            // state, and its frame (every op's temporaries) costs stack
+            // probes on each call. The same code runs either way.
+            match ins.op {
+                crate::program::Op::Texture { index } => {
+                    if let Some(t) = code.prog.textures.get(index as usize) {
+                        engine::texture(regs, t, cur, textures);
+                    }
+                }
+                _ => engine::step_data(code, regs, &ins, cur, uniforms, textures),
+            }
         }))
     });
     if let Err(p) = r {
