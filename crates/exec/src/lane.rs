@@ -115,6 +115,20 @@ pub(crate) fn umod(x: u32, y: u32) -> u32 {
     }
 }
 
+/// Integer op `k` (0 `IDiv`, 1 `IMod`, 2 `UDiv`, 3 `UMod`) on every
+/// lane of `a` and `b`, `None` for another `k`: what native code asks
+/// its math helper for.
+#[inline(always)]
+pub(crate) fn int2(k: usize, a: &[u32; LANES], b: &[u32; LANES]) -> Option<[u32; LANES]> {
+    Some(match k {
+        0 => std::array::from_fn(|l| idiv(a[l], b[l])),
+        1 => std::array::from_fn(|l| imod(a[l], b[l])),
+        2 => std::array::from_fn(|l| udiv(a[l], b[l])),
+        3 => std::array::from_fn(|l| umod(a[l], b[l])),
+        _ => return None,
+    })
+}
+
 /// `-x` (`FNeg`): the sign bit flipped (NaNs included; never a new
 /// subnormal).
 #[inline(always)]
@@ -299,7 +313,7 @@ macro_rules! lane_ops {
                 jit ibin!(d, a, b, imul);
             // Wrapping, and 0 for a division by zero.
             IDiv { d, a, b } => lane bin!(d, a, b, |x, y| $crate::lane::idiv(x, y)),
-                jit call_step!();
+                jit call_int!(d, a, b, 0);
             INeg { d, a } => lane un!(d, a, |x| (x as i32).wrapping_neg() as u32),
                 jit un_ins!(d, a, ld, ineg);
             ILt { d, a, b } => lane bin!(d, a, b, |x, y| ((x as i32) < (y as i32)) as u32),
@@ -310,11 +324,11 @@ macro_rules! lane_ops {
                 jit icmp!(d, a, b, IntCC::Equal);
             // Wrapping, and 0 for a division by zero.
             UDiv { d, a, b } => lane bin!(d, a, b, |x, y| $crate::lane::udiv(x, y)),
-                jit call_step!();
+                jit call_int!(d, a, b, 2);
             IMod { d, a, b } => lane bin!(d, a, b, |x, y| $crate::lane::imod(x, y)),
-                jit call_step!();
+                jit call_int!(d, a, b, 1);
             UMod { d, a, b } => lane bin!(d, a, b, |x, y| $crate::lane::umod(x, y)),
-                jit call_step!();
+                jit call_int!(d, a, b, 3);
             ULt { d, a, b } => lane bin!(d, a, b, |x, y| (x < y) as u32),
                 jit icmp!(d, a, b, IntCC::UnsignedLessThan);
             ULe { d, a, b } => lane bin!(d, a, b, |x, y| (x <= y) as u32),
