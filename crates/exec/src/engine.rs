@@ -682,9 +682,11 @@ fn floats(a: &Lanes) -> [f32; LANES] {
     a.map(|x| fz(f(x)))
 }
 
+/// A texture op (`Op::Texture`) on the lanes of `cur`.
+///
 /// # Safety
 /// `regs` must hold every register `t` names (validated).
-unsafe fn texture(
+pub(crate) unsafe fn texture(
     regs: *mut Lanes,
     t: &crate::program::TexOp,
     cur: LaneMask,

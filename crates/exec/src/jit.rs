@@ -49,7 +49,8 @@
 //! gathers and scatters, uniform reads outside the prologue, derivatives,
 //! noise, texture lookups) calls back into Rust: `jit_f1`/`jit_f2` run the
 //! engine's own lane functions (compiled for AVX-512 or AVX2 when the CPU
-//! has them, where their lane loops vectorize wider), `jit_step` the
+//! has them, where their lane loops vectorize wider; `jit_f2` also the
+//! integer divisions, `lane::int2`), `jit_step` the
 //! engine's own `step` on the op, so those compute the interpreter's bits
 //! by construction.
 //!
@@ -408,7 +409,18 @@ unsafe extern "C" fn jit_step(ctx: *mut Ctx, index: u32, cur: u32) {
     // lookups, noise, derivatives; `engine::floats`).
     let r = float_env::callback(daz(), || {
         catch_unwind(AssertUnwindSafe(|| unsafe {
-            engine::step_data(code, regs, &ins, cur, uniforms, textures)
+            // Texture ops, the most frequent callback, straight to the
+            // engine's lookup: `step_data` would build a whole engine
+            // state, and its frame (every op's temporaries) costs stack
+            // probes on each call. The same code runs either way.
+            match ins.op {
+                crate::program::Op::Texture { index } => {
+                    if let Some(t) = code.prog.textures.get(index as usize) {
+                        engine::texture(regs, t, cur, textures);
+                    }
+                }
+                _ => engine::step_data(code, regs, &ins, cur, uniforms, textures),
+            }
         }))
     });
     if let Err(p) = r {
@@ -467,7 +479,18 @@ unsafe extern "C" fn jit_f2(func: u32, out: *mut Lanes, a: *const Lanes, b: *con
         *out = float_env::callback(daz(), || {
             engine::f2(f, &engine::flushed(&*a), &engine::flushed(&*b))
         });
+    } else if let Some(v) = int2(func, &*a, &*b) {
+        *out = v;
     }
+}
+
+/// Integer op `func − F2_CALLED.len()` of `lane::int2` (the indices of
+/// `jit_f2` after the float functions): integer operands, not flushed;
+/// no float environment to switch (integers and their f64 quotients are
+/// never subnormal).
+#[inline(always)]
+fn int2(func: u32, a: &Lanes, b: &Lanes) -> Option<Lanes> {
+    crate::lane::int2((func as usize).checked_sub(F2_CALLED.len())?, a, b)
 }
 
 /// [`jit_f1`] and [`jit_f2`] compiled for a [`crate::cpu::Level`]:
@@ -499,6 +522,8 @@ macro_rules! math_helpers_for {
                     *out = float_env::callback(daz(), || {
                         engine::f2(f, &engine::flushed(&*a), &engine::flushed(&*b))
                     });
+                } else if let Some(v) = int2(func, &*a, &*b) {
+                    *out = v;
                 }
             }
         );

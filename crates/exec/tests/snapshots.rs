@@ -79,6 +79,11 @@ const CASES: &[Case] = &[
         sources: &["crates/exec/tests/snapshots/texture-discard.frag"],
     },
     Case {
+        name: "texel-fetch.frag",
+        stage: Stage::Fragment,
+        sources: &["crates/exec/tests/snapshots/texel-fetch.frag"],
+    },
+    Case {
         name: "ftransform.vert",
         stage: Stage::Vertex,
         sources: &["crates/exec/tests/snapshots/ftransform.vert"],

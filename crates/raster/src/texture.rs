@@ -203,6 +203,7 @@ impl Image {
         self.texels.get(index)
     }
 
+    #[inline]
     pub(crate) fn texel(&self, i: usize, j: usize, k: usize) -> [f32; 4] {
         let (w, h) = (self.width as usize, self.height as usize);
         self.texels.get((k * h + j) * w + i)

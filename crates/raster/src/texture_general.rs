@@ -13,7 +13,7 @@ use crate::texture::levels::{
 };
 use crate::texture::{
     srgb_to_linear, DepthTextureMode, Image, Texels, Texture, TextureTarget, TextureUnit, Wrap,
-    MISSING,
+    MISSING, NO_SWIZZLE,
 };
 use crate::unorm8_filter;
 use glsl::math;
@@ -91,6 +91,13 @@ pub(crate) fn fetch_general(
     req: &FetchRequest,
     out: &mut [[f32; LANES]; 4],
 ) {
+    if !fetch_shared(units, req, out) {
+        fetch_lanes(units, req, out);
+    }
+}
+
+/// [`fetch_general`] lane by lane.
+fn fetch_lanes(units: &[TextureUnit], req: &FetchRequest, out: &mut [[f32; LANES]; 4]) {
     // The texture and its last complete level, found once per unit: the
     // lanes nearly always share one, and completeness walks the levels.
     let mut found: Option<(u32, Option<(&Texture, usize)>)> = None;
@@ -117,6 +124,65 @@ pub(crate) fn fetch_general(
             o[lane] = v;
         }
     }
+}
+
+/// [`fetch_general`] when every lane of `req.mask` reads one level of
+/// one texture whose texels are used as stored (no sRGB decoding, depth
+/// texture mode or swizzle), as lanes nearly always do: the texture, its
+/// completeness and the level found once, then per lane a bounds check
+/// and a load. Returns false, having written nothing, otherwise (also
+/// for a missing texture or level, which the lane path answers).
+fn fetch_shared(units: &[TextureUnit], req: &FetchRequest, out: &mut [[f32; LANES]; 4]) -> bool {
+    let on = |l: usize| req.mask & (1 << l) != 0;
+    let Some(first) = (0..LANES).find(|&l| on(l)) else {
+        return true;
+    };
+    let (unit, lod) = (req.unit[first], req.lod[first]);
+    if (0..LANES).any(|l| on(l) && (req.unit[l] != unit || req.lod[l] != lod)) {
+        return false;
+    }
+    let Some(tex) = units
+        .get(unit as usize)
+        .and_then(|u| unit_texture(u, req.target))
+    else {
+        return false;
+    };
+    if tex.srgb || tex.depth_format || tex.swizzle != NO_SWIZZLE {
+        return false;
+    }
+    let level = match (
+        tex.last_level(),
+        (tex.base_level as i64).checked_add(lod as i64),
+    ) {
+        (Some(q), Some(level)) if lod >= 0 && level <= q as i64 => level as usize,
+        _ => return false,
+    };
+    let Some(img) = tex.levels.get(level) else {
+        return false;
+    };
+    // As `fetch_lane`: the coordinates of the target (and its layer) must
+    // be inside the level; the others read as 0 (kept by a zero mask,
+    // checked against a size of 1).
+    let n = tex.dims() + usize::from(tex.layered());
+    let sizes = [img.width, img.height, img.depth];
+    let limit: [i64; 3] = std::array::from_fn(|a| if a < n { sizes[a] as i64 } else { 1 });
+    let keep: [i32; 3] = std::array::from_fn(|a| if a < n { -1 } else { 0 });
+    for lane in 0..LANES {
+        if !on(lane) {
+            continue;
+        }
+        let c: [i32; 3] = std::array::from_fn(|a| req.coord[a][lane] & keep[a]);
+        let inside = (0..3).all(|a| c[a] >= 0 && (c[a] as i64) < limit[a]);
+        let t = if inside {
+            img.texel(c[0] as usize, c[1] as usize, c[2] as usize)
+        } else {
+            MISSING
+        };
+        for (o, v) in out.iter_mut().zip(t) {
+            o[lane] = v;
+        }
+    }
+    true
 }
 
 /// Lane `lane`'s texel of `tex`, whose last complete level is `q`.

@@ -1,7 +1,7 @@
 use super::*;
 use crate::ex::Textures;
 use crate::state::CompareFunc;
-use crate::texture::{MagFilter, MinFilter};
+use crate::texture::{MagFilter, MinFilter, Swizzle};
 use crate::texture_units::TextureUnits;
 use std::sync::Arc;
 
@@ -585,4 +585,89 @@ fn glsl130_shadow_lookups_ignore_the_depth_texture_mode() {
         units.sample(&req, &mut out);
         assert_eq!(out[0][0], 1.0, "{mode:?}");
     }
+}
+
+/// `fetch_general` (whose lanes sharing a unit and level take
+/// `fetch_shared`) gives the lane-by-lane results: every target with
+/// texel fetches, in and out of the level, on levels past the last, with
+/// swizzles, sRGB and depth textures (which `fetch_shared` declines).
+#[test]
+fn shared_fetches_match_the_lane_path() {
+    let mut arr = Texture::new(
+        TextureTarget::Tex2DArray,
+        vec![texel_ramp(4, 2, 3), texel_ramp(2, 1, 3)],
+    );
+    arr.min_filter = MinFilter::NearestMipmapNearest;
+    let rect = nearest(Texture::new(TextureTarget::Rect, vec![texel_ramp(5, 3, 1)]));
+    let t3d = nearest(Texture::new(
+        TextureTarget::Tex3D,
+        vec![texel_ramp(3, 2, 4)],
+    ));
+    let t1d = nearest(Texture::new(
+        TextureTarget::Tex1DArray,
+        vec![texel_ramp(6, 2, 1)],
+    ));
+    let mut t2d = nearest(ramp(4, 4, 1));
+    t2d.swizzle = [Swizzle::B, Swizzle::R, Swizzle::One, Swizzle::G];
+    let mut depth = nearest(ramp(4, 4, 1));
+    depth.depth_format = true;
+    let mut srgb = nearest(Texture::new(
+        TextureTarget::Tex2D,
+        vec![solid(3, 3, [0.25, 0.5, 0.75, 0.5])],
+    ));
+    srgb.srgb = true;
+    let unit = |tex_2d: Texture| TextureUnit {
+        tex_2d_array: Some(Arc::new(arr.clone())),
+        rect: Some(Arc::new(rect.clone())),
+        tex_3d: Some(Arc::new(t3d.clone())),
+        tex_1d_array: Some(Arc::new(t1d.clone())),
+        tex_2d: Some(Arc::new(tex_2d)),
+        ..TextureUnit::default()
+    };
+    let units = vec![
+        unit(t2d),
+        unit(depth),
+        unit(srgb),
+        unit(nearest(ramp(4, 4, 1))),
+    ];
+    let targets = [
+        SamplerKind::Sampler2DArray,
+        SamplerKind::Sampler2DRect,
+        SamplerKind::Sampler3D,
+        SamplerKind::Sampler1DArray,
+        SamplerKind::Sampler2D,
+        SamplerKind::Sampler1D,
+    ];
+    let mut seed = 0x2545_f491_4f6c_dd1du64;
+    let mut next = |n: u64| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed % n
+    };
+    let mut shared = 0;
+    for round in 0..4000 {
+        let target = targets[next(targets.len() as u64) as usize];
+        // Mostly one unit and level for all lanes, sometimes not.
+        let (u, lod) = (next(5) as u32, next(4) as i32 - 1);
+        let mixed = round % 4 == 0;
+        let req = FetchRequest {
+            unit: std::array::from_fn(|_| if mixed { next(5) as u32 } else { u }),
+            target,
+            coord: std::array::from_fn(|_| std::array::from_fn(|_| next(9) as i32 - 2)),
+            lod: std::array::from_fn(|_| if mixed { next(3) as i32 } else { lod }),
+            mask: next(1 << 16) as u32,
+        };
+        let (mut got, mut want) = ([[7.0; LANES]; 4], [[7.0; LANES]; 4]);
+        shared += usize::from(fetch_shared(&units, &req, &mut [[0.0; LANES]; 4]));
+        fetch_general(&units, &req, &mut got);
+        fetch_lanes(&units, &req, &mut want);
+        for c in 0..4 {
+            for l in 0..LANES {
+                assert_eq!(got[c][l].to_bits(), want[c][l].to_bits(), "{req:?} {c} {l}");
+            }
+        }
+    }
+    // The fast path was exercised, and declined too.
+    assert!(shared > 200 && shared < 3900, "{shared}");
 }

@@ -157,6 +157,10 @@ fn pool_in_file(code: &Code) -> bool {
                 // where pool registers are.
                 Op::F1 { .. }
                 | Op::F2 { .. }
+                | Op::IDiv { .. }
+                | Op::IMod { .. }
+                | Op::UDiv { .. }
+                | Op::UMod { .. }
                 | Op::Scatter { .. }
                 | Op::AndMask { .. }
                 | Op::AndNotMask { .. } => true,

@@ -412,9 +412,12 @@ impl<'a, 'b> Emit<'a, 'b> {
                 })
             };
         }
-        macro_rules! call_step {
-            () => {
-                self.call_step(index)
+        // Integer division: `jit_f2`'s indices after `F2_CALLED`
+        // (`lane::int2`), in vector registers where a callback to `step`
+        // would build an engine state per op.
+        macro_rules! call_int {
+            ($d:expr, $a:expr, $b:expr, $k:expr) => {
+                self.call_math(true, F2_CALLED.len() + $k, $d, $a, $b, m)
             };
         }
         macro_rules! clamp_idx {
