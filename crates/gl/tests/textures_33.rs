@@ -10,6 +10,37 @@ use gl::{ArrayData, Context};
 
 mod common;
 
+const RGBA8: i32 = GL_RGBA8 as i32;
+const UB: u32 = GL_UNSIGNED_BYTE;
+
+/// glTexImage of level 0 without a border, the only kind these tests make.
+trait Level0 {
+    #[allow(clippy::too_many_arguments)]
+    fn level0<const D: usize>(
+        &mut self,
+        target: u32,
+        internal: i32,
+        size: [i32; D],
+        format: u32,
+        ty: u32,
+        data: Option<&[u8]>,
+    );
+}
+
+impl Level0 for Context {
+    fn level0<const D: usize>(
+        &mut self,
+        target: u32,
+        internal: i32,
+        size: [i32; D],
+        format: u32,
+        ty: u32,
+        data: Option<&[u8]>,
+    ) {
+        self.tex_image(target, 0, internal, size, 0, format, ty, data);
+    }
+}
+
 const VS: &str = "#version 130\n\
     in vec2 pos;\n\
     out vec2 tc;\n\
@@ -61,12 +92,10 @@ fn integer_textures_sample_their_integers() {
     // second texture from bytes.
     let texels: [i32; 8] = [i32::MIN, -1, 7, i32::MAX, 1, 2, 3, 4];
     let data = bytes(&texels, |x: i32| x.to_le_bytes().to_vec());
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D,
-        0,
         GL_RGBA32I as i32,
         [2, 1],
-        0,
         GL_RGBA_INTEGER,
         GL_INT,
         Some(&data),
@@ -87,12 +116,10 @@ fn integer_textures_sample_their_integers() {
     // Unsigned, 8-bit red only: missing components 0, alpha 1; values
     // clamped to the format's range.
     let data = bytes(&[300u16, 65535], |x: u16| x.to_le_bytes().to_vec());
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D,
-        0,
         GL_R8UI as i32,
         [2, 1],
-        0,
         GL_RED_INTEGER,
         GL_UNSIGNED_SHORT,
         Some(&data),
@@ -122,12 +149,10 @@ fn integer_formats_take_integer_data_only() {
         (GL_RGBA8, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE),
         (GL_RGBA32UI, GL_RGBA_INTEGER, GL_FLOAT),
     ] {
-        ctx.tex_image(
+        ctx.level0(
             GL_TEXTURE_2D,
-            0,
             internal as i32,
             [1, 1],
-            0,
             format,
             ty,
             Some(&data),
@@ -138,12 +163,10 @@ fn integer_formats_take_integer_data_only() {
             "{internal:#x} {format:#x} {ty:#x}"
         );
     }
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D,
-        0,
         GL_RG16I as i32,
         [1, 1],
-        0,
         GL_RG_INTEGER,
         GL_SHORT,
         Some(&data),
@@ -168,14 +191,12 @@ fn array_textures_select_a_layer() {
             texels.extend(c);
         }
     }
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D_ARRAY,
-        0,
-        GL_RGBA8 as i32,
+        RGBA8,
         [2, 2, 3],
-        0,
         GL_RGBA,
-        GL_UNSIGNED_BYTE,
+        UB,
         Some(&texels),
     );
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
@@ -197,14 +218,12 @@ fn array_textures_select_a_layer() {
     // A 1D array from a 2D image: each row a layer.
     let t1 = ctx.gen_textures(1)[0];
     ctx.bind_texture(GL_TEXTURE_1D_ARRAY, t1);
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_1D_ARRAY,
-        0,
-        GL_RGBA8 as i32,
+        RGBA8,
         [4, 3],
-        0,
         GL_RGBA,
-        GL_UNSIGNED_BYTE,
+        UB,
         Some(&texels),
     );
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
@@ -260,14 +279,12 @@ fn rectangle_textures_take_texel_coordinates() {
         Some(&texels),
     );
     assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_RECTANGLE,
-        0,
-        GL_RGBA8 as i32,
+        RGBA8,
         [4, 2],
-        0,
         GL_RGBA,
-        GL_UNSIGNED_BYTE,
+        UB,
         Some(&texels),
     );
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
@@ -343,14 +360,12 @@ fn srgb_textures_decode_to_linear() {
     ctx.bind_texture(GL_TEXTURE_2D, t);
     // Encoded 0, 10, 128, 255 (alpha stays linear).
     let texels = [0u8, 10, 128, 128, 255, 255, 255, 255];
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D,
-        0,
         GL_SRGB8_ALPHA8 as i32,
         [2, 1],
-        0,
         GL_RGBA,
-        GL_UNSIGNED_BYTE,
+        UB,
         Some(&texels),
     );
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
@@ -368,16 +383,7 @@ fn srgb_textures_decode_to_linear() {
         }";
     assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
     // The same bytes in RGBA8 are not decoded (the check can fail).
-    ctx.tex_image(
-        GL_TEXTURE_2D,
-        0,
-        GL_RGBA8 as i32,
-        [2, 1],
-        0,
-        GL_RGBA,
-        GL_UNSIGNED_BYTE,
-        Some(&texels),
-    );
+    ctx.level0(GL_TEXTURE_2D, RGBA8, [2, 1], GL_RGBA, UB, Some(&texels));
     assert_eq!(draw(&mut ctx, fs, (4, 4)), RED);
 }
 
@@ -390,12 +396,10 @@ fn packed_float_formats_keep_their_precision() {
     let data = bytes(&[1.0f32 + 1.0 / 256.0, -3.0, 1e6, 0.0], |x: f32| {
         x.to_le_bytes().to_vec()
     });
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D,
-        0,
         GL_R11F_G11F_B10F as i32,
         [1, 1],
-        0,
         GL_RGBA,
         GL_FLOAT,
         Some(&data),
@@ -414,12 +418,10 @@ fn packed_float_formats_keep_their_precision() {
     // RGB9_E5: the shared exponent of 4.0 leaves 9-bit mantissas below 8,
     // steps of 1/64, so 0.01 becomes 0.015625.
     let data = bytes(&[4.0f32, 0.01, 1.0, 0.0], |x: f32| x.to_le_bytes().to_vec());
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D,
-        0,
         GL_RGB9_E5 as i32,
         [1, 1],
-        0,
         GL_RGBA,
         GL_FLOAT,
         Some(&data),
@@ -444,14 +446,12 @@ fn array_mipmaps_keep_their_layers() {
         .iter()
         .flat_map(|&v| [v, 0, 0, 255].repeat(16))
         .collect();
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D_ARRAY,
-        0,
-        GL_RGBA8 as i32,
+        RGBA8,
         [4, 4, 2],
-        0,
         GL_RGBA,
-        GL_UNSIGNED_BYTE,
+        UB,
         Some(&texels),
     );
     ctx.generate_mipmap(GL_TEXTURE_2D_ARRAY);
@@ -481,14 +481,12 @@ fn array_mipmaps_keep_their_layers() {
     assert_eq!(draw(&mut ctx, fs, (4, 4)), GREEN);
     // Integer textures have no mipmaps to generate.
     let data = [0u8; 4];
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D_ARRAY,
-        0,
         GL_R8UI as i32,
         [2, 2, 1],
-        0,
         GL_RED_INTEGER,
-        GL_UNSIGNED_BYTE,
+        UB,
         Some(&data),
     );
     ctx.generate_mipmap(GL_TEXTURE_2D_ARRAY);
@@ -502,12 +500,10 @@ fn integer_images_read_back_as_integers() {
     ctx.bind_texture(GL_TEXTURE_2D, t);
     let texels: [i32; 4] = [i32::MIN, -1, 7, i32::MAX];
     let data = bytes(&texels, |x: i32| x.to_le_bytes().to_vec());
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D,
-        0,
         GL_RGBA32I as i32,
         [1, 1],
-        0,
         GL_RGBA_INTEGER,
         GL_INT,
         Some(&data),
@@ -528,14 +524,12 @@ fn integer_images_read_back_as_integers() {
     assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
     // A missing alpha reads as 1.
     let data = [200u8];
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D,
-        0,
         GL_R8UI as i32,
         [1, 1],
-        0,
         GL_RED_INTEGER,
-        GL_UNSIGNED_BYTE,
+        UB,
         Some(&data),
     );
     ctx.pixel_storei(GL_PACK_ALIGNMENT, 1);
@@ -544,14 +538,12 @@ fn integer_images_read_back_as_integers() {
         vec![200, 0, 0, 0, 0, 0, 1, 0]
     );
     // Colour textures are not read as integers.
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D,
-        0,
-        GL_RGBA8 as i32,
+        RGBA8,
         [1, 1],
-        0,
         GL_RGBA,
-        GL_UNSIGNED_BYTE,
+        UB,
         Some(&[1, 2, 3, 4]),
     );
     assert!(ctx
@@ -634,16 +626,7 @@ fn red_green_and_rectangle_textures_are_drawn_into() {
     ] {
         let t = ctx.gen_textures(1)[0];
         ctx.bind_texture(target, t);
-        ctx.tex_image(
-            target,
-            0,
-            internal as i32,
-            [8, 8],
-            0,
-            GL_RGBA,
-            GL_UNSIGNED_BYTE,
-            None,
-        );
+        ctx.level0(target, internal as i32, [8, 8], GL_RGBA, UB, None);
         nearest(&mut ctx, target);
         let fb = ctx.gen_framebuffers(1)[0];
         ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
@@ -660,14 +643,12 @@ fn red_green_and_rectangle_textures_are_drawn_into() {
     // Integer colour buffers are not drawn into.
     let t = ctx.gen_textures(1)[0];
     ctx.bind_texture(GL_TEXTURE_2D, t);
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D,
-        0,
         GL_RGBA8UI as i32,
         [8, 8],
-        0,
         GL_RGBA_INTEGER,
-        GL_UNSIGNED_BYTE,
+        UB,
         None,
     );
     let fb = ctx.gen_framebuffers(1)[0];
@@ -699,12 +680,10 @@ fn depth_cube_maps_compare_through_sampler_cube_shadow() {
     for face in 0..6u32 {
         let d: f32 = if face == 0 { 0.25 } else { 0.5 };
         let data = bytes(&[d; 4], |x: f32| x.to_le_bytes().to_vec());
-        ctx.tex_image(
+        ctx.level0(
             GL_TEXTURE_CUBE_MAP_POSITIVE_X + face,
-            0,
             GL_DEPTH_COMPONENT32F as i32,
             [2, 2],
-            0,
             GL_DEPTH_COMPONENT,
             GL_FLOAT,
             Some(&data),
@@ -739,14 +718,12 @@ fn swizzles_rearrange_lookup_results() {
     let mut ctx = Context::new(8, 8);
     let t = ctx.gen_textures(1)[0];
     ctx.bind_texture(GL_TEXTURE_2D, t);
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D,
-        0,
-        GL_RGBA8 as i32,
+        RGBA8,
         [1, 1],
-        0,
         GL_RGBA,
-        GL_UNSIGNED_BYTE,
+        UB,
         Some(&[255, 0, 51, 102]),
     );
     nearest(&mut ctx, GL_TEXTURE_2D);
@@ -802,39 +779,19 @@ fn level_queries_report_component_sizes_and_types() {
         (GL_RGBA16F, GL_RGBA, 16, GL_FLOAT),
         (GL_RGBA8, GL_RGBA, 8, GL_UNSIGNED_NORMALIZED),
     ] {
-        ctx.tex_image(
-            GL_TEXTURE_2D,
-            0,
-            internal as i32,
-            [1, 1],
-            0,
-            format,
-            GL_UNSIGNED_BYTE,
-            None,
-        );
+        ctx.level0(GL_TEXTURE_2D, internal as i32, [1, 1], format, UB, None);
         assert_eq!(ctx.get_error(), GL_NO_ERROR);
         assert_eq!(q(&mut ctx, GL_TEXTURE_ALPHA_SIZE), size, "{internal:#x}");
         assert_eq!(q(&mut ctx, GL_TEXTURE_RED_TYPE), ty as i32, "{internal:#x}");
         assert_eq!(q(&mut ctx, GL_TEXTURE_DEPTH_TYPE), GL_NONE as i32);
     }
-    ctx.tex_image(
-        GL_TEXTURE_2D,
-        0,
-        GL_R8 as i32,
-        [1, 1],
-        0,
-        GL_RED,
-        GL_UNSIGNED_BYTE,
-        None,
-    );
+    ctx.level0(GL_TEXTURE_2D, GL_R8 as i32, [1, 1], GL_RED, UB, None);
     assert_eq!(q(&mut ctx, GL_TEXTURE_GREEN_TYPE), GL_NONE as i32);
     assert_eq!(q(&mut ctx, GL_TEXTURE_RED_SIZE), 8);
-    ctx.tex_image(
+    ctx.level0(
         GL_TEXTURE_2D,
-        0,
         GL_R11F_G11F_B10F as i32,
         [1, 1],
-        0,
         GL_RGB,
         GL_FLOAT,
         None,
@@ -867,12 +824,10 @@ fn proxy_textures_report_what_would_be_supported() {
     }
     const UB: u32 = GL_UNSIGNED_BYTE;
     let r32f = GL_R32F as i32;
-    ctx.tex_image(
+    ctx.level0(
         GL_PROXY_TEXTURE_3D,
-        0,
         r32f,
         [48, 40, 32],
-        0,
         GL_RED,
         GL_FLOAT,
         None,
