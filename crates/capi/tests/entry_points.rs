@@ -7,16 +7,11 @@ use std::ffi::c_void;
 use std::ptr::null_mut;
 use OSMesa::*;
 
+mod common;
+
 /// A current W x H RGBA context over `buf`; destroyed by the caller.
 unsafe fn context(buf: &mut Vec<u8>, w: i32, h: i32) -> OSMesaContext {
-    *buf = vec![0u8; (w * h * 4) as usize];
-    let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, null_mut());
-    assert!(!ctx.is_null());
-    assert_eq!(
-        OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, w, h),
-        OSMesa::GL_TRUE
-    );
-    ctx
+    common::current_context(buf, w, h, None)
 }
 
 #[test]

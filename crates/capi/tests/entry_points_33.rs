@@ -40,27 +40,7 @@ fn entry_points_are_exported_by_name() {
 
 /// A current 3.3 context of `profile` on an 8×8 RGBA buffer.
 unsafe fn context(buf: &mut Vec<u8>, profile: i32) -> OSMesaContext {
-    *buf = vec![0u8; 8 * 8 * 4];
-    let attribs = [
-        OSMESA_FORMAT,
-        OSMESA_RGBA as i32,
-        OSMESA_DEPTH_BITS,
-        24,
-        OSMESA_PROFILE,
-        profile,
-        OSMESA_CONTEXT_MAJOR_VERSION,
-        3,
-        OSMESA_CONTEXT_MINOR_VERSION,
-        3,
-        0,
-    ];
-    let ctx = OSMesaCreateContextAttribs(attribs.as_ptr(), null_mut());
-    assert!(!ctx.is_null());
-    assert_eq!(
-        OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, 8, 8),
-        OSMesa::GL_TRUE
-    );
-    ctx
+    common::current_context(buf, 8, 8, Some(profile))
 }
 
 /// Links `vs` and `fs`, makes the program current and sets up a

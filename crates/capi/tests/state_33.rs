@@ -5,7 +5,6 @@
 
 use gl::enums::*;
 use std::ffi::{c_void, CString};
-use std::ptr::null_mut;
 use OSMesa::*;
 
 mod common;
@@ -33,29 +32,7 @@ const NAMES: &[&str] = &[
 ];
 
 unsafe fn compat_context(buf: &mut Vec<u8>) -> OSMesaContext {
-    *buf = vec![0u8; 8 * 8 * 4];
-    let attribs = [
-        OSMESA_FORMAT,
-        OSMESA_RGBA as i32,
-        OSMESA_DEPTH_BITS,
-        24,
-        OSMESA_STENCIL_BITS,
-        8,
-        OSMESA_PROFILE,
-        OSMESA_COMPAT_PROFILE,
-        OSMESA_CONTEXT_MAJOR_VERSION,
-        3,
-        OSMESA_CONTEXT_MINOR_VERSION,
-        3,
-        0,
-    ];
-    let ctx = OSMesaCreateContextAttribs(attribs.as_ptr(), null_mut());
-    assert!(!ctx.is_null());
-    assert_eq!(
-        OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, 8, 8),
-        OSMesa::GL_TRUE
-    );
-    ctx
+    common::current_context(buf, 8, 8, Some(OSMESA_COMPAT_PROFILE))
 }
 
 unsafe fn pixel() -> [u8; 4] {

@@ -5,7 +5,6 @@
 
 use gl::enums::*;
 use std::ffi::{c_void, CString};
-use std::ptr::null_mut;
 use OSMesa::*;
 
 mod common;
@@ -30,27 +29,7 @@ const NAMES: &[&str] = &[
 ];
 
 unsafe fn core_context(buf: &mut Vec<u8>) -> OSMesaContext {
-    *buf = vec![0u8; (W * H * 4) as usize];
-    let attribs = [
-        OSMESA_FORMAT,
-        OSMESA_RGBA as i32,
-        OSMESA_DEPTH_BITS,
-        24,
-        OSMESA_PROFILE,
-        OSMESA_CORE_PROFILE,
-        OSMESA_CONTEXT_MAJOR_VERSION,
-        3,
-        OSMESA_CONTEXT_MINOR_VERSION,
-        3,
-        0,
-    ];
-    let ctx = OSMesaCreateContextAttribs(attribs.as_ptr(), null_mut());
-    assert!(!ctx.is_null());
-    assert_eq!(
-        OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, W, H),
-        OSMesa::GL_TRUE
-    );
-    ctx
+    common::current_context(buf, W, H, Some(OSMESA_CORE_PROFILE))
 }
 
 /// A program drawing `pos` in green, with a VAO holding a full-window

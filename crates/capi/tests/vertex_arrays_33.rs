@@ -94,14 +94,7 @@ const NAMES: &[&str] = &[
 ];
 
 unsafe fn context(buf: &mut Vec<u8>) -> OSMesaContext {
-    *buf = vec![0u8; (W * H * 4) as usize];
-    let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, null_mut());
-    assert!(!ctx.is_null());
-    assert_eq!(
-        OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, W, H),
-        OSMesa::GL_TRUE
-    );
-    ctx
+    common::current_context(buf, W, H, None)
 }
 
 unsafe fn program(vs: &str, fs: &str) -> u32 {
