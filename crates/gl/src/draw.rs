@@ -31,7 +31,7 @@ impl Context {
     }
 
     /// Checks shared by the draw calls (GL 2.1 §2.8).
-    fn check_draw(&mut self, mode: u32, count: i32) -> bool {
+    fn check_draw(&mut self, mode: u32, count: i32, instances: i32) -> bool {
         if self.reject_in_begin() {
             return false;
         }
@@ -50,7 +50,9 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return false;
         }
-        if count > crate::MAX_DRAW_VERTICES {
+        if count > crate::MAX_DRAW_VERTICES
+            || count as i64 * instances as i64 > crate::MAX_DRAW_INVOCATIONS
+        {
             self.set_error(GL_OUT_OF_MEMORY);
             return false;
         }
@@ -89,11 +91,7 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
-        if !self.check_draw(mode, count) {
-            return;
-        }
-        if count as i64 * instances as i64 > crate::MAX_DRAW_INVOCATIONS {
-            self.set_error(GL_OUT_OF_MEMORY);
+        if !self.check_draw(mode, count, instances) {
             return;
         }
         let count = count as u32;
@@ -203,11 +201,7 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
-        if !self.check_draw(mode, count) {
-            return;
-        }
-        if count as i64 * instances as i64 > crate::MAX_DRAW_INVOCATIONS {
-            self.set_error(GL_OUT_OF_MEMORY);
+        if !self.check_draw(mode, count, instances) {
             return;
         }
         let Some(idx) = self.read_indices(count as usize, ty, &indices) else {
