@@ -65,8 +65,10 @@ def shader(kind, src):
     return s, bool(ok), log.decode(errors="replace") if isinstance(log, bytes) else str(log)
 
 
-def program(vs_srcs, fs_srcs):
-    """Compiles and links; raises with the info logs on failure."""
+def program(vs_srcs, fs_srcs, attribs=()):
+    """Compiles and links (with `attribs`, (location, name) pairs, bound
+    first), uses and returns the program; raises with the info logs on
+    failure."""
     p = GL.glCreateProgram()
     for kind, srcs in ((GL.GL_VERTEX_SHADER, vs_srcs), (GL.GL_FRAGMENT_SHADER, fs_srcs)):
         for src in srcs:
@@ -74,6 +76,8 @@ def program(vs_srcs, fs_srcs):
             if not ok:
                 raise RuntimeError(f"compile failed: {log}")
             GL.glAttachShader(p, s)
+    for loc, name in attribs:
+        GL.glBindAttribLocation(p, loc, name)
     GL.glLinkProgram(p)
     if not GL.glGetProgramiv(p, GL.GL_LINK_STATUS):
         raise RuntimeError(f"link failed: {GL.glGetProgramInfoLog(p)}")

@@ -9,7 +9,7 @@ uniforms and from a std140 uniform block, and instanced sphere impostors
 import ctypes
 import math
 
-from harness import GL, main, scene, errors
+from harness import GL, errors, main, program, scene
 from OpenGL.raw.GL.VERSION import GL_3_1 as raw31  # noqa: E402
 
 CORE = (3, 3, "core")
@@ -60,24 +60,6 @@ def sphere_mesh(slices=24, stacks=16):
             b = a + slices + 1
             idx.extend((a, b, a + 1, a + 1, b, b + 1))
     return verts, idx
-
-
-def build(vs, fs, attribs=()):
-    p = GL.glCreateProgram()
-    for kind, src in ((GL.GL_VERTEX_SHADER, vs), (GL.GL_FRAGMENT_SHADER, fs)):
-        s = GL.glCreateShader(kind)
-        GL.glShaderSource(s, src)
-        GL.glCompileShader(s)
-        if not GL.glGetShaderiv(s, GL.GL_COMPILE_STATUS):
-            raise RuntimeError(GL.glGetShaderInfoLog(s))
-        GL.glAttachShader(p, s)
-    for loc, name in attribs:
-        GL.glBindAttribLocation(p, loc, name)
-    GL.glLinkProgram(p)
-    if not GL.glGetProgramiv(p, GL.GL_LINK_STATUS):
-        raise RuntimeError(GL.glGetProgramInfoLog(p))
-    GL.glUseProgram(p)
-    return p
 
 
 def sphere_vao():
@@ -164,7 +146,7 @@ void main() {
 def phong(log):
     begin(96, 96)
     count = sphere_vao()
-    p = build(VS_PHONG, FS_PHONG, attribs=((0, "in_pos"), (1, "in_normal")))
+    p = program([VS_PHONG], [FS_PHONG], attribs=((0, "in_pos"), (1, "in_normal")))
     log.append(f"attrib locations: {GL.glGetAttribLocation(p, 'in_pos')} "
                f"{GL.glGetAttribLocation(p, 'in_normal')}")
     set_mat(p, "modelViewMatrix", MODEL_VIEW)
@@ -246,7 +228,7 @@ def ubo(p, block, binding, data):
 def blocks(log):
     begin(96, 96)
     count = sphere_vao()
-    p = build(VS_BLOCK, FS_BLOCK, attribs=((0, "in_pos"), (1, "in_normal")))
+    p = program([VS_BLOCK], [FS_BLOCK], attribs=((0, "in_pos"), (1, "in_normal")))
     size = ubo(p, "Camera", 1, MODEL_VIEW + PROJECTION)
     log.append(f"Camera size: {size}")
     lighting = [2.0, 2.0, 1.0, 1.0,
@@ -308,7 +290,7 @@ void main() {
 @scene("core_instanced_sphere_impostors", 128, 128, CORE)
 def impostors(log):
     begin(128, 128)
-    p = build(VS_IMPOSTOR, FS_IMPOSTOR)
+    p = program([VS_IMPOSTOR], [FS_IMPOSTOR])
     set_mat(p, "projection", PROJECTION)
     vao = GL.glGenVertexArrays(1)
     GL.glBindVertexArray(vao)
