@@ -65,6 +65,122 @@ pub struct Interface {
     /// The module's struct table (for [`Interface::locate_uniform`] and to
     /// spell struct types).
     pub structs: Vec<StructDef>,
+    /// A geometry kernel's emitted vertices: where they are among the
+    /// outputs (`None` for the other stages).
+    pub emitted: Option<Emitted>,
+}
+
+/// One vertex's share of a geometry kernel's input array: the input
+/// components `offset..offset + components` take vertex `vertex`'s
+/// output whose [`Slot::link_name`] is `name`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct VertexInput {
+    pub vertex: usize,
+    pub name: String,
+    pub offset: usize,
+    pub components: usize,
+}
+
+impl Interface {
+    /// A geometry kernel's per-vertex inputs (its input arrays, one
+    /// element per vertex of the input primitive): the members of
+    /// `gl_in[]` by member name, each element of a user array by the
+    /// array's name, each member of an arrayed input block (slots named
+    /// `Block[i].member`) as `Block.member`. Inputs that are not arrays
+    /// (`gl_PrimitiveIDIn`) are not listed.
+    pub fn vertex_inputs(&self) -> Vec<VertexInput> {
+        let mut out = Vec::new();
+        for slot in &self.inputs {
+            if let Some((block, rest)) = slot.name.split_once('[') {
+                // A member of an arrayed block instance: `Block[i].member`.
+                if let Some((index, member)) = rest.split_once("].") {
+                    if let Ok(vertex) = index.parse() {
+                        out.push(VertexInput {
+                            vertex,
+                            name: format!("{block}.{member}"),
+                            offset: slot.offset,
+                            components: slot.components,
+                        });
+                    }
+                }
+                continue;
+            }
+            let Some(ArraySize::Sized(n)) = slot.ty.array else {
+                continue;
+            };
+            let elem = slot.ty.element();
+            let per = size_of(elem, &self.structs);
+            for vertex in 0..n as usize {
+                let at = slot.offset + vertex * per;
+                match elem.base {
+                    Base::Struct(id) => {
+                        let Some(def) = self.structs.get(id.0 as usize) else {
+                            continue;
+                        };
+                        let mut offset = at;
+                        for m in &def.members {
+                            let components = size_of(m.ty, &self.structs);
+                            out.push(VertexInput {
+                                vertex,
+                                name: m.name.clone(),
+                                offset,
+                                components,
+                            });
+                            offset += components;
+                        }
+                    }
+                    _ => out.push(VertexInput {
+                        vertex,
+                        name: slot.link_name().into_owned(),
+                        offset: at,
+                        components: per,
+                    }),
+                }
+            }
+        }
+        out
+    }
+}
+
+/// Where a geometry kernel's outputs hold what each invocation emitted.
+///
+/// [`Interface::outputs`] describes one vertex (`vertex_components`
+/// components, the output variables as `EmitVertex` found them); the
+/// batch's outputs hold `max_vertices` such vertices one after the other
+/// ([`Emitted::vertex`]), then each vertex's strip number
+/// ([`Emitted::strip`]: vertices of one output strip share it, and
+/// `EndPrimitive` moves to the next), then the number of vertices the
+/// lane emitted ([`Emitted::count`], at most `max_vertices`: the
+/// `EmitVertex` calls beyond it are dropped, GLSL 1.50 §8.10). Strip
+/// numbers and the count are ints (their bits, as int outputs are).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Emitted {
+    pub input: glsl::ir::InputPrimitive,
+    pub output: glsl::ir::OutputPrimitive,
+    pub max_vertices: usize,
+    pub vertex_components: usize,
+}
+
+impl Emitted {
+    /// The output component where emitted vertex `v` starts.
+    pub fn vertex(&self, v: usize) -> usize {
+        v * self.vertex_components
+    }
+
+    /// The output component holding emitted vertex `v`'s strip number.
+    pub fn strip(&self, v: usize) -> usize {
+        self.max_vertices * self.vertex_components + v
+    }
+
+    /// The output component holding the number of emitted vertices.
+    pub fn count(&self) -> usize {
+        self.max_vertices * (self.vertex_components + 1)
+    }
+
+    /// All output components of the kernel.
+    pub fn components(&self) -> usize {
+        self.count() + 1
+    }
 }
 
 impl Interface {

@@ -234,7 +234,7 @@ mod program;
 mod variant;
 
 pub use float_env::FloatEnv;
-pub use interface::{kinds, size_of, Interface, Slot};
+pub use interface::{kinds, size_of, Emitted, Interface, Slot, VertexInput};
 pub use interp::LOOP_BUDGET;
 pub use program::{StatementMark, VarInfo};
 pub use variant::{
@@ -274,7 +274,7 @@ pub type LaneMask = u32;
 
 /// Size limits of lowered programs.
 pub mod limits {
-    pub use crate::lower::{INLINE_LIMIT, MAX_CALL_DEPTH};
+    pub use crate::lower::{INLINE_LIMIT, MAX_CALL_DEPTH, MAX_EMITTED_COMPONENTS};
     pub use crate::program::{MAX_OPS, MAX_REGISTERS};
 }
 

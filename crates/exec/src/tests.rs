@@ -10,6 +10,7 @@ use glsl::{compile, CompileOptions};
 
 mod builtins;
 mod depth_slice;
+mod geometry;
 mod integers;
 #[cfg(feature = "jit")]
 mod jit;

@@ -265,6 +265,14 @@ impl<'m> Lowerer<'m> {
         if f == B::Modf {
             return self.modf(args);
         }
+        if f == B::EmitVertex {
+            self.emit_vertex()?;
+            return Ok(Vec::new());
+        }
+        if f == B::EndPrimitive {
+            self.end_primitive()?;
+            return Ok(Vec::new());
+        }
         let refs: Vec<&Expr> = args.iter().collect();
         let v = self.operands(&refs)?;
         let first_kind = args.first().map(|a| kind_of(a.ty));

@@ -47,11 +47,14 @@
 //! - [`places`]: l-values, indexing, reads and writes of storage.
 //! - [`expr`]: expressions, operators, conversions, constructors.
 //! - [`builtins`]: built-in functions other than texture lookups.
+//! - [`emit`]: a geometry shader's `EmitVertex`/`EndPrimitive` and the
+//!   emit buffer its outputs are.
 //! - [`textures`]: texture lookups.
 //! - [`visit`]: read-only IR walks the others share.
 
 mod builtins;
 mod calls;
+mod emit;
 mod expr;
 mod places;
 mod regs;
@@ -80,6 +83,8 @@ pub const MAX_CALL_DEPTH: usize = glsl::limits::MAX_CALL_DEPTH as usize;
 /// Above this many expression nodes after inlining, functions become
 /// subroutines instead.
 pub const INLINE_LIMIT: u64 = 200_000;
+
+pub use emit::MAX_EMITTED_COMPONENTS;
 
 type Val = Vec<Reg>;
 
@@ -166,6 +171,8 @@ struct Lowerer<'m> {
     /// Expression nodes that unrolling may still add to the program
     /// (nested loops unroll within one budget).
     unroll_left: u64,
+    /// A geometry kernel's emit buffer.
+    emitter: Option<emit::EmitBuffer>,
 }
 
 /// A user function lowered once as a subroutine (static registers: GLSL
@@ -179,11 +186,6 @@ struct Sub {
 }
 
 pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
-    // The front end compiles and links geometry shaders; the pipeline has
-    // no geometry stage (primitive input, EmitVertex/EndPrimitive) yet.
-    if stage.stage == Stage::Geometry {
-        return unsupported("geometry shaders do not run yet".to_string());
-    }
     let owned;
     let m = match with_ftransform_inputs(&stage.module) {
         Some(patched) => {
@@ -206,6 +208,7 @@ pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
         ctx: Vec::new(),
         subs: None,
         unroll_left: UNROLL_BUDGET,
+        emitter: None,
     };
     // Globals: registers for everything but uniforms; uniform words for
     // the uniforms the shader reads (others get words if lowering finds a
@@ -235,6 +238,15 @@ pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
                 }
             }
         }
+    }
+    if stage.stage == Stage::Geometry {
+        let mut vertex = Vec::new();
+        for (i, g) in m.globals.iter().enumerate() {
+            if let (true, GlobalLoc::Reg(r)) = (is_output(stage.stage, g), l.globals[i]) {
+                vertex.extend((0..size_of(g.ty, &m.structs) as u32).map(|k| r + k));
+            }
+        }
+        l.emitter = Some(l.alloc_emit_buffer(vertex)?);
     }
     let main = stage.main;
     let Some(f) = m.functions.get(main.0 as usize) else {
@@ -383,6 +395,31 @@ fn with_ftransform_inputs(m: &Module) -> Option<Module> {
     Some(out)
 }
 
+/// Whether `g` is an output of a `stage` kernel (see the crate docs'
+/// interface).
+fn is_output(stage: Stage, g: &glsl::ir::Global) -> bool {
+    match stage {
+        Stage::Vertex | Stage::Geometry => {
+            g.storage == Storage::Varying
+                || (g.builtin
+                    && g.storage == Storage::Private
+                    && matches!(
+                        g.name.as_str(),
+                        "gl_Position" | "gl_PointSize" | "gl_ClipVertex" | "gl_ClipDistance"
+                    ))
+        }
+        Stage::Fragment => {
+            g.storage == Storage::FragOutput
+                || (g.builtin
+                    && g.storage == Storage::Private
+                    && matches!(
+                        g.name.as_str(),
+                        "gl_FragColor" | "gl_FragData" | "gl_FragDepth"
+                    ))
+        }
+    }
+}
+
 fn const_bits(c: ConstScalar) -> u32 {
     match c {
         ConstScalar::Float(f) => glsl::math::flush_denormal(f).to_bits(),
@@ -429,29 +466,7 @@ impl<'m> Lowerer<'m> {
                 Stage::Geometry => g.storage == Storage::GeometryInput,
                 Stage::Fragment => g.storage == Storage::Varying,
             };
-            let is_output = match self.stage {
-                Stage::Vertex | Stage::Geometry => {
-                    g.storage == Storage::Varying
-                        || (g.builtin
-                            && g.storage == Storage::Private
-                            && matches!(
-                                g.name.as_str(),
-                                "gl_Position"
-                                    | "gl_PointSize"
-                                    | "gl_ClipVertex"
-                                    | "gl_ClipDistance"
-                            ))
-                }
-                Stage::Fragment => {
-                    g.storage == Storage::FragOutput
-                        || (g.builtin
-                            && g.storage == Storage::Private
-                            && matches!(
-                                g.name.as_str(),
-                                "gl_FragColor" | "gl_FragData" | "gl_FragDepth"
-                            ))
-                }
-            };
+            let is_output = is_output(self.stage, g);
             let ks = kinds(g.ty, structs);
             let slots = |offset: usize, written: bool| match block_member_slots(m, g, offset, n) {
                 Some(members) => members.into_iter().map(|s| Slot { written, ..s }).collect(),
@@ -501,6 +516,11 @@ impl<'m> Lowerer<'m> {
         iface.uniform_words = self.next_word as usize;
         iface.input_components = next_in;
         iface.output_components = next_out;
+        if let Some(e) = &self.emitter {
+            outputs = e.outputs(&outputs);
+            iface.emitted = Some(e.layout());
+            iface.output_components = e.layout().components();
+        }
         self.p
             .validate()
             .map_err(|e| ExecError::Unsupported(format!("internal lowering error: {e}")))?;
