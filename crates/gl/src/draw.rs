@@ -36,14 +36,19 @@ impl Context {
             return false;
         }
         // The core profile removes quads and polygons (GL 3.3 core
-        // appendix E.2.2).
-        let last_mode = if self.is_core() {
-            GL_TRIANGLE_FAN
-        } else {
-            GL_POLYGON
+        // appendix E.2.2); the adjacency modes come with geometry shaders.
+        let adjacency = (GL_LINES_ADJACENCY..=GL_TRIANGLE_STRIP_ADJACENCY).contains(&mode);
+        let known = match mode {
+            GL_QUADS | GL_QUAD_STRIP | GL_POLYGON => !self.is_core(),
+            _ if adjacency => self.has_geometry_shaders(),
+            m => m <= GL_TRIANGLE_FAN,
         };
-        if mode > last_mode {
+        if !known {
             self.set_error(GL_INVALID_ENUM);
+            return false;
+        }
+        if !self.geometry_takes(mode) {
+            self.set_error(GL_INVALID_OPERATION);
             return false;
         }
         if count < 0 {
@@ -67,6 +72,36 @@ impl Context {
             return false;
         }
         self.check_fbo_complete()
+    }
+
+    /// Whether the current program's geometry stage, if it has one,
+    /// takes the primitives of `mode` (GL 3.3 §2.12.1, "Primitive Type
+    /// Mismatches and Drawing Commands").
+    fn geometry_takes(&self, mode: u32) -> bool {
+        use glsl::ir::InputPrimitive as I;
+        let input = self
+            .programs
+            .get(&self.current_program)
+            .and_then(|p| p.exe.as_ref().filter(|_| p.link_status))
+            .and_then(|e| e.program.stage(glsl::Stage::Geometry))
+            .map(|g| g.module.geometry.input);
+        match input {
+            None => true,
+            Some(input) => match input {
+                Some(I::Points) => mode == GL_POINTS,
+                Some(I::Lines) => matches!(mode, GL_LINES | GL_LINE_STRIP | GL_LINE_LOOP),
+                Some(I::LinesAdjacency) => {
+                    matches!(mode, GL_LINES_ADJACENCY | GL_LINE_STRIP_ADJACENCY)
+                }
+                Some(I::Triangles) => {
+                    matches!(mode, GL_TRIANGLES | GL_TRIANGLE_STRIP | GL_TRIANGLE_FAN)
+                }
+                Some(I::TrianglesAdjacency) => {
+                    matches!(mode, GL_TRIANGLES_ADJACENCY | GL_TRIANGLE_STRIP_ADJACENCY)
+                }
+                None => false,
+            },
+        }
     }
 
     pub(crate) fn check_fbo_complete(&mut self) -> bool {
@@ -407,7 +442,13 @@ impl Context {
         if discard && !self.feedback_active() {
             return;
         }
-        let (vs, vs_user, fs, ff_shape) = match self.draw_kernels() {
+        let crate::kernels::DrawKernels {
+            vs,
+            vs_user,
+            gs,
+            fs,
+            ff_shape,
+        } = match self.draw_kernels() {
             Ok(k) => k,
             Err(e) => {
                 self.cache.error = Some(e);
@@ -445,6 +486,8 @@ impl Context {
             None => &*fs,
         };
         let vs_words = self.uniform_words(&vs, vs_user);
+        let gs_words = gs.as_ref().map(|g| self.uniform_words(g, true));
+        let gs_stage = gs.as_deref().zip(gs_words.as_deref());
         let fs_words = self.uniform_words(&fs, fs_user);
         let units = self.texture_units();
         let Some(mut target) = self.draw_target() else {
@@ -457,6 +500,7 @@ impl Context {
             state: &state,
             vs: &vs,
             vs_uniforms: &vs_words,
+            gs: gs_stage,
             fs: &fs,
             fs_uniforms: &fs_words,
             mode: raster_mode(mode),
@@ -478,19 +522,33 @@ impl Context {
             })
         });
         let samples_before = target.fb.samples_passed;
-        let r = raster::draw_on(
-            &self.workers,
-            &mut target.fb,
-            &state,
-            &vs,
-            &vs_words,
-            fs_stage,
-            &fs_words,
-            raster_mode(mode),
-            indices,
-            &fetch,
-            &units,
-        );
+        let r = match gs_stage {
+            None => raster::draw_on(
+                &self.workers,
+                &mut target.fb,
+                &state,
+                &vs,
+                &vs_words,
+                fs_stage,
+                &fs_words,
+                raster_mode(mode),
+                indices,
+                &fetch,
+                &units,
+            ),
+            Some((gs, gs_words)) => raster::draw_geometry_stages(
+                &self.workers,
+                &mut target.fb,
+                &state,
+                (&*vs, &vs_words),
+                (gs, gs_words),
+                (fs_stage, &fs_words),
+                raster_mode(mode),
+                indices,
+                &fetch,
+                &units,
+            ),
+        };
         if let Err(e) = r {
             self.cache.error = Some(e.to_string());
         }

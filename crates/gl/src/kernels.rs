@@ -18,6 +18,7 @@ use std::sync::Arc;
 #[derive(Default)]
 pub struct Kernels {
     pub vs: Option<Arc<exec::Kernel>>,
+    pub gs: Option<Arc<exec::Kernel>>,
     pub fs: Option<Arc<exec::Kernel>>,
 }
 
@@ -29,13 +30,22 @@ impl Kernels {
             match s.stage {
                 Stage::Vertex => k.vs = Some(kernel),
                 Stage::Fragment => k.fs = Some(kernel),
-                // exec refuses a geometry stage before this (GL contexts
-                // cannot create geometry shaders yet either).
-                Stage::Geometry => return Err("geometry shaders do not run yet".into()),
+                Stage::Geometry => k.gs = Some(kernel),
             }
         }
         Ok(k)
     }
+}
+
+/// The stages of a draw ([`Context::draw_kernels`]).
+pub(crate) struct DrawKernels {
+    pub vs: Arc<exec::Kernel>,
+    /// Whether `vs` is the program's (else fixed-function).
+    pub vs_user: bool,
+    pub gs: Option<Arc<exec::Kernel>>,
+    pub fs: Arc<exec::Kernel>,
+    /// The fixed-function fragment stage's shape, when `fs` is one.
+    pub ff_shape: Option<crate::ffgen::FragmentShape>,
 }
 
 /// A converted texture with the generations of the texture object and of
@@ -152,32 +162,23 @@ impl Context {
     }
 
     /// The kernels of the draw: the program's, or fixed-function ones
-    /// (then with the fragment stage's shape).
-    #[allow(clippy::type_complexity)]
-    pub(crate) fn draw_kernels(
-        &mut self,
-    ) -> Result<
-        (
-            Arc<exec::Kernel>,
-            bool,
-            Arc<exec::Kernel>,
-            Option<crate::ffgen::FragmentShape>,
-        ),
-        String,
-    > {
-        let (user_vs, user_fs, fs_tc) = match self
+    /// for the vertex and fragment stages it lacks (with the fragment
+    /// stage's shape).
+    pub(crate) fn draw_kernels(&mut self) -> Result<DrawKernels, String> {
+        let (user_vs, gs, user_fs, fs_tc) = match self
             .programs
             .get(&self.current_program)
             .and_then(|p| p.exe.as_ref().filter(|_| p.link_status))
         {
             Some(e) => (
                 e.kernels.vs.clone(),
+                e.kernels.gs.clone(),
                 e.kernels.fs.clone(),
                 e.program
                     .stage(Stage::Fragment)
                     .map(|s| Self::fs_texcoords(&s.module)),
             ),
-            None => (None, None, None),
+            None => (None, None, None, None),
         };
         let vs_fixed = user_vs.is_none();
         let vs = match user_vs {
@@ -188,7 +189,7 @@ impl Context {
                 self.ff_kernel(src, Stage::Vertex)?
             }
         };
-        let (fs, shape) = match user_fs {
+        let (fs, ff_shape) = match user_fs {
             Some(k) => (k, None),
             None => {
                 let shape = self.ff_fragment_shape(vs_fixed);
@@ -196,7 +197,13 @@ impl Context {
                 (self.ff_kernel(src, Stage::Fragment)?, Some(shape))
             }
         };
-        Ok((vs, !vs_fixed, fs, shape))
+        Ok(DrawKernels {
+            vs,
+            vs_user: !vs_fixed,
+            gs,
+            fs,
+            ff_shape,
+        })
     }
 
     /// Vertex input slots → attribute sources.

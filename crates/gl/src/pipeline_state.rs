@@ -22,6 +22,10 @@ pub(crate) fn raster_mode(mode: u32) -> raster::Mode {
         GL_TRIANGLE_FAN => TriangleFan,
         GL_QUADS => Quads,
         GL_QUAD_STRIP => QuadStrip,
+        GL_LINES_ADJACENCY => LinesAdjacency,
+        GL_LINE_STRIP_ADJACENCY => LineStripAdjacency,
+        GL_TRIANGLES_ADJACENCY => TrianglesAdjacency,
+        GL_TRIANGLE_STRIP_ADJACENCY => TriangleStripAdjacency,
         _ => Polygon,
     }
 }

@@ -23,10 +23,10 @@ pub struct ShaderObj {
 
 impl ShaderObj {
     pub fn stage(&self) -> Stage {
-        if self.kind == GL_VERTEX_SHADER {
-            Stage::Vertex
-        } else {
-            Stage::Fragment
+        match self.kind {
+            GL_VERTEX_SHADER => Stage::Vertex,
+            GL_GEOMETRY_SHADER => Stage::Geometry,
+            _ => Stage::Fragment,
         }
     }
 
@@ -113,7 +113,12 @@ impl Context {
         if self.reject_in_begin() {
             return 0;
         }
-        if kind != GL_VERTEX_SHADER && kind != GL_FRAGMENT_SHADER {
+        let known = match kind {
+            GL_VERTEX_SHADER | GL_FRAGMENT_SHADER => true,
+            GL_GEOMETRY_SHADER => self.has_geometry_shaders(),
+            _ => false,
+        };
+        if !known {
             self.set_error(GL_INVALID_ENUM);
             return 0;
         }
@@ -513,6 +518,13 @@ impl Context {
 
     /// glGetProgramiv.
     pub fn get_programiv(&mut self, program: u32, pname: u32) -> i32 {
+        if matches!(
+            pname,
+            GL_GEOMETRY_VERTICES_OUT | GL_GEOMETRY_INPUT_TYPE | GL_GEOMETRY_OUTPUT_TYPE
+        ) && self.has_geometry_shaders()
+        {
+            return self.geometry_programiv(program, pname);
+        }
         let v = self.program_query(program, |p| {
             let uniforms = p
                 .exe
@@ -569,6 +581,42 @@ impl Context {
             })
         });
         self.iv_query(v)
+    }
+
+    /// glGetProgramiv's GL_GEOMETRY_VERTICES_OUT, GL_GEOMETRY_INPUT_TYPE
+    /// and GL_GEOMETRY_OUTPUT_TYPE: the linked geometry stage's layouts;
+    /// GL_INVALID_OPERATION for a program not linked or without a
+    /// geometry stage (GL 3.3 §6.1.16).
+    fn geometry_programiv(&mut self, program: u32, pname: u32) -> i32 {
+        let layout = match self.linked_exe(program) {
+            Some(e) => e.program.stage(Stage::Geometry).map(|g| g.module.geometry),
+            None => return 0,
+        };
+        let Some(g) = layout else {
+            self.set_error(GL_INVALID_OPERATION);
+            return 0;
+        };
+        use glsl::ir::{InputPrimitive as I, OutputPrimitive as O};
+        (match pname {
+            GL_GEOMETRY_VERTICES_OUT => g.max_vertices.unwrap_or(0),
+            GL_GEOMETRY_INPUT_TYPE => match g.input {
+                Some(I::Points) => GL_POINTS,
+                Some(I::Lines) => GL_LINES,
+                Some(I::LinesAdjacency) => GL_LINES_ADJACENCY,
+                Some(I::Triangles) | None => GL_TRIANGLES,
+                Some(I::TrianglesAdjacency) => GL_TRIANGLES_ADJACENCY,
+            },
+            _ => match g.output {
+                Some(O::Points) => GL_POINTS,
+                Some(O::LineStrip) => GL_LINE_STRIP,
+                Some(O::TriangleStrip) | None => GL_TRIANGLE_STRIP,
+            },
+        }) as i32
+    }
+
+    /// Whether this context creates geometry shaders: GL 3.2 and later.
+    pub fn has_geometry_shaders(&self) -> bool {
+        self.api.at_least(3, 2)
     }
 
     /// glGetProgramInfoLog.

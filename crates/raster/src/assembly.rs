@@ -1,12 +1,14 @@
-//! Primitive assembly (GL 2.1 §2.6.1): which vertices of a draw make
-//! each primitive of a Begin/End [`Mode`], and its provoking vertex (GL 2.1
-//! table 2.12).
+//! Primitive assembly (GL 2.1 §2.6.1, GL 3.3 §2.6.1): which vertices of
+//! a draw make each primitive of a [`Mode`], and its provoking vertex
+//! (GL 3.3 table 2.14).
 //!
 //! Takes a mode, a vertex count and a primitive number; gives that
 //! primitive ([`primitive`], or [`small_polygon`] for triangles and quads
-//! without allocating). Vertex numbers are positions in the index list.
+//! without allocating), or the vertices a geometry shader takes for it
+//! ([`geometry_input`]: the adjacent vertices included, which the other
+//! forms leave out). Vertex numbers are positions in the index list.
 
-/// Begin/End modes (GL 2.1 §2.6.1).
+/// The drawing modes (GL 2.1 §2.6.1, and the adjacency modes of GL 3.2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mode {
     Points,
@@ -19,6 +21,10 @@ pub enum Mode {
     Quads,
     QuadStrip,
     Polygon,
+    LinesAdjacency,
+    LineStripAdjacency,
+    TrianglesAdjacency,
+    TriangleStripAdjacency,
 }
 
 impl Mode {
@@ -59,6 +65,11 @@ pub(crate) fn primitive_count(mode: Mode, count: usize) -> usize {
         Mode::Quads => n / 4,
         Mode::QuadStrip => (n / 2).saturating_sub(1),
         Mode::Polygon => usize::from(n >= 3),
+        Mode::LinesAdjacency => n / 4,
+        Mode::LineStripAdjacency => n.saturating_sub(3),
+        Mode::TrianglesAdjacency => n / 6,
+        // 2(p + 2) + k vertices for p triangles, k 0 or 1 (§2.6.1).
+        Mode::TriangleStripAdjacency => (n / 2).saturating_sub(2),
     }
 }
 
@@ -77,6 +88,9 @@ pub(crate) fn primitive(mode: Mode, count: usize, k: usize) -> Assembled {
             }
         }
         Mode::Polygon => Assembled::Polygon((0..n).collect(), 0),
+        // Without a geometry shader the adjacent vertices are ignored.
+        Mode::LinesAdjacency => Assembled::Line(4 * k + 1, 4 * k + 2),
+        Mode::LineStripAdjacency => Assembled::Line(k + 1, k + 2),
         _ => match small_polygon(mode, k) {
             Some((v, len, provoking)) => Assembled::Polygon(v[..len].to_vec(), provoking),
             None => Assembled::Polygon(Vec::new(), 0),
@@ -109,7 +123,69 @@ pub(crate) fn small_polygon(mode: Mode, k: usize) -> Option<([usize; 4], usize, 
             let b = 2 * k;
             ([b, b + 1, b + 3, b + 2], 4, b + 3)
         }
+        Mode::TrianglesAdjacency => ([6 * k, 6 * k + 2, 6 * k + 4, 0], 3, 6 * k + 4),
+        Mode::TriangleStripAdjacency => {
+            let [a, _, b, _, c, _] = strip_adjacency(k, usize::MAX);
+            ([a, b, c, 0], 3, 2 * k + 4)
+        }
         _ => return None,
+    })
+}
+
+/// Triangle `k` of a triangle strip with adjacency of `count` vertices
+/// as a geometry shader takes it: its vertices in drawing order, each
+/// followed by the vertex adjacent to the edge from it to the next
+/// (GL 3.3 table 2.4, numbered from 0 here). The triangle's own vertices
+/// do not depend on `count`; the adjacent ones of the first and last
+/// triangles do.
+fn strip_adjacency(k: usize, count: usize) -> [usize; 6] {
+    let triangles = primitive_count(Mode::TriangleStripAdjacency, count);
+    let last = k + 1 == triangles;
+    let b = 2 * k;
+    if k == 0 {
+        // The first triangle: (1, 3, 5), adjacent 2, then 6 or 7, then 4.
+        return [0, 1, 2, if last { 5 } else { 6 }, 4, 3];
+    }
+    // Odd triangles are drawn (2i+3, 2i+1, 2i+5), even ones
+    // (2i+1, 2i+3, 2i+5) (1-based), keeping one winding.
+    let far = if last { b + 5 } else { b + 6 };
+    if k % 2 == 1 {
+        [b + 2, b.wrapping_sub(2), b, b + 3, b + 4, far]
+    } else {
+        [b, b.wrapping_sub(2), b + 2, far, b + 4, b + 3]
+    }
+}
+
+/// The vertices a geometry shader takes for primitive `k` of `count`
+/// vertices of `mode` (GL 3.3 §2.12.1): the first `n` entries of the
+/// array, `n` the input primitive's vertex count (1 for points, 2 for
+/// lines, 4 for lines with adjacency, 3 for triangles, 6 for triangles
+/// with adjacency). `None` for the quad and polygon modes, which no
+/// geometry shader takes. `provoking_first`: odd triangles of a strip
+/// start from their first vertex in draw order (the same winding), as
+/// they are drawn under the first-vertex convention.
+pub(crate) fn geometry_input(
+    mode: Mode,
+    count: usize,
+    k: usize,
+    provoking_first: bool,
+) -> Option<[usize; 6]> {
+    Some(match mode {
+        Mode::Points => [k, 0, 0, 0, 0, 0],
+        Mode::Lines | Mode::LineStrip | Mode::LineLoop => match primitive(mode, count, k) {
+            Assembled::Line(a, b) => [a, b, 0, 0, 0, 0],
+            _ => return None,
+        },
+        Mode::LinesAdjacency => [4 * k, 4 * k + 1, 4 * k + 2, 4 * k + 3, 0, 0],
+        Mode::LineStripAdjacency => [k, k + 1, k + 2, k + 3, 0, 0],
+        Mode::TriangleStrip if provoking_first && k % 2 == 1 => [k, k + 2, k + 1, 0, 0, 0],
+        Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan => {
+            let (v, _, _) = small_polygon(mode, k)?;
+            [v[0], v[1], v[2], 0, 0, 0]
+        }
+        Mode::TrianglesAdjacency => std::array::from_fn(|i| 6 * k + i),
+        Mode::TriangleStripAdjacency => strip_adjacency(k, count),
+        Mode::Quads | Mode::QuadStrip | Mode::Polygon => return None,
     })
 }
 
@@ -125,6 +201,10 @@ pub(crate) fn first_vertex_provoking(mode: Mode, k: usize) -> usize {
         Mode::TriangleFan => k + 1,
         Mode::Quads => 4 * k,
         Mode::Polygon => 0,
+        Mode::LinesAdjacency => 4 * k + 1,
+        Mode::LineStripAdjacency => k + 1,
+        Mode::TrianglesAdjacency => 6 * k,
+        Mode::TriangleStripAdjacency => 2 * k,
     }
 }
 
@@ -177,6 +257,88 @@ mod tests {
         );
         assert_eq!(collect(Mode::Polygon, 2), vec![]);
         assert_eq!(collect(Mode::Triangles, 2), vec![]);
+        assert_eq!(
+            collect(Mode::LinesAdjacency, 9),
+            vec![Line(1, 2), Line(5, 6)]
+        );
+        assert_eq!(
+            collect(Mode::LineStripAdjacency, 5),
+            vec![Line(1, 2), Line(2, 3)]
+        );
+        assert_eq!(
+            collect(Mode::TrianglesAdjacency, 13),
+            vec![Polygon(vec![0, 2, 4], 4), Polygon(vec![6, 8, 10], 10)]
+        );
+    }
+
+    /// GL 3.3 table 2.4, with vertices numbered from 1 as there.
+    #[test]
+    fn triangle_strips_with_adjacency() {
+        let gs = |count: usize, k: usize| {
+            geometry_input(Mode::TriangleStripAdjacency, count, k, false).map(|v| v.map(|x| x + 1))
+        };
+        // Only: 1 3 5, adjacent 2 6 4; in shader order v1 a12 v2 a23 v3 a31.
+        assert_eq!(gs(6, 0), Some([1, 2, 3, 6, 5, 4]));
+        assert_eq!(gs(7, 0), Some([1, 2, 3, 6, 5, 4]));
+        // Four triangles (12 vertices): first, odd middle, even middle,
+        // last odd.
+        assert_eq!(gs(12, 0), Some([1, 2, 3, 7, 5, 4]));
+        let i = 1;
+        assert_eq!(
+            gs(12, 1),
+            Some([
+                2 * i + 3,
+                2 * i - 1,
+                2 * i + 1,
+                2 * i + 4,
+                2 * i + 5,
+                2 * i + 7
+            ])
+        );
+        let i = 2;
+        assert_eq!(
+            gs(12, 2),
+            Some([
+                2 * i + 1,
+                2 * i - 1,
+                2 * i + 3,
+                2 * i + 7,
+                2 * i + 5,
+                2 * i + 4
+            ])
+        );
+        let i = 3;
+        assert_eq!(
+            gs(12, 3),
+            Some([
+                2 * i + 3,
+                2 * i - 1,
+                2 * i + 1,
+                2 * i + 4,
+                2 * i + 5,
+                2 * i + 6
+            ])
+        );
+        // Last and even (three triangles).
+        let i = 2;
+        assert_eq!(
+            gs(10, 2),
+            Some([
+                2 * i + 1,
+                2 * i - 1,
+                2 * i + 3,
+                2 * i + 6,
+                2 * i + 5,
+                2 * i + 4
+            ])
+        );
+        assert_eq!(primitive_count(Mode::TriangleStripAdjacency, 5), 0);
+        assert_eq!(primitive_count(Mode::TriangleStripAdjacency, 13), 4);
+        // Drawn without a geometry shader: the triangle's own vertices.
+        assert_eq!(
+            small_polygon(Mode::TriangleStripAdjacency, 1),
+            Some(([4, 2, 6, 0], 3, 6))
+        );
     }
 
     /// The first-vertex convention's provoking vertex is the lowest

@@ -4,7 +4,8 @@
 //! Takes a framebuffer, the pipeline state, both shader stages, the mode,
 //! the index list and the vertex source ([`draw_stages`], and
 //! [`draw_probed`] for the debugger's replays); runs the vertex stage
-//! (`crate::vertex`), then set-up (`crate::setup`, assembling with
+//! (`crate::vertex`), the geometry stage when there is one
+//! (`crate::geometry`), then set-up (`crate::setup`, assembling with
 //! `crate::assembly`) in chunks of [`SETUP_CHUNK`] primitives, each chunk
 //! binned (`crate::binning`) where it was set up, then the fragment stage
 //! (`crate::shade`) tile by tile ([`shade_tiles`]), and gives the
@@ -17,6 +18,7 @@ use crate::assembly::{primitive_count, Mode};
 use crate::binning::{Bins, ChunkBins, TileGrid, TILE};
 use crate::ex::{ExecError, Textures};
 use crate::framebuffer::{Band, Framebuffer};
+use crate::geometry::{run_geometry, Vertices};
 use crate::interpolate::Plane;
 use crate::linkage::{FsLayout, VsLayout};
 use crate::prim::Prim;
@@ -51,6 +53,7 @@ pub fn draw_stages(
         fb,
         state,
         (vs, vs_uniforms),
+        None,
         (fs, fs_uniforms),
         mode,
         indices,
@@ -60,13 +63,46 @@ pub fn draw_stages(
     )
 }
 
-/// [`draw_stages`], reporting to `probe` what happens at its pixel.
+/// [`draw_stages`] with a geometry stage between the vertex and
+/// fragment stages (`gs`, a geometry kernel and its uniform words; see
+/// `crate::geometry`).
+#[allow(clippy::too_many_arguments)]
+pub fn draw_geometry_stages(
+    workers: &Workers,
+    fb: &mut Framebuffer,
+    state: &PipelineState,
+    vs: (&dyn ShaderStage, &[u32]),
+    gs: (&dyn ShaderStage, &[u32]),
+    fs: (&dyn ShaderStage, &[u32]),
+    mode: Mode,
+    indices: &[u32],
+    fetch: &dyn VertexFetch,
+    textures: &(dyn Textures + Sync),
+) -> Result<(), DrawError> {
+    draw_probed(
+        workers,
+        fb,
+        state,
+        vs,
+        Some(gs),
+        fs,
+        mode,
+        indices,
+        fetch,
+        textures,
+        None,
+    )
+}
+
+/// [`draw_stages`] (or [`draw_geometry_stages`] with `gs`), reporting to
+/// `probe` what happens at its pixel.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn draw_probed(
     workers: &Workers,
     fb: &mut Framebuffer,
     state: &PipelineState,
     (vs, vs_uniforms): (&dyn ShaderStage, &[u32]),
+    gs: Option<(&dyn ShaderStage, &[u32])>,
     (fs, fs_uniforms): (&dyn ShaderStage, &[u32]),
     mode: Mode,
     indices: &[u32],
@@ -74,19 +110,60 @@ pub(crate) fn draw_probed(
     textures: &(dyn Textures + Sync),
     probe: Option<&Probe>,
 ) -> Result<(), DrawError> {
-    let vs_layout = VsLayout::new(vs.interface());
-    let fs_layout = FsLayout::new(vs.interface(), fs.interface(), state.two_sided_color);
-    let (vertex_of, outputs) = run_vertices(
-        workers,
-        vs,
-        vs_uniforms,
-        textures,
-        indices,
-        fetch,
-        &vs_layout,
-        state.clamp_vertex_color,
-        probe,
-    )?;
+    // The last stage before set-up: its outputs are the vertices drawn.
+    let last = gs.map_or(vs, |(g, _)| g);
+    let vs_layout = VsLayout::new(last.interface());
+    let fs_layout = FsLayout::new(last.interface(), fs.interface(), state.two_sided_color);
+    let vertex_layout;
+    let (vertex_of, outputs, mode) = match gs {
+        None => {
+            let (vertex_of, outputs) = run_vertices(
+                workers,
+                vs,
+                vs_uniforms,
+                textures,
+                indices,
+                fetch,
+                &vs_layout,
+                state.clamp_vertex_color,
+                probe,
+            )?;
+            (vertex_of, outputs, mode)
+        }
+        Some(gs) => {
+            // Colours are clamped after the geometry stage, the last
+            // before rasterization.
+            vertex_layout = VsLayout::new(vs.interface());
+            let (vertex_of, outputs) = run_vertices(
+                workers,
+                vs,
+                vs_uniforms,
+                textures,
+                indices,
+                fetch,
+                &vertex_layout,
+                false,
+                probe,
+            )?;
+            let shaded = Vertices {
+                mode,
+                vertex_of,
+                outputs,
+            };
+            let emitted = run_geometry(
+                workers,
+                gs,
+                textures,
+                vs.interface(),
+                vertex_layout.outputs,
+                &shaded,
+                state,
+                &vs_layout,
+            )?;
+            workers.spare().keep_tables([shaded.vertex_of]);
+            (emitted.vertex_of, emitted.outputs, emitted.mode)
+        }
+    };
 
     let setup = Setup::new(state, (&vs_layout, &fs_layout), &outputs, fb, probe);
     // Shared vertices (indexed meshes): each vertex's outcode and window

@@ -501,6 +501,7 @@ fn probe_reports_every_fragment_of_a_pixel() {
             state: &state,
             vs: &vs,
             vs_uniforms: &[],
+            gs: None,
             fs: &fs,
             fs_uniforms: &[],
             mode: Mode::Triangles,

@@ -138,11 +138,15 @@ impl FsLayout {
         let mut front_facing = None;
         let mut point_coord = None;
         let mut primitive_id = None;
+        // A geometry shader's gl_PrimitiveID output feeds the fragment
+        // shader's (GL 3.3 §3.12.2), as a flat varying; else the
+        // pipeline numbers the primitives.
+        let upstream_id = find(&vs.outputs, "gl_PrimitiveID").is_some_and(|s| s.written);
         for slot in &fs.inputs {
             let link_name = slot.link_name();
             match link_name.as_ref() {
                 "gl_FragCoord" => frag_coord = Some(slot.offset),
-                "gl_PrimitiveID" => primitive_id = Some(slot.offset),
+                "gl_PrimitiveID" if !upstream_id => primitive_id = Some(slot.offset),
                 "gl_FrontFacing" => front_facing = Some(slot.offset),
                 "gl_PointCoord" => point_coord = Some(slot.offset),
                 name => {
@@ -159,10 +163,13 @@ impl FsLayout {
                     let back = back_name
                         .filter(|_| two_sided)
                         .and_then(|n| find_link(&vs.outputs, n));
-                    let interpolation = slot
-                        .interpolation
-                        .or_else(|| front.and_then(|s| s.interpolation))
-                        .or_else(|| back.and_then(|s| s.interpolation));
+                    let interpolation = if name == "gl_PrimitiveID" {
+                        Some(Interpolation::Flat)
+                    } else {
+                        slot.interpolation
+                            .or_else(|| front.and_then(|s| s.interpolation))
+                            .or_else(|| back.and_then(|s| s.interpolation))
+                    };
                     for c in 0..slot.components {
                         let pick =
                             |s: Option<&Slot>| s.filter(|s| c < s.components).map(|s| s.offset + c);

@@ -45,6 +45,8 @@ pub struct Replay<'a> {
     pub state: &'a PipelineState,
     pub vs: &'a ex::Kernel,
     pub vs_uniforms: &'a [u32],
+    /// The geometry kernel and its uniform words, if the draw has one.
+    pub gs: Option<(&'a ex::Kernel, &'a [u32])>,
     pub fs: &'a ex::Kernel,
     pub fs_uniforms: &'a [u32],
     pub mode: Mode,
@@ -67,6 +69,7 @@ impl Replay<'_> {
             fb,
             state,
             (self.vs, self.vs_uniforms),
+            self.gs.map(|(k, u)| (k as &dyn crate::ShaderStage, u)),
             (self.fs, self.fs_uniforms),
             self.mode,
             self.indices,

@@ -679,6 +679,10 @@ fn draw_mode(name: &str) -> Result<u32, CommandError> {
         "GL_QUADS" => GL_QUADS,
         "GL_QUAD_STRIP" => GL_QUAD_STRIP,
         "GL_POLYGON" => GL_POLYGON,
+        "GL_LINES_ADJACENCY" => gl::enums::GL_LINES_ADJACENCY,
+        "GL_LINE_STRIP_ADJACENCY" => gl::enums::GL_LINE_STRIP_ADJACENCY,
+        "GL_TRIANGLES_ADJACENCY" => gl::enums::GL_TRIANGLES_ADJACENCY,
+        "GL_TRIANGLE_STRIP_ADJACENCY" => gl::enums::GL_TRIANGLE_STRIP_ADJACENCY,
         _ => return Err(CommandError(format!("unknown drawing mode \"{name}\""))),
     })
 }

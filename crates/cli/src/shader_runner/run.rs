@@ -21,10 +21,10 @@ use super::script::{Cmp, Requirement, Script, Stage, VersionReq};
 mod textures;
 
 use gl::enums::{
-    GL_ACTIVE_UNIFORMS, GL_ACTIVE_UNIFORM_BLOCKS, GL_STATIC_DRAW, GL_UNIFORM_ARRAY_STRIDE,
-    GL_UNIFORM_BLOCK_DATA_SIZE, GL_UNIFORM_BLOCK_INDEX, GL_UNIFORM_BUFFER, GL_UNIFORM_IS_ROW_MAJOR,
-    GL_UNIFORM_MATRIX_STRIDE, GL_UNIFORM_NAME_LENGTH, GL_UNIFORM_OFFSET, GL_UNIFORM_SIZE,
-    GL_UNIFORM_TYPE,
+    GL_ACTIVE_UNIFORMS, GL_ACTIVE_UNIFORM_BLOCKS, GL_GEOMETRY_SHADER, GL_STATIC_DRAW,
+    GL_UNIFORM_ARRAY_STRIDE, GL_UNIFORM_BLOCK_DATA_SIZE, GL_UNIFORM_BLOCK_INDEX, GL_UNIFORM_BUFFER,
+    GL_UNIFORM_IS_ROW_MAJOR, GL_UNIFORM_MATRIX_STRIDE, GL_UNIFORM_NAME_LENGTH, GL_UNIFORM_OFFSET,
+    GL_UNIFORM_SIZE, GL_UNIFORM_TYPE,
 };
 
 /// piglit's verdicts.
@@ -400,6 +400,7 @@ impl<'a, G: GlApi> Runner<'a, G> {
             };
             let (kind, short) = match section.stage {
                 Stage::Vertex => (GL_VERTEX_SHADER, "VS"),
+                Stage::Geometry => (GL_GEOMETRY_SHADER, "GS"),
                 Stage::Fragment => (GL_FRAGMENT_SHADER, "FS"),
             };
             let text = section.source.as_deref().unwrap_or(PASSTHROUGH_VS);

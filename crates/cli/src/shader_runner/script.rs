@@ -5,9 +5,9 @@
 //! comments). The sections shaderbox runs:
 //!
 //! - `[require]`: one requirement per line (see [`Requirement`]);
-//! - `[vertex shader]`, `[fragment shader]`: GLSL source, up to the next line
-//!   that starts with `[`; several sections of one stage are several shader
-//!   objects linked together;
+//! - `[vertex shader]`, `[geometry shader]`, `[fragment shader]`: GLSL
+//!   source, up to the next line that starts with `[`; several sections of
+//!   one stage are several shader objects linked together;
 //! - `[vertex shader passthrough]`: piglit's built-in vertex shader
 //!   (`gl_Position = piglit_vertex`);
 //! - `[vertex data]`: a table whose header names the attributes
@@ -15,9 +15,10 @@
 //! - `[test]`: the commands (parsed by [`super::command`]), to the end of the
 //!   file.
 //!
-//! The sections of later GL versions or extensions (geometry, tessellation,
-//! compute, SPIR-V, ARB programs, shader includes, element lists) make the
-//! test a skip: shaderbox implements OpenGL 2.1.
+//! The sections of later GL versions or extensions (tessellation,
+//! compute, SPIR-V, ARB programs, shader includes, element lists,
+//! GL_ARB_geometry_shader4's `[geometry layout]`) make the test a skip:
+//! shaderbox implements OpenGL 3.3.
 
 use super::scan;
 use gl::enums::{GL_FLOAT, GL_INT, GL_UNSIGNED_INT};
@@ -26,6 +27,7 @@ use gl::enums::{GL_FLOAT, GL_INT, GL_UNSIGNED_INT};
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Stage {
     Vertex,
+    Geometry,
     Fragment,
 }
 
@@ -300,6 +302,8 @@ fn open_section(script: &mut Script, raw: &str, number: usize) -> Result<Section
         Section::Passthrough
     } else if known("[vertex shader]") {
         Section::Shader(Stage::Vertex)
+    } else if known("[geometry shader]") {
+        Section::Shader(Stage::Geometry)
     } else if known("[fragment shader]") {
         Section::Shader(Stage::Fragment)
     } else if known("[vertex data]") {
@@ -310,13 +314,14 @@ fn open_section(script: &mut Script, raw: &str, number: usize) -> Result<Section
         || known("[fragment shader specializations]")
         || known("[vertex shader spirv]")
         || known("[fragment shader spirv]")
+        || known("[geometry shader specializations]")
+        || known("[geometry shader spirv]")
     {
         // Used only when running SPIR-V; the GLSL sections are run.
         Section::Ignored
     } else if [
         "[vertex program]",
         "[fragment program]",
-        "[geometry shader",
         "[geometry layout]",
         "[tessellation control shader",
         "[tessellation evaluation shader",
@@ -782,9 +787,13 @@ draw rect -1 -1 2 2
     #[test]
     fn later_gl_sections_are_recorded() {
         let s =
-            parse("[require]\nGLSL >= 1.50\n[geometry shader]\nvoid main(){}\n[test]\n").unwrap();
+            parse("[require]\nGLSL >= 1.50\n[compute shader]\nvoid main(){}\n[test]\n").unwrap();
         assert_eq!(s.unsupported_sections.len(), 1);
         assert!(s.shaders.is_empty());
+        let s =
+            parse("[require]\nGLSL >= 1.50\n[geometry shader]\nvoid main(){}\n[test]\n").unwrap();
+        assert!(s.unsupported_sections.is_empty());
+        assert_eq!(s.shaders[0].stage, Stage::Geometry);
     }
 
     #[test]

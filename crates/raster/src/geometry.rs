@@ -1,0 +1,249 @@
+//! The geometry stage (GL 3.3 §2.12): between the vertex stage and
+//! set-up, a geometry kernel runs once per assembled primitive and its
+//! emitted strips become the primitives the rest of the pipeline draws.
+//!
+//! Takes the vertex stage's results (per position in the index list a
+//! vertex number, and the vertices' outputs), the draw's mode and the
+//! geometry kernel; gives the same three things for the emitted
+//! primitives: a list mode ([`Mode::Points`], [`Mode::Lines`] or
+//! [`Mode::Triangles`]), the vertex number of each of their vertices and
+//! the emitted vertices' outputs (laid out as the geometry kernel's
+//! [`crate::ex::Interface::outputs`] say, one vertex's worth). Set-up,
+//! clipping, rasterization and the fragment stage then run on those as
+//! on a vertex stage's.
+//!
+//! Primitives are assembled as the geometry shader takes them
+//! ([`geometry_input`]: adjacent vertices included), `LANES` primitives
+//! per kernel run (one per lane, `gl_PrimitiveIDIn` the primitive's ID),
+//! tasks of [`PRIMITIVES_PER_TASK`] on the [`Workers`]; each task keeps
+//! its lanes' emitted vertices in primitive order, and the tasks' results
+//! are joined in task order, so the output is the same whatever the
+//! thread count. A strip of `n` vertices is `n - 1` lines or `n - 2`
+//! triangles; odd triangles of a strip are reordered to keep the strip's
+//! winding with the provoking vertex where the state's convention wants
+//! it (the strip's last vertex, or with the first-vertex convention its
+//! first).
+
+use crate::assembly::{geometry_input, primitive_count, Mode};
+use crate::ex::{Emitted, Interface, LANES};
+use crate::linkage::{new_batch, VsLayout};
+use crate::state::PipelineState;
+use crate::workers::Workers;
+use crate::{DrawError, ShaderStage};
+use glsl::ir::OutputPrimitive;
+
+/// Primitives one geometry task takes (batches of `LANES`).
+const PRIMITIVES_PER_TASK: usize = 4 * LANES;
+
+/// What the vertex stage gave a draw, or what the geometry stage gives
+/// the rest of it.
+pub(crate) struct Vertices {
+    pub mode: Mode,
+    /// Per position in the (index) list, the vertex number.
+    pub vertex_of: Vec<u32>,
+    /// The vertices' outputs, `stride` values each.
+    pub outputs: Vec<f32>,
+}
+
+/// Where a geometry lane's inputs come from: (input vertex, geometry input
+/// component, vertex output component, components).
+type InputPlan = Vec<(usize, usize, usize, usize)>;
+
+/// Matches the geometry kernel's per-vertex inputs with the vertex
+/// kernel's outputs by name (inputs without an output stay 0).
+fn input_plan(vs: &Interface, gs: &Interface) -> InputPlan {
+    gs.vertex_inputs()
+        .into_iter()
+        .filter_map(|i| {
+            let out = vs.outputs.iter().find(|s| s.link_name() == i.name)?;
+            Some((
+                i.vertex,
+                i.offset,
+                out.offset,
+                i.components.min(out.components),
+            ))
+        })
+        .collect()
+}
+
+/// Runs the geometry kernel `gs` on the primitives of `input` (the vertex
+/// stage's results, `vs_stride` values per vertex of `vs`'s interface);
+/// see the module docs. `layout` is the geometry kernel's
+/// ([`VsLayout::new`] of its interface): its colours are clamped when
+/// the state says so.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn run_geometry(
+    workers: &Workers,
+    (gs, uniforms): (&dyn ShaderStage, &[u32]),
+    textures: &(dyn crate::ex::Textures + Sync),
+    vs: &Interface,
+    vs_stride: usize,
+    input: &Vertices,
+    state: &PipelineState,
+    layout: &VsLayout,
+) -> Result<Vertices, DrawError> {
+    let iface = gs.interface();
+    let Some(emitted) = iface.emitted else {
+        return Err(DrawError::Exec(crate::ex::ExecError::Unsupported(
+            "the geometry stage is not a geometry kernel".into(),
+        )));
+    };
+    let out_mode = match emitted.output {
+        OutputPrimitive::Points => Mode::Points,
+        OutputPrimitive::LineStrip => Mode::Lines,
+        OutputPrimitive::TriangleStrip => Mode::Triangles,
+    };
+    let plan = input_plan(vs, iface);
+    let primitive_id = iface.input("gl_PrimitiveIDIn").map(|s| s.offset);
+    let arity = emitted.input.vertices() as usize;
+    let count = input.vertex_of.len();
+    let primitives = primitive_count(input.mode, count);
+    let prepared = if primitives > LANES {
+        gs.prepare(uniforms)
+    } else {
+        None
+    };
+    let stride = layout.outputs;
+    let tasks = primitives.div_ceil(PRIMITIVES_PER_TASK);
+    let run_task = |t: usize| -> Result<(Vec<f32>, Vec<u32>), crate::ex::ExecError> {
+        let first = t * PRIMITIVES_PER_TASK;
+        let last = (first + PRIMITIVES_PER_TASK).min(primitives);
+        let mut batch = new_batch(iface.input_components, iface.output_components);
+        let mut outputs = Vec::new();
+        let mut list = Vec::new();
+        for start in (first..last).step_by(LANES) {
+            let lanes = (last - start).min(LANES);
+            for c in batch.inputs.iter_mut() {
+                *c = [0.0; LANES];
+            }
+            for lane in 0..lanes {
+                let k = start + lane;
+                let Some(verts) = geometry_input(input.mode, count, k, state.provoking_first)
+                else {
+                    continue;
+                };
+                for &(v, to, from, n) in &plan {
+                    let Some(&pos) = verts.get(v).filter(|_| v < arity) else {
+                        continue;
+                    };
+                    let Some(&vertex) = input.vertex_of.get(pos) else {
+                        continue;
+                    };
+                    let src = vertex as usize * vs_stride + from;
+                    let values = input.outputs.get(src..src + n).unwrap_or_default();
+                    for (dst, &x) in batch.inputs.iter_mut().skip(to).zip(values) {
+                        dst[lane] = x;
+                    }
+                }
+                if let Some(c) = primitive_id.and_then(|o| batch.inputs.get_mut(o)) {
+                    c[lane] = f32::from_bits(state.primitive_ids.of(k as u32));
+                }
+            }
+            batch.active = (1u32 << lanes) - 1;
+            batch.discarded = 0;
+            batch.helper = 0;
+            match &prepared {
+                Some(p) => gs.run_prepared(&mut batch, p, uniforms, textures)?,
+                None => gs.run(&mut batch, uniforms, textures)?,
+            }
+            if state.clamp_vertex_color {
+                for v in 0..emitted.max_vertices {
+                    for &(o, n) in &layout.colors {
+                        let at = emitted.vertex(v) + o;
+                        for comp in batch.outputs.iter_mut().skip(at).take(n) {
+                            for x in comp.iter_mut() {
+                                *x = if *x > 0.0 { x.min(1.0) } else { 0.0 };
+                            }
+                        }
+                    }
+                }
+            }
+            for lane in 0..lanes {
+                collect_lane(
+                    &batch.outputs,
+                    lane,
+                    &emitted,
+                    stride,
+                    state.provoking_first,
+                    &mut outputs,
+                    &mut list,
+                );
+            }
+        }
+        Ok((outputs, list))
+    };
+    let results = workers.map(tasks, 1, |t, cancel| {
+        if cancel.skip(t) {
+            return None;
+        }
+        let r = run_task(t);
+        if r.is_err() {
+            cancel.fail(t);
+        }
+        Some(r)
+    });
+    let mut out = Vertices {
+        mode: out_mode,
+        vertex_of: Vec::new(),
+        outputs: Vec::new(),
+    };
+    // Tasks up to the first failure all ran: the first error in order is
+    // the same whatever the thread count.
+    for r in results.into_iter().flatten() {
+        let (outputs, list) = r?;
+        let base = (out.outputs.len() / stride.max(1)) as u32;
+        out.vertex_of.extend(list.iter().map(|&v| base + v));
+        out.outputs.extend_from_slice(&outputs);
+    }
+    Ok(out)
+}
+
+/// Appends what `lane` emitted to a task's vertices (`stride` values
+/// each) and its primitives (as a list of `mode`'s vertices, numbered in
+/// the task's vertices).
+fn collect_lane(
+    batch: &[[f32; LANES]],
+    lane: usize,
+    emitted: &Emitted,
+    stride: usize,
+    provoking_first: bool,
+    outputs: &mut Vec<f32>,
+    list: &mut Vec<u32>,
+) {
+    let read = |c: usize| batch.get(c).map_or(0.0, |x| x[lane]);
+    let n = (read(emitted.count()).to_bits() as usize).min(emitted.max_vertices);
+    let base = (outputs.len() / stride.max(1)) as u32;
+    for v in 0..n {
+        let at = emitted.vertex(v);
+        outputs.extend((0..stride).map(|c| read(at + c)));
+    }
+    let strip = |v: usize| read(emitted.strip(v)).to_bits();
+    let mut start = 0;
+    while start < n {
+        let mut end = start + 1;
+        while end < n && strip(end) == strip(start) {
+            end += 1;
+        }
+        let s = base + start as u32;
+        let len = (end - start) as u32;
+        match emitted.output {
+            OutputPrimitive::Points => list.extend(s..s + len),
+            OutputPrimitive::LineStrip => {
+                for i in 1..len {
+                    list.extend([s + i - 1, s + i]);
+                }
+            }
+            OutputPrimitive::TriangleStrip => {
+                for i in 2..len {
+                    let (a, b, c) = (s + i - 2, s + i - 1, s + i);
+                    list.extend(match (i % 2 == 1, provoking_first) {
+                        (false, _) => [a, b, c],
+                        (true, false) => [b, a, c],
+                        (true, true) => [a, c, b],
+                    });
+                }
+            }
+        }
+        start = end;
+    }
+}
