@@ -205,7 +205,14 @@ pub(super) fn check_limits(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
                 })
                 .map(|g| components(m, g.ty))
                 .sum();
-            limit("varying components", varyings, limits::MAX_VARYING_FLOATS);
+            // GL 3.2 gives fragment inputs a limit of their own, above
+            // the vertex stage's outputs (a geometry stage can feed more).
+            let max = if m.language.version >= crate::lang::Version::V150 {
+                limits::MAX_FRAGMENT_INPUT_COMPONENTS
+            } else {
+                limits::MAX_VARYING_FLOATS
+            };
+            limit("varying components", varyings, max);
         }
     }
 }
