@@ -8,9 +8,17 @@ use gl::Context;
 /// them and makes the program current; panics with the info log when a
 /// stage does not compile or the program does not link.
 pub fn linked_program(ctx: &mut Context, vs: Option<&str>, fs: Option<&str>) -> u32 {
+    let stages: Vec<(u32, &str)> = [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)]
+        .into_iter()
+        .filter_map(|(kind, src)| Some((kind, src?)))
+        .collect();
+    linked_stages(ctx, &stages)
+}
+
+/// [`linked_program`] of shader objects of any kinds: (GL kind, source).
+pub fn linked_stages(ctx: &mut Context, stages: &[(u32, &str)]) -> u32 {
     let p = ctx.create_program();
-    for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
-        let Some(src) = src else { continue };
+    for &(kind, src) in stages {
         let s = ctx.create_shader(kind);
         ctx.shader_source(s, &[src]);
         ctx.compile_shader(s);

@@ -1,0 +1,200 @@
+//! Geometry shaders through `gl::Context` (GL 3.3 §2.12): points
+//! expanded to quads, primitive IDs in and out, the draw-mode check, the
+//! program queries, and the adjacency modes without a geometry stage.
+
+use gl::enums::*;
+use gl::{Api, ArrayData, Context};
+
+mod common;
+
+const W: i32 = 32;
+const H: i32 = 32;
+
+const VS: &str = "#version 150 compatibility
+in vec2 pos;
+in vec3 color;
+out vec3 vcolor;
+void main() { gl_Position = vec4(pos, 0.0, 1.0); vcolor = color; }";
+
+/// Each point becomes an 8×8-pixel square in its vertex's colour; its
+/// primitive ID goes to the fragment stage plus 10.
+const GS: &str = "#version 150
+layout(points) in;
+layout(triangle_strip, max_vertices = 4) out;
+in vec3 vcolor[];
+out vec3 gcolor;
+void main() {
+    for (int i = 0; i < 4; i++) {
+        vec2 corner = vec2(i % 2, i / 2) * 0.5 - 0.25;
+        gl_Position = gl_in[0].gl_Position + vec4(corner, 0.0, 0.0);
+        gcolor = vcolor[0];
+        gl_PrimitiveID = gl_PrimitiveIDIn + 10;
+        EmitVertex();
+    }
+}";
+
+const FS: &str = "#version 150
+in vec3 gcolor;
+out vec4 frag;
+void main() { frag = vec4(gcolor, float(gl_PrimitiveID) / 255.0); }";
+
+/// A 3.3 compatibility context with `verts` (x, y, r, g, b) in client
+/// arrays for `pos` and `color` of program `p`.
+fn setup(stages: &[(u32, &str)], verts: &[[f32; 5]]) -> (Context, u32) {
+    let mut ctx = Context::with_api(W, H, Api::GL33_COMPAT);
+    let p = common::linked_stages(&mut ctx, stages);
+    ctx.clear_color(0.0, 0.0, 0.0, 0.0);
+    ctx.clear(GL_COLOR_BUFFER_BIT);
+    let pos: Vec<f32> = verts.iter().flat_map(|v| [v[0], v[1]]).collect();
+    let color: Vec<f32> = verts.iter().flat_map(|v| [v[2], v[3], v[4]]).collect();
+    for (name, size, data) in [("pos", 2, &pos), ("color", 3, &color)] {
+        let loc = ctx.get_attrib_location(p, name);
+        if loc < 0 {
+            continue;
+        }
+        let data = ArrayData::from_f32(data);
+        ctx.vertex_attrib_pointer(loc as u32, size, GL_FLOAT, false, 0, data);
+        ctx.enable_vertex_attrib_array(loc as u32);
+    }
+    (ctx, p)
+}
+
+/// The pixels of each distinct colour, brightest first.
+fn histogram(ctx: &mut Context) -> Vec<([u8; 4], usize)> {
+    let img = ctx.read_pixels_f32(0, 0, W, H);
+    let mut counts = std::collections::BTreeMap::new();
+    for px in img {
+        *counts
+            .entry(px.map(|c| (c * 255.0).round() as u8))
+            .or_insert(0) += 1;
+    }
+    let mut v: Vec<_> = counts.into_iter().collect();
+    v.sort_by(|a, b| b.0.cmp(&a.0));
+    v
+}
+
+#[test]
+fn points_become_quads_with_primitive_ids() {
+    let stages = [
+        (GL_VERTEX_SHADER, VS),
+        (GL_GEOMETRY_SHADER, GS),
+        (GL_FRAGMENT_SHADER, FS),
+    ];
+    let verts = [[-0.5, -0.5, 1.0, 0.0, 0.0], [0.5, 0.5, 0.0, 1.0, 0.0]];
+    let (mut ctx, p) = setup(&stages, &verts);
+    ctx.draw_arrays(GL_POINTS, 0, 2);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(ctx.take_draw_error(), None);
+    assert_eq!(
+        histogram(&mut ctx),
+        vec![
+            ([255, 0, 0, 10], 64),
+            ([0, 255, 0, 11], 64),
+            ([0, 0, 0, 0], (W * H - 128) as usize),
+        ]
+    );
+    assert_eq!(ctx.get_programiv(p, GL_GEOMETRY_VERTICES_OUT), 4);
+    assert_eq!(
+        ctx.get_programiv(p, GL_GEOMETRY_INPUT_TYPE),
+        GL_POINTS as i32
+    );
+    assert_eq!(
+        ctx.get_programiv(p, GL_GEOMETRY_OUTPUT_TYPE),
+        GL_TRIANGLE_STRIP as i32
+    );
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+
+    // A mode the geometry stage does not take: GL_INVALID_OPERATION and
+    // nothing drawn.
+    ctx.clear(GL_COLOR_BUFFER_BIT);
+    ctx.draw_arrays(GL_LINES, 0, 2);
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+    assert_eq!(histogram(&mut ctx), vec![([0, 0, 0, 0], (W * H) as usize)]);
+}
+
+#[test]
+fn geometry_queries_need_a_geometry_stage() {
+    let fs = "#version 150\nin vec3 vcolor;\nout vec4 c;\nvoid main() { c = vec4(vcolor, 1.0); }";
+    let (mut ctx, p) = setup(&[(GL_VERTEX_SHADER, VS), (GL_FRAGMENT_SHADER, fs)], &[]);
+    assert_eq!(ctx.get_programiv(p, GL_GEOMETRY_VERTICES_OUT), 0);
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+    // A 2.1 context has no geometry shaders of the core form.
+    let mut old = Context::with_api(W, H, Api::GL21);
+    assert_eq!(old.create_shader(GL_GEOMETRY_SHADER), 0);
+    assert_eq!(old.get_error(), GL_INVALID_ENUM);
+}
+
+/// Strips are cut by `EndPrimitive`, emission past `max_vertices` is
+/// dropped, and odd triangles keep the strip's winding (culling back
+/// faces removes none).
+#[test]
+fn strips_end_and_stop_at_max_vertices() {
+    let gs = "#version 150
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 6) out;
+in vec3 vcolor[];
+out vec3 gcolor;
+void main() {
+    // Two 3-vertex strips, the left and right halves of the screen
+    // (each a triangle), then vertices beyond max_vertices.
+    for (int s = 0; s < 2; s++) {
+        float x0 = s == 0 ? -1.0 : 0.0;
+        gl_Position = vec4(x0, -1.0, 0.0, 1.0); gcolor = vcolor[s]; EmitVertex();
+        gl_Position = vec4(x0 + 1.0, -1.0, 0.0, 1.0); EmitVertex();
+        gl_Position = vec4(x0, 1.0, 0.0, 1.0); EmitVertex();
+        EndPrimitive();
+    }
+    gl_Position = vec4(1.0, 1.0, 0.0, 1.0); gcolor = vec3(1.0); EmitVertex();
+    EmitVertex();
+    EmitVertex();
+}";
+    let fs = "#version 150\nin vec3 gcolor;\nout vec4 c;\nvoid main() { c = vec4(gcolor, 1.0); }";
+    let stages = [
+        (GL_VERTEX_SHADER, VS),
+        (GL_GEOMETRY_SHADER, gs),
+        (GL_FRAGMENT_SHADER, fs),
+    ];
+    let verts = [
+        [0.0, 0.0, 1.0, 0.0, 0.0],
+        [0.0, 0.0, 0.0, 0.0, 1.0],
+        [0.0, 0.0, 0.0, 0.0, 0.0],
+    ];
+    let (mut ctx, _) = setup(&stages, &verts);
+    ctx.enable(GL_CULL_FACE);
+    ctx.draw_arrays(GL_TRIANGLES, 0, 3);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    let h = histogram(&mut ctx);
+    // Each half's lower-left triangle: 16×32 pixels halved (no pixel
+    // centre lies on the diagonals).
+    let tri = |c: [u8; 4]| h.iter().find(|(k, _)| *k == c).map_or(0, |e| e.1);
+    assert_eq!(tri([255, 0, 0, 255]), 256, "{h:?}");
+    assert_eq!(tri([0, 0, 255, 255]), 256, "{h:?}");
+    assert_eq!(tri([255, 255, 255, 255]), 0, "{h:?}");
+}
+
+/// Without a geometry shader the adjacency modes draw their primitives
+/// and ignore the adjacent vertices (GL 3.3 §2.6.1).
+#[test]
+fn adjacency_modes_without_a_geometry_stage() {
+    let fs = "#version 150\nin vec3 vcolor;\nout vec4 c;\nvoid main() { c = vec4(vcolor, 1.0); }";
+    let stages = [(GL_VERTEX_SHADER, VS), (GL_FRAGMENT_SHADER, fs)];
+    // Triangles with adjacency: vertices 0, 2, 4 make the triangle (the
+    // lower-left half of the screen); 1, 3, 5 are far away.
+    let far = [5.0, 5.0, 0.0, 0.0, 0.0];
+    let verts = [
+        [-1.0, -1.0, 1.0, 1.0, 1.0],
+        far,
+        [1.0, -1.0, 1.0, 1.0, 1.0],
+        far,
+        [-1.0, 1.0, 1.0, 1.0, 1.0],
+        far,
+    ];
+    let (mut ctx, _) = setup(&stages, &verts);
+    ctx.draw_arrays(GL_TRIANGLES_ADJACENCY, 0, 6);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    // The lower-left half of 32×32 pixels: 496 centres inside, the 32 on
+    // the diagonal belong to the triangle on its other side (GL 3.3
+    // §3.6.1's rule).
+    let white = histogram(&mut ctx)[0];
+    assert_eq!(white, ([255, 255, 255, 255], 496));
+}
