@@ -458,12 +458,49 @@ impl Context {
         if self.feedback_active() {
             let words = self.uniform_words(&vs, vs_user);
             let units = self.texture_units();
+            // The geometry stage reads the provoking-vertex convention,
+            // colour clamping and primitive IDs from the pipeline state.
+            let state = match (&gs, self.draw_target()) {
+                (Some(_), Some(target)) => {
+                    let mut state = self.pipeline_state(&target);
+                    self.store_target(target);
+                    state.primitive_ids = ids;
+                    Some(state)
+                }
+                _ => None,
+            };
             let fetch = Fetcher::new(self, &vs, immediate, batch);
-            let shaded =
-                raster::shade_vertices(&self.workers, &*vs, &words, &units, indices, &fetch, true);
+            let shaded = match (&gs, &state) {
+                (Some(gs), Some(state)) => {
+                    let gs_words = self.uniform_words(gs, true);
+                    raster::shade_geometry(
+                        &self.workers,
+                        (&*vs, &words),
+                        (&**gs, &gs_words),
+                        &units,
+                        indices,
+                        &fetch,
+                        raster_mode(mode),
+                        state,
+                    )
+                    .map(|(m, vertex_of, outputs, stride)| {
+                        (gl_list_mode(m), vertex_of, outputs, stride)
+                    })
+                }
+                _ => raster::shade_vertices(
+                    &self.workers,
+                    &*vs,
+                    &words,
+                    &units,
+                    indices,
+                    &fetch,
+                    true,
+                )
+                .map(|(vertex_of, outputs, stride)| (mode, vertex_of, outputs, stride)),
+            };
             drop(fetch);
             match shaded {
-                Ok((vertex_of, outputs, stride)) => {
+                Ok((mode, vertex_of, outputs, stride)) => {
                     self.capture_feedback(mode, (&vertex_of, &outputs, stride))
                 }
                 Err(e) => {
@@ -622,6 +659,16 @@ impl Context {
             );
         }
         self.store_target(t);
+    }
+}
+
+/// The GL mode of the point, line and triangle lists a geometry stage
+/// emits.
+fn gl_list_mode(mode: raster::Mode) -> u32 {
+    match mode {
+        raster::Mode::Points => GL_POINTS,
+        raster::Mode::Lines => GL_LINES,
+        _ => GL_TRIANGLES,
     }
 }
 

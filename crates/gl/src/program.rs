@@ -889,8 +889,13 @@ fn build_executable(
         GL_SEPARATE_ATTRIBS => GL_SEPARATE_ATTRIBS,
         _ => GL_INTERLEAVED_ATTRIBS,
     };
+    // The last stage before rasterization is the one captured.
     let feedback = crate::transform_feedback::resolve(
-        kernels.vs.as_ref().map(|k| k.interface()),
+        kernels
+            .gs
+            .as_ref()
+            .or(kernels.vs.as_ref())
+            .map(|k| k.interface()),
         feedback_names,
         feedback_mode == GL_SEPARATE_ATTRIBS,
     )?;

@@ -1,5 +1,7 @@
-//! Transform feedback (GL 3.3 §2.16, §2.11.6, §6.1.15): the vertex stage's
-//! outputs named by glTransformFeedbackVaryings written, per assembled
+//! Transform feedback (GL 3.3 §2.16, §2.11.6, §6.1.15): the outputs of
+//! the last stage before rasterization (the geometry stage if the
+//! program has one, else the vertex stage) named by
+//! glTransformFeedbackVaryings written, per assembled or emitted
 //! primitive, into the buffers bound to the GL_TRANSFORM_FEEDBACK_BUFFER
 //! binding points, between glBeginTransformFeedback and
 //! glEndTransformFeedback.
@@ -320,7 +322,21 @@ impl Context {
     /// A draw of `mode` while feedback is active must make its primitive
     /// type (GL_INVALID_OPERATION otherwise, recorded here).
     pub(crate) fn feedback_allows(&mut self, mode: u32) -> bool {
-        if self.feedback_active() && feedback_mode(mode) != self.feedback.mode {
+        // With a geometry stage its output primitive is what is captured
+        // (GL 3.3 §2.16).
+        let emitted = self
+            .programs
+            .get(&self.current_program)
+            .and_then(|p| p.exe.as_ref().filter(|_| p.link_status))
+            .and_then(|e| e.program.stage(glsl::Stage::Geometry))
+            .and_then(|g| g.module.geometry.output)
+            .map(|o| match o {
+                glsl::ir::OutputPrimitive::Points => GL_POINTS,
+                glsl::ir::OutputPrimitive::LineStrip => GL_LINES,
+                glsl::ir::OutputPrimitive::TriangleStrip => GL_TRIANGLES,
+            });
+        let captured = emitted.unwrap_or_else(|| feedback_mode(mode));
+        if self.feedback_active() && captured != self.feedback.mode {
             self.set_error(GL_INVALID_OPERATION);
             return false;
         }

@@ -198,3 +198,66 @@ fn adjacency_modes_without_a_geometry_stage() {
     let white = histogram(&mut ctx)[0];
     assert_eq!(white, ([255, 255, 255, 255], 496));
 }
+
+/// Transform feedback captures the geometry stage's outputs, its strips
+/// decomposed into independent primitives, and needs the feedback mode
+/// of the geometry stage's output (GL 3.3 §2.16).
+#[test]
+fn transform_feedback_captures_the_emitted_primitives() {
+    let vs =
+        "#version 150\nin float x;\nout float vx;\nvoid main() { vx = x; gl_Position = vec4(x); }";
+    // Each point becomes a 4-vertex line strip: 3 lines.
+    let gs = "#version 150
+layout(points) in;
+layout(line_strip, max_vertices = 4) out;
+in float vx[];
+out float v;
+void main() { for (int i = 0; i < 4; i++) { v = vx[0] * 10.0 + float(i); EmitVertex(); } }";
+    let fs = "#version 150\nout vec4 c;\nvoid main() { c = vec4(1.0); }";
+    let mut ctx = Context::with_api(W, H, Api::GL33_COMPAT);
+    let p = ctx.create_program();
+    for (kind, src) in [
+        (GL_VERTEX_SHADER, vs),
+        (GL_GEOMETRY_SHADER, gs),
+        (GL_FRAGMENT_SHADER, fs),
+    ] {
+        let s = ctx.create_shader(kind);
+        ctx.shader_source(s, &[src]);
+        ctx.compile_shader(s);
+        ctx.attach_shader(p, s);
+    }
+    ctx.bind_attrib_location(p, 0, "x");
+    ctx.transform_feedback_varyings(p, &["v".to_string()], GL_INTERLEAVED_ATTRIBS);
+    ctx.link_program(p);
+    assert_eq!(
+        ctx.get_programiv(p, GL_LINK_STATUS),
+        1,
+        "{}",
+        ctx.get_program_info_log(p)
+    );
+    ctx.use_program(p);
+    let b = ctx.gen_buffers(1)[0];
+    ctx.bind_buffer(GL_TRANSFORM_FEEDBACK_BUFFER, b);
+    ctx.buffer_data(GL_TRANSFORM_FEEDBACK_BUFFER, 64 * 4, None, GL_STREAM_READ);
+    ctx.bind_buffer_base(GL_TRANSFORM_FEEDBACK_BUFFER, 0, b);
+    ctx.vertex_attrib_pointer(0, 1, GL_FLOAT, false, 0, ArrayData::from_f32(&[1.0, 2.0]));
+    ctx.enable_vertex_attrib_array(0);
+    // Points captured as points: the geometry stage emits lines.
+    ctx.begin_transform_feedback(GL_POINTS);
+    ctx.draw_arrays(GL_POINTS, 0, 2);
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+    ctx.end_transform_feedback();
+    ctx.begin_transform_feedback(GL_LINES);
+    ctx.draw_arrays(GL_POINTS, 0, 2);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    ctx.end_transform_feedback();
+    let got: Vec<f32> = ctx
+        .get_buffer_sub_data(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 12 * 4)
+        .chunks_exact(4)
+        .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+        .collect();
+    let want = [
+        10.0, 11.0, 11.0, 12.0, 12.0, 13.0, 20.0, 21.0, 21.0, 22.0, 22.0, 23.0,
+    ];
+    assert_eq!(got, want);
+}

@@ -109,15 +109,21 @@ fn compile_report(
     Ok(report_tuple(report::compile_report(&shader)))
 }
 
-/// link_report(vertex, fragment, compatibility) -> (ok, diagnostics, text,
-/// info_log). Both given shaders must compile (call compile_report
-/// first).
+/// link_report(vertex, fragment, compatibility, geometry) -> (ok,
+/// diagnostics, text, info_log). Every given shader must compile (call
+/// compile_report first).
 #[pyfunction]
-#[pyo3(signature = (vertex=None, fragment=None, compatibility=true))]
-fn link_report(vertex: Option<&str>, fragment: Option<&str>, compatibility: bool) -> ReportTuple {
+#[pyo3(signature = (vertex=None, fragment=None, compatibility=true, geometry=None))]
+fn link_report(
+    vertex: Option<&str>,
+    fragment: Option<&str>,
+    compatibility: bool,
+    geometry: Option<&str>,
+) -> ReportTuple {
     let mut shaders = Vec::new();
     for (src, stage, name) in [
         (vertex, glsl::Stage::Vertex, "vertex_shader"),
+        (geometry, glsl::Stage::Geometry, "geometry_shader"),
         (fragment, glsl::Stage::Fragment, "fragment_shader"),
     ] {
         if let Some(src) = src {
@@ -415,16 +421,22 @@ impl RawContext {
     /// (compile_report, link_report) for structured diagnostics; what
     /// only the context refuses (GLSL 1.10 in a core context) fails here.
     #[pyo3(signature = (vertex=None, fragment=None))]
+    #[pyo3(signature = (vertex, fragment, geometry=None))]
     fn build_program(
         &self,
         vertex: Option<&str>,
         fragment: Option<&str>,
+        geometry: Option<&str>,
     ) -> (u32, bool, bool, String) {
         let mut gl = self.gl();
         let program = gl.create_program();
         let mut log = String::new();
         let mut compiled = true;
-        for (kind, src) in [(GL_VERTEX_SHADER, vertex), (GL_FRAGMENT_SHADER, fragment)] {
+        for (kind, src) in [
+            (GL_VERTEX_SHADER, vertex),
+            (GL_GEOMETRY_SHADER, geometry),
+            (GL_FRAGMENT_SHADER, fragment),
+        ] {
             let Some(src) = src else { continue };
             let sh = gl.create_shader(kind);
             gl.shader_source(sh, &[src]);

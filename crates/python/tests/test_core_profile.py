@@ -509,3 +509,39 @@ def test_unsigned_uniforms(core):
         prog["u"] = -1
     with pytest.raises(TypeError, match="integers"):
         prog["u"] = 1.5
+
+
+POINT_VS = """#version 330 core
+layout(location = 0) in vec2 pos;
+void main() { gl_Position = vec4(pos, 0.0, 1.0); }
+"""
+# Each point becomes a square half the window wide around it.
+SQUARE_GS = """#version 330 core
+layout(points) in;
+layout(triangle_strip, max_vertices = 4) out;
+void main() {
+    for (int i = 0; i < 4; i++) {
+        gl_Position = gl_in[0].gl_Position + vec4(vec2(i % 2, i / 2) - 0.5, 0.0, 0.0);
+        EmitVertex();
+    }
+}
+"""
+
+
+def test_core_context_runs_a_geometry_shader(core):
+    prog = core.program(vertex_shader=POINT_VS, geometry_shader=SQUARE_GS, fragment_shader=FLAT_FS)
+    prog["color"] = (1.0, 1.0, 1.0, 1.0)
+    vao = core.vertex_array(prog, [(np.array([[0.0, 0.0]], dtype=np.float32), "2f", "pos")])
+    core.clear()
+    vao.render("points")
+    lit = (core.read()[:, :, 0] == 255).sum()
+    assert lit == (W // 2) * (H // 2)
+
+
+def test_geometry_shader_errors_name_the_stage(core):
+    with pytest.raises(shaderbox.CompileError, match="geometry_shader"):
+        core.program(vertex_shader=POINT_VS, geometry_shader="#version 330 core\nvoid main() { EmitVertex() }", fragment_shader=FLAT_FS)
+    # A geometry shader without its output layout does not link.
+    no_layout = "#version 330 core\nlayout(points) in;\nvoid main() { EmitVertex(); }"
+    with pytest.raises(shaderbox.LinkError):
+        core.program(vertex_shader=POINT_VS, geometry_shader=no_layout, fragment_shader=FLAT_FS)

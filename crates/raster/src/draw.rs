@@ -18,7 +18,6 @@ use crate::assembly::{primitive_count, Mode};
 use crate::binning::{Bins, ChunkBins, TileGrid, TILE};
 use crate::ex::{ExecError, Textures};
 use crate::framebuffer::{Band, Framebuffer};
-use crate::geometry::{run_geometry, Vertices};
 use crate::interpolate::Plane;
 use crate::linkage::{FsLayout, VsLayout};
 use crate::prim::Prim;
@@ -114,7 +113,6 @@ pub(crate) fn draw_probed(
     let last = gs.map_or(vs, |(g, _)| g);
     let vs_layout = VsLayout::new(last.interface());
     let fs_layout = FsLayout::new(last.interface(), fs.interface(), state.two_sided_color);
-    let vertex_layout;
     let (vertex_of, outputs, mode) = match gs {
         None => {
             let (vertex_of, outputs) = run_vertices(
@@ -131,36 +129,15 @@ pub(crate) fn draw_probed(
             (vertex_of, outputs, mode)
         }
         Some(gs) => {
-            // Colours are clamped after the geometry stage, the last
-            // before rasterization.
-            vertex_layout = VsLayout::new(vs.interface());
-            let (vertex_of, outputs) = run_vertices(
+            let emitted = crate::geometry::vertex_and_geometry_stages(
                 workers,
-                vs,
-                vs_uniforms,
-                textures,
-                indices,
-                fetch,
-                &vertex_layout,
-                false,
-                probe,
-            )?;
-            let shaded = Vertices {
-                mode,
-                vertex_of,
-                outputs,
-            };
-            let emitted = run_geometry(
-                workers,
+                (vs, vs_uniforms),
                 gs,
                 textures,
-                vs.interface(),
-                vertex_layout.outputs,
-                &shaded,
-                state,
-                &vs_layout,
+                (indices, fetch),
+                (mode, state),
+                probe,
             )?;
-            workers.spare().keep_tables([shaded.vertex_of]);
             (emitted.vertex_of, emitted.outputs, emitted.mode)
         }
     };

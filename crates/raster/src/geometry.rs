@@ -28,9 +28,85 @@ use crate::assembly::{geometry_input, primitive_count, Mode};
 use crate::ex::{Emitted, Interface, LANES};
 use crate::linkage::{new_batch, VsLayout};
 use crate::state::PipelineState;
+use crate::vertex::run_vertices;
 use crate::workers::Workers;
 use crate::{DrawError, ShaderStage};
 use glsl::ir::OutputPrimitive;
+
+/// The vertex stage, then the geometry stage, as a draw runs them
+/// (vertex colours clamped after the geometry stage, the last before
+/// rasterization, when the state says so): the emitted primitives.
+pub(crate) fn vertex_and_geometry_stages(
+    workers: &Workers,
+    (vs, vs_uniforms): (&dyn ShaderStage, &[u32]),
+    gs: (&dyn ShaderStage, &[u32]),
+    textures: &(dyn crate::ex::Textures + Sync),
+    (indices, fetch): (&[u32], &dyn crate::VertexFetch),
+    (mode, state): (Mode, &PipelineState),
+    probe: Option<&crate::probe::Probe>,
+) -> Result<Vertices, DrawError> {
+    let vertex_layout = VsLayout::new(vs.interface());
+    let (vertex_of, outputs) = run_vertices(
+        workers,
+        vs,
+        vs_uniforms,
+        textures,
+        indices,
+        fetch,
+        &vertex_layout,
+        false,
+        probe,
+    )?;
+    let shaded = Vertices {
+        mode,
+        vertex_of,
+        outputs,
+    };
+    let emitted = run_geometry(
+        workers,
+        gs,
+        textures,
+        vs.interface(),
+        vertex_layout.outputs,
+        &shaded,
+        state,
+        &VsLayout::new(gs.0.interface()),
+    );
+    let mut spare = workers.spare();
+    spare.keep_tables([shaded.vertex_of]);
+    spare.keep(Vec::new(), shaded.outputs);
+    emitted
+}
+
+/// The vertex and geometry stages alone, as a draw runs them (transform
+/// feedback reads the geometry stage's outputs before clipping): the
+/// emitted primitives as a list of `mode` ([`Mode::Points`],
+/// [`Mode::Lines`] or [`Mode::Triangles`]), per position in that list
+/// the vertex number, and the outputs of every emitted vertex, laid out
+/// as `gs.interface().outputs` says, `stride` (the last value) apart.
+#[allow(clippy::too_many_arguments)]
+pub fn shade_geometry(
+    workers: &Workers,
+    vs: (&dyn ShaderStage, &[u32]),
+    gs: (&dyn ShaderStage, &[u32]),
+    textures: &(dyn crate::ex::Textures + Sync),
+    indices: &[u32],
+    fetch: &dyn crate::VertexFetch,
+    mode: Mode,
+    state: &PipelineState,
+) -> Result<(Mode, Vec<u32>, Vec<f32>, usize), DrawError> {
+    let stride = VsLayout::new(gs.0.interface()).outputs;
+    let v = vertex_and_geometry_stages(
+        workers,
+        vs,
+        gs,
+        textures,
+        (indices, fetch),
+        (mode, state),
+        None,
+    )?;
+    Ok((v.mode, v.vertex_of, v.outputs, stride))
+}
 
 /// Primitives one geometry task takes (batches of `LANES`).
 const PRIMITIVES_PER_TASK: usize = 4 * LANES;

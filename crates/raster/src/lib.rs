@@ -154,7 +154,11 @@
 //!
 //! # Modules, stage by stage
 //! - vertex fetch and the vertex stage: `vertex` (`run_vertices`);
-//! - primitive assembly: `assembly` (`primitive`, `small_polygon`);
+//! - primitive assembly: `assembly` (`primitive`, `small_polygon`, and
+//!   `geometry_input` with the adjacent vertices);
+//! - the geometry stage: `geometry` (`run_geometry`: a geometry kernel
+//!   per assembled primitive, 16 per batch, its emitted strips made a
+//!   point, line or triangle list for set-up; [`draw_geometry_stages`]);
 //! - clipping: `clip` (`Planes::clip_polygon`, `clip_line`);
 //! - set-up (window transform, facing, culling, polygon offset, planes):
 //!   `setup` (`Setup::chunk`), giving `prim::Prim`s;
@@ -257,6 +261,7 @@ pub use framebuffer::{
     depth_to_fixed, fixed_to_depth, float_to_unorm8, unorm8_to_float, ColorBuffer, ColorFormat,
     Framebuffer, DEPTH_MAX, MAX_DRAW_BUFFERS, MAX_FRAMEBUFFER_SIZE,
 };
+pub use geometry::shade_geometry;
 pub use pixel_fragments::{write_pixel_fragments, PixelFragment};
 pub use probe::{
     DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine, VertexProbe, View, ViewImage,

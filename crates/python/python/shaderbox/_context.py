@@ -735,7 +735,9 @@ class VertexArray:
         ``mode``: ``"points"``, ``"lines"``, ``"line_strip"``,
         ``"line_loop"``, ``"triangles"``, ``"triangle_strip"``,
         ``"triangle_fan"``, ``"quads"``, ``"quad_strip"`` or ``"polygon"``
-        (the last three: compatibility contexts only).
+        (these three: compatibility contexts only), or in 3.2+ contexts
+        ``"lines_adjacency"``, ``"line_strip_adjacency"``,
+        ``"triangles_adjacency"`` or ``"triangle_strip_adjacency"``.
 
         ``instances`` > 1 draws that many instances
         (glDrawArraysInstanced / glDrawElementsInstanced): ``gl_InstanceID``
@@ -1115,20 +1117,32 @@ class Context:
 
     # -- programs and data --
 
-    def program(self, vertex_shader: Optional[str] = None, fragment_shader: Optional[str] = None) -> Program:
-        """Compiles and links a program. A stage left out is fixed-function.
+    def program(
+        self,
+        vertex_shader: Optional[str] = None,
+        fragment_shader: Optional[str] = None,
+        geometry_shader: Optional[str] = None,
+    ) -> Program:
+        """Compiles and links a program. A vertex or fragment stage left
+        out is fixed-function; a ``geometry_shader`` (GLSL 1.50 and later,
+        in a 3.2+ context) needs a ``vertex_shader``.
 
         Raises :class:`CompileError` or :class:`LinkError` with the
         compiler's diagnostics (line, column, message, and the rendered
         report with the source lines)."""
         if vertex_shader is None and fragment_shader is None:
             raise ValueError("a program needs a vertex_shader, a fragment_shader or both")
-        for n, s in (("vertex_shader", vertex_shader), ("fragment_shader", fragment_shader)):
+        stages = (
+            ("vertex", vertex_shader, "vertex_shader"),
+            ("geometry", geometry_shader, "geometry_shader"),
+            ("fragment", fragment_shader, "fragment_shader"),
+        )
+        for _, s, n in stages:
             if s is not None and not isinstance(s, str):
                 raise TypeError(f"{n} must be GLSL source text (str), got {type(s).__name__}")
         compatibility = self._profile != "core"
         reports = []
-        for stage, src, label in (("vertex", vertex_shader, "vertex_shader"), ("fragment", fragment_shader, "fragment_shader")):
+        for stage, src, label in stages:
             if src is not None:
                 reports.append(_diagnostics(_shaderbox.compile_report(src, stage, None, label, compatibility)))
         if not all(r.ok for r in reports):
@@ -1139,10 +1153,12 @@ class Context:
                 ok=False,
             )
             raise CompileError(merged)
-        link = _diagnostics(_shaderbox.link_report(vertex_shader, fragment_shader, compatibility))
+        link = _diagnostics(
+            _shaderbox.link_report(vertex_shader, fragment_shader, compatibility, geometry_shader)
+        )
         if not link.ok:
             raise LinkError(link)
-        name, compiled, linked, log = self._raw.build_program(vertex_shader, fragment_shader)
+        name, compiled, linked, log = self._raw.build_program(vertex_shader, fragment_shader, geometry_shader)
         if not (compiled and linked):
             # What only the context refuses (e.g. GLSL 1.10 in a core context).
             self._raw.delete_program(name)

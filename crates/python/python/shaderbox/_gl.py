@@ -24,6 +24,10 @@ MODES = {
     "quads": 0x0007,
     "quad_strip": 0x0008,
     "polygon": 0x0009,
+    "lines_adjacency": 0x000A,
+    "line_strip_adjacency": 0x000B,
+    "triangles_adjacency": 0x000C,
+    "triangle_strip_adjacency": 0x000D,
 }
 
 # Data types.
