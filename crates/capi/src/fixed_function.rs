@@ -79,6 +79,7 @@ gl_entry_points! {
     // ---- lighting ----
     [list] fn glShadeModel(mode: GLenum) => |c| { c.gl.shade_model(mode) }
     [list] fn glProvokingVertex(mode: GLenum) => |c| { c.gl.provoking_vertex(mode) }
+    [list] fn glProvokingVertexEXT(mode: GLenum) => |c| { c.gl.provoking_vertex(mode) }
     [list] fn glLightf(light: GLenum, pname: GLenum, v: GLfloat) => |c| { c.gl.light(light, pname, Param::F(v)) }
     [list] fn glLighti(light: GLenum, pname: GLenum, v: GLint) => |c| { c.gl.light(light, pname, Param::I(v)) }
     fn glLightfv(light: GLenum, pname: GLenum, v: *const GLfloat) => |c| {

@@ -47,6 +47,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_fog_coord",
     "GL_EXT_secondary_color",
     "GL_SGIS_generate_mipmap",
+    "GL_EXT_provoking_vertex",
     "GL_ARB_vertex_array_object",
     "GL_ARB_draw_instanced",
     "GL_ARB_instanced_arrays",
@@ -129,6 +130,39 @@ impl Context {
             }
             GL_MAX_VERTEX_ATTRIBS => int(&[limits::MAX_VERTEX_ATTRIBS as i64]),
             GL_MAX_VARYING_FLOATS => int(&[limits::MAX_VARYING_FLOATS as i64]),
+            // The stage interface limits of GL 3.2 (§6.2, table 6.43).
+            GL_MAX_VERTEX_OUTPUT_COMPONENTS if api.at_least(3, 2) => {
+                int(&[limits::MAX_VERTEX_OUTPUT_COMPONENTS as i64])
+            }
+            GL_MAX_FRAGMENT_INPUT_COMPONENTS if api.at_least(3, 2) => {
+                int(&[limits::MAX_FRAGMENT_INPUT_COMPONENTS as i64])
+            }
+            GL_MAX_GEOMETRY_INPUT_COMPONENTS if self.has_geometry_shaders() => {
+                int(&[limits::MAX_GEOMETRY_INPUT_COMPONENTS as i64])
+            }
+            GL_MAX_GEOMETRY_OUTPUT_COMPONENTS if self.has_geometry_shaders() => {
+                int(&[limits::MAX_GEOMETRY_OUTPUT_COMPONENTS as i64])
+            }
+            GL_MAX_GEOMETRY_OUTPUT_VERTICES if self.has_geometry_shaders() => {
+                int(&[limits::MAX_GEOMETRY_OUTPUT_VERTICES as i64])
+            }
+            GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS if self.has_geometry_shaders() => {
+                int(&[limits::MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS as i64])
+            }
+            GL_MAX_GEOMETRY_UNIFORM_COMPONENTS if self.has_geometry_shaders() => {
+                int(&[limits::MAX_GEOMETRY_UNIFORM_COMPONENTS as i64])
+            }
+            GL_MAX_GEOMETRY_TEXTURE_IMAGE_UNITS if self.has_geometry_shaders() => {
+                int(&[limits::MAX_GEOMETRY_TEXTURE_IMAGE_UNITS as i64])
+            }
+            GL_MAX_GEOMETRY_VARYING_COMPONENTS_ARB if self.has_geometry_shaders() => {
+                int(&[limits::MAX_GEOMETRY_VARYING_COMPONENTS as i64])
+            }
+            GL_MAX_COMBINED_GEOMETRY_UNIFORM_COMPONENTS if self.has_geometry_shaders() => {
+                int(&[crate::uniform_block::combined_components(
+                    limits::MAX_GEOMETRY_UNIFORM_COMPONENTS as i64,
+                )])
+            }
             GL_MAX_VERTEX_UNIFORM_COMPONENTS => {
                 int(&[limits::MAX_VERTEX_UNIFORM_COMPONENTS as i64])
             }

@@ -33,14 +33,16 @@ pub const MAX_DRAW_BUFFERS: u32 = 8;
 /// `gl_MaxClipDistances` (GLSL 1.30, minimum 8): the same planes as
 /// `gl_MaxClipPlanes`.
 pub const MAX_CLIP_DISTANCES: u32 = MAX_CLIP_PLANES;
-/// `gl_MaxVertexOutputComponents` (GLSL 1.50, minimum 64): the varying
-/// floats a vertex shader writes.
-pub const MAX_VERTEX_OUTPUT_COMPONENTS: u32 = MAX_VARYING_FLOATS;
-/// `gl_MaxFragmentInputComponents` (GLSL 1.50, minimum 128). The spec's
-/// minimum, though the linker allows `MAX_VARYING_FLOATS` between stages.
+/// `gl_MaxVertexOutputComponents` (GLSL 1.50, minimum 64): the output
+/// components a vertex shader of GLSL 1.50 or later writes (twice the
+/// minimum, as Mesa's llvmpipe; `MAX_VARYING_FLOATS` for earlier
+/// versions).
+pub const MAX_VERTEX_OUTPUT_COMPONENTS: u32 = 128;
+/// `gl_MaxFragmentInputComponents` (GLSL 1.50, minimum 128): the input
+/// components a fragment shader of GLSL 1.50 or later reads.
 pub const MAX_FRAGMENT_INPUT_COMPONENTS: u32 = 128;
-/// The geometry stage's constants, which GLSL 1.50 gives every stage.
-/// shaderbox has no geometry stage; they are the spec's minimums.
+/// The geometry stage's limits (GLSL 1.50 gives every stage their
+/// constants): the spec's minimums.
 pub const MAX_GEOMETRY_INPUT_COMPONENTS: u32 = 64;
 pub const MAX_GEOMETRY_OUTPUT_COMPONENTS: u32 = 128;
 pub const MAX_GEOMETRY_TEXTURE_IMAGE_UNITS: u32 = 16;

@@ -160,7 +160,12 @@ pub(super) fn check_limits(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
                 .filter(|g| g.storage == Storage::Varying && g.written)
                 .map(|g| components(m, g.ty))
                 .sum();
-            limit("varying components", varyings, limits::MAX_VARYING_FLOATS);
+            let max = if m.language.version >= crate::lang::Version::V150 {
+                limits::MAX_VERTEX_OUTPUT_COMPONENTS
+            } else {
+                limits::MAX_VARYING_FLOATS
+            };
+            limit("varying components", varyings, max);
         }
         Stage::Geometry => {
             limit(
@@ -205,8 +210,8 @@ pub(super) fn check_limits(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
                 })
                 .map(|g| components(m, g.ty))
                 .sum();
-            // GL 3.2 gives fragment inputs a limit of their own, above
-            // the vertex stage's outputs (a geometry stage can feed more).
+            // GL 3.2 gives stage inputs and outputs limits of their own,
+            // above GL 2.1's varying floats.
             let max = if m.language.version >= crate::lang::Version::V150 {
                 limits::MAX_FRAGMENT_INPUT_COMPONENTS
             } else {
