@@ -532,6 +532,31 @@ impl Context {
         };
         let mut state = self.pipeline_state(&target);
         state.primitive_ids = ids;
+        // A geometry stage writing gl_Layer into layered attachments
+        // draws layer by layer (`layered`).
+        let layered = gs_stage.and_then(|(g, _)| {
+            let slot = g.interface().output("gl_Layer").filter(|s| s.written)?;
+            Some((slot.offset, self.layer_count()?))
+        });
+        if let (Some((gs, gs_words)), Some(layer)) = (gs_stage, layered) {
+            self.store_target(target);
+            let stages = crate::layered::LayeredStages {
+                vs: (&vs, &vs_words),
+                gs: (gs, gs_words),
+                fs: (fs_stage, &fs_words),
+            };
+            if let Err(e) = self.draw_layered(
+                stages,
+                (mode, indices),
+                (immediate, batch),
+                &state,
+                &units,
+                layer,
+            ) {
+                self.cache.error = Some(e);
+            }
+            return;
+        }
         let fetch = Fetcher::new(self, &vs, immediate, batch);
         let replay = raster::Replay {
             state: &state,
@@ -630,6 +655,11 @@ impl Context {
         {
             return;
         }
+        self.on_every_layer(|ctx| ctx.clear_layer(mask));
+    }
+
+    /// glClear of the draw framebuffer's layer `draw_layer`.
+    fn clear_layer(&mut self, mask: u32) {
         let Some(mut t) = self.draw_target() else {
             return;
         };

@@ -109,6 +109,7 @@ pub mod framebuffer;
 pub mod get;
 pub mod immediate;
 pub mod kernels;
+mod layered;
 pub mod matrix;
 pub mod mipmap;
 pub mod objects;
@@ -222,6 +223,9 @@ pub struct Context {
     pub(crate) syncs: sync::Syncs,
     /// The active transform feedback ([`transform_feedback`]).
     pub(crate) feedback: transform_feedback::Feedback,
+    /// The layer of layered framebuffer attachments that draws write
+    /// (chosen per primitive by a geometry stage's gl_Layer; 0 otherwise).
+    pub(crate) draw_layer: i32,
 }
 
 /// The environment variable giving the default number of draw threads.
@@ -292,6 +296,7 @@ impl Context {
             raster: pixel_path::RasterPos::default(),
             syncs: sync::Syncs::default(),
             feedback: transform_feedback::Feedback::default(),
+            draw_layer: 0,
         }
     }
 

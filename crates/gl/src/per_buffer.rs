@@ -162,6 +162,17 @@ impl Context {
         depth: Option<f32>,
         stencil: Option<i32>,
     ) {
+        self.on_every_layer(|ctx| ctx.clear_buffer_layer(drawbuffer, color, depth, stencil));
+    }
+
+    /// [`Context::clear_buffer_now`] of the layer `draw_layer`.
+    fn clear_buffer_layer(
+        &mut self,
+        drawbuffer: i32,
+        color: Option<[f32; 4]>,
+        depth: Option<f32>,
+        stencil: Option<i32>,
+    ) {
         let Some(mut t) = self.draw_target() else {
             return;
         };

@@ -46,7 +46,7 @@ impl Context {
                 draw_buffers,
             });
         }
-        let f = self.objects.framebuffers.get(&name)?.clone();
+        let f = self.layer_view(self.objects.framebuffers.get(&name)?.clone());
         let mut attachments: Vec<usize> = Vec::new();
         let mut draw_buffers = [None; 8];
         for (i, &b) in f.draw_buffers.iter().enumerate().take(8) {
@@ -66,6 +66,40 @@ impl Context {
             }
         }
         Some(self.assemble(name, &f, attachments, draw_buffers))
+    }
+
+    /// `f` with its layered attachments (glFramebufferTexture of a 3D,
+    /// array or cube map texture) made attachments of the layer draws go
+    /// to ([`Context::draw_layer`]: a cube map's face, another texture's
+    /// layer), which is layer 0 outside a geometry stage's layered draw.
+    fn layer_view(&self, mut f: objects::FramebufferObj) -> objects::FramebufferObj {
+        let layer = self.draw_layer;
+        let at = |a: &mut Option<Attachment>| {
+            if let Some(Attachment::Texture {
+                texture,
+                face,
+                layer: l,
+                layered: layered @ true,
+                ..
+            }) = a
+            {
+                let cube = self
+                    .objects
+                    .textures
+                    .get(texture)
+                    .is_some_and(|t| t.target == GL_TEXTURE_CUBE_MAP);
+                if cube {
+                    *face = layer.clamp(0, 5) as u32;
+                } else {
+                    *l = layer;
+                }
+                *layered = false;
+            }
+        };
+        f.color.iter_mut().for_each(&at);
+        at(&mut f.depth);
+        at(&mut f.stencil);
+        f
     }
 
     /// Builds a raster framebuffer from a framebuffer object's images.
@@ -177,6 +211,7 @@ impl Context {
         let Some(f) = self.objects.framebuffers.get(&t.name).cloned() else {
             return;
         };
+        let f = self.layer_view(f);
         for (i, &a) in t.color_attachments.iter().enumerate() {
             let (Some(att), Some(buf)) = (f.color.get(a).copied().flatten(), t.fb.color.get(i))
             else {

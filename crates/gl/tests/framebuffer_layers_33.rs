@@ -1,7 +1,8 @@
 //! Layers of 3D and array textures as framebuffer attachments (GL 3.3
 //! §4.4.2, §4.4.4): glFramebufferTexture3D and glFramebufferTextureLayer
 //! attach one layer, which clears, draws and reads touch alone;
-//! glFramebufferTexture attaches a whole level, layered, drawn at layer 0;
+//! glFramebufferTexture attaches a whole level, layered: drawn at layer 0
+//! without a geometry stage choosing layers, every layer cleared;
 //! the attachment queries, completeness and errors.
 
 use gl::enums::*;
@@ -139,10 +140,12 @@ fn a_layered_attachment_draws_into_layer_zero() {
         ctx.check_framebuffer_status(GL_FRAMEBUFFER),
         GL_FRAMEBUFFER_COMPLETE
     );
+    // A clear clears every layer (GL 3.3 §4.4.7), a draw without a
+    // geometry stage layer 0.
     clear_to(&mut ctx, [1.0, 1.0, 0.0, 1.0]);
     assert_eq!(
         layer_texels(&mut ctx, GL_TEXTURE_2D_ARRAY, 2),
-        vec![[255, 255, 0, 255], [0, 0, 0, 0]]
+        vec![[255, 255, 0, 255], [255, 255, 0, 255]]
     );
     // A 2D texture is no layered attachment.
     let t2 = ctx.gen_textures(1)[0];
@@ -176,7 +179,7 @@ fn a_layered_attachment_draws_into_layer_zero() {
         ctx.check_framebuffer_status(GL_FRAMEBUFFER),
         GL_FRAMEBUFFER_COMPLETE
     );
-    // A layered cube map draws into its +X face.
+    // A layered cube map: six layers, the faces, all cleared.
     let c = ctx.gen_textures(1)[0];
     ctx.bind_texture(GL_TEXTURE_CUBE_MAP, c);
     for f in 0..6 {
@@ -199,8 +202,8 @@ fn a_layered_attachment_draws_into_layer_zero() {
     clear_to(&mut ctx, [0.0, 0.0, 1.0, 1.0]);
     let px = ctx.get_tex_image(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0, GL_RGBA, GL_UNSIGNED_BYTE);
     assert_eq!(px[..4], [0, 0, 255, 255]);
-    let px = ctx.get_tex_image(GL_TEXTURE_CUBE_MAP_NEGATIVE_X, 0, GL_RGBA, GL_UNSIGNED_BYTE);
-    assert_eq!(px[..4], [0, 0, 0, 0]);
+    let px = ctx.get_tex_image(GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, 0, GL_RGBA, GL_UNSIGNED_BYTE);
+    assert_eq!(px[..4], [0, 0, 255, 255]);
 }
 
 #[test]

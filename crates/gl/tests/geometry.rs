@@ -69,7 +69,7 @@ fn histogram(ctx: &mut Context) -> Vec<([u8; 4], usize)> {
             .or_insert(0) += 1;
     }
     let mut v: Vec<_> = counts.into_iter().collect();
-    v.sort_by(|a, b| b.0.cmp(&a.0));
+    v.sort_by_key(|e| std::cmp::Reverse(e.0));
     v
 }
 
@@ -260,4 +260,103 @@ void main() { for (int i = 0; i < 4; i++) { v = vx[0] * 10.0 + float(i); EmitVer
         10.0, 11.0, 11.0, 12.0, 12.0, 13.0, 20.0, 21.0, 21.0, 22.0, 22.0, 23.0,
     ];
     assert_eq!(got, want);
+}
+
+/// gl_Layer sends each emitted primitive to a layer of a layered
+/// framebuffer: the layers of a 2D array texture, the faces of a cube map
+/// (GL 3.3 §4.4.7); a layer the framebuffer lacks draws nothing.
+#[test]
+fn gl_layer_selects_the_layer_drawn() {
+    let vs = "#version 150\nin vec2 pos;\nvoid main() { gl_Position = vec4(pos, 0.0, 1.0); }";
+    let gs = "#version 150
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 24) out;
+uniform int layers;
+flat out int layer;
+void main() {
+    // One more layer than the framebuffer has: not drawn.
+    for (int l = 0; l <= layers; l++) {
+        for (int i = 0; i < 3; i++) {
+            gl_Position = gl_in[i].gl_Position;
+            gl_Layer = l;
+            layer = l;
+            EmitVertex();
+        }
+        EndPrimitive();
+    }
+}";
+    let fs = "#version 150\nflat in int layer;\nout vec4 c;\nvoid main() { c = vec4(float(layer + 1) / 255.0, 0.0, 0.0, 1.0); }";
+    for (target, layers) in [(GL_TEXTURE_2D_ARRAY, 3), (GL_TEXTURE_CUBE_MAP, 6)] {
+        let mut ctx = Context::with_api(4, 4, Api::GL33_COMPAT);
+        let p = common::linked_stages(
+            &mut ctx,
+            &[
+                (GL_VERTEX_SHADER, vs),
+                (GL_GEOMETRY_SHADER, gs),
+                (GL_FRAGMENT_SHADER, fs),
+            ],
+        );
+        let loc = ctx.get_uniform_location(p, "layers");
+        ctx.uniform_1i(loc, layers);
+        let t = ctx.gen_textures(1)[0];
+        ctx.bind_texture(target, t);
+        let zeros = vec![0u8; 4 * 4 * 4 * 6];
+        if target == GL_TEXTURE_CUBE_MAP {
+            for f in 0..6 {
+                ctx.tex_image(
+                    GL_TEXTURE_CUBE_MAP_POSITIVE_X + f,
+                    0,
+                    GL_RGBA8 as i32,
+                    [4, 4],
+                    0,
+                    GL_RGBA,
+                    GL_UNSIGNED_BYTE,
+                    Some(&zeros[..64]),
+                );
+            }
+        } else {
+            let bytes = &zeros[..64 * layers as usize];
+            ctx.tex_image(
+                target,
+                0,
+                GL_RGBA8 as i32,
+                [4, 4, layers],
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(bytes),
+            );
+        }
+        let fb = ctx.gen_framebuffers(1)[0];
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+        ctx.framebuffer_texture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, t, 0);
+        assert_eq!(
+            ctx.check_framebuffer_status(GL_FRAMEBUFFER),
+            GL_FRAMEBUFFER_COMPLETE
+        );
+        ctx.viewport(0, 0, 4, 4);
+        let tri = [-1.0f32, -1.0, 3.0, -1.0, -1.0, 3.0];
+        let loc = ctx.get_attrib_location(p, "pos") as u32;
+        ctx.vertex_attrib_pointer(loc, 2, GL_FLOAT, false, 0, ArrayData::from_f32(&tri));
+        ctx.enable_vertex_attrib_array(loc);
+        ctx.draw_arrays(GL_TRIANGLES, 0, 3);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        assert_eq!(ctx.take_draw_error(), None);
+        for l in 0..layers {
+            let bytes = if target == GL_TEXTURE_CUBE_MAP {
+                ctx.get_tex_image(
+                    GL_TEXTURE_CUBE_MAP_POSITIVE_X + l as u32,
+                    0,
+                    GL_RGBA,
+                    GL_UNSIGNED_BYTE,
+                )
+            } else {
+                let all = ctx.get_tex_image(target, 0, GL_RGBA, GL_UNSIGNED_BYTE);
+                all[64 * l as usize..64 * (l as usize + 1)].to_vec()
+            };
+            for px in bytes.chunks_exact(4) {
+                assert_eq!(px, [l as u8 + 1, 0, 0, 255], "target {target:#x} layer {l}");
+            }
+        }
+    }
 }

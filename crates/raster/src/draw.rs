@@ -18,6 +18,7 @@ use crate::assembly::{primitive_count, Mode};
 use crate::binning::{Bins, ChunkBins, TileGrid, TILE};
 use crate::ex::{ExecError, Textures};
 use crate::framebuffer::{Band, Framebuffer};
+use crate::geometry::Vertices;
 use crate::interpolate::Plane;
 use crate::linkage::{FsLayout, VsLayout};
 use crate::prim::Prim;
@@ -109,10 +110,6 @@ pub(crate) fn draw_probed(
     textures: &(dyn Textures + Sync),
     probe: Option<&Probe>,
 ) -> Result<(), DrawError> {
-    // The last stage before set-up: its outputs are the vertices drawn.
-    let last = gs.map_or(vs, |(g, _)| g);
-    let vs_layout = VsLayout::new(last.interface());
-    let fs_layout = FsLayout::new(last.interface(), fs.interface(), state.two_sided_color);
     let (vertex_of, outputs, mode) = match gs {
         None => {
             let (vertex_of, outputs) = run_vertices(
@@ -122,7 +119,7 @@ pub(crate) fn draw_probed(
                 textures,
                 indices,
                 fetch,
-                &vs_layout,
+                &VsLayout::new(vs.interface()),
                 state.clamp_vertex_color,
                 probe,
             )?;
@@ -141,7 +138,64 @@ pub(crate) fn draw_probed(
             (emitted.vertex_of, emitted.outputs, emitted.mode)
         }
     };
+    // The last stage before set-up: its outputs are the vertices drawn.
+    let last = gs.map_or(vs, |(g, _)| g);
+    draw_vertices(
+        workers,
+        fb,
+        state,
+        last.interface(),
+        (fs, fs_uniforms),
+        Vertices {
+            mode,
+            vertex_of,
+            outputs,
+        },
+        textures,
+        probe,
+    )
+}
 
+/// Draws vertices already shaded by the last stage before rasterization
+/// (laid out as `last`'s outputs say, `VsLayout::new(last).outputs`
+/// values each) as `vertices.mode` primitives: a geometry stage's
+/// emitted primitives drawn one layer at a time, and the tail of every
+/// draw.
+pub fn draw_emitted(
+    workers: &Workers,
+    fb: &mut Framebuffer,
+    state: &PipelineState,
+    last: &crate::ex::Interface,
+    fs: (&dyn ShaderStage, &[u32]),
+    (mode, vertex_of, outputs): (Mode, Vec<u32>, Vec<f32>),
+    textures: &(dyn Textures + Sync),
+) -> Result<(), DrawError> {
+    let vertices = Vertices {
+        mode,
+        vertex_of,
+        outputs,
+    };
+    draw_vertices(workers, fb, state, last, fs, vertices, textures, None)
+}
+
+/// Set-up, binning and the fragment stage of shaded vertices.
+#[allow(clippy::too_many_arguments)]
+fn draw_vertices(
+    workers: &Workers,
+    fb: &mut Framebuffer,
+    state: &PipelineState,
+    last: &crate::ex::Interface,
+    (fs, fs_uniforms): (&dyn ShaderStage, &[u32]),
+    Vertices {
+        mode,
+        vertex_of,
+        outputs,
+    }: Vertices,
+    textures: &(dyn Textures + Sync),
+    probe: Option<&Probe>,
+) -> Result<(), DrawError> {
+    let vs_layout = VsLayout::new(last);
+    let fs_layout = FsLayout::new(last, fs.interface(), state.two_sided_color);
     let setup = Setup::new(state, (&vs_layout, &fs_layout), &outputs, fb, probe);
     // Shared vertices (indexed meshes): each vertex's outcode and window
     // position once, on the workers, instead of once per primitive using

@@ -256,7 +256,7 @@ pub(crate) use ::exec as ex;
 
 pub use assembly::Mode;
 pub use binning::TILE;
-pub use draw::{draw_geometry_stages, draw_stages};
+pub use draw::{draw_emitted, draw_geometry_stages, draw_stages};
 pub use framebuffer::{
     depth_to_fixed, fixed_to_depth, float_to_unorm8, unorm8_to_float, ColorBuffer, ColorFormat,
     Framebuffer, DEPTH_MAX, MAX_DRAW_BUFFERS, MAX_FRAMEBUFFER_SIZE,
