@@ -41,6 +41,8 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "GL_ARB_explicit_attrib_location",
     "GL_ARB_fragment_coord_conventions",
     "GL_ARB_uniform_buffer_object",
+    "GL_ARB_geometry_shader4",
+    "GL_EXT_geometry_shader4",
 ];
 
 /// The extension of a context with the compatibility profile: a test
@@ -328,7 +330,17 @@ fn compile_and_link(
         );
         objects.insert(0, &dummy);
     }
-    let program = glsl::link::link(&objects);
+    // A GL_EXT/ARB_geometry_shader4 geometry shader takes its primitives
+    // and vertex count from the program, whose initial count (0) fails
+    // every link: the test's program takes triangles in, a triangle strip
+    // out and 3 vertices. Other shaders ignore the parameters.
+    let params = glsl::link::LinkOptions {
+        geometry: glsl::link::GeometryParams {
+            vertices_out: 3,
+            ..Default::default()
+        },
+    };
+    let program = glsl::link::link_with(&objects, &params);
     log.push_str(program.info_log());
     (program.ok(), log)
 }

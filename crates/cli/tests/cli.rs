@@ -330,6 +330,32 @@ fn parsertest_expected_fail_that_fails_passes_and_shows_log() {
 }
 
 #[test]
+fn parsertest_links_an_ext_geometry_shader_with_a_vertex_count() {
+    // GL_ARB_geometry_shader4's form: the program's initial vertex count
+    // (0) would fail the link; the runner's program sets 3.
+    let src = "#version 110\n#extension GL_ARB_geometry_shader4: enable\nvoid main() {\n  for (int i = 0; i < 3; i++) {\n    gl_Position = gl_PositionIn[i];\n    EmitVertex();\n  }\n}\n";
+    let p = temp_shader("pt-ext-gs", "sanity.geom", src);
+    let o = shaderbox(&[
+        "glslparsertest",
+        &p,
+        "pass",
+        "1.10",
+        "GL_ARB_geometry_shader4",
+        "--check-link",
+    ]);
+    assert_eq!(piglit_result(&o), "pass", "{}", stdout(&o));
+    // Without the extension the same shader is GLSL 1.10 with no
+    // geometry stage.
+    let bare = temp_shader(
+        "pt-ext-gs-bare",
+        "bare.geom",
+        &src.replace("#extension GL_ARB_geometry_shader4: enable\n", ""),
+    );
+    let o = shaderbox(&["glslparsertest", &bare, "fail", "1.10"]);
+    assert_eq!(piglit_result(&o), "pass", "{}", stdout(&o));
+}
+
+#[test]
 fn parsertest_expected_pass_that_fails_fails() {
     let p = temp_shader("pt-fail2", "bad.frag", UNDECLARED_FRAG);
     let o = shaderbox(&["glslparsertest", &p, "pass", "1.10"]);

@@ -42,7 +42,12 @@
 //!   value each; the linker requires all three in the program, GLSL 1.50
 //!   §4.3.8.1-2). User geometry inputs are arrays, sized (by their
 //!   declaration or the input primitive) or still unsized when the object
-//!   declares no input primitive.
+//!   declares no input primitive. A GL_EXT_geometry_shader4 object
+//!   declares no layout (its primitives are the program's parameters);
+//!   compiled alone its input arrays have the size of the primitive it
+//!   was found valid with, and the linker compiles it again with the
+//!   program's, the linked module's `geometry` then holding the
+//!   parameters.
 
 pub mod print;
 
@@ -695,6 +700,18 @@ impl InputPrimitive {
         InputPrimitive::ALL.into_iter().find(|p| p.name() == name)
     }
 
+    /// The GL enum's name, as GL_EXT_geometry_shader4's
+    /// GEOMETRY_INPUT_TYPE takes it.
+    pub fn gl_name(self) -> &'static str {
+        match self {
+            InputPrimitive::Points => "GL_POINTS",
+            InputPrimitive::Lines => "GL_LINES",
+            InputPrimitive::LinesAdjacency => "GL_LINES_ADJACENCY_EXT",
+            InputPrimitive::Triangles => "GL_TRIANGLES",
+            InputPrimitive::TrianglesAdjacency => "GL_TRIANGLES_ADJACENCY_EXT",
+        }
+    }
+
     /// Vertices per input primitive: the size of every input array
     /// (GLSL 1.50 §4.3.8.1's table).
     pub fn vertices(self) -> u32 {
@@ -722,6 +739,16 @@ impl OutputPrimitive {
             OutputPrimitive::Points => "points",
             OutputPrimitive::LineStrip => "line_strip",
             OutputPrimitive::TriangleStrip => "triangle_strip",
+        }
+    }
+
+    /// The GL enum's name (GL_EXT_geometry_shader4's
+    /// GEOMETRY_OUTPUT_TYPE).
+    pub fn gl_name(self) -> &'static str {
+        match self {
+            OutputPrimitive::Points => "GL_POINTS",
+            OutputPrimitive::LineStrip => "GL_LINE_STRIP",
+            OutputPrimitive::TriangleStrip => "GL_TRIANGLE_STRIP",
         }
     }
 

@@ -132,6 +132,10 @@ extensions! {
     // GL_ARB_explicit_attrib_location); `#extension` must accept it since
     // the GL layer reports it.
     ArbBlendFuncExtended = "GL_ARB_blend_func_extended";
+    // Geometry shaders before GLSL 1.50 (`varying in`, `gl_PositionIn[]`,
+    // `gl_VerticesIn`...), the two names of one extension.
+    ExtGeometryShader4 = "GL_EXT_geometry_shader4";
+    ArbGeometryShader4 = "GL_ARB_geometry_shader4";
 }
 
 /// A set of [`Extension`]s.
@@ -208,8 +212,9 @@ pub enum Feature {
     /// colour varyings, `gl_ClipVertex`, `ftransform()`.
     CompatibilityInterface,
     /// The geometry stage: its inputs, outputs, layouts and built-ins
-    /// (GLSL 1.50 §2.2). GL_EXT_geometry_shader4's form for 1.10/1.20 is
-    /// not implemented.
+    /// (GLSL 1.50 §2.2), or before 1.50 GL_EXT_geometry_shader4's form
+    /// (also named GL_ARB_geometry_shader4; see
+    /// [`Language::ext_geometry_shader4`]).
     GeometryShader,
 }
 
@@ -330,7 +335,14 @@ impl Language {
             Feature::UniformBlocks => {
                 self.since_or(Version::V140, Extension::ArbUniformBufferObject)
             }
-            Feature::InOutBlocks | Feature::GeometryShader => since(Version::V150),
+            Feature::InOutBlocks => since(Version::V150),
+            Feature::GeometryShader => {
+                if self.ext_geometry_shader4() {
+                    Ok(())
+                } else {
+                    self.since_or(Version::V150, Extension::ExtGeometryShader4)
+                }
+            }
             Feature::ExplicitLocation => {
                 self.since_or(Version::V330, Extension::ArbExplicitAttribLocation)
             }
@@ -345,6 +357,18 @@ impl Language {
                 }
             }
         }
+    }
+
+    /// Whether a geometry shader of this language is written in
+    /// GL_EXT_geometry_shader4's form (GL_ARB_geometry_shader4 is the same
+    /// extension): a version before 1.50 with either name enabled. Its
+    /// inputs are `varying in` arrays and `gl_PositionIn[]`...,
+    /// `gl_VerticesIn` is a constant, and the input and output primitives
+    /// and the vertex count are the program's parameters, not layouts. A
+    /// GLSL 1.50 shader is always the 1.50 form.
+    pub fn ext_geometry_shader4(self) -> bool {
+        self.version < Version::V150
+            && (self.has(Extension::ExtGeometryShader4) || self.has(Extension::ArbGeometryShader4))
     }
 
     /// Available from `v` on, or earlier with `e` enabled.

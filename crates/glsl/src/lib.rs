@@ -37,14 +37,26 @@
 //!   `layout(..., max_vertices = N) out;` (recorded in
 //!   [`ir::Module::geometry`]), input arrays sized by the input primitive,
 //!   and the link rules (a vertex shader, all three layouts, the
-//!   vertex → geometry → fragment interfaces). Not yet: the
-//!   GL_EXT/ARB_geometry_shader4 form on 1.10/1.20 (`varying in`,
-//!   `gl_PositionIn[]`...; a geometry shader needs `#version 150`),
-//!   redeclaring the geometry stage's input `gl_PerVertex` (the output
+//!   vertex → geometry → fragment interfaces). Not yet: redeclaring the
+//!   geometry stage's input `gl_PerVertex` (the output
 //!   block's redeclaration is done, [`ir::Module::per_vertex_out`]), and
 //!   the uniform match between the vertex
 //!   and fragment stages of a program with a geometry stage. Nothing runs
 //!   a geometry stage yet (exec refuses it).
+//! - GL_EXT_geometry_shader4 (and GL_ARB_geometry_shader4, the same
+//!   extension) on GLSL 1.10 to 1.40: `varying in` arrays and `varying
+//!   out`, `gl_PositionIn[]`... `gl_PrimitiveIDIn`, `gl_VerticesIn`, the
+//!   outputs and `EmitVertex`/`EndPrimitive`. The primitives and the
+//!   vertex count are the program's parameters: [`link::link_with`] takes
+//!   them ([`link::GeometryParams`]) and compiles each such object again
+//!   with the input primitive, so input sizes, `gl_VerticesIn` and
+//!   constant indices are judged then; the linked stage carries the
+//!   parameters in [`ir::Module::geometry`] as a 1.50 shader's layouts.
+//!   Compiled alone ([`CompileOptions::geometry_input`] `None`), such a
+//!   shader is accepted when valid for some input primitive. Not
+//!   implemented: its two-dimensional inputs (`varying in float v[][4]`,
+//!   `gl_TexCoordIn[][]`, `gl_ClipDistanceIn[][]`), refused with an error
+//!   that says so.
 //! - Integer operations the spec leaves undefined have the executor's
 //!   defined results when folded ([`consteval`]): shift amounts modulo 32,
 //!   `i32::MIN % -1` is 0; division and `%` by zero are not constant.
@@ -90,6 +102,17 @@ pub struct CompileOptions {
     /// whether `#version 150 compatibility` is accepted. GL 2.1 contexts
     /// and `shaderbox check` say yes.
     pub compatibility_context: bool,
+    /// For a GL_EXT_geometry_shader4 geometry shader (before GLSL 1.50,
+    /// with the extension enabled): the program's GEOMETRY_INPUT_TYPE,
+    /// which sizes the input arrays and is `gl_VerticesIn`'s value. The
+    /// linker sets it when it compiles such an object again for its
+    /// program ([`link::link_with`]). `None` (what `glCompileShader` has):
+    /// the shader compiles if it is valid for at least one input
+    /// primitive, tried in the order GL_TRIANGLES (the parameter's initial
+    /// value), points, lines, lines with adjacency, triangles with
+    /// adjacency; its diagnostics are those of GL_TRIANGLES when none is.
+    /// Ignored by every other language and stage.
+    pub geometry_input: Option<ir::InputPrimitive>,
 }
 
 impl CompileOptions {
@@ -99,6 +122,7 @@ impl CompileOptions {
             name: String::from("<shader>"),
             default_version: None,
             compatibility_context: true,
+            geometry_input: None,
         }
     }
 }
@@ -156,22 +180,32 @@ pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
     let mut module = None;
     if !pp_failed {
         let (tu, parse_diags) = parse::parse(&pp_out.tokens, language);
+        let parse_failed = parse_diags.iter().any(Diagnostic::is_error);
         diagnostics.extend(parse_diags);
-        let ctx = sema::Context {
-            language,
-            stage: opts.stage,
-            extensions: pp_out.extensions.clone(),
-            invariant_all: pp_out.invariant_all,
-        };
-        let (m, sema_diags) = sema::analyze(&tu, &ctx);
-        diagnostics.extend(sema_diags);
-        if !diagnostics.iter().any(Diagnostic::is_error) {
-            let v = validate::validate(&m);
-            diagnostics.extend(v);
-            if !diagnostics.iter().any(Diagnostic::is_error) {
-                module = Some(m);
+        let analyze = |input: Option<ir::InputPrimitive>| {
+            let ctx = sema::Context {
+                language,
+                stage: opts.stage,
+                extensions: pp_out.extensions.clone(),
+                invariant_all: pp_out.invariant_all,
+                geometry_input: input,
+            };
+            let (m, mut diags) = sema::analyze(&tu, &ctx);
+            let mut ok = !parse_failed && !diags.iter().any(Diagnostic::is_error);
+            if ok {
+                diags.extend(validate::validate(&m));
+                ok = !diags.iter().any(Diagnostic::is_error);
             }
-        }
+            (ok.then_some(m), diags)
+        };
+        let ext_gs = opts.stage == Stage::Geometry && language.ext_geometry_shader4();
+        let (m, sema_diags) = if ext_gs && opts.geometry_input.is_none() {
+            ext_geometry_trials(analyze, parse_failed)
+        } else {
+            analyze(opts.geometry_input)
+        };
+        diagnostics.extend(sema_diags);
+        module = m;
     }
     // In source order, as a reader goes through the shader (parse errors
     // and analysis errors otherwise come in two runs).
@@ -201,6 +235,45 @@ pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
 }
 
 /// The shader refused for its size, before any of it is copied or read.
+/// A GL_EXT_geometry_shader4 geometry shader compiled without its
+/// program's input primitive: valid when valid for one of them
+/// ([`CompileOptions::geometry_input`]). The module keeps the sizes of
+/// the primitive that succeeded but declares no layout: the linker
+/// compiles the object again with the program's primitive.
+fn ext_geometry_trials(
+    analyze: impl Fn(Option<ir::InputPrimitive>) -> (Option<ir::Module>, Vec<Diagnostic>),
+    parse_failed: bool,
+) -> (Option<ir::Module>, Vec<Diagnostic>) {
+    use ir::InputPrimitive as P;
+    let (first, mut diags) = analyze(Some(P::Triangles));
+    if let Some(mut m) = first {
+        m.geometry = ir::GeometryLayout::default();
+        return (Some(m), diags);
+    }
+    if parse_failed {
+        return (None, diags);
+    }
+    for p in [
+        P::Points,
+        P::Lines,
+        P::LinesAdjacency,
+        P::TrianglesAdjacency,
+    ] {
+        if let (Some(mut m), d) = analyze(Some(p)) {
+            m.geometry = ir::GeometryLayout::default();
+            return (Some(m), d);
+        }
+    }
+    // Errors that depend on the input primitive say which one was assumed.
+    for d in diags
+        .iter_mut()
+        .filter(|d| d.is_error() && matches!(d.code, Code::IndexOutOfRange | Code::BadArraySize))
+    {
+        d.notes.push("checked with gl_VerticesIn = 3 (GL_TRIANGLES, the initial GEOMETRY_INPUT_TYPE) and every other input primitive; the program's input type decides at link time".into());
+    }
+    (None, diags)
+}
+
 fn too_large(opts: &CompileOptions) -> Shader {
     let source = SourceMap::from_strings(opts.name.clone(), &[]);
     let language = Language::new(

@@ -10,6 +10,16 @@
 //! Link errors are [`Diagnostic`]s like compile errors; those that point into
 //! a shader object carry its index in [`LinkDiagnostic::shader`].
 //!
+//! A GL_EXT_geometry_shader4 geometry shader (GLSL before 1.50 with the
+//! extension enabled) takes its input primitive, output primitive and
+//! vertex count from the program's parameters ([`GeometryParams`], passed
+//! by [`link_with`]): each such object is compiled again with the input
+//! primitive (its input arrays sized, `gl_VerticesIn` its vertex count,
+//! errors of that compile being link errors), and its module's
+//! [`Module::geometry`] then holds the three parameters as a GLSL 1.50
+//! object's layouts would, so the linked stage is the same for both forms.
+//! GLSL 1.50 geometry shaders ignore the parameters.
+//!
 //! The parts: `merge` (one stage's objects into one module, with `remap`
 //! moving each object's ids and `types` deciding when declarations agree),
 //! `calls` (call depth across objects), `redeclarations` (built-in
@@ -28,8 +38,38 @@ mod types;
 use self::interface::{check_interface, check_limits, check_locations};
 use self::merge::merge_stage;
 use crate::diag::{render_info_log, Code, Diagnostic};
-use crate::ir::{FunctionId, Module, Stage};
-use crate::Shader;
+use crate::ir::{FunctionId, GeometryLayout, InputPrimitive, Module, OutputPrimitive, Stage};
+use crate::{CompileOptions, Profile, Shader};
+
+/// A program's geometry shader parameters (GL_EXT_geometry_shader4
+/// §2.16: `glProgramParameteriEXT` with GEOMETRY_INPUT_TYPE_EXT,
+/// GEOMETRY_OUTPUT_TYPE_EXT, GEOMETRY_VERTICES_OUT_EXT), used by the
+/// extension's form of geometry shader only. The default is the spec's
+/// initial state: triangles in, a triangle strip out, 0 vertices (which
+/// fails the link of such a shader until the program sets a count).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct GeometryParams {
+    pub input: InputPrimitive,
+    pub output: OutputPrimitive,
+    pub vertices_out: u32,
+}
+
+impl Default for GeometryParams {
+    fn default() -> GeometryParams {
+        GeometryParams {
+            input: InputPrimitive::Triangles,
+            output: OutputPrimitive::TriangleStrip,
+            vertices_out: 0,
+        }
+    }
+}
+
+/// What a link takes besides the shader objects: the program's
+/// parameters.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LinkOptions {
+    pub geometry: GeometryParams,
+}
 
 /// A link diagnostic and the shader object it points into, if any.
 #[derive(Clone, Debug)]
@@ -72,8 +112,14 @@ impl Program {
     }
 }
 
-/// Links shader objects into a program.
+/// Links shader objects into a program whose parameters are the initial
+/// ones ([`LinkOptions::default`]).
 pub fn link(shaders: &[&Shader]) -> Program {
+    link_with(shaders, &LinkOptions::default())
+}
+
+/// Links shader objects into a program with the program's parameters.
+pub fn link_with(shaders: &[&Shader], opts: &LinkOptions) -> Program {
     let mut diags: Vec<LinkDiagnostic> = Vec::new();
     let mut program = Program::default();
     if shaders.is_empty() {
@@ -106,13 +152,21 @@ pub fn link(shaders: &[&Shader]) -> Program {
             }
         })
         .collect();
+    let ext_geometry = if diags.is_empty() {
+        ext_geometry_modules(shaders, &opts.geometry, &mut diags)
+    } else {
+        Vec::new()
+    };
     if diags.is_empty() {
         for stage in [Stage::Vertex, Stage::Geometry, Stage::Fragment] {
             let objects: Vec<(usize, &Module)> = shaders
                 .iter()
                 .enumerate()
                 .filter(|(_, s)| s.stage == stage)
-                .filter_map(|(i, s)| s.module.as_ref().map(|m| (i, m)))
+                .filter_map(|(i, s)| {
+                    let again = ext_geometry.iter().find(|(j, _)| *j == i);
+                    again.map(|(_, m)| m).or(s.module.as_ref()).map(|m| (i, m))
+                })
                 .collect();
             if objects.is_empty() {
                 continue;
@@ -155,6 +209,87 @@ pub fn link(shaders: &[&Shader]) -> Program {
         program.stages.clear();
     }
     program
+}
+
+/// The modules of the program's GL_EXT_geometry_shader4 geometry shader
+/// objects, compiled again with the program's input primitive and given
+/// its three parameters as layouts (see the module docs), by object
+/// index. Errors of those compiles, and a vertex count of 0 or over the
+/// limit, are link errors.
+fn ext_geometry_modules(
+    shaders: &[&Shader],
+    params: &GeometryParams,
+    diags: &mut Vec<LinkDiagnostic>,
+) -> Vec<(usize, Module)> {
+    let ext: Vec<(usize, &Shader)> = shaders
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| s.stage == Stage::Geometry && s.language.ext_geometry_shader4())
+        .map(|(i, s)| (i, *s))
+        .collect();
+    if ext.is_empty() {
+        return Vec::new();
+    }
+    let count_ok = if params.vertices_out == 0 {
+        push(
+            diags,
+            None,
+            Code::LinkInterfaceMismatch,
+            "the program's GEOMETRY_VERTICES_OUT is 0: a GL_EXT_geometry_shader4 geometry shader needs glProgramParameteriEXT(program, GL_GEOMETRY_VERTICES_OUT_EXT, n) with n > 0 before the link",
+        );
+        false
+    } else if params.vertices_out > crate::limits::MAX_GEOMETRY_OUTPUT_VERTICES {
+        push(
+            diags,
+            None,
+            Code::LinkInterfaceMismatch,
+            format!(
+                "the program's GEOMETRY_VERTICES_OUT is {}, over GL_MAX_GEOMETRY_OUTPUT_VERTICES_EXT ({})",
+                params.vertices_out,
+                crate::limits::MAX_GEOMETRY_OUTPUT_VERTICES
+            ),
+        );
+        false
+    } else {
+        true
+    };
+    let input = params.input;
+    let mut out = Vec::new();
+    for (i, s) in ext {
+        let opts = CompileOptions {
+            name: s.source.name.clone(),
+            default_version: Some(s.language.version),
+            compatibility_context: s.language.profile == Profile::Compatibility,
+            geometry_input: Some(input),
+            ..CompileOptions::new(Stage::Geometry)
+        };
+        let again = crate::compile(&s.source.strings(), &opts);
+        match again.module {
+            Some(mut m) if count_ok => {
+                m.geometry = GeometryLayout {
+                    input: Some(input),
+                    output: Some(params.output),
+                    max_vertices: Some(params.vertices_out),
+                };
+                out.push((i, m));
+            }
+            Some(_) => {}
+            None => {
+                for d in again.diagnostics.into_iter().filter(Diagnostic::is_error) {
+                    diags.push(LinkDiagnostic {
+                        shader: Some(i),
+                        diagnostic: d.with_note(format!(
+                            "the program's GEOMETRY_INPUT_TYPE is {}: input arrays have {} elements, and gl_VerticesIn is {}",
+                            input.gl_name(),
+                            input.vertices(),
+                            input.vertices()
+                        )),
+                    });
+                }
+            }
+        }
+    }
+    out
 }
 
 fn push(

@@ -102,6 +102,21 @@ impl SourceMap {
         }
     }
 
+    /// The source strings as given to [`SourceMap::from_strings`].
+    pub fn strings(&self) -> Vec<&str> {
+        let ends = self
+            .string_starts
+            .iter()
+            .skip(1)
+            .map(|&e| e as usize)
+            .chain(std::iter::once(self.text.len()));
+        self.string_starts
+            .iter()
+            .zip(ends)
+            .map(|(&s, e)| self.text.get(s as usize..e).unwrap_or(""))
+            .collect()
+    }
+
     pub fn text(&self) -> &str {
         &self.text
     }

@@ -14,8 +14,8 @@ mod prelude;
 
 pub use crate::builtin_fn::BuiltinFn;
 pub use eval::eval_builtin;
-pub use prelude::prelude;
 pub(crate) use prelude::replacement;
+pub use prelude::{prelude, prelude_for_input};
 
 /// The built-in struct types (GLSL 1.10/1.20 §7.5), in every version and
 /// stage of the compatibility profile (the core profile keeps

@@ -27,7 +27,10 @@
 //!   `varying`s (read-only in a fragment shader);
 //! - vertex outputs to the fragment stage are `varying`s (writable in a
 //!   vertex shader);
-//! - geometry inputs are `in` (read-only: `gl_in[]`, `gl_PrimitiveIDIn`);
+//! - geometry inputs are `in` (read-only: `gl_in[]`, `gl_PrimitiveIDIn`),
+//!   or `varying in` in GL_EXT_geometry_shader4's form (`gl_PositionIn[]`
+//!   ..., unsized: the analyzer sizes them by the input primitive, and
+//!   `gl_VerticesIn` is [`prelude_for_input`]'s);
 //!   its outputs are plain globals like the vertex stage's, or `varying`s
 //!   (`gl_PrimitiveID`, `gl_Layer`, the compatibility colours).
 //!
@@ -44,7 +47,7 @@
 //! unsigned form, and `mix` with a `bvec` selector takes `genType` only
 //! until GLSL 4.50 adds the integer and bool forms.
 
-use crate::ir::Stage;
+use crate::ir::{InputPrimitive, Stage};
 use crate::lang::{Feature, Language, Version};
 use crate::limits;
 use std::fmt::Write;
@@ -52,7 +55,14 @@ use std::fmt::Write;
 /// The built-in declarations for `lang` and `stage` (the semantic
 /// analyzer caches what it makes of them).
 pub fn prelude(lang: Language, stage: Stage) -> String {
-    build(lang, stage)
+    build(lang, stage, InputPrimitive::Triangles)
+}
+
+/// [`prelude`] for a GL_EXT_geometry_shader4 geometry shader whose
+/// program takes `input` primitives: `gl_VerticesIn` is their vertex
+/// count. Other languages and stages ignore `input`.
+pub fn prelude_for_input(lang: Language, stage: Stage, input: InputPrimitive) -> String {
+    build(lang, stage, input)
 }
 
 /// Which stages a built-in exists in.
@@ -80,6 +90,9 @@ pub(crate) struct Where {
     /// The core profile's form of something the compatibility profile
     /// extends (`gl_in[]`'s members, GLSL 1.50 §7.1 and §7.1.1).
     core_only: bool,
+    /// Only in GL_EXT_geometry_shader4's form of the geometry stage
+    /// ([`Language::ext_geometry_shader4`]).
+    ext_gs: bool,
 }
 
 impl Where {
@@ -90,6 +103,7 @@ impl Where {
         stages: Stages::All,
         compat_only: false,
         core_only: false,
+        ext_gs: false,
     };
 
     const fn since(v: Version) -> Where {
@@ -116,6 +130,13 @@ impl Where {
     const fn gs(self) -> Where {
         Where {
             stages: Stages::Geometry,
+            ..self
+        }
+    }
+
+    const fn ext_gs(self) -> Where {
+        Where {
+            ext_gs: true,
             ..self
         }
     }
@@ -153,10 +174,13 @@ impl Where {
             }
             && (!self.compat_only || lang.allows(Feature::CompatibilityInterface))
             && (!self.core_only || !lang.allows(Feature::CompatibilityInterface))
+            && (!self.ext_gs || lang.ext_geometry_shader4())
     }
 }
 
 const COMPAT: Where = Where::ALL.compat();
+/// GL_EXT_geometry_shader4's geometry stage (before GLSL 1.50).
+const EXT_GS: Where = Where::ALL.gs().ext_gs();
 const VS: Where = Where::ALL.vs();
 const FS: Where = Where::ALL.fs();
 const V120: Version = Version::V120;
@@ -168,6 +192,9 @@ const V330: Version = Version::V330;
 /// A built-in constant: `const int NAME = VALUE;`.
 enum Item {
     Const(&'static str, u32),
+    /// `const int gl_VerticesIn`, whose value is the vertex count of the
+    /// program's input primitive (GL_EXT_geometry_shader4 §7.4).
+    VerticesIn,
     /// Declarations written out.
     Text(&'static str),
 }
@@ -558,6 +585,47 @@ varying vec4 gl_TexCoord[];
 varying float gl_FogFragCoord;",
             ),
         ),
+        // GL_EXT_geometry_shader4 §7.1, §7.4, §7.6: the geometry stage
+        // before GLSL 1.50. The inputs are arrays with one element per
+        // vertex of the input primitive: unsized here, sized by the
+        // analyzer from the input primitive as user inputs are (the
+        // extension writes `[gl_VerticesIn]', the same size). The
+        // outputs are the vertex stage's.
+        (EXT_GS, Item::VerticesIn),
+        (
+            EXT_GS,
+            Text(
+                "varying in vec4 gl_PositionIn[];
+varying in float gl_PointSizeIn[];
+varying in int gl_PrimitiveIDIn;
+vec4 gl_Position;
+float gl_PointSize;
+varying int gl_PrimitiveID;
+varying int gl_Layer;",
+            ),
+        ),
+        (
+            EXT_GS.compat(),
+            Text(
+                "varying in vec4 gl_ClipVertexIn[];
+varying in vec4 gl_FrontColorIn[];
+varying in vec4 gl_BackColorIn[];
+varying in vec4 gl_FrontSecondaryColorIn[];
+varying in vec4 gl_BackSecondaryColorIn[];
+varying in float gl_FogFragCoordIn[];
+vec4 gl_ClipVertex;
+varying vec4 gl_FrontColor;
+varying vec4 gl_BackColor;
+varying vec4 gl_FrontSecondaryColor;
+varying vec4 gl_BackSecondaryColor;
+varying vec4 gl_TexCoord[];
+varying float gl_FogFragCoord;",
+            ),
+        ),
+        (
+            Where::since(V130).gs().ext_gs(),
+            Text("float gl_ClipDistance[];"),
+        ),
     ]
 };
 
@@ -783,6 +851,8 @@ const FUNCTIONS: &[(Where, &str)] = &[
     // §8.10 geometry shader functions
     (Where::since(V150).gs(), "void EmitVertex()"),
     (Where::since(V150).gs(), "void EndPrimitive()"),
+    (EXT_GS, "void EmitVertex()"),
+    (EXT_GS, "void EndPrimitive()"),
 ];
 
 /// The explicit-LOD lookups of 1.10 and 1.20: vertex shaders only (and
@@ -981,7 +1051,7 @@ const SAMPLERS: &[SamplerRow] = {
 /// `uvec4`).
 const G_PREFIXES: &[&str] = &["", "i", "u"];
 
-fn build(lang: Language, stage: Stage) -> String {
+fn build(lang: Language, stage: Stage, input: InputPrimitive) -> String {
     let version = lang.version;
     let mut out = String::with_capacity(48 * 1024);
     // The preprocessor classifies keywords by the `#version` it sees, so the
@@ -1005,6 +1075,9 @@ fn build(lang: Language, stage: Stage) -> String {
         match item {
             Item::Const(name, value) => {
                 let _ = writeln!(out, "const int {name} = {value};");
+            }
+            Item::VerticesIn => {
+                let _ = writeln!(out, "const int gl_VerticesIn = {};", input.vertices());
             }
             Item::Text(text) => {
                 out.push_str(text);

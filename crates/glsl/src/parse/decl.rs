@@ -5,6 +5,7 @@
 
 use super::{PResult, Parser, Reported};
 use crate::ast::*;
+use crate::diag::{Code, Diagnostic};
 use crate::source::Span;
 use crate::token::{Keyword, Punct, TokenKind};
 
@@ -523,6 +524,33 @@ impl Parser<'_> {
         } else {
             None
         };
+        if array.is_some() && self.at_punct(Punct::LeftBracket) {
+            // GL_EXT_geometry_shader4 allows one kind of two-dimensional
+            // array, `varying in float v[][N];' (a vertex shader's array
+            // output, per input vertex); the type system has one array
+            // level, so it is refused with that said, and the declarator
+            // kept with its first size.
+            let extra = self.array_spec()?;
+            let d = if self.lang.ext_geometry_shader4() {
+                Diagnostic::error(
+                    Code::Unsupported,
+                    extra.span,
+                    format!("`{}' has two array sizes: arrays of arrays are not supported", name.name),
+                )
+                .with_note("GL_EXT_geometry_shader4's two-dimensional `varying in' arrays (a vertex shader's array outputs, and `gl_TexCoordIn[][]') are not implemented by shaderbox")
+            } else {
+                Diagnostic::error(
+                    Code::Syntax,
+                    extra.span,
+                    format!(
+                        "`{}' has two array sizes: GLSL {} has no arrays of arrays",
+                        name.name,
+                        self.lang.version.dotted()
+                    ),
+                )
+            };
+            self.diags.push(d);
+        }
         let init = if self.eat_punct(Punct::Equal) {
             Some(*self.assignment()?)
         } else {

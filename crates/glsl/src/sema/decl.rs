@@ -130,6 +130,37 @@ impl Analyzer {
             // may not.
             Some(Storage::Attribute | Storage::Varying | Storage::GeometryInput)
                 if self.builtin_mode => {}
+            Some(Storage::GeometryInput) if self.lang.ext_geometry_shader4() => {
+                // GL_EXT_geometry_shader4 §4.3.6: the types of varyings
+                // (1.30 adds the integer ones), one element per input
+                // vertex.
+                if !(float_based || (v130 && int_based)) {
+                    let allowed = if v130 {
+                        "float, int or uint scalars, vectors or float matrices"
+                    } else {
+                        "float, vec or mat"
+                    };
+                    self.error(
+                        Code::TypeMismatch,
+                        d.name.span,
+                        format!("geometry input `{name}' has type {tn}; inputs must be arrays of {allowed}"),
+                    );
+                } else if !ty.is_array() {
+                    // As written: `varying in', or `in' from GLSL 1.30 on.
+                    let kw = if q.storage_span.end.saturating_sub(q.storage_span.start) > 2 {
+                        "varying in"
+                    } else {
+                        "in"
+                    };
+                    self.error(
+                        Code::TypeMismatch,
+                        d.name.span,
+                        format!("geometry shader input `{name}' must be an array: `{kw} {tn} {name}[];'"),
+                    )
+                    .notes
+                    .push("GL_EXT_geometry_shader4 §4.3.6: a geometry shader has one input per vertex of its primitive; the program's GEOMETRY_INPUT_TYPE sizes the array (gl_VerticesIn elements)".into());
+                }
+            }
             Some(Storage::GeometryInput) => {
                 // GLSL 1.50 §4.3.4: the types of outputs, one element per
                 // input vertex.

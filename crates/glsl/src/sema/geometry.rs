@@ -3,6 +3,11 @@
 //! which sizes every input array (declared before or after it);
 //! `layout(triangle_strip, max_vertices = N) out;` the output primitive
 //! and the vertex count. They are recorded in [`ir::Module::geometry`].
+//!
+//! GL_EXT_geometry_shader4's form (before 1.50) has no layouts: the input
+//! primitive is the program's GEOMETRY_INPUT_TYPE, which `sema::analyze`
+//! records before the first declaration ([`crate::sema::Context`]), so
+//! every input array is sized as it is declared.
 
 use super::Analyzer;
 use crate::diag::Code;
@@ -41,6 +46,20 @@ impl Analyzer {
     /// `layout(...) in;` (`input`) or `layout(...) out;` of a geometry
     /// shader.
     pub(crate) fn geometry_layout(&mut self, q: &VarQuals, input: bool) {
+        if self.lang.ext_geometry_shader4() {
+            let span = q.layout.span.unwrap_or(q.storage_span);
+            self.error(
+                Code::BadQualifier,
+                span,
+                format!(
+                    "a GL_EXT_geometry_shader4 geometry shader has no `layout(...) {}'",
+                    if input { "in;" } else { "out;" }
+                ),
+            )
+            .notes
+            .push("its primitives and vertex count are the program's: glProgramParameteriEXT with GL_GEOMETRY_INPUT_TYPE_EXT, GL_GEOMETRY_OUTPUT_TYPE_EXT and GL_GEOMETRY_VERTICES_OUT_EXT; or write `#version 150' and the layouts".into());
+            return;
+        }
         let l = &q.layout;
         let others = [
             l.location.map(|(_, s)| s),
@@ -217,12 +236,21 @@ impl Analyzer {
         match (g.ty.array, self.geometry_input_size()) {
             (Some(ArraySize::Unsized), Some(n)) => self.resize_geometry_input(id, n),
             (Some(ArraySize::Sized(len)), Some(n)) if len != n => {
-                let p = self.module.geometry.input.map_or("", InputPrimitive::name);
-                self.error(
-                    Code::BadArraySize,
-                    span,
-                    format!("input `{name}' has {len} elements, but `layout({p}) in;' gives input arrays {n}"),
-                );
+                let p = self.module.geometry.input.unwrap_or(InputPrimitive::Points);
+                let msg = if self.lang.ext_geometry_shader4() {
+                    format!(
+                        "input `{name}' has {len} elements, but input primitives of type {} have {n} vertices (gl_VerticesIn)",
+                        p.gl_name()
+                    )
+                } else {
+                    format!(
+                        "input `{name}' has {len} elements, but `layout({}) in;' gives input arrays {n}",
+                        p.name()
+                    )
+                };
+                self.error(Code::BadArraySize, span, msg)
+                    .notes
+                    .push("an input array has one element per vertex of the input primitive; leave the size out (`[]') to take it".into());
             }
             (Some(ArraySize::Sized(len)), None) => match &self.geometry_input_len {
                 Some((first, other)) if *first != len => {

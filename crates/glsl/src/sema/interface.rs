@@ -133,6 +133,13 @@ impl Analyzer {
                 | Qualifier::In
                 | Qualifier::Out
                 | Qualifier::Inout => {
+                    let after_varying = i > 0
+                        && quals[i - 1].qualifier == Qualifier::Varying
+                        && q.storage == Some(Qualifier::Varying);
+                    if after_varying && sq.qualifier != Qualifier::Inout {
+                        self.varying_in_out(sq, quals[i - 1].span, &mut q);
+                        continue;
+                    }
                     if matches!(
                         sq.qualifier,
                         Qualifier::In | Qualifier::Out | Qualifier::Inout
@@ -281,6 +288,47 @@ impl Analyzer {
         }
         self.stage_qualifiers(&mut q, quals);
         q
+    }
+
+    /// `varying in` / `varying out` (`sq` is the `in` or `out`): a
+    /// GL_EXT_geometry_shader4 geometry shader's input and output, the
+    /// same as `in` and `out` in a geometry shader of 1.30 and later.
+    fn varying_in_out(&mut self, sq: &SpannedQualifier, varying: Span, q: &mut VarQuals) {
+        let what = format!("varying {}", sq.qualifier.as_str());
+        let span = varying.to(sq.span);
+        if self.stage == Stage::Geometry && self.lang.ext_geometry_shader4() {
+            q.storage = Some(sq.qualifier);
+            q.storage_span = span;
+            return;
+        }
+        if self.stage != Stage::Geometry {
+            let note = if self.stage == Stage::Vertex {
+                "a vertex shader's outputs are `varying'; a geometry shader reads them as `varying in' arrays"
+            } else {
+                "a fragment shader's inputs are `varying'"
+            };
+            self.error(
+                Code::StageMismatch,
+                span,
+                format!("`{what}' is only allowed in geometry shaders (GL_EXT_geometry_shader4)"),
+            )
+            .notes
+            .push(note.into());
+        } else if self.lang.version >= crate::lang::Version::V150 {
+            self.error(
+                Code::BadQualifier,
+                span,
+                format!("`{what}' is GL_EXT_geometry_shader4's form; a GLSL {} geometry shader writes `{}'", self.lang.version.dotted(), sq.qualifier.as_str()),
+            )
+            .notes
+            .push("inputs: `in vec4 v[];' sized by `layout(triangles) in;'; outputs: `out vec4 v;'".into());
+        } else {
+            self.error(
+                Code::VersionTooLow,
+                span,
+                format!("`{what}' needs `#extension GL_EXT_geometry_shader4 : enable' (or GL_ARB_geometry_shader4)"),
+            );
+        }
     }
 
     /// `in`/`out`/`inout` where a global storage qualifier is not allowed.

@@ -54,13 +54,25 @@ pub struct Context {
     pub extensions: Vec<ExtensionDirective>,
     /// `#pragma STDGL invariant(all)`: every output is invariant.
     pub invariant_all: bool,
+    /// A GL_EXT_geometry_shader4 geometry shader's input primitive (the
+    /// program's GEOMETRY_INPUT_TYPE): it sizes the input arrays and gives
+    /// `gl_VerticesIn` its value. `None` is GL_TRIANGLES, the parameter's
+    /// initial value. Ignored by every other language and stage.
+    pub geometry_input: Option<ir::InputPrimitive>,
 }
 
 /// Analyzes one shader. The module is complete only when no error was
 /// reported; with errors it is a best effort (error types inside).
 pub fn analyze(tu: &TranslationUnit, ctx: &Context) -> (Module, Vec<Diagnostic>) {
-    let env = builtin_env(ctx.language, ctx.stage);
+    let ext_gs = ctx.stage == Stage::Geometry && ctx.language.ext_geometry_shader4();
+    let input = ctx.geometry_input.unwrap_or(ir::InputPrimitive::Triangles);
+    let env = builtin_env_for_input(ctx.language, ctx.stage, input);
     let mut a = Analyzer::new(ctx.language, ctx.stage, Some(env));
+    if ext_gs {
+        // The EXT form has no input layout: the primitive is known from
+        // the first line, so every input array is sized as it is declared.
+        a.module.geometry.input = Some(input);
+    }
     a.module.extensions = ctx
         .extensions
         .iter()
@@ -136,30 +148,43 @@ impl BuiltinEnv {
 /// per combination (there are few: versions × profiles × stages × the
 /// extension sets shaders enable) and then shared.
 pub(crate) fn builtin_env(lang: Language, stage: Stage) -> &'static BuiltinEnv {
-    type Cache = Mutex<HashMap<(Language, Stage), &'static BuiltinEnv>>;
+    builtin_env_for_input(lang, stage, ir::InputPrimitive::Triangles)
+}
+
+/// [`builtin_env`] of a GL_EXT_geometry_shader4 geometry shader whose
+/// program takes `input` primitives (`gl_VerticesIn`'s value); the same
+/// as `builtin_env` for every other language and stage.
+pub(crate) fn builtin_env_for_input(
+    lang: Language,
+    stage: Stage,
+    input: ir::InputPrimitive,
+) -> &'static BuiltinEnv {
+    type Key = (Language, Stage, Option<ir::InputPrimitive>);
+    type Cache = Mutex<HashMap<Key, &'static BuiltinEnv>>;
+    let input = (stage == Stage::Geometry && lang.ext_geometry_shader4()).then_some(input);
+    let key = (lang, stage, input);
     static CACHE: OnceLock<Cache> = OnceLock::new();
     let cache = CACHE.get_or_init(Default::default);
-    if let Some(env) = cache
-        .lock()
-        .unwrap_or_else(|e| e.into_inner())
-        .get(&(lang, stage))
-    {
+    if let Some(env) = cache.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
         return env;
     }
     // Built outside the lock: the prelude's analysis may itself look up
     // other environments (availability notes are not made in built-in
     // mode, but nothing here should rely on that).
-    let env: &'static BuiltinEnv = Box::leak(Box::new(build_env(lang, stage)));
+    let env: &'static BuiltinEnv = Box::leak(Box::new(build_env(lang, stage, input)));
     cache
         .lock()
         .unwrap_or_else(|e| e.into_inner())
-        .entry((lang, stage))
+        .entry(key)
         .or_insert(env)
 }
 
 /// Parses and analyzes the prelude text in built-in mode.
-fn build_env(lang: Language, stage: Stage) -> BuiltinEnv {
-    let text = crate::builtins::prelude(lang, stage);
+fn build_env(lang: Language, stage: Stage, input: Option<ir::InputPrimitive>) -> BuiltinEnv {
+    let text = match input {
+        Some(p) => crate::builtins::prelude_for_input(lang, stage, p),
+        None => crate::builtins::prelude(lang, stage),
+    };
     let mut map = SourceMap::new("<built-ins>", text);
     let mut opts = crate::pp::PpOptions::new(stage);
     // The prelude's own #version is never refused: GLSL 1.10/1.20 exist
@@ -548,6 +573,14 @@ impl Analyzer {
             return None;
         }
         let found = |lang: Language, stage: Stage| builtin_env(lang, stage).lookup(name).is_some();
+        // GL_EXT_geometry_shader4's built-ins (`gl_PositionIn'...): in a
+        // geometry shader before "a later version has it", the other way
+        // to get them; in other stages after every other explanation.
+        if self.stage == Stage::Geometry {
+            if let Some(note) = self.ext_geometry_note(name) {
+                return Some(note);
+            }
+        }
         // A later version of the same profile has it.
         let later = Version::ALL
             .into_iter()
@@ -600,7 +633,30 @@ impl Analyzer {
                 ));
             }
         }
-        None
+        self.ext_geometry_note(name)
+    }
+
+    /// The note for a GL_EXT_geometry_shader4 built-in used where the
+    /// extension's geometry stage is not.
+    fn ext_geometry_note(&self, name: &str) -> Option<(Code, String)> {
+        if self.lang.version >= Version::V150 || self.lang.ext_geometry_shader4() {
+            return None;
+        }
+        let mut ext = self.lang;
+        ext.extensions
+            .set(crate::lang::Extension::ExtGeometryShader4, true);
+        builtin_env(ext, Stage::Geometry).lookup(name)?;
+        Some(if self.stage == Stage::Geometry {
+            (
+                Code::VersionTooLow,
+                format!("`{name}' is a built-in of GL_EXT_geometry_shader4: add `#extension GL_EXT_geometry_shader4 : enable' after `#version'"),
+            )
+        } else {
+            (
+                Code::StageMismatch,
+                format!("`{name}' is only available in geometry shaders (GL_EXT_geometry_shader4)"),
+            )
+        })
     }
 }
 
@@ -657,6 +713,8 @@ pub(crate) fn const_expr(value: ConstValue, span: Span) -> ir::Expr {
     }
 }
 
+#[cfg(test)]
+mod ext_geometry_tests;
 #[cfg(test)]
 mod geometry_tests;
 #[cfg(test)]
