@@ -106,6 +106,25 @@ gl_entry_points! {
     fn glFramebufferTexture(
         target: GLenum, attachment: GLenum, texture: GLuint, level: GLint
     ) => |c| { c.gl.framebuffer_texture(target, attachment, texture, level) }
+    // GL_ARB_geometry_shader4 / GL_EXT_geometry_shader4.
+    fn glFramebufferTextureARB(
+        target: GLenum, attachment: GLenum, texture: GLuint, level: GLint
+    ) => |c| { c.gl.framebuffer_texture(target, attachment, texture, level) }
+    fn glFramebufferTextureEXT(
+        target: GLenum, attachment: GLenum, texture: GLuint, level: GLint
+    ) => |c| { c.gl.framebuffer_texture(target, attachment, texture, level) }
+    fn glFramebufferTextureLayerARB(
+        target: GLenum, attachment: GLenum, texture: GLuint, level: GLint, layer: GLint
+    ) => |c| { c.gl.framebuffer_texture_layer(target, attachment, texture, level, layer) }
+    fn glFramebufferTextureLayerEXT(
+        target: GLenum, attachment: GLenum, texture: GLuint, level: GLint, layer: GLint
+    ) => |c| { c.gl.framebuffer_texture_layer(target, attachment, texture, level, layer) }
+    fn glFramebufferTextureFaceARB(
+        target: GLenum, attachment: GLenum, texture: GLuint, level: GLint, face: GLenum
+    ) => |c| { c.gl.framebuffer_texture_face(target, attachment, texture, level, face) }
+    fn glFramebufferTextureFaceEXT(
+        target: GLenum, attachment: GLenum, texture: GLuint, level: GLint, face: GLenum
+    ) => |c| { c.gl.framebuffer_texture_face(target, attachment, texture, level, face) }
     fn glIsRenderbuffer(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_renderbuffer(name) as GLboolean }
     fn glIsRenderbufferEXT(name: GLuint) -> GLboolean [0] => |c| { c.gl.is_renderbuffer(name) as GLboolean }
     fn glGetRenderbufferParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) => |c| {

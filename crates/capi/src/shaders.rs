@@ -99,6 +99,16 @@ gl_entry_points! {
     fn glAttachShader(program: GLuint, shader: GLuint) => |c| { c.gl.attach_shader(program, shader) }
     fn glDetachShader(program: GLuint, shader: GLuint) => |c| { c.gl.detach_shader(program, shader) }
     fn glLinkProgram(program: GLuint) => |c| { c.gl.link_program(program) }
+    // GL_ARB_geometry_shader4 / GL_EXT_geometry_shader4 (and GL 4.1's name).
+    fn glProgramParameteri(program: GLuint, pname: GLenum, value: GLint) => |c| {
+        c.gl.program_parameteri(program, pname, value)
+    }
+    fn glProgramParameteriARB(program: GLuint, pname: GLenum, value: GLint) => |c| {
+        c.gl.program_parameteri(program, pname, value)
+    }
+    fn glProgramParameteriEXT(program: GLuint, pname: GLenum, value: GLint) => |c| {
+        c.gl.program_parameteri(program, pname, value)
+    }
     fn glValidateProgram(program: GLuint) => |c| { c.gl.validate_program(program) }
     [list] fn glUseProgram(program: GLuint) => |c| { c.gl.use_program(program) }
     fn glGetProgramiv(program: GLuint, pname: GLenum, params: *mut GLint) => |c| {

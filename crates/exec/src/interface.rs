@@ -85,9 +85,11 @@ impl Interface {
     /// A geometry kernel's per-vertex inputs (its input arrays, one
     /// element per vertex of the input primitive): the members of
     /// `gl_in[]` by member name, each element of a user array by the
-    /// array's name, each member of an arrayed input block (slots named
-    /// `Block[i].member`) as `Block.member`. Inputs that are not arrays
-    /// (`gl_PrimitiveIDIn`) are not listed.
+    /// array's name (GL_EXT_geometry_shader4's built-in arrays by the
+    /// output they take: `gl_PositionIn` is `gl_Position`...), each
+    /// member of an arrayed input block (slots named `Block[i].member`)
+    /// as `Block.member`. Inputs that are not arrays (`gl_PrimitiveIDIn`)
+    /// are not listed.
     pub fn vertex_inputs(&self) -> Vec<VertexInput> {
         let mut out = Vec::new();
         for slot in &self.inputs {
@@ -131,7 +133,7 @@ impl Interface {
                     }
                     _ => out.push(VertexInput {
                         vertex,
-                        name: slot.link_name().into_owned(),
+                        name: per_vertex_name(&slot.link_name()).to_string(),
                         offset: at,
                         components: per,
                     }),
@@ -139,6 +141,16 @@ impl Interface {
             }
         }
         out
+    }
+}
+
+/// The vertex output a geometry input array takes: GL_EXT_geometry_shader4
+/// names its built-in inputs after the outputs with `In` appended
+/// (`gl_PositionIn[]`, `gl_FrontColorIn[]`...).
+fn per_vertex_name(input: &str) -> &str {
+    match input.strip_suffix("In") {
+        Some(output) if input.starts_with("gl_") => output,
+        _ => input,
     }
 }
 

@@ -74,36 +74,6 @@ impl Context {
         self.check_fbo_complete()
     }
 
-    /// Whether the current program's geometry stage, if it has one,
-    /// takes the primitives of `mode` (GL 3.3 §2.12.1, "Primitive Type
-    /// Mismatches and Drawing Commands").
-    fn geometry_takes(&self, mode: u32) -> bool {
-        use glsl::ir::InputPrimitive as I;
-        let input = self
-            .programs
-            .get(&self.current_program)
-            .and_then(|p| p.exe.as_ref().filter(|_| p.link_status))
-            .and_then(|e| e.program.stage(glsl::Stage::Geometry))
-            .map(|g| g.module.geometry.input);
-        match input {
-            None => true,
-            Some(input) => match input {
-                Some(I::Points) => mode == GL_POINTS,
-                Some(I::Lines) => matches!(mode, GL_LINES | GL_LINE_STRIP | GL_LINE_LOOP),
-                Some(I::LinesAdjacency) => {
-                    matches!(mode, GL_LINES_ADJACENCY | GL_LINE_STRIP_ADJACENCY)
-                }
-                Some(I::Triangles) => {
-                    matches!(mode, GL_TRIANGLES | GL_TRIANGLE_STRIP | GL_TRIANGLE_FAN)
-                }
-                Some(I::TrianglesAdjacency) => {
-                    matches!(mode, GL_TRIANGLES_ADJACENCY | GL_TRIANGLE_STRIP_ADJACENCY)
-                }
-                None => false,
-            },
-        }
-    }
-
     pub(crate) fn check_fbo_complete(&mut self) -> bool {
         let fb = self.objects.draw_framebuffer;
         if self.framebuffer_status(fb) != GL_FRAMEBUFFER_COMPLETE {

@@ -542,10 +542,11 @@ impl Context {
         );
     }
 
-    /// glFramebufferTexture: level `level` of a texture; of a 3D, cube map
-    /// or array texture the whole level, a layered attachment (GL 3.3
-    /// §4.4.2, §4.4.7), which draws into layer 0 (there is no geometry
-    /// stage to choose another).
+    /// glFramebufferTexture (and glFramebufferTextureEXT/ARB): level
+    /// `level` of a texture; of a 3D, cube map or array texture the whole
+    /// level, a layered attachment (GL 3.3 §4.4.2, §4.4.7), whose layer a
+    /// geometry stage's gl_Layer chooses (`crate::layered`; layer 0
+    /// without one).
     pub fn framebuffer_texture(&mut self, target: u32, attachment: u32, texture: u32, level: i32) {
         let Some(fb) = self.texture_attachment_slot(target, attachment, texture) else {
             return;
@@ -583,6 +584,38 @@ impl Context {
                 layered,
             }),
         );
+    }
+
+    /// glFramebufferTextureFaceEXT/ARB (GL_ARB_geometry_shader4): face
+    /// `face` of level `level` of a cube map texture, as
+    /// glFramebufferTexture2D attaches it; GL_INVALID_OPERATION for
+    /// another kind of texture, GL_INVALID_ENUM for a face that is none.
+    pub fn framebuffer_texture_face(
+        &mut self,
+        target: u32,
+        attachment: u32,
+        texture: u32,
+        level: i32,
+        face: u32,
+    ) {
+        if texture != 0 {
+            if !(GL_TEXTURE_CUBE_MAP_POSITIVE_X..=GL_TEXTURE_CUBE_MAP_NEGATIVE_Z).contains(&face) {
+                self.set_error(GL_INVALID_ENUM);
+                return;
+            }
+            match self.objects.textures.get(&texture).map(|t| t.target) {
+                None => {
+                    self.set_error(GL_INVALID_VALUE);
+                    return;
+                }
+                Some(GL_TEXTURE_CUBE_MAP) => {}
+                Some(_) => {
+                    self.set_error(GL_INVALID_OPERATION);
+                    return;
+                }
+            }
+        }
+        self.framebuffer_texture_2d(target, attachment, face, texture, level);
     }
 
     /// glFramebufferTexture1D(EXT).

@@ -228,8 +228,15 @@ impl Context {
             self.set_error(GL_INVALID_OPERATION);
             return;
         }
-        if mode > GL_POLYGON {
+        // The adjacency modes come with geometry shaders
+        // (GL_EXT_geometry_shader4 adds them to glBegin).
+        let adjacency = (GL_LINES_ADJACENCY..=GL_TRIANGLE_STRIP_ADJACENCY).contains(&mode);
+        if mode > GL_POLYGON && !(adjacency && self.has_geometry_shaders()) {
             self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        if !self.geometry_takes(mode) {
+            self.set_error(GL_INVALID_OPERATION);
             return;
         }
         // The mode must make transform feedback's primitives while it

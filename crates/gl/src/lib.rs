@@ -106,6 +106,7 @@ pub mod fetch;
 pub mod ff_fragment;
 pub mod ffgen;
 pub mod framebuffer;
+mod geometry_program;
 pub mod get;
 pub mod immediate;
 pub mod kernels;

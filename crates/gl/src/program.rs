@@ -100,6 +100,9 @@ pub struct ProgramObj {
     /// GL_INTERLEAVED_ATTRIBS), for the next link.
     pub feedback_names: Vec<String>,
     pub feedback_mode: u32,
+    /// glProgramParameteriEXT's geometry parameters (GL_EXT_geometry_shader4),
+    /// for the next link of an EXT-form geometry shader.
+    pub geometry: glsl::link::GeometryParams,
     pub link_status: bool,
     pub validate_status: bool,
     pub info_log: String,
@@ -392,7 +395,12 @@ impl Context {
         let linked = if p.attached.is_empty() {
             glsl::link::Program::default()
         } else {
-            glsl::link::link(&refs)
+            glsl::link::link_with(
+                &refs,
+                &glsl::link::LinkOptions {
+                    geometry: p.geometry,
+                },
+            )
         };
         let mut log = String::new();
         for s in &not_compiled {
@@ -518,12 +526,8 @@ impl Context {
 
     /// glGetProgramiv.
     pub fn get_programiv(&mut self, program: u32, pname: u32) -> i32 {
-        if matches!(
-            pname,
-            GL_GEOMETRY_VERTICES_OUT | GL_GEOMETRY_INPUT_TYPE | GL_GEOMETRY_OUTPUT_TYPE
-        ) && self.has_geometry_shaders()
-        {
-            return self.geometry_programiv(program, pname);
+        if let Some(v) = self.geometry_programiv(program, pname) {
+            return v;
         }
         let v = self.program_query(program, |p| {
             let uniforms = p
@@ -581,42 +585,6 @@ impl Context {
             })
         });
         self.iv_query(v)
-    }
-
-    /// glGetProgramiv's GL_GEOMETRY_VERTICES_OUT, GL_GEOMETRY_INPUT_TYPE
-    /// and GL_GEOMETRY_OUTPUT_TYPE: the linked geometry stage's layouts;
-    /// GL_INVALID_OPERATION for a program not linked or without a
-    /// geometry stage (GL 3.3 §6.1.16).
-    fn geometry_programiv(&mut self, program: u32, pname: u32) -> i32 {
-        let layout = match self.linked_exe(program) {
-            Some(e) => e.program.stage(Stage::Geometry).map(|g| g.module.geometry),
-            None => return 0,
-        };
-        let Some(g) = layout else {
-            self.set_error(GL_INVALID_OPERATION);
-            return 0;
-        };
-        use glsl::ir::{InputPrimitive as I, OutputPrimitive as O};
-        (match pname {
-            GL_GEOMETRY_VERTICES_OUT => g.max_vertices.unwrap_or(0),
-            GL_GEOMETRY_INPUT_TYPE => match g.input {
-                Some(I::Points) => GL_POINTS,
-                Some(I::Lines) => GL_LINES,
-                Some(I::LinesAdjacency) => GL_LINES_ADJACENCY,
-                Some(I::Triangles) | None => GL_TRIANGLES,
-                Some(I::TrianglesAdjacency) => GL_TRIANGLES_ADJACENCY,
-            },
-            _ => match g.output {
-                Some(O::Points) => GL_POINTS,
-                Some(O::LineStrip) => GL_LINE_STRIP,
-                Some(O::TriangleStrip) | None => GL_TRIANGLE_STRIP,
-            },
-        }) as i32
-    }
-
-    /// Whether this context creates geometry shaders: GL 3.2 and later.
-    pub fn has_geometry_shaders(&self) -> bool {
-        self.api.at_least(3, 2)
     }
 
     /// glGetProgramInfoLog.

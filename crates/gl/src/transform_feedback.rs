@@ -324,17 +324,7 @@ impl Context {
     pub(crate) fn feedback_allows(&mut self, mode: u32) -> bool {
         // With a geometry stage its output primitive is what is captured
         // (GL 3.3 §2.16).
-        let emitted = self
-            .programs
-            .get(&self.current_program)
-            .and_then(|p| p.exe.as_ref().filter(|_| p.link_status))
-            .and_then(|e| e.program.stage(glsl::Stage::Geometry))
-            .and_then(|g| g.module.geometry.output)
-            .map(|o| match o {
-                glsl::ir::OutputPrimitive::Points => GL_POINTS,
-                glsl::ir::OutputPrimitive::LineStrip => GL_LINES,
-                glsl::ir::OutputPrimitive::TriangleStrip => GL_TRIANGLES,
-            });
+        let emitted = self.geometry_feedback_mode();
         let captured = emitted.unwrap_or_else(|| feedback_mode(mode));
         if self.feedback_active() && captured != self.feedback.mode {
             self.set_error(GL_INVALID_OPERATION);

@@ -126,6 +126,10 @@ impl Api {
         if self.at_least(3, 1) && self.profile == Profile::Compatibility {
             v.push("GL_ARB_compatibility");
         }
+        // The extension form of geometry shaders, on GLSL 1.10-1.40.
+        if self.profile == Profile::Compatibility {
+            v.extend(["GL_ARB_geometry_shader4", "GL_EXT_geometry_shader4"]);
+        }
         v
     }
 

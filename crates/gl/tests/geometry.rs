@@ -118,10 +118,18 @@ fn geometry_queries_need_a_geometry_stage() {
     let (mut ctx, p) = setup(&[(GL_VERTEX_SHADER, VS), (GL_FRAGMENT_SHADER, fs)], &[]);
     assert_eq!(ctx.get_programiv(p, GL_GEOMETRY_VERTICES_OUT), 0);
     assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
-    // A 2.1 context has no geometry shaders of the core form.
+    // A 2.1 context creates geometry shaders (GL_EXT_geometry_shader4)
+    // but has no GL 3.2 queries.
     let mut old = Context::with_api(W, H, Api::GL21);
-    assert_eq!(old.create_shader(GL_GEOMETRY_SHADER), 0);
+    assert_ne!(old.create_shader(GL_GEOMETRY_SHADER_EXT), 0);
+    let p = old.create_program();
+    assert_eq!(old.get_programiv(p, GL_GEOMETRY_VERTICES_OUT), 0);
     assert_eq!(old.get_error(), GL_INVALID_ENUM);
+    // Nor does a core context have the extension's parameters.
+    let mut core = Context::with_api(W, H, Api::GL33_CORE);
+    let p = core.create_program();
+    core.program_parameteri(p, GL_GEOMETRY_VERTICES_OUT_EXT, 3);
+    assert_eq!(core.get_error(), GL_INVALID_ENUM);
 }
 
 /// Strips are cut by `EndPrimitive`, emission past `max_vertices` is
@@ -359,4 +367,102 @@ void main() {
             }
         }
     }
+}
+
+/// The seed lecture's "Simple Program" (GL_EXT_geometry_shader4 on a GL
+/// 2.1 context): the program parameters set with GL 3.2's names as the
+/// lecture passes them, the vertex count the implementation's maximum,
+/// a pass-through geometry shader of its "Simple Coloring Faces" pair;
+/// front faces take their colour, back faces black.
+#[test]
+fn the_seed_lecture_program_on_a_2_1_context() {
+    let vs = "// vertex shader
+void main(void)
+{
+ gl_Position = gl_ModelViewProjectionMatrix*gl_Vertex;
+ gl_FrontColor = gl_Color;
+ gl_BackColor = vec4(0,0,0,0); // black for backface
+}";
+    let gs = "#version 120
+#extension GL_EXT_geometry_shader4 : enable
+void main()
+{
+    for (int i = 0; i < gl_VerticesIn; i++) {
+        gl_Position = gl_PositionIn[i];
+        gl_FrontColor = gl_FrontColorIn[i];
+        gl_BackColor = gl_BackColorIn[i];
+        EmitVertex();
+    }
+    EndPrimitive();
+}";
+    let fs = "// fragment shader
+void main(void)
+{
+ gl_FragColor = gl_Color;
+}";
+    let mut ctx = Context::with_api(W, H, Api::GL21);
+    assert!(ctx
+        .get_string(GL_EXTENSIONS)
+        .contains("GL_EXT_geometry_shader4"));
+    let mut shader = |ctx: &mut Context, kind: u32, src: &str| {
+        let s = ctx.create_shader(kind);
+        ctx.shader_source(s, &[src]);
+        ctx.compile_shader(s);
+        assert_eq!(
+            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
+            1,
+            "{}",
+            ctx.get_shader_info_log(s)
+        );
+        s
+    };
+    let v = shader(&mut ctx, GL_VERTEX_SHADER, vs);
+    let g = shader(&mut ctx, GL_GEOMETRY_SHADER_EXT, gs);
+    let f = shader(&mut ctx, GL_FRAGMENT_SHADER, fs);
+    let p = ctx.create_program();
+    ctx.attach_shader(p, f);
+    ctx.attach_shader(p, v);
+    ctx.attach_shader(p, g);
+    ctx.program_parameteri(p, GL_GEOMETRY_INPUT_TYPE, GL_TRIANGLES as i32);
+    ctx.program_parameteri(p, GL_GEOMETRY_OUTPUT_TYPE, GL_TRIANGLE_STRIP as i32);
+    let max = ctx.get_integerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES_EXT)[0];
+    assert_eq!(max, 256);
+    ctx.program_parameteri(p, GL_GEOMETRY_VERTICES_OUT_EXT, max);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(ctx.get_programiv(p, GL_GEOMETRY_VERTICES_OUT_EXT), 256);
+    assert_eq!(
+        ctx.get_programiv(p, GL_GEOMETRY_INPUT_TYPE_EXT),
+        GL_TRIANGLES as i32
+    );
+    ctx.link_program(p);
+    assert_eq!(
+        ctx.get_programiv(p, GL_LINK_STATUS),
+        1,
+        "{}",
+        ctx.get_program_info_log(p)
+    );
+    ctx.use_program(p);
+    ctx.enable(GL_VERTEX_PROGRAM_TWO_SIDE);
+    ctx.clear_color(0.0, 0.0, 1.0, 1.0);
+    ctx.clear(GL_COLOR_BUFFER_BIT);
+    // A counter-clockwise (front) red triangle on the left, a clockwise
+    // (back) one on the right.
+    ctx.begin(GL_TRIANGLES);
+    ctx.color_4f(1.0, 0.0, 0.0, 1.0);
+    for (x, y) in [(-1.0, -1.0), (0.0, -1.0), (-1.0, 1.0)] {
+        ctx.vertex_4f(x, y, 0.0, 1.0);
+    }
+    for (x, y) in [(0.0, -1.0), (0.0, 1.0), (1.0, -1.0)] {
+        ctx.vertex_4f(x, y, 0.0, 1.0);
+    }
+    ctx.end();
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(ctx.take_draw_error(), None);
+    let h = histogram(&mut ctx);
+    let count = |c: [u8; 4]| h.iter().find(|(k, _)| *k == c).map_or(0, |e| e.1);
+    assert_eq!(count([255, 0, 0, 255]), 256, "{h:?}");
+    assert_eq!(count([0, 0, 0, 0]), 256, "{h:?}");
+    // Points do not feed a triangles geometry stage.
+    ctx.begin(GL_POINTS);
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
 }
