@@ -404,7 +404,7 @@ void main(void)
     assert!(ctx
         .get_string(GL_EXTENSIONS)
         .contains("GL_EXT_geometry_shader4"));
-    let mut shader = |ctx: &mut Context, kind: u32, src: &str| {
+    let shader = |ctx: &mut Context, kind: u32, src: &str| {
         let s = ctx.create_shader(kind);
         ctx.shader_source(s, &[src]);
         ctx.compile_shader(s);
