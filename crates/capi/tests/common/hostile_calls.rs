@@ -555,7 +555,7 @@ pub unsafe fn call(input: &mut impl Choices, names: &mut Vec<u32>, bufs: &mut Bu
         98 => glCallList(n),
         _ => {
             let _ = glGetError();
-            let loc = glGetUniformLocation(n, b"col\0".as_ptr() as *const GLchar);
+            let loc = glGetUniformLocation(n, c"col".as_ptr());
             glUniform1i(loc, a);
             glGenerateMipmap(e);
         }
