@@ -46,39 +46,8 @@ unsafe fn context(buf: &mut Vec<u8>, profile: i32) -> OSMesaContext {
 /// Links `vs` and `fs`, makes the program current and sets up a
 /// full-window quad in a vertex array object (attribute `pos`).
 unsafe fn program_and_quad(vs: &str, fs: &str) -> u32 {
-    let prog = glCreateProgram();
-    for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
-        let s = glCreateShader(kind);
-        let (ptr, len) = (src.as_ptr() as *const GLchar, src.len() as GLint);
-        glShaderSource(s, 1, &ptr, &len);
-        glCompileShader(s);
-        let mut ok = 0;
-        glGetShaderiv(s, GL_COMPILE_STATUS, &mut ok);
-        assert_eq!(ok, 1, "{src}");
-        glAttachShader(prog, s);
-    }
-    glLinkProgram(prog);
-    let mut ok = 0;
-    glGetProgramiv(prog, GL_LINK_STATUS, &mut ok);
-    assert_eq!(ok, 1);
-    glUseProgram(prog);
-    let mut vao = 0;
-    glGenVertexArrays(1, &mut vao);
-    glBindVertexArray(vao);
-    let mut b = 0;
-    glGenBuffers(1, &mut b);
-    glBindBuffer(GL_ARRAY_BUFFER, b);
-    let quad: [f32; 8] = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
-    glBufferData(
-        GL_ARRAY_BUFFER,
-        32,
-        quad.as_ptr() as *const c_void,
-        GL_STATIC_DRAW,
-    );
-    let name = CString::new("pos").unwrap();
-    let p = glGetAttribLocation(prog, name.as_ptr()) as u32;
-    glVertexAttribPointer(p, 2, GL_FLOAT, 0, 0, std::ptr::null());
-    glEnableVertexAttribArray(p);
+    let prog = common::program(vs, fs);
+    common::quad_vertex_array(prog, "pos");
     prog
 }
 
@@ -336,14 +305,7 @@ fn dual_source_blending_through_the_c_abi() {
             out vec4 a;\n\
             out vec4 b;\n\
             void main() { a = vec4(1.0, 0.0, 0.0, 1.0); b = vec4(0.0, 1.0, 0.0, 1.0); }";
-        let prog = glCreateProgram();
-        for (kind, src) in [(GL_VERTEX_SHADER, VS), (GL_FRAGMENT_SHADER, fs)] {
-            let s = glCreateShader(kind);
-            let (ptr, len) = (src.as_ptr() as *const GLchar, src.len() as GLint);
-            glShaderSource(s, 1, &ptr, &len);
-            glCompileShader(s);
-            glAttachShader(prog, s);
-        }
+        let prog = common::attached(&[(GL_VERTEX_SHADER, VS), (GL_FRAGMENT_SHADER, fs)]);
         let (a, b) = (CString::new("a").unwrap(), CString::new("b").unwrap());
         glBindFragDataLocationIndexed(prog, 0, 0, a.as_ptr());
         glBindFragDataLocationIndexed(prog, 0, 1, b.as_ptr());

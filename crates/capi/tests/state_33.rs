@@ -106,11 +106,7 @@ fn per_buffer_state_clears_and_frag_data_locations() {
         // Fragment outputs: a binding places `b` on draw buffer 0.
         let p = glCreateProgram();
         let fs = "#version 130\nout vec4 a;\nout vec4 b;\nvoid main() { a = vec4(1.0); b = vec4(0.0, 0.0, 1.0, 1.0); }\n";
-        let sh = glCreateShader(GL_FRAGMENT_SHADER);
-        let (ptr, len) = (fs.as_ptr() as *const GLchar, fs.len() as GLint);
-        glShaderSource(sh, 1, &ptr, &len);
-        glCompileShader(sh);
-        glAttachShader(p, sh);
+        glAttachShader(p, common::shader(GL_FRAGMENT_SHADER, fs));
         let (a, b) = (CString::new("a").unwrap(), CString::new("b").unwrap());
         glBindFragDataLocation(p, 0, b.as_ptr());
         glLinkProgram(p);
@@ -136,11 +132,7 @@ fn transform_feedback_captures_points() {
         let ctx = compat_context(&mut buf);
         let p = glCreateProgram();
         let vs = "#version 130\nin float x;\nout float y;\nvoid main() { gl_Position = vec4(x); y = 2.0 * x; }\n";
-        let sh = glCreateShader(GL_VERTEX_SHADER);
-        let (ptr, len) = (vs.as_ptr() as *const GLchar, vs.len() as GLint);
-        glShaderSource(sh, 1, &ptr, &len);
-        glCompileShader(sh);
-        glAttachShader(p, sh);
+        glAttachShader(p, common::shader(GL_VERTEX_SHADER, vs));
         let x = CString::new("x").unwrap();
         glBindAttribLocation(p, 0, x.as_ptr());
         let names = [

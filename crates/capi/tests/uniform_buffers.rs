@@ -154,37 +154,16 @@ fn map_range_flush_copy_and_queries() {
     }
 }
 
-unsafe fn shader(kind: u32, src: &str) -> u32 {
-    let s = glCreateShader(kind);
-    let p = src.as_ptr() as *const GLchar;
-    let len = src.len() as GLint;
-    glShaderSource(s, 1, &p, &len);
-    glCompileShader(s);
-    let mut ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &mut ok);
-    assert_eq!(ok, 1);
-    s
-}
-
 #[test]
 fn uniform_block_draws_from_its_buffer() {
     unsafe {
         let mut buf = Vec::new();
         let ctx = context(&mut buf);
-        let vs = shader(
-            GL_VERTEX_SHADER,
+        let prog = common::program(
             "#version 150\nin vec4 pos;\nvoid main() { gl_Position = pos; }\n",
-        );
-        let fs = shader(
-            GL_FRAGMENT_SHADER,
             "#version 150\nuniform Tint { float pad; vec4 colour; } tint;\nout vec4 o;\n\
              void main() { o = tint.colour; }\n",
         );
-        let prog = glCreateProgram();
-        glAttachShader(prog, vs);
-        glAttachShader(prog, fs);
-        glLinkProgram(prog);
-        glUseProgram(prog);
         let idx = glGetUniformBlockIndex(prog, c"Tint".as_ptr());
         assert_eq!(idx, 0);
         assert_eq!(glGetUniformBlockIndex(prog, c"tint".as_ptr()), u32::MAX);
@@ -276,24 +255,12 @@ fn hostile_buffer_and_block_calls_never_crash() {
     unsafe {
         let mut buf = Vec::new();
         let ctx = context(&mut buf);
-        let vs = shader(
-            GL_VERTEX_SHADER,
+        let prog = common::program(
             "#version 150\nuniform V { mat4 m; float s[2]; };\nin vec4 pos;\n\
              void main() { gl_Position = m * pos * s[1]; }\n",
-        );
-        let fs = shader(
-            GL_FRAGMENT_SHADER,
             "#version 150\nuniform F { vec4 c; layout(row_major) mat3 r; } f[2];\nout vec4 o;\n\
              void main() { o = f[0].c + vec4(f[1].r[2], 0.0); }\n",
         );
-        let prog = glCreateProgram();
-        glAttachShader(prog, vs);
-        glAttachShader(prog, fs);
-        glLinkProgram(prog);
-        glUseProgram(prog);
-        let mut status = 0;
-        glGetProgramiv(prog, GL_LINK_STATUS, &mut status);
-        assert_eq!(status, 1);
         let quad: [f32; 8] = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
         glVertexAttribPointer(0, 2, GL_FLOAT, 0, 0, quad.as_ptr() as *const c_void);
         glEnableVertexAttribArray(0);
