@@ -28,10 +28,6 @@ const NAMES: &[&str] = &[
     "glEndConditionalRender",
 ];
 
-unsafe fn core_context(buf: &mut Vec<u8>) -> OSMesaContext {
-    common::current_context(buf, W, H, Some(OSMESA_CORE_PROFILE))
-}
-
 /// A program drawing `pos` in green, with a VAO holding a full-window
 /// triangle strip of 4 vertices bound.
 unsafe fn green_quad() {
@@ -54,9 +50,7 @@ fn entry_points_are_exported_by_name() {
 
 #[test]
 fn fences() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = core_context(&mut buf);
+    common::with_context(W, H, Some(OSMESA_CORE_PROFILE), |_| unsafe {
         let s = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
         assert!(!s.is_null());
         assert_eq!(glIsSync(s), 1);
@@ -87,15 +81,12 @@ fn fences() {
         assert_eq!(glGetError(), GL_NO_ERROR);
         assert!(glFenceSync(0, 0).is_null());
         assert_eq!(glGetError(), GL_INVALID_ENUM);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 #[test]
 fn queries_and_conditional_rendering() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = core_context(&mut buf);
+    common::with_context(W, H, Some(OSMESA_CORE_PROFILE), |_| unsafe {
         green_quad();
         let mut q = [0u32; 4];
         glGenQueries(4, q.as_mut_ptr());
@@ -141,6 +132,5 @@ fn queries_and_conditional_rendering() {
         assert_eq!(glGetError(), GL_INVALID_OPERATION);
         glBeginConditionalRender(q[1], GL_QUERY_WAIT);
         assert_eq!(glGetError(), GL_INVALID_OPERATION);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }

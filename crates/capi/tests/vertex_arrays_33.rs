@@ -93,10 +93,6 @@ const NAMES: &[&str] = &[
     "glMultiDrawElements",
 ];
 
-unsafe fn context(buf: &mut Vec<u8>) -> OSMesaContext {
-    common::current_context(buf, W, H, None)
-}
-
 /// The locations of [`VS`]'s attributes `corner`, `code` and `shift` in
 /// program `p`.
 unsafe fn attributes(p: u32) -> [u32; 3] {
@@ -134,9 +130,7 @@ fn every_new_entry_point_is_exported() {
 
 #[test]
 fn instanced_integer_attributes_from_a_vertex_array_object() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf);
+    common::with_context(W, H, None, |buf| unsafe {
         let p = common::program(VS, FS);
         let [corner, code, shift] = attributes(p);
         let mut vao = 0;
@@ -176,9 +170,9 @@ fn instanced_integer_attributes_from_a_vertex_array_object() {
         glDrawElementsInstanced(GL_TRIANGLE_STRIP, 4, GL_UNSIGNED_SHORT, null(), 2);
         assert_eq!(glGetError(), GL_NO_ERROR);
         glFinish();
-        assert_eq!(px(&buf, 2, 2), [0, 255, 0, 255]);
-        assert_eq!(px(&buf, 6, 2), [200, 0, 0, 255]);
-        assert_eq!(px(&buf, 10, 2), [0; 4]);
+        assert_eq!(px(buf, 2, 2), [0, 255, 0, 255]);
+        assert_eq!(px(buf, 6, 2), [200, 0, 0, 255]);
+        assert_eq!(px(buf, 10, 2), [0; 4]);
 
         // The default object: client memory, instanced too.
         glBindVertexArray(0);
@@ -192,9 +186,9 @@ fn instanced_integer_attributes_from_a_vertex_array_object() {
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, 3);
         assert_eq!(glGetError(), GL_NO_ERROR);
         glFinish();
-        assert_eq!(px(&buf, 2, 2), [10, 0, 0, 255]);
-        assert_eq!(px(&buf, 6, 2), [20, 0, 0, 255]);
-        assert_eq!(px(&buf, 10, 2), [0, 255, 0, 255]);
+        assert_eq!(px(buf, 2, 2), [10, 0, 0, 255]);
+        assert_eq!(px(buf, 6, 2), [20, 0, 0, 255]);
+        assert_eq!(px(buf, 10, 2), [0, 255, 0, 255]);
         // The object kept its state; each object answers for its own
         // pointers.
         glGetVertexAttribPointerv(code, GL_VERTEX_ATTRIB_ARRAY_POINTER, &mut ptr);
@@ -213,15 +207,12 @@ fn instanced_integer_attributes_from_a_vertex_array_object() {
         assert_eq!(v[0], 0);
         glBindVertexArray(vao);
         assert_eq!(glGetError(), GL_INVALID_OPERATION);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 #[test]
 fn base_vertex_restart_and_current_integer_values() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf);
+    common::with_context(W, H, None, |buf| unsafe {
         let p = common::program(VS, FS);
         let [corner, code, shift] = attributes(p);
         // Two copies of the square's corners, each with a shift: the
@@ -249,8 +240,8 @@ fn base_vertex_restart_and_current_integer_values() {
         );
         assert_eq!(glGetError(), GL_NO_ERROR);
         glFinish();
-        assert_eq!(px(&buf, 2, 2), [0; 4]);
-        assert_eq!(px(&buf, 10, 2), [0, 255, 0, 255]);
+        assert_eq!(px(buf, 2, 2), [0; 4]);
+        assert_eq!(px(buf, 10, 2), [0, 255, 0, 255]);
         // Restart: both squares from one strip list, without joining.
         glEnable(GL_PRIMITIVE_RESTART);
         glPrimitiveRestartIndex(0xffff);
@@ -265,9 +256,9 @@ fn base_vertex_restart_and_current_integer_values() {
         );
         assert_eq!(glGetError(), GL_NO_ERROR);
         glFinish();
-        assert_eq!(px(&buf, 2, 2), [50, 0, 0, 255]);
-        assert_eq!(px(&buf, 6, 2), [0; 4]);
-        assert_eq!(px(&buf, 10, 2), [50, 0, 0, 255]);
+        assert_eq!(px(buf, 2, 2), [50, 0, 0, 255]);
+        assert_eq!(px(buf, 6, 2), [0; 4]);
+        assert_eq!(px(buf, 10, 2), [50, 0, 0, 255]);
         let mut restart = 0u8;
         glGetBooleanv(GL_PRIMITIVE_RESTART, &mut restart);
         assert_eq!(restart, 1);
@@ -302,17 +293,14 @@ fn base_vertex_restart_and_current_integer_values() {
         );
         assert_eq!(glGetError(), GL_NO_ERROR);
         glFinish();
-        assert_eq!(px(&buf, 2, 2), [50, 0, 0, 255]);
-        assert_eq!(px(&buf, 10, 2), [50, 0, 0, 255]);
-        OSMesaDestroyContext(ctx);
-    }
+        assert_eq!(px(buf, 2, 2), [50, 0, 0, 255]);
+        assert_eq!(px(buf, 10, 2), [50, 0, 0, 255]);
+    });
 }
 
 #[test]
 fn errors_the_spec_names() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf);
+    common::with_context(W, H, None, |_| unsafe {
         glDrawArraysInstanced(GL_TRIANGLES, 0, 3, -1);
         assert_eq!(glGetError(), GL_INVALID_VALUE);
         glDrawElementsInstanced(GL_TRIANGLES, 3, GL_FLOAT, null(), 1);
@@ -365,6 +353,5 @@ fn errors_the_spec_names() {
         glDrawArraysInstanced(GL_TRIANGLES, 0, 3, 1);
         glEndList();
         assert_eq!(glGetError(), GL_INVALID_OPERATION);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }

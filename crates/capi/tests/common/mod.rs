@@ -187,3 +187,21 @@ pub unsafe fn quad_vertex_array(p: u32, name: &str) -> u32 {
     glEnableVertexAttribArray(loc);
     vao
 }
+
+/// Runs `body` with a context from [`current_context`] (`w`×`h`,
+/// `profile`) current, handing it the buffer the context renders into,
+/// then destroys the context.
+#[allow(dead_code)]
+pub fn with_context<R>(
+    w: i32,
+    h: i32,
+    profile: Option<i32>,
+    body: impl FnOnce(&mut Vec<u8>) -> R,
+) -> R {
+    let mut buf = Vec::new();
+    // SAFETY: `buf` outlives the context, destroyed below.
+    let ctx = unsafe { current_context(&mut buf, w, h, profile) };
+    let r = body(&mut buf);
+    unsafe { OSMesaDestroyContext(ctx) };
+    r
+}
