@@ -146,19 +146,7 @@ const QUAD_VS: &str = "#version 130\n\
     void main() { gl_Position = vec4(pos, 0.0, 1.0); }";
 
 fn quad_program(ctx: &mut Context, fs: &str, bind: &[(&str, u32)]) -> Result<u32, String> {
-    let p = ctx.create_program();
-    for (kind, src) in [(GL_VERTEX_SHADER, QUAD_VS), (GL_FRAGMENT_SHADER, fs)] {
-        let s = ctx.create_shader(kind);
-        ctx.shader_source(s, &[src]);
-        ctx.compile_shader(s);
-        assert_eq!(
-            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
-            1,
-            "{}",
-            ctx.get_shader_info_log(s)
-        );
-        ctx.attach_shader(p, s);
-    }
+    let p = common::attached(ctx, Some(QUAD_VS), Some(fs));
     ctx.bind_attrib_location(p, 0, "pos");
     for &(name, loc) in bind {
         ctx.bind_frag_data_location(p, loc, name);
