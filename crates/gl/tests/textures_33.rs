@@ -6,7 +6,7 @@
 
 use gl::enums::*;
 use gl::param::Param;
-use gl::{ArrayData, Context};
+use gl::Context;
 
 mod common;
 
@@ -93,15 +93,7 @@ fn draw(ctx: &mut Context, fs: &str, at: (i32, i32)) -> [u8; 4] {
     let p = common::program(ctx, VS, fs);
     let pos = ctx.get_attrib_location(p, "pos");
     assert!(pos >= 0);
-    ctx.vertex_attrib_pointer(
-        pos as u32,
-        2,
-        GL_FLOAT,
-        false,
-        0,
-        ArrayData::from_f32(&FULL_QUAD),
-    );
-    ctx.enable_vertex_attrib_array(pos as u32);
+    common::float_array(ctx, pos as u32, 2, &FULL_QUAD);
     ctx.clear_color(0.0, 0.0, 0.0, 0.0);
     ctx.clear(GL_COLOR_BUFFER_BIT);
     ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);

@@ -88,3 +88,11 @@ pub fn float_framebuffer(ctx: &mut Context, w: i32, h: i32) -> u32 {
     ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
     fb
 }
+
+/// Points attribute `loc` at the client array `data` of `size`-component
+/// floats, tightly packed, and enables it.
+#[allow(dead_code)]
+pub fn float_array(ctx: &mut Context, loc: u32, size: i32, data: &[f32]) {
+    ctx.vertex_attrib_pointer(loc, size, GL_FLOAT, false, 0, ArrayData::from_f32(data));
+    ctx.enable_vertex_attrib_array(loc);
+}
