@@ -9,16 +9,9 @@ use OSMesa::*;
 
 mod common;
 
-/// A current W x H RGBA context over `buf`; destroyed by the caller.
-unsafe fn context(buf: &mut Vec<u8>, w: i32, h: i32) -> OSMesaContext {
-    common::current_context(buf, w, h, None)
-}
-
 #[test]
 fn list_commands_between_begin_and_end_are_invalid_operations() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf, 4, 4);
+    common::with_context(4, 4, None, |_| unsafe {
         glBegin(GL_TRIANGLES);
         glNewList(1, GL_COMPILE);
         glEnd();
@@ -49,15 +42,12 @@ fn list_commands_between_begin_and_end_are_invalid_operations() {
         glCallList(1);
         glEnd();
         assert_eq!(glGetError(), GL_NO_ERROR);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 #[test]
 fn vertex_attrib_and_pointer_queries() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf, 4, 4);
+    common::with_context(4, 4, None, |_| unsafe {
         let data = [0f32; 16];
         glVertexAttribPointer(3, 2, GL_FLOAT, 1, 8, data.as_ptr() as *const c_void);
         glEnableVertexAttribArray(3);
@@ -88,15 +78,12 @@ fn vertex_attrib_and_pointer_queries() {
         glVertexPointer(3, GL_FLOAT, 0, data.as_ptr().add(4) as *const c_void);
         glGetPointerv(GL_VERTEX_ARRAY_POINTER, &mut p);
         assert_eq!(p as usize, data.as_ptr().add(4) as usize);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 #[test]
 fn map_buffer_pbo_round_trip_and_tex_image_readback() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf, 4, 4);
+    common::with_context(4, 4, None, |_| unsafe {
         glClearColor(1.0, 0.0, 0.0, 1.0);
         glClear(GL_COLOR_BUFFER_BIT);
         let mut b = 0u32;
@@ -237,15 +224,12 @@ fn map_buffer_pbo_round_trip_and_tex_image_readback() {
         );
         assert_eq!(&out[28..32], &px);
         assert_eq!(glGetError(), GL_NO_ERROR);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 #[test]
 fn copy_tex_image_takes_the_framebuffer() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf, 8, 8);
+    common::with_context(8, 8, None, |_| unsafe {
         glClearColor(0.0, 1.0, 0.0, 1.0);
         glClear(GL_COLOR_BUFFER_BIT);
         let mut t = 0u32;
@@ -278,15 +262,12 @@ fn copy_tex_image_takes_the_framebuffer() {
         assert_eq!(glGetError(), GL_INVALID_VALUE);
         glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 3, 1, 0, 0, 2, 1);
         assert_eq!(glGetError(), GL_INVALID_VALUE);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 #[test]
 fn interleaved_arrays_array_element_and_multi_draw() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf, 8, 8);
+    common::with_context(8, 8, None, |buf| unsafe {
         // C4UB_V2F: a red then a blue full-screen triangle pair.
         #[repr(C)]
         struct V {
@@ -322,15 +303,12 @@ fn interleaved_arrays_array_element_and_multi_draw() {
         assert!(buf.chunks(4).all(|p| p == [0, 0, 255, 255]));
         glInterleavedArrays(GL_TEXTURE_2D, 0, blue.as_ptr() as *const c_void);
         assert_eq!(glGetError(), GL_INVALID_ENUM);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 #[test]
 fn legacy_calls_keep_state_or_raise_what_the_spec_says() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf, 4, 4);
+    common::with_context(4, 4, None, |_| unsafe {
         assert_eq!(glRenderMode(GL_RENDER), 0);
         assert_eq!(glGetError(), GL_NO_ERROR);
         glRenderMode(GL_SELECT);
@@ -366,15 +344,12 @@ fn legacy_calls_keep_state_or_raise_what_the_spec_says() {
         assert_eq!(v[0], GL_SPHERE_MAP as i32);
         glGetTexGeniv(GL_S, GL_TEXTURE_2D, v.as_mut_ptr());
         assert_eq!(glGetError(), GL_INVALID_ENUM);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 #[test]
 fn attribute_stacks_restore_state_and_client_pointers() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf, 4, 4);
+    common::with_context(4, 4, None, |_| unsafe {
         let a = [0f32; 8];
         let b = [0f32; 8];
         glVertexPointer(2, GL_FLOAT, 0, a.as_ptr() as *const c_void);
@@ -400,8 +375,7 @@ fn attribute_stacks_restore_state_and_client_pointers() {
         assert_eq!(glGetError(), GL_STACK_UNDERFLOW);
         glPopClientAttrib();
         assert_eq!(glGetError(), GL_STACK_UNDERFLOW);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 /// The generated type/arity variants (src/variants.rs) convert as GL 2.1
@@ -410,9 +384,7 @@ fn attribute_stacks_restore_state_and_client_pointers() {
 /// values read at compile time.
 #[test]
 fn generated_variants_convert_and_compile_into_lists() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf, 4, 4);
+    common::with_context(4, 4, None, |_| unsafe {
         let get = |pname: u32| {
             let mut v = [0f32; 4];
             glGetFloatv(pname, v.as_mut_ptr());
@@ -471,6 +443,5 @@ fn generated_variants_convert_and_compile_into_lists() {
         glCallList(1);
         assert_eq!(get(GL_CURRENT_COLOR), [0.0, 1.0, 0.0, 1.0]);
         assert_eq!(glGetError(), GL_NO_ERROR);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }

@@ -38,47 +38,11 @@ fn entry_points_are_exported_by_name() {
     common::assert_exported(NAMES);
 }
 
-/// A current 3.3 context of `profile` on an 8×8 RGBA buffer.
-unsafe fn context(buf: &mut Vec<u8>, profile: i32) -> OSMesaContext {
-    common::current_context(buf, 8, 8, Some(profile))
-}
-
 /// Links `vs` and `fs`, makes the program current and sets up a
 /// full-window quad in a vertex array object (attribute `pos`).
 unsafe fn program_and_quad(vs: &str, fs: &str) -> u32 {
-    let prog = glCreateProgram();
-    for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
-        let s = glCreateShader(kind);
-        let (ptr, len) = (src.as_ptr() as *const GLchar, src.len() as GLint);
-        glShaderSource(s, 1, &ptr, &len);
-        glCompileShader(s);
-        let mut ok = 0;
-        glGetShaderiv(s, GL_COMPILE_STATUS, &mut ok);
-        assert_eq!(ok, 1, "{src}");
-        glAttachShader(prog, s);
-    }
-    glLinkProgram(prog);
-    let mut ok = 0;
-    glGetProgramiv(prog, GL_LINK_STATUS, &mut ok);
-    assert_eq!(ok, 1);
-    glUseProgram(prog);
-    let mut vao = 0;
-    glGenVertexArrays(1, &mut vao);
-    glBindVertexArray(vao);
-    let mut b = 0;
-    glGenBuffers(1, &mut b);
-    glBindBuffer(GL_ARRAY_BUFFER, b);
-    let quad: [f32; 8] = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
-    glBufferData(
-        GL_ARRAY_BUFFER,
-        32,
-        quad.as_ptr() as *const c_void,
-        GL_STATIC_DRAW,
-    );
-    let name = CString::new("pos").unwrap();
-    let p = glGetAttribLocation(prog, name.as_ptr()) as u32;
-    glVertexAttribPointer(p, 2, GL_FLOAT, 0, 0, std::ptr::null());
-    glEnableVertexAttribArray(p);
+    let prog = common::program(vs, fs);
+    common::quad_vertex_array(prog, "pos");
     prog
 }
 
@@ -88,9 +52,7 @@ const VS: &str = "#version 330 core\n\
 
 #[test]
 fn a_bound_sampler_replaces_the_textures_filter() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf, OSMESA_CORE_PROFILE);
+    common::with_context(8, 8, Some(OSMESA_CORE_PROFILE), |_| unsafe {
         // 2×1 texture, red then green, LINEAR on the texture.
         let texels: [u8; 8] = [255, 0, 0, 255, 0, 255, 0, 255];
         let mut t = 0;
@@ -177,15 +139,12 @@ fn a_bound_sampler_replaces_the_textures_filter() {
         assert_eq!(v[0], 0);
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
         assert_eq!(common::pixel_at(4, 4), linear);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 #[test]
 fn clamp_color_and_layer_attachments() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf, OSMESA_CORE_PROFILE);
+    common::with_context(8, 8, Some(OSMESA_CORE_PROFILE), |_| unsafe {
         let mut v = [0i32; 4];
         glGetIntegerv(GL_CLAMP_READ_COLOR, v.as_mut_ptr());
         assert_eq!(v[0], GL_FIXED_ONLY as i32);
@@ -320,15 +279,12 @@ fn clamp_color_and_layer_attachments() {
         assert_eq!(bytes[..4], [0, 0, 0, 0]);
         assert_eq!(bytes[32..36], [0, 255, 0, 255]);
         assert_eq!(glGetError(), GL_NO_ERROR);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 #[test]
 fn dual_source_blending_through_the_c_abi() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf, OSMESA_CORE_PROFILE);
+    common::with_context(8, 8, Some(OSMESA_CORE_PROFILE), |_| unsafe {
         let mut v = [0i32; 4];
         glGetIntegerv(GL_MAX_DUAL_SOURCE_DRAW_BUFFERS, v.as_mut_ptr());
         assert_eq!(v[0], 1);
@@ -336,14 +292,7 @@ fn dual_source_blending_through_the_c_abi() {
             out vec4 a;\n\
             out vec4 b;\n\
             void main() { a = vec4(1.0, 0.0, 0.0, 1.0); b = vec4(0.0, 1.0, 0.0, 1.0); }";
-        let prog = glCreateProgram();
-        for (kind, src) in [(GL_VERTEX_SHADER, VS), (GL_FRAGMENT_SHADER, fs)] {
-            let s = glCreateShader(kind);
-            let (ptr, len) = (src.as_ptr() as *const GLchar, src.len() as GLint);
-            glShaderSource(s, 1, &ptr, &len);
-            glCompileShader(s);
-            glAttachShader(prog, s);
-        }
+        let prog = common::attached(&[(GL_VERTEX_SHADER, VS), (GL_FRAGMENT_SHADER, fs)]);
         let (a, b) = (CString::new("a").unwrap(), CString::new("b").unwrap());
         glBindFragDataLocationIndexed(prog, 0, 0, a.as_ptr());
         glBindFragDataLocationIndexed(prog, 0, 1, b.as_ptr());
@@ -371,8 +320,7 @@ fn dual_source_blending_through_the_c_abi() {
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
         assert_eq!(common::pixel_at(4, 4), [255, 255, 0, 255]);
         assert_eq!(glGetError(), GL_NO_ERROR);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 /// Hostile arguments to every new entry point (bad enums, stale and
@@ -382,9 +330,7 @@ fn dual_source_blending_through_the_c_abi() {
 /// afterwards.
 #[test]
 fn hostile_arguments_never_crash() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf, OSMESA_COMPAT_PROFILE);
+    common::with_context(8, 8, Some(OSMESA_COMPAT_PROFILE), |_| unsafe {
         let ints = [-1, 0, 1, 2, 3, 7, 1000, i32::MAX, i32::MIN];
         let enums = [
             0,
@@ -524,6 +470,5 @@ fn hostile_arguments_never_crash() {
         glEnd();
         assert_eq!(common::pixel_at(4, 4), [0, 255, 0, 255]);
         assert_eq!(glGetError(), GL_NO_ERROR);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }

@@ -6,6 +6,9 @@ use std::ptr::{null, null_mut};
 use OSMesa::*;
 use OSMesa::{GL_FALSE, GL_TRUE};
 
+mod common;
+use common::shader;
+
 const W: i32 = 32;
 const H: i32 = 16;
 
@@ -13,15 +16,6 @@ const VS: &str = "attribute vec2 pos;\nattribute vec3 col;\nvarying vec3 v;\n\
 void main() { v = col; gl_Position = vec4(pos, 0.0, 1.0); }\n";
 const FS: &str =
     "varying vec3 v;\nuniform float k;\nvoid main() { gl_FragColor = vec4(v * k, 1.0); }\n";
-
-unsafe fn shader(kind: u32, src: &str) -> u32 {
-    let s = glCreateShader(kind);
-    let p = src.as_ptr() as *const GLchar;
-    let len = src.len() as GLint;
-    glShaderSource(s, 1, &p, &len);
-    glCompileShader(s);
-    s
-}
 
 unsafe fn info_log(s: u32) -> String {
     let mut buf = vec![0 as GLchar; 4096];

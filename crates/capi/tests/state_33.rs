@@ -31,10 +31,6 @@ const NAMES: &[&str] = &[
     "glGetMultisamplefv",
 ];
 
-unsafe fn compat_context(buf: &mut Vec<u8>) -> OSMesaContext {
-    common::current_context(buf, 8, 8, Some(OSMESA_COMPAT_PROFILE))
-}
-
 unsafe fn pixel() -> [u8; 4] {
     common::pixel_at(4, 4)
 }
@@ -46,9 +42,7 @@ fn entry_points_are_exported_by_name() {
 
 #[test]
 fn per_buffer_state_clears_and_frag_data_locations() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = compat_context(&mut buf);
+    common::with_context(8, 8, Some(OSMESA_COMPAT_PROFILE), |_| unsafe {
         glProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
         let mut v = [0i32; 4];
         glGetIntegerv(GL_PROVOKING_VERTEX, v.as_mut_ptr());
@@ -106,11 +100,7 @@ fn per_buffer_state_clears_and_frag_data_locations() {
         // Fragment outputs: a binding places `b` on draw buffer 0.
         let p = glCreateProgram();
         let fs = "#version 130\nout vec4 a;\nout vec4 b;\nvoid main() { a = vec4(1.0); b = vec4(0.0, 0.0, 1.0, 1.0); }\n";
-        let sh = glCreateShader(GL_FRAGMENT_SHADER);
-        let (ptr, len) = (fs.as_ptr() as *const GLchar, fs.len() as GLint);
-        glShaderSource(sh, 1, &ptr, &len);
-        glCompileShader(sh);
-        glAttachShader(p, sh);
+        glAttachShader(p, common::shader(GL_FRAGMENT_SHADER, fs));
         let (a, b) = (CString::new("a").unwrap(), CString::new("b").unwrap());
         glBindFragDataLocation(p, 0, b.as_ptr());
         glLinkProgram(p);
@@ -125,22 +115,15 @@ fn per_buffer_state_clears_and_frag_data_locations() {
         assert_eq!(pixel(), [0, 0, 255, 255]);
         glBindFragDataLocation(p, 8, a.as_ptr());
         assert_eq!(glGetError(), GL_INVALID_VALUE);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 #[test]
 fn transform_feedback_captures_points() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = compat_context(&mut buf);
+    common::with_context(8, 8, Some(OSMESA_COMPAT_PROFILE), |_| unsafe {
         let p = glCreateProgram();
         let vs = "#version 130\nin float x;\nout float y;\nvoid main() { gl_Position = vec4(x); y = 2.0 * x; }\n";
-        let sh = glCreateShader(GL_VERTEX_SHADER);
-        let (ptr, len) = (vs.as_ptr() as *const GLchar, vs.len() as GLint);
-        glShaderSource(sh, 1, &ptr, &len);
-        glCompileShader(sh);
-        glAttachShader(p, sh);
+        glAttachShader(p, common::shader(GL_VERTEX_SHADER, vs));
         let x = CString::new("x").unwrap();
         glBindAttribLocation(p, 0, x.as_ptr());
         let names = [
@@ -189,6 +172,5 @@ fn transform_feedback_captures_points() {
         }
         glEndTransformFeedback();
         assert_eq!(glGetError(), GL_INVALID_OPERATION);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }

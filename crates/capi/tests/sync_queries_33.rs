@@ -4,7 +4,7 @@
 //! rendering, and their lookup by name.
 
 use gl::enums::*;
-use std::ffi::{c_void, CString};
+
 use OSMesa::*;
 
 mod common;
@@ -28,51 +28,14 @@ const NAMES: &[&str] = &[
     "glEndConditionalRender",
 ];
 
-unsafe fn core_context(buf: &mut Vec<u8>) -> OSMesaContext {
-    common::current_context(buf, W, H, Some(OSMESA_CORE_PROFILE))
-}
-
 /// A program drawing `pos` in green, with a VAO holding a full-window
 /// triangle strip of 4 vertices bound.
 unsafe fn green_quad() {
-    let p = glCreateProgram();
-    for (kind, src) in [
-        (
-            GL_VERTEX_SHADER,
-            "#version 330 core\nin vec2 pos;\nvoid main() { gl_Position = vec4(pos, 0.0, 1.0); }\n",
-        ),
-        (
-            GL_FRAGMENT_SHADER,
-            "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(0.0, 1.0, 0.0, 1.0); }\n",
-        ),
-    ] {
-        let s = glCreateShader(kind);
-        let ptr = src.as_ptr() as *const GLchar;
-        let len = src.len() as GLint;
-        glShaderSource(s, 1, &ptr, &len);
-        glCompileShader(s);
-        glAttachShader(p, s);
-    }
-    glLinkProgram(p);
-    glUseProgram(p);
-    let mut vao = 0;
-    glGenVertexArrays(1, &mut vao);
-    glBindVertexArray(vao);
-    let mut vbo = 0;
-    glGenBuffers(1, &mut vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo);
-    let v: [f32; 8] = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
-    glBufferData(
-        GL_ARRAY_BUFFER,
-        32,
-        v.as_ptr() as *const c_void,
-        GL_STATIC_DRAW,
+    let p = common::program(
+        "#version 330 core\nin vec2 pos;\nvoid main() { gl_Position = vec4(pos, 0.0, 1.0); }\n",
+        "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(0.0, 1.0, 0.0, 1.0); }\n",
     );
-    let name = CString::new("pos").unwrap();
-    let loc = glGetAttribLocation(p, name.as_ptr());
-    assert!(loc >= 0);
-    glVertexAttribPointer(loc as u32, 2, GL_FLOAT, 0, 0, std::ptr::null());
-    glEnableVertexAttribArray(loc as u32);
+    common::quad_vertex_array(p, "pos");
     assert_eq!(glGetError(), GL_NO_ERROR);
 }
 
@@ -87,9 +50,7 @@ fn entry_points_are_exported_by_name() {
 
 #[test]
 fn fences() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = core_context(&mut buf);
+    common::with_context(W, H, Some(OSMESA_CORE_PROFILE), |_| unsafe {
         let s = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
         assert!(!s.is_null());
         assert_eq!(glIsSync(s), 1);
@@ -120,15 +81,12 @@ fn fences() {
         assert_eq!(glGetError(), GL_NO_ERROR);
         assert!(glFenceSync(0, 0).is_null());
         assert_eq!(glGetError(), GL_INVALID_ENUM);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 #[test]
 fn queries_and_conditional_rendering() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = core_context(&mut buf);
+    common::with_context(W, H, Some(OSMESA_CORE_PROFILE), |_| unsafe {
         green_quad();
         let mut q = [0u32; 4];
         glGenQueries(4, q.as_mut_ptr());
@@ -174,6 +132,5 @@ fn queries_and_conditional_rendering() {
         assert_eq!(glGetError(), GL_INVALID_OPERATION);
         glBeginConditionalRender(q[1], GL_QUERY_WAIT);
         assert_eq!(glGetError(), GL_INVALID_OPERATION);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }

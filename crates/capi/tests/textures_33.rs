@@ -4,7 +4,7 @@
 //! name.
 
 use gl::enums::*;
-use std::ffi::{c_void, CString};
+use std::ffi::c_void;
 use std::ptr::null_mut;
 use OSMesa::*;
 
@@ -40,15 +40,7 @@ fn buffer_textures_and_swizzles_through_the_c_abi() {
         );
         // A buffer of RGBA8 texels: texel 1 is (0, 255, 0, 255).
         let texels: [u8; 8] = [255, 0, 0, 255, 0, 255, 0, 255];
-        let mut b = 0;
-        glGenBuffers(1, &mut b);
-        glBindBuffer(GL_TEXTURE_BUFFER, b);
-        glBufferData(
-            GL_TEXTURE_BUFFER,
-            8,
-            texels.as_ptr() as *const c_void,
-            GL_STATIC_DRAW,
-        );
+        let b = common::buffer(GL_TEXTURE_BUFFER, &texels);
         let mut t = 0;
         glGenTextures(1, &mut t);
         glBindTexture(GL_TEXTURE_BUFFER, t);
@@ -57,21 +49,11 @@ fn buffer_textures_and_swizzles_through_the_c_abi() {
         let vs = "#version 140\nin vec2 p;\nvoid main() { gl_Position = vec4(p, 0.0, 1.0); }";
         let fs = "#version 140\nuniform samplerBuffer s;\nout vec4 c;\n\
                   void main() { c = texelFetch(s, textureSize(s) - 1); }";
-        let prog = glCreateProgram();
-        for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
-            let s = glCreateShader(kind);
-            let (ptr, len) = (src.as_ptr() as *const GLchar, src.len() as GLint);
-            glShaderSource(s, 1, &ptr, &len);
-            glCompileShader(s);
-            glAttachShader(prog, s);
-        }
-        glLinkProgram(prog);
-        glUseProgram(prog);
-        let quad: [f32; 8] = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
-        let name = CString::new("p").unwrap();
-        let p = glGetAttribLocation(prog, name.as_ptr()) as u32;
+        let prog = common::program(vs, fs);
+        let p = common::attrib_location(prog, "p");
         glBindBuffer(GL_ARRAY_BUFFER, 0);
-        glVertexAttribPointer(p, 2, GL_FLOAT, 0, 0, quad.as_ptr() as *const c_void);
+        let quad = common::QUAD.as_ptr() as *const c_void;
+        glVertexAttribPointer(p, 2, GL_FLOAT, 0, 0, quad);
         glEnableVertexAttribArray(p);
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
         glFinish();

@@ -12,10 +12,6 @@ mod common;
 const W: i32 = 8;
 const H: i32 = 8;
 
-unsafe fn context(buf: &mut Vec<u8>) -> OSMesaContext {
-    common::current_context(buf, W, H, None)
-}
-
 unsafe fn buffer_bytes(target: u32, n: usize) -> Vec<u8> {
     let mut v = vec![0u8; n];
     glGetBufferSubData(target, 0, n as isize, v.as_mut_ptr() as *mut c_void);
@@ -24,9 +20,7 @@ unsafe fn buffer_bytes(target: u32, n: usize) -> Vec<u8> {
 
 #[test]
 fn map_range_flush_copy_and_queries() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf);
+    common::with_context(W, H, None, |_| unsafe {
         let mut b = [0u32; 2];
         glGenBuffers(2, b.as_mut_ptr());
         glBindBuffer(GL_COPY_READ_BUFFER, b[0]);
@@ -150,41 +144,17 @@ fn map_range_flush_copy_and_queries() {
         ] {
             assert!(OSMesaGetProcAddress(name.as_ptr()).is_some(), "{name:?}");
         }
-        OSMesaDestroyContext(ctx);
-    }
-}
-
-unsafe fn shader(kind: u32, src: &str) -> u32 {
-    let s = glCreateShader(kind);
-    let p = src.as_ptr() as *const GLchar;
-    let len = src.len() as GLint;
-    glShaderSource(s, 1, &p, &len);
-    glCompileShader(s);
-    let mut ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &mut ok);
-    assert_eq!(ok, 1);
-    s
+    });
 }
 
 #[test]
 fn uniform_block_draws_from_its_buffer() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf);
-        let vs = shader(
-            GL_VERTEX_SHADER,
+    common::with_context(W, H, None, |buf| unsafe {
+        let prog = common::program(
             "#version 150\nin vec4 pos;\nvoid main() { gl_Position = pos; }\n",
-        );
-        let fs = shader(
-            GL_FRAGMENT_SHADER,
             "#version 150\nuniform Tint { float pad; vec4 colour; } tint;\nout vec4 o;\n\
              void main() { o = tint.colour; }\n",
         );
-        let prog = glCreateProgram();
-        glAttachShader(prog, vs);
-        glAttachShader(prog, fs);
-        glLinkProgram(prog);
-        glUseProgram(prog);
         let idx = glGetUniformBlockIndex(prog, c"Tint".as_ptr());
         assert_eq!(idx, 0);
         assert_eq!(glGetUniformBlockIndex(prog, c"tint".as_ptr()), u32::MAX);
@@ -249,8 +219,7 @@ fn uniform_block_draws_from_its_buffer() {
         glFinish();
         assert_eq!(&buf[..4], &[0, 255, 0, 255]);
         assert_eq!(glGetError(), GL_NO_ERROR);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 /// xorshift64*: a fixed sequence of arguments.
@@ -273,27 +242,13 @@ impl Rng {
 
 #[test]
 fn hostile_buffer_and_block_calls_never_crash() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf);
-        let vs = shader(
-            GL_VERTEX_SHADER,
+    common::with_context(W, H, None, |buf| unsafe {
+        let prog = common::program(
             "#version 150\nuniform V { mat4 m; float s[2]; };\nin vec4 pos;\n\
              void main() { gl_Position = m * pos * s[1]; }\n",
-        );
-        let fs = shader(
-            GL_FRAGMENT_SHADER,
             "#version 150\nuniform F { vec4 c; layout(row_major) mat3 r; } f[2];\nout vec4 o;\n\
              void main() { o = f[0].c + vec4(f[1].r[2], 0.0); }\n",
         );
-        let prog = glCreateProgram();
-        glAttachShader(prog, vs);
-        glAttachShader(prog, fs);
-        glLinkProgram(prog);
-        glUseProgram(prog);
-        let mut status = 0;
-        glGetProgramiv(prog, GL_LINK_STATUS, &mut status);
-        assert_eq!(status, 1);
         let quad: [f32; 8] = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
         glVertexAttribPointer(0, 2, GL_FLOAT, 0, 0, quad.as_ptr() as *const c_void);
         glEnableVertexAttribArray(0);
@@ -390,6 +345,5 @@ fn hostile_buffer_and_block_calls_never_crash() {
         assert_eq!(glGetError(), GL_NO_ERROR);
         assert_eq!(&buf[0..4], &[0, 255, 0, 255]);
         assert_eq!(OSMesa::context::caught_panics(), 0);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }

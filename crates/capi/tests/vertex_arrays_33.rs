@@ -4,7 +4,7 @@
 //! base-vertex draws, primitive restart, and their lookup by name.
 
 use gl::enums::*;
-use std::ffi::{c_void, CString};
+use std::ffi::c_void;
 use std::ptr::{null, null_mut};
 use OSMesa::*;
 
@@ -93,36 +93,10 @@ const NAMES: &[&str] = &[
     "glMultiDrawElements",
 ];
 
-unsafe fn context(buf: &mut Vec<u8>) -> OSMesaContext {
-    common::current_context(buf, W, H, None)
-}
-
-unsafe fn program(vs: &str, fs: &str) -> u32 {
-    let p = glCreateProgram();
-    for (kind, src) in [(GL_VERTEX_SHADER, vs), (GL_FRAGMENT_SHADER, fs)] {
-        let s = glCreateShader(kind);
-        let ptr = src.as_ptr() as *const GLchar;
-        let len = src.len() as GLint;
-        glShaderSource(s, 1, &ptr, &len);
-        glCompileShader(s);
-        let mut ok = 0;
-        glGetShaderiv(s, GL_COMPILE_STATUS, &mut ok);
-        assert_eq!(ok, 1, "{src}");
-        glAttachShader(p, s);
-    }
-    glLinkProgram(p);
-    let mut ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &mut ok);
-    assert_eq!(ok, 1);
-    glUseProgram(p);
-    p
-}
-
-unsafe fn location(p: u32, name: &str) -> u32 {
-    let n = CString::new(name).unwrap();
-    let l = glGetAttribLocation(p, n.as_ptr());
-    assert!(l >= 0, "{name}");
-    l as u32
+/// The locations of [`VS`]'s attributes `corner`, `code` and `shift` in
+/// program `p`.
+unsafe fn attributes(p: u32) -> [u32; 3] {
+    ["corner", "code", "shift"].map(|name| common::attrib_location(p, name))
 }
 
 fn px(buf: &[u8], x: i32, y: i32) -> [u8; 4] {
@@ -156,52 +130,26 @@ fn every_new_entry_point_is_exported() {
 
 #[test]
 fn instanced_integer_attributes_from_a_vertex_array_object() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf);
-        let p = program(VS, FS);
-        let (corner, code, shift) = (
-            location(p, "corner"),
-            location(p, "code"),
-            location(p, "shift"),
-        );
+    common::with_context(W, H, None, |buf| unsafe {
+        let p = common::program(VS, FS);
+        let [corner, code, shift] = attributes(p);
         let mut vao = 0;
         glGenVertexArrays(1, &mut vao);
         assert_eq!(glIsVertexArray(vao), 0);
         glBindVertexArray(vao);
         assert_eq!(glIsVertexArray(vao), 1);
-        let mut bufs = [0u32; 3];
-        glGenBuffers(3, bufs.as_mut_ptr());
-        glBindBuffer(GL_ARRAY_BUFFER, bufs[0]);
-        glBufferData(
-            GL_ARRAY_BUFFER,
-            32,
-            CORNERS.as_ptr() as *const c_void,
-            GL_STATIC_DRAW,
-        );
+        let corners = common::buffer(GL_ARRAY_BUFFER, &CORNERS);
         glVertexAttribPointer(corner, 2, GL_FLOAT, 0, 0, null());
         glEnableVertexAttribArray(corner);
         // One code per instance: (-7, 0) green, (0, 200) red.
         let codes: [i32; 4] = [-7, 0, 0, 200];
-        glBindBuffer(GL_ARRAY_BUFFER, bufs[1]);
-        glBufferData(
-            GL_ARRAY_BUFFER,
-            16,
-            codes.as_ptr() as *const c_void,
-            GL_STATIC_DRAW,
-        );
+        common::buffer(GL_ARRAY_BUFFER, &codes);
         glVertexAttribIPointer(code, 2, GL_INT, 0, null());
         glVertexAttribDivisor(code, 1);
         glEnableVertexAttribArray(code);
         glVertexAttrib1f(shift, 0.0);
         let elements: [u16; 4] = [0, 1, 2, 3];
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, bufs[2]);
-        glBufferData(
-            GL_ELEMENT_ARRAY_BUFFER,
-            8,
-            elements.as_ptr() as *const c_void,
-            GL_STATIC_DRAW,
-        );
+        common::buffer(GL_ELEMENT_ARRAY_BUFFER, &elements);
         glBindBuffer(GL_ARRAY_BUFFER, 0);
         let mut v = [0i32; 1];
         glGetVertexAttribIiv(code, GL_VERTEX_ATTRIB_ARRAY_INTEGER, v.as_mut_ptr());
@@ -222,9 +170,9 @@ fn instanced_integer_attributes_from_a_vertex_array_object() {
         glDrawElementsInstanced(GL_TRIANGLE_STRIP, 4, GL_UNSIGNED_SHORT, null(), 2);
         assert_eq!(glGetError(), GL_NO_ERROR);
         glFinish();
-        assert_eq!(px(&buf, 2, 2), [0, 255, 0, 255]);
-        assert_eq!(px(&buf, 6, 2), [200, 0, 0, 255]);
-        assert_eq!(px(&buf, 10, 2), [0; 4]);
+        assert_eq!(px(buf, 2, 2), [0, 255, 0, 255]);
+        assert_eq!(px(buf, 6, 2), [200, 0, 0, 255]);
+        assert_eq!(px(buf, 10, 2), [0; 4]);
 
         // The default object: client memory, instanced too.
         glBindVertexArray(0);
@@ -238,9 +186,9 @@ fn instanced_integer_attributes_from_a_vertex_array_object() {
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, 3);
         assert_eq!(glGetError(), GL_NO_ERROR);
         glFinish();
-        assert_eq!(px(&buf, 2, 2), [10, 0, 0, 255]);
-        assert_eq!(px(&buf, 6, 2), [20, 0, 0, 255]);
-        assert_eq!(px(&buf, 10, 2), [0, 255, 0, 255]);
+        assert_eq!(px(buf, 2, 2), [10, 0, 0, 255]);
+        assert_eq!(px(buf, 6, 2), [20, 0, 0, 255]);
+        assert_eq!(px(buf, 10, 2), [0, 255, 0, 255]);
         // The object kept its state; each object answers for its own
         // pointers.
         glGetVertexAttribPointerv(code, GL_VERTEX_ATTRIB_ARRAY_POINTER, &mut ptr);
@@ -253,27 +201,20 @@ fn instanced_integer_attributes_from_a_vertex_array_object() {
             GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING,
             v.as_mut_ptr(),
         );
-        assert_eq!(v[0], bufs[0] as i32);
+        assert_eq!(v[0], corners as i32);
         glDeleteVertexArrays(1, &vao);
         glGetIntegerv(GL_VERTEX_ARRAY_BINDING, v.as_mut_ptr());
         assert_eq!(v[0], 0);
         glBindVertexArray(vao);
         assert_eq!(glGetError(), GL_INVALID_OPERATION);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }
 
 #[test]
 fn base_vertex_restart_and_current_integer_values() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf);
-        let p = program(VS, FS);
-        let (corner, code, shift) = (
-            location(p, "corner"),
-            location(p, "code"),
-            location(p, "shift"),
-        );
+    common::with_context(W, H, None, |buf| unsafe {
+        let p = common::program(VS, FS);
+        let [corner, code, shift] = attributes(p);
         // Two copies of the square's corners, each with a shift: the
         // first at 0, the second at 2 (x = 8..12).
         let corners: Vec<f32> = CORNERS.iter().chain(&CORNERS).copied().collect();
@@ -299,8 +240,8 @@ fn base_vertex_restart_and_current_integer_values() {
         );
         assert_eq!(glGetError(), GL_NO_ERROR);
         glFinish();
-        assert_eq!(px(&buf, 2, 2), [0; 4]);
-        assert_eq!(px(&buf, 10, 2), [0, 255, 0, 255]);
+        assert_eq!(px(buf, 2, 2), [0; 4]);
+        assert_eq!(px(buf, 10, 2), [0, 255, 0, 255]);
         // Restart: both squares from one strip list, without joining.
         glEnable(GL_PRIMITIVE_RESTART);
         glPrimitiveRestartIndex(0xffff);
@@ -315,9 +256,9 @@ fn base_vertex_restart_and_current_integer_values() {
         );
         assert_eq!(glGetError(), GL_NO_ERROR);
         glFinish();
-        assert_eq!(px(&buf, 2, 2), [50, 0, 0, 255]);
-        assert_eq!(px(&buf, 6, 2), [0; 4]);
-        assert_eq!(px(&buf, 10, 2), [50, 0, 0, 255]);
+        assert_eq!(px(buf, 2, 2), [50, 0, 0, 255]);
+        assert_eq!(px(buf, 6, 2), [0; 4]);
+        assert_eq!(px(buf, 10, 2), [50, 0, 0, 255]);
         let mut restart = 0u8;
         glGetBooleanv(GL_PRIMITIVE_RESTART, &mut restart);
         assert_eq!(restart, 1);
@@ -352,17 +293,14 @@ fn base_vertex_restart_and_current_integer_values() {
         );
         assert_eq!(glGetError(), GL_NO_ERROR);
         glFinish();
-        assert_eq!(px(&buf, 2, 2), [50, 0, 0, 255]);
-        assert_eq!(px(&buf, 10, 2), [50, 0, 0, 255]);
-        OSMesaDestroyContext(ctx);
-    }
+        assert_eq!(px(buf, 2, 2), [50, 0, 0, 255]);
+        assert_eq!(px(buf, 10, 2), [50, 0, 0, 255]);
+    });
 }
 
 #[test]
 fn errors_the_spec_names() {
-    unsafe {
-        let mut buf = Vec::new();
-        let ctx = context(&mut buf);
+    common::with_context(W, H, None, |_| unsafe {
         glDrawArraysInstanced(GL_TRIANGLES, 0, 3, -1);
         assert_eq!(glGetError(), GL_INVALID_VALUE);
         glDrawElementsInstanced(GL_TRIANGLES, 3, GL_FLOAT, null(), 1);
@@ -415,6 +353,5 @@ fn errors_the_spec_names() {
         glDrawArraysInstanced(GL_TRIANGLES, 0, 3, 1);
         glEndList();
         assert_eq!(glGetError(), GL_INVALID_OPERATION);
-        OSMesaDestroyContext(ctx);
-    }
+    });
 }

@@ -81,6 +81,14 @@ fn cap_group(cap: u32) -> u32 {
     }
 }
 
+/// Copies the fields named from `$old` back into `$st`: the members of an
+/// attribute group being popped.
+macro_rules! restore {
+    ($st:ident, $old:ident, $($field:ident)+) => {
+        $($st.$field = $old.$field;)+
+    };
+}
+
 impl Context {
     /// glPushAttrib.
     pub fn push_attrib(&mut self, mask: u32) {
@@ -132,41 +140,23 @@ impl Context {
         st.enabled
             .extend(old.enabled.iter().filter(|&&(cap, _)| restored(cap)));
         if has(GL_COLOR_BUFFER_BIT) {
-            st.alpha_func = old.alpha_func;
-            st.alpha_ref = old.alpha_ref;
-            st.blend_src = old.blend_src;
-            st.blend_dst = old.blend_dst;
-            st.blend_eq = old.blend_eq;
-            st.blend_color = old.blend_color;
-            st.logic_op = old.logic_op;
-            st.color_masks = old.color_masks;
-            st.clear_color = old.clear_color;
+            restore!(st, old, alpha_func alpha_ref blend_src blend_dst blend_eq blend_color
+                logic_op color_masks clear_color);
             st.draw_buffers = old.draw_buffers.clone();
             // GL 3.0 compatibility's colour-buffer group holds glClampColor's
             // fragment and read clamping.
-            st.clamp_fragment_color = old.clamp_fragment_color;
-            st.clamp_read_color = old.clamp_read_color;
+            restore!(st, old, clamp_fragment_color clamp_read_color);
         }
         if has(GL_DEPTH_BUFFER_BIT) {
-            st.depth_func = old.depth_func;
-            st.depth_mask = old.depth_mask;
-            st.clear_depth = old.clear_depth;
+            restore!(st, old, depth_func depth_mask clear_depth);
         }
         if has(GL_FOG_BIT) {
             st.fog = old.fog;
         }
         if has(GL_LIGHTING_BIT) {
-            st.lights = old.lights;
-            st.material = old.material;
-            st.light_model_ambient = old.light_model_ambient;
-            st.light_model_local_viewer = old.light_model_local_viewer;
-            st.light_model_two_side = old.light_model_two_side;
-            st.light_model_color_control = old.light_model_color_control;
-            st.color_material_face = old.color_material_face;
-            st.color_material_mode = old.color_material_mode;
-            st.shade_model = old.shade_model;
-            st.provoking_vertex = old.provoking_vertex;
-            st.clamp_vertex_color = old.clamp_vertex_color;
+            restore!(st, old, lights material light_model_ambient light_model_local_viewer
+                light_model_two_side light_model_color_control color_material_face
+                color_material_mode shade_model provoking_vertex clamp_vertex_color);
         }
         if has(GL_LINE_BIT) {
             st.line_width = old.line_width;
@@ -178,17 +168,13 @@ impl Context {
             }
         }
         if has(GL_POLYGON_BIT) {
-            st.cull_face = old.cull_face;
-            st.front_face = old.front_face;
-            st.polygon_mode = old.polygon_mode;
-            st.polygon_offset = old.polygon_offset;
+            restore!(st, old, cull_face front_face polygon_mode polygon_offset);
         }
         if has(GL_SCISSOR_BIT) {
             st.scissor = old.scissor;
         }
         if has(GL_STENCIL_BUFFER_BIT) {
-            st.stencil = old.stencil;
-            st.clear_stencil = old.clear_stencil;
+            restore!(st, old, stencil clear_stencil);
         }
         if has(GL_TEXTURE_BIT) {
             st.active_texture = old.active_texture;

@@ -188,11 +188,7 @@ impl Context {
         let Some(f) = self.objects.framebuffers.get(&name) else {
             return 0;
         };
-        f.color
-            .iter()
-            .flatten()
-            .chain(f.depth.iter())
-            .chain(f.stencil.iter())
+        f.attachments()
             .map(|a| self.attachment_samples(a))
             .max()
             .unwrap_or(0)
@@ -461,13 +457,7 @@ impl Context {
         self.set_attachment(
             fb,
             attachment,
-            Some(Attachment::Texture {
-                texture,
-                face: face as u32,
-                level,
-                layer: 0,
-                layered: false,
-            }),
+            Some(Attachment::texture_image(texture, level, face as u32, 0)),
         );
     }
 
@@ -532,13 +522,7 @@ impl Context {
         self.set_attachment(
             fb,
             attachment,
-            Some(Attachment::Texture {
-                texture,
-                face: 0,
-                level,
-                layer,
-                layered: false,
-            }),
+            Some(Attachment::texture_image(texture, level, 0, layer)),
         );
     }
 
@@ -870,11 +854,7 @@ impl Context {
         }
         // Either every attachment is layered or none is (GL 3.3 §4.4.4).
         let layered: Vec<bool> = f
-            .color
-            .iter()
-            .flatten()
-            .chain(f.depth.iter())
-            .chain(f.stencil.iter())
+            .attachments()
             .map(|a| matches!(a, Attachment::Texture { layered: true, .. }))
             .collect();
         if layered.iter().any(|&l| l != layered[0]) {
@@ -885,11 +865,7 @@ impl Context {
         }
         // Every attachment has the same sample count (textures: 0).
         let samples: Vec<i32> = f
-            .color
-            .iter()
-            .flatten()
-            .chain(f.depth.iter())
-            .chain(f.stencil.iter())
+            .attachments()
             .map(|a| self.attachment_samples(a))
             .collect();
         if samples.iter().any(|&n| n != samples[0]) {
@@ -931,16 +907,7 @@ impl Context {
         let fb = self.objects.draw_framebuffer;
         for (i, &b) in bufs.iter().enumerate() {
             let ok = if fb == 0 {
-                matches!(
-                    b,
-                    GL_NONE
-                        | GL_FRONT_LEFT
-                        | GL_BACK_LEFT
-                        | GL_FRONT
-                        | GL_BACK
-                        | GL_LEFT
-                        | GL_FRONT_AND_BACK
-                )
+                window_draw_buffer(b)
             } else {
                 b == GL_NONE
                     || (GL_COLOR_ATTACHMENT0..GL_COLOR_ATTACHMENT0 + crate::MAX_DRAW_BUFFERS as u32)
@@ -965,18 +932,7 @@ impl Context {
     /// glDrawBuffer.
     pub fn draw_buffer(&mut self, buf: u32) {
         let fb = self.objects.draw_framebuffer;
-        if fb == 0
-            && !matches!(
-                buf,
-                GL_NONE
-                    | GL_FRONT_LEFT
-                    | GL_BACK_LEFT
-                    | GL_FRONT
-                    | GL_BACK
-                    | GL_LEFT
-                    | GL_FRONT_AND_BACK
-            )
-        {
+        if fb == 0 && !window_draw_buffer(buf) {
             self.set_error(GL_INVALID_ENUM);
             return;
         }
@@ -995,6 +951,14 @@ impl Context {
             f.read_buffer = buf;
         }
     }
+}
+
+/// Whether `b` names a draw buffer of the window (framebuffer 0), or none.
+fn window_draw_buffer(b: u32) -> bool {
+    matches!(
+        b,
+        GL_NONE | GL_FRONT_LEFT | GL_BACK_LEFT | GL_FRONT | GL_BACK | GL_LEFT | GL_FRONT_AND_BACK
+    )
 }
 
 #[cfg(test)]

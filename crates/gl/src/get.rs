@@ -507,52 +507,51 @@ impl Context {
         }
     }
 
+    /// `pname`'s values as glGetInteger64v returns them, and whether
+    /// glGetIntegerv saturates them at 32 bits (the 64-bit states and
+    /// floats) rather than truncating; GL_INVALID_ENUM and None for a
+    /// pname there is no state of.
+    fn integer_query(&mut self, pname: u32) -> Option<(Vec<i64>, bool)> {
+        if let Some(v) = self.int64_state(pname) {
+            return Some((vec![v], true));
+        }
+        let Some((v, kind)) = self.query(pname) else {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        };
+        let ints = v
+            .iter()
+            .map(|&x| match kind {
+                Kind::Normalized => {
+                    let c = x.clamp(-1.0, 1.0);
+                    ((c * 4294967295.0 - 1.0) / 2.0).round() as i64
+                }
+                Kind::Float => x.round() as i64,
+                _ => x as i64,
+            })
+            .collect();
+        Some((ints, kind == Kind::Float))
+    }
+
     /// glGetIntegerv.
     pub fn get_integerv(&mut self, pname: u32) -> Vec<i32> {
-        if let Some(v) = self.int64_state(pname) {
-            return vec![v.clamp(i32::MIN as i64, i32::MAX as i64) as i32];
-        }
-        match self.query(pname) {
-            Some((v, kind)) => v
-                .iter()
-                .map(|&x| match kind {
-                    Kind::Normalized => {
-                        let c = x.clamp(-1.0, 1.0);
-                        ((c * 4294967295.0 - 1.0) / 2.0).round() as i64 as i32
-                    }
-                    Kind::Float => x.round() as i32,
-                    _ => x as i64 as i32,
-                })
-                .collect(),
-            None => {
-                self.set_error(GL_INVALID_ENUM);
-                Vec::new()
-            }
-        }
+        let Some((v, saturate)) = self.integer_query(pname) else {
+            return Vec::new();
+        };
+        v.into_iter()
+            .map(|x| {
+                if saturate {
+                    x.clamp(i32::MIN.into(), i32::MAX.into()) as i32
+                } else {
+                    x as i32
+                }
+            })
+            .collect()
     }
 
     /// glGetInteger64v (GL 3.2): glGetIntegerv without the 32-bit clamp.
     pub fn get_integer64v(&mut self, pname: u32) -> Vec<i64> {
-        if let Some(v) = self.int64_state(pname) {
-            return vec![v];
-        }
-        match self.query(pname) {
-            Some((v, kind)) => v
-                .iter()
-                .map(|&x| match kind {
-                    Kind::Normalized => {
-                        let c = x.clamp(-1.0, 1.0);
-                        ((c * 4294967295.0 - 1.0) / 2.0).round() as i64
-                    }
-                    Kind::Float => x.round() as i64,
-                    _ => x as i64,
-                })
-                .collect(),
-            None => {
-                self.set_error(GL_INVALID_ENUM);
-                Vec::new()
-            }
-        }
+        self.integer_query(pname).map_or_else(Vec::new, |(v, _)| v)
     }
 
     /// glGetFloatv.

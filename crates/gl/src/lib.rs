@@ -449,6 +449,19 @@ impl Context {
         }
     }
 
+    /// The checks a state setter makes before it changes anything: not
+    /// between glBegin and glEnd (GL_INVALID_OPERATION), then `valid`
+    /// (else `error`). True when the setter may go on.
+    pub(crate) fn setter_accepts(&mut self, valid: bool, error: u32) -> bool {
+        if self.reject_in_begin() {
+            return false;
+        }
+        if !valid {
+            self.set_error(error);
+        }
+        valid
+    }
+
     fn fresh_name(&mut self) -> u32 {
         let n = self.next_name;
         self.next_name = self.next_name.wrapping_add(1).max(1);

@@ -218,6 +218,20 @@ pub enum Attachment {
     Renderbuffer(u32),
 }
 
+impl Attachment {
+    /// One image of level `level` of `texture`: cube face `face` of a
+    /// cube map, layer `layer` of a 3D or array level (each 0 otherwise).
+    pub fn texture_image(texture: u32, level: i32, face: u32, layer: i32) -> Attachment {
+        Attachment::Texture {
+            texture,
+            face,
+            level,
+            layer,
+            layered: false,
+        }
+    }
+}
+
 /// Where the 2D image at `layer` of the level image `img` of a texture
 /// of `target` lies in `img.texels`: (first texel, width, height). A layer
 /// of a 3D or 2D array level is one `width × height` slice, a layer of a
@@ -244,6 +258,18 @@ pub struct FramebufferObj {
     pub stencil: Option<Attachment>,
     pub draw_buffers: Vec<u32>,
     pub read_buffer: u32,
+}
+
+impl FramebufferObj {
+    /// Every attachment made: the colour ones in order, then depth, then
+    /// stencil.
+    pub fn attachments(&self) -> impl Iterator<Item = &Attachment> {
+        self.color
+            .iter()
+            .flatten()
+            .chain(self.depth.iter())
+            .chain(self.stencil.iter())
+    }
 }
 
 /// All named objects and their bindings.

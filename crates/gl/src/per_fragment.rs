@@ -128,20 +128,15 @@ impl Context {
 
     /// glBlendFuncSeparate.
     pub fn blend_func_separate(&mut self, src_rgb: u32, dst_rgb: u32, src_a: u32, dst_a: u32) {
-        if self.reject_in_begin() {
-            return;
-        }
         let dual = self.api.at_least(3, 3);
-        if !(valid_blend_factor(src_rgb, true, dual)
+        let valid = valid_blend_factor(src_rgb, true, dual)
             && valid_blend_factor(dst_rgb, false, dual)
             && valid_blend_factor(src_a, true, dual)
-            && valid_blend_factor(dst_a, false, dual))
-        {
-            self.set_error(GL_INVALID_ENUM);
-            return;
+            && valid_blend_factor(dst_a, false, dual);
+        if self.setter_accepts(valid, GL_INVALID_ENUM) {
+            self.st.blend_src = [src_rgb, src_a];
+            self.st.blend_dst = [dst_rgb, dst_a];
         }
-        self.st.blend_src = [src_rgb, src_a];
-        self.st.blend_dst = [dst_rgb, dst_a];
     }
 
     /// glBlendEquation.
@@ -151,14 +146,10 @@ impl Context {
 
     /// glBlendEquationSeparate.
     pub fn blend_equation_separate(&mut self, rgb: u32, alpha: u32) {
-        if self.reject_in_begin() {
-            return;
+        let valid = valid_blend_eq(rgb) && valid_blend_eq(alpha);
+        if self.setter_accepts(valid, GL_INVALID_ENUM) {
+            self.st.blend_eq = [rgb, alpha];
         }
-        if !valid_blend_eq(rgb) || !valid_blend_eq(alpha) {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        self.st.blend_eq = [rgb, alpha];
     }
 
     /// glBlendColor (clamped).
@@ -171,26 +162,16 @@ impl Context {
 
     /// glLogicOp.
     pub fn logic_op(&mut self, op: u32) {
-        if self.reject_in_begin() {
-            return;
+        if self.setter_accepts((GL_CLEAR..=GL_SET).contains(&op), GL_INVALID_ENUM) {
+            self.st.logic_op = op;
         }
-        if !(GL_CLEAR..=GL_SET).contains(&op) {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        self.st.logic_op = op;
     }
 
     /// glDepthFunc.
     pub fn depth_func(&mut self, func: u32) {
-        if self.reject_in_begin() {
-            return;
+        if self.setter_accepts(valid_func(func), GL_INVALID_ENUM) {
+            self.st.depth_func = func;
         }
-        if !valid_func(func) {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        self.st.depth_func = func;
     }
 
     /// glDepthMask.
@@ -208,18 +189,11 @@ impl Context {
 
     /// glStencilFuncSeparate.
     pub fn stencil_func_separate(&mut self, face: u32, func: u32, reference: i32, mask: u32) {
-        if self.reject_in_begin() {
+        let faces = Self::faces(face).filter(|_| valid_func(func));
+        if !self.setter_accepts(faces.is_some(), GL_INVALID_ENUM) {
             return;
         }
-        let Some(faces) = Self::faces(face) else {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        };
-        if !valid_func(func) {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        for &f in faces {
+        for &f in faces.unwrap_or_default() {
             let s = &mut self.st.stencil[f];
             s.func = func;
             s.reference = reference;
@@ -234,18 +208,12 @@ impl Context {
 
     /// glStencilOpSeparate.
     pub fn stencil_op_separate(&mut self, face: u32, fail: u32, zfail: u32, zpass: u32) {
-        if self.reject_in_begin() {
+        let valid_ops = [fail, zfail, zpass].iter().all(|&o| valid_stencil_op(o));
+        let faces = Self::faces(face).filter(|_| valid_ops);
+        if !self.setter_accepts(faces.is_some(), GL_INVALID_ENUM) {
             return;
         }
-        let Some(faces) = Self::faces(face) else {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        };
-        if ![fail, zfail, zpass].iter().all(|&o| valid_stencil_op(o)) {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        for &f in faces {
+        for &f in faces.unwrap_or_default() {
             let s = &mut self.st.stencil[f];
             s.fail = fail;
             s.zfail = zfail;
@@ -274,15 +242,10 @@ impl Context {
 
     /// glAlphaFunc.
     pub fn alpha_func(&mut self, func: u32, reference: f32) {
-        if self.reject_in_begin() {
-            return;
+        if self.setter_accepts(valid_func(func), GL_INVALID_ENUM) {
+            self.st.alpha_func = func;
+            self.st.alpha_ref = clamp01(reference);
         }
-        if !valid_func(func) {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        self.st.alpha_func = func;
-        self.st.alpha_ref = clamp01(reference);
     }
 
     /// glColorMask.

@@ -276,46 +276,39 @@ pub fn unpack_image(
     let (px, _) = pixel_size(format, ty).unwrap_or((4, 1));
     let n = format_components(format).unwrap_or(4);
     let stride = row_stride(w, format, ty, alignment);
-    let mut out = Vec::with_capacity(len);
+    // Each pixel's bytes in turn (empty past the end of the data): rows
+    // `stride` bytes apart, `d` images of `h` rows.
+    let pixels = (0..d.saturating_mul(h)).flat_map(|row| {
+        let row = row.saturating_mul(stride);
+        (0..w).map(move |x| {
+            let at = row.saturating_add(x * px);
+            data.get(at..at.saturating_add(px)).unwrap_or(&[])
+        })
+    });
     if let Some(plain) = integer_client_format(format) {
         // Integer data for an integer texture: components kept as
         // integers, placed as the plain format places them.
-        for z in 0..d {
-            for y in 0..h {
-                let row = (z * h + y).saturating_mul(stride);
-                for x in 0..w {
-                    let at = row.saturating_add(x * px);
-                    let b = data.get(at..at.saturating_add(px)).unwrap_or(&[]);
-                    let c = decode_pixel_int(b, n, ty);
-                    let rgba = match plain {
-                        GL_GREEN => [0, c[0], 0, 1],
-                        GL_BLUE => [0, 0, c[0], 1],
-                        GL_ALPHA => [0, 0, 0, c[0]],
-                        GL_RED => [c[0], 0, 0, 1],
-                        GL_RG => [c[0], c[1], 0, 1],
-                        GL_RGB => [c[0], c[1], c[2], 1],
-                        GL_BGR => [c[2], c[1], c[0], 1],
-                        GL_BGRA => [c[2], c[1], c[0], c[3]],
-                        _ => c,
-                    };
-                    out.push(integer_texel(rgba, internal));
-                }
-            }
-        }
-        return out;
+        return pixels
+            .map(|b| {
+                let c = decode_pixel_int(b, n, ty);
+                let rgba = match plain {
+                    GL_GREEN => [0, c[0], 0, 1],
+                    GL_BLUE => [0, 0, c[0], 1],
+                    GL_ALPHA => [0, 0, 0, c[0]],
+                    GL_RED => [c[0], 0, 0, 1],
+                    GL_RG => [c[0], c[1], 0, 1],
+                    GL_RGB => [c[0], c[1], c[2], 1],
+                    GL_BGR => [c[2], c[1], c[0], 1],
+                    GL_BGRA => [c[2], c[1], c[0], c[3]],
+                    _ => c,
+                };
+                integer_texel(rgba, internal)
+            })
+            .collect();
     }
-    for z in 0..d {
-        for y in 0..h {
-            let row = (z * h + y).saturating_mul(stride);
-            for x in 0..w {
-                let at = row.saturating_add(x * px);
-                let b = data.get(at..at.saturating_add(px)).unwrap_or(&[]);
-                let c = decode_pixel(b, n, ty);
-                out.push(texel_for(to_rgba(c, format), internal));
-            }
-        }
-    }
-    out
+    pixels
+        .map(|b| texel_for(to_rgba(decode_pixel(b, n, ty), format), internal))
+        .collect()
 }
 
 /// Packs `w * h` RGBA values (bottom row first) as `format`/`ty` rows at

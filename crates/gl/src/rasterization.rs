@@ -15,43 +15,25 @@ pub const MAX_SAMPLE_MASK_WORDS: u32 = 1;
 impl Context {
     /// glCullFace.
     pub fn cull_face(&mut self, mode: u32) {
-        if self.reject_in_begin() {
-            return;
+        if self.setter_accepts(Self::faces(mode).is_some(), GL_INVALID_ENUM) {
+            self.st.cull_face = mode;
         }
-        if Self::faces(mode).is_none() {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        self.st.cull_face = mode;
     }
 
     /// glFrontFace.
     pub fn front_face(&mut self, mode: u32) {
-        if self.reject_in_begin() {
-            return;
+        if self.setter_accepts(matches!(mode, GL_CW | GL_CCW), GL_INVALID_ENUM) {
+            self.st.front_face = mode;
         }
-        if mode != GL_CW && mode != GL_CCW {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        self.st.front_face = mode;
     }
 
     /// glPolygonMode.
     pub fn polygon_mode(&mut self, face: u32, mode: u32) {
-        if self.reject_in_begin() {
-            return;
-        }
-        let Some(faces) = Self::faces(face) else {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        };
-        if !matches!(mode, GL_POINT | GL_LINE | GL_FILL) {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        for &f in faces {
-            self.st.polygon_mode[f] = mode;
+        let faces = Self::faces(face).filter(|_| matches!(mode, GL_POINT | GL_LINE | GL_FILL));
+        if self.setter_accepts(faces.is_some(), GL_INVALID_ENUM) {
+            for &f in faces.unwrap_or_default() {
+                self.st.polygon_mode[f] = mode;
+            }
         }
     }
 
@@ -65,27 +47,18 @@ impl Context {
 
     /// glShadeModel.
     pub fn shade_model(&mut self, mode: u32) {
-        if self.reject_in_begin() {
-            return;
+        if self.setter_accepts(matches!(mode, GL_FLAT | GL_SMOOTH), GL_INVALID_ENUM) {
+            self.st.shade_model = mode;
         }
-        if mode != GL_FLAT && mode != GL_SMOOTH {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        self.st.shade_model = mode;
     }
 
     /// glProvokingVertex (GL 3.3 §2.19): which vertex of a primitive
     /// gives flat-shaded values; GL_INVALID_ENUM for another mode.
     pub fn provoking_vertex(&mut self, mode: u32) {
-        if self.reject_in_begin() {
-            return;
+        let valid = matches!(mode, GL_FIRST_VERTEX_CONVENTION | GL_LAST_VERTEX_CONVENTION);
+        if self.setter_accepts(valid, GL_INVALID_ENUM) {
+            self.st.provoking_vertex = mode;
         }
-        if mode != GL_FIRST_VERTEX_CONVENTION && mode != GL_LAST_VERTEX_CONVENTION {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        self.st.provoking_vertex = mode;
     }
 
     /// Whether the first-vertex provoking convention is in effect.
@@ -99,14 +72,9 @@ impl Context {
     /// framebuffers with sample buffers (GL_SAMPLE_BUFFERS 1), which
     /// shaderbox's are not yet: it is kept and queried.
     pub fn sample_maski(&mut self, index: u32, mask: u32) {
-        if self.reject_in_begin() {
-            return;
+        if self.setter_accepts(index < MAX_SAMPLE_MASK_WORDS, GL_INVALID_VALUE) {
+            self.st.sample_mask = mask;
         }
-        if index >= MAX_SAMPLE_MASK_WORDS {
-            self.set_error(GL_INVALID_VALUE);
-            return;
-        }
-        self.st.sample_mask = mask;
     }
 
     /// glGetMultisamplefv(GL_SAMPLE_POSITION, index): GL_INVALID_ENUM for
@@ -127,26 +95,18 @@ impl Context {
 
     /// glPointSize.
     pub fn point_size(&mut self, size: f32) {
-        if self.reject_in_begin() {
-            return;
+        // NaN is not above 0 either.
+        if self.setter_accepts(size > 0.0, GL_INVALID_VALUE) {
+            self.st.point.size = size;
         }
-        if size.is_nan() || size <= 0.0 {
-            self.set_error(GL_INVALID_VALUE);
-            return;
-        }
-        self.st.point.size = size;
     }
 
     /// glLineWidth.
     pub fn line_width(&mut self, width: f32) {
-        if self.reject_in_begin() {
-            return;
+        // NaN is not above 0 either.
+        if self.setter_accepts(width > 0.0, GL_INVALID_VALUE) {
+            self.st.line_width = width;
         }
-        if width.is_nan() || width <= 0.0 {
-            self.set_error(GL_INVALID_VALUE);
-            return;
-        }
-        self.st.line_width = width;
     }
 
     /// glPointParameter{f,i,fv,iv} (a scalar form of

@@ -111,12 +111,7 @@ impl Context {
         draw_buffers: [Option<usize>; 8],
     ) -> Target {
         let mut size = None;
-        let all = f
-            .color
-            .iter()
-            .flatten()
-            .chain(f.depth.iter())
-            .chain(f.stencil.iter());
+        let all = f.attachments();
         for a in all {
             if let Some((w, h, _)) = self.attachment_info(a) {
                 size.get_or_insert((w, h));

@@ -290,19 +290,15 @@ impl VertexState {
     pub fn current_value(&self, src: AttribSource) -> [f32; 4] {
         match src {
             AttribSource::Position => [0.0, 0.0, 0.0, 1.0],
-            AttribSource::Color => self.color,
-            AttribSource::SecondaryColor => self.secondary,
-            AttribSource::Normal => self.normal,
-            AttribSource::FogCoord => self.fog,
-            AttribSource::TexCoord(i) => self
-                .tex
-                .get(i as usize)
-                .copied()
-                .unwrap_or([0.0, 0.0, 0.0, 1.0]),
             AttribSource::Generic(i) => match self.current_generic(i as usize) {
                 Some((v, kind)) => float_view(v, kind),
                 None => [0.0, 0.0, 0.0, 1.0],
             },
+            _ => fixed_value(
+                src,
+                [self.color, self.secondary, self.normal, self.fog],
+                &self.tex,
+            ),
         }
     }
 
@@ -335,21 +331,35 @@ impl ImmVertex {
     pub fn value(&self, src: AttribSource) -> [f32; 4] {
         match src {
             AttribSource::Position | AttribSource::Generic(0) => self.position,
-            AttribSource::Color => self.color,
-            AttribSource::SecondaryColor => self.secondary,
-            AttribSource::Normal => self.normal,
-            AttribSource::FogCoord => self.fog,
-            AttribSource::TexCoord(i) => self
-                .tex
-                .get(i as usize)
-                .copied()
-                .unwrap_or([0.0, 0.0, 0.0, 1.0]),
             AttribSource::Generic(i) => self
                 .generic
                 .get(i as usize)
                 .copied()
                 .unwrap_or([0.0, 0.0, 0.0, 1.0]),
+            _ => fixed_value(
+                src,
+                [self.color, self.secondary, self.normal, self.fog],
+                &self.tex,
+            ),
         }
+    }
+}
+
+/// The value of the fixed-function attribute `src` (colour, secondary
+/// colour, normal, fog coordinate or texture coordinates) among `fixed`
+/// (those first four, in that order) and the per-unit `tex`, where the
+/// current values and an immediate-mode vertex keep them alike; an unknown
+/// unit reads (0, 0, 0, 1). The position and generic attributes, which
+/// the two answer differently, are the callers'.
+fn fixed_value(src: AttribSource, fixed: [[f32; 4]; 4], tex: &[[f32; 4]]) -> [f32; 4] {
+    let [color, secondary, normal, fog] = fixed;
+    match src {
+        AttribSource::Color => color,
+        AttribSource::SecondaryColor => secondary,
+        AttribSource::Normal => normal,
+        AttribSource::FogCoord => fog,
+        AttribSource::TexCoord(i) => tex.get(i as usize).copied().unwrap_or([0.0, 0.0, 0.0, 1.0]),
+        AttribSource::Position | AttribSource::Generic(_) => [0.0, 0.0, 0.0, 1.0],
     }
 }
 
@@ -616,24 +626,11 @@ impl Context {
             return;
         }
         let sizes = [1, 2, 3, 4, SIZE_BGRA];
-        let types = [
-            GL_BYTE,
-            GL_UNSIGNED_BYTE,
-            GL_SHORT,
-            GL_UNSIGNED_SHORT,
-            GL_INT,
-            GL_UNSIGNED_INT,
-            GL_FLOAT,
-            GL_DOUBLE,
-            GL_HALF_FLOAT,
-            GL_INT_2_10_10_10_REV,
-            GL_UNSIGNED_INT_2_10_10_10_REV,
-        ];
         // GL 3.3 §2.8: BGRA only for unsigned bytes and the packed types,
         // normalized; the packed types only with four components.
         let bgra = size == SIZE_BGRA;
         if sizes.contains(&size)
-            && types.contains(&ty)
+            && GENERIC_TYPES.contains(&ty)
             && stride >= 0
             && ((bgra && !(ty == GL_UNSIGNED_BYTE || is_packed(ty)))
                 || (is_packed(ty) && !(size == 4 || bgra))
@@ -647,7 +644,7 @@ impl Context {
             size,
             &sizes,
             ty,
-            &types,
+            &GENERIC_TYPES,
             normalized,
             stride,
             data,
@@ -712,17 +709,7 @@ impl Context {
     }
 }
 
-const ALL_TYPES: [u32; 8] = [
-    GL_BYTE,
-    GL_UNSIGNED_BYTE,
-    GL_SHORT,
-    GL_UNSIGNED_SHORT,
-    GL_INT,
-    GL_UNSIGNED_INT,
-    GL_FLOAT,
-    GL_DOUBLE,
-];
-
+/// The component types of integer arrays (glVertexAttribIPointer).
 const INTEGER_TYPES: [u32; 6] = [
     GL_BYTE,
     GL_UNSIGNED_BYTE,
@@ -731,6 +718,36 @@ const INTEGER_TYPES: [u32; 6] = [
     GL_INT,
     GL_UNSIGNED_INT,
 ];
+
+/// The component types of the fixed-function arrays: the integer ones and
+/// the two float ones.
+const ALL_TYPES: [u32; 8] = concat(INTEGER_TYPES, [GL_FLOAT, GL_DOUBLE]);
+
+/// The component types of glVertexAttribPointer: those and, from GL 3.3,
+/// half floats and the packed 2_10_10_10 words.
+const GENERIC_TYPES: [u32; 11] = concat(
+    ALL_TYPES,
+    [
+        GL_HALF_FLOAT,
+        GL_INT_2_10_10_10_REV,
+        GL_UNSIGNED_INT_2_10_10_10_REV,
+    ],
+);
+
+/// `a` then `b`, for building one type table from another.
+const fn concat<const A: usize, const B: usize, const C: usize>(
+    a: [u32; A],
+    b: [u32; B],
+) -> [u32; C] {
+    assert!(A + B == C);
+    let mut out = [0; C];
+    let mut i = 0;
+    while i < C {
+        out[i] = if i < A { a[i] } else { b[i - A] };
+        i += 1;
+    }
+    out
+}
 
 #[derive(Clone, Copy)]
 enum PointerTarget {

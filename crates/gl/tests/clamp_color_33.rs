@@ -4,7 +4,7 @@
 //! and the core profile's refusals.
 
 use gl::enums::*;
-use gl::{ArrayData, Context};
+use gl::Context;
 
 mod common;
 
@@ -15,24 +15,30 @@ const FS: &str = "#version 330 compatibility\n\
     out vec4 c;\n\
     void main() { c = vec4(2.0, -1.0, 0.5, 1.0); }";
 
+/// The read, fragment and vertex colour clamps.
+fn clamps(ctx: &mut Context) -> [u32; 3] {
+    [
+        GL_CLAMP_READ_COLOR,
+        GL_CLAMP_FRAGMENT_COLOR,
+        GL_CLAMP_VERTEX_COLOR,
+    ]
+    .map(|pname| ctx.get_integerv(pname)[0] as u32)
+}
+
+/// [`clamps`] of a new context: fixed-point buffers only for reads and
+/// fragments, on for vertex colours.
+const DEFAULT_CLAMPS: [u32; 3] = [GL_FIXED_ONLY, GL_FIXED_ONLY, GL_TRUE];
+
 /// Draws [`FS`]'s out-of-range colour into an RGBA32F renderbuffer of a
 /// new framebuffer object and reads it back as floats.
 fn draw_float(ctx: &mut Context) -> [f32; 4] {
-    let rb = ctx.gen_renderbuffers(1)[0];
-    ctx.bind_renderbuffer(GL_RENDERBUFFER, rb);
-    ctx.renderbuffer_storage(GL_RENDERBUFFER, GL_RGBA32F, 4, 4);
-    let fb = ctx.gen_framebuffers(1)[0];
-    ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
-    ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
+    common::float_framebuffer(ctx, 4, 4);
     assert_eq!(
         ctx.check_framebuffer_status(GL_FRAMEBUFFER),
         GL_FRAMEBUFFER_COMPLETE
     );
     let p = common::program(ctx, VS, FS);
-    let pos = ctx.get_attrib_location(p, "pos") as u32;
-    let quad = [-1.0f32, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
-    ctx.vertex_attrib_pointer(pos, 2, GL_FLOAT, false, 0, ArrayData::from_f32(&quad));
-    ctx.enable_vertex_attrib_array(pos);
+    common::quad_vertex_array(ctx, p, "pos");
     ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
     assert_eq!(ctx.take_draw_error(), None);
     ctx.read_pixels_f32(1, 1, 1, 1)[0]
@@ -43,18 +49,7 @@ fn float_buffers_are_clamped_as_clamp_color_says() {
     // The defaults: FIXED_ONLY for fragments and reads, so a float buffer
     // keeps and returns the values as they are.
     let mut ctx = Context::with_api(4, 4, gl::Api::GL33_COMPAT);
-    assert_eq!(
-        ctx.get_integerv(GL_CLAMP_READ_COLOR),
-        vec![GL_FIXED_ONLY as i32]
-    );
-    assert_eq!(
-        ctx.get_integerv(GL_CLAMP_FRAGMENT_COLOR),
-        vec![GL_FIXED_ONLY as i32]
-    );
-    assert_eq!(
-        ctx.get_integerv(GL_CLAMP_VERTEX_COLOR),
-        vec![GL_TRUE as i32]
-    );
+    assert_eq!(clamps(&mut ctx), DEFAULT_CLAMPS);
     assert_eq!(draw_float(&mut ctx), [2.0, -1.0, 0.5, 1.0]);
     // Read clamping on: the same buffer reads clamped.
     ctx.clamp_color(GL_CLAMP_READ_COLOR, GL_TRUE);
@@ -85,18 +80,7 @@ fn push_and_pop_attrib_restore_the_clamps() {
     ctx.clamp_color(GL_CLAMP_FRAGMENT_COLOR, GL_FALSE);
     ctx.clamp_color(GL_CLAMP_VERTEX_COLOR, GL_FIXED_ONLY);
     ctx.pop_attrib();
-    assert_eq!(
-        ctx.get_integerv(GL_CLAMP_READ_COLOR),
-        vec![GL_FIXED_ONLY as i32]
-    );
-    assert_eq!(
-        ctx.get_integerv(GL_CLAMP_FRAGMENT_COLOR),
-        vec![GL_FIXED_ONLY as i32]
-    );
-    assert_eq!(
-        ctx.get_integerv(GL_CLAMP_VERTEX_COLOR),
-        vec![GL_TRUE as i32]
-    );
+    assert_eq!(clamps(&mut ctx), DEFAULT_CLAMPS);
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
 }
 

@@ -4,7 +4,7 @@
 //! checked pixel by pixel.
 
 use gl::enums::*;
-use gl::{ArrayData, Context};
+use gl::Context;
 
 mod common;
 use common::program;
@@ -24,15 +24,7 @@ fn draw_strip(ctx: &mut Context, p: u32, pos: &[[f32; 4]], val: &[[f32; 4]]) {
         }
         assert!(loc >= 0, "{name}");
         let flat: Vec<f32> = data.iter().flatten().copied().collect();
-        ctx.vertex_attrib_pointer(
-            loc as u32,
-            4,
-            GL_FLOAT,
-            false,
-            0,
-            ArrayData::from_f32(&flat),
-        );
-        ctx.enable_vertex_attrib_array(loc as u32);
+        common::float_array(ctx, loc as u32, 4, &flat);
     }
     ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, pos.len() as i32);
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
@@ -341,8 +333,7 @@ fn clipped_noperspective_scene_is_identical_whatever_the_thread_count() {
         ctx.blend_func(GL_ONE, GL_ONE);
         for (name, data) in [("pos", &pos), ("val", &val)] {
             let loc = ctx.get_attrib_location(p, name) as u32;
-            ctx.vertex_attrib_pointer(loc, 4, GL_FLOAT, false, 0, ArrayData::from_f32(data));
-            ctx.enable_vertex_attrib_array(loc);
+            common::float_array(&mut ctx, loc, 4, data);
         }
         ctx.draw_arrays(GL_TRIANGLES, 0, (pos.len() / 4) as i32);
         assert_eq!(ctx.take_draw_error(), None);

@@ -4,7 +4,9 @@
 //! SRC1 blend factors read; glGetFragDataIndex, the limit and the errors.
 
 use gl::enums::*;
-use gl::{ArrayData, Context};
+use gl::Context;
+
+mod common;
 
 const VS: &str = "#version 330 core\n\
     in vec2 pos;\n\
@@ -24,12 +26,7 @@ const FS_LAYOUT: &str = "#version 330 core\n\
 /// A 4×4 context drawing into an RGBA32F renderbuffer (exact floats).
 fn float_target() -> Context {
     let mut ctx = Context::with_api(4, 4, gl::Api::GL33_CORE);
-    let rb = ctx.gen_renderbuffers(1)[0];
-    ctx.bind_renderbuffer(GL_RENDERBUFFER, rb);
-    ctx.renderbuffer_storage(GL_RENDERBUFFER, GL_RGBA32F, 4, 4);
-    let fb = ctx.gen_framebuffers(1)[0];
-    ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
-    ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
+    common::float_framebuffer(&mut ctx, 4, 4);
     ctx
 }
 
@@ -37,45 +34,10 @@ fn float_target() -> Context {
 /// [`DST`], draws a full quad with blending `src`/`dst` and returns the
 /// pixel.
 fn draw(ctx: &mut Context, fs: &str, bind: impl Fn(&mut Context, u32), f: (u32, u32)) -> [f32; 4] {
-    let p = ctx.create_program();
-    for (kind, src) in [(GL_VERTEX_SHADER, VS), (GL_FRAGMENT_SHADER, fs)] {
-        let s = ctx.create_shader(kind);
-        ctx.shader_source(s, &[src]);
-        ctx.compile_shader(s);
-        assert_eq!(
-            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
-            1,
-            "{}",
-            ctx.get_shader_info_log(s)
-        );
-        ctx.attach_shader(p, s);
-    }
+    let p = common::attached(ctx, Some(VS), Some(fs));
     bind(ctx, p);
-    ctx.link_program(p);
-    assert_eq!(
-        ctx.get_programiv(p, GL_LINK_STATUS),
-        1,
-        "{}",
-        ctx.get_program_info_log(p)
-    );
-    ctx.use_program(p);
-    let vao = ctx.gen_vertex_arrays(1)[0];
-    ctx.bind_vertex_array(vao);
-    let b = ctx.gen_buffers(1)[0];
-    ctx.bind_buffer(GL_ARRAY_BUFFER, b);
-    let quad: Vec<u8> = [-1.0f32, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0]
-        .iter()
-        .flat_map(|f| f.to_le_bytes())
-        .collect();
-    ctx.buffer_data(
-        GL_ARRAY_BUFFER,
-        quad.len() as isize,
-        Some(&quad),
-        GL_STATIC_DRAW,
-    );
-    let pos = ctx.get_attrib_location(p, "pos") as u32;
-    ctx.vertex_attrib_pointer(pos, 2, GL_FLOAT, false, 0, ArrayData::Offset(0));
-    ctx.enable_vertex_attrib_array(pos);
+    common::link_and_use(ctx, p);
+    common::quad_vertex_array(ctx, p, "pos");
     ctx.clear_color(DST[0], DST[1], DST[2], DST[3]);
     ctx.clear(GL_COLOR_BUFFER_BIT);
     ctx.enable(GL_BLEND);

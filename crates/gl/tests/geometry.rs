@@ -223,27 +223,15 @@ out float v;
 void main() { for (int i = 0; i < 4; i++) { v = vx[0] * 10.0 + float(i); EmitVertex(); } }";
     let fs = "#version 150\nout vec4 c;\nvoid main() { c = vec4(1.0); }";
     let mut ctx = Context::with_api(W, H, Api::GL33_COMPAT);
-    let p = ctx.create_program();
-    for (kind, src) in [
+    let stages = [
         (GL_VERTEX_SHADER, vs),
         (GL_GEOMETRY_SHADER, gs),
         (GL_FRAGMENT_SHADER, fs),
-    ] {
-        let s = ctx.create_shader(kind);
-        ctx.shader_source(s, &[src]);
-        ctx.compile_shader(s);
-        ctx.attach_shader(p, s);
-    }
+    ];
+    let p = common::attached_stages(&mut ctx, &stages);
     ctx.bind_attrib_location(p, 0, "x");
     ctx.transform_feedback_varyings(p, &["v".to_string()], GL_INTERLEAVED_ATTRIBS);
-    ctx.link_program(p);
-    assert_eq!(
-        ctx.get_programiv(p, GL_LINK_STATUS),
-        1,
-        "{}",
-        ctx.get_program_info_log(p)
-    );
-    ctx.use_program(p);
+    common::link_and_use(&mut ctx, p);
     let b = ctx.gen_buffers(1)[0];
     ctx.bind_buffer(GL_TRANSFORM_FEEDBACK_BUFFER, b);
     ctx.buffer_data(GL_TRANSFORM_FEEDBACK_BUFFER, 64 * 4, None, GL_STREAM_READ);
@@ -404,25 +392,13 @@ void main(void)
     assert!(ctx
         .get_string(GL_EXTENSIONS)
         .contains("GL_EXT_geometry_shader4"));
-    let shader = |ctx: &mut Context, kind: u32, src: &str| {
-        let s = ctx.create_shader(kind);
-        ctx.shader_source(s, &[src]);
-        ctx.compile_shader(s);
-        assert_eq!(
-            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
-            1,
-            "{}",
-            ctx.get_shader_info_log(s)
-        );
-        s
-    };
-    let v = shader(&mut ctx, GL_VERTEX_SHADER, vs);
-    let g = shader(&mut ctx, GL_GEOMETRY_SHADER_EXT, gs);
-    let f = shader(&mut ctx, GL_FRAGMENT_SHADER, fs);
-    let p = ctx.create_program();
-    ctx.attach_shader(p, f);
-    ctx.attach_shader(p, v);
-    ctx.attach_shader(p, g);
+    // Attached in the lecture's order.
+    let stages = [
+        (GL_FRAGMENT_SHADER, fs),
+        (GL_VERTEX_SHADER, vs),
+        (GL_GEOMETRY_SHADER_EXT, gs),
+    ];
+    let p = common::attached_stages(&mut ctx, &stages);
     ctx.program_parameteri(p, GL_GEOMETRY_INPUT_TYPE, GL_TRIANGLES as i32);
     ctx.program_parameteri(p, GL_GEOMETRY_OUTPUT_TYPE, GL_TRIANGLE_STRIP as i32);
     let max = ctx.get_integerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES_EXT)[0];
@@ -434,14 +410,7 @@ void main(void)
         ctx.get_programiv(p, GL_GEOMETRY_INPUT_TYPE_EXT),
         GL_TRIANGLES as i32
     );
-    ctx.link_program(p);
-    assert_eq!(
-        ctx.get_programiv(p, GL_LINK_STATUS),
-        1,
-        "{}",
-        ctx.get_program_info_log(p)
-    );
-    ctx.use_program(p);
+    common::link_and_use(&mut ctx, p);
     ctx.enable(GL_VERTEX_PROGRAM_TWO_SIDE);
     ctx.clear_color(0.0, 0.0, 1.0, 1.0);
     ctx.clear(GL_COLOR_BUFFER_BIT);

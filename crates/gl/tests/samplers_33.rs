@@ -4,15 +4,13 @@
 
 use gl::enums::*;
 use gl::param::Param;
-use gl::{ArrayData, Context};
+use gl::Context;
 
 mod common;
 
 const VS: &str = "#version 330\n\
     in vec2 pos;\n\
     void main() { gl_Position = vec4(pos, 0.0, 1.0); }";
-
-const FULL_QUAD: [f32; 8] = [-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0];
 
 /// A context with a 2×1 RGBA8 texture on unit 1 (texel 0 red, texel 1
 /// green; the texture's own filters LINEAR, wraps REPEAT) and a program
@@ -47,20 +45,7 @@ fn setup() -> (Context, u32) {
     let p = common::program(&mut ctx, VS, fs);
     let s = ctx.get_uniform_location(p, "s");
     ctx.uniform_1i(s, 1);
-    let vao = ctx.gen_vertex_arrays(1)[0];
-    ctx.bind_vertex_array(vao);
-    let b = ctx.gen_buffers(1)[0];
-    ctx.bind_buffer(GL_ARRAY_BUFFER, b);
-    let bytes: Vec<u8> = FULL_QUAD.iter().flat_map(|f| f.to_le_bytes()).collect();
-    ctx.buffer_data(
-        GL_ARRAY_BUFFER,
-        bytes.len() as isize,
-        Some(&bytes),
-        GL_STATIC_DRAW,
-    );
-    let pos = ctx.get_attrib_location(p, "pos") as u32;
-    ctx.vertex_attrib_pointer(pos, 2, GL_FLOAT, false, 0, ArrayData::Offset(0));
-    ctx.enable_vertex_attrib_array(pos);
+    common::quad_vertex_array(&mut ctx, p, "pos");
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
     (ctx, p)
 }
@@ -166,20 +151,7 @@ fn a_rectangle_texture_under_a_repeating_sampler_is_incomplete() {
         out vec4 color;\n\
         void main() { color = texture(s, vec2(0.5)); }";
     let p = common::program(&mut ctx, VS, fs);
-    let vao = ctx.gen_vertex_arrays(1)[0];
-    ctx.bind_vertex_array(vao);
-    let b = ctx.gen_buffers(1)[0];
-    ctx.bind_buffer(GL_ARRAY_BUFFER, b);
-    let bytes: Vec<u8> = FULL_QUAD.iter().flat_map(|f| f.to_le_bytes()).collect();
-    ctx.buffer_data(
-        GL_ARRAY_BUFFER,
-        bytes.len() as isize,
-        Some(&bytes),
-        GL_STATIC_DRAW,
-    );
-    let pos = ctx.get_attrib_location(p, "pos") as u32;
-    ctx.vertex_attrib_pointer(pos, 2, GL_FLOAT, false, 0, ArrayData::Offset(0));
-    ctx.enable_vertex_attrib_array(pos);
+    common::quad_vertex_array(&mut ctx, p, "pos");
     let draw = |ctx: &mut Context| {
         ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
         assert_eq!(ctx.take_draw_error(), None);

@@ -41,8 +41,7 @@ fn provoking_vertex_picks_the_flat_value() {
     let mut ctx = Context::with_api(16, 16, gl::Api::GL33_COMPAT);
     let p = program(&mut ctx, FLAT_VS, FLAT_FS);
     let pos = ctx.get_attrib_location(p, "pos") as u32;
-    ctx.vertex_attrib_pointer(pos, 2, GL_FLOAT, false, 0, ArrayData::from_f32(&STRIP));
-    ctx.enable_vertex_attrib_array(pos);
+    common::float_array(&mut ctx, pos, 2, &STRIP);
     assert_eq!(
         ctx.get_integerv(GL_PROVOKING_VERTEX),
         vec![GL_LAST_VERTEX_CONVENTION as i32]
@@ -146,19 +145,7 @@ const QUAD_VS: &str = "#version 130\n\
     void main() { gl_Position = vec4(pos, 0.0, 1.0); }";
 
 fn quad_program(ctx: &mut Context, fs: &str, bind: &[(&str, u32)]) -> Result<u32, String> {
-    let p = ctx.create_program();
-    for (kind, src) in [(GL_VERTEX_SHADER, QUAD_VS), (GL_FRAGMENT_SHADER, fs)] {
-        let s = ctx.create_shader(kind);
-        ctx.shader_source(s, &[src]);
-        ctx.compile_shader(s);
-        assert_eq!(
-            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
-            1,
-            "{}",
-            ctx.get_shader_info_log(s)
-        );
-        ctx.attach_shader(p, s);
-    }
+    let p = common::attached(ctx, Some(QUAD_VS), Some(fs));
     ctx.bind_attrib_location(p, 0, "pos");
     for &(name, loc) in bind {
         ctx.bind_frag_data_location(p, loc, name);
@@ -168,8 +155,7 @@ fn quad_program(ctx: &mut Context, fs: &str, bind: &[(&str, u32)]) -> Result<u32
         return Err(ctx.get_program_info_log(p));
     }
     ctx.use_program(p);
-    ctx.vertex_attrib_pointer(0, 2, GL_FLOAT, false, 0, ArrayData::from_f32(&STRIP));
-    ctx.enable_vertex_attrib_array(0);
+    common::float_array(ctx, 0, 2, &STRIP);
     Ok(p)
 }
 

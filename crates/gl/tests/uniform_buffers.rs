@@ -4,7 +4,7 @@
 
 use gl::enums::*;
 use gl::uniform_block::INVALID_INDEX;
-use gl::{ArrayData, Context};
+use gl::Context;
 
 mod common;
 use common::program;
@@ -191,8 +191,7 @@ fn draws_read_blocks_from_their_binding_points() {
         -1.0, -1.0, 0.0, 1.0, 1.0, -1.0, 0.0, 1.0, -1.0, 1.0, 0.0, 1.0, 1.0, 1.0, 0.0, 1.0,
     ];
     let pos = ctx.get_attrib_location(p, "pos") as u32;
-    ctx.vertex_attrib_pointer(pos, 4, GL_FLOAT, false, 0, ArrayData::from_f32(&quad));
-    ctx.enable_vertex_attrib_array(pos);
+    common::float_array(&mut ctx, pos, 4, &quad);
     let buf = ctx.gen_buffers(1)[0];
     ctx.bind_buffer(GL_UNIFORM_BUFFER, buf);
     let bytes = buffer_bytes([0.25, 0.5, 0.75, 1.0], [0.1, 0.1, 0.1, 0.0]);
@@ -309,8 +308,7 @@ void main() { o = pal[0].c + pal[1].c + vec4(0.0, 0.0, mvp[0][0], 0.0); }
         -1.0, -1.0, 0.0, 1.0, 1.0, -1.0, 0.0, 1.0, -1.0, 1.0, 0.0, 1.0, 1.0, 1.0, 0.0, 1.0,
     ];
     let pos = ctx.get_attrib_location(p, "pos") as u32;
-    ctx.vertex_attrib_pointer(pos, 4, GL_FLOAT, false, 0, ArrayData::from_f32(&quad));
-    ctx.enable_vertex_attrib_array(pos);
+    common::float_array(&mut ctx, pos, 4, &quad);
     ctx.clear_color(0.0, 0.0, 1.0, 1.0);
     ctx.clear(GL_COLOR_BUFFER_BIT);
     ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
@@ -344,8 +342,7 @@ void main() { o = pass.v * 0.5 + fcol.c.wzyx * 0.5; }
         -1.0, -1.0, 0.0, 1.0, 1.0, -1.0, 0.0, 1.0, -1.0, 1.0, 0.0, 1.0, 1.0, 1.0, 0.0, 1.0,
     ];
     let pos = ctx.get_attrib_location(p, "pos") as u32;
-    ctx.vertex_attrib_pointer(pos, 4, GL_FLOAT, false, 0, ArrayData::from_f32(&quad));
-    ctx.enable_vertex_attrib_array(pos);
+    common::float_array(&mut ctx, pos, 4, &quad);
     let bytes = f32_bytes(&[0.2, 0.4, 0.6, 1.0]);
     let b = ctx.gen_buffers(1)[0];
     ctx.bind_buffer(GL_UNIFORM_BUFFER, b);

@@ -6,7 +6,7 @@ use gl::enums::*;
 use gl::{ArrayData, Context};
 
 mod common;
-use common::program;
+use common::{float_array, program};
 
 /// The colour buffer, RGBA8, bottom row first.
 fn image(ctx: &mut Context) -> Vec<[u8; 4]> {
@@ -81,8 +81,7 @@ fn integer_attributes_arrive_unconverted() {
         attrib(&mut ctx, p, "code"),
         attrib(&mut ctx, p, "ucode"),
     );
-    ctx.vertex_attrib_pointer(pos, 2, GL_FLOAT, false, 0, ArrayData::from_f32(&FULL_QUAD));
-    ctx.enable_vertex_attrib_array(pos);
+    float_array(&mut ctx, pos, 2, &FULL_QUAD);
     let codes: Vec<i32> = [i32::MIN, i32::MAX, -1, 16777217].repeat(4);
     let ucodes: Vec<u32> = [u32::MAX, 1 << 31, 0, 16777219].repeat(4);
     // Arrays.
@@ -124,8 +123,7 @@ fn integer_attributes_arrive_unconverted() {
         void main() { gl_Position = vec4(pos, 0.0, 1.0); ok = int(code == ivec2(-32768, -1)); }";
     let p = program(&mut ctx, vs16, fs);
     let (pos, code) = (attrib(&mut ctx, p, "pos"), attrib(&mut ctx, p, "code"));
-    ctx.vertex_attrib_pointer(pos, 2, GL_FLOAT, false, 0, ArrayData::from_f32(&FULL_QUAD));
-    ctx.enable_vertex_attrib_array(pos);
+    float_array(&mut ctx, pos, 2, &FULL_QUAD);
     let shorts: Vec<u16> = [0x8000u16, 0xffff].repeat(4);
     ctx.vertex_attrib_i_pointer(code, 2, GL_SHORT, 0, ArrayData::from_u16(&shorts));
     ctx.enable_vertex_attrib_array(code);
@@ -139,42 +137,39 @@ const INSTANCED_FS: &str = "#version 140\n\
     out vec4 color;\n\
     void main() { color = c; }";
 
+/// The vertex shaders (inputs `pos` and `tint`, flat output `c`) of an
+/// instanced draw and of the separate draws it must equal: the same
+/// `main` body, which reads the instance number from `instance`, taken
+/// from `gl_InstanceID` in the first and from a uniform set before each
+/// draw in the second.
+fn instanced_and_separate_vs(body: &str) -> [String; 2] {
+    let io = "in vec2 pos;\nin vec4 tint;\nflat out vec4 c;\n";
+    [
+        format!("#version 140\n{io}void main() {{\nint instance = gl_InstanceID;\n{body}\n}}"),
+        format!("#version 140\nuniform int instance;\n{io}void main() {{\n{body}\n}}"),
+    ]
+}
+
 /// A draw of N instances renders what N draws render, with
 /// `gl_InstanceID` and a divisor-2 colour array standing for a uniform
 /// and a current value changed between the draws.
 #[test]
 fn instanced_draw_equals_separate_draws() {
-    let instanced_vs = "#version 140\n\
-        in vec2 pos;\n\
-        in vec4 tint;\n\
-        flat out vec4 c;\n\
-        void main() {\n\
-          vec2 o = vec2(-0.75 + 0.5 * float(gl_InstanceID), 0.0);\n\
-          gl_Position = vec4(pos * 0.2 + o, 0.0, 1.0);\n\
-          c = tint;\n\
-        }";
-    let separate_vs = "#version 140\n\
-        uniform int instance;\n\
-        in vec2 pos;\n\
-        in vec4 tint;\n\
-        flat out vec4 c;\n\
-        void main() {\n\
-          vec2 o = vec2(-0.75 + 0.5 * float(instance), 0.0);\n\
-          gl_Position = vec4(pos * 0.2 + o, 0.0, 1.0);\n\
-          c = tint;\n\
-        }";
+    let [instanced_vs, separate_vs] = instanced_and_separate_vs(
+        "vec2 o = vec2(-0.75 + 0.5 * float(instance), 0.0);
+        gl_Position = vec4(pos * 0.2 + o, 0.0, 1.0);
+        c = tint;",
+    );
     let tints = [
         1.0, 0.0, 0.0, 1.0, //
         0.0, 0.0, 1.0, 1.0,
     ];
     let instanced = {
         let mut ctx = Context::new(32, 16);
-        let p = program(&mut ctx, instanced_vs, INSTANCED_FS);
+        let p = program(&mut ctx, &instanced_vs, INSTANCED_FS);
         let (pos, tint) = (attrib(&mut ctx, p, "pos"), attrib(&mut ctx, p, "tint"));
-        ctx.vertex_attrib_pointer(pos, 2, GL_FLOAT, false, 0, ArrayData::from_f32(&FULL_QUAD));
-        ctx.enable_vertex_attrib_array(pos);
-        ctx.vertex_attrib_pointer(tint, 4, GL_FLOAT, false, 0, ArrayData::from_f32(&tints));
-        ctx.enable_vertex_attrib_array(tint);
+        float_array(&mut ctx, pos, 2, &FULL_QUAD);
+        float_array(&mut ctx, tint, 4, &tints);
         ctx.vertex_attrib_divisor(tint, 2);
         assert_eq!(
             ctx.get_vertex_attrib_array(tint, GL_VERTEX_ATTRIB_ARRAY_DIVISOR),
@@ -188,11 +183,10 @@ fn instanced_draw_equals_separate_draws() {
     };
     let separate = {
         let mut ctx = Context::new(32, 16);
-        let p = program(&mut ctx, separate_vs, INSTANCED_FS);
+        let p = program(&mut ctx, &separate_vs, INSTANCED_FS);
         let (pos, tint) = (attrib(&mut ctx, p, "pos"), attrib(&mut ctx, p, "tint"));
         let u = ctx.get_uniform_location(p, "instance");
-        ctx.vertex_attrib_pointer(pos, 2, GL_FLOAT, false, 0, ArrayData::from_f32(&FULL_QUAD));
-        ctx.enable_vertex_attrib_array(pos);
+        float_array(&mut ctx, pos, 2, &FULL_QUAD);
         clear(&mut ctx);
         for i in 0..4 {
             ctx.uniform_1i(u, i);
@@ -310,8 +304,7 @@ fn primitive_restart_splits_strips() {
         let shifted: Vec<f32> = std::iter::repeat_n(0.0, 2 * base.max(0) as usize)
             .chain(pos.iter().copied())
             .collect();
-        ctx.vertex_attrib_pointer(a, 2, GL_FLOAT, false, 0, ArrayData::from_f32(&shifted));
-        ctx.enable_vertex_attrib_array(a);
+        float_array(&mut ctx, a, 2, &shifted);
         if restart {
             ctx.enable(GL_PRIMITIVE_RESTART);
         }
@@ -409,8 +402,7 @@ fn vertex_array_objects_draw_their_own_arrays() {
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
     // Client arrays in the default object after the others.
     ctx.bind_vertex_array(0);
-    ctx.vertex_attrib_pointer(pos, 2, GL_FLOAT, false, 0, ArrayData::from_f32(&FULL_QUAD));
-    ctx.enable_vertex_attrib_array(pos);
+    float_array(&mut ctx, pos, 2, &FULL_QUAD);
     ctx.vertex_attrib_4f(col, 0.0, 1.0, 0.0, 1.0);
     ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
     assert_eq!(pixel(&mut ctx, 6, 4), GREEN);
@@ -473,25 +465,11 @@ fn draw_errors() {
 /// fans, render what one draw per instance renders.
 #[test]
 fn instanced_restart_strips_equal_separate_draws() {
-    let instanced_vs = "#version 140\n\
-        in vec2 pos;\n\
-        in vec4 tint;\n\
-        flat out vec4 c;\n\
-        void main() {\n\
-          vec2 o = vec2(0.0, -0.9 + 0.3 * float(gl_InstanceID));\n\
-          gl_Position = vec4(pos * vec2(1.0, 0.1) + o, 0.0, 1.0);\n\
-          c = tint + vec4(float(gl_VertexID) / 64.0, 0.0, 0.0, 0.0);\n\
-        }";
-    let separate_vs = "#version 140\n\
-        uniform int instance;\n\
-        in vec2 pos;\n\
-        in vec4 tint;\n\
-        flat out vec4 c;\n\
-        void main() {\n\
-          vec2 o = vec2(0.0, -0.9 + 0.3 * float(instance));\n\
-          gl_Position = vec4(pos * vec2(1.0, 0.1) + o, 0.0, 1.0);\n\
-          c = tint + vec4(float(gl_VertexID) / 64.0, 0.0, 0.0, 0.0);\n\
-        }";
+    let [instanced_vs, separate_vs] = instanced_and_separate_vs(
+        "vec2 o = vec2(0.0, -0.9 + 0.3 * float(instance));
+        gl_Position = vec4(pos * vec2(1.0, 0.1) + o, 0.0, 1.0);
+        c = tint + vec4(float(gl_VertexID) / 64.0, 0.0, 0.0, 0.0);",
+    );
     // Vertices 3.. : two squares side by side (left, right), as strips.
     let mut pos = vec![0.0f32; 6];
     pos.extend([
@@ -508,11 +486,9 @@ fn instanced_restart_strips_equal_separate_draws() {
             let mut ctx = Context::new(24, 24);
             let p = program(&mut ctx, vs, INSTANCED_FS);
             let (a, t) = (attrib(&mut ctx, p, "pos"), attrib(&mut ctx, p, "tint"));
-            ctx.vertex_attrib_pointer(a, 2, GL_FLOAT, false, 0, ArrayData::from_f32(&pos));
-            ctx.enable_vertex_attrib_array(a);
+            float_array(&mut ctx, a, 2, &pos);
             if divisor {
-                ctx.vertex_attrib_pointer(t, 4, GL_FLOAT, false, 0, ArrayData::from_f32(&tints));
-                ctx.enable_vertex_attrib_array(t);
+                float_array(&mut ctx, t, 4, &tints);
                 ctx.vertex_attrib_divisor(t, 1);
             }
             ctx.enable(GL_PRIMITIVE_RESTART);
@@ -522,7 +498,7 @@ fn instanced_restart_strips_equal_separate_draws() {
             (ctx, p, t)
         };
         let instanced = {
-            let (mut ctx, _, _) = setup(instanced_vs, true);
+            let (mut ctx, _, _) = setup(&instanced_vs, true);
             ctx.draw_elements_instanced_base_vertex(
                 mode,
                 elements.len() as i32,
@@ -535,7 +511,7 @@ fn instanced_restart_strips_equal_separate_draws() {
             image(&mut ctx)
         };
         let separate = {
-            let (mut ctx, p, t) = setup(separate_vs, false);
+            let (mut ctx, p, t) = setup(&separate_vs, false);
             let u = ctx.get_uniform_location(p, "instance");
             for i in 0..7 {
                 ctx.uniform_1i(u, i);
