@@ -554,33 +554,18 @@ impl Context {
             })
         });
         let samples_before = target.fb.samples_passed;
-        let r = match gs_stage {
-            None => raster::draw_on(
-                &self.workers,
-                &mut target.fb,
-                &state,
-                &vs,
-                &vs_words,
-                fs_stage,
-                &fs_words,
-                raster_mode(mode),
-                indices,
-                &fetch,
-                &units,
-            ),
-            Some((gs, gs_words)) => raster::draw_geometry_stages(
-                &self.workers,
-                &mut target.fb,
-                &state,
-                (&*vs, &vs_words),
-                (gs, gs_words),
-                (fs_stage, &fs_words),
-                raster_mode(mode),
-                indices,
-                &fetch,
-                &units,
-            ),
-        };
+        let r = raster::draw_geometry_stages(
+            &self.workers,
+            &mut target.fb,
+            &state,
+            (&*vs, &vs_words),
+            gs_stage.map(|(g, w)| (g as &dyn raster::ShaderStage, w)),
+            (fs_stage, &fs_words),
+            raster_mode(mode),
+            indices,
+            &fetch,
+            &units,
+        );
         if let Err(e) = r {
             self.cache.error = Some(e.to_string());
         }

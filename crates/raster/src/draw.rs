@@ -63,16 +63,16 @@ pub fn draw_stages(
     )
 }
 
-/// [`draw_stages`] with a geometry stage between the vertex and
-/// fragment stages (`gs`, a geometry kernel and its uniform words; see
-/// `crate::geometry`).
+/// [`draw_stages`], with a geometry stage between the vertex and
+/// fragment stages when `gs` is given (a geometry kernel and its uniform
+/// words; see `crate::geometry`).
 #[allow(clippy::too_many_arguments)]
 pub fn draw_geometry_stages(
     workers: &Workers,
     fb: &mut Framebuffer,
     state: &PipelineState,
     vs: (&dyn ShaderStage, &[u32]),
-    gs: (&dyn ShaderStage, &[u32]),
+    gs: Option<(&dyn ShaderStage, &[u32])>,
     fs: (&dyn ShaderStage, &[u32]),
     mode: Mode,
     indices: &[u32],
@@ -80,17 +80,7 @@ pub fn draw_geometry_stages(
     textures: &(dyn Textures + Sync),
 ) -> Result<(), DrawError> {
     draw_probed(
-        workers,
-        fb,
-        state,
-        vs,
-        Some(gs),
-        fs,
-        mode,
-        indices,
-        fetch,
-        textures,
-        None,
+        workers, fb, state, vs, gs, fs, mode, indices, fetch, textures, None,
     )
 }
 
