@@ -667,7 +667,7 @@ const LATER_GL: &[(&str, &str)] = &[
     ("depthfunc ", "the `depthfunc' command"),
 ];
 
-fn draw_mode(name: &str) -> Result<u32, CommandError> {
+pub(super) fn draw_mode(name: &str) -> Result<u32, CommandError> {
     Ok(match name {
         "GL_POINTS" => GL_POINTS,
         "GL_LINES" => GL_LINES,

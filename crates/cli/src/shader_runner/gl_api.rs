@@ -32,6 +32,8 @@ pub trait GlApi {
     fn attach_shader(&mut self, program: u32, shader: u32);
     fn bind_attrib_location(&mut self, program: u32, index: u32, name: &str);
     fn link_program(&mut self, program: u32);
+    /// glProgramParameteriEXT (GL_ARB/EXT_geometry_shader4).
+    fn program_parameter_i(&mut self, program: u32, pname: u32, value: i32);
     fn get_program_iv(&mut self, program: u32, pname: u32, params: &mut [i32]);
     fn get_program_info_log(&mut self, program: u32) -> String;
     fn use_program(&mut self, program: u32);

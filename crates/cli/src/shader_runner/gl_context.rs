@@ -156,6 +156,9 @@ impl GlApi for gl::Context {
     fn link_program(&mut self, program: u32) {
         gl::Context::link_program(self, program)
     }
+    fn program_parameter_i(&mut self, program: u32, pname: u32, value: i32) {
+        gl::Context::program_parameteri(self, program, pname, value)
+    }
     fn get_program_iv(&mut self, program: u32, pname: u32, params: &mut [i32]) {
         if let Some(p) = params.first_mut() {
             *p = gl::Context::get_programiv(self, program, pname);

@@ -149,6 +149,27 @@ pub struct Report {
 /// An early end of the run.
 struct Stop(Verdict);
 
+/// A `[geometry layout]` line as glProgramParameteriEXT's (pname,
+/// value).
+fn geometry_parameter(text: &str) -> Option<(u32, i32)> {
+    use gl::enums::{
+        GL_GEOMETRY_INPUT_TYPE_EXT, GL_GEOMETRY_OUTPUT_TYPE_EXT, GL_GEOMETRY_VERTICES_OUT_EXT,
+    };
+    let mode = |name: &str| {
+        super::command::draw_mode(name.trim())
+            .ok()
+            .map(|m| m as i32)
+    };
+    if let Some(m) = text.strip_prefix("input type ") {
+        return Some((GL_GEOMETRY_INPUT_TYPE_EXT, mode(m)?));
+    }
+    if let Some(m) = text.strip_prefix("output type ") {
+        return Some((GL_GEOMETRY_OUTPUT_TYPE_EXT, mode(m)?));
+    }
+    let n = text.strip_prefix("vertices out ")?.trim().parse().ok()?;
+    Some((GL_GEOMETRY_VERTICES_OUT_EXT, n))
+}
+
 /// piglit's fixed passthrough vertex shader.
 const PASSTHROUGH_VS: &str = "#if __VERSION__ >= 130\n\
 in vec4 piglit_vertex;\n\
@@ -433,6 +454,16 @@ impl<'a, G: GlApi> Runner<'a, G> {
             .bind_attrib_location(prog, PIGLIT_ATTRIB_POS, "piglit_vertex");
         self.gl
             .bind_attrib_location(prog, PIGLIT_ATTRIB_TEX, "piglit_texcoord");
+        for (line, text) in &script.geometry_layout {
+            let Some((pname, value)) = geometry_parameter(text) else {
+                self.err(format!(
+                    "{}:{line}: unknown [geometry layout] line `{text}' (input type MODE, output type MODE or vertices out N)",
+                    self.file
+                ));
+                return Err(Stop(Verdict::Fail));
+            };
+            self.gl.program_parameter_i(prog, pname, value);
+        }
         self.gl.link_program(prog);
         let mut ok = [0i32];
         self.gl.get_program_iv(prog, GL_LINK_STATUS, &mut ok);

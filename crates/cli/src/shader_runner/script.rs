@@ -15,10 +15,13 @@
 //! - `[test]`: the commands (parsed by [`super::command`]), to the end of the
 //!   file.
 //!
+//! - `[geometry layout]`: GL_ARB_geometry_shader4's program parameters,
+//!   one per line (`input type MODE`, `output type MODE`, `vertices out
+//!   N`), set before the link;
+//!
 //! The sections of later GL versions or extensions (tessellation,
-//! compute, SPIR-V, ARB programs, shader includes, element lists,
-//! GL_ARB_geometry_shader4's `[geometry layout]`) make the test a skip:
-//! shaderbox implements OpenGL 3.3.
+//! compute, SPIR-V, ARB programs, shader includes, element lists) make
+//! the test a skip: shaderbox implements OpenGL 3.3.
 
 use super::scan;
 use gl::enums::{GL_FLOAT, GL_INT, GL_UNSIGNED_INT};
@@ -188,6 +191,10 @@ pub struct Script {
     pub has_test: bool,
     /// Sections of later GL versions, with their line: the test is a skip.
     pub unsupported_sections: Vec<(usize, String)>,
+    /// The `[geometry layout]` lines (GL_ARB_geometry_shader4's program
+    /// parameters: `input type GL_TRIANGLES`, `output type GL_POINTS`,
+    /// `vertices out 3`), with their line numbers.
+    pub geometry_layout: Vec<(usize, String)>,
 }
 
 /// A malformed script: the message names the line.
@@ -212,6 +219,7 @@ enum Section {
     Shader(Stage),
     Passthrough,
     VertexData,
+    GeometryLayout,
     Test,
     Ignored,
 }
@@ -269,6 +277,12 @@ pub fn parse(text: &str) -> Result<Script, ScriptError> {
             }
             Section::Shader(_) => body.push_str(raw),
             Section::VertexData => vertex_data_lines.push((number, raw)),
+            Section::GeometryLayout => {
+                let line = raw.trim();
+                if !line.is_empty() && !line.starts_with('#') {
+                    script.geometry_layout.push((number, line.to_string()));
+                }
+            }
         }
     }
     finish(
@@ -308,6 +322,8 @@ fn open_section(script: &mut Script, raw: &str, number: usize) -> Result<Section
         Section::Shader(Stage::Fragment)
     } else if known("[vertex data]") {
         Section::VertexData
+    } else if known("[geometry layout]") {
+        Section::GeometryLayout
     } else if known("[test]") {
         Section::Test
     } else if known("[vertex shader specializations]")
@@ -322,7 +338,6 @@ fn open_section(script: &mut Script, raw: &str, number: usize) -> Result<Section
     } else if [
         "[vertex program]",
         "[fragment program]",
-        "[geometry layout]",
         "[tessellation control shader",
         "[tessellation evaluation shader",
         "[compute shader",
