@@ -43,17 +43,29 @@ pub enum Command {
         equation: [f64; 4],
     },
     Color([f32; 4]),
-    /// `draw rect [ortho] X Y W H` and `draw rect tex X Y W H TX TY TW TH`.
+    /// `draw rect [ortho] X Y W H`, `draw rect tex X Y W H TX TY TW TH`
+    /// and `draw instanced rect [ortho] N X Y W H` (N instances).
     DrawRect {
         rect: [f32; 4],
         ortho: bool,
         tex: Option<[f32; 4]>,
+        instances: i32,
     },
+    /// `draw arrays MODE FIRST COUNT`, and `draw arrays instanced MODE
+    /// FIRST COUNT INSTANCES`.
     DrawArrays {
         mode: u32,
         first: i32,
         count: i32,
+        instances: i32,
     },
+    /// `polygon mode FACE MODE`.
+    PolygonMode {
+        face: u32,
+        mode: u32,
+    },
+    /// `provoking vertex first|last`.
+    ProvokingVertex(u32),
     Enable(u32),
     Disable(u32),
     /// `blend func SRC DST`.
@@ -392,6 +404,7 @@ fn parse_command(line: &str) -> Result<Command, CommandError> {
             rect: [v[0], v[1], v[2], v[3]],
             ortho: false,
             tex: Some([v[4], v[5], v[6], v[7]]),
+            instances: 1,
         });
     }
     if lit(line, "draw rect ortho patch ").is_some() || lit(line, "draw rect patch ").is_some() {
@@ -402,6 +415,7 @@ fn parse_command(line: &str) -> Result<Command, CommandError> {
             rect: floats::<4>(rest, "draw rect ortho", line)?,
             ortho: true,
             tex: None,
+            instances: 1,
         });
     }
     if let Some(rest) = lit(line, "draw rect ") {
@@ -409,11 +423,45 @@ fn parse_command(line: &str) -> Result<Command, CommandError> {
             rect: floats::<4>(rest, "draw rect", line)?,
             ortho: false,
             tex: None,
+            instances: 1,
         });
     }
-    if lit(line, "draw instanced rect ").is_some() || lit(line, "draw arrays instanced ").is_some()
-    {
-        return Ok(C::NeedsLaterGl("instanced drawing (OpenGL 3.1)".into()));
+    if let Some(rest) = lit(line, "draw instanced rect ") {
+        let (ortho, rest) = match lit(rest, "ortho ") {
+            Some(r) => (true, r),
+            None => (false, rest),
+        };
+        let v = floats::<5>(rest, "draw instanced rect", line)?;
+        if v[0].fract() != 0.0 || v[0] < 0.0 {
+            return Err(bad(
+                "draw instanced rect: the instance count must be a whole number",
+                line,
+            ));
+        }
+        return Ok(C::DrawRect {
+            rect: [v[1], v[2], v[3], v[4]],
+            ortho,
+            tex: None,
+            instances: v[0] as i32,
+        });
+    }
+    if let Some(rest) = lit(line, "draw arrays instanced ") {
+        let (mode_name, rest) =
+            scan::word(rest).ok_or_else(|| bad("draw arrays instanced: no mode", line))?;
+        let (v, _) = scan::scan_list(rest, 3, scan::scan_i32_dec);
+        let [first, count, instances] = v[..] else {
+            return Err(bad(
+                "draw arrays instanced: expected MODE FIRST COUNT INSTANCES",
+                line,
+            ));
+        };
+        let mode = draw_mode(mode_name)?;
+        return Ok(C::DrawArrays {
+            mode,
+            first,
+            count,
+            instances,
+        });
     }
     if let Some(rest) = lit(line, "draw arrays ") {
         let (mode_name, rest) =
@@ -423,7 +471,35 @@ fn parse_command(line: &str) -> Result<Command, CommandError> {
             return Err(bad("draw arrays: expected MODE FIRST COUNT", line));
         };
         let mode = draw_mode(mode_name)?;
-        return Ok(C::DrawArrays { mode, first, count });
+        return Ok(C::DrawArrays {
+            mode,
+            first,
+            count,
+            instances: 1,
+        });
+    }
+    if let Some(rest) = lit(line, "polygon mode ") {
+        let words: Vec<&str> = rest.split_whitespace().collect();
+        let face = match words.first().copied() {
+            Some("GL_FRONT") => gl::enums::GL_FRONT,
+            Some("GL_BACK") => gl::enums::GL_BACK,
+            Some("GL_FRONT_AND_BACK") => gl::enums::GL_FRONT_AND_BACK,
+            _ => return Err(bad("polygon mode: expected FACE MODE", line)),
+        };
+        let mode = match words.get(1).copied() {
+            Some("GL_POINT") => gl::enums::GL_POINT,
+            Some("GL_LINE") => gl::enums::GL_LINE,
+            Some("GL_FILL") => gl::enums::GL_FILL,
+            _ => return Err(bad("polygon mode: expected FACE MODE", line)),
+        };
+        return Ok(C::PolygonMode { face, mode });
+    }
+    if let Some(rest) = lit(line, "provoking vertex ") {
+        return Ok(C::ProvokingVertex(match rest.trim() {
+            "first" => gl::enums::GL_FIRST_VERTEX_CONVENTION,
+            "last" => gl::enums::GL_LAST_VERTEX_CONVENTION,
+            _ => return Err(bad("provoking vertex: expected first or last", line)),
+        }));
     }
     if lit(line, "draw elements ").is_some() || lit(line, "multidraw arrays ").is_some() {
         return Ok(C::NeedsLaterGl("[elements] / multidraw".into()));
@@ -651,7 +727,6 @@ const LATER_GL: &[(&str, &str)] = &[
         "program binary save restore",
         "program binaries (OpenGL 4.1)",
     ),
-    ("provoking vertex ", "provoking vertex control (OpenGL 3.2)"),
     ("block ", "uniform blocks (OpenGL 3.1)"),
     ("verify program_query", "program queries"),
     (

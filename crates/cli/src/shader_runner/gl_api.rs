@@ -126,7 +126,9 @@ pub trait GlApi {
     );
     fn enable_vertex_attrib_array(&mut self, index: u32);
     fn disable_vertex_attrib_array(&mut self, index: u32);
-    fn draw_arrays(&mut self, mode: u32, first: i32, count: i32);
+    fn draw_arrays_instanced(&mut self, mode: u32, first: i32, count: i32, instances: i32);
+    fn polygon_mode(&mut self, face: u32, mode: u32);
+    fn provoking_vertex(&mut self, mode: u32);
 
     // Textures.
     fn active_texture(&mut self, unit: u32);

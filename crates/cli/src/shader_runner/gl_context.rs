@@ -330,8 +330,14 @@ impl GlApi for gl::Context {
     fn disable_vertex_attrib_array(&mut self, index: u32) {
         gl::Context::disable_vertex_attrib_array(self, index)
     }
-    fn draw_arrays(&mut self, mode: u32, first: i32, count: i32) {
-        gl::Context::draw_arrays(self, mode, first, count)
+    fn draw_arrays_instanced(&mut self, mode: u32, first: i32, count: i32, instances: i32) {
+        gl::Context::draw_arrays_instanced(self, mode, first, count, instances)
+    }
+    fn polygon_mode(&mut self, face: u32, mode: u32) {
+        gl::Context::polygon_mode(self, face, mode)
+    }
+    fn provoking_vertex(&mut self, mode: u32) {
+        gl::Context::provoking_vertex(self, mode)
     }
     fn active_texture(&mut self, unit: u32) {
         gl::Context::active_texture(self, unit)

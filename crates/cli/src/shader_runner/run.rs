@@ -320,11 +320,12 @@ impl<'a, G: GlApi> Runner<'a, G> {
             "GL_MAX_CLIP_PLANES" => GL_MAX_CLIP_PLANES,
             "GL_MAX_DRAW_BUFFERS" => GL_MAX_DRAW_BUFFERS,
             "GL_MAX_TEXTURE_SIZE" => GL_MAX_TEXTURE_SIZE,
-            // Not queried below OpenGL 3.2 / without program binaries.
-            "GL_MAX_VERTEX_OUTPUT_COMPONENTS" | "GL_NUM_PROGRAM_BINARY_FORMATS" => {
-                let _ = gl_version;
-                return Some(0);
+            // GL 3.2's (piglit queries it from 3.2 on).
+            "GL_MAX_VERTEX_OUTPUT_COMPONENTS" if gl_version >= 32 => {
+                gl::enums::GL_MAX_VERTEX_OUTPUT_COMPONENTS
             }
+            // Not queried below OpenGL 3.2 / without program binaries.
+            "GL_MAX_VERTEX_OUTPUT_COMPONENTS" | "GL_NUM_PROGRAM_BINARY_FORMATS" => return Some(0),
             _ => return None,
         };
         let mut v = [0i32; 4];
@@ -702,7 +703,12 @@ impl<'a, G: GlApi> Runner<'a, G> {
                 gl.clip_plane(GL_CLIP_PLANE0 + plane, equation)
             }
             Command::Color(c) => gl.color_4fv(c),
-            Command::DrawRect { rect, ortho, tex } => {
+            Command::DrawRect {
+                rect,
+                ortho,
+                tex,
+                instances,
+            } => {
                 let result = self.must_be_in_use_verdict();
                 let rect = if *ortho {
                     probe::ortho_rect(*rect, self.width, self.height)
@@ -710,11 +716,16 @@ impl<'a, G: GlApi> Runner<'a, G> {
                     *rect
                 };
                 if result == Verdict::Pass {
-                    self.draw_rect(line, rect, *tex)?;
+                    self.draw_rect(line, rect, *tex, *instances)?;
                 }
                 return Ok(result);
             }
-            Command::DrawArrays { mode, first, count } => {
+            Command::DrawArrays {
+                mode,
+                first,
+                count,
+                instances,
+            } => {
                 let result = self.must_be_in_use_verdict();
                 if *first < 0 {
                     self.out("draw arrays 'first' must be >= 0");
@@ -735,10 +746,14 @@ impl<'a, G: GlApi> Runner<'a, G> {
                     }
                 }
                 if result == Verdict::Pass {
-                    self.draw(line, |gl| gl.draw_arrays(*mode, *first, *count))?;
+                    self.draw(line, |gl| {
+                        gl.draw_arrays_instanced(*mode, *first, *count, *instances)
+                    })?;
                 }
                 return Ok(result);
             }
+            Command::PolygonMode { face, mode } => gl.polygon_mode(*face, *mode),
+            Command::ProvokingVertex(mode) => gl.provoking_vertex(*mode),
             Command::Enable(cap) => gl.enable(*cap),
             Command::Disable(cap) => gl.disable(*cap),
             Command::Frustum(f) => {
@@ -915,6 +930,7 @@ impl<'a, G: GlApi> Runner<'a, G> {
         line: usize,
         rect: [f32; 4],
         tex: Option<[f32; 4]>,
+        instances: i32,
     ) -> Result<(), Stop> {
         let verts = probe::rect_vertices(rect);
         let texcoords = tex.map(probe::rect_texcoords);
@@ -937,7 +953,9 @@ impl<'a, G: GlApi> Runner<'a, G> {
                 self.gl.enable_client_state(GL_TEXTURE_COORD_ARRAY);
             }
         }
-        let result = self.draw(line, |gl| gl.draw_arrays(GL_TRIANGLE_STRIP, 0, 4));
+        let result = self.draw(line, |gl| {
+            gl.draw_arrays_instanced(GL_TRIANGLE_STRIP, 0, 4, instances)
+        });
         if generic {
             self.gl.disable_vertex_attrib_array(PIGLIT_ATTRIB_POS);
             if texcoords.is_some() {

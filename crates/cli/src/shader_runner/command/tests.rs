@@ -44,7 +44,8 @@ fn draws() {
         Command::DrawRect {
             rect: [-1., -1., 2., 2.],
             ortho: false,
-            tex: None
+            tex: None,
+            instances: 1,
         }
     );
     assert_eq!(
@@ -52,7 +53,17 @@ fn draws() {
         Command::DrawRect {
             rect: [0., 0., 10., 10.],
             ortho: true,
-            tex: None
+            tex: None,
+            instances: 1,
+        }
+    );
+    assert_eq!(
+        p("draw instanced rect ortho 3 10 10 10 10"),
+        Command::DrawRect {
+            rect: [10., 10., 10., 10.],
+            ortho: true,
+            tex: None,
+            instances: 3,
         }
     );
     assert_eq!(
@@ -60,7 +71,8 @@ fn draws() {
         Command::DrawRect {
             rect: [-1., -1., 2., 2.],
             ortho: false,
-            tex: Some([0., 0., 1., 1.])
+            tex: Some([0., 0., 1., 1.]),
+            instances: 1,
         }
     );
     assert_eq!(
@@ -68,9 +80,32 @@ fn draws() {
         Command::DrawArrays {
             mode: GL_TRIANGLE_FAN,
             first: 0,
-            count: 4
+            count: 4,
+            instances: 1,
         }
     );
+    assert_eq!(
+        p("draw arrays instanced GL_TRIANGLE_FAN 0 6 2"),
+        Command::DrawArrays {
+            mode: GL_TRIANGLE_FAN,
+            first: 0,
+            count: 6,
+            instances: 2,
+        }
+    );
+    assert_eq!(
+        p("polygon mode GL_FRONT_AND_BACK GL_LINE"),
+        Command::PolygonMode {
+            face: gl::enums::GL_FRONT_AND_BACK,
+            mode: gl::enums::GL_LINE,
+        }
+    );
+    assert_eq!(
+        p("provoking vertex first"),
+        Command::ProvokingVertex(gl::enums::GL_FIRST_VERTEX_CONVENTION)
+    );
+    assert!(parse("polygon mode GL_FRONT GL_BOGUS").is_err());
+    assert!(parse("provoking vertex middle").is_err());
     assert!(parse("draw rect 1 2 3").is_err());
     assert!(parse("draw arrays GL_BOGUS 0 4").is_err());
 }
