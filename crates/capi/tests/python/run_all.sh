@@ -23,5 +23,5 @@ python3 "$here/compare.py" $md "$libdir" \
     "$here/shaded_triangle.py" "$here/fixed_function.py" "$here/textured_fbo.py" \
     "$here/seed_shaders.py" "$here/library_shaders.py" "$here/error_paths.py" \
     "$here/pixel_paths.py" "$here/uniform_buffers.py" "$here/gl33_state.py" \
-    "$here/seed_core.py" "$here/gl33_entry_points.py"
+    "$here/seed_core.py" "$here/seed_geometry.py" "$here/gl33_entry_points.py"
 sh "$here/debug_env.sh" "$libdir"
