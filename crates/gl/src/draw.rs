@@ -391,6 +391,62 @@ impl Context {
         self.run_draw(mode, &indices, Some(verts), InstanceBatch::one(0), ids);
     }
 
+    /// The vertex stage, and the geometry stage when there is one, of a
+    /// draw, alone (what transform feedback captures and the primitive
+    /// queries count): the GL list mode of the primitives (the draw's
+    /// `mode` without a geometry stage), per position in their list the
+    /// vertex number, the vertices' outputs and the values per vertex.
+    #[allow(clippy::type_complexity)]
+    fn shade_before_rasterization(
+        &mut self,
+        (vs, vs_user, gs): (
+            &std::sync::Arc<exec::Kernel>,
+            bool,
+            Option<&std::sync::Arc<exec::Kernel>>,
+        ),
+        mode: u32,
+        indices: &[u32],
+        (immediate, batch): (Option<&[ImmVertex]>, InstanceBatch),
+        ids: PrimitiveIds,
+    ) -> Result<(u32, Vec<u32>, Vec<f32>, usize), String> {
+        let words = self.uniform_words(vs, vs_user);
+        let units = self.texture_units();
+        let Some(gs) = gs else {
+            let fetch = Fetcher::new(self, vs, immediate, batch);
+            return raster::shade_vertices(
+                &self.workers,
+                &**vs,
+                &words,
+                &units,
+                indices,
+                &fetch,
+                true,
+            )
+            .map(|(vertex_of, outputs, stride)| (mode, vertex_of, outputs, stride))
+            .map_err(|e| e.to_string());
+        };
+        // The geometry stage reads the provoking-vertex convention,
+        // colour clamping and primitive IDs from the pipeline state.
+        let target = self.draw_target().ok_or("no draw framebuffer")?;
+        let mut state = self.pipeline_state(&target);
+        self.store_target(target);
+        state.primitive_ids = ids;
+        let gs_words = self.uniform_words(gs, true);
+        let fetch = Fetcher::new(self, vs, immediate, batch);
+        raster::shade_geometry(
+            &self.workers,
+            (&**vs, &words),
+            (&**gs, &gs_words),
+            &units,
+            indices,
+            &fetch,
+            raster_mode(mode),
+            &state,
+        )
+        .map(|(m, vertex_of, outputs, stride)| (gl_list_mode(m), vertex_of, outputs, stride))
+        .map_err(|e| e.to_string())
+    }
+
     /// Draws `indices`, vertices of the instances `batch`, its primitives
     /// numbered `ids` for gl_PrimitiveID.
     fn run_draw(
@@ -403,13 +459,6 @@ impl Context {
     ) {
         // Conditional rendering discards the whole command (GL 3.3 §2.15).
         if indices.is_empty() || self.render_discarded() {
-            return;
-        }
-        self.count_primitives(mode, indices.len());
-        let discard = self.st.is_on(GL_RASTERIZER_DISCARD);
-        // GL_RASTERIZER_DISCARD: the primitives end before rasterization
-        // (after transform feedback).
-        if discard && !self.feedback_active() {
             return;
         }
         let crate::kernels::DrawKernels {
@@ -425,62 +474,37 @@ impl Context {
                 return;
             }
         };
-        if self.feedback_active() {
-            let words = self.uniform_words(&vs, vs_user);
-            let units = self.texture_units();
-            // The geometry stage reads the provoking-vertex convention,
-            // colour clamping and primitive IDs from the pipeline state.
-            let state = match (&gs, self.draw_target()) {
-                (Some(_), Some(target)) => {
-                    let mut state = self.pipeline_state(&target);
-                    self.store_target(target);
-                    state.primitive_ids = ids;
-                    Some(state)
-                }
-                _ => None,
-            };
-            let fetch = Fetcher::new(self, &vs, immediate, batch);
-            let shaded = match (&gs, &state) {
-                (Some(gs), Some(state)) => {
-                    let gs_words = self.uniform_words(gs, true);
-                    raster::shade_geometry(
-                        &self.workers,
-                        (&*vs, &words),
-                        (&**gs, &gs_words),
-                        &units,
-                        indices,
-                        &fetch,
-                        raster_mode(mode),
-                        state,
-                    )
-                    .map(|(m, vertex_of, outputs, stride)| {
-                        (gl_list_mode(m), vertex_of, outputs, stride)
-                    })
-                }
-                _ => raster::shade_vertices(
-                    &self.workers,
-                    &*vs,
-                    &words,
-                    &units,
-                    indices,
-                    &fetch,
-                    true,
-                )
-                .map(|(vertex_of, outputs, stride)| (mode, vertex_of, outputs, stride)),
-            };
-            drop(fetch);
+        // GL_PRIMITIVES_GENERATED counts what the last stage before
+        // rasterization makes: with a geometry stage, its primitives
+        // (GL 3.3 §2.16).
+        let count_emitted = gs.is_some() && self.queries.active[2] != 0;
+        if gs.is_none() {
+            self.count_primitives(mode, indices.len());
+        }
+        let discard = self.st.is_on(GL_RASTERIZER_DISCARD);
+        if self.feedback_active() || count_emitted {
+            let stages = (&vs, vs_user, gs.as_ref());
+            let shaded =
+                self.shade_before_rasterization(stages, mode, indices, (immediate, batch), ids);
             match shaded {
                 Ok((mode, vertex_of, outputs, stride)) => {
-                    self.capture_feedback(mode, (&vertex_of, &outputs, stride))
+                    if count_emitted {
+                        self.count_primitives(mode, vertex_of.len());
+                    }
+                    if self.feedback_active() {
+                        self.capture_feedback(mode, (&vertex_of, &outputs, stride));
+                    }
                 }
                 Err(e) => {
-                    self.cache.error = Some(e.to_string());
+                    self.cache.error = Some(e);
                     return;
                 }
             }
-            if discard {
-                return;
-            }
+        }
+        // GL_RASTERIZER_DISCARD: the primitives end before rasterization
+        // (after transform feedback).
+        if discard {
+            return;
         }
         let fs_user = ff_shape.is_none();
         // The fixed-function fragment stage runs without the engine where

@@ -209,7 +209,8 @@ fn adjacency_modes_without_a_geometry_stage() {
 
 /// Transform feedback captures the geometry stage's outputs, its strips
 /// decomposed into independent primitives, and needs the feedback mode
-/// of the geometry stage's output (GL 3.3 §2.16).
+/// of the geometry stage's output; GL_PRIMITIVES_GENERATED counts the
+/// emitted primitives (GL 3.3 §2.16).
 #[test]
 fn transform_feedback_captures_the_emitted_primitives() {
     let vs =
@@ -243,10 +244,15 @@ void main() { for (int i = 0; i < 4; i++) { v = vx[0] * 10.0 + float(i); EmitVer
     ctx.draw_arrays(GL_POINTS, 0, 2);
     assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
     ctx.end_transform_feedback();
+    let q = ctx.gen_queries(1)[0];
+    ctx.begin_query(GL_PRIMITIVES_GENERATED, q);
     ctx.begin_transform_feedback(GL_LINES);
     ctx.draw_arrays(GL_POINTS, 0, 2);
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
     ctx.end_transform_feedback();
+    ctx.end_query(GL_PRIMITIVES_GENERATED);
+    // The geometry stage's primitives are counted: 3 lines per point.
+    assert_eq!(ctx.get_query_object(q, GL_QUERY_RESULT), Some(6));
     let got: Vec<f32> = ctx
         .get_buffer_sub_data(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 12 * 4)
         .chunks_exact(4)
