@@ -95,8 +95,7 @@ def pyvista_text(outdir, name):
     p = plotter()
     p.set_background("white")
     p.add_text("shaderbox 3.3", position="upper_left", font_size=18, color="black")
-    # Not show_edges: VTK draws mesh edges with a geometry shader. Back
-    # faces culled: the hidden bottom face meets the sides along the
+    # Back faces culled: the hidden bottom face meets the sides along the
     # silhouette at equal depth, where either may win by a rounding.
     p.add_mesh(pv.Cube(), color="tan", culling="back")
     p.camera_position = "iso"
@@ -104,6 +103,18 @@ def pyvista_text(outdir, name):
     p.close()
 
 
+def pyvista_edges(outdir, name):
+    # show_edges: VTK's polydata mapper draws each triangle's edges in the
+    # fragment shader from distances a geometry shader computes.
+    p = plotter()
+    p.add_mesh(pv.Sphere(theta_resolution=12, phi_resolution=9), color="lightsteelblue",
+               show_edges=True, edge_color="black", line_width=2)
+    p.camera_position = [(2.2, -2.9, 1.6), (0, 0, 0), (0, 0, 1)]
+    save(outdir, name, p.screenshot(return_img=True))
+    p.close()
+
+
 if __name__ == "__main__":
     run([("vtk_elevation_text", vtk_elevation), ("pyvista_scalars", pyvista_scalars),
-         ("pyvista_volume", pyvista_volume), ("pyvista_text", pyvista_text)])
+         ("pyvista_volume", pyvista_volume), ("pyvista_text", pyvista_text),
+         ("pyvista_edges", pyvista_edges)])
