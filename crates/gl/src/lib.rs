@@ -15,7 +15,8 @@
 //!   [`Context::get_error`] returns and clears the first one recorded. No
 //!   call panics, whatever its arguments.
 //! - Shaders compile with [`glsl::compile`] and link with
-//!   [`glsl::link::link`]; info logs are theirs.
+//!   [`glsl::link::link_with`] (a program's GL_EXT_geometry_shader4
+//!   parameters); info logs are theirs.
 //! - Uniforms: every uniform a program's stages declare is active (even if
 //!   unused, which is generous but allowed: GL 2.1 §2.15.3 only requires
 //!   the used ones). Locations number every element of every basic-typed
@@ -29,8 +30,9 @@
 //!
 //! - Draws run the program's `exec` kernels (or generated fixed-function
 //!   stages, [`ffgen`]; the fixed-function fragment stage directly when
-//!   it can, [`ff_fragment`], with the kernel's bits) through
-//!   `raster::draw_on` ([`draw`]) on the
+//!   it can, [`ff_fragment`], with the kernel's bits; the program's
+//!   geometry stage between them when it has one) through
+//!   `raster::draw_geometry_stages` ([`draw`]) on the
 //!   context's threads: [`Context::set_threads`], by default the
 //!   environment variable `SHADERBOX_THREADS` ([`THREADS_ENV`]) or else the
 //!   machine's available parallelism. Images do not depend on the count.
@@ -60,7 +62,9 @@
 //! - Client images: [`pixel_transfer`] (layout, unpack, pack, scale and
 //!   bias), [`readback`] (glReadPixels), [`pixel_path`] (raster position,
 //!   glDrawPixels, glBitmap, glCopyPixels).
-//! - Shaders: [`program`], [`program_blocks`] (uniform-block queries,
+//! - Shaders: [`program`], [`geometry_program`] (which contexts have
+//!   geometry shaders, glProgramParameteriEXT, the geometry queries, the
+//!   draw mode against the input primitive), [`program_blocks`] (uniform-block queries,
 //!   blocks read from uniform buffers at draw time), [`program_outputs`]
 //!   (fragment-output locations), [`transform_feedback`], [`uniform`],
 //!   [`uniform_block`] (std140 layout), [`builtins`] (the `gl_*`
@@ -78,7 +82,8 @@
 //!   primitive-restart indices) puts together [`kernels`],
 //!   [`fetch`], [`pipeline_state`], [`texture_units`] and
 //!   [`render_target`], with [`ff_fragment`] for the fixed-function
-//!   fragment stage and [`debug`] for probes.
+//!   fragment stage, [`layered`] for a geometry stage's gl_Layer (and
+//!   clears of every layer) and [`debug`] for probes.
 //!
 //! ## Limitations
 //! - No display lists (a C layer records them), selection/feedback,
@@ -106,11 +111,11 @@ pub mod fetch;
 pub mod ff_fragment;
 pub mod ffgen;
 pub mod framebuffer;
-mod geometry_program;
+pub mod geometry_program;
 pub mod get;
 pub mod immediate;
 pub mod kernels;
-mod layered;
+pub mod layered;
 pub mod matrix;
 pub mod mipmap;
 pub mod objects;
