@@ -3,10 +3,14 @@
 //!
 //! - Triangles: fixed-point edge functions with [`SUBPIXEL_BITS`] bits of
 //!   subpixel precision, sampled at pixel centers (x + ½, y + ½), with a
-//!   top-left fill rule so that a pixel on an edge shared by two triangles
-//!   is drawn exactly once. In GL's y-up window space, with the triangle
-//!   oriented counter-clockwise, an edge is *left* when it runs downwards
-//!   and *top* when it is horizontal and runs towards −x.
+//!   bottom-left fill rule so that a pixel on an edge shared by two
+//!   triangles is drawn exactly once: a pixel centre on an edge belongs
+//!   to the triangle on its right, or on a horizontal edge to the one
+//!   above it, as llvmpipe decides for GL's lower-left origin (the
+//!   top-left rule of a y-down window). In GL's y-up window space, with
+//!   the triangle oriented counter-clockwise, an edge is *left* when it
+//!   runs downwards and *bottom* when it is horizontal and runs towards
+//!   +x.
 //! - Lines (GL 2.1 §3.4): for an x-major segment, each pixel column whose
 //!   center lies in the half-open span from the first to the last endpoint
 //!   produces the pixel row `floor(y)` at that center (a column of
@@ -111,12 +115,12 @@ fn edge(p: &[(i64, i64); 3], k: usize, x: i64, y: i64) -> i64 {
     (b.0 - a.0) * (y - a.1) - (b.1 - a.1) * (x - a.0)
 }
 
-/// Top-left rule for edge k of a triangle of orientation `sign`.
+/// Bottom-left rule for edge k of a triangle of orientation `sign`.
 fn owns_edge(p: &[(i64, i64); 3], k: usize, sign: i64) -> bool {
     let a = p[(k + 1) % 3];
     let b = p[(k + 2) % 3];
     let (dx, dy) = (sign * (b.0 - a.0), sign * (b.1 - a.1));
-    dy < 0 || (dy == 0 && dx < 0)
+    dy < 0 || (dy == 0 && dx > 0)
 }
 
 /// A window coordinate in fixed point: `c · ONE` rounded half away from
@@ -540,7 +544,7 @@ fn walk_in(
 /// [`WalkQuad`]). Each edge is the integer linear form `s(x, y) = a·x +
 /// b·y + c` (the orientation times [`edge`] at the pixel center); a pixel
 /// is covered when every edge is at least its threshold there: 0 on an
-/// edge the triangle owns (top-left rule), else 1. Areas a few quads wide
+/// edge the triangle owns (bottom-left rule), else 1. Areas a few quads wide
 /// (small triangles, tile borders) are evaluated a row at a time in i32
 /// lanes ([`narrow_quads_each`]); the others by [`wide_quads_each`]'s
 /// steps.

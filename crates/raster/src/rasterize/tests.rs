@@ -146,8 +146,8 @@ fn shared_edges_cover_each_pixel_once() {
         let hits = coverage(&shapes, 8);
         for y in 0..8 {
             for x in 0..8 {
-                // Left and top edges are owned, right and bottom not.
-                let want = u32::from((0..6).contains(&x) && (1..7).contains(&y));
+                // Left and bottom edges are owned, right and top not.
+                let want = u32::from((0..6).contains(&x) && (0..6).contains(&y));
                 assert_eq!(hits[(y * 8 + x) as usize], want, "pixel {x},{y}");
             }
         }
@@ -293,14 +293,20 @@ fn fixed_point_rounds_half_away_from_zero() {
 }
 
 #[test]
-fn top_left_rule() {
+fn bottom_left_rule() {
     // Right triangle with a bottom horizontal edge and a left vertical
-    // edge through pixel centers: the left edge is owned, the bottom
-    // (not top) edge is not.
+    // edge through pixel centers: both are owned (llvmpipe's rule for
+    // GL's lower-left origin)...
     let t = Shape::triangle([wv(0.5, 0.5), wv(4.5, 0.5), wv(0.5, 4.5)]).unwrap();
     let hits = coverage(&[t], 6);
-    assert_eq!(hits[0], 0, "bottom edge excluded");
+    assert_eq!(hits[0], 1, "bottom edge included");
     assert_eq!(hits[6], 1, "left edge included");
+    // ...and a top and a right edge through pixel centers are not.
+    let t = Shape::triangle([wv(5.5, 5.5), wv(1.5, 5.5), wv(5.5, 1.5)]).unwrap();
+    let hits = coverage(&[t], 6);
+    assert_eq!(hits[5 * 6 + 4], 0, "top edge excluded");
+    assert_eq!(hits[4 * 6 + 5], 0, "right edge excluded");
+    assert_eq!(hits[4 * 6 + 4], 1, "inside");
 }
 
 /// The planes of a primitive (vertices `win`) at pixel (x, y):
