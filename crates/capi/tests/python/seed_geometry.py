@@ -252,10 +252,7 @@ def squares(log):
     (more primitives out than in), depth-tested."""
     p = geometry_program(SQUARES_EXT, SQUARES_150, GL.GL_POINTS, GL.GL_TRIANGLE_STRIP,
                          "layout(points) in;", "layout(triangle_strip, max_vertices = 4) out;")
-    # (A size that puts no square's edge through a pixel centre: llvmpipe
-    # draws a pixel centre on a horizontal edge with the primitive above
-    # it, shaderbox with the primitive below.)
-    GL.glUniform1f(GL.glGetUniformLocation(p, "half_size"), 0.0717)
+    GL.glUniform1f(GL.glGetUniformLocation(p, "half_size"), 0.07)
     log.append(f"program: {errors()}")
     GL.glEnable(GL.GL_DEPTH_TEST)
     GL.glClearColor(0.0, 0.0, 0.0, 1.0)
