@@ -79,6 +79,8 @@ pub struct DrawRecord {
     /// The draw framebuffer (0: the default one).
     pub framebuffer: u32,
     pub vertex: StageInfo,
+    /// The geometry stage, when the program has one.
+    pub geometry: Option<StageInfo>,
     pub fragment: StageInfo,
     /// What happened at the pixel (a draw that failed part-way included).
     pub probe: raster::DrawProbe,
