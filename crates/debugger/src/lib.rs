@@ -1070,5 +1070,145 @@ mod tests {
         let report = Report::from_records((1, 1), &records);
         let text = report.text();
         assert!(text.contains("-123456789"), "{text}");
+        // No geometry stage: none of its keys in the JSON.
+        let json = report.json();
+        for key in ["\"geometry\"", "input_primitive", "emitted_vertex"] {
+            assert!(!json.contains(key), "{key} in {json}");
+        }
+    }
+
+    /// A 3.3 compatibility context drawing with `gs` between a
+    /// pass-through vertex stage and a constant fragment stage; `pos`
+    /// holds the points given.
+    fn geometry_context(gs: &str, points: &[f32]) -> gl::Context {
+        let mut ctx = gl::Context::with_api(8, 8, gl::Api::GL33_COMPAT);
+        let p = ctx.create_program();
+        for (kind, src) in [
+            (
+                GL_VERTEX_SHADER,
+                "#version 150\nin vec2 pos;\nvoid main() { gl_Position = vec4(pos, 0.0, 1.0); }",
+            ),
+            (GL_GEOMETRY_SHADER, gs),
+            (
+                GL_FRAGMENT_SHADER,
+                "#version 150\nout vec4 c;\nvoid main() { c = vec4(1.0); }",
+            ),
+        ] {
+            let s = ctx.create_shader(kind);
+            ctx.shader_source(s, &[src]);
+            ctx.compile_shader(s);
+            assert_eq!(ctx.get_shaderiv(s, GL_COMPILE_STATUS), 1, "{src}");
+            ctx.attach_shader(p, s);
+        }
+        ctx.link_program(p);
+        assert_eq!(ctx.get_programiv(p, GL_LINK_STATUS), 1);
+        ctx.use_program(p);
+        let pos = ctx.get_attrib_location(p, "pos") as u32;
+        ctx.vertex_attrib_pointer(pos, 2, GL_FLOAT, false, 0, gl::ArrayData::from_f32(points));
+        ctx.enable_vertex_attrib_array(pos);
+        ctx
+    }
+
+    /// The JSON report of a draw with a geometry stage names the input
+    /// primitive of each fragment, the emitted number of each of its
+    /// vertices, and the invocation with its per-vertex inputs one element
+    /// at a time and its emitted vertices marked with the fragment.
+    #[test]
+    fn geometry_invocations_are_in_the_json_report() {
+        let gs = "#version 150
+layout(points) in;
+layout(triangle_strip, max_vertices = 4) out;
+void main() {
+    for (int i = 0; i < 4; i++) {
+        gl_Position = gl_in[0].gl_Position + vec4(vec2(i % 2, i / 2) * 0.5 - 0.25, 0.0, 0.0);
+        EmitVertex();
+    }
+}";
+        let mut ctx = geometry_context(gs, &[-0.5, -0.5, 0.5, 0.5]);
+        let mut request = gl::debug::DebugRequest::pixel(6, 6);
+        request.vertex = Some(1);
+        ctx.set_debug(Some(request));
+        ctx.draw_arrays(GL_POINTS, 0, 2);
+        let records = ctx.take_debug_records();
+        let report = Report::from_records((6, 6), &records);
+        let d = &report.draws[0];
+        assert_eq!(d.fragments.len(), 1, "{}", report.text());
+        let f = &d.fragments[0];
+        assert_eq!(f.input_primitive, Some(1));
+        assert!(f.vertices.iter().all(|v| v.emitted_vertex.is_some()));
+        // The vertices are named by the geometry shader's outputs.
+        assert!(f.vertices[0]
+            .outputs
+            .iter()
+            .any(|o| o.name == "gl_Position"));
+        assert_eq!(d.geometry.len(), 1);
+        let g = &d.geometry[0];
+        assert_eq!((g.primitive, g.primitive_id), (1, 1));
+        assert_eq!((&g.vertices[..], &g.indices[..]), (&[1][..], &[1][..]));
+        assert_eq!(g.inputs[0].name, "gl_in[0].gl_Position");
+        assert_eq!(g.emitted.len(), 4);
+        let marked = g.emitted.iter().filter(|e| e.fragments == [1]).count();
+        assert_eq!(marked, 3);
+        assert!(d.vertex.as_ref().is_some_and(|v| v.index == 1));
+        let json = report.json();
+        for key in ["\"geometry\"", "\"input_primitive\": 1", "emitted_vertex"] {
+            assert!(json.contains(key), "no {key} in {json}");
+        }
+    }
+
+    /// A geometry shader writing gl_Layer into a layered framebuffer: the
+    /// draw is not replayed, its record says why, and the draws after it
+    /// keep their numbers.
+    #[test]
+    fn layered_draws_say_why_they_are_not_traced() {
+        let gs = "#version 150
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+void main() {
+    for (int i = 0; i < 3; i++) {
+        gl_Position = gl_in[i].gl_Position;
+        gl_Layer = 1;
+        EmitVertex();
+    }
+}";
+        let mut ctx = geometry_context(gs, &[-1.0, -1.0, 3.0, -1.0, -1.0, 3.0]);
+        let t = ctx.gen_textures(1)[0];
+        ctx.bind_texture(GL_TEXTURE_2D_ARRAY, t);
+        let zeros = vec![0u8; 8 * 8 * 4 * 2];
+        ctx.tex_image(
+            GL_TEXTURE_2D_ARRAY,
+            0,
+            GL_RGBA8 as i32,
+            [8, 8, 2],
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            Some(&zeros),
+        );
+        let fb = ctx.gen_framebuffers(1)[0];
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+        ctx.framebuffer_texture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, t, 0);
+        let mut request = gl::debug::DebugRequest::pixel(2, 2);
+        request.view = Some("c".into());
+        ctx.set_debug(Some(request));
+        ctx.draw_arrays(GL_TRIANGLES, 0, 3);
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, 0);
+        ctx.draw_arrays(GL_TRIANGLES, 0, 3);
+        let records = ctx.take_debug_records();
+        assert!(matches!(&records[0].view, Some(Err(e)) if e.contains("gl_Layer")));
+        let report = Report::from_records((2, 2), &records);
+        let text = report.text();
+        assert_eq!(report.draws.len(), 2, "{text}");
+        let layered = &report.draws[0];
+        assert!(layered.fragments.is_empty());
+        assert!(
+            layered
+                .note
+                .as_deref()
+                .is_some_and(|n| n.contains("does not replay")),
+            "{text}"
+        );
+        assert_eq!(report.draws[1].draw, 1);
+        assert_eq!(report.draws[1].fragments.len(), 1, "{text}");
     }
 }
