@@ -5,8 +5,11 @@
 //! with [`raster::probe_draw`] before it runs, and its [`DrawRecord`] —
 //! the probe plus what is needed to explain it (the kernels with their
 //! variable tables, the compiled shader objects with their source text) —
-//! waits in the context until [`Context::take_debug_records`]. With no
-//! request set, a draw pays one `Option` check.
+//! waits in the context until [`Context::take_debug_records`]. A draw a
+//! geometry shader spreads over the layers of a layered framebuffer is
+//! not replayed: its record carries the reason
+//! ([`raster::DrawProbe::unreachable`]). With no request set, a draw pays
+//! one `Option` check.
 
 use crate::Context;
 use std::sync::Arc;

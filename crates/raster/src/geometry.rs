@@ -23,6 +23,11 @@
 //! winding with the provoking vertex where the state's convention wants
 //! it (the strip's last vertex, or with the first-vertex convention its
 //! first).
+//!
+//! Under the debugger's probe the stage also notes which input primitive
+//! emitted each vertex and leaves the vertex stage's results with the
+//! probe, which `crate::replay` traces invocations again from
+//! ([`PrimitiveSource`], [`load_primitive`]: what fills a lane).
 
 use crate::assembly::{geometry_input, primitive_count, Mode};
 use crate::ex::{Batch, Emitted, Interface, LANES};

@@ -118,7 +118,7 @@ pub struct EmittedVertex {
 pub struct DrawProbe {
     pub pixel: (u32, u32),
     /// The pixel is outside the framebuffer or the scissor box: no fragment
-    /// can reach it.
+    /// can reach it (or, set by the caller, why the draw was not replayed).
     pub unreachable: Option<String>,
     /// The replayed draw stopped with this error (a shader's loop
     /// budget...); what it recorded up to then is kept.
