@@ -111,7 +111,8 @@ pub fn report(args: &Args) -> Result<debugger::Report, String> {
     } else {
         let (name, script) = shader_runner::load(&args.file)?;
         let window = shader_runner::window_config(&script);
-        let mut ctx = gl::Context::new(window.width, window.height);
+        // The context the test asks for (a GLSL 1.50 test needs 3.2+).
+        let mut ctx = shader_runner::context(&window);
         ctx.set_debug(Some(request));
         let opts = shader_runner::Options {
             file: args.file.clone(),

@@ -195,3 +195,37 @@ fn sphere_impostor_pixels_match_the_golden_files() {
     let _ = std::fs::remove_dir_all(&tmp);
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// A draw with a geometry stage: the view shows a fragment-shader input
+/// over the emitted primitives and the outlines are theirs.
+#[test]
+fn views_and_outlines_work_with_a_geometry_stage() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/debug");
+    let tmp = std::env::temp_dir().join(format!("shaderbox-debug-gs-{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).expect("tmp dir");
+    let (view, outl) = (tmp.join("view.png"), tmp.join("outlines.png"));
+    let out = Command::new(env!("CARGO_BIN_EXE_shaderbox"))
+        .arg("debug")
+        .arg(dir.join("geometry-shrink.shader_test"))
+        .args(["--pixel", "166,166", "--view", "color", "--view-png"])
+        .arg(&view)
+        .arg("--outlines")
+        .arg(&outl)
+        .output()
+        .expect("run shaderbox");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // The emitted vertices keep the corners' colours (x 0 or 1); the
+    // pixel centres inside the shrunk triangles give x just inside that.
+    let legend = String::from_utf8_lossy(&out.stderr);
+    assert!(legend.contains("view `color': x in [0.006"), "{legend}");
+    assert!(String::from_utf8_lossy(&out.stdout).contains("geometry shader, input primitive 1"));
+    for png in [&view, &outl] {
+        let bytes = std::fs::read(png).expect("png written");
+        assert!(bytes.starts_with(b"\x89PNG"), "{}", png.display());
+    }
+    let _ = std::fs::remove_dir_all(&tmp);
+}

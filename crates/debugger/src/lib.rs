@@ -4,12 +4,17 @@
 //! draw by [`gl::Context::set_debug`]) into a report a person reads or a
 //! tool parses: for each draw that touched the pixel, each fragment in
 //! order with its primitive (the vertices after the vertex shader with
-//! every output), its interpolated inputs, each statement its shader
+//! every output; with a geometry stage, the vertices it emitted and the
+//! input primitive whose invocation emitted them), its interpolated inputs, each statement its shader
 //! executed with the source line and the values it stored (loop
 //! iterations appear as repeated statements), `debugPrintfEXT` output,
 //! `discard`, its outputs, and what the per-fragment operations did (alpha,
 //! stencil and depth tests with the values compared, blending, the stored
-//! result).
+//! result). With a geometry stage, each invocation that emitted a
+//! fragment's primitive is traced too: its input primitive (number,
+//! `gl_PrimitiveIDIn`, input vertices), inputs, statements and stores,
+//! prints, and every vertex it emitted with its strip, those of the
+//! fragments' primitives marked.
 //!
 //! [`Report::from_records`] builds the report; [`Report::text`] renders it
 //! with source lines, `serde_json` renders [`Report`] as JSON.
@@ -56,6 +61,10 @@ pub struct DrawReport {
     pub after: Option<PixelReport>,
     /// The traced vertex, when one was asked for.
     pub vertex: Option<VertexTrace>,
+    /// With a geometry stage: the invocations that emitted the fragments'
+    /// primitives, by input primitive.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub geometry: Vec<GeometryTrace>,
     /// Every primitive's window-space corners, when asked for.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub outlines: Vec<Vec<[f64; 2]>>,
@@ -72,6 +81,37 @@ pub struct VertexTrace {
     pub truncated: bool,
     pub outputs: Vec<Named>,
     pub error: Option<String>,
+}
+
+/// One geometry shader invocation: the one of input primitive
+/// `primitive`.
+#[derive(Clone, Debug, Serialize)]
+pub struct GeometryTrace {
+    pub primitive: u32,
+    /// `gl_PrimitiveIDIn`.
+    pub primitive_id: u32,
+    /// Its input vertices: positions in the draw's vertex list, and the
+    /// vertex indices there.
+    pub vertices: Vec<usize>,
+    pub indices: Vec<u32>,
+    pub inputs: Vec<Named>,
+    pub steps: Vec<Step>,
+    /// The steps stop short: the draw's trace limit was reached.
+    pub truncated: bool,
+    pub emitted: Vec<EmittedReport>,
+    pub error: Option<String>,
+}
+
+/// A vertex a geometry shader invocation emitted.
+#[derive(Clone, Debug, Serialize)]
+pub struct EmittedReport {
+    /// Its number among the invocation's emitted vertices (from 0).
+    pub vertex: u32,
+    pub strip: u32,
+    pub outputs: Vec<Named>,
+    /// The fragments (numbered from 1, as the text report counts them)
+    /// whose primitive it is a vertex of.
+    pub fragments: Vec<usize>,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -93,9 +133,14 @@ pub struct PrintReport {
 #[derive(Clone, Debug, Serialize)]
 pub struct FragmentReport {
     pub primitive: u32,
+    /// With a geometry stage: the input primitive whose invocation
+    /// emitted this primitive (`DrawReport::geometry`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub input_primitive: Option<u32>,
     pub facing: &'static str,
     /// The primitive's vertices: index position in the draw and the vertex
-    /// shader's outputs.
+    /// shader's outputs (with a geometry stage: position in the list of
+    /// emitted vertices and the geometry shader's outputs).
     pub vertices: Vec<VertexReport>,
     pub window_z: f64,
     pub inputs: Vec<Named>,
@@ -112,6 +157,10 @@ pub struct FragmentReport {
 #[derive(Clone, Debug, Serialize)]
 pub struct VertexReport {
     pub position: usize,
+    /// With a geometry stage: its number among the emitted vertices of
+    /// its invocation.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub emitted_vertex: Option<u32>,
     pub outputs: Vec<Named>,
 }
 
@@ -469,6 +518,9 @@ impl Report {
             for (i, f) in d.fragments.iter().enumerate() {
                 write_fragment(&mut s, i + 1, f);
             }
+            for g in &d.geometry {
+                write_geometry(&mut s, g);
+            }
             for p in &d.vertex_prints {
                 let line = p.line.map_or(String::new(), |l| format!(" line {l}"));
                 let _ = writeln!(
@@ -513,6 +565,7 @@ fn draw_report(r: &DrawRecord) -> DrawReport {
         vertex_prints: Vec::new(),
         after: None,
         vertex: None,
+        geometry: Vec::new(),
         outlines: Vec::new(),
     };
     let probe = &r.probe;
@@ -537,10 +590,19 @@ fn draw_report(r: &DrawRecord) -> DrawReport {
     });
     d.after = Some(PixelReport::new(&probe.after));
     let fs_iface = r.fragment.kernel.interface();
-    let vs_iface = r.vertex.kernel.interface();
+    // The vertices set up are the last stage's before rasterization.
+    let last = r.geometry.as_ref().unwrap_or(&r.vertex);
+    let last_iface = last.kernel.interface();
     for f in &probe.fragments {
         d.fragments
-            .push(fragment_report(r, probe, f, fs_iface, vs_iface));
+            .push(fragment_report(r, probe, f, fs_iface, last_iface));
+    }
+    if let Some(gs) = &r.geometry {
+        d.geometry = probe
+            .geometry
+            .iter()
+            .map(|g| geometry_trace(gs, g, &d.fragments))
+            .collect();
     }
     for (vertex, span, text) in &probe.vertex_prints {
         d.vertex_prints.push(VertexPrint {
@@ -562,6 +624,104 @@ fn draw_report(r: &DrawRecord) -> DrawReport {
     d
 }
 
+/// The report of a traced geometry shader invocation; `fragments` are
+/// the draw's, to mark the emitted vertices of their primitives.
+fn geometry_trace(
+    stage: &StageInfo,
+    g: &raster::GeometryProbe,
+    fragments: &[FragmentReport],
+) -> GeometryTrace {
+    let k = &stage.kernel;
+    let iface = k.interface();
+    GeometryTrace {
+        primitive: g.primitive,
+        primitive_id: g.primitive_id,
+        vertices: g.positions.clone(),
+        indices: g.indices.clone(),
+        inputs: geometry_inputs(iface, &g.inputs),
+        steps: steps(k, stage, &g.events),
+        truncated: g.truncated,
+        emitted: g
+            .emitted
+            .iter()
+            .enumerate()
+            .map(|(v, e)| EmittedReport {
+                vertex: v as u32,
+                strip: e.strip,
+                outputs: named_slots(&iface.outputs, &e.outputs, &iface.structs, true, true),
+                fragments: fragments
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, f)| {
+                        f.input_primitive == Some(g.primitive)
+                            && f.vertices
+                                .iter()
+                                .any(|x| x.emitted_vertex == Some(v as u32))
+                    })
+                    .map(|(i, _)| i + 1)
+                    .collect(),
+            })
+            .collect(),
+        error: g.error.clone(),
+    }
+}
+
+/// A geometry shader's inputs by name, the per-vertex arrays one element
+/// at a time (`gl_in[1].gl_Position`, `v[2]`...).
+fn geometry_inputs(iface: &exec::Interface, values: &[f32]) -> Vec<Named> {
+    let structs = &iface.structs;
+    let mut out = Vec::new();
+    for s in &iface.inputs {
+        let kinds = exec::kinds(s.ty, structs);
+        let value = |c: usize| {
+            let v = values.get(s.offset + c).copied().unwrap_or(0.0);
+            let kind = kinds.get(c).copied().unwrap_or(Scalar::Float);
+            Number::from_slot(kind, v, true)
+        };
+        let elements = match s.ty.array {
+            Some(glsl::types::ArraySize::Sized(n)) if n > 0 => n as usize,
+            _ => {
+                out.push(Named {
+                    name: s.name.clone(),
+                    values: (0..s.components).map(value).collect(),
+                });
+                continue;
+            }
+        };
+        let elem = s.ty.element();
+        let per = exec::size_of(elem, structs).max(1);
+        for e in 0..elements {
+            let first = e * per;
+            let members = match elem.base {
+                Base::Struct(id) => structs
+                    .get(id.0 as usize)
+                    .map(|d| {
+                        d.members
+                            .iter()
+                            .map(|m| (format!(".{}", m.name), exec::size_of(m.ty, structs)))
+                            .collect()
+                    })
+                    .unwrap_or_default(),
+                _ => vec![(String::new(), per)],
+            };
+            let mut at = first;
+            for (member, n) in members {
+                // An unsized member (gl_ClipDistance nobody sized) has no
+                // value to show.
+                if n == 0 {
+                    continue;
+                }
+                out.push(Named {
+                    name: format!("{}[{e}]{member}", s.name),
+                    values: (at..(at + n).min(s.components)).map(value).collect(),
+                });
+                at += n;
+            }
+        }
+    }
+    out
+}
+
 fn fragment_report(
     r: &DrawRecord,
     probe: &raster::DrawProbe,
@@ -569,14 +729,18 @@ fn fragment_report(
     fs: &exec::Interface,
     vs: &exec::Interface,
 ) -> FragmentReport {
-    let vertices = probe
-        .primitives
-        .get(f.primitive as usize)
+    let positions = probe.primitives.get(f.primitive as usize);
+    let input_primitive = positions
+        .and_then(|p| p.first())
+        .and_then(|&p| probe.emitted_by.get(p))
+        .map(|by| by.primitive);
+    let vertices = positions
         .map(|positions| {
             positions
                 .iter()
                 .map(|&p| VertexReport {
                     position: p,
+                    emitted_vertex: probe.emitted_by.get(p).map(|by| by.vertex),
                     outputs: named_slots(
                         &vs.outputs,
                         probe.vertex_outputs.get(p).map_or(&[][..], |v| &v[..]),
@@ -596,6 +760,7 @@ fn fragment_report(
     };
     FragmentReport {
         primitive: f.primitive,
+        input_primitive,
         facing: if f.back_facing { "back" } else { "front" },
         vertices,
         window_z: f.window_z,
@@ -714,6 +879,51 @@ fn write_vertex(s: &mut String, v: &VertexTrace) {
     }
 }
 
+fn write_geometry(s: &mut String, g: &GeometryTrace) {
+    let list = |v: &[String]| v.join(", ");
+    let (vertices, indices) = if g.vertices.len() == 1 {
+        ("vertex", "index")
+    } else {
+        ("vertices", "indices")
+    };
+    let _ = writeln!(
+        s,
+        "  geometry shader, input primitive {} (gl_PrimitiveIDIn {}), {vertices} {} ({indices} {}):",
+        g.primitive,
+        g.primitive_id,
+        list(&g.vertices.iter().map(|v| v.to_string()).collect::<Vec<_>>()),
+        list(&g.indices.iter().map(|v| v.to_string()).collect::<Vec<_>>()),
+    );
+    if !g.inputs.is_empty() {
+        let _ = writeln!(s, "    inputs: {}", named_text(&g.inputs));
+    }
+    write_steps(s, &g.steps);
+    write_truncated(s, g.truncated);
+    if let Some(e) = &g.error {
+        let _ = writeln!(s, "    {e}");
+    }
+    if g.emitted.is_empty() {
+        let _ = writeln!(s, "    emitted no vertex");
+    }
+    for e in &g.emitted {
+        let of = match e.fragments.as_slice() {
+            [] => String::new(),
+            [one] => format!(", of fragment {one}'s primitive"),
+            many => format!(
+                ", of fragments {}'s primitives",
+                list(&many.iter().map(|v| v.to_string()).collect::<Vec<_>>())
+            ),
+        };
+        let _ = writeln!(
+            s,
+            "    emitted vertex {} (strip {}{of}): {}",
+            e.vertex,
+            e.strip,
+            named_text(&e.outputs)
+        );
+    }
+}
+
 fn write_fragment(s: &mut String, n: usize, f: &FragmentReport) {
     let verts: Vec<String> = f.vertices.iter().map(|v| v.position.to_string()).collect();
     let _ = writeln!(
@@ -724,13 +934,22 @@ fn write_fragment(s: &mut String, n: usize, f: &FragmentReport) {
         f.facing,
         f.window_z
     );
+    if let Some(k) = f.input_primitive {
+        let _ = writeln!(
+            s,
+            "    emitted by the geometry shader of input primitive {k}"
+        );
+    }
     for v in &f.vertices {
         let outs: Vec<String> = v
             .outputs
             .iter()
             .map(|o| format!("{} = {}", o.name, values_text(&o.values)))
             .collect();
-        let _ = writeln!(s, "    vertex {}: {}", v.position, outs.join("; "));
+        let emitted = v
+            .emitted_vertex
+            .map_or(String::new(), |e| format!(" (emitted vertex {e})"));
+        let _ = writeln!(s, "    vertex {}{emitted}: {}", v.position, outs.join("; "));
     }
     let ins: Vec<String> = f
         .inputs
@@ -851,5 +1070,145 @@ mod tests {
         let report = Report::from_records((1, 1), &records);
         let text = report.text();
         assert!(text.contains("-123456789"), "{text}");
+        // No geometry stage: none of its keys in the JSON.
+        let json = report.json();
+        for key in ["\"geometry\"", "input_primitive", "emitted_vertex"] {
+            assert!(!json.contains(key), "{key} in {json}");
+        }
+    }
+
+    /// A 3.3 compatibility context drawing with `gs` between a
+    /// pass-through vertex stage and a constant fragment stage; `pos`
+    /// holds the points given.
+    fn geometry_context(gs: &str, points: &[f32]) -> gl::Context {
+        let mut ctx = gl::Context::with_api(8, 8, gl::Api::GL33_COMPAT);
+        let p = ctx.create_program();
+        for (kind, src) in [
+            (
+                GL_VERTEX_SHADER,
+                "#version 150\nin vec2 pos;\nvoid main() { gl_Position = vec4(pos, 0.0, 1.0); }",
+            ),
+            (GL_GEOMETRY_SHADER, gs),
+            (
+                GL_FRAGMENT_SHADER,
+                "#version 150\nout vec4 c;\nvoid main() { c = vec4(1.0); }",
+            ),
+        ] {
+            let s = ctx.create_shader(kind);
+            ctx.shader_source(s, &[src]);
+            ctx.compile_shader(s);
+            assert_eq!(ctx.get_shaderiv(s, GL_COMPILE_STATUS), 1, "{src}");
+            ctx.attach_shader(p, s);
+        }
+        ctx.link_program(p);
+        assert_eq!(ctx.get_programiv(p, GL_LINK_STATUS), 1);
+        ctx.use_program(p);
+        let pos = ctx.get_attrib_location(p, "pos") as u32;
+        ctx.vertex_attrib_pointer(pos, 2, GL_FLOAT, false, 0, gl::ArrayData::from_f32(points));
+        ctx.enable_vertex_attrib_array(pos);
+        ctx
+    }
+
+    /// The JSON report of a draw with a geometry stage names the input
+    /// primitive of each fragment, the emitted number of each of its
+    /// vertices, and the invocation with its per-vertex inputs one element
+    /// at a time and its emitted vertices marked with the fragment.
+    #[test]
+    fn geometry_invocations_are_in_the_json_report() {
+        let gs = "#version 150
+layout(points) in;
+layout(triangle_strip, max_vertices = 4) out;
+void main() {
+    for (int i = 0; i < 4; i++) {
+        gl_Position = gl_in[0].gl_Position + vec4(vec2(i % 2, i / 2) * 0.5 - 0.25, 0.0, 0.0);
+        EmitVertex();
+    }
+}";
+        let mut ctx = geometry_context(gs, &[-0.5, -0.5, 0.5, 0.5]);
+        let mut request = gl::debug::DebugRequest::pixel(6, 6);
+        request.vertex = Some(1);
+        ctx.set_debug(Some(request));
+        ctx.draw_arrays(GL_POINTS, 0, 2);
+        let records = ctx.take_debug_records();
+        let report = Report::from_records((6, 6), &records);
+        let d = &report.draws[0];
+        assert_eq!(d.fragments.len(), 1, "{}", report.text());
+        let f = &d.fragments[0];
+        assert_eq!(f.input_primitive, Some(1));
+        assert!(f.vertices.iter().all(|v| v.emitted_vertex.is_some()));
+        // The vertices are named by the geometry shader's outputs.
+        assert!(f.vertices[0]
+            .outputs
+            .iter()
+            .any(|o| o.name == "gl_Position"));
+        assert_eq!(d.geometry.len(), 1);
+        let g = &d.geometry[0];
+        assert_eq!((g.primitive, g.primitive_id), (1, 1));
+        assert_eq!((&g.vertices[..], &g.indices[..]), (&[1][..], &[1][..]));
+        assert_eq!(g.inputs[0].name, "gl_in[0].gl_Position");
+        assert_eq!(g.emitted.len(), 4);
+        let marked = g.emitted.iter().filter(|e| e.fragments == [1]).count();
+        assert_eq!(marked, 3);
+        assert!(d.vertex.as_ref().is_some_and(|v| v.index == 1));
+        let json = report.json();
+        for key in ["\"geometry\"", "\"input_primitive\": 1", "emitted_vertex"] {
+            assert!(json.contains(key), "no {key} in {json}");
+        }
+    }
+
+    /// A geometry shader writing gl_Layer into a layered framebuffer: the
+    /// draw is not replayed, its record says why, and the draws after it
+    /// keep their numbers.
+    #[test]
+    fn layered_draws_say_why_they_are_not_traced() {
+        let gs = "#version 150
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+void main() {
+    for (int i = 0; i < 3; i++) {
+        gl_Position = gl_in[i].gl_Position;
+        gl_Layer = 1;
+        EmitVertex();
+    }
+}";
+        let mut ctx = geometry_context(gs, &[-1.0, -1.0, 3.0, -1.0, -1.0, 3.0]);
+        let t = ctx.gen_textures(1)[0];
+        ctx.bind_texture(GL_TEXTURE_2D_ARRAY, t);
+        let zeros = vec![0u8; 8 * 8 * 4 * 2];
+        ctx.tex_image(
+            GL_TEXTURE_2D_ARRAY,
+            0,
+            GL_RGBA8 as i32,
+            [8, 8, 2],
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            Some(&zeros),
+        );
+        let fb = ctx.gen_framebuffers(1)[0];
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+        ctx.framebuffer_texture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, t, 0);
+        let mut request = gl::debug::DebugRequest::pixel(2, 2);
+        request.view = Some("c".into());
+        ctx.set_debug(Some(request));
+        ctx.draw_arrays(GL_TRIANGLES, 0, 3);
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, 0);
+        ctx.draw_arrays(GL_TRIANGLES, 0, 3);
+        let records = ctx.take_debug_records();
+        assert!(matches!(&records[0].view, Some(Err(e)) if e.contains("gl_Layer")));
+        let report = Report::from_records((2, 2), &records);
+        let text = report.text();
+        assert_eq!(report.draws.len(), 2, "{text}");
+        let layered = &report.draws[0];
+        assert!(layered.fragments.is_empty());
+        assert!(
+            layered
+                .note
+                .as_deref()
+                .is_some_and(|n| n.contains("does not replay")),
+            "{text}"
+        );
+        assert_eq!(report.draws[1].draw, 1);
+        assert_eq!(report.draws[1].fragments.len(), 1, "{text}");
     }
 }

@@ -5,8 +5,11 @@
 //! with [`raster::probe_draw`] before it runs, and its [`DrawRecord`] —
 //! the probe plus what is needed to explain it (the kernels with their
 //! variable tables, the compiled shader objects with their source text) —
-//! waits in the context until [`Context::take_debug_records`]. With no
-//! request set, a draw pays one `Option` check.
+//! waits in the context until [`Context::take_debug_records`]. A draw a
+//! geometry shader spreads over the layers of a layered framebuffer is
+//! not replayed: its record carries the reason
+//! ([`raster::DrawProbe::unreachable`]). With no request set, a draw pays
+//! one `Option` check.
 
 use crate::Context;
 use std::sync::Arc;
@@ -79,6 +82,8 @@ pub struct DrawRecord {
     /// The draw framebuffer (0: the default one).
     pub framebuffer: u32,
     pub vertex: StageInfo,
+    /// The geometry stage, when the program has one.
+    pub geometry: Option<StageInfo>,
     pub fragment: StageInfo,
     /// What happened at the pixel (a draw that failed part-way included).
     pub probe: raster::DrawProbe,

@@ -553,6 +553,8 @@ fn probe_reports_every_fragment_of_a_pixel() {
     assert!(red.events.iter().any(|e| matches!(e, Event::Statement(_))));
     assert_eq!(p.primitives.len(), 4);
     assert_eq!(p.vertex_outputs.len(), 12);
+    // No geometry stage: no emitted vertices, no invocations.
+    assert!(p.emitted_by.is_empty() && p.geometry.is_empty());
     // The traced vertex gives the outputs the draw used; every triangle
     // has an outline.
     let v = p.vertex.as_ref().expect("vertex trace");
@@ -1092,4 +1094,139 @@ fn draws_reusing_an_earlier_draws_buffers_give_the_same_bytes() {
         let small = impostors(&workers, true, true, 60, |_| {});
         assert!(small == impostors(&crate::Workers::new(1), true, true, 60, |_| {}));
     }
+}
+
+/// With a geometry stage, the probe follows a pixel back to the invocation
+/// that emitted its primitive: which input primitive emitted each vertex
+/// set up, and that invocation traced again with the values of the real
+/// draw (its inputs, gl_PrimitiveIDIn, the vertices it emitted, whose
+/// outputs are those set up).
+#[test]
+fn probe_follows_a_pixel_to_its_geometry_invocation() {
+    use crate::{probe_draw, EmittedBy, Event, ProbeRequest};
+    let opts = |s: Stage| CompileOptions::new(s);
+    let v = compile(
+        &["#version 150\nin vec2 pos;\nvoid main() { gl_Position = vec4(pos, 0.0, 1.0); }"],
+        &opts(Stage::Vertex),
+    );
+    // Each point becomes a 2×2-pixel square (one strip of 4), coloured by
+    // its primitive ID; a second strip far outside the viewport.
+    let g = compile(
+        &["#version 150
+layout(points) in;
+layout(triangle_strip, max_vertices = 8) out;
+out vec4 c;
+void main() {
+    for (int i = 0; i < 4; i++) {
+        c = vec4(float(gl_PrimitiveIDIn) * 0.5, 1.0, 0.0, 1.0);
+        gl_Position = gl_in[0].gl_Position + vec4(vec2(i % 2, i / 2) * 0.5 - 0.25, 0.0, 0.0);
+        EmitVertex();
+    }
+    EndPrimitive();
+    for (int i = 0; i < 4; i++) {
+        gl_Position = vec4(vec2(i % 2, i / 2) + 5.0, 0.0, 1.0);
+        EmitVertex();
+    }
+}"],
+        &opts(Stage::Geometry),
+    );
+    let f = compile(
+        &["#version 150\nin vec4 c;\nout vec4 o;\nvoid main() { o = c; }"],
+        &opts(Stage::Fragment),
+    );
+    for s in [&v, &g, &f] {
+        assert!(s.ok(), "{}", s.info_log());
+    }
+    let prog = glsl::link::link(&[&v, &g, &f]);
+    assert!(prog.ok(), "{}", prog.info_log());
+    let k = |s: Stage| Kernel::new(prog.stage(s).expect("stage")).expect("lowering");
+    let (vs, gs, fs) = (k(Stage::Vertex), k(Stage::Geometry), k(Stage::Fragment));
+    let (w, h) = (8, 8);
+    let fb = Framebuffer::new(w, h, ColorFormat::Rgba8, false, false);
+    let state = PipelineState {
+        viewport: Rect::new(0, 0, w as i32, h as i32),
+        ..PipelineState::default()
+    };
+    // Points at pixel centres (2, 2) and (6, 6), and index 1 drawn first.
+    let pos = [[0.5, 0.5], [-0.5, -0.5]];
+    let fetch = Attribs {
+        names: vs
+            .interface()
+            .inputs
+            .iter()
+            .map(|s| s.name.clone())
+            .collect(),
+        pos: &pos,
+        col: &[],
+    };
+    let indices = [1u32, 0];
+    let units = TextureUnits::default();
+    let replay = crate::Replay {
+        state: &state,
+        vs: &vs,
+        vs_uniforms: &[],
+        gs: Some((&gs, &[])),
+        fs: &fs,
+        fs_uniforms: &[],
+        mode: Mode::Points,
+        indices: &indices,
+        fetch: &fetch,
+        textures: &units,
+    };
+    let mut drawn = fb.clone();
+    crate::draw_geometry_stages(
+        &crate::Workers::inline(),
+        &mut drawn,
+        &state,
+        (&vs, &[]),
+        Some((&gs, &[])),
+        (&fs, &[]),
+        Mode::Points,
+        &indices,
+        &fetch,
+        &units,
+    )
+    .expect("draw");
+    let p = probe_draw(&fb, &replay, ProbeRequest::pixel(6, 6));
+    assert_eq!(
+        p.after,
+        crate::PixelState::read(&drawn, 6 * w as usize + 6),
+        "{p:#?}"
+    );
+    // Two points × two strips of 4 vertices, 2 triangles each.
+    assert_eq!(p.primitives.len(), 8);
+    assert_eq!(p.emitted_by.len(), 24);
+    assert_eq!(p.fragments.len(), 1, "{p:#?}");
+    let frag = &p.fragments[0];
+    // The second input primitive's first strip.
+    assert!(frag.primitive == 4 || frag.primitive == 5);
+    let by: Vec<EmittedBy> = p.primitives[frag.primitive as usize]
+        .iter()
+        .map(|&pos| p.emitted_by[pos])
+        .collect();
+    assert!(
+        by.iter().all(|b| b.primitive == 1 && b.vertex < 4),
+        "{by:?}"
+    );
+    assert_eq!(p.geometry.len(), 1);
+    let inv = &p.geometry[0];
+    assert_eq!((inv.primitive, inv.primitive_id), (1, 1));
+    assert_eq!((&inv.positions[..], &inv.indices[..]), (&[1][..], &[0][..]));
+    let iface = gs.interface();
+    let id = iface.input("gl_PrimitiveIDIn").expect("gl_PrimitiveIDIn");
+    assert_eq!(inv.inputs[id.offset].to_bits(), 1);
+    assert_eq!(inv.emitted.len(), 8);
+    assert_eq!(inv.emitted[0].strip, 0);
+    assert_ne!(inv.emitted[4].strip, inv.emitted[0].strip);
+    // The invocation's emitted vertices are the ones set up.
+    let n = p.vertex_outputs[0].len();
+    for (&pos, b) in p.primitives[frag.primitive as usize].iter().zip(&by) {
+        let traced = &inv.emitted[b.vertex as usize].outputs[..n];
+        assert_eq!(traced, &p.vertex_outputs[pos][..], "vertex {pos}");
+    }
+    assert!(inv.events.iter().any(|e| matches!(e, Event::Store { .. })));
+    assert!(!inv.truncated && inv.error.is_none());
+    // No fragment, no invocation traced.
+    let p = probe_draw(&fb, &replay, ProbeRequest::pixel(0, 7));
+    assert!(p.fragments.is_empty() && p.geometry.is_empty());
 }

@@ -23,10 +23,16 @@
 //! winding with the provoking vertex where the state's convention wants
 //! it (the strip's last vertex, or with the first-vertex convention its
 //! first).
+//!
+//! Under the debugger's probe the stage also notes which input primitive
+//! emitted each vertex and leaves the vertex stage's results with the
+//! probe, which `crate::replay` traces invocations again from
+//! ([`PrimitiveSource`], [`load_primitive`]: what fills a lane).
 
 use crate::assembly::{geometry_input, primitive_count, Mode};
-use crate::ex::{Emitted, Interface, LANES};
+use crate::ex::{Batch, Emitted, Interface, LANES};
 use crate::linkage::{new_batch, VsLayout};
+use crate::probe::{EmittedBy, Probe};
 use crate::state::PipelineState;
 use crate::vertex::run_vertices;
 use crate::workers::Workers;
@@ -71,7 +77,14 @@ pub(crate) fn vertex_and_geometry_stages(
         &shaded,
         state,
         &VsLayout::new(gs.0.interface()),
+        probe,
     );
+    // The debugger traces invocations again from the vertex stage's
+    // results after the draw.
+    if let Some(p) = probe {
+        p.keep_geometry_input(shaded, vertex_layout.outputs);
+        return emitted;
+    }
     let mut spare = workers.spare();
     spare.keep_tables([shaded.vertex_of]);
     spare.keep(Vec::new(), shaded.outputs);
@@ -146,7 +159,8 @@ fn input_plan(vs: &Interface, gs: &Interface) -> InputPlan {
 /// stage's results, `vs_stride` values per vertex of `vs`'s interface);
 /// see the module docs. `layout` is the geometry kernel's
 /// ([`VsLayout::new`] of its interface): its colours are clamped when
-/// the state says so.
+/// the state says so. A `probe` is told which input primitive emitted
+/// each vertex ([`Probe::note_emitted`]).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn run_geometry(
     workers: &Workers,
@@ -157,6 +171,7 @@ pub(crate) fn run_geometry(
     input: &Vertices,
     state: &PipelineState,
     layout: &VsLayout,
+    probe: Option<&Probe>,
 ) -> Result<Vertices, DrawError> {
     let iface = gs.interface();
     let Some(emitted) = iface.emitted else {
@@ -169,11 +184,9 @@ pub(crate) fn run_geometry(
         OutputPrimitive::LineStrip => Mode::Lines,
         OutputPrimitive::TriangleStrip => Mode::Triangles,
     };
-    let plan = input_plan(vs, iface);
-    let primitive_id = iface.input("gl_PrimitiveIDIn").map(|s| s.offset);
-    let arity = emitted.input.vertices() as usize;
-    let count = input.vertex_of.len();
-    let primitives = primitive_count(input.mode, count);
+    let source = PrimitiveSource::new(vs, iface, vs_stride, input, state);
+    let primitives = primitive_count(input.mode, input.vertex_of.len());
+    let record = probe.is_some();
     let prepared = if primitives > LANES {
         gs.prepare(uniforms)
     } else {
@@ -181,39 +194,23 @@ pub(crate) fn run_geometry(
     };
     let stride = layout.outputs;
     let tasks = primitives.div_ceil(PRIMITIVES_PER_TASK);
-    let run_task = |t: usize| -> Result<(Vec<f32>, Vec<u32>), crate::ex::ExecError> {
+    // A task's emitted vertices, its primitive list and, under a probe,
+    // the (input primitive, emitted vertex) of each vertex.
+    type TaskOutput = (Vec<f32>, Vec<u32>, Vec<EmittedBy>);
+    let run_task = |t: usize| -> Result<TaskOutput, crate::ex::ExecError> {
         let first = t * PRIMITIVES_PER_TASK;
         let last = (first + PRIMITIVES_PER_TASK).min(primitives);
         let mut batch = new_batch(iface.input_components, iface.output_components);
         let mut outputs = Vec::new();
         let mut list = Vec::new();
+        let mut sources = Vec::new();
         for start in (first..last).step_by(LANES) {
             let lanes = (last - start).min(LANES);
             for c in batch.inputs.iter_mut() {
                 *c = [0.0; LANES];
             }
             for lane in 0..lanes {
-                let k = start + lane;
-                let Some(verts) = geometry_input(input.mode, count, k, state.provoking_first)
-                else {
-                    continue;
-                };
-                for &(v, to, from, n) in &plan {
-                    let Some(&pos) = verts.get(v).filter(|_| v < arity) else {
-                        continue;
-                    };
-                    let Some(&vertex) = input.vertex_of.get(pos) else {
-                        continue;
-                    };
-                    let src = vertex as usize * vs_stride + from;
-                    let values = input.outputs.get(src..src + n).unwrap_or_default();
-                    for (dst, &x) in batch.inputs.iter_mut().skip(to).zip(values) {
-                        dst[lane] = x;
-                    }
-                }
-                if let Some(c) = primitive_id.and_then(|o| batch.inputs.get_mut(o)) {
-                    c[lane] = f32::from_bits(state.primitive_ids.of(k as u32));
-                }
+                load_primitive(&mut batch, lane, start + lane, &source);
             }
             batch.active = (1u32 << lanes) - 1;
             batch.discarded = 0;
@@ -235,7 +232,7 @@ pub(crate) fn run_geometry(
                 }
             }
             for lane in 0..lanes {
-                collect_lane(
+                let n = collect_lane(
                     &batch.outputs,
                     lane,
                     &emitted,
@@ -244,9 +241,15 @@ pub(crate) fn run_geometry(
                     &mut outputs,
                     &mut list,
                 );
+                if record {
+                    sources.extend((0..n as u32).map(|vertex| EmittedBy {
+                        primitive: (start + lane) as u32,
+                        vertex,
+                    }));
+                }
             }
         }
-        Ok((outputs, list))
+        Ok((outputs, list, sources))
     };
     let results = workers.map(tasks, 1, |t, cancel| {
         if cancel.skip(t) {
@@ -265,18 +268,98 @@ pub(crate) fn run_geometry(
     };
     // Tasks up to the first failure all ran: the first error in order is
     // the same whatever the thread count.
+    let mut sources = Vec::new();
     for r in results.into_iter().flatten() {
-        let (outputs, list) = r?;
+        let (outputs, list, from) = r?;
         let base = (out.outputs.len() / stride.max(1)) as u32;
         out.vertex_of.extend(list.iter().map(|&v| base + v));
         out.outputs.extend_from_slice(&outputs);
+        sources.extend(from);
+    }
+    if let Some(p) = probe {
+        p.note_emitted(sources);
     }
     Ok(out)
 }
 
+/// What fills a geometry lane: the vertex stage's results and where the
+/// geometry kernel takes them.
+pub(crate) struct PrimitiveSource<'a> {
+    input: &'a Vertices,
+    vs_stride: usize,
+    plan: InputPlan,
+    primitive_id: Option<usize>,
+    arity: usize,
+    state: &'a PipelineState,
+}
+
+impl<'a> PrimitiveSource<'a> {
+    /// The inputs of geometry kernel `gs` from `input`, the results of
+    /// vertex kernel `vs` (`vs_stride` values per vertex).
+    pub(crate) fn new(
+        vs: &Interface,
+        gs: &Interface,
+        vs_stride: usize,
+        input: &'a Vertices,
+        state: &'a PipelineState,
+    ) -> PrimitiveSource<'a> {
+        PrimitiveSource {
+            input,
+            vs_stride,
+            plan: input_plan(vs, gs),
+            primitive_id: gs.input("gl_PrimitiveIDIn").map(|s| s.offset),
+            arity: gs.emitted.map_or(0, |e| e.input.vertices() as usize),
+            state,
+        }
+    }
+
+    /// The positions in the index list of input primitive `k`'s vertices,
+    /// in the order the geometry shader takes them (the first `arity`).
+    fn vertices(&self, k: usize) -> Option<[usize; 6]> {
+        geometry_input(
+            self.input.mode,
+            self.input.vertex_of.len(),
+            k,
+            self.state.provoking_first,
+        )
+    }
+
+    /// [`PrimitiveSource::vertices`] for the debugger, only those the
+    /// shader takes.
+    pub(crate) fn positions(&self, k: usize) -> Option<Vec<usize>> {
+        let verts = self.vertices(k)?;
+        Some(verts.iter().take(self.arity).copied().collect())
+    }
+}
+
+/// Loads input primitive `k` into `lane` of a geometry batch (its
+/// vertices' outputs and `gl_PrimitiveIDIn`).
+pub(crate) fn load_primitive(batch: &mut Batch, lane: usize, k: usize, source: &PrimitiveSource) {
+    let Some(verts) = source.vertices(k) else {
+        return;
+    };
+    let input = source.input;
+    for &(v, to, from, n) in &source.plan {
+        let Some(&pos) = verts.get(v).filter(|_| v < source.arity) else {
+            continue;
+        };
+        let Some(&vertex) = input.vertex_of.get(pos) else {
+            continue;
+        };
+        let src = vertex as usize * source.vs_stride + from;
+        let values = input.outputs.get(src..src + n).unwrap_or_default();
+        for (dst, &x) in batch.inputs.iter_mut().skip(to).zip(values) {
+            dst[lane] = x;
+        }
+    }
+    if let Some(c) = source.primitive_id.and_then(|o| batch.inputs.get_mut(o)) {
+        c[lane] = f32::from_bits(source.state.primitive_ids.of(k as u32));
+    }
+}
+
 /// Appends what `lane` emitted to a task's vertices (`stride` values
 /// each) and its primitives (as a list of `mode`'s vertices, numbered in
-/// the task's vertices).
+/// the task's vertices); gives the number of vertices appended.
 fn collect_lane(
     batch: &[[f32; LANES]],
     lane: usize,
@@ -285,7 +368,7 @@ fn collect_lane(
     provoking_first: bool,
     outputs: &mut Vec<f32>,
     list: &mut Vec<u32>,
-) {
+) -> usize {
     let read = |c: usize| batch.get(c).map_or(0.0, |x| x[lane]);
     let n = (read(emitted.count()).to_bits() as usize).min(emitted.max_vertices);
     let base = (outputs.len() / stride.max(1)) as u32;
@@ -322,4 +405,5 @@ fn collect_lane(
         }
         start = end;
     }
+    n
 }

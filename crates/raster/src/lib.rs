@@ -264,8 +264,8 @@ pub use framebuffer::{
 pub use geometry::shade_geometry;
 pub use pixel_fragments::{write_pixel_fragments, PixelFragment};
 pub use probe::{
-    DrawProbe, Event, FragmentProbe, OpsProbe, PixelState, PrintLine, VertexProbe, View, ViewImage,
-    MAX_TRACE_EVENTS,
+    DrawProbe, EmittedBy, EmittedVertex, Event, FragmentProbe, GeometryProbe, OpsProbe, PixelState,
+    PrintLine, VertexProbe, View, ViewImage, MAX_TRACE_EVENTS,
 };
 pub use rasterize::SUBPIXEL_BITS;
 pub use replay::{probe_draw, view_draw, ProbeRequest, Replay};

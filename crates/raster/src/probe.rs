@@ -3,9 +3,10 @@
 //! themselves are `crate::replay`), and the report types it fills
 //! ([`DrawProbe`], [`ViewImage`]).
 //!
-//! The vertex stage reports prints, set-up each primitive's vertices and
-//! window outline, and the fragment stage, for each fragment that
-//! reaches the pixel: its primitive, its inputs, every statement and store
+//! The vertex stage reports prints, the geometry stage (when the draw
+//! has one) which input primitive emitted each vertex, set-up each
+//! primitive's vertices and window outline, and the fragment stage, for
+//! each fragment that reaches the pixel: its primitive, its inputs, every statement and store
 //! of its shader invocation ([`exec::Kernel::run_traced`]), `discard`, its
 //! outputs and each per-fragment operation's decision with the values it
 //! compared. Normal draws carry no probe and pay one `Option` check per
@@ -15,6 +16,7 @@ use crate::assembly::Assembled;
 use crate::ex::{self, Batch, ExecError, PrintSink, Trace};
 use crate::fragment_ops::{self, Fragment};
 use crate::framebuffer::{depth_to_fixed, ColorBuffer, Framebuffer};
+use crate::geometry::Vertices;
 use crate::linkage::VsLayout;
 use crate::prim::Prim;
 use crate::rasterize::WinVertex;
@@ -67,12 +69,56 @@ pub struct VertexProbe {
     pub error: Option<String>,
 }
 
+/// Where an emitted vertex comes from: the geometry shader invocation of
+/// input primitive `primitive` (its number in the draw's assembly order)
+/// emitted it as its `vertex`th vertex (from 0).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct EmittedBy {
+    pub primitive: u32,
+    pub vertex: u32,
+}
+
+/// One geometry shader invocation, traced: the one of an input primitive
+/// that emitted a vertex of a fragment's primitive at the probed pixel.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GeometryProbe {
+    /// The input primitive's number in the draw's assembly order, and
+    /// the `gl_PrimitiveIDIn` it ran with.
+    pub primitive: u32,
+    pub primitive_id: u32,
+    /// Its vertices (adjacent ones included, in the order the shader takes
+    /// them): positions in the draw's index list, and the vertex indices
+    /// there.
+    pub positions: Vec<usize>,
+    pub indices: Vec<u32>,
+    /// The geometry shader's inputs (laid out as its interface).
+    pub inputs: Vec<f32>,
+    /// Statements, stores and prints of the invocation, in order.
+    pub events: Vec<Event>,
+    /// `events` stopped at the draw's [`MAX_TRACE_EVENTS`]; the shader ran
+    /// on.
+    pub truncated: bool,
+    /// The vertices it emitted, in order (as the shader wrote them, before
+    /// the colour clamp that `DrawProbe::vertex_outputs` shows).
+    pub emitted: Vec<EmittedVertex>,
+    pub error: Option<String>,
+}
+
+/// One vertex a geometry shader invocation emitted.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct EmittedVertex {
+    /// Its outputs, laid out as the geometry shader's output interface.
+    pub outputs: Vec<f32>,
+    /// The strip it belongs to: `EndPrimitive()` starts a new number.
+    pub strip: u32,
+}
+
 /// What one draw did at the probed pixel.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct DrawProbe {
     pub pixel: (u32, u32),
     /// The pixel is outside the framebuffer or the scissor box: no fragment
-    /// can reach it.
+    /// can reach it (or, set by the caller, why the draw was not replayed).
     pub unreachable: Option<String>,
     /// The replayed draw stopped with this error (a shader's loop
     /// budget...); what it recorded up to then is kept.
@@ -100,6 +146,14 @@ pub struct DrawProbe {
     /// Window-space (x, y) corners of every primitive set up for
     /// rasterization (after clipping), when [`crate::ProbeRequest::outlines`].
     pub outlines: Vec<Vec<[f64; 2]>>,
+    /// With a geometry stage, `primitives` and `vertex_outputs` are those
+    /// of the emitted primitives (positions in the list of emitted
+    /// vertices they make); this says, per position there, which input
+    /// primitive's invocation emitted the vertex. Empty without one.
+    pub emitted_by: Vec<EmittedBy>,
+    /// With a geometry stage, the invocations that emitted the primitives
+    /// of [`DrawProbe::fragments`], traced, by input primitive number.
+    pub geometry: Vec<GeometryProbe>,
 }
 
 /// One `debugPrintfEXT` line.
@@ -221,6 +275,11 @@ pub(crate) struct Probe {
     windows: Mutex<Vec<Vec<[f64; 4]>>>,
     /// Trace events the draw may still record ([`MAX_TRACE_EVENTS`]).
     events_left: Mutex<usize>,
+    /// With a geometry stage: the source of each emitted vertex, by
+    /// vertex number, and the vertex stage's results (and their stride)
+    /// the geometry stage ran on, for tracing its invocations again.
+    emitted: Mutex<Vec<EmittedBy>>,
+    geometry_input: Mutex<Option<(Vertices, usize)>>,
 }
 
 /// The trace of the probed lane while its batch runs.
@@ -240,6 +299,11 @@ impl Recording {
             left,
             last_statement: Span::default(),
         }
+    }
+
+    /// Events it may still record.
+    pub fn left(&self) -> usize {
+        self.left
     }
 
     fn record(&mut self, event: Event) {
@@ -296,6 +360,8 @@ impl Probe {
             inner: Mutex::new(report),
             windows: Mutex::default(),
             events_left: Mutex::new(MAX_TRACE_EVENTS),
+            emitted: Mutex::default(),
+            geometry_input: Mutex::default(),
         }
     }
 
@@ -315,12 +381,40 @@ impl Probe {
             }),
             windows: Mutex::default(),
             events_left: Mutex::new(MAX_TRACE_EVENTS),
+            emitted: Mutex::default(),
+            geometry_input: Mutex::default(),
         }
     }
 
-    /// What [`Probe::for_pixel`]'s probe recorded.
-    pub fn into_report(self) -> DrawProbe {
-        self.inner.into_inner().unwrap_or_else(|e| e.into_inner())
+    /// What [`Probe::for_pixel`]'s probe recorded, and the vertex stage's
+    /// results a geometry stage ran on ([`Probe::keep_geometry_input`]).
+    pub fn into_parts(self) -> (DrawProbe, Option<(Vertices, usize)>) {
+        let input = self
+            .geometry_input
+            .into_inner()
+            .unwrap_or_else(|e| e.into_inner());
+        let report = self.inner.into_inner().unwrap_or_else(|e| e.into_inner());
+        (report, input)
+    }
+
+    /// Keeps the vertex stage's results (`stride` values per vertex) that
+    /// the geometry stage ran on.
+    pub fn keep_geometry_input(&self, shaded: Vertices, stride: usize) {
+        let mut g = self
+            .geometry_input
+            .lock()
+            .unwrap_or_else(|e| e.into_inner());
+        *g = Some((shaded, stride));
+    }
+
+    /// Notes the source of every emitted vertex, by vertex number.
+    pub fn note_emitted(&self, sources: Vec<EmittedBy>) {
+        *self.emitted.lock().unwrap_or_else(|e| e.into_inner()) = sources;
+    }
+
+    /// Trace events the draw may still record.
+    pub fn events_left(&self) -> usize {
+        *self.events_left.lock().unwrap_or_else(|e| e.into_inner())
     }
 
     /// What [`Probe::for_view`]'s probe recorded.
@@ -429,7 +523,19 @@ impl Probe {
                 outputs.get(v * n..(v + 1) * n).unwrap_or(&[]).to_vec()
             })
             .collect();
-        self.with(|r| r.vertex_outputs = per);
+        let emitted = self.emitted.lock().unwrap_or_else(|e| e.into_inner());
+        let by: Vec<EmittedBy> = if emitted.is_empty() {
+            Vec::new()
+        } else {
+            vertex_of
+                .iter()
+                .map(|&v| emitted.get(v as usize).copied().unwrap_or_default())
+                .collect()
+        };
+        self.with(|r| {
+            r.vertex_outputs = per;
+            r.emitted_by = by;
+        });
     }
 
     fn fragment(&self, prim: &Prim, window_z: f64) -> FragmentProbe {

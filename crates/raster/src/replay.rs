@@ -3,6 +3,11 @@
 //! framebuffer, on one thread, with a [`Probe`] attached, and return what
 //! it recorded ([`DrawProbe`], [`ViewImage`]).
 //!
+//! With a geometry stage, [`probe_draw`] then runs the geometry shader
+//! again, traced, for each input primitive whose invocation emitted a
+//! fragment's primitive ([`DrawProbe::geometry`]), on the vertex stage's
+//! results the draw kept.
+//!
 //! [`probe_draw`] narrows the scissor box to the probed pixel (and the
 //! `debugPrintfEXT` rectangle, if any). Narrowing the scissor does not
 //! change any value the pixel sees: quads are still whole 2×2 quads
@@ -13,10 +18,11 @@
 use crate::draw::draw_probed;
 use crate::ex;
 use crate::framebuffer::Framebuffer;
+use crate::geometry::{load_primitive, PrimitiveSource};
 use crate::linkage::new_batch;
 use crate::probe::{
-    DrawProbe, FragmentProbe, PixelState, Probe, Recording, VertexProbe, View, ViewImage,
-    MAX_TRACE_EVENTS,
+    DrawProbe, EmittedVertex, FragmentProbe, GeometryProbe, PixelState, Probe, Recording,
+    VertexProbe, View, ViewImage, MAX_TRACE_EVENTS,
 };
 use crate::state::{PipelineState, Rect};
 use crate::vertex::fetch_vertex;
@@ -155,8 +161,19 @@ pub fn probe_draw(fb: &Framebuffer, draw: &Replay, req: ProbeRequest) -> DrawPro
     let probe = Probe::for_pixel((px as i64, py as i64), req.print_rect, req.outlines, report);
     let mut copy = fb.clone();
     let result = draw.run(&mut copy, &narrowed, &probe);
-    let mut report = probe.into_report();
+    let left = probe.events_left();
+    let (mut report, geometry_input) = probe.into_parts();
     report.after = PixelState::read(&copy, (py * copy.width + px) as usize);
+    if let (Some(gs), Some((shaded, stride))) = (draw.gs, geometry_input) {
+        let source = PrimitiveSource::new(
+            draw.vs.interface(),
+            gs.0.interface(),
+            stride,
+            &shaded,
+            state,
+        );
+        report.geometry = trace_geometry(draw, gs, &source, &report, left);
+    }
     if let Some(position) = req.vertex {
         report.vertex = Some(trace_vertex(draw, position));
     }
@@ -196,4 +213,67 @@ fn trace_vertex(draw: &Replay, position: usize) -> VertexProbe {
         outputs: batch.outputs.iter().map(|c| c[0]).collect(),
         error: result.err().map(|e| e.to_string()),
     }
+}
+
+/// Runs the geometry shader again, traced, for every input primitive that
+/// emitted a vertex of a fragment's primitive in `report`, in primitive
+/// order, on the vertex stage's results `source` reads (invocations do not
+/// depend on each other, so a batch with the primitive in lane 0 gives
+/// the values of the real draw); `left` trace events are shared by them.
+fn trace_geometry(
+    draw: &Replay,
+    (gs, uniforms): (&ex::Kernel, &[u32]),
+    source: &PrimitiveSource,
+    report: &DrawProbe,
+    mut left: usize,
+) -> Vec<GeometryProbe> {
+    let mut wanted: Vec<u32> = report
+        .fragments
+        .iter()
+        .filter_map(|f| report.primitives.get(f.primitive as usize))
+        .flatten()
+        .filter_map(|&pos| report.emitted_by.get(pos))
+        .map(|by| by.primitive)
+        .collect();
+    wanted.sort_unstable();
+    wanted.dedup();
+    let iface = gs.interface();
+    let Some(emitted) = iface.emitted else {
+        return Vec::new();
+    };
+    let mut traced = Vec::new();
+    for k in wanted {
+        let mut batch = new_batch(iface.input_components, iface.output_components);
+        load_primitive(&mut batch, 0, k as usize, source);
+        batch.active = 1;
+        let inputs = batch.inputs.iter().map(|c| c[0]).collect();
+        let mut rec = Recording::new(FragmentProbe::default(), left);
+        let result = gs.run_traced(&mut batch, uniforms, draw.textures, 0, &mut rec);
+        left = rec.left();
+        let read = |c: usize| batch.outputs.get(c).map_or(0.0, |x| x[0]);
+        let count = (read(emitted.count()).to_bits() as usize).min(emitted.max_vertices);
+        let positions = source.positions(k as usize).unwrap_or_default();
+        traced.push(GeometryProbe {
+            primitive: k,
+            primitive_id: draw.state.primitive_ids.of(k),
+            indices: positions
+                .iter()
+                .map(|&p| draw.indices.get(p).copied().unwrap_or_default())
+                .collect(),
+            positions,
+            inputs,
+            truncated: rec.fragment.truncated,
+            events: rec.fragment.events,
+            emitted: (0..count)
+                .map(|v| EmittedVertex {
+                    outputs: (0..emitted.vertex_components)
+                        .map(|c| read(emitted.vertex(v) + c))
+                        .collect(),
+                    strip: read(emitted.strip(v)).to_bits(),
+                })
+                .collect(),
+            error: result.err().map(|e| e.to_string()),
+        });
+    }
+    traced
 }

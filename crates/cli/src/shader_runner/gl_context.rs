@@ -14,7 +14,13 @@ use gl::{ArrayData, Param};
 /// depth and stencil buffers; piglit's window has a depth buffer only with
 /// `depthbuffer`, which only matters to depth tests without one.)
 pub fn execute(opts: &Options, name: &str, script: &Script) -> (Verdict, String, String) {
-    let window = super::run::window_config(script);
+    let mut ctx = context(&super::run::window_config(script));
+    execute_on(&mut ctx, opts, name, script)
+}
+
+/// The context a script with `window` runs on: its size and the API it
+/// asks for.
+pub fn context(window: &super::run::WindowConfig) -> gl::Context {
     let mut ctx = gl::Context::with_api(window.width, window.height, window.api);
     // Core contexts draw only with a vertex array object bound; piglit
     // binds one for the whole test.
@@ -23,7 +29,7 @@ pub fn execute(opts: &Options, name: &str, script: &Script) -> (Verdict, String,
             ctx.bind_vertex_array(vao);
         }
     }
-    execute_on(&mut ctx, opts, name, script)
+    ctx
 }
 
 /// The data of attribute `index`'s next pointer: the values themselves

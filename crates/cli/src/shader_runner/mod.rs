@@ -211,6 +211,7 @@ pub fn load(path: &Path) -> Result<(String, script::Script), String> {
     Ok((name, script))
 }
 
+pub use gl_context::context;
 pub use run::window_config;
 
 /// Reads a script as text (bytes that are not UTF-8 become U+FFFD).
