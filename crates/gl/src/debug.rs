@@ -206,4 +206,37 @@ impl Context {
             kernel,
         }
     }
+
+    /// Records a debugged draw (`probe`, `view`) of `mode` and `count`
+    /// indices into `framebuffer` with its stages (kernel, whether it is
+    /// the program's), and counts the draw while a request is set.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn record_draw(
+        &mut self,
+        (mode, count, framebuffer): (u32, usize, u32),
+        (vs, vs_user): (Arc<exec::Kernel>, bool),
+        gs: Option<Arc<exec::Kernel>>,
+        (fs, fs_user): (Arc<exec::Kernel>, bool),
+        probe: Option<raster::DrawProbe>,
+        view: Option<Result<ViewRecord, String>>,
+    ) {
+        if let Some(probe) = probe {
+            let record = DrawRecord {
+                draw: self.debug.draws,
+                mode,
+                count,
+                program: self.current_program,
+                framebuffer,
+                vertex: self.stage_info(glsl::Stage::Vertex, vs_user, vs),
+                geometry: gs.map(|g| self.stage_info(glsl::Stage::Geometry, true, g)),
+                fragment: self.stage_info(glsl::Stage::Fragment, fs_user, fs),
+                probe,
+                view,
+            };
+            self.debug.records.push(record);
+        }
+        if self.debug.request.is_some() {
+            self.debug.draws += 1;
+        }
+    }
 }

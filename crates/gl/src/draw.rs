@@ -532,40 +532,29 @@ impl Context {
             let slot = g.interface().output("gl_Layer").filter(|s| s.written)?;
             Some((slot.offset, self.layer_count()?))
         });
-        let gs_kernel = &gs;
-        if let (Some((gs, gs_words)), Some(layer)) = (gs_stage, layered) {
+        if let (Some((gs_kernel, gs_words)), Some(layer)) = (gs_stage, layered) {
             // The debugger's replay draws into one framebuffer: a layered
             // draw gets a record saying why it has no trace.
-            if let Some(req) = self.debug.wants() {
-                let why = "the debugger does not replay a draw whose geometry shader writes \
-                           gl_Layer into a layered framebuffer";
-                let record = crate::debug::DrawRecord {
-                    draw: self.debug.draws,
-                    mode,
-                    count: indices.len(),
-                    program: self.current_program,
-                    framebuffer: target.name,
-                    vertex: self.stage_info(glsl::Stage::Vertex, vs_user, vs.clone()),
-                    geometry: gs_kernel
-                        .clone()
-                        .map(|g| self.stage_info(glsl::Stage::Geometry, true, g)),
-                    fragment: self.stage_info(glsl::Stage::Fragment, fs_user, fs.clone()),
-                    probe: raster::DrawProbe {
-                        pixel: req.pixel,
-                        unreachable: Some(why.into()),
-                        ..raster::DrawProbe::default()
-                    },
-                    view: self.debug.view().map(|_| Err(why.to_string())),
-                };
-                self.debug.records.push(record);
-            }
-            if self.debug.request.is_some() {
-                self.debug.draws += 1;
-            }
+            let why = "the debugger does not replay a draw whose geometry shader writes \
+                       gl_Layer into a layered framebuffer";
+            let probe = self.debug.wants().map(|req| raster::DrawProbe {
+                pixel: req.pixel,
+                unreachable: Some(why.into()),
+                ..raster::DrawProbe::default()
+            });
+            let view = self.debug.view().map(|_| Err(why.to_string()));
+            self.record_draw(
+                (mode, indices.len(), target.name),
+                (vs.clone(), vs_user),
+                gs.clone(),
+                (fs.clone(), fs_user),
+                probe,
+                view,
+            );
             self.store_target(target);
             let stages = crate::layered::LayeredStages {
                 vs: (&vs, &vs_words),
-                gs: (gs, gs_words),
+                gs: (gs_kernel, gs_words),
                 fs: (fs_stage, &fs_words),
             };
             if let Err(e) = self.draw_layered(
@@ -624,24 +613,14 @@ impl Context {
         }
         let samples = target.fb.samples_passed.wrapping_sub(samples_before);
         self.count_samples(samples);
-        if let Some(probe) = probe {
-            let record = crate::debug::DrawRecord {
-                draw: self.debug.draws,
-                mode,
-                count: indices.len(),
-                program: self.current_program,
-                framebuffer: target.name,
-                vertex: self.stage_info(glsl::Stage::Vertex, vs_user, vs),
-                geometry: gs.map(|g| self.stage_info(glsl::Stage::Geometry, true, g)),
-                fragment: self.stage_info(glsl::Stage::Fragment, fs_user, fs),
-                probe,
-                view,
-            };
-            self.debug.records.push(record);
-        }
-        if self.debug.request.is_some() {
-            self.debug.draws += 1;
-        }
+        self.record_draw(
+            (mode, indices.len(), target.name),
+            (vs.clone(), vs_user),
+            gs.clone(),
+            (fs.clone(), fs_user),
+            probe,
+            view,
+        );
         self.store_target(target);
     }
 
