@@ -233,10 +233,7 @@ void main() { for (int i = 0; i < 4; i++) { v = vx[0] * 10.0 + float(i); EmitVer
     ctx.bind_attrib_location(p, 0, "x");
     ctx.transform_feedback_varyings(p, &["v".to_string()], GL_INTERLEAVED_ATTRIBS);
     common::link_and_use(&mut ctx, p);
-    let b = ctx.gen_buffers(1)[0];
-    ctx.bind_buffer(GL_TRANSFORM_FEEDBACK_BUFFER, b);
-    ctx.buffer_data(GL_TRANSFORM_FEEDBACK_BUFFER, 64 * 4, None, GL_STREAM_READ);
-    ctx.bind_buffer_base(GL_TRANSFORM_FEEDBACK_BUFFER, 0, b);
+    let b = common::feedback_buffer(&mut ctx, 0, 64 * 4);
     ctx.vertex_attrib_pointer(0, 1, GL_FLOAT, false, 0, ArrayData::from_f32(&[1.0, 2.0]));
     ctx.enable_vertex_attrib_array(0);
     // Points captured as points: the geometry stage emits lines.
@@ -253,11 +250,7 @@ void main() { for (int i = 0; i < 4; i++) { v = vx[0] * 10.0 + float(i); EmitVer
     ctx.end_query(GL_PRIMITIVES_GENERATED);
     // The geometry stage's primitives are counted: 3 lines per point.
     assert_eq!(ctx.get_query_object(q, GL_QUERY_RESULT), Some(6));
-    let got: Vec<f32> = ctx
-        .get_buffer_sub_data(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 12 * 4)
-        .chunks_exact(4)
-        .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]))
-        .collect();
+    let got = common::floats(&mut ctx, b, 12);
     let want = [
         10.0, 11.0, 11.0, 12.0, 12.0, 13.0, 20.0, 21.0, 21.0, 22.0, 22.0, 23.0,
     ];

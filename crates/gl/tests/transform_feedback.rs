@@ -6,6 +6,8 @@
 use gl::enums::*;
 use gl::{ArrayData, Context};
 
+mod common;
+
 const VS: &str = "#version 130\n\
     in float x;\n\
     out vec2 a;\n\
@@ -42,28 +44,6 @@ fn program(ctx: &mut Context, names: &[&str], mode: u32) -> Result<u32, String> 
     Ok(p)
 }
 
-/// A buffer of `bytes` zero bytes bound to feedback binding `index`.
-fn feedback_buffer(ctx: &mut Context, index: u32, bytes: usize) -> u32 {
-    let b = ctx.gen_buffers(1)[0];
-    ctx.bind_buffer(GL_TRANSFORM_FEEDBACK_BUFFER, b);
-    ctx.buffer_data(
-        GL_TRANSFORM_FEEDBACK_BUFFER,
-        bytes as isize,
-        None,
-        GL_STREAM_READ,
-    );
-    ctx.bind_buffer_base(GL_TRANSFORM_FEEDBACK_BUFFER, index, b);
-    b
-}
-
-fn floats(ctx: &mut Context, b: u32, n: usize) -> Vec<f32> {
-    ctx.bind_buffer(GL_TRANSFORM_FEEDBACK_BUFFER, b);
-    ctx.get_buffer_sub_data(GL_TRANSFORM_FEEDBACK_BUFFER, 0, (n * 4) as isize)
-        .chunks_exact(4)
-        .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]))
-        .collect()
-}
-
 fn xs(ctx: &mut Context, v: &[f32]) {
     ctx.vertex_attrib_pointer(0, 1, GL_FLOAT, false, 0, ArrayData::from_f32(v));
     ctx.enable_vertex_attrib_array(0);
@@ -93,7 +73,7 @@ fn interleaved_capture_of_a_strip_as_triangles() {
     assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
 
     // 6 floats a vertex; room for 2 triangles of the strip's 3.
-    let buf = feedback_buffer(&mut ctx, 0, 6 * 4 * 3 * 2 + 20);
+    let buf = common::feedback_buffer(&mut ctx, 0, 6 * 4 * 3 * 2 + 20);
     xs(&mut ctx, &[0.0, 0.25, 0.5, 0.75, 0.875]);
     let q = ctx.gen_queries(2);
     ctx.begin_query(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, q[0]);
@@ -108,7 +88,7 @@ fn interleaved_capture_of_a_strip_as_triangles() {
     assert_eq!(ctx.take_draw_error(), None);
     assert_eq!(ctx.get_query_object(q[0], GL_QUERY_RESULT), Some(2));
     assert_eq!(ctx.get_query_object(q[1], GL_QUERY_RESULT), Some(3));
-    let got = floats(&mut ctx, buf, 6 * 6);
+    let got = common::floats(&mut ctx, buf, 6 * 6);
     let x = [0.0f32, 0.25, 0.5, 0.75];
     // Triangles (0, 1, 2) and (2, 1, 3), the second reversed as the
     // strip's winding requires.
@@ -125,8 +105,8 @@ fn separate_capture_lines_and_rasterizer_discard() {
     let mut ctx = Context::with_api(8, 8, gl::Api::GL33_COMPAT);
     program(&mut ctx, &["a", "b"], GL_SEPARATE_ATTRIBS).unwrap();
     let (ba, bb) = (
-        feedback_buffer(&mut ctx, 0, 64),
-        feedback_buffer(&mut ctx, 1, 64),
+        common::feedback_buffer(&mut ctx, 0, 64),
+        common::feedback_buffer(&mut ctx, 1, 64),
     );
     // Binding 1 over a range that starts 8 bytes in.
     ctx.bind_buffer_range(GL_TRANSFORM_FEEDBACK_BUFFER, 1, bb, 8, 16);
@@ -146,9 +126,9 @@ fn separate_capture_lines_and_rasterizer_discard() {
     assert!(!ctx.in_begin_end());
     ctx.end_transform_feedback();
     ctx.disable(GL_RASTERIZER_DISCARD);
-    let a = floats(&mut ctx, ba, 8);
+    let a = common::floats(&mut ctx, ba, 8);
     assert_eq!(a, vec![0.5, 5.0, -0.5, -5.0, -0.5, -5.0, 0.25, 2.5]);
-    let b = floats(&mut ctx, bb, 6);
+    let b = common::floats(&mut ctx, bb, 6);
     assert_eq!(b, vec![0.0, 0.0, 100.5, 99.5, 99.5, 100.25]);
     // Nothing was drawn.
     assert_eq!(
@@ -184,7 +164,7 @@ fn feedback_errors() {
     assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
     ctx.end_transform_feedback();
     assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
-    let b = feedback_buffer(&mut ctx, 0, 16);
+    let b = common::feedback_buffer(&mut ctx, 0, 16);
     ctx.begin_transform_feedback(GL_POINTS);
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
     ctx.begin_transform_feedback(GL_POINTS);

@@ -112,3 +112,27 @@ pub fn float_array(ctx: &mut Context, loc: u32, size: i32, data: &[f32]) {
     ctx.vertex_attrib_pointer(loc, size, GL_FLOAT, false, 0, ArrayData::from_f32(data));
     ctx.enable_vertex_attrib_array(loc);
 }
+
+/// A buffer of `bytes` zero bytes bound to feedback binding `index`.
+#[allow(dead_code)]
+pub fn feedback_buffer(ctx: &mut Context, index: u32, bytes: usize) -> u32 {
+    let b = ctx.gen_buffers(1)[0];
+    ctx.bind_buffer(GL_TRANSFORM_FEEDBACK_BUFFER, b);
+    ctx.buffer_data(
+        GL_TRANSFORM_FEEDBACK_BUFFER,
+        bytes as isize,
+        None,
+        GL_STREAM_READ,
+    );
+    ctx.bind_buffer_base(GL_TRANSFORM_FEEDBACK_BUFFER, index, b);
+    b
+}
+
+#[allow(dead_code)]
+pub fn floats(ctx: &mut Context, b: u32, n: usize) -> Vec<f32> {
+    ctx.bind_buffer(GL_TRANSFORM_FEEDBACK_BUFFER, b);
+    ctx.get_buffer_sub_data(GL_TRANSFORM_FEEDBACK_BUFFER, 0, (n * 4) as isize)
+        .chunks_exact(4)
+        .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+        .collect()
+}
