@@ -4,7 +4,7 @@
 //! `crate::limits`.
 
 use super::blocks::check_blocks;
-use super::types::{compatible_types, components};
+use super::types::{components, same_type_across};
 use super::{push, LinkDiagnostic, LinkedStage};
 use crate::diag::Code;
 use crate::ir::{self, Stage, Storage};
@@ -290,8 +290,7 @@ pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<
         match fg.storage {
             s if s == input => match vg {
                 Some(vg) if vg.storage == Storage::Varying => {
-                    if !compatible_types(vg.ty, fty) || vm.type_name(vg.ty) != fm.type_name(fty)
-                    {
+                    if !same_type_across(vm, vg.ty, fm, fty) {
                         push(
                             diags,
                             None,
@@ -353,7 +352,7 @@ pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<
             },
             Storage::Uniform => {
                 if let Some(vg) = vg.filter(|g| g.storage == Storage::Uniform) {
-                    if !compatible_types(vg.ty, fg.ty) || vm.type_name(vg.ty) != fm.type_name(fg.ty) {
+                    if !same_type_across(vm, vg.ty, fm, fg.ty) {
                         push(
                             diags,
                             None,

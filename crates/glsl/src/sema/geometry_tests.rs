@@ -217,3 +217,86 @@ fn builtins_of_the_geometry_stage() {
     );
     assert!(!core.ok());
 }
+
+#[test]
+fn invariant_on_geometry_inputs_and_outputs() {
+    let vs = |inv: &str| {
+        stage(
+            Stage::Vertex,
+            &format!("#version 150\nin vec4 p;\n{inv} out vec4 pos;\nvoid main() {{ gl_Position = p; pos = p; }}"),
+        )
+    };
+    let gs = |inv_in: &str, inv_out: &str| {
+        geom(&format!(
+            "#version 150\nlayout(triangles) in;\nlayout(points, max_vertices = 1) out;\n\
+             {inv_in} in vec4 pos[];\n{inv_out} out vec4 c;\ninvariant gl_Position;\n\
+             void main() {{ c = pos[0]; gl_Position = pos[1]; EmitVertex(); }}"
+        ))
+    };
+    let fs = |inv: &str| {
+        stage(
+            Stage::Fragment,
+            &format!("#version 150\nin vec4 c;\n{inv}\nout vec4 o;\nvoid main() {{ o = c; }}"),
+        )
+    };
+    ok(&gs("invariant", "invariant"));
+    // The identifier-list form on an input.
+    ok(&geom(
+        "#version 150\nlayout(triangles) in;\nlayout(points, max_vertices = 1) out;\n\
+         in vec4 pos[];\ninvariant pos;\nvoid main() { gl_Position = pos[0]; EmitVertex(); }",
+    ));
+    // Still not on a uniform, nor on a vertex input.
+    fails(
+        &geom("#version 150\nlayout(triangles) in;\ninvariant uniform vec4 u;\nvoid main() {}"),
+        Code::BadQualifier,
+    );
+    fails(
+        &stage(
+            Stage::Vertex,
+            "#version 150\ninvariant in vec4 p;\nvoid main() { gl_Position = p; }",
+        ),
+        Code::BadQualifier,
+    );
+    // Both sides of each interface agree, or the link fails.
+    for (v, gi, go, f, links) in [
+        ("invariant", "invariant", "invariant", "invariant c;", true),
+        ("", "", "", "", true),
+        ("invariant", "", "invariant", "invariant c;", false),
+        ("invariant", "invariant", "invariant", "", false),
+    ] {
+        let p = link(&[&vs(v), &gs(gi, go), &fs(f)]);
+        assert_eq!(p.ok(), links, "{v}/{gi}/{go}/{f}\n{}", p.info_log());
+    }
+}
+
+#[test]
+fn struct_varyings_cross_the_geometry_stage() {
+    let s = "struct Foo { mat2 a; vec3 b; };\n";
+    let vs = stage(
+        Stage::Vertex,
+        &format!("#version 150\n{s}out Foo foo;\nvoid main() {{ gl_Position = vec4(0.0); foo.b = vec3(1.0); }}"),
+    );
+    let gs = geom(&format!(
+        "#version 150\nlayout(triangles) in;\nlayout(points, max_vertices = 1) out;\n{s}\
+         in Foo foo[];\nout Foo bar;\nvoid main() {{ bar = foo[0]; gl_Position = vec4(foo[1].b, 1.0); EmitVertex(); }}"
+    ));
+    let fs = stage(
+        Stage::Fragment,
+        &format!("#version 150\n{s}in Foo bar;\nout vec4 o;\nvoid main() {{ o = vec4(bar.b, bar.a[0].x); }}"),
+    );
+    let p = link(&[&vs, &gs, &fs]);
+    assert!(p.ok(), "{}", p.info_log());
+    // A struct of another shape, or of another name, does not match.
+    for other in [
+        "struct Foo { mat2 a; vec4 b; };\n",
+        "struct Foo { mat2 a; vec3 c; };\n",
+    ] {
+        let fs = stage(
+            Stage::Fragment,
+            &format!("#version 150\n{other}in Foo bar;\nout vec4 o;\nvoid main() {{ o = vec4(bar.a[0].x); }}"),
+        );
+        let p = link(&[&vs, &gs, &fs]);
+        assert!(!p.ok(), "{other}");
+        assert!(p.info_log().contains("varying `bar'"), "{}", p.info_log());
+    }
+}
