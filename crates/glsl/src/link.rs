@@ -35,7 +35,7 @@ mod redeclarations;
 mod remap;
 mod types;
 
-use self::interface::{check_interface, check_limits, check_locations};
+use self::interface::{check_interface, check_limits, check_locations, check_uniforms};
 use self::merge::merge_stage;
 use crate::diag::{render_info_log, Code, Diagnostic};
 use crate::ir::{FunctionId, GeometryLayout, InputPrimitive, Module, OutputPrimitive, Stage};
@@ -205,6 +205,9 @@ pub fn link_with(shaders: &[&Shader], opts: &LinkOptions) -> Program {
                 }
                 if let Some(f) = f {
                     check_interface(g, f, &mut diags);
+                }
+                if let (Some(v), Some(f)) = (v, f) {
+                    check_uniforms(v, f, &mut diags);
                 }
             }
             None => {

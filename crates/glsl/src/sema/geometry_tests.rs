@@ -300,3 +300,73 @@ fn struct_varyings_cross_the_geometry_stage() {
         assert!(p.info_log().contains("varying `bar'"), "{}", p.info_log());
     }
 }
+
+#[test]
+fn unsized_input_block_arrays_take_the_stage_size() {
+    let vs = stage(
+        Stage::Vertex,
+        "#version 150\nout Blk { vec4 a; } i;\nvoid main() { i.a = vec4(1.0); gl_Position = vec4(1.0); }",
+    );
+    let sized = "#version 150\nlayout(lines_adjacency) in;\nlayout(triangle_strip, max_vertices = 3) out;\n\
+                 in Blk { vec4 a; } i[4];\nvec4 f();\nvoid main() { gl_Position = i[3].a + f(); EmitVertex(); }";
+    let unsized_ = "#version 150\nin Blk { vec4 a; } i[];\nvec4 f() { return i[3].a; }";
+    for objects in [[sized, unsized_], [unsized_, sized]] {
+        let (a, b) = (geom(objects[0]), geom(objects[1]));
+        ok(&a);
+        ok(&b);
+        let p = link(&[&vs, &a, &b]);
+        assert!(p.ok(), "{}", p.info_log());
+        let m = &p.stage(Stage::Geometry).expect("geometry").module;
+        let blk = m.blocks.iter().find(|b| b.name == "Blk").expect("block");
+        assert_eq!(blk.array, Some(4));
+    }
+    // Two different sizes still differ.
+    let other = geom("#version 150\nin Blk { vec4 a; } i[3];\nvec4 f() { return i[0].a; }");
+    assert!(!link(&[&vs, &geom(sized), &other]).ok());
+}
+
+#[test]
+fn uniforms_match_between_vertex_and_fragment_around_a_geometry_stage() {
+    let gs = geom(
+        "#version 150\nlayout(triangles) in;\nlayout(triangle_strip, max_vertices = 3) out;\n\
+         void main() { for (int i = 0; i < 3; i++) { gl_Position = gl_in[i].gl_Position; EmitVertex(); } }",
+    );
+    let vs = |decl: &str, read: &str| {
+        stage(
+            Stage::Vertex,
+            &format!("#version 150\n{decl}\nvoid main() {{ gl_Position = vec4({read}); }}"),
+        )
+    };
+    let fs = |decl: &str, read: &str| {
+        stage(
+            Stage::Fragment,
+            &format!("#version 150\n{decl}\nvoid main() {{ gl_FragColor = vec4({read}); }}"),
+        )
+    };
+    for (v, f, links) in [
+        (
+            ("uniform Foo { vec4 x; } foo[3];", "foo[0].x"),
+            ("uniform Foo { vec4 x; } bar[3];", "bar[0].x"),
+            true,
+        ),
+        (
+            ("uniform Foo { vec4 x; } foo[3];", "foo[0].x"),
+            ("uniform Foo { vec4 x; } bar[2];", "bar[0].x"),
+            false,
+        ),
+        (
+            ("uniform Foo { vec4 x; };", "x"),
+            ("uniform Foo { vec3 x; };", "x, 1.0"),
+            false,
+        ),
+        (("uniform vec4 u;", "u"), ("uniform vec4 u;", "u"), true),
+        (
+            ("uniform vec4 u;", "u"),
+            ("uniform vec3 u;", "u, 1.0"),
+            false,
+        ),
+    ] {
+        let p = link(&[&vs(v.0, v.1), &gs, &fs(f.0, f.1)]);
+        assert_eq!(p.ok(), links, "{v:?} / {f:?}\n{}", p.info_log());
+    }
+}

@@ -245,3 +245,14 @@ fn walk(e: &crate::ir::Expr, f: &mut impl FnMut(&crate::ir::Expr)) {
     f(e);
     e.for_each_child(|c| walk(c, f));
 }
+
+#[test]
+fn constant_indices_of_unsized_gl_in_members_are_bounded() {
+    let read = |index: &str| {
+        geom(&format!(
+            "{LAYOUTS}void main() {{ gl_Position = vec4(gl_in[0].gl_ClipDistance[{index}]); EmitVertex(); }}"
+        ))
+    };
+    ok(&read("gl_MaxClipDistances - 1"));
+    fails(&read("gl_MaxClipDistances"), Code::IndexOutOfRange);
+}
