@@ -196,17 +196,16 @@ pub(super) fn check_per_vertex_in_redeclared(
     let mut ok = true;
     for &(obj, m) in objects {
         match &m.per_vertex_in {
-            Some(other) => {
-                if !same_per_vertex(other, members) {
-                    ok = false;
-                    push(
-                        diags,
-                        Some(obj),
-                        Code::LinkInterfaceMismatch,
-                        "this geometry shader object redeclares the input block `gl_PerVertex' with other members than another object of the stage",
-                    );
-                }
+            Some(other) if !same_per_vertex(other, members) => {
+                ok = false;
+                push(
+                    diags,
+                    Some(obj),
+                    Code::LinkInterfaceMismatch,
+                    "this geometry shader object redeclares the input block `gl_PerVertex' with other members than another object of the stage",
+                );
             }
+            Some(_) => {}
             None if reads_gl_in(m) => {
                 ok = false;
                 push(
