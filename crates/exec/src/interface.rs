@@ -84,9 +84,9 @@ pub struct VertexInput {
 impl Interface {
     /// A geometry kernel's per-vertex inputs (its input arrays, one
     /// element per vertex of the input primitive): the members of
-    /// `gl_in[]` by member name, each element of a user array by the
-    /// array's name (GL_EXT_geometry_shader4's built-in arrays by the
-    /// output they take: `gl_PositionIn` is `gl_Position`...), each
+    /// `gl_in[]` by member name, each element of a user array (of structs
+    /// too) by the array's name (GL_EXT_geometry_shader4's built-in arrays
+    /// by the output they take: `gl_PositionIn` is `gl_Position`...), each
     /// member of an arrayed input block (slots named `Block[i].member`)
     /// as `Block.member`. Inputs that are not arrays (`gl_PrimitiveIDIn`)
     /// are not listed.
@@ -115,7 +115,10 @@ impl Interface {
             for vertex in 0..n as usize {
                 let at = slot.offset + vertex * per;
                 match elem.base {
-                    Base::Struct(id) => {
+                    // `gl_in[]`'s members are the vertex stage's built-in
+                    // outputs of their names; a user array of structs is
+                    // one output per vertex, like any other.
+                    Base::Struct(id) if slot.name == "gl_in" => {
                         let Some(def) = self.structs.get(id.0 as usize) else {
                             continue;
                         };

@@ -663,6 +663,11 @@ pub struct Module {
     /// The members stay the built-in globals; the linker checks that the
     /// objects of a stage agree on the redeclaration.
     pub per_vertex_out: Option<Vec<BlockMember>>,
+    /// A geometry shader's redeclared input block, `in gl_PerVertex { ...
+    /// } gl_in[];` (the same rules, GLSL 1.50 §7.1), its members in order;
+    /// `None` when the shader keeps the built-in block. `gl_in`'s struct
+    /// type then has exactly these members.
+    pub per_vertex_in: Option<Vec<BlockMember>>,
 }
 
 /// The primitive a geometry shader takes (`layout(...) in;`, GLSL 1.50

@@ -37,12 +37,13 @@
 //!   `layout(..., max_vertices = N) out;` (recorded in
 //!   [`ir::Module::geometry`]), input arrays sized by the input primitive,
 //!   and the link rules (a vertex shader, all three layouts, the
-//!   vertex → geometry → fragment interfaces). Not yet: redeclaring the
-//!   geometry stage's input `gl_PerVertex` (the output
-//!   block's redeclaration is done, [`ir::Module::per_vertex_out`]), and
-//!   the uniform match between the vertex
-//!   and fragment stages of a program with a geometry stage. Nothing runs
-//!   a geometry stage yet (exec refuses it).
+//!   vertex → geometry → fragment interfaces, the uniforms of the vertex
+//!   and fragment stages around a geometry stage). The output and input
+//!   `gl_PerVertex` blocks are redeclared with a subset of their members
+//!   ([`ir::Module::per_vertex_out`], [`ir::Module::per_vertex_in`]: the
+//!   objects of a stage agree, and the vertex stage's output block matches
+//!   the one `gl_in[]` reads); `gl_in[]`'s unsized members take the vertex
+//!   stage's size at link time.
 //! - GL_EXT_geometry_shader4 (and GL_ARB_geometry_shader4, the same
 //!   extension) on GLSL 1.10 to 1.40: `varying in` arrays and `varying
 //!   out`, `gl_PositionIn[]`... `gl_PrimitiveIDIn`, `gl_VerticesIn`, the

@@ -35,7 +35,7 @@ mod redeclarations;
 mod remap;
 mod types;
 
-use self::interface::{check_interface, check_limits, check_locations};
+use self::interface::{check_interface, check_limits, check_locations, check_uniforms};
 use self::merge::merge_stage;
 use crate::diag::{render_info_log, Code, Diagnostic};
 use crate::ir::{FunctionId, GeometryLayout, InputPrimitive, Module, OutputPrimitive, Stage};
@@ -177,6 +177,16 @@ pub fn link_with(shaders: &[&Shader], opts: &LinkOptions) -> Program {
                 program.stages.push(linked);
             }
         }
+        if let Some(gi) = program
+            .stages
+            .iter()
+            .position(|s| s.stage == Stage::Geometry)
+        {
+            let mut g = program.stages.remove(gi);
+            let vs = program.stage(Stage::Vertex).map(|v| &v.module);
+            redeclarations::size_gl_in_members(&mut g.module, vs);
+            program.stages.insert(gi, g);
+        }
         let v = program.stage(Stage::Vertex);
         let f = program.stage(Stage::Fragment);
         match program.stage(Stage::Geometry) {
@@ -191,9 +201,13 @@ pub fn link_with(shaders: &[&Shader], opts: &LinkOptions) -> Program {
             Some(g) => {
                 if let Some(v) = v {
                     check_interface(v, g, &mut diags);
+                    redeclarations::check_per_vertex_interface(&v.module, &g.module, &mut diags);
                 }
                 if let Some(f) = f {
                     check_interface(g, f, &mut diags);
+                }
+                if let (Some(v), Some(f)) = (v, f) {
+                    check_uniforms(v, f, &mut diags);
                 }
             }
             None => {

@@ -162,3 +162,33 @@ void main() {
         }
     }
 }
+
+/// A user array of structs is one input per vertex, named by the array,
+/// taking the whole struct; only `gl_in[]` is listed by member.
+#[test]
+fn struct_array_inputs_are_matched_whole() {
+    let s = "struct S { vec4 a; float b; };\n";
+    let v = compile(
+        &[&format!("#version 150\n{s}out S s;\nvoid main() {{ gl_Position = vec4(0.0); s.a = vec4(1.0); s.b = 2.0; }}")],
+        &CompileOptions::new(Stage::Vertex),
+    );
+    let g = compile(
+        &[&format!(
+            "#version 150\nlayout(triangles) in;\nlayout(points, max_vertices = 1) out;\n{s}in S s[];\n\
+             out float x;\nvoid main() {{ x = s[2].b + s[1].a.x; gl_Position = gl_in[0].gl_Position; EmitVertex(); }}"
+        )],
+        &CompileOptions::new(Stage::Geometry),
+    );
+    let prog = glsl::link::link(&[&v, &g]);
+    assert!(prog.ok(), "{}", prog.info_log());
+    let k = Kernel::new(prog.stage(Stage::Geometry).expect("geometry")).expect("lowered");
+    let inputs = k.interface().vertex_inputs();
+    let whole: Vec<_> = inputs.iter().filter(|i| i.name == "s").collect();
+    assert_eq!(whole.len(), 3, "{inputs:?}");
+    assert!(whole.iter().all(|i| i.components == 5), "{inputs:?}");
+    assert!(inputs.iter().any(|i| i.name == "gl_Position"), "{inputs:?}");
+    assert!(
+        !inputs.iter().any(|i| i.name == "a" || i.name == "b"),
+        "{inputs:?}"
+    );
+}

@@ -37,10 +37,15 @@ pub(super) fn merge_blocks(
                 let x = &merged.blocks[i];
                 // The same block in two objects of a stage is one block:
                 // an array in one is the same array in the other (GLSL
-                // 1.50 §4.3.7); instance names may differ.
+                // 1.50 §4.3.7); instance names may differ. A geometry
+                // input array left unsized in an object without the input
+                // layout takes the size the others give it (§4.3.8.1).
+                let arrays_match = x.array == b.array
+                    || (b.storage == Storage::GeometryInput
+                        && (x.array.is_none() || b.array.is_none()));
                 if !same_members(&x.members, &members, merged)
                     || x.layout != b.layout
-                    || x.array != b.array
+                    || !arrays_match
                 {
                     *errors = true;
                     diags.push(LinkDiagnostic {
@@ -57,6 +62,9 @@ pub(super) fn merge_blocks(
                 }
                 for (x, y) in merged.blocks[i].members.iter_mut().zip(&members) {
                     x.implicit_size = x.implicit_size.max(y.implicit_size);
+                }
+                if merged.blocks[i].array.is_none() {
+                    merged.blocks[i].array = b.array;
                 }
                 ir::BlockId(i as u32)
             }
@@ -144,8 +152,22 @@ pub(super) fn same_members(a: &[ir::BlockMember], b: &[ir::BlockMember], m: &Mod
 /// members in both stages (GLSL 1.50 §4.3.7: matched by block name, not
 /// instance name).
 pub(super) fn check_blocks(vm: &Module, fm: &Module, diags: &mut Vec<LinkDiagnostic>) {
+    compare_blocks(vm, fm, false, diags);
+}
+
+/// The uniform blocks of [`check_blocks`] only: for the vertex and
+/// fragment stages around a geometry stage, which share the program's
+/// uniform blocks but no input or output block.
+pub(super) fn check_uniform_blocks(vm: &Module, fm: &Module, diags: &mut Vec<LinkDiagnostic>) {
+    compare_blocks(vm, fm, true, diags);
+}
+
+fn compare_blocks(vm: &Module, fm: &Module, uniform_only: bool, diags: &mut Vec<LinkDiagnostic>) {
     let (pn, cn) = (vm.stage.name(), fm.stage.name());
     for fb in &fm.blocks {
+        if uniform_only && fb.storage != Storage::Uniform {
+            continue;
+        }
         // An input block (a geometry shader's has its own storage)
         // matches the output block of its name.
         let kind = |x: &&ir::InterfaceBlock| {

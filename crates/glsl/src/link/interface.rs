@@ -3,8 +3,8 @@
 //! colours' interpolation (1.30 §4.3.7), and the resource limits of
 //! `crate::limits`.
 
-use super::blocks::check_blocks;
-use super::types::{compatible_types, components};
+use super::blocks::{check_blocks, check_uniform_blocks};
+use super::types::{components, same_type_across};
 use super::{push, LinkDiagnostic, LinkedStage};
 use crate::diag::Code;
 use crate::ir::{self, Stage, Storage};
@@ -290,8 +290,7 @@ pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<
         match fg.storage {
             s if s == input => match vg {
                 Some(vg) if vg.storage == Storage::Varying => {
-                    if !compatible_types(vg.ty, fty) || vm.type_name(vg.ty) != fm.type_name(fty)
-                    {
+                    if !same_type_across(vm, vg.ty, fm, fty) {
                         push(
                             diags,
                             None,
@@ -351,36 +350,70 @@ pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<
                 ),
                 _ => {}
             },
-            Storage::Uniform => {
-                if let Some(vg) = vg.filter(|g| g.storage == Storage::Uniform) {
-                    if !compatible_types(vg.ty, fg.ty) || vm.type_name(vg.ty) != fm.type_name(fg.ty) {
-                        push(
-                            diags,
-                            None,
-                            Code::LinkInterfaceMismatch,
-                            format!(
-                                "uniform `{}' is {} in the {pn} shader but {} in the {cn} shader",
-                                fg.name,
-                                vm.type_name(vg.ty),
-                                fm.type_name(fg.ty)
-                            ),
-                        );
-                    } else if let (Some(a), Some(b)) = (&vg.init, &fg.init) {
-                        if a.components != b.components {
-                            push(
-                                diags,
-                                None,
-                                Code::LinkInterfaceMismatch,
-                                format!(
-                                    "uniform `{}' has different initializers in the {pn} and {cn} shaders",
-                                    fg.name
-                                ),
-                            );
-                        }
-                    }
-                }
-            }
+            Storage::Uniform => check_uniform(vm, fm, fg, diags),
             _ => {}
         }
+    }
+}
+
+/// Uniforms of one name in two stages have the same type and the same
+/// initializer (GLSL 1.50 §4.3.5); uniform blocks are compared by
+/// `check_blocks`. Run between consecutive stages by `check_interface`,
+/// and between the vertex and fragment stages when a geometry stage sits
+/// between them ([`check_uniforms`]).
+fn check_uniform(
+    vm: &ir::Module,
+    fm: &ir::Module,
+    fg: &ir::Global,
+    diags: &mut Vec<LinkDiagnostic>,
+) {
+    let (pn, cn) = (vm.stage.name(), fm.stage.name());
+    let Some(vg) = vm
+        .globals
+        .iter()
+        .find(|g| g.name == fg.name && g.storage == Storage::Uniform)
+    else {
+        return;
+    };
+    if !same_type_across(vm, vg.ty, fm, fg.ty) {
+        push(
+            diags,
+            None,
+            Code::LinkInterfaceMismatch,
+            format!(
+                "uniform `{}' is {} in the {pn} shader but {} in the {cn} shader",
+                fg.name,
+                vm.type_name(vg.ty),
+                fm.type_name(fg.ty)
+            ),
+        );
+    } else if let (Some(a), Some(b)) = (&vg.init, &fg.init) {
+        if a.components != b.components {
+            push(
+                diags,
+                None,
+                Code::LinkInterfaceMismatch,
+                format!(
+                    "uniform `{}' has different initializers in the {pn} and {cn} shaders",
+                    fg.name
+                ),
+            );
+        }
+    }
+}
+
+/// The uniforms and uniform blocks of two stages that are not consecutive
+/// (the vertex and fragment stages around a geometry stage): every stage
+/// of a program shares its uniforms, so they match as between
+/// consecutive stages (GLSL 1.50 §4.3.5, §4.3.7).
+pub(super) fn check_uniforms(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
+    let (vm, fm) = (&v.module, &f.module);
+    check_uniform_blocks(vm, fm, diags);
+    for fg in fm
+        .globals
+        .iter()
+        .filter(|g| !g.builtin && g.block.is_none() && g.storage == Storage::Uniform)
+    {
+        check_uniform(vm, fm, fg, diags);
     }
 }

@@ -6,7 +6,8 @@
 use super::blocks::{merge_blocks, size_block_members};
 use super::calls::{call_depth, collect_calls};
 use super::redeclarations::{
-    check_frag_coord_redeclared, check_geometry_layout, check_per_vertex_redeclared,
+    check_frag_coord_redeclared, check_geometry_layout, check_per_vertex_in_redeclared,
+    check_per_vertex_redeclared,
 };
 use super::remap::{remap_block, remap_const, remap_expr, remap_type, Remap};
 use super::types::{compatible_types, same_struct};
@@ -39,6 +40,7 @@ pub(super) fn merge_stage(
         frag_coord: Default::default(),
         geometry: Default::default(),
         per_vertex_out: None,
+        per_vertex_in: None,
     };
     let mut errors = false;
     // Global name -> (merged id, object that declared it first).
@@ -205,6 +207,10 @@ pub(super) fn merge_stage(
     }
     match check_per_vertex_redeclared(&objects, diags) {
         Some(members) => merged.per_vertex_out = members,
+        None => errors = true,
+    }
+    match check_per_vertex_in_redeclared(&objects, diags) {
+        Some(members) => merged.per_vertex_in = members,
         None => errors = true,
     }
 

@@ -1,11 +1,14 @@
 //! Built-in redeclarations that every object of a stage must agree on:
-//! `gl_FragCoord`'s layout (GLSL 1.50 §7.2), `gl_PerVertex` (1.50 §7.1),
-//! and the geometry shader's input and output layouts.
+//! `gl_FragCoord`'s layout (GLSL 1.50 §7.2), the output and input
+//! `gl_PerVertex` blocks (1.50 §7.1, also between the vertex and geometry
+//! stages, and the sizes of `gl_in[]`'s unsized members), and the
+//! geometry shader's input and output layouts.
 
 use super::{push, LinkDiagnostic};
 use crate::diag::Code;
-use crate::ir::{self, Global, Module, Storage};
-use crate::types::ArraySize;
+use crate::ir::{self, Expr, ExprKind, Global, Module, Storage};
+use crate::limits;
+use crate::types::{ArraySize, Base, StructId, Type};
 
 /// GLSL 1.50 §4.3.8.1: once one fragment shader object redeclares
 /// `gl_FragCoord`, every object that statically uses it redeclares it.
@@ -169,4 +172,147 @@ pub(super) fn check_geometry_layout(merged: &mut Module, diags: &mut Vec<LinkDia
         }
     }
     ok
+}
+
+/// Whether a geometry module statically uses the built-in `gl_in[]`.
+pub(super) fn reads_gl_in(m: &ir::Module) -> bool {
+    m.globals
+        .iter()
+        .any(|g| g.builtin && g.storage == Storage::GeometryInput && g.name == "gl_in" && g.read)
+}
+
+/// GLSL 1.50 §7.1, for the geometry stage's input block: once one object
+/// redeclares `in gl_PerVertex { ... } gl_in[];`, every object that uses
+/// `gl_in` redeclares it, all the same way. The stage's redeclaration, or
+/// `None` after an error.
+pub(super) fn check_per_vertex_in_redeclared(
+    objects: &[(usize, &ir::Module)],
+    diags: &mut Vec<LinkDiagnostic>,
+) -> Option<Option<Vec<ir::BlockMember>>> {
+    let Some(&(_, first)) = objects.iter().find(|(_, m)| m.per_vertex_in.is_some()) else {
+        return Some(None);
+    };
+    let members = first.per_vertex_in.as_ref()?;
+    let mut ok = true;
+    for &(obj, m) in objects {
+        match &m.per_vertex_in {
+            Some(other) if !same_per_vertex(other, members) => {
+                ok = false;
+                push(
+                    diags,
+                    Some(obj),
+                    Code::LinkInterfaceMismatch,
+                    "this geometry shader object redeclares the input block `gl_PerVertex' with other members than another object of the stage",
+                );
+            }
+            Some(_) => {}
+            None if reads_gl_in(m) => {
+                ok = false;
+                push(
+                    diags,
+                    Some(obj),
+                    Code::LinkInterfaceMismatch,
+                    "this geometry shader object uses `gl_in' without redeclaring the input block `gl_PerVertex', while another object of the stage redeclares it; redeclare it the same way in every object that uses `gl_in'",
+                );
+            }
+            None => {}
+        }
+    }
+    ok.then(|| Some(members.clone()))
+}
+
+/// Two redeclarations of `gl_PerVertex` are the same block: the same
+/// members, in order, of the same types (an unsized array matching any
+/// size).
+pub(super) fn same_per_vertex(a: &[ir::BlockMember], b: &[ir::BlockMember]) -> bool {
+    a.len() == b.len()
+        && a.iter()
+            .zip(b)
+            .all(|(x, y)| x.name == y.name && super::types::compatible_types(x.ty, y.ty))
+}
+
+/// The `gl_PerVertex` block between the vertex and the geometry stage
+/// (GLSL 1.50 §7.1, §4.3.7 block matching): when either stage redeclares
+/// it and the geometry shader uses `gl_in`, both redeclare it with the
+/// same members.
+pub(super) fn check_per_vertex_interface(
+    vm: &Module,
+    gm: &Module,
+    diags: &mut Vec<LinkDiagnostic>,
+) {
+    if !reads_gl_in(gm) {
+        return;
+    }
+    let msg = match (&vm.per_vertex_out, &gm.per_vertex_in) {
+        (None, None) => return,
+        (Some(a), Some(b)) if same_per_vertex(a, b) => return,
+        (Some(_), Some(_)) => "the vertex shader's output block `gl_PerVertex' and the geometry shader's input block `gl_PerVertex' are redeclared with different members",
+        (Some(_), None) => "the vertex shader redeclares the output block `gl_PerVertex' but the geometry shader uses `gl_in' without redeclaring the input block the same way",
+        (None, Some(_)) => "the geometry shader redeclares the input block `gl_PerVertex' but the vertex shader does not redeclare its output block the same way",
+    };
+    push(diags, None, Code::LinkInterfaceMismatch, msg);
+}
+
+/// The unsized arrays of `gl_in[]`'s members (the built-in block's
+/// `gl_ClipDistance[]`, the compatibility profile's `gl_TexCoord[]`)
+/// take the size of the vertex stage's output of that name (GLSL 1.50
+/// §7.1: an input block matches the output block it reads), else the
+/// largest the output can have (gl_MaxClipDistances,
+/// gl_MaxTextureCoords). Expressions reading the members take the sized
+/// type.
+pub(super) fn size_gl_in_members(gs: &mut Module, vs: Option<&Module>) {
+    let Some(Base::Struct(sid)) = gs
+        .globals
+        .iter()
+        .find(|g| g.builtin && g.storage == Storage::GeometryInput && g.name == "gl_in")
+        .map(|g| g.ty.base)
+    else {
+        return;
+    };
+    let Some(def) = gs.structs.get_mut(sid.0 as usize) else {
+        return;
+    };
+    let mut changed = false;
+    for m in &mut def.members {
+        if m.ty.array != Some(ArraySize::Unsized) {
+            continue;
+        }
+        let from_vs = vs.and_then(|v| {
+            v.globals
+                .iter()
+                .find(|g| g.builtin && g.name == m.name)
+                .and_then(|g| match g.ty.array {
+                    Some(ArraySize::Sized(n)) => Some(n),
+                    _ => None,
+                })
+        });
+        let max = if m.name == "gl_TexCoord" {
+            limits::MAX_TEXTURE_COORDS
+        } else {
+            limits::MAX_CLIP_DISTANCES
+        };
+        m.ty.array = Some(ArraySize::Sized(from_vs.unwrap_or(max)));
+        changed = true;
+    }
+    if !changed {
+        return;
+    }
+    let members: Vec<Type> = def.members.iter().map(|m| m.ty).collect();
+    let fix = |e: &mut Expr| retype_members(e, sid, &members);
+    for f in &mut gs.functions {
+        if let Some(b) = &mut f.body {
+            ir::for_each_block_expr_mut(b, &mut { fix });
+        }
+    }
+}
+
+fn retype_members(e: &mut Expr, sid: StructId, members: &[Type]) {
+    if let ExprKind::Member { base, index } = &e.kind {
+        if base.ty.base == Base::Struct(sid) && !base.ty.is_array() {
+            if let Some(&ty) = members.get(*index as usize) {
+                e.ty = ty;
+            }
+        }
+    }
+    e.for_each_child_mut(|c| retype_members(c, sid, members));
 }

@@ -3,7 +3,7 @@
 //! components a type takes against the limits.
 
 use crate::ir::Module;
-use crate::types::{ArraySize, StructDef, Type};
+use crate::types::{ArraySize, Base, StructDef, Type};
 
 /// Two struct definitions are the same type if names, member names and
 /// member types match (§4.3, "shared globals").
@@ -27,6 +27,42 @@ pub(super) fn compatible_types(a: Type, b: Type) -> bool {
         (Some(ArraySize::Sized(x)), Some(ArraySize::Sized(y))) => x == y,
         (Some(_), Some(_)) => true,
         _ => false,
+    }
+}
+
+/// [`compatible_types`] for declarations in two modules (two stages),
+/// whose struct ids differ: structs are the same type when their names,
+/// member names and member types are (GLSL 1.50 §4.3.4: matching
+/// interfaces), compared member by member.
+pub(super) fn same_type_across(am: &Module, a: Type, bm: &Module, b: Type) -> bool {
+    let arrays = match (a.array, b.array) {
+        (None, None) => true,
+        (Some(ArraySize::Sized(x)), Some(ArraySize::Sized(y))) => x == y,
+        (Some(_), Some(_)) => true,
+        _ => false,
+    };
+    arrays && same_base_across(am, a.base, bm, b.base, 0)
+}
+
+fn same_base_across(am: &Module, a: Base, bm: &Module, b: Base, depth: u32) -> bool {
+    match (a, b) {
+        (Base::Struct(x), Base::Struct(y)) => {
+            let (Some(x), Some(y)) = (am.structs.get(x.0 as usize), bm.structs.get(y.0 as usize))
+            else {
+                return false;
+            };
+            // Struct nesting is bounded by the compiler; the depth guard
+            // only keeps a malformed module from recursing forever.
+            depth < 64
+                && x.name == y.name
+                && x.members.len() == y.members.len()
+                && x.members.iter().zip(&y.members).all(|(p, q)| {
+                    p.name == q.name
+                        && p.ty.array == q.ty.array
+                        && same_base_across(am, p.ty.base, bm, q.ty.base, depth + 1)
+                })
+        }
+        _ => a == b,
     }
 }
 

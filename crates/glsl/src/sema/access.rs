@@ -53,12 +53,31 @@ fn parse_swizzle(name: &str, size: u8) -> Result<([u8; 4], u8), String> {
 
 impl Analyzer {
     /// The bound a constant index must respect for an unsized built-in
-    /// array (`gl_TexCoord[]`: gl_MaxTextureCoords).
+    /// array (`gl_TexCoord[]`: gl_MaxTextureCoords; `gl_ClipDistance[]`
+    /// and `gl_in[i]`'s members: their limits, GLSL 1.50 §7.1).
     pub(super) fn builtin_unsized_bound(&self, base: &ir::Expr) -> Option<u32> {
         match base.kind {
             K::Global(g) => {
                 let g = self.module.globals.get(g.0 as usize)?;
                 (g.builtin && g.ty.array == Some(ArraySize::Unsized)).then_some(MAX_TEXTURE_COORDS)
+            }
+            // `gl_in[i].gl_ClipDistance[]' (and the compatibility
+            // profile's `gl_in[i].gl_TexCoord[]'): bounded by the limit of
+            // the output it reads.
+            K::Member { ref base, index } => {
+                let Base::Struct(sid) = base.ty.base else {
+                    return None;
+                };
+                let def = self.module.structs.get(sid.0 as usize)?;
+                let m = def.members.get(index as usize)?;
+                if !def.builtin || m.ty.array != Some(ArraySize::Unsized) {
+                    return None;
+                }
+                Some(if m.name == "gl_TexCoord" {
+                    MAX_TEXTURE_COORDS
+                } else {
+                    crate::limits::MAX_CLIP_DISTANCES
+                })
             }
             _ => None,
         }

@@ -109,6 +109,11 @@ impl Analyzer {
             self.redeclare_per_vertex(b);
             return;
         }
+        if b.name.name == "gl_PerVertex" && storage == Storage::GeometryInput && !self.builtin_mode
+        {
+            self.redeclare_per_vertex_in(b);
+            return;
+        }
         if storage == Storage::GeometryInput && b.instance.as_ref().is_none_or(|(_, a)| a.is_none())
         {
             self.error(
@@ -401,6 +406,159 @@ impl Analyzer {
             }
         }
         self.module.per_vertex_out = Some(kept);
+    }
+
+    /// `in gl_PerVertex { ... } gl_in[];` in a geometry shader (GLSL 1.50
+    /// §7.1, the rules of the output block's redeclaration): a subset of
+    /// the built-in input block's members, with the built-in types (a
+    /// sized `gl_ClipDistance[N]` or `gl_TexCoord[N]` sizes the member),
+    /// instance `gl_in`, before `gl_in` is used, once. `gl_in`'s struct
+    /// type then has exactly the members redeclared, so the others are no
+    /// longer fields; recorded in [`ir::Module::per_vertex_in`] for the
+    /// linker.
+    fn redeclare_per_vertex_in(&mut self, b: &InterfaceBlock) {
+        let Some((inst, arr)) = &b.instance else {
+            self.error(
+                Code::BadQualifier,
+                b.name.span,
+                "the input block `gl_PerVertex' is redeclared with its instance name: `in gl_PerVertex { ... } gl_in[];'",
+            );
+            return;
+        };
+        if inst.name != "gl_in" || arr.is_none() {
+            self.error(
+                Code::BadQualifier,
+                inst.span,
+                format!(
+                    "the input block `gl_PerVertex' is redeclared as `gl_in[]', not `{}'",
+                    inst.name
+                ),
+            );
+            return;
+        }
+        if self.module.per_vertex_in.is_some() {
+            self.error(
+                Code::Redeclared,
+                b.name.span,
+                "the input block `gl_PerVertex' is already redeclared",
+            );
+            return;
+        }
+        let Some(&Symbol::Var(v @ Var::Builtin(i))) = self.env.and_then(|e| e.lookup("gl_in"))
+        else {
+            self.error(
+                Code::Redeclared,
+                b.name.span,
+                "`gl_PerVertex': names starting with `gl_' are reserved for the implementation",
+            );
+            return;
+        };
+        // Referring to `gl_in' makes its module global; one made before
+        // this point is a use before the redeclaration.
+        if self
+            .builtin_globals
+            .get(i as usize)
+            .copied()
+            .flatten()
+            .is_some()
+        {
+            self.error(
+                Code::Redeclared,
+                b.name.span,
+                "the input block `gl_PerVertex' is redeclared after `gl_in' is used",
+            )
+            .notes
+            .push("redeclare it before the first use".into());
+            return;
+        }
+        let builtin_ty = self.var_type(v);
+        let Base::Struct(sid) = builtin_ty.base else {
+            return;
+        };
+        let Some(builtin_def) = self.module.structs.get(sid.0 as usize).cloned() else {
+            return;
+        };
+        let saved = self.builtin_mode;
+        self.builtin_mode = true;
+        let members = self.block_members(b, Storage::GeometryInput, false, None);
+        self.builtin_mode = saved;
+        let span_of = |name: &str| {
+            b.members
+                .iter()
+                .flat_map(|m| &m.declarators)
+                .find(|d| d.name.name == name)
+                .map_or(b.name.span, |d| d.name.span)
+        };
+        let mut kept = Vec::new();
+        for m in members {
+            let span = span_of(&m.name);
+            let Some(bm) = builtin_def.members.iter().find(|x| x.name == m.name) else {
+                self.error(
+                    Code::Redeclared,
+                    span,
+                    format!(
+                        "`{}' is not a member of the built-in input block `gl_PerVertex'",
+                        m.name
+                    ),
+                );
+                continue;
+            };
+            if bm.ty.base != m.ty.base || bm.ty.is_array() != m.ty.is_array() {
+                self.error(
+                    Code::TypeMismatch,
+                    span,
+                    format!(
+                        "`{}' is redeclared as {}, but it is {}",
+                        m.name,
+                        self.tn(m.ty),
+                        self.tn(bm.ty)
+                    ),
+                );
+                continue;
+            }
+            if let Some(ArraySize::Sized(n)) = m.ty.array {
+                let max = if m.name == "gl_TexCoord" {
+                    crate::limits::MAX_TEXTURE_COORDS
+                } else {
+                    crate::limits::MAX_CLIP_DISTANCES
+                };
+                if n > max {
+                    self.error(
+                        Code::BadArraySize,
+                        span,
+                        format!("`{}' redeclared with size {n}, larger than {max}", m.name),
+                    );
+                    continue;
+                }
+            }
+            kept.push(m);
+        }
+        if let Some(def) = self.module.structs.get_mut(sid.0 as usize) {
+            def.members = kept
+                .iter()
+                .map(|m| StructMember {
+                    name: m.name.clone(),
+                    ty: m.ty,
+                })
+                .collect();
+        }
+        self.module.per_vertex_in = Some(kept);
+        // `gl_in[3]' as well as `gl_in[]': sized like any input array.
+        let ty = self.apply_array(
+            Type {
+                base: Base::Struct(sid),
+                array: None,
+            },
+            arr.as_ref(),
+        );
+        if let Some(g) = self.global_of(v) {
+            if let Some(ArraySize::Sized(n)) = ty.array {
+                if let Some(gl) = self.module.globals.get_mut(g.0 as usize) {
+                    gl.ty.array = Some(ArraySize::Sized(n));
+                }
+                self.size_geometry_input(g, inst.span);
+            }
+        }
     }
 
     /// Whether `e` names the instance array of a uniform block.

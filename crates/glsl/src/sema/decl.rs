@@ -792,9 +792,14 @@ impl Analyzer {
                 continue;
             };
             let gl = &self.module.globals[g.0 as usize];
-            let output_builtin =
-                gl.builtin && gl.storage == Storage::Private && self.stage == Stage::Vertex;
-            if gl.storage != Storage::Varying && !output_builtin {
+            // The vertex and geometry stages' built-in outputs
+            // (`gl_Position'...), and a geometry shader's inputs, which
+            // are the vertex stage's outputs (GLSL 1.50 §4.6.1).
+            let output_builtin = gl.builtin
+                && gl.storage == Storage::Private
+                && matches!(self.stage, Stage::Vertex | Stage::Geometry);
+            let stage_io = matches!(gl.storage, Storage::Varying | Storage::GeometryInput);
+            if !stage_io && !output_builtin {
                 self.error(
                     Code::BadQualifier,
                     n.span,

@@ -217,3 +217,156 @@ fn builtins_of_the_geometry_stage() {
     );
     assert!(!core.ok());
 }
+
+#[test]
+fn invariant_on_geometry_inputs_and_outputs() {
+    let vs = |inv: &str| {
+        stage(
+            Stage::Vertex,
+            &format!("#version 150\nin vec4 p;\n{inv} out vec4 pos;\nvoid main() {{ gl_Position = p; pos = p; }}"),
+        )
+    };
+    let gs = |inv_in: &str, inv_out: &str| {
+        geom(&format!(
+            "#version 150\nlayout(triangles) in;\nlayout(points, max_vertices = 1) out;\n\
+             {inv_in} in vec4 pos[];\n{inv_out} out vec4 c;\ninvariant gl_Position;\n\
+             void main() {{ c = pos[0]; gl_Position = pos[1]; EmitVertex(); }}"
+        ))
+    };
+    let fs = |inv: &str| {
+        stage(
+            Stage::Fragment,
+            &format!("#version 150\nin vec4 c;\n{inv}\nout vec4 o;\nvoid main() {{ o = c; }}"),
+        )
+    };
+    ok(&gs("invariant", "invariant"));
+    // The identifier-list form on an input.
+    ok(&geom(
+        "#version 150\nlayout(triangles) in;\nlayout(points, max_vertices = 1) out;\n\
+         in vec4 pos[];\ninvariant pos;\nvoid main() { gl_Position = pos[0]; EmitVertex(); }",
+    ));
+    // Still not on a uniform, nor on a vertex input.
+    fails(
+        &geom("#version 150\nlayout(triangles) in;\ninvariant uniform vec4 u;\nvoid main() {}"),
+        Code::BadQualifier,
+    );
+    fails(
+        &stage(
+            Stage::Vertex,
+            "#version 150\ninvariant in vec4 p;\nvoid main() { gl_Position = p; }",
+        ),
+        Code::BadQualifier,
+    );
+    // Both sides of each interface agree, or the link fails.
+    for (v, gi, go, f, links) in [
+        ("invariant", "invariant", "invariant", "invariant c;", true),
+        ("", "", "", "", true),
+        ("invariant", "", "invariant", "invariant c;", false),
+        ("invariant", "invariant", "invariant", "", false),
+    ] {
+        let p = link(&[&vs(v), &gs(gi, go), &fs(f)]);
+        assert_eq!(p.ok(), links, "{v}/{gi}/{go}/{f}\n{}", p.info_log());
+    }
+}
+
+#[test]
+fn struct_varyings_cross_the_geometry_stage() {
+    let s = "struct Foo { mat2 a; vec3 b; };\n";
+    let vs = stage(
+        Stage::Vertex,
+        &format!("#version 150\n{s}out Foo foo;\nvoid main() {{ gl_Position = vec4(0.0); foo.b = vec3(1.0); }}"),
+    );
+    let gs = geom(&format!(
+        "#version 150\nlayout(triangles) in;\nlayout(points, max_vertices = 1) out;\n{s}\
+         in Foo foo[];\nout Foo bar;\nvoid main() {{ bar = foo[0]; gl_Position = vec4(foo[1].b, 1.0); EmitVertex(); }}"
+    ));
+    let fs = stage(
+        Stage::Fragment,
+        &format!("#version 150\n{s}in Foo bar;\nout vec4 o;\nvoid main() {{ o = vec4(bar.b, bar.a[0].x); }}"),
+    );
+    let p = link(&[&vs, &gs, &fs]);
+    assert!(p.ok(), "{}", p.info_log());
+    // A struct of another shape, or of another name, does not match.
+    for other in [
+        "struct Foo { mat2 a; vec4 b; };\n",
+        "struct Foo { mat2 a; vec3 c; };\n",
+    ] {
+        let fs = stage(
+            Stage::Fragment,
+            &format!("#version 150\n{other}in Foo bar;\nout vec4 o;\nvoid main() {{ o = vec4(bar.a[0].x); }}"),
+        );
+        let p = link(&[&vs, &gs, &fs]);
+        assert!(!p.ok(), "{other}");
+        assert!(p.info_log().contains("varying `bar'"), "{}", p.info_log());
+    }
+}
+
+#[test]
+fn unsized_input_block_arrays_take_the_stage_size() {
+    let vs = stage(
+        Stage::Vertex,
+        "#version 150\nout Blk { vec4 a; } i;\nvoid main() { i.a = vec4(1.0); gl_Position = vec4(1.0); }",
+    );
+    let sized = "#version 150\nlayout(lines_adjacency) in;\nlayout(triangle_strip, max_vertices = 3) out;\n\
+                 in Blk { vec4 a; } i[4];\nvec4 f();\nvoid main() { gl_Position = i[3].a + f(); EmitVertex(); }";
+    let unsized_ = "#version 150\nin Blk { vec4 a; } i[];\nvec4 f() { return i[3].a; }";
+    for objects in [[sized, unsized_], [unsized_, sized]] {
+        let (a, b) = (geom(objects[0]), geom(objects[1]));
+        ok(&a);
+        ok(&b);
+        let p = link(&[&vs, &a, &b]);
+        assert!(p.ok(), "{}", p.info_log());
+        let m = &p.stage(Stage::Geometry).expect("geometry").module;
+        let blk = m.blocks.iter().find(|b| b.name == "Blk").expect("block");
+        assert_eq!(blk.array, Some(4));
+    }
+    // Two different sizes still differ.
+    let other = geom("#version 150\nin Blk { vec4 a; } i[3];\nvec4 f() { return i[0].a; }");
+    assert!(!link(&[&vs, &geom(sized), &other]).ok());
+}
+
+#[test]
+fn uniforms_match_between_vertex_and_fragment_around_a_geometry_stage() {
+    let gs = geom(
+        "#version 150\nlayout(triangles) in;\nlayout(triangle_strip, max_vertices = 3) out;\n\
+         void main() { for (int i = 0; i < 3; i++) { gl_Position = gl_in[i].gl_Position; EmitVertex(); } }",
+    );
+    let vs = |decl: &str, read: &str| {
+        stage(
+            Stage::Vertex,
+            &format!("#version 150\n{decl}\nvoid main() {{ gl_Position = vec4({read}); }}"),
+        )
+    };
+    let fs = |decl: &str, read: &str| {
+        stage(
+            Stage::Fragment,
+            &format!("#version 150\n{decl}\nvoid main() {{ gl_FragColor = vec4({read}); }}"),
+        )
+    };
+    for (v, f, links) in [
+        (
+            ("uniform Foo { vec4 x; } foo[3];", "foo[0].x"),
+            ("uniform Foo { vec4 x; } bar[3];", "bar[0].x"),
+            true,
+        ),
+        (
+            ("uniform Foo { vec4 x; } foo[3];", "foo[0].x"),
+            ("uniform Foo { vec4 x; } bar[2];", "bar[0].x"),
+            false,
+        ),
+        (
+            ("uniform Foo { vec4 x; };", "x"),
+            ("uniform Foo { vec3 x; };", "x, 1.0"),
+            false,
+        ),
+        (("uniform vec4 u;", "u"), ("uniform vec4 u;", "u"), true),
+        (
+            ("uniform vec4 u;", "u"),
+            ("uniform vec3 u;", "u, 1.0"),
+            false,
+        ),
+    ] {
+        let p = link(&[&vs(v.0, v.1), &gs, &fs(f.0, f.1)]);
+        assert_eq!(p.ok(), links, "{v:?} / {f:?}\n{}", p.info_log());
+    }
+}

@@ -417,12 +417,16 @@ impl Analyzer {
             let ok = match storage {
                 Some(Qualifier::Varying) => true,
                 Some(Qualifier::Out) => !fragment,
-                Some(Qualifier::In) => fragment,
+                // GLSL 1.50 §4.6.1: outputs "including those that are then
+                // input to a subsequent shader", a geometry shader's too.
+                Some(Qualifier::In) => !vertex,
                 _ => false,
             };
             if !ok {
                 let span = find(quals, Qualifier::Invariant);
-                let msg = if self.lang.allows(Feature::StageInOut) {
+                let msg = if self.stage == Stage::Geometry {
+                    "`invariant' applies only to a shader's inputs and outputs (GLSL 1.50 §4.6.1)"
+                } else if self.lang.allows(Feature::StageInOut) {
                     "`invariant' applies only to vertex outputs and fragment inputs (GLSL 1.30 §4.6.1)"
                 } else {
                     "`invariant' applies only to varyings (GLSL 1.20 §4.6.1)"

@@ -212,6 +212,7 @@ fn build_env(lang: Language, stage: Stage, input: Option<ir::InputPrimitive>) ->
             frag_coord: Default::default(),
             geometry: Default::default(),
             per_vertex_out: None,
+            per_vertex_in: None,
         },
     );
     // Prototypes without bodies become built-in functions.
@@ -347,6 +348,7 @@ impl Analyzer {
                 frag_coord: Default::default(),
                 geometry: Default::default(),
                 per_vertex_out: None,
+                per_vertex_in: None,
             },
             diags: Vec::new(),
             scopes: Scopes::new(),
@@ -446,6 +448,8 @@ impl Analyzer {
                 }
                 let mut g = self.env?.globals.get(i as usize)?.clone();
                 g.ty = self.builtin_global_type(&g);
+                // `gl_in`'s block id is the prelude's, not this module's.
+                g.block = None;
                 let id = GlobalId(self.module.globals.len() as u32);
                 self.module.globals.push(g);
                 if let Some(slot) = self.builtin_globals.get_mut(i as usize) {
@@ -717,5 +721,7 @@ pub(crate) fn const_expr(value: ConstValue, span: Span) -> ir::Expr {
 mod ext_geometry_tests;
 #[cfg(test)]
 mod geometry_tests;
+#[cfg(test)]
+mod per_vertex_in_tests;
 #[cfg(test)]
 mod tests;
