@@ -596,7 +596,7 @@ impl Context {
             })
         });
         let samples_before = target.fb.samples_passed;
-        let r = raster::draw_geometry_stages(
+        let r = raster::draw_stages(
             &self.workers,
             &mut target.fb,
             &state,

@@ -32,7 +32,7 @@
 //!   stages, [`ffgen`]; the fixed-function fragment stage directly when
 //!   it can, [`ff_fragment`], with the kernel's bits; the program's
 //!   geometry stage between them when it has one) through
-//!   `raster::draw_geometry_stages` ([`draw`]) on the
+//!   `raster::draw_stages` ([`draw`]) on the
 //!   context's threads: [`Context::set_threads`], by default the
 //!   environment variable `SHADERBOX_THREADS` ([`THREADS_ENV`]) or else the
 //!   machine's available parallelism. Images do not depend on the count.

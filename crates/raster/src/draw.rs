@@ -26,48 +26,19 @@ use crate::probe::Probe;
 use crate::setup::{Corner, Out, Setup, CORNER_REUSE};
 use crate::shade::FragmentStage;
 use crate::state::PipelineState;
-use crate::vertex::{run_vertices, VertexFetch};
+use crate::vertex::VertexFetch;
 use crate::workers::Workers;
 use crate::{DrawError, ShaderStage};
 
 /// Primitives one set-up task takes.
 pub(crate) const SETUP_CHUNK: usize = 2048;
 
-/// [`crate::draw_on`] over any [`ShaderStage`] pair.
-#[allow(clippy::too_many_arguments)]
-pub fn draw_stages(
-    workers: &Workers,
-    fb: &mut Framebuffer,
-    state: &PipelineState,
-    vs: &dyn ShaderStage,
-    vs_uniforms: &[u32],
-    fs: &dyn ShaderStage,
-    fs_uniforms: &[u32],
-    mode: Mode,
-    indices: &[u32],
-    fetch: &dyn VertexFetch,
-    textures: &(dyn Textures + Sync),
-) -> Result<(), DrawError> {
-    draw_probed(
-        workers,
-        fb,
-        state,
-        (vs, vs_uniforms),
-        None,
-        (fs, fs_uniforms),
-        mode,
-        indices,
-        fetch,
-        textures,
-        None,
-    )
-}
-
-/// [`draw_stages`], with a geometry stage between the vertex and
-/// fragment stages when `gs` is given (a geometry kernel and its uniform
+/// [`crate::draw_on`] over any [`ShaderStage`]s: the vertex stage and the
+/// fragment stage (each with its uniform words), with a geometry stage
+/// between them when `gs` is given (a geometry kernel and its uniform
 /// words; see `crate::geometry`).
 #[allow(clippy::too_many_arguments)]
-pub fn draw_geometry_stages(
+pub fn draw_stages(
     workers: &Workers,
     fb: &mut Framebuffer,
     state: &PipelineState,
@@ -84,7 +55,7 @@ pub fn draw_geometry_stages(
     )
 }
 
-/// [`draw_stages`] (or [`draw_geometry_stages`] with `gs`), reporting to
+/// [`draw_stages`], reporting to
 /// `probe` what happens at its pixel.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn draw_probed(
@@ -100,34 +71,15 @@ pub(crate) fn draw_probed(
     textures: &(dyn Textures + Sync),
     probe: Option<&Probe>,
 ) -> Result<(), DrawError> {
-    let (vertex_of, outputs, mode) = match gs {
-        None => {
-            let (vertex_of, outputs) = run_vertices(
-                workers,
-                vs,
-                vs_uniforms,
-                textures,
-                indices,
-                fetch,
-                &VsLayout::new(vs.interface()),
-                state.clamp_vertex_color,
-                probe,
-            )?;
-            (vertex_of, outputs, mode)
-        }
-        Some(gs) => {
-            let emitted = crate::geometry::vertex_and_geometry_stages(
-                workers,
-                (vs, vs_uniforms),
-                gs,
-                textures,
-                (indices, fetch),
-                (mode, state),
-                probe,
-            )?;
-            (emitted.vertex_of, emitted.outputs, emitted.mode)
-        }
-    };
+    let vertices = crate::geometry::vertex_and_geometry_stages(
+        workers,
+        (vs, vs_uniforms),
+        gs,
+        textures,
+        (indices, fetch),
+        (mode, state),
+        probe,
+    )?;
     // The last stage before set-up: its outputs are the vertices drawn.
     let last = gs.map_or(vs, |(g, _)| g);
     draw_vertices(
@@ -136,11 +88,7 @@ pub(crate) fn draw_probed(
         state,
         last.interface(),
         (fs, fs_uniforms),
-        Vertices {
-            mode,
-            vertex_of,
-            outputs,
-        },
+        vertices,
         textures,
         probe,
     )

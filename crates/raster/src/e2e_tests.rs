@@ -203,6 +203,57 @@ struct SceneAttribs {
     tc: Vec<[f32; 4]>,
 }
 
+impl SceneAttribs {
+    /// No vertices yet, for the inputs of vertex kernel `vs`.
+    fn for_kernel(vs: &Kernel) -> SceneAttribs {
+        SceneAttribs {
+            names: vs
+                .interface()
+                .inputs
+                .iter()
+                .map(|s| s.name.clone())
+                .collect(),
+            pos: Vec::new(),
+            col: Vec::new(),
+            tc: Vec::new(),
+        }
+    }
+
+    /// Draws every vertex of `self`, in order, as triangles through the
+    /// stages `vs` and `fs` (no uniforms) onto `fb`.
+    fn draw(
+        &self,
+        workers: &crate::Workers,
+        fb: &mut Framebuffer,
+        state: &PipelineState,
+        (vs, fs): (&Kernel, &dyn crate::ShaderStage),
+        (fs_uniforms, units): (&[u32], &TextureUnits),
+    ) -> Result<(), crate::DrawError> {
+        let idx: Vec<u32> = (0..self.pos.len() as u32).collect();
+        crate::draw_stages(
+            workers,
+            fb,
+            state,
+            (vs, &[]),
+            None,
+            (fs, fs_uniforms),
+            Mode::Triangles,
+            &idx,
+            self,
+            units,
+        )
+    }
+}
+
+/// The scenes' pseudo-random floats in [0, 1) from `seed` (a 32-bit
+/// linear congruential generator, the C library's constants).
+fn unit_floats(mut seed: u32) -> impl FnMut() -> f32 {
+    move || {
+        seed = seed.wrapping_mul(1103515245).wrapping_add(12345);
+        (seed >> 8) as f32 / (1u32 << 24) as f32
+    }
+}
+
 impl VertexFetch for SceneAttribs {
     fn fetch(&self, slot: usize, v: u32, out: &mut [f32; 4]) {
         let src = match self.names.get(slot).map(String::as_str) {
@@ -235,13 +286,7 @@ fn scene(workers: &crate::Workers) -> SceneResult {
     fb.clear_color(&[0], [0.1, 0.2, 0.3, 1.0], [true; 4], None);
     fb.clear_depth(1.0, true, None);
     let mut errors = Vec::new();
-    let names = |k: &Kernel| -> Vec<String> {
-        k.interface()
-            .inputs
-            .iter()
-            .map(|s| s.name.clone())
-            .collect()
-    };
+    let names = |k: &Kernel| SceneAttribs::for_kernel(k).names;
     let base = PipelineState {
         viewport: Rect::new(0, 0, w as i32, h as i32),
         ..PipelineState::default()
@@ -252,22 +297,10 @@ fn scene(workers: &crate::Workers) -> SceneResult {
                     fsu: &[u32],
                     fetch: &SceneAttribs,
                     units: &TextureUnits| {
-        let idx: Vec<u32> = (0..fetch.pos.len() as u32).collect();
-        crate::draw_on(
-            workers,
-            fb,
-            st,
-            vs,
-            &[],
-            fs,
-            fsu,
-            Mode::Triangles,
-            &idx,
-            fetch,
-            units,
-        )
-        .err()
-        .map(|e| e.to_string())
+        fetch
+            .draw(workers, fb, st, (vs, fs), (fsu, units))
+            .err()
+            .map(|e| e.to_string())
     };
     let no_textures = TextureUnits::default();
 
@@ -282,12 +315,7 @@ fn scene(workers: &crate::Workers) -> SceneResult {
         seed = crate::lcg_step(seed);
         (seed >> 8) as f32 / (1u32 << 24) as f32
     };
-    let mut tris = SceneAttribs {
-        names: names(&flat.0),
-        pos: Vec::new(),
-        col: Vec::new(),
-        tc: Vec::new(),
-    };
+    let mut tris = SceneAttribs::for_kernel(&flat.0);
     for _ in 0..60 * 3 {
         let wc = 0.5 + 1.5 * rnd();
         let (x, y, z) = (rnd() * 2.4 - 1.2, rnd() * 2.4 - 1.2, rnd() * 2.0 - 1.0);
@@ -350,12 +378,7 @@ fn scene(workers: &crate::Workers) -> SceneResult {
         ([0.8, 0.9], 3.0, [6.0, 6.0]),
         ([-0.7, 0.85], 1.5, [0.0, 6.0]),
     ];
-    let mut quad = SceneAttribs {
-        names: names(&textured.0),
-        pos: Vec::new(),
-        col: Vec::new(),
-        tc: Vec::new(),
-    };
+    let mut quad = SceneAttribs::for_kernel(&textured.0);
     for i in [0, 1, 2, 0, 2, 3] {
         let (p, wc, t) = corners[i];
         quad.pos.push([p[0] * wc, p[1] * wc, 0.2 * wc, wc]);
@@ -401,13 +424,8 @@ fn scene(workers: &crate::Workers) -> SceneResult {
          }",
     );
     looping.1.set_loop_budget(1000);
-    let mut full = SceneAttribs {
-        names: names(&looping.0),
-        pos: QUAD.iter().map(|p| [p[0], p[1], 0.0, 1.0]).collect(),
-        col: Vec::new(),
-        tc: Vec::new(),
-    };
-    full.names = names(&looping.0);
+    let mut full = SceneAttribs::for_kernel(&looping.0);
+    full.pos = QUAD.iter().map(|p| [p[0], p[1], 0.0, 1.0]).collect();
     errors.extend(draw_all(&mut fb, &base, &looping, &[], &full, &no_textures));
 
     (
@@ -663,24 +681,10 @@ fn impostors_with(
         ..PipelineState::default()
     };
     state_change(&mut state);
-    let mut attribs = SceneAttribs {
-        names: vs
-            .interface()
-            .inputs
-            .iter()
-            .map(|s| s.name.clone())
-            .collect(),
-        pos: Vec::new(),
-        col: Vec::new(),
-        tc: Vec::new(),
-    };
+    let mut attribs = SceneAttribs::for_kernel(&vs);
     // Spheres on a pseudo-random walk, radii 0.05..0.3 (clip units),
     // depths interleaved so later ones are sometimes behind.
-    let mut seed = 12345u32;
-    let mut rnd = || {
-        seed = seed.wrapping_mul(1103515245).wrapping_add(12345);
-        (seed >> 8) as f32 / (1u32 << 24) as f32
-    };
+    let mut rnd = unit_floats(12345);
     for _ in 0..spheres {
         let (cx, cy, r, z, shade) = (
             rnd() * 2.2 - 1.1,
@@ -713,24 +717,12 @@ fn impostors_with(
             }
         })
         .collect();
-    let idx: Vec<u32> = (0..attribs.pos.len() as u32).collect();
-    let tex = TextureUnits::default();
     let straight = Straightforward(&fs);
     let fs_stage: &dyn crate::ShaderStage = if deferred { &fs } else { &straight };
-    crate::draw_stages(
-        workers,
-        &mut fb,
-        &state,
-        &vs,
-        &[],
-        fs_stage,
-        &[],
-        Mode::Triangles,
-        &idx,
-        &attribs,
-        &tex,
-    )
-    .unwrap();
+    let units = TextureUnits::default();
+    attribs
+        .draw(workers, &mut fb, &state, (&vs, fs_stage), (&[], &units))
+        .unwrap();
     (
         fb.read_pixels_u8(0, 0, 0, w, h),
         fb.read_depth(0, 0, w, h),
@@ -903,22 +895,8 @@ fn small_triangles_with(
         ..PipelineState::default()
     };
     state_change(&mut state);
-    let mut seed = 777u32;
-    let mut rnd = || {
-        seed = seed.wrapping_mul(1103515245).wrapping_add(12345);
-        (seed >> 8) as f32 / (1u32 << 24) as f32
-    };
-    let mut attribs = SceneAttribs {
-        names: vs
-            .interface()
-            .inputs
-            .iter()
-            .map(|s| s.name.clone())
-            .collect(),
-        pos: Vec::new(),
-        col: Vec::new(),
-        tc: Vec::new(),
-    };
+    let mut rnd = unit_floats(777);
+    let mut attribs = SceneAttribs::for_kernel(&vs);
     for _ in 0..2500 {
         let (x, y, z) = (rnd() * 2.0 - 1.0, rnd() * 2.0 - 1.0, rnd() * 2.0 - 1.0);
         let s = 0.01 + 0.08 * rnd() * rnd();
@@ -928,23 +906,10 @@ fn small_triangles_with(
             attribs.col.push(c);
         }
     }
-    let idx: Vec<u32> = (0..attribs.pos.len() as u32).collect();
-    let tex = TextureUnits::default();
     let wrapped = EmptySlice(&fs, fs.interface().clone());
     let fs: &dyn crate::ShaderStage = if slice { &wrapped } else { &fs };
-    let r = crate::draw_stages(
-        workers,
-        &mut fb,
-        &state,
-        &vs,
-        &[],
-        fs,
-        &[],
-        Mode::Triangles,
-        &idx,
-        &attribs,
-        &tex,
-    );
+    let units = TextureUnits::default();
+    let r = attribs.draw(workers, &mut fb, &state, (&vs, fs), (&[], &units));
     (
         fb.read_pixels_u8(0, 0, 0, w, h),
         fb.read_depth(0, 0, w, h),
@@ -1174,7 +1139,7 @@ void main() {
         textures: &units,
     };
     let mut drawn = fb.clone();
-    crate::draw_geometry_stages(
+    crate::draw_stages(
         &crate::Workers::inline(),
         &mut drawn,
         &state,

@@ -39,13 +39,14 @@ use crate::workers::Workers;
 use crate::{DrawError, ShaderStage};
 use glsl::ir::OutputPrimitive;
 
-/// The vertex stage, then the geometry stage, as a draw runs them
-/// (vertex colours clamped after the geometry stage, the last before
-/// rasterization, when the state says so): the emitted primitives.
+/// The stages before rasterization as a draw runs them: the vertex
+/// stage, then the geometry stage when there is one (vertex colours
+/// clamped after the last of them, when the state says so): the
+/// primitives to set up.
 pub(crate) fn vertex_and_geometry_stages(
     workers: &Workers,
     (vs, vs_uniforms): (&dyn ShaderStage, &[u32]),
-    gs: (&dyn ShaderStage, &[u32]),
+    gs: Option<(&dyn ShaderStage, &[u32])>,
     textures: &(dyn crate::ex::Textures + Sync),
     (indices, fetch): (&[u32], &dyn crate::VertexFetch),
     (mode, state): (Mode, &PipelineState),
@@ -60,9 +61,16 @@ pub(crate) fn vertex_and_geometry_stages(
         indices,
         fetch,
         &vertex_layout,
-        false,
+        state.clamp_vertex_color && gs.is_none(),
         probe,
     )?;
+    let Some(gs) = gs else {
+        return Ok(Vertices {
+            mode,
+            vertex_of,
+            outputs,
+        });
+    };
     let shaded = Vertices {
         mode,
         vertex_of,
@@ -112,7 +120,7 @@ pub fn shade_geometry(
     let v = vertex_and_geometry_stages(
         workers,
         vs,
-        gs,
+        Some(gs),
         textures,
         (indices, fetch),
         (mode, state),

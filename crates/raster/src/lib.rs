@@ -158,7 +158,7 @@
 //!   `geometry_input` with the adjacent vertices);
 //! - the geometry stage: `geometry` (`run_geometry`: a geometry kernel
 //!   per assembled primitive, 16 per batch, its emitted strips made a
-//!   point, line or triangle list for set-up; [`draw_geometry_stages`]);
+//!   point, line or triangle list for set-up; [`draw_stages`]);
 //! - clipping: `clip` (`Planes::clip_polygon`, `clip_line`);
 //! - set-up (window transform, facing, culling, polygon offset, planes):
 //!   `setup` (`Setup::chunk`), giving `prim::Prim`s;
@@ -256,7 +256,7 @@ pub(crate) use ::exec as ex;
 
 pub use assembly::Mode;
 pub use binning::TILE;
-pub use draw::{draw_emitted, draw_geometry_stages, draw_stages};
+pub use draw::{draw_emitted, draw_stages};
 pub use framebuffer::{
     depth_to_fixed, fixed_to_depth, float_to_unorm8, unorm8_to_float, ColorBuffer, ColorFormat,
     Framebuffer, DEPTH_MAX, MAX_DRAW_BUFFERS, MAX_FRAMEBUFFER_SIZE,
@@ -518,10 +518,9 @@ pub fn draw_on(
         workers,
         fb,
         state,
-        vs,
-        vs_uniforms,
-        fs,
-        fs_uniforms,
+        (vs, vs_uniforms),
+        None,
+        (fs, fs_uniforms),
         mode,
         indices,
         fetch,
