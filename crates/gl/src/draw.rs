@@ -64,14 +64,19 @@ impl Context {
         if !self.feedback_allows(mode) {
             return false;
         }
-        // Core draws need a program (there is no fixed-function vertex
-        // stage to fall back on) and a vertex array object (the default
-        // one is removed).
-        if self.is_core() && (self.current_program == 0 || self.vertex_array_binding() == 0) {
+        // Core draws need a vertex array object (the default one is
+        // removed: GL 3.3 core appendix E.2.2).
+        if self.is_core() && self.vertex_array_binding() == 0 {
             self.set_error(GL_INVALID_OPERATION);
             return false;
         }
-        self.check_fbo_complete()
+        if !self.check_fbo_complete() {
+            return false;
+        }
+        // Without a program the results of a core draw are undefined
+        // (§2.11, §3.9), not an error: there is no fixed-function stage
+        // to run, so nothing is drawn (as Mesa does).
+        !(self.is_core() && self.current_program == 0)
     }
 
     pub(crate) fn check_fbo_complete(&mut self) -> bool {

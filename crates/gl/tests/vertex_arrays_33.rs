@@ -603,3 +603,25 @@ fn half_float_bgra_and_packed_arrays_draw() {
         Some(GL_BGRA as i64)
     );
 }
+
+/// A core draw needs a vertex array object (GL_INVALID_OPERATION
+/// without), but not a program: without one its results are undefined
+/// (GL 3.3 §2.11), which is no error, and nothing is drawn.
+#[test]
+fn core_draws_without_a_program_draw_nothing() {
+    let mut ctx = Context::with_api(8, 8, gl::Api::GL33_CORE);
+    clear(&mut ctx);
+    ctx.draw_arrays(GL_TRIANGLES, 0, 3);
+    assert_eq!(
+        ctx.get_error(),
+        GL_INVALID_OPERATION,
+        "no vertex array object"
+    );
+    let vao = ctx.gen_vertex_arrays(1)[0];
+    ctx.bind_vertex_array(vao);
+    ctx.draw_arrays(GL_TRIANGLES, 0, 3);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    let blank = image(&mut ctx);
+    clear(&mut ctx);
+    assert_eq!(image(&mut ctx), blank);
+}
