@@ -2,17 +2,21 @@
 libEGL.so.1 (scripts/egl-libs.sh's directory on LD_LIBRARY_PATH) and on
 the system's (libglvnd dispatching to Mesa): moderngl's standalone
 `backend="egl"` context (glcontext dlopens libEGL and libGL) drawing an
-indexed, textured, depth-tested cube into its own framebuffer, and
-pyglet 2's headless mode (an EGL pbuffer window) drawing its `shapes`
-with pyglet's own shaders through a batch.
+indexed, textured, depth-tested cube into its own framebuffer; pyglet 2's
+headless mode (an EGL pbuffer window) drawing its `shapes` with pyglet's
+own shaders through a batch; VTK's vtkEGLRenderWindow (the wheel's EGL
+window, chosen by VTK_DEFAULT_OPENGL_WINDOW) with the OSMesa scenes'
+elevation pipeline and PyVista's show_edges.
 """
 import math
 import os
-import sys
 
-import numpy as np
+os.environ["VTK_DEFAULT_OPENGL_WINDOW"] = "vtkEGLRenderWindow"
 
-from output import run, save
+import numpy as np  # noqa: E402
+
+import vtk_scenes  # noqa: E402
+from output import run, save  # noqa: E402
 
 W, H = 160, 120
 
@@ -130,4 +134,6 @@ def pyglet_shapes(outdir, name):
 
 
 if __name__ == "__main__":
-    run([("moderngl_egl_cube", moderngl_cube), ("pyglet_headless_shapes", pyglet_shapes)])
+    run([("moderngl_egl_cube", moderngl_cube), ("pyglet_headless_shapes", pyglet_shapes),
+         ("vtk_egl_elevation_text", vtk_scenes.vtk_elevation),
+         ("pyvista_egl_edges", vtk_scenes.pyvista_edges)])
