@@ -7,13 +7,17 @@
 bench/run.py starts this once per (implementation, scene) so each runs in its
 own process with its own library. SPEC names the scene (see `build` below):
 
-    spheres:N:WxH:ortho|persp:none|linear|exp|exp2[:points]
+    spheres:N:WxH:ortho|persp:none|linear|exp|exp2[:points|:tris]
                                                      seed sphere impostors
                                                      (points: one point per
                                                      atom expanded by
                                                      shaders/sphere.geom,
                                                      GL_EXT_geometry_shader4;
-                                                     shaderbox only)
+                                                     shaderbox only; tris:
+                                                     each quad as the two
+                                                     GL_TRIANGLES the points'
+                                                     strip makes, an
+                                                     ablation)
     mesh:TRIANGLES:WxH                               seed materials shader
     ffmesh:TRIANGLES:WxH                             fixed-function lighting + fog
     textured:LAYERS:WxH[:notex][:noblend][:texN]     mipmapped texture layers
@@ -64,6 +68,10 @@ ELEMENTS = [
     (1.80, (1.0, 1.0, 0.19), 0.05),
 ]
 FOG_AT_BACK = 0.35
+# A quad's corners (GL_QUADS), and the same quad as the two triangles of
+# sphere.geom's strip (-1,-1), (1,-1), (-1,1), (1,1).
+QUAD_CORNERS = ((-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0))
+TRI_CORNERS = ((-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0))
 # Seconds of untimed frames before the timed ones (see main).
 WARMUP_SECONDS = 0.5
 # Volume per random atom (Å^3).
@@ -154,7 +162,7 @@ def camera(center, radius, proj, w, h):
     return d, radius
 
 
-def spheres(n, proj, fog, w, h, points=False):
+def spheres(n, proj, fog, w, h, points=False, tris=False):
     rng = random.Random(7)
     # A sparse random cloud, one atom per 1000 Å^3, so 20,000 atoms at
     # 1024² cover about two million fragments (depth complexity ~2).
@@ -177,7 +185,7 @@ def spheres(n, proj, fog, w, h, points=False):
             tex.append(r)
             col.extend((c[0], c[1], c[2], 1.0))
             continue
-        for x, y in ((-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)):
+        for x, y in TRI_CORNERS if tris else QUAD_CORNERS:
             pos.extend(p)
             tex.extend((x, y, r))
             col.extend((c[0], c[1], c[2], 1.0))
@@ -225,6 +233,8 @@ def spheres(n, proj, fog, w, h, points=False):
         GL.glEnableClientState(s)
     if points:
         return lambda: GL.glDrawArrays(GL.GL_POINTS, 0, n)
+    if tris:
+        return lambda: GL.glDrawArrays(GL.GL_TRIANGLES, 0, 6 * n)
     count = 4 * n
     return lambda: GL.glDrawArrays(GL.GL_QUADS, 0, count)
 
@@ -417,10 +427,11 @@ def build(spec):
     kind, *args = spec.split(":")
     if kind == "spheres":
         w, h = parse_size(args[1])
-        points = args[4:] == ["points"]
-        if args[4:] and not points:
+        option = args[4] if len(args) > 4 else None
+        if option not in (None, "points", "tris") or len(args) > 5:
             raise SystemExit(f"unknown sphere option in {spec!r}")
-        return w, h, lambda: spheres(int(args[0]), args[2], args[3], w, h, points)
+        return w, h, lambda: spheres(int(args[0]), args[2], args[3], w, h,
+                                     option == "points", option == "tris")
     if kind in ("mesh", "ffmesh"):
         w, h = parse_size(args[1])
         return w, h, lambda: mesh(int(args[0]), w, h, kind == "mesh")
