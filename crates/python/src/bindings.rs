@@ -423,8 +423,7 @@ impl RawContext {
     /// linked, info log). The caller checks the sources first
     /// (compile_report, link_report) for structured diagnostics; what
     /// only the context refuses (GLSL 1.10 in a core context) fails here.
-    #[pyo3(signature = (vertex=None, fragment=None))]
-    #[pyo3(signature = (vertex, fragment, geometry=None))]
+    #[pyo3(signature = (vertex=None, fragment=None, geometry=None))]
     fn build_program(
         &self,
         vertex: Option<&str>,
