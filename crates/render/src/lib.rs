@@ -34,11 +34,13 @@
 //!   [`RenderError`]s. Output is deterministic (same bytes on every
 //!   machine): the pipeline is, and the camera uses `glsl::math`.
 //! - [`Atoms::Points`] draws the same image as [`Atoms::Quads`] for every
-//!   effect and style, byte for byte: sphere-point.vert and sphere.geom
-//!   compute each corner with sphere.vert's operations, and the strip's
-//!   two triangles cover exactly the quad's pixels and interpolate its
-//!   varyings, which are the same at all four corners except `point` and
-//!   `view_direction` (unread), to the same values.
+//!   effect and style, byte for byte (`tests/points.rs`): sphere-point.vert
+//!   and sphere.geom compute each corner with sphere.vert's (and
+//!   x.vert's) operations, the strip's two triangles cover exactly the
+//!   quad's pixels, and the fragment stages read only the pixel's
+//!   `gl_FragCoord`, the quad's plane and varyings that are the same at
+//!   all four corners (the per-atom ones; `point` and `view_direction`
+//!   are unread), which come out of either triangle as out of the quad.
 //! - Spheres intersect correctly: the fragment shader writes the depth of
 //!   the sphere surface, and the depth test (GL_LESS) is on.
 //! - Lights are directional, defined in eye space (they do not turn with
