@@ -7,7 +7,17 @@
 bench/run.py starts this once per (implementation, scene) so each runs in its
 own process with its own library. SPEC names the scene (see `build` below):
 
-    spheres:N:WxH:ortho|persp:none|linear|exp|exp2   seed sphere impostors
+    spheres:N:WxH:ortho|persp:none|linear|exp|exp2[:points|:tris]
+                                                     seed sphere impostors
+                                                     (points: one point per
+                                                     atom expanded by
+                                                     shaders/sphere.geom,
+                                                     GL_EXT_geometry_shader4;
+                                                     shaderbox only; tris:
+                                                     each quad as the two
+                                                     GL_TRIANGLES the points'
+                                                     strip makes, an
+                                                     ablation)
     mesh:TRIANGLES:WxH                               seed materials shader
     ffmesh:TRIANGLES:WxH                             fixed-function lighting + fog
     textured:LAYERS:WxH[:notex][:noblend][:texN]     mipmapped texture layers
@@ -58,6 +68,10 @@ ELEMENTS = [
     (1.80, (1.0, 1.0, 0.19), 0.05),
 ]
 FOG_AT_BACK = 0.35
+# A quad's corners (GL_QUADS), and the same quad as the two triangles of
+# sphere.geom's strip (-1,-1), (1,-1), (-1,1), (1,1).
+QUAD_CORNERS = ((-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0))
+TRI_CORNERS = ((-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0))
 # Seconds of untimed frames before the timed ones (see main).
 WARMUP_SECONDS = 0.5
 # Volume per random atom (Å^3).
@@ -69,7 +83,9 @@ def read(path):
         return f.read()
 
 
-def program(vs_src, fs_src):
+def program(vs_src, fs_src, gs_src=None, gs_params=()):
+    """Compiles and links; a geometry shader (GL_EXT_geometry_shader4) gets
+    its (pname, value) program parameters before the link."""
     def shader(kind, src):
         s = GL.glCreateShader(kind)
         GL.glShaderSource(s, src)
@@ -81,6 +97,11 @@ def program(vs_src, fs_src):
     p = GL.glCreateProgram()
     GL.glAttachShader(p, shader(GL.GL_VERTEX_SHADER, vs_src))
     GL.glAttachShader(p, shader(GL.GL_FRAGMENT_SHADER, fs_src))
+    if gs_src is not None:
+        from OpenGL.GL.EXT import geometry_shader4 as ext
+        GL.glAttachShader(p, shader(ext.GL_GEOMETRY_SHADER_EXT, gs_src))
+        for pname, value in gs_params:
+            ext.glProgramParameteriEXT(p, pname, value)
     GL.glLinkProgram(p)
     if not GL.glGetProgramiv(p, GL.GL_LINK_STATUS):
         raise RuntimeError(GL.glGetProgramInfoLog(p))
@@ -141,7 +162,7 @@ def camera(center, radius, proj, w, h):
     return d, radius
 
 
-def spheres(n, proj, fog, w, h):
+def spheres(n, proj, fog, w, h, points=False, tris=False):
     rng = random.Random(7)
     # A sparse random cloud, one atom per 1000 Å^3, so 20,000 atoms at
     # 1024² cover about two million fragments (depth complexity ~2).
@@ -159,11 +180,24 @@ def spheres(n, proj, fog, w, h):
                 break
         u = rng.random() * acc
         r, c, _ = next(e for e, k in zip(ELEMENTS, cum) if u <= k)
-        for x, y in ((-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)):
+        if points:
+            pos.extend(p)
+            tex.append(r)
+            col.extend((c[0], c[1], c[2], 1.0))
+            continue
+        for x, y in TRI_CORNERS if tris else QUAD_CORNERS:
             pos.extend(p)
             tex.extend((x, y, r))
             col.extend((c[0], c[1], c[2], 1.0))
-    prog = program(read("shaders/sphere.vert"), read("shaders/sphere.frag"))
+    if points:
+        from OpenGL.GL.EXT import geometry_shader4 as ext
+        params = [(ext.GL_GEOMETRY_INPUT_TYPE_EXT, GL.GL_POINTS),
+                  (ext.GL_GEOMETRY_OUTPUT_TYPE_EXT, GL.GL_TRIANGLE_STRIP),
+                  (ext.GL_GEOMETRY_VERTICES_OUT_EXT, 4)]
+        prog = program(read("shaders/sphere-point.vert"), read("shaders/sphere.frag"),
+                       read("shaders/sphere.geom"), params)
+    else:
+        prog = program(read("shaders/sphere.vert"), read("shaders/sphere.frag"))
     set_lights()
     dist, rad = camera((0.0, 0.0, 0.0), big_r + 1.8, proj, w, h)
     front, back = dist - rad, dist + rad
@@ -192,11 +226,15 @@ def spheres(n, proj, fog, w, h):
     GL.glVertexPointer(3, GL.GL_FLOAT, 0, None)
     GL.glBindBuffer(GL.GL_ARRAY_BUFFER, bufs[1])
     GL.glClientActiveTexture(GL.GL_TEXTURE0)
-    GL.glTexCoordPointer(3, GL.GL_FLOAT, 0, None)
+    GL.glTexCoordPointer(1 if points else 3, GL.GL_FLOAT, 0, None)
     GL.glBindBuffer(GL.GL_ARRAY_BUFFER, bufs[2])
     GL.glColorPointer(4, GL.GL_FLOAT, 0, None)
     for s in (GL.GL_VERTEX_ARRAY, GL.GL_TEXTURE_COORD_ARRAY, GL.GL_COLOR_ARRAY):
         GL.glEnableClientState(s)
+    if points:
+        return lambda: GL.glDrawArrays(GL.GL_POINTS, 0, n)
+    if tris:
+        return lambda: GL.glDrawArrays(GL.GL_TRIANGLES, 0, 6 * n)
     count = 4 * n
     return lambda: GL.glDrawArrays(GL.GL_QUADS, 0, count)
 
@@ -389,7 +427,11 @@ def build(spec):
     kind, *args = spec.split(":")
     if kind == "spheres":
         w, h = parse_size(args[1])
-        return w, h, lambda: spheres(int(args[0]), args[2], args[3], w, h)
+        option = args[4] if len(args) > 4 else None
+        if option not in (None, "points", "tris") or len(args) > 5:
+            raise SystemExit(f"unknown sphere option in {spec!r}")
+        return w, h, lambda: spheres(int(args[0]), args[2], args[3], w, h,
+                                     option == "points", option == "tris")
     if kind in ("mesh", "ffmesh"):
         w, h = parse_size(args[1])
         return w, h, lambda: mesh(int(args[0]), w, h, kind == "mesh")

@@ -70,9 +70,16 @@ def floats(values):
     return (ctypes.c_float * len(values))(*values)
 
 
-def compile_program(vertex, fragment):
+def compile_program(vertex, fragment, geometry=(), parameters=()):
+    """A scene's program; a geometry stage (GL_EXT_geometry_shader4, which
+    Mesa never implemented: its compile fails there, loudly) gets its
+    program parameters before the link."""
     prog = GL.glCreateProgram()
-    for kind, sources in ((GL.GL_VERTEX_SHADER, vertex), (GL.GL_FRAGMENT_SHADER, fragment)):
+    stages = [(GL.GL_VERTEX_SHADER, vertex), (GL.GL_FRAGMENT_SHADER, fragment)]
+    from OpenGL.GL.EXT import geometry_shader4 as ext
+    if geometry:
+        stages.append((ext.GL_GEOMETRY_SHADER_EXT, geometry))
+    for kind, sources in stages:
         for src in sources:
             sh = GL.glCreateShader(kind)
             GL.glShaderSource(sh, src)
@@ -80,6 +87,8 @@ def compile_program(vertex, fragment):
             if not GL.glGetShaderiv(sh, GL.GL_COMPILE_STATUS):
                 raise RuntimeError("Mesa compile failed: %s" % GL.glGetShaderInfoLog(sh))
             GL.glAttachShader(prog, sh)
+    for pname, value in parameters:
+        ext.glProgramParameteriEXT(prog, pname, value)
     GL.glLinkProgram(prog)
     if not GL.glGetProgramiv(prog, GL.GL_LINK_STATUS):
         raise RuntimeError("Mesa link failed: %s" % GL.glGetProgramInfoLog(prog))
@@ -131,7 +140,8 @@ def replay(scene):
         elif name == "DepthFunc":
             GL.glDepthFunc(a)
         elif name == "Program":
-            programs[a["id"]] = compile_program(a["vertex"], a["fragment"])
+            programs[a["id"]] = compile_program(a["vertex"], a["fragment"],
+                                                a.get("geometry", ()), a.get("parameters", ()))
             current[0] = programs[a["id"]]
             GL.glUseProgram(current[0])
         elif name == "UseProgram":

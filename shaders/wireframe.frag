@@ -1,5 +1,5 @@
 // wireframe.frag: single-pass wireframe over shaded triangles (fragment
-// stage; vertex: wireframe.vert).
+// stage; vertex: wireframe.vert, or wireframe-geom.vert + wireframe.geom).
 //
 // What it does: recovers the window-space distance to the nearest
 // triangle edge (edge_distance * gl_FragCoord.w, see wireframe.vert),

@@ -25,7 +25,7 @@
 
 use crate::guard::guarded;
 use crate::Exit;
-use render::{Background, Effect, Fog, Projection, RenderOptions, Structure, Style};
+use render::{Atoms, Background, Effect, Fog, Projection, RenderOptions, Structure, Style};
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args, Debug)]
@@ -92,6 +92,12 @@ pub struct Args {
     /// atom, a yellow X on red (oxygen) atoms, or red atoms 50% transparent.
     #[arg(long, value_name = "EFFECT", default_value = "plain", value_parser = parse_effect)]
     pub effect: Effect,
+
+    /// How each atom is sent to GL: `quads` (four vertices, the corner in
+    /// a texture coordinate) or `points` (one vertex, expanded to the same
+    /// quad by a geometry shader, GL_EXT_geometry_shader4). Same image.
+    #[arg(long, value_name = "ATOMS", default_value = "quads", value_parser = parse_atoms)]
+    pub atoms: Atoms,
 }
 
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -180,6 +186,13 @@ fn parse_effect(s: &str) -> Result<Effect, String> {
     })
 }
 
+fn parse_atoms(s: &str) -> Result<Atoms, String> {
+    Atoms::from_name(s.trim()).ok_or_else(|| {
+        let names: Vec<&str> = Atoms::ALL.iter().map(|a| a.name()).collect();
+        format!("`{s}` is not a way to draw atoms: {}", names.join(", "))
+    })
+}
+
 fn parse_background(s: &str) -> Result<BackgroundArg, String> {
     let t = s.trim().to_ascii_lowercase();
     let c = match t.as_str() {
@@ -234,6 +247,7 @@ fn options(args: &Args) -> RenderOptions {
         supersample: args.supersample,
         background: args.background.0,
         effect: args.effect,
+        atoms: args.atoms,
         style: match args.style {
             StyleArg::Spacefill => Style::Spacefill,
             StyleArg::Ballstick => Style::BallAndStick,
@@ -467,6 +481,9 @@ mod tests {
             Ok(BackgroundArg(Background::Transparent))
         );
         assert!(parse_background("#12345").is_err() && parse_background("mauve").is_err());
+        assert_eq!(parse_atoms("points"), Ok(Atoms::Points));
+        assert_eq!(parse_atoms(" quads"), Ok(Atoms::Quads));
+        assert!(parse_atoms("lines").unwrap_err().contains("quads, points"));
         assert_eq!(parse_effect("x-red"), Ok(Effect::XRed));
         assert_eq!(parse_effect("outline"), Ok(Effect::Outline));
         let e = parse_effect("sepia").unwrap_err();

@@ -184,6 +184,43 @@ fn every_effect_renders_and_unknown_effect_is_named() {
 }
 
 #[test]
+fn points_draw_the_same_png_as_quads_and_unknown_atoms_is_named() {
+    let mut pngs = Vec::new();
+    for atoms in ["quads", "points"] {
+        let out = dir("atoms").join(format!("{atoms}.png"));
+        let scene = dir("atoms").join(format!("{atoms}.json"));
+        let o = shaderbox(&[
+            "render",
+            "-o",
+            out.to_str().unwrap(),
+            "--size",
+            "40x40",
+            "--projection",
+            "perspective",
+            "--fog",
+            "linear",
+            "--atoms",
+            atoms,
+            "--export-scene",
+            scene.to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{atoms}: {}", stderr(&o));
+        pngs.push(std::fs::read(&out).unwrap());
+        let json = std::fs::read_to_string(&scene).unwrap();
+        assert!(json.contains(&format!("--atoms {atoms}")));
+        assert_eq!(json.contains("GL_EXT_geometry_shader4"), atoms == "points");
+    }
+    assert_eq!(pngs[0], pngs[1]);
+    let o = shaderbox(&["render", "--atoms", "lines"]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = stderr(&o);
+    assert!(
+        e.contains("`lines` is not a way to draw atoms: quads, points"),
+        "{e}"
+    );
+}
+
+#[test]
 fn unwritable_output_exits_1() {
     let pdb = write("unwritable", "one.pdb", ATOM.as_bytes());
     let o = shaderbox(&[
@@ -323,12 +360,15 @@ fn gallery_writes_every_picture_and_the_page() {
         .filter_map(|s| s.split('"').next())
         .collect();
     // One picture per library program, six for single-texture's modes.
-    assert_eq!(pictures.len(), 21, "{pictures:?}");
+    assert_eq!(pictures.len(), 24, "{pictures:?}");
     for name in [
         "sphere",
+        "sphere-points",
         "cylinder",
         "volume",
         "wireframe",
+        "wireframe-geom",
+        "normals",
         "toon",
         "single-texture-blend",
     ] {

@@ -183,10 +183,11 @@ fn encode_png<'py>(
 }
 
 /// render_molecule(path, width, height, projection, fog, lights, rotate,
-/// supersample, background, effect, style) -> (width, height, rgba, has_alpha)
+/// supersample, background, effect, style, atoms="quads") -> (width, height,
+/// rgba, has_alpha)
 #[pyfunction]
 #[allow(clippy::too_many_arguments)]
-#[pyo3(signature = (path, width, height, projection, fog, lights, rotate, supersample, background, effect, style))]
+#[pyo3(signature = (path, width, height, projection, fog, lights, rotate, supersample, background, effect, style, atoms = "quads"))]
 fn render_molecule<'py>(
     py: Python<'py>,
     path: Option<PathBuf>,
@@ -200,6 +201,7 @@ fn render_molecule<'py>(
     background: Option<[f32; 3]>,
     effect: &str,
     style: &str,
+    atoms: &str,
 ) -> PyResult<(u32, u32, Bound<'py, PyBytes>, bool)> {
     let args = MoleculeArgs {
         width,
@@ -212,6 +214,7 @@ fn render_molecule<'py>(
         background,
         effect,
         style,
+        atoms,
     };
     let result = py.detach(|| molecule::render_molecule(path.as_deref(), &args));
     match result {

@@ -1,7 +1,7 @@
 //! `shaderbox.render_molecule`: the options of `shaderbox render` (the CLI)
 //! by name, checked, then [`render::render`].
 
-use render::{Background, Effect, Fog, Projection, RenderOptions, Style};
+use render::{Atoms, Background, Effect, Fog, Projection, RenderOptions, Style};
 use std::path::Path;
 
 /// The options as Python passes them (already typed; names checked here).
@@ -19,6 +19,8 @@ pub struct MoleculeArgs<'a> {
     pub effect: &'a str,
     /// "spacefill" or "ballstick", as `shaderbox render --style`.
     pub style: &'a str,
+    /// "quads" or "points", as `shaderbox render --atoms`.
+    pub atoms: &'a str,
 }
 
 /// Why `render_molecule` failed; the kinds become Python exceptions.
@@ -71,6 +73,14 @@ pub fn options(a: &MoleculeArgs) -> Result<RenderOptions, MoleculeError> {
             names.join(", ")
         ))
     })?;
+    let atoms = Atoms::from_name(a.atoms).ok_or_else(|| {
+        let names: Vec<&str> = Atoms::ALL.iter().map(|a| a.name()).collect();
+        MoleculeError::Option(format!(
+            "atoms {:?} is not one of: {}",
+            a.atoms,
+            names.join(", ")
+        ))
+    })?;
     if a.rotate.iter().any(|r| !r.is_finite()) {
         return Err(MoleculeError::Option(format!(
             "rotate {:?} must be three finite angles in degrees",
@@ -103,6 +113,7 @@ pub fn options(a: &MoleculeArgs) -> Result<RenderOptions, MoleculeError> {
             .map_or(Background::Transparent, Background::Color),
         effect,
         style,
+        atoms,
     })
 }
 
@@ -146,6 +157,7 @@ mod tests {
             background: Some([0.0; 3]),
             effect: "plain",
             style: "spacefill",
+            atoms: "quads",
         }
     }
 
@@ -167,6 +179,10 @@ mod tests {
             },
             MoleculeArgs {
                 style: "wireframe",
+                ..args()
+            },
+            MoleculeArgs {
+                atoms: "lines",
                 ..args()
             },
             MoleculeArgs {

@@ -31,6 +31,8 @@ def test_options_change_the_picture():
         dict(style="ballstick"),
     ]:
         assert shaderbox.render_molecule(size=(64, 64), **kw) != base, kw
+    # The geometry-shader path draws the same image.
+    assert shaderbox.render_molecule(size=(64, 64), atoms="points") == base
     t = shaderbox.render_molecule(size=(32, 32), background="transparent")
     assert t.has_alpha and np.asarray(t)[0, 0, 3] == 0
     assert np.asarray(t)[16, 16, 3] == 255
@@ -45,6 +47,8 @@ def test_bad_options(tmp_path):
         shaderbox.render_molecule(size=(8, 8), effect="sepia")
     with pytest.raises(ValueError, match="style .wireframe. is not one of: spacefill, ballstick"):
         shaderbox.render_molecule(size=(8, 8), style="wireframe")
+    with pytest.raises(ValueError, match="atoms .lines. is not one of: quads, points"):
+        shaderbox.render_molecule(size=(8, 8), atoms="lines")
     with pytest.raises(ValueError, match="light 9"):
         shaderbox.render_molecule(size=(8, 8), lights=[9])
     with pytest.raises(ValueError, match="size"):

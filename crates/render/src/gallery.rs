@@ -3,9 +3,12 @@
 //!
 //! - sphere impostor programs (and the effects): crambin, [`crate::render`];
 //! - the cylinder program: crambin in ball-and-stick;
-//! - lighting, materials, toon, trivial, wireframe: a torus (the
+//! - lighting, materials, toon, trivial, wireframe (both forms), normals:
+//!   a torus (the
 //!   two-sided lighting program: an open tube whose inside shows its back
-//!   faces), perspective, lit by directional, point and spot lights;
+//!   faces), perspective, lit by directional, point and spot lights; the
+//!   normals view draws the torus with the materials program first and
+//!   its lines over it;
 //! - texturing: a quad with vertex colours, a checkerboard texture with
 //!   alpha on unit 0 and a ring texture on unit 1, once per environment
 //!   mode;
@@ -16,7 +19,9 @@
 //! writes the page that shows them.
 
 use crate::library::{self, Program, SceneKind};
-use crate::{image, Background, Effect, Fog, Image, Projection, RenderError, RenderOptions, Style};
+use crate::{
+    image, Atoms, Background, Effect, Fog, Image, Projection, RenderError, RenderOptions, Style,
+};
 use gl::enums::*;
 use gl::{ArrayData, Context, Param};
 
@@ -64,7 +69,9 @@ pub fn entries() -> Vec<Entry> {
                 settings: "TexturingType0 = 1 (MODULATE), TexturingType1 = 4 (ADD)".into(),
                 ..base(String::new())
             }),
-            SceneKind::Mesh | SceneKind::WireMesh => out.push(base(mesh_settings(p))),
+            SceneKind::Mesh | SceneKind::WireMesh | SceneKind::Normals => {
+                out.push(base(mesh_settings(p)))
+            }
             SceneKind::Volume => out.push(base(
                 "32^3 RGBA texture, steps = 96, opacity = 0.5, perspective".into(),
             )),
@@ -89,6 +96,11 @@ fn molecule_options(p: &Program, size: u32) -> RenderOptions {
         rotate: [20.0, 30.0, 0.0],
         background: Background::Color([0.1, 0.1, 0.12]),
         effect,
+        atoms: if p.geometry.is_some() {
+            Atoms::Points
+        } else {
+            Atoms::Quads
+        },
         style: if p.scene == SceneKind::BallAndStick {
             Style::BallAndStick
         } else {
@@ -104,6 +116,8 @@ fn mesh_settings(p: &Program) -> String {
         "one-sided-lighting" => "torus; light 0 directional, 1 point, 2 spot; front material".into(),
         "variable-lights" => "torus; light_enabled = 1,1,1,0,0,0,0,0 (three coloured directional lights)".into(),
         "wireframe" => "torus; line_width = 1.5 px, line_color black".into(),
+        "wireframe-geom" => "torus (no corner attributes); line_width = 1.5 px, line_color black".into(),
+        "normals" => "torus drawn by materials, then normal_length = 0.15, root_color yellow, tip_color red".into(),
         "toon" => "torus; light 0 directional, bands 1.0/0.6/0.4/0.2".into(),
         _ => "torus; lights 0 and 1 directional; vertex colours".into(),
     }
@@ -130,7 +144,22 @@ pub fn draw(entry: &Entry, size: u32) -> Result<Image, RenderError> {
             match p.scene {
                 SceneKind::TexturedQuad => quad(&mut ctx, program, entry.modes.unwrap_or((1, 0))),
                 SceneKind::Volume => volume(&mut ctx, program),
-                _ => mesh(&mut ctx, program, p, size),
+                SceneKind::Normals => {
+                    let lit = library::program("materials").unwrap_or(&library::SPHERE);
+                    let fill = library::build(&mut ctx, lit).map_err(RenderError::Shader)?;
+                    ctx.use_program(fill);
+                    // The mesh's arrays stay set: the same triangles again,
+                    // into the normals' lines.
+                    let count = mesh(&mut ctx, fill, p, size);
+                    ctx.use_program(program);
+                    uniform_f(&mut ctx, program, "normal_length", &[0.15]);
+                    uniform_f(&mut ctx, program, "root_color", &[1.0, 0.9, 0.2, 1.0]);
+                    uniform_f(&mut ctx, program, "tip_color", &[0.9, 0.1, 0.1, 1.0]);
+                    ctx.draw_arrays(GL_TRIANGLES, 0, count);
+                }
+                _ => {
+                    mesh(&mut ctx, program, p, size);
+                }
             }
             if let Some(e) = ctx.take_draw_error() {
                 return Err(RenderError::Draw(e));
@@ -260,13 +289,17 @@ fn flat(v: &[[f32; 3]]) -> Vec<f32> {
     v.iter().flatten().copied().collect()
 }
 
-fn mesh(ctx: &mut Context, program: u32, p: &Program, size: u32) {
+/// Draws the scene's torus (or tube) with `program`, set up for `p`
+/// (which may be another program: the normals view's fill); returns the
+/// vertex count, its client arrays left enabled.
+fn mesh(ctx: &mut Context, program: u32, p: &Program, size: u32) -> i32 {
     let tube = p.name == "two-sided-lighting";
-    // The wireframe gets a coarser mesh so its triangles are visible.
-    let (nu, nv) = if p.scene == SceneKind::WireMesh {
-        (16, 8)
-    } else {
-        (40, 20)
+    // The wireframe and the normals get coarser meshes so that their
+    // triangles and lines are visible.
+    let (nu, nv) = match p.scene {
+        SceneKind::WireMesh => (16, 8),
+        SceneKind::Normals => (24, 12),
+        _ => (40, 20),
     };
     let (pos, nor, col) = surface(tube, nu, nv);
     if p.name == "variable-lights" {
@@ -288,6 +321,8 @@ fn mesh(ctx: &mut Context, program: u32, p: &Program, size: u32) {
         );
         uniform_f(ctx, program, "line_width", &[1.5]);
         uniform_f(ctx, program, "line_color", &[0.0, 0.0, 0.0, 1.0]);
+    }
+    if p.scene == SceneKind::WireMesh && p.geometry.is_none() {
         // Every vertex carries its triangle's three corners.
         let mut corners = [Vec::new(), Vec::new(), Vec::new()];
         for tri in pos.chunks(3) {
@@ -312,6 +347,7 @@ fn mesh(ctx: &mut Context, program: u32, p: &Program, size: u32) {
     ctx.enable_client_state(GL_NORMAL_ARRAY);
     ctx.enable_client_state(GL_COLOR_ARRAY);
     ctx.draw_arrays(GL_TRIANGLES, 0, pos.len() as i32);
+    pos.len() as i32
 }
 
 fn texture_2d(ctx: &mut Context, unit: u32, size: usize, texel: impl Fn(usize, usize) -> [u8; 4]) {
@@ -476,10 +512,12 @@ pub fn index_html(entries: &[Entry]) -> String {
         "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>shaderbox shader library</title>\n<style>body{font-family:sans-serif;background:#222;color:#ddd}figure{display:inline-block;width:280px;vertical-align:top;margin:8px}img{width:256px;height:256px;image-rendering:pixelated}code{color:#9cf}figcaption{font-size:13px}</style></head><body>\n<h1>The shaderbox shader library</h1>\n<p>Every program of <code>shaders/</code>, drawn by shaderbox (OpenGL 2.1 on the CPU).</p>\n",
     );
     for e in entries {
+        let geometry = e.program.geometry.map_or(&[][..], |g| g.files);
         let files: Vec<&str> = e
             .program
             .vertex
             .iter()
+            .chain(geometry)
             .chain(e.program.fragment)
             .map(|f| f.name)
             .collect();
@@ -510,6 +548,46 @@ mod tests {
         for x in &e {
             assert!(html.contains(&format!("src=\"{}.png\"", x.file)));
         }
+    }
+
+    fn entry(file: &str) -> Entry {
+        entries().into_iter().find(|e| e.file == file).unwrap()
+    }
+
+    #[test]
+    fn the_geometry_shader_wireframe_draws_the_attribute_wireframe() {
+        // Same edge-distance formulas on the same window positions, same
+        // triangles: byte for byte, without the corner attributes.
+        let a = draw(&entry("wireframe"), 64).unwrap();
+        let b = draw(&entry("wireframe-geom"), 64).unwrap();
+        assert_eq!(a, b);
+        // And it is a wireframe: dark line pixels on a lit fill.
+        let dark = a
+            .pixels
+            .iter()
+            .filter(|p| p[..3].iter().all(|c| *c < 40))
+            .count();
+        assert!(dark > 64 * 64 / 20, "{dark} line pixels");
+    }
+
+    #[test]
+    fn the_normals_view_draws_lines_over_the_lit_mesh() {
+        let count = |img: &Image| {
+            let yellow = |p: &&[u8; 4]| p[0] > 200 && p[1] > 180 && p[2] < 90;
+            let red = |p: &&[u8; 4]| p[0] > 150 && p[1] < 60 && p[2] < 60;
+            let y = img.pixels.iter().filter(yellow).count();
+            (y, img.pixels.iter().filter(red).count())
+        };
+        // The lit torus alone has (almost) none of the lines' colours.
+        let (y0, r0) = count(&draw(&entry("materials"), 64).unwrap());
+        let normals = draw(&entry("normals"), 64).unwrap();
+        let (y, r) = count(&normals);
+        assert!(
+            y > y0 + 16 && r > r0 + 16,
+            "yellow {y0} -> {y}, red {r0} -> {r}"
+        );
+        // Lines, not a filled picture: most pixels are not theirs.
+        assert!(y + r < 64 * 64 / 3, "yellow {y}, red {r}");
     }
 
     #[test]

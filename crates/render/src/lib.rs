@@ -10,7 +10,9 @@
 //! `fogging[4]`, `light_enabled[8]`, `right_vector`, `up_vector`
 //! uniforms, and `viewport`, from which the impostors cast each pixel's ray
 //! through `gl_FragCoord`) on a [`gl::Context`], draws every atom as one GL_QUADS quad
-//! from client vertex arrays, reads the pixels back, box-filters
+//! from client vertex arrays (or, with [`Atoms::Points`], as one point
+//! that a geometry shader, `shaders/sphere.geom`, expands to the same
+//! quad), reads the pixels back, box-filters
 //! supersampled renders down and writes PNG ([`image`]). Ball-and-stick
 //! ([`Style::BallAndStick`]) draws smaller atoms and every bond as two
 //! cylinder impostors (`shaders/cylinder.*`), which write their true depth
@@ -31,6 +33,14 @@
 //! - [`render`] never panics; bad sizes, shader or GL failures are
 //!   [`RenderError`]s. Output is deterministic (same bytes on every
 //!   machine): the pipeline is, and the camera uses `glsl::math`.
+//! - [`Atoms::Points`] draws the same image as [`Atoms::Quads`] for every
+//!   effect and style, byte for byte (`tests/points.rs`): sphere-point.vert
+//!   and sphere.geom compute each corner with sphere.vert's (and
+//!   x.vert's) operations, the strip's two triangles cover exactly the
+//!   quad's pixels, and the fragment stages read only the pixel's
+//!   `gl_FragCoord`, the quad's plane and varyings that are the same at
+//!   all four corners (the per-atom ones; `point` and `view_direction`
+//!   are unread), which come out of either triangle as out of the quad.
 //! - Spheres intersect correctly: the fragment shader writes the depth of
 //!   the sphere surface, and the depth test (GL_LESS) is on.
 //! - Lights are directional, defined in eye space (they do not turn with
@@ -141,16 +151,57 @@ impl Effect {
         Effect::ALL.into_iter().find(|e| e.name() == name)
     }
 
-    /// The library program that draws the atoms.
+    /// The library program that draws the atoms as quads.
     pub fn program(self) -> &'static library::Program {
-        let name = match self {
-            Effect::Plain => "sphere",
-            Effect::Outline => "outline",
-            Effect::X => "x",
-            Effect::XRed => "x-red",
-            Effect::Transparent => "transparent",
+        self.program_for(Atoms::Quads)
+    }
+
+    /// The library program that draws the atoms as `atoms`.
+    pub fn program_for(self, atoms: Atoms) -> &'static library::Program {
+        let name = match (self, atoms) {
+            (Effect::Plain, Atoms::Quads) => "sphere",
+            (Effect::Outline, Atoms::Quads) => "outline",
+            (Effect::X, Atoms::Quads) => "x",
+            (Effect::XRed, Atoms::Quads) => "x-red",
+            (Effect::Transparent, Atoms::Quads) => "transparent",
+            (Effect::Plain, Atoms::Points) => "sphere-points",
+            (Effect::Outline, Atoms::Points) => "outline-points",
+            (Effect::X, Atoms::Points) => "x-points",
+            (Effect::XRed, Atoms::Points) => "x-red-points",
+            (Effect::Transparent, Atoms::Points) => "transparent-points",
         };
         library::program(name).unwrap_or(&library::SPHERE)
+    }
+}
+
+/// What each atom is sent to GL as.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Atoms {
+    /// One GL_QUADS quad of four vertices at the centre, the corner in
+    /// gl_MultiTexCoord0 (`sphere.vert`, `x.vert`): runs on any GL 2.0.
+    #[default]
+    Quads,
+    /// One GL_POINTS vertex at the centre, radius in gl_MultiTexCoord0.x,
+    /// expanded to the quad by `sphere.geom` (GL_EXT_geometry_shader4): a
+    /// quarter of the vertices, a fifth of the vertex data.
+    Points,
+}
+
+impl Atoms {
+    /// Both, in the order of the CLI's list.
+    pub const ALL: [Atoms; 2] = [Atoms::Quads, Atoms::Points];
+
+    /// The name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Atoms::Quads => "quads",
+            Atoms::Points => "points",
+        }
+    }
+
+    /// The value called `name` (as [`Atoms::name`] spells it).
+    pub fn from_name(name: &str) -> Option<Atoms> {
+        Atoms::ALL.into_iter().find(|a| a.name() == name)
     }
 }
 
@@ -229,6 +280,8 @@ pub struct RenderOptions {
     /// Which of the seed's effects draws the atoms.
     pub effect: Effect,
     pub style: Style,
+    /// Quads, or points expanded by a geometry shader.
+    pub atoms: Atoms,
 }
 
 impl RenderOptions {
@@ -259,11 +312,12 @@ impl RenderOptions {
             }
         };
         format!(
-            "--size {}x{} --style {} --effect {} --fog {fog} --projection {projection} --lights {lights} --rotate {x},{y},{z} --supersample {} --background {background}",
+            "--size {}x{} --style {} --effect {} --atoms {} --fog {fog} --projection {projection} --lights {lights} --rotate {x},{y},{z} --supersample {} --background {background}",
             self.width,
             self.height,
             self.style.name(),
             self.effect.name(),
+            self.atoms.name(),
             self.supersample
         )
     }
@@ -282,6 +336,7 @@ impl Default for RenderOptions {
             background: Background::default(),
             effect: Effect::Plain,
             style: Style::Spacefill,
+            atoms: Atoms::Quads,
         }
     }
 }
@@ -457,7 +512,7 @@ pub fn render_scene(
     check(&mut rec.ctx, "setting fog, depth and clearing")?;
 
     // Atoms: the effect's sphere program.
-    let program = opts.effect.program();
+    let program = opts.effect.program_for(opts.atoms);
     rec.program(program).map_err(RenderError::Shader)?;
     rec.uniform("right_vector", &right);
     rec.uniform("up_vector", &up);
@@ -481,26 +536,39 @@ pub fn render_scene(
     }
     check(&mut rec.ctx, "setting the shader uniforms")?;
 
-    // One quad per atom: four vertices at the centre, corners in
+    // Quads: one quad per atom, four vertices at the centre, corners in
     // gl_MultiTexCoord0 = (right, up, radius), colour in gl_Color.
+    // Points: one vertex at the centre, gl_MultiTexCoord0 = radius.
     let n = structure.atoms.len();
-    let mut pos = Vec::with_capacity(n * 12);
-    let mut tex = Vec::with_capacity(n * 12);
-    let mut col = Vec::with_capacity(n * 16);
+    let (mode, corners): (u32, &[(f32, f32)]) = match opts.atoms {
+        Atoms::Quads => (
+            GL_QUADS,
+            &[(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)],
+        ),
+        Atoms::Points => (GL_POINTS, &[(0.0, 0.0)]),
+    };
+    let tex_size = if opts.atoms == Atoms::Quads { 3 } else { 1 };
+    let k = corners.len();
+    let mut pos = Vec::with_capacity(n * k * 3);
+    let mut tex = Vec::with_capacity(n * k * tex_size);
+    let mut col = Vec::with_capacity(n * k * 4);
     for a in &structure.atoms {
         let r = radius_of(a);
         let [cr, cg, cb] = a.element.color();
-        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+        for &(x, y) in corners {
             pos.extend_from_slice(&a.position);
-            tex.extend_from_slice(&[x, y, r]);
+            match opts.atoms {
+                Atoms::Quads => tex.extend_from_slice(&[x, y, r]),
+                Atoms::Points => tex.push(r),
+            }
             col.extend_from_slice(&[cr, cg, cb, 1.0]);
         }
     }
     rec.draw(
-        GL_QUADS,
-        n.saturating_mul(4),
+        mode,
+        n.saturating_mul(k),
         (3, pos),
-        Some((3, tex)),
+        Some((tex_size as i32, tex)),
         None,
         Some((4, col)),
     );
@@ -583,10 +651,29 @@ mod tests {
     #[test]
     fn shaders_build() {
         for effect in Effect::ALL {
-            let mut ctx = Context::new(4, 4);
-            let built = library::build(&mut ctx, effect.program());
-            assert!(built.is_ok(), "{effect:?}: {built:?}");
+            for atoms in Atoms::ALL {
+                let mut ctx = Context::new(4, 4);
+                let built = library::build(&mut ctx, effect.program_for(atoms));
+                assert!(built.is_ok(), "{effect:?} {atoms:?}: {built:?}");
+            }
         }
+    }
+
+    #[test]
+    fn each_effect_and_atoms_has_its_own_program() {
+        let mut seen = Vec::new();
+        for effect in Effect::ALL {
+            for atoms in Atoms::ALL {
+                let p = effect.program_for(atoms);
+                assert_eq!(p.geometry.is_some(), atoms == Atoms::Points);
+                assert!(!seen.contains(&p.name), "{}", p.name);
+                seen.push(p.name);
+            }
+        }
+        for atoms in Atoms::ALL {
+            assert_eq!(Atoms::from_name(atoms.name()), Some(atoms));
+        }
+        assert_eq!(Atoms::from_name("lines"), None);
     }
 
     #[test]

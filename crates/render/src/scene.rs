@@ -7,7 +7,11 @@
 //! context and is appended to the scene, so the scene is by construction
 //! what shaderbox drew. Uniforms are recorded by name (locations are the
 //! implementation's), programs by their shader sources, vertex arrays by
-//! their contents. Enum values are GL's numbers.
+//! their contents. Enum values are GL's numbers. A program's geometry
+//! stage (GL_EXT_geometry_shader4: `--atoms points`) is recorded with its
+//! program parameters; scenes written before geometry stages existed
+//! have neither field and load as programs without one. Mesa cannot
+//! replay such a program (it never had the extension form).
 
 use gl::enums::*;
 use gl::{ArrayData, Context, Param};
@@ -41,6 +45,14 @@ pub enum Call {
     Program {
         id: usize,
         vertex: Vec<String>,
+        /// Geometry shader objects (empty: no geometry stage).
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        geometry: Vec<String>,
+        /// glProgramParameteriEXT `(pname, value)` pairs set before the
+        /// link, in order (the geometry stage's primitive types and
+        /// output vertex count).
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        parameters: Vec<(u32, i32)>,
         fragment: Vec<String>,
     },
     UseProgram(usize),
@@ -150,10 +162,17 @@ impl Recorder {
         self.ctx.use_program(gl_name);
         let id = self.programs.len();
         self.programs.push(gl_name);
+        let sources = |files: &[crate::library::ShaderFile]| -> Vec<String> {
+            files.iter().map(|f| f.source.to_string()).collect()
+        };
         self.calls.push(Call::Program {
             id,
-            vertex: p.vertex.iter().map(|f| f.source.to_string()).collect(),
-            fragment: p.fragment.iter().map(|f| f.source.to_string()).collect(),
+            vertex: sources(p.vertex),
+            geometry: p.geometry.map_or_else(Vec::new, |g| sources(g.files)),
+            parameters: p
+                .geometry
+                .map_or_else(Vec::new, |g| g.parameters().to_vec()),
+            fragment: sources(p.fragment),
         });
         Ok(id)
     }
@@ -237,17 +256,17 @@ impl Call {
             Call::Program {
                 id,
                 vertex,
+                geometry,
+                parameters,
                 fragment,
             } => {
                 let mut objects = Vec::new();
-                for (kind, sources) in [(GL_VERTEX_SHADER, vertex), (GL_FRAGMENT_SHADER, fragment)]
-                {
+                for (kind, stage, sources) in [
+                    (GL_VERTEX_SHADER, "vertex", vertex),
+                    (GL_GEOMETRY_SHADER_EXT, "geometry", geometry),
+                    (GL_FRAGMENT_SHADER, "fragment", fragment),
+                ] {
                     for (i, src) in sources.iter().enumerate() {
-                        let stage = if kind == GL_VERTEX_SHADER {
-                            "vertex"
-                        } else {
-                            "fragment"
-                        };
                         objects.push((
                             kind,
                             format!("program {id}, {stage} shader {}", i + 1),
@@ -255,7 +274,12 @@ impl Call {
                         ));
                     }
                 }
-                let name = crate::library::build_objects(ctx, &format!("program {id}"), &objects)?;
+                let name = crate::library::build_objects(
+                    ctx,
+                    &format!("program {id}"),
+                    &objects,
+                    parameters,
+                )?;
                 ctx.use_program(name);
                 programs.push(name);
             }

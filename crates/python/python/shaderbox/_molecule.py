@@ -72,6 +72,7 @@ def render_molecule(
     background: Any = "black",
     effect: str = "plain",
     style: str = "spacefill",
+    atoms: str = "quads",
 ) -> Image:
     """Draws a molecule as ``shaderbox render`` does and returns the :class:`Image`.
 
@@ -83,7 +84,9 @@ def render_molecule(
     ``supersample`` (1-8), ``background`` (``"black"``, ``"white"``,
     ``"gray"``, ``"#RRGGBB"``, an RGB tuple in 0-1, or ``"transparent"``)
     ``effect`` (``"plain"``, ``"outline"``, ``"x"``, ``"x-red"``,
-    ``"transparent"``) and ``style`` (``"spacefill"``, ``"ballstick"``).
+    ``"transparent"``), ``style`` (``"spacefill"``, ``"ballstick"``) and
+    ``atoms`` (``"quads"``, or ``"points"``: one point per atom expanded to
+    its quad by a geometry shader; the same image).
     (The command's ``--frames`` turntable is a loop over ``rotate``.) Bad options raise ``ValueError``, an unreadable
     file ``OSError``, a malformed one ``RuntimeError`` naming the line."""
     w, h = _size(size)
@@ -94,6 +97,6 @@ def render_molecule(
         raise TypeError(f"supersample must be an int 1-8, got {supersample!r}")
     p = None if path is None else os.fspath(path)
     width, height, data, has_alpha = _shaderbox.render_molecule(
-        p, w, h, projection, fog, _lights(lights), [float(v) for v in rot], int(supersample), _background(background), effect, style
+        p, w, h, projection, fog, _lights(lights), [float(v) for v in rot], int(supersample), _background(background), effect, style, atoms
     )
     return Image(np.frombuffer(data, dtype=np.uint8).reshape(height, width, 4), has_alpha=has_alpha)

@@ -36,6 +36,7 @@ def render_molecule(
     background: Optional[Sequence[float]],
     effect: str,
     style: str,
+    atoms: str = "quads",
 ) -> Tuple[int, int, bytes, bool]: ...
 
 class RawContext:
