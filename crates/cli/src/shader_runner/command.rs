@@ -16,8 +16,8 @@
 //! feedback, atomic counters, subroutines, framebuffer objects, ...) parse to
 //! [`Command::NeedsLaterGl`]: running one makes the test a skip.
 
-use super::glenum::*;
 use super::scan::{self, Scanned};
+use gl::enums::*;
 
 mod texture;
 use texture::{parse_texparameter, parse_texture};
@@ -481,23 +481,23 @@ fn parse_command(line: &str) -> Result<Command, CommandError> {
     if let Some(rest) = lit(line, "polygon mode ") {
         let words: Vec<&str> = rest.split_whitespace().collect();
         let face = match words.first().copied() {
-            Some("GL_FRONT") => gl::enums::GL_FRONT,
-            Some("GL_BACK") => gl::enums::GL_BACK,
-            Some("GL_FRONT_AND_BACK") => gl::enums::GL_FRONT_AND_BACK,
+            Some("GL_FRONT") => GL_FRONT,
+            Some("GL_BACK") => GL_BACK,
+            Some("GL_FRONT_AND_BACK") => GL_FRONT_AND_BACK,
             _ => return Err(bad("polygon mode: expected FACE MODE", line)),
         };
         let mode = match words.get(1).copied() {
-            Some("GL_POINT") => gl::enums::GL_POINT,
-            Some("GL_LINE") => gl::enums::GL_LINE,
-            Some("GL_FILL") => gl::enums::GL_FILL,
+            Some("GL_POINT") => GL_POINT,
+            Some("GL_LINE") => GL_LINE,
+            Some("GL_FILL") => GL_FILL,
             _ => return Err(bad("polygon mode: expected FACE MODE", line)),
         };
         return Ok(C::PolygonMode { face, mode });
     }
     if let Some(rest) = lit(line, "provoking vertex ") {
         return Ok(C::ProvokingVertex(match rest.trim() {
-            "first" => gl::enums::GL_FIRST_VERTEX_CONVENTION,
-            "last" => gl::enums::GL_LAST_VERTEX_CONVENTION,
+            "first" => GL_FIRST_VERTEX_CONVENTION,
+            "last" => GL_LAST_VERTEX_CONVENTION,
             _ => return Err(bad("provoking vertex: expected first or last", line)),
         }));
     }
@@ -754,10 +754,10 @@ pub(super) fn draw_mode(name: &str) -> Result<u32, CommandError> {
         "GL_QUADS" => GL_QUADS,
         "GL_QUAD_STRIP" => GL_QUAD_STRIP,
         "GL_POLYGON" => GL_POLYGON,
-        "GL_LINES_ADJACENCY" => gl::enums::GL_LINES_ADJACENCY,
-        "GL_LINE_STRIP_ADJACENCY" => gl::enums::GL_LINE_STRIP_ADJACENCY,
-        "GL_TRIANGLES_ADJACENCY" => gl::enums::GL_TRIANGLES_ADJACENCY,
-        "GL_TRIANGLE_STRIP_ADJACENCY" => gl::enums::GL_TRIANGLE_STRIP_ADJACENCY,
+        "GL_LINES_ADJACENCY" => GL_LINES_ADJACENCY,
+        "GL_LINE_STRIP_ADJACENCY" => GL_LINE_STRIP_ADJACENCY,
+        "GL_TRIANGLES_ADJACENCY" => GL_TRIANGLES_ADJACENCY,
+        "GL_TRIANGLE_STRIP_ADJACENCY" => GL_TRIANGLE_STRIP_ADJACENCY,
         _ => return Err(CommandError(format!("unknown drawing mode \"{name}\""))),
     })
 }

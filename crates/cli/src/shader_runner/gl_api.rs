@@ -1,12 +1,8 @@
-//! The GL entry points the runner calls, as a trait so that the runner
-//! compiles before `gl::Context` exists.
-//!
-//! TEMPORARY ADAPTER: every method mirrors one GL 2.1 entry point under the
-//! project's naming rule (`glFooBar4fv` -> `foo_bar_4fv`). When
-//! `gl::Context` lands, `impl GlApi for gl::Context` forwards each method
-//! (see `gl_context.rs`), and later the runner takes `gl::Context` directly
-//! and this trait goes away. It is not a GL implementation: there is none
-//! in this crate.
+//! The GL entry points the runner calls, as a trait: the whole surface
+//! of GL a `.shader_test` script can reach, one method per entry point
+//! under the project's naming rule (`glFooBar4fv` -> `foo_bar_4fv`),
+//! implemented for `gl::Context` by forwarding (`gl_context.rs`). It is
+//! not a GL implementation: there is none in this crate.
 //!
 //! Client-side arrays are passed as slices of floats (`stride` in bytes, 0
 //! for tightly packed), pixel data of type `GL_FLOAT` likewise.

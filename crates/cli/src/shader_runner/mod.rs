@@ -30,7 +30,6 @@
 
 pub mod command;
 mod gl_api;
-mod glenum;
 mod images;
 pub mod png;
 pub mod probe;
@@ -189,8 +188,8 @@ pub fn execute_on<G: gl_api::GlApi>(
             0,
             w,
             h,
-            glenum::GL_RGBA,
-            glenum::GL_UNSIGNED_BYTE,
+            gl::enums::GL_RGBA,
+            gl::enums::GL_UNSIGNED_BYTE,
             &mut pixels,
         );
         let png = png::encode_rgba8_bottom_up(w as u32, h as u32, &pixels);

@@ -15,17 +15,10 @@
 
 use super::command::{self, Command, LightValues, TexParamValue, UniformType, UniformValues};
 use super::gl_api::GlApi;
-use super::glenum::*;
 use super::probe::{self, ProbeMode};
 use super::script::{Cmp, Requirement, Script, Stage, VersionReq};
+use gl::enums::*;
 mod textures;
-
-use gl::enums::{
-    GL_ACTIVE_UNIFORMS, GL_ACTIVE_UNIFORM_BLOCKS, GL_GEOMETRY_SHADER, GL_STATIC_DRAW,
-    GL_UNIFORM_ARRAY_STRIDE, GL_UNIFORM_BLOCK_DATA_SIZE, GL_UNIFORM_BLOCK_INDEX, GL_UNIFORM_BUFFER,
-    GL_UNIFORM_IS_ROW_MAJOR, GL_UNIFORM_MATRIX_STRIDE, GL_UNIFORM_NAME_LENGTH, GL_UNIFORM_OFFSET,
-    GL_UNIFORM_SIZE, GL_UNIFORM_TYPE,
-};
 
 /// piglit's verdicts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -152,9 +145,6 @@ struct Stop(Verdict);
 /// A `[geometry layout]` line as glProgramParameteriEXT's (pname,
 /// value).
 fn geometry_parameter(text: &str) -> Option<(u32, i32)> {
-    use gl::enums::{
-        GL_GEOMETRY_INPUT_TYPE_EXT, GL_GEOMETRY_OUTPUT_TYPE_EXT, GL_GEOMETRY_VERTICES_OUT_EXT,
-    };
     let mode = |name: &str| {
         super::command::draw_mode(name.trim())
             .ok()
@@ -322,7 +312,7 @@ impl<'a, G: GlApi> Runner<'a, G> {
             "GL_MAX_TEXTURE_SIZE" => GL_MAX_TEXTURE_SIZE,
             // GL 3.2's (piglit queries it from 3.2 on).
             "GL_MAX_VERTEX_OUTPUT_COMPONENTS" if gl_version >= 32 => {
-                gl::enums::GL_MAX_VERTEX_OUTPUT_COMPONENTS
+                GL_MAX_VERTEX_OUTPUT_COMPONENTS
             }
             // Not queried below OpenGL 3.2 / without program binaries.
             "GL_MAX_VERTEX_OUTPUT_COMPONENTS" | "GL_NUM_PROGRAM_BINARY_FORMATS" => return Some(0),

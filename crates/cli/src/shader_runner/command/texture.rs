@@ -2,9 +2,9 @@
 //! asks for (piglit's generated patterns, sizes, formats, array layers)
 //! and which sampler state.
 
-use super::super::glenum::*;
 use super::super::scan;
 use super::{bad, floats, lit, scanned_f32, scanned_i32, sscanf_all, Command, CommandError};
+use gl::enums::*;
 
 /// The `texture ...` commands.
 #[derive(Clone, Debug, PartialEq)]

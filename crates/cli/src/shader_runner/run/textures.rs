@@ -5,9 +5,9 @@
 
 use super::super::command::TextureCommand;
 use super::super::gl_api::GlApi;
-use super::super::glenum::*;
 use super::super::images;
 use super::Runner;
+use gl::enums::*;
 
 impl<G: GlApi> Runner<'_, G> {
     fn new_texture(&mut self, unit: u32, target: u32) {
