@@ -93,9 +93,11 @@ pub(crate) fn vertex_and_geometry_stages(
         p.keep_geometry_input(shaded, vertex_layout.outputs);
         return emitted;
     }
+    // The vertex stage's outputs are the next draw's emitted-vertex
+    // buffer (the two trade places from draw to draw, `Spare::emitted`).
     let mut spare = workers.spare();
     spare.keep_tables([shaded.vertex_of]);
-    spare.keep(Vec::new(), shaded.outputs);
+    spare.keep_emitted(shaded.outputs);
     emitted
 }
 
@@ -209,8 +211,11 @@ pub(crate) fn run_geometry(
         let first = t * PRIMITIVES_PER_TASK;
         let last = (first + PRIMITIVES_PER_TASK).min(primitives);
         let mut batch = new_batch(iface.input_components, iface.output_components);
-        let mut outputs = Vec::new();
-        let mut list = Vec::new();
+        // Room for what small emissions (points into quads, triangles
+        // passed through) make, without growing.
+        let vertices = (PRIMITIVES_PER_TASK * emitted.max_vertices).min(1 << 12);
+        let mut outputs = Vec::with_capacity(vertices * stride);
+        let mut list = Vec::with_capacity(vertices * 3);
         let mut sources = Vec::new();
         for start in (first..last).step_by(LANES) {
             let lanes = (last - start).min(LANES);
@@ -269,21 +274,34 @@ pub(crate) fn run_geometry(
         }
         Some(r)
     });
-    let mut out = Vertices {
-        mode: out_mode,
-        vertex_of: Vec::new(),
-        outputs: Vec::new(),
-    };
     // Tasks up to the first failure all ran: the first error in order is
     // the same whatever the thread count.
-    let mut sources = Vec::new();
+    let mut parts = Vec::with_capacity(results.len());
     for r in results.into_iter().flatten() {
-        let (outputs, list, from) = r?;
-        let base = (out.outputs.len() / stride.max(1)) as u32;
-        out.vertex_of.extend(list.iter().map(|&v| base + v));
-        out.outputs.extend_from_slice(&outputs);
+        parts.push(r?);
+    }
+    // Joined into buffers sized once, kept from earlier draws (growing
+    // fresh ones by doubling cost a copy and a page fault per 4 KiB on
+    // this thread).
+    let (mut outputs, mut vertex_of) = {
+        let mut spare = workers.spare();
+        (std::mem::take(&mut spare.emitted), spare.table())
+    };
+    outputs.clear();
+    outputs.reserve(parts.iter().map(|p| p.0.len()).sum());
+    vertex_of.reserve(parts.iter().map(|p| p.1.len()).sum());
+    let mut sources = Vec::new();
+    for (part, list, from) in parts {
+        let base = (outputs.len() / stride.max(1)) as u32;
+        vertex_of.extend(list.iter().map(|&v| base + v));
+        outputs.extend_from_slice(&part);
         sources.extend(from);
     }
+    let out = Vertices {
+        mode: out_mode,
+        vertex_of,
+        outputs,
+    };
     if let Some(p) = probe {
         p.note_emitted(sources);
     }

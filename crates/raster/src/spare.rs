@@ -21,6 +21,11 @@ pub(crate) struct Spare {
     pub chunks: Vec<(Vec<Prim>, Vec<Plane>)>,
     /// Vertex outputs (kept with their values: a draw overwrites them).
     pub outputs: Vec<f32>,
+    /// A geometry stage's emitted vertices (emptied). The vertex stage of
+    /// a draw with a geometry stage takes `outputs` and leaves its buffer
+    /// here; the emitted vertices' buffer ends the draw in `outputs`: the
+    /// two trade places, so steady draws allocate neither.
+    pub emitted: Vec<f32>,
     /// The per-vertex set-up table (kept with its length: a draw of as
     /// many vertices overwrites it without clearing it first).
     pub corners: Vec<Corner>,
@@ -41,6 +46,7 @@ impl Spare {
     fn bytes(&self) -> usize {
         self.chunks.iter().map(Spare::chunk_bytes).sum::<usize>()
             + self.outputs.capacity() * 4
+            + self.emitted.capacity() * 4
             + self.corners.capacity() * std::mem::size_of::<Corner>()
             + self.tables.iter().map(|t| t.capacity() * 4).sum::<usize>()
     }
@@ -56,6 +62,14 @@ impl Spare {
     pub fn keep_corners(&mut self, corners: Vec<Corner>) {
         let mut bytes = self.bytes();
         keep_larger(&mut self.corners, corners, &mut bytes);
+    }
+
+    /// Keeps `emitted` (emptied) as the next geometry stage's buffer, as
+    /// far as the limit allows.
+    pub fn keep_emitted(&mut self, mut emitted: Vec<f32>) {
+        let mut bytes = self.bytes();
+        emitted.clear();
+        keep_larger(&mut self.emitted, emitted, &mut bytes);
     }
 
     /// Keeps the index tables (emptied) as far as the limit allows.
