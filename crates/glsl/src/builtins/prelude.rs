@@ -613,6 +613,7 @@ varying in vec4 gl_BackColorIn[];
 varying in vec4 gl_FrontSecondaryColorIn[];
 varying in vec4 gl_BackSecondaryColorIn[];
 varying in float gl_FogFragCoordIn[];
+varying in vec4 gl_TexCoordIn[][];
 vec4 gl_ClipVertex;
 varying vec4 gl_FrontColor;
 varying vec4 gl_BackColor;
@@ -624,7 +625,10 @@ varying float gl_FogFragCoord;",
         ),
         (
             Where::since(V130).gs().ext_gs(),
-            Text("float gl_ClipDistance[];"),
+            Text(
+                "float gl_ClipDistance[];
+varying in float gl_ClipDistanceIn[][];",
+            ),
         ),
     ]
 };
