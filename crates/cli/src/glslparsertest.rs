@@ -45,6 +45,7 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "GL_EXT_geometry_shader4",
     "GL_ARB_texture_rectangle",
     "GL_ARB_texture_multisample",
+    "GL_EXT_texture_array",
 ];
 
 /// Whether a test of GLSL `version` can use extension `name`: one of

@@ -127,6 +127,14 @@ builtin_fns! {
     Texture2DRectProj = "texture2DRectProj";
     Shadow2DRect = "shadow2DRect";
     Shadow2DRectProj = "shadow2DRectProj";
+    // GL_EXT_texture_array's lookups.
+    Texture1DArray = "texture1DArray";
+    Texture1DArrayLod = "texture1DArrayLod";
+    Texture2DArray = "texture2DArray";
+    Texture2DArrayLod = "texture2DArrayLod";
+    Shadow1DArray = "shadow1DArray";
+    Shadow1DArrayLod = "shadow1DArrayLod";
+    Shadow2DArray = "shadow2DArray";
     // §8.7 (1.30 and later): one name per kind of lookup, the sampler
     // type telling the target apart.
     TextureSize = "textureSize";

@@ -143,6 +143,10 @@ extensions! {
     // `sampler2DMS`, `sampler2DMSArray` (and the `i`/`u` forms) and
     // `texelFetch` with a sample number: GLSL 1.50's, offered from 1.50.
     ArbTextureMultisample = "GL_ARB_texture_multisample";
+    // The lookups of array textures under their extension names
+    // (`texture2DArray`, `shadow1DArrayLod`...) on the sampler types GLSL
+    // 1.30 has, offered from 1.30 on.
+    ExtTextureArray = "GL_EXT_texture_array";
 }
 
 impl Extension {
@@ -154,6 +158,7 @@ impl Extension {
         match self {
             Extension::ArbTextureRectangle => Version::V140,
             Extension::ArbTextureMultisample => Version::V150,
+            Extension::ExtTextureArray => Version::V130,
             _ => Version::V110,
         }
     }

@@ -38,6 +38,13 @@ pub(super) fn is_texture(f: BuiltinFn) -> bool {
             | B::Texture2DRectProj
             | B::Shadow2DRect
             | B::Shadow2DRectProj
+            | B::Texture1DArray
+            | B::Texture1DArrayLod
+            | B::Texture2DArray
+            | B::Texture2DArrayLod
+            | B::Shadow1DArray
+            | B::Shadow1DArrayLod
+            | B::Shadow2DArray
             | B::TextureSize
             | B::Texture
             | B::TextureProj
@@ -207,6 +214,9 @@ impl<'m> Lowerer<'m> {
                 | B::Shadow2DLod
                 | B::Shadow1DProjLod
                 | B::Shadow2DProjLod
+                | B::Texture1DArrayLod
+                | B::Texture2DArrayLod
+                | B::Shadow1DArrayLod
         );
         let grad = matches!(
             f,

@@ -48,7 +48,7 @@
 //! until GLSL 4.50 adds the integer and bool forms.
 
 use crate::ir::{InputPrimitive, Stage};
-use crate::lang::{Feature, Language, Version};
+use crate::lang::{Extension, Feature, Language, Version};
 use crate::limits;
 use std::fmt::Write;
 
@@ -93,6 +93,8 @@ pub(crate) struct Where {
     /// Only in GL_EXT_geometry_shader4's form of the geometry stage
     /// ([`Language::ext_geometry_shader4`]).
     ext_gs: bool,
+    /// Only with this extension enabled.
+    needs: Option<Extension>,
 }
 
 impl Where {
@@ -104,6 +106,7 @@ impl Where {
         compat_only: false,
         core_only: false,
         ext_gs: false,
+        needs: None,
     };
 
     const fn since(v: Version) -> Where {
@@ -137,6 +140,13 @@ impl Where {
     const fn ext_gs(self) -> Where {
         Where {
             ext_gs: true,
+            ..self
+        }
+    }
+
+    const fn needs(self, e: Extension) -> Where {
+        Where {
+            needs: Some(e),
             ..self
         }
     }
@@ -175,6 +185,7 @@ impl Where {
             && (!self.compat_only || lang.allows(Feature::CompatibilityInterface))
             && (!self.core_only || !lang.allows(Feature::CompatibilityInterface))
             && (!self.ext_gs || lang.ext_geometry_shader4())
+            && self.needs.is_none_or(|e| lang.has(e))
     }
 }
 
@@ -843,6 +854,36 @@ const FUNCTIONS: &[(Where, &str)] = &[
         Where::since(V140),
         "vec4 shadow2DRectProj(sampler2DRectShadow, vec4)",
     ),
+    // GL_EXT_texture_array's lookups (from GLSL 1.30, which has the
+    // sampler types and the explicit-LOD lookups in every stage).
+    (TEX_ARRAY, "vec4 texture1DArray(sampler1DArray, vec2)"),
+    (
+        TEX_ARRAY_FS,
+        "vec4 texture1DArray(sampler1DArray, vec2, float)",
+    ),
+    (
+        TEX_ARRAY,
+        "vec4 texture1DArrayLod(sampler1DArray, vec2, float)",
+    ),
+    (TEX_ARRAY, "vec4 texture2DArray(sampler2DArray, vec3)"),
+    (
+        TEX_ARRAY_FS,
+        "vec4 texture2DArray(sampler2DArray, vec3, float)",
+    ),
+    (
+        TEX_ARRAY,
+        "vec4 texture2DArrayLod(sampler2DArray, vec3, float)",
+    ),
+    (TEX_ARRAY, "vec4 shadow1DArray(sampler1DArrayShadow, vec3)"),
+    (
+        TEX_ARRAY_FS,
+        "vec4 shadow1DArray(sampler1DArrayShadow, vec3, float)",
+    ),
+    (
+        TEX_ARRAY,
+        "vec4 shadow1DArrayLod(sampler1DArrayShadow, vec3, float)",
+    ),
+    (TEX_ARRAY, "vec4 shadow2DArray(sampler2DArrayShadow, vec4)"),
     // §8.8 fragment processing functions
     (FS, "genType dFdx(genType)"),
     (FS, "genType dFdy(genType)"),
@@ -858,6 +899,13 @@ const FUNCTIONS: &[(Where, &str)] = &[
     (EXT_GS, "void EmitVertex()"),
     (EXT_GS, "void EndPrimitive()"),
 ];
+
+/// GL_EXT_texture_array's lookups; the bias forms in fragment shaders.
+const TEX_ARRAY: Where = Where::since(V130).needs(Extension::ExtTextureArray);
+const TEX_ARRAY_FS: Where = Where {
+    stages: Stages::Fragment,
+    ..TEX_ARRAY
+};
 
 /// The explicit-LOD lookups of 1.10 and 1.20: vertex shaders only (and
 /// geometry shaders, GL_EXT_geometry_shader4).
@@ -1352,8 +1400,12 @@ mod tests {
             ] {
                 let mut l = Language::new(v, true);
                 l.profile = p;
+                // And with the extension that adds lookups.
+                let mut e = l;
+                e.extensions.set(Extension::ExtTextureArray, true);
                 for s in [Stage::Vertex, Stage::Geometry, Stage::Fragment] {
                     out.push((l, s));
+                    out.push((e, s));
                 }
             }
         }

@@ -288,6 +288,10 @@ impl<'m> Preprocessor<'m> {
                 Extension::ArbTextureMultisample.name(),
                 v >= Extension::ArbTextureMultisample.since(),
             ),
+            (
+                Extension::ExtTextureArray.name(),
+                v >= Extension::ExtTextureArray.since(),
+            ),
         ] {
             if on {
                 self.macros.insert(name.into(), macros::Macro::one());

@@ -725,10 +725,12 @@ fn extension_errors() {
 #[test]
 fn texture_extensions_are_offered_from_the_version_that_has_them() {
     // GL_ARB_texture_rectangle from 1.40, GL_ARB_texture_multisample from
-    // 1.50: enabled, and their macros defined, only there.
+    // 1.50, GL_EXT_texture_array from 1.30: enabled, and their macros
+    // defined, only there.
     for (name, since) in [
         ("GL_ARB_texture_rectangle", 140),
         ("GL_ARB_texture_multisample", 150),
+        ("GL_EXT_texture_array", 130),
     ] {
         for v in [110, 120, 130, 140, 150, 330] {
             let src =
