@@ -265,10 +265,15 @@ fn evaluate(args: &Args) -> Outcome {
                 );
             }
             None if !supported(ext, version) && ext != COMPATIBILITY => {
-                return Outcome::new(
-                    Verdict::Skip,
-                    format!("Test requires extension {ext}, which shaderbox does not support"),
-                );
+                let why = match glsl::lang::Extension::from_name(ext) {
+                    Some(e) if SUPPORTED_EXTENSIONS.contains(&ext.as_str()) => format!(
+                        "Test requires extension {ext} in GLSL {}; shaderbox offers it from GLSL {} on",
+                        version.dotted(),
+                        e.since().dotted()
+                    ),
+                    _ => format!("Test requires extension {ext}, which shaderbox does not support"),
+                };
+                return Outcome::new(Verdict::Skip, why);
             }
             _ => {}
         }
