@@ -46,6 +46,7 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "GL_ARB_texture_rectangle",
     "GL_ARB_texture_multisample",
     "GL_EXT_texture_array",
+    "GL_ARB_shader_texture_lod",
 ];
 
 /// Whether a test of GLSL `version` can use extension `name`: one of

@@ -147,6 +147,9 @@ extensions! {
     // (`texture2DArray`, `shadow1DArrayLod`...) on the sampler types GLSL
     // 1.30 has, offered from 1.30 on.
     ExtTextureArray = "GL_EXT_texture_array";
+    // The explicit-LOD lookups in fragment shaders before GLSL 1.30, and
+    // the `*GradARB` lookups with explicit derivatives.
+    ArbShaderTextureLod = "GL_ARB_shader_texture_lod";
 }
 
 impl Extension {

@@ -584,3 +584,44 @@ fn texture_array_extension_lookups_are_the_glsl130_ones() {
     let want = run(&core);
     assert_eq!(run(&ext), want);
 }
+
+#[test]
+fn shader_texture_lod_gradient_lookups_are_the_glsl130_ones() {
+    // GL_ARB_shader_texture_lod's `*GradARB' lookups ask the texture unit
+    // for what textureGrad and textureProjGrad ask (the shadow ones return
+    // the comparison in every component).
+    let uniforms = "uniform sampler1D s1;
+        uniform sampler2D s2;
+        uniform sampler3D s3;
+        uniform samplerCube sc;
+        uniform sampler2DShadow h2;
+        in vec4 v;
+        out vec4 c0, c1, c2;";
+    let run = |body: &str, ext: &str| {
+        let src = format!("#version 130\n{ext}\n{uniforms}\nvoid main() {{ {body} }}");
+        let linked = link_one(Stage::Fragment, &src).unwrap_or_else(|e| panic!("{e}"));
+        let k = Kernel::new(&linked).expect("lowers");
+        let u: Vec<u32> = (0..k.interface().uniform_words)
+            .map(|w| w as u32 + 1)
+            .collect();
+        let mut b = Batch::for_kernel(&k, 0xffff);
+        fill(&mut b, 5);
+        k.run_reference(&mut b, &u, &Encoder).expect("runs");
+        bits_of(&b.outputs)
+    };
+    let ext = run(
+        "c0 = texture1DGradARB(s1, v.x, v.y, v.z) + texture1DProjGradARB(s1, v, v.y, v.w);
+         c1 = texture2DProjGradARB(s2, v.xyz, v.xy, v.zw) + texture3DGradARB(s3, v.xyz, v.yzw, v.wxy)
+            + textureCubeGradARB(sc, v.xyz, v.yzw, v.wxy);
+         c2 = vec4(shadow2DGradARB(h2, v.xyz, v.xy, v.zw).x, shadow2DProjGradARB(h2, v, v.zw, v.xy).x, 0.0, 0.0);",
+        "#extension GL_ARB_shader_texture_lod : require",
+    );
+    let core = run(
+        "c0 = textureGrad(s1, v.x, v.y, v.z) + textureProjGrad(s1, v, v.y, v.w);
+         c1 = textureProjGrad(s2, v.xyz, v.xy, v.zw) + textureGrad(s3, v.xyz, v.yzw, v.wxy)
+            + textureGrad(sc, v.xyz, v.yzw, v.wxy);
+         c2 = vec4(textureGrad(h2, v.xyz, v.xy, v.zw), textureProjGrad(h2, v, v.zw, v.xy), 0.0, 0.0);",
+        "",
+    );
+    assert_eq!(ext, core);
+}

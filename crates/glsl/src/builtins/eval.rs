@@ -205,6 +205,21 @@ fn eval(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<Vec<ConstScal
         | Texture2DRect | Texture2DRectProj | Shadow2DRect | Shadow2DRectProj | Texture1DArray
         | Texture1DArrayLod | Texture2DArray | Texture2DArrayLod | Shadow1DArray
         | Shadow1DArrayLod | Shadow2DArray => None,
+        Texture1DGradARB
+        | Texture1DProjGradARB
+        | Texture2DGradARB
+        | Texture2DProjGradARB
+        | Texture3DGradARB
+        | Texture3DProjGradARB
+        | TextureCubeGradARB
+        | Shadow1DGradARB
+        | Shadow1DProjGradARB
+        | Shadow2DGradARB
+        | Shadow2DProjGradARB
+        | Texture2DRectGradARB
+        | Texture2DRectProjGradARB
+        | Shadow2DRectGradARB
+        | Shadow2DRectProjGradARB => None,
         TextureSize
         | Texture
         | TextureProj

@@ -884,6 +884,101 @@ const FUNCTIONS: &[(Where, &str)] = &[
         "vec4 shadow1DArrayLod(sampler1DArrayShadow, vec3, float)",
     ),
     (TEX_ARRAY, "vec4 shadow2DArray(sampler2DArrayShadow, vec4)"),
+    // GL_ARB_shader_texture_lod: the explicit-LOD lookups in fragment
+    // shaders before 1.30 (the other stages have them), and the lookups
+    // with explicit derivatives in every stage (those of rectangles where
+    // the language has their samplers).
+    (LOD_FS_ARB, "vec4 texture1DLod(sampler1D, float, float)"),
+    (LOD_FS_ARB, "vec4 texture1DProjLod(sampler1D, vec2, float)"),
+    (LOD_FS_ARB, "vec4 texture1DProjLod(sampler1D, vec4, float)"),
+    (LOD_FS_ARB, "vec4 texture2DLod(sampler2D, vec2, float)"),
+    (LOD_FS_ARB, "vec4 texture2DProjLod(sampler2D, vec3, float)"),
+    (LOD_FS_ARB, "vec4 texture2DProjLod(sampler2D, vec4, float)"),
+    (LOD_FS_ARB, "vec4 texture3DLod(sampler3D, vec3, float)"),
+    (LOD_FS_ARB, "vec4 texture3DProjLod(sampler3D, vec4, float)"),
+    (LOD_FS_ARB, "vec4 textureCubeLod(samplerCube, vec3, float)"),
+    (LOD_FS_ARB, "vec4 shadow1DLod(sampler1DShadow, vec3, float)"),
+    (LOD_FS_ARB, "vec4 shadow2DLod(sampler2DShadow, vec3, float)"),
+    (
+        LOD_FS_ARB,
+        "vec4 shadow1DProjLod(sampler1DShadow, vec4, float)",
+    ),
+    (
+        LOD_FS_ARB,
+        "vec4 shadow2DProjLod(sampler2DShadow, vec4, float)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture1DGradARB(sampler1D, float, float, float)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture1DProjGradARB(sampler1D, vec2, float, float)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture1DProjGradARB(sampler1D, vec4, float, float)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture2DGradARB(sampler2D, vec2, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture2DProjGradARB(sampler2D, vec3, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture2DProjGradARB(sampler2D, vec4, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture3DGradARB(sampler3D, vec3, vec3, vec3)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture3DProjGradARB(sampler3D, vec4, vec3, vec3)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 textureCubeGradARB(samplerCube, vec3, vec3, vec3)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 shadow1DGradARB(sampler1DShadow, vec3, float, float)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 shadow1DProjGradARB(sampler1DShadow, vec4, float, float)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 shadow2DGradARB(sampler2DShadow, vec3, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 shadow2DProjGradARB(sampler2DShadow, vec4, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB_RECT,
+        "vec4 texture2DRectGradARB(sampler2DRect, vec2, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB_RECT,
+        "vec4 texture2DRectProjGradARB(sampler2DRect, vec3, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB_RECT,
+        "vec4 texture2DRectProjGradARB(sampler2DRect, vec4, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB_RECT,
+        "vec4 shadow2DRectGradARB(sampler2DRectShadow, vec3, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB_RECT,
+        "vec4 shadow2DRectProjGradARB(sampler2DRectShadow, vec4, vec2, vec2)",
+    ),
     // §8.8 fragment processing functions
     (FS, "genType dFdx(genType)"),
     (FS, "genType dFdy(genType)"),
@@ -899,6 +994,16 @@ const FUNCTIONS: &[(Where, &str)] = &[
     (EXT_GS, "void EmitVertex()"),
     (EXT_GS, "void EndPrimitive()"),
 ];
+
+/// GL_ARB_shader_texture_lod's lookups (see [`FUNCTIONS`]).
+const LOD_FS_ARB: Where = Where {
+    stages: Stages::Fragment,
+    ..Where::ALL
+}
+.until(V130)
+.needs(Extension::ArbShaderTextureLod);
+const GRAD_ARB: Where = Where::ALL.needs(Extension::ArbShaderTextureLod);
+const GRAD_ARB_RECT: Where = Where::since(V140).needs(Extension::ArbShaderTextureLod);
 
 /// GL_EXT_texture_array's lookups; the bias forms in fragment shaders.
 const TEX_ARRAY: Where = Where::since(V130).needs(Extension::ExtTextureArray);
@@ -1403,6 +1508,7 @@ mod tests {
                 // And with the extension that adds lookups.
                 let mut e = l;
                 e.extensions.set(Extension::ExtTextureArray, true);
+                e.extensions.set(Extension::ArbShaderTextureLod, true);
                 for s in [Stage::Vertex, Stage::Geometry, Stage::Fragment] {
                     out.push((l, s));
                     out.push((e, s));
