@@ -64,7 +64,12 @@
 //!   defined results when folded ([`consteval`]): shift amounts modulo 32,
 //!   `i32::MIN % -1` is 0; division and `%` by zero are not constant.
 //! - Extensions: those of [`lang::Extension`]; others are accepted by
-//!   `#extension` only with `warn`/`disable`.
+//!   `#extension` only with `warn`/`disable`. The texture extensions whose
+//!   sampler types a later version brings are offered from that version
+//!   on ([`lang::Extension::since`]: GL_EXT_texture_array from 1.30,
+//!   GL_ARB_texture_rectangle from 1.40, GL_ARB_texture_multisample from
+//!   1.50); before it, `#extension` refuses them and their macros are
+//!   not defined.
 
 pub mod ast;
 pub mod builtin_fn;
