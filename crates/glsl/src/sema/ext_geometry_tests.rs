@@ -308,7 +308,9 @@ void main() {
         ))
     };
     fails(&bad("float s = v[0][2];"), Code::IndexOutOfRange);
-    fails(&bad("float s = v[3][0];"), Code::IndexOutOfRange);
+    let g = bad("float s = v[3][0];");
+    fails(&g, Code::IndexOutOfRange);
+    assert!(g.info_log().contains("float[3][2]"), "{}", g.info_log());
     fails(&bad("float a[3] = v[0];"), Code::TypeMismatch);
     ok(&bad("float s = v[2][1];"));
 }
