@@ -43,7 +43,19 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "GL_ARB_uniform_buffer_object",
     "GL_ARB_geometry_shader4",
     "GL_EXT_geometry_shader4",
+    "GL_ARB_texture_rectangle",
+    "GL_ARB_texture_multisample",
+    "GL_EXT_texture_array",
+    "GL_ARB_shader_texture_lod",
 ];
+
+/// Whether a test of GLSL `version` can use extension `name`: one of
+/// [`SUPPORTED_EXTENSIONS`], in a version the compiler offers it in
+/// (`glsl::lang::Extension::since`).
+fn supported(name: &str, version: Version) -> bool {
+    SUPPORTED_EXTENSIONS.contains(&name)
+        && glsl::lang::Extension::from_name(name).is_none_or(|e| version >= e.since())
+}
 
 /// The extension of a context with the compatibility profile: a test
 /// requiring it runs in one.
@@ -247,17 +259,22 @@ fn evaluate(args: &Args) -> Outcome {
     }
     for ext in &args.extensions {
         match ext.strip_prefix('!') {
-            Some(absent) if SUPPORTED_EXTENSIONS.contains(&absent) => {
+            Some(absent) if supported(absent, version) => {
                 return Outcome::new(
                     Verdict::Skip,
                     format!("Test requires {absent} to be absent, and shaderbox supports it"),
                 );
             }
-            None if !SUPPORTED_EXTENSIONS.contains(&ext.as_str()) && ext != COMPATIBILITY => {
-                return Outcome::new(
-                    Verdict::Skip,
-                    format!("Test requires extension {ext}, which shaderbox does not support"),
-                );
+            None if !supported(ext, version) && ext != COMPATIBILITY => {
+                let why = match glsl::lang::Extension::from_name(ext) {
+                    Some(e) if SUPPORTED_EXTENSIONS.contains(&ext.as_str()) => format!(
+                        "Test requires extension {ext} in GLSL {}; shaderbox offers it from GLSL {} on",
+                        version.dotted(),
+                        e.since().dotted()
+                    ),
+                    _ => format!("Test requires extension {ext}, which shaderbox does not support"),
+                };
+                return Outcome::new(Verdict::Skip, why);
             }
             _ => {}
         }

@@ -377,11 +377,33 @@ fn parsertest_skips() {
         vec!["glslparsertest", &p, "pass", "3.00 es"],
         vec!["glslparsertest", &p, "pass", "1.20", "GL_ARB_gpu_shader5"],
         vec!["glslparsertest", &t, "pass", "1.50"],
+        // Offered from GLSL 1.40 only.
+        vec![
+            "glslparsertest",
+            &p,
+            "pass",
+            "1.20",
+            "GL_ARB_texture_rectangle",
+        ],
     ] {
         let o = shaderbox(&args);
         assert_eq!(piglit_result(&o), "skip", "{args:?}");
         assert_eq!(o.status.code(), Some(0), "{args:?}");
     }
+    // The texture extensions of the versions that have their built-ins.
+    let r = temp_shader(
+        "pt-skip",
+        "rect.vert",
+        "#version 140\n#extension GL_ARB_texture_rectangle : require\nuniform sampler2DRect s;\nvoid main() { gl_Position = texture2DRect(s, vec2(0.0)); }\n",
+    );
+    let o = shaderbox(&[
+        "glslparsertest",
+        &r,
+        "pass",
+        "1.40",
+        "GL_ARB_texture_rectangle",
+    ]);
+    assert_eq!(piglit_result(&o), "pass", "{}", stdout(&o));
 }
 
 #[test]

@@ -86,7 +86,10 @@ impl Interface {
     /// element per vertex of the input primitive): the members of
     /// `gl_in[]` by member name, each element of a user array (of structs
     /// too) by the array's name (GL_EXT_geometry_shader4's built-in arrays
-    /// by the output they take: `gl_PositionIn` is `gl_Position`...), each
+    /// by the output they take: `gl_PositionIn` is `gl_Position`...; its
+    /// two-dimensional inputs are arrays of a one-member struct laid out
+    /// as the output's array, so `gl_TexCoordIn[i]` takes vertex i's
+    /// `gl_TexCoord`, at most as many components as either has), each
     /// member of an arrayed input block (slots named `Block[i].member`)
     /// as `Block.member`. Inputs that are not arrays (`gl_PrimitiveIDIn`)
     /// are not listed.

@@ -215,6 +215,11 @@ pub struct InitDeclaratorList {
 pub struct InitDeclarator {
     pub name: Ident,
     pub array: Option<ArraySpec>,
+    /// The second size of GL_EXT_geometry_shader4's two-dimensional
+    /// geometry inputs (`varying in float v[][4]`: one `float[4]` per
+    /// input vertex); the parser keeps it only where that extension is
+    /// enabled, and the analyzer accepts it only on such inputs.
+    pub inner: Option<ArraySpec>,
     pub init: Option<Expr>,
     pub span: Span,
 }

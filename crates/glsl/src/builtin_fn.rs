@@ -127,6 +127,30 @@ builtin_fns! {
     Texture2DRectProj = "texture2DRectProj";
     Shadow2DRect = "shadow2DRect";
     Shadow2DRectProj = "shadow2DRectProj";
+    // GL_EXT_texture_array's lookups.
+    Texture1DArray = "texture1DArray";
+    Texture1DArrayLod = "texture1DArrayLod";
+    Texture2DArray = "texture2DArray";
+    Texture2DArrayLod = "texture2DArrayLod";
+    Shadow1DArray = "shadow1DArray";
+    Shadow1DArrayLod = "shadow1DArrayLod";
+    Shadow2DArray = "shadow2DArray";
+    // GL_ARB_shader_texture_lod's lookups with explicit derivatives.
+    Texture1DGradARB = "texture1DGradARB";
+    Texture1DProjGradARB = "texture1DProjGradARB";
+    Texture2DGradARB = "texture2DGradARB";
+    Texture2DProjGradARB = "texture2DProjGradARB";
+    Texture3DGradARB = "texture3DGradARB";
+    Texture3DProjGradARB = "texture3DProjGradARB";
+    TextureCubeGradARB = "textureCubeGradARB";
+    Shadow1DGradARB = "shadow1DGradARB";
+    Shadow1DProjGradARB = "shadow1DProjGradARB";
+    Shadow2DGradARB = "shadow2DGradARB";
+    Shadow2DProjGradARB = "shadow2DProjGradARB";
+    Texture2DRectGradARB = "texture2DRectGradARB";
+    Texture2DRectProjGradARB = "texture2DRectProjGradARB";
+    Shadow2DRectGradARB = "shadow2DRectGradARB";
+    Shadow2DRectProjGradARB = "shadow2DRectProjGradARB";
     // §8.7 (1.30 and later): one name per kind of lookup, the sampler
     // type telling the target apart.
     TextureSize = "textureSize";

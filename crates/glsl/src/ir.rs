@@ -805,8 +805,30 @@ impl Module {
             .map(|i| FunctionId(i as u32))
     }
 
-    /// Spells a type using this module's struct names.
+    /// Spells a type using this module's struct names; an array of a
+    /// two-dimensional geometry input's per-vertex struct as the
+    /// two-dimensional array it stands for (`float[3][4]`: 3 vertices of
+    /// `float[4]`).
     pub fn type_name(&self, ty: Type) -> String {
+        if let (crate::types::Base::Struct(id), Some(outer)) = (ty.base, ty.array) {
+            let row = self
+                .structs
+                .get(id.0 as usize)
+                .filter(|s| s.per_vertex)
+                .and_then(|s| s.members.first())
+                .map(|m| m.ty);
+            if let Some(row) = row {
+                let outer = match outer {
+                    crate::types::ArraySize::Sized(n) => n.to_string(),
+                    crate::types::ArraySize::Unsized => String::new(),
+                };
+                let inner = match row.array {
+                    Some(crate::types::ArraySize::Sized(n)) => n.to_string(),
+                    _ => String::new(),
+                };
+                return format!("{}[{outer}][{inner}]", self.type_name(row.element()));
+            }
+        }
         let names = |id: crate::types::StructId| {
             self.structs
                 .get(id.0 as usize)

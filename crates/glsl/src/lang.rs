@@ -136,6 +136,35 @@ extensions! {
     // `gl_VerticesIn`...), the two names of one extension.
     ExtGeometryShader4 = "GL_EXT_geometry_shader4";
     ArbGeometryShader4 = "GL_ARB_geometry_shader4";
+    // `sampler2DRect`, `sampler2DRectShadow` and their lookups
+    // (`texture2DRect`...): GLSL 1.40 has them, so the extension is
+    // offered from 1.40 on ([`Extension::since`]).
+    ArbTextureRectangle = "GL_ARB_texture_rectangle";
+    // `sampler2DMS`, `sampler2DMSArray` (and the `i`/`u` forms) and
+    // `texelFetch` with a sample number: GLSL 1.50's, offered from 1.50.
+    ArbTextureMultisample = "GL_ARB_texture_multisample";
+    // The lookups of array textures under their extension names
+    // (`texture2DArray`, `shadow1DArrayLod`...) on the sampler types GLSL
+    // 1.30 has, offered from 1.30 on.
+    ExtTextureArray = "GL_EXT_texture_array";
+    // The explicit-LOD lookups in fragment shaders before GLSL 1.30, and
+    // the `*GradARB` lookups with explicit derivatives.
+    ArbShaderTextureLod = "GL_ARB_shader_texture_lod";
+}
+
+impl Extension {
+    /// The first GLSL version whose shaders may enable the extension:
+    /// the ones whose built-ins shaderbox has only where the language has
+    /// them in core are offered from that version on (no `#extension`
+    /// and no macro before it).
+    pub fn since(self) -> Version {
+        match self {
+            Extension::ArbTextureRectangle => Version::V140,
+            Extension::ArbTextureMultisample => Version::V150,
+            Extension::ExtTextureArray => Version::V130,
+            _ => Version::V110,
+        }
+    }
 }
 
 /// A set of [`Extension`]s.

@@ -54,15 +54,22 @@
 //!   constant indices are judged then; the linked stage carries the
 //!   parameters in [`ir::Module::geometry`] as a 1.50 shader's layouts.
 //!   Compiled alone ([`CompileOptions::geometry_input`] `None`), such a
-//!   shader is accepted when valid for some input primitive. Not
-//!   implemented: its two-dimensional inputs (`varying in float v[][4]`,
-//!   `gl_TexCoordIn[][]`, `gl_ClipDistanceIn[][]`), refused with an error
-//!   that says so.
+//!   shader is accepted when valid for some input primitive; a constant
+//!   index past every primitive's vertex count is a warning then and the
+//!   link's error (the extension's §4.3.6). Its two-dimensional inputs
+//!   (`varying in float v[][4]`, `gl_TexCoordIn[][]`,
+//!   `gl_ClipDistanceIn[][]`) are arrays of a per-vertex struct holding
+//!   the vertex output's array (`sema::geometry`).
 //! - Integer operations the spec leaves undefined have the executor's
 //!   defined results when folded ([`consteval`]): shift amounts modulo 32,
 //!   `i32::MIN % -1` is 0; division and `%` by zero are not constant.
 //! - Extensions: those of [`lang::Extension`]; others are accepted by
-//!   `#extension` only with `warn`/`disable`.
+//!   `#extension` only with `warn`/`disable`. The texture extensions whose
+//!   sampler types a later version brings are offered from that version
+//!   on ([`lang::Extension::since`]: GL_EXT_texture_array from 1.30,
+//!   GL_ARB_texture_rectangle from 1.40, GL_ARB_texture_multisample from
+//!   1.50); before it, `#extension` refuses them and their macros are
+//!   not defined.
 
 pub mod ast;
 pub mod builtin_fn;
@@ -183,13 +190,14 @@ pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
         let (tu, parse_diags) = parse::parse(&pp_out.tokens, language);
         let parse_failed = parse_diags.iter().any(Diagnostic::is_error);
         diagnostics.extend(parse_diags);
-        let analyze = |input: Option<ir::InputPrimitive>| {
+        let analyze = |input: Option<ir::InputPrimitive>, defer_input_index: bool| {
             let ctx = sema::Context {
                 language,
                 stage: opts.stage,
                 extensions: pp_out.extensions.clone(),
                 invariant_all: pp_out.invariant_all,
                 geometry_input: input,
+                defer_input_index,
             };
             let (m, mut diags) = sema::analyze(&tu, &ctx);
             let mut ok = !parse_failed && !diags.iter().any(Diagnostic::is_error);
@@ -203,7 +211,7 @@ pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
         let (m, sema_diags) = if ext_gs && opts.geometry_input.is_none() {
             ext_geometry_trials(analyze, parse_failed)
         } else {
-            analyze(opts.geometry_input)
+            analyze(opts.geometry_input, false)
         };
         diagnostics.extend(sema_diags);
         module = m;
@@ -242,11 +250,11 @@ pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
 /// the primitive that succeeded but declares no layout: the linker
 /// compiles the object again with the program's primitive.
 fn ext_geometry_trials(
-    analyze: impl Fn(Option<ir::InputPrimitive>) -> (Option<ir::Module>, Vec<Diagnostic>),
+    analyze: impl Fn(Option<ir::InputPrimitive>, bool) -> (Option<ir::Module>, Vec<Diagnostic>),
     parse_failed: bool,
 ) -> (Option<ir::Module>, Vec<Diagnostic>) {
     use ir::InputPrimitive as P;
-    let (first, mut diags) = analyze(Some(P::Triangles));
+    let (first, mut diags) = analyze(Some(P::Triangles), false);
     if let Some(mut m) = first {
         m.geometry = ir::GeometryLayout::default();
         return (Some(m), diags);
@@ -260,10 +268,17 @@ fn ext_geometry_trials(
         P::LinesAdjacency,
         P::TrianglesAdjacency,
     ] {
-        if let (Some(mut m), d) = analyze(Some(p)) {
+        if let (Some(mut m), d) = analyze(Some(p), false) {
             m.geometry = ir::GeometryLayout::default();
             return (Some(m), d);
         }
+    }
+    // A constant index past every primitive's vertices is a link error
+    // (GL_EXT_geometry_shader4 §4.3.6): valid if nothing else fails with
+    // the largest primitive.
+    if let (Some(mut m), d) = analyze(Some(P::TrianglesAdjacency), true) {
+        m.geometry = ir::GeometryLayout::default();
+        return (Some(m), d);
     }
     // Errors that depend on the input primitive say which one was assumed.
     for d in diags

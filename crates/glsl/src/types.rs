@@ -351,6 +351,16 @@ pub struct StructDef {
     pub members: Vec<StructMember>,
     /// Declared by the implementation (`gl_LightSourceParameters`...).
     pub builtin: bool,
+    /// The per-vertex element of a GL_EXT_geometry_shader4 two-dimensional
+    /// geometry input (`varying in float v[][4]` is an array of these, one
+    /// per input vertex): one member named after the vertex output it
+    /// takes (`v`, or `gl_TexCoord` for `gl_TexCoordIn[][]`), whose type
+    /// is the output's array type. Indexing the outer array yields that
+    /// member (the analyzer writes `v[i]` as `v[i].v`), so the struct
+    /// never appears as a value; its layout is the member's, so the
+    /// element lines up with the vertex output it reads.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub per_vertex: bool,
 }
 
 #[cfg(test)]

@@ -38,6 +38,28 @@ pub(super) fn is_texture(f: BuiltinFn) -> bool {
             | B::Texture2DRectProj
             | B::Shadow2DRect
             | B::Shadow2DRectProj
+            | B::Texture1DArray
+            | B::Texture1DArrayLod
+            | B::Texture2DArray
+            | B::Texture2DArrayLod
+            | B::Shadow1DArray
+            | B::Shadow1DArrayLod
+            | B::Shadow2DArray
+            | B::Texture1DGradARB
+            | B::Texture1DProjGradARB
+            | B::Texture2DGradARB
+            | B::Texture2DProjGradARB
+            | B::Texture3DGradARB
+            | B::Texture3DProjGradARB
+            | B::TextureCubeGradARB
+            | B::Shadow1DGradARB
+            | B::Shadow1DProjGradARB
+            | B::Shadow2DGradARB
+            | B::Shadow2DProjGradARB
+            | B::Texture2DRectGradARB
+            | B::Texture2DRectProjGradARB
+            | B::Shadow2DRectGradARB
+            | B::Shadow2DRectProjGradARB
             | B::TextureSize
             | B::Texture
             | B::TextureProj
@@ -189,6 +211,13 @@ impl<'m> Lowerer<'m> {
                 | B::Shadow2DProjLod
                 | B::Texture2DRectProj
                 | B::Shadow2DRectProj
+                | B::Texture1DProjGradARB
+                | B::Texture2DProjGradARB
+                | B::Texture3DProjGradARB
+                | B::Shadow1DProjGradARB
+                | B::Shadow2DProjGradARB
+                | B::Texture2DRectProjGradARB
+                | B::Shadow2DRectProjGradARB
         );
         let explicit = matches!(
             f,
@@ -207,17 +236,21 @@ impl<'m> Lowerer<'m> {
                 | B::Shadow2DLod
                 | B::Shadow1DProjLod
                 | B::Shadow2DProjLod
+                | B::Texture1DArrayLod
+                | B::Texture2DArrayLod
+                | B::Shadow1DArrayLod
         );
         let grad = matches!(
             f,
             B::TextureGrad | B::TextureGradOffset | B::TextureProjGrad | B::TextureProjGradOffset
-        );
+        ) || f.name().ends_with("GradARB");
         // The arguments after the coordinates: (lod or bias, offset), or
         // the derivatives and an offset.
         let (extra, off, grads) = match f {
             B::TextureOffset | B::TextureProjOffset => (one_reg(3), arg(2), None),
             B::TextureLodOffset | B::TextureProjLodOffset => (one_reg(2), arg(3), None),
             B::TextureGrad | B::TextureProjGrad => (None, None, Some((arg(2), arg(3)))),
+            _ if grad => (None, None, Some((arg(2), arg(3)))),
             B::TextureGradOffset | B::TextureProjGradOffset => {
                 (None, arg(4), Some((arg(2), arg(3))))
             }

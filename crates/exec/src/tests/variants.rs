@@ -538,3 +538,90 @@ fn glsl130_lookups_are_the_same_in_every_variant() {
         }
     }
 }
+
+#[test]
+fn texture_array_extension_lookups_are_the_glsl130_ones() {
+    // GL_EXT_texture_array's names ask the texture unit for what the 1.30
+    // lookups of the same sampler ask: the same answers, bit for bit.
+    let uniforms = "uniform sampler1DArray s1;
+        uniform sampler2DArray s2;
+        uniform sampler1DArrayShadow h1;
+        uniform sampler2DArrayShadow h2;
+        in vec4 v;
+        out vec4 c0, c1, c2;";
+    let ext = format!(
+        "#version 130
+        #extension GL_EXT_texture_array : require
+        {uniforms}
+        void main() {{
+            c0 = texture1DArray(s1, v.xy) + texture1DArray(s1, v.yz, v.w) + texture1DArrayLod(s1, v.zw, v.x);
+            c1 = texture2DArray(s2, v.xyz) + texture2DArray(s2, v.yzw, v.x) + texture2DArrayLod(s2, v.zwx, v.y);
+            c2 = vec4(shadow1DArray(h1, v.xyz).x, shadow1DArray(h1, v.yzw, v.x).x,
+                      shadow1DArrayLod(h1, v.zwx, v.y).x, shadow2DArray(h2, v).x);
+        }}"
+    );
+    let core = format!(
+        "#version 130
+        {uniforms}
+        void main() {{
+            c0 = texture(s1, v.xy) + texture(s1, v.yz, v.w) + textureLod(s1, v.zw, v.x);
+            c1 = texture(s2, v.xyz) + texture(s2, v.yzw, v.x) + textureLod(s2, v.zwx, v.y);
+            c2 = vec4(texture(h1, v.xyz), texture(h1, v.yzw, v.x),
+                      textureLod(h1, v.zwx, v.y), texture(h2, v));
+        }}"
+    );
+    let run = |src: &str| {
+        let linked = link_one(Stage::Fragment, src).unwrap_or_else(|e| panic!("{e}"));
+        let k = Kernel::new(&linked).expect("lowers");
+        let u: Vec<u32> = (0..k.interface().uniform_words)
+            .map(|w| w as u32 + 1)
+            .collect();
+        let mut b = Batch::for_kernel(&k, 0xffff);
+        fill(&mut b, 11);
+        k.run_reference(&mut b, &u, &Encoder).expect("runs");
+        bits_of(&b.outputs)
+    };
+    let want = run(&core);
+    assert_eq!(run(&ext), want);
+}
+
+#[test]
+fn shader_texture_lod_gradient_lookups_are_the_glsl130_ones() {
+    // GL_ARB_shader_texture_lod's `*GradARB' lookups ask the texture unit
+    // for what textureGrad and textureProjGrad ask (the shadow ones return
+    // the comparison in every component).
+    let uniforms = "uniform sampler1D s1;
+        uniform sampler2D s2;
+        uniform sampler3D s3;
+        uniform samplerCube sc;
+        uniform sampler2DShadow h2;
+        in vec4 v;
+        out vec4 c0, c1, c2;";
+    let run = |body: &str, ext: &str| {
+        let src = format!("#version 130\n{ext}\n{uniforms}\nvoid main() {{ {body} }}");
+        let linked = link_one(Stage::Fragment, &src).unwrap_or_else(|e| panic!("{e}"));
+        let k = Kernel::new(&linked).expect("lowers");
+        let u: Vec<u32> = (0..k.interface().uniform_words)
+            .map(|w| w as u32 + 1)
+            .collect();
+        let mut b = Batch::for_kernel(&k, 0xffff);
+        fill(&mut b, 5);
+        k.run_reference(&mut b, &u, &Encoder).expect("runs");
+        bits_of(&b.outputs)
+    };
+    let ext = run(
+        "c0 = texture1DGradARB(s1, v.x, v.y, v.z) + texture1DProjGradARB(s1, v, v.y, v.w);
+         c1 = texture2DProjGradARB(s2, v.xyz, v.xy, v.zw) + texture3DGradARB(s3, v.xyz, v.yzw, v.wxy)
+            + textureCubeGradARB(sc, v.xyz, v.yzw, v.wxy);
+         c2 = vec4(shadow2DGradARB(h2, v.xyz, v.xy, v.zw).x, shadow2DProjGradARB(h2, v, v.zw, v.xy).x, 0.0, 0.0);",
+        "#extension GL_ARB_shader_texture_lod : require",
+    );
+    let core = run(
+        "c0 = textureGrad(s1, v.x, v.y, v.z) + textureProjGrad(s1, v, v.y, v.w);
+         c1 = textureProjGrad(s2, v.xyz, v.xy, v.zw) + textureGrad(s3, v.xyz, v.yzw, v.wxy)
+            + textureGrad(sc, v.xyz, v.yzw, v.wxy);
+         c2 = vec4(textureGrad(h2, v.xyz, v.xy, v.zw), textureProjGrad(h2, v, v.zw, v.xy), 0.0, 0.0);",
+        "",
+    );
+    assert_eq!(ext, core);
+}

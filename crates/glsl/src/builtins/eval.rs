@@ -202,7 +202,24 @@ fn eval(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<Vec<ConstScal
         | Texture2DLod | Texture2DProjLod | Texture3D | Texture3DProj | Texture3DLod
         | Texture3DProjLod | TextureCube | TextureCubeLod | Shadow1D | Shadow2D | Shadow1DProj
         | Shadow2DProj | Shadow1DLod | Shadow2DLod | Shadow1DProjLod | Shadow2DProjLod
-        | Texture2DRect | Texture2DRectProj | Shadow2DRect | Shadow2DRectProj => None,
+        | Texture2DRect | Texture2DRectProj | Shadow2DRect | Shadow2DRectProj | Texture1DArray
+        | Texture1DArrayLod | Texture2DArray | Texture2DArrayLod | Shadow1DArray
+        | Shadow1DArrayLod | Shadow2DArray => None,
+        Texture1DGradARB
+        | Texture1DProjGradARB
+        | Texture2DGradARB
+        | Texture2DProjGradARB
+        | Texture3DGradARB
+        | Texture3DProjGradARB
+        | TextureCubeGradARB
+        | Shadow1DGradARB
+        | Shadow1DProjGradARB
+        | Shadow2DGradARB
+        | Shadow2DProjGradARB
+        | Texture2DRectGradARB
+        | Texture2DRectProjGradARB
+        | Shadow2DRectGradARB
+        | Shadow2DRectProjGradARB => None,
         TextureSize
         | Texture
         | TextureProj

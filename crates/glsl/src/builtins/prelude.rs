@@ -48,7 +48,7 @@
 //! until GLSL 4.50 adds the integer and bool forms.
 
 use crate::ir::{InputPrimitive, Stage};
-use crate::lang::{Feature, Language, Version};
+use crate::lang::{Extension, Feature, Language, Version};
 use crate::limits;
 use std::fmt::Write;
 
@@ -93,6 +93,8 @@ pub(crate) struct Where {
     /// Only in GL_EXT_geometry_shader4's form of the geometry stage
     /// ([`Language::ext_geometry_shader4`]).
     ext_gs: bool,
+    /// Only with this extension enabled.
+    needs: Option<Extension>,
 }
 
 impl Where {
@@ -104,6 +106,7 @@ impl Where {
         compat_only: false,
         core_only: false,
         ext_gs: false,
+        needs: None,
     };
 
     const fn since(v: Version) -> Where {
@@ -137,6 +140,13 @@ impl Where {
     const fn ext_gs(self) -> Where {
         Where {
             ext_gs: true,
+            ..self
+        }
+    }
+
+    const fn needs(self, e: Extension) -> Where {
+        Where {
+            needs: Some(e),
             ..self
         }
     }
@@ -175,6 +185,7 @@ impl Where {
             && (!self.compat_only || lang.allows(Feature::CompatibilityInterface))
             && (!self.core_only || !lang.allows(Feature::CompatibilityInterface))
             && (!self.ext_gs || lang.ext_geometry_shader4())
+            && self.needs.is_none_or(|e| lang.has(e))
     }
 }
 
@@ -613,6 +624,7 @@ varying in vec4 gl_BackColorIn[];
 varying in vec4 gl_FrontSecondaryColorIn[];
 varying in vec4 gl_BackSecondaryColorIn[];
 varying in float gl_FogFragCoordIn[];
+varying in vec4 gl_TexCoordIn[][];
 vec4 gl_ClipVertex;
 varying vec4 gl_FrontColor;
 varying vec4 gl_BackColor;
@@ -624,7 +636,10 @@ varying float gl_FogFragCoord;",
         ),
         (
             Where::since(V130).gs().ext_gs(),
-            Text("float gl_ClipDistance[];"),
+            Text(
+                "float gl_ClipDistance[];
+varying in float gl_ClipDistanceIn[][];",
+            ),
         ),
     ]
 };
@@ -839,6 +854,131 @@ const FUNCTIONS: &[(Where, &str)] = &[
         Where::since(V140),
         "vec4 shadow2DRectProj(sampler2DRectShadow, vec4)",
     ),
+    // GL_EXT_texture_array's lookups (from GLSL 1.30, which has the
+    // sampler types and the explicit-LOD lookups in every stage).
+    (TEX_ARRAY, "vec4 texture1DArray(sampler1DArray, vec2)"),
+    (
+        TEX_ARRAY_FS,
+        "vec4 texture1DArray(sampler1DArray, vec2, float)",
+    ),
+    (
+        TEX_ARRAY,
+        "vec4 texture1DArrayLod(sampler1DArray, vec2, float)",
+    ),
+    (TEX_ARRAY, "vec4 texture2DArray(sampler2DArray, vec3)"),
+    (
+        TEX_ARRAY_FS,
+        "vec4 texture2DArray(sampler2DArray, vec3, float)",
+    ),
+    (
+        TEX_ARRAY,
+        "vec4 texture2DArrayLod(sampler2DArray, vec3, float)",
+    ),
+    (TEX_ARRAY, "vec4 shadow1DArray(sampler1DArrayShadow, vec3)"),
+    (
+        TEX_ARRAY_FS,
+        "vec4 shadow1DArray(sampler1DArrayShadow, vec3, float)",
+    ),
+    (
+        TEX_ARRAY,
+        "vec4 shadow1DArrayLod(sampler1DArrayShadow, vec3, float)",
+    ),
+    (TEX_ARRAY, "vec4 shadow2DArray(sampler2DArrayShadow, vec4)"),
+    // GL_ARB_shader_texture_lod: the explicit-LOD lookups in fragment
+    // shaders before 1.30 (the other stages have them), and the lookups
+    // with explicit derivatives in every stage (those of rectangles where
+    // the language has their samplers).
+    (LOD_FS_ARB, "vec4 texture1DLod(sampler1D, float, float)"),
+    (LOD_FS_ARB, "vec4 texture1DProjLod(sampler1D, vec2, float)"),
+    (LOD_FS_ARB, "vec4 texture1DProjLod(sampler1D, vec4, float)"),
+    (LOD_FS_ARB, "vec4 texture2DLod(sampler2D, vec2, float)"),
+    (LOD_FS_ARB, "vec4 texture2DProjLod(sampler2D, vec3, float)"),
+    (LOD_FS_ARB, "vec4 texture2DProjLod(sampler2D, vec4, float)"),
+    (LOD_FS_ARB, "vec4 texture3DLod(sampler3D, vec3, float)"),
+    (LOD_FS_ARB, "vec4 texture3DProjLod(sampler3D, vec4, float)"),
+    (LOD_FS_ARB, "vec4 textureCubeLod(samplerCube, vec3, float)"),
+    (LOD_FS_ARB, "vec4 shadow1DLod(sampler1DShadow, vec3, float)"),
+    (LOD_FS_ARB, "vec4 shadow2DLod(sampler2DShadow, vec3, float)"),
+    (
+        LOD_FS_ARB,
+        "vec4 shadow1DProjLod(sampler1DShadow, vec4, float)",
+    ),
+    (
+        LOD_FS_ARB,
+        "vec4 shadow2DProjLod(sampler2DShadow, vec4, float)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture1DGradARB(sampler1D, float, float, float)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture1DProjGradARB(sampler1D, vec2, float, float)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture1DProjGradARB(sampler1D, vec4, float, float)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture2DGradARB(sampler2D, vec2, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture2DProjGradARB(sampler2D, vec3, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture2DProjGradARB(sampler2D, vec4, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture3DGradARB(sampler3D, vec3, vec3, vec3)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 texture3DProjGradARB(sampler3D, vec4, vec3, vec3)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 textureCubeGradARB(samplerCube, vec3, vec3, vec3)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 shadow1DGradARB(sampler1DShadow, vec3, float, float)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 shadow1DProjGradARB(sampler1DShadow, vec4, float, float)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 shadow2DGradARB(sampler2DShadow, vec3, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB,
+        "vec4 shadow2DProjGradARB(sampler2DShadow, vec4, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB_RECT,
+        "vec4 texture2DRectGradARB(sampler2DRect, vec2, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB_RECT,
+        "vec4 texture2DRectProjGradARB(sampler2DRect, vec3, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB_RECT,
+        "vec4 texture2DRectProjGradARB(sampler2DRect, vec4, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB_RECT,
+        "vec4 shadow2DRectGradARB(sampler2DRectShadow, vec3, vec2, vec2)",
+    ),
+    (
+        GRAD_ARB_RECT,
+        "vec4 shadow2DRectProjGradARB(sampler2DRectShadow, vec4, vec2, vec2)",
+    ),
     // §8.8 fragment processing functions
     (FS, "genType dFdx(genType)"),
     (FS, "genType dFdy(genType)"),
@@ -854,6 +994,23 @@ const FUNCTIONS: &[(Where, &str)] = &[
     (EXT_GS, "void EmitVertex()"),
     (EXT_GS, "void EndPrimitive()"),
 ];
+
+/// GL_ARB_shader_texture_lod's lookups (see [`FUNCTIONS`]).
+const LOD_FS_ARB: Where = Where {
+    stages: Stages::Fragment,
+    ..Where::ALL
+}
+.until(V130)
+.needs(Extension::ArbShaderTextureLod);
+const GRAD_ARB: Where = Where::ALL.needs(Extension::ArbShaderTextureLod);
+const GRAD_ARB_RECT: Where = Where::since(V140).needs(Extension::ArbShaderTextureLod);
+
+/// GL_EXT_texture_array's lookups; the bias forms in fragment shaders.
+const TEX_ARRAY: Where = Where::since(V130).needs(Extension::ExtTextureArray);
+const TEX_ARRAY_FS: Where = Where {
+    stages: Stages::Fragment,
+    ..TEX_ARRAY
+};
 
 /// The explicit-LOD lookups of 1.10 and 1.20: vertex shaders only (and
 /// geometry shaders, GL_EXT_geometry_shader4).
@@ -1348,8 +1505,13 @@ mod tests {
             ] {
                 let mut l = Language::new(v, true);
                 l.profile = p;
+                // And with the extension that adds lookups.
+                let mut e = l;
+                e.extensions.set(Extension::ExtTextureArray, true);
+                e.extensions.set(Extension::ArbShaderTextureLod, true);
                 for s in [Stage::Vertex, Stage::Geometry, Stage::Fragment] {
                     out.push((l, s));
+                    out.push((e, s));
                 }
             }
         }

@@ -266,6 +266,21 @@ pub(super) fn check_builtin_color_interpolation(
     }
 }
 
+/// What one vertex of a geometry input holds: the element, or the row of
+/// a GL_EXT_geometry_shader4 two-dimensional input's per-vertex struct
+/// ([`crate::types::StructDef::per_vertex`]).
+fn per_vertex_row(m: &ir::Module, elem: crate::types::Type) -> crate::types::Type {
+    match elem.base {
+        crate::types::Base::Struct(id) => m
+            .structs
+            .get(id.0 as usize)
+            .filter(|s| s.per_vertex)
+            .and_then(|s| s.members.first())
+            .map_or(elem, |mb| mb.ty),
+        _ => elem,
+    }
+}
+
 pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
     let (vm, fm) = (&v.module, &f.module);
     let (pn, cn) = (v.stage.name(), f.stage.name());
@@ -286,7 +301,11 @@ pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<
         .filter(|g| !g.builtin && g.block.is_none())
     {
         let vg = vm.globals.iter().find(|g| g.name == fg.name);
-        let fty = if per_vertex { fg.ty.element() } else { fg.ty };
+        let fty = if per_vertex {
+            per_vertex_row(fm, fg.ty.element())
+        } else {
+            fg.ty
+        };
         match fg.storage {
             s if s == input => match vg {
                 Some(vg) if vg.storage == Storage::Varying => {

@@ -74,6 +74,7 @@ pub(super) fn merge_stage(
                 name: s.name.clone(),
                 members,
                 builtin: s.builtin,
+                per_vertex: s.per_vertex,
             };
             let id = match merged
                 .structs

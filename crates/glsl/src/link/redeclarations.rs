@@ -254,21 +254,32 @@ pub(super) fn check_per_vertex_interface(
 }
 
 /// The unsized arrays of `gl_in[]`'s members (the built-in block's
-/// `gl_ClipDistance[]`, the compatibility profile's `gl_TexCoord[]`)
-/// take the size of the vertex stage's output of that name (GLSL 1.50
+/// `gl_ClipDistance[]`, the compatibility profile's `gl_TexCoord[]`), and
+/// the rows of GL_EXT_geometry_shader4's `gl_TexCoordIn[][]` and
+/// `gl_ClipDistanceIn[][]`, take the size of the vertex stage's output of that name (GLSL 1.50
 /// §7.1: an input block matches the output block it reads), else the
 /// largest the output can have (gl_MaxClipDistances,
 /// gl_MaxTextureCoords). Expressions reading the members take the sized
 /// type.
 pub(super) fn size_gl_in_members(gs: &mut Module, vs: Option<&Module>) {
-    let Some(Base::Struct(sid)) = gs
+    // `gl_in[]`, and GL_EXT_geometry_shader4's `gl_TexCoordIn[][]` and
+    // `gl_ClipDistanceIn[][]` (arrays of a per-vertex struct whose
+    // member is named after the output it reads) alike.
+    let sids: Vec<StructId> = gs
         .globals
         .iter()
-        .find(|g| g.builtin && g.storage == Storage::GeometryInput && g.name == "gl_in")
-        .map(|g| g.ty.base)
-    else {
-        return;
-    };
+        .filter(|g| g.builtin && g.storage == Storage::GeometryInput)
+        .filter_map(|g| match g.ty.base {
+            Base::Struct(sid) => Some(sid),
+            _ => None,
+        })
+        .collect();
+    for sid in sids {
+        size_struct_members(gs, vs, sid);
+    }
+}
+
+fn size_struct_members(gs: &mut Module, vs: Option<&Module>, sid: StructId) {
     let Some(def) = gs.structs.get_mut(sid.0 as usize) else {
         return;
     };

@@ -524,22 +524,17 @@ impl Parser<'_> {
         } else {
             None
         };
+        let mut inner = None;
         if array.is_some() && self.at_punct(Punct::LeftBracket) {
             // GL_EXT_geometry_shader4 allows one kind of two-dimensional
             // array, `varying in float v[][N];' (a vertex shader's array
-            // output, per input vertex); the type system has one array
-            // level, so it is refused with that said, and the declarator
-            // kept with its first size.
+            // output, per input vertex): kept for the analyzer, which
+            // refuses it on anything else.
             let extra = self.array_spec()?;
-            let d = if self.lang.ext_geometry_shader4() {
-                Diagnostic::error(
-                    Code::Unsupported,
-                    extra.span,
-                    format!("`{}' has two array sizes: arrays of arrays are not supported", name.name),
-                )
-                .with_note("GL_EXT_geometry_shader4's two-dimensional `varying in' arrays (a vertex shader's array outputs, and `gl_TexCoordIn[][]') are not implemented by shaderbox")
+            if self.lang.ext_geometry_shader4() {
+                inner = Some(extra);
             } else {
-                Diagnostic::error(
+                self.diags.push(Diagnostic::error(
                     Code::Syntax,
                     extra.span,
                     format!(
@@ -547,9 +542,8 @@ impl Parser<'_> {
                         name.name,
                         self.lang.version.dotted()
                     ),
-                )
-            };
-            self.diags.push(d);
+                ));
+            }
         }
         let init = if self.eat_punct(Punct::Equal) {
             Some(*self.assignment()?)
@@ -561,6 +555,7 @@ impl Parser<'_> {
             span: self.span_from(name.span),
             name,
             array,
+            inner,
             init,
         })
     }

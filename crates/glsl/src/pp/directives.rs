@@ -739,7 +739,8 @@ impl Preprocessor<'_> {
         // GL_ARB_compatibility exists only in a context that has the
         // compatibility profile.
         let known = Extension::from_name(&name.text)
-            .filter(|&e| e != Extension::ArbCompatibility || self.compatibility_context);
+            .filter(|&e| e != Extension::ArbCompatibility || self.compatibility_context)
+            .filter(|&e| self.lang.version >= e.since());
         let supported = known.is_some();
         if is_all
             && matches!(
@@ -756,11 +757,21 @@ impl Preprocessor<'_> {
         }
         if !is_all && !supported {
             if behavior == ExtensionBehavior::Require {
-                self.diags.push(Diagnostic::error(
+                let mut d = Diagnostic::error(
                     Code::PpExtension,
                     name.span,
                     format!("extension `{}' is required but not supported", name.text),
-                ));
+                );
+                if let Some(e) =
+                    Extension::from_name(&name.text).filter(|e| self.lang.version < e.since())
+                {
+                    d = d.with_note(format!(
+                        "shaderbox offers it from GLSL {} on (`#version {}')",
+                        e.since().dotted(),
+                        e.since().number()
+                    ));
+                }
+                self.diags.push(d);
                 return;
             }
             self.diags.push(Diagnostic::warning(

@@ -235,9 +235,10 @@ impl<'m> Preprocessor<'m> {
     fn new(map: &'m mut SourceMap, stage: Stage, max_tokens: usize) -> Self {
         let mut macros = MacroTable::new();
         // GL_ARB_compatibility's macro depends on the context: set_language.
+        // Those offered from a later version only: set_language.
         for ext in Extension::ALL
             .iter()
-            .filter(|&&e| e != Extension::ArbCompatibility)
+            .filter(|&&e| e != Extension::ArbCompatibility && e.since() == Version::V110)
         {
             macros.insert(ext.name().into(), macros::Macro::one());
         }
@@ -279,6 +280,18 @@ impl<'m> Preprocessor<'m> {
                 v.has_profiles() && lang.profile == Profile::Compatibility,
             ),
             ("GL_ARB_compatibility", self.compatibility_context),
+            (
+                Extension::ArbTextureRectangle.name(),
+                v >= Extension::ArbTextureRectangle.since(),
+            ),
+            (
+                Extension::ArbTextureMultisample.name(),
+                v >= Extension::ArbTextureMultisample.since(),
+            ),
+            (
+                Extension::ExtTextureArray.name(),
+                v >= Extension::ExtTextureArray.since(),
+            ),
         ] {
             if on {
                 self.macros.insert(name.into(), macros::Macro::one());

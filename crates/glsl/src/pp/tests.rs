@@ -723,6 +723,38 @@ fn extension_errors() {
 }
 
 #[test]
+fn texture_extensions_are_offered_from_the_version_that_has_them() {
+    // GL_ARB_texture_rectangle from 1.40, GL_ARB_texture_multisample from
+    // 1.50, GL_EXT_texture_array from 1.30: enabled, and their macros
+    // defined, only there.
+    for (name, since) in [
+        ("GL_ARB_texture_rectangle", 140),
+        ("GL_ARB_texture_multisample", 150),
+        ("GL_EXT_texture_array", 130),
+    ] {
+        for v in [110, 120, 130, 140, 150, 330] {
+            let src =
+                format!("#version {v}\n#extension {name} : require\n#ifdef {name}\nyes\n#endif\n");
+            let (out, _) = run(&src);
+            let errs = messages(&out, Severity::Error);
+            if v >= since {
+                assert!(errs.is_empty(), "{v} {name}: {errs:?}");
+                assert!(render(&out).contains("yes"), "{v} {name}");
+            } else {
+                assert!(
+                    errs.iter()
+                        .any(|m| m.contains("required but not supported")),
+                    "{v} {name}: {errs:?}"
+                );
+                assert!(!render(&out).contains("yes"), "{v} {name}");
+            }
+        }
+    }
+    // Without #version (GLSL 1.10), no macro either.
+    assert!(!ok("#ifdef GL_ARB_texture_rectangle\nyes\n#endif\n").contains("yes"));
+}
+
+#[test]
 fn unknown_and_null_directives() {
     err("#foo", "unknown preprocessor directive `#foo'");
     err("#defin X", "unknown preprocessor directive");

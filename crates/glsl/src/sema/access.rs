@@ -129,6 +129,21 @@ impl Analyzer {
         }
     }
 
+    /// Whether a constant index past the end of `base` is left to the
+    /// link ([`super::Context::defer_input_index`]): `base` is a geometry
+    /// input array itself, not one of its elements.
+    fn defers_input_index(&self, base: &ir::Expr) -> bool {
+        let K::Global(g) = base.kind else {
+            return false;
+        };
+        self.defer_input_index
+            && self
+                .module
+                .globals
+                .get(g.0 as usize)
+                .is_some_and(|g| g.storage == ir::Storage::GeometryInput)
+    }
+
     /// `base[index]` on an array, vector or matrix.
     pub(super) fn index(&mut self, base: ir::Expr, i: &ast::Expr, span: Span) -> ir::Expr {
         let iv = self.rvalue(i);
@@ -210,7 +225,13 @@ impl Analyzer {
                 return error_expr(span);
             }
             let bound = len.or_else(|| self.builtin_unsized_bound(&base));
-            if let Some(n) = bound {
+            if let Some(n) = bound.filter(|&n| c as u32 >= n && self.defers_input_index(&base)) {
+                let msg = format!("{what} index {c} is out of range for {}", self.tn(t));
+                self.push(
+                    crate::diag::Diagnostic::warning(Code::IndexOutOfRange, i.span, msg)
+                        .with_note(format!("no input primitive has more than {n} vertices (gl_VerticesIn): linking the program fails (GL_EXT_geometry_shader4 §4.3.6)")),
+                );
+            } else if let Some(n) = bound {
                 if c as u32 >= n {
                     self.error(
                         Code::IndexOutOfRange,
@@ -250,14 +271,26 @@ impl Analyzer {
             .push(hint.into());
             return error_expr(span);
         }
-        self.fold(mk(
+        let e = self.fold(mk(
             K::Index {
                 base: Box::new(base),
                 index: Box::new(iv),
             },
             ty,
             span,
-        ))
+        ));
+        // A vertex of a two-dimensional geometry input is its row.
+        match self.per_vertex_member(ty) {
+            Some(row) => mk(
+                K::Member {
+                    base: Box::new(e),
+                    index: 0,
+                },
+                row,
+                span,
+            ),
+            None => e,
+        }
     }
 
     /// `base.name`: a struct member or a swizzle.

@@ -310,6 +310,9 @@ impl Analyzer {
         let mut ty = self.apply_array(base, d.array.as_ref());
         let name = d.name.name.clone();
         self.check_storage_type(q, ty, d);
+        if let Some(inner) = &d.inner {
+            ty = self.two_dimensional_input(q, ty, inner, d);
+        }
         self.check_precision(q.precision, ty);
         if self.lang.version < Version::V120 && ty.is_array() && d.init.is_some() {
             self.error(
@@ -467,6 +470,65 @@ impl Analyzer {
         }
     }
 
+    /// The type of a declarator with a second size: GL_EXT_geometry_shader4
+    /// §4.3.6 allows it on geometry inputs only (a vertex shader's array
+    /// output, one per input vertex), and the second size is required.
+    /// `ty` is the declared type with its first size (already checked as
+    /// an input of its element type).
+    fn two_dimensional_input(
+        &mut self,
+        q: &VarQuals,
+        ty: Type,
+        inner: &crate::ast::ArraySpec,
+        d: &InitDeclarator,
+    ) -> Type {
+        let input = self.scopes.is_global()
+            && q.storage.is_some()
+            && self.global_storage(q) == Storage::GeometryInput
+            && self.lang.ext_geometry_shader4();
+        if !input {
+            let _ = self.array_size(inner);
+            self.error(
+                Code::BadArraySize,
+                inner.span,
+                format!(
+                    "`{}' has two array sizes: GLSL {} has no arrays of arrays",
+                    d.name.name,
+                    self.lang.version.dotted()
+                ),
+            )
+            .notes
+            .push("GL_EXT_geometry_shader4 allows two-dimensional arrays only as geometry shader inputs (`varying in float v[][4];')".into());
+            return Type::ERROR;
+        }
+        if ty.is_error() {
+            let _ = self.array_size(inner);
+            return ty;
+        }
+        let size = self.array_size(inner);
+        if size == ArraySize::Unsized && !self.builtin_mode && !d.name.name.starts_with("gl_") {
+            self.error(
+                Code::BadArraySize,
+                inner.span,
+                format!("the second size of geometry input `{}' is required", d.name.name),
+            )
+            .notes
+            .push("GL_EXT_geometry_shader4 §4.3.6: it is the size of the vertex shader's array output".into());
+            return Type::ERROR;
+        }
+        // The built-in inputs take the vertex outputs without `In'.
+        let member = match d.name.name.strip_suffix("In") {
+            Some(out) if d.name.name.starts_with("gl_") => out.to_string(),
+            _ => d.name.name.to_string(),
+        };
+        let row = ty.element().array_of(size);
+        let elem = self.per_vertex_row(&member, row);
+        Type {
+            array: ty.array,
+            ..elem
+        }
+    }
+
     /// `float a[]; ... float a[4];`: an unsized array may be redeclared with
     /// a size in the same scope (GLSL 1.20 §4.1.9). Returns true if `d` was
     /// such a redeclaration (errors reported here).
@@ -617,6 +679,12 @@ impl Analyzer {
             self.per_vertex_member_redeclared
                 .get_or_insert(name.clone());
         }
+        if let (Some(v), "gl_TexCoordIn" | "gl_ClipDistanceIn", Storage::GeometryInput) =
+            (builtin, name.as_str(), storage)
+        {
+            self.redeclare_two_dimensional_input(v, ty, d);
+            return;
+        }
         let vec4 = ty.base == Type::vec(Scalar::Float, 4).base;
         let varying = storage == Storage::Varying && builtin.is_some() && vec4;
         let texcoord_ok = name == "gl_TexCoord" && varying && ty.is_array();
@@ -762,6 +830,74 @@ impl Analyzer {
                 gl.centroid |= q.centroid;
             }
         }
+    }
+
+    /// `varying in vec4 gl_TexCoordIn[][N];`, `in float
+    /// gl_ClipDistanceIn[][N];` (GL_EXT_geometry_shader4 §7.1): the
+    /// built-in two-dimensional inputs sized like the vertex outputs they
+    /// read, at most gl_MaxTextureCoords / gl_MaxClipDistances.
+    fn redeclare_two_dimensional_input(&mut self, v: Var, ty: Type, d: &InitDeclarator) {
+        if ty.is_error() {
+            return;
+        }
+        let name = &d.name.name;
+        let (elem, max, max_name) = if name == "gl_TexCoordIn" {
+            (
+                Type::vec(Scalar::Float, 4),
+                MAX_TEXTURE_COORDS,
+                "gl_MaxTextureCoords",
+            )
+        } else {
+            (Type::FLOAT, MAX_CLIP_PLANES, "gl_MaxClipDistances")
+        };
+        let row = self.per_vertex_member(ty.element());
+        let Some(row) = row.filter(|r| r.element() == elem) else {
+            let elem = self.tn(elem);
+            self.error(
+                Code::Redeclared,
+                d.name.span,
+                format!("`{name}' can only be redeclared as `{elem} {name}[][N]'"),
+            );
+            return;
+        };
+        if let Some(ArraySize::Sized(n)) = row.array {
+            if n > max {
+                self.error(
+                    Code::BadArraySize,
+                    d.name.span,
+                    format!("`{name}' redeclared with {n} elements per vertex, more than {max_name} ({max})"),
+                );
+                return;
+            }
+        }
+        let current = self.var_type(v);
+        if let Some(ArraySize::Sized(n)) = ty.array {
+            if current
+                .array
+                .is_some_and(|a| a != ArraySize::Sized(n) && a != ArraySize::Unsized)
+            {
+                let p = self
+                    .module
+                    .geometry
+                    .input
+                    .unwrap_or(crate::ir::InputPrimitive::Points);
+                self.error(
+                    Code::BadArraySize,
+                    d.name.span,
+                    format!(
+                        "`{name}' redeclared with {n} vertices, but input primitives of type {} have {} (gl_VerticesIn)",
+                        p.gl_name(),
+                        p.vertices()
+                    ),
+                );
+                return;
+            }
+        }
+        let ty = Type {
+            array: current.array.or(ty.array),
+            ..ty
+        };
+        self.set_var_type(v, ty);
     }
 
     /// `invariant a, b;` (GLSL 1.20 §4.6.1): global scope only, for varyings

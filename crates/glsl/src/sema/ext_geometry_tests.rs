@@ -244,10 +244,150 @@ fn misuse_gets_diagnostics_that_say_what_to_write() {
     let g = geom("#version 140\n#extension GL_EXT_geometry_shader4 : enable\nlayout(triangles) in;\nvoid main() { EmitVertex(); }");
     fails(&g, Code::BadQualifier);
     assert!(g.info_log().contains("GL_GEOMETRY_INPUT_TYPE_EXT"));
-    // Two-dimensional inputs are refused, saying so.
-    let g = geom("#extension GL_EXT_geometry_shader4 : enable\nvarying in float v[][2];\nvoid main() { EmitVertex(); }");
-    fails(&g, Code::Unsupported);
-    assert!(g.info_log().contains("arrays of arrays"));
+    // Two sizes only on inputs, and the second is required.
+    let g = geom("#extension GL_EXT_geometry_shader4 : enable\nvarying out float v[2][2];\nvoid main() { EmitVertex(); }");
+    fails(&g, Code::BadArraySize);
+    assert!(
+        g.info_log().contains("arrays of arrays"),
+        "{}",
+        g.info_log()
+    );
+    let g = geom("#extension GL_EXT_geometry_shader4 : enable\nvarying in float v[][];\nvoid main() { EmitVertex(); }");
+    fails(&g, Code::BadArraySize);
+    assert!(g.info_log().contains("second size"), "{}", g.info_log());
+    fails(
+        &geom("#extension GL_EXT_geometry_shader4 : enable\nvoid main() { float a[2][2]; EmitVertex(); }"),
+        Code::BadArraySize,
+    );
+    // Without the extension, a syntax error as before.
+    fails(
+        &stage(
+            Stage::Vertex,
+            "#version 120\nvarying float v[2][2];\nvoid main() { gl_Position = vec4(0.0); }",
+        ),
+        Code::Syntax,
+    );
+}
+
+#[test]
+fn two_dimensional_inputs_are_read_per_vertex() {
+    let v = stage(
+        Stage::Vertex,
+        "#version 120\nvarying float v[4];\nvoid main() { for (int i = 0; i < 4; i++) v[i] = float(i); gl_Position = gl_Vertex; }",
+    );
+    // Indexed twice, passed whole, its `.length()', assigned whole.
+    let g = geom(
+        "#version 120
+#extension GL_ARB_geometry_shader4 : enable
+varying in float v[][4];
+varying out float o;
+float sum(float a[4]) { return a[0] + a[1] + a[2] + a[3]; }
+void main() {
+  for (int i = 0; i < gl_VerticesIn; i++) {
+    float row[4] = v[i];
+    o = v[i][3] + sum(v[i]) + float(v[i].length()) + row[0] + float(v.length());
+    gl_Position = gl_PositionIn[i];
+    EmitVertex();
+  }
+}",
+    );
+    ok(&g);
+    linked(&link_tri(&[&v, &g]));
+    // The element is the vertex output: its size must match at link.
+    let v2 = stage(
+        Stage::Vertex,
+        "#version 120\nvarying float v[2];\nvoid main() { v[0] = 0.0; v[1] = 1.0; gl_Position = gl_Vertex; }",
+    );
+    not_linked(&link_tri(&[&v2, &g]), "varying `v'");
+    // The second index is checked against its size, the first against
+    // the input primitive's vertices, and rows of another size are not
+    // assignable.
+    let bad = |body: &str| {
+        geom(&format!(
+            "#version 120\n#extension GL_ARB_geometry_shader4 : enable\nvarying in float v[3][2];\nvoid main() {{ {body} EmitVertex(); }}"
+        ))
+    };
+    fails(&bad("float s = v[0][2];"), Code::IndexOutOfRange);
+    let g = bad("float s = v[3][0];");
+    fails(&g, Code::IndexOutOfRange);
+    assert!(g.info_log().contains("float[3][2]"), "{}", g.info_log());
+    fails(&bad("float a[3] = v[0];"), Code::TypeMismatch);
+    ok(&bad("float s = v[2][1];"));
+}
+
+#[test]
+fn tex_coord_and_clip_distance_inputs_are_two_dimensional() {
+    // gl_TexCoordIn[][]: constant indices within gl_MaxTextureCoords, or
+    // any index once redeclared with a size.
+    let g = geom("#extension GL_ARB_geometry_shader4 : enable\nvoid main() { gl_Position = gl_TexCoordIn[0][1]; EmitVertex(); }");
+    ok(&g);
+    let g = geom("#extension GL_ARB_geometry_shader4 : enable\nuniform int k;\nvoid main() { gl_Position = gl_TexCoordIn[0][k]; EmitVertex(); }");
+    fails(&g, Code::BadArraySize);
+    let g = geom("#extension GL_ARB_geometry_shader4 : enable\nuniform int k;\nvarying in vec4 gl_TexCoordIn[][2];\nvoid main() { gl_Position = gl_TexCoordIn[0][k] + gl_TexCoordIn[1][1]; EmitVertex(); }");
+    ok(&g);
+    fails(
+        &geom("#extension GL_ARB_geometry_shader4 : enable\nvarying in vec4 gl_TexCoordIn[][2];\nvoid main() { gl_Position = gl_TexCoordIn[0][2]; EmitVertex(); }"),
+        Code::IndexOutOfRange,
+    );
+    // gl_ClipDistanceIn[][] (GLSL 1.30): unsized rows have no length
+    // and take constant indices below gl_MaxClipDistances.
+    let clip = |decl: &str, expr: &str| {
+        geom(&format!(
+            "#version 130\n#extension GL_ARB_geometry_shader4 : enable\n{decl}\nvoid main() {{ gl_Position = vec4({expr}); EmitVertex(); }}"
+        ))
+    };
+    ok(&clip("", "gl_ClipDistanceIn[0][7]"));
+    fails(
+        &clip("", "gl_ClipDistanceIn[0][gl_MaxClipDistances]"),
+        Code::IndexOutOfRange,
+    );
+    fails(
+        &clip("", "gl_ClipDistanceIn[0].length()"),
+        Code::BadArraySize,
+    );
+    let sized = "in float gl_ClipDistanceIn[3][2];";
+    ok(&clip(sized, "gl_ClipDistanceIn[2][1] + float(gl_ClipDistanceIn[0].length() + gl_ClipDistanceIn.length())"));
+    fails(
+        &clip(sized, "gl_ClipDistanceIn[0][2]"),
+        Code::IndexOutOfRange,
+    );
+    fails(
+        &clip(
+            "in float gl_ClipDistanceIn[3][gl_MaxClipDistances + 1];",
+            "0.0",
+        ),
+        Code::BadArraySize,
+    );
+    fails(
+        &clip("in vec4 gl_ClipDistanceIn[3][2];", "0.0"),
+        Code::Redeclared,
+    );
+    // Before 1.30 there is no gl_ClipDistanceIn.
+    fails(
+        &geom("#version 120\n#extension GL_ARB_geometry_shader4 : enable\nvoid main() { gl_Position = vec4(gl_ClipDistanceIn[0][0]); EmitVertex(); }"),
+        Code::Undeclared,
+    );
+    // Linked, an unsized row takes the vertex stage's size.
+    let v = stage(
+        Stage::Vertex,
+        "#version 130\nout float gl_ClipDistance[3];\nvoid main() { gl_ClipDistance[2] = 1.0; gl_Position = gl_Vertex; }",
+    );
+    let g = clip("", "gl_ClipDistanceIn[1][2]");
+    let p = link_tri(&[&v, &g]);
+    linked(&p);
+    let gs = p.stage(Stage::Geometry).expect("a geometry stage");
+    let g = gs
+        .module
+        .globals
+        .iter()
+        .find(|g| g.name == "gl_ClipDistanceIn")
+        .expect("gl_ClipDistanceIn");
+    assert_eq!(g.ty.array, Some(ArraySize::Sized(3)));
+    let crate::types::Base::Struct(id) = g.ty.base else {
+        panic!("{:?}", g.ty)
+    };
+    let row = gs.module.structs[id.0 as usize].members[0].ty;
+    assert_eq!(row.array, Some(ArraySize::Sized(3)));
 }
 
 #[test]
@@ -362,8 +502,8 @@ void main() {
         &params(InputPrimitive::LinesAdjacency, OutputPrimitive::Points, 1),
     ));
     // Valid for none: the diagnostics are the triangles', with a note.
-    let g = geom("#extension GL_EXT_geometry_shader4 : enable\nvoid main() { gl_Position = gl_PositionIn[6]; EmitVertex(); }");
-    fails(&g, Code::IndexOutOfRange);
+    let g = geom("#extension GL_EXT_geometry_shader4 : enable\nfloat a[gl_VerticesIn - 6];\nvoid main() { gl_Position = vec4(a[0]); EmitVertex(); }");
+    fails(&g, Code::BadArraySize);
     assert!(
         g.info_log().contains("gl_VerticesIn = 3"),
         "{}",
@@ -404,6 +544,23 @@ fn input_sizes_and_indices_are_checked_at_link() {
     fails(
         &geom("#extension GL_EXT_geometry_shader4 : enable\nvarying in float x[3];\nvarying in float y[2];\nvoid main() { EmitVertex(); }"),
         Code::BadArraySize,
+    );
+    // Past every primitive's vertices: compiles (with a warning), and no
+    // input type links (GL_EXT_geometry_shader4 §4.3.6).
+    let g = geom("#version 110\n#extension GL_ARB_geometry_shader4 : enable\nvoid main() { gl_Position = gl_PositionIn[6]; EmitVertex(); }");
+    ok(&g);
+    assert!(g.info_log().contains("warning"), "{}", g.info_log());
+    for input in [
+        InputPrimitive::Triangles,
+        InputPrimitive::TrianglesAdjacency,
+    ] {
+        let p = link_with(&[&v, &g], &params(input, OutputPrimitive::Points, 1));
+        not_linked(&p, "out of range");
+    }
+    // Other errors are still errors.
+    fails(
+        &geom("#version 110\n#extension GL_ARB_geometry_shader4 : enable\nvoid main() { gl_Position = gl_PositionIn[6]; int k = 1.0; EmitVertex(); }"),
+        Code::TypeMismatch,
     );
     // Link errors point into the object.
     let g = geom("#extension GL_EXT_geometry_shader4 : enable\nvarying in float x[];\nvoid main() {\n gl_Position = vec4(x[4]);\n EmitVertex();\n}");

@@ -59,6 +59,12 @@ pub struct Context {
     /// `gl_VerticesIn` its value. `None` is GL_TRIANGLES, the parameter's
     /// initial value. Ignored by every other language and stage.
     pub geometry_input: Option<ir::InputPrimitive>,
+    /// For a GL_EXT_geometry_shader4 geometry shader compiled without its
+    /// program's input primitive: a constant index past every input
+    /// primitive's vertex count (`gl_PositionIn[6]`) is the link error of
+    /// the extension's §4.3.6, reported when the linker compiles the
+    /// object again with the program's primitive; here it is a warning.
+    pub defer_input_index: bool,
 }
 
 /// Analyzes one shader. The module is complete only when no error was
@@ -68,6 +74,7 @@ pub fn analyze(tu: &TranslationUnit, ctx: &Context) -> (Module, Vec<Diagnostic>)
     let input = ctx.geometry_input.unwrap_or(ir::InputPrimitive::Triangles);
     let env = builtin_env_for_input(ctx.language, ctx.stage, input);
     let mut a = Analyzer::new(ctx.language, ctx.stage, Some(env));
+    a.defer_input_index = ext_gs && ctx.defer_input_index;
     if ext_gs {
         // The EXT form has no input layout: the primitive is known from
         // the first line, so every input array is sized as it is declared.
@@ -320,6 +327,8 @@ pub(crate) struct Analyzer {
     /// layout: its size and name (later sizes must agree, GLSL 1.50
     /// §4.3.8.1).
     pub geometry_input_len: Option<(u32, String)>,
+    /// [`Context::defer_input_index`].
+    pub defer_input_index: bool,
     /// Built-in outputs a redeclared `gl_PerVertex` left out: no longer
     /// names (GLSL 1.50 §7.1).
     pub hidden_builtins: Vec<SmolStr>,
@@ -364,6 +373,7 @@ impl Analyzer {
             default_row_major: false,
             frag_coord_redeclared: None,
             geometry_input_len: None,
+            defer_input_index: false,
             hidden_builtins: Vec::new(),
             per_vertex_member_redeclared: None,
         }

@@ -420,6 +420,7 @@ impl Analyzer {
                     declarators: vec![ast::InitDeclarator {
                         name: name.clone(),
                         array: None,
+                        inner: None,
                         init: Some(init.clone()),
                         span: *span,
                     }],

@@ -897,3 +897,41 @@ fn texel_offsets_and_sampler_array_indices_are_constant_from_130() {
     ok(frag(&src(120)));
     fails(frag(&src(130)), Code::NotConstant);
 }
+
+#[test]
+fn texture_array_lookups_need_their_extension() {
+    let body = "uniform sampler2DArray s;\nuniform sampler1DArrayShadow h;\nvoid main() { gl_FragColor = texture2DArray(s, vec3(0.0), 1.0) + shadow1DArrayLod(h, vec3(0.0), 0.0); }";
+    ok(frag(&format!(
+        "#version 130\n#extension GL_EXT_texture_array : enable\n{body}"
+    )));
+    ok(frag(&format!(
+        "#version 150 compatibility\n#extension GL_EXT_texture_array : require\n{body}"
+    )));
+    fails(
+        frag("#version 130\nuniform sampler2DArray s;\nvoid main() { gl_FragColor = texture2DArray(s, vec3(0.0)); }"),
+        Code::Undeclared,
+    );
+    // The bias form is the fragment stage's.
+    fails(
+        vert("#version 130\n#extension GL_EXT_texture_array : enable\nuniform sampler2DArray s;\nvoid main() { gl_Position = texture2DArray(s, vec3(0.0), 1.0); }"),
+        Code::NoMatchingOverload,
+    );
+    ok(vert("#version 130\n#extension GL_EXT_texture_array : enable\nuniform sampler2DArray s;\nvoid main() { gl_Position = texture2DArrayLod(s, vec3(0.0), 1.0); }"));
+}
+
+#[test]
+fn shader_texture_lod_lookups_need_their_extension() {
+    let ext = "#extension GL_ARB_shader_texture_lod : require\n";
+    // Explicit LOD in a 1.10 fragment shader, derivatives in any stage.
+    let lod =
+        "uniform sampler2D s;\nvoid main() { gl_FragColor = texture2DLod(s, vec2(0.0), 1.0); }";
+    ok(frag(&format!("{ext}{lod}")));
+    fails(frag(lod), Code::VersionTooLow);
+    let grad = "uniform sampler2DShadow s;\nvoid main() { gl_Position = shadow2DProjGradARB(s, vec4(0.0), vec2(1.0), vec2(0.0)); }";
+    ok(vert(&format!("{ext}{grad}")));
+    fails(vert(grad), Code::Undeclared);
+    // The rectangle forms where the language has the samplers.
+    ok(vert(&format!(
+        "#version 140\n{ext}uniform sampler2DRect r;\nin vec4 v;\nvoid main() {{ gl_Position = texture2DRectProjGradARB(r, v, v.xy, v.zw); }}"
+    )));
+}

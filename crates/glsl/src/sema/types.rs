@@ -286,6 +286,7 @@ impl Analyzer {
             name,
             members,
             builtin: self.builtin_mode,
+            per_vertex: false,
         });
         if let Some(n) = &s.name {
             self.check_reserved_name(&n.name, n.span);
