@@ -6,7 +6,7 @@
 use super::interface::LayoutQuals;
 use super::scope::{Symbol, Var};
 use super::Analyzer;
-use crate::ast::{InterfaceBlock, Qualifier};
+use crate::ast::{InterfaceBlock, Qualifier, TypeName};
 use crate::diag::Code;
 use crate::ir::{self, BlockId, BlockMember, Global, Interpolation, Stage, Storage};
 use crate::lang::Feature;
@@ -680,6 +680,21 @@ impl Analyzer {
                         .push("a member's storage qualifier, if any, must be the block's".into());
                     }
                 }
+            }
+            // GLSL 1.50 §4.3.7: "structure definitions cannot be nested
+            // inside a block" (a named struct type declared before it may
+            // be a member's type).
+            if let TypeName::Struct(st) = &m.ty.name {
+                self.error(
+                    Code::TypeMismatch,
+                    st.span,
+                    format!(
+                        "a structure cannot be defined inside block `{}'",
+                        b.name.name
+                    ),
+                )
+                .notes
+                .push("define the struct before the block and name it here".into());
             }
             let ty = self.resolve_type(&m.ty);
             for d in &m.declarators {

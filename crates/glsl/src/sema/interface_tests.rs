@@ -757,3 +757,16 @@ fn block_names_live_per_interface() {
         Code::Redeclared,
     );
 }
+
+/// GLSL 1.50 §4.3.7: "structure definitions cannot be nested inside a
+/// block"; a struct declared before the block may type a member.
+#[test]
+fn structs_are_not_defined_inside_blocks() {
+    fails(
+        &vert("#version 150\nout B { struct S { int a; } c; float d; } inst;\nvoid main() { inst.d = 1.0; }"),
+        Code::TypeMismatch,
+    );
+    ok(&vert(
+        "#version 150\nstruct S { int a; };\nuniform U { S c; float d; } u;\nout float x;\nvoid main() { x = u.d + float(u.c.a); }",
+    ));
+}
