@@ -33,6 +33,7 @@ use crate::assembly::{geometry_input, primitive_count, Mode};
 use crate::ex::{Batch, Emitted, Interface, LANES};
 use crate::linkage::{new_batch, VsLayout};
 use crate::probe::{EmittedBy, Probe};
+use crate::shaded::Vertices;
 use crate::state::PipelineState;
 use crate::vertex::run_vertices;
 use crate::workers::Workers;
@@ -133,16 +134,6 @@ pub fn shade_geometry(
 
 /// Primitives one geometry task takes (batches of `LANES`).
 const PRIMITIVES_PER_TASK: usize = 4 * LANES;
-
-/// What the vertex stage gave a draw, or what the geometry stage gives
-/// the rest of it.
-pub(crate) struct Vertices {
-    pub mode: Mode,
-    /// Per position in the (index) list, the vertex number.
-    pub vertex_of: Vec<u32>,
-    /// The vertices' outputs, `stride` values each.
-    pub outputs: Vec<f32>,
-}
 
 /// Where a geometry lane's inputs come from: (input vertex, geometry input
 /// component, vertex output component, components).

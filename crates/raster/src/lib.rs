@@ -156,6 +156,7 @@
 //! - vertex fetch and the vertex stage: `vertex` (`run_vertices`);
 //! - primitive assembly: `assembly` (`primitive`, `small_polygon`, and
 //!   `geometry_input` with the adjacent vertices);
+//! - shaded vertices passed between the stages: `shaded` (`Vertices`);
 //! - the geometry stage: `geometry` (`run_geometry`: a geometry kernel
 //!   per assembled primitive, 16 per batch, its emitted strips made a
 //!   point, line or triangle list for set-up; [`draw_stages`]);
@@ -222,6 +223,7 @@ mod rasterize;
 mod replay;
 mod setup;
 mod shade;
+mod shaded;
 mod simd;
 mod spare;
 mod state;
