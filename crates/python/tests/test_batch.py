@@ -81,7 +81,14 @@ def test_folder(client, structures, tmp_path):
         assert not (out / f"{name}.png").exists()
     # One row per input; no temporary files left.
     assert sorted(r["name"] for r in manifest_lines(out)) == sorted(by)
-    assert sorted(p.name for p in out.iterdir()) == sorted(["manifest.jsonl"] + [f"{n}.png" for n in ["1crn", "hetatm", "trp", "two-atoms"]])
+    assert sorted(p.name for p in out.iterdir()) == sorted(
+        ["index.html", "manifest.jsonl"] + [f"{n}.png" for n in ["1crn", "hetatm", "trp", "two-atoms"]]
+    )
+    # The contact sheet shows the images and lists the failures.
+    html = (out / "index.html").read_text()
+    assert "4 images, 2 failed" in html
+    assert all(f'src="{n}.png"' in html for n in ["1crn", "hetatm", "trp", "two-atoms"])
+    assert "garbage.pdb:1" in html and 'src="garbage.png"' not in html
 
 
 def test_resume(client, structures, tmp_path):

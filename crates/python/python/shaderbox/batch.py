@@ -16,6 +16,8 @@ Contract (docs/BATCH.md says it at length):
   Rows are appended by the client as results arrive; when the batch ends
   the manifest is rewritten (atomically) with one row per name, the
   latest.
+- ``OUT/index.html`` is a contact sheet of this batch's images with its
+  failures listed, rewritten when a batch ends.
 - A rerun skips names whose latest row is ``ok`` with the PNG present and
   of that SHA-256, and names whose latest row is ``failed`` (unless
   ``retry_failed``); everything else is rendered.
@@ -285,6 +287,37 @@ def _rewrite_manifest(out_dir: str, rows: Dict[str, Dict[str, Any]]) -> None:
     os.replace(tmp, path)
 
 
+def _write_index(out_dir: str, rows: List[Dict[str, Any]]) -> None:
+    """``OUT/index.html``: a contact sheet of the images (the shader
+    gallery's look) and a table of the failures, rewritten atomically."""
+    from html import escape
+
+    ok = [r for r in rows if r["status"] == "ok"]
+    bad = [r for r in rows if r["status"] != "ok"]
+    parts = [
+        "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>shaderbox batch</title>\n"
+        "<style>body{font-family:sans-serif;background:#222;color:#ddd}figure{display:inline-block;"
+        "width:140px;vertical-align:top;margin:6px}img{width:128px;height:128px}"
+        "figcaption{font-size:12px;overflow-wrap:anywhere}code{color:#9cf}td{padding:2px 8px;vertical-align:top}"
+        "</style></head><body>\n",
+        f"<h1>shaderbox batch: {len(ok)} images, {len(bad)} failed</h1>\n",
+    ]
+    for r in ok:
+        name = escape(r["name"])
+        src = escape(r["output"], quote=True)
+        parts.append(f'<figure><img src="{src}" loading="lazy" alt="{name}"><figcaption>{name}</figcaption></figure>\n')
+    if bad:
+        parts.append("<h2>Failed</h2>\n<table>\n")
+        for r in bad:
+            parts.append(f"<tr><td><code>{escape(r['name'])}</code></td><td>{escape(str(r.get('error')))}</td></tr>\n")
+        parts.append("</table>\n")
+    parts.append("</body></html>\n")
+    fd, tmp = tempfile.mkstemp(prefix=".index.", suffix=".tmp", dir=out_dir)
+    with os.fdopen(fd, "w", encoding="utf-8") as f:
+        f.write("".join(parts))
+    os.replace(tmp, os.path.join(out_dir, "index.html"))
+
+
 # ---------------------------------------------------------------- driver
 
 
@@ -402,7 +435,9 @@ def render_many(
             if own_cluster is not None:
                 own_cluster.close()
         _rewrite_manifest(out_dir, rows)
-    return [rows[n] for n in names]
+    result = [rows[n] for n in names]
+    _write_index(out_dir, result)
+    return result
 
 
 # ---------------------------------------------------------------- command
@@ -433,6 +468,15 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--atoms", default="quads", choices=["quads", "points"])
     p.add_argument("-q", "--quiet", action="store_true", help="no progress line")
     return p
+
+
+def _has_dashboard() -> bool:
+    """Whether Dask serves its dashboard (it needs bokeh)."""
+    try:
+        import bokeh  # noqa: F401
+    except ImportError:
+        return False
+    return True
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
@@ -473,19 +517,34 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         sys.stderr.write(f"\r[{'#' * filled}{'.' * (width - filled)}] {done}/{total} failed {failed}")
         sys.stderr.flush()
 
-    client = None
+    try:
+        # Before starting a cluster: a bad option is misuse (exit 2).
+        _check_options(options)
+    except (ValueError, TypeError) as e:
+        p.error(str(e))
+    from dask.distributed import Client, LocalCluster
+
+    client = cluster = None
+    threads = a.threads
     try:
         if a.scheduler:
-            from dask.distributed import Client
-
             client = Client(a.scheduler)
+        else:
+            workers = a.workers or _local_threads(1)
+            cluster = LocalCluster(
+                n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=":0", silence_logs=40
+            )
+            client = Client(cluster)
+            if threads is None:
+                threads = _local_threads(workers)
+        if not a.quiet and _has_dashboard():
+            sys.stderr.write(f"Dask dashboard: {client.dashboard_link}\n")
         try:
             rows = render_many(
                 inputs,
                 a.out,
                 client,
-                workers=a.workers,
-                threads=a.threads,
+                threads=threads,
                 chunk_size=a.chunk_size,
                 retry_failed=a.retry_failed,
                 progress=progress,
@@ -496,6 +555,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     finally:
         if client is not None:
             client.close()
+        if cluster is not None:
+            cluster.close()
     seconds = time.perf_counter() - t0
     if not a.quiet:
         sys.stderr.write("\n")
@@ -505,7 +566,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     rate = ran / seconds if seconds > 0 else 0.0
     print(
         f"{len(rows)} inputs: {ok} ok, {failed} failed; {ran} rendered this run in {seconds:.1f} s "
-        f"({rate:.2f} molecules/s); manifest {os.path.join(a.out, MANIFEST)}"
+        f"({rate:.2f} molecules/s); manifest {os.path.join(a.out, MANIFEST)}, contact sheet {os.path.join(a.out, 'index.html')}"
     )
     return 1 if failed else 0
 
