@@ -141,10 +141,36 @@ def test_ccd(client, tmp_path):
 
 
 def test_ccd_pdb_text():
+    """The worker's dictionary index gives biotite's atoms, coordinates
+    (ideal, else model) and bonds."""
+    import warnings
+
+    import numpy as np
+    from biotite.structure import info
+
     text = batch._ccd_pdb("ALA").decode()
     hetatm = [line for line in text.splitlines() if line.startswith("HETATM")]
     assert len(hetatm) == 13 and hetatm[0][76:78] == " N"
-    assert any(line.startswith("CONECT") for line in text.splitlines())
+    for name in ["ALA", "ATP", "HEM", "000", "NAG", "SO4"] + list(info.all_residues()[:40]):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            ref = info.residue(name)
+        lines = batch._ccd_pdb(name).decode().splitlines()
+        het = [line for line in lines if line.startswith("HETATM")]
+        xyz = np.array([[float(line[k : k + 8]) for k in (30, 38, 46)] for line in het])
+        assert len(het) == ref.array_length(), name
+        assert np.allclose(xyz, ref.coord, atol=6e-4), name
+        assert [line[76:78].strip() for line in het] == [e.upper() for e in ref.element], name
+        conect = set()
+        for line in lines:
+            if line.startswith("CONECT"):
+                a = int(line[6:11])
+                for k in range(11, len(line), 5):
+                    b = int(line[k : k + 5])
+                    conect.add((min(a, b) - 1, max(a, b) - 1))
+        assert conect == {(min(a, b), max(a, b)) for a, b, _ in ref.bonds.as_array()}, name
+    with pytest.raises(RuntimeError, match="no atoms"):
+        batch._ccd_pdb("NOT-A-COMPONENT")
 
 
 def test_worker_death(structures, tmp_path, monkeypatch):

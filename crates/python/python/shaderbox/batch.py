@@ -136,36 +136,93 @@ def _names(inputs: Sequence[str]) -> List[str]:
 # ---------------------------------------------------------------- workers
 
 
-def _ccd_pdb(component: str) -> bytes:
-    """The component's atoms (and bonds, as CONECT) as PDB text."""
-    import numpy as np
-    from biotite.structure import info
+class _CcdIndex:
+    """biotite's dictionary decoded once per worker process: the
+    ``chem_comp_atom`` and ``chem_comp_bond`` columns as numpy arrays and
+    each component's row range (its rows are contiguous). biotite's own
+    per-component lookup masks the whole category each call (~30 ms); a
+    slice here costs microseconds. Coordinates are chosen as biotite's
+    ``info.residue`` does: the ideal ones when all are present, else the
+    model ones, else none."""
 
-    with warnings.catch_warnings():
-        # Model coordinates standing in for missing ideal ones: accepted.
-        warnings.simplefilter("ignore")
-        atoms = info.residue(component)
-    if atoms.array_length() == 0:
-        raise RuntimeError(f"ccd:{component}: the component has no atoms")
-    if not np.isfinite(atoms.coord).all():
-        raise RuntimeError(f"ccd:{component}: the component has no coordinates")
-    lines = []
-    for i in range(atoms.array_length()):
-        x, y, z = (float(v) for v in atoms.coord[i])
-        name = str(atoms.atom_name[i])[:4]
-        element = str(atoms.element[i]).upper()[:2]
-        lines.append(f"HETATM{i + 1:5d} {name:<4s} UNL A   1    {x:8.3f}{y:8.3f}{z:8.3f}  1.00  0.00          {element:>2s}")
-    if atoms.bonds is not None:
+    def __init__(self) -> None:
+        import numpy as np
+        from biotite.structure.info.ccd import get_ccd
+
+        block = get_ccd()
+        atoms = block["chem_comp_atom"]
+        bonds = block["chem_comp_bond"]
+        self.atom_comp = atoms["comp_id"].as_array(str)
+        self.atom_name = atoms["atom_id"].as_array(str)
+        self.element = atoms["type_symbol"].as_array(str)
+
+        def coords(fields):
+            xyz = np.stack([atoms[f].as_array(np.float64, masked_value=np.nan) for f in fields], axis=1)
+            return xyz
+
+        self.ideal = coords([f"pdbx_model_Cartn_{d}_ideal" for d in "xyz"])
+        self.model = coords([f"model_Cartn_{d}" for d in "xyz"])
+        self.atom_ranges = self._ranges(self.atom_comp)
+        self.bond_comp = bonds["comp_id"].as_array(str)
+        self.bond_1 = bonds["atom_id_1"].as_array(str)
+        self.bond_2 = bonds["atom_id_2"].as_array(str)
+        self.bond_ranges = self._ranges(self.bond_comp)
+
+    @staticmethod
+    def _ranges(ids) -> Dict[str, Tuple[int, int]]:
+        import numpy as np
+
+        if len(ids) == 0:
+            return {}
+        starts = np.concatenate([[0], np.flatnonzero(ids[1:] != ids[:-1]) + 1])
+        ends = np.concatenate([starts[1:], [len(ids)]])
+        ranges = {str(ids[a]): (int(a), int(b)) for a, b in zip(starts, ends)}
+        if len(ranges) != len(starts):
+            raise RuntimeError("biotite's Chemical Component Dictionary lists a component's rows apart")
+        return ranges
+
+    def pdb(self, component: str) -> bytes:
+        """The component's atoms (and bonds, as CONECT) as PDB text."""
+        import numpy as np
+
+        if component not in self.atom_ranges:
+            raise RuntimeError(f"ccd:{component}: the component has no atoms")
+        a, b = self.atom_ranges[component]
+        xyz = self.ideal[a:b]
+        if not np.isfinite(xyz).all():
+            xyz = self.model[a:b]
+        if not np.isfinite(xyz).all():
+            raise RuntimeError(f"ccd:{component}: the component has no coordinates (neither ideal nor model)")
+        names = [str(n) for n in self.atom_name[a:b]]
+        lines = []
+        for i, (name, element, (x, y, z)) in enumerate(zip(names, self.element[a:b], xyz)):
+            el = str(element).upper()[:2]
+            lines.append(f"HETATM{i + 1:5d} {name[:4]:<4s} UNL A   1    {x:8.3f}{y:8.3f}{z:8.3f}  1.00  0.00          {el:>2s}")
+        index = {n: i for i, n in enumerate(names)}
         partners: Dict[int, List[int]] = {}
-        for a, b, _ in atoms.bonds.as_array():
-            partners.setdefault(int(a), []).append(int(b))
-            partners.setdefault(int(b), []).append(int(a))
-        for a in sorted(partners):
-            ps = sorted(partners[a])
+        ba, bb = self.bond_ranges.get(component, (0, 0))
+        for n1, n2 in zip(self.bond_1[ba:bb], self.bond_2[ba:bb]):
+            i, j = index.get(str(n1)), index.get(str(n2))
+            if i is None or j is None:
+                continue
+            partners.setdefault(i, []).append(j)
+            partners.setdefault(j, []).append(i)
+        for i in sorted(partners):
+            ps = sorted(partners[i])
             for k in range(0, len(ps), 4):
-                lines.append("CONECT" + f"{a + 1:5d}" + "".join(f"{p + 1:5d}" for p in ps[k : k + 4]))
-    lines.append("END")
-    return ("\n".join(lines) + "\n").encode("ascii")
+                lines.append("CONECT" + f"{i + 1:5d}" + "".join(f"{p + 1:5d}" for p in ps[k : k + 4]))
+        lines.append("END")
+        return ("\n".join(lines) + "\n").encode("ascii")
+
+
+_CCD: List[_CcdIndex] = []
+
+
+def _ccd_pdb(component: str) -> bytes:
+    """The component as PDB text, from this process's dictionary index."""
+    if not _CCD:
+        _CCD.append(_CcdIndex())
+    return _CCD[0].pdb(component)
 
 
 class _Renderer:
