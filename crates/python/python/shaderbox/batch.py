@@ -40,7 +40,6 @@ import os
 import sys
 import tempfile
 import time
-import warnings
 from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple
 
 from ._molecule import _background, _lights, _size, render_molecule
@@ -157,8 +156,7 @@ class _CcdIndex:
         self.element = atoms["type_symbol"].as_array(str)
 
         def coords(fields):
-            xyz = np.stack([atoms[f].as_array(np.float64, masked_value=np.nan) for f in fields], axis=1)
-            return xyz
+            return np.stack([atoms[f].as_array(np.float64, masked_value=np.nan) for f in fields], axis=1)
 
         self.ideal = coords([f"pdbx_model_Cartn_{d}_ideal" for d in "xyz"])
         self.model = coords([f"model_Cartn_{d}" for d in "xyz"])
