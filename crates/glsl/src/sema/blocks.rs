@@ -361,33 +361,10 @@ impl Analyzer {
                 continue;
             };
             let builtin_ty = self.var_type(v);
-            if builtin_ty.base != m.ty.base || builtin_ty.is_array() != m.ty.is_array() {
-                self.error(
-                    Code::TypeMismatch,
-                    span,
-                    format!(
-                        "`{}' is redeclared as {}, but it is {}",
-                        m.name,
-                        self.tn(m.ty),
-                        self.tn(builtin_ty)
-                    ),
-                );
+            if !self.redeclared_member_fits(&m, builtin_ty, span) {
                 continue;
             }
-            if let Some(ArraySize::Sized(n)) = m.ty.array {
-                let max = if m.name == "gl_TexCoord" {
-                    crate::limits::MAX_TEXTURE_COORDS
-                } else {
-                    crate::limits::MAX_CLIP_PLANES
-                };
-                if n > max {
-                    self.error(
-                        Code::BadArraySize,
-                        span,
-                        format!("`{}' redeclared with size {n}, larger than {max}", m.name),
-                    );
-                    continue;
-                }
+            if let Some(ArraySize::Sized(_)) = m.ty.array {
                 self.set_var_type(v, m.ty);
             }
             if let Some(g) = self.global_of(v) {
@@ -417,6 +394,42 @@ impl Analyzer {
     /// type then has exactly the members redeclared, so the others are no
     /// longer fields; recorded in [`ir::Module::per_vertex_in`] for the
     /// linker.
+    /// Whether member `m` of a redeclared `gl_PerVertex` block keeps the
+    /// built-in member's type `builtin` (an array's size aside) and, when
+    /// it gives `gl_ClipDistance` or `gl_TexCoord` a size, one within the
+    /// built-in limit; else the error at `span`.
+    fn redeclared_member_fits(&mut self, m: &BlockMember, builtin: Type, span: Span) -> bool {
+        if builtin.base != m.ty.base || builtin.is_array() != m.ty.is_array() {
+            self.error(
+                Code::TypeMismatch,
+                span,
+                format!(
+                    "`{}' is redeclared as {}, but it is {}",
+                    m.name,
+                    self.tn(m.ty),
+                    self.tn(builtin)
+                ),
+            );
+            return false;
+        }
+        if let Some(ArraySize::Sized(n)) = m.ty.array {
+            let max = if m.name == "gl_TexCoord" {
+                crate::limits::MAX_TEXTURE_COORDS
+            } else {
+                crate::limits::MAX_CLIP_DISTANCES
+            };
+            if n > max {
+                self.error(
+                    Code::BadArraySize,
+                    span,
+                    format!("`{}' redeclared with size {n}, larger than {max}", m.name),
+                );
+                return false;
+            }
+        }
+        true
+    }
+
     fn redeclare_per_vertex_in(&mut self, b: &InterfaceBlock) {
         let Some((inst, arr)) = &b.instance else {
             self.error(
@@ -504,33 +517,8 @@ impl Analyzer {
                 );
                 continue;
             };
-            if bm.ty.base != m.ty.base || bm.ty.is_array() != m.ty.is_array() {
-                self.error(
-                    Code::TypeMismatch,
-                    span,
-                    format!(
-                        "`{}' is redeclared as {}, but it is {}",
-                        m.name,
-                        self.tn(m.ty),
-                        self.tn(bm.ty)
-                    ),
-                );
+            if !self.redeclared_member_fits(&m, bm.ty, span) {
                 continue;
-            }
-            if let Some(ArraySize::Sized(n)) = m.ty.array {
-                let max = if m.name == "gl_TexCoord" {
-                    crate::limits::MAX_TEXTURE_COORDS
-                } else {
-                    crate::limits::MAX_CLIP_DISTANCES
-                };
-                if n > max {
-                    self.error(
-                        Code::BadArraySize,
-                        span,
-                        format!("`{}' redeclared with size {n}, larger than {max}", m.name),
-                    );
-                    continue;
-                }
             }
             kept.push(m);
         }
