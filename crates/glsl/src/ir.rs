@@ -789,6 +789,23 @@ pub struct FragCoordConventions {
 }
 
 impl Module {
+    /// A module of `language` and `stage` that declares nothing yet.
+    pub fn empty(language: Language, stage: Stage) -> Module {
+        Module {
+            language,
+            stage,
+            structs: Vec::new(),
+            globals: Vec::new(),
+            functions: Vec::new(),
+            extensions: Vec::new(),
+            blocks: Vec::new(),
+            frag_coord: Default::default(),
+            geometry: Default::default(),
+            per_vertex_out: None,
+            per_vertex_in: None,
+        }
+    }
+
     pub fn global(&self, id: GlobalId) -> &Global {
         &self.globals[id.0 as usize]
     }

@@ -25,23 +25,12 @@ pub(super) fn merge_stage(
     diags: &mut Vec<LinkDiagnostic>,
 ) -> Option<LinkedStage> {
     let first = objects[0].1;
-    let mut merged = Module {
-        language: objects
-            .iter()
-            .map(|(_, m)| m.language)
-            .max_by_key(|l| l.version)
-            .unwrap_or(first.language),
-        stage,
-        structs: Vec::new(),
-        globals: Vec::new(),
-        functions: Vec::new(),
-        extensions: Vec::new(),
-        blocks: Vec::new(),
-        frag_coord: Default::default(),
-        geometry: Default::default(),
-        per_vertex_out: None,
-        per_vertex_in: None,
-    };
+    let language = objects
+        .iter()
+        .map(|(_, m)| m.language)
+        .max_by_key(|l| l.version)
+        .unwrap_or(first.language);
+    let mut merged = Module::empty(language, stage);
     let mut errors = false;
     // Global name -> (merged id, object that declared it first).
     let mut global_names: BTreeMap<String, (GlobalId, usize)> = BTreeMap::new();

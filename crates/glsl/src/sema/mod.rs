@@ -206,22 +206,7 @@ fn build_env(lang: Language, stage: Stage, input: Option<ir::InputPrimitive>) ->
     let mut diagnostics = pp.diagnostics;
     diagnostics.extend(parse_diags);
     diagnostics.append(&mut a.diags);
-    let module = std::mem::replace(
-        &mut a.module,
-        Module {
-            language: lang,
-            stage,
-            structs: Vec::new(),
-            globals: Vec::new(),
-            functions: Vec::new(),
-            extensions: Vec::new(),
-            blocks: Vec::new(),
-            frag_coord: Default::default(),
-            geometry: Default::default(),
-            per_vertex_out: None,
-            per_vertex_in: None,
-        },
-    );
+    let module = std::mem::replace(&mut a.module, Module::empty(lang, stage));
     // Prototypes without bodies become built-in functions.
     let mut fn_map: HashMap<u32, u32> = HashMap::default();
     let mut functions = Vec::new();
@@ -347,17 +332,8 @@ impl Analyzer {
             builtin_mode: false,
             env,
             module: Module {
-                language: lang,
-                stage,
                 structs,
-                globals: Vec::new(),
-                functions: Vec::new(),
-                extensions: Vec::new(),
-                blocks: Vec::new(),
-                frag_coord: Default::default(),
-                geometry: Default::default(),
-                per_vertex_out: None,
-                per_vertex_in: None,
+                ..Module::empty(lang, stage)
             },
             diags: Vec::new(),
             scopes: Scopes::new(),
