@@ -170,13 +170,7 @@ impl Context {
     /// takes the primitives of `mode` (GL 3.3 §2.12.1, "Primitive Type
     /// Mismatches and Drawing Commands").
     pub(crate) fn geometry_takes(&self, mode: u32) -> bool {
-        let input = self
-            .programs
-            .get(&self.current_program)
-            .and_then(|p| p.exe.as_ref().filter(|_| p.link_status))
-            .and_then(|e| e.program.stage(Stage::Geometry))
-            .map(|g| g.module.geometry.input);
-        let Some(input) = input else {
+        let Some(input) = self.current_geometry().map(|g| g.input) else {
             return true;
         };
         match input {
@@ -201,16 +195,18 @@ impl Context {
     /// transform feedback mode that captures it (GL_POINTS, GL_LINES or
     /// GL_TRIANGLES), if it has a geometry stage.
     pub(crate) fn geometry_feedback_mode(&self) -> Option<u32> {
-        let output = self
-            .programs
-            .get(&self.current_program)
-            .and_then(|p| p.exe.as_ref().filter(|_| p.link_status))
-            .and_then(|e| e.program.stage(Stage::Geometry))
-            .and_then(|g| g.module.geometry.output)?;
-        Some(match output {
-            OutputPrimitive::Points => GL_POINTS,
-            OutputPrimitive::LineStrip => GL_LINES,
-            OutputPrimitive::TriangleStrip => GL_TRIANGLES,
-        })
+        let output = self.current_geometry()?.output?;
+        Some(crate::transform_feedback::feedback_mode(output_enum(
+            output,
+        )))
+    }
+
+    /// The layouts of the current program's linked geometry stage, if it
+    /// has one.
+    fn current_geometry(&self) -> Option<glsl::ir::GeometryLayout> {
+        self.current_executable()?
+            .program
+            .stage(Stage::Geometry)
+            .map(|g| g.module.geometry)
     }
 }

@@ -165,11 +165,7 @@ impl Context {
     /// for the vertex and fragment stages it lacks (with the fragment
     /// stage's shape).
     pub(crate) fn draw_kernels(&mut self) -> Result<DrawKernels, String> {
-        let (user_vs, gs, user_fs, fs_tc) = match self
-            .programs
-            .get(&self.current_program)
-            .and_then(|p| p.exe.as_ref().filter(|_| p.link_status))
-        {
+        let (user_vs, gs, user_fs, fs_tc) = match self.current_executable() {
             Some(e) => (
                 e.kernels.vs.clone(),
                 e.kernels.gs.clone(),

@@ -103,11 +103,7 @@ impl Context {
     /// The raster position of object-space `pos`, or None when it is
     /// clipped (or the vertex stage cannot run).
     fn transform_raster_pos(&mut self, pos: [f32; 4]) -> Option<RasterPos> {
-        let user = self
-            .programs
-            .get(&self.current_program)
-            .and_then(|p| p.exe.as_ref().filter(|_| p.link_status))
-            .and_then(|e| e.kernels.vs.clone());
+        let user = self.current_executable().and_then(|e| e.kernels.vs.clone());
         let (vs, is_user) = match user {
             Some(k) => (k, true),
             None => {

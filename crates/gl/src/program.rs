@@ -200,6 +200,13 @@ impl Context {
             .flatten()
     }
 
+    /// The executable of the current program, when it linked.
+    pub(crate) fn current_executable(&self) -> Option<&Executable> {
+        self.programs
+            .get(&self.current_program)
+            .and_then(|p| p.exe.as_ref().filter(|_| p.link_status))
+    }
+
     /// The value of a glGet*iv query: 0 after a name's error, and
     /// `GL_INVALID_ENUM` with 0 for a pname the query does not know
     /// (`Some(None)`).

@@ -206,7 +206,7 @@ pub(crate) fn decompose(mode: u32, n: usize, first: bool) -> Vec<usize> {
 }
 
 /// The feedback primitive mode a draw mode makes (GL 3.3 table 2.12).
-fn feedback_mode(mode: u32) -> u32 {
+pub(crate) fn feedback_mode(mode: u32) -> u32 {
     match mode {
         GL_POINTS => GL_POINTS,
         GL_LINES | GL_LINE_STRIP | GL_LINE_LOOP => GL_LINES,
