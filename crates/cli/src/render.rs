@@ -349,6 +349,8 @@ fn run_inner(args: &Args) -> Exit {
     };
     let mut status = Exit::Ok;
     let mut loaded: Option<(Option<PathBuf>, Structure)> = None;
+    // One context and its compiled programs for every image.
+    let mut renderer = render::Renderer::new();
     for job in &jobs {
         let structure = match &loaded {
             Some((f, s)) if *f == job.file => s,
@@ -370,7 +372,13 @@ fn run_inner(args: &Args) -> Exit {
             rotate: job.rotate,
             ..base.clone()
         };
-        let result = write_one(structure, &opts, &job.output, args.export_scene.as_deref());
+        let result = write_one(
+            &mut renderer,
+            structure,
+            &opts,
+            &job.output,
+            args.export_scene.as_deref(),
+        );
         match result {
             Ok(line) => {
                 if progress.is_none() {
@@ -407,12 +415,13 @@ fn run_inner(args: &Args) -> Exit {
 
 /// Renders one image and writes it (and the scene); the message to print.
 fn write_one(
+    renderer: &mut render::Renderer,
     structure: &Structure,
     opts: &RenderOptions,
     output: &Path,
     export_scene: Option<&Path>,
 ) -> Result<String, (Exit, String)> {
-    let (image, scene) = match render::render_scene(structure, opts) {
+    let (image, scene) = match renderer.render_scene(structure, opts) {
         Ok(r) => r,
         Err(
             e @ (render::RenderError::Size { .. }

@@ -424,9 +424,10 @@ fn check_options(opts: &RenderOptions) -> Result<(), RenderError> {
     Ok(())
 }
 
-/// Renders `structure` into an image (top row first).
+/// Renders `structure` into an image (top row first), on a context of
+/// its own ([`Renderer`] keeps one for many renders).
 pub fn render(structure: &Structure, opts: &RenderOptions) -> Result<Image, RenderError> {
-    render_scene(structure, opts).map(|(image, _)| image)
+    Renderer::new().render(structure, opts)
 }
 
 /// Renders `structure` and returns the image with the GL calls that drew
@@ -435,10 +436,73 @@ pub fn render_scene(
     structure: &Structure,
     opts: &RenderOptions,
 ) -> Result<(Image, Scene), RenderError> {
-    check_options(opts)?;
+    Renderer::new().render_scene(structure, opts)
+}
+
+/// Renders molecule after molecule on one GL context, keeping the
+/// library programs it has compiled: for batches, where creating a
+/// context and compiling the programs would cost more than drawing a
+/// small molecule.
+///
+/// Every render sets all the state it draws with (matrices, lights,
+/// material, fog parameters, clear values, depth test, program and
+/// uniforms, vertex arrays), so an image does not depend on what was
+/// rendered before: it is the same bytes as [`render`]'s
+/// (`tests/renderer.rs`). The context is kept while the framebuffer size
+/// (width and height times the supersampling) stays the same and made
+/// anew when it changes; after a failed render it is dropped.
+#[derive(Default)]
+pub struct Renderer {
+    session: Option<Recorder>,
+}
+
+impl Renderer {
+    /// A renderer with no context yet (the first render makes it).
+    pub fn new() -> Renderer {
+        Renderer::default()
+    }
+
+    /// Renders `structure` into an image (top row first), as [`render`].
+    pub fn render(
+        &mut self,
+        structure: &Structure,
+        opts: &RenderOptions,
+    ) -> Result<Image, RenderError> {
+        self.render_scene(structure, opts).map(|(image, _)| image)
+    }
+
+    /// Renders `structure` and returns the image with the GL calls that
+    /// drew it, as [`render_scene`].
+    pub fn render_scene(
+        &mut self,
+        structure: &Structure,
+        opts: &RenderOptions,
+    ) -> Result<(Image, Scene), RenderError> {
+        check_options(opts)?;
+        let ss = opts.supersample;
+        let (fw, fh) = (opts.width * ss, opts.height * ss);
+        let mut rec = match self.session.take() {
+            Some(mut rec) if (rec.ctx.width(), rec.ctx.height()) == (fw as i32, fh as i32) => {
+                rec.begin();
+                rec
+            }
+            _ => Recorder::new(fw, fh),
+        };
+        let out = draw(&mut rec, structure, opts)?;
+        self.session = Some(rec);
+        Ok(out)
+    }
+}
+
+/// Draws `structure` with `opts` (already checked) on the recorder's
+/// context, whose framebuffer is the supersampled size.
+fn draw(
+    rec: &mut Recorder,
+    structure: &Structure,
+    opts: &RenderOptions,
+) -> Result<(Image, Scene), RenderError> {
     let ss = opts.supersample;
     let (fw, fh) = (opts.width * ss, opts.height * ss);
-    let mut rec = Recorder::new(fw, fh);
 
     let radius_of = |a: &Atom| match opts.style {
         Style::Spacefill => a.element.radius(),
@@ -503,7 +567,7 @@ pub fn render_scene(
         Background::Color(c) => (c, 1.0),
         Background::Transparent => ([0.0; 3], 0.0),
     };
-    let fogging = set_fog(&mut rec, opts.fog, &camera, [bg[0], bg[1], bg[2], 1.0]);
+    let fogging = set_fog(rec, opts.fog, &camera, [bg[0], bg[1], bg[2], 1.0]);
     rec.clear_color([bg[0], bg[1], bg[2], alpha]);
     rec.clear_depth(1.0);
     rec.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -578,7 +642,7 @@ pub fn render_scene(
     check(&mut rec.ctx, "drawing the atoms")?;
 
     if opts.style == Style::BallAndStick {
-        draw_bonds(&mut rec, structure, persp, viewport, &fogging, &enabled)?;
+        draw_bonds(rec, structure, persp, viewport, &fogging, &enabled)?;
     }
 
     let pixels = rec.ctx.read_pixels_f32(0, 0, fw as i32, fh as i32);

@@ -86,10 +86,21 @@ pub struct Scene {
 }
 
 /// A [`gl::Context`] that records every call it makes.
+///
+/// The library programs it builds stay in the context, keyed by their
+/// names, and [`Recorder::begin`] starts a new recording on the same
+/// context: a [`crate::Renderer`] draws molecule after molecule without
+/// creating a context or compiling a program again. The recording of
+/// each render still lists every program it used with its sources, so a
+/// replay does not depend on what earlier renders built.
 pub struct Recorder {
     pub ctx: Context,
     pub calls: Vec<Call>,
+    /// This recording's program ids (the `id` of [`Call::Program`]) to
+    /// the context's program names.
     programs: Vec<u32>,
+    /// Library programs built on the context so far: name, program name.
+    built: Vec<(&'static str, u32)>,
 }
 
 impl Recorder {
@@ -99,7 +110,15 @@ impl Recorder {
             ctx: Context::new(width as i32, height as i32),
             calls: Vec::new(),
             programs: Vec::new(),
+            built: Vec::new(),
         }
+    }
+
+    /// Forgets the calls recorded so far (not the programs built): the
+    /// next call starts a new scene.
+    pub fn begin(&mut self) {
+        self.calls.clear();
+        self.programs.clear();
     }
 
     /// Runs `call` on the context and records it.
@@ -155,10 +174,18 @@ impl Recorder {
         self.run(Call::DepthFunc(func));
     }
 
-    /// Builds a library program and uses it; returns its scene id. (Built
-    /// from the library's files so that errors name them.)
+    /// Builds a library program (once per context: later calls reuse it)
+    /// and uses it; returns its scene id. (Built from the library's files
+    /// so that errors name them.)
     pub fn program(&mut self, p: &crate::library::Program) -> Result<usize, String> {
-        let gl_name = crate::library::build(&mut self.ctx, p)?;
+        let gl_name = match self.built.iter().find(|(name, _)| *name == p.name) {
+            Some(&(_, gl_name)) => gl_name,
+            None => {
+                let gl_name = crate::library::build(&mut self.ctx, p)?;
+                self.built.push((p.name, gl_name));
+                gl_name
+            }
+        };
         self.ctx.use_program(gl_name);
         let id = self.programs.len();
         self.programs.push(gl_name);
