@@ -8,7 +8,7 @@
 //! errors (read back with `get_error`), never a panic. Draws release the
 //! GIL.
 
-use crate::molecule::{self, MoleculeArgs, MoleculeError};
+use crate::molecule::{self, MoleculeArgs, MoleculeError, Source};
 use crate::report::{self, Located, Report};
 use gl::enums::*;
 use gl::{ArrayData, Context, Param};
@@ -182,54 +182,86 @@ fn encode_png<'py>(
     Ok(PyBytes::new(py, &png))
 }
 
-/// render_molecule(path, width, height, projection, fog, lights, rotate,
-/// supersample, background, effect, style, atoms="quads") -> (width, height,
-/// rgba, has_alpha)
-#[pyfunction]
-#[allow(clippy::too_many_arguments)]
-#[pyo3(signature = (path, width, height, projection, fog, lights, rotate, supersample, background, effect, style, atoms = "quads"))]
-fn render_molecule<'py>(
-    py: Python<'py>,
-    path: Option<PathBuf>,
-    width: u32,
-    height: u32,
-    projection: &str,
-    fog: &str,
-    lights: Vec<u8>,
-    rotate: [f32; 3],
-    supersample: u32,
-    background: Option<[f32; 3]>,
-    effect: &str,
-    style: &str,
-    atoms: &str,
-) -> PyResult<(u32, u32, Bound<'py, PyBytes>, bool)> {
-    let args = MoleculeArgs {
-        width,
-        height,
-        projection,
-        fog,
-        lights,
-        rotate,
-        supersample,
-        background,
-        effect,
-        style,
-        atoms,
-    };
-    let result = py.detach(|| molecule::render_molecule(path.as_deref(), &args));
-    match result {
-        Ok(img) => {
-            let bytes: Vec<u8> = img.pixels.iter().flatten().copied().collect();
-            Ok((
-                img.width,
-                img.height,
-                PyBytes::new(py, &bytes),
-                img.has_alpha,
-            ))
+/// A molecule renderer keeping one GL context and its compiled programs
+/// across calls ([`render::Renderer`]); `shaderbox.MoleculeRenderer` and
+/// `shaderbox.render_molecule` (a new one per call) wrap it. Calls lock it.
+#[pyclass(module = "shaderbox._shaderbox")]
+#[derive(Default)]
+struct RawMoleculeRenderer {
+    renderer: Mutex<render::Renderer>,
+}
+
+#[pymethods]
+impl RawMoleculeRenderer {
+    #[new]
+    fn new() -> RawMoleculeRenderer {
+        RawMoleculeRenderer::default()
+    }
+
+    /// render(path, text, name, width, height, projection, fog, lights,
+    /// rotate, supersample, background, effect, style, atoms) -> (width,
+    /// height, rgba, has_alpha). The structure: `text` (PDB or mmCIF,
+    /// called `name` in errors) when given, else the file `path`, else
+    /// crambin.
+    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (path, text, name, width, height, projection, fog, lights, rotate, supersample, background, effect, style, atoms))]
+    fn render<'py>(
+        &self,
+        py: Python<'py>,
+        path: Option<PathBuf>,
+        text: Option<Vec<u8>>,
+        name: &str,
+        width: u32,
+        height: u32,
+        projection: &str,
+        fog: &str,
+        lights: Vec<u8>,
+        rotate: [f32; 3],
+        supersample: u32,
+        background: Option<[f32; 3]>,
+        effect: &str,
+        style: &str,
+        atoms: &str,
+    ) -> PyResult<(u32, u32, Bound<'py, PyBytes>, bool)> {
+        let args = MoleculeArgs {
+            width,
+            height,
+            projection,
+            fog,
+            lights,
+            rotate,
+            supersample,
+            background,
+            effect,
+            style,
+            atoms,
+        };
+        let source = match (&text, &path) {
+            (Some(t), _) => Source::Text(t, name),
+            (None, Some(p)) => Source::File(p),
+            (None, None) => Source::Crambin,
+        };
+        let result = py.detach(|| {
+            // A panic while locked cannot happen (render never panics); if
+            // it did, the renderer makes a new context on a size change
+            // and draws with fully specified state anyway.
+            let mut r = self.renderer.lock().unwrap_or_else(|e| e.into_inner());
+            molecule::render_molecule(&mut r, source, &args)
+        });
+        match result {
+            Ok(img) => {
+                let bytes: Vec<u8> = img.pixels.iter().flatten().copied().collect();
+                Ok((
+                    img.width,
+                    img.height,
+                    PyBytes::new(py, &bytes),
+                    img.has_alpha,
+                ))
+            }
+            Err(MoleculeError::Option(m)) => Err(PyValueError::new_err(m)),
+            Err(MoleculeError::Io(m)) => Err(PyOSError::new_err(m)),
+            Err(MoleculeError::Failed(m)) => Err(PyRuntimeError::new_err(m)),
         }
-        Err(MoleculeError::Option(m)) => Err(PyValueError::new_err(m)),
-        Err(MoleculeError::Io(m)) => Err(PyOSError::new_err(m)),
-        Err(MoleculeError::Failed(m)) => Err(PyRuntimeError::new_err(m)),
     }
 }
 
@@ -936,6 +968,6 @@ fn _shaderbox(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(link_report, m)?)?;
     m.add_function(wrap_pyfunction!(library_shaders, m)?)?;
     m.add_function(wrap_pyfunction!(encode_png, m)?)?;
-    m.add_function(wrap_pyfunction!(render_molecule, m)?)?;
+    m.add_class::<RawMoleculeRenderer>()?;
     Ok(())
 }

@@ -1,7 +1,9 @@
-//! `shaderbox.render_molecule`: the options of `shaderbox render` (the CLI)
-//! by name, checked, then [`render::render`].
+//! `shaderbox.render_molecule` and `shaderbox.MoleculeRenderer`: the
+//! options of `shaderbox render` (the CLI) by name, checked, then a
+//! [`render::Renderer`] (a fresh one per call for `render_molecule`, one
+//! kept across calls for `MoleculeRenderer`).
 
-use render::{Atoms, Background, Effect, Fog, Projection, RenderOptions, Style};
+use render::{Atoms, Background, Effect, Fog, Projection, RenderOptions, Renderer, Style};
 use std::path::Path;
 
 /// The options as Python passes them (already typed; names checked here).
@@ -117,23 +119,37 @@ pub fn options(a: &MoleculeArgs) -> Result<RenderOptions, MoleculeError> {
     })
 }
 
-/// Loads the structure (crambin when `path` is `None`) and renders it.
+/// Where the structure comes from.
+#[derive(Clone, Copy, Debug)]
+pub enum Source<'a> {
+    /// Crambin, embedded.
+    Crambin,
+    /// A PDB or mmCIF file.
+    File(&'a Path),
+    /// PDB or mmCIF text, and the name errors give it.
+    Text(&'a [u8], &'a str),
+}
+
+/// Loads the structure and renders it with `renderer`.
 pub fn render_molecule(
-    path: Option<&Path>,
+    renderer: &mut Renderer,
+    source: Source,
     args: &MoleculeArgs,
 ) -> Result<render::Image, MoleculeError> {
     let opts = options(args)?;
-    let structure = match path {
-        None => render::crambin(),
-        Some(p) => match render::load_file(p) {
-            Ok(s) => s,
-            Err(e @ render::LoadError::Io { .. }) => {
-                return Err(MoleculeError::Io(format!("cannot read {e}")))
-            }
-            Err(e) => return Err(MoleculeError::Failed(e.to_string())),
-        },
+    let loaded = match source {
+        Source::Crambin => Ok(render::crambin()),
+        Source::File(p) => render::load_file(p),
+        Source::Text(bytes, name) => render::parse(bytes, name),
     };
-    render::render(&structure, &opts).map_err(|e| match e {
+    let structure = match loaded {
+        Ok(s) => s,
+        Err(e @ render::LoadError::Io { .. }) => {
+            return Err(MoleculeError::Io(format!("cannot read {e}")))
+        }
+        Err(e) => return Err(MoleculeError::Failed(e.to_string())),
+    };
+    renderer.render(&structure, &opts).map_err(|e| match e {
         render::RenderError::Size { .. }
         | render::RenderError::Supersample { .. }
         | render::RenderError::Light(_) => MoleculeError::Option(e.to_string()),
@@ -203,7 +219,8 @@ mod tests {
 
     #[test]
     fn renders_crambin_and_reports_bad_sizes_and_files() {
-        let img = render_molecule(None, &args()).expect("renders");
+        let r = &mut Renderer::new();
+        let img = render_molecule(r, Source::Crambin, &args()).expect("renders");
         assert_eq!((img.width, img.height), (24, 16));
         assert!(img.pixels.iter().any(|p| p[..3] != [0, 0, 0]));
         let big = MoleculeArgs {
@@ -211,10 +228,24 @@ mod tests {
             ..args()
         };
         assert!(matches!(
-            render_molecule(None, &big),
+            render_molecule(r, Source::Crambin, &big),
             Err(MoleculeError::Option(_))
         ));
-        let missing = render_molecule(Some(Path::new("/nonexistent/x.pdb")), &args());
+        let missing = render_molecule(r, Source::File(Path::new("/nonexistent/x.pdb")), &args());
         assert!(matches!(missing, Err(MoleculeError::Io(_))), "{missing:?}");
+        let bad = render_molecule(r, Source::Text(b"ATOM  garbage", "bad.pdb"), &args());
+        assert!(
+            matches!(&bad, Err(MoleculeError::Failed(m)) if m.contains("bad.pdb")),
+            "{bad:?}"
+        );
+    }
+
+    #[test]
+    fn text_renders_as_the_file_does() {
+        let r = &mut Renderer::new();
+        let text = render::load::CRAMBIN_PDB.as_bytes();
+        let from_text = render_molecule(r, Source::Text(text, "1crn.pdb"), &args());
+        let embedded = render_molecule(r, Source::Crambin, &args());
+        assert_eq!(from_text.unwrap().pixels, embedded.unwrap().pixels);
     }
 }

@@ -239,10 +239,33 @@ def test_list_file_and_names(structures, tmp_path):
     lst.write_text(f"# a comment\n\nin/1crn.pdb\n{structures / 'two-atoms.pdb'}\nin/1crn.pdb\n")
     inputs = batch.inputs_from(str(lst))
     assert inputs == [str(tmp_path / "in/1crn.pdb"), str(structures / "two-atoms.pdb"), str(tmp_path / "in/1crn.pdb")]
-    assert batch._names(inputs + ["ccd:ALA"]) == ["1crn", "two-atoms", "1crn-2", "ALA"]
+    names = [u[0] for u in batch._units(inputs + ["ccd:ALA"])]
+    assert names == ["1crn", "two-atoms", "1crn-2", "ALA"]
+    frames = batch._units(inputs[:2], turntable=2)
+    assert frames == [
+        ("1crn-0001", inputs[0], 0.0),
+        ("1crn-0002", inputs[0], 180.0),
+        ("two-atoms-0001", inputs[1], 0.0),
+        ("two-atoms-0002", inputs[1], 180.0),
+    ]
     assert batch.inputs_from(str(lst), limit=1) == inputs[:1]
     with pytest.raises(FileNotFoundError):
         batch.inputs_from(str(tmp_path / "nowhere"))
+
+
+def test_turntable_and_rotate(client, structures, tmp_path):
+    out = tmp_path / "out"
+    one = [str(structures / "1crn.pdb")]
+    rows = batch.render_many(one, out, client, size=SIZE, rotate=(10, 20, 0), turntable=4)
+    assert [r["name"] for r in rows] == ["1crn-0001", "1crn-0002", "1crn-0003", "1crn-0004"]
+    assert all(r["status"] == "ok" for r in rows)
+    # Frame k is the molecule turned 90 k degrees more about Y.
+    for k, r in enumerate(rows):
+        direct = shaderbox.render_molecule(one[0], size=SIZE, rotate=(10, 20 + 90 * k, 0)).to_png()
+        assert (out / r["output"]).read_bytes() == direct, r["name"]
+    assert len({r["sha256"] for r in rows}) == 4
+    with pytest.raises(ValueError, match="turntable"):
+        batch.render_many(one, out, turntable=0)
 
 
 def test_command(structures, tmp_path):
@@ -260,4 +283,6 @@ def test_command(structures, tmp_path):
     assert p.returncode == 2 and "exactly one of SOURCE" in p.stderr
     p = subprocess.run(cmd[:-1] + ["--size", "0x3"], capture_output=True, text=True, timeout=600)
     assert p.returncode == 2 and "size" in p.stderr
+    p = subprocess.run(cmd[:-1] + ["--rotate", "1,2"], capture_output=True, text=True, timeout=600)
+    assert p.returncode == 2 and "--rotate" in p.stderr
     assert os.path.exists(out / "manifest.jsonl")

@@ -79,3 +79,35 @@ def test_pdb_file(tmp_path):
     left, right = a[10, :20].astype(int), a[10, 20:].astype(int)
     assert (left[:, 0] - left[:, 2]).max() > 50
     assert abs(int(right[:, 0].max()) - int(right[:, 2].max())) < 30
+
+
+def test_molecule_renderer_keeps_one_context(tmp_path):
+    pdb = tmp_path / "two.pdb"
+    text = (
+        "ATOM      1  O   HOH A   1       0.000   0.000   0.000  1.00  0.00           O\n"
+        "ATOM      2  C   HOH A   1       2.000   0.000   0.000  1.00  0.00           C\n"
+        "END\n"
+    )
+    pdb.write_text(text)
+    r = shaderbox.MoleculeRenderer(size=(48, 40), fog="linear")
+    # Each image equals render_molecule's, whatever the renderer drew before.
+    for path, kw in [
+        (None, {}),
+        (pdb, dict(style="ballstick", effect="outline", projection="perspective")),
+        (None, dict(atoms="points", background="transparent")),
+        (pdb, dict(size=(32, 32), supersample=2)),
+        (None, {}),
+    ]:
+        img = r.render(path, **kw)
+        assert img == shaderbox.render_molecule(path, **dict(dict(size=(48, 40), fog="linear"), **kw)), (path, kw)
+    # Text in place of a file: the same picture; errors name it.
+    assert r.render(text=text) == r.render(pdb)
+    assert r.render(text=text.encode()) == r.render(pdb)
+    with pytest.raises(RuntimeError, match="lig.pdb"):
+        r.render(text="ATOM      1  N   THR A   1      17.047  xx.xxx\n", name="lig.pdb")
+    with pytest.raises(TypeError, match="path or text"):
+        r.render(pdb, text=text)
+    with pytest.raises(TypeError, match="unknown rendering option"):
+        shaderbox.MoleculeRenderer(colour="red")
+    with pytest.raises(ValueError, match="effect"):
+        r.render(effect="sepia")

@@ -1,4 +1,4 @@
-"""shaderbox: OpenGL 2.1 and GLSL 1.10/1.20 on the CPU, from Python.
+"""shaderbox: OpenGL 2.1 and 3.3 and GLSL 1.10-3.30 on the CPU, from Python.
 
 Compile, run and look at legacy (compatibility-profile) shaders with
 nothing else installed: no GPU, driver, X server or EGL::
@@ -11,7 +11,8 @@ nothing else installed: no GPU, driver, X server or EGL::
 
 The pieces: :class:`Context` (programs, buffers, vertex arrays, textures,
 lights, material, fog, matrices, reading pixels), :func:`check` (GLSL
-diagnostics), :func:`render_molecule` (``shaderbox render``),
+diagnostics), :func:`render_molecule` (``shaderbox render``) and
+:class:`MoleculeRenderer` (many molecules on one context),
 :mod:`shaderbox.shaders` (the seed's sphere impostor shaders) and
 ``import shaderbox.pyopengl`` (PyOpenGL on shaderbox).
 """
@@ -36,7 +37,7 @@ from ._context import (
 )
 from ._errors import CompileError, Diagnostic, Diagnostics, Error, GLError, LinkError
 from ._image import Image
-from ._molecule import render_molecule
+from ._molecule import MoleculeRenderer, render_molecule
 
 __version__: str = _shaderbox.__version__
 
@@ -55,6 +56,7 @@ __all__ = [
     "Light",
     "LinkError",
     "Material",
+    "MoleculeRenderer",
     "PixelDebug",
     "Program",
     "Texture",

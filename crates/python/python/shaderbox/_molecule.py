@@ -1,4 +1,5 @@
-"""``shaderbox.render_molecule``: ``shaderbox render`` from Python."""
+"""``shaderbox.render_molecule`` and ``shaderbox.MoleculeRenderer``:
+``shaderbox render`` from Python."""
 
 from __future__ import annotations
 
@@ -60,6 +61,85 @@ def _lights(lights: Any) -> list:
     return out
 
 
+class MoleculeRenderer:
+    """Renders molecule after molecule on one GL context, keeping the shader
+    programs it compiled: what batches use (``shaderbox.batch`` keeps one
+    per worker process), as creating a context and compiling programs costs
+    more than drawing a small molecule. Each image is the same bytes as
+    :func:`render_molecule` gives for the same structure and options,
+    whatever was rendered before. Not for concurrent use from several
+    threads (calls wait for each other).
+
+    ``options`` are :func:`render_molecule`'s defaults for this renderer;
+    each :meth:`render` call may override any of them."""
+
+    def __init__(self, **options: Any) -> None:
+        unknown = sorted(set(options) - set(_DEFAULTS))
+        if unknown:
+            raise TypeError(f"unknown rendering option(s) {', '.join(unknown)}; known: {', '.join(_DEFAULTS)}")
+        self.options = dict(_DEFAULTS, **options)
+        self._raw = _shaderbox.RawMoleculeRenderer()
+
+    def render(
+        self,
+        path: Union[None, str, "os.PathLike[str]"] = None,
+        *,
+        text: Union[None, str, bytes] = None,
+        name: str = "<text>",
+        **options: Any,
+    ) -> Image:
+        """Draws the structure in ``path`` (PDB or mmCIF), or given as
+        ``text`` (``str`` or ``bytes``; ``name`` is what errors call it), or
+        crambin when neither is given. Errors as :func:`render_molecule`'s."""
+        unknown = sorted(set(options) - set(_DEFAULTS))
+        if unknown:
+            raise TypeError(f"unknown rendering option(s) {', '.join(unknown)}; known: {', '.join(_DEFAULTS)}")
+        o = dict(self.options, **options)
+        w, h = _size(o["size"])
+        rot = np.asarray(o["rotate"], dtype=np.float64).reshape(-1)
+        if rot.size != 3:
+            raise ValueError(f"rotate {o['rotate']!r} is three angles (x, y, z) in degrees")
+        supersample = o["supersample"]
+        if not isinstance(supersample, (int, np.integer)) or isinstance(supersample, bool):
+            raise TypeError(f"supersample must be an int 1-8, got {supersample!r}")
+        if text is not None and path is not None:
+            raise TypeError("give a path or text, not both")
+        data_in = text.encode() if isinstance(text, str) else text
+        p = None if path is None else os.fspath(path)
+        width, height, data, has_alpha = self._raw.render(
+            p,
+            data_in,
+            name,
+            w,
+            h,
+            o["projection"],
+            o["fog"],
+            _lights(o["lights"]),
+            [float(v) for v in rot],
+            int(supersample),
+            _background(o["background"]),
+            o["effect"],
+            o["style"],
+            o["atoms"],
+        )
+        return Image(np.frombuffer(data, dtype=np.uint8).reshape(height, width, 4), has_alpha=has_alpha)
+
+
+# render_molecule's options and their defaults.
+_DEFAULTS = {
+    "size": (800, 800),
+    "projection": "ortho",
+    "fog": "none",
+    "lights": (0, 1),
+    "rotate": (0.0, 0.0, 0.0),
+    "supersample": 1,
+    "background": "black",
+    "effect": "plain",
+    "style": "spacefill",
+    "atoms": "quads",
+}
+
+
 def render_molecule(
     path: Union[None, str, "os.PathLike[str]"] = None,
     *,
@@ -76,7 +156,7 @@ def render_molecule(
 ) -> Image:
     """Draws a molecule as ``shaderbox render`` does and returns the :class:`Image`.
 
-    ``path`` is a PDB file (default: crambin, PDB 1CRN, built in). The
+    ``path`` is a PDB or mmCIF file (default: crambin, PDB 1CRN, built in). The
     options are the command's: ``size`` (``(w, h)`` or ``"800x600"``),
     ``projection`` (``"ortho"``, ``"perspective"``), ``fog`` (``"none"``,
     ``"linear"``, ``"exp"``, ``"exp2"``), ``lights`` (light numbers 0-7, or
@@ -87,16 +167,20 @@ def render_molecule(
     ``"transparent"``), ``style`` (``"spacefill"``, ``"ballstick"``) and
     ``atoms`` (``"quads"``, or ``"points"``: one point per atom expanded to
     its quad by a geometry shader; the same image).
-    (The command's ``--frames`` turntable is a loop over ``rotate``.) Bad options raise ``ValueError``, an unreadable
-    file ``OSError``, a malformed one ``RuntimeError`` naming the line."""
-    w, h = _size(size)
-    rot = np.asarray(rotate, dtype=np.float64).reshape(-1)
-    if rot.size != 3:
-        raise ValueError(f"rotate {rotate!r} is three angles (x, y, z) in degrees")
-    if not isinstance(supersample, (int, np.integer)) or isinstance(supersample, bool):
-        raise TypeError(f"supersample must be an int 1-8, got {supersample!r}")
-    p = None if path is None else os.fspath(path)
-    width, height, data, has_alpha = _shaderbox.render_molecule(
-        p, w, h, projection, fog, _lights(lights), [float(v) for v in rot], int(supersample), _background(background), effect, style, atoms
+    (The command's ``--turntable`` is a loop over ``rotate``.) Bad options
+    raise ``ValueError``, an unreadable file ``OSError``, a malformed one ``RuntimeError`` naming the line.
+    Each call makes a GL context and compiles its programs: for many
+    molecules, :class:`MoleculeRenderer` keeps them."""
+    return MoleculeRenderer().render(
+        path,
+        size=size,
+        projection=projection,
+        fog=fog,
+        lights=lights,
+        rotate=rotate,
+        supersample=supersample,
+        background=background,
+        effect=effect,
+        style=style,
+        atoms=atoms,
     )
-    return Image(np.frombuffer(data, dtype=np.uint8).reshape(height, width, 4), has_alpha=has_alpha)

@@ -24,20 +24,25 @@ def link_report(
 ) -> _Report: ...
 def library_shaders() -> List[Tuple[str, str]]: ...
 def encode_png(width: int, height: int, rgba: bytes, has_alpha: bool) -> bytes: ...
-def render_molecule(
-    path: Union[None, str, PathLike[str]],
-    width: int,
-    height: int,
-    projection: str,
-    fog: str,
-    lights: Sequence[int],
-    rotate: Sequence[float],
-    supersample: int,
-    background: Optional[Sequence[float]],
-    effect: str,
-    style: str,
-    atoms: str = "quads",
-) -> Tuple[int, int, bytes, bool]: ...
+class RawMoleculeRenderer:
+    def __init__(self) -> None: ...
+    def render(
+        self,
+        path: Union[None, str, PathLike[str]],
+        text: Optional[bytes],
+        name: str,
+        width: int,
+        height: int,
+        projection: str,
+        fog: str,
+        lights: Sequence[int],
+        rotate: Sequence[float],
+        supersample: int,
+        background: Optional[Sequence[float]],
+        effect: str,
+        style: str,
+        atoms: str,
+    ) -> Tuple[int, int, bytes, bool]: ...
 
 class RawContext:
     def __init__(self, width: int, height: int, major: int = 2, minor: int = 1, profile: str = "compatibility") -> None: ...

@@ -42,7 +42,7 @@ import tempfile
 import time
 from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple
 
-from ._molecule import _background, _lights, _size, render_molecule
+from ._molecule import MoleculeRenderer, _background, _lights, _size
 
 __all__ = ["render_many", "inputs_from", "ccd_inputs", "main"]
 
@@ -111,24 +111,33 @@ def inputs_from(source: str, limit: Optional[int] = None) -> List[str]:
     return found[:limit] if limit is not None else found
 
 
-def _names(inputs: Sequence[str]) -> List[str]:
-    """One unique output name per input (see the module docs)."""
+def _units(inputs: Sequence[str], turntable: Optional[int] = None) -> List[Tuple[str, str, float]]:
+    """The images to make, in order: ``(name, input, turn)``, one per input
+    or, with a turntable of N frames, N per input (``turn`` = 360 k / N
+    degrees added to the Y rotation, names ending ``-0001`` ... as
+    ``shaderbox render --turntable`` numbers its frames). Names are unique
+    (see the module docs)."""
     seen: Dict[str, int] = {}
     out = []
+    frames = turntable or 1
+    digits = max(4, len(str(frames)))
     for inp in inputs:
         if inp.startswith(_CCD_PREFIX):
-            base = inp[len(_CCD_PREFIX) :]
+            stem = inp[len(_CCD_PREFIX) :]
         else:
-            base = os.path.basename(inp)
+            stem = os.path.basename(inp)
             for suffix in STRUCTURE_SUFFIXES:
-                if base.lower().endswith(suffix):
-                    base = base[: -len(suffix)]
+                if stem.lower().endswith(suffix):
+                    stem = stem[: -len(suffix)]
                     break
         # A file name must not leave OUT.
-        base = base.replace(os.sep, "_").replace("/", "_") or "_"
-        n = seen.get(base, 0) + 1
-        seen[base] = n
-        out.append(base if n == 1 else f"{base}-{n}")
+        stem = stem.replace(os.sep, "_").replace("/", "_") or "_"
+        for k in range(frames):
+            base = stem if turntable is None else f"{stem}-{k + 1:0{digits}d}"
+            n = seen.get(base, 0) + 1
+            seen[base] = n
+            turn = 0.0 if turntable is None else 360.0 * k / frames
+            out.append((base if n == 1 else f"{base}-{n}", inp, turn))
     return out
 
 
@@ -224,34 +233,34 @@ def _ccd_pdb(component: str) -> bytes:
 
 
 class _Renderer:
-    """One worker process's rendering state, kept across its tasks: the
-    checked options, the thread count it set, and a scratch folder for
-    dictionary components."""
+    """One worker process's rendering state, kept across its tasks: a
+    :class:`MoleculeRenderer` (one GL context and the compiled programs for
+    every molecule) with the checked options, and the thread count it set."""
 
     def __init__(self, options: Dict[str, Any], threads: int):
-        self.options = options
         if threads <= 0:
             try:
                 threads = len(os.sched_getaffinity(0))
             except AttributeError:  # pragma: no cover - not Linux
                 threads = os.cpu_count() or 1
-        # gl::Context reads it each time one is made (each molecule).
+        # gl::Context reads it when it is made (the renderer's first draw).
         os.environ["SHADERBOX_THREADS"] = str(threads)
         self.threads = threads
-        self.scratch = tempfile.mkdtemp(prefix="shaderbox-batch-")
+        self.options = options
+        self.renderer = MoleculeRenderer(**options)
 
-    def render(self, name: str, inp: str, out_dir: str) -> Dict[str, Any]:
+    def render(self, unit: Tuple[str, str, float], out_dir: str) -> Dict[str, Any]:
+        name, inp, turn = unit
         row: Dict[str, Any] = {"name": name, "input": inp, "status": "failed", "output": None, "sha256": None}
         t0 = time.perf_counter()
         try:
+            rx, ry, rz = self.options["rotate"]
+            rotate = (rx, ry + turn, rz)
             if inp.startswith(_CCD_PREFIX):
-                component = inp[len(_CCD_PREFIX) :]
-                path = os.path.join(self.scratch, f"{component}.pdb")
-                with open(path, "wb") as f:
-                    f.write(_ccd_pdb(component))
+                image = self.renderer.render(text=_ccd_pdb(inp[len(_CCD_PREFIX) :]), name=inp, rotate=rotate)
             else:
-                path = inp
-            png = render_molecule(path, **self.options).to_png()
+                image = self.renderer.render(inp, rotate=rotate)
+            png = image.to_png()
             output = f"{name}.png"
             fd, tmp = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=out_dir)
             try:
@@ -264,10 +273,7 @@ class _Renderer:
                 raise
             row.update(status="ok", output=output, sha256=hashlib.sha256(png).hexdigest(), error=None)
         except Exception as e:  # noqa: BLE001 - every failure is a row, the batch goes on
-            msg = str(e)
-            if inp.startswith(_CCD_PREFIX):
-                msg = msg.replace(self.scratch + os.sep, "ccd:")
-            row["error"] = f"{type(e).__name__}: {msg}"
+            row["error"] = f"{type(e).__name__}: {e}"
         row["seconds"] = round(time.perf_counter() - t0, 4)
         return row
 
@@ -275,9 +281,10 @@ class _Renderer:
 _RENDERERS: Dict[str, _Renderer] = {}
 
 
-def _render_chunk(chunk: List[Tuple[str, str]], out_dir: str, options: Dict[str, Any], threads: int) -> List[Dict[str, Any]]:
-    """A task: renders each (name, input) of the chunk with the process's
-    renderer for these options, returns their manifest rows."""
+def _render_chunk(chunk: List[Tuple[str, str, float]], out_dir: str, options: Dict[str, Any], threads: int) -> List[Dict[str, Any]]:
+    """A task: renders each (name, input, turn) of the chunk (``turn``:
+    degrees added to the Y rotation) with the process's renderer for these
+    options, returns their manifest rows."""
     marker = os.environ.get(_DIE_ONCE_ENV)
     if marker:
         try:
@@ -291,7 +298,7 @@ def _render_chunk(chunk: List[Tuple[str, str]], out_dir: str, options: Dict[str,
     renderer = _RENDERERS.get(key)
     if renderer is None:
         renderer = _RENDERERS[key] = _Renderer(options, threads)
-    return [renderer.render(name, inp, out_dir) for name, inp in chunk]
+    return [renderer.render(unit, out_dir) for unit in chunk]
 
 
 # ---------------------------------------------------------------- manifest
@@ -392,7 +399,7 @@ def _check_options(options: Dict[str, Any]) -> Dict[str, Any]:
     if isinstance(opts["background"], tuple):
         opts["background"] = list(opts["background"])
     opts["rotate"] = [float(v) for v in opts["rotate"]]
-    render_molecule(None, **dict(opts, size=(1, 1)))  # the enumerated options
+    MoleculeRenderer().render(None, **dict(opts, size=(1, 1)))  # the enumerated options
     return opts
 
 
@@ -414,6 +421,7 @@ def render_many(
     chunk_size: Optional[int] = None,
     retries: int = 3,
     retry_failed: bool = False,
+    turntable: Optional[int] = None,
     progress: Optional[Callable[[int, int, int], None]] = None,
     **options: Any,
 ) -> List[Dict[str, Any]]:
@@ -428,22 +436,27 @@ def render_many(
     worker's own cores). ``chunk_size``: molecules per task (default: about
     four tasks per worker, at most 64 molecules each). ``retries``: reruns
     of a task whose worker raised (a worker that dies is Dask's
-    ``allowed-failures``). ``progress(done, failed, total)`` is called as
-    rows arrive. ``options``: ``render_molecule``'s (size, projection, fog,
+    ``allowed-failures``). ``turntable``: N images per input turning once
+    about the screen's vertical axis (added to ``rotate``'s Y; names
+    ``<name>-0001`` ...; one manifest row per image). ``progress(done,
+    failed, total)`` is called as rows arrive. ``options``: ``render_molecule``'s (size, projection, fog,
     lights, rotate, supersample, background, effect, style, atoms)."""
     from dask.distributed import Client, LocalCluster, as_completed
 
     out_dir = os.fspath(out_dir)
     inputs = [i if isinstance(i, str) and i.startswith(_CCD_PREFIX) else os.path.abspath(os.fspath(i)) for i in inputs]
     opts = _check_options(options)
+    if turntable is not None and (isinstance(turntable, bool) or not isinstance(turntable, int) or not 1 <= turntable <= 3600):
+        raise ValueError(f"turntable {turntable!r} is not a number of frames 1-3600")
     os.makedirs(out_dir, exist_ok=True)
     out_abs = os.path.abspath(out_dir)
 
-    names = _names(inputs)
+    units = _units(inputs, turntable)
+    names = [u[0] for u in units]
     previous = read_manifest(out_dir)
     rows: Dict[str, Dict[str, Any]] = dict(previous)
-    todo = [(n, i) for n, i in zip(names, inputs) if not _is_done(previous.get(n), out_dir, retry_failed)]
-    total = len(inputs)
+    todo = [u for u in units if not _is_done(previous.get(u[0]), out_dir, retry_failed)]
+    total = len(units)
     done = total - len(todo)
     failed = sum(1 for n in names if n in previous and _is_done(previous[n], out_dir, retry_failed) and previous[n]["status"] == "failed")
     if progress:
@@ -516,6 +529,8 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--projection", default="ortho", choices=["ortho", "perspective"])
     p.add_argument("--fog", default="none", choices=["none", "linear", "exp", "exp2"])
     p.add_argument("--lights", default="0,1", help="light numbers 0-7, comma-separated, or none")
+    p.add_argument("--rotate", default="0,0,0", help="X,Y,Z: degrees about X, then Y, then Z (as shaderbox render)")
+    p.add_argument("--turntable", type=int, metavar="N", help="N images per input turning once about the vertical axis")
     p.add_argument("--supersample", type=int, default=1)
     p.add_argument("--background", default="black", help="black, white, gray, #RRGGBB or transparent")
     p.add_argument("--effect", default="plain", choices=["plain", "outline", "x", "x-red", "transparent"])
@@ -545,11 +560,20 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         inputs = ccd_inputs(a.limit) if a.ccd else inputs_from(a.source, a.limit)
     except (OSError, ImportError) as e:
         p.error(str(e))
+    try:
+        rotate = [float(v) for v in a.rotate.split(",")]
+    except ValueError:
+        rotate = []
+    if len(rotate) != 3 or not all(math.isfinite(v) for v in rotate):
+        p.error(f"--rotate {a.rotate!r} is not X,Y,Z in degrees (three numbers)")
+    if a.turntable is not None and not 1 <= a.turntable <= 3600:
+        p.error(f"--turntable {a.turntable} is not a number of frames 1-3600")
     options = dict(
         size=a.size,
         projection=a.projection,
         fog=a.fog,
         lights=a.lights,
+        rotate=rotate,
         supersample=a.supersample,
         background=a.background,
         effect=a.effect,
@@ -602,6 +626,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                 threads=threads,
                 chunk_size=a.chunk_size,
                 retry_failed=a.retry_failed,
+                turntable=a.turntable,
                 progress=progress,
                 **options,
             )
