@@ -12,7 +12,8 @@
 use crate::guard::guarded;
 use crate::input::{read_source, stage_from_path, StageGuess};
 use crate::Exit;
-use glsl::link::{LinkDiagnostic, Program};
+use glsl::ir::{InputPrimitive, OutputPrimitive};
+use glsl::link::{LinkDiagnostic, LinkOptions, Program};
 use glsl::{CompileOptions, Diagnostic, Severity, Shader, SourceMap, Stage, Version};
 use serde::Serialize;
 use std::io::{IsTerminal, Write};
@@ -20,8 +21,8 @@ use std::path::PathBuf;
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Also link all the files into one program (one vertex and/or one
-    /// fragment stage made of one or more shader objects).
+    /// Also link all the files into one program (vertex, geometry and
+    /// fragment stages, each made of one or more shader objects).
     #[arg(long)]
     pub link: bool,
 
@@ -45,9 +46,56 @@ pub struct Args {
     #[arg(long, value_enum, default_value_t = ColorChoice::Auto)]
     pub color: ColorChoice,
 
+    /// With `--link`: the program's GEOMETRY_INPUT_TYPE_EXT for a
+    /// geometry shader in GL_EXT/ARB_geometry_shader4's form (as
+    /// glProgramParameteriEXT sets it): points, lines, lines_adjacency,
+    /// triangles (the initial value) or triangles_adjacency.
+    #[arg(long, value_parser = parse_input_primitive, value_name = "PRIMITIVE", requires = "link")]
+    pub geometry_input: Option<InputPrimitive>,
+
+    /// With `--link`: GEOMETRY_OUTPUT_TYPE_EXT: points, line_strip or
+    /// triangle_strip (the initial value).
+    #[arg(long, value_parser = parse_output_primitive, value_name = "PRIMITIVE", requires = "link")]
+    pub geometry_output: Option<OutputPrimitive>,
+
+    /// With `--link`: GEOMETRY_VERTICES_OUT_EXT (initially 0, which such a
+    /// program cannot link with).
+    #[arg(long, value_name = "N", requires = "link")]
+    pub geometry_vertices_out: Option<u32>,
+
     /// Shader files to compile.
     #[arg(required = true, value_name = "FILE")]
     pub files: Vec<PathBuf>,
+}
+
+impl Args {
+    /// The program parameters the link uses: the initial ones, changed
+    /// by the `--geometry-*` options.
+    fn link_options(&self) -> LinkOptions {
+        let mut o = LinkOptions::default();
+        if let Some(p) = self.geometry_input {
+            o.geometry.input = p;
+        }
+        if let Some(p) = self.geometry_output {
+            o.geometry.output = p;
+        }
+        if let Some(n) = self.geometry_vertices_out {
+            o.geometry.vertices_out = n;
+        }
+        o
+    }
+}
+
+fn parse_input_primitive(text: &str) -> Result<InputPrimitive, String> {
+    InputPrimitive::from_name(text).ok_or_else(|| {
+        let names: Vec<&str> = InputPrimitive::ALL.iter().map(|p| p.name()).collect();
+        format!("`{text}' is not one of: {}", names.join(", "))
+    })
+}
+
+fn parse_output_primitive(text: &str) -> Result<OutputPrimitive, String> {
+    OutputPrimitive::from_name(text)
+        .ok_or_else(|| format!("`{text}' is not one of: points, line_strip, triangle_strip"))
 }
 
 /// `--glsl-version N`: one of the versions the compiler knows.
@@ -179,7 +227,8 @@ fn check(args: &Args) -> Result<Report, (Exit, String)> {
     let mut linked = None;
     if args.link && shaders.iter().all(Shader::ok) {
         let refs: Vec<&Shader> = shaders.iter().collect();
-        let program = guarded(|| glsl::link::link(&refs)).map_err(|p| {
+        let options = args.link_options();
+        let program = guarded(|| glsl::link::link_with(&refs, &options)).map_err(|p| {
             (
                 Exit::Internal,
                 format!(

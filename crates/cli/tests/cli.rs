@@ -236,6 +236,59 @@ fn check_link_failure_exits_1() {
     assert!(codes.iter().any(|c| c.starts_with("E03")), "{codes:?}");
 }
 
+#[test]
+fn check_link_takes_the_extension_geometry_program_parameters() {
+    let shader = |name: &str| {
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../shaders")
+            .join(name)
+            .to_string_lossy()
+            .into_owned()
+    };
+    let files = [
+        shader("sphere-point.vert"),
+        shader("sphere.geom"),
+        shader("sphere.frag"),
+    ];
+    let run = |extra: &[&str]| {
+        let mut args = vec!["check", "--link", "--color", "never"];
+        args.extend_from_slice(extra);
+        args.extend(files.iter().map(String::as_str));
+        shaderbox(&args)
+    };
+    // The initial parameters: no output vertex count, so no link.
+    let o = run(&[]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    assert!(
+        stdout(&o).contains("GEOMETRY_VERTICES_OUT"),
+        "{}",
+        stdout(&o)
+    );
+    // sphere.geom's own parameters.
+    let o = run(&[
+        "--geometry-input",
+        "points",
+        "--geometry-output",
+        "triangle_strip",
+        "--geometry-vertices-out",
+        "4",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    assert!(stdout(&o).contains("ok: program linked"), "{}", stdout(&o));
+    // Bad values and parameters without --link are misuse.
+    for bad in [
+        &["--link", "--geometry-input", "quads"][..],
+        &["--geometry-vertices-out", "4"][..],
+        &["--link", "--geometry-vertices-out", "-1"][..],
+    ] {
+        let mut args = vec!["check"];
+        args.extend_from_slice(bad);
+        args.push(&files[1]);
+        let o = shaderbox(&args);
+        assert_eq!(o.status.code(), Some(2), "{bad:?}: {}", stderr(&o));
+    }
+}
+
 // ---- check: formats --------------------------------------------------------
 
 #[test]
