@@ -286,3 +286,53 @@ def test_command(structures, tmp_path):
     p = subprocess.run(cmd[:-1] + ["--rotate", "1,2"], capture_output=True, text=True, timeout=600)
     assert p.returncode == 2 and "--rotate" in p.stderr
     assert os.path.exists(out / "manifest.jsonl")
+
+
+def test_command_on_a_separate_scheduler_and_workers(structures, tmp_path):
+    """The multi-node route on one machine: a `dask scheduler` process and
+    two `dask worker` processes started as a cluster's nodes would start
+    them, and shaderbox-batch --scheduler; the images equal a local run's."""
+    import socket
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    address = f"tcp://127.0.0.1:{port}"
+    dask = [sys.executable, "-m", "distributed.cli.dask_scheduler"]
+    procs = [
+        subprocess.Popen(
+            dask + ["--host", "127.0.0.1", "--port", str(port), "--dashboard-address", ":0"],
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+        )
+    ]
+    try:
+        for _ in range(2):
+            procs.append(
+                subprocess.Popen(
+                    [sys.executable, "-m", "distributed.cli.dask_worker", address, "--nworkers", "1", "--nthreads", "1"],
+                    stdout=subprocess.DEVNULL,
+                    stderr=subprocess.DEVNULL,
+                )
+            )
+        with Client(address, timeout=60) as c:
+            c.wait_for_workers(2, timeout=60)
+        out = tmp_path / "out"
+        cmd = [sys.executable, "-m", "shaderbox.batch", str(structures), "-o", str(out), "--scheduler", address, "--size", "48x40", "-q"]
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+        assert p.returncode == 1, p.stderr  # two inputs fail
+        assert "6 inputs: 4 ok, 2 failed; 6 rendered this run" in p.stdout, p.stdout
+        local = tmp_path / "local"
+        local_cmd = [sys.executable, "-m", "shaderbox.batch", str(structures), "-o", str(local), "--workers", "1", "--size", "48x40", "-q"]
+        p = subprocess.run(local_cmd, capture_output=True, text=True, timeout=600)
+        assert p.returncode == 1, p.stderr
+        for name in ["1crn", "hetatm", "trp", "two-atoms"]:
+            assert (out / f"{name}.png").read_bytes() == (local / f"{name}.png").read_bytes(), name
+    finally:
+        for proc in procs:
+            proc.terminate()
+        for proc in procs:
+            try:
+                proc.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                proc.kill()
