@@ -5,12 +5,14 @@
 # shader-runner` (tests/memcheck/piglit-200.txt). One process under
 # valgrind at a time.
 #
-# Usage: scripts/memcheck.sh [--part capi|piglit|all] [--limit N]
+# Usage: scripts/memcheck.sh [--part capi|piglit|all] [--skip N] [--limit N]
 #                            [--kernel VARIANT] [--jit-after N]
 #                            [--logs DIR] [--no-build]
 #
 #   --part     which part to run (default all)
-#   --limit N  only the first N tests of the piglit list
+#   --skip N   leave out the first N tests of the piglit list (to run a
+#              list in parts: --limit 105, then --skip 105)
+#   --limit N  only the first N tests of the piglit list (after --skip)
 #   --kernel   SHADERBOX_KERNEL for every run (default: the process's own
 #              choice, native code where Cranelift runs; valgrind 3.19 runs
 #              AVX2 but not AVX-512, so pass portable or avx2 on an
@@ -45,6 +47,7 @@ set -euo pipefail
 root_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 part=all
 limit=
+skip=0
 kernel=
 jit_after=
 logs=
@@ -53,6 +56,7 @@ while [ $# -gt 0 ]; do
     case "$1" in
         --part) part="$2"; shift ;;
         --limit) limit="$2"; shift ;;
+        --skip) skip="$2"; shift ;;
         --kernel) kernel="$2"; shift ;;
         --jit-after) jit_after="$2"; shift ;;
         --logs) logs="$2"; shift ;;
@@ -61,6 +65,11 @@ while [ $# -gt 0 ]; do
         *) echo "memcheck: unknown argument \`$1'" >&2; exit 2 ;;
     esac
     shift
+done
+for n in "$skip" ${limit:+"$limit"}; do
+    case "$n" in
+        '' | *[!0-9]*) echo "memcheck: --skip and --limit take a number, not \`$n'" >&2; exit 2 ;;
+    esac
 done
 case "$part" in
     capi|piglit|all) ;;
@@ -182,6 +191,7 @@ if [ "$part" != capi ]; then
     data="$cache/root/usr/lib/x86_64-linux-gnu/piglit"
     [ -d "$data/tests/spec" ] || { log "piglit is not fetched: run scripts/piglit-fetch.sh"; exit 2; }
     mapfile -t tests < <(grep -v '^#' "$root_dir/tests/memcheck/piglit-200.txt" | grep .)
+    tests=("${tests[@]:$skip}")
     [ -n "$limit" ] && tests=("${tests[@]:0:$limit}")
     before=$errors
     # One draw thread, as piglit-run.sh runs the tests; the threaded paths

@@ -196,4 +196,40 @@ mod tests {
         assert_eq!(snorm(127.0, 255.0), 1.0);
         assert_eq!(snorm(-128.0, 255.0), -1.0);
     }
+
+    /// The pointer helpers on what C callers pass: unaligned data (a
+    /// float vector inside a byte buffer at an odd offset), null
+    /// pointers, counts of zero and below, a NUL-terminated string with
+    /// invalid UTF-8. Run under Miri too (docs/RELIABILITY.md), which
+    /// checks every access stays inside its allocation.
+    #[test]
+    fn pointer_helpers_read_and_write_only_what_they_are_given() {
+        let values = [1.5f32, -2.0, 3.25, 0.5];
+        let mut buf = vec![0u8; 1 + 4 * values.len()];
+        for (i, v) in values.iter().enumerate() {
+            buf[1 + 4 * i..5 + 4 * i].copy_from_slice(&v.to_ne_bytes());
+        }
+        let p = buf[1..].as_ptr() as *const f32;
+        unsafe {
+            assert_eq!(rd::<4, f32>(p), Some(values));
+            assert_eq!(rd::<4, f32>(std::ptr::null()), None);
+            assert_eq!(rd_vec(p, 3), values[..3].to_vec());
+            assert!(rd_vec(p, 0).is_empty() && rd_vec(p, -5).is_empty());
+            assert!(rd_vec::<f32>(std::ptr::null(), 4).is_empty());
+            assert_eq!(bytes(p, 8), &buf[1..9]);
+            assert!(bytes(p, 0).is_empty() && bytes::<f32>(std::ptr::null(), 8).is_empty());
+
+            let mut out = vec![0u8; 2 + 4 * 3];
+            let q = out[2..].as_mut_ptr() as *mut f32;
+            wr(q, &values[..3]);
+            wr(std::ptr::null_mut(), &values);
+            assert_eq!(rd_vec(q as *const f32, 3), values[..3].to_vec());
+            assert_eq!(&out[..2], &[0, 0]);
+
+            let text = b"gl_\xffPosition\0ignored";
+            let got = cstr(text.as_ptr() as *const c_char).unwrap();
+            assert_eq!(got, "gl_\u{fffd}Position");
+            assert_eq!(cstr(std::ptr::null()), None);
+        }
+    }
 }
