@@ -9,7 +9,10 @@
 # the executions, the corpus size and the crashes found (libFuzzer's
 # artifacts: crash-*, timeout-*, oom-*, leak-*, in fuzz/artifacts/TARGET/),
 # then a summary; the exit status is non-zero when any target found one,
-# or when the build fails.
+# or when the build fails. libFuzzer's slow-unit-* files (an input that
+# took over 10 s, written for information) are counted apart: on a loaded
+# machine, or under nice, they are usually the scheduler's doing; rerun
+# one alone to see.
 #
 # What each run reads and writes:
 # - fuzz/corpus/TARGET/: the seed corpus, in git (small, hand-made or from
@@ -91,7 +94,9 @@ for t in "${targets[@]}"; do
     for d in $(seeds_of "$t"); do
         [ -d "$d" ] && seeds+=("$d")
     done
-    before="$(find "$artifacts" -type f | wc -l)"
+    findings() { find "$artifacts" -type f ! -name 'slow-unit-*' | wc -l; }
+    slow_before="$(find "$artifacts" -type f -name 'slow-unit-*' | wc -l)"
+    before="$(findings)"
     log="$(mktemp)"
     echo "=== $t: ${seconds}s, corpus $run (seeds: ${seeds[*]}), dictionary $(dict_of "$t")"
     set +e
@@ -103,7 +108,8 @@ for t in "${targets[@]}"; do
     set -e
     execs="$(awk '/stat::number_of_executed_units:/ { print $2 }' "$log" | tail -n 1)"
     corpus="$(find "$run" -type f | wc -l)"
-    new=$(($(find "$artifacts" -type f | wc -l) - before))
+    new=$(($(findings) - before))
+    slow=$(($(find "$artifacts" -type f -name 'slow-unit-*' | wc -l) - slow_before))
     if [ "$rc" -ne 0 ] || [ "$new" -gt 0 ]; then
         found=1
         grep -E '^(==[0-9]+==ERROR|SUMMARY|thread .* panicked|.*(deadly signal|Test unit written|ALARM|out-of-memory))' "$log" | head -n 20 || true
@@ -111,7 +117,7 @@ for t in "${targets[@]}"; do
     else
         rm -f "$log"
     fi
-    line="$t: ${seconds}s, ${execs:-?} executions, corpus $corpus, crashes $new (exit $rc)"
+    line="$t: ${seconds}s, ${execs:-?} executions, corpus $corpus, crashes $new, slow units $slow (exit $rc)"
     echo "$line"
     summary+=("$line")
 done
