@@ -219,7 +219,7 @@ mod tests {
             assert_eq!(bytes(p, 8), &buf[1..9]);
             assert!(bytes(p, 0).is_empty() && bytes::<f32>(std::ptr::null(), 8).is_empty());
 
-            let mut out = vec![0u8; 2 + 4 * 3];
+            let mut out = [0u8; 2 + 4 * 3];
             let q = out[2..].as_mut_ptr() as *mut f32;
             wr(q, &values[..3]);
             wr(std::ptr::null_mut(), &values);
