@@ -41,7 +41,6 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_blend_subtract",
     "GL_EXT_blend_func_separate",
     "GL_EXT_blend_equation_separate",
-    "GL_EXT_stencil_two_side",
     "GL_EXT_stencil_wrap",
     "GL_EXT_texture_lod_bias",
     "GL_EXT_fog_coord",
