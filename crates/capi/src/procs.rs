@@ -13,7 +13,9 @@ use std::ffi::{c_char, CStr};
 /// written for the extensions look them up by the suffixed names.
 pub fn lookup(name: &str) -> Option<*const ()> {
     lookup_exact(name).or_else(|| {
-        let core = name.strip_suffix("ARB").or_else(|| name.strip_suffix("EXT"))?;
+        let core = name
+            .strip_suffix("ARB")
+            .or_else(|| name.strip_suffix("EXT"))?;
         if NOT_ALIASES.contains(&name) {
             return None;
         }
