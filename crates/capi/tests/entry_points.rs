@@ -42,6 +42,11 @@ fn list_commands_between_begin_and_end_are_invalid_operations() {
         glCallList(1);
         glEnd();
         assert_eq!(glGetError(), GL_NO_ERROR);
+        // glGetError is not: it returns no error and records one.
+        glBegin(GL_POINTS);
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        glEnd();
+        assert_eq!(glGetError(), GL_INVALID_OPERATION);
     });
 }
 
