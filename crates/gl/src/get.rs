@@ -600,9 +600,12 @@ impl Context {
             // assuming it (piglit's glinfo writes it one name a line by
             // turning spaces into newlines, and its result line then needs
             // the last one).
-            GL_EXTENSIONS if !self.api.is_core() => {
-                self.api.extensions().iter().map(|e| format!("{e} ")).collect()
-            }
+            GL_EXTENSIONS if !self.api.is_core() => self
+                .api
+                .extensions()
+                .iter()
+                .map(|e| format!("{e} "))
+                .collect(),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 String::new()
