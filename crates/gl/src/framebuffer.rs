@@ -721,6 +721,26 @@ impl Context {
             ) => self.attachment_bits(&a, pname),
             (GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, Some(_)) => GL_LINEAR as i32,
             (GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, Some(_)) => GL_UNSIGNED_NORMALIZED as i32,
+            // GL 3.0 §6.1.17: with nothing attached, the queries other than
+            // the object type and name are GL_INVALID_OPERATION.
+            (
+                GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING
+                | GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE
+                | GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL
+                | GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE
+                | GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER
+                | GL_FRAMEBUFFER_ATTACHMENT_LAYERED,
+                None,
+            ) => {
+                self.set_error(GL_INVALID_OPERATION);
+                return None;
+            }
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;
@@ -1066,6 +1086,19 @@ mod tests {
             Some(0)
         );
         assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        // Nothing attached: the object type and name only.
+        let none = GL_COLOR_ATTACHMENT0 + 1;
+        assert_eq!(
+            q(&mut ctx, none, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME),
+            Some(0)
+        );
+        assert_eq!(
+            q(&mut ctx, none, GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE),
+            None
+        );
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        assert_eq!(q(&mut ctx, none, GL_TEXTURE_2D), None);
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
     }
 
     #[test]
