@@ -96,7 +96,9 @@ if [ "$suite" = opengl ] && [ ! -f "$mesa/.opengl-extracted" ]; then
         "./$data_rel/bin/*" "./$data_rel/tests/opengl.xml.gz"
     touch "$mesa/.opengl-extracted"
 fi
-ldconfig -p | grep -q libwaffle-1 || { log "install libwaffle-1-0 (waffle)"; exit 2; }
+# grep reads all of ldconfig's output: with -q it may stop early, and
+# pipefail would then report ldconfig's SIGPIPE.
+ldconfig -p | grep libwaffle-1 >/dev/null || { log "install libwaffle-1-0 (waffle)"; exit 2; }
 
 if [ "$route" = mesa-egl ]; then
     libpath="$mesa/$data_rel/lib"
