@@ -353,6 +353,13 @@ gl_entry_points! {
         }
         let f = rd_vec(first, n as i64);
         let k = rd_vec(count, n as i64);
+        // One negative count fails the whole call, before anything is drawn
+        // (GL 2.1 §2.8: MultiDrawArrays is the DrawArrays loop, an error
+        // leaves the framebuffer unchanged).
+        if k.iter().any(|&k| k < 0) {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
         for (f, k) in f.iter().zip(&k) {
             if *f >= 0 && *k > 0 {
                 let last = (*f as i64 + (*k).min(1 << 24) as i64 - 1).min(u32::MAX as i64);
@@ -392,6 +399,10 @@ gl_entry_points! {
         }
         let counts = rd_vec(count, primcount as i64);
         let ptrs = rd_vec(indices, primcount as i64);
+        if counts.iter().any(|&k| k < 0) {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
         for (&k, &p) in counts.iter().zip(&ptrs) {
             let data = prepare_elements(c, k, ty, p);
             c.gl.draw_elements(mode, k, ty, data);

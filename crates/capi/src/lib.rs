@@ -72,6 +72,8 @@
 //!   [`legacy`] (GL 1.x calls kept as state).
 //! - [`osmesa`]: the OSMesa context API; [`procs`]: OSMesaGetProcAddress
 //!   and its table, naming every entry-point module.
+//! - [`allocator`] (feature `mimalloc`): the global allocator, mimalloc
+//!   with small address-space reservations (hosts that set `RLIMIT_AS`).
 //!
 //! No module depends back on one that depends on it
 //! (`scripts/module-graph.py capi`).
@@ -119,14 +121,17 @@
 // allocator): the system allocator returned the worker threads' arenas to
 // the OS after every large draw and faulted them in again on the next one,
 // and it is slower for the compiler's many small nodes (the measurements:
-// docs/PERFORMANCE.md, design decisions).
+// docs/PERFORMANCE.md, design decisions). [`allocator`] keeps its address
+// space reservations small.
 // The `mimalloc` feature (default) selects it: memory checkers build without
 // it, since they track only the system allocator's blocks.
 #[cfg(feature = "mimalloc")]
 #[global_allocator]
-static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
+static ALLOC: allocator::Allocator = allocator::Allocator;
 
 pub mod abi;
+#[cfg(feature = "mimalloc")]
+pub mod allocator;
 pub mod arrays;
 pub mod attribs;
 pub mod buffers;

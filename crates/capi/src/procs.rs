@@ -5,8 +5,30 @@ use crate::context::guard;
 use crate::osmesa::*;
 use std::ffi::{c_char, CStr};
 
-/// The address of the exported function `name` (gl* or OSMesa*).
+/// The address of the exported function `name` (gl* or OSMesa*), or for
+/// an ARB or EXT name that the core function it became has the name of
+/// without the suffix (`glActiveTextureARB`, `glBlendEquationEXT`), that
+/// core function: the extensions' entry points behave as the core ones
+/// (GL 2.1's and 3.x's promotions kept their semantics), and programs
+/// written for the extensions look them up by the suffixed names.
 pub fn lookup(name: &str) -> Option<*const ()> {
+    lookup_exact(name).or_else(|| {
+        let core = name
+            .strip_suffix("ARB")
+            .or_else(|| name.strip_suffix("EXT"))?;
+        if NOT_ALIASES.contains(&name) {
+            return None;
+        }
+        lookup_exact(core)
+    })
+}
+
+/// Suffixed names whose unsuffixed form is a different core function:
+/// ARB_vertex_program's (its programs are not GLSL program objects).
+const NOT_ALIASES: &[&str] = &["glIsProgramARB", "glGetProgramivARB"];
+
+/// The address of the exported function of exactly this name.
+fn lookup_exact(name: &str) -> Option<*const ()> {
     for table in [
         crate::attribs::lookup,
         crate::buffers::lookup,

@@ -10,7 +10,15 @@ use gl::enums::*;
 use std::ffi::CString;
 
 gl_entry_points! {
-    fn glGetError() -> GLenum [GL_NO_ERROR] => |c| { c.gl.get_error() }
+    // Not among the commands GL 2.1 §2.6.3 allows between glBegin and
+    // glEnd: there it records GL_INVALID_OPERATION and returns no error
+    // (the flag is read after glEnd), as Mesa does.
+    fn glGetError() -> GLenum [GL_NO_ERROR] => |c| {
+        if c.gl.reject_in_begin() {
+            return GL_NO_ERROR;
+        }
+        c.gl.get_error()
+    }
     fn glGetString(name: GLenum) -> *const GLubyte [std::ptr::null()] => |c| {
         if !c.strings.contains_key(&name) {
             let s = c.gl.get_string(name);

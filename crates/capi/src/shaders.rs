@@ -37,6 +37,36 @@ pub(crate) unsafe fn wr_string(
     unsafe { wr(length, &[n as GLsizei]) };
 }
 
+/// GL_ARB_shader_objects' object queries.
+const GL_PROGRAM_OBJECT_ARB: GLenum = 0x8B40;
+const GL_SHADER_OBJECT_ARB: GLenum = 0x8B48;
+const GL_OBJECT_TYPE_ARB: GLenum = 0x8B4E;
+const GL_OBJECT_SUBTYPE_ARB: GLenum = 0x8B4F;
+
+/// glGetObjectParameter*ARB: the object's type and subtype (its shader
+/// type), else the shader or program query of the same number (the
+/// extension's other names are GL 2.0's values: GL_OBJECT_COMPILE_STATUS_ARB
+/// is GL_COMPILE_STATUS...). None after recording the error: an unknown
+/// object is GL_INVALID_VALUE, a subtype of a program GL_INVALID_ENUM.
+fn object_parameter(c: &mut OsContext, obj: GLuint, pname: GLenum) -> Option<GLint> {
+    let shader = c.gl.is_shader(obj);
+    if !shader && !c.gl.is_program(obj) {
+        c.gl.record_error(GL_INVALID_VALUE);
+        return None;
+    }
+    Some(match (pname, shader) {
+        (GL_OBJECT_TYPE_ARB, true) => GL_SHADER_OBJECT_ARB as GLint,
+        (GL_OBJECT_TYPE_ARB, false) => GL_PROGRAM_OBJECT_ARB as GLint,
+        (GL_OBJECT_SUBTYPE_ARB, true) => c.gl.get_shaderiv(obj, GL_SHADER_TYPE),
+        (GL_OBJECT_SUBTYPE_ARB, false) => {
+            c.gl.record_error(GL_INVALID_ENUM);
+            return None;
+        }
+        (_, true) => c.gl.get_shaderiv(obj, pname),
+        (_, false) => c.gl.get_programiv(obj, pname),
+    })
+}
+
 gl_entry_points! {
     // ---- shaders ----
     fn glCreateShader(kind: GLenum) -> GLuint [0] => |c| { c.gl.create_shader(kind) }
@@ -128,6 +158,68 @@ gl_entry_points! {
         let v = c.gl.get_attached_shaders(program);
         let n = v.len().min(max as usize);
         wr(shaders, &v[..n]);
+        wr(count, &[n as GLsizei]);
+    }
+
+    // ---- GL_ARB_shader_objects' own names (its other functions are the
+    // core ones under ARB names: crate::procs::lookup). Shader and program
+    // objects share one name space, so an object name says which it is.
+    fn glCreateShaderObjectARB(kind: GLenum) -> GLuint [0] => |c| { c.gl.create_shader(kind) }
+    fn glCreateProgramObjectARB() -> GLuint [0] => |c| { c.gl.create_program() }
+    fn glDeleteObjectARB(obj: GLuint) => |c| {
+        if c.gl.is_shader(obj) {
+            c.gl.delete_shader(obj)
+        } else if c.gl.is_program(obj) {
+            c.gl.delete_program(obj)
+        } else if obj != 0 {
+            c.gl.record_error(GL_INVALID_VALUE)
+        }
+    }
+    fn glGetHandleARB(pname: GLenum) -> GLuint [0] => |c| {
+        if pname == GL_PROGRAM_OBJECT_ARB {
+            c.gl.get_integerv(GL_CURRENT_PROGRAM).first().copied().unwrap_or(0) as GLuint
+        } else {
+            c.gl.record_error(GL_INVALID_ENUM);
+            0
+        }
+    }
+    fn glAttachObjectARB(container: GLuint, obj: GLuint) => |c| {
+        c.gl.attach_shader(container, obj)
+    }
+    fn glDetachObjectARB(container: GLuint, obj: GLuint) => |c| {
+        c.gl.detach_shader(container, obj)
+    }
+    [list] fn glUseProgramObjectARB(program: GLuint) => |c| { c.gl.use_program(program) }
+    fn glGetObjectParameterivARB(obj: GLuint, pname: GLenum, params: *mut GLint) => |c| {
+        if let Some(v) = object_parameter(c, obj, pname) {
+            wr(params, &[v]);
+        }
+    }
+    fn glGetObjectParameterfvARB(obj: GLuint, pname: GLenum, params: *mut GLfloat) => |c| {
+        if let Some(v) = object_parameter(c, obj, pname) {
+            wr(params, &[v as GLfloat]);
+        }
+    }
+    fn glGetInfoLogARB(
+        obj: GLuint, max_length: GLsizei, length: *mut GLsizei, log: *mut GLchar
+    ) => |c| {
+        let s = if c.gl.is_shader(obj) {
+            c.gl.get_shader_info_log(obj)
+        } else if c.gl.is_program(obj) {
+            c.gl.get_program_info_log(obj)
+        } else {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        };
+        wr_string(c, &s, max_length, length, log);
+    }
+    fn glGetAttachedObjectsARB(
+        container: GLuint, max: GLsizei, count: *mut GLsizei, objs: *mut GLuint
+    ) => |c| {
+        if max < 0 { c.gl.record_error(GL_INVALID_VALUE); return; }
+        let v = c.gl.get_attached_shaders(container);
+        let n = v.len().min(max as usize);
+        wr(objs, &v[..n]);
         wr(count, &[n as GLsizei]);
     }
 

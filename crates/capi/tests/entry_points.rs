@@ -42,6 +42,11 @@ fn list_commands_between_begin_and_end_are_invalid_operations() {
         glCallList(1);
         glEnd();
         assert_eq!(glGetError(), GL_NO_ERROR);
+        // glGetError is not: it returns no error and records one.
+        glBegin(GL_POINTS);
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        glEnd();
+        assert_eq!(glGetError(), GL_INVALID_OPERATION);
     });
 }
 
@@ -442,6 +447,56 @@ fn generated_variants_convert_and_compile_into_lists() {
         std::hint::black_box(&v);
         glCallList(1);
         assert_eq!(get(GL_CURRENT_COLOR), [0.0, 1.0, 0.0, 1.0]);
+        assert_eq!(glGetError(), GL_NO_ERROR);
+    });
+}
+
+#[test]
+fn arb_shader_objects_names_work_on_shader_and_program_objects() {
+    common::with_context(4, 4, None, |_| unsafe {
+        let vs = glCreateShaderObjectARB(GL_VERTEX_SHADER);
+        let src = c"void main() { gl_Position = gl_Vertex; }";
+        let ptr = src.as_ptr();
+        glShaderSource(vs, 1, &ptr, std::ptr::null());
+        glCompileShader(vs);
+        let p = glCreateProgramObjectARB();
+        glAttachObjectARB(p, vs);
+        glLinkProgram(p);
+        let mut v = 0;
+        // GL_OBJECT_TYPE_ARB, GL_OBJECT_SUBTYPE_ARB, GL_OBJECT_COMPILE_STATUS_ARB.
+        glGetObjectParameterivARB(vs, 0x8B4E, &mut v);
+        assert_eq!(v, 0x8B48);
+        glGetObjectParameterivARB(vs, 0x8B4F, &mut v);
+        assert_eq!(v, GL_VERTEX_SHADER as i32);
+        glGetObjectParameterivARB(vs, 0x8B81, &mut v);
+        assert_eq!(v, 1);
+        glGetObjectParameterivARB(p, 0x8B4E, &mut v);
+        assert_eq!(v, 0x8B40);
+        let mut f = 0.0f32;
+        glGetObjectParameterfvARB(p, GL_LINK_STATUS, &mut f);
+        assert_eq!(f, 1.0);
+        glGetObjectParameterivARB(p, 0x8B4F, &mut v);
+        assert_eq!(glGetError(), GL_INVALID_ENUM);
+        glGetObjectParameterivARB(999, 0x8B4E, &mut v);
+        assert_eq!(glGetError(), GL_INVALID_VALUE);
+        let (mut n, mut objs) = (0, [0u32; 2]);
+        glGetAttachedObjectsARB(p, 2, &mut n, objs.as_mut_ptr());
+        assert_eq!((n, objs[0]), (1, vs));
+        let mut log = [0 as GLchar; 8];
+        glGetInfoLogARB(vs, 8, &mut n, log.as_mut_ptr());
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        glUseProgramObjectARB(p);
+        assert_eq!(glGetHandleARB(0x8B40), p);
+        glGetHandleARB(GL_VERTEX_SHADER);
+        assert_eq!(glGetError(), GL_INVALID_ENUM);
+        glUseProgramObjectARB(0);
+        glDetachObjectARB(p, vs);
+        glDeleteObjectARB(vs);
+        assert_eq!(glIsShader(vs), 0);
+        glDeleteObjectARB(p);
+        assert_eq!(glIsProgram(p), 0);
+        glDeleteObjectARB(p);
+        assert_eq!(glGetError(), GL_INVALID_VALUE);
         assert_eq!(glGetError(), GL_NO_ERROR);
     });
 }

@@ -263,6 +263,20 @@ fn context_attribs_and_queries() {
         let f = OSMesaGetProcAddress(c"glClear".as_ptr());
         assert!(f.is_some());
         assert!(OSMesaGetProcAddress(c"glNoSuchThing".as_ptr()).is_none());
+        // The advertised extensions' suffixed names are the core functions.
+        for (ext, core) in [
+            (c"glActiveTextureARB", c"glActiveTexture"),
+            (c"glBindBufferARB", c"glBindBuffer"),
+            (c"glBlendEquationEXT", c"glBlendEquation"),
+            (c"glVertexAttribDivisorARB", c"glVertexAttribDivisor"),
+        ] {
+            let e = OSMesaGetProcAddress(ext.as_ptr()).map(|f| f as usize);
+            let c = OSMesaGetProcAddress(core.as_ptr()).map(|f| f as usize);
+            assert!(e.is_some() && e == c, "{ext:?}");
+        }
+        // ARB_vertex_program's names are not GLSL's functions.
+        assert!(OSMesaGetProcAddress(c"glIsProgramARB".as_ptr()).is_none());
+        assert!(OSMesaGetProcAddress(c"glNoSuchThingEXT".as_ptr()).is_none());
         OSMesaDestroyContext(ctx);
     }
 }

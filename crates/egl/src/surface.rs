@@ -246,11 +246,11 @@ pub extern "C" fn eglSwapBuffers(dpy: EGLDisplay, surface: EGLSurface) -> EGLBoo
         let mut o = objects::lock();
         let d = o.initialized(dpy)?;
         o.surface(d, surface)?;
+        // EGL 1.5 §3.10.4: a surface that is not the draw surface of the
+        // thread's current context (none current included) is
+        // EGL_BAD_SURFACE.
         let t = current::thread();
-        if t.ctx == 0 {
-            return Err(EGL_BAD_CONTEXT);
-        }
-        if t.draw != surface as usize {
+        if t.ctx == 0 || t.draw != surface as usize {
             return Err(EGL_BAD_SURFACE);
         }
         Ok(EGL_TRUE)

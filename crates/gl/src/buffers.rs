@@ -153,7 +153,7 @@ impl Context {
 
     /// glIsBuffer.
     pub fn is_buffer(&self, name: u32) -> bool {
-        name != 0 && self.objects.buffers.contains_key(&name)
+        name != 0 && self.objects.buffers.get(&name).is_some_and(|b| b.bound)
     }
 
     /// glBindBuffer (creates the object on first bind).
@@ -167,7 +167,7 @@ impl Context {
         };
         *slot = buffer;
         if buffer != 0 {
-            self.objects.buffers.entry(buffer).or_default();
+            self.objects.buffers.entry(buffer).or_default().bound = true;
         }
     }
 
@@ -234,7 +234,7 @@ impl Context {
             }
         }
         if buffer != 0 {
-            self.objects.buffers.entry(buffer).or_default();
+            self.objects.buffers.entry(buffer).or_default().bound = true;
         }
         let binding = match range {
             _ if buffer == 0 => IndexedBinding::default(),
@@ -380,6 +380,7 @@ impl Context {
                 data: Arc::from(store),
                 usage,
                 map: None,
+                bound: true,
             },
         );
     }
@@ -659,6 +660,20 @@ impl Context {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_generated_name_is_a_buffer_from_its_first_bind() {
+        let mut ctx = Context::new(4, 4);
+        let b = ctx.gen_buffers(1)[0];
+        assert!(!ctx.is_buffer(b));
+        ctx.bind_buffer(GL_ARRAY_BUFFER, b);
+        assert!(ctx.is_buffer(b));
+        ctx.bind_buffer(GL_ARRAY_BUFFER, 0);
+        assert!(ctx.is_buffer(b));
+        let u = ctx.gen_buffers(1)[0];
+        ctx.bind_buffer_base(GL_UNIFORM_BUFFER, 0, u);
+        assert!(ctx.is_buffer(u));
+    }
 
     #[test]
     fn buffers() {

@@ -24,7 +24,7 @@ use crate::objects;
 use crate::objects::{
     delete_names, image_target, Attachment, FramebufferObj, RenderbufferObj, MAX_LEVELS,
 };
-use crate::texture_format::{base_format, is_integer_format};
+use crate::texture_format::{base_format, component_info, is_integer_format};
 use crate::{Context, MAX_TEXTURE_SIZE};
 
 /// GL_MAX_3D_TEXTURE_SIZE and GL_MAX_ARRAY_TEXTURE_LAYERS: the layers a
@@ -642,9 +642,9 @@ impl Context {
     /// GL_FRONT_LEFT, GL_BACK_LEFT, GL_DEPTH, GL_STENCIL). On an object:
     /// the object type and name, texture level, cube face and layer, the
     /// color encoding (linear) and component type (unsigned normalized);
-    /// on the default framebuffer also the bit sizes. Other pnames (the
-    /// sizes of an object's attachment) are GL_INVALID_ENUM. None after
-    /// recording an error.
+    /// and the bit sizes of the attached image (GL 3.0 §6.1.17, which
+    /// ARB_framebuffer_object adds; 0 for a component its format lacks).
+    /// Other pnames are GL_INVALID_ENUM. None after recording an error.
     pub fn get_framebuffer_attachment_parameter(
         &mut self,
         target: u32,
@@ -710,8 +710,37 @@ impl Context {
                 layered as i32
             }
             (GL_FRAMEBUFFER_ATTACHMENT_LAYERED, Some(Attachment::Renderbuffer(_))) => 0,
+            (
+                GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
+                Some(a),
+            ) => self.attachment_bits(&a, pname),
             (GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, Some(_)) => GL_LINEAR as i32,
             (GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, Some(_)) => GL_UNSIGNED_NORMALIZED as i32,
+            // GL 3.0 §6.1.17: with nothing attached, the queries other than
+            // the object type and name are GL_INVALID_OPERATION.
+            (
+                GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING
+                | GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE
+                | GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL
+                | GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE
+                | GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER
+                | GL_FRAMEBUFFER_ATTACHMENT_LAYERED,
+                None,
+            ) => {
+                self.set_error(GL_INVALID_OPERATION);
+                return None;
+            }
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;
@@ -752,6 +781,45 @@ impl Context {
             }
         };
         Some(v)
+    }
+
+    /// The bits of one component (`pname`, a GL_FRAMEBUFFER_ATTACHMENT_*_SIZE)
+    /// of an attachment's image: a renderbuffer's as
+    /// glGetRenderbufferParameteriv reports them, a texture image's as
+    /// glGetTexLevelParameteriv does (depth 24 bits unless a 32-bit float
+    /// format, stencil 8).
+    fn attachment_bits(&self, a: &Attachment, pname: u32) -> i32 {
+        let which = match pname {
+            GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE => 0,
+            GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE => 1,
+            GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE => 2,
+            GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE => 3,
+            GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE => 4,
+            _ => 5,
+        };
+        let Some((_, _, internal)) = self.attachment_info(a) else {
+            return 0;
+        };
+        if let Attachment::Renderbuffer(_) = a {
+            return renderbuffer_bits(internal)[which];
+        }
+        let base = base_format(internal as i32).unwrap_or(GL_RGBA);
+        let has = match which {
+            0 => matches!(base, GL_RGB | GL_RGBA | GL_RED | GL_RG),
+            1 => matches!(base, GL_RGB | GL_RGBA | GL_RG),
+            2 => matches!(base, GL_RGB | GL_RGBA),
+            3 => matches!(base, GL_RGBA | GL_ALPHA | GL_LUMINANCE_ALPHA),
+            4 => matches!(base, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL),
+            _ => base == GL_DEPTH_STENCIL,
+        };
+        match (has, which) {
+            (false, _) => 0,
+            (true, 4) if matches!(internal, GL_DEPTH_COMPONENT32F | GL_DEPTH32F_STENCIL8) => 32,
+            (true, 4) => 24,
+            (true, 5) => 8,
+            (true, 2) if internal == GL_R11F_G11F_B10F => 10,
+            (true, _) => component_info(internal as i32).0 as i32,
+        }
     }
 
     /// Size and internal format of an attachment's image.
@@ -964,6 +1032,74 @@ fn window_draw_buffer(b: u32) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn attachment_sizes_follow_the_attached_formats() {
+        let mut ctx = Context::new(4, 4);
+        let f = ctx.gen_framebuffers(1)[0];
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, f);
+        let t = ctx.gen_textures(1)[0];
+        ctx.bind_texture(GL_TEXTURE_2D, t);
+        ctx.tex_image(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGB8 as i32,
+            [2, 2],
+            0,
+            GL_RGB,
+            GL_UNSIGNED_BYTE,
+            Some(&[0u8; 12]),
+        );
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        ctx.framebuffer_texture_2d(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t, 0);
+        let r = ctx.gen_renderbuffers(1)[0];
+        ctx.bind_renderbuffer(GL_RENDERBUFFER, r);
+        ctx.renderbuffer_storage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, 2, 2);
+        ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, r);
+        let q = |ctx: &mut Context, a, pname| {
+            ctx.get_framebuffer_attachment_parameter(GL_FRAMEBUFFER, a, pname)
+        };
+        let color = GL_COLOR_ATTACHMENT0;
+        assert_eq!(
+            q(&mut ctx, color, GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE),
+            Some(8)
+        );
+        assert_eq!(
+            q(&mut ctx, color, GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE),
+            Some(0)
+        );
+        assert_eq!(
+            q(&mut ctx, color, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE),
+            Some(0)
+        );
+        let depth = GL_DEPTH_ATTACHMENT;
+        assert_eq!(
+            q(&mut ctx, depth, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE),
+            Some(24)
+        );
+        assert_eq!(
+            q(&mut ctx, depth, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE),
+            Some(8)
+        );
+        assert_eq!(
+            q(&mut ctx, depth, GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE),
+            Some(0)
+        );
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        // Nothing attached: the object type and name only.
+        let none = GL_COLOR_ATTACHMENT0 + 1;
+        assert_eq!(
+            q(&mut ctx, none, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME),
+            Some(0)
+        );
+        assert_eq!(
+            q(&mut ctx, none, GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE),
+            None
+        );
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        assert_eq!(q(&mut ctx, none, GL_TEXTURE_2D), None);
+        assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    }
 
     #[test]
     fn gen_and_delete_unbind() {

@@ -41,7 +41,6 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_blend_subtract",
     "GL_EXT_blend_func_separate",
     "GL_EXT_blend_equation_separate",
-    "GL_EXT_stencil_two_side",
     "GL_EXT_stencil_wrap",
     "GL_EXT_texture_lod_bias",
     "GL_EXT_fog_coord",
@@ -595,8 +594,18 @@ impl Context {
             GL_VERSION => self.api.version_string(),
             GL_SHADING_LANGUAGE_VERSION => self.api.glsl_version_string().into(),
             // The core profile removes the unified extension string (GL 3.3
-            // core appendix E.2.2): glGetStringi numbers them instead.
-            GL_EXTENSIONS if !self.api.is_core() => self.api.extensions().join(" "),
+            // core appendix E.2.2): glGetStringi numbers them instead. Each
+            // name is followed by a space, the last one too, as Mesa's and
+            // other drivers' strings are: programs print or split the string
+            // assuming it (piglit's glinfo writes it one name a line by
+            // turning spaces into newlines, and its result line then needs
+            // the last one).
+            GL_EXTENSIONS if !self.api.is_core() => self
+                .api
+                .extensions()
+                .iter()
+                .map(|e| format!("{e} "))
+                .collect(),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 String::new()
@@ -626,9 +635,9 @@ mod tests {
         assert!(ctx.get_integerv(0x1234).is_empty());
         assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
         assert!(ctx.get_string(GL_VERSION).starts_with("2.1"));
-        assert!(ctx
-            .get_string(GL_EXTENSIONS)
-            .contains("GL_EXT_framebuffer_object"));
+        let extensions = ctx.get_string(GL_EXTENSIONS);
+        assert!(extensions.contains("GL_EXT_framebuffer_object "));
+        assert!(extensions.ends_with(' ') && !extensions.ends_with("  "));
         ctx.translatef(1.0, 2.0, 3.0);
         assert_eq!(
             &ctx.get_floatv(GL_MODELVIEW_MATRIX)[12..15],

@@ -21,6 +21,9 @@ pub struct BufferObj {
     pub usage: u32,
     /// The mapped range, while mapped.
     pub map: Option<BufferMap>,
+    /// Bound once: a name glGenBuffers returned is a buffer object only
+    /// from its first bind (GL 2.1 §2.9; glIsBuffer is false before).
+    pub bound: bool,
 }
 
 /// GL_MAX_UNIFORM_BUFFER_BINDINGS (GL 3.3's minimum is 36).

@@ -562,12 +562,30 @@ impl Context {
         );
     }
 
-    /// glColorPointer.
+    /// GL_ARB_vertex_array_bgra's rule for the colour arrays: size GL_BGRA
+    /// only with unsigned bytes (GL_INVALID_OPERATION); records the error
+    /// and returns true when it applies.
+    fn reject_bgra_type(&mut self, size: i32, ty: u32, stride: i32) -> bool {
+        let wrong = size == SIZE_BGRA
+            && ty != GL_UNSIGNED_BYTE
+            && ALL_TYPES.contains(&ty)
+            && stride >= 0
+            && !self.in_begin_end();
+        if wrong {
+            self.set_error(GL_INVALID_OPERATION);
+        }
+        wrong
+    }
+
+    /// glColorPointer (size 3, 4 or GL_BGRA).
     pub fn color_pointer(&mut self, size: i32, ty: u32, stride: i32, data: ArrayData) {
+        if self.reject_bgra_type(size, ty, stride) {
+            return;
+        }
         self.set_pointer(
             PointerTarget::Color,
             size,
-            &[3, 4],
+            &[3, 4, SIZE_BGRA],
             ty,
             &ALL_TYPES,
             true,
@@ -576,12 +594,15 @@ impl Context {
         );
     }
 
-    /// glSecondaryColorPointer.
+    /// glSecondaryColorPointer (size 3 or GL_BGRA).
     pub fn secondary_color_pointer(&mut self, size: i32, ty: u32, stride: i32, data: ArrayData) {
+        if self.reject_bgra_type(size, ty, stride) {
+            return;
+        }
         self.set_pointer(
             PointerTarget::Secondary,
             size,
-            &[3],
+            &[3, SIZE_BGRA],
             ty,
             &ALL_TYPES,
             true,
@@ -830,5 +851,20 @@ mod tests {
         assert_eq!(ctx.get_current_vertex_attrib(2), [7.0, 0.0, 0.0, 1.0]);
         ctx.vertex_attrib_p(2, GL_FLOAT, false, 4, 0);
         assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+        // GL_ARB_vertex_array_bgra's colour arrays.
+        ctx.color_pointer(SIZE_BGRA, GL_UNSIGNED_BYTE, 0, d());
+        ctx.secondary_color_pointer(SIZE_BGRA, GL_UNSIGNED_BYTE, 0, d());
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        assert_eq!(ctx.get_integerv(GL_COLOR_ARRAY_SIZE), vec![SIZE_BGRA]);
+        assert_eq!(
+            ctx.get_integerv(GL_SECONDARY_COLOR_ARRAY_SIZE),
+            vec![SIZE_BGRA]
+        );
+        ctx.color_pointer(SIZE_BGRA, GL_FLOAT, 0, d());
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.secondary_color_pointer(SIZE_BGRA, GL_SHORT, 0, d());
+        assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+        ctx.color_pointer(2, GL_FLOAT, 0, d());
+        assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
     }
 }

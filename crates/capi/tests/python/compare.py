@@ -1,9 +1,13 @@
 """Differential run: a PyOpenGL script on shaderbox's libOSMesa and on Mesa's.
 
-Usage: python3 compare.py [--markdown FILE] LIBDIR SCRIPT.py...
+Usage: python3 compare.py [--markdown FILE] [--egl] LIBDIR SCRIPT.py...
 LIBDIR holds shaderbox's libOSMesa.so (e.g. target/release). Each script is
 run twice (PYOPENGL_PLATFORM=osmesa; LD_LIBRARY_PATH=LIBDIR, then the system's
-Mesa) with an output path as its first argument. Either it writes one file
+Mesa) with an output path as its first argument. With --egl, LIBDIR is
+scripts/egl-libs.sh's directory and both runs use PyOpenGL's EGL platform
+(EGL_PLATFORM=surfaceless): shaderbox's libEGL.so.1 through LIBDIR, then
+the system's libEGL.so.1 (libglvnd) with Mesa's vendor library only;
+scripts that make their own OSMesa context have no EGL mode. Either it writes one file
 there (raw RGBA8 pixels: the older single-scene scripts), or it makes a
 directory of scenes (harness.py: NAME.rgba images with a size header,
 NAME.txt logs, NAME.fail on an exception).
@@ -21,9 +25,27 @@ import sys
 import tempfile
 
 
+MESA_EGL_VENDOR = "/usr/share/glvnd/egl_vendor.d/50_mesa.json"
+EGL = False
+# Scenes whose images differ on the EGL route because of Mesa, measured
+# with Mesa 22.3.6: printed with the reason, not counted. Their logs are
+# still compared.
+EGL_MESA_DIFFERENCES = {
+    "gl33_outputs_and_clears": (
+        "Mesa's EGL pbuffer ignores glClearBufferfv(GL_COLOR, 0) (its draw "
+        "buffer GL_BACK; glClear works), which Mesa's OSMesa and shaderbox "
+        "apply"),
+}
+
+
 def run(script, out, libdir):
-    env = dict(os.environ, PYOPENGL_PLATFORM="osmesa")
+    env = dict(os.environ, PYOPENGL_PLATFORM="egl" if EGL else "osmesa")
     env.pop("LD_LIBRARY_PATH", None)
+    if EGL:
+        env.pop("__EGL_VENDOR_LIBRARY_FILENAMES", None)
+        env["EGL_PLATFORM"] = "surfaceless"
+        if not libdir:
+            env["__EGL_VENDOR_LIBRARY_FILENAMES"] = MESA_EGL_VENDOR
     if libdir:
         env["LD_LIBRARY_PATH"] = libdir
     r = subprocess.run([sys.executable, script, out], env=env, capture_output=True, text=True)
@@ -94,6 +116,9 @@ def compare_dirs(script, a, b, rows):
                     ok = verdict(stats[0], stats[1])
                     line = (f"{name}: {stats[0]:.4%} within 2/255, max diff {stats[1]}, "
                             f"PSNR {stats[2]:.1f} dB: {'PASS' if ok else 'FAIL'}")
+        if not ok and EGL and name in EGL_MESA_DIFFERENCES and stats:
+            line += f" (known, not counted: {EGL_MESA_DIFFERENCES[name]})"
+            ok = True
         if line is None:
             line = f"{name}: log matches: PASS"
         print(line)
@@ -133,10 +158,13 @@ def compare_script(libdir, script, rows):
 
 
 def main():
+    global EGL
     args = sys.argv[1:]
     md = None
     if args[:1] == ["--markdown"]:
         md, args = args[1], args[2:]
+    if args[:1] == ["--egl"]:
+        EGL, args = True, args[1:]
     libdir, scripts = os.path.abspath(args[0]), args[1:]
     rows = [] if md else None
     bad = sum(compare_script(libdir, s, rows) for s in scripts)

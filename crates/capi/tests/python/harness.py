@@ -3,7 +3,8 @@ script once on shaderbox's libOSMesa and once on Mesa's).
 
 A scene script registers scenes with @scene("name") and calls main(). Run as
 `python3 SCRIPT OUTDIR [NAME...]`, it renders every scene (or the named ones)
-in a fresh OSMesa context of its own size and writes into OUTDIR:
+in a fresh OSMesa context of its own size (with PYOPENGL_PLATFORM=egl, an
+EGL context current on a pbuffer of that size) and writes into OUTDIR:
   NAME.rgba  the RGBA8 pixels, bottom row first, preceded by an 8-byte
              header (width, height as little-endian u32) — compared with a
              tolerance;
@@ -25,7 +26,20 @@ import OpenGL
 OpenGL.ERROR_CHECKING = False
 OpenGL.ERROR_ON_COPY = False
 
-from OpenGL import GL, arrays, osmesa  # noqa: E402
+# The context API: OSMesa, or EGL when PyOpenGL's platform is EGL (the
+# scenes draw into a pbuffer then; compare.py --egl).
+EGL_MODE = os.environ.get("PYOPENGL_PLATFORM") == "egl"
+if EGL_MODE:
+    # With error checking off, PyOpenGL 3.1's EGL wrappers look for an
+    # `_error_checker` its _errors module then leaves undefined.
+    from OpenGL.raw.EGL import _errors as _egl_errors  # noqa: E402
+
+    if not hasattr(_egl_errors, "_error_checker"):
+        _egl_errors._error_checker = None
+    from OpenGL import EGL  # noqa: E402
+else:
+    from OpenGL import osmesa  # noqa: E402
+from OpenGL import GL, arrays  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", "..", "..", ".."))
@@ -142,7 +156,81 @@ def _context(version):
     return osmesa.OSMesaCreateContextAttribs((ctypes.c_int * len(attribs))(*attribs), None)
 
 
+_EGL_DISPLAY = None
+
+
+def _egl_display():
+    """The EGL display, initialized once (EGL_DEFAULT_DISPLAY: compare.py
+    sets EGL_PLATFORM=surfaceless, which Mesa reads and shaderbox's
+    headless library does not need)."""
+    global _EGL_DISPLAY
+    if _EGL_DISPLAY is None:
+        dpy = EGL.eglGetDisplay(EGL.EGL_DEFAULT_DISPLAY)
+        if not dpy or not EGL.eglInitialize(dpy, None, None):
+            raise RuntimeError(f"eglInitialize failed (0x{EGL.eglGetError():x})")
+        if not EGL.eglBindAPI(EGL.EGL_OPENGL_API):
+            raise RuntimeError("eglBindAPI(EGL_OPENGL_API) failed")
+        _EGL_DISPLAY = dpy
+    return _EGL_DISPLAY
+
+
+def _egl_current(w, h, version):
+    """An EGL context (the `version` of scene(); none: EGL's default
+    context) current on a w x h RGBA8 pbuffer with 24 depth and 8 stencil
+    bits: (display, context, surface)."""
+    dpy = _egl_display()
+    want = [EGL.EGL_SURFACE_TYPE, EGL.EGL_PBUFFER_BIT, EGL.EGL_RENDERABLE_TYPE,
+            EGL.EGL_OPENGL_BIT, EGL.EGL_RED_SIZE, 8, EGL.EGL_GREEN_SIZE, 8,
+            EGL.EGL_BLUE_SIZE, 8, EGL.EGL_ALPHA_SIZE, 8, EGL.EGL_DEPTH_SIZE, 24,
+            EGL.EGL_STENCIL_SIZE, 8, EGL.EGL_NONE]
+    configs = (EGL.EGLConfig * 1)()
+    n = EGL.EGLint()
+    if not EGL.eglChooseConfig(dpy, (EGL.EGLint * len(want))(*want), configs, 1,
+                               ctypes.pointer(n)) or n.value < 1:
+        raise RuntimeError("eglChooseConfig found no RGBA8 pbuffer config")
+    attribs = []
+    if version is not None:
+        major, minor, profile = version
+        bit = (EGL.EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT if profile == "core"
+               else EGL.EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT)
+        attribs = [EGL.EGL_CONTEXT_MAJOR_VERSION, major, EGL.EGL_CONTEXT_MINOR_VERSION, minor,
+                   EGL.EGL_CONTEXT_OPENGL_PROFILE_MASK, bit]
+    attribs.append(EGL.EGL_NONE)
+    ctx = EGL.eglCreateContext(dpy, configs[0], EGL.EGL_NO_CONTEXT,
+                               (EGL.EGLint * len(attribs))(*attribs))
+    if not ctx:
+        raise RuntimeError(f"eglCreateContext failed (0x{EGL.eglGetError():x})")
+    size = (EGL.EGLint * 5)(EGL.EGL_WIDTH, w, EGL.EGL_HEIGHT, h, EGL.EGL_NONE)
+    surface = EGL.eglCreatePbufferSurface(dpy, configs[0], size)
+    if not surface or not EGL.eglMakeCurrent(dpy, surface, surface, ctx):
+        raise RuntimeError(f"pbuffer {w}x{h} failed (0x{EGL.eglGetError():x})")
+    return dpy, ctx, surface
+
+
+def _scene(name, w, h, f, outdir):
+    """Runs scene f in the current context and writes its files."""
+    log = []
+    image = f(log)
+    log.append(f"end: {errors()}")
+    if image is not False:
+        GL.glFinish()
+        px = bytes(GL.glReadPixels(0, 0, w, h, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE))
+        with open(os.path.join(outdir, name + ".rgba"), "wb") as o:
+            o.write(struct.pack("<II", w, h) + px)
+    with open(os.path.join(outdir, name + ".txt"), "w") as o:
+        o.write("\n".join(log) + "\n")
+
+
 def _run(name, w, h, f, outdir, version=None):
+    if EGL_MODE:
+        dpy, ctx, surface = _egl_current(w, h, version)
+        try:
+            _scene(name, w, h, f, outdir)
+        finally:
+            EGL.eglMakeCurrent(dpy, EGL.EGL_NO_SURFACE, EGL.EGL_NO_SURFACE, EGL.EGL_NO_CONTEXT)
+            EGL.eglDestroySurface(dpy, surface)
+            EGL.eglDestroyContext(dpy, ctx)
+        return
     ctx = _context(version)
     if not ctx:
         raise RuntimeError("OSMesaCreateContext failed")
@@ -150,16 +238,7 @@ def _run(name, w, h, f, outdir, version=None):
     try:
         if not osmesa.OSMesaMakeCurrent(ctx, buf, GL.GL_UNSIGNED_BYTE, w, h):
             raise RuntimeError("OSMesaMakeCurrent failed")
-        log = []
-        image = f(log)
-        log.append(f"end: {errors()}")
-        if image is not False:
-            GL.glFinish()
-            px = bytes(GL.glReadPixels(0, 0, w, h, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE))
-            with open(os.path.join(outdir, name + ".rgba"), "wb") as o:
-                o.write(struct.pack("<II", w, h) + px)
-        with open(os.path.join(outdir, name + ".txt"), "w") as o:
-            o.write("\n".join(log) + "\n")
+        _scene(name, w, h, f, outdir)
     finally:
         osmesa.OSMesaDestroyContext(ctx)
 
