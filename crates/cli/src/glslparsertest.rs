@@ -47,6 +47,7 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "GL_ARB_texture_multisample",
     "GL_EXT_texture_array",
     "GL_ARB_shader_texture_lod",
+    "GL_ARB_arrays_of_arrays",
 ];
 
 /// Whether a test of GLSL `version` can use extension `name`: one of

@@ -822,29 +822,40 @@ impl Module {
             .map(|i| FunctionId(i as u32))
     }
 
-    /// Spells a type using this module's struct names; an array of a
-    /// two-dimensional geometry input's per-vertex struct as the
-    /// two-dimensional array it stands for (`float[3][4]`: 3 vertices of
+    /// Spells a type using this module's struct names; an array of
+    /// arrays ([`crate::types::StructDef::array_row`]) as the
+    /// multi-dimensional array it stands for (`float[3][4]`: 3 rows of
     /// `float[4]`).
     pub fn type_name(&self, ty: Type) -> String {
-        if let (crate::types::Base::Struct(id), Some(outer)) = (ty.base, ty.array) {
-            let row = self
-                .structs
-                .get(id.0 as usize)
-                .filter(|s| s.per_vertex)
-                .and_then(|s| s.members.first())
-                .map(|m| m.ty);
-            if let Some(row) = row {
-                let outer = match outer {
-                    crate::types::ArraySize::Sized(n) => n.to_string(),
-                    crate::types::ArraySize::Unsized => String::new(),
-                };
-                let inner = match row.array {
-                    Some(crate::types::ArraySize::Sized(n)) => n.to_string(),
-                    _ => String::new(),
-                };
-                return format!("{}[{outer}][{inner}]", self.type_name(row.element()));
+        let size = |a: Option<crate::types::ArraySize>| match a {
+            Some(crate::types::ArraySize::Sized(n)) => format!("[{n}]"),
+            Some(crate::types::ArraySize::Unsized) => "[]".to_string(),
+            None => String::new(),
+        };
+        let mut dims = String::new();
+        let mut t = ty;
+        // Rows nest at most as deep as the declarations that made them;
+        // the bound only keeps a malformed module from looping.
+        for _ in 0..64 {
+            let row = match (t.base, t.array) {
+                (crate::types::Base::Struct(id), Some(_)) => self
+                    .structs
+                    .get(id.0 as usize)
+                    .filter(|s| s.array_row)
+                    .and_then(|s| s.members.first())
+                    .map(|m| m.ty),
+                _ => None,
+            };
+            match row {
+                Some(row) => {
+                    dims.push_str(&size(t.array));
+                    t = row;
+                }
+                None => break,
             }
+        }
+        if !dims.is_empty() {
+            return format!("{}{dims}{}", self.type_name(t.element()), size(t.array));
         }
         let names = |id: crate::types::StructId| {
             self.structs

@@ -279,8 +279,8 @@ impl Analyzer {
             ty,
             span,
         ));
-        // A vertex of a two-dimensional geometry input is its row.
-        match self.per_vertex_member(ty) {
+        // An element of an array of arrays is its row.
+        match self.array_row_member(ty) {
             Some(row) => mk(
                 K::Member {
                     base: Box::new(e),

@@ -188,7 +188,7 @@ impl Analyzer {
                 })
                 .collect(),
             builtin: self.builtin_mode,
-            per_vertex: false,
+            array_row: false,
         });
         if !other_interface {
             self.scopes.insert(b.name.name.clone(), Symbol::Struct(sid));
