@@ -217,6 +217,19 @@ impl Analyzer {
                 }
             }
             Some((inst, arr)) => {
+                if let Some(a) = arr.as_ref().filter(|a| a.dims.len() > 1) {
+                    // Blocks are laid out, bound and queried per instance
+                    // element; arrays of arrays of them are not modelled.
+                    self.error(
+                        Code::BadArraySize,
+                        a.span,
+                        format!(
+                            "block instance `{}' is an array of arrays; shaderbox supports arrays of blocks of one dimension only",
+                            inst.name
+                        ),
+                    );
+                    return;
+                }
                 let ty = self.apply_array(
                     Type {
                         base: Base::Struct(sid),
@@ -439,7 +452,7 @@ impl Analyzer {
             );
             return;
         };
-        if inst.name != "gl_in" || arr.is_none() {
+        if inst.name != "gl_in" || arr.as_ref().is_none_or(|a| a.dims.len() != 1) {
             self.error(
                 Code::BadQualifier,
                 inst.span,
