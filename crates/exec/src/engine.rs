@@ -831,7 +831,13 @@ mod tests {
                 // of a NaN that arithmetic makes unspecified (x86 keeps the
                 // first operand's; Miri picks at random), so its bits are
                 // not part of the contract.
-                let class = |x: f32| if x.is_nan() { f32::NAN.to_bits() } else { x.to_bits() };
+                let class = |x: f32| {
+                    if x.is_nan() {
+                        f32::NAN.to_bits()
+                    } else {
+                        x.to_bits()
+                    }
+                };
                 let want = |bit: usize| class(fz(f(a[l | bit])) - fz(f(a[l & !bit])));
                 assert_eq!(class(dx[l]), want(1), "{a:x?} lane {l}");
                 assert_eq!(class(dy[l]), want(2), "{a:x?} lane {l}");

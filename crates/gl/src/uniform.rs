@@ -190,11 +190,10 @@ impl UniformTable {
             glsl::Stage::Geometry => 1,
             _ => 2,
         };
-        let elements = b.array.unwrap_or(1) as usize;
-        let names: Vec<String> = match b.array {
-            Some(n) => (0..n).map(|i| format!("{}[{i}]", b.name)).collect(),
-            None => vec![b.name.clone()],
-        };
+        let elements = b.elements();
+        let names: Vec<String> = (0..elements)
+            .map(|e| format!("{}{}", b.name, b.element_suffix(e)))
+            .collect();
         let members: Vec<(Type, bool)> = b.members.iter().map(|mb| (mb.ty, mb.row_major)).collect();
         let (offsets, data_size) = block_offsets(&members, &m.structs);
         let member = |i: usize| {

@@ -201,12 +201,50 @@ pub struct InterfaceBlock {
     /// is an output block of a vertex shader).
     pub input: bool,
     pub instance: Option<String>,
-    /// Arrayed instance: `uniform B { ... } b[4];`.
+    /// Arrayed instance: `uniform B { ... } b[4];`; the outermost size of
+    /// an array of arrays of instances.
     pub array: Option<u32>,
+    /// The inner sizes of an array of arrays of instances
+    /// (GL_ARB_arrays_of_arrays: `uniform B { ... } b[2][3];` has `array`
+    /// 2 and `inner` `[3]`), outermost first; empty otherwise. The
+    /// instance's elements are numbered row after row, the inner
+    /// dimension fastest, as its global's flattened layout has them.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub inner: Vec<u32>,
     pub layout: BlockLayout,
     pub members: Vec<BlockMember>,
     pub globals: Vec<GlobalId>,
     pub span: Span,
+}
+
+impl InterfaceBlock {
+    /// The instance array's sizes, outermost first (empty without one).
+    pub fn dims(&self) -> Vec<u32> {
+        self.array
+            .into_iter()
+            .chain(self.inner.iter().copied())
+            .collect()
+    }
+
+    /// The number of block elements: 1 without an instance array.
+    pub fn elements(&self) -> usize {
+        self.dims().iter().map(|&n| n as usize).product()
+    }
+
+    /// The subscripts naming element `e` (`[e]`, `[i][j]` of an array of
+    /// arrays; empty without an instance array), as GL names the blocks
+    /// of an arrayed instance (`B[1][2]`).
+    pub fn element_suffix(&self, e: usize) -> String {
+        let dims = self.dims();
+        let mut subs = vec![0usize; dims.len()];
+        let mut rest = e;
+        for (s, &n) in subs.iter_mut().zip(&dims).rev() {
+            let n = (n as usize).max(1);
+            *s = rest % n;
+            rest /= n;
+        }
+        subs.iter().map(|s| format!("[{s}]")).collect()
+    }
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize)]

@@ -359,7 +359,9 @@ fn array_types_and_constructors_in_120() {
         "float[3](1.0, 2.0, 3.0)"
     );
     let v = vars(&tu.items[1]);
-    assert!(v.declarators[0].array.as_ref().unwrap().dims[0].size.is_none());
+    assert!(v.declarators[0].array.as_ref().unwrap().dims[0]
+        .size
+        .is_none());
     assert_eq!(
         show(v.declarators[0].init.as_ref().unwrap()),
         "float[](1.0, 2.0)"

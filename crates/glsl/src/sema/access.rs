@@ -99,12 +99,19 @@ impl Analyzer {
                     *s = (*s).max(i + 1);
                 }
             }
-            // `inst.m[i]' or `inst[k].m[i]': the member of a block's
-            // named instance.
+            // `inst.m[i]', `inst[k].m[i]' or `inst[k][l].m[i]': the member
+            // of a block's named instance.
             K::Member { ref base, index } => {
                 let mut root = &**base;
-                if let K::Index { base, .. } = &root.kind {
-                    root = base;
+                for _ in 0..64 {
+                    match &root.kind {
+                        K::Index { base, .. } => root = base,
+                        // The row of an array of arrays of instances.
+                        K::Member { base, .. } if self.array_row_member(base.ty).is_some() => {
+                            root = base
+                        }
+                        _ => break,
+                    }
                 }
                 let K::Global(g) = root.kind else { return };
                 let Some(b) = self

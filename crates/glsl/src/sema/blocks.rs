@@ -195,6 +195,7 @@ impl Analyzer {
         }
         let mut globals = Vec::new();
         let mut array = None;
+        let mut inner = Vec::new();
         match &b.instance {
             None => {
                 for m in &members {
@@ -217,19 +218,6 @@ impl Analyzer {
                 }
             }
             Some((inst, arr)) => {
-                if let Some(a) = arr.as_ref().filter(|a| a.dims.len() > 1) {
-                    // Blocks are laid out, bound and queried per instance
-                    // element; arrays of arrays of them are not modelled.
-                    self.error(
-                        Code::BadArraySize,
-                        a.span,
-                        format!(
-                            "block instance `{}' is an array of arrays; shaderbox supports arrays of blocks of one dimension only",
-                            inst.name
-                        ),
-                    );
-                    return;
-                }
                 let ty = self.apply_array(
                     Type {
                         base: Base::Struct(sid),
@@ -248,6 +236,17 @@ impl Analyzer {
                 }
                 if let Some(ArraySize::Sized(n)) = ty.array {
                     array = Some(n);
+                }
+                // The inner sizes of an array of arrays of instances.
+                let mut row = ty.element();
+                while let Some(r) = self.array_row_member(row) {
+                    if let Some(ArraySize::Sized(n)) = r.array {
+                        inner.push(n);
+                    }
+                    row = r.element();
+                    if inner.len() > 64 {
+                        break;
+                    }
                 }
                 if !self.check_reserved_name(&inst.name, inst.span) {
                     return;
@@ -279,6 +278,7 @@ impl Analyzer {
             input,
             instance: b.instance.as_ref().map(|(i, _)| i.name.to_string()),
             array,
+            inner,
             layout,
             members,
             globals,
