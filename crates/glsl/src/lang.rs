@@ -151,8 +151,10 @@ extensions! {
     // the `*GradARB` lookups with explicit derivatives.
     ArbShaderTextureLod = "GL_ARB_shader_texture_lod";
     // Arrays of arrays (`float a[2][3]`, `float[2][3]`, `float[3] a[2]`),
-    // which GLSL 4.30 made core; the extension requires GLSL 1.20, the
-    // first version with array types ([`Extension::since`]).
+    // which GLSL 4.30 made core. Its "GLSL 1.2 is required" asks the
+    // implementation for GLSL 1.20, which every context has, so shaders
+    // of every version may enable it (as Mesa offers it); a 1.10 shader
+    // still has no array type syntax or constructors.
     ArbArraysOfArrays = "GL_ARB_arrays_of_arrays";
 }
 
@@ -166,7 +168,6 @@ impl Extension {
             Extension::ArbTextureRectangle => Version::V140,
             Extension::ArbTextureMultisample => Version::V150,
             Extension::ExtTextureArray => Version::V130,
-            Extension::ArbArraysOfArrays => Version::V120,
             _ => Version::V110,
         }
     }
@@ -314,7 +315,10 @@ impl Unavailable {
                 e.name(),
                 e.since().dotted()
             ),
-            Unavailable::NeedsExtension(e) => format!("add `#extension {} : enable'", e.name()),
+            Unavailable::NeedsExtension(e) => format!(
+                "add `#extension {} : enable' after `#version'; no version up to GLSL 3.30 has it without the extension",
+                e.name()
+            ),
             Unavailable::RemovedInCore(v) if v >= Version::V150 => format!(
                 "write `#version {} compatibility' to keep it, in a compatibility context",
                 v.number()

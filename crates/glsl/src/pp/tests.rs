@@ -731,8 +731,6 @@ fn texture_extensions_are_offered_from_the_version_that_has_them() {
         ("GL_ARB_texture_rectangle", 140),
         ("GL_ARB_texture_multisample", 150),
         ("GL_EXT_texture_array", 130),
-        // Not a texture extension, but offered from 1.20 the same way.
-        ("GL_ARB_arrays_of_arrays", 120),
     ] {
         for v in [110, 120, 130, 140, 150, 330] {
             let src =
