@@ -366,12 +366,11 @@ pub struct StructDef {
     /// layout (flattened components, std140) is the member's, so an array
     /// of rows is laid out as the C-style array of arrays it stands for,
     /// inner dimension fastest. Its name is the row type's spelling
-    /// (`float[3]`). The member of an ARB_arrays_of_arrays row is named
-    /// [`ARRAY_ROW_MEMBER`]; that of a GL_EXT_geometry_shader4
+    /// (`float[3]`), its member's [`ARRAY_ROW_MEMBER`]: one row struct
+    /// per row type, whether the array of arrays is an
+    /// ARB_arrays_of_arrays one or a GL_EXT_geometry_shader4
     /// two-dimensional geometry input (`varying in float v[][4]`, one row
-    /// per input vertex) after the vertex output it takes (`v`, or
-    /// `gl_TexCoord` for `gl_TexCoordIn[][]`), which the linker sizes
-    /// built-in rows by.
+    /// per input vertex), so the two are the same type.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub array_row: bool,
 }

@@ -526,13 +526,8 @@ impl Analyzer {
             .push("GL_EXT_geometry_shader4 §4.3.6: it is the size of the vertex shader's array output".into());
             return Type::ERROR;
         }
-        // The built-in inputs take the vertex outputs without `In'.
-        let member = match d.name.name.strip_suffix("In") {
-            Some(out) if d.name.name.starts_with("gl_") => out.to_string(),
-            _ => d.name.name.to_string(),
-        };
         let row = ty.element().array_of(size);
-        let elem = self.array_row(&member, row);
+        let elem = self.array_row(crate::types::ARRAY_ROW_MEMBER, row);
         Type {
             array: ty.array,
             ..elem

@@ -13,8 +13,8 @@
 //! built-in `gl_TexCoordIn[][]` and `gl_ClipDistanceIn[][]`) are one-level
 //! arrays of a synthesized struct ([`crate::types::StructDef::array_row`],
 //! as every array of arrays is) whose one member is the vertex output's
-//! array, named after it: indexing the outer array yields the member
-//! (`v[i]` is `v[i].v`, a `float[4]` that can be indexed, passed whole and
+//! array: indexing the outer array yields the member
+//! (`v[i]` is the row, a `float[4]` that can be indexed, passed whole and
 //! asked its `.length()`), and every later stage sees an ordinary array
 //! of structs whose element has the layout of the vertex output it reads.
 
