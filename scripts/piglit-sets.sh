@@ -2,8 +2,9 @@
 # of piglit's spec/ tree the scripts fetch and run, grouped into sets.
 #
 #   legacy  GLSL 1.10 and 1.20 (what .ci/run measures)
-#   glsl3   GLSL 1.30, 1.40, 1.50, 3.30 and the extensions those versions
-#           absorbed that have compiler tests of their own (issue 30)
+#   glsl3   GLSL 1.30, 1.40, 1.50, 3.30, the extensions those versions
+#           absorbed that have compiler tests of their own (issue 30), and
+#           GL_ARB_arrays_of_arrays (GLSL 4.30's, offered on every context)
 #   all     both
 #
 # A folder NAME is tests/spec/NAME/ and generated_tests/spec/NAME/ in the
