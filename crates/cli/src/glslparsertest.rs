@@ -464,6 +464,16 @@ mod tests {
     }
 
     #[test]
+    fn extensions_are_supported_where_the_compiler_offers_them() {
+        for v in [Version::V110, Version::V120, Version::V150, Version::V330] {
+            assert!(supported("GL_ARB_arrays_of_arrays", v), "{v:?}");
+        }
+        assert!(!supported("GL_EXT_texture_array", Version::V120));
+        assert!(supported("GL_EXT_texture_array", Version::V130));
+        assert!(!supported("GL_ARB_shading_language_420pack", Version::V330));
+    }
+
+    #[test]
     fn verdicts() {
         let v = |expect, ok| verdict(expect, false, Stage::Vertex, "t.vert", ok, "");
         assert_eq!(v(Expect::Pass, true).verdict, Verdict::Pass);
