@@ -189,7 +189,16 @@ impl Analyzer {
             return error_expr(span);
         }
         let t = base.ty;
-        if t.is_array() && t.is_sampler() && cidx.is_none() {
+        // An array of arrays of samplers is an array of samplers at every
+        // level.
+        let mut innermost = t.element();
+        for _ in 0..64 {
+            match self.array_row_member(innermost) {
+                Some(row) => innermost = row.element(),
+                None => break,
+            }
+        }
+        if t.is_array() && innermost.is_sampler() && cidx.is_none() {
             if let Err(why) = self
                 .lang
                 .gate(crate::lang::Feature::NonConstantSamplerIndex)

@@ -253,3 +253,37 @@ fn block_instances_may_be_arrays_of_arrays() {
         Code::BadQualifier,
     );
 }
+
+#[test]
+fn sampler_and_block_arrays_of_arrays_keep_constant_indices() {
+    // GLSL 1.30 §4.1.7 and 1.50 §4.3.7 hold at every level.
+    fails(
+        &shader(
+            Stage::Fragment,
+            130,
+            "uniform sampler2D s[2][2];\nuniform int i;\nvoid main() { gl_FragColor = texture(s[i][0], vec2(0.0)); }",
+        ),
+        Code::NotConstant,
+    );
+    fails(
+        &shader(
+            Stage::Fragment,
+            130,
+            "uniform sampler2D s[2][2];\nuniform int i;\nvoid main() { gl_FragColor = texture(s[0][i], vec2(0.0)); }",
+        ),
+        Code::NotConstant,
+    );
+    fails(
+        &shader(
+            Stage::Vertex,
+            150,
+            "uniform B { vec4 v; } b[2][2];\nuniform int i;\nvoid main() { gl_Position = b[1][i].v; }",
+        ),
+        Code::NotConstant,
+    );
+    ok(&shader(
+        Stage::Vertex,
+        150,
+        "uniform B { vec4 v[2]; } b[2][2];\nuniform int i;\nvoid main() { gl_Position = b[1][0].v[i]; }",
+    ));
+}

@@ -563,9 +563,22 @@ impl Analyzer {
         }
     }
 
-    /// Whether `e` names the instance array of a uniform block.
+    /// Whether `e` names the instance array of a uniform block, or a row
+    /// of an array of arrays of instances (`b[1]` of `b[2][3]`).
     pub(crate) fn is_block_instance_array(&self, e: &ir::Expr) -> bool {
-        let ir::ExprKind::Global(g) = e.kind else {
+        let mut root = e;
+        for _ in 0..64 {
+            match &root.kind {
+                ir::ExprKind::Member { base, .. } if self.array_row_member(base.ty).is_some() => {
+                    match &base.kind {
+                        ir::ExprKind::Index { base, .. } => root = base,
+                        _ => return false,
+                    }
+                }
+                _ => break,
+            }
+        }
+        let ir::ExprKind::Global(g) = root.kind else {
             return false;
         };
         let Some(g) = self.module.globals.get(g.0 as usize) else {
