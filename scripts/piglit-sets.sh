@@ -2,15 +2,16 @@
 # of piglit's spec/ tree the scripts fetch and run, grouped into sets.
 #
 #   legacy  GLSL 1.10 and 1.20 (what .ci/run measures)
-#   glsl3   GLSL 1.30, 1.40, 1.50, 3.30 and the extensions those versions
-#           absorbed that have compiler tests of their own (issue 30)
+#   glsl3   GLSL 1.30, 1.40, 1.50, 3.30, the extensions those versions
+#           absorbed that have compiler tests of their own (issue 30), and
+#           GL_ARB_arrays_of_arrays (GLSL 4.30's, offered on every context)
 #   all     both
 #
 # A folder NAME is tests/spec/NAME/ and generated_tests/spec/NAME/ in the
 # package, and the tests piglit names spec@NAME@... in its results.
 
 piglit_legacy_folders="glsl-1.10 glsl-1.20"
-piglit_glsl3_folders="glsl-1.30 glsl-1.40 glsl-1.50 glsl-3.30 arb_geometry_shader4 arb_explicit_attrib_location arb_uniform_buffer_object"
+piglit_glsl3_folders="glsl-1.30 glsl-1.40 glsl-1.50 glsl-3.30 arb_geometry_shader4 arb_explicit_attrib_location arb_uniform_buffer_object arb_arrays_of_arrays"
 
 # piglit_folders SET: prints the folders of SET on one line; fails (status
 # 1, nothing printed) for an unknown set.

@@ -47,6 +47,7 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "GL_ARB_texture_multisample",
     "GL_EXT_texture_array",
     "GL_ARB_shader_texture_lod",
+    "GL_ARB_arrays_of_arrays",
 ];
 
 /// Whether a test of GLSL `version` can use extension `name`: one of
@@ -460,6 +461,16 @@ mod tests {
             parse_version("x").unwrap_err(),
             "Ill-formed GLSL version number: x"
         );
+    }
+
+    #[test]
+    fn extensions_are_supported_where_the_compiler_offers_them() {
+        for v in [Version::V110, Version::V120, Version::V150, Version::V330] {
+            assert!(supported("GL_ARB_arrays_of_arrays", v), "{v:?}");
+        }
+        assert!(!supported("GL_EXT_texture_array", Version::V120));
+        assert!(supported("GL_EXT_texture_array", Version::V130));
+        assert!(!supported("GL_ARB_shading_language_420pack", Version::V330));
     }
 
     #[test]

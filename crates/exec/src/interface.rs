@@ -97,12 +97,15 @@ impl Interface {
         let mut out = Vec::new();
         for slot in &self.inputs {
             if let Some((block, rest)) = slot.name.split_once('[') {
-                // A member of an arrayed block instance: `Block[i].member`.
-                if let Some((index, member)) = rest.split_once("].") {
+                // A member of an arrayed block instance: `Block[i].member`,
+                // vertex i's `Block.member`; of an array of arrays of
+                // instances, `Block[i][j].member`, vertex i's
+                // `Block[j].member`.
+                if let Some((index, after)) = rest.split_once(']') {
                     if let Ok(vertex) = index.parse() {
                         out.push(VertexInput {
                             vertex,
-                            name: format!("{block}.{member}"),
+                            name: format!("{block}{after}"),
                             offset: slot.offset,
                             components: slot.components,
                         });

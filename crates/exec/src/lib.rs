@@ -103,7 +103,13 @@
 //! ## Layout
 //! Values are flattened as `glsl::ir::ConstValue` is (vectors in order,
 //! matrices column-major, arrays element by element, structs member by
-//! member); a sampler takes one component (its texture unit). Uniform
+//! member); a sampler takes one component (its texture unit). An array
+//! of arrays (GL_ARB_arrays_of_arrays, GL_EXT_geometry_shader4's
+//! two-dimensional inputs) reaches the executor as an array of
+//! one-member row structs (`glsl::types::StructDef::array_row`), so it is
+//! flattened row after row, the inner dimension fastest, exactly as the
+//! C-style array it stands for: indexing a level is indexing an array,
+//! and no op knows arrays of arrays. Uniform
 //! words are `u32` bit patterns: `f32::to_bits` for floats, `i32 as u32`
 //! for ints, the value for uints, 0/1 for bools, the unit number for
 //! samplers. Inputs and outputs are `f32` (bool `gl_FrontFacing` is

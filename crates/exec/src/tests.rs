@@ -485,6 +485,51 @@ fn structs_arrays_and_equality() {
     }
 }
 
+/// GL_ARB_arrays_of_arrays: a uniform `float[2][3]` laid out row after
+/// row (inner dimension fastest), dynamic indices on each level (clamped
+/// per level), whole rows copied, passed, returned and compared, and
+/// constructors of rows.
+#[test]
+fn arrays_of_arrays_index_every_level() {
+    let (c, _) = frag_colors(
+        "#version 120
+        #extension GL_ARB_arrays_of_arrays : enable
+        uniform float u[2][3];
+        float pick(float a[2][3], int i, int j) { return a[i][j]; }
+        float[3] row(float a[2][3], int i) { return a[i]; }
+        void main() {
+            int l = int(gl_FragCoord.x);
+            int i = l / 3 - 1;
+            int j = l - 4;
+            float a[2][3] = float[2][3](float[3](1.0, 2.0, 3.0), float[3](4.0, 5.0, 6.0));
+            float b[3][2][3];
+            b[2] = a;
+            b[2][i][j] = 10.0 * float(l);
+            float r[3] = row(u, i);
+            gl_FragColor = vec4(u[i][j] + r[2], pick(b[2], 1, 2), float(b[2] == a), b[2][1][j]);
+        }",
+        &[("u", &fbits(&[0.5, 1.5, 2.5, 3.5, 4.5, 5.5]))],
+    );
+    for (l, c) in c.iter().enumerate() {
+        let i = (l as i32 / 3 - 1).clamp(0, 1) as usize;
+        let j = (l as i32 - 4).clamp(0, 2) as usize;
+        let u = [[0.5, 1.5, 2.5], [3.5, 4.5, 5.5]];
+        let mut b = [[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]];
+        b[i][j] = 10.0 * l as f32;
+        let same = b == [[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]];
+        assert_eq!(
+            *c,
+            [
+                u[i][j] + u[i][2],
+                b[1][2],
+                f32::from(u8::from(same)),
+                b[1][j]
+            ],
+            "lane {l}"
+        );
+    }
+}
+
 #[test]
 fn swizzle_assignment_and_incdec() {
     let (c, _) = frag_colors(

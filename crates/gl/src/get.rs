@@ -61,6 +61,8 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_texture_rg",
     "GL_EXT_texture_sRGB",
     "GL_ARB_sampler_objects",
+    // Needs GLSL 1.20, which every context's newest GLSL version reaches.
+    "GL_ARB_arrays_of_arrays",
 ];
 
 /// The extensions a 3.3 context adds (their GL 3.2–3.3 core features,

@@ -985,6 +985,85 @@ mod tests {
         p
     }
 
+    /// GL 4.3 §7.3.1's names for arrays of arrays (GL_ARB_arrays_of_arrays):
+    /// one active uniform per innermost array, `a[i][0]` of size its
+    /// length; locations of every element, consecutive along a row.
+    #[test]
+    fn arrays_of_arrays_uniforms_are_named_per_innermost_array() {
+        let mut ctx = Context::new(8, 8);
+        assert!(ctx
+            .get_string(crate::enums::GL_EXTENSIONS)
+            .split(' ')
+            .any(|w| w == "GL_ARB_arrays_of_arrays"));
+        let p = program(
+            &mut ctx,
+            "#version 120\n#extension GL_ARB_arrays_of_arrays : enable\nuniform vec2 a[2][3];\nstruct S { float x[2][2]; };\nuniform S s[2];\nvoid main() { gl_Position = vec4(a[1][2] + a[0][0], s[1].x[1][0] + s[0].x[0][1], 1.0); }",
+            "void main() { gl_FragColor = vec4(1.0); }",
+        );
+        assert_eq!(
+            ctx.get_programiv(p, GL_LINK_STATUS),
+            1,
+            "{}",
+            ctx.get_program_info_log(p)
+        );
+        let n = ctx.get_programiv(p, GL_ACTIVE_UNIFORMS);
+        let infos: Vec<ActiveInfo> = (0..n as u32)
+            .map(|i| ctx.get_active_uniform(p, i).unwrap())
+            .collect();
+        let named = |name: &str| infos.iter().find(|i| i.name == name).cloned();
+        for row in ["a[0][0]", "a[1][0]"] {
+            assert_eq!(
+                named(row),
+                Some(ActiveInfo {
+                    name: row.into(),
+                    size: 3,
+                    ty: GL_FLOAT_VEC2
+                }),
+                "{infos:?}"
+            );
+        }
+        for row in [
+            "s[0].x[0][0]",
+            "s[0].x[1][0]",
+            "s[1].x[0][0]",
+            "s[1].x[1][0]",
+        ] {
+            assert_eq!(
+                named(row),
+                Some(ActiveInfo {
+                    name: row.into(),
+                    size: 2,
+                    ty: GL_FLOAT
+                }),
+                "{infos:?}"
+            );
+        }
+        assert_eq!(n, 6);
+        let a10 = ctx.get_uniform_location(p, "a[1][0]");
+        assert!(a10 >= 0);
+        assert_eq!(ctx.get_uniform_location(p, "a[1]"), a10);
+        assert_eq!(ctx.get_uniform_location(p, "a[1][2]"), a10 + 2);
+        assert_eq!(ctx.get_uniform_location(p, "a[1][3]"), -1);
+        assert_eq!(ctx.get_uniform_location(p, "a[2][0]"), -1);
+        // Only the innermost `[0]' may be left out (`a[0]', not `a').
+        assert_eq!(
+            ctx.get_uniform_location(p, "a[0]"),
+            ctx.get_uniform_location(p, "a[0][0]")
+        );
+        assert_eq!(ctx.get_uniform_location(p, "a"), -1);
+        assert_eq!(ctx.get_uniform_location(p, "a[1]."), -1);
+        let x = ctx.get_uniform_location(p, "s[1].x[1][1]");
+        assert_eq!(x, ctx.get_uniform_location(p, "s[1].x[1]") + 1);
+        // Values land where the shader reads them.
+        ctx.use_program(p);
+        let a11 = ctx.get_uniform_location(p, "a[1][1]");
+        ctx.uniform_2fv(a11, 2, &[1.0, 2.0, 3.0, 4.0]);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        assert_eq!(ctx.get_uniformfv(p, a10 + 2), vec![3.0, 4.0]);
+        ctx.uniform_1f(x, 7.0);
+        assert_eq!(ctx.get_uniformfv(p, x), vec![7.0]);
+    }
+
     #[test]
     fn compile_link_and_set_uniforms() {
         let mut ctx = Context::new(8, 8);

@@ -190,11 +190,10 @@ impl UniformTable {
             glsl::Stage::Geometry => 1,
             _ => 2,
         };
-        let elements = b.array.unwrap_or(1) as usize;
-        let names: Vec<String> = match b.array {
-            Some(n) => (0..n).map(|i| format!("{}[{i}]", b.name)).collect(),
-            None => vec![b.name.clone()],
-        };
+        let elements = b.elements();
+        let names: Vec<String> = (0..elements)
+            .map(|e| format!("{}{}", b.name, b.element_suffix(e)))
+            .collect();
         let members: Vec<(Type, bool)> = b.members.iter().map(|mb| (mb.ty, mb.row_major)).collect();
         let (offsets, data_size) = block_offsets(&members, &m.structs);
         let member = |i: usize| {
@@ -352,7 +351,12 @@ impl UniformTable {
                 }
                 let elem = ty.element();
                 let ew = words(elem, structs);
-                if matches!(elem.base, Base::Struct(_)) {
+                if let Some(row) = array_row(elem, structs) {
+                    // An array of arrays: `a[i]` is the row, named without
+                    // its member.
+                    offset += ew * i as usize;
+                    ty = row;
+                } else if matches!(elem.base, Base::Struct(_)) {
                     offset += ew * i as usize;
                     ty = elem;
                 } else {
@@ -551,6 +555,31 @@ fn split_ident(s: &str) -> Option<(&str, &str)> {
     }
 }
 
+/// The row an element of an array of arrays holds, for a row struct type
+/// ([`glsl::types::StructDef::array_row`]).
+fn array_row(ty: Type, structs: &[StructDef]) -> Option<Type> {
+    let Base::Struct(id) = ty.base else {
+        return None;
+    };
+    let s = structs.get(id.0 as usize)?;
+    if !s.array_row || ty.is_array() {
+        return None;
+    }
+    s.members.first().map(|m| m.ty)
+}
+
+/// The name of member `member` of a value of struct `s` named `base`:
+/// `base.member`, or `base` itself for the row of an array of arrays
+/// (`a[1]` of `float a[2][3]`, whose elements are then `a[1][0]`...), as
+/// GL 4.3 §7.3.1 names the active variables of arrays of arrays.
+fn member_name(base: &str, s: &StructDef, member: &str) -> String {
+    if s.array_row {
+        base.to_string()
+    } else {
+        format!("{base}.{member}")
+    }
+}
+
 fn collect_leaves(
     name: &str,
     ty: Type,
@@ -582,7 +611,7 @@ fn collect_leaves(
                 let mut off = offset + ew * i as usize;
                 for mb in &s.members {
                     collect_leaves(
-                        &format!("{base_name}.{}", mb.name),
+                        &member_name(&base_name, s, &mb.name),
                         mb.ty,
                         off,
                         structs,
@@ -649,7 +678,7 @@ fn collect_block_leaves(
                     let (align, size) = std140(mb.ty, structs, row_major);
                     at = at.div_ceil(align) * align;
                     collect_block_leaves(
-                        &format!("{base_name}.{}", mb.name),
+                        &member_name(&base_name, s, &mb.name),
                         mb.ty,
                         at,
                         structs,

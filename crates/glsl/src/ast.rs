@@ -107,9 +107,19 @@ pub struct LayoutId {
     pub span: Span,
 }
 
-/// The array part of a declarator or type: `[]` or `[expr]`.
+/// The array part of a declarator or type: one or more `[]` or `[expr]`
+/// (more than one is an array of arrays, GL_ARB_arrays_of_arrays; the
+/// grammar takes any number and analysis judges them).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ArraySpec {
+    /// The sizes as written, outermost (leftmost) first; never empty.
+    pub dims: Vec<ArrayDim>,
+    pub span: Span,
+}
+
+/// One `[]` or `[expr]` of an [`ArraySpec`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct ArrayDim {
     /// `None` for `[]`.
     pub size: Option<Box<Expr>>,
     pub span: Span,
@@ -214,12 +224,10 @@ pub struct InitDeclaratorList {
 #[derive(Clone, Debug, PartialEq)]
 pub struct InitDeclarator {
     pub name: Ident,
-    pub array: Option<ArraySpec>,
-    /// The second size of GL_EXT_geometry_shader4's two-dimensional
+    /// Its sizes; two for GL_EXT_geometry_shader4's two-dimensional
     /// geometry inputs (`varying in float v[][4]`: one `float[4]` per
-    /// input vertex); the parser keeps it only where that extension is
-    /// enabled, and the analyzer accepts it only on such inputs.
-    pub inner: Option<ArraySpec>,
+    /// input vertex) as for arrays of arrays.
+    pub array: Option<ArraySpec>,
     pub init: Option<Expr>,
     pub span: Span,
 }

@@ -201,12 +201,50 @@ pub struct InterfaceBlock {
     /// is an output block of a vertex shader).
     pub input: bool,
     pub instance: Option<String>,
-    /// Arrayed instance: `uniform B { ... } b[4];`.
+    /// Arrayed instance: `uniform B { ... } b[4];`; the outermost size of
+    /// an array of arrays of instances.
     pub array: Option<u32>,
+    /// The inner sizes of an array of arrays of instances
+    /// (GL_ARB_arrays_of_arrays: `uniform B { ... } b[2][3];` has `array`
+    /// 2 and `inner` `[3]`), outermost first; empty otherwise. The
+    /// instance's elements are numbered row after row, the inner
+    /// dimension fastest, as its global's flattened layout has them.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub inner: Vec<u32>,
     pub layout: BlockLayout,
     pub members: Vec<BlockMember>,
     pub globals: Vec<GlobalId>,
     pub span: Span,
+}
+
+impl InterfaceBlock {
+    /// The instance array's sizes, outermost first (empty without one).
+    pub fn dims(&self) -> Vec<u32> {
+        self.array
+            .into_iter()
+            .chain(self.inner.iter().copied())
+            .collect()
+    }
+
+    /// The number of block elements: 1 without an instance array.
+    pub fn elements(&self) -> usize {
+        self.dims().iter().map(|&n| n as usize).product()
+    }
+
+    /// The subscripts naming element `e` (`[e]`, `[i][j]` of an array of
+    /// arrays; empty without an instance array), as GL names the blocks
+    /// of an arrayed instance (`B[1][2]`).
+    pub fn element_suffix(&self, e: usize) -> String {
+        let dims = self.dims();
+        let mut subs = vec![0usize; dims.len()];
+        let mut rest = e;
+        for (s, &n) in subs.iter_mut().zip(&dims).rev() {
+            let n = (n as usize).max(1);
+            *s = rest % n;
+            rest /= n;
+        }
+        subs.iter().map(|s| format!("[{s}]")).collect()
+    }
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -822,29 +860,40 @@ impl Module {
             .map(|i| FunctionId(i as u32))
     }
 
-    /// Spells a type using this module's struct names; an array of a
-    /// two-dimensional geometry input's per-vertex struct as the
-    /// two-dimensional array it stands for (`float[3][4]`: 3 vertices of
+    /// Spells a type using this module's struct names; an array of
+    /// arrays ([`crate::types::StructDef::array_row`]) as the
+    /// multi-dimensional array it stands for (`float[3][4]`: 3 rows of
     /// `float[4]`).
     pub fn type_name(&self, ty: Type) -> String {
-        if let (crate::types::Base::Struct(id), Some(outer)) = (ty.base, ty.array) {
-            let row = self
-                .structs
-                .get(id.0 as usize)
-                .filter(|s| s.per_vertex)
-                .and_then(|s| s.members.first())
-                .map(|m| m.ty);
-            if let Some(row) = row {
-                let outer = match outer {
-                    crate::types::ArraySize::Sized(n) => n.to_string(),
-                    crate::types::ArraySize::Unsized => String::new(),
-                };
-                let inner = match row.array {
-                    Some(crate::types::ArraySize::Sized(n)) => n.to_string(),
-                    _ => String::new(),
-                };
-                return format!("{}[{outer}][{inner}]", self.type_name(row.element()));
+        let size = |a: Option<crate::types::ArraySize>| match a {
+            Some(crate::types::ArraySize::Sized(n)) => format!("[{n}]"),
+            Some(crate::types::ArraySize::Unsized) => "[]".to_string(),
+            None => String::new(),
+        };
+        let mut dims = String::new();
+        let mut t = ty;
+        // Rows nest at most as deep as the declarations that made them;
+        // the bound only keeps a malformed module from looping.
+        for _ in 0..64 {
+            let row = match (t.base, t.array) {
+                (crate::types::Base::Struct(id), Some(_)) => self
+                    .structs
+                    .get(id.0 as usize)
+                    .filter(|s| s.array_row)
+                    .and_then(|s| s.members.first())
+                    .map(|m| m.ty),
+                _ => None,
+            };
+            match row {
+                Some(row) => {
+                    dims.push_str(&size(t.array));
+                    t = row;
+                }
+                None => break,
             }
+        }
+        if !dims.is_empty() {
+            return format!("{}{dims}{}", self.type_name(t.element()), size(t.array));
         }
         let names = |id: crate::types::StructId| {
             self.structs

@@ -150,6 +150,12 @@ extensions! {
     // The explicit-LOD lookups in fragment shaders before GLSL 1.30, and
     // the `*GradARB` lookups with explicit derivatives.
     ArbShaderTextureLod = "GL_ARB_shader_texture_lod";
+    // Arrays of arrays (`float a[2][3]`, `float[2][3]`, `float[3] a[2]`),
+    // which GLSL 4.30 made core. Its "GLSL 1.2 is required" asks the
+    // implementation for GLSL 1.20, which every context has, so shaders
+    // of every version may enable it (as Mesa offers it); a 1.10 shader
+    // still has no array type syntax or constructors.
+    ArbArraysOfArrays = "GL_ARB_arrays_of_arrays";
 }
 
 impl Extension {
@@ -245,6 +251,9 @@ pub enum Feature {
     /// (also named GL_ARB_geometry_shader4; see
     /// [`Language::ext_geometry_shader4`]).
     GeometryShader,
+    /// An array whose elements are arrays (GL_ARB_arrays_of_arrays; no
+    /// version shaderbox implements has them in core).
+    ArraysOfArrays,
 }
 
 /// Why a feature is not available to a shader.
@@ -254,6 +263,8 @@ pub enum Unavailable {
     NeedsVersion(Version),
     /// It exists from this version on, or earlier with the extension.
     NeedsVersionOrExtension(Version, Extension),
+    /// It exists only with the extension enabled.
+    NeedsExtension(Extension),
     /// The core profile of this version (and later) removes it.
     RemovedInCore(Version),
     /// This version (and later) removes it from both profiles.
@@ -280,6 +291,9 @@ impl Unavailable {
                 v.dotted(),
                 e.name()
             ),
+            Unavailable::NeedsExtension(e) => {
+                format!("{what} needs `#extension {} : enable' ({this})", e.name())
+            }
             Unavailable::RemovedInCore(v) => format!(
                 "{what} is removed in the core profile of GLSL {} and later ({this})",
                 v.dotted()
@@ -296,6 +310,15 @@ impl Unavailable {
             Unavailable::NeedsVersion(v) | Unavailable::NeedsVersionOrExtension(v, _) => {
                 format!("start the shader with `#version {}'", v.number())
             }
+            Unavailable::NeedsExtension(e) if e.since() > Version::V110 => format!(
+                "add `#extension {} : enable' (offered from GLSL {} on)",
+                e.name(),
+                e.since().dotted()
+            ),
+            Unavailable::NeedsExtension(e) => format!(
+                "add `#extension {} : enable' after `#version'; no version up to GLSL 3.30 has it without the extension",
+                e.name()
+            ),
             Unavailable::RemovedInCore(v) if v >= Version::V150 => format!(
                 "write `#version {} compatibility' to keep it, in a compatibility context",
                 v.number()
@@ -377,6 +400,13 @@ impl Language {
             }
             Feature::FragCoordConventions => {
                 self.since_or(Version::V150, Extension::ArbFragmentCoordConventions)
+            }
+            Feature::ArraysOfArrays => {
+                if self.has(Extension::ArbArraysOfArrays) {
+                    Ok(())
+                } else {
+                    Err(Unavailable::NeedsExtension(Extension::ArbArraysOfArrays))
+                }
             }
             Feature::CompatibilityInterface => {
                 if self.version >= Version::V140 && self.profile == Profile::Core {

@@ -58,8 +58,22 @@
 //!   index past every primitive's vertex count is a warning then and the
 //!   link's error (the extension's §4.3.6). Its two-dimensional inputs
 //!   (`varying in float v[][4]`, `gl_TexCoordIn[][]`,
-//!   `gl_ClipDistanceIn[][]`) are arrays of a per-vertex struct holding
-//!   the vertex output's array (`sema::geometry`).
+//!   `gl_ClipDistanceIn[][]`) are arrays of a per-vertex row struct
+//!   holding the vertex output's array (`sema::geometry`), as every array
+//!   of arrays is.
+//! - GL_ARB_arrays_of_arrays on GLSL 1.20 and later: more than one size in
+//!   every declaration form (`float a[2][3]`, `float[2][3] a`, `float[3]
+//!   a[2]`, parameters, returns, constructors, struct and block members,
+//!   block instances), only the outermost unsized. The type system keeps
+//!   one array level per [`types::Type`]: an array of arrays is an array
+//!   of one-member row structs ([`types::StructDef::array_row`]) whose
+//!   member is the inner array, one row type per inner array type, so
+//!   equal dimensions are equal types; indexing the outer level yields the
+//!   member (`a[i]` is the row, with `.length()`, assignment, comparison
+//!   and passing as any array), and [`ir::Module::type_name`] spells the
+//!   whole as `float[2][3]`. A block instance array of arrays records its
+//!   inner sizes in [`ir::InterfaceBlock::inner`]. Without the extension
+//!   a second size is an error naming it.
 //! - Integer operations the spec leaves undefined have the executor's
 //!   defined results when folded ([`consteval`]): shift amounts modulo 32,
 //!   `i32::MIN % -1` is 0; division and `%` by zero are not constant.

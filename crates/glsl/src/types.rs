@@ -1,7 +1,10 @@
 //! GLSL types (1.10 to 3.30).
 //!
-//! [`Type`] is a small `Copy` value: GLSL 1.20 has no arrays of arrays, so a
-//! type is a [`Base`] plus an optional array size. Struct types are
+//! [`Type`] is a small `Copy` value: a [`Base`] plus an optional array
+//! size. An array of arrays (GL_ARB_arrays_of_arrays, and
+//! GL_EXT_geometry_shader4's two-dimensional geometry inputs) is an array
+//! of a synthesized one-member struct holding the inner array
+//! ([`StructDef::array_row`]), so one array level per type suffices. Struct types are
 //! referenced by [`StructId`] into the module's struct table; two struct types
 //! are the same type only if they are the same declaration (GLSL 1.20 §4.1.8
 //! and §6.1.1 for the link-time rule on same-named structs).
@@ -337,6 +340,11 @@ impl fmt::Display for TypeDisplay<'_> {
     }
 }
 
+/// The member name of an ARB_arrays_of_arrays row
+/// ([`StructDef::array_row`]): no identifier, so no `.name` in a shader
+/// can reach it.
+pub const ARRAY_ROW_MEMBER: &str = "";
+
 /// A member of a struct declaration.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct StructMember {
@@ -351,16 +359,20 @@ pub struct StructDef {
     pub members: Vec<StructMember>,
     /// Declared by the implementation (`gl_LightSourceParameters`...).
     pub builtin: bool,
-    /// The per-vertex element of a GL_EXT_geometry_shader4 two-dimensional
-    /// geometry input (`varying in float v[][4]` is an array of these, one
-    /// per input vertex): one member named after the vertex output it
-    /// takes (`v`, or `gl_TexCoord` for `gl_TexCoordIn[][]`), whose type
-    /// is the output's array type. Indexing the outer array yields that
-    /// member (the analyzer writes `v[i]` as `v[i].v`), so the struct
-    /// never appears as a value; its layout is the member's, so the
-    /// element lines up with the vertex output it reads.
+    /// The element of an array of arrays: `float a[2][3]` is an array of 2
+    /// of these, each with one member of type `float[3]`. Indexing the
+    /// outer array yields that member (the analyzer writes `a[i]` as
+    /// `a[i].<member>`), so the struct never appears as a value; its
+    /// layout (flattened components, std140) is the member's, so an array
+    /// of rows is laid out as the C-style array of arrays it stands for,
+    /// inner dimension fastest. Its name is the row type's spelling
+    /// (`float[3]`), its member's [`ARRAY_ROW_MEMBER`]: one row struct
+    /// per row type, whether the array of arrays is an
+    /// ARB_arrays_of_arrays one or a GL_EXT_geometry_shader4
+    /// two-dimensional geometry input (`varying in float v[][4]`, one row
+    /// per input vertex), so the two are the same type.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
-    pub per_vertex: bool,
+    pub array_row: bool,
 }
 
 #[cfg(test)]

@@ -314,16 +314,13 @@ fn block_member_slots(
     if b.instance.is_none() || b.storage == Storage::Uniform {
         return None;
     }
-    let elements = b.array.map_or(1, |a| a as usize);
+    let elements = b.elements();
     let mut slots = Vec::new();
     let mut at = offset;
     for e in 0..elements {
         for member in &b.members {
             let components = size_of(member.ty, &m.structs);
-            let name = match b.array {
-                Some(_) => format!("{}[{e}].{}", b.name, member.name),
-                None => format!("{}.{}", b.name, member.name),
-            };
+            let name = format!("{}{}.{}", b.name, b.element_suffix(e), member.name);
             slots.push(Slot {
                 name,
                 ty: member.ty,

@@ -49,6 +49,25 @@ const SHADERS: &[(Stage, &str)] = &[
             gl_FragColor = r + vec4(iv, float(b), 0.0);
         }",
     ),
+    // Arrays of arrays: dynamic indices on each level of locals and
+    // uniforms, rows copied and compared.
+    (
+        Stage::Vertex,
+        "#version 120
+        #extension GL_ARB_arrays_of_arrays : enable
+        uniform vec2 u[3][2][2]; attribute vec4 p;
+        void main() {
+            ivec3 i = ivec3(abs(p.xyz) * 4.0);
+            vec2 a[2][2] = u[i.x];
+            vec2[2] r = u[i.y][i.z];
+            a[i.z][i.y] += r[i.x] * p.w;
+            float m[4][3];
+            for (int k = 0; k < 4; k++)
+                for (int n = 0; n < 3; n++) m[k][n] = float(k * 3 + n) * p.x;
+            m[i.x][i.y] = p.y;
+            gl_Position = vec4(a[i.y][i.x] + a[1][0], m[i.z][i.x] + m[3][2], float(a == u[i.x]) + float(m[1] == m[i.x]));
+        }",
+    ),
 ];
 
 fn fill(b: &mut Batch, seed: u32) {

@@ -400,7 +400,6 @@ impl<'a> Printer<'a> {
             }
             ExprKind::Member { base, index } => {
                 self.expr(base, out, false);
-                out.push('.');
                 let name = match base.ty.base {
                     Base::Struct(id) => self
                         .m
@@ -410,7 +409,13 @@ impl<'a> Printer<'a> {
                         .map(|m| m.name.clone()),
                     _ => None,
                 };
-                out.push_str(&name.unwrap_or_else(|| format!("<member {index}>")));
+                // An ARB_arrays_of_arrays row's member has no name: `a[i]`
+                // is the row itself.
+                let name = name.unwrap_or_else(|| format!("<member {index}>"));
+                if name != crate::types::ARRAY_ROW_MEMBER {
+                    out.push('.');
+                    out.push_str(&name);
+                }
             }
             ExprKind::Unary { op, operand } => {
                 out.push_str(open);

@@ -40,8 +40,9 @@ pub(super) fn merge_blocks(
                 // 1.50 §4.3.7); instance names may differ. A geometry
                 // input array left unsized in an object without the input
                 // layout takes the size the others give it (§4.3.8.1).
-                let arrays_match = x.array == b.array
+                let arrays_match = x.dims() == b.dims()
                     || (b.storage == Storage::GeometryInput
+                        && x.inner == b.inner
                         && (x.array.is_none() || b.array.is_none()));
                 if !same_members(&x.members, &members, merged)
                     || x.layout != b.layout
@@ -118,7 +119,24 @@ pub(super) fn size_block_members(merged: &mut Module) {
                 Some(_) => {
                     let n = mb.implicit_size.max(1);
                     mb.ty.array = Some(ArraySize::Sized(n));
-                    let instance = b.globals.first().map(|g| merged.globals[g.0 as usize].ty);
+                    let mut instance = b.globals.first().map(|g| merged.globals[g.0 as usize].ty);
+                    // An array of arrays of instances: its rows hold the
+                    // block's struct.
+                    for _ in 0..64 {
+                        let row = instance.and_then(|t| match t.base {
+                            Base::Struct(id) => merged
+                                .structs
+                                .get(id.0 as usize)
+                                .filter(|s| s.array_row)
+                                .and_then(|s| s.members.first())
+                                .map(|m| m.ty),
+                            _ => None,
+                        });
+                        match row {
+                            Some(r) => instance = Some(r),
+                            None => break,
+                        }
+                    }
                     if let Some(Base::Struct(sid)) = instance.map(|t| t.base) {
                         if let Some(m) = merged
                             .structs
@@ -204,9 +222,9 @@ fn compare_blocks(vm: &Module, fm: &Module, uniform_only: bool, diags: &mut Vec<
                     // array instance matches an array of the same size
                     // (GLSL 1.50 §4.3.7).
                     && if fb.storage == Storage::GeometryInput {
-                        vb.array.is_none()
+                        vb.dims() == fb.inner
                     } else {
-                        vb.array == fb.array
+                        vb.dims() == fb.dims()
                     };
                 if !same {
                     push(

@@ -267,14 +267,15 @@ pub(super) fn check_builtin_color_interpolation(
 }
 
 /// What one vertex of a geometry input holds: the element, or the row of
-/// a GL_EXT_geometry_shader4 two-dimensional input's per-vertex struct
-/// ([`crate::types::StructDef::per_vertex`]).
+/// an array of arrays ([`crate::types::StructDef::array_row`]: a
+/// GL_EXT_geometry_shader4 two-dimensional input, or an
+/// ARB_arrays_of_arrays input whose vertices are arrays).
 fn per_vertex_row(m: &ir::Module, elem: crate::types::Type) -> crate::types::Type {
     match elem.base {
         crate::types::Base::Struct(id) => m
             .structs
             .get(id.0 as usize)
-            .filter(|s| s.per_vertex)
+            .filter(|s| s.array_row)
             .and_then(|s| s.members.first())
             .map_or(elem, |mb| mb.ty),
         _ => elem,

@@ -63,7 +63,7 @@ pub(super) fn merge_stage(
                 name: s.name.clone(),
                 members,
                 builtin: s.builtin,
-                per_vertex: s.per_vertex,
+                array_row: s.array_row,
             };
             let id = match merged
                 .structs

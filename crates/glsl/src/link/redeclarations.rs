@@ -262,42 +262,56 @@ pub(super) fn check_per_vertex_interface(
 /// gl_MaxTextureCoords). Expressions reading the members take the sized
 /// type.
 pub(super) fn size_gl_in_members(gs: &mut Module, vs: Option<&Module>) {
-    // `gl_in[]`, and GL_EXT_geometry_shader4's `gl_TexCoordIn[][]` and
-    // `gl_ClipDistanceIn[][]` (arrays of a per-vertex struct whose
-    // member is named after the output it reads) alike.
-    let sids: Vec<StructId> = gs
+    // `gl_in[]` (members named after the outputs they read), and
+    // GL_EXT_geometry_shader4's `gl_TexCoordIn[][]` and
+    // `gl_ClipDistanceIn[][]` (arrays of a row struct whose row reads the
+    // output the input is named after, without `In`) alike.
+    let sids: Vec<(StructId, Option<String>)> = gs
         .globals
         .iter()
         .filter(|g| g.builtin && g.storage == Storage::GeometryInput)
         .filter_map(|g| match g.ty.base {
-            Base::Struct(sid) => Some(sid),
+            Base::Struct(sid) => Some((sid, g.name.strip_suffix("In").map(str::to_string))),
             _ => None,
         })
         .collect();
-    for sid in sids {
-        size_struct_members(gs, vs, sid);
+    for (sid, output) in sids {
+        size_struct_members(gs, vs, sid, output.as_deref());
     }
 }
 
-fn size_struct_members(gs: &mut Module, vs: Option<&Module>, sid: StructId) {
+/// Sizes the unsized members of struct `sid`, each from the vertex
+/// output of its name, or, for a row struct, of `row_output`.
+fn size_struct_members(
+    gs: &mut Module,
+    vs: Option<&Module>,
+    sid: StructId,
+    row_output: Option<&str>,
+) {
     let Some(def) = gs.structs.get_mut(sid.0 as usize) else {
         return;
     };
+    let row = def.array_row;
     let mut changed = false;
     for m in &mut def.members {
         if m.ty.array != Some(ArraySize::Unsized) {
             continue;
         }
+        let name = match (row, row_output) {
+            (true, Some(out)) => out.to_string(),
+            (true, None) => continue,
+            (false, _) => m.name.clone(),
+        };
         let from_vs = vs.and_then(|v| {
             v.globals
                 .iter()
-                .find(|g| g.builtin && g.name == m.name)
+                .find(|g| g.builtin && g.name == name)
                 .and_then(|g| match g.ty.array {
                     Some(ArraySize::Sized(n)) => Some(n),
                     _ => None,
                 })
         });
-        let max = if m.name == "gl_TexCoord" {
+        let max = if name == "gl_TexCoord" {
             limits::MAX_TEXTURE_COORDS
         } else {
             limits::MAX_CLIP_DISTANCES

@@ -5,7 +5,6 @@
 
 use super::{PResult, Parser, Reported};
 use crate::ast::*;
-use crate::diag::{Code, Diagnostic};
 use crate::source::Span;
 use crate::token::{Keyword, Punct, TokenKind};
 
@@ -402,17 +401,27 @@ impl Parser<'_> {
         })
     }
 
-    /// `[` constant_expression? `]`.
+    /// `[` constant_expression? `]`, repeated (the `array_specifier` of
+    /// GL_ARB_arrays_of_arrays; analysis decides whether more than one
+    /// is allowed).
     pub(super) fn array_spec(&mut self) -> PResult<ArraySpec> {
-        let start = self.expect_punct(Punct::LeftBracket)?;
-        let size = if self.at_punct(Punct::RightBracket) {
-            None
-        } else {
-            Some(self.conditional()?)
-        };
-        self.expect_punct(Punct::RightBracket)?;
+        let start = self.span();
+        let mut dims = Vec::new();
+        while self.at_punct(Punct::LeftBracket) {
+            let dim_start = self.expect_punct(Punct::LeftBracket)?;
+            let size = if self.at_punct(Punct::RightBracket) {
+                None
+            } else {
+                Some(self.conditional()?)
+            };
+            self.expect_punct(Punct::RightBracket)?;
+            dims.push(ArrayDim {
+                size,
+                span: self.span_from(dim_start),
+            });
+        }
         Ok(ArraySpec {
-            size,
+            dims,
             span: self.span_from(start),
         })
     }
@@ -524,27 +533,6 @@ impl Parser<'_> {
         } else {
             None
         };
-        let mut inner = None;
-        if array.is_some() && self.at_punct(Punct::LeftBracket) {
-            // GL_EXT_geometry_shader4 allows one kind of two-dimensional
-            // array, `varying in float v[][N];' (a vertex shader's array
-            // output, per input vertex): kept for the analyzer, which
-            // refuses it on anything else.
-            let extra = self.array_spec()?;
-            if self.lang.ext_geometry_shader4() {
-                inner = Some(extra);
-            } else {
-                self.diags.push(Diagnostic::error(
-                    Code::Syntax,
-                    extra.span,
-                    format!(
-                        "`{}' has two array sizes: GLSL {} has no arrays of arrays",
-                        name.name,
-                        self.lang.version.dotted()
-                    ),
-                ));
-            }
-        }
         let init = if self.eat_punct(Punct::Equal) {
             Some(*self.assignment()?)
         } else {
@@ -555,7 +543,6 @@ impl Parser<'_> {
             span: self.span_from(name.span),
             name,
             array,
-            inner,
             init,
         })
     }

@@ -280,19 +280,14 @@ impl<'m> Preprocessor<'m> {
                 v.has_profiles() && lang.profile == Profile::Compatibility,
             ),
             ("GL_ARB_compatibility", self.compatibility_context),
-            (
-                Extension::ArbTextureRectangle.name(),
-                v >= Extension::ArbTextureRectangle.since(),
-            ),
-            (
-                Extension::ArbTextureMultisample.name(),
-                v >= Extension::ArbTextureMultisample.since(),
-            ),
-            (
-                Extension::ExtTextureArray.name(),
-                v >= Extension::ExtTextureArray.since(),
-            ),
-        ] {
+        ]
+        .into_iter()
+        .chain(
+            Extension::ALL
+                .iter()
+                .filter(|e| e.since() > Version::V110)
+                .map(|e| (e.name(), v >= e.since())),
+        ) {
             if on {
                 self.macros.insert(name.into(), macros::Macro::one());
             } else {

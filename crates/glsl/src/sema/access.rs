@@ -99,12 +99,19 @@ impl Analyzer {
                     *s = (*s).max(i + 1);
                 }
             }
-            // `inst.m[i]' or `inst[k].m[i]': the member of a block's
-            // named instance.
+            // `inst.m[i]', `inst[k].m[i]' or `inst[k][l].m[i]': the member
+            // of a block's named instance.
             K::Member { ref base, index } => {
                 let mut root = &**base;
-                if let K::Index { base, .. } = &root.kind {
-                    root = base;
+                for _ in 0..64 {
+                    match &root.kind {
+                        K::Index { base, .. } => root = base,
+                        // The row of an array of arrays of instances.
+                        K::Member { base, .. } if self.array_row_member(base.ty).is_some() => {
+                            root = base
+                        }
+                        _ => break,
+                    }
                 }
                 let K::Global(g) = root.kind else { return };
                 let Some(b) = self
@@ -182,7 +189,16 @@ impl Analyzer {
             return error_expr(span);
         }
         let t = base.ty;
-        if t.is_array() && t.is_sampler() && cidx.is_none() {
+        // An array of arrays of samplers is an array of samplers at every
+        // level.
+        let mut innermost = t.element();
+        for _ in 0..64 {
+            match self.array_row_member(innermost) {
+                Some(row) => innermost = row.element(),
+                None => break,
+            }
+        }
+        if t.is_array() && innermost.is_sampler() && cidx.is_none() {
             if let Err(why) = self
                 .lang
                 .gate(crate::lang::Feature::NonConstantSamplerIndex)
@@ -279,8 +295,8 @@ impl Analyzer {
             ty,
             span,
         ));
-        // A vertex of a two-dimensional geometry input is its row.
-        match self.per_vertex_member(ty) {
+        // An element of an array of arrays is its row.
+        match self.array_row_member(ty) {
             Some(row) => mk(
                 K::Member {
                     base: Box::new(e),

@@ -188,13 +188,14 @@ impl Analyzer {
                 })
                 .collect(),
             builtin: self.builtin_mode,
-            per_vertex: false,
+            array_row: false,
         });
         if !other_interface {
             self.scopes.insert(b.name.name.clone(), Symbol::Struct(sid));
         }
         let mut globals = Vec::new();
         let mut array = None;
+        let mut inner = Vec::new();
         match &b.instance {
             None => {
                 for m in &members {
@@ -236,6 +237,17 @@ impl Analyzer {
                 if let Some(ArraySize::Sized(n)) = ty.array {
                     array = Some(n);
                 }
+                // The inner sizes of an array of arrays of instances.
+                let mut row = ty.element();
+                while let Some(r) = self.array_row_member(row) {
+                    if let Some(ArraySize::Sized(n)) = r.array {
+                        inner.push(n);
+                    }
+                    row = r.element();
+                    if inner.len() > 64 {
+                        break;
+                    }
+                }
                 if !self.check_reserved_name(&inst.name, inst.span) {
                     return;
                 }
@@ -266,6 +278,7 @@ impl Analyzer {
             input,
             instance: b.instance.as_ref().map(|(i, _)| i.name.to_string()),
             array,
+            inner,
             layout,
             members,
             globals,
@@ -439,7 +452,7 @@ impl Analyzer {
             );
             return;
         };
-        if inst.name != "gl_in" || arr.is_none() {
+        if inst.name != "gl_in" || arr.as_ref().is_none_or(|a| a.dims.len() != 1) {
             self.error(
                 Code::BadQualifier,
                 inst.span,
@@ -550,9 +563,22 @@ impl Analyzer {
         }
     }
 
-    /// Whether `e` names the instance array of a uniform block.
+    /// Whether `e` names the instance array of a uniform block, or a row
+    /// of an array of arrays of instances (`b[1]` of `b[2][3]`).
     pub(crate) fn is_block_instance_array(&self, e: &ir::Expr) -> bool {
-        let ir::ExprKind::Global(g) = e.kind else {
+        let mut root = e;
+        for _ in 0..64 {
+            match &root.kind {
+                ir::ExprKind::Member { base, .. } if self.array_row_member(base.ty).is_some() => {
+                    match &base.kind {
+                        ir::ExprKind::Index { base, .. } => root = base,
+                        _ => return false,
+                    }
+                }
+                _ => break,
+            }
+        }
+        let ir::ExprKind::Global(g) = root.kind else {
             return false;
         };
         let Some(g) = self.module.globals.get(g.0 as usize) else {

@@ -45,14 +45,20 @@ impl Analyzer {
                 ty = et.array_of(ArraySize::Sized(vals.len() as u32));
             }
             let what = format!("cannot construct an element of {}", self.tn(ty));
+            // The elements of an array of arrays are rows: each argument
+            // is the row's array, wrapped in its row struct.
+            let row = self.array_row_member(et);
             let mut out = Vec::new();
             for v in vals {
                 let sp = v.span;
-                let c = self.coerce(v, et, sp, &what);
+                let c = self.coerce(v, row.unwrap_or(et), sp, &what);
                 if c.ty.is_error() {
                     return error_expr(span);
                 }
-                out.push(c);
+                out.push(match row {
+                    Some(_) => self.fold(mk(K::Construct { args: vec![c] }, et, sp)),
+                    None => c,
+                });
             }
             out
         } else if let Base::Struct(id) = ty.base {

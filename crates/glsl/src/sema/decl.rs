@@ -111,7 +111,15 @@ impl Analyzer {
         }
         let v130 = self.lang.allows(Feature::StageInOut);
         let v150 = self.lang.version >= Version::V150;
-        let elem = ty.element();
+        // The element of an array of arrays is the innermost one: the
+        // rules on arrays of a type hold for arrays of arrays of it.
+        let mut elem = ty.element();
+        for _ in 0..64 {
+            match self.array_row_member(elem) {
+                Some(row) => elem = row.element(),
+                None => break,
+            }
+        }
         let float_based = matches!(
             elem.base,
             Base::Scalar(Scalar::Float) | Base::Vector(Scalar::Float, _) | Base::Matrix { .. }
@@ -307,12 +315,23 @@ impl Analyzer {
         d: &InitDeclarator,
         _tyspan: Span,
     ) -> Option<ir::Stmt> {
-        let mut ty = self.apply_array(base, d.array.as_ref());
         let name = d.name.name.clone();
-        self.check_storage_type(q, ty, d);
-        if let Some(inner) = &d.inner {
-            ty = self.two_dimensional_input(q, ty, inner, d);
-        }
+        let mut ty = match d.array.as_ref() {
+            Some(spec) if spec.dims.len() == 2 && self.ext_two_dimensional_input(q, base) => {
+                let outer = crate::ast::ArraySpec {
+                    dims: spec.dims[..1].to_vec(),
+                    span: spec.dims[0].span,
+                };
+                let ty = self.apply_array(base, Some(&outer));
+                self.check_storage_type(q, ty, d);
+                self.two_dimensional_input(ty, &spec.dims[1], d)
+            }
+            spec => {
+                let ty = self.apply_array(base, spec);
+                self.check_storage_type(q, ty, d);
+                ty
+            }
+        };
         self.check_precision(q.precision, ty);
         if self.lang.version < Version::V120 && ty.is_array() && d.init.is_some() {
             self.error(
@@ -470,37 +489,28 @@ impl Analyzer {
         }
     }
 
-    /// The type of a declarator with a second size: GL_EXT_geometry_shader4
-    /// §4.3.6 allows it on geometry inputs only (a vertex shader's array
-    /// output, one per input vertex), and the second size is required.
-    /// `ty` is the declared type with its first size (already checked as
-    /// an input of its element type).
-    fn two_dimensional_input(
-        &mut self,
-        q: &VarQuals,
-        ty: Type,
-        inner: &crate::ast::ArraySpec,
-        d: &InitDeclarator,
-    ) -> Type {
-        let input = self.scopes.is_global()
+    /// Whether a declarator of base type `base` with two sizes is a
+    /// GL_EXT_geometry_shader4 two-dimensional geometry input (§4.3.6: a
+    /// vertex shader's array output, one per input vertex), which that
+    /// extension allows without GL_ARB_arrays_of_arrays.
+    fn ext_two_dimensional_input(&self, q: &VarQuals, base: Type) -> bool {
+        self.scopes.is_global()
             && q.storage.is_some()
             && self.global_storage(q) == Storage::GeometryInput
-            && self.lang.ext_geometry_shader4();
-        if !input {
-            let _ = self.array_size(inner);
-            self.error(
-                Code::BadArraySize,
-                inner.span,
-                format!(
-                    "`{}' has two array sizes: GLSL {} has no arrays of arrays",
-                    d.name.name,
-                    self.lang.version.dotted()
-                ),
-            )
-            .notes
-            .push("GL_EXT_geometry_shader4 allows two-dimensional arrays only as geometry shader inputs (`varying in float v[][4];')".into());
-            return Type::ERROR;
-        }
+            && self.lang.ext_geometry_shader4()
+            && !base.is_array()
+    }
+
+    /// The type of a GL_EXT_geometry_shader4 two-dimensional geometry
+    /// input ([`Self::ext_two_dimensional_input`]), whose second size is
+    /// required. `ty` is the declared type with its first size (already
+    /// checked as an input of its element type).
+    fn two_dimensional_input(
+        &mut self,
+        ty: Type,
+        inner: &crate::ast::ArrayDim,
+        d: &InitDeclarator,
+    ) -> Type {
         if ty.is_error() {
             let _ = self.array_size(inner);
             return ty;
@@ -516,13 +526,8 @@ impl Analyzer {
             .push("GL_EXT_geometry_shader4 §4.3.6: it is the size of the vertex shader's array output".into());
             return Type::ERROR;
         }
-        // The built-in inputs take the vertex outputs without `In'.
-        let member = match d.name.name.strip_suffix("In") {
-            Some(out) if d.name.name.starts_with("gl_") => out.to_string(),
-            _ => d.name.name.to_string(),
-        };
         let row = ty.element().array_of(size);
-        let elem = self.per_vertex_row(&member, row);
+        let elem = self.array_row(crate::types::ARRAY_ROW_MEMBER, row);
         Type {
             array: ty.array,
             ..elem
@@ -850,7 +855,7 @@ impl Analyzer {
         } else {
             (Type::FLOAT, MAX_CLIP_PLANES, "gl_MaxClipDistances")
         };
-        let row = self.per_vertex_member(ty.element());
+        let row = self.array_row_member(ty.element());
         let Some(row) = row.filter(|r| r.element() == elem) else {
             let elem = self.tn(elem);
             self.error(

@@ -11,10 +11,10 @@
 //!
 //! That form's two-dimensional inputs (`varying in float v[][4]`, the
 //! built-in `gl_TexCoordIn[][]` and `gl_ClipDistanceIn[][]`) are one-level
-//! arrays of a synthesized struct ([`crate::types::StructDef::per_vertex`])
-//! whose one member is the vertex output's array: the type system keeps
-//! one array level, indexing the outer array yields the member
-//! (`v[i]` is `v[i].v`, a `float[4]` that can be indexed, passed whole and
+//! arrays of a synthesized struct ([`crate::types::StructDef::array_row`],
+//! as every array of arrays is) whose one member is the vertex output's
+//! array: indexing the outer array yields the member
+//! (`v[i]` is the row, a `float[4]` that can be indexed, passed whole and
 //! asked its `.length()`), and every later stage sees an ordinary array
 //! of structs whose element has the layout of the vertex output it reads.
 
@@ -23,51 +23,11 @@ use crate::diag::Code;
 use crate::ir::{GlobalId, InputPrimitive, OutputPrimitive, Stage, Storage};
 use crate::limits;
 use crate::source::Span;
-use crate::types::{ArraySize, Base, StructDef, StructId, StructMember, Type};
+use crate::types::ArraySize;
 
 use super::interface::VarQuals;
 
 impl Analyzer {
-    /// The per-vertex element type of a two-dimensional geometry input
-    /// whose vertices each hold `row` (an array type), taken from the
-    /// vertex output `member` (see the module docs).
-    pub(crate) fn per_vertex_row(&mut self, member: &str, row: Type) -> Type {
-        let name = self.module.type_name(row);
-        if let Some(i) = self.module.structs.iter().position(|s| {
-            s.per_vertex
-                && s.name == name
-                && s.members
-                    .first()
-                    .is_some_and(|m| m.name == member && m.ty == row)
-        }) {
-            return Type::new(Base::Struct(StructId(i as u32)));
-        }
-        let id = StructId(self.module.structs.len() as u32);
-        self.module.structs.push(StructDef {
-            name,
-            members: vec![StructMember {
-                name: member.to_string(),
-                ty: row,
-            }],
-            builtin: self.builtin_mode,
-            per_vertex: true,
-        });
-        Type::new(Base::Struct(id))
-    }
-
-    /// The row a per-vertex element holds (`float[4]` for an element of
-    /// `varying in float v[][4]`), for a per-vertex struct type.
-    pub(crate) fn per_vertex_member(&self, ty: Type) -> Option<Type> {
-        let Base::Struct(id) = ty.base else {
-            return None;
-        };
-        let def = self.module.structs.get(id.0 as usize)?;
-        if !def.per_vertex || ty.is_array() {
-            return None;
-        }
-        def.members.first().map(|m| m.ty)
-    }
-
     /// A geometry layout identifier where none is allowed.
     pub(crate) fn misplaced_geometry_layout(&mut self, g: &str, span: Span) {
         let msg = if self.stage == Stage::Geometry {

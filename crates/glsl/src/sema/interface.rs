@@ -665,7 +665,15 @@ impl Analyzer {
         if ty.is_error() {
             return;
         }
-        if !takes_precision(ty.element()) {
+        // An array of arrays takes the precision of its innermost element.
+        let mut elem = ty.element();
+        for _ in 0..64 {
+            match self.array_row_member(elem) {
+                Some(row) => elem = row.element(),
+                None => break,
+            }
+        }
+        if !takes_precision(elem) {
             let tn = self.tn(ty);
             self.error(
                 Code::BadQualifier,

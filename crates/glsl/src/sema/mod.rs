@@ -704,6 +704,8 @@ pub(crate) fn const_expr(value: ConstValue, span: Span) -> ir::Expr {
 }
 
 #[cfg(test)]
+mod aoa_tests;
+#[cfg(test)]
 mod ext_geometry_tests;
 #[cfg(test)]
 mod geometry_tests;

@@ -420,7 +420,6 @@ impl Analyzer {
                     declarators: vec![ast::InitDeclarator {
                         name: name.clone(),
                         array: None,
-                        inner: None,
                         init: Some(init.clone()),
                         span: *span,
                     }],

@@ -2,12 +2,14 @@
 
 use super::scope::Symbol;
 use super::{const_int, Analyzer};
-use crate::ast::{ArraySpec, StructSpecifier, TypeName, TypeSpecifier};
+use crate::ast::{ArrayDim, ArraySpec, StructSpecifier, TypeName, TypeSpecifier};
 use crate::diag::{did_you_mean, Code};
-use crate::lang::Version;
+use crate::lang::{Feature, Version};
 use crate::limits::MAX_ARRAY_SIZE;
 use crate::token::Keyword;
-use crate::types::{ArraySize, Base, SamplerKind, Scalar, StructDef, StructId, StructMember, Type};
+use crate::types::{
+    ArraySize, Base, SamplerKind, Scalar, StructDef, StructId, StructMember, Type, ARRAY_ROW_MEMBER,
+};
 
 /// The type a built-in type keyword names.
 pub(crate) fn keyword_type(k: Keyword) -> Option<Type> {
@@ -117,11 +119,7 @@ impl Analyzer {
                         "put the size after the name (`float x[3]'), or add `#version 120'".into(),
                     );
                 }
-                if base.is_error() {
-                    return base;
-                }
-                let size = self.array_size(spec);
-                base.array_of(size)
+                self.apply_array(base, Some(spec))
             }
         }
     }
@@ -136,29 +134,50 @@ impl Analyzer {
         v
     }
 
-    /// Applies a declarator's `[size]` to a type; arrays of arrays are
-    /// errors in GLSL 1.10/1.20.
+    /// Applies the sizes of a declarator or type specifier (`[2][3]`) to
+    /// a type, which may be an array already (`float[3] a[2]` is
+    /// `float a[2][3]`, as in C). More than one array level needs
+    /// GL_ARB_arrays_of_arrays; only the outermost may be unsized.
     pub fn apply_array(&mut self, ty: Type, spec: Option<&ArraySpec>) -> Type {
         let Some(spec) = spec else { return ty };
+        let sizes: Vec<ArraySize> = spec.dims.iter().map(|d| self.array_size(d)).collect();
         if ty.is_error() {
-            let _ = self.array_size(spec);
             return ty;
         }
-        if ty.is_array() {
-            self.error(
-                Code::BadArraySize,
-                spec.span,
-                "arrays of arrays are not allowed in GLSL 1.10/1.20",
-            );
+        if (ty.is_array() || sizes.len() > 1)
+            && !self.require(Feature::ArraysOfArrays, "an array of arrays", spec.span)
+        {
+            if self.lang.ext_geometry_shader4() {
+                if let Some(d) = self.diags.last_mut() {
+                    d.notes.push("GL_EXT_geometry_shader4 allows two-dimensional arrays only as geometry shader inputs (`varying in float v[][4];')".into());
+                }
+            }
             return Type::ERROR;
         }
-        let size = self.array_size(spec);
-        ty.array_of(size)
+        let mut t = ty;
+        for (i, &size) in sizes.iter().enumerate().rev() {
+            if t.is_array() {
+                if t.array == Some(ArraySize::Unsized) {
+                    // The inner level `t` came from the next dimension, or
+                    // from the type itself when `i` is the last.
+                    let span = spec.dims.get(i + 1).map_or(spec.span, |d| d.span);
+                    self.error(
+                        Code::BadArraySize,
+                        span,
+                        "only the outermost dimension of an array of arrays can be unsized",
+                    );
+                    return Type::ERROR;
+                }
+                t = self.array_row(ARRAY_ROW_MEMBER, t);
+            }
+            t = t.array_of(size);
+        }
+        t
     }
 
     /// The size of `[expr]`: a constant integer expression greater than zero
     /// (GLSL 1.20 §4.1.9). `[]` is unsized. Recovers with size 1.
-    pub fn array_size(&mut self, spec: &ArraySpec) -> ArraySize {
+    pub fn array_size(&mut self, spec: &ArrayDim) -> ArraySize {
         let Some(e) = &spec.size else {
             return ArraySize::Unsized;
         };
@@ -211,6 +230,47 @@ impl Analyzer {
             return ArraySize::Sized(1);
         }
         ArraySize::Sized(n as u32)
+    }
+
+    /// The element type of an array of arrays whose elements are `row`
+    /// (an array type): the one-member row struct
+    /// ([`StructDef::array_row`]) with member `member`, shared by every
+    /// array of such rows.
+    pub(crate) fn array_row(&mut self, member: &str, row: Type) -> Type {
+        let name = self.module.type_name(row);
+        if let Some(i) = self.module.structs.iter().position(|s| {
+            s.array_row
+                && s.name == name
+                && s.members
+                    .first()
+                    .is_some_and(|m| m.name == member && m.ty == row)
+        }) {
+            return Type::new(Base::Struct(StructId(i as u32)));
+        }
+        let id = StructId(self.module.structs.len() as u32);
+        self.module.structs.push(StructDef {
+            name,
+            members: vec![StructMember {
+                name: member.to_string(),
+                ty: row,
+            }],
+            builtin: self.builtin_mode,
+            array_row: true,
+        });
+        Type::new(Base::Struct(id))
+    }
+
+    /// The row an element of an array of arrays holds (`float[4]` for an
+    /// element of `float a[3][4]`), for a row struct type.
+    pub(crate) fn array_row_member(&self, ty: Type) -> Option<Type> {
+        let Base::Struct(id) = ty.base else {
+            return None;
+        };
+        let def = self.module.structs.get(id.0 as usize)?;
+        if !def.array_row || ty.is_array() {
+            return None;
+        }
+        def.members.first().map(|m| m.ty)
     }
 
     /// Declares a struct type (GLSL 1.20 §4.1.8) in the current scope.
@@ -286,7 +346,7 @@ impl Analyzer {
             name,
             members,
             builtin: self.builtin_mode,
-            per_vertex: false,
+            array_row: false,
         });
         if let Some(n) = &s.name {
             self.check_reserved_name(&n.name, n.span);
