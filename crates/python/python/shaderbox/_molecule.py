@@ -74,9 +74,7 @@ class MoleculeRenderer:
     each :meth:`render` call may override any of them."""
 
     def __init__(self, **options: Any) -> None:
-        unknown = sorted(set(options) - set(_DEFAULTS))
-        if unknown:
-            raise TypeError(f"unknown rendering option(s) {', '.join(unknown)}; known: {', '.join(_DEFAULTS)}")
+        _check_option_names(options)
         self.options = dict(_DEFAULTS, **options)
         self._raw = _shaderbox.RawMoleculeRenderer()
 
@@ -91,9 +89,7 @@ class MoleculeRenderer:
         """Draws the structure in ``path`` (PDB or mmCIF), or given as
         ``text`` (``str`` or ``bytes``; ``name`` is what errors call it), or
         crambin when neither is given. Errors as :func:`render_molecule`'s."""
-        unknown = sorted(set(options) - set(_DEFAULTS))
-        if unknown:
-            raise TypeError(f"unknown rendering option(s) {', '.join(unknown)}; known: {', '.join(_DEFAULTS)}")
+        _check_option_names(options)
         o = dict(self.options, **options)
         w, h = _size(o["size"])
         rot = np.asarray(o["rotate"], dtype=np.float64).reshape(-1)
@@ -123,6 +119,13 @@ class MoleculeRenderer:
             o["atoms"],
         )
         return Image(np.frombuffer(data, dtype=np.uint8).reshape(height, width, 4), has_alpha=has_alpha)
+
+
+def _check_option_names(options: Any) -> None:
+    """TypeError naming the options that are not render_molecule's."""
+    unknown = sorted(set(options) - set(_DEFAULTS))
+    if unknown:
+        raise TypeError(f"unknown rendering option(s) {', '.join(unknown)}; known: {', '.join(_DEFAULTS)}")
 
 
 # render_molecule's options and their defaults.

@@ -42,7 +42,7 @@ import tempfile
 import time
 from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple
 
-from ._molecule import MoleculeRenderer, _background, _lights, _size
+from ._molecule import _DEFAULTS, MoleculeRenderer, _background, _check_option_names, _lights, _size
 
 __all__ = ["render_many", "inputs_from", "ccd_inputs", "main"]
 
@@ -55,20 +55,9 @@ _CCD_PREFIX = "ccd:"
 # process at once (os._exit), as a crashed or killed worker would.
 _DIE_ONCE_ENV = "SHADERBOX_BATCH_TEST_DIE_ONCE"
 
-# The rendering options render_many accepts, with render_molecule's
-# defaults except a small image size.
-_OPTION_DEFAULTS: Dict[str, Any] = {
-    "size": (256, 256),
-    "projection": "ortho",
-    "fog": "none",
-    "lights": (0, 1),
-    "rotate": (0.0, 0.0, 0.0),
-    "supersample": 1,
-    "background": "black",
-    "effect": "plain",
-    "style": "spacefill",
-    "atoms": "quads",
-}
+# The rendering options render_many accepts: render_molecule's, with a
+# small image size by default.
+_OPTION_DEFAULTS: Dict[str, Any] = dict(_DEFAULTS, size=(256, 256))
 
 
 # ---------------------------------------------------------------- inputs
@@ -384,9 +373,7 @@ def _write_index(out_dir: str, rows: List[Dict[str, Any]]) -> None:
 
 
 def _check_options(options: Dict[str, Any]) -> Dict[str, Any]:
-    unknown = sorted(set(options) - set(_OPTION_DEFAULTS))
-    if unknown:
-        raise TypeError(f"unknown rendering option(s) {', '.join(unknown)}; known: {', '.join(_OPTION_DEFAULTS)}")
+    _check_option_names(options)
     opts = dict(_OPTION_DEFAULTS)
     opts.update(options)
     # Plain values (they travel to workers as JSON-able data) and an early
