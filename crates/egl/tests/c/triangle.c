@@ -7,34 +7,14 @@
  * eglGetProcAddress, as loaders (glad, epoxy) do.
  *
  * Exit status 0 and "ok" on success; the first failed check otherwise.
- * Self-contained (no EGL headers needed): the types and values below are
- * Khronos' egl.h / eglext.h ones. */
+ * Self-contained (no EGL headers needed): egl_min.h has the types and
+ * values. */
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
-typedef void *EGLDisplay, *EGLConfig, *EGLContext, *EGLSurface, *EGLDeviceEXT;
-typedef int32_t EGLint;
-typedef unsigned int EGLBoolean, EGLenum;
-#define EGL_NO_DISPLAY ((EGLDisplay)0)
-#define EGL_NO_CONTEXT ((EGLContext)0)
-#define EGL_NO_SURFACE ((EGLSurface)0)
-#define EGL_DEFAULT_DISPLAY ((void *)0)
-#define EGL_NONE 0x3038
-#define EGL_EXTENSIONS 0x3055
-#define EGL_VENDOR 0x3053
-#define EGL_DEPTH_SIZE 0x3025
-#define EGL_RED_SIZE 0x3024
-#define EGL_SURFACE_TYPE 0x3033
-#define EGL_PBUFFER_BIT 0x0001
-#define EGL_RENDERABLE_TYPE 0x3040
-#define EGL_OPENGL_BIT 0x0008
-#define EGL_OPENGL_API 0x30A2
-#define EGL_CONTEXT_MAJOR_VERSION 0x3098
-#define EGL_CONTEXT_MINOR_VERSION 0x30FB
-#define EGL_WIDTH 0x3057
-#define EGL_HEIGHT 0x3056
-#define EGL_PLATFORM_DEVICE_EXT 0x313F
+#include "egl_min.h"
+
 EGLDisplay eglGetDisplay(void *);
 EGLBoolean eglInitialize(EGLDisplay, EGLint *, EGLint *);
 EGLBoolean eglChooseConfig(EGLDisplay, const EGLint *, EGLConfig *, EGLint, EGLint *);
