@@ -860,6 +860,15 @@ impl Module {
             .map(|i| FunctionId(i as u32))
     }
 
+    /// The row a value of `ty` holds when `ty`'s base is an array-of-arrays
+    /// row struct ([`crate::types::StructDef::array_row`]): its one
+    /// member's type (`float[4]` for the rows of `float a[3][4]`); `None`
+    /// for any other type. Whether `ty` itself is an array is the
+    /// caller's question.
+    pub fn row_member(&self, ty: Type) -> Option<Type> {
+        row_member(&self.structs, ty)
+    }
+
     /// Spells a type using this module's struct names; an array of
     /// arrays ([`crate::types::StructDef::array_row`]) as the
     /// multi-dimensional array it stands for (`float[3][4]`: 3 rows of
@@ -875,15 +884,7 @@ impl Module {
         // Rows nest at most as deep as the declarations that made them;
         // the bound only keeps a malformed module from looping.
         for _ in 0..64 {
-            let row = match (t.base, t.array) {
-                (crate::types::Base::Struct(id), Some(_)) => self
-                    .structs
-                    .get(id.0 as usize)
-                    .filter(|s| s.array_row)
-                    .and_then(|s| s.members.first())
-                    .map(|m| m.ty),
-                _ => None,
-            };
+            let row = t.array.and_then(|_| self.row_member(t));
             match row {
                 Some(row) => {
                     dims.push_str(&size(t.array));
@@ -903,4 +904,17 @@ impl Module {
         };
         ty.display(&names).to_string()
     }
+}
+
+/// [`Module::row_member`] over a module's struct table alone (for callers
+/// that hold another part of the module mutably).
+pub fn row_member(structs: &[crate::types::StructDef], ty: Type) -> Option<Type> {
+    let crate::types::Base::Struct(id) = ty.base else {
+        return None;
+    };
+    let def = structs.get(id.0 as usize)?;
+    if !def.array_row {
+        return None;
+    }
+    def.members.first().map(|m| m.ty)
 }

@@ -123,15 +123,7 @@ pub(super) fn size_block_members(merged: &mut Module) {
                     // An array of arrays of instances: its rows hold the
                     // block's struct.
                     for _ in 0..64 {
-                        let row = instance.and_then(|t| match t.base {
-                            Base::Struct(id) => merged
-                                .structs
-                                .get(id.0 as usize)
-                                .filter(|s| s.array_row)
-                                .and_then(|s| s.members.first())
-                                .map(|m| m.ty),
-                            _ => None,
-                        });
+                        let row = instance.and_then(|t| ir::row_member(&merged.structs, t));
                         match row {
                             Some(r) => instance = Some(r),
                             None => break,

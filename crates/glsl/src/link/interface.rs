@@ -271,15 +271,7 @@ pub(super) fn check_builtin_color_interpolation(
 /// GL_EXT_geometry_shader4 two-dimensional input, or an
 /// ARB_arrays_of_arrays input whose vertices are arrays).
 fn per_vertex_row(m: &ir::Module, elem: crate::types::Type) -> crate::types::Type {
-    match elem.base {
-        crate::types::Base::Struct(id) => m
-            .structs
-            .get(id.0 as usize)
-            .filter(|s| s.array_row)
-            .and_then(|s| s.members.first())
-            .map_or(elem, |mb| mb.ty),
-        _ => elem,
-    }
+    m.row_member(elem).unwrap_or(elem)
 }
 
 pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {

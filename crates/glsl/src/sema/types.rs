@@ -263,14 +263,10 @@ impl Analyzer {
     /// The row an element of an array of arrays holds (`float[4]` for an
     /// element of `float a[3][4]`), for a row struct type.
     pub(crate) fn array_row_member(&self, ty: Type) -> Option<Type> {
-        let Base::Struct(id) = ty.base else {
-            return None;
-        };
-        let def = self.module.structs.get(id.0 as usize)?;
-        if !def.array_row || ty.is_array() {
+        if ty.is_array() {
             return None;
         }
-        def.members.first().map(|m| m.ty)
+        self.module.row_member(ty)
     }
 
     /// Declares a struct type (GLSL 1.20 §4.1.8) in the current scope.
