@@ -1,8 +1,13 @@
 //! Rendering contexts: OpenGL only (the API eglBindAPI(EGL_OPENGL_API)
 //! selects), EGL_KHR_create_context's attributes. Versions 1.0 to 3.3 are
-//! created as the context API [`gl::Api::for_request`] chooses (2.1, or
-//! 3.3 core or compatibility; the profile mask counts from 3.2 on, as the
-//! extension says); a later version, a forward-compatible or robust
+//! made 3.3 contexts: core when 3.2 or 3.3 core is asked for (the profile
+//! mask counts from 3.2 on, as the extension says), compatibility
+//! otherwise. EGL 1.5 §3.7.1.1 lets a context implement any later version
+//! that is backward compatible with the one requested, and the 3.3
+//! compatibility profile contains all of OpenGL 1.0-2.1; Mesa answers such
+//! requests with its newest compatibility context too, so programs that ask
+//! for nothing (piglit's, with version 1.0) get GLSL 1.30 and later as
+//! they do there. A later version, a forward-compatible or robust
 //! context, or a reset strategy other than none is EGL_BAD_MATCH, the
 //! error the extension names for a version and feature set the config
 //! does not support. Objects are not shared: `share_context` is checked
@@ -27,16 +32,14 @@ pub struct Request {
 
 impl Request {
     /// The context API that satisfies the request ([`parse`] refused
-    /// versions beyond [`MAX_VERSION`]).
+    /// versions beyond [`MAX_VERSION`]): the newest context of the
+    /// requested profile (module docs).
     pub fn api(&self) -> gl::Api {
-        let (major, minor) = self.version;
-        let profile =
-            if (major, minor) >= (3, 2) && self.profile == EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT {
-                gl::Profile::Core
-            } else {
-                gl::Profile::Compatibility
-            };
-        gl::Api::for_request(major, minor, profile).unwrap_or(gl::Api::GL21)
+        if self.version >= (3, 2) && self.profile == EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT {
+            gl::Api::GL33_CORE
+        } else {
+            gl::Api::GL33_COMPAT
+        }
     }
 }
 
@@ -231,9 +234,12 @@ mod tests {
         assert_eq!(v(3, 3).map(|r| r.api()), Ok(gl::Api::GL33_CORE));
         assert_eq!(v(3, 4), Err(EGL_BAD_MATCH));
         assert_eq!(v(4, 1), Err(EGL_BAD_MATCH));
-        assert_eq!(v(2, 1).map(|r| r.api()), Ok(gl::Api::GL21));
-        // The profile mask counts from 3.2 on; below, a compatibility
-        // context (its default, core, is ignored).
+        // Every version up to 3.1 is a compatibility context of the
+        // newest version, as the profile mask counts from 3.2 on (its
+        // default, core, is ignored below).
+        assert_eq!(v(2, 1).map(|r| r.api()), Ok(gl::Api::GL33_COMPAT));
+        assert_eq!(v(1, 0).map(|r| r.api()), Ok(gl::Api::GL33_COMPAT));
+        assert_eq!(parse(&[]).map(|r| r.api()), Ok(gl::Api::GL33_COMPAT));
         assert_eq!(v(3, 1).map(|r| r.api()), Ok(gl::Api::GL33_COMPAT));
         assert_eq!(
             parse(&[

@@ -1,6 +1,6 @@
 //! # shaderbox-egl: a drop-in `libEGL.so.1` (and `libGL.so.1`, `libOpenGL.so.0`)
 //!
-//! EGL 1.5 for OpenGL 2.1 contexts over shaderbox, headless: built as
+//! EGL 1.5 for OpenGL 3.3 contexts (core and compatibility) over shaderbox, headless: built as
 //! `libEGL.so` (SONAME `libEGL.so.1`, `build.rs`), it exports the EGL
 //! entry points, every gl* entry point of [`capi`] (linked in as an rlib,
 //! so the GL calls are the ones `libOSMesa.so` exports) and the GLX names
@@ -26,8 +26,8 @@
 //!   objects). Window and pixmap surfaces are `EGL_BAD_MATCH`.
 //! - Contexts ([`context`]): `eglBindAPI(EGL_OPENGL_API)` only (the initial
 //!   API is `EGL_NONE`); `EGL_KHR_create_context` versions 1.0 to 3.3,
-//!   core and compatibility, made as the GL 2.1 or 3.3 context
-//!   `gl::Api::for_request` chooses; later versions, forward-compatible
+//!   made 3.3 contexts: core for a 3.2 or 3.3 core request, compatibility
+//!   (which contains OpenGL 1.0-2.1) for every other; later versions, forward-compatible
 //!   and robust contexts are `EGL_BAD_MATCH`. No object sharing.
 //! - One current context per thread, a context current to one thread and
 //!   a surface to one context at a time ([`current`]); destroying a

@@ -129,7 +129,8 @@ fn triangles_through_system_libglvnd() {
 }
 
 /// A full-viewport red triangle on a green clear in a 16x16 pbuffer, with
-/// the 2.1 fixed-function pipeline; prints the vendor strings and the
+/// the fixed-function pipeline (of the compatibility context a default
+/// request gets); prints the vendor strings and the
 /// corner and centre pixels, then "ok".
 const PYOPENGL_TRIANGLE: &str = r#"
 import ctypes

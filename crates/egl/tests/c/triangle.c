@@ -1,5 +1,6 @@
 /* A headless EGL program as users write them: the device platform (or
- * EGL_DEFAULT_DISPLAY), a surfaceless OpenGL 2.1 context drawing a
+ * EGL_DEFAULT_DISPLAY), a surfaceless context (default attributes: the
+ * compatibility profile, with the fixed-function pipeline) drawing a
  * triangle into a framebuffer object, then a pbuffer surface drawing the
  * same triangle into the default framebuffer; pixels are read back and
  * checked. Built and run by tests/c_program.rs against the built

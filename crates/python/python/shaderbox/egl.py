@@ -81,7 +81,9 @@ def context(
 ) -> Tuple[Any, Any, Any]:
     """Initializes EGL's default display, creates an OpenGL context of
     ``version`` (``(2, 1)``, or up to ``(3, 3)``; for 3.2 and 3.3 ``core``
-    chooses the profile, default core) with an RGBA8 config with 24-bit
+    chooses the profile, default core; shaderbox's EGL answers every
+    request but 3.2/3.3 core with the 3.3 compatibility profile, which
+    contains all of OpenGL 2.1, as EGL allows and Mesa does) with an RGBA8 config with 24-bit
     depth and 8-bit stencil, and makes it current: with a ``width`` x
     ``height`` pbuffer if both are positive, with no surface (draw into a
     framebuffer object) otherwise. Returns ``(display, context, surface)``
