@@ -7,17 +7,27 @@
 bench/run.py starts this once per (implementation, scene) so each runs in its
 own process with its own library. SPEC names the scene (see `build` below):
 
-    spheres:N:WxH:ortho|persp:none|linear|exp|exp2[:points|:tris]
-                                                     seed sphere impostors
-                                                     (points: one point per
-                                                     atom expanded by
-                                                     shaders/sphere.geom,
-                                                     GL_EXT_geometry_shader4;
-                                                     shaderbox only; tris:
+    spheres:N:WxH:ortho|persp:none|linear|exp|exp2[:OPTION...]
+                                                     sphere impostors of
+                                                     shaders/sphere.*; options:
+                                                     dense: protein density
+                                                     (0.09 atoms per Å³, many
+                                                     spheres behind a pixel)
+                                                     instead of one atom per
+                                                     1000 Å³; seed: the seed
+                                                     talk's sphere shaders as
+                                                     written (rays from
+                                                     interpolated varyings,
+                                                     crates/glsl/tests/seeds/
+                                                     000-sphere.*); points:
+                                                     one point per atom
+                                                     expanded by
+                                                     shaders/sphere.geom
+                                                     (GL_EXT_geometry_shader4,
+                                                     shaderbox only); tris:
                                                      each quad as the two
                                                      GL_TRIANGLES the points'
-                                                     strip makes, an
-                                                     ablation)
+                                                     strip makes (an ablation)
     mesh:TRIANGLES:WxH                               seed materials shader
     ffmesh:TRIANGLES:WxH                             fixed-function lighting + fog
     textured:LAYERS:WxH[:notex][:noblend][:texN]     mipmapped texture layers
@@ -29,7 +39,12 @@ own process with its own library. SPEC names the scene (see `build` below):
     core-spheres|core-mesh|core-itex:...             OpenGL 3.3 core scenes
                                                      (bench/scenes33.py)
 
-A frame is glClear + the scene's draws + glFinish. Warm-up frames (at least
+A frame is glClear + the scene's draws + glFinish. --count-fragments also
+reports how many fragments the scene's draws rasterize ("fragments": the
+samples an occlusion query counts with the fragment shader replaced by one
+that writes a constant and the depth test off, i.e. every fragment the
+real program shades, as it writes gl_FragDepth and so cannot be culled
+before shading), for costs per fragment. Warm-up frames (at least
 one, until WARMUP_SECONDS have gone), then
 frames until N are timed or the time budget is spent (at least 2). Prints
 one JSON line: {"renderer", "warmup", "times": [seconds...]}; --out gets the
@@ -74,8 +89,13 @@ QUAD_CORNERS = ((-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0))
 TRI_CORNERS = ((-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0))
 # Seconds of untimed frames before the timed ones (see main).
 WARMUP_SECONDS = 0.5
-# Volume per random atom (Å^3).
+# Volume per random atom (Å^3): a sparse cloud, and protein density
+# (about 0.09 atoms per Å^3 counting hydrogens).
 ATOM_VOLUME = 1000.0
+DENSE_ATOM_VOLUME = 1.0 / 0.09
+# The seed talk's sphere pair; the files carry their GLSL version in a
+# header comment only.
+SEED_SPHERE = ("crates/glsl/tests/seeds/000-sphere.vert", "crates/glsl/tests/seeds/000-sphere.frag")
 
 
 def read(path):
@@ -162,11 +182,14 @@ def camera(center, radius, proj, w, h):
     return d, radius
 
 
-def spheres(n, proj, fog, w, h, points=False, tris=False):
+def spheres(n, proj, fog, w, h, options=()):
+    points, tris = "points" in options, "tris" in options
     rng = random.Random(7)
     # A sparse random cloud, one atom per 1000 Å^3, so 20,000 atoms at
-    # 1024² cover about two million fragments (depth complexity ~2).
-    big_r = (3.0 * ATOM_VOLUME * n / (4.0 * math.pi)) ** (1.0 / 3.0)
+    # 1024² cover about two million fragments (depth complexity ~2); dense,
+    # the same atoms in a ball of protein density.
+    volume = DENSE_ATOM_VOLUME if "dense" in options else ATOM_VOLUME
+    big_r = (3.0 * volume * n / (4.0 * math.pi)) ** (1.0 / 3.0)
     pos, tex, col = array.array("f"), array.array("f"), array.array("f")
     cum = []
     acc = 0.0
@@ -196,6 +219,9 @@ def spheres(n, proj, fog, w, h, points=False, tris=False):
                   (ext.GL_GEOMETRY_VERTICES_OUT_EXT, 4)]
         prog = program(read("shaders/sphere-point.vert"), read("shaders/sphere.frag"),
                        read("shaders/sphere.geom"), params)
+    elif "seed" in options:
+        prog = program("#version 120\n" + read(SEED_SPHERE[0]),
+                       "#version 120\n" + read(SEED_SPHERE[1]))
     else:
         prog = program(read("shaders/sphere.vert"), read("shaders/sphere.frag"))
     set_lights()
@@ -417,6 +443,63 @@ def compile_times(which, frames, budget):
     return times
 
 
+def count_fragments(draw):
+    """The fragments the draws rasterize (module docs): an occlusion query
+    over one frame with the current program's vertex shader linked to a
+    constant fragment shader, and no depth test. Restores the state."""
+    current = GL.glGetIntegerv(GL.GL_CURRENT_PROGRAM)
+    current = int(current[0] if hasattr(current, "__len__") else current)
+    counter = None
+    if current:
+        shaders = GL.glGetAttachedShaders(current)
+        vertex = [sh for sh in shaders
+                  if GL.glGetShaderiv(sh, GL.GL_SHADER_TYPE) == GL.GL_VERTEX_SHADER]
+        counter = GL.glCreateProgram()
+        for sh in vertex:
+            GL.glAttachShader(counter, sh)
+        fs = GL.glCreateShader(GL.GL_FRAGMENT_SHADER)
+        GL.glShaderSource(fs, "void main() { gl_FragColor = vec4(1.0); }")
+        GL.glCompileShader(fs)
+        GL.glAttachShader(counter, fs)
+        GL.glLinkProgram(counter)
+        if not GL.glGetProgramiv(counter, GL.GL_LINK_STATUS):
+            raise SystemExit(f"fragment counter link: {GL.glGetProgramInfoLog(counter)}")
+        # The scene's uniforms (the vertex shader's among them) are set on
+        # its own program: copy those the vertex shader reads.
+        GL.glUseProgram(counter)
+        for i in range(GL.glGetProgramiv(counter, GL.GL_ACTIVE_UNIFORMS)):
+            name, size, kind = GL.glGetActiveUniform(counter, i)
+            name = bytes(name).split(b"\0")[0].decode()
+            width = {GL.GL_FLOAT: 1, GL.GL_FLOAT_VEC2: 2, GL.GL_FLOAT_VEC3: 3,
+                     GL.GL_FLOAT_VEC4: 4}.get(kind)
+            if name.startswith("gl_"):
+                continue
+            if width is None or size != 1:
+                raise SystemExit(f"fragment counter: uniform {name} of type {kind:#x} not copied")
+            v = (ctypes.c_float * 4)()
+            GL.glGetUniformfv(current, GL.glGetUniformLocation(current, name), v)
+            setter = (GL.glUniform1f, GL.glUniform2f, GL.glUniform3f, GL.glUniform4f)[width - 1]
+            setter(GL.glGetUniformLocation(counter, name), *list(v)[:width])
+        GL.glUseProgram(counter)
+    depth = GL.glIsEnabled(GL.GL_DEPTH_TEST)
+    GL.glDisable(GL.GL_DEPTH_TEST)
+    query = GL.glGenQueries(1)
+    query = int(query[0] if hasattr(query, "__len__") else query)
+    GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT)
+    GL.glBeginQuery(GL.GL_SAMPLES_PASSED, query)
+    draw()
+    GL.glEndQuery(GL.GL_SAMPLES_PASSED)
+    n = GL.glGetQueryObjectuiv(query, GL.GL_QUERY_RESULT)
+    n = int(n[0] if hasattr(n, "__len__") else n)
+    GL.glDeleteQueries(1, [query])
+    if depth:
+        GL.glEnable(GL.GL_DEPTH_TEST)
+    GL.glUseProgram(current)
+    if counter is not None:
+        GL.glDeleteProgram(counter)
+    return n
+
+
 def parse_size(s):
     w, h = s.split("x")
     return int(w), int(h)
@@ -427,11 +510,12 @@ def build(spec):
     kind, *args = spec.split(":")
     if kind == "spheres":
         w, h = parse_size(args[1])
-        option = args[4] if len(args) > 4 else None
-        if option not in (None, "points", "tris") or len(args) > 5:
-            raise SystemExit(f"unknown sphere option in {spec!r}")
-        return w, h, lambda: spheres(int(args[0]), args[2], args[3], w, h,
-                                     option == "points", option == "tris")
+        options = tuple(args[4:])
+        known = ("points", "tris", "dense", "seed")
+        if any(o not in known for o in options) or ("seed" in options and
+                                                    ("points" in options or "tris" in options)):
+            raise SystemExit(f"unknown sphere option (or combination) in {spec!r}")
+        return w, h, lambda: spheres(int(args[0]), args[2], args[3], w, h, options)
     if kind in ("mesh", "ffmesh"):
         w, h = parse_size(args[1])
         return w, h, lambda: mesh(int(args[0]), w, h, kind == "mesh")
@@ -467,6 +551,8 @@ def main():
     ap.add_argument("--frames", type=int, default=5)
     ap.add_argument("--budget", type=float, default=20.0, help="seconds of timed frames at most")
     ap.add_argument("--out")
+    ap.add_argument("--count-fragments", action="store_true",
+                    help="also report the fragments a frame rasterizes (module docs)")
     args = ap.parse_args()
     w, h, setup = build(args.spec)
     ctx = create_context(args.spec)
@@ -528,6 +614,11 @@ def main():
             px = GL.glReadPixels(0, 0, w, h, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE)
             with open(args.out, "wb") as f:
                 f.write(bytes(px))
+        if args.count_fragments:
+            result["fragments"] = count_fragments(draw)
+            err = GL.glGetError()
+            if err:
+                raise SystemExit(f"GL error {err:#x} while counting fragments")
     print(json.dumps(result))
 
 
