@@ -11,7 +11,9 @@ Runs bench/scene.py on SPEC once under `valgrind --tool=callgrind
 shaderbox libOSMesa.so built with debug info, as the release profile is)
 and one thread, then prints:
 
-- the functions of the library with the most instructions executed in
+- the instructions executed in the library's functions, in generated code
+  (native shader code, which has no symbol) and in all; then the
+  functions of the library with the most instructions executed in
   them (self cost), divided by --per (for instance the number of 16-lane
   batches or of fragments the run drew, to get a cost per unit);
 - for each --function (a demangled name as callgrind prints it, e.g.
@@ -148,7 +150,12 @@ def main():
     totals = {fn: sum(c.values()) for fn, c in costs.items()}
     mine = {fn: n for fn, n in totals.items()
             if "::" in fn and not fn.startswith(("core::", "alloc::", "std::"))}
+    # Native shader code has no symbol: callgrind names it by address.
+    jit = sum(n for fn, n in totals.items() if re.fullmatch(r"0x[0-9a-fA-F]+", fn))
     print(f"{args.spec}: instructions per {args.per:g} (self cost)")
+    print(f"{sum(mine.values()) / args.per:14.1f}  in this repository's functions")
+    print(f"{jit / args.per:14.1f}  in generated code (shaders' native code; named by address)")
+    print(f"{sum(totals.values()) / args.per:14.1f}  in all (Python, libc, ... too)")
     for fn, n in sorted(mine.items(), key=lambda kv: -kv[1])[:args.lines]:
         print(f"{n / args.per:14.1f}  {fn}")
     for name in args.function:

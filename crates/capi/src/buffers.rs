@@ -52,18 +52,23 @@ pub fn write_pixel_buffer(c: &mut OsContext, offset: usize, bytes: &[u8]) {
     c.gl.buffer_sub_data(GL_PIXEL_PACK_BUFFER, offset as isize, bytes);
 }
 
-/// The client image a glTexImage*/glTexSubImage* call reads: `w*h*d`
-/// pixels of `format`/`ty` at the unpack alignment, from client memory or,
-/// with a buffer bound to GL_PIXEL_UNPACK_BUFFER, from that buffer at the
-/// offset `data` (GL 2.1 §4.3.5). Ok(None): no data (null pointer, an
-/// unknown format/type or an empty image: the context validates those).
-/// Err: an error was recorded (the range read lies outside the buffer, or
-/// the buffer is mapped: GL_INVALID_OPERATION); the call must do nothing.
+/// The client image a glTexImage*/glTexSubImage*/glDrawPixels call reads:
+/// `w*h*d` pixels of `format`/`ty` laid out per the unpack modes
+/// (glPixelStore; `volume`: a three-dimensional image, which the image
+/// modes apply to), from client memory or, with a buffer bound to
+/// GL_PIXEL_UNPACK_BUFFER, from that buffer at the offset `data` (GL 2.1
+/// §4.3.5); returned in the packed layout the context takes
+/// ([`gl::pixel_store`]). Ok(None): no data (null pointer, an unknown
+/// format/type or an empty image: the context validates those). Err: an
+/// error was recorded (the range read lies outside the buffer, or the
+/// buffer is mapped: GL_INVALID_OPERATION); the call must do nothing.
+#[allow(clippy::too_many_arguments)]
 pub(crate) unsafe fn image_bytes(
     c: &mut OsContext,
     w: GLsizei,
     h: GLsizei,
     d: GLsizei,
+    volume: bool,
     format: GLenum,
     ty: GLenum,
     data: *const c_void,
@@ -72,31 +77,72 @@ pub(crate) unsafe fn image_bytes(
     if (data.is_null() && pbo == 0) || w <= 0 || h <= 0 || d <= 0 {
         return Ok(None);
     }
-    if gl::pixel_transfer::pixel_size(format, ty).is_none() {
-        return Ok(None);
-    }
-    let align =
-        c.gl.get_integerv(GL_UNPACK_ALIGNMENT)
-            .first()
-            .copied()
-            .unwrap_or(4);
-    let row = gl::pixel_transfer::row_stride(w as usize, format, ty, align.max(1) as usize);
-    let Some(len) = row
-        .checked_mul(h as usize)
-        .and_then(|x| x.checked_mul(d as usize))
-    else {
+    let store = c.gl.unpack_modes();
+    let dims = [w as usize, h as usize, d as usize];
+    let Some(len) = store.image_extent(dims, volume, format, ty) else {
         return Ok(None);
     };
     if len > MAX_BUFFER_BYTES {
         return Ok(None);
     }
-    if pbo != 0 {
-        return crate::buffers::read_pixel_buffer(c, GL_PIXEL_UNPACK_BUFFER, data as usize, len)
-            .map(Some);
+    let raw = if pbo != 0 {
+        crate::buffers::read_pixel_buffer(c, GL_PIXEL_UNPACK_BUFFER, data as usize, len)?
+    } else {
+        // SAFETY: GL's contract: the client image's pixels, laid out per
+        // the unpack modes, lie within `len` bytes of `data`.
+        unsafe { bytes(data, len) }.to_vec()
+    };
+    Ok(Some(match store.is_packed() {
+        true => raw,
+        false => store.gather(&raw, dims, volume, format, ty),
+    }))
+}
+
+/// Writes the packed image `packed` (`dims` pixels of `format`/`ty`, as
+/// the context returns it) where a glReadPixels/glGetTexImage call puts
+/// it: client memory at `pixels`, or the GL_PIXEL_PACK_BUFFER at that
+/// offset, laid out per the pack modes (only the pixels' bytes change;
+/// `volume`: a three-dimensional image). Records GL_INVALID_OPERATION when
+/// the range lies outside the buffer or the buffer is mapped.
+pub(crate) unsafe fn pack_image(
+    c: &mut OsContext,
+    packed: &[u8],
+    dims: [usize; 3],
+    volume: bool,
+    format: GLenum,
+    ty: GLenum,
+    pixels: *mut c_void,
+) {
+    let store = c.gl.pack_modes();
+    let pbo = c.gl.bound_buffer(GL_PIXEL_PACK_BUFFER) != 0;
+    if store.is_packed() {
+        if pbo {
+            write_pixel_buffer(c, pixels as usize, packed);
+        } else if !pixels.is_null() {
+            // SAFETY: GL's contract: the client's buffer holds the packed
+            // image of format/type at the pack alignment.
+            unsafe {
+                std::ptr::copy_nonoverlapping(packed.as_ptr(), pixels as *mut u8, packed.len())
+            };
+        }
+        return;
     }
-    // SAFETY: GL's contract: the client image holds w x h x d pixels of
-    // format/type laid out per the unpack state.
-    Ok(Some(unsafe { bytes(data, len) }.to_vec()))
+    let Some(len) = store.image_extent(dims, volume, format, ty) else {
+        return;
+    };
+    if pbo {
+        // The buffer's bytes between the pixels keep their values.
+        let Ok(mut range) = read_pixel_buffer(c, GL_PIXEL_PACK_BUFFER, pixels as usize, len) else {
+            return;
+        };
+        store.scatter(packed, &mut range, dims, volume, format, ty);
+        write_pixel_buffer(c, pixels as usize, &range);
+    } else if !pixels.is_null() {
+        // SAFETY: GL's contract: the client image's pixels, laid out per
+        // the pack modes, lie within `len` bytes of `pixels`.
+        let dst = unsafe { std::slice::from_raw_parts_mut(pixels as *mut u8, len) };
+        store.scatter(packed, dst, dims, volume, format, ty);
+    }
 }
 
 /// Whether a draw would source data from a mapped buffer (enabled arrays

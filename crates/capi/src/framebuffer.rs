@@ -81,15 +81,16 @@ gl_entry_points! {
         if let Some(d) = &c.debug {
             crate::debug_env::flush(&mut c.gl, d);
         }
-        let align = c.gl.get_integerv(GL_PACK_ALIGNMENT).first().copied().unwrap_or(4).max(1);
+        let store = c.gl.pack_modes();
         let len = if w > 0 && h > 0 && gl::pixel_transfer::pixel_size(format, ty).is_some() {
-            gl::pixel_transfer::row_stride(w as usize, format, ty, align as usize)
+            gl::pixel_transfer::row_stride(w as usize, format, ty, store.alignment)
                 .saturating_mul(h as usize)
         } else {
             0
         };
-        if c.gl.bound_buffer(GL_PIXEL_PACK_BUFFER) != 0 {
-            // Into the pack buffer at offset `pixels` (GL 2.1 §4.3.5).
+        if c.gl.bound_buffer(GL_PIXEL_PACK_BUFFER) != 0 || !store.is_packed() {
+            // Into the pack buffer at offset `pixels` (GL 2.1 §4.3.5), or
+            // laid out per the pack modes: read packed, then placed.
             if len > MAX_BUFFER_BYTES {
                 c.gl.record_error(GL_OUT_OF_MEMORY);
                 return;
@@ -100,8 +101,10 @@ gl_entry_points! {
             let e = c.gl.get_error();
             c.gl.record_error(if before != GL_NO_ERROR { before } else { e });
             if e == GL_NO_ERROR && len > 0 {
-                crate::buffers::write_pixel_buffer(c, pixels as usize, &out);
+                let dims = [w as usize, h as usize, 1];
+                crate::buffers::pack_image(c, &out, dims, false, format, ty, pixels);
             }
+            c.sync();
             return;
         }
         if pixels.is_null() && len > 0 {

@@ -43,6 +43,17 @@ fn stipple_through_buffer(c: &mut OsContext, pack: bool) -> bool {
     c.gl.bound_buffer(t) != 0
 }
 
+/// The 128 bytes of a polygon stipple (four per row, bottom row first)
+/// from a packed 32x32 bitmap whose rows are padded to `alignment`.
+fn stipple_rows(packed: &[u8], alignment: usize) -> [u8; 128] {
+    let row = gl::pixel_transfer::bitmap_row_bytes(32, alignment);
+    let mut m = [0u8; 128];
+    for (dst, src) in m.chunks_exact_mut(4).zip(packed.chunks(row)) {
+        dst.copy_from_slice(&src[..4]);
+    }
+    m
+}
+
 /// glPixelMap*: validation and storage of `vals` for `map`.
 fn pixel_map(c: &mut OsContext, map: GLenum, size: GLsizei, vals: Vec<f32>) {
     if c.gl.reject_in_begin() {
@@ -234,34 +245,55 @@ gl_entry_points! {
         if c.gl.reject_in_begin() {
             return;
         }
-        if stipple_through_buffer(c, false) {
-            let Ok(bytes) = crate::buffers::read_pixel_buffer(c, GL_PIXEL_UNPACK_BUFFER, mask as usize, 128) else {
+        // Unpacked as a 32x32 bitmap would be (GL 2.1 §3.5.2): the
+        // unpack modes apply.
+        let store = c.gl.unpack_modes();
+        let Some(len) = store.bitmap_extent(32, 32) else {
+            return;
+        };
+        let raw = if stipple_through_buffer(c, false) {
+            let Ok(bytes) = crate::buffers::read_pixel_buffer(c, GL_PIXEL_UNPACK_BUFFER, mask as usize, len) else {
                 return;
             };
-            let record = bytes.clone();
-            if c.record(move || with_stipple(&record)) {
-                return;
-            }
-            c.legacy.polygon_stipple.copy_from_slice(&bytes);
+            bytes
+        } else if mask.is_null() {
+            return;
+        } else {
+            // SAFETY: GL's contract: the pattern's bits, laid out per the
+            // unpack modes, lie within `len` bytes of `mask`.
+            std::slice::from_raw_parts(mask, len).to_vec()
+        };
+        let m = stipple_rows(&store.gather_bitmap(&raw, 32, 32), store.alignment);
+        if c.record(move || with_stipple(&m)) {
             return;
         }
-        if let Some(m) = rd::<128, u8>(mask) {
-            if c.record(move || with_stipple(&m)) {
-                return;
-            }
-            c.legacy.polygon_stipple = m;
-        }
+        c.legacy.polygon_stipple = m;
     }
     fn glGetPolygonStipple(mask: *mut GLubyte) => |c| {
         if c.gl.reject_in_begin() {
             return;
         }
-        let m = c.legacy.polygon_stipple;
-        if stipple_through_buffer(c, true) {
-            crate::buffers::write_pixel_buffer(c, mask as usize, &m);
+        // Packed as a 32x32 bitmap would be (GL 2.1 §6.1.6).
+        let store = c.gl.pack_modes();
+        let Some(len) = store.bitmap_extent(32, 32) else {
             return;
+        };
+        let row = gl::pixel_transfer::bitmap_row_bytes(32, store.alignment);
+        let mut packed = vec![0u8; row * 32];
+        for (dst, src) in packed.chunks_exact_mut(row).zip(c.legacy.polygon_stipple.chunks_exact(4)) {
+            dst[..4].copy_from_slice(src);
         }
-        wr(mask, &m);
+        if stipple_through_buffer(c, true) {
+            let Ok(mut range) = crate::buffers::read_pixel_buffer(c, GL_PIXEL_PACK_BUFFER, mask as usize, len) else {
+                return;
+            };
+            store.scatter_bitmap(&packed, &mut range, 32, 32);
+            crate::buffers::write_pixel_buffer(c, mask as usize, &range);
+        } else if !mask.is_null() {
+            // SAFETY: GL's contract: the pattern's bits, laid out per the
+            // pack modes, lie within `len` bytes of `mask`.
+            store.scatter_bitmap(&packed, std::slice::from_raw_parts_mut(mask, len), 32, 32);
+        }
     }
 
     // ---- multisample (none: no effect) ----

@@ -86,9 +86,7 @@
 //!   apply to their fragments (GL 2.1 applies them). Of the pixel
 //!   transfer state only color/depth scale and bias, index shift/offset
 //!   (stencil) and the zoom apply; pixel maps do not. GL_COLOR_INDEX data
-//!   and GL_BITMAP-typed rectangles raise GL_INVALID_OPERATION;
-//!   GL_UNPACK_LSB_FIRST (bitmaps are read most significant bit first),
-//!   row length and skip values are not applied.
+//!   and GL_BITMAP-typed rectangles raise GL_INVALID_OPERATION.
 //! - Kept as state, not applied when drawing ([`legacy`]): line and
 //!   polygon stipples, edge flags, pixel maps, GL_COMBINE texture-environment parameters (GL_COMBINE draws as
 //!   GL_MODULATE), texture priorities. glRenderMode(GL_SELECT /

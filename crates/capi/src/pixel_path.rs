@@ -42,47 +42,45 @@ fn transfer(c: &OsContext) -> PixelTransfer {
 }
 
 fn unpack_alignment(c: &mut OsContext) -> usize {
-    c.gl.get_integerv(GL_UNPACK_ALIGNMENT)
-        .first()
-        .copied()
-        .unwrap_or(4)
-        .max(1) as usize
+    c.gl.unpack_modes().alignment.max(1)
 }
 
-/// The bytes of a glBitmap image: from client memory or the unpack buffer.
+/// The bytes of a glBitmap image: from client memory or the unpack
+/// buffer, laid out per the unpack modes (row length, skips, bit order),
+/// returned packed (most significant bit first, rows at the alignment).
 /// Err: an error was recorded and the call must do nothing.
 unsafe fn bitmap_bytes(
     c: &mut OsContext,
     w: GLsizei,
     h: GLsizei,
-    align: usize,
     data: *const GLubyte,
 ) -> Result<Option<Vec<u8>>, crate::buffers::Recorded> {
     let pbo = c.gl.bound_buffer(GL_PIXEL_UNPACK_BUFFER);
     if (data.is_null() && pbo == 0) || w <= 0 || h <= 0 {
         return Ok(None);
     }
-    let row = gl::pixel_transfer::bitmap_row_bytes(w as usize, align);
-    let Some(len) = row
-        .checked_mul(h as usize)
-        .filter(|&n| n <= MAX_BITMAP_BYTES)
-    else {
+    let store = c.gl.unpack_modes();
+    let (w, h) = (w as usize, h as usize);
+    let Some(len) = store.bitmap_extent(w, h).filter(|&n| n <= MAX_BITMAP_BYTES) else {
         return Ok(None);
     };
-    if pbo != 0 {
-        return crate::buffers::read_pixel_buffer(c, GL_PIXEL_UNPACK_BUFFER, data as usize, len)
-            .map(Some);
-    }
-    // SAFETY: GL's contract: h rows of `row` bytes at `data`.
-    Ok(Some(
-        unsafe { std::slice::from_raw_parts(data, len) }.to_vec(),
-    ))
+    let raw = if pbo != 0 {
+        crate::buffers::read_pixel_buffer(c, GL_PIXEL_UNPACK_BUFFER, data as usize, len)?
+    } else {
+        // SAFETY: GL's contract: the bitmap's bits, laid out per the
+        // unpack modes, lie within `len` bytes of `data`.
+        unsafe { std::slice::from_raw_parts(data, len) }.to_vec()
+    };
+    Ok(Some(match store.is_packed() {
+        true => raw,
+        false => store.gather_bitmap(&raw, w, h),
+    }))
 }
 
 gl_entry_points! {
     fn glDrawPixels(w: GLsizei, h: GLsizei, format: GLenum, ty: GLenum, data: *const c_void) => |c| {
         let align = unpack_alignment(c);
-        let Ok(bytes) = image_bytes(c, w, h, 1, format, ty, data) else {
+        let Ok(bytes) = image_bytes(c, w, h, 1, false, format, ty, data) else {
             return;
         };
         if c.compiling() {
@@ -109,7 +107,7 @@ gl_entry_points! {
         bitmap: *const GLubyte
     ) => |c| {
         let align = unpack_alignment(c);
-        let Ok(bytes) = bitmap_bytes(c, w, h, align, bitmap) else {
+        let Ok(bytes) = bitmap_bytes(c, w, h, bitmap) else {
             return;
         };
         if c.compiling() {

@@ -166,19 +166,20 @@ gl_entry_points! {
         if bytes.is_empty() {
             return;
         }
-        if c.gl.bound_buffer(GL_PIXEL_PACK_BUFFER) != 0 {
-            crate::buffers::write_pixel_buffer(c, pixels as usize, &bytes);
-        } else if !pixels.is_null() {
-            // SAFETY: GL's contract: the client buffer holds the packed
-            // image of format/type at the pack alignment.
-            std::ptr::copy_nonoverlapping(bytes.as_ptr(), pixels as *mut u8, bytes.len());
+        // The level's size, for the pack modes' layout; three-dimensional
+        // targets' images are volumes (GL 2.1 §6.1.4).
+        let mut dims = [0usize; 3];
+        for (d, pname) in dims.iter_mut().zip([GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_DEPTH]) {
+            *d = c.gl.get_tex_level_parameteriv(target, level, pname).max(1) as usize;
         }
+        let volume = matches!(target, GL_TEXTURE_3D | GL_TEXTURE_2D_ARRAY);
+        crate::buffers::pack_image(c, &bytes, dims, volume, format, ty, pixels);
     }
     fn glTexSubImage1D(
         target: GLenum, level: GLint, xoff: GLint, w: GLsizei, format: GLenum, ty: GLenum,
         data: *const c_void
     ) => |c| {
-        let Ok(bytes) = image_bytes(c, w, 1, 1, format, ty, data) else { return };
+        let Ok(bytes) = image_bytes(c, w, 1, 1, false, format, ty, data) else { return };
         let bytes = bytes.unwrap_or_default();
         c.gl.tex_sub_image(target, level, [xoff], [w], format, ty, &bytes);
     }
@@ -186,7 +187,7 @@ gl_entry_points! {
         target: GLenum, level: GLint, xoff: GLint, yoff: GLint, zoff: GLint, w: GLsizei,
         h: GLsizei, d: GLsizei, format: GLenum, ty: GLenum, data: *const c_void
     ) => |c| {
-        let Ok(bytes) = image_bytes(c, w, h, d, format, ty, data) else { return };
+        let Ok(bytes) = image_bytes(c, w, h, d, true, format, ty, data) else { return };
         let bytes = bytes.unwrap_or_default();
         c.gl.tex_sub_image(target, level, [xoff, yoff, zoff], [w, h, d], format, ty, &bytes);
     }

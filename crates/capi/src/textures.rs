@@ -203,28 +203,28 @@ gl_entry_points! {
         target: GLenum, level: GLint, internal: GLint, w: GLsizei, border: GLint,
         format: GLenum, ty: GLenum, data: *const c_void
     ) => |c| {
-        let Ok(bytes) = image_bytes(c, w, 1, 1, format, ty, data) else { return };
+        let Ok(bytes) = image_bytes(c, w, 1, 1, false, format, ty, data) else { return };
         c.gl.tex_image(target, level, internal, [w], border, format, ty, bytes.as_deref());
     }
     fn glTexImage2D(
         target: GLenum, level: GLint, internal: GLint, w: GLsizei, h: GLsizei, border: GLint,
         format: GLenum, ty: GLenum, data: *const c_void
     ) => |c| {
-        let Ok(bytes) = image_bytes(c, w, h, 1, format, ty, data) else { return };
+        let Ok(bytes) = image_bytes(c, w, h, 1, false, format, ty, data) else { return };
         c.gl.tex_image(target, level, internal, [w, h], border, format, ty, bytes.as_deref());
     }
     fn glTexImage3D(
         target: GLenum, level: GLint, internal: GLint, w: GLsizei, h: GLsizei, d: GLsizei,
         border: GLint, format: GLenum, ty: GLenum, data: *const c_void
     ) => |c| {
-        let Ok(bytes) = image_bytes(c, w, h, d, format, ty, data) else { return };
+        let Ok(bytes) = image_bytes(c, w, h, d, true, format, ty, data) else { return };
         c.gl.tex_image(target, level, internal, [w, h, d], border, format, ty, bytes.as_deref());
     }
     fn glTexSubImage2D(
         target: GLenum, level: GLint, xoff: GLint, yoff: GLint, w: GLsizei, h: GLsizei,
         format: GLenum, ty: GLenum, data: *const c_void
     ) => |c| {
-        let Ok(bytes) = image_bytes(c, w, h, 1, format, ty, data) else { return };
+        let Ok(bytes) = image_bytes(c, w, h, 1, false, format, ty, data) else { return };
         let bytes = bytes.unwrap_or_default();
         c.gl.tex_sub_image(target, level, [xoff, yoff], [w, h], format, ty, &bytes);
     }

@@ -41,8 +41,8 @@ pub(crate) struct ClientAttribs {
     array_buffer: u32,
     /// Primitive restart: enabled, and the index.
     restart: (bool, u32),
-    pack_alignment: i32,
-    unpack_alignment: i32,
+    pack: crate::pixel_store::PixelStore,
+    unpack: crate::pixel_store::PixelStore,
     pack_buffer: u32,
     unpack_buffer: u32,
 }
@@ -237,8 +237,8 @@ impl Context {
             client_active_texture: va.client_active_texture,
             array_buffer: va.array_buffer,
             restart: (self.st.is_on(GL_PRIMITIVE_RESTART), va.restart_index),
-            pack_alignment: self.st.pack_alignment,
-            unpack_alignment: self.st.unpack_alignment,
+            pack: self.st.pack,
+            unpack: self.st.unpack,
             pack_buffer: self.objects.pack_buffer,
             unpack_buffer: self.objects.unpack_buffer,
         });
@@ -259,8 +259,8 @@ impl Context {
             }
         };
         if s.mask & GL_CLIENT_PIXEL_STORE_BIT != 0 {
-            self.st.pack_alignment = s.pack_alignment;
-            self.st.unpack_alignment = s.unpack_alignment;
+            self.st.pack = s.pack;
+            self.st.unpack = s.unpack;
             self.objects.pack_buffer = live(s.pack_buffer, &self.objects.buffers);
             self.objects.unpack_buffer = live(s.unpack_buffer, &self.objects.buffers);
         }

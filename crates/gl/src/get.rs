@@ -75,6 +75,21 @@ pub const EXTENSIONS_33: &[&str] = &[
     "GL_ARB_blend_func_extended",
 ];
 
+/// One glPixelStore mode of `store` (Table 6.17's pixel storage state).
+fn pixel_store_value(store: &crate::pixel_store::PixelStore, pname: u32) -> i64 {
+    let v = match pname {
+        GL_UNPACK_ALIGNMENT | GL_PACK_ALIGNMENT => store.alignment,
+        GL_UNPACK_ROW_LENGTH | GL_PACK_ROW_LENGTH => store.row_length,
+        GL_UNPACK_SKIP_ROWS | GL_PACK_SKIP_ROWS => store.skip_rows,
+        GL_UNPACK_SKIP_PIXELS | GL_PACK_SKIP_PIXELS => store.skip_pixels,
+        GL_UNPACK_IMAGE_HEIGHT | GL_PACK_IMAGE_HEIGHT => store.image_height,
+        GL_UNPACK_SKIP_IMAGES | GL_PACK_SKIP_IMAGES => store.skip_images,
+        GL_UNPACK_SWAP_BYTES | GL_PACK_SWAP_BYTES => store.swap_bytes as usize,
+        _ => store.lsb_first as usize,
+    };
+    i64::try_from(v).unwrap_or(i64::MAX)
+}
+
 fn b(x: bool) -> f64 {
     if x {
         1.0
@@ -443,8 +458,17 @@ impl Context {
             GL_LINE_WIDTH_RANGE | GL_ALIASED_LINE_WIDTH_RANGE => {
                 flt(&[1.0, crate::state::MAX_POINT_SIZE])
             }
-            GL_UNPACK_ALIGNMENT => int(&[st.unpack_alignment as i64]),
-            GL_PACK_ALIGNMENT => int(&[st.pack_alignment as i64]),
+            GL_UNPACK_ALIGNMENT
+            | GL_UNPACK_ROW_LENGTH
+            | GL_UNPACK_SKIP_ROWS
+            | GL_UNPACK_SKIP_PIXELS
+            | GL_UNPACK_IMAGE_HEIGHT
+            | GL_UNPACK_SKIP_IMAGES
+            | GL_UNPACK_SWAP_BYTES
+            | GL_UNPACK_LSB_FIRST => int(&[pixel_store_value(&st.unpack, pname)]),
+            GL_PACK_ALIGNMENT | GL_PACK_ROW_LENGTH | GL_PACK_SKIP_ROWS | GL_PACK_SKIP_PIXELS
+            | GL_PACK_IMAGE_HEIGHT | GL_PACK_SKIP_IMAGES | GL_PACK_SWAP_BYTES
+            | GL_PACK_LSB_FIRST => int(&[pixel_store_value(&st.pack, pname)]),
             GL_FOG_MODE => int(&[st.fog.mode as i64]),
             GL_FOG_DENSITY => flt(&[st.fog.density]),
             GL_FOG_START => flt(&[st.fog.start]),

@@ -59,7 +59,9 @@
 //!   [`samplers`] (sampler objects),
 //!   [`framebuffer`] (renderbuffers, FBOs, completeness, draw/read
 //!   buffers), [`blit`] (glBlitFramebuffer).
-//! - Client images: [`pixel_transfer`] (layout, unpack, pack, scale and
+//! - Client images: [`pixel_store`] (the glPixelStore modes: where a
+//!   client image's pixels lie, copies to and from the packed layout),
+//!   [`pixel_transfer`] (packed layout, unpack, pack, scale and
 //!   bias), [`readback`] (glReadPixels), [`pixel_path`] (raster position,
 //!   glDrawPixels, glBitmap, glCopyPixels).
 //! - Shaders: [`program`], [`geometry_program`] (which contexts have
@@ -125,6 +127,7 @@ pub mod per_buffer;
 pub mod per_fragment;
 pub mod pipeline_state;
 pub mod pixel_path;
+pub mod pixel_store;
 pub mod pixel_transfer;
 pub mod program;
 pub mod program_blocks;

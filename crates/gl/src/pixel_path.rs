@@ -32,8 +32,9 @@
 //! them); of the pixel transfer operations only the scale and bias of
 //! color and depth and the index shift/offset of stencil indices apply
 //! (pixel maps do not); GL_COLOR_INDEX data and GL_BITMAP-typed rectangles
-//! raise GL_INVALID_OPERATION; bitmaps are read most significant bit
-//! first (GL_UNPACK_LSB_FIRST is ignored).
+//! raise GL_INVALID_OPERATION. Images and bitmaps are given in the packed
+//! layout (bitmaps most significant bit first): the caller applies the
+//! glPixelStore modes ([`crate::pixel_store`]).
 
 use crate::enums::*;
 use crate::fetch::Fetcher;

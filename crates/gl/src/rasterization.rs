@@ -147,39 +147,76 @@ impl Context {
         }
     }
 
+    /// The glPixelStore modes images are read from client memory with.
+    pub fn unpack_modes(&self) -> crate::pixel_store::PixelStore {
+        self.st.unpack
+    }
+
+    /// The glPixelStore modes images are written to client memory with.
+    pub fn pack_modes(&self) -> crate::pixel_store::PixelStore {
+        self.st.pack
+    }
+
     /// glPixelStorei.
     pub fn pixel_storei(&mut self, pname: u32, v: i32) {
         if self.reject_in_begin() {
             return;
         }
-        match pname {
+        let unpack = matches!(
+            pname,
+            GL_UNPACK_ALIGNMENT
+                | GL_UNPACK_ROW_LENGTH
+                | GL_UNPACK_SKIP_ROWS
+                | GL_UNPACK_SKIP_PIXELS
+                | GL_UNPACK_IMAGE_HEIGHT
+                | GL_UNPACK_SKIP_IMAGES
+                | GL_UNPACK_SWAP_BYTES
+                | GL_UNPACK_LSB_FIRST
+        );
+        let store = if unpack {
+            &mut self.st.unpack
+        } else {
+            &mut self.st.pack
+        };
+        // Counts are non-negative and the alignment 1, 2, 4 or 8
+        // (GL 2.1 §3.6.1): GL_INVALID_VALUE otherwise.
+        let count = usize::try_from(v).ok();
+        let ok = match pname {
             GL_UNPACK_ALIGNMENT | GL_PACK_ALIGNMENT => {
-                if ![1, 2, 4, 8].contains(&v) {
-                    self.set_error(GL_INVALID_VALUE);
-                } else if pname == GL_UNPACK_ALIGNMENT {
-                    self.st.unpack_alignment = v;
-                } else {
-                    self.st.pack_alignment = v;
+                let ok = [1, 2, 4, 8].contains(&v);
+                if ok {
+                    store.alignment = v as usize;
                 }
+                ok
             }
-            GL_UNPACK_ROW_LENGTH
-            | GL_UNPACK_SKIP_ROWS
-            | GL_UNPACK_SKIP_PIXELS
-            | GL_PACK_ROW_LENGTH
-            | GL_PACK_SKIP_ROWS
-            | GL_PACK_SKIP_PIXELS
-            | GL_UNPACK_IMAGE_HEIGHT
-            | GL_UNPACK_SKIP_IMAGES
-            | GL_PACK_IMAGE_HEIGHT
-            | GL_PACK_SKIP_IMAGES => {
-                // Accepted; only 0 (the default) is implemented.
-                if v < 0 {
-                    self.set_error(GL_INVALID_VALUE);
-                }
+            GL_UNPACK_SWAP_BYTES | GL_PACK_SWAP_BYTES => {
+                store.swap_bytes = v != 0;
+                true
             }
-            GL_UNPACK_SWAP_BYTES | GL_UNPACK_LSB_FIRST | GL_PACK_SWAP_BYTES | GL_PACK_LSB_FIRST => {
+            GL_UNPACK_LSB_FIRST | GL_PACK_LSB_FIRST => {
+                store.lsb_first = v != 0;
+                true
             }
-            _ => self.set_error(GL_INVALID_ENUM),
+            GL_UNPACK_ROW_LENGTH | GL_PACK_ROW_LENGTH => {
+                count.map(|n| store.row_length = n).is_some()
+            }
+            GL_UNPACK_SKIP_ROWS | GL_PACK_SKIP_ROWS => count.map(|n| store.skip_rows = n).is_some(),
+            GL_UNPACK_SKIP_PIXELS | GL_PACK_SKIP_PIXELS => {
+                count.map(|n| store.skip_pixels = n).is_some()
+            }
+            GL_UNPACK_IMAGE_HEIGHT | GL_PACK_IMAGE_HEIGHT => {
+                count.map(|n| store.image_height = n).is_some()
+            }
+            GL_UNPACK_SKIP_IMAGES | GL_PACK_SKIP_IMAGES => {
+                count.map(|n| store.skip_images = n).is_some()
+            }
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return;
+            }
+        };
+        if !ok {
+            self.set_error(GL_INVALID_VALUE);
         }
     }
 

@@ -11,7 +11,8 @@ use crate::Context;
 
 impl Context {
     /// glReadPixels into `out`, rows packed per GL_PACK_ALIGNMENT, bottom
-    /// row first (GL 2.1 §4.3.2). Pixels outside the framebuffer read as 0.
+    /// row first (GL 2.1 §4.3.2; the packed layout: the caller applies the
+    /// other glPixelStore modes, [`crate::pixel_store`]). Pixels outside the framebuffer read as 0.
     #[allow(clippy::too_many_arguments)]
     pub fn read_pixels(
         &mut self,
@@ -82,7 +83,7 @@ impl Context {
             }
         }
         let (w, h) = (w as usize, h as usize);
-        let align = self.st.pack_alignment as usize;
+        let align = self.st.pack.alignment;
         crate::pixel_transfer::pack_into(&block, w, h, format, ty, align, out);
     }
 

@@ -204,8 +204,9 @@ pub struct State {
     /// Per unit: S, T, R, Q.
     pub tex_gen: [[TexGen; 4]; MAX_TEXTURE_UNITS],
     pub active_texture: u32,
-    pub unpack_alignment: i32,
-    pub pack_alignment: i32,
+    /// glPixelStore's unpack and pack modes.
+    pub unpack: crate::pixel_store::PixelStore,
+    pub pack: crate::pixel_store::PixelStore,
     pub draw_buffers: Vec<u32>,
     pub read_buffer: u32,
     /// glClampColor's CLAMP_VERTEX_COLOR, CLAMP_FRAGMENT_COLOR and
@@ -298,8 +299,8 @@ impl State {
                 gen([0.0; 4]),
             ]; MAX_TEXTURE_UNITS],
             active_texture: 0,
-            unpack_alignment: 4,
-            pack_alignment: 4,
+            unpack: Default::default(),
+            pack: Default::default(),
             draw_buffers: vec![GL_BACK],
             read_buffer: GL_BACK,
             clamp_vertex_color: GL_TRUE,

@@ -7,8 +7,10 @@
 //! filters) and the queries (glGetTexParameter*,
 //! glGetTexLevelParameteriv, glGetTexImage).
 //!
-//! Contract: every image specification unpacks the client image through
-//! [`crate::pixel_transfer`] into the stored texel form of
+//! Contract: images are given and returned in the packed layout at the
+//! unpack / pack alignment (the caller applies the other glPixelStore
+//! modes: [`crate::pixel_store`]); every image specification unpacks the
+//! client image through [`crate::pixel_transfer`] into the stored texel form of
 //! [`crate::texture_format`]; with GL_GENERATE_MIPMAP set, a change to the
 //! base level regenerates the levels below it ([`crate::mipmap`]). Each
 //! change bumps the texture's generation, which keys the draw path's
@@ -316,7 +318,7 @@ impl Context {
             self.set_error(GL_OUT_OF_MEMORY);
             return;
         }
-        let alignment = self.st.unpack_alignment as usize;
+        let alignment = self.st.unpack.alignment;
         let texels = unpack_image(data, w, h, d, format, ty, internal, alignment);
         let unit = self.st.active_texture as usize;
         let Some(tex) = self.objects.bound_texture_mut(unit, bind_target) else {
@@ -371,7 +373,7 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
-        let alignment = self.st.unpack_alignment as usize;
+        let alignment = self.st.unpack.alignment;
         let unit = self.st.active_texture as usize;
         let internal = self
             .objects
@@ -680,7 +682,7 @@ impl Context {
             self.set_error(GL_INVALID_ENUM);
             return Vec::new();
         };
-        let align = self.st.pack_alignment.max(1) as usize;
+        let align = self.st.pack.alignment.max(1);
         let Some(img) = self.level_image(target, level, false) else {
             return Vec::new();
         };
