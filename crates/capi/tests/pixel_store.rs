@@ -235,3 +235,45 @@ fn bitmaps_least_significant_bit_first() {
         OSMesaDestroyContext(ctx);
     }
 }
+
+#[test]
+fn bitmaps_at_whole_raster_positions_start_there() {
+    // In a 340x200 orthographic window, glRasterPos2f(20, 30) comes out a
+    // few ulps below x = 20 after the transform; the bitmap still starts
+    // at pixel column 20 (and row 30).
+    unsafe {
+        let (w, h) = (340, 200);
+        let mut buf = vec![0u8; w * h * 4];
+        let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, null_mut());
+        let ok = OSMesaMakeCurrent(
+            ctx,
+            buf.as_mut_ptr() as *mut c_void,
+            GL_UNSIGNED_BYTE,
+            w as i32,
+            h as i32,
+        );
+        assert_eq!(ok, OSMesa::GL_TRUE);
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glOrtho(0.0, w as f64, 0.0, h as f64, -1.0, 1.0);
+        glColor4f(1.0, 1.0, 1.0, 1.0);
+        for x in 0..w {
+            glRasterPos2f(x as f32, 30.0);
+            let one = [0x80u8];
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            glBitmap(1, 1, 0.0, 0.0, 0.0, 0.0, one.as_ptr());
+        }
+        glFinish();
+        let row: Vec<bool> = (0..w).map(|x| buf[(30 * w + x) * 4] == 255).collect();
+        assert!(
+            row.iter().all(|&lit| lit),
+            "unlit columns: {:?}",
+            row.iter()
+                .enumerate()
+                .filter(|(_, &l)| !l)
+                .map(|(x, _)| x)
+                .collect::<Vec<_>>()
+        );
+        OSMesaDestroyContext(ctx);
+    }
+}

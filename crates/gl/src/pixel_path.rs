@@ -68,6 +68,10 @@ impl Default for RasterPos {
     }
 }
 
+/// How far below a whole pixel a bitmap's corner may lie and still start
+/// at that pixel ([`Context::bitmap`]).
+const BITMAP_SNAP: f64 = 1e-4;
+
 /// A rectangle of pixel values ready to draw.
 enum Block {
     Color(Vec<[f32; 4]>),
@@ -440,8 +444,15 @@ impl Context {
         }
         if let (Some(bits), true) = (bits, w > 0 && h > 0) {
             let stride = bitmap_row_bytes(w as usize, alignment);
-            let x0 = (self.raster.window[0] as f64 - xorig as f64).floor();
-            let y0 = (self.raster.window[1] as f64 - yorig as f64).floor();
+            // (x_ll, y_ll) = (floor(x_rp - x_bo), floor(y_rp - y_bo)) (GL 2.1
+            // §3.7) of a raster position that carries the rounding of the
+            // vertex transform: one meant to be a whole pixel (text drawn
+            // at glRasterPos2i) can come out an ulp below it, and the floor
+            // would then move the bitmap a whole pixel. Positions within
+            // BITMAP_SNAP below a whole number count as that number, as
+            // llvmpipe does.
+            let x0 = (self.raster.window[0] as f64 - xorig as f64 + BITMAP_SNAP).floor();
+            let y0 = (self.raster.window[1] as f64 - yorig as f64 + BITMAP_SNAP).floor();
             let finite = x0.is_finite() && y0.is_finite();
             let (z, color) = (self.raster.window[2], self.raster.color);
             // (draw_target moves the framebuffer out: only when drawing.)
