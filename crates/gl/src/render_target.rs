@@ -24,6 +24,50 @@ pub(crate) struct Target {
     pub(crate) draw_buffers: [Option<usize>; 8],
 }
 
+/// What a render target writes back into one attached image.
+enum Pixels<'a> {
+    /// A raster colour buffer, pixel for texel.
+    Color(&'a ColorBuffer),
+    /// RGBA values (depth as `[d, d, d, 1]`), pixel for texel.
+    Values(Vec<[f32; 4]>),
+    /// Stencil indices (renderbuffers only).
+    Stencil(Vec<u8>),
+}
+
+impl Pixels<'_> {
+    /// Converts the pixels into the texels `dst` of internal format `fmt`
+    /// ([`crate::texture_format::texel_for`]; 8-bit colour buffers by the
+    /// same results' table when the format allows).
+    fn store(&self, dst: &mut [[f32; 4]], fmt: i32) {
+        use crate::texture_format::{texel_for, Unorm8Texels};
+        match self {
+            Pixels::Color(ColorBuffer::Rgba8(v)) => match Unorm8Texels::new(fmt) {
+                Some(conv) => {
+                    for (d, s) in dst.iter_mut().zip(v.iter()) {
+                        *d = conv.texel(*s);
+                    }
+                }
+                None => {
+                    for (d, s) in dst.iter_mut().zip(v.iter()) {
+                        *d = texel_for(s.map(raster::unorm8_to_float), fmt);
+                    }
+                }
+            },
+            Pixels::Color(ColorBuffer::Rgba32F(v)) => {
+                for (d, s) in dst.iter_mut().zip(v.iter()) {
+                    *d = texel_for(*s, fmt);
+                }
+            }
+            Pixels::Values(v) => {
+                for (d, s) in dst.iter_mut().zip(v.iter()) {
+                    *d = texel_for(*s, fmt);
+                }
+            }
+            Pixels::Stencil(_) => {}
+        }
+    }
+}
+
 impl Context {
     /// The framebuffer the next draw or clear writes.
     pub(crate) fn draw_target(&mut self) -> Option<Target> {
@@ -177,22 +221,19 @@ impl Context {
         }
     }
 
-    fn attachment_texels(&self, a: &Attachment) -> Vec<[f32; 4]> {
+    fn attachment_texels(&self, a: &Attachment) -> &[[f32; 4]] {
         match *a {
             Attachment::Texture { .. } => self
                 .attached_image(a)
                 .and_then(|(img, (start, w, h))| {
-                    img.texels
-                        .get(start..start + w as usize * h as usize)
-                        .map(|t| t.to_vec())
+                    img.texels.get(start..start + w as usize * h as usize)
                 })
                 .unwrap_or_default(),
             Attachment::Renderbuffer(rb) => self
                 .objects
                 .renderbuffers
                 .get(&rb)
-                .map(|r| r.texels.clone())
-                .unwrap_or_default(),
+                .map_or(&[], |r| r.texels.as_slice()),
         }
     }
 
@@ -212,9 +253,7 @@ impl Context {
             else {
                 continue;
             };
-            let n = t.fb.width as usize * t.fb.height as usize;
-            let px: Vec<[f32; 4]> = (0..n).map(|p| buf.get(p)).collect();
-            self.write_attachment(&att, px, None);
+            self.write_attachment(&att, Pixels::Color(buf));
         }
         if let (Some(att), Some(depth)) = (f.depth, t.fb.depth.as_ref()) {
             let px: Vec<[f32; 4]> = depth
@@ -224,13 +263,13 @@ impl Context {
                     [d, d, d, 1.0]
                 })
                 .collect();
-            self.write_attachment(&att, px, None);
+            self.write_attachment(&att, Pixels::Values(px));
         }
         if let (Some(att @ Attachment::Renderbuffer(_)), Some(st)) =
             (f.stencil, t.fb.stencil.as_ref())
         {
             if f.depth != Some(att) {
-                self.write_attachment(&att, Vec::new(), Some(st.clone()));
+                self.write_attachment(&att, Pixels::Stencil(st.clone()));
             } else if let Attachment::Renderbuffer(rb) = att {
                 if let Some(r) = self.objects.renderbuffers.get_mut(&rb) {
                     r.stencil = st.clone();
@@ -239,7 +278,7 @@ impl Context {
         }
     }
 
-    fn write_attachment(&mut self, a: &Attachment, px: Vec<[f32; 4]>, stencil: Option<Vec<u8>>) {
+    fn write_attachment(&mut self, a: &Attachment, px: Pixels<'_>) {
         match *a {
             Attachment::Texture {
                 texture,
@@ -261,21 +300,15 @@ impl Context {
                 {
                     let fmt = img.internal_format as i32;
                     let slice = img.texels.get_mut(start..).unwrap_or_default();
-                    for (d, s) in slice.iter_mut().zip(px) {
-                        *d = crate::texture_format::texel_for(s, fmt);
-                    }
+                    px.store(slice, fmt);
                     t.generation += 1;
                 }
             }
             Attachment::Renderbuffer(rb) => {
                 if let Some(r) = self.objects.renderbuffers.get_mut(&rb) {
-                    if let Some(s) = stencil {
-                        r.stencil = s;
-                    } else {
-                        let fmt = r.internal_format as i32;
-                        for (d, s) in r.texels.iter_mut().zip(px) {
-                            *d = crate::texture_format::texel_for(s, fmt);
-                        }
+                    match px {
+                        Pixels::Stencil(s) => r.stencil = s,
+                        px => px.store(&mut r.texels, r.internal_format as i32),
                     }
                 }
             }

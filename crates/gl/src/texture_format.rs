@@ -302,9 +302,7 @@ pub fn texel_for(rgba: [f32; 4], internal: i32) -> [f32; 4] {
             internal,
         );
     }
-    let bits = format_bits(internal);
-    let q = |x: f32| quantize(x, bits);
-    let [r, g, b, a] = rgba;
+    let [r, g, b, _] = rgba;
     match internal as u32 {
         GL_R11F_G11F_B10F => {
             return [small_float(r, 6), small_float(g, 6), small_float(b, 5), 1.0];
@@ -315,21 +313,88 @@ pub fn texel_for(rgba: [f32; 4], internal: i32) -> [f32; 4] {
         }
         _ => {}
     }
-    match base_format(internal).unwrap_or(GL_RGBA) {
-        GL_ALPHA => [0.0, 0.0, 0.0, q(a)],
-        GL_LUMINANCE => [q(r), q(r), q(r), 1.0],
-        GL_LUMINANCE_ALPHA => [q(r), q(r), q(r), q(a)],
-        GL_INTENSITY => [q(r); 4],
-        GL_RED => [q(r), 0.0, 0.0, 1.0],
-        GL_RG => [q(r), q(g), 0.0, 1.0],
-        GL_RGB => [q(r), q(g), q(b), 1.0],
-        GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL => {
-            // Depth is always clamped to [0, 1] (GL 2.1 §3.8.1).
-            let d = quantize(r, bits);
-            let d = if d.is_nan() { 0.0 } else { d.clamp(0.0, 1.0) };
-            [d, d, d, 1.0]
+    let bits = format_bits(internal);
+    let base = base_format(internal).unwrap_or(GL_RGBA);
+    if matches!(base, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL) {
+        // Depth is always clamped to [0, 1] (GL 2.1 §3.8.1).
+        let d = quantize(r, bits);
+        let d = if d.is_nan() { 0.0 } else { d.clamp(0.0, 1.0) };
+        return [d, d, d, 1.0];
+    }
+    channel_sources(base).map(|c| match c {
+        Channel::Of(i) => quantize(rgba[i], bits),
+        Channel::Zero => 0.0,
+        Channel::One => 1.0,
+    })
+}
+
+/// What a stored channel of a colour format holds ([`texel_for`]).
+#[derive(Clone, Copy)]
+enum Channel {
+    /// The (quantized) value of an RGBA component.
+    Of(usize),
+    Zero,
+    One,
+}
+
+/// Where each channel of a texel of the (non-depth) base format `base`
+/// comes from (GL 2.1 Table 3.20).
+fn channel_sources(base: u32) -> [Channel; 4] {
+    use Channel::{Of, One, Zero};
+    match base {
+        GL_ALPHA => [Zero, Zero, Zero, Of(3)],
+        GL_LUMINANCE => [Of(0), Of(0), Of(0), One],
+        GL_LUMINANCE_ALPHA => [Of(0), Of(0), Of(0), Of(3)],
+        GL_INTENSITY => [Of(0); 4],
+        GL_RED => [Of(0), Zero, Zero, One],
+        GL_RG => [Of(0), Of(1), Zero, One],
+        GL_RGB => [Of(0), Of(1), Of(2), One],
+        _ => [Of(0), Of(1), Of(2), Of(3)],
+    }
+}
+
+/// [`texel_for`] over 8-bit unsigned normalized values (a raster colour
+/// buffer's, read as [`raster::unorm8_to_float`] reads them), by table:
+/// for the formats whose channels convert one by one (not integer, depth,
+/// packed-float or shared-exponent formats). Every result is
+/// [`texel_for`]'s own: the table holds its quantization of each of the
+/// 256 values.
+pub struct Unorm8Texels {
+    sources: [Channel; 4],
+    table: [f32; 256],
+}
+
+impl Unorm8Texels {
+    /// The converter for `internal`, or None for a format it does not
+    /// cover.
+    pub fn new(internal: i32) -> Option<Unorm8Texels> {
+        let special = matches!(internal as u32, GL_R11F_G11F_B10F | GL_RGB9_E5);
+        let base = base_format(internal).unwrap_or(GL_RGBA);
+        if is_integer_format(internal)
+            || special
+            || matches!(base, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL)
+        {
+            return None;
         }
-        _ => [q(r), q(g), q(b), q(a)],
+        let bits = format_bits(internal);
+        let mut table = [0f32; 256];
+        for (k, t) in table.iter_mut().enumerate() {
+            *t = quantize(raster::unorm8_to_float(k as u8), bits);
+        }
+        Some(Unorm8Texels {
+            sources: channel_sources(base),
+            table,
+        })
+    }
+
+    /// The stored texel of the 8-bit RGBA value `px`.
+    #[inline]
+    pub fn texel(&self, px: [u8; 4]) -> [f32; 4] {
+        self.sources.map(|c| match c {
+            Channel::Of(i) => self.table[px[i] as usize],
+            Channel::Zero => 0.0,
+            Channel::One => 1.0,
+        })
     }
 }
 
@@ -365,5 +430,49 @@ mod tests {
             GL_R11F_G11F_B10F as i32,
         );
         assert_eq!(t[0], 3.0 * 2f32.powi(-20));
+    }
+
+    #[test]
+    fn unorm8_table_gives_texel_for_results() {
+        let formats = [
+            GL_RGBA8,
+            GL_RGBA,
+            GL_RGB8,
+            GL_RGB5_A1,
+            GL_RGBA4,
+            GL_R3_G3_B2,
+            GL_RGB10_A2,
+            GL_RGBA16,
+            GL_ALPHA8,
+            GL_LUMINANCE8,
+            GL_LUMINANCE8_ALPHA8,
+            GL_INTENSITY8,
+            GL_R8,
+            GL_RG8,
+            GL_RGBA16F,
+            GL_RGBA32F,
+            GL_SRGB8_ALPHA8,
+            GL_R16F,
+        ];
+        for f in formats {
+            let conv = Unorm8Texels::new(f as i32).unwrap_or_else(|| panic!("{f:#x}"));
+            for k in 0..=255u8 {
+                let px = [k, 255 - k, k / 3, k.wrapping_mul(7)];
+                let want = texel_for(px.map(raster::unorm8_to_float), f as i32);
+                assert_eq!(
+                    conv.texel(px).map(f32::to_bits),
+                    want.map(f32::to_bits),
+                    "{f:#x} {px:?}"
+                );
+            }
+        }
+        for f in [
+            GL_RGBA8UI,
+            GL_DEPTH_COMPONENT24,
+            GL_R11F_G11F_B10F,
+            GL_RGB9_E5,
+        ] {
+            assert!(Unorm8Texels::new(f as i32).is_none(), "{f:#x}");
+        }
     }
 }
