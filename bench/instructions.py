@@ -41,14 +41,24 @@ ROOT = os.path.dirname(HERE)
 
 
 def run_callgrind(spec, lib, frames, out):
-    env = dict(os.environ, PYOPENGL_PLATFORM="osmesa", LD_LIBRARY_PATH=lib,
-               SHADERBOX_THREADS="1", LP_NUM_THREADS="1")
+    """Runs the scene once under callgrind with one thread, on the
+    libOSMesa.so of directory `lib` (None: the system's, i.e. Mesa's)."""
+    env = dict(os.environ, PYOPENGL_PLATFORM="osmesa", SHADERBOX_THREADS="1", LP_NUM_THREADS="1")
+    env.pop("LD_LIBRARY_PATH", None)
+    if lib:
+        env["LD_LIBRARY_PATH"] = lib
     cmd = ["valgrind", "--tool=callgrind", "--dump-instr=yes",
            f"--callgrind-out-file={out}", sys.executable,
            os.path.join(HERE, "scene.py"), spec, "--frames", str(frames), "--budget", "1"]
     p = subprocess.run(cmd, env=env, capture_output=True, text=True)
     if p.returncode != 0 or not os.path.exists(out):
         raise SystemExit(f"callgrind run failed:\n{p.stderr[-2000:]}")
+
+
+def is_generated(fn):
+    """Whether a callgrind function name is generated code: it has no
+    symbol, so callgrind names it by its address."""
+    return re.fullmatch(r"0x[0-9a-fA-F]+", fn) is not None
 
 
 def position(token, previous):
@@ -150,8 +160,7 @@ def main():
     totals = {fn: sum(c.values()) for fn, c in costs.items()}
     mine = {fn: n for fn, n in totals.items()
             if "::" in fn and not fn.startswith(("core::", "alloc::", "std::"))}
-    # Native shader code has no symbol: callgrind names it by address.
-    jit = sum(n for fn, n in totals.items() if re.fullmatch(r"0x[0-9a-fA-F]+", fn))
+    jit = sum(n for fn, n in totals.items() if is_generated(fn))
     print(f"{args.spec}: instructions per {args.per:g} (self cost)")
     print(f"{sum(mine.values()) / args.per:14.1f}  in this repository's functions")
     print(f"{jit / args.per:14.1f}  in generated code (shaders' native code; named by address)")

@@ -119,7 +119,7 @@ def machine():
     return f"{os.cpu_count()}-core {model}{mem}, {platform.system()} {platform.release()}"
 
 
-def run_scene(spec, impl, libdir, threads, frames, budget, out):
+def run_scene(spec, impl, libdir, threads, frames, budget, out, extra=()):
     env = dict(os.environ, PYOPENGL_PLATFORM="osmesa")
     env.pop("LD_LIBRARY_PATH", None)
     if impl == "shaderbox":
@@ -128,7 +128,7 @@ def run_scene(spec, impl, libdir, threads, frames, budget, out):
     else:
         env["LP_NUM_THREADS"] = str(threads)
     cmd = [sys.executable, os.path.join(HERE, "scene.py"), spec, "--frames", str(frames),
-           "--budget", str(budget), "--out", out]
+           "--budget", str(budget), "--out", out, *extra]
     r = subprocess.run(cmd, env=env, capture_output=True, text=True)
     lines = [ln for ln in r.stdout.splitlines() if ln.startswith("{")]
     if r.returncode != 0 or not lines:
