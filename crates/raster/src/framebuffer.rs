@@ -1,7 +1,8 @@
-//! Framebuffers: color buffers (RGBA8 unorm or RGBA32F), a 24-bit depth
-//! buffer and an 8-bit stencil buffer; pixel reads, and tile copies for
-//! the draw's tile tasks. Clears, which run in bands of rows on the
-//! workers, are `crate::clear`.
+//! Framebuffers: color buffers (RGBA8 unorm or RGBA32F), a depth buffer
+//! of 24-bit fixed-point values (of 16-bit precision for a 16-bit
+//! attachment: [`DepthFormat`]) and an 8-bit stencil buffer; pixel
+//! reads, and tile copies for the draw's tile tasks. Clears, which run in
+//! bands of rows on the workers, are `crate::clear`.
 //!
 //! Row 0 is the bottom row (GL window coordinates); pixel (x, y) lives at
 //! index `y * width + x`.
@@ -204,7 +205,8 @@ pub struct Framebuffer {
     /// The color buffers; `PipelineState::draw_buffers` selects which
     /// fragment output goes where.
     pub color: Vec<ColorBuffer>,
-    /// 24-bit depth values in [0, 2^24 - 1].
+    /// 24-bit depth values in [0, 2^24 - 1] (for
+    /// [`DepthFormat::Bits16`], only the forms of `k / 65535`).
     pub depth: Option<Vec<u32>>,
     /// The precision of `depth`'s values.
     pub depth_format: DepthFormat,
