@@ -1064,6 +1064,40 @@ mod tests {
         assert_eq!(ctx.get_uniformfv(p, x), vec![7.0]);
     }
 
+    /// A uniform no stage reads or initializes is not active (as Mesa's
+    /// linker drops it): no index, no location, glUniform on its -1
+    /// ignored; one read by the other stage only, or unread with an
+    /// initializer, is active.
+    #[test]
+    fn uniforms_no_stage_reads_are_inactive() {
+        let mut ctx = Context::new(8, 8);
+        let p = program(
+            &mut ctx,
+            "#version 120\nuniform vec4 shared; uniform float vs_unused; uniform float init = 2.0;\nattribute vec4 pos;\nvoid main() { gl_Position = pos; }",
+            "uniform vec4 shared; uniform sampler2D u_texture; uniform vec4 color;\nvoid main() { gl_FragColor = color + shared; }",
+        );
+        assert_eq!(
+            ctx.get_programiv(p, GL_LINK_STATUS),
+            1,
+            "{}",
+            ctx.get_program_info_log(p)
+        );
+        assert_eq!(ctx.get_programiv(p, GL_ACTIVE_UNIFORMS), 3);
+        let mut names: Vec<String> = (0..3)
+            .map(|i| ctx.get_active_uniform(p, i).unwrap().name)
+            .collect();
+        names.sort();
+        assert_eq!(names, ["color", "init", "shared"]);
+        assert_eq!(ctx.get_uniform_location(p, "u_texture"), -1);
+        assert_eq!(ctx.get_uniform_location(p, "vs_unused"), -1);
+        assert!(ctx.get_uniform_location(p, "shared") >= 0);
+        ctx.use_program(p);
+        ctx.uniform_1i(-1, 3);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        assert_eq!(ctx.get_active_uniform(p, 3), None);
+        assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    }
+
     #[test]
     fn compile_link_and_set_uniforms() {
         let mut ctx = Context::new(8, 8);

@@ -182,6 +182,16 @@ impl Context {
             f.depth.is_some(),
             f.stencil.is_some(),
         );
+        // A 16-bit depth attachment is a 16-bit depth buffer (GL 3.0
+        // §4.4.2.2: its required formats allocate exactly their sizes), so
+        // depth tests within a draw compare 16-bit values.
+        let depth16 = f
+            .depth
+            .and_then(|x| self.attachment_info(&x))
+            .is_some_and(|i| i.2 == GL_DEPTH_COMPONENT16);
+        if depth16 {
+            fb.depth_format = raster::DepthFormat::Bits16;
+        }
         for (i, &a) in attachments.iter().enumerate() {
             let Some(att) = f.color[a] else { continue };
             let texels = self.attachment_texels(&att);

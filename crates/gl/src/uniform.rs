@@ -116,9 +116,25 @@ pub enum UniformError {
 
 impl UniformTable {
     /// Builds the table from the linked stages' modules: every uniform
-    /// global, vertex stage first, each name once.
+    /// global, vertex stage first, each name once. Every one gets storage;
+    /// only those some stage reads or initializes are active (leaves and
+    /// locations): GL 2.1 §2.15.3 leaves it to the implementation to call
+    /// an unused uniform active, and Mesa's linker drops one no stage
+    /// reads unless a stage gives it an initializer, which programs
+    /// written against it expect (vispy warns of "unset variables" for an
+    /// active uniform it never sets; piglit's uniform-initializer tests
+    /// set unread initialized ones).
     pub fn build(stages: &[&Module]) -> UniformTable {
         let mut t = UniformTable::default();
+        let active = |name: &str| {
+            stages.iter().any(|m| {
+                m.globals.iter().any(|g| {
+                    g.storage == Storage::Uniform
+                        && g.name == name
+                        && (g.read || g.init.is_some() || g.location.is_some())
+                })
+            })
+        };
         for (si, m) in stages.iter().enumerate() {
             for g in &m.globals {
                 if g.storage != Storage::Uniform {
@@ -158,7 +174,7 @@ impl UniformTable {
                     words: n,
                     builtin: g.builtin,
                 });
-                if !g.builtin {
+                if !g.builtin && active(&g.name) {
                     let mut leaves = Vec::new();
                     collect_leaves(&g.name, g.ty, offset, &m.structs, &mut leaves, 0);
                     for mut leaf in leaves {

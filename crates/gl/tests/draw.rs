@@ -543,3 +543,57 @@ fn draws_beyond_the_vertex_limits_are_out_of_memory() {
     ctx.draw_arrays(GL_POINTS, 0, 4);
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
 }
+
+/// Two quads in one draw whose depths differ by less than a 16-bit step
+/// (0.99968 and 0.9996803, five 24-bit steps apart), nearer one second,
+/// into a framebuffer object whose depth attachment has
+/// `depth_format`; with GL_LESS, the second quad's colour where it wins.
+fn second_of_close_quads(depth_format: u32) -> [f32; 4] {
+    let mut ctx = Context::new(8, 8);
+    let rb = ctx.gen_renderbuffers(2);
+    ctx.bind_renderbuffer(GL_RENDERBUFFER, rb[0]);
+    ctx.renderbuffer_storage(GL_RENDERBUFFER, GL_RGBA8, 8, 8);
+    ctx.bind_renderbuffer(GL_RENDERBUFFER, rb[1]);
+    ctx.renderbuffer_storage(GL_RENDERBUFFER, depth_format, 8, 8);
+    let fb = ctx.gen_framebuffers(1)[0];
+    ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+    ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+    ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+    program(
+        &mut ctx,
+        Some("void main() { gl_Position = gl_Vertex; gl_FrontColor = gl_Color; }"),
+        Some("void main() { gl_FragColor = gl_Color; }"),
+    );
+    ctx.clear_depth(1.0);
+    ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    ctx.enable(GL_DEPTH_TEST);
+    ctx.depth_func(GL_LESS);
+    // Window z = (ndc + 1) / 2.
+    let ndc = |z: f32| 2.0 * z - 1.0;
+    ctx.begin(GL_QUADS);
+    for (z, color) in [(0.9996803f32, [1.0, 0.0, 0.0]), (0.99968, [0.0, 1.0, 0.0])] {
+        ctx.color_3f(color[0], color[1], color[2]);
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            ctx.vertex_3f(x, y, ndc(z));
+        }
+    }
+    ctx.end();
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(ctx.take_draw_error(), None);
+    pixel(&mut ctx, 4, 4)
+}
+
+/// GL 3.0 §4.4.2.2: a DEPTH_COMPONENT16 renderbuffer has exactly 16 bits,
+/// so within one draw the nearer quad ties with the farther one (and
+/// loses under GL_LESS), where 24 bits tell them apart.
+#[test]
+fn depth_component16_tests_at_16_bits() {
+    assert!(close(
+        second_of_close_quads(GL_DEPTH_COMPONENT24),
+        [0.0, 1.0, 0.0, 1.0]
+    ));
+    assert!(close(
+        second_of_close_quads(GL_DEPTH_COMPONENT16),
+        [1.0, 0.0, 0.0, 1.0]
+    ));
+}

@@ -6,7 +6,7 @@
 //! Here rather than in `crate::framebuffer` so that the framebuffer, a
 //! data type, does not depend on the thread scheduler.
 
-use crate::framebuffer::{depth_to_fixed, float_to_unorm8, ColorBuffer, Framebuffer};
+use crate::framebuffer::{float_to_unorm8, ColorBuffer, Framebuffer};
 use crate::state::Rect;
 use crate::workers::Workers;
 
@@ -121,7 +121,7 @@ impl Framebuffer {
         if !write {
             return;
         }
-        let k = depth_to_fixed(depth);
+        let k = self.depth_format.to_fixed(depth);
         let (rect, width) = (self.clip_rect(scissor), self.width);
         if let Some(d) = self.depth.as_mut() {
             Self::for_each_row(d, width, rect, workers, |row| row.fill(k));

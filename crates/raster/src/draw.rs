@@ -207,7 +207,7 @@ fn draw_vertices(
     } else {
         None
     };
-    let stage = FragmentStage::new(
+    let mut stage = FragmentStage::new(
         fs,
         fs_uniforms,
         textures,
@@ -217,6 +217,7 @@ fn draw_vertices(
         deferred,
         probe,
     );
+    stage.depth_format = fb.depth_format;
     if let Some(p) = probe {
         p.set_vertices(&vs_layout, &outputs, &vertex_of);
     }

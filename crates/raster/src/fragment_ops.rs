@@ -16,12 +16,12 @@ mod quick;
 mod stencil;
 mod wide;
 
-pub(crate) use depth::{depth_live_in, depth_to_fixed4};
+pub(crate) use depth::depth_live_in;
 pub(crate) use quick::{QuickOps, QuickTarget};
 pub(crate) use stencil::stencil_passes;
 pub(crate) use wide::unorm8_batch;
 
-use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
+use crate::framebuffer::{Framebuffer, MAX_DRAW_BUFFERS};
 
 /// The colours a fragment carries: one per fragment output (draw buffer
 /// slot), then [`SRC1`].
@@ -164,7 +164,7 @@ pub(crate) fn tests(
     let depth_pass = match (state.depth_test, fb.depth.as_mut()) {
         (Some(func), Some(d)) => match d.get_mut(index) {
             Some(stored) => {
-                let zf = depth_to_fixed(frag.z);
+                let zf = fb.depth_format.to_fixed(frag.z);
                 let pass = func.test(zf, *stored);
                 if pass && state.depth_mask {
                     *stored = zf;

@@ -1,7 +1,8 @@
-//! Framebuffers: color buffers (RGBA8 unorm or RGBA32F), a 24-bit depth
-//! buffer and an 8-bit stencil buffer; pixel reads, and tile copies for
-//! the draw's tile tasks. Clears, which run in bands of rows on the
-//! workers, are `crate::clear`.
+//! Framebuffers: color buffers (RGBA8 unorm or RGBA32F), a depth buffer
+//! of 24-bit fixed-point values (of 16-bit precision for a 16-bit
+//! attachment: [`DepthFormat`]) and an 8-bit stencil buffer; pixel
+//! reads, and tile copies for the draw's tile tasks. Clears, which run in
+//! bands of rows on the workers, are `crate::clear`.
 //!
 //! Row 0 is the bottom row (GL window coordinates); pixel (x, y) lives at
 //! index `y * width + x`.
@@ -144,6 +145,55 @@ pub fn depth_to_fixed(z: f32) -> u32 {
     unsafe { k.to_int_unchecked::<i32>() as u32 }
 }
 
+/// The precision of a depth buffer. Every depth buffer holds the 24-bit
+/// values of [`depth_to_fixed`]; a 16-bit one (a `GL_DEPTH_COMPONENT16`
+/// attachment, of which GL 3.0 §4.4.2.2 says requesting it "will allocate
+/// exactly the internal component sizes" of the format) holds only the
+/// 2^16 of them that are `k / 65535`, so that the depth test within a
+/// draw sees the steps of a 16-bit buffer (a fragment's depth rounded to
+/// 16 bits ties with a nearer one that 24 bits would keep apart).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DepthFormat {
+    #[default]
+    Bits24,
+    Bits16,
+}
+
+impl DepthFormat {
+    /// The stored form of window z `z` in a buffer of this precision.
+    #[inline(always)]
+    pub fn to_fixed(self, z: f32) -> u32 {
+        match self {
+            DepthFormat::Bits24 => depth_to_fixed(z),
+            DepthFormat::Bits16 => depth16_to_fixed(z),
+        }
+    }
+
+    /// [`DepthFormat::to_fixed`] of four depths (`z[k] as f32`).
+    #[inline(always)]
+    pub fn to_fixed4(self, z: [f64; 4]) -> [u32; 4] {
+        match self {
+            DepthFormat::Bits24 => z.map(|z| depth_to_fixed(z as f32)),
+            DepthFormat::Bits16 => z.map(|z| depth16_to_fixed(z as f32)),
+        }
+    }
+}
+
+/// A window z stored in a 16-bit depth buffer, in [`depth_to_fixed`]'s
+/// 24-bit form: the 16-bit value `k` as llvmpipe converts a depth to a
+/// 16-bit unorm (`z · 65535/65536` in f32, then plus 2^7 in f32: that
+/// sum's ulp is 2^-16, so the addition rounds `z · 65535` to the nearest
+/// integer, ties to even), then `depth_to_fixed(k / 65535)`, the value a
+/// 16-bit attachment's texel holds, so that storing the buffer in its
+/// attachment and loading it again keeps every value.
+#[allow(clippy::manual_clamp)]
+#[inline(always)]
+pub fn depth16_to_fixed(z: f32) -> u32 {
+    let x = z.max(0.0).min(1.0) * (65535.0 / 65536.0);
+    let k = ((x + 128.0) - 128.0) * 65536.0;
+    depth_to_fixed(k / 65535.0)
+}
+
 pub fn fixed_to_depth(k: u32) -> f32 {
     (k.min(DEPTH_MAX) as f64 / DEPTH_MAX as f64) as f32
 }
@@ -155,8 +205,11 @@ pub struct Framebuffer {
     /// The color buffers; `PipelineState::draw_buffers` selects which
     /// fragment output goes where.
     pub color: Vec<ColorBuffer>,
-    /// 24-bit depth values in [0, 2^24 - 1].
+    /// 24-bit depth values in [0, 2^24 - 1] (for
+    /// [`DepthFormat::Bits16`], only the forms of `k / 65535`).
     pub depth: Option<Vec<u32>>,
+    /// The precision of `depth`'s values.
+    pub depth_format: DepthFormat,
     pub stencil: Option<Vec<u8>>,
     /// Fragments that have passed the per-fragment tests up to and
     /// including the depth test (scissor, alpha, stencil, depth) in this
@@ -194,6 +247,7 @@ impl Framebuffer {
                 .map(|&f| ColorBuffer::new(f, len))
                 .collect(),
             depth: depth.then(|| vec![0; len]),
+            depth_format: DepthFormat::Bits24,
             stencil: stencil.then(|| vec![0; len]),
             samples_passed: 0,
         }
@@ -260,6 +314,7 @@ impl Framebuffer {
             depth: (self.depth.as_ref())
                 .filter(|_| depth)
                 .map(|d| rows(d, width, x0, y0, w, h)),
+            depth_format: self.depth_format,
             stencil: (self.stencil.as_ref())
                 .filter(|_| stencil)
                 .map(|s| rows(s, width, x0, y0, w, h)),
@@ -498,6 +553,40 @@ mod tests {
         assert_eq!(depth_to_fixed(at(2.5)), 2);
         assert_eq!(depth_to_fixed(at(3.5)), 4);
         assert_eq!(fixed_to_depth(DEPTH_MAX), 1.0);
+    }
+
+    /// A 16-bit buffer's values are the 24-bit forms of `k / 65535`: the
+    /// ends map to the 24-bit ends, a value already `k / 65535` (an
+    /// attachment's stored texel) keeps its form, depths within half a
+    /// 16-bit step share one value that 24 bits keep apart, and the
+    /// rounding is llvmpipe's (ties to even on `z · 65535/65536` in f32).
+    #[test]
+    fn depth16_conversion() {
+        let d16 = DepthFormat::Bits16;
+        assert_eq!(d16.to_fixed(0.0), 0);
+        assert_eq!(d16.to_fixed(1.0), DEPTH_MAX);
+        assert_eq!(d16.to_fixed(-1.0), 0);
+        assert_eq!(d16.to_fixed(f32::NAN), 0);
+        for k in [1u32, 2, 255, 256, 32767, 32768, 65534] {
+            let z = (k as f64 / 65535.0) as f32;
+            assert_eq!(d16.to_fixed(z), depth_to_fixed(z), "k = {k}");
+        }
+        // 0.99968 and 0.9996803 are 5 24-bit steps apart, and in the same
+        // 16-bit step.
+        let (a, b) = (0.99968f32, 0.9996803f32);
+        assert_ne!(depth_to_fixed(a), depth_to_fixed(b));
+        assert_eq!(d16.to_fixed(a), d16.to_fixed(b));
+        assert_eq!(DepthFormat::Bits24.to_fixed(a), depth_to_fixed(a));
+        // (k + ½) / 65536 · 65536/65535 · 65535/65536 lands on the tie
+        // k + ½ of z · 65535: even k keeps k, odd k goes up.
+        let tie = |k: u32| ((k as f64 + 0.5) / 65535.0) as f32;
+        let step = |k: u32| depth_to_fixed((k as f64 / 65535.0) as f32);
+        assert_eq!(d16.to_fixed(tie(2)), step(2));
+        assert_eq!(d16.to_fixed(tie(3)), step(4));
+        assert_eq!(
+            d16.to_fixed4([0.0, 1.0, a as f64, 2.0]),
+            [0, DEPTH_MAX, d16.to_fixed(a), DEPTH_MAX]
+        );
     }
 
     #[test]

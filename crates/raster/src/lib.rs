@@ -260,8 +260,9 @@ pub use assembly::Mode;
 pub use binning::TILE;
 pub use draw::{draw_emitted, draw_stages};
 pub use framebuffer::{
-    depth_to_fixed, fixed_to_depth, float_to_unorm8, unorm8_to_float, ColorBuffer, ColorFormat,
-    Framebuffer, DEPTH_MAX, MAX_DRAW_BUFFERS, MAX_FRAMEBUFFER_SIZE,
+    depth16_to_fixed, depth_to_fixed, fixed_to_depth, float_to_unorm8, unorm8_to_float,
+    ColorBuffer, ColorFormat, DepthFormat, Framebuffer, DEPTH_MAX, MAX_DRAW_BUFFERS,
+    MAX_FRAMEBUFFER_SIZE,
 };
 pub use geometry::shade_geometry;
 pub use pixel_fragments::{write_pixel_fragments, PixelFragment};

@@ -15,7 +15,7 @@
 use crate::assembly::Assembled;
 use crate::ex::{self, Batch, ExecError, PrintSink, Trace};
 use crate::fragment_ops::{self, Fragment};
-use crate::framebuffer::{depth_to_fixed, ColorBuffer, Framebuffer};
+use crate::framebuffer::{ColorBuffer, Framebuffer};
 use crate::linkage::VsLayout;
 use crate::prim::Prim;
 use crate::rasterize::WinVertex;
@@ -565,7 +565,7 @@ impl Probe {
         let mut f = self.fragment(prim, z);
         f.early_rejected = true;
         let before = PixelState::read(fb, index);
-        let zf = depth_to_fixed(z as f32);
+        let zf = fb.depth_format.to_fixed(z as f32);
         f.ops = Some(OpsProbe {
             fragment_depth: z as f32,
             fragment_depth_fixed: zf,
@@ -607,7 +607,7 @@ impl Probe {
         let before = PixelState::read(fb, index);
         let passed_all = fragment_ops::process(fb, origin, state, frag);
         let after = PixelState::read(fb, index);
-        let zf = depth_to_fixed(frag.z);
+        let zf = fb.depth_format.to_fixed(frag.z);
         let alpha = state.alpha_test.map(|(func, reference)| {
             let a = frag.colors[0][3];
             let a = if state.clamp_fragment_color {

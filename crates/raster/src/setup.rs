@@ -18,7 +18,7 @@ use glsl::ir::Interpolation;
 
 use crate::assembly::{first_vertex_provoking, primitive, small_polygon, Assembled, Mode};
 use crate::clip::{ClipVertex, Planes};
-use crate::framebuffer::{Framebuffer, DEPTH_MAX};
+use crate::framebuffer::{DepthFormat, Framebuffer, DEPTH_MAX};
 use crate::interpolate::{Plane, PrimPlanes};
 use crate::linkage::{FsLayout, VsLayout};
 use crate::prim::{plane_origin, Prim};
@@ -42,6 +42,9 @@ pub(crate) struct Setup<'a> {
     outputs: &'a [f32],
     planes: Planes,
     clip_rect: PixelRect,
+    /// 1 / r of §3.5.5 (r: the smallest resolvable difference of window
+    /// z in the target's depth buffer, one step of its fixed point).
+    depth_steps: f64,
     /// Viewport transform (px/2, ox, py/2, oy, (f-n)/2, (n+f)/2).
     vp: [f64; 6],
     probe: Option<&'a Probe>,
@@ -126,6 +129,10 @@ impl<'a> Setup<'a> {
             )
             .with_depth_clamp(state.depth_clamp),
             clip_rect,
+            depth_steps: match fb.depth_format {
+                DepthFormat::Bits24 => DEPTH_MAX as f64,
+                DepthFormat::Bits16 => 65535.0,
+            },
             vp: [
                 vw / 2.0,
                 lim(vp.x) + vw / 2.0,
@@ -516,7 +523,7 @@ impl Setup<'_> {
             let m = (1..win.len() - 1)
                 .find(|&i| fan(i).is_some())
                 .map_or(0.0, |i| max_depth_slope(&[win[0], win[i], win[i + 1]]));
-            m * po.factor as f64 + po.units as f64 / DEPTH_MAX as f64
+            m * po.factor as f64 + po.units as f64 / self.depth_steps
         } else {
             0.0
         };

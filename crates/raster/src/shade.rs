@@ -16,7 +16,7 @@
 
 use crate::ex::{Batch, ExecError, Textures, LANES};
 use crate::fragment_ops::{self, Fragment, QuickOps, QuickTarget, FRAG_COLORS, SRC1};
-use crate::framebuffer::{depth_to_fixed, Framebuffer, MAX_DRAW_BUFFERS};
+use crate::framebuffer::{DepthFormat, Framebuffer, MAX_DRAW_BUFFERS};
 use crate::interpolate::{Kind, Plane, QUAD_X, QUAD_Y, STRIP_X, STRIP_Y};
 use crate::linkage::{new_batch, FsLayout};
 use crate::prim::Prim;
@@ -32,9 +32,9 @@ mod deferred;
 /// The final window z of four pixels from their interpolated z and the
 /// primitive's polygon offset (offset, clamped), and its fixed point.
 #[inline(always)]
-fn window_depths(iz: &[f64; 4], offset: f64) -> ([f64; 4], [u32; 4]) {
+fn window_depths(iz: &[f64; 4], offset: f64, format: DepthFormat) -> ([f64; 4], [u32; 4]) {
     let z = iz.map(|iz| clamp01(iz + offset));
-    (z, fragment_ops::depth_to_fixed4(z))
+    (z, format.to_fixed4(z))
 }
 
 fn clamp01(z: f64) -> f64 {
@@ -52,7 +52,8 @@ pub(crate) struct Quad {
     live: u8,
     /// Final window z per pixel (offset and clamped).
     z: [f64; 4],
-    /// Those depths in fixed point (`depth_to_fixed(z as f32)`).
+    /// Those depths in the depth buffer's fixed point
+    /// (`DepthFormat::to_fixed(z as f32)`).
     zf: [u32; 4],
 }
 
@@ -67,10 +68,10 @@ impl Quad {
     /// its window z computed with `window_z` (else `z` and `zf` keep
     /// what they held: see [`FragmentStage::window_z`]).
     #[inline(always)]
-    fn set(&mut self, prim: &Prim, qx: i64, qy: i64, mask: u8, window_z: bool) {
+    fn set(&mut self, prim: &Prim, (qx, qy, mask): (i64, i64, u8), window_z: Option<DepthFormat>) {
         (self.x, self.y, self.live) = (qx, qy, mask);
-        if window_z {
-            (self.z, self.zf) = quad_depths(prim, (qx, qy));
+        if let Some(format) = window_z {
+            (self.z, self.zf) = quad_depths(prim, (qx, qy), format);
         }
     }
 }
@@ -78,9 +79,9 @@ impl Quad {
 /// The final window z of the quad at `(qx, qy)` of `prim` (its z plane,
 /// the polygon offset, clamped) and its fixed point.
 #[inline(always)]
-fn quad_depths(prim: &Prim, (qx, qy): (i64, i64)) -> ([f64; 4], [u32; 4]) {
+fn quad_depths(prim: &Prim, (qx, qy): (i64, i64), format: DepthFormat) -> ([f64; 4], [u32; 4]) {
     let (x, y) = prim.offsets((qx, qy), &QUAD_X, &QUAD_Y);
-    window_depths(&prim.planes.z_at(&x, &y), prim.z_offset)
+    window_depths(&prim.planes.z_at(&x, &y), prim.z_offset, format)
 }
 
 /// A quad waiting for its batch: its primitive (and that primitive's
@@ -103,12 +104,12 @@ impl<'p> Entry<'p> {
         index: u32,
         (qx, qy, mask): (i64, i64, u8),
         write: u8,
-        window_z: bool,
+        window_z: Option<DepthFormat>,
     ) {
         self.prim = Some(prim);
         self.index = index;
         self.write = write;
-        self.quad.set(prim, qx, qy, mask, window_z);
+        self.quad.set(prim, (qx, qy, mask), window_z);
     }
 }
 
@@ -256,6 +257,9 @@ pub(crate) struct FragmentStage<'a> {
     /// debugger's probe. Without them the batched and deferred loops
     /// leave it out.
     window_z: bool,
+    /// The precision of the target's depth buffer (its fixed-point form of
+    /// a window z).
+    pub depth_format: DepthFormat,
     /// Whether [`FragmentStage::shade_batched`] may run rows of four
     /// whole quads of a triangle as strips ([`FragmentStage::shade_strip`]):
     /// nothing reads a quad's 1/w or pixel position (no gl_FragCoord,
@@ -351,6 +355,7 @@ impl<'a> FragmentStage<'a> {
                 .collect(),
             early: layout.frag_depth.is_none(),
             window_z,
+            depth_format: DepthFormat::Bits24,
             strips,
             clear_outputs: probe.is_some() || !shader.writes_every_output(),
             prepared: shader.prepare(uniforms),
@@ -468,7 +473,7 @@ impl<'a> FragmentStage<'a> {
         prim.shape.quads_into(clip_to(prim, tile), quads);
         for &quad in quads.iter() {
             let Some(e) = slots.get_mut(*n) else { break };
-            e.set(prim, 0, quad, 0, true);
+            e.set(prim, 0, quad, 0, Some(self.depth_format));
             if self.early {
                 self.early_rejects(fb, origin, prim, &mut e.quad);
             }
@@ -514,7 +519,7 @@ impl<'a> FragmentStage<'a> {
                 // fixed-point depths known (and z needed only when the
                 // quad's lanes are tested one by one).
                 let zf = match self.layout.frag_depth {
-                    Some(_) => z().map(depth_to_fixed),
+                    Some(_) => z().map(|z| self.depth_format.to_fixed(z)),
                     None => quad.zf,
                 };
                 let (pass, index, inside) = target.test_quad_with((quad.x, quad.y), lanes, z, zf);

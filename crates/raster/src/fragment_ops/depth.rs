@@ -4,7 +4,6 @@
 //! SSE2 registers, elsewhere in scalar code, with the same results as
 //! the per-fragment test (tests compare them).
 
-use crate::framebuffer::depth_to_fixed;
 use crate::state::CompareFunc;
 
 /// The depth test of the lanes `lanes` of a quad whose stored depths are
@@ -190,12 +189,6 @@ pub(crate) fn depth_pass_mask(func: CompareFunc, zf: [u32; 4], stored: [u32; 4])
     }
 }
 
-/// [`depth_to_fixed`] of `z[k] as f32`, four at a time.
-#[inline(always)]
-pub(crate) fn depth_to_fixed4(z: [f64; 4]) -> [u32; 4] {
-    z.map(|z| depth_to_fixed(z as f32))
-}
-
 /// Two adjacent 4-byte pixels: `new[k]` where bit `k` of `bits` is set,
 /// else `old[k]`, selected with one 64-bit mask (no branch, which the
 /// compiler makes of a per-pixel select when it can sink the load of
@@ -215,5 +208,6 @@ pub(super) fn blend_pair(old: [[u8; 4]; 2], new: [[u8; 4]; 2], bits: u8) -> [[u8
 /// Depth test helper used by tests: does `z` pass `func` against `stored`?
 #[cfg(test)]
 pub(super) fn depth_passes(func: crate::state::CompareFunc, z: f32, stored: f32) -> bool {
+    use crate::framebuffer::depth_to_fixed;
     func.test(depth_to_fixed(z), depth_to_fixed(stored))
 }

@@ -10,7 +10,7 @@ use super::color::{blend_unit, clamp01, to_unorm8};
 use super::depth::{blend_pair, depth_live_in, depth_quad};
 #[cfg(target_arch = "x86_64")]
 use super::wide::{write_strip_avx2, write_strip_avx512};
-use crate::framebuffer::{depth_to_fixed, ColorBuffer, Framebuffer};
+use crate::framebuffer::{ColorBuffer, DepthFormat, Framebuffer};
 use crate::state::{Blend, BlendEquation, BlendFactor, CompareFunc, PipelineState, Rect};
 
 /// The per-fragment operations of the common states, for a batch of
@@ -145,6 +145,7 @@ impl QuickOps {
             scissor,
             depth,
             depth_write: self.depth_write,
+            depth_format: fb.depth_format,
             color,
             passed: &mut fb.samples_passed,
         }
@@ -160,6 +161,7 @@ pub(crate) struct QuickTarget<'f> {
     scissor: Option<Rect>,
     depth: Option<(CompareFunc, &'f mut [u32])>,
     depth_write: bool,
+    depth_format: DepthFormat,
     color: Option<(&'f mut [[u8; 4]], QuickBlend)>,
     passed: &'f mut u64,
 }
@@ -188,7 +190,7 @@ impl QuickTarget<'_> {
         let index = ly as usize * self.width as usize + lx as usize;
         if let Some((func, d)) = &mut self.depth {
             if let Some(stored) = d.get_mut(index) {
-                let zf = depth_to_fixed(z);
+                let zf = self.depth_format.to_fixed(z);
                 if !func.test(zf, *stored) {
                     return None;
                 }
@@ -217,7 +219,7 @@ impl QuickTarget<'_> {
 
     /// [`QuickTarget::test`] of the lanes `lanes` of the quad at window
     /// (x, y) (pixel `k` at `(x + (k & 1), y + (k >> 1))`, window z
-    /// `z[k]`, whose [`depth_to_fixed`] is `zf[k]`): the lanes that pass,
+    /// `z[k]`, whose [`DepthFormat::to_fixed`] is `zf[k]`): the lanes that pass,
     /// each pixel's index (meaningful for those), and whether the whole
     /// quad lies in the target (then every index is). The four pixels are
     /// distinct, so testing them together gives what testing them one

@@ -1,6 +1,6 @@
 use super::*;
 use super::{color::*, depth::*, quick::*, stencil::*, wide::*};
-use crate::framebuffer::{float_to_unorm8, ColorBuffer, ColorFormat};
+use crate::framebuffer::{depth_to_fixed, float_to_unorm8, ColorBuffer, ColorFormat};
 use crate::state::{
     Blend, BlendEquation, BlendFactor, CompareFunc, LogicOp, StencilFace, StencilOp, StencilState,
 };

@@ -191,7 +191,7 @@ impl<'a> FragmentStage<'a> {
             return Ok(());
         };
         // Inlined: this loop is compiled per instruction set.
-        e.set(prim, p, quad, 0, self.window_z);
+        e.set(prim, p, quad, 0, self.window_z.then_some(self.depth_format));
         if self.early {
             match &*sink {
                 // No stencil test (else no quick operations): the
@@ -329,7 +329,7 @@ impl<'a> FragmentStage<'a> {
             (q.x, q.y, q.live) = (qx + 2 * k as i64, qy, 0xf);
             if self.window_z {
                 let iz = [z[4 * k], z[4 * k + 1], z[4 * k + 2], z[4 * k + 3]];
-                (q.z, q.zf) = window_depths(&iz, prim.z_offset);
+                (q.z, q.zf) = window_depths(&iz, prim.z_offset, self.depth_format);
                 if self.early {
                     q.live = target.depth_live((q.x, q.y), q.live, q.zf);
                 }

@@ -152,7 +152,7 @@ impl<'a> FragmentStage<'a> {
                     }
                     let quad = &e.quad;
                     let zf = match self.layout.frag_depth {
-                        Some(_) => z.map(depth_to_fixed),
+                        Some(_) => z.map(|z| self.depth_format.to_fixed(z)),
                         None => quad.zf,
                     };
                     let (pass, index, _) = target.test_quad((quad.x, quad.y), alive, z, zf);
@@ -322,7 +322,7 @@ impl<'a> FragmentStage<'a> {
                         quads,
                         #[inline(always)]
                         |qx, qy, live| {
-                            let (z, zf) = quad_depths(prim, (qx, qy));
+                            let (z, zf) = quad_depths(prim, (qx, qy), self.depth_format);
                             // The f32 z only for a quad tested pixel by pixel.
                             let z = || z.map(|z| z as f32);
                             let (pass, index, _) = target.test_quad_with((qx, qy), live, z, zf);
@@ -351,7 +351,7 @@ impl<'a> FragmentStage<'a> {
                     prim.shape.quads_into(clip_to(prim, tile), quads);
                     for &quad in quads.iter() {
                         let Some(e) = pending.get_mut(*n) else { break };
-                        e.set(prim, p, quad, 0, self.window_z);
+                        e.set(prim, p, quad, 0, self.window_z.then_some(self.depth_format));
                         if early {
                             self.early_rejects(fb, origin, prim, &mut e.quad);
                             if e.quad.live == 0 {
@@ -413,7 +413,13 @@ impl<'a> FragmentStage<'a> {
                     let (qx, qy) = (origin.0 as i64 + lx as i64, origin.1 as i64 + ly as i64);
                     let Some(e) = pending.get_mut(*n) else { break };
                     self.prefetch_attrs(prim);
-                    e.set(prim, p, (qx, qy, live), write, window_z);
+                    e.set(
+                        prim,
+                        p,
+                        (qx, qy, live),
+                        write,
+                        window_z.then_some(self.depth_format),
+                    );
                     if let Some((count, spill)) = admit(pack_colors, n, &mut used, write) {
                         self.color_pass(&pass, fb, batch, &pending[..count])?;
                         if spill {

@@ -1,0 +1,20 @@
+#!/bin/sh
+# vispy's scene visuals (vispy_scenes.py), unmodified, on shaderbox's
+# libOSMesa and on Mesa's (Debian's libosmesa6) through OSMESA_LIBRARY,
+# each scene held by ../python/compare.py to its bound in vispy_bounds.txt
+# (the agreement recorded in docs/CONFORMANCE.md, "Real programs").
+#   crates/capi/tests/clients/vispy.sh [VENV]
+# VENV (default TARGET/clients-venv, shared with run.sh) gets vispy and
+# the pip packages of requirements.txt; PyOpenGL is vispy's way to 3D
+# textures (the volume scenes).
+set -e
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../../../.." && pwd)
+venv=${1:-${CARGO_TARGET_DIR:-$root/target}/clients-venv}
+[ -x "$venv/bin/python" ] || python3 -m venv "$venv"
+pip="$venv/bin/python -m pip install -q --disable-pip-version-check"
+$pip -r "$here/requirements.txt"
+$pip --no-deps PyOpenGL==3.1.10
+libdir=$(bash "$root/scripts/osmesa-libs.sh" --release)
+exec "$venv/bin/python" "$here/../python/compare.py" --bounds "$here/vispy_bounds.txt" \
+    "$libdir" "$here/vispy_scenes.py"
