@@ -14,6 +14,7 @@ mod geometry;
 mod integers;
 #[cfg(feature = "jit")]
 mod jit;
+mod packing;
 mod piglit;
 mod variants;
 

@@ -73,6 +73,9 @@ pub const EXTENSIONS_33: &[&str] = &[
     "GL_ARB_occlusion_query2",
     "GL_ARB_provoking_vertex",
     "GL_ARB_blend_func_extended",
+    // Its functions take and return `uint`s: GLSL 1.30 and later, which
+    // a 2.1 context's shaders cannot have.
+    "GL_ARB_shading_language_packing",
 ];
 
 fn b(x: bool) -> f64 {

@@ -730,6 +730,17 @@ const FUNCTIONS: &[(Where, &str)] = &[
     (Where::since(V330), "genType intBitsToFloat(genIType)"),
     (Where::since(V330), "genUType floatBitsToUint(genType)"),
     (Where::since(V330), "genType uintBitsToFloat(genUType)"),
+    // GL_ARB_shading_language_packing, every stage.
+    (PACKING, "uint packUnorm2x16(vec2)"),
+    (PACKING, "uint packSnorm2x16(vec2)"),
+    (PACKING, "uint packUnorm4x8(vec4)"),
+    (PACKING, "uint packSnorm4x8(vec4)"),
+    (PACKING, "vec2 unpackUnorm2x16(uint)"),
+    (PACKING, "vec2 unpackSnorm2x16(uint)"),
+    (PACKING, "vec4 unpackUnorm4x8(uint)"),
+    (PACKING, "vec4 unpackSnorm4x8(uint)"),
+    (PACKING, "uint packHalf2x16(vec2)"),
+    (PACKING, "vec2 unpackHalf2x16(uint)"),
     // §8.4 geometric functions
     (Where::ALL, "float length(genType)"),
     (Where::ALL, "float distance(genType, genType)"),
@@ -1004,6 +1015,10 @@ const LOD_FS_ARB: Where = Where {
 .needs(Extension::ArbShaderTextureLod);
 const GRAD_ARB: Where = Where::ALL.needs(Extension::ArbShaderTextureLod);
 const GRAD_ARB_RECT: Where = Where::since(V140).needs(Extension::ArbShaderTextureLod);
+
+/// GL_ARB_shading_language_packing's functions: from GLSL 1.30, the first
+/// version with `uint`.
+const PACKING: Where = Where::since(V130).needs(Extension::ArbShadingLanguagePacking);
 
 /// GL_EXT_texture_array's lookups; the bias forms in fragment shaders.
 const TEX_ARRAY: Where = Where::since(V130).needs(Extension::ExtTextureArray);
@@ -1505,10 +1520,11 @@ mod tests {
             ] {
                 let mut l = Language::new(v, true);
                 l.profile = p;
-                // And with the extension that adds lookups.
+                // And with the extensions that add built-in functions.
                 let mut e = l;
                 e.extensions.set(Extension::ExtTextureArray, true);
                 e.extensions.set(Extension::ArbShaderTextureLod, true);
+                e.extensions.set(Extension::ArbShadingLanguagePacking, true);
                 for s in [Stage::Vertex, Stage::Geometry, Stage::Fragment] {
                     out.push((l, s));
                     out.push((e, s));

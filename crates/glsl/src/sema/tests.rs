@@ -177,6 +177,64 @@ void main() {
 }
 
 #[test]
+fn packing_builtins_need_the_extension_and_glsl_130() {
+    const EXT: &str = "#extension GL_ARB_shading_language_packing : enable\n";
+    let s = vert(&format!(
+        "#version 130\n{EXT}uniform vec4 v; uniform uint u;
+const uint h = packHalf2x16(vec2(1.0, -2.0));
+const vec4 s = unpackSnorm4x8(0x7f81u);
+void main() {{
+    uint a = packUnorm2x16(v.xy) + packSnorm2x16(v.zw) + packUnorm4x8(v) + packSnorm4x8(v);
+    vec2 b = unpackUnorm2x16(u) + unpackSnorm2x16(u) + unpackHalf2x16(u);
+    gl_Position = vec4(b, float(a), 1.0) + unpackUnorm4x8(u) + s + vec4(h);
+}}
+"
+    ));
+    assert!(s.ok(), "{}", s.info_log());
+    let m = s.module.as_ref().unwrap();
+    let init = |name: &str| {
+        m.globals
+            .iter()
+            .find(|g| g.name == name)
+            .and_then(|g| g.init.clone())
+    };
+    use crate::ir::ConstScalar::{Float, Uint};
+    assert_eq!(init("h").unwrap().components, vec![Uint(0xc000_3c00)]);
+    assert_eq!(
+        init("s").unwrap().components,
+        vec![Float(-1.0), Float(1.0), Float(0.0), Float(0.0)]
+    );
+    // Every stage has them.
+    let g = compile(
+        &[&format!("#version 150\n{EXT}layout(points) in; layout(points, max_vertices = 1) out;\nvoid main() {{ gl_Position = vec4(unpackHalf2x16(packHalf2x16(vec2(0.5))), 0.0, 1.0); EmitVertex(); }}\n")],
+        &CompileOptions::new(Stage::Geometry),
+    );
+    assert!(g.ok(), "{}", g.info_log());
+    ok(frag(&format!(
+        "#version 130\n{EXT}uniform uint u;\nvoid main() {{ gl_FragColor = unpackUnorm4x8(u); }}\n"
+    )));
+    // Without the extension the names are not declared, and the note
+    // names the extension; the wrong argument type is no overload.
+    let s = frag("#version 130\nuniform vec2 v;\nvoid main() { gl_FragColor = vec4(float(packHalf2x16(v))); }\n");
+    fails(s, Code::Undeclared);
+    let s = frag("#version 330\nuniform vec2 v;\nvoid main() { gl_FragColor = vec4(float(packUnorm2x16(v))); }\n");
+    assert!(
+        s.info_log()
+            .contains("#extension GL_ARB_shading_language_packing"),
+        "{}",
+        s.info_log()
+    );
+    assert!(!frag(&format!("#version 130\n{EXT}void main() {{ gl_FragColor = vec4(float(packUnorm4x8(vec2(0.0)))); }}\n")).ok());
+    // 1.10 accepts the directive and defines the macro; its functions
+    // need `uint`, so they are 1.30's.
+    ok(frag(&format!("#version 110\n{EXT}#if GL_ARB_shading_language_packing != 1\n#error no macro\n#endif\nvoid main() {{ gl_FragColor = vec4(0.0); }}\n")));
+    assert!(!frag(&format!(
+        "#version 120\n{EXT}void main() {{ gl_FragColor = unpackUnorm4x8(0); }}\n"
+    ))
+    .ok());
+}
+
+#[test]
 fn empty_shaders_are_syntax_errors() {
     // GLSL's translation_unit is one or more external declarations.
     fails(frag(""), Code::Syntax);
