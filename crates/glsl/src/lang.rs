@@ -161,6 +161,11 @@ extensions! {
     // extension (its macro, `#extension`) is accepted in every version,
     // as the spec names no version and Mesa accepts it.
     ArbShadingLanguagePacking = "GL_ARB_shading_language_packing";
+    // `samplerCubeArray`, `samplerCubeArrayShadow`, `isamplerCubeArray`,
+    // `usamplerCubeArray` and their lookups under GLSL 1.30's names
+    // (`texture`, `textureLod`...), which exist from 1.30 on; the
+    // directive and macro are accepted in every version, as Mesa does.
+    ArbTextureCubeMapArray = "GL_ARB_texture_cube_map_array";
 }
 
 impl Extension {

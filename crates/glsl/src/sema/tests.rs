@@ -235,6 +235,50 @@ void main() {{
 }
 
 #[test]
+fn cube_map_array_samplers_need_their_extension() {
+    const EXT: &str = "#extension GL_ARB_texture_cube_map_array : require\n";
+    let body = "uniform samplerCubeArray s;
+uniform samplerCubeArrayShadow z;
+uniform isamplerCubeArray i;
+uniform usamplerCubeArray u;
+in vec4 p;
+void main() {
+    ivec3 n = textureSize(s, 0) + textureSize(z, 1) + textureSize(i, 0) + textureSize(u, 2);
+    vec4 c = texture(s, p) + textureLod(s, p, 1.0) + textureGrad(s, p, p.xyz, p.zyx);
+    c += vec4(texture(i, p)) + vec4(textureLod(u, p, 0.0)) + vec4(textureGrad(i, p, p.xyz, p.xyz));
+    gl_Position = c + vec4(n, texture(z, p, 0.5));
+}
+";
+    ok(vert(&format!("#version 130\n{EXT}{body}")));
+    let s = compile(
+        &[&format!("#version 150\n{EXT}uniform samplerCubeArray s;\nout vec4 o;\nvoid main() {{ o = texture(s, vec4(0.0), 2.0); }}\n")],
+        &CompileOptions::new(Stage::Fragment),
+    );
+    assert!(s.ok(), "{}", s.info_log());
+    // Without the extension the type names are identifiers.
+    assert!(!vert(&format!("#version 130\n{body}")).ok());
+    ok(vert("#version 130\nint samplerCubeArray = 1;\nvoid main() { gl_Position = vec4(samplerCubeArray); }\n"));
+    // Before 1.30 the directive and macro only.
+    ok(vert(&format!("#version 110\n{EXT}#if GL_ARB_texture_cube_map_array != 1\n#error no macro\n#endif\nvoid main() {{ gl_Position = vec4(0.0); }}\n")));
+    assert!(!vert(&format!("#version 120\n{EXT}uniform samplerCubeArray s;\nvoid main() {{ gl_Position = vec4(0.0); }}\n")).ok());
+    // What the extension does not have: a bias outside the fragment
+    // stage, offsets, projections, fetches, a bias on the shadow form,
+    // a vec3 coordinate.
+    for bad in [
+        "uniform samplerCubeArray s;\nvoid main() { gl_Position = texture(s, vec4(0.0), 1.0); }",
+        "uniform samplerCubeArray s;\nvoid main() { gl_Position = textureOffset(s, vec4(0.0), ivec3(0)); }",
+        "uniform samplerCubeArray s;\nvoid main() { gl_Position = textureProj(s, vec4(0.0)); }",
+        "uniform samplerCubeArray s;\nvoid main() { gl_Position = texelFetch(s, ivec4(0), 0); }",
+        "uniform samplerCubeArray s;\nvoid main() { gl_Position = texture(s, vec3(0.0)); }",
+        "uniform samplerCubeArrayShadow s;\nvoid main() { gl_Position = vec4(texture(s, vec4(0.0))); }",
+        "uniform samplerCubeArrayShadow s;\nvoid main() { gl_Position = vec4(textureLod(s, vec4(0.0), 0.0, 1.0)); }",
+    ] {
+        let s = vert(&format!("#version 130\n{EXT}{bad}\n"));
+        assert!(!s.ok(), "{bad}");
+    }
+}
+
+#[test]
 fn empty_shaders_are_syntax_errors() {
     // GLSL's translation_unit is one or more external declarations.
     fails(frag(""), Code::Syntax);
