@@ -106,7 +106,7 @@ tag="$(piglit_tag "$suite" "$set")"
     exit 2
 }
 for f in "${folders[@]}"; do
-    [ -d "$data/tests/spec/$f" ] || {
+    piglit_fetched "$data" "$f" || {
         log "piglit's $f tests are not fetched yet: run scripts/piglit-fetch.sh"
         exit 2
     }

@@ -221,7 +221,7 @@ fn unpack_fields_per_lane() {
     assert_eq!(h[3][..2], [-1.0, 1.0]);
     assert_eq!(h[4][..2], [f32::NEG_INFINITY, f32::INFINITY]);
     assert_eq!(h[14][..2], [-65504.0, 65504.0]);
-    assert_eq!(h[6][..2], [6.097_555_2e-5, 5.960_464_5e-8]);
+    assert_eq!(h[6][..2], [1023.0 / 16_777_216.0, 5.960_464_5e-8]);
     assert_eq!(h[15][0].to_bits(), 0x8000_0000);
     assert_eq!(h[5][..2], [NAN_MARK, NAN_MARK]);
     let u = unpacked("unpackUnorm2x16");

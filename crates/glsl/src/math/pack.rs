@@ -158,14 +158,14 @@ mod tests {
         assert_eq!(h(5.960_464_5e-8), 1);
         assert_eq!(h(2.980_232_2e-8), 0);
         assert_eq!(h(8.940_697e-8), 2);
-        assert_eq!(h(-6.097_555_2e-5), 0x83ff);
+        assert_eq!(h(-1023.0 / 16_777_216.0), 0x83ff);
         // 2^-14 − 2^-25 rounds up to the smallest normal.
         assert_eq!(h(6.103_515_6e-5 - 2.980_232_2e-8), 0x0400);
         let f = float_from_half;
         assert_eq!(f(0x3c00), 1.0);
         assert_eq!(f(0x8000).to_bits(), 0x8000_0000);
         assert_eq!(f(0x0001), 5.960_464_5e-8);
-        assert_eq!(f(0x83ff), -6.097_555_2e-5);
+        assert_eq!(f(0x83ff), -1023.0 / 16_777_216.0);
         assert_eq!(f(0x7bff), 65504.0);
         assert_eq!(f(0xfc00), f32::NEG_INFINITY);
         assert_eq!(f(0x7e00).to_bits(), 0x7fc0_0000);
