@@ -42,7 +42,7 @@ case "$suite" in glslparser|shader) ;; *) log "unknown suite \`$suite'"; exit 2 
 folders_line="$(piglit_folders "$set")" || { log "unknown folder set \`$set' (legacy, glsl3 or all)"; exit 2; }
 read -r -a folders <<<"$folders_line"
 for f in "${folders[@]}"; do
-    [ -d "$data/tests/spec/$f" ] || { log "piglit's $f tests are not fetched yet: run scripts/piglit-fetch.sh"; exit 2; }
+    piglit_fetched "$data" "$f" || { log "piglit's $f tests are not fetched yet: run scripts/piglit-fetch.sh"; exit 2; }
 done
 case "$set" in all) compared=(legacy glsl3) ;; *) compared=("$set") ;; esac
 deb="$(ls -1 "$cache"/debs/piglit_*.deb 2>/dev/null | tail -n 1 || true)"

@@ -13,8 +13,9 @@
 #               legacy (default): glsl-1.10 and glsl-1.20 (glslparser 1678
 #               tests, shader 3138); glsl3: glsl-1.30, 1.40, 1.50, 3.30,
 #               arb_geometry_shader4, arb_explicit_attrib_location,
-#               arb_uniform_buffer_object and arb_arrays_of_arrays
-#               (glslparser 3713, shader 3714); all: both, run
+#               arb_uniform_buffer_object, arb_arrays_of_arrays,
+#               arb_shading_language_packing and arb_texture_cube_map_array
+#               (glslparser 3771, shader 3744); all: both, run
 #               once and compared set by set. The number of tests is taken
 #               from piglit's test list and checked against the results.
 #   --debug     build and test the debug binary (default: release)
@@ -106,7 +107,7 @@ tag="$(piglit_tag "$suite" "$set")"
     exit 2
 }
 for f in "${folders[@]}"; do
-    [ -d "$data/tests/spec/$f" ] || {
+    piglit_fetched "$data" "$f" || {
         log "piglit's $f tests are not fetched yet: run scripts/piglit-fetch.sh"
         exit 2
     }

@@ -3,15 +3,24 @@
 #
 #   legacy  GLSL 1.10 and 1.20 (what .ci/run measures)
 #   glsl3   GLSL 1.30, 1.40, 1.50, 3.30, the extensions those versions
-#           absorbed that have compiler tests of their own (issue 30), and
-#           GL_ARB_arrays_of_arrays (GLSL 4.30's, offered on every context)
+#           absorbed that have compiler tests of their own (issue 30),
+#           GL_ARB_arrays_of_arrays (GLSL 4.30's, offered on every context),
+#           GL_ARB_shading_language_packing and GL_ARB_texture_cube_map_array
+#           (GLSL 4.20's and 4.00's, offered on 3.3 contexts)
 #   all     both
 #
 # A folder NAME is tests/spec/NAME/ and generated_tests/spec/NAME/ in the
-# package, and the tests piglit names spec@NAME@... in its results.
+# package (either may be missing: arb_shading_language_packing's tests are
+# all generated), and the tests piglit names spec@NAME@... in its results.
+
+# piglit_fetched DATA FOLDER: whether FOLDER's tests are in the extracted
+# tree DATA (usr/lib/x86_64-linux-gnu/piglit).
+piglit_fetched() {
+    [ -d "$1/tests/spec/$2" ] || [ -d "$1/generated_tests/spec/$2" ]
+}
 
 piglit_legacy_folders="glsl-1.10 glsl-1.20"
-piglit_glsl3_folders="glsl-1.30 glsl-1.40 glsl-1.50 glsl-3.30 arb_geometry_shader4 arb_explicit_attrib_location arb_uniform_buffer_object arb_arrays_of_arrays"
+piglit_glsl3_folders="glsl-1.30 glsl-1.40 glsl-1.50 glsl-3.30 arb_geometry_shader4 arb_explicit_attrib_location arb_uniform_buffer_object arb_arrays_of_arrays arb_shading_language_packing arb_texture_cube_map_array"
 
 # piglit_folders SET: prints the folders of SET on one line; fails (status
 # 1, nothing printed) for an unknown set.

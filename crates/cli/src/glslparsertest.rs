@@ -48,6 +48,8 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "GL_EXT_texture_array",
     "GL_ARB_shader_texture_lod",
     "GL_ARB_arrays_of_arrays",
+    "GL_ARB_shading_language_packing",
+    "GL_ARB_texture_cube_map_array",
 ];
 
 /// Whether a test of GLSL `version` can use extension `name`: one of

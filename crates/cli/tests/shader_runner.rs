@@ -225,6 +225,58 @@ relative probe rgba (0.1, 0.5) (0.25, 0.25, 0.75, 1.0)
 relative probe rgba (0.9, 0.5) (0.25, 0.25, 0.75, 0.75)
 ";
 
+    /// GL_ARB_shading_language_packing required by name, its functions in
+    /// both stages: the vertex stage packs, the fragment stage unpacks
+    /// and compares with uniform words.
+    const PACKING: &str = "\
+[require]
+GLSL >= 1.30
+GL_ARB_shading_language_packing
+
+[vertex shader]
+#version 130
+#extension GL_ARB_shading_language_packing : require
+in vec4 piglit_vertex;
+uniform vec2 v;
+flat out uint word;
+void main() { gl_Position = piglit_vertex; word = packHalf2x16(v); }
+
+[fragment shader]
+#version 130
+#extension GL_ARB_shading_language_packing : require
+flat in uint word;
+uniform uint expect;
+uniform uint snorm;
+out vec4 o;
+void main() {
+    bool ok = word == expect && unpackHalf2x16(word) == vec2(-2.0, 65504.0)
+        && packSnorm4x8(unpackSnorm4x8(snorm)) == snorm;
+    o = ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);
+}
+
+[test]
+uniform vec2 v -2.0 65504.0
+uniform uint expect 2080358400
+uniform uint snorm 2181005951
+draw rect -1 -1 2 2
+probe all rgba 0.0 1.0 0.0 1.0
+";
+
+    #[test]
+    fn packing_functions_run_where_the_extension_is_required() {
+        let path = script("packing", PACKING);
+        let o = shaderbox(&["shader-runner", &path, "-auto", "-fbo"]);
+        assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+        assert_eq!(last_line(&o), r#"PIGLIT: {"result": "pass" }"#);
+        // A wrong expectation fails the probe.
+        let path = script(
+            "packing-wrong",
+            &PACKING.replace("2080358400", "2080358401"),
+        );
+        let o = shaderbox(&["shader-runner", &path, "-auto", "-fbo"]);
+        assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
+    }
+
     #[test]
     fn array_textures_are_made_and_sampled() {
         let path = script("arrays", ARRAYS);

@@ -14,6 +14,7 @@ mod geometry;
 mod integers;
 #[cfg(feature = "jit")]
 mod jit;
+mod packing;
 mod piglit;
 mod variants;
 
@@ -782,6 +783,52 @@ fn texture_requests() {
     assert_eq!(reqs[1].compare.unwrap()[0], 0.75);
     let c = output(&k, &b, "gl_FragColor");
     assert_eq!(c[2][0], 8.0);
+}
+
+/// GL_ARB_texture_cube_map_array's lookups reach the units as cube
+/// requests with the layer as q: the shadow form's reference is its own
+/// argument (no bias, implicit λ), `textureGrad` carries three
+/// derivative components, `textureSize` three sizes.
+#[test]
+fn cube_map_array_requests() {
+    let k = kernel(
+        Stage::Fragment,
+        "#version 130
+        #extension GL_ARB_texture_cube_map_array : require
+        uniform samplerCubeArray s;
+        uniform samplerCubeArrayShadow z;
+        out vec4 o;
+        void main() {
+            vec4 a = texture(s, vec4(1.0, 2.0, 3.0, 4.0), 0.5);
+            float b = texture(z, vec4(-1.0, -2.0, -3.0, 5.0), 0.25);
+            vec4 c = textureGrad(s, vec4(0.0, 0.0, 1.0, 6.0), vec3(1.0, 2.0, 3.0), vec3(4.0, 5.0, 6.0));
+            o = a + vec4(b) + c + vec4(textureSize(z, 2), 0.0);
+        }",
+    );
+    let u = uniforms(&k, &[("s", &[1]), ("z", &[2])]);
+    let mut b = frag_batch(&k);
+    let rec = Recorder(Default::default());
+    k.run(&mut b, &u, &rec).unwrap();
+    let reqs = rec.0.borrow();
+    assert_eq!(reqs.len(), 3);
+    let coord = |r: &SampleRequest| [0, 1, 2, 3].map(|c| r.coord[c][0]);
+    assert_eq!(reqs[0].target, glsl::types::SamplerKind::SamplerCubeArray);
+    assert_eq!(coord(&reqs[0]), [1.0, 2.0, 3.0, 4.0]);
+    assert_eq!(reqs[0].compare, None);
+    assert!(matches!(&reqs[0].lod, Lod::Derivatives { bias, .. } if bias[0] == 0.5));
+    assert_eq!(reqs[1].unit[0], 2);
+    assert_eq!(coord(&reqs[1]), [-1.0, -2.0, -3.0, 5.0]);
+    assert_eq!(reqs[1].compare.unwrap()[0], 0.25);
+    assert!(reqs[1].compare_only);
+    assert!(matches!(&reqs[1].lod, Lod::Derivatives { bias, .. } if bias[0] == 0.0));
+    assert_eq!(coord(&reqs[2])[3], 6.0);
+    match &reqs[2].lod {
+        Lod::Gradients { ddx, ddy } => {
+            assert_eq!([ddx[0][0], ddx[1][0], ddx[2][0]], [1.0, 2.0, 3.0]);
+            assert_eq!([ddy[0][0], ddy[1][0], ddy[2][0]], [4.0, 5.0, 6.0]);
+        }
+        other => panic!("{other:?}"),
+    }
 }
 
 /// Integer texels (3, −2, 7, 1 as bits), texel fetches echoing their

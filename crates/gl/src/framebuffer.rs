@@ -509,7 +509,8 @@ impl Context {
             tt @ (GL_TEXTURE_3D
             | GL_TEXTURE_1D_ARRAY
             | GL_TEXTURE_2D_ARRAY
-            | GL_TEXTURE_2D_MULTISAMPLE_ARRAY),
+            | GL_TEXTURE_2D_MULTISAMPLE_ARRAY
+            | GL_TEXTURE_CUBE_MAP_ARRAY_ARB),
         ) = tex_target
         else {
             self.set_error(GL_INVALID_OPERATION);
@@ -556,6 +557,7 @@ impl Context {
                 | GL_TEXTURE_1D_ARRAY
                 | GL_TEXTURE_2D_ARRAY
                 | GL_TEXTURE_2D_MULTISAMPLE_ARRAY
+                | GL_TEXTURE_CUBE_MAP_ARRAY_ARB
         );
         self.set_attachment(
             fb,

@@ -73,6 +73,11 @@ pub const EXTENSIONS_33: &[&str] = &[
     "GL_ARB_occlusion_query2",
     "GL_ARB_provoking_vertex",
     "GL_ARB_blend_func_extended",
+    // Its functions take and return `uint`s: GLSL 1.30 and later, which
+    // a 2.1 context's shaders cannot have.
+    "GL_ARB_shading_language_packing",
+    // Needs GL 3.0 and GLSL 1.30 (its samplers' lookups).
+    "GL_ARB_texture_cube_map_array",
 ];
 
 /// One glPixelStore mode of `store` (Table 6.17's pixel storage state).
@@ -289,7 +294,8 @@ impl Context {
             | GL_TEXTURE_BINDING_1D_ARRAY
             | GL_TEXTURE_BINDING_2D_ARRAY
             | GL_TEXTURE_BINDING_RECTANGLE
-            | GL_TEXTURE_BINDING_BUFFER => {
+            | GL_TEXTURE_BINDING_BUFFER
+            | GL_TEXTURE_BINDING_CUBE_MAP_ARRAY_ARB => {
                 let ti = match pname {
                     GL_TEXTURE_BINDING_1D => 0,
                     GL_TEXTURE_BINDING_2D => 1,
@@ -298,6 +304,7 @@ impl Context {
                     GL_TEXTURE_BINDING_1D_ARRAY => 4,
                     GL_TEXTURE_BINDING_2D_ARRAY => 5,
                     GL_TEXTURE_BINDING_RECTANGLE => 6,
+                    GL_TEXTURE_BINDING_CUBE_MAP_ARRAY_ARB => 10,
                     _ => 7,
                 };
                 int(&[self.objects.bound.get(unit).map_or(0, |b| b[ti]) as i64])

@@ -27,6 +27,7 @@ impl Context {
                 | GL_TEXTURE_CUBE_MAP
                 | GL_TEXTURE_1D_ARRAY
                 | GL_TEXTURE_2D_ARRAY
+                | GL_TEXTURE_CUBE_MAP_ARRAY_ARB
         ) {
             self.set_error(GL_INVALID_ENUM);
             return;
@@ -63,7 +64,7 @@ pub(crate) fn generate_mipmaps(tex: &mut TextureObj, face: usize) {
     // filtered apart, never halved.
     let (rows_are_layers, slices_are_layers) = match tex.target {
         GL_TEXTURE_1D_ARRAY => (true, false),
-        GL_TEXTURE_2D_ARRAY => (false, true),
+        GL_TEXTURE_2D_ARRAY | GL_TEXTURE_CUBE_MAP_ARRAY_ARB => (false, true),
         _ => (false, false),
     };
     let halves = |n: i32, layers: bool| n > 1 && !layers;

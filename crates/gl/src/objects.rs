@@ -237,13 +237,17 @@ impl Attachment {
 
 /// Where the 2D image at `layer` of the level image `img` of a texture
 /// of `target` lies in `img.texels`: (first texel, width, height). A layer
-/// of a 3D or 2D array level is one `width × height` slice, a layer of a
+/// of a 3D, 2D array or cube map array level (a layer-face: face + 6 ·
+/// cube) is one `width × height` slice, a layer of a
 /// 1D array level one row; other targets have layer 0 only. None for a
 /// layer the level does not have.
 pub fn layer_span(target: u32, img: &Image, layer: i32) -> Option<(usize, i32, i32)> {
     let (w, h) = (img.width.max(0), img.height.max(0));
     match target {
-        GL_TEXTURE_3D | GL_TEXTURE_2D_ARRAY | GL_TEXTURE_2D_MULTISAMPLE_ARRAY => (0..img.depth)
+        GL_TEXTURE_3D
+        | GL_TEXTURE_2D_ARRAY
+        | GL_TEXTURE_2D_MULTISAMPLE_ARRAY
+        | GL_TEXTURE_CUBE_MAP_ARRAY_ARB => (0..img.depth)
             .contains(&layer)
             .then(|| (layer as usize * (w * h) as usize, w, h)),
         GL_TEXTURE_1D_ARRAY => (0..h)
@@ -310,7 +314,7 @@ pub struct Objects {
 }
 
 /// Number of texture targets a unit binds.
-pub const TEXTURE_TARGET_COUNT: usize = 10;
+pub const TEXTURE_TARGET_COUNT: usize = 11;
 
 /// Texture targets in binding-table order.
 pub const TEXTURE_TARGETS: [u32; TEXTURE_TARGET_COUNT] = [
@@ -324,6 +328,7 @@ pub const TEXTURE_TARGETS: [u32; TEXTURE_TARGET_COUNT] = [
     GL_TEXTURE_BUFFER,
     GL_TEXTURE_2D_MULTISAMPLE,
     GL_TEXTURE_2D_MULTISAMPLE_ARRAY,
+    GL_TEXTURE_CUBE_MAP_ARRAY_ARB,
 ];
 
 pub fn target_index(target: u32) -> Option<usize> {
@@ -421,6 +426,7 @@ pub(crate) fn image_target(target: u32, dims: u32) -> Option<(u32, usize)> {
         (2, GL_TEXTURE_RECTANGLE) => Some((GL_TEXTURE_RECTANGLE, 0)),
         (2, GL_TEXTURE_2D_MULTISAMPLE) => Some((GL_TEXTURE_2D_MULTISAMPLE, 0)),
         (3, GL_TEXTURE_2D_ARRAY) => Some((GL_TEXTURE_2D_ARRAY, 0)),
+        (3, GL_TEXTURE_CUBE_MAP_ARRAY_ARB) => Some((GL_TEXTURE_CUBE_MAP_ARRAY_ARB, 0)),
         (2, t)
             if (GL_TEXTURE_CUBE_MAP_POSITIVE_X..=GL_TEXTURE_CUBE_MAP_NEGATIVE_Z).contains(&t) =>
         {
@@ -445,6 +451,7 @@ pub(crate) fn proxy_target(target: u32, dims: u32) -> Option<u32> {
         (2, GL_PROXY_TEXTURE_CUBE_MAP) => Some(GL_TEXTURE_CUBE_MAP),
         (3, GL_PROXY_TEXTURE_3D) => Some(GL_TEXTURE_3D),
         (3, GL_PROXY_TEXTURE_2D_ARRAY) => Some(GL_TEXTURE_2D_ARRAY),
+        (3, GL_PROXY_TEXTURE_CUBE_MAP_ARRAY_ARB) => Some(GL_TEXTURE_CUBE_MAP_ARRAY_ARB),
         _ => None,
     }
 }

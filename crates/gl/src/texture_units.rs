@@ -100,6 +100,7 @@ impl Context {
                 cube: get(3),
                 tex_1d_array: get(4),
                 tex_2d_array: get(5),
+                cube_array: get(10),
                 rect: get(6),
                 buffer: self.buffer_texture(u),
                 lod_bias: self.st.tex_env.get(u).map_or(0.0, |e| e.lod_bias),
@@ -121,6 +122,7 @@ fn convert_texture(t: &objects::TextureObj, p: &objects::TexParams) -> raster::T
         GL_TEXTURE_CUBE_MAP => TextureTarget::Cube,
         GL_TEXTURE_1D_ARRAY => TextureTarget::Tex1DArray,
         GL_TEXTURE_2D_ARRAY => TextureTarget::Tex2DArray,
+        GL_TEXTURE_CUBE_MAP_ARRAY_ARB => TextureTarget::CubeArray,
         GL_TEXTURE_RECTANGLE => TextureTarget::Rect,
         _ => TextureTarget::Tex2D,
     };

@@ -264,6 +264,13 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
+        // GL_ARB_texture_cube_map_array: square faces, whole cubes of six
+        // layer-faces.
+        if bind_target == GL_TEXTURE_CUBE_MAP_ARRAY_ARB && (size[0] != size[1] || size[2] % 6 != 0)
+        {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
         if pixel_size(format, ty).is_none() {
             self.set_error(GL_INVALID_OPERATION);
             return;
@@ -278,6 +285,7 @@ impl Context {
                 | GL_TEXTURE_CUBE_MAP
                 | GL_TEXTURE_1D_ARRAY
                 | GL_TEXTURE_2D_ARRAY
+                | GL_TEXTURE_CUBE_MAP_ARRAY_ARB
                 | GL_TEXTURE_RECTANGLE
         );
         if depth_fmt != depth_data || (depth_fmt && !depth_target) {

@@ -801,6 +801,10 @@ pub fn gl_type(ty: Type) -> u32 {
                 Sampler2DMSArray => 0x910B,
                 ISampler2DMSArray => 0x910C,
                 USampler2DMSArray => 0x910D,
+                SamplerCubeArray => GL_SAMPLER_CUBE_MAP_ARRAY_ARB,
+                SamplerCubeArrayShadow => GL_SAMPLER_CUBE_MAP_ARRAY_SHADOW_ARB,
+                ISamplerCubeArray => GL_INT_SAMPLER_CUBE_MAP_ARRAY_ARB,
+                USamplerCubeArray => GL_UNSIGNED_INT_SAMPLER_CUBE_MAP_ARRAY_ARB,
             }
         }
         _ => 0,

@@ -259,13 +259,15 @@ void main() { for (int i = 0; i < 4; i++) { v = vx[0] * 10.0 + float(i); EmitVer
 
 /// gl_Layer sends each emitted primitive to a layer of a layered
 /// framebuffer: the layers of a 2D array texture, the faces of a cube map
-/// (GL 3.3 §4.4.7); a layer the framebuffer lacks draws nothing.
+/// (GL 3.3 §4.4.7), the layer-faces of a cube map array
+/// (GL_ARB_texture_cube_map_array); a layer the framebuffer lacks draws
+/// nothing.
 #[test]
 fn gl_layer_selects_the_layer_drawn() {
     let vs = "#version 150\nin vec2 pos;\nvoid main() { gl_Position = vec4(pos, 0.0, 1.0); }";
     let gs = "#version 150
 layout(triangles) in;
-layout(triangle_strip, max_vertices = 24) out;
+layout(triangle_strip, max_vertices = 39) out;
 uniform int layers;
 flat out int layer;
 void main() {
@@ -281,7 +283,11 @@ void main() {
     }
 }";
     let fs = "#version 150\nflat in int layer;\nout vec4 c;\nvoid main() { c = vec4(float(layer + 1) / 255.0, 0.0, 0.0, 1.0); }";
-    for (target, layers) in [(GL_TEXTURE_2D_ARRAY, 3), (GL_TEXTURE_CUBE_MAP, 6)] {
+    for (target, layers) in [
+        (GL_TEXTURE_2D_ARRAY, 3),
+        (GL_TEXTURE_CUBE_MAP, 6),
+        (GL_TEXTURE_CUBE_MAP_ARRAY_ARB, 12),
+    ] {
         let mut ctx = Context::with_api(4, 4, Api::GL33_COMPAT);
         let p = common::linked_stages(
             &mut ctx,
@@ -295,7 +301,7 @@ void main() {
         ctx.uniform_1i(loc, layers);
         let t = ctx.gen_textures(1)[0];
         ctx.bind_texture(target, t);
-        let zeros = vec![0u8; 4 * 4 * 4 * 6];
+        let zeros = vec![0u8; 4 * 4 * 4 * 12];
         if target == GL_TEXTURE_CUBE_MAP {
             for f in 0..6 {
                 ctx.tex_image(

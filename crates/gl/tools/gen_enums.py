@@ -15,7 +15,8 @@ SECTIONS = ["GL_VERSION_1_2", "GL_VERSION_1_3", "GL_VERSION_1_4", "GL_VERSION_1_
             "GL_ARB_point_sprite", "GL_ARB_vertex_program", "GL_ARB_fragment_program",
             "GL_EXT_texture_lod_bias", "GL_ARB_texture_rectangle", "GL_EXT_gpu_shader4",
             "GL_ARB_color_buffer_float", "GL_VERSION_3_1", "GL_VERSION_3_2", "GL_VERSION_3_3",
-            "GL_ARB_geometry_shader4", "GL_EXT_geometry_shader4", "GL_ARB_compatibility"]
+            "GL_ARB_geometry_shader4", "GL_EXT_geometry_shader4", "GL_ARB_compatibility",
+            "GL_ARB_texture_cube_map_array"]
 DEF = re.compile(r"^#define\s+(GL_\w+)\s+(0x[0-9A-Fa-f]+|\d+)\s*$")
 
 def defines(lines):

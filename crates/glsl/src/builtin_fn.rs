@@ -72,6 +72,17 @@ builtin_fns! {
     IntBitsToFloat = "intBitsToFloat";
     FloatBitsToUint = "floatBitsToUint";
     UintBitsToFloat = "uintBitsToFloat";
+    // GL_ARB_shading_language_packing (GLSL 4.20 §8.4 in core).
+    PackUnorm2x16 = "packUnorm2x16";
+    PackSnorm2x16 = "packSnorm2x16";
+    PackUnorm4x8 = "packUnorm4x8";
+    PackSnorm4x8 = "packSnorm4x8";
+    UnpackUnorm2x16 = "unpackUnorm2x16";
+    UnpackSnorm2x16 = "unpackSnorm2x16";
+    UnpackUnorm4x8 = "unpackUnorm4x8";
+    UnpackSnorm4x8 = "unpackSnorm4x8";
+    PackHalf2x16 = "packHalf2x16";
+    UnpackHalf2x16 = "unpackHalf2x16";
     // §8.4 geometric
     Length = "length";
     Distance = "distance";

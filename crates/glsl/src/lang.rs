@@ -156,6 +156,16 @@ extensions! {
     // of every version may enable it (as Mesa offers it); a 1.10 shader
     // still has no array type syntax or constructors.
     ArbArraysOfArrays = "GL_ARB_arrays_of_arrays";
+    // `packUnorm2x16`... and `packHalf2x16`/`unpackHalf2x16`. Their
+    // `uint`s need GLSL 1.30, so the functions exist from 1.30 on; the
+    // extension (its macro, `#extension`) is accepted in every version,
+    // as the spec names no version and Mesa accepts it.
+    ArbShadingLanguagePacking = "GL_ARB_shading_language_packing";
+    // `samplerCubeArray`, `samplerCubeArrayShadow`, `isamplerCubeArray`,
+    // `usamplerCubeArray` and their lookups under GLSL 1.30's names
+    // (`texture`, `textureLod`...), which exist from 1.30 on; the
+    // directive and macro are accepted in every version, as Mesa does.
+    ArbTextureCubeMapArray = "GL_ARB_texture_cube_map_array";
 }
 
 impl Extension {

@@ -52,6 +52,7 @@
 pub mod exp_log;
 pub mod matrix;
 pub mod noise;
+pub mod pack;
 
 pub use exp_log::{exp, exp2, log, log2, pow};
 pub use noise::{noise1, noise2, noise3, noise4};

@@ -2,7 +2,7 @@
 //! expansion, with identifiers classified into keywords for the shader's
 //! `#version`.
 
-use crate::lang::{Language, Version};
+use crate::lang::{Extension, Language, Version};
 use crate::source::Span;
 use smol_str::SmolStr;
 
@@ -130,6 +130,12 @@ keywords! {
     Sampler2DMSArray = "sampler2DMSArray" since V150;
     Isampler2DMSArray = "isampler2DMSArray" since V150;
     Usampler2DMSArray = "usampler2DMSArray" since V150;
+    // GL_ARB_texture_cube_map_array's (GLSL 4.00's): keywords only where
+    // the extension is enabled (`classify`).
+    SamplerCubeArray = "samplerCubeArray" since V130;
+    SamplerCubeArrayShadow = "samplerCubeArrayShadow" since V130;
+    IsamplerCubeArray = "isamplerCubeArray" since V130;
+    UsamplerCubeArray = "usamplerCubeArray" since V130;
 }
 
 /// Words reserved for future use (§3.6), with the first version that
@@ -237,7 +243,18 @@ pub enum WordClass {
 pub fn classify(word: &str, lang: Language) -> WordClass {
     let version = lang.version;
     if let Some(k) = Keyword::lookup(word) {
-        if k.since() <= version || (k == Keyword::Layout && lang.has_layout_keyword()) {
+        let cube_array = matches!(
+            k,
+            Keyword::SamplerCubeArray
+                | Keyword::SamplerCubeArrayShadow
+                | Keyword::IsamplerCubeArray
+                | Keyword::UsamplerCubeArray
+        );
+        if cube_array {
+            if k.since() <= version && lang.has(Extension::ArbTextureCubeMapArray) {
+                return WordClass::Keyword(k);
+            }
+        } else if k.since() <= version || (k == Keyword::Layout && lang.has_layout_keyword()) {
             return WordClass::Keyword(k);
         }
     }

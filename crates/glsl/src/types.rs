@@ -113,6 +113,10 @@ sampler_kinds! {
     Sampler2DMSArray = "sampler2DMSArray", Ms, Float, false, true;
     ISampler2DMSArray = "isampler2DMSArray", Ms, Int, false, true;
     USampler2DMSArray = "usampler2DMSArray", Ms, Uint, false, true;
+    SamplerCubeArray = "samplerCubeArray", Cube, Float, false, true;
+    SamplerCubeArrayShadow = "samplerCubeArrayShadow", Cube, Float, true, true;
+    ISamplerCubeArray = "isamplerCubeArray", Cube, Int, false, true;
+    USamplerCubeArray = "usamplerCubeArray", Cube, Uint, false, true;
 }
 
 /// The texture target of a [`SamplerKind`].

@@ -1,6 +1,6 @@
 //! Texture storage (GL 2.1 §3.8, GL 3.3 §3.8): the texture objects
-//! ([`Texture`]: 1D, 2D, 3D, cube, 1D and 2D array, rectangle and buffer
-//! targets, mipmap levels, filters, wrap modes, LOD
+//! ([`Texture`]: 1D, 2D, 3D, cube, 1D and 2D array, cube map array,
+//! rectangle and buffer targets, mipmap levels, filters, wrap modes, LOD
 //! parameters, depth comparison), their levels ([`Image`]), what a
 //! texture unit binds ([`TextureUnit`]) and completeness
 //! ([`Texture::last_level`]). Sampling lives above this module: the
@@ -43,6 +43,11 @@ pub enum TextureTarget {
     Tex1DArray,
     /// Layers stored as the depth of each level.
     Tex2DArray,
+    /// GL_ARB_texture_cube_map_array: cubes of six faces stored as the
+    /// layers of each level, layer-face `6 · cube + face` (faces in
+    /// [`TextureTarget::Cube`]'s order); the depth is six times the cube
+    /// count.
+    CubeArray,
     /// One level addressed in texels (GL 3.1 §3.8.8: coordinates not
     /// scaled by the size, no mipmaps; only the clamping wrap modes).
     Rect,
@@ -401,6 +406,7 @@ impl Texture {
             TextureTarget::Tex1D | TextureTarget::Tex1DArray | TextureTarget::Buffer => 1,
             TextureTarget::Tex2D
             | TextureTarget::Cube
+            | TextureTarget::CubeArray
             | TextureTarget::Tex2DArray
             | TextureTarget::Rect => 2,
             TextureTarget::Tex3D => 3,
@@ -416,7 +422,7 @@ impl Texture {
     pub(crate) fn layered(&self) -> bool {
         matches!(
             self.target,
-            TextureTarget::Tex1DArray | TextureTarget::Tex2DArray
+            TextureTarget::Tex1DArray | TextureTarget::Tex2DArray | TextureTarget::CubeArray
         )
     }
 
@@ -426,7 +432,9 @@ impl Texture {
             (0, _) => img.width,
             (1, TextureTarget::Tex1D | TextureTarget::Buffer) => 1,
             (1, _) => img.height,
-            (2, TextureTarget::Tex3D | TextureTarget::Tex2DArray) => img.depth,
+            (2, TextureTarget::Tex3D | TextureTarget::Tex2DArray | TextureTarget::CubeArray) => {
+                img.depth
+            }
             (2, TextureTarget::Cube) => 6,
             _ => 1,
         }
@@ -449,7 +457,8 @@ impl Texture {
         if dims.contains(&0) || !b.holds_texels() {
             return None;
         }
-        if self.target == TextureTarget::Cube && b.width != b.height {
+        let cubes = matches!(self.target, TextureTarget::Cube | TextureTarget::CubeArray);
+        if cubes && b.width != b.height {
             return None;
         }
         if !self.mipmapped() {
@@ -487,6 +496,7 @@ pub struct TextureUnit {
     pub cube: Option<Arc<Texture>>,
     pub tex_1d_array: Option<Arc<Texture>>,
     pub tex_2d_array: Option<Arc<Texture>>,
+    pub cube_array: Option<Arc<Texture>>,
     pub rect: Option<Arc<Texture>>,
     pub buffer: Option<Arc<Texture>>,
     /// TEXTURE_LOD_BIAS of the texture environment.

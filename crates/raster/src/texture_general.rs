@@ -73,10 +73,11 @@ fn unit_texture(unit: &TextureUnit, target: SamplerKind) -> Option<&Texture> {
         (SamplerDim::Cube, false) => &unit.cube,
         (SamplerDim::D1, true) => &unit.tex_1d_array,
         (SamplerDim::D2, true) => &unit.tex_2d_array,
+        (SamplerDim::Cube, true) => &unit.cube_array,
         (SamplerDim::Rect, _) => &unit.rect,
         (SamplerDim::Buffer, _) => &unit.buffer,
-        // Multisample textures and cube map arrays: none are bound; the
-        // lookup finds no texture (the incomplete-texture result).
+        // Multisample textures: none are bound; the lookup finds no
+        // texture (the incomplete-texture result).
         _ => return None,
     };
     tex.as_deref()
@@ -236,10 +237,16 @@ pub(crate) fn size_general(
     };
     let n = match tex.target {
         TextureTarget::Tex1D | TextureTarget::Buffer => 1,
-        TextureTarget::Tex3D | TextureTarget::Tex2DArray => 3,
+        TextureTarget::Tex3D | TextureTarget::Tex2DArray | TextureTarget::CubeArray => 3,
         _ => 2,
     };
-    let sizes = [img.width, img.height, img.depth];
+    // A cube map array's third size is its cubes (GLSL 4.00 §8.9.1).
+    let depth = if tex.target == TextureTarget::CubeArray {
+        img.depth / 6
+    } else {
+        img.depth
+    };
+    let sizes = [img.width, img.height, depth];
     std::array::from_fn(|a| if a < n { sizes[a] as i32 } else { 0 })
 }
 
@@ -253,7 +260,7 @@ fn sample_lane(
     let Some(unit) = units.get(req.unit[lane] as usize) else {
         return MISSING;
     };
-    let coord = [0, 1, 2].map(|c| req.coord[c][lane]);
+    let coord = [0, 1, 2, 3].map(|c| req.coord[c][lane]);
     let offset = req.offset.map_or([0; 3], |o| [0, 1, 2].map(|c| o[c][lane]));
     let (lod_base, shader_bias) = match &req.lod {
         Lod::Explicit(l) => (LodBase::Value(l[lane]), 0.0),
@@ -345,11 +352,12 @@ fn cube_deriv(face: usize, r: [f32; 3], d: [f32; 3]) -> (f32, f32) {
     )
 }
 
-/// Samples `tex` (complete, last level `q`) at `coord` (s, t, r).
+/// Samples `tex` (complete, last level `q`) at `coord` (s, t, r, q; q is
+/// read by cube map arrays only, as the cube's layer).
 pub(crate) fn sample(
     tex: &Texture,
     q: usize,
-    coord: [f32; 3],
+    coord: [f32; 4],
     lod: LodBase,
     extra_bias: f32,
     reference: Option<f32>,
@@ -359,8 +367,12 @@ pub(crate) fn sample(
     let Some(base_img) = tex.levels.get(base) else {
         return MISSING;
     };
-    // Face selection turns a cube lookup into a 2D one on layer `face`.
-    let (st, layer, derivs) = if tex.target == TextureTarget::Cube {
+    let [s, t, r, layer_coord] = coord;
+    let coord = [s, t, r];
+    // Face selection turns a cube lookup into a 2D one on layer `face`
+    // (of the cube's six, for cube map arrays).
+    let cubes = matches!(tex.target, TextureTarget::Cube | TextureTarget::CubeArray);
+    let (st, layer, derivs) = if cubes {
         let (face, sc, tc, ma) = cube_face(coord);
         let ama = math::abs(ma);
         let s = 0.5 * (sc / ama + 1.0);
@@ -373,21 +385,22 @@ pub(crate) fn sample(
             }
             other => other,
         };
-        ([s, t, 0.0], Some(face), derivs)
+        // GL_ARB_texture_cube_map_array: the cube is clamp(RNE(q), 0,
+        // cubes − 1), as an array layer is chosen.
+        let first = if tex.target == TextureTarget::CubeArray {
+            6 * nearest_layer(layer_coord, (base_img.depth / 6).max(1))
+        } else {
+            0
+        };
+        ([s, t, 0.0], Some(first + face), derivs)
     } else if tex.layered() {
         // GL 3.0 §3.8.8: layer = clamp(RNE(r), 0, layers − 1), of the
         // coordinate after the target's.
         let nd = tex.dims();
         let layers = tex.size(base_img, nd).max(1);
-        let l = floor(coord[nd] + 0.5);
-        let l = if l.is_nan() {
-            0.0
-        } else {
-            l.clamp(0.0, (layers - 1) as f32)
-        };
         let mut st = coord;
         st[nd] = 0.0;
-        (st, Some(l as usize), lod)
+        (st, Some(nearest_layer(coord[nd], layers)), lod)
     } else {
         (coord, None, lod)
     };
@@ -435,6 +448,17 @@ pub(crate) fn sample(
         },
     };
     depth_rgba(tex, value)
+}
+
+/// The array layer a coordinate selects among `layers` (GL 3.0 §3.8.8):
+/// clamp(RNE(c), 0, layers − 1), NaN the first.
+fn nearest_layer(c: f32, layers: u32) -> usize {
+    let l = floor(c + 0.5);
+    if l.is_nan() {
+        0
+    } else {
+        l.clamp(0.0, (layers.max(1) - 1) as f32) as usize
+    }
 }
 
 /// A stored texel as filtering reads it: sRGB textures' colour decoded
@@ -536,6 +560,7 @@ fn filter_unorm8(
         tex.target,
         TextureTarget::Tex2D
             | TextureTarget::Cube
+            | TextureTarget::CubeArray
             | TextureTarget::Tex2DArray
             | TextureTarget::Rect
     );

@@ -152,6 +152,158 @@ impl<'m> Lowerer<'m> {
         }
     }
 
+    /// One field of `pack{U,S}norm*`: `glsl::math::pack::pack_unorm` /
+    /// `pack_snorm`, op for op (clamp, product, round to even, conversion,
+    /// the snorm's two's complement masked to the field).
+    fn norm_field(&mut self, x: Reg, bits: u32, snorm: bool) -> R<Reg> {
+        let (lo, scale) = if snorm {
+            (-1.0, ((1u32 << (bits - 1)) - 1) as f32)
+        } else {
+            (0.0, ((1u32 << bits) - 1) as f32)
+        };
+        let (lo, hi, scale) = (self.fconst(lo)?, self.fconst(1.0)?, self.fconst(scale)?);
+        let c = self.emit_temp(|d| Op::F3 {
+            f: F3::Clamp,
+            d,
+            a: x,
+            b: lo,
+            c: hi,
+        })?;
+        let p = self.fbin(|d, a, b| Op::FMul { d, a, b }, c, scale)?;
+        let r = self.emit_temp(|d| Op::F1 {
+            f: F1::RoundEven,
+            d,
+            a: p,
+        })?;
+        if snorm {
+            let i = self.emit_temp(|d| Op::FToI { d, a: r })?;
+            let mask = self.konst((1u32 << bits) - 1)?;
+            self.fbin(|d, a, b| Op::BitAnd { d, a, b }, i, mask)
+        } else {
+            self.emit_temp(|d| Op::FToU { d, a: r })
+        }
+    }
+
+    /// `fields[0] | fields[1] << bits | ...`: the first component lowest.
+    fn join_fields(&mut self, fields: &[Reg], bits: u32) -> R<Reg> {
+        let mut word = fields[0];
+        for (i, &f) in fields.iter().enumerate().skip(1) {
+            let n = self.konst(i as u32 * bits)?;
+            let shifted = self.fbin(|d, a, b| Op::Shl { d, a, b }, f, n)?;
+            word = self.fbin(|d, a, b| Op::BitOr { d, a, b }, word, shifted)?;
+        }
+        Ok(word)
+    }
+
+    /// The float of the `bits`-wide field at bit `at` of `w`:
+    /// `glsl::math::pack::unpack_unorm` / `unpack_snorm`, op for op.
+    fn norm_float(&mut self, w: Reg, at: u32, bits: u32, snorm: bool) -> R<Reg> {
+        let ibin = |l: &mut Self, mk: fn(Reg, Reg, Reg) -> Op, a: Reg, b: u32| -> R<Reg> {
+            let b = l.konst(b)?;
+            l.fbin(mk, a, b)
+        };
+        if snorm {
+            // Shifted up to the top of the word, then down with the sign.
+            let up = ibin(self, |d, a, b| Op::Shl { d, a, b }, w, 32 - bits - at)?;
+            let v = ibin(self, |d, a, b| Op::ShrS { d, a, b }, up, 32 - bits)?;
+            let f = self.emit_temp(|d| Op::IToF { d, a: v })?;
+            let scale = self.fconst(((1u32 << (bits - 1)) - 1) as f32)?;
+            let q = self.fbin(|d, a, b| Op::FDiv { d, a, b }, f, scale)?;
+            let (lo, hi) = (self.fconst(-1.0)?, self.fconst(1.0)?);
+            self.emit_temp(|d| Op::F3 {
+                f: F3::Clamp,
+                d,
+                a: q,
+                b: lo,
+                c: hi,
+            })
+        } else {
+            let down = ibin(self, |d, a, b| Op::ShrU { d, a, b }, w, at)?;
+            let v = ibin(
+                self,
+                |d, a, b| Op::BitAnd { d, a, b },
+                down,
+                (1u32 << bits) - 1,
+            )?;
+            let f = self.emit_temp(|d| Op::UToF { d, a: v })?;
+            let scale = self.fconst(((1u32 << bits) - 1) as f32)?;
+            self.fbin(|d, a, b| Op::FDiv { d, a, b }, f, scale)
+        }
+    }
+
+    /// `glsl::math::pack::half_from_float` as ops: each case computed on
+    /// every lane, then selected.
+    fn half_from_float(&mut self, x: Reg) -> R<Reg> {
+        use glsl::math::pack::{HALF_INF_FROM, HALF_NORMAL_FROM};
+        let ibin = |l: &mut Self, mk: fn(Reg, Reg, Reg) -> Op, a: Reg, b: u32| -> R<Reg> {
+            let b = l.konst(b)?;
+            l.fbin(mk, a, b)
+        };
+        let and = |d, a, b| Op::BitAnd { d, a, b };
+        let shr = |d, a, b| Op::ShrU { d, a, b };
+        let high = ibin(self, shr, x, 16)?;
+        let sign = ibin(self, and, high, 0x8000)?;
+        let a = ibin(self, and, x, 0x7fff_ffff)?;
+        let consts = [0x7f80_0000, HALF_INF_FROM, HALF_NORMAL_FROM].map(|c| self.konst(c));
+        let [inf_bits, inf_from, normal_from] = consts;
+        let is_nan = self.fbin(|d, a, b| Op::ULt { d, a, b }, inf_bits?, a)?;
+        let is_inf = self.fbin(|d, a, b| Op::ULe { d, a, b }, inf_from?, a)?;
+        let is_normal = self.fbin(|d, a, b| Op::ULe { d, a, b }, normal_from?, a)?;
+        // Normal: rebias, round to nearest even on the 13 dropped bits.
+        let r = ibin(self, |d, a, b| Op::ISub { d, a, b }, a, 112 << 23)?;
+        let r13 = ibin(self, shr, r, 13)?;
+        let odd = ibin(self, and, r13, 1)?;
+        let up = ibin(self, |d, a, b| Op::IAdd { d, a, b }, r, 0x0fff)?;
+        let up = self.fbin(|d, a, b| Op::IAdd { d, a, b }, up, odd)?;
+        let normal = ibin(self, shr, up, 13)?;
+        // Subnormal: units of 2^-24, rounded to even.
+        let scale = self.fconst(16_777_216.0)?;
+        let units = self.fbin(|d, a, b| Op::FMul { d, a, b }, a, scale)?;
+        let units = self.emit_temp(|d| Op::F1 {
+            f: F1::RoundEven,
+            d,
+            a: units,
+        })?;
+        let small = self.emit_temp(|d| Op::FToU { d, a: units })?;
+        let (h_inf, h_nan) = (self.konst(0x7c00)?, self.konst(0x7e00)?);
+        let sel = |l: &mut Self, c: Reg, a: Reg, b: Reg| l.emit_temp(|d| Op::Select { d, c, a, b });
+        let m = sel(self, is_normal, normal, small)?;
+        let m = sel(self, is_inf, h_inf, m)?;
+        let m = sel(self, is_nan, h_nan, m)?;
+        self.fbin(|d, a, b| Op::BitOr { d, a, b }, sign, m)
+    }
+
+    /// `glsl::math::pack::float_from_half` of the 16 bits at `at` of `w`,
+    /// as ops: each exponent case computed, then selected.
+    fn float_from_half(&mut self, w: Reg, at: u32) -> R<Reg> {
+        let ibin = |l: &mut Self, mk: fn(Reg, Reg, Reg) -> Op, a: Reg, b: u32| -> R<Reg> {
+            let b = l.konst(b)?;
+            l.fbin(mk, a, b)
+        };
+        let and = |d, a, b| Op::BitAnd { d, a, b };
+        let shl = |d, a, b| Op::Shl { d, a, b };
+        let down = ibin(self, |d, a, b| Op::ShrU { d, a, b }, w, at)?;
+        let h = ibin(self, and, down, 0xffff)?;
+        let s = ibin(self, and, h, 0x8000)?;
+        let sign = ibin(self, shl, s, 16)?;
+        let e = ibin(self, and, h, 0x7c00)?;
+        let m = ibin(self, and, h, 0x3ff)?;
+        let mf = self.emit_temp(|d| Op::UToF { d, a: m })?;
+        let unit = self.fconst(1.0 / 16_777_216.0)?;
+        let sub = self.fbin(|d, a, b| Op::FMul { d, a, b }, mf, unit)?;
+        let m13 = ibin(self, shl, m, 13)?;
+        let special = ibin(self, |d, a, b| Op::BitOr { d, a, b }, m13, 0x7f80_0000)?;
+        let em = ibin(self, and, h, 0x7fff)?;
+        let em = ibin(self, shl, em, 13)?;
+        let normal = ibin(self, |d, a, b| Op::IAdd { d, a, b }, em, 112 << 23)?;
+        let is_zero = ibin(self, |d, a, b| Op::IEq { d, a, b }, e, 0)?;
+        let is_max = ibin(self, |d, a, b| Op::IEq { d, a, b }, e, 0x7c00)?;
+        let sel = |l: &mut Self, c: Reg, a: Reg, b: Reg| l.emit_temp(|d| Op::Select { d, c, a, b });
+        let mag = sel(self, is_max, special, normal)?;
+        let mag = sel(self, is_zero, sub, mag)?;
+        self.fbin(|d, a, b| Op::BitOr { d, a, b }, sign, mag)
+    }
+
     /// `modf(x, out i)`: writes `trunc(x)` to `i`, returns the fraction.
     fn modf(&mut self, args: &[Expr]) -> R<Val> {
         let [x, whole] = args else {
@@ -336,6 +488,44 @@ impl<'m> Lowerer<'m> {
                 self.copy(&x)
             }
             B::IntBitsToFloat | B::UintBitsToFloat => self.map1(arg(0)?, F1::FlushBits),
+            B::PackUnorm2x16 | B::PackSnorm2x16 | B::PackUnorm4x8 | B::PackSnorm4x8 => {
+                let x = arg(0)?.clone();
+                let bits = 32 / x.len() as u32;
+                let snorm = matches!(f, B::PackSnorm2x16 | B::PackSnorm4x8);
+                let mut fields = Vec::with_capacity(x.len());
+                for &c in &x {
+                    fields.push(self.norm_field(c, bits, snorm)?);
+                }
+                Ok(vec![self.join_fields(&fields, bits)?])
+            }
+            B::PackHalf2x16 => {
+                let x = arg(0)?.clone();
+                let mut fields = Vec::with_capacity(2);
+                for &c in &x {
+                    fields.push(self.half_from_float(c)?);
+                }
+                Ok(vec![self.join_fields(&fields, 16)?])
+            }
+            B::UnpackUnorm2x16 | B::UnpackSnorm2x16 | B::UnpackUnorm4x8 | B::UnpackSnorm4x8 => {
+                let [w] = arg(0)?[..] else {
+                    return unsupported(format!("{} of a vector", f.name()));
+                };
+                let bits = if matches!(f, B::UnpackUnorm4x8 | B::UnpackSnorm4x8) {
+                    8
+                } else {
+                    16
+                };
+                let snorm = matches!(f, B::UnpackSnorm2x16 | B::UnpackSnorm4x8);
+                (0..32 / bits)
+                    .map(|i| self.norm_float(w, i * bits, bits, snorm))
+                    .collect()
+            }
+            B::UnpackHalf2x16 => {
+                let [w] = arg(0)?[..] else {
+                    return unsupported("unpackHalf2x16 of a vector");
+                };
+                (0..2).map(|i| self.float_from_half(w, i * 16)).collect()
+            }
             // mix(x, y, bvec a): y where a is true.
             B::Mix if args.get(2).is_some_and(|a| kind_of(a.ty) == Scalar::Bool) => {
                 let (x, y, a) = (arg(0)?.clone(), arg(1)?.clone(), arg(2)?.clone());

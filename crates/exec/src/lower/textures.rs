@@ -258,8 +258,17 @@ impl<'m> Lowerer<'m> {
         };
         // Shadow lookups compare against the coordinate after the
         // target's and the layer (r of 1D and 2D, q of cube maps and 2D
-        // arrays: GLSL 1.30 §8.7), divided by q in the Proj forms.
-        let compare_at = shadow.then_some((dims + usize::from(layered)).max(2));
+        // arrays: GLSL 1.30 §8.7), divided by q in the Proj forms; a cube
+        // map array's, which has no room for it, is the argument after
+        // the coordinates (GL_ARB_texture_cube_map_array).
+        let compare_arg = shadow && dims + usize::from(layered) == 4;
+        let (extra, compare_arg) = if compare_arg {
+            (None, one_reg(2))
+        } else {
+            (extra, None)
+        };
+        let compare_at =
+            (shadow && compare_arg.is_none()).then_some((dims + usize::from(layered)).max(2));
         let need = compare_at.map_or(dims + usize::from(layered), |c| c + 1);
         if coord.len() < need || (proj && coord.len() < need + 1) {
             return unsupported("texture coordinates too short");
@@ -282,7 +291,7 @@ impl<'m> Lowerer<'m> {
         }
         let compare = match compare_at {
             Some(i) => Some(div(self, coord[i])?),
-            None => None,
+            None => compare_arg,
         };
         let lod = if grad {
             let Some((Some(dx), Some(dy))) = grads else {

@@ -122,6 +122,16 @@ fn eval(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<Vec<ConstScal
                     .collect(),
             )
         }
+        PackUnorm2x16 => pack(args, 16, math::pack::pack_unorm),
+        PackSnorm2x16 => pack(args, 16, math::pack::pack_snorm),
+        PackUnorm4x8 => pack(args, 8, math::pack::pack_unorm),
+        PackSnorm4x8 => pack(args, 8, math::pack::pack_snorm),
+        PackHalf2x16 => pack(args, 16, |x, _| math::pack::half_from_float(x)),
+        UnpackUnorm2x16 => unpack(args, 16, math::pack::unpack_unorm),
+        UnpackSnorm2x16 => unpack(args, 16, math::pack::unpack_snorm),
+        UnpackUnorm4x8 => unpack(args, 8, math::pack::unpack_unorm),
+        UnpackSnorm4x8 => unpack(args, 8, math::pack::unpack_snorm),
+        UnpackHalf2x16 => unpack(args, 16, |h, _| math::pack::float_from_half(h)),
         Min | Max | Clamp if is_uint_call(args) => uint_call(f, args),
         Abs | Sign | Min | Max | Clamp | Mix if is_int_or_bool_call(f, args) => int_call(f, args),
         Pow => binary(args, math::pow),
@@ -236,6 +246,37 @@ fn eval(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<Vec<ConstScal
         | TextureProjGrad
         | TextureProjGradOffset => None,
     }
+}
+
+/// GL_ARB_shading_language_packing's `pack*`: the fields of a vector's
+/// components, `bits` wide each, the first component in the lowest bits.
+fn pack(args: &[ConstValue], bits: u32, field: fn(f32, u32) -> u32) -> Option<Vec<ConstScalar>> {
+    let [v] = args else { return None };
+    let v = floats(v)?;
+    if v.len() * bits as usize != 32 {
+        return None;
+    }
+    let word = v
+        .iter()
+        .enumerate()
+        .fold(0u32, |w, (i, &x)| w | field(x, bits) << (i as u32 * bits));
+    Some(vec![ConstScalar::Uint(word)])
+}
+
+/// The `unpack*` of [`pack`]: one float per `bits`-wide field of a `uint`
+/// (`float_of` sees the word shifted down to the field, and masks it).
+fn unpack(
+    args: &[ConstValue],
+    bits: u32,
+    float_of: fn(u32, u32) -> f32,
+) -> Option<Vec<ConstScalar>> {
+    let [u] = args else { return None };
+    let [word] = uints(u)?[..] else { return None };
+    Some(
+        (0..32 / bits)
+            .map(|i| ConstScalar::Float(float_of(word >> (i * bits), bits)))
+            .collect(),
+    )
 }
 
 /// `f32` arithmetic, each operation rounded and flushed as the executor
@@ -912,5 +953,52 @@ mod tests {
         assert_eq!(floats_of(d), vec![8.0]);
         let i = eval_builtin(BuiltinFn::Inverse, &[m], Type::mat(2, 2));
         assert_eq!(floats_of(i), vec![0.5, 0.0, -0.125, 0.25]);
+    }
+
+    #[test]
+    fn packing_functions() {
+        let v2 = Type::vec(Scalar::Float, 2);
+        let v4 = Type::vec(Scalar::Float, 4);
+        let p = |f, v: &[f32]| uints_of(eval_builtin(f, &[vec(v)], Type::UINT))[0];
+        assert_eq!(p(BuiltinFn::PackUnorm2x16, &[0.5, 1.0]), 0xffff_8000);
+        assert_eq!(p(BuiltinFn::PackSnorm2x16, &[-1.0, f32::NAN]), 0x8001_8001);
+        assert_eq!(
+            p(BuiltinFn::PackUnorm4x8, &[0.0, 0.2, 2.0, f32::NAN]),
+            0x00ff_3300
+        );
+        assert_eq!(
+            p(BuiltinFn::PackSnorm4x8, &[-0.5, 0.5, -0.0, 1.0]),
+            0x7f00_40c0
+        );
+        assert_eq!(
+            p(BuiltinFn::PackHalf2x16, &[f32::NEG_INFINITY, -0.0]),
+            0x8000_fc00
+        );
+        let u = |f, w: u32, ty| floats_of(eval_builtin(f, &[uvec(&[w])], ty));
+        assert_eq!(
+            u(BuiltinFn::UnpackUnorm2x16, 0xffff_0000, v2),
+            vec![0.0, 1.0]
+        );
+        assert_eq!(
+            u(BuiltinFn::UnpackSnorm2x16, 0x8000_7fff, v2),
+            vec![1.0, -1.0]
+        );
+        assert_eq!(
+            u(BuiltinFn::UnpackUnorm4x8, 0x3300_ff00, v4),
+            vec![0.0, 1.0, 0.0, 0.2]
+        );
+        assert_eq!(
+            u(BuiltinFn::UnpackSnorm4x8, 0x8081_7f00, v4),
+            vec![0.0, 1.0, -1.0, -1.0]
+        );
+        assert_eq!(
+            u(BuiltinFn::UnpackHalf2x16, 0x7c00_bc00, v2),
+            vec![-1.0, f32::INFINITY]
+        );
+        // A vec2 is no argument of the 4x8 forms.
+        assert_eq!(
+            eval_builtin(BuiltinFn::PackUnorm4x8, &[vec(&[0.0, 1.0])], Type::UINT),
+            None
+        );
     }
 }

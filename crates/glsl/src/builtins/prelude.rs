@@ -36,7 +36,10 @@
 //!
 //! Nothing else is declared: a name missing from this text is not a
 //! built-in of that language and stage. The text starts with the matching
-//! `#version` line and has no other preprocessor directive.
+//! `#version` line, then, when the language enables
+//! GL_ARB_texture_cube_map_array, that `#extension` line (its sampler
+//! type names are keywords only where it is enabled), and has no other
+//! preprocessor directive.
 //!
 //! The unsigned overloads are those the specs list and no more: `min`,
 //! `max` and `clamp` on `genUType` (with the `uvec, uint` forms), the six
@@ -730,6 +733,17 @@ const FUNCTIONS: &[(Where, &str)] = &[
     (Where::since(V330), "genType intBitsToFloat(genIType)"),
     (Where::since(V330), "genUType floatBitsToUint(genType)"),
     (Where::since(V330), "genType uintBitsToFloat(genUType)"),
+    // GL_ARB_shading_language_packing, every stage.
+    (PACKING, "uint packUnorm2x16(vec2)"),
+    (PACKING, "uint packSnorm2x16(vec2)"),
+    (PACKING, "uint packUnorm4x8(vec4)"),
+    (PACKING, "uint packSnorm4x8(vec4)"),
+    (PACKING, "vec2 unpackUnorm2x16(uint)"),
+    (PACKING, "vec2 unpackSnorm2x16(uint)"),
+    (PACKING, "vec4 unpackUnorm4x8(uint)"),
+    (PACKING, "vec4 unpackSnorm4x8(uint)"),
+    (PACKING, "uint packHalf2x16(vec2)"),
+    (PACKING, "vec2 unpackHalf2x16(uint)"),
     // §8.4 geometric functions
     (Where::ALL, "float length(genType)"),
     (Where::ALL, "float distance(genType, genType)"),
@@ -1005,6 +1019,10 @@ const LOD_FS_ARB: Where = Where {
 const GRAD_ARB: Where = Where::ALL.needs(Extension::ArbShaderTextureLod);
 const GRAD_ARB_RECT: Where = Where::since(V140).needs(Extension::ArbShaderTextureLod);
 
+/// GL_ARB_shading_language_packing's functions: from GLSL 1.30, the first
+/// version with `uint`.
+const PACKING: Where = Where::since(V130).needs(Extension::ArbShadingLanguagePacking);
+
 /// GL_EXT_texture_array's lookups; the bias forms in fragment shaders.
 const TEX_ARRAY: Where = Where::since(V130).needs(Extension::ExtTextureArray);
 const TEX_ARRAY_FS: Where = Where {
@@ -1053,6 +1071,12 @@ struct SamplerRow {
     /// `P` of `texelFetch`, and its last parameter (`lod`, `sample`, or
     /// none for rectangles and buffers).
     fetch: Option<(&'static str, Option<&'static str>)>,
+    /// The shadow sampler's `texture` takes the reference as a separate
+    /// `float` after `P` (in every stage), instead of a bias
+    /// (`samplerCubeArrayShadow`, whose `P` has no room for it).
+    compare_arg: bool,
+    /// The extension the sampler type needs.
+    needs: Option<Extension>,
 }
 
 /// Every sampler type of GLSL 1.30-3.30 with the lookups §8.7 gives it.
@@ -1076,6 +1100,8 @@ const SAMPLERS: &[SamplerRow] = {
             grad_offset_only: false,
             grad: None,
             fetch: None,
+            compare_arg: false,
+            needs: None,
         }
     }
     &[
@@ -1200,6 +1226,21 @@ const SAMPLERS: &[SamplerRow] = {
             fetch: Some(("ivec3", Some("int"))),
             ..row("sampler2DMSArray", V150, true, ("ivec3", false))
         },
+        // GL_ARB_texture_cube_map_array: the cube lookups with the layer
+        // as `P.w`; no offsets, projections or fetches.
+        SamplerRow {
+            p: Some("vec4"),
+            bias: true,
+            lod: true,
+            grad: Some("vec3"),
+            needs: Some(Extension::ArbTextureCubeMapArray),
+            ..row("samplerCubeArray", V130, true, ("ivec3", true))
+        },
+        SamplerRow {
+            compare_arg: true,
+            needs: Some(Extension::ArbTextureCubeMapArray),
+            ..row("samplerCubeArrayShadow", V130, false, ("ivec3", true))
+        },
     ]
 };
 
@@ -1217,6 +1258,13 @@ fn build(lang: Language, stage: Stage, input: InputPrimitive) -> String {
         let _ = writeln!(out, "#version {} {}", version.number(), lang.profile.name());
     } else {
         let _ = writeln!(out, "#version {}", version.number());
+    }
+    if lang.has(Extension::ArbTextureCubeMapArray) {
+        let _ = writeln!(
+            out,
+            "#extension {} : enable",
+            Extension::ArbTextureCubeMapArray.name()
+        );
     }
     let _ = writeln!(
         out,
@@ -1249,7 +1297,7 @@ fn build(lang: Language, stage: Stage, input: InputPrimitive) -> String {
         }
     }
     for row in SAMPLERS {
-        if version >= row.since {
+        if version >= row.since && row.needs.is_none_or(|e| lang.has(e)) {
             lookups(&mut out, row, stage);
         }
     }
@@ -1418,6 +1466,9 @@ fn lookups(out: &mut String, row: &SamplerRow, stage: Stage) {
                 }
             }
         }
+        if row.compare_arg {
+            f("texture", &["vec4", "float"]);
+        }
         if let Some((p, last)) = row.fetch {
             let mut params = vec![p];
             params.extend(last);
@@ -1505,10 +1556,12 @@ mod tests {
             ] {
                 let mut l = Language::new(v, true);
                 l.profile = p;
-                // And with the extension that adds lookups.
+                // And with the extensions that add built-in functions.
                 let mut e = l;
                 e.extensions.set(Extension::ExtTextureArray, true);
                 e.extensions.set(Extension::ArbShaderTextureLod, true);
+                e.extensions.set(Extension::ArbShadingLanguagePacking, true);
+                e.extensions.set(Extension::ArbTextureCubeMapArray, true);
                 for s in [Stage::Vertex, Stage::Geometry, Stage::Fragment] {
                     out.push((l, s));
                     out.push((e, s));
@@ -1644,7 +1697,8 @@ mod tests {
             let text = &super::prelude(l, s);
             assert!(text.is_ascii());
             assert!(text.starts_with(&format!("#version {}", v.number())));
-            assert_eq!(text.matches('#').count(), 1);
+            let directives = 1 + l.has(Extension::ArbTextureCubeMapArray) as usize;
+            assert_eq!(text.matches('#').count(), directives);
             let (tokens, diags) = lex(text, LexOptions::default());
             assert!(diags.is_empty(), "{v:?} {s:?}: {diags:?}");
             for t in &tokens {

@@ -623,6 +623,29 @@ impl Analyzer {
                 ));
             }
         }
+        // An extension this version offers has it (GL_EXT_geometry_shader4
+        // has its own note above and below).
+        let extension = crate::lang::Extension::ALL.iter().find(|&&e| {
+            let mut l = self.lang;
+            l.extensions.set(e, true);
+            !self.lang.has(e)
+                && self.lang.version >= e.since()
+                && !matches!(
+                    e,
+                    crate::lang::Extension::ExtGeometryShader4
+                        | crate::lang::Extension::ArbGeometryShader4
+                )
+                && found(l, self.stage)
+        });
+        if let Some(e) = extension {
+            return Some((
+                Code::Undeclared,
+                format!(
+                    "`{name}' is a built-in of {0}: add `#extension {0} : enable' after `#version'",
+                    e.name()
+                ),
+            ));
+        }
         self.ext_geometry_note(name)
     }
 

@@ -177,6 +177,108 @@ void main() {
 }
 
 #[test]
+fn packing_builtins_need_the_extension_and_glsl_130() {
+    const EXT: &str = "#extension GL_ARB_shading_language_packing : enable\n";
+    let s = vert(&format!(
+        "#version 130\n{EXT}uniform vec4 v; uniform uint u;
+const uint h = packHalf2x16(vec2(1.0, -2.0));
+const vec4 s = unpackSnorm4x8(0x7f81u);
+void main() {{
+    uint a = packUnorm2x16(v.xy) + packSnorm2x16(v.zw) + packUnorm4x8(v) + packSnorm4x8(v);
+    vec2 b = unpackUnorm2x16(u) + unpackSnorm2x16(u) + unpackHalf2x16(u);
+    gl_Position = vec4(b, float(a), 1.0) + unpackUnorm4x8(u) + s + vec4(h);
+}}
+"
+    ));
+    assert!(s.ok(), "{}", s.info_log());
+    let m = s.module.as_ref().unwrap();
+    let init = |name: &str| {
+        m.globals
+            .iter()
+            .find(|g| g.name == name)
+            .and_then(|g| g.init.clone())
+    };
+    use crate::ir::ConstScalar::{Float, Uint};
+    assert_eq!(init("h").unwrap().components, vec![Uint(0xc000_3c00)]);
+    assert_eq!(
+        init("s").unwrap().components,
+        vec![Float(-1.0), Float(1.0), Float(0.0), Float(0.0)]
+    );
+    // Every stage has them.
+    let g = compile(
+        &[&format!("#version 150\n{EXT}layout(points) in; layout(points, max_vertices = 1) out;\nvoid main() {{ gl_Position = vec4(unpackHalf2x16(packHalf2x16(vec2(0.5))), 0.0, 1.0); EmitVertex(); }}\n")],
+        &CompileOptions::new(Stage::Geometry),
+    );
+    assert!(g.ok(), "{}", g.info_log());
+    ok(frag(&format!(
+        "#version 130\n{EXT}uniform uint u;\nvoid main() {{ gl_FragColor = unpackUnorm4x8(u); }}\n"
+    )));
+    // Without the extension the names are not declared, and the note
+    // names the extension; the wrong argument type is no overload.
+    let s = frag("#version 130\nuniform vec2 v;\nvoid main() { gl_FragColor = vec4(float(packHalf2x16(v))); }\n");
+    fails(s, Code::Undeclared);
+    let s = frag("#version 330\nuniform vec2 v;\nvoid main() { gl_FragColor = vec4(float(packUnorm2x16(v))); }\n");
+    assert!(
+        s.info_log()
+            .contains("#extension GL_ARB_shading_language_packing"),
+        "{}",
+        s.info_log()
+    );
+    assert!(!frag(&format!("#version 130\n{EXT}void main() {{ gl_FragColor = vec4(float(packUnorm4x8(vec2(0.0)))); }}\n")).ok());
+    // 1.10 accepts the directive and defines the macro; its functions
+    // need `uint`, so they are 1.30's.
+    ok(frag(&format!("#version 110\n{EXT}#if GL_ARB_shading_language_packing != 1\n#error no macro\n#endif\nvoid main() {{ gl_FragColor = vec4(0.0); }}\n")));
+    assert!(!frag(&format!(
+        "#version 120\n{EXT}void main() {{ gl_FragColor = unpackUnorm4x8(0); }}\n"
+    ))
+    .ok());
+}
+
+#[test]
+fn cube_map_array_samplers_need_their_extension() {
+    const EXT: &str = "#extension GL_ARB_texture_cube_map_array : require\n";
+    let body = "uniform samplerCubeArray s;
+uniform samplerCubeArrayShadow z;
+uniform isamplerCubeArray i;
+uniform usamplerCubeArray u;
+in vec4 p;
+void main() {
+    ivec3 n = textureSize(s, 0) + textureSize(z, 1) + textureSize(i, 0) + textureSize(u, 2);
+    vec4 c = texture(s, p) + textureLod(s, p, 1.0) + textureGrad(s, p, p.xyz, p.zyx);
+    c += vec4(texture(i, p)) + vec4(textureLod(u, p, 0.0)) + vec4(textureGrad(i, p, p.xyz, p.xyz));
+    gl_Position = c + vec4(n, texture(z, p, 0.5));
+}
+";
+    ok(vert(&format!("#version 130\n{EXT}{body}")));
+    let s = compile(
+        &[&format!("#version 150\n{EXT}uniform samplerCubeArray s;\nout vec4 o;\nvoid main() {{ o = texture(s, vec4(0.0), 2.0); }}\n")],
+        &CompileOptions::new(Stage::Fragment),
+    );
+    assert!(s.ok(), "{}", s.info_log());
+    // Without the extension the type names are identifiers.
+    assert!(!vert(&format!("#version 130\n{body}")).ok());
+    ok(vert("#version 130\nint samplerCubeArray = 1;\nvoid main() { gl_Position = vec4(samplerCubeArray); }\n"));
+    // Before 1.30 the directive and macro only.
+    ok(vert(&format!("#version 110\n{EXT}#if GL_ARB_texture_cube_map_array != 1\n#error no macro\n#endif\nvoid main() {{ gl_Position = vec4(0.0); }}\n")));
+    assert!(!vert(&format!("#version 120\n{EXT}uniform samplerCubeArray s;\nvoid main() {{ gl_Position = vec4(0.0); }}\n")).ok());
+    // What the extension does not have: a bias outside the fragment
+    // stage, offsets, projections, fetches, a bias on the shadow form,
+    // a vec3 coordinate.
+    for bad in [
+        "uniform samplerCubeArray s;\nvoid main() { gl_Position = texture(s, vec4(0.0), 1.0); }",
+        "uniform samplerCubeArray s;\nvoid main() { gl_Position = textureOffset(s, vec4(0.0), ivec3(0)); }",
+        "uniform samplerCubeArray s;\nvoid main() { gl_Position = textureProj(s, vec4(0.0)); }",
+        "uniform samplerCubeArray s;\nvoid main() { gl_Position = texelFetch(s, ivec4(0), 0); }",
+        "uniform samplerCubeArray s;\nvoid main() { gl_Position = texture(s, vec3(0.0)); }",
+        "uniform samplerCubeArrayShadow s;\nvoid main() { gl_Position = vec4(texture(s, vec4(0.0))); }",
+        "uniform samplerCubeArrayShadow s;\nvoid main() { gl_Position = vec4(textureLod(s, vec4(0.0), 0.0, 1.0)); }",
+    ] {
+        let s = vert(&format!("#version 130\n{EXT}{bad}\n"));
+        assert!(!s.ok(), "{bad}");
+    }
+}
+
+#[test]
 fn empty_shaders_are_syntax_errors() {
     // GLSL's translation_unit is one or more external declarations.
     fails(frag(""), Code::Syntax);

@@ -28,7 +28,15 @@ fn ramp(w: u32, h: u32, levels: u32) -> Texture {
 
 fn at(tex: &Texture, s: f32, t: f32, lod: f32) -> [f32; 4] {
     let q = tex.last_level().expect("complete");
-    sample(tex, q, [s, t, 0.0], LodBase::Value(lod), 0.0, None, [0; 3])
+    sample(
+        tex,
+        q,
+        [s, t, 0.0, 1.0],
+        LodBase::Value(lod),
+        0.0,
+        None,
+        [0; 3],
+    )
 }
 
 #[test]
@@ -181,12 +189,12 @@ fn lod_from_derivatives() {
     let q = tex.last_level().unwrap();
     let lod = LodBase::Derivatives([0.5, 0.0, 0.0], [0.0, 0.125, 0.0]);
     assert_eq!(
-        sample(&tex, q, [0.5, 0.5, 0.0], lod, 0.0, None, [0; 3])[2],
+        sample(&tex, q, [0.5, 0.5, 0.0, 1.0], lod, 0.0, None, [0; 3])[2],
         2.0
     );
     // A shader bias of -1 gives level 1.
     assert_eq!(
-        sample(&tex, q, [0.5, 0.5, 0.0], lod, -1.0, None, [0; 3])[2],
+        sample(&tex, q, [0.5, 0.5, 0.0, 1.0], lod, -1.0, None, [0; 3])[2],
         1.0
     );
 }
@@ -224,6 +232,82 @@ fn incomplete_textures_sample_black() {
     assert_eq!(out[3][1], 1.0);
 }
 
+/// A cube map array picks the face as a cube map does and the cube as an
+/// array its layer (clamp(RNE(q), 0, cubes − 1)); every filter and level
+/// reads that layer-face of each level.
+#[test]
+fn cube_map_array_layer_faces() {
+    // Two cubes, 2×2 then 1×1: texel value (layer-face, level).
+    let level = |size: u32, l: f32| {
+        let t = (0..12)
+            .flat_map(|lf| vec![[lf as f32, l, 0.0, 1.0]; (size * size) as usize])
+            .collect();
+        Image::new(size, size, 12, t)
+    };
+    let mut tex = Texture::new(TextureTarget::CubeArray, vec![level(2, 0.0), level(1, 1.0)]);
+    assert_eq!(tex.last_level(), Some(1));
+    // Every level has the base level's layer-faces.
+    tex.levels[1] = Image::new(1, 1, 6, vec![[0.0; 4]; 6]);
+    assert_eq!(tex.last_level(), None);
+    tex.levels.truncate(1);
+    tex.min_filter = MinFilter::Nearest;
+    tex.mag_filter = MagFilter::Nearest;
+    assert_eq!(tex.last_level(), Some(0));
+    let at = |tex: &Texture, dir: [f32; 3], layer: f32, lod: f32| {
+        let q = tex.last_level().unwrap();
+        let c = [dir[0], dir[1], dir[2], layer];
+        sample(tex, q, c, LodBase::Value(lod), 0.0, None, [0; 3])
+    };
+    assert_eq!(at(&tex, [0.0, 0.0, -1.0], 0.0, 0.0)[0], 5.0);
+    assert_eq!(at(&tex, [0.0, 0.0, -1.0], 1.0, 0.0)[0], 11.0);
+    // The layer rule of arrays: ⌊q + ½⌋ clamped, NaN the first.
+    assert_eq!(at(&tex, [1.0, 0.2, 0.1], 0.49, 0.0)[0], 0.0);
+    assert_eq!(at(&tex, [1.0, 0.2, 0.1], 0.5, 0.0)[0], 6.0);
+    assert_eq!(at(&tex, [-1.0, 0.2, 0.1], 7.0, 0.0)[0], 7.0);
+    assert_eq!(at(&tex, [-1.0, 0.2, 0.1], -3.0, 0.0)[0], 1.0);
+    assert_eq!(at(&tex, [-1.0, 0.2, 0.1], f32::NAN, 0.0)[0], 1.0);
+    assert_eq!(at(&tex, [0.0, -2.0, 0.1], 1.0, 0.0)[0], 9.0);
+    // Bilinear on a face: the four taps of one layer-face.
+    tex.mag_filter = MagFilter::Linear;
+    let v = at(&tex, [0.3, 1.0, -0.2], 1.0, -1.0);
+    assert!((v[0] - 8.0).abs() < 1e-5, "{v:?}");
+    // Mipmapped: the level from λ, the layer-face on each.
+    tex.levels = vec![level(2, 0.0), level(1, 1.0)];
+    tex.mag_filter = MagFilter::Nearest;
+    tex.min_filter = MinFilter::NearestMipmapNearest;
+    assert_eq!(at(&tex, [0.0, 1.0, 0.0], 1.0, 1.0), [8.0, 1.0, 0.0, 1.0]);
+    assert_eq!(at(&tex, [0.0, 1.0, 0.0], 1.0, 0.0), [8.0, 0.0, 0.0, 1.0]);
+    tex.min_filter = MinFilter::NearestMipmapLinear;
+    let v = at(&tex, [0.0, 1.0, 0.0], 1.0, 0.25);
+    assert!(
+        (v[0] - 8.0).abs() < 1e-5 && (v[1] - 0.25).abs() < 1e-6,
+        "{v:?}"
+    );
+    // A non-square base level is incomplete.
+    let flat = Image::new(2, 1, 12, vec![[0.0; 4]; 24]);
+    assert_eq!(
+        Texture::new(TextureTarget::CubeArray, vec![flat]).last_level(),
+        None
+    );
+    // textureSize counts cubes.
+    let units = [TextureUnit {
+        cube_array: Some(Arc::new(tex)),
+        ..TextureUnit::default()
+    }];
+    assert_eq!(
+        size_general(&units, 0, SamplerKind::SamplerCubeArray, 0),
+        [2, 2, 2]
+    );
+    assert_eq!(
+        size_general(&units, 0, SamplerKind::ISamplerCubeArray, 1),
+        [1, 1, 2]
+    );
+    assert_eq!(
+        size_general(&units, 0, SamplerKind::SamplerCube, 0),
+        [0, 0, 0]
+    );
+}
+
 #[test]
 fn cube_face_selection() {
     assert_eq!(cube_face([1.0, 0.5, -0.2]), (0, 0.2, -0.5, 1.0));
@@ -243,7 +327,15 @@ fn cube_face_selection() {
         ([-1.0, 0.0, 0.0], 1.0),
     ] {
         assert_eq!(
-            sample(&tex, q, dir, LodBase::Value(0.0), 0.0, None, [0; 3])[0],
+            sample(
+                &tex,
+                q,
+                [dir[0], dir[1], dir[2], 1.0],
+                LodBase::Value(0.0),
+                0.0,
+                None,
+                [0; 3]
+            )[0],
             face
         );
     }
@@ -263,7 +355,7 @@ fn shadow_compare_and_depth_modes() {
         sample(
             tex,
             q,
-            [0.5, 0.5, 0.0],
+            [0.5, 0.5, 0.0, 1.0],
             LodBase::Value(0.0),
             0.0,
             Some(r),
@@ -304,10 +396,18 @@ fn garbage_coordinates_do_not_panic() {
         TextureTarget::Tex2D,
         TextureTarget::Tex3D,
         TextureTarget::Cube,
+        TextureTarget::CubeArray,
     ] {
-        let depth = if target == TextureTarget::Cube { 6 } else { 2 };
+        let depth = match target {
+            TextureTarget::Cube => 6,
+            TextureTarget::CubeArray => 12,
+            _ => 2,
+        };
         let h = if target == TextureTarget::Tex1D { 1 } else { 2 };
-        let d = if target == TextureTarget::Tex3D || target == TextureTarget::Cube {
+        let d = if matches!(
+            target,
+            TextureTarget::Tex3D | TextureTarget::Cube | TextureTarget::CubeArray
+        ) {
             depth
         } else {
             1
@@ -332,8 +432,16 @@ fn garbage_coordinates_do_not_panic() {
                 for &a in &vals {
                     for &b in &vals {
                         let lod = LodBase::Derivatives([a, b, a], [b, a, 1.0]);
-                        let _ = sample(&tex, q, [a, b, 0.25], lod, b, Some(a), [0; 3]);
-                        let _ = sample(&tex, q, [b, 0.5, a], LodBase::Value(a), 0.0, None, [0; 3]);
+                        let _ = sample(&tex, q, [a, b, 0.25, a], lod, b, Some(a), [0; 3]);
+                        let _ = sample(
+                            &tex,
+                            q,
+                            [b, 0.5, a, b],
+                            LodBase::Value(a),
+                            0.0,
+                            None,
+                            [0; 3],
+                        );
                     }
                 }
             }
@@ -362,7 +470,16 @@ fn nearest(mut tex: Texture) -> Texture {
 
 fn at_offset(tex: &Texture, coord: [f32; 3], offset: [i32; 3]) -> [f32; 4] {
     let q = tex.last_level().expect("complete");
-    sample(tex, q, coord, LodBase::Value(0.0), 0.0, None, offset)
+    let [s, t, r] = coord;
+    sample(
+        tex,
+        q,
+        [s, t, r, 1.0],
+        LodBase::Value(0.0),
+        0.0,
+        None,
+        offset,
+    )
 }
 
 #[test]
