@@ -104,7 +104,8 @@ def main():
     ap.add_argument("--lib", help="directory of shaderbox's libOSMesa.so (default: build it)")
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--frames", type=int, default=3)
-    ap.add_argument("--only", help="the scenes whose spec contains this")
+    ap.add_argument("--only", action="append",
+                    help="a scene's spec, or a part of specs (repeatable): only those")
     ap.add_argument("--instructions", choices=["shaderbox", "both"],
                     help="also count instructions with callgrind (slow: llvmpipe's dense "
                          "scenes take most of an hour), of shaderbox or of both")
@@ -114,7 +115,8 @@ def main():
     ghz = clock_ghz()
     rows = []
     for spec, what in SCENES:
-        if args.only and args.only not in spec:
+        exact = [o for o in args.only or [] if o in (sc for sc, _ in SCENES)]
+        if args.only and not (spec in exact or any(o in spec for o in args.only if o not in exact)):
             continue
         t = timed(spec, libdir, args.rounds, args.frames)
         (sb, n), (lp, _) = t["shaderbox"], t["llvmpipe"]
