@@ -69,6 +69,11 @@ impl Default for GeometryParams {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct LinkOptions {
     pub geometry: GeometryParams,
+    /// GL_PROGRAM_SEPARABLE (GL_ARB_separate_shader_objects): the program
+    /// may hold any subset of the stages, a geometry stage without a
+    /// vertex stage included, its other stages coming from other programs
+    /// at draw time.
+    pub separable: bool,
 }
 
 /// A link diagnostic and the shader object it points into, if any.
@@ -192,7 +197,7 @@ pub fn link_with(shaders: &[&Shader], opts: &LinkOptions) -> Program {
         match program.stage(Stage::Geometry) {
             // GL 3.2 §2.12.2 (and GL_EXT_geometry_shader4): linking fails
             // when a program has a geometry shader but no vertex shader.
-            Some(_) if v.is_none() => push(
+            Some(_) if v.is_none() && !opts.separable => push(
                 &mut diags,
                 None,
                 Code::LinkNoMain,

@@ -293,7 +293,16 @@ pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<
         .iter()
         .filter(|g| !g.builtin && g.block.is_none())
     {
-        let vg = vm.globals.iter().find(|g| g.name == fg.name);
+        // An input with a location takes the output with that location
+        // whatever its name (GL_ARB_separate_shader_objects, "Shader
+        // Interface Matching"); the others match by name.
+        let vg = match fg.location {
+            Some(l) => vm
+                .globals
+                .iter()
+                .find(|g| g.storage == Storage::Varying && g.location == Some(l)),
+            None => vm.globals.iter().find(|g| g.name == fg.name),
+        };
         let fty = if per_vertex {
             per_vertex_row(fm, fg.ty.element())
         } else {
