@@ -133,7 +133,11 @@ pub enum Requirement {
     Rlimit(u64),
     /// `ignore_missing_uniforms`.
     IgnoreMissingUniforms,
-    /// Something shaderbox cannot provide (SSO, SPIR-V only, ...).
+    /// `SSO ENABLED`: each stage is linked into a separable program of
+    /// its own and the programs are bound in a program pipeline
+    /// (GL_ARB_separate_shader_objects, needed below GL 4.1).
+    SeparateShaderObjects,
+    /// Something shaderbox cannot provide (SPIR-V only, ...).
     Unsupported(String),
 }
 
@@ -535,10 +539,13 @@ fn parse_requirement(raw: &str, line: usize) -> Result<Option<Requirement>, Scri
             .ok_or_else(|| err(line, format!("invalid rlimit argument at: {}", rest.trim())))?;
         return Ok(Some(Requirement::Rlimit(u64::from(v as u32))));
     }
-    if s.starts_with("SSO") || s.starts_with("SEPARABLE PROGRAM") {
-        return Ok(Some(Requirement::Unsupported(
-            "separate shader objects (GL_ARB_separate_shader_objects)".into(),
-        )));
+    if let Some(rest) = s.strip_prefix("SSO") {
+        // piglit reads `SSO` followed by `ENABLED` (spaces between) and
+        // ignores any other `SSO` line.
+        if scan::skip_space(rest).starts_with("ENABLED") {
+            return Ok(Some(Requirement::SeparateShaderObjects));
+        }
+        return Ok(None);
     }
     if let Some(rest) = s.strip_prefix("SPIRV") {
         let rest = scan::skip_space(rest);
@@ -819,5 +826,14 @@ draw rect -1 -1 2 2
         assert_eq!(s.shaders[0].source, None);
         assert_eq!(s.shaders[1].source.as_deref(), Some("x\n"));
         assert!(!s.has_test);
+    }
+
+    #[test]
+    fn sso_enabled_is_a_requirement() {
+        assert_eq!(
+            parse_requirement("SSO   ENABLED", 3).unwrap(),
+            Some(Requirement::SeparateShaderObjects)
+        );
+        assert_eq!(parse_requirement("SSO DISABLED", 3).unwrap(), None);
     }
 }
