@@ -794,6 +794,18 @@ fn separate_shader_objects_varying_locations() {
         "{ext}layout(location = 3) in vec4 a; out vec4 c; void main() {{ c = a; }}"
     ));
     assert!(!crate::link::link(&[&v, &g]).ok());
+    // Two outputs on one location, or one past the last, do not link.
+    for bad in [
+        "layout(location = 1) out vec4 a; layout(location = 1) out vec4 b;",
+        "layout(location = 0) out vec4 a[2]; layout(location = 1) out vec4 b;",
+        "layout(location = 31) out vec4 a[2]; out vec4 b;",
+    ] {
+        let v = vert(&format!(
+            "{ext}in vec4 p; {bad} void main() {{ gl_Position = p; }}"
+        ));
+        ok(&v);
+        assert!(!crate::link::link(&[&v]).ok(), "{bad}");
+    }
     // The extension is what allows them: 1.50 and 3.30 alone do not (3.30
     // has `layout(location)', on vertex inputs and fragment outputs only).
     for version in ["150", "330"] {
@@ -843,4 +855,16 @@ fn separable_programs_need_no_vertex_stage() {
     };
     let p = crate::link::link_with(&[&gs], &opts);
     assert!(p.ok(), "{}", p.info_log());
+    // GL_EXT_separate_shader_objects' rule: without user-defined inputs.
+    let lone = crate::link::LinkOptions {
+        lone_geometry: true,
+        ..Default::default()
+    };
+    assert!(crate::link::link_with(&[&gs], &lone).ok());
+    let reads_user = compile(
+        &["#version 150\nlayout(triangles) in; layout(triangle_strip, max_vertices = 3) out;\nin vec4 c[];\nvoid main() { gl_Position = c[0]; EmitVertex(); }"],
+        &CompileOptions::new(Stage::Geometry),
+    );
+    ok(&reads_user);
+    assert!(!crate::link::link_with(&[&reads_user], &lone).ok());
 }
