@@ -187,6 +187,20 @@ gl_entry_points! {
             }
         }
     }
+    // GL_EXT_separate_shader_objects (compatibility contexts).
+    fn glUseShaderProgramEXT(kind: GLenum, program: GLuint) => |c| {
+        c.gl.use_shader_program_ext(kind, program)
+    }
+    fn glActiveProgramEXT(program: GLuint) => |c| { c.gl.active_program_ext(program) }
+    fn glCreateShaderProgramEXT(kind: GLenum, string: *const GLchar) -> GLuint [0] => |c| {
+        match source_strings(1, &string, std::ptr::null()) {
+            Ok(parts) => c.gl.create_shader_program_ext(kind, &parts[0]),
+            Err(e) => {
+                c.gl.record_error(e);
+                0
+            }
+        }
+    }
     fn glGenProgramPipelines(n: GLsizei, pipelines: *mut GLuint) => |c| {
         let names = c.gl.gen_program_pipelines(n);
         wr(pipelines, &names);

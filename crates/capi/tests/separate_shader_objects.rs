@@ -54,6 +54,9 @@ const NAMES: &[&str] = &[
     "glProgramUniformMatrix4x2fv",
     "glProgramUniformMatrix3x4fv",
     "glProgramUniformMatrix4x3fv",
+    "glUseShaderProgramEXT",
+    "glActiveProgramEXT",
+    "glCreateShaderProgramEXT",
 ];
 
 #[test]
@@ -135,6 +138,39 @@ fn a_pipeline_draws_through_the_c_abi() {
         glDeleteProgramPipelines(1, &pipe);
         assert_eq!(glIsProgramPipeline(pipe), 0);
         glGetIntegerv(GL_PROGRAM_PIPELINE_BINDING, &mut v);
+        assert_eq!(v, 0);
+    });
+}
+
+/// GL_EXT_separate_shader_objects on a compatibility context: a vertex
+/// program and a fragment program bound with glUseShaderProgramEXT,
+/// uniforms through glActiveProgramEXT.
+#[test]
+fn ext_attachment_points_through_the_c_abi() {
+    common::with_context(8, 8, Some(OSMESA_COMPAT_PROFILE), |_| unsafe {
+        let vs_src = CString::new(VS).unwrap();
+        let fs_src = CString::new(FS).unwrap();
+        let vs = glCreateShaderProgramEXT(GL_VERTEX_SHADER, vs_src.as_ptr());
+        let fs = glCreateShaderProgramEXT(GL_FRAGMENT_SHADER, fs_src.as_ptr());
+        let mut v = 0;
+        glGetProgramiv(fs, GL_LINK_STATUS, &mut v);
+        assert_eq!(v, 1);
+        glUseShaderProgramEXT(GL_VERTEX_SHADER, vs);
+        glUseShaderProgramEXT(GL_FRAGMENT_SHADER, fs);
+        glActiveProgramEXT(fs);
+        glGetIntegerv(GL_CURRENT_PROGRAM, &mut v);
+        assert_eq!(v, fs as i32);
+        let name = CString::new("tint").unwrap();
+        let tint = glGetUniformLocation(fs, name.as_ptr());
+        glUniform4f(tint, 1.0, 0.0, 0.0, 0.0);
+        common::quad_vertex_array(vs, "pos");
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        assert_eq!(glGetError(), GL_NO_ERROR);
+        assert_eq!(common::pixel_at(4, 4), [255, 255, 0, 255]);
+        glUseShaderProgramEXT(0xdead, vs);
+        assert_eq!(glGetError(), GL_INVALID_ENUM);
+        glUseProgram(0);
+        glGetIntegerv(GL_CURRENT_PROGRAM, &mut v);
         assert_eq!(v, 0);
     });
 }

@@ -234,7 +234,7 @@ impl Context {
             GL_COLOR_CLEAR_VALUE => nrm(&st.clear_color),
             GL_DEPTH_CLEAR_VALUE => nrm(&[st.clear_depth]),
             GL_STENCIL_CLEAR_VALUE => int(&[st.clear_stencil as i64]),
-            GL_CURRENT_PROGRAM => int(&[self.current_program as i64]),
+            GL_CURRENT_PROGRAM => int(&[self.current_program_query() as i64]),
             GL_PROGRAM_PIPELINE_BINDING => int(&[self.pipelines.bound as i64]),
             GL_CURRENT_COLOR => nrm(&self.va.color),
             GL_CURRENT_RASTER_POSITION => flt(&self.raster.window),

@@ -414,6 +414,9 @@ impl Context {
                 &glsl::link::LinkOptions {
                     geometry: p.geometry,
                     separable: p.separable,
+                    // GL_EXT_separate_shader_objects, offered where the
+                    // geometry_shader4 extensions are.
+                    lone_geometry: self.api.compatibility(),
                 },
             )
         };
@@ -472,6 +475,9 @@ impl Context {
             }
         }
         let old = std::mem::replace(&mut self.current_program, program);
+        for ext in self.clear_ext_bindings() {
+            self.release_program(ext);
+        }
         self.release_program(old);
     }
 

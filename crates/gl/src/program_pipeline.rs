@@ -20,7 +20,8 @@
 //!   is first bound or named by glUseProgramStages, glActiveShaderProgram,
 //!   glValidateProgramPipeline or glGetProgramPipelineiv; glIsProgramPipeline
 //!   is true only from then on. Names never generated (or deleted) are
-//!   GL_INVALID_OPERATION for all of those.
+//!   GL_INVALID_OPERATION for all of those, GL_INVALID_VALUE for
+//!   glGetProgramPipelineInfoLog.
 //! - A draw through a pipeline first validates it (the rules of
 //!   [`Context::validate_program_pipeline`]); an invalid pipeline draws
 //!   nothing and records GL_INVALID_OPERATION.
@@ -30,6 +31,16 @@
 //!   as part of GL_ALL_SHADER_BITS.
 //! - A program referenced by a pipeline stays alive after glDeleteProgram
 //!   until no pipeline and no context binding refers to it.
+//! - GL_EXT_separate_shader_objects (compatibility contexts, whose
+//!   geometry shaders it needs): glUseShaderProgramEXT and
+//!   glActiveProgramEXT set the context's own attachment points, which
+//!   glUseProgram sets all at once ([`ExtBindings`]); while any holds a
+//!   program they take precedence over a bound pipeline, as the ARB
+//!   extension's "Dependencies on EXT_separate_shader_objects" says.
+//!   GL_CURRENT_PROGRAM (its GL_ACTIVE_PROGRAM_EXT) is the active program.
+//!   A program linked on such a context may hold a geometry stage without
+//!   a vertex stage when the geometry shader declares no user-defined
+//!   inputs (the extension's change to glLinkProgram).
 
 use crate::enums::*;
 use crate::program::Executable;
@@ -70,6 +81,28 @@ pub struct Pipeline {
     pub info_log: String,
 }
 
+/// GL_EXT_separate_shader_objects' attachment points, once
+/// glUseShaderProgramEXT or glActiveProgramEXT made them differ from one
+/// glUseProgram program: the program of each stage of [`STAGES`] and the
+/// active program (glUniform*'s, GL_ACTIVE_PROGRAM_EXT).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ExtBindings {
+    pub stages: [u32; 3],
+    pub active: u32,
+}
+
+impl ExtBindings {
+    /// Whether any attachment point holds a program (they then take
+    /// precedence over a bound pipeline).
+    fn any(&self) -> bool {
+        self.active != 0 || self.stages.iter().any(|&p| p != 0)
+    }
+
+    fn references(&self, program: u32) -> bool {
+        self.active == program || self.stages.contains(&program)
+    }
+}
+
 /// The context's pipeline names and the bound pipeline.
 #[derive(Default)]
 pub struct Pipelines {
@@ -79,6 +112,10 @@ pub struct Pipelines {
     next: u32,
     /// GL_PROGRAM_PIPELINE_BINDING.
     pub bound: u32,
+    /// GL_EXT_separate_shader_objects' attachment points while they
+    /// differ from one program (else `None`, and `Context::current_program`
+    /// is every stage's and the active program).
+    pub ext: Option<ExtBindings>,
 }
 
 impl Pipelines {
@@ -101,6 +138,9 @@ impl Context {
     pub(crate) fn stage_program(&self, stage: Stage) -> u32 {
         if self.current_program != 0 {
             return self.current_program;
+        }
+        if let Some(b) = self.pipelines.ext.filter(ExtBindings::any) {
+            return b.stages[stage_index(stage)];
         }
         self.pipelines
             .get(self.pipelines.bound)
@@ -143,15 +183,122 @@ impl Context {
         if self.current_program != 0 {
             return self.current_program;
         }
+        if let Some(b) = self.pipelines.ext.filter(ExtBindings::any) {
+            return b.active;
+        }
         self.pipelines
             .get(self.pipelines.bound)
             .map_or(0, |p| p.active)
     }
 
-    /// Whether `program` is referenced by any pipeline (so glDeleteProgram
+    /// Whether `program` is referenced by any pipeline or
+    /// GL_EXT_separate_shader_objects attachment point (so glDeleteProgram
     /// only flags it).
     pub(crate) fn pipeline_references(&self, program: u32) -> bool {
         self.pipelines.references(program)
+            || self.pipelines.ext.is_some_and(|b| b.references(program))
+    }
+
+    /// GL_CURRENT_PROGRAM, which is GL_ACTIVE_PROGRAM_EXT: the active
+    /// program (glUseProgram's unless glActiveProgramEXT changed it).
+    pub(crate) fn current_program_query(&self) -> u32 {
+        match self.pipelines.ext {
+            Some(b) => b.active,
+            None => self.current_program,
+        }
+    }
+
+    /// glUseProgram's effect on GL_EXT_separate_shader_objects' attachment
+    /// points: all of them become `program` (`current_program`).
+    pub(crate) fn clear_ext_bindings(&mut self) -> Vec<u32> {
+        self.pipelines
+            .ext
+            .take()
+            .map(|b| b.stages.into_iter().chain([b.active]).collect())
+            .unwrap_or_default()
+    }
+
+    /// Checks glUseShaderProgramEXT's and glActiveProgramEXT's common
+    /// conditions: a compatibility context (the extension's), no
+    /// glBegin/glEnd, no active transform feedback, and `program` 0 or
+    /// linked (GL_INVALID_VALUE for an unknown name, GL_INVALID_OPERATION
+    /// otherwise).
+    fn ext_call_accepts(&mut self, program: u32) -> bool {
+        if self.reject_in_begin() {
+            return false;
+        }
+        if !self.api.compatibility() || self.feedback_active() {
+            self.set_error(GL_INVALID_OPERATION);
+            return false;
+        }
+        self.check_pipeline_program(program, false)
+    }
+
+    /// Changes GL_EXT_separate_shader_objects' attachment points with
+    /// `f`, folding them back into `current_program` when they agree.
+    fn update_ext(&mut self, f: impl FnOnce(&mut ExtBindings)) {
+        let cur = self.current_program;
+        let before = self.pipelines.ext.unwrap_or(ExtBindings {
+            stages: [cur; 3],
+            active: cur,
+        });
+        let mut b = before;
+        f(&mut b);
+        let one = b.stages.iter().all(|&p| p == b.active);
+        if one {
+            self.pipelines.ext = None;
+            self.current_program = b.active;
+        } else {
+            self.pipelines.ext = Some(b);
+            self.current_program = 0;
+        }
+        for old in before.stages.into_iter().chain([before.active, cur]) {
+            self.release_program(old);
+        }
+    }
+
+    /// glUseShaderProgramEXT (GL_EXT_separate_shader_objects, compatibility
+    /// contexts): `program`'s executable for the stage of shader type
+    /// `kind` (GL_INVALID_ENUM for another type).
+    pub fn use_shader_program_ext(&mut self, kind: u32, program: u32) {
+        let i = match kind {
+            GL_VERTEX_SHADER => 0,
+            GL_GEOMETRY_SHADER => 1,
+            GL_FRAGMENT_SHADER => 2,
+            _ => {
+                if !self.reject_in_begin() {
+                    self.set_error(GL_INVALID_ENUM);
+                }
+                return;
+            }
+        };
+        if self.ext_call_accepts(program) {
+            self.update_ext(|b| b.stages[i] = program);
+        }
+    }
+
+    /// glActiveProgramEXT: the program glUniform* update.
+    pub fn active_program_ext(&mut self, program: u32) {
+        if self.ext_call_accepts(program) {
+            self.update_ext(|b| b.active = program);
+        }
+    }
+
+    /// glCreateShaderProgramEXT: glCreateShaderProgramv's program of one
+    /// string, not flagged separable (the EXT form has no such flag).
+    pub fn create_shader_program_ext(&mut self, kind: u32, source: &str) -> u32 {
+        if self.reject_in_begin() {
+            return 0;
+        }
+        if !self.api.compatibility() {
+            self.set_error(GL_INVALID_OPERATION);
+            return 0;
+        }
+        let p = self.create_shader_programv(kind, &[source]);
+        if let Some(obj) = self.programs.get_mut(&p) {
+            obj.separable = false;
+        }
+        p
     }
 
     /// glGenProgramPipelines: `n` fresh names (GL_INVALID_VALUE for a
@@ -403,7 +550,8 @@ impl Context {
     /// with a current program); else its validation, GL_INVALID_OPERATION
     /// when it fails.
     pub(crate) fn pipeline_draw_check(&mut self) -> bool {
-        if self.current_program != 0 || self.pipelines.bound == 0 {
+        let ext = self.pipelines.ext.is_some_and(|b| b.any());
+        if self.current_program != 0 || ext || self.pipelines.bound == 0 {
             return true;
         }
         if self.pipeline_invalid(self.pipelines.bound, false).is_some() {
@@ -433,14 +581,21 @@ impl Context {
         self.iv_query(Some(v))
     }
 
-    /// glGetProgramPipelineInfoLog: the last validation's log.
+    /// glGetProgramPipelineInfoLog: the last validation's log (empty for
+    /// a generated name whose object does not exist yet, which this call
+    /// does not create); GL_INVALID_VALUE for a name never generated (GL
+    /// 4.1 §6.1.12).
     pub fn get_program_pipeline_info_log(&mut self, name: u32) -> String {
         if self.reject_in_begin() {
             return String::new();
         }
-        self.pipeline_mut(name)
-            .map(|p| p.info_log.clone())
-            .unwrap_or_default()
+        match self.pipelines.objects.get(&name) {
+            Some(p) => p.as_ref().map(|p| p.info_log.clone()).unwrap_or_default(),
+            None => {
+                self.set_error(GL_INVALID_VALUE);
+                String::new()
+            }
+        }
     }
 
     /// glCreateShaderProgramv: a separable program linked from one shader

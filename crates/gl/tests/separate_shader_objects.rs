@@ -81,6 +81,8 @@ fn pipeline_objects_and_their_errors() {
     let names = ctx.gen_program_pipelines(2);
     assert_eq!(names.len(), 2);
     let (a, b) = (names[0], names[1]);
+    assert_eq!(ctx.get_program_pipeline_info_log(a), "");
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
     // Generated names hold no object until first bound or used.
     assert!(!ctx.is_program_pipeline(a));
     ctx.bind_program_pipeline(a);
@@ -103,6 +105,8 @@ fn pipeline_objects_and_their_errors() {
     assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
     assert_eq!(ctx.get_program_pipelineiv(999, GL_ACTIVE_PROGRAM), 0);
     assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+    assert_eq!(ctx.get_program_pipeline_info_log(999), "");
+    assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
     assert_eq!(ctx.gen_program_pipelines(-1), Vec::<u32>::new());
     assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
     // Bad pnames and stage bits.
@@ -394,4 +398,88 @@ void main() { frag = r * 0.5 + b * 0.25; }",
     ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
     assert_eq!(pixel(&mut ctx, 8, 8), [128, 0, 64, 191]);
+}
+
+/// GL_EXT_separate_shader_objects (compatibility contexts): per-stage
+/// attachment points that glUseProgram sets all at once, the active
+/// program as GL_CURRENT_PROGRAM, their precedence over a bound pipeline,
+/// and a geometry stage linked without a vertex stage when it reads only
+/// built-in inputs.
+#[test]
+fn ext_attachment_points() {
+    assert!(!Api::GL33_CORE
+        .extensions()
+        .contains(&"GL_EXT_separate_shader_objects"));
+    for api in [Api::GL21, Api::GL33_COMPAT] {
+        assert!(api.extensions().contains(&"GL_EXT_separate_shader_objects"));
+    }
+    let mut core = Context::with_api(W, H, Api::GL33_CORE);
+    core.use_shader_program_ext(GL_VERTEX_SHADER, 0);
+    assert_eq!(core.get_error(), GL_INVALID_OPERATION);
+
+    let mut ctx = Context::with_api(W, H, Api::GL33_COMPAT);
+    let vs = ctx.create_shader_program_ext(GL_VERTEX_SHADER, VS);
+    let fs = ctx.create_shader_program_ext(GL_FRAGMENT_SHADER, FS);
+    assert_eq!(ctx.get_programiv(fs, GL_LINK_STATUS), 1);
+    assert_eq!(ctx.get_programiv(fs, GL_PROGRAM_SEPARABLE), 0);
+    ctx.use_shader_program_ext(GL_VERTEX_SHADER, vs);
+    ctx.use_shader_program_ext(GL_FRAGMENT_SHADER, fs);
+    assert_eq!(ctx.get_integerv(GL_CURRENT_PROGRAM), vec![0]);
+    ctx.active_program_ext(fs);
+    assert_eq!(ctx.get_integerv(GL_CURRENT_PROGRAM), vec![fs as i32]);
+    let tint = ctx.get_uniform_location(fs, "tint");
+    ctx.uniform_4f(tint, 1.0, 0.0, 0.0, 0.0);
+    quad(&mut ctx, vs);
+    ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    assert_eq!(pixel(&mut ctx, 8, 8), [255, 255, 0, 255]);
+    // They take precedence over a bound pipeline (of no program).
+    let pipe = ctx.gen_program_pipelines(1)[0];
+    ctx.bind_program_pipeline(pipe);
+    ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, 4);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    // Errors: an unknown type, an unknown name, an unlinked program.
+    ctx.use_shader_program_ext(0x1234, vs);
+    assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
+    ctx.active_program_ext(4242);
+    assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    let unlinked = ctx.create_program();
+    ctx.use_shader_program_ext(GL_VERTEX_SHADER, unlinked);
+    assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);
+    // A program deleted while attached lives until detached.
+    ctx.delete_program(vs);
+    assert!(ctx.is_program(vs));
+    // glUseProgram sets every attachment point.
+    ctx.use_program(0);
+    assert!(!ctx.is_program(vs));
+    assert_eq!(ctx.get_integerv(GL_CURRENT_PROGRAM), vec![0]);
+    // Agreeing attachment points are one current program again.
+    ctx.use_shader_program_ext(GL_VERTEX_SHADER, fs);
+    ctx.use_shader_program_ext(GL_GEOMETRY_SHADER, fs);
+    ctx.use_shader_program_ext(GL_FRAGMENT_SHADER, fs);
+    ctx.active_program_ext(fs);
+    assert_eq!(ctx.get_integerv(GL_CURRENT_PROGRAM), vec![fs as i32]);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+
+    // A geometry shader reading built-in inputs only links alone.
+    let gs = |user: &str| {
+        format!(
+            "#version 120\n#extension GL_EXT_geometry_shader4 : enable\n{user}\nvoid main() {{ for (int i = 0; i < 3; i++) {{ gl_Position = gl_PositionIn[i]; EmitVertex(); }} }}"
+        )
+    };
+    for (decl, links) in [("", 1), ("varying in vec4 pos[3];", 0)] {
+        let s = ctx.create_shader(GL_GEOMETRY_SHADER);
+        ctx.shader_source(s, &[&gs(decl)]);
+        ctx.compile_shader(s);
+        let p = ctx.create_program();
+        ctx.attach_shader(p, s);
+        ctx.program_parameteri(p, GL_GEOMETRY_VERTICES_OUT_EXT, 3);
+        ctx.link_program(p);
+        assert_eq!(
+            ctx.get_programiv(p, GL_LINK_STATUS),
+            links,
+            "{decl}: {}",
+            ctx.get_program_info_log(p)
+        );
+    }
 }
