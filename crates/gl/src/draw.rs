@@ -81,7 +81,7 @@ impl Context {
         // Without a program the results of a core draw are undefined
         // (§2.11, §3.9), not an error: there is no fixed-function stage
         // to run, so nothing is drawn (as Mesa does).
-        !(self.is_core() && !self.any_stage_program())
+        !self.is_core() || self.any_stage_program()
     }
 
     pub(crate) fn check_fbo_complete(&mut self) -> bool {
