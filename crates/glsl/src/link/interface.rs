@@ -4,7 +4,7 @@
 //! `crate::limits`.
 
 use super::blocks::{check_blocks, check_uniform_blocks};
-use super::types::{components, same_type_across};
+use super::types::{components, same_type_across, same_type_by_location};
 use super::{push, LinkDiagnostic, LinkedStage};
 use crate::diag::Code;
 use crate::ir::{self, Stage, Storage};
@@ -363,7 +363,12 @@ pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<
         match fg.storage {
             s if s == input => match vg {
                 Some(vg) if vg.storage == Storage::Varying => {
-                    if !same_type_across(vm, vg.ty, fm, fty) {
+                    let same = if fg.location.is_some() {
+                        same_type_by_location(vm, vg.ty, fm, fty)
+                    } else {
+                        same_type_across(vm, vg.ty, fm, fty)
+                    };
+                    if !same {
                         push(
                             diags,
                             None,

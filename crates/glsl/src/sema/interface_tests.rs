@@ -794,6 +794,30 @@ fn separate_shader_objects_varying_locations() {
         "{ext}layout(location = 3) in vec4 a; out vec4 c; void main() {{ c = a; }}"
     ));
     assert!(!crate::link::link(&[&v, &g]).ok());
+    // Structures matched by location need the same members, not the
+    // same name; matched by name, they still need the same name.
+    let vs = vert(&format!(
+        "{ext}in vec4 p; layout(location = 0) out struct S {{ vec4 a; }} s; void main() {{ gl_Position = p; s.a = p; }}"
+    ));
+    let by_location = frag(&format!(
+        "{ext}layout(location = 0) in struct T {{ vec4 a; }} t; out vec4 c; void main() {{ c = t.a; }}"
+    ));
+    assert!(crate::link::link(&[&vs, &by_location]).ok());
+    let other_member = frag(&format!(
+        "{ext}layout(location = 0) in struct T {{ vec4 b; }} t; out vec4 c; void main() {{ c = t.b; }}"
+    ));
+    assert!(!crate::link::link(&[&vs, &other_member]).ok());
+    let by_name = |name: &str| {
+        let v = vert(&format!(
+            "#version 150\nin vec4 p; out struct S {{ vec4 a; }} s; void main() {{ gl_Position = p; s.a = p; }}"
+        ));
+        let f = frag(&format!(
+            "#version 150\nin struct {name} {{ vec4 a; }} s; out vec4 c; void main() {{ c = s.a; }}"
+        ));
+        crate::link::link(&[&v, &f]).ok()
+    };
+    assert!(by_name("S"));
+    assert!(!by_name("T"));
     // Two outputs on one location, or one past the last, do not link.
     for bad in [
         "layout(location = 1) out vec4 a; layout(location = 1) out vec4 b;",
