@@ -808,9 +808,9 @@ fn separate_shader_objects_varying_locations() {
     ));
     assert!(!crate::link::link(&[&vs, &other_member]).ok());
     let by_name = |name: &str| {
-        let v = vert(&format!(
-            "#version 150\nin vec4 p; out struct S {{ vec4 a; }} s; void main() {{ gl_Position = p; s.a = p; }}"
-        ));
+        let v = vert(
+            "#version 150\nin vec4 p; out struct S { vec4 a; } s; void main() { gl_Position = p; s.a = p; }",
+        );
         let f = frag(&format!(
             "#version 150\nin struct {name} {{ vec4 a; }} s; out vec4 c; void main() {{ c = s.a; }}"
         ));
