@@ -67,6 +67,48 @@ fn object_parameter(c: &mut OsContext, obj: GLuint, pname: GLenum) -> Option<GLi
     })
 }
 
+/// The strings of glShaderSource or glCreateShaderProgramv: `count`
+/// strings at `strings`, each NUL-terminated or of its length in
+/// `lengths` (null: all NUL-terminated); the GL error otherwise: a
+/// negative count or a null array is GL_INVALID_VALUE, a null string
+/// GL_INVALID_OPERATION (as Mesa answers: GL 2.1 leaves it undefined;
+/// reading it would crash).
+///
+/// # Safety
+/// GL's contract on the pointers.
+unsafe fn source_strings(
+    count: GLsizei,
+    strings: *const *const GLchar,
+    lengths: *const GLint,
+) -> Result<Vec<String>, GLenum> {
+    if count < 0 || (count > 0 && strings.is_null()) {
+        return Err(GL_INVALID_VALUE);
+    }
+    // SAFETY: `count` string pointers at `strings`.
+    if (0..count as usize).any(|i| unsafe { *strings.add(i) }.is_null()) {
+        return Err(GL_INVALID_OPERATION);
+    }
+    let mut parts = Vec::with_capacity(count as usize);
+    for i in 0..count as usize {
+        // SAFETY: as above; each string NUL-terminated or `len` bytes.
+        unsafe {
+            let s = *strings.add(i);
+            let len = if lengths.is_null() {
+                -1
+            } else {
+                *lengths.add(i)
+            };
+            let text = if len < 0 {
+                CStr::from_ptr(s).to_string_lossy().into_owned()
+            } else {
+                String::from_utf8_lossy(bytes(s, len as usize)).into_owned()
+            };
+            parts.push(text);
+        }
+    }
+    Ok(parts)
+}
+
 gl_entry_points! {
     // ---- shaders ----
     fn glCreateShader(kind: GLenum) -> GLuint [0] => |c| { c.gl.create_shader(kind) }
@@ -80,25 +122,13 @@ gl_entry_points! {
         if !c.gl.check_shader(shader) {
             return;
         }
-        // A NULL string: GL_INVALID_OPERATION and the source unchanged, as
-        // Mesa answers (GL 2.1 leaves it undefined; reading it would crash).
-        if (0..count as usize).any(|i| (*strings.add(i)).is_null()) {
-            c.gl.record_error(GL_INVALID_OPERATION);
-            return;
+        match source_strings(count, strings, lengths) {
+            Ok(parts) => {
+                let refs: Vec<&str> = parts.iter().map(|s| s.as_str()).collect();
+                c.gl.shader_source(shader, &refs);
+            }
+            Err(e) => c.gl.record_error(e),
         }
-        let mut parts = Vec::with_capacity(count as usize);
-        for i in 0..count as usize {
-            let s = *strings.add(i);
-            let len = if lengths.is_null() { -1 } else { *lengths.add(i) };
-            let text = if len < 0 {
-                CStr::from_ptr(s).to_string_lossy().into_owned()
-            } else {
-                String::from_utf8_lossy(bytes(s, len as usize)).into_owned()
-            };
-            parts.push(text);
-        }
-        let refs: Vec<&str> = parts.iter().map(|s| s.as_str()).collect();
-        c.gl.shader_source(shader, &refs);
     }
     fn glCompileShader(shader: GLuint) => |c| { c.gl.compile_shader(shader) }
     fn glDeleteShader(shader: GLuint) => |c| { c.gl.delete_shader(shader) }
@@ -140,6 +170,75 @@ gl_entry_points! {
         c.gl.program_parameteri(program, pname, value)
     }
     fn glValidateProgram(program: GLuint) => |c| { c.gl.validate_program(program) }
+
+    // ---- separable programs and program pipelines
+    // (GL_ARB_separate_shader_objects, GL 4.1's names) ----
+    fn glCreateShaderProgramv(
+        kind: GLenum, count: GLsizei, strings: *const *const GLchar
+    ) -> GLuint [0] => |c| {
+        match source_strings(count, strings, std::ptr::null()) {
+            Ok(parts) => {
+                let refs: Vec<&str> = parts.iter().map(|s| s.as_str()).collect();
+                c.gl.create_shader_programv(kind, &refs)
+            }
+            Err(e) => {
+                c.gl.record_error(e);
+                0
+            }
+        }
+    }
+    // GL_EXT_separate_shader_objects (compatibility contexts).
+    fn glUseShaderProgramEXT(kind: GLenum, program: GLuint) => |c| {
+        c.gl.use_shader_program_ext(kind, program)
+    }
+    fn glActiveProgramEXT(program: GLuint) => |c| { c.gl.active_program_ext(program) }
+    fn glCreateShaderProgramEXT(kind: GLenum, string: *const GLchar) -> GLuint [0] => |c| {
+        match source_strings(1, &string, std::ptr::null()) {
+            Ok(parts) => c.gl.create_shader_program_ext(kind, &parts[0]),
+            Err(e) => {
+                c.gl.record_error(e);
+                0
+            }
+        }
+    }
+    fn glGenProgramPipelines(n: GLsizei, pipelines: *mut GLuint) => |c| {
+        let names = c.gl.gen_program_pipelines(n);
+        wr(pipelines, &names);
+    }
+    fn glDeleteProgramPipelines(n: GLsizei, pipelines: *const GLuint) => |c| {
+        if n < 0 {
+            c.gl.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let names = rd_vec(pipelines, n as i64);
+        c.gl.delete_program_pipelines(&names);
+    }
+    fn glIsProgramPipeline(pipeline: GLuint) -> GLboolean [0] => |c| {
+        if c.gl.reject_in_begin() {
+            return 0;
+        }
+        c.gl.is_program_pipeline(pipeline) as GLboolean
+    }
+    fn glBindProgramPipeline(pipeline: GLuint) => |c| { c.gl.bind_program_pipeline(pipeline) }
+    fn glUseProgramStages(pipeline: GLuint, stages: GLbitfield, program: GLuint) => |c| {
+        c.gl.use_program_stages(pipeline, stages, program)
+    }
+    fn glActiveShaderProgram(pipeline: GLuint, program: GLuint) => |c| {
+        c.gl.active_shader_program(pipeline, program)
+    }
+    fn glValidateProgramPipeline(pipeline: GLuint) => |c| {
+        c.gl.validate_program_pipeline(pipeline)
+    }
+    fn glGetProgramPipelineiv(pipeline: GLuint, pname: GLenum, params: *mut GLint) => |c| {
+        let v = c.gl.get_program_pipelineiv(pipeline, pname);
+        wr(params, &[v]);
+    }
+    fn glGetProgramPipelineInfoLog(
+        pipeline: GLuint, buf_size: GLsizei, length: *mut GLsizei, log: *mut GLchar
+    ) => |c| {
+        let s = c.gl.get_program_pipeline_info_log(pipeline);
+        wr_string(c, &s, buf_size, length, log);
+    }
     [list] fn glUseProgram(program: GLuint) => |c| { c.gl.use_program(program) }
     fn glGetProgramiv(program: GLuint, pname: GLenum, params: *mut GLint) => |c| {
         let v = c.gl.get_programiv(program, pname);

@@ -359,6 +359,7 @@ fn compile_and_link(
             vertices_out: 3,
             ..Default::default()
         },
+        ..Default::default()
     };
     let program = glsl::link::link_with(&objects, &params);
     log.push_str(program.info_log());

@@ -333,6 +333,53 @@ probe all rgba 0.0 1.0 0.0 1.0
         }
     }
 
+    /// `SSO ENABLED`: each stage a separable program in a pipeline, the
+    /// fragment input matched by location, a uniform of each stage set
+    /// through `active shader program`.
+    const SSO: &str = "\
+[require]
+GLSL >= 1.50
+SSO ENABLED
+
+[vertex shader]
+#version 150
+#extension GL_ARB_separate_shader_objects : require
+in vec4 piglit_vertex;
+uniform float green;
+layout(location = 3) out vec4 v;
+void main() { gl_Position = piglit_vertex; v = vec4(0.0, green, 0.0, 1.0); }
+
+[fragment shader]
+#version 150
+#extension GL_ARB_separate_shader_objects : require
+uniform float blue;
+layout(location = 3) in vec4 f;
+out vec4 o;
+void main() { o = f + vec4(0.0, 0.0, blue, 0.0); }
+
+[test]
+active shader program GL_VERTEX_SHADER
+uniform float green 0.5
+active shader program GL_FRAGMENT_SHADER
+uniform float blue 0.25
+draw rect -1 -1 2 2
+probe all rgba 0.0 0.5 0.25 1.0
+";
+
+    #[test]
+    fn separate_shader_objects_run_in_a_pipeline() {
+        let path = script("sso", SSO);
+        let o = shaderbox(&["shader-runner", &path, "-auto", "-fbo"]);
+        assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+        assert_eq!(last_line(&o), r#"PIGLIT: {"result": "pass" }"#);
+        // The fragment stage's uniform is not the vertex program's.
+        let text = SSO.replace("active shader program GL_FRAGMENT_SHADER\n", "");
+        let path = script("sso-wrong-program", &text);
+        let o = shaderbox(&["shader-runner", &path, "-auto", "-fbo"]);
+        assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
+        assert!(stdout(&o).contains("cannot get location of uniform \"blue\""));
+    }
+
     #[test]
     fn later_gl_is_a_skip() {
         for (name, req) in [

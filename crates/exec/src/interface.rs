@@ -77,6 +77,10 @@ pub struct Interface {
 pub struct VertexInput {
     pub vertex: usize,
     pub name: String,
+    /// The input array's `layout(location = N)`
+    /// (GL_ARB_separate_shader_objects), which it matches outputs by
+    /// instead of `name`.
+    pub location: Option<u32>,
     pub offset: usize,
     pub components: usize,
 }
@@ -106,6 +110,7 @@ impl Interface {
                         out.push(VertexInput {
                             vertex,
                             name: format!("{block}{after}"),
+                            location: None,
                             offset: slot.offset,
                             components: slot.components,
                         });
@@ -134,6 +139,7 @@ impl Interface {
                             out.push(VertexInput {
                                 vertex,
                                 name: m.name.clone(),
+                                location: None,
                                 offset,
                                 components,
                             });
@@ -143,6 +149,7 @@ impl Interface {
                     _ => out.push(VertexInput {
                         vertex,
                         name: per_vertex_name(&slot.link_name()).to_string(),
+                        location: slot.location,
                         offset: at,
                         components: per,
                     }),
@@ -150,6 +157,37 @@ impl Interface {
             }
         }
         out
+    }
+
+    /// The output of this (earlier) stage that an input of the next stage
+    /// reads, with the component of the output where the input starts:
+    /// for an input with `layout(location = N)`, the output that holds
+    /// location N (an array or matrix output takes one location per
+    /// element or column from its own; GL_ARB_separate_shader_objects'
+    /// matching "by location", whatever the names), else the output of
+    /// the same [`Slot::link_name`].
+    pub fn output_for(&self, link_name: &str, location: Option<u32>) -> Option<(&Slot, usize)> {
+        let Some(l) = location else {
+            return self
+                .outputs
+                .iter()
+                .find(|s| s.link_name() == link_name)
+                .map(|s| (s, 0));
+        };
+        self.outputs.iter().find_map(|s| {
+            let first = s.location?;
+            let columns = match s.ty.base {
+                Base::Matrix { cols, .. } => cols as usize,
+                _ => 1,
+            };
+            let locations = columns
+                * match s.ty.array {
+                    Some(ArraySize::Sized(n)) => n as usize,
+                    _ => 1,
+                };
+            let k = l.checked_sub(first)? as usize;
+            (k < locations).then(|| (s, k * (s.components / locations.max(1))))
+        })
     }
 }
 

@@ -175,9 +175,7 @@ impl Context {
 
     /// The compiled shader objects of the current program for `stage`.
     pub(crate) fn stage_shaders(&self, stage: glsl::Stage) -> Vec<Arc<glsl::Shader>> {
-        self.programs
-            .get(&self.current_program)
-            .and_then(|p| p.exe.as_ref())
+        self.stage_executable(stage)
             .map(|e| {
                 e.shaders
                     .iter()

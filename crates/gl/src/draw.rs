@@ -73,10 +73,15 @@ impl Context {
         if !self.check_fbo_complete() {
             return false;
         }
+        // A pipeline that cannot run is GL_INVALID_OPERATION
+        // (GL_ARB_separate_shader_objects, "Validation").
+        if !self.pipeline_draw_check() {
+            return false;
+        }
         // Without a program the results of a core draw are undefined
         // (§2.11, §3.9), not an error: there is no fixed-function stage
         // to run, so nothing is drawn (as Mesa does).
-        !(self.is_core() && self.current_program == 0)
+        !self.is_core() || self.any_stage_program()
     }
 
     pub(crate) fn check_fbo_complete(&mut self) -> bool {

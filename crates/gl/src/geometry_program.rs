@@ -50,12 +50,21 @@ impl Context {
 
     /// glProgramParameteriEXT / glProgramParameteriARB (and the GL 4.1
     /// entry point glProgramParameteri for the same names): a geometry
-    /// parameter for the program's next link.
+    /// parameter, or GL_PROGRAM_SEPARABLE, for the program's next link.
     pub fn program_parameteri(&mut self, program: u32, pname: u32, value: i32) {
         if self.reject_in_begin() || !self.check_program(program) {
             return;
         }
-        // The extensions' call: compatibility contexts only.
+        // GL_ARB_separate_shader_objects' parameter, on every context.
+        if pname == GL_PROGRAM_SEPARABLE {
+            if value != GL_TRUE as i32 && value != GL_FALSE as i32 {
+                self.set_error(GL_INVALID_VALUE);
+            } else if let Some(p) = self.programs.get_mut(&program) {
+                p.separable = value != 0;
+            }
+            return;
+        }
+        // The geometry parameters: compatibility contexts only.
         if !self.api.compatibility() {
             self.set_error(GL_INVALID_ENUM);
             return;
@@ -204,7 +213,7 @@ impl Context {
     /// The layouts of the current program's linked geometry stage, if it
     /// has one.
     fn current_geometry(&self) -> Option<glsl::ir::GeometryLayout> {
-        self.current_executable()?
+        self.stage_executable(Stage::Geometry)?
             .program
             .stage(Stage::Geometry)
             .map(|g| g.module.geometry)

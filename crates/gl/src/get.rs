@@ -63,6 +63,11 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_sampler_objects",
     // Needs GLSL 1.20, which every context's newest GLSL version reaches.
     "GL_ARB_arrays_of_arrays",
+    // Needs GL 2.0 and GL_ARB_explicit_attrib_location, which every
+    // context has; written for 2.1 implementations too (its "Dependencies
+    // on GLSL 1.40 and earlier"). Geometry stages are the EXT form's on
+    // 2.1, GL 3.2's on 3.3; no context has tessellation stages.
+    "GL_ARB_separate_shader_objects",
 ];
 
 /// The extensions a 3.3 context adds (their GL 3.2–3.3 core features,
@@ -249,7 +254,8 @@ impl Context {
             GL_COLOR_CLEAR_VALUE => nrm(&st.clear_color),
             GL_DEPTH_CLEAR_VALUE => nrm(&[st.clear_depth]),
             GL_STENCIL_CLEAR_VALUE => int(&[st.clear_stencil as i64]),
-            GL_CURRENT_PROGRAM => int(&[self.current_program as i64]),
+            GL_CURRENT_PROGRAM => int(&[self.current_program_query() as i64]),
+            GL_PROGRAM_PIPELINE_BINDING => int(&[self.pipelines.bound as i64]),
             GL_CURRENT_COLOR => nrm(&self.va.color),
             GL_CURRENT_RASTER_POSITION => flt(&self.raster.window),
             GL_CURRENT_RASTER_POSITION_VALID => Some((vec![b(self.raster.valid)], Bool)),

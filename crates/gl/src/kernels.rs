@@ -3,8 +3,8 @@
 //! ones (compiled once per distinct source and cached), with the uniform
 //! words each kernel reads and the attribute source of each vertex input.
 //!
-//! Contract: user uniforms come by name from the current program's
-//! storage, `gl_*` built-ins from the GL state ([`crate::builtins`]),
+//! Contract: user uniforms come by name from the storage of the program
+//! whose stage the kernel is (`crate::program_pipeline`), `gl_*` built-ins from the GL state ([`crate::builtins`]),
 //! fixed-function samplers from their unit; a stage that does not compile
 //! gives its message (kept for [`Context::take_draw_error`]).
 
@@ -120,10 +120,9 @@ impl Context {
     pub(crate) fn uniform_words(&self, k: &exec::Kernel, user: bool) -> Vec<u32> {
         let iface = k.interface();
         let mut words = vec![0u32; iface.uniform_words];
-        let exe = self
-            .programs
-            .get(&self.current_program)
-            .and_then(|p| p.exe.as_ref());
+        // The program whose stage `k` is (each stage of a pipeline may
+        // come from its own program).
+        let exe = self.kernel_executable(k);
         for slot in &iface.uniforms {
             let dst = words.get_mut(slot.offset..).unwrap_or(&mut []);
             let n = slot.components.min(dst.len());
@@ -165,17 +164,21 @@ impl Context {
     /// for the vertex and fragment stages it lacks (with the fragment
     /// stage's shape).
     pub(crate) fn draw_kernels(&mut self) -> Result<DrawKernels, String> {
-        let (user_vs, gs, user_fs, fs_tc) = match self.current_executable() {
-            Some(e) => (
-                e.kernels.vs.clone(),
-                e.kernels.gs.clone(),
-                e.kernels.fs.clone(),
-                e.program
-                    .stage(Stage::Fragment)
-                    .map(|s| Self::fs_texcoords(&s.module)),
-            ),
-            None => (None, None, None, None),
-        };
+        // Each stage from the program active for it (glUseProgram's, or
+        // the bound pipeline's: `program_pipeline`).
+        let user_vs = self
+            .stage_executable(Stage::Vertex)
+            .and_then(|e| e.kernels.vs.clone());
+        let gs = self
+            .stage_executable(Stage::Geometry)
+            .and_then(|e| e.kernels.gs.clone());
+        let fs_exe = self.stage_executable(Stage::Fragment);
+        let user_fs = fs_exe.and_then(|e| e.kernels.fs.clone());
+        let fs_tc = fs_exe.and_then(|e| {
+            e.program
+                .stage(Stage::Fragment)
+                .map(|s| Self::fs_texcoords(&s.module))
+        });
         let vs_fixed = user_vs.is_none();
         let vs = match user_vs {
             Some(k) => k,
@@ -204,10 +207,7 @@ impl Context {
 
     /// Vertex input slots → attribute sources.
     pub(crate) fn input_sources(&self, vs: &exec::Kernel) -> Vec<Option<AttribSource>> {
-        let exe = self
-            .programs
-            .get(&self.current_program)
-            .and_then(|p| p.exe.as_ref());
+        let exe = self.stage_executable(Stage::Vertex);
         vs.interface()
             .inputs
             .iter()

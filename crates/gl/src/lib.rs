@@ -68,7 +68,8 @@
 //!   geometry shaders, glProgramParameteriEXT, the geometry queries, the
 //!   draw mode against the input primitive), [`program_blocks`] (uniform-block queries,
 //!   blocks read from uniform buffers at draw time), [`program_outputs`]
-//!   (fragment-output locations), [`transform_feedback`], [`uniform`],
+//!   (fragment-output locations), [`program_pipeline`] (separable
+//!   programs, program pipeline objects, the program of each stage), [`transform_feedback`], [`uniform`],
 //!   [`uniform_block`] (std140 layout), [`builtins`] (the `gl_*`
 //!   uniforms), [`ffgen`] (fixed-function stages as GLSL).
 //! - State: [`state`] (the fixed-function state, capabilities),
@@ -132,6 +133,7 @@ pub mod pixel_transfer;
 pub mod program;
 pub mod program_blocks;
 pub mod program_outputs;
+pub mod program_pipeline;
 pub mod rasterization;
 pub mod readback;
 pub mod render_target;
@@ -201,6 +203,8 @@ pub struct Context {
     pub(crate) shaders: BTreeMap<u32, ShaderObj>,
     pub(crate) programs: BTreeMap<u32, ProgramObj>,
     pub(crate) current_program: u32,
+    /// Program pipeline objects and the bound one ([`program_pipeline`]).
+    pub(crate) pipelines: program_pipeline::Pipelines,
     pub(crate) objects: objects::Objects,
     // Transformation state.
     pub(crate) matrix_mode: u32,
@@ -279,6 +283,7 @@ impl Context {
             shaders: BTreeMap::new(),
             programs: BTreeMap::new(),
             current_program: 0,
+            pipelines: program_pipeline::Pipelines::default(),
             objects: objects::Objects::new(w, h),
             matrix_mode: GL_MODELVIEW,
             modelview: vec![matrix::IDENTITY],

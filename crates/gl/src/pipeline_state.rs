@@ -209,11 +209,7 @@ impl Context {
     /// Two-sided color selection: VERTEX_PROGRAM_TWO_SIDE with a user
     /// vertex shader, LIGHT_MODEL_TWO_SIDE with fixed-function lighting.
     fn two_sided_color(&self) -> bool {
-        let user_vs = self
-            .programs
-            .get(&self.current_program)
-            .and_then(|p| p.exe.as_ref())
-            .is_some_and(|e| e.kernels.vs.is_some());
+        let user_vs = self.stage_executable(glsl::Stage::Vertex).is_some();
         if user_vs {
             self.st.is_on(GL_VERTEX_PROGRAM_TWO_SIDE)
         } else {

@@ -108,7 +108,9 @@ impl Context {
     /// The raster position of object-space `pos`, or None when it is
     /// clipped (or the vertex stage cannot run).
     fn transform_raster_pos(&mut self, pos: [f32; 4]) -> Option<RasterPos> {
-        let user = self.current_executable().and_then(|e| e.kernels.vs.clone());
+        let user = self
+            .stage_executable(Stage::Vertex)
+            .and_then(|e| e.kernels.vs.clone());
         let (vs, is_user) = match user {
             Some(k) => (k, true),
             None => {

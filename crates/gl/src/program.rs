@@ -103,6 +103,10 @@ pub struct ProgramObj {
     /// glProgramParameteriEXT's geometry parameters (GL_EXT_geometry_shader4),
     /// for the next link of an EXT-form geometry shader.
     pub geometry: glsl::link::GeometryParams,
+    /// GL_PROGRAM_SEPARABLE as set, for the next link, and as the last
+    /// successful link took it ([`crate::program_pipeline`]).
+    pub separable: bool,
+    pub linked_separable: bool,
     pub link_status: bool,
     pub validate_status: bool,
     pub info_log: String,
@@ -200,13 +204,6 @@ impl Context {
             .flatten()
     }
 
-    /// The executable of the current program, when it linked.
-    pub(crate) fn current_executable(&self) -> Option<&Executable> {
-        self.programs
-            .get(&self.current_program)
-            .and_then(|p| p.exe.as_ref().filter(|_| p.link_status))
-    }
-
     /// The value of a glGet*iv query: 0 after a name's error, and
     /// `GL_INVALID_ENUM` with 0 for a pname the query does not know
     /// (`Some(None)`).
@@ -277,16 +274,26 @@ impl Context {
         }
     }
 
-    /// glDeleteProgram: deleted now unless current (GL 2.1 §2.15.2).
+    /// glDeleteProgram: deleted now unless current or part of a program
+    /// pipeline (GL 2.1 §2.15.2, GL_ARB_separate_shader_objects).
     pub fn delete_program(&mut self, program: u32) {
         if program == 0 || self.reject_in_begin() || !self.check_program(program) {
             return;
         }
-        if self.current_program == program {
-            if let Some(p) = self.programs.get_mut(&program) {
-                p.delete_pending = true;
-            }
-        } else {
+        if let Some(p) = self.programs.get_mut(&program) {
+            p.delete_pending = true;
+        }
+        self.release_program(program);
+    }
+
+    /// Deletes a program whose deletion was pending once nothing holds it:
+    /// neither the context's current program nor any pipeline.
+    pub(crate) fn release_program(&mut self, program: u32) {
+        let pending = self
+            .programs
+            .get(&program)
+            .is_some_and(|p| p.delete_pending);
+        if pending && self.current_program != program && !self.pipeline_references(program) {
             self.destroy_program(program);
         }
     }
@@ -406,6 +413,10 @@ impl Context {
                 &refs,
                 &glsl::link::LinkOptions {
                     geometry: p.geometry,
+                    separable: p.separable,
+                    // GL_EXT_separate_shader_objects, offered where the
+                    // geometry_shader4 extensions are.
+                    lone_geometry: self.api.compatibility(),
                 },
             )
         };
@@ -434,6 +445,9 @@ impl Context {
             }
         }
         if let Some(p) = self.programs.get_mut(&program) {
+            if ok {
+                p.linked_separable = p.separable;
+            }
             p.link_status = ok;
             p.validate_status = false;
             p.info_log = log;
@@ -461,9 +475,10 @@ impl Context {
             }
         }
         let old = std::mem::replace(&mut self.current_program, program);
-        if old != program && self.programs.get(&old).is_some_and(|p| p.delete_pending) {
-            self.destroy_program(old);
+        for ext in self.clear_ext_bindings() {
+            self.release_program(ext);
         }
+        self.release_program(old);
     }
 
     /// glValidateProgram: valid when linked and no two samplers of different
@@ -475,28 +490,7 @@ impl Context {
         let Some(p) = self.programs.get_mut(&program) else {
             return;
         };
-        let mut ok = p.link_status;
-        if let Some(exe) = &p.exe {
-            let mut units: BTreeMap<u32, glsl::types::SamplerKind> = BTreeMap::new();
-            // Block members have no words of their own (and no samplers).
-            for leaf in exe.uniforms.leaves.iter().filter(|l| l.block.is_none()) {
-                if let Base::Sampler(k) = leaf.ty.base {
-                    for e in 0..leaf.array.unwrap_or(1) as usize {
-                        let unit = exe
-                            .uniforms
-                            .values
-                            .get(leaf.offset + e)
-                            .copied()
-                            .unwrap_or(0);
-                        if let Some(prev) = units.insert(unit, k) {
-                            if prev != k {
-                                ok = false;
-                            }
-                        }
-                    }
-                }
-            }
-        }
+        let ok = p.link_status && p.exe.as_ref().and_then(sampler_conflict).is_none();
         p.validate_status = ok;
         if !ok {
             p.info_log
@@ -546,6 +540,7 @@ impl Context {
             Some(match pname {
                 GL_DELETE_STATUS => p.delete_pending as i32,
                 GL_LINK_STATUS => p.link_status as i32,
+                GL_PROGRAM_SEPARABLE => p.separable as i32,
                 GL_VALIDATE_STATUS => p.validate_status as i32,
                 GL_INFO_LOG_LENGTH => with_nul(p.info_log.len()),
                 GL_ATTACHED_SHADERS => p.attached.len() as i32,
@@ -655,18 +650,37 @@ impl Context {
             .map_or(-1, |exe| exe.uniforms.location(name, &exe.modules()))
     }
 
-    /// The current program's executable, mutably (for glUniform*).
-    fn current_exe_mut(&mut self) -> Option<&mut Executable> {
-        let cur = self.current_program;
-        self.programs.get_mut(&cur).and_then(|p| p.exe.as_mut())
-    }
-
-    /// Shared body of every glUniform* entry point.
-    fn set_uniform(&mut self, loc: i32, count: i32, kind: SetterKind, comps: usize, data: &[Word]) {
+    /// Shared body of every glUniform* and glProgramUniform* entry point:
+    /// `program` is `Uniform::Current` for the program glUniform* update
+    /// ([`Context::uniform_program`]), else the named program, which must
+    /// be a linked program (GL_INVALID_VALUE for an unknown name,
+    /// GL_INVALID_OPERATION for a shader or a program not linked).
+    fn set_uniform(
+        &mut self,
+        program: Target,
+        (loc, count): (i32, i32),
+        kind: SetterKind,
+        comps: usize,
+        data: &[Word],
+    ) {
         if self.reject_in_begin() {
             return;
         }
-        let Some(exe) = self.current_exe_mut() else {
+        let name = match program {
+            Target::Current => self.uniform_program(),
+            Target::Program(p) => {
+                if !self.check_program(p) {
+                    return;
+                }
+                p
+            }
+        };
+        let Some(exe) = self
+            .programs
+            .get_mut(&name)
+            .filter(|p| p.link_status)
+            .and_then(|p| p.exe.as_mut())
+        else {
             self.set_error(GL_INVALID_OPERATION);
             return;
         };
@@ -680,24 +694,26 @@ impl Context {
         }
     }
 
-    fn uniform_f(&mut self, loc: i32, count: i32, comps: usize, v: &[f32]) {
+    fn uniform_f(&mut self, t: Target, loc: i32, count: i32, comps: usize, v: &[f32]) {
         let w: Vec<Word> = v.iter().map(|&f| Word::Float(f)).collect();
-        self.set_uniform(loc, count, SetterKind::Float, comps, &w);
+        self.set_uniform(t, (loc, count), SetterKind::Float, comps, &w);
     }
 
-    fn uniform_i(&mut self, loc: i32, count: i32, comps: usize, v: &[i32]) {
+    fn uniform_i(&mut self, t: Target, loc: i32, count: i32, comps: usize, v: &[i32]) {
         let w: Vec<Word> = v.iter().map(|&i| Word::Int(i)).collect();
-        self.set_uniform(loc, count, SetterKind::Int, comps, &w);
+        self.set_uniform(t, (loc, count), SetterKind::Int, comps, &w);
     }
 
-    fn uniform_ui(&mut self, loc: i32, count: i32, comps: usize, v: &[u32]) {
+    fn uniform_ui(&mut self, t: Target, loc: i32, count: i32, comps: usize, v: &[u32]) {
         let w: Vec<Word> = v.iter().map(|&u| Word::Uint(u)).collect();
-        self.set_uniform(loc, count, SetterKind::Uint, comps, &w);
+        self.set_uniform(t, (loc, count), SetterKind::Uint, comps, &w);
     }
 
     /// Shared body of glUniformMatrix*fv; `transpose` input is row-major.
+    #[allow(clippy::too_many_arguments)]
     fn uniform_matrix(
         &mut self,
+        t: Target,
         loc: i32,
         count: i32,
         transpose: bool,
@@ -720,7 +736,7 @@ impl Context {
                 }
             }
         }
-        self.set_uniform(loc, count, SetterKind::Matrix { cols, rows }, n, &w);
+        self.set_uniform(t, (loc, count), SetterKind::Matrix { cols, rows }, n, &w);
     }
 
     /// glGetUniformfv.
@@ -772,34 +788,69 @@ impl Context {
     }
 }
 
-/// Generates glUniform{1,2,3,4}{f,i,ui}[v] and glUniformMatrix*fv.
+/// Which program a uniform setter updates: glUniform*'s (the current
+/// program, else the bound pipeline's active program) or the one a
+/// glProgramUniform* names.
+#[derive(Clone, Copy)]
+enum Target {
+    Current,
+    Program(u32),
+}
+
+/// Generates glUniform{1,2,3,4}{f,i,ui}[v] and their glProgramUniform*
+/// forms (GL_ARB_separate_shader_objects).
 macro_rules! uniform_entry_points {
-    ($($f:ident $fv:ident $i:ident $iv:ident $ui:ident $uiv:ident $n:literal ($($a:ident),*);)*) => {
+    ($($n:literal ($($a:ident),*) $f:ident $fv:ident $i:ident $iv:ident $ui:ident $uiv:ident
+       / $pf:ident $pfv:ident $pi:ident $piv:ident $pui:ident $puiv:ident;)*) => {
         impl Context {
             $(
                 #[doc = concat!("glUniform", stringify!($n), "f.")]
                 pub fn $f(&mut self, loc: i32, $($a: f32),*) {
-                    self.uniform_f(loc, 1, $n, &[$($a),*]);
+                    self.uniform_f(Target::Current, loc, 1, $n, &[$($a),*]);
                 }
                 #[doc = concat!("glUniform", stringify!($n), "fv.")]
                 pub fn $fv(&mut self, loc: i32, count: i32, v: &[f32]) {
-                    self.uniform_f(loc, count, $n, v);
+                    self.uniform_f(Target::Current, loc, count, $n, v);
                 }
                 #[doc = concat!("glUniform", stringify!($n), "i.")]
                 pub fn $i(&mut self, loc: i32, $($a: i32),*) {
-                    self.uniform_i(loc, 1, $n, &[$($a),*]);
+                    self.uniform_i(Target::Current, loc, 1, $n, &[$($a),*]);
                 }
                 #[doc = concat!("glUniform", stringify!($n), "iv.")]
                 pub fn $iv(&mut self, loc: i32, count: i32, v: &[i32]) {
-                    self.uniform_i(loc, count, $n, v);
+                    self.uniform_i(Target::Current, loc, count, $n, v);
                 }
                 #[doc = concat!("glUniform", stringify!($n), "ui (GL 3.0).")]
                 pub fn $ui(&mut self, loc: i32, $($a: u32),*) {
-                    self.uniform_ui(loc, 1, $n, &[$($a),*]);
+                    self.uniform_ui(Target::Current, loc, 1, $n, &[$($a),*]);
                 }
                 #[doc = concat!("glUniform", stringify!($n), "uiv (GL 3.0).")]
                 pub fn $uiv(&mut self, loc: i32, count: i32, v: &[u32]) {
-                    self.uniform_ui(loc, count, $n, v);
+                    self.uniform_ui(Target::Current, loc, count, $n, v);
+                }
+                #[doc = concat!("glProgramUniform", stringify!($n), "f.")]
+                pub fn $pf(&mut self, program: u32, loc: i32, $($a: f32),*) {
+                    self.uniform_f(Target::Program(program), loc, 1, $n, &[$($a),*]);
+                }
+                #[doc = concat!("glProgramUniform", stringify!($n), "fv.")]
+                pub fn $pfv(&mut self, program: u32, loc: i32, count: i32, v: &[f32]) {
+                    self.uniform_f(Target::Program(program), loc, count, $n, v);
+                }
+                #[doc = concat!("glProgramUniform", stringify!($n), "i.")]
+                pub fn $pi(&mut self, program: u32, loc: i32, $($a: i32),*) {
+                    self.uniform_i(Target::Program(program), loc, 1, $n, &[$($a),*]);
+                }
+                #[doc = concat!("glProgramUniform", stringify!($n), "iv.")]
+                pub fn $piv(&mut self, program: u32, loc: i32, count: i32, v: &[i32]) {
+                    self.uniform_i(Target::Program(program), loc, count, $n, v);
+                }
+                #[doc = concat!("glProgramUniform", stringify!($n), "ui.")]
+                pub fn $pui(&mut self, program: u32, loc: i32, $($a: u32),*) {
+                    self.uniform_ui(Target::Program(program), loc, 1, $n, &[$($a),*]);
+                }
+                #[doc = concat!("glProgramUniform", stringify!($n), "uiv.")]
+                pub fn $puiv(&mut self, program: u32, loc: i32, count: i32, v: &[u32]) {
+                    self.uniform_ui(Target::Program(program), loc, count, $n, v);
                 }
             )*
         }
@@ -807,19 +858,39 @@ macro_rules! uniform_entry_points {
 }
 
 uniform_entry_points! {
-    uniform_1f uniform_1fv uniform_1i uniform_1iv uniform_1ui uniform_1uiv 1 (x);
-    uniform_2f uniform_2fv uniform_2i uniform_2iv uniform_2ui uniform_2uiv 2 (x, y);
-    uniform_3f uniform_3fv uniform_3i uniform_3iv uniform_3ui uniform_3uiv 3 (x, y, z);
-    uniform_4f uniform_4fv uniform_4i uniform_4iv uniform_4ui uniform_4uiv 4 (x, y, z, w);
+    1 (x) uniform_1f uniform_1fv uniform_1i uniform_1iv uniform_1ui uniform_1uiv
+        / program_uniform_1f program_uniform_1fv program_uniform_1i program_uniform_1iv
+          program_uniform_1ui program_uniform_1uiv;
+    2 (x, y) uniform_2f uniform_2fv uniform_2i uniform_2iv uniform_2ui uniform_2uiv
+        / program_uniform_2f program_uniform_2fv program_uniform_2i program_uniform_2iv
+          program_uniform_2ui program_uniform_2uiv;
+    3 (x, y, z) uniform_3f uniform_3fv uniform_3i uniform_3iv uniform_3ui uniform_3uiv
+        / program_uniform_3f program_uniform_3fv program_uniform_3i program_uniform_3iv
+          program_uniform_3ui program_uniform_3uiv;
+    4 (x, y, z, w) uniform_4f uniform_4fv uniform_4i uniform_4iv uniform_4ui uniform_4uiv
+        / program_uniform_4f program_uniform_4fv program_uniform_4i program_uniform_4iv
+          program_uniform_4ui program_uniform_4uiv;
 }
 
+/// Generates glUniformMatrix*fv and glProgramUniformMatrix*fv.
 macro_rules! uniform_matrix_entry_points {
-    ($($name:ident $c:literal $r:literal;)*) => {
+    ($($name:ident $pname:ident $c:literal $r:literal;)*) => {
         impl Context {
             $(
                 #[doc = concat!("glUniformMatrix", stringify!($c), "x", stringify!($r), "fv.")]
                 pub fn $name(&mut self, loc: i32, count: i32, transpose: bool, v: &[f32]) {
-                    self.uniform_matrix(loc, count, transpose, $c, $r, v);
+                    self.uniform_matrix(Target::Current, loc, count, transpose, $c, $r, v);
+                }
+                #[doc = concat!("glProgramUniformMatrix", stringify!($c), "x", stringify!($r), "fv.")]
+                pub fn $pname(
+                    &mut self,
+                    program: u32,
+                    loc: i32,
+                    count: i32,
+                    transpose: bool,
+                    v: &[f32],
+                ) {
+                    self.uniform_matrix(Target::Program(program), loc, count, transpose, $c, $r, v);
                 }
             )*
         }
@@ -827,15 +898,15 @@ macro_rules! uniform_matrix_entry_points {
 }
 
 uniform_matrix_entry_points! {
-    uniform_matrix_2fv 2 2;
-    uniform_matrix_3fv 3 3;
-    uniform_matrix_4fv 4 4;
-    uniform_matrix_2x3fv 2 3;
-    uniform_matrix_2x4fv 2 4;
-    uniform_matrix_3x2fv 3 2;
-    uniform_matrix_3x4fv 3 4;
-    uniform_matrix_4x2fv 4 2;
-    uniform_matrix_4x3fv 4 3;
+    uniform_matrix_2fv program_uniform_matrix_2fv 2 2;
+    uniform_matrix_3fv program_uniform_matrix_3fv 3 3;
+    uniform_matrix_4fv program_uniform_matrix_4fv 4 4;
+    uniform_matrix_2x3fv program_uniform_matrix_2x3fv 2 3;
+    uniform_matrix_2x4fv program_uniform_matrix_2x4fv 2 4;
+    uniform_matrix_3x2fv program_uniform_matrix_3x2fv 3 2;
+    uniform_matrix_3x4fv program_uniform_matrix_3x4fv 3 4;
+    uniform_matrix_4x2fv program_uniform_matrix_4x2fv 4 2;
+    uniform_matrix_4x3fv program_uniform_matrix_4x3fv 4 3;
 }
 
 pub(crate) fn with_nul(len: usize) -> i32 {
@@ -844,6 +915,31 @@ pub(crate) fn with_nul(len: usize) -> i32 {
     } else {
         (len + 1).min(i32::MAX as usize) as i32
     }
+}
+
+/// Why an executable cannot run, if two of its samplers of different
+/// types use the same texture unit (GL 2.1 §2.15.4).
+pub(crate) fn sampler_conflict(exe: &Executable) -> Option<String> {
+    let mut units: BTreeMap<u32, glsl::types::SamplerKind> = BTreeMap::new();
+    // Block members have no words of their own (and no samplers).
+    for leaf in exe.uniforms.leaves.iter().filter(|l| l.block.is_none()) {
+        if let Base::Sampler(k) = leaf.ty.base {
+            for e in 0..leaf.array.unwrap_or(1) as usize {
+                let unit = exe
+                    .uniforms
+                    .values
+                    .get(leaf.offset + e)
+                    .copied()
+                    .unwrap_or(0);
+                if units.insert(unit, k).is_some_and(|prev| prev != k) {
+                    return Some(format!(
+                        "samplers of different types share texture unit {unit}"
+                    ));
+                }
+            }
+        }
+    }
+    None
 }
 
 /// Builds uniform storage, attribute locations and kernels for a linked

@@ -223,10 +223,12 @@ impl Context {
     /// The current program's feedback varyings and buffer mode (none
     /// without a linked current program).
     fn current_feedback(&self) -> (&[FeedbackVarying], u32) {
+        // The program of the last stage before rasterization
+        // (GL_ARB_separate_shader_objects: with a pipeline, its geometry
+        // stage's program, else its vertex stage's).
         match self
-            .programs
-            .get(&self.current_program)
-            .and_then(|p| p.exe.as_ref())
+            .stage_executable(glsl::Stage::Geometry)
+            .or_else(|| self.stage_executable(glsl::Stage::Vertex))
         {
             Some(e) => (&e.feedback, e.feedback_mode),
             None => (&[], GL_INTERLEAVED_ATTRIBS),

@@ -129,6 +129,10 @@ impl Api {
         // The extension form of geometry shaders, on GLSL 1.10-1.40.
         if self.profile == Profile::Compatibility {
             v.extend(["GL_ARB_geometry_shader4", "GL_EXT_geometry_shader4"]);
+            // Its program attachment points per stage (and a geometry
+            // stage linked without a vertex stage) need those geometry
+            // shaders.
+            v.push("GL_EXT_separate_shader_objects");
         }
         v
     }

@@ -2,7 +2,7 @@
 """Generates crates/gl/src/enums.rs from the system GL headers.
 
 Takes every `#define GL_NAME 0x...` of gl.h (GL 1.0-1.3) and of the glext.h
-sections listed in SECTIONS (GL 1.2-3.3 and the extensions shaderbox implements). Values are GL's.
+sections listed in SECTIONS (GL 1.2-3.3, GL 4.1 for GL_ARB_separate_shader_objects' tokens, and the extensions shaderbox implements). Values are GL's.
 Usage: python3 tools/gen_enums.py /usr/include/GL > src/enums.rs
 """
 import re, sys
@@ -16,7 +16,7 @@ SECTIONS = ["GL_VERSION_1_2", "GL_VERSION_1_3", "GL_VERSION_1_4", "GL_VERSION_1_
             "GL_EXT_texture_lod_bias", "GL_ARB_texture_rectangle", "GL_EXT_gpu_shader4",
             "GL_ARB_color_buffer_float", "GL_VERSION_3_1", "GL_VERSION_3_2", "GL_VERSION_3_3",
             "GL_ARB_geometry_shader4", "GL_EXT_geometry_shader4", "GL_ARB_compatibility",
-            "GL_ARB_texture_cube_map_array"]
+            "GL_ARB_texture_cube_map_array", "GL_VERSION_4_1", "GL_EXT_separate_shader_objects"]
 DEF = re.compile(r"^#define\s+(GL_\w+)\s+(0x[0-9A-Fa-f]+|\d+)\s*$")
 
 def defines(lines):

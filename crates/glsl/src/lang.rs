@@ -166,6 +166,14 @@ extensions! {
     // (`texture`, `textureLod`...), which exist from 1.30 on; the
     // directive and macro are accepted in every version, as Mesa does.
     ArbTextureCubeMapArray = "GL_ARB_texture_cube_map_array";
+    // Separable programs: `layout(location = N)` on the inputs and
+    // outputs between stages (vertex outputs, geometry inputs and
+    // outputs, fragment inputs), matched by location across programs;
+    // global `in`/`out` in the versions before 1.30, as with
+    // GL_ARB_explicit_attrib_location. Its redeclarations of
+    // `gl_PerVertex` are GLSL 1.50's, which every version here allows
+    // wherever it has blocks.
+    ArbSeparateShaderObjects = "GL_ARB_separate_shader_objects";
 }
 
 impl Extension {
@@ -264,6 +272,9 @@ pub enum Feature {
     /// An array whose elements are arrays (GL_ARB_arrays_of_arrays; no
     /// version shaderbox implements has them in core).
     ArraysOfArrays,
+    /// `layout(location = N)` on the inputs and outputs between stages
+    /// (GL_ARB_separate_shader_objects; GLSL 4.10 has it in core).
+    VaryingLocation,
 }
 
 /// Why a feature is not available to a shader.
@@ -392,7 +403,11 @@ impl Language {
             // GL_ARB_explicit_attrib_location's `layout(location) in`
             // needs global `in`/`out` in the versions it extends.
             Feature::StageInOut => {
-                self.since_or(Version::V130, Extension::ArbExplicitAttribLocation)
+                if self.has(Extension::ArbSeparateShaderObjects) {
+                    Ok(())
+                } else {
+                    self.since_or(Version::V130, Extension::ArbExplicitAttribLocation)
+                }
             }
             Feature::UniformBlocks => {
                 self.since_or(Version::V140, Extension::ArbUniformBufferObject)
@@ -411,13 +426,8 @@ impl Language {
             Feature::FragCoordConventions => {
                 self.since_or(Version::V150, Extension::ArbFragmentCoordConventions)
             }
-            Feature::ArraysOfArrays => {
-                if self.has(Extension::ArbArraysOfArrays) {
-                    Ok(())
-                } else {
-                    Err(Unavailable::NeedsExtension(Extension::ArbArraysOfArrays))
-                }
-            }
+            Feature::ArraysOfArrays => self.only_with(Extension::ArbArraysOfArrays),
+            Feature::VaryingLocation => self.only_with(Extension::ArbSeparateShaderObjects),
             Feature::CompatibilityInterface => {
                 if self.version >= Version::V140 && self.profile == Profile::Core {
                     Err(Unavailable::RemovedInCore(Version::V140))
@@ -440,6 +450,15 @@ impl Language {
             && (self.has(Extension::ExtGeometryShader4) || self.has(Extension::ArbGeometryShader4))
     }
 
+    /// Available only with `e` enabled (no version up to 3.30 has it).
+    fn only_with(self, e: Extension) -> Result<(), Unavailable> {
+        if self.has(e) {
+            Ok(())
+        } else {
+            Err(Unavailable::NeedsExtension(e))
+        }
+    }
+
     /// Available from `v` on, or earlier with `e` enabled.
     fn since_or(self, v: Version, e: Extension) -> Result<(), Unavailable> {
         if self.version >= v || self.has(e) {
@@ -456,6 +475,7 @@ impl Language {
             || self.has(Extension::ArbExplicitAttribLocation)
             || self.has(Extension::ArbUniformBufferObject)
             || self.has(Extension::ArbFragmentCoordConventions)
+            || self.has(Extension::ArbSeparateShaderObjects)
     }
 
     /// `gate` as a bool.

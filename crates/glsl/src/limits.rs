@@ -41,6 +41,10 @@ pub const MAX_VERTEX_OUTPUT_COMPONENTS: u32 = 128;
 /// `gl_MaxFragmentInputComponents` (GLSL 1.50, minimum 128): the input
 /// components a fragment shader of GLSL 1.50 or later reads.
 pub const MAX_FRAGMENT_INPUT_COMPONENTS: u32 = 128;
+/// The locations `layout(location)` may give the inputs and outputs
+/// between stages (GL_ARB_separate_shader_objects: at least a fourth of
+/// the stage's component count).
+pub const MAX_VARYING_LOCATIONS: u32 = MAX_VERTEX_OUTPUT_COMPONENTS / 4;
 /// The geometry stage's limits (GLSL 1.50 gives every stage their
 /// constants): the spec's minimums.
 pub const MAX_GEOMETRY_INPUT_COMPONENTS: u32 = 64;

@@ -69,6 +69,16 @@ impl Default for GeometryParams {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct LinkOptions {
     pub geometry: GeometryParams,
+    /// GL_PROGRAM_SEPARABLE (GL_ARB_separate_shader_objects): the program
+    /// may hold any subset of the stages, a geometry stage without a
+    /// vertex stage included, its other stages coming from other programs
+    /// at draw time.
+    pub separable: bool,
+    /// GL_EXT_separate_shader_objects: a geometry stage without a vertex
+    /// stage links when the geometry shader declares no user-defined
+    /// inputs (only built-in ones, which a fixed-function or another
+    /// program's vertex stage provides).
+    pub lone_geometry: bool,
 }
 
 /// A link diagnostic and the shader object it points into, if any.
@@ -192,7 +202,7 @@ pub fn link_with(shaders: &[&Shader], opts: &LinkOptions) -> Program {
         match program.stage(Stage::Geometry) {
             // GL 3.2 §2.12.2 (and GL_EXT_geometry_shader4): linking fails
             // when a program has a geometry shader but no vertex shader.
-            Some(_) if v.is_none() => push(
+            Some(g) if v.is_none() && !opts.separable && !lone_geometry_ok(g, opts) => push(
                 &mut diags,
                 None,
                 Code::LinkNoMain,
@@ -223,6 +233,17 @@ pub fn link_with(shaders: &[&Shader], opts: &LinkOptions) -> Program {
         program.stages.clear();
     }
     program
+}
+
+/// Whether a geometry stage may link without a vertex stage under
+/// [`LinkOptions::lone_geometry`]: it declares no user-defined input.
+fn lone_geometry_ok(g: &LinkedStage, opts: &LinkOptions) -> bool {
+    opts.lone_geometry
+        && !g
+            .module
+            .globals
+            .iter()
+            .any(|x| x.storage == crate::ir::Storage::GeometryInput && !x.builtin)
 }
 
 /// The modules of the program's GL_EXT_geometry_shader4 geometry shader

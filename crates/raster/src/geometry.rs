@@ -140,17 +140,18 @@ const PRIMITIVES_PER_TASK: usize = 4 * LANES;
 type InputPlan = Vec<(usize, usize, usize, usize)>;
 
 /// Matches the geometry kernel's per-vertex inputs with the vertex
-/// kernel's outputs by name (inputs without an output stay 0).
+/// kernel's outputs by name, or by location for an input with one
+/// ([`Interface::output_for`]; inputs without an output stay 0).
 fn input_plan(vs: &Interface, gs: &Interface) -> InputPlan {
     gs.vertex_inputs()
         .into_iter()
         .filter_map(|i| {
-            let out = vs.outputs.iter().find(|s| s.link_name() == i.name)?;
+            let (out, at) = vs.output_for(&i.name, i.location)?;
             Some((
                 i.vertex,
                 i.offset,
-                out.offset,
-                i.components.min(out.components),
+                out.offset + at,
+                i.components.min(out.components - at),
             ))
         })
         .collect()

@@ -12,12 +12,6 @@ fn find<'a>(slots: &'a [Slot], name: &str) -> Option<&'a Slot> {
     slots.iter().find(|s| s.name == name)
 }
 
-/// The vertex output feeding a fragment input named `link_name` (see
-/// [`Slot::link_name`]).
-fn find_link<'a>(slots: &'a [Slot], link_name: &str) -> Option<&'a Slot> {
-    slots.iter().find(|s| s.link_name() == link_name)
-}
-
 /// The vertex kernel's outputs the pipeline itself reads.
 pub(crate) struct VsLayout {
     pub outputs: usize,
@@ -159,20 +153,24 @@ impl FsLayout {
                         ),
                         other => (other, None, false),
                     };
-                    let front = find_link(&vs.outputs, front_name);
+                    // By location for a user input with one, else by
+                    // name (`Interface::output_for`).
+                    let front = vs.output_for(front_name, slot.location);
                     let back = back_name
                         .filter(|_| two_sided)
-                        .and_then(|n| find_link(&vs.outputs, n));
+                        .and_then(|n| vs.output_for(n, None));
                     let interpolation = if name == "gl_PrimitiveID" {
                         Some(Interpolation::Flat)
                     } else {
                         slot.interpolation
-                            .or_else(|| front.and_then(|s| s.interpolation))
-                            .or_else(|| back.and_then(|s| s.interpolation))
+                            .or_else(|| front.and_then(|(s, _)| s.interpolation))
+                            .or_else(|| back.and_then(|(s, _)| s.interpolation))
                     };
                     for c in 0..slot.components {
-                        let pick =
-                            |s: Option<&Slot>| s.filter(|s| c < s.components).map(|s| s.offset + c);
+                        let pick = |s: Option<(&Slot, usize)>| {
+                            s.filter(|(s, at)| at + c < s.components)
+                                .map(|(s, at)| s.offset + at + c)
+                        };
                         let front = pick(front);
                         links.push(VaryingLink {
                             fs_offset: slot.offset + c,

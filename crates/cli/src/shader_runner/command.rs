@@ -146,6 +146,11 @@ pub enum Command {
     /// `ubo array index N`: later `uniform` commands naming members of an
     /// array of uniform blocks write element N's buffer.
     UboArrayIndex(u32),
+    /// `active shader program GL_VERTEX_SHADER` (or another stage's
+    /// shader type): the stage's separable program becomes the pipeline's
+    /// active program, which `uniform` commands then set
+    /// (glActiveShaderProgram; `SSO ENABLED` scripts).
+    ActiveShaderProgram(u32),
     /// A command shaderbox does not provide because it needs a later GL.
     NeedsLaterGl(String),
 }
@@ -315,6 +320,21 @@ fn parse_command(line: &str) -> Result<Command, CommandError> {
         if lit(line, prefix).is_some() {
             return Ok(C::NeedsLaterGl((*what).to_string()));
         }
+    }
+    if let Some(rest) = lit(line, "active shader program ") {
+        let (stage, _) = scan::word(rest).ok_or_else(|| bad("Bad shader type", line))?;
+        let kind = match stage {
+            "GL_VERTEX_SHADER" => GL_VERTEX_SHADER,
+            "GL_GEOMETRY_SHADER" => GL_GEOMETRY_SHADER,
+            "GL_FRAGMENT_SHADER" => GL_FRAGMENT_SHADER,
+            "GL_TESS_CONTROL_SHADER" | "GL_TESS_EVALUATION_SHADER" | "GL_COMPUTE_SHADER" => {
+                return Ok(C::NeedsLaterGl(format!(
+                    "{stage} (a stage shaderbox does not have)"
+                )))
+            }
+            _ => return Err(bad(&format!("Bad shader type {stage}"), line)),
+        };
+        return Ok(C::ActiveShaderProgram(kind));
     }
     if let Some(rest) = lit(line, "active uniform ") {
         let (name, rest) = scan::word(rest).ok_or_else(|| bad("Bad active uniform", line))?;
@@ -700,7 +720,6 @@ fn parse_command(line: &str) -> Result<Command, CommandError> {
 
 /// Leading words of commands that need a later GL or an extension.
 const LATER_GL: &[(&str, &str)] = &[
-    ("active shader program ", "separate shader objects"),
     ("atomic counter", "atomic counters (OpenGL 4.2)"),
     ("compute ", "compute shaders (OpenGL 4.3)"),
     ("subuniform ", "shader subroutines (OpenGL 4.0)"),

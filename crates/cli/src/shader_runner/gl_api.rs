@@ -33,6 +33,12 @@ pub trait GlApi {
     fn get_program_iv(&mut self, program: u32, pname: u32, params: &mut [i32]);
     fn get_program_info_log(&mut self, program: u32) -> String;
     fn use_program(&mut self, program: u32);
+    // Program pipelines (GL_ARB_separate_shader_objects).
+    fn gen_program_pipeline(&mut self) -> u32;
+    fn bind_program_pipeline(&mut self, pipeline: u32);
+    fn use_program_stages(&mut self, pipeline: u32, stages: u32, program: u32);
+    fn active_shader_program(&mut self, pipeline: u32, program: u32);
+    fn get_program_pipeline_iv(&mut self, pipeline: u32, pname: u32) -> i32;
     fn get_uniform_location(&mut self, program: u32, name: &str) -> i32;
     fn get_attrib_location(&mut self, program: u32, name: &str) -> i32;
 

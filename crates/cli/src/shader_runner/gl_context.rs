@@ -176,6 +176,24 @@ impl GlApi for gl::Context {
     fn use_program(&mut self, program: u32) {
         gl::Context::use_program(self, program)
     }
+    fn gen_program_pipeline(&mut self) -> u32 {
+        gl::Context::gen_program_pipelines(self, 1)
+            .first()
+            .copied()
+            .unwrap_or(0)
+    }
+    fn bind_program_pipeline(&mut self, pipeline: u32) {
+        gl::Context::bind_program_pipeline(self, pipeline)
+    }
+    fn use_program_stages(&mut self, pipeline: u32, stages: u32, program: u32) {
+        gl::Context::use_program_stages(self, pipeline, stages, program)
+    }
+    fn active_shader_program(&mut self, pipeline: u32, program: u32) {
+        gl::Context::active_shader_program(self, pipeline, program)
+    }
+    fn get_program_pipeline_iv(&mut self, pipeline: u32, pname: u32) -> i32 {
+        gl::Context::get_program_pipelineiv(self, pipeline, pname)
+    }
     fn get_uniform_location(&mut self, program: u32, name: &str) -> i32 {
         gl::Context::get_uniform_location(self, program, name)
     }

@@ -1,8 +1,9 @@
 //! Runs a parsed script on a GL context, the way piglit's `shader_runner`
 //! does: requirements, then compiling every shader section, linking them
 //! into one program (with `piglit_vertex` bound to attribute 0 and
-//! `piglit_texcoord` to 1), the vertex data, then the `[test]` commands in
-//! order.
+//! `piglit_texcoord` to 1), or with `SSO ENABLED` each stage into a
+//! separable program of its own bound in a program pipeline, the vertex
+//! data, then the `[test]` commands in order.
 //!
 //! The verdict follows piglit's: each command line has a result; a failing
 //! probe marks the test failed and the run continues ("Test failure on line
@@ -197,6 +198,11 @@ pub struct Runner<'a, G: GlApi> {
     ubo_buffers: Vec<u32>,
     /// `ubo array index`.
     ubo_array_index: u32,
+    /// `SSO ENABLED`: the program pipeline holding one separable program
+    /// per stage (0 without), and each stage's program by shader type.
+    pipeline: u32,
+    sso: bool,
+    stage_programs: Vec<(u32, u32)>,
     report: Report,
 }
 
@@ -220,6 +226,9 @@ impl<'a, G: GlApi> Runner<'a, G> {
             ignore_missing_uniforms: false,
             ubo_buffers: Vec::new(),
             ubo_array_index: 0,
+            pipeline: 0,
+            sso: false,
+            stage_programs: Vec::new(),
             report: Report::default(),
         }
     }
@@ -392,6 +401,14 @@ impl<'a, G: GlApi> Runner<'a, G> {
                     return Err(Stop(Verdict::Skip));
                 }
                 Requirement::IgnoreMissingUniforms => self.ignore_missing_uniforms = true,
+                Requirement::SeparateShaderObjects => {
+                    let name = "GL_ARB_separate_shader_objects";
+                    if gl_version < 41 && !has_ext(name) {
+                        self.out(format!("Test requires unsupported extension {name}"));
+                        return Err(Stop(Verdict::Skip));
+                    }
+                    self.sso = true;
+                }
                 Requirement::Size(..) | Requirement::DepthBuffer | Requirement::Rlimit(_) => {}
             }
         }
@@ -434,27 +451,21 @@ impl<'a, G: GlApi> Runner<'a, G> {
                 ));
                 return Err(Stop(Verdict::Fail));
             }
-            shaders.push(shader);
+            shaders.push((kind, shader));
+        }
+        if self.sso {
+            let result = self.link_separable(script, &shaders);
+            for (_, s) in shaders {
+                self.gl.delete_shader(s);
+            }
+            return result;
         }
         let prog = self.gl.create_program();
         self.prog = prog;
-        for &s in &shaders {
+        for &(_, s) in &shaders {
             self.gl.attach_shader(prog, s);
         }
-        self.gl
-            .bind_attrib_location(prog, PIGLIT_ATTRIB_POS, "piglit_vertex");
-        self.gl
-            .bind_attrib_location(prog, PIGLIT_ATTRIB_TEX, "piglit_texcoord");
-        for (line, text) in &script.geometry_layout {
-            let Some((pname, value)) = geometry_parameter(text) else {
-                self.err(format!(
-                    "{}:{line}: unknown [geometry layout] line `{text}' (input type MODE, output type MODE or vertices out N)",
-                    self.file
-                ));
-                return Err(Stop(Verdict::Fail));
-            };
-            self.gl.program_parameter_i(prog, pname, value);
-        }
+        self.program_parameters(script, prog)?;
         self.gl.link_program(prog);
         let mut ok = [0i32];
         self.gl.get_program_iv(prog, GL_LINK_STATUS, &mut ok);
@@ -470,10 +481,97 @@ impl<'a, G: GlApi> Runner<'a, G> {
         } else {
             self.prog_err_info = self.gl.get_program_info_log(prog);
         }
-        for s in shaders {
+        for (_, s) in shaders {
             self.gl.delete_shader(s);
         }
         Ok(())
+    }
+
+    /// What the runner sets on a program before linking it: the piglit
+    /// attribute bindings and the `[geometry layout]` parameters.
+    fn program_parameters(&mut self, script: &Script, prog: u32) -> Result<(), Stop> {
+        self.gl
+            .bind_attrib_location(prog, PIGLIT_ATTRIB_POS, "piglit_vertex");
+        self.gl
+            .bind_attrib_location(prog, PIGLIT_ATTRIB_TEX, "piglit_texcoord");
+        for (line, text) in &script.geometry_layout {
+            let Some((pname, value)) = geometry_parameter(text) else {
+                self.err(format!(
+                    "{}:{line}: unknown [geometry layout] line `{text}' (input type MODE, output type MODE or vertices out N)",
+                    self.file
+                ));
+                return Err(Stop(Verdict::Fail));
+            };
+            self.gl.program_parameter_i(prog, pname, value);
+        }
+        Ok(())
+    }
+
+    /// `SSO ENABLED` (piglit's `link_sso`): the shader objects of each
+    /// stage linked into a separable program (GL_PROGRAM_SEPARABLE), made
+    /// the stage's program in a program pipeline, which is bound. A
+    /// stage that does not link fails the test at once.
+    fn link_separable(&mut self, script: &Script, shaders: &[(u32, u32)]) -> Result<(), Stop> {
+        let pipeline = self.gl.gen_program_pipeline();
+        self.pipeline = pipeline;
+        for (kind, bit, short) in [
+            (GL_VERTEX_SHADER, GL_VERTEX_SHADER_BIT, "VS"),
+            (GL_GEOMETRY_SHADER, GL_GEOMETRY_SHADER_BIT, "GS"),
+            (GL_FRAGMENT_SHADER, GL_FRAGMENT_SHADER_BIT, "FS"),
+        ] {
+            let objects: Vec<u32> = shaders
+                .iter()
+                .filter(|(k, _)| *k == kind)
+                .map(|&(_, s)| s)
+                .collect();
+            if objects.is_empty() {
+                continue;
+            }
+            let prog = self.gl.create_program();
+            self.gl
+                .program_parameter_i(prog, GL_PROGRAM_SEPARABLE, GL_TRUE as i32);
+            for &s in &objects {
+                self.gl.attach_shader(prog, s);
+            }
+            self.program_parameters(script, prog)?;
+            self.gl.link_program(prog);
+            let mut ok = [0i32];
+            self.gl.get_program_iv(prog, GL_LINK_STATUS, &mut ok);
+            if ok[0] == 0 {
+                let log = self.gl.get_program_info_log(prog);
+                self.err(format!("SSO glLinkProgram({short}) failed: {log}"));
+                return Err(Stop(Verdict::Fail));
+            }
+            self.gl.use_program_stages(pipeline, bit, prog);
+            self.stage_programs.push((kind, prog));
+        }
+        self.gl.bind_program_pipeline(pipeline);
+        self.link_ok = true;
+        if self.gl.get_error() == GL_NO_ERROR {
+            self.prog_in_use = true;
+        } else {
+            self.prog_err_info = "the program pipeline could not be bound".into();
+        }
+        // Attribute queries ask the vertex stage's program.
+        self.prog = self
+            .stage_programs
+            .iter()
+            .find(|(k, _)| *k == GL_VERTEX_SHADER)
+            .or(self.stage_programs.first())
+            .map_or(0, |&(_, p)| p);
+        Ok(())
+    }
+
+    /// The program `uniform` commands set: the current program, or with
+    /// `SSO ENABLED` the pipeline's active program (`active shader
+    /// program`).
+    fn uniform_program(&mut self) -> u32 {
+        if self.sso {
+            self.gl
+                .get_program_pipeline_iv(self.pipeline, GL_ACTIVE_PROGRAM) as u32
+        } else {
+            self.current_program()
+        }
     }
 
     /// A zeroed buffer of its data size for each active uniform block,
@@ -867,6 +965,21 @@ impl<'a, G: GlApi> Runner<'a, G> {
                     return Err(Stop(Verdict::Fail));
                 }
             }
+            Command::ActiveShaderProgram(kind) => {
+                let prog = self
+                    .stage_programs
+                    .iter()
+                    .find(|(k, _)| k == kind)
+                    .map(|&(_, p)| p);
+                let Some(prog) = prog.filter(|_| self.sso) else {
+                    self.out(format!(
+                        "{}:{line}: `active shader program' needs `SSO ENABLED' and a shader of that stage",
+                        self.file
+                    ));
+                    return Err(Stop(Verdict::Fail));
+                };
+                self.gl.active_shader_program(self.pipeline, prog);
+            }
             Command::NeedsLaterGl(what) => {
                 let msg = format!(
                     "{}:{line}: test requires {what}, which shaderbox's shader runner does not implement yet",
@@ -1022,7 +1135,7 @@ impl<'a, G: GlApi> Runner<'a, G> {
         let loc = if name.starts_with(|c: char| c.is_ascii_digit()) {
             crate::shader_runner::scan::scan_i32_base0(name).map_or(-1, |v| v.0)
         } else {
-            let prog = self.current_program();
+            let prog = self.uniform_program();
             let loc = if prog == 0 {
                 -1
             } else {

@@ -133,7 +133,12 @@ pub enum Requirement {
     Rlimit(u64),
     /// `ignore_missing_uniforms`.
     IgnoreMissingUniforms,
-    /// Something shaderbox cannot provide (SSO, SPIR-V only, ...).
+    /// `SSO ENABLED`: each stage is linked into a separable program of
+    /// its own and the programs are bound in a program pipeline
+    /// (GL_ARB_separate_shader_objects, needed below GL 4.1).
+    SeparateShaderObjects,
+    /// Something shaderbox cannot provide (SPIR-V only, `SEPARABLE
+    /// PROGRAM`, ...).
     Unsupported(String),
 }
 
@@ -535,9 +540,22 @@ fn parse_requirement(raw: &str, line: usize) -> Result<Option<Requirement>, Scri
             .ok_or_else(|| err(line, format!("invalid rlimit argument at: {}", rest.trim())))?;
         return Ok(Some(Requirement::Rlimit(u64::from(v as u32))));
     }
-    if s.starts_with("SSO") || s.starts_with("SEPARABLE PROGRAM") {
+    if let Some(rest) = s.strip_prefix("SSO") {
+        // piglit reads `SSO` followed by `ENABLED` (spaces between) and
+        // ignores any other `SSO` line.
+        if scan::skip_space(rest).starts_with("ENABLED") {
+            return Ok(Some(Requirement::SeparateShaderObjects));
+        }
+        return Ok(None);
+    }
+    // Later piglit's one program flagged GL_PROGRAM_SEPARABLE, whose tests
+    // check the gl_PerVertex redeclaration rule of separable programs,
+    // which shaderbox's link does not apply: piglit's `SSO ENABLED`
+    // script clip-distance-vs-gs-out-sso, which Mesa passes, uses the
+    // built-in blocks without redeclaring them.
+    if s.starts_with("SEPARABLE PROGRAM") {
         return Ok(Some(Requirement::Unsupported(
-            "separate shader objects (GL_ARB_separate_shader_objects)".into(),
+            "a separable program checked for gl_PerVertex redeclarations".into(),
         )));
     }
     if let Some(rest) = s.strip_prefix("SPIRV") {
@@ -819,5 +837,18 @@ draw rect -1 -1 2 2
         assert_eq!(s.shaders[0].source, None);
         assert_eq!(s.shaders[1].source.as_deref(), Some("x\n"));
         assert!(!s.has_test);
+    }
+
+    #[test]
+    fn sso_enabled_is_a_requirement() {
+        assert_eq!(
+            parse_requirement("SSO   ENABLED", 3).unwrap(),
+            Some(Requirement::SeparateShaderObjects)
+        );
+        assert_eq!(parse_requirement("SSO DISABLED", 3).unwrap(), None);
+        assert!(matches!(
+            parse_requirement("SEPARABLE PROGRAM ENABLED", 3).unwrap(),
+            Some(Requirement::Unsupported(_))
+        ));
     }
 }

@@ -4,7 +4,7 @@
 //! `crate::limits`.
 
 use super::blocks::{check_blocks, check_uniform_blocks};
-use super::types::{components, same_type_across};
+use super::types::{components, same_type_across, same_type_by_location};
 use super::{push, LinkDiagnostic, LinkedStage};
 use crate::diag::Code;
 use crate::ir::{self, Stage, Storage};
@@ -28,6 +28,7 @@ pub(super) fn location_slots(ty: Type) -> u32 {
 /// §4.3.8): within the limits; fragment outputs may not share a location
 /// and index (vertex inputs may: GL 2.0 allows aliasing attributes).
 pub(super) fn check_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
+    check_varying_locations(s, diags);
     let (storage, max, what) = match s.stage {
         Stage::Vertex => (
             Storage::Attribute,
@@ -101,6 +102,57 @@ pub(super) fn check_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) 
                     b.name, u.name
                 ),
             );
+        }
+    }
+}
+
+/// The locations of the inputs and outputs between stages
+/// (GL_ARB_separate_shader_objects, GLSL 4.10 §4.3.8): within
+/// [`limits::MAX_VARYING_LOCATIONS`], and no two outputs, nor two inputs,
+/// of the stage on one location (a geometry input's locations are those
+/// of one vertex's element).
+fn check_varying_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
+    let max = limits::MAX_VARYING_LOCATIONS;
+    for storage in [Storage::Varying, Storage::GeometryInput] {
+        let mut used: Vec<Option<&str>> = vec![None; max as usize];
+        for g in s.module.globals.iter().filter(|g| g.storage == storage) {
+            let Some(loc) = g.location.filter(|_| !g.builtin) else {
+                continue;
+            };
+            let ty = if storage == Storage::GeometryInput {
+                g.ty.element()
+            } else {
+                g.ty
+            };
+            let n = location_slots(ty);
+            if u64::from(loc) + u64::from(n) > u64::from(max) {
+                push(
+                    diags,
+                    None,
+                    Code::LinkTooMany,
+                    format!(
+                        "`{}' at location {loc} does not fit: there are {max} locations between stages",
+                        g.name
+                    ),
+                );
+                continue;
+            }
+            for slot in &mut used[loc as usize..(loc + n) as usize] {
+                if let Some(other) = slot {
+                    push(
+                        diags,
+                        None,
+                        Code::LinkInterfaceMismatch,
+                        format!(
+                            "`{other}' and `{}' of the {} shader are both assigned location {loc}",
+                            g.name,
+                            s.stage.name()
+                        ),
+                    );
+                    break;
+                }
+                *slot = Some(&g.name);
+            }
         }
     }
 }
@@ -293,7 +345,16 @@ pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<
         .iter()
         .filter(|g| !g.builtin && g.block.is_none())
     {
-        let vg = vm.globals.iter().find(|g| g.name == fg.name);
+        // An input with a location takes the output with that location
+        // whatever its name (GL_ARB_separate_shader_objects, "Shader
+        // Interface Matching"); the others match by name.
+        let vg = match fg.location {
+            Some(l) => vm
+                .globals
+                .iter()
+                .find(|g| g.storage == Storage::Varying && g.location == Some(l)),
+            None => vm.globals.iter().find(|g| g.name == fg.name),
+        };
         let fty = if per_vertex {
             per_vertex_row(fm, fg.ty.element())
         } else {
@@ -302,7 +363,12 @@ pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<
         match fg.storage {
             s if s == input => match vg {
                 Some(vg) if vg.storage == Storage::Varying => {
-                    if !same_type_across(vm, vg.ty, fm, fty) {
+                    let same = if fg.location.is_some() {
+                        same_type_by_location(vm, vg.ty, fm, fty)
+                    } else {
+                        same_type_across(vm, vg.ty, fm, fty)
+                    };
+                    if !same {
                         push(
                             diags,
                             None,

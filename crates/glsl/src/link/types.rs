@@ -41,10 +41,24 @@ pub(super) fn same_type_across(am: &Module, a: Type, bm: &Module, b: Type) -> bo
         (Some(_), Some(_)) => true,
         _ => false,
     };
-    arrays && same_base_across(am, a.base, bm, b.base, 0)
+    arrays && same_base_across(am, a.base, bm, b.base, (true, 0))
 }
 
-fn same_base_across(am: &Module, a: Base, bm: &Module, b: Base, depth: u32) -> bool {
+/// [`same_type_across`] for an input and the output of another stage
+/// matched by location (GL_ARB_separate_shader_objects, "Shader Interface
+/// Matching"): structures match when their members match in name, type
+/// and order, whatever the structures' names.
+pub(super) fn same_type_by_location(am: &Module, a: Type, bm: &Module, b: Type) -> bool {
+    a.array == b.array && same_base_across(am, a.base, bm, b.base, (false, 0))
+}
+
+fn same_base_across(
+    am: &Module,
+    a: Base,
+    bm: &Module,
+    b: Base,
+    (names, depth): (bool, u32),
+) -> bool {
     match (a, b) {
         (Base::Struct(x), Base::Struct(y)) => {
             let (Some(x), Some(y)) = (am.structs.get(x.0 as usize), bm.structs.get(y.0 as usize))
@@ -54,12 +68,12 @@ fn same_base_across(am: &Module, a: Base, bm: &Module, b: Base, depth: u32) -> b
             // Struct nesting is bounded by the compiler; the depth guard
             // only keeps a malformed module from recursing forever.
             depth < 64
-                && x.name == y.name
+                && (!names || x.name == y.name)
                 && x.members.len() == y.members.len()
                 && x.members.iter().zip(&y.members).all(|(p, q)| {
                     p.name == q.name
                         && p.ty.array == q.ty.array
-                        && same_base_across(am, p.ty.base, bm, q.ty.base, depth + 1)
+                        && same_base_across(am, p.ty.base, bm, q.ty.base, (names, depth + 1))
                 })
         }
         _ => a == b,

@@ -27,6 +27,7 @@ fn params(input: InputPrimitive, output: OutputPrimitive, vertices_out: u32) -> 
             output,
             vertices_out,
         },
+        ..LinkOptions::default()
     }
 }
 

@@ -478,7 +478,11 @@ impl Analyzer {
         }
         match lower.as_str() {
             "location" => {
-                if !self.require(Feature::ExplicitLocation, "`layout(location)'", span) {
+                // Which variables may take it is `check_var_layout`'s
+                // question; here, whether the language has it at all.
+                if !self.lang.allows(Feature::VaryingLocation)
+                    && !self.require(Feature::ExplicitLocation, "`layout(location)'", span)
+                {
                     return;
                 }
                 let Some(v) = id.value.as_ref().and_then(|e| self.layout_value(e)) else {
@@ -578,15 +582,22 @@ impl Analyzer {
         name: &str,
     ) -> (Option<u32>, Option<u32>) {
         let l = &q.layout;
-        let loc_ok = match q.storage {
-            Some(Qualifier::In) => self.stage == Stage::Vertex,
-            Some(Qualifier::Out) => self.stage == Stage::Fragment,
-            _ => false,
+        // Vertex inputs and fragment outputs (GL_ARB_explicit_attrib_location,
+        // GLSL 3.30) or the inputs and outputs between stages
+        // (GL_ARB_separate_shader_objects).
+        let (loc_ok, feature) = match q.storage {
+            Some(Qualifier::In) if self.stage == Stage::Vertex => (true, Feature::ExplicitLocation),
+            Some(Qualifier::Out) if self.stage == Stage::Fragment => {
+                (true, Feature::ExplicitLocation)
+            }
+            Some(Qualifier::In | Qualifier::Out) => (true, Feature::VaryingLocation),
+            _ => (false, Feature::ExplicitLocation),
         };
         let mut location = None;
         let mut index = None;
         if let Some((v, span)) = l.index {
-            if loc_ok && self.stage == Stage::Fragment && l.location.is_some() {
+            let frag_out = self.stage == Stage::Fragment && q.storage == Some(Qualifier::Out);
+            if frag_out && l.location.is_some() {
                 index = Some(v);
             } else {
                 self.error(
@@ -597,14 +608,16 @@ impl Analyzer {
             }
         }
         if let Some((v, span)) = l.location {
-            if loc_ok {
-                location = Some(v);
-            } else {
+            if !loc_ok {
                 self.error(
                     Code::BadQualifier,
                     span,
-                    format!("`location' is only allowed on vertex shader `in' and fragment shader `out' variables, not on `{name}'"),
+                    format!(
+                        "`location' is only allowed on `in' and `out' variables, not on `{name}'"
+                    ),
                 );
+            } else if self.require(feature, "`layout(location)' on this variable", span) {
+                location = Some(v);
             }
         }
         for (what, span) in [

@@ -770,3 +770,125 @@ fn structs_are_not_defined_inside_blocks() {
         "#version 150\nstruct S { int a; };\nuniform U { S c; float d; } u;\nout float x;\nvoid main() { x = u.d + float(u.c.a); }",
     ));
 }
+
+/// GL_ARB_separate_shader_objects' GLSL side: `layout(location)` on the
+/// inputs and outputs between stages, global `in`/`out` before 1.30, and
+/// inputs matched to outputs by location when linked together.
+#[test]
+fn separate_shader_objects_varying_locations() {
+    let ext = "#version 150\n#extension GL_ARB_separate_shader_objects : require\n";
+    let v = vert(&format!(
+        "{ext}in vec4 p; layout(location = 2) out vec4 a; void main() {{ gl_Position = p; a = p; }}"
+    ));
+    ok(&v);
+    assert_eq!(global(&v, "a").location, Some(2));
+    let f = frag(&format!(
+        "{ext}layout(location = 2) in vec4 b; out vec4 c; void main() {{ c = b; }}"
+    ));
+    ok(&f);
+    assert_eq!(global(&f, "b").location, Some(2));
+    // Matched by location whatever the names; a location no output has
+    // leaves the input without one.
+    assert!(crate::link::link(&[&v, &f]).ok());
+    let g = frag(&format!(
+        "{ext}layout(location = 3) in vec4 a; out vec4 c; void main() {{ c = a; }}"
+    ));
+    assert!(!crate::link::link(&[&v, &g]).ok());
+    // Structures matched by location need the same members, not the
+    // same name; matched by name, they still need the same name.
+    let vs = vert(&format!(
+        "{ext}in vec4 p; layout(location = 0) out struct S {{ vec4 a; }} s; void main() {{ gl_Position = p; s.a = p; }}"
+    ));
+    let by_location = frag(&format!(
+        "{ext}layout(location = 0) in struct T {{ vec4 a; }} t; out vec4 c; void main() {{ c = t.a; }}"
+    ));
+    assert!(crate::link::link(&[&vs, &by_location]).ok());
+    let other_member = frag(&format!(
+        "{ext}layout(location = 0) in struct T {{ vec4 b; }} t; out vec4 c; void main() {{ c = t.b; }}"
+    ));
+    assert!(!crate::link::link(&[&vs, &other_member]).ok());
+    let by_name = |name: &str| {
+        let v = vert(
+            "#version 150\nin vec4 p; out struct S { vec4 a; } s; void main() { gl_Position = p; s.a = p; }",
+        );
+        let f = frag(&format!(
+            "#version 150\nin struct {name} {{ vec4 a; }} s; out vec4 c; void main() {{ c = s.a; }}"
+        ));
+        crate::link::link(&[&v, &f]).ok()
+    };
+    assert!(by_name("S"));
+    assert!(!by_name("T"));
+    // Two outputs on one location, or one past the last, do not link.
+    for bad in [
+        "layout(location = 1) out vec4 a; layout(location = 1) out vec4 b;",
+        "layout(location = 0) out vec4 a[2]; layout(location = 1) out vec4 b;",
+        "layout(location = 31) out vec4 a[2]; out vec4 b;",
+    ] {
+        let v = vert(&format!(
+            "{ext}in vec4 p; {bad} void main() {{ gl_Position = p; }}"
+        ));
+        ok(&v);
+        assert!(!crate::link::link(&[&v]).ok(), "{bad}");
+    }
+    // The extension is what allows them: 1.50 and 3.30 alone do not (3.30
+    // has `layout(location)', on vertex inputs and fragment outputs only).
+    for version in ["150", "330"] {
+        let s = vert(&format!(
+            "#version {version}\nin vec4 p; layout(location = 0) out vec4 a; void main() {{ gl_Position = p; a = p; }}"
+        ));
+        assert!(!s.ok(), "{version}");
+    }
+    let s = vert("#version 330\nin vec4 p; layout(location = 0) out vec4 a; void main() { gl_Position = p; a = p; }");
+    assert!(
+        s.info_log().contains("GL_ARB_separate_shader_objects"),
+        "{}",
+        s.info_log()
+    );
+    // `index` stays a fragment output's; uniforms take no location.
+    for bad in [
+        "layout(location = 0, index = 1) in vec4 b; void main() {}",
+        "layout(location = 0) uniform vec4 u; void main() {}",
+    ] {
+        assert!(!frag(&format!("{ext}{bad}")).ok(), "{bad}");
+    }
+    // Global `in`/`out` (and `layout`) before GLSL 1.30 with the extension.
+    let old = "#version 120\n#extension GL_ARB_separate_shader_objects : require\n";
+    ok(&vert(&format!(
+        "{old}in vec4 p; layout(location = 1) out vec4 a; void main() {{ gl_Position = p; a = p; }}"
+    )));
+    assert!(!vert("#version 120\nout vec4 a; void main() { gl_Position = a; }").ok());
+    // The macro is defined.
+    ok(&frag(&format!(
+        "{ext}#if GL_ARB_separate_shader_objects != 1\n#error missing\n#endif\nout vec4 c; void main() {{ c = vec4(1); }}"
+    )));
+}
+
+/// A separable program may hold a geometry stage without a vertex stage
+/// (GL_ARB_separate_shader_objects); other programs may not.
+#[test]
+fn separable_programs_need_no_vertex_stage() {
+    let gs = compile(
+        &["#version 150\nlayout(triangles) in; layout(triangle_strip, max_vertices = 3) out;\nvoid main() { gl_Position = gl_in[0].gl_Position; EmitVertex(); }"],
+        &CompileOptions::new(Stage::Geometry),
+    );
+    ok(&gs);
+    assert!(!crate::link::link(&[&gs]).ok());
+    let opts = crate::link::LinkOptions {
+        separable: true,
+        ..Default::default()
+    };
+    let p = crate::link::link_with(&[&gs], &opts);
+    assert!(p.ok(), "{}", p.info_log());
+    // GL_EXT_separate_shader_objects' rule: without user-defined inputs.
+    let lone = crate::link::LinkOptions {
+        lone_geometry: true,
+        ..Default::default()
+    };
+    assert!(crate::link::link_with(&[&gs], &lone).ok());
+    let reads_user = compile(
+        &["#version 150\nlayout(triangles) in; layout(triangle_strip, max_vertices = 3) out;\nin vec4 c[];\nvoid main() { gl_Position = c[0]; EmitVertex(); }"],
+        &CompileOptions::new(Stage::Geometry),
+    );
+    ok(&reads_user);
+    assert!(!crate::link::link_with(&[&reads_user], &lone).ok());
+}

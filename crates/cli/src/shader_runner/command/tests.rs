@@ -375,3 +375,16 @@ fn textures() {
     assert!(parse("texparameter 2D depth_mode purple").is_err());
     assert!(parse("texparameter 2D swizzle_a purple").is_err());
 }
+
+#[test]
+fn active_shader_program_names_a_stage() {
+    assert_eq!(
+        p("active shader program GL_FRAGMENT_SHADER"),
+        Command::ActiveShaderProgram(gl::enums::GL_FRAGMENT_SHADER)
+    );
+    assert!(matches!(
+        p("active shader program GL_TESS_CONTROL_SHADER"),
+        Command::NeedsLaterGl(_)
+    ));
+    assert!(parse("active shader program GL_FOO").is_err());
+}
