@@ -6,11 +6,11 @@
 //! stage of a draw.
 //!
 //! Contract:
-//! - The program current for a stage ([`Context::stage_program`]) is the
+//! - The program current for a stage (`Context::stage_program`) is the
 //!   one glUseProgram made current, for every stage; without one, the
 //!   bound pipeline's program for that stage; else none. A stage's
 //!   program is *active* when its executable has that stage
-//!   ([`Context::stage_executable`]); the draw path takes every stage's
+//!   (`Context::stage_executable`); the draw path takes every stage's
 //!   kernel, uniforms, attribute locations and transform feedback
 //!   varyings from that stage's active program.
 //! - glUniform* update the current program, else the bound pipeline's
