@@ -54,6 +54,9 @@ fn renderbuffer_bits(internal: u32) -> [i32; 6] {
         Some(GL_RGB) => [c, c, c, 0, 0, 0],
         Some(GL_RG) => [c, c, 0, 0, 0, 0],
         Some(GL_RED) => [c, 0, 0, 0, 0, 0],
+        // A DEPTH_COMPONENT16 renderbuffer stores 16 bits (GL 3.0
+        // §4.4.2.2); the other depth formats are kept at 24.
+        Some(GL_DEPTH_COMPONENT) if internal == GL_DEPTH_COMPONENT16 => [0, 0, 0, 0, 16, 0],
         Some(GL_DEPTH_COMPONENT) => [0, 0, 0, 0, 24, 0],
         Some(GL_DEPTH_STENCIL) => [0, 0, 0, 0, 24, 8],
         _ if internal != 0 => [0, 0, 0, 0, 0, 8],
@@ -783,6 +786,46 @@ impl Context {
             }
         };
         Some(v)
+    }
+
+    /// glGet of GL_RED_BITS … GL_ALPHA_BITS, GL_DEPTH_BITS and
+    /// GL_STENCIL_BITS: the draw framebuffer's (GL 3.0 §6.1.3, "framebuffer
+    /// dependent values"). The default framebuffer has 8-bit colour and the
+    /// 24-bit depth and 8-bit stencil buffers it was made with, if any; a
+    /// framebuffer object, the component sizes of its first draw buffer's
+    /// image and of its depth and stencil images (0 where nothing is
+    /// attached).
+    pub(crate) fn framebuffer_bits(&self, pname: u32) -> i32 {
+        let query = match pname {
+            GL_RED_BITS => GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE,
+            GL_GREEN_BITS => GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE,
+            GL_BLUE_BITS => GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE,
+            GL_ALPHA_BITS => GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE,
+            GL_DEPTH_BITS => GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE,
+            _ => GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
+        };
+        let name = self.objects.draw_framebuffer;
+        let Some(f) = (name != 0)
+            .then(|| self.objects.framebuffers.get(&name))
+            .flatten()
+        else {
+            return match query {
+                GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE => 24 * self.fb.depth.is_some() as i32,
+                GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE => 8 * self.fb.stencil.is_some() as i32,
+                _ => 8,
+            };
+        };
+        let image = match query {
+            GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE => f.depth,
+            GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE => f.stencil,
+            _ => f
+                .draw_buffers
+                .first()
+                .and_then(|b| f.color.get(b.wrapping_sub(GL_COLOR_ATTACHMENT0) as usize))
+                .copied()
+                .flatten(),
+        };
+        image.map_or(0, |a| self.attachment_bits(&a, query))
     }
 
     /// The bits of one component (`pname`, a GL_FRAMEBUFFER_ATTACHMENT_*_SIZE)

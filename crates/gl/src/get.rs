@@ -243,9 +243,8 @@ impl Context {
             GL_MAX_SAMPLE_MASK_WORDS if api.at_least(3, 2) => {
                 int(&[crate::rasterization::MAX_SAMPLE_MASK_WORDS as i64])
             }
-            GL_RED_BITS | GL_GREEN_BITS | GL_BLUE_BITS | GL_ALPHA_BITS => int(&[8]),
-            GL_DEPTH_BITS => int(&[24]),
-            GL_STENCIL_BITS => int(&[8]),
+            GL_RED_BITS | GL_GREEN_BITS | GL_BLUE_BITS | GL_ALPHA_BITS | GL_DEPTH_BITS
+            | GL_STENCIL_BITS => int(&[self.framebuffer_bits(pname) as i64]),
             GL_DOUBLEBUFFER => Some((vec![1.0], Bool)),
             GL_RGBA_MODE => Some((vec![1.0], Bool)),
             GL_VIEWPORT => int(&self.viewport.map(|x| x as i64)),

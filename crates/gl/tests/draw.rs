@@ -597,3 +597,29 @@ fn depth_component16_tests_at_16_bits() {
         [1.0, 0.0, 0.0, 1.0]
     ));
 }
+
+/// GL 3.0 §6.1.3: GL_*_BITS are the draw framebuffer's: the default
+/// one's 8-bit colour, 24-bit depth and 8-bit stencil, then a framebuffer
+/// object's first draw buffer (RGB: no alpha) and depth image (16 bits,
+/// no stencil).
+#[test]
+fn buffer_bits_follow_the_draw_framebuffer() {
+    let mut ctx = Context::new(8, 8);
+    let bits = |ctx: &mut Context| {
+        [GL_RED_BITS, GL_ALPHA_BITS, GL_DEPTH_BITS, GL_STENCIL_BITS].map(|p| ctx.get_integerv(p)[0])
+    };
+    assert_eq!(bits(&mut ctx), [8, 8, 24, 8]);
+    let rb = ctx.gen_renderbuffers(2);
+    ctx.bind_renderbuffer(GL_RENDERBUFFER, rb[0]);
+    ctx.renderbuffer_storage(GL_RENDERBUFFER, GL_RGB8, 8, 8);
+    ctx.bind_renderbuffer(GL_RENDERBUFFER, rb[1]);
+    ctx.renderbuffer_storage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT16, 8, 8);
+    let fb = ctx.gen_framebuffers(1)[0];
+    ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+    ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+    ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+    assert_eq!(bits(&mut ctx), [8, 0, 16, 0]);
+    ctx.bind_framebuffer(GL_FRAMEBUFFER, 0);
+    assert_eq!(bits(&mut ctx), [8, 8, 24, 8]);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+}
