@@ -14,7 +14,7 @@
 //! crate, and the C layer's image sizes, go through here.
 
 use crate::enums::*;
-use crate::texture_format::{integer_texel, texel_for};
+use crate::texture_format::{integer_texel, texel_for, Unorm8Texels};
 
 /// Components per pixel of a client format.
 pub fn format_components(format: u32) -> Option<usize> {
@@ -306,9 +306,56 @@ pub fn unpack_image(
             })
             .collect();
     }
+    if let (GL_UNSIGNED_BYTE, Some(order), Some(conv)) =
+        (ty, unorm8_order(format), Unorm8Texels::new(internal))
+    {
+        // Bytes straight to texels by table: the same values as below
+        // (to_rgba's 0 and 1 are the bytes 0 and 255 here).
+        return pixels
+            .map(|b| {
+                conv.texel(order.map(|o| match o {
+                    Byte::At(i) => b.get(i).copied().unwrap_or(0),
+                    Byte::Zero => 0,
+                    Byte::Full => 255,
+                }))
+            })
+            .collect();
+    }
     pixels
         .map(|b| texel_for(to_rgba(decode_pixel(b, n, ty), format), internal))
         .collect()
+}
+
+/// One RGBA component of a byte pixel ([`unorm8_order`]).
+#[derive(Clone, Copy)]
+enum Byte {
+    /// The pixel's byte `i` (0 past the end of the data, as
+    /// [`decode_pixel`] reads it).
+    At(usize),
+    /// The constant 0.
+    Zero,
+    /// The constant 1 (the byte 255).
+    Full,
+}
+
+/// For [`unpack_image`]'s byte path: where each RGBA component of a pixel
+/// of `format` comes from, as [`to_rgba`] places them; None for formats
+/// other than the colour ones.
+fn unorm8_order(format: u32) -> Option<[Byte; 4]> {
+    use Byte::{At, Full, Zero};
+    Some(match format {
+        GL_RED | GL_LUMINANCE => [At(0), Zero, Zero, Full],
+        GL_GREEN => [Zero, At(0), Zero, Full],
+        GL_BLUE => [Zero, Zero, At(0), Full],
+        GL_ALPHA => [Zero, Zero, Zero, At(0)],
+        GL_LUMINANCE_ALPHA => [At(0), Zero, Zero, At(1)],
+        GL_RG => [At(0), At(1), Zero, Full],
+        GL_RGB => [At(0), At(1), At(2), Full],
+        GL_BGR => [At(2), At(1), At(0), Full],
+        GL_BGRA => [At(2), At(1), At(0), At(3)],
+        GL_RGBA => [At(0), At(1), At(2), At(3)],
+        _ => return None,
+    })
 }
 
 /// Packs `w * h` RGBA values (bottom row first) as `format`/`ty` rows at
@@ -546,5 +593,70 @@ impl PixelTransfer {
             s >> (-(self.index_shift as i64)).min(63)
         };
         (shifted.wrapping_add(self.index_offset as i64) & 0xff) as u8
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn byte_images_unpack_by_table_as_by_conversion() {
+        let formats = [
+            GL_RED,
+            GL_GREEN,
+            GL_BLUE,
+            GL_ALPHA,
+            GL_LUMINANCE,
+            GL_LUMINANCE_ALPHA,
+            GL_RG,
+            GL_RGB,
+            GL_BGR,
+            GL_BGRA,
+            GL_RGBA,
+        ];
+        let internals = [
+            GL_RGBA8,
+            GL_RGB8,
+            GL_RGB5_A1,
+            GL_ALPHA8,
+            GL_LUMINANCE8_ALPHA8,
+            GL_R8,
+            GL_RGBA16F,
+        ];
+        // 4x3 pixels of every byte value in turn, the last row short.
+        let data: Vec<u8> = (0..=255u8).cycle().step_by(7).take(4 * 3 * 4 - 3).collect();
+        for format in formats {
+            let n = format_components(format).unwrap();
+            for internal in internals {
+                let got = unpack_image(
+                    Some(&data),
+                    4,
+                    3,
+                    1,
+                    format,
+                    GL_UNSIGNED_BYTE,
+                    internal as i32,
+                    1,
+                );
+                let want: Vec<[f32; 4]> = (0..12)
+                    .map(|p| {
+                        let b = data.get(p * n..p * n + n).unwrap_or(&[]);
+                        texel_for(
+                            to_rgba(decode_pixel(b, n, GL_UNSIGNED_BYTE), format),
+                            internal as i32,
+                        )
+                    })
+                    .collect();
+                assert_eq!(got.len(), want.len());
+                for (g, w) in got.iter().zip(&want) {
+                    assert_eq!(
+                        g.map(f32::to_bits),
+                        w.map(f32::to_bits),
+                        "{format:#x} {internal:#x}"
+                    );
+                }
+            }
+        }
     }
 }
