@@ -90,8 +90,7 @@ def counted(spec, libdir, fragments):
             instructions.run_callgrind(spec, libdir, frames, out)
             costs = instructions.self_costs(out)
         totals = {fn: sum(c.values()) for fn, c in costs.items()}
-        own = sum(n for fn, n in totals.items()
-                  if "::" in fn and not fn.startswith(("core::", "alloc::", "std::")))
+        own = sum(n for fn, n in totals.items() if instructions.is_ours(fn))
         generated = sum(n for fn, n in totals.items() if instructions.is_generated(fn))
         return sum(totals.values()), own, generated
 

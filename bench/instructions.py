@@ -55,6 +55,12 @@ def run_callgrind(spec, lib, frames, out):
         raise SystemExit(f"callgrind run failed:\n{p.stderr[-2000:]}")
 
 
+def is_ours(fn):
+    """Whether a callgrind function name is one of this repository's (a
+    Rust path outside the standard library)."""
+    return "::" in fn and not fn.startswith(("core::", "alloc::", "std::"))
+
+
 def is_generated(fn):
     """Whether a callgrind function name is generated code: it has no
     symbol, so callgrind names it by its address."""
@@ -158,8 +164,7 @@ def main():
         run_callgrind(args.spec, os.path.abspath(args.lib_dir), args.frames, out)
         costs = self_costs(out)
     totals = {fn: sum(c.values()) for fn, c in costs.items()}
-    mine = {fn: n for fn, n in totals.items()
-            if "::" in fn and not fn.startswith(("core::", "alloc::", "std::"))}
+    mine = {fn: n for fn, n in totals.items() if is_ours(fn)}
     jit = sum(n for fn, n in totals.items() if is_generated(fn))
     print(f"{args.spec}: instructions per {args.per:g} (self cost)")
     print(f"{sum(mine.values()) / args.per:14.1f}  in this repository's functions")

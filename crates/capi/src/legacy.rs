@@ -32,17 +32,6 @@ use crate::layer_state::{MAX_PIXEL_MAP_TABLE, PIXEL_MAPS};
 use gl::enums::*;
 use std::ffi::c_void;
 
-/// Whether the polygon-stipple pattern may be read/written at `p`: with a
-/// pixel buffer bound the pointer is an offset, not memory.
-fn stipple_through_buffer(c: &mut OsContext, pack: bool) -> bool {
-    let t = if pack {
-        GL_PIXEL_PACK_BUFFER
-    } else {
-        GL_PIXEL_UNPACK_BUFFER
-    };
-    c.gl.bound_buffer(t) != 0
-}
-
 /// The 128 bytes of a polygon stipple (four per row, bottom row first)
 /// from a packed 32x32 bitmap whose rows are padded to `alignment`.
 fn stipple_rows(packed: &[u8], alignment: usize) -> [u8; 128] {
@@ -247,23 +236,10 @@ gl_entry_points! {
         }
         // Unpacked as a 32x32 bitmap would be (GL 2.1 §3.5.2): the
         // unpack modes apply.
-        let store = c.gl.unpack_modes();
-        let Some(len) = store.bitmap_extent(32, 32) else {
+        let Ok(Some(packed)) = crate::pixel_path::bitmap_bytes(c, 32, 32, mask) else {
             return;
         };
-        let raw = if stipple_through_buffer(c, false) {
-            let Ok(bytes) = crate::buffers::read_pixel_buffer(c, GL_PIXEL_UNPACK_BUFFER, mask as usize, len) else {
-                return;
-            };
-            bytes
-        } else if mask.is_null() {
-            return;
-        } else {
-            // SAFETY: GL's contract: the pattern's bits, laid out per the
-            // unpack modes, lie within `len` bytes of `mask`.
-            std::slice::from_raw_parts(mask, len).to_vec()
-        };
-        let m = stipple_rows(&store.gather_bitmap(&raw, 32, 32), store.alignment);
+        let m = stipple_rows(&packed, c.gl.unpack_modes().alignment);
         if c.record(move || with_stipple(&m)) {
             return;
         }
@@ -283,7 +259,8 @@ gl_entry_points! {
         for (dst, src) in packed.chunks_exact_mut(row).zip(c.legacy.polygon_stipple.chunks_exact(4)) {
             dst[..4].copy_from_slice(src);
         }
-        if stipple_through_buffer(c, true) {
+        // With a pack buffer bound the pointer is an offset into it.
+        if c.gl.bound_buffer(GL_PIXEL_PACK_BUFFER) != 0 {
             let Ok(mut range) = crate::buffers::read_pixel_buffer(c, GL_PIXEL_PACK_BUFFER, mask as usize, len) else {
                 return;
             };

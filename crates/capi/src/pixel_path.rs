@@ -49,7 +49,7 @@ fn unpack_alignment(c: &mut OsContext) -> usize {
 /// buffer, laid out per the unpack modes (row length, skips, bit order),
 /// returned packed (most significant bit first, rows at the alignment).
 /// Err: an error was recorded and the call must do nothing.
-unsafe fn bitmap_bytes(
+pub(crate) unsafe fn bitmap_bytes(
     c: &mut OsContext,
     w: GLsizei,
     h: GLsizei,

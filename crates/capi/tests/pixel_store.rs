@@ -14,9 +14,15 @@ const H: i32 = 8;
 
 /// A current 2.1 context drawing into `buf` (W x H RGBA8).
 unsafe fn context(buf: &mut [u8]) -> OSMesaContext {
+    context_of_size(buf, W, H)
+}
+
+/// A current 2.1 context drawing into `buf` (`w` x `h` RGBA8).
+unsafe fn context_of_size(buf: &mut [u8], w: i32, h: i32) -> OSMesaContext {
+    assert!(buf.len() >= (w * h * 4) as usize);
     let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, null_mut());
     assert!(!ctx.is_null());
-    let ok = OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, W, H);
+    let ok = OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, w, h);
     assert_eq!(ok, OSMesa::GL_TRUE);
     ctx
 }
@@ -244,15 +250,7 @@ fn bitmaps_at_whole_raster_positions_start_there() {
     unsafe {
         let (w, h) = (340, 200);
         let mut buf = vec![0u8; w * h * 4];
-        let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, null_mut());
-        let ok = OSMesaMakeCurrent(
-            ctx,
-            buf.as_mut_ptr() as *mut c_void,
-            GL_UNSIGNED_BYTE,
-            w as i32,
-            h as i32,
-        );
-        assert_eq!(ok, OSMesa::GL_TRUE);
+        let ctx = context_of_size(&mut buf, w as i32, h as i32);
         glMatrixMode(GL_PROJECTION);
         glLoadIdentity();
         glOrtho(0.0, w as f64, 0.0, h as f64, -1.0, 1.0);

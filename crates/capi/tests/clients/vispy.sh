@@ -10,11 +10,6 @@
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../../../.." && pwd)
-venv=${1:-${CARGO_TARGET_DIR:-$root/target}/clients-venv}
-[ -x "$venv/bin/python" ] || python3 -m venv "$venv"
-pip="$venv/bin/python -m pip install -q --disable-pip-version-check"
-$pip -r "$here/requirements.txt"
-$pip --no-deps PyOpenGL==3.1.10
-libdir=$(bash "$root/scripts/osmesa-libs.sh" --release)
+. "$here/venv.sh"
 exec "$venv/bin/python" "$here/../python/compare.py" --bounds "$here/vispy_bounds.txt" \
     "$libdir" "$here/vispy_scenes.py"
