@@ -5,6 +5,8 @@
 //! - `SHADERBOX_DEBUG_PIXEL=X,Y`: the window pixel (bottom-left origin);
 //!   without it nothing is traced and draws pay one `Option` check.
 //! - `SHADERBOX_DEBUG_DRAW=N`: only the N-th draw (0 = first).
+//! - `SHADERBOX_DEBUG_LAYER=L`: in a draw whose geometry shader writes
+//!   `gl_Layer` into a layered framebuffer, the layer (default 0).
 //! - `SHADERBOX_DEBUG_OUT=PATH`: where reports go (default
 //!   `shaderbox-debug.txt` in the working directory).
 //! - `SHADERBOX_DEBUG_FORMAT=text|json` (default text).
@@ -41,6 +43,15 @@ pub fn parse(var: impl Fn(&str) -> Option<String>) -> Result<Option<DebugEnv>, S
         request.draw = Some(d.trim().parse().map_err(|_| {
             format!("SHADERBOX_DEBUG_DRAW=`{d}': expected a draw number (0 = the first)")
         })?);
+    }
+    if let Some(l) = var("SHADERBOX_DEBUG_LAYER") {
+        request.layer = l
+            .trim()
+            .parse::<u16>()
+            .map_err(|_| {
+                format!("SHADERBOX_DEBUG_LAYER=`{l}': expected a layer number (0 = the first)")
+            })?
+            .into();
     }
     let json = match var("SHADERBOX_DEBUG_FORMAT").as_deref() {
         None | Some("text") => false,
@@ -115,6 +126,7 @@ mod tests {
         let e = env(&[
             ("SHADERBOX_DEBUG_PIXEL", "3, 4"),
             ("SHADERBOX_DEBUG_DRAW", "2"),
+            ("SHADERBOX_DEBUG_LAYER", "3"),
             ("SHADERBOX_DEBUG_FORMAT", "json"),
             ("SHADERBOX_DEBUG_OUT", "/tmp/x.json"),
         ])
@@ -122,6 +134,7 @@ mod tests {
         .unwrap();
         assert_eq!(e.request.pixel, (3, 4));
         assert_eq!(e.request.draw, Some(2));
+        assert_eq!(e.request.layer, 3);
         assert!(e.json);
         assert_eq!(e.out, std::path::PathBuf::from("/tmp/x.json"));
     }
@@ -137,6 +150,12 @@ mod tests {
         ])
         .unwrap_err()
         .contains("draw number"));
+        assert!(env(&[
+            ("SHADERBOX_DEBUG_PIXEL", "1,2"),
+            ("SHADERBOX_DEBUG_LAYER", "-1")
+        ])
+        .unwrap_err()
+        .contains("layer number"));
         assert!(env(&[
             ("SHADERBOX_DEBUG_PIXEL", "1,2"),
             ("SHADERBOX_DEBUG_FORMAT", "xml")

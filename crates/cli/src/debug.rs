@@ -28,6 +28,11 @@ pub struct Args {
     /// rectangle `X0,Y0,X1,Y1` (exclusive upper bounds).
     #[arg(long, value_parser = parse_rect)]
     pub print_rect: Option<(u32, u32, u32, u32)>,
+    /// In a draw whose geometry shader writes `gl_Layer` into a layered
+    /// framebuffer (array, 3D or cube map attachments), the layer to
+    /// explain (a cube map's face: 0 = +X ... 5 = -Z).
+    #[arg(long, default_value_t = 0)]
+    pub layer: i32,
     /// Also trace the vertex shader for this vertex (position in each
     /// debugged draw's vertex list, 0 = the first).
     #[arg(long)]
@@ -90,6 +95,7 @@ pub fn report(args: &Args) -> Result<debugger::Report, String> {
         vertex: args.vertex,
         outlines: args.outlines.is_some(),
         view: args.view.clone(),
+        layer: args.layer,
     };
     let is_scene = args.file.extension().is_some_and(|e| e == "json");
     let (mut ctx, (w, h)) = if is_scene {

@@ -224,10 +224,12 @@ pub(crate) fn draw_report(r: &DrawRecord) -> DrawReport {
         count: r.count,
         program: r.program,
         framebuffer: r.framebuffer,
+        layer: r.probe.layer,
         note: None,
         fragments: Vec::new(),
         prints: Vec::new(),
         vertex_prints: Vec::new(),
+        geometry_prints: Vec::new(),
         after: None,
         vertex: None,
         geometry: Vec::new(),
@@ -275,6 +277,15 @@ pub(crate) fn draw_report(r: &DrawRecord) -> DrawReport {
             line: locate(&r.vertex, *span).0,
             text: text.clone(),
         });
+    }
+    if let Some(gs) = &r.geometry {
+        for (primitive, span, text) in &probe.geometry_prints {
+            d.geometry_prints.push(GeometryPrint {
+                primitive: *primitive,
+                line: locate(gs, *span).0,
+                text: text.clone(),
+            });
+        }
     }
     for p in &probe.prints {
         let (line, _, _) = locate(&r.fragment, p.span);

@@ -50,6 +50,10 @@ pub struct DrawReport {
     pub count: usize,
     pub program: u32,
     pub framebuffer: u32,
+    /// The layer replayed, in a draw whose geometry shader writes
+    /// `gl_Layer` into a layered framebuffer.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub layer: Option<i32>,
     /// Why no fragment could reach the pixel, or the error that stopped the
     /// draw (what it recorded before is still reported).
     pub note: Option<String>,
@@ -59,6 +63,10 @@ pub struct DrawReport {
     /// `debugPrintfEXT` output of the vertex shader, per vertex index.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub vertex_prints: Vec<VertexPrint>,
+    /// `debugPrintfEXT` output of the geometry shader, per input
+    /// primitive (every invocation when a print rectangle is asked for).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub geometry_prints: Vec<GeometryPrint>,
     /// The pixel after the draw.
     pub after: Option<PixelReport>,
     /// The traced vertex, when one was asked for.
@@ -119,6 +127,14 @@ pub struct EmittedReport {
 #[derive(Clone, Debug, Serialize)]
 pub struct VertexPrint {
     pub vertex: u32,
+    pub line: Option<u32>,
+    pub text: String,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct GeometryPrint {
+    /// The input primitive whose invocation printed.
+    pub primitive: u32,
     pub line: Option<u32>,
     pub text: String,
 }
@@ -423,22 +439,30 @@ void main() {
         }
     }
 
-    /// A geometry shader writing gl_Layer into a layered framebuffer: the
-    /// draw is not replayed, its record says why, and the draws after it
-    /// keep their numbers.
+    /// A geometry shader sending each triangle to the layer its primitive
+    /// ID names, into a two-layer array texture: the debugger replays the
+    /// layer asked for, with its primitives only, on its images, and says
+    /// so; a layer the framebuffer lacks is named; the geometry shader's
+    /// prints of every invocation come with a print rectangle.
     #[test]
-    fn layered_draws_say_why_they_are_not_traced() {
+    fn layered_draws_replay_the_requested_layer() {
         let gs = "#version 150
+#extension GL_SHADERBOX_debug_printf : enable
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 void main() {
+    debugPrintfEXT(\"layer %d\\n\", gl_PrimitiveIDIn);
     for (int i = 0; i < 3; i++) {
         gl_Position = gl_in[i].gl_Position;
-        gl_Layer = 1;
+        gl_Layer = gl_PrimitiveIDIn;
         EmitVertex();
     }
 }";
-        let mut ctx = geometry_context(gs, &[-1.0, -1.0, 3.0, -1.0, -1.0, 3.0]);
+        // Two triangles over the whole window: primitive 0 to layer 0,
+        // primitive 1 to layer 1.
+        let big = [-1.0, -1.0, 3.0, -1.0, -1.0, 3.0];
+        let points: Vec<f32> = big.iter().chain(&big).copied().collect();
+        let mut ctx = geometry_context(gs, &points);
         let t = ctx.gen_textures(1)[0];
         ctx.bind_texture(GL_TEXTURE_2D_ARRAY, t);
         let zeros = vec![0u8; 8 * 8 * 4 * 2];
@@ -457,25 +481,39 @@ void main() {
         ctx.framebuffer_texture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, t, 0);
         let mut request = gl::debug::DebugRequest::pixel(2, 2);
         request.view = Some("c".into());
-        ctx.set_debug(Some(request));
-        ctx.draw_arrays(GL_TRIANGLES, 0, 3);
-        ctx.bind_framebuffer(GL_FRAMEBUFFER, 0);
-        ctx.draw_arrays(GL_TRIANGLES, 0, 3);
+        request.layer = 1;
+        request.print_rect = Some((0, 0, 1, 1));
+        ctx.set_debug(Some(request.clone()));
+        ctx.draw_arrays(GL_TRIANGLES, 0, 6);
         let records = ctx.take_debug_records();
-        assert!(matches!(&records[0].view, Some(Err(e)) if e.contains("gl_Layer")));
+        let view = records[0].view.as_ref().unwrap().as_ref().unwrap();
+        assert!(view.image.pixels[2 * 8 + 2].is_some());
         let report = Report::from_records((2, 2), &records);
         let text = report.text();
-        assert_eq!(report.draws.len(), 2, "{text}");
-        let layered = &report.draws[0];
-        assert!(layered.fragments.is_empty());
+        let d = &report.draws[0];
+        assert_eq!(d.layer, Some(1), "{text}");
+        assert!(text.contains("at pixel (2, 2) of layer 1"), "{text}");
+        // Only layer 1's triangle reaches the pixel: the second input
+        // primitive's.
+        assert_eq!(d.fragments.len(), 1, "{text}");
+        assert_eq!(d.fragments[0].input_primitive, Some(1), "{text}");
+        assert_eq!(d.after.as_ref().and_then(|a| a.color_bytes), Some([255; 4]));
+        // Both invocations printed.
+        let printed: Vec<u32> = d.geometry_prints.iter().map(|p| p.primitive).collect();
+        assert_eq!(printed, [0, 1], "{text}");
         assert!(
-            layered
-                .note
-                .as_deref()
-                .is_some_and(|n| n.contains("does not replay")),
+            text.contains("printf geometry, input primitive 0 line 6: layer 0"),
             "{text}"
         );
-        assert_eq!(report.draws[1].draw, 1);
-        assert_eq!(report.draws[1].fragments.len(), 1, "{text}");
+        // A layer the framebuffer does not have.
+        request.layer = 5;
+        ctx.set_debug(Some(request));
+        ctx.draw_arrays(GL_TRIANGLES, 0, 6);
+        let records = ctx.take_debug_records();
+        assert!(matches!(&records[0].view, Some(Err(e)) if e.contains("no layer 5")));
+        let report = Report::from_records((2, 2), &records);
+        let text = report.text();
+        assert!(report.draws[0].fragments.is_empty(), "{text}");
+        assert!(text.contains("has 2 layers: there is no layer 5"), "{text}");
     }
 }

@@ -13,9 +13,10 @@ pub(crate) fn report(r: &Report) -> String {
         let _ = writeln!(s, "pixel ({x}, {y}): no draw was debugged");
     }
     for d in &r.draws {
+        let layer = d.layer.map_or(String::new(), |l| format!(" of layer {l}"));
         let _ = writeln!(
             s,
-            "draw {} ({}, {} indices, program {}, framebuffer {}) at pixel ({x}, {y}): {} fragment{}",
+            "draw {} ({}, {} indices, program {}, framebuffer {}) at pixel ({x}, {y}){layer}: {} fragment{}",
             d.draw,
             d.mode,
             d.count,
@@ -39,6 +40,15 @@ pub(crate) fn report(r: &Report) -> String {
                 s,
                 "  printf vertex {}{line}: {}",
                 p.vertex,
+                p.text.trim_end()
+            );
+        }
+        for p in &d.geometry_prints {
+            let line = p.line.map_or(String::new(), |l| format!(" line {l}"));
+            let _ = writeln!(
+                s,
+                "  printf geometry, input primitive {}{line}: {}",
+                p.primitive,
                 p.text.trim_end()
             );
         }

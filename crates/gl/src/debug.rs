@@ -7,9 +7,9 @@
 //! variable tables, the compiled shader objects with their source text) —
 //! waits in the context until [`Context::take_debug_records`]. A draw a
 //! geometry shader spreads over the layers of a layered framebuffer is
-//! not replayed: its record carries the reason
-//! ([`raster::DrawProbe::unreachable`]). With no request set, a draw pays
-//! one `Option` check.
+//! replayed on the layer [`DebugRequest::layer`] names, with the
+//! primitives sent there. With no request set, a draw pays one `Option`
+//! check.
 
 use crate::Context;
 use std::sync::Arc;
@@ -30,6 +30,10 @@ pub struct DebugRequest {
     pub vertex: Option<usize>,
     /// Collect every primitive's window-space outline.
     pub outlines: bool,
+    /// In a draw whose geometry shader writes `gl_Layer` into a layered
+    /// framebuffer, the layer to replay (a cube map's face, an array
+    /// texture's layer); other draws have one.
+    pub layer: i32,
     /// Show this fragment-shader input or variable for the whole frame
     /// ([`DrawRecord::view`]).
     pub view: Option<String>,
@@ -45,6 +49,7 @@ impl DebugRequest {
             vertex: None,
             outlines: false,
             view: None,
+            layer: 0,
         }
     }
 }
@@ -142,6 +147,57 @@ impl DebugSession {
     pub fn view(&self) -> Option<&str> {
         self.wants()?;
         self.request.as_ref()?.view.as_deref()
+    }
+
+    /// The layer of a layered draw to replay.
+    pub fn layer(&self) -> i32 {
+        self.request.as_ref().map_or(0, |r| r.layer)
+    }
+
+    /// Replays `replay` on `fb` for the probe `req` and the view asked
+    /// for, `fs` being its fragment kernel.
+    pub fn replay(
+        &self,
+        fb: &raster::Framebuffer,
+        replay: &raster::Replay,
+        req: raster::ProbeRequest,
+        fs: &exec::Kernel,
+    ) -> (
+        Option<raster::DrawProbe>,
+        Option<Result<ViewRecord, String>>,
+    ) {
+        let probe = raster::probe_draw(fb, replay, req);
+        let view = self.view().map(|name| {
+            let (v, kinds) = resolve_view(fs, name)?;
+            let image = raster::view_draw(fb, replay, v).map_err(|e| e.to_string())?;
+            Ok(ViewRecord {
+                name: name.to_string(),
+                kinds,
+                image,
+            })
+        });
+        (Some(probe), view)
+    }
+
+    /// The record of a layered draw asked about a layer its framebuffer
+    /// does not have (`layers` of them).
+    pub fn missing_layer(
+        &self,
+        req: raster::ProbeRequest,
+        layer: i32,
+        layers: i32,
+    ) -> (
+        Option<raster::DrawProbe>,
+        Option<Result<ViewRecord, String>>,
+    ) {
+        let why = format!("the draw is layered and its framebuffer has {layers} layers: there is no layer {layer}");
+        let probe = raster::DrawProbe {
+            pixel: req.pixel,
+            layer: Some(layer),
+            unreachable: Some(why.clone()),
+            ..raster::DrawProbe::default()
+        };
+        (Some(probe), self.view().map(|_| Err(why)))
     }
 
     pub fn wants(&self) -> Option<raster::ProbeRequest> {

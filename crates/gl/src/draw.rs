@@ -543,25 +543,50 @@ impl Context {
             Some((slot.offset, self.layer_count()?))
         });
         if let (Some((gs_kernel, gs_words)), Some(layer)) = (gs_stage, layered) {
-            // The debugger's replay draws into one framebuffer: a layered
-            // draw gets a record saying why it has no trace.
-            let why = "the debugger does not replay a draw whose geometry shader writes \
-                       gl_Layer into a layered framebuffer";
-            let probe = self.debug.wants().map(|req| raster::DrawProbe {
-                pixel: req.pixel,
-                unreachable: Some(why.into()),
-                ..raster::DrawProbe::default()
-            });
-            let view = self.debug.view().map(|_| Err(why.to_string()));
+            self.store_target(target);
+            // The debugger replays the layer it is asked for, on that
+            // layer's images.
+            let (probe, view) = match self.debug.wants() {
+                Some(req) => {
+                    let select = raster::LayerSelect {
+                        component: layer.0,
+                        layer: self.debug.layer(),
+                    };
+                    let on = (select.layer < layer.1).then(|| {
+                        self.draw_layer = select.layer;
+                        let t = self.draw_target();
+                        self.draw_layer = 0;
+                        t
+                    });
+                    let fetch = Fetcher::new(self, &vs, immediate, batch);
+                    let replay = raster::Replay {
+                        state: &state,
+                        vs: &vs,
+                        vs_uniforms: &vs_words,
+                        gs: gs_stage,
+                        fs: &fs,
+                        fs_uniforms: &fs_words,
+                        mode: raster_mode(mode),
+                        indices,
+                        fetch: &fetch,
+                        textures: &units,
+                        layer: Some(select),
+                    };
+                    match on.flatten() {
+                        Some(t) => self.debug.replay(&t.fb, &replay, req, &fs),
+                        None => self.debug.missing_layer(req, select.layer, layer.1),
+                    }
+                }
+                None => (None, None),
+            };
             self.record_draw(
-                (mode, indices.len(), target.name),
+                (mode, indices.len(), self.objects.draw_framebuffer),
                 (vs.clone(), vs_user),
                 gs.clone(),
                 (fs.clone(), fs_user),
                 probe,
                 view,
             );
-            self.store_target(target);
             let stages = crate::layered::LayeredStages {
                 vs: (&vs, &vs_words),
                 gs: (gs_kernel, gs_words),
@@ -591,20 +616,12 @@ impl Context {
             indices,
             fetch: &fetch,
             textures: &units,
+            layer: None,
         };
-        let probe = self
-            .debug
-            .wants()
-            .map(|req| raster::probe_draw(&target.fb, &replay, req));
-        let view = self.debug.view().map(|name| {
-            let (v, kinds) = crate::debug::resolve_view(&fs, name)?;
-            let image = raster::view_draw(&target.fb, &replay, v).map_err(|e| e.to_string())?;
-            Ok(crate::debug::ViewRecord {
-                name: name.to_string(),
-                kinds,
-                image,
-            })
-        });
+        let (probe, view) = match self.debug.wants() {
+            Some(req) => self.debug.replay(&target.fb, &replay, req, &fs),
+            None => (None, None),
+        };
         let samples_before = target.fb.samples_passed;
         let r = raster::draw_stages(
             &self.workers,

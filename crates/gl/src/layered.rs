@@ -96,19 +96,14 @@ impl Context {
         );
         drop(fetch);
         let (out_mode, vertex_of, outputs, stride) = shaded.map_err(|e| e.to_string())?;
-        let per = match out_mode {
-            raster::Mode::Points => 1,
-            raster::Mode::Lines => 2,
-            _ => 3,
-        };
-        // The provoking vertex of each emitted primitive names its layer.
-        let provoking = if state.provoking_first { 0 } else { per - 1 };
         let mut by_layer: BTreeMap<i32, Vec<u32>> = BTreeMap::new();
-        for prim in vertex_of.chunks_exact(per) {
-            let v = prim[provoking] as usize;
-            let layer = outputs
-                .get(v * stride + gl_layer)
-                .map_or(0, |x| x.to_bits() as i32);
+        let primitives = raster::layered_primitives(
+            (out_mode, &vertex_of, &outputs),
+            stride,
+            gl_layer,
+            state.provoking_first,
+        );
+        for (layer, prim) in primitives {
             if (0..layers).contains(&layer) {
                 by_layer.entry(layer).or_default().extend_from_slice(prim);
             }

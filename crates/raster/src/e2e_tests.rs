@@ -526,6 +526,7 @@ fn probe_reports_every_fragment_of_a_pixel() {
             indices: &indices,
             fetch: &fetch,
             textures: &units,
+            layer: None,
         };
         probe_draw(
             &before,
@@ -1137,6 +1138,7 @@ void main() {
         indices: &indices,
         fetch: &fetch,
         textures: &units,
+        layer: None,
     };
     let mut drawn = fb.clone();
     crate::draw_stages(

@@ -89,10 +89,24 @@ pub(crate) fn vertex_and_geometry_stages(
         probe,
     );
     // The debugger traces invocations again from the vertex stage's
-    // results after the draw.
+    // results after the draw; a replay of one layer of a layered draw
+    // keeps only the primitives that layer gets.
     if let Some(p) = probe {
         p.keep_geometry_input(shaded, vertex_layout.outputs);
-        return emitted;
+        let mut emitted = emitted?;
+        if let Some(select) = p.layer() {
+            let stride = VsLayout::new(gs.0.interface()).outputs;
+            emitted.vertex_of = layered_primitives(
+                (emitted.mode, &emitted.vertex_of, &emitted.outputs),
+                stride,
+                select.component,
+                state.provoking_first,
+            )
+            .filter(|&(layer, _)| layer == select.layer)
+            .flat_map(|(_, prim)| prim.iter().copied())
+            .collect();
+        }
+        return Ok(emitted);
     }
     // The vertex stage's outputs are the next draw's emitted-vertex
     // buffer (the two trade places from draw to draw, `Spare::emitted`).
@@ -155,6 +169,40 @@ fn input_plan(vs: &Interface, gs: &Interface) -> InputPlan {
             ))
         })
         .collect()
+}
+
+/// One layer of a layered draw (GL 3.3 §2.12.4): the geometry stage's
+/// `gl_Layer` output component and the layer whose primitives are kept.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LayerSelect {
+    pub component: usize,
+    pub layer: i32,
+}
+
+/// Each emitted primitive of a list of `mode` (points, lines or
+/// triangles; `vertex_of` and `outputs`, `stride` values per vertex, as
+/// [`shade_geometry`] gives them) with the layer its provoking vertex's
+/// `gl_Layer` (output component `gl_layer`) sends it to (GL 3.3
+/// §2.12.4), in draw order.
+pub fn layered_primitives<'a>(
+    (mode, vertex_of, outputs): (Mode, &'a [u32], &'a [f32]),
+    stride: usize,
+    gl_layer: usize,
+    provoking_first: bool,
+) -> impl Iterator<Item = (i32, &'a [u32])> + 'a {
+    let per = match mode {
+        Mode::Points => 1,
+        Mode::Lines => 2,
+        _ => 3,
+    };
+    let provoking = if provoking_first { 0 } else { per - 1 };
+    vertex_of.chunks_exact(per).map(move |prim| {
+        let v = prim[provoking] as usize;
+        let layer = outputs
+            .get(v * stride + gl_layer)
+            .map_or(0, |x| x.to_bits() as i32);
+        (layer, prim)
+    })
 }
 
 /// Runs the geometry kernel `gs` on the primitives of `input` (the vertex
@@ -220,9 +268,10 @@ pub(crate) fn run_geometry(
             batch.active = (1u32 << lanes) - 1;
             batch.discarded = 0;
             batch.helper = 0;
-            match &prepared {
-                Some(p) => gs.run_prepared(&mut batch, p, uniforms, textures)?,
-                None => gs.run(&mut batch, uniforms, textures)?,
+            match (probe.filter(|p| p.prints_others()), &prepared) {
+                (Some(p), _) => p.print_geometry((gs, uniforms, textures), &mut batch, start)?,
+                (None, Some(p)) => gs.run_prepared(&mut batch, p, uniforms, textures)?,
+                (None, None) => gs.run(&mut batch, uniforms, textures)?,
             }
             if state.clamp_vertex_color {
                 for v in 0..emitted.max_vertices {

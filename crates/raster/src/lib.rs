@@ -264,7 +264,7 @@ pub use framebuffer::{
     ColorBuffer, ColorFormat, DepthFormat, Framebuffer, DEPTH_MAX, MAX_DRAW_BUFFERS,
     MAX_FRAMEBUFFER_SIZE,
 };
-pub use geometry::shade_geometry;
+pub use geometry::{layered_primitives, shade_geometry, LayerSelect};
 pub use pixel_fragments::{write_pixel_fragments, PixelFragment};
 pub use probe::{
     DrawProbe, EmittedBy, EmittedVertex, Event, FragmentProbe, GeometryProbe, OpsProbe, PixelState,

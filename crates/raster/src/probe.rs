@@ -16,6 +16,7 @@ use crate::assembly::Assembled;
 use crate::ex::{self, Batch, ExecError, PrintSink, Trace};
 use crate::fragment_ops::{self, Fragment};
 use crate::framebuffer::{ColorBuffer, Framebuffer};
+use crate::geometry::LayerSelect;
 use crate::linkage::VsLayout;
 use crate::prim::Prim;
 use crate::rasterize::WinVertex;
@@ -139,6 +140,14 @@ pub struct DrawProbe {
     /// `debugPrintfEXT` output of the vertex shader (every vertex, when a
     /// print rectangle is asked for): vertex index, call, text.
     pub vertex_prints: Vec<(u32, Span, String)>,
+    /// `debugPrintfEXT` output of the geometry shader (every invocation,
+    /// when a print rectangle is asked for): input primitive number, call,
+    /// text.
+    pub geometry_prints: Vec<(u32, Span, String)>,
+    /// The layer replayed, in a draw whose geometry shader writes
+    /// `gl_Layer` into a layered framebuffer (only that layer's primitives
+    /// are drawn, into that layer's images).
+    pub layer: Option<i32>,
     /// The pixel after the draw.
     pub after: PixelState,
     /// The traced vertex ([`crate::ProbeRequest::vertex`]).
@@ -280,6 +289,8 @@ pub(crate) struct Probe {
     /// the geometry stage ran on, for tracing its invocations again.
     emitted: Mutex<Vec<EmittedBy>>,
     geometry_input: Mutex<Option<(Vertices, usize)>>,
+    /// A replay of one layer of a layered draw: its primitives only.
+    layer: Option<LayerSelect>,
 }
 
 /// The trace of the probed lane while its batch runs.
@@ -362,6 +373,7 @@ impl Probe {
             events_left: Mutex::new(MAX_TRACE_EVENTS),
             emitted: Mutex::default(),
             geometry_input: Mutex::default(),
+            layer: None,
         }
     }
 
@@ -383,6 +395,7 @@ impl Probe {
             events_left: Mutex::new(MAX_TRACE_EVENTS),
             emitted: Mutex::default(),
             geometry_input: Mutex::default(),
+            layer: None,
         }
     }
 
@@ -410,6 +423,18 @@ impl Probe {
     /// Notes the source of every emitted vertex, by vertex number.
     pub fn note_emitted(&self, sources: Vec<EmittedBy>) {
         *self.emitted.lock().unwrap_or_else(|e| e.into_inner()) = sources;
+    }
+
+    /// The probe replaying only the primitives of layer `select` of a
+    /// layered draw.
+    pub fn on_layer(mut self, select: Option<LayerSelect>) -> Probe {
+        self.layer = select;
+        self
+    }
+
+    /// The layer replayed, when the draw is one layer of a layered one.
+    pub fn layer(&self) -> Option<LayerSelect> {
+        self.layer
     }
 
     /// Trace events the draw may still record.
@@ -657,27 +682,28 @@ impl Probe {
         textures: &dyn ex::Textures,
         indices: &[u32],
     ) -> Result<(), ExecError> {
-        struct Sink<'p, 'i> {
-            probe: &'p Probe,
-            indices: &'i [u32],
-        }
-        impl PrintSink for Sink<'_, '_> {
-            fn print(&mut self, lane: usize, span: Span, text: &str) {
-                if let Some(&ix) = self.indices.get(lane) {
-                    self.probe
-                        .with(|r| r.vertex_prints.push((ix, span, text.to_string())));
-                }
-            }
-        }
-        vs.run_printing(
-            batch,
-            uniforms,
-            textures,
-            &mut Sink {
-                probe: self,
-                indices,
-            },
-        )
+        let mut sink = LaneSink {
+            probe: self,
+            id_of: |lane: usize| indices.get(lane).copied(),
+            into: |r| &mut r.vertex_prints,
+        };
+        vs.run_printing(batch, uniforms, textures, &mut sink)
+    }
+
+    /// Runs a geometry batch collecting its prints (lane `l` is input
+    /// primitive `first + l`).
+    pub fn print_geometry(
+        &self,
+        (gs, uniforms, textures): (&dyn ShaderStage, &[u32], &dyn ex::Textures),
+        batch: &mut Batch,
+        first: usize,
+    ) -> Result<(), ExecError> {
+        let mut sink = LaneSink {
+            probe: self,
+            id_of: |lane: usize| u32::try_from(first + lane).ok(),
+            into: |r| &mut r.geometry_prints,
+        };
+        gs.run_printing(batch, uniforms, textures, &mut sink)
     }
 
     /// Runs a batch without the probed pixel, collecting the prints of its
@@ -720,6 +746,24 @@ impl Probe {
             primitive,
         };
         shader.run_printing(batch, uniforms, textures, &mut sink)
+    }
+}
+
+/// Collects a vertex or geometry batch's prints: each lane's under the
+/// number `id_of` gives it (a vertex index, an input primitive), into the
+/// list `into` picks.
+struct LaneSink<'p, I> {
+    probe: &'p Probe,
+    id_of: I,
+    into: fn(&mut DrawProbe) -> &mut Vec<(u32, Span, String)>,
+}
+
+impl<I: Fn(usize) -> Option<u32>> PrintSink for LaneSink<'_, I> {
+    fn print(&mut self, lane: usize, span: Span, text: &str) {
+        if let Some(id) = (self.id_of)(lane) {
+            self.probe
+                .with(|r| (self.into)(r).push((id, span, text.to_string())));
+        }
     }
 }
 

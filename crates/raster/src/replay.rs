@@ -18,7 +18,7 @@
 use crate::draw::draw_probed;
 use crate::ex;
 use crate::framebuffer::Framebuffer;
-use crate::geometry::{load_primitive, PrimitiveSource};
+use crate::geometry::{load_primitive, LayerSelect, PrimitiveSource};
 use crate::linkage::new_batch;
 use crate::probe::{
     DrawProbe, EmittedVertex, FragmentProbe, GeometryProbe, PixelState, Probe, Recording,
@@ -59,6 +59,9 @@ pub struct Replay<'a> {
     pub indices: &'a [u32],
     pub fetch: &'a dyn VertexFetch,
     pub textures: &'a (dyn ex::Textures + Sync),
+    /// One layer of a layered draw: only the primitives the geometry
+    /// shader sends to it are drawn (the framebuffer is that layer's).
+    pub layer: Option<LayerSelect>,
 }
 
 impl Replay<'_> {
@@ -89,7 +92,7 @@ impl Replay<'_> {
 /// Replays a draw on a copy of `fb` and returns, for every pixel a
 /// fragment of this draw wrote, the value `view` had in that fragment.
 pub fn view_draw(fb: &Framebuffer, draw: &Replay, view: View) -> Result<ViewImage, DrawError> {
-    let probe = Probe::for_view(view, fb.width, fb.height);
+    let probe = Probe::for_view(view, fb.width, fb.height).on_layer(draw.layer);
     let mut copy = fb.clone();
     draw.run(&mut copy, draw.state, &probe)?;
     Ok(probe.into_image())
@@ -115,6 +118,7 @@ pub fn probe_draw(fb: &Framebuffer, draw: &Replay, req: ProbeRequest) -> DrawPro
     let (px, py) = req.pixel;
     let mut report = DrawProbe {
         pixel: req.pixel,
+        layer: draw.layer.map(|l| l.layer),
         ..DrawProbe::default()
     };
     if px >= fb.width || py >= fb.height {
@@ -158,7 +162,8 @@ pub fn probe_draw(fb: &Framebuffer, draw: &Replay, req: ProbeRequest) -> DrawPro
         w: (x1 - x0).max(0) as i32,
         h: (y1 - y0).max(0) as i32,
     });
-    let probe = Probe::for_pixel((px as i64, py as i64), req.print_rect, req.outlines, report);
+    let probe = Probe::for_pixel((px as i64, py as i64), req.print_rect, req.outlines, report)
+        .on_layer(draw.layer);
     let mut copy = fb.clone();
     let result = draw.run(&mut copy, &narrowed, &probe);
     let left = probe.events_left();
