@@ -188,15 +188,40 @@ pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
         return too_large(opts);
     }
     let mut source = SourceMap::from_strings(opts.name.clone(), strings);
+    // A shader without #version is GLSL 1.10 (GLSL 1.50 §3.3), but a core
+    // profile context has no GLSL 1.10 (GL 3.2 core, appendix E.2) and
+    // 1.10 has no geometry stage: such a geometry shader is compiled as
+    // the first version that has one, as Mesa does, and told so.
+    let implicit_150 = opts.default_version.is_none()
+        && opts.stage == Stage::Geometry
+        && !opts.compatibility_context;
+    let default_version = match opts.default_version {
+        Some(v) => v,
+        None if implicit_150 => Version::V150,
+        None => Version::V110,
+    };
     let pp_out = pp::preprocess(
         &mut source,
         &pp::PpOptions {
             stage: opts.stage,
-            default_version: opts.default_version.unwrap_or(Version::V110),
+            default_version,
             compatibility_context: opts.compatibility_context,
         },
     );
     let mut diagnostics = pp_out.diagnostics;
+    if implicit_150 && !pp_out.has_version {
+        diagnostics.push(
+            Diagnostic::warning(
+                Code::PpVersion,
+                Span::new(0, 0),
+                "this geometry shader has no #version directive: compiled as GLSL 1.50",
+            )
+            .with_note(
+                "without #version a shader is GLSL 1.10, which a core profile context does not \
+                 have and which has no geometry stage; start the shader with `#version 150'",
+            ),
+        );
+    }
     let language = pp_out.language;
     let pp_failed = diagnostics.iter().any(Diagnostic::is_error);
     let mut module = None;

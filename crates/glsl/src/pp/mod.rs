@@ -81,6 +81,9 @@ pub struct PpOutput {
     pub diagnostics: Vec<Diagnostic>,
     /// `#pragma STDGL invariant(all)` was seen (GLSL 1.20 §4.6.1).
     pub invariant_all: bool,
+    /// The text has a `#version` directive (else the language's version
+    /// is [`PpOptions::default_version`]).
+    pub has_version: bool,
 }
 
 /// The extension that enables string literals and `debugPrintfEXT`.
@@ -570,6 +573,7 @@ impl<'m> Preprocessor<'m> {
             extensions: self.extensions,
             diagnostics: self.diags,
             invariant_all: self.invariant_all,
+            has_version: self.version_span.is_some(),
         }
     }
 }

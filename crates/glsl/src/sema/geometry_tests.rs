@@ -187,6 +187,24 @@ fn layouts_belong_to_geometry_shaders() {
     fails(&geom("#version 130\nvoid main() {}"), Code::VersionTooLow);
 }
 
+/// Without #version a shader is GLSL 1.10, which has no geometry stage;
+/// a core profile context has no 1.10 at all, so there a versionless
+/// geometry shader compiles as 1.50 core, with a warning saying so.
+#[test]
+fn versionless_geometry_shaders_are_150_on_core_contexts() {
+    let src = "void main() { gl_Position = vec4(gl_DepthRange.near); EmitVertex(); }";
+    let mut opts = CompileOptions::new(Stage::Geometry);
+    opts.compatibility_context = false;
+    let core = compile(&[src], &opts);
+    assert!(core.ok(), "{}", core.info_log());
+    assert_eq!(core.language.version, crate::Version::V150);
+    assert!(core.info_log().contains("no #version directive: compiled as GLSL 1.50"));
+    fails(&geom(src), Code::VersionTooLow);
+    // An explicit version is kept.
+    let old = compile(&["#version 130\nvoid main() {}"], &opts);
+    assert!(!old.ok());
+}
+
 #[test]
 fn builtins_of_the_geometry_stage() {
     ok(&geom(
