@@ -13,8 +13,11 @@ use glsl::types::Scalar;
 /// the lane group), plus subroutine calls when functions are not inlined,
 /// that one `Kernel::run` may execute before it fails with
 /// [`ExecError::LoopBudget`]. Counted loops that lowering unrolls (at most
-/// 32 iterations, see `lower`) have no iterations left to count.
-pub const LOOP_BUDGET: u64 = 1 << 24;
+/// 32 iterations, see `lower`) have no iterations left to count. GLSL sets
+/// no bound; 2^20 is far past what a shader that ends needs (llvmpipe stops
+/// each loop at 65,535 iterations) and keeps a loop that never ends to a
+/// fraction of a second before the draw reports it.
+pub const LOOP_BUDGET: u64 = 1 << 20;
 
 /// All lanes.
 pub(crate) use crate::lane::FULL;
