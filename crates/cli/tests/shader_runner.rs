@@ -408,6 +408,23 @@ fn call_chain_script(n: usize) -> String {
 }
 
 #[test]
+fn a_loop_that_never_ends_stops_its_draw_with_an_error() {
+    let path = script(
+        "endless-loop",
+        "[require]\nGLSL >= 1.10\nSIZE 16 16\n\n[vertex shader passthrough]\n\n[fragment shader]\n\
+         void main() { for (int i = 1; i < 8; 0.0) {} gl_FragColor = vec4(1.0); }\n\n\
+         [test]\ndraw rect -1 -1 2 2\nprobe all rgba 1.0 1.0 1.0 1.0\n",
+    );
+    let o = shaderbox(&["shader-runner", &path, "-auto"]);
+    let out = stdout(&o) + &stderr(&o);
+    assert_eq!(last_line(&o), r#"PIGLIT: {"result": "fail" }"#, "{out}");
+    assert!(
+        out.contains("shader exceeded 1048577 loop iterations in one invocation"),
+        "{out}"
+    );
+}
+
+#[test]
 fn deep_call_chains_fail_to_compile_naming_the_call_depth() {
     // 4,000 nested calls: refused at compile time with the limit named
     // (they used to run as subroutines, seconds per draw, or be reported
