@@ -10,9 +10,10 @@
 //! affine in the pixel's window position, so set-up turns each into a
 //! plane: its value `c` at the center of the primitive's *origin* pixel
 //! `(x0, y0)` (the first pixel of its clipped bounds) and its steps `dx`,
-//! `dy` per pixel, computed in f64 from the snapped vertices (vertex 0's
-//! value plus the others' differences times their barycentrics' planes),
-//! then rounded: to f32 for varyings and 1/w, kept in f64 for window z
+//! `dy` per pixel, computed in f64 from the vertices' window positions
+//! (a triangle's as the vertex stage made them, not the coverage's
+//! snapped ones, as llvmpipe does; vertex 0's value plus the others'
+//! differences times their barycentrics' planes), then rounded: to f32 for varyings and 1/w, kept in f64 for window z
 //! (depth keeps more than a depth buffer's 24 bits). At pixel `(x, y)`,
 //! with `X = x − x0` and `Y = y − y0` (small integers, exact in f32):
 //!
@@ -65,6 +66,29 @@ pub(crate) struct Basis {
 }
 
 impl Basis {
+    /// The barycentric planes of a triangle from its window positions
+    /// `v` as the vertex stage made them (not snapped to the coverage's
+    /// grid), relative to the center of pixel `(x0, y0)`; `None` when
+    /// they enclose no area. llvmpipe builds its planes from the same
+    /// unsnapped positions: varyings that decide a silhouette (a ray
+    /// cast from an interpolated point) then agree with it to an ulp
+    /// instead of to a snap step's worth of the varying's gradient.
+    #[inline]
+    pub fn of_triangle(v: [(f64, f64); 3], (x0, y0): (i64, i64)) -> Option<Basis> {
+        let [(ax, ay), (bx, by), (cx, cy)] = v;
+        let (e1x, e1y, e2x, e2y) = (bx - ax, by - ay, cx - ax, cy - ay);
+        let area2 = e1x * e2y - e1y * e2x;
+        if area2 == 0.0 || !area2.is_finite() {
+            return None;
+        }
+        let inv = 1.0 / area2;
+        let (px, py) = (x0 as f64 + 0.5 - ax, y0 as f64 + 0.5 - ay);
+        // b1: the area of (v0, p, v2), b2: of (v0, v1, p), over the whole.
+        let b1 = [(px * e2y - py * e2x) * inv, e2y * inv, -e2x * inv];
+        let b2 = [(e1x * py - e1y * px) * inv, -e1y * inv, e1x * inv];
+        Some(Basis { b: [b1, b2] })
+    }
+
     /// The plane `[c, dx, dy]` of a quantity with values `v` at the
     /// vertices: `v0 + Σ (v_j − v0)·b_j`, in f64. Exactly `[v0, 0, 0]`
     /// when the three are the same bits (also for infinities, whose
@@ -277,6 +301,25 @@ mod tests {
 
     fn basis_of(b1: [f64; 3], b2: [f64; 3]) -> Basis {
         Basis { b: [b1, b2] }
+    }
+
+    /// A triangle's barycentric planes from unsnapped window positions:
+    /// each vertex's own weight is 1 at it and 0 at the others, wherever
+    /// the origin pixel is, and a collinear triangle has none.
+    #[test]
+    fn triangle_planes_come_from_the_window_positions() {
+        let v = [(10.3, 4.1), (40.77, 9.02), (18.2, 33.9)];
+        let origin = (10, 4);
+        let basis = Basis::of_triangle(v, origin).unwrap();
+        let at = |b: [f64; 3], (x, y): (f64, f64)| {
+            b[0] + (x - (origin.0 as f64 + 0.5)) * b[1] + (y - (origin.1 as f64 + 0.5)) * b[2]
+        };
+        for (j, want) in [(0, [0.0, 0.0]), (1, [1.0, 0.0]), (2, [0.0, 1.0])] {
+            for (k, b) in basis.b.iter().enumerate() {
+                assert!((at(*b, v[j]) - want[k]).abs() < 1e-12, "vertex {j}, weight {k}");
+            }
+        }
+        assert!(Basis::of_triangle([(0.0, 0.0), (1.0, 1.0), (2.0, 2.0)], origin).is_none());
     }
 
     #[test]

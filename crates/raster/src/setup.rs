@@ -19,7 +19,7 @@ use glsl::ir::Interpolation;
 use crate::assembly::{first_vertex_provoking, primitive, small_polygon, Assembled, Mode};
 use crate::clip::{ClipVertex, Planes};
 use crate::framebuffer::{DepthFormat, Framebuffer, DEPTH_MAX};
-use crate::interpolate::{Plane, PrimPlanes};
+use crate::interpolate::{Basis, Plane, PrimPlanes};
 use crate::linkage::{FsLayout, VsLayout};
 use crate::prim::{plane_origin, Prim};
 use crate::probe::Probe;
@@ -260,7 +260,15 @@ impl Setup<'_> {
         vertices: &[&[f32]],
         (back, provoking): (bool, &[f32]),
     ) -> PrimPlanes {
-        let basis = shape.basis(origin);
+        // A triangle's planes come from its vertices' window positions;
+        // coverage from their snapped ones.
+        let basis = match (shape, win) {
+            (Shape::Triangle { .. }, [a, b, c]) => {
+                Basis::of_triangle([(a.x, a.y), (b.x, b.y), (c.x, c.y)], origin)
+            }
+            _ => None,
+        }
+        .unwrap_or_else(|| shape.basis(origin));
         let (z, inv_w) = vertex_depths(win);
         let prim = PrimPlanes::new(&basis, z, inv_w);
         // A line's or a point's missing vertices repeat its last.
