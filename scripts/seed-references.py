@@ -27,11 +27,14 @@ those with a program the talk has a version of: random silhouettes of
 varying-driven discard.
 
 Usage: scripts/seed-references.py [--libdir DIR] [--binary PATH] [--only NAME]
-                                  [--sweep N [--seed S]]
+                                  [--sweep N [--seed S]] [--bounds FILE]
   DIR holds shaderbox's libOSMesa.so (default target/release).
 Needs what regen-references.py needs (python3, PyOpenGL, libosmesa6).
 Exit status 1 when any scene has a pixel beyond 8/255 or less than 99.9 %
-within 2/255 (issue 37's bar).
+within 2/255 (issue 37's bar). With --bounds FILE (lines `NAME WITHIN
+BEYOND MAX`, as crates/capi/tests/python/compare.py reads them; `#` starts a
+comment), a scene named there is held to its own bound instead: the
+exceptions docs/CONFORMANCE.md explains.
 """
 import argparse
 import importlib.util
@@ -121,6 +124,19 @@ def with_seed_shaders(scene):
     return scene, changed
 
 
+def read_bounds(path):
+    """NAME -> (least % within 2/255, most pixels beyond 8/255, largest
+    difference)."""
+    bounds = {}
+    with open(path) as f:
+        for line in f:
+            words = line.split("#", 1)[0].split()
+            if words:
+                name, within, beyond, most = words
+                bounds[name] = (float(within), int(beyond), int(most))
+    return bounds
+
+
 def load_sweep():
     spec = importlib.util.spec_from_file_location(
         "mesa_sweep", os.path.join(HERE, "mesa-sweep.py"))
@@ -160,6 +176,7 @@ def main():
     ap.add_argument("--only", help="run only the scene of this name")
     ap.add_argument("--sweep", type=int, metavar="N", help="N random scenes instead")
     ap.add_argument("--seed", type=int, default=7, help="the random scenes' seed")
+    ap.add_argument("--bounds", help="per-scene bounds (see the usage)")
     ap.add_argument("--replay", nargs=2, metavar=("SCENE", "OUT"), help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.replay:
@@ -170,6 +187,7 @@ def main():
     regen = load_regen()
     sys.argv[1:] = [args.binary] if args.binary else []
     binary = regen.find_binary()
+    bounds = read_bounds(args.bounds) if args.bounds else {}
     if args.sweep:
         cases = load_sweep().scenes(args.sweep, args.seed)
     else:
@@ -191,6 +209,7 @@ def main():
                 print(f"{name} {' '.join(opts)}: no program the talk has a version of")
                 continue
             ran += 1
+            least, most_beyond, most = bounds.get(name, (99.9, 0, 255))
             if args.sweep:
                 name += " " + " ".join(opts)
             with open(path, "w") as f:
@@ -201,7 +220,7 @@ def main():
                     for i in range(0, len(ours), 4)]
             within = sum(d <= 2 for d in diff) / len(diff)
             beyond = sum(d > 8 for d in diff)
-            bad = beyond > 0 or within < 0.999
+            bad = beyond > most_beyond or 100 * within < least or max(diff) > most
             failed += bad
             print(f"{name} ({', '.join(changed)}): {100 * within:.3f}% within 2/255, "
                   f"{beyond} beyond 8/255, max {max(diff)}/255{'  FAIL' if bad else ''}",

@@ -354,9 +354,11 @@ impl Shape {
     /// The planes of the primitive's barycentrics of vertices 1 and 2
     /// relative to the center of pixel `(x0, y0)` (see [`Basis`]): for a
     /// triangle its exact integer edge forms times one over twice its
-    /// area (so the barycentrics of the coverage's snapped vertices); for
-    /// a line the parameter `t` of GL 2.1 eq. 3.1 of each pixel center
-    /// (the projection onto the segment); zeros for a point.
+    /// area (so the barycentrics of the coverage's snapped vertices: set-up
+    /// uses them only when [`Basis::of_triangle`] finds no area in the
+    /// unsnapped positions); for a line the parameter `t` of GL 2.1 eq.
+    /// 3.1 of each pixel center (the projection onto the segment); zeros
+    /// for a point.
     #[inline]
     pub fn basis(&self, (x0, y0): (i64, i64)) -> Basis {
         match self {
