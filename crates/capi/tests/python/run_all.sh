@@ -35,4 +35,7 @@ python3 "$here/compare.py" $md "$libdir" \
     "$here/seed_shaders.py" "$here/library_shaders.py" "$here/error_paths.py" \
     "$here/pixel_paths.py" "$here/uniform_buffers.py" "$here/gl33_state.py" \
     "$here/seed_core.py" "$here/seed_geometry.py" "$here/gl33_entry_points.py"
+# Mipmapped lookups, held to the bounds their level of detail explains.
+python3 "$here/compare.py" $md --bounds "$here/texture_lod_bounds.txt" "$libdir" \
+    "$here/texture_lod.py"
 sh "$here/debug_env.sh" "$libdir"
