@@ -316,7 +316,10 @@ mod tests {
         };
         for (j, want) in [(0, [0.0, 0.0]), (1, [1.0, 0.0]), (2, [0.0, 1.0])] {
             for (k, b) in basis.b.iter().enumerate() {
-                assert!((at(*b, v[j]) - want[k]).abs() < 1e-12, "vertex {j}, weight {k}");
+                assert!(
+                    (at(*b, v[j]) - want[k]).abs() < 1e-12,
+                    "vertex {j}, weight {k}"
+                );
             }
         }
         assert!(Basis::of_triangle([(0.0, 0.0), (1.0, 1.0), (2.0, 2.0)], origin).is_none());

@@ -198,7 +198,9 @@ fn versionless_geometry_shaders_are_150_on_core_contexts() {
     let core = compile(&[src], &opts);
     assert!(core.ok(), "{}", core.info_log());
     assert_eq!(core.language.version, crate::Version::V150);
-    assert!(core.info_log().contains("no #version directive: compiled as GLSL 1.50"));
+    assert!(core
+        .info_log()
+        .contains("no #version directive: compiled as GLSL 1.50"));
     fails(&geom(src), Code::VersionTooLow);
     // An explicit version is kept.
     let old = compile(&["#version 130\nvoid main() {}"], &opts);
