@@ -33,7 +33,7 @@ use crate::assembly::{geometry_input, primitive_count, Mode};
 use crate::ex::{Batch, Emitted, Interface, LANES};
 use crate::linkage::{new_batch, VsLayout};
 use crate::probe::{EmittedBy, Probe};
-use crate::shaded::Vertices;
+use crate::shaded::{layered_primitives, Vertices};
 use crate::state::PipelineState;
 use crate::vertex::run_vertices;
 use crate::workers::Workers;
@@ -169,40 +169,6 @@ fn input_plan(vs: &Interface, gs: &Interface) -> InputPlan {
             ))
         })
         .collect()
-}
-
-/// One layer of a layered draw (GL 3.3 §2.12.4): the geometry stage's
-/// `gl_Layer` output component and the layer whose primitives are kept.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct LayerSelect {
-    pub component: usize,
-    pub layer: i32,
-}
-
-/// Each emitted primitive of a list of `mode` (points, lines or
-/// triangles; `vertex_of` and `outputs`, `stride` values per vertex, as
-/// [`shade_geometry`] gives them) with the layer its provoking vertex's
-/// `gl_Layer` (output component `gl_layer`) sends it to (GL 3.3
-/// §2.12.4), in draw order.
-pub fn layered_primitives<'a>(
-    (mode, vertex_of, outputs): (Mode, &'a [u32], &'a [f32]),
-    stride: usize,
-    gl_layer: usize,
-    provoking_first: bool,
-) -> impl Iterator<Item = (i32, &'a [u32])> + 'a {
-    let per = match mode {
-        Mode::Points => 1,
-        Mode::Lines => 2,
-        _ => 3,
-    };
-    let provoking = if provoking_first { 0 } else { per - 1 };
-    vertex_of.chunks_exact(per).map(move |prim| {
-        let v = prim[provoking] as usize;
-        let layer = outputs
-            .get(v * stride + gl_layer)
-            .map_or(0, |x| x.to_bits() as i32);
-        (layer, prim)
-    })
 }
 
 /// Runs the geometry kernel `gs` on the primitives of `input` (the vertex

@@ -264,7 +264,7 @@ pub use framebuffer::{
     ColorBuffer, ColorFormat, DepthFormat, Framebuffer, DEPTH_MAX, MAX_DRAW_BUFFERS,
     MAX_FRAMEBUFFER_SIZE,
 };
-pub use geometry::{layered_primitives, shade_geometry, LayerSelect};
+pub use geometry::shade_geometry;
 pub use pixel_fragments::{write_pixel_fragments, PixelFragment};
 pub use probe::{
     DrawProbe, EmittedBy, EmittedVertex, Event, FragmentProbe, GeometryProbe, OpsProbe, PixelState,
@@ -273,6 +273,7 @@ pub use probe::{
 pub use rasterize::SUBPIXEL_BITS;
 pub use replay::{probe_draw, view_draw, ProbeRequest, Replay};
 pub use setup::MAX_POINT_SIZE;
+pub use shaded::{layered_primitives, LayerSelect};
 pub use state::{
     Blend, BlendEquation, BlendFactor, CompareFunc, CullFace, FrontFace, LogicOp, PipelineState,
     PolygonMode, PolygonOffset, PrimitiveIds, Rect, StencilFace, StencilOp, StencilState,

@@ -18,12 +18,13 @@
 use crate::draw::draw_probed;
 use crate::ex;
 use crate::framebuffer::Framebuffer;
-use crate::geometry::{load_primitive, LayerSelect, PrimitiveSource};
+use crate::geometry::{load_primitive, PrimitiveSource};
 use crate::linkage::new_batch;
 use crate::probe::{
     DrawProbe, EmittedVertex, FragmentProbe, GeometryProbe, PixelState, Probe, Recording,
     VertexProbe, View, ViewImage, MAX_TRACE_EVENTS,
 };
+use crate::shaded::LayerSelect;
 use crate::state::{PipelineState, Rect};
 use crate::vertex::fetch_vertex;
 use crate::{DrawError, Mode, VertexFetch};
