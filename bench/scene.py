@@ -7,6 +7,12 @@
 bench/run.py starts this once per (implementation, scene) so each runs in its
 own process with its own library. SPEC names the scene (see `build` below):
 
+    adk:WxH:ortho|persp:none|linear|exp|exp2[:seed|:points]
+                                                     a real structure, 47,681
+                                                     atoms (bench/structure.py:
+                                                     adenylate kinase in water,
+                                                     fetched once), as the
+                                                     spheres scenes draw atoms
     spheres:N:WxH:ortho|persp:none|linear|exp|exp2[:OPTION...]
                                                      sphere impostors of
                                                      shaders/sphere.*; options:
@@ -182,20 +188,20 @@ def camera(center, radius, proj, w, h):
     return d, radius
 
 
-def spheres(n, proj, fog, w, h, options=()):
-    points, tris = "points" in options, "tris" in options
+def random_atoms(n, options):
+    """n random atoms in a ball: [(position, radius, colour)] and the
+    ball's radius. Sparse, one atom per 1000 Å^3, so 20,000 atoms at 1024²
+    cover about two million fragments (depth complexity ~2); dense, the same
+    atoms at protein density."""
     rng = random.Random(7)
-    # A sparse random cloud, one atom per 1000 Å^3, so 20,000 atoms at
-    # 1024² cover about two million fragments (depth complexity ~2); dense,
-    # the same atoms in a ball of protein density.
     volume = DENSE_ATOM_VOLUME if "dense" in options else ATOM_VOLUME
     big_r = (3.0 * volume * n / (4.0 * math.pi)) ** (1.0 / 3.0)
-    pos, tex, col = array.array("f"), array.array("f"), array.array("f")
     cum = []
     acc = 0.0
     for e in ELEMENTS:
         acc += e[2]
         cum.append(acc)
+    out = []
     for _ in range(n):
         while True:
             p = [rng.uniform(-big_r, big_r) for _ in range(3)]
@@ -203,6 +209,35 @@ def spheres(n, proj, fog, w, h, options=()):
                 break
         u = rng.random() * acc
         r, c, _ = next(e for e, k in zip(ELEMENTS, cum) if u <= k)
+        out.append((p, r, c))
+    return out, big_r
+
+
+def spheres(n, proj, fog, w, h, options=()):
+    atoms, big_r = random_atoms(n, options)
+    return impostors(atoms, ((0.0, 0.0, 0.0), big_r), proj, fog, (w, h), options)
+
+
+def structure(proj, fog, w, h, options=()):
+    """bench/structure.py's adenylate kinase system, framed as
+    crates/render frames a molecule (centre of the atoms, radius to the
+    farthest)."""
+    import structure as adk
+    atoms = adk.atoms(adk.adk_path())
+    n = len(atoms)
+    centre = [sum(a[0][k] for a in atoms) / n for k in range(3)]
+    big_r = max(math.dist(a[0], centre) for a in atoms)
+    return impostors(atoms, (centre, big_r), proj, fog, (w, h), options)
+
+
+def impostors(atoms, bounds, proj, fog, size, options):
+    """Sphere impostors of `atoms` [(position, radius, colour)] inside the
+    ball `bounds` (centre, radius), with the library's shaders, the seed's
+    as written (`seed`) or one point per atom (`points`)."""
+    points, tris = "points" in options, "tris" in options
+    (w, h), n = size, len(atoms)
+    pos, tex, col = array.array("f"), array.array("f"), array.array("f")
+    for p, r, c in atoms:
         if points:
             pos.extend(p)
             tex.append(r)
@@ -225,7 +260,7 @@ def spheres(n, proj, fog, w, h, options=()):
     else:
         prog = program(read("shaders/sphere.vert"), read("shaders/sphere.frag"))
     set_lights()
-    dist, rad = camera((0.0, 0.0, 0.0), big_r + 1.8, proj, w, h)
+    dist, rad = camera(bounds[0], bounds[1] + 1.8, proj, w, h)
     front, back = dist - rad, dist + rad
     k = -math.log(FOG_AT_BACK)
     GL.glFogi(GL.GL_FOG_MODE, {"exp": GL.GL_EXP, "exp2": GL.GL_EXP2}.get(fog, GL.GL_LINEAR))
@@ -516,6 +551,12 @@ def build(spec):
                                                     ("points" in options or "tris" in options)):
             raise SystemExit(f"unknown sphere option (or combination) in {spec!r}")
         return w, h, lambda: spheres(int(args[0]), args[2], args[3], w, h, options)
+    if kind == "adk":
+        w, h = parse_size(args[0])
+        options = tuple(args[3:])
+        if any(o not in ("seed", "points") for o in options) or len(options) > 1:
+            raise SystemExit(f"unknown structure option (or combination) in {spec!r}")
+        return w, h, lambda: structure(args[1], args[2], w, h, options)
     if kind in ("mesh", "ffmesh"):
         w, h = parse_size(args[1])
         return w, h, lambda: mesh(int(args[0]), w, h, kind == "mesh")
