@@ -542,34 +542,6 @@ pub struct Prepared {
     uniforms: Vec<u32>,
 }
 
-/// Stack for lowering: it recurses once per level of inlined call and of
-/// expression, each bounded by the front end (`glsl::limits::MAX_CALL_DEPTH`,
-/// `MAX_NESTING_DEPTH`) but together deeper than the stack of the thread
-/// that links may be (2 MiB for a Rust thread; the 128-deep call chain
-/// alone takes about 4 MiB unoptimized).
-const LOWERING_STACK: usize = 128 << 20;
-
-/// Runs `f` (the lowering) on a thread of its own with [`LOWERING_STACK`]
-/// bytes of stack (only touched pages cost memory), or on this thread
-/// when no thread can be made; a panic in `f` continues on this thread.
-fn on_lowering_stack<T: Send>(
-    f: impl FnOnce() -> Result<T, ExecError> + Send,
-) -> Result<T, ExecError> {
-    let slot = std::sync::Mutex::new(Some(f));
-    let run = || slot.lock().ok().and_then(|mut f| f.take()).map(|f| f());
-    let out = std::thread::scope(|s| {
-        match std::thread::Builder::new()
-            .name("shaderbox-lower".into())
-            .stack_size(LOWERING_STACK)
-            .spawn_scoped(s, run)
-        {
-            Ok(h) => h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)),
-            Err(_) => run(),
-        }
-    });
-    out.unwrap_or_else(|| Err(ExecError::Unsupported("the lowering did not run".into())))
-}
-
 impl Kernel {
     /// Lowers a linked stage. Errors only for IR the executor cannot run
     /// (a front-end bug) or programs beyond [`limits`].
@@ -583,7 +555,7 @@ impl Kernel {
         stage: &glsl::link::LinkedStage,
         limit: u64,
     ) -> Result<Kernel, ExecError> {
-        let l = on_lowering_stack(|| lower::lower(stage, limit))?;
+        let l = lower::lower(stage, limit)?;
         Ok(Kernel::assemble(stage.stage, l, LOOP_BUDGET))
     }
 

@@ -178,6 +178,37 @@ fn call_chains_as_deep_as_the_front_end_allows_inline_and_run() {
     assert!(e.contains("function calls nested too deeply"), "{e}");
 }
 
+/// The deepest call chain and nearly the deepest expression the front end
+/// accepts lower on a thread with a small stack: the lowering continues on
+/// fresh stack segments (`lower::with_stack`) instead of needing a large
+/// stack of its own.
+#[test]
+fn deep_programs_lower_on_a_small_stack() {
+    let chain = call_chain(crate::limits::MAX_CALL_DEPTH - 1);
+    let depth = 120;
+    let nested = format!(
+        "void main() {{ float x = 1.0; gl_FragColor = vec4({}x{}); }}\n",
+        "0.5 * (1.0 + ".repeat(depth),
+        ")".repeat(depth)
+    );
+    let stages: Vec<_> = [chain, nested]
+        .iter()
+        .map(|src| link_one(Stage::Fragment, src).expect("links"))
+        .collect();
+    let lowered = std::thread::Builder::new()
+        .stack_size(256 << 10)
+        .spawn(move || {
+            stages
+                .iter()
+                .map(|st| Kernel::new(st).is_ok())
+                .collect::<Vec<_>>()
+        })
+        .expect("thread")
+        .join()
+        .expect("no stack overflow");
+    assert_eq!(lowered, [true, true]);
+}
+
 #[test]
 fn many_subroutines_lower_and_run() {
     // 3,000 functions as subroutines, each called once: liveness over

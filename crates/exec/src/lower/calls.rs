@@ -57,6 +57,10 @@ impl<'m> Lowerer<'m> {
     }
 
     pub(super) fn call(&mut self, fid: FunctionId, args: &[Expr]) -> R<Val> {
+        super::with_stack(|| self.call_here(fid, args))
+    }
+
+    fn call_here(&mut self, fid: FunctionId, args: &[Expr]) -> R<Val> {
         let m = self.m;
         let Some(f) = m.functions.get(fid.0 as usize) else {
             return unsupported("call of an unknown function");

@@ -38,6 +38,10 @@ impl<'m> Lowerer<'m> {
     }
 
     pub(super) fn expr(&mut self, e: &Expr) -> R<Val> {
+        super::with_stack(|| self.expr_here(e))
+    }
+
+    fn expr_here(&mut self, e: &Expr) -> R<Val> {
         if e.ty.is_error() {
             return unsupported("expression with an error type");
         }

@@ -185,6 +185,23 @@ struct Sub {
     ret: Val,
 }
 
+/// Stack the lowering keeps free at each level of its recursion
+/// (expressions, statements, inlined calls: each level bounded by the front
+/// end's `MAX_NESTING_DEPTH` and `MAX_CALL_DEPTH`, together deeper than a
+/// thread's stack may be; one level takes a few KiB, tens unoptimized).
+const RED_ZONE: usize = 256 << 10;
+
+/// The stack segment that continues the recursion when less than
+/// [`RED_ZONE`] is left.
+const STACK_SEGMENT: usize = 8 << 20;
+
+/// Runs one level of the lowering's recursion, on a fresh stack segment
+/// when this one is nearly used (`stacker`).
+#[inline]
+fn with_stack<T>(f: impl FnOnce() -> T) -> T {
+    stacker::maybe_grow(RED_ZONE, STACK_SEGMENT, f)
+}
+
 pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
     let owned;
     let m = match with_ftransform_inputs(&stage.module) {

@@ -44,6 +44,10 @@ impl<'m> Lowerer<'m> {
     /// Lowers one statement; `true` when it always leaves the block
     /// (the rest of the block is unreachable).
     fn stmt(&mut self, s: &Stmt) -> R<bool> {
+        super::with_stack(|| self.stmt_here(s))
+    }
+
+    fn stmt_here(&mut self, s: &Stmt) -> R<bool> {
         let mark = self.next_reg;
         let ends = match s {
             Stmt::Expr(e) => {
