@@ -542,51 +542,55 @@ impl Context {
             let slot = g.interface().output("gl_Layer").filter(|s| s.written)?;
             Some((slot.offset, self.layer_count()?))
         });
+        // The debugger replays the draw on its target; a layered one on
+        // the layer asked for (that layer's images and primitives).
+        let wants = self.debug.wants();
+        let select = layered.map(|(component, _)| raster::LayerSelect {
+            component,
+            layer: self.debug.layer(),
+        });
+        let layer_target = match (wants, layered, select) {
+            (Some(_), Some((_, layers)), Some(s)) if s.layer < layers => {
+                self.draw_layer = s.layer;
+                let t = self.draw_target();
+                self.draw_layer = 0;
+                t
+            }
+            _ => None,
+        };
+        let fetch = Fetcher::new(self, &vs, immediate, batch);
+        let replay = raster::Replay {
+            state: &state,
+            vs: &vs,
+            vs_uniforms: &vs_words,
+            gs: gs_stage,
+            fs: &fs,
+            fs_uniforms: &fs_words,
+            mode: raster_mode(mode),
+            indices,
+            fetch: &fetch,
+            textures: &units,
+            layer: select,
+        };
+        let (probe, view) = match (wants, layered, &layer_target) {
+            (None, ..) => (None, None),
+            (Some(req), None, _) => self.debug.replay(&target.fb, &replay, req, &fs),
+            (Some(req), Some(_), Some(t)) => self.debug.replay(&t.fb, &replay, req, &fs),
+            (Some(req), Some((_, layers)), None) => {
+                self.debug
+                    .missing_layer(req, select.map_or(0, |s| s.layer), layers)
+            }
+        };
         if let (Some((gs_kernel, gs_words)), Some(layer)) = (gs_stage, layered) {
-            self.store_target(target);
-            // The debugger replays the layer it is asked for, on that
-            // layer's images.
-            let (probe, view) = match self.debug.wants() {
-                Some(req) => {
-                    let select = raster::LayerSelect {
-                        component: layer.0,
-                        layer: self.debug.layer(),
-                    };
-                    let on = (select.layer < layer.1).then(|| {
-                        self.draw_layer = select.layer;
-                        let t = self.draw_target();
-                        self.draw_layer = 0;
-                        t
-                    });
-                    let fetch = Fetcher::new(self, &vs, immediate, batch);
-                    let replay = raster::Replay {
-                        state: &state,
-                        vs: &vs,
-                        vs_uniforms: &vs_words,
-                        gs: gs_stage,
-                        fs: &fs,
-                        fs_uniforms: &fs_words,
-                        mode: raster_mode(mode),
-                        indices,
-                        fetch: &fetch,
-                        textures: &units,
-                        layer: Some(select),
-                    };
-                    match on.flatten() {
-                        Some(t) => self.debug.replay(&t.fb, &replay, req, &fs),
-                        None => self.debug.missing_layer(req, select.layer, layer.1),
-                    }
-                }
-                None => (None, None),
-            };
             self.record_draw(
-                (mode, indices.len(), self.objects.draw_framebuffer),
+                (mode, indices.len(), target.name),
                 (vs.clone(), vs_user),
                 gs.clone(),
                 (fs.clone(), fs_user),
                 probe,
                 view,
             );
+            self.store_target(target);
             let stages = crate::layered::LayeredStages {
                 vs: (&vs, &vs_words),
                 gs: (gs_kernel, gs_words),
@@ -604,24 +608,6 @@ impl Context {
             }
             return;
         }
-        let fetch = Fetcher::new(self, &vs, immediate, batch);
-        let replay = raster::Replay {
-            state: &state,
-            vs: &vs,
-            vs_uniforms: &vs_words,
-            gs: gs_stage,
-            fs: &fs,
-            fs_uniforms: &fs_words,
-            mode: raster_mode(mode),
-            indices,
-            fetch: &fetch,
-            textures: &units,
-            layer: None,
-        };
-        let (probe, view) = match self.debug.wants() {
-            Some(req) => self.debug.replay(&target.fb, &replay, req, &fs),
-            None => (None, None),
-        };
         let samples_before = target.fb.samples_passed;
         let r = raster::draw_stages(
             &self.workers,
