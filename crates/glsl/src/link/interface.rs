@@ -63,21 +63,17 @@ pub(super) fn check_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) 
             continue;
         }
         if s.stage == Stage::Fragment {
-            for slot in &mut used[loc as usize..(loc + n) as usize] {
-                if let Some(other) = slot {
-                    push(
-                        diags,
-                        None,
-                        Code::LinkInterfaceMismatch,
-                        format!(
-                            "fragment outputs `{other}' and `{}' are both assigned location {loc}{}",
-                            g.name,
-                            if g.index == Some(1) { ", index 1" } else { "" }
-                        ),
-                    );
-                    break;
-                }
-                *slot = Some(&g.name);
+            if let Some(other) = claim(used, loc, n, &g.name) {
+                push(
+                    diags,
+                    None,
+                    Code::LinkInterfaceMismatch,
+                    format!(
+                        "fragment outputs `{other}' and `{}' are both assigned location {loc}{}",
+                        g.name,
+                        if g.index == Some(1) { ", index 1" } else { "" }
+                    ),
+                );
             }
         }
     }
@@ -104,6 +100,18 @@ pub(super) fn check_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) 
             );
         }
     }
+}
+
+/// Assigns locations `loc..loc + n` (within `used`) to `name`, up to the
+/// first one another name holds: that name.
+fn claim<'a>(used: &mut [Option<&'a str>], loc: u32, n: u32, name: &'a str) -> Option<&'a str> {
+    for slot in &mut used[loc as usize..(loc + n) as usize] {
+        if let Some(other) = *slot {
+            return Some(other);
+        }
+        *slot = Some(name);
+    }
+    None
 }
 
 /// The locations of the inputs and outputs between stages
@@ -137,21 +145,17 @@ fn check_varying_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
                 );
                 continue;
             }
-            for slot in &mut used[loc as usize..(loc + n) as usize] {
-                if let Some(other) = slot {
-                    push(
-                        diags,
-                        None,
-                        Code::LinkInterfaceMismatch,
-                        format!(
-                            "`{other}' and `{}' of the {} shader are both assigned location {loc}",
-                            g.name,
-                            s.stage.name()
-                        ),
-                    );
-                    break;
-                }
-                *slot = Some(&g.name);
+            if let Some(other) = claim(&mut used, loc, n, &g.name) {
+                push(
+                    diags,
+                    None,
+                    Code::LinkInterfaceMismatch,
+                    format!(
+                        "`{other}' and `{}' of the {} shader are both assigned location {loc}",
+                        g.name,
+                        s.stage.name()
+                    ),
+                );
             }
         }
     }
