@@ -544,21 +544,27 @@ fn draws_beyond_the_vertex_limits_are_out_of_memory() {
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
 }
 
+/// Binds a new 8 × 8 framebuffer object of two renderbuffers, colour of
+/// `color_format` and depth of `depth_format`.
+fn bind_renderbuffer_fbo(ctx: &mut Context, color_format: u32, depth_format: u32) {
+    let rb = ctx.gen_renderbuffers(2);
+    for (r, format) in rb.iter().zip([color_format, depth_format]) {
+        ctx.bind_renderbuffer(GL_RENDERBUFFER, *r);
+        ctx.renderbuffer_storage(GL_RENDERBUFFER, format, 8, 8);
+    }
+    let fb = ctx.gen_framebuffers(1)[0];
+    ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+    ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+    ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+}
+
 /// Two quads in one draw whose depths differ by less than a 16-bit step
 /// (0.99968 and 0.9996803, five 24-bit steps apart), nearer one second,
 /// into a framebuffer object whose depth attachment has
 /// `depth_format`; with GL_LESS, the second quad's colour where it wins.
 fn second_of_close_quads(depth_format: u32) -> [f32; 4] {
     let mut ctx = Context::new(8, 8);
-    let rb = ctx.gen_renderbuffers(2);
-    ctx.bind_renderbuffer(GL_RENDERBUFFER, rb[0]);
-    ctx.renderbuffer_storage(GL_RENDERBUFFER, GL_RGBA8, 8, 8);
-    ctx.bind_renderbuffer(GL_RENDERBUFFER, rb[1]);
-    ctx.renderbuffer_storage(GL_RENDERBUFFER, depth_format, 8, 8);
-    let fb = ctx.gen_framebuffers(1)[0];
-    ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
-    ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
-    ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+    bind_renderbuffer_fbo(&mut ctx, GL_RGBA8, depth_format);
     program(
         &mut ctx,
         Some("void main() { gl_Position = gl_Vertex; gl_FrontColor = gl_Color; }"),
@@ -609,15 +615,7 @@ fn buffer_bits_follow_the_draw_framebuffer() {
         [GL_RED_BITS, GL_ALPHA_BITS, GL_DEPTH_BITS, GL_STENCIL_BITS].map(|p| ctx.get_integerv(p)[0])
     };
     assert_eq!(bits(&mut ctx), [8, 8, 24, 8]);
-    let rb = ctx.gen_renderbuffers(2);
-    ctx.bind_renderbuffer(GL_RENDERBUFFER, rb[0]);
-    ctx.renderbuffer_storage(GL_RENDERBUFFER, GL_RGB8, 8, 8);
-    ctx.bind_renderbuffer(GL_RENDERBUFFER, rb[1]);
-    ctx.renderbuffer_storage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT16, 8, 8);
-    let fb = ctx.gen_framebuffers(1)[0];
-    ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
-    ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
-    ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+    bind_renderbuffer_fbo(&mut ctx, GL_RGB8, GL_DEPTH_COMPONENT16);
     assert_eq!(bits(&mut ctx), [8, 0, 16, 0]);
     ctx.bind_framebuffer(GL_FRAMEBUFFER, 0);
     assert_eq!(bits(&mut ctx), [8, 8, 24, 8]);
