@@ -35,33 +35,15 @@ pub(crate) fn report(r: &Report) -> String {
             write_geometry(&mut s, g);
         }
         for p in &d.vertex_prints {
-            let line = p.line.map_or(String::new(), |l| format!(" line {l}"));
-            let _ = writeln!(
-                s,
-                "  printf vertex {}{line}: {}",
-                p.vertex,
-                p.text.trim_end()
-            );
+            write_print(&mut s, &format!("vertex {}", p.vertex), p.line, &p.text);
         }
         for p in &d.geometry_prints {
-            let line = p.line.map_or(String::new(), |l| format!(" line {l}"));
-            let _ = writeln!(
-                s,
-                "  printf geometry, input primitive {}{line}: {}",
-                p.primitive,
-                p.text.trim_end()
-            );
+            let from = format!("geometry, input primitive {}", p.primitive);
+            write_print(&mut s, &from, p.line, &p.text);
         }
         for p in &d.prints {
-            let line = p.line.map_or(String::new(), |l| format!(" line {l}"));
-            let _ = writeln!(
-                s,
-                "  printf ({}, {}) primitive {}{line}: {}",
-                p.x,
-                p.y,
-                p.primitive,
-                p.text.trim_end()
-            );
+            let from = format!("({}, {}) primitive {}", p.x, p.y, p.primitive);
+            write_print(&mut s, &from, p.line, &p.text);
         }
         if let Some(v) = &d.vertex {
             write_vertex(&mut s, v);
@@ -71,6 +53,13 @@ pub(crate) fn report(r: &Report) -> String {
         }
     }
     s
+}
+
+/// One `debugPrintfEXT` line of the print rectangle: where it came from
+/// (`from`), its source line and its text.
+fn write_print(s: &mut String, from: &str, line: Option<u32>, text: &str) {
+    let line = line.map_or(String::new(), |l| format!(" line {l}"));
+    let _ = writeln!(s, "  printf {from}{line}: {}", text.trim_end());
 }
 
 fn values_text(v: &[Number]) -> String {
