@@ -69,6 +69,11 @@ def source(path, version=None):
     return f"#version {version}\n{text}" if version else text
 
 
+def lib(name):
+    """The text of the shader library's shaders/NAME."""
+    return source(os.path.join(SHADERS, name))
+
+
 def shader(kind, src):
     """Compiles; returns (shader, compile status, info log)."""
     s = GL.glCreateShader(kind)
@@ -114,6 +119,7 @@ def uniform(p, name, *vals, count=None, optional=False):
 
 
 def uniform_i(p, name, v):
+    """Sets an int (or sampler) uniform; raises when it is not active."""
     loc = GL.glGetUniformLocation(p, name)
     if loc < 0:
         raise RuntimeError(f"uniform {name} not active")

@@ -10,22 +10,10 @@ harness.py.
 """
 import ctypes
 import math
-import os
 import sys
 
-from harness import (GL, SHADERS, main, material, pattern_texture, perspective, program,
-                     scene, source, tess_sphere, uniform)
-
-
-def lib(name):
-    return source(os.path.join(SHADERS, name))
-
-
-def uniform_i(p, name, v):
-    loc = GL.glGetUniformLocation(p, name)
-    if loc < 0:
-        raise RuntimeError(f"uniform {name} not active")
-    GL.glUniform1i(loc, v)
+from harness import (GL, lib, main, material, pattern_texture, perspective, program, scene,
+                     tess_sphere, uniform, uniform_i)
 
 
 def textured_quad():

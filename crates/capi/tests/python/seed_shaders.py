@@ -11,16 +11,12 @@ import math
 import os
 import sys
 
-from harness import (GL, SEEDS, SHADERS, lights, main, material, ortho, perspective,
-                     program, scene, source, tess_sphere, uniform)
+from harness import (GL, SEEDS, lib, lights, main, material, ortho, perspective, program,
+                     scene, source, tess_sphere, uniform)
 
 
 def seed(name):
     return source(os.path.join(SEEDS, name), 120)
-
-
-def lib(name):
-    return source(os.path.join(SHADERS, name))
 
 
 def rainbow(n):

@@ -10,21 +10,9 @@ Run by compare.py --bounds (python3 texture_lod.py OUTDIR [SCENE...]); see
 harness.py.
 """
 import math
-import os
 import sys
 
-from harness import GL, SHADERS, main, perspective, program, scene, source
-
-
-def lib(name):
-    return source(os.path.join(SHADERS, name))
-
-
-def uniform_i(p, name, v):
-    loc = GL.glGetUniformLocation(p, name)
-    if loc < 0:
-        raise RuntimeError(f"uniform {name} not active")
-    GL.glUniform1i(loc, v)
+from harness import GL, lib, main, perspective, program, scene, uniform_i
 
 
 def mipmapped_texture(unit, size, texel):
