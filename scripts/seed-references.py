@@ -60,12 +60,13 @@ SEED_OF = {
 }
 
 
-def load_regen():
+def load_script(name):
+    """scripts/NAME.py as a module (its name has a dash)."""
     spec = importlib.util.spec_from_file_location(
-        "regen_references", os.path.join(HERE, "regen-references.py"))
-    regen = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(regen)
-    return regen
+        name.replace("-", "_"), os.path.join(HERE, name + ".py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
 def read(path):
@@ -137,18 +138,10 @@ def read_bounds(path):
     return bounds
 
 
-def load_sweep():
-    spec = importlib.util.spec_from_file_location(
-        "mesa_sweep", os.path.join(HERE, "mesa-sweep.py"))
-    sweep = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(sweep)
-    return sweep
-
-
 def replay_to(scene_path, out_path):
     """Child process: replays the scene on whichever libOSMesa the process
     loads and writes its RGBA rows (bottom first) to out_path."""
-    regen = load_regen()
+    regen = load_script("regen-references")
     with open(scene_path) as f:
         w, h, px = regen.replay(json.load(f))
     with open(out_path, "wb") as f:
@@ -184,12 +177,13 @@ def main():
         return 0
     if not os.path.exists(os.path.join(args.libdir, "libOSMesa.so")):
         sys.exit(f"no libOSMesa.so in {args.libdir}: build it (cargo build --release -p shaderbox-capi)")
-    regen = load_regen()
+    regen = load_script("regen-references")
     sys.argv[1:] = [args.binary] if args.binary else []
     binary = regen.find_binary()
     bounds = read_bounds(args.bounds) if args.bounds else {}
+    sweep = load_script("mesa-sweep")
     if args.sweep:
-        cases = load_sweep().scenes(args.sweep, args.seed)
+        cases = sweep.scenes(args.sweep, args.seed)
     else:
         size = ["--size", f"{regen.SIZE}x{regen.SIZE}"]
         cases = ((name, size + opts) for name, opts in regen.cases())
@@ -209,26 +203,16 @@ def main():
                 print(f"{name} {' '.join(opts)}: no program the talk has a version of")
                 continue
             ran += 1
-            least, most_beyond, most = bounds.get(name, (99.9, 0, 255))
+            bar = bounds.get(name, (99.9, 0, 255))
             if args.sweep:
                 name += " " + " ".join(opts)
             with open(path, "w") as f:
                 json.dump(scene, f)
             w, h, ours = replay_on(args.libdir, path, os.path.join(tmp, "ours.rgba"))
             _, _, mesa = replay_on(None, path, os.path.join(tmp, "mesa.rgba"))
-            diff = [max(abs(ours[i + k] - mesa[i + k]) for k in range(3))
-                    for i in range(0, len(ours), 4)]
-            within = sum(d <= 2 for d in diff) / len(diff)
-            beyond = sum(d > 8 for d in diff)
-            bad = beyond > most_beyond or 100 * within < least or max(diff) > most
-            failed += bad
-            print(f"{name} ({', '.join(changed)}): {100 * within:.3f}% within 2/255, "
-                  f"{beyond} beyond 8/255, max {max(diff)}/255{'  FAIL' if bad else ''}",
-                  flush=True)
-            for i in [i for i, d in enumerate(diff) if d > 8][:4]:
-                x, y = i % w, i // w
-                print(f"  pixel {x},{y} (from the bottom left): shaderbox "
-                      f"{tuple(ours[4 * i:4 * i + 3])}, Mesa {tuple(mesa[4 * i:4 * i + 3])}")
+            pixels = [[tuple(px[i:i + 3]) for i in range(0, len(px), 4)] for px in (ours, mesa)]
+            failed += sweep.report(f"{name} ({', '.join(changed)})", *pixels, w, bar,
+                                   "bottom left")
     print(f"{ran - failed} of {ran} scenes meet the bar")
     return 1 if failed else 0
 
