@@ -50,6 +50,8 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "GL_ARB_arrays_of_arrays",
     "GL_ARB_shading_language_packing",
     "GL_ARB_texture_cube_map_array",
+    "GL_ARB_shading_language_420pack",
+    "GL_ARB_separate_shader_objects",
 ];
 
 /// Whether a test of GLSL `version` can use extension `name`: one of
@@ -473,7 +475,8 @@ mod tests {
         }
         assert!(!supported("GL_EXT_texture_array", Version::V120));
         assert!(supported("GL_EXT_texture_array", Version::V130));
-        assert!(!supported("GL_ARB_shading_language_420pack", Version::V330));
+        assert!(supported("GL_ARB_shading_language_420pack", Version::V120));
+        assert!(!supported("GL_ARB_shader_storage_buffer_object", Version::V330));
     }
 
     #[test]

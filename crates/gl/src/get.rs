@@ -83,6 +83,8 @@ pub const EXTENSIONS_33: &[&str] = &[
     "GL_ARB_shading_language_packing",
     // Needs GL 3.0 and GLSL 1.30 (its samplers' lookups).
     "GL_ARB_texture_cube_map_array",
+    // A language-only extension that needs GLSL 1.30.
+    "GL_ARB_shading_language_420pack",
 ];
 
 /// One glPixelStore mode of `store` (Table 6.17's pixel storage state).
@@ -207,14 +209,14 @@ impl Context {
             GL_MAX_RECTANGLE_TEXTURE_SIZE => int(&[crate::MAX_TEXTURE_SIZE as i64]),
             // The texel offsets the lookups take (GL 3.0 §3.8.8: at least
             // −8 to 7); any integer works.
-            GL_MIN_PROGRAM_TEXEL_OFFSET => int(&[-8]),
+            GL_MIN_PROGRAM_TEXEL_OFFSET => int(&[glsl::limits::MIN_PROGRAM_TEXEL_OFFSET.into()]),
             GL_MAX_TEXTURE_BUFFER_SIZE => {
                 int(&[crate::texture_buffer::MAX_TEXTURE_BUFFER_SIZE as i64])
             }
             GL_TEXTURE_BUFFER_DATA_STORE_BINDING => {
                 int(&[self.active_tex_buffer().map_or(0, |b| b.buffer) as i64])
             }
-            GL_MAX_PROGRAM_TEXEL_OFFSET => int(&[7]),
+            GL_MAX_PROGRAM_TEXEL_OFFSET => int(&[glsl::limits::MAX_PROGRAM_TEXEL_OFFSET.into()]),
             GL_MAX_VIEWPORT_DIMS => int(&[crate::MAX_TEXTURE_SIZE as i64; 2]),
             GL_MAX_MODELVIEW_STACK_DEPTH
             | GL_MAX_PROJECTION_STACK_DEPTH

@@ -27,7 +27,7 @@ pub struct BufferObj {
 }
 
 /// GL_MAX_UNIFORM_BUFFER_BINDINGS (GL 3.3's minimum is 36).
-pub const MAX_UNIFORM_BUFFER_BINDINGS: usize = 36;
+pub const MAX_UNIFORM_BUFFER_BINDINGS: usize = glsl::limits::MAX_UNIFORM_BUFFER_BINDINGS as usize;
 /// GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT: glBindBufferRange offsets on
 /// GL_UNIFORM_BUFFER are multiples of this (a vec4).
 pub const UNIFORM_BUFFER_OFFSET_ALIGNMENT: i64 = 16;

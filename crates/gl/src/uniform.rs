@@ -114,6 +114,17 @@ pub enum UniformError {
     InvalidValue,
 }
 
+/// The initial texture units of a sampler uniform declared with
+/// `layout(binding = N)` (GL_ARB_shading_language_420pack): N, and N + i
+/// for element i of an array (a sampler takes one word per element).
+fn set_binding(g: &glsl::ir::Global, words: &mut [u32]) {
+    if let Some(b) = g.binding {
+        for (i, w) in words.iter_mut().enumerate() {
+            *w = b.saturating_add(i as u32);
+        }
+    }
+}
+
 impl UniformTable {
     /// Builds the table from the linked stages' modules: every uniform
     /// global, vertex stage first, each name once. Every one gets storage;
@@ -146,16 +157,17 @@ impl UniformTable {
                 }
                 if let Some(u) = t.globals.iter().find(|u| u.name == g.name) {
                     // Declared by an earlier stage: this stage's initializer
-                    // still sets the shared value (the linker checked that
-                    // initializers present in both stages agree).
+                    // or binding still sets the shared value (the linker
+                    // checked that those present in both stages agree).
+                    let (offset, n) = (u.offset, u.words);
                     if let Some(init) = &g.init {
-                        let (offset, n) = (u.offset, u.words);
                         for (i, c) in init.components.iter().take(n).enumerate() {
                             if let Some(w) = t.values.get_mut(offset + i) {
                                 *w = scalar_word(*c);
                             }
                         }
                     }
+                    set_binding(g, &mut t.values[offset..offset + n]);
                     continue;
                 }
                 let n = words(g.ty, &m.structs);
@@ -166,6 +178,7 @@ impl UniformTable {
                         t.values[offset + i] = scalar_word(*c);
                     }
                 }
+                set_binding(g, &mut t.values[offset..offset + n]);
                 t.globals.push(UniformGlobal {
                     name: g.name.clone(),
                     ty: g.ty,
@@ -217,8 +230,19 @@ impl UniformTable {
             (mb.ty, offsets[i], mb.row_major)
         };
         if let Some(first) = self.blocks.iter().position(|x| x.name == names[0]) {
-            for blk in self.blocks.iter_mut().skip(first).take(elements) {
+            for (e, blk) in self
+                .blocks
+                .iter_mut()
+                .skip(first)
+                .take(elements)
+                .enumerate()
+            {
                 blk.referenced[stage_slot] = true;
+                // A binding given only in a later stage holds for all
+                // (the linker refused two different ones).
+                if let Some(b) = b.binding {
+                    blk.binding = b + e as u32;
+                }
             }
             if self.block_globals.iter().any(|x| x.name == global) {
                 return;
@@ -268,13 +292,15 @@ impl UniformTable {
         let first_leaf = self.leaves.len();
         let uniforms: Vec<usize> = (first_leaf..first_leaf + leaves.len()).collect();
         self.leaves.extend(leaves);
-        for name in names {
+        for (e, name) in names.into_iter().enumerate() {
             let mut referenced = [false; 3];
             referenced[stage_slot] = true;
             self.blocks.push(ActiveBlock {
                 name,
                 data_size,
-                binding: 0,
+                // `layout(binding = N)`: element e of an arrayed
+                // instance takes N + e; without one, binding point 0.
+                binding: b.binding.map_or(0, |b| b + e as u32),
                 referenced,
                 uniforms: uniforms.clone(),
             });

@@ -359,3 +359,37 @@ void main() { o = pass.v * 0.5 + fcol.c.wzyx * 0.5; }
     // fragment stage's instance.
     assert_close(pixel(&mut ctx), [0.6, 0.5, 0.5, 0.6]);
 }
+
+#[test]
+fn layout_bindings_are_the_initial_units_and_binding_points() {
+    // GL_ARB_shading_language_420pack: a sampler array's elements start
+    // at its binding, an arrayed block's instances at the block's; both
+    // stay settable through the API afterwards.
+    let fs = "#version 150
+#extension GL_ARB_shading_language_420pack : require
+layout(binding = 3) uniform sampler2D t[2];
+layout(std140, binding = 7) uniform B { vec4 c; } b[2];
+uniform sampler2D plain;
+out vec4 result;
+void main() { result = texture(t[0], vec2(0.0)) + texture(t[1], vec2(0.0)) + texture(plain, vec2(0.0)) + b[0].c + b[1].c; }
+";
+    let mut ctx = Context::new(8, 8);
+    let p = program(&mut ctx, VS, fs);
+    let unit = |ctx: &mut Context, name: &str| {
+        let loc = ctx.get_uniform_location(p, name);
+        ctx.get_uniformiv(p, loc)
+    };
+    assert_eq!(unit(&mut ctx, "t[0]"), vec![3]);
+    assert_eq!(unit(&mut ctx, "t[1]"), vec![4]);
+    assert_eq!(unit(&mut ctx, "plain"), vec![0]);
+    let binding = |ctx: &mut Context, name: &str| {
+        let i = ctx.get_uniform_block_index(p, name);
+        ctx.get_active_uniform_blockiv(p, i, GL_UNIFORM_BLOCK_BINDING)
+            .unwrap()
+    };
+    assert_eq!(binding(&mut ctx, "B[0]"), vec![7]);
+    assert_eq!(binding(&mut ctx, "B[1]"), vec![8]);
+    let second = ctx.get_uniform_block_index(p, "B[1]");
+    ctx.uniform_block_binding(p, second, 2);
+    assert_eq!(binding(&mut ctx, "B[1]"), vec![2]);
+}

@@ -446,6 +446,9 @@ pub enum ExprKind {
     Method(Box<Expr>, Ident, Vec<Expr>),
     /// `a, b`
     Comma(Box<Expr>, Box<Expr>),
+    /// `{ a, b, }`: an initializer list (GL_ARB_shading_language_420pack),
+    /// only ever the initializer of a declarator or an element of one.
+    InitList(Vec<Expr>),
     /// Produced by error recovery where an expression was expected; analysis
     /// gives it the error type without reporting again.
     Error,

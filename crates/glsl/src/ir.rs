@@ -212,6 +212,11 @@ pub struct InterfaceBlock {
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub inner: Vec<u32>,
     pub layout: BlockLayout,
+    /// `layout(binding = N)` of a uniform block (GL_ARB_shading_language_420pack):
+    /// its first binding point; an arrayed instance's elements take the
+    /// next ones.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub binding: Option<u32>,
     pub members: Vec<BlockMember>,
     pub globals: Vec<GlobalId>,
     pub span: Span,
@@ -267,6 +272,11 @@ pub struct Global {
     pub index: Option<u32>,
     /// The interface block this global belongs to (a member, or the
     /// instance of a named block).
+    /// `layout(binding = N)` of a sampler uniform
+    /// (GL_ARB_shading_language_420pack): the texture unit it starts
+    /// with; an array's elements take the next ones.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub binding: Option<u32>,
     pub block: Option<BlockId>,
     /// Constant initializer (`const` globals, uniforms with an initializer).
     pub init: Option<ConstValue>,

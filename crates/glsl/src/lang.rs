@@ -174,6 +174,14 @@ extensions! {
     // `gl_PerVertex` are GLSL 1.50's, which every version here allows
     // wherever it has blocks.
     ArbSeparateShaderObjects = "GL_ARB_separate_shader_objects";
+    // GLSL 4.20's language pack: initializer lists, `.length()` of
+    // vectors and matrices, swizzles of scalars, `const` locals with
+    // initializers that are not constant, implicit conversion of return
+    // values, qualifiers in any order, `layout(binding = N)` on samplers
+    // and uniform blocks. Its "GLSL 1.3 is required" asks the
+    // implementation for GLSL 1.30, which the 3.3 contexts offering it
+    // have, so shaders of every version may enable it (as Mesa offers it).
+    ArbShadingLanguage420pack = "GL_ARB_shading_language_420pack";
 }
 
 impl Extension {
@@ -275,6 +283,13 @@ pub enum Feature {
     /// `layout(location = N)` on the inputs and outputs between stages
     /// (GL_ARB_separate_shader_objects; GLSL 4.10 has it in core).
     VaryingLocation,
+    /// GL_ARB_shading_language_420pack's language changes (GLSL 4.20 has
+    /// them in core): initializer lists `{...}`, `.length()` of vectors
+    /// and matrices, swizzles of scalars, `const` locals initialized by
+    /// expressions that are not constant, implicit conversion of return
+    /// values, qualifiers in any order and repeated `layout`s, `const`
+    /// parameters after other parameter qualifiers, `layout(binding)`.
+    LanguagePack420,
 }
 
 /// Why a feature is not available to a shader.
@@ -428,6 +443,7 @@ impl Language {
             }
             Feature::ArraysOfArrays => self.only_with(Extension::ArbArraysOfArrays),
             Feature::VaryingLocation => self.only_with(Extension::ArbSeparateShaderObjects),
+            Feature::LanguagePack420 => self.only_with(Extension::ArbShadingLanguage420pack),
             Feature::CompatibilityInterface => {
                 if self.version >= Version::V140 && self.profile == Profile::Core {
                     Err(Unavailable::RemovedInCore(Version::V140))
@@ -476,6 +492,7 @@ impl Language {
             || self.has(Extension::ArbUniformBufferObject)
             || self.has(Extension::ArbFragmentCoordConventions)
             || self.has(Extension::ArbSeparateShaderObjects)
+            || self.has(Extension::ArbShadingLanguage420pack)
     }
 
     /// `gate` as a bool.

@@ -150,8 +150,11 @@ impl Iterator for Lexer<'_> {
                     let mut j = i + 2;
                     let mut closed = false;
                     while j < bytes.len() {
-                        if bytes[j] == b'*' && bytes.get(j + 1) == Some(&b'/') {
-                            j += 2;
+                        // Continuations are removed first: `*\` at a
+                        // line's end and `/` on the next close it.
+                        let after = self.skip_continuations(bytes, j + 1);
+                        if bytes[j] == b'*' && bytes.get(after) == Some(&b'/') {
+                            j = after + 1;
                             closed = true;
                             break;
                         }
@@ -170,13 +173,29 @@ impl Iterator for Lexer<'_> {
                     self.space = true;
                 }
                 b'a'..=b'z' | b'A'..=b'Z' | b'_' => {
+                    let word = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
                     let mut j = i;
-                    while j < bytes.len() && (bytes[j].is_ascii_alphanumeric() || bytes[j] == b'_')
-                    {
-                        j += 1;
+                    // An identifier continues across line continuations
+                    // (removed before tokenizing: `f\` + newline + `oo`
+                    // is `foo`); its spelling leaves them out.
+                    let mut spliced = false;
+                    loop {
+                        let k = self.skip_continuations(bytes, j);
+                        match bytes.get(k) {
+                            Some(&b) if word(b) => {
+                                spliced |= k != j;
+                                j = k + 1;
+                            }
+                            _ => break,
+                        }
                     }
                     self.i = j;
-                    let spelling = self.spelling(i);
+                    let spelling = if spliced {
+                        let joined: String = text[i..j].split(['\\', '\r', '\n']).collect();
+                        SmolStr::new(joined)
+                    } else {
+                        self.spelling(i)
+                    };
                     return Some(self.token(PpKind::Ident, spelling, i));
                 }
                 b'0'..=b'9' => {
@@ -238,6 +257,19 @@ fn string_end(bytes: &[u8], i: usize) -> Option<usize> {
         }
     }
     None
+}
+
+impl Lexer<'_> {
+    /// The index of the first byte at or after `j` that is not part of a
+    /// line continuation (`j` itself when continuations are off).
+    fn skip_continuations(&self, bytes: &[u8], mut j: usize) -> usize {
+        if self.opts.line_continuation {
+            while let n @ 1.. = continuation_len(bytes, j) {
+                j += n;
+            }
+        }
+        j
+    }
 }
 
 /// The length of a line continuation (`\` then LF or CR LF) at `i`, or 0.
@@ -366,8 +398,13 @@ mod tests {
         let opts = LexOptions {
             line_continuation: true,
         };
+        // Removed before tokenizing: the lines' ends join into one token
+        // (GLSL 4.20 §3.1; Mesa's preprocessor does so in every version).
         let (t, _) = lex("a\\\nb", opts);
-        assert_eq!(t.len(), 2);
+        assert_eq!(t.len(), 1);
+        assert_eq!(t[0].text.as_str(), "ab");
+        let (t, _) = lex("/* x *\\\n/ c", opts);
+        assert_eq!(t.iter().map(|t| t.text.as_str()).collect::<Vec<_>>(), ["c"]);
         let (t, _) = lex("a\\\nb", LexOptions::default());
         assert!(t.iter().any(|t| t.kind == PpKind::Other('\\')));
         let (t, _) = lex("a // c \\\r\n b\nc", opts);

@@ -6,6 +6,16 @@
 //! the comment) and matches what Mesa's llvmpipe advertises where that
 //! matters to existing programs.
 
+/// GL_MAX_UNIFORM_BUFFER_BINDINGS (GL 3.1, minimum 36): the binding points
+/// `layout(binding = N)` may name on uniform blocks.
+pub const MAX_UNIFORM_BUFFER_BINDINGS: u32 = 36;
+
+/// GL_MIN_PROGRAM_TEXEL_OFFSET and GL_MAX_PROGRAM_TEXEL_OFFSET (GL 3.0
+/// §3.8.8: at most −8 and at least 7), GLSL 4.20's
+/// `gl_MinProgramTexelOffset` and `gl_MaxProgramTexelOffset`.
+pub const MIN_PROGRAM_TEXEL_OFFSET: i32 = -8;
+pub const MAX_PROGRAM_TEXEL_OFFSET: i32 = 7;
+
 /// `gl_MaxLights` (minimum 8).
 pub const MAX_LIGHTS: u32 = 8;
 /// `gl_MaxClipPlanes` (minimum 6).

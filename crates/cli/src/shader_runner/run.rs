@@ -203,6 +203,9 @@ pub struct Runner<'a, G: GlApi> {
     pipeline: u32,
     sso: bool,
     stage_programs: Vec<(u32, u32)>,
+    /// A core-profile context, which has no fixed-function texturing to
+    /// enable.
+    core: bool,
     report: Report,
 }
 
@@ -229,6 +232,7 @@ impl<'a, G: GlApi> Runner<'a, G> {
             pipeline: 0,
             sso: false,
             stage_programs: Vec::new(),
+            core: window.api.is_core(),
             report: Report::default(),
         }
     }

@@ -397,6 +397,7 @@ fn with_ftransform_inputs(m: &Module) -> Option<Module> {
             interpolation: None,
             location: None,
             index: None,
+            binding: None,
             block: None,
             init: None,
             init_expr: None,

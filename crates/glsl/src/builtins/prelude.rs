@@ -206,6 +206,8 @@ const V330: Version = Version::V330;
 /// A built-in constant: `const int NAME = VALUE;`.
 enum Item {
     Const(&'static str, u32),
+    /// A constant that may be negative.
+    IntConst(&'static str, i32),
     /// `const int gl_VerticesIn`, whose value is the vertex count of the
     /// program's input primitive (GL_EXT_geometry_shader4 §7.4).
     VerticesIn,
@@ -220,6 +222,15 @@ const VARIABLES: &[(Where, Item)] = {
     use Item::{Const, Text};
     &[
         (COMPAT, Const("gl_MaxLights", limits::MAX_LIGHTS)),
+        // GL_ARB_shading_language_420pack's (GLSL 4.20's) texel offsets.
+        (
+            Where::ALL.needs(Extension::ArbShadingLanguage420pack),
+            Item::IntConst("gl_MinProgramTexelOffset", limits::MIN_PROGRAM_TEXEL_OFFSET),
+        ),
+        (
+            Where::ALL.needs(Extension::ArbShadingLanguage420pack),
+            Item::IntConst("gl_MaxProgramTexelOffset", limits::MAX_PROGRAM_TEXEL_OFFSET),
+        ),
         (COMPAT, Const("gl_MaxClipPlanes", limits::MAX_CLIP_PLANES)),
         // GLSL 1.40 §7.4 still lists it, by mistake: it counts
         // fixed-function texture units, and 1.50 moves it to the
@@ -1279,6 +1290,9 @@ fn build(lang: Language, stage: Stage, input: InputPrimitive) -> String {
         }
         match item {
             Item::Const(name, value) => {
+                let _ = writeln!(out, "const int {name} = {value};");
+            }
+            Item::IntConst(name, value) => {
                 let _ = writeln!(out, "const int {name} = {value};");
             }
             Item::VerticesIn => {

@@ -44,9 +44,11 @@ pub(super) fn merge_blocks(
                     || (b.storage == Storage::GeometryInput
                         && x.inner == b.inner
                         && (x.array.is_none() || b.array.is_none()));
+                let bindings_differ = x.binding.zip(b.binding).is_some_and(|(p, q)| p != q);
                 if !same_members(&x.members, &members, merged)
                     || x.layout != b.layout
                     || !arrays_match
+                    || bindings_differ
                 {
                     *errors = true;
                     diags.push(LinkDiagnostic {
@@ -55,11 +57,14 @@ pub(super) fn merge_blocks(
                             Code::LinkInterfaceMismatch,
                             b.span,
                             format!(
-                                "block `{}' is declared with different members, layout or array size in two shader objects",
+                                "block `{}' is declared with different members, layout, binding or array size in two shader objects",
                                 b.name
                             ),
                         ),
                     });
+                }
+                if merged.blocks[i].binding.is_none() {
+                    merged.blocks[i].binding = b.binding;
                 }
                 for (x, y) in merged.blocks[i].members.iter_mut().zip(&members) {
                     x.implicit_size = x.implicit_size.max(y.implicit_size);
@@ -209,6 +214,7 @@ fn compare_blocks(vm: &Module, fm: &Module, uniform_only: bool, diags: &mut Vec<
                             && a.interpolation == b.interpolation
                     })
                     && vb.layout == fb.layout
+                    && vb.binding.zip(fb.binding).is_none_or(|(a, b)| a == b)
                     // A geometry input block is the array of the vertex
                     // stage's output block, one per vertex. Otherwise an
                     // array instance matches an array of the same size
@@ -224,7 +230,7 @@ fn compare_blocks(vm: &Module, fm: &Module, uniform_only: bool, diags: &mut Vec<
                         None,
                         Code::LinkInterfaceMismatch,
                         format!(
-                            "block `{}' has different members or array sizes in the {pn} and {cn} shaders",
+                            "block `{}' has different members, bindings or array sizes in the {pn} and {cn} shaders",
                             fb.name
                         ),
                     );

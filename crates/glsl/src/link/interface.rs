@@ -469,6 +469,16 @@ fn check_uniform(
                 fm.type_name(fg.ty)
             ),
         );
+    } else if let Some((a, b)) = vg.binding.zip(fg.binding).filter(|(a, b)| a != b) {
+        push(
+            diags,
+            None,
+            Code::LinkInterfaceMismatch,
+            format!(
+                "uniform `{}' has `binding = {a}' in the {pn} shader but `binding = {b}' in the {cn} shader",
+                fg.name
+            ),
+        );
     } else if let (Some(a), Some(b)) = (&vg.init, &fg.init) {
         if a.components != b.components {
             push(

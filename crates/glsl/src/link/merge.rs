@@ -128,6 +128,17 @@ pub(super) fn merge_stage(
                         g.name, names[other]
                     ));
                 }
+                // GLSL 4.20 §4.4.5: different bindings of one name are
+                // a link error; a binding given in one object holds for
+                // all.
+                match (existing.binding, g.binding) {
+                    (Some(a), Some(b)) if a != b => problems.push(format!(
+                        "`{}' has `binding = {b}' here and `binding = {a}' in {}",
+                        g.name, names[other]
+                    )),
+                    (None, b) => existing.binding = b,
+                    _ => {}
+                }
                 // §4.3.6: centroid and invariant must match; within one
                 // stage the objects share the variable, so the same holds.
                 if existing.centroid != g.centroid || existing.invariant != g.invariant {

@@ -534,7 +534,7 @@ impl Parser<'_> {
             None
         };
         let init = if self.eat_punct(Punct::Equal) {
-            Some(*self.assignment()?)
+            Some(self.initializer()?)
         } else {
             None
         };
@@ -544,6 +544,40 @@ impl Parser<'_> {
             name,
             array,
             init,
+        })
+    }
+
+    /// `initializer`: an assignment expression, or a brace-enclosed list
+    /// of initializers with an optional trailing comma (GLSL 4.20 §4.1.11,
+    /// GL_ARB_shading_language_420pack; analysis checks the extension).
+    fn initializer(&mut self) -> PResult<Expr> {
+        if !self.at_punct(Punct::LeftBrace) {
+            return Ok(*self.assignment()?);
+        }
+        self.enter()?;
+        let start = self.bump().span;
+        let mut items = Vec::new();
+        let mut closed = Ok(Span::default());
+        while !self.at_punct(Punct::RightBrace) {
+            match self.initializer() {
+                Ok(e) => items.push(e),
+                Err(r) => {
+                    closed = Err(r);
+                    break;
+                }
+            }
+            if !self.eat_punct(Punct::Comma) {
+                break;
+            }
+        }
+        if closed.is_ok() {
+            closed = self.expect_punct(Punct::RightBrace);
+        }
+        self.leave();
+        closed?;
+        Ok(Expr {
+            kind: ExprKind::InitList(items),
+            span: self.span_from(start),
         })
     }
 

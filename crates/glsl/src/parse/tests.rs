@@ -190,6 +190,10 @@ fn show(e: &Expr) -> String {
             format!("{}.{}({})", show(a), m.name, args.join(", "))
         }
         ExprKind::Comma(a, b) => format!("({}, {})", show(a), show(b)),
+        ExprKind::InitList(items) => {
+            let items: Vec<_> = items.iter().map(show).collect();
+            format!("{{{}}}", items.join(", "))
+        }
         ExprKind::StringLit(s) => format!("{s:?}"),
         ExprKind::Error => "<error>".into(),
     }
@@ -1363,4 +1367,17 @@ fn switch_labels_are_statements_of_the_body() {
     )
     .is_empty());
     assert!(!errs_v("void f(int x) { switch (x) case 1: ; }", Version::V130).is_empty());
+}
+
+#[test]
+fn initializer_lists_nest_and_take_a_trailing_comma() {
+    let tu = ok("vec2 a[2] = { { 1.0, 2.0 }, vec2(3.0), }, b = { x, (y, z) };");
+    let d = &vars(&tu.items[0]).declarators;
+    let init = |i: usize| d[i].init.as_ref().map(show);
+    assert_eq!(init(0).as_deref(), Some("{{1.0, 2.0}, vec2(3.0)}"));
+    // A comma outside parentheses ends an initializer; inside them it is
+    // the sequence operator.
+    assert_eq!(init(1).as_deref(), Some("{x, (y, z)}"));
+    assert!(!errs("float a[1] = { 1.0 ;").is_empty());
+    assert!(!errs("void f() { vec2 v; v = { 1.0, 2.0 }; }").is_empty());
 }

@@ -5,9 +5,11 @@
 //! the result into parser [`Token`]s, ending with one `Eof`.
 //!
 //! Choices where the specs leave room (each follows piglit and Mesa):
-//! - Line continuation (`\` before a newline) is accepted in both versions,
+//! - Line continuation (`\` before a newline) is accepted in every version,
 //!   although §3.1 says there is none: piglit's 1.10 tests use it in
-//!   `#define`s, and it is removed before comments are recognized.
+//!   `#define`s. It is removed before comments and tokens are recognized,
+//!   so a token or a comment's end may span it (GLSL 4.20 §3.1,
+//!   GL_ARB_shading_language_420pack).
 //! - `#line N` makes the *next* line number N+1 (§3.3 of both specs; GLSL
 //!   3.30 later changed this to N).
 //! - An identifier left in an `#if` expression after macro expansion is 0

@@ -363,6 +363,9 @@ impl Analyzer {
                 }
             }
         }
+        if t.is_scalar() && self.lang.allows(crate::lang::Feature::LanguagePack420) {
+            return self.scalar_swizzle(base, name, span, lvalue);
+        }
         let Some(n) = t.vector_size().filter(|_| t.is_vector()) else {
             let msg = if t.is_scalar() {
                 format!(
@@ -416,7 +419,45 @@ impl Analyzer {
         }
     }
 
-    /// `a.length()` (GLSL 1.20 §5.7 for arrays).
+    /// A swizzle of a scalar (GL_ARB_shading_language_420pack: `x`, `r`
+    /// and `s` name its only component): one component is the scalar
+    /// itself (an l-value where the scalar is one), more are the vector
+    /// constructed from it.
+    fn scalar_swizzle(
+        &mut self,
+        base: ir::Expr,
+        name: &ast::Ident,
+        span: Span,
+        lvalue: bool,
+    ) -> ir::Expr {
+        let (_, count) = match parse_swizzle(&name.name, 1) {
+            Ok(c) => c,
+            Err(msg) => {
+                self.error(Code::BadSwizzle, name.span, msg);
+                return error_expr(span);
+            }
+        };
+        if count == 1 {
+            return ir::Expr { span, ..base };
+        }
+        if lvalue {
+            self.error(
+                Code::NotAnLvalue,
+                name.span,
+                format!(
+                    "swizzle `{}' repeats a component and cannot be assigned",
+                    name.name
+                ),
+            );
+            return error_expr(span);
+        }
+        let ty = Type::vec(base.ty.scalar().unwrap_or(Scalar::Float), count);
+        self.fold(mk(K::Construct { args: vec![base] }, ty, span))
+    }
+
+    /// `a.length()` (GLSL 1.20 §5.7 for arrays; GL_ARB_shading_language_420pack
+    /// for vectors, their number of components, and matrices, their number
+    /// of columns).
     pub(super) fn method(
         &mut self,
         b: &ast::Expr,
@@ -449,13 +490,24 @@ impl Analyzer {
             );
             return error_expr(span);
         }
-        let Some(ArraySize::Sized(n)) = base.ty.array else {
-            self.error(
-                Code::TypeMismatch,
-                name.span,
-                format!("`.length()' needs an array, found {}", self.tn(base.ty)),
-            );
-            return error_expr(span);
+        let pack = self.lang.allows(crate::lang::Feature::LanguagePack420);
+        let n = match (base.ty.array, base.ty.base) {
+            (Some(ArraySize::Sized(n)), _) => n,
+            (None, Base::Vector(_, n)) if pack => u32::from(n),
+            (None, Base::Matrix { cols, .. }) if pack => u32::from(cols),
+            _ => {
+                let d = self.error(
+                    Code::TypeMismatch,
+                    name.span,
+                    format!("`.length()' needs an array, found {}", self.tn(base.ty)),
+                );
+                if base.ty.is_vector() || base.ty.is_matrix() {
+                    d.notes.push(
+                        "`.length()' of vectors and matrices needs `#extension GL_ARB_shading_language_420pack : enable'".into(),
+                    );
+                }
+                return error_expr(span);
+            }
         };
         if !args.is_empty() {
             self.error(Code::TypeMismatch, span, "`.length()' takes no arguments");

@@ -75,7 +75,9 @@ impl Analyzer {
         }
         let mut layout = self.default_block_layout;
         let mut row_major = self.default_row_major;
+        let mut binding = None;
         if storage == Storage::Uniform {
+            binding = q.layout.binding;
             if let Some((l, _)) = q.layout.block_layout {
                 layout = l;
             }
@@ -272,6 +274,9 @@ impl Analyzer {
                 }
             }
         }
+        let binding = binding.and_then(|(v, span)| {
+            self.block_binding(v, array.unwrap_or(1) * inner.iter().product::<u32>(), span)
+        });
         self.module.blocks.push(ir::InterfaceBlock {
             name: b.name.name.to_string(),
             storage,
@@ -280,10 +285,28 @@ impl Analyzer {
             array,
             inner,
             layout,
+            binding,
             members,
             globals,
             span: b.name.span,
         });
+    }
+
+    /// `layout(binding = N)` of a uniform block of `count` instances:
+    /// GL_ARB_shading_language_420pack gives blocks a binding wherever
+    /// the language has them (its "GLSL 1.4 is required" because blocks
+    /// came with 1.40; GL_ARB_uniform_buffer_object brings them to 1.30 and
+    /// earlier, where Mesa takes the binding too), every instance's binding
+    /// point below GL_MAX_UNIFORM_BUFFER_BINDINGS.
+    fn block_binding(&mut self, v: u32, count: u32, span: Span) -> Option<u32> {
+        self.binding_in_range(
+            v,
+            count,
+            crate::limits::MAX_UNIFORM_BUFFER_BINDINGS,
+            "uniform buffer binding points",
+            span,
+        )
+        .then_some(v)
     }
 
     /// `out gl_PerVertex { ... };` (GLSL 1.50 §7.1): the built-in output
@@ -611,6 +634,7 @@ impl Analyzer {
             interpolation: member.and_then(|m| m.interpolation),
             location: None,
             index: None,
+            binding: None,
             block: Some(block),
             init: None,
             init_expr: None,
@@ -653,6 +677,7 @@ impl Analyzer {
                         }
                         let bad = l.location.is_some()
                             || l.block_layout.is_some()
+                            || l.binding.is_some()
                             || l.origin_upper_left.is_some()
                             || l.pixel_center_integer.is_some()
                             || !l.geometry.is_empty()

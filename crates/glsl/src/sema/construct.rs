@@ -104,6 +104,123 @@ impl Analyzer {
         self.fold(mk(K::Construct { args: args_out }, ty, span))
     }
 
+    /// An initializer (GLSL 4.20 §4.1.11, GL_ARB_shading_language_420pack)
+    /// for a variable of type `ty`: an expression, converted as an
+    /// assignment would be, or a brace-enclosed list that must match the
+    /// aggregate exactly, one initializer per vector component, matrix
+    /// column, array element or struct member, each applied in turn (a
+    /// nested list to the element it initializes). An unsized array takes
+    /// its size from the list. The result is the constructor the list
+    /// stands for, folded when every initializer is constant.
+    pub(super) fn initializer(&mut self, ty: Type, init: &ast::Expr, what: &str) -> ir::Expr {
+        let span = init.span;
+        let ast::ExprKind::InitList(items) = &init.kind else {
+            let v = self.rvalue(init);
+            let ty = match ty.array {
+                Some(ArraySize::Unsized) if v.ty.is_array() && v.ty.base == ty.base => v.ty,
+                _ => ty,
+            };
+            return self.coerce(v, ty, span, what);
+        };
+        if !self.require(
+            crate::lang::Feature::LanguagePack420,
+            "an initializer list `{...}'",
+            span,
+        ) || ty.is_error()
+        {
+            return error_expr(span);
+        }
+        let tn = self.tn(ty);
+        let mut ty = ty;
+        // The type each initializer of the list initializes, and how the
+        // value is wrapped (the row struct of an array of arrays).
+        let (parts, row_of): (Vec<(Type, String)>, Option<Type>) = if ty.is_array() {
+            let et = ty.element();
+            let n = match ty.array {
+                Some(ArraySize::Sized(n)) => n as usize,
+                _ => {
+                    ty = et.array_of(ArraySize::Sized(items.len() as u32));
+                    items.len()
+                }
+            };
+            let row = self.array_row_member(et);
+            let part = row.unwrap_or(et);
+            (vec![(part, "element".into()); n], row.map(|_| et))
+        } else {
+            match ty.base {
+                Base::Vector(s, n) => (
+                    vec![(Type::vec(s, 1), "component".into()); n as usize],
+                    None,
+                ),
+                Base::Matrix { cols, rows } => (
+                    vec![
+                        (
+                            Type::vec(crate::types::Scalar::Float, rows),
+                            "column".into()
+                        );
+                        cols as usize
+                    ],
+                    None,
+                ),
+                Base::Struct(id) => {
+                    let members = self
+                        .module
+                        .structs
+                        .get(id.0 as usize)
+                        .map(|s| s.members.clone())
+                        .unwrap_or_default();
+                    (
+                        members
+                            .iter()
+                            .map(|m| (m.ty, format!("member `{}'", m.name)))
+                            .collect(),
+                        None,
+                    )
+                }
+                _ => {
+                    self.error(
+                        Code::BadConstructor,
+                        span,
+                        format!("an initializer list needs a vector, matrix, array or struct; `{tn}' is none"),
+                    )
+                    .notes
+                    .push("initialize it with an expression".into());
+                    return error_expr(span);
+                }
+            }
+        };
+        if parts.len() != items.len() {
+            let unit = parts.first().map_or("initializer", |(_, u)| {
+                u.split_whitespace().next().unwrap_or("initializer")
+            });
+            self.error(
+                Code::BadConstructor,
+                span,
+                format!(
+                    "the initializer list of `{tn}' has {} initializers, expected {} (one per {unit})",
+                    items.len(),
+                    parts.len()
+                ),
+            )
+            .notes
+            .push("an initializer list must initialize every part of its aggregate exactly once".into());
+            return error_expr(span);
+        }
+        let mut args = Vec::new();
+        for ((part, unit), item) in parts.iter().zip(items) {
+            let what = format!("cannot initialize {unit} of {tn} (type {})", self.tn(*part));
+            let v = self.initializer(*part, item, &what);
+            if v.ty.is_error() {
+                return error_expr(span);
+            }
+            args.push(match row_of {
+                Some(et) => self.fold(mk(K::Construct { args: vec![v] }, et, item.span)),
+                None => v,
+            });
+        }
+        self.fold(mk(K::Construct { args }, ty, span))
+    }
+
     /// Argument checks of scalar, vector and matrix constructors.
     pub(super) fn check_basic_ctor(&mut self, ty: Type, vals: &[ir::Expr], span: Span) -> bool {
         let tn = self.tn(ty);

@@ -345,20 +345,14 @@ impl Analyzer {
             );
         }
         // The variable is not visible in its own initializer (§4.2.2).
-        let init = d.init.as_ref().map(|e| {
-            let v = self.rvalue(e);
-            (v, e.span)
-        });
-        let mut init = match init {
-            Some((v, sp)) => {
-                if ty.array == Some(ArraySize::Unsized) && v.ty.is_array() && v.ty.base == ty.base {
-                    ty = v.ty;
-                }
-                let what = format!("cannot initialize `{name}' of type {}", self.tn(ty));
-                Some(self.coerce(v, ty, sp, &what))
+        let mut init = d.init.as_ref().map(|e| {
+            let what = format!("cannot initialize `{name}' of type {}", self.tn(ty));
+            let v = self.initializer(ty, e, &what);
+            if ty.array == Some(ArraySize::Unsized) && v.ty.is_array() && v.ty.base == ty.base {
+                ty = v.ty;
             }
-            None => None,
-        };
+            v
+        });
         let is_const = q.storage == Some(Qualifier::Const);
         let mut value = None;
         if is_const {
@@ -373,6 +367,11 @@ impl Analyzer {
                 Some(e) if e.ty.is_error() => {}
                 Some(e) => match &e.kind {
                     ExprKind::Const(c) => value = Some(c.clone()),
+                    // GL_ARB_shading_language_420pack: a `const' local
+                    // may be initialized by any expression; it is then a
+                    // read-only variable, not a constant (GLSL 4.20 §4.3.3).
+                    _ if !self.scopes.is_global()
+                        && self.lang.allows(crate::lang::Feature::LanguagePack420) => {}
                     _ => {
                         self.error(Code::NotConstant, e.span, format!("initializer of `const' `{name}' is not a constant expression"))
                             .notes
@@ -445,6 +444,7 @@ impl Analyzer {
         if self.scopes.is_global() {
             let storage = self.global_storage(q);
             let (location, index) = self.check_var_layout(q, &name);
+            let binding = self.var_binding(q, ty);
             let id = ir::GlobalId(self.module.globals.len() as u32);
             let init_expr = match (&value, storage) {
                 (None, Storage::Private) => init,
@@ -460,6 +460,7 @@ impl Analyzer {
                 interpolation: q.interpolation.map(|(i, _)| i),
                 location,
                 index,
+                binding,
                 block: None,
                 init: value,
                 init_expr,

@@ -163,6 +163,16 @@ impl Analyzer {
                 self.construct(ty, args, span)
             }
             A::Method(b, name, args) => self.method(b, name, args, span),
+            A::InitList(_) => {
+                // The parser makes lists only as initializers, which
+                // `declarator` analyzes against their variable's type.
+                self.error(
+                    Code::Syntax,
+                    span,
+                    "an initializer list `{...}' is only allowed as the initializer of a declaration",
+                );
+                error_expr(span)
+            }
         }
     }
 

@@ -24,8 +24,12 @@ impl Analyzer {
         let mut q = None;
         let mut is_const = false;
         let mut precision: Option<Span> = None;
+        // GL_ARB_shading_language_420pack §4.11: parameter qualifiers in
+        // any order, each at most once.
+        let any_order = self.lang.allows(crate::lang::Feature::LanguagePack420);
         for sq in &p.qualifiers {
-            if let Some(prec) = precision.filter(|_| !sq.qualifier.is_precision()) {
+            let misplaced = precision.filter(|_| !any_order && !sq.qualifier.is_precision());
+            if let Some(prec) = misplaced {
                 // GLSL 1.30 §4.7: the precision qualifier comes last.
                 self.error(
                     Code::BadQualifier,
@@ -42,11 +46,23 @@ impl Analyzer {
                     self.precision_qualifier(sq, &mut precision);
                 }
                 Qualifier::Const => {
-                    if q.is_some() || is_const {
+                    if is_const {
+                        self.error(Code::BadQualifier, sq.span, "`const' given twice");
+                    } else if q.is_some() && !any_order {
                         self.error(
                             Code::BadQualifier,
                             sq.span,
-                            "`const' must come first and only once",
+                            "`const' must come before `in', `out' or `inout'",
+                        )
+                        .notes
+                        .push(
+                            "GL_ARB_shading_language_420pack allows qualifiers in any order".into(),
+                        );
+                    } else if q.is_some_and(|q| q != ParamQualifier::In) {
+                        self.error(
+                            Code::BadQualifier,
+                            sq.span,
+                            "a const parameter cannot be written: `const' with `out' or `inout'",
                         );
                     }
                     is_const = true;

@@ -27,6 +27,9 @@ pub(crate) struct LayoutQuals {
     pub row_major: Option<(bool, Span)>,
     pub origin_upper_left: Option<Span>,
     pub pixel_center_integer: Option<Span>,
+    /// `binding = N` (GL_ARB_shading_language_420pack): samplers and
+    /// uniform blocks.
+    pub binding: Option<(u32, Span)>,
     /// Geometry-shader identifiers (`triangles`, `max_vertices`...) in
     /// order, with the value of `max_vertices`: only `layout(...) in;` and
     /// `layout(...) out;` of a geometry shader take them
@@ -106,7 +109,10 @@ impl Analyzer {
         let mut q = VarQuals::default();
         let global = self.scopes.is_global();
         let mut highest: Option<&SpannedQualifier> = None;
-        let mut order_reported = false;
+        // GL_ARB_shading_language_420pack §4.11: any order, one of each
+        // class (the checks below), `layout` repeated.
+        let any_order = self.lang.allows(Feature::LanguagePack420);
+        let mut order_reported = any_order;
         for (i, sq) in quals.iter().enumerate() {
             let name = sq.qualifier.as_str();
             if let Some(h) = highest {
@@ -171,11 +177,22 @@ impl Analyzer {
                 Qualifier::Centroid => {
                     let next = quals.get(i + 1).map(|n| n.qualifier);
                     let stage_io = self.lang.allows(Feature::StageInOut);
-                    let ok = match next {
-                        Some(Qualifier::Varying) => true,
-                        Some(Qualifier::In | Qualifier::Out) => stage_io,
+                    let io = |q: Qualifier| match q {
+                        Qualifier::Varying => true,
+                        Qualifier::In | Qualifier::Out => stage_io,
                         _ => false,
                     };
+                    // An auxiliary storage qualifier: with
+                    // GL_ARB_shading_language_420pack anywhere among
+                    // the qualifiers of an input or output.
+                    let ok = if any_order {
+                        quals.iter().any(|o| io(o.qualifier))
+                    } else {
+                        next.is_some_and(io)
+                    };
+                    if q.centroid {
+                        self.error(Code::BadQualifier, sq.span, "`centroid' given twice");
+                    }
                     if !ok {
                         let msg = if stage_io {
                             "`centroid' must be followed by `in', `out' or `varying'"
@@ -239,6 +256,15 @@ impl Analyzer {
                             "`layout' qualifiers are only allowed at global scope",
                         );
                         continue;
+                    }
+                    if q.layout.span.is_some() && !any_order {
+                        self.error(
+                            Code::BadQualifier,
+                            sq.span,
+                            "only one `layout(...)' qualifier is allowed here",
+                        )
+                        .notes
+                        .push("put every identifier in one `layout(...)', or enable GL_ARB_shading_language_420pack, which allows several".into());
                     }
                     self.layout_ids(sq, &mut q.layout);
                 }
@@ -459,7 +485,10 @@ impl Analyzer {
         // GLSL 1.50 §4.3.8: layout identifiers are not case sensitive.
         let lower = id.name.name.to_ascii_lowercase();
         let span = id.span;
-        let takes_value = matches!(lower.as_str(), "location" | "index" | "max_vertices");
+        let takes_value = matches!(
+            lower.as_str(),
+            "location" | "index" | "max_vertices" | "binding"
+        );
         if takes_value && id.value.is_none() {
             self.error(
                 Code::BadQualifier,
@@ -501,6 +530,16 @@ impl Analyzer {
                         self.error(Code::BadQualifier, span, "`index' must be 0 or 1");
                     }
                     out.index = Some((v.min(1), span));
+                }
+            }
+            "binding" => {
+                // Which declarations may take it is judged by the
+                // declaration (`var_binding`, uniform blocks).
+                if !self.require(Feature::LanguagePack420, "`layout(binding)'", span) {
+                    return;
+                }
+                if let Some(v) = id.value.as_ref().and_then(|e| self.layout_value(e)) {
+                    out.binding = Some((v, span));
                 }
             }
             "std140" | "shared" | "packed" => {
@@ -576,6 +615,55 @@ impl Analyzer {
 
     /// Reports layout identifiers a variable declaration may not have and
     /// returns its location and (fragment outputs) index.
+    /// `layout(binding = N)` of a variable of type `ty`: only uniform
+    /// samplers (and arrays of them) take it, within the texture units
+    /// (every element of an array, GL_ARB_shading_language_420pack).
+    pub(crate) fn var_binding(&mut self, q: &VarQuals, ty: Type) -> Option<u32> {
+        let (v, span) = q.layout.binding?;
+        let (leaf, n) = self.array_leaf(ty);
+        if q.storage != Some(Qualifier::Uniform) || !leaf.is_sampler() {
+            self.error(
+                Code::BadQualifier,
+                span,
+                "`binding' is only allowed on uniform samplers and uniform blocks",
+            );
+            return None;
+        }
+        self.binding_in_range(
+            v,
+            n,
+            crate::limits::MAX_COMBINED_TEXTURE_IMAGE_UNITS,
+            "texture units",
+            span,
+        )
+        .then_some(v)
+    }
+
+    /// Whether bindings `first..first + count` are all below `max`;
+    /// reports the error when not.
+    pub(crate) fn binding_in_range(
+        &mut self,
+        first: u32,
+        count: u32,
+        max: u32,
+        what: &str,
+        span: Span,
+    ) -> bool {
+        if u64::from(first) + u64::from(count.max(1)) <= u64::from(max) {
+            return true;
+        }
+        let msg = if count > 1 {
+            format!("`binding = {first}' for {count} elements needs bindings up to {}, but there are {max} {what} (0 to {})", u64::from(first) + u64::from(count) - 1, max - 1)
+        } else {
+            format!(
+                "`binding = {first}' is out of range: there are {max} {what} (0 to {})",
+                max - 1
+            )
+        };
+        self.error(Code::BadQualifier, span, msg);
+        false
+    }
+
     pub(crate) fn check_var_layout(
         &mut self,
         q: &VarQuals,
@@ -727,6 +815,7 @@ impl Analyzer {
         match q.storage {
             Some(Qualifier::Uniform) if l.span.is_some() => {
                 if l.location.is_some()
+                    || l.binding.is_some()
                     || l.origin_upper_left.is_some()
                     || l.pixel_center_integer.is_some()
                     || !l.geometry.is_empty()

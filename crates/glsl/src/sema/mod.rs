@@ -733,6 +733,8 @@ mod ext_geometry_tests;
 #[cfg(test)]
 mod geometry_tests;
 #[cfg(test)]
+mod pack420_tests;
+#[cfg(test)]
 mod per_vertex_in_tests;
 #[cfg(test)]
 mod tests;

@@ -269,6 +269,22 @@ impl Analyzer {
         self.module.row_member(ty)
     }
 
+    /// The innermost element type of an array (of arrays) and how many
+    /// of them it holds: `(sampler2D, 8)` for `sampler2D t[2][2][2]`,
+    /// `(ty, 1)` for a type that is not an array. An unsized dimension
+    /// counts 1.
+    pub(crate) fn array_leaf(&self, mut ty: Type) -> (Type, u32) {
+        let mut count = 1u32;
+        while let Some(size) = ty.array {
+            if let ArraySize::Sized(n) = size {
+                count = count.saturating_mul(n);
+            }
+            let et = ty.element();
+            ty = self.array_row_member(et).unwrap_or(et);
+        }
+        (ty, count)
+    }
+
     /// Declares a struct type (GLSL 1.20 §4.1.8) in the current scope.
     pub fn declare_struct(&mut self, s: &StructSpecifier) -> StructId {
         let mut members: Vec<StructMember> = Vec::new();

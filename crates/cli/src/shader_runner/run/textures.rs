@@ -23,6 +23,16 @@ impl<G: GlApi> Runner<'_, G> {
     }
 
     /// Makes the texture a `texture ...` command asks for.
+    /// Enables fixed-function texturing of `target` as piglit's
+    /// `shader_runner` does after making a texture, on compatibility
+    /// contexts only (core ones have no such capability and would raise
+    /// GL_INVALID_ENUM).
+    fn enable_fixed_texture(&mut self, target: u32) {
+        if !self.core {
+            self.gl.enable(target);
+        }
+    }
+
     pub(super) fn texture(&mut self, t: &TextureCommand) {
         let nearest = [
             (GL_TEXTURE_MAG_FILTER, GL_NEAREST),
@@ -56,7 +66,7 @@ impl<G: GlApi> Runner<'_, G> {
                     GL_FLOAT,
                     &img,
                 );
-                self.gl.enable(GL_TEXTURE_2D);
+                self.enable_fixed_texture(GL_TEXTURE_2D);
             }
             TextureCommand::Rgbw1d { unit } => {
                 self.new_texture(unit, GL_TEXTURE_1D);
@@ -111,7 +121,7 @@ impl<G: GlApi> Runner<'_, G> {
                         &img,
                     );
                 }
-                self.gl.enable(GL_TEXTURE_2D);
+                self.enable_fixed_texture(GL_TEXTURE_2D);
             }
             TextureCommand::Checkerboard {
                 unit,
@@ -184,7 +194,7 @@ impl<G: GlApi> Runner<'_, G> {
                     ],
                 );
                 if target == GL_TEXTURE_2D {
-                    self.gl.enable(GL_TEXTURE_2D);
+                    self.enable_fixed_texture(GL_TEXTURE_2D);
                 }
             }
             TextureCommand::Array {
@@ -314,6 +324,6 @@ impl<G: GlApi> Runner<'_, G> {
             GL_FLOAT,
             img,
         );
-        self.gl.enable(GL_TEXTURE_2D);
+        self.enable_fixed_texture(GL_TEXTURE_2D);
     }
 }
