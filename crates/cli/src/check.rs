@@ -120,6 +120,7 @@ pub enum StageArg {
     Vertex,
     Geometry,
     Fragment,
+    Compute,
 }
 
 impl From<StageArg> for Stage {
@@ -128,6 +129,7 @@ impl From<StageArg> for Stage {
             StageArg::Vertex => Stage::Vertex,
             StageArg::Geometry => Stage::Geometry,
             StageArg::Fragment => Stage::Fragment,
+            StageArg::Compute => Stage::Compute,
         }
     }
 }

@@ -23,9 +23,9 @@
 //! The verdict: the test passes when "compiled (and, with `--check-link`,
 //! linked on its own into a program)" equals "expected pass". It is
 //! skipped when it needs what shaderbox does not have: a GLSL version
-//! other than 1.10 and 1.20 (GLSL ES included), a stage other than vertex
-//! and fragment, a GL extension outside `SUPPORTED_EXTENSIONS`, or shader
-//! includes.
+//! other than 1.10 to 3.30 (GLSL ES included), a tessellation stage, a GL
+//! extension outside `SUPPORTED_EXTENSIONS` (or the absence of one in
+//! it), or shader includes.
 
 use crate::guard::guarded;
 use crate::input::{read_source, stage_from_path, StageGuess};
@@ -52,6 +52,7 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "GL_ARB_texture_cube_map_array",
     "GL_ARB_shading_language_420pack",
     "GL_ARB_separate_shader_objects",
+    "GL_ARB_compute_shader",
 ];
 
 /// Whether a test of GLSL `version` can use extension `name`: one of
@@ -68,7 +69,7 @@ const COMPATIBILITY: &str = "GL_ARB_compatibility";
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// The shader: .vert, .geom or .frag (.tesc, .tese and .comp are
+    /// The shader: .vert, .geom, .frag or .comp (.tesc and .tese are
     /// skipped).
     #[arg(value_name = "FILE")]
     pub file: PathBuf,
@@ -476,7 +477,10 @@ mod tests {
         assert!(!supported("GL_EXT_texture_array", Version::V120));
         assert!(supported("GL_EXT_texture_array", Version::V130));
         assert!(supported("GL_ARB_shading_language_420pack", Version::V120));
-        assert!(!supported("GL_ARB_shader_storage_buffer_object", Version::V330));
+        assert!(!supported(
+            "GL_ARB_shader_storage_buffer_object",
+            Version::V330
+        ));
     }
 
     #[test]
@@ -533,7 +537,7 @@ mod tests {
     fn skips_and_usage_failures_before_reading_the_file() {
         // None of these files exist: the verdict comes before reading.
         let e = |a: Args| evaluate(&a).verdict;
-        assert_eq!(e(args("/none/t.comp", "1.20", &[])), Verdict::Skip);
+        assert_eq!(e(args("/none/t.tesc", "1.20", &[])), Verdict::Skip);
         assert_eq!(e(args("/none/t.vert", "3.00 es", &[])), Verdict::Skip);
         assert_eq!(e(args("/none/t.vert", "4.00", &[])), Verdict::Skip);
         assert_eq!(

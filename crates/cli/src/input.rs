@@ -15,8 +15,8 @@ pub enum StageGuess {
 }
 
 /// The stage from the file extension: `.vert`/`.vs` are vertex shaders,
-/// `.geom`/`.gs` geometry shaders, `.frag`/`.fs` fragment shaders
-/// (case-sensitive, as piglit's are).
+/// `.geom`/`.gs` geometry shaders, `.frag`/`.fs` fragment shaders,
+/// `.comp` compute shaders (case-sensitive, as piglit's are).
 pub fn stage_from_path(path: &Path) -> StageGuess {
     match path.extension().and_then(|e| e.to_str()) {
         Some("vert" | "vs") => StageGuess::Known(Stage::Vertex),
@@ -24,7 +24,7 @@ pub fn stage_from_path(path: &Path) -> StageGuess {
         Some("geom" | "gs") => StageGuess::Known(Stage::Geometry),
         Some("tesc") => StageGuess::Unsupported("tessellation control"),
         Some("tese") => StageGuess::Unsupported("tessellation evaluation"),
-        Some("comp") => StageGuess::Unsupported("compute"),
+        Some("comp") => StageGuess::Known(Stage::Compute),
         _ => StageGuess::Unknown,
     }
 }
@@ -65,7 +65,8 @@ mod tests {
         assert_eq!(g("b.fs"), StageGuess::Known(Stage::Fragment));
         assert_eq!(g("b.geom"), StageGuess::Known(Stage::Geometry));
         assert_eq!(g("b.gs"), StageGuess::Known(Stage::Geometry));
-        assert_eq!(g("b.comp"), StageGuess::Unsupported("compute"));
+        assert_eq!(g("b.comp"), StageGuess::Known(Stage::Compute));
+        assert_eq!(g("b.tesc"), StageGuess::Unsupported("tessellation control"));
         assert_eq!(g("b.glsl"), StageGuess::Unknown);
         assert_eq!(g("frag"), StageGuess::Unknown);
         assert_eq!(g("b.FRAG"), StageGuess::Unknown);

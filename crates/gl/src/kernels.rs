@@ -26,11 +26,17 @@ impl Kernels {
     pub fn new(program: &glsl::link::Program) -> Result<Kernels, String> {
         let mut k = Kernels::default();
         for s in &program.stages {
+            // The GL layer takes no GL_COMPUTE_SHADER objects yet, so a
+            // compute stage only comes from a caller of this crate.
+            if s.stage == Stage::Compute {
+                return Err("compute shaders cannot be dispatched by this implementation".into());
+            }
             let kernel = Arc::new(exec::Kernel::new(s).map_err(|e| e.to_string())?);
             match s.stage {
                 Stage::Vertex => k.vs = Some(kernel),
                 Stage::Fragment => k.fs = Some(kernel),
                 Stage::Geometry => k.gs = Some(kernel),
+                Stage::Compute => {}
             }
         }
         Ok(k)

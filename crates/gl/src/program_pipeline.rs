@@ -54,11 +54,14 @@ pub const STAGES: [Stage; 3] = [Stage::Vertex, Stage::Geometry, Stage::Fragment]
 /// GL_TESS_CONTROL_SHADER_BIT | GL_TESS_EVALUATION_SHADER_BIT.
 const TESS_BITS: u32 = GL_TESS_CONTROL_SHADER_BIT | GL_TESS_EVALUATION_SHADER_BIT;
 
-fn stage_index(stage: Stage) -> usize {
+/// The index of `stage` in [`STAGES`]; a compute stage has none (no
+/// pipeline holds one yet).
+fn stage_index(stage: Stage) -> Option<usize> {
     match stage {
-        Stage::Vertex => 0,
-        Stage::Geometry => 1,
-        Stage::Fragment => 2,
+        Stage::Vertex => Some(0),
+        Stage::Geometry => Some(1),
+        Stage::Fragment => Some(2),
+        Stage::Compute => None,
     }
 }
 
@@ -67,6 +70,7 @@ fn stage_bit(stage: Stage) -> u32 {
         Stage::Vertex => GL_VERTEX_SHADER_BIT,
         Stage::Geometry => GL_GEOMETRY_SHADER_BIT,
         Stage::Fragment => GL_FRAGMENT_SHADER_BIT,
+        Stage::Compute => GL_COMPUTE_SHADER_BIT,
     }
 }
 
@@ -139,12 +143,15 @@ impl Context {
         if self.current_program != 0 {
             return self.current_program;
         }
+        let Some(i) = stage_index(stage) else {
+            return 0;
+        };
         if let Some(b) = self.pipelines.ext.filter(ExtBindings::any) {
-            return b.stages[stage_index(stage)];
+            return b.stages[i];
         }
         self.pipelines
             .get(self.pipelines.bound)
-            .map_or(0, |p| p.stages[stage_index(stage)])
+            .map_or(0, |p| p.stages[i])
     }
 
     /// The executable active for `stage`: the linked executable of the
@@ -166,6 +173,7 @@ impl Context {
                 Stage::Vertex => kernels.vs.as_deref(),
                 Stage::Geometry => kernels.gs.as_deref(),
                 Stage::Fragment => kernels.fs.as_deref(),
+                Stage::Compute => None,
             };
             own.is_some_and(|o| std::ptr::eq(o, k)).then_some(e)
         })
@@ -521,8 +529,7 @@ impl Context {
                 return Some(format!("program {prog}: {why}"));
             }
         }
-        if p.stages[stage_index(Stage::Geometry)] != 0 && p.stages[stage_index(Stage::Vertex)] == 0
-        {
+        if p.stages[1] != 0 && p.stages[0] == 0 {
             return Some("the pipeline has a geometry stage but no vertex stage".into());
         }
         None

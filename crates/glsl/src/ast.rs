@@ -50,6 +50,8 @@ pub enum Qualifier {
     Highp,
     /// `layout(...)`: its identifiers are in [`SpannedQualifier::layout`].
     Layout,
+    /// `shared` (GL_ARB_compute_shader): a variable of the work group.
+    Shared,
 }
 
 impl Qualifier {
@@ -71,6 +73,7 @@ impl Qualifier {
             Qualifier::Mediump => "mediump",
             Qualifier::Highp => "highp",
             Qualifier::Layout => "layout",
+            Qualifier::Shared => "shared",
         }
     }
 

@@ -191,6 +191,42 @@ builtin_fns! {
     // §8.10 geometry shader functions (1.50, GL_EXT_geometry_shader4)
     EmitVertex = "EmitVertex";
     EndPrimitive = "EndPrimitive";
+    // GL_ARB_compute_shader (GLSL 4.30 §8.15, §8.16): barriers and the
+    // atomic memory functions on `shared` variables.
+    Barrier = "barrier";
+    MemoryBarrier = "memoryBarrier";
+    MemoryBarrierAtomicCounter = "memoryBarrierAtomicCounter";
+    MemoryBarrierBuffer = "memoryBarrierBuffer";
+    MemoryBarrierImage = "memoryBarrierImage";
+    MemoryBarrierShared = "memoryBarrierShared";
+    GroupMemoryBarrier = "groupMemoryBarrier";
+    AtomicAdd = "atomicAdd";
+    AtomicMin = "atomicMin";
+    AtomicMax = "atomicMax";
+    AtomicAnd = "atomicAnd";
+    AtomicOr = "atomicOr";
+    AtomicXor = "atomicXor";
+    AtomicExchange = "atomicExchange";
+    AtomicCompSwap = "atomicCompSwap";
+}
+
+impl BuiltinFn {
+    /// The atomic memory functions, whose first argument is the memory
+    /// they update.
+    pub fn is_atomic(self) -> bool {
+        use BuiltinFn as B;
+        matches!(
+            self,
+            B::AtomicAdd
+                | B::AtomicMin
+                | B::AtomicMax
+                | B::AtomicAnd
+                | B::AtomicOr
+                | B::AtomicXor
+                | B::AtomicExchange
+                | B::AtomicCompSwap
+        )
+    }
 }
 
 #[cfg(test)]

@@ -60,10 +60,13 @@ use serde::Serialize;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 pub enum Stage {
     Vertex,
-    /// GLSL 1.50 §2.2, and GL_EXT/ARB_geometry_shader4 on 1.10/1.20. The
-    /// front end compiles and links it; nothing runs it yet.
+    /// GLSL 1.50 §2.2, and GL_EXT/ARB_geometry_shader4 on 1.10/1.20.
     Geometry,
     Fragment,
+    /// GL_ARB_compute_shader (GLSL 4.30 §2.6): a program of its own,
+    /// run in work groups by a dispatch rather than by drawing. The front
+    /// end compiles and links it; the GL layer does not dispatch it yet.
+    Compute,
 }
 
 impl Stage {
@@ -72,6 +75,7 @@ impl Stage {
             Stage::Vertex => "vertex",
             Stage::Geometry => "geometry",
             Stage::Fragment => "fragment",
+            Stage::Compute => "compute",
         }
     }
 }
@@ -126,6 +130,10 @@ pub enum Storage {
     /// the vertex stage's output of the element type. Also the built-ins
     /// `gl_in[]`, `gl_PrimitiveIDIn` and the EXT form's `gl_PositionIn[]`...
     GeometryInput,
+    /// A `shared` variable of a compute shader (GL_ARB_compute_shader,
+    /// GLSL 4.30 §4.3.8): one per work group, read and written by all of
+    /// its invocations.
+    Shared,
     /// A user-declared fragment output (`out` in a fragment shader, GLSL
     /// 1.30 §4.3.6): written like a private global, its value goes to the
     /// draw buffer of [`Global::location`] (0 when absent and it is the
@@ -706,6 +714,11 @@ pub struct Module {
     pub frag_coord: FragCoordConventions,
     /// A geometry shader's layouts (all `None` in other stages).
     pub geometry: GeometryLayout,
+    /// A compute shader's work-group size, `layout(local_size_x = X,
+    /// local_size_y = Y, local_size_z = Z) in;` (each 1 when left out),
+    /// when the object declares it (GL_ARB_compute_shader).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub local_size: Option<[u32; 3]>,
     /// The members of a redeclared output `gl_PerVertex` block (GLSL 1.50
     /// §7.1), in order; `None` when the shader keeps the built-in block.
     /// The members stay the built-in globals; the linker checks that the
@@ -849,6 +862,7 @@ impl Module {
             blocks: Vec::new(),
             frag_coord: Default::default(),
             geometry: Default::default(),
+            local_size: None,
             per_vertex_out: None,
             per_vertex_in: None,
         }

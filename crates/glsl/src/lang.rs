@@ -182,6 +182,11 @@ extensions! {
     // implementation for GLSL 1.30, which the 3.3 contexts offering it
     // have, so shaders of every version may enable it (as Mesa offers it).
     ArbShadingLanguage420pack = "GL_ARB_shading_language_420pack";
+    // Compute shaders: the stage, `layout(local_size_*) in;`, `shared`
+    // variables, their built-ins and the barrier and atomic functions.
+    // Written against GLSL 4.20, which no version here reaches: shaders
+    // of every version may enable it (as Mesa offers it to 3.3 ones).
+    ArbComputeShader = "GL_ARB_compute_shader";
 }
 
 impl Extension {
@@ -290,6 +295,8 @@ pub enum Feature {
     /// values, qualifiers in any order and repeated `layout`s, `const`
     /// parameters after other parameter qualifiers, `layout(binding)`.
     LanguagePack420,
+    /// The compute stage and its `shared` variables (GL_ARB_compute_shader).
+    ComputeShader,
 }
 
 /// Why a feature is not available to a shader.
@@ -444,6 +451,10 @@ impl Language {
             Feature::ArraysOfArrays => self.only_with(Extension::ArbArraysOfArrays),
             Feature::VaryingLocation => self.only_with(Extension::ArbSeparateShaderObjects),
             Feature::LanguagePack420 => self.only_with(Extension::ArbShadingLanguage420pack),
+            // Its built-ins are `uvec3`s: GLSL 1.30 on, with the extension.
+            Feature::ComputeShader => {
+                since(Version::V130).and_then(|()| self.only_with(Extension::ArbComputeShader))
+            }
             Feature::CompatibilityInterface => {
                 if self.version >= Version::V140 && self.profile == Profile::Core {
                     Err(Unavailable::RemovedInCore(Version::V140))

@@ -16,6 +16,19 @@ pub const MAX_UNIFORM_BUFFER_BINDINGS: u32 = 36;
 pub const MIN_PROGRAM_TEXEL_OFFSET: i32 = -8;
 pub const MAX_PROGRAM_TEXEL_OFFSET: i32 = 7;
 
+/// GL_ARB_compute_shader's limits (its minimums, which llvmpipe's exceed
+/// only in the counts of work groups): GL_MAX_COMPUTE_WORK_GROUP_COUNT
+/// per dimension, GL_MAX_COMPUTE_WORK_GROUP_SIZE per dimension,
+/// GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS (their product's bound),
+/// GL_MAX_COMPUTE_UNIFORM_COMPONENTS, GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS,
+/// GL_MAX_COMPUTE_SHARED_MEMORY_SIZE (bytes).
+pub const MAX_COMPUTE_WORK_GROUP_COUNT: [u32; 3] = [65535, 65535, 65535];
+pub const MAX_COMPUTE_WORK_GROUP_SIZE: [u32; 3] = [1024, 1024, 64];
+pub const MAX_COMPUTE_WORK_GROUP_INVOCATIONS: u32 = 1024;
+pub const MAX_COMPUTE_UNIFORM_COMPONENTS: u32 = 1024;
+pub const MAX_COMPUTE_TEXTURE_IMAGE_UNITS: u32 = 16;
+pub const MAX_COMPUTE_SHARED_MEMORY_SIZE: u32 = 32768;
+
 /// `gl_MaxLights` (minimum 8).
 pub const MAX_LIGHTS: u32 = 8;
 /// `gl_MaxClipPlanes` (minimum 6).

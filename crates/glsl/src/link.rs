@@ -167,8 +167,24 @@ pub fn link_with(shaders: &[&Shader], opts: &LinkOptions) -> Program {
     } else {
         Vec::new()
     };
+    // GL_ARB_compute_shader: a program with a compute shader has no other
+    // stage.
+    let compute = shaders.iter().any(|s| s.stage == Stage::Compute);
+    if compute && shaders.iter().any(|s| s.stage != Stage::Compute) {
+        push(
+            &mut diags,
+            None,
+            Code::LinkInterfaceMismatch,
+            "a program with a compute shader can have no other stage",
+        );
+    }
     if diags.is_empty() {
-        for stage in [Stage::Vertex, Stage::Geometry, Stage::Fragment] {
+        for stage in [
+            Stage::Vertex,
+            Stage::Geometry,
+            Stage::Fragment,
+            Stage::Compute,
+        ] {
             let objects: Vec<(usize, &Module)> = shaders
                 .iter()
                 .enumerate()

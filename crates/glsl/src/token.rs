@@ -117,6 +117,10 @@ keywords! {
     Usampler1DArray = "usampler1DArray" since V130;
     Usampler2DArray = "usampler2DArray" since V130;
     Layout = "layout" since V140;
+    // A storage qualifier of compute shaders (GL_ARB_compute_shader): a
+    // keyword only where that extension is enabled, `layout(shared)`'s
+    // identifier everywhere.
+    Shared = "shared" since V110;
     Sampler2DRect = "sampler2DRect" since V140;
     Sampler2DRectShadow = "sampler2DRectShadow" since V140;
     Isampler2DRect = "isampler2DRect" since V140;
@@ -252,6 +256,10 @@ pub fn classify(word: &str, lang: Language) -> WordClass {
         );
         if cube_array {
             if k.since() <= version && lang.has(Extension::ArbTextureCubeMapArray) {
+                return WordClass::Keyword(k);
+            }
+        } else if k == Keyword::Shared {
+            if lang.has(Extension::ArbComputeShader) {
                 return WordClass::Keyword(k);
             }
         } else if k.since() <= version || (k == Keyword::Layout && lang.has_layout_keyword()) {

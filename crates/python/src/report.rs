@@ -45,6 +45,7 @@ pub fn parse_stage(name: &str) -> Option<Stage> {
         "vertex" | "vert" | "vs" => Some(Stage::Vertex),
         "geometry" | "geom" | "gs" => Some(Stage::Geometry),
         "fragment" | "frag" | "fs" => Some(Stage::Fragment),
+        "compute" | "comp" | "cs" => Some(Stage::Compute),
         _ => None,
     }
 }
@@ -237,6 +238,7 @@ mod tests {
         assert_eq!(parse_stage("Vertex"), Some(Stage::Vertex));
         assert_eq!(parse_stage("frag"), Some(Stage::Fragment));
         assert_eq!(parse_stage("geometry"), Some(Stage::Geometry));
+        assert_eq!(parse_stage("comp"), Some(Stage::Compute));
         assert_eq!(parse_stage("tessellation"), None);
     }
 }

@@ -432,6 +432,8 @@ fn is_output(stage: Stage, g: &glsl::ir::Global) -> bool {
                         "gl_FragColor" | "gl_FragData" | "gl_FragDepth"
                     ))
         }
+        // A compute shader's results are the memory it writes.
+        Stage::Compute => false,
     }
 }
 
@@ -479,7 +481,8 @@ impl<'m> Lowerer<'m> {
             let is_input = match self.stage {
                 Stage::Vertex => g.storage == Storage::Attribute,
                 Stage::Geometry => g.storage == Storage::GeometryInput,
-                Stage::Fragment => g.storage == Storage::Varying,
+                // Compute invocations read their built-in IDs.
+                Stage::Fragment | Stage::Compute => g.storage == Storage::Varying,
             };
             let is_output = is_output(self.stage, g);
             let ks = kinds(g.ty, structs);

@@ -208,6 +208,22 @@ fn eval(f: BuiltinFn, args: &[ConstValue], result: Type) -> Option<Vec<ConstScal
             ])
         }
         Ftransform | Noise1 | Noise2 | Noise3 | Noise4 | EmitVertex | EndPrimitive => None,
+        // Side effects on memory and on the other invocations.
+        Barrier
+        | MemoryBarrier
+        | MemoryBarrierAtomicCounter
+        | MemoryBarrierBuffer
+        | MemoryBarrierImage
+        | MemoryBarrierShared
+        | GroupMemoryBarrier
+        | AtomicAdd
+        | AtomicMin
+        | AtomicMax
+        | AtomicAnd
+        | AtomicOr
+        | AtomicXor
+        | AtomicExchange
+        | AtomicCompSwap => None,
         Texture1D | Texture1DProj | Texture1DLod | Texture1DProjLod | Texture2D | Texture2DProj
         | Texture2DLod | Texture2DProjLod | Texture3D | Texture3DProj | Texture3DLod
         | Texture3DProjLod | TextureCube | TextureCubeLod | Shadow1D | Shadow2D | Shadow1DProj

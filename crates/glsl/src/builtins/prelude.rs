@@ -78,6 +78,7 @@ enum Stages {
     /// The vertex and geometry stages (the explicit-LOD lookups of
     /// 1.10/1.20, which GL_EXT_geometry_shader4 gives geometry shaders).
     VertexGeometry,
+    Compute,
 }
 
 /// Where a built-in exists: from `since`, up to but not including `until`,
@@ -161,6 +162,13 @@ impl Where {
         }
     }
 
+    const fn cs(self) -> Where {
+        Where {
+            stages: Stages::Compute,
+            ..self
+        }
+    }
+
     const fn fs(self) -> Where {
         Where {
             stages: Stages::Fragment,
@@ -183,7 +191,8 @@ impl Where {
                 Stages::Vertex => stage == Stage::Vertex,
                 Stages::Geometry => stage == Stage::Geometry,
                 Stages::Fragment => stage == Stage::Fragment,
-                Stages::VertexGeometry => stage != Stage::Fragment,
+                Stages::VertexGeometry => matches!(stage, Stage::Vertex | Stage::Geometry),
+                Stages::Compute => stage == Stage::Compute,
             }
             && (!self.compat_only || lang.allows(Feature::CompatibilityInterface))
             && (!self.core_only || !lang.allows(Feature::CompatibilityInterface))
@@ -213,6 +222,9 @@ enum Item {
     VerticesIn,
     /// Declarations written out.
     Text(&'static str),
+    /// GL_ARB_compute_shader's `gl_MaxCompute*` constants, from
+    /// [`limits`].
+    ComputeConstants,
 }
 
 /// Built-in constants (§7.4), uniform state (§7.5) and stage variables
@@ -222,6 +234,20 @@ const VARIABLES: &[(Where, Item)] = {
     use Item::{Const, Text};
     &[
         (COMPAT, Const("gl_MaxLights", limits::MAX_LIGHTS)),
+        // GL_ARB_compute_shader's constants (every stage) and the compute
+        // stage's inputs; `gl_WorkGroupSize` is the size the shader
+        // declares (`sema::compute`).
+        (COMPUTE_EXT, Item::ComputeConstants),
+        (
+            COMPUTE_EXT.cs(),
+            Text(
+                "in uvec3 gl_NumWorkGroups;
+in uvec3 gl_WorkGroupID;
+in uvec3 gl_LocalInvocationID;
+in uvec3 gl_GlobalInvocationID;
+in uint gl_LocalInvocationIndex;",
+            ),
+        ),
         // GL_ARB_shading_language_420pack's (GLSL 4.20's) texel offsets.
         (
             Where::ALL.needs(Extension::ArbShadingLanguage420pack),
@@ -1018,7 +1044,39 @@ const FUNCTIONS: &[(Where, &str)] = &[
     (Where::since(V150).gs(), "void EndPrimitive()"),
     (EXT_GS, "void EmitVertex()"),
     (EXT_GS, "void EndPrimitive()"),
+    // GL_ARB_compute_shader: barriers (GLSL 4.30 §8.15-8.16) and the
+    // atomic functions on shared variables (§8.11).
+    (COMPUTE_EXT.cs(), "void barrier()"),
+    (COMPUTE_EXT.cs(), "void memoryBarrier()"),
+    (COMPUTE_EXT.cs(), "void memoryBarrierAtomicCounter()"),
+    (COMPUTE_EXT.cs(), "void memoryBarrierBuffer()"),
+    (COMPUTE_EXT.cs(), "void memoryBarrierImage()"),
+    (COMPUTE_EXT.cs(), "void memoryBarrierShared()"),
+    (COMPUTE_EXT.cs(), "void groupMemoryBarrier()"),
+    (COMPUTE_EXT.cs(), "uint atomicAdd(inout uint, uint)"),
+    (COMPUTE_EXT.cs(), "int atomicAdd(inout int, int)"),
+    (COMPUTE_EXT.cs(), "uint atomicMin(inout uint, uint)"),
+    (COMPUTE_EXT.cs(), "int atomicMin(inout int, int)"),
+    (COMPUTE_EXT.cs(), "uint atomicMax(inout uint, uint)"),
+    (COMPUTE_EXT.cs(), "int atomicMax(inout int, int)"),
+    (COMPUTE_EXT.cs(), "uint atomicAnd(inout uint, uint)"),
+    (COMPUTE_EXT.cs(), "int atomicAnd(inout int, int)"),
+    (COMPUTE_EXT.cs(), "uint atomicOr(inout uint, uint)"),
+    (COMPUTE_EXT.cs(), "int atomicOr(inout int, int)"),
+    (COMPUTE_EXT.cs(), "uint atomicXor(inout uint, uint)"),
+    (COMPUTE_EXT.cs(), "int atomicXor(inout int, int)"),
+    (COMPUTE_EXT.cs(), "uint atomicExchange(inout uint, uint)"),
+    (COMPUTE_EXT.cs(), "int atomicExchange(inout int, int)"),
+    (
+        COMPUTE_EXT.cs(),
+        "uint atomicCompSwap(inout uint, uint, uint)",
+    ),
+    (COMPUTE_EXT.cs(), "int atomicCompSwap(inout int, int, int)"),
 ];
+
+/// GL_ARB_compute_shader's built-ins: GLSL 1.30 on (they are `uvec3`s and
+/// `ivec3`s), with the extension enabled.
+const COMPUTE_EXT: Where = Where::since(V130).needs(Extension::ArbComputeShader);
 
 /// GL_ARB_shader_texture_lod's lookups (see [`FUNCTIONS`]).
 const LOD_FS_ARB: Where = Where {
@@ -1302,6 +1360,22 @@ fn build(lang: Language, stage: Stage, input: InputPrimitive) -> String {
                 out.push_str(text);
                 out.push('\n');
             }
+            Item::ComputeConstants => {
+                let [cx, cy, cz] = limits::MAX_COMPUTE_WORK_GROUP_COUNT;
+                let [sx, sy, sz] = limits::MAX_COMPUTE_WORK_GROUP_SIZE;
+                let _ = writeln!(
+                    out,
+                    "const ivec3 gl_MaxComputeWorkGroupCount = ivec3({cx}, {cy}, {cz});
+const ivec3 gl_MaxComputeWorkGroupSize = ivec3({sx}, {sy}, {sz});
+const int gl_MaxComputeUniformComponents = {};
+const int gl_MaxComputeTextureImageUnits = {};
+const int gl_MaxComputeImageUniforms = 0;
+const int gl_MaxComputeAtomicCounters = 0;
+const int gl_MaxComputeAtomicCounterBuffers = 0;",
+                    limits::MAX_COMPUTE_UNIFORM_COMPONENTS,
+                    limits::MAX_COMPUTE_TEXTURE_IMAGE_UNITS
+                );
+            }
         }
     }
     out.push_str("// section 8 built-in functions\n");
@@ -1576,7 +1650,13 @@ mod tests {
                 e.extensions.set(Extension::ArbShaderTextureLod, true);
                 e.extensions.set(Extension::ArbShadingLanguagePacking, true);
                 e.extensions.set(Extension::ArbTextureCubeMapArray, true);
-                for s in [Stage::Vertex, Stage::Geometry, Stage::Fragment] {
+                e.extensions.set(Extension::ArbComputeShader, true);
+                for s in [
+                    Stage::Vertex,
+                    Stage::Geometry,
+                    Stage::Fragment,
+                    Stage::Compute,
+                ] {
                     out.push((l, s));
                     out.push((e, s));
                 }
@@ -1631,7 +1711,9 @@ mod tests {
     #[test]
     fn every_prototype_names_a_builtin_fn() {
         for (l, s) in every_language() {
-            for line in super::prelude(l, s).lines().filter(|l| l.ends_with(");")) {
+            // Prototypes; constants of vector type end in a constructor.
+            let prototypes = |l: &&str| l.ends_with(");") && !l.starts_with("const ");
+            for line in super::prelude(l, s).lines().filter(prototypes) {
                 let name = line
                     .split('(')
                     .next()

@@ -184,6 +184,9 @@ impl<'a> Printer<'a> {
             if let Some(l) = g.location {
                 let _ = write!(line, "layout(location = {l}) ");
             }
+            if let Some(b) = g.binding {
+                let _ = write!(line, "layout(binding = {b}) ");
+            }
             if g.centroid {
                 line.push_str("centroid ");
             }
@@ -195,6 +198,7 @@ impl<'a> Printer<'a> {
                 Storage::Varying => "varying ",
                 Storage::FragOutput => "out ",
                 Storage::GeometryInput => "in ",
+                Storage::Shared => "shared ",
             });
             let _ = write!(line, "{} {}", self.ty(g.ty), g.name);
             if let Some(c) = &g.init {

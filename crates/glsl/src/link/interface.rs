@@ -41,8 +41,8 @@ pub(super) fn check_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) 
             "fragment output",
         ),
         // Geometry inputs and outputs take no location before GLSL 4.10
-        // (GL_ARB_separate_shader_objects).
-        Stage::Geometry => return,
+        // (GL_ARB_separate_shader_objects); compute shaders have neither.
+        Stage::Geometry | Stage::Compute => return,
     };
     // Per `layout(index)` (0, or 1 for a second source colour).
     let mut used: [Vec<Option<&str>>; 2] = [vec![None; max as usize], vec![None; max as usize]];
@@ -274,6 +274,29 @@ pub(super) fn check_limits(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
                 limits::MAX_VARYING_FLOATS
             };
             limit("varying components", varyings, max);
+        }
+        Stage::Compute => {
+            limit(
+                "uniform components",
+                uniforms,
+                limits::MAX_COMPUTE_UNIFORM_COMPONENTS,
+            );
+            limit(
+                "samplers",
+                samplers,
+                limits::MAX_COMPUTE_TEXTURE_IMAGE_UNITS,
+            );
+            let shared: u32 = m
+                .globals
+                .iter()
+                .filter(|g| g.storage == Storage::Shared)
+                .map(|g| components(m, g.ty).saturating_mul(4))
+                .fold(0, u32::saturating_add);
+            limit(
+                "bytes of shared memory",
+                shared,
+                limits::MAX_COMPUTE_SHARED_MEMORY_SIZE,
+            );
         }
     }
 }

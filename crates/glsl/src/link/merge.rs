@@ -193,6 +193,23 @@ pub(super) fn merge_stage(
         }
         merge_blocks(&mut merged, m, &map, obj, diags, &mut errors);
         merge_geometry_layout(&mut merged.geometry, &m.geometry, obj, diags, &mut errors);
+        match (merged.local_size, m.local_size) {
+            (Some(a), Some(b)) if a != b => {
+                errors = true;
+                push(
+                    diags,
+                    Some(obj),
+                    Code::LinkInterfaceMismatch,
+                    format!(
+                        "the compute shader objects declare different work-group sizes ({} and {})",
+                        size_text(a),
+                        size_text(b)
+                    ),
+                );
+            }
+            (None, b) => merged.local_size = b,
+            _ => {}
+        }
         merge_frag_coord(
             &mut merged.frag_coord,
             &m.frag_coord,
@@ -413,6 +430,17 @@ pub(super) fn merge_stage(
     if stage == Stage::Geometry {
         errors |= !check_geometry_layout(&mut merged, diags);
     }
+    if stage == Stage::Compute && merged.local_size.is_none() {
+        // GL_ARB_compute_shader: "at least one ... must declare a fixed
+        // local group size".
+        errors = true;
+        push(
+            diags,
+            None,
+            Code::LinkInterfaceMismatch,
+            "no compute shader object declares its work-group size (`layout(local_size_x = 64) in;')",
+        );
+    }
 
     // Unsized arrays take their largest implicit size; an explicit size
     // elsewhere must cover every index used (§4.3, shared globals).
@@ -498,6 +526,11 @@ pub(super) fn merge_frag_coord(
         return;
     }
     *merged = *m;
+}
+
+/// A work-group size as a layout spells it.
+fn size_text(s: [u32; 3]) -> String {
+    format!("{} x {} x {}", s[0], s[1], s[2])
 }
 
 pub(super) fn merge_geometry_layout(

@@ -71,6 +71,7 @@ pub(super) fn qualifier_of(k: Keyword) -> Option<Qualifier> {
         Keyword::Mediump => Qualifier::Mediump,
         Keyword::Highp => Qualifier::Highp,
         Keyword::Layout => Qualifier::Layout,
+        Keyword::Shared => Qualifier::Shared,
         _ => return None,
     })
 }

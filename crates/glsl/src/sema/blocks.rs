@@ -36,6 +36,8 @@ impl Analyzer {
                     Stage::Vertex => !is_in,
                     Stage::Geometry => true,
                     Stage::Fragment => is_in,
+                    // Compute shaders have no user inputs or outputs.
+                    Stage::Compute => false,
                 };
                 if !allowed {
                     self.error(

@@ -83,6 +83,9 @@ impl Analyzer {
             (Some(Qualifier::Uniform), _) => Storage::Uniform,
             (Some(Qualifier::Attribute), _) => Storage::Attribute,
             (Some(Qualifier::Varying), _) => Storage::Varying,
+            (Some(Qualifier::Shared), _) => Storage::Shared,
+            // A compute shader's only inputs are its built-in IDs.
+            (Some(Qualifier::In), Stage::Compute) => Storage::Varying,
             (Some(Qualifier::In), Stage::Vertex) => Storage::Attribute,
             (Some(Qualifier::In), Stage::Geometry) => Storage::GeometryInput,
             (Some(Qualifier::In), Stage::Fragment) => Storage::Varying,
@@ -412,6 +415,18 @@ impl Analyzer {
                 init = None;
             }
         }
+        if q.storage == Some(Qualifier::Shared) {
+            if let Some(e) = &init {
+                // GLSL 4.30 §4.3.8: the work group's invocations would
+                // all initialize it.
+                self.error(
+                    Code::BadQualifier,
+                    e.span,
+                    "`shared' variables cannot have initializers",
+                );
+                init = None;
+            }
+        }
         if ty.array == Some(ArraySize::Unsized) && is_const {
             self.error(
                 Code::BadArraySize,
@@ -442,6 +457,22 @@ impl Analyzer {
             return None;
         }
         if self.scopes.is_global() {
+            let stage_io = matches!(
+                q.storage,
+                Some(Qualifier::In | Qualifier::Out | Qualifier::Varying | Qualifier::Attribute)
+            );
+            if self.stage == Stage::Compute && stage_io && !self.builtin_mode {
+                self.error(
+                    Code::StageMismatch,
+                    q.storage_span,
+                    format!(
+                        "a compute shader has no user-defined inputs or outputs (`{name}')"
+                    ),
+                )
+                .notes
+                .push("its inputs are gl_GlobalInvocationID and the other built-in IDs; it writes its results to memory".into());
+                return None;
+            }
             let storage = self.global_storage(q);
             let (location, index) = self.check_var_layout(q, &name);
             let binding = self.var_binding(q, ty);
@@ -669,7 +700,7 @@ impl Analyzer {
         let output = match self.stage {
             Stage::Vertex => true,
             Stage::Geometry => q.storage != Some(Qualifier::In),
-            Stage::Fragment => false,
+            Stage::Fragment | Stage::Compute => false,
         };
         if output && super::blocks::PER_VERTEX_OUT_MEMBERS.contains(&name.as_str()) {
             if self.module.per_vertex_out.is_some() {
@@ -712,6 +743,7 @@ impl Analyzer {
                 "gl_BackSecondaryColor",
             ],
             Stage::Fragment => &["gl_Color", "gl_SecondaryColor"],
+            Stage::Compute => &[],
         };
         let color_ok = colors.contains(&name.as_str()) && varying && !ty.is_array();
         let frag_coord_ok = name == "gl_FragCoord"

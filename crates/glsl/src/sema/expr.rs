@@ -178,6 +178,9 @@ impl Analyzer {
 
     /// A variable reference as a value; `const` variables become constants.
     pub(super) fn ident(&mut self, id: &ast::Ident) -> ir::Expr {
+        if id.name == "gl_WorkGroupSize" && self.stage == crate::ir::Stage::Compute {
+            return self.work_group_size(id.span);
+        }
         match self.lookup(&id.name) {
             Some(Symbol::Var(v)) => {
                 let ty = self.var_type(v);

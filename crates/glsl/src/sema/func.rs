@@ -597,6 +597,7 @@ impl Analyzer {
                 match function {
                     Some(function) => {
                         self.check_texel_offset(function, &out_args);
+                        self.check_atomic_memory(function, &out_args);
                         ExprKind::Builtin {
                             function,
                             args: out_args,
@@ -654,6 +655,44 @@ impl Analyzer {
                     format!("the offset of `{}' must be a constant expression", f.name()),
                 );
             }
+        }
+    }
+
+    /// The memory an atomic function updates (GLSL 4.30 §8.11) is a
+    /// `shared` variable or a part of one.
+    fn check_atomic_memory(&mut self, f: crate::builtin_fn::BuiltinFn, args: &[ir::Expr]) {
+        if !f.is_atomic() {
+            return;
+        }
+        let Some(mem) = args.first().filter(|a| !a.ty.is_error()) else {
+            return;
+        };
+        let mut root = mem;
+        while let ExprKind::Index { base, .. }
+        | ExprKind::Member { base, .. }
+        | ExprKind::Swizzle { base, .. } = &root.kind
+        {
+            root = base;
+        }
+        let shared = match root.kind {
+            ExprKind::Global(g) => self
+                .module
+                .globals
+                .get(g.0 as usize)
+                .is_some_and(|g| g.storage == ir::Storage::Shared),
+            _ => false,
+        };
+        if !shared {
+            self.error(
+                Code::TypeMismatch,
+                mem.span,
+                format!(
+                    "the first argument of `{}' must be a `shared' variable (or an element or member of one)",
+                    f.name()
+                ),
+            )
+            .notes
+            .push("atomic functions update memory the invocations share; a local or global of one invocation has nothing to be atomic about".into());
         }
     }
 

@@ -30,6 +30,9 @@ pub(crate) struct LayoutQuals {
     /// `binding = N` (GL_ARB_shading_language_420pack): samplers and
     /// uniform blocks.
     pub binding: Option<(u32, Span)>,
+    /// `local_size_x`, `_y`, `_z` (GL_ARB_compute_shader): only a compute
+    /// shader's `layout(...) in;` takes them ([`Analyzer::compute_layout`]).
+    pub local_size: [Option<(u32, Span)>; 3],
     /// Geometry-shader identifiers (`triangles`, `max_vertices`...) in
     /// order, with the value of `max_vertices`: only `layout(...) in;` and
     /// `layout(...) out;` of a geometry shader take them
@@ -64,7 +67,8 @@ fn rank(q: Qualifier) -> u8 {
         | Qualifier::Centroid
         | Qualifier::In
         | Qualifier::Out
-        | Qualifier::Inout => 3,
+        | Qualifier::Inout
+        | Qualifier::Shared => 3,
         Qualifier::Lowp | Qualifier::Mediump | Qualifier::Highp => 4,
     }
 }
@@ -138,7 +142,8 @@ impl Analyzer {
                 | Qualifier::Varying
                 | Qualifier::In
                 | Qualifier::Out
-                | Qualifier::Inout => {
+                | Qualifier::Inout
+                | Qualifier::Shared => {
                     let after_varying = i > 0
                         && quals[i - 1].qualifier == Qualifier::Varying
                         && q.storage == Some(Qualifier::Varying);
@@ -396,6 +401,21 @@ impl Analyzer {
         let vertex = self.stage == Stage::Vertex;
         let fragment = self.stage == Stage::Fragment;
         let storage = q.storage;
+        // GL_ARB_compute_shader: `shared' variables belong to compute
+        // shaders.
+        match storage {
+            Some(Qualifier::Shared) if self.stage != Stage::Compute => {
+                self.error(
+                    Code::StageMismatch,
+                    q.storage_span,
+                    format!(
+                        "`shared' variables exist only in compute shaders, not in a {} shader",
+                        self.stage.name()
+                    ),
+                );
+            }
+            _ => {}
+        }
         // A geometry shader's inputs and outputs both take interpolation
         // and `centroid' (GLSL 1.50 §4.3.4, §4.3.6).
         if let Some((i, span)) = q.interpolation {
@@ -487,7 +507,13 @@ impl Analyzer {
         let span = id.span;
         let takes_value = matches!(
             lower.as_str(),
-            "location" | "index" | "max_vertices" | "binding"
+            "location"
+                | "index"
+                | "max_vertices"
+                | "binding"
+                | "local_size_x"
+                | "local_size_y"
+                | "local_size_z"
         );
         if takes_value && id.value.is_none() {
             self.error(
@@ -540,6 +566,17 @@ impl Analyzer {
                 }
                 if let Some(v) = id.value.as_ref().and_then(|e| self.layout_value(e)) {
                     out.binding = Some((v, span));
+                }
+            }
+            "local_size_x" | "local_size_y" | "local_size_z" => {
+                if !self.require(Feature::ComputeShader, &format!("`{lower}'"), span) {
+                    return;
+                }
+                let dim = usize::from(lower.as_bytes()[11] - b'x');
+                if let Some(v) = id.value.as_ref().and_then(|e| self.layout_value(e)) {
+                    if let Some(slot) = out.local_size.get_mut(dim) {
+                        *slot = Some((v, span));
+                    }
                 }
             }
             "std140" | "shared" | "packed" => {
@@ -613,8 +650,6 @@ impl Analyzer {
         }
     }
 
-    /// Reports layout identifiers a variable declaration may not have and
-    /// returns its location and (fragment outputs) index.
     /// `layout(binding = N)` of a variable of type `ty`: only uniform
     /// samplers (and arrays of them) take it, within the texture units
     /// (every element of an array, GL_ARB_shading_language_420pack).
@@ -664,6 +699,8 @@ impl Analyzer {
         false
     }
 
+    /// Reports layout identifiers a variable declaration may not have and
+    /// returns its location and (fragment outputs) index.
     pub(crate) fn check_var_layout(
         &mut self,
         q: &VarQuals,
@@ -736,6 +773,9 @@ impl Analyzer {
         }
         if let Some((g, _, span)) = l.geometry.first() {
             self.misplaced_geometry_layout(g, *span);
+        }
+        if let Some((_, span)) = l.local_size.iter().flatten().next() {
+            self.misplaced_local_size(*span);
         }
         (location, index)
     }
@@ -840,9 +880,14 @@ impl Analyzer {
                 let input = q.storage == Some(Qualifier::In);
                 self.geometry_layout(&q, input);
             }
+            Some(Qualifier::In) if self.stage == Stage::Compute && l.span.is_some() => {
+                self.compute_layout(&q);
+            }
             _ => {
                 if let Some((g, _, s)) = l.geometry.first() {
                     self.misplaced_geometry_layout(g, *s);
+                } else if let Some((_, s)) = l.local_size.iter().flatten().next() {
+                    self.misplaced_local_size(*s);
                 } else {
                     self.error(
                         Code::Syntax,

@@ -20,6 +20,7 @@
 
 mod access;
 mod blocks;
+mod compute;
 mod construct;
 mod decl;
 mod expr;
@@ -101,6 +102,13 @@ pub fn analyze(tu: &TranslationUnit, ctx: &Context) -> (Module, Vec<Diagnostic>)
         a.require(
             crate::lang::Feature::GeometryShader,
             "a geometry shader",
+            crate::source::Span::default(),
+        );
+    }
+    if ctx.stage == Stage::Compute {
+        a.require(
+            crate::lang::Feature::ComputeShader,
+            "a compute shader",
             crate::source::Span::default(),
         );
     }
@@ -728,6 +736,8 @@ pub(crate) fn const_expr(value: ConstValue, span: Span) -> ir::Expr {
 
 #[cfg(test)]
 mod aoa_tests;
+#[cfg(test)]
+mod compute_tests;
 #[cfg(test)]
 mod ext_geometry_tests;
 #[cfg(test)]

@@ -16,6 +16,7 @@ _EXTENSIONS = {
     ".gs": "geometry",
     ".frag": "fragment",
     ".fs": "fragment",
+    ".comp": "compute",
 }
 
 
@@ -29,7 +30,7 @@ def check(
     :class:`Diagnostics` (empty and ``ok`` when it compiles cleanly).
 
     ``stage`` is required for text; for a path it defaults from the
-    extension (``.vert``/``.vs``, ``.geom``/``.gs``, ``.frag``/``.fs``). ``version`` (110,
+    extension (``.vert``/``.vs``, ``.geom``/``.gs``, ``.frag``/``.fs``, ``.comp``). ``version`` (110,
     120, 130, 140, 150 or 330) is the version of a shader without ``#version`` (1.10 by
     default, as the spec says); a ``#version`` line always wins."""
     name = "<shader>"
@@ -39,12 +40,12 @@ def check(
         if stage is None:
             stage = _EXTENSIONS.get(path.suffix.lower())
             if stage is None:
-                raise ValueError(f"{name}: cannot tell the stage from the extension; pass stage='vertex', 'geometry' or 'fragment'")
+                raise ValueError(f"{name}: cannot tell the stage from the extension; pass stage='vertex', 'geometry', 'fragment' or 'compute'")
         source = path.read_bytes().decode("utf-8", errors="replace")
     elif not isinstance(source, str):
         raise TypeError(f"source must be GLSL text (str) or a path, got {type(source).__name__}")
     if stage is None:
-        raise ValueError("check() needs stage='vertex', 'geometry' or 'fragment' for source text")
+        raise ValueError("check() needs stage='vertex', 'geometry', 'fragment' or 'compute' for source text")
     if version is not None and not isinstance(version, int):
         raise TypeError(f"version must be an int such as 330, got {type(version).__name__}")
     return _diagnostics(_shaderbox.compile_report(source, stage, version, name))
