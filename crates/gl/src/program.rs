@@ -114,6 +114,15 @@ pub struct ProgramObj {
     pub delete_pending: bool,
 }
 
+/// The language extensions the compiler has whose stages no context
+/// runs yet, so no context offers them (`GL_EXTENSIONS` does not list
+/// them and shaders cannot enable them): compute shaders.
+fn withheld_extensions() -> glsl::lang::ExtensionSet {
+    let mut set = glsl::lang::ExtensionSet::EMPTY;
+    set.set(glsl::lang::Extension::ArbComputeShader, true);
+    set
+}
+
 impl Context {
     /// glCreateShader.
     pub fn create_shader(&mut self, kind: u32) -> u32 {
@@ -251,6 +260,7 @@ impl Context {
             let strs: Vec<&str> = s.source.iter().map(String::as_str).collect();
             let opts = CompileOptions {
                 compatibility_context: self.api.compatibility(),
+                withheld: withheld_extensions(),
                 ..CompileOptions::new(s.stage())
             };
             let compiled = glsl::compile(&strs, &opts);

@@ -385,3 +385,37 @@ fn sample_mask_state_and_sample_positions() {
     assert_eq!(ctx.get_multisamplefv(GL_SAMPLES, 0), None);
     assert_eq!(ctx.get_error(), GL_INVALID_ENUM);
 }
+
+#[test]
+fn contexts_withhold_the_extensions_they_cannot_run() {
+    // The compiler has GL_ARB_compute_shader's language; no context runs
+    // compute programs yet, so none offers it: `require' fails, the
+    // macro is undefined, and GL_EXTENSIONS does not list it.
+    let mut ctx = Context::with_api(4, 4, gl::Api::GL33_COMPAT);
+    let compile = |ctx: &mut Context, src: &str| {
+        let s = ctx.create_shader(GL_VERTEX_SHADER);
+        ctx.shader_source(s, &[src]);
+        ctx.compile_shader(s);
+        (
+            ctx.get_shaderiv(s, GL_COMPILE_STATUS),
+            ctx.get_shader_info_log(s),
+        )
+    };
+    let (ok, log) = compile(
+        &mut ctx,
+        "#version 330\n#extension GL_ARB_compute_shader : require\nvoid main() { gl_Position = vec4(0.0); }\n",
+    );
+    assert_eq!(ok, 0);
+    assert!(log.contains("GL_ARB_compute_shader"), "{log}");
+    let (ok, log) = compile(
+        &mut ctx,
+        "#version 330\n#ifdef GL_ARB_compute_shader\n#error defined\n#endif\nvoid main() { gl_Position = vec4(0.0); }\n",
+    );
+    assert_eq!(ok, 1, "{log}");
+    let n = ctx.get_integerv(GL_NUM_EXTENSIONS)[0];
+    let names: Vec<String> = (0..n as u32)
+        .filter_map(|i| ctx.get_stringi(GL_EXTENSIONS, i).map(str::to_string))
+        .collect();
+    assert!(!names.iter().any(|e| e == "GL_ARB_compute_shader"));
+    assert!(names.iter().any(|e| e == "GL_ARB_shading_language_420pack"));
+}

@@ -135,6 +135,12 @@ pub struct CompileOptions {
     /// adjacency; its diagnostics are those of GL_TRIANGLES when none is.
     /// Ignored by every other language and stage.
     pub geometry_input: Option<ir::InputPrimitive>,
+    /// Extensions the compiler knows but the context does not offer
+    /// (those whose stages or resources the GL layer cannot run): as in
+    /// a driver without them, `#extension NAME : require` fails, `enable`
+    /// warns and the macro is undefined. Empty by default (`shaderbox
+    /// check`, glslparsertest: the compiler's whole language).
+    pub withheld: lang::ExtensionSet,
 }
 
 impl CompileOptions {
@@ -145,6 +151,7 @@ impl CompileOptions {
             default_version: None,
             compatibility_context: true,
             geometry_input: None,
+            withheld: lang::ExtensionSet::EMPTY,
         }
     }
 }
@@ -206,6 +213,7 @@ pub fn compile(strings: &[&str], opts: &CompileOptions) -> Shader {
             stage: opts.stage,
             default_version,
             compatibility_context: opts.compatibility_context,
+            withheld: opts.withheld,
         },
     );
     let mut diagnostics = pp_out.diagnostics;

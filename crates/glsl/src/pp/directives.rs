@@ -740,7 +740,8 @@ impl Preprocessor<'_> {
         // compatibility profile.
         let known = Extension::from_name(&name.text)
             .filter(|&e| e != Extension::ArbCompatibility || self.compatibility_context)
-            .filter(|&e| self.lang.version >= e.since());
+            .filter(|&e| self.lang.version >= e.since())
+            .filter(|&e| !self.withheld.contains(e));
         let supported = known.is_some();
         if is_all
             && matches!(

@@ -34,7 +34,7 @@ mod tests;
 
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{ExtensionBehavior, Stage};
-use crate::lang::{Extension, Feature, Language, Profile, Version};
+use crate::lang::{Extension, ExtensionSet, Feature, Language, Profile, Version};
 use crate::lex::{self, LexOptions, PpKind, PpToken};
 use crate::limits;
 use crate::source::{SourceMap, Span};
@@ -51,6 +51,9 @@ pub struct PpOptions {
     /// compatibility contexts do): it decides a 1.40 shader's profile and
     /// whether `#version 150 compatibility` is accepted.
     pub compatibility_context: bool,
+    /// Extensions the context does not offer although the compiler knows
+    /// them ([`crate::CompileOptions::withheld`]).
+    pub withheld: ExtensionSet,
 }
 
 impl PpOptions {
@@ -59,6 +62,7 @@ impl PpOptions {
             stage,
             default_version: Version::V110,
             compatibility_context: true,
+            withheld: ExtensionSet::EMPTY,
         }
     }
 }
@@ -115,6 +119,7 @@ pub(crate) fn preprocess_with_limit(
     let mut lexer = lex::Lexer::new(&text, lex_opts);
     let mut pp = Preprocessor::new(map, opts.stage, max_tokens);
     pp.compatibility_context = opts.compatibility_context;
+    pp.withhold(opts.withheld);
     pp.set_language(Language::new(
         opts.default_version,
         opts.compatibility_context,
@@ -214,6 +219,9 @@ pub(crate) struct Preprocessor<'m> {
     stage: Stage,
     lang: Language,
     compatibility_context: bool,
+    /// Extensions the context does not offer: no macro, and `#extension`
+    /// treats them as unknown.
+    withheld: ExtensionSet,
     /// The first `#version` directive.
     version_span: Option<Span>,
     /// Something other than comments and whitespace has been seen.
@@ -252,6 +260,7 @@ impl<'m> Preprocessor<'m> {
             stage,
             lang: Language::new(Version::V110, true),
             compatibility_context: true,
+            withheld: ExtensionSet::EMPTY,
             version_span: None,
             seen_content: false,
             macros,
@@ -266,6 +275,14 @@ impl<'m> Preprocessor<'m> {
             max_tokens,
             overflowed: false,
             invariant_all: false,
+        }
+    }
+
+    /// Withholds `set`'s extensions (their macros go now).
+    fn withhold(&mut self, set: ExtensionSet) {
+        self.withheld = set;
+        for e in Extension::ALL.iter().filter(|&&e| set.contains(e)) {
+            self.macros.remove(e.name());
         }
     }
 
@@ -291,7 +308,7 @@ impl<'m> Preprocessor<'m> {
             Extension::ALL
                 .iter()
                 .filter(|e| e.since() > Version::V110)
-                .map(|e| (e.name(), v >= e.since())),
+                .map(|e| (e.name(), v >= e.since() && !self.withheld.contains(*e))),
         ) {
             if on {
                 self.macros.insert(name.into(), macros::Macro::one());
