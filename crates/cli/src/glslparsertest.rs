@@ -53,6 +53,7 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "GL_ARB_shading_language_420pack",
     "GL_ARB_separate_shader_objects",
     "GL_ARB_compute_shader",
+    "GL_ARB_shader_storage_buffer_object",
 ];
 
 /// Whether a test of GLSL `version` can use extension `name`: one of
@@ -477,10 +478,11 @@ mod tests {
         assert!(!supported("GL_EXT_texture_array", Version::V120));
         assert!(supported("GL_EXT_texture_array", Version::V130));
         assert!(supported("GL_ARB_shading_language_420pack", Version::V120));
-        assert!(!supported(
+        assert!(supported(
             "GL_ARB_shader_storage_buffer_object",
-            Version::V330
+            Version::V110
         ));
+        assert!(!supported("GL_ARB_gpu_shader5", Version::V330));
     }
 
     #[test]

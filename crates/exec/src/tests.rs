@@ -1374,3 +1374,38 @@ fn library_shaders_compile_to_native_code() {
     }
     assert!(bad.is_empty(), "{bad:#?}");
 }
+
+#[test]
+fn lengths_of_implicitly_sized_arrays_are_their_sizes() {
+    // GL_ARB_shader_storage_buffer_object's `.length()` of arrays sized by
+    // their uses: the local takes its largest constant index plus one,
+    // the global the linker's size.
+    let (c, _) = frag_colors(
+        "#version 120
+#extension GL_ARB_shader_storage_buffer_object : require
+float g[];
+void main() {
+    float a[];
+    a[2] = 1.0;
+    g[4] = a[2];
+    gl_FragColor = vec4(float(a.length()), float(g.length()), g[4], 0.0);
+}",
+        &[],
+    );
+    assert_eq!(c[0], [3.0, 5.0, 1.0, 0.0]);
+}
+
+#[test]
+fn programs_with_memory_between_invocations_are_refused_with_a_reason() {
+    let src = "#version 330
+#extension GL_ARB_shader_storage_buffer_object : require
+buffer B { vec4 v[]; };
+out vec4 o;
+void main() { o = v[0]; }";
+    let stage = link_one(Stage::Fragment, src).expect("links");
+    let err = Kernel::new(&stage)
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+    assert!(err.contains("shader storage block"), "{err}");
+}

@@ -52,6 +52,15 @@ pub enum Qualifier {
     Layout,
     /// `shared` (GL_ARB_compute_shader): a variable of the work group.
     Shared,
+    /// `buffer` (GL_ARB_shader_storage_buffer_object): a shader storage
+    /// block.
+    Buffer,
+    /// Memory qualifiers of buffer variables (GLSL 4.30 §4.10).
+    Coherent,
+    Volatile,
+    Restrict,
+    Readonly,
+    Writeonly,
 }
 
 impl Qualifier {
@@ -74,6 +83,12 @@ impl Qualifier {
             Qualifier::Highp => "highp",
             Qualifier::Layout => "layout",
             Qualifier::Shared => "shared",
+            Qualifier::Buffer => "buffer",
+            Qualifier::Coherent => "coherent",
+            Qualifier::Volatile => "volatile",
+            Qualifier::Restrict => "restrict",
+            Qualifier::Readonly => "readonly",
+            Qualifier::Writeonly => "writeonly",
         }
     }
 
@@ -81,6 +96,17 @@ impl Qualifier {
         matches!(
             self,
             Qualifier::Flat | Qualifier::Smooth | Qualifier::Noperspective
+        )
+    }
+
+    pub fn is_memory(self) -> bool {
+        matches!(
+            self,
+            Qualifier::Coherent
+                | Qualifier::Volatile
+                | Qualifier::Restrict
+                | Qualifier::Readonly
+                | Qualifier::Writeonly
         )
     }
 

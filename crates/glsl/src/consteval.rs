@@ -135,6 +135,7 @@ pub fn fold(expr: &Expr, structs: &[StructDef]) -> Option<ConstValue> {
         | ExprKind::IncDec { .. }
         | ExprKind::Call { .. }
         | ExprKind::DebugPrintf { .. }
+        | ExprKind::ArrayLength { .. }
         | ExprKind::Comma { .. } => return None,
     };
     if components.len() != flat_size(ty, structs) {

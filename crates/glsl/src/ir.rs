@@ -130,6 +130,10 @@ pub enum Storage {
     /// the vertex stage's output of the element type. Also the built-ins
     /// `gl_in[]`, `gl_PrimitiveIDIn` and the EXT form's `gl_PositionIn[]`...
     GeometryInput,
+    /// A member of a shader storage block (`buffer B { ... };`,
+    /// GL_ARB_shader_storage_buffer_object): memory every invocation of a
+    /// draw or dispatch reads and writes.
+    Buffer,
     /// A `shared` variable of a compute shader (GL_ARB_compute_shader,
     /// GLSL 4.30 §4.3.8): one per work group, read and written by all of
     /// its invocations.
@@ -171,6 +175,9 @@ pub enum BlockLayout {
     Shared,
     Packed,
     Std140,
+    /// Shader storage blocks only (GL_ARB_shader_storage_buffer_object):
+    /// std140 without rounding arrays and structs up to vec4 alignment.
+    Std430,
 }
 
 /// A member of an interface block.
@@ -188,6 +195,13 @@ pub struct BlockMember {
     /// size: the largest constant index used through a named instance,
     /// plus one (GLSL 1.50 §4.3.7 sizes it as an unsized array global;
     /// the linker does).
+    /// Memory qualifiers of a shader storage block's member (its own or
+    /// the block's): `readonly` members are never written, `writeonly`
+    /// ones never read.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub readonly: bool,
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub writeonly: bool,
     pub implicit_size: u32,
 }
 
@@ -513,6 +527,15 @@ pub enum ExprKind {
         function: FunctionId,
         args: Vec<Expr>,
     },
+    /// `array.length()` of an array declared without a size
+    /// (GL_ARB_shader_storage_buffer_object): type `int`. For a shader
+    /// storage block's last member, the number of whole elements the
+    /// bound buffer range holds after the member's offset; for an array
+    /// sized by its uses (a global the linker sizes, a local the executor
+    /// does), that size. `array` is read for its place, not its value.
+    ArrayLength {
+        array: Box<Expr>,
+    },
     /// `debugPrintfEXT(format, args...)` (GL_SHADERBOX_debug_printf): prints
     /// the arguments of the invocation, formatted by
     /// [`crate::printf::format_values`]; type `void`, no other effect.
@@ -553,6 +576,7 @@ impl Expr {
             }
             ExprKind::Swizzle { base, .. } | ExprKind::Member { base, .. } => f(base),
             ExprKind::Unary { operand, .. } | ExprKind::Convert { operand } => f(operand),
+            ExprKind::ArrayLength { array } => f(array),
             ExprKind::Binary { left, right, .. } | ExprKind::Comma { left, right } => {
                 f(left);
                 f(right);
@@ -588,6 +612,7 @@ impl Expr {
             }
             ExprKind::Swizzle { base, .. } | ExprKind::Member { base, .. } => f(base),
             ExprKind::Unary { operand, .. } | ExprKind::Convert { operand } => f(operand),
+            ExprKind::ArrayLength { array } => f(array),
             ExprKind::Binary { left, right, .. } | ExprKind::Comma { left, right } => {
                 f(left);
                 f(right);

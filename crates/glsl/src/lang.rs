@@ -187,6 +187,11 @@ extensions! {
     // Written against GLSL 4.20, which no version here reaches: shaders
     // of every version may enable it (as Mesa offers it to 3.3 ones).
     ArbComputeShader = "GL_ARB_compute_shader";
+    // Shader storage blocks (`buffer B { ... };`), their memory
+    // qualifiers, `std430`, a last member of unknown size and the atomic
+    // functions on buffer variables. Written against GLSL 4.20: shaders
+    // of every version may enable it, as Mesa offers it.
+    ArbShaderStorageBufferObject = "GL_ARB_shader_storage_buffer_object";
 }
 
 impl Extension {
@@ -297,6 +302,9 @@ pub enum Feature {
     LanguagePack420,
     /// The compute stage and its `shared` variables (GL_ARB_compute_shader).
     ComputeShader,
+    /// Shader storage blocks, memory qualifiers and `std430`
+    /// (GL_ARB_shader_storage_buffer_object).
+    StorageBuffers,
 }
 
 /// Why a feature is not available to a shader.
@@ -452,6 +460,7 @@ impl Language {
             Feature::VaryingLocation => self.only_with(Extension::ArbSeparateShaderObjects),
             Feature::LanguagePack420 => self.only_with(Extension::ArbShadingLanguage420pack),
             // Its built-ins are `uvec3`s: GLSL 1.30 on, with the extension.
+            Feature::StorageBuffers => self.only_with(Extension::ArbShaderStorageBufferObject),
             Feature::ComputeShader => {
                 since(Version::V130).and_then(|()| self.only_with(Extension::ArbComputeShader))
             }
@@ -504,6 +513,8 @@ impl Language {
             || self.has(Extension::ArbFragmentCoordConventions)
             || self.has(Extension::ArbSeparateShaderObjects)
             || self.has(Extension::ArbShadingLanguage420pack)
+            || self.has(Extension::ArbShaderStorageBufferObject)
+            || self.has(Extension::ArbComputeShader)
     }
 
     /// `gate` as a bool.

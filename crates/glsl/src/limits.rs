@@ -29,6 +29,11 @@ pub const MAX_COMPUTE_UNIFORM_COMPONENTS: u32 = 1024;
 pub const MAX_COMPUTE_TEXTURE_IMAGE_UNITS: u32 = 16;
 pub const MAX_COMPUTE_SHARED_MEMORY_SIZE: u32 = 32768;
 
+/// GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS (GL_ARB_shader_storage_buffer_object,
+/// minimum 8): the binding points `layout(binding = N)` may name on shader
+/// storage blocks.
+pub const MAX_SHADER_STORAGE_BUFFER_BINDINGS: u32 = 8;
+
 /// `gl_MaxLights` (minimum 8).
 pub const MAX_LIGHTS: u32 = 8;
 /// `gl_MaxClipPlanes` (minimum 6).

@@ -121,6 +121,14 @@ keywords! {
     // keyword only where that extension is enabled, `layout(shared)`'s
     // identifier everywhere.
     Shared = "shared" since V110;
+    // GL_ARB_shader_storage_buffer_object's storage and memory
+    // qualifiers: keywords only where it is enabled.
+    Buffer = "buffer" since V110;
+    Coherent = "coherent" since V110;
+    Volatile = "volatile" since V110;
+    Restrict = "restrict" since V110;
+    Readonly = "readonly" since V110;
+    Writeonly = "writeonly" since V110;
     Sampler2DRect = "sampler2DRect" since V140;
     Sampler2DRectShadow = "sampler2DRectShadow" since V140;
     Isampler2DRect = "isampler2DRect" since V140;
@@ -260,6 +268,18 @@ pub fn classify(word: &str, lang: Language) -> WordClass {
             }
         } else if k == Keyword::Shared {
             if lang.has(Extension::ArbComputeShader) {
+                return WordClass::Keyword(k);
+            }
+        } else if matches!(
+            k,
+            Keyword::Buffer
+                | Keyword::Coherent
+                | Keyword::Volatile
+                | Keyword::Restrict
+                | Keyword::Readonly
+                | Keyword::Writeonly
+        ) {
+            if lang.has(Extension::ArbShaderStorageBufferObject) {
                 return WordClass::Keyword(k);
             }
         } else if k.since() <= version || (k == Keyword::Layout && lang.has_layout_keyword()) {

@@ -318,6 +318,15 @@ impl Validator<'_> {
                     }
                 }
             }
+            ExprKind::ArrayLength { array } => {
+                self.expr(array);
+                if array.ty.array != Some(crate::types::ArraySize::Unsized) || e.ty != Type::INT {
+                    self.fail(
+                        e.span,
+                        "buffer length of something other than an unsized array",
+                    );
+                }
+            }
             ExprKind::Convert { operand } => {
                 self.expr(operand);
                 let ok = matches!(operand.ty.scalar(), Some(Scalar::Int | Scalar::Uint))

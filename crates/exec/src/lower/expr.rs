@@ -9,7 +9,7 @@ use super::{const_bits, kind_of, unsupported, CtxKind, Lowerer, Val, R};
 use crate::interface::kinds;
 use crate::program::{Op, PrintfSite, Reg};
 use glsl::ir::{BinaryOp, Expr, ExprKind, IncDec, UnaryOp};
-use glsl::types::{Base, Scalar, Type};
+use glsl::types::{ArraySize, Base, Scalar, Type};
 
 impl<'m> Lowerer<'m> {
     /// Evaluates one operand of `?:` under the current mask and stores it
@@ -127,6 +127,13 @@ impl<'m> Lowerer<'m> {
             ExprKind::Call { function, args } => self.call(*function, args),
             ExprKind::Builtin { function, args } => self.builtin(*function, args, e.ty),
             ExprKind::Construct { args } => self.construct(e.ty, args),
+            // An implicitly sized array's length is the size its uses
+            // gave it (shader storage blocks, whose last member's length
+            // is the buffer's, are refused before lowering).
+            ExprKind::ArrayLength { array } => match self.place(array)?.ty.array {
+                Some(ArraySize::Sized(n)) => Ok(vec![self.konst(n)?]),
+                _ => unsupported("the length of an array whose size is not known"),
+            },
             ExprKind::DebugPrintf { format, args } => {
                 let mut regs = Vec::new();
                 for a in args {

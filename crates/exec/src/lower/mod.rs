@@ -203,6 +203,18 @@ fn with_stack<T>(f: impl FnOnce() -> T) -> T {
 }
 
 pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
+    // Memory shared between invocations is not run yet: say so before
+    // lowering reaches an access.
+    let memory = |s: Storage| matches!(s, Storage::Buffer | Storage::Shared);
+    if stage.stage == Stage::Compute {
+        return unsupported("compute shaders are not run by this implementation");
+    }
+    if let Some(g) = stage.module.globals.iter().find(|g| memory(g.storage)) {
+        return unsupported(format!(
+            "`{}' is a member of a shader storage block, which this implementation does not run",
+            g.name
+        ));
+    }
     let owned;
     let m = match with_ftransform_inputs(&stage.module) {
         Some(patched) => {

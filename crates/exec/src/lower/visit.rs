@@ -17,6 +17,7 @@ pub(super) fn has_effects(e: &Expr) -> bool {
         ExprKind::Index { base, index } => has_effects(base) || has_effects(index),
         ExprKind::Swizzle { base, .. } | ExprKind::Member { base, .. } => has_effects(base),
         ExprKind::Unary { operand, .. } | ExprKind::Convert { operand } => has_effects(operand),
+        ExprKind::ArrayLength { array } => has_effects(array),
         ExprKind::Binary { left, right, .. } | ExprKind::Comma { left, right } => {
             has_effects(left) || has_effects(right)
         }
@@ -101,6 +102,7 @@ fn visit_expr(e: &Expr, f: &mut dyn FnMut(&Expr)) {
         }
         ExprKind::Swizzle { base, .. } | ExprKind::Member { base, .. } => visit_expr(base, f),
         ExprKind::Unary { operand, .. } | ExprKind::Convert { operand } => visit_expr(operand, f),
+        ExprKind::ArrayLength { array } => visit_expr(array, f),
         ExprKind::Binary { left, right, .. } | ExprKind::Comma { left, right } => {
             visit_expr(left, f);
             visit_expr(right, f);

@@ -99,6 +99,10 @@ pub(crate) struct Where {
     ext_gs: bool,
     /// Only with this extension enabled.
     needs: Option<Extension>,
+    /// Or else: in any stage of this version or later with this extension
+    /// enabled (built-ins two extensions bring, such as the atomic
+    /// functions of compute shaders and of shader storage blocks).
+    or_with: Option<(Version, Extension)>,
 }
 
 impl Where {
@@ -111,6 +115,7 @@ impl Where {
         core_only: false,
         ext_gs: false,
         needs: None,
+        or_with: None,
     };
 
     const fn since(v: Version) -> Where {
@@ -144,6 +149,13 @@ impl Where {
     const fn ext_gs(self) -> Where {
         Where {
             ext_gs: true,
+            ..self
+        }
+    }
+
+    const fn or_with(self, v: Version, e: Extension) -> Where {
+        Where {
+            or_with: Some((v, e)),
             ..self
         }
     }
@@ -184,6 +196,11 @@ impl Where {
     }
 
     fn holds(self, lang: Language, stage: Stage) -> bool {
+        if let Some((v, e)) = self.or_with {
+            if lang.version >= v && lang.has(e) {
+                return true;
+            }
+        }
         lang.version >= self.since
             && self.until.is_none_or(|u| lang.version < u)
             && match self.stages {
@@ -1053,30 +1070,39 @@ const FUNCTIONS: &[(Where, &str)] = &[
     (COMPUTE_EXT.cs(), "void memoryBarrierImage()"),
     (COMPUTE_EXT.cs(), "void memoryBarrierShared()"),
     (COMPUTE_EXT.cs(), "void groupMemoryBarrier()"),
-    (COMPUTE_EXT.cs(), "uint atomicAdd(inout uint, uint)"),
-    (COMPUTE_EXT.cs(), "int atomicAdd(inout int, int)"),
-    (COMPUTE_EXT.cs(), "uint atomicMin(inout uint, uint)"),
-    (COMPUTE_EXT.cs(), "int atomicMin(inout int, int)"),
-    (COMPUTE_EXT.cs(), "uint atomicMax(inout uint, uint)"),
-    (COMPUTE_EXT.cs(), "int atomicMax(inout int, int)"),
-    (COMPUTE_EXT.cs(), "uint atomicAnd(inout uint, uint)"),
-    (COMPUTE_EXT.cs(), "int atomicAnd(inout int, int)"),
-    (COMPUTE_EXT.cs(), "uint atomicOr(inout uint, uint)"),
-    (COMPUTE_EXT.cs(), "int atomicOr(inout int, int)"),
-    (COMPUTE_EXT.cs(), "uint atomicXor(inout uint, uint)"),
-    (COMPUTE_EXT.cs(), "int atomicXor(inout int, int)"),
-    (COMPUTE_EXT.cs(), "uint atomicExchange(inout uint, uint)"),
-    (COMPUTE_EXT.cs(), "int atomicExchange(inout int, int)"),
+    (ATOMIC_UINT, "uint atomicAdd(inout uint, uint)"),
+    (ATOMIC_INT, "int atomicAdd(inout int, int)"),
+    (ATOMIC_UINT, "uint atomicMin(inout uint, uint)"),
+    (ATOMIC_INT, "int atomicMin(inout int, int)"),
+    (ATOMIC_UINT, "uint atomicMax(inout uint, uint)"),
+    (ATOMIC_INT, "int atomicMax(inout int, int)"),
+    (ATOMIC_UINT, "uint atomicAnd(inout uint, uint)"),
+    (ATOMIC_INT, "int atomicAnd(inout int, int)"),
+    (ATOMIC_UINT, "uint atomicOr(inout uint, uint)"),
+    (ATOMIC_INT, "int atomicOr(inout int, int)"),
+    (ATOMIC_UINT, "uint atomicXor(inout uint, uint)"),
+    (ATOMIC_INT, "int atomicXor(inout int, int)"),
+    (ATOMIC_UINT, "uint atomicExchange(inout uint, uint)"),
+    (ATOMIC_INT, "int atomicExchange(inout int, int)"),
     (
         COMPUTE_EXT.cs(),
         "uint atomicCompSwap(inout uint, uint, uint)",
     ),
-    (COMPUTE_EXT.cs(), "int atomicCompSwap(inout int, int, int)"),
+    (ATOMIC_INT, "int atomicCompSwap(inout int, int, int)"),
 ];
 
 /// GL_ARB_compute_shader's built-ins: GLSL 1.30 on (they are `uvec3`s and
 /// `ivec3`s), with the extension enabled.
 const COMPUTE_EXT: Where = Where::since(V130).needs(Extension::ArbComputeShader);
+/// The atomic functions: compute shaders' (on shared variables), and every
+/// stage's with GL_ARB_shader_storage_buffer_object (on buffer
+/// variables); the `uint` forms from GLSL 1.30.
+const ATOMIC_INT: Where = COMPUTE_EXT
+    .cs()
+    .or_with(Version::V110, Extension::ArbShaderStorageBufferObject);
+const ATOMIC_UINT: Where = COMPUTE_EXT
+    .cs()
+    .or_with(V130, Extension::ArbShaderStorageBufferObject);
 
 /// GL_ARB_shader_texture_lod's lookups (see [`FUNCTIONS`]).
 const LOD_FS_ARB: Where = Where {
@@ -1651,6 +1677,8 @@ mod tests {
                 e.extensions.set(Extension::ArbShadingLanguagePacking, true);
                 e.extensions.set(Extension::ArbTextureCubeMapArray, true);
                 e.extensions.set(Extension::ArbComputeShader, true);
+                e.extensions
+                    .set(Extension::ArbShaderStorageBufferObject, true);
                 for s in [
                     Stage::Vertex,
                     Stage::Geometry,

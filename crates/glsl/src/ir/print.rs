@@ -199,6 +199,7 @@ impl<'a> Printer<'a> {
                 Storage::FragOutput => "out ",
                 Storage::GeometryInput => "in ",
                 Storage::Shared => "shared ",
+                Storage::Buffer => "buffer ",
             });
             let _ = write!(line, "{} {}", self.ty(g.ty), g.name);
             if let Some(c) = &g.init {
@@ -510,6 +511,10 @@ impl<'a> Printer<'a> {
                 out.push('(');
                 self.args(args, out);
                 out.push(')');
+            }
+            ExprKind::ArrayLength { array } => {
+                self.expr(array, out, false);
+                out.push_str(".length()");
             }
             ExprKind::DebugPrintf { format, args } => {
                 out.push_str("debugPrintfEXT(\"");

@@ -105,7 +105,12 @@ pub(super) fn merge_blocks(
 /// largest constant index through the instance sizes the member in the
 /// block and in the instance's struct.
 pub(super) fn size_block_members(merged: &mut Module) {
-    for b in &mut merged.blocks {
+    // A shader storage block's unsized last member is sized by the buffer.
+    for b in merged
+        .blocks
+        .iter_mut()
+        .filter(|b| b.storage != Storage::Buffer)
+    {
         for (k, mb) in b.members.iter_mut().enumerate() {
             if mb.ty.array != Some(ArraySize::Unsized) {
                 continue;

@@ -446,6 +446,9 @@ pub(super) fn merge_stage(
     // elsewhere must cover every index used (§4.3, shared globals).
     for g in &mut merged.globals {
         match g.ty.array {
+            // A shader storage block's last member keeps its unknown
+            // size: the bound buffer gives it.
+            Some(ArraySize::Unsized) if g.storage == ir::Storage::Buffer => {}
             Some(ArraySize::Unsized) => {
                 g.ty.array = Some(ArraySize::Sized(g.implicit_size.max(1)));
             }

@@ -72,6 +72,12 @@ pub(super) fn qualifier_of(k: Keyword) -> Option<Qualifier> {
         Keyword::Highp => Qualifier::Highp,
         Keyword::Layout => Qualifier::Layout,
         Keyword::Shared => Qualifier::Shared,
+        Keyword::Buffer => Qualifier::Buffer,
+        Keyword::Coherent => Qualifier::Coherent,
+        Keyword::Volatile => Qualifier::Volatile,
+        Keyword::Restrict => Qualifier::Restrict,
+        Keyword::Readonly => Qualifier::Readonly,
+        Keyword::Writeonly => Qualifier::Writeonly,
         _ => return None,
     })
 }

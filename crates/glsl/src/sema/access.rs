@@ -262,7 +262,9 @@ impl Analyzer {
             if len.is_none() {
                 self.note_implicit_index(&base, c as u32);
             }
-        } else if len.is_none() {
+        } else if len.is_none() && self.buffer_member(&base).is_none() {
+            // (A shader storage block's last member takes any index: its
+            // size is the bound buffer's.)
             // GLSL 1.20 §4.1.9 and, for gl_TexCoord, §7.6: "indices used to
             // subscript gl_TexCoord must either be an integral constant
             // expression, or this array must be re-declared with a size".
@@ -465,12 +467,30 @@ impl Analyzer {
         args: &[ast::Expr],
         span: Span,
     ) -> ir::Expr {
-        let base = self.rvalue(b);
+        let base = self.expr_any(b);
         for a in args {
             let _ = self.rvalue(a);
         }
         if base.ty.is_error() {
             return error_expr(span);
+        }
+        // An array declared without a size (GL_ARB_shader_storage_buffer_object):
+        // a shader storage block's last member has the bound buffer's
+        // length, any other the size its uses give it (link time).
+        if base.ty.array == Some(ArraySize::Unsized) {
+            let variable = matches!(base.kind, K::Global(_) | K::Local(_));
+            let known = self.buffer_member(&base).is_some()
+                || (variable && self.lang.allows(crate::lang::Feature::StorageBuffers));
+            if name.name == "length" && args.is_empty() && known {
+                return mk(
+                    K::ArrayLength {
+                        array: Box::new(base),
+                    },
+                    Type::INT,
+                    span,
+                );
+            }
+            return self.reject_unsized(base);
         }
         if name.name != "length" {
             self.error(
@@ -526,6 +546,66 @@ impl Analyzer {
     /// argument): checks it is an l-value and marks the variable written
     /// (and read when `also_read`).
     pub fn lvalue(&mut self, e: &ast::Expr, also_read: bool, what: &str) -> ir::Expr {
+        let lv = self.lvalue_part(e, also_read, what);
+        self.check_memory_access(&lv, true, also_read);
+        lv
+    }
+
+    /// The shader storage block member `e` reads or writes (through
+    /// elements, swizzles and struct members of it), if any: the member
+    /// of a block without an instance name is its own global; through a
+    /// named instance it is the last member selected before the
+    /// instance (`buf.m`, `buf[2].m[i].x`).
+    fn buffer_member(&self, e: &ir::Expr) -> Option<&ir::BlockMember> {
+        let mut cur = e;
+        let mut member = None;
+        loop {
+            match &cur.kind {
+                K::Index { base, .. } | K::Swizzle { base, .. } => cur = base,
+                K::Member { base, index } => {
+                    member = Some(*index as usize);
+                    cur = base;
+                }
+                K::Global(g) => {
+                    let gl = self.module.globals.get(g.0 as usize)?;
+                    if gl.storage != Storage::Buffer {
+                        return None;
+                    }
+                    let b = self.module.blocks.get(gl.block?.0 as usize)?;
+                    return match b.instance {
+                        Some(_) => b.members.get(member?),
+                        None => b.members.iter().find(|m| m.name == gl.name),
+                    };
+                }
+                _ => return None,
+            }
+        }
+    }
+
+    /// GLSL 4.30 §4.10: a `readonly` buffer member is never written, a
+    /// `writeonly` one never read.
+    pub(super) fn check_memory_access(&mut self, e: &ir::Expr, write: bool, read: bool) {
+        let Some(m) = self.buffer_member(e) else {
+            return;
+        };
+        let (name, readonly, writeonly) = (m.name.clone(), m.readonly, m.writeonly);
+        let bad = if write && readonly {
+            Some(("written", "readonly"))
+        } else if read && writeonly {
+            Some(("read", "writeonly"))
+        } else {
+            None
+        };
+        if let Some((done, qual)) = bad {
+            self.error(
+                Code::ReadOnly,
+                e.span,
+                format!("`{name}' is `{qual}' and cannot be {done}"),
+            );
+        }
+    }
+
+    fn lvalue_part(&mut self, e: &ast::Expr, also_read: bool, what: &str) -> ir::Expr {
         let span = e.span;
         match &e.kind {
             A::Error => error_expr(span),
@@ -564,6 +644,9 @@ impl Analyzer {
                             Storage::Varying if self.stage == Stage::Fragment => {
                                 Some("a fragment shader input")
                             }
+                            Storage::Varying if self.stage == Stage::Compute => {
+                                Some("a compute shader input")
+                            }
                             Storage::GeometryInput => Some("a geometry shader input"),
                             _ => None,
                         };
@@ -591,11 +674,11 @@ impl Analyzer {
                 }
             }
             A::Index(b, i) => {
-                let base = self.lvalue(b, also_read, what);
+                let base = self.lvalue_part(b, also_read, what);
                 self.index(base, i, span)
             }
             A::Field(b, name) => {
-                let base = self.lvalue(b, also_read, what);
+                let base = self.lvalue_part(b, also_read, what);
                 self.field(base, name, span, true)
             }
             _ => {

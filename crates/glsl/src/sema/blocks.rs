@@ -25,6 +25,16 @@ impl Analyzer {
                 }
                 (Storage::Uniform, false)
             }
+            Some(Qualifier::Buffer) => {
+                if !self.require(
+                    Feature::StorageBuffers,
+                    "shader storage blocks",
+                    b.name.span,
+                ) {
+                    return;
+                }
+                (Storage::Buffer, false)
+            }
             Some(Qualifier::In) | Some(Qualifier::Out) => {
                 if !self.require(Feature::InOutBlocks, "input and output blocks", b.name.span) {
                     return;
@@ -78,10 +88,21 @@ impl Analyzer {
         let mut layout = self.default_block_layout;
         let mut row_major = self.default_row_major;
         let mut binding = None;
-        if storage == Storage::Uniform {
+        let memory_block = storage == Storage::Buffer;
+        if matches!(storage, Storage::Uniform | Storage::Buffer) {
             binding = q.layout.binding;
-            if let Some((l, _)) = q.layout.block_layout {
-                layout = l;
+            if let Some((l, span)) = q.layout.block_layout {
+                if l == ir::BlockLayout::Std430 && !memory_block {
+                    self.error(
+                        Code::BadQualifier,
+                        span,
+                        "`std430' applies only to shader storage blocks (`buffer')",
+                    )
+                    .notes
+                    .push("a uniform block's layouts are std140, shared and packed".into());
+                } else {
+                    layout = l;
+                }
             }
             if let Some((r, _)) = q.layout.row_major {
                 row_major = r;
@@ -95,7 +116,7 @@ impl Analyzer {
                 self.error(
                     Code::BadQualifier,
                     l.span.unwrap_or(b.span),
-                    "a uniform block takes only std140, shared, packed, row_major or column_major",
+                    "a uniform or shader storage block takes only std140, std430 (storage), shared, packed, row_major, column_major and binding",
                 );
             }
         } else if let Some(s) = q.layout.span {
@@ -177,7 +198,12 @@ impl Analyzer {
             return;
         }
         let block_interp = q.interpolation.map(|(i, _)| i);
-        let members = self.block_members(b, storage, row_major, block_interp);
+        let mut members = self.block_members(b, storage, row_major, block_interp);
+        // A block's memory qualifiers hold for every member.
+        for m in &mut members {
+            m.readonly |= q.memory.readonly.is_some();
+            m.writeonly |= q.memory.writeonly.is_some();
+        }
         let id = BlockId(self.module.blocks.len() as u32);
         // The block's members as a struct: the type of a named instance,
         // and what the block name stands for in the global scope.
@@ -277,7 +303,19 @@ impl Analyzer {
             }
         }
         let binding = binding.and_then(|(v, span)| {
-            self.block_binding(v, array.unwrap_or(1) * inner.iter().product::<u32>(), span)
+            let count = array.unwrap_or(1) * inner.iter().product::<u32>();
+            if storage == Storage::Buffer {
+                self.binding_in_range(
+                    v,
+                    count,
+                    crate::limits::MAX_SHADER_STORAGE_BUFFER_BINDINGS,
+                    "shader storage buffer binding points",
+                    span,
+                )
+                .then_some(v)
+            } else {
+                self.block_binding(v, count, span)
+            }
         });
         self.module.blocks.push(ir::InterfaceBlock {
             name: b.name.name.to_string(),
@@ -301,6 +339,13 @@ impl Analyzer {
     /// earlier, where Mesa takes the binding too), every instance's binding
     /// point below GL_MAX_UNIFORM_BUFFER_BINDINGS.
     fn block_binding(&mut self, v: u32, count: u32, span: Span) -> Option<u32> {
+        if !self.require(
+            Feature::LanguagePack420,
+            "`layout(binding)' on a uniform block",
+            span,
+        ) {
+            return None;
+        }
         self.binding_in_range(
             v,
             count,
@@ -663,7 +708,10 @@ impl Analyzer {
         // Input or output block (a geometry shader's inputs have their own
         // storage).
         let inout = matches!(storage, Storage::Varying | Storage::GeometryInput);
-        for m in &b.members {
+        let buffer = storage == Storage::Buffer;
+        let last_member = b.members.len().saturating_sub(1);
+        for (mi, m) in b.members.iter().enumerate() {
+            let mut memory = super::interface::MemoryQuals::default();
             let mut member_row_major = row_major;
             let mut interpolation = block_interp;
             let mut centroid = false;
@@ -674,7 +722,9 @@ impl Analyzer {
                     Qualifier::Layout => {
                         let mut l = LayoutQuals::default();
                         self.layout_ids(sq, &mut l);
-                        if let (Some((r, _)), Storage::Uniform) = (l.row_major, storage) {
+                        if let (Some((r, _)), Storage::Uniform | Storage::Buffer) =
+                            (l.row_major, storage)
+                        {
                             member_row_major = r;
                         }
                         let bad = l.location.is_some()
@@ -683,7 +733,8 @@ impl Analyzer {
                             || l.origin_upper_left.is_some()
                             || l.pixel_center_integer.is_some()
                             || !l.geometry.is_empty()
-                            || (storage != Storage::Uniform && l.row_major.is_some());
+                            || (!matches!(storage, Storage::Uniform | Storage::Buffer)
+                                && l.row_major.is_some());
                         if bad {
                             self.error(
                                 Code::BadQualifier,
@@ -693,6 +744,10 @@ impl Analyzer {
                         }
                     }
                     Qualifier::Uniform if storage == Storage::Uniform => {}
+                    Qualifier::Buffer if buffer => {}
+                    q if q.is_memory() && buffer => {
+                        memory.record(sq);
+                    }
                     Qualifier::In if inout && b_is(b, Qualifier::In) => {}
                     Qualifier::Out if inout && b_is(b, Qualifier::Out) => {}
                     Qualifier::Flat | Qualifier::Smooth | Qualifier::Noperspective if inout => {
@@ -756,15 +811,26 @@ impl Analyzer {
                 // use, as an unsized array global (GLSL 1.50 §4.3.7); a
                 // uniform block's layout needs every size. The prelude's
                 // `gl_PerVertex' has `gl_ClipDistance[]'.
-                if mty.array == Some(ArraySize::Unsized) && !self.builtin_mode && !inout {
-                    self.error(
-                        Code::BadArraySize,
-                        d.span,
+                // A shader storage block's last member may be an array of
+                // unknown size: its size is what the bound buffer holds
+                // (GL_ARB_shader_storage_buffer_object).
+                let runtime_sized = buffer
+                    && mi == last_member
+                    && std::ptr::eq(d, m.declarators.last().unwrap_or(d));
+                if mty.array == Some(ArraySize::Unsized)
+                    && !self.builtin_mode
+                    && !inout
+                    && !runtime_sized
+                {
+                    let msg = if buffer {
+                        format!("member `{}' of a shader storage block must have an array size; only the last member may leave it out", d.name.name)
+                    } else {
                         format!(
                             "uniform block member `{}' must have an array size",
                             d.name.name
-                        ),
-                    );
+                        )
+                    };
+                    self.error(Code::BadArraySize, d.span, msg);
                 }
                 if self.contains_sampler(mty) {
                     self.error(
@@ -818,6 +884,8 @@ impl Analyzer {
                     interpolation,
                     centroid,
                     invariant,
+                    readonly: memory.readonly.is_some(),
+                    writeonly: memory.writeonly.is_some(),
                     implicit_size: 0,
                 });
             }

@@ -84,6 +84,7 @@ impl Analyzer {
             (Some(Qualifier::Attribute), _) => Storage::Attribute,
             (Some(Qualifier::Varying), _) => Storage::Varying,
             (Some(Qualifier::Shared), _) => Storage::Shared,
+            (Some(Qualifier::Buffer), _) => Storage::Buffer,
             // A compute shader's only inputs are its built-in IDs.
             (Some(Qualifier::In), Stage::Compute) => Storage::Varying,
             (Some(Qualifier::In), Stage::Vertex) => Storage::Attribute,
@@ -461,6 +462,18 @@ impl Analyzer {
                 q.storage,
                 Some(Qualifier::In | Qualifier::Out | Qualifier::Varying | Qualifier::Attribute)
             );
+            if q.storage == Some(Qualifier::Buffer) {
+                self.error(
+                    Code::BadQualifier,
+                    q.storage_span,
+                    format!(
+                        "`buffer' variable `{name}' must be a member of a shader storage block"
+                    ),
+                )
+                .notes
+                .push("declare it inside one: `buffer B { float v; };'".into());
+                return None;
+            }
             if self.stage == Stage::Compute && stage_io && !self.builtin_mode {
                 self.error(
                     Code::StageMismatch,

@@ -74,6 +74,7 @@ impl Analyzer {
     /// indexed with a constant.
     pub fn rvalue(&mut self, e: &ast::Expr) -> ir::Expr {
         let v = self.expr_any(e);
+        self.check_memory_access(&v, false, true);
         self.reject_unsized(v)
     }
 

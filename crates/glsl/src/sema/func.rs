@@ -674,20 +674,19 @@ impl Analyzer {
         {
             root = base;
         }
-        let shared = match root.kind {
-            ExprKind::Global(g) => self
-                .module
-                .globals
-                .get(g.0 as usize)
-                .is_some_and(|g| g.storage == ir::Storage::Shared),
-            _ => false,
-        };
+        let shared =
+            match root.kind {
+                ExprKind::Global(g) => self.module.globals.get(g.0 as usize).is_some_and(|g| {
+                    matches!(g.storage, ir::Storage::Shared | ir::Storage::Buffer)
+                }),
+                _ => false,
+            };
         if !shared {
             self.error(
                 Code::TypeMismatch,
                 mem.span,
                 format!(
-                    "the first argument of `{}' must be a `shared' variable (or an element or member of one)",
+                    "the first argument of `{}' must be a `shared' or buffer variable (or an element or member of one)",
                     f.name()
                 ),
             )

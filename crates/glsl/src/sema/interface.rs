@@ -51,6 +51,52 @@ pub(crate) struct VarQuals {
     pub interpolation: Option<(Interpolation, Span)>,
     pub precision: Option<Span>,
     pub layout: LayoutQuals,
+    /// Memory qualifiers (GL_ARB_shader_storage_buffer_object).
+    pub memory: MemoryQuals,
+}
+
+/// The memory qualifiers of a buffer variable or block (GLSL 4.30 §4.10),
+/// each with where it was written.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct MemoryQuals {
+    pub coherent: Option<Span>,
+    pub volatile: Option<Span>,
+    pub restrict: Option<Span>,
+    pub readonly: Option<Span>,
+    pub writeonly: Option<Span>,
+}
+
+impl MemoryQuals {
+    /// The first memory qualifier written, if any.
+    pub fn first(&self) -> Option<Span> {
+        [
+            self.coherent,
+            self.volatile,
+            self.restrict,
+            self.readonly,
+            self.writeonly,
+        ]
+        .into_iter()
+        .flatten()
+        .min_by_key(|s| s.start)
+    }
+
+    /// Records memory qualifier `sq`; false (nothing recorded) for any
+    /// other qualifier. Repeating one is allowed (§4.10: "multiple memory
+    /// qualifiers can be used"), and so is `readonly` with `writeonly`
+    /// (memory neither read nor written, only queried).
+    pub fn record(&mut self, sq: &SpannedQualifier) -> bool {
+        let slot = match sq.qualifier {
+            Qualifier::Coherent => &mut self.coherent,
+            Qualifier::Volatile => &mut self.volatile,
+            Qualifier::Restrict => &mut self.restrict,
+            Qualifier::Readonly => &mut self.readonly,
+            Qualifier::Writeonly => &mut self.writeonly,
+            _ => return false,
+        };
+        slot.get_or_insert(sq.span);
+        true
+    }
 }
 
 /// The rank of a qualifier in §4.7's strict order: invariant,
@@ -68,7 +114,13 @@ fn rank(q: Qualifier) -> u8 {
         | Qualifier::In
         | Qualifier::Out
         | Qualifier::Inout
-        | Qualifier::Shared => 3,
+        | Qualifier::Shared
+        | Qualifier::Buffer
+        | Qualifier::Coherent
+        | Qualifier::Volatile
+        | Qualifier::Restrict
+        | Qualifier::Readonly
+        | Qualifier::Writeonly => 3,
         Qualifier::Lowp | Qualifier::Mediump | Qualifier::Highp => 4,
     }
 }
@@ -143,7 +195,8 @@ impl Analyzer {
                 | Qualifier::In
                 | Qualifier::Out
                 | Qualifier::Inout
-                | Qualifier::Shared => {
+                | Qualifier::Shared
+                | Qualifier::Buffer => {
                     let after_varying = i > 0
                         && quals[i - 1].qualifier == Qualifier::Varying
                         && q.storage == Some(Qualifier::Varying);
@@ -253,6 +306,13 @@ impl Analyzer {
                     }
                     q.precision = Some(sq.span);
                 }
+                Qualifier::Coherent
+                | Qualifier::Volatile
+                | Qualifier::Restrict
+                | Qualifier::Readonly
+                | Qualifier::Writeonly => {
+                    q.memory.record(sq);
+                }
                 Qualifier::Layout => {
                     if !global {
                         self.error(
@@ -274,6 +334,21 @@ impl Analyzer {
                     self.layout_ids(sq, &mut q.layout);
                 }
             }
+        }
+        if let Some(span) = q
+            .memory
+            .first()
+            .filter(|_| q.storage != Some(Qualifier::Buffer))
+        {
+            // GLSL 4.30 §4.10: "only supported in the declarations of
+            // image variables, buffer variables, and shader storage
+            // blocks" (shaderbox has no image variables).
+            self.error(
+                Code::BadQualifier,
+                span,
+                "memory qualifiers apply only to shader storage blocks and their members",
+            );
+            q.memory = MemoryQuals::default();
         }
         if !global {
             if let Some(s) = q.storage.filter(|s| *s != Qualifier::Const) {
@@ -560,8 +635,11 @@ impl Analyzer {
             }
             "binding" => {
                 // Which declarations may take it is judged by the
-                // declaration (`var_binding`, uniform blocks).
-                if !self.require(Feature::LanguagePack420, "`layout(binding)'", span) {
+                // declaration (`var_binding`, blocks); shader storage
+                // blocks take it with their own extension.
+                if !self.lang.allows(Feature::StorageBuffers)
+                    && !self.require(Feature::LanguagePack420, "`layout(binding)'", span)
+                {
                     return;
                 }
                 if let Some(v) = id.value.as_ref().and_then(|e| self.layout_value(e)) {
@@ -579,8 +657,15 @@ impl Analyzer {
                     }
                 }
             }
+            "std430" => {
+                if self.require(Feature::StorageBuffers, "`std430'", span) {
+                    out.block_layout = Some((BlockLayout::Std430, span));
+                }
+            }
             "std140" | "shared" | "packed" => {
-                if !self.require(Feature::UniformBlocks, &format!("`{lower}'"), span) {
+                if !self.lang.allows(Feature::StorageBuffers)
+                    && !self.require(Feature::UniformBlocks, &format!("`{lower}'"), span)
+                {
                     return;
                 }
                 let l = match lower.as_str() {
@@ -591,7 +676,9 @@ impl Analyzer {
                 out.block_layout = Some((l, span));
             }
             "row_major" | "column_major" => {
-                if !self.require(Feature::UniformBlocks, &format!("`{lower}'"), span) {
+                if !self.lang.allows(Feature::StorageBuffers)
+                    && !self.require(Feature::UniformBlocks, &format!("`{lower}'"), span)
+                {
                     return;
                 }
                 out.row_major = Some((lower == "row_major", span));
@@ -655,6 +742,13 @@ impl Analyzer {
     /// (every element of an array, GL_ARB_shading_language_420pack).
     pub(crate) fn var_binding(&mut self, q: &VarQuals, ty: Type) -> Option<u32> {
         let (v, span) = q.layout.binding?;
+        if !self.require(
+            Feature::LanguagePack420,
+            "`layout(binding)' on a sampler",
+            span,
+        ) {
+            return None;
+        }
         let (leaf, n) = self.array_leaf(ty);
         if q.storage != Some(Qualifier::Uniform) || !leaf.is_sampler() {
             self.error(

@@ -747,4 +747,6 @@ mod pack420_tests;
 #[cfg(test)]
 mod per_vertex_in_tests;
 #[cfg(test)]
+mod storage_tests;
+#[cfg(test)]
 mod tests;
