@@ -1,8 +1,7 @@
 //! Fuzzes the preprocessor alone (`glsl::pp::preprocess` over the raw
 //! lexer), which the `compile` target leaves after the first error it
-//! reports. The first byte is the control byte of the `compile` target
-//! (bit 0 the stage, bit 1 set = a core-only context, bits 2-4 the
-//! default version as an index into `Version::ALL`); the rest is split at
+//! reports. The first byte is the control byte of the GLSL targets
+//! (`common/control.rs`: stage, context, default version); the rest is split at
 //! every NUL byte into separate source strings, as `glShaderSource` with a
 //! count above one passes them (each lossily decoded). Every token's and
 //! diagnostic's position is mapped back through the `#line` table and the
@@ -12,21 +11,19 @@
 use glsl::diag::render_info_log;
 use glsl::pp::{preprocess, PpOptions};
 use glsl::source::SourceMap;
-use glsl::{Stage, Version};
 use libfuzzer_sys::fuzz_target;
+
+#[path = "common/control.rs"]
+mod control;
 
 fuzz_target!(|data: &[u8]| {
     let Some((&first, rest)) = data.split_first() else {
         return;
     };
-    let stage = if first & 1 == 0 {
-        Stage::Vertex
-    } else {
-        Stage::Fragment
-    };
-    let mut opts = PpOptions::new(stage);
-    opts.compatibility_context = first & 2 == 0;
-    if let Some(&v) = Version::ALL.get(usize::from(first >> 2 & 7)) {
+    let c = control::control(first);
+    let mut opts = PpOptions::new(c.stage);
+    opts.compatibility_context = c.compatibility_context;
+    if let Some(v) = c.default_version {
         opts.default_version = v;
     }
     let strings: Vec<String> = rest
