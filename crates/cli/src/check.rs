@@ -258,7 +258,7 @@ fn read_inputs(args: &Args) -> Result<Vec<Input>, (Exit, String)> {
                     Exit::Misuse,
                     format!(
                         "`{}' looks like a {what} shader, which shaderbox does not have; \
-                         use --stage vertex|geometry|fragment if it is not",
+                         use --stage vertex|geometry|fragment|compute if it is not",
                         path.display()
                     ),
                 ))
@@ -268,7 +268,7 @@ fn read_inputs(args: &Args) -> Result<Vec<Input>, (Exit, String)> {
                     Exit::Misuse,
                     format!(
                     "cannot tell the stage of `{}' from its name; name it .vert, .geom or .frag, \
-                         or pass --stage vertex|geometry|fragment",
+                         or pass --stage vertex|geometry|fragment|compute",
                     path.display()
                 ),
                 ))

@@ -43,10 +43,24 @@ def test_paths_and_stage_from_extension():
     assert "mistakes.frag" in mistakes.text
 
 
+def test_compute_shaders():
+    # The compiler has the compute stage's language (GL_ARB_compute_shader).
+    src = """#version 330
+#extension GL_ARB_compute_shader : enable
+layout(local_size_x = 4) in;
+shared uint total;
+void main() { atomicAdd(total, gl_LocalInvocationIndex); barrier(); }
+"""
+    assert shaderbox.check(src, stage="compute").ok
+    bad = shaderbox.check(src.replace("layout(local_size_x = 4) in;", "out int o;"), stage="compute")
+    assert not bad.ok
+    assert "no user-defined inputs or outputs" in bad.errors[0].message
+
+
 def test_bad_arguments():
     with pytest.raises(ValueError, match="needs stage"):
         shaderbox.check("void main() {}")
-    with pytest.raises(ValueError, match="stage .tessellation. is not 'vertex', 'geometry' or"):
+    with pytest.raises(ValueError, match="stage .tessellation. is not 'vertex', 'geometry', 'fragment' or 'compute'"):
         shaderbox.check("void main() {}", stage="tessellation")
     with pytest.raises(ValueError, match="version 135 is not a GLSL version"):
         shaderbox.check("void main() {}", stage="vertex", version=135)
