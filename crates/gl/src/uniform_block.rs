@@ -1,5 +1,6 @@
 //! Uniform blocks (GL 3.3 §2.11.4 "Uniform Blocks", GLSL 1.40 §4.3.5.1):
-//! the standard (std140) layout of block members, the active-block records
+//! the standard (std140) layout of block members (its rules are the
+//! language's, `glsl::layout`), the active-block records
 //! of a linked program, the block limits, and the decoding of block
 //! members from buffer bytes. The entry points are
 //! [`crate::program_blocks`].
@@ -14,6 +15,7 @@
 //! store (or no buffer bound) read as 0, which is what Mesa effectively
 //! gives. Row-major matrices are transposed on the way in.
 
+use glsl::layout::{self, Rules};
 use glsl::types::{ArraySize, Base, Scalar, StructDef, Type};
 
 /// GL_MAX_UNIFORM_BLOCK_SIZE in bytes.
@@ -41,80 +43,21 @@ fn array_len(ty: Type) -> Option<u32> {
     }
 }
 
-fn round_up(x: usize, a: usize) -> usize {
-    x.div_ceil(a.max(1)) * a.max(1)
-}
-
-/// Base alignment and size of a value of `ty` in std140 (GL 3.3
-/// §2.11.4 "Standard Uniform Block Layout", rules 1–10).
+/// Base alignment and size of a value of `ty` in std140, the layout every
+/// uniform block gets (`glsl::layout`).
 pub fn std140(ty: Type, structs: &[StructDef], row_major: bool) -> (usize, usize) {
-    if let Some(n) = array_len(ty) {
-        let (align, stride) = array_layout(ty.element(), structs, row_major);
-        return (align, stride * n as usize);
-    }
-    match ty.base {
-        Base::Scalar(_) => (4, 4),
-        Base::Vector(_, 2) => (8, 8),
-        Base::Vector(_, n) => (16, 4 * n as usize),
-        // Rules 5 and 7: an array of column (or row) vectors, each
-        // rounded up to a vec4.
-        Base::Matrix { cols, rows } => {
-            let n = if row_major { rows } else { cols };
-            (MATRIX_STRIDE, MATRIX_STRIDE * n as usize)
-        }
-        Base::Struct(id) => {
-            let Some(s) = structs.get(id.0 as usize) else {
-                return (16, 0);
-            };
-            let members: Vec<Type> = s.members.iter().map(|m| m.ty).collect();
-            let (_, end, align) = member_offsets(&members, structs, row_major);
-            (align, round_up(end, align))
-        }
-        _ => (4, 0),
-    }
+    layout::size_align(ty, structs, row_major, Rules::Std140)
 }
 
-/// Alignment and stride of the elements of an array of `elem` (rules 4,
-/// 6, 8, 10: the element's alignment rounded up to a vec4's).
+/// Alignment and stride of the elements of an array of `elem` in std140.
 pub fn array_layout(elem: Type, structs: &[StructDef], row_major: bool) -> (usize, usize) {
-    let (a, size) = std140(elem, structs, row_major);
-    let align = round_up(a, 16);
-    (align, round_up(size, align))
-}
-
-/// Offsets of consecutive members, the end of the last and the
-/// alignment of the whole (rule 9: at least a vec4's).
-fn member_offsets(
-    members: &[Type],
-    structs: &[StructDef],
-    row_major: bool,
-) -> (Vec<usize>, usize, usize) {
-    let mut offsets = Vec::with_capacity(members.len());
-    let mut at = 0;
-    let mut max_align = 16;
-    for &ty in members {
-        let (align, size) = std140(ty, structs, row_major);
-        at = round_up(at, align);
-        offsets.push(at);
-        at += size;
-        max_align = max_align.max(align);
-    }
-    (offsets, at, round_up(max_align, 16))
+    layout::array_layout(elem, structs, row_major, Rules::Std140)
 }
 
 /// Offsets of a block's members (each with its own row-major flag) and
-/// the block's data size (GL_UNIFORM_BLOCK_DATA_SIZE: the end of the
-/// last member rounded up to a vec4).
+/// the block's data size (GL_UNIFORM_BLOCK_DATA_SIZE), in std140.
 pub fn block_offsets(members: &[(Type, bool)], structs: &[StructDef]) -> (Vec<usize>, usize) {
-    let mut offsets = Vec::with_capacity(members.len());
-    let mut at = 0;
-    for &(ty, rm) in members {
-        let (align, size) = std140(ty, structs, rm);
-        at = round_up(at, align);
-        offsets.push(at);
-        at += size;
-    }
-    (offsets, round_up(at, 16))
+    layout::block_offsets(members, structs, Rules::Std140)
 }
 
 /// Appends the executor words of a value of `ty` stored at byte `off` of
@@ -168,9 +111,9 @@ pub fn decode(
             let Some(s) = structs.get(id.0 as usize) else {
                 return;
             };
-            let members: Vec<Type> = s.members.iter().map(|m| m.ty).collect();
-            let (offsets, _, _) = member_offsets(&members, structs, row_major);
-            for (ty, o) in members.into_iter().zip(offsets) {
+            let members: Vec<(Type, bool)> = s.members.iter().map(|m| (m.ty, row_major)).collect();
+            let (offsets, _) = block_offsets(&members, structs);
+            for ((ty, _), o) in members.into_iter().zip(offsets) {
                 decode(ty, structs, row_major, off + o, bytes, out);
             }
         }

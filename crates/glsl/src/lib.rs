@@ -92,6 +92,7 @@ pub mod consteval;
 pub mod diag;
 pub mod ir;
 pub mod lang;
+pub mod layout;
 pub mod lex;
 pub mod limits;
 pub mod link;
