@@ -324,12 +324,7 @@ impl Analyzer {
             return error_expr(span);
         }
         if let (None, Base::Struct(id)) = (t.array, t.base) {
-            let members = self
-                .module
-                .structs
-                .get(id.0 as usize)
-                .map(|s| s.members.clone())
-                .unwrap_or_default();
+            let members = self.struct_members(id);
             match members.iter().position(|m| m.name == name.name.as_str()) {
                 Some(i) => {
                     let ty = members[i].ty;
@@ -365,10 +360,15 @@ impl Analyzer {
                 }
             }
         }
-        if t.is_scalar() && self.lang.allows(crate::lang::Feature::LanguagePack420) {
-            return self.scalar_swizzle(base, name, span, lvalue);
-        }
-        let Some(n) = t.vector_size().filter(|_| t.is_vector()) else {
+        // GL_ARB_shading_language_420pack: `x`, `r` and `s` name a
+        // scalar's only component.
+        let scalar = t.is_scalar() && self.lang.allows(crate::lang::Feature::LanguagePack420);
+        let size = if scalar {
+            Some(1)
+        } else {
+            t.vector_size().filter(|_| t.is_vector())
+        };
+        let Some(n) = size else {
             let msg = if t.is_scalar() {
                 format!(
                     "cannot select `.{}' of a scalar {} in GLSL {}",
@@ -404,6 +404,14 @@ impl Analyzer {
                 }
                 let s = t.scalar().unwrap_or(Scalar::Float);
                 let ty = Type::vec(s, count);
+                if scalar {
+                    // One component is the scalar itself (an l-value where
+                    // the scalar is one), more the vector made from it.
+                    return match count {
+                        1 => ir::Expr { span, ..base },
+                        _ => self.fold(mk(K::Construct { args: vec![base] }, ty, span)),
+                    };
+                }
                 self.fold(mk(
                     K::Swizzle {
                         base: Box::new(base),
@@ -419,42 +427,6 @@ impl Analyzer {
                 error_expr(span)
             }
         }
-    }
-
-    /// A swizzle of a scalar (GL_ARB_shading_language_420pack: `x`, `r`
-    /// and `s` name its only component): one component is the scalar
-    /// itself (an l-value where the scalar is one), more are the vector
-    /// constructed from it.
-    fn scalar_swizzle(
-        &mut self,
-        base: ir::Expr,
-        name: &ast::Ident,
-        span: Span,
-        lvalue: bool,
-    ) -> ir::Expr {
-        let (_, count) = match parse_swizzle(&name.name, 1) {
-            Ok(c) => c,
-            Err(msg) => {
-                self.error(Code::BadSwizzle, name.span, msg);
-                return error_expr(span);
-            }
-        };
-        if count == 1 {
-            return ir::Expr { span, ..base };
-        }
-        if lvalue {
-            self.error(
-                Code::NotAnLvalue,
-                name.span,
-                format!(
-                    "swizzle `{}' repeats a component and cannot be assigned",
-                    name.name
-                ),
-            );
-            return error_expr(span);
-        }
-        let ty = Type::vec(base.ty.scalar().unwrap_or(Scalar::Float), count);
-        self.fold(mk(K::Construct { args: vec![base] }, ty, span))
     }
 
     /// `a.length()` (GLSL 1.20 §5.7 for arrays; GL_ARB_shading_language_420pack

@@ -8,7 +8,7 @@ use crate::ir::Stage;
 use crate::link::link;
 use crate::{compile, CompileOptions, Shader};
 
-use super::interface::tests::{fails, ok};
+use super::interface::tests::{fails, global_type, ok};
 
 const EXT: &str = "#extension GL_ARB_arrays_of_arrays : enable\n";
 
@@ -19,13 +19,6 @@ fn shader(stage: Stage, version: u32, body: &str) -> Shader {
 
 fn vert(body: &str) -> Shader {
     shader(Stage::Vertex, 120, body)
-}
-
-/// The type of global `name`, spelled.
-fn global_type(s: &Shader, name: &str) -> String {
-    let m = s.module.as_ref().expect("compiled");
-    let g = m.globals.iter().find(|g| g.name == name).expect("declared");
-    m.type_name(g.ty)
 }
 
 #[test]

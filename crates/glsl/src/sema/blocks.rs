@@ -793,7 +793,8 @@ impl Analyzer {
                 .push("define the struct before the block and name it here".into());
             }
             let ty = self.resolve_type(&m.ty);
-            for d in &m.declarators {
+            let last_declarator = m.declarators.len().saturating_sub(1);
+            for (di, d) in m.declarators.iter().enumerate() {
                 let mty = self.apply_array(ty, d.array.as_ref());
                 if mty.is_error() {
                     continue;
@@ -814,9 +815,7 @@ impl Analyzer {
                 // A shader storage block's last member may be an array of
                 // unknown size: its size is what the bound buffer holds
                 // (GL_ARB_shader_storage_buffer_object).
-                let runtime_sized = buffer
-                    && mi == last_member
-                    && std::ptr::eq(d, m.declarators.last().unwrap_or(d));
+                let runtime_sized = buffer && mi == last_member && di == last_declarator;
                 if mty.array == Some(ArraySize::Unsized)
                     && !self.builtin_mode
                     && !inout

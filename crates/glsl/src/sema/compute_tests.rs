@@ -8,7 +8,7 @@ use crate::ir::{ConstScalar, Stage, Storage};
 use crate::link::link;
 use crate::{compile, CompileOptions, Shader};
 
-use super::interface::tests::{fails, ok};
+use super::interface::tests::{fails, global, ok};
 
 const EXT: &str = "#extension GL_ARB_compute_shader : enable\n";
 
@@ -100,26 +100,19 @@ void main() {
 }",
     );
     ok(&s);
-    let m = s.module.as_ref().expect("compiled");
-    let storage = |n: &str| m.globals.iter().find(|g| g.name == n).map(|g| g.storage);
-    assert_eq!(storage("tile"), Some(Storage::Shared));
-    assert_eq!(storage("gl_GlobalInvocationID"), Some(Storage::Varying));
+    assert_eq!(global(&s, "tile").storage, Storage::Shared);
+    assert_eq!(
+        global(&s, "gl_GlobalInvocationID").storage,
+        Storage::Varying
+    );
     let s = comp(
         "layout(local_size_x = 1) in;
 const int z = gl_MaxComputeWorkGroupSize.z * gl_MaxComputeWorkGroupCount.x;
 void main() { }",
     );
     ok(&s);
-    let m = s.module.as_ref().expect("compiled");
-    let z = m
-        .globals
-        .iter()
-        .find(|g| g.name == "z")
-        .and_then(|g| g.init.as_ref());
-    assert_eq!(
-        z.map(|c| c.components.clone()),
-        Some(vec![ConstScalar::Int(64 * 65535)])
-    );
+    let z = global(&s, "z").init.as_ref().map(|c| c.components.clone());
+    assert_eq!(z, Some(vec![ConstScalar::Int(64 * 65535)]));
 }
 
 #[test]

@@ -62,12 +62,7 @@ impl Analyzer {
             }
             out
         } else if let Base::Struct(id) = ty.base {
-            let members = self
-                .module
-                .structs
-                .get(id.0 as usize)
-                .map(|s| s.members.clone())
-                .unwrap_or_default();
+            let members = self.struct_members(id);
             if members.len() != vals.len() {
                 self.error(
                     Code::BadConstructor,
@@ -132,9 +127,10 @@ impl Analyzer {
         }
         let tn = self.tn(ty);
         let mut ty = ty;
-        // The type each initializer of the list initializes, and how the
-        // value is wrapped (the row struct of an array of arrays).
-        let (parts, row_of): (Vec<(Type, String)>, Option<Type>) = if ty.is_array() {
+        // The type each initializer of the list initializes (with a struct
+        // member's name), what one is called, and how the value is
+        // wrapped (the row struct of an array of arrays).
+        let (parts, unit, row_of) = if ty.is_array() {
             let et = ty.element();
             let n = match ty.array {
                 Some(ArraySize::Sized(n)) => n as usize,
@@ -144,55 +140,42 @@ impl Analyzer {
                 }
             };
             let row = self.array_row_member(et);
-            let part = row.unwrap_or(et);
-            (vec![(part, "element".into()); n], row.map(|_| et))
+            (
+                vec![(row.unwrap_or(et), None); n],
+                "element",
+                row.map(|_| et),
+            )
         } else {
             match ty.base {
-                Base::Vector(s, n) => (
-                    vec![(Type::vec(s, 1), "component".into()); n as usize],
-                    None,
-                ),
-                Base::Matrix { cols, rows } => (
-                    vec![
-                        (
-                            Type::vec(crate::types::Scalar::Float, rows),
-                            "column".into()
-                        );
-                        cols as usize
-                    ],
-                    None,
-                ),
-                Base::Struct(id) => {
-                    let members = self
-                        .module
-                        .structs
-                        .get(id.0 as usize)
-                        .map(|s| s.members.clone())
-                        .unwrap_or_default();
-                    (
-                        members
-                            .iter()
-                            .map(|m| (m.ty, format!("member `{}'", m.name)))
-                            .collect(),
-                        None,
-                    )
+                Base::Vector(s, n) => {
+                    (vec![(Type::vec(s, 1), None); n as usize], "component", None)
                 }
+                Base::Matrix { cols, rows } => (
+                    vec![(Type::vec(crate::types::Scalar::Float, rows), None); cols as usize],
+                    "column",
+                    None,
+                ),
+                Base::Struct(id) => (
+                    self.struct_members(id)
+                        .into_iter()
+                        .map(|m| (m.ty, Some(m.name)))
+                        .collect(),
+                    "member",
+                    None,
+                ),
                 _ => {
                     self.error(
-                        Code::BadConstructor,
-                        span,
-                        format!("an initializer list needs a vector, matrix, array or struct; `{tn}' is none"),
-                    )
-                    .notes
-                    .push("initialize it with an expression".into());
+                            Code::BadConstructor,
+                            span,
+                            format!("an initializer list needs a vector, matrix, array or struct; `{tn}' is none"),
+                        )
+                        .notes
+                        .push("initialize it with an expression".into());
                     return error_expr(span);
                 }
             }
         };
         if parts.len() != items.len() {
-            let unit = parts.first().map_or("initializer", |(_, u)| {
-                u.split_whitespace().next().unwrap_or("initializer")
-            });
             self.error(
                 Code::BadConstructor,
                 span,
@@ -207,8 +190,15 @@ impl Analyzer {
             return error_expr(span);
         }
         let mut args = Vec::new();
-        for ((part, unit), item) in parts.iter().zip(items) {
-            let what = format!("cannot initialize {unit} of {tn} (type {})", self.tn(*part));
+        for ((part, member), item) in parts.iter().zip(items) {
+            let which = match member {
+                Some(name) => format!("member `{name}'"),
+                None => unit.to_string(),
+            };
+            let what = format!(
+                "cannot initialize {which} of {tn} (type {})",
+                self.tn(*part)
+            );
             let v = self.initializer(*part, item, &what);
             if v.ty.is_error() {
                 return error_expr(span);

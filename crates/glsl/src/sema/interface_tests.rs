@@ -30,12 +30,18 @@ pub(crate) fn fails(s: &Shader, code: Code) {
     assert!(codes.contains(&code), "{codes:?}\n{}", s.info_log());
 }
 
-fn global<'a>(s: &'a Shader, name: &str) -> &'a crate::ir::Global {
+pub(crate) fn global<'a>(s: &'a Shader, name: &str) -> &'a crate::ir::Global {
     let m = s.module.as_ref().expect("compiled");
     m.globals
         .iter()
         .find(|g| g.name == name)
         .expect("global exists")
+}
+
+/// The type of global `name`, spelled.
+pub(crate) fn global_type(s: &Shader, name: &str) -> String {
+    let m = s.module.as_ref().expect("compiled");
+    m.type_name(global(s, name).ty)
 }
 
 #[test]

@@ -9,7 +9,7 @@ use crate::ir::{ConstScalar, Stage};
 use crate::link::link;
 use crate::{compile, CompileOptions, Shader};
 
-use super::interface::tests::{fails, ok};
+use super::interface::tests::{fails, global, global_type, ok};
 
 const EXT: &str = "#extension GL_ARB_shading_language_420pack : enable\n";
 
@@ -24,9 +24,7 @@ fn frag(body: &str) -> Shader {
 
 /// The constant value of global `name`, as floats.
 fn const_floats(s: &Shader, name: &str) -> Vec<f32> {
-    let m = s.module.as_ref().expect("compiled");
-    let g = m.globals.iter().find(|g| g.name == name).expect("declared");
-    let c = g.init.as_ref().expect("constant");
+    let c = global(s, name).init.as_ref().expect("constant");
     c.components
         .iter()
         .map(|c| match c {
@@ -36,12 +34,6 @@ fn const_floats(s: &Shader, name: &str) -> Vec<f32> {
             ConstScalar::Bool(b) => f32::from(u8::from(*b)),
         })
         .collect()
-}
-
-fn global_type(s: &Shader, name: &str) -> String {
-    let m = s.module.as_ref().expect("compiled");
-    let g = m.globals.iter().find(|g| g.name == name).expect("declared");
-    m.type_name(g.ty)
 }
 
 #[test]
@@ -270,9 +262,8 @@ layout(std140, binding = 5) uniform B { vec4 c; } b[2];
 void main() { gl_FragColor = texture(t[1], vec2(0.0)) + b[1].c; }",
     );
     ok(&s);
+    assert_eq!(global(&s, "t").binding, Some(3));
     let m = s.module.as_ref().expect("compiled");
-    let t = m.globals.iter().find(|g| g.name == "t").expect("t");
-    assert_eq!(t.binding, Some(3));
     assert_eq!(
         m.blocks
             .iter()

@@ -269,6 +269,16 @@ impl Analyzer {
         self.module.row_member(ty)
     }
 
+    /// The members of struct `id` (none for an unknown id, which only a
+    /// front-end bug could give).
+    pub(crate) fn struct_members(&self, id: crate::types::StructId) -> Vec<StructMember> {
+        self.module
+            .structs
+            .get(id.0 as usize)
+            .map(|s| s.members.clone())
+            .unwrap_or_default()
+    }
+
     /// The innermost element type of an array (of arrays) and how many
     /// of them it holds: `(sampler2D, 8)` for `sampler2D t[2][2][2]`,
     /// `(ty, 1)` for a type that is not an array. An unsized dimension
