@@ -6,9 +6,10 @@
 # target. The other targets' seeds (fuzz/corpus/TARGET/) are hand-made
 # and kept in git as they are. Each corpus file is one
 # control byte (bits 0-1: 0 = vertex, 1 = fragment, 2 = geometry,
-# 3 = compute; the other bits as fuzz/fuzz_targets/compile.rs reads them,
-# left 0 here: a compatibility context, default version 1.10) followed by
-# the shader text.
+# 3 = compute; 0x40 and 0x41 the tessellation control and evaluation
+# stages; the other bits as fuzz/fuzz_targets/common/control.rs reads
+# them, left 0 here: a compatibility context, default version 1.10)
+# followed by the shader text.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="$root/fuzz/corpus/compile"
@@ -24,20 +25,23 @@ add() {
         *.frag) byte='\001' ;;
         *.geom) byte='\002' ;;
         *.comp) byte='\003' ;;
+        *.tesc) byte='\100' ;;
+        *.tese) byte='\101' ;;
         *) return ;;
     esac
     local name
     name="$(sha1sum "$f" | cut -c1-16)"
     { printf "$byte"; cat "$f"; } >"${2:-$out}/$name"
 }
-while IFS= read -r -d '' f; do add "$f"; done < <(find "$root/crates/glsl/tests" "$root/examples" "$root/fuzz/seeds" \( -name '*.vert' -o -name '*.frag' -o -name '*.geom' -o -name '*.comp' \) -print0)
+while IFS= read -r -d '' f; do add "$f"; done < <(find "$root/crates/glsl/tests" "$root/examples" "$root/fuzz/seeds" \( -name '*.vert' -o -name '*.frag' -o -name '*.geom' -o -name '*.comp' -o -name '*.tesc' -o -name '*.tese' \) -print0)
 piglit="${PIGLIT_CACHE:-$root/.piglit}/root/usr/lib/x86_64-linux-gnu/piglit/tests/spec"
 if [ -d "$piglit" ]; then
     # 400 per version folder that is present, in a fixed order.
     for v in glsl-1.10 glsl-1.20 glsl-1.30 glsl-1.40 glsl-1.50 glsl-3.30 \
-        arb_shading_language_420pack arb_compute_shader arb_shader_storage_buffer_object; do
+        arb_shading_language_420pack arb_compute_shader arb_shader_storage_buffer_object \
+        arb_tessellation_shader; do
         [ -d "$piglit/$v" ] || continue
-        while IFS= read -r -d '' f; do add "$f" "$piglit_out"; done < <(find "$piglit/$v" \( -name '*.vert' -o -name '*.frag' -o -name '*.geom' -o -name '*.comp' \) -print0 | sort -z | head -z -n 400)
+        while IFS= read -r -d '' f; do add "$f" "$piglit_out"; done < <(find "$piglit/$v" \( -name '*.vert' -o -name '*.frag' -o -name '*.geom' -o -name '*.comp' -o -name '*.tesc' -o -name '*.tese' \) -print0 | sort -z | head -z -n 400)
     done
     # 150 execution tests per version folder, the smallest first (under
     # 4 KB: the target's inputs stay short), in a fixed order.

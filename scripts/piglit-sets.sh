@@ -20,7 +20,7 @@ piglit_fetched() {
 }
 
 piglit_legacy_folders="glsl-1.10 glsl-1.20"
-piglit_glsl3_folders="glsl-1.30 glsl-1.40 glsl-1.50 glsl-3.30 arb_geometry_shader4 arb_explicit_attrib_location arb_uniform_buffer_object arb_arrays_of_arrays arb_shading_language_packing arb_texture_cube_map_array arb_shading_language_420pack arb_compute_shader arb_shader_storage_buffer_object"
+piglit_glsl3_folders="glsl-1.30 glsl-1.40 glsl-1.50 glsl-3.30 arb_geometry_shader4 arb_explicit_attrib_location arb_uniform_buffer_object arb_arrays_of_arrays arb_shading_language_packing arb_texture_cube_map_array arb_shading_language_420pack arb_compute_shader arb_shader_storage_buffer_object arb_tessellation_shader"
 
 # piglit_folders SET: prints the folders of SET on one line; fails (status
 # 1, nothing printed) for an unknown set.

@@ -118,6 +118,8 @@ fn parse_glsl_version(text: &str) -> Result<Version, String> {
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum StageArg {
     Vertex,
+    TessControl,
+    TessEvaluation,
     Geometry,
     Fragment,
     Compute,
@@ -127,6 +129,8 @@ impl From<StageArg> for Stage {
     fn from(s: StageArg) -> Stage {
         match s {
             StageArg::Vertex => Stage::Vertex,
+            StageArg::TessControl => Stage::TessControl,
+            StageArg::TessEvaluation => Stage::TessEvaluation,
             StageArg::Geometry => Stage::Geometry,
             StageArg::Fragment => Stage::Fragment,
             StageArg::Compute => Stage::Compute,
@@ -253,22 +257,12 @@ fn read_inputs(args: &Args) -> Result<Vec<Input>, (Exit, String)> {
         let stage = match (args.stage, stage_from_path(path)) {
             (Some(s), _) => s.into(),
             (None, StageGuess::Known(s)) => s,
-            (None, StageGuess::Unsupported(what)) => {
-                return Err((
-                    Exit::Misuse,
-                    format!(
-                        "`{}' looks like a {what} shader, which shaderbox does not have; \
-                         use --stage vertex|geometry|fragment|compute if it is not",
-                        path.display()
-                    ),
-                ))
-            }
             (None, StageGuess::Unknown) => {
                 return Err((
                     Exit::Misuse,
                     format!(
-                    "cannot tell the stage of `{}' from its name; name it .vert, .geom or .frag, \
-                         or pass --stage vertex|geometry|fragment|compute",
+                    "cannot tell the stage of `{}' from its name; name it .vert, .tesc, .tese, .geom, .frag or .comp, \
+                         or pass --stage vertex|tess-control|tess-evaluation|geometry|fragment|compute",
                     path.display()
                 ),
                 ))

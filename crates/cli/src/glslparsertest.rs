@@ -54,6 +54,7 @@ const SUPPORTED_EXTENSIONS: &[&str] = &[
     "GL_ARB_separate_shader_objects",
     "GL_ARB_compute_shader",
     "GL_ARB_shader_storage_buffer_object",
+    "GL_ARB_tessellation_shader",
 ];
 
 /// Whether a test of GLSL `version` can use extension `name`: one of
@@ -224,12 +225,6 @@ pub fn run(args: &Args) -> ExitCode {
 fn evaluate(args: &Args) -> Outcome {
     let stage = match stage_from_path(&args.file) {
         StageGuess::Known(s) => s,
-        StageGuess::Unsupported(what) => {
-            return Outcome::new(
-                Verdict::Skip,
-                format!("{what} shaders need OpenGL 4.0 or later; shaderbox implements up to 3.3"),
-            )
-        }
         StageGuess::Unknown => {
             return Outcome::new(
                 Verdict::Fail,
@@ -317,9 +312,9 @@ fn evaluate(args: &Args) -> Outcome {
 }
 
 /// Compiles the shader and, when asked, links it alone into a program
-/// (a geometry shader with piglit's dummy vertex shader, `void main() {
-/// gl_Position = vec4(0.0); }` of the test's version, as a program needs
-/// one): whether both succeeded, and the info logs.
+/// (a geometry or tessellation shader with piglit's dummy vertex shader,
+/// `void main() { gl_Position = vec4(0.0); }` of the test's version, as a
+/// program needs one): whether both succeeded, and the info logs.
 fn compile_and_link(
     text: &str,
     stage: Stage,
@@ -340,7 +335,10 @@ fn compile_and_link(
     }
     let dummy;
     let mut objects = vec![&shader];
-    if stage == Stage::Geometry {
+    if matches!(
+        stage,
+        Stage::TessControl | Stage::TessEvaluation | Stage::Geometry
+    ) {
         let source = format!(
             "#version {}\nvoid main() {{ gl_Position = vec4(0.0); }}",
             version.number()

@@ -8,13 +8,12 @@ use std::path::Path;
 pub enum StageGuess {
     /// A stage shaderbox implements.
     Known(Stage),
-    /// A stage of a later GL (`.tesc`, `.tese`, `.comp`).
-    Unsupported(&'static str),
     /// No recognised extension.
     Unknown,
 }
 
 /// The stage from the file extension: `.vert`/`.vs` are vertex shaders,
+/// `.tesc`/`.tese` tessellation control and evaluation shaders,
 /// `.geom`/`.gs` geometry shaders, `.frag`/`.fs` fragment shaders,
 /// `.comp` compute shaders (case-sensitive, as piglit's are).
 pub fn stage_from_path(path: &Path) -> StageGuess {
@@ -22,8 +21,8 @@ pub fn stage_from_path(path: &Path) -> StageGuess {
         Some("vert" | "vs") => StageGuess::Known(Stage::Vertex),
         Some("frag" | "fs") => StageGuess::Known(Stage::Fragment),
         Some("geom" | "gs") => StageGuess::Known(Stage::Geometry),
-        Some("tesc") => StageGuess::Unsupported("tessellation control"),
-        Some("tese") => StageGuess::Unsupported("tessellation evaluation"),
+        Some("tesc") => StageGuess::Known(Stage::TessControl),
+        Some("tese") => StageGuess::Known(Stage::TessEvaluation),
         Some("comp") => StageGuess::Known(Stage::Compute),
         _ => StageGuess::Unknown,
     }
@@ -66,7 +65,8 @@ mod tests {
         assert_eq!(g("b.geom"), StageGuess::Known(Stage::Geometry));
         assert_eq!(g("b.gs"), StageGuess::Known(Stage::Geometry));
         assert_eq!(g("b.comp"), StageGuess::Known(Stage::Compute));
-        assert_eq!(g("b.tesc"), StageGuess::Unsupported("tessellation control"));
+        assert_eq!(g("b.tesc"), StageGuess::Known(Stage::TessControl));
+        assert_eq!(g("b.tese"), StageGuess::Known(Stage::TessEvaluation));
         assert_eq!(g("b.glsl"), StageGuess::Unknown);
         assert_eq!(g("frag"), StageGuess::Unknown);
         assert_eq!(g("b.FRAG"), StageGuess::Unknown);

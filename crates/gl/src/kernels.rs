@@ -26,14 +26,15 @@ impl Kernels {
     pub fn new(program: &glsl::link::Program) -> Result<Kernels, String> {
         let mut k = Kernels::default();
         for s in &program.stages {
-            // (The executor refuses a compute stage, which only a caller
-            // of this crate can link: no context takes GL_COMPUTE_SHADER.)
+            // (The executor refuses compute and tessellation stages, which
+            // only a caller of this crate can link: no context takes
+            // GL_COMPUTE_SHADER or the tessellation shader types.)
             let kernel = Arc::new(exec::Kernel::new(s).map_err(|e| e.to_string())?);
             match s.stage {
                 Stage::Vertex => k.vs = Some(kernel),
                 Stage::Fragment => k.fs = Some(kernel),
                 Stage::Geometry => k.gs = Some(kernel),
-                Stage::Compute => {}
+                Stage::Compute | Stage::TessControl | Stage::TessEvaluation => {}
             }
         }
         Ok(k)

@@ -116,12 +116,13 @@ pub struct ProgramObj {
 
 /// The language extensions the compiler has whose stages no context
 /// runs yet, so no context offers them (`GL_EXTENSIONS` does not list
-/// them and shaders cannot enable them): compute shaders and shader
-/// storage blocks.
+/// them and shaders cannot enable them): compute shaders, shader
+/// storage blocks and the tessellation stages.
 fn withheld_extensions() -> glsl::lang::ExtensionSet {
     let mut set = glsl::lang::ExtensionSet::EMPTY;
     set.set(glsl::lang::Extension::ArbComputeShader, true);
     set.set(glsl::lang::Extension::ArbShaderStorageBufferObject, true);
+    set.set(glsl::lang::Extension::ArbTessellationShader, true);
     set
 }
 

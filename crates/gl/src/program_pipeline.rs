@@ -54,14 +54,14 @@ pub const STAGES: [Stage; 3] = [Stage::Vertex, Stage::Geometry, Stage::Fragment]
 /// GL_TESS_CONTROL_SHADER_BIT | GL_TESS_EVALUATION_SHADER_BIT.
 const TESS_BITS: u32 = GL_TESS_CONTROL_SHADER_BIT | GL_TESS_EVALUATION_SHADER_BIT;
 
-/// The index of `stage` in [`STAGES`]; a compute stage has none (no
-/// pipeline holds one yet).
+/// The index of `stage` in [`STAGES`]; compute and tessellation stages
+/// have none (no pipeline holds one yet).
 fn stage_index(stage: Stage) -> Option<usize> {
     match stage {
         Stage::Vertex => Some(0),
         Stage::Geometry => Some(1),
         Stage::Fragment => Some(2),
-        Stage::Compute => None,
+        Stage::Compute | Stage::TessControl | Stage::TessEvaluation => None,
     }
 }
 
@@ -71,6 +71,8 @@ fn stage_bit(stage: Stage) -> u32 {
         Stage::Geometry => GL_GEOMETRY_SHADER_BIT,
         Stage::Fragment => GL_FRAGMENT_SHADER_BIT,
         Stage::Compute => GL_COMPUTE_SHADER_BIT,
+        Stage::TessControl => GL_TESS_CONTROL_SHADER_BIT,
+        Stage::TessEvaluation => GL_TESS_EVALUATION_SHADER_BIT,
     }
 }
 
@@ -173,7 +175,7 @@ impl Context {
                 Stage::Vertex => kernels.vs.as_deref(),
                 Stage::Geometry => kernels.gs.as_deref(),
                 Stage::Fragment => kernels.fs.as_deref(),
-                Stage::Compute => None,
+                Stage::Compute | Stage::TessControl | Stage::TessEvaluation => None,
             };
             own.is_some_and(|o| std::ptr::eq(o, k)).then_some(e)
         })

@@ -61,6 +61,9 @@ pub enum Qualifier {
     Restrict,
     Readonly,
     Writeonly,
+    /// `patch` (GL_ARB_tessellation_shader): an auxiliary storage
+    /// qualifier of per-patch `in` and `out` variables.
+    Patch,
 }
 
 impl Qualifier {
@@ -89,6 +92,7 @@ impl Qualifier {
             Qualifier::Restrict => "restrict",
             Qualifier::Readonly => "readonly",
             Qualifier::Writeonly => "writeonly",
+            Qualifier::Patch => "patch",
         }
     }
 

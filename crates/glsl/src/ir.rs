@@ -27,9 +27,13 @@
 //!   were: vertex inputs (`attribute`, vertex `in`) are
 //!   [`Storage::Attribute`], vertex outputs and fragment inputs (`varying`,
 //!   vertex `out`, fragment `in`) are [`Storage::Varying`], user fragment
-//!   outputs (fragment `out`) are [`Storage::FragOutput`]; geometry
-//!   inputs (geometry `in`, `varying in`) are [`Storage::GeometryInput`]
-//!   and geometry outputs (`out`, `varying out`) [`Storage::Varying`]; their
+//!   outputs (fragment `out`) are [`Storage::FragOutput`]; the inputs of
+//!   the stages that see whole primitives or patches (geometry `in`,
+//!   `varying in`, tessellation control and evaluation `in`) are
+//!   [`Storage::PerVertexInput`], a tessellation control shader's
+//!   per-vertex `out` arrays [`Storage::PerVertexOutput`], and the other
+//!   outputs of those stages, and the per-patch `patch out` / `patch in`
+//!   ([`Global::patch`]), [`Storage::Varying`]; their
 //!   qualifiers are [`Global::interpolation`], [`Global::centroid`],
 //!   [`Global::invariant`] and [`Global::location`]. Precision qualifiers
 //!   leave no trace;
@@ -47,7 +51,16 @@
 //!   compiled alone its input arrays have the size of the primitive it
 //!   was found valid with, and the linker compiles it again with the
 //!   program's, the linked module's `geometry` then holding the
-//!   parameters.
+//!   parameters;
+//! - the tessellation stages' layouts are in [`Module::tessellation`]:
+//!   the output patch's vertex count of a control shader and the
+//!   primitive mode, spacing, vertex order and point mode of an
+//!   evaluation shader, each as the object declared it (the linker
+//!   requires the vertex count and the mode in the program,
+//!   GL_ARB_tessellation_shader §4.3.8). Per-vertex inputs of both
+//!   stages have gl_MaxPatchVertices elements; a control shader's
+//!   per-vertex outputs have the output patch's size once the object
+//!   declares it (unsized before).
 
 pub mod print;
 
@@ -60,6 +73,13 @@ use serde::Serialize;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 pub enum Stage {
     Vertex,
+    /// GL_ARB_tessellation_shader: one invocation per vertex of the output
+    /// patch, reading the whole input patch. The front end compiles and
+    /// links it; the GL layer does not draw patches.
+    TessControl,
+    /// GL_ARB_tessellation_shader: one invocation per vertex the
+    /// primitive generator makes of a patch.
+    TessEvaluation,
     /// GLSL 1.50 §2.2, and GL_EXT/ARB_geometry_shader4 on 1.10/1.20.
     Geometry,
     Fragment,
@@ -73,6 +93,8 @@ impl Stage {
     pub fn name(self) -> &'static str {
         match self {
             Stage::Vertex => "vertex",
+            Stage::TessControl => "tessellation control",
+            Stage::TessEvaluation => "tessellation evaluation",
             Stage::Geometry => "geometry",
             Stage::Fragment => "fragment",
             Stage::Compute => "compute",
@@ -118,18 +140,27 @@ pub enum Storage {
     Uniform,
     /// Vertex-stage input.
     Attribute,
-    /// Written by the vertex or geometry stage, read (only) by the next
-    /// stage: `varying`, vertex and geometry `out`, fragment `in` (GLSL
+    /// Written by the vertex, tessellation or geometry stage, read (only)
+    /// by the next stage: `varying`, vertex and geometry `out`, fragment `in` (GLSL
     /// 1.30 §4.3.4, §4.3.6). Also the read-only fragment inputs
     /// `gl_FragCoord`, `gl_FrontFacing`, and the geometry stage's
     /// `gl_PrimitiveID`, `gl_Layer` outputs.
     Varying,
-    /// A geometry-shader input (GLSL 1.50 §4.3.4, GL_EXT_geometry_shader4
-    /// `varying in`): read-only; a user input is an array with one
-    /// element per vertex of the input primitive, matched by name with
-    /// the vertex stage's output of the element type. Also the built-ins
-    /// `gl_in[]`, `gl_PrimitiveIDIn` and the EXT form's `gl_PositionIn[]`...
-    GeometryInput,
+    /// An input of a stage that sees a whole primitive or patch: geometry
+    /// (GLSL 1.50 §4.3.4, GL_EXT_geometry_shader4 `varying in`),
+    /// tessellation control and evaluation (GL_ARB_tessellation_shader
+    /// §4.3.4): read-only; a user input is an array with one element per
+    /// vertex of the input primitive or patch, matched by name with the
+    /// previous stage's output of the element type. Also those stages'
+    /// built-in inputs: `gl_in[]`, the EXT form's `gl_PositionIn[]`...,
+    /// and the scalars `gl_PrimitiveIDIn`, `gl_InvocationID`,
+    /// `gl_PatchVerticesIn`, `gl_TessCoord`.
+    PerVertexInput,
+    /// A tessellation control shader's per-vertex output (`out` arrays and
+    /// `gl_out[]`, GL_ARB_tessellation_shader §4.3.6): one element per
+    /// vertex of the output patch, readable by every invocation, written
+    /// by each only at its own vertex (`[gl_InvocationID]`).
+    PerVertexOutput,
     /// A member of a shader storage block (`buffer B { ... };`,
     /// GL_ARB_shader_storage_buffer_object): memory every invocation of a
     /// draw or dispatch reads and writes.
@@ -294,6 +325,12 @@ pub struct Global {
     pub index: Option<u32>,
     /// The interface block this global belongs to (a member, or the
     /// instance of a named block).
+    /// `patch out` of a tessellation control shader or `patch in` of an
+    /// evaluation shader (GL_ARB_tessellation_shader §4.3): one value per
+    /// patch rather than per vertex ([`Storage::Varying`]; a `patch in`
+    /// is read-only).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub patch: bool,
     /// `layout(binding = N)` of a sampler uniform
     /// (GL_ARB_shading_language_420pack): the texture unit it starts
     /// with; an array's elements take the next ones.
@@ -739,6 +776,9 @@ pub struct Module {
     pub frag_coord: FragCoordConventions,
     /// A geometry shader's layouts (all `None` in other stages).
     pub geometry: GeometryLayout,
+    /// A tessellation shader's layouts (all `None` in other stages).
+    #[serde(skip_serializing_if = "TessLayout::is_empty")]
+    pub tessellation: TessLayout,
     /// A compute shader's work-group size, `layout(local_size_x = X,
     /// local_size_y = Y, local_size_z = Z) in;` (each 1 when left out),
     /// when the object declares it (GL_ARB_compute_shader).
@@ -862,6 +902,79 @@ pub struct GeometryLayout {
     pub max_vertices: Option<u32>,
 }
 
+/// How the primitive generator subdivides a patch (an evaluation
+/// shader's `layout(triangles|quads|isolines) in;`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum TessMode {
+    Triangles,
+    Quads,
+    Isolines,
+}
+
+/// How edges are split (`equal_spacing`, `fractional_even_spacing`,
+/// `fractional_odd_spacing`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum TessSpacing {
+    Equal,
+    FractionalEven,
+    FractionalOdd,
+}
+
+/// The winding of generated triangles (`cw`, `ccw`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum VertexOrder {
+    Cw,
+    Ccw,
+}
+
+impl TessMode {
+    pub fn name(self) -> &'static str {
+        match self {
+            TessMode::Triangles => "triangles",
+            TessMode::Quads => "quads",
+            TessMode::Isolines => "isolines",
+        }
+    }
+}
+
+impl TessSpacing {
+    pub fn name(self) -> &'static str {
+        match self {
+            TessSpacing::Equal => "equal_spacing",
+            TessSpacing::FractionalEven => "fractional_even_spacing",
+            TessSpacing::FractionalOdd => "fractional_odd_spacing",
+        }
+    }
+}
+
+impl VertexOrder {
+    pub fn name(self) -> &'static str {
+        match self {
+            VertexOrder::Cw => "cw",
+            VertexOrder::Ccw => "ccw",
+        }
+    }
+}
+
+/// What a tessellation shader object declares of its layouts
+/// (GL_ARB_tessellation_shader §4.3.8): a control shader's output patch
+/// size (`layout(vertices = N) out;`), an evaluation shader's primitive
+/// mode, spacing, vertex order and point mode (`layout(...) in;`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct TessLayout {
+    pub vertices: Option<u32>,
+    pub mode: Option<TessMode>,
+    pub spacing: Option<TessSpacing>,
+    pub order: Option<VertexOrder>,
+    pub point_mode: bool,
+}
+
+impl TessLayout {
+    pub fn is_empty(&self) -> bool {
+        *self == TessLayout::default()
+    }
+}
+
 /// The conventions of `gl_FragCoord`: the default is a lower-left origin
 /// and pixel centres at half-integers.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
@@ -887,6 +1000,7 @@ impl Module {
             blocks: Vec::new(),
             frag_coord: Default::default(),
             geometry: Default::default(),
+            tessellation: Default::default(),
             local_size: None,
             per_vertex_out: None,
             per_vertex_in: None,

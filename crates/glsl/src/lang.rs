@@ -192,6 +192,12 @@ extensions! {
     // functions on buffer variables. Written against GLSL 4.20: shaders
     // of every version may enable it, as Mesa offers it.
     ArbShaderStorageBufferObject = "GL_ARB_shader_storage_buffer_object";
+    // The tessellation control and evaluation stages: `patch` inputs and
+    // outputs, `layout(vertices = N) out;`, the evaluation layouts,
+    // `gl_in[]`/`gl_out[]`, the tessellation levels and `barrier()`.
+    // Written against GLSL 1.50; its stages exist from 1.40 on here, as
+    // Mesa (and piglit's generated tests) take `#version 140` with it.
+    ArbTessellationShader = "GL_ARB_tessellation_shader";
 }
 
 impl Extension {
@@ -305,6 +311,9 @@ pub enum Feature {
     /// Shader storage blocks, memory qualifiers and `std430`
     /// (GL_ARB_shader_storage_buffer_object).
     StorageBuffers,
+    /// The tessellation control and evaluation stages and their `patch`
+    /// qualifier (GL_ARB_tessellation_shader).
+    TessellationShader,
 }
 
 /// Why a feature is not available to a shader.
@@ -464,6 +473,9 @@ impl Language {
             Feature::ComputeShader => {
                 since(Version::V130).and_then(|()| self.only_with(Extension::ArbComputeShader))
             }
+            Feature::TessellationShader => {
+                since(Version::V140).and_then(|()| self.only_with(Extension::ArbTessellationShader))
+            }
             Feature::CompatibilityInterface => {
                 if self.version >= Version::V140 && self.profile == Profile::Core {
                     Err(Unavailable::RemovedInCore(Version::V140))
@@ -515,6 +527,7 @@ impl Language {
             || self.has(Extension::ArbShadingLanguage420pack)
             || self.has(Extension::ArbShaderStorageBufferObject)
             || self.has(Extension::ArbComputeShader)
+            || self.has(Extension::ArbTessellationShader)
     }
 
     /// `gate` as a bool.

@@ -34,6 +34,23 @@ pub const MAX_COMPUTE_SHARED_MEMORY_SIZE: u32 = 32768;
 /// storage blocks.
 pub const MAX_SHADER_STORAGE_BUFFER_BINDINGS: u32 = 8;
 
+/// GL_ARB_tessellation_shader's limits (its minimums, which are also
+/// llvmpipe's): GL_MAX_PATCH_VERTICES (the size of every per-vertex
+/// input array of the tessellation stages), GL_MAX_TESS_GEN_LEVEL, and
+/// the components and units of the two stages.
+pub const MAX_PATCH_VERTICES: u32 = 32;
+pub const MAX_TESS_GEN_LEVEL: u32 = 64;
+pub const MAX_TESS_CONTROL_INPUT_COMPONENTS: u32 = 128;
+pub const MAX_TESS_CONTROL_OUTPUT_COMPONENTS: u32 = 128;
+pub const MAX_TESS_CONTROL_TEXTURE_IMAGE_UNITS: u32 = 16;
+pub const MAX_TESS_CONTROL_UNIFORM_COMPONENTS: u32 = 1024;
+pub const MAX_TESS_CONTROL_TOTAL_OUTPUT_COMPONENTS: u32 = 4096;
+pub const MAX_TESS_EVALUATION_INPUT_COMPONENTS: u32 = 128;
+pub const MAX_TESS_EVALUATION_OUTPUT_COMPONENTS: u32 = 128;
+pub const MAX_TESS_EVALUATION_TEXTURE_IMAGE_UNITS: u32 = 16;
+pub const MAX_TESS_EVALUATION_UNIFORM_COMPONENTS: u32 = 1024;
+pub const MAX_TESS_PATCH_COMPONENTS: u32 = 120;
+
 /// `gl_MaxLights` (minimum 8).
 pub const MAX_LIGHTS: u32 = 8;
 /// `gl_MaxClipPlanes` (minimum 6).

@@ -181,6 +181,8 @@ pub fn link_with(shaders: &[&Shader], opts: &LinkOptions) -> Program {
     if diags.is_empty() {
         for stage in [
             Stage::Vertex,
+            Stage::TessControl,
+            Stage::TessEvaluation,
             Stage::Geometry,
             Stage::Fragment,
             Stage::Compute,
@@ -203,45 +205,22 @@ pub fn link_with(shaders: &[&Shader], opts: &LinkOptions) -> Program {
                 program.stages.push(linked);
             }
         }
-        if let Some(gi) = program
-            .stages
-            .iter()
-            .position(|s| s.stage == Stage::Geometry)
-        {
-            let mut g = program.stages.remove(gi);
-            let vs = program.stage(Stage::Vertex).map(|v| &v.module);
-            redeclarations::size_gl_in_members(&mut g.module, vs);
-            program.stages.insert(gi, g);
-        }
-        let v = program.stage(Stage::Vertex);
-        let f = program.stage(Stage::Fragment);
-        match program.stage(Stage::Geometry) {
-            // GL 3.2 §2.12.2 (and GL_EXT_geometry_shader4): linking fails
-            // when a program has a geometry shader but no vertex shader.
-            Some(g) if v.is_none() && !opts.separable && !lone_geometry_ok(g, opts) => push(
-                &mut diags,
-                None,
-                Code::LinkNoMain,
-                "the program has a geometry shader but no vertex shader; attach one",
-            ),
-            Some(g) => {
-                if let Some(v) = v {
-                    check_interface(v, g, &mut diags);
-                    redeclarations::check_per_vertex_interface(&v.module, &g.module, &mut diags);
-                }
-                if let Some(f) = f {
-                    check_interface(g, f, &mut diags);
-                }
-                if let (Some(v), Some(f)) = (v, f) {
-                    check_uniforms(v, f, &mut diags);
-                }
-            }
-            None => {
-                if let (Some(v), Some(f)) = (v, f) {
-                    check_interface(v, f, &mut diags);
-                }
+        // The stages that read `gl_in[]' size its unsized members from
+        // the stage before (only the vertex stage's are loose globals).
+        for i in 0..program.stages.len() {
+            if matches!(
+                program.stages[i].stage,
+                Stage::TessControl | Stage::TessEvaluation | Stage::Geometry
+            ) {
+                let mut s = program.stages.remove(i);
+                let prev = (i > 0)
+                    .then(|| &program.stages[i - 1].module)
+                    .filter(|m| m.stage == Stage::Vertex);
+                redeclarations::size_gl_in_members(&mut s.module, prev);
+                program.stages.insert(i, s);
             }
         }
+        check_stage_chain(&program, opts, &mut diags);
     }
     program.info_log = render_link_log(&diags, shaders);
     program.diagnostics = diags;
@@ -249,6 +228,51 @@ pub fn link_with(shaders: &[&Shader], opts: &LinkOptions) -> Program {
         program.stages.clear();
     }
     program
+}
+
+/// The interfaces between the program's stages, in pipeline order (its
+/// stages are sorted so): each consecutive pair matches as
+/// [`check_interface`] says, stages further apart share their uniforms
+/// ([`check_uniforms`]). GL 3.2 §2.12.2, GL_EXT_geometry_shader4 and
+/// GL_ARB_tessellation_shader §2.14.2: a program with a geometry or
+/// tessellation stage has a vertex stage (unless separable).
+fn check_stage_chain(program: &Program, opts: &LinkOptions, diags: &mut Vec<LinkDiagnostic>) {
+    let chain: Vec<&LinkedStage> = program
+        .stages
+        .iter()
+        .filter(|s| s.stage != Stage::Compute)
+        .collect();
+    let has_vertex = chain.iter().any(|s| s.stage == Stage::Vertex);
+    if !has_vertex && !opts.separable {
+        if let Some(s) = chain.iter().find(|s| {
+            matches!(s.stage, Stage::TessControl | Stage::TessEvaluation)
+                || (s.stage == Stage::Geometry && !lone_geometry_ok(s, opts))
+        }) {
+            push(
+                diags,
+                None,
+                Code::LinkNoMain,
+                format!(
+                    "the program has a {} shader but no vertex shader; attach one",
+                    s.stage.name()
+                ),
+            );
+            return;
+        }
+    }
+    for (i, pair) in chain.windows(2).enumerate() {
+        let (v, f) = (pair[0], pair[1]);
+        check_interface(v, f, diags);
+        if matches!(
+            f.stage,
+            Stage::TessControl | Stage::TessEvaluation | Stage::Geometry
+        ) {
+            redeclarations::check_per_vertex_interface(&v.module, &f.module, diags);
+        }
+        for earlier in &chain[..i] {
+            check_uniforms(earlier, f, diags);
+        }
+    }
 }
 
 /// Whether a geometry stage may link without a vertex stage under
@@ -259,7 +283,7 @@ fn lone_geometry_ok(g: &LinkedStage, opts: &LinkOptions) -> bool {
             .module
             .globals
             .iter()
-            .any(|x| x.storage == crate::ir::Storage::GeometryInput && !x.builtin)
+            .any(|x| x.storage == crate::ir::Storage::PerVertexInput && !x.builtin)
 }
 
 /// The modules of the program's GL_EXT_geometry_shader4 geometry shader

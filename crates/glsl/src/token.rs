@@ -129,6 +129,9 @@ keywords! {
     Restrict = "restrict" since V110;
     Readonly = "readonly" since V110;
     Writeonly = "writeonly" since V110;
+    // The per-patch storage qualifier of tessellation shaders
+    // (GL_ARB_tessellation_shader): a keyword only where it is enabled.
+    Patch = "patch" since V110;
     Sampler2DRect = "sampler2DRect" since V140;
     Sampler2DRectShadow = "sampler2DRectShadow" since V140;
     Isampler2DRect = "isampler2DRect" since V140;
@@ -268,6 +271,10 @@ pub fn classify(word: &str, lang: Language) -> WordClass {
             }
         } else if k == Keyword::Shared {
             if lang.has(Extension::ArbComputeShader) {
+                return WordClass::Keyword(k);
+            }
+        } else if k == Keyword::Patch {
+            if lang.has(Extension::ArbTessellationShader) {
                 return WordClass::Keyword(k);
             }
         } else if matches!(

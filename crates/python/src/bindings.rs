@@ -66,7 +66,7 @@ fn report_tuple(r: Report) -> ReportTuple {
 fn stage_of(name: &str) -> PyResult<glsl::Stage> {
     report::parse_stage(name).ok_or_else(|| {
         PyValueError::new_err(format!(
-            "stage {name:?} is not 'vertex', 'geometry', 'fragment' or 'compute'"
+            "stage {name:?} is not 'vertex', 'tess_control', 'tess_evaluation', 'geometry', 'fragment' or 'compute'"
         ))
     })
 }

@@ -43,6 +43,10 @@ pub struct Report {
 pub fn parse_stage(name: &str) -> Option<Stage> {
     match name.trim().to_ascii_lowercase().as_str() {
         "vertex" | "vert" | "vs" => Some(Stage::Vertex),
+        "tess_control" | "tessellation control" | "tesc" | "tcs" => Some(Stage::TessControl),
+        "tess_evaluation" | "tessellation evaluation" | "tese" | "tes" => {
+            Some(Stage::TessEvaluation)
+        }
         "geometry" | "geom" | "gs" => Some(Stage::Geometry),
         "fragment" | "frag" | "fs" => Some(Stage::Fragment),
         "compute" | "comp" | "cs" => Some(Stage::Compute),
@@ -239,6 +243,8 @@ mod tests {
         assert_eq!(parse_stage("frag"), Some(Stage::Fragment));
         assert_eq!(parse_stage("geometry"), Some(Stage::Geometry));
         assert_eq!(parse_stage("comp"), Some(Stage::Compute));
+        assert_eq!(parse_stage("tess_control"), Some(Stage::TessControl));
+        assert_eq!(parse_stage("TESE"), Some(Stage::TessEvaluation));
         assert_eq!(parse_stage("tessellation"), None);
     }
 }

@@ -2,7 +2,8 @@
 //! with: bits 0-1 the stage (vertex, fragment, geometry, compute), bit 2 a
 //! core-only context (clear: the context offers the compatibility
 //! profile), bits 3-5 the version of a shader without `#version` (an index
-//! into `Version::ALL`; past its end, the language's default).
+//! into `Version::ALL`; past its end, the language's default), bit 6 a
+//! tessellation stage instead (bit 0: control or evaluation).
 
 use glsl::{Stage, Version};
 
@@ -14,8 +15,11 @@ pub struct Control {
 
 pub fn control(byte: u8) -> Control {
     Control {
-        stage: [Stage::Vertex, Stage::Fragment, Stage::Geometry, Stage::Compute]
-            [usize::from(byte & 3)],
+        stage: if byte & 0x40 != 0 {
+            [Stage::TessControl, Stage::TessEvaluation][usize::from(byte & 1)]
+        } else {
+            [Stage::Vertex, Stage::Fragment, Stage::Geometry, Stage::Compute][usize::from(byte & 3)]
+        },
         compatibility_context: byte & 4 == 0,
         default_version: Version::ALL.get(usize::from(byte >> 3 & 7)).copied(),
     }

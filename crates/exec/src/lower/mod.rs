@@ -206,8 +206,15 @@ pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
     // Memory shared between invocations is not run yet: say so before
     // lowering reaches an access.
     let memory = |s: Storage| matches!(s, Storage::Buffer | Storage::Shared);
-    if stage.stage == Stage::Compute {
-        return unsupported("compute shaders are not run by this implementation");
+    match stage.stage {
+        Stage::Compute => return unsupported("compute shaders are not run by this implementation"),
+        Stage::TessControl | Stage::TessEvaluation => {
+            return unsupported(format!(
+                "{} shaders are not run by this implementation",
+                stage.stage.name()
+            ))
+        }
+        _ => {}
     }
     if let Some(g) = stage.module.globals.iter().find(|g| memory(g.storage)) {
         return unsupported(format!(
@@ -410,6 +417,7 @@ fn with_ftransform_inputs(m: &Module) -> Option<Module> {
             location: None,
             index: None,
             binding: None,
+            patch: false,
             block: None,
             init: None,
             init_expr: None,
@@ -444,8 +452,9 @@ fn is_output(stage: Stage, g: &glsl::ir::Global) -> bool {
                         "gl_FragColor" | "gl_FragData" | "gl_FragDepth"
                     ))
         }
-        // A compute shader's results are the memory it writes.
-        Stage::Compute => false,
+        // A compute shader's results are the memory it writes; the
+        // tessellation stages are refused before lowering.
+        Stage::Compute | Stage::TessControl | Stage::TessEvaluation => false,
     }
 }
 
@@ -492,7 +501,9 @@ impl<'m> Lowerer<'m> {
             let n = size_of(g.ty, structs);
             let is_input = match self.stage {
                 Stage::Vertex => g.storage == Storage::Attribute,
-                Stage::Geometry => g.storage == Storage::GeometryInput,
+                Stage::Geometry | Stage::TessControl | Stage::TessEvaluation => {
+                    g.storage == Storage::PerVertexInput
+                }
                 // Compute invocations read their built-in IDs.
                 Stage::Fragment | Stage::Compute => g.storage == Storage::Varying,
             };

@@ -37,9 +37,9 @@
 //! Nothing else is declared: a name missing from this text is not a
 //! built-in of that language and stage. The text starts with the matching
 //! `#version` line, then, when the language enables
-//! GL_ARB_texture_cube_map_array, that `#extension` line (its sampler
-//! type names are keywords only where it is enabled), and has no other
-//! preprocessor directive.
+//! GL_ARB_texture_cube_map_array or GL_ARB_tessellation_shader, their
+//! `#extension` lines (the sampler type names, and `patch`, are keywords
+//! only where they are enabled), and has no other preprocessor directive.
 //!
 //! The unsigned overloads are those the specs list and no more: `min`,
 //! `max` and `clamp` on `genUType` (with the `uvec, uint` forms), the six
@@ -79,6 +79,10 @@ enum Stages {
     /// 1.10/1.20, which GL_EXT_geometry_shader4 gives geometry shaders).
     VertexGeometry,
     Compute,
+    TessControl,
+    TessEvaluation,
+    /// Both tessellation stages.
+    Tess,
 }
 
 /// Where a built-in exists: from `since`, up to but not including `until`,
@@ -174,6 +178,27 @@ impl Where {
         }
     }
 
+    const fn tcs(self) -> Where {
+        Where {
+            stages: Stages::TessControl,
+            ..self
+        }
+    }
+
+    const fn tes(self) -> Where {
+        Where {
+            stages: Stages::TessEvaluation,
+            ..self
+        }
+    }
+
+    const fn tess(self) -> Where {
+        Where {
+            stages: Stages::Tess,
+            ..self
+        }
+    }
+
     const fn cs(self) -> Where {
         Where {
             stages: Stages::Compute,
@@ -210,6 +235,9 @@ impl Where {
                 Stages::Fragment => stage == Stage::Fragment,
                 Stages::VertexGeometry => matches!(stage, Stage::Vertex | Stage::Geometry),
                 Stages::Compute => stage == Stage::Compute,
+                Stages::TessControl => stage == Stage::TessControl,
+                Stages::TessEvaluation => stage == Stage::TessEvaluation,
+                Stages::Tess => matches!(stage, Stage::TessControl | Stage::TessEvaluation),
             }
             && (!self.compat_only || lang.allows(Feature::CompatibilityInterface))
             && (!self.core_only || !lang.allows(Feature::CompatibilityInterface))
@@ -242,6 +270,9 @@ enum Item {
     /// GL_ARB_compute_shader's `gl_MaxCompute*` constants, from
     /// [`limits`].
     ComputeConstants,
+    /// GL_ARB_tessellation_shader's `gl_MaxTess*`, `gl_MaxPatchVertices`
+    /// and `gl_MaxTessGenLevel` constants, from [`limits`].
+    TessConstants,
 }
 
 /// Built-in constants (§7.4), uniform state (§7.5) and stage variables
@@ -255,6 +286,7 @@ const VARIABLES: &[(Where, Item)] = {
         // stage's inputs; `gl_WorkGroupSize` is the size the shader
         // declares (`sema::compute`).
         (COMPUTE_EXT, Item::ComputeConstants),
+        (TESS, Item::TessConstants),
         (
             COMPUTE_EXT.cs(),
             Text(
@@ -643,6 +675,102 @@ varying int gl_Layer;",
         ),
         (
             Where::since(V150).gs().compat(),
+            Text(
+                "vec4 gl_ClipVertex;
+varying vec4 gl_FrontColor;
+varying vec4 gl_BackColor;
+varying vec4 gl_FrontSecondaryColor;
+varying vec4 gl_BackSecondaryColor;
+varying vec4 gl_TexCoord[];
+varying float gl_FogFragCoord;",
+            ),
+        ),
+        // GL_ARB_tessellation_shader §7.1: the control stage reads the
+        // whole input patch (`gl_in[]', sized gl_MaxPatchVertices) and
+        // writes its output vertex in `gl_out[]' (sized by
+        // `layout(vertices = N) out;') and the levels per patch; the
+        // evaluation stage reads both patches and writes one vertex, as
+        // the vertex stage does. The blocks need GLSL 1.50's input and
+        // output blocks; a 1.40 shader has the rest.
+        (
+            TESS_BLOCKS.core(),
+            Text(
+                "in gl_PerVertex {
+    vec4 gl_Position;
+    float gl_PointSize;
+    float gl_ClipDistance[];
+} gl_in[gl_MaxPatchVertices];",
+            ),
+        ),
+        (
+            TESS_BLOCKS.compat(),
+            Text(
+                "in gl_PerVertex {
+    vec4 gl_Position;
+    float gl_PointSize;
+    float gl_ClipDistance[];
+    vec4 gl_ClipVertex;
+    vec4 gl_FrontColor;
+    vec4 gl_BackColor;
+    vec4 gl_FrontSecondaryColor;
+    vec4 gl_BackSecondaryColor;
+    vec4 gl_TexCoord[];
+    float gl_FogFragCoord;
+} gl_in[gl_MaxPatchVertices];",
+            ),
+        ),
+        (
+            TESS,
+            Text("in int gl_PatchVerticesIn;\nin int gl_PrimitiveID;"),
+        ),
+        (TESS.tcs(), Text("in int gl_InvocationID;")),
+        (
+            TESS_BLOCKS.tcs().core(),
+            Text(
+                "out gl_PerVertex {
+    vec4 gl_Position;
+    float gl_PointSize;
+    float gl_ClipDistance[];
+} gl_out[];",
+            ),
+        ),
+        (
+            TESS_BLOCKS.tcs().compat(),
+            Text(
+                "out gl_PerVertex {
+    vec4 gl_Position;
+    float gl_PointSize;
+    float gl_ClipDistance[];
+    vec4 gl_ClipVertex;
+    vec4 gl_FrontColor;
+    vec4 gl_BackColor;
+    vec4 gl_FrontSecondaryColor;
+    vec4 gl_BackSecondaryColor;
+    vec4 gl_TexCoord[];
+    float gl_FogFragCoord;
+} gl_out[];",
+            ),
+        ),
+        (
+            TESS.tcs(),
+            Text(
+                "patch out float gl_TessLevelOuter[4];
+patch out float gl_TessLevelInner[2];",
+            ),
+        ),
+        (
+            TESS.tes(),
+            Text(
+                "in vec3 gl_TessCoord;
+patch in float gl_TessLevelOuter[4];
+patch in float gl_TessLevelInner[2];
+vec4 gl_Position;
+float gl_PointSize;
+float gl_ClipDistance[];",
+            ),
+        ),
+        (
+            TESS.tes().compat(),
             Text(
                 "vec4 gl_ClipVertex;
 varying vec4 gl_FrontColor;
@@ -1064,6 +1192,9 @@ const FUNCTIONS: &[(Where, &str)] = &[
     // GL_ARB_compute_shader: barriers (GLSL 4.30 §8.15-8.16) and the
     // atomic functions on shared variables (§8.11).
     (COMPUTE_EXT.cs(), "void barrier()"),
+    // GL_ARB_tessellation_shader §8.X: the control stage's invocations
+    // of one patch synchronize.
+    (TESS.tcs(), "void barrier()"),
     (COMPUTE_EXT.cs(), "void memoryBarrier()"),
     (COMPUTE_EXT.cs(), "void memoryBarrierAtomicCounter()"),
     (COMPUTE_EXT.cs(), "void memoryBarrierBuffer()"),
@@ -1090,6 +1221,17 @@ const FUNCTIONS: &[(Where, &str)] = &[
     ),
     (ATOMIC_INT, "int atomicCompSwap(inout int, int, int)"),
 ];
+
+/// GL_ARB_tessellation_shader's built-ins: from GLSL 1.40 (as the stages,
+/// [`Feature::TessellationShader`]), with the extension enabled; its
+/// `gl_in[]`/`gl_out[]` blocks from 1.50, which has input and output
+/// blocks.
+const TESS: Where = Where::since(V140)
+    .needs(Extension::ArbTessellationShader)
+    .tess();
+const TESS_BLOCKS: Where = Where::since(V150)
+    .needs(Extension::ArbTessellationShader)
+    .tess();
 
 /// GL_ARB_compute_shader's built-ins: GLSL 1.30 on (they are `uvec3`s and
 /// `ivec3`s), with the extension enabled.
@@ -1354,12 +1496,15 @@ fn build(lang: Language, stage: Stage, input: InputPrimitive) -> String {
     } else {
         let _ = writeln!(out, "#version {}", version.number());
     }
-    if lang.has(Extension::ArbTextureCubeMapArray) {
-        let _ = writeln!(
-            out,
-            "#extension {} : enable",
-            Extension::ArbTextureCubeMapArray.name()
-        );
+    // Keywords some extensions bring (the cube-map array samplers,
+    // `patch`).
+    for e in [
+        Extension::ArbTextureCubeMapArray,
+        Extension::ArbTessellationShader,
+    ] {
+        if lang.has(e) {
+            let _ = writeln!(out, "#extension {} : enable", e.name());
+        }
     }
     let _ = writeln!(
         out,
@@ -1385,6 +1530,54 @@ fn build(lang: Language, stage: Stage, input: InputPrimitive) -> String {
             Item::Text(text) => {
                 out.push_str(text);
                 out.push('\n');
+            }
+            Item::TessConstants => {
+                for (name, value) in [
+                    (
+                        "gl_MaxTessControlInputComponents",
+                        limits::MAX_TESS_CONTROL_INPUT_COMPONENTS,
+                    ),
+                    (
+                        "gl_MaxTessControlOutputComponents",
+                        limits::MAX_TESS_CONTROL_OUTPUT_COMPONENTS,
+                    ),
+                    (
+                        "gl_MaxTessControlTextureImageUnits",
+                        limits::MAX_TESS_CONTROL_TEXTURE_IMAGE_UNITS,
+                    ),
+                    (
+                        "gl_MaxTessControlUniformComponents",
+                        limits::MAX_TESS_CONTROL_UNIFORM_COMPONENTS,
+                    ),
+                    (
+                        "gl_MaxTessControlTotalOutputComponents",
+                        limits::MAX_TESS_CONTROL_TOTAL_OUTPUT_COMPONENTS,
+                    ),
+                    (
+                        "gl_MaxTessEvaluationInputComponents",
+                        limits::MAX_TESS_EVALUATION_INPUT_COMPONENTS,
+                    ),
+                    (
+                        "gl_MaxTessEvaluationOutputComponents",
+                        limits::MAX_TESS_EVALUATION_OUTPUT_COMPONENTS,
+                    ),
+                    (
+                        "gl_MaxTessEvaluationTextureImageUnits",
+                        limits::MAX_TESS_EVALUATION_TEXTURE_IMAGE_UNITS,
+                    ),
+                    (
+                        "gl_MaxTessEvaluationUniformComponents",
+                        limits::MAX_TESS_EVALUATION_UNIFORM_COMPONENTS,
+                    ),
+                    (
+                        "gl_MaxTessPatchComponents",
+                        limits::MAX_TESS_PATCH_COMPONENTS,
+                    ),
+                    ("gl_MaxPatchVertices", limits::MAX_PATCH_VERTICES),
+                    ("gl_MaxTessGenLevel", limits::MAX_TESS_GEN_LEVEL),
+                ] {
+                    let _ = writeln!(out, "const int {name} = {value};");
+                }
             }
             Item::ComputeConstants => {
                 let [cx, cy, cz] = limits::MAX_COMPUTE_WORK_GROUP_COUNT;
@@ -1679,8 +1872,11 @@ mod tests {
                 e.extensions.set(Extension::ArbComputeShader, true);
                 e.extensions
                     .set(Extension::ArbShaderStorageBufferObject, true);
+                e.extensions.set(Extension::ArbTessellationShader, true);
                 for s in [
                     Stage::Vertex,
+                    Stage::TessControl,
+                    Stage::TessEvaluation,
                     Stage::Geometry,
                     Stage::Fragment,
                     Stage::Compute,
@@ -1821,7 +2017,9 @@ mod tests {
             let text = &super::prelude(l, s);
             assert!(text.is_ascii());
             assert!(text.starts_with(&format!("#version {}", v.number())));
-            let directives = 1 + l.has(Extension::ArbTextureCubeMapArray) as usize;
+            let directives = 1
+                + l.has(Extension::ArbTextureCubeMapArray) as usize
+                + l.has(Extension::ArbTessellationShader) as usize;
             assert_eq!(text.matches('#').count(), directives);
             let (tokens, diags) = lex(text, LexOptions::default());
             assert!(diags.is_empty(), "{v:?} {s:?}: {diags:?}");

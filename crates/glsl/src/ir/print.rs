@@ -197,7 +197,8 @@ impl<'a> Printer<'a> {
                 Storage::Attribute => "attribute ",
                 Storage::Varying => "varying ",
                 Storage::FragOutput => "out ",
-                Storage::GeometryInput => "in ",
+                Storage::PerVertexInput => "in ",
+                Storage::PerVertexOutput => "out ",
                 Storage::Shared => "shared ",
                 Storage::Buffer => "buffer ",
             });

@@ -41,7 +41,7 @@ pub(super) fn merge_blocks(
                 // input array left unsized in an object without the input
                 // layout takes the size the others give it (§4.3.8.1).
                 let arrays_match = x.dims() == b.dims()
-                    || (b.storage == Storage::GeometryInput
+                    || (b.storage == Storage::PerVertexInput
                         && x.inner == b.inner
                         && (x.array.is_none() || b.array.is_none()));
                 let bindings_differ = x.binding.zip(b.binding).is_some_and(|(p, q)| p != q);
@@ -195,7 +195,7 @@ fn compare_blocks(vm: &Module, fm: &Module, uniform_only: bool, diags: &mut Vec<
                 && if fb.storage == Storage::Uniform {
                     x.storage == Storage::Uniform
                 } else {
-                    x.storage == Storage::Varying && !x.input
+                    matches!(x.storage, Storage::Varying | Storage::PerVertexOutput) && !x.input
                 }
         };
         let vb = vm.blocks.iter().find(kind);
@@ -224,8 +224,14 @@ fn compare_blocks(vm: &Module, fm: &Module, uniform_only: bool, diags: &mut Vec<
                     // stage's output block, one per vertex. Otherwise an
                     // array instance matches an array of the same size
                     // (GLSL 1.50 §4.3.7).
-                    && if fb.storage == Storage::GeometryInput {
-                        vb.dims() == fb.inner
+                    && if fb.storage == Storage::PerVertexInput {
+                        // A control shader's per-vertex output block is an
+                        // array of vertices too.
+                        if vb.storage == Storage::PerVertexOutput {
+                            vb.inner == fb.inner
+                        } else {
+                            vb.dims() == fb.inner
+                        }
                     } else {
                         vb.dims() == fb.dims()
                     };

@@ -42,7 +42,7 @@ pub(super) fn check_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) 
         ),
         // Geometry inputs and outputs take no location before GLSL 4.10
         // (GL_ARB_separate_shader_objects); compute shaders have neither.
-        Stage::Geometry | Stage::Compute => return,
+        Stage::TessControl | Stage::TessEvaluation | Stage::Geometry | Stage::Compute => return,
     };
     // Per `layout(index)` (0, or 1 for a second source colour).
     let mut used: [Vec<Option<&str>>; 2] = [vec![None; max as usize], vec![None; max as usize]];
@@ -121,13 +121,13 @@ fn claim<'a>(used: &mut [Option<&'a str>], loc: u32, n: u32, name: &'a str) -> O
 /// of one vertex's element).
 fn check_varying_locations(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
     let max = limits::MAX_VARYING_LOCATIONS;
-    for storage in [Storage::Varying, Storage::GeometryInput] {
+    for storage in [Storage::Varying, Storage::PerVertexInput] {
         let mut used: Vec<Option<&str>> = vec![None; max as usize];
         for g in s.module.globals.iter().filter(|g| g.storage == storage) {
             let Some(loc) = g.location.filter(|_| !g.builtin) else {
                 continue;
             };
-            let ty = if storage == Storage::GeometryInput {
+            let ty = if storage == Storage::PerVertexInput {
                 g.ty.element()
             } else {
                 g.ty
@@ -275,6 +275,55 @@ pub(super) fn check_limits(s: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
             };
             limit("varying components", varyings, max);
         }
+        Stage::TessControl | Stage::TessEvaluation => {
+            let control = s.stage == Stage::TessControl;
+            let (max_uniforms, max_samplers, max_outputs) = if control {
+                (
+                    limits::MAX_TESS_CONTROL_UNIFORM_COMPONENTS,
+                    limits::MAX_TESS_CONTROL_TEXTURE_IMAGE_UNITS,
+                    limits::MAX_TESS_CONTROL_OUTPUT_COMPONENTS,
+                )
+            } else {
+                (
+                    limits::MAX_TESS_EVALUATION_UNIFORM_COMPONENTS,
+                    limits::MAX_TESS_EVALUATION_TEXTURE_IMAGE_UNITS,
+                    limits::MAX_TESS_EVALUATION_OUTPUT_COMPONENTS,
+                )
+            };
+            limit("uniform components", uniforms, max_uniforms);
+            limit("samplers", samplers, max_samplers);
+            // Per vertex: a per-vertex output array counts one element.
+            let outputs: u32 = m
+                .globals
+                .iter()
+                .filter(|g| {
+                    !g.builtin
+                        && g.written
+                        && !g.patch
+                        && matches!(g.storage, Storage::Varying | Storage::PerVertexOutput)
+                })
+                .map(|g| {
+                    let ty = if g.storage == Storage::PerVertexOutput {
+                        g.ty.element()
+                    } else {
+                        g.ty
+                    };
+                    components(m, ty)
+                })
+                .sum();
+            limit("output components", outputs, max_outputs);
+            let patch: u32 = m
+                .globals
+                .iter()
+                .filter(|g| !g.builtin && g.patch && (g.written || g.read))
+                .map(|g| components(m, g.ty))
+                .sum();
+            limit(
+                "per-patch components",
+                patch,
+                limits::MAX_TESS_PATCH_COMPONENTS,
+            );
+        }
         Stage::Compute => {
             limit(
                 "uniform components",
@@ -356,11 +405,27 @@ fn per_vertex_row(m: &ir::Module, elem: crate::types::Type) -> crate::types::Typ
 pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<LinkDiagnostic>) {
     let (vm, fm) = (&v.module, &f.module);
     let (pn, cn) = (v.stage.name(), f.stage.name());
-    // A geometry shader's inputs are arrays of the vertex outputs.
-    let (input, per_vertex) = if f.stage == Stage::Geometry {
-        (Storage::GeometryInput, true)
-    } else {
-        (Storage::Varying, false)
+    // The inputs of a geometry or tessellation shader are arrays of the
+    // previous stage's outputs (a control shader's per-vertex outputs
+    // are arrays themselves); an evaluation shader's `patch in' reads the
+    // control shader's `patch out' of the same type.
+    let is_input = |g: &ir::Global| match g.storage {
+        Storage::PerVertexInput => true,
+        Storage::Varying => match f.stage {
+            Stage::Fragment => true,
+            Stage::TessEvaluation => g.patch,
+            _ => false,
+        },
+        _ => false,
+    };
+    let is_output = |g: &ir::Global| match g.storage {
+        Storage::Varying => match v.stage {
+            Stage::Vertex | Stage::TessEvaluation | Stage::Geometry => true,
+            Stage::TessControl => g.patch,
+            _ => false,
+        },
+        Storage::PerVertexOutput => true,
+        _ => false,
     };
     check_blocks(vm, fm, diags);
     if f.stage == Stage::Fragment {
@@ -379,23 +444,40 @@ pub(super) fn check_interface(v: &LinkedStage, f: &LinkedStage, diags: &mut Vec<
             Some(l) => vm
                 .globals
                 .iter()
-                .find(|g| g.storage == Storage::Varying && g.location == Some(l)),
+                .find(|g| is_output(g) && g.location == Some(l)),
             None => vm.globals.iter().find(|g| g.name == fg.name),
         };
-        let fty = if per_vertex {
+        let fty = if fg.storage == Storage::PerVertexInput {
             per_vertex_row(fm, fg.ty.element())
         } else {
             fg.ty
         };
         match fg.storage {
-            s if s == input => match vg {
-                Some(vg) if vg.storage == Storage::Varying => {
-                    let same = if fg.location.is_some() {
-                        same_type_by_location(vm, vg.ty, fm, fty)
+            _ if is_input(fg) => match vg {
+                Some(vg) if is_output(vg) => {
+                    let vty = if vg.storage == Storage::PerVertexOutput {
+                        per_vertex_row(vm, vg.ty.element())
                     } else {
-                        same_type_across(vm, vg.ty, fm, fty)
+                        vg.ty
                     };
-                    if !same {
+                    let same = if fg.location.is_some() {
+                        same_type_by_location(vm, vty, fm, fty)
+                    } else {
+                        same_type_across(vm, vty, fm, fty)
+                    };
+                    if vg.patch != fg.patch {
+                        push(
+                            diags,
+                            None,
+                            Code::LinkInterfaceMismatch,
+                            format!(
+                                "`{}' is {} in the {pn} shader but {} in the {cn} shader",
+                                fg.name,
+                                if vg.patch { "per-patch" } else { "per-vertex" },
+                                if fg.patch { "per-patch" } else { "per-vertex" },
+                            ),
+                        );
+                    } else if !same {
                         push(
                             diags,
                             None,

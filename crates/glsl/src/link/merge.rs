@@ -13,7 +13,9 @@ use super::remap::{remap_block, remap_const, remap_expr, remap_type, Remap};
 use super::types::{compatible_types, same_struct};
 use super::{push, LinkDiagnostic, LinkedStage};
 use crate::diag::{Code, Diagnostic};
-use crate::ir::{self, ConstScalar, Function, FunctionId, Global, GlobalId, Module, Stage};
+use crate::ir::{
+    self, ConstScalar, Function, FunctionId, Global, GlobalId, Module, Stage, Storage,
+};
 use crate::limits;
 use crate::types::{ArraySize, StructDef, StructId, StructMember, Type};
 use std::collections::{BTreeMap, BTreeSet};
@@ -193,6 +195,13 @@ pub(super) fn merge_stage(
         }
         merge_blocks(&mut merged, m, &map, obj, diags, &mut errors);
         merge_geometry_layout(&mut merged.geometry, &m.geometry, obj, diags, &mut errors);
+        merge_tess_layout(
+            &mut merged.tessellation,
+            &m.tessellation,
+            obj,
+            diags,
+            &mut errors,
+        );
         match (merged.local_size, m.local_size) {
             (Some(a), Some(b)) if a != b => {
                 errors = true;
@@ -430,6 +439,9 @@ pub(super) fn merge_stage(
     if stage == Stage::Geometry {
         errors |= !check_geometry_layout(&mut merged, diags);
     }
+    if matches!(stage, Stage::TessControl | Stage::TessEvaluation) {
+        errors |= !check_tess_layout(&mut merged, diags);
+    }
     if stage == Stage::Compute && merged.local_size.is_none() {
         // GL_ARB_compute_shader: "at least one ... must declare a fixed
         // local group size".
@@ -575,6 +587,130 @@ pub(super) fn merge_geometry_layout(
         (None, b) => merged.max_vertices = b,
         _ => {}
     }
+}
+
+/// Adds one tessellation shader object's layouts to the stage's
+/// (GL_ARB_tessellation_shader §4.3.8: every declaration in a program of
+/// the output patch size, primitive mode, spacing and vertex order names
+/// the same one; point mode is on when any object asks for it).
+fn merge_tess_layout(
+    merged: &mut ir::TessLayout,
+    m: &ir::TessLayout,
+    obj: usize,
+    diags: &mut Vec<LinkDiagnostic>,
+    errors: &mut bool,
+) {
+    let mut differ = |what: String| {
+        *errors = true;
+        push(
+            diags,
+            Some(obj),
+            Code::LinkInterfaceMismatch,
+            format!("the tessellation shader objects declare different {what}"),
+        );
+    };
+    fn agree<T: Copy + PartialEq>(
+        slot: &mut Option<T>,
+        new: Option<T>,
+        name: fn(T) -> String,
+        what: &str,
+        differ: &mut dyn FnMut(String),
+    ) {
+        match (*slot, new) {
+            (Some(a), Some(b)) if a != b => {
+                differ(format!("{what} (`{}' and `{}')", name(a), name(b)))
+            }
+            (None, b) => *slot = b,
+            _ => {}
+        }
+    }
+    agree(
+        &mut merged.vertices,
+        m.vertices,
+        |n| format!("vertices = {n}"),
+        "output patch sizes",
+        &mut differ,
+    );
+    agree(
+        &mut merged.mode,
+        m.mode,
+        |x| x.name().to_string(),
+        "primitive modes",
+        &mut differ,
+    );
+    agree(
+        &mut merged.spacing,
+        m.spacing,
+        |x| x.name().to_string(),
+        "spacings",
+        &mut differ,
+    );
+    agree(
+        &mut merged.order,
+        m.order,
+        |x| x.name().to_string(),
+        "vertex orders",
+        &mut differ,
+    );
+    merged.point_mode |= m.point_mode;
+}
+
+/// A linked control stage declares its output patch size (which its
+/// unsized per-vertex outputs take), a linked evaluation stage its
+/// primitive mode (GL_ARB_tessellation_shader §2.14.2). False on an
+/// error.
+fn check_tess_layout(merged: &mut Module, diags: &mut Vec<LinkDiagnostic>) -> bool {
+    let t = merged.tessellation;
+    if merged.stage == Stage::TessEvaluation {
+        if t.mode.is_none() {
+            push(
+                diags,
+                None,
+                Code::LinkInterfaceMismatch,
+                "no tessellation evaluation shader object declares the primitive mode (`layout(triangles) in;', `quads' or `isolines')",
+            );
+            return false;
+        }
+        return true;
+    }
+    let Some(n) = t.vertices else {
+        push(
+            diags,
+            None,
+            Code::LinkInterfaceMismatch,
+            "no tessellation control shader object declares the output patch size (`layout(vertices = 3) out;')",
+        );
+        return false;
+    };
+    let mut ok = true;
+    for g in merged
+        .globals
+        .iter_mut()
+        .filter(|g| g.storage == Storage::PerVertexOutput)
+    {
+        match g.ty.array {
+            Some(ArraySize::Unsized) => g.ty.array = Some(ArraySize::Sized(n)),
+            Some(ArraySize::Sized(len)) if len != n => {
+                ok = false;
+                push(
+                    diags,
+                    None,
+                    Code::LinkInterfaceMismatch,
+                    format!(
+                        "tessellation control output `{}' has {len} elements, but the output patch has {n} vertices",
+                        g.name
+                    ),
+                );
+            }
+            _ => {}
+        }
+    }
+    for b in merged.blocks.iter_mut() {
+        if b.storage == Storage::PerVertexOutput && b.instance.is_some() {
+            b.array = Some(n);
+        }
+    }
+    ok
 }
 
 /// A global's initializer: `None` without one, `Some(None)` when it is not

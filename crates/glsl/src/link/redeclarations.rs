@@ -65,6 +65,7 @@ pub(super) fn check_per_vertex_redeclared(
                     | "gl_BackSecondaryColor"
                     | "gl_TexCoord"
                     | "gl_FogFragCoord"
+                    | "gl_out"
             )
     };
     let mut ok = true;
@@ -147,7 +148,7 @@ pub(super) fn check_geometry_layout(merged: &mut Module, diags: &mut Vec<LinkDia
     for gl in merged
         .globals
         .iter_mut()
-        .filter(|x| x.storage == Storage::GeometryInput)
+        .filter(|x| x.storage == Storage::PerVertexInput)
     {
         match gl.ty.array {
             Some(ArraySize::Unsized) => gl.ty.array = Some(ArraySize::Sized(n)),
@@ -167,7 +168,7 @@ pub(super) fn check_geometry_layout(merged: &mut Module, diags: &mut Vec<LinkDia
         }
     }
     for b in merged.blocks.iter_mut() {
-        if b.storage == Storage::GeometryInput && b.instance.is_some() {
+        if b.storage == Storage::PerVertexInput && b.instance.is_some() {
             b.array = Some(n);
         }
     }
@@ -178,7 +179,7 @@ pub(super) fn check_geometry_layout(merged: &mut Module, diags: &mut Vec<LinkDia
 pub(super) fn reads_gl_in(m: &ir::Module) -> bool {
     m.globals
         .iter()
-        .any(|g| g.builtin && g.storage == Storage::GeometryInput && g.name == "gl_in" && g.read)
+        .any(|g| g.builtin && g.storage == Storage::PerVertexInput && g.name == "gl_in" && g.read)
 }
 
 /// GLSL 1.50 §7.1, for the geometry stage's input block: once one object
@@ -195,6 +196,7 @@ pub(super) fn check_per_vertex_in_redeclared(
     let members = first.per_vertex_in.as_ref()?;
     let mut ok = true;
     for &(obj, m) in objects {
+        let stage = m.stage.name();
         match &m.per_vertex_in {
             Some(other) if !same_per_vertex(other, members) => {
                 ok = false;
@@ -202,7 +204,7 @@ pub(super) fn check_per_vertex_in_redeclared(
                     diags,
                     Some(obj),
                     Code::LinkInterfaceMismatch,
-                    "this geometry shader object redeclares the input block `gl_PerVertex' with other members than another object of the stage",
+                    format!("this {stage} shader object redeclares the input block `gl_PerVertex' with other members than another object of the stage"),
                 );
             }
             Some(_) => {}
@@ -212,7 +214,7 @@ pub(super) fn check_per_vertex_in_redeclared(
                     diags,
                     Some(obj),
                     Code::LinkInterfaceMismatch,
-                    "this geometry shader object uses `gl_in' without redeclaring the input block `gl_PerVertex', while another object of the stage redeclares it; redeclare it the same way in every object that uses `gl_in'",
+                    format!("this {stage} shader object uses `gl_in' without redeclaring the input block `gl_PerVertex', while another object of the stage redeclares it; redeclare it the same way in every object that uses `gl_in'"),
                 );
             }
             None => {}
@@ -231,10 +233,10 @@ pub(super) fn same_per_vertex(a: &[ir::BlockMember], b: &[ir::BlockMember]) -> b
             .all(|(x, y)| x.name == y.name && super::types::compatible_types(x.ty, y.ty))
 }
 
-/// The `gl_PerVertex` block between the vertex and the geometry stage
-/// (GLSL 1.50 §7.1, §4.3.7 block matching): when either stage redeclares
-/// it and the geometry shader uses `gl_in`, both redeclare it with the
-/// same members.
+/// The `gl_PerVertex` block between a stage and the next one that reads
+/// `gl_in[]` (geometry, tessellation; GLSL 1.50 §7.1, §4.3.7 block
+/// matching): when either stage redeclares it and the reader uses
+/// `gl_in`, both redeclare it with the same members.
 pub(super) fn check_per_vertex_interface(
     vm: &Module,
     gm: &Module,
@@ -243,12 +245,13 @@ pub(super) fn check_per_vertex_interface(
     if !reads_gl_in(gm) {
         return;
     }
+    let (p, c) = (vm.stage.name(), gm.stage.name());
     let msg = match (&vm.per_vertex_out, &gm.per_vertex_in) {
         (None, None) => return,
         (Some(a), Some(b)) if same_per_vertex(a, b) => return,
-        (Some(_), Some(_)) => "the vertex shader's output block `gl_PerVertex' and the geometry shader's input block `gl_PerVertex' are redeclared with different members",
-        (Some(_), None) => "the vertex shader redeclares the output block `gl_PerVertex' but the geometry shader uses `gl_in' without redeclaring the input block the same way",
-        (None, Some(_)) => "the geometry shader redeclares the input block `gl_PerVertex' but the vertex shader does not redeclare its output block the same way",
+        (Some(_), Some(_)) => format!("the {p} shader's output block `gl_PerVertex' and the {c} shader's input block `gl_PerVertex' are redeclared with different members"),
+        (Some(_), None) => format!("the {p} shader redeclares the output block `gl_PerVertex' but the {c} shader uses `gl_in' without redeclaring the input block the same way"),
+        (None, Some(_)) => format!("the {c} shader redeclares the input block `gl_PerVertex' but the {p} shader does not redeclare its output block the same way"),
     };
     push(diags, None, Code::LinkInterfaceMismatch, msg);
 }
@@ -269,7 +272,13 @@ pub(super) fn size_gl_in_members(gs: &mut Module, vs: Option<&Module>) {
     let sids: Vec<(StructId, Option<String>)> = gs
         .globals
         .iter()
-        .filter(|g| g.builtin && g.storage == Storage::GeometryInput)
+        .filter(|g| {
+            g.builtin
+                && matches!(
+                    g.storage,
+                    Storage::PerVertexInput | Storage::PerVertexOutput
+                )
+        })
         .filter_map(|g| match g.ty.base {
             Base::Struct(sid) => Some((sid, g.name.strip_suffix("In").map(str::to_string))),
             _ => None,

@@ -78,6 +78,7 @@ pub(super) fn qualifier_of(k: Keyword) -> Option<Qualifier> {
         Keyword::Restrict => Qualifier::Restrict,
         Keyword::Readonly => Qualifier::Readonly,
         Keyword::Writeonly => Qualifier::Writeonly,
+        Keyword::Patch => Qualifier::Patch,
         _ => return None,
     })
 }

@@ -148,7 +148,7 @@ impl Analyzer {
                 .module
                 .globals
                 .get(g.0 as usize)
-                .is_some_and(|g| g.storage == ir::Storage::GeometryInput)
+                .is_some_and(|g| g.storage == ir::Storage::PerVertexInput)
     }
 
     /// `base[index]` on an array, vector or matrix.
@@ -262,9 +262,14 @@ impl Analyzer {
             if len.is_none() {
                 self.note_implicit_index(&base, c as u32);
             }
-        } else if len.is_none() && self.buffer_member(&base).is_none() {
+        } else if len.is_none()
+            && self.buffer_member(&base).is_none()
+            && !self.is_unsized_output_patch(&base)
+        {
             // (A shader storage block's last member takes any index: its
-            // size is the bound buffer's.)
+            // size is the bound buffer's; so does a control shader's
+            // per-vertex output before its patch size is known, as
+            // `gl_InvocationID' is always within it.)
             // GLSL 1.20 §4.1.9 and, for gl_TexCoord, §7.6: "indices used to
             // subscript gl_TexCoord must either be an integral constant
             // expression, or this array must be re-declared with a size".
@@ -462,6 +467,16 @@ impl Analyzer {
                     span,
                 );
             }
+            if self.is_unsized_output_patch(&base) {
+                self.error(
+                    Code::BadArraySize,
+                    span,
+                    "the output patch size is not declared yet: `.length()' of a per-vertex output needs `layout(vertices = N) out;' before it",
+                )
+                .notes
+                .push("GL_ARB_tessellation_shader §4.3.8.2: the layout sizes gl_out[] and every per-vertex output".into());
+                return error_expr(span);
+            }
             return self.reject_unsized(base);
         }
         if name.name != "length" {
@@ -520,6 +535,7 @@ impl Analyzer {
     pub fn lvalue(&mut self, e: &ast::Expr, also_read: bool, what: &str) -> ir::Expr {
         let lv = self.lvalue_part(e, also_read, what);
         self.check_memory_access(&lv, true, also_read);
+        self.check_whole_output_write(&lv);
         lv
     }
 
@@ -619,7 +635,13 @@ impl Analyzer {
                             Storage::Varying if self.stage == Stage::Compute => {
                                 Some("a compute shader input")
                             }
-                            Storage::GeometryInput => Some("a geometry shader input"),
+                            Storage::Varying if self.stage == Stage::TessEvaluation && gl.patch => {
+                                Some("a per-patch input")
+                            }
+                            Storage::PerVertexInput if self.stage == Stage::Geometry => {
+                                Some("a geometry shader input")
+                            }
+                            Storage::PerVertexInput => Some("a tessellation shader input"),
                             _ => None,
                         };
                         if let Some(kind) = ro {
@@ -647,6 +669,7 @@ impl Analyzer {
             }
             A::Index(b, i) => {
                 let base = self.lvalue_part(b, also_read, what);
+                self.check_output_vertex_index(&base, i);
                 self.index(base, i, span)
             }
             A::Field(b, name) => {

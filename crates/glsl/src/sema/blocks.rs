@@ -44,7 +44,7 @@ impl Analyzer {
                 // input blocks, geometry shaders both (GLSL 1.50 §4.3.7).
                 let allowed = match self.stage {
                     Stage::Vertex => !is_in,
-                    Stage::Geometry => true,
+                    Stage::TessControl | Stage::TessEvaluation | Stage::Geometry => true,
                     Stage::Fragment => is_in,
                     // Compute shaders have no user inputs or outputs.
                     Stage::Compute => false,
@@ -61,12 +61,7 @@ impl Analyzer {
                     );
                     return;
                 }
-                let storage = if is_in && self.stage == Stage::Geometry {
-                    Storage::GeometryInput
-                } else {
-                    Storage::Varying
-                };
-                (storage, is_in)
+                (self.global_storage(&q), is_in)
             }
             _ => {
                 self.error(
@@ -111,7 +106,7 @@ impl Analyzer {
             if l.location.is_some()
                 || l.origin_upper_left.is_some()
                 || l.pixel_center_integer.is_some()
-                || !l.geometry.is_empty()
+                || !l.primitive.is_empty()
             {
                 self.error(
                     Code::BadQualifier,
@@ -130,27 +125,47 @@ impl Analyzer {
                 "a geometry shader's primitive layouts stand alone: `layout(triangles) in;'".into(),
             );
         }
-        if b.name.name == "gl_PerVertex" && !input && !self.builtin_mode {
-            self.redeclare_per_vertex(b);
+        let per_vertex = matches!(storage, Storage::PerVertexInput | Storage::PerVertexOutput);
+        if b.name.name == "gl_PerVertex" && !self.builtin_mode {
+            if per_vertex {
+                self.redeclare_per_vertex_array(b, storage);
+            } else if !input {
+                self.redeclare_per_vertex(b);
+            } else {
+                self.error(
+                    Code::Redeclared,
+                    b.name.span,
+                    format!(
+                        "a {} shader has no input block `gl_PerVertex' to redeclare",
+                        self.stage.name()
+                    ),
+                );
+            }
             return;
         }
-        if b.name.name == "gl_PerVertex" && storage == Storage::GeometryInput && !self.builtin_mode
-        {
-            self.redeclare_per_vertex_in(b);
-            return;
-        }
-        if storage == Storage::GeometryInput && b.instance.as_ref().is_none_or(|(_, a)| a.is_none())
-        {
+        if per_vertex && b.instance.as_ref().is_none_or(|(_, a)| a.is_none()) {
+            let (dir, kw) = if input {
+                ("input", "in")
+            } else {
+                ("output", "out")
+            };
+            let note = if self.stage == Stage::Geometry {
+                "GLSL 1.50 §4.3.4: a geometry shader has one input per vertex of its primitive"
+            } else if input {
+                "GL_ARB_tessellation_shader §4.3.4: a tessellation shader has one input per vertex of the patch (write `patch in' in an evaluation shader for one per patch)"
+            } else {
+                "GL_ARB_tessellation_shader §4.3.6: a control shader has one output per vertex of the output patch (write `patch out' for one per patch)"
+            };
             self.error(
                 Code::TypeMismatch,
                 b.name.span,
                 format!(
-                    "geometry shader input block `{}' must be declared as an array: `in {} {{ ... }} name[];'",
-                    b.name.name, b.name.name
+                    "{} shader {dir} block `{}' must be declared as an array: `{kw} {} {{ ... }} name[];'",
+                    self.stage.name(), b.name.name, b.name.name
                 ),
             )
             .notes
-            .push("GLSL 1.50 §4.3.4: a geometry shader has one input per vertex of its primitive".into());
+            .push(note.into());
             return;
         }
         if b.name.name.starts_with("gl_") && !self.builtin_mode {
@@ -257,7 +272,7 @@ impl Analyzer {
                 );
                 // Geometry input arrays take their size from the input
                 // primitive (GLSL 1.50 §4.3.8.1).
-                if ty.array == Some(ArraySize::Unsized) && storage != Storage::GeometryInput {
+                if ty.array == Some(ArraySize::Unsized) && !per_vertex {
                     self.error(
                         Code::BadArraySize,
                         inst.span,
@@ -293,13 +308,22 @@ impl Analyzer {
                 self.scopes
                     .insert(inst.name.clone(), Symbol::Var(Var::Global(gid)));
                 globals.push(gid);
-                if storage == Storage::GeometryInput {
-                    self.size_geometry_input(gid, inst.span);
+                if per_vertex {
+                    if storage == Storage::PerVertexInput {
+                        self.size_per_vertex_input(gid, inst.span);
+                    } else {
+                        self.size_per_vertex_output(gid, inst.span);
+                    }
                     if let Some(ArraySize::Sized(n)) = self.module.globals[gid.0 as usize].ty.array
                     {
                         array = Some(n);
                     }
                 }
+            }
+        }
+        if q.patch.is_some() {
+            for g in &globals {
+                self.module.globals[g.0 as usize].patch = true;
             }
         }
         let binding = binding.and_then(|(v, span)| {
@@ -513,36 +537,46 @@ impl Analyzer {
         true
     }
 
-    fn redeclare_per_vertex_in(&mut self, b: &InterfaceBlock) {
+    fn redeclare_per_vertex_array(&mut self, b: &InterfaceBlock, storage: Storage) {
+        let input = storage == Storage::PerVertexInput;
+        let (dir, kw, array) = if input {
+            ("input", "in", "gl_in")
+        } else {
+            ("output", "out", "gl_out")
+        };
         let Some((inst, arr)) = &b.instance else {
             self.error(
                 Code::BadQualifier,
                 b.name.span,
-                "the input block `gl_PerVertex' is redeclared with its instance name: `in gl_PerVertex { ... } gl_in[];'",
+                format!("the {dir} block `gl_PerVertex' is redeclared with its instance name: `{kw} gl_PerVertex {{ ... }} {array}[];'"),
             );
             return;
         };
-        if inst.name != "gl_in" || arr.as_ref().is_none_or(|a| a.dims.len() != 1) {
+        if inst.name != array || arr.as_ref().is_none_or(|a| a.dims.len() != 1) {
             self.error(
                 Code::BadQualifier,
                 inst.span,
                 format!(
-                    "the input block `gl_PerVertex' is redeclared as `gl_in[]', not `{}'",
+                    "the {dir} block `gl_PerVertex' is redeclared as `{array}[]', not `{}'",
                     inst.name
                 ),
             );
             return;
         }
-        if self.module.per_vertex_in.is_some() {
+        let redeclared = if input {
+            &self.module.per_vertex_in
+        } else {
+            &self.module.per_vertex_out
+        };
+        if redeclared.is_some() {
             self.error(
                 Code::Redeclared,
                 b.name.span,
-                "the input block `gl_PerVertex' is already redeclared",
+                format!("the {dir} block `gl_PerVertex' is already redeclared"),
             );
             return;
         }
-        let Some(&Symbol::Var(v @ Var::Builtin(i))) = self.env.and_then(|e| e.lookup("gl_in"))
-        else {
+        let Some(&Symbol::Var(v @ Var::Builtin(i))) = self.env.and_then(|e| e.lookup(array)) else {
             self.error(
                 Code::Redeclared,
                 b.name.span,
@@ -562,7 +596,7 @@ impl Analyzer {
             self.error(
                 Code::Redeclared,
                 b.name.span,
-                "the input block `gl_PerVertex' is redeclared after `gl_in' is used",
+                format!("the {dir} block `gl_PerVertex' is redeclared after `{array}' is used"),
             )
             .notes
             .push("redeclare it before the first use".into());
@@ -577,7 +611,7 @@ impl Analyzer {
         };
         let saved = self.builtin_mode;
         self.builtin_mode = true;
-        let members = self.block_members(b, Storage::GeometryInput, false, None);
+        let members = self.block_members(b, storage, false, None);
         self.builtin_mode = saved;
         let span_of = |name: &str| {
             b.members
@@ -594,7 +628,7 @@ impl Analyzer {
                     Code::Redeclared,
                     span,
                     format!(
-                        "`{}' is not a member of the built-in input block `gl_PerVertex'",
+                        "`{}' is not a member of the built-in {dir} block `gl_PerVertex'",
                         m.name
                     ),
                 );
@@ -614,7 +648,11 @@ impl Analyzer {
                 })
                 .collect();
         }
-        self.module.per_vertex_in = Some(kept);
+        if input {
+            self.module.per_vertex_in = Some(kept);
+        } else {
+            self.module.per_vertex_out = Some(kept);
+        }
         // `gl_in[3]' as well as `gl_in[]': sized like any input array.
         let ty = self.apply_array(
             Type {
@@ -628,7 +666,11 @@ impl Analyzer {
                 if let Some(gl) = self.module.globals.get_mut(g.0 as usize) {
                     gl.ty.array = Some(ArraySize::Sized(n));
                 }
-                self.size_geometry_input(g, inst.span);
+                if input {
+                    self.size_per_vertex_input(g, inst.span);
+                } else {
+                    self.size_per_vertex_output(g, inst.span);
+                }
             }
         }
     }
@@ -682,6 +724,7 @@ impl Analyzer {
             location: None,
             index: None,
             binding: None,
+            patch: false,
             block: Some(block),
             init: None,
             init_expr: None,
@@ -707,7 +750,10 @@ impl Analyzer {
         let frag_input = storage == Storage::Varying && self.stage == Stage::Fragment;
         // Input or output block (a geometry shader's inputs have their own
         // storage).
-        let inout = matches!(storage, Storage::Varying | Storage::GeometryInput);
+        let inout = matches!(
+            storage,
+            Storage::Varying | Storage::PerVertexInput | Storage::PerVertexOutput
+        );
         let buffer = storage == Storage::Buffer;
         let last_member = b.members.len().saturating_sub(1);
         for (mi, m) in b.members.iter().enumerate() {
@@ -732,7 +778,7 @@ impl Analyzer {
                             || l.binding.is_some()
                             || l.origin_upper_left.is_some()
                             || l.pixel_center_integer.is_some()
-                            || !l.geometry.is_empty()
+                            || !l.primitive.is_empty()
                             || (!matches!(storage, Storage::Uniform | Storage::Buffer)
                                 && l.row_major.is_some());
                         if bad {

@@ -18,7 +18,7 @@ impl Analyzer {
     pub(crate) fn compute_layout(&mut self, q: &VarQuals) {
         let l = &q.layout;
         let span = l.span.unwrap_or(q.storage_span);
-        if l.location.is_some() || l.binding.is_some() || !l.geometry.is_empty() {
+        if l.location.is_some() || l.binding.is_some() || !l.primitive.is_empty() {
             self.error(
                 Code::BadQualifier,
                 span,

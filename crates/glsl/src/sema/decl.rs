@@ -74,9 +74,11 @@ impl Analyzer {
     }
 
     /// The storage of a global with qualifiers `q` in this stage: a vertex
-    /// `in` is an attribute, a vertex or geometry `out` and a fragment `in`
-    /// are varyings, a geometry `in` a geometry input, a fragment `out` a
-    /// user output (GLSL 1.30 §4.3.4, §4.3.6; 1.50 §4.3.4).
+    /// `in` is an attribute, a vertex, evaluation or geometry `out`, a
+    /// fragment `in` and the `patch` ones are varyings, a geometry or
+    /// tessellation `in` a per-vertex input, a control shader's `out` a
+    /// per-vertex output, a fragment `out` a user output (GLSL 1.30
+    /// §4.3.4, §4.3.6; 1.50 §4.3.4; GL_ARB_tessellation_shader §4.3).
     pub(crate) fn global_storage(&self, q: &VarQuals) -> Storage {
         match (q.storage, self.stage) {
             (Some(Qualifier::Const), _) => Storage::Const,
@@ -88,9 +90,28 @@ impl Analyzer {
             // A compute shader's only inputs are its built-in IDs.
             (Some(Qualifier::In), Stage::Compute) => Storage::Varying,
             (Some(Qualifier::In), Stage::Vertex) => Storage::Attribute,
-            (Some(Qualifier::In), Stage::Geometry) => Storage::GeometryInput,
+            (Some(Qualifier::In), Stage::Geometry) => Storage::PerVertexInput,
+            // GL_ARB_tessellation_shader §4.3.4, §4.3.6: per-vertex inputs
+            // of both stages and outputs of the control stage, unless
+            // per-patch.
+            (Some(Qualifier::In), Stage::TessControl | Stage::TessEvaluation) => {
+                if q.patch.is_some() {
+                    Storage::Varying
+                } else {
+                    Storage::PerVertexInput
+                }
+            }
+            (Some(Qualifier::Out), Stage::TessControl) => {
+                if q.patch.is_some() {
+                    Storage::Varying
+                } else {
+                    Storage::PerVertexOutput
+                }
+            }
             (Some(Qualifier::In), Stage::Fragment) => Storage::Varying,
-            (Some(Qualifier::Out), Stage::Vertex | Stage::Geometry) => Storage::Varying,
+            (Some(Qualifier::Out), Stage::Vertex | Stage::TessEvaluation | Stage::Geometry) => {
+                Storage::Varying
+            }
             (Some(Qualifier::Out), Stage::Fragment) => Storage::FragOutput,
             _ => Storage::Private,
         }
@@ -140,9 +161,13 @@ impl Analyzer {
             // The prelude's inputs (`gl_VertexID`, `gl_FrontFacing`,
             // `gl_PrimitiveID`) have types user attributes and varyings
             // may not.
-            Some(Storage::Attribute | Storage::Varying | Storage::GeometryInput)
-                if self.builtin_mode => {}
-            Some(Storage::GeometryInput) if self.lang.ext_geometry_shader4() => {
+            Some(
+                Storage::Attribute
+                | Storage::Varying
+                | Storage::PerVertexInput
+                | Storage::PerVertexOutput,
+            ) if self.builtin_mode => {}
+            Some(Storage::PerVertexInput) if self.lang.ext_geometry_shader4() => {
                 // GL_EXT_geometry_shader4 §4.3.6: the types of varyings
                 // (1.30 adds the integer ones), one element per input
                 // vertex.
@@ -173,24 +198,38 @@ impl Analyzer {
                     .push("GL_EXT_geometry_shader4 §4.3.6: a geometry shader has one input per vertex of its primitive; the program's GEOMETRY_INPUT_TYPE sizes the array (gl_VerticesIn elements)".into());
                 }
             }
-            Some(Storage::GeometryInput) => {
-                // GLSL 1.50 §4.3.4: the types of outputs, one element per
-                // input vertex.
+            Some(s @ (Storage::PerVertexInput | Storage::PerVertexOutput)) => {
+                // GLSL 1.50 §4.3.4, GL_ARB_tessellation_shader §4.3.4 and
+                // §4.3.6: the types of outputs, one element per vertex of
+                // the primitive or patch.
+                let input = s == Storage::PerVertexInput;
+                let (what, kw) = if input {
+                    ("input", "in")
+                } else {
+                    ("output", "out")
+                };
+                let stage = self.stage.name();
                 let struct_ok = is_struct && !self.contains_integer(elem);
                 if !(float_based || int_based || struct_ok) {
                     self.error(
                         Code::TypeMismatch,
                         d.name.span,
-                        format!("geometry input `{name}' has type {tn}; inputs must be float, int or uint scalars, vectors, float matrices or structs"),
+                        format!("{stage} {what} `{name}' has type {tn}; {what}s must be float, int or uint scalars, vectors, float matrices or structs"),
                     );
                 } else if !ty.is_array() {
+                    let note = match self.stage {
+                        Stage::Geometry => "GLSL 1.50 §4.3.4: a geometry shader has one input per vertex of its primitive; the primitive's layout sizes the array",
+                        Stage::TessControl if input => "GL_ARB_tessellation_shader §4.3.4: a tessellation control shader reads the whole input patch; its inputs have gl_MaxPatchVertices elements (write `patch' for nothing here: patch inputs are evaluation shaders')",
+                        Stage::TessControl => "GL_ARB_tessellation_shader §4.3.6: a tessellation control shader's outputs have one element per vertex of the output patch (`layout(vertices = N) out;' sizes them); write `patch out' for one value per patch",
+                        _ => "GL_ARB_tessellation_shader §4.3.4: a tessellation evaluation shader reads the whole patch; its inputs have gl_MaxPatchVertices elements; write `patch in' for one value per patch",
+                    };
                     self.error(
                         Code::TypeMismatch,
                         d.name.span,
-                        format!("geometry shader input `{name}' must be an array: `in {tn} {name}[];'"),
+                        format!("{stage} shader {what} `{name}' must be an array: `{kw} {tn} {name}[];'"),
                     )
                     .notes
-                    .push("GLSL 1.50 §4.3.4: a geometry shader has one input per vertex of its primitive; the primitive's layout sizes the array".into());
+                    .push(note.into());
                 }
             }
             Some(Storage::Attribute) => {
@@ -234,6 +273,13 @@ impl Analyzer {
                         ("vertex output", "vertex outputs")
                     } else if self.stage == Stage::Geometry {
                         ("geometry output", "geometry outputs")
+                    } else if q.patch.is_some() {
+                        ("per-patch variable", "per-patch variables")
+                    } else if self.stage == Stage::TessEvaluation {
+                        (
+                            "tessellation evaluation output",
+                            "tessellation evaluation outputs",
+                        )
                     } else {
                         ("fragment input", "fragment inputs")
                     };
@@ -505,6 +551,7 @@ impl Analyzer {
                 location,
                 index,
                 binding,
+                patch: q.patch.is_some(),
                 block: None,
                 init: value,
                 init_expr,
@@ -514,8 +561,11 @@ impl Analyzer {
                 span: d.name.span,
             });
             self.scopes.insert(name, Symbol::Var(Var::Global(id)));
-            if storage == Storage::GeometryInput && !self.builtin_mode && ty.is_array() {
-                self.size_geometry_input(id, d.name.span);
+            if storage == Storage::PerVertexInput && !self.builtin_mode && ty.is_array() {
+                self.size_per_vertex_input(id, d.name.span);
+            }
+            if storage == Storage::PerVertexOutput && ty.is_array() {
+                self.size_per_vertex_output(id, d.name.span);
             }
             None
         } else {
@@ -541,7 +591,7 @@ impl Analyzer {
     fn ext_two_dimensional_input(&self, q: &VarQuals, base: Type) -> bool {
         self.scopes.is_global()
             && q.storage.is_some()
-            && self.global_storage(q) == Storage::GeometryInput
+            && self.global_storage(q) == Storage::PerVertexInput
             && self.lang.ext_geometry_shader4()
             && !base.is_array()
     }
@@ -712,8 +762,9 @@ impl Analyzer {
         // the block or on its own, not both (GLSL 1.50 §7.1).
         let output = match self.stage {
             Stage::Vertex => true,
-            Stage::Geometry => q.storage != Some(Qualifier::In),
-            Stage::Fragment | Stage::Compute => false,
+            Stage::Geometry | Stage::TessEvaluation => q.storage != Some(Qualifier::In),
+            // A control shader's outputs are `gl_out[]''s members.
+            Stage::TessControl | Stage::Fragment | Stage::Compute => false,
         };
         if output && super::blocks::PER_VERTEX_OUT_MEMBERS.contains(&name.as_str()) {
             if self.module.per_vertex_out.is_some() {
@@ -729,7 +780,7 @@ impl Analyzer {
             self.per_vertex_member_redeclared
                 .get_or_insert(name.clone());
         }
-        if let (Some(v), "gl_TexCoordIn" | "gl_ClipDistanceIn", Storage::GeometryInput) =
+        if let (Some(v), "gl_TexCoordIn" | "gl_ClipDistanceIn", Storage::PerVertexInput) =
             (builtin, name.as_str(), storage)
         {
             self.redeclare_two_dimensional_input(v, ty, d);
@@ -749,14 +800,14 @@ impl Analyzer {
         let colors: &[&str] = match self.stage {
             // Compatibility-profile geometry outputs are the vertex
             // stage's (GLSL 1.50 §7.1.1).
-            Stage::Vertex | Stage::Geometry => &[
+            Stage::Vertex | Stage::TessEvaluation | Stage::Geometry => &[
                 "gl_FrontColor",
                 "gl_BackColor",
                 "gl_FrontSecondaryColor",
                 "gl_BackSecondaryColor",
             ],
             Stage::Fragment => &["gl_Color", "gl_SecondaryColor"],
-            Stage::Compute => &[],
+            Stage::TessControl | Stage::Compute => &[],
         };
         let color_ok = colors.contains(&name.as_str()) && varying && !ty.is_array();
         let frag_coord_ok = name == "gl_FragCoord"
@@ -985,7 +1036,7 @@ impl Analyzer {
             let output_builtin = gl.builtin
                 && gl.storage == Storage::Private
                 && matches!(self.stage, Stage::Vertex | Stage::Geometry);
-            let stage_io = matches!(gl.storage, Storage::Varying | Storage::GeometryInput);
+            let stage_io = matches!(gl.storage, Storage::Varying | Storage::PerVertexInput);
             if !stage_io && !output_builtin {
                 self.error(
                     Code::BadQualifier,

@@ -116,7 +116,7 @@ fn seed_lecture_program_links_with_its_parameters() {
         .iter()
         .find(|x| x.name == "gl_PositionIn")
         .expect("gl_PositionIn");
-    assert_eq!(pos.storage, Storage::GeometryInput);
+    assert_eq!(pos.storage, Storage::PerVertexInput);
     assert_eq!(pos.ty.array, Some(ArraySize::Sized(3)));
     // The same program in the 1.50 form links to the same layout.
     let g150 = geom(
@@ -419,7 +419,7 @@ void main() {
     ok(&g);
     let m = g.module.as_ref().expect("compiled");
     let color = m.globals.iter().find(|x| x.name == "color").expect("color");
-    assert_eq!(color.storage, Storage::GeometryInput);
+    assert_eq!(color.storage, Storage::PerVertexInput);
     for out in ["fcolor", "fsize"] {
         let o = m.globals.iter().find(|x| x.name == out).expect("output");
         assert_eq!(o.storage, Storage::Varying, "{out}");

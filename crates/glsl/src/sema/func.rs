@@ -323,6 +323,8 @@ impl Analyzer {
             implicit: Vec::new(),
             loop_depth: 0,
             switch_depth: 0,
+            if_depth: 0,
+            returned: false,
         });
         self.scopes.push();
         let mut params_out = Vec::with_capacity(params.len());
@@ -598,6 +600,9 @@ impl Analyzer {
                     Some(function) => {
                         self.check_texel_offset(function, &out_args);
                         self.check_atomic_memory(function, &out_args);
+                        if function == crate::builtin_fn::BuiltinFn::Barrier {
+                            self.check_barrier_placement(span);
+                        }
                         ExprKind::Builtin {
                             function,
                             args: out_args,

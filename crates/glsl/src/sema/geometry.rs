@@ -25,20 +25,37 @@ use crate::limits;
 use crate::source::Span;
 use crate::types::ArraySize;
 
-use super::interface::VarQuals;
+use super::interface::{VarQuals, GEOMETRY_LAYOUTS, TESS_LAYOUTS};
 
 impl Analyzer {
-    /// A geometry layout identifier where none is allowed.
-    pub(crate) fn misplaced_geometry_layout(&mut self, g: &str, span: Span) {
-        let msg = if self.stage == Stage::Geometry {
-            format!("`{g}' is allowed only in `layout({g}) in;' or `layout({g}) out;', not on a declaration")
+    /// A geometry or tessellation layout identifier where none is
+    /// allowed.
+    pub(crate) fn misplaced_primitive_layout(&mut self, g: &str, span: Span) {
+        let geometry = GEOMETRY_LAYOUTS.contains(&g);
+        let tess = TESS_LAYOUTS.contains(&g);
+        let own = match self.stage {
+            Stage::Geometry => geometry,
+            Stage::TessControl | Stage::TessEvaluation => tess,
+            _ => false,
+        };
+        let msg = if own {
+            match self.stage {
+                Stage::TessControl => format!("`{g}' is allowed only in `layout({g}) out;', not on a declaration"),
+                Stage::TessEvaluation => format!("`{g}' is allowed only in `layout({g}) in;', not on a declaration"),
+                _ => format!("`{g}' is allowed only in `layout({g}) in;' or `layout({g}) out;', not on a declaration"),
+            }
         } else {
+            let kind = match (geometry, tess) {
+                (true, true) => "geometry or tessellation evaluation shader",
+                (true, false) => "geometry shader",
+                _ => "tessellation shader",
+            };
             format!(
-                "`{g}' is a geometry shader layout qualifier; {} shaders have no input or output layouts",
+                "`{g}' is a {kind} layout qualifier; not one of a {} shader",
                 self.stage.name()
             )
         };
-        let code = if self.stage == Stage::Geometry {
+        let code = if own {
             Code::BadQualifier
         } else {
             Code::StageMismatch
@@ -46,10 +63,14 @@ impl Analyzer {
         self.error(code, span, msg);
     }
 
-    /// The size of every input array: the vertices of the declared input
-    /// primitive.
-    pub(crate) fn geometry_input_size(&self) -> Option<u32> {
-        self.module.geometry.input.map(InputPrimitive::vertices)
+    /// The size of every per-vertex input array: the vertices of a
+    /// geometry shader's declared input primitive, gl_MaxPatchVertices in
+    /// the tessellation stages (GL_ARB_tessellation_shader §4.3.8.1).
+    pub(crate) fn per_vertex_input_size(&self) -> Option<u32> {
+        match self.stage {
+            Stage::TessControl | Stage::TessEvaluation => Some(limits::MAX_PATCH_VERTICES),
+            _ => self.module.geometry.input.map(InputPrimitive::vertices),
+        }
     }
 
     /// `layout(...) in;` (`input`) or `layout(...) out;` of a geometry
@@ -95,7 +116,7 @@ impl Analyzer {
         }
         let mut prim: Option<(&str, Span)> = None;
         let mut max_vertices = None;
-        for (name, value, s) in &l.geometry {
+        for (name, value, s) in &l.primitive {
             let ok = if input {
                 InputPrimitive::from_name(name).is_some()
             } else {
@@ -216,7 +237,7 @@ impl Analyzer {
             .map(|i| GlobalId(i as u32))
             .filter(|g| {
                 let g = &self.module.globals[g.0 as usize];
-                g.storage == Storage::GeometryInput && g.ty.array == Some(ArraySize::Unsized)
+                g.storage == Storage::PerVertexInput && g.ty.array == Some(ArraySize::Unsized)
             })
             .collect();
         for id in ids {
@@ -230,23 +251,28 @@ impl Analyzer {
                 );
                 self.error(Code::IndexOutOfRange, span, msg);
             }
-            self.resize_geometry_input(id, n);
+            self.resize_per_vertex_array(id, n);
         }
     }
 
     /// A geometry input array just declared (a variable or a block
     /// instance): sized by the input primitive if there is one, else
     /// checked against the other sized inputs.
-    pub(crate) fn size_geometry_input(&mut self, id: GlobalId, span: Span) {
+    pub(crate) fn size_per_vertex_input(&mut self, id: GlobalId, span: Span) {
         let Some(g) = self.module.globals.get(id.0 as usize) else {
             return;
         };
         let name = g.name.clone();
-        match (g.ty.array, self.geometry_input_size()) {
-            (Some(ArraySize::Unsized), Some(n)) => self.resize_geometry_input(id, n),
+        match (g.ty.array, self.per_vertex_input_size()) {
+            (Some(ArraySize::Unsized), Some(n)) => self.resize_per_vertex_array(id, n),
             (Some(ArraySize::Sized(len)), Some(n)) if len != n => {
                 let p = self.module.geometry.input.unwrap_or(InputPrimitive::Points);
-                let msg = if self.lang.ext_geometry_shader4() {
+                let msg = if self.stage != Stage::Geometry {
+                    format!(
+                        "input `{name}' has {len} elements, but a {} shader's per-vertex inputs have gl_MaxPatchVertices ({n})",
+                        self.stage.name()
+                    )
+                } else if self.lang.ext_geometry_shader4() {
                     format!(
                         "input `{name}' has {len} elements, but input primitives of type {} have {n} vertices (gl_VerticesIn)",
                         p.gl_name()
@@ -272,20 +298,6 @@ impl Analyzer {
                 None => self.geometry_input_len = Some((len, name)),
             },
             _ => {}
-        }
-    }
-
-    fn resize_geometry_input(&mut self, id: GlobalId, n: u32) {
-        let Some(g) = self.module.globals.get_mut(id.0 as usize) else {
-            return;
-        };
-        g.ty.array = Some(ArraySize::Sized(n));
-        if let Some(b) = g.block {
-            if let Some(blk) = self.module.blocks.get_mut(b.0 as usize) {
-                if blk.instance.is_some() {
-                    blk.array = Some(n);
-                }
-            }
         }
     }
 }

@@ -50,7 +50,7 @@ fn pass_through_program_links() {
     assert_eq!(m.geometry.output, Some(OutputPrimitive::TriangleStrip));
     assert_eq!(m.geometry.max_vertices, Some(3));
     let color = m.globals.iter().find(|x| x.name == "color").expect("input");
-    assert_eq!(color.storage, Storage::GeometryInput);
+    assert_eq!(color.storage, Storage::PerVertexInput);
     assert_eq!(color.ty.array, Some(ArraySize::Sized(3)));
     let p = link(&[&f, &v, &g]);
     assert!(p.ok(), "{}", p.info_log());

@@ -33,11 +33,12 @@ pub(crate) struct LayoutQuals {
     /// `local_size_x`, `_y`, `_z` (GL_ARB_compute_shader): only a compute
     /// shader's `layout(...) in;` takes them ([`Analyzer::compute_layout`]).
     pub local_size: [Option<(u32, Span)>; 3],
-    /// Geometry-shader identifiers (`triangles`, `max_vertices`...) in
-    /// order, with the value of `max_vertices`: only `layout(...) in;` and
-    /// `layout(...) out;` of a geometry shader take them
-    /// ([`Analyzer::geometry_layout`]).
-    pub geometry: Vec<(String, Option<u32>, Span)>,
+    /// Primitive identifiers of geometry and tessellation shaders
+    /// (`triangles`, `max_vertices`, `vertices`, `quads`, `cw`...) in
+    /// order, with the value of `max_vertices` and `vertices`: only
+    /// `layout(...) in;` and `layout(...) out;` of those stages take them
+    /// ([`Analyzer::geometry_layout`], [`Analyzer::tess_layout`]).
+    pub primitive: Vec<(String, Option<u32>, Span)>,
 }
 
 /// The qualifiers of a variable declaration, checked.
@@ -48,6 +49,8 @@ pub(crate) struct VarQuals {
     pub storage_span: Span,
     pub invariant: bool,
     pub centroid: bool,
+    /// `patch` (GL_ARB_tessellation_shader), with where it was written.
+    pub patch: Option<Span>,
     pub interpolation: Option<(Interpolation, Span)>,
     pub precision: Option<Span>,
     pub layout: LayoutQuals,
@@ -111,6 +114,7 @@ fn rank(q: Qualifier) -> u8 {
         | Qualifier::Uniform
         | Qualifier::Varying
         | Qualifier::Centroid
+        | Qualifier::Patch
         | Qualifier::In
         | Qualifier::Out
         | Qualifier::Inout
@@ -125,7 +129,8 @@ fn rank(q: Qualifier) -> u8 {
     }
 }
 
-const GEOMETRY_LAYOUTS: &[&str] = &[
+/// The primitive identifiers of geometry shader layouts.
+pub(crate) const GEOMETRY_LAYOUTS: &[&str] = &[
     "points",
     "lines",
     "lines_adjacency",
@@ -134,6 +139,22 @@ const GEOMETRY_LAYOUTS: &[&str] = &[
     "line_strip",
     "triangle_strip",
     "max_vertices",
+];
+
+/// The identifiers of tessellation shader layouts
+/// (GL_ARB_tessellation_shader §4.3.8.1-2); `triangles` is also a
+/// geometry one.
+pub(crate) const TESS_LAYOUTS: &[&str] = &[
+    "vertices",
+    "triangles",
+    "quads",
+    "isolines",
+    "equal_spacing",
+    "fractional_even_spacing",
+    "fractional_odd_spacing",
+    "cw",
+    "ccw",
+    "point_mode",
 ];
 
 /// Whether a type can take a precision qualifier (§4.5.2: floating-point
@@ -260,6 +281,30 @@ impl Analyzer {
                         self.error(Code::BadQualifier, sq.span, msg);
                     }
                     q.centroid = true;
+                }
+                Qualifier::Patch => {
+                    // An auxiliary storage qualifier like `centroid':
+                    // directly before `in' or `out' (anywhere among an
+                    // input's or output's qualifiers with
+                    // GL_ARB_shading_language_420pack).
+                    let next = quals.get(i + 1).map(|n| n.qualifier);
+                    let io = |q: Qualifier| matches!(q, Qualifier::In | Qualifier::Out);
+                    let ok = if any_order {
+                        quals.iter().any(|o| io(o.qualifier))
+                    } else {
+                        next.is_some_and(io)
+                    };
+                    if q.patch.is_some() {
+                        self.error(Code::BadQualifier, sq.span, "`patch' given twice");
+                    }
+                    if !ok {
+                        self.error(
+                            Code::BadQualifier,
+                            sq.span,
+                            "`patch' must be followed by `in' or `out'",
+                        );
+                    }
+                    q.patch = Some(sq.span);
                 }
                 Qualifier::Invariant => {
                     if q.invariant {
@@ -390,6 +435,13 @@ impl Analyzer {
                 );
                 q.centroid = false;
             }
+            if let Some(span) = q.patch.take() {
+                self.error(
+                    Code::BadQualifier,
+                    span,
+                    "`patch' is only allowed on global inputs and outputs of tessellation shaders",
+                );
+            }
             return q;
         }
         self.stage_qualifiers(&mut q, quals);
@@ -491,6 +543,33 @@ impl Analyzer {
             }
             _ => {}
         }
+        // GL_ARB_tessellation_shader §4.3.4, §4.3.6: `patch out' in
+        // control shaders, `patch in' in evaluation shaders.
+        if let Some(span) = q.patch {
+            let ok = match storage {
+                Some(Qualifier::Out) => self.stage == Stage::TessControl,
+                Some(Qualifier::In) => self.stage == Stage::TessEvaluation,
+                _ => false,
+            };
+            if !ok {
+                let what = match storage {
+                    Some(Qualifier::In) => {
+                        "`patch in' is allowed only in tessellation evaluation shaders"
+                    }
+                    Some(Qualifier::Out) => {
+                        "`patch out' is allowed only in tessellation control shaders"
+                    }
+                    _ => "`patch' applies only to `in' and `out' variables",
+                };
+                let stage = self.stage.name();
+                self.error(Code::BadQualifier, span, what.to_string())
+                    .notes
+                    .push(format!(
+                        "a control shader writes per-patch outputs (`patch out'), the evaluation shader reads them (`patch in'); this is a {stage} shader"
+                    ));
+                q.patch = None;
+            }
+        }
         // A geometry shader's inputs and outputs both take interpolation
         // and `centroid' (GLSL 1.50 §4.3.4, §4.3.6).
         if let Some((i, span)) = q.interpolation {
@@ -585,6 +664,7 @@ impl Analyzer {
             "location"
                 | "index"
                 | "max_vertices"
+                | "vertices"
                 | "binding"
                 | "local_size_x"
                 | "local_size_y"
@@ -693,12 +773,17 @@ impl Analyzer {
                     out.pixel_center_integer = Some(span);
                 }
             }
-            g if GEOMETRY_LAYOUTS.contains(&g) => {
+            g if GEOMETRY_LAYOUTS.contains(&g) || TESS_LAYOUTS.contains(&g) => {
+                if !GEOMETRY_LAYOUTS.contains(&g)
+                    && !self.require(Feature::TessellationShader, &format!("`{lower}'"), span)
+                {
+                    return;
+                }
                 let value = id.value.as_ref().and_then(|e| self.layout_value(e));
                 if id.value.is_some() && value.is_none() {
                     return;
                 }
-                out.geometry.push((lower.clone(), value, span));
+                out.primitive.push((lower.clone(), value, span));
             }
             _ => {
                 self.error(
@@ -865,8 +950,8 @@ impl Analyzer {
                 );
             }
         }
-        if let Some((g, _, span)) = l.geometry.first() {
-            self.misplaced_geometry_layout(g, *span);
+        if let Some((g, _, span)) = l.primitive.first() {
+            self.misplaced_primitive_layout(g, *span);
         }
         if let Some((_, span)) = l.local_size.iter().flatten().next() {
             self.misplaced_local_size(*span);
@@ -952,7 +1037,7 @@ impl Analyzer {
                     || l.binding.is_some()
                     || l.origin_upper_left.is_some()
                     || l.pixel_center_integer.is_some()
-                    || !l.geometry.is_empty()
+                    || !l.primitive.is_empty()
                 {
                     self.error(
                         Code::BadQualifier,
@@ -977,9 +1062,15 @@ impl Analyzer {
             Some(Qualifier::In) if self.stage == Stage::Compute && l.span.is_some() => {
                 self.compute_layout(&q);
             }
+            Some(Qualifier::Out) if self.stage == Stage::TessControl && l.span.is_some() => {
+                self.tess_layout(&q, false);
+            }
+            Some(Qualifier::In) if self.stage == Stage::TessEvaluation && l.span.is_some() => {
+                self.tess_layout(&q, true);
+            }
             _ => {
-                if let Some((g, _, s)) = l.geometry.first() {
-                    self.misplaced_geometry_layout(g, *s);
+                if let Some((g, _, s)) = l.primitive.first() {
+                    self.misplaced_primitive_layout(g, *s);
                 } else if let Some((_, s)) = l.local_size.iter().flatten().next() {
                     self.misplaced_local_size(*s);
                 } else {

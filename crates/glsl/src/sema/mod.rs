@@ -29,6 +29,7 @@ mod geometry;
 mod interface;
 mod scope;
 mod stmt;
+mod tessellation;
 mod types;
 
 use crate::ast::{self, TranslationUnit};
@@ -109,6 +110,14 @@ pub fn analyze(tu: &TranslationUnit, ctx: &Context) -> (Module, Vec<Diagnostic>)
         a.require(
             crate::lang::Feature::ComputeShader,
             "a compute shader",
+            crate::source::Span::default(),
+        );
+    }
+    if matches!(ctx.stage, Stage::TessControl | Stage::TessEvaluation) {
+        let what = format!("a {} shader", ctx.stage.name());
+        a.require(
+            crate::lang::Feature::TessellationShader,
+            &what,
             crate::source::Span::default(),
         );
     }
@@ -277,6 +286,11 @@ pub(crate) struct FnState {
     pub loop_depth: u32,
     /// Switch statements around the current statement (for `break`).
     pub switch_depth: u32,
+    /// `if` statements around the current statement.
+    pub if_depth: u32,
+    /// A `return` statement came before the current one (in source
+    /// order).
+    pub returned: bool,
 }
 
 /// Bookkeeping per module function.
@@ -320,6 +334,10 @@ pub(crate) struct Analyzer {
     /// layout: its size and name (later sizes must agree, GLSL 1.50
     /// §4.3.8.1).
     pub geometry_input_len: Option<(u32, String)>,
+    /// A control shader's first sized per-vertex output before any
+    /// `layout(vertices = N) out;`: its size and name (later sizes and
+    /// the layout must agree, GL_ARB_tessellation_shader §4.3.8.2).
+    pub tess_output_len: Option<(u32, String)>,
     /// [`Context::defer_input_index`].
     pub defer_input_index: bool,
     /// Built-in outputs a redeclared `gl_PerVertex` left out: no longer
@@ -357,6 +375,7 @@ impl Analyzer {
             default_row_major: false,
             frag_coord_redeclared: None,
             geometry_input_len: None,
+            tess_output_len: None,
             defer_input_index: false,
             hidden_builtins: Vec::new(),
             per_vertex_member_redeclared: None,
@@ -458,8 +477,13 @@ impl Analyzer {
     /// (and the EXT form's `gl_PositionIn[]'...) take the input
     /// primitive's size once it is declared.
     fn builtin_global_type(&self, g: &ir::Global) -> Type {
-        match (g.storage, g.ty.array, self.geometry_input_size()) {
-            (ir::Storage::GeometryInput, Some(crate::types::ArraySize::Unsized), Some(n)) => Type {
+        let size = match g.storage {
+            ir::Storage::PerVertexInput => self.per_vertex_input_size(),
+            ir::Storage::PerVertexOutput => self.module.tessellation.vertices,
+            _ => None,
+        };
+        match (g.ty.array, size) {
+            (Some(crate::types::ArraySize::Unsized), Some(n)) => Type {
                 array: Some(crate::types::ArraySize::Sized(n)),
                 ..g.ty
             },
@@ -620,9 +644,15 @@ impl Analyzer {
                 ));
             }
         }
-        let others = [Stage::Vertex, Stage::Geometry, Stage::Fragment]
-            .into_iter()
-            .filter(|&s| s != self.stage);
+        let others = [
+            Stage::Vertex,
+            Stage::TessControl,
+            Stage::TessEvaluation,
+            Stage::Geometry,
+            Stage::Fragment,
+        ]
+        .into_iter()
+        .filter(|&s| s != self.stage);
         for other in others {
             if found(self.lang, other) {
                 return Some((
@@ -748,5 +778,7 @@ mod pack420_tests;
 mod per_vertex_in_tests;
 #[cfg(test)]
 mod storage_tests;
+#[cfg(test)]
+mod tessellation_tests;
 #[cfg(test)]
 mod tests;

@@ -50,7 +50,7 @@ fn input_block_redeclared_with_a_subset() {
     assert_eq!(members[1].1.array, Some(ArraySize::Sized(2)));
     let m = g.module.as_ref().expect("compiled");
     let gl_in = m.globals.iter().find(|g| g.name == "gl_in").expect("gl_in");
-    assert_eq!(gl_in.storage, Storage::GeometryInput);
+    assert_eq!(gl_in.storage, Storage::PerVertexInput);
     assert_eq!(gl_in.ty.array, Some(ArraySize::Sized(3)));
     assert!(gl_in.block.is_none());
     assert_eq!(m.per_vertex_in.as_ref().map(Vec::len), Some(2));

@@ -65,11 +65,17 @@ impl Analyzer {
             }
             StmtKind::If { cond, then, else_ } => {
                 let c = self.condition_expr(cond, "if");
+                if let Some(f) = self.cur.as_mut() {
+                    f.if_depth += 1;
+                }
                 let then = self.scoped_sub_block(then);
                 let else_ = match else_ {
                     Some(e) => self.scoped_sub_block(e),
                     None => Vec::new(),
                 };
+                if let Some(f) = self.cur.as_mut() {
+                    f.if_depth -= 1;
+                }
                 out.push(ir::Stmt::If {
                     cond: c,
                     then,
@@ -154,7 +160,12 @@ impl Analyzer {
                     out.push(ir::Stmt::Continue(span));
                 }
             }
-            StmtKind::Return(v) => out.push(self.return_stmt(v.as_ref(), span)),
+            StmtKind::Return(v) => {
+                out.push(self.return_stmt(v.as_ref(), span));
+                if let Some(f) = self.cur.as_mut() {
+                    f.returned = true;
+                }
+            }
             StmtKind::Discard => {
                 if self.stage != Stage::Fragment {
                     self.error(

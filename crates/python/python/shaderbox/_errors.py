@@ -105,7 +105,7 @@ class CompileError(_ProgramError):
     """
 
     def __init__(self, diagnostics: Diagnostics):
-        stages = [s for s in ("vertex", "geometry", "fragment", "compute") if any(d.stage == s for d in diagnostics.errors)]
+        stages = [s for s in ("vertex", "tessellation control", "tessellation evaluation", "geometry", "fragment", "compute") if any(d.stage == s for d in diagnostics.errors)]
         what = " and ".join(stages) + (" shaders" if len(stages) > 1 else " shader") if stages else "the shader"
         super().__init__(f"the {what} did not compile".replace("the the", "the"), diagnostics)
 
