@@ -78,6 +78,7 @@ pub(crate) unsafe fn prologue(code: &Code, regs: *mut Lanes, uniforms: &[u32]) {
         };
         let mut st = State {
             cur: FULL,
+            effects: FULL,
             mk: [!0; LANES],
             masks: &mut masks,
             ret: &mut ret,
@@ -100,6 +101,10 @@ pub(crate) unsafe fn prologue(code: &Code, regs: *mut Lanes, uniforms: &[u32]) {
 
 struct State<'a> {
     cur: LaneMask,
+    /// Lanes whose writes to memory take effect: not a fragment batch's
+    /// helper lanes (GL 4.3 §7.12.3: helper invocations have no side
+    /// effects).
+    effects: LaneMask,
     mk: Lanes,
     masks: &'a mut [LaneMask],
     ret: &'a mut [u32],
@@ -155,6 +160,7 @@ pub(crate) fn run_in(
     let mut iterations: u64 = 0;
     let mut st = State {
         cur: start,
+        effects: !batch.helper,
         mk: expand(start),
         masks: &mut masks,
         ret: &mut ret,
@@ -325,6 +331,7 @@ pub(crate) unsafe fn step_data(
     let mut iterations = 0;
     let mut st = State {
         cur,
+        effects: FULL,
         mk: expand(cur),
         masks: &mut masks,
         ret: &mut ret,
@@ -516,6 +523,22 @@ unsafe fn step(
         }
         // Only hooked runs (the reference interpreter) print.
         Op::Printf { .. } => {}
+        Op::Load { .. }
+        | Op::StoreMem { .. }
+        | Op::Atomic { .. }
+        | Op::MemSize { .. }
+        | Op::Barrier => {
+            let get = |r: Reg| *regs.add(r as usize);
+            let lanes = if i.op.writes_memory() {
+                st.cur & st.effects
+            } else {
+                st.cur
+            };
+            if let Some(Some((d, v))) = crate::memory::run_op(&i.op, lanes, get, textures.memory())
+            {
+                put!(d, v);
+            }
+        }
         Op::SaveMask { slot } => st.masks[slot as usize] = st.cur,
         Op::RestoreMask { slot } => {
             st.cur = st.masks[slot as usize];
@@ -970,6 +993,7 @@ mod tests {
                 let (mut disc, mut it) = (0, 0);
                 let mut st = State {
                     cur: FULL,
+                    effects: FULL,
                     mk: [!0; LANES],
                     masks: &mut st_masks,
                     ret: &mut st_ret,

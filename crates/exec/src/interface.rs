@@ -68,6 +68,15 @@ pub struct Interface {
     /// A geometry kernel's emitted vertices: where they are among the
     /// outputs (`None` for the other stages).
     pub emitted: Option<Emitted>,
+    /// The memory spaces of the stage's shader storage blocks, by space
+    /// number ([`crate::Memory`]): each block element's name as GL names
+    /// it (`Block`, `Block[2]`), whose binding gives the buffer.
+    pub buffers: Vec<String>,
+    /// The bytes a compute work group's `shared` variables take
+    /// ([`crate::SHARED_SPACE`], laid out by std430).
+    pub shared_bytes: u32,
+    /// A compute kernel's work-group size.
+    pub local_size: Option<[u32; 3]>,
 }
 
 /// One vertex's share of a geometry kernel's input array: the input

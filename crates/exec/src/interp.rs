@@ -320,6 +320,22 @@ pub(crate) fn run<H: Hook>(
                 }
             }
             Op::Printf { index } => hook.printf(p, index as usize, cur, &r),
+            Op::Load { .. }
+            | Op::StoreMem { .. }
+            | Op::Atomic { .. }
+            | Op::MemSize { .. }
+            | Op::Barrier => {
+                // Helper lanes have no side effects (GL 4.3 §7.12.3).
+                let lanes = if op.writes_memory() {
+                    cur & !batch.helper
+                } else {
+                    cur
+                };
+                let out = crate::memory::run_op(&op, lanes, |x| r[x as usize], textures.memory());
+                if let Some(Some((d, v))) = out {
+                    r[d as usize] = v;
+                }
+            }
             Op::Texture { index } => {
                 if let Some(t) = p.textures.get(index as usize) {
                     texture(&mut r, t, cur, textures);

@@ -220,6 +220,7 @@
 //! - `depth_slice` ([`Kernel::depth_only`]): a fragment kernel sliced to
 //!   its depth and discards.
 
+mod compute;
 pub mod cpu;
 mod depth_slice;
 mod dispatch;
@@ -234,14 +235,17 @@ pub mod lane;
 pub mod lanes16;
 mod liveness;
 mod lower;
+mod memory;
 mod opt;
 pub mod print;
 mod program;
 mod variant;
 
+pub use compute::{run_work_group, WorkGroup};
 pub use float_env::FloatEnv;
 pub use interface::{kinds, size_of, Emitted, Interface, Slot, VertexInput};
 pub use interp::LOOP_BUDGET;
+pub use memory::{AtomicOp, Memory, Words, SHARED_SPACE};
 pub use program::{StatementMark, VarInfo};
 pub use variant::{
     current as kernel_variant, set_variant as set_kernel_variant, supported_variants, Variant,
@@ -456,6 +460,13 @@ pub trait Textures {
     fn size(&self, unit: u32, target: SamplerKind, lod: i32) -> [i32; 3] {
         let _ = (unit, target, lod);
         [0; 3]
+    }
+
+    /// The memory of the run ([`Memory`]: storage buffers, a work
+    /// group's shared variables); without one, loads give 0 and stores
+    /// and atomics do nothing.
+    fn memory(&self) -> Option<&dyn Memory> {
+        None
     }
 }
 

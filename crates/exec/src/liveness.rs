@@ -262,7 +262,9 @@ pub(crate) fn effects(p: &Program, op: &Op) -> Effects {
         full_defs: SmallVec::new(),
         partial_defs: SmallVec::new(),
         uses: SmallVec::new(),
-        control: op.class() == Class::Control,
+        // Writes to memory and barriers are effects of their own.
+        control: op.class() == Class::Control
+            || matches!(op, Op::StoreMem { .. } | Op::Atomic { .. } | Op::Barrier),
     };
     op.for_each_operand(&mut |role, r, n| match role {
         Role::Def => e.full_defs.push((r, n)),

@@ -348,6 +348,18 @@ fn op_text(op: &Op, masked: bool, p: &Program) -> String {
     let bin = |name: &str, d: Reg, a: Reg, b: Reg| format!("{name}{m} r{d}, r{a}, r{b}");
     match *op {
         Const { d, bits } => format!("const{m} r{d}, {}", bits_text(bits)),
+        Load { d, space, addr } => format!("load{m} r{d}, mem[r{space}][r{addr}]"),
+        StoreMem { space, addr, a } => format!("storemem mem[r{space}][r{addr}], r{a}"),
+        Atomic {
+            f,
+            d,
+            space,
+            addr,
+            a,
+            b,
+        } => format!("atomic.{f:?}{m} r{d}, mem[r{space}][r{addr}], r{a}, r{b}"),
+        MemSize { d, space } => format!("memsize{m} r{d}, mem[r{space}]"),
+        Barrier => "barrier".to_string(),
         Mov { d, a } => un("mov", d, a),
         Store { d, a } => un("store", d, a),
         Uniform { d, word, float } => {

@@ -18,6 +18,7 @@
 //! walk them through [`Op::for_each_operand`] and its siblings rather than
 //! naming every op. What the lane-wise ops compute is in `lane::match_op!`.
 
+use crate::memory::AtomicOp;
 use glsl::types::SamplerKind;
 use glsl::Span;
 
@@ -417,6 +418,21 @@ define_ops! {
     /// A texture lookup described by `Program::textures[index]` (its
     /// registers are there, not operands here).
     Data Texture { index: u32 = imm },
+    /// `d = ` the word at byte `addr` of memory `space` ([`crate::Memory`])
+    /// on the lanes of the current mask, one lane after the other; 0 on
+    /// the others.
+    Data Load { d: Reg = def, space: Reg = read, addr: Reg = read },
+    /// The word at byte `addr` of memory `space` `= a` on the lanes of
+    /// the current mask, in lane order.
+    Data StoreMem { space: Reg = read, addr: Reg = read, a: Reg = read },
+    /// An atomic `f` on the word at byte `addr` of memory `space` with
+    /// data `a` (and `b`, `atomicCompSwap`'s), on the lanes of the current
+    /// mask in lane order; `d =` the old value there (0 on the others).
+    Data Atomic { f: AtomicOp = imm, d: Reg = def, space: Reg = read, addr: Reg = read, a: Reg = read, b: Reg = read },
+    /// `d = ` the size in bytes of memory `space`'s buffer.
+    Data MemSize { d: Reg = def, space: Reg = read },
+    /// `barrier()` of a compute shader ([`crate::Memory::barrier`]).
+    Data Barrier,
     /// `debugPrintfEXT` described by `Program::printfs[index]`: reported
     /// to the run's hook for the lanes of the current mask (no effect on
     /// the registers).
@@ -447,6 +463,29 @@ define_ops! {
     /// After a subroutine call: removes the discarded lanes from `cur` and
     /// from the mask slots `kill_slots[start..end]`.
     Control SyncDiscard { start: u32 = imm, end: u32 = imm },
+}
+
+impl Op {
+    /// Reads or writes memory shared between invocations
+    /// ([`crate::Memory`]), or waits at a barrier.
+    pub(crate) fn touches_memory(&self) -> bool {
+        matches!(
+            self,
+            Op::Load { .. }
+                | Op::StoreMem { .. }
+                | Op::Atomic { .. }
+                | Op::MemSize { .. }
+                | Op::Barrier
+        )
+    }
+}
+
+impl Op {
+    /// Writes memory shared between invocations (what a fragment batch's
+    /// helper lanes must not do).
+    pub(crate) fn writes_memory(&self) -> bool {
+        matches!(self, Op::StoreMem { .. } | Op::Atomic { .. })
+    }
 }
 
 /// How a texture lookup chooses its level of detail.

@@ -14,6 +14,7 @@ mod geometry;
 mod integers;
 #[cfg(feature = "jit")]
 mod jit;
+mod memory;
 mod packing;
 mod piglit;
 mod variants;
@@ -1393,19 +1394,4 @@ void main() {
         &[],
     );
     assert_eq!(c[0], [3.0, 5.0, 1.0, 0.0]);
-}
-
-#[test]
-fn programs_with_memory_between_invocations_are_refused_with_a_reason() {
-    let src = "#version 330
-#extension GL_ARB_shader_storage_buffer_object : require
-buffer B { vec4 v[]; };
-out vec4 o;
-void main() { o = v[0]; }";
-    let stage = link_one(Stage::Fragment, src).expect("links");
-    let err = Kernel::new(&stage)
-        .err()
-        .map(|e| e.to_string())
-        .unwrap_or_default();
-    assert!(err.contains("shader storage block"), "{err}");
 }

@@ -425,6 +425,23 @@ impl<'m> Lowerer<'m> {
             self.end_primitive()?;
             return Ok(Vec::new());
         }
+        if f.is_atomic() {
+            return self.atomic(f, args);
+        }
+        match f {
+            B::Barrier => {
+                self.emit(Op::Barrier)?;
+                return Ok(Vec::new());
+            }
+            // Memory is coherent: every write is seen by the next read.
+            B::MemoryBarrier
+            | B::MemoryBarrierAtomicCounter
+            | B::MemoryBarrierBuffer
+            | B::MemoryBarrierImage
+            | B::MemoryBarrierShared
+            | B::GroupMemoryBarrier => return Ok(Vec::new()),
+            _ => {}
+        }
         let refs: Vec<&Expr> = args.iter().collect();
         let v = self.operands(&refs)?;
         let first_kind = args.first().map(|a| kind_of(a.ty));

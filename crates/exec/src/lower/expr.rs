@@ -128,12 +128,15 @@ impl<'m> Lowerer<'m> {
             ExprKind::Builtin { function, args } => self.builtin(*function, args, e.ty),
             ExprKind::Construct { args } => self.construct(e.ty, args),
             // An implicitly sized array's length is the size its uses
-            // gave it (shader storage blocks, whose last member's length
-            // is the buffer's, are refused before lowering).
-            ExprKind::ArrayLength { array } => match self.place(array)?.ty.array {
-                Some(ArraySize::Sized(n)) => Ok(vec![self.konst(n)?]),
-                _ => unsupported("the length of an array whose size is not known"),
-            },
+            // gave it; a storage block's last member's is the buffer's.
+            ExprKind::ArrayLength { array } => {
+                let p = self.place(array)?;
+                match p.ty.array {
+                    Some(ArraySize::Sized(n)) => Ok(vec![self.konst(n)?]),
+                    _ if p.mem.is_some() => Ok(vec![self.mem_length(&p)?]),
+                    _ => unsupported("the length of an array whose size is not known"),
+                }
+            }
             ExprKind::DebugPrintf { format, args } => {
                 let mut regs = Vec::new();
                 for a in args {

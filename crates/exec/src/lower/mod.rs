@@ -45,6 +45,7 @@
 //! - [`unroll`]: which counted loops are unrolled, and known int values.
 //! - [`calls`]: user function calls, inlined or as subroutines (policy).
 //! - [`places`]: l-values, indexing, reads and writes of storage.
+//! - [`memory`]: storage blocks and shared variables, places in memory.
 //! - [`expr`]: expressions, operators, conversions, constructors.
 //! - [`builtins`]: built-in functions other than texture lookups.
 //! - [`emit`]: a geometry shader's `EmitVertex`/`EndPrimitive` and the
@@ -56,6 +57,7 @@ mod builtins;
 mod calls;
 mod emit;
 mod expr;
+mod memory;
 mod places;
 mod regs;
 mod stmt;
@@ -120,6 +122,8 @@ enum CtxKind {
 enum GlobalLoc {
     Reg(Reg),
     Uniform(Option<u32>),
+    /// A storage block member or instance, or a shared variable.
+    Memory(memory::MemGlobal),
 }
 
 struct Frame {
@@ -136,6 +140,8 @@ struct Frame {
 enum Root {
     Reg(Reg),
     Uniform(u32),
+    /// In memory: [`Place::mem`] says where.
+    Memory,
 }
 
 /// A storage location being read or written: `root + off (+ dynamic
@@ -151,6 +157,8 @@ struct Place {
     dynamic: Option<(Reg, u32)>,
     /// Swizzled components, relative to `off`.
     comps: Option<Vec<u32>>,
+    /// Where a place in memory is (its `off` and `dynamic` unused).
+    mem: Option<memory::MemPlace>,
 }
 
 struct Lowerer<'m> {
@@ -203,11 +211,7 @@ fn with_stack<T>(f: impl FnOnce() -> T) -> T {
 }
 
 pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
-    // Memory shared between invocations is not run yet: say so before
-    // lowering reaches an access.
-    let memory = |s: Storage| matches!(s, Storage::Buffer | Storage::Shared);
     match stage.stage {
-        Stage::Compute => return unsupported("compute shaders are not run by this implementation"),
         Stage::TessControl | Stage::TessEvaluation => {
             return unsupported(format!(
                 "{} shaders are not run by this implementation",
@@ -215,12 +219,6 @@ pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
             ))
         }
         _ => {}
-    }
-    if let Some(g) = stage.module.globals.iter().find(|g| memory(g.storage)) {
-        return unsupported(format!(
-            "`{}' is a member of a shader storage block, which this implementation does not run",
-            g.name
-        ));
     }
     let owned;
     let m = match with_ftransform_inputs(&stage.module) {
@@ -246,11 +244,16 @@ pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
         unroll_left: UNROLL_BUDGET,
         emitter: None,
     };
-    // Globals: registers for everything but uniforms; uniform words for
-    // the uniforms the shader reads (others get words if lowering finds a
-    // use, e.g. ftransform's matrix).
+    // Globals: registers for everything but uniforms and memory; uniform
+    // words for the uniforms the shader reads (others get words if
+    // lowering finds a use, e.g. ftransform's matrix).
+    let (buffers, in_memory, shared_bytes) = memory::layout_memory(m);
     for (i, g) in m.globals.iter().enumerate() {
         let id = GlobalId(i as u32);
+        if let Some(Some(mg)) = in_memory.get(i) {
+            l.globals.push(GlobalLoc::Memory(*mg));
+            continue;
+        }
         if g.storage == Storage::Uniform {
             l.globals.push(GlobalLoc::Uniform(None));
             if g.read {
@@ -329,7 +332,11 @@ pub(crate) fn lower(stage: &LinkedStage, inline_limit: u64) -> R<Lowered> {
     l.emit(Op::RestoreMask { slot: fs })?;
     l.frames.pop();
     l.ctx.pop();
-    l.finish()
+    let mut lowered = l.finish()?;
+    lowered.interface.buffers = buffers;
+    lowered.interface.shared_bytes = shared_bytes;
+    lowered.interface.local_size = m.local_size;
+    Ok(lowered)
 }
 
 /// The interface slots of `g` (laid out from `offset`, `n` components)

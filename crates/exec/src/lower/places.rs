@@ -25,6 +25,7 @@ impl<'m> Lowerer<'m> {
             off: 0,
             dynamic: None,
             comps: None,
+            mem: None,
         })
     }
 
@@ -35,10 +36,14 @@ impl<'m> Lowerer<'m> {
         };
         self.used[i] = true;
         let ty = global.ty;
+        if let Some(mg) = self.mem_global(i) {
+            return self.mem_global_place(mg, ty);
+        }
         let size = self.size(ty)? as u32;
         let root = match self.globals[i] {
             GlobalLoc::Reg(r) => Root::Reg(r),
             GlobalLoc::Uniform(_) => Root::Uniform(self.uniform_word(g)?),
+            GlobalLoc::Memory(_) => return unsupported("a global in memory"),
         };
         Ok(Place {
             root,
@@ -47,6 +52,7 @@ impl<'m> Lowerer<'m> {
             off: 0,
             dynamic: None,
             comps: None,
+            mem: None,
         })
     }
 
@@ -64,6 +70,9 @@ impl<'m> Lowerer<'m> {
             ExprKind::Index { base, index } => {
                 let p = self.place(base)?;
                 if let Some(i) = self.const_int(index) {
+                    if p.mem.is_some() {
+                        return self.mem_index(p, Ok(i));
+                    }
                     return self.index_const(p, i);
                 }
                 let i = self.expr(index)?;
@@ -75,10 +84,16 @@ impl<'m> Lowerer<'m> {
                 } else {
                     i
                 };
+                if p.mem.is_some() {
+                    return self.mem_index(p, Err(i));
+                }
                 self.index_dynamic(p, i)
             }
             ExprKind::Member { base, index } => {
                 let mut p = self.place(base)?;
+                if p.mem.is_some() {
+                    return self.mem_member(p, *index);
+                }
                 let Base::Struct(id) = p.ty.base else {
                     return unsupported("member of a non-struct");
                 };
@@ -144,6 +159,7 @@ impl<'m> Lowerer<'m> {
             off: 0,
             dynamic: None,
             comps: None,
+            mem: None,
         })
     }
 
@@ -259,6 +275,9 @@ impl<'m> Lowerer<'m> {
     }
 
     pub(super) fn read(&mut self, p: &Place) -> R<Val> {
+        if p.mem.is_some() {
+            return self.mem_read(p);
+        }
         let comps = self.place_comps(p)?;
         let mut out = Vec::with_capacity(comps.len());
         for c in comps {
@@ -281,6 +300,7 @@ impl<'m> Lowerer<'m> {
                     })?;
                     d
                 }
+                (Root::Memory, _) => return unsupported("a place in memory without its address"),
                 (Root::Uniform(w), Some((off, max))) => {
                     let d = self.temp()?;
                     let float = self.uniform_is_float(w + pos);
@@ -301,6 +321,9 @@ impl<'m> Lowerer<'m> {
 
     /// Stores `v` into `p` on the active lanes.
     pub(super) fn write(&mut self, p: &Place, v: &[Reg]) -> R<()> {
+        if p.mem.is_some() {
+            return self.mem_write(p, v);
+        }
         let Root::Reg(root) = p.root else {
             return unsupported("assignment to a uniform");
         };

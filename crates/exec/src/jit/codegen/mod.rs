@@ -67,6 +67,11 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
         if let Op::Call { .. } | Op::Ret { .. } = i.op {
             return Err("subroutine calls are interpreted".to_string());
         }
+        // Stores to memory skip a fragment batch's helper lanes, which
+        // the interpreter knows of and native code does not.
+        if i.op.touches_memory() {
+            return Err("memory accesses are interpreted".to_string());
+        }
     }
     let isa = isa()?;
     let mut module = JITModule::new(JITBuilder::with_isa(isa, default_libcall_names()));
