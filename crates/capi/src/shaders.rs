@@ -422,6 +422,21 @@ gl_entry_points! {
     fn glUniformBlockBinding(program: GLuint, index: GLuint, binding: GLuint) => |c| {
         c.gl.uniform_block_binding(program, index, binding)
     }
+
+    // ---- storage blocks and compute dispatch (GL_ARB_shader_storage_buffer_object,
+    // GL_ARB_compute_shader) ----
+    fn glShaderStorageBlockBinding(program: GLuint, index: GLuint, binding: GLuint) => |c| {
+        c.gl.shader_storage_block_binding(program, index, binding)
+    }
+    fn glDispatchCompute(x: GLuint, y: GLuint, z: GLuint) => |c| {
+        c.gl.dispatch_compute(x, y, z)
+    }
+    fn glDispatchComputeIndirect(offset: GLintptr) => |c| {
+        c.gl.dispatch_compute_indirect(offset)
+    }
+    fn glMemoryBarrier(barriers: GLbitfield) => |c| {
+        c.gl.memory_barrier(barriers)
+    }
     fn glGetUniformIndices(
         program: GLuint, count: GLsizei, names: *const *const GLchar, indices: *mut GLuint
     ) => |c| {

@@ -537,7 +537,6 @@ mod tests {
     fn skips_and_usage_failures_before_reading_the_file() {
         // None of these files exist: the verdict comes before reading.
         let e = |a: Args| evaluate(&a).verdict;
-        assert_eq!(e(args("/none/t.tesc", "1.20", &[])), Verdict::Skip);
         assert_eq!(e(args("/none/t.vert", "3.00 es", &[])), Verdict::Skip);
         assert_eq!(e(args("/none/t.vert", "4.00", &[])), Verdict::Skip);
         assert_eq!(
@@ -557,5 +556,13 @@ mod tests {
             "{}",
             missing.message
         );
+        // Tessellation shaders are compiled (and so read) too.
+        let tess = evaluate(&args(
+            "/none/t.tesc",
+            "1.50",
+            &["GL_ARB_tessellation_shader"],
+        ));
+        assert_eq!(tess.verdict, Verdict::Fail);
+        assert!(tess.message.starts_with("cannot read"), "{}", tess.message);
     }
 }

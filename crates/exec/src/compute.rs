@@ -218,6 +218,14 @@ impl Textures for GroupView<'_> {
     }
 }
 
+impl std::fmt::Debug for GroupView<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("GroupView")
+            .field("shared", &self.shared)
+            .finish_non_exhaustive()
+    }
+}
+
 impl Memory for GroupView<'_> {
     fn load(&self, space: u32, addr: u32) -> u32 {
         match (space, self.inner.memory()) {

@@ -245,7 +245,7 @@ pub use compute::{run_work_group, WorkGroup};
 pub use float_env::FloatEnv;
 pub use interface::{kinds, size_of, Emitted, Interface, Slot, VertexInput};
 pub use interp::LOOP_BUDGET;
-pub use memory::{AtomicOp, Memory, Words, SHARED_SPACE};
+pub use memory::{buffer_space, AtomicOp, Memory, Words, SHARED_SPACE};
 pub use program::{StatementMark, VarInfo};
 pub use variant::{
     current as kernel_variant, set_variant as set_kernel_variant, supported_variants, Variant,
@@ -601,6 +601,12 @@ impl Kernel {
 
     pub fn stage(&self) -> glsl::Stage {
         self.stage
+    }
+
+    /// Whether a run writes memory ([`Memory`]: storage blocks, shared
+    /// variables), which makes the order of runs matter.
+    pub fn writes_memory(&self) -> bool {
+        self.code.prog.ops.iter().any(|op| op.writes_memory())
     }
 
     pub fn interface(&self) -> &Interface {

@@ -5,7 +5,7 @@
 //!
 //! A program names a buffer by a *space*: the storage blocks of its
 //! stage, one space per block element, numbered in the order of
-//! [`crate::Interface::buffers`]; [`SHARED_SPACE`] is the work group's
+//! [`crate::Interface::buffers`] ([`buffer_space`]); [`SHARED_SPACE`] is the work group's
 //! shared variables, laid out by std430 in declaration order
 //! ([`crate::Interface::shared_bytes`]). Every access is one 32-bit word
 //! at a byte address that is a multiple of 4: the layouts of GLSL
@@ -15,6 +15,21 @@
 
 /// The space of a compute work group's `shared` variables.
 pub const SHARED_SPACE: u32 = u32::MAX;
+
+/// The space of a stage's storage block element `index` (its position in
+/// [`crate::Interface::buffers`]): the stage in the high byte, so the
+/// stages of one draw, which share a [`Memory`], have spaces of their own.
+pub fn buffer_space(stage: glsl::Stage, index: u32) -> u32 {
+    let tag: u32 = match stage {
+        glsl::Stage::Vertex => 1,
+        glsl::Stage::TessControl => 2,
+        glsl::Stage::TessEvaluation => 3,
+        glsl::Stage::Geometry => 4,
+        glsl::Stage::Fragment => 5,
+        glsl::Stage::Compute => 6,
+    };
+    (tag << 24) | (index & 0x00FF_FFFF)
+}
 
 /// An atomic function of GLSL 4.30 §8.11 (GL_ARB_shader_storage_buffer_object,
 /// GL_ARB_compute_shader).
@@ -66,7 +81,7 @@ impl AtomicOp {
 /// implementation (GL 4.3 §7.8: such accesses have undefined results).
 /// Implementations synchronize internally: a run may be shared between
 /// the threads of a work group ([`Memory::barrier`]).
-pub trait Memory: Sync {
+pub trait Memory: Sync + std::fmt::Debug {
     fn load(&self, space: u32, addr: u32) -> u32;
     fn store(&self, space: u32, addr: u32, value: u32);
     /// Replaces the word with `op.apply(old, a, b)` and returns `old`, as

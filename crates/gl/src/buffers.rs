@@ -11,7 +11,8 @@
 //! (a C layer moves pixels through them); GL_TEXTURE_BUFFER and
 //! GL_TRANSFORM_FEEDBACK_BUFFER bindings (general and indexed) are kept for
 //! queries; GL_UNIFORM_BUFFER indexed bindings feed uniform blocks at draw
-//! time.
+//! time, GL_SHADER_STORAGE_BUFFER ones storage blocks (`crate::storage`),
+//! GL_DISPATCH_INDIRECT_BUFFER indirect dispatches.
 //!
 //! Mapping: the context records the mapped range and access bits and hands
 //! out a copy of the range's bytes; the caller (a C layer holding the
@@ -29,8 +30,9 @@ use crate::Context;
 use std::sync::Arc;
 
 pub use crate::objects::{
-    BufferMap, BufferTargets, IndexedBinding, MAX_TRANSFORM_FEEDBACK_BUFFERS,
-    MAX_UNIFORM_BUFFER_BINDINGS, UNIFORM_BUFFER_OFFSET_ALIGNMENT,
+    BufferMap, BufferTargets, IndexedBinding, MAX_SHADER_STORAGE_BUFFER_BINDINGS,
+    MAX_TRANSFORM_FEEDBACK_BUFFERS, MAX_UNIFORM_BUFFER_BINDINGS,
+    SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, UNIFORM_BUFFER_OFFSET_ALIGNMENT,
 };
 
 /// Every GL_MAP_*_BIT (GL 3.3 §2.9.3).
@@ -60,6 +62,7 @@ impl Context {
             .uniform_bindings
             .iter_mut()
             .chain(t.feedback_bindings.iter_mut())
+            .chain(t.storage_bindings.iter_mut())
         {
             if ib.buffer != 0 && names.contains(&ib.buffer) {
                 *ib = IndexedBinding::default();
@@ -75,6 +78,8 @@ impl Context {
             &mut t.copy_write,
             &mut t.texture,
             &mut t.transform_feedback,
+            &mut t.storage,
+            &mut t.dispatch_indirect,
         ];
         delete_names(&mut o.buffers, names, bindings);
     }
@@ -93,6 +98,8 @@ impl Context {
             GL_COPY_WRITE_BUFFER => &mut t.copy_write,
             GL_TEXTURE_BUFFER => &mut t.texture,
             GL_TRANSFORM_FEEDBACK_BUFFER => &mut t.transform_feedback,
+            GL_SHADER_STORAGE_BUFFER if self.api.at_least(3, 3) => &mut t.storage,
+            GL_DISPATCH_INDIRECT_BUFFER if self.api.at_least(3, 3) => &mut t.dispatch_indirect,
             _ => return None,
         })
     }
@@ -110,6 +117,8 @@ impl Context {
                 | GL_COPY_WRITE_BUFFER
                 | GL_TEXTURE_BUFFER
                 | GL_TRANSFORM_FEEDBACK_BUFFER
+                | GL_SHADER_STORAGE_BUFFER
+                | GL_DISPATCH_INDIRECT_BUFFER
         )
     }
 
@@ -126,6 +135,8 @@ impl Context {
             GL_COPY_WRITE_BUFFER => t.copy_write,
             GL_TEXTURE_BUFFER => t.texture,
             GL_TRANSFORM_FEEDBACK_BUFFER => t.transform_feedback,
+            GL_SHADER_STORAGE_BUFFER => t.storage,
+            GL_DISPATCH_INDIRECT_BUFFER => t.dispatch_indirect,
             _ => 0,
         }
     }
@@ -206,6 +217,11 @@ impl Context {
                 1,
             ),
             GL_TRANSFORM_FEEDBACK_BUFFER => (MAX_TRANSFORM_FEEDBACK_BUFFERS, 4, 4),
+            GL_SHADER_STORAGE_BUFFER if self.api.at_least(3, 3) => (
+                MAX_SHADER_STORAGE_BUFFER_BINDINGS,
+                SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT,
+                1,
+            ),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return;
@@ -253,6 +269,9 @@ impl Context {
         if target == GL_UNIFORM_BUFFER {
             t.uniform = buffer;
             t.uniform_bindings[index as usize] = binding;
+        } else if target == GL_SHADER_STORAGE_BUFFER {
+            t.storage = buffer;
+            t.storage_bindings[index as usize] = binding;
         } else {
             t.transform_feedback = buffer;
             t.feedback_bindings[index as usize] = binding;
@@ -313,6 +332,27 @@ impl Context {
             GL_TRANSFORM_FEEDBACK_BUFFER_BINDING
             | GL_TRANSFORM_FEEDBACK_BUFFER_START
             | GL_TRANSFORM_FEEDBACK_BUFFER_SIZE => &t.feedback_bindings,
+            GL_SHADER_STORAGE_BUFFER_BINDING
+            | GL_SHADER_STORAGE_BUFFER_START
+            | GL_SHADER_STORAGE_BUFFER_SIZE
+                if self.api.at_least(3, 3) =>
+            {
+                &t.storage_bindings
+            }
+            GL_MAX_COMPUTE_WORK_GROUP_COUNT | GL_MAX_COMPUTE_WORK_GROUP_SIZE
+                if self.api.at_least(3, 3) =>
+            {
+                let max = if pname == GL_MAX_COMPUTE_WORK_GROUP_COUNT {
+                    glsl::limits::MAX_COMPUTE_WORK_GROUP_COUNT
+                } else {
+                    glsl::limits::MAX_COMPUTE_WORK_GROUP_SIZE
+                };
+                let Some(&v) = max.get(index as usize) else {
+                    self.set_error(GL_INVALID_VALUE);
+                    return None;
+                };
+                return Some(v as i64);
+            }
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;
@@ -323,8 +363,12 @@ impl Context {
             return None;
         };
         Some(match pname {
-            GL_UNIFORM_BUFFER_BINDING | GL_TRANSFORM_FEEDBACK_BUFFER_BINDING => b.buffer as i64,
-            GL_UNIFORM_BUFFER_START | GL_TRANSFORM_FEEDBACK_BUFFER_START => b.offset,
+            GL_UNIFORM_BUFFER_BINDING
+            | GL_TRANSFORM_FEEDBACK_BUFFER_BINDING
+            | GL_SHADER_STORAGE_BUFFER_BINDING => b.buffer as i64,
+            GL_UNIFORM_BUFFER_START
+            | GL_TRANSFORM_FEEDBACK_BUFFER_START
+            | GL_SHADER_STORAGE_BUFFER_START => b.offset,
             // glBindBufferBase sets no size (Mesa reports 0 too).
             _ => b.size.unwrap_or(0),
         })

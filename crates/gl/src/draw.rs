@@ -23,6 +23,7 @@ use crate::pipeline_state::{raster_mode, rect};
 use crate::vertex::{ArrayData, ImmVertex};
 use crate::Context;
 use raster::PrimitiveIds;
+use std::sync::Arc;
 
 impl Context {
     /// Takes the message of the last draw that stopped early.
@@ -420,11 +421,27 @@ impl Context {
         ids: PrimitiveIds,
     ) -> Result<(u32, Vec<u32>, Vec<f32>, usize), String> {
         let words = self.uniform_words(vs, vs_user);
-        let units = self.texture_units();
+        let mut units = self.texture_units();
+        // The stages run again to rasterize, which writes their memory;
+        // this pass reads a copy unless nothing is rasterized.
+        let stages: Vec<&exec::Kernel> = [Some(&**vs), gs.map(|g| &**g)]
+            .into_iter()
+            .flatten()
+            .collect();
+        let mem = self.storage_memory(&stages);
+        let last_pass = self.st.is_on(GL_RASTERIZER_DISCARD);
+        units.memory = match &mem {
+            Some(m) if last_pass => Some(m.clone()),
+            Some(m) => Some(Arc::new(m.snapshot())),
+            None => None,
+        }
+        .map(|m| m as Arc<dyn exec::Memory + Send>);
+        let inline = raster::Workers::inline();
+        let serial = stages.iter().any(|k| k.writes_memory());
         let Some(gs) = gs else {
             let fetch = Fetcher::new(self, vs, immediate, batch);
-            return raster::shade_vertices(
-                &self.workers,
+            let r = raster::shade_vertices(
+                if serial { &inline } else { &self.workers },
                 &**vs,
                 &words,
                 &units,
@@ -434,6 +451,10 @@ impl Context {
             )
             .map(|(vertex_of, outputs, stride)| (mode, vertex_of, outputs, stride))
             .map_err(|e| e.to_string());
+            if let (Some(m), true) = (&mem, last_pass) {
+                self.store_storage_memory(m);
+            }
+            return r;
         };
         // The geometry stage reads the provoking-vertex convention,
         // colour clamping and primitive IDs from the pipeline state.
@@ -443,8 +464,8 @@ impl Context {
         state.primitive_ids = ids;
         let gs_words = self.uniform_words(gs, true);
         let fetch = Fetcher::new(self, vs, immediate, batch);
-        raster::shade_geometry(
-            &self.workers,
+        let r = raster::shade_geometry(
+            if serial { &inline } else { &self.workers },
             (&**vs, &words),
             (&**gs, &gs_words),
             &units,
@@ -454,7 +475,11 @@ impl Context {
             &state,
         )
         .map(|(m, vertex_of, outputs, stride)| (gl_list_mode(m), vertex_of, outputs, stride))
-        .map_err(|e| e.to_string())
+        .map_err(|e| e.to_string());
+        if let (Some(m), true) = (&mem, last_pass) {
+            self.store_storage_memory(m);
+        }
+        r
     }
 
     /// Draws `indices`, vertices of the instances `batch`, its primitives
@@ -530,7 +555,16 @@ impl Context {
         let gs_words = gs.as_ref().map(|g| self.uniform_words(g, true));
         let gs_stage = gs.as_deref().zip(gs_words.as_deref());
         let fs_words = self.uniform_words(&fs, fs_user);
-        let units = self.texture_units();
+        let mut units = self.texture_units();
+        // Storage blocks: the stages' memory, written back after the draw;
+        // a draw that writes memory shades on one thread (`storage`).
+        let stages: Vec<&exec::Kernel> = [Some(&*vs), gs.as_deref(), fs_user.then_some(&*fs)]
+            .into_iter()
+            .flatten()
+            .collect();
+        let mem = self.storage_memory(&stages);
+        let serial = stages.iter().any(|k| k.writes_memory());
+        units.memory = mem.clone().map(|m| m as Arc<dyn exec::Memory + Send>);
         let Some(mut target) = self.draw_target() else {
             return;
         };
@@ -559,6 +593,12 @@ impl Context {
             _ => None,
         };
         let fetch = Fetcher::new(self, &vs, immediate, batch);
+        // The debugger's replay runs the stages once more, on a copy of
+        // the memory.
+        let mut replay_units = units.clone();
+        replay_units.memory = mem
+            .as_ref()
+            .map(|m| Arc::new(m.snapshot()) as Arc<dyn exec::Memory + Send>);
         let replay = raster::Replay {
             state: &state,
             vs: &vs,
@@ -569,7 +609,7 @@ impl Context {
             mode: raster_mode(mode),
             indices,
             fetch: &fetch,
-            textures: &units,
+            textures: &replay_units,
             layer: select,
         };
         let (probe, view) = match (wants, layered, &layer_target) {
@@ -606,11 +646,15 @@ impl Context {
             ) {
                 self.cache.error = Some(e);
             }
+            if let Some(m) = &mem {
+                self.store_storage_memory(m);
+            }
             return;
         }
         let samples_before = target.fb.samples_passed;
+        let inline = raster::Workers::inline();
         let r = raster::draw_stages(
-            &self.workers,
+            if serial { &inline } else { &self.workers },
             &mut target.fb,
             &state,
             (&*vs, &vs_words),
@@ -623,6 +667,9 @@ impl Context {
         );
         if let Err(e) = r {
             self.cache.error = Some(e.to_string());
+        }
+        if let Some(m) = &mem {
+            self.store_storage_memory(m);
         }
         let samples = target.fb.samples_passed.wrapping_sub(samples_before);
         self.count_samples(samples);

@@ -85,6 +85,9 @@ pub const EXTENSIONS_33: &[&str] = &[
     "GL_ARB_texture_cube_map_array",
     // A language-only extension that needs GLSL 1.30.
     "GL_ARB_shading_language_420pack",
+    // GL 4.3's compute stage and storage blocks (`crate::storage`).
+    "GL_ARB_compute_shader",
+    "GL_ARB_shader_storage_buffer_object",
 ];
 
 /// One glPixelStore mode of `store` (Table 6.17's pixel storage state).
@@ -384,6 +387,17 @@ impl Context {
             }) as i64]),
             GL_MAX_UNIFORM_BUFFER_BINDINGS => {
                 int(&[crate::buffers::MAX_UNIFORM_BUFFER_BINDINGS as i64])
+            }
+            // GL_ARB_shader_storage_buffer_object and GL_ARB_compute_shader
+            // (3.3 contexts).
+            GL_SHADER_STORAGE_BUFFER_BINDING if api.at_least(3, 3) => {
+                int(&[self.bound_buffer(GL_SHADER_STORAGE_BUFFER) as i64])
+            }
+            GL_DISPATCH_INDIRECT_BUFFER_BINDING if api.at_least(3, 3) => {
+                int(&[self.bound_buffer(GL_DISPATCH_INDIRECT_BUFFER) as i64])
+            }
+            p if api.at_least(3, 3) && crate::storage::limit(p).is_some() => {
+                int(&[crate::storage::limit(p).unwrap_or(0)])
             }
             GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT => {
                 int(&[crate::buffers::UNIFORM_BUFFER_OFFSET_ALIGNMENT])

@@ -20,21 +20,24 @@ pub struct Kernels {
     pub vs: Option<Arc<exec::Kernel>>,
     pub gs: Option<Arc<exec::Kernel>>,
     pub fs: Option<Arc<exec::Kernel>>,
+    /// A compute program's only stage.
+    pub cs: Option<Arc<exec::Kernel>>,
 }
 
 impl Kernels {
     pub fn new(program: &glsl::link::Program) -> Result<Kernels, String> {
         let mut k = Kernels::default();
         for s in &program.stages {
-            // (The executor refuses compute and tessellation stages, which
-            // only a caller of this crate can link: no context takes
-            // GL_COMPUTE_SHADER or the tessellation shader types.)
+            // (The executor refuses tessellation stages, which only a
+            // caller of this crate can link: no context takes the
+            // tessellation shader types.)
             let kernel = Arc::new(exec::Kernel::new(s).map_err(|e| e.to_string())?);
             match s.stage {
                 Stage::Vertex => k.vs = Some(kernel),
                 Stage::Fragment => k.fs = Some(kernel),
                 Stage::Geometry => k.gs = Some(kernel),
-                Stage::Compute | Stage::TessControl | Stage::TessEvaluation => {}
+                Stage::Compute => k.cs = Some(kernel),
+                Stage::TessControl | Stage::TessEvaluation => {}
             }
         }
         Ok(k)

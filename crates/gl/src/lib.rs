@@ -141,6 +141,7 @@ pub(crate) mod restart;
 pub mod samplers;
 pub mod shading;
 pub mod state;
+pub mod storage;
 pub mod sync;
 pub mod texture_buffer;
 pub mod texture_format;

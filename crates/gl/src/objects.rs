@@ -31,6 +31,12 @@ pub const MAX_UNIFORM_BUFFER_BINDINGS: usize = glsl::limits::MAX_UNIFORM_BUFFER_
 /// GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT: glBindBufferRange offsets on
 /// GL_UNIFORM_BUFFER are multiples of this (a vec4).
 pub const UNIFORM_BUFFER_OFFSET_ALIGNMENT: i64 = 16;
+/// GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS (GL_ARB_shader_storage_buffer_object).
+pub const MAX_SHADER_STORAGE_BUFFER_BINDINGS: usize =
+    glsl::limits::MAX_SHADER_STORAGE_BUFFER_BINDINGS as usize;
+/// GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT: a word's (llvmpipe's is
+/// 16; any power of two the spec allows up to 256).
+pub const SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT: i64 = 4;
 /// GL_MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS (GL 3.0's minimum).
 pub const MAX_TRANSFORM_FEEDBACK_BUFFERS: usize = 4;
 /// A buffer's mapped range (GL 3.3 Table 2.11).
@@ -71,8 +77,11 @@ pub struct BufferTargets {
     pub copy_write: u32,
     pub texture: u32,
     pub transform_feedback: u32,
+    pub storage: u32,
+    pub dispatch_indirect: u32,
     pub uniform_bindings: [IndexedBinding; MAX_UNIFORM_BUFFER_BINDINGS],
     pub feedback_bindings: [IndexedBinding; MAX_TRANSFORM_FEEDBACK_BUFFERS],
+    pub storage_bindings: [IndexedBinding; MAX_SHADER_STORAGE_BUFFER_BINDINGS],
 }
 
 impl Default for BufferTargets {
@@ -83,8 +92,11 @@ impl Default for BufferTargets {
             copy_write: 0,
             texture: 0,
             transform_feedback: 0,
+            storage: 0,
+            dispatch_indirect: 0,
             uniform_bindings: [IndexedBinding::default(); MAX_UNIFORM_BUFFER_BINDINGS],
             feedback_bindings: [IndexedBinding::default(); MAX_TRANSFORM_FEEDBACK_BUFFERS],
+            storage_bindings: [IndexedBinding::default(); MAX_SHADER_STORAGE_BUFFER_BINDINGS],
         }
     }
 }

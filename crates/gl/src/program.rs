@@ -26,6 +26,7 @@ impl ShaderObj {
         match self.kind {
             GL_VERTEX_SHADER => Stage::Vertex,
             GL_GEOMETRY_SHADER => Stage::Geometry,
+            GL_COMPUTE_SHADER => Stage::Compute,
             _ => Stage::Fragment,
         }
     }
@@ -73,6 +74,8 @@ pub struct Executable {
     /// and GL_INTERLEAVED_ATTRIBS or GL_SEPARATE_ATTRIBS.
     pub feedback: Vec<crate::transform_feedback::FeedbackVarying>,
     pub feedback_mode: u32,
+    /// The storage blocks and their binding points ([`crate::storage`]).
+    pub storage_blocks: Vec<crate::storage::StorageBlock>,
 }
 
 impl Executable {
@@ -114,15 +117,18 @@ pub struct ProgramObj {
     pub delete_pending: bool,
 }
 
-/// The language extensions the compiler has whose stages no context
-/// runs yet, so no context offers them (`GL_EXTENSIONS` does not list
-/// them and shaders cannot enable them): compute shaders, shader
-/// storage blocks and the tessellation stages.
-fn withheld_extensions() -> glsl::lang::ExtensionSet {
+/// The language extensions the compiler has that a context does not
+/// offer (`GL_EXTENSIONS` does not list them and shaders cannot enable
+/// them): the tessellation stages, which no context draws, and before
+/// 3.3 compute shaders and shader storage blocks (GL 4.3's, offered on
+/// 3.3 contexts, whose GLSL 1.30 the compute built-ins need).
+fn withheld_extensions(api: crate::version::Api) -> glsl::lang::ExtensionSet {
     let mut set = glsl::lang::ExtensionSet::EMPTY;
-    set.set(glsl::lang::Extension::ArbComputeShader, true);
-    set.set(glsl::lang::Extension::ArbShaderStorageBufferObject, true);
     set.set(glsl::lang::Extension::ArbTessellationShader, true);
+    if !api.at_least(3, 3) {
+        set.set(glsl::lang::Extension::ArbComputeShader, true);
+        set.set(glsl::lang::Extension::ArbShaderStorageBufferObject, true);
+    }
     set
 }
 
@@ -135,6 +141,7 @@ impl Context {
         let known = match kind {
             GL_VERTEX_SHADER | GL_FRAGMENT_SHADER => true,
             GL_GEOMETRY_SHADER => self.has_geometry_shaders(),
+            GL_COMPUTE_SHADER => self.api.at_least(3, 3),
             _ => false,
         };
         if !known {
@@ -263,7 +270,7 @@ impl Context {
             let strs: Vec<&str> = s.source.iter().map(String::as_str).collect();
             let opts = CompileOptions {
                 compatibility_context: self.api.compatibility(),
-                withheld: withheld_extensions(),
+                withheld: withheld_extensions(self.api),
                 ..CompileOptions::new(s.stage())
             };
             let compiled = glsl::compile(&strs, &opts);
@@ -966,6 +973,7 @@ fn build_executable(
     crate::program_outputs::place_frag_outputs(&mut program, frag_bindings)?;
     let modules: Vec<&Module> = program.stages.iter().map(|s| &s.module).collect();
     let uniforms = UniformTable::build(&modules);
+    let storage_blocks = crate::storage::storage_blocks(&modules);
     crate::uniform_block::check_limits(&uniforms.blocks, &modules)?;
     let attribs = assign_attribs(&program, bindings)?;
     let kernels = crate::kernels::Kernels::new(&program)?;
@@ -991,6 +999,7 @@ fn build_executable(
         shaders,
         feedback,
         feedback_mode,
+        storage_blocks,
     })
 }
 

@@ -388,9 +388,10 @@ fn sample_mask_state_and_sample_positions() {
 
 #[test]
 fn contexts_withhold_the_extensions_they_cannot_run() {
-    // The compiler has GL_ARB_compute_shader's language; no context runs
-    // compute programs yet, so none offers it: `require' fails, the
-    // macro is undefined, and GL_EXTENSIONS does not list it.
+    // The compiler has GL_ARB_tessellation_shader's language; no context
+    // draws patches, so none offers it: `require' fails, the macro is
+    // undefined, and GL_EXTENSIONS does not list it. Compute shaders and
+    // storage blocks are offered from 3.3 on.
     let mut ctx = Context::with_api(4, 4, gl::Api::GL33_COMPAT);
     let compile = |ctx: &mut Context, src: &str| {
         let s = ctx.create_shader(GL_VERTEX_SHADER);
@@ -403,19 +404,30 @@ fn contexts_withhold_the_extensions_they_cannot_run() {
     };
     let (ok, log) = compile(
         &mut ctx,
-        "#version 330\n#extension GL_ARB_compute_shader : require\nvoid main() { gl_Position = vec4(0.0); }\n",
+        "#version 330\n#extension GL_ARB_tessellation_shader : require\nvoid main() { gl_Position = vec4(0.0); }\n",
     );
     assert_eq!(ok, 0);
-    assert!(log.contains("GL_ARB_compute_shader"), "{log}");
+    assert!(log.contains("GL_ARB_tessellation_shader"), "{log}");
     let (ok, log) = compile(
         &mut ctx,
-        "#version 330\n#ifdef GL_ARB_compute_shader\n#error defined\n#endif\nvoid main() { gl_Position = vec4(0.0); }\n",
+        "#version 330\n#ifdef GL_ARB_tessellation_shader\n#error defined\n#endif\nvoid main() { gl_Position = vec4(0.0); }\n",
     );
     assert_eq!(ok, 1, "{log}");
     let n = ctx.get_integerv(GL_NUM_EXTENSIONS)[0];
     let names: Vec<String> = (0..n as u32)
         .filter_map(|i| ctx.get_stringi(GL_EXTENSIONS, i).map(str::to_string))
         .collect();
-    assert!(!names.iter().any(|e| e == "GL_ARB_compute_shader"));
+    assert!(!names.iter().any(|e| e == "GL_ARB_tessellation_shader"));
+    assert!(names.iter().any(|e| e == "GL_ARB_compute_shader"));
+    assert!(names
+        .iter()
+        .any(|e| e == "GL_ARB_shader_storage_buffer_object"));
+    // A 2.1 context has neither.
+    let mut old = Context::new(4, 4);
+    let (ok, _) = compile(
+        &mut old,
+        "#version 120\n#extension GL_ARB_shader_storage_buffer_object : require\nvoid main() { gl_Position = vec4(0.0); }\n",
+    );
+    assert_eq!(ok, 0);
     assert!(names.iter().any(|e| e == "GL_ARB_shading_language_420pack"));
 }

@@ -22,6 +22,9 @@ pub struct TextureUnits {
     /// executor's, `texture_2d::current_level`), found once per set of
     /// units rather than per lookup.
     pub(crate) level: texture_2d::Level,
+    /// The memory of the draw or dispatch (its shader storage buffers):
+    /// what [`Textures::memory`] gives the kernels.
+    pub memory: Option<std::sync::Arc<dyn exec::Memory + Send>>,
 }
 
 impl TextureUnits {
@@ -31,6 +34,7 @@ impl TextureUnits {
             units,
             checked_2d: texture_2d::CheckedUnits::new(),
             level: texture_2d::current_level(),
+            memory: None,
         }
     }
 }
@@ -74,6 +78,10 @@ impl Textures for TextureUnits {
 
     fn size(&self, unit: u32, target: SamplerKind, lod: i32) -> [i32; 3] {
         texture_general::size_general(&self.units, unit, target, lod)
+    }
+
+    fn memory(&self) -> Option<&dyn exec::Memory> {
+        self.memory.as_deref().map(|m| m as &dyn exec::Memory)
     }
 }
 

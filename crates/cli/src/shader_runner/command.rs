@@ -17,6 +17,7 @@
 //! [`Command::NeedsLaterGl`]: running one makes the test a skip.
 
 use super::scan::{self, Scanned};
+use super::script::Cmp;
 use gl::enums::*;
 
 mod texture;
@@ -151,8 +152,77 @@ pub enum Command {
     /// active program, which `uniform` commands then set
     /// (glActiveShaderProgram; `SSO ENABLED` scripts).
     ActiveShaderProgram(u32),
+    /// `compute X Y Z`: glDispatchCompute, then glMemoryBarrier.
+    Compute([u32; 3]),
+    /// `ssbo N SIZE`: a buffer of SIZE zero bytes at storage binding N.
+    SsboCreate {
+        binding: u32,
+        size: usize,
+    },
+    /// `ssbo N subdata TYPE OFFSET VALUES`: the values' bytes at OFFSET
+    /// of binding N's buffer.
+    SsboSubData {
+        binding: u32,
+        offset: usize,
+        words: Vec<u32>,
+    },
+    /// `probe ssbo TYPE N OFFSET OP VALUE`: the word at OFFSET of binding
+    /// N's buffer, as TYPE, compared with VALUE.
+    ProbeSsbo {
+        binding: u32,
+        offset: usize,
+        ty: SsboType,
+        op: Cmp,
+        expected: u32,
+    },
     /// A command shaderbox does not provide because it needs a later GL.
     NeedsLaterGl(String),
+}
+
+/// The scalar types of the `ssbo` and `probe ssbo` commands.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SsboType {
+    Int,
+    Uint,
+    Float,
+}
+
+impl SsboType {
+    fn parse(word: &str) -> Option<SsboType> {
+        Some(match word {
+            "int" => SsboType::Int,
+            "uint" => SsboType::Uint,
+            "float" => SsboType::Float,
+            _ => return None,
+        })
+    }
+
+    /// A value as its word (ints in decimal or hex, as piglit reads them).
+    fn word(self, text: &str) -> Option<u32> {
+        match self {
+            SsboType::Float => text.parse::<f32>().ok().map(f32::to_bits),
+            SsboType::Int => scan::scan_i32_base0(text).map(|v| v.0 as u32),
+            SsboType::Uint => parse_u32(text),
+        }
+    }
+
+    /// `value CMP expected` of two words of this type.
+    pub fn holds(self, op: Cmp, expected: u32, value: u32) -> bool {
+        match self {
+            SsboType::Int => op.holds(expected as i32, value as i32),
+            SsboType::Uint => op.holds(expected, value),
+            SsboType::Float => op.holds(f32::from_bits(expected), f32::from_bits(value)),
+        }
+    }
+
+    /// A word as the type's value, for messages.
+    pub fn show(self, w: u32) -> String {
+        match self {
+            SsboType::Int => (w as i32).to_string(),
+            SsboType::Uint => w.to_string(),
+            SsboType::Float => f32::from_bits(w).to_string(),
+        }
+    }
 }
 
 /// `light` values: `float ...` or `int ...`.
@@ -352,6 +422,66 @@ fn parse_command(line: &str) -> Result<Command, CommandError> {
             name: name.to_string(),
             pname,
             expected,
+        });
+    }
+    if let Some(rest) = lit(line, "compute ") {
+        let v: Option<Vec<u32>> = rest.split_whitespace().take(3).map(parse_u32).collect();
+        return match v.as_deref() {
+            Some(&[x, y, z]) => Ok(C::Compute([x, y, z])),
+            _ => Err(bad("compute needs X Y Z work group counts", line)),
+        };
+    }
+    if let Some(rest) = lit(line, "probe ssbo ") {
+        let words: Vec<&str> = rest.split_whitespace().collect();
+        let [ty, binding, offset, op, value, ..] = words.as_slice() else {
+            return Err(bad("probe ssbo needs TYPE BINDING OFFSET OP VALUE", line));
+        };
+        let ty = SsboType::parse(ty).ok_or_else(|| {
+            CommandError(format!("probe ssbo: type {ty} is not int, uint or float"))
+        })?;
+        let op = Cmp::parse(op).ok_or_else(|| bad("probe ssbo: bad comparison", line))?;
+        return Ok(C::ProbeSsbo {
+            binding: parse_u32(binding).ok_or_else(|| bad("Bad ssbo binding", line))?,
+            offset: parse_u32(offset).ok_or_else(|| bad("Bad ssbo offset", line))? as usize,
+            ty,
+            op,
+            expected: ty
+                .word(value)
+                .ok_or_else(|| bad("Bad probe ssbo value", line))?,
+        });
+    }
+    if let Some(rest) = lit(line, "ssbo ") {
+        let words: Vec<&str> = rest
+            .split_whitespace()
+            .take_while(|w| !w.starts_with('#'))
+            .collect();
+        let binding = words
+            .first()
+            .and_then(|w| parse_u32(w))
+            .ok_or_else(|| bad("Bad ssbo binding", line))?;
+        if words.get(1) == Some(&"subdata") {
+            let (Some(ty), Some(offset)) = (words.get(2), words.get(3)) else {
+                return Err(bad("ssbo subdata needs TYPE OFFSET VALUES", line));
+            };
+            let ty = SsboType::parse(ty).ok_or_else(|| {
+                CommandError(format!("ssbo subdata: type {ty} is not int, uint or float"))
+            })?;
+            let offset = parse_u32(offset).ok_or_else(|| bad("Bad ssbo offset", line))? as usize;
+            let words: Option<Vec<u32>> = words[4..].iter().map(|w| ty.word(w)).collect();
+            let words = words.ok_or_else(|| bad("Bad ssbo subdata value", line))?;
+            return Ok(C::SsboSubData {
+                binding,
+                offset,
+                words,
+            });
+        }
+        let size = words
+            .get(1)
+            .and_then(|w| parse_u32(w))
+            .ok_or_else(|| bad("ssbo needs BINDING SIZE", line))?;
+        return Ok(C::SsboCreate {
+            binding,
+            size: size as usize,
         });
     }
     if let Some(rest) = lit(line, "ubo array index ") {
@@ -721,10 +851,7 @@ fn parse_command(line: &str) -> Result<Command, CommandError> {
 /// Leading words of commands that need a later GL or an extension.
 const LATER_GL: &[(&str, &str)] = &[
     ("atomic counter", "atomic counters (OpenGL 4.2)"),
-    ("compute ", "compute shaders (OpenGL 4.3)"),
     ("subuniform ", "shader subroutines (OpenGL 4.0)"),
-    ("ssbo ", "shader storage buffers (OpenGL 4.3)"),
-    ("probe ssbo ", "shader storage buffers (OpenGL 4.3)"),
     ("probe atomic counter", "atomic counters (OpenGL 4.2)"),
     ("xfb ", "transform feedback (OpenGL 3.0)"),
     ("probe xfb ", "transform feedback (OpenGL 3.0)"),

@@ -56,6 +56,11 @@ pub trait GlApi {
     fn buffer_data(&mut self, target: u32, data: &[u8], usage: u32);
     fn buffer_sub_data(&mut self, target: u32, offset: isize, data: &[u8]);
     fn bind_buffer_base(&mut self, target: u32, index: u32, buffer: u32);
+    fn get_buffer_sub_data(&mut self, target: u32, offset: isize, size: usize) -> Vec<u8>;
+
+    // Compute (GL_ARB_compute_shader).
+    fn dispatch_compute(&mut self, x: u32, y: u32, z: u32);
+    fn memory_barrier(&mut self, barriers: u32);
 
     // Uniforms.
     fn uniform_1fv(&mut self, location: i32, count: i32, value: &[f32]);

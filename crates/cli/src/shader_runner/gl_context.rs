@@ -150,6 +150,15 @@ impl GlApi for gl::Context {
     fn bind_buffer_base(&mut self, target: u32, index: u32, buffer: u32) {
         gl::Context::bind_buffer_base(self, target, index, buffer)
     }
+    fn get_buffer_sub_data(&mut self, target: u32, offset: isize, size: usize) -> Vec<u8> {
+        gl::Context::get_buffer_sub_data(self, target, offset, size as isize)
+    }
+    fn dispatch_compute(&mut self, x: u32, y: u32, z: u32) {
+        gl::Context::dispatch_compute(self, x, y, z)
+    }
+    fn memory_barrier(&mut self, barriers: u32) {
+        gl::Context::memory_barrier(self, barriers)
+    }
     fn create_program(&mut self) -> u32 {
         gl::Context::create_program(self)
     }

@@ -198,6 +198,8 @@ pub struct Runner<'a, G: GlApi> {
     ubo_buffers: Vec<u32>,
     /// `ubo array index`.
     ubo_array_index: u32,
+    /// The buffers of the `ssbo` commands, by storage binding point.
+    ssbos: std::collections::BTreeMap<u32, u32>,
     /// `SSO ENABLED`: the program pipeline holding one separable program
     /// per stage (0 without), and each stage's program by shader type.
     pipeline: u32,
@@ -229,6 +231,7 @@ impl<'a, G: GlApi> Runner<'a, G> {
             ignore_missing_uniforms: false,
             ubo_buffers: Vec::new(),
             ubo_array_index: 0,
+            ssbos: Default::default(),
             pipeline: 0,
             sso: false,
             stage_programs: Vec::new(),
@@ -329,6 +332,18 @@ impl<'a, G: GlApi> Runner<'a, G> {
             }
             // Not queried below OpenGL 3.2 / without program binaries.
             "GL_MAX_VERTEX_OUTPUT_COMPONENTS" | "GL_NUM_PROGRAM_BINARY_FORMATS" => return Some(0),
+            // GL_ARB_shader_storage_buffer_object and GL_ARB_compute_shader.
+            "GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS" => GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS,
+            "GL_MAX_GEOMETRY_SHADER_STORAGE_BLOCKS" => GL_MAX_GEOMETRY_SHADER_STORAGE_BLOCKS,
+            "GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS" => GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS,
+            "GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS" => GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS,
+            "GL_MAX_COMBINED_SHADER_STORAGE_BLOCKS" => GL_MAX_COMBINED_SHADER_STORAGE_BLOCKS,
+            "GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS" => GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS,
+            "GL_MAX_SHADER_STORAGE_BLOCK_SIZE" => GL_MAX_SHADER_STORAGE_BLOCK_SIZE,
+            "GL_MAX_COMPUTE_SHARED_MEMORY_SIZE" => GL_MAX_COMPUTE_SHARED_MEMORY_SIZE,
+            "GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS" => GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS,
+            "GL_MAX_COMPUTE_UNIFORM_COMPONENTS" => GL_MAX_COMPUTE_UNIFORM_COMPONENTS,
+            "GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS" => GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS,
             _ => return None,
         };
         let mut v = [0i32; 4];
@@ -435,6 +450,7 @@ impl<'a, G: GlApi> Runner<'a, G> {
                 Stage::Vertex => (GL_VERTEX_SHADER, "VS"),
                 Stage::Geometry => (GL_GEOMETRY_SHADER, "GS"),
                 Stage::Fragment => (GL_FRAGMENT_SHADER, "FS"),
+                Stage::Compute => (GL_COMPUTE_SHADER, "CS"),
             };
             let text = section.source.as_deref().unwrap_or(PASSTHROUGH_VS);
             let shader = self.gl.create_shader(kind);
@@ -983,6 +999,74 @@ impl<'a, G: GlApi> Runner<'a, G> {
                     return Err(Stop(Verdict::Fail));
                 };
                 self.gl.active_shader_program(self.pipeline, prog);
+            }
+            Command::Compute(groups) => {
+                let result = self.must_be_in_use_verdict();
+                if result == Verdict::Pass {
+                    let [x, y, z] = *groups;
+                    self.draw(line, |gl| {
+                        gl.dispatch_compute(x, y, z);
+                        gl.memory_barrier(GL_ALL_BARRIER_BITS);
+                    })?;
+                }
+                return Ok(result);
+            }
+            Command::SsboCreate { binding, size } => {
+                let b = gl.gen_buffer();
+                gl.bind_buffer(GL_SHADER_STORAGE_BUFFER, b);
+                gl.buffer_data(GL_SHADER_STORAGE_BUFFER, &vec![0; *size], GL_DYNAMIC_DRAW);
+                gl.bind_buffer_base(GL_SHADER_STORAGE_BUFFER, *binding, b);
+                self.ssbos.insert(*binding, b);
+            }
+            Command::SsboSubData {
+                binding,
+                offset,
+                words,
+            } => {
+                let Some(&b) = self.ssbos.get(binding) else {
+                    self.out(format!(
+                        "{}:{line}: no ssbo at binding {binding}",
+                        self.file
+                    ));
+                    return Err(Stop(Verdict::Fail));
+                };
+                let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+                gl.bind_buffer(GL_SHADER_STORAGE_BUFFER, b);
+                gl.buffer_sub_data(GL_SHADER_STORAGE_BUFFER, *offset as isize, &bytes);
+            }
+            Command::ProbeSsbo {
+                binding,
+                offset,
+                ty,
+                op,
+                expected,
+            } => {
+                let Some(&b) = self.ssbos.get(binding) else {
+                    self.out(format!(
+                        "{}:{line}: no ssbo at binding {binding}",
+                        self.file
+                    ));
+                    return Err(Stop(Verdict::Fail));
+                };
+                gl.bind_buffer(GL_SHADER_STORAGE_BUFFER, b);
+                let bytes = gl.get_buffer_sub_data(GL_SHADER_STORAGE_BUFFER, *offset as isize, 4);
+                let Ok(word) = <[u8; 4]>::try_from(&bytes[..]) else {
+                    self.out(format!(
+                        "{}:{line}: ssbo {binding} has no word at offset {offset}",
+                        self.file
+                    ));
+                    return Err(Stop(Verdict::Fail));
+                };
+                let value = u32::from_le_bytes(word);
+                if !ty.holds(*op, *expected, value) {
+                    self.out(format!(
+                        "SSBO {binding} at offset {offset}: expected {} {}, got {}",
+                        op.as_str(),
+                        ty.show(*expected),
+                        ty.show(value)
+                    ));
+                    return Ok(Verdict::Fail);
+                }
             }
             Command::NeedsLaterGl(what) => {
                 let msg = format!(

@@ -5,9 +5,10 @@
 //! comments). The sections shaderbox runs:
 //!
 //! - `[require]`: one requirement per line (see [`Requirement`]);
-//! - `[vertex shader]`, `[geometry shader]`, `[fragment shader]`: GLSL
-//!   source, up to the next line that starts with `[`; several sections of
-//!   one stage are several shader objects linked together;
+//! - `[vertex shader]`, `[geometry shader]`, `[fragment shader]`,
+//!   `[compute shader]`: GLSL source, up to the next line that starts with
+//!   `[`; several sections of one stage are several shader objects linked
+//!   together;
 //! - `[vertex shader passthrough]`: piglit's built-in vertex shader
 //!   (`gl_Position = piglit_vertex`);
 //! - `[vertex data]`: a table whose header names the attributes
@@ -20,8 +21,8 @@
 //!   N`), set before the link;
 //!
 //! The sections of later GL versions or extensions (tessellation,
-//! compute, SPIR-V, ARB programs, shader includes, element lists) make
-//! the test a skip: shaderbox implements OpenGL 3.3.
+//! SPIR-V, ARB programs, shader includes, element lists) make the test a
+//! skip: shaderbox implements OpenGL 3.3 (and GL 4.3's compute stage).
 
 use super::scan;
 use gl::enums::{GL_FLOAT, GL_INT, GL_UNSIGNED_INT};
@@ -32,6 +33,7 @@ pub enum Stage {
     Vertex,
     Geometry,
     Fragment,
+    Compute,
 }
 
 /// One shader section: its stage, source text and the line of its header.
@@ -76,6 +78,13 @@ impl Cmp {
             Cmp::Gt => ">",
             Cmp::Ge => ">=",
         }
+    }
+
+    /// An operator written alone (`probe ssbo`'s).
+    pub fn parse(s: &str) -> Option<Cmp> {
+        Cmp::scan(s)
+            .filter(|(_, rest)| rest.is_empty())
+            .map(|(c, _)| c)
     }
 
     /// Reads an operator as piglit does (`=` alone is not one).
@@ -325,6 +334,8 @@ fn open_section(script: &mut Script, raw: &str, number: usize) -> Result<Section
         Section::Shader(Stage::Geometry)
     } else if known("[fragment shader]") {
         Section::Shader(Stage::Fragment)
+    } else if known("[compute shader]") {
+        Section::Shader(Stage::Compute)
     } else if known("[vertex data]") {
         Section::VertexData
     } else if known("[geometry layout]") {
@@ -337,6 +348,8 @@ fn open_section(script: &mut Script, raw: &str, number: usize) -> Result<Section
         || known("[fragment shader spirv]")
         || known("[geometry shader specializations]")
         || known("[geometry shader spirv]")
+        || known("[compute shader specializations]")
+        || known("[compute shader spirv]")
     {
         // Used only when running SPIR-V; the GLSL sections are run.
         Section::Ignored
@@ -345,7 +358,6 @@ fn open_section(script: &mut Script, raw: &str, number: usize) -> Result<Section
         "[fragment program]",
         "[tessellation control shader",
         "[tessellation evaluation shader",
-        "[compute shader",
         "[shader include]",
         "[shader include paths]",
         "[elements]",
@@ -819,10 +831,16 @@ draw rect -1 -1 2 2
 
     #[test]
     fn later_gl_sections_are_recorded() {
-        let s =
-            parse("[require]\nGLSL >= 1.50\n[compute shader]\nvoid main(){}\n[test]\n").unwrap();
+        let s = parse(
+            "[require]\nGLSL >= 1.50\n[tessellation control shader]\nvoid main(){}\n[test]\n",
+        )
+        .unwrap();
         assert_eq!(s.unsupported_sections.len(), 1);
         assert!(s.shaders.is_empty());
+        let s =
+            parse("[require]\nGLSL >= 1.50\n[compute shader]\nvoid main(){}\n[test]\n").unwrap();
+        assert!(s.unsupported_sections.is_empty());
+        assert_eq!(s.shaders[0].stage, Stage::Compute);
         let s =
             parse("[require]\nGLSL >= 1.50\n[geometry shader]\nvoid main(){}\n[test]\n").unwrap();
         assert!(s.unsupported_sections.is_empty());

@@ -8,7 +8,7 @@
 //! flushed and bools normalized to 0/1, as every value entering a run.
 
 use super::{kind_of, unsupported, GlobalLoc, Lowerer, Place, Root, Val, R};
-use crate::memory::{AtomicOp, SHARED_SPACE};
+use crate::memory::{buffer_space, AtomicOp, SHARED_SPACE};
 use crate::program::{Op, Reg, F1};
 use glsl::builtin_fn::BuiltinFn;
 use glsl::ir::{BlockId, Expr, Module, Storage};
@@ -73,7 +73,7 @@ pub(super) fn layout_memory(m: &Module) -> (Vec<String>, Vec<Option<MemGlobal>>,
                 let rules = Rules::of(blk.layout);
                 if blk.instance.is_some() {
                     return Some(MemGlobal {
-                        space: first[b.0 as usize],
+                        space: buffer_space(m.stage, first[b.0 as usize]),
                         byte: 0,
                         rules,
                         row_major: false,
@@ -85,7 +85,7 @@ pub(super) fn layout_memory(m: &Module) -> (Vec<String>, Vec<Option<MemGlobal>>,
                     blk.members.iter().map(|x| (x.ty, x.row_major)).collect();
                 let (offsets, _) = block_offsets(&members, &m.structs, rules);
                 Some(MemGlobal {
-                    space: first[b.0 as usize],
+                    space: buffer_space(m.stage, first[b.0 as usize]),
                     byte: *offsets.get(k)? as u32,
                     rules,
                     row_major: blk.members.get(k)?.row_major,

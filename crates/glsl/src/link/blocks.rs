@@ -103,30 +103,40 @@ pub(super) fn merge_blocks(
 /// their use (GLSL 1.50 §4.3.7): without an instance name the member's
 /// global is sized like any unsized array (before this runs); with one, the
 /// largest constant index through the instance sizes the member in the
-/// block and in the instance's struct.
-pub(super) fn size_block_members(merged: &mut Module) {
-    // A shader storage block's unsized last member is sized by the buffer.
-    for b in merged
-        .blocks
-        .iter_mut()
-        .filter(|b| b.storage != Storage::Buffer)
-    {
+/// block and in the instance's struct. So do a shader storage block's
+/// members but its last (GLSL 4.30 §4.3.9: the buffer sizes that one),
+/// which must be indexed with a constant somewhere: the messages of the
+/// ones that are not.
+pub(super) fn size_block_members(merged: &mut Module) -> Vec<String> {
+    let mut errors = Vec::new();
+    for b in merged.blocks.iter_mut() {
+        let buffer = b.storage == Storage::Buffer;
+        let last = b.members.len().saturating_sub(1);
         for (k, mb) in b.members.iter_mut().enumerate() {
-            if mb.ty.array != Some(ArraySize::Unsized) {
+            if mb.ty.array != Some(ArraySize::Unsized) || (buffer && k == last) {
                 continue;
             }
             match &b.instance {
                 None => {
-                    if let Some(g) = b
+                    let gid = b
                         .globals
                         .iter()
-                        .map(|g| &merged.globals[g.0 as usize])
-                        .find(|g| g.name == mb.name)
-                    {
+                        .find(|g| merged.globals[g.0 as usize].name == mb.name)
+                        .copied();
+                    if let Some(g) = gid.map(|g| &mut merged.globals[g.0 as usize]) {
+                        if buffer && g.ty.array == Some(ArraySize::Unsized) {
+                            if g.implicit_size == 0 {
+                                errors.push(unsized_member(&b.name, &mb.name));
+                            }
+                            g.ty.array = Some(ArraySize::Sized(g.implicit_size.max(1)));
+                        }
                         mb.ty = g.ty;
                     }
                 }
                 Some(_) => {
+                    if buffer && mb.implicit_size == 0 {
+                        errors.push(unsized_member(&b.name, &mb.name));
+                    }
                     let n = mb.implicit_size.max(1);
                     mb.ty.array = Some(ArraySize::Sized(n));
                     let mut instance = b.globals.first().map(|g| merged.globals[g.0 as usize].ty);
@@ -152,6 +162,11 @@ pub(super) fn size_block_members(merged: &mut Module) {
             }
         }
     }
+    errors
+}
+
+fn unsized_member(block: &str, member: &str) -> String {
+    format!("member `{member}' of shader storage block `{block}' has no size: only the last member takes the buffer's; give it one, or index it with constants only (its largest index sizes it)")
 }
 
 /// Block members match by name, type and qualifiers, in order.
@@ -175,25 +190,28 @@ pub(super) fn check_blocks(vm: &Module, fm: &Module, diags: &mut Vec<LinkDiagnos
     compare_blocks(vm, fm, false, diags);
 }
 
-/// The uniform blocks of [`check_blocks`] only: for the vertex and
-/// fragment stages around a geometry stage, which share the program's
-/// uniform blocks but no input or output block.
+/// The uniform and shader storage blocks of [`check_blocks`] only: for
+/// stages that are not consecutive, which share the program's uniform
+/// and storage blocks but no input or output block.
 pub(super) fn check_uniform_blocks(vm: &Module, fm: &Module, diags: &mut Vec<LinkDiagnostic>) {
     compare_blocks(vm, fm, true, diags);
 }
 
 fn compare_blocks(vm: &Module, fm: &Module, uniform_only: bool, diags: &mut Vec<LinkDiagnostic>) {
     let (pn, cn) = (vm.stage.name(), fm.stage.name());
+    // Uniform and storage blocks are the program's: one name, one block
+    // in every stage.
+    let program_wide = |s: Storage| matches!(s, Storage::Uniform | Storage::Buffer);
     for fb in &fm.blocks {
-        if uniform_only && fb.storage != Storage::Uniform {
+        if uniform_only && !program_wide(fb.storage) {
             continue;
         }
         // An input block (a geometry shader's has its own storage)
         // matches the output block of its name.
         let kind = |x: &&ir::InterfaceBlock| {
             x.name == fb.name
-                && if fb.storage == Storage::Uniform {
-                    x.storage == Storage::Uniform
+                && if program_wide(fb.storage) {
+                    x.storage == fb.storage
                 } else {
                     matches!(x.storage, Storage::Varying | Storage::PerVertexOutput) && !x.input
                 }

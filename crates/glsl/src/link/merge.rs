@@ -459,7 +459,8 @@ pub(super) fn merge_stage(
     for g in &mut merged.globals {
         match g.ty.array {
             // A shader storage block's last member keeps its unknown
-            // size: the bound buffer gives it.
+            // size: the bound buffer gives it (the others are sized by
+            // `size_block_members').
             Some(ArraySize::Unsized) if g.storage == ir::Storage::Buffer => {}
             Some(ArraySize::Unsized) => {
                 g.ty.array = Some(ArraySize::Sized(g.implicit_size.max(1)));
@@ -483,7 +484,10 @@ pub(super) fn merge_stage(
             _ => {}
         }
     }
-    size_block_members(&mut merged);
+    for msg in size_block_members(&mut merged) {
+        errors = true;
+        push(diags, None, Code::LinkInterfaceMismatch, msg);
+    }
 
     // GLSL 1.10 §7.1: "All executions of a well-formed vertex shader must
     // write a value into [gl_Position]"; a vertex stage that never does is

@@ -861,20 +861,16 @@ impl Analyzer {
                 // A shader storage block's last member may be an array of
                 // unknown size: its size is what the bound buffer holds
                 // (GL_ARB_shader_storage_buffer_object).
-                let runtime_sized = buffer && mi == last_member && di == last_declarator;
-                if mty.array == Some(ArraySize::Unsized)
-                    && !self.builtin_mode
-                    && !inout
-                    && !runtime_sized
+                // GLSL 4.30 §4.3.9: the other members of one without a
+                // size are sized at link time by their uses, as unsized
+                // globals are.
+                let _ = (mi, di, last_member, last_declarator);
+                if mty.array == Some(ArraySize::Unsized) && !self.builtin_mode && !inout && !buffer
                 {
-                    let msg = if buffer {
-                        format!("member `{}' of a shader storage block must have an array size; only the last member may leave it out", d.name.name)
-                    } else {
-                        format!(
-                            "uniform block member `{}' must have an array size",
-                            d.name.name
-                        )
-                    };
+                    let msg = format!(
+                        "uniform block member `{}' must have an array size",
+                        d.name.name
+                    );
                     self.error(Code::BadArraySize, d.span, msg);
                 }
                 if self.contains_sampler(mty) {

@@ -87,8 +87,6 @@ fn memory_qualifiers_forbid_what_they_say() {
 #[test]
 fn what_storage_blocks_cannot_have() {
     for body in [
-        // Only the last member may leave its size out.
-        "buffer B { float a[]; float b; };",
         // Memory qualifiers and std430 belong to storage blocks.
         "uniform U { readonly float a; };",
         "layout(std430) uniform U { float a; };",
