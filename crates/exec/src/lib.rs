@@ -88,6 +88,15 @@
 //!   `clamp`, `mix`, float outputs, implicit-LOD derivatives), which the
 //!   engine itself runs, for stages computed outside it that must give
 //!   its bits.
+//! - **Memory** ([`Memory`], `memory`): storage blocks and a compute
+//!   shader's `shared` variables are read and written by byte, in std140
+//!   or std430 layout, through the run's [`Textures::memory`], the lanes
+//!   of a batch one after the other in lane order (helper lanes write
+//!   nothing); a program's spaces are [`Interface::buffers`] and
+//!   [`SHARED_SPACE`]. Kernels that touch memory run on the interpreter.
+//!   [`run_work_group`] (`compute`) runs a compute kernel's work group:
+//!   its IDs, a fresh shared region, and `barrier()` across the batches
+//!   of a group by taking turns, so results are the same everywhere.
 //!
 //! ## Lanes
 //! Fragment lanes: lane `4q+0` = (x, y), `4q+1` = (x+1, y), `4q+2` =

@@ -71,7 +71,9 @@
 //!   (fragment-output locations), [`program_pipeline`] (separable
 //!   programs, program pipeline objects, the program of each stage), [`transform_feedback`], [`uniform`],
 //!   [`uniform_block`] (std140 layout), [`builtins`] (the `gl_*`
-//!   uniforms), [`ffgen`] (fixed-function stages as GLSL).
+//!   uniforms), [`ffgen`] (fixed-function stages as GLSL), [`storage`]
+//!   (shader storage buffers, the memory of a draw or dispatch, compute
+//!   dispatches).
 //! - State: [`state`] (the fixed-function state, capabilities),
 //!   [`transform`], [`shading`], [`rasterization`], [`per_fragment`],
 //!   [`vertex`] (the vertex state, array pointers, fetch of one element),

@@ -5,7 +5,7 @@
 //! dispatch reads and writes, glDispatchCompute(Indirect),
 //! glMemoryBarrier, and the limits.
 //!
-//! Contract: a command's memory ([`BufferMemory`]) copies the bound range
+//! Contract: a command's memory (`BufferMemory`) copies the bound range
 //! of every buffer a kernel's blocks name when the command starts, the
 //! kernels read and write the copy (each stage its own spaces,
 //! `exec::buffer_space`), and the buffers written get their new bytes
