@@ -14,6 +14,9 @@
 //! order, so its results (atomics included) are the same on every run
 //! and machine. Work groups run one after the other, in x, then y, then
 //! z order. Memory is coherent: glMemoryBarrier has nothing to wait for.
+//! A dispatch of more than [`MAX_DISPATCH_INVOCATIONS`] invocations is
+//! not run (the draw error says so): GL sets no bound, and one such call
+//! would take hours on the CPU.
 
 use crate::enums::*;
 use crate::objects::IndexedBinding;
@@ -51,6 +54,9 @@ pub(crate) fn storage_blocks(modules: &[&Module]) -> Vec<StorageBlock> {
     }
     out
 }
+
+/// The most invocations one dispatch runs (2^26: seconds of work).
+pub const MAX_DISPATCH_INVOCATIONS: u64 = 1 << 26;
 
 /// GL_MAX_SHADER_STORAGE_BLOCK_SIZE: 128 MiB (GL 4.3's minimum is
 /// 16 MiB; llvmpipe's is 128 MiB).
@@ -340,6 +346,20 @@ impl Context {
             return;
         }
         if groups.contains(&0) {
+            return;
+        }
+        let per_group: u64 = cs
+            .interface()
+            .local_size
+            .unwrap_or([1, 1, 1])
+            .iter()
+            .map(|&s| u64::from(s))
+            .product();
+        let total = groups.iter().map(|&g| u64::from(g)).product::<u64>() * per_group;
+        if total > MAX_DISPATCH_INVOCATIONS {
+            self.cache.error = Some(format!(
+                "a dispatch of {total} invocations is more than shaderbox runs in one call ({MAX_DISPATCH_INVOCATIONS})"
+            ));
             return;
         }
         let words = self.uniform_words(&cs, true);

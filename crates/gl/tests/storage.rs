@@ -168,6 +168,11 @@ fn errors() {
     linked_stages(&mut ctx, &[(GL_COMPUTE_SHADER, IDS_CS)]);
     ctx.dispatch_compute(70000, 1, 1);
     assert_eq!(ctx.get_error(), GL_INVALID_VALUE);
+    // Legal counts past what shaderbox runs in one call: refused at once.
+    ctx.dispatch_compute(65535, 65535, 1);
+    assert_eq!(ctx.get_error(), GL_NO_ERROR);
+    let why = ctx.take_draw_error().unwrap_or_default();
+    assert!(why.contains("invocations"), "{why}");
     // Indirect: no buffer, then a misaligned offset.
     ctx.dispatch_compute_indirect(0);
     assert_eq!(ctx.get_error(), GL_INVALID_OPERATION);

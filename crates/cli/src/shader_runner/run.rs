@@ -1012,6 +1012,14 @@ impl<'a, G: GlApi> Runner<'a, G> {
                 return Ok(result);
             }
             Command::SsboCreate { binding, size } => {
+                // GL refuses stores over 1 GiB (GL_OUT_OF_MEMORY).
+                if *size > 1 << 30 {
+                    self.out(format!(
+                        "{}:{line}: ssbo size {size} is over 1 GiB",
+                        self.file
+                    ));
+                    return Err(Stop(Verdict::Fail));
+                }
                 let b = gl.gen_buffer();
                 gl.bind_buffer(GL_SHADER_STORAGE_BUFFER, b);
                 gl.buffer_data(GL_SHADER_STORAGE_BUFFER, &vec![0; *size], GL_DYNAMIC_DRAW);
