@@ -57,10 +57,21 @@ void main() { atomicAdd(total, gl_LocalInvocationIndex); barrier(); }
     assert "no user-defined inputs or outputs" in bad.errors[0].message
 
 
+def test_tessellation_stages():
+    ext = "#version 150\n#extension GL_ARB_tessellation_shader : require\n"
+    ok = shaderbox.check(ext + "layout(vertices = 3) out;\nvoid main() { gl_out[gl_InvocationID].gl_Position = vec4(0.0); }\n", stage="tess_control")
+    assert ok.ok, ok
+    bad = shaderbox.check(ext + "layout(vertices = 3) out;\nvoid main() { gl_out[0].gl_Position = vec4(0.0); }\n", stage="tess_control")
+    assert not bad.ok
+    assert "gl_InvocationID" in bad.errors[0].message
+    assert bad.errors[0].stage == "tessellation control"
+    assert shaderbox.check(ext + "layout(quads) in;\nvoid main() { gl_Position = vec4(gl_TessCoord, 1.0); }\n", stage="tese").ok
+
+
 def test_bad_arguments():
     with pytest.raises(ValueError, match="needs stage"):
         shaderbox.check("void main() {}")
-    with pytest.raises(ValueError, match="stage .tessellation. is not 'vertex', 'geometry', 'fragment' or 'compute'"):
+    with pytest.raises(ValueError, match="stage .tessellation. is not 'vertex', 'tess_control', 'tess_evaluation', 'geometry', 'fragment' or 'compute'"):
         shaderbox.check("void main() {}", stage="tessellation")
     with pytest.raises(ValueError, match="version 135 is not a GLSL version"):
         shaderbox.check("void main() {}", stage="vertex", version=135)
