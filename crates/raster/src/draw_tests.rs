@@ -359,6 +359,76 @@ fn strips_give_the_bytes_of_quads() {
     }
 }
 
+/// gl_FragColor from gl_Color, every component of gl_FragCoord and
+/// gl_FrontFacing: what strips give each lane of those must be what
+/// quads give it.
+fn pixel_inputs_fs() -> Stage {
+    Stage {
+        iface: iface(
+            vec![
+                slot("gl_Color", 0, 4),
+                slot("gl_FragCoord", 4, 4),
+                slot("gl_FrontFacing", 8, 1),
+            ],
+            vec![slot("gl_FragColor", 0, 4)],
+        ),
+        f: Box::new(|b| {
+            for l in 0..LANES {
+                let i = |c: usize| b.inputs[c][l];
+                let mix =
+                    (i(4) * 0.013 + i(5) * 0.007 + i(6) * 3.1 + i(7) * 0.7 + i(8) * 0.3).fract();
+                for c in 0..4 {
+                    b.outputs[c][l] = 0.5 * i(c) + 0.5 * mix;
+                }
+            }
+            Ok(())
+        }),
+    }
+}
+
+#[test]
+fn strips_give_pixel_inputs_of_quads() {
+    // Perspective triangles facing both ways across tiles, read through
+    // gl_FragCoord (x, y, window z, 1/w) and gl_FrontFacing: the bytes of
+    // strips are those of quads, for every instruction set.
+    let (w, h) = (150, 90);
+    let mut v = verts(
+        &[
+            [-0.9, -0.95],
+            [0.97, -0.6],
+            [0.8, 0.93],
+            [-0.9, -0.95],
+            [-0.7, 0.6],
+            [0.8, 0.93],
+        ],
+        &[RED, GREEN, BLUE, RED, BLUE, [0.3, 0.6, 0.9, 0.5]],
+    );
+    for (i, p) in v.pos.iter_mut().enumerate() {
+        let w = 1.0 + 0.7 * i as f32;
+        *p = [p[0] * w, p[1] * w, (0.1 * i as f32 - 0.2) * w, w];
+    }
+    let fs = pixel_inputs_fs();
+    for depth in [false, true] {
+        let mut st = state(w as i32, h as i32);
+        if depth {
+            st.depth_test = Some(CompareFunc::Less);
+        }
+        let draw = || {
+            let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, depth, false);
+            fb.clear_color(&[0], [0.2, 0.4, 0.6, 0.8], [true; 4], None);
+            fb.clear_depth(1.0, true, None);
+            run(&mut fb, &st, &fs, Mode::Triangles, &v).unwrap();
+            fb.read_pixels_u8(0, 0, 0, w, h)
+        };
+        for isa in crate::simd::Level::all_supported() {
+            let (with, without) =
+                crate::simd::with_level(isa, || (draw(), crate::shade::without_strips(draw)));
+            assert_eq!(with, without, "{isa:?}, depth {depth}");
+            assert!(with.iter().filter(|p| **p != [51, 102, 153, 204]).count() > w as usize * 30);
+        }
+    }
+}
+
 #[test]
 fn strips_of_consecutive_primitives_take_their_own_constants() {
     // Two flat-shaded triangles covering the whole framebuffer (a corner

@@ -262,9 +262,9 @@ pub(crate) struct FragmentStage<'a> {
     pub depth_format: DepthFormat,
     /// Whether [`FragmentStage::shade_batched`] may run rows of four
     /// whole quads of a triangle as strips ([`FragmentStage::shade_strip`]):
-    /// nothing reads a quad's 1/w or pixel position (no gl_FragCoord,
-    /// gl_FrontFacing or gl_PointCoord, no probe), and every input is
-    /// interpolated or flat.
+    /// no input but gl_FragCoord and gl_FrontFacing is per pixel (no
+    /// gl_PointCoord or gl_PrimitiveID, no probe), and every other input
+    /// is interpolated or flat.
     strips: bool,
     /// Whether a batch's outputs are cleared before the shader runs (see
     /// [`ShaderStage::writes_every_output`]; always under the probe,
@@ -318,8 +318,6 @@ impl<'a> FragmentStage<'a> {
             || (layout.frag_depth.is_none() && state.depth_test.is_some());
         let strips = strips_allowed()
             && probe.is_none()
-            && layout.frag_coord.is_none()
-            && layout.front_facing.is_none()
             && layout.point_coord.is_none()
             && layout.primitive_id.is_none()
             && fills.iter().all(|f| matches!(f.kind, FillKind::Interp));

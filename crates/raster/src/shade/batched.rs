@@ -283,6 +283,7 @@ impl<'a> FragmentStage<'a> {
             in_place.count = count;
             in_place.prim = fits.then_some(me);
         }
+        self.strip_pixel_inputs(batch, prim, slots, (&x, &y));
         self.run_shader(batch)?;
         // Every pixel passing (no depth test: the write does not test
         // one), none discarded: the strip's two rows at once.
@@ -298,6 +299,37 @@ impl<'a> FragmentStage<'a> {
         }
         self.write_quick(target, o, batch, &slots[..]);
         Ok(())
+    }
+
+    /// gl_FragCoord and gl_FrontFacing of a strip's lanes, as
+    /// [`FragmentStage::fill`] gives them to a quad's (with gl_FragCoord
+    /// the strip's entries hold its quads' window depths: reading it
+    /// makes `window_z` true).
+    #[inline(always)]
+    fn strip_pixel_inputs(
+        &self,
+        batch: &mut Batch,
+        prim: &Prim,
+        slots: &[Entry; LANES / 4],
+        (x, y): (&[f32; LANES], &[f32; LANES]),
+    ) {
+        if let Some(o) = self.layout.frag_coord {
+            let inv_w = prim.planes.inv_w_at(x, y);
+            for (l, &w) in inv_w.iter().enumerate() {
+                let q = &slots[l / 4].quad;
+                let (px, py) = q.pixel(l & 3);
+                super::set(batch, o, l, px as f32 + 0.5);
+                super::set(batch, o + 1, l, py as f32 + 0.5);
+                super::set(batch, o + 2, l, q.z[l & 3] as f32);
+                super::set(batch, o + 3, l, w);
+            }
+        }
+        if let Some(o) = self.layout.front_facing {
+            let facing = if prim.back { 0.0 } else { 1.0 };
+            for l in 0..LANES {
+                super::set(batch, o, l, facing);
+            }
+        }
     }
 
     /// The entries of a strip's four quads (see
