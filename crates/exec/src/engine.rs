@@ -534,7 +534,8 @@ unsafe fn step(
             } else {
                 st.cur
             };
-            if let Some(Some((d, v))) = crate::memory::run_op(&i.op, lanes, get, textures.memory())
+            if let Some(Some((d, v))) =
+                crate::memory_ops::run_op(&i.op, lanes, get, textures.memory())
             {
                 put!(d, v);
             }

@@ -331,7 +331,8 @@ pub(crate) fn run<H: Hook>(
                 } else {
                     cur
                 };
-                let out = crate::memory::run_op(&op, lanes, |x| r[x as usize], textures.memory());
+                let out =
+                    crate::memory_ops::run_op(&op, lanes, |x| r[x as usize], textures.memory());
                 if let Some(Some((d, v))) = out {
                     r[d as usize] = v;
                 }

@@ -245,6 +245,7 @@ pub mod lanes16;
 mod liveness;
 mod lower;
 mod memory;
+mod memory_ops;
 mod opt;
 pub mod print;
 mod program;

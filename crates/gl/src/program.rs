@@ -122,10 +122,10 @@ pub struct ProgramObj {
 /// them): the tessellation stages, which no context draws, and before
 /// 3.3 compute shaders and shader storage blocks (GL 4.3's, offered on
 /// 3.3 contexts, whose GLSL 1.30 the compute built-ins need).
-fn withheld_extensions(api: crate::version::Api) -> glsl::lang::ExtensionSet {
+fn withheld_extensions(gl33: bool) -> glsl::lang::ExtensionSet {
     let mut set = glsl::lang::ExtensionSet::EMPTY;
     set.set(glsl::lang::Extension::ArbTessellationShader, true);
-    if !api.at_least(3, 3) {
+    if !gl33 {
         set.set(glsl::lang::Extension::ArbComputeShader, true);
         set.set(glsl::lang::Extension::ArbShaderStorageBufferObject, true);
     }
@@ -270,7 +270,7 @@ impl Context {
             let strs: Vec<&str> = s.source.iter().map(String::as_str).collect();
             let opts = CompileOptions {
                 compatibility_context: self.api.compatibility(),
-                withheld: withheld_extensions(self.api),
+                withheld: withheld_extensions(self.api.at_least(3, 3)),
                 ..CompileOptions::new(s.stage())
             };
             let compiled = glsl::compile(&strs, &opts);

@@ -181,15 +181,17 @@ impl Context {
     /// The memory of a draw running `kernels` (`None` when none of them
     /// has a storage block, or none is bound).
     pub(crate) fn storage_memory(&self, kernels: &[&exec::Kernel]) -> Option<Arc<BufferMemory>> {
-        self.storage_memory_of(kernels, |k| self.kernel_executable(k))
+        self.storage_memory_of(kernels, |k| {
+            self.kernel_executable(k).map(|e| &e.storage_blocks[..])
+        })
     }
 
-    /// [`Context::storage_memory`] with the program of each kernel from
-    /// `exe_of`.
+    /// [`Context::storage_memory`] with the storage blocks of each
+    /// kernel's program from `blocks_of`.
     fn storage_memory_of<'a>(
         &'a self,
         kernels: &[&exec::Kernel],
-        exe_of: impl Fn(&exec::Kernel) -> Option<&'a crate::program::Executable>,
+        blocks_of: impl Fn(&exec::Kernel) -> Option<&'a [StorageBlock]>,
     ) -> Option<Arc<BufferMemory>> {
         let mut mem = BufferMemory::default();
         for k in kernels {
@@ -197,10 +199,10 @@ impl Context {
             if names.is_empty() {
                 continue;
             }
-            let exe = exe_of(k);
+            let blocks = blocks_of(k);
             for (i, name) in names.iter().enumerate() {
-                let binding = exe
-                    .and_then(|e| e.storage_blocks.iter().find(|b| &b.name == name))
+                let binding = blocks
+                    .and_then(|bs| bs.iter().find(|b| &b.name == name))
                     .map_or(u32::MAX, |b| b.binding);
                 let Some(ib) = self.storage_binding(binding) else {
                     continue;
@@ -364,8 +366,12 @@ impl Context {
         }
         let words = self.uniform_words(&cs, true);
         let mut units = self.texture_units();
-        let exe = self.programs.get(&program).and_then(|p| p.exe.as_ref());
-        let mem = self.storage_memory_of(&[&cs], |_| exe);
+        let blocks = self
+            .programs
+            .get(&program)
+            .and_then(|p| p.exe.as_ref())
+            .map(|e| &e.storage_blocks[..]);
+        let mem = self.storage_memory_of(&[&cs], |_| blocks);
         units.memory = mem.clone().map(|m| m as Arc<dyn exec::Memory + Send>);
         let count = groups;
         'groups: for z in 0..groups[2] {
