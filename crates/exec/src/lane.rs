@@ -120,13 +120,31 @@ pub(crate) fn umod(x: u32, y: u32) -> u32 {
 /// its math helper for.
 #[inline(always)]
 pub(crate) fn int2(k: usize, a: &[u32; LANES], b: &[u32; LANES]) -> Option<[u32; LANES]> {
-    Some(match k {
-        0 => std::array::from_fn(|l| idiv(a[l], b[l])),
-        1 => std::array::from_fn(|l| imod(a[l], b[l])),
-        2 => std::array::from_fn(|l| udiv(a[l], b[l])),
-        3 => std::array::from_fn(|l| umod(a[l], b[l])),
+    // Plain loops over the lanes, one per op: what the compiler turns
+    // into vector conversions and divisions (`std::array::from_fn` stayed
+    // a call per lane).
+    let mut out = [0u32; LANES];
+    match k {
+        0 => lanes_of(&mut out, a, b, idiv),
+        1 => lanes_of(&mut out, a, b, imod),
+        2 => lanes_of(&mut out, a, b, udiv),
+        3 => lanes_of(&mut out, a, b, umod),
         _ => return None,
-    })
+    }
+    Some(out)
+}
+
+/// `out[l] = f(a[l], b[l])` on every lane.
+#[inline(always)]
+fn lanes_of(
+    out: &mut [u32; LANES],
+    a: &[u32; LANES],
+    b: &[u32; LANES],
+    f: impl Fn(u32, u32) -> u32,
+) {
+    for l in 0..LANES {
+        out[l] = f(a[l], b[l]);
+    }
 }
 
 /// `-x` (`FNeg`): the sign bit flipped (NaNs included; never a new
