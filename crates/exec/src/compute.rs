@@ -42,13 +42,7 @@ pub fn run_work_group(
     let batches: Vec<Batch> = (0..n.div_ceil(LANES))
         .map(|b| group_batch(k, group, size, b * LANES, n))
         .collect();
-    let barrier = k
-        .code
-        .prog
-        .ops
-        .iter()
-        .any(|op| matches!(op, crate::program::Op::Barrier));
-    if batches.len() <= 1 || !barrier {
+    if !k.threads_per_group() {
         let view = GroupView {
             inner: textures,
             shared: &shared,

@@ -619,6 +619,21 @@ impl Kernel {
         self.code.prog.ops.iter().any(|op| op.writes_memory())
     }
 
+    /// Whether a compute kernel's work groups run on threads of their own
+    /// ([`run_work_group`]: it calls `barrier()` and a group spans more
+    /// than one batch), which costs a thread per batch and group.
+    pub fn threads_per_group(&self) -> bool {
+        let size = self.interface.local_size.unwrap_or([1, 1, 1]);
+        let n: u64 = size.iter().map(|&s| u64::from(s)).product();
+        n > LANES as u64
+            && self
+                .code
+                .prog
+                .ops
+                .iter()
+                .any(|op| matches!(op, program::Op::Barrier))
+    }
+
     pub fn interface(&self) -> &Interface {
         &self.interface
     }

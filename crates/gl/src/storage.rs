@@ -14,9 +14,11 @@
 //! order, so its results (atomics included) are the same on every run
 //! and machine. Work groups run one after the other, in x, then y, then
 //! z order. Memory is coherent: glMemoryBarrier has nothing to wait for.
-//! A dispatch of more than [`MAX_DISPATCH_INVOCATIONS`] invocations is
-//! not run (the draw error says so): GL sets no bound, and one such call
-//! would take hours on the CPU.
+//! A dispatch of more than [`MAX_DISPATCH_INVOCATIONS`] invocations
+//! ([`MAX_THREADED_DISPATCH_INVOCATIONS`] when its groups run on threads
+//! of their own, `exec::Kernel::threads_per_group`) is not run (the draw
+//! error says so): GL sets no bound, and one such call would take hours
+//! on the CPU.
 
 use crate::enums::*;
 use crate::objects::IndexedBinding;
@@ -57,6 +59,9 @@ pub(crate) fn storage_blocks(modules: &[&Module]) -> Vec<StorageBlock> {
 
 /// The most invocations one dispatch runs (2^26: seconds of work).
 pub const MAX_DISPATCH_INVOCATIONS: u64 = 1 << 26;
+/// The most when every group starts a thread per batch (2^20: a second
+/// of thread starts).
+pub const MAX_THREADED_DISPATCH_INVOCATIONS: u64 = 1 << 20;
 
 /// GL_MAX_SHADER_STORAGE_BLOCK_SIZE: 128 MiB (GL 4.3's minimum is
 /// 16 MiB; llvmpipe's is 128 MiB).
@@ -358,9 +363,19 @@ impl Context {
             .map(|&s| u64::from(s))
             .product();
         let total = groups.iter().map(|&g| u64::from(g)).product::<u64>() * per_group;
-        if total > MAX_DISPATCH_INVOCATIONS {
+        let max = if cs.threads_per_group() {
+            MAX_THREADED_DISPATCH_INVOCATIONS
+        } else {
+            MAX_DISPATCH_INVOCATIONS
+        };
+        if total > max {
             self.cache.error = Some(format!(
-                "a dispatch of {total} invocations is more than shaderbox runs in one call ({MAX_DISPATCH_INVOCATIONS})"
+                "a dispatch of {total} invocations is more than shaderbox runs in one call ({max}{})",
+                if max < MAX_DISPATCH_INVOCATIONS {
+                    " for work groups larger than 16 invocations that call barrier()"
+                } else {
+                    ""
+                }
             ));
             return;
         }

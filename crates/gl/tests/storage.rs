@@ -102,6 +102,10 @@ fn shared_variables_and_barriers_in_large_groups() {
     let b = ssbo(&mut ctx, 0, &[0; 80]);
     ctx.dispatch_compute(2, 1, 1);
     assert_eq!(ctx.take_draw_error(), None);
+    // Groups on threads of their own have a lower bound per dispatch.
+    ctx.dispatch_compute(30000, 1, 1);
+    let why = ctx.take_draw_error().unwrap_or_default();
+    assert!(why.contains("barrier()"), "{why}");
     let w = words(&mut ctx, b);
     for g in 0..2u32 {
         for i in 0..40u32 {
