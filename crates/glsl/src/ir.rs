@@ -84,8 +84,7 @@ pub enum Stage {
     Geometry,
     Fragment,
     /// GL_ARB_compute_shader (GLSL 4.30 §2.6): a program of its own,
-    /// run in work groups by a dispatch rather than by drawing. The front
-    /// end compiles and links it; the GL layer does not dispatch it yet.
+    /// run in work groups by a dispatch rather than by drawing.
     Compute,
 }
 
