@@ -1031,16 +1031,11 @@ impl<'a, G: GlApi> Runner<'a, G> {
                 offset,
                 words,
             } => {
-                let Some(&b) = self.ssbos.get(binding) else {
-                    self.out(format!(
-                        "{}:{line}: no ssbo at binding {binding}",
-                        self.file
-                    ));
-                    return Err(Stop(Verdict::Fail));
-                };
+                let b = self.ssbo(line, *binding)?;
                 let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
-                gl.bind_buffer(GL_SHADER_STORAGE_BUFFER, b);
-                gl.buffer_sub_data(GL_SHADER_STORAGE_BUFFER, *offset as isize, &bytes);
+                self.gl.bind_buffer(GL_SHADER_STORAGE_BUFFER, b);
+                self.gl
+                    .buffer_sub_data(GL_SHADER_STORAGE_BUFFER, *offset as isize, &bytes);
             }
             Command::ProbeSsbo {
                 binding,
@@ -1049,15 +1044,11 @@ impl<'a, G: GlApi> Runner<'a, G> {
                 op,
                 expected,
             } => {
-                let Some(&b) = self.ssbos.get(binding) else {
-                    self.out(format!(
-                        "{}:{line}: no ssbo at binding {binding}",
-                        self.file
-                    ));
-                    return Err(Stop(Verdict::Fail));
-                };
-                gl.bind_buffer(GL_SHADER_STORAGE_BUFFER, b);
-                let bytes = gl.get_buffer_sub_data(GL_SHADER_STORAGE_BUFFER, *offset as isize, 4);
+                let b = self.ssbo(line, *binding)?;
+                self.gl.bind_buffer(GL_SHADER_STORAGE_BUFFER, b);
+                let bytes =
+                    self.gl
+                        .get_buffer_sub_data(GL_SHADER_STORAGE_BUFFER, *offset as isize, 4);
                 let Ok(word) = <[u8; 4]>::try_from(&bytes[..]) else {
                     self.out(format!(
                         "{}:{line}: ssbo {binding} has no word at offset {offset}",
@@ -1086,6 +1077,21 @@ impl<'a, G: GlApi> Runner<'a, G> {
             }
         }
         Ok(Verdict::Pass)
+    }
+
+    /// The buffer of an `ssbo` command at storage binding `binding`; a
+    /// failed test when no `ssbo N SIZE` made one.
+    fn ssbo(&mut self, line: usize, binding: u32) -> Result<u32, Stop> {
+        match self.ssbos.get(&binding) {
+            Some(&b) => Ok(b),
+            None => {
+                self.out(format!(
+                    "{}:{line}: no ssbo at binding {binding}",
+                    self.file
+                ));
+                Err(Stop(Verdict::Fail))
+            }
+        }
     }
 
     /// Runs a draw call and turns GL errors and pipeline failures into a

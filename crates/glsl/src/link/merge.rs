@@ -7,7 +7,7 @@ use super::blocks::{merge_blocks, size_block_members};
 use super::calls::{call_depth, collect_calls};
 use super::redeclarations::{
     check_frag_coord_redeclared, check_geometry_layout, check_per_vertex_in_redeclared,
-    check_per_vertex_redeclared,
+    check_per_vertex_redeclared, size_per_vertex_globals,
 };
 use super::remap::{remap_block, remap_const, remap_expr, remap_type, Remap};
 use super::types::{compatible_types, same_struct};
@@ -686,35 +686,9 @@ fn check_tess_layout(merged: &mut Module, diags: &mut Vec<LinkDiagnostic>) -> bo
         );
         return false;
     };
-    let mut ok = true;
-    for g in merged
-        .globals
-        .iter_mut()
-        .filter(|g| g.storage == Storage::PerVertexOutput)
-    {
-        match g.ty.array {
-            Some(ArraySize::Unsized) => g.ty.array = Some(ArraySize::Sized(n)),
-            Some(ArraySize::Sized(len)) if len != n => {
-                ok = false;
-                push(
-                    diags,
-                    None,
-                    Code::LinkInterfaceMismatch,
-                    format!(
-                        "tessellation control output `{}' has {len} elements, but the output patch has {n} vertices",
-                        g.name
-                    ),
-                );
-            }
-            _ => {}
-        }
-    }
-    for b in merged.blocks.iter_mut() {
-        if b.storage == Storage::PerVertexOutput && b.instance.is_some() {
-            b.array = Some(n);
-        }
-    }
-    ok
+    size_per_vertex_globals(merged, Storage::PerVertexOutput, n, diags, |name, len| {
+        format!("tessellation control output `{name}' has {len} elements, but the output patch has {n} vertices")
+    })
 }
 
 /// A global's initializer: `None` without one, `Some(None)` when it is not

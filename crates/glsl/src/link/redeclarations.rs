@@ -144,12 +144,25 @@ pub(super) fn check_geometry_layout(merged: &mut Module, diags: &mut Vec<LinkDia
     let Some(n) = g.input.map(ir::InputPrimitive::vertices) else {
         return false;
     };
+    size_per_vertex_globals(merged, Storage::PerVertexInput, n, diags, |name, len| {
+        format!(
+            "geometry input `{name}' has {len} elements, but the input primitive has {n} vertices"
+        )
+    })
+}
+
+/// Gives the unsized per-vertex arrays of `storage` (and their block
+/// instances) `n` elements at link; false, with `message(name, len)`
+/// pushed, for one sized otherwise.
+pub(super) fn size_per_vertex_globals(
+    merged: &mut Module,
+    storage: Storage,
+    n: u32,
+    diags: &mut Vec<LinkDiagnostic>,
+    message: impl Fn(&str, u32) -> String,
+) -> bool {
     let mut ok = true;
-    for gl in merged
-        .globals
-        .iter_mut()
-        .filter(|x| x.storage == Storage::PerVertexInput)
-    {
+    for gl in merged.globals.iter_mut().filter(|x| x.storage == storage) {
         match gl.ty.array {
             Some(ArraySize::Unsized) => gl.ty.array = Some(ArraySize::Sized(n)),
             Some(ArraySize::Sized(len)) if len != n => {
@@ -158,17 +171,14 @@ pub(super) fn check_geometry_layout(merged: &mut Module, diags: &mut Vec<LinkDia
                     diags,
                     None,
                     Code::LinkInterfaceMismatch,
-                    format!(
-                        "geometry input `{}' has {len} elements, but the input primitive has {n} vertices",
-                        gl.name
-                    ),
+                    message(&gl.name, len),
                 );
             }
             _ => {}
         }
     }
     for b in merged.blocks.iter_mut() {
-        if b.storage == Storage::PerVertexInput && b.instance.is_some() {
+        if b.storage == storage && b.instance.is_some() {
             b.array = Some(n);
         }
     }

@@ -233,26 +233,8 @@ impl Analyzer {
                 );
             }
         }
-        let ids: Vec<GlobalId> = (0..self.module.globals.len())
-            .map(|i| GlobalId(i as u32))
-            .filter(|g| {
-                let g = &self.module.globals[g.0 as usize];
-                g.storage == Storage::PerVertexInput && g.ty.array == Some(ArraySize::Unsized)
-            })
-            .collect();
-        for id in ids {
-            let g = &self.module.globals[id.0 as usize];
-            if g.implicit_size > n {
-                let msg = format!(
-                    "`layout({}) in;' gives `{}' {n} elements, but index {} is already used",
-                    p.name(),
-                    g.name,
-                    g.implicit_size - 1
-                );
-                self.error(Code::IndexOutOfRange, span, msg);
-            }
-            self.resize_per_vertex_array(id, n);
-        }
+        let layout = format!("`layout({}) in;'", p.name());
+        self.size_declared_per_vertex(Storage::PerVertexInput, n, &layout, span);
     }
 
     /// A geometry input array just declared (a variable or a block

@@ -150,25 +150,8 @@ impl Analyzer {
                 );
             }
         }
-        let ids: Vec<GlobalId> = (0..self.module.globals.len())
-            .map(|i| GlobalId(i as u32))
-            .filter(|g| {
-                let g = &self.module.globals[g.0 as usize];
-                g.storage == Storage::PerVertexOutput && g.ty.array == Some(ArraySize::Unsized)
-            })
-            .collect();
-        for id in ids {
-            let g = &self.module.globals[id.0 as usize];
-            if g.implicit_size > n {
-                let msg = format!(
-                    "`layout(vertices = {n}) out;' gives `{}' {n} elements, but index {} is already used",
-                    g.name,
-                    g.implicit_size - 1
-                );
-                self.error(Code::IndexOutOfRange, span, msg);
-            }
-            self.resize_per_vertex_array(id, n);
-        }
+        let layout = format!("`layout(vertices = {n}) out;'");
+        self.size_declared_per_vertex(Storage::PerVertexOutput, n, &layout, span);
     }
 
     /// A control shader's per-vertex output array just declared (a
@@ -201,6 +184,37 @@ impl Analyzer {
                 None => self.tess_output_len = Some((len, name)),
             },
             _ => {}
+        }
+    }
+
+    /// Gives the unsized per-vertex arrays of `storage` declared so far
+    /// `n` elements, as `layout` (just declared) says; an error for one
+    /// already indexed past them.
+    pub(crate) fn size_declared_per_vertex(
+        &mut self,
+        storage: Storage,
+        n: u32,
+        layout: &str,
+        span: Span,
+    ) {
+        let ids: Vec<GlobalId> = (0..self.module.globals.len())
+            .map(|i| GlobalId(i as u32))
+            .filter(|g| {
+                let g = &self.module.globals[g.0 as usize];
+                g.storage == storage && g.ty.array == Some(ArraySize::Unsized)
+            })
+            .collect();
+        for id in ids {
+            let g = &self.module.globals[id.0 as usize];
+            if g.implicit_size > n {
+                let msg = format!(
+                    "{layout} gives `{}' {n} elements, but index {} is already used",
+                    g.name,
+                    g.implicit_size - 1
+                );
+                self.error(Code::IndexOutOfRange, span, msg);
+            }
+            self.resize_per_vertex_array(id, n);
         }
     }
 
