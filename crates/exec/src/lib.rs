@@ -545,6 +545,10 @@ pub struct Kernel {
     inputs: Vec<(usize, u32, glsl::types::Scalar)>,
     outputs: Vec<(u32, usize, glsl::types::Scalar)>,
     loop_budget: u64,
+    /// Whether the program writes memory, and calls `barrier()` (found
+    /// once: draws and dispatches ask every time).
+    writes_memory: bool,
+    calls_barrier: bool,
     /// The program optimized for the executors ([`dispatch::run`]).
     code: std::sync::Arc<opt::Code>,
     /// [`Kernel::depth_only`], computed on first use (shared by clones).
@@ -589,6 +593,7 @@ impl Kernel {
         } = l;
         let live_out: Vec<u32> = outputs.iter().map(|&(r, _, _)| r).collect();
         let code = std::sync::Arc::new(opt::optimize(&program, &live_out));
+        let (writes_memory, calls_barrier) = (code.prog.writes_memory(), code.prog.calls_barrier());
         Kernel {
             stage,
             program,
@@ -596,6 +601,8 @@ impl Kernel {
             inputs,
             outputs,
             loop_budget,
+            writes_memory,
+            calls_barrier,
             code,
             depth: Default::default(),
             #[cfg(feature = "jit")]
@@ -616,7 +623,7 @@ impl Kernel {
     /// Whether a run writes memory ([`Memory`]: storage blocks, shared
     /// variables), which makes the order of runs matter.
     pub fn writes_memory(&self) -> bool {
-        self.code.prog.ops.iter().any(|op| op.writes_memory())
+        self.writes_memory
     }
 
     /// Whether a compute kernel's work groups run on threads of their own
@@ -625,13 +632,7 @@ impl Kernel {
     pub fn threads_per_group(&self) -> bool {
         let size = self.interface.local_size.unwrap_or([1, 1, 1]);
         let n: u64 = size.iter().map(|&s| u64::from(s)).product();
-        n > LANES as u64
-            && self
-                .code
-                .prog
-                .ops
-                .iter()
-                .any(|op| matches!(op, program::Op::Barrier))
+        n > LANES as u64 && self.calls_barrier
     }
 
     pub fn interface(&self) -> &Interface {

@@ -480,6 +480,18 @@ impl Op {
     }
 }
 
+impl Program {
+    /// Whether some op writes memory ([`Op::writes_memory`]).
+    pub(crate) fn writes_memory(&self) -> bool {
+        self.ops.iter().any(|op| op.writes_memory())
+    }
+
+    /// Whether some op is `barrier()`.
+    pub(crate) fn calls_barrier(&self) -> bool {
+        self.ops.iter().any(|op| matches!(op, Op::Barrier))
+    }
+}
+
 impl Op {
     /// Writes memory shared between invocations (what a fragment batch's
     /// helper lanes must not do).

@@ -416,6 +416,8 @@ fn kernel_of(ins: Vec<Ins>, budget: u64, outputs: &[Reg]) -> Kernel {
             })
             .collect(),
         loop_budget: budget,
+        writes_memory: code.prog.writes_memory(),
+        calls_barrier: code.prog.calls_barrier(),
         code: std::sync::Arc::new(code),
         depth: Default::default(),
         jit: Default::default(),
