@@ -518,7 +518,7 @@ unsafe fn step(
         }
         Op::Texture { index } => {
             if let Some(t) = code.prog.textures.get(index as usize) {
-                texture(regs, t, st.cur, textures);
+                texture(Registers::file(regs), t, st.cur, textures);
             }
         }
         // Only hooked runs (the reference interpreter) print.
@@ -706,49 +706,104 @@ fn floats(a: &Lanes) -> [f32; LANES] {
     a.map(|x| fz(f(x)))
 }
 
+/// Where an op run outside the interpreter loop reads its registers: the
+/// file, except the pool registers (from `base` on) when they are read
+/// where a prepared pool is (`jit`), at `at`.
+#[derive(Clone, Copy)]
+pub(crate) struct Registers {
+    pub file: *mut Lanes,
+    pub base: Reg,
+    pub at: *const Lanes,
+}
+
+impl Registers {
+    /// Registers all in the file.
+    pub(crate) fn file(file: *mut Lanes) -> Registers {
+        Registers {
+            file,
+            base: Reg::MAX,
+            at: file,
+        }
+    }
+
+    /// Register `x`.
+    ///
+    /// # Safety
+    /// `x` must be a register of the file, or of the pool when at least
+    /// `base` (no register is written while the reference lives).
+    pub(crate) unsafe fn get<'r>(self, x: Reg) -> &'r Lanes {
+        if x >= self.base {
+            &*self.at.add((x - self.base) as usize)
+        } else {
+            &*self.file.add(x as usize)
+        }
+    }
+}
+
+/// The values of `a` and `b` (0 without `b`) on the lanes of `cur`,
+/// when every one of those lanes has the same (a texture op's unit and
+/// level, nearly always); `None` otherwise or without lanes.
+#[inline]
+pub(crate) fn shared_pair(cur: LaneMask, a: &Lanes, b: Option<&Lanes>) -> Option<(u32, u32)> {
+    if cur == 0 {
+        return None;
+    }
+    let f = cur.trailing_zeros() as usize;
+    let b = b.unwrap_or(&[0; LANES]);
+    let (x, y) = (a[f], b[f]);
+    // Without branches: the lanes' differences, kept where they run.
+    let mut diff = 0;
+    for l in 0..LANES {
+        let on = 0u32.wrapping_sub((cur >> l) & 1);
+        diff |= ((a[l] ^ x) | (b[l] ^ y)) & on;
+    }
+    (diff == 0).then_some((x, y))
+}
+
 /// A texture op (`Op::Texture`) on the lanes of `cur`.
 ///
 /// # Safety
 /// `regs` must hold every register `t` names (validated).
 pub(crate) unsafe fn texture(
-    regs: *mut Lanes,
+    regs: Registers,
     t: &crate::program::TexOp,
     cur: LaneMask,
     textures: &dyn Textures,
 ) {
     // SAFETY: the caller's contract: each register `t` names is in
     // `regs` (a reference to one, read while no register is written).
-    let reg = |x: Reg| -> &Lanes { unsafe { &*regs.add(x as usize) } };
+    let reg = |x: Reg| -> &Lanes { unsafe { regs.get(x) } };
     let ints = |x: Reg| -> [i32; LANES] { reg(x).map(|b| b as i32) };
     let level = |l: Option<Reg>| l.map_or([0; LANES], ints);
     let mut out = [[0f32; LANES]; 4];
     match t.kind {
         TexKind::Size => {
             let lod = match t.lod {
-                TexLod::Explicit(l) => level(l),
-                _ => [0; LANES],
+                TexLod::Explicit(Some(l)) => Some(reg(l)),
+                _ => None,
             };
             let unit = reg(t.unit);
+            let on = |l: usize| cur & (1 << l) != 0;
+            // The fourth register too, as the reference interpreter.
             let mut sizes = [[0u32; LANES]; 4];
-            // Lanes nearly always ask the same unit and level: ask once.
-            let mut last: Option<(u32, i32, [i32; 3])> = None;
-            for l in 0..LANES {
-                if cur & (1 << l) != 0 {
-                    let v = match last {
-                        Some((u, lod_l, v)) if u == unit[l] && lod_l == lod[l] => v,
-                        _ => {
-                            let v = textures.size(unit[l], t.target, lod[l]);
-                            last = Some((unit[l], lod[l], v));
-                            v
-                        }
-                    };
+            // Lanes nearly always ask the same unit and level: one
+            // question, its answer on every running lane.
+            if let Some((u, level)) = shared_pair(cur, unit, lod) {
+                let v = textures.size(u, t.target, level as i32);
+                for (s, v) in sizes.iter_mut().zip(v) {
+                    *s = std::array::from_fn(|l| if on(l) { v as u32 } else { 0 });
+                }
+            } else {
+                for l in (0..LANES).filter(|&l| on(l)) {
+                    let level = lod.map_or(0, |v| v[l] as i32);
+                    let v = textures.size(unit[l], t.target, level);
                     for k in 0..3 {
                         sizes[k][l] = v[k] as u32;
                     }
                 }
             }
             for (k, o) in sizes.iter().enumerate() {
-                *regs.add(t.d as usize + k) = *o;
+                *regs.file.add(t.d as usize + k) = *o;
             }
             return;
         }
@@ -831,7 +886,7 @@ pub(crate) unsafe fn texture(
     for (k, o) in out.iter().enumerate() {
         // Subnormal results (a border colour, say) enter as zero; an
         // integer texture's texels are the integers' bits.
-        *regs.add(t.d as usize + k) = if integer {
+        *regs.file.add(t.d as usize + k) = if integer {
             o.map(f32::to_bits)
         } else {
             o.map(ftz)

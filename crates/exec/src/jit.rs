@@ -36,7 +36,8 @@
 //!
 //! ## Same bits as the interpreter
 //! Arithmetic, comparisons, conversions (float→int saturating as Rust `as`
-//! does), selects, `min`/`max` with their NaN rule, `abs`, `sign`,
+//! does), integer division and remainder (through `f64`, as `lane::idiv`
+//! and its kin), selects, `min`/`max` with their NaN rule, `abs`, `sign`,
 //! `floor`/`ceil`/`fract`/`mod`, `sqrt`, `inversesqrt`, `step`, `clamp`,
 //! `mix`, `smoothstep` and dot products are emitted inline as the same IEEE
 //! operations in the same order, each result flushed as `engine::ftz` does
@@ -45,14 +46,15 @@
 //! values without four instructions per op. Unflushed bits never leave the
 //! code: float outputs are flushed by `engine::store_outputs`, the
 //! operands of callbacks by the callbacks, which run in Rust's environment.
-//! Everything else (the transcendental functions, integer division,
-//! gathers and scatters, uniform reads outside the prologue, derivatives,
-//! noise, texture lookups) calls back into Rust: `jit_f1`/`jit_f2` run the
-//! engine's own lane functions (compiled for AVX-512 or AVX2 when the CPU
-//! has them, where their lane loops vectorize wider; `jit_f2` also the
-//! integer divisions, `lane::int2`), `jit_step` the
+//! Everything else (the transcendental functions, uniform reads outside
+//! the prologue, noise, texture lookups) calls back into Rust:
+//! `jit_f1`/`jit_f2` run the engine's own lane functions (compiled for
+//! AVX-512 or AVX2 when the CPU has them, where their lane loops vectorize
+//! wider), `jit_texture` the engine's own `texture`, `jit_step` the
 //! engine's own `step` on the op, so those compute the interpreter's bits
-//! by construction.
+//! by construction. A texel fetch whose lanes read one level that
+//! [`crate::Textures::texel_level`] gives as stored texels loads them
+//! itself (bounds, index, load, as `Textures::fetch` defines them).
 //!
 //! ## When it is used
 //! With the `jit` variant (the default where Cranelift supports the CPU), a
@@ -69,7 +71,7 @@ use crate::engine::{self, Lanes};
 use crate::float_env;
 use crate::interp::FULL;
 use crate::opt::{Code, Ins};
-use crate::program::{F1, F2};
+use crate::program::{TexKind, TexLod, F1, F2};
 use crate::{Batch, ExecError, Kernel, Textures};
 use std::any::Any;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -145,6 +147,8 @@ pub(crate) struct Ctx<'a> {
     pool: *const Lanes,
     /// Where `jit_f1`/`jit_f2` put their result.
     scratch: Lanes,
+    /// Where `jit_texture` describes the level a texel fetch reads.
+    view: View,
     code: &'a Code,
     uniforms: &'a [u32],
     textures: &'a dyn Textures,
@@ -185,6 +189,40 @@ impl Drop for Native {
             // SAFETY: the function pointer dies with `self`; no run can be
             // executing it (runs borrow the kernel that owns `self`).
             unsafe { m.free_memory() };
+        }
+    }
+}
+
+/// A texture level whose texels native code fetches itself
+/// ([`crate::TexelLevel`] checked and flattened for it).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct View {
+    /// The first texel.
+    texels: *const u8,
+    /// Width, height and depth; their product fits in an `i32` and the
+    /// texels hold that many.
+    size: [u32; 3],
+    /// Per coordinate: all ones when the fetch reads it, else 0.
+    keep: [u32; 3],
+    /// [`View::RGBA32`] or [`View::UNORM8`].
+    format: u32,
+}
+
+impl View {
+    /// 16 bytes per texel: RGBA as `f32` bits.
+    const RGBA32: u32 = 0;
+    /// 4 bytes per texel: RGBA bytes, each `b / 255`.
+    const UNORM8: u32 = 1;
+}
+
+impl Default for View {
+    fn default() -> View {
+        View {
+            texels: std::ptr::null(),
+            size: [0; 3],
+            keep: [0; 3],
+            format: View::RGBA32,
         }
     }
 }
@@ -356,6 +394,7 @@ pub(crate) fn run(
         consts: native.consts.as_ptr().cast(),
         pool: pool_ptr,
         scratch: [0; crate::LANES],
+        view: View::default(),
         code,
         uniforms,
         textures,
@@ -409,23 +448,105 @@ unsafe extern "C" fn jit_step(ctx: *mut Ctx, index: u32, cur: u32) {
     // lookups, noise, derivatives; `engine::floats`).
     let r = float_env::callback(daz(), || {
         catch_unwind(AssertUnwindSafe(|| unsafe {
-            // Texture ops, the most frequent callback, straight to the
-            // engine's lookup: `step_data` would build a whole engine
-            // state, and its frame (every op's temporaries) costs stack
-            // probes on each call. The same code runs either way.
-            match ins.op {
-                crate::program::Op::Texture { index } => {
-                    if let Some(t) = code.prog.textures.get(index as usize) {
-                        engine::texture(regs, t, cur, textures);
-                    }
-                }
-                _ => engine::step_data(code, regs, &ins, cur, uniforms, textures),
-            }
+            engine::step_data(code, regs, &ins, cur, uniforms, textures)
         }))
     });
     if let Err(p) = r {
         ctx.panic = Some(p);
     }
+}
+
+/// Texture op `index` of `ctx.code` on the lanes of `cur`: a texel fetch
+/// whose lanes all read one plain level ([`fetch_view`]) returns 1
+/// having put the level in `ctx.view`, for the native code to load the
+/// texels; every other op is run here by the engine's own `texture`
+/// (returning 0). The registers are read where they are (pool registers
+/// at `ctx.pool`), so these ops never need the pool copied into the file.
+///
+/// # Safety
+/// `ctx` must be the live context of a run of native code compiled from
+/// `ctx.code`.
+unsafe extern "C" fn jit_texture(ctx: *mut Ctx, index: u32, cur: u32) -> u32 {
+    let ctx = &mut *ctx;
+    if ctx.panic.is_some() {
+        return 0;
+    }
+    let code = ctx.code;
+    let Some(t) = code.prog.textures.get(index as usize) else {
+        return 0;
+    };
+    let regs = engine::Registers {
+        file: ctx.regs,
+        base: code.pool_base,
+        at: ctx.pool,
+    };
+    let textures = ctx.textures;
+    // SAFETY: the op's registers were validated against the file and the
+    // pool; the native code holds none of them while this runs.
+    let r = catch_unwind(AssertUnwindSafe(|| unsafe {
+        if t.kind == TexKind::Fetch {
+            if let Some(v) = fetch_view(regs, t, cur, textures) {
+                return Some(v);
+            }
+        }
+        // Filtering, decoding and depth comparison compute in floats:
+        // in Rust's environment. A size is integers only.
+        if t.kind == TexKind::Size {
+            engine::texture(regs, t, cur, textures);
+        } else {
+            float_env::callback(daz(), || engine::texture(regs, t, cur, textures));
+        }
+        None
+    }));
+    match r {
+        Ok(Some(v)) => {
+            ctx.view = v;
+            1
+        }
+        Ok(None) => 0,
+        Err(p) => {
+            ctx.panic = Some(p);
+            0
+        }
+    }
+}
+
+/// The level texel fetch `t` reads on the lanes of `cur`, when they all
+/// read the same unit and level and the textures give it as a
+/// [`crate::TexelLevel`] whose texel count fits native code's 32-bit
+/// indices.
+///
+/// # Safety
+/// The registers `t` reads must be in `regs`.
+unsafe fn fetch_view(
+    regs: engine::Registers,
+    t: &crate::program::TexOp,
+    cur: u32,
+    textures: &dyn Textures,
+) -> Option<View> {
+    let lod = match t.lod {
+        TexLod::Explicit(Some(l)) => Some(regs.get(l)),
+        _ => None,
+    };
+    let (unit, lod) = engine::shared_pair(cur, regs.get(t.unit), lod)?;
+    let level = textures.texel_level(unit, t.target, lod as i32)?;
+    let count = level
+        .size
+        .iter()
+        .try_fold(1u64, |n, &s| n.checked_mul(s as u64))?;
+    if count == 0 || count > i32::MAX as u64 || (level.texels.len() as u64) < count {
+        return None;
+    }
+    let (texels, format) = match level.texels {
+        crate::TexelSlice::Rgba32(t) => (t.as_ptr().cast(), View::RGBA32),
+        crate::TexelSlice::Unorm8(t) => (t.as_ptr().cast(), View::UNORM8),
+    };
+    Some(View {
+        texels,
+        size: level.size,
+        keep: std::array::from_fn(|a| if (a as u32) < level.axes { u32::MAX } else { 0 }),
+        format,
+    })
 }
 
 /// The functions of one float the native code calls (index = argument).
@@ -479,18 +600,7 @@ unsafe extern "C" fn jit_f2(func: u32, out: *mut Lanes, a: *const Lanes, b: *con
         *out = float_env::callback(daz(), || {
             engine::f2(f, &engine::flushed(&*a), &engine::flushed(&*b))
         });
-    } else if let Some(v) = int2(func, &*a, &*b) {
-        *out = v;
     }
-}
-
-/// Integer op `func − F2_CALLED.len()` of `lane::int2` (the indices of
-/// `jit_f2` after the float functions): integer operands, not flushed;
-/// no float environment to switch (integers and their f64 quotients are
-/// never subnormal).
-#[inline(always)]
-fn int2(func: u32, a: &Lanes, b: &Lanes) -> Option<Lanes> {
-    crate::lane::int2((func as usize).checked_sub(F2_CALLED.len())?, a, b)
 }
 
 /// [`jit_f1`] and [`jit_f2`] compiled for a [`crate::cpu::Level`]:
@@ -522,8 +632,6 @@ macro_rules! math_helpers_for {
                     *out = float_env::callback(daz(), || {
                         engine::f2(f, &engine::flushed(&*a), &engine::flushed(&*b))
                     });
-                } else if let Some(v) = int2(func, &*a, &*b) {
-                    *out = v;
                 }
             }
         );

@@ -115,38 +115,6 @@ pub(crate) fn umod(x: u32, y: u32) -> u32 {
     }
 }
 
-/// Integer op `k` (0 `IDiv`, 1 `IMod`, 2 `UDiv`, 3 `UMod`) on every
-/// lane of `a` and `b`, `None` for another `k`: what native code asks
-/// its math helper for.
-#[inline(always)]
-pub(crate) fn int2(k: usize, a: &[u32; LANES], b: &[u32; LANES]) -> Option<[u32; LANES]> {
-    // Plain loops over the lanes, one per op: what the compiler turns
-    // into vector conversions and divisions (`std::array::from_fn` stayed
-    // a call per lane).
-    let mut out = [0u32; LANES];
-    match k {
-        0 => lanes_of(&mut out, a, b, idiv),
-        1 => lanes_of(&mut out, a, b, imod),
-        2 => lanes_of(&mut out, a, b, udiv),
-        3 => lanes_of(&mut out, a, b, umod),
-        _ => return None,
-    }
-    Some(out)
-}
-
-/// `out[l] = f(a[l], b[l])` on every lane.
-#[inline(always)]
-fn lanes_of(
-    out: &mut [u32; LANES],
-    a: &[u32; LANES],
-    b: &[u32; LANES],
-    f: impl Fn(u32, u32) -> u32,
-) {
-    for l in 0..LANES {
-        out[l] = f(a[l], b[l]);
-    }
-}
-
 /// `-x` (`FNeg`): the sign bit flipped (NaNs included; never a new
 /// subnormal).
 #[inline(always)]

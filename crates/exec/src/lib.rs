@@ -396,6 +396,43 @@ pub struct FetchRequest {
     pub mask: LaneMask,
 }
 
+/// One level of a texture whose texel fetches are plain loads
+/// ([`Textures::texel_level`]).
+#[derive(Clone, Copy, Debug)]
+pub struct TexelLevel<'a> {
+    /// Width, height and depth (or layers) of the level; 1 on the axes
+    /// past [`TexelLevel::axes`].
+    pub size: [u32; 3],
+    /// How many coordinates a fetch reads (the target's dimensions, then
+    /// its layer); the others count as 0.
+    pub axes: u32,
+    /// Texel `(i, j, k)` at `(k·height + j)·width + i`.
+    pub texels: TexelSlice<'a>,
+}
+
+/// The texels of a [`TexelLevel`], as stored.
+#[derive(Clone, Copy, Debug)]
+pub enum TexelSlice<'a> {
+    /// RGBA floats (an integer texture's integers as their bits,
+    /// `f32::from_bits`).
+    Rgba32(&'a [[f32; 4]]),
+    /// RGBA unsigned normalized bytes: component `b` is `b as f32 / 255.0`.
+    Unorm8(&'a [[u8; 4]]),
+}
+
+impl TexelSlice<'_> {
+    pub fn len(&self) -> usize {
+        match self {
+            TexelSlice::Rgba32(t) => t.len(),
+            TexelSlice::Unorm8(t) => t.len(),
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
 // The variants are plain per-lane arrays by design (docs/ARCHITECTURE.md,
 // cross-crate rules): boxing would cost an allocation per lookup.
 #[allow(clippy::large_enum_variant)]
@@ -461,6 +498,18 @@ pub trait Textures {
                 }
             }
         }
+    }
+
+    /// Level `lod` (relative to the base level) of the texture of
+    /// `target` on `unit`, when [`Textures::fetch`] there gives each
+    /// texel as stored (inside the level; (0, 0, 0, 1) outside, with the
+    /// coordinates past [`TexelLevel::axes`] taken as 0) with nothing
+    /// applied after the load: no sRGB decoding, depth texture mode or
+    /// swizzle. Executors may then read the texels themselves, the same
+    /// values as [`Textures::fetch`]. `None` (the default): ask `fetch`.
+    fn texel_level(&self, unit: u32, target: SamplerKind, lod: i32) -> Option<TexelLevel<'_>> {
+        let _ = (unit, target, lod);
+        None
     }
 
     /// `textureSize`: the width, height and depth (or layer count) of

@@ -17,6 +17,7 @@ mod jit;
 mod memory;
 mod packing;
 mod piglit;
+mod texel_fetch;
 mod variants;
 
 /// A small deterministic generator (xorshift) for the randomized tests;

@@ -7,7 +7,7 @@
 //! `texture_2d` computes the same bits faster for the common 2D case;
 //! `texture_units` picks between them.
 
-use crate::ex::{FetchRequest, Lod, SampleRequest, LANES};
+use crate::ex::{FetchRequest, Lod, SampleRequest, TexelLevel, TexelSlice, LANES};
 use crate::texture::levels::{
     floor, lambda, mix_levels, quad_first, select_levels, wrap_coord, Levels, LodBase,
 };
@@ -128,11 +128,10 @@ fn fetch_lanes(units: &[TextureUnit], req: &FetchRequest, out: &mut [[f32; LANES
 }
 
 /// [`fetch_general`] when every lane of `req.mask` reads one level of
-/// one texture whose texels are used as stored (no sRGB decoding, depth
-/// texture mode or swizzle), as lanes nearly always do: the texture, its
-/// completeness and the level found once, then per lane a bounds check
-/// and a load. Returns false, having written nothing, otherwise (also
-/// for a missing texture or level, which the lane path answers).
+/// one texture whose texels are used as stored ([`plain_level`]), as
+/// lanes nearly always do: the level found once, then per lane a bounds
+/// check and a load. Returns false, having written nothing, otherwise
+/// (also for a missing texture or level, which the lane path answers).
 fn fetch_shared(units: &[TextureUnit], req: &FetchRequest, out: &mut [[f32; LANES]; 4]) -> bool {
     let on = |l: usize| req.mask & (1 << l) != 0;
     let Some(first) = (0..LANES).find(|&l| on(l)) else {
@@ -142,38 +141,19 @@ fn fetch_shared(units: &[TextureUnit], req: &FetchRequest, out: &mut [[f32; LANE
     if (0..LANES).any(|l| on(l) && (req.unit[l] != unit || req.lod[l] != lod)) {
         return false;
     }
-    let Some(tex) = units
-        .get(unit as usize)
-        .and_then(|u| unit_texture(u, req.target))
-    else {
-        return false;
-    };
-    if tex.srgb || tex.depth_format || tex.swizzle != NO_SWIZZLE {
-        return false;
-    }
-    let level = match (
-        tex.last_level(),
-        (tex.base_level as i64).checked_add(lod as i64),
-    ) {
-        (Some(q), Some(level)) if lod >= 0 && level <= q as i64 => level as usize,
-        _ => return false,
-    };
-    let Some(img) = tex.levels.get(level) else {
+    let Some((img, level)) = plain_level(units, unit, req.target, lod) else {
         return false;
     };
     // As `fetch_lane`: the coordinates of the target (and its layer) must
     // be inside the level; the others read as 0 (kept by a zero mask,
     // checked against a size of 1).
-    let n = tex.dims() + usize::from(tex.layered());
-    let sizes = [img.width, img.height, img.depth];
-    let limit: [i64; 3] = std::array::from_fn(|a| if a < n { sizes[a] as i64 } else { 1 });
-    let keep: [i32; 3] = std::array::from_fn(|a| if a < n { -1 } else { 0 });
+    let keep: [i32; 3] = std::array::from_fn(|a| if (a as u32) < level.axes { -1 } else { 0 });
     for lane in 0..LANES {
         if !on(lane) {
             continue;
         }
         let c: [i32; 3] = std::array::from_fn(|a| req.coord[a][lane] & keep[a]);
-        let inside = (0..3).all(|a| c[a] >= 0 && (c[a] as i64) < limit[a]);
+        let inside = (0..3).all(|a| c[a] >= 0 && (c[a] as i64) < level.size[a] as i64);
         let t = if inside {
             img.texel(c[0] as usize, c[1] as usize, c[2] as usize)
         } else {
@@ -184,6 +164,47 @@ fn fetch_shared(units: &[TextureUnit], req: &FetchRequest, out: &mut [[f32; LANE
         }
     }
     true
+}
+
+/// Level `lod` of the texture of `target` on `unit` when a texel fetch
+/// there is a plain load (`exec::Textures::texel_level`): the texture is
+/// complete, its texels are used as stored (no sRGB decoding, depth
+/// texture mode or swizzle), and the level exists and is not empty.
+pub(crate) fn plain_level(
+    units: &[TextureUnit],
+    unit: u32,
+    target: SamplerKind,
+    lod: i32,
+) -> Option<(&Image, TexelLevel<'_>)> {
+    let tex = unit_texture(units.get(unit as usize)?, target)?;
+    if tex.srgb || tex.depth_format || tex.swizzle != NO_SWIZZLE {
+        return None;
+    }
+    let q = tex.last_level()?;
+    let level = (tex.base_level as i64).checked_add(lod as i64)?;
+    if lod < 0 || level > q as i64 {
+        return None;
+    }
+    let img = tex.levels.get(level as usize)?;
+    let axes = tex.dims() + usize::from(tex.layered());
+    let sizes = [img.width, img.height, img.depth];
+    let size: [u32; 3] = std::array::from_fn(|a| if a < axes { sizes[a] } else { 1 });
+    let count = size
+        .iter()
+        .try_fold(1usize, |n, &s| n.checked_mul(s as usize))?;
+    let texels = match &img.texels {
+        Texels::F32(t) => TexelSlice::Rgba32(t.get(..count)?),
+        Texels::Unorm8(t) => TexelSlice::Unorm8(t.get(..count)?),
+    };
+    if count == 0 {
+        return None;
+    }
+    let level = TexelLevel {
+        size,
+        axes: axes as u32,
+        texels,
+    };
+    Some((img, level))
 }
 
 /// Lane `lane`'s texel of `tex`, whose last complete level is `q`.

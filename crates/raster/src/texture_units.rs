@@ -3,7 +3,7 @@
 //! the 2D fast path (`texture_2d`) when it applies, else to the general
 //! path (`texture_general`); both give the same bits.
 
-use crate::ex::{FetchRequest, SampleRequest, Textures, LANES};
+use crate::ex::{FetchRequest, SampleRequest, TexelLevel, Textures, LANES};
 use crate::texture::TextureUnit;
 use crate::{texture_2d, texture_general};
 use glsl::types::SamplerKind;
@@ -74,6 +74,10 @@ impl Textures for TextureUnits {
 
     fn fetch(&self, req: &FetchRequest, out: &mut [[f32; LANES]; 4]) {
         texture_general::fetch_general(&self.units, req, out);
+    }
+
+    fn texel_level(&self, unit: u32, target: SamplerKind, lod: i32) -> Option<TexelLevel<'_>> {
+        texture_general::plain_level(&self.units, unit, target, lod).map(|(_, level)| level)
     }
 
     fn size(&self, unit: u32, target: SamplerKind, lod: i32) -> [i32; 3] {

@@ -513,3 +513,93 @@ fn random_programs_run_natively_as_interpreted() {
         }
     }
 }
+
+/// Native integer division and remainder on the pairs where they can go
+/// wrong (zero and −1 divisors, the extremes, neighbours of powers of
+/// two): the lane functions' values (themselves checked against Rust's
+/// division in `lane`'s tests).
+#[test]
+fn native_integer_division_is_the_lane_functions() {
+    if !Variant::Jit.supported() {
+        return;
+    }
+    let (x, y) = (FLOAT_REGS, FLOAT_REGS + 1);
+    let outs = [
+        FLOAT_REGS + 2,
+        FLOAT_REGS + 3,
+        FLOAT_REGS + 4,
+        FLOAT_REGS + 5,
+    ];
+    let ins = vec![
+        Op::IDiv {
+            d: outs[0],
+            a: x,
+            b: y,
+        },
+        Op::IMod {
+            d: outs[1],
+            a: x,
+            b: y,
+        },
+        Op::UDiv {
+            d: outs[2],
+            a: x,
+            b: y,
+        },
+        Op::UMod {
+            d: outs[3],
+            a: x,
+            b: y,
+        },
+    ]
+    .into_iter()
+    .map(|op| Ins { op, masked: false })
+    .collect();
+    let mut k = kernel_of(ins, 0, &outs);
+    // A vertex stage's integer outputs are their bits.
+    k.stage = glsl::Stage::Vertex;
+    let mut special = vec![
+        0u32,
+        1,
+        2,
+        3,
+        7,
+        0x8000_0000,
+        0x7fff_ffff,
+        0x8000_0001,
+        u32::MAX,
+    ];
+    for s in [1u32, 15, 16, 30, 31] {
+        special.extend([
+            1 << s,
+            (1 << s) - 1,
+            (1u32 << s).wrapping_neg(),
+            0xffff_fffe,
+        ]);
+    }
+    let pairs: Vec<(u32, u32)> = special
+        .iter()
+        .flat_map(|&a| special.iter().map(move |&b| (a, b)))
+        .collect();
+    for chunk in pairs.chunks(LANES) {
+        let mut b = Batch::for_kernel(&k, 0xffff);
+        for (l, &(a, d)) in chunk.iter().enumerate() {
+            // Integer inputs are their bits.
+            b.inputs[x as usize][l] = f32::from_bits(a);
+            b.inputs[y as usize][l] = f32::from_bits(d);
+        }
+        k.run_variant(Variant::Jit, &mut b, &[0; 4], &NoTextures)
+            .unwrap();
+        assert!(matches!(k.native_code(), Some(Ok(_))));
+        for (l, &(a, d)) in chunk.iter().enumerate() {
+            let want = [
+                crate::lane::idiv(a, d),
+                crate::lane::imod(a, d),
+                crate::lane::udiv(a, d),
+                crate::lane::umod(a, d),
+            ];
+            let got = outs.map(|r| b.outputs[r as usize][l].to_bits());
+            assert_eq!(got, want, "{a:#x} by {d:#x}");
+        }
+    }
+}

@@ -70,7 +70,7 @@ const SHADERS: &[(Stage, &str)] = &[
     ),
 ];
 
-fn fill(b: &mut Batch, seed: u32) {
+pub(super) fn fill(b: &mut Batch, seed: u32) {
     let mut s = seed.wrapping_mul(2_654_435_761) | 1;
     for c in b.inputs.iter_mut() {
         for x in c.iter_mut() {

@@ -7,7 +7,8 @@
 use super::{Emit, ONE, SIGN};
 use crate::program::{F1, F2, F3};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
-use cranelift_codegen::ir::{InstBuilder, Value};
+use cranelift_codegen::ir::types::{F64X2, I64X2};
+use cranelift_codegen::ir::{ConstantData, InstBuilder, Value};
 
 impl<'a, 'b> Emit<'a, 'b> {
     /// `engine::ftz` of an F32X4, as I32X4: a subnormal keeps only its
@@ -18,6 +19,12 @@ impl<'a, 'b> Emit<'a, 'b> {
         if self.daz {
             return self.iv(x);
         }
+        self.flushed(x)
+    }
+
+    /// `engine::ftz` of an F32X4 whatever the environment, as I32X4 (for
+    /// values stored the way a callback stores them).
+    pub(super) fn flushed(&mut self, x: Value) -> Value {
         let b = self.iv(x);
         let exp = self.splat(0x7f80_0000);
         let e = self.b.ins().band(b, exp);
@@ -42,6 +49,79 @@ impl<'a, 'b> Emit<'a, 'b> {
             self.ftz(x)
         } else {
             v
+        }
+    }
+
+    /// Integer op `k` of a quarter: 0 `IDiv`, 1 `IMod`, 2 `UDiv`, 3 `UMod`
+    /// (`lane::idiv` ... `lane::umod`: truncated quotients, wrapping, 0
+    /// for a division by zero). The quotient is exact in `f64`, as there:
+    /// operands and divisor converted, divided, truncated, two lanes at a
+    /// time (the conversion patterns Cranelift lowers to single
+    /// instructions).
+    pub(super) fn int_div(&mut self, k: usize, x: Value, y: Value) -> Value {
+        let signed = k < 2;
+        let zero = self.splat(0);
+        let one = self.splat(1);
+        let by_zero = self.b.ins().icmp(IntCC::Equal, y, zero);
+        // Divisors 0 (and −1, signed) replaced by 1: finite quotients
+        // inside the integer's range.
+        let bad = if signed {
+            let minus_one = self.splat(u32::MAX);
+            let m1 = self.b.ins().icmp(IntCC::Equal, y, minus_one);
+            (self.b.ins().bor(by_zero, m1), Some(m1))
+        } else {
+            (by_zero, None)
+        };
+        let safe = self.b.ins().bitselect(bad.0, one, y);
+        let halves = [[0u8, 1, 0, 1], [2, 3, 2, 3]].map(|lanes| {
+            let xs = self.lanes_of(x, lanes);
+            let ys = self.lanes_of(safe, lanes);
+            let (xd, yd) = (self.widen_f64(xs, signed), self.widen_f64(ys, signed));
+            let qd = self.b.ins().fdiv(xd, yd);
+            self.truncate_f64(qd, signed)
+        });
+        let mut q = self.lanes_of2(halves[0], halves[1], [0, 1, 4, 5]);
+        if let Some(m1) = bad.1 {
+            // The one quotient past i32::MAX (−2³¹ / −1) wraps.
+            let neg = self.b.ins().ineg(x);
+            q = self.b.ins().bitselect(m1, neg, q);
+        }
+        let v = if k.is_multiple_of(2) {
+            q
+        } else {
+            let p = self.b.ins().imul(q, y);
+            self.b.ins().isub(x, p)
+        };
+        self.b.ins().bitselect(by_zero, zero, v)
+    }
+
+    /// Lanes 0 and 1 of an I32X4 as F64X2.
+    fn widen_f64(&mut self, v: Value, signed: bool) -> Value {
+        if signed {
+            let w = self.b.ins().swiden_low(v);
+            self.b.ins().fcvt_from_sint(F64X2, w)
+        } else {
+            let w = self.b.ins().uwiden_low(v);
+            self.b.ins().fcvt_from_uint(F64X2, w)
+        }
+    }
+
+    /// An F64X2 of integral-range values truncated to lanes 0 and 1 of an
+    /// I32X4 (lanes 2 and 3 zero).
+    fn truncate_f64(&mut self, v: Value, signed: bool) -> Value {
+        let zero = self
+            .b
+            .func
+            .dfg
+            .constants
+            .insert(ConstantData::from(vec![0u8; 16]));
+        let zero = self.b.ins().vconst(I64X2, zero);
+        if signed {
+            let t = self.b.ins().fcvt_to_sint_sat(I64X2, v);
+            self.b.ins().snarrow(t, zero)
+        } else {
+            let t = self.b.ins().fcvt_to_uint_sat(I64X2, v);
+            self.b.ins().uunarrow(t, zero)
         }
     }
 

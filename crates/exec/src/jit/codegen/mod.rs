@@ -4,11 +4,12 @@
 //! emitter's state ([`Emit`]) and the control flow (blocks, masks, loops,
 //! runs of lane-wise ops emitted quarter by quarter). [`regs`]: register
 //! values in memory and in SSA; [`ops`]: one data op; [`math`]: inline
-//! lane arithmetic.
+//! lane arithmetic; [`texture`]: texture ops and native texel fetches.
 
 mod math;
 mod ops;
 mod regs;
+mod texture;
 
 use super::PROLOGUE_OP;
 use super::{Const16, Ctx, Entry, Native, F1_CALLED, F2_CALLED, MAX_OPS};
@@ -162,11 +163,9 @@ fn pool_in_file(code: &Code) -> bool {
                 // where pool registers are.
                 Op::F1 { .. }
                 | Op::F2 { .. }
-                | Op::IDiv { .. }
-                | Op::IMod { .. }
-                | Op::UDiv { .. }
-                | Op::UMod { .. }
                 | Op::Scatter { .. }
+                // `jit_texture` reads registers where they are.
+                | Op::Texture { .. }
                 | Op::AndMask { .. }
                 | Op::AndNotMask { .. } => true,
                 Op::GatherUniform { word, max, .. } => word as u64 + max as u64 <= i32::MAX as u64,
@@ -231,6 +230,7 @@ struct Emit<'a, 'b> {
     sig_step: SigRef,
     sig_f1: SigRef,
     sig_f2: SigRef,
+    sig_texture: SigRef,
     /// Where the loop budget ran out (block parameter: the count).
     fail: Block,
     /// Register quarters held in SSA values in the current block.
@@ -264,6 +264,7 @@ fn separable(ins: &Ins) -> bool {
         Op::F1 { f, .. } => !F1_CALLED.contains(&f),
         Op::F2 { f, .. } => !F2_CALLED.contains(&f),
         Op::ClampIdx { max, .. } => max <= i32::MAX as u32,
+        Op::IDiv { .. } | Op::IMod { .. } | Op::UDiv { .. } | Op::UMod { .. } => true,
         Op::Const { .. }
         | Op::Mov { .. }
         | Op::Store { .. }
@@ -339,6 +340,9 @@ impl<'a, 'b> Emit<'a, 'b> {
         let sig_step = b.import_signature(helper_sig(module, ptr, &[I64, I32, I32]));
         let sig_f1 = b.import_signature(helper_sig(module, ptr, &[I32, I64, I64]));
         let sig_f2 = b.import_signature(helper_sig(module, ptr, &[I32, I64, I64, I64]));
+        let mut texture = helper_sig(module, ptr, &[I64, I32, I32]);
+        texture.returns.push(AbiParam::new(I32));
+        let sig_texture = b.import_signature(texture);
         let fail = b.create_block();
         b.append_block_param(fail, I64);
         let mut e = Emit {
@@ -357,6 +361,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             sig_step,
             sig_f1,
             sig_f2,
+            sig_texture,
             fail,
             cache: Cache::default(),
             only: None,

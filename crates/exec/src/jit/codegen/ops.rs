@@ -9,8 +9,8 @@ use crate::lane::match_op;
 use crate::opt::Ins;
 use crate::program::{Op, Reg};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
-use cranelift_codegen::ir::types::{F32X4, I32, I32X4, I8X16};
-use cranelift_codegen::ir::{BlockArg, ConstantData, Endianness, InstBuilder, MemFlagsData, Value};
+use cranelift_codegen::ir::types::{F32X4, I32, I32X4};
+use cranelift_codegen::ir::{BlockArg, InstBuilder, Value};
 use cranelift_frontend::FunctionBuilder;
 use std::mem::offset_of;
 
@@ -234,26 +234,8 @@ impl<'a, 'b> Emit<'a, 'b> {
     /// not flushed (as `engine::step`).
     pub(super) fn quad_diff(&mut self, a: Reg, q: usize, hi: [u8; 4], lo: [u8; 4]) -> Value {
         let v = self.ld(a, q);
-        let bytes = self.b.ins().bitcast(
-            I8X16,
-            MemFlagsData::new().with_endianness(Endianness::Little),
-            v,
-        );
-        let pick = |b: &mut FunctionBuilder, src: [u8; 4]| {
-            let m: Vec<u8> = src
-                .iter()
-                .flat_map(|&s| (0..4).map(move |k| 4 * s + k))
-                .collect();
-            let imm = b.func.dfg.immediates.push(ConstantData::from(m));
-            let s = b.ins().shuffle(bytes, bytes, imm);
-            b.ins().bitcast(
-                F32X4,
-                MemFlagsData::new().with_endianness(Endianness::Little),
-                s,
-            )
-        };
-        let h = pick(&mut self.b, hi);
-        let l = pick(&mut self.b, lo);
+        let (h, l) = (self.lanes_of(v, hi), self.lanes_of(v, lo));
+        let (h, l) = (self.fv(h), self.fv(l));
         let r = self.b.ins().fsub(h, l);
         self.ftz(r)
     }
@@ -412,12 +394,14 @@ impl<'a, 'b> Emit<'a, 'b> {
                 })
             };
         }
-        // Integer division: `jit_f2`'s indices after `F2_CALLED`
-        // (`lane::int2`), in vector registers where a callback to `step`
-        // would build an engine state per op.
+        // Integer division and remainder (`lane::idiv` ... `umod`, in
+        // that order), inline.
         macro_rules! call_int {
             ($d:expr, $a:expr, $b:expr, $k:expr) => {
-                self.call_math(true, F2_CALLED.len() + $k, $d, $a, $b, m)
+                each!($d, |q| {
+                    let (x, y) = (self.ld($a, q), self.ld($b, q));
+                    self.int_div($k, x, y)
+                })
             };
         }
         macro_rules! clamp_idx {
@@ -509,6 +493,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             }
             Op::DdX { d, a } => each!(d, |q| self.quad_diff(a, q, [1, 1, 3, 3], [0, 0, 2, 2])),
             Op::DdY { d, a } => each!(d, |q| self.quad_diff(a, q, [2, 3, 2, 3], [0, 1, 0, 1])),
+            Op::Texture { index } => self.texture(index)?,
             // Only hooked runs (the reference interpreter) print.
             Op::Printf { .. } => {}
             Op::Call { .. }
@@ -525,8 +510,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             | Op::SyncDiscard { .. } => {
                 return Err(format!("control op {:?} where data was expected", ins.op))
             }
-            // Uniform reads out of the prologue's range, noise, texture
-            // lookups.
+            // Uniform reads out of the prologue's range, noise.
             _ => self.call_step(index),
         });
         Ok(())

@@ -6,8 +6,8 @@
 
 use super::{mem, Emit, QUARTERS};
 use crate::program::Reg;
-use cranelift_codegen::ir::types::{F32X4, I32X4};
-use cranelift_codegen::ir::{ConstantData, InstBuilder, MemFlagsData, Value};
+use cranelift_codegen::ir::types::{F32X4, I32X4, I8X16};
+use cranelift_codegen::ir::{ConstantData, Endianness, InstBuilder, MemFlagsData, Value};
 
 /// Vector constants in a table the code loads from: a load used once is
 /// folded into the instruction using it, and loads of one entry between
@@ -64,6 +64,27 @@ impl<'a, 'b> Emit<'a, 'b> {
                 self.b.ins().vconst(I32X4, c)
             }
         }
+    }
+
+    /// Lanes `lanes` of the eight of `a` then `b` (I32X4).
+    /// Lanes `lanes` of `v` (I32X4).
+    pub(super) fn lanes_of(&mut self, v: Value, lanes: [u8; 4]) -> Value {
+        self.lanes_of2(v, v, lanes)
+    }
+
+    pub(super) fn lanes_of2(&mut self, a: Value, b: Value, lanes: [u8; 4]) -> Value {
+        let flags = MemFlagsData::new().with_endianness(Endianness::Little);
+        let (a, b) = (
+            self.b.ins().bitcast(I8X16, flags, a),
+            self.b.ins().bitcast(I8X16, flags, b),
+        );
+        let bytes: Vec<u8> = lanes
+            .iter()
+            .flat_map(|&s| (0..4).map(move |k| 4 * s + k))
+            .collect();
+        let imm = self.b.func.dfg.immediates.push(ConstantData::from(bytes));
+        let s = self.b.ins().shuffle(a, b, imm);
+        self.b.ins().bitcast(I32X4, flags, s)
     }
 
     pub(super) fn fv(&mut self, v: Value) -> Value {

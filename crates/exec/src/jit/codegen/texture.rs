@@ -1,0 +1,181 @@
+//! Texture ops: a call to `jit_texture` (which runs every lookup and size
+//! query with the engine's own code), and for a texel fetch whose lanes
+//! read one plain level (`jit::View`) the texels loaded here instead:
+//! per lane a bounds check, an index and a load, the texels transposed
+//! into the result registers. The values are `engine::texture`'s: the
+//! stored texel inside the level, (0, 0, 0, 1) outside it, 0 on lanes
+//! not running, float results flushed.
+
+use super::super::{jit_texture, Ctx, View};
+use super::{mem, Emit, ONE, QUARTERS};
+use crate::program::{TexKind, TexOp};
+use cranelift_codegen::ir::condcodes::IntCC;
+use cranelift_codegen::ir::types::{F32X4, I32, I32X4};
+use cranelift_codegen::ir::{InstBuilder, Value};
+use glsl::types::SamplerResult;
+use std::mem::offset_of;
+
+impl<'a, 'b> Emit<'a, 'b> {
+    /// Texture op `index` of the program.
+    pub(super) fn texture(&mut self, index: u32) -> Result<(), String> {
+        let t = *self
+            .code
+            .prog
+            .textures
+            .get(index as usize)
+            .ok_or("texture op out of range")?;
+        // The callback reads and writes registers in memory.
+        self.flush_all();
+        let f = self
+            .b
+            .ins()
+            .iconst(self.ptr, jit_texture as *const () as i64);
+        let i = self.b.ins().iconst(I32, index as i64);
+        let cur = self.b.use_var(self.cur);
+        let ctx = self.ctx;
+        let call = self
+            .b
+            .ins()
+            .call_indirect(self.sig_texture, f, &[ctx, i, cur]);
+        if t.kind != TexKind::Fetch {
+            return Ok(());
+        }
+        let ok = self.b.inst_results(call)[0];
+        let (native, rgba32, unorm8, join) = (
+            self.b.create_block(),
+            self.b.create_block(),
+            self.b.create_block(),
+            self.b.create_block(),
+        );
+        self.b.ins().brif(ok, native, &[], join, &[]);
+        self.b.switch_to_block(native);
+        let format = self.view_word(offset_of!(View, format));
+        let is_unorm8 = self
+            .b
+            .ins()
+            .icmp_imm_u(IntCC::Equal, format, View::UNORM8 as i64);
+        self.b.ins().brif(is_unorm8, unorm8, &[], rgba32, &[]);
+        for (block, unorm) in [(rgba32, false), (unorm8, true)] {
+            self.b.switch_to_block(block);
+            self.fetch_texels(&t, unorm);
+            // Only loads were held: nothing to store, nothing valid at
+            // the join.
+            self.cache = Default::default();
+            self.b.ins().jump(join, &[]);
+        }
+        self.b.switch_to_block(join);
+        Ok(())
+    }
+
+    /// The `i32` at `offset` in `Ctx::view`.
+    fn view_word(&mut self, offset: usize) -> Value {
+        let at = (offset_of!(Ctx, view) + offset) as i32;
+        self.b.ins().load(I32, mem(), self.ctx, at)
+    }
+
+    /// The texels of fetch `t` from `Ctx::view` (RGBA bytes when `unorm`,
+    /// else RGBA `f32` bits) into its result registers.
+    fn fetch_texels(&mut self, t: &TexOp, unorm: bool) {
+        let at = (offset_of!(Ctx, view) + offset_of!(View, texels)) as i32;
+        let base = self.b.ins().load(self.ptr, mem(), self.ctx, at);
+        let size: [Value; 3] = std::array::from_fn(|a| {
+            let w = self.view_word(offset_of!(View, size) + 4 * a);
+            self.b.ins().splat(I32X4, w)
+        });
+        let keep: [Value; 3] = std::array::from_fn(|a| {
+            let w = self.view_word(offset_of!(View, keep) + 4 * a);
+            self.b.ins().splat(I32X4, w)
+        });
+        let float = t.target.result() == SamplerResult::Float;
+        for q in 0..QUARTERS {
+            let mut c = [base; 3];
+            for (a, c) in c.iter_mut().enumerate() {
+                let mut v = self.ld(t.coord[a], q);
+                if let Some(o) = t.offset {
+                    let o = self.ld(o[a], q);
+                    v = self.b.ins().iadd(v, o);
+                }
+                *c = self.b.ins().band(v, keep[a]);
+            }
+            // Unsigned compares: a negative coordinate is outside too.
+            let mut inside = self.b.use_var(self.mk[q]);
+            for a in 0..3 {
+                let lt = self.b.ins().icmp(IntCC::UnsignedLessThan, c[a], size[a]);
+                inside = self.b.ins().band(inside, lt);
+            }
+            // (k·height + j)·width + i, which fits in an i32 inside the
+            // level; texel 0 for the other lanes.
+            let k_rows = self.b.ins().imul(c[2], size[1]);
+            let row = self.b.ins().iadd(k_rows, c[1]);
+            let row = self.b.ins().imul(row, size[0]);
+            let index = self.b.ins().iadd(row, c[0]);
+            let index = self.b.ins().band(index, inside);
+            let texel = if unorm {
+                self.unorm8_texels(base, index)
+            } else {
+                self.rgba32_texels(base, index)
+            };
+            let running = self.b.use_var(self.mk[q]);
+            for (k, v) in texel.into_iter().enumerate() {
+                let v = if float {
+                    let x = self.fv(v);
+                    self.flushed(x)
+                } else {
+                    v
+                };
+                let missing = self.splat(if k == 3 { ONE } else { 0 });
+                let missing = self.b.ins().band(running, missing);
+                let v = self.b.ins().bitselect(inside, v, missing);
+                let d = t.d + k as u32;
+                self.b.ins().store(mem(), v, self.regs, Self::offset(d, q));
+            }
+        }
+    }
+
+    /// The address of texel `index` (lane `l`) of `size` bytes each.
+    fn texel_address(&mut self, base: Value, index: Value, l: u8, shift: i64) -> Value {
+        let i = self.b.ins().extractlane(index, l);
+        let i = self.b.ins().uextend(self.ptr, i);
+        let off = self.b.ins().ishl_imm_u(i, shift);
+        self.b.ins().iadd(base, off)
+    }
+
+    /// R, G, B and A of four RGBA `f32` texels: four loads, transposed.
+    fn rgba32_texels(&mut self, base: Value, index: Value) -> [Value; 4] {
+        let v: [Value; 4] = std::array::from_fn(|l| {
+            let p = self.texel_address(base, index, l as u8, 4);
+            self.b.ins().load(I32X4, mem(), p, 0)
+        });
+        // [r0 r1 g0 g1], [b0 b1 a0 a1], then the same of texels 2 and 3.
+        let lo01 = self.lanes_of2(v[0], v[1], [0, 4, 1, 5]);
+        let hi01 = self.lanes_of2(v[0], v[1], [2, 6, 3, 7]);
+        let lo23 = self.lanes_of2(v[2], v[3], [0, 4, 1, 5]);
+        let hi23 = self.lanes_of2(v[2], v[3], [2, 6, 3, 7]);
+        [
+            self.lanes_of2(lo01, lo23, [0, 1, 4, 5]),
+            self.lanes_of2(lo01, lo23, [2, 3, 6, 7]),
+            self.lanes_of2(hi01, hi23, [0, 1, 4, 5]),
+            self.lanes_of2(hi01, hi23, [2, 3, 6, 7]),
+        ]
+    }
+
+    /// R, G, B and A of four RGBA8 texels, each byte `b` as `b / 255`
+    /// (correctly rounded, as the stored texels decode).
+    fn unorm8_texels(&mut self, base: Value, index: Value) -> [Value; 4] {
+        let mut packed = self.splat(0);
+        for l in 0..4u8 {
+            let p = self.texel_address(base, index, l, 2);
+            let w = self.b.ins().load(I32, mem(), p, 0);
+            packed = self.b.ins().insertlane(packed, w, l);
+        }
+        let byte = self.splat(0xff);
+        let c255 = self.fconst(255.0);
+        std::array::from_fn(|k| {
+            let b = self.b.ins().ushr_imm_u(packed, 8 * k as i64);
+            let b = self.b.ins().band(b, byte);
+            let x = self.b.ins().fcvt_from_sint(F32X4, b);
+            let x = self.b.ins().fdiv(x, c255);
+            self.iv(x)
+        })
+    }
+}

@@ -1,0 +1,190 @@
+//! Texel fetches through every executor: native code loads the texels of
+//! the levels `Textures::texel_level` gives itself, and must compute the
+//! bits `Textures::fetch` gives (the reference interpreter's and the
+//! portable executor's): both storage formats, coordinates outside the
+//! level on every side, offsets, levels, arrays and 1D targets, lanes off,
+//! lanes reading different levels (which go back to `fetch`).
+
+use super::{bits_of, kernel, uniforms};
+use crate::{
+    supported_variants, Batch, FetchRequest, SampleRequest, TexelLevel, TexelSlice, Textures,
+    Variant, LANES,
+};
+use glsl::ir::Stage;
+use glsl::types::SamplerKind;
+
+/// One level of a test texture.
+struct Level {
+    size: [u32; 3],
+    axes: u32,
+    rgba32: Vec<[f32; 4]>,
+    unorm8: Vec<[u8; 4]>,
+}
+
+impl Level {
+    fn new(size: [u32; 3], axes: u32, unorm: bool, seed: u32) -> Level {
+        let n = (size[0] * size[1] * size[2]) as usize;
+        let mut s = seed | 1;
+        let mut next = || {
+            s ^= s << 13;
+            s ^= s >> 17;
+            s ^= s << 5;
+            s
+        };
+        let mut level = Level {
+            size,
+            axes,
+            rgba32: Vec::new(),
+            unorm8: Vec::new(),
+        };
+        for i in 0..n {
+            if unorm {
+                level.unorm8.push(next().to_le_bytes());
+            } else {
+                // Any bits, subnormals among them (a float fetch flushes
+                // them).
+                let mut t = [0, 1, 2, 3].map(|_| f32::from_bits(next()));
+                if i % 3 == 0 {
+                    t[1] = f32::from_bits(next() & 0x807f_ffff);
+                }
+                level.rgba32.push(t);
+            }
+        }
+        level
+    }
+
+    fn texel(&self, c: [i32; 3]) -> [f32; 4] {
+        let keep = |a: usize| if (a as u32) < self.axes { c[a] } else { 0 };
+        let c = [keep(0), keep(1), keep(2)];
+        if (0..3).any(|a| c[a] < 0 || c[a] as u32 >= self.size[a]) {
+            return [0.0, 0.0, 0.0, 1.0];
+        }
+        let [w, h, _] = self.size.map(|s| s as usize);
+        let i = (c[2] as usize * h + c[1] as usize) * w + c[0] as usize;
+        if self.unorm8.is_empty() {
+            self.rgba32[i]
+        } else {
+            self.unorm8[i].map(|b| b as f32 / 255.0)
+        }
+    }
+}
+
+/// Units 0 (2D, two levels), 1 (2D bytes), 2 (2D array) and 3 (1D).
+struct Grid {
+    units: Vec<Vec<Level>>,
+}
+
+impl Grid {
+    fn new() -> Grid {
+        Grid {
+            units: vec![
+                vec![
+                    Level::new([6, 5, 1], 2, false, 11),
+                    Level::new([3, 2, 1], 2, false, 12),
+                ],
+                vec![Level::new([7, 4, 1], 2, true, 13)],
+                vec![Level::new([5, 3, 4], 3, false, 14)],
+                vec![Level::new([9, 1, 1], 1, false, 15)],
+            ],
+        }
+    }
+
+    fn level(&self, unit: u32, lod: i32) -> Option<&Level> {
+        self.units
+            .get(unit as usize)?
+            .get(usize::try_from(lod).ok()?)
+    }
+}
+
+impl Textures for Grid {
+    fn sample(&self, _: &SampleRequest, _: &mut [[f32; LANES]; 4]) {
+        unreachable!("the shaders only fetch")
+    }
+
+    fn fetch(&self, req: &FetchRequest, out: &mut [[f32; LANES]; 4]) {
+        for l in (0..LANES).filter(|l| req.mask & (1 << l) != 0) {
+            let t = match self.level(req.unit[l], req.lod[l]) {
+                Some(level) => level.texel([0, 1, 2].map(|a| req.coord[a][l])),
+                None => [0.0, 0.0, 0.0, 1.0],
+            };
+            for k in 0..4 {
+                out[k][l] = t[k];
+            }
+        }
+    }
+
+    fn texel_level(&self, unit: u32, _: SamplerKind, lod: i32) -> Option<TexelLevel<'_>> {
+        let level = self.level(unit, lod)?;
+        Some(TexelLevel {
+            size: level.size,
+            axes: level.axes,
+            texels: if level.unorm8.is_empty() {
+                TexelSlice::Rgba32(&level.rgba32)
+            } else {
+                TexelSlice::Unorm8(&level.unorm8)
+            },
+        })
+    }
+}
+
+#[test]
+fn native_texel_fetches_are_the_textures_fetches() {
+    let k = kernel(
+        Stage::Fragment,
+        "#version 130
+        uniform usampler2D ui;
+        uniform sampler2D bytes;
+        uniform sampler2DArray layers;
+        uniform isampler1D line;
+        uniform int lod;
+        in vec4 v;
+        out uvec4 a;
+        out vec4 b, c;
+        out ivec4 d, e;
+        void main() {
+            ivec2 p = ivec2(floor(v.xy * 8.0)) + 1;
+            a = texelFetch(ui, p, lod);
+            b = texelFetchOffset(bytes, p, 0, ivec2(1, -1));
+            if (v.z > 0.0)
+                c = texelFetch(layers, ivec3(p, int(floor(v.w * 4.0))), 0);
+            d = texelFetch(line, p.x + p.y, 0);
+            // Lanes on different levels.
+            e = ivec4(texelFetch(ui, p, int(v.z > 0.5)));
+        }",
+    );
+    let grid = Grid::new();
+    for level in 0..3u32 {
+        let u = uniforms(
+            &k,
+            &[
+                ("ui", &[0]),
+                ("bytes", &[1]),
+                ("layers", &[2]),
+                ("line", &[3]),
+                ("lod", &[level]),
+            ],
+        );
+        for round in 0..24u32 {
+            let active = [0xffff, 0x0ff0, 0x8001][round as usize % 3];
+            let mut base = Batch::for_kernel(&k, active);
+            super::variants::fill(&mut base, round + 31);
+            let mut want = base.clone();
+            let r0 = k.run_reference(&mut want, &u, &grid);
+            assert_eq!(r0, Ok(()));
+            for v in supported_variants() {
+                let mut got = base.clone();
+                let r = k.run_variant(v, &mut got, &u, &grid);
+                assert_eq!(r, r0, "{}", v.name());
+                assert_eq!(
+                    bits_of(&got.outputs),
+                    bits_of(&want.outputs),
+                    "{} level {level} round {round}",
+                    v.name()
+                );
+            }
+        }
+    }
+    if supported_variants().contains(&Variant::Jit) {
+        assert!(matches!(k.native_code(), Some(Ok(_))));
+    }
+}
