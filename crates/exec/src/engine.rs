@@ -55,18 +55,23 @@ pub(crate) fn expand(cur: LaneMask) -> Lanes {
 
 /// The value of every pool register for `uniforms` (the prologue's
 /// results).
-pub(crate) fn prepare(code: &Code, uniforms: &[u32]) -> Vec<Lanes> {
+pub(crate) fn prepare(code: &Code, uniforms: &[u32], textures: &dyn Textures) -> Vec<Lanes> {
     let mut file = vec![[0u32; LANES]; code.prog.registers as usize];
     // SAFETY: `file` has `prog.registers` entries and the prologue was
     // validated against that count.
-    unsafe { prologue(code, file.as_mut_ptr(), uniforms) };
+    unsafe { prologue(code, file.as_mut_ptr(), uniforms, textures) };
     file.split_off(code.pool_base as usize)
 }
 
 /// # Safety
 /// `regs` must point to `code.prog.registers` registers.
 #[inline(always)]
-pub(crate) unsafe fn prologue(code: &Code, regs: *mut Lanes, uniforms: &[u32]) {
+pub(crate) unsafe fn prologue(
+    code: &Code,
+    regs: *mut Lanes,
+    uniforms: &[u32],
+    textures: &dyn Textures,
+) {
     let mut masks = [0 as LaneMask; 0];
     let mut ret = [0u32; 0];
     let mut discarded = 0;
@@ -85,17 +90,8 @@ pub(crate) unsafe fn prologue(code: &Code, regs: *mut Lanes, uniforms: &[u32]) {
             discarded: &mut discarded,
             iterations: &mut iterations,
         };
-        // Pure data ops never jump or fail.
-        let _ = step(
-            code,
-            regs,
-            &i,
-            0,
-            &mut st,
-            uniforms,
-            &crate::NoTextures,
-            u64::MAX,
-        );
+        // Pure data ops and size queries never jump or fail.
+        let _ = step(code, regs, &i, 0, &mut st, uniforms, textures, u64::MAX);
     }
 }
 
@@ -146,7 +142,7 @@ pub(crate) fn run_in(
     let regs = if load(k, code, file, batch, pool) {
         let regs = file.as_mut_ptr();
         // SAFETY: `load` gave the file `code.prog.registers` registers.
-        unsafe { prologue(code, regs, uniforms) };
+        unsafe { prologue(code, regs, uniforms, textures) };
         regs
     } else {
         file.as_mut_ptr()
@@ -760,6 +756,49 @@ pub(crate) fn shared_pair(cur: LaneMask, a: &Lanes, b: Option<&Lanes>) -> Option
     (diff == 0).then_some((x, y))
 }
 
+/// A size query (`TexKind::Size` of `Op::Texture`) on the lanes of
+/// `cur`: apart from [`texture`], whose frame holds the lookups' large
+/// requests, as native code calls it once per batch.
+///
+/// # Safety
+/// As for [`texture`].
+pub(crate) unsafe fn texture_size(
+    regs: Registers,
+    t: &crate::program::TexOp,
+    cur: LaneMask,
+    textures: &dyn Textures,
+) {
+    // SAFETY: the caller's contract, as in `texture`.
+    let reg = |x: Reg| -> &Lanes { unsafe { regs.get(x) } };
+    let lod = match t.lod {
+        TexLod::Explicit(Some(l)) => Some(reg(l)),
+        _ => None,
+    };
+    let unit = reg(t.unit);
+    let on = |l: usize| cur & (1 << l) != 0;
+    // The fourth register too, as the reference interpreter.
+    let mut sizes = [[0u32; LANES]; 4];
+    // Lanes nearly always ask the same unit and level: one
+    // question, its answer on every running lane.
+    if let Some((u, level)) = shared_pair(cur, unit, lod) {
+        let v = textures.size(u, t.target, level as i32);
+        for (s, v) in sizes.iter_mut().zip(v) {
+            *s = std::array::from_fn(|l| if on(l) { v as u32 } else { 0 });
+        }
+    } else {
+        for l in (0..LANES).filter(|&l| on(l)) {
+            let level = lod.map_or(0, |v| v[l] as i32);
+            let v = textures.size(unit[l], t.target, level);
+            for k in 0..3 {
+                sizes[k][l] = v[k] as u32;
+            }
+        }
+    }
+    for (k, o) in sizes.iter().enumerate() {
+        *regs.file.add(t.d as usize + k) = *o;
+    }
+}
+
 /// A texture op (`Op::Texture`) on the lanes of `cur`.
 ///
 /// # Safety
@@ -777,36 +816,7 @@ pub(crate) unsafe fn texture(
     let level = |l: Option<Reg>| l.map_or([0; LANES], ints);
     let mut out = [[0f32; LANES]; 4];
     match t.kind {
-        TexKind::Size => {
-            let lod = match t.lod {
-                TexLod::Explicit(Some(l)) => Some(reg(l)),
-                _ => None,
-            };
-            let unit = reg(t.unit);
-            let on = |l: usize| cur & (1 << l) != 0;
-            // The fourth register too, as the reference interpreter.
-            let mut sizes = [[0u32; LANES]; 4];
-            // Lanes nearly always ask the same unit and level: one
-            // question, its answer on every running lane.
-            if let Some((u, level)) = shared_pair(cur, unit, lod) {
-                let v = textures.size(u, t.target, level as i32);
-                for (s, v) in sizes.iter_mut().zip(v) {
-                    *s = std::array::from_fn(|l| if on(l) { v as u32 } else { 0 });
-                }
-            } else {
-                for l in (0..LANES).filter(|&l| on(l)) {
-                    let level = lod.map_or(0, |v| v[l] as i32);
-                    let v = textures.size(unit[l], t.target, level);
-                    for k in 0..3 {
-                        sizes[k][l] = v[k] as u32;
-                    }
-                }
-            }
-            for (k, o) in sizes.iter().enumerate() {
-                *regs.file.add(t.d as usize + k) = *o;
-            }
-            return;
-        }
+        TexKind::Size => return texture_size(regs, t, cur, textures),
         TexKind::Fetch if cur != 0 => {
             let mut req = FetchRequest {
                 unit: *reg(t.unit),

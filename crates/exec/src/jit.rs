@@ -492,7 +492,7 @@ unsafe extern "C" fn jit_texture(ctx: *mut Ctx, index: u32, cur: u32) -> u32 {
         // Filtering, decoding and depth comparison compute in floats:
         // in Rust's environment. A size is integers only.
         if t.kind == TexKind::Size {
-            engine::texture(regs, t, cur, textures);
+            engine::texture_size(regs, t, cur, textures);
         } else {
             float_env::callback(daz(), || engine::texture(regs, t, cur, textures));
         }

@@ -699,12 +699,14 @@ impl Kernel {
     }
 
     /// The uniform-only values of this kernel for `uniforms` (constants,
-    /// uniform words and what is computed from them alone), for
-    /// [`Kernel::run_prepared`]: a renderer computes them once per draw.
-    pub fn prepare(&self, uniforms: &[u32]) -> Prepared {
+    /// uniform words and what is computed from them alone, and the sizes
+    /// of `textures` that `textureSize` asks of a uniform sampler), for
+    /// [`Kernel::run_prepared`]: a renderer computes them once per draw,
+    /// and runs them with the same textures.
+    pub fn prepare(&self, uniforms: &[u32], textures: &dyn Textures) -> Prepared {
         Prepared {
             code: self.code.clone(),
-            pool: engine::prepare(&self.code, uniforms),
+            pool: engine::prepare(&self.code, uniforms, textures),
             uniforms: uniforms.to_vec(),
         }
     }

@@ -546,6 +546,24 @@ pub(crate) struct TexOp {
 }
 
 impl TexOp {
+    /// Replaces every register the op reads by `f` of it.
+    pub(crate) fn map_reads(&mut self, mut f: impl FnMut(Reg) -> Reg) {
+        self.unit = f(self.unit);
+        self.coord = self.coord.map(&mut f);
+        self.compare = self.compare.map(&mut f);
+        self.lod = match self.lod {
+            TexLod::Implicit { bias } => TexLod::Implicit {
+                bias: bias.map(&mut f),
+            },
+            TexLod::Explicit(l) => TexLod::Explicit(l.map(&mut f)),
+            TexLod::Grad { ddx, ddy } => TexLod::Grad {
+                ddx: ddx.map(&mut f),
+                ddy: ddy.map(&mut f),
+            },
+        };
+        self.offset = self.offset.map(|o| o.map(&mut f));
+    }
+
     /// Every register the op reads.
     pub(crate) fn reads(&self) -> Vec<Reg> {
         let mut r = vec![self.unit];

@@ -363,7 +363,7 @@ fn prepared_runs_branching_on_uniforms() {
     let mut want = frag_batch(&k);
     k.run_reference(&mut want, &u, &NoTextures).expect("runs");
     k.compile_native();
-    let prepared = k.prepare(&u);
+    let prepared = k.prepare(&u, &NoTextures);
     for round in 0..3 {
         let mut got = frag_batch(&k);
         k.run_prepared(&mut got, &prepared, &NoTextures)

@@ -591,10 +591,10 @@ impl raster::ShaderStage for FixedFragment<'_> {
         }
     }
 
-    fn prepare(&self, uniforms: &[u32]) -> Option<exec::Prepared> {
+    fn prepare(&self, uniforms: &[u32], textures: &dyn exec::Textures) -> Option<exec::Prepared> {
         match self.plan {
             Some(_) => None,
-            None => Some(self.kernel.prepare(uniforms)),
+            None => Some(self.kernel.prepare(uniforms, textures)),
         }
     }
 

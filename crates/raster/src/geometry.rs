@@ -204,7 +204,7 @@ pub(crate) fn run_geometry(
     let primitives = primitive_count(input.mode, input.vertex_of.len());
     let record = probe.is_some();
     let prepared = if primitives > LANES {
-        gs.prepare(uniforms)
+        gs.prepare(uniforms, textures)
     } else {
         None
     };

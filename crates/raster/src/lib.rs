@@ -313,10 +313,11 @@ pub trait ShaderStage: Sync {
         textures: &dyn ex::Textures,
     ) -> Result<(), ex::ExecError>;
 
-    /// The uniform-only values of the stage for `uniforms`, computed once
-    /// per draw for [`ShaderStage::run_prepared`] (`exec::Kernel::prepare`).
-    /// `None` (the default): nothing to prepare.
-    fn prepare(&self, _uniforms: &[u32]) -> Option<ex::Prepared> {
+    /// The uniform-only values of the stage for `uniforms` and `textures`
+    /// (the draw's), computed once per draw for
+    /// [`ShaderStage::run_prepared`] (`exec::Kernel::prepare`). `None`
+    /// (the default): nothing to prepare.
+    fn prepare(&self, _uniforms: &[u32], _textures: &dyn ex::Textures) -> Option<ex::Prepared> {
         None
     }
 
@@ -427,8 +428,8 @@ impl ShaderStage for ex::Kernel {
     fn lanes_independent(&self) -> bool {
         ex::Kernel::lanes_independent(self)
     }
-    fn prepare(&self, uniforms: &[u32]) -> Option<ex::Prepared> {
-        Some(ex::Kernel::prepare(self, uniforms))
+    fn prepare(&self, uniforms: &[u32], textures: &dyn ex::Textures) -> Option<ex::Prepared> {
+        Some(ex::Kernel::prepare(self, uniforms, textures))
     }
     fn run_prepared(
         &self,

@@ -356,8 +356,10 @@ impl<'a> FragmentStage<'a> {
             depth_format: DepthFormat::Bits24,
             strips,
             clear_outputs: probe.is_some() || !shader.writes_every_output(),
-            prepared: shader.prepare(uniforms),
-            deferred_prepared: deferred.as_ref().and_then(|d| d.prepare(uniforms)),
+            prepared: shader.prepare(uniforms, textures),
+            deferred_prepared: deferred
+                .as_ref()
+                .and_then(|d| d.prepare(uniforms, textures)),
             lanes_independent: shader.lanes_independent(),
             deferred_lanes_independent: deferred.as_ref().is_some_and(|d| d.lanes_independent()),
             deferred,

@@ -219,7 +219,7 @@ fn run_vertices_with(
     // Uniform-only values once per draw, not per batch (a draw of a few
     // vertices runs them once either way).
     let prepared = if unique.len() > LANES {
-        vs.prepare(uniforms)
+        vs.prepare(uniforms, textures)
     } else {
         None
     };

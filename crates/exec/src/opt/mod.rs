@@ -8,7 +8,9 @@
 //!   operands are all such values go to a *prologue* computing them once per
 //!   run (or once per draw, [`crate::Prepared`]) into extra *pool*
 //!   registers; later readers read the pool register instead. The original
-//!   op stays where it was unless nothing reads it any more.
+//!   op stays where it was unless nothing reads it any more. Size queries
+//!   (`textureSize`) of such a unit and level are hoisted the same way:
+//!   the prologue runs with the run's textures.
 //! - **Dead code**: ops whose results nobody reads ([`crate::liveness`],
 //!   with every output live at the end) are dropped.
 //! - **Store fusion**: `t = op(...)` followed by `var = t` (a masked store,
@@ -26,7 +28,7 @@
 mod mask_flow;
 
 use crate::liveness::{analyze, effects};
-use crate::program::{leaders, pure, Op, Program, Reg, Role};
+use crate::program::{leaders, pure, Op, Program, Reg, Role, TexKind, TexLod, TexOp};
 use std::collections::BTreeMap;
 
 /// One instruction of the rewritten program: the op and whether its
@@ -116,6 +118,32 @@ fn single_dest(p: &Program, op: &Op) -> Option<Reg> {
     }
 }
 
+/// Texture op `index` of `textures` when it is a size query whose unit and level
+/// registers hold pool values (`known`: the pool register holding each
+/// register's value, `u32::MAX` for none), with those read from the pool:
+/// the same value on every lane for the whole run.
+fn hoist_size(textures: &[TexOp], index: u32, known: &[u32], pool_base: Reg) -> Option<TexOp> {
+    let t = *textures.get(index as usize)?;
+    if t.kind != TexKind::Size {
+        return None;
+    }
+    let pooled = |r: Reg| {
+        if r >= pool_base {
+            return Some(r);
+        }
+        let k = *known.get(r as usize)?;
+        (k != u32::MAX && k >= pool_base).then_some(k)
+    };
+    let mut h = t;
+    h.unit = pooled(t.unit)?;
+    h.lod = match t.lod {
+        TexLod::Explicit(Some(l)) => TexLod::Explicit(Some(pooled(l)?)),
+        TexLod::Explicit(None) => TexLod::Explicit(None),
+        _ => return None,
+    };
+    Some(h)
+}
+
 fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
     let n = p.ops.len();
     let leader = leaders(&p.ops);
@@ -128,7 +156,10 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
     // known[r]: pool register holding what r holds now (u32::MAX: none).
     let mut known = vec![u32::MAX; nregs];
     let mut touched: Vec<Reg> = Vec::new();
+    let mut size_known: Vec<(Reg, Reg)> = Vec::new();
     let mut ops = p.ops.clone();
+    // The texture ops, with the size queries the prologue makes appended.
+    let mut textures = p.textures.clone();
     mask_flow::unmask_stores(p, &mut ops);
     for i in 0..n {
         if leader[i] {
@@ -171,6 +202,45 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
             }
             _ => None,
         };
+        // A texture op reads the pool registers holding its operands, as
+        // other ops do (its registers are in its `TexOp`, not the op).
+        if let Op::Texture { index } = op {
+            if let Some(&t) = textures.get(*index as usize) {
+                let mut m = t;
+                m.map_reads(|r| match known.get(r as usize) {
+                    Some(&k) if k != u32::MAX => k,
+                    _ => r,
+                });
+                if m.reads() != t.reads() && textures.len() < u32::MAX as usize {
+                    *index = textures.len() as u32;
+                    textures.push(m);
+                }
+            }
+        }
+        // A size query of a unit and level known for the whole run (a
+        // uniform sampler, a constant or uniform level): its four result
+        // registers computed by the prologue too, once per draw.
+        let size = match *op {
+            Op::Texture { index } => hoist_size(&textures, index, &known, pool_base),
+            _ => None,
+        };
+        let size = size.filter(|_| textures.len() < u32::MAX as usize);
+        if let Some(mut t) = size {
+            let d = t.d;
+            t.d = next;
+            next = next.saturating_add(4);
+            prologue.push(Op::Texture {
+                index: textures.len() as u32,
+            });
+            textures.push(t);
+            if next > crate::program::MAX_REGISTERS {
+                return None;
+            }
+            for k in 0..4 {
+                // Cleared below with the op's other definitions first.
+                size_known.push((d + k, t.d + k));
+            }
+        }
         if next > crate::program::MAX_REGISTERS {
             return None;
         }
@@ -187,8 +257,19 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
                 touched.push(*d);
             }
         }
+        for (d, h) in size_known.drain(..) {
+            if let Some(x) = known.get_mut(d as usize) {
+                *x = h;
+                touched.push(d);
+            }
+        }
     }
 
+    // The ops now name the texture ops appended above.
+    let p = &Program {
+        textures: textures.clone(),
+        ..p.clone()
+    };
     let live = analyze(p, &ops, next, live_out)?;
     // Store fusion: op i writes t, op i+1 is `Store { d: v, a: t }` in the
     // same block with t dead after it.
@@ -242,7 +323,7 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
     }
     let prog = Program {
         ops: ins.iter().map(|i| i.op).collect(),
-        textures: p.textures.clone(),
+        textures,
         kill_slots: p.kill_slots.clone(),
         registers: next,
         mask_slots: p.mask_slots,

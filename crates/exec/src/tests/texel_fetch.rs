@@ -3,7 +3,9 @@
 //! bits `Textures::fetch` gives (the reference interpreter's and the
 //! portable executor's): both storage formats, coordinates outside the
 //! level on every side, offsets, levels, arrays and 1D targets, lanes off,
-//! lanes reading different levels (which go back to `fetch`).
+//! lanes reading different levels (which go back to `fetch`); size
+//! queries, hoisted into the prologue for a uniform sampler and level,
+//! with and without a prepared pool.
 
 use super::{bits_of, kernel, uniforms};
 use crate::{
@@ -113,6 +115,18 @@ impl Textures for Grid {
         }
     }
 
+    fn size(&self, unit: u32, _: SamplerKind, lod: i32) -> [i32; 3] {
+        self.level(unit, lod).map_or([0; 3], |l| {
+            std::array::from_fn(|a| {
+                if (a as u32) < l.axes {
+                    l.size[a] as i32
+                } else {
+                    0
+                }
+            })
+        })
+    }
+
     fn texel_level(&self, unit: u32, _: SamplerKind, lod: i32) -> Option<TexelLevel<'_>> {
         let level = self.level(unit, lod)?;
         Some(TexelLevel {
@@ -150,8 +164,18 @@ fn native_texel_fetches_are_the_textures_fetches() {
             d = texelFetch(line, p.x + p.y, 0);
             // Lanes on different levels.
             e = ivec4(texelFetch(ui, p, int(v.z > 0.5)));
+            // Sizes of a uniform level (hoisted into the prologue) and
+            // of per-lane levels.
+            e += ivec4(textureSize(ui, lod), textureSize(layers, 0).z + textureSize(line, 0),
+                textureSize(ui, int(v.w > 0.0)).x);
         }",
     );
+    // textureSize(ui, lod) is made by the prologue.
+    assert!(k
+        .code
+        .prologue
+        .iter()
+        .any(|op| matches!(op, crate::program::Op::Texture { .. })));
     let grid = Grid::new();
     for level in 0..3u32 {
         let u = uniforms(
@@ -171,6 +195,7 @@ fn native_texel_fetches_are_the_textures_fetches() {
             let mut want = base.clone();
             let r0 = k.run_reference(&mut want, &u, &grid);
             assert_eq!(r0, Ok(()));
+            let prepared = k.prepare(&u, &grid);
             for v in supported_variants() {
                 let mut got = base.clone();
                 let r = k.run_variant(v, &mut got, &u, &grid);
@@ -179,6 +204,17 @@ fn native_texel_fetches_are_the_textures_fetches() {
                     bits_of(&got.outputs),
                     bits_of(&want.outputs),
                     "{} level {level} round {round}",
+                    v.name()
+                );
+                // With the pool (and its size queries) made once.
+                let mut got = base.clone();
+                let pool = Some(&prepared.pool[..]);
+                let r = crate::dispatch::run_on(v, &k, &k.code, &mut got, &u, &grid, pool);
+                assert_eq!(r, r0, "{} prepared", v.name());
+                assert_eq!(
+                    bits_of(&got.outputs),
+                    bits_of(&want.outputs),
+                    "{} prepared, level {level} round {round}",
                     v.name()
                 );
             }

@@ -141,7 +141,7 @@ fn prepared_runs_compute_the_same_bytes() {
         let u: Vec<u32> = (0..k.interface().uniform_words)
             .map(|w| (0.5 + w as f32 * 0.25).to_bits())
             .collect();
-        let prepared = k.prepare(&u);
+        let prepared = k.prepare(&u, &NoTextures);
         for round in 0..8u32 {
             let active = if round % 2 == 1 { 0x0ff0 } else { 0xffff };
             let mut base = Batch::for_kernel(&k, active);
@@ -253,7 +253,7 @@ impl Bench {
     /// Prints the time of the kernel's own variant run on the uniforms `u`
     /// prepared once.
     fn prepared(&mut self, k: &Kernel, u: &[u32], reference: f64) {
-        let prepared = k.prepare(u);
+        let prepared = k.prepare(u, &NoTextures);
         let t = self.time(&mut |b| k.run_prepared(b, &prepared, &NoTextures).unwrap());
         eprintln!(
             "  {:8} {t:.0} ns/batch with run_prepared ({:.2}x)",

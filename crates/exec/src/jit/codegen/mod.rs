@@ -253,6 +253,8 @@ struct Emit<'a, 'b> {
     /// The code runs with subnormal operands read as zero ([`super::daz`]):
     /// results are left unflushed.
     daz: bool,
+    /// Emitting the prologue, which computes for every lane.
+    prologue: bool,
 }
 
 /// Data ops emitted inline whose lanes `4q..4q + 4` of the result depend
@@ -370,6 +372,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             store_now: None,
             full: false,
             daz: super::daz(),
+            prologue: false,
         };
         let base =
             e.b.ins()
@@ -468,9 +471,11 @@ impl<'a, 'b> Emit<'a, 'b> {
         let pro = self.b.create_block();
         self.b.ins().brif(flag, pro, &[], block(0)?, &[]);
         self.b.switch_to_block(pro);
+        self.prologue = true;
         for (i, &op) in code.prologue.iter().enumerate() {
             self.data(&Ins { op, masked: false }, PROLOGUE_OP | i as u32)?;
         }
+        self.prologue = false;
         self.flush_all();
         self.b.ins().jump(block(0)?, &[]);
 

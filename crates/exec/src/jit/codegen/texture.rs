@@ -31,7 +31,13 @@ impl<'a, 'b> Emit<'a, 'b> {
             .ins()
             .iconst(self.ptr, jit_texture as *const () as i64);
         let i = self.b.ins().iconst(I32, index as i64);
-        let cur = self.b.use_var(self.cur);
+        // The prologue's size queries are made for every lane, as
+        // `engine::prologue` makes them.
+        let cur = if self.prologue {
+            self.b.ins().iconst(I32, crate::interp::FULL as i64)
+        } else {
+            self.b.use_var(self.cur)
+        };
         let ctx = self.ctx;
         let call = self
             .b
