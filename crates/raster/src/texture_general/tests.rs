@@ -707,7 +707,8 @@ fn glsl130_shadow_lookups_ignore_the_depth_texture_mode() {
 /// `fetch_general` (whose lanes sharing a unit and level take
 /// `fetch_shared`) gives the lane-by-lane results: every target with
 /// texel fetches, in and out of the level, on levels past the last, with
-/// swizzles, sRGB and depth textures (which `fetch_shared` declines).
+/// swizzles, sRGB and depth textures (which `fetch_shared` declines);
+/// and the levels `plain_level` gives read as stored give them too.
 #[test]
 fn shared_fetches_match_the_lane_path() {
     let mut arr = Texture::new(
@@ -762,7 +763,7 @@ fn shared_fetches_match_the_lane_path() {
         seed ^= seed << 17;
         seed % n
     };
-    let mut shared = 0;
+    let (mut shared, mut levels) = (0, 0);
     for round in 0..4000 {
         let target = targets[next(targets.len() as u64) as usize];
         // Mostly one unit and level for all lanes, sometimes not.
@@ -784,7 +785,38 @@ fn shared_fetches_match_the_lane_path() {
                 assert_eq!(got[c][l].to_bits(), want[c][l].to_bits(), "{req:?} {c} {l}");
             }
         }
+        // `Textures::texel_level`'s contract: where it gives the level,
+        // each lane's texel read from it as stored (the way native code
+        // reads it) is the lane path's.
+        if let Some((_, level)) = plain_level(&units, u, target, lod) {
+            for l in (0..LANES).filter(|l| req.mask & (1 << l) != 0 && !mixed) {
+                let keep = |a: usize| {
+                    if (a as u32) < level.axes {
+                        req.coord[a][l]
+                    } else {
+                        0
+                    }
+                };
+                let c = [keep(0), keep(1), keep(2)];
+                let inside = (0..3).all(|a| c[a] >= 0 && (c[a] as u32) < level.size[a]);
+                let texel = if inside {
+                    let [w, h, _] = level.size.map(|s| s as usize);
+                    let i = (c[2] as usize * h + c[1] as usize) * w + c[0] as usize;
+                    match level.texels {
+                        TexelSlice::Rgba32(t) => t[i],
+                        TexelSlice::Unorm8(t) => t[i].map(|b| b as f32 / 255.0),
+                    }
+                } else {
+                    [0.0, 0.0, 0.0, 1.0]
+                };
+                for c in 0..4 {
+                    assert_eq!(texel[c].to_bits(), want[c][l].to_bits(), "{req:?} {c} {l}");
+                }
+                levels += 1;
+            }
+        }
     }
     // The fast path was exercised, and declined too.
     assert!(shared > 200 && shared < 3900, "{shared}");
+    assert!(levels > 1000, "{levels}");
 }
