@@ -33,8 +33,14 @@ mod deferred;
 /// primitive's polygon offset (offset, clamped), and its fixed point.
 #[inline(always)]
 fn window_depths(iz: &[f64; 4], offset: f64, format: DepthFormat) -> ([f64; 4], [u32; 4]) {
-    let z = iz.map(|iz| clamp01(iz + offset));
+    let z = window_z(iz, offset);
     (z, format.to_fixed4(z))
+}
+
+/// The final window z of four pixels (see [`window_depths`]).
+#[inline(always)]
+fn window_z(iz: &[f64; 4], offset: f64) -> [f64; 4] {
+    iz.map(|iz| clamp01(iz + offset))
 }
 
 fn clamp01(z: f64) -> f64 {

@@ -361,7 +361,13 @@ impl<'a> FragmentStage<'a> {
             (q.x, q.y, q.live) = (qx + 2 * k as i64, qy, 0xf);
             if self.window_z {
                 let iz = [z[4 * k], z[4 * k + 1], z[4 * k + 2], z[4 * k + 3]];
-                (q.z, q.zf) = window_depths(&iz, prim.z_offset, self.depth_format);
+                // The fixed-point depths only for a depth test (the
+                // quick write tests and stores nothing without one).
+                if self.state.depth_test.is_some() {
+                    (q.z, q.zf) = window_depths(&iz, prim.z_offset, self.depth_format);
+                } else {
+                    q.z = window_z(&iz, prim.z_offset);
+                }
                 if self.early {
                     q.live = target.depth_live((q.x, q.y), q.live, q.zf);
                 }
