@@ -8,7 +8,7 @@
 
 use crate::engine::{run_at, Lanes};
 use crate::opt::Code;
-use crate::{Batch, ExecError, Kernel, Textures};
+use crate::{Batch, ExecError, Kernel, Prepared, Textures};
 use std::cell::RefCell;
 
 thread_local! {
@@ -24,7 +24,7 @@ pub(crate) fn run(
     batch: &mut Batch,
     uniforms: &[u32],
     textures: &dyn Textures,
-    pool: Option<&[Lanes]>,
+    prepared: Option<&Prepared<'_>>,
 ) -> Result<(), ExecError> {
     run_on(
         crate::variant::current(),
@@ -33,7 +33,7 @@ pub(crate) fn run(
         batch,
         uniforms,
         textures,
-        pool,
+        prepared,
     )
 }
 
@@ -46,8 +46,11 @@ pub(crate) fn run_on(
     batch: &mut Batch,
     uniforms: &[u32],
     textures: &dyn Textures,
-    pool: Option<&[Lanes]>,
+    prepared: Option<&Prepared<'_>>,
 ) -> Result<(), ExecError> {
+    // A prepared pool is this code's (made by the kernel or a clone).
+    let prepared = prepared.filter(|p| std::ptr::eq(code, &*p.code));
+    let pool = prepared.map(|p| &p.pool[..]);
     let variant = if variant.supported() {
         variant
     } else {
@@ -83,7 +86,11 @@ pub(crate) fn run_on(
         };
         #[cfg(feature = "jit")]
         if let Some(n) = native {
-            return crate::jit::run(n, k, code, file, batch, uniforms, textures, pool);
+            // The views only with the textures they were made from.
+            let views = prepared
+                .filter(|p| p.made_with(textures))
+                .map_or(&[][..], |p| &p.views[..]);
+            return crate::jit::run(n, k, code, file, batch, uniforms, textures, pool, views);
         }
         run_at(
             variant.level(),

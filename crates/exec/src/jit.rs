@@ -149,6 +149,11 @@ pub(crate) struct Ctx<'a> {
     scratch: Lanes,
     /// Where `jit_texture` describes the level a texel fetch reads.
     view: View,
+    /// Per texture op, the level a texel fetch reads for the whole draw
+    /// ([`prepared_views`]; no texels: ask `jit_texture`), and their
+    /// count.
+    views: *const View,
+    views_len: u32,
     code: &'a Code,
     uniforms: &'a [u32],
     textures: &'a dyn Textures,
@@ -197,7 +202,7 @@ impl Drop for Native {
 /// ([`crate::TexelLevel`] checked and flattened for it).
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct View {
+pub struct View {
     /// The first texel.
     texels: *const u8,
     /// Width, height and depth; their product fits in an `i32` and the
@@ -361,6 +366,7 @@ pub(crate) fn run(
     uniforms: &[u32],
     textures: &dyn Textures,
     pool: Option<&[Lanes]>,
+    views: &[View],
 ) -> Result<(), ExecError> {
     // A prepared pool is read where it is unless callbacks need it in the
     // file.
@@ -395,6 +401,8 @@ pub(crate) fn run(
         pool: pool_ptr,
         scratch: [0; crate::LANES],
         view: View::default(),
+        views: views.as_ptr(),
+        views_len: views.len().min(u32::MAX as usize) as u32,
         code,
         uniforms,
         textures,
@@ -547,6 +555,42 @@ unsafe fn fetch_view(
         keep: std::array::from_fn(|a| if (a as u32) < level.axes { u32::MAX } else { 0 }),
         format,
     })
+}
+
+/// Per texture op of `code`, the level a texel fetch reads on every lane
+/// of a run with the prepared `pool` and `textures`, when its unit and
+/// level are pool registers (a uniform sampler, a constant or uniform
+/// level) and the textures give the level ([`fetch_view`]); an empty view
+/// (no texels) for the others. Native code reads these instead of asking
+/// `jit_texture` per batch, in runs with those textures.
+pub(crate) fn prepared_views(code: &Code, pool: &[Lanes], textures: &dyn Textures) -> Vec<View> {
+    let base = code.pool_base;
+    let in_pool = |r: crate::program::Reg| r >= base && ((r - base) as usize) < pool.len();
+    let regs = engine::Registers {
+        file: std::ptr::null_mut(),
+        base,
+        at: pool.as_ptr(),
+    };
+    code.prog
+        .textures
+        .iter()
+        .map(|t| {
+            let lod_ok = match t.lod {
+                TexLod::Explicit(Some(l)) => in_pool(l),
+                TexLod::Explicit(None) => true,
+                _ => false,
+            };
+            if t.kind != TexKind::Fetch || !in_pool(t.unit) || !lod_ok {
+                return View::default();
+            }
+            // SAFETY: the registers read (unit and level) are pool
+            // registers inside `pool`, read where they are.
+            let v = catch_unwind(AssertUnwindSafe(|| unsafe {
+                fetch_view(regs, t, crate::interp::FULL, textures)
+            }));
+            v.ok().flatten().unwrap_or_default()
+        })
+        .collect()
 }
 
 /// The functions of one float the native code calls (index = argument).

@@ -608,12 +608,49 @@ pub struct Kernel {
 }
 
 /// A kernel's uniform-only values, computed once for a set of uniform
-/// words ([`Kernel::prepare`]) and reused by [`Kernel::run_prepared`].
-#[derive(Clone, Debug)]
-pub struct Prepared {
-    code: std::sync::Arc<opt::Code>,
-    pool: Vec<[u32; LANES]>,
+/// words and textures ([`Kernel::prepare`]) and reused by
+/// [`Kernel::run_prepared`]; it borrows the textures (`'t`), whose levels
+/// native code may read through it.
+#[derive(Clone)]
+pub struct Prepared<'t> {
+    pub(crate) code: std::sync::Arc<opt::Code>,
+    pub(crate) pool: Vec<[u32; LANES]>,
     uniforms: Vec<u32>,
+    /// The textures it was made with (compared with a run's: the views
+    /// are theirs).
+    textures: *const (dyn Textures + 't),
+    /// Per texture op: the level a texel fetch of a uniform sampler and
+    /// level reads, for native code (no texels: ask at each run).
+    #[cfg(feature = "jit")]
+    pub(crate) views: Vec<jit::View>,
+    _textures: std::marker::PhantomData<&'t ()>,
+}
+
+impl std::fmt::Debug for Prepared<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Prepared")
+            .field("pool", &self.pool.len())
+            .field("uniforms", &self.uniforms.len())
+            .finish()
+    }
+}
+
+// SAFETY: the only non-Send/Sync parts are the textures' address (only
+// compared, never dereferenced) and the views' pointers into the
+// textures' levels, which stay valid and unchanged while `'t` borrows
+// them (`Textures::texel_level`'s contract) and are only read.
+unsafe impl Send for Prepared<'_> {}
+// SAFETY: as above.
+unsafe impl Sync for Prepared<'_> {}
+
+impl Prepared<'_> {
+    /// Whether `textures` is the object this was made with (then its
+    /// views describe it): the same address and type.
+    #[cfg(feature = "jit")]
+    pub(crate) fn made_with(&self, textures: &dyn Textures) -> bool {
+        #[allow(ambiguous_wide_pointer_comparisons)]
+        std::ptr::eq(self.textures, textures)
+    }
 }
 
 impl Kernel {
@@ -703,11 +740,16 @@ impl Kernel {
     /// of `textures` that `textureSize` asks of a uniform sampler), for
     /// [`Kernel::run_prepared`]: a renderer computes them once per draw,
     /// and runs them with the same textures.
-    pub fn prepare(&self, uniforms: &[u32], textures: &dyn Textures) -> Prepared {
+    pub fn prepare<'t>(&self, uniforms: &[u32], textures: &'t dyn Textures) -> Prepared<'t> {
+        let pool = engine::prepare(&self.code, uniforms, textures);
         Prepared {
             code: self.code.clone(),
-            pool: engine::prepare(&self.code, uniforms, textures),
+            #[cfg(feature = "jit")]
+            views: jit::prepared_views(&self.code, &pool, textures),
+            pool,
             uniforms: uniforms.to_vec(),
+            textures,
+            _textures: std::marker::PhantomData,
         }
     }
 
@@ -717,7 +759,7 @@ impl Kernel {
     pub fn run_prepared(
         &self,
         batch: &mut Batch,
-        prepared: &Prepared,
+        prepared: &Prepared<'_>,
         textures: &dyn Textures,
     ) -> Result<(), ExecError> {
         dispatch::run(
@@ -726,7 +768,7 @@ impl Kernel {
             batch,
             &prepared.uniforms,
             textures,
-            std::sync::Arc::ptr_eq(&self.code, &prepared.code).then_some(&prepared.pool[..]),
+            Some(prepared),
         )
     }
 

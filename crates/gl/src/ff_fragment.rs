@@ -591,7 +591,11 @@ impl raster::ShaderStage for FixedFragment<'_> {
         }
     }
 
-    fn prepare(&self, uniforms: &[u32], textures: &dyn exec::Textures) -> Option<exec::Prepared> {
+    fn prepare<'t>(
+        &self,
+        uniforms: &[u32],
+        textures: &'t dyn exec::Textures,
+    ) -> Option<exec::Prepared<'t>> {
         match self.plan {
             Some(_) => None,
             None => Some(self.kernel.prepare(uniforms, textures)),
@@ -601,7 +605,7 @@ impl raster::ShaderStage for FixedFragment<'_> {
     fn run_prepared(
         &self,
         batch: &mut Batch,
-        prepared: &exec::Prepared,
+        prepared: &exec::Prepared<'_>,
         uniforms: &[u32],
         textures: &dyn Textures,
     ) -> Result<(), ExecError> {

@@ -317,7 +317,11 @@ pub trait ShaderStage: Sync {
     /// (the draw's), computed once per draw for
     /// [`ShaderStage::run_prepared`] (`exec::Kernel::prepare`). `None`
     /// (the default): nothing to prepare.
-    fn prepare(&self, _uniforms: &[u32], _textures: &dyn ex::Textures) -> Option<ex::Prepared> {
+    fn prepare<'t>(
+        &self,
+        _uniforms: &[u32],
+        _textures: &'t dyn ex::Textures,
+    ) -> Option<ex::Prepared<'t>> {
         None
     }
 
@@ -326,7 +330,7 @@ pub trait ShaderStage: Sync {
     fn run_prepared(
         &self,
         batch: &mut ex::Batch,
-        _prepared: &ex::Prepared,
+        _prepared: &ex::Prepared<'_>,
         uniforms: &[u32],
         textures: &dyn ex::Textures,
     ) -> Result<(), ex::ExecError> {
@@ -428,13 +432,17 @@ impl ShaderStage for ex::Kernel {
     fn lanes_independent(&self) -> bool {
         ex::Kernel::lanes_independent(self)
     }
-    fn prepare(&self, uniforms: &[u32], textures: &dyn ex::Textures) -> Option<ex::Prepared> {
+    fn prepare<'t>(
+        &self,
+        uniforms: &[u32],
+        textures: &'t dyn ex::Textures,
+    ) -> Option<ex::Prepared<'t>> {
         Some(ex::Kernel::prepare(self, uniforms, textures))
     }
     fn run_prepared(
         &self,
         batch: &mut ex::Batch,
-        prepared: &ex::Prepared,
+        prepared: &ex::Prepared<'_>,
         _uniforms: &[u32],
         textures: &dyn ex::Textures,
     ) -> Result<(), ex::ExecError> {

@@ -252,8 +252,8 @@ pub(crate) struct FragmentStage<'a> {
     /// The debugger's pixel probe (`None` in normal draws).
     pub probe: Option<&'a Probe>,
     /// `shader`'s and `deferred`'s uniform-only values, once per draw.
-    prepared: Option<crate::ex::Prepared>,
-    deferred_prepared: Option<crate::ex::Prepared>,
+    prepared: Option<crate::ex::Prepared<'a>>,
+    deferred_prepared: Option<crate::ex::Prepared<'a>>,
     /// Whether `shader`'s and `deferred`'s lanes are independent
     /// ([`ShaderStage::lanes_independent`]), asked once per draw.
     lanes_independent: bool,

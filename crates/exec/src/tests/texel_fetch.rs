@@ -208,8 +208,8 @@ fn native_texel_fetches_are_the_textures_fetches() {
                 );
                 // With the pool (and its size queries) made once.
                 let mut got = base.clone();
-                let pool = Some(&prepared.pool[..]);
-                let r = crate::dispatch::run_on(v, &k, &k.code, &mut got, &u, &grid, pool);
+                let r =
+                    crate::dispatch::run_on(v, &k, &k.code, &mut got, &u, &grid, Some(&prepared));
                 assert_eq!(r, r0, "{} prepared", v.name());
                 assert_eq!(
                     bits_of(&got.outputs),

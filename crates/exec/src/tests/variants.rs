@@ -164,7 +164,7 @@ fn prepared_runs_compute_the_same_bytes() {
                     &mut got,
                     &prepared.uniforms,
                     &NoTextures,
-                    Some(&prepared.pool),
+                    Some(&prepared),
                 );
                 assert_eq!(r, r0, "shader {n} {}: result", v.name());
                 assert_eq!(got.discarded, want.discarded, "shader {n} {}", v.name());

@@ -1,6 +1,7 @@
 //! Texture ops: a call to `jit_texture` (which runs every lookup and size
 //! query with the engine's own code), and for a texel fetch whose lanes
-//! read one plain level (`jit::View`) the texels loaded here instead:
+//! read one plain level (`jit::View`: the draw's, prepared with the pool,
+//! or the one `jit_texture` found) the texels loaded here instead:
 //! per lane a bounds check, an index and a load, the texels transposed
 //! into the result registers. The values are `engine::texture`'s: the
 //! stored texel inside the level, (0, 0, 0, 1) outside it, 0 on lanes
@@ -11,7 +12,7 @@ use super::{mem, Emit, ONE, QUARTERS};
 use crate::program::{TexKind, TexOp};
 use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::types::{F32X4, I32, I32X4};
-use cranelift_codegen::ir::{InstBuilder, Value};
+use cranelift_codegen::ir::{Block, BlockArg, InstBuilder, Value};
 use glsl::types::SamplerResult;
 use std::mem::offset_of;
 
@@ -26,6 +27,43 @@ impl<'a, 'b> Emit<'a, 'b> {
             .ok_or("texture op out of range")?;
         // The callback reads and writes registers in memory.
         self.flush_all();
+        let fetch = t.kind == TexKind::Fetch;
+        let (native, call, join) = (
+            self.b.create_block(),
+            self.b.create_block(),
+            self.b.create_block(),
+        );
+        let view = self.b.append_block_param(native, self.ptr);
+        if fetch {
+            // The draw's view of this op, when the run has one.
+            let n = self
+                .b
+                .ins()
+                .load(I32, mem(), self.ctx, offset_of!(Ctx, views_len) as i32);
+            let has = self
+                .b
+                .ins()
+                .icmp_imm_u(IntCC::UnsignedGreaterThan, n, index as i64);
+            let check = self.b.create_block();
+            self.b.ins().brif(has, check, &[], call, &[]);
+            self.b.switch_to_block(check);
+            let all = self
+                .b
+                .ins()
+                .load(self.ptr, mem(), self.ctx, offset_of!(Ctx, views) as i32);
+            let at = self
+                .b
+                .ins()
+                .iadd_imm_s(all, index as i64 * std::mem::size_of::<View>() as i64);
+            let texels = self
+                .b
+                .ins()
+                .load(self.ptr, mem(), at, offset_of!(View, texels) as i32);
+            self.branch_to_view(texels, native, at, call);
+        } else {
+            self.b.ins().jump(call, &[]);
+        }
+        self.b.switch_to_block(call);
         let f = self
             .b
             .ins()
@@ -39,57 +77,68 @@ impl<'a, 'b> Emit<'a, 'b> {
             self.b.use_var(self.cur)
         };
         let ctx = self.ctx;
-        let call = self
+        let result = self
             .b
             .ins()
             .call_indirect(self.sig_texture, f, &[ctx, i, cur]);
-        if t.kind != TexKind::Fetch {
-            return Ok(());
+        if fetch {
+            let ok = self.b.inst_results(result)[0];
+            let own = self
+                .b
+                .ins()
+                .iadd_imm_s(self.ctx, offset_of!(Ctx, view) as i64);
+            self.branch_to_view(ok, native, own, join);
+        } else {
+            self.b.ins().jump(join, &[]);
         }
-        let ok = self.b.inst_results(call)[0];
-        let (native, rgba32, unorm8, join) = (
-            self.b.create_block(),
-            self.b.create_block(),
-            self.b.create_block(),
-            self.b.create_block(),
-        );
-        self.b.ins().brif(ok, native, &[], join, &[]);
         self.b.switch_to_block(native);
-        let format = self.view_word(offset_of!(View, format));
-        let is_unorm8 = self
-            .b
-            .ins()
-            .icmp_imm_u(IntCC::Equal, format, View::UNORM8 as i64);
-        self.b.ins().brif(is_unorm8, unorm8, &[], rgba32, &[]);
-        for (block, unorm) in [(rgba32, false), (unorm8, true)] {
-            self.b.switch_to_block(block);
-            self.fetch_texels(&t, unorm);
-            // Only loads were held: nothing to store, nothing valid at
-            // the join.
-            self.cache = Default::default();
+        if fetch {
+            let (rgba32, unorm8) = (self.b.create_block(), self.b.create_block());
+            let format = self.view_word(view, offset_of!(View, format));
+            let is_unorm8 = self
+                .b
+                .ins()
+                .icmp_imm_u(IntCC::Equal, format, View::UNORM8 as i64);
+            self.b.ins().brif(is_unorm8, unorm8, &[], rgba32, &[]);
+            for (block, unorm) in [(rgba32, false), (unorm8, true)] {
+                self.b.switch_to_block(block);
+                self.fetch_texels(&t, view, unorm);
+                // Only loads were held: nothing to store, nothing valid
+                // at the join.
+                self.cache = Default::default();
+                self.b.ins().jump(join, &[]);
+            }
+        } else {
+            // (Only fetches have views: never entered.)
             self.b.ins().jump(join, &[]);
         }
         self.b.switch_to_block(join);
         Ok(())
     }
 
-    /// The `i32` at `offset` in `Ctx::view`.
-    fn view_word(&mut self, offset: usize) -> Value {
-        let at = (offset_of!(Ctx, view) + offset) as i32;
-        self.b.ins().load(I32, mem(), self.ctx, at)
+    /// Branches to `native` with the view at `view` when `cond` is
+    /// nonzero, else to `other`.
+    fn branch_to_view(&mut self, cond: Value, native: Block, view: Value, other: Block) {
+        let arg = [BlockArg::from(view)];
+        self.b.ins().brif(cond, native, &arg, other, &[]);
     }
 
-    /// The texels of fetch `t` from `Ctx::view` (RGBA bytes when `unorm`,
-    /// else RGBA `f32` bits) into its result registers.
-    fn fetch_texels(&mut self, t: &TexOp, unorm: bool) {
-        let at = (offset_of!(Ctx, view) + offset_of!(View, texels)) as i32;
-        let base = self.b.ins().load(self.ptr, mem(), self.ctx, at);
+    /// The `i32` at `offset` in the view at `view`.
+    fn view_word(&mut self, view: Value, offset: usize) -> Value {
+        self.b.ins().load(I32, mem(), view, offset as i32)
+    }
+
+    /// The texels of fetch `t` from the view at `view` (RGBA bytes when
+    /// `unorm`, else RGBA `f32` bits) into its result registers.
+    fn fetch_texels(&mut self, t: &TexOp, view: Value, unorm: bool) {
+        let at = offset_of!(View, texels) as i32;
+        let base = self.b.ins().load(self.ptr, mem(), view, at);
         let size: [Value; 3] = std::array::from_fn(|a| {
-            let w = self.view_word(offset_of!(View, size) + 4 * a);
+            let w = self.view_word(view, offset_of!(View, size) + 4 * a);
             self.b.ins().splat(I32X4, w)
         });
         let keep: [Value; 3] = std::array::from_fn(|a| {
-            let w = self.view_word(offset_of!(View, keep) + 4 * a);
+            let w = self.view_word(view, offset_of!(View, keep) + 4 * a);
             self.b.ins().splat(I32X4, w)
         });
         let float = t.target.result() == SamplerResult::Float;
