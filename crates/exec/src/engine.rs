@@ -770,10 +770,7 @@ pub(crate) unsafe fn texture_size(
 ) {
     // SAFETY: the caller's contract, as in `texture`.
     let reg = |x: Reg| -> &Lanes { unsafe { regs.get(x) } };
-    let lod = match t.lod {
-        TexLod::Explicit(Some(l)) => Some(reg(l)),
-        _ => None,
-    };
+    let lod = t.level().map(reg);
     let unit = reg(t.unit);
     let on = |l: usize| cur & (1 << l) != 0;
     // The fourth register too, as the reference interpreter.
@@ -822,10 +819,7 @@ pub(crate) unsafe fn texture(
                 unit: *reg(t.unit),
                 target: t.target,
                 coord: [0, 1, 2].map(|k| ints(t.coord[k])),
-                lod: match t.lod {
-                    TexLod::Explicit(l) => level(l),
-                    _ => [0; LANES],
-                },
+                lod: level(t.level()),
                 mask: cur,
             };
             if let Some(o) = t.offset {

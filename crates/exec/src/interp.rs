@@ -440,10 +440,7 @@ fn floats(a: &[u32; LANES]) -> [f32; LANES] {
 
 fn texture(r: &mut Regs, t: &crate::program::TexOp, cur: LaneMask, textures: &dyn Textures) {
     let ints = |r: &Regs, x: u32| -> [i32; LANES] { r[x as usize].map(|b| b as i32) };
-    let lod_reg = match t.lod {
-        TexLod::Explicit(l) => l,
-        _ => None,
-    };
+    let lod_reg = t.level();
     let mut out = [[0f32; LANES]; 4];
     match t.kind {
         TexKind::Size => {

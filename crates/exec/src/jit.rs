@@ -71,7 +71,7 @@ use crate::engine::{self, Lanes};
 use crate::float_env;
 use crate::interp::FULL;
 use crate::opt::{Code, Ins};
-use crate::program::{TexKind, TexLod, F1, F2};
+use crate::program::{TexKind, F1, F2};
 use crate::{Batch, ExecError, Kernel, Textures};
 use std::any::Any;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -532,10 +532,7 @@ unsafe fn fetch_view(
     cur: u32,
     textures: &dyn Textures,
 ) -> Option<View> {
-    let lod = match t.lod {
-        TexLod::Explicit(Some(l)) => Some(regs.get(l)),
-        _ => None,
-    };
+    let lod = t.level().map(|l| regs.get(l));
     let (unit, lod) = engine::shared_pair(cur, regs.get(t.unit), lod)?;
     let level = textures.texel_level(unit, t.target, lod as i32)?;
     let count = level
@@ -575,12 +572,7 @@ pub(crate) fn prepared_views(code: &Code, pool: &[Lanes], textures: &dyn Texture
         .textures
         .iter()
         .map(|t| {
-            let lod_ok = match t.lod {
-                TexLod::Explicit(Some(l)) => in_pool(l),
-                TexLod::Explicit(None) => true,
-                _ => false,
-            };
-            if t.kind != TexKind::Fetch || !in_pool(t.unit) || !lod_ok {
+            if t.kind != TexKind::Fetch || !in_pool(t.unit) || !t.level().is_none_or(in_pool) {
                 return View::default();
             }
             // SAFETY: the registers read (unit and level) are pool

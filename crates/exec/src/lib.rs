@@ -623,7 +623,6 @@ pub struct Prepared<'t> {
     /// level reads, for native code (no texels: ask at each run).
     #[cfg(feature = "jit")]
     pub(crate) views: Vec<jit::View>,
-    _textures: std::marker::PhantomData<&'t ()>,
 }
 
 impl std::fmt::Debug for Prepared<'_> {
@@ -648,7 +647,6 @@ impl Prepared<'_> {
     /// views describe it): the same address and type.
     #[cfg(feature = "jit")]
     pub(crate) fn made_with(&self, textures: &dyn Textures) -> bool {
-        #[allow(ambiguous_wide_pointer_comparisons)]
         std::ptr::eq(self.textures, textures)
     }
 }
@@ -749,7 +747,6 @@ impl Kernel {
             pool,
             uniforms: uniforms.to_vec(),
             textures,
-            _textures: std::marker::PhantomData,
         }
     }
 

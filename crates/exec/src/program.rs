@@ -546,6 +546,15 @@ pub(crate) struct TexOp {
 }
 
 impl TexOp {
+    /// The register holding an explicit level (a fetch's or a size
+    /// query's; none: level 0, as for every other kind of level).
+    pub(crate) fn level(&self) -> Option<Reg> {
+        match self.lod {
+            TexLod::Explicit(l) => l,
+            _ => None,
+        }
+    }
+
     /// Replaces every register the op reads by `f` of it.
     pub(crate) fn map_reads(&mut self, mut f: impl FnMut(Reg) -> Reg) {
         self.unit = f(self.unit);

@@ -197,26 +197,23 @@ fn native_texel_fetches_are_the_textures_fetches() {
             assert_eq!(r0, Ok(()));
             let prepared = k.prepare(&u, &grid);
             for v in supported_variants() {
-                let mut got = base.clone();
-                let r = k.run_variant(v, &mut got, &u, &grid);
-                assert_eq!(r, r0, "{}", v.name());
-                assert_eq!(
-                    bits_of(&got.outputs),
-                    bits_of(&want.outputs),
-                    "{} level {level} round {round}",
-                    v.name()
-                );
-                // With the pool (and its size queries) made once.
-                let mut got = base.clone();
-                let r =
-                    crate::dispatch::run_on(v, &k, &k.code, &mut got, &u, &grid, Some(&prepared));
-                assert_eq!(r, r0, "{} prepared", v.name());
-                assert_eq!(
-                    bits_of(&got.outputs),
-                    bits_of(&want.outputs),
-                    "{} prepared, level {level} round {round}",
-                    v.name()
-                );
+                // Without and with the pool (its size queries and the
+                // fetches' levels) made once.
+                for prepared in [None, Some(&prepared)] {
+                    let mut got = base.clone();
+                    // (run_variant compiles the native code first.)
+                    let r = match prepared {
+                        None => k.run_variant(v, &mut got, &u, &grid),
+                        p => crate::dispatch::run_on(v, &k, &k.code, &mut got, &u, &grid, p),
+                    };
+                    let what = format!("{} prepared {}", v.name(), prepared.is_some());
+                    assert_eq!(r, r0, "{what}");
+                    assert_eq!(
+                        bits_of(&got.outputs),
+                        bits_of(&want.outputs),
+                        "{what}, level {level} round {round}"
+                    );
+                }
             }
         }
     }

@@ -27,43 +27,72 @@ impl<'a, 'b> Emit<'a, 'b> {
             .ok_or("texture op out of range")?;
         // The callback reads and writes registers in memory.
         self.flush_all();
-        let fetch = t.kind == TexKind::Fetch;
+        if t.kind != TexKind::Fetch {
+            self.call_texture(index);
+            return Ok(());
+        }
         let (native, call, join) = (
             self.b.create_block(),
             self.b.create_block(),
             self.b.create_block(),
         );
         let view = self.b.append_block_param(native, self.ptr);
-        if fetch {
-            // The draw's view of this op, when the run has one.
-            let n = self
-                .b
-                .ins()
-                .load(I32, mem(), self.ctx, offset_of!(Ctx, views_len) as i32);
-            let has = self
-                .b
-                .ins()
-                .icmp_imm_u(IntCC::UnsignedGreaterThan, n, index as i64);
-            let check = self.b.create_block();
-            self.b.ins().brif(has, check, &[], call, &[]);
-            self.b.switch_to_block(check);
-            let all = self
-                .b
-                .ins()
-                .load(self.ptr, mem(), self.ctx, offset_of!(Ctx, views) as i32);
-            let at = self
-                .b
-                .ins()
-                .iadd_imm_s(all, index as i64 * std::mem::size_of::<View>() as i64);
-            let texels = self
-                .b
-                .ins()
-                .load(self.ptr, mem(), at, offset_of!(View, texels) as i32);
-            self.branch_to_view(texels, native, at, call);
-        } else {
-            self.b.ins().jump(call, &[]);
-        }
+        // The draw's view of this op, when the run has one.
+        let n = self
+            .b
+            .ins()
+            .load(I32, mem(), self.ctx, offset_of!(Ctx, views_len) as i32);
+        let has = self
+            .b
+            .ins()
+            .icmp_imm_u(IntCC::UnsignedGreaterThan, n, index as i64);
+        let check = self.b.create_block();
+        self.b.ins().brif(has, check, &[], call, &[]);
+        self.b.switch_to_block(check);
+        let all = self
+            .b
+            .ins()
+            .load(self.ptr, mem(), self.ctx, offset_of!(Ctx, views) as i32);
+        let at = self
+            .b
+            .ins()
+            .iadd_imm_s(all, index as i64 * std::mem::size_of::<View>() as i64);
+        let texels = self
+            .b
+            .ins()
+            .load(self.ptr, mem(), at, offset_of!(View, texels) as i32);
+        self.branch_to_view(texels, native, at, call);
+        // Else the callback, which finds the level or runs the fetch.
         self.b.switch_to_block(call);
+        let ok = self.call_texture(index);
+        let own = self
+            .b
+            .ins()
+            .iadd_imm_s(self.ctx, offset_of!(Ctx, view) as i64);
+        self.branch_to_view(ok, native, own, join);
+        self.b.switch_to_block(native);
+        let (rgba32, unorm8) = (self.b.create_block(), self.b.create_block());
+        let format = self.view_word(view, offset_of!(View, format));
+        let is_unorm8 = self
+            .b
+            .ins()
+            .icmp_imm_u(IntCC::Equal, format, View::UNORM8 as i64);
+        self.b.ins().brif(is_unorm8, unorm8, &[], rgba32, &[]);
+        for (block, unorm) in [(rgba32, false), (unorm8, true)] {
+            self.b.switch_to_block(block);
+            self.fetch_texels(&t, view, unorm);
+            // Only loads were held: nothing to store, nothing valid at
+            // the join.
+            self.cache = Default::default();
+            self.b.ins().jump(join, &[]);
+        }
+        self.b.switch_to_block(join);
+        Ok(())
+    }
+
+    /// Calls `jit_texture` for texture op `index`; its result (1: a view
+    /// in `Ctx::view` for the native fetch).
+    fn call_texture(&mut self, index: u32) -> Value {
         let f = self
             .b
             .ins()
@@ -77,43 +106,11 @@ impl<'a, 'b> Emit<'a, 'b> {
             self.b.use_var(self.cur)
         };
         let ctx = self.ctx;
-        let result = self
+        let call = self
             .b
             .ins()
             .call_indirect(self.sig_texture, f, &[ctx, i, cur]);
-        if fetch {
-            let ok = self.b.inst_results(result)[0];
-            let own = self
-                .b
-                .ins()
-                .iadd_imm_s(self.ctx, offset_of!(Ctx, view) as i64);
-            self.branch_to_view(ok, native, own, join);
-        } else {
-            self.b.ins().jump(join, &[]);
-        }
-        self.b.switch_to_block(native);
-        if fetch {
-            let (rgba32, unorm8) = (self.b.create_block(), self.b.create_block());
-            let format = self.view_word(view, offset_of!(View, format));
-            let is_unorm8 = self
-                .b
-                .ins()
-                .icmp_imm_u(IntCC::Equal, format, View::UNORM8 as i64);
-            self.b.ins().brif(is_unorm8, unorm8, &[], rgba32, &[]);
-            for (block, unorm) in [(rgba32, false), (unorm8, true)] {
-                self.b.switch_to_block(block);
-                self.fetch_texels(&t, view, unorm);
-                // Only loads were held: nothing to store, nothing valid
-                // at the join.
-                self.cache = Default::default();
-                self.b.ins().jump(join, &[]);
-            }
-        } else {
-            // (Only fetches have views: never entered.)
-            self.b.ins().jump(join, &[]);
-        }
-        self.b.switch_to_block(join);
-        Ok(())
+        self.b.inst_results(call)[0]
     }
 
     /// Branches to `native` with the view at `view` when `cond` is
