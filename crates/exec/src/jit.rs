@@ -562,7 +562,8 @@ unsafe fn fetch_view(
 /// `jit_texture` per batch, in runs with those textures.
 pub(crate) fn prepared_views(code: &Code, pool: &[Lanes], textures: &dyn Textures) -> Vec<View> {
     let base = code.pool_base;
-    let in_pool = |r: crate::program::Reg| r >= base && ((r - base) as usize) < pool.len();
+    // (Inside the pool too: the reads below are unchecked.)
+    let inside = |r: crate::program::Reg| ((r - base) as usize) < pool.len();
     let regs = engine::Registers {
         file: std::ptr::null_mut(),
         base,
@@ -572,7 +573,9 @@ pub(crate) fn prepared_views(code: &Code, pool: &[Lanes], textures: &dyn Texture
         .textures
         .iter()
         .map(|t| {
-            if t.kind != TexKind::Fetch || !in_pool(t.unit) || !t.level().is_none_or(in_pool) {
+            let pooled =
+                t.unit_and_level_from(base) && inside(t.unit) && t.level().is_none_or(inside);
+            if t.kind != TexKind::Fetch || !pooled {
                 return View::default();
             }
             // SAFETY: the registers read (unit and level) are pool

@@ -555,6 +555,15 @@ impl TexOp {
         }
     }
 
+    /// Whether the unit and the explicit level (if any) are registers from
+    /// `base` on (the pool's: the same value on every lane for a whole
+    /// run).
+    pub(crate) fn unit_and_level_from(&self, base: Reg) -> bool {
+        matches!(self.lod, TexLod::Explicit(_))
+            && self.unit >= base
+            && self.level().is_none_or(|l| l >= base)
+    }
+
     /// Replaces every register the op reads by `f` of it.
     pub(crate) fn map_reads(&mut self, mut f: impl FnMut(Reg) -> Reg) {
         self.unit = f(self.unit);

@@ -28,7 +28,7 @@
 mod mask_flow;
 
 use crate::liveness::{analyze, effects};
-use crate::program::{leaders, pure, Op, Program, Reg, Role, TexKind, TexLod, TexOp};
+use crate::program::{leaders, pure, Op, Program, Reg, Role, TexKind};
 use std::collections::BTreeMap;
 
 /// One instruction of the rewritten program: the op and whether its
@@ -118,32 +118,6 @@ fn single_dest(p: &Program, op: &Op) -> Option<Reg> {
     }
 }
 
-/// Texture op `index` of `textures` when it is a size query whose unit and level
-/// registers hold pool values (`known`: the pool register holding each
-/// register's value, `u32::MAX` for none), with those read from the pool:
-/// the same value on every lane for the whole run.
-fn hoist_size(textures: &[TexOp], index: u32, known: &[u32], pool_base: Reg) -> Option<TexOp> {
-    let t = *textures.get(index as usize)?;
-    if t.kind != TexKind::Size {
-        return None;
-    }
-    let pooled = |r: Reg| {
-        if r >= pool_base {
-            return Some(r);
-        }
-        let k = *known.get(r as usize)?;
-        (k != u32::MAX && k >= pool_base).then_some(k)
-    };
-    let mut h = t;
-    h.unit = pooled(t.unit)?;
-    h.lod = match t.lod {
-        TexLod::Explicit(Some(l)) => TexLod::Explicit(Some(pooled(l)?)),
-        TexLod::Explicit(None) => TexLod::Explicit(None),
-        _ => return None,
-    };
-    Some(h)
-}
-
 fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
     let n = p.ops.len();
     let leader = leaders(&p.ops);
@@ -218,13 +192,15 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
             }
         }
         // A size query of a unit and level known for the whole run (a
-        // uniform sampler, a constant or uniform level): its four result
-        // registers computed by the prologue too, once per draw.
+        // uniform sampler, a constant or uniform level: read from the
+        // pool since the rewrite above): its four result registers
+        // computed by the prologue too, once per draw.
         let size = match *op {
-            Op::Texture { index } => hoist_size(&textures, index, &known, pool_base),
+            Op::Texture { index } => textures.get(index as usize).copied(),
             _ => None,
-        };
-        let size = size.filter(|_| textures.len() < u32::MAX as usize);
+        }
+        .filter(|t| t.kind == TexKind::Size && t.unit_and_level_from(pool_base))
+        .filter(|_| textures.len() < u32::MAX as usize);
         if let Some(mut t) = size {
             let d = t.d;
             t.d = next;
@@ -233,9 +209,6 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
                 index: textures.len() as u32,
             });
             textures.push(t);
-            if next > crate::program::MAX_REGISTERS {
-                return None;
-            }
             for k in 0..4 {
                 // Cleared below with the op's other definitions first.
                 size_known.push((d + k, t.d + k));
