@@ -65,14 +65,14 @@ impl<'a, 'b> Emit<'a, 'b> {
         let by_zero = self.b.ins().icmp(IntCC::Equal, y, zero);
         // Divisors 0 (and −1, signed) replaced by 1: finite quotients
         // inside the integer's range.
-        let bad = if signed {
+        let (replaced, by_minus_one) = if signed {
             let minus_one = self.splat(u32::MAX);
             let m1 = self.b.ins().icmp(IntCC::Equal, y, minus_one);
             (self.b.ins().bor(by_zero, m1), Some(m1))
         } else {
             (by_zero, None)
         };
-        let safe = self.b.ins().bitselect(bad.0, one, y);
+        let safe = self.b.ins().bitselect(replaced, one, y);
         let halves = [[0u8, 1, 0, 1], [2, 3, 2, 3]].map(|lanes| {
             let xs = self.lanes_of(x, lanes);
             let ys = self.lanes_of(safe, lanes);
@@ -81,7 +81,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             self.truncate_f64(qd, signed)
         });
         let mut q = self.lanes_of2(halves[0], halves[1], [0, 1, 4, 5]);
-        if let Some(m1) = bad.1 {
+        if let Some(m1) = by_minus_one {
             // The one quotient past i32::MAX (−2³¹ / −1) wraps.
             let neg = self.b.ins().ineg(x);
             q = self.b.ins().bitselect(m1, neg, q);
