@@ -6,8 +6,8 @@
 //! *in full flow* when its current mask holds every live lane, as at the
 //! top of `main`, and again after an `if` whose body discarded lanes. A
 //! store there leaves only dead lanes unwritten, so in a program where no
-//! lane reads another's registers (no derivatives, no texture lookups: the
-//! implicit level of detail reads the quad) it may write every lane: the
+//! lane reads another's registers (no derivatives, no texture lookups with
+//! an implicit level of detail, which reads the quad) it may write every lane: the
 //! values of dead lanes are never read, and outputs are not stored for
 //! discarded lanes (`engine::store_outputs`). A plain copy needs no blend
 //! with the old value, and the old value no zeroing at the start of a run
@@ -25,7 +25,7 @@
 //! the loops' back edges.
 
 use crate::liveness::effects;
-use crate::program::{Op, Program, Reg};
+use crate::program::{Op, Program, Reg, TexLod};
 
 /// What is known of a mask (the current one or a slot's).
 const PARTIAL: u8 = 0;
@@ -259,11 +259,18 @@ fn full_flow(p: &Program) -> Vec<bool> {
 }
 
 /// Whether some lane of `p` reads another lane's registers (derivatives,
-/// texture lookups).
+/// lookups with an implicit level of detail; fetches, size queries and
+/// lookups at an explicit level or with explicit gradients read their
+/// own lane only).
 fn reads_other_lanes(p: &Program) -> bool {
-    p.ops
-        .iter()
-        .any(|op| matches!(op, Op::DdX { .. } | Op::DdY { .. } | Op::Texture { .. }))
+    p.ops.iter().any(|op| match op {
+        Op::DdX { .. } | Op::DdY { .. } => true,
+        Op::Texture { index } => p
+            .textures
+            .get(*index as usize)
+            .is_none_or(|t| matches!(t.lod, TexLod::Implicit { .. })),
+        _ => false,
+    })
 }
 
 /// `ops` (the ops of `p`, being rewritten) with the stores that run in

@@ -166,6 +166,8 @@ fn rewrite(p: &Program, live_out: &[Reg]) -> Option<Code> {
                 prologue.push(Op::Uniform { d: r, word, float });
                 r
             })),
+            // A copy of a pool register is that register.
+            Op::Mov { a, .. } if is_pool(a) => Some(a),
             _ if pure(op) && all_pool => {
                 let r = next;
                 next += 1;
