@@ -37,7 +37,9 @@
 //! ## Same bits as the interpreter
 //! Arithmetic, comparisons, conversions (float→int saturating as Rust `as`
 //! does), integer division and remainder (through `f64`, as `lane::idiv`
-//! and its kin), selects, `min`/`max` with their NaN rule, `abs`, `sign`,
+//! and its kin; by a pool register, one value for the run, as a product
+//! with its reciprocal computed once, then corrected to the same
+//! quotient), selects, `min`/`max` with their NaN rule, `abs`, `sign`,
 //! `floor`/`ceil`/`fract`/`mod`, `sqrt`, `inversesqrt`, `step`, `clamp`,
 //! `mix`, `smoothstep` and dot products are emitted inline as the same IEEE
 //! operations in the same order, each result flushed as `engine::ftz` does

@@ -377,13 +377,20 @@ fn kernel_of(ins: Vec<Ins>, budget: u64, outputs: &[Reg]) -> Kernel {
     };
     prog.validate().expect("valid random program");
     let code = Code {
-        prog: prog.clone(),
+        prog,
         ins,
         prologue: Vec::new(),
         pool_base: REGS,
         zero: Vec::new(),
         live_out: outputs.to_vec(),
     };
+    kernel_of_code(code, budget, outputs)
+}
+
+/// The kernel running `code` ([`kernel_of`]'s interface: the first
+/// [`REGS`] registers are inputs, `outputs` outputs).
+fn kernel_of_code(code: Code, budget: u64, outputs: &[Reg]) -> Kernel {
+    let prog = code.prog.clone();
     let interface = Interface {
         input_components: REGS as usize,
         output_components: REGS as usize,
@@ -558,6 +565,38 @@ fn native_integer_division_is_the_lane_functions() {
     let mut k = kernel_of(ins, 0, &outs);
     // A vertex stage's integer outputs are their bits.
     k.stage = glsl::Stage::Vertex;
+    let pairs = division_pairs();
+    for chunk in pairs.chunks(LANES) {
+        let mut b = Batch::for_kernel(&k, 0xffff);
+        for (l, &(a, d)) in chunk.iter().enumerate() {
+            // Integer inputs are their bits.
+            b.inputs[x as usize][l] = f32::from_bits(a);
+            b.inputs[y as usize][l] = f32::from_bits(d);
+        }
+        k.run_variant(Variant::Jit, &mut b, &[0; 4], &NoTextures)
+            .unwrap();
+        assert!(matches!(k.native_code(), Some(Ok(_))));
+        for (l, &(a, d)) in chunk.iter().enumerate() {
+            let got = outs.map(|r| b.outputs[r as usize][l].to_bits());
+            assert_eq!(got, lane_divisions(a, d), "{a:#x} by {d:#x}");
+        }
+    }
+}
+
+/// What `IDiv`, `IMod`, `UDiv` and `UMod` give for `a` by `d`.
+fn lane_divisions(a: u32, d: u32) -> [u32; 4] {
+    [
+        crate::lane::idiv(a, d),
+        crate::lane::imod(a, d),
+        crate::lane::udiv(a, d),
+        crate::lane::umod(a, d),
+    ]
+}
+
+/// Every pair of the values where integer division can go wrong (zero
+/// and −1, the extremes, powers of two and their neighbours, and
+/// divisors of a product, whose quotients are whole numbers).
+fn division_pairs() -> Vec<(u32, u32)> {
     let mut special = vec![
         0u32,
         1,
@@ -577,29 +616,117 @@ fn native_integer_division_is_the_lane_functions() {
             0xffff_fffe,
         ]);
     }
-    let pairs: Vec<(u32, u32)> = special
+    // Whole quotients (of either sign) that a product with the divisor's
+    // reciprocal in f64 misses from the side of zero (found by search):
+    // one too small before the correction of `int_div_by`.
+    for (q, d) in [
+        (58_916u32, 32_471u32),
+        (2, 457_345_720),
+        (1, 1_649_162_598),
+        (1, 0xffed_9238),
+        (3, 715_827_882),
+    ] {
+        let x = q.wrapping_mul(d);
+        special.extend([d, d.wrapping_neg(), x, x.wrapping_neg()]);
+    }
+    special
         .iter()
         .flat_map(|&a| special.iter().map(move |&b| (a, b)))
-        .collect();
-    for chunk in pairs.chunks(LANES) {
-        let mut b = Batch::for_kernel(&k, 0xffff);
-        for (l, &(a, d)) in chunk.iter().enumerate() {
-            // Integer inputs are their bits.
-            b.inputs[x as usize][l] = f32::from_bits(a);
-            b.inputs[y as usize][l] = f32::from_bits(d);
-        }
-        k.run_variant(Variant::Jit, &mut b, &[0; 4], &NoTextures)
-            .unwrap();
-        assert!(matches!(k.native_code(), Some(Ok(_))));
-        for (l, &(a, d)) in chunk.iter().enumerate() {
-            let want = [
-                crate::lane::idiv(a, d),
-                crate::lane::imod(a, d),
-                crate::lane::udiv(a, d),
-                crate::lane::umod(a, d),
-            ];
-            let got = outs.map(|r| b.outputs[r as usize][l].to_bits());
-            assert_eq!(got, want, "{a:#x} by {d:#x}");
+        .collect()
+}
+
+/// The same with the divisor one value for the whole run (a uniform: in a
+/// pool register, divided through its reciprocal): with the prologue run
+/// by the native code and with a prepared pool.
+#[test]
+fn native_division_by_a_uniform_is_the_lane_functions() {
+    if !Variant::Jit.supported() {
+        return;
+    }
+    let (x, pool) = (FLOAT_REGS, REGS);
+    let outs = [
+        FLOAT_REGS + 2,
+        FLOAT_REGS + 3,
+        FLOAT_REGS + 4,
+        FLOAT_REGS + 5,
+    ];
+    let ops = [
+        Op::IDiv {
+            d: outs[0],
+            a: x,
+            b: pool,
+        },
+        Op::IMod {
+            d: outs[1],
+            a: x,
+            b: pool,
+        },
+        Op::UDiv {
+            d: outs[2],
+            a: x,
+            b: pool,
+        },
+        Op::UMod {
+            d: outs[3],
+            a: x,
+            b: pool,
+        },
+    ];
+    let prog = Program {
+        ops: ops.to_vec(),
+        registers: REGS + 1,
+        ..Program::default()
+    };
+    let code = Code {
+        prog,
+        ins: ops.iter().map(|&op| Ins { op, masked: false }).collect(),
+        prologue: vec![Op::Uniform {
+            d: pool,
+            word: 0,
+            float: false,
+        }],
+        pool_base: REGS,
+        zero: Vec::new(),
+        live_out: outs.to_vec(),
+    };
+    let mut k = kernel_of_code(code, 0, &outs);
+    k.stage = glsl::Stage::Vertex;
+    let pairs = division_pairs();
+    let mut divisors: Vec<u32> = pairs.iter().map(|p| p.1).collect();
+    divisors.sort_unstable();
+    divisors.dedup();
+    for d in divisors {
+        let uniforms = [d, 0, 0, 0];
+        let prepared = k.prepare(&uniforms, &NoTextures);
+        let dividends: Vec<u32> = pairs.iter().filter(|p| p.1 == d).map(|p| p.0).collect();
+        for chunk in dividends.chunks(LANES) {
+            for with_pool in [false, true] {
+                let mut b = Batch::for_kernel(&k, 0xffff);
+                for (l, &a) in chunk.iter().enumerate() {
+                    b.inputs[x as usize][l] = f32::from_bits(a);
+                }
+                k.jit.get(&k.code, true);
+                let prepared = with_pool.then_some(&prepared);
+                crate::dispatch::run_on(
+                    Variant::Jit,
+                    &k,
+                    &k.code,
+                    &mut b,
+                    &uniforms,
+                    &NoTextures,
+                    prepared,
+                )
+                .unwrap();
+                assert!(matches!(k.native_code(), Some(Ok(_))));
+                for (l, &a) in chunk.iter().enumerate() {
+                    let got = outs.map(|r| b.outputs[r as usize][l].to_bits());
+                    assert_eq!(
+                        got,
+                        lane_divisions(a, d),
+                        "{a:#x} by {d:#x} (pool {with_pool})"
+                    );
+                }
+            }
         }
     }
 }

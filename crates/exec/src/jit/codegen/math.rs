@@ -5,10 +5,18 @@
 //! interpreter (`engine::step`, `engine::f1`/`f2`).
 
 use super::{Emit, ONE, SIGN};
-use crate::program::{F1, F2, F3};
+use crate::program::{Reg, F1, F2, F3};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
-use cranelift_codegen::ir::types::{F64X2, I64X2};
+use cranelift_codegen::ir::types::{F64, F64X2, I32, I32X4, I64X2};
 use cranelift_codegen::ir::{ConstantData, InstBuilder, Value};
+
+/// A lane-uniform divisor's values for [`Emit::int_div_by`], computed
+/// once per run.
+#[derive(Clone, Copy)]
+pub(super) struct Divisor {
+    safe: Value,
+    recip: Value,
+}
 
 impl<'a, 'b> Emit<'a, 'b> {
     /// `engine::ftz` of an F32X4, as I32X4: a subnormal keeps only its
@@ -91,6 +99,79 @@ impl<'a, 'b> Emit<'a, 'b> {
         } else {
             let p = self.b.ins().imul(q, y);
             self.b.ins().isub(x, p)
+        };
+        self.b.ins().bitselect(by_zero, zero, v)
+    }
+
+    /// The per-run values of a lane-uniform divisor held in pool register
+    /// `r` (its lane 0, read once before the body: [`Emit::divisors`]):
+    /// the divisor with 0 (and −1, `signed`) replaced by 1 as I32X4, and
+    /// 1 over it in `f64` as F64X2.
+    pub(super) fn divisor(&mut self, r: Reg, signed: bool) -> Divisor {
+        let off = (r - self.code.pool_base) as i32 * 64;
+        let y = self.b.ins().load(I32, super::mem(), self.pool, off);
+        let one = self.b.ins().iconst(I32, 1);
+        let mut replaced = self.b.ins().icmp_imm_s(IntCC::Equal, y, 0);
+        if signed {
+            let m1 = self.b.ins().icmp_imm_s(IntCC::Equal, y, -1);
+            replaced = self.b.ins().bor(replaced, m1);
+        }
+        let safe = self.b.ins().select(replaced, one, y);
+        let yd = match signed {
+            true => self.b.ins().fcvt_from_sint(F64, safe),
+            false => self.b.ins().fcvt_from_uint(F64, safe),
+        };
+        let unit = self.b.ins().f64const(1.0);
+        let recip = self.b.ins().fdiv(unit, yd);
+        Divisor {
+            safe: self.b.ins().splat(I32X4, safe),
+            recip: self.b.ins().splat(F64X2, recip),
+        }
+    }
+
+    /// [`Self::int_div`] by a lane-uniform divisor `y` whose
+    /// [`Divisor`] is `by`: the quotient from a product with the
+    /// reciprocal instead of a division, then corrected. The product is
+    /// within 2⁻⁵² of the quotient relatively, so its truncation is the
+    /// truncated quotient except where the quotient is a whole number
+    /// that the product misses from the side of zero (one too close to
+    /// zero: the remainder is then ±y); the remainder tells, and the
+    /// step back is exact.
+    pub(super) fn int_div_by(&mut self, k: usize, x: Value, y: Value, by: Divisor) -> Value {
+        let signed = k < 2;
+        let zero = self.splat(0);
+        let by_zero = self.b.ins().icmp(IntCC::Equal, y, zero);
+        let halves = [[0u8, 1, 0, 1], [2, 3, 2, 3]].map(|lanes| {
+            let xs = self.lanes_of(x, lanes);
+            let xd = self.widen_f64(xs, signed);
+            let qd = self.b.ins().fmul(xd, by.recip);
+            self.truncate_f64(qd, signed)
+        });
+        let mut q = self.lanes_of2(halves[0], halves[1], [0, 1, 4, 5]);
+        let p = self.b.ins().imul(q, by.safe);
+        let mut rem = self.b.ins().isub(x, p);
+        // One short of a whole quotient: the remainder is y (−y when the
+        // quotient is negative).
+        let mut short = self.b.ins().icmp(IntCC::Equal, rem, by.safe);
+        q = self.b.ins().isub(q, short);
+        if signed {
+            let neg = self.b.ins().ineg(by.safe);
+            let over = self.b.ins().icmp(IntCC::Equal, rem, neg);
+            q = self.b.ins().iadd(q, over);
+            short = self.b.ins().bor(short, over);
+        }
+        rem = self.b.ins().bitselect(short, zero, rem);
+        let v = if k.is_multiple_of(2) {
+            if signed {
+                // Divisor −1 (run as 1): the quotient −x, wrapping.
+                let minus_one = self.splat(u32::MAX);
+                let m1 = self.b.ins().icmp(IntCC::Equal, y, minus_one);
+                let neg = self.b.ins().ineg(x);
+                q = self.b.ins().bitselect(m1, neg, q);
+            }
+            q
+        } else {
+            rem
         };
         self.b.ins().bitselect(by_zero, zero, v)
     }

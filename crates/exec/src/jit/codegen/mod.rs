@@ -153,6 +153,21 @@ fn define(
     Ok((id, bytes, consts))
 }
 
+/// The divisors of `code.ins`'s integer divisions that are pool registers
+/// (one value on every lane: computed from constants and uniforms), with
+/// whether the division is signed.
+fn pool_divisors(code: &Code) -> std::collections::BTreeSet<(Reg, bool)> {
+    code.ins
+        .iter()
+        .filter_map(|i| match i.op {
+            Op::IDiv { b, .. } | Op::IMod { b, .. } => Some((b, true)),
+            Op::UDiv { b, .. } | Op::UMod { b, .. } => Some((b, false)),
+            _ => None,
+        })
+        .filter(|&(b, _)| b >= code.pool_base && b < code.prog.registers)
+        .collect()
+}
+
 /// Whether an op of `code.ins` that native code runs through `jit_step`
 /// (or a gather, which addresses the file) reads a pool register.
 fn pool_in_file(code: &Code) -> bool {
@@ -255,6 +270,11 @@ struct Emit<'a, 'b> {
     daz: bool,
     /// Emitting the prologue, which computes for every lane.
     prologue: bool,
+    /// The integer divisors of the body held in pool registers (one
+    /// value on every lane), by register and signedness: their
+    /// [`math::Divisor`], computed once between the prologue and the
+    /// body (empty while the prologue is emitted).
+    divisors: std::collections::HashMap<(Reg, bool), math::Divisor>,
 }
 
 /// Data ops emitted inline whose lanes `4q..4q + 4` of the result depend
@@ -373,6 +393,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             full: false,
             daz: super::daz(),
             prologue: false,
+            divisors: Default::default(),
         };
         let base =
             e.b.ins()
@@ -469,7 +490,8 @@ impl<'a, 'b> Emit<'a, 'b> {
             .ins()
             .load(I32, mem(), self.ctx, offset_of!(Ctx, prologue) as i32);
         let pro = self.b.create_block();
-        self.b.ins().brif(flag, pro, &[], block(0)?, &[]);
+        let ready = self.b.create_block();
+        self.b.ins().brif(flag, pro, &[], ready, &[]);
         self.b.switch_to_block(pro);
         self.prologue = true;
         for (i, &op) in code.prologue.iter().enumerate() {
@@ -477,6 +499,14 @@ impl<'a, 'b> Emit<'a, 'b> {
         }
         self.prologue = false;
         self.flush_all();
+        self.b.ins().jump(ready, &[]);
+        // The pool is ready: what the body's divisions by pool registers
+        // need, once (this block dominates the body).
+        self.b.switch_to_block(ready);
+        for (r, signed) in pool_divisors(code) {
+            let d = self.divisor(r, signed);
+            self.divisors.insert((r, signed), d);
+        }
         self.b.ins().jump(block(0)?, &[]);
 
         let mut open = false;

@@ -400,7 +400,10 @@ impl<'a, 'b> Emit<'a, 'b> {
             ($d:expr, $a:expr, $b:expr, $k:expr) => {
                 each!($d, |q| {
                     let (x, y) = (self.ld($a, q), self.ld($b, q));
-                    self.int_div($k, x, y)
+                    match self.divisors.get(&($b, $k < 2)) {
+                        Some(&by) => self.int_div_by($k, x, y, by),
+                        None => self.int_div($k, x, y),
+                    }
                 })
             };
         }
