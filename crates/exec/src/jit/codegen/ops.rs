@@ -496,7 +496,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             }
             Op::DdX { d, a } => each!(d, |q| self.quad_diff(a, q, [1, 1, 3, 3], [0, 0, 2, 2])),
             Op::DdY { d, a } => each!(d, |q| self.quad_diff(a, q, [2, 3, 2, 3], [0, 1, 0, 1])),
-            Op::Texture { index } => self.texture(index)?,
+            Op::Texture { index: t } => self.texture(t, index)?,
             // Only hooked runs (the reference interpreter) print.
             Op::Printf { .. } => {}
             Op::Call { .. }

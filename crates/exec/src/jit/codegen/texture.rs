@@ -17,8 +17,9 @@ use glsl::types::SamplerResult;
 use std::mem::offset_of;
 
 impl<'a, 'b> Emit<'a, 'b> {
-    /// Texture op `index` of the program.
-    pub(super) fn texture(&mut self, index: u32) -> Result<(), String> {
+    /// Texture op `index` of the program, run by op `op` of the body (or
+    /// the prologue: `PROLOGUE_OP` set).
+    pub(super) fn texture(&mut self, index: u32, op: u32) -> Result<(), String> {
         let t = *self
             .code
             .prog
@@ -80,7 +81,7 @@ impl<'a, 'b> Emit<'a, 'b> {
         self.b.ins().brif(is_unorm8, unorm8, &[], rgba32, &[]);
         for (block, unorm) in [(rgba32, false), (unorm8, true)] {
             self.b.switch_to_block(block);
-            self.fetch_texels(&t, view, unorm);
+            self.fetch_texels(&t, view, unorm, op);
             // Only loads were held: nothing to store, nothing valid at
             // the join.
             self.cache = Default::default();
@@ -125,9 +126,10 @@ impl<'a, 'b> Emit<'a, 'b> {
         self.b.ins().load(I32, mem(), view, offset as i32)
     }
 
-    /// The texels of fetch `t` from the view at `view` (RGBA bytes when
-    /// `unorm`, else RGBA `f32` bits) into its result registers.
-    fn fetch_texels(&mut self, t: &TexOp, view: Value, unorm: bool) {
+    /// The texels of fetch `t` (run by op `op`) from the view at `view`
+    /// (RGBA bytes when `unorm`, else RGBA `f32` bits) into those of its
+    /// result registers read afterwards.
+    fn fetch_texels(&mut self, t: &TexOp, view: Value, unorm: bool, op: u32) {
         let at = offset_of!(View, texels) as i32;
         let base = self.b.ins().load(self.ptr, mem(), view, at);
         let size: [Value; 3] = std::array::from_fn(|a| {
@@ -169,6 +171,10 @@ impl<'a, 'b> Emit<'a, 'b> {
             };
             let running = self.b.use_var(self.mk[q]);
             for (k, v) in texel.into_iter().enumerate() {
+                let d = t.d + k as u32;
+                if !self.live_after(op as usize, d) {
+                    continue;
+                }
                 let v = if float {
                     let x = self.fv(v);
                     self.flushed(x)
@@ -178,7 +184,6 @@ impl<'a, 'b> Emit<'a, 'b> {
                 let missing = self.splat(if k == 3 { ONE } else { 0 });
                 let missing = self.b.ins().band(running, missing);
                 let v = self.b.ins().bitselect(inside, v, missing);
-                let d = t.d + k as u32;
                 self.b.ins().store(mem(), v, self.regs, Self::offset(d, q));
             }
         }
