@@ -283,7 +283,7 @@ impl<'a> FragmentStage<'a> {
             in_place.count = count;
             in_place.prim = fits.then_some(me);
         }
-        self.strip_pixel_inputs(batch, prim, slots, (&x, &y));
+        self.strip_pixel_inputs(batch, prim, slots, (qx, qy), (&x, &y));
         self.run_shader(batch)?;
         // Every pixel passing (no depth test: the write does not test
         // one), none discarded: the strip's two rows at once.
@@ -301,28 +301,37 @@ impl<'a> FragmentStage<'a> {
         Ok(())
     }
 
-    /// gl_FragCoord and gl_FrontFacing of a strip's lanes, as
-    /// [`FragmentStage::fill`] gives them to a quad's (with gl_FragCoord
-    /// the strip's entries hold its quads' window depths: reading it
-    /// makes `window_z` true).
+    /// gl_FragCoord and gl_FrontFacing of the lanes of the strip at
+    /// `(qx, qy)`, as [`FragmentStage::fill`] gives them to a quad's (with
+    /// gl_FragCoord the strip's entries hold its quads' window depths:
+    /// reading it makes `window_z` true).
     #[inline(always)]
     fn strip_pixel_inputs(
         &self,
         batch: &mut Batch,
         prim: &Prim,
         slots: &[Entry; LANES / 4],
+        (qx, qy): (i64, i64),
         (x, y): (&[f32; LANES], &[f32; LANES]),
     ) {
-        if let Some(o) = self.layout.frag_coord {
-            let inv_w = prim.planes.inv_w_at(x, y);
-            for (l, &w) in inv_w.iter().enumerate() {
-                let q = &slots[l / 4].quad;
-                let (px, py) = q.pixel(l & 3);
-                super::set(batch, o, l, px as f32 + 0.5);
-                super::set(batch, o + 1, l, py as f32 + 0.5);
-                super::set(batch, o + 2, l, q.z[l & 3] as f32);
-                super::set(batch, o + 3, l, w);
+        if let Some([fx, fy, fz, fw]) = self
+            .layout
+            .frag_coord
+            .and_then(|o| batch.inputs.get_mut(o..o + 4))
+        {
+            // The pixels' centres: the strip's first plus whole offsets
+            // (exact in f32 inside any window).
+            let (cx, cy) = (qx as f32 + 0.5, qy as f32 + 0.5);
+            for l in 0..LANES {
+                fx[l] = cx + STRIP_X[l];
+                fy[l] = cy + STRIP_Y[l];
             }
+            for (q, e) in slots.iter().enumerate() {
+                for k in 0..4 {
+                    fz[4 * q + k] = e.quad.z[k] as f32;
+                }
+            }
+            *fw = prim.planes.inv_w_at(x, y);
         }
         if let Some(o) = self.layout.front_facing {
             let facing = if prim.back { 0.0 } else { 1.0 };
