@@ -172,10 +172,28 @@ impl DepthFormat {
     /// [`DepthFormat::to_fixed`] of four depths (`z[k] as f32`).
     #[inline(always)]
     pub fn to_fixed4(self, z: [f64; 4]) -> [u32; 4] {
+        self.to_fixed4_f32([z[0] as f32, z[1] as f32, z[2] as f32, z[3] as f32])
+    }
+
+    /// [`DepthFormat::to_fixed`] of four depths; the format chosen once
+    /// and the four conversions inlined (a closure per element through
+    /// `array::map` stays a call in the hot loops).
+    #[inline(always)]
+    pub fn to_fixed4_f32(self, z: [f32; 4]) -> [u32; 4] {
+        let mut out = [0; 4];
         match self {
-            DepthFormat::Bits24 => z.map(|z| depth_to_fixed(z as f32)),
-            DepthFormat::Bits16 => z.map(|z| depth16_to_fixed(z as f32)),
+            DepthFormat::Bits24 => {
+                for (o, z) in out.iter_mut().zip(z) {
+                    *o = depth_to_fixed(z);
+                }
+            }
+            DepthFormat::Bits16 => {
+                for (o, z) in out.iter_mut().zip(z) {
+                    *o = depth16_to_fixed(z);
+                }
+            }
         }
+        out
     }
 }
 

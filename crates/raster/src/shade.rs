@@ -525,7 +525,7 @@ impl<'a> FragmentStage<'a> {
                 // fixed-point depths known (and z needed only when the
                 // quad's lanes are tested one by one).
                 let zf = match self.layout.frag_depth {
-                    Some(_) => z().map(|z| self.depth_format.to_fixed(z)),
+                    Some(_) => self.depth_format.to_fixed4_f32(z()),
                     None => quad.zf,
                 };
                 let (pass, index, inside) = target.test_quad_with((quad.x, quad.y), lanes, z, zf);

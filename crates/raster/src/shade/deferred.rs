@@ -152,7 +152,7 @@ impl<'a> FragmentStage<'a> {
                     }
                     let quad = &e.quad;
                     let zf = match self.layout.frag_depth {
-                        Some(_) => z.map(|z| self.depth_format.to_fixed(z)),
+                        Some(_) => self.depth_format.to_fixed4_f32(z),
                         None => quad.zf,
                     };
                     let (pass, index, _) = target.test_quad((quad.x, quad.y), alive, z, zf);
