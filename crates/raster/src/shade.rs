@@ -712,6 +712,9 @@ impl<'a> FragmentStage<'a> {
             || layout.front_facing.is_some()
             || layout.point_coord.is_some()
             || layout.primitive_id.is_some();
+        if let Some((strip, prim)) = self.as_strip(pending, &place) {
+            return self.write_strip_inputs(batch, strip, prim, plan);
+        }
         for (q, e) in pending.iter().enumerate() {
             let (Some(prim), quad) = (e.prim, &e.quad) else {
                 continue;
@@ -773,6 +776,107 @@ impl<'a> FragmentStage<'a> {
                     let id = self.state.primitive_ids.of(prim.source);
                     set(batch, o, lane, f32::from_bits(id));
                 }
+            }
+        }
+    }
+
+    /// `pending` as a strip: four quads of one triangle side by side
+    /// (at `x`, `x + 2`, `x + 4`, `x + 6` of one row), each placed in
+    /// its four lanes in pixel order, with no input but those a strip
+    /// gives (no gl_PointCoord or gl_PrimitiveID); their lanes are then
+    /// those of [`FragmentStage::shade_strip`].
+    #[inline(always)]
+    fn as_strip<'e, 'p>(
+        &self,
+        pending: &'e [Entry<'p>],
+        place: &impl Fn(usize, &Entry) -> Place,
+    ) -> Option<(&'e [Entry<'p>; LANES / 4], &'p Prim)> {
+        let strip: &[Entry; LANES / 4] = pending.try_into().ok()?;
+        let prim = strip[0].prim?;
+        if self.layout.point_coord.is_some()
+            || self.layout.primitive_id.is_some()
+            || !matches!(prim.shape, Shape::Triangle { .. })
+        {
+            return None;
+        }
+        let (x0, y0) = (strip[0].quad.x, strip[0].quad.y);
+        for (q, e) in strip.iter().enumerate() {
+            let p = place(q, e);
+            let same = e.prim.is_some_and(|p| std::ptr::eq(p, prim));
+            if !same
+                || (e.quad.x, e.quad.y) != (x0 + 2 * q as i64, y0)
+                || p.order != [0, 1, 2, 3]
+                || p.count != 4
+                || p.first != 4 * q
+            {
+                return None;
+            }
+        }
+        Some((strip, prim))
+    }
+
+    /// [`FragmentStage::write_inputs`] of a strip ([`FragmentStage::as_strip`]):
+    /// each varying over the 16 lanes at once (the same operations per
+    /// lane, so the same bits), then gl_FragCoord and gl_FrontFacing.
+    #[inline(always)]
+    fn write_strip_inputs(
+        &self,
+        batch: &mut Batch,
+        strip: &[Entry; LANES / 4],
+        prim: &Prim,
+        plan: &[FillLink],
+    ) {
+        let at = (strip[0].quad.x, strip[0].quad.y);
+        let (x, y) = prim.offsets(at, &STRIP_X, &STRIP_Y);
+        let rw = prim.planes.reciprocal_w(&x, &y);
+        let varyings = self.prim_attrs(prim);
+        for l in plan {
+            if let Some(lanes) = batch.inputs.get_mut(l.offset) {
+                *lanes = match varyings.get(l.li) {
+                    Some(p) => p.values(&x, &y, &rw),
+                    None => [0.0; LANES],
+                };
+            }
+        }
+        self.strip_pixel_inputs(batch, prim, strip, at, (&x, &y));
+    }
+
+    /// gl_FragCoord and gl_FrontFacing of the lanes of the strip at
+    /// `(qx, qy)`, as [`FragmentStage::fill`] gives them to a quad's (with
+    /// gl_FragCoord the strip's entries hold its quads' window depths:
+    /// reading it makes `window_z` true).
+    #[inline(always)]
+    fn strip_pixel_inputs(
+        &self,
+        batch: &mut Batch,
+        prim: &Prim,
+        slots: &[Entry; LANES / 4],
+        (qx, qy): (i64, i64),
+        (x, y): (&[f32; LANES], &[f32; LANES]),
+    ) {
+        if let Some([fx, fy, fz, fw]) = self
+            .layout
+            .frag_coord
+            .and_then(|o| batch.inputs.get_mut(o..o + 4))
+        {
+            // The pixels' centres: the strip's first plus whole offsets
+            // (exact in f32 inside any window).
+            let (cx, cy) = (qx as f32 + 0.5, qy as f32 + 0.5);
+            for l in 0..LANES {
+                fx[l] = cx + STRIP_X[l];
+                fy[l] = cy + STRIP_Y[l];
+            }
+            for (q, e) in slots.iter().enumerate() {
+                for k in 0..4 {
+                    fz[4 * q + k] = e.quad.z[k] as f32;
+                }
+            }
+            *fw = prim.planes.inv_w_at(x, y);
+        }
+        if let Some(o) = self.layout.front_facing {
+            let facing = if prim.back { 0.0 } else { 1.0 };
+            for l in 0..LANES {
+                set(batch, o, l, facing);
             }
         }
     }

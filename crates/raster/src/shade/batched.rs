@@ -301,46 +301,6 @@ impl<'a> FragmentStage<'a> {
         Ok(())
     }
 
-    /// gl_FragCoord and gl_FrontFacing of the lanes of the strip at
-    /// `(qx, qy)`, as [`FragmentStage::fill`] gives them to a quad's (with
-    /// gl_FragCoord the strip's entries hold its quads' window depths:
-    /// reading it makes `window_z` true).
-    #[inline(always)]
-    fn strip_pixel_inputs(
-        &self,
-        batch: &mut Batch,
-        prim: &Prim,
-        slots: &[Entry; LANES / 4],
-        (qx, qy): (i64, i64),
-        (x, y): (&[f32; LANES], &[f32; LANES]),
-    ) {
-        if let Some([fx, fy, fz, fw]) = self
-            .layout
-            .frag_coord
-            .and_then(|o| batch.inputs.get_mut(o..o + 4))
-        {
-            // The pixels' centres: the strip's first plus whole offsets
-            // (exact in f32 inside any window).
-            let (cx, cy) = (qx as f32 + 0.5, qy as f32 + 0.5);
-            for l in 0..LANES {
-                fx[l] = cx + STRIP_X[l];
-                fy[l] = cy + STRIP_Y[l];
-            }
-            for (q, e) in slots.iter().enumerate() {
-                for k in 0..4 {
-                    fz[4 * q + k] = e.quad.z[k] as f32;
-                }
-            }
-            *fw = prim.planes.inv_w_at(x, y);
-        }
-        if let Some(o) = self.layout.front_facing {
-            let facing = if prim.back { 0.0 } else { 1.0 };
-            for l in 0..LANES {
-                super::set(batch, o, l, facing);
-            }
-        }
-    }
-
     /// The entries of a strip's four quads (see
     /// [`FragmentStage::shade_strip`]): position, coverage and, with
     /// window z, the quads' depths and the early depth test; returns the
