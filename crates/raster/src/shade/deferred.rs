@@ -343,27 +343,59 @@ impl<'a> FragmentStage<'a> {
                     false => &mut slots[..],
                 };
                 let mut lanes = 0;
+                // A strip's four quads, run as a batch of their own.
+                let mut strip: [Entry<'p>; LANES / 4] = Default::default();
                 for (i, &p) in bin.iter().enumerate() {
                     let Some(&prim) = prims.get(p as usize) else {
                         continue;
                     };
                     self.prefetch_ahead(prims, bin, i, pass.run_slice);
-                    prim.shape.quads_into(clip_to(prim, tile), quads);
+                    // Strips (four whole quads side by side) only where a
+                    // row can hold one besides its edges.
+                    let clip = clip_to(prim, tile);
+                    let wide = clip.2 - clip.0 >= 16;
+                    prim.shape
+                        .quads_into_strips(clip, quads, pass.run_slice && wide);
                     for &quad in quads.iter() {
-                        let Some(e) = pending.get_mut(*n) else { break };
-                        e.set(prim, p, quad, 0, self.window_z.then_some(self.depth_format));
-                        if early {
-                            self.early_rejects(fb, origin, prim, &mut e.quad);
-                            if e.quad.live == 0 {
-                                continue;
+                        // Fragments of one primitive cover distinct pixels:
+                        // a strip runs at once when only quads of its
+                        // primitive wait (else as four quads, in order).
+                        if quad.2 & STRIP != 0 && (*n == 0 || pending[0].index == p) {
+                            let (qx, qy, _) = quad;
+                            let mut live = 0;
+                            for (q, e) in strip.iter_mut().enumerate() {
+                                let at = (qx + 2 * q as i64, qy, 0xf);
+                                e.set(prim, p, at, 0, self.window_z.then_some(self.depth_format));
+                                if early {
+                                    self.early_rejects(fb, origin, prim, &mut e.quad);
+                                }
+                                e.write = e.quad.live;
+                                live |= e.quad.live;
                             }
+                            if live != 0 {
+                                self.depth_pass(&pass, fb, batch, &mut winner, &strip)?;
+                            }
+                            continue;
                         }
-                        e.write = e.quad.live;
-                        let write = e.write;
-                        if let Some((count, spill)) = admit(pack_depth, n, &mut lanes, write) {
-                            self.depth_pass(&pass, fb, batch, &mut winner, &pending[..count])?;
-                            if spill {
-                                pending.swap(0, count);
+                        let (qx, qy, mask) = quad;
+                        let count = if mask & STRIP != 0 { LANES / 4 } else { 1 };
+                        for q in 0..count {
+                            let quad = (qx + 2 * q as i64, qy, mask & 0xf);
+                            let Some(e) = pending.get_mut(*n) else { break };
+                            e.set(prim, p, quad, 0, self.window_z.then_some(self.depth_format));
+                            if early {
+                                self.early_rejects(fb, origin, prim, &mut e.quad);
+                                if e.quad.live == 0 {
+                                    continue;
+                                }
+                            }
+                            e.write = e.quad.live;
+                            let write = e.write;
+                            if let Some((count, spill)) = admit(pack_depth, n, &mut lanes, write) {
+                                self.depth_pass(&pass, fb, batch, &mut winner, &pending[..count])?;
+                                if spill {
+                                    pending.swap(0, count);
+                                }
                             }
                         }
                     }
