@@ -726,8 +726,10 @@ impl<'a> FragmentStage<'a> {
             } = place(q, e);
             // The pixels of `order`, in that order.
             let planes = &prim.planes;
-            let ox = order.map(|k| QUAD_X[k as usize & 3]);
-            let oy = order.map(|k| QUAD_Y[k as usize & 3]);
+            // QUAD_X and QUAD_Y of the pixels, computed (a table lookup
+            // per element becomes a slow gather instruction).
+            let ox = order.map(|k| (k & 1) as f32);
+            let oy = order.map(|k| ((k >> 1) & 1) as f32);
             let (x, y) = prim.offsets((quad.x, quad.y), &ox, &oy);
             let rw = planes.reciprocal_w(&x, &y);
             let varyings = self.prim_attrs(prim);
@@ -756,7 +758,13 @@ impl<'a> FragmentStage<'a> {
                 _ => [(0.0, 0.0); 4],
             };
             let inv_w = planes.inv_w_at(&x, &y);
-            for (i, (lane, k)) in (first..LANES).zip(order).enumerate().take(count) {
+            // (An index loop: the zipped iterator's state went through
+            // memory with a store-forwarding stall.)
+            for (i, &k) in order.iter().enumerate().take(count) {
+                let lane = first + i;
+                if lane >= LANES {
+                    break;
+                }
                 let k = k as usize & 3;
                 let (px, py) = quad.pixel(k);
                 if let Some(o) = layout.frag_coord {
