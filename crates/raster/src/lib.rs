@@ -62,16 +62,19 @@
 //! its varyings only when its batch is filled; a batch's quads are built in place in four per-tile slots, and
 //! the varyings and set-up of primitives a few ahead in the tile's bin
 //! (and the pointers to those further ahead) are prefetched while one is
-//! rasterized. When nothing reads a quad's 1/w or pixel position, four
-//! whole quads side by side of one triangle (a *strip*) make a batch
-//! without per-quad entries (the coverage walk lists a strip as one
-//! entry and steps over its quads at once, `Shape::quads_into_strips`;
-//! quads waiting for a batch are shaded before it): their window z and inputs are evaluated
-//! from the planes over the 16 lanes at once (each quad's bits), the
-//! early depth test drops pixels as for single quads; with AVX-512 and no depth
-//! test, the strip's colour write (opaque or SRC_ALPHA /
-//! ONE_MINUS_SRC_ALPHA) covers its two rows of eight pixels at once with
-//! the per-pixel write's operations.
+//! rasterized. When no input is per pixel beyond gl_FragCoord and
+//! gl_FrontFacing, four whole quads side by side of one triangle (a
+//! *strip*) make a batch without per-quad entries (the coverage walk lists
+//! a strip as one entry and steps over its quads at once,
+//! `Shape::quads_into_strips`; quads waiting for a batch are shaded
+//! before it): their window z and inputs are evaluated from the planes
+//! over the 16 lanes at once (each quad's bits), the early depth test
+//! drops pixels as for single quads; with AVX-512 and no depth test, the
+//! strip's colour write (opaque or SRC_ALPHA / ONE_MINUS_SRC_ALPHA) covers
+//! its two rows of eight pixels at once with the per-pixel write's
+//! operations. Any batch of four quads that form a strip fills its inputs
+//! the same way, and the deferred depth pass runs a wide triangle's
+//! strips as batches of their own.
 //!
 //! Filling a batch's inputs and a quad's interpolation are compiled for
 //! every CPU level (`exec::cpu::Level`: baseline, AVX2, AVX-512, by
