@@ -192,6 +192,27 @@ impl<'a> FragmentStage<'a> {
         Ok(())
     }
 
+    /// Makes `e` the quad `quad` of primitive `p` (`prim`) for the depth
+    /// pass, with the pixels the early depth test leaves (with `early`)
+    /// to run and to write; returns those.
+    #[inline(always)]
+    fn depth_entry<'p>(
+        &self,
+        e: &mut Entry<'p>,
+        (prim, p): (&'p Prim, u32),
+        quad: (i64, i64, u8),
+        early: bool,
+        fb: &Framebuffer,
+        origin: (u32, u32),
+    ) -> u8 {
+        e.set(prim, p, quad, 0, self.window_z.then_some(self.depth_format));
+        if early {
+            self.early_rejects(fb, origin, prim, &mut e.quad);
+        }
+        e.write = e.quad.live;
+        e.write
+    }
+
     /// The colour pass of [`FragmentStage::shade_deferred`] on the quads
     /// `todo`: the full shader, then the colours of the pixels each quad
     /// won (`Entry::write`).
@@ -360,37 +381,28 @@ impl<'a> FragmentStage<'a> {
                         // Fragments of one primitive cover distinct pixels:
                         // a strip runs at once when only quads of its
                         // primitive wait (else as four quads, in order).
-                        if quad.2 & STRIP != 0 && (*n == 0 || pending[0].index == p) {
-                            let (qx, qy, _) = quad;
+                        let (qx, qy, mask) = quad;
+                        // The entry's quads: a strip's four or the one.
+                        let quads_here = if mask & STRIP != 0 { LANES / 4 } else { 1 };
+                        let quad_at = |q: usize| (qx + 2 * q as i64, qy, mask & 0xf);
+                        if quads_here > 1 && (*n == 0 || pending[0].index == p) {
                             let mut live = 0;
                             for (q, e) in strip.iter_mut().enumerate() {
-                                let at = (qx + 2 * q as i64, qy, 0xf);
-                                e.set(prim, p, at, 0, self.window_z.then_some(self.depth_format));
-                                if early {
-                                    self.early_rejects(fb, origin, prim, &mut e.quad);
-                                }
-                                e.write = e.quad.live;
-                                live |= e.quad.live;
+                                live |=
+                                    self.depth_entry(e, (prim, p), quad_at(q), early, fb, origin);
                             }
                             if live != 0 {
                                 self.depth_pass(&pass, fb, batch, &mut winner, &strip)?;
                             }
                             continue;
                         }
-                        let (qx, qy, mask) = quad;
-                        let count = if mask & STRIP != 0 { LANES / 4 } else { 1 };
-                        for q in 0..count {
-                            let quad = (qx + 2 * q as i64, qy, mask & 0xf);
+                        for q in 0..quads_here {
                             let Some(e) = pending.get_mut(*n) else { break };
-                            e.set(prim, p, quad, 0, self.window_z.then_some(self.depth_format));
-                            if early {
-                                self.early_rejects(fb, origin, prim, &mut e.quad);
-                                if e.quad.live == 0 {
-                                    continue;
-                                }
+                            let write =
+                                self.depth_entry(e, (prim, p), quad_at(q), early, fb, origin);
+                            if early && write == 0 {
+                                continue;
                             }
-                            e.write = e.quad.live;
-                            let write = e.write;
                             if let Some((count, spill)) = admit(pack_depth, n, &mut lanes, write) {
                                 self.depth_pass(&pass, fb, batch, &mut winner, &pending[..count])?;
                                 if spill {
