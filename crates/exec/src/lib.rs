@@ -991,6 +991,15 @@ impl Kernel {
                     .any(|op| matches!(op, Op::DdX { .. } | Op::DdY { .. })))
     }
 
+    /// Whether every run returns `Ok`: the program has no loop, so no
+    /// run can exceed the loop budget ([`ExecError::LoopBudget`], the
+    /// only error a compiled kernel's run gives). A renderer may then
+    /// write its results in place without keeping what it overwrites.
+    pub fn always_completes(&self) -> bool {
+        use program::Op;
+        !self.program.ops.iter().any(|op| matches!(op, Op::LoopIter))
+    }
+
     /// Number of instructions (a size measure).
     pub fn op_count(&self) -> usize {
         self.program.ops.len()

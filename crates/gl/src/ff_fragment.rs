@@ -624,6 +624,10 @@ impl raster::ShaderStage for FixedFragment<'_> {
         raster::ShaderStage::does_nothing(self.kernel)
     }
 
+    fn always_completes(&self) -> bool {
+        self.kernel.always_completes()
+    }
+
     fn writes_every_output(&self) -> bool {
         // The plan stores gl_FragColor on every active lane and discards
         // nothing: every output when it is the only one.

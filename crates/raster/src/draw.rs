@@ -17,17 +17,18 @@ use std::sync::Mutex;
 use crate::assembly::{primitive_count, Mode};
 use crate::binning::{Bins, ChunkBins, TileGrid, TILE};
 use crate::ex::{ExecError, Textures};
-use crate::framebuffer::{Band, Framebuffer};
+use crate::framebuffer::{Band, Framebuffer, TileView};
 use crate::interpolate::Plane;
 use crate::linkage::{FsLayout, VsLayout};
 use crate::prim::Prim;
 use crate::probe::Probe;
+use crate::rasterize::PixelRect;
 use crate::setup::{Corner, Out, Setup, CORNER_REUSE};
 use crate::shade::FragmentStage;
 use crate::shaded::Vertices;
 use crate::state::PipelineState;
 use crate::vertex::VertexFetch;
-use crate::workers::Workers;
+use crate::workers::{Cancel, Workers};
 use crate::{DrawError, ShaderStage};
 
 /// Primitives one set-up task takes.
@@ -243,11 +244,13 @@ enum TileResult {
 
 /// The fragment stage over 64×64 tiles. Each tile is a task that owns a
 /// copy of its pixels and runs the primitives overlapping it in draw
-/// order; the copies are written back in tile order. When tiles fail, the
-/// result is that of running the tiles in order and stopping at the first
-/// failure: earlier tiles complete, the failing tile keeps what it wrote
-/// before the error, later tiles are left untouched, and that error is
-/// returned.
+/// order. When tiles fail, the result is that of running the tiles in
+/// order and stopping at the first failure: earlier tiles complete, the
+/// failing tile keeps what it wrote before the error, later tiles are
+/// left untouched, and that error is returned. So the copies are written
+/// back in tile order once every tile has run, unless no tile can fail
+/// ([`ShaderStage::always_completes`]): each task then writes its tile
+/// back as soon as it is done, while its pixels are still in the cache.
 fn shade_tiles(
     workers: &Workers,
     fb: &mut Framebuffer,
@@ -258,7 +261,6 @@ fn shade_tiles(
     let grid = bins.grid;
     let occupied = bins.occupied();
     let rect = |t: usize| grid.rect(t);
-    let source: &Framebuffer = fb;
     // The depth and stencil buffers only when the draw tests them (or
     // the debugger's probe reports what a fragment leaves in them).
     let all = stage.probe.is_some();
@@ -266,6 +268,58 @@ fn shade_tiles(
         all || stage.state.depth_test.is_some(),
         all || stage.state.stencil.is_some(),
     );
+    let batches = stage.batches_primitives(fb);
+    let completes = stage.shader.always_completes()
+        && stage.deferred.as_ref().is_none_or(|d| d.always_completes());
+    if completes && !all {
+        let views: Vec<Mutex<Option<TileView>>> = fb
+            .tile_views(TILE as u32, &occupied, tests.0, tests.1)
+            .into_iter()
+            .map(|v| Mutex::new(Some(v)))
+            .collect();
+        let results = workers.map(occupied.len(), 1, |i, cancel| {
+            let (Some(view), Some(&t)) = (views.get(i), occupied.get(i)) else {
+                return Ok(0);
+            };
+            let taken = view.lock().unwrap_or_else(|e| e.into_inner()).take();
+            let Some(mut view) = taken else {
+                return Ok(0);
+            };
+            let (r, bin) = (rect(t), &bins.tile(t)[..]);
+            let mut local = view.load();
+            let ran = shade_tile(
+                stage,
+                &mut local,
+                || view.load(),
+                prims,
+                bin,
+                r,
+                batches,
+                cancel,
+                i,
+            );
+            // Written back even after an error (which `always_completes`
+            // rules out): the tile then holds what ran before it.
+            view.store(&local);
+            ran.map(|()| local.samples_passed)
+        });
+        // The first error in tile order is a failure, not a cancelled
+        // tile (only tiles after a failed one are cancelled).
+        let mut passed = 0u64;
+        let mut error = None;
+        for r in results {
+            match r {
+                Ok(n) => passed = passed.wrapping_add(n),
+                Err(TileError::Exec(e)) => {
+                    error.get_or_insert(e);
+                }
+                Err(TileError::Cancelled) => {}
+            }
+        }
+        fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+        return error.map_or(Ok(()), |e| Err(e.into()));
+    }
+    let source: &Framebuffer = fb;
     let results = workers.map(occupied.len(), 1, |i, cancel| {
         if cancel.skip(i) {
             return TileResult::Skipped;
@@ -278,35 +332,11 @@ fn shade_tiles(
         let copy = || source.copy_tile(area, tests.0, tests.1);
         let mut local = copy();
         let bin = &bins.tile(t)[..];
-        let mut scratch = stage.scratch();
-        if let Some(depth) = &stage.deferred {
-            match stage.shade_deferred(depth.as_ref(), &mut local, prims, bin, r, &mut scratch) {
-                Ok(()) => return TileResult::Ran(local, None),
-                // Redraw the tile the straightforward way: it stops at the
-                // same fragment with the same error.
-                Err(_) => local = copy(),
-            }
-        } else if stage.batches_primitives(source) {
-            match stage.shade_batched(&mut local, prims, bin, r, &mut scratch) {
-                Ok(()) => return TileResult::Ran(local, None),
-                // The same: one primitive at a time gives the error and
-                // the partial tile of the contract.
-                Err(_) => local = copy(),
-            }
+        match shade_tile(stage, &mut local, copy, prims, bin, r, batches, cancel, i) {
+            Ok(()) => TileResult::Ran(local, None),
+            Err(TileError::Cancelled) => TileResult::Skipped,
+            Err(TileError::Exec(e)) => TileResult::Ran(local, Some(e)),
         }
-        for &p in bin {
-            if cancel.skip(i) {
-                return TileResult::Skipped;
-            }
-            let Some(&prim) = prims.get(p as usize) else {
-                continue;
-            };
-            if let Err(e) = stage.shade(&mut local, prim, r, &mut scratch) {
-                cancel.fail(i);
-                return TileResult::Ran(local, Some(e));
-            }
-        }
-        TileResult::Ran(local, None)
     });
     // Written back up to the first failed tile (later ones are dropped),
     // each band of tile rows by a worker: the bands are disjoint.
@@ -342,4 +372,62 @@ fn shade_tiles(
         Some(TileResult::Ran(_, Some(e))) => Err(e.into()),
         _ => Ok(()),
     }
+}
+
+/// Why [`shade_tile`] stopped early.
+enum TileError {
+    /// A shader run failed (the tile holds what ran before it).
+    Exec(ExecError),
+    /// An earlier tile failed: this one's result will be dropped.
+    Cancelled,
+}
+
+impl From<ExecError> for TileError {
+    fn from(e: ExecError) -> TileError {
+        TileError::Exec(e)
+    }
+}
+
+/// Tile task `i`: the primitives `bin` (indices into `prims`) on `local`,
+/// the copy of tile `r`, by the deferred depth pass or in batches when
+/// the stage allows, else (or to redo a tile they stopped on, from a
+/// fresh copy by `reload`) one primitive at a time, which stops at the
+/// fragment and with the error of the contract.
+#[allow(clippy::too_many_arguments)]
+fn shade_tile(
+    stage: &FragmentStage,
+    local: &mut Framebuffer,
+    reload: impl Fn() -> Framebuffer,
+    prims: &[&Prim],
+    bin: &[u32],
+    r: PixelRect,
+    batches: bool,
+    cancel: &Cancel,
+    i: usize,
+) -> Result<(), TileError> {
+    let mut scratch = stage.scratch();
+    if let Some(depth) = &stage.deferred {
+        match stage.shade_deferred(depth.as_ref(), local, prims, bin, r, &mut scratch) {
+            Ok(()) => return Ok(()),
+            Err(_) => *local = reload(),
+        }
+    } else if batches {
+        match stage.shade_batched(local, prims, bin, r, &mut scratch) {
+            Ok(()) => return Ok(()),
+            Err(_) => *local = reload(),
+        }
+    }
+    for &p in bin {
+        if cancel.skip(i) {
+            return Err(TileError::Cancelled);
+        }
+        let Some(&prim) = prims.get(p as usize) else {
+            continue;
+        };
+        if let Err(e) = stage.shade(local, prim, r, &mut scratch) {
+            cancel.fail(i);
+            return Err(e.into());
+        }
+    }
+    Ok(())
 }

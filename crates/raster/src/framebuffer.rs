@@ -71,6 +71,116 @@ impl Band<'_> {
     }
 }
 
+/// One tile's rows of a framebuffer's buffers, borrowed
+/// ([`Framebuffer::tile_views`]): a tile task reads its pixels from here
+/// and writes them back here when done, while other tasks hold the
+/// other tiles' views.
+pub(crate) struct TileView<'a> {
+    width: u32,
+    height: u32,
+    depth_format: DepthFormat,
+    color: Vec<TileColor<'a>>,
+    depth: Option<Vec<&'a mut [u32]>>,
+    stencil: Option<Vec<&'a mut [u8]>>,
+}
+
+enum TileColor<'a> {
+    Rgba8(Vec<&'a mut [[u8; 4]]>),
+    Rgba32F(Vec<&'a mut [[f32; 4]]>),
+}
+
+impl TileView<'_> {
+    /// The tile's pixels as a framebuffer of its own, as
+    /// [`Framebuffer::copy_tile`] gives them.
+    pub(crate) fn load(&self) -> Framebuffer {
+        fn rows<T: Copy>(rows: &[&mut [T]]) -> Vec<T> {
+            let mut out = Vec::with_capacity(rows.iter().map(|r| r.len()).sum());
+            for r in rows {
+                out.extend_from_slice(r);
+            }
+            out
+        }
+        Framebuffer {
+            width: self.width,
+            height: self.height,
+            color: (self.color.iter())
+                .map(|c| match c {
+                    TileColor::Rgba8(r) => ColorBuffer::Rgba8(rows(r)),
+                    TileColor::Rgba32F(r) => ColorBuffer::Rgba32F(rows(r)),
+                })
+                .collect(),
+            depth: self.depth.as_deref().map(rows),
+            depth_format: self.depth_format,
+            stencil: self.stencil.as_deref().map(rows),
+            samples_passed: 0,
+        }
+    }
+
+    /// Writes `tile` (from [`TileView::load`]) back; buffers the view or
+    /// the tile lacks are left as they are.
+    pub(crate) fn store(&mut self, tile: &Framebuffer) {
+        fn rows<T: Copy>(dst: &mut [&mut [T]], src: &[T], w: usize) {
+            for (d, s) in dst.iter_mut().zip(src.chunks(w.max(1))) {
+                if d.len() == s.len() {
+                    d.copy_from_slice(s);
+                }
+            }
+        }
+        let w = self.width as usize;
+        if tile.width != self.width || tile.height != self.height {
+            return;
+        }
+        for (dst, src) in self.color.iter_mut().zip(&tile.color) {
+            match (dst, src) {
+                (TileColor::Rgba8(d), ColorBuffer::Rgba8(s)) => rows(d, s, w),
+                (TileColor::Rgba32F(d), ColorBuffer::Rgba32F(s)) => rows(d, s, w),
+                _ => {}
+            }
+        }
+        if let (Some(d), Some(s)) = (self.depth.as_mut(), tile.depth.as_ref()) {
+            rows(d, s, w);
+        }
+        if let (Some(d), Some(s)) = (self.stencil.as_mut(), tile.stencil.as_ref()) {
+            rows(d, s, w);
+        }
+    }
+}
+
+/// Pushes the rows of `buf` (rows of `width` elements) that belong to
+/// the tiles `wanted` (indices into a grid of `size`-square tiles, `cols`
+/// per row, sorted) to `out[i]` for `wanted[i]`, bottom row first.
+fn split_tiles<'a, T>(
+    buf: &'a mut [T],
+    width: usize,
+    size: usize,
+    cols: usize,
+    wanted: &[usize],
+    out: &mut [Vec<&'a mut [T]>],
+) {
+    let (width, size, cols) = (width.max(1), size.max(1), cols.max(1));
+    for (ty, band) in buf.chunks_mut(width * size).enumerate() {
+        let first = wanted.partition_point(|&t| t / cols < ty);
+        let end = wanted.partition_point(|&t| t / cols <= ty);
+        if first == end {
+            continue;
+        }
+        for row in band.chunks_mut(width) {
+            let mut want = first;
+            for (tx, piece) in row.chunks_mut(size).enumerate() {
+                if want == end {
+                    break;
+                }
+                if wanted.get(want).is_some_and(|&t| t % cols == tx) {
+                    if let Some(o) = out.get_mut(want) {
+                        o.push(piece);
+                    }
+                    want += 1;
+                }
+            }
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ColorFormat {
     Rgba8,
@@ -396,6 +506,69 @@ impl Framebuffer {
         bands
     }
 
+    /// Views of the tiles `wanted` (sorted indices into this
+    /// framebuffer's grid of `size`×`size` tiles, row by row from the
+    /// bottom) that tasks can fill in parallel: `wanted[i]`'s is the
+    /// `i`th. With the colour buffers, and the depth and stencil buffers
+    /// where `depth` and `stencil` ask for them (as
+    /// [`Framebuffer::copy_tile`]).
+    pub(crate) fn tile_views(
+        &mut self,
+        size: u32,
+        wanted: &[usize],
+        depth: bool,
+        stencil: bool,
+    ) -> Vec<TileView<'_>> {
+        let (width, size) = (self.width as usize, size.max(1) as usize);
+        let (height, cols) = (self.height as usize, width.div_ceil(size).max(1));
+        let mut views: Vec<TileView> = wanted
+            .iter()
+            .map(|&t| TileView {
+                width: width.saturating_sub(t % cols * size).min(size) as u32,
+                height: height.saturating_sub(t / cols * size).min(size) as u32,
+                depth_format: self.depth_format,
+                color: Vec::new(),
+                depth: None,
+                stencil: None,
+            })
+            .collect();
+        fn split<'a, T>(
+            buf: &'a mut [T],
+            (width, size, cols): (usize, usize, usize),
+            wanted: &[usize],
+        ) -> Vec<Vec<&'a mut [T]>> {
+            let mut out: Vec<Vec<&mut [T]>> = (0..wanted.len()).map(|_| Vec::new()).collect();
+            split_tiles(buf, width, size, cols, wanted, &mut out);
+            out
+        }
+        let grid = (width, size, cols);
+        for c in self.color.iter_mut() {
+            match c {
+                ColorBuffer::Rgba8(v) => {
+                    for (view, rows) in views.iter_mut().zip(split(v, grid, wanted)) {
+                        view.color.push(TileColor::Rgba8(rows));
+                    }
+                }
+                ColorBuffer::Rgba32F(v) => {
+                    for (view, rows) in views.iter_mut().zip(split(v, grid, wanted)) {
+                        view.color.push(TileColor::Rgba32F(rows));
+                    }
+                }
+            }
+        }
+        if let Some(d) = self.depth.as_mut().filter(|_| depth) {
+            for (view, rows) in views.iter_mut().zip(split(d, grid, wanted)) {
+                view.depth = Some(rows);
+            }
+        }
+        if let Some(st) = self.stencil.as_mut().filter(|_| stencil) {
+            for (view, rows) in views.iter_mut().zip(split(st, grid, wanted)) {
+                view.stencil = Some(rows);
+            }
+        }
+        views
+    }
+
     /// Reads a `w`×`h` block of color buffer `buffer` starting at (x, y),
     /// bottom row first, as floats. Pixels outside the buffer (or of a
     /// missing buffer) read as zeros.
@@ -543,6 +716,67 @@ mod tests {
                     assert_eq!(a.stencil.as_ref().unwrap()[i], want_s);
                 }
             }
+        }
+    }
+
+    /// Tile views read what `copy_tile` copies (edge tiles narrower and
+    /// shorter, depth and stencil only when asked) and write back only
+    /// their own tile's pixels.
+    #[test]
+    fn tile_views_load_and_store_their_tiles() {
+        let (w, h) = (150u32, 70u32);
+        let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, true);
+        fb.color
+            .push(ColorBuffer::Rgba32F(vec![[0.0; 4]; (w * h) as usize]));
+        for (i, p) in fb.color.iter_mut().enumerate() {
+            match p {
+                ColorBuffer::Rgba8(v) => v
+                    .iter_mut()
+                    .enumerate()
+                    .for_each(|(k, p)| *p = [k as u8, (k >> 8) as u8, i as u8, 1]),
+                ColorBuffer::Rgba32F(v) => v
+                    .iter_mut()
+                    .enumerate()
+                    .for_each(|(k, p)| *p = [k as f32, 2.0, 3.0, 4.0]),
+            }
+        }
+        for (k, d) in fb.depth.as_mut().unwrap().iter_mut().enumerate() {
+            *d = 3 * k as u32;
+        }
+        for (k, st) in fb.stencil.as_mut().unwrap().iter_mut().enumerate() {
+            *st = (7 * k) as u8;
+        }
+        // Three columns (64, 64, 22 wide), two rows (64, 6 high).
+        let wanted = [0usize, 2, 3, 5];
+        for (depth, stencil) in [(true, false), (false, true)] {
+            let before = fb.clone();
+            let mut expected = fb.clone();
+            let mut views = fb.tile_views(64, &wanted, depth, stencil);
+            assert_eq!(views.len(), wanted.len());
+            for (view, &t) in views.iter_mut().zip(&wanted) {
+                let (x0, y0) = ((t % 3) as u32 * 64, (t / 3) as u32 * 64);
+                let area = (x0, y0, x0 + 64, y0 + 64);
+                let mut tile = view.load();
+                assert_eq!(tile, before.copy_tile(area, depth, stencil), "tile {t}");
+                // Every pixel changed, written back through the view and
+                // through the bands (the reference).
+                for c in tile.color.iter_mut() {
+                    match c {
+                        ColorBuffer::Rgba8(v) => v.iter_mut().for_each(|p| p[3] = 200 + t as u8),
+                        ColorBuffer::Rgba32F(v) => v.iter_mut().for_each(|p| p[1] = -(t as f32)),
+                    }
+                }
+                tile.depth.iter_mut().flatten().for_each(|d| *d = 9);
+                tile.stencil
+                    .iter_mut()
+                    .flatten()
+                    .for_each(|st| *st = t as u8);
+                view.store(&tile);
+                expected.store_tile(x0, y0, &tile);
+            }
+            drop(views);
+            assert_eq!(fb, expected);
+            assert_ne!(fb, before);
         }
     }
 

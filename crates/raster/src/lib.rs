@@ -358,6 +358,15 @@ pub trait ShaderStage: Sync {
         false
     }
 
+    /// Whether every run returns `Ok` (`exec::Kernel::always_completes`):
+    /// the fragment stage may then write each tile back as soon as it is
+    /// shaded, as no later failure can ask for the tiles after a failing
+    /// one to be left untouched. `false` (the default): tiles are kept
+    /// until every tile has run.
+    fn always_completes(&self) -> bool {
+        false
+    }
+
     /// Whether every run writes every output component on every active
     /// lane and discards none: the fragment stage then need not clear a
     /// batch's outputs before it (outputs a shader leaves unwritten read
@@ -431,6 +440,9 @@ impl ShaderStage for ex::Kernel {
     }
     fn does_nothing(&self) -> bool {
         self.op_count() == 0
+    }
+    fn always_completes(&self) -> bool {
+        ex::Kernel::always_completes(self)
     }
     fn lanes_independent(&self) -> bool {
         ex::Kernel::lanes_independent(self)
