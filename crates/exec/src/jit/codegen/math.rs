@@ -14,8 +14,16 @@ use cranelift_codegen::ir::{ConstantData, InstBuilder, Value};
 /// once per run.
 #[derive(Clone, Copy)]
 pub(super) struct Divisor {
+    /// The divisor with 0 (and −1, signed) replaced by 1.
     safe: Value,
+    /// −`safe`.
+    neg: Value,
+    /// 1 / `safe` in `f64`.
     recip: Value,
+    /// All ones where the divisor is 0.
+    by_zero: Value,
+    /// All ones where a signed divisor is −1 (zero for unsigned ones).
+    by_minus_one: Value,
 }
 
 impl<'a, 'b> Emit<'a, 'b> {
@@ -81,9 +89,8 @@ impl<'a, 'b> Emit<'a, 'b> {
             (by_zero, None)
         };
         let safe = self.b.ins().bitselect(replaced, one, y);
-        let halves = [[0u8, 1, 0, 1], [2, 3, 2, 3]].map(|lanes| {
-            let xs = self.lanes_of(x, lanes);
-            let ys = self.lanes_of(safe, lanes);
+        let halves = [false, true].map(|high| {
+            let (xs, ys) = (self.half(x, high), self.half(safe, high));
             let (xd, yd) = (self.widen_f64(xs, signed), self.widen_f64(ys, signed));
             let qd = self.b.ins().fdiv(xd, yd);
             self.truncate_f64(qd, signed)
@@ -104,45 +111,50 @@ impl<'a, 'b> Emit<'a, 'b> {
     }
 
     /// The per-run values of a lane-uniform divisor held in pool register
-    /// `r` (its lane 0, read once before the body: [`Emit::divisors`]):
-    /// the divisor with 0 (and −1, `signed`) replaced by 1 as I32X4, and
-    /// 1 over it in `f64` as F64X2.
+    /// `r` (its lane 0, read once before the body: [`Emit::divisors`]).
     pub(super) fn divisor(&mut self, r: Reg, signed: bool) -> Divisor {
         let off = (r - self.code.pool_base) as i32 * 64;
         let y = self.b.ins().load(I32, super::mem(), self.pool, off);
         let one = self.b.ins().iconst(I32, 1);
-        let mut replaced = self.b.ins().icmp_imm_s(IntCC::Equal, y, 0);
-        if signed {
-            let m1 = self.b.ins().icmp_imm_s(IntCC::Equal, y, -1);
-            replaced = self.b.ins().bor(replaced, m1);
-        }
+        let by_zero = self.b.ins().icmp_imm_s(IntCC::Equal, y, 0);
+        let by_minus_one = match signed {
+            true => self.b.ins().icmp_imm_s(IntCC::Equal, y, -1),
+            false => self.b.ins().iconst(cranelift_codegen::ir::types::I8, 0),
+        };
+        let replaced = self.b.ins().bor(by_zero, by_minus_one);
         let safe = self.b.ins().select(replaced, one, y);
+        let neg = self.b.ins().ineg(safe);
         let yd = match signed {
             true => self.b.ins().fcvt_from_sint(F64, safe),
             false => self.b.ins().fcvt_from_uint(F64, safe),
         };
         let unit = self.b.ins().f64const(1.0);
         let recip = self.b.ins().fdiv(unit, yd);
+        let mask = |e: &mut Self, m: Value| {
+            let v = e.b.ins().bmask(I32, m);
+            e.b.ins().splat(I32X4, v)
+        };
         Divisor {
             safe: self.b.ins().splat(I32X4, safe),
+            neg: self.b.ins().splat(I32X4, neg),
             recip: self.b.ins().splat(F64X2, recip),
+            by_zero: mask(self, by_zero),
+            by_minus_one: mask(self, by_minus_one),
         }
     }
 
-    /// [`Self::int_div`] by a lane-uniform divisor `y` whose
-    /// [`Divisor`] is `by`: the quotient from a product with the
-    /// reciprocal instead of a division, then corrected. The product is
-    /// within 2⁻⁵² of the quotient relatively, so its truncation is the
-    /// truncated quotient except where the quotient is a whole number
-    /// that the product misses from the side of zero (one too close to
-    /// zero: the remainder is then ±y); the remainder tells, and the
-    /// step back is exact.
-    pub(super) fn int_div_by(&mut self, k: usize, x: Value, y: Value, by: Divisor) -> Value {
+    /// [`Self::int_div`] by a lane-uniform divisor whose [`Divisor`] is
+    /// `by`: the quotient from a product with the reciprocal instead of
+    /// a division, then corrected. The product is within 2⁻⁵² of the
+    /// quotient relatively, so its truncation is the truncated quotient
+    /// except where the quotient is a whole number that the product
+    /// misses from the side of zero (one too close to zero: the
+    /// remainder is then ±y); the remainder tells, and the step back is
+    /// exact.
+    pub(super) fn int_div_by(&mut self, k: usize, x: Value, by: Divisor) -> Value {
         let signed = k < 2;
-        let zero = self.splat(0);
-        let by_zero = self.b.ins().icmp(IntCC::Equal, y, zero);
-        let halves = [[0u8, 1, 0, 1], [2, 3, 2, 3]].map(|lanes| {
-            let xs = self.lanes_of(x, lanes);
+        let halves = [false, true].map(|high| {
+            let xs = self.half(x, high);
             let xd = self.widen_f64(xs, signed);
             let qd = self.b.ins().fmul(xd, by.recip);
             self.truncate_f64(qd, signed)
@@ -155,25 +167,32 @@ impl<'a, 'b> Emit<'a, 'b> {
         let mut short = self.b.ins().icmp(IntCC::Equal, rem, by.safe);
         q = self.b.ins().isub(q, short);
         if signed {
-            let neg = self.b.ins().ineg(by.safe);
-            let over = self.b.ins().icmp(IntCC::Equal, rem, neg);
+            let over = self.b.ins().icmp(IntCC::Equal, rem, by.neg);
             q = self.b.ins().iadd(q, over);
             short = self.b.ins().bor(short, over);
         }
-        rem = self.b.ins().bitselect(short, zero, rem);
+        rem = self.b.ins().band_not(rem, short);
         let v = if k.is_multiple_of(2) {
             if signed {
                 // Divisor −1 (run as 1): the quotient −x, wrapping.
-                let minus_one = self.splat(u32::MAX);
-                let m1 = self.b.ins().icmp(IntCC::Equal, y, minus_one);
                 let neg = self.b.ins().ineg(x);
-                q = self.b.ins().bitselect(m1, neg, q);
+                q = self.b.ins().bitselect(by.by_minus_one, neg, q);
             }
             q
         } else {
             rem
         };
-        self.b.ins().bitselect(by_zero, zero, v)
+        // Division by zero gives 0.
+        self.b.ins().band_not(v, by.by_zero)
+    }
+
+    /// Lanes 0 and 1 (`high`: 2 and 3) of an I32X4 in its lanes 0 and 1,
+    /// for [`Self::widen_f64`].
+    fn half(&mut self, v: Value, high: bool) -> Value {
+        match high {
+            false => v,
+            true => self.lanes_of(v, [2, 3, 2, 3]),
+        }
     }
 
     /// Lanes 0 and 1 of an I32X4 as F64X2.
@@ -198,7 +217,10 @@ impl<'a, 'b> Emit<'a, 'b> {
             .insert(ConstantData::from(vec![0u8; 16]));
         let zero = self.b.ins().vconst(I64X2, zero);
         if signed {
-            let t = self.b.ins().fcvt_to_sint_sat(I64X2, v);
+            // Every quotient here is finite and inside i32's range (the
+            // divisor −1 is run as 1), so the plain conversion is exact:
+            // no NaN or bounds fixes.
+            let t = self.b.ins().x86_cvtt2dq(I64X2, v);
             self.b.ins().snarrow(t, zero)
         } else {
             let t = self.b.ins().fcvt_to_uint_sat(I64X2, v);

@@ -399,10 +399,13 @@ impl<'a, 'b> Emit<'a, 'b> {
         macro_rules! call_int {
             ($d:expr, $a:expr, $b:expr, $k:expr) => {
                 each!($d, |q| {
-                    let (x, y) = (self.ld($a, q), self.ld($b, q));
+                    let x = self.ld($a, q);
                     match self.divisors.get(&($b, $k < 2)) {
-                        Some(&by) => self.int_div_by($k, x, y, by),
-                        None => self.int_div($k, x, y),
+                        Some(&by) => self.int_div_by($k, x, by),
+                        None => {
+                            let y = self.ld($b, q);
+                            self.int_div($k, x, y)
+                        }
                     }
                 })
             };
