@@ -164,6 +164,10 @@ fn native_texel_fetches_are_the_textures_fetches() {
             d = texelFetch(line, p.x + p.y, 0);
             // Lanes on different levels.
             e = ivec4(texelFetch(ui, p, int(v.z > 0.5)));
+            // A constant row and layer (native code drops only the
+            // axes held at 0).
+            e += ivec4(texelFetch(ui, ivec2(p.x, 2), 0)) + texelFetch(line, 3, 0)
+                + ivec4(texelFetch(layers, ivec3(p.y, 0, 1), 0));
             // Sizes of a uniform level (hoisted into the prologue) and
             // of per-lane levels.
             e += ivec4(textureSize(ui, lod), textureSize(layers, 0).z + textureSize(line, 0),

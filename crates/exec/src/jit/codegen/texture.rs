@@ -9,7 +9,7 @@
 
 use super::super::{jit_texture, Ctx, View};
 use super::{mem, Emit, ONE, QUARTERS};
-use crate::program::{TexKind, TexOp};
+use crate::program::{Op, Reg, TexKind, TexOp};
 use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::types::{F32X4, I32, I32X4};
 use cranelift_codegen::ir::{Block, BlockArg, InstBuilder, Value};
@@ -141,35 +141,61 @@ impl<'a, 'b> Emit<'a, 'b> {
             self.b.ins().splat(I32X4, w)
         });
         let float = t.target.result() == SamplerResult::Float;
+        // Axes whose coordinate (and offset) the program holds at 0: no
+        // bounds check (0 is inside every level) and no index term.
+        let zero: [bool; 3] = std::array::from_fn(|a| {
+            self.pool_zero(t.coord[a]) && t.offset.is_none_or(|o| self.pool_zero(o[a]))
+        });
         for q in 0..QUARTERS {
-            let mut c = [base; 3];
+            let mut c: [Option<Value>; 3] = [None; 3];
             for (a, c) in c.iter_mut().enumerate() {
+                if zero[a] {
+                    continue;
+                }
                 let mut v = self.ld(t.coord[a], q);
                 if let Some(o) = t.offset {
                     let o = self.ld(o[a], q);
                     v = self.b.ins().iadd(v, o);
                 }
-                *c = self.b.ins().band(v, keep[a]);
+                *c = Some(self.b.ins().band(v, keep[a]));
             }
             // Unsigned compares: a negative coordinate is outside too.
-            let mut inside = self.b.use_var(self.mk[q]);
+            let mut outside = None;
             for a in 0..3 {
-                let lt = self.b.ins().icmp(IntCC::UnsignedLessThan, c[a], size[a]);
-                inside = self.b.ins().band(inside, lt);
+                let Some(c) = c[a] else { continue };
+                let ge = self
+                    .b
+                    .ins()
+                    .icmp(IntCC::UnsignedGreaterThanOrEqual, c, size[a]);
+                outside = Some(match outside {
+                    Some(o) => self.b.ins().bor(o, ge),
+                    None => ge,
+                });
             }
+            let running = self.b.use_var(self.mk[q]);
+            let inside = match outside {
+                Some(o) => self.b.ins().band_not(running, o),
+                None => running,
+            };
             // (k·height + j)·width + i, which fits in an i32 inside the
             // level; texel 0 for the other lanes.
-            let k_rows = self.b.ins().imul(c[2], size[1]);
-            let row = self.b.ins().iadd(k_rows, c[1]);
-            let row = self.b.ins().imul(row, size[0]);
-            let index = self.b.ins().iadd(row, c[0]);
+            let k_rows = c[2].map(|k| self.b.ins().imul(k, size[1]));
+            let row = match (k_rows, c[1]) {
+                (Some(k), Some(j)) => Some(self.b.ins().iadd(k, j)),
+                (r, None) | (None, r) => r,
+            };
+            let row = row.map(|r| self.b.ins().imul(r, size[0]));
+            let index = match (row, c[0]) {
+                (Some(row), Some(i)) => self.b.ins().iadd(row, i),
+                (Some(v), None) | (None, Some(v)) => v,
+                (None, None) => self.splat(0),
+            };
             let index = self.b.ins().band(index, inside);
             let texel = if unorm {
                 self.unorm8_texels(base, index)
             } else {
                 self.rgba32_texels(base, index)
             };
-            let running = self.b.use_var(self.mk[q]);
             for (k, v) in texel.into_iter().enumerate() {
                 let d = t.d + k as u32;
                 if !self.live_after(op as usize, d) {
@@ -187,6 +213,23 @@ impl<'a, 'b> Emit<'a, 'b> {
                 self.b.ins().store(mem(), v, self.regs, Self::offset(d, q));
             }
         }
+    }
+
+    /// Whether register `r` holds 0 on every run: a pool register that
+    /// one `Const` of the prologue sets to 0 and no other op writes.
+    fn pool_zero(&self, r: Reg) -> bool {
+        if r < self.code.pool_base {
+            return false;
+        }
+        let writes = |op: &Op| {
+            let e = crate::liveness::effects(&self.code.prog, op);
+            let covers = |&(d, n): &(Reg, u32)| r >= d && (r - d) < n.max(1);
+            e.full_defs.iter().any(covers) || e.partial_defs.iter().any(covers)
+        };
+        let mut sets = self.code.prologue.iter().filter(|op| writes(op));
+        matches!(sets.next(), Some(Op::Const { bits: 0, .. }))
+            && sets.next().is_none()
+            && !self.code.ins.iter().any(|i| writes(&i.op))
     }
 
     /// The address of texel `index` (lane `l`) of `size` bytes each.
