@@ -134,7 +134,6 @@ impl<'a, 'b> Emit<'a, 'b> {
         let bits = self.b.ins().vhigh_bits(I32, same);
         let all = self.b.ins().icmp_imm_u(IntCC::Equal, bits, 0xf);
         let nv = self.b.ins().splat(I32X4, n);
-        let zero = self.splat(0);
         let (one, many, merge) = (
             self.b.create_block(),
             self.b.create_block(),
@@ -157,18 +156,28 @@ impl<'a, 'b> Emit<'a, 'b> {
         let args = [BlockArg::from(v); QUARTERS];
         self.b.ins().jump(merge, &args);
 
+        // Every index is at most `word + max`: when the uniforms reach
+        // past it (the usual case), no lane needs the bounds check.
         self.b.switch_to_block(many);
+        let (fits, checked) = (self.b.create_block(), self.b.create_block());
+        let last = (word as u64 + max as u64) as i64;
+        let all_inside = self.b.ins().icmp_imm_u(IntCC::UnsignedGreaterThan, n, last);
+        self.b.ins().brif(all_inside, fits, &[], checked, &[]);
+
+        self.b.switch_to_block(fits);
+        let args: Vec<BlockArg> = idx
+            .iter()
+            .map(|&x| BlockArg::from(self.gather_words(p, x)))
+            .collect();
+        self.b.ins().jump(merge, &args);
+
+        self.b.switch_to_block(checked);
         let mut args = Vec::with_capacity(QUARTERS);
         for &x in &idx {
-            let inside = self.b.ins().icmp(IntCC::UnsignedLessThan, x, nv);
-            let safe = self.b.ins().band(x, inside);
-            let mut v = zero;
-            for l in 0..4u8 {
-                let i = self.b.ins().extractlane(safe, l);
-                let w = self.load_word(p, i);
-                v = self.b.ins().insertlane(v, w, l);
-            }
-            args.push(BlockArg::from(self.b.ins().band(v, inside)));
+            let outside = self.b.ins().icmp(IntCC::UnsignedGreaterThanOrEqual, x, nv);
+            let safe = self.b.ins().band_not(x, outside);
+            let v = self.gather_words(p, safe);
+            args.push(BlockArg::from(self.b.ins().band_not(v, outside)));
         }
         self.b.ins().jump(merge, &args);
 
@@ -177,6 +186,17 @@ impl<'a, 'b> Emit<'a, 'b> {
             let v = self.ftz_word(float, v);
             self.put(d, q, v, masked);
         }
+    }
+
+    /// `p[x[l]]` for the four lanes of I32X4 `x`.
+    fn gather_words(&mut self, p: Value, x: Value) -> Value {
+        let mut v = self.splat(0);
+        for l in 0..4u8 {
+            let i = self.b.ins().extractlane(x, l);
+            let w = self.load_word(p, i);
+            v = self.b.ins().insertlane(v, w, l);
+        }
+        v
     }
 
     /// Byte offsets in the file of lanes `4q..4q+4` of registers
