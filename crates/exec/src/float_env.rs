@@ -1,8 +1,10 @@
 //! The floating-point environment kernels run in (x86-64: the SSE control
 //! and status register, MXCSR).
 //!
-//! Native code runs with DAZ set (subnormal operands read as zero of their
-//! sign), FTZ clear, rounding to nearest and every exception masked: each
+//! Native code that would flush in many places runs with DAZ set
+//! (subnormal operands read as zero of their sign; code with few flushes
+//! keeps them and runs in Rust's environment, see `jit::Native::daz`),
+//! FTZ clear, rounding to nearest and every exception masked: each
 //! IEEE operation then gives the value the interpreter computes by flushing
 //! every result (`engine::ftz`), without the four instructions per
 //! operation that the flush costs in software. FTZ would not do: x86 tests

@@ -45,7 +45,10 @@
 //! operations in the same order, each result flushed as `engine::ftz` does
 //! or, on x86-64 with SSE4.1 ([`daz`]), left as the hardware gives it and
 //! read as zero by the next op (MXCSR.DAZ, `crate::float_env`): the same
-//! values without four instructions per op. Unflushed bits never leave the
+//! values without four instructions per op; code that would flush in few
+//! places and calls no math helper keeps its flushes and runs without DAZ
+//! (`Native::daz`), sparing a run the two MXCSR writes, which wait for
+//! the operations in flight. Unflushed bits never leave the
 //! code: float outputs are flushed by `engine::store_outputs`, the
 //! operands of callbacks by the callbacks, which run in Rust's environment.
 //! Everything else (the transcendental functions, uniform reads outside
@@ -161,6 +164,9 @@ pub(crate) struct Ctx<'a> {
     textures: &'a dyn Textures,
     /// A panic caught in a helper, resumed after the native code returns.
     panic: Option<Box<dyn Any + Send>>,
+    /// The code runs under DAZ (`Native::daz`): callbacks into Rust
+    /// switch the environment.
+    daz: bool,
 }
 
 type Entry = unsafe extern "C" fn(*mut Ctx) -> u32;
@@ -178,7 +184,8 @@ pub(crate) struct Native {
     pub(crate) pool_in_file: bool,
     /// Size of the machine code in bytes.
     pub bytes: usize,
-    /// Compiled to run under DAZ ([`daz`]).
+    /// Compiled to run under DAZ ([`daz`]): when the code would flush
+    /// in more than a few places otherwise (`codegen::compile`).
     daz: bool,
 }
 
@@ -212,8 +219,11 @@ pub struct View {
     size: [u32; 3],
     /// Per coordinate: all ones when the fetch reads it, else 0.
     keep: [u32; 3],
-    /// [`View::RGBA32`] or [`View::UNORM8`].
+    /// [`View::RGBA32`], [`View::UNORM8`], [`View::RED16`] or
+    /// [`View::RED16_SIGNED`].
     format: u32,
+    /// The green, blue and alpha bits of every texel of a `RED16` view.
+    rest: [u32; 3],
 }
 
 impl View {
@@ -221,6 +231,11 @@ impl View {
     const RGBA32: u32 = 0;
     /// 4 bytes per texel: RGBA bytes, each `b / 255`.
     const UNORM8: u32 = 1;
+    /// 2 bytes per texel: red's bits zero-extended, the rest `rest`
+    /// (`TexelSlice::Red16`); only for integer results.
+    const RED16: u32 = 2;
+    /// As `RED16`, red sign-extended.
+    const RED16_SIGNED: u32 = 3;
 }
 
 impl Default for View {
@@ -230,6 +245,7 @@ impl Default for View {
             size: [0; 3],
             keep: [0; 3],
             format: View::RGBA32,
+            rest: [0; 3],
         }
     }
 }
@@ -320,10 +336,11 @@ impl Cache {
         if std::env::var_os("SHADERBOX_JIT_LOG").is_some_and(|v| v == "1") {
             match &r {
                 Ok(n) => eprintln!(
-                    "shaderbox: kernel of {} ops compiled to {} bytes in {:.1} ms",
+                    "shaderbox: kernel of {} ops compiled to {} bytes in {:.1} ms{}",
                     code.ins.len(),
                     n.bytes,
-                    started.elapsed().as_secs_f64() * 1e3
+                    started.elapsed().as_secs_f64() * 1e3,
+                    if n.daz { " (runs under DAZ)" } else { "" }
                 ),
                 Err(e) => eprintln!("shaderbox: kernel stays on the interpreter: {e}"),
             }
@@ -339,6 +356,12 @@ impl Cache {
             Ok(n) => Ok(n.bytes),
             Err(e) => Err(e.clone()),
         })
+    }
+
+    /// Whether the compiled code runs under DAZ (`None`: not compiled).
+    #[cfg(test)]
+    pub(crate) fn runs_under_daz(&self) -> Option<bool> {
+        self.slot.get()?.as_ref().ok().map(|n| n.daz)
     }
 }
 
@@ -409,6 +432,7 @@ pub(crate) fn run(
         uniforms,
         textures,
         panic: None,
+        daz: native.daz,
     };
     // SAFETY: `native` was compiled from `code` (the kernel's cache), whose
     // registers and side tables were validated; `load` sized the file to
@@ -456,7 +480,7 @@ unsafe extern "C" fn jit_step(ctx: *mut Ctx, index: u32, cur: u32) {
     // SAFETY: the op was validated against the file's register count.
     // Float operands are read flushed by the ops called for (texture
     // lookups, noise, derivatives; `engine::floats`).
-    let r = float_env::callback(daz(), || {
+    let r = float_env::callback(ctx.daz, || {
         catch_unwind(AssertUnwindSafe(|| unsafe {
             engine::step_data(code, regs, &ins, cur, uniforms, textures)
         }))
@@ -490,7 +514,7 @@ unsafe extern "C" fn jit_texture(ctx: *mut Ctx, index: u32, cur: u32) -> u32 {
         base: code.pool_base,
         at: ctx.pool,
     };
-    let textures = ctx.textures;
+    let (textures, daz) = (ctx.textures, ctx.daz);
     // SAFETY: the op's registers were validated against the file and the
     // pool; the native code holds none of them while this runs.
     let r = catch_unwind(AssertUnwindSafe(|| unsafe {
@@ -504,7 +528,7 @@ unsafe extern "C" fn jit_texture(ctx: *mut Ctx, index: u32, cur: u32) -> u32 {
         if t.kind == TexKind::Size {
             engine::texture_size(regs, t, cur, textures);
         } else {
-            float_env::callback(daz(), || engine::texture(regs, t, cur, textures));
+            float_env::callback(daz, || engine::texture(regs, t, cur, textures));
         }
         None
     }));
@@ -544,15 +568,31 @@ unsafe fn fetch_view(
     if count == 0 || count > i32::MAX as u64 || (level.texels.len() as u64) < count {
         return None;
     }
-    let (texels, format) = match level.texels {
-        crate::TexelSlice::Rgba32(t) => (t.as_ptr().cast(), View::RGBA32),
-        crate::TexelSlice::Unorm8(t) => (t.as_ptr().cast(), View::UNORM8),
+    let (texels, format, rest) = match level.texels {
+        crate::TexelSlice::Rgba32(t) => (t.as_ptr().cast(), View::RGBA32, [0; 3]),
+        crate::TexelSlice::Unorm8(t) => (t.as_ptr().cast(), View::UNORM8, [0; 3]),
+        // (Float results take the callback: their code reads no such
+        // view.)
+        crate::TexelSlice::Red16 { .. }
+            if t.target.result() == glsl::types::SamplerResult::Float =>
+        {
+            return None
+        }
+        crate::TexelSlice::Red16 { red, signed, rest } => {
+            let format = if signed {
+                View::RED16_SIGNED
+            } else {
+                View::RED16
+            };
+            (red.as_ptr().cast(), format, rest)
+        }
     };
     Some(View {
         texels,
         size: level.size,
         keep: std::array::from_fn(|a| if (a as u32) < level.axes { u32::MAX } else { 0 }),
         format,
+        rest,
     })
 }
 

@@ -164,8 +164,9 @@
 //! only the registers read later are stored; masks, mask slots and the
 //! loop count are SSA values. It emits the same IEEE
 //! operations in the same order as the interpreter, with subnormals read
-//! as zero in hardware on x86-64 (MXCSR.DAZ, set around each run: see
-//! `float_env`) and flushed after each op elsewhere, and calls back into the interpreter's own lane
+//! as zero in hardware on x86-64 (MXCSR.DAZ, set around each run of code
+//! that would flush in many places: see `float_env`) and flushed after
+//! each op elsewhere, and calls back into the interpreter's own lane
 //! code for the transcendental functions, integer division and remainder,
 //! noise and
 //! texture lookups, so it computes the same bits (tests compare it with
@@ -418,6 +419,14 @@ pub enum TexelSlice<'a> {
     Rgba32(&'a [[f32; 4]]),
     /// RGBA unsigned normalized bytes: component `b` is `b as f32 / 255.0`.
     Unorm8(&'a [[u8; 4]]),
+    /// Red as 16 bits, zero-extended (sign-extended when `signed`) to
+    /// the red component's 32 bits; green, blue and alpha the bits
+    /// `rest` in every texel.
+    Red16 {
+        red: &'a [u16],
+        signed: bool,
+        rest: [u32; 3],
+    },
 }
 
 impl TexelSlice<'_> {
@@ -425,6 +434,7 @@ impl TexelSlice<'_> {
         match self {
             TexelSlice::Rgba32(t) => t.len(),
             TexelSlice::Unorm8(t) => t.len(),
+            TexelSlice::Red16 { red, .. } => red.len(),
         }
     }
 

@@ -16,7 +16,8 @@
 //! RGBA8 bytes instead (a quarter of the memory traffic) and read back
 //! through a table of those exact values, so the two storages sample to
 //! the same bits. Integer textures hold the integers' bits instead
-//! ([`Texture::integer`]). Texture borders are not supported (border width 0);
+//! ([`Texture::integer`]); a level of one 8- or 16-bit integer channel
+//! keeps only those 16 bits per texel ([`Red16`]). Texture borders are not supported (border width 0);
 //! CLAMP and CLAMP_TO_BORDER sample the border color.
 //!
 //! The 2D fast path's x86 variants read an RGBA8 level through a padded
@@ -66,16 +67,68 @@ pub(crate) const UNORM8: [f32; 256] = {
     t
 };
 
-/// A level's texels: RGBA f32, or RGBA8 when that is exact.
+/// A level's texels: RGBA f32, or RGBA8 or [`Red16`] when that is
+/// exact.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) enum Texels {
     F32(Vec<[f32; 4]>),
     Unorm8(Vec<[u8; 4]>),
+    Red16(Red16),
+}
+
+/// Texels whose green, blue and alpha bits are the same everywhere and
+/// whose red bits are a 16-bit integer (zero- or sign-extended): the
+/// one-channel integer formats of 8 and 16 bits (R8UI, R16UI, R16I ...),
+/// at an eighth of the f32 texels' memory.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Red16 {
+    pub(crate) red: Vec<u16>,
+    /// Whether `red` is sign-extended to 32 bits (else zero-extended).
+    pub(crate) signed: bool,
+    /// The bits of green, blue and alpha.
+    pub(crate) rest: [u32; 3],
+}
+
+impl Red16 {
+    /// The texels as [`Red16`], when they all fit.
+    fn pack(texels: &[[f32; 4]]) -> Option<Red16> {
+        let first = texels.first()?;
+        let rest = [first[1].to_bits(), first[2].to_bits(), first[3].to_bits()];
+        let same = |t: &[f32; 4]| [t[1].to_bits(), t[2].to_bits(), t[3].to_bits()] == rest;
+        let bits = |t: &[f32; 4]| t[0].to_bits();
+        let signed = !texels.iter().all(|t| bits(t) <= 0xffff);
+        let fits = |t: &[f32; 4]| match signed {
+            false => bits(t) <= 0xffff,
+            true => i16::try_from(bits(t) as i32).is_ok(),
+        };
+        if !texels.iter().all(|t| same(t) && fits(t)) {
+            return None;
+        }
+        Some(Red16 {
+            red: texels.iter().map(|t| bits(t) as u16).collect(),
+            signed,
+            rest,
+        })
+    }
+
+    /// The texel at `index`, if there is one.
+    #[inline]
+    pub(crate) fn get(&self, index: usize) -> Option<[f32; 4]> {
+        let r = *self.red.get(index)?;
+        let r = if self.signed {
+            r as i16 as i32 as u32
+        } else {
+            r as u32
+        };
+        let [g, b, a] = self.rest;
+        Some([r, g, b, a].map(f32::from_bits))
+    }
 }
 
 impl Texels {
     /// RGBA8 when every component is one of the 256 values of [`UNORM8`]
-    /// (bit for bit: −0.0 and NaN stay f32), else the f32 texels.
+    /// (bit for bit: −0.0 and NaN stay f32), else [`Red16`] when the
+    /// texels fit it, else the f32 texels.
     fn pack(texels: Vec<[f32; 4]>) -> Texels {
         let byte = |x: f32| -> Option<u8> {
             if !(0.0..=1.0).contains(&x) {
@@ -89,7 +142,7 @@ impl Texels {
         for t in &texels {
             match (byte(t[0]), byte(t[1]), byte(t[2]), byte(t[3])) {
                 (Some(r), Some(g), Some(b), Some(a)) => packed.push([r, g, b, a]),
-                _ => return Texels::F32(texels),
+                _ => return Red16::pack(&texels).map_or(Texels::F32(texels), Texels::Red16),
             }
         }
         Texels::Unorm8(packed)
@@ -99,6 +152,7 @@ impl Texels {
         match self {
             Texels::F32(v) => v.len(),
             Texels::Unorm8(v) => v.len(),
+            Texels::Red16(v) => v.red.len(),
         }
     }
 
@@ -110,6 +164,7 @@ impl Texels {
                 .get(index)
                 .map(|t| t.map(|b| UNORM8[b as usize]))
                 .unwrap_or(MISSING),
+            Texels::Red16(v) => v.get(index).unwrap_or(MISSING),
         }
     }
 }

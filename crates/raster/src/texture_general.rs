@@ -195,6 +195,11 @@ pub(crate) fn plain_level(
     let texels = match &img.texels {
         Texels::F32(t) => TexelSlice::Rgba32(t.get(..count)?),
         Texels::Unorm8(t) => TexelSlice::Unorm8(t.get(..count)?),
+        Texels::Red16(t) => TexelSlice::Red16 {
+            red: t.red.get(..count)?,
+            signed: t.signed,
+            rest: t.rest,
+        },
     };
     if count == 0 {
         return None;

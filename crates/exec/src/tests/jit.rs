@@ -730,3 +730,57 @@ fn native_division_by_a_uniform_is_the_lane_functions() {
         }
     }
 }
+
+/// Native code runs under DAZ only where it relies on it in many places:
+/// a palette lookup (a few float uniform words) runs without it, a
+/// shader of float arithmetic and a math helper with it; both give the
+/// interpreter's bits.
+#[test]
+fn only_float_heavy_code_runs_under_daz() {
+    if !crate::supported_variants().contains(&Variant::Jit) {
+        return;
+    }
+    let palette = super::kernel(
+        glsl::ir::Stage::Fragment,
+        "#version 330
+        layout(std140) uniform Palette { vec4 colours[64]; };
+        uniform int layer;
+        flat in int index;
+        out vec4 frag;
+        void main() { frag = vec4(colours[(index ^ layer) & 63].rgb, 0.25); }",
+    );
+    let float = super::kernel(
+        glsl::ir::Stage::Fragment,
+        "#version 330
+        uniform vec4 scale;
+        in vec4 v;
+        out vec4 frag;
+        void main() {
+            vec4 x = v * scale + vec4(1e-38);
+            frag = pow(abs(x), vec4(1.5)) * x.wzyx - x * x * 0.5 + normalize(x) * length(x.xyz);
+        }",
+    );
+    let daz = crate::jit::daz();
+    for (k, want) in [(&palette, false), (&float, daz)] {
+        let u: Vec<u32> = (0..k.interface().uniform_words)
+            .map(|i| (i as u32).wrapping_mul(0x2f3b_5a11) & 0x80ff_ffff)
+            .collect();
+        for round in 0..8u32 {
+            let mut base = Batch::for_kernel(k, 0xffff);
+            super::variants::fill(&mut base, round + 5);
+            let mut want_out = base.clone();
+            assert_eq!(k.run_reference(&mut want_out, &u, &NoTextures), Ok(()));
+            let mut got = base.clone();
+            assert_eq!(
+                k.run_variant(Variant::Jit, &mut got, &u, &NoTextures),
+                Ok(())
+            );
+            assert_eq!(
+                bits_of(&got.outputs),
+                bits_of(&want_out.outputs),
+                "round {round}"
+            );
+        }
+        assert_eq!(k.jit.runs_under_daz(), Some(want));
+    }
+}

@@ -1,7 +1,7 @@
 //! Texel fetches through every executor: native code loads the texels of
 //! the levels `Textures::texel_level` gives itself, and must compute the
 //! bits `Textures::fetch` gives (the reference interpreter's and the
-//! portable executor's): both storage formats, coordinates outside the
+//! portable executor's): every storage format, coordinates outside the
 //! level on every side, offsets, levels, arrays and 1D targets, lanes off,
 //! lanes reading different levels (which go back to `fetch`); size
 //! queries, hoisted into the prologue for a uniform sampler and level,
@@ -15,16 +15,30 @@ use crate::{
 use glsl::ir::Stage;
 use glsl::types::SamplerKind;
 
+/// How a test level stores its texels.
+#[derive(Clone, Copy, PartialEq)]
+enum Store {
+    Rgba32,
+    Unorm8,
+    /// 16-bit red, sign-extended when `true` (`TexelSlice::Red16`).
+    Red16(bool),
+}
+
 /// One level of a test texture.
 struct Level {
     size: [u32; 3],
     axes: u32,
     rgba32: Vec<[f32; 4]>,
     unorm8: Vec<[u8; 4]>,
+    red16: Vec<u16>,
+    store: Store,
 }
 
+/// Green, blue and alpha of every texel of a 16-bit red level.
+const REST: [u32; 3] = [0, 7, 1];
+
 impl Level {
-    fn new(size: [u32; 3], axes: u32, unorm: bool, seed: u32) -> Level {
+    fn new(size: [u32; 3], axes: u32, store: Store, seed: u32) -> Level {
         let n = (size[0] * size[1] * size[2]) as usize;
         let mut s = seed | 1;
         let mut next = || {
@@ -38,18 +52,22 @@ impl Level {
             axes,
             rgba32: Vec::new(),
             unorm8: Vec::new(),
+            red16: Vec::new(),
+            store,
         };
         for i in 0..n {
-            if unorm {
-                level.unorm8.push(next().to_le_bytes());
-            } else {
-                // Any bits, subnormals among them (a float fetch flushes
-                // them).
-                let mut t = [0, 1, 2, 3].map(|_| f32::from_bits(next()));
-                if i % 3 == 0 {
-                    t[1] = f32::from_bits(next() & 0x807f_ffff);
+            match store {
+                Store::Unorm8 => level.unorm8.push(next().to_le_bytes()),
+                Store::Red16(_) => level.red16.push(next() as u16),
+                Store::Rgba32 => {
+                    // Any bits, subnormals among them (a float fetch
+                    // flushes them).
+                    let mut t = [0, 1, 2, 3].map(|_| f32::from_bits(next()));
+                    if i % 3 == 0 {
+                        t[1] = f32::from_bits(next() & 0x807f_ffff);
+                    }
+                    level.rgba32.push(t);
                 }
-                level.rgba32.push(t);
             }
         }
         level
@@ -63,15 +81,24 @@ impl Level {
         }
         let [w, h, _] = self.size.map(|s| s as usize);
         let i = (c[2] as usize * h + c[1] as usize) * w + c[0] as usize;
-        if self.unorm8.is_empty() {
-            self.rgba32[i]
-        } else {
-            self.unorm8[i].map(|b| b as f32 / 255.0)
+        match self.store {
+            Store::Rgba32 => self.rgba32[i],
+            Store::Unorm8 => self.unorm8[i].map(|b| b as f32 / 255.0),
+            Store::Red16(signed) => {
+                let r = self.red16[i];
+                let r = if signed {
+                    r as i16 as i32 as u32
+                } else {
+                    r as u32
+                };
+                [r, REST[0], REST[1], REST[2]].map(f32::from_bits)
+            }
         }
     }
 }
 
-/// Units 0 (2D, two levels), 1 (2D bytes), 2 (2D array) and 3 (1D).
+/// Units 0 (2D, two levels), 1 (2D bytes), 2 (2D array), 3 (1D), 4 (2D
+/// 16-bit red) and 5 (2D 16-bit signed red).
 struct Grid {
     units: Vec<Vec<Level>>,
 }
@@ -81,12 +108,14 @@ impl Grid {
         Grid {
             units: vec![
                 vec![
-                    Level::new([6, 5, 1], 2, false, 11),
-                    Level::new([3, 2, 1], 2, false, 12),
+                    Level::new([6, 5, 1], 2, Store::Rgba32, 11),
+                    Level::new([3, 2, 1], 2, Store::Rgba32, 12),
                 ],
-                vec![Level::new([7, 4, 1], 2, true, 13)],
-                vec![Level::new([5, 3, 4], 3, false, 14)],
-                vec![Level::new([9, 1, 1], 1, false, 15)],
+                vec![Level::new([7, 4, 1], 2, Store::Unorm8, 13)],
+                vec![Level::new([5, 3, 4], 3, Store::Rgba32, 14)],
+                vec![Level::new([9, 1, 1], 1, Store::Rgba32, 15)],
+                vec![Level::new([8, 6, 1], 2, Store::Red16(false), 16)],
+                vec![Level::new([5, 7, 1], 2, Store::Red16(true), 17)],
             ],
         }
     }
@@ -132,10 +161,14 @@ impl Textures for Grid {
         Some(TexelLevel {
             size: level.size,
             axes: level.axes,
-            texels: if level.unorm8.is_empty() {
-                TexelSlice::Rgba32(&level.rgba32)
-            } else {
-                TexelSlice::Unorm8(&level.unorm8)
+            texels: match level.store {
+                Store::Rgba32 => TexelSlice::Rgba32(&level.rgba32),
+                Store::Unorm8 => TexelSlice::Unorm8(&level.unorm8),
+                Store::Red16(signed) => TexelSlice::Red16 {
+                    red: &level.red16,
+                    signed,
+                    rest: REST,
+                },
             },
         })
     }
@@ -150,6 +183,8 @@ fn native_texel_fetches_are_the_textures_fetches() {
         uniform sampler2D bytes;
         uniform sampler2DArray layers;
         uniform isampler1D line;
+        uniform usampler2D narrow;
+        uniform isampler2D signed_narrow;
         uniform int lod;
         in vec4 v;
         out uvec4 a;
@@ -168,6 +203,9 @@ fn native_texel_fetches_are_the_textures_fetches() {
             // axes held at 0).
             e += ivec4(texelFetch(ui, ivec2(p.x, 2), 0)) + texelFetch(line, 3, 0)
                 + ivec4(texelFetch(layers, ivec3(p.y, 0, 1), 0));
+            // 16-bit red levels, zero- and sign-extended.
+            a += texelFetch(narrow, p - 2, 0);
+            d += texelFetch(signed_narrow, p.yx - 1, 0);
             // Sizes of a uniform level (hoisted into the prologue) and
             // of per-lane levels.
             e += ivec4(textureSize(ui, lod), textureSize(layers, 0).z + textureSize(line, 0),
@@ -189,6 +227,8 @@ fn native_texel_fetches_are_the_textures_fetches() {
                 ("bytes", &[1]),
                 ("layers", &[2]),
                 ("line", &[3]),
+                ("narrow", &[4]),
+                ("signed_narrow", &[5]),
                 ("lod", &[level]),
             ],
         );

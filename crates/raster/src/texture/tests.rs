@@ -207,3 +207,45 @@ fn last_level_matches_the_reference() {
     }
     assert!(complete > 400, "{complete} complete");
 }
+
+/// One-channel integer levels keep 16 bits of red when every texel fits
+/// (zero-extended, or sign-extended when some red is negative) and read
+/// back bit for bit; anything else stays f32.
+#[test]
+fn red16_levels_keep_the_texels_bits() {
+    let texel = |r: u32, a: u32| [r, 0, 0, a].map(f32::from_bits);
+    let cases: [(Vec<[f32; 4]>, Option<bool>); 5] = [
+        (
+            vec![texel(0, 1), texel(65535, 1), texel(300, 1)],
+            Some(false),
+        ),
+        (
+            vec![
+                texel(-2i32 as u32, 1),
+                texel(32767, 1),
+                texel(-32768i32 as u32, 1),
+            ],
+            Some(true),
+        ),
+        // Red past 16 bits either way.
+        (vec![texel(65536, 1), texel(1, 1)], None),
+        (vec![texel(-1i32 as u32, 1), texel(40000, 1)], None),
+        // Alpha not the same everywhere.
+        (vec![texel(5, 1), texel(6, 2)], None),
+    ];
+    for (texels, want) in cases {
+        let img = Image::new(texels.len() as u32, 1, 1, texels.clone());
+        match (&img.texels, want) {
+            (Texels::Red16(r), Some(signed)) => assert_eq!(r.signed, signed),
+            (Texels::F32(_), None) => {}
+            (t, _) => panic!("{t:?} for {want:?}"),
+        }
+        for (i, t) in texels.iter().enumerate() {
+            assert_eq!(img.texel_at(i).map(f32::to_bits), t.map(f32::to_bits));
+        }
+        assert_eq!(
+            img.texel_at(texels.len()).map(f32::to_bits),
+            MISSING.map(f32::to_bits)
+        );
+    }
+}

@@ -85,6 +85,8 @@ impl Checked {
             match img.texels {
                 Texels::Unorm8(_) => unorm8 += 1,
                 Texels::F32(_) => float += 1,
+                // Integer levels: the general path's.
+                Texels::Red16(_) => short = true,
             }
         }
         let kind = if short || (unorm8 != 0 && float != 0) {

@@ -805,6 +805,13 @@ fn shared_fetches_match_the_lane_path() {
                     match level.texels {
                         TexelSlice::Rgba32(t) => t[i],
                         TexelSlice::Unorm8(t) => t[i].map(|b| b as f32 / 255.0),
+                        TexelSlice::Red16 { red, signed, rest } => {
+                            let r = match signed {
+                                true => red[i] as i16 as i32 as u32,
+                                false => red[i] as u32,
+                            };
+                            [r, rest[0], rest[1], rest[2]].map(f32::from_bits)
+                        }
                     }
                 } else {
                     [0.0, 0.0, 0.0, 1.0]

@@ -33,6 +33,7 @@ impl<'a, 'b> Emit<'a, 'b> {
     /// callback operands).
     pub(super) fn ftz(&mut self, x: Value) -> Value {
         if self.daz {
+            self.uses.daz_flushes += 1;
             return self.iv(x);
         }
         self.flushed(x)
@@ -60,7 +61,7 @@ impl<'a, 'b> Emit<'a, 'b> {
 
     /// Uniform words (I32X4) as read: [`Self::ftz`] for a float's.
     pub(super) fn ftz_word(&mut self, float: bool, v: Value) -> Value {
-        if float && !self.daz {
+        if float {
             let x = self.fv(v);
             self.ftz(x)
         } else {

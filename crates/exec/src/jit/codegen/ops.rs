@@ -46,6 +46,7 @@ impl<'a, 'b> Emit<'a, 'b> {
         b: Reg,
         masked: bool,
     ) {
+        self.uses.math_calls += 1;
         let out = self
             .b
             .ins()

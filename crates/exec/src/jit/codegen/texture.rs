@@ -72,16 +72,28 @@ impl<'a, 'b> Emit<'a, 'b> {
             .iadd_imm_s(self.ctx, offset_of!(Ctx, view) as i64);
         self.branch_to_view(ok, native, own, join);
         self.b.switch_to_block(native);
-        let (rgba32, unorm8) = (self.b.create_block(), self.b.create_block());
+        // One block per storage the view may have (16-bit red only for
+        // integer results: `jit::fetch_view`).
+        let mut formats = vec![View::RGBA32, View::UNORM8];
+        if t.target.result() != SamplerResult::Float {
+            formats.extend([View::RED16, View::RED16_SIGNED]);
+        }
         let format = self.view_word(view, offset_of!(View, format));
-        let is_unorm8 = self
-            .b
-            .ins()
-            .icmp_imm_u(IntCC::Equal, format, View::UNORM8 as i64);
-        self.b.ins().brif(is_unorm8, unorm8, &[], rgba32, &[]);
-        for (block, unorm) in [(rgba32, false), (unorm8, true)] {
+        let blocks: Vec<Block> = formats.iter().map(|_| self.b.create_block()).collect();
+        // A chain of tests, the last format taken without one.
+        for (k, (&f, &block)) in formats.iter().zip(&blocks).enumerate() {
+            if k + 1 == blocks.len() {
+                self.b.ins().jump(block, &[]);
+                break;
+            }
+            let is = self.b.ins().icmp_imm_u(IntCC::Equal, format, f as i64);
+            let next = self.b.create_block();
+            self.b.ins().brif(is, block, &[], next, &[]);
+            self.b.switch_to_block(next);
+        }
+        for (&f, &block) in formats.iter().zip(&blocks) {
             self.b.switch_to_block(block);
-            self.fetch_texels(&t, view, unorm, op);
+            self.fetch_texels(&t, view, f, op);
             // Only loads were held: nothing to store, nothing valid at
             // the join.
             self.cache = Default::default();
@@ -127,9 +139,9 @@ impl<'a, 'b> Emit<'a, 'b> {
     }
 
     /// The texels of fetch `t` (run by op `op`) from the view at `view`
-    /// (RGBA bytes when `unorm`, else RGBA `f32` bits) into those of its
-    /// result registers read afterwards.
-    fn fetch_texels(&mut self, t: &TexOp, view: Value, unorm: bool, op: u32) {
+    /// (stored as `format`, a `View` format) into those of its result
+    /// registers read afterwards.
+    fn fetch_texels(&mut self, t: &TexOp, view: Value, format: u32, op: u32) {
         let at = offset_of!(View, texels) as i32;
         let base = self.b.ins().load(self.ptr, mem(), view, at);
         let size: [Value; 3] = std::array::from_fn(|a| {
@@ -191,10 +203,12 @@ impl<'a, 'b> Emit<'a, 'b> {
                 (None, None) => self.splat(0),
             };
             let index = self.b.ins().band(index, inside);
-            let texel = if unorm {
-                self.unorm8_texels(base, index)
-            } else {
-                self.rgba32_texels(base, index)
+            let texel = match format {
+                View::UNORM8 => self.unorm8_texels(base, index),
+                View::RED16 | View::RED16_SIGNED => {
+                    self.red16_texels(base, index, view, format == View::RED16_SIGNED)
+                }
+                _ => self.rgba32_texels(base, index),
             };
             for (k, v) in texel.into_iter().enumerate() {
                 let d = t.d + k as u32;
@@ -257,6 +271,25 @@ impl<'a, 'b> Emit<'a, 'b> {
             self.lanes_of2(hi01, hi23, [0, 1, 4, 5]),
             self.lanes_of2(hi01, hi23, [2, 3, 6, 7]),
         ]
+    }
+
+    /// R, G, B and A of four 16-bit red texels: red widened (`signed`:
+    /// sign-extended), the others the view's `rest`.
+    fn red16_texels(&mut self, base: Value, index: Value, view: Value, signed: bool) -> [Value; 4] {
+        let mut red = self.splat(0);
+        for l in 0..4u8 {
+            let p = self.texel_address(base, index, l, 1);
+            let w = match signed {
+                true => self.b.ins().sload16(I32, mem(), p, 0),
+                false => self.b.ins().uload16(I32, mem(), p, 0),
+            };
+            red = self.b.ins().insertlane(red, w, l);
+        }
+        let [g, b, a] = std::array::from_fn(|k| {
+            let w = self.view_word(view, offset_of!(View, rest) + 4 * k);
+            self.b.ins().splat(I32X4, w)
+        });
+        [red, g, b, a]
     }
 
     /// R, G, B and A of four RGBA8 texels, each byte `b` as `b / 255`
