@@ -1001,6 +1001,19 @@ impl Kernel {
                     .any(|op| matches!(op, Op::DdX { .. } | Op::DdY { .. })))
     }
 
+    /// Whether a run reads input component `c` (an index into
+    /// `Batch::inputs`): some op of the optimized program reads the
+    /// register it is loaded into. The others need not be filled.
+    pub fn reads_input(&self, c: usize) -> bool {
+        self.inputs.iter().filter(|i| i.0 == c).any(|&(_, r, _)| {
+            let reads = |op: &program::Op| {
+                let e = liveness::effects(&self.code.prog, op);
+                e.uses.iter().any(|&(u, n)| r >= u && r - u < n.max(1))
+            };
+            self.code.ins.iter().any(|i| reads(&i.op)) || self.code.prologue.iter().any(reads)
+        })
+    }
+
     /// Whether every run returns `Ok`: the program has no loop, so no
     /// run can exceed the loop budget ([`ExecError::LoopBudget`], the
     /// only error a compiled kernel's run gives). A renderer may then

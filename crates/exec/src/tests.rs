@@ -1396,3 +1396,38 @@ void main() {
     );
     assert_eq!(c[0], [3.0, 5.0, 1.0, 0.0]);
 }
+
+/// `Kernel::reads_input` names the input components some op reads: the
+/// components of a vector input and of gl_FragCoord the shader never
+/// uses are left out, and a component read only to be overwritten is
+/// not needed either.
+#[test]
+fn reads_input_is_per_component() {
+    let k = kernel(
+        Stage::Fragment,
+        "#version 130
+        in vec4 v;
+        in vec2 w;
+        out vec4 o;
+        void main() {
+            vec2 t = w;
+            t.y = 2.0;
+            o = vec4(v.xy, gl_FragCoord.x, t.x + t.y + gl_FragCoord.w);
+        }",
+    );
+    let offset = |name: &str| {
+        let s = k.interface().inputs.iter().find(|s| s.name == name);
+        s.unwrap_or_else(|| panic!("no input {name}")).offset
+    };
+    let (v, w, fc) = (offset("v"), offset("w"), offset("gl_FragCoord"));
+    let reads = |c: usize| k.reads_input(c);
+    assert_eq!(
+        [0, 1, 2, 3].map(|i| reads(v + i)),
+        [true, true, false, false]
+    );
+    assert_eq!([0, 1].map(|i| reads(w + i)), [true, false]);
+    assert_eq!(
+        [0, 1, 2, 3].map(|i| reads(fc + i)),
+        [true, false, false, true]
+    );
+}

@@ -358,6 +358,14 @@ pub trait ShaderStage: Sync {
         false
     }
 
+    /// Whether a run reads input component `c` (`exec::Kernel::reads_input`).
+    /// The default: whether the interface marks the input slot holding it
+    /// read.
+    fn reads_input(&self, c: usize) -> bool {
+        (self.interface().inputs.iter())
+            .any(|s| s.written && (s.offset..s.offset + s.components).contains(&c))
+    }
+
     /// Whether every run returns `Ok` (`exec::Kernel::always_completes`):
     /// the fragment stage may then write each tile back as soon as it is
     /// shaded, as no later failure can ask for the tiles after a failing
@@ -443,6 +451,9 @@ impl ShaderStage for ex::Kernel {
     }
     fn always_completes(&self) -> bool {
         ex::Kernel::always_completes(self)
+    }
+    fn reads_input(&self, c: usize) -> bool {
+        ex::Kernel::reads_input(self, c)
     }
     fn lanes_independent(&self) -> bool {
         ex::Kernel::lanes_independent(self)

@@ -263,6 +263,9 @@ pub(crate) struct FragmentStage<'a> {
     /// debugger's probe. Without them the batched and deferred loops
     /// leave it out.
     window_z: bool,
+    /// Whether a stage reads gl_FragCoord's z and w (the fills leave out
+    /// what none reads).
+    frag_zw: [bool; 2],
     /// The precision of the target's depth buffer (its fixed-point form of
     /// a window z).
     pub depth_format: DepthFormat,
@@ -292,14 +295,8 @@ impl<'a> FragmentStage<'a> {
         deferred: Option<Box<dyn ShaderStage>>,
         probe: Option<&'a Probe>,
     ) -> FragmentStage<'a> {
-        let read_by = |stage: &dyn ShaderStage, offset: usize| {
-            probe.is_some()
-                || stage
-                    .interface()
-                    .inputs
-                    .iter()
-                    .any(|s| s.written && (s.offset..s.offset + s.components).contains(&offset))
-        };
+        let read_by =
+            |stage: &dyn ShaderStage, offset: usize| probe.is_some() || stage.reads_input(offset);
         let plan = |stage: &dyn ShaderStage| -> Vec<FillLink> {
             layout
                 .links
@@ -319,8 +316,15 @@ impl<'a> FragmentStage<'a> {
                 .collect()
         };
         let fills = plan(shader);
+        // gl_FragCoord's z and w only when a stage reads them.
+        let read = |c: usize| {
+            read_by(shader, c) || deferred.as_ref().is_some_and(|d| read_by(d.as_ref(), c))
+        };
+        let frag_zw = layout
+            .frag_coord
+            .map_or([false; 2], |o| [read(o + 2), read(o + 3)]);
         let window_z = probe.is_some()
-            || layout.frag_coord.is_some()
+            || frag_zw[0]
             || (layout.frag_depth.is_none() && state.depth_test.is_some());
         let strips = strips_allowed()
             && probe.is_none()
@@ -359,6 +363,7 @@ impl<'a> FragmentStage<'a> {
                 .collect(),
             early: layout.frag_depth.is_none(),
             window_z,
+            frag_zw,
             depth_format: DepthFormat::Bits24,
             strips,
             clear_outputs: probe.is_some() || !shader.writes_every_output(),
@@ -757,7 +762,11 @@ impl<'a> FragmentStage<'a> {
                 Shape::Point { .. } => point_coords(quad, prim, order),
                 _ => [(0.0, 0.0); 4],
             };
-            let inv_w = planes.inv_w_at(&x, &y);
+            let [frag_z, frag_w] = self.frag_zw;
+            let inv_w = match frag_w {
+                true => planes.inv_w_at(&x, &y),
+                false => [0.0; 4],
+            };
             // (An index loop: the zipped iterator's state went through
             // memory with a store-forwarding stall.)
             for (i, &k) in order.iter().enumerate().take(count) {
@@ -770,8 +779,12 @@ impl<'a> FragmentStage<'a> {
                 if let Some(o) = layout.frag_coord {
                     set(batch, o, lane, px as f32 + 0.5);
                     set(batch, o + 1, lane, py as f32 + 0.5);
-                    set(batch, o + 2, lane, quad.z[k] as f32);
-                    set(batch, o + 3, lane, inv_w[i]);
+                    if frag_z {
+                        set(batch, o + 2, lane, quad.z[k] as f32);
+                    }
+                    if frag_w {
+                        set(batch, o + 3, lane, inv_w[i]);
+                    }
                 }
                 if let Some(o) = layout.front_facing {
                     set(batch, o, lane, if prim.back { 0.0 } else { 1.0 });
@@ -874,12 +887,17 @@ impl<'a> FragmentStage<'a> {
                 fx[l] = cx + STRIP_X[l];
                 fy[l] = cy + STRIP_Y[l];
             }
-            for (q, e) in slots.iter().enumerate() {
-                for k in 0..4 {
-                    fz[4 * q + k] = e.quad.z[k] as f32;
+            let [frag_z, frag_w] = self.frag_zw;
+            if frag_z {
+                for (q, e) in slots.iter().enumerate() {
+                    for k in 0..4 {
+                        fz[4 * q + k] = e.quad.z[k] as f32;
+                    }
                 }
             }
-            *fw = prim.planes.inv_w_at(x, y);
+            if frag_w {
+                *fw = prim.planes.inv_w_at(x, y);
+            }
         }
         if let Some(o) = self.layout.front_facing {
             let facing = if prim.back { 0.0 } else { 1.0 };

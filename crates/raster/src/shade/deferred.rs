@@ -427,7 +427,7 @@ impl<'a> FragmentStage<'a> {
         let mut used = 0;
         // The depth tests are behind: the window z only for gl_FragCoord
         // or the probe.
-        let window_z = self.layout.frag_coord.is_some() || self.probe.is_some();
+        let window_z = self.frag_zw[0] || self.probe.is_some();
         for ly in (0..h).step_by(2) {
             for lx in (0..w).step_by(2) {
                 // The quad's pixels (lane order) and their winners.
