@@ -314,7 +314,7 @@ fn store_outputs_with(k: &Kernel, file: &[Lanes], batch: &mut Batch) {
 #[inline(always)]
 fn read_in_pieces(src: &Lanes) -> Lanes {
     #[cfg(target_arch = "x86_64")]
-    if (src.as_ptr() as usize) % 16 == 0 {
+    if (src.as_ptr() as usize).is_multiple_of(16) {
         use std::arch::x86_64::__m128i;
         let p = src.as_ptr().cast::<__m128i>();
         // Volatile: the loads stay four (not merged into one wide load).
