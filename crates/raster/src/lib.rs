@@ -29,7 +29,9 @@
 //! copy of its pixels and runs its primitives in draw order (the chunks'
 //! lists in chunk order), and the tiles are written back by bands of tile
 //! rows (disjoint rows of the framebuffer), each band a task, up to the
-//! first failed tile. No value is combined across tasks, and
+//! first failed tile; a fragment program that cannot fail
+//! ([`ShaderStage::always_completes`]) has each task write its tile back
+//! through its own rows as soon as it is done. No value is combined across tasks, and
 //! textures are read-only, so the framebuffer is bit-identical whatever the
 //! thread count. A shader error (`exec::ExecError`, e.g. the loop budget)
 //! ends the draw as running the tiles one after the other would: tiles
