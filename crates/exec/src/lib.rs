@@ -608,6 +608,9 @@ pub struct Kernel {
     /// once: draws and dispatches ask every time).
     writes_memory: bool,
     calls_barrier: bool,
+    /// Per input component: whether an op reads it ([`Kernel::reads_input`],
+    /// found once: each draw asks).
+    read_inputs: Vec<bool>,
     /// The program optimized for the executors ([`dispatch::run`]).
     code: std::sync::Arc<opt::Code>,
     /// [`Kernel::depth_only`], computed on first use (shared by clones).
@@ -615,6 +618,29 @@ pub struct Kernel {
     /// Native code for `code`, made on demand (shared by clones).
     #[cfg(feature = "jit")]
     jit: std::sync::Arc<jit::Cache>,
+}
+
+/// Per input component of `inputs` (component, register, kind): whether
+/// an op of `code` reads its register ([`Kernel::reads_input`]).
+fn read_inputs(code: &opt::Code, inputs: &[(usize, u32, glsl::types::Scalar)]) -> Vec<bool> {
+    let mut read = vec![false; code.prog.registers as usize];
+    let ops = code.ins.iter().map(|i| &i.op).chain(&code.prologue);
+    for op in ops {
+        for &(u, n) in &liveness::effects(&code.prog, op).uses {
+            let (u, n) = (u as usize, n.max(1) as usize);
+            if let Some(r) = read.get_mut(u..(u + n).min(code.prog.registers as usize)) {
+                r.fill(true);
+            }
+        }
+    }
+    let components = inputs.iter().map(|i| i.0 + 1).max().unwrap_or(0);
+    let mut out = vec![false; components];
+    for &(c, r, _) in inputs {
+        if let (Some(o), Some(&true)) = (out.get_mut(c), read.get(r as usize)) {
+            *o = true;
+        }
+    }
+    out
 }
 
 /// A kernel's uniform-only values, computed once for a set of uniform
@@ -688,6 +714,7 @@ impl Kernel {
         let live_out: Vec<u32> = outputs.iter().map(|&(r, _, _)| r).collect();
         let code = std::sync::Arc::new(opt::optimize(&program, &live_out));
         let (writes_memory, calls_barrier) = (code.prog.writes_memory(), code.prog.calls_barrier());
+        let read_inputs = read_inputs(&code, &inputs);
         Kernel {
             stage,
             program,
@@ -697,6 +724,7 @@ impl Kernel {
             loop_budget,
             writes_memory,
             calls_barrier,
+            read_inputs,
             code,
             depth: Default::default(),
             #[cfg(feature = "jit")]
@@ -1005,13 +1033,7 @@ impl Kernel {
     /// `Batch::inputs`): some op of the optimized program reads the
     /// register it is loaded into. The others need not be filled.
     pub fn reads_input(&self, c: usize) -> bool {
-        self.inputs.iter().filter(|i| i.0 == c).any(|&(_, r, _)| {
-            let reads = |op: &program::Op| {
-                let e = liveness::effects(&self.code.prog, op);
-                e.uses.iter().any(|&(u, n)| r >= u && r - u < n.max(1))
-            };
-            self.code.ins.iter().any(|i| reads(&i.op)) || self.code.prologue.iter().any(reads)
-        })
+        self.read_inputs.get(c).copied().unwrap_or(false)
     }
 
     /// Whether every run returns `Ok`: the program has no loop, so no

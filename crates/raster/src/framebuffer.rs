@@ -146,17 +146,15 @@ impl TileView<'_> {
     }
 }
 
-/// Pushes the rows of `buf` (rows of `width` elements) that belong to
-/// the tiles `wanted` (indices into a grid of `size`-square tiles, `cols`
-/// per row, sorted) to `out[i]` for `wanted[i]`, bottom row first.
+/// The rows of `buf` (rows of `width` elements) that belong to the tiles
+/// `wanted` (sorted indices into a grid of `size`-square tiles, `cols`
+/// per row): entry `i` holds `wanted[i]`'s rows, bottom row first.
 fn split_tiles<'a, T>(
     buf: &'a mut [T],
-    width: usize,
-    size: usize,
-    cols: usize,
+    (width, size, cols): (usize, usize, usize),
     wanted: &[usize],
-    out: &mut [Vec<&'a mut [T]>],
-) {
+) -> Vec<Vec<&'a mut [T]>> {
+    let mut out: Vec<Vec<&mut [T]>> = (0..wanted.len()).map(|_| Vec::new()).collect();
     let (width, size, cols) = (width.max(1), size.max(1), cols.max(1));
     for (ty, band) in buf.chunks_mut(width * size).enumerate() {
         let first = wanted.partition_point(|&t| t / cols < ty);
@@ -179,6 +177,7 @@ fn split_tiles<'a, T>(
             }
         }
     }
+    out
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -532,37 +531,28 @@ impl Framebuffer {
                 stencil: None,
             })
             .collect();
-        fn split<'a, T>(
-            buf: &'a mut [T],
-            (width, size, cols): (usize, usize, usize),
-            wanted: &[usize],
-        ) -> Vec<Vec<&'a mut [T]>> {
-            let mut out: Vec<Vec<&mut [T]>> = (0..wanted.len()).map(|_| Vec::new()).collect();
-            split_tiles(buf, width, size, cols, wanted, &mut out);
-            out
-        }
         let grid = (width, size, cols);
         for c in self.color.iter_mut() {
             match c {
                 ColorBuffer::Rgba8(v) => {
-                    for (view, rows) in views.iter_mut().zip(split(v, grid, wanted)) {
+                    for (view, rows) in views.iter_mut().zip(split_tiles(v, grid, wanted)) {
                         view.color.push(TileColor::Rgba8(rows));
                     }
                 }
                 ColorBuffer::Rgba32F(v) => {
-                    for (view, rows) in views.iter_mut().zip(split(v, grid, wanted)) {
+                    for (view, rows) in views.iter_mut().zip(split_tiles(v, grid, wanted)) {
                         view.color.push(TileColor::Rgba32F(rows));
                     }
                 }
             }
         }
         if let Some(d) = self.depth.as_mut().filter(|_| depth) {
-            for (view, rows) in views.iter_mut().zip(split(d, grid, wanted)) {
+            for (view, rows) in views.iter_mut().zip(split_tiles(d, grid, wanted)) {
                 view.depth = Some(rows);
             }
         }
         if let Some(st) = self.stencil.as_mut().filter(|_| stencil) {
-            for (view, rows) in views.iter_mut().zip(split(st, grid, wanted)) {
+            for (view, rows) in views.iter_mut().zip(split_tiles(st, grid, wanted)) {
                 view.stencil = Some(rows);
             }
         }

@@ -425,6 +425,7 @@ fn kernel_of_code(code: Code, budget: u64, outputs: &[Reg]) -> Kernel {
         loop_budget: budget,
         writes_memory: code.prog.writes_memory(),
         calls_barrier: code.prog.calls_barrier(),
+        read_inputs: vec![true; REGS as usize],
         code: std::sync::Arc::new(code),
         depth: Default::default(),
         jit: Default::default(),

@@ -74,7 +74,7 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
             return Err("memory accesses are interpreted".to_string());
         }
     }
-    let daz = super::daz();
+    let mut daz = super::daz();
     let isa = isa()?;
     let mut module = JITModule::new(JITBuilder::with_isa(isa.clone(), default_libcall_names()));
     let mut r = define(&mut module, code, daz);
@@ -87,10 +87,10 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
             // SAFETY: nothing of the module was handed out.
             unsafe { module.free_memory() };
             module = JITModule::new(JITBuilder::with_isa(isa, default_libcall_names()));
-            r = define(&mut module, code, false);
+            daz = false;
+            r = define(&mut module, code, daz);
         }
     }
-    let daz = r.as_ref().is_ok_and(|(_, _, _, uses)| uses.daz);
     match r {
         Ok((id, bytes, consts, _)) => {
             if let Err(e) = module.finalize_definitions() {
@@ -127,15 +127,14 @@ pub(super) fn compile(code: &Code) -> Result<Native, String> {
 }
 
 /// Flush sites (4 lanes each) up to which code runs without DAZ
-/// ([`compile`]): about 64 × 4 instructions against the two MXCSR writes
-/// of a run, measured on core-itex (3 float uniform gathers, 12 sites).
+/// ([`compile`]): an estimate, about 64 × 4 instructions against the two
+/// MXCSR writes of a run. core-itex (3 float uniform gathers, 12 sites)
+/// measured faster without DAZ; no scene near the bound was measured.
 const NO_DAZ_FLUSHES: u32 = 64;
 
 /// What compiled code relies on, for [`compile`]'s choice of DAZ.
 #[derive(Clone, Copy, Debug, Default)]
 struct Uses {
-    /// Compiled for DAZ.
-    daz: bool,
     /// 4-lane flushes left out because DAZ does them.
     daz_flushes: u32,
     /// Calls of the math helpers (`jit_f1`, `jit_f2`).
@@ -430,10 +429,7 @@ impl<'a, 'b> Emit<'a, 'b> {
             store_now: None,
             full: false,
             daz,
-            uses: Uses {
-                daz,
-                ..Uses::default()
-            },
+            uses: Uses::default(),
             prologue: false,
             divisors: Default::default(),
         };
