@@ -150,7 +150,7 @@ impl OsContext {
         } else {
             w
         };
-        let fb = self.gl.default_framebuffer();
+        let (fb, workers) = self.gl.default_framebuffer();
         // SAFETY: OSMesaMakeCurrent's contract: `buffer` holds at least
         // row_length * height pixels of the format and type given there
         // (row_length >= width), and stays valid while the context uses it.
@@ -163,7 +163,7 @@ impl OsContext {
             (self.format, self.ty, fb.color.first())
         {
             if (fb.width as usize, fb.height as usize) == (w, h) && color.len() >= w * h {
-                copy_rgba8_rows(color, (w, h), row_px, self.y_up, out, self.gl.workers());
+                copy_rgba8_rows(color, (w, h), row_px, self.y_up, out, workers);
                 return;
             }
         }
@@ -220,7 +220,7 @@ impl OsContext {
         if self.depth_bits <= 0 || !self.sized {
             return None;
         }
-        let fb = self.gl.default_framebuffer();
+        let (fb, _) = self.gl.default_framebuffer();
         let depth = fb.depth.as_ref()?;
         if self.depth_bits <= 16 {
             // 24-bit fixed point to 16-bit: keep the top bits.

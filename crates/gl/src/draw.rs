@@ -10,8 +10,10 @@
 //! ([`crate::fetch`]), the GL state as [`raster::PipelineState`]
 //! ([`crate::pipeline_state`]), the bound textures
 //! ([`crate::texture_units`]) and the render target
-//! ([`crate::render_target`]), and runs [`raster::draw_on`]. Debug probes
-//! and views ([`crate::debug`]) replay the same draw.
+//! ([`crate::render_target`]), and runs [`raster::draw_on`], or, for a
+//! draw into the default framebuffer whose fragment stage cannot fail,
+//! pushes it on the context's [`raster::DrawQueue`] (`draw_waits` says
+//! when). Debug probes and views ([`crate::debug`]) replay the same draw.
 //!
 //! A draw the executor stops (loop budget) keeps the fragments already
 //! written; the message is kept for [`Context::take_draw_error`] (GL has
@@ -544,13 +546,11 @@ impl Context {
         let fs_user = ff_shape.is_none();
         // The fixed-function fragment stage runs without the engine where
         // it can (the same bits: `ff_fragment`).
-        let ff = ff_shape
-            .as_ref()
-            .map(|shape| crate::ff_fragment::FixedFragment::new(&fs, shape));
-        let fs_stage: &dyn raster::ShaderStage = match &ff {
-            Some(ff) => ff,
-            None => &*fs,
+        let shader: Arc<dyn raster::ShaderStage + Send + Sync> = match &ff_shape {
+            Some(shape) => Arc::new(crate::ff_fragment::FixedFragment::new(fs.clone(), shape)),
+            None => fs.clone(),
         };
+        let fs_stage = &*shader;
         let vs_words = self.uniform_words(&vs, vs_user);
         let gs_words = gs.as_ref().map(|g| self.uniform_words(g, true));
         let gs_stage = gs.as_deref().zip(gs_words.as_deref());
@@ -565,6 +565,34 @@ impl Context {
         let mem = self.storage_memory(&stages);
         let serial = stages.iter().any(|k| k.writes_memory());
         units.memory = mem.clone().map(|m| m as Arc<dyn exec::Memory + Send>);
+        if self.draw_waits(gs.is_some(), mem.is_some()) {
+            let mut target = self.default_target();
+            let mut state = self.pipeline_state(&target);
+            state.primitive_ids = ids;
+            let mut queue = std::mem::take(&mut self.queued);
+            let fetch = Fetcher::new(self, &vs, immediate, batch);
+            let fragments = raster::QueuedFragments {
+                shader: shader.clone(),
+                uniforms: fs_words,
+                textures: units,
+            };
+            let r = queue.push(
+                &self.workers,
+                &mut target.fb,
+                &state,
+                (&*vs, &vs_words),
+                None,
+                fragments,
+                (raster_mode(mode), indices),
+                &fetch,
+            );
+            self.queued = queue;
+            if let Err(e) = r {
+                self.cache.error = Some(e.to_string());
+            }
+            self.store_target(target);
+            return;
+        }
         let Some(mut target) = self.draw_target() else {
             return;
         };
@@ -682,6 +710,20 @@ impl Context {
             view,
         );
         self.store_target(target);
+    }
+
+    /// Whether a draw may wait in the draw queue ([`raster::DrawQueue`],
+    /// which runs its fragment stage at the next flush): one into the
+    /// default framebuffer, with no geometry stage (`has_gs`) and no
+    /// storage blocks (`has_memory`, read when the draw runs), while no
+    /// occlusion query counts its samples and the debugger watches no
+    /// draw. The queue itself draws at once what may fail.
+    fn draw_waits(&self, has_gs: bool, has_memory: bool) -> bool {
+        self.objects.draw_framebuffer == 0
+            && !has_gs
+            && !has_memory
+            && self.queries.active[..2] == [0, 0]
+            && self.debug.request.is_none()
     }
 
     /// glClear.

@@ -20,11 +20,12 @@ use exec::lane::{self, flush, FULL};
 #[cfg(target_arch = "x86_64")]
 use exec::lanes16::{Lanes16, X256, X512};
 use exec::{Batch, ExecError, Kernel, Textures, LANES};
+use std::sync::Arc;
 
 /// A fixed-function fragment kernel and, when its shape allows, the plan
 /// that computes its results directly (see the module documentation).
-pub struct FixedFragment<'k> {
-    kernel: &'k Kernel,
+pub struct FixedFragment {
+    kernel: Arc<Kernel>,
     plan: Option<Plan>,
 }
 
@@ -67,12 +68,12 @@ struct FogPlan {
     scale: usize,
 }
 
-impl<'k> FixedFragment<'k> {
+impl FixedFragment {
     /// The stage of `kernel`, compiled from `fragment_source(shape)`.
-    pub fn new(kernel: &'k Kernel, shape: &FragmentShape) -> FixedFragment<'k> {
+    pub fn new(kernel: Arc<Kernel>, shape: &FragmentShape) -> FixedFragment {
         FixedFragment {
+            plan: Plan::new(&kernel, shape),
             kernel,
-            plan: Plan::new(kernel, shape),
         }
     }
 
@@ -571,7 +572,7 @@ fn lookup_2d(
     }
 }
 
-impl raster::ShaderStage for FixedFragment<'_> {
+impl raster::ShaderStage for FixedFragment {
     fn interface(&self) -> &exec::Interface {
         self.kernel.interface()
     }
@@ -617,11 +618,11 @@ impl raster::ShaderStage for FixedFragment<'_> {
     }
 
     fn depth_only(&self) -> Option<Box<dyn raster::ShaderStage>> {
-        raster::ShaderStage::depth_only(self.kernel)
+        raster::ShaderStage::depth_only(&*self.kernel)
     }
 
     fn does_nothing(&self) -> bool {
-        raster::ShaderStage::does_nothing(self.kernel)
+        raster::ShaderStage::does_nothing(&*self.kernel)
     }
 
     fn always_completes(&self) -> bool {
@@ -648,7 +649,7 @@ impl raster::ShaderStage for FixedFragment<'_> {
         lane: usize,
         trace: &mut dyn exec::Trace,
     ) -> Result<(), ExecError> {
-        raster::ShaderStage::run_probed(self.kernel, batch, uniforms, textures, lane, trace)
+        raster::ShaderStage::run_probed(&*self.kernel, batch, uniforms, textures, lane, trace)
     }
 
     fn run_watching(
@@ -659,7 +660,7 @@ impl raster::ShaderStage for FixedFragment<'_> {
         first: u32,
         out: &mut [[u32; LANES]],
     ) -> Result<(), ExecError> {
-        raster::ShaderStage::run_watching(self.kernel, batch, uniforms, textures, first, out)
+        raster::ShaderStage::run_watching(&*self.kernel, batch, uniforms, textures, first, out)
     }
 
     fn run_printing(
@@ -669,7 +670,7 @@ impl raster::ShaderStage for FixedFragment<'_> {
         textures: &dyn Textures,
         sink: &mut dyn exec::PrintSink,
     ) -> Result<(), ExecError> {
-        raster::ShaderStage::run_printing(self.kernel, batch, uniforms, textures, sink)
+        raster::ShaderStage::run_printing(&*self.kernel, batch, uniforms, textures, sink)
     }
 }
 
@@ -791,8 +792,8 @@ mod tests {
                 color_sum: rng.next() & 1 == 0,
                 fog: fogs[(round / 4) % 4],
             };
-            let k = kernel(&fragment_source(&shape));
-            let stage = FixedFragment::new(&k, &shape);
+            let k = Arc::new(kernel(&fragment_source(&shape)));
+            let stage = FixedFragment::new(k.clone(), &shape);
             assert!(stage.direct(), "{shape:?}");
             let iface = k.interface();
             let mut uniforms: Vec<u32> = (0..iface.uniform_words)
@@ -874,8 +875,8 @@ mod tests {
             color_sum: false,
             fog: None,
         };
-        let k = kernel(&fragment_source(&shape));
-        assert!(!FixedFragment::new(&k, &shape).direct());
+        let k = Arc::new(kernel(&fragment_source(&shape)));
+        assert!(!FixedFragment::new(k, &shape).direct());
     }
 }
 
@@ -913,8 +914,8 @@ mod bench {
             ..Default::default()
         }]);
         for (name, shape) in [("linear fog", fog), ("textured", textured)] {
-            let k = kernel(&fragment_source(&shape));
-            let stage = FixedFragment::new(&k, &shape);
+            let k = Arc::new(kernel(&fragment_source(&shape)));
+            let stage = FixedFragment::new(k.clone(), &shape);
             let iface = k.interface();
             let uniforms = vec![0u32; iface.uniform_words];
             // Colour 0.5, texture coordinates over a few texels per quad

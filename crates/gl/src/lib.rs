@@ -36,6 +36,11 @@
 //!   context's threads: [`Context::set_threads`], by default the
 //!   environment variable `SHADERBOX_THREADS` ([`THREADS_ENV`]) or else the
 //!   machine's available parallelism. Images do not depend on the count.
+//!   Draws into the default framebuffer whose fragment stage cannot fail
+//!   wait in a `raster::DrawQueue` ([`Context::waiting_draws`]) and are
+//!   shaded together, one pass over the tiles, when anything reads or
+//!   replaces its pixels, another render target or a draw that cannot
+//!   wait comes, a timer query starts or ends, or at glFinish/glFlush.
 //!
 //! - Attribute stacks ([`attrib_stack`]): glPushAttrib/glPopAttrib restore
 //!   per group; glPushClientAttrib/glPopClientAttrib the pixel-store and
@@ -221,8 +226,12 @@ pub struct Context {
     pub(crate) st: state::State,
     // Vertex arrays and current values.
     pub(crate) va: vertex::VertexState,
-    /// The default framebuffer.
+    /// The default framebuffer. Its pixels lag behind the draws in
+    /// `queued`: read or replace it after [`Context::flush_draws`].
     pub(crate) fb: raster::Framebuffer,
+    /// Draws into the default framebuffer whose fragment stages wait
+    /// ([`raster::DrawQueue`]; see `draw`).
+    pub(crate) queued: raster::DrawQueue,
     pub(crate) cache: kernels::DrawCache,
     /// The threads draws run on ([`Context::set_threads`]).
     pub(crate) workers: raster::Workers,
@@ -304,6 +313,7 @@ impl Context {
                 true,
                 true,
             ),
+            queued: raster::DrawQueue::default(),
             cache: kernels::DrawCache::default(),
             workers: raster::Workers::new(threads_from_env()),
             attrib_stack: Vec::new(),
@@ -323,6 +333,7 @@ impl Context {
     /// bit-identical whatever the number.
     pub fn set_threads(&mut self, threads: usize) {
         if threads != self.workers.threads() || threads == 0 {
+            self.flush_draws();
             self.workers = raster::Workers::new(threads);
         }
     }
@@ -348,10 +359,31 @@ impl Context {
         self.height
     }
 
-    /// The default framebuffer (window-system buffer), for wrappers such as
-    /// an OSMesa C ABI that copy it into client memory.
-    pub fn default_framebuffer(&self) -> &raster::Framebuffer {
-        &self.fb
+    /// The default framebuffer (window-system buffer) with every draw
+    /// done, and the threads, for wrappers such as an OSMesa C ABI that
+    /// copy it into client memory.
+    pub fn default_framebuffer(&mut self) -> (&raster::Framebuffer, &raster::Workers) {
+        self.flush_draws();
+        (&self.fb, &self.workers)
+    }
+
+    /// How many draws wait in the draw queue: their fragment stages run
+    /// at the next flush (glFinish, glFlush, a read of the framebuffer,
+    /// another render target...).
+    pub fn waiting_draws(&self) -> usize {
+        self.queued.len()
+    }
+
+    /// Runs the fragment stages of the draws waiting in the queue into the
+    /// default framebuffer (`draw`): before anything reads or replaces
+    /// its pixels. A failure is kept for [`Context::take_draw_error`].
+    pub(crate) fn flush_draws(&mut self) {
+        if self.queued.is_empty() {
+            return;
+        }
+        if let Err(e) = self.queued.flush(&self.workers, &mut self.fb) {
+            self.cache.error = Some(e.to_string());
+        }
     }
 
     /// Resizes the default framebuffer to `width` x `height` (clamped to
@@ -365,6 +397,7 @@ impl Context {
         if (w, h) == (self.width, self.height) {
             return;
         }
+        self.flush_draws();
         self.width = w;
         self.height = h;
         self.fb =
@@ -377,6 +410,7 @@ impl Context {
     /// when it is released. The size follows `fb`; the viewport and scissor
     /// box are left as they are.
     pub fn replace_default_framebuffer(&mut self, fb: raster::Framebuffer) -> raster::Framebuffer {
+        self.flush_draws();
         self.width = (fb.width as i32).clamp(1, MAX_TEXTURE_SIZE);
         self.height = (fb.height as i32).clamp(1, MAX_TEXTURE_SIZE);
         std::mem::replace(&mut self.fb, fb)
@@ -387,6 +421,7 @@ impl Context {
     /// memory *is* the window (OSMesa) makes it the starting contents.
     /// Missing pixels are left as they were.
     pub fn load_default_color(&mut self, pixels: &[[u8; 4]]) {
+        self.flush_draws();
         if let Some(raster::ColorBuffer::Rgba8(v)) = self.fb.color.get_mut(0) {
             for (d, s) in v.iter_mut().zip(pixels) {
                 *d = *s;
@@ -484,14 +519,19 @@ impl Context {
         n
     }
 
-    /// glFinish: drawing is synchronous, nothing to wait for.
+    /// glFinish: runs the draws waiting in the queue.
     pub fn finish(&mut self) {
-        self.reject_in_begin();
+        if !self.reject_in_begin() {
+            self.flush_draws();
+        }
     }
 
-    /// glFlush.
+    /// glFlush: runs the draws waiting in the queue (GL 3.3 §5.2: they
+    /// complete in finite time).
     pub fn flush(&mut self) {
-        self.reject_in_begin();
+        if !self.reject_in_begin() {
+            self.flush_draws();
+        }
     }
 }
 

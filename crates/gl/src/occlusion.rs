@@ -254,6 +254,11 @@ impl Context {
             self.set_error(GL_INVALID_OPERATION);
             return;
         }
+        // Timer queries time what the GL does between begin and end: the
+        // draws queued before it run now, not within it.
+        if target == GL_TIME_ELAPSED {
+            self.flush_draws();
+        }
         let Some(q) = self.query_for(target, id) else {
             return;
         };
@@ -277,6 +282,9 @@ impl Context {
         if id == 0 {
             self.set_error(GL_INVALID_OPERATION);
             return;
+        }
+        if target == GL_TIME_ELAPSED {
+            self.flush_draws();
         }
         if let Some(q) = self.queries.objects.get_mut(&id) {
             match target {
@@ -302,6 +310,8 @@ impl Context {
             self.set_error(GL_INVALID_OPERATION);
             return;
         }
+        // The time when the commands before it are done.
+        self.flush_draws();
         if let Some(q) = self.query_for(GL_TIMESTAMP, id) {
             q.result = timestamp_ns() as u64;
         }

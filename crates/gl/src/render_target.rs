@@ -71,24 +71,12 @@ impl Pixels<'_> {
 impl Context {
     /// The framebuffer the next draw or clear writes.
     pub(crate) fn draw_target(&mut self) -> Option<Target> {
+        // Whatever the target, the queued draws run first: one into the
+        // default framebuffer may sample a texture this operation writes.
+        self.flush_draws();
         let name = self.objects.draw_framebuffer;
         if name == 0 {
-            let fb = std::mem::replace(
-                &mut self.fb,
-                Framebuffer::new(0, 0, ColorFormat::Rgba8, false, false),
-            );
-            let mut draw_buffers = [None; 8];
-            for (i, b) in self.st.draw_buffers.iter().enumerate().take(8) {
-                if *b != GL_NONE {
-                    draw_buffers[i] = Some(0);
-                }
-            }
-            return Some(Target {
-                fb,
-                name: 0,
-                color_attachments: vec![0],
-                draw_buffers,
-            });
+            return Some(self.default_target());
         }
         let f = self.layer_view(self.objects.framebuffers.get(&name)?.clone());
         let mut attachments: Vec<usize> = Vec::new();
@@ -110,6 +98,27 @@ impl Context {
             }
         }
         Some(self.assemble(name, &f, attachments, draw_buffers))
+    }
+
+    /// The default framebuffer as a render target, its pixels as they are
+    /// (behind the queued draws: the draw queue's own pushes only).
+    pub(crate) fn default_target(&mut self) -> Target {
+        let fb = std::mem::replace(
+            &mut self.fb,
+            Framebuffer::new(0, 0, ColorFormat::Rgba8, false, false),
+        );
+        let mut draw_buffers = [None; 8];
+        for (i, b) in self.st.draw_buffers.iter().enumerate().take(8) {
+            if *b != GL_NONE {
+                draw_buffers[i] = Some(0);
+            }
+        }
+        Target {
+            fb,
+            name: 0,
+            color_attachments: vec![0],
+            draw_buffers,
+        }
     }
 
     /// `f` with its layered attachments (glFramebufferTexture of a 3D,
@@ -328,7 +337,8 @@ impl Context {
     /// The read framebuffer as a raster framebuffer: the default one in
     /// place, or a framebuffer object's read buffer (as its only color
     /// buffer), depth and stencil images assembled.
-    pub(crate) fn read_image(&self) -> Option<Cow<'_, Framebuffer>> {
+    pub(crate) fn read_image(&mut self) -> Option<Cow<'_, Framebuffer>> {
+        self.flush_draws();
         let name = self.objects.read_framebuffer;
         if name == 0 {
             return Some(Cow::Borrowed(&self.fb));

@@ -621,3 +621,99 @@ fn buffer_bits_follow_the_draw_framebuffer() {
     assert_eq!(bits(&mut ctx), [8, 8, 24, 8]);
     assert_eq!(ctx.get_error(), GL_NO_ERROR);
 }
+
+/// Draws whose fragment stages wait in the draw queue see the uniforms and
+/// textures of their own call, and a read of the framebuffer sees every
+/// draw before it: the same pixels as a glFinish after every draw.
+#[test]
+fn waiting_draws_give_the_pixels_of_finished_draws() {
+    let frame = |finish_each: bool| {
+        let mut ctx = Context::new(150, 90);
+        let p = program(
+            &mut ctx,
+            None,
+            Some(
+                "uniform vec4 tint; uniform sampler2D tex;
+                 void main() { gl_FragColor = texture2D(tex, gl_TexCoord[0].st) * tint; }",
+            ),
+        );
+        let tex = ctx.gen_textures(1)[0];
+        ctx.bind_texture(GL_TEXTURE_2D, tex);
+        for pname in [GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER] {
+            ctx.tex_parameter(GL_TEXTURE_2D, pname, Param::I(GL_NEAREST as i32));
+        }
+        let texels: Vec<u8> = (0..16u8)
+            .flat_map(|i| [i * 16, 255 - i * 8, 128, 200])
+            .collect();
+        ctx.tex_image(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA8 as i32,
+            [4, 4],
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            Some(&texels),
+        );
+        ctx.enable(GL_BLEND);
+        ctx.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        let tint = ctx.get_uniform_location(p, "tint");
+        let mut waiting = Vec::new();
+        let step = |ctx: &mut Context, waiting: &mut Vec<usize>, rect: [f32; 4], t: [f32; 4]| {
+            ctx.uniform_4f(tint, t[0], t[1], t[2], t[3]);
+            draw_rect(ctx, rect[0], rect[1], rect[2], rect[3]);
+            if finish_each {
+                ctx.finish();
+            }
+            waiting.push(ctx.waiting_draws());
+        };
+        step(
+            &mut ctx,
+            &mut waiting,
+            [-1.0, -1.0, 2.0, 2.0],
+            [1.0, 1.0, 1.0, 1.0],
+        );
+        step(
+            &mut ctx,
+            &mut waiting,
+            [-0.5, -1.0, 1.5, 1.2],
+            [0.2, 0.9, 0.5, 0.7],
+        );
+        // New texels for the next draws only.
+        let dark: Vec<u8> = (0..16u8).flat_map(|i| [30, i * 10, 250, 160]).collect();
+        ctx.tex_sub_image(
+            GL_TEXTURE_2D,
+            0,
+            [0, 0],
+            [4, 4],
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            &dark,
+        );
+        step(
+            &mut ctx,
+            &mut waiting,
+            [-1.0, -0.3, 1.2, 1.3],
+            [1.0, 0.5, 0.25, 0.9],
+        );
+        // A read in the middle sees the three draws before it.
+        let middle = ctx.read_pixels_f32(0, 0, 150, 90);
+        waiting.push(ctx.waiting_draws());
+        step(
+            &mut ctx,
+            &mut waiting,
+            [-0.8, -0.8, 1.6, 1.6],
+            [0.6, 0.6, 1.0, 0.5],
+        );
+        let last = ctx.read_pixels_f32(0, 0, 150, 90);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        assert_eq!(ctx.take_draw_error(), None);
+        (middle, last, waiting)
+    };
+    let (middle, last, waiting) = frame(false);
+    assert_eq!(waiting, [1, 2, 3, 0, 1], "the draws wait until the read");
+    let (finished_middle, finished_last, none) = frame(true);
+    assert_eq!(none, [0, 0, 0, 0, 0]);
+    assert!(middle == finished_middle, "the read in the middle differs");
+    assert!(last == finished_last, "the last frame differs");
+}

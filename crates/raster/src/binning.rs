@@ -16,7 +16,7 @@ use crate::rasterize::PixelRect;
 pub const TILE: i64 = 64;
 
 /// The frame's 64×64 tiles.
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
 pub(crate) struct TileGrid {
     w: i64,
     h: i64,
@@ -35,6 +35,11 @@ impl TileGrid {
             tiles_x,
             tiles: (tiles_x * tiles_y).max(0) as usize,
         }
+    }
+
+    /// How many tiles there are.
+    pub fn count(&self) -> usize {
+        self.tiles
     }
 
     /// The tile row of tile `t`.

@@ -10,7 +10,9 @@
 //! binned (`crate::binning`) where it was set up, then the fragment stage
 //! (`crate::shade`) tile by tile ([`shade_tiles`]), and gives the
 //! framebuffer written, or the first error in the order of the contract
-//! (crate docs, "Threads").
+//! (crate docs, "Threads"). Set-up and binning ([`SetUp`]) and the pass
+//! over the tiles also serve the draw queue (`crate::queue`), whose pass
+//! runs several draws' primitives per tile.
 
 use std::sync::Mutex;
 
@@ -125,112 +127,191 @@ fn draw_vertices(
     state: &PipelineState,
     last: &crate::ex::Interface,
     (fs, fs_uniforms): (&dyn ShaderStage, &[u32]),
-    Vertices {
-        mode,
-        vertex_of,
-        outputs,
-    }: Vertices,
+    vertices: Vertices,
     textures: &(dyn Textures + Sync),
     probe: Option<&Probe>,
 ) -> Result<(), DrawError> {
-    let vs_layout = VsLayout::new(last);
-    let fs_layout = FsLayout::new(last, fs.interface(), state.two_sided_color);
-    let setup = Setup::new(state, (&vs_layout, &fs_layout), &outputs, fb, probe);
-    // Shared vertices (indexed meshes): each vertex's outcode and window
-    // position once, on the workers, instead of once per primitive using
-    // it (the same values either way).
-    let vertices = outputs.len() / vs_layout.outputs.max(1);
-    let mut corners = std::mem::take(&mut workers.spare().corners);
-    if probe.is_none() && vertex_of.len() >= CORNER_REUSE * vertices {
-        // Written in place, chunk by chunk, into the table kept from the
-        // last draw (a new table, or one collected from the chunks, cost a
-        // copy and page faults on the calling thread).
-        corners.resize(vertices, Corner::BLANK);
-        let chunk = 4096;
-        let parts: Vec<Mutex<&mut [Corner]>> = corners.chunks_mut(chunk).map(Mutex::new).collect();
-        workers.map(parts.len(), 1, |c, _| {
-            let Some(part) = parts.get(c) else { return };
-            let mut part = part.lock().unwrap_or_else(|e| e.into_inner());
-            for (k, slot) in part.iter_mut().enumerate() {
-                *slot = setup.compute_corner(c * chunk + k);
-            }
-        });
-    } else {
-        corners.clear();
-    }
-    let setup = setup.with_corners(&corners);
-    // Primitive set-up in chunks of primitives on the workers, the
-    // chunks' primitives concatenated in order (one chunk, in order, for
-    // the debugger's probe, which notes primitives as they come).
-    let setup = &setup;
-    let grid = TileGrid::new(fb);
-    let count = vertex_of.len();
-    let n_prims = primitive_count(mode, count);
-    let chunk = if probe.is_some() {
-        n_prims.max(1)
-    } else {
-        SETUP_CHUNK
-    };
-    let chunks = n_prims.div_ceil(chunk);
-    let level = crate::simd::detect();
-    let parts = workers.map(chunks, 1, |c, _| {
-        let first = c * chunk;
-        let n = chunk.min(n_prims.saturating_sub(first));
-        let (mut prims, mut planes) = workers.spare().chunks.pop().unwrap_or_default();
-        prims.reserve(n);
-        planes.reserve(n * fs_layout.links.len());
-        let mut out = Out {
-            prims,
-            planes,
-            source: 0,
-            chunk: c as u32,
-        };
-        let range = c * chunk..((c + 1) * chunk).min(n_prims);
-        setup.chunk(&mut out, mode, &vertex_of, range, level);
-        // Binned here, on the workers: the chunks' bins read in chunk
-        // order list each tile's primitives in draw order.
-        let bins = ChunkBins::new(&out.prims, &grid);
-        ((out.prims, out.planes), bins)
-    });
-    let (parts, chunk_bins): (Vec<_>, Vec<_>) = parts.into_iter().unzip();
-    // The chunks' primitives in order and their varyings, referenced
-    // where they are (not moved).
-    let attrs: Vec<&[Plane]> = parts.iter().map(|p| &p.1[..]).collect();
-    // Sized first: collected from `flat_map` the vector grew by doubling
-    // (copies and fresh pages on this thread).
-    let mut prims: Vec<&Prim> = Vec::with_capacity(parts.iter().map(|p| p.0.len()).sum());
-    prims.extend(parts.iter().flat_map(|p| p.0.iter()));
-    let bins = Bins::new(chunk_bins, &parts, grid);
-
-    // The probe replays every fragment: never deferred.
-    let deferred = if probe.is_none() && crate::fragment_ops::last_writer_wins(fb, state) {
-        fs.depth_only()
-    } else {
-        None
-    };
-    let mut stage = FragmentStage::new(
-        fs,
-        fs_uniforms,
-        textures,
-        &fs_layout,
-        state,
-        attrs,
-        deferred,
-        probe,
-    );
-    stage.depth_format = fb.depth_format;
+    let set_up = SetUp::new(workers, fb, state, last, fs.interface(), &vertices, probe);
+    let stage = set_up.fragment_stage(fb, state, (fs, fs_uniforms), textures, probe);
     if let Some(p) = probe {
-        p.set_vertices(&vs_layout, &outputs, &vertex_of);
+        p.set_vertices(&set_up.vs_layout, &vertices.outputs, &vertices.vertex_of);
     }
-    let result = shade_tiles(workers, fb, &stage, &prims, &bins);
+    let prims = set_up.prims();
+    let result = shade_tiles(
+        workers,
+        fb,
+        &[DrawTiles {
+            stage: &stage,
+            prims: &prims,
+            bins: &set_up.bins,
+        }],
+    );
     // The draw's big buffers, for the next draws.
     drop(stage);
     drop(prims);
-    let mut spare = workers.spare();
-    spare.keep(parts, outputs);
-    spare.keep_corners(corners);
-    spare.keep_tables([vertex_of]);
+    set_up.keep(workers);
+    workers.spare().keep_vertices(vertices);
     result
+}
+
+/// A draw set up and binned: its primitives, their varyings' planes and
+/// the tiles they overlap, what its fragment stage runs on.
+pub(crate) struct SetUp {
+    vs_layout: VsLayout,
+    fs_layout: FsLayout,
+    /// Each set-up chunk's primitives and planes, in draw order.
+    parts: Vec<(Vec<Prim>, Vec<Plane>)>,
+    pub bins: Bins,
+}
+
+impl SetUp {
+    /// Sets up and bins `vertices`, laid out as `last`'s outputs say, for
+    /// a fragment stage of interface `fs` drawing into `fb` (whose size
+    /// and depth format count, not its pixels).
+    pub fn new(
+        workers: &Workers,
+        fb: &Framebuffer,
+        state: &PipelineState,
+        last: &crate::ex::Interface,
+        fs: &crate::ex::Interface,
+        Vertices {
+            mode,
+            vertex_of,
+            outputs,
+        }: &Vertices,
+        probe: Option<&Probe>,
+    ) -> SetUp {
+        let (mode, vertex_of, outputs) = (*mode, &vertex_of[..], &outputs[..]);
+        let vs_layout = VsLayout::new(last);
+        let fs_layout = FsLayout::new(last, fs, state.two_sided_color);
+        let setup = Setup::new(state, (&vs_layout, &fs_layout), outputs, fb, probe);
+        // Shared vertices (indexed meshes): each vertex's outcode and window
+        // position once, on the workers, instead of once per primitive using
+        // it (the same values either way).
+        let vertices = outputs.len() / vs_layout.outputs.max(1);
+        let mut corners = std::mem::take(&mut workers.spare().corners);
+        if probe.is_none() && vertex_of.len() >= CORNER_REUSE * vertices {
+            // Written in place, chunk by chunk, into the table kept from the
+            // last draw (a new table, or one collected from the chunks, cost a
+            // copy and page faults on the calling thread).
+            corners.resize(vertices, Corner::BLANK);
+            let chunk = 4096;
+            let parts: Vec<Mutex<&mut [Corner]>> =
+                corners.chunks_mut(chunk).map(Mutex::new).collect();
+            workers.map(parts.len(), 1, |c, _| {
+                let Some(part) = parts.get(c) else { return };
+                let mut part = part.lock().unwrap_or_else(|e| e.into_inner());
+                for (k, slot) in part.iter_mut().enumerate() {
+                    *slot = setup.compute_corner(c * chunk + k);
+                }
+            });
+        } else {
+            corners.clear();
+        }
+        let setup = setup.with_corners(&corners);
+        // Primitive set-up in chunks of primitives on the workers, the
+        // chunks' primitives concatenated in order (one chunk, in order, for
+        // the debugger's probe, which notes primitives as they come).
+        let setup = &setup;
+        let grid = TileGrid::new(fb);
+        let n_prims = primitive_count(mode, vertex_of.len());
+        let chunk = if probe.is_some() {
+            n_prims.max(1)
+        } else {
+            SETUP_CHUNK
+        };
+        let chunks = n_prims.div_ceil(chunk);
+        let level = crate::simd::detect();
+        let links = fs_layout.links.len();
+        let parts = workers.map(chunks, 1, |c, _| {
+            let first = c * chunk;
+            let n = chunk.min(n_prims.saturating_sub(first));
+            let (mut prims, mut planes) = workers.spare().chunks.pop().unwrap_or_default();
+            prims.reserve(n);
+            planes.reserve(n * links);
+            let mut out = Out {
+                prims,
+                planes,
+                source: 0,
+                chunk: c as u32,
+            };
+            let range = c * chunk..((c + 1) * chunk).min(n_prims);
+            setup.chunk(&mut out, mode, vertex_of, range, level);
+            // Binned here, on the workers: the chunks' bins read in chunk
+            // order list each tile's primitives in draw order.
+            let bins = ChunkBins::new(&out.prims, &grid);
+            ((out.prims, out.planes), bins)
+        });
+        let (parts, chunk_bins): (Vec<_>, Vec<_>) = parts.into_iter().unzip();
+        let bins = Bins::new(chunk_bins, &parts, grid);
+        workers.spare().keep_corners(corners);
+        SetUp {
+            vs_layout,
+            fs_layout,
+            parts,
+            bins,
+        }
+    }
+
+    /// The primitives set up, in draw order, referenced where they are.
+    pub fn prims(&self) -> Vec<&Prim> {
+        // Sized first: collected from `flat_map` the vector grew by
+        // doubling (copies and fresh pages on this thread).
+        let mut prims = Vec::with_capacity(self.primitives());
+        prims.extend(self.parts.iter().flat_map(|p| p.0.iter()));
+        prims
+    }
+
+    /// How many primitives were set up (those culled or clipped away
+    /// are not).
+    pub fn primitives(&self) -> usize {
+        self.parts.iter().map(|p| p.0.len()).sum()
+    }
+
+    /// The fragment stage of the draw: `fs` with its uniform words, on
+    /// `textures`, into `fb` (its formats count, not its pixels).
+    pub fn fragment_stage<'a>(
+        &'a self,
+        fb: &Framebuffer,
+        state: &'a PipelineState,
+        (fs, fs_uniforms): (&'a dyn ShaderStage, &'a [u32]),
+        textures: &'a (dyn Textures + Sync),
+        probe: Option<&'a Probe>,
+    ) -> FragmentStage<'a> {
+        // The chunks' varyings, referenced where they are (not moved).
+        let attrs: Vec<&[Plane]> = self.parts.iter().map(|p| &p.1[..]).collect();
+        // The probe replays every fragment: never deferred.
+        let deferred = if probe.is_none() && crate::fragment_ops::last_writer_wins(fb, state) {
+            fs.depth_only()
+        } else {
+            None
+        };
+        let mut stage = FragmentStage::new(
+            fs,
+            fs_uniforms,
+            textures,
+            &self.fs_layout,
+            state,
+            attrs,
+            deferred,
+            probe,
+        );
+        stage.depth_format = fb.depth_format;
+        stage
+    }
+
+    /// Gives the draw's buffers to `workers` for the next draws.
+    pub fn keep(self, workers: &Workers) {
+        workers.spare().keep_chunks(self.parts);
+    }
+}
+
+/// One draw's share of [`shade_tiles`]: its fragment stage, its
+/// primitives and the tiles they overlap.
+pub(crate) struct DrawTiles<'s, 'a> {
+    pub stage: &'s FragmentStage<'a>,
+    pub prims: &'s [&'a Prim],
+    pub bins: &'s Bins,
 }
 
 /// What one tile task produced.
@@ -242,35 +323,41 @@ enum TileResult {
     Skipped,
 }
 
-/// The fragment stage over 64×64 tiles. Each tile is a task that owns a
-/// copy of its pixels and runs the primitives overlapping it in draw
-/// order. When tiles fail, the result is that of running the tiles in
-/// order and stopping at the first failure: earlier tiles complete, the
-/// failing tile keeps what it wrote before the error, later tiles are
-/// left untouched, and that error is returned. So the copies are written
-/// back in tile order once every tile has run, unless no tile can fail
-/// ([`ShaderStage::always_completes`]): each task then writes its tile
-/// back as soon as it is done, while its pixels are still in the cache.
-fn shade_tiles(
+/// The fragment stage of `draws` over 64×64 tiles. Each tile is a task
+/// that owns a copy of its pixels and runs, draw after draw, the
+/// primitives overlapping it in draw order. When tiles fail, the result is
+/// that of running the tiles in order and stopping at the first failure:
+/// earlier tiles complete, the failing tile keeps what it wrote before the
+/// error, later tiles are left untouched, and that error is returned. So
+/// the copies are written back in tile order once every tile has run,
+/// unless no tile can fail ([`ShaderStage::always_completes`]): each task
+/// then writes its tile back as soon as it is done, while its pixels are
+/// still in the cache. Several draws share a run only when none can fail
+/// (the draw queue's contract): a draw that failed part way through a
+/// tile others ran before could not be redone from the tile's copy.
+pub(crate) fn shade_tiles(
     workers: &Workers,
     fb: &mut Framebuffer,
-    stage: &FragmentStage,
-    prims: &[&Prim],
-    bins: &Bins,
+    draws: &[DrawTiles],
 ) -> Result<(), DrawError> {
-    let grid = bins.grid;
-    let occupied = bins.occupied();
+    let Some(first) = draws.first() else {
+        return Ok(());
+    };
+    let grid = first.bins.grid;
+    let occupied = occupied_tiles(draws);
     let rect = |t: usize| grid.rect(t);
-    // The depth and stencil buffers only when the draw tests them (or
-    // the debugger's probe reports what a fragment leaves in them).
-    let all = stage.probe.is_some();
+    // The depth and stencil buffers only when a draw tests them (or the
+    // debugger's probe reports what a fragment leaves in them).
+    let all = draws.iter().any(|d| d.stage.probe.is_some());
     let tests = (
-        all || stage.state.depth_test.is_some(),
-        all || stage.state.stencil.is_some(),
+        all || draws.iter().any(|d| d.stage.state.depth_test.is_some()),
+        all || draws.iter().any(|d| d.stage.state.stencil.is_some()),
     );
-    let batches = stage.batches_primitives(fb);
-    let completes = stage.shader.always_completes()
-        && stage.deferred.as_ref().is_none_or(|d| d.always_completes());
+    let batches: Vec<bool> = draws
+        .iter()
+        .map(|d| d.stage.batches_primitives(fb))
+        .collect();
+    let completes = draws.iter().all(|d| d.stage.always_completes());
     if completes && !all {
         let views: Vec<Mutex<Option<TileView>>> = fb
             .tile_views(TILE as u32, &occupied, tests.0, tests.1)
@@ -285,19 +372,8 @@ fn shade_tiles(
             let Some(mut view) = taken else {
                 return Ok(0);
             };
-            let (r, bin) = (rect(t), &bins.tile(t)[..]);
             let mut local = view.load();
-            let ran = shade_tile(
-                stage,
-                &mut local,
-                || view.load(),
-                prims,
-                bin,
-                r,
-                batches,
-                cancel,
-                i,
-            );
+            let ran = shade_draws(draws, &batches, &mut local, || view.load(), t, cancel, i);
             // Written back even after an error (which `always_completes`
             // rules out): the tile then holds what ran before it.
             view.store(&local);
@@ -331,8 +407,7 @@ fn shade_tiles(
         let area = (r.0 as u32, r.1 as u32, r.2 as u32, r.3 as u32);
         let copy = || source.copy_tile(area, tests.0, tests.1);
         let mut local = copy();
-        let bin = &bins.tile(t)[..];
-        match shade_tile(stage, &mut local, copy, prims, bin, r, batches, cancel, i) {
+        match shade_draws(draws, &batches, &mut local, copy, t, cancel, i) {
             Ok(()) => TileResult::Ran(local, None),
             Err(TileError::Cancelled) => TileResult::Skipped,
             Err(TileError::Exec(e)) => TileResult::Ran(local, Some(e)),
@@ -374,6 +449,52 @@ fn shade_tiles(
     }
 }
 
+/// The tiles some primitive of `draws` overlaps, in order.
+fn occupied_tiles(draws: &[DrawTiles]) -> Vec<usize> {
+    match draws {
+        [one] => one.bins.occupied(),
+        _ => {
+            let tiles = draws.first().map_or(0, |d| d.bins.grid.count());
+            let mut hit = vec![false; tiles];
+            for d in draws {
+                for t in d.bins.occupied() {
+                    if let Some(h) = hit.get_mut(t) {
+                        *h = true;
+                    }
+                }
+            }
+            (0..tiles).filter(|&t| hit[t]).collect()
+        }
+    }
+}
+
+/// Tile task `i`: every draw's primitives overlapping tile `t`, draw
+/// after draw, on `local`, the tile's copy ([`shade_tile`]). Only the
+/// first draw to touch the tile may be redone from a fresh copy by
+/// `reload`; a later draw's error ends the tile where it stopped.
+fn shade_draws(
+    draws: &[DrawTiles],
+    batches: &[bool],
+    local: &mut Framebuffer,
+    reload: impl Fn() -> Framebuffer,
+    t: usize,
+    cancel: &Cancel,
+    i: usize,
+) -> Result<(), TileError> {
+    let mut touched = false;
+    for (d, &batched) in draws.iter().zip(batches) {
+        let bin = d.bins.tile(t);
+        if bin.is_empty() {
+            continue;
+        }
+        let r = d.bins.grid.rect(t);
+        let fresh = (!touched).then_some(&reload as &dyn Fn() -> Framebuffer);
+        shade_tile(d.stage, local, fresh, d.prims, &bin, r, batched, cancel, i)?;
+        touched = true;
+    }
+    Ok(())
+}
+
 /// Why [`shade_tile`] stopped early.
 enum TileError {
     /// A shader run failed (the tile holds what ran before it).
@@ -392,12 +513,13 @@ impl From<ExecError> for TileError {
 /// the copy of tile `r`, by the deferred depth pass or in batches when
 /// the stage allows, else (or to redo a tile they stopped on, from a
 /// fresh copy by `reload`) one primitive at a time, which stops at the
-/// fragment and with the error of the contract.
+/// fragment and with the error of the contract. Without `reload`, an
+/// error of the deferred or batched pass ends the tile as it is.
 #[allow(clippy::too_many_arguments)]
 fn shade_tile(
     stage: &FragmentStage,
     local: &mut Framebuffer,
-    reload: impl Fn() -> Framebuffer,
+    reload: Option<&dyn Fn() -> Framebuffer>,
     prims: &[&Prim],
     bin: &[u32],
     r: PixelRect,
@@ -406,15 +528,20 @@ fn shade_tile(
     i: usize,
 ) -> Result<(), TileError> {
     let mut scratch = stage.scratch();
-    if let Some(depth) = &stage.deferred {
-        match stage.shade_deferred(depth.as_ref(), local, prims, bin, r, &mut scratch) {
-            Ok(()) => return Ok(()),
-            Err(_) => *local = reload(),
-        }
+    let quick = if let Some(depth) = &stage.deferred {
+        Some(stage.shade_deferred(depth.as_ref(), local, prims, bin, r, &mut scratch))
     } else if batches {
-        match stage.shade_batched(local, prims, bin, r, &mut scratch) {
-            Ok(()) => return Ok(()),
-            Err(_) => *local = reload(),
+        Some(stage.shade_batched(local, prims, bin, r, &mut scratch))
+    } else {
+        None
+    };
+    match (quick, reload) {
+        (None, _) => {}
+        (Some(Ok(())), _) => return Ok(()),
+        (Some(Err(_)), Some(reload)) => *local = reload(),
+        (Some(Err(e)), None) => {
+            cancel.fail(i);
+            return Err(e.into());
         }
     }
     for &p in bin {

@@ -1198,3 +1198,162 @@ fn samples_passed_counts_depth_test_survivors_whatever_the_threads() {
     assert_eq!(counts[0], (65 * 70, 65 * 70));
     assert!(counts.iter().all(|c| *c == counts[0]), "{counts:?}");
 }
+
+/// A stage that promises to complete ([`ShaderStage::always_completes`]),
+/// so the draw queue keeps it waiting.
+struct Completes(Stage);
+
+impl ShaderStage for Completes {
+    fn interface(&self) -> &Interface {
+        self.0.interface()
+    }
+    fn run(&self, batch: &mut Batch, u: &[u32], t: &dyn Textures) -> Result<(), ExecError> {
+        self.0.run(batch, u, t)
+    }
+    fn always_completes(&self) -> bool {
+        true
+    }
+}
+
+/// The draws of the queue tests: (state, whether the stage completes,
+/// stage, vertices), several states and tiles, one of them a stage the
+/// queue must not keep waiting.
+fn queue_scene(w: u32, h: u32) -> Vec<(PipelineState, bool, Stage, Verts)> {
+    let base = state(w as i32, h as i32);
+    let blended = PipelineState {
+        blend: Some(Blend {
+            dst_rgb: BlendFactor::One,
+            dst_alpha: BlendFactor::One,
+            ..Blend::default()
+        }),
+        ..base.clone()
+    };
+    let depth = PipelineState {
+        depth_test: Some(CompareFunc::Less),
+        ..base.clone()
+    };
+    let mut slanted = verts(
+        &[[-1.0, -1.0], [1.0, -0.6], [0.2, 1.0]],
+        &[RED, GREEN, BLUE],
+    );
+    slanted.pos[0][2] = -0.5;
+    slanted.pos[1][2] = 0.5;
+    slanted.pos[2][2] = 0.1;
+    let quarter = [0.25, 0.125, 0.0, 0.25];
+    let small = verts(&[[0.1, 0.1], [0.6, 0.2], [0.3, 0.7]], &[BLUE; 3]);
+    vec![
+        (
+            blended.clone(),
+            true,
+            color_fs(),
+            verts(&full_screen(), &[quarter; 6]),
+        ),
+        (depth.clone(), true, depth_writing_fs(), slanted),
+        (blended.clone(), true, strip_fs(), small.clone()),
+        (base.clone(), false, color_fs(), small),
+        (depth, true, color_fs(), verts(&full_screen(), &[GREEN; 6])),
+        (
+            blended,
+            true,
+            color_fs(),
+            verts(&full_screen(), &[quarter; 6]),
+        ),
+    ]
+}
+
+#[test]
+fn queued_draws_give_the_bytes_of_draws_one_after_another() {
+    use crate::queue::{DrawQueue, QueuedFragments};
+    let (w, h) = (200, 130);
+    let fresh = || {
+        let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, false);
+        fb.clear_depth(1.0, true, None);
+        fb
+    };
+    let mut direct = fresh();
+    for (st, _, fs, v) in queue_scene(w, h) {
+        run(&mut direct, &st, &fs, Mode::Triangles, &v).unwrap();
+    }
+    let want = (
+        direct.read_pixels_u8(0, 0, 0, w, h),
+        direct.read_depth(0, 0, w, h),
+    );
+    for threads in [1, 2] {
+        let workers = Workers::new(threads);
+        let mut fb = fresh();
+        let before = fb.read_pixels_u8(0, 0, 0, w, h);
+        let mut queue = DrawQueue::default();
+        let mut waiting = Vec::new();
+        for (st, completes, fs, v) in queue_scene(w, h) {
+            let shader: std::sync::Arc<dyn ShaderStage + Send + Sync> = if completes {
+                std::sync::Arc::new(Completes(fs))
+            } else {
+                std::sync::Arc::new(fs)
+            };
+            let fragments = QueuedFragments {
+                shader,
+                uniforms: Vec::new(),
+                textures: TextureUnits::default(),
+            };
+            let idx: Vec<u32> = (0..v.pos.len() as u32).collect();
+            queue
+                .push(
+                    &workers,
+                    &mut fb,
+                    &st,
+                    (&pass_vs(), &[]),
+                    None,
+                    fragments,
+                    (Mode::Triangles, &idx),
+                    &v,
+                )
+                .unwrap();
+            waiting.push(queue.len());
+        }
+        // Three wait, the stage that may fail flushes them and draws at
+        // once, two more wait.
+        assert_eq!(waiting, [1, 2, 3, 0, 1, 2], "{threads} threads");
+        assert_ne!(fb.read_pixels_u8(0, 0, 0, w, h), before);
+        queue.flush(&workers, &mut fb).unwrap();
+        assert!(queue.is_empty());
+        let got = (fb.read_pixels_u8(0, 0, 0, w, h), fb.read_depth(0, 0, w, h));
+        assert!(got == want, "{threads} threads: the queue's bytes differ");
+    }
+}
+
+#[test]
+fn a_queue_is_not_flushed_into_a_framebuffer_of_another_size() {
+    use crate::queue::{DrawQueue, QueuedFragments};
+    let workers = Workers::inline();
+    let mut fb = Framebuffer::new(70, 70, ColorFormat::Rgba8, false, false);
+    let mut queue = DrawQueue::default();
+    let v = verts(&full_screen(), &[RED; 6]);
+    let idx: Vec<u32> = (0..6).collect();
+    let fragments = QueuedFragments {
+        shader: std::sync::Arc::new(Completes(color_fs())),
+        uniforms: Vec::new(),
+        textures: TextureUnits::default(),
+    };
+    let st = state(70, 70);
+    queue
+        .push(
+            &workers,
+            &mut fb,
+            &st,
+            (&pass_vs(), &[]),
+            None,
+            fragments,
+            (Mode::Triangles, &idx),
+            &v,
+        )
+        .unwrap();
+    assert_eq!(queue.len(), 1);
+    let mut other = Framebuffer::new(130, 70, ColorFormat::Rgba8, false, false);
+    let r = queue.flush(&workers, &mut other);
+    assert!(matches!(r, Err(DrawError::QueueTarget)), "{r:?}");
+    assert!(queue.is_empty());
+    assert!(other
+        .read_pixels_u8(0, 0, 0, 130, 70)
+        .iter()
+        .all(|p| *p == [0, 0, 0, 0]));
+}

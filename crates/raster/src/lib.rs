@@ -31,7 +31,10 @@
 //! rows (disjoint rows of the framebuffer), each band a task, up to the
 //! first failed tile; a fragment program that cannot fail
 //! ([`ShaderStage::always_completes`]) has each task write its tile back
-//! through its own rows as soon as it is done. No value is combined across tasks, and
+//! through its own rows as soon as it is done. A [`DrawQueue`] keeps such
+//! draws set up and binned until its flush, where each tile task runs
+//! every waiting draw's primitives, draw after draw, on one copy of the
+//! tile (the same bytes as the draws one by one). No value is combined across tasks, and
 //! textures are read-only, so the framebuffer is bit-identical whatever the
 //! thread count. A shader error (`exec::ExecError`, e.g. the loop budget)
 //! ends the draw as running the tiles one after the other would: tiles
@@ -187,8 +190,10 @@
 //!   (`TextureUnits`, handing each lookup to one of the two);
 //!   `unorm8_filter` (fixed-point RGBA8 filtering);
 //! - framebuffers: `framebuffer`, clears in `clear`;
-//! - the draw driver and threads: `draw` (`draw_probed`, `shade_tiles`),
-//!   `workers`, `spare` (buffers kept between draws);
+//! - the draw driver and threads: `draw` (`draw_probed`, `SetUp`,
+//!   `shade_tiles`), `queue` ([`DrawQueue`]: draws whose fragment stages
+//!   wait for one pass over the tiles), `workers`, `spare` (buffers kept
+//!   between draws);
 //! - the debugger: `probe` (recorder, report types), `replay`
 //!   ([`probe_draw`], [`view_draw`]).
 //!
@@ -224,6 +229,7 @@ mod linkage;
 mod pixel_fragments;
 mod prim;
 mod probe;
+mod queue;
 mod rasterize;
 mod replay;
 mod setup;
@@ -275,6 +281,7 @@ pub use probe::{
     DrawProbe, EmittedBy, EmittedVertex, Event, FragmentProbe, GeometryProbe, OpsProbe, PixelState,
     PrintLine, VertexProbe, View, ViewImage, MAX_TRACE_EVENTS,
 };
+pub use queue::{DrawQueue, QueuedFragments};
 pub use rasterize::SUBPIXEL_BITS;
 pub use replay::{probe_draw, view_draw, ProbeRequest, Replay};
 pub use setup::MAX_POINT_SIZE;
@@ -301,6 +308,10 @@ pub enum DrawError {
     /// 2^24).
     #[error("a draw takes fewer than 2^32 - 1 indices ({0} given)")]
     TooManyIndices(usize),
+    /// Queued draws flushed into a framebuffer of another size than they
+    /// were set up for (`DrawQueue::flush`): they are dropped.
+    #[error("queued draws were set up for a framebuffer of another size")]
+    QueueTarget,
 }
 
 /// A shader stage the pipeline can run: `exec::Kernel`, or anything else

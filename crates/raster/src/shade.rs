@@ -282,6 +282,13 @@ pub(crate) struct FragmentStage<'a> {
 }
 
 impl<'a> FragmentStage<'a> {
+    /// Whether every run of the stage's shaders returns `Ok`
+    /// ([`ShaderStage::always_completes`]).
+    pub fn always_completes(&self) -> bool {
+        self.shader.always_completes()
+            && (self.deferred.as_ref()).is_none_or(|d| d.always_completes())
+    }
+
     /// The fragment stage of a draw: `shader` with `layout`'s linkage
     /// under `state`.
     #[allow(clippy::too_many_arguments)]

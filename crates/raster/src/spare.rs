@@ -2,7 +2,7 @@
 //! per-vertex set-up table, set-up chunks' primitives and planes), kept
 //! by the [`crate::Workers`] a draw ran on for its next draws.
 //!
-//! Takes the buffers a draw is done with ([`Spare::keep`] and friends);
+//! Takes the buffers a draw is done with ([`Spare::keep_chunks`] and friends);
 //! gives them back, emptied or as they are, to the next draw. Nothing in
 //! them carries over as a value: each draw overwrites or clears what it
 //! reuses.
@@ -10,6 +10,7 @@
 use crate::interpolate::Plane;
 use crate::prim::Prim;
 use crate::setup::Corner;
+use crate::shaded::Vertices;
 
 /// Buffers of an earlier draw, kept (emptied) for the next draws on the
 /// same [`Workers`]: a draw that fits in them allocates no fresh memory,
@@ -85,11 +86,9 @@ impl Spare {
         }
     }
 
-    /// Keeps `chunks` (emptied) and `outputs` (as they are) as far as the
-    /// limit allows.
-    pub fn keep(&mut self, chunks: Vec<(Vec<Prim>, Vec<Plane>)>, outputs: Vec<f32>) {
+    /// Keeps a draw's set-up chunks (emptied) as far as the limit allows.
+    pub fn keep_chunks(&mut self, chunks: Vec<(Vec<Prim>, Vec<Plane>)>) {
         let mut bytes = self.bytes();
-        keep_larger(&mut self.outputs, outputs, &mut bytes);
         for mut c in chunks {
             let more = Spare::chunk_bytes(&c);
             if bytes + more > Spare::LIMIT {
@@ -100,6 +99,14 @@ impl Spare {
             c.1.clear();
             self.chunks.push(c);
         }
+    }
+
+    /// Keeps a draw's vertex outputs (as they are) and its index table
+    /// (emptied) as far as the limit allows.
+    pub fn keep_vertices(&mut self, vertices: Vertices) {
+        let mut bytes = self.bytes();
+        keep_larger(&mut self.outputs, vertices.outputs, &mut bytes);
+        self.keep_tables([vertices.vertex_of]);
     }
 }
 
