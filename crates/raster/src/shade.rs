@@ -684,8 +684,16 @@ impl<'a> FragmentStage<'a> {
         // Lanes past the last read zeros (as absent quads' do in `fill`),
         // also where the last quad's unused values landed.
         if total < LANES {
-            for l in plan {
-                if let Some(lanes) = batch.inputs.get_mut(l.offset) {
+            let layout = self.layout;
+            let pixel = [
+                layout.frag_coord.map(|o| o..o + 4),
+                layout.front_facing.map(|o| o..o + 1),
+                layout.point_coord.map(|o| o..o + 2),
+                layout.primitive_id.map(|o| o..o + 1),
+            ];
+            let pixel = pixel.into_iter().flatten().flatten();
+            for o in plan.iter().map(|l| l.offset).chain(pixel) {
+                if let Some(lanes) = batch.inputs.get_mut(o) {
                     for x in lanes.iter_mut().skip(total) {
                         *x = 0.0;
                     }
@@ -694,8 +702,8 @@ impl<'a> FragmentStage<'a> {
         }
     }
 
-    /// Writes the inputs `plan` lists, and gl_FragCoord, gl_FrontFacing
-    /// and gl_PointCoord where the stage reads them, for the pixels of
+    /// Writes the inputs `plan` lists, and gl_FragCoord, gl_FrontFacing,
+    /// gl_PointCoord and gl_PrimitiveID where the stage reads them, for the pixels of
     /// each quad of `pending` that `place` puts in lanes: each varying
     /// evaluated from its plane at those pixels (`crate::interpolate`),
     /// gl_PointCoord on point sprites for the coordinates it replaces. A
@@ -731,11 +739,7 @@ impl<'a> FragmentStage<'a> {
             let (Some(prim), quad) = (e.prim, &e.quad) else {
                 continue;
             };
-            let Place {
-                order,
-                count,
-                first,
-            } = place(q, e);
+            let Place { order, first, .. } = place(q, e);
             // The pixels of `order`, in that order.
             let planes = &prim.planes;
             // QUAD_X and QUAD_Y of the pixels, computed (a table lookup
@@ -765,45 +769,47 @@ impl<'a> FragmentStage<'a> {
             if !pixel_inputs {
                 continue;
             }
-            let pc = match prim.shape {
-                Shape::Point { .. } => point_coords(quad, prim, order),
-                _ => [(0.0, 0.0); 4],
+            // The per-pixel inputs four lanes at once, as the varyings (a
+            // lane at a time, converting and storing scalars, gl_FragCoord
+            // cost as much as all the varyings of a sphere impostor).
+            let put = |inputs: &mut [[f32; LANES]], o: usize, values: [f32; 4]| {
+                if let Some(lanes) = inputs.get_mut(o) {
+                    put_quad(lanes, first, values);
+                }
             };
-            let [frag_z, frag_w] = self.frag_zw;
-            let inv_w = match frag_w {
-                true => planes.inv_w_at(&x, &y),
-                false => [0.0; 4],
-            };
-            // (An index loop: the zipped iterator's state went through
-            // memory with a store-forwarding stall.)
-            for (i, &k) in order.iter().enumerate().take(count) {
-                let lane = first + i;
-                if lane >= LANES {
-                    break;
+            if let Some(o) = layout.frag_coord {
+                let [frag_z, frag_w] = self.frag_zw;
+                put(
+                    inputs,
+                    o,
+                    order.map(|k| quad.pixel(k as usize & 3).0 as f32 + 0.5),
+                );
+                put(
+                    inputs,
+                    o + 1,
+                    order.map(|k| quad.pixel(k as usize & 3).1 as f32 + 0.5),
+                );
+                if frag_z {
+                    put(inputs, o + 2, order.map(|k| quad.z[k as usize & 3] as f32));
                 }
-                let k = k as usize & 3;
-                let (px, py) = quad.pixel(k);
-                if let Some(o) = layout.frag_coord {
-                    set(batch, o, lane, px as f32 + 0.5);
-                    set(batch, o + 1, lane, py as f32 + 0.5);
-                    if frag_z {
-                        set(batch, o + 2, lane, quad.z[k] as f32);
-                    }
-                    if frag_w {
-                        set(batch, o + 3, lane, inv_w[i]);
-                    }
+                if frag_w {
+                    put(inputs, o + 3, planes.inv_w_at(&x, &y));
                 }
-                if let Some(o) = layout.front_facing {
-                    set(batch, o, lane, if prim.back { 0.0 } else { 1.0 });
-                }
-                if let Some(o) = layout.point_coord {
-                    set(batch, o, lane, pc[i].0);
-                    set(batch, o + 1, lane, pc[i].1);
-                }
-                if let Some(o) = layout.primitive_id {
-                    let id = self.state.primitive_ids.of(prim.source);
-                    set(batch, o, lane, f32::from_bits(id));
-                }
+            }
+            if let Some(o) = layout.front_facing {
+                put(inputs, o, [if prim.back { 0.0 } else { 1.0 }; 4]);
+            }
+            if let Some(o) = layout.point_coord {
+                let pc = match prim.shape {
+                    Shape::Point { .. } => point_coords(quad, prim, order),
+                    _ => [(0.0, 0.0); 4],
+                };
+                put(inputs, o, pc.map(|c| c.0));
+                put(inputs, o + 1, pc.map(|c| c.1));
+            }
+            if let Some(o) = layout.primitive_id {
+                let id = self.state.primitive_ids.of(prim.source);
+                put(inputs, o, [f32::from_bits(id); 4]);
             }
         }
     }
