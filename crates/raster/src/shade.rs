@@ -165,6 +165,30 @@ const COMPRESS: [[u8; 4]; 16] = {
     t
 };
 
+/// Each link of `plan` evaluated from its plane in `varyings` at the
+/// pixels `(x, y)` (with their `rw`, `Plane::values`) into the inputs'
+/// lanes from `first` on. Its own function so that the positions stay in
+/// registers across the links (in the caller's loop they were reloaded
+/// from the stack for every link).
+#[inline(always)]
+fn put_varyings(
+    inputs: &mut [[f32; LANES]],
+    plan: &[FillLink],
+    varyings: &[Plane],
+    (x, y, rw): ([f32; 4], [f32; 4], [f32; 4]),
+    first: usize,
+) {
+    for l in plan {
+        let values = match varyings.get(l.li) {
+            Some(p) => p.values(&x, &y, &rw),
+            None => [0.0; 4],
+        };
+        if let Some(lanes) = inputs.get_mut(l.offset) {
+            put_quad(lanes, first, values);
+        }
+    }
+}
+
 /// Writes a quad's four values from lane `first` on (those past the last
 /// lane are dropped).
 #[inline(always)]
@@ -751,20 +775,24 @@ impl<'a> FragmentStage<'a> {
             let varyings = self.prim_attrs(prim);
             let sprite = sprite && matches!(prim.shape, Shape::Point { .. });
             let inputs = &mut batch.inputs[..];
-            for l in plan {
-                let Some(lanes) = inputs.get_mut(l.offset) else {
-                    continue;
-                };
-                let values: [f32; 4] = match l.kind {
-                    FillKind::Replace(c) if sprite => {
-                        point_coords(quad, prim, order).map(|pc| [pc.0, pc.1, 0.0, 1.0][c])
-                    }
-                    _ => match varyings.get(l.li) {
-                        Some(p) => p.values(&x, &y, &rw),
-                        None => [0.0; 4],
-                    },
-                };
-                put_quad(lanes, first, values);
+            if sprite {
+                for l in plan {
+                    let Some(lanes) = inputs.get_mut(l.offset) else {
+                        continue;
+                    };
+                    let values: [f32; 4] = match l.kind {
+                        FillKind::Replace(c) => {
+                            point_coords(quad, prim, order).map(|pc| [pc.0, pc.1, 0.0, 1.0][c])
+                        }
+                        _ => match varyings.get(l.li) {
+                            Some(p) => p.values(&x, &y, &rw),
+                            None => [0.0; 4],
+                        },
+                    };
+                    put_quad(lanes, first, values);
+                }
+            } else {
+                put_varyings(inputs, plan, varyings, (x, y, rw), first);
             }
             if !pixel_inputs {
                 continue;
