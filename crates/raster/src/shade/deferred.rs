@@ -6,20 +6,26 @@
 
 use super::*;
 
-/// The lane of pixel `k` of `e`, the `q`-th quad of a batch: `4q + k`,
-/// or in a packed batch the next lane (`*next`, then counted) when the
-/// quad runs that pixel (`e.write`), else none. Called for the quads in
-/// order, each one's pixels in order.
+/// The lanes of the four pixels of `e`, the `q`-th quad of a batch, and
+/// the pixels that have one: `4q + k` for every pixel, or in a packed
+/// batch the pixels the quad runs (`e.write`), in order, from lane
+/// `*next` on (then counted). Called for the quads in order.
 #[inline(always)]
-fn lane_of(packed: bool, q: usize, e: &Entry, k: usize, next: &mut usize) -> Option<usize> {
-    match packed {
-        true if e.write & (1 << k) != 0 => {
-            *next += 1;
-            Some(*next - 1)
-        }
-        true => None,
-        false => Some(4 * q + k),
+fn quad_lanes(packed: bool, q: usize, e: &Entry, next: &mut usize) -> ([usize; 4], u8) {
+    if !packed {
+        return ([0, 1, 2, 3].map(|k| 4 * q + k), 0xf);
     }
+    let run = e.write & 0xf;
+    let first = *next;
+    *next += run.count_ones() as usize;
+    let before = |k: u8| (run & ((1u8 << k) - 1)).count_ones() as usize;
+    ([0, 1, 2, 3].map(|k| first + before(k)), run)
+}
+
+/// Whether lane `lane` of `mask` is set (lanes past the mask's are not).
+#[inline(always)]
+fn lane_set(mask: exec::LaneMask, lane: usize) -> bool {
+    lane < LANES && mask & (1 << lane) != 0
 }
 
 /// What the passes of [`FragmentStage::shade_deferred`] share in a tile.
@@ -127,17 +133,17 @@ impl<'a> FragmentStage<'a> {
         let mut next = 0;
         let mut alive_z = |q: usize, e: &Entry| {
             let quad = &e.quad;
-            let mut alive = 0u8;
-            let mut z = [0f32; 4];
-            for (k, z) in z.iter_mut().enumerate() {
-                let Some(lane) = lane_of(pass.pack_depth, q, e, k, &mut next) else {
-                    continue;
-                };
-                if quad.live & (1 << k) != 0 && batch.discarded & (1 << lane) == 0 {
-                    alive |= 1 << k;
-                    *z = self.frag_z(batch, lane, quad, k);
+            let (lanes, has) = quad_lanes(pass.pack_depth, q, e, &mut next);
+            let mut alive = quad.live & has;
+            for (k, &lane) in lanes.iter().enumerate() {
+                if lane_set(batch.discarded, lane) {
+                    alive &= !(1 << k);
                 }
             }
+            let z = [0, 1, 2, 3].map(|k| match alive & (1 << k) {
+                0 => 0.0,
+                _ => self.frag_z(batch, lanes[k], quad, k),
+            });
             (alive, z)
         };
         match &pass.quick {
@@ -231,11 +237,9 @@ impl<'a> FragmentStage<'a> {
         let mut count = 0;
         let mut next = 0;
         for (q, e) in todo.iter().enumerate() {
-            for k in 0..4 {
-                let Some(lane) = lane_of(pass.pack_colors, q, e, k, &mut next) else {
-                    continue;
-                };
-                if e.write & (1 << k) == 0 || batch.discarded & (1 << lane) != 0 {
+            let (lanes, has) = quad_lanes(pass.pack_colors, q, e, &mut next);
+            for (k, &lane) in lanes.iter().enumerate() {
+                if has & e.write & (1 << k) == 0 || lane_set(batch.discarded, lane) {
                     continue;
                 }
                 let (x, y) = e.quad.pixel(k);
