@@ -717,10 +717,8 @@ impl<'a> FragmentStage<'a> {
             ];
             let pixel = pixel.into_iter().flatten().flatten();
             for o in plan.iter().map(|l| l.offset).chain(pixel) {
-                if let Some(lanes) = batch.inputs.get_mut(o) {
-                    for x in lanes.iter_mut().skip(total) {
-                        *x = 0.0;
-                    }
+                if let Some(tail) = batch.inputs.get_mut(o).and_then(|l| l.get_mut(total..)) {
+                    tail.fill(0.0);
                 }
             }
         }

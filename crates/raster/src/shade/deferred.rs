@@ -131,28 +131,13 @@ impl<'a> FragmentStage<'a> {
         // Per quad: the pixels still alive (covered, not discarded) and
         // their window z, then their depth tests.
         let mut next = 0;
-        let mut alive_z = |q: usize, e: &Entry| {
-            let quad = &e.quad;
-            let (lanes, has) = quad_lanes(pass.pack_depth, q, e, &mut next);
-            let mut alive = quad.live & has;
-            for (k, &lane) in lanes.iter().enumerate() {
-                if lane_set(batch.discarded, lane) {
-                    alive &= !(1 << k);
-                }
-            }
-            let z = [0, 1, 2, 3].map(|k| match alive & (1 << k) {
-                0 => 0.0,
-                _ => self.frag_z(batch, lanes[k], quad, k),
-            });
-            (alive, z)
-        };
         match &pass.quick {
             Some(q) => {
                 // A quad's four pixels are distinct: tested together as
                 // one after the other.
                 let mut target = q.target(fb, pass.origin);
                 for (q, e) in pending.iter().enumerate() {
-                    let (alive, z) = alive_z(q, e);
+                    let (alive, z) = self.alive_z(pass.pack_depth, batch, q, e, &mut next);
                     if alive == 0 {
                         continue;
                     }
@@ -173,7 +158,7 @@ impl<'a> FragmentStage<'a> {
             }
             None => {
                 for (q, e) in pending.iter().enumerate() {
-                    let (alive, z) = alive_z(q, e);
+                    let (alive, z) = self.alive_z(pass.pack_depth, batch, q, e, &mut next);
                     let quad = &e.quad;
                     for (k, &z) in z.iter().enumerate() {
                         let (x, y) = quad.pixel(k);
@@ -196,6 +181,35 @@ impl<'a> FragmentStage<'a> {
             }
         }
         Ok(())
+    }
+
+    /// The pixels of `e`, the `q`-th quad of the depth pass's batch
+    /// (lanes as [`quad_lanes`] gives them), still alive after the slice
+    /// (covered, not discarded), and their window z (0 for the others).
+    #[inline(always)]
+    fn alive_z(
+        &self,
+        packed: bool,
+        batch: &Batch,
+        q: usize,
+        e: &Entry,
+        next: &mut usize,
+    ) -> (u8, [f32; 4]) {
+        let quad = &e.quad;
+        let (lanes, has) = quad_lanes(packed, q, e, next);
+        let mut alive = quad.live & has;
+        for (k, &lane) in lanes.iter().enumerate() {
+            if lane_set(batch.discarded, lane) {
+                alive &= !(1 << k);
+            }
+        }
+        let mut z = [0f32; 4];
+        for (k, z) in z.iter_mut().enumerate() {
+            if alive & (1 << k) != 0 {
+                *z = self.frag_z(batch, lanes[k], quad, k);
+            }
+        }
+        (alive, z)
     }
 
     /// Makes `e` the quad `quad` of primitive `p` (`prim`) for the depth
