@@ -708,17 +708,25 @@ impl<'a> FragmentStage<'a> {
         // Lanes past the last read zeros (as absent quads' do in `fill`),
         // also where the last quad's unused values landed.
         if total < LANES {
+            let inputs = &mut batch.inputs[..];
+            let mut clear = |o: usize| {
+                if let Some(tail) = inputs.get_mut(o).and_then(|l| l.get_mut(total..)) {
+                    tail.fill(0.0);
+                }
+            };
+            for l in plan {
+                clear(l.offset);
+            }
             let layout = self.layout;
             let pixel = [
-                layout.frag_coord.map(|o| o..o + 4),
-                layout.front_facing.map(|o| o..o + 1),
-                layout.point_coord.map(|o| o..o + 2),
-                layout.primitive_id.map(|o| o..o + 1),
+                (layout.frag_coord, 4),
+                (layout.front_facing, 1),
+                (layout.point_coord, 2),
+                (layout.primitive_id, 1),
             ];
-            let pixel = pixel.into_iter().flatten().flatten();
-            for o in plan.iter().map(|l| l.offset).chain(pixel) {
-                if let Some(tail) = batch.inputs.get_mut(o).and_then(|l| l.get_mut(total..)) {
-                    tail.fill(0.0);
+            for (o, n) in pixel {
+                if let Some(o) = o {
+                    (o..o + n).for_each(&mut clear);
                 }
             }
         }
