@@ -146,11 +146,9 @@ impl Bins {
         Bins { grid, chunks }
     }
 
-    /// The tiles some primitive overlaps, in order.
-    pub fn occupied(&self) -> Vec<usize> {
-        (0..self.grid.tiles)
-            .filter(|&t| self.chunks.iter().any(|(b, _)| !b.tile(t).is_empty()))
-            .collect()
+    /// Whether some primitive overlaps tile `t`.
+    pub fn occupies(&self, t: usize) -> bool {
+        self.chunks.iter().any(|(b, _)| !b.tile(t).is_empty())
     }
 
     /// The draw indices of tile `t`'s primitives, in draw order.

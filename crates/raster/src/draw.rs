@@ -451,21 +451,10 @@ pub(crate) fn shade_tiles(
 
 /// The tiles some primitive of `draws` overlaps, in order.
 fn occupied_tiles(draws: &[DrawTiles]) -> Vec<usize> {
-    match draws {
-        [one] => one.bins.occupied(),
-        _ => {
-            let tiles = draws.first().map_or(0, |d| d.bins.grid.count());
-            let mut hit = vec![false; tiles];
-            for d in draws {
-                for t in d.bins.occupied() {
-                    if let Some(h) = hit.get_mut(t) {
-                        *h = true;
-                    }
-                }
-            }
-            (0..tiles).filter(|&t| hit[t]).collect()
-        }
-    }
+    let tiles = draws.first().map_or(0, |d| d.bins.grid.count());
+    (0..tiles)
+        .filter(|&t| draws.iter().any(|d| d.bins.occupies(t)))
+        .collect()
 }
 
 /// Tile task `i`: every draw's primitives overlapping tile `t`, draw

@@ -1261,9 +1261,31 @@ fn queue_scene(w: u32, h: u32) -> Vec<(PipelineState, bool, Stage, Verts)> {
     ]
 }
 
+/// Pushes `v` as triangles through [`pass_vs`] and `shader` (no uniforms
+/// or textures) on `queue`.
+fn push_triangles(
+    queue: &mut crate::queue::DrawQueue,
+    workers: &Workers,
+    fb: &mut Framebuffer,
+    st: &PipelineState,
+    shader: std::sync::Arc<dyn ShaderStage + Send + Sync>,
+    v: &Verts,
+) {
+    let fragments = crate::queue::QueuedFragments {
+        shader,
+        uniforms: Vec::new(),
+        textures: TextureUnits::default(),
+    };
+    let idx: Vec<u32> = (0..v.pos.len() as u32).collect();
+    let (vs, mode) = (pass_vs(), (Mode::Triangles, &idx[..]));
+    queue
+        .push(workers, fb, st, (&vs, &[]), None, fragments, mode, v)
+        .unwrap();
+}
+
 #[test]
 fn queued_draws_give_the_bytes_of_draws_one_after_another() {
-    use crate::queue::{DrawQueue, QueuedFragments};
+    use crate::queue::DrawQueue;
     let (w, h) = (200, 130);
     let fresh = || {
         let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, false);
@@ -1290,24 +1312,7 @@ fn queued_draws_give_the_bytes_of_draws_one_after_another() {
             } else {
                 std::sync::Arc::new(fs)
             };
-            let fragments = QueuedFragments {
-                shader,
-                uniforms: Vec::new(),
-                textures: TextureUnits::default(),
-            };
-            let idx: Vec<u32> = (0..v.pos.len() as u32).collect();
-            queue
-                .push(
-                    &workers,
-                    &mut fb,
-                    &st,
-                    (&pass_vs(), &[]),
-                    None,
-                    fragments,
-                    (Mode::Triangles, &idx),
-                    &v,
-                )
-                .unwrap();
+            push_triangles(&mut queue, &workers, &mut fb, &st, shader, &v);
             waiting.push(queue.len());
         }
         // Three wait, the stage that may fail flushes them and draws at
@@ -1323,30 +1328,13 @@ fn queued_draws_give_the_bytes_of_draws_one_after_another() {
 
 #[test]
 fn a_queue_is_not_flushed_into_a_framebuffer_of_another_size() {
-    use crate::queue::{DrawQueue, QueuedFragments};
+    use crate::queue::DrawQueue;
     let workers = Workers::inline();
     let mut fb = Framebuffer::new(70, 70, ColorFormat::Rgba8, false, false);
     let mut queue = DrawQueue::default();
     let v = verts(&full_screen(), &[RED; 6]);
-    let idx: Vec<u32> = (0..6).collect();
-    let fragments = QueuedFragments {
-        shader: std::sync::Arc::new(Completes(color_fs())),
-        uniforms: Vec::new(),
-        textures: TextureUnits::default(),
-    };
-    let st = state(70, 70);
-    queue
-        .push(
-            &workers,
-            &mut fb,
-            &st,
-            (&pass_vs(), &[]),
-            None,
-            fragments,
-            (Mode::Triangles, &idx),
-            &v,
-        )
-        .unwrap();
+    let shader = std::sync::Arc::new(Completes(color_fs()));
+    push_triangles(&mut queue, &workers, &mut fb, &state(70, 70), shader, &v);
     assert_eq!(queue.len(), 1);
     let mut other = Framebuffer::new(130, 70, ColorFormat::Rgba8, false, false);
     let r = queue.flush(&workers, &mut other);

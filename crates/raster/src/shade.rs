@@ -183,9 +183,15 @@ fn put_varyings(
             Some(p) => p.values(&x, &y, &rw),
             None => [0.0; 4],
         };
-        if let Some(lanes) = inputs.get_mut(l.offset) {
-            put_quad(lanes, first, values);
-        }
+        put_input(inputs, l.offset, first, values);
+    }
+}
+
+/// [`put_quad`] into input component `o`, if the batch has it.
+#[inline(always)]
+fn put_input(inputs: &mut [[f32; LANES]], o: usize, first: usize, values: [f32; 4]) {
+    if let Some(lanes) = inputs.get_mut(o) {
+        put_quad(lanes, first, values);
     }
 }
 
@@ -781,24 +787,17 @@ impl<'a> FragmentStage<'a> {
             let varyings = self.prim_attrs(prim);
             let sprite = sprite && matches!(prim.shape, Shape::Point { .. });
             let inputs = &mut batch.inputs[..];
+            put_varyings(inputs, plan, varyings, (x, y, rw), first);
+            // On a point sprite the coordinates GL_COORD_REPLACE names
+            // take gl_PointCoord's place.
             if sprite {
+                let pc = point_coords(quad, prim, order);
                 for l in plan {
-                    let Some(lanes) = inputs.get_mut(l.offset) else {
-                        continue;
-                    };
-                    let values: [f32; 4] = match l.kind {
-                        FillKind::Replace(c) => {
-                            point_coords(quad, prim, order).map(|pc| [pc.0, pc.1, 0.0, 1.0][c])
-                        }
-                        _ => match varyings.get(l.li) {
-                            Some(p) => p.values(&x, &y, &rw),
-                            None => [0.0; 4],
-                        },
-                    };
-                    put_quad(lanes, first, values);
+                    if let FillKind::Replace(c) = l.kind {
+                        let values = pc.map(|pc| [pc.0, pc.1, 0.0, 1.0][c]);
+                        put_input(inputs, l.offset, first, values);
+                    }
                 }
-            } else {
-                put_varyings(inputs, plan, varyings, (x, y, rw), first);
             }
             if !pixel_inputs {
                 continue;
@@ -806,11 +805,8 @@ impl<'a> FragmentStage<'a> {
             // The per-pixel inputs four lanes at once, as the varyings (a
             // lane at a time, converting and storing scalars, gl_FragCoord
             // cost as much as all the varyings of a sphere impostor).
-            let put = |inputs: &mut [[f32; LANES]], o: usize, values: [f32; 4]| {
-                if let Some(lanes) = inputs.get_mut(o) {
-                    put_quad(lanes, first, values);
-                }
-            };
+            let put =
+                |inputs: &mut [[f32; LANES]], o: usize, values| put_input(inputs, o, first, values);
             if let Some(o) = layout.frag_coord {
                 let [frag_z, frag_w] = self.frag_zw;
                 put(
