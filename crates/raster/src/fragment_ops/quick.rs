@@ -117,6 +117,9 @@ impl QuickOps {
 
     /// The buffers of `fb` these operations touch, borrowed for a run of
     /// fragments (whose window coordinates start at `origin` in `fb`).
+    /// Inlined: the deferred passes take one per batch, and the struct
+    /// returned through memory cost a store-forwarding stall each time.
+    #[inline(always)]
     pub fn target<'f>(&self, fb: &'f mut Framebuffer, origin: (u32, u32)) -> QuickTarget<'f> {
         let (width, height) = (fb.width, fb.height);
         let color = match self.color {
