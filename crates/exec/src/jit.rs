@@ -107,21 +107,34 @@ pub(crate) fn set_compile_after(runs: u32) {
     COMPILE_AFTER_SET.store(runs.max(1), Ordering::Relaxed);
 }
 
-/// [`COMPILE_AFTER_RUNS`], or `SHADERBOX_JIT_AFTER` (a run count; 1 =
-/// compile on the first run, for testing native code on short runs), or
-/// what [`set_compile_after`] set.
-fn compile_after() -> u32 {
+/// The run count a kernel compiles at on the thread of that run: what
+/// [`set_compile_after`] set, else `SHADERBOX_JIT_AFTER` (a run count, at
+/// least 1; 1 = native code from the first run), else 0 (neither: the
+/// default, [`COMPILE_AFTER_RUNS`] on a thread of its own). Compiling
+/// where the count is reached makes the later runs native whatever the
+/// timing: for tests, and for instruction counts under valgrind, whose
+/// serialized threads would leave a compiling thread behind.
+fn compile_after_set() -> u32 {
     let set = COMPILE_AFTER_SET.load(Ordering::Relaxed);
     if set != 0 {
         return set;
     }
-    static N: OnceLock<u32> = OnceLock::new();
-    *N.get_or_init(|| {
+    static ENV: OnceLock<u32> = OnceLock::new();
+    *ENV.get_or_init(|| {
         std::env::var("SHADERBOX_JIT_AFTER")
             .ok()
-            .and_then(|s| s.trim().parse().ok())
-            .unwrap_or(COMPILE_AFTER_RUNS)
+            .and_then(|s| s.trim().parse::<u32>().ok())
+            .map_or(0, |n| n.max(1))
     })
+}
+
+/// The run count a kernel's compilation starts at ([`compile_after_set`],
+/// else [`COMPILE_AFTER_RUNS`]).
+fn compile_after() -> u32 {
+    match compile_after_set() {
+        0 => COMPILE_AFTER_RUNS,
+        n => n,
+    }
 }
 
 /// What the generated function receives. `#[repr(C)]`: the native code
@@ -284,9 +297,9 @@ impl Cache {
         if let Some(r) = self.slot.get() {
             return r.as_ref().ok();
         }
-        if COMPILE_AFTER_SET.load(Ordering::Relaxed) != 0 {
-            // Tests: compiled by the run that reaches the count, so the
-            // runs after it are native whatever the timing.
+        if compile_after_set() != 0 {
+            // Compiled by the run that reaches the count, so the runs
+            // after it are native whatever the timing.
             return self.get(code, false);
         }
         if self.runs.fetch_add(1, Ordering::Relaxed) + 1 < compile_after()

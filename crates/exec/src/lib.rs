@@ -172,12 +172,13 @@
 //! texture lookups, so it computes the same bits (tests compare it with
 //! the interpreter on random programs of every op, on every unit-test
 //! shader, and on piglit's execution and built-in function shaders).
-//! A kernel's native code is started on its 1,024th run
-//! (`SHADERBOX_JIT_AFTER=n` or [`set_native_after`]: its n-th) on a
-//! thread of its own while the runs go on interpreted, and used once
-//! ready, so compiling and linking a program costs no code generation,
-//! kernels of tiny draws never pay for it and no draw waits for it;
-//! [`Kernel::compile_native`] compiles at once.
+//! A kernel's native code is started on its 1,024th run on a thread of
+//! its own while the runs go on interpreted, and used once ready, so
+//! compiling and linking a program costs no code generation, kernels of
+//! tiny draws never pay for it and no draw waits for it;
+//! `SHADERBOX_JIT_AFTER=n` or [`set_native_after`] make it compile on its
+//! n-th run, on that run's thread (the later runs native whatever the
+//! timing); [`Kernel::compile_native`] compiles at once.
 //! Limitations: kernels with subroutine calls (inlining limit exceeded)
 //! or over 6000 executor ops stay on the interpreter, as does everything
 //! when Cranelift does not support the CPU or fails (the reason:
