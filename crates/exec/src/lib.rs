@@ -233,6 +233,7 @@
 
 mod compute;
 pub mod cpu;
+mod depth_range;
 mod depth_slice;
 mod dispatch;
 mod engine;
@@ -254,6 +255,7 @@ mod program;
 mod variant;
 
 pub use compute::{run_work_group, WorkGroup};
+pub use depth_range::{Affine, DepthRange, RangeScratch};
 pub use float_env::FloatEnv;
 pub use interface::{kinds, size_of, Emitted, Interface, Slot, VertexInput};
 pub use interp::LOOP_BUDGET;
@@ -616,6 +618,8 @@ pub struct Kernel {
     code: std::sync::Arc<opt::Code>,
     /// [`Kernel::depth_only`], computed on first use (shared by clones).
     depth: std::sync::Arc<std::sync::OnceLock<Option<Kernel>>>,
+    /// The analysis of [`Kernel::depth_range`], found on first use.
+    range_plan: std::sync::Arc<std::sync::OnceLock<Option<std::sync::Arc<depth_range::Plan>>>>,
     /// Native code for `code`, made on demand (shared by clones).
     #[cfg(feature = "jit")]
     jit: std::sync::Arc<jit::Cache>,
@@ -728,6 +732,7 @@ impl Kernel {
             read_inputs,
             code,
             depth: Default::default(),
+            range_plan: Default::default(),
             #[cfg(feature = "jit")]
             jit: Default::default(),
         }

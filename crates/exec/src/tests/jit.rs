@@ -428,6 +428,7 @@ fn kernel_of_code(code: Code, budget: u64, outputs: &[Reg]) -> Kernel {
         read_inputs: vec![true; REGS as usize],
         code: std::sync::Arc::new(code),
         depth: Default::default(),
+        range_plan: Default::default(),
         jit: Default::default(),
     }
 }
