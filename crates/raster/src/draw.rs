@@ -297,6 +297,7 @@ impl SetUp {
             probe,
         );
         stage.depth_format = fb.depth_format;
+        stage.cache_bounds(self.primitives());
         stage
     }
 

@@ -35,6 +35,8 @@
 //! without fused multiply-adds, so the values are the same bits
 //! everywhere.
 
+use crate::ex;
+
 /// How a varying's plane gives its value ([`Plane::values`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub(crate) enum Kind {
@@ -264,6 +266,59 @@ impl Plane {
                     p[l] *= rw[l];
                 }
                 p
+            }
+        }
+    }
+}
+
+/// The pixel offsets from a primitive's origin of a rectangle of its
+/// pixels, `X ∈ [x.0, x.1]`, `Y ∈ [y.0, y.1]`, as the region of
+/// [`ex::Affine`] forms (`X = mid + half·u`).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Region {
+    pub x: (f64, f64),
+    pub y: (f64, f64),
+}
+
+impl Region {
+    /// `X` (`Y`: [`Region::y`]) as a form: exact.
+    pub fn x(&self) -> ex::Affine {
+        let (a, b) = self.x;
+        ex::Affine::new(0.5 * (a + b), 0.5 * (b - a), 0.0, 0.0)
+    }
+
+    pub fn y(&self) -> ex::Affine {
+        let (a, b) = self.y;
+        ex::Affine::new(0.5 * (a + b), 0.0, 0.5 * (b - a), 0.0)
+    }
+
+    /// The values [`at`] gives over the region: `(c + Y·dy) + X·dx`, each
+    /// operation's rounding included.
+    fn at(&self, c: f32, dx: f32, dy: f32) -> Option<ex::Affine> {
+        use ex::Affine as A;
+        let y = A::mul_f32(self.y(), A::exact(dy))?;
+        let x = A::mul_f32(self.x(), A::exact(dx))?;
+        A::add_f32(A::add_f32(A::exact(c), y)?, x)
+    }
+}
+
+impl Plane {
+    /// A form holding the varying's value ([`Plane::values`]) at every
+    /// pixel of `region`, `planes` its primitive's; `None` when the
+    /// arithmetic may overflow or divide by zero.
+    pub fn form(&self, planes: &PrimPlanes, region: &Region) -> Option<ex::Affine> {
+        use ex::Affine as A;
+        match self.kind {
+            Kind::Constant => Some(A::exact(self.c)),
+            Kind::Linear => region.at(self.c, self.dx, self.dy),
+            Kind::Perspective => {
+                let p = region.at(self.c, self.dx, self.dy)?;
+                let [c, dx, dy] = planes.inv_w;
+                let rw = match planes.perspective {
+                    true => A::div_f32(A::exact(1.0), region.at(c, dx, dy)?)?,
+                    false => A::exact(1.0),
+                };
+                A::mul_f32(p, rw)
             }
         }
     }

@@ -363,6 +363,15 @@ pub trait ShaderStage: Sync {
         None
     }
 
+    /// A bound on the `gl_FragDepth` the stage writes over a region of a
+    /// primitive, prepared for the uniform words `uniforms`
+    /// (`exec::Kernel::depth_range`): the fragment stage then rejects the
+    /// fragments whose every possible depth fails the depth test before
+    /// running the stage on them. `None` (the default): no bound.
+    fn depth_range(&self, _uniforms: &[u32]) -> Option<ex::DepthRange> {
+        None
+    }
+
     /// Whether running the stage leaves a batch's outputs as they were
     /// and discards nothing (a kernel without ops, such as the depth-only
     /// slice of a shader that neither writes `gl_FragDepth` nor discards):
@@ -461,6 +470,9 @@ impl ShaderStage for ex::Kernel {
     }
     fn does_nothing(&self) -> bool {
         self.op_count() == 0
+    }
+    fn depth_range(&self, uniforms: &[u32]) -> Option<ex::DepthRange> {
+        ex::Kernel::depth_range(self, uniforms)
     }
     fn always_completes(&self) -> bool {
         ex::Kernel::always_completes(self)

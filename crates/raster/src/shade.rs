@@ -284,6 +284,19 @@ pub(crate) struct FragmentStage<'a> {
     /// `shader`'s and `deferred`'s uniform-only values, once per draw.
     prepared: Option<crate::ex::Prepared<'a>>,
     deferred_prepared: Option<crate::ex::Prepared<'a>>,
+    /// The bound on `deferred`'s gl_FragDepth for the draw's uniforms
+    /// ([`ShaderStage::depth_range`]), when it writes one.
+    depth_range: Option<crate::ex::DepthRange>,
+    /// Per primitive of the draw (when `depth_range` is some and the
+    /// draw sized it, [`FragmentStage::cache_bounds`]): its bound over its
+    /// whole bounds once a tile found it, shared by the tiles; 0: not yet
+    /// found, 1: none, `2 + z`: the fixed-point depth `z`.
+    bounds: Box<[std::sync::atomic::AtomicU64]>,
+    /// The fragments the depth pass tested at a primitive's bound and
+    /// those it rejected so, over the draw's tiles finished so far (what
+    /// decides whether a bound is worth finding; see
+    /// [`FragmentStage::shade_deferred`]).
+    bound_stats: [std::sync::atomic::AtomicU64; 2],
     /// Whether `shader`'s and `deferred`'s lanes are independent
     /// ([`ShaderStage::lanes_independent`]), asked once per draw.
     lanes_independent: bool,
@@ -410,6 +423,12 @@ impl<'a> FragmentStage<'a> {
                 .and_then(|d| d.prepare(uniforms, textures)),
             lanes_independent: shader.lanes_independent(),
             deferred_lanes_independent: deferred.as_ref().is_some_and(|d| d.lanes_independent()),
+            depth_range: deferred
+                .as_ref()
+                .filter(|_| layout.frag_depth.is_some() && probe.is_none())
+                .and_then(|d| d.depth_range(uniforms)),
+            bounds: Box::default(),
+            bound_stats: Default::default(),
             deferred,
             probe,
         }

@@ -5,6 +5,11 @@
 //! See [`FragmentStage::shade_deferred`].
 
 use super::*;
+use crate::ex;
+use crate::interpolate::Region;
+use crate::prim::plane_origin;
+use crate::state::CompareFunc;
+use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 
 /// The lanes of the four pixels of `e`, the `q`-th quad of a batch, and
 /// the pixels that have one: `4q + k` for every pixel, or in a packed
@@ -26,6 +31,26 @@ fn quad_lanes(packed: bool, q: usize, e: &Entry, next: &mut usize) -> ([usize; 4
 #[inline(always)]
 fn lane_set(mask: exec::LaneMask, lane: usize) -> bool {
     lane < LANES && mask & (1 << lane) != 0
+}
+
+/// The fragments a primitive's depth bound must be expected to reject
+/// for the depth pass to find it: a bound costs about a microsecond and a
+/// half, what the pass spends on some 50 fragments.
+const BOUND_PAYS: u64 = 64;
+
+/// Fragments tested at bounds before their rejection rate is trusted:
+/// until then every primitive of [`BOUND_PAYS`] pixels or more gets one.
+const BOUND_LEARN: u64 = 4096;
+
+/// Whether to find the depth bound of a primitive of `area` pixels when
+/// the draw's bounds so far rejected `rejected` of the `tested`
+/// fragments: when the primitive's expected rejections pay for it. Only
+/// the time depends on it, never the pixels.
+fn bound_worth(area: u64, [tested, rejected]: [u64; 2]) -> bool {
+    match tested < BOUND_LEARN {
+        true => area >= BOUND_PAYS,
+        false => area * rejected >= BOUND_PAYS * tested,
+    }
 }
 
 /// What the passes of [`FragmentStage::shade_deferred`] share in a tile.
@@ -233,6 +258,137 @@ impl<'a> FragmentStage<'a> {
         e.write
     }
 
+    /// Drops from `quads` (single quads, no strips) the pixels the depth
+    /// test rejects at the fixed-point depth `zf` (a primitive's bound:
+    /// none of its fragments can beat it), and the quads left without
+    /// any; adds the pixels tested and rejected to `stats`.
+    fn bound_rejects(
+        &self,
+        fb: &Framebuffer,
+        origin: (u32, u32),
+        zf: u32,
+        quads: &mut Vec<(i64, i64, u8)>,
+        stats: &mut [u64; 2],
+    ) {
+        // `bound_func` checked both.
+        let (Some(func), Some(depth)) = (self.state.depth_test, fb.depth.as_deref()) else {
+            return;
+        };
+        let size = (fb.width, fb.height);
+        let mut tested = 0;
+        let mut kept = 0;
+        quads.retain_mut(|(x, y, mask)| {
+            let at = (*x - origin.0 as i64, *y - origin.1 as i64);
+            let live = *mask & 0xf;
+            let left = fragment_ops::depth_live_in(func, depth, size, at, live, [zf; 4]);
+            tested += live.count_ones() as u64;
+            kept += left.count_ones() as u64;
+            *mask = (*mask & !0xf) | left;
+            left != 0
+        });
+        stats[0] += tested;
+        stats[1] += tested - kept;
+    }
+
+    /// The depth function for which the depth pass may drop fragments at
+    /// a primitive's bound ([`Early::Bound`]): one whose stored depths
+    /// only move one way (or do not move), so that testing against the
+    /// buffer without the pending batch rejects only fragments the test
+    /// would reject later; no stencil test, a depth buffer, a bound.
+    fn bound_func(&self, fb: &Framebuffer) -> Option<CompareFunc> {
+        use CompareFunc::*;
+        self.depth_range.as_ref()?;
+        if (self.state.stencil.is_some() && fb.stencil.is_some()) || fb.depth.is_none() {
+            return None;
+        }
+        self.state
+            .depth_test
+            .filter(|f| matches!(f, Less | LessEqual | Greater | GreaterEqual))
+    }
+
+    /// Makes room for the bounds of `n` primitives, found once each (with
+    /// a bound to find: the draw's primitives, in the order of the
+    /// indices [`FragmentStage::shade_deferred`] takes).
+    pub fn cache_bounds(&mut self, n: usize) {
+        if self.depth_range.is_some() {
+            self.bounds = (0..n).map(|_| AtomicU64::new(0)).collect();
+        }
+    }
+
+    /// [`FragmentStage::depth_bound`] of primitive `p`, `prim`, over its
+    /// bounds, found once (by whichever tile comes first: every tile
+    /// finds the same) when the draw keeps them, else over `clip`; none
+    /// when [`bound_worth`] says it does not pay for the draw's counts
+    /// `stats`.
+    fn prim_bound(
+        &self,
+        func: CompareFunc,
+        scratch: &mut ex::RangeScratch,
+        (prim, p): (&Prim, u32),
+        clip: PixelRect,
+        stats: [u64; 2],
+    ) -> Option<u32> {
+        let b = prim.bounds;
+        if !bound_worth(((b.2 - b.0) * (b.3 - b.1)) as u64, stats) {
+            return None;
+        }
+        let slot = self.bounds.get(p as usize);
+        match slot.map_or(0, |s| s.load(Relaxed)) {
+            0 => {}
+            1 => return None,
+            z => return Some((z - 2) as u32),
+        }
+        let Some(slot) = slot else {
+            return self.depth_bound(func, scratch, prim, clip);
+        };
+        let z = self.depth_bound(func, scratch, prim, b);
+        slot.store(z.map_or(1, |z| 2 + z as u64), Relaxed);
+        z
+    }
+
+    /// The fixed-point depth that no fragment of `prim` inside `clip`
+    /// (not empty) can beat under `func` (see [`FragmentStage::bound_func`]):
+    /// the near end of the slice's gl_FragDepth range over those pixels
+    /// for LESS and LEQUAL, the far end for GREATER and GEQUAL, clamped and
+    /// converted as the depth test converts a fragment's.
+    fn depth_bound(
+        &self,
+        func: CompareFunc,
+        scratch: &mut ex::RangeScratch,
+        prim: &Prim,
+        clip: PixelRect,
+    ) -> Option<u32> {
+        use ex::Affine;
+        let range = self.depth_range.as_ref()?;
+        let (x0, y0) = plane_origin(prim.bounds);
+        let region = Region {
+            x: ((clip.0 - x0) as f64, (clip.2 - 1 - x0) as f64),
+            y: ((clip.1 - y0) as f64, (clip.3 - 1 - y0) as f64),
+        };
+        let attrs = self.prim_attrs(prim);
+        let coord = self.layout.frag_coord;
+        let mut input = |c: usize| -> Option<Affine> {
+            // gl_FragCoord.xy: the pixel centres, exactly.
+            let (x, y) = (region.x(), region.y());
+            match coord.map(|o| c.wrapping_sub(o)) {
+                Some(0) => return Some(Affine::new(x.c + (x0 as f64 + 0.5), x.gx, 0.0, 0.0)),
+                Some(1) => return Some(Affine::new(y.c + (y0 as f64 + 0.5), 0.0, y.gy, 0.0)),
+                _ => {}
+            }
+            let fill = self.depth_fills.iter().find(|f| f.offset == c)?;
+            match fill.kind {
+                FillKind::Interp => attrs.get(fill.li)?.form(&prim.planes, &region),
+                FillKind::Replace(_) => None,
+            }
+        };
+        let (lo, hi) = range.eval(scratch, &mut input)?;
+        let z = match func {
+            CompareFunc::Less | CompareFunc::LessEqual => lo,
+            _ => hi,
+        };
+        Some(self.depth_format.to_fixed(clamp01(z as f64) as f32))
+    }
+
     /// The colour pass of [`FragmentStage::shade_deferred`] on the quads
     /// `todo`: the full shader, then the colours of the pixels each quad
     /// won (`Entry::write`).
@@ -327,6 +483,11 @@ impl<'a> FragmentStage<'a> {
         // win; a winner's quad keeps the coverage the forward path gives
         // it.
         let early = self.early && self.batches_primitives(fb);
+        let bound_func = self.bound_func(fb);
+        let mut range_scratch = ex::RangeScratch::default();
+        // This tile's bound counts, added to the draw's at the end.
+        let mut stats = [0u64; 2];
+        let draw_stats = self.bound_stats.each_ref().map(|s| s.load(Relaxed));
         let quick = QuickOps::new(fb, self.state, &self.colors_out);
         // A slice without ops (no gl_FragDepth, no discard) decides
         // nothing: the pass only depth-tests.
@@ -392,9 +553,24 @@ impl<'a> FragmentStage<'a> {
                     // Strips (four whole quads side by side) only where a
                     // row can hold one besides its edges.
                     let clip = clip_to(prim, tile);
-                    let wide = clip.2 - clip.0 >= 16;
+                    // Without gl_FragDepth the quads' own depths reject
+                    // (`early`), with it a bound on the slice's.
+                    let bound = match bound_func {
+                        Some(func) if clip.0 < clip.2 && clip.1 < clip.3 => self.prim_bound(
+                            func,
+                            &mut range_scratch,
+                            (prim, p),
+                            clip,
+                            [draw_stats[0] + stats[0], draw_stats[1] + stats[1]],
+                        ),
+                        _ => None,
+                    };
+                    let wide = clip.2 - clip.0 >= 16 && bound.is_none();
                     prim.shape
                         .quads_into_strips(clip, quads, pass.run_slice && wide);
+                    if let Some(zf) = bound {
+                        self.bound_rejects(fb, origin, zf, quads, &mut stats);
+                    }
                     for &quad in quads.iter() {
                         // Fragments of one primitive cover distinct pixels:
                         // a strip runs at once when only quads of its
@@ -433,6 +609,9 @@ impl<'a> FragmentStage<'a> {
                 if *n > 0 {
                     self.depth_pass(&pass, fb, batch, &mut winner, &pending[..*n])?;
                     *n = 0;
+                }
+                for (total, s) in self.bound_stats.iter().zip(stats) {
+                    total.fetch_add(s, Relaxed);
                 }
             }
         }
