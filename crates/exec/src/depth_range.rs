@@ -61,13 +61,15 @@ fn fits(m: f64) -> bool {
 }
 
 /// A value over a region: `c + gx·u + gy·v ± err` for `u, v ∈ [−1, 1]`
-/// (see the module docs).
+/// (see the module docs), and at least `lo` (a sign the form cannot
+/// show: a square, a product or sum of such, what a `discard` kept).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Affine {
     pub c: f64,
     pub gx: f64,
     pub gy: f64,
     pub err: f64,
+    lo: f64,
 }
 
 impl Affine {
@@ -80,7 +82,28 @@ impl Affine {
 
     #[inline]
     pub fn new(c: f64, gx: f64, gy: f64, err: f64) -> Affine {
-        Affine { c, gx, gy, err }
+        Affine {
+            c,
+            gx,
+            gy,
+            err,
+            lo: f64::NEG_INFINITY,
+        }
+    }
+
+    /// The form, known to be at least zero when `nonneg`.
+    #[inline(always)]
+    fn nonneg_if(mut self, nonneg: bool) -> Affine {
+        if nonneg {
+            self.lo = self.lo.max(0.0);
+        }
+        self
+    }
+
+    /// Whether the form is known to be at least zero.
+    #[inline(always)]
+    fn nonneg(&self) -> bool {
+        self.lo >= 0.0
     }
 
     /// Every value in `[lo, hi]`, without correlation with the position:
@@ -114,7 +137,8 @@ impl Affine {
     /// that is not a float).
     pub fn bounds(&self) -> (f64, f64) {
         let r = self.gx.abs() + self.gy.abs() + self.err;
-        (self.c - r, self.c + r)
+        let low = self.c - r;
+        (if low < self.lo { self.lo } else { low }, self.c + r)
     }
 
     /// The largest magnitude the form holds.
@@ -231,6 +255,7 @@ impl Affine {
         if a == b {
             return a;
         }
+        let nonneg = a.nonneg() && b.nonneg();
         let mid = |x: f64, y: f64| 0.5 * x + 0.5 * y;
         let half = |x: f64, y: f64| 0.5 * (x - y).abs();
         Affine::new(
@@ -243,6 +268,7 @@ impl Affine {
                 + a.err.max(b.err)
                 + (a.magnitude() + b.magnitude()) * F64_REL,
         )
+        .nonneg_if(nonneg)
     }
 
     /// The values of the form at least `lo` (those the lanes keep after a
@@ -258,9 +284,9 @@ impl Affine {
         if lo == 0.0 {
             // b / 2 is exact (b is normal or zero here).
             let h = 0.5 * b;
-            return Affine::new(h, 0.0, 0.0, h);
+            return Affine::new(h, 0.0, 0.0, h).nonneg_if(true);
         }
-        Affine::interval(lo, b)
+        Affine::interval(lo, b).nonneg_if(lo >= 0.0)
     }
 
     /// The values of the form at most `hi`.
@@ -576,6 +602,7 @@ const UNKNOWN: Affine = Affine {
     gx: 0.0,
     gy: 0.0,
     err: 0.0,
+    lo: f64::NEG_INFINITY,
 };
 
 impl Kernel {
@@ -712,14 +739,16 @@ fn apply(regs: &[Affine], uniforms: &[u32], d: Reg, f: Fun) -> Option<Affine> {
         Fun::Mov(a) => r(a)?,
         Fun::Add(a, b) => fadd(r(a)?, r(b)?)?,
         Fun::Sub(a, b) => fadd(r(a)?, r(b)?.neg())?,
-        Fun::Mul(a, b) => fmul(r(a)?, r(b)?)?,
+        // A square is at least zero.
+        Fun::Mul(a, b) => fmul(r(a)?, r(b)?)?.nonneg_if(a == b),
         Fun::Div(a, b) => fdiv(r(a)?, r(b)?)?,
         Fun::Neg(a) => r(a)?.neg(),
         Fun::Mac(a, b) => fadd(r(d)?, fmul(r(a)?, r(b)?)?)?,
         Fun::Dot(n, a, b) => {
             let mut sum = Affine::exact(0.0);
             for k in 0..n as usize {
-                sum = fadd(sum, fmul(r(a[k])?, r(b[k])?)?)?;
+                let p = fmul(r(a[k])?, r(b[k])?)?.nonneg_if(a[k] == b[k]);
+                sum = fadd(sum, p)?;
             }
             sum
         }
@@ -786,7 +815,9 @@ fn fadd(a: Affine, b: Affine) -> Option<Affine> {
         _ => {}
     }
     let err = a.err + b.err + m * 4.0 * F64_REL;
-    Affine::new(a.c + b.c, a.gx + b.gx, a.gy + b.gy, err).rounded(m)
+    let sum = Affine::new(a.c + b.c, a.gx + b.gx, a.gy + b.gy, err);
+    // A sum of values at least zero rounds to one.
+    Some(sum.rounded(m)?.nonneg_if(a.nonneg() && b.nonneg()))
 }
 
 /// The executor's `a · b` (exact operands: computed as it does; by an
@@ -809,24 +840,30 @@ fn fmul(a: Affine, b: Affine) -> Option<Affine> {
             -1.0 => return Some(f.neg()),
             _ => {}
         }
+        let nonneg = k >= 0.0 && f.nonneg();
         let mut r = f.scale(k as f64);
         // A power of two scales exactly (its mantissa bits are zero).
         match k.to_bits() & 0x007f_ffff == 0 {
             true => r.err += FLUSH,
-            false => return r.rounded(m),
+            false => r = r.rounded(m)?,
         }
-        return Some(r);
+        return Some(r.nonneg_if(nonneg));
     }
-    Affine::mul(a, b).rounded(m)
+    Some(
+        Affine::mul(a, b)
+            .rounded(m)?
+            .nonneg_if(a.nonneg() && b.nonneg()),
+    )
 }
 
 fn fdiv(a: Affine, b: Affine) -> Option<Affine> {
     if let (Some(x), Some(y)) = (a.as_exact(), b.as_exact()) {
         return Affine::exact_finite(x / y);
     }
+    let nonneg = a.nonneg() && b.bounds().0 > 0.0;
     let r = b.recip()?;
     let m = a.magnitude() * r.magnitude();
-    Affine::mul(a, r).rounded(m)
+    Some(Affine::mul(a, r).rounded(m)?.nonneg_if(nonneg))
 }
 
 fn fsqrt(a: Affine) -> Option<Affine> {
@@ -835,7 +872,7 @@ fn fsqrt(a: Affine) -> Option<Affine> {
     }
     let r = a.sqrt()?;
     let m = r.magnitude();
-    r.rounded(m)
+    Some(r.rounded(m)?.nonneg_if(true))
 }
 
 fn fabs(a: Affine) -> Option<Affine> {
@@ -843,13 +880,14 @@ fn fabs(a: Affine) -> Option<Affine> {
     if !(lo.is_finite() && hi.is_finite()) {
         return None;
     }
-    Some(if lo >= 0.0 {
+    let r = if lo >= 0.0 {
         a
     } else if hi <= 0.0 {
         a.neg()
     } else {
         Affine::interval(0.0, hi.max(-lo))
-    })
+    };
+    Some(r.nonneg_if(true))
 }
 
 /// GLSL `min` of two finite values: one of them, never rounded.

@@ -230,6 +230,10 @@
 //!   program, for hooked runs and tests.
 //! - `depth_slice` ([`Kernel::depth_only`]): a fragment kernel sliced to
 //!   its depth and discards.
+//! - `depth_range` ([`Kernel::depth_range`]): bounds on a fragment
+//!   kernel's `gl_FragDepth` over a region of the window, by affine
+//!   arithmetic on its rewritten program, for rejecting fragments before
+//!   running it.
 
 mod compute;
 pub mod cpu;

@@ -112,8 +112,13 @@
 //! colors. A pass whose stage has independent lanes
 //! ([`ShaderStage::lanes_independent`]) packs the pixels it runs of up to
 //! 16 quads into each batch, without helper lanes (a lane's results do
-//! not depend on its neighbours then). The bytes are those of the
-//! straightforward path (tests compare
+//! not depend on its neighbours then). With `gl_FragDepth`, a slice
+//! offering a bound on it ([`ShaderStage::depth_range`]) lets the depth
+//! pass drop, before running the slice, the pixels of a primitive whose
+//! every possible depth the depth test rejects (LESS, LEQUAL: the bound's
+//! near end against the stored depths; GREATER, GEQUAL: its far end; no
+//! stencil test): they would fail later and change nothing. The bytes
+//! are those of the straightforward path (tests compare
 //! both); on a shader error the tile is redrawn the straightforward way so
 //! errors and partial results are unchanged. The debugger's probe always
 //! takes the straightforward path.

@@ -292,10 +292,9 @@ pub(crate) struct FragmentStage<'a> {
     /// whole bounds once a tile found it, shared by the tiles; 0: not yet
     /// found, 1: none, `2 + z`: the fixed-point depth `z`.
     bounds: Box<[std::sync::atomic::AtomicU64]>,
-    /// The fragments the depth pass tested at a primitive's bound and
-    /// those it rejected so, over the draw's tiles finished so far (what
-    /// decides whether a bound is worth finding; see
-    /// [`FragmentStage::shade_deferred`]).
+    /// The primitives whose bound the tiles tried to find, and those
+    /// that had none (a draw whose program mostly gives none stops
+    /// trying).
     bound_stats: [std::sync::atomic::AtomicU64; 2],
     /// Whether `shader`'s and `deferred`'s lanes are independent
     /// ([`ShaderStage::lanes_independent`]), asked once per draw.

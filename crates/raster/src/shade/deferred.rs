@@ -34,22 +34,69 @@ fn lane_set(mask: exec::LaneMask, lane: usize) -> bool {
 }
 
 /// The fragments a primitive's depth bound must be expected to reject
-/// for the depth pass to find it: a bound costs about a microsecond and a
-/// half, what the pass spends on some 50 fragments.
+/// for the depth pass to find it: a bound costs about a microsecond, what
+/// the pass spends on some 50 fragments.
 const BOUND_PAYS: u64 = 64;
 
-/// Fragments tested at bounds before their rejection rate is trusted:
-/// until then every primitive of [`BOUND_PAYS`] pixels or more gets one.
-const BOUND_LEARN: u64 = 4096;
+/// When a tile finds depth bounds ([`FragmentStage::shade_deferred`]):
+/// for primitives whose expected rejections pay for one, the tile's
+/// recent rejection rate times their area. The rate grows as the tile's
+/// depth buffer fills, so it is a decaying count, and a primitive passed
+/// over is tried anyway now and then to follow it (after 8 passed over,
+/// then twice as many after each such try, up to 256).
+struct BoundPolicy {
+    /// Pixels tested at bounds and rejected so, recently.
+    tested: u64,
+    rejected: u64,
+    /// Primitives passed over since the last one tried, and how many
+    /// make the next try.
+    skipped: u32,
+    probe: u32,
+}
 
-/// Whether to find the depth bound of a primitive of `area` pixels when
-/// the draw's bounds so far rejected `rejected` of the `tested`
-/// fragments: when the primitive's expected rejections pay for it. Only
-/// the time depends on it, never the pixels.
-fn bound_worth(area: u64, [tested, rejected]: [u64; 2]) -> bool {
-    match tested < BOUND_LEARN {
-        true => area >= BOUND_PAYS,
-        false => area * rejected >= BOUND_PAYS * tested,
+impl Default for BoundPolicy {
+    fn default() -> BoundPolicy {
+        BoundPolicy {
+            tested: 0,
+            rejected: 0,
+            skipped: 0,
+            probe: 8,
+        }
+    }
+}
+
+impl BoundPolicy {
+    /// Counts that halve past this many pixels tested.
+    const WINDOW: u64 = 4096;
+
+    /// Whether to try a primitive of `area` pixels.
+    fn worth(&mut self, area: u64) -> bool {
+        if area < BOUND_PAYS {
+            return false;
+        }
+        let expected = match self.tested {
+            0 => area,
+            t => area * self.rejected / t,
+        };
+        if expected >= BOUND_PAYS {
+            self.probe = 8;
+        } else if self.skipped >= self.probe {
+            self.probe = (2 * self.probe).min(256);
+        } else {
+            self.skipped += 1;
+            return false;
+        }
+        self.skipped = 0;
+        true
+    }
+
+    fn count(&mut self, tested: u64, rejected: u64) {
+        self.tested += tested;
+        self.rejected += rejected;
+        if self.tested > Self::WINDOW {
+            self.tested /= 2;
+            self.rejected /= 2;
+        }
     }
 }
 
@@ -261,14 +308,14 @@ impl<'a> FragmentStage<'a> {
     /// Drops from `quads` (single quads, no strips) the pixels the depth
     /// test rejects at the fixed-point depth `zf` (a primitive's bound:
     /// none of its fragments can beat it), and the quads left without
-    /// any; adds the pixels tested and rejected to `stats`.
+    /// any; counts the pixels tested and rejected in `policy`.
     fn bound_rejects(
         &self,
         fb: &Framebuffer,
         origin: (u32, u32),
         zf: u32,
         quads: &mut Vec<(i64, i64, u8)>,
-        stats: &mut [u64; 2],
+        policy: &mut BoundPolicy,
     ) {
         // `bound_func` checked both.
         let (Some(func), Some(depth)) = (self.state.depth_test, fb.depth.as_deref()) else {
@@ -286,8 +333,7 @@ impl<'a> FragmentStage<'a> {
             *mask = (*mask & !0xf) | left;
             left != 0
         });
-        stats[0] += tested;
-        stats[1] += tested - kept;
+        policy.count(tested, tested - kept);
     }
 
     /// The depth function for which the depth pass may drop fragments at
@@ -318,18 +364,22 @@ impl<'a> FragmentStage<'a> {
     /// [`FragmentStage::depth_bound`] of primitive `p`, `prim`, over its
     /// bounds, found once (by whichever tile comes first: every tile
     /// finds the same) when the draw keeps them, else over `clip`; none
-    /// when [`bound_worth`] says it does not pay for the draw's counts
-    /// `stats`.
+    /// when `policy` passes it over, or when the draw's program has given
+    /// none for most primitives tried.
     fn prim_bound(
         &self,
         func: CompareFunc,
         scratch: &mut ex::RangeScratch,
         (prim, p): (&Prim, u32),
         clip: PixelRect,
-        stats: [u64; 2],
+        policy: &mut BoundPolicy,
     ) -> Option<u32> {
         let b = prim.bounds;
-        if !bound_worth(((b.2 - b.0) * (b.3 - b.1)) as u64, stats) {
+        let [tried, failed] = self.bound_stats.each_ref().map(|s| s.load(Relaxed));
+        if failed >= 16 && 2 * failed >= tried {
+            return None;
+        }
+        if !policy.worth(((b.2 - b.0) * (b.3 - b.1)) as u64) {
             return None;
         }
         let slot = self.bounds.get(p as usize);
@@ -343,6 +393,10 @@ impl<'a> FragmentStage<'a> {
         };
         let z = self.depth_bound(func, scratch, prim, b);
         slot.store(z.map_or(1, |z| 2 + z as u64), Relaxed);
+        self.bound_stats[0].fetch_add(1, Relaxed);
+        if z.is_none() {
+            self.bound_stats[1].fetch_add(1, Relaxed);
+        }
         z
     }
 
@@ -485,9 +539,7 @@ impl<'a> FragmentStage<'a> {
         let early = self.early && self.batches_primitives(fb);
         let bound_func = self.bound_func(fb);
         let mut range_scratch = ex::RangeScratch::default();
-        // This tile's bound counts, added to the draw's at the end.
-        let mut stats = [0u64; 2];
-        let draw_stats = self.bound_stats.each_ref().map(|s| s.load(Relaxed));
+        let mut policy = BoundPolicy::default();
         let quick = QuickOps::new(fb, self.state, &self.colors_out);
         // A slice without ops (no gl_FragDepth, no discard) decides
         // nothing: the pass only depth-tests.
@@ -556,20 +608,16 @@ impl<'a> FragmentStage<'a> {
                     // Without gl_FragDepth the quads' own depths reject
                     // (`early`), with it a bound on the slice's.
                     let bound = match bound_func {
-                        Some(func) if clip.0 < clip.2 && clip.1 < clip.3 => self.prim_bound(
-                            func,
-                            &mut range_scratch,
-                            (prim, p),
-                            clip,
-                            [draw_stats[0] + stats[0], draw_stats[1] + stats[1]],
-                        ),
+                        Some(func) if clip.0 < clip.2 && clip.1 < clip.3 => {
+                            self.prim_bound(func, &mut range_scratch, (prim, p), clip, &mut policy)
+                        }
                         _ => None,
                     };
                     let wide = clip.2 - clip.0 >= 16 && bound.is_none();
                     prim.shape
                         .quads_into_strips(clip, quads, pass.run_slice && wide);
                     if let Some(zf) = bound {
-                        self.bound_rejects(fb, origin, zf, quads, &mut stats);
+                        self.bound_rejects(fb, origin, zf, quads, &mut policy);
                     }
                     for &quad in quads.iter() {
                         // Fragments of one primitive cover distinct pixels:
@@ -609,9 +657,6 @@ impl<'a> FragmentStage<'a> {
                 if *n > 0 {
                     self.depth_pass(&pass, fb, batch, &mut winner, &pending[..*n])?;
                     *n = 0;
-                }
-                for (total, s) in self.bound_stats.iter().zip(stats) {
-                    total.fetch_add(s, Relaxed);
                 }
             }
         }
