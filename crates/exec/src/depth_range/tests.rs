@@ -140,7 +140,18 @@ fn sphere_inputs(rng: &mut Rng, perspective: bool, k: &Kernel) -> Vec<(usize, [f
             .map(|i| n0[i] + (pu[i] - n0[i]) * u + (pv[i] - n0[i]) * v)
             .collect()
     });
-    let _ = perspective;
+    // The same part of the sphere's square on the screen (a 1024² viewport,
+    // the projections of `projection`), for programs casting the ray from
+    // gl_FragCoord.
+    let (k, w) = match perspective {
+        true => (2.0, -centre[2]),
+        false => (0.05, 1.0),
+    };
+    let pixel = |x: f64| (k * x / w + 1.0) * 512.0;
+    let (px, py, pr) = (pixel(centre[0]), pixel(centre[1]), k * r / w * 512.0);
+    put("gl_FragCoord", &|u, v| {
+        vec![px + pr * (a + s * u), py + pr * (b + s * v), 0.5, 1.0]
+    });
     out
 }
 

@@ -39,64 +39,36 @@ fn lane_set(mask: exec::LaneMask, lane: usize) -> bool {
 const BOUND_PAYS: u64 = 64;
 
 /// When a tile finds depth bounds ([`FragmentStage::shade_deferred`]):
-/// for primitives whose expected rejections pay for one, the tile's
-/// recent rejection rate times their area. The rate grows as the tile's
-/// depth buffer fills, so it is a decaying count, and a primitive passed
-/// over is tried anyway now and then to follow it (after 8 passed over,
-/// then twice as many after each such try, up to 256).
+/// for primitives whose expected rejections pay for one, their area
+/// times the share of the tile's recent fragments that failed the depth
+/// test (at a bound or in the depth pass: what a tight bound would have
+/// rejected). The share grows as the tile's depth buffer fills, so the
+/// counts decay. Only the time depends on this choice, never the pixels.
+#[derive(Default)]
 struct BoundPolicy {
-    /// Pixels tested at bounds and rejected so, recently.
+    /// Fragments depth-tested recently, and those that failed.
     tested: u64,
-    rejected: u64,
-    /// Primitives passed over since the last one tried, and how many
-    /// make the next try.
-    skipped: u32,
-    probe: u32,
-}
-
-impl Default for BoundPolicy {
-    fn default() -> BoundPolicy {
-        BoundPolicy {
-            tested: 0,
-            rejected: 0,
-            skipped: 0,
-            probe: 8,
-        }
-    }
+    failed: u64,
 }
 
 impl BoundPolicy {
-    /// Counts that halve past this many pixels tested.
+    /// Counts that halve past this many fragments tested.
     const WINDOW: u64 = 4096;
 
-    /// Whether to try a primitive of `area` pixels.
+    /// Whether to find the bound of a primitive of `area` pixels.
+    #[inline(always)]
     fn worth(&mut self, area: u64) -> bool {
-        if area < BOUND_PAYS {
-            return false;
-        }
-        let expected = match self.tested {
-            0 => area,
-            t => area * self.rejected / t,
-        };
-        if expected >= BOUND_PAYS {
-            self.probe = 8;
-        } else if self.skipped >= self.probe {
-            self.probe = (2 * self.probe).min(256);
-        } else {
-            self.skipped += 1;
-            return false;
-        }
-        self.skipped = 0;
-        true
-    }
-
-    fn count(&mut self, tested: u64, rejected: u64) {
-        self.tested += tested;
-        self.rejected += rejected;
         if self.tested > Self::WINDOW {
             self.tested /= 2;
-            self.rejected /= 2;
+            self.failed /= 2;
         }
+        area >= BOUND_PAYS && area * self.failed >= BOUND_PAYS * self.tested.max(1)
+    }
+
+    #[inline(always)]
+    fn count(&mut self, tested: u32, failed: u32) {
+        self.tested += tested as u64;
+        self.failed += failed as u64;
     }
 }
 
@@ -191,7 +163,7 @@ impl<'a> FragmentStage<'a> {
         pass: &DeferredPass,
         fb: &mut Framebuffer,
         batch: &mut Batch,
-        winner: &mut [(u32, u8)],
+        (winner, policy): (&mut [(u32, u8)], &mut BoundPolicy),
         pending: &[Entry],
     ) -> Result<(), ExecError> {
         if pass.run_slice {
@@ -219,6 +191,7 @@ impl<'a> FragmentStage<'a> {
                         None => quad.zf,
                     };
                     let (pass, index, _) = target.test_quad((quad.x, quad.y), alive, z, zf);
+                    policy.count(alive.count_ones(), (alive & !pass).count_ones());
                     for (k, &at) in index.iter().enumerate() {
                         if pass & (1 << k) != 0 {
                             if let Some(slot) = winner.get_mut(at) {
@@ -245,6 +218,7 @@ impl<'a> FragmentStage<'a> {
                             colors: [[0.0; 4]; FRAG_COLORS],
                         };
                         let passed = fragment_ops::tests(fb, pass.origin, self.state, &frag);
+                        policy.count(1, passed.is_none() as u32);
                         if let Some(slot) = passed.and_then(|i| winner.get_mut(i)) {
                             *slot = (e.index, quad.live);
                         }
@@ -322,14 +296,14 @@ impl<'a> FragmentStage<'a> {
             return;
         };
         let size = (fb.width, fb.height);
-        let mut tested = 0;
-        let mut kept = 0;
+        let mut tested = 0u32;
+        let mut kept = 0u32;
         quads.retain_mut(|(x, y, mask)| {
             let at = (*x - origin.0 as i64, *y - origin.1 as i64);
             let live = *mask & 0xf;
             let left = fragment_ops::depth_live_in(func, depth, size, at, live, [zf; 4]);
-            tested += live.count_ones() as u64;
-            kept += left.count_ones() as u64;
+            tested += live.count_ones();
+            kept += left.count_ones();
             *mask = (*mask & !0xf) | left;
             left != 0
         });
@@ -337,7 +311,7 @@ impl<'a> FragmentStage<'a> {
     }
 
     /// The depth function for which the depth pass may drop fragments at
-    /// a primitive's bound ([`Early::Bound`]): one whose stored depths
+    /// a primitive's bound: one whose stored depths
     /// only move one way (or do not move), so that testing against the
     /// buffer without the pending batch rejects only fragments the test
     /// would reject later; no stencil test, a depth buffer, a bound.
@@ -634,7 +608,13 @@ impl<'a> FragmentStage<'a> {
                                     self.depth_entry(e, (prim, p), quad_at(q), early, fb, origin);
                             }
                             if live != 0 {
-                                self.depth_pass(&pass, fb, batch, &mut winner, &strip)?;
+                                self.depth_pass(
+                                    &pass,
+                                    fb,
+                                    batch,
+                                    (&mut winner, &mut policy),
+                                    &strip,
+                                )?;
                             }
                             continue;
                         }
@@ -646,7 +626,8 @@ impl<'a> FragmentStage<'a> {
                                 continue;
                             }
                             if let Some((count, spill)) = admit(pack_depth, n, &mut lanes, write) {
-                                self.depth_pass(&pass, fb, batch, &mut winner, &pending[..count])?;
+                                let with = (&mut winner[..], &mut policy);
+                                self.depth_pass(&pass, fb, batch, with, &pending[..count])?;
                                 if spill {
                                     pending.swap(0, count);
                                 }
@@ -655,7 +636,8 @@ impl<'a> FragmentStage<'a> {
                     }
                 }
                 if *n > 0 {
-                    self.depth_pass(&pass, fb, batch, &mut winner, &pending[..*n])?;
+                    let with = (&mut winner[..], &mut policy);
+                    self.depth_pass(&pass, fb, batch, with, &pending[..*n])?;
                     *n = 0;
                 }
             }
