@@ -10,7 +10,8 @@ density, with shaders/sphere.* and with the seed talk's shaders as
 written), one thread each:
 
 - fragments: what a frame rasterizes (bench/scene.py --count-fragments:
-  every one of them is shaded, as the programs write gl_FragDepth);
+  llvmpipe shades every one, as the programs write gl_FragDepth;
+  shaderbox drops those its depth bounds reject first);
 - ns per fragment: the median frame over the fragments, shaderbox and
   llvmpipe run alternately (--rounds each), and cycles at the clock
   /proc/cpuinfo reports (the guest's nominal clock: hardware counters
