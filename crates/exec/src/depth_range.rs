@@ -348,6 +348,10 @@ enum Step {
     /// `discarded_if`: the others keep `a ≥ b` (`discarded_if`) or
     /// `a ≤ b`.
     Narrow { a: Reg, b: Reg, discarded_if: bool },
+    /// No bound unless `r` is finite (what an op dropped for the draw
+    /// still asks of its operand: `mix(x, y, 0)` is `x` for a finite
+    /// `y` only).
+    Finite { r: Reg },
 }
 
 /// A kernel's program as steps of the analysis, found once per kernel.
@@ -555,7 +559,7 @@ pub(crate) fn plan(k: &Kernel) -> Option<Plan> {
                 }
                 *set.get_mut(d as usize)? = true;
             }
-            Step::Narrow { a, b, .. } => {
+            Step::Narrow { a, b, .. } | Step::Finite { r: a @ b } => {
                 for r in [a, b] {
                     if !*set.get(r as usize)? {
                         *set.get_mut(r as usize)? = true;
@@ -588,6 +592,43 @@ pub struct DepthRange {
     /// The value of each of the plan's entry registers before the first
     /// op: initializers, zeros, the prologue's values for the uniforms.
     start: Vec<(Reg, Affine)>,
+    /// The plan's steps for these uniforms ([`for_draw`]).
+    steps: Vec<Step>,
+}
+
+/// `steps` with what the draw's constant registers `consts` (their
+/// values; registers no step writes) make simple: `mix(x, y, t)` by a
+/// constant `t` of 0 or 1 (a uniform switch, as the seed's `perspective`)
+/// becomes a copy of `x` or `y`, the other checked finite, exactly as the
+/// executor computes it (`x·1 + y·0 = x`).
+fn for_draw(steps: &[Step], consts: &dyn Fn(Reg) -> Option<f32>) -> Vec<Step> {
+    let mut out = Vec::with_capacity(steps.len());
+    for &step in steps {
+        if let Step::Set {
+            d,
+            hull,
+            f: Fun::Mix(a, b, t),
+        } = step
+        {
+            let (keep, check) = match consts(t) {
+                Some(0.0) => (a, b),
+                Some(1.0) => (b, a),
+                _ => {
+                    out.push(step);
+                    continue;
+                }
+            };
+            out.push(Step::Finite { r: check });
+            out.push(Step::Set {
+                d,
+                hull,
+                f: Fun::Mov(keep),
+            });
+            continue;
+        }
+        out.push(step);
+    }
+    out
 }
 
 /// Reusable registers for [`DepthRange::eval`].
@@ -655,15 +696,34 @@ impl Kernel {
                 }),
             }
         }
-        let start = plan
+        let start: Vec<(Reg, Affine)> = plan
             .entry
             .iter()
             .map(|&r| (r, regs.get(r as usize).copied().unwrap_or(UNKNOWN)))
             .collect();
+        // Entry registers no step writes hold their start value
+        // throughout.
+        let mut written = vec![false; plan.registers];
+        for step in &plan.steps {
+            if let Step::Set { d, .. } = *step {
+                if let Some(w) = written.get_mut(d as usize) {
+                    *w = true;
+                }
+            }
+        }
+        let consts = |r: Reg| -> Option<f32> {
+            let (_, v) = start.iter().find(|e| e.0 == r)?;
+            match written.get(r as usize) {
+                Some(false) => v.as_exact(),
+                _ => None,
+            }
+        };
+        let steps = for_draw(&plan.steps, &consts);
         Some(DepthRange {
             plan,
             uniforms: uniforms.into(),
             start,
+            steps,
         })
     }
 }
@@ -688,7 +748,7 @@ impl DepthRange {
         for &(c, r) in &plan.inputs {
             *regs.get_mut(r as usize)? = input(c)?;
         }
-        for step in &plan.steps {
+        for step in &self.steps {
             match *step {
                 Step::Set { d, hull, f } => {
                     let v = apply(regs, &self.uniforms, d, f)?;
@@ -709,6 +769,11 @@ impl DepthRange {
                     regs[a as usize] = na;
                     if b != a {
                         regs[b as usize] = nb;
+                    }
+                }
+                Step::Finite { r } => {
+                    if !fits(regs.get(r as usize)?.magnitude()) {
+                        return None;
                     }
                 }
             }
