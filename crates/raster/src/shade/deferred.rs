@@ -34,8 +34,8 @@ fn lane_set(mask: exec::LaneMask, lane: usize) -> bool {
 }
 
 /// The fragments a primitive's depth bound must be expected to reject
-/// for the depth pass to find it: a bound costs about a microsecond, what
-/// the pass spends on some 50 fragments.
+/// for the depth pass to find it: a bound costs about two thirds of a
+/// microsecond, what the pass spends on a few dozen fragments.
 const BOUND_PAYS: u64 = 64;
 
 /// When a tile finds depth bounds ([`FragmentStage::shade_deferred`]):
