@@ -314,7 +314,8 @@ fn recip_positive(x: Affine, lo: f64, hi: f64) -> Affine {
 enum Fun {
     /// A value known before the region (a constant).
     Value(Affine),
-    /// A uniform word read as a float (`None`: not a float).
+    /// A uniform word, read as a float when the flag says it is one (else
+    /// unknown).
     Uniform(u32, bool),
     Mov(Reg),
     Add(Reg, Reg),
@@ -365,6 +366,9 @@ pub(crate) struct Plan {
     registers: usize,
     /// The registers the steps read before writing them (not inputs).
     entry: Vec<Reg>,
+    /// Per register: whether no step writes it (it keeps its start value
+    /// throughout).
+    kept: Vec<bool>,
 }
 
 /// The lanes of an execution mask, for the analysis: all lanes still
@@ -572,12 +576,24 @@ pub(crate) fn plan(k: &Kernel) -> Option<Plan> {
     if !*set.get(output as usize)? {
         entry.push(output);
     }
+    let mut kept = vec![true; registers];
+    for step in &steps {
+        let written: &[Reg] = match step {
+            Step::Set { d, .. } => std::slice::from_ref(d),
+            Step::Narrow { a, b, .. } => &[*a, *b],
+            Step::Finite { .. } => &[],
+        };
+        for &r in written {
+            *kept.get_mut(r as usize)? = false;
+        }
+    }
     Some(Plan {
         steps,
         inputs,
         output,
         registers,
         entry,
+        kept,
     })
 }
 
@@ -703,18 +719,10 @@ impl Kernel {
             .collect();
         // Entry registers no step writes hold their start value
         // throughout.
-        let mut written = vec![false; plan.registers];
-        for step in &plan.steps {
-            if let Step::Set { d, .. } = *step {
-                if let Some(w) = written.get_mut(d as usize) {
-                    *w = true;
-                }
-            }
-        }
         let consts = |r: Reg| -> Option<f32> {
             let (_, v) = start.iter().find(|e| e.0 == r)?;
-            match written.get(r as usize) {
-                Some(false) => v.as_exact(),
+            match plan.kept.get(r as usize) {
+                Some(true) => v.as_exact(),
                 _ => None,
             }
         };

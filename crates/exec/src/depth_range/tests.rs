@@ -282,7 +282,7 @@ fn bench_eval() {
     eprintln!(
         "{} ns per eval, {ok} bounded, {} steps",
         t.elapsed().as_nanos() / n,
-        range.plan.steps.len()
+        range.steps.len()
     );
 }
 

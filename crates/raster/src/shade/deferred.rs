@@ -395,9 +395,9 @@ impl<'a> FragmentStage<'a> {
         };
         let attrs = self.prim_attrs(prim);
         let coord = self.layout.frag_coord;
+        // gl_FragCoord.xy: the pixel centres, exactly.
+        let (x, y) = (region.x(), region.y());
         let mut input = |c: usize| -> Option<Affine> {
-            // gl_FragCoord.xy: the pixel centres, exactly.
-            let (x, y) = (region.x(), region.y());
             match coord.map(|o| c.wrapping_sub(o)) {
                 Some(0) => return Some(Affine::new(x.c + (x0 as f64 + 0.5), x.gx, 0.0, 0.0)),
                 Some(1) => return Some(Affine::new(y.c + (y0 as f64 + 0.5), 0.0, y.gy, 0.0)),
