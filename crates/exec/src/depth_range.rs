@@ -251,7 +251,7 @@ impl Affine {
     }
 
     /// The hull of two forms: every value of either.
-    fn hull(a: Affine, b: Affine) -> Affine {
+    pub fn hull(a: Affine, b: Affine) -> Affine {
         if a == b {
             return a;
         }

@@ -195,8 +195,10 @@ fn textured_quad_with_implicit_lod() {
     }
 }
 
-/// Attributes by name for [`scene`]: `pos` (clip-space xyzw), `col`, `tc`.
+/// Attributes by name for [`scene`]: `pos` (clip-space xyzw), `col`, `tc`;
+/// drawn as `mode`'s primitives.
 struct SceneAttribs {
+    mode: Mode,
     names: Vec<String>,
     pos: Vec<[f32; 4]>,
     col: Vec<[f32; 4]>,
@@ -207,6 +209,7 @@ impl SceneAttribs {
     /// No vertices yet, for the inputs of vertex kernel `vs`.
     fn for_kernel(vs: &Kernel) -> SceneAttribs {
         SceneAttribs {
+            mode: Mode::Triangles,
             names: vs
                 .interface()
                 .inputs
@@ -219,8 +222,8 @@ impl SceneAttribs {
         }
     }
 
-    /// Draws every vertex of `self`, in order, as triangles through the
-    /// stages `vs` and `fs` (no uniforms) onto `fb`.
+    /// Draws every vertex of `self`, in order, as `self.mode`'s
+    /// primitives through the stages `vs` and `fs` onto `fb`.
     fn draw(
         &self,
         workers: &crate::Workers,
@@ -237,7 +240,7 @@ impl SceneAttribs {
             (vs, &[]),
             None,
             (fs, fs_uniforms),
-            Mode::Triangles,
+            self.mode,
             &idx,
             self,
             units,
@@ -628,13 +631,22 @@ fn impostors(
     spheres: usize,
     state_change: impl Fn(&mut PipelineState),
 ) -> (Vec<[u8; 4]>, Vec<f32>, u64) {
-    impostors_with(workers, discard, deferred, spheres, state_change, true)
+    impostors_with(
+        workers,
+        discard,
+        deferred,
+        spheres,
+        state_change,
+        true,
+        false,
+    )
 }
 
 /// [`impostors`], the colours computed with derivatives (`quad_ops`) or
 /// without (then every lane of the shader is independent of the others
 /// and the pipeline packs the covered pixels of several quads into a
-/// batch).
+/// batch), each sphere two triangles or, with `quads`, one GL quad (a
+/// polygon set up as the two triangles of its fan).
 fn impostors_with(
     workers: &crate::Workers,
     discard: bool,
@@ -642,6 +654,7 @@ fn impostors_with(
     spheres: usize,
     state_change: impl Fn(&mut PipelineState),
     quad_ops: bool,
+    quads: bool,
 ) -> (Vec<[u8; 4]>, Vec<f32>, u64) {
     // Native code from a kernel's 32nd batch on, compiled by that batch's
     // thread, so these short draws run it whatever the timing.
@@ -683,6 +696,9 @@ fn impostors_with(
     };
     state_change(&mut state);
     let mut attribs = SceneAttribs::for_kernel(&vs);
+    if quads {
+        attribs.mode = Mode::Quads;
+    }
     // Spheres on a pseudo-random walk, radii 0.05..0.3 (clip units),
     // depths interleaved so later ones are sometimes behind.
     let mut rnd = unit_floats(12345);
@@ -694,14 +710,18 @@ fn impostors_with(
             0.3 + 0.5 * rnd(),
             0.4 + 0.6 * rnd(),
         );
-        for (dx, dy) in [
-            (-1.0, -1.0),
-            (1.0, -1.0),
-            (1.0, 1.0),
-            (-1.0, -1.0),
-            (1.0, 1.0),
-            (-1.0, 1.0),
-        ] {
+        let corners: &[(f32, f32)] = match quads {
+            true => &[(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)],
+            false => &[
+                (-1.0, -1.0),
+                (1.0, -1.0),
+                (1.0, 1.0),
+                (-1.0, -1.0),
+                (1.0, 1.0),
+                (-1.0, 1.0),
+            ],
+        };
+        for &(dx, dy) in corners {
             attribs.pos.push([cx + dx * r, cy + dy * r, 0.0, 1.0]);
             // SceneAttribs' `col` slot carries `sph`.
             attribs.col.push([dx, dy, z, shade]);
@@ -776,7 +796,15 @@ fn packed_batches_give_the_same_bytes() {
     // Neither the slice nor the colours use derivatives: both passes run
     // the covered pixels of several quads per batch, no helper lanes.
     for discard in [true, false] {
-        let want = impostors_with(&crate::Workers::new(1), discard, false, 200, |_| {}, false);
+        let want = impostors_with(
+            &crate::Workers::new(1),
+            discard,
+            false,
+            200,
+            |_| {},
+            false,
+            false,
+        );
         for threads in [1, 2] {
             let got = impostors_with(
                 &crate::Workers::new(threads),
@@ -785,9 +813,61 @@ fn packed_batches_give_the_same_bytes() {
                 200,
                 |_| {},
                 false,
+                false,
             );
             assert!(want == got, "discard {discard}, {threads} threads");
         }
+    }
+}
+
+#[test]
+fn depth_bounds_of_crowded_quads_give_the_same_bytes() {
+    // 600 GL quads over 150×130 pixels: many lie behind spheres drawn
+    // before them, so the depth pass finds their bounds (one for a
+    // quad's two triangles) and drops whole primitives at them.
+    use crate::shade::BOUND_USES;
+    let uses = || {
+        BOUND_USES
+            .each_ref()
+            .map(|u| u.load(std::sync::atomic::Ordering::Relaxed))
+    };
+    let draw = |threads, deferred| {
+        let workers = crate::Workers::new(threads);
+        impostors_with(&workers, true, deferred, 600, |_| {}, false, true)
+    };
+    let want = draw(1, false);
+    let before = uses();
+    for threads in [1, 2] {
+        assert!(want == draw(threads, true), "{threads} threads");
+    }
+    let after = uses();
+    assert!(after[0] > before[0], "no primitive hidden whole");
+    assert!(
+        after[1] > before[1],
+        "no bound found for a quad's two triangles"
+    );
+    // LEQUAL too (its bound must not reject a tie).
+    let changes: [fn(&mut PipelineState); 1] = [|s| s.depth_test = Some(CompareFunc::LessEqual)];
+    for change in changes {
+        let want = impostors_with(
+            &crate::Workers::new(1),
+            true,
+            false,
+            600,
+            change,
+            false,
+            true,
+        );
+        let got = impostors_with(
+            &crate::Workers::new(2),
+            true,
+            true,
+            600,
+            change,
+            false,
+            true,
+        );
+        assert!(want == got);
     }
 }
 

@@ -28,6 +28,8 @@ use crate::ShaderStage;
 
 mod batched;
 mod deferred;
+#[cfg(test)]
+pub(crate) use deferred::BOUND_USES;
 
 /// The final window z of four pixels from their interpolated z and the
 /// primitive's polygon offset (offset, clamped), and its fixed point.

@@ -38,6 +38,12 @@ fn lane_set(mask: exec::LaneMask, lane: usize) -> bool {
 /// microsecond, what the pass spends on a few dozen fragments.
 const BOUND_PAYS: u64 = 64;
 
+/// Counts of what depth bounds did, for the tests to see that a scene
+/// exercises them: primitives found hidden whole ([`FragmentStage::bound_hides`]),
+/// bounds found for two primitives at once (`prim_bound`'s twin).
+#[cfg(test)]
+pub(crate) static BOUND_USES: [AtomicU64; 2] = [AtomicU64::new(0), AtomicU64::new(0)];
+
 /// When a tile finds depth bounds ([`FragmentStage::shade_deferred`]):
 /// for primitives whose expected rejections pay for one, their area
 /// times the share of the tile's recent fragments that failed the depth
@@ -310,6 +316,45 @@ impl<'a> FragmentStage<'a> {
         policy.count(tested, tested - kept);
     }
 
+    /// Whether the depth test rejects the fixed-point depth `zf` (a
+    /// primitive's bound, see [`FragmentStage::bound_rejects`]) at every
+    /// pixel of `clip` (inside the tile at `origin`): then none of the
+    /// primitive's fragments there can pass, and its quads need not be
+    /// made. A row at a time, stopping at the first that holds a pixel
+    /// where it may pass.
+    fn bound_hides(&self, fb: &Framebuffer, origin: (u32, u32), clip: PixelRect, zf: u32) -> bool {
+        use CompareFunc::*;
+        let (Some(func), Some(depth)) = (self.state.depth_test, fb.depth.as_deref()) else {
+            return false;
+        };
+        let local = |v: i64, o: u32| usize::try_from(v - o as i64).ok();
+        let (Some(x0), Some(x1)) = (local(clip.0, origin.0), local(clip.2, origin.0)) else {
+            return false;
+        };
+        let w = fb.width as usize;
+        for y in clip.1..clip.3 {
+            let Some(start) = local(y, origin.1).map(|ly| ly * w) else {
+                return false;
+            };
+            let Some(row) = depth.get(start + x0..start + x1) else {
+                return false;
+            };
+            let max = || row.iter().fold(0, |m, &s| m.max(s));
+            let min = || row.iter().fold(u32::MAX, |m, &s| m.min(s));
+            let hidden = match func {
+                Less => max() <= zf,
+                LessEqual => max() < zf,
+                Greater => min() >= zf,
+                GreaterEqual => min() > zf,
+                _ => false,
+            };
+            if !hidden {
+                return false;
+            }
+        }
+        true
+    }
+
     /// The depth function for which the depth pass may drop fragments at
     /// a primitive's bound: one whose stored depths
     /// only move one way (or do not move), so that testing against the
@@ -335,20 +380,31 @@ impl<'a> FragmentStage<'a> {
         }
     }
 
-    /// [`FragmentStage::depth_bound`] of primitive `p`, `prim`, over its
-    /// bounds, found once (by whichever tile comes first: every tile
-    /// finds the same) when the draw keeps them, else over `clip`; none
-    /// when `policy` passes it over, or when the draw's program has given
-    /// none for most primitives tried.
+    /// [`FragmentStage::depth_bound`] of primitive `p` of `prims` over its
+    /// bounds, found once (by whichever tile comes first: any tile's is a
+    /// bound) when the draw keeps them, else over `clip`; none
+    /// when it is not known yet and `policy` passes it over, or when the
+    /// draw's program has given none for most primitives tried.
+    ///
+    /// A polygon's triangles (a quad's two, which cover the same bounds)
+    /// are found together: one evaluation over the hull of their
+    /// varyings, kept for both (`twin`, the next primitive of `prims`).
     fn prim_bound(
         &self,
         func: CompareFunc,
         scratch: &mut ex::RangeScratch,
-        (prim, p): (&Prim, u32),
+        (prims, p): (&[&Prim], u32),
         clip: PixelRect,
         policy: &mut BoundPolicy,
     ) -> Option<u32> {
+        let prim = *prims.get(p as usize)?;
         let b = prim.bounds;
+        let slot = self.bounds.get(p as usize);
+        match slot.map_or(0, |s| s.load(Relaxed)) {
+            0 => {}
+            1 => return None,
+            z => return Some((z - 2) as u32),
+        }
         let [tried, failed] = self.bound_stats.each_ref().map(|s| s.load(Relaxed));
         if failed >= 16 && 2 * failed >= tried {
             return None;
@@ -356,17 +412,21 @@ impl<'a> FragmentStage<'a> {
         if !policy.worth(((b.2 - b.0) * (b.3 - b.1)) as u64) {
             return None;
         }
-        let slot = self.bounds.get(p as usize);
-        match slot.map_or(0, |s| s.load(Relaxed)) {
-            0 => {}
-            1 => return None,
-            z => return Some((z - 2) as u32),
-        }
         let Some(slot) = slot else {
-            return self.depth_bound(func, scratch, prim, clip);
+            return self.depth_bound(func, scratch, (prim, None), clip);
         };
-        let z = self.depth_bound(func, scratch, prim, b);
-        slot.store(z.map_or(1, |z| 2 + z as u64), Relaxed);
+        let twin = prims
+            .get(p as usize + 1)
+            .filter(|t| t.source == prim.source && t.bounds == b)
+            .and_then(|&t| Some((t, self.bounds.get(p as usize + 1)?)));
+        let z = self.depth_bound(func, scratch, (prim, twin.map(|t| t.0)), b);
+        let value = z.map_or(1, |z| 2 + z as u64);
+        slot.store(value, Relaxed);
+        if let Some((_, twin_slot)) = twin {
+            twin_slot.store(value, Relaxed);
+            #[cfg(test)]
+            BOUND_USES[1].fetch_add(1, Relaxed);
+        }
         self.bound_stats[0].fetch_add(1, Relaxed);
         if z.is_none() {
             self.bound_stats[1].fetch_add(1, Relaxed);
@@ -379,11 +439,14 @@ impl<'a> FragmentStage<'a> {
     /// the near end of the slice's gl_FragDepth range over those pixels
     /// for LESS and LEQUAL, the far end for GREATER and GEQUAL, clamped and
     /// converted as the depth test converts a fragment's.
+    ///
+    /// With `twin` (a primitive of the same bounds), a bound on its
+    /// fragments too: each varying's form is the hull of the two.
     fn depth_bound(
         &self,
         func: CompareFunc,
         scratch: &mut ex::RangeScratch,
-        prim: &Prim,
+        (prim, twin): (&Prim, Option<&Prim>),
         clip: PixelRect,
     ) -> Option<u32> {
         use ex::Affine;
@@ -394,6 +457,7 @@ impl<'a> FragmentStage<'a> {
             y: ((clip.1 - y0) as f64, (clip.3 - 1 - y0) as f64),
         };
         let attrs = self.prim_attrs(prim);
+        let twin = twin.map(|t| (t, self.prim_attrs(t)));
         let coord = self.layout.frag_coord;
         // gl_FragCoord.xy: the pixel centres, exactly.
         let (x, y) = (region.x(), region.y());
@@ -405,7 +469,16 @@ impl<'a> FragmentStage<'a> {
             }
             let fill = self.depth_fills.iter().find(|f| f.offset == c)?;
             match fill.kind {
-                FillKind::Interp => attrs.get(fill.li)?.form(&prim.planes, &region),
+                FillKind::Interp => {
+                    let form = attrs.get(fill.li)?.form(&prim.planes, &region)?;
+                    match twin {
+                        Some((t, a)) => Some(Affine::hull(
+                            form,
+                            a.get(fill.li)?.form(&t.planes, &region)?,
+                        )),
+                        None => Some(form),
+                    }
+                }
                 FillKind::Replace(_) => None,
             }
         };
@@ -583,10 +656,19 @@ impl<'a> FragmentStage<'a> {
                     // (`early`), with it a bound on the slice's.
                     let bound = match bound_func {
                         Some(func) if clip.0 < clip.2 && clip.1 < clip.3 => {
-                            self.prim_bound(func, &mut range_scratch, (prim, p), clip, &mut policy)
+                            self.prim_bound(func, &mut range_scratch, (prims, p), clip, &mut policy)
                         }
                         _ => None,
                     };
+                    if bound.is_some_and(|zf| self.bound_hides(fb, origin, clip, zf)) {
+                        // Every fragment fails (counted as `bound_rejects`
+                        // counts, by the clip's area).
+                        let area = ((clip.2 - clip.0) * (clip.3 - clip.1)) as u32;
+                        policy.count(area, area);
+                        #[cfg(test)]
+                        BOUND_USES[0].fetch_add(1, Relaxed);
+                        continue;
+                    }
                     let wide = clip.2 - clip.0 >= 16 && bound.is_none();
                     prim.shape
                         .quads_into_strips(clip, quads, pass.run_slice && wide);
