@@ -203,6 +203,8 @@ impl Context {
             draw_buffers,
             // Numbered per draw by the draw call.
             primitive_ids: raster::PrimitiveIds::default(),
+            // SAMPLES_PASSED and ANY_SAMPLES_PASSED count what passes.
+            count_samples: self.queries.active[..2] != [0, 0],
         }
     }
 

@@ -631,124 +631,160 @@ fn impostors(
     spheres: usize,
     state_change: impl Fn(&mut PipelineState),
 ) -> (Vec<[u8; 4]>, Vec<f32>, u64) {
-    impostors_with(
-        workers,
+    let scene = Impostors {
         discard,
         deferred,
         spheres,
-        state_change,
-        true,
-        false,
-    )
+        ..Impostors::default()
+    };
+    scene.draw(workers, state_change)
 }
 
-/// [`impostors`], the colours computed with derivatives (`quad_ops`) or
-/// without (then every lane of the shader is independent of the others
-/// and the pipeline packs the covered pixels of several quads into a
-/// batch), each sphere two triangles or, with `quads`, one GL quad (a
-/// polygon set up as the two triangles of its fan).
-fn impostors_with(
-    workers: &crate::Workers,
+/// The scenes of [`impostors`].
+#[derive(Clone, Copy)]
+struct Impostors {
     discard: bool,
     deferred: bool,
     spheres: usize,
-    state_change: impl Fn(&mut PipelineState),
+    /// The colours computed with derivatives, or without (then every lane
+    /// of the shader is independent of the others and the pipeline packs
+    /// the covered pixels of several quads into a batch).
     quad_ops: bool,
+    /// Each sphere one GL quad (a polygon set up as the two triangles of
+    /// its fan) instead of two triangles.
     quads: bool,
-) -> (Vec<[u8; 4]>, Vec<f32>, u64) {
-    // Native code from a kernel's 32nd batch on, compiled by that batch's
-    // thread, so these short draws run it whatever the timing.
-    crate::ex::set_native_after(32);
-    let (vs, fs) = program(
-        "attribute vec4 pos; attribute vec4 sph; varying vec4 s;\n\
-         void main() { gl_Position = pos; s = sph; }",
-        &format!(
-            "varying vec4 s; uniform float budget;\n\
-             void main() {{\n\
-               float q = 1.0 - dot(s.xy, s.xy);\n\
-               if (q < 0.0) {{ {} }}\n\
-               float h = sqrt(q);\n\
-               gl_FragDepth = s.z - 0.25 * h;\n\
-               float acc = 0.0;\n\
-               for (int i = 0; i < 4; i++) acc += 0.1 * h;\n\
-               vec3 n = vec3(s.xy, h) * 0.5 + 0.5;\n\
-               gl_FragColor = vec4(n * s.w + vec3({}, acc) * 2.0, 1.0);\n\
-             }}",
-            if discard { "discard;" } else { "q = 0.0;" },
-            if quad_ops {
-                "dFdx(h), dFdy(h)"
-            } else {
-                "h * 0.5, fract(gl_FragCoord.x * 0.01 + gl_FragCoord.y * 0.003)"
-            }
-        ),
-    );
-    assert!(fs.depth_only().is_some(), "the shader has a depth slice");
-    assert_eq!(fs.lanes_independent(), !quad_ops);
-    assert!(fs.depth_only().is_some_and(|d| d.lanes_independent()));
-    let (w, h) = (150u32, 130u32);
-    let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, false);
-    fb.clear_color(&[0], [0.1, 0.2, 0.3, 1.0], [true; 4], None);
-    fb.clear_depth(1.0, true, None);
-    let mut state = PipelineState {
-        viewport: Rect::new(0, 0, w as i32, h as i32),
-        depth_test: Some(CompareFunc::Less),
-        ..PipelineState::default()
-    };
-    state_change(&mut state);
-    let mut attribs = SceneAttribs::for_kernel(&vs);
-    if quads {
-        attribs.mode = Mode::Quads;
-    }
-    // Spheres on a pseudo-random walk, radii 0.05..0.3 (clip units),
-    // depths interleaved so later ones are sometimes behind.
-    let mut rnd = unit_floats(12345);
-    for _ in 0..spheres {
-        let (cx, cy, r, z, shade) = (
-            rnd() * 2.2 - 1.1,
-            rnd() * 2.2 - 1.1,
-            0.05 + 0.25 * rnd(),
-            0.3 + 0.5 * rnd(),
-            0.4 + 0.6 * rnd(),
-        );
-        let corners: &[(f32, f32)] = match quads {
-            true => &[(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)],
-            false => &[
-                (-1.0, -1.0),
-                (1.0, -1.0),
-                (1.0, 1.0),
-                (-1.0, -1.0),
-                (1.0, 1.0),
-                (-1.0, 1.0),
-            ],
-        };
-        for &(dx, dy) in corners {
-            attribs.pos.push([cx + dx * r, cy + dy * r, 0.0, 1.0]);
-            // SceneAttribs' `col` slot carries `sph`.
-            attribs.col.push([dx, dy, z, shade]);
+    /// Each sphere drawn twice, the second time in another colour at the
+    /// same depths: every fragment of it ties with the first's.
+    twice: bool,
+    clear_depth: f32,
+}
+
+impl Default for Impostors {
+    fn default() -> Impostors {
+        Impostors {
+            discard: true,
+            deferred: true,
+            spheres: 60,
+            quad_ops: true,
+            quads: false,
+            twice: false,
+            clear_depth: 1.0,
         }
     }
-    attribs.names = attribs
-        .names
-        .iter()
-        .map(|n| {
-            if n == "sph" {
-                "col".to_string()
-            } else {
-                n.clone()
+}
+
+impl Impostors {
+    fn draw(
+        self,
+        workers: &crate::Workers,
+        state_change: impl Fn(&mut PipelineState),
+    ) -> (Vec<[u8; 4]>, Vec<f32>, u64) {
+        let Impostors {
+            discard,
+            deferred,
+            spheres,
+            quad_ops,
+            quads,
+            twice,
+            clear_depth,
+        } = self;
+        // Native code from a kernel's 32nd batch on, compiled by that batch's
+        // thread, so these short draws run it whatever the timing.
+        crate::ex::set_native_after(32);
+        let (vs, fs) = program(
+            "attribute vec4 pos; attribute vec4 sph; varying vec4 s;\n\
+             void main() { gl_Position = pos; s = sph; }",
+            &format!(
+                "varying vec4 s; uniform float budget;\n\
+                 void main() {{\n\
+                   float q = 1.0 - dot(s.xy, s.xy);\n\
+                   if (q < 0.0) {{ {} }}\n\
+                   float h = sqrt(q);\n\
+                   gl_FragDepth = s.z - 0.25 * h;\n\
+                   float acc = 0.0;\n\
+                   for (int i = 0; i < 4; i++) acc += 0.1 * h;\n\
+                   vec3 n = vec3(s.xy, h) * 0.5 + 0.5;\n\
+                   gl_FragColor = vec4(n * s.w + vec3({}, acc) * 2.0, 1.0);\n\
+                 }}",
+                if discard { "discard;" } else { "q = 0.0;" },
+                if quad_ops {
+                    "dFdx(h), dFdy(h)"
+                } else {
+                    "h * 0.5, fract(gl_FragCoord.x * 0.01 + gl_FragCoord.y * 0.003)"
+                }
+            ),
+        );
+        assert!(fs.depth_only().is_some(), "the shader has a depth slice");
+        assert_eq!(fs.lanes_independent(), !quad_ops);
+        assert!(fs.depth_only().is_some_and(|d| d.lanes_independent()));
+        let (w, h) = (150u32, 130u32);
+        let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, false);
+        fb.clear_color(&[0], [0.1, 0.2, 0.3, 1.0], [true; 4], None);
+        fb.clear_depth(clear_depth, true, None);
+        let mut state = PipelineState {
+            viewport: Rect::new(0, 0, w as i32, h as i32),
+            depth_test: Some(CompareFunc::Less),
+            ..PipelineState::default()
+        };
+        state_change(&mut state);
+        let mut attribs = SceneAttribs::for_kernel(&vs);
+        if quads {
+            attribs.mode = Mode::Quads;
+        }
+        // Spheres on a pseudo-random walk, radii 0.05..0.3 (clip units),
+        // depths interleaved so later ones are sometimes behind.
+        let mut rnd = unit_floats(12345);
+        for _ in 0..spheres {
+            let (cx, cy, r, z, shade) = (
+                rnd() * 2.2 - 1.1,
+                rnd() * 2.2 - 1.1,
+                0.05 + 0.25 * rnd(),
+                0.3 + 0.5 * rnd(),
+                0.4 + 0.6 * rnd(),
+            );
+            let corners: &[(f32, f32)] = match quads {
+                true => &[(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)],
+                false => &[
+                    (-1.0, -1.0),
+                    (1.0, -1.0),
+                    (1.0, 1.0),
+                    (-1.0, -1.0),
+                    (1.0, 1.0),
+                    (-1.0, 1.0),
+                ],
+            };
+            for copy in 0..1 + twice as usize {
+                let shade = [shade, 1.0 - 0.5 * shade][copy];
+                for &(dx, dy) in corners {
+                    attribs.pos.push([cx + dx * r, cy + dy * r, 0.0, 1.0]);
+                    // SceneAttribs' `col` slot carries `sph`.
+                    attribs.col.push([dx, dy, z, shade]);
+                }
             }
-        })
-        .collect();
-    let straight = Straightforward(&fs);
-    let fs_stage: &dyn crate::ShaderStage = if deferred { &fs } else { &straight };
-    let units = TextureUnits::default();
-    attribs
-        .draw(workers, &mut fb, &state, (&vs, fs_stage), (&[], &units))
-        .unwrap();
-    (
-        fb.read_pixels_u8(0, 0, 0, w, h),
-        fb.read_depth(0, 0, w, h),
-        fb.samples_passed,
-    )
+        }
+        attribs.names = attribs
+            .names
+            .iter()
+            .map(|n| {
+                if n == "sph" {
+                    "col".to_string()
+                } else {
+                    n.clone()
+                }
+            })
+            .collect();
+        let straight = Straightforward(&fs);
+        let fs_stage: &dyn crate::ShaderStage = if deferred { &fs } else { &straight };
+        let units = TextureUnits::default();
+        attribs
+            .draw(workers, &mut fb, &state, (&vs, fs_stage), (&[], &units))
+            .unwrap();
+        (
+            fb.read_pixels_u8(0, 0, 0, w, h),
+            fb.read_depth(0, 0, w, h),
+            fb.samples_passed,
+        )
+    }
 }
 
 #[test]
@@ -796,79 +832,98 @@ fn packed_batches_give_the_same_bytes() {
     // Neither the slice nor the colours use derivatives: both passes run
     // the covered pixels of several quads per batch, no helper lanes.
     for discard in [true, false] {
-        let want = impostors_with(
-            &crate::Workers::new(1),
+        let scene = |deferred| Impostors {
             discard,
-            false,
-            200,
-            |_| {},
-            false,
-            false,
-        );
+            deferred,
+            spheres: 200,
+            quad_ops: false,
+            ..Impostors::default()
+        };
+        let want = scene(false).draw(&crate::Workers::new(1), |_| {});
         for threads in [1, 2] {
-            let got = impostors_with(
-                &crate::Workers::new(threads),
-                discard,
-                true,
-                200,
-                |_| {},
-                false,
-                false,
-            );
+            let got = scene(true).draw(&crate::Workers::new(threads), |_| {});
             assert!(want == got, "discard {discard}, {threads} threads");
         }
     }
+}
+
+/// The counts of [`crate::shade::BOUND_USES`].
+fn bound_uses() -> [u64; 3] {
+    crate::shade::BOUND_USES
+        .each_ref()
+        .map(|u| u.load(std::sync::atomic::Ordering::Relaxed))
 }
 
 #[test]
 fn depth_bounds_of_crowded_quads_give_the_same_bytes() {
     // 600 GL quads over 150×130 pixels: many lie behind spheres drawn
     // before them, so the depth pass finds their bounds (one for a
-    // quad's two triangles) and drops whole primitives at them.
-    use crate::shade::BOUND_USES;
-    let uses = || {
-        BOUND_USES
-            .each_ref()
-            .map(|u| u.load(std::sync::atomic::Ordering::Relaxed))
+    // quad's two triangles) and drops whole primitives at them. LEQUAL
+    // too (its bound must not reject a tie).
+    let scene = |deferred| Impostors {
+        deferred,
+        spheres: 600,
+        quad_ops: false,
+        quads: true,
+        ..Impostors::default()
     };
-    let draw = |threads, deferred| {
-        let workers = crate::Workers::new(threads);
-        impostors_with(&workers, true, deferred, 600, |_| {}, false, true)
-    };
-    let want = draw(1, false);
-    let before = uses();
-    for threads in [1, 2] {
-        assert!(want == draw(threads, true), "{threads} threads");
+    let before = bound_uses();
+    for func in [CompareFunc::Less, CompareFunc::LessEqual] {
+        let change = |s: &mut PipelineState| s.depth_test = Some(func);
+        let want = scene(false).draw(&crate::Workers::new(1), change);
+        for threads in [1, 2] {
+            let got = scene(true).draw(&crate::Workers::new(threads), change);
+            assert!(want == got, "{func:?}, {threads} threads");
+        }
     }
-    let after = uses();
+    let after = bound_uses();
     assert!(after[0] > before[0], "no primitive hidden whole");
     assert!(
         after[1] > before[1],
         "no bound found for a quad's two triangles"
     );
-    // LEQUAL too (its bound must not reject a tie).
-    let changes: [fn(&mut PipelineState); 1] = [|s| s.depth_test = Some(CompareFunc::LessEqual)];
-    for change in changes {
-        let want = impostors_with(
-            &crate::Workers::new(1),
-            true,
-            false,
-            600,
-            change,
-            false,
-            true,
-        );
-        let got = impostors_with(
-            &crate::Workers::new(2),
-            true,
-            true,
-            600,
-            change,
-            false,
-            true,
-        );
-        assert!(want == got);
+}
+
+#[test]
+fn primitives_out_of_draw_order_give_the_same_bytes() {
+    // No samples counted: crowded tiles take their primitives near ones
+    // first. Each sphere is drawn twice at the same depths, so every
+    // fragment of the second ties with the first's, which the depth
+    // function keeps or replaces as in draw order.
+    let before = bound_uses();
+    for (func, clear) in [
+        (CompareFunc::Less, 1.0),
+        (CompareFunc::LessEqual, 1.0),
+        (CompareFunc::Greater, 0.0),
+        (CompareFunc::GreaterEqual, 0.0),
+    ] {
+        let scene = |deferred| Impostors {
+            deferred,
+            spheres: 400,
+            quad_ops: false,
+            quads: true,
+            twice: true,
+            clear_depth: clear,
+            ..Impostors::default()
+        };
+        let change = |s: &mut PipelineState| {
+            s.depth_test = Some(func);
+            s.count_samples = false;
+        };
+        let want = scene(false).draw(&crate::Workers::new(1), change);
+        let distinct: std::collections::BTreeSet<[u8; 4]> = want.0.iter().copied().collect();
+        assert!(distinct.len() > 300, "{func:?}: {} colors", distinct.len());
+        for threads in [1, 2] {
+            let got = scene(true).draw(&crate::Workers::new(threads), change);
+            assert!(want.0 == got.0, "colour, {func:?}, {threads} threads");
+            assert!(want.1 == got.1, "depth, {func:?}, {threads} threads");
+        }
     }
+    let after = bound_uses();
+    assert!(
+        after[2] > before[2],
+        "no tile took its primitives near first"
+    );
 }
 
 #[test]

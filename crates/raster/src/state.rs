@@ -344,6 +344,11 @@ pub struct PipelineState {
     pub draw_buffers: [Option<usize>; 8],
     /// How the draw's primitives are numbered for gl_PrimitiveID.
     pub primitive_ids: PrimitiveIds,
+    /// Whether the fragments passing the depth test are counted
+    /// (`Framebuffer::samples_passed`; an occlusion query is active).
+    /// Without, the fragment stage may depth-test a tile's primitives out
+    /// of draw order where the pixels cannot tell (near ones first).
+    pub count_samples: bool,
 }
 
 /// The gl_PrimitiveID of a draw's primitives (GL 3.3 §3.12.2, without a
@@ -407,6 +412,7 @@ impl Default for PipelineState {
             per_buffer: None,
             logic_op: None,
             primitive_ids: PrimitiveIds::default(),
+            count_samples: true,
             polygon_offset: PolygonOffset::default(),
             draw_buffers: [Some(0), None, None, None, None, None, None, None],
         }

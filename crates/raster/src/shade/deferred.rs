@@ -33,6 +33,71 @@ fn lane_set(mask: exec::LaneMask, lane: usize) -> bool {
     lane < LANES && mask & (1 << lane) != 0
 }
 
+/// The depth test under `func` (LESS, LEQUAL, GREATER or GEQUAL) of the
+/// pixels `alive` of the quad at `(lx, ly)` (tile coordinates) of
+/// primitive `p`, at the fixed-point depths `zf`, in a tile whose
+/// primitives run out of draw order: a pixel passes when its depth beats
+/// the stored one, or equals it and draw order would have let it pass
+/// last: for LESS and GREATER when it comes before the pixel's winner
+/// `winner` (the first of equal depths stays), for LEQUAL and GEQUAL
+/// after it (the last stays); a depth stored before the draw (no winner)
+/// comes before every fragment. So each pixel ends with the depth and
+/// the winner that draw order gives. Writes the depths that pass and
+/// returns those pixels and their indices.
+#[inline(always)]
+fn unordered_test(
+    (depth, winner, width): (&mut [u32], &[(u32, u8)], usize),
+    func: CompareFunc,
+    (lx, ly): (i64, i64),
+    (alive, zf, p): (u8, [u32; 4], u32),
+) -> (u8, [usize; 4]) {
+    let first_stays = matches!(func, CompareFunc::Less | CompareFunc::Greater);
+    // The comparison without ties: LESS's for LESS and LEQUAL.
+    let beats = match func {
+        CompareFunc::Less | CompareFunc::LessEqual => CompareFunc::Less,
+        _ => CompareFunc::Greater,
+    };
+    let mut pass = 0u8;
+    let mut index = [0usize; 4];
+    for (k, (at, &z)) in index.iter_mut().zip(&zf).enumerate() {
+        let (x, y) = (lx + (k as i64 & 1), ly + (k as i64 >> 1));
+        if alive & (1 << k) == 0 || x < 0 || y < 0 || x >= width as i64 {
+            continue;
+        }
+        *at = y as usize * width + x as usize;
+        let (Some(stored), Some(&(w, _))) = (depth.get_mut(*at), winner.get(*at)) else {
+            continue;
+        };
+        let wins = beats.test(z, *stored)
+            || (z == *stored
+                && match first_stays {
+                    true => w != NO_PRIM && p < w,
+                    false => w == NO_PRIM || p > w,
+                });
+        if wins {
+            *stored = z;
+            pass |= 1 << k;
+        }
+    }
+    (pass, index)
+}
+
+/// The depth function a bound is tested with when fragments may meet
+/// the depth test out of draw order: one that lets equal depths through
+/// (a fragment as deep as the stored one may still win its tie).
+fn ties_pass(func: CompareFunc) -> CompareFunc {
+    match func {
+        CompareFunc::Less => CompareFunc::LessEqual,
+        CompareFunc::Greater => CompareFunc::GreaterEqual,
+        f => f,
+    }
+}
+
+/// How crowded a tile is for its primitives to be taken near first
+/// ([`FragmentStage::unordered_func`]): the sum of their areas in the
+/// tile against the tile's (a quad's two triangles count twice).
+const CROWDED: u64 = 8;
+
 /// The fragments a primitive's depth bound must be expected to reject
 /// for the depth pass to find it: a bound costs about two thirds of a
 /// microsecond, what the pass spends on a few dozen fragments.
@@ -40,9 +105,10 @@ const BOUND_PAYS: u64 = 64;
 
 /// Counts of what depth bounds did, for the tests to see that a scene
 /// exercises them: primitives found hidden whole ([`FragmentStage::bound_hides`]),
-/// bounds found for two primitives at once (`prim_bound`'s twin).
+/// bounds found for two primitives at once (`prim_bound`'s twin), tiles
+/// taken near first ([`FragmentStage::near_first`]).
 #[cfg(test)]
-pub(crate) static BOUND_USES: [AtomicU64; 2] = [AtomicU64::new(0), AtomicU64::new(0)];
+pub(crate) static BOUND_USES: [AtomicU64; 3] = [const { AtomicU64::new(0) }; 3];
 
 /// When a tile finds depth bounds ([`FragmentStage::shade_deferred`]):
 /// for primitives whose expected rejections pay for one, their area
@@ -91,6 +157,9 @@ struct DeferredPass<'d> {
     /// ([`FragmentStage::fill_packed_with`]).
     pack_depth: bool,
     pack_colors: bool,
+    /// The depth function when the tile's primitives are depth-tested
+    /// out of draw order ([`FragmentStage::unordered_func`]).
+    unordered: Option<CompareFunc>,
 }
 
 /// Takes the quad just set at `pending[*n]` (running the pixels
@@ -184,8 +253,13 @@ impl<'a> FragmentStage<'a> {
         match &pass.quick {
             Some(q) => {
                 // A quad's four pixels are distinct: tested together as
-                // one after the other.
-                let mut target = q.target(fb, pass.origin);
+                // one after the other, by the target or, out of draw
+                // order, here (ties decided by draw order).
+                let width = fb.width as usize;
+                let (mut target, mut depth) = match pass.unordered {
+                    Some(_) => (None, fb.depth.as_deref_mut()),
+                    None => (Some(q.target(fb, pass.origin)), None),
+                };
                 for (q, e) in pending.iter().enumerate() {
                     let (alive, z) = self.alive_z(pass.pack_depth, batch, q, e, &mut next);
                     if alive == 0 {
@@ -196,10 +270,21 @@ impl<'a> FragmentStage<'a> {
                         Some(_) => self.depth_format.to_fixed4_f32(z),
                         None => quad.zf,
                     };
-                    let (pass, index, _) = target.test_quad((quad.x, quad.y), alive, z, zf);
-                    policy.count(alive.count_ones(), (alive & !pass).count_ones());
+                    let (passed, index) = match (&mut target, &mut depth, pass.unordered) {
+                        (_, Some(depth), Some(func)) => {
+                            let at = (quad.x - pass.origin.0 as i64, quad.y - pass.origin.1 as i64);
+                            let with = (&mut **depth, &*winner, width);
+                            unordered_test(with, func, at, (alive, zf, e.index))
+                        }
+                        (Some(t), ..) => {
+                            let (pass, index, _) = t.test_quad((quad.x, quad.y), alive, z, zf);
+                            (pass, index)
+                        }
+                        _ => (0, [0; 4]),
+                    };
+                    policy.count(alive.count_ones(), (alive & !passed).count_ones());
                     for (k, &at) in index.iter().enumerate() {
-                        if pass & (1 << k) != 0 {
+                        if passed & (1 << k) != 0 {
                             if let Some(slot) = winner.get_mut(at) {
                                 *slot = (e.index, quad.live);
                             }
@@ -286,19 +371,18 @@ impl<'a> FragmentStage<'a> {
     }
 
     /// Drops from `quads` (single quads, no strips) the pixels the depth
-    /// test rejects at the fixed-point depth `zf` (a primitive's bound:
-    /// none of its fragments can beat it), and the quads left without
-    /// any; counts the pixels tested and rejected in `policy`.
+    /// test `func` rejects at the fixed-point depth `zf` (a primitive's
+    /// bound: none of its fragments can beat it), and the quads left
+    /// without any; counts the pixels tested and rejected in `policy`.
     fn bound_rejects(
         &self,
-        fb: &Framebuffer,
-        origin: (u32, u32),
-        zf: u32,
+        (fb, origin): (&Framebuffer, (u32, u32)),
+        (func, zf): (CompareFunc, u32),
         quads: &mut Vec<(i64, i64, u8)>,
         policy: &mut BoundPolicy,
     ) {
-        // `bound_func` checked both.
-        let (Some(func), Some(depth)) = (self.state.depth_test, fb.depth.as_deref()) else {
+        // `bound_func` checked it.
+        let Some(depth) = fb.depth.as_deref() else {
             return;
         };
         let size = (fb.width, fb.height);
@@ -316,15 +400,20 @@ impl<'a> FragmentStage<'a> {
         policy.count(tested, tested - kept);
     }
 
-    /// Whether the depth test rejects the fixed-point depth `zf` (a
+    /// Whether the depth test `func` rejects the fixed-point depth `zf` (a
     /// primitive's bound, see [`FragmentStage::bound_rejects`]) at every
     /// pixel of `clip` (inside the tile at `origin`): then none of the
     /// primitive's fragments there can pass, and its quads need not be
     /// made. A row at a time, stopping at the first that holds a pixel
     /// where it may pass.
-    fn bound_hides(&self, fb: &Framebuffer, origin: (u32, u32), clip: PixelRect, zf: u32) -> bool {
+    fn bound_hides(
+        &self,
+        (fb, origin): (&Framebuffer, (u32, u32)),
+        (func, zf): (CompareFunc, u32),
+        clip: PixelRect,
+    ) -> bool {
         use CompareFunc::*;
-        let (Some(func), Some(depth)) = (self.state.depth_test, fb.depth.as_deref()) else {
+        let Some(depth) = fb.depth.as_deref() else {
             return false;
         };
         let local = |v: i64, o: u32| usize::try_from(v - o as i64).ok();
@@ -353,6 +442,58 @@ impl<'a> FragmentStage<'a> {
             }
         }
         true
+    }
+
+    /// The depth function when a tile may depth-test its primitives out
+    /// of draw order, near ones first (by their bounds), so that the far
+    /// ones meet a depth buffer that already hides most of them: where
+    /// the pixels cannot tell the order. The last fragment to pass decides
+    /// a pixel (no blending: the deferred path), depths are written and
+    /// move one way (`bound_func`), no samples are counted, no scissor
+    /// test (the quads are tested whole) and no probe; the tests then
+    /// keep on ties the fragment draw order would keep
+    /// ([`unordered_test`]). Only for tiles crowded enough
+    /// (`crowded`) for the bounds of all their primitives to pay.
+    fn unordered_func(&self, fb: &Framebuffer, quick: bool, crowded: bool) -> Option<CompareFunc> {
+        let s = self.state;
+        let plain = quick && s.depth_mask && !s.count_samples && s.scissor.is_none();
+        self.bound_func(fb)
+            .filter(|_| plain && crowded && self.probe.is_none())
+    }
+
+    /// `bin` in the order the depth pass takes it: near primitives first
+    /// (by their bounds under `func`; those without one last), else as
+    /// drawn. Finds the bounds of all but the smallest primitives.
+    fn near_first(
+        &self,
+        func: CompareFunc,
+        scratch: &mut ex::RangeScratch,
+        (prims, bin, tile): (&[&Prim], &[u32], PixelRect),
+        order: &mut Vec<(u32, u32)>,
+    ) {
+        // Every primitive is worth a bound here (see `BoundPolicy::worth`).
+        let mut policy = BoundPolicy {
+            tested: 1,
+            failed: 1,
+        };
+        order.clear();
+        order.extend(bin.iter().map(|&p| {
+            let bound = prims.get(p as usize).and_then(|&prim| {
+                let clip = clip_to(prim, tile);
+                (clip.0 < clip.2 && clip.1 < clip.3)
+                    .then(|| self.prim_bound(func, scratch, (prims, p), clip, &mut policy))
+                    .flatten()
+            });
+            let key = match (bound, func) {
+                (None, _) => u32::MAX,
+                (Some(z), CompareFunc::Less | CompareFunc::LessEqual) => z,
+                (Some(z), _) => !z,
+            };
+            (key, p)
+        }));
+        order.sort_by_key(|&(key, _)| key);
+        #[cfg(test)]
+        BOUND_USES[2].fetch_add(1, Relaxed);
     }
 
     /// The depth function for which the depth pass may drop fragments at
@@ -595,6 +736,14 @@ impl<'a> FragmentStage<'a> {
         // to `LANES` quads per batch, without helper lanes.
         let pack_depth = run_slice && self.deferred_lanes_independent;
         let pack_colors = self.lanes_independent;
+        let crowded = bound_func.is_some() && {
+            let area = |c: PixelRect| ((c.2 - c.0).max(0) * (c.3 - c.1).max(0)) as u64;
+            let prims_area: u64 = (bin.iter().filter_map(|&p| prims.get(p as usize)))
+                .map(|prim| area(clip_to(prim, tile)))
+                .sum();
+            prims_area >= CROWDED * (w * h) as u64
+        };
+        let unordered = self.unordered_func(fb, quick.is_some() && run_slice, crowded);
         let pass = DeferredPass {
             depth,
             origin,
@@ -602,6 +751,7 @@ impl<'a> FragmentStage<'a> {
             run_slice,
             pack_depth,
             pack_colors,
+            unordered,
         };
         // Nothing to run and the common per-fragment operations: each
         // quad is depth-tested as soon as it is covered (the order and the
@@ -644,6 +794,22 @@ impl<'a> FragmentStage<'a> {
                 let mut lanes = 0;
                 // A strip's four quads, run as a batch of their own.
                 let mut strip: [Entry<'p>; LANES / 4] = Default::default();
+                let near_first: Vec<u32>;
+                let bin = match unordered {
+                    Some(func) => {
+                        let mut order = Vec::new();
+                        let tile_prims = (prims, bin, tile);
+                        self.near_first(func, &mut range_scratch, tile_prims, &mut order);
+                        near_first = order.into_iter().map(|(_, p)| p).collect();
+                        &near_first[..]
+                    }
+                    None => bin,
+                };
+                // Out of draw order a bound is tested letting ties through.
+                let bound_test = bound_func.map(|f| match unordered {
+                    Some(_) => ties_pass(f),
+                    None => f,
+                });
                 for (i, &p) in bin.iter().enumerate() {
                     let Some(&prim) = prims.get(p as usize) else {
                         continue;
@@ -660,7 +826,8 @@ impl<'a> FragmentStage<'a> {
                         }
                         _ => None,
                     };
-                    if bound.is_some_and(|zf| self.bound_hides(fb, origin, clip, zf)) {
+                    let test = bound_test.zip(bound);
+                    if test.is_some_and(|t| self.bound_hides((fb, origin), t, clip)) {
                         // Every fragment fails (counted as `bound_rejects`
                         // counts, by the clip's area).
                         let area = ((clip.2 - clip.0) * (clip.3 - clip.1)) as u32;
@@ -672,8 +839,8 @@ impl<'a> FragmentStage<'a> {
                     let wide = clip.2 - clip.0 >= 16 && bound.is_none();
                     prim.shape
                         .quads_into_strips(clip, quads, pass.run_slice && wide);
-                    if let Some(zf) = bound {
-                        self.bound_rejects(fb, origin, zf, quads, &mut policy);
+                    if let Some(t) = test {
+                        self.bound_rejects((fb, origin), t, quads, &mut policy);
                     }
                     for &quad in quads.iter() {
                         // Fragments of one primitive cover distinct pixels:
@@ -786,3 +953,6 @@ impl<'a> FragmentStage<'a> {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests;
