@@ -93,6 +93,11 @@ fn ties_pass(func: CompareFunc) -> CompareFunc {
     }
 }
 
+/// The pixels of `r` (none when it is empty).
+fn rect_area(r: PixelRect) -> u64 {
+    ((r.2 - r.0).max(0) * (r.3 - r.1).max(0)) as u64
+}
+
 /// How crowded a tile is for its primitives to be taken near first
 /// ([`FragmentStage::unordered_func`]): the sum of their areas in the
 /// tile against the tile's (a quad's two triangles count twice).
@@ -452,13 +457,25 @@ impl<'a> FragmentStage<'a> {
     /// move one way (`bound_func`), no samples are counted, no scissor
     /// test (the quads are tested whole) and no probe; the tests then
     /// keep on ties the fragment draw order would keep
-    /// ([`unordered_test`]). Only for tiles crowded enough
-    /// (`crowded`) for the bounds of all their primitives to pay.
-    fn unordered_func(&self, fb: &Framebuffer, quick: bool, crowded: bool) -> Option<CompareFunc> {
+    /// ([`unordered_test`]). Only for tiles crowded enough ([`CROWDED`]:
+    /// `bin`'s primitives in `tile`, against the tile's `fb`) for the
+    /// bounds of all their primitives to pay.
+    fn unordered_func(
+        &self,
+        fb: &Framebuffer,
+        quick: bool,
+        (prims, bin, tile): (&[&Prim], &[u32], PixelRect),
+    ) -> Option<CompareFunc> {
         let s = self.state;
         let plain = quick && s.depth_mask && !s.count_samples && s.scissor.is_none();
-        self.bound_func(fb)
-            .filter(|_| plain && crowded && self.probe.is_none())
+        let func = self
+            .bound_func(fb)
+            .filter(|_| plain && self.probe.is_none())?;
+        let prims_area: u64 = (bin.iter().filter_map(|&p| prims.get(p as usize)))
+            .map(|prim| rect_area(clip_to(prim, tile)))
+            .sum();
+        let tile_area = fb.width as u64 * fb.height as u64;
+        (prims_area >= CROWDED * tile_area).then_some(func)
     }
 
     /// `bin` in the order the depth pass takes it: near primitives first
@@ -469,31 +486,33 @@ impl<'a> FragmentStage<'a> {
         func: CompareFunc,
         scratch: &mut ex::RangeScratch,
         (prims, bin, tile): (&[&Prim], &[u32], PixelRect),
-        order: &mut Vec<(u32, u32)>,
-    ) {
+    ) -> Vec<u32> {
         // Every primitive is worth a bound here (see `BoundPolicy::worth`).
         let mut policy = BoundPolicy {
             tested: 1,
             failed: 1,
         };
-        order.clear();
-        order.extend(bin.iter().map(|&p| {
-            let bound = prims.get(p as usize).and_then(|&prim| {
-                let clip = clip_to(prim, tile);
-                (clip.0 < clip.2 && clip.1 < clip.3)
-                    .then(|| self.prim_bound(func, scratch, (prims, p), clip, &mut policy))
-                    .flatten()
-            });
-            let key = match (bound, func) {
-                (None, _) => u32::MAX,
-                (Some(z), CompareFunc::Less | CompareFunc::LessEqual) => z,
-                (Some(z), _) => !z,
-            };
-            (key, p)
-        }));
+        let mut order: Vec<(u32, u32)> = bin
+            .iter()
+            .map(|&p| {
+                let bound = prims.get(p as usize).and_then(|&prim| {
+                    let clip = clip_to(prim, tile);
+                    (clip.0 < clip.2 && clip.1 < clip.3)
+                        .then(|| self.prim_bound(func, scratch, (prims, p), clip, &mut policy))
+                        .flatten()
+                });
+                let key = match (bound, func) {
+                    (None, _) => u32::MAX,
+                    (Some(z), CompareFunc::Less | CompareFunc::LessEqual) => z,
+                    (Some(z), _) => !z,
+                };
+                (key, p)
+            })
+            .collect();
         order.sort_by_key(|&(key, _)| key);
         #[cfg(test)]
         BOUND_USES[2].fetch_add(1, Relaxed);
+        order.into_iter().map(|(_, p)| p).collect()
     }
 
     /// The depth function for which the depth pass may drop fragments at
@@ -550,7 +569,7 @@ impl<'a> FragmentStage<'a> {
         if failed >= 16 && 2 * failed >= tried {
             return None;
         }
-        if !policy.worth(((b.2 - b.0) * (b.3 - b.1)) as u64) {
+        if !policy.worth(rect_area(b)) {
             return None;
         }
         let Some(slot) = slot else {
@@ -736,14 +755,8 @@ impl<'a> FragmentStage<'a> {
         // to `LANES` quads per batch, without helper lanes.
         let pack_depth = run_slice && self.deferred_lanes_independent;
         let pack_colors = self.lanes_independent;
-        let crowded = bound_func.is_some() && {
-            let area = |c: PixelRect| ((c.2 - c.0).max(0) * (c.3 - c.1).max(0)) as u64;
-            let prims_area: u64 = (bin.iter().filter_map(|&p| prims.get(p as usize)))
-                .map(|prim| area(clip_to(prim, tile)))
-                .sum();
-            prims_area >= CROWDED * (w * h) as u64
-        };
-        let unordered = self.unordered_func(fb, quick.is_some() && run_slice, crowded);
+        let tile_prims = (prims, bin, tile);
+        let unordered = self.unordered_func(fb, quick.is_some() && run_slice, tile_prims);
         let pass = DeferredPass {
             depth,
             origin,
@@ -797,10 +810,7 @@ impl<'a> FragmentStage<'a> {
                 let near_first: Vec<u32>;
                 let bin = match unordered {
                     Some(func) => {
-                        let mut order = Vec::new();
-                        let tile_prims = (prims, bin, tile);
-                        self.near_first(func, &mut range_scratch, tile_prims, &mut order);
-                        near_first = order.into_iter().map(|(_, p)| p).collect();
+                        near_first = self.near_first(func, &mut range_scratch, tile_prims);
                         &near_first[..]
                     }
                     None => bin,
@@ -830,7 +840,7 @@ impl<'a> FragmentStage<'a> {
                     if test.is_some_and(|t| self.bound_hides((fb, origin), t, clip)) {
                         // Every fragment fails (counted as `bound_rejects`
                         // counts, by the clip's area).
-                        let area = ((clip.2 - clip.0) * (clip.3 - clip.1)) as u32;
+                        let area = rect_area(clip) as u32;
                         policy.count(area, area);
                         #[cfg(test)]
                         BOUND_USES[0].fetch_add(1, Relaxed);
