@@ -1332,3 +1332,122 @@ void main() {
     let p = probe_draw(&fb, &replay, ProbeRequest::pixel(0, 7));
     assert!(p.fragments.is_empty() && p.geometry.is_empty());
 }
+
+/// Billboards (quads of one value per vertex attribute, some rotated)
+/// drawn as GL quads, which set-up takes as one primitive each, and as
+/// the two triangles of each quad's fan: the same bytes, depths and
+/// sample counts, with derivatives (helper lanes) or packed batches, on
+/// the deferred path and the straightforward one, 1 and 2 threads.
+/// Every fifth quad varies a varying across its corners: those stay two
+/// triangles.
+#[test]
+fn quadrilaterals_draw_as_their_two_triangles() {
+    use std::sync::atomic::Ordering::Relaxed;
+    crate::ex::set_native_after(32);
+    for quad_ops in [false, true] {
+        let (vs, fs) = program(
+            "attribute vec4 pos; attribute vec4 col; varying vec4 c; varying float t;\n\
+             void main() { gl_Position = pos; c = col; t = pos.w - 1.0; }",
+            &format!(
+                "varying vec4 c; varying float t;\n\
+                 void main() {{\n\
+                   vec2 d = (gl_FragCoord.xy - c.xy) / c.z;\n\
+                   float q = 1.0 - dot(d, d);\n\
+                   if (q < 0.0) discard;\n\
+                   float h = sqrt(q);\n\
+                   gl_FragDepth = c.w - 0.1 * h + t;\n\
+                   gl_FragColor = vec4(d * 0.5 + 0.5, {}, 1.0);\n\
+                 }}",
+                if quad_ops {
+                    "h + 4.0 * dFdx(h) + 2.0 * dFdy(h)"
+                } else {
+                    "h"
+                }
+            ),
+        );
+        let (w, h) = (150u32, 130u32);
+        let draw = |quads: bool, deferred: bool, threads: usize| {
+            let mut fb = Framebuffer::new(w, h, ColorFormat::Rgba8, true, false);
+            fb.clear_color(&[0], [0.1, 0.2, 0.3, 1.0], [true; 4], None);
+            fb.clear_depth(1.0, true, None);
+            let state = PipelineState {
+                viewport: Rect::new(0, 0, w as i32, h as i32),
+                depth_test: Some(CompareFunc::Less),
+                ..PipelineState::default()
+            };
+            let mut attribs = SceneAttribs::for_kernel(&vs);
+            if quads {
+                attribs.mode = Mode::Quads;
+            }
+            let mut rnd = unit_floats(777);
+            for i in 0..300 {
+                // Centre and radius in pixels; corners at a random angle,
+                // inside the window (the clipper would cut a quad as one
+                // polygon and its triangles apart, which interpolates the
+                // varying quads differently).
+                let (cx, cy, r) = (26.0 + rnd() * 98.0, 26.0 + rnd() * 78.0, 1.5 + 10.5 * rnd());
+                let (z, angle) = (0.2 + 0.6 * rnd(), [0.0, rnd() * 6.3][i % 2]);
+                let corner = |k: usize| {
+                    let a = angle + std::f32::consts::FRAC_PI_2 * k as f32;
+                    let (x, y) = (cx + r * 1.5 * a.cos(), cy + r * 1.5 * a.sin());
+                    // Every fifth quad: a varying (`t`, from w) that differs.
+                    let clip_w = if i % 5 == 0 {
+                        1.0 + 0.001 * k as f32
+                    } else {
+                        1.0
+                    };
+                    let ndc = |v: f32, size: u32| 2.0 * v / size as f32 - 1.0;
+                    [ndc(x, w), ndc(y, h), 0.0, 1.0].map(|c| c * clip_w)
+                };
+                let order: &[usize] = match quads {
+                    true => &[0, 1, 2, 3],
+                    false => &[0, 1, 2, 0, 2, 3],
+                };
+                for &k in order {
+                    attribs.pos.push(corner(k));
+                    attribs.col.push([cx, cy, r, z]);
+                }
+            }
+            let straight = Straightforward(&fs);
+            let stage: &dyn crate::ShaderStage = if deferred { &fs } else { &straight };
+            let units = TextureUnits::default();
+            attribs
+                .draw(
+                    &crate::Workers::new(threads),
+                    &mut fb,
+                    &state,
+                    (&vs, stage),
+                    (&[], &units),
+                )
+                .unwrap();
+            (
+                fb.read_pixels_u8(0, 0, 0, w, h),
+                fb.read_depth(0, 0, w, h),
+                fb.samples_passed,
+            )
+        };
+        let want = draw(false, false, 1);
+        let distinct: std::collections::BTreeSet<[u8; 4]> = want.0.iter().copied().collect();
+        assert!(distinct.len() > 500, "{} colours", distinct.len());
+        for deferred in [false, true] {
+            for threads in [1, 2] {
+                let before = crate::setup::QUADRILATERALS.load(Relaxed);
+                let got = draw(true, deferred, threads);
+                let merged = crate::setup::QUADRILATERALS.load(Relaxed) - before;
+                assert!(merged >= 240, "{merged} quadrilaterals");
+                assert!(
+                    want.0 == got.0,
+                    "colours, quad_ops {quad_ops}, deferred {deferred}, {threads} threads"
+                );
+                assert!(
+                    want.1 == got.1,
+                    "depths, quad_ops {quad_ops}, deferred {deferred}, {threads} threads"
+                );
+                assert_eq!(
+                    want.2, got.2,
+                    "samples, quad_ops {quad_ops}, deferred {deferred}"
+                );
+            }
+        }
+    }
+}

@@ -58,8 +58,14 @@
 //! the workers, instead of per primitive. The set-up chunks' arrays and the vertex
 //! outputs are kept by the [`Workers`] for its next draws (up to 256 MiB),
 //! so a steady stream of draws does not pay page faults on fresh memory.
+//! A quad (or a clipped polygon of four corners) that is strictly convex
+//! and whose interpolated values are the same bits at its four vertices
+//! (billboards: sphere impostors) is set up as one primitive of four
+//! edges instead of its fan's two triangles, covering exactly their
+//! pixels with the same (constant) planes (`Setup::one_quadrilateral`,
+//! `rasterize::Shape::quadrilateral_snapped`).
 //! Triangle coverage steps integer edge forms (exactly the edge function
-//! values, four pixels and three edges per 2×2 quad, kept in vector
+//! values, four pixels and three edges (four for a quadrilateral) per 2×2 quad, kept in vector
 //! registers, a row ending at the first quad an edge rules out for the
 //! rest of the row) into a buffer reused per tile; a quad's window z
 //! (from its f64 plane) is computed only when something reads it (a depth

@@ -95,6 +95,16 @@ pub(crate) enum Shape {
         /// +1 when counter-clockwise in window space, −1 otherwise.
         sign: i64,
     },
+    /// A strictly convex quadrilateral covering exactly the pixels of its
+    /// fan's two triangles (vertices 0, 1, 2 and 0, 2, 3): see
+    /// [`Shape::quadrilateral_snapped`]. Its planes are its first
+    /// triangle's.
+    Quadrilateral {
+        /// Fixed-point window positions (below [`FIXED_LIMIT`] in
+        /// magnitude: i32 keeps the shape as small as a triangle).
+        p: [[i32; 2]; 4],
+        sign: i32,
+    },
     Line {
         v: [WinXy; 2],
         width: i64,
@@ -108,19 +118,46 @@ pub(crate) enum Shape {
     },
 }
 
-/// Edge k of a triangle: from vertex k+1 to vertex k+2 (opposite vertex k).
-fn edge(p: &[(i64, i64); 3], k: usize, x: i64, y: i64) -> i64 {
-    let a = p[(k + 1) % 3];
-    let b = p[(k + 2) % 3];
+/// The ends of edge k of a triangle: from vertex k+1 to vertex k+2
+/// (opposite vertex k).
+fn ends(p: &[(i64, i64); 3], k: usize) -> ((i64, i64), (i64, i64)) {
+    (p[(k + 1) % 3], p[(k + 2) % 3])
+}
+
+/// The edge function of the edge from `a` to `b` at `(x, y)`: twice the
+/// signed area of `a`, `b`, `(x, y)`.
+fn edge_at((a, b): ((i64, i64), (i64, i64)), x: i64, y: i64) -> i64 {
     (b.0 - a.0) * (y - a.1) - (b.1 - a.1) * (x - a.0)
 }
 
-/// Bottom-left rule for edge k of a triangle of orientation `sign`.
-fn owns_edge(p: &[(i64, i64); 3], k: usize, sign: i64) -> bool {
-    let a = p[(k + 1) % 3];
-    let b = p[(k + 2) % 3];
+/// The pixels whose centers lie within the bounding box of the corners
+/// `p` (fixed point).
+fn corner_bounds(p: &[(i64, i64)]) -> PixelRect {
+    let minx = p.iter().map(|q| q.0).min().unwrap_or(0);
+    let maxx = p.iter().map(|q| q.0).max().unwrap_or(0);
+    let miny = p.iter().map(|q| q.1).min().unwrap_or(0);
+    let maxy = p.iter().map(|q| q.1).max().unwrap_or(0);
+    let lo = |m: i64| (m - HALF + ONE - 1).div_euclid(ONE);
+    let hi = |m: i64| (m - HALF).div_euclid(ONE) + 1;
+    (lo(minx), lo(miny), hi(maxx), hi(maxy))
+}
+
+/// Edge k of a triangle ([`ends`]).
+fn edge(p: &[(i64, i64); 3], k: usize, x: i64, y: i64) -> i64 {
+    edge_at(ends(p, k), x, y)
+}
+
+/// Bottom-left rule for the edge from `a` to `b` of a polygon of
+/// orientation `sign`.
+fn owns((a, b): ((i64, i64), (i64, i64)), sign: i64) -> bool {
     let (dx, dy) = (sign * (b.0 - a.0), sign * (b.1 - a.1));
     dy < 0 || (dy == 0 && dx > 0)
+}
+
+/// Bottom-left rule for edge k of a triangle of orientation `sign`.
+#[cfg(test)]
+fn owns_edge(p: &[(i64, i64); 3], k: usize, sign: i64) -> bool {
+    owns(ends(p, k), sign)
 }
 
 /// A window coordinate in fixed point: `c · ONE` rounded half away from
@@ -176,6 +213,44 @@ impl Shape {
         })
     }
 
+    /// The quadrilateral of vertices `p` (fixed point, [`snap`]) as one
+    /// shape, when it covers exactly the pixels of its fan's two
+    /// triangles, (0, 1, 2) and (0, 2, 3): when it is strictly convex
+    /// (every corner turns the same way). Then a pixel centre strictly on
+    /// one side of the diagonal is in that side's triangle exactly when
+    /// it is inside the four outer edges (the triangle's third outer
+    /// edge holds it strictly), one on the diagonal between its ends is
+    /// owned by exactly one triangle and lies strictly inside the outer
+    /// edges, and an outer edge's own pixels follow the same rule in
+    /// both. At an end of the diagonal, where two outer edges meet, the
+    /// bottom-left rule owns a half-turn of directions, and the diagonal
+    /// leaves the corner within its angle (under a half-turn): when only
+    /// the edge leaving the corner is owned the diagonal is owned
+    /// leaving it too, so the triangle that tests that edge does not own
+    /// the diagonal, and likewise for the arriving edge; the triangles
+    /// then cover the corner exactly when both outer edges are owned,
+    /// as the quadrilateral does. `None` otherwise: the caller sets up
+    /// the two triangles.
+    pub fn quadrilateral_snapped(p: [(i64, i64); 4]) -> Option<Shape> {
+        // Twice the signed area of the corner at vertex k + 1.
+        let turn = |k: usize| {
+            let c = p[(k + 2) % 4];
+            edge_at((p[k], p[(k + 1) % 4]), c.0, c.1).signum()
+        };
+        let sign = turn(0);
+        if sign == 0 || (1..4).any(|k| turn(k) != sign) {
+            return None;
+        }
+        let mut q = [[0i32; 2]; 4];
+        for (q, &(x, y)) in q.iter_mut().zip(&p) {
+            *q = [i32::try_from(x).ok()?, i32::try_from(y).ok()?];
+        }
+        Some(Shape::Quadrilateral {
+            p: q,
+            sign: sign as i32,
+        })
+    }
+
     pub fn line(v: [WinVertex; 2], width: f32) -> Shape {
         let w = if width.is_nan() {
             1.0
@@ -218,16 +293,8 @@ impl Shape {
     #[inline]
     pub fn bounds(&self) -> PixelRect {
         match self {
-            Shape::Triangle { p, .. } => {
-                let minx = p.iter().map(|q| q.0).min().unwrap_or(0);
-                let maxx = p.iter().map(|q| q.0).max().unwrap_or(0);
-                let miny = p.iter().map(|q| q.1).min().unwrap_or(0);
-                let maxy = p.iter().map(|q| q.1).max().unwrap_or(0);
-                // Pixels whose centers lie in [min, max].
-                let lo = |m: i64| (m - HALF + ONE - 1).div_euclid(ONE);
-                let hi = |m: i64| (m - HALF).div_euclid(ONE) + 1;
-                (lo(minx), lo(miny), hi(maxx), hi(maxy))
-            }
+            Shape::Triangle { p, .. } => corner_bounds(p),
+            Shape::Quadrilateral { p, .. } => corner_bounds(&corners(p)),
             Shape::Line { v, width } => {
                 let pad = width / 2 + 2;
                 let minx = v[0].x.min(v[1].x).floor() as i64 - pad;
@@ -271,7 +338,10 @@ impl Shape {
             return;
         }
         match self {
-            Shape::Triangle { p, sign, .. } => triangle_quads(p, *sign, area, out),
+            Shape::Triangle { p, sign } => quads_list(&triangle_edges(p, *sign), area, out),
+            Shape::Quadrilateral { p, sign } => {
+                quads_list(&quadrilateral_edges(p, *sign), area, out)
+            }
             _ => self.other_quads_into(area, out),
         }
     }
@@ -280,7 +350,7 @@ impl Shape {
     /// the clip rectangle (not empty).
     fn other_quads_into(&self, r: PixelRect, out: &mut Vec<(i64, i64, u8)>) {
         match self {
-            Shape::Triangle { .. } => {}
+            Shape::Triangle { .. } | Shape::Quadrilateral { .. } => {}
             Shape::Point { .. } => {
                 for_each_quad(r, |qx, qy| {
                     let mut mask = 0u8;
@@ -356,21 +426,16 @@ impl Shape {
     /// triangle its exact integer edge forms times one over twice its
     /// area (so the barycentrics of the coverage's snapped vertices: set-up
     /// uses them only when [`Basis::of_triangle`] finds no area in the
-    /// unsnapped positions); for a line the parameter `t` of GL 2.1 eq.
-    /// 3.1 of each pixel center (the projection onto the segment); zeros
-    /// for a point.
+    /// unsnapped positions), for a quadrilateral its first triangle's;
+    /// for a line the parameter `t` of GL 2.1 eq. 3.1 of each pixel center
+    /// (the projection onto the segment); zeros for a point.
     #[inline]
     pub fn basis(&self, (x0, y0): (i64, i64)) -> Basis {
         match self {
-            Shape::Triangle { p, sign } => {
-                // 1 / twice the area in fixed-point units² (positive).
-                let inv_area2 = 1.0 / edge(p, 0, p[0].0, p[0].1).unsigned_abs() as f64;
-                let e = edge_forms(p, *sign, (x0, y0));
-                let b = |j: usize| {
-                    let (c, dx, dy) = e[j];
-                    [c as f64, dx as f64, dy as f64].map(|v| v * inv_area2)
-                };
-                Basis { b: [b(1), b(2)] }
+            Shape::Triangle { p, sign } => triangle_basis(p, *sign, (x0, y0)),
+            Shape::Quadrilateral { p, sign } => {
+                let c = corners(p);
+                triangle_basis(&[c[0], c[1], c[2]], *sign as i64, (x0, y0))
             }
             Shape::Line { v, .. } => {
                 // GL 2.1 eq. 3.1: t = (p - pa)·(pb - pa) / |pb - pa|².
@@ -399,25 +464,34 @@ impl Shape {
         quads: &mut Vec<(i64, i64, u8)>,
         mut f: impl FnMut(i64, i64, u8),
     ) {
-        match self {
-            Shape::Triangle { p, sign, .. } => walk_in(
-                (p, *sign),
-                area,
-                #[inline(always)]
-                |qx, qy, mask, _| {
-                    if mask != 0 {
-                        f(qx, qy, mask);
-                    }
-                    0
-                },
-            ),
-            _ => {
-                self.quads_into(area, quads);
-                for &(qx, qy, mask) in quads.iter() {
+        let walked = self.walk(
+            area,
+            #[inline(always)]
+            |qx, qy, mask, _| {
+                if mask != 0 {
                     f(qx, qy, mask);
                 }
+                0
+            },
+        );
+        if !walked {
+            self.quads_into(area, quads);
+            for &(qx, qy, mask) in quads.iter() {
+                f(qx, qy, mask);
             }
         }
+    }
+
+    /// [`walk_in`] of a triangle or a quadrilateral over `area`: false
+    /// (nothing done) for the other shapes.
+    #[inline(always)]
+    fn walk(&self, area: PixelRect, f: impl FnMut(i64, i64, u8, &WalkQuad) -> i64) -> bool {
+        match self {
+            Shape::Triangle { p, sign } => walk_in(&triangle_edges(p, *sign), area, f),
+            Shape::Quadrilateral { p, sign } => walk_in(&quadrilateral_edges(p, *sign), area, f),
+            _ => return false,
+        }
+        true
     }
 
     /// [`Shape::quads_into`], and with `strips` a triangle's four whole
@@ -427,12 +501,11 @@ impl Shape {
     /// followed by the quad after its fourth).
     #[inline(always)]
     pub fn quads_into_strips(&self, area: PixelRect, out: &mut Vec<(i64, i64, u8)>, strips: bool) {
-        let (true, Shape::Triangle { p, sign, .. }) = (strips, self) else {
+        if !strips || !matches!(self, Shape::Triangle { .. } | Shape::Quadrilateral { .. }) {
             return self.quads_into(area, out);
-        };
+        }
         out.clear();
-        walk_in(
-            (p, *sign),
+        self.walk(
             area,
             #[inline(always)]
             |qx, qy, mask, walk| {
@@ -498,18 +571,38 @@ fn edge_forms(p: &[(i64, i64); 3], sign: i64, (qx, qy): (i64, i64)) -> [(i64, i6
     })
 }
 
-/// The covered quads of a triangle inside `r` (non-empty, within the
-/// primitive's bounds), row-major ([`triangle_quads_each`]).
+/// [`Shape::basis`] of a triangle.
+#[inline]
+fn triangle_basis(p: &[(i64, i64); 3], sign: i64, (x0, y0): (i64, i64)) -> Basis {
+    // 1 / twice the area in fixed-point units² (positive).
+    let inv_area2 = 1.0 / edge(p, 0, p[0].0, p[0].1).unsigned_abs() as f64;
+    let e = edge_forms(p, sign, (x0, y0));
+    let b = |j: usize| {
+        let (c, dx, dy) = e[j];
+        [c as f64, dx as f64, dy as f64].map(|v| v * inv_area2)
+    };
+    Basis { b: [b(1), b(2)] }
+}
+
+/// The corners of a [`Shape::Quadrilateral`] as the other shapes keep
+/// them.
 #[inline(always)]
-fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i64, i64, u8)>) {
+fn corners(p: &[[i32; 2]; 4]) -> [(i64, i64); 4] {
+    p.map(|[x, y]| (i64::from(x), i64::from(y)))
+}
+
+/// The covered quads of a polygon of edges `edges` ([`walk_edges`])
+/// inside `r` (non-empty, within the primitive's bounds), row-major
+/// ([`polygon_quads_each`]).
+#[inline(always)]
+fn quads_list<const E: usize>(edges: &[[i64; E]; 4], r: PixelRect, out: &mut Vec<(i64, i64, u8)>) {
     // The row's quads are written in place without a branch on their
     // coverage (which does not predict at a triangle's edges): each is
     // stored at the end, which moves past it only when it covers a pixel;
     // the slot is made first and an unused one dropped at the end.
     let mut n = out.len();
-    triangle_quads_each(
-        p,
-        sign,
+    polygon_quads_each(
+        edges,
         r,
         #[inline(always)]
         |qx, qy, mask, _| {
@@ -525,20 +618,21 @@ fn triangle_quads(p: &[(i64, i64); 3], sign: i64, r: PixelRect, out: &mut Vec<(i
     out.truncate(n);
 }
 
-/// [`triangle_quads_each`] of a triangle `(p, sign)` over `area` (inside
-/// its bounds; nothing when empty).
+/// [`polygon_quads_each`] of a polygon of edges `edges` over `area`
+/// (inside its bounds; nothing when empty).
 #[inline(always)]
-fn walk_in(
-    (p, sign): (&[(i64, i64); 3], i64),
+fn walk_in<const E: usize>(
+    edges: &[[i64; E]; 4],
     area: PixelRect,
     f: impl FnMut(i64, i64, u8, &WalkQuad) -> i64,
 ) {
     if area.0 < area.2 && area.1 < area.3 {
-        triangle_quads_each(p, sign, area, f);
+        polygon_quads_each(edges, area, f);
     }
 }
 
-/// Visits the quads of a triangle inside `r` (non-empty, within the
+/// Visits the quads of a convex polygon (a triangle or a
+/// quadrilateral) of edges `E` inside `r` (non-empty, within the
 /// primitive's bounds), row-major: `f(qx, qy, mask, walk)` with the pixels
 /// covered (mask bit `(y - qy) * 2 + (x - qx)`; every quad with a pixel
 /// covered is visited, some without any: callers skip a zero mask),
@@ -551,38 +645,52 @@ fn walk_in(
 /// lanes ([`narrow_quads_each`]); the others by [`wide_quads_each`]'s
 /// steps.
 #[inline(always)]
-fn triangle_quads_each(
-    p: &[(i64, i64); 3],
-    sign: i64,
+fn polygon_quads_each<const E: usize>(
+    [a, b, c, threshold]: &[[i64; E]; 4],
     r: PixelRect,
     mut f: impl FnMut(i64, i64, u8, &WalkQuad) -> i64,
 ) {
-    let [a, b, c, threshold] = walk_edges(p, sign);
-    let edges = (&a, &b, &c, &threshold);
+    let edges = (a, b, c, threshold);
     if !narrow_quads_each(edges, r, &mut f) {
         wide_quads_each(edges, r, f);
     }
 }
 
-/// Per edge k of a triangle `(p, sign)`, its integer linear form `a·x +
-/// b·y + c` at pixel centers (the orientation times [`edge`]) and its
-/// threshold (0 on an edge the triangle owns, else 1): `[a, b, c,
-/// threshold]`.
+/// Per edge k from `ends[k].0` to `ends[k].1` of a convex polygon of
+/// orientation `sign`, its integer linear form `a·x + b·y + c` at pixel
+/// centers (the orientation times [`edge_at`]) and its threshold (0 on
+/// an edge the polygon owns, else 1): `[a, b, c, threshold]`.
 #[inline(always)]
-fn walk_edges(p: &[(i64, i64); 3], sign: i64) -> [[i64; 3]; 4] {
-    let mut e = [[0i64; 3]; 4];
-    for k in 0..3 {
-        let (pa, pb) = (p[(k + 1) % 3], p[(k + 2) % 3]);
+fn walk_edges<const E: usize>(ends: [((i64, i64), (i64, i64)); E], sign: i64) -> [[i64; E]; 4] {
+    let mut e = [[0i64; E]; 4];
+    for (k, &(pa, pb)) in ends.iter().enumerate() {
         let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
         e[0][k] = -sign * ey * ONE;
         e[1][k] = sign * ex * ONE;
         e[2][k] = sign * (ex * (HALF - pa.1) - ey * (HALF - pa.0));
-        e[3][k] = 1 - owns_edge(p, k, sign) as i64;
+        e[3][k] = 1 - owns((pa, pb), sign) as i64;
     }
     e
 }
 
-/// [`triangle_quads_each`] by stepping from quad to quad (any area; the
+/// [`walk_edges`] of a triangle (edge k opposite vertex k, [`ends`]).
+#[inline(always)]
+fn triangle_edges(p: &[(i64, i64); 3], sign: i64) -> [[i64; 3]; 4] {
+    walk_edges(std::array::from_fn(|k| ends(p, k)), sign)
+}
+
+/// [`walk_edges`] of a [`Shape::Quadrilateral`] (edge k from vertex k to
+/// vertex k + 1).
+#[inline(always)]
+fn quadrilateral_edges(p: &[[i32; 2]; 4], sign: i32) -> [[i64; 4]; 4] {
+    let c = corners(p);
+    walk_edges(
+        std::array::from_fn(|k| (c[k], c[(k + 1) % 4])),
+        i64::from(sign),
+    )
+}
+
+/// [`polygon_quads_each`] by stepping from quad to quad (any area; the
 /// edges as [`narrow_quads_each`] takes them). The walk keeps each edge's
 /// value minus its threshold at a quad's four pixels in a [`Quad4`]
 /// (vector registers on x86-64), so that a pixel is outside an edge
@@ -591,23 +699,23 @@ fn walk_edges(p: &[(i64, i64); 3], sign: i64) -> [[i64; 3]; 4] {
 /// row ends as soon as one edge that only decreases to the right is below
 /// its threshold on the whole quad.
 #[inline(always)]
-fn wide_quads_each(
-    (a, b, c, threshold): (&[i64; 3], &[i64; 3], &[i64; 3], &[i64; 3]),
+fn wide_quads_each<const E: usize>(
+    (a, b, c, threshold): (&[i64; E], &[i64; E], &[i64; E], &[i64; E]),
     r: PixelRect,
     mut f: impl FnMut(i64, i64, u8, &WalkQuad) -> i64,
 ) {
     // Pixel i of a quad from its first: (i & 1, i >> 1).
-    let offset: [[i64; 4]; 3] = std::array::from_fn(|k| [0, a[k], b[k], a[k] + b[k]]);
-    let step: [Quad4; 3] = std::array::from_fn(|k| Quad4::splat(2 * a[k]));
+    let offset: [[i64; 4]; E] = std::array::from_fn(|k| [0, a[k], b[k], a[k] + b[k]]);
+    let step: [Quad4; E] = std::array::from_fn(|k| Quad4::splat(2 * a[k]));
     // The edges that only decrease to the right (bit k); the others
     // grow.
-    let decreasing = (0..3).fold(0u8, |m, k| m | (u8::from(a[k] <= 0) << k));
+    let decreasing = (0..E).fold(0u8, |m, k| m | (u8::from(a[k] <= 0) << k));
     let (x0, y0) = (r.0 & !1, r.1 & !1);
     let mut qy = y0;
     while qy < r.3 {
         // Pixel rows of the quad row inside r: bits 0–1 and 2–3.
         let rows = (if qy >= r.1 { 0b0011u8 } else { 0 }) | (if qy + 1 < r.3 { 0b1100 } else { 0 });
-        let mut over: [Quad4; 3] = std::array::from_fn(|k| {
+        let mut over: [Quad4; E] = std::array::from_fn(|k| {
             let g = a[k] * x0 + b[k] * qy + c[k] - threshold[k];
             Quad4::new(offset[k].map(|o| g + o))
         });
@@ -616,7 +724,7 @@ fn wide_quads_each(
         // outside a growing edge are passed over at once (quads that
         // cover nothing; narrow areas have few, not worth the look).
         let ahead = match r.2 - x0 >= WIDE_ROW {
-            true => row_start(&over, a, !decreasing & 0b111),
+            true => row_start(&over, a, !decreasing),
             false => 0,
         };
         if ahead > 0 {
@@ -631,16 +739,16 @@ fn wide_quads_each(
                 (if qx >= r.0 { 0b0101u8 } else { 0 }) | (if qx + 1 < r.2 { 0b1010 } else { 0 });
             // Per edge, the pixels where it is below its threshold.
             let outside = over.map(Quad4::negative);
-            let mask = !(outside[0] | outside[1] | outside[2]) & rows & cols;
+            let mask = !outside.iter().fold(0, |m, o| m | o) & rows & cols;
             // Outside on the whole quad: nothing covered here or further
             // right.
-            let whole = (0..3).fold(0u8, |m, k| m | (u8::from(outside[k] == 0xf) << k));
+            let whole = (0..E).fold(0u8, |m, k| m | (u8::from(outside[k] == 0xf) << k));
             if whole & decreasing != 0 {
                 break;
             }
             let walk = WalkQuad {
-                over: Some(&over),
-                a,
+                over: Some(&over[..]),
+                a: &a[..],
                 qx,
                 x_end: r.2,
             };
@@ -669,7 +777,7 @@ fn wide_quads_each(
 /// [`narrow_quads_each`] takes: two groups of four quads a row.
 const NARROW: i64 = 16;
 
-/// [`triangle_quads_each`] over an area at most [`NARROW`] pixels wide
+/// [`polygon_quads_each`] over an area at most [`NARROW`] pixels wide
 /// whose edge values (less thresholds) fit in i32 lanes: true when it ran,
 /// false (nothing done) otherwise. Every quad of a quad row is evaluated,
 /// four at a time and without branches: a pixel is outside an edge where
@@ -679,8 +787,8 @@ const NARROW: i64 = 16;
 /// pixels covered). There are no strips here ([`WalkQuad::whole_strips`]
 /// is 0).
 #[inline(always)]
-fn narrow_quads_each(
-    (a, b, c, threshold): (&[i64; 3], &[i64; 3], &[i64; 3], &[i64; 3]),
+fn narrow_quads_each<const E: usize>(
+    (a, b, c, threshold): (&[i64; E], &[i64; E], &[i64; E], &[i64; E]),
     r: PixelRect,
     f: &mut impl FnMut(i64, i64, u8, &WalkQuad) -> i64,
 ) -> bool {
@@ -692,8 +800,8 @@ fn narrow_quads_each(
     // Groups of four quads (eight pixel columns) a row; whole quad rows.
     let groups = if width > NARROW / 2 { 2 } else { 1 };
     let rows = (r.3 - y0 + 1) & !1;
-    let mut g = [0i64; 3];
-    for k in 0..3 {
+    let mut g = [0i64; E];
+    for k in 0..E {
         g[k] = a[k] * x0 + b[k] * y0 + c[k] - threshold[k];
     }
     // Every value reached (one step past the last column and row
@@ -704,15 +812,15 @@ fn narrow_quads_each(
     // magnitude when x + 2^n, as unsigned, is below 2^(n + 1), and an OR
     // of such values is below 2^(n + 1) exactly when each is.
     let near = |x: i64, n: u32| (x.wrapping_add(1 << n)) as u64;
-    let firsts = near(g[0], 29) | near(g[1], 29) | near(g[2], 29);
-    let steps = (0..3).fold(0u64, |m, k| m | near(a[k], 22) | near(b[k], 22));
+    let firsts = g.iter().fold(0u64, |m, &g| m | near(g, 29));
+    let steps = (0..E).fold(0u64, |m, k| m | near(a[k], 22) | near(b[k], 22));
     if firsts >= 1 << 30 || steps >= 1 << 23 || rows > 256 {
         return false;
     }
-    let mut first = [Lanes4::splat(0); 3];
-    let mut right = [Lanes4::splat(0); 3];
-    let mut down = [Lanes4::splat(0); 3];
-    for k in 0..3 {
+    let mut first = [Lanes4::splat(0); E];
+    let mut right = [Lanes4::splat(0); E];
+    let mut down = [Lanes4::splat(0); E];
+    for k in 0..E {
         let (g, a, b) = (g[k] as i32, a[k] as i32, b[k] as i32);
         // Pixel i of a quad from its first: (i & 1, i >> 1).
         first[k] = Lanes4::new([g, g + a, g + b, g + a + b]);
@@ -730,7 +838,7 @@ fn narrow_quads_each(
     let in_columns = spread | (spread << 2);
     let none = WalkQuad {
         over: None,
-        a,
+        a: &a[..],
         qx: x0,
         x_end: x0,
     };
@@ -741,7 +849,7 @@ fn narrow_quads_each(
         let mut outside = 0u32;
         let mut v = row;
         for q in 0..4 * groups {
-            let m = v[0].or(v[1]).or(v[2]).negative();
+            let m = v.iter().fold(Lanes4::splat(0), |m, &v| m.or(v)).negative();
             outside |= u32::from(m) << (4 * q);
             for (v, s) in v.iter_mut().zip(&right) {
                 *v = v.add(*s);
@@ -776,7 +884,7 @@ fn narrow_quads_each(
     true
 }
 
-/// The width in pixels from which [`triangle_quads_each`] looks for the
+/// The width in pixels from which [`polygon_quads_each`] looks for the
 /// quads a row starts with that cover nothing ([`row_start`]).
 const WIDE_ROW: i64 = 16;
 
@@ -785,9 +893,9 @@ const WIDE_ROW: i64 = 16;
 /// 0`): quad j further right is outside edge k while its largest value
 /// plus `2·a[k]·j` is negative, that is for j < ⌈−top / (2·a[k])⌉.
 #[inline(always)]
-fn row_start(over: &[Quad4; 3], a: &[i64; 3], growing: u8) -> i64 {
+fn row_start<const E: usize>(over: &[Quad4; E], a: &[i64; E], growing: u8) -> i64 {
     let mut ahead = 0i64;
-    for k in 0..3 {
+    for k in 0..E {
         if growing & (1 << k) == 0 {
             continue;
         }
@@ -803,13 +911,13 @@ fn row_start(over: &[Quad4; 3], a: &[i64; 3], growing: u8) -> i64 {
     ahead
 }
 
-/// A quad of [`triangle_quads_each`]'s walk, for a caller that takes
+/// A quad of [`polygon_quads_each`]'s walk, for a caller that takes
 /// runs of whole quads at once ([`Shape::quads_into_strips`]).
 pub(crate) struct WalkQuad<'a> {
-    /// The edge values less thresholds at the quad's pixels (`None` where
-    /// the walk takes no strips).
-    over: Option<&'a [Quad4; 3]>,
-    a: &'a [i64; 3],
+    /// Per edge, its values less thresholds at the quad's pixels (`None`
+    /// where the walk takes no strips).
+    over: Option<&'a [Quad4]>,
+    a: &'a [i64],
     qx: i64,
     /// The clip rectangle's right end.
     x_end: i64,
@@ -830,7 +938,7 @@ impl WalkQuad<'_> {
             return 0;
         };
         // Per decreasing edge, its least value and its step per quad.
-        let mut least = [(i64::MAX, 0i64); 3];
+        let mut least = [(i64::MAX, 0i64); 4];
         for ((l, o), &a) in least.iter_mut().zip(over).zip(self.a) {
             if a < 0 {
                 *l = (o.to_array().into_iter().min().unwrap_or(0), -2 * a);

@@ -20,7 +20,7 @@ use crate::assembly::{first_vertex_provoking, primitive, small_polygon, Assemble
 use crate::clip::{ClipVertex, Planes};
 use crate::framebuffer::{DepthFormat, Framebuffer, DEPTH_MAX};
 use crate::interpolate::{Basis, Plane, PrimPlanes};
-use crate::linkage::{FsLayout, VsLayout};
+use crate::linkage::{FsLayout, VaryingLink, VsLayout};
 use crate::prim::{plane_origin, Prim};
 use crate::probe::Probe;
 use crate::rasterize::{max_depth_slope, snap, vertex_depths, PixelRect, Shape, WinVertex};
@@ -33,6 +33,12 @@ pub const MAX_POINT_SIZE: f32 = 2048.0;
 /// Viewport coordinates are clamped to ±2^19 so window positions fit the
 /// rasterizer's fixed-point range.
 const VIEWPORT_LIMIT: i64 = 1 << 19;
+
+/// Quadrilaterals set up as one primitive ([`Setup::one_quadrilateral`]),
+/// for the tests to see that a scene exercises it.
+#[cfg(test)]
+pub(crate) static QUADRILATERALS: std::sync::atomic::AtomicU64 =
+    std::sync::atomic::AtomicU64::new(0);
 
 /// Turns assembled primitives into set-up [`Prim`]s.
 pub(crate) struct Setup<'a> {
@@ -263,7 +269,7 @@ impl Setup<'_> {
         // A triangle's planes come from its vertices' window positions;
         // coverage from their snapped ones.
         let basis = match (shape, win) {
-            (Shape::Triangle { .. }, [a, b, c]) => {
+            (Shape::Triangle { .. } | Shape::Quadrilateral { .. }, [a, b, c]) => {
                 Basis::of_triangle([(a.x, a.y), (b.x, b.y), (c.x, c.y)], origin)
             }
             _ => None,
@@ -274,17 +280,9 @@ impl Setup<'_> {
         // A line's or a point's missing vertices repeat its last.
         let data = |j: usize| vertices.get(j).or(vertices.last()).copied().unwrap_or(&[]);
         let (d0, d1, d2) = (data(0), data(1), data(2));
-        let flat_colors = self.state.flat_shading;
         for link in &self.fs.links {
-            let src = if back { link.back } else { link.front };
-            let get = |d: &[f32]| src.and_then(|o| d.get(o)).copied().unwrap_or(0.0);
-            // GLSL 1.30 §4.3.7: a qualifier overrides the shade model.
-            let interpolation = match link.interpolation {
-                None if flat_colors && link.color => Interpolation::Flat,
-                None => Interpolation::Smooth,
-                Some(i) => i,
-            };
-            out.planes.push(match interpolation {
+            let get = |d: &[f32]| link_value(link, back, d);
+            out.planes.push(match self.interpolation(link) {
                 Interpolation::Flat => Plane::constant(get(provoking)),
                 Interpolation::Smooth => prim.varying(&basis, [get(d0), get(d1), get(d2)], inv_w),
                 Interpolation::NoPerspective => {
@@ -293,6 +291,68 @@ impl Setup<'_> {
             });
         }
         prim
+    }
+
+    /// How `link` is interpolated: GLSL 1.30 §4.3.7, a qualifier
+    /// overrides the shade model.
+    fn interpolation(&self, link: &VaryingLink) -> Interpolation {
+        match link.interpolation {
+            None if self.state.flat_shading && link.color => Interpolation::Flat,
+            None => Interpolation::Smooth,
+            Some(i) => i,
+        }
+    }
+
+    /// A quadrilateral (`win`, its [`snap`] `fixed` and `data` per
+    /// vertex) as one primitive instead of its fan's two triangles, where
+    /// that gives every pixel the same coverage and values: the shape
+    /// covers the triangles' pixels exactly
+    /// ([`Shape::quadrilateral_snapped`]), and each quantity interpolated
+    /// (window z, 1/w, each varying the fragment stage reads but flat
+    /// ones) is the same bits at the four vertices, so that its plane is
+    /// that constant in either triangle ([`crate::interpolate::Basis::plane`],
+    /// [`PrimPlanes::varying`]). A window z of −0 is left to the
+    /// triangles: a helper pixel left of a plane's origin computes it as
+    /// `−0 + x·0` with x negative, whose sign would follow the origin.
+    /// Not with a probe, whose history names the triangles. Billboards
+    /// (sphere impostors) are such quadrilaterals: one primitive's set-up,
+    /// bins and walks instead of two, and no quad along the diagonal
+    /// shaded twice.
+    fn one_quadrilateral(
+        &self,
+        (win, fixed): (&[WinVertex], &[(i64, i64)]),
+        data: &[&[f32]],
+        back: bool,
+    ) -> Option<Shape> {
+        let ([w0, w1, w2, w3], &[f0, f1, f2, f3], [d0, d1, d2, d3]) = (win, fixed, data) else {
+            return None;
+        };
+        if self.probe.is_some() || w0.z.to_bits() == (-0.0f64).to_bits() {
+            return None;
+        }
+        let same = |v: [f64; 4]| v.iter().all(|x| x.to_bits() == v[0].to_bits());
+        let (z, inv_w) = (
+            [w0, w1, w2, w3].map(|w| w.z),
+            [w0, w1, w2, w3].map(|w| w.inv_w),
+        );
+        if !same(z) || !same(inv_w) {
+            return None;
+        }
+        for link in &self.fs.links {
+            if self.interpolation(link) == Interpolation::Flat {
+                continue;
+            }
+            let v = [d0, d1, d2, d3].map(|d| link_value(link, back, d).to_bits());
+            if v.iter().any(|&x| x != v[0]) {
+                return None;
+            }
+        }
+        let shape = Shape::quadrilateral_snapped([f0, f1, f2, f3]);
+        #[cfg(test)]
+        if shape.is_some() {
+            QUADRILATERALS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        }
+        shape
     }
 
     /// Sets up `shape`, whose vertices are `win` (window positions) and
@@ -537,6 +597,13 @@ impl Setup<'_> {
         };
         match mode {
             PolygonMode::Fill => {
+                if let (Some(shape), [d0, d1, d2, _]) =
+                    (self.one_quadrilateral((win, fixed), data, back), data)
+                {
+                    let first = [win[0], win[1], win[2]];
+                    self.push(out, (shape, &first), back, z_offset, &[d0, d1, d2], prov);
+                    return;
+                }
                 for i in 1..win.len() - 1 {
                     let Some(shape) = fan(i) else {
                         continue;
@@ -563,4 +630,11 @@ impl Setup<'_> {
             }
         }
     }
+}
+
+/// The value `link` reads from a vertex's `data` (its back-face source
+/// for a back-facing primitive; 0 where it has none).
+fn link_value(link: &VaryingLink, back: bool, data: &[f32]) -> f32 {
+    let src = if back { link.back } else { link.front };
+    src.and_then(|o| data.get(o)).copied().unwrap_or(0.0)
 }

@@ -879,7 +879,10 @@ impl<'a> FragmentStage<'a> {
         let prim = strip[0].prim?;
         if self.layout.point_coord.is_some()
             || self.layout.primitive_id.is_some()
-            || !matches!(prim.shape, Shape::Triangle { .. })
+            || !matches!(
+                prim.shape,
+                Shape::Triangle { .. } | Shape::Quadrilateral { .. }
+            )
         {
             return None;
         }

@@ -88,7 +88,7 @@ fn narrow_areas_cover_as_the_walk_does() {
         if area.0 >= area.2 || area.1 >= area.3 {
             continue;
         }
-        let [a, b, c, threshold] = walk_edges(&p, sign);
+        let [a, b, c, threshold] = triangle_edges(&p, sign);
         let edges = (&a, &b, &c, &threshold);
         let mut narrow = Vec::new();
         let took = narrow_quads_each(edges, area, &mut |x, y, m, w: &WalkQuad| {
@@ -489,4 +489,138 @@ fn point_squares() {
     assert_eq!(p.bounds(), (3, 3, 5, 5));
     assert_eq!(p.point_coord(3, 4, false), (0.25, 0.25));
     assert_eq!(p.point_coord(3, 4, true), (0.25, 0.75));
+}
+
+/// The quads of `shapes` inside `clip`, masks of one quad position
+/// joined, each pixel covered by one shape at most (asserted).
+fn union_quads(shapes: &[Shape], clip: PixelRect) -> Vec<(i64, i64, u8)> {
+    let mut all: Vec<(i64, i64, u8)> = shapes.iter().flat_map(|s| s.quads(clip)).collect();
+    all.sort_by_key(|&(x, y, _)| (y, x));
+    let mut out: Vec<(i64, i64, u8)> = Vec::new();
+    for (x, y, m) in all {
+        match out.last_mut() {
+            Some(last) if (last.0, last.1) == (x, y) => {
+                assert_eq!(last.2 & m, 0, "a pixel of ({x}, {y}) covered twice");
+                last.2 |= m;
+            }
+            _ => out.push((x, y, m)),
+        }
+    }
+    out
+}
+
+/// `count` random quadrilaterals in fixed point: convex ones (corners at
+/// increasing angles around a centre), billboards (axis-aligned
+/// squares), parallelograms and a few that are not convex, from under
+/// a pixel to a few hundred across; every third snapped to pixel
+/// centres or half-pixel positions, so that corners and edges pass
+/// through pixel centres.
+fn random_quadrilaterals(seed: u64, count: usize) -> Vec<[(i64, i64); 4]> {
+    let mut state = seed;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % 1_000_000) as f64 / 1_000_000.0
+    };
+    let mut out = Vec::new();
+    for i in 0..count {
+        let size = [1.5, 6.0, 20.0, 90.0, 300.0][i % 5] * (0.5 + next());
+        let (cx, cy) = (next() * 80.0 - 10.0, next() * 80.0 - 10.0);
+        let v: [(f64, f64); 4] = match i % 4 {
+            0 => {
+                let h = size / 2.0;
+                [(-h, -h), (h, -h), (h, h), (-h, h)].map(|(x, y)| (cx + x, cy + y))
+            }
+            1 => {
+                let (ax, ay) = (size * (next() - 0.5), size * (next() - 0.5));
+                let (bx, by) = (size * (next() - 0.5), size * (next() - 0.5));
+                [(0.0, 0.0), (ax, ay), (ax + bx, ay + by), (bx, by)].map(|(x, y)| (cx + x, cy + y))
+            }
+            2 => {
+                let mut angles = [0; 4].map(|_| next() * std::f64::consts::TAU);
+                angles.sort_by(f64::total_cmp);
+                angles.map(|a| {
+                    let r = size * (0.3 + 0.7 * next());
+                    (cx + r * a.cos(), cy + r * a.sin())
+                })
+            }
+            _ => [0; 4].map(|_| (cx + size * next(), cy + size * next())),
+        };
+        let v = match i % 3 {
+            0 => v.map(|(x, y)| (x.floor() + 0.5, y.floor() + 0.5)),
+            1 => v.map(|(x, y)| ((2.0 * x).round() / 2.0, (2.0 * y).round() / 2.0)),
+            _ => v,
+        };
+        out.push(v.map(|(x, y)| snap(&wv(x, y))));
+    }
+    out
+}
+
+/// A quadrilateral taken as one shape covers exactly the pixels of its
+/// fan's two triangles, through every way of walking it, corners on
+/// pixel centres included; those it declines are not strictly convex.
+#[test]
+fn quadrilaterals_cover_their_two_triangles() {
+    let (mut taken, mut strips, mut on_centre) = (0, 0, 0);
+    for p in random_quadrilaterals(0x2545_F491_4F6C_DD1D, 6000) {
+        let fan = [[p[0], p[1], p[2]], [p[0], p[2], p[3]]];
+        let Some(q) = Shape::quadrilateral_snapped(p) else {
+            let turns = (0..4).map(|k| {
+                let c = p[(k + 2) % 4];
+                edge_at((p[k], p[(k + 1) % 4]), c.0, c.1).signum()
+            });
+            assert!(
+                turns.clone().any(|t| t == 0)
+                    || turns.collect::<Vec<_>>().windows(2).any(|w| w[0] != w[1]),
+                "{p:?} declined"
+            );
+            continue;
+        };
+        let triangles: Vec<Shape> = fan
+            .iter()
+            .filter_map(|&t| Shape::triangle_snapped(t))
+            .collect();
+        assert_eq!(triangles.len(), 2, "{p:?}");
+        taken += 1;
+        on_centre += usize::from(
+            p.iter()
+                .any(|&(x, y)| x.rem_euclid(ONE) == HALF && y.rem_euclid(ONE) == HALF),
+        );
+        for clip in [
+            (-20, -20, 400, 400),
+            (0, 0, 64, 64),
+            (3, 5, 17, 10),
+            (-3, 1, 40, 63),
+        ] {
+            let want = union_quads(&triangles, clip);
+            assert_eq!(q.quads(clip), want, "{p:?} in {clip:?}");
+            let area = q.area(clip);
+            let mut scratch = Vec::new();
+            let mut walked = Vec::new();
+            q.quads_each(area, &mut scratch, |x, y, m| walked.push((x, y, m)));
+            assert_eq!(walked, want, "{p:?} walked in {clip:?}");
+            let mut list = Vec::new();
+            q.quads_into_strips(area, &mut list, true);
+            let mut expanded = Vec::new();
+            for &(x, y, m) in &list {
+                if m & STRIP != 0 {
+                    strips += 1;
+                    expanded.extend((0..4).map(|k| (x + 2 * k, y, 0xf)));
+                } else {
+                    expanded.push((x, y, m));
+                }
+            }
+            assert_eq!(expanded, want, "{p:?} in strips in {clip:?}");
+        }
+        // The planes are the first triangle's.
+        assert_eq!(q.basis((3, 4)), triangles[0].basis((3, 4)));
+        assert_eq!(q.bounds(), corner_bounds(&p));
+    }
+    assert!(taken > 2500, "{taken} taken");
+    assert!(
+        on_centre > 500,
+        "{on_centre} with a corner on a pixel centre"
+    );
+    assert!(strips > 1000, "{strips} strips");
 }
