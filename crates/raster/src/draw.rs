@@ -131,7 +131,7 @@ fn draw_vertices(
     textures: &(dyn Textures + Sync),
     probe: Option<&Probe>,
 ) -> Result<(), DrawError> {
-    let set_up = SetUp::new(workers, fb, state, last, fs.interface(), &vertices, probe);
+    let set_up = SetUp::new(workers, fb, state, last, fs, &vertices, probe);
     let stage = set_up.fragment_stage(fb, state, (fs, fs_uniforms), textures, probe);
     if let Some(p) = probe {
         p.set_vertices(&set_up.vs_layout, &vertices.outputs, &vertices.vertex_of);
@@ -173,7 +173,7 @@ impl SetUp {
         fb: &Framebuffer,
         state: &PipelineState,
         last: &crate::ex::Interface,
-        fs: &crate::ex::Interface,
+        fs: &dyn ShaderStage,
         Vertices {
             mode,
             vertex_of,
@@ -183,7 +183,8 @@ impl SetUp {
     ) -> SetUp {
         let (mode, vertex_of, outputs) = (*mode, &vertex_of[..], &outputs[..]);
         let vs_layout = VsLayout::new(last);
-        let fs_layout = FsLayout::new(last, fs, state.two_sided_color);
+        let fs_layout = FsLayout::new(last, fs.interface(), state.two_sided_color)
+            .with_reads(|c| fs.reads_input(c));
         let setup = Setup::new(state, (&vs_layout, &fs_layout), outputs, fb, probe);
         // Shared vertices (indexed meshes): each vertex's outcode and window
         // position once, on the workers, instead of once per primitive using

@@ -58,12 +58,14 @@
 //! the workers, instead of per primitive. The set-up chunks' arrays and the vertex
 //! outputs are kept by the [`Workers`] for its next draws (up to 256 MiB),
 //! so a steady stream of draws does not pay page faults on fresh memory.
-//! A quad (or a clipped polygon of four corners) that is strictly convex
-//! and whose interpolated values are the same bits at its four vertices
-//! (billboards: sphere impostors) is set up as one primitive of four
-//! edges instead of its fan's two triangles, covering exactly their
-//! pixels with the same (constant) planes (`Setup::one_quadrilateral`,
-//! `rasterize::Shape::quadrilateral_snapped`).
+//! A quad (or a clipped polygon of four corners), or two consecutive
+//! triangles of a list, strip or fan sharing an edge, that is strictly
+//! convex and whose values the fragment stage reads are the same bits at
+//! its four vertices (billboards: sphere impostors; window z only where
+//! it is read, gl_FragDepth making it unread) is set up as one primitive
+//! of four edges instead of two triangles, covering exactly their pixels
+//! with the same (constant) planes (`Setup::one_quadrilateral`,
+//! `Setup::triangle_pair`, `rasterize::Shape::quadrilateral_snapped`).
 //! Triangle coverage steps integer edge forms (exactly the edge function
 //! values, four pixels and three edges (four for a quadrilateral) per 2×2 quad, kept in vector
 //! registers, a row ending at the first quad an edge rules out for the

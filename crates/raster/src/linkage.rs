@@ -105,6 +105,9 @@ pub(crate) struct VaryingLink {
     pub interpolation: Option<Interpolation>,
     /// gl_TexCoord[set].component, for point-sprite coordinate replacement.
     pub texcoord: Option<(u32, usize)>,
+    /// Whether the fragment program reads it (every link until
+    /// [`FsLayout::with_reads`] says).
+    pub read: bool,
 }
 
 pub(crate) struct FsLayout {
@@ -123,9 +126,24 @@ pub(crate) struct FsLayout {
     /// the SRC1 blend factors (dual-source blending).
     pub src1_out: Option<usize>,
     pub frag_depth: Option<usize>,
+    /// Whether the fragment program reads gl_FragCoord's z and w (both
+    /// until [`FsLayout::with_reads`] says).
+    pub frag_coord_zw: [bool; 2],
 }
 
 impl FsLayout {
+    /// This layout knowing which input components the fragment program
+    /// reads (`reads`, component by component: `ShaderStage::reads_input`).
+    pub fn with_reads(mut self, reads: impl Fn(usize) -> bool) -> FsLayout {
+        for link in &mut self.links {
+            link.read = reads(link.fs_offset);
+        }
+        self.frag_coord_zw = self
+            .frag_coord
+            .map_or([false; 2], |o| [reads(o + 2), reads(o + 3)]);
+        self
+    }
+
     pub fn new(vs: &Interface, fs: &Interface, two_sided: bool) -> FsLayout {
         let mut links = Vec::new();
         let mut frag_coord = None;
@@ -179,6 +197,7 @@ impl FsLayout {
                             color,
                             interpolation,
                             texcoord: (name == "gl_TexCoord").then_some(((c / 4) as u32, c % 4)),
+                            read: true,
                         });
                     }
                 }
@@ -261,6 +280,7 @@ impl FsLayout {
             frag_depth: find(out, "gl_FragDepth")
                 .filter(|s| s.written)
                 .map(|s| s.offset),
+            frag_coord_zw: [true; 2],
         }
     }
 }

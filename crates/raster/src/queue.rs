@@ -132,7 +132,7 @@ impl DrawQueue {
             fb,
             state,
             last.interface(),
-            fs.shader.interface(),
+            &*fs.shader,
             &vertices,
             None,
         );

@@ -178,7 +178,17 @@ impl Setup<'_> {
         let count = vertex_of.len();
         let v = |i: usize| vertex_of.get(i).map_or(0, |&v| v as usize);
         let first = self.state.provoking_first;
+        let pairs = matches!(
+            mode,
+            Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan
+        );
+        let end = range.end;
+        // The second triangle of a pair set up as one quadrilateral.
+        let mut paired = false;
         for k in range {
+            if std::mem::take(&mut paired) {
+                continue;
+            }
             out.source = k as u32;
             // The assembly names the last-vertex convention's provoking
             // vertex; the first-vertex convention picks another.
@@ -190,6 +200,16 @@ impl Setup<'_> {
                 }
             };
             if probe.is_none() {
+                if pairs && k + 1 < end {
+                    let triangle = |k: usize| small_polygon(mode, k).map(|(vs, _, _)| vs.map(v));
+                    if let (Some([a, b, c, _]), Some([d, e, f, _])) = (triangle(k), triangle(k + 1))
+                    {
+                        paired = self.triangle_pair(out, [a, b, c], [d, e, f]);
+                        if paired {
+                            continue;
+                        }
+                    }
+                }
                 if let Some((vs, n, prov)) = small_polygon(mode, k) {
                     let vs = vs.map(v);
                     self.polygon_at(level, out, &vs[..n], v(provoking(prov)));
@@ -303,13 +323,122 @@ impl Setup<'_> {
         }
     }
 
+    /// Whether a polygon of window vertices `win` (in its order) faces
+    /// back: GL 2.1 §3.5.1 eq. 3.6, the sign of its window-space area.
+    fn back_facing(&self, win: &[WinVertex]) -> bool {
+        let mut area = 0.0f64;
+        for i in 0..win.len() {
+            let j = (i + 1) % win.len();
+            area += win[i].x * win[j].y - win[j].x * win[i].y;
+        }
+        let ccw = area > 0.0;
+        ccw != (self.state.front_face == FrontFace::Ccw)
+    }
+
+    /// Whether the cull state drops a polygon facing back when `back`.
+    fn culled(&self, back: bool) -> bool {
+        match self.state.cull {
+            Some(CullFace::FrontAndBack) => true,
+            Some(CullFace::Front) => !back,
+            Some(CullFace::Back) => back,
+            None => false,
+        }
+    }
+
+    /// Triangles `t0` and `t1` (vertex numbers, each in its own order:
+    /// consecutive triangles of a list, strip or fan) as one
+    /// quadrilateral when they share an edge and
+    /// [`Setup::one_quadrilateral`] takes the four corners around it (a
+    /// billboard drawn as a strip of four vertices, or as two triangles
+    /// of shared indices). Returns true when both are done (set up as one,
+    /// or culled), false to set them up one by one. Only filled, inside
+    /// every clip plane, facing the same way (each triangle's own order
+    /// decides its facing), without a probe and where the fragment stage
+    /// does not read gl_PrimitiveID (which tells the two apart). Flat
+    /// varyings take each triangle's provoking vertex, so they too must
+    /// be the same at the four corners.
+    pub fn triangle_pair(&self, out: &mut Out, t0: [usize; 3], t1: [usize; 3]) -> bool {
+        let fill = self.state.polygon_mode == [PolygonMode::Fill; 2];
+        if !fill || self.probe.is_some() || self.fs.primitive_id.is_some() {
+            return false;
+        }
+        // The shared edge (s0, s1) and the vertex of each triangle off it.
+        let (mut shared, mut n) = ([0usize; 2], 0);
+        let mut u0 = None;
+        for &v in &t0 {
+            match (t1.contains(&v), shared.get_mut(n)) {
+                (true, Some(slot)) => {
+                    *slot = v;
+                    n += 1;
+                }
+                (true, None) => return false,
+                (false, _) => u0 = Some(v),
+            }
+        }
+        let (Some(u0), Some(&u1)) = (u0, t1.iter().find(|v| !t0.contains(v))) else {
+            return false;
+        };
+        if n != 2 || u0 == u1 {
+            return false;
+        }
+        // Around the shared edge as the diagonal from corner 0 to 2.
+        let quad = [shared[0], u1, shared[1], u0];
+        // The cheap test first: every linked value the same bits at the
+        // four corners, through either face's source (a mesh's normals
+        // differ and stop here).
+        let data = quad.map(|v| self.data(v));
+        for link in self.fs.links.iter().filter(|l| l.read) {
+            for back in [false, true] {
+                let v = data.map(|d| link_value(link, back, d).to_bits());
+                if v.iter().any(|&x| x != v[0]) {
+                    return false;
+                }
+            }
+        }
+        let mut win = [NO_WIN; 4];
+        let mut fixed = [(0, 0); 4];
+        for (k, &v) in quad.iter().enumerate() {
+            match self.corner(v) {
+                Corner {
+                    outcode: 0,
+                    win: Some((w, f)),
+                } => (win[k], fixed[k]) = (w, f),
+                _ => return false,
+            }
+        }
+        let at = |v: usize| quad.iter().position(|&q| q == v).map_or(NO_WIN, |k| win[k]);
+        let back = self.back_facing(&t0.map(at));
+        if self.back_facing(&t1.map(at)) != back {
+            return false;
+        }
+        let Some(shape) = self.one_quadrilateral((&win, &fixed), &data, (back, false)) else {
+            return false;
+        };
+        if self.culled(back) {
+            return true;
+        }
+        // §3.5.5 as for each triangle alone: its depth slope is 0 (the
+        // same z at every corner), so o = r · units.
+        let po = self.state.polygon_offset;
+        let z_offset = match po.fill {
+            true => po.units as f64 / self.depth_steps,
+            false => 0.0,
+        };
+        let [d0, d1, d2, _] = data;
+        // (Flat varyings are the same at every corner.)
+        let first = [win[0], win[1], win[2]];
+        self.push(out, (shape, &first), back, z_offset, &[d0, d1, d2], d0);
+        true
+    }
+
     /// A quadrilateral (`win`, its [`snap`] `fixed` and `data` per
     /// vertex) as one primitive instead of its fan's two triangles, where
     /// that gives every pixel the same coverage and values: the shape
     /// covers the triangles' pixels exactly
     /// ([`Shape::quadrilateral_snapped`]), and each quantity interpolated
-    /// (window z, 1/w, each varying the fragment stage reads but flat
-    /// ones) is the same bits at the four vertices, so that its plane is
+    /// (window z, 1/w, each varying the fragment stage reads, flat ones
+    /// too unless `one_provoking`: the triangles share their provoking
+    /// vertex) is the same bits at the four vertices, so that its plane is
     /// that constant in either triangle ([`crate::interpolate::Basis::plane`],
     /// [`PrimPlanes::varying`]). A window z of −0 is left to the
     /// triangles: a helper pixel left of a plane's origin computes it as
@@ -322,7 +451,7 @@ impl Setup<'_> {
         &self,
         (win, fixed): (&[WinVertex], &[(i64, i64)]),
         data: &[&[f32]],
-        back: bool,
+        (back, one_provoking): (bool, bool),
     ) -> Option<Shape> {
         let ([w0, w1, w2, w3], &[f0, f1, f2, f3], [d0, d1, d2, d3]) = (win, fixed, data) else {
             return None;
@@ -335,11 +464,15 @@ impl Setup<'_> {
             [w0, w1, w2, w3].map(|w| w.z),
             [w0, w1, w2, w3].map(|w| w.inv_w),
         );
-        if !same(z) || !same(inv_w) {
+        // Window z only where something reads it: the depth test without
+        // gl_FragDepth, or gl_FragCoord.z; 1/w only for gl_FragCoord.w
+        // (the varyings read are constants, which it does not scale).
+        let [frag_z, frag_w] = self.fs.frag_coord_zw;
+        if ((self.fs.frag_depth.is_none() || frag_z) && !same(z)) || (frag_w && !same(inv_w)) {
             return None;
         }
         for link in &self.fs.links {
-            if self.interpolation(link) == Interpolation::Flat {
+            if !link.read || (one_provoking && self.interpolation(link) == Interpolation::Flat) {
                 continue;
             }
             let v = [d0, d1, d2, d3].map(|d| link_value(link, back, d).to_bits());
@@ -558,20 +691,9 @@ impl Setup<'_> {
         original: &[ClipVertex],
         prov: &[f32],
     ) {
-        // GL 2.1 §3.5.1 eq. 3.6: the sign of the window-space area.
-        let mut area = 0.0f64;
-        for i in 0..win.len() {
-            let j = (i + 1) % win.len();
-            area += win[i].x * win[j].y - win[j].x * win[i].y;
-        }
-        let ccw = area > 0.0;
-        let front = ccw == (self.state.front_face == FrontFace::Ccw);
-        let back = !front;
-        match self.state.cull {
-            Some(CullFace::FrontAndBack) => return,
-            Some(CullFace::Front) if front => return,
-            Some(CullFace::Back) if back => return,
-            _ => {}
+        let back = self.back_facing(win);
+        if self.culled(back) {
+            return;
         }
         let mode = self.state.polygon_mode[back as usize];
         let po = self.state.polygon_offset;
@@ -597,9 +719,10 @@ impl Setup<'_> {
         };
         match mode {
             PolygonMode::Fill => {
-                if let (Some(shape), [d0, d1, d2, _]) =
-                    (self.one_quadrilateral((win, fixed), data, back), data)
-                {
+                if let (Some(shape), [d0, d1, d2, _]) = (
+                    self.one_quadrilateral((win, fixed), data, (back, true)),
+                    data,
+                ) {
                     let first = [win[0], win[1], win[2]];
                     self.push(out, (shape, &first), back, z_offset, &[d0, d1, d2], prov);
                     return;
