@@ -417,8 +417,9 @@ impl Setup<'_> {
         if self.culled(back) {
             return true;
         }
-        // §3.5.5 as for each triangle alone: its depth slope is 0 (the
-        // same z at every corner), so o = r · units.
+        // §3.5.5 as for each triangle alone where the window z is read:
+        // the corners' z are then the same, its slope 0, o = r · units
+        // (elsewhere nothing adds it to a depth).
         let po = self.state.polygon_offset;
         let z_offset = match po.fill {
             true => po.units as f64 / self.depth_steps,
