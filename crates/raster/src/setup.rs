@@ -353,13 +353,14 @@ impl Setup<'_> {
     /// of shared indices). Returns true when both are done (set up as one,
     /// or culled), false to set them up one by one. Only filled, inside
     /// every clip plane, facing the same way (each triangle's own order
-    /// decides its facing), without a probe and where the fragment stage
-    /// does not read gl_PrimitiveID (which tells the two apart). Flat
-    /// varyings take each triangle's provoking vertex, so they too must
-    /// be the same at the four corners.
+    /// decides its facing) and where the fragment stage does not read
+    /// gl_PrimitiveID (which tells the two apart); [`Setup::chunk`] asks
+    /// only without a probe. Flat varyings take each triangle's provoking
+    /// vertex, so they too must be the same at the four corners, through
+    /// either face's source (the facing is known later).
     pub fn triangle_pair(&self, out: &mut Out, t0: [usize; 3], t1: [usize; 3]) -> bool {
         let fill = self.state.polygon_mode == [PolygonMode::Fill; 2];
-        if !fill || self.probe.is_some() || self.fs.primitive_id.is_some() {
+        if !fill || self.fs.primitive_id.is_some() {
             return false;
         }
         // The shared edge (s0, s1) and the vertex of each triangle off it.
@@ -383,17 +384,10 @@ impl Setup<'_> {
         }
         // Around the shared edge as the diagonal from corner 0 to 2.
         let quad = [shared[0], u1, shared[1], u0];
-        // The cheap test first: every linked value the same bits at the
-        // four corners, through either face's source (a mesh's normals
-        // differ and stop here).
+        // The cheap test first (a mesh's normals differ and stop here).
         let data = quad.map(|v| self.data(v));
-        for link in self.fs.links.iter().filter(|l| l.read) {
-            for back in [false, true] {
-                let v = data.map(|d| link_value(link, back, d).to_bits());
-                if v.iter().any(|&x| x != v[0]) {
-                    return false;
-                }
-            }
+        if !self.corner_values_agree(&data, &[false, true], false) {
+            return false;
         }
         let mut win = [NO_WIN; 4];
         let mut fixed = [(0, 0); 4];
@@ -411,7 +405,7 @@ impl Setup<'_> {
         if self.back_facing(&t1.map(at)) != back {
             return false;
         }
-        let Some(shape) = self.one_quadrilateral((&win, &fixed), &data, (back, false)) else {
+        let Some(shape) = self.one_quadrilateral((&win, &fixed)) else {
             return false;
         };
         if self.culled(back) {
@@ -432,15 +426,29 @@ impl Setup<'_> {
         true
     }
 
-    /// A quadrilateral (`win`, its [`snap`] `fixed` and `data` per
-    /// vertex) as one primitive instead of its fan's two triangles, where
-    /// that gives every pixel the same coverage and values: the shape
-    /// covers the triangles' pixels exactly
-    /// ([`Shape::quadrilateral_snapped`]), and each quantity interpolated
-    /// (window z, 1/w, each varying the fragment stage reads, flat ones
-    /// too unless `one_provoking`: the triangles share their provoking
-    /// vertex) is the same bits at the four vertices, so that its plane is
-    /// that constant in either triangle ([`crate::interpolate::Basis::plane`],
+    /// Whether each varying the fragment stage reads is the same bits at
+    /// the four corners `data` through the source of each face of
+    /// `faces` (true: back), flat ones too unless `one_provoking` (the
+    /// triangles share their provoking vertex, whose value both take).
+    fn corner_values_agree(&self, data: &[&[f32]], faces: &[bool], one_provoking: bool) -> bool {
+        self.fs.links.iter().filter(|l| l.read).all(|link| {
+            (one_provoking && self.interpolation(link) == Interpolation::Flat)
+                || faces.iter().all(|&back| {
+                    let mut v = data.iter().map(|d| link_value(link, back, d).to_bits());
+                    let first = v.next();
+                    v.all(|x| Some(x) == first)
+                })
+        })
+    }
+
+    /// A quadrilateral (`win` and its [`snap`] `fixed` per vertex) as one
+    /// primitive instead of its fan's two triangles, where that gives
+    /// every pixel the same coverage and values, once its varyings agree
+    /// at the corners ([`Setup::corner_values_agree`]): the shape covers
+    /// the triangles' pixels exactly ([`Shape::quadrilateral_snapped`]),
+    /// and the window z and 1/w, where read, are the same bits at the four
+    /// vertices, so that every plane read is that constant in either
+    /// triangle ([`crate::interpolate::Basis::plane`],
     /// [`PrimPlanes::varying`]). A window z of −0 is left to the
     /// triangles: a helper pixel left of a plane's origin computes it as
     /// `−0 + x·0` with x negative, whose sign would follow the origin.
@@ -448,13 +456,8 @@ impl Setup<'_> {
     /// (sphere impostors) are such quadrilaterals: one primitive's set-up,
     /// bins and walks instead of two, and no quad along the diagonal
     /// shaded twice.
-    fn one_quadrilateral(
-        &self,
-        (win, fixed): (&[WinVertex], &[(i64, i64)]),
-        data: &[&[f32]],
-        (back, one_provoking): (bool, bool),
-    ) -> Option<Shape> {
-        let ([w0, w1, w2, w3], &[f0, f1, f2, f3], [d0, d1, d2, d3]) = (win, fixed, data) else {
+    fn one_quadrilateral(&self, (win, fixed): (&[WinVertex], &[(i64, i64)])) -> Option<Shape> {
+        let ([w0, w1, w2, w3], &[f0, f1, f2, f3]) = (win, fixed) else {
             return None;
         };
         if self.probe.is_some() || w0.z.to_bits() == (-0.0f64).to_bits() {
@@ -471,15 +474,6 @@ impl Setup<'_> {
         let [frag_z, frag_w] = self.fs.frag_coord_zw;
         if ((self.fs.frag_depth.is_none() || frag_z) && !same(z)) || (frag_w && !same(inv_w)) {
             return None;
-        }
-        for link in &self.fs.links {
-            if !link.read || (one_provoking && self.interpolation(link) == Interpolation::Flat) {
-                continue;
-            }
-            let v = [d0, d1, d2, d3].map(|d| link_value(link, back, d).to_bits());
-            if v.iter().any(|&x| x != v[0]) {
-                return None;
-            }
         }
         let shape = Shape::quadrilateral_snapped([f0, f1, f2, f3]);
         #[cfg(test)]
@@ -720,13 +714,14 @@ impl Setup<'_> {
         };
         match mode {
             PolygonMode::Fill => {
-                if let (Some(shape), [d0, d1, d2, _]) = (
-                    self.one_quadrilateral((win, fixed), data, (back, true)),
-                    data,
-                ) {
-                    let first = [win[0], win[1], win[2]];
-                    self.push(out, (shape, &first), back, z_offset, &[d0, d1, d2], prov);
-                    return;
+                if let [d0, d1, d2, _] = data {
+                    let one = self.corner_values_agree(data, &[back], true);
+                    if let Some(shape) = one.then(|| self.one_quadrilateral((win, fixed))).flatten()
+                    {
+                        let first = [win[0], win[1], win[2]];
+                        self.push(out, (shape, &first), back, z_offset, &[d0, d1, d2], prov);
+                        return;
+                    }
                 }
                 for i in 1..win.len() - 1 {
                     let Some(shape) = fan(i) else {

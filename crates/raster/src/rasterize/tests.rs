@@ -205,15 +205,8 @@ fn reference_quads(s: &Shape, clip: PixelRect) -> Vec<(i64, i64, u8)> {
 
 #[test]
 fn triangle_quads_match_the_per_pixel_rule() {
-    // A small xorshift generator: fixed seed, no dependency.
-    let mut state = 0x9E37_79B9_7F4A_7C15u64;
-    let mut next = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        state
-    };
-    let mut coord = |range: f64| (next() % 1_000_000) as f64 / 1_000_000.0 * range - 8.0;
+    let mut next = unit_floats(0x9E37_79B9_7F4A_7C15);
+    let mut coord = |range: f64| next() * range - 8.0;
     let mut checked = 0;
     for i in 0..4000 {
         // Sizes from sub-pixel to larger than a tile; snapped to pixel
@@ -427,17 +420,23 @@ fn planes_agree_with_exact_barycentrics() {
     assert!(worst > 0.0);
 }
 
-/// `count` random triangles (a few pixels to thousands across, varied
-/// z and 1/w; those without area left out), each with a quad position
-/// within its range: (vertices, triangle, qx, qy).
-fn random_triangles(seed: u64, count: usize) -> Vec<([WinVertex; 3], Shape, i64, i64)> {
+/// Pseudo-random floats in [0, 1) from `seed` (an xorshift generator:
+/// fixed seed, no dependency), in steps of 10^-6.
+fn unit_floats(seed: u64) -> impl FnMut() -> f64 {
     let mut state = seed;
-    let mut next = move || {
+    move || {
         state ^= state << 13;
         state ^= state >> 7;
         state ^= state << 17;
         (state % 1_000_000) as f64 / 1_000_000.0
-    };
+    }
+}
+
+/// `count` random triangles (a few pixels to thousands across, varied
+/// z and 1/w; those without area left out), each with a quad position
+/// within its range: (vertices, triangle, qx, qy).
+fn random_triangles(seed: u64, count: usize) -> Vec<([WinVertex; 3], Shape, i64, i64)> {
+    let mut next = unit_floats(seed);
     let mut out = Vec::new();
     for i in 0..count {
         // Tiny to huge (past 2^16 pixels the strip weights take the
@@ -516,13 +515,7 @@ fn union_quads(shapes: &[Shape], clip: PixelRect) -> Vec<(i64, i64, u8)> {
 /// centres or half-pixel positions, so that corners and edges pass
 /// through pixel centres.
 fn random_quadrilaterals(seed: u64, count: usize) -> Vec<[(i64, i64); 4]> {
-    let mut state = seed;
-    let mut next = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state % 1_000_000) as f64 / 1_000_000.0
-    };
+    let mut next = unit_floats(seed);
     let mut out = Vec::new();
     for i in 0..count {
         let size = [1.5, 6.0, 20.0, 90.0, 300.0][i % 5] * (0.5 + next());
