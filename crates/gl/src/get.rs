@@ -255,6 +255,11 @@ impl Context {
             GL_VIEWPORT => int(&self.viewport.map(|x| x as i64)),
             GL_DEPTH_RANGE => nrm(&self.depth_range),
             GL_SCISSOR_BOX => int(&st.scissor.map(|x| x as i64)),
+            // GL 3.3 compatibility §6.1.2: clamped when fragment colour
+            // clamping is on.
+            GL_COLOR_CLEAR_VALUE if st.clamp_fragment_color == GL_TRUE => {
+                nrm(&st.clear_color.map(|c| c.clamp(0.0, 1.0)))
+            }
             GL_COLOR_CLEAR_VALUE => nrm(&st.clear_color),
             GL_DEPTH_CLEAR_VALUE => nrm(&[st.clear_depth]),
             GL_STENCIL_CLEAR_VALUE => int(&[st.clear_stencil as i64]),

@@ -97,12 +97,21 @@ impl Context {
         }
     }
 
-    /// glClearColor (clamped, GL 2.1 §4.2.3).
+    /// glClearColor: clamped to [0, 1] in a GL 2.1 context (GL 2.1
+    /// §4.2.3); from GL 3.0 on stored as given (GL 3.3 compatibility
+    /// §4.2.3: "stored as floating-point values"), so that a floating-point
+    /// buffer clears to any value. Clearing a normalized buffer clamps
+    /// each component then.
     pub fn clear_color(&mut self, r: f32, g: f32, b: f32, a: f32) {
         if self.reject_in_begin() {
             return;
         }
-        self.st.clear_color = [r, g, b, a].map(clamp01);
+        let c = [r, g, b, a];
+        self.st.clear_color = if self.api.at_least(3, 0) {
+            c
+        } else {
+            c.map(clamp01)
+        };
     }
 
     /// glClearDepth.
