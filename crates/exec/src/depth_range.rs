@@ -74,10 +74,16 @@ pub struct Affine {
 
 impl Affine {
     /// The value `v` everywhere, exactly, as a run reads it (a subnormal
-    /// flushed).
+    /// flushed): also its own lower bound, so that a sum of constants
+    /// and squares (`dot(v, v)` with a constant component, in whatever
+    /// order) stays known to be at least zero.
     #[inline]
     pub fn exact(v: f32) -> Affine {
-        Affine::new(flush_denormal(v) as f64, 0.0, 0.0, 0.0)
+        let c = flush_denormal(v) as f64;
+        Affine {
+            lo: if c.is_nan() { f64::NEG_INFINITY } else { c },
+            ..Affine::new(c, 0.0, 0.0, 0.0)
+        }
     }
 
     #[inline]
@@ -819,7 +825,7 @@ fn apply(regs: &[Affine], uniforms: &[u32], d: Reg, f: Fun) -> Option<Affine> {
         Fun::Mac(a, b) => fadd(r(d)?, fmul(r(a)?, r(b)?)?)?,
         Fun::Dot(n, a, b) => {
             let mut sum = Affine::exact(0.0);
-            for k in 0..n as usize {
+            for k in (0..n as usize).rev() {
                 let p = fmul(r(a[k])?, r(b[k])?)?.nonneg_if(a[k] == b[k]);
                 sum = fadd(sum, p)?;
             }

@@ -449,8 +449,10 @@ unsafe fn step(
             put!(d, lanes(|l| ftz(f(acc[l]) + f(ftz(f(a[l]) * f(b[l]))))))
         }
         Op::Dot { d, n, a, b } => {
-            let mut acc = [0u32; LANES];
-            for k in 0..(n as usize).min(4) {
+            let n = (n as usize).clamp(1, 4);
+            let (x, y) = (g!(a[n - 1]), g!(b[n - 1]));
+            let mut acc = lanes(|l| ftz(f(x[l]) * f(y[l])));
+            for k in (0..n - 1).rev() {
                 let (x, y) = (g!(a[k]), g!(b[k]));
                 acc = lanes(|l| ftz(f(acc[l]) + f(ftz(f(x[l]) * f(y[l])))));
             }

@@ -252,13 +252,13 @@ pub(crate) fn run<H: Hook>(
                 });
             }
             Op::Dot { d, n, a, b } => {
-                let mut acc = [0u32; LANES];
-                for k in 0..(n as usize).min(4) {
-                    let (x, y) = (r[a[k] as usize], r[b[k] as usize]);
-                    acc = lanes(|l| {
-                        let prod = flush_denormal(f(x[l]) * f(y[l]));
-                        ftz(f(acc[l]) + prod)
-                    });
+                let n = (n as usize).clamp(1, 4);
+                let prod = |k: usize, l: usize| {
+                    flush_denormal(f(r[a[k] as usize][l]) * f(r[b[k] as usize][l]))
+                };
+                let mut acc = lanes(|l| prod(n - 1, l).to_bits());
+                for k in (0..n - 1).rev() {
+                    acc = lanes(|l| ftz(f(acc[l]) + prod(k, l)));
                 }
                 r[d as usize] = acc;
             }

@@ -12,9 +12,13 @@
 //!   32 bits, float→int and float→uint conversion truncating toward zero
 //!   and saturating (NaN → 0; negative → 0 for uint), int↔uint keeping
 //!   the bits, uint→float rounding to nearest,
-//!   matrix products and dot products summed in index order from 0.0,
-//!   built-in functions through `glsl::math`, so a shader computes the very
-//!   bits constant folding would.
+//!   the sums of products in the orders Mesa's compiler gives them (a
+//!   `dot` from its last component down, `matrix · x` as its scaled
+//!   columns in index order, `x · matrix` as a `dot` with each column;
+//!   `normalize(x)` is `x · inversesqrt(dot(x, x))`), so that a program
+//!   grazing a silhouette draws what it draws on Mesa, built-in functions
+//!   through `glsl::math`, so a shader computes the very bits constant
+//!   folding would.
 //! - **Defined results where GLSL leaves them undefined** (documented
 //!   choices): integer division and remainder (`%`) by zero give 0, and
 //!   `i32::MIN % -1` gives 0; shift amounts are taken modulo 32 (their low

@@ -327,9 +327,10 @@ define_ops! {
     Pure FNeg { d: Reg = def, a: Reg = read },
     /// `d = d + a * b`, two roundings (never fused).
     Data FMac { d: Reg = acc, a: Reg = read, b: Reg = read },
-    /// `d = 0.0`, then `d += a[k] * b[k]` for `k < n` (1..=4), each
-    /// product and sum rounded and flushed (an [`Op::FMac`] chain in one
-    /// op).
+    /// `d = a[n−1]·b[n−1]`, then `d += a[k]·b[k]` for `k` from `n − 2`
+    /// down to 0 (`n` in 1..=4), each product and sum rounded and flushed:
+    /// the sum of a GLSL `dot` in the order Mesa's compiler reduces it
+    /// (last component first; `glsl::math::dot`).
     Pure Dot { d: Reg = def, n: u8 = imm, a: [Reg; 4] = reads4(n), b: [Reg; 4] = reads4(n) },
     Pure F1 { f: F1 = imm, d: Reg = def, a: Reg = read },
     Pure F2 { f: F2 = imm, d: Reg = def, a: Reg = read, b: Reg = read },

@@ -380,12 +380,17 @@ fn matmul(l: &ConstValue, r: &ConstValue, ty: Type) -> Option<Vec<ConstScalar>> 
     let mut out = Vec::with_capacity(rc * lr);
     for c in 0..rc {
         for row in 0..lr {
-            // Sum in index order, no fused multiply-add: the same order the
-            // executor uses.
-            let mut s = 0.0f32;
-            for k in 0..lc {
-                let prod = crate::math::flush_denormal(lf[k * lr + row] * rf[c * rr + k]);
-                s = crate::math::flush_denormal(s + prod);
+            // No fused multiply-add, in the executor's orders: a matrix on
+            // the left sums its scaled columns in index order, a vector on
+            // the left is a `dot` with each column (last component first).
+            let prod = |k: usize| crate::math::flush_denormal(lf[k * lr + row] * rf[c * rr + k]);
+            let mut order: Vec<usize> = (0..lc).collect();
+            if !matches!(l.ty.base, Base::Matrix { .. }) {
+                order.reverse();
+            }
+            let mut s = prod(order[0]);
+            for &k in &order[1..] {
+                s = crate::math::flush_denormal(s + prod(k));
             }
             out.push(ConstScalar::Float(s));
         }

@@ -273,9 +273,13 @@ pub fn smoothstep(edge0: f32, edge1: f32, x: f32) -> f32 {
     f(t * t) * (3.0 - 2.0 * t)
 }
 
-/// Dot product, summed left to right.
+/// Dot product, summed from the last component down (`x₂y₂ + x₁y₁` first,
+/// then `+ x₀y₀`): the order Mesa's compiler reduces a `dot` in, so that
+/// the last bit of a sum that decides a silhouette is Mesa's.
 pub fn dot(x: &[f32], y: &[f32]) -> f32 {
-    x.iter().zip(y).fold(0.0, |acc, (a, b)| acc + a * b)
+    let mut products = x.iter().zip(y).map(|(a, b)| a * b).rev();
+    let last = products.next().unwrap_or(0.0);
+    products.fold(last, |acc, p| acc + p)
 }
 
 /// `sqrt(dot(x, x))`.
@@ -359,6 +363,9 @@ mod tests {
         assert_eq!(smoothstep(0.0, 1.0, -1.0), 0.0);
         assert_eq!(radians(180.0), PI);
         assert_eq!(dot(&[1.0, 2.0, 3.0], &[4.0, 5.0, 6.0]), 32.0);
+        // Last component first: 1e8 − 1e8, then + 1 (left to right the 1
+        // would be lost in 1 + 1e8).
+        assert_eq!(dot(&[1.0, 1e8, -1e8], &[1.0; 3]), 1.0);
         assert_eq!(length(&[3.0, 4.0]), 5.0);
     }
 }

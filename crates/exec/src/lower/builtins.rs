@@ -32,14 +32,6 @@ fn fmul_op(d: Reg, x: &[Reg]) -> Op {
     }
 }
 
-fn fdiv_op(d: Reg, x: &[Reg]) -> Op {
-    Op::FDiv {
-        d,
-        a: x[0],
-        b: x[1],
-    }
-}
-
 fn fadd_op(d: Reg, x: &[Reg]) -> Op {
     Op::FAdd {
         d,
@@ -357,7 +349,7 @@ impl<'m> Lowerer<'m> {
         })
     }
 
-    /// `dot`, summed left to right from 0.0 like `glsl::math::dot`.
+    /// `dot`, summed from the last component like `glsl::math::dot`.
     fn dot(&mut self, a: &[Reg], b: &[Reg]) -> R<Reg> {
         let d = self.temp()?;
         let pairs: Vec<(Reg, Reg)> = a.iter().copied().zip(b.iter().copied()).collect();
@@ -365,8 +357,9 @@ impl<'m> Lowerer<'m> {
         Ok(d)
     }
 
-    /// `d = 0.0`, then `d += a * b` for each pair in order: one
-    /// [`Op::Dot`] for up to 4 pairs, else a [`Op::FMac`] chain.
+    /// The sum of the pairs' products from the last pair to the first
+    /// ([`Op::Dot`]'s order): one [`Op::Dot`] for up to 4 pairs, else a
+    /// [`Op::FMac`] chain from 0.0.
     pub(super) fn emit_dot(&mut self, d: Reg, pairs: &[(Reg, Reg)]) -> R<()> {
         if (1..=4).contains(&pairs.len()) {
             let mut a = [0; 4];
@@ -386,7 +379,7 @@ impl<'m> Lowerer<'m> {
             d,
             bits: 0.0f32.to_bits(),
         })?;
-        for &(x, y) in pairs {
+        for &(x, y) in pairs.iter().rev() {
             self.emit(Op::FMac { d, a: x, b: y })?;
         }
         Ok(())
@@ -617,10 +610,16 @@ impl<'m> Lowerer<'m> {
                 Ok(out)
             }
             B::Normalize => {
+                // x · inversesqrt(dot(x, x)), Mesa's form
+                // (`glsl::builtins::eval`'s too).
                 let x = arg(0)?.clone();
                 let d = self.dot(&x, &x)?;
-                let len = self.sqrt(d)?;
-                self.map(&[&x, &vec![len]], fdiv_op)
+                let inv = self.emit_temp(|d2| Op::F1 {
+                    f: F1::InverseSqrt,
+                    d: d2,
+                    a: d,
+                })?;
+                self.map(&[&x, &vec![inv]], fmul_op)
             }
             B::FaceForward => {
                 let (n, i, nref) = (arg(0)?.clone(), arg(1)?.clone(), arg(2)?.clone());

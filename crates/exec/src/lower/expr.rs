@@ -237,8 +237,12 @@ impl<'m> Lowerer<'m> {
         Ok(out)
     }
 
-    /// Matrix products, summed in index order from 0.0 without fused
-    /// multiply-add (the order of `glsl::consteval`).
+    /// Matrix products without fused multiply-add, in the orders of
+    /// Mesa's compiler (and of `glsl::consteval`): a product with a
+    /// matrix on the left sums its columns scaled by the right side's
+    /// components in index order (`m[0]·v.x + m[1]·v.y + …`); a vector
+    /// times a matrix is a `dot` of the vector with each column (summed
+    /// from the last component, [`Op::Dot`]).
     pub(super) fn matmul(&mut self, a: &[Reg], aty: Type, b: &[Reg], bty: Type) -> R<Val> {
         let (lc, lr) = match aty.base {
             Base::Matrix { cols, rows } => (cols as usize, rows as usize),
@@ -257,8 +261,11 @@ impl<'m> Lowerer<'m> {
         for c in 0..rc {
             for row in 0..lr {
                 let d = out[c * lr + row];
-                let pairs: Vec<(Reg, Reg)> =
+                let mut pairs: Vec<(Reg, Reg)> =
                     (0..lc).map(|k| (a[k * lr + row], b[c * rr + k])).collect();
+                if matches!(aty.base, Base::Matrix { .. }) {
+                    pairs.reverse();
+                }
                 self.emit_dot(d, &pairs)?;
             }
         }

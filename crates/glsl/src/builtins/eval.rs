@@ -521,9 +521,11 @@ fn cross(x: &[f32], y: &[f32]) -> Vec<f32> {
 }
 
 /// `x / length(x)`.
+/// `x · inversesqrt(dot(x, x))`, as Mesa's compiler writes `normalize`
+/// (the executor's order).
 fn normalize(x: &[f32]) -> Vec<f32> {
-    let len = math::length(x);
-    x.iter().map(|c| c / len).collect()
+    let inv = math::inversesqrt(math::dot(x, x));
+    x.iter().map(|c| c * inv).collect()
 }
 
 /// `dot(Nref, I) < 0 ? N : -N`.

@@ -463,8 +463,11 @@ impl<'a, 'b> Emit<'a, 'b> {
                 self.ftz(s)
             }),
             Op::Dot { d, n, a, b } => each!(d, |q| {
-                let mut acc = self.fconst(0.0);
-                for k in 0..(n as usize).min(4) {
+                let n = (n as usize).clamp(1, 4);
+                let (x, y) = (self.ldf(a[n - 1], q), self.ldf(b[n - 1], q));
+                let p = self.b.ins().fmul(x, y);
+                let mut acc = self.fz(p);
+                for k in (0..n - 1).rev() {
                     let (x, y) = (self.ldf(a[k], q), self.ldf(b[k], q));
                     let p = self.b.ins().fmul(x, y);
                     let p = self.fz(p);
