@@ -2,8 +2,12 @@
 //! is `m[c * 4 + r]`) and the transformations of GL 2.1 §2.11.2.
 //!
 //! Products use plain `a * b + c` (never fused) in a fixed order, so every
-//! machine computes the same bits. Inverses are computed in `f64` from the
-//! cofactor expansion and rounded once.
+//! machine computes the same bits: Mesa's order (each element summed from
+//! its first product), and glRotate as Mesa builds it, so that the matrices
+//! a program's shaders read are Mesa's bits too (a ray grazing a silhouette
+//! through an interpolated eye-space point depends on their last bits).
+//! Inverses are computed in `f64` from the cofactor expansion and rounded
+//! once.
 
 use glsl::math;
 
@@ -17,13 +21,14 @@ pub const IDENTITY: Mat4 = [
     0.0, 0.0, 0.0, 1.0,
 ];
 
-/// `a * b` (apply `b` first, then `a`).
+/// `a * b` (apply `b` first, then `a`): each element `a(r, 0)·b(0, c) +
+/// a(r, 1)·b(1, c) + …` from the left.
 pub fn mul(a: &Mat4, b: &Mat4) -> Mat4 {
     let mut out = [0.0f32; 16];
     for c in 0..4 {
         for r in 0..4 {
-            let mut s = 0.0f32;
-            for k in 0..4 {
+            let mut s = a[r] * b[c * 4];
+            for k in 1..4 {
                 s += a[k * 4 + r] * b[c * 4 + k];
             }
             out[c * 4 + r] = s;
@@ -181,24 +186,47 @@ pub fn scale(x: f32, y: f32, z: f32) -> Mat4 {
     m
 }
 
-/// glRotate: `angle` degrees counter-clockwise about the axis (x, y, z),
-/// R = u u^T + cos(θ)(I - u u^T) + sin(θ) S (GL 2.1 §2.11.2).
+/// glRotate: `angle` degrees counter-clockwise about the axis (x, y, z)
+/// (GL 2.1 §2.11.2), rounded as Mesa computes it: θ in radians rounded to
+/// f32, its sine and cosine rounded to f32; a rotation about a coordinate axis written exactly
+/// (c and ±s, the axis' sign choosing the direction); any other axis
+/// normalized in f32 (no rotation when its length is at most 10⁻⁴) and
+/// each element `(1 − c)·u_r u_c ± u_k s`, or `+ c` on the diagonal.
 pub fn rotate(angle: f32, x: f32, y: f32, z: f32) -> Mat4 {
-    let len = math::sqrt(x * x + y * y + z * z);
-    if len == 0.0 || !len.is_finite() {
-        return IDENTITY;
-    }
-    let (x, y, z) = (x / len, y / len, z / len);
-    let th = math::radians(angle);
-    let (s, c) = (math::sin(th), math::cos(th));
-    let u = [x, y, z];
-    let sm = [[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]];
+    // θ rounded to f32, its sine and cosine rounded to f32 (computed in f64).
+    let th = (angle as f64 * std::f64::consts::PI / 180.0) as f32 as f64;
+    let (s, c) = (libm::sin(th) as f32, libm::cos(th) as f32);
+    // Element (row, column).
+    let at = |r: usize, col: usize| col * 4 + r;
     let mut m = IDENTITY;
-    for r in 0..3 {
-        for col in 0..3 {
-            let uu = u[r] * u[col];
-            let id = if r == col { 1.0 } else { 0.0 };
-            m[col * 4 + r] = uu + c * (id - uu) + s * sm[r][col];
+    let axis = |v: f32, r: usize, col: usize, m: &mut Mat4| {
+        let s = if v < 0.0 { -s } else { s };
+        (m[at(r, r)], m[at(col, col)]) = (c, c);
+        (m[at(r, col)], m[at(col, r)]) = (-s, s);
+    };
+    match (x == 0.0, y == 0.0, z == 0.0) {
+        (true, true, false) => axis(z, 0, 1, &mut m),
+        (true, false, true) => axis(y, 2, 0, &mut m),
+        (false, true, true) => axis(x, 1, 2, &mut m),
+        _ => {
+            let mag = math::sqrt(x * x + y * y + z * z);
+            if mag.is_nan() || mag <= 1.0e-4 {
+                return IDENTITY;
+            }
+            let (x, y, z) = (x / mag, y / mag, z / mag);
+            let (xx, yy, zz) = (x * x, y * y, z * z);
+            let (xy, yz, zx) = (x * y, y * z, z * x);
+            let (xs, ys, zs) = (x * s, y * s, z * s);
+            let one_c = 1.0 - c;
+            m[at(0, 0)] = (one_c * xx) + c;
+            m[at(0, 1)] = (one_c * xy) - zs;
+            m[at(0, 2)] = (one_c * zx) + ys;
+            m[at(1, 0)] = (one_c * xy) + zs;
+            m[at(1, 1)] = (one_c * yy) + c;
+            m[at(1, 2)] = (one_c * yz) - xs;
+            m[at(2, 0)] = (one_c * zx) - ys;
+            m[at(2, 1)] = (one_c * yz) + xs;
+            m[at(2, 2)] = (one_c * zz) + c;
         }
     }
     m

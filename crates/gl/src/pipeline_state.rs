@@ -163,6 +163,7 @@ impl Context {
             },
             polygon_mode: [poly(st.polygon_mode[0]), poly(st.polygon_mode[1])],
             flat_shading: st.shade_model == GL_FLAT,
+            top_down: target.name == 0,
             provoking_first: self.provoking_first(),
             point_size: st.point.size,
             point_sprite: on(GL_POINT_SPRITE),

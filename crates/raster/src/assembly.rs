@@ -28,6 +28,14 @@ pub enum Mode {
 }
 
 impl Mode {
+    /// How a polygon of this mode is cut into triangles ([`Fan`]).
+    pub(crate) fn fan(self) -> Fan {
+        match self {
+            Mode::QuadStrip | Mode::Polygon => Fan::Last,
+            _ => Fan::First,
+        }
+    }
+
     /// How many primitives `vertices` vertices of this mode make
     /// (incomplete trailing primitives dropped).
     pub fn primitives(self, vertices: usize) -> usize {
@@ -70,6 +78,31 @@ pub(crate) fn primitive_count(mode: Mode, count: usize) -> usize {
         Mode::TrianglesAdjacency => n / 6,
         // 2(p + 2) + k vertices for p triangles, k 0 or 1 (§2.6.1).
         Mode::TriangleStripAdjacency => (n / 2).saturating_sub(2),
+    }
+}
+
+/// How a polygon of `n` vertices is cut into triangles: the fan of
+/// vertex 0, triangle `i` (from 1 to `n − 2`) made of vertices 0, `i` and
+/// `i + 1`, set up in this order ([`Fan::First`]: vertex 0 first) or as
+/// `i`, `i + 1`, 0 ([`Fan::Last`]). Which vertex comes last decides how
+/// the planes round (`crate::interpolate::TriangleSetup`), so each mode
+/// takes llvmpipe's: quads (0, 1, 2) and (0, 2, 3); quad strips, listed
+/// from vertex 2k + 3 ([`small_polygon`]), (2k + 2, 2k, 2k + 3) and (2k,
+/// 2k + 1, 2k + 3); polygons (i, i + 1, 0).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Fan {
+    First,
+    Last,
+}
+
+impl Fan {
+    /// Triangle `i` of the fan (vertex positions in the polygon).
+    #[inline(always)]
+    pub fn triangle(self, i: usize) -> [usize; 3] {
+        match self {
+            Fan::First => [0, i, i + 1],
+            Fan::Last => [i, i + 1, 0],
+        }
     }
 }
 
@@ -120,8 +153,10 @@ pub(crate) fn small_polygon(mode: Mode, k: usize) -> Option<([usize; 4], usize, 
             ([b, b + 1, b + 2, b + 3], 4, b + 3)
         }
         Mode::QuadStrip => {
+            // The quad b, b + 1, b + 3, b + 2 from its last vertex (see
+            // Fan): its diagonal from b to b + 3.
             let b = 2 * k;
-            ([b, b + 1, b + 3, b + 2], 4, b + 3)
+            ([b + 3, b + 2, b, b + 1], 4, b + 3)
         }
         Mode::TrianglesAdjacency => ([6 * k, 6 * k + 2, 6 * k + 4, 0], 3, 6 * k + 4),
         Mode::TriangleStripAdjacency => {
@@ -249,7 +284,7 @@ mod tests {
         assert_eq!(collect(Mode::Quads, 7), vec![Polygon(vec![0, 1, 2, 3], 3)]);
         assert_eq!(
             collect(Mode::QuadStrip, 6),
-            vec![Polygon(vec![0, 1, 3, 2], 3), Polygon(vec![2, 3, 5, 4], 5)]
+            vec![Polygon(vec![3, 2, 0, 1], 3), Polygon(vec![5, 4, 2, 3], 5)]
         );
         assert_eq!(
             collect(Mode::Polygon, 5),

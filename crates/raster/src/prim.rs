@@ -27,14 +27,8 @@ pub(crate) struct Prim {
     pub source: u32,
 }
 
-/// The origin pixel of a primitive's planes (`crate::interpolate`): the
-/// first pixel of its clipped bounds.
-pub(crate) fn plane_origin(bounds: PixelRect) -> (i64, i64) {
-    (bounds.0, bounds.1)
-}
-
 impl Prim {
-    /// [`offsets`] from this primitive's plane origin.
+    /// [`offsets`]: the window positions its planes are evaluated at.
     #[inline(always)]
     pub fn offsets<const N: usize>(
         &self,
@@ -42,6 +36,6 @@ impl Prim {
         ox: &[f32; N],
         oy: &[f32; N],
     ) -> ([f32; N], [f32; N]) {
-        offsets(plane_origin(self.bounds), at, ox, oy)
+        offsets(at, ox, oy, self.planes.top)
     }
 }

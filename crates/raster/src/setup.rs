@@ -16,12 +16,12 @@ use std::ops::Range;
 
 use glsl::ir::Interpolation;
 
-use crate::assembly::{first_vertex_provoking, primitive, small_polygon, Assembled, Mode};
+use crate::assembly::{first_vertex_provoking, primitive, small_polygon, Assembled, Fan, Mode};
 use crate::clip::{ClipVertex, Planes};
 use crate::framebuffer::{DepthFormat, Framebuffer, DEPTH_MAX};
-use crate::interpolate::{Basis, Plane, PrimPlanes};
+use crate::interpolate::{Bases, Basis, Plane, PrimPlanes, TriangleSetup};
 use crate::linkage::{FsLayout, VaryingLink, VsLayout};
-use crate::prim::{plane_origin, Prim};
+use crate::prim::Prim;
 use crate::probe::Probe;
 use crate::rasterize::{max_depth_slope, snap, vertex_depths, PixelRect, Shape, WinVertex};
 use crate::simd::Level;
@@ -53,6 +53,13 @@ pub(crate) struct Setup<'a> {
     depth_steps: f64,
     /// Viewport transform (px/2, ox, py/2, oy, (f-n)/2, (n+f)/2).
     vp: [f64; 6],
+    /// The framebuffer's height when its planes take rows from the top
+    /// ([`PipelineState::top_down`]).
+    rows: Option<f32>,
+    /// Whether a pixel's values depend on its primitive's 1/w plane:
+    /// the fragment stage reads gl_FragCoord.w or a smooth varying (a
+    /// perspective one is multiplied by 1 over it).
+    reads_w: bool,
     probe: Option<&'a Probe>,
     /// Per vertex (when vertices are shared enough to be worth it, else
     /// empty): its clip-plane outcode and window position, what
@@ -147,6 +154,12 @@ impl<'a> Setup<'a> {
                 (f - n) / 2.0,
                 (n + f) / 2.0,
             ],
+            rows: state.top_down.then_some(fb.height as f32),
+            reads_w: fs.frag_coord_zw[1]
+                || fs
+                    .links
+                    .iter()
+                    .any(|l| l.read && interpolation(state, l) == Interpolation::Smooth),
             probe,
             corners: &[],
         }
@@ -212,7 +225,7 @@ impl Setup<'_> {
                 }
                 if let Some((vs, n, prov)) = small_polygon(mode, k) {
                     let vs = vs.map(v);
-                    self.polygon_at(level, out, &vs[..n], v(provoking(prov)));
+                    self.polygon_at(level, out, &vs[..n], (v(provoking(prov)), mode.fan()));
                     continue;
                 }
             }
@@ -231,7 +244,7 @@ impl Setup<'_> {
                 }
                 Assembled::Polygon(vs, prov) => {
                     let vs: Vec<usize> = vs.into_iter().map(v).collect();
-                    self.polygon(out, &vs, v(provoking(prov)));
+                    self.polygon(out, &vs, (v(provoking(prov)), mode.fan()));
                 }
             }
         }
@@ -252,21 +265,29 @@ impl Setup<'_> {
     }
 
     /// Perspective division and viewport transform (GL 2.1 §2.11) of a
-    /// clip-space position.
+    /// clip-space position. x, y and 1/w are llvmpipe's f32 values (its
+    /// draw module's): 1/w rounded, then `fma(x · (1/w), scale,
+    /// translate)`, so that the planes built from them round as its do
+    /// (`crate::interpolate`); in a top-down framebuffer y is computed
+    /// from the top (scale −h/2, translate `rows − oy`) and turned back
+    /// exactly. Window z is kept in f64.
     fn window(&self, pos: [f32; 4]) -> Option<WinVertex> {
-        let w = pos[3] as f64;
+        let w = pos[3];
         if w.is_nan() || w <= 0.0 {
             return None;
         }
         let [sx, ox, sy, oy, sz, oz] = self.vp;
-        let xd = pos[0] as f64 / w;
-        let yd = pos[1] as f64 / w;
-        let zd = pos[2] as f64 / w;
+        let inv_w = 1.0 / w;
+        let yw = pos[1] * inv_w;
+        let y = match self.rows {
+            Some(h) => h as f64 - yw.mul_add(-(sy as f32), h - oy as f32) as f64,
+            None => yw.mul_add(sy as f32, oy as f32) as f64,
+        };
         let win = WinVertex {
-            x: sx * xd + ox,
-            y: sy * yd + oy,
-            z: sz * zd + oz,
-            inv_w: 1.0 / w,
+            x: (pos[0] * inv_w).mul_add(sx as f32, ox as f32) as f64,
+            y,
+            z: sz * (pos[2] as f64 / w as f64) + oz,
+            inv_w: inv_w as f64,
         };
         (win.x.is_finite() && win.y.is_finite() && win.z.is_finite() && win.inv_w.is_finite())
             .then_some(win)
@@ -274,29 +295,41 @@ impl Setup<'_> {
 
     /// Appends the planes of the fragment varyings of `shape` (`win` and
     /// `vertices`: the window positions and the data of its vertices) to
-    /// `out.planes`, flat-shaded colours constant at `provoking`'s,
-    /// origin pixel `origin`; returns the primitive's own planes (window
-    /// z, 1/w).
+    /// `out.planes`, flat-shaded colours constant at `provoking`'s;
+    /// returns the primitive's own planes (window z, 1/w).
     #[inline(always)]
     fn planes(
         &self,
         out: &mut Out,
         (shape, win): (&Shape, &[WinVertex]),
-        origin: (i64, i64),
         vertices: &[&[f32]],
         (back, provoking): (bool, &[f32]),
     ) -> PrimPlanes {
-        // A triangle's planes come from its vertices' window positions;
-        // coverage from their snapped ones.
-        let basis = match (shape, win) {
+        // A triangle's planes come from its vertices' window positions
+        // (llvmpipe's set-up where it has an area); coverage from their
+        // snapped ones.
+        // Rows from the top in a top-down framebuffer (exact).
+        let row = |y: f64| self.rows.map_or(y, |h| h as f64 - y);
+        let (basis, triangle) = match (shape, win) {
             (Shape::Triangle { .. } | Shape::Quadrilateral { .. }, [a, b, c]) => {
-                Basis::of_triangle([(a.x, a.y), (b.x, b.y), (c.x, c.y)], origin)
+                let xy = [a, b, c].map(|w| (w.x, row(w.y)));
+                let basis = Basis::of_triangle(xy, (0, 0));
+                (
+                    basis,
+                    TriangleSetup::new(xy.map(|(x, y)| (x as f32, y as f32))),
+                )
             }
-            _ => None,
-        }
-        .unwrap_or_else(|| shape.basis(origin));
+            _ => (None, None),
+        };
+        let top = self.rows.map(|h| h - 1.0);
+        let basis = basis.unwrap_or_else(|| match top {
+            Some(t) => shape.basis((0, 0)).top_down(t as f64),
+            None => shape.basis((0, 0)),
+        });
+        let bases = Bases { basis, triangle };
         let (z, inv_w) = vertex_depths(win);
-        let prim = PrimPlanes::new(&basis, z, inv_w);
+        let inv_w = inv_w.map(|w| w as f32);
+        let prim = PrimPlanes::new(&bases, z, inv_w, top);
         // A line's or a point's missing vertices repeat its last.
         let data = |j: usize| vertices.get(j).or(vertices.last()).copied().unwrap_or(&[]);
         let (d0, d1, d2) = (data(0), data(1), data(2));
@@ -304,9 +337,9 @@ impl Setup<'_> {
             let get = |d: &[f32]| link_value(link, back, d);
             out.planes.push(match self.interpolation(link) {
                 Interpolation::Flat => Plane::constant(get(provoking)),
-                Interpolation::Smooth => prim.varying(&basis, [get(d0), get(d1), get(d2)], inv_w),
+                Interpolation::Smooth => prim.varying(&bases, [get(d0), get(d1), get(d2)], inv_w),
                 Interpolation::NoPerspective => {
-                    prim.screen_linear(&basis, [get(d0), get(d1), get(d2)])
+                    prim.screen_linear(&bases, [get(d0), get(d1), get(d2)])
                 }
             });
         }
@@ -316,11 +349,7 @@ impl Setup<'_> {
     /// How `link` is interpolated: GLSL 1.30 §4.3.7, a qualifier
     /// overrides the shade model.
     fn interpolation(&self, link: &VaryingLink) -> Interpolation {
-        match link.interpolation {
-            None if self.state.flat_shading && link.color => Interpolation::Flat,
-            None => Interpolation::Smooth,
-            Some(i) => i,
-        }
+        interpolation(self.state, link)
     }
 
     /// Whether a polygon of window vertices `win` (in its order) faces
@@ -449,10 +478,7 @@ impl Setup<'_> {
     /// and the window z and 1/w, where read, are the same bits at the four
     /// vertices, so that every plane read is that constant in either
     /// triangle ([`crate::interpolate::Basis::plane`],
-    /// [`PrimPlanes::varying`]). A window z of −0 is left to the
-    /// triangles: a helper pixel left of a plane's origin computes it as
-    /// `−0 + x·0` with x negative, whose sign would follow the origin.
-    /// Not with a probe, whose history names the triangles. Billboards
+    /// [`PrimPlanes::varying`]). Not with a probe, whose history names the triangles. Billboards
     /// (sphere impostors) are such quadrilaterals: one primitive's set-up,
     /// bins and walks instead of two, and no quad along the diagonal
     /// shaded twice.
@@ -460,7 +486,7 @@ impl Setup<'_> {
         let ([w0, w1, w2, w3], &[f0, f1, f2, f3]) = (win, fixed) else {
             return None;
         };
-        if self.probe.is_some() || w0.z.to_bits() == (-0.0f64).to_bits() {
+        if self.probe.is_some() {
             return None;
         }
         let same = |v: [f64; 4]| v.iter().all(|x| x.to_bits() == v[0].to_bits());
@@ -469,10 +495,12 @@ impl Setup<'_> {
             [w0, w1, w2, w3].map(|w| w.inv_w),
         );
         // Window z only where something reads it: the depth test without
-        // gl_FragDepth, or gl_FragCoord.z; 1/w only for gl_FragCoord.w
-        // (the varyings read are constants, which it does not scale).
-        let [frag_z, frag_w] = self.fs.frag_coord_zw;
-        if ((self.fs.frag_depth.is_none() || frag_z) && !same(z)) || (frag_w && !same(inv_w)) {
+        // gl_FragDepth, or gl_FragCoord.z; 1/w for gl_FragCoord.w and
+        // smooth varyings (constants whose perspective product with
+        // 1/w is the same in either triangle only when the 1/w are).
+        let frag_z = self.fs.frag_coord_zw[0];
+        if ((self.fs.frag_depth.is_none() || frag_z) && !same(z)) || (self.reads_w && !same(inv_w))
+        {
             return None;
         }
         let shape = Shape::quadrilateral_snapped([f0, f1, f2, f3]);
@@ -505,8 +533,7 @@ impl Setup<'_> {
         if bounds.0 >= bounds.2 || bounds.1 >= bounds.3 {
             return;
         }
-        let origin = plane_origin(bounds);
-        let planes = self.planes(out, (&shape, win), origin, vertices, (back, provoking));
+        let planes = self.planes(out, (&shape, win), vertices, (back, provoking));
         if let Some(p) = self.probe {
             p.note_window(win);
         }
@@ -597,24 +624,25 @@ impl Setup<'_> {
     }
 
     exec::multiversion! {
-        /// Sets up a polygon (`vertices`, `provoking`: vertex numbers):
-        /// clipped, culled, offset, filled as triangles or outlined;
-        /// compiled for `level` (the set-up inlined into each copy: the
-        /// same f64 operations, none fused, so the same values). The
-        /// portable copy, [`Setup::polygon`], is also the general path's.
+        /// Sets up a polygon (`vertices`, `provoking`: vertex numbers;
+        /// `fan`: how its mode cuts it into triangles): clipped, culled,
+        /// offset, filled as triangles or outlined; compiled for `level`
+        /// (the set-up inlined into each copy: the same operations, fused
+        /// ones through `mul_add`, so the same values). The portable copy,
+        /// [`Setup::polygon`], is also the general path's.
         fn polygon_at(
             &self,
             #[level] level: Level,
             out: &mut Out,
             vertices: &[usize],
-            provoking: usize,
+            provoking: (usize, Fan),
         );
         copies = [polygon, polygon_avx2, polygon_avx512],
         body = self.polygon_with(out, vertices, provoking)
     }
 
     #[inline(always)]
-    fn polygon_with(&self, out: &mut Out, vertices: &[usize], provoking: usize) {
+    fn polygon_with(&self, out: &mut Out, vertices: &[usize], (provoking, fan): (usize, Fan)) {
         // Line and point modes draw the unclipped polygon's edges/vertices.
         let filled_only = self.state.polygon_mode == [PolygonMode::Fill; 2];
         let prov = self.data(provoking);
@@ -647,7 +675,7 @@ impl Setup<'_> {
                 }
                 let n = vertices.len();
                 let polygon = (&win[..n], &fixed[..n]);
-                self.set_up_polygon(out, polygon, &data[..n], &[], prov);
+                self.set_up_polygon(out, polygon, &data[..n], &[], (prov, fan));
                 return;
             }
         }
@@ -670,13 +698,13 @@ impl Setup<'_> {
         };
         let data: Vec<&[f32]> = clipped.iter().map(|v| &v.data[..]).collect();
         let fixed: Vec<(i64, i64)> = win.iter().map(snap).collect();
-        self.set_up_polygon(out, (&win, &fixed), &data, &original, prov);
+        self.set_up_polygon(out, (&win, &fixed), &data, &original, (prov, fan));
     }
 
     /// Facing, culling, polygon offset and the polygon mode of a clipped
     /// polygon (`win`, its [`snap`] `fixed` and `data` per vertex, at
     /// least three; `original`: the unclipped polygon, for line and point
-    /// modes).
+    /// modes; filled as the triangles of `fan`).
     #[inline(always)]
     fn set_up_polygon(
         &self,
@@ -684,7 +712,7 @@ impl Setup<'_> {
         (win, fixed): (&[WinVertex], &[(i64, i64)]),
         data: &[&[f32]],
         original: &[ClipVertex],
-        prov: &[f32],
+        (prov, fan): (&[f32], Fan),
     ) {
         let back = self.back_facing(win);
         if self.culled(back) {
@@ -697,16 +725,16 @@ impl Setup<'_> {
             PolygonMode::Line => po.line,
             PolygonMode::Point => po.point,
         };
-        // Fan triangle i (vertices 0, i, i + 1), from the snapped
-        // positions; `None` when it has no area.
-        let fan = |i: usize| {
+        // Fan triangle i, from the snapped positions; `None` when it has
+        // no area.
+        let triangle = |i: usize| {
             let corner = |j: usize| fixed.get(j).copied().unwrap_or_default();
-            Shape::triangle_snapped([corner(0), corner(i), corner(i + 1)])
+            Shape::triangle_snapped(fan.triangle(i).map(corner))
         };
         let z_offset = if offset_on {
             // §3.5.5: o = m · factor + r · units.
             let m = (1..win.len() - 1)
-                .find(|&i| fan(i).is_some())
+                .find(|&i| triangle(i).is_some())
                 .map_or(0.0, |i| max_depth_slope(&[win[0], win[i], win[i + 1]]));
             m * po.factor as f64 + po.units as f64 / self.depth_steps
         } else {
@@ -724,16 +752,16 @@ impl Setup<'_> {
                     }
                 }
                 for i in 1..win.len() - 1 {
-                    let Some(shape) = fan(i) else {
+                    let Some(shape) = triangle(i) else {
                         continue;
                     };
-                    let tri = [win[0], win[i], win[i + 1]];
-                    let (Some(&d0), Some(&di), Some(&dj)) =
-                        (data.first(), data.get(i), data.get(i + 1))
+                    let [a, b, c] = fan.triangle(i);
+                    let tri = [win[a], win[b], win[c]];
+                    let (Some(&da), Some(&db), Some(&dc)) = (data.get(a), data.get(b), data.get(c))
                     else {
                         continue;
                     };
-                    self.push(out, (shape, &tri), back, z_offset, &[d0, di, dj], prov);
+                    self.push(out, (shape, &tri), back, z_offset, &[da, db, dc], prov);
                 }
             }
             PolygonMode::Line => {
@@ -748,6 +776,16 @@ impl Setup<'_> {
                 }
             }
         }
+    }
+}
+
+/// How `link` is interpolated: GLSL 1.30 §4.3.7, a qualifier overrides
+/// the shade model.
+fn interpolation(state: &PipelineState, link: &VaryingLink) -> Interpolation {
+    match link.interpolation {
+        None if state.flat_shading && link.color => Interpolation::Flat,
+        None => Interpolation::Smooth,
+        Some(i) => i,
     }
 }
 

@@ -298,6 +298,12 @@ pub struct PipelineState {
     /// ShadeModel(FLAT): gl_Color / gl_SecondaryColor come from the
     /// provoking vertex.
     pub flat_shading: bool,
+    /// The target is a window-system framebuffer, whose rows Mesa numbers
+    /// from the top: interpolation planes are then set up and evaluated
+    /// in those rows (`crate::interpolate`), as llvmpipe does there. The
+    /// picture, coverage and gl_FragCoord are the same either way; only
+    /// the rounding of interpolated values follows the convention.
+    pub top_down: bool,
     /// ProvokingVertex(FIRST_VERTEX_CONVENTION) (GL 3.3 §2.19, table
     /// 2.15): flat values come from each primitive's first vertex instead
     /// of its last (quads follow the convention too).
@@ -392,6 +398,7 @@ impl Default for PipelineState {
             front_face: FrontFace::Ccw,
             polygon_mode: [PolygonMode::Fill; 2],
             flat_shading: false,
+            top_down: false,
             provoking_first: false,
             point_size: 1.0,
             point_sprite: false,

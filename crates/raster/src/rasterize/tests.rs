@@ -1,5 +1,5 @@
 use super::*;
-use crate::interpolate::{offsets, PrimPlanes};
+use crate::interpolate::{offsets, Bases, PrimPlanes};
 
 fn wv(x: f64, y: f64) -> WinVertex {
     WinVertex {
@@ -305,12 +305,15 @@ fn bottom_left_rule() {
 /// The planes of a primitive (vertices `win`) at pixel (x, y):
 /// (window z, 1/w, the varying with vertex values `a`).
 fn planes_at((s, win): (&Shape, &[WinVertex]), a: [f32; 3], (x, y): (i64, i64)) -> (f64, f32, f32) {
-    let origin = (s.bounds().0, s.bounds().1);
-    let basis = s.basis(origin);
+    let bases = Bases {
+        basis: s.basis((0, 0)),
+        triangle: None,
+    };
     let (z, inv_w) = vertex_depths(win);
-    let p = PrimPlanes::new(&basis, z, inv_w);
-    let v = p.varying(&basis, a, inv_w);
-    let (fx, fy) = offsets(origin, (x, y), &[0.0], &[0.0]);
+    let inv_w = inv_w.map(|w| w as f32);
+    let p = PrimPlanes::new(&bases, z, inv_w, None);
+    let v = p.varying(&bases, a, inv_w);
+    let (fx, fy) = offsets((x, y), &[0.0], &[0.0], None);
     let rw = p.reciprocal_w(&fx, &fy);
     (
         p.z_at(&fx, &fy)[0],

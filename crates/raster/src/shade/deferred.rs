@@ -7,7 +7,6 @@
 use super::*;
 use crate::ex;
 use crate::interpolate::Region;
-use crate::prim::plane_origin;
 use crate::state::CompareFunc;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 
@@ -611,20 +610,27 @@ impl<'a> FragmentStage<'a> {
     ) -> Option<u32> {
         use ex::Affine;
         let range = self.depth_range.as_ref()?;
-        let (x0, y0) = plane_origin(prim.bounds);
-        let region = Region {
-            x: ((clip.0 - x0) as f64, (clip.2 - 1 - x0) as f64),
-            y: ((clip.1 - y0) as f64, (clip.3 - 1 - y0) as f64),
+        // The pixels, and the positions the planes take for them.
+        let pixels = Region {
+            x: (clip.0 as f64, (clip.2 - 1) as f64),
+            y: (clip.1 as f64, (clip.3 - 1) as f64),
+        };
+        let region = match prim.planes.top.map(f64::from) {
+            Some(t) => Region {
+                y: (t - pixels.y.1, t - pixels.y.0),
+                ..pixels
+            },
+            None => pixels,
         };
         let attrs = self.prim_attrs(prim);
         let twin = twin.map(|t| (t, self.prim_attrs(t)));
         let coord = self.layout.frag_coord;
         // gl_FragCoord.xy: the pixel centres, exactly.
-        let (x, y) = (region.x(), region.y());
+        let (x, y) = (pixels.x(), pixels.y());
         let mut input = |c: usize| -> Option<Affine> {
             match coord.map(|o| c.wrapping_sub(o)) {
-                Some(0) => return Some(Affine::new(x.c + (x0 as f64 + 0.5), x.gx, 0.0, 0.0)),
-                Some(1) => return Some(Affine::new(y.c + (y0 as f64 + 0.5), 0.0, y.gy, 0.0)),
+                Some(0) => return Some(Affine::new(x.c + 0.5, x.gx, 0.0, 0.0)),
+                Some(1) => return Some(Affine::new(y.c + 0.5, 0.0, y.gy, 0.0)),
                 _ => {}
             }
             let fill = self.depth_fills.iter().find(|f| f.offset == c)?;
