@@ -12,7 +12,7 @@
 //! `dy` per pixel. At pixel `(x, y)` (whole numbers, exact in f32):
 //!
 //! ```text
-//! P = fma(dy, y, fma(dx, x, c))     (f32; (c + y·dy) + x·dx in f64 for z)
+//! P = fma(dy, y, fma(dx, x, c))     (f32)
 //! ```
 //!
 //! and a varying is [`Kind::Constant`]: `c` itself, [`Kind::Linear`]: `P`
@@ -33,10 +33,11 @@
 //! evaluation. Measured against Mesa 22.3.6 (`scripts/interpolation-bits.py`):
 //! the same bits at every pixel. GL leaves this rounding to the
 //! implementation (GL 2.1 §2.1.1); llvmpipe's is as good a choice as any
-//! and the one other programs' reference images were drawn with. Lines and
+//! and the one other programs' reference images were drawn with. Window z
+//! too is llvmpipe's (its plane and its value at the pixel; polygon offset
+//! is then added in f64), so a depth test ties where Mesa's does. Lines and
 //! points take planes computed in f64 from their own bases ([`Basis`]),
-//! rounded to f32 and evaluated the same way. Window z stays in f64
-//! (depth keeps more than a depth buffer's 24 bits).
+//! rounded to f32 and evaluated the same way.
 //!
 //! Every path (quads, strips of 16 lanes, packed batches, every instruction
 //! set) performs these operations per lane in this order. The fused
@@ -185,22 +186,22 @@ impl TriangleSetup {
     }
 }
 
-/// How a primitive's planes are built: a triangle's varyings and 1/w
-/// from its [`TriangleSetup`] (values given in the set-up's vertex order),
-/// everything else from its f64 [`Basis`].
+/// How a primitive's planes are built: a triangle's from its
+/// [`TriangleSetup`] (values taken in the set-up's vertex order), a line's,
+/// a point's or a degenerate triangle's from its f64 [`Basis`], rounded.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Bases {
-    pub basis: Basis,
-    pub triangle: Option<(TriangleSetup, [usize; 3])>,
+pub(crate) enum Bases {
+    Triangle(TriangleSetup, [usize; 3]),
+    General(Basis),
 }
 
 impl Bases {
     /// The f32 plane of values `v` at the primitive's vertices.
     #[inline(always)]
     fn plane(&self, v: [f32; 3]) -> [f32; 3] {
-        match &self.triangle {
-            Some((t, o)) => t.plane(o.map(|j| v[j])),
-            None => to_f32(self.basis.plane(v.map(f64::from))),
+        match self {
+            Bases::Triangle(t, o) => t.plane(o.map(|j| v[j])),
+            Bases::General(b) => to_f32(b.plane(v.map(f64::from))),
         }
     }
 }
@@ -208,8 +209,8 @@ impl Bases {
 /// A primitive's window z and 1/w planes.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct PrimPlanes {
-    /// Window z (before polygon offset): `[c, dx, dy]` in f64.
-    pub z: [f64; 3],
+    /// Window z (before polygon offset).
+    pub z: [f32; 3],
     /// 1 / w_clip (gl_FragCoord.w).
     pub inv_w: [f32; 3],
     /// Whether some vertex's 1/w is not 1 (then non-constant varyings are
@@ -226,17 +227,17 @@ fn to_f32(p: [f64; 3]) -> [f32; 3] {
 
 impl PrimPlanes {
     /// The planes of a primitive whose vertices have window z `z` and
-    /// 1/w `inv_w` (f32 values; a missing vertex repeats vertex 0), over
-    /// rows from the top when `top` is the last row's number.
+    /// 1/w `inv_w` (a missing vertex repeats vertex 0), over rows from the
+    /// top when `top` is the last row's number.
     #[inline]
-    pub fn new(bases: &Bases, z: [f64; 3], inv_w: [f32; 3], top: Option<f32>) -> PrimPlanes {
+    pub fn new(bases: &Bases, z: [f32; 3], inv_w: [f32; 3], top: Option<f32>) -> PrimPlanes {
         let w = inv_w.map(f32::to_bits);
         let inv_w = match w[1] == w[0] && w[2] == w[0] {
             true => [inv_w[0], 0.0, 0.0],
             false => bases.plane(inv_w),
         };
         PrimPlanes {
-            z: bases.basis.plane(z),
+            z: bases.plane(z),
             inv_w,
             perspective: w.iter().any(|&b| b != 1.0f32.to_bits()),
             top,
@@ -280,15 +281,12 @@ impl PrimPlanes {
         Plane::of(bases.plane(v), Kind::Linear)
     }
 
-    /// Window z (before offset) at the pixels `(x, y)` (exact as f64).
+    /// Window z (before offset) at the pixels `(x, y)`, as f64 (what
+    /// polygon offset and the depth conversion take).
     #[inline(always)]
     pub fn z_at<const N: usize>(&self, x: &[f32; N], y: &[f32; N]) -> [f64; N] {
         let [c, dx, dy] = self.z;
-        let mut out = [0.0f64; N];
-        for l in 0..N {
-            out[l] = (c + y[l] as f64 * dy) + x[l] as f64 * dx;
-        }
-        out
+        at(c, dx, dy, x, y).map(f64::from)
     }
 
     /// 1/w at the pixels `(x, y)`.
@@ -474,10 +472,7 @@ mod tests {
     use super::*;
 
     fn basis_of(b1: [f64; 3], b2: [f64; 3]) -> Bases {
-        Bases {
-            basis: Basis { b: [b1, b2] },
-            triangle: None,
-        }
+        Bases::General(Basis { b: [b1, b2] })
     }
 
     /// A triangle's barycentric planes from unsnapped window positions:
@@ -534,10 +529,7 @@ mod tests {
         ];
         let (setup, order) = TriangleSetup::new(win).unwrap();
         assert_eq!(order, [1, 0, 2]);
-        let bases = Bases {
-            basis: Basis::of_triangle(win.map(|(x, y)| (x as f64, y as f64)), (0, 0)).unwrap(),
-            triangle: Some((setup, order)),
-        };
+        let bases = Bases::Triangle(setup, order);
         let planes = PrimPlanes::new(&bases, [0.5; 3], inv_w, None);
         let (x, y) = offsets((84, 115), &[0.0], &[0.0], None);
         let rw = planes.reciprocal_w(&x, &y);
@@ -617,10 +609,8 @@ mod tests {
     fn strips_and_quads_give_the_same_bits() {
         let win = [(3.2, 7.9), (61.7, 12.4), (20.05, 40.6)];
         let inv_w = [0.31, 0.07, 0.9];
-        let bases = Bases {
-            basis: Basis::of_triangle(win.map(|(x, y)| (x as f64, y as f64)), (0, 0)).unwrap(),
-            triangle: TriangleSetup::new(win),
-        };
+        let (setup, order) = TriangleSetup::new(win).unwrap();
+        let bases = Bases::Triangle(setup, order);
         for top in [None, Some(63.0)] {
             let p = PrimPlanes::new(&bases, [0.1, 0.7, 0.3], inv_w, top);
             let v = p.varying(&bases, [0.3, -2.5, 7.25], inv_w);

@@ -51,7 +51,7 @@ pub(crate) struct Setup<'a> {
     /// 1 / r of §3.5.5 (r: the smallest resolvable difference of window
     /// z in the target's depth buffer, one step of its fixed point).
     depth_steps: f64,
-    /// Viewport transform (px/2, ox, py/2, oy, (f-n)/2, (n+f)/2).
+    /// Viewport transform (px/2, ox, py/2, oy, (f-n)/2, n+(f-n)/2).
     vp: [f64; 6],
     /// The framebuffer's height when its planes take rows from the top
     /// ([`PipelineState::top_down`]).
@@ -152,7 +152,7 @@ impl<'a> Setup<'a> {
                 vh / 2.0,
                 lim(vp.y) + vh / 2.0,
                 (f - n) / 2.0,
-                (n + f) / 2.0,
+                n + (f - n) / 2.0,
             ],
             rows: state.top_down.then_some(fb.height as f32),
             reads_w: fs.frag_coord_zw[1]
@@ -270,7 +270,8 @@ impl Setup<'_> {
     /// translate)`, so that the planes built from them round as its do
     /// (`crate::interpolate`); in a top-down framebuffer y is computed
     /// from the top (scale −h/2, translate `rows − oy`) and turned back
-    /// exactly. Window z is kept in f64.
+    /// exactly. Window z the same way, with Mesa's translate `n + (f −
+    /// n)/2`.
     fn window(&self, pos: [f32; 4]) -> Option<WinVertex> {
         let w = pos[3];
         if w.is_nan() || w <= 0.0 {
@@ -286,7 +287,7 @@ impl Setup<'_> {
         let win = WinVertex {
             x: (pos[0] * inv_w).mul_add(sx as f32, ox as f32) as f64,
             y,
-            z: sz * (pos[2] as f64 / w as f64) + oz,
+            z: (pos[2] * inv_w).mul_add(sz as f32, oz as f32) as f64,
             inv_w: inv_w as f64,
         };
         (win.x.is_finite() && win.y.is_finite() && win.z.is_finite() && win.inv_w.is_finite())
@@ -310,25 +311,24 @@ impl Setup<'_> {
         // snapped ones.
         // Rows from the top in a top-down framebuffer (exact).
         let row = |y: f64| self.rows.map_or(y, |h| h as f64 - y);
-        let (basis, triangle) = match (shape, win) {
+        let top = self.rows.map(|h| h - 1.0);
+        let triangle = match (shape, win) {
             (Shape::Triangle { .. } | Shape::Quadrilateral { .. }, [a, b, c]) => {
                 let xy = [a, b, c].map(|w| (w.x, row(w.y)));
-                let basis = Basis::of_triangle(xy, (0, 0));
-                (
-                    basis,
-                    TriangleSetup::new(xy.map(|(x, y)| (x as f32, y as f32))),
-                )
+                TriangleSetup::new(xy.map(|(x, y)| (x as f32, y as f32)))
+                    .map(|(t, order)| Bases::Triangle(t, order))
+                    .or_else(|| Basis::of_triangle(xy, (0, 0)).map(Bases::General))
             }
-            _ => (None, None),
+            _ => None,
         };
-        let top = self.rows.map(|h| h - 1.0);
-        let basis = basis.unwrap_or_else(|| match top {
-            Some(t) => shape.basis((0, 0)).top_down(t as f64),
-            None => shape.basis((0, 0)),
+        let bases = triangle.unwrap_or_else(|| {
+            Bases::General(match top {
+                Some(t) => shape.basis((0, 0)).top_down(t as f64),
+                None => shape.basis((0, 0)),
+            })
         });
-        let bases = Bases { basis, triangle };
         let (z, inv_w) = vertex_depths(win);
-        let inv_w = inv_w.map(|w| w as f32);
+        let (z, inv_w) = (z.map(|z| z as f32), inv_w.map(|w| w as f32));
         let prim = PrimPlanes::new(&bases, z, inv_w, top);
         // A line's or a point's missing vertices repeat its last.
         let data = |j: usize| vertices.get(j).or(vertices.last()).copied().unwrap_or(&[]);
