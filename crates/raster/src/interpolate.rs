@@ -82,10 +82,9 @@ pub(crate) struct Basis {
 impl Basis {
     /// The barycentric planes of a triangle from its window positions
     /// `v` as the vertex stage made them (not snapped to the coverage's
-    /// grid), relative to the center of pixel `(x0, y0)`; `None` when
-    /// they enclose no area.
+    /// grid); `None` when they enclose no area.
     #[inline]
-    pub fn of_triangle(v: [(f64, f64); 3], (x0, y0): (i64, i64)) -> Option<Basis> {
+    pub fn of_triangle(v: [(f64, f64); 3]) -> Option<Basis> {
         let [(ax, ay), (bx, by), (cx, cy)] = v;
         let (e1x, e1y, e2x, e2y) = (bx - ax, by - ay, cx - ax, cy - ay);
         let area2 = e1x * e2y - e1y * e2x;
@@ -93,7 +92,7 @@ impl Basis {
             return None;
         }
         let inv = 1.0 / area2;
-        let (px, py) = (x0 as f64 + 0.5 - ax, y0 as f64 + 0.5 - ay);
+        let (px, py) = (0.5 - ax, 0.5 - ay);
         // b1: the area of (v0, p, v2), b2: of (v0, v1, p), over the whole.
         let b1 = [(px * e2y - py * e2x) * inv, e2y * inv, -e2x * inv];
         let b2 = [(e1x * py - e1y * px) * inv, -e1y * inv, e1x * inv];
@@ -150,27 +149,33 @@ impl TriangleSetup {
     /// 1, 2]` or `[1, 0, 2]`); `None` when the area is zero or not finite.
     #[inline]
     pub fn new(v: [(f32, f32); 3]) -> Option<(TriangleSetup, [usize; 3])> {
-        let area =
-            |[a, b, c]: [(f32, f32); 3]| (a.0 - b.0) * (c.1 - a.1) - (a.1 - b.1) * (c.0 - a.0);
-        let (v, order) = match area(v) {
-            a if a > 0.0 && a.is_finite() => (v, [0, 1, 2]),
-            a if a < 0.0 && a.is_finite() => ([v[1], v[0], v[2]], [1, 0, 2]),
-            _ => return None,
+        // The edges from vertex 1 to 0 and from 0 to 2, and the doubled
+        // signed area they span, in the order given.
+        let edges = |[a, b, c]: [(f32, f32); 3]| {
+            let (dx01, dy01, dx20, dy20) = (a.0 - b.0, a.1 - b.1, c.0 - a.0, c.1 - a.1);
+            ([dx01, dy01, dx20, dy20], dx01 * dy20 - dy01 * dx20)
         };
-        let [a, b, c] = v;
-        let (dx01, dy01) = (a.0 - b.0, a.1 - b.1);
-        let (dx20, dy20) = (c.0 - a.0, c.1 - a.1);
-        let ooa = 1.0 / (dx01 * dy20 - dy01 * dx20);
+        let (mut v, mut order) = (v, [0, 1, 2]);
+        let (mut e, mut area) = edges(v);
+        if area == 0.0 || !area.is_finite() {
+            return None;
+        }
+        if area < 0.0 {
+            (v, order) = ([v[1], v[0], v[2]], [1, 0, 2]);
+            (e, area) = edges(v);
+        }
+        let ooa = 1.0 / area;
         if !ooa.is_finite() {
             return None;
         }
+        let [dx01, dy01, dx20, dy20] = e.map(|d| d * ooa);
         let setup = TriangleSetup {
-            x0: a.0 - 0.5,
-            y0: a.1 - 0.5,
-            dx01: dx01 * ooa,
-            dy01: dy01 * ooa,
-            dx20: dx20 * ooa,
-            dy20: dy20 * ooa,
+            x0: v[0].0 - 0.5,
+            y0: v[0].1 - 0.5,
+            dx01,
+            dy01,
+            dx20,
+            dy20,
         };
         Some((setup, order))
     }
@@ -231,15 +236,10 @@ impl PrimPlanes {
     /// top when `top` is the last row's number.
     #[inline]
     pub fn new(bases: &Bases, z: [f32; 3], inv_w: [f32; 3], top: Option<f32>) -> PrimPlanes {
-        let w = inv_w.map(f32::to_bits);
-        let inv_w = match w[1] == w[0] && w[2] == w[0] {
-            true => [inv_w[0], 0.0, 0.0],
-            false => bases.plane(inv_w),
-        };
         PrimPlanes {
             z: bases.plane(z),
-            inv_w,
-            perspective: w.iter().any(|&b| b != 1.0f32.to_bits()),
+            inv_w: bases.plane(inv_w),
+            perspective: inv_w.iter().any(|&w| w.to_bits() != 1.0f32.to_bits()),
             top,
         }
     }
@@ -476,16 +476,13 @@ mod tests {
     }
 
     /// A triangle's barycentric planes from unsnapped window positions:
-    /// each vertex's own weight is 1 at it and 0 at the others, wherever
-    /// the origin pixel is, and a collinear triangle has none.
+    /// each vertex's own weight is 1 at it and 0 at the others, and a
+    /// collinear triangle has none.
     #[test]
     fn triangle_planes_come_from_the_window_positions() {
         let v = [(10.3, 4.1), (40.77, 9.02), (18.2, 33.9)];
-        let origin = (10, 4);
-        let basis = Basis::of_triangle(v, origin).unwrap();
-        let at = |b: [f64; 3], (x, y): (f64, f64)| {
-            b[0] + (x - (origin.0 as f64 + 0.5)) * b[1] + (y - (origin.1 as f64 + 0.5)) * b[2]
-        };
+        let basis = Basis::of_triangle(v).unwrap();
+        let at = |b: [f64; 3], (x, y): (f64, f64)| b[0] + (x - 0.5) * b[1] + (y - 0.5) * b[2];
         for (j, want) in [(0, [0.0, 0.0]), (1, [1.0, 0.0]), (2, [0.0, 1.0])] {
             for (k, b) in basis.b.iter().enumerate() {
                 assert!(
@@ -494,7 +491,7 @@ mod tests {
                 );
             }
         }
-        assert!(Basis::of_triangle([(0.0, 0.0), (1.0, 1.0), (2.0, 2.0)], origin).is_none());
+        assert!(Basis::of_triangle([(0.0, 0.0), (1.0, 1.0), (2.0, 2.0)]).is_none());
         // Rows from the top: the same values at the same pixels.
         let top = basis.top_down(63.0);
         for (x, y) in [(10.0, 4.0), (25.0, 17.0)] {

@@ -422,7 +422,7 @@ impl Shape {
     }
 
     /// The planes of the primitive's barycentrics of vertices 1 and 2
-    /// relative to the center of pixel `(x0, y0)` (see [`Basis`]): for a
+    /// (see [`Basis`]: values at the center of pixel (0, 0)): for a
     /// triangle its exact integer edge forms times one over twice its
     /// area (so the barycentrics of the coverage's snapped vertices: set-up
     /// uses them only when [`Basis::of_triangle`] finds no area in the
@@ -430,19 +430,19 @@ impl Shape {
     /// for a line the parameter `t` of GL 2.1 eq. 3.1 of each pixel center
     /// (the projection onto the segment); zeros for a point.
     #[inline]
-    pub fn basis(&self, (x0, y0): (i64, i64)) -> Basis {
+    pub fn basis(&self) -> Basis {
         match self {
-            Shape::Triangle { p, sign } => triangle_basis(p, *sign, (x0, y0)),
+            Shape::Triangle { p, sign } => triangle_basis(p, *sign),
             Shape::Quadrilateral { p, sign } => {
                 let c = corners(p);
-                triangle_basis(&[c[0], c[1], c[2]], *sign as i64, (x0, y0))
+                triangle_basis(&[c[0], c[1], c[2]], *sign as i64)
             }
             Shape::Line { v, .. } => {
                 // GL 2.1 eq. 3.1: t = (p - pa)·(pb - pa) / |pb - pa|².
                 let (dx, dy) = (v[1].x - v[0].x, v[1].y - v[0].y);
                 let len2 = dx * dx + dy * dy;
                 let t = if len2 > 0.0 && len2.is_finite() {
-                    let (px, py) = (x0 as f64 + 0.5 - v[0].x, y0 as f64 + 0.5 - v[0].y);
+                    let (px, py) = (0.5 - v[0].x, 0.5 - v[0].y);
                     [(px * dx + py * dy) / len2, dx / len2, dy / len2]
                 } else {
                     [0.0; 3]
@@ -559,10 +559,10 @@ pub(crate) fn max_depth_slope(v: &[WinVertex; 3]) -> f64 {
 }
 
 /// Per edge `j`, the orientation times [`edge`] `j` at the center of
-/// pixel (qx, qy) and its steps per pixel in x and y (integers).
+/// pixel (0, 0) and its steps per pixel in x and y (integers).
 #[inline(always)]
-fn edge_forms(p: &[(i64, i64); 3], sign: i64, (qx, qy): (i64, i64)) -> [(i64, i64, i64); 3] {
-    let (cx, cy) = (qx * ONE + HALF, qy * ONE + HALF);
+fn edge_forms(p: &[(i64, i64); 3], sign: i64) -> [(i64, i64, i64); 3] {
+    let (cx, cy) = (HALF, HALF);
     std::array::from_fn(|j| {
         let (pa, pb) = (p[(j + 1) % 3], p[(j + 2) % 3]);
         let (ex, ey) = (pb.0 - pa.0, pb.1 - pa.1);
@@ -573,10 +573,10 @@ fn edge_forms(p: &[(i64, i64); 3], sign: i64, (qx, qy): (i64, i64)) -> [(i64, i6
 
 /// [`Shape::basis`] of a triangle.
 #[inline]
-fn triangle_basis(p: &[(i64, i64); 3], sign: i64, (x0, y0): (i64, i64)) -> Basis {
+fn triangle_basis(p: &[(i64, i64); 3], sign: i64) -> Basis {
     // 1 / twice the area in fixed-point units² (positive).
     let inv_area2 = 1.0 / edge(p, 0, p[0].0, p[0].1).unsigned_abs() as f64;
-    let e = edge_forms(p, sign, (x0, y0));
+    let e = edge_forms(p, sign);
     let b = |j: usize| {
         let (c, dx, dy) = e[j];
         [c as f64, dx as f64, dy as f64].map(|v| v * inv_area2)

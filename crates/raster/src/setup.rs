@@ -307,9 +307,9 @@ impl Setup<'_> {
         (back, provoking): (bool, &[f32]),
     ) -> PrimPlanes {
         // A triangle's planes come from its vertices' window positions
-        // (llvmpipe's set-up where it has an area); coverage from their
-        // snapped ones.
-        // Rows from the top in a top-down framebuffer (exact).
+        // (llvmpipe's set-up where it has an area), over rows from the top
+        // in a top-down framebuffer (exact); coverage from the snapped
+        // positions.
         let row = |y: f64| self.rows.map_or(y, |h| h as f64 - y);
         let top = self.rows.map(|h| h - 1.0);
         let triangle = match (shape, win) {
@@ -317,14 +317,14 @@ impl Setup<'_> {
                 let xy = [a, b, c].map(|w| (w.x, row(w.y)));
                 TriangleSetup::new(xy.map(|(x, y)| (x as f32, y as f32)))
                     .map(|(t, order)| Bases::Triangle(t, order))
-                    .or_else(|| Basis::of_triangle(xy, (0, 0)).map(Bases::General))
+                    .or_else(|| Basis::of_triangle(xy).map(Bases::General))
             }
             _ => None,
         };
         let bases = triangle.unwrap_or_else(|| {
             Bases::General(match top {
-                Some(t) => shape.basis((0, 0)).top_down(t as f64),
-                None => shape.basis((0, 0)),
+                Some(t) => shape.basis().top_down(t as f64),
+                None => shape.basis(),
             })
         });
         let (z, inv_w) = vertex_depths(win);
@@ -478,10 +478,10 @@ impl Setup<'_> {
     /// and the window z and 1/w, where read, are the same bits at the four
     /// vertices, so that every plane read is that constant in either
     /// triangle ([`crate::interpolate::Basis::plane`],
-    /// [`PrimPlanes::varying`]). Not with a probe, whose history names the triangles. Billboards
-    /// (sphere impostors) are such quadrilaterals: one primitive's set-up,
-    /// bins and walks instead of two, and no quad along the diagonal
-    /// shaded twice.
+    /// [`PrimPlanes::varying`]). Not with a probe, whose history names the
+    /// triangles. Billboards (sphere impostors) are such quadrilaterals:
+    /// one primitive's set-up, bins and walks instead of two, and no quad
+    /// along the diagonal shaded twice.
     fn one_quadrilateral(&self, (win, fixed): (&[WinVertex], &[(i64, i64)])) -> Option<Shape> {
         let ([w0, w1, w2, w3], &[f0, f1, f2, f3]) = (win, fixed) else {
             return None;

@@ -385,8 +385,9 @@ impl<'m> Lowerer<'m> {
         Ok(())
     }
 
-    fn sqrt(&mut self, a: Reg) -> R<Reg> {
-        self.emit_temp(|d| Op::F1 { f: F1::Sqrt, d, a })
+    /// `f(a)` into a new temporary.
+    fn f1(&mut self, f: F1, a: Reg) -> R<Reg> {
+        self.emit_temp(|d| Op::F1 { f, d, a })
     }
 
     pub(super) fn fbin(&mut self, mk: fn(Reg, Reg, Reg) -> Op, a: Reg, b: Reg) -> R<Reg> {
@@ -580,7 +581,7 @@ impl<'m> Lowerer<'m> {
             B::Length => {
                 let x = arg(0)?.clone();
                 let d = self.dot(&x, &x)?;
-                Ok(vec![self.sqrt(d)?])
+                Ok(vec![self.f1(F1::Sqrt, d)?])
             }
             B::Distance => {
                 let (x, y) = (arg(0)?.clone(), arg(1)?.clone());
@@ -589,7 +590,7 @@ impl<'m> Lowerer<'m> {
                 }
                 let diff = self.map(&[&x, &y], fsub_op)?;
                 let d = self.dot(&diff, &diff)?;
-                Ok(vec![self.sqrt(d)?])
+                Ok(vec![self.f1(F1::Sqrt, d)?])
             }
             B::Dot => {
                 let (x, y) = (arg(0)?.clone(), arg(1)?.clone());
@@ -614,11 +615,7 @@ impl<'m> Lowerer<'m> {
                 // (`glsl::builtins::eval`'s too).
                 let x = arg(0)?.clone();
                 let d = self.dot(&x, &x)?;
-                let inv = self.emit_temp(|d2| Op::F1 {
-                    f: F1::InverseSqrt,
-                    d: d2,
-                    a: d,
-                })?;
+                let inv = self.f1(F1::InverseSqrt, d)?;
                 self.map(&[&x, &vec![inv]], fmul_op)
             }
             B::FaceForward => {
@@ -656,7 +653,7 @@ impl<'m> Lowerer<'m> {
                 let k = self.fbin(fsub, one, t)?;
                 let zero = self.fconst(0.0)?;
                 let neg = self.fbin(flt, k, zero)?;
-                let sk = self.sqrt(k)?;
+                let sk = self.f1(F1::Sqrt, k)?;
                 let ed = self.fbin(fmul, eta, d)?;
                 let s = self.fbin(fadd, ed, sk)?;
                 let ei = self.map(&[&vec![eta], &i], fmul_op)?;

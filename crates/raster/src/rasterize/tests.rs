@@ -305,7 +305,7 @@ fn bottom_left_rule() {
 /// The planes of a primitive (vertices `win`) at pixel (x, y):
 /// (window z, 1/w, the varying with vertex values `a`).
 fn planes_at((s, win): (&Shape, &[WinVertex]), a: [f32; 3], (x, y): (i64, i64)) -> (f64, f32, f32) {
-    let bases = Bases::General(s.basis((0, 0)));
+    let bases = Bases::General(s.basis());
     let (z, inv_w) = vertex_depths(win);
     let (z, inv_w) = (z.map(|z| z as f32), inv_w.map(|w| w as f32));
     let p = PrimPlanes::new(&bases, z, inv_w, None);
@@ -606,7 +606,7 @@ fn quadrilaterals_cover_their_two_triangles() {
             assert_eq!(expanded, want, "{p:?} in strips in {clip:?}");
         }
         // The planes are the first triangle's.
-        assert_eq!(q.basis((3, 4)), triangles[0].basis((3, 4)));
+        assert_eq!(q.basis(), triangles[0].basis());
         assert_eq!(q.bounds(), corner_bounds(&p));
     }
     assert!(taken > 2500, "{taken} taken");
