@@ -36,6 +36,8 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# The differential suite's harness (its `program`: compile, link, use).
+HARNESS = os.path.join(ROOT, "crates", "capi", "tests", "python")
 MODES = ["GL_TRIANGLES", "GL_TRIANGLE_STRIP", "GL_TRIANGLE_FAN", "GL_QUADS",
          "GL_QUAD_STRIP", "GL_POLYGON"]
 TARGETS = ["window", "fbo"]
@@ -108,7 +110,8 @@ def render(seed):
     """Child process: every mode, target, value and component as a list of
     W*H 32-bit words (hex), on whichever libOSMesa the process loads."""
     os.environ["PYOPENGL_PLATFORM"] = "osmesa"
-    from OpenGL import GL, osmesa, arrays
+    sys.path.insert(0, HARNESS)
+    from harness import GL, arrays, osmesa, program
     attrs = (ctypes.c_int * 11)(
         osmesa.OSMESA_FORMAT, osmesa.OSMESA_RGBA, osmesa.OSMESA_DEPTH_BITS, 0,
         osmesa.OSMESA_PROFILE, osmesa.OSMESA_COMPAT_PROFILE,
@@ -128,18 +131,7 @@ def render(seed):
                                  GL.GL_RENDERBUFFER, rb)
     if GL.glCheckFramebufferStatus(GL.GL_FRAMEBUFFER) != GL.GL_FRAMEBUFFER_COMPLETE:
         raise RuntimeError("framebuffer incomplete")
-    prog = GL.glCreateProgram()
-    for kind, src in ((GL.GL_VERTEX_SHADER, VS), (GL.GL_FRAGMENT_SHADER, FS)):
-        sh = GL.glCreateShader(kind)
-        GL.glShaderSource(sh, src)
-        GL.glCompileShader(sh)
-        if not GL.glGetShaderiv(sh, GL.GL_COMPILE_STATUS):
-            raise RuntimeError(GL.glGetShaderInfoLog(sh))
-        GL.glAttachShader(prog, sh)
-    GL.glLinkProgram(prog)
-    if not GL.glGetProgramiv(prog, GL.GL_LINK_STATUS):
-        raise RuntimeError(GL.glGetProgramInfoLog(prog))
-    GL.glUseProgram(prog)
+    prog = program([VS], [FS])
     which, comp = (GL.glGetUniformLocation(prog, n) for n in ("which", "comp"))
     GL.glViewport(0, 0, W, H)
     out = {}

@@ -14,7 +14,7 @@ when the offset is aligned). Blocks with instance names use GLSL 1.50
 import ctypes
 import sys
 
-from harness import GL, errors, main, scene
+from harness import GL, errors, main, program, scene
 from OpenGL.raw.GL.VERSION import GL_1_5 as raw15  # noqa: E402
 from OpenGL.raw.GL.VERSION import GL_3_0 as raw30, GL_3_1 as raw31, GL_3_2 as raw32  # noqa: E402
 
@@ -150,28 +150,13 @@ void main() {
 VS = "#version 150\nin vec4 pos;\nvoid main() { gl_Position = pos; }\n"
 
 
-def build(vs, fs):
-    p = GL.glCreateProgram()
-    for kind, src in ((GL.GL_VERTEX_SHADER, vs), (GL.GL_FRAGMENT_SHADER, fs)):
-        s = GL.glCreateShader(kind)
-        GL.glShaderSource(s, src)
-        GL.glCompileShader(s)
-        if not GL.glGetShaderiv(s, GL.GL_COMPILE_STATUS):
-            raise RuntimeError(GL.glGetShaderInfoLog(s))
-        GL.glAttachShader(p, s)
-    GL.glLinkProgram(p)
-    if not GL.glGetProgramiv(p, GL.GL_LINK_STATUS):
-        raise RuntimeError(GL.glGetProgramInfoLog(p))
-    return p
-
-
 def block_index(p, name):
     return raw31.glGetUniformBlockIndex(p, name.encode())
 
 
 @scene("ubo_std140_layout", 8, 8)
 def layout(log):
-    p = build(VS, FS_LAYOUT)
+    p = program([VS], [FS_LAYOUT])
     log.append(f"GL_ACTIVE_UNIFORM_BLOCKS: {GL.glGetProgramiv(p, GL.GL_ACTIVE_UNIFORM_BLOCKS)}")
     v = ctypes.c_int()
     for name in ("Block", "Second"):
@@ -237,8 +222,7 @@ def floats(v):
 
 @scene("ubo_draw", 32, 32)
 def draw(log):
-    p = build(VS, FS_DRAW)
-    GL.glUseProgram(p)
+    p = program([VS], [FS_DRAW])
     w = [0.0] * 68
     w[0:4] = [0.25, 0.5, 0.75, 1.0]
     w[4:20] = [0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 0, 0, 1]
