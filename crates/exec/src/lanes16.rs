@@ -128,6 +128,9 @@ pub trait Lanes16 {
     /// column) in the pixel order of [`Lanes16::load_rows`]: lanes 0, 1,
     /// 4, 5, 8, 9, 12, 13, then 2, 3, 6, 7, 10, 11, 14, 15.
     unsafe fn quads_to_rows(a: Self::F) -> Self::F;
+    /// Element `k` (0–3) of each quad (lanes 4q–4q + 3) in all four of
+    /// its lanes.
+    unsafe fn quad_lane(a: Self::F, k: i32) -> Self::F;
 }
 
 /// [`Lanes16`] in one AVX-512 register per value.
@@ -377,6 +380,16 @@ impl Lanes16 for X512 {
     unsafe fn quads_to_rows(a: __m512) -> __m512 {
         unsafe {
             let lane = _mm512_setr_epi32(0, 1, 4, 5, 8, 9, 12, 13, 2, 3, 6, 7, 10, 11, 14, 15);
+            _mm512_permutexvar_ps(lane, a)
+        }
+    }
+    #[inline(always)]
+    unsafe fn quad_lane(a: __m512, k: i32) -> __m512 {
+        unsafe {
+            let lane = _mm512_add_epi32(
+                _mm512_setr_epi32(0, 0, 0, 0, 4, 4, 4, 4, 8, 8, 8, 8, 12, 12, 12, 12),
+                _mm512_set1_epi32(k),
+            );
             _mm512_permutexvar_ps(lane, a)
         }
     }
@@ -868,6 +881,19 @@ impl Lanes16 for X256 {
             [
                 _mm256_permute2f128_ps::<0x20>(a0, a1),
                 _mm256_permute2f128_ps::<0x31>(a0, a1),
+            ]
+        }
+    }
+    #[inline(always)]
+    unsafe fn quad_lane(a: [__m256; 2], k: i32) -> [__m256; 2] {
+        unsafe {
+            let lane = _mm256_add_epi32(
+                _mm256_setr_epi32(0, 0, 0, 0, 4, 4, 4, 4),
+                _mm256_set1_epi32(k),
+            );
+            [
+                _mm256_permutevar8x32_ps(a[0], lane),
+                _mm256_permutevar8x32_ps(a[1], lane),
             ]
         }
     }

@@ -4,19 +4,23 @@
 //! each lane's biases and the texture's clamps. The levels λ selects are
 //! picked by the driver (`sample_in`), over the lanes.
 
-use super::LodRef;
+use super::{LodRef, NO_WIDE};
+#[cfg(target_arch = "x86_64")]
+use super::{X256, X512, WIDE_AVX512};
 use crate::ex::LANES;
 use crate::texture::levels::{lod_log2, MAX_LOD_BIAS};
 use crate::texture::{Image, Texture};
 
 /// `levels::lambda` for every lane (the lanes outside the request's
 /// mask get some value): with derivatives, λ_base once per quad from the
-/// derivatives of its first lane (`levels::quad_first`), computed for the
-/// quads' first lanes (eight lanes, the four twice: four-lane loops
-/// compile to scalar code) and spread, then each lane's biases and
-/// clamps.
+/// derivatives of its first lane (`levels::quad_first`), then each
+/// lane's biases and clamps. In the x86 variants (`WIDE`) every lane
+/// takes its quad's derivatives in registers (`wide::quad_derivatives`)
+/// and λ_base is computed for all sixteen; the portable one computes it
+/// for the quads' first lanes (eight lanes, the four twice: four-lane
+/// loops compile to scalar code) and spreads it.
 #[inline(always)]
-pub(super) fn lambdas<const SIMD: bool>(
+pub(super) fn lambdas<const SIMD: bool, const WIDE: u8>(
     tex: &Texture,
     base_img: &Image,
     unit_bias: f32,
@@ -26,23 +30,44 @@ pub(super) fn lambdas<const SIMD: bool>(
     // (Loops, not closures: a closure is compiled without the caller's
     // target features.)
     const HALF: usize = LANES / 2;
-    // The quads' first lanes' derivatives (S along x, T along x, S along
-    // y, T along y), the four quads twice.
-    let mut first = [[0.0f32; HALF]; 4];
-    let bias = match lod {
+    let (given, bias) = match lod {
         LodRef::Explicit(v) => {
             // The general path adds a shader bias of 0.
             return clamp_lambdas(tex, v, &[unit_bias + 0.0; LANES]);
         }
-        LodRef::Derivatives { ddx, ddy, bias } => {
-            for (f, a) in first.iter_mut().zip([ddx[0], ddx[1], ddy[0], ddy[1]]) {
+        LodRef::Derivatives { ddx, ddy, bias } => (Some([ddx[0], ddx[1], ddy[0], ddy[1]]), bias),
+        LodRef::Implicit => (None, &[0.0; LANES]),
+    };
+    let mut extra = [0.0f32; LANES];
+    for l in 0..LANES {
+        extra[l] = unit_bias + bias[l];
+    }
+    #[cfg(target_arch = "x86_64")]
+    if WIDE != NO_WIDE {
+        // SAFETY: `WIDE` names the instruction set of the code this is
+        // inlined into, which runs only on CPUs that have it.
+        let [sx, tx, sy, ty] = unsafe {
+            if WIDE == WIDE_AVX512 {
+                super::wide::quad_derivatives::<X512>(given, st)
+            } else {
+                super::wide::quad_derivatives::<X256>(given, st)
+            }
+        };
+        let base = lambda_bases(base_img, [&sx, &tx], [&sy, &ty]);
+        return clamp_lambdas(tex, &base, &extra);
+    }
+    // The quads' first lanes' derivatives (S along x, T along x, S along
+    // y, T along y), the four quads twice.
+    let mut first = [[0.0f32; HALF]; 4];
+    match given {
+        Some(given) => {
+            for (f, a) in first.iter_mut().zip(given) {
                 for k in 0..HALF {
                     f[k] = a[4 * (k % (LANES / 4))];
                 }
             }
-            bias
         }
-        LodRef::Implicit => {
+        None => {
             let [s, t] = st;
             let [sx, tx, sy, ty] = &mut first;
             let rows = sx
@@ -54,15 +79,12 @@ pub(super) fn lambdas<const SIMD: bool>(
                 (*sx, *tx) = (s[q + 1] - s[q], t[q + 1] - t[q]);
                 (*sy, *ty) = (s[q + 2] - s[q], t[q + 2] - t[q]);
             }
-            &[0.0; LANES]
         }
-    };
+    }
     let quads = lambda_bases(base_img, [&first[0], &first[1]], [&first[2], &first[3]]);
     let mut base = [0.0f32; LANES];
-    let mut extra = [0.0f32; LANES];
     for l in 0..LANES {
         base[l] = quads[l / 4];
-        extra[l] = unit_bias + bias[l];
     }
     clamp_lambdas(tex, &base, &extra)
 }
