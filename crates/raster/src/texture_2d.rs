@@ -28,8 +28,9 @@
 //! best the CPU has). The two x86 variants run some steps as explicit
 //! AVX2 code (the f32 levels' blend and output select, the per-lane level
 //! sizes, the gather, the quad comparison; floors by the rounding
-//! instruction, see [`lanes::floor_of`]). Both also pick the *_MIPMAP_LINEAR
-//! levels in vector registers and, for RGBA8 levels with REPEAT or
+//! instruction, see [`lanes::floor_of`]). Both also take each lane's quad
+//! derivatives for λ in vector registers, pick the *_MIPMAP_LINEAR
+//! levels there and, for RGBA8 levels with REPEAT or
 //! CLAMP_TO_EDGE wrapping whose lanes read one level per level pass,
 //! filter, blend the two levels and convert there too (module `wide`:
 //! coordinates over `exec::lanes16::Lanes16`, one AVX-512 register or

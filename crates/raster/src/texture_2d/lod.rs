@@ -1,12 +1,13 @@
 //! The level of detail of every lane of a request, as `levels::lambda`
 //! computes it lane by lane: λ_base once per 2×2 quad from its first
 //! lane's derivatives (given, or the quad differences of s and t), then
-//! each lane's biases and the texture's clamps. The levels λ selects are
-//! picked by the driver (`sample_in`), over the lanes.
+//! each lane's biases and the texture's clamps (the x86 variants take
+//! the derivatives in registers, `wide::quad_derivatives`). The levels λ
+//! selects are picked by the driver (`sample_in`), over the lanes.
 
-use super::{LodRef, NO_WIDE};
+use super::LodRef;
 #[cfg(target_arch = "x86_64")]
-use super::{X256, X512, WIDE_AVX512};
+use super::{NO_WIDE, WIDE_AVX512, X256, X512};
 use crate::ex::LANES;
 use crate::texture::levels::{lod_log2, MAX_LOD_BIAS};
 use crate::texture::{Image, Texture};

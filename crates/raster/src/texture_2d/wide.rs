@@ -1,4 +1,7 @@
-//! The x86 variants' filtering of RGBA8 levels: the fixed-point filter
+//! The x86 variants' register code: each lane's quad derivatives for λ
+//! ([`quad_derivatives`]), the *_MIPMAP_LINEAR levels
+//! ([`mipmap_linear_levels`]), and the filtering of RGBA8 levels: the
+//! fixed-point filter
 //! of [`crate::unorm8_filter`] for requests whose lanes read one level per
 //! level pass (the lanes that matter: the request's for the first level,
 //! those blending two levels for the second) and whose S and T wrap modes
