@@ -325,7 +325,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
     } else if unmipmapped {
         // Magnification (λ ≤ c = 0, or NaN) or minification of the base
         // level, over the lanes.
-        let lam = lambdas::<SIMD, WIDE>(tex, base_img, unit.lod_bias, lookup.lod, lookup.st);
+        let lam = lambdas::<WIDE>(tex, base_img, unit.lod_bias, lookup.lod, lookup.st);
         let mut is_nearest = [false; LANES];
         for l in 0..LANES {
             let mag = lam[l].is_nan() || lam[l] <= 0.0;
@@ -339,7 +339,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
         MinFilter::LinearMipmapLinear | MinFilter::NearestMipmapLinear
     ) {
         // λ of every lane, as `levels::lambda` computes it.
-        let lam = lambdas::<SIMD, WIDE>(tex, base_img, unit.lod_bias, lookup.lod, lookup.st);
+        let lam = lambdas::<WIDE>(tex, base_img, unit.lod_bias, lookup.lod, lookup.st);
         // Eq. 3.28/3.29 over the lanes, branch-free.
         let c = if tex.mag_filter == MagFilter::Linear
             && tex.min_filter == MinFilter::NearestMipmapLinear
@@ -394,7 +394,7 @@ fn sample_in<const SIMD: bool, const WIDE: u8>(
             two &= mask;
         }
     } else {
-        let lam = lambdas::<SIMD, WIDE>(tex, base_img, unit.lod_bias, lookup.lod, lookup.st);
+        let lam = lambdas::<WIDE>(tex, base_img, unit.lod_bias, lookup.lod, lookup.st);
         for lane in 0..LANES {
             if mask & (1 << lane) == 0 {
                 continue;

@@ -21,7 +21,7 @@ use crate::texture::{Image, Texture};
 /// for the quads' first lanes (eight lanes, the four twice: four-lane
 /// loops compile to scalar code) and spreads it.
 #[inline(always)]
-pub(super) fn lambdas<const SIMD: bool, const WIDE: u8>(
+pub(super) fn lambdas<const WIDE: u8>(
     tex: &Texture,
     base_img: &Image,
     unit_bias: f32,
