@@ -151,7 +151,7 @@ impl F3 {
     }
 }
 
-/// What an op is, for the analyses: the flag each row of [`define_ops!`]
+/// What an op is, for the analyses: the flag each row of `define_ops!`
 /// starts with.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Class {

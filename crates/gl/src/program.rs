@@ -817,7 +817,7 @@ enum Target {
     Program(u32),
 }
 
-/// Generates glUniform{1,2,3,4}{f,i,ui}[v] and their glProgramUniform*
+/// Generates `glUniform{1,2,3,4}{f,i,ui}[v]` and their `glProgramUniform*`
 /// forms (GL_ARB_separate_shader_objects).
 macro_rules! uniform_entry_points {
     ($($n:literal ($($a:ident),*) $f:ident $fv:ident $i:ident $iv:ident $ui:ident $uiv:ident

@@ -43,7 +43,7 @@ pub(crate) struct Fragment {
     pub z: f32,
     /// Selects the back stencil state (polygons only).
     pub back_facing: bool,
-    /// Color of fragment output `i` (gl_FragData[i], or gl_FragColor for
+    /// Color of fragment output `i` (`gl_FragData[i]`, or gl_FragColor for
     /// every `i`), and at [`SRC1`] output 0's second source colour.
     pub colors: [[f32; 4]; FRAG_COLORS],
 }

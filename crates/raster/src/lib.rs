@@ -3,7 +3,7 @@
 //! operations, framebuffers and texture sampling.
 //!
 //! # Contract
-//! [`draw`] runs the vertex kernel once per distinct index (batches of
+//! [`draw()`] runs the vertex kernel once per distinct index (batches of
 //! `exec::LANES` vertices), assembles primitives for every [`Mode`], clips
 //! them in clip space against the view volume and the enabled user clip
 //! planes (GL 2.1 §2.12), maps them to window space (§2.11), determines
@@ -575,7 +575,7 @@ pub fn draw(
     )
 }
 
-/// [`draw`] on `workers`' threads. The framebuffer (and the error, if any)
+/// [`draw()`] on `workers`' threads. The framebuffer (and the error, if any)
 /// is bit-identical whatever the number of threads.
 #[allow(clippy::too_many_arguments)]
 pub fn draw_on(

@@ -103,7 +103,7 @@ pub(crate) struct VaryingLink {
     /// space, `smooth` perspective-correct; any of them overrides the
     /// shade model. `None`: smooth, or the shade model's for colors.
     pub interpolation: Option<Interpolation>,
-    /// gl_TexCoord[set].component, for point-sprite coordinate replacement.
+    /// `gl_TexCoord[set]`.component, for point-sprite coordinate replacement.
     pub texcoord: Option<(u32, usize)>,
     /// Whether the fragment program reads it (every link until
     /// [`FsLayout::with_reads`] says).

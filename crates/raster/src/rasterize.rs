@@ -891,7 +891,7 @@ const WIDE_ROW: i64 = 16;
 /// How many quads from the one whose edge values (less thresholds) are
 /// `over` lie wholly outside one of the `growing` edges (bit k: `a[k] >
 /// 0`): quad j further right is outside edge k while its largest value
-/// plus `2·a[k]·j` is negative, that is for j < ⌈−top / (2·a[k])⌉.
+/// plus `2·a[k]·j` is negative, that is for j < `⌈−top / (2·a[k])⌉`.
 #[inline(always)]
 fn row_start<const E: usize>(over: &[Quad4; E], a: &[i64; E], growing: u8) -> i64 {
     let mut ahead = 0i64;

@@ -4,7 +4,7 @@
 //! `exec::multiversion!`; only plain IEEE operations are used (no fused
 //! multiply-add: Rust never contracts `a * b + c`), so every level
 //! computes the same bits; tests compare each with the portable one
-//! ([`with_level`]).
+//! (`with_level`).
 //!
 //! The level is the highest the CPU runs; `SHADERBOX_RASTER_ISA=
 //! portable|avx2|avx512` (`base` is an old name of `portable`) overrides

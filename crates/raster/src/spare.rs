@@ -13,8 +13,8 @@ use crate::setup::Corner;
 use crate::shaded::Vertices;
 
 /// Buffers of an earlier draw, kept (emptied) for the next draws on the
-/// same [`Workers`]: a draw that fits in them allocates no fresh memory,
-/// whose first touch costs a page fault per 4 KiB. At most
+/// same [`crate::Workers`]: a draw that fits in them allocates no fresh
+/// memory, whose first touch costs a page fault per 4 KiB. At most
 /// [`Spare::LIMIT`] bytes of capacity are kept.
 #[derive(Default)]
 pub(crate) struct Spare {

@@ -3,7 +3,7 @@
 //! [`BuiltinFn`] (defined in [`crate::builtin_fn`], the IR's vocabulary)
 //! names every built-in function.
 //!
-//! - [`prelude`]: the whole built-in environment of a version and stage as
+//! - [`prelude()`]: the whole built-in environment of a version and stage as
 //!   GLSL declarations, which the semantic analyzer reads before the shader.
 //! - [`eval_builtin`]: constant folding of built-in calls.
 

@@ -270,7 +270,7 @@ impl Analyzer {
     }
 
     /// Converts `e` to `to` with the version's implicit conversions, or
-    /// reports "`what` with <found type>".
+    /// reports "`what` with `<found type>`".
     pub fn coerce(&mut self, e: ir::Expr, to: Type, span: Span, what: &str) -> ir::Expr {
         if e.ty == to || e.ty.is_error() || to.is_error() {
             return e;

@@ -2,7 +2,7 @@
 //! 1.50 §4.3.8.1-2): `layout(triangles) in;` names the input primitive,
 //! which sizes every input array (declared before or after it);
 //! `layout(triangle_strip, max_vertices = N) out;` the output primitive
-//! and the vertex count. They are recorded in [`ir::Module::geometry`].
+//! and the vertex count. They are recorded in [`crate::ir::Module::geometry`].
 //!
 //! GL_EXT_geometry_shader4's form (before 1.50) has no layouts: the input
 //! primitive is the program's GEOMETRY_INPUT_TYPE, which `sema::analyze`

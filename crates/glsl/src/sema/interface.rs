@@ -4,7 +4,7 @@
 //! §4.3.5.2, 1.50 §4.3.8, GL_ARB_explicit_attrib_location,
 //! GL_ARB_fragment_coord_conventions), default precision statements and
 //! qualifier-only declarations (interface blocks are `blocks`'). Every
-//! version check goes through [`Language::gate`].
+//! version check goes through [`crate::lang::Language::gate`].
 
 use super::Analyzer;
 use crate::ast::{LayoutId, Qualifier, SpannedQualifier, TypeName};
